@@ -1,0 +1,48 @@
+//! `AlgebraError`: every way an algebraic operation can refuse, as data.
+
+use thiserror::Error;
+
+/// Why an operation on polynomials has no result.
+#[derive(Clone, Debug, PartialEq, Eq, Error)]
+pub enum AlgebraError {
+    /// Division by zero.
+    #[error("division by zero")]
+    DivisionByZero,
+    /// Division by a polynomial that is not a single term.
+    #[error("cannot divide by {0}: only division by a nonzero constant or a single term (monomial) is exact here")]
+    NotAMonomial(String),
+    /// A negative power of a polynomial that is not a single term.
+    #[error("cannot raise {0} to a negative power: only single terms (monomials) are invertible")]
+    NegativePower(String),
+    /// An exponent beyond the limit.
+    #[error("the exponent of {var} would reach {exponent}, past the limit of {limit}")]
+    ExponentTooLarge {
+        /// The variable.
+        var: String,
+        /// The exponent that would result.
+        exponent: i64,
+        /// The limit in force.
+        limit: u32,
+    },
+    /// A result with more terms than the limit allows.
+    #[error("the result would have more than {limit} terms (the term limit); raise the limit or simplify the input")]
+    TooManyTerms {
+        /// The limit in force.
+        limit: usize,
+    },
+    /// An operation that needs `i` in a polynomial over Q.
+    #[error("{0} needs Gaussian rational coefficients Q(i), but this polynomial is over Q")]
+    NeedsGaussian(String),
+    /// Polynomials from different variable sets were combined.
+    #[error("the polynomials belong to different variable sets")]
+    VarSetMismatch,
+    /// A value missing in an evaluation.
+    #[error("no value given for {0}")]
+    MissingValue(String),
+    /// A point that is not on the unit circle given for an angle.
+    #[error("the value of {0} must be a point (cos, sin) on the unit circle with cos² + sin² = 1")]
+    NotOnUnitCircle(String),
+    /// Something else invalid, with its explanation.
+    #[error("{0}")]
+    Invalid(String),
+}

@@ -1,0 +1,58 @@
+//! # trigpoly
+//!
+//! Exact Laurent × trigonometric polynomials over Q and Q(i): the ring in which the Poisson
+//! bracket identities of superintegrable systems live.
+//!
+//! * Coefficients: [`Rational`] (Q) and [`GaussianRational`] (Q(i)); a polynomial stores one
+//!   rational content and machine integers that become big integers only on overflow.
+//! * Variables: declared in a [`VarSet`]; every non-angle variable takes any integer exponent,
+//!   so `1/(2M)` and `β/x²` are single terms; an angle `θ` enters through `cos θ`, `sin θ`,
+//!   stored as powers of `e^{iθ}`.
+//! * Normal form: every operation returns the canonical representation, so an identity holds
+//!   exactly when the difference [`Poly::is_zero`].
+//!
+//! ```
+//! use trigpoly::{GaussianRational, Poly, VarSet};
+//!
+//! let vars = VarSet::builder()
+//!     .coordinate("x")
+//!     .momentum("p_x")
+//!     .angle("theta")
+//!     .parameter("M")
+//!     .parameter("omega")
+//!     .build()?;
+//! let p = |s: &str| Poly::<GaussianRational>::parse(&vars, s);
+//!
+//! // cos²θ + sin²θ = 1, exactly.
+//! assert!((p("cos(theta)^2 + sin(theta)^2 - 1")?).is_zero());
+//! // (cos θ − i sin θ)³ = e^{−3iθ}, and its real part is T₃(cos θ) = 4cos³θ − 3cos θ.
+//! let e = p("(cos(theta) - i*sin(theta))^3")?;
+//! assert_eq!(e, p("exp(-3*i*theta)")?);
+//! assert_eq!(e.re(), p("4*cos(theta)^3 - 3*cos(theta)")?);
+//! // Printing reads like the paper.
+//! assert_eq!(p("-omega^2*M*x + p_x^2/(2*M)")?.to_string(), "−Mω²x + p_x²/(2M)");
+//! # Ok::<(), Box<dyn std::error::Error>>(())
+//! ```
+#![deny(missing_docs)]
+
+mod error;
+mod lower;
+mod number;
+mod poly;
+mod print;
+pub mod syntax;
+mod varset;
+
+pub use error::AlgebraError;
+pub use lower::{Context, NoContext};
+pub use number::{
+    Coefficient, GaussianAcc, GaussianInteger, GaussianRational, Integer, IntegerAcc, IntegerRing,
+    ParseGaussianError, ParseRationalError, Rational,
+};
+pub use poly::{CosSinTerm, Point, Poly, Term, TrigMonomial};
+pub use print::{superscript, Style};
+pub use syntax::{ParseError, Span};
+pub use varset::{Limits, Var, VarKind, VarSet, VarSetBuilder, Variable, RESERVED};
+
+/// Polynomials over Q(i): the type of phase-space functions (angles need `i`).
+pub type Expr = Poly<GaussianRational>;

@@ -1,0 +1,291 @@
+//! Lowering: from a parsed expression (`syntax::Expr`) to a polynomial, checking what the
+//! grammar cannot: names, integer exponents, exact divisions, angles inside `cos`, `sin`, `exp`.
+
+use std::sync::Arc;
+
+use crate::error::AlgebraError;
+use crate::number::{Coefficient, GaussianRational, Integer, Rational};
+use crate::poly::Poly;
+use crate::syntax::{parse_expr, Expr, ExprKind, ParseError, Span};
+use crate::varset::{Var, VarKind, VarSet};
+
+/// What names and brackets mean beyond the variables: named functions defined elsewhere (a
+/// system file's `H`, `L`) and the Poisson bracket `{f, g}` of a phase space.
+pub trait Context<C: Coefficient> {
+    /// The value of a name that is not a variable, if it is defined.
+    fn lookup(&self, name: &str) -> Option<Poly<C>>;
+    /// `{f, g}`, or why it cannot be formed.
+    fn bracket(&self, f: &Poly<C>, g: &Poly<C>) -> Result<Poly<C>, String>;
+    /// The names this context defines (for "did you mean" messages).
+    fn names(&self) -> Vec<String> {
+        Vec::new()
+    }
+}
+
+/// The context of a bare variable set: no named functions, no brackets.
+pub struct NoContext;
+
+impl<C: Coefficient> Context<C> for NoContext {
+    fn lookup(&self, _: &str) -> Option<Poly<C>> {
+        None
+    }
+    fn bracket(&self, _: &Poly<C>, _: &Poly<C>) -> Result<Poly<C>, String> {
+        Err("a bracket {f, g} needs a phase space; parse it through a system".into())
+    }
+}
+
+impl<C: Coefficient> Poly<C> {
+    /// Parses an expression in the variables of `vars`.
+    ///
+    /// ```
+    /// use trigpoly::{Poly, Rational, VarSet};
+    /// let vars = VarSet::builder().coordinate("x").momentum("p_x").parameter("M").build().unwrap();
+    /// let h = Poly::<Rational>::parse(&vars, "p_x^2/(2*M) + M*x^2/2").unwrap();
+    /// assert_eq!(h.to_string(), "Mx²/2 + p_x²/(2M)");
+    /// let err = Poly::<Rational>::parse(&vars, "x/(1+x)").unwrap_err();
+    /// assert_eq!(err.line_col("x/(1+x)"), (1, 3));
+    /// ```
+    pub fn parse(vars: &Arc<VarSet>, src: &str) -> Result<Self, ParseError> {
+        Self::parse_with(vars, src, &NoContext)
+    }
+
+    /// Parses with named functions and brackets supplied by `ctx`.
+    pub fn parse_with(
+        vars: &Arc<VarSet>,
+        src: &str,
+        ctx: &dyn Context<C>,
+    ) -> Result<Self, ParseError> {
+        let expr = parse_expr(src)?;
+        Lower { vars, ctx }.lower(&expr)
+    }
+
+    /// Lowers an already parsed expression.
+    pub fn from_expr(
+        vars: &Arc<VarSet>,
+        expr: &Expr,
+        ctx: &dyn Context<C>,
+    ) -> Result<Self, ParseError> {
+        Lower { vars, ctx }.lower(expr)
+    }
+}
+
+struct Lower<'a, C: Coefficient> {
+    vars: &'a Arc<VarSet>,
+    ctx: &'a dyn Context<C>,
+}
+
+fn at(span: Span) -> impl Fn(AlgebraError) -> ParseError {
+    move |e| ParseError::new(span, e.to_string())
+}
+
+impl<C: Coefficient> Lower<'_, C> {
+    fn lower(&self, e: &Expr) -> Result<Poly<C>, ParseError> {
+        let span = e.span;
+        match &e.kind {
+            ExprKind::Integer(n) => {
+                Ok(Poly::constant(self.vars, C::from_rational(Rational::from(Integer::from(n.clone())))))
+            }
+            ExprKind::Name(name) => self.name(name, span),
+            ExprKind::Neg(a) => Ok(-self.lower(a)?),
+            ExprKind::Add(a, b) => self.lower(a)?.checked_add(&self.lower(b)?).map_err(at(span)),
+            ExprKind::Sub(a, b) => self.lower(a)?.checked_sub(&self.lower(b)?).map_err(at(span)),
+            ExprKind::Mul(a, b) => self.lower(a)?.checked_mul(&self.lower(b)?).map_err(at(span)),
+            ExprKind::Div(a, b) => {
+                let num = self.lower(a)?;
+                let den = self.lower(b)?;
+                num.checked_div(&den).map_err(at(b.span))
+            }
+            ExprKind::Pow(a, b) => {
+                let base = self.lower(a)?;
+                let exp = self.integer_exponent(b)?;
+                base.checked_pow(exp).map_err(at(span))
+            }
+            ExprKind::Call(name, name_span, args) => self.call(name, *name_span, args, span),
+            ExprKind::Bracket(f, g) => {
+                let f = self.lower(f)?;
+                let g = self.lower(g)?;
+                self.ctx.bracket(&f, &g).map_err(|m| ParseError::new(span, m))
+            }
+        }
+    }
+
+    fn name(&self, name: &str, span: Span) -> Result<Poly<C>, ParseError> {
+        if name == "i" {
+            let i = C::from_gaussian(&GaussianRational::i()).ok_or_else(|| {
+                ParseError::new(span, "the imaginary unit i needs Gaussian rational coefficients Q(i)")
+            })?;
+            return Ok(Poly::constant(self.vars, i));
+        }
+        if let Some(v) = self.vars.lookup(name) {
+            if self.vars.variable(v).kind() == VarKind::Angle {
+                let n = self.vars.variable(v).name();
+                return Err(ParseError::new(
+                    span,
+                    format!(
+                        "{name} is an angle: functions depend on it through cos({n}), sin({n}) or exp(i*k*{n})"
+                    ),
+                ));
+            }
+            return Ok(Poly::var(self.vars, v));
+        }
+        if let Some(p) = self.ctx.lookup(name) {
+            return Ok(p);
+        }
+        let mut known: Vec<String> =
+            self.vars.vars().map(|v| self.vars.variable(v).name().to_string()).collect();
+        known.extend(self.ctx.names());
+        Err(ParseError::new(span, format!("unknown name '{name}' (known: {})", known.join(", "))))
+    }
+
+    fn integer_exponent(&self, e: &Expr) -> Result<i64, ParseError> {
+        let p: Poly<C> = self.lower(e)?;
+        let value = p.as_constant().and_then(|c| Rational::from_gaussian(&c.to_gaussian()));
+        let limit = self.vars.limits().max_degree;
+        match value {
+            Some(q) if q.is_integer() => match q.numer().to_i64() {
+                Some(n) if n.unsigned_abs() <= limit as u64 => Ok(n),
+                _ => Err(ParseError::new(
+                    e.span,
+                    format!("the exponent {q} is past the limit of {limit}"),
+                )),
+            },
+            Some(q) => Err(ParseError::new(
+                e.span,
+                format!("exponents must be integers, found {q} (fractional powers are not polynomial)"),
+            )),
+            None => Err(ParseError::new(e.span, "exponents must be integer constants")),
+        }
+    }
+
+    fn call(&self, name: &str, name_span: Span, args: &[Expr], span: Span) -> Result<Poly<C>, ParseError> {
+        let fun = match name {
+            "cos" | "sin" | "exp" => name,
+            _ => {
+                return Err(ParseError::new(
+                    name_span,
+                    format!("unknown function '{name}' (known: cos, sin, exp)"),
+                ))
+            }
+        };
+        if args.len() != 1 {
+            return Err(ParseError::new(span, format!("{fun} takes one argument, found {}", args.len())));
+        }
+        let arg = &args[0];
+        let (combo, imaginary) = self.angle_combination(arg, fun)?;
+        let wrap = |e: AlgebraError| ParseError::new(arg.span, e.to_string());
+        // e^{i Σ n_j θ_j}
+        let exp_i = |sign: i64| -> Result<Poly<C>, ParseError> {
+            let mut acc = Poly::one(self.vars);
+            for &(v, n) in &combo {
+                acc = acc.checked_mul(&Poly::exp_i(self.vars, v, sign * n).map_err(wrap)?).map_err(wrap)?;
+            }
+            Ok(acc)
+        };
+        match (fun, imaginary) {
+            ("exp", true) => exp_i(1),
+            ("exp", false) => Err(ParseError::new(
+                arg.span,
+                "exp takes i·n·θ with an integer n and an angle θ, such as exp(-i*2*theta)",
+            )),
+            (_, true) => Err(ParseError::new(
+                arg.span,
+                format!("{fun} takes a real angle n·θ; use exp for complex exponentials"),
+            )),
+            (f, false) => {
+                let plus = exp_i(1)?;
+                let minus = exp_i(-1)?;
+                let half = Rational::new(1, 2);
+                if f == "cos" {
+                    Ok((&plus + &minus).scale_rational(&half))
+                } else {
+                    // sin φ = (e^{iφ} − e^{−iφ})/(2i)
+                    (&plus - &minus)
+                        .mul_i()
+                        .map(|p| p.scale_rational(&Rational::new(-1, 2)))
+                        .map_err(wrap)
+                }
+            }
+        }
+    }
+
+    /// Reads `Σ n_j θ_j` (or `i·Σ n_j θ_j`) with integer `n_j`; says whether `i` is a factor.
+    fn angle_combination(&self, e: &Expr, fun: &str) -> Result<(Vec<(Var, i64)>, bool), ParseError> {
+        let bad = |span: Span| {
+            ParseError::new(
+                span,
+                format!(
+                    "{fun} takes an integer multiple of an angle{}, such as {fun}({}2*theta)",
+                    if fun == "exp" { " times i" } else { "" },
+                    if fun == "exp" { "i*" } else { "" }
+                ),
+            )
+        };
+        // (integer factor, i-count, angle) of a product.
+        fn product<C: Coefficient>(
+            low: &Lower<'_, C>,
+            e: &Expr,
+            acc: &mut (i64, u32, Option<Var>),
+            bad: &dyn Fn(Span) -> ParseError,
+        ) -> Result<(), ParseError> {
+            match &e.kind {
+                ExprKind::Mul(a, b) => {
+                    product(low, a, acc, bad)?;
+                    product(low, b, acc, bad)
+                }
+                ExprKind::Neg(a) => {
+                    acc.0 = -acc.0;
+                    product(low, a, acc, bad)
+                }
+                ExprKind::Integer(n) => {
+                    let n = i64::try_from(n.clone()).map_err(|_| bad(e.span))?;
+                    acc.0 = acc.0.checked_mul(n).ok_or_else(|| bad(e.span))?;
+                    Ok(())
+                }
+                ExprKind::Name(n) if n == "i" => {
+                    acc.1 += 1;
+                    Ok(())
+                }
+                ExprKind::Name(n) => match low.vars.lookup(n) {
+                    Some(v) if low.vars.variable(v).kind() == VarKind::Angle && acc.2.is_none() => {
+                        acc.2 = Some(v);
+                        Ok(())
+                    }
+                    Some(_) => Err(bad(e.span)),
+                    None => Err(ParseError::new(e.span, format!("unknown angle '{n}'"))),
+                },
+                _ => Err(bad(e.span)),
+            }
+        }
+        let mut terms: Vec<(i64, Expr)> = Vec::new();
+        fn sum(e: &Expr, sign: i64, out: &mut Vec<(i64, Expr)>) {
+            match &e.kind {
+                ExprKind::Add(a, b) => {
+                    sum(a, sign, out);
+                    sum(b, sign, out);
+                }
+                ExprKind::Sub(a, b) => {
+                    sum(a, sign, out);
+                    sum(b, -sign, out);
+                }
+                _ => out.push((sign, e.clone())),
+            }
+        }
+        sum(e, 1, &mut terms);
+        let mut combo: Vec<(Var, i64)> = Vec::new();
+        let mut imaginary: Option<bool> = None;
+        for (sign, t) in &terms {
+            let mut acc = (*sign, 0u32, None);
+            product(self, t, &mut acc, &bad)?;
+            let angle = acc.2.ok_or_else(|| bad(t.span))?;
+            if acc.1 > 1 || imaginary.is_some_and(|im| im != (acc.1 == 1)) {
+                return Err(bad(t.span));
+            }
+            imaginary = Some(acc.1 == 1);
+            match combo.iter_mut().find(|c| c.0 == angle) {
+                Some(c) => c.1 += acc.0,
+                None => combo.push((angle, acc.0)),
+            }
+        }
+        Ok((combo, imaginary.unwrap_or(false)))
+    }
+}

@@ -1,0 +1,271 @@
+//! Gaussian integers Z[i] and Gaussian rationals Q(i) = Q + iQ.
+
+use std::fmt;
+use std::ops::{Add, AddAssign, Div, DivAssign, Mul, MulAssign, Neg, Sub, SubAssign};
+use std::str::FromStr;
+
+use super::rational::forward_binop;
+use super::{Integer, IntegerAcc, Rational};
+
+/// A Gaussian integer `re + i·im`.
+#[derive(Clone, PartialEq, Eq, Hash, Default)]
+pub struct GaussianInteger {
+    /// Real part.
+    pub re: Integer,
+    /// Imaginary part.
+    pub im: Integer,
+}
+
+impl GaussianInteger {
+    /// `re + i·im`.
+    pub fn new(re: Integer, im: Integer) -> Self {
+        GaussianInteger { re, im }
+    }
+
+    /// Whether both parts are zero.
+    pub fn is_zero(&self) -> bool {
+        self.re.is_zero() && self.im.is_zero()
+    }
+
+    /// Complex conjugate.
+    pub fn conj(&self) -> Self {
+        GaussianInteger { re: self.re.clone(), im: -&self.im }
+    }
+
+    /// `i · self`.
+    pub fn mul_i(&self) -> Self {
+        GaussianInteger { re: -&self.im, im: self.re.clone() }
+    }
+}
+
+impl fmt::Debug for GaussianInteger {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        write!(f, "({} + {}i)", self.re, self.im)
+    }
+}
+
+/// An accumulator for sums of products of Gaussian integers (two `IntegerAcc`s).
+#[derive(Clone, Debug, Default)]
+pub struct GaussianAcc {
+    re: IntegerAcc,
+    im: IntegerAcc,
+}
+
+impl GaussianAcc {
+    /// `acc += a * b`, with `(a + bi)(c + di) = (ac − bd) + (ad + bc)i`.
+    #[inline]
+    pub fn add_mul(&mut self, a: &GaussianInteger, b: &GaussianInteger) {
+        if a.im.is_zero() {
+            self.re.add_mul(&a.re, &b.re);
+            self.im.add_mul(&a.re, &b.im);
+        } else if b.im.is_zero() {
+            self.re.add_mul(&a.re, &b.re);
+            self.im.add_mul(&a.im, &b.re);
+        } else {
+            self.re.add_mul(&a.re, &b.re);
+            self.re.sub_mul(&a.im, &b.im);
+            self.im.add_mul(&a.re, &b.im);
+            self.im.add_mul(&a.im, &b.re);
+        }
+    }
+
+    /// `acc += a`.
+    #[inline]
+    pub fn add(&mut self, a: &GaussianInteger) {
+        self.re.add(&a.re);
+        self.im.add(&a.im);
+    }
+
+    /// The accumulated value.
+    pub fn finish(self) -> GaussianInteger {
+        GaussianInteger { re: self.re.finish(), im: self.im.finish() }
+    }
+}
+
+/// A Gaussian rational `re + i·im` with `re, im ∈ Q`: an element of the field Q(i).
+///
+/// ```
+/// use trigpoly::GaussianRational;
+/// let z: GaussianRational = "3/5 + 4/5*i".parse().unwrap();
+/// assert_eq!((&z * &z.conj()).to_string(), "1");
+/// assert_eq!(z.try_inv().unwrap(), z.conj());
+/// ```
+#[derive(Clone, PartialEq, Eq, Hash, Default)]
+pub struct GaussianRational {
+    /// Real part.
+    pub re: Rational,
+    /// Imaginary part.
+    pub im: Rational,
+}
+
+impl GaussianRational {
+    /// `re + i·im`.
+    pub fn new(re: Rational, im: Rational) -> Self {
+        GaussianRational { re, im }
+    }
+
+    /// The imaginary unit.
+    pub fn i() -> Self {
+        GaussianRational { re: Rational::zero(), im: Rational::one() }
+    }
+
+    /// Whether both parts are zero.
+    pub fn is_zero(&self) -> bool {
+        self.re.is_zero() && self.im.is_zero()
+    }
+
+    /// Whether the imaginary part is zero.
+    pub fn is_real(&self) -> bool {
+        self.im.is_zero()
+    }
+
+    /// Complex conjugate.
+    pub fn conj(&self) -> Self {
+        GaussianRational { re: self.re.clone(), im: -&self.im }
+    }
+
+    /// `|z|² = re² + im²`.
+    pub fn norm(&self) -> Rational {
+        &self.re * &self.re + &self.im * &self.im
+    }
+
+    /// The inverse `z̄/|z|²`, or `None` for zero.
+    pub fn try_inv(&self) -> Option<Self> {
+        let n = self.norm().try_inv()?;
+        Some(GaussianRational { re: &self.re * &n, im: -(&self.im * &n) })
+    }
+
+    /// `self^e` for any integer `e`; `None` for `0^e` with `e < 0`.
+    pub fn pow(&self, e: i64) -> Option<Self> {
+        let mut base = if e < 0 { self.try_inv()? } else { self.clone() };
+        let mut k = e.unsigned_abs();
+        let mut acc = GaussianRational::from(Rational::one());
+        while k > 0 {
+            if k & 1 == 1 {
+                acc = &acc * &base;
+            }
+            base = &base * &base;
+            k >>= 1;
+        }
+        Some(acc)
+    }
+}
+
+impl From<Rational> for GaussianRational {
+    fn from(re: Rational) -> Self {
+        GaussianRational { re, im: Rational::zero() }
+    }
+}
+
+impl From<i64> for GaussianRational {
+    fn from(v: i64) -> Self {
+        GaussianRational::from(Rational::from(v))
+    }
+}
+
+impl fmt::Display for GaussianRational {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match (self.re.is_zero(), self.im.is_zero()) {
+            (_, true) => write!(f, "{}", self.re),
+            (true, false) => write_imag(f, &self.im),
+            (false, false) => {
+                write!(f, "{}", self.re)?;
+                if self.im.is_negative() {
+                    write!(f, " - ")?;
+                    write_imag(f, &-&self.im)
+                } else {
+                    write!(f, " + ")?;
+                    write_imag(f, &self.im)
+                }
+            }
+        }
+    }
+}
+
+fn write_imag(f: &mut fmt::Formatter<'_>, im: &Rational) -> fmt::Result {
+    if im.is_one() {
+        write!(f, "i")
+    } else if (-im).is_one() {
+        write!(f, "-i")
+    } else {
+        write!(f, "{im}*i")
+    }
+}
+
+impl fmt::Debug for GaussianRational {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        fmt::Display::fmt(self, f)
+    }
+}
+
+/// Why a Gaussian rational did not parse.
+#[derive(Clone, Debug, PartialEq, Eq, thiserror::Error)]
+#[error("not an exact Gaussian rational: {0:?} (expected a form like 3/5 + 4/5*i)")]
+pub struct ParseGaussianError(pub String);
+
+impl FromStr for GaussianRational {
+    type Err = ParseGaussianError;
+    /// Accepts `a`, `b*i`, `i`, `-i`, `a + b*i`, `a - b*i` with `a, b` integers or fractions.
+    fn from_str(s: &str) -> Result<Self, Self::Err> {
+        let err = || ParseGaussianError(s.to_string());
+        let t: String = s.chars().filter(|c| !c.is_whitespace()).collect();
+        let imag = |p: &str| -> Option<Rational> {
+            let body = p.strip_suffix('i')?;
+            let body = body.strip_suffix('*').unwrap_or(body);
+            match body {
+                "" | "+" => Some(Rational::one()),
+                "-" => Some(-Rational::one()),
+                b => b.parse().ok(),
+            }
+        };
+        if !t.ends_with('i') {
+            return t.parse::<Rational>().map(GaussianRational::from).map_err(|_| err());
+        }
+        // Split at the last sign that is not the first character.
+        let split = t
+            .char_indices()
+            .skip(1)
+            .filter(|&(_, c)| c == '+' || c == '-')
+            .map(|(k, _)| k)
+            .last();
+        match split {
+            Some(k) => {
+                let re: Rational = t[..k].parse().map_err(|_| err())?;
+                let im = imag(&t[k..]).ok_or_else(err)?;
+                Ok(GaussianRational { re, im })
+            }
+            None => Ok(GaussianRational { re: Rational::zero(), im: imag(&t).ok_or_else(err)? }),
+        }
+    }
+}
+
+forward_binop!(GaussianRational, Add, add, AddAssign, add_assign, |a, b| GaussianRational {
+    re: &a.re + &b.re,
+    im: &a.im + &b.im
+});
+forward_binop!(GaussianRational, Sub, sub, SubAssign, sub_assign, |a, b| GaussianRational {
+    re: &a.re - &b.re,
+    im: &a.im - &b.im
+});
+// (a + bi)(c + di) = (ac − bd) + (ad + bc)i
+forward_binop!(GaussianRational, Mul, mul, MulAssign, mul_assign, |a, b| GaussianRational {
+    re: &a.re * &b.re - &a.im * &b.im,
+    im: &a.re * &b.im + &a.im * &b.re
+});
+// Panics if the divisor is zero (use `try_inv` for a checked division).
+forward_binop!(GaussianRational, Div, div, DivAssign, div_assign, |a, b| a
+    * b.try_inv().expect("division by zero"));
+
+impl Neg for &GaussianRational {
+    type Output = GaussianRational;
+    fn neg(self) -> GaussianRational {
+        GaussianRational { re: -&self.re, im: -&self.im }
+    }
+}
+
+impl Neg for GaussianRational {
+    type Output = GaussianRational;
+    fn neg(self) -> GaussianRational {
+        -&self
+    }
+}

@@ -1,0 +1,419 @@
+//! `Integer`: a machine integer that becomes a big integer only when it has to.
+//!
+//! Every value that fits an `i64` is stored as `Small`; the `Big` variant holds only values
+//! outside that range, so equality and hashing are structural. Each operation tries the machine
+//! path with exact overflow detection (`checked_*`, `i128` intermediates) and falls back to
+//! `num_bigint::BigInt`.
+
+use std::cmp::Ordering;
+use std::fmt;
+use std::ops::{Add, AddAssign, Mul, MulAssign, Neg, Sub, SubAssign};
+use std::str::FromStr;
+
+use num_bigint::BigInt;
+use num_integer::Integer as _;
+use num_traits::{One, Signed, ToPrimitive, Zero};
+
+/// An exact integer: `i64` when it fits, `BigInt` otherwise.
+///
+/// Invariant: `Big` never holds a value that fits in `i64`.
+///
+/// ```
+/// use trigpoly::Integer;
+/// let big = Integer::from(i64::MAX) + Integer::from(1);
+/// assert_eq!(big.to_string(), "9223372036854775808");
+/// assert_eq!(big - Integer::from(1), Integer::from(i64::MAX));
+/// ```
+#[derive(Clone, PartialEq, Eq, Hash)]
+pub enum Integer {
+    /// A value in `i64` range.
+    Small(i64),
+    /// A value outside `i64` range.
+    Big(Box<BigInt>),
+}
+
+impl Integer {
+    /// Zero.
+    pub const ZERO: Integer = Integer::Small(0);
+    /// One.
+    pub const ONE: Integer = Integer::Small(1);
+
+    /// Whether the value is zero.
+    pub fn is_zero(&self) -> bool {
+        matches!(self, Integer::Small(0))
+    }
+
+    /// Whether the value is one.
+    pub fn is_one(&self) -> bool {
+        matches!(self, Integer::Small(1))
+    }
+
+    /// The sign: -1, 0 or 1.
+    pub fn signum(&self) -> i32 {
+        match self {
+            Integer::Small(v) => v.signum() as i32,
+            Integer::Big(b) => {
+                if b.is_negative() {
+                    -1
+                } else {
+                    1
+                }
+            }
+        }
+    }
+
+    /// Whether the value is negative.
+    pub fn is_negative(&self) -> bool {
+        self.signum() < 0
+    }
+
+    /// The value as `i64`, if it fits.
+    pub fn to_i64(&self) -> Option<i64> {
+        match self {
+            Integer::Small(v) => Some(*v),
+            Integer::Big(_) => None,
+        }
+    }
+
+    /// The value as a `BigInt`.
+    pub fn to_bigint(&self) -> BigInt {
+        match self {
+            Integer::Small(v) => BigInt::from(*v),
+            Integer::Big(b) => (**b).clone(),
+        }
+    }
+
+    /// Builds from an `i128`, staying small when it fits.
+    pub fn from_i128(v: i128) -> Integer {
+        match i64::try_from(v) {
+            Ok(s) => Integer::Small(s),
+            Err(_) => Integer::Big(Box::new(BigInt::from(v))),
+        }
+    }
+
+    /// Builds from a `BigInt`, demoting to `Small` when it fits (the canonical form).
+    pub fn from_bigint(b: BigInt) -> Integer {
+        match b.to_i64() {
+            Some(s) => Integer::Small(s),
+            None => Integer::Big(Box::new(b)),
+        }
+    }
+
+    /// Absolute value.
+    pub fn abs(&self) -> Integer {
+        if self.is_negative() {
+            -self
+        } else {
+            self.clone()
+        }
+    }
+
+    /// Greatest common divisor, always `>= 0`; `gcd(0, 0) = 0`.
+    pub fn gcd(&self, other: &Integer) -> Integer {
+        match (self, other) {
+            (Integer::Small(a), Integer::Small(b)) => {
+                let g = (*a as i128).unsigned_abs().gcd(&(*b as i128).unsigned_abs());
+                Integer::from_i128(g as i128)
+            }
+            _ => Integer::from_bigint(self.to_bigint().gcd(&other.to_bigint())),
+        }
+    }
+
+    /// Least common multiple, always `>= 0`.
+    pub fn lcm(&self, other: &Integer) -> Integer {
+        if self.is_zero() || other.is_zero() {
+            return Integer::ZERO;
+        }
+        let g = self.gcd(other);
+        (self.div_exact(&g) * other).abs()
+    }
+
+    /// Exact division.
+    ///
+    /// Panics if `d` is zero; the result is only meaningful when `d` divides `self`.
+    pub fn div_exact(&self, d: &Integer) -> Integer {
+        match (self, d) {
+            (Integer::Small(a), Integer::Small(b)) => {
+                Integer::from_i128(*a as i128 / *b as i128)
+            }
+            _ => Integer::from_bigint(self.to_bigint() / d.to_bigint()),
+        }
+    }
+
+    /// Whether `d` divides `self` (`d` nonzero).
+    pub fn is_divisible_by(&self, d: &Integer) -> bool {
+        match (self, d) {
+            (Integer::Small(a), Integer::Small(b)) => (*a as i128) % (*b as i128) == 0,
+            _ => (self.to_bigint() % d.to_bigint()).is_zero(),
+        }
+    }
+
+    /// `self^e`.
+    pub fn pow(&self, e: u32) -> Integer {
+        if let Integer::Small(v) = self {
+            if let Some(p) = v.checked_pow(e) {
+                return Integer::Small(p);
+            }
+        }
+        Integer::from_bigint(num_traits::pow(self.to_bigint(), e as usize))
+    }
+
+    /// Number of bits of the absolute value.
+    pub fn bits(&self) -> u64 {
+        match self {
+            Integer::Small(v) => 64 - v.unsigned_abs().leading_zeros() as u64,
+            Integer::Big(b) => b.bits(),
+        }
+    }
+}
+
+impl Default for Integer {
+    fn default() -> Self {
+        Integer::ZERO
+    }
+}
+
+impl From<i64> for Integer {
+    fn from(v: i64) -> Self {
+        Integer::Small(v)
+    }
+}
+
+impl From<i32> for Integer {
+    fn from(v: i32) -> Self {
+        Integer::Small(v as i64)
+    }
+}
+
+impl From<u64> for Integer {
+    fn from(v: u64) -> Self {
+        Integer::from_i128(v as i128)
+    }
+}
+
+impl From<BigInt> for Integer {
+    fn from(b: BigInt) -> Self {
+        Integer::from_bigint(b)
+    }
+}
+
+impl From<&Integer> for BigInt {
+    fn from(v: &Integer) -> Self {
+        v.to_bigint()
+    }
+}
+
+impl Ord for Integer {
+    fn cmp(&self, other: &Self) -> Ordering {
+        match (self, other) {
+            (Integer::Small(a), Integer::Small(b)) => a.cmp(b),
+            _ => self.to_bigint().cmp(&other.to_bigint()),
+        }
+    }
+}
+
+impl PartialOrd for Integer {
+    fn partial_cmp(&self, other: &Self) -> Option<Ordering> {
+        Some(self.cmp(other))
+    }
+}
+
+impl fmt::Display for Integer {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            Integer::Small(v) => write!(f, "{v}"),
+            Integer::Big(b) => write!(f, "{b}"),
+        }
+    }
+}
+
+impl fmt::Debug for Integer {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        fmt::Display::fmt(self, f)
+    }
+}
+
+impl FromStr for Integer {
+    type Err = num_bigint::ParseBigIntError;
+    fn from_str(s: &str) -> Result<Self, Self::Err> {
+        Ok(Integer::from_bigint(s.parse()?))
+    }
+}
+
+// a + b, a - b, a * b: machine path with overflow check, else BigInt.
+fn add_ref(a: &Integer, b: &Integer) -> Integer {
+    match (a, b) {
+        (Integer::Small(x), Integer::Small(y)) => match x.checked_add(*y) {
+            Some(v) => Integer::Small(v),
+            None => Integer::from_i128(*x as i128 + *y as i128),
+        },
+        _ => Integer::from_bigint(a.to_bigint() + b.to_bigint()),
+    }
+}
+
+fn sub_ref(a: &Integer, b: &Integer) -> Integer {
+    match (a, b) {
+        (Integer::Small(x), Integer::Small(y)) => match x.checked_sub(*y) {
+            Some(v) => Integer::Small(v),
+            None => Integer::from_i128(*x as i128 - *y as i128),
+        },
+        _ => Integer::from_bigint(a.to_bigint() - b.to_bigint()),
+    }
+}
+
+fn mul_ref(a: &Integer, b: &Integer) -> Integer {
+    match (a, b) {
+        (Integer::Small(x), Integer::Small(y)) => Integer::from_i128(*x as i128 * *y as i128),
+        _ => Integer::from_bigint(a.to_bigint() * b.to_bigint()),
+    }
+}
+
+macro_rules! forward_binop {
+    ($Trait:ident, $method:ident, $Assign:ident, $assign:ident, $f:ident) => {
+        impl $Trait<&Integer> for &Integer {
+            type Output = Integer;
+            fn $method(self, rhs: &Integer) -> Integer {
+                $f(self, rhs)
+            }
+        }
+        impl $Trait<Integer> for &Integer {
+            type Output = Integer;
+            fn $method(self, rhs: Integer) -> Integer {
+                $f(self, &rhs)
+            }
+        }
+        impl $Trait<&Integer> for Integer {
+            type Output = Integer;
+            fn $method(self, rhs: &Integer) -> Integer {
+                $f(&self, rhs)
+            }
+        }
+        impl $Trait<Integer> for Integer {
+            type Output = Integer;
+            fn $method(self, rhs: Integer) -> Integer {
+                $f(&self, &rhs)
+            }
+        }
+        impl $Assign<&Integer> for Integer {
+            fn $assign(&mut self, rhs: &Integer) {
+                *self = $f(self, rhs);
+            }
+        }
+        impl $Assign<Integer> for Integer {
+            fn $assign(&mut self, rhs: Integer) {
+                *self = $f(self, &rhs);
+            }
+        }
+    };
+}
+
+forward_binop!(Add, add, AddAssign, add_assign, add_ref);
+forward_binop!(Sub, sub, SubAssign, sub_assign, sub_ref);
+forward_binop!(Mul, mul, MulAssign, mul_assign, mul_ref);
+
+impl Neg for &Integer {
+    type Output = Integer;
+    fn neg(self) -> Integer {
+        match self {
+            Integer::Small(v) => match v.checked_neg() {
+                Some(n) => Integer::Small(n),
+                None => Integer::from_i128(-(*v as i128)),
+            },
+            Integer::Big(b) => Integer::from_bigint(-(**b).clone()),
+        }
+    }
+}
+
+impl Neg for Integer {
+    type Output = Integer;
+    fn neg(self) -> Integer {
+        -&self
+    }
+}
+
+impl Zero for Integer {
+    fn zero() -> Self {
+        Integer::ZERO
+    }
+    fn is_zero(&self) -> bool {
+        Integer::is_zero(self)
+    }
+}
+
+impl One for Integer {
+    fn one() -> Self {
+        Integer::ONE
+    }
+}
+
+/// An accumulator for sums of products `Σ a_k b_k` of integers: `i128` while it fits, then
+/// `BigInt`. This is what keeps multiplication free of allocations for small coefficients.
+#[derive(Clone, Debug, Default)]
+pub struct IntegerAcc {
+    small: i128,
+    big: Option<BigInt>,
+}
+
+impl IntegerAcc {
+    /// `acc += a * b`.
+    #[inline]
+    pub fn add_mul(&mut self, a: &Integer, b: &Integer) {
+        if let (Integer::Small(x), Integer::Small(y)) = (a, b) {
+            let p = *x as i128 * *y as i128;
+            match self.small.checked_add(p) {
+                Some(s) => self.small = s,
+                None => self.spill(BigInt::from(p)),
+            }
+        } else {
+            self.spill(a.to_bigint() * b.to_bigint());
+        }
+    }
+
+    /// `acc += a`.
+    #[inline]
+    pub fn add(&mut self, a: &Integer) {
+        match a {
+            Integer::Small(x) => match self.small.checked_add(*x as i128) {
+                Some(s) => self.small = s,
+                None => self.spill(BigInt::from(*x)),
+            },
+            Integer::Big(b) => self.spill((**b).clone()),
+        }
+    }
+
+    /// `acc -= a * b`.
+    #[inline]
+    pub fn sub_mul(&mut self, a: &Integer, b: &Integer) {
+        if let (Integer::Small(x), Integer::Small(y)) = (a, b) {
+            let p = *x as i128 * *y as i128;
+            match self.small.checked_sub(p) {
+                Some(s) => self.small = s,
+                None => self.spill(-BigInt::from(p)),
+            }
+        } else {
+            self.spill(-(a.to_bigint() * b.to_bigint()));
+        }
+    }
+
+    #[cold]
+    fn spill(&mut self, v: BigInt) {
+        let big = self.big.get_or_insert_with(BigInt::zero);
+        *big += v;
+    }
+
+    /// The accumulated value.
+    pub fn finish(self) -> Integer {
+        match self.big {
+            None => Integer::from_i128(self.small),
+            Some(b) => Integer::from_bigint(b + BigInt::from(self.small)),
+        }
+    }
+
+    /// Whether the accumulated value is zero.
+    pub fn is_zero(&self) -> bool {
+        match &self.big {
+            None => self.small == 0,
+            Some(b) => (b + BigInt::from(self.small)).is_zero(),
+        }
+    }
+}

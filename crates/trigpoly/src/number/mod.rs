@@ -1,0 +1,265 @@
+//! Exact numbers: integers with a machine fast path, Q, Z[i], Q(i), and the two traits that let
+//! one polynomial type serve both fields.
+//!
+//! A polynomial over a field `C` is stored as a rational *content* times a primitive polynomial
+//! over the integer ring `C::Int` (Z for Q, Z[i] for Q(i)), as FLINT's `fmpq_mpoly` does: the hot
+//! loops then multiply machine integers, not fractions.
+
+mod gaussian;
+mod integer;
+mod rational;
+
+use std::fmt::{Debug, Display};
+use std::hash::Hash;
+use std::str::FromStr;
+
+pub use gaussian::{GaussianAcc, GaussianInteger, GaussianRational, ParseGaussianError};
+pub use integer::{Integer, IntegerAcc};
+pub use rational::{ParseRationalError, Rational};
+
+/// The integer ring under a coefficient field: `Integer` (Z) or `GaussianInteger` (Z[i]).
+pub trait IntegerRing: Clone + PartialEq + Eq + Hash + Debug + Default + Send + Sync + 'static {
+    /// Accumulator for sums of products, free of allocation while values are small.
+    type Acc: Default + Clone;
+    /// Whether the value is zero.
+    fn is_zero(&self) -> bool;
+    /// The embedding of an integer.
+    fn from_integer(k: Integer) -> Self;
+    /// `a + b`.
+    fn add(&self, other: &Self) -> Self;
+    /// `a − b`.
+    fn sub(&self, other: &Self) -> Self;
+    /// `a · b`.
+    fn mul(&self, other: &Self) -> Self;
+    /// `−a`.
+    fn neg(&self) -> Self;
+    /// `a · k` for an integer `k`.
+    fn scale(&self, k: &Integer) -> Self;
+    /// `a / k`, exact: `k` divides every component.
+    fn div_exact(&self, k: &Integer) -> Self;
+    /// `gcd(g, every component of a)`.
+    fn gcd_into(&self, g: &Integer) -> Integer;
+    /// The sign of the first nonzero component (real part first).
+    fn leading_sign(&self) -> i32;
+    /// Complex conjugate (identity on Z).
+    fn conj(&self) -> Self;
+    /// `i · a`, if `i` is in the ring.
+    fn try_mul_i(&self) -> Option<Self>;
+    /// `acc += a · b`.
+    fn acc_add_mul(acc: &mut Self::Acc, a: &Self, b: &Self);
+    /// `acc += a`.
+    fn acc_add(acc: &mut Self::Acc, a: &Self);
+    /// The accumulated value.
+    fn acc_finish(acc: Self::Acc) -> Self;
+}
+
+impl IntegerRing for Integer {
+    type Acc = IntegerAcc;
+    fn is_zero(&self) -> bool {
+        Integer::is_zero(self)
+    }
+    fn from_integer(k: Integer) -> Self {
+        k
+    }
+    fn add(&self, other: &Self) -> Self {
+        self + other
+    }
+    fn sub(&self, other: &Self) -> Self {
+        self - other
+    }
+    fn mul(&self, other: &Self) -> Self {
+        self * other
+    }
+    fn neg(&self) -> Self {
+        -self
+    }
+    fn scale(&self, k: &Integer) -> Self {
+        self * k
+    }
+    fn div_exact(&self, k: &Integer) -> Self {
+        Integer::div_exact(self, k)
+    }
+    fn gcd_into(&self, g: &Integer) -> Integer {
+        g.gcd(self)
+    }
+    fn leading_sign(&self) -> i32 {
+        self.signum()
+    }
+    fn conj(&self) -> Self {
+        self.clone()
+    }
+    fn try_mul_i(&self) -> Option<Self> {
+        None
+    }
+    #[inline]
+    fn acc_add_mul(acc: &mut IntegerAcc, a: &Self, b: &Self) {
+        acc.add_mul(a, b)
+    }
+    #[inline]
+    fn acc_add(acc: &mut IntegerAcc, a: &Self) {
+        acc.add(a)
+    }
+    fn acc_finish(acc: IntegerAcc) -> Self {
+        acc.finish()
+    }
+}
+
+impl IntegerRing for GaussianInteger {
+    type Acc = GaussianAcc;
+    fn is_zero(&self) -> bool {
+        GaussianInteger::is_zero(self)
+    }
+    fn from_integer(k: Integer) -> Self {
+        GaussianInteger::new(k, Integer::ZERO)
+    }
+    fn add(&self, o: &Self) -> Self {
+        GaussianInteger::new(&self.re + &o.re, &self.im + &o.im)
+    }
+    fn sub(&self, o: &Self) -> Self {
+        GaussianInteger::new(&self.re - &o.re, &self.im - &o.im)
+    }
+    // (a + bi)(c + di) = (ac − bd) + (ad + bc)i
+    fn mul(&self, o: &Self) -> Self {
+        if self.im.is_zero() {
+            return GaussianInteger::new(&self.re * &o.re, &self.re * &o.im);
+        }
+        if o.im.is_zero() {
+            return GaussianInteger::new(&self.re * &o.re, &self.im * &o.re);
+        }
+        GaussianInteger::new(
+            &self.re * &o.re - &self.im * &o.im,
+            &self.re * &o.im + &self.im * &o.re,
+        )
+    }
+    fn neg(&self) -> Self {
+        GaussianInteger::new(-&self.re, -&self.im)
+    }
+    fn scale(&self, k: &Integer) -> Self {
+        GaussianInteger::new(&self.re * k, &self.im * k)
+    }
+    fn div_exact(&self, k: &Integer) -> Self {
+        GaussianInteger::new(self.re.div_exact(k), self.im.div_exact(k))
+    }
+    fn gcd_into(&self, g: &Integer) -> Integer {
+        g.gcd(&self.re).gcd(&self.im)
+    }
+    fn leading_sign(&self) -> i32 {
+        if self.re.is_zero() {
+            self.im.signum()
+        } else {
+            self.re.signum()
+        }
+    }
+    fn conj(&self) -> Self {
+        GaussianInteger::conj(self)
+    }
+    fn try_mul_i(&self) -> Option<Self> {
+        Some(self.mul_i())
+    }
+    #[inline]
+    fn acc_add_mul(acc: &mut GaussianAcc, a: &Self, b: &Self) {
+        acc.add_mul(a, b)
+    }
+    #[inline]
+    fn acc_add(acc: &mut GaussianAcc, a: &Self) {
+        acc.add(a)
+    }
+    fn acc_finish(acc: GaussianAcc) -> Self {
+        acc.finish()
+    }
+}
+
+/// A coefficient field: `Rational` (Q) or `GaussianRational` (Q(i)).
+///
+/// Every element factors as `content · n` with `content ∈ Q` and `n` in the integer ring
+/// [`Coefficient::Int`]; polynomials use that split to run their inner loops on integers.
+pub trait Coefficient:
+    Clone + PartialEq + Eq + Hash + Debug + Display + FromStr + Default + Send + Sync + 'static
+{
+    /// The integer ring: Z for Q, Z[i] for Q(i).
+    type Int: IntegerRing;
+    /// Whether the field contains `i` (so angles, `e^{iθ}`, can be represented).
+    const HAS_I: bool;
+    /// The field's name, for messages: "Q" or "Q(i)".
+    const NAME: &'static str;
+    /// `content · n`.
+    fn from_parts(content: &Rational, n: &Self::Int) -> Self;
+    /// `(content, n)` with `n` primitive (coprime components, first nonzero one positive) and
+    /// `self = content · n`; `(0, 0)` for zero.
+    fn split(&self) -> (Rational, Self::Int);
+    /// The embedding of a rational.
+    fn from_rational(q: Rational) -> Self;
+    /// The value as a Gaussian rational.
+    fn to_gaussian(&self) -> GaussianRational;
+    /// The value, if it lies in this field.
+    fn from_gaussian(z: &GaussianRational) -> Option<Self>;
+    /// Zero.
+    fn zero() -> Self {
+        Self::default()
+    }
+    /// One.
+    fn one() -> Self {
+        Self::from_rational(Rational::one())
+    }
+    /// Whether the value is zero.
+    fn is_zero(&self) -> bool;
+}
+
+impl Coefficient for Rational {
+    type Int = Integer;
+    const HAS_I: bool = false;
+    const NAME: &'static str = "Q";
+    fn from_parts(content: &Rational, n: &Integer) -> Self {
+        content * Rational::from(n)
+    }
+    fn split(&self) -> (Rational, Integer) {
+        if self.is_zero() {
+            return (Rational::zero(), Integer::ZERO);
+        }
+        (self.clone(), Integer::ONE)
+    }
+    fn from_rational(q: Rational) -> Self {
+        q
+    }
+    fn to_gaussian(&self) -> GaussianRational {
+        GaussianRational::from(self.clone())
+    }
+    fn from_gaussian(z: &GaussianRational) -> Option<Self> {
+        z.is_real().then(|| z.re.clone())
+    }
+    fn is_zero(&self) -> bool {
+        Rational::is_zero(self)
+    }
+}
+
+impl Coefficient for GaussianRational {
+    type Int = GaussianInteger;
+    const HAS_I: bool = true;
+    const NAME: &'static str = "Q(i)";
+    fn from_parts(content: &Rational, n: &GaussianInteger) -> Self {
+        GaussianRational::new(content * Rational::from(&n.re), content * Rational::from(&n.im))
+    }
+    fn split(&self) -> (Rational, GaussianInteger) {
+        if self.is_zero() {
+            return (Rational::zero(), GaussianInteger::default());
+        }
+        let g = Rational::content_gcd(&self.re, &self.im);
+        let sign = if self.re.is_zero() { self.im.sign() } else { self.re.sign() };
+        let g = if sign == std::cmp::Ordering::Less { -g } else { g };
+        let re = &self.re / &g;
+        let im = &self.im / &g;
+        (g, GaussianInteger::new(re.numer(), im.numer()))
+    }
+    fn from_rational(q: Rational) -> Self {
+        GaussianRational::from(q)
+    }
+    fn to_gaussian(&self) -> GaussianRational {
+        self.clone()
+    }
+    fn from_gaussian(z: &GaussianRational) -> Option<Self> {
+        Some(z.clone())
+    }
+    fn is_zero(&self) -> bool {
+        GaussianRational::is_zero(self)
+    }
+}

@@ -1,0 +1,193 @@
+//! Addition, subtraction, negation, scalar multiples and exact division by a term, with the
+//! operator traits for all owned/borrowed combinations.
+
+use std::ops::{Add, AddAssign, Mul, MulAssign, Neg, Sub, SubAssign};
+
+use super::Poly;
+use crate::error::AlgebraError;
+use crate::number::{Coefficient, Integer, IntegerRing, Rational};
+
+impl<C: Coefficient> Poly<C> {
+    // f + g with f = a·F, g = b·G: d = gcd(a, b), f + g = d·((a/d)·F + (b/d)·G).
+    fn combine(&self, other: &Self, negate_other: bool) -> Result<Self, AlgebraError> {
+        self.same_vars(other)?;
+        if other.is_zero() {
+            return Ok(self.clone());
+        }
+        if self.is_zero() {
+            return Ok(if negate_other { -other } else { other.clone() });
+        }
+        let d = Rational::content_gcd(&self.content, &other.content);
+        let sa = (&self.content / &d).numer();
+        let mut sb = (&other.content / &d).numer();
+        if negate_other {
+            sb = -sb;
+        }
+        let (exps, coeffs) = merge(self, &sa, other, &sb);
+        Self::check_terms(&self.vars, coeffs.len())?;
+        Ok(Self::drop_zeros_and_normalize(&self.vars, d, exps, coeffs))
+    }
+
+    /// `self + other`, or an error if the variable sets differ or the term limit is hit.
+    pub fn checked_add(&self, other: &Self) -> Result<Self, AlgebraError> {
+        self.combine(other, false)
+    }
+
+    /// `self − other`, or an error if the variable sets differ or the term limit is hit.
+    pub fn checked_sub(&self, other: &Self) -> Result<Self, AlgebraError> {
+        self.combine(other, true)
+    }
+
+    /// `c · self`.
+    pub fn scale(&self, c: &C) -> Self {
+        let (q, n) = c.split();
+        if q.is_zero() || self.is_zero() {
+            return Self::zero(&self.vars);
+        }
+        let content = &self.content * &q;
+        if n == C::Int::from_integer(Integer::ONE) {
+            return Poly { content, ..self.clone() };
+        }
+        let coeffs = self.coeffs.iter().map(|x| x.mul(&n)).collect();
+        Self::from_sorted(&self.vars, content, self.exps.clone(), coeffs)
+    }
+
+    /// `q · self` for a rational `q`.
+    pub fn scale_rational(&self, q: &Rational) -> Self {
+        if q.is_zero() || self.is_zero() {
+            return Self::zero(&self.vars);
+        }
+        Poly { content: &self.content * q, ..self.clone() }
+    }
+
+    /// `self / d` where `d` is a nonzero constant or a single term; anything else is an error
+    /// (the quotient would not be a polynomial).
+    pub fn checked_div(&self, d: &Self) -> Result<Self, AlgebraError> {
+        self.same_vars(d)?;
+        if d.is_zero() {
+            return Err(AlgebraError::DivisionByZero);
+        }
+        if !d.is_monomial() {
+            return Err(AlgebraError::NotAMonomial(d.to_string()));
+        }
+        self.checked_mul(&d.checked_pow(-1)?)
+    }
+
+    /// Multiplies every term by `i` (needs Q(i)).
+    pub fn mul_i(&self) -> Result<Self, AlgebraError> {
+        let coeffs = self
+            .coeffs
+            .iter()
+            .map(|c| c.try_mul_i())
+            .collect::<Option<Vec<_>>>()
+            .ok_or_else(|| AlgebraError::NeedsGaussian("multiplication by i".into()))?;
+        Ok(Self::from_sorted(&self.vars, self.content.clone(), self.exps.clone(), coeffs))
+    }
+}
+
+/// Merges two sorted term lists with integer scale factors: `sa·a + sb·b` (zeros may remain).
+pub(crate) fn merge<C: Coefficient>(
+    a: &Poly<C>,
+    sa: &Integer,
+    b: &Poly<C>,
+    sb: &Integer,
+) -> (Vec<u64>, Vec<C::Int>) {
+    let w = a.words();
+    let (n, m) = (a.len(), b.len());
+    let mut exps = Vec::with_capacity((n + m) * w);
+    let mut coeffs = Vec::with_capacity(n + m);
+    let scale = |c: &C::Int, s: &Integer| if s.is_one() { c.clone() } else { c.scale(s) };
+    let (mut i, mut j) = (0, 0);
+    while i < n && j < m {
+        match a.exp(i).cmp(b.exp(j)) {
+            std::cmp::Ordering::Greater => {
+                exps.extend_from_slice(a.exp(i));
+                coeffs.push(scale(&a.coeffs[i], sa));
+                i += 1;
+            }
+            std::cmp::Ordering::Less => {
+                exps.extend_from_slice(b.exp(j));
+                coeffs.push(scale(&b.coeffs[j], sb));
+                j += 1;
+            }
+            std::cmp::Ordering::Equal => {
+                let c = scale(&a.coeffs[i], sa).add(&scale(&b.coeffs[j], sb));
+                if !c.is_zero() {
+                    exps.extend_from_slice(a.exp(i));
+                    coeffs.push(c);
+                }
+                i += 1;
+                j += 1;
+            }
+        }
+    }
+    for k in i..n {
+        exps.extend_from_slice(a.exp(k));
+        coeffs.push(scale(&a.coeffs[k], sa));
+    }
+    for k in j..m {
+        exps.extend_from_slice(b.exp(k));
+        coeffs.push(scale(&b.coeffs[k], sb));
+    }
+    (exps, coeffs)
+}
+
+impl<C: Coefficient> Neg for &Poly<C> {
+    type Output = Poly<C>;
+    fn neg(self) -> Poly<C> {
+        Poly { content: -&self.content, ..self.clone() }
+    }
+}
+
+impl<C: Coefficient> Neg for Poly<C> {
+    type Output = Poly<C>;
+    fn neg(mut self) -> Poly<C> {
+        self.content = -self.content;
+        self
+    }
+}
+
+macro_rules! forward_poly_binop {
+    ($Trait:ident, $method:ident, $Assign:ident, $assign:ident, $checked:ident) => {
+        /// Panics if the variable sets differ or a limit of the `VarSet` is exceeded; the
+        /// `checked_*` method returns that as an error instead.
+        impl<C: Coefficient> $Trait<&Poly<C>> for &Poly<C> {
+            type Output = Poly<C>;
+            fn $method(self, rhs: &Poly<C>) -> Poly<C> {
+                self.$checked(rhs).unwrap_or_else(|e| panic!("{e}"))
+            }
+        }
+        impl<C: Coefficient> $Trait<Poly<C>> for &Poly<C> {
+            type Output = Poly<C>;
+            fn $method(self, rhs: Poly<C>) -> Poly<C> {
+                self.$method(&rhs)
+            }
+        }
+        impl<C: Coefficient> $Trait<&Poly<C>> for Poly<C> {
+            type Output = Poly<C>;
+            fn $method(self, rhs: &Poly<C>) -> Poly<C> {
+                (&self).$method(rhs)
+            }
+        }
+        impl<C: Coefficient> $Trait<Poly<C>> for Poly<C> {
+            type Output = Poly<C>;
+            fn $method(self, rhs: Poly<C>) -> Poly<C> {
+                (&self).$method(&rhs)
+            }
+        }
+        impl<C: Coefficient> $Assign<&Poly<C>> for Poly<C> {
+            fn $assign(&mut self, rhs: &Poly<C>) {
+                *self = (&*self).$method(rhs);
+            }
+        }
+        impl<C: Coefficient> $Assign<Poly<C>> for Poly<C> {
+            fn $assign(&mut self, rhs: Poly<C>) {
+                *self = (&*self).$method(&rhs);
+            }
+        }
+    };
+}
+
+forward_poly_binop!(Add, add, AddAssign, add_assign, checked_add);
+forward_poly_binop!(Sub, sub, SubAssign, sub_assign, checked_sub);
+forward_poly_binop!(Mul, mul, MulAssign, mul_assign, checked_mul);

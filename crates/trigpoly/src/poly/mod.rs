@@ -1,0 +1,418 @@
+//! `Poly<C>`: exact Laurent polynomials in the variables of a `VarSet`, with each angle `θ`
+//! carried as `e^{iθ}`, over Q or Q(i).
+//!
+//! Representation: a rational content times a primitive polynomial over the integer ring
+//! (`C::Int`), terms sorted by packed exponent words in strictly descending order. This module
+//! holds the type, its invariant and accessors; arithmetic, multiplication, calculus,
+//! substitution, conjugation, trigonometry and printing live in the sibling files.
+
+mod arith;
+mod calculus;
+mod complex;
+mod mul;
+mod pow;
+mod subst;
+mod trig;
+
+use std::fmt;
+use std::hash::{Hash, Hasher};
+use std::sync::Arc;
+
+use crate::error::AlgebraError;
+use crate::number::{Coefficient, Integer, IntegerRing, Rational};
+use crate::varset::{Layout, Var, VarKind, VarSet};
+
+pub use subst::Point;
+pub use trig::{CosSinTerm, TrigMonomial};
+
+/// An exact Laurent polynomial over `C` in the variables of a [`VarSet`].
+///
+/// Invariant (kept by every operation, so equality is structural and the zero test is "no
+/// terms"): terms sorted by exponent vector in strictly descending lexicographic order, no zero
+/// coefficient, integer coefficients with coprime components whose leading one is positive,
+/// and the rational `content` carrying the rest (zero exactly for the zero polynomial).
+///
+/// Angles are stored in the basis `e^{ikθ}`, `k ∈ Z`, which is a normal form of the ring
+/// `Q(i)[cos θ, sin θ]/(cos²θ + sin²θ − 1)`; printing converts to the form `A(cos θ) + sin θ·B(cos θ)`.
+///
+/// ```
+/// use trigpoly::{Poly, GaussianRational, VarSet};
+/// let vars = VarSet::builder().coordinate("x").angle("theta").build().unwrap();
+/// let c = Poly::<GaussianRational>::parse(&vars, "cos(theta)").unwrap();
+/// let s = Poly::<GaussianRational>::parse(&vars, "sin(theta)").unwrap();
+/// assert_eq!(&c * &c + &s * &s, Poly::one(&vars));
+/// ```
+#[derive(Clone)]
+pub struct Poly<C: Coefficient> {
+    vars: Arc<VarSet>,
+    content: Rational,
+    exps: Vec<u64>,
+    coeffs: Vec<C::Int>,
+}
+
+impl<C: Coefficient> Poly<C> {
+    /// The zero polynomial.
+    pub fn zero(vars: &Arc<VarSet>) -> Self {
+        Poly { vars: vars.clone(), content: Rational::zero(), exps: Vec::new(), coeffs: Vec::new() }
+    }
+
+    /// The constant 1.
+    pub fn one(vars: &Arc<VarSet>) -> Self {
+        Self::constant(vars, C::one())
+    }
+
+    /// A constant.
+    pub fn constant(vars: &Arc<VarSet>, c: C) -> Self {
+        let (content, n) = c.split();
+        if content.is_zero() {
+            return Self::zero(vars);
+        }
+        Poly { vars: vars.clone(), content, exps: vars.layout().one().to_vec(), coeffs: vec![n] }
+    }
+
+    /// The variable `v` (for an angle, `e^{iθ}`).
+    pub fn var(vars: &Arc<VarSet>, v: Var) -> Self {
+        Self::monomial(vars, C::one(), &[(v, 1)]).expect("exponent 1 is within every limit")
+    }
+
+    /// `c · Π v^e`, for any integer exponents within the limit.
+    pub fn monomial(vars: &Arc<VarSet>, c: C, powers: &[(Var, i64)]) -> Result<Self, AlgebraError> {
+        let mut exps = vec![0i64; vars.len()];
+        for &(v, e) in powers {
+            exps[v.index()] += e;
+        }
+        for v in vars.vars() {
+            check_exponent(vars, v, exps[v.index()])?;
+        }
+        let (content, n) = c.split();
+        if content.is_zero() {
+            return Ok(Self::zero(vars));
+        }
+        let mut w = vec![0u64; vars.layout().words];
+        vars.layout().pack(&exps, &mut w);
+        Ok(Poly { vars: vars.clone(), content, exps: w, coeffs: vec![n] })
+    }
+
+    /// Builds a polynomial from terms `(coefficient, exponent vector)` in any order; equal
+    /// monomials are combined.
+    pub fn from_terms(
+        vars: &Arc<VarSet>,
+        terms: impl IntoIterator<Item = (C, Vec<i64>)>,
+    ) -> Result<Self, AlgebraError> {
+        let mut acc = Self::zero(vars);
+        for (c, e) in terms {
+            let powers: Vec<(Var, i64)> = vars.vars().zip(e).collect();
+            acc = acc.checked_add(&Self::monomial(vars, c, &powers)?)?;
+        }
+        Ok(acc)
+    }
+
+    /// The variable set.
+    pub fn vars(&self) -> &Arc<VarSet> {
+        &self.vars
+    }
+
+    /// Number of terms.
+    pub fn len(&self) -> usize {
+        self.coeffs.len()
+    }
+
+    /// Whether this is the zero polynomial: the exact zero test.
+    pub fn is_zero(&self) -> bool {
+        self.coeffs.is_empty()
+    }
+
+    /// Whether this is a constant (no variable appears), zero included.
+    pub fn is_constant(&self) -> bool {
+        self.is_zero() || (self.len() == 1 && self.exps == self.vars.layout().one())
+    }
+
+    /// The constant value, if this is a constant.
+    pub fn as_constant(&self) -> Option<C> {
+        if self.is_zero() {
+            return Some(C::zero());
+        }
+        self.is_constant().then(|| C::from_parts(&self.content, &self.coeffs[0]))
+    }
+
+    /// Whether this is a single term (a nonzero scalar times a monomial).
+    pub fn is_monomial(&self) -> bool {
+        self.len() == 1
+    }
+
+    /// The terms, leading (largest exponent vector) first.
+    pub fn terms(&self) -> impl ExactSizeIterator<Item = Term<'_, C>> + '_ {
+        (0..self.len()).map(move |k| Term { poly: self, k })
+    }
+
+    /// The coefficient of a monomial, given as `(variable, exponent)` pairs (zero if absent).
+    pub fn coeff(&self, powers: &[(Var, i64)]) -> C {
+        let mut exps = vec![0i64; self.vars.len()];
+        for &(v, e) in powers {
+            exps[v.index()] += e;
+        }
+        if exps.iter().any(|e| e.unsigned_abs() > self.vars.layout().max_exp as u64) {
+            return C::zero();
+        }
+        let mut key = vec![0u64; self.words()];
+        self.vars.layout().pack(&exps, &mut key);
+        match self.find(&key) {
+            Some(k) => C::from_parts(&self.content, &self.coeffs[k]),
+            None => C::zero(),
+        }
+    }
+
+    /// The largest exponent of `v` (`None` for zero).
+    pub fn degree(&self, v: Var) -> Option<i64> {
+        self.exponent_range(v).map(|r| r.1)
+    }
+
+    /// The smallest exponent of `v` (negative for a Laurent polynomial; `None` for zero).
+    pub fn low_degree(&self, v: Var) -> Option<i64> {
+        self.exponent_range(v).map(|r| r.0)
+    }
+
+    /// `(lowest, highest)` exponent of `v` (`None` for zero). For an angle this is the range of
+    /// `k` in `e^{ikθ}`, so the degree in `cos θ, sin θ` is `max(|low|, |high|)`.
+    pub fn exponent_range(&self, v: Var) -> Option<(i64, i64)> {
+        let layout = self.vars.layout();
+        let mut it = self.exps.chunks_exact(self.words()).map(|m| layout.get(m, v.index()));
+        let first = it.next()?;
+        Some(it.fold((first, first), |(lo, hi), e| (lo.min(e), hi.max(e))))
+    }
+
+    /// The total degree over the variables of the given kinds (momenta, say), largest over the
+    /// terms; angles count `|k|`. `None` for zero.
+    pub fn total_degree(&self, kinds: &[VarKind]) -> Option<i64> {
+        let layout = self.vars.layout();
+        let vars: Vec<usize> = self
+            .vars
+            .vars()
+            .filter(|&v| kinds.contains(&self.vars.variable(v).kind()))
+            .map(Var::index)
+            .collect();
+        self.exps
+            .chunks_exact(self.words())
+            .map(|m| vars.iter().map(|&j| layout.get(m, j).abs()).sum())
+            .max()
+    }
+
+    /// Whether `v` appears.
+    pub fn contains(&self, v: Var) -> bool {
+        let layout = self.vars.layout();
+        self.exps.chunks_exact(self.words()).any(|m| layout.get(m, v.index()) != 0)
+    }
+
+    /// The content: a rational `q` such that `self/q` has coprime integer coefficients.
+    pub fn content(&self) -> &Rational {
+        &self.content
+    }
+
+    // ---- internals shared by the sibling modules ----
+
+    #[inline]
+    pub(crate) fn words(&self) -> usize {
+        self.vars.layout().words
+    }
+
+    pub(crate) fn layout(&self) -> &Layout {
+        self.vars.layout()
+    }
+
+    #[inline]
+    pub(crate) fn exp(&self, k: usize) -> &[u64] {
+        let w = self.words();
+        &self.exps[k * w..(k + 1) * w]
+    }
+
+    pub(crate) fn find(&self, key: &[u64]) -> Option<usize> {
+        let w = self.words();
+        // Terms are sorted descending.
+        let (mut lo, mut hi) = (0usize, self.len());
+        while lo < hi {
+            let mid = (lo + hi) / 2;
+            match self.exps[mid * w..(mid + 1) * w].cmp(key) {
+                std::cmp::Ordering::Equal => return Some(mid),
+                std::cmp::Ordering::Greater => lo = mid + 1,
+                std::cmp::Ordering::Less => hi = mid,
+            }
+        }
+        None
+    }
+
+    pub(crate) fn same_vars(&self, other: &Self) -> Result<(), AlgebraError> {
+        if Arc::ptr_eq(&self.vars, &other.vars) || self.vars == other.vars {
+            Ok(())
+        } else {
+            Err(AlgebraError::VarSetMismatch)
+        }
+    }
+
+    pub(crate) fn check_terms(vars: &VarSet, n: usize) -> Result<(), AlgebraError> {
+        if n > vars.limits().max_terms {
+            Err(AlgebraError::TooManyTerms { limit: vars.limits().max_terms })
+        } else {
+            Ok(())
+        }
+    }
+
+    /// Per-variable `(min, max)` exponents (all zero for the zero polynomial).
+    pub(crate) fn bounds(&self) -> Vec<(i64, i64)> {
+        let layout = self.vars.layout();
+        let n = self.vars.len();
+        let mut b = vec![(i64::MAX, i64::MIN); n];
+        for m in self.exps.chunks_exact(self.words()) {
+            for (j, bj) in b.iter_mut().enumerate() {
+                let e = layout.get(m, j);
+                bj.0 = bj.0.min(e);
+                bj.1 = bj.1.max(e);
+            }
+        }
+        if self.is_zero() {
+            b.iter_mut().for_each(|bj| *bj = (0, 0));
+        }
+        b
+    }
+
+    /// Builds from sorted, distinct, nonzero terms and restores the invariant (primitive part,
+    /// sign): the one place where the canonical form is enforced.
+    pub(crate) fn from_sorted(
+        vars: &Arc<VarSet>,
+        content: Rational,
+        exps: Vec<u64>,
+        mut coeffs: Vec<C::Int>,
+    ) -> Self {
+        debug_assert_eq!(exps.len(), coeffs.len() * vars.layout().words);
+        if coeffs.is_empty() || content.is_zero() {
+            return Self::zero(vars);
+        }
+        let mut g = Integer::ZERO;
+        for c in &coeffs {
+            g = c.gcd_into(&g);
+            if g.is_one() {
+                break;
+            }
+        }
+        let negative = coeffs[0].leading_sign() < 0;
+        let mut content = content;
+        if !g.is_one() || negative {
+            let d = if negative { -g } else { g };
+            for c in coeffs.iter_mut() {
+                *c = c.div_exact(&d);
+            }
+            content = content * Rational::from(d);
+        }
+        Poly { vars: vars.clone(), content, exps, coeffs }
+    }
+
+    /// Builds from terms in any order, possibly repeated or zero.
+    pub(crate) fn from_unsorted(
+        vars: &Arc<VarSet>,
+        content: Rational,
+        mut terms: Vec<(Vec<u64>, C::Int)>,
+    ) -> Self {
+        terms.sort_unstable_by(|a, b| b.0.cmp(&a.0));
+        let mut exps = Vec::with_capacity(terms.len() * vars.layout().words);
+        let mut coeffs: Vec<C::Int> = Vec::with_capacity(terms.len());
+        let mut last: Option<Vec<u64>> = None;
+        for (e, c) in terms {
+            if last.as_ref() == Some(&e) {
+                let top = coeffs.last_mut().expect("a previous term");
+                *top = top.add(&c);
+            } else {
+                exps.extend_from_slice(&e);
+                coeffs.push(c);
+                last = Some(e);
+            }
+        }
+        Self::drop_zeros_and_normalize(vars, content, exps, coeffs)
+    }
+
+    pub(crate) fn drop_zeros_and_normalize(
+        vars: &Arc<VarSet>,
+        content: Rational,
+        exps: Vec<u64>,
+        coeffs: Vec<C::Int>,
+    ) -> Self {
+        if coeffs.iter().all(|c| !c.is_zero()) {
+            return Self::from_sorted(vars, content, exps, coeffs);
+        }
+        let w = vars.layout().words;
+        let mut e2 = Vec::with_capacity(exps.len());
+        let mut c2 = Vec::with_capacity(coeffs.len());
+        for (k, c) in coeffs.into_iter().enumerate() {
+            if !c.is_zero() {
+                e2.extend_from_slice(&exps[k * w..(k + 1) * w]);
+                c2.push(c);
+            }
+        }
+        Self::from_sorted(vars, content, e2, c2)
+    }
+
+    pub(crate) fn raw_parts(&self) -> (&Rational, &[u64], &[C::Int]) {
+        (&self.content, &self.exps, &self.coeffs)
+    }
+}
+
+pub(crate) fn check_exponent(vars: &VarSet, v: Var, e: i64) -> Result<(), AlgebraError> {
+    let limit = vars.limits().max_degree;
+    if e.unsigned_abs() > limit as u64 {
+        Err(AlgebraError::ExponentTooLarge {
+            var: vars.variable(v).unicode().to_string(),
+            exponent: e,
+            limit,
+        })
+    } else {
+        Ok(())
+    }
+}
+
+/// One term of a polynomial: a coefficient and a monomial.
+#[derive(Clone, Copy)]
+pub struct Term<'a, C: Coefficient> {
+    poly: &'a Poly<C>,
+    k: usize,
+}
+
+impl<C: Coefficient> Term<'_, C> {
+    /// The coefficient.
+    pub fn coeff(&self) -> C {
+        C::from_parts(&self.poly.content, &self.poly.coeffs[self.k])
+    }
+
+    /// The exponent of `v` (for an angle, `k` in `e^{ikθ}`).
+    pub fn exponent(&self, v: Var) -> i64 {
+        self.poly.layout().get(self.poly.exp(self.k), v.index())
+    }
+
+    /// All exponents, in variable order.
+    pub fn exponents(&self) -> Vec<i64> {
+        let m = self.poly.exp(self.k);
+        (0..self.poly.vars.len()).map(|j| self.poly.layout().get(m, j)).collect()
+    }
+}
+
+impl<C: Coefficient> PartialEq for Poly<C> {
+    fn eq(&self, other: &Self) -> bool {
+        self.content == other.content
+            && self.exps == other.exps
+            && self.coeffs == other.coeffs
+            && (Arc::ptr_eq(&self.vars, &other.vars) || self.vars == other.vars)
+    }
+}
+
+impl<C: Coefficient> Eq for Poly<C> {}
+
+impl<C: Coefficient> Hash for Poly<C> {
+    fn hash<H: Hasher>(&self, state: &mut H) {
+        self.content.hash(state);
+        self.exps.hash(state);
+        self.coeffs.hash(state);
+    }
+}
+
+impl<C: Coefficient> fmt::Debug for Poly<C> {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        write!(f, "Poly({})", self.to_ascii())
+    }
+}

@@ -1,0 +1,171 @@
+//! Trigonometry: `cos θ`, `sin θ`, `e^{inθ}` as elements, and the view of any element in the
+//! normal form `Σ c · m · cos^a θ · sin^b θ` with `b ∈ {0, 1}` per angle (`sin²θ → 1 − cos²θ`),
+//! which is how elements are printed.
+
+use std::collections::{BTreeMap, HashMap};
+use std::sync::Arc;
+
+use super::Poly;
+use crate::error::AlgebraError;
+use crate::number::{Coefficient, GaussianInteger, GaussianRational, Integer, IntegerRing, Rational};
+use crate::varset::{Var, VarKind, VarSet};
+
+impl<C: Coefficient> Poly<C> {
+    /// `e^{inθ}` for an angle `θ`.
+    pub fn exp_i(vars: &Arc<VarSet>, theta: Var, n: i64) -> Result<Self, AlgebraError> {
+        check_angle::<C>(vars, theta, "e^{inθ}")?;
+        Self::monomial(vars, C::one(), &[(theta, n)])
+    }
+
+    /// `cos θ = (e^{iθ} + e^{−iθ})/2`.
+    pub fn cos(vars: &Arc<VarSet>, theta: Var) -> Result<Self, AlgebraError> {
+        let half = C::from_rational(Rational::new(1, 2));
+        Ok(Self::monomial(vars, half.clone(), &[(theta, 1)])?
+            .checked_add(&Self::exp_i(vars, theta, -1)?.scale(&half))?)
+    }
+
+    /// `sin θ = (e^{iθ} − e^{−iθ})/(2i)`.
+    pub fn sin(vars: &Arc<VarSet>, theta: Var) -> Result<Self, AlgebraError> {
+        let d = Self::exp_i(vars, theta, 1)?.checked_sub(&Self::exp_i(vars, theta, -1)?)?;
+        // 1/(2i) = −i/2
+        Ok(d.mul_i()?.scale_rational(&Rational::new(-1, 2)))
+    }
+
+    /// The terms in the normal form `c · m · Π cos^a θ sin^b θ` (`b ≤ 1`), grouped and ordered
+    /// for printing: by trigonometric monomial, then by the monomial in the other variables.
+    pub fn cos_sin_terms(&self) -> Vec<CosSinTerm> {
+        let angles: Vec<usize> = self.vars.angles().map(|v| v.index()).collect();
+        let layout = self.layout();
+        let mut tables: HashMap<i64, Vec<(u32, u32, GaussianInteger)>> = HashMap::new();
+        let mut acc: BTreeMap<(TrigMonomial, std::cmp::Reverse<Vec<i64>>), GaussianRational> =
+            BTreeMap::new();
+        for k in 0..self.len() {
+            let m = self.exp(k);
+            let mut exps: Vec<i64> = (0..self.vars.len()).map(|j| layout.get(m, j)).collect();
+            let coeff = C::from_parts(&Rational::one(), &self.coeffs[k]).to_gaussian();
+            // Expand Π_j (cos θ_j ± i sin θ_j)^{|k_j|} in normal form.
+            let mut partial: Vec<(Vec<(u32, u32)>, GaussianRational)> = vec![(Vec::new(), coeff)];
+            for &j in &angles {
+                let kj = exps[j];
+                exps[j] = 0;
+                let table = tables.entry(kj).or_insert_with(|| euler_power(kj));
+                let mut next = Vec::with_capacity(partial.len() * table.len());
+                for (pows, c) in &partial {
+                    for (a, b, g) in table.iter() {
+                        let mut p = pows.clone();
+                        p.push((*a, *b));
+                        let gq = GaussianRational::new(Rational::from(&g.re), Rational::from(&g.im));
+                        next.push((p, c * &gq));
+                    }
+                }
+                partial = next;
+            }
+            for (pows, c) in partial {
+                let key = (TrigMonomial { powers: pows }, std::cmp::Reverse(exps.clone()));
+                let slot = acc.entry(key).or_default();
+                *slot = &*slot + &c;
+            }
+        }
+        let content = GaussianRational::from(self.content.clone());
+        acc.into_iter()
+            .filter(|(_, c)| !c.is_zero())
+            .map(|((trig, exps), c)| CosSinTerm { coeff: &c * &content, exps: exps.0, trig })
+            .collect()
+    }
+}
+
+fn check_angle<C: Coefficient>(vars: &VarSet, v: Var, what: &str) -> Result<(), AlgebraError> {
+    if vars.variable(v).kind() != VarKind::Angle {
+        return Err(AlgebraError::Invalid(format!(
+            "{what} needs an angle, and {} is not declared as one",
+            vars.variable(v).unicode()
+        )));
+    }
+    if !C::HAS_I {
+        return Err(AlgebraError::NeedsGaussian(format!(
+            "the angle {} (stored as e^{{iθ}})",
+            vars.variable(v).unicode()
+        )));
+    }
+    Ok(())
+}
+
+/// `(cos θ + i sin θ)^k` (for `k < 0`, `(cos θ − i sin θ)^{|k|}`) in normal form, as
+/// `(cos power, sin power, coefficient)`. Uses `(A + sB)(c + is) = (Ac + i(1 − c²)B) + s(iA + cB)`.
+fn euler_power(k: i64) -> Vec<(u32, u32, GaussianInteger)> {
+    let n = k.unsigned_abs() as usize;
+    let zero = GaussianInteger::default();
+    let mut a = vec![GaussianInteger::from_integer(Integer::ONE)]; // A(c), by powers of c
+    let mut b: Vec<GaussianInteger> = vec![]; // B(c)
+    for _ in 0..n {
+        let mut na = vec![zero.clone(); a.len().max(b.len() + 2) + 1];
+        let mut nb = vec![zero.clone(); a.len().max(b.len() + 1) + 1];
+        for (p, x) in a.iter().enumerate() {
+            na[p + 1] = na[p + 1].add(x); // A c
+            nb[p] = nb[p].add(&x.mul_i()); // s · iA
+        }
+        for (p, x) in b.iter().enumerate() {
+            let ix = x.mul_i();
+            na[p] = na[p].add(&ix); // i B
+            na[p + 2] = na[p + 2].sub(&ix); // −i c² B
+            nb[p + 1] = nb[p + 1].add(x); // s · cB
+        }
+        a = na;
+        b = nb;
+    }
+    let mut out = Vec::new();
+    for (p, x) in a.into_iter().enumerate() {
+        if !x.is_zero() {
+            out.push((p as u32, 0, if k < 0 { x.conj() } else { x }));
+        }
+    }
+    for (p, x) in b.into_iter().enumerate() {
+        if !x.is_zero() {
+            out.push((p as u32, 1, if k < 0 { x.conj() } else { x }));
+        }
+    }
+    out
+}
+
+/// A product `Π cos^a θ sin^b θ` over the angles of a variable set, in their order; ordered
+/// for printing: fewer factors first, cosines before sines.
+#[derive(Clone, Debug, PartialEq, Eq, Hash)]
+pub struct TrigMonomial {
+    /// `(a, b)` per angle.
+    pub powers: Vec<(u32, u32)>,
+}
+
+impl TrigMonomial {
+    /// Whether every power is zero.
+    pub fn is_one(&self) -> bool {
+        self.powers.iter().all(|&(a, b)| a == 0 && b == 0)
+    }
+
+    fn sort_key(&self) -> (u32, Vec<(u32, u32)>) {
+        let degree = self.powers.iter().map(|&(a, b)| a + b).sum();
+        (degree, self.powers.iter().map(|&(a, b)| (b, a)).collect())
+    }
+}
+
+impl Ord for TrigMonomial {
+    fn cmp(&self, other: &Self) -> std::cmp::Ordering {
+        self.sort_key().cmp(&other.sort_key())
+    }
+}
+
+impl PartialOrd for TrigMonomial {
+    fn partial_cmp(&self, other: &Self) -> Option<std::cmp::Ordering> {
+        Some(self.cmp(other))
+    }
+}
+
+/// One term of the cos/sin normal form.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct CosSinTerm {
+    /// The coefficient (rational for a real function).
+    pub coeff: GaussianRational,
+    /// Exponents of every variable (zero at the angles).
+    pub exps: Vec<i64>,
+    /// The trigonometric part.
+    pub trig: TrigMonomial,
+}

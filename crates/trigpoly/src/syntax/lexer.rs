@@ -1,0 +1,173 @@
+//! Lexer: splits source text into spanned tokens, one at a time.
+//!
+//! Besides ASCII operators it accepts `−` (U+2212) as minus, `·`, `⋅` and `×` as multiplication,
+//! `÷` as division, `**` as `^`, and runs of unicode superscript digits (optionally preceded by
+//! `⁻`) as a single superscript exponent token.
+
+use num_bigint::BigInt;
+
+use super::error::{ParseError, Span};
+
+/// The kind of a token, with its value for literals, names and superscripts.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub(crate) enum Tok {
+    /// Non-negative decimal integer literal.
+    Int(BigInt),
+    /// Identifier.
+    Name(String),
+    /// Superscript exponent such as `²` or `⁻¹`.
+    Sup {
+        value: BigInt,
+        negative: bool,
+    },
+    Plus,
+    Minus,
+    Star,
+    Slash,
+    Caret,
+    LParen,
+    RParen,
+    LBrace,
+    RBrace,
+    Comma,
+    Eof,
+}
+
+impl Tok {
+    /// Whether this token can begin an operand (used to detect implicit multiplication).
+    pub(crate) fn starts_operand(&self) -> bool {
+        matches!(self, Tok::Int(_) | Tok::Name(_) | Tok::LParen | Tok::LBrace)
+    }
+}
+
+/// A token together with its location in the source.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub(crate) struct Token {
+    pub(crate) tok: Tok,
+    pub(crate) span: Span,
+}
+
+/// The value of a superscript digit character, if it is one.
+fn superscript_digit(c: char) -> Option<char> {
+    match c {
+        '⁰' => Some('0'),
+        '¹' => Some('1'),
+        '²' => Some('2'),
+        '³' => Some('3'),
+        '⁴'..='⁹' => char::from_u32(c as u32 - '⁴' as u32 + '4' as u32),
+        _ => None,
+    }
+}
+
+fn is_name_start(c: char) -> bool {
+    c == '_' || c.is_alphabetic()
+}
+
+fn is_name_continue(c: char) -> bool {
+    // Superscript digits are numeric, but `x²` must lex as `x` followed by an exponent.
+    c == '_' || (c.is_alphanumeric() && superscript_digit(c).is_none())
+}
+
+/// On-demand tokenizer over a source string.
+pub(crate) struct Lexer<'a> {
+    src: &'a str,
+    pos: usize,
+}
+
+impl<'a> Lexer<'a> {
+    pub(crate) fn new(src: &'a str) -> Self {
+        Lexer { src, pos: 0 }
+    }
+
+    fn peek(&self) -> Option<char> {
+        self.src[self.pos..].chars().next()
+    }
+
+    /// Consumes characters while `pred` holds and returns them.
+    fn eat_while(&mut self, pred: impl Fn(char) -> bool) -> &'a str {
+        let start = self.pos;
+        let rest = &self.src[start..];
+        self.pos += rest.find(|c| !pred(c)).unwrap_or(rest.len());
+        &self.src[start..self.pos]
+    }
+
+    /// The next token, or `Tok::Eof` (with an empty span at the end) once the input is exhausted.
+    pub(crate) fn next_token(&mut self) -> Result<Token, ParseError> {
+        self.eat_while(char::is_whitespace);
+        let start = self.pos;
+        let Some(c) = self.peek() else {
+            return Ok(Token {
+                tok: Tok::Eof,
+                span: Span::new(start, start),
+            });
+        };
+        self.pos += c.len_utf8();
+        let tok = match c {
+            '0'..='9' => {
+                self.pos = start;
+                let digits = self.eat_while(|c| c.is_ascii_digit());
+                if self.peek() == Some('.') {
+                    self.pos += 1;
+                    return Err(self.decimal_error(start));
+                }
+                Tok::Int(digits.parse().expect("ASCII digits form an integer"))
+            }
+            '.' if self.peek().is_some_and(|c| c.is_ascii_digit()) => {
+                return Err(self.decimal_error(start))
+            }
+            c if is_name_start(c) => {
+                self.eat_while(is_name_continue);
+                Tok::Name(self.src[start..self.pos].to_string())
+            }
+            '+' => Tok::Plus,
+            '-' | '−' => Tok::Minus,
+            '*' if self.peek() == Some('*') => {
+                self.pos += 1;
+                Tok::Caret
+            }
+            '*' | '·' | '⋅' | '×' => Tok::Star,
+            '/' | '÷' => Tok::Slash,
+            '^' => Tok::Caret,
+            '(' => Tok::LParen,
+            ')' => Tok::RParen,
+            '{' => Tok::LBrace,
+            '}' => Tok::RBrace,
+            ',' => Tok::Comma,
+            c if c == '⁻' || superscript_digit(c).is_some() => {
+                let negative = c == '⁻';
+                if !negative {
+                    self.pos = start;
+                }
+                let digits: String = self
+                    .eat_while(|c| superscript_digit(c).is_some())
+                    .chars()
+                    .filter_map(superscript_digit)
+                    .collect();
+                if digits.is_empty() {
+                    let span = Span::new(start, self.pos);
+                    let msg = "expected superscript digits such as '¹' after superscript minus '⁻'";
+                    return Err(ParseError::new(span, msg));
+                }
+                let value = digits.parse().expect("digits form an integer");
+                Tok::Sup { value, negative }
+            }
+            c => {
+                let span = Span::new(start, self.pos);
+                return Err(ParseError::new(span, format!("unexpected character {c:?}")));
+            }
+        };
+        Ok(Token {
+            tok,
+            span: Span::new(start, self.pos),
+        })
+    }
+
+    /// Error for a decimal number starting at `start`; consumes its remaining digits.
+    fn decimal_error(&mut self, start: usize) -> ParseError {
+        self.eat_while(|c| c.is_ascii_digit());
+        ParseError::new(
+            Span::new(start, self.pos),
+            "decimal numbers are not exact; write a fraction such as 3/2",
+        )
+    }
+}

@@ -1,0 +1,452 @@
+//! Pratt parser producing the spanned expression tree [`Expr`].
+//!
+//! Binding powers, loosest first: binary `+ -` (left associative), binary `* /` (left
+//! associative), unary `-`/`+`, `^` and superscript exponents (right associative, binding tighter
+//! than a unary minus on their left), then calls `f(a, b)`, parentheses and brackets `{f, g}`.
+
+use num_bigint::BigInt;
+
+use super::error::{line_col, ParseError, Span};
+use super::lexer::{Lexer, Tok, Token};
+
+/// Maximum nesting of parentheses, calls, brackets, unary operators and exponents.
+pub const MAX_DEPTH: usize = 256;
+
+/// Maximum height of a parsed tree (a leaf has height 1). Chains such as `a + b + c` are
+/// left-deep, so a sum of `n` terms has height at least `n`; consumers recursing over an [`Expr`]
+/// need stack for this many levels.
+pub const MAX_HEIGHT: usize = 4096;
+
+/// Right binding power of unary `-` and `+`.
+const UNARY_BP: u8 = 5;
+
+/// Right binding power of `^` (right associative; its left binding power is one more).
+const POW_RIGHT_BP: u8 = 6;
+
+/// A parsed expression with its span.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct Expr {
+    /// What the expression is.
+    pub kind: ExprKind,
+    /// Where it is in the source; a parenthesized expression's span includes the parentheses.
+    pub span: Span,
+}
+
+impl Expr {
+    /// An expression of the given kind at `span`.
+    pub fn new(kind: ExprKind, span: Span) -> Self {
+        Expr { kind, span }
+    }
+}
+
+/// The node types of the expression tree.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub enum ExprKind {
+    /// Non-negative integer literal (`-2` is `Neg(Integer(2))`).
+    Integer(BigInt),
+    /// Identifier such as `x`, `p_θ` or `i` (the imaginary unit is decided later).
+    Name(String),
+    /// Unary minus.
+    Neg(Box<Expr>),
+    /// `a + b`.
+    Add(Box<Expr>, Box<Expr>),
+    /// `a - b`.
+    Sub(Box<Expr>, Box<Expr>),
+    /// `a * b`.
+    Mul(Box<Expr>, Box<Expr>),
+    /// `a / b`.
+    Div(Box<Expr>, Box<Expr>),
+    /// `base ^ exponent`; also `x²` and `x⁻¹`, whose exponent is `Integer` or `Neg(Integer)`.
+    Pow(Box<Expr>, Box<Expr>),
+    /// Function call `f(a, b, ...)`: name, span of the name, and at least one argument.
+    Call(String, Span, Vec<Expr>),
+    /// Bracket `{f, g}` of two expressions.
+    Bracket(Box<Expr>, Box<Expr>),
+}
+
+/// Parses `src`, which must consist of exactly one expression.
+pub fn parse_expr(src: &str) -> Result<Expr, ParseError> {
+    let mut lexer = Lexer::new(src);
+    let tok = lexer.next_token()?;
+    let mut p = Parser {
+        src,
+        lexer,
+        tok,
+        prev: None,
+        depth: 0,
+        height: 0,
+    };
+    let expr = p.expr(0)?;
+    match p.tok.tok {
+        Tok::Eof => Ok(expr),
+        ref t if t.starts_operand() => Err(p.implicit_mul()),
+        _ => Err(p.error(format!("unexpected {}", p.found()))),
+    }
+}
+
+/// Parser state: the current (not yet consumed) token and the span of the previous one.
+struct Parser<'a> {
+    src: &'a str,
+    lexer: Lexer<'a>,
+    tok: Token,
+    prev: Option<Span>,
+    depth: usize,
+    /// Height of the tree most recently returned by a parsing method.
+    height: usize,
+}
+
+type PResult<T> = Result<T, ParseError>;
+
+impl Parser<'_> {
+    /// Consumes the current token and returns it.
+    fn bump(&mut self) -> PResult<Token> {
+        let next = self.lexer.next_token()?;
+        let tok = std::mem::replace(&mut self.tok, next);
+        self.prev = Some(tok.span);
+        Ok(tok)
+    }
+
+    /// Source text of `span`, quoted, shortened if long.
+    fn quote(&self, span: Span) -> String {
+        let text = &self.src[span.start..span.end];
+        match text.char_indices().nth(20) {
+            Some((i, _)) => format!("'{}…'", &text[..i]),
+            None => format!("'{text}'"),
+        }
+    }
+
+    /// Description of the current token for "found ..." messages.
+    fn found(&self) -> String {
+        match self.tok.tok {
+            Tok::Eof => "end of input".to_string(),
+            Tok::Sup { .. } => format!("superscript {}", self.quote(self.tok.span)),
+            _ => self.quote(self.tok.span),
+        }
+    }
+
+    /// An error located at the current token.
+    fn error(&self, message: String) -> ParseError {
+        ParseError::new(self.tok.span, message)
+    }
+
+    /// Error for an operand directly following another operand, e.g. `2x`.
+    fn implicit_mul(&self) -> ParseError {
+        let prev = self.prev.map_or_else(String::new, |s| self.quote(s));
+        let found = self.quote(self.tok.span);
+        self.error(format!(
+            "expected an operator such as '*' between {prev} and {found}"
+        ))
+    }
+
+    /// Error for a missing `close` delimiter matching the opener at `open`.
+    fn unclosed(&self, close: char, open: Span) -> ParseError {
+        if self.tok.tok.starts_operand() {
+            return self.implicit_mul();
+        }
+        let (line, col) = line_col(self.src, open.start);
+        let opener = &self.src[open.start..open.end];
+        let at = if line == line_col(self.src, self.tok.span.start).0 {
+            format!("column {col}")
+        } else {
+            format!("line {line}, column {col}")
+        };
+        self.error(format!(
+            "expected '{close}' to close '{opener}' opened at {at}, found {}",
+            self.found()
+        ))
+    }
+
+    /// Consumes the current token, which must be `tok`, or reports it as unclosed.
+    fn expect_close(&mut self, tok: Tok, close: char, open: Span) -> PResult<Span> {
+        if self.tok.tok == tok {
+            Ok(self.bump()?.span)
+        } else {
+            Err(self.unclosed(close, open))
+        }
+    }
+
+    /// Runs `f` one nesting level deeper, failing at `opener` beyond [`MAX_DEPTH`].
+    fn nested<T>(&mut self, opener: Span, f: impl FnOnce(&mut Self) -> PResult<T>) -> PResult<T> {
+        if self.depth >= MAX_DEPTH {
+            return Err(too_deep(opener));
+        }
+        self.depth += 1;
+        let result = f(self);
+        self.depth -= 1;
+        result
+    }
+
+    // The functions on the recursive path below (`expr`, `prefix`, `unary`, `paren`, `name`,
+    // `bracket` and their closures) are kept small, with the non-recursive work in helpers, so
+    // that the maximum nesting fits comfortably in a 2 MiB thread stack even in debug builds.
+
+    /// Parses an expression whose infix operators all bind at least as tightly as `min_bp`.
+    fn expr(&mut self, min_bp: u8) -> PResult<Expr> {
+        let mut lhs = self.prefix()?;
+        let mut height = self.height;
+        while let Some(op) = self.operator(&mut lhs, &mut height, min_bp)? {
+            let rhs = self.rhs(&op)?;
+            height = grow(height.max(self.height), op.span)?;
+            lhs = op.apply(lhs, rhs);
+        }
+        self.height = height;
+        Ok(lhs)
+    }
+
+    /// Applies any superscripts to `lhs` (of height `height`), then consumes and returns the next binary operator if
+    /// it binds at least as tightly as `min_bp`.
+    fn operator(
+        &mut self,
+        lhs: &mut Expr,
+        height: &mut usize,
+        min_bp: u8,
+    ) -> PResult<Option<BinOp>> {
+        // Superscripts bind like `^`, more tightly than any `min_bp`.
+        while matches!(self.tok.tok, Tok::Sup { .. }) {
+            *height = grow((*height).max(2), self.tok.span)?;
+            let placeholder = Expr::new(ExprKind::Integer(BigInt::default()), lhs.span);
+            let base = std::mem::replace(lhs, placeholder);
+            *lhs = self.superscript(base)?;
+        }
+        self.binary_op(min_bp)
+    }
+
+    /// Parses the right operand of `op`.
+    fn rhs(&mut self, op: &BinOp) -> PResult<Expr> {
+        if op.right_bp == POW_RIGHT_BP {
+            self.nested(op.span, |p| p.expr(POW_RIGHT_BP))
+        } else {
+            self.expr(op.right_bp)
+        }
+    }
+
+    /// Consumes the current token if it is a binary operator binding at least as tightly as
+    /// `min_bp`.
+    fn binary_op(&mut self, min_bp: u8) -> PResult<Option<BinOp>> {
+        let (left_bp, right_bp, make): (u8, u8, fn(Box<Expr>, Box<Expr>) -> ExprKind) =
+            match self.tok.tok {
+                Tok::Plus => (1, 2, ExprKind::Add),
+                Tok::Minus => (1, 2, ExprKind::Sub),
+                Tok::Star => (3, 4, ExprKind::Mul),
+                Tok::Slash => (3, 4, ExprKind::Div),
+                Tok::Caret => (POW_RIGHT_BP + 1, POW_RIGHT_BP, ExprKind::Pow),
+                _ => return Ok(None),
+            };
+        if left_bp < min_bp {
+            return Ok(None);
+        }
+        let span = self.bump()?.span;
+        Ok(Some(BinOp {
+            make,
+            span,
+            right_bp,
+        }))
+    }
+
+    /// Consumes a superscript token and applies it as an exponent to `base`.
+    fn superscript(&mut self, base: Expr) -> PResult<Expr> {
+        let Token {
+            tok: Tok::Sup { value, negative },
+            span,
+        } = self.bump()?
+        else {
+            unreachable!("current token was a superscript")
+        };
+        let digits = Span::new(
+            span.start + if negative { '⁻'.len_utf8() } else { 0 },
+            span.end,
+        );
+        let mut exponent = Expr::new(ExprKind::Integer(value), digits);
+        if negative {
+            exponent = Expr::new(ExprKind::Neg(Box::new(exponent)), span);
+        }
+        let span = base.span.to(span);
+        Ok(Expr::new(
+            ExprKind::Pow(Box::new(base), Box::new(exponent)),
+            span,
+        ))
+    }
+
+    /// Parses an operand: a literal, name, call, parenthesized expression, bracket or unary
+    /// operator applied to an operand.
+    fn prefix(&mut self) -> PResult<Expr> {
+        match self.tok.tok {
+            Tok::Int(_) => self.integer(),
+            Tok::Name(_) => self.name(),
+            Tok::Minus | Tok::Plus => self.unary(),
+            Tok::LParen => self.paren(),
+            Tok::LBrace => self.bracket(),
+            _ => Err(self.expected_operand()),
+        }
+    }
+
+    /// Parses an integer literal.
+    fn integer(&mut self) -> PResult<Expr> {
+        let Token {
+            tok: Tok::Int(n),
+            span,
+        } = self.bump()?
+        else {
+            unreachable!("current token was an integer")
+        };
+        self.height = 1;
+        Ok(Expr::new(ExprKind::Integer(n), span))
+    }
+
+    /// Parses a unary minus or plus and its operand.
+    fn unary(&mut self) -> PResult<Expr> {
+        let op = self.bump()?;
+        let operand = self.nested(op.span, |p| p.expr(UNARY_BP))?;
+        if op.tok == Tok::Plus {
+            return Ok(operand);
+        }
+        self.height = grow(self.height, op.span)?;
+        Ok(negate(op.span, operand))
+    }
+
+    /// Parses a parenthesized expression.
+    fn paren(&mut self) -> PResult<Expr> {
+        let open = self.bump()?.span;
+        let inner = self.nested(open, |p| p.expr(0))?;
+        self.close_paren(open, inner)
+    }
+
+    /// Consumes the `)` closing the parenthesis opened at `open`, widening `inner`'s span.
+    fn close_paren(&mut self, open: Span, mut inner: Expr) -> PResult<Expr> {
+        let close = self.expect_close(Tok::RParen, ')', open)?;
+        inner.span = open.to(close);
+        Ok(inner)
+    }
+
+    /// Parses a name, or a call if the name is followed by `(`.
+    fn name(&mut self) -> PResult<Expr> {
+        let Token {
+            tok: Tok::Name(name),
+            span,
+        } = self.bump()?
+        else {
+            unreachable!("current token was a name")
+        };
+        if self.tok.tok == Tok::LParen {
+            self.call(name, span)
+        } else {
+            self.height = 1;
+            Ok(Expr::new(ExprKind::Name(name), span))
+        }
+    }
+
+    /// Parses the parenthesized arguments of a call of `name` (at `span`).
+    fn call(&mut self, name: String, span: Span) -> PResult<Expr> {
+        let open = self.bump()?.span;
+        let args = self.nested(open, Self::call_args)?;
+        self.height = grow(self.height, span)?;
+        let close = self.expect_close(Tok::RParen, ')', open)?;
+        Ok(Expr::new(ExprKind::Call(name, span, args), span.to(close)))
+    }
+
+    /// Parses the comma-separated arguments of a call.
+    fn call_args(&mut self) -> PResult<Vec<Expr>> {
+        let mut args = vec![self.expr(0)?];
+        let mut height = self.height;
+        while self.tok.tok == Tok::Comma {
+            self.bump()?;
+            args.push(self.expr(0)?);
+            height = height.max(self.height);
+        }
+        self.height = height;
+        Ok(args)
+    }
+
+    /// Parses a bracket `{f, g}`.
+    fn bracket(&mut self) -> PResult<Expr> {
+        let open = self.bump()?.span;
+        let args = self.nested(open, |p| {
+            let f = p.expr(0)?;
+            let height = p.height;
+            p.bracket_comma()?;
+            let g = p.expr(0)?;
+            p.height = grow(height.max(p.height), open)?;
+            Ok([f, g])
+        })?;
+        self.close_bracket(open, args)
+    }
+
+    /// Consumes the `,` between the two arguments of a bracket.
+    fn bracket_comma(&mut self) -> PResult<()> {
+        if self.tok.tok != Tok::Comma {
+            let msg = "expected ',' between the two arguments of a bracket {f, g}";
+            return Err(self.error(format!("{msg}, found {}", self.found())));
+        }
+        self.bump().map(drop)
+    }
+
+    /// Consumes the `}` closing the bracket opened at `open` and builds the bracket.
+    fn close_bracket(&mut self, open: Span, [f, g]: [Expr; 2]) -> PResult<Expr> {
+        if self.tok.tok == Tok::Comma {
+            let msg = "a bracket {f, g} takes exactly two arguments";
+            return Err(self.error(format!("{msg}; {}", self.unclosed('}', open).message)));
+        }
+        let close = self.expect_close(Tok::RBrace, '}', open)?;
+        Ok(Expr::new(
+            ExprKind::Bracket(Box::new(f), Box::new(g)),
+            open.to(close),
+        ))
+    }
+
+    /// Error for a token that cannot begin an operand.
+    fn expected_operand(&self) -> ParseError {
+        match self.prev {
+            Some(prev) => {
+                let after = self.quote(prev);
+                self.error(format!(
+                    "expected an expression after {after}, found {}",
+                    self.found()
+                ))
+            }
+            None if matches!(self.tok.tok, Tok::RParen | Tok::RBrace | Tok::Comma) => {
+                self.error(format!("unexpected {}", self.found()))
+            }
+            None => self.error(format!("expected an expression, found {}", self.found())),
+        }
+    }
+}
+
+/// A binary operator that has been consumed.
+struct BinOp {
+    make: fn(Box<Expr>, Box<Expr>) -> ExprKind,
+    span: Span,
+    right_bp: u8,
+}
+
+impl BinOp {
+    /// The node `lhs op rhs`.
+    fn apply(self, lhs: Expr, rhs: Expr) -> Expr {
+        let span = lhs.span.to(rhs.span);
+        Expr::new((self.make)(Box::new(lhs), Box::new(rhs)), span)
+    }
+}
+
+/// The negation of `operand`, with the minus sign at `minus`.
+fn negate(minus: Span, operand: Expr) -> Expr {
+    let span = minus.to(operand.span);
+    Expr::new(ExprKind::Neg(Box::new(operand)), span)
+}
+
+/// `child + 1`: the height of a node (at `at`) over children at most `child` high, checked
+/// against [`MAX_HEIGHT`].
+fn grow(child: usize, at: Span) -> PResult<usize> {
+    if child < MAX_HEIGHT {
+        return Ok(child + 1);
+    }
+    let msg = format!(
+        "expression too long: more than {MAX_HEIGHT} levels of operations \
+         (a chain of n terms or factors counts as n levels)"
+    );
+    Err(ParseError::new(at, msg))
+}
+
+/// The error for nesting deeper than [`MAX_DEPTH`] at `opener`.
+fn too_deep(opener: Span) -> ParseError {
+    let msg = format!("expression nested too deeply (more than {MAX_DEPTH} levels)");
+    ParseError::new(opener, msg)
+}

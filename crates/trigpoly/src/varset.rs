@@ -1,0 +1,412 @@
+//! Variables: their names (ASCII, unicode, LaTeX), kinds, and the packing of exponent vectors
+//! into machine words that every polynomial of a `VarSet` shares.
+
+use std::fmt;
+use std::sync::Arc;
+
+use crate::error::AlgebraError;
+
+/// What a variable is in a phase space; only `Angle` changes the algebra.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum VarKind {
+    /// A position such as `x`.
+    Coordinate,
+    /// A momentum such as `p_x`.
+    Momentum,
+    /// A symbolic constant such as `M`, `ω`, `g`.
+    Parameter,
+    /// An angle `θ`: functions depend on it through `cos θ`, `sin θ`, stored as powers of
+    /// `e^{iθ}` (exponent any integer), which needs Gaussian coefficients.
+    Angle,
+}
+
+/// A variable handle: its index in its `VarSet`.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, PartialOrd, Ord)]
+pub struct Var(pub(crate) u16);
+
+impl Var {
+    /// The index in the variable set.
+    pub fn index(self) -> usize {
+        self.0 as usize
+    }
+}
+
+/// One declared variable.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct Variable {
+    name: String,
+    unicode: String,
+    latex: String,
+    kind: VarKind,
+}
+
+impl Variable {
+    /// The ASCII name that parses back (`p_theta`, `omega`).
+    pub fn name(&self) -> &str {
+        &self.name
+    }
+    /// The name as printed in text (`p_θ`, `ω`).
+    pub fn unicode(&self) -> &str {
+        &self.unicode
+    }
+    /// The name as printed in LaTeX (`p_{\theta}`, `\omega`).
+    pub fn latex(&self) -> &str {
+        &self.latex
+    }
+    /// The kind.
+    pub fn kind(&self) -> VarKind {
+        self.kind
+    }
+}
+
+/// Limits that stop runaway expansions with a clear error instead of exhausting memory.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Limits {
+    /// The most terms any single result may have.
+    pub max_terms: usize,
+    /// The largest absolute exponent of any variable.
+    pub max_degree: u32,
+}
+
+impl Default for Limits {
+    fn default() -> Self {
+        Limits { max_terms: 20_000_000, max_degree: 10_000 }
+    }
+}
+
+/// How exponent vectors are packed: `bits` per variable, fields never straddle words, variable
+/// 0 in the top bits of word 0, each field storing `e + 2^(bits−1)`. Comparing the words as
+/// unsigned integers, word 0 first, is then the lexicographic order on exponent vectors, and
+/// the product of monomials is `a + b − bias` word by word.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub(crate) struct Layout {
+    pub bits: u32,
+    pub per_word: usize,
+    pub words: usize,
+    pub bias: Vec<u64>,
+    pub max_exp: i64,
+}
+
+impl Layout {
+    fn new(nvars: usize, bits: u32) -> Layout {
+        let per_word = (64 / bits) as usize;
+        let words = nvars.div_ceil(per_word).max(1);
+        let mut bias = vec![0u64; words];
+        for j in 0..nvars {
+            let (w, shift) = Layout::place(per_word, bits, j);
+            bias[w] |= 1u64 << (shift + bits - 1);
+        }
+        Layout { bits, per_word, words, bias, max_exp: (1i64 << (bits - 1)) - 1 }
+    }
+
+    #[inline]
+    fn place(per_word: usize, bits: u32, j: usize) -> (usize, u32) {
+        let w = j / per_word;
+        let slot = (j % per_word) as u32;
+        (w, 64 - bits * (slot + 1))
+    }
+
+    /// The exponent of variable `j` in a packed monomial.
+    #[inline]
+    pub fn get(&self, m: &[u64], j: usize) -> i64 {
+        let (w, shift) = Layout::place(self.per_word, self.bits, j);
+        let mask = if self.bits == 64 { u64::MAX } else { (1u64 << self.bits) - 1 };
+        ((m[w] >> shift) & mask) as i64 - (1i64 << (self.bits - 1))
+    }
+
+    /// Packs an exponent vector (each `|e| <= max_exp`) into `out`.
+    pub fn pack(&self, exps: &[i64], out: &mut [u64]) {
+        out.copy_from_slice(&self.bias);
+        for (j, &e) in exps.iter().enumerate() {
+            let (w, shift) = Layout::place(self.per_word, self.bits, j);
+            out[w] = out[w].wrapping_add((e as u64) << shift);
+        }
+    }
+
+    /// The packed monomial 1 (all exponents zero).
+    pub fn one(&self) -> &[u64] {
+        &self.bias
+    }
+
+    /// `out = a · b` (exponents add); the caller guarantees every field stays in range.
+    #[inline]
+    pub fn mul_into(&self, a: &[u64], b: &[u64], out: &mut [u64]) {
+        for w in 0..self.words {
+            out[w] = a[w].wrapping_add(b[w]).wrapping_sub(self.bias[w]);
+        }
+    }
+}
+
+/// An ordered set of named variables shared by a family of polynomials, with their packing and
+/// their limits.
+///
+/// ```
+/// use trigpoly::{VarKind, VarSet};
+/// let vars = VarSet::builder()
+///     .coordinate("x")
+///     .momentum("p_x")
+///     .angle("theta")
+///     .parameter("omega")
+///     .build()
+///     .unwrap();
+/// let omega = vars.lookup("ω").unwrap();
+/// assert_eq!(vars.variable(omega).kind(), VarKind::Parameter);
+/// assert_eq!(vars.variable(vars.lookup("theta").unwrap()).latex(), r"\theta");
+/// ```
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct VarSet {
+    vars: Vec<Variable>,
+    layout: Layout,
+    limits: Limits,
+}
+
+impl VarSet {
+    /// Starts declaring variables.
+    pub fn builder() -> VarSetBuilder {
+        VarSetBuilder::default()
+    }
+
+    /// Number of variables.
+    pub fn len(&self) -> usize {
+        self.vars.len()
+    }
+
+    /// Whether no variable is declared.
+    pub fn is_empty(&self) -> bool {
+        self.vars.is_empty()
+    }
+
+    /// The variable behind a handle.
+    pub fn variable(&self, v: Var) -> &Variable {
+        &self.vars[v.index()]
+    }
+
+    /// All handles, in declaration order.
+    pub fn vars(&self) -> impl Iterator<Item = Var> + '_ {
+        (0..self.vars.len()).map(|k| Var(k as u16))
+    }
+
+    /// The variable of a name: the ASCII name (`omega`, `p_theta`) or the unicode one (`ω`, `p_θ`).
+    pub fn lookup(&self, name: &str) -> Option<Var> {
+        self.vars
+            .iter()
+            .position(|v| v.name == name || v.unicode == name)
+            .map(|k| Var(k as u16))
+    }
+
+    /// The limits in force.
+    pub fn limits(&self) -> Limits {
+        self.limits
+    }
+
+    /// The angle variables.
+    pub fn angles(&self) -> impl Iterator<Item = Var> + '_ {
+        self.vars().filter(|&v| self.variable(v).kind == VarKind::Angle)
+    }
+
+    pub(crate) fn layout(&self) -> &Layout {
+        &self.layout
+    }
+
+    /// The same variables with other limits.
+    pub fn with_limits(&self, limits: Limits) -> Result<Arc<VarSet>, AlgebraError> {
+        VarSetBuilder { vars: self.vars.clone(), limits, bits: self.layout.bits }.build()
+    }
+}
+
+/// Declares the variables of a `VarSet`, in order.
+#[derive(Clone, Debug)]
+pub struct VarSetBuilder {
+    vars: Vec<Variable>,
+    limits: Limits,
+    bits: u32,
+}
+
+impl Default for VarSetBuilder {
+    fn default() -> Self {
+        VarSetBuilder { vars: Vec::new(), limits: Limits::default(), bits: 16 }
+    }
+}
+
+impl VarSetBuilder {
+    /// Declares a variable of the given kind.
+    pub fn variable(mut self, name: &str, kind: VarKind) -> Self {
+        let (unicode, latex) = render_name(name);
+        self.vars.push(Variable { name: name.to_string(), unicode, latex, kind });
+        self
+    }
+    /// Declares a coordinate.
+    pub fn coordinate(self, name: &str) -> Self {
+        self.variable(name, VarKind::Coordinate)
+    }
+    /// Declares a momentum.
+    pub fn momentum(self, name: &str) -> Self {
+        self.variable(name, VarKind::Momentum)
+    }
+    /// Declares a parameter.
+    pub fn parameter(self, name: &str) -> Self {
+        self.variable(name, VarKind::Parameter)
+    }
+    /// Declares an angle.
+    pub fn angle(self, name: &str) -> Self {
+        self.variable(name, VarKind::Angle)
+    }
+    /// Sets the limits.
+    pub fn limits(mut self, limits: Limits) -> Self {
+        self.limits = limits;
+        self
+    }
+    /// Bits per exponent in the packed words: 8, 16 (the default) or 32. Wider fields allow
+    /// larger exponents, narrower ones pack more variables per word.
+    pub fn exponent_bits(mut self, bits: u32) -> Self {
+        self.bits = bits;
+        self
+    }
+
+    /// Checks names and builds the set.
+    pub fn build(self) -> Result<Arc<VarSet>, AlgebraError> {
+        if ![8, 16, 32].contains(&self.bits) {
+            return Err(AlgebraError::Invalid(format!(
+                "exponent bits must be 8, 16 or 32, not {}",
+                self.bits
+            )));
+        }
+        for (k, v) in self.vars.iter().enumerate() {
+            if !is_identifier(&v.name) || RESERVED.contains(&v.name.as_str()) {
+                return Err(AlgebraError::Invalid(format!(
+                    "{:?} cannot name a variable (reserved or not an identifier)",
+                    v.name
+                )));
+            }
+            for w in &self.vars[..k] {
+                if w.name == v.name || w.unicode == v.unicode || w.name == v.unicode {
+                    return Err(AlgebraError::Invalid(format!(
+                        "variable {:?} is declared twice",
+                        v.name
+                    )));
+                }
+            }
+        }
+        if self.vars.len() > u16::MAX as usize {
+            return Err(AlgebraError::Invalid("too many variables".into()));
+        }
+        let layout = Layout::new(self.vars.len(), self.bits);
+        let max_degree = self.limits.max_degree.min(layout.max_exp as u32);
+        let limits = Limits { max_degree, ..self.limits };
+        Ok(Arc::new(VarSet { vars: self.vars, layout, limits }))
+    }
+}
+
+/// Names that expressions give a meaning of their own.
+pub const RESERVED: &[&str] = &["i", "cos", "sin", "exp"];
+
+fn is_identifier(s: &str) -> bool {
+    let mut chars = s.chars();
+    matches!(chars.next(), Some(c) if c.is_alphabetic() || c == '_')
+        && chars.all(|c| c.is_alphanumeric() || c == '_')
+}
+
+const GREEK: &[(&str, &str, &str)] = &[
+    ("alpha", "α", r"\alpha"),
+    ("beta", "β", r"\beta"),
+    ("gamma", "γ", r"\gamma"),
+    ("delta", "δ", r"\delta"),
+    ("epsilon", "ε", r"\epsilon"),
+    ("zeta", "ζ", r"\zeta"),
+    ("eta", "η", r"\eta"),
+    ("theta", "θ", r"\theta"),
+    ("iota", "ι", r"\iota"),
+    ("kappa", "κ", r"\kappa"),
+    ("lambda", "λ", r"\lambda"),
+    ("mu", "μ", r"\mu"),
+    ("nu", "ν", r"\nu"),
+    ("xi", "ξ", r"\xi"),
+    ("rho", "ρ", r"\rho"),
+    ("sigma", "σ", r"\sigma"),
+    ("tau", "τ", r"\tau"),
+    ("phi", "φ", r"\phi"),
+    ("chi", "χ", r"\chi"),
+    ("psi", "ψ", r"\psi"),
+    ("omega", "ω", r"\omega"),
+    ("Gamma", "Γ", r"\Gamma"),
+    ("Delta", "Δ", r"\Delta"),
+    ("Theta", "Θ", r"\Theta"),
+    ("Lambda", "Λ", r"\Lambda"),
+    ("Phi", "Φ", r"\Phi"),
+    ("Psi", "Ψ", r"\Psi"),
+    ("Omega", "Ω", r"\Omega"),
+];
+
+/// `omega_x` → (`ω_x`, `\omega_{x}`); `p_theta` → (`p_θ`, `p_{\theta}`); `G1` → (`G1`, `G_{1}`).
+pub(crate) fn render_name(name: &str) -> (String, String) {
+    fn piece(p: &str) -> (String, String) {
+        for (ascii, uni, tex) in GREEK {
+            if p == *ascii || p == *uni {
+                return (uni.to_string(), tex.to_string());
+            }
+        }
+        let tex = if p.chars().count() > 1 { format!(r"\mathrm{{{p}}}") } else { p.to_string() };
+        (p.to_string(), tex)
+    }
+    match name.split_once('_') {
+        Some((head, tail)) if !head.is_empty() && !tail.is_empty() => {
+            let (hu, ht) = piece(head);
+            let subs: Vec<(String, String)> = tail.split('_').map(piece).collect();
+            let su: Vec<&str> = subs.iter().map(|s| s.0.as_str()).collect();
+            let st: Vec<String> =
+                subs.iter().map(|s| s.1.trim_start_matches(r"\mathrm").to_string()).collect();
+            let st: Vec<String> = st
+                .into_iter()
+                .map(|s| s.trim_start_matches('{').trim_end_matches('}').to_string())
+                .collect();
+            (format!("{hu}_{}", su.join("_")), format!("{ht}_{{{}}}", st.join(",")))
+        }
+        _ => {
+            // Trailing digits become a subscript in LaTeX: G1 → G_{1}.
+            let split = name.trim_end_matches(|c: char| c.is_ascii_digit());
+            if !split.is_empty() && split.len() < name.len() {
+                let (u, t) = piece(split);
+                let digits = &name[split.len()..];
+                return (format!("{u}{digits}"), format!("{t}_{{{digits}}}"));
+            }
+            piece(name)
+        }
+    }
+}
+
+impl fmt::Display for VarSet {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        let names: Vec<&str> = self.vars.iter().map(|v| v.unicode.as_str()).collect();
+        write!(f, "{{{}}}", names.join(", "))
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn names_render_like_the_paper() {
+        assert_eq!(render_name("p_x"), ("p_x".into(), "p_{x}".into()));
+        assert_eq!(render_name("p_theta"), ("p_θ".into(), r"p_{\theta}".into()));
+        assert_eq!(render_name("omega"), ("ω".into(), r"\omega".into()));
+        assert_eq!(render_name("G1"), ("G1".into(), "G_{1}".into()));
+        assert_eq!(render_name("M"), ("M".into(), "M".into()));
+    }
+
+    #[test]
+    fn layout_packs_and_orders_lexicographically() {
+        let l = Layout::new(9, 16);
+        assert_eq!(l.words, 3);
+        let mut a = vec![0; 3];
+        let mut b = vec![0; 3];
+        l.pack(&[1, -2, 0, 0, 0, 0, 0, 0, 5], &mut a);
+        l.pack(&[1, -3, 7, 0, 0, 0, 0, 0, 5], &mut b);
+        assert!(a > b);
+        assert_eq!(l.get(&a, 1), -2);
+        assert_eq!(l.get(&a, 8), 5);
+        let mut c = vec![0; 3];
+        l.mul_into(&a, &b, &mut c);
+        assert_eq!((0..9).map(|j| l.get(&c, j)).collect::<Vec<_>>(), [2, -5, 7, 0, 0, 0, 0, 0, 10]);
+    }
+}
