@@ -1,1 +1,39 @@
-//! x
+//! # brackets
+//!
+//! The bracket engine: phase spaces, the Poisson bracket, Hamiltonian systems with named
+//! functions, claims proved or refuted exactly, bracket tables, the tower of resonant integrals
+//! with its all-`m, n` proof, and certified Jacobian ranks. It does no I/O.
+//!
+//! ```
+//! use brackets::{systems, Claim};
+//!
+//! // C09: {G1, G2} = −ω² L for the harmonic rotor.
+//! let rotor = systems::harmonic_rotor();
+//! let claim = Claim::new(
+//!     "C09",
+//!     "{G1, G2} = −ω² L",
+//!     rotor.parse("{G1, G2}")?,
+//!     rotor.parse("-omega^2*L")?,
+//! );
+//! assert!(claim.check()?.outcome.is_proved());
+//! # Ok::<(), brackets::EngineError>(())
+//! ```
+#![deny(missing_docs)]
+
+mod claim;
+mod error;
+pub mod linalg;
+mod phase;
+pub mod rank;
+mod system;
+pub mod systems;
+pub mod table;
+pub mod tower;
+
+pub use claim::{Claim, Condition, Outcome, Verdict};
+pub use error::EngineError;
+pub use phase::{CanonicalPair, PhaseSpace};
+pub use rank::{rank, RankCertificate, UpperBound};
+pub use system::{NamedFunction, System};
+pub use table::{BracketTable, Entry};
+pub use tower::{check_tower, eigen_proof, EigenProof, TowerReport};

@@ -82,14 +82,24 @@ impl<C: Coefficient> Lower<'_, C> {
     fn lower(&self, e: &Expr) -> Result<Poly<C>, ParseError> {
         let span = e.span;
         match &e.kind {
-            ExprKind::Integer(n) => {
-                Ok(Poly::constant(self.vars, C::from_rational(Rational::from(Integer::from(n.clone())))))
-            }
+            ExprKind::Integer(n) => Ok(Poly::constant(
+                self.vars,
+                C::from_rational(Rational::from(Integer::from(n.clone()))),
+            )),
             ExprKind::Name(name) => self.name(name, span),
             ExprKind::Neg(a) => Ok(-self.lower(a)?),
-            ExprKind::Add(a, b) => self.lower(a)?.checked_add(&self.lower(b)?).map_err(at(span)),
-            ExprKind::Sub(a, b) => self.lower(a)?.checked_sub(&self.lower(b)?).map_err(at(span)),
-            ExprKind::Mul(a, b) => self.lower(a)?.checked_mul(&self.lower(b)?).map_err(at(span)),
+            ExprKind::Add(a, b) => self
+                .lower(a)?
+                .checked_add(&self.lower(b)?)
+                .map_err(at(span)),
+            ExprKind::Sub(a, b) => self
+                .lower(a)?
+                .checked_sub(&self.lower(b)?)
+                .map_err(at(span)),
+            ExprKind::Mul(a, b) => self
+                .lower(a)?
+                .checked_mul(&self.lower(b)?)
+                .map_err(at(span)),
             ExprKind::Div(a, b) => {
                 let num = self.lower(a)?;
                 let den = self.lower(b)?;
@@ -104,7 +114,9 @@ impl<C: Coefficient> Lower<'_, C> {
             ExprKind::Bracket(f, g) => {
                 let f = self.lower(f)?;
                 let g = self.lower(g)?;
-                self.ctx.bracket(&f, &g).map_err(|m| ParseError::new(span, m))
+                self.ctx
+                    .bracket(&f, &g)
+                    .map_err(|m| ParseError::new(span, m))
             }
         }
     }
@@ -112,7 +124,10 @@ impl<C: Coefficient> Lower<'_, C> {
     fn name(&self, name: &str, span: Span) -> Result<Poly<C>, ParseError> {
         if name == "i" {
             let i = C::from_gaussian(&GaussianRational::i()).ok_or_else(|| {
-                ParseError::new(span, "the imaginary unit i needs Gaussian rational coefficients Q(i)")
+                ParseError::new(
+                    span,
+                    "the imaginary unit i needs Gaussian rational coefficients Q(i)",
+                )
             })?;
             return Ok(Poly::constant(self.vars, i));
         }
@@ -131,15 +146,23 @@ impl<C: Coefficient> Lower<'_, C> {
         if let Some(p) = self.ctx.lookup(name) {
             return Ok(p);
         }
-        let mut known: Vec<String> =
-            self.vars.vars().map(|v| self.vars.variable(v).name().to_string()).collect();
+        let mut known: Vec<String> = self
+            .vars
+            .vars()
+            .map(|v| self.vars.variable(v).name().to_string())
+            .collect();
         known.extend(self.ctx.names());
-        Err(ParseError::new(span, format!("unknown name '{name}' (known: {})", known.join(", "))))
+        Err(ParseError::new(
+            span,
+            format!("unknown name '{name}' (known: {})", known.join(", ")),
+        ))
     }
 
     fn integer_exponent(&self, e: &Expr) -> Result<i64, ParseError> {
         let p: Poly<C> = self.lower(e)?;
-        let value = p.as_constant().and_then(|c| Rational::from_gaussian(&c.to_gaussian()));
+        let value = p
+            .as_constant()
+            .and_then(|c| Rational::from_gaussian(&c.to_gaussian()));
         let limit = self.vars.limits().max_degree;
         match value {
             Some(q) if q.is_integer() => match q.numer().to_i64() {
@@ -151,13 +174,24 @@ impl<C: Coefficient> Lower<'_, C> {
             },
             Some(q) => Err(ParseError::new(
                 e.span,
-                format!("exponents must be integers, found {q} (fractional powers are not polynomial)"),
+                format!(
+                    "exponents must be integers, found {q} (fractional powers are not polynomial)"
+                ),
             )),
-            None => Err(ParseError::new(e.span, "exponents must be integer constants")),
+            None => Err(ParseError::new(
+                e.span,
+                "exponents must be integer constants",
+            )),
         }
     }
 
-    fn call(&self, name: &str, name_span: Span, args: &[Expr], span: Span) -> Result<Poly<C>, ParseError> {
+    fn call(
+        &self,
+        name: &str,
+        name_span: Span,
+        args: &[Expr],
+        span: Span,
+    ) -> Result<Poly<C>, ParseError> {
         let fun = match name {
             "cos" | "sin" | "exp" => name,
             _ => {
@@ -168,7 +202,10 @@ impl<C: Coefficient> Lower<'_, C> {
             }
         };
         if args.len() != 1 {
-            return Err(ParseError::new(span, format!("{fun} takes one argument, found {}", args.len())));
+            return Err(ParseError::new(
+                span,
+                format!("{fun} takes one argument, found {}", args.len()),
+            ));
         }
         let arg = &args[0];
         let (combo, imaginary) = self.angle_combination(arg, fun)?;
@@ -177,7 +214,9 @@ impl<C: Coefficient> Lower<'_, C> {
         let exp_i = |sign: i64| -> Result<Poly<C>, ParseError> {
             let mut acc = Poly::one(self.vars);
             for &(v, n) in &combo {
-                acc = acc.checked_mul(&Poly::exp_i(self.vars, v, sign * n).map_err(wrap)?).map_err(wrap)?;
+                acc = acc
+                    .checked_mul(&Poly::exp_i(self.vars, v, sign * n).map_err(wrap)?)
+                    .map_err(wrap)?;
             }
             Ok(acc)
         };
@@ -209,7 +248,11 @@ impl<C: Coefficient> Lower<'_, C> {
     }
 
     /// Reads `Σ n_j θ_j` (or `i·Σ n_j θ_j`) with integer `n_j`; says whether `i` is a factor.
-    fn angle_combination(&self, e: &Expr, fun: &str) -> Result<(Vec<(Var, i64)>, bool), ParseError> {
+    fn angle_combination(
+        &self,
+        e: &Expr,
+        fun: &str,
+    ) -> Result<(Vec<(Var, i64)>, bool), ParseError> {
         let bad = |span: Span| {
             ParseError::new(
                 span,

@@ -209,17 +209,29 @@ pub(crate) fn render_term(
     let mut num: Vec<Factor> = Vec::new();
     let mut den: Vec<Factor> = Vec::new();
     if let Some(c) = complex {
-        num.push(Factor { text: c, wide: true });
+        num.push(Factor {
+            text: c,
+            wide: true,
+        });
     } else {
         if !num_int.is_one() {
-            num.push(Factor { text: num_int.to_string(), wide: false });
+            num.push(Factor {
+                text: num_int.to_string(),
+                wide: false,
+            });
         }
         if !coeff.im.is_zero() {
-            num.push(Factor { text: "i".into(), wide: false });
+            num.push(Factor {
+                text: "i".into(),
+                wide: false,
+            });
         }
     }
     if !den_int.is_one() {
-        den.push(Factor { text: den_int.to_string(), wide: false });
+        den.push(Factor {
+            text: den_int.to_string(),
+            wide: false,
+        });
     }
     // Factors as the paper orders them: parameters, then coordinates, then momenta.
     let rank = |j: &usize| match vars.variable(vars.vars().nth(*j).expect("in range")).kind() {
@@ -234,7 +246,10 @@ pub(crate) fn render_term(
         let e = exps[j];
         let name = var_name(vars, j, style);
         let wide = style == Style::Unicode && name.chars().count() > 1;
-        let f = Factor { text: power(&name, e.abs(), style), wide };
+        let f = Factor {
+            text: power(&name, e.abs(), style),
+            wide,
+        };
         if e > 0 {
             num.push(f);
         } else {
@@ -244,7 +259,11 @@ pub(crate) fn render_term(
     if let Some(t) = trig {
         num.extend(trig_factors(vars, t, style));
     }
-    let numer = if num.is_empty() { "1".to_string() } else { join(&num, style) };
+    let numer = if num.is_empty() {
+        "1".to_string()
+    } else {
+        join(&num, style)
+    };
     if den.is_empty() {
         return (negative, numer);
     }
@@ -287,13 +306,20 @@ fn split_coeff(c: &GaussianRational, style: Style) -> (bool, Rational, Rational,
     }
     let negative = part.is_negative();
     let abs = part.abs();
-    (negative, Rational::from(abs.numer()), Rational::from(abs.denom()), None)
+    (
+        negative,
+        Rational::from(abs.numer()),
+        Rational::from(abs.denom()),
+        None,
+    )
 }
 
 fn render_term_free(q: &Rational, style: Style) -> (bool, String) {
     let abs = q.abs();
     let text = match style {
-        Style::Latex if !abs.is_integer() => format!(r"\frac{{{}}}{{{}}}", abs.numer(), abs.denom()),
+        Style::Latex if !abs.is_integer() => {
+            format!(r"\frac{{{}}}{{{}}}", abs.numer(), abs.denom())
+        }
         _ => abs.to_string(),
     };
     (q.is_negative(), text)

@@ -70,7 +70,10 @@ pub struct Limits {
 
 impl Default for Limits {
     fn default() -> Self {
-        Limits { max_terms: 20_000_000, max_degree: 10_000 }
+        Limits {
+            max_terms: 20_000_000,
+            max_degree: 10_000,
+        }
     }
 }
 
@@ -96,7 +99,13 @@ impl Layout {
             let (w, shift) = Layout::place(per_word, bits, j);
             bias[w] |= 1u64 << (shift + bits - 1);
         }
-        Layout { bits, per_word, words, bias, max_exp: (1i64 << (bits - 1)) - 1 }
+        Layout {
+            bits,
+            per_word,
+            words,
+            bias,
+            max_exp: (1i64 << (bits - 1)) - 1,
+        }
     }
 
     #[inline]
@@ -110,7 +119,11 @@ impl Layout {
     #[inline]
     pub fn get(&self, m: &[u64], j: usize) -> i64 {
         let (w, shift) = Layout::place(self.per_word, self.bits, j);
-        let mask = if self.bits == 64 { u64::MAX } else { (1u64 << self.bits) - 1 };
+        let mask = if self.bits == 64 {
+            u64::MAX
+        } else {
+            (1u64 << self.bits) - 1
+        };
         ((m[w] >> shift) & mask) as i64 - (1i64 << (self.bits - 1))
     }
 
@@ -201,7 +214,8 @@ impl VarSet {
 
     /// The angle variables.
     pub fn angles(&self) -> impl Iterator<Item = Var> + '_ {
-        self.vars().filter(|&v| self.variable(v).kind == VarKind::Angle)
+        self.vars()
+            .filter(|&v| self.variable(v).kind == VarKind::Angle)
     }
 
     pub(crate) fn layout(&self) -> &Layout {
@@ -210,7 +224,12 @@ impl VarSet {
 
     /// The same variables with other limits.
     pub fn with_limits(&self, limits: Limits) -> Result<Arc<VarSet>, AlgebraError> {
-        VarSetBuilder { vars: self.vars.clone(), limits, bits: self.layout.bits }.build()
+        VarSetBuilder {
+            vars: self.vars.clone(),
+            limits,
+            bits: self.layout.bits,
+        }
+        .build()
     }
 }
 
@@ -224,7 +243,11 @@ pub struct VarSetBuilder {
 
 impl Default for VarSetBuilder {
     fn default() -> Self {
-        VarSetBuilder { vars: Vec::new(), limits: Limits::default(), bits: 16 }
+        VarSetBuilder {
+            vars: Vec::new(),
+            limits: Limits::default(),
+            bits: 16,
+        }
     }
 }
 
@@ -232,7 +255,12 @@ impl VarSetBuilder {
     /// Declares a variable of the given kind.
     pub fn variable(mut self, name: &str, kind: VarKind) -> Self {
         let (unicode, latex) = render_name(name);
-        self.vars.push(Variable { name: name.to_string(), unicode, latex, kind });
+        self.vars.push(Variable {
+            name: name.to_string(),
+            unicode,
+            latex,
+            kind,
+        });
         self
     }
     /// Declares a coordinate.
@@ -292,8 +320,15 @@ impl VarSetBuilder {
         }
         let layout = Layout::new(self.vars.len(), self.bits);
         let max_degree = self.limits.max_degree.min(layout.max_exp as u32);
-        let limits = Limits { max_degree, ..self.limits };
-        Ok(Arc::new(VarSet { vars: self.vars, layout, limits }))
+        let limits = Limits {
+            max_degree,
+            ..self.limits
+        };
+        Ok(Arc::new(VarSet {
+            vars: self.vars,
+            layout,
+            limits,
+        }))
     }
 }
 
@@ -345,7 +380,11 @@ pub(crate) fn render_name(name: &str) -> (String, String) {
                 return (uni.to_string(), tex.to_string());
             }
         }
-        let tex = if p.chars().count() > 1 { format!(r"\mathrm{{{p}}}") } else { p.to_string() };
+        let tex = if p.chars().count() > 1 {
+            format!(r"\mathrm{{{p}}}")
+        } else {
+            p.to_string()
+        };
         (p.to_string(), tex)
     }
     match name.split_once('_') {
@@ -353,13 +392,18 @@ pub(crate) fn render_name(name: &str) -> (String, String) {
             let (hu, ht) = piece(head);
             let subs: Vec<(String, String)> = tail.split('_').map(piece).collect();
             let su: Vec<&str> = subs.iter().map(|s| s.0.as_str()).collect();
-            let st: Vec<String> =
-                subs.iter().map(|s| s.1.trim_start_matches(r"\mathrm").to_string()).collect();
+            let st: Vec<String> = subs
+                .iter()
+                .map(|s| s.1.trim_start_matches(r"\mathrm").to_string())
+                .collect();
             let st: Vec<String> = st
                 .into_iter()
                 .map(|s| s.trim_start_matches('{').trim_end_matches('}').to_string())
                 .collect();
-            (format!("{hu}_{}", su.join("_")), format!("{ht}_{{{}}}", st.join(",")))
+            (
+                format!("{hu}_{}", su.join("_")),
+                format!("{ht}_{{{}}}", st.join(",")),
+            )
         }
         _ => {
             // Trailing digits become a subscript in LaTeX: G1 → G_{1}.
@@ -407,6 +451,9 @@ mod tests {
         assert_eq!(l.get(&a, 8), 5);
         let mut c = vec![0; 3];
         l.mul_into(&a, &b, &mut c);
-        assert_eq!((0..9).map(|j| l.get(&c, j)).collect::<Vec<_>>(), [2, -5, 7, 0, 0, 0, 0, 0, 10]);
+        assert_eq!(
+            (0..9).map(|j| l.get(&c, j)).collect::<Vec<_>>(),
+            [2, -5, 7, 0, 0, 0, 0, 0, 10]
+        );
     }
 }

@@ -29,12 +29,18 @@ impl GaussianInteger {
 
     /// Complex conjugate.
     pub fn conj(&self) -> Self {
-        GaussianInteger { re: self.re.clone(), im: -&self.im }
+        GaussianInteger {
+            re: self.re.clone(),
+            im: -&self.im,
+        }
     }
 
     /// `i · self`.
     pub fn mul_i(&self) -> Self {
-        GaussianInteger { re: -&self.im, im: self.re.clone() }
+        GaussianInteger {
+            re: -&self.im,
+            im: self.re.clone(),
+        }
     }
 }
 
@@ -78,7 +84,10 @@ impl GaussianAcc {
 
     /// The accumulated value.
     pub fn finish(self) -> GaussianInteger {
-        GaussianInteger { re: self.re.finish(), im: self.im.finish() }
+        GaussianInteger {
+            re: self.re.finish(),
+            im: self.im.finish(),
+        }
     }
 }
 
@@ -106,7 +115,10 @@ impl GaussianRational {
 
     /// The imaginary unit.
     pub fn i() -> Self {
-        GaussianRational { re: Rational::zero(), im: Rational::one() }
+        GaussianRational {
+            re: Rational::zero(),
+            im: Rational::one(),
+        }
     }
 
     /// Whether both parts are zero.
@@ -121,7 +133,10 @@ impl GaussianRational {
 
     /// Complex conjugate.
     pub fn conj(&self) -> Self {
-        GaussianRational { re: self.re.clone(), im: -&self.im }
+        GaussianRational {
+            re: self.re.clone(),
+            im: -&self.im,
+        }
     }
 
     /// `|z|² = re² + im²`.
@@ -132,7 +147,10 @@ impl GaussianRational {
     /// The inverse `z̄/|z|²`, or `None` for zero.
     pub fn try_inv(&self) -> Option<Self> {
         let n = self.norm().try_inv()?;
-        Some(GaussianRational { re: &self.re * &n, im: -(&self.im * &n) })
+        Some(GaussianRational {
+            re: &self.re * &n,
+            im: -(&self.im * &n),
+        })
     }
 
     /// `self^e` for any integer `e`; `None` for `0^e` with `e < 0`.
@@ -153,7 +171,10 @@ impl GaussianRational {
 
 impl From<Rational> for GaussianRational {
     fn from(re: Rational) -> Self {
-        GaussianRational { re, im: Rational::zero() }
+        GaussianRational {
+            re,
+            im: Rational::zero(),
+        }
     }
 }
 
@@ -219,7 +240,10 @@ impl FromStr for GaussianRational {
             }
         };
         if !t.ends_with('i') {
-            return t.parse::<Rational>().map(GaussianRational::from).map_err(|_| err());
+            return t
+                .parse::<Rational>()
+                .map(GaussianRational::from)
+                .map_err(|_| err());
         }
         // Split at the last sign that is not the first character.
         let split = t
@@ -234,23 +258,32 @@ impl FromStr for GaussianRational {
                 let im = imag(&t[k..]).ok_or_else(err)?;
                 Ok(GaussianRational { re, im })
             }
-            None => Ok(GaussianRational { re: Rational::zero(), im: imag(&t).ok_or_else(err)? }),
+            None => Ok(GaussianRational {
+                re: Rational::zero(),
+                im: imag(&t).ok_or_else(err)?,
+            }),
         }
     }
 }
 
-forward_binop!(GaussianRational, Add, add, AddAssign, add_assign, |a, b| GaussianRational {
-    re: &a.re + &b.re,
-    im: &a.im + &b.im
+forward_binop!(GaussianRational, Add, add, AddAssign, add_assign, |a, b| {
+    GaussianRational {
+        re: &a.re + &b.re,
+        im: &a.im + &b.im,
+    }
 });
-forward_binop!(GaussianRational, Sub, sub, SubAssign, sub_assign, |a, b| GaussianRational {
-    re: &a.re - &b.re,
-    im: &a.im - &b.im
+forward_binop!(GaussianRational, Sub, sub, SubAssign, sub_assign, |a, b| {
+    GaussianRational {
+        re: &a.re - &b.re,
+        im: &a.im - &b.im,
+    }
 });
 // (a + bi)(c + di) = (ac − bd) + (ad + bc)i
-forward_binop!(GaussianRational, Mul, mul, MulAssign, mul_assign, |a, b| GaussianRational {
-    re: &a.re * &b.re - &a.im * &b.im,
-    im: &a.re * &b.im + &a.im * &b.re
+forward_binop!(GaussianRational, Mul, mul, MulAssign, mul_assign, |a, b| {
+    GaussianRational {
+        re: &a.re * &b.re - &a.im * &b.im,
+        im: &a.re * &b.im + &a.im * &b.re,
+    }
 });
 // Panics if the divisor is zero (use `try_inv` for a checked division).
 forward_binop!(GaussianRational, Div, div, DivAssign, div_assign, |a, b| a
@@ -259,7 +292,10 @@ forward_binop!(GaussianRational, Div, div, DivAssign, div_assign, |a, b| a
 impl Neg for &GaussianRational {
     type Output = GaussianRational;
     fn neg(self) -> GaussianRational {
-        GaussianRational { re: -&self.re, im: -&self.im }
+        GaussianRational {
+            re: -&self.re,
+            im: -&self.im,
+        }
     }
 }
 

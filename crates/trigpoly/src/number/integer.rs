@@ -112,7 +112,9 @@ impl Integer {
     pub fn gcd(&self, other: &Integer) -> Integer {
         match (self, other) {
             (Integer::Small(a), Integer::Small(b)) => {
-                let g = (*a as i128).unsigned_abs().gcd(&(*b as i128).unsigned_abs());
+                let g = (*a as i128)
+                    .unsigned_abs()
+                    .gcd(&(*b as i128).unsigned_abs());
                 Integer::from_i128(g as i128)
             }
             _ => Integer::from_bigint(self.to_bigint().gcd(&other.to_bigint())),
@@ -133,9 +135,7 @@ impl Integer {
     /// Panics if `d` is zero; the result is only meaningful when `d` divides `self`.
     pub fn div_exact(&self, d: &Integer) -> Integer {
         match (self, d) {
-            (Integer::Small(a), Integer::Small(b)) => {
-                Integer::from_i128(*a as i128 / *b as i128)
-            }
+            (Integer::Small(a), Integer::Small(b)) => Integer::from_i128(*a as i128 / *b as i128),
             _ => Integer::from_bigint(self.to_bigint() / d.to_bigint()),
         }
     }

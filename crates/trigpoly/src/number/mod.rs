@@ -18,7 +18,9 @@ pub use integer::{Integer, IntegerAcc};
 pub use rational::{ParseRationalError, Rational};
 
 /// The integer ring under a coefficient field: `Integer` (Z) or `GaussianInteger` (Z[i]).
-pub trait IntegerRing: Clone + PartialEq + Eq + Hash + Debug + Default + Send + Sync + 'static {
+pub trait IntegerRing:
+    Clone + PartialEq + Eq + Hash + Debug + Default + Send + Sync + 'static
+{
     /// Accumulator for sums of products, free of allocation while values are small.
     type Acc: Default + Clone;
     /// Whether the value is zero.
@@ -237,15 +239,26 @@ impl Coefficient for GaussianRational {
     const HAS_I: bool = true;
     const NAME: &'static str = "Q(i)";
     fn from_parts(content: &Rational, n: &GaussianInteger) -> Self {
-        GaussianRational::new(content * Rational::from(&n.re), content * Rational::from(&n.im))
+        GaussianRational::new(
+            content * Rational::from(&n.re),
+            content * Rational::from(&n.im),
+        )
     }
     fn split(&self) -> (Rational, GaussianInteger) {
         if self.is_zero() {
             return (Rational::zero(), GaussianInteger::default());
         }
         let g = Rational::content_gcd(&self.re, &self.im);
-        let sign = if self.re.is_zero() { self.im.sign() } else { self.re.sign() };
-        let g = if sign == std::cmp::Ordering::Less { -g } else { g };
+        let sign = if self.re.is_zero() {
+            self.im.sign()
+        } else {
+            self.re.sign()
+        };
+        let g = if sign == std::cmp::Ordering::Less {
+            -g
+        } else {
+            g
+        };
         let re = &self.re / &g;
         let im = &self.im / &g;
         (g, GaussianInteger::new(re.numer(), im.numer()))

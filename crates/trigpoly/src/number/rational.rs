@@ -96,7 +96,11 @@ impl Rational {
         if e < 0 && self.is_zero() {
             return None;
         }
-        let base = if e < 0 { self.0.recip() } else { self.0.clone() };
+        let base = if e < 0 {
+            self.0.recip()
+        } else {
+            self.0.clone()
+        };
         Some(Rational(num_traits::pow(base, e.unsigned_abs() as usize)))
     }
 
@@ -218,11 +222,19 @@ macro_rules! forward_binop {
 }
 pub(crate) use forward_binop;
 
-forward_binop!(Rational, Add, add, AddAssign, add_assign, |a, b| Rational(&a.0 + &b.0));
-forward_binop!(Rational, Sub, sub, SubAssign, sub_assign, |a, b| Rational(&a.0 - &b.0));
-forward_binop!(Rational, Mul, mul, MulAssign, mul_assign, |a, b| Rational(&a.0 * &b.0));
+forward_binop!(Rational, Add, add, AddAssign, add_assign, |a, b| Rational(
+    &a.0 + &b.0
+));
+forward_binop!(Rational, Sub, sub, SubAssign, sub_assign, |a, b| Rational(
+    &a.0 - &b.0
+));
+forward_binop!(Rational, Mul, mul, MulAssign, mul_assign, |a, b| Rational(
+    &a.0 * &b.0
+));
 // Panics if the divisor is zero (use `try_inv` for a checked division).
-forward_binop!(Rational, Div, div, DivAssign, div_assign, |a, b| Rational(&a.0 / &b.0));
+forward_binop!(Rational, Div, div, DivAssign, div_assign, |a, b| Rational(
+    &a.0 / &b.0
+));
 
 impl Neg for &Rational {
     type Output = Rational;

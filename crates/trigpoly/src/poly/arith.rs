@@ -46,7 +46,10 @@ impl<C: Coefficient> Poly<C> {
         }
         let content = &self.content * &q;
         if n == C::Int::from_integer(Integer::ONE) {
-            return Poly { content, ..self.clone() };
+            return Poly {
+                content,
+                ..self.clone()
+            };
         }
         let coeffs = self.coeffs.iter().map(|x| x.mul(&n)).collect();
         Self::from_sorted(&self.vars, content, self.exps.clone(), coeffs)
@@ -57,7 +60,10 @@ impl<C: Coefficient> Poly<C> {
         if q.is_zero() || self.is_zero() {
             return Self::zero(&self.vars);
         }
-        Poly { content: &self.content * q, ..self.clone() }
+        Poly {
+            content: &self.content * q,
+            ..self.clone()
+        }
     }
 
     /// `self / d` where `d` is a nonzero constant or a single term; anything else is an error
@@ -81,7 +87,12 @@ impl<C: Coefficient> Poly<C> {
             .map(|c| c.try_mul_i())
             .collect::<Option<Vec<_>>>()
             .ok_or_else(|| AlgebraError::NeedsGaussian("multiplication by i".into()))?;
-        Ok(Self::from_sorted(&self.vars, self.content.clone(), self.exps.clone(), coeffs))
+        Ok(Self::from_sorted(
+            &self.vars,
+            self.content.clone(),
+            self.exps.clone(),
+            coeffs,
+        ))
     }
 }
 
@@ -135,7 +146,10 @@ pub(crate) fn merge<C: Coefficient>(
 impl<C: Coefficient> Neg for &Poly<C> {
     type Output = Poly<C>;
     fn neg(self) -> Poly<C> {
-        Poly { content: -&self.content, ..self.clone() }
+        Poly {
+            content: -&self.content,
+            ..self.clone()
+        }
     }
 }
 

@@ -45,6 +45,11 @@ impl<C: Coefficient> Poly<C> {
                 coeffs.push(c);
             }
         }
-        Ok(Self::from_sorted(&self.vars, self.content.clone(), exps, coeffs))
+        Ok(Self::from_sorted(
+            &self.vars,
+            self.content.clone(),
+            exps,
+            coeffs,
+        ))
     }
 }

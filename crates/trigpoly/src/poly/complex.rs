@@ -3,7 +3,9 @@
 
 use super::Poly;
 use crate::error::AlgebraError;
-use crate::number::{Coefficient, GaussianInteger, GaussianRational, Integer, IntegerRing, Rational};
+use crate::number::{
+    Coefficient, GaussianInteger, GaussianRational, Integer, IntegerRing, Rational,
+};
 use crate::varset::VarKind;
 
 impl<C: Coefficient> Poly<C> {
@@ -56,7 +58,10 @@ impl<C: Coefficient> Poly<C> {
 
     /// Whether no angle or non-angle variable of kind `kind` appears.
     pub fn is_free_of(&self, kind: VarKind) -> bool {
-        self.vars.vars().filter(|&v| self.vars.variable(v).kind() == kind).all(|v| !self.contains(v))
+        self.vars
+            .vars()
+            .filter(|&v| self.vars.variable(v).kind() == kind)
+            .all(|v| !self.contains(v))
     }
 }
 
@@ -64,7 +69,10 @@ impl Poly<Rational> {
     /// The same polynomial over Q(i).
     pub fn to_gaussian(&self) -> Poly<GaussianRational> {
         let (content, exps, coeffs) = self.raw_parts();
-        let coeffs = coeffs.iter().map(|c| GaussianInteger::from_integer(c.clone())).collect();
+        let coeffs = coeffs
+            .iter()
+            .map(|c| GaussianInteger::from_integer(c.clone()))
+            .collect();
         Poly::from_sorted(self.vars(), content.clone(), exps.to_vec(), coeffs)
     }
 }
@@ -73,8 +81,15 @@ impl Poly<GaussianRational> {
     /// The same polynomial over Q, if every coefficient (in the `e^{ikθ}` basis) is real.
     pub fn to_rational(&self) -> Option<Poly<Rational>> {
         let (content, exps, coeffs) = self.raw_parts();
-        let real: Option<Vec<Integer>> =
-            coeffs.iter().map(|c| c.im.is_zero().then(|| c.re.clone())).collect();
-        Some(Poly::from_sorted(self.vars(), content.clone(), exps.to_vec(), real?))
+        let real: Option<Vec<Integer>> = coeffs
+            .iter()
+            .map(|c| c.im.is_zero().then(|| c.re.clone()))
+            .collect();
+        Some(Poly::from_sorted(
+            self.vars(),
+            content.clone(),
+            exps.to_vec(),
+            real?,
+        ))
     }
 }

@@ -53,7 +53,12 @@ pub struct Poly<C: Coefficient> {
 impl<C: Coefficient> Poly<C> {
     /// The zero polynomial.
     pub fn zero(vars: &Arc<VarSet>) -> Self {
-        Poly { vars: vars.clone(), content: Rational::zero(), exps: Vec::new(), coeffs: Vec::new() }
+        Poly {
+            vars: vars.clone(),
+            content: Rational::zero(),
+            exps: Vec::new(),
+            coeffs: Vec::new(),
+        }
     }
 
     /// The constant 1.
@@ -67,7 +72,12 @@ impl<C: Coefficient> Poly<C> {
         if content.is_zero() {
             return Self::zero(vars);
         }
-        Poly { vars: vars.clone(), content, exps: vars.layout().one().to_vec(), coeffs: vec![n] }
+        Poly {
+            vars: vars.clone(),
+            content,
+            exps: vars.layout().one().to_vec(),
+            coeffs: vec![n],
+        }
     }
 
     /// The variable `v` (for an angle, `e^{iθ}`).
@@ -90,7 +100,12 @@ impl<C: Coefficient> Poly<C> {
         }
         let mut w = vec![0u64; vars.layout().words];
         vars.layout().pack(&exps, &mut w);
-        Ok(Poly { vars: vars.clone(), content, exps: w, coeffs: vec![n] })
+        Ok(Poly {
+            vars: vars.clone(),
+            content,
+            exps: w,
+            coeffs: vec![n],
+        })
     }
 
     /// Builds a polynomial from terms `(coefficient, exponent vector)` in any order; equal
@@ -132,7 +147,8 @@ impl<C: Coefficient> Poly<C> {
         if self.is_zero() {
             return Some(C::zero());
         }
-        self.is_constant().then(|| C::from_parts(&self.content, &self.coeffs[0]))
+        self.is_constant()
+            .then(|| C::from_parts(&self.content, &self.coeffs[0]))
     }
 
     /// Whether this is a single term (a nonzero scalar times a monomial).
@@ -151,7 +167,10 @@ impl<C: Coefficient> Poly<C> {
         for &(v, e) in powers {
             exps[v.index()] += e;
         }
-        if exps.iter().any(|e| e.unsigned_abs() > self.vars.layout().max_exp as u64) {
+        if exps
+            .iter()
+            .any(|e| e.unsigned_abs() > self.vars.layout().max_exp as u64)
+        {
             return C::zero();
         }
         let mut key = vec![0u64; self.words()];
@@ -176,7 +195,10 @@ impl<C: Coefficient> Poly<C> {
     /// `k` in `e^{ikθ}`, so the degree in `cos θ, sin θ` is `max(|low|, |high|)`.
     pub fn exponent_range(&self, v: Var) -> Option<(i64, i64)> {
         let layout = self.vars.layout();
-        let mut it = self.exps.chunks_exact(self.words()).map(|m| layout.get(m, v.index()));
+        let mut it = self
+            .exps
+            .chunks_exact(self.words())
+            .map(|m| layout.get(m, v.index()));
         let first = it.next()?;
         Some(it.fold((first, first), |(lo, hi), e| (lo.min(e), hi.max(e))))
     }
@@ -200,7 +222,9 @@ impl<C: Coefficient> Poly<C> {
     /// Whether `v` appears.
     pub fn contains(&self, v: Var) -> bool {
         let layout = self.vars.layout();
-        self.exps.chunks_exact(self.words()).any(|m| layout.get(m, v.index()) != 0)
+        self.exps
+            .chunks_exact(self.words())
+            .any(|m| layout.get(m, v.index()) != 0)
     }
 
     /// The content: a rational `q` such that `self/q` has coprime integer coefficients.
@@ -250,7 +274,9 @@ impl<C: Coefficient> Poly<C> {
 
     pub(crate) fn check_terms(vars: &VarSet, n: usize) -> Result<(), AlgebraError> {
         if n > vars.limits().max_terms {
-            Err(AlgebraError::TooManyTerms { limit: vars.limits().max_terms })
+            Err(AlgebraError::TooManyTerms {
+                limit: vars.limits().max_terms,
+            })
         } else {
             Ok(())
         }
@@ -302,7 +328,12 @@ impl<C: Coefficient> Poly<C> {
             }
             content = content * Rational::from(d);
         }
-        Poly { vars: vars.clone(), content, exps, coeffs }
+        Poly {
+            vars: vars.clone(),
+            content,
+            exps,
+            coeffs,
+        }
     }
 
     /// Builds from terms in any order, possibly repeated or zero.
@@ -388,7 +419,9 @@ impl<C: Coefficient> Term<'_, C> {
     /// All exponents, in variable order.
     pub fn exponents(&self) -> Vec<i64> {
         let m = self.poly.exp(self.k);
-        (0..self.poly.vars.len()).map(|j| self.poly.layout().get(m, j)).collect()
+        (0..self.poly.vars.len())
+            .map(|j| self.poly.layout().get(m, j))
+            .collect()
     }
 }
 

@@ -56,7 +56,6 @@ macro_rules! dispatch_words {
     };
 }
 
-
 /// Inputs with at most this many terms on one side are multiplied by shifting and merging.
 const SMALL_SIDE: usize = 6;
 
@@ -81,7 +80,11 @@ impl<C: Coefficient> Poly<C> {
         }
         self.check_product_bounds(other)?;
         let content = &self.content * &other.content;
-        let (small, big) = if self.len() <= other.len() { (self, other) } else { (other, self) };
+        let (small, big) = if self.len() <= other.len() {
+            (self, other)
+        } else {
+            (other, self)
+        };
         if small.len() <= SMALL_SIDE {
             return Ok(shift_and_merge(small, big, content));
         }
@@ -130,7 +133,12 @@ fn shift_and_merge<C: Coefficient>(
     let mut parts: Vec<Poly<C>> = (0..small.len())
         .map(|k| {
             let (exps, coeffs) = big.shifted(small.exp(k), &small.coeffs[k]);
-            Poly { vars: vars.clone(), content: one.clone(), exps, coeffs }
+            Poly {
+                vars: vars.clone(),
+                content: one.clone(),
+                exps,
+                coeffs,
+            }
         })
         .collect();
     while parts.len() > 1 {
@@ -142,7 +150,12 @@ fn shift_and_merge<C: Coefficient>(
                     let one_i = crate::number::Integer::ONE;
                     let (exps, coeffs) = super::arith::merge(&a, &one_i, &b, &one_i);
                     let (exps, coeffs) = drop_zeros(exps, coeffs, a.words());
-                    next.push(Poly { vars: vars.clone(), content: one.clone(), exps, coeffs });
+                    next.push(Poly {
+                        vars: vars.clone(),
+                        content: one.clone(),
+                        exps,
+                        coeffs,
+                    });
                 }
                 None => next.push(a),
             }

@@ -12,7 +12,11 @@ impl<C: Coefficient> Poly<C> {
             return Ok(Self::one(&self.vars));
         }
         if self.is_zero() {
-            return if e < 0 { Err(AlgebraError::DivisionByZero) } else { Ok(self.clone()) };
+            return if e < 0 {
+                Err(AlgebraError::DivisionByZero)
+            } else {
+                Ok(self.clone())
+            };
         }
         // Exponent bounds of the result, checked before any work.
         for (v, (lo, hi)) in self.vars.vars().zip(self.bounds()) {
@@ -57,12 +61,18 @@ impl<C: Coefficient> Poly<C> {
         let c = C::from_parts(&self.content, &self.coeffs[0]);
         let ce = pow_field(&c, e);
         let layout = self.layout();
-        let exps: Vec<i64> =
-            (0..self.vars.len()).map(|j| layout.get(self.exp(0), j) * e).collect();
+        let exps: Vec<i64> = (0..self.vars.len())
+            .map(|j| layout.get(self.exp(0), j) * e)
+            .collect();
         let mut w = vec![0u64; self.words()];
         layout.pack(&exps, &mut w);
         let (content, n) = ce.split();
-        Poly { vars: self.vars.clone(), content, exps: w, coeffs: vec![n] }
+        Poly {
+            vars: self.vars.clone(),
+            content,
+            exps: w,
+            coeffs: vec![n],
+        }
     }
 }
 

@@ -22,7 +22,11 @@ impl<C: Coefficient> Poly<C> {
         for (_, p) in subs {
             self.same_vars(p)?;
         }
-        let targets: Vec<Var> = subs.iter().map(|s| s.0).filter(|&v| self.contains(v)).collect();
+        let targets: Vec<Var> = subs
+            .iter()
+            .map(|s| s.0)
+            .filter(|&v| self.contains(v))
+            .collect();
         if targets.is_empty() {
             return Ok(self.clone());
         }
@@ -134,7 +138,10 @@ pub struct Point {
 impl Point {
     /// A point with no values yet.
     pub fn new(vars: &Arc<VarSet>) -> Point {
-        Point { vars: vars.clone(), values: vec![None; vars.len()] }
+        Point {
+            vars: vars.clone(),
+            values: vec![None; vars.len()],
+        }
     }
 
     /// Sets a real value.
@@ -144,10 +151,14 @@ impl Point {
     }
 
     /// Sets an angle by its cosine and sine, which must satisfy `cos² + sin² = 1`.
-    pub fn with_angle(mut self, v: Var, cos: Rational, sin: Rational) -> Result<Point, AlgebraError> {
+    pub fn with_angle(
+        mut self,
+        v: Var,
+        cos: Rational,
+        sin: Rational,
+    ) -> Result<Point, AlgebraError> {
         let name = self.vars.variable(v).unicode().to_string();
-        if self.vars.variable(v).kind() != VarKind::Angle || !(&cos * &cos + &sin * &sin).is_one()
-        {
+        if self.vars.variable(v).kind() != VarKind::Angle || !(&cos * &cos + &sin * &sin).is_one() {
             return Err(AlgebraError::NotOnUnitCircle(name));
         }
         self.values[v.index()] = Some(GaussianRational::new(cos, sin));

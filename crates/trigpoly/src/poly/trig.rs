@@ -7,7 +7,9 @@ use std::sync::Arc;
 
 use super::Poly;
 use crate::error::AlgebraError;
-use crate::number::{Coefficient, GaussianInteger, GaussianRational, Integer, IntegerRing, Rational};
+use crate::number::{
+    Coefficient, GaussianInteger, GaussianRational, Integer, IntegerRing, Rational,
+};
 use crate::varset::{Var, VarKind, VarSet};
 
 impl<C: Coefficient> Poly<C> {
@@ -54,14 +56,18 @@ impl<C: Coefficient> Poly<C> {
                     for (a, b, g) in table.iter() {
                         let mut p = pows.clone();
                         p.push((*a, *b));
-                        let gq = GaussianRational::new(Rational::from(&g.re), Rational::from(&g.im));
+                        let gq =
+                            GaussianRational::new(Rational::from(&g.re), Rational::from(&g.im));
                         next.push((p, c * &gq));
                     }
                 }
                 partial = next;
             }
             for (pows, c) in partial {
-                let key = (TrigMonomial { powers: pows }, std::cmp::Reverse(exps.clone()));
+                let key = (
+                    TrigMonomial { powers: pows },
+                    std::cmp::Reverse(exps.clone()),
+                );
                 let slot = acc.entry(key).or_default();
                 *slot = &*slot + &c;
             }
@@ -69,7 +75,11 @@ impl<C: Coefficient> Poly<C> {
         let content = GaussianRational::from(self.content.clone());
         acc.into_iter()
             .filter(|(_, c)| !c.is_zero())
-            .map(|((trig, exps), c)| CosSinTerm { coeff: &c * &content, exps: exps.0, trig })
+            .map(|((trig, exps), c)| CosSinTerm {
+                coeff: &c * &content,
+                exps: exps.0,
+                trig,
+            })
             .collect()
     }
 }

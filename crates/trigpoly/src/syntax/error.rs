@@ -11,11 +11,13 @@ pub struct Span {
 
 impl Span {
     /// The span `start..end`.
+    #[must_use]
     pub fn new(start: usize, end: usize) -> Self {
         Span { start, end }
     }
 
     /// The smallest span covering both `self` and `other`.
+    #[must_use]
     pub fn to(self, other: Span) -> Span {
         Span::new(self.start.min(other.start), self.end.max(other.end))
     }
@@ -41,12 +43,14 @@ impl ParseError {
     }
 
     /// 1-based line and column (column counted in characters, not bytes) of `span.start` in `src`.
+    #[must_use]
     pub fn line_col(&self, src: &str) -> (usize, usize) {
         line_col(src, self.span.start)
     }
 
     /// Multi-line rendering: `"line L, column C: message"`, then the source line, then a line of
     /// carets under the offending span (as wide as the span in characters, at least one).
+    #[must_use]
     pub fn render(&self, src: &str) -> String {
         let start = char_floor(src, self.span.start);
         let (line, col) = line_col(src, start);

@@ -1,8 +1,9 @@
 //! Lexer: splits source text into spanned tokens, one at a time.
 //!
-//! Besides ASCII operators it accepts `−` (U+2212) as minus, `·`, `⋅` and `×` as multiplication,
-//! `÷` as division, `**` as `^`, and runs of unicode superscript digits (optionally preceded by
-//! `⁻`) as a single superscript exponent token.
+//! Besides ASCII operators it accepts `−` (U+2212) as minus; `·`, `⋅`, `∗` and `×` as
+//! multiplication; `÷` as division; `**` as `^`; and runs of unicode superscript digits
+//! (optionally preceded by `⁻`) as a single superscript exponent token. Any unicode whitespace
+//! (and a byte-order mark) separates tokens.
 
 use num_bigint::BigInt;
 
@@ -47,16 +48,10 @@ pub(crate) struct Token {
     pub(crate) span: Span,
 }
 
-/// The value of a superscript digit character, if it is one.
+/// The ASCII digit corresponding to a superscript digit such as `²`, if `c` is one.
 fn superscript_digit(c: char) -> Option<char> {
-    match c {
-        '⁰' => Some('0'),
-        '¹' => Some('1'),
-        '²' => Some('2'),
-        '³' => Some('3'),
-        '⁴'..='⁹' => char::from_u32(c as u32 - '⁴' as u32 + '4' as u32),
-        _ => None,
-    }
+    let value = "⁰¹²³⁴⁵⁶⁷⁸⁹".chars().position(|d| d == c)?;
+    char::from_digit(value as u32, 10)
 }
 
 fn is_name_start(c: char) -> bool {
@@ -91,14 +86,17 @@ impl<'a> Lexer<'a> {
         &self.src[start..self.pos]
     }
 
-    /// The next token, or `Tok::Eof` (with an empty span at the end) once the input is exhausted.
+    /// The next token, or `Tok::Eof` once the input is exhausted. The span of `Eof` is empty and
+    /// placed just after the last non-whitespace character, so that errors there point at the
+    /// end of the last line of the expression rather than at trailing blank lines.
     pub(crate) fn next_token(&mut self) -> Result<Token, ParseError> {
-        self.eat_while(char::is_whitespace);
+        self.eat_while(|c| c.is_whitespace() || c == '\u{feff}');
         let start = self.pos;
         let Some(c) = self.peek() else {
+            let end = self.src.trim_end().len();
             return Ok(Token {
                 tok: Tok::Eof,
-                span: Span::new(start, start),
+                span: Span::new(end, end),
             });
         };
         self.pos += c.len_utf8();
@@ -125,7 +123,7 @@ impl<'a> Lexer<'a> {
                 self.pos += 1;
                 Tok::Caret
             }
-            '*' | '·' | '⋅' | '×' => Tok::Star,
+            '*' | '·' | '⋅' | '×' | '∗' => Tok::Star,
             '/' | '÷' => Tok::Slash,
             '^' => Tok::Caret,
             '(' => Tok::LParen,

@@ -11,8 +11,8 @@
 //! - `x²` and `x⁻¹` are `Pow(x, Integer(2))` and `Pow(x, Neg(Integer(1)))`, like `x^2`, `x^-1`;
 //! - unary `+` produces no node, and a parenthesized expression is its inner expression with the
 //!   span widened to include the parentheses;
-//! - nesting (parentheses, calls, brackets, unary operators, exponents) is limited to
-//!   [`MAX_DEPTH`] levels so that deep input cannot overflow the stack;
+//! - nesting (of parentheses, calls, brackets and operators) is limited to [`MAX_DEPTH`] levels
+//!   so that deep input cannot overflow the stack;
 //! - chains like `a + b + c` are left-deep, so trees are limited to [`MAX_HEIGHT`] levels (this
 //!   keeps dropping and walking them recursively safe).
 
@@ -27,24 +27,36 @@ pub use parser::{parse_expr, Expr, ExprKind, MAX_DEPTH, MAX_HEIGHT};
 mod tests {
     use super::*;
 
-    /// Compact S-expression rendering of a tree, e.g. `(- (^ x 2))`.
-    fn sexp(e: &Expr) -> String {
-        let bin = |op: &str, a: &Expr, b: &Expr| format!("({op} {} {})", sexp(a), sexp(b));
+    /// The children of a node, in source order (a call's arguments, not its name).
+    fn kids(e: &Expr) -> Vec<&Expr> {
         match &e.kind {
-            ExprKind::Integer(n) => n.to_string(),
-            ExprKind::Name(s) => s.clone(),
-            ExprKind::Neg(a) => format!("(- {})", sexp(a)),
-            ExprKind::Add(a, b) => bin("+", a, b),
-            ExprKind::Sub(a, b) => bin("-", a, b),
-            ExprKind::Mul(a, b) => bin("*", a, b),
-            ExprKind::Div(a, b) => bin("/", a, b),
-            ExprKind::Pow(a, b) => bin("^", a, b),
-            ExprKind::Bracket(a, b) => format!("{{{} {}}}", sexp(a), sexp(b)),
-            ExprKind::Call(f, _, args) => {
-                let args: Vec<String> = args.iter().map(sexp).collect();
-                format!("({f} {})", args.join(" "))
-            }
+            ExprKind::Integer(_) | ExprKind::Name(_) => vec![],
+            ExprKind::Neg(a) => vec![a],
+            ExprKind::Call(_, _, args) => args.iter().collect(),
+            ExprKind::Add(a, b)
+            | ExprKind::Sub(a, b)
+            | ExprKind::Mul(a, b)
+            | ExprKind::Div(a, b)
+            | ExprKind::Pow(a, b)
+            | ExprKind::Bracket(a, b) => vec![a, b],
         }
+    }
+
+    /// Compact S-expression rendering of a tree, e.g. `(- (^ x 2))`; brackets are `({} f g)`.
+    fn sexp(e: &Expr) -> String {
+        let head = match &e.kind {
+            ExprKind::Integer(n) => return n.to_string(),
+            ExprKind::Name(name) => return name.clone(),
+            ExprKind::Neg(_) | ExprKind::Sub(..) => "-",
+            ExprKind::Add(..) => "+",
+            ExprKind::Mul(..) => "*",
+            ExprKind::Div(..) => "/",
+            ExprKind::Pow(..) => "^",
+            ExprKind::Bracket(..) => "{}",
+            ExprKind::Call(f, ..) => f,
+        };
+        let args: Vec<String> = kids(e).into_iter().map(sexp).collect();
+        format!("({head} {})", args.join(" "))
     }
 
     fn parse(src: &str) -> String {
@@ -54,34 +66,25 @@ mod tests {
         }
     }
 
-    /// Every span in the tree lies within `src` on char boundaries, inside its parent's span.
+    /// Every span lies on char boundaries inside its parent's span, and children are in order.
     fn check_spans(src: &str, e: &Expr, outer: Span) {
         let s = e.span;
         assert!(
-            outer.start <= s.start && s.start <= s.end && s.end <= outer.end,
+            outer.start <= s.start && s.start < s.end && s.end <= outer.end,
             "{src:?}"
         );
         assert!(
             src.is_char_boundary(s.start) && src.is_char_boundary(s.end),
             "{src:?}"
         );
-        let mut children: Vec<&Expr> = Vec::new();
-        match &e.kind {
-            ExprKind::Integer(_) | ExprKind::Name(_) => {}
-            ExprKind::Neg(a) => children.push(a),
-            ExprKind::Call(_, name, args) => {
-                check_spans(src, &Expr::new(ExprKind::Name(String::new()), *name), s);
-                children.extend(args);
-            }
-            ExprKind::Add(a, b)
-            | ExprKind::Sub(a, b)
-            | ExprKind::Mul(a, b)
-            | ExprKind::Div(a, b)
-            | ExprKind::Pow(a, b)
-            | ExprKind::Bracket(a, b) => children.extend([&**a, &**b]),
+        if let ExprKind::Call(_, name, _) = &e.kind {
+            assert!(name.start == s.start && name.end < s.end, "{src:?}");
         }
-        for c in children {
-            check_spans(src, c, s);
+        let mut start = s.start;
+        for kid in kids(e) {
+            assert!(start <= kid.span.start, "{src:?}");
+            check_spans(src, kid, s);
+            start = kid.span.end;
         }
     }
 
@@ -105,46 +108,37 @@ mod tests {
                 "3/4*x^-2 - 7*y^(-3)",
                 "(- (* (/ 3 4) (^ x (- 2))) (* 7 (^ y (- 3))))",
             ),
-            ("(a+b)*(c-d)", "(* (+ a b) (- c d))"),
             ("a - (b - c)", "(- a (- b c))"),
             ("cos(theta)^2", "(^ (cos theta) 2)"),
             ("f(a, b+1, g(c))", "(f a (+ b 1) (g c))"),
-            ("exp(-i*2*theta)", "(exp (* (* (- i) 2) theta))"),
-            ("{L, G1} + G2", "(+ {L G1} G2)"),
-            ("{x^2, {a, b}}*2", "(* {(^ x 2) {a b}} 2)"),
+            ("{L, G1} + G2", "(+ ({} L G1) G2)"),
+            ("{x^2, {a, b}}*2", "(* ({} (^ x 2) ({} a b)) 2)"),
             ("p_x^2/(2*M)", "(/ (^ p_x 2) (* 2 M))"),
             (
                 "123456789012345678901234567890",
                 "123456789012345678901234567890",
             ),
-        ];
-        for (src, want) in cases {
-            assert_eq!(parse(src), want, "{src}");
-        }
-        assert_eq!(
-            parse("(p_x - M*omega*y)*cos(theta) + (p_y + M*omega*x)*sin(theta)"),
-            "(+ (* (- p_x (* (* M omega) y)) (cos theta)) (* (+ p_y (* (* M omega) x)) (sin theta)))"
-        );
-        assert_eq!(
-            parse("(p_x + i*p_y + i*M*omega*(x + i*y))^3 * exp(-i*2*theta)"),
-            "(* (^ (+ (+ p_x (* i p_y)) (* (* (* i M) omega) (+ x (* i y)))) 3) \
-             (exp (* (* (- i) 2) theta)))"
-        );
-    }
-
-    #[test]
-    fn unicode_names_operators_and_superscripts() {
-        let cases = [
+            (
+                "(p_x - M*omega*y)*cos(theta)",
+                "(* (- p_x (* (* M omega) y)) (cos theta))",
+            ),
+            (
+                "(p_x + i*p_y)^3 * exp(-i*2*θ)",
+                "(* (^ (+ p_x (* i p_y)) 3) (exp (* (* (- i) 2) θ)))",
+            ),
+            // Unicode names, operators and superscripts.
             ("ω²", "(^ ω 2)"),
             ("M⁻¹", "(^ M (- 1))"),
             ("ω¹⁰ + x⁰", "(+ (^ ω 10) (^ x 0))"),
             ("-x²", "(- (^ x 2))"),
             ("(x+y)³", "(^ (+ x y) 3)"),
             ("x^y²", "(^ x (^ y 2))"),
-            ("a − b · c × d ⋅ e ÷ f", "(- a (/ (* (* (* b c) d) e) f))"),
+            (
+                "a − b · c × d ⋅ e ∗ g ÷ f",
+                "(- a (/ (* (* (* (* b c) d) e) g) f))",
+            ),
             ("p_θ²/(2·I) + α₁", "(+ (/ (^ p_θ 2) (* 2 I)) α₁)"),
             ("\u{3000}x\u{a0}+\ty\n", "(+ x y)"),
-            ("_x1", "_x1"),
         ];
         for (src, want) in cases {
             assert_eq!(parse(src), want, "{src}");
@@ -156,184 +150,75 @@ mod tests {
         let src = "2*cos(theta)^2 + {ω, x⁻¹}";
         let e = parse_expr(src).unwrap();
         check_spans(src, &e, Span::new(0, src.len()));
-        let text = |s: Span| &src[s.start..s.end];
-        assert_eq!(text(e.span), src);
-        let ExprKind::Add(lhs, rhs) = &e.kind else {
-            panic!()
+        let text = |e: &Expr| &src[e.span.start..e.span.end];
+        let call = kids(kids(kids(&e)[0])[1])[0];
+        assert_eq!((text(call), call.span), ("cos(theta)", Span::new(2, 12)));
+        let ExprKind::Call(_, name, _) = &call.kind else {
+            panic!("not a call")
         };
-        let ExprKind::Mul(_, pow) = &lhs.kind else {
-            panic!()
-        };
-        let ExprKind::Pow(call, _) = &pow.kind else {
-            panic!()
-        };
-        assert_eq!(text(call.span), "cos(theta)");
-        let ExprKind::Call(_, name, args) = &call.kind else {
-            panic!()
-        };
-        assert_eq!((text(*name), text(args[0].span)), ("cos", "theta"));
-        assert_eq!(call.span, Span::new(2, 12));
-        let ExprKind::Bracket(_, g) = &rhs.kind else {
-            panic!()
-        };
-        let ExprKind::Pow(_, exponent) = &g.kind else {
-            panic!()
-        };
-        assert_eq!((text(g.span), text(exponent.span)), ("x⁻¹", "⁻¹"));
-        let ExprKind::Neg(one) = &exponent.kind else {
-            panic!()
-        };
-        assert_eq!(text(one.span), "¹");
-        let src = "-(a + b)^ 2";
-        let e = parse_expr(src).unwrap();
-        let ExprKind::Neg(pow) = &e.kind else {
-            panic!()
-        };
-        let ExprKind::Pow(base, _) = &pow.kind else {
-            panic!()
-        };
-        assert_eq!((e.span, base.span), (Span::new(0, 11), Span::new(1, 8)));
+        assert_eq!(&src[name.start..name.end], "cos");
+        let x_inv = kids(kids(&e)[1])[1];
+        let exponent = kids(x_inv)[1];
+        assert_eq!(
+            (text(x_inv), text(exponent), text(kids(exponent)[0])),
+            ("x⁻¹", "⁻¹", "¹")
+        );
+        // Parenthesized expressions include their parentheses.
+        let e = parse_expr("-(a + b)^ 2").unwrap();
+        assert_eq!(
+            (e.span, kids(kids(&e)[0])[0].span),
+            (Span::new(0, 11), Span::new(1, 8))
+        );
     }
+
+    /// Rejected inputs with the expected (line, column) and message.
+    #[rustfmt::skip]
+    const REJECTED: &[(&str, (usize, usize), &str)] = &[
+        ("", (1, 1), "expected an expression, found end of input"),
+        (" \n ", (1, 1), "expected an expression, found end of input"),
+        ("x^", (1, 3), "expected an expression after '^', found end of input"),
+        ("1 +", (1, 4), "expected an expression after '+', found end of input"),
+        ("x**", (1, 4), "expected an expression after '**', found end of input"),
+        ("1 + * 2", (1, 5), "expected an expression after '+', found '*'"),
+        ("*x", (1, 1), "expected an expression, found '*'"),
+        ("x+²", (1, 3), "expected an expression after '+', found superscript '²'"),
+        ("cos(x", (1, 6), "expected ')' to close '(' opened at column 4, found end of input"),
+        ("(1+x", (1, 5), "expected ')' to close '(' opened at column 1, found end of input"),
+        ("f(x}", (1, 4), "expected ')' to close '(' opened at column 2, found '}'"),
+        ("cos()", (1, 5), "expected an expression after '(', found ')'"),
+        ("x $ y", (1, 3), "unexpected character '$'"),
+        ("θ ∂ y", (1, 3), "unexpected character '∂'"),
+        ("2x", (1, 2), "expected an operator such as '*' between '2' and 'x'"),
+        ("(a+b)(a-b)", (1, 6), "expected an operator such as '*' between ')' and '('"),
+        ("x^2 y", (1, 5), "expected an operator such as '*' between '2' and 'y'"),
+        ("(2 cos(x))", (1, 4), "expected an operator such as '*' between '2' and 'cos'"),
+        ("1.5", (1, 1), "decimal numbers are not exact; write a fraction such as 3/2"),
+        ("x + .25", (1, 5), "decimal numbers are not exact; write a fraction such as 3/2"),
+        (".", (1, 1), "unexpected character '.'"),
+        ("{f g}", (1, 4), "expected ',' between the two arguments of a bracket {f, g}, found 'g'"),
+        ("{f}", (1, 3), "expected ',' between the two arguments of a bracket {f, g}, found '}'"),
+        ("{f, g, h}", (1, 6), "a bracket {f, g} takes exactly two arguments; \
+                               expected '}' to close '{' opened at column 1, found ','"),
+        ("{f, g", (1, 6), "expected '}' to close '{' opened at column 1, found end of input"),
+        (")", (1, 1), "unexpected ')'"),
+        ("x)", (1, 2), "unexpected ')'"),
+        ("a, b", (1, 2), "unexpected ','"),
+        ("x⁻", (1, 2), "expected superscript digits such as '¹' after superscript minus '⁻'"),
+        ("x\n  + (y\n  * z", (3, 6),
+            "expected ')' to close '(' opened at line 2, column 5, found end of input"),
+        ("x +\n\n  2 y", (3, 5), "expected an operator such as '*' between '2' and 'y'"),
+        ("α +\n β ·\n\n", (2, 5), "expected an expression after '·', found end of input"),
+        ("abcdefghijklmnopqrstuvwxyz 1", (1, 28),
+            "expected an operator such as '*' between 'abcdefghijklmnopqrst…' and '1'"),
+    ];
 
     #[test]
     fn rejected_inputs() {
-        let cases: &[(&str, &str, (usize, usize))] = &[
-            ("", "expected an expression, found end of input", (1, 1)),
-            ("   ", "expected an expression, found end of input", (1, 4)),
-            (
-                "x^",
-                "expected an expression after '^', found end of input",
-                (1, 3),
-            ),
-            (
-                "1 +",
-                "expected an expression after '+', found end of input",
-                (1, 4),
-            ),
-            (
-                "x**",
-                "expected an expression after '**', found end of input",
-                (1, 4),
-            ),
-            (
-                "1 + * 2",
-                "expected an expression after '+', found '*'",
-                (1, 5),
-            ),
-            ("*x", "expected an expression, found '*'", (1, 1)),
-            (
-                "x+²",
-                "expected an expression after '+', found superscript '²'",
-                (1, 3),
-            ),
-            (
-                "cos(x",
-                "expected ')' to close '(' opened at column 4, found end of input",
-                (1, 6),
-            ),
-            (
-                "(1+x",
-                "expected ')' to close '(' opened at column 1, found end of input",
-                (1, 5),
-            ),
-            (
-                "f(x}",
-                "expected ')' to close '(' opened at column 2, found '}'",
-                (1, 4),
-            ),
-            (
-                "cos()",
-                "expected an expression after '(', found ')'",
-                (1, 5),
-            ),
-            ("x $ y", "unexpected character '$'", (1, 3)),
-            ("θ ∂ y", "unexpected character '∂'", (1, 3)),
-            (
-                "2x",
-                "expected an operator such as '*' between '2' and 'x'",
-                (1, 2),
-            ),
-            (
-                "(a+b)(a-b)",
-                "expected an operator such as '*' between ')' and '('",
-                (1, 6),
-            ),
-            (
-                "x^2 y",
-                "expected an operator such as '*' between '2' and 'y'",
-                (1, 5),
-            ),
-            (
-                "(2 cos(x))",
-                "expected an operator such as '*' between '2' and 'cos'",
-                (1, 4),
-            ),
-            (
-                "1.5",
-                "decimal numbers are not exact; write a fraction such as 3/2",
-                (1, 1),
-            ),
-            (
-                "x + .25",
-                "decimal numbers are not exact; write a fraction such as 3/2",
-                (1, 5),
-            ),
-            (".", "unexpected character '.'", (1, 1)),
-            (
-                "{f g}",
-                "expected ',' between the two arguments of a bracket {f, g}, found 'g'",
-                (1, 4),
-            ),
-            (
-                "{f}",
-                "expected ',' between the two arguments of a bracket {f, g}, found '}'",
-                (1, 3),
-            ),
-            (
-                "{f, g, h}",
-                "a bracket {f, g} takes exactly two arguments; \
-                 expected '}' to close '{' opened at column 1, found ','",
-                (1, 6),
-            ),
-            (
-                "{f, g",
-                "expected '}' to close '{' opened at column 1, found end of input",
-                (1, 6),
-            ),
-            (")", "unexpected ')'", (1, 1)),
-            ("x)", "unexpected ')'", (1, 2)),
-            ("a, b", "unexpected ','", (1, 2)),
-            (
-                "x⁻",
-                "expected superscript digits such as '¹' after superscript minus '⁻'",
-                (1, 2),
-            ),
-            (
-                "x\n  + (y\n  * z",
-                "expected ')' to close '(' opened at line 2, column 5, found end of input",
-                (3, 6),
-            ),
-            (
-                "x +\n\n  2 y",
-                "expected an operator such as '*' between '2' and 'y'",
-                (3, 5),
-            ),
-            (
-                "α +\n β ·\n",
-                "expected an expression after '·', found end of input",
-                (3, 1),
-            ),
-            (
-                "abcdefghijklmnopqrstuvwxyz 1",
-                "expected an operator such as '*' between 'abcdefghijklmnopqrst…' and '1'",
-                (1, 28),
-            ),
-        ];
-        for &(src, message, line_col) in cases {
+        for &(src, line_col, message) in REJECTED {
             let err = parse_expr(src).expect_err(src);
             assert_eq!(
-                (err.message.as_str(), err.line_col(src)),
-                (message, line_col),
+                (err.line_col(src), err.message.as_str()),
+                (line_col, message),
                 "{src:?}"
             );
         }
@@ -345,74 +230,68 @@ mod tests {
         let want = "line 1, column 3: expected an expression after '^', found end of input";
         assert_eq!(err.render("x^"), format!("{want}\n  x^\n    ^"));
         let src = "a +\n\tθ $ b";
-        let err = parse_expr(src).unwrap_err();
-        assert_eq!(
-            err.render(src),
-            "line 2, column 4: unexpected character '$'\n  \tθ $ b\n  \t  ^"
-        );
+        let want = "line 2, column 4: unexpected character '$'\n  \tθ $ b\n  \t  ^";
+        assert_eq!(parse_expr(src).unwrap_err().render(src), want);
         let src = "1 + 12.75*x";
         let err = parse_expr(src).unwrap_err();
         assert!(err.render(src).ends_with("\n  1 + 12.75*x\n      ^^^^^"));
         assert_eq!(err.to_string(), err.message);
-        // Out-of-range or mid-character spans never panic.
-        assert_eq!(
-            ParseError::new(Span::new(99, 2), "m").render("é"),
-            "line 1, column 2: m\n  é\n   ^"
-        );
+        // Out-of-range or mid-character spans do not panic.
+        let err = ParseError::new(Span::new(99, 2), "m");
+        assert_eq!(err.render("é"), "line 1, column 2: m\n  é\n   ^");
         assert_eq!(ParseError::new(Span::new(1, 1), "m").line_col("é"), (1, 1));
     }
 
     #[test]
-    fn nesting_limit() {
-        let nested = |n: usize| format!("{}x{}", "(".repeat(n), ")".repeat(n));
-        assert_eq!(parse(&nested(MAX_DEPTH)), "x");
-        let too_deep = "expression nested too deeply (more than 256 levels)";
-        for src in [
-            nested(MAX_DEPTH + 1),
+    fn nesting_and_height_limits() {
+        let nest = |n: usize, inner: &str| format!("{}{inner}{}", "(".repeat(n), ")".repeat(n));
+        assert_eq!(parse(&nest(MAX_DEPTH, "x")), "x");
+        let bad = [
+            nest(MAX_DEPTH + 1, "x"),
             "(".repeat(100_000),
             "{".repeat(100_000),
             "f(".repeat(100_000),
             "-".repeat(100_000) + "x",
             "x^".repeat(100_000) + "x",
             "(-x^".repeat(100_000),
-        ] {
+        ];
+        for src in bad {
             let err = parse_expr(&src).unwrap_err();
-            assert_eq!(err.message, too_deep);
+            assert_eq!(
+                err.message,
+                "expression nested too deeply (more than 256 levels)"
+            );
         }
         // Long chains are parsed iteratively but make left-deep trees, whose height is limited.
-        let chain = |n: usize, depth: usize| {
-            let inner = vec!["x"; n].join(" + ");
-            format!("{}{inner}{}", "(".repeat(depth), ")".repeat(depth))
-        };
-        let mut sexp_height = 0;
-        let e = parse_expr(&chain(MAX_HEIGHT, MAX_DEPTH)).unwrap();
-        let mut node = &e;
+        let sum = |n: usize| vec!["x"; n].join(" + ");
+        let e = parse_expr(&nest(MAX_DEPTH - 1, &sum(MAX_HEIGHT))).unwrap();
+        let (mut node, mut height) = (&e, 1);
         while let ExprKind::Add(lhs, _) = &node.kind {
-            (node, sexp_height) = (lhs, sexp_height + 1);
+            (node, height) = (lhs, height + 1);
         }
-        assert_eq!(sexp_height + 1, MAX_HEIGHT);
-        for src in [
-            chain(MAX_HEIGHT + 1, MAX_DEPTH),
-            chain(100_000, 0),
-            "2⁻¹".repeat(5000),
-        ] {
+        assert_eq!(height, MAX_HEIGHT);
+        let bad = [
+            nest(MAX_DEPTH - 1, &sum(MAX_HEIGHT + 1)),
+            sum(100_000),
+            format!("x{}", "⁻¹".repeat(3000)),
+        ];
+        for src in bad {
             let err = parse_expr(&src).unwrap_err();
-            assert!(err
-                .message
-                .starts_with("expression too long: more than 4096 levels"));
+            let msg = "expression too long: more than 2048 levels of operations";
+            assert!(err.message.starts_with(msg), "{}", err.message);
         }
     }
 
-    /// Parsing must never panic; successful parses have consistent spans.
+    /// Parsing must never panic; parsed trees have consistent spans, errors valid ones.
     fn check_no_panic(src: &str) {
         match parse_expr(src) {
             Ok(e) => check_spans(src, &e, Span::new(0, src.len())),
             Err(e) => {
-                let _ = e.render(src);
                 assert!(
                     e.span.start <= e.span.end && e.span.end <= src.len(),
                     "{src:?}"
                 );
+                assert!(e.render(src).starts_with("line "));
             }
         }
     }
@@ -439,7 +318,7 @@ mod tests {
         for _ in 0..20_000 {
             let len = (next() % 24) as usize;
             let s: String = (0..len)
-                .map(|_| alphabet[(next() % alphabet.len() as u64) as usize])
+                .map(|_| alphabet[next() as usize % alphabet.len()])
                 .collect();
             check_no_panic(&s);
             let bytes: Vec<u8> = (0..len).map(|_| next() as u8).collect();

@@ -9,19 +9,17 @@ use num_bigint::BigInt;
 use super::error::{line_col, ParseError, Span};
 use super::lexer::{Lexer, Tok, Token};
 
-/// Maximum nesting of parentheses, calls, brackets, unary operators and exponents.
+/// Maximum nesting of parentheses, calls, brackets and operators (the operand of an operator
+/// counts as nested in it, so `(a + (b))` has 2 levels and `a + b*(c^d)` has 4).
 pub const MAX_DEPTH: usize = 256;
 
 /// Maximum height of a parsed tree (a leaf has height 1). Chains such as `a + b + c` are
 /// left-deep, so a sum of `n` terms has height at least `n`; consumers recursing over an [`Expr`]
 /// need stack for this many levels.
-pub const MAX_HEIGHT: usize = 4096;
+pub const MAX_HEIGHT: usize = 2048;
 
 /// Right binding power of unary `-` and `+`.
 const UNARY_BP: u8 = 5;
-
-/// Right binding power of `^` (right associative; its left binding power is one more).
-const POW_RIGHT_BP: u8 = 6;
 
 /// A parsed expression with its span.
 #[derive(Clone, Debug, PartialEq, Eq)]
@@ -34,6 +32,7 @@ pub struct Expr {
 
 impl Expr {
     /// An expression of the given kind at `span`.
+    #[must_use]
     pub fn new(kind: ExprKind, span: Span) -> Self {
         Expr { kind, span }
     }
@@ -65,6 +64,10 @@ pub enum ExprKind {
 }
 
 /// Parses `src`, which must consist of exactly one expression.
+///
+/// # Errors
+///
+/// Returns the first lexical or syntax error in `src` (see [`ParseError::render`] to show it).
 pub fn parse_expr(src: &str) -> Result<Expr, ParseError> {
     let mut lexer = Lexer::new(src);
     let tok = lexer.next_token()?;
@@ -176,25 +179,24 @@ impl Parser<'_> {
         result
     }
 
-    // The functions on the recursive path below (`expr`, `prefix`, `unary`, `paren`, `name`,
-    // `bracket` and their closures) are kept small, with the non-recursive work in helpers, so
-    // that the maximum nesting fits comfortably in a 2 MiB thread stack even in debug builds.
+    // The functions on the recursive path below (`expr`, `rhs`, `prefix`, `unary`, `paren`,
+    // `atom`, `call`, `call_args`, `bracket`) keep few temporaries, with the non-recursive work
+    // in helpers, so that the maximum nesting plus dropping a tree of the maximum height fits in
+    // a 2 MiB thread stack even in debug builds (about 1.4 MiB in the worst case).
 
     /// Parses an expression whose infix operators all bind at least as tightly as `min_bp`.
     fn expr(&mut self, min_bp: u8) -> PResult<Expr> {
         let mut lhs = self.prefix()?;
         let mut height = self.height;
         while let Some(op) = self.operator(&mut lhs, &mut height, min_bp)? {
-            let rhs = self.rhs(&op)?;
-            height = grow(height.max(self.height), op.span)?;
-            lhs = op.apply(lhs, rhs);
+            height = self.rhs(op, &mut lhs, height)?;
         }
         self.height = height;
         Ok(lhs)
     }
 
-    /// Applies any superscripts to `lhs` (of height `height`), then consumes and returns the next binary operator if
-    /// it binds at least as tightly as `min_bp`.
+    /// Applies any superscripts to `lhs` (of height `height`), then consumes and returns the next
+    /// binary operator if it binds at least as tightly as `min_bp`.
     fn operator(
         &mut self,
         lhs: &mut Expr,
@@ -204,34 +206,38 @@ impl Parser<'_> {
         // Superscripts bind like `^`, more tightly than any `min_bp`.
         while matches!(self.tok.tok, Tok::Sup { .. }) {
             *height = grow((*height).max(2), self.tok.span)?;
-            let placeholder = Expr::new(ExprKind::Integer(BigInt::default()), lhs.span);
-            let base = std::mem::replace(lhs, placeholder);
-            *lhs = self.superscript(base)?;
+            let exponent = self.superscript()?;
+            map_in_place(lhs, |base| {
+                let span = base.span.to(exponent.span);
+                Expr::new(ExprKind::Pow(Box::new(base), Box::new(exponent)), span)
+            });
         }
         self.binary_op(min_bp)
     }
 
-    /// Parses the right operand of `op`.
-    fn rhs(&mut self, op: &BinOp) -> PResult<Expr> {
-        if op.right_bp == POW_RIGHT_BP {
-            self.nested(op.span, |p| p.expr(POW_RIGHT_BP))
-        } else {
-            self.expr(op.right_bp)
-        }
+    /// Parses the right operand of `op` and replaces `lhs` (of height `height`) by `lhs op rhs`,
+    /// returning the new height.
+    fn rhs(&mut self, op: BinOp, lhs: &mut Expr, height: usize) -> PResult<usize> {
+        let rhs = self.nested(op.span, |p| p.expr(op.right_bp))?;
+        let height = grow(height.max(self.height), op.span)?;
+        map_in_place(lhs, |lhs| {
+            let span = lhs.span.to(rhs.span);
+            Expr::new((op.make)(Box::new(lhs), Box::new(rhs)), span)
+        });
+        Ok(height)
     }
 
     /// Consumes the current token if it is a binary operator binding at least as tightly as
     /// `min_bp`.
     fn binary_op(&mut self, min_bp: u8) -> PResult<Option<BinOp>> {
-        let (left_bp, right_bp, make): (u8, u8, fn(Box<Expr>, Box<Expr>) -> ExprKind) =
-            match self.tok.tok {
-                Tok::Plus => (1, 2, ExprKind::Add),
-                Tok::Minus => (1, 2, ExprKind::Sub),
-                Tok::Star => (3, 4, ExprKind::Mul),
-                Tok::Slash => (3, 4, ExprKind::Div),
-                Tok::Caret => (POW_RIGHT_BP + 1, POW_RIGHT_BP, ExprKind::Pow),
-                _ => return Ok(None),
-            };
+        let (left_bp, right_bp, make): (u8, u8, MakeNode) = match self.tok.tok {
+            Tok::Plus => (1, 2, ExprKind::Add),
+            Tok::Minus => (1, 2, ExprKind::Sub),
+            Tok::Star => (3, 4, ExprKind::Mul),
+            Tok::Slash => (3, 4, ExprKind::Div),
+            Tok::Caret => (7, 6, ExprKind::Pow),
+            _ => return Ok(None),
+        };
         if left_bp < min_bp {
             return Ok(None);
         }
@@ -243,54 +249,29 @@ impl Parser<'_> {
         }))
     }
 
-    /// Consumes a superscript token and applies it as an exponent to `base`.
-    fn superscript(&mut self, base: Expr) -> PResult<Expr> {
-        let Token {
-            tok: Tok::Sup { value, negative },
-            span,
-        } = self.bump()?
-        else {
+    /// Consumes a superscript token and returns its exponent: `Integer` or `Neg(Integer)`.
+    fn superscript(&mut self) -> PResult<Expr> {
+        let Token { tok, span } = self.bump()?;
+        let Tok::Sup { value, negative } = tok else {
             unreachable!("current token was a superscript")
         };
-        let digits = Span::new(
-            span.start + if negative { '⁻'.len_utf8() } else { 0 },
-            span.end,
-        );
-        let mut exponent = Expr::new(ExprKind::Integer(value), digits);
-        if negative {
-            exponent = Expr::new(ExprKind::Neg(Box::new(exponent)), span);
+        if !negative {
+            return Ok(Expr::new(ExprKind::Integer(value), span));
         }
-        let span = base.span.to(span);
-        Ok(Expr::new(
-            ExprKind::Pow(Box::new(base), Box::new(exponent)),
-            span,
-        ))
+        let digits = Span::new(span.start + '⁻'.len_utf8(), span.end);
+        Ok(negate(span, Expr::new(ExprKind::Integer(value), digits)))
     }
 
     /// Parses an operand: a literal, name, call, parenthesized expression, bracket or unary
     /// operator applied to an operand.
     fn prefix(&mut self) -> PResult<Expr> {
         match self.tok.tok {
-            Tok::Int(_) => self.integer(),
-            Tok::Name(_) => self.name(),
+            Tok::Int(_) | Tok::Name(_) => self.atom(),
             Tok::Minus | Tok::Plus => self.unary(),
             Tok::LParen => self.paren(),
             Tok::LBrace => self.bracket(),
             _ => Err(self.expected_operand()),
         }
-    }
-
-    /// Parses an integer literal.
-    fn integer(&mut self) -> PResult<Expr> {
-        let Token {
-            tok: Tok::Int(n),
-            span,
-        } = self.bump()?
-        else {
-            unreachable!("current token was an integer")
-        };
-        self.height = 1;
-        Ok(Expr::new(ExprKind::Integer(n), span))
     }
 
     /// Parses a unary minus or plus and its operand.
@@ -318,20 +299,15 @@ impl Parser<'_> {
         Ok(inner)
     }
 
-    /// Parses a name, or a call if the name is followed by `(`.
-    fn name(&mut self) -> PResult<Expr> {
-        let Token {
-            tok: Tok::Name(name),
-            span,
-        } = self.bump()?
-        else {
-            unreachable!("current token was a name")
-        };
-        if self.tok.tok == Tok::LParen {
-            self.call(name, span)
-        } else {
-            self.height = 1;
-            Ok(Expr::new(ExprKind::Name(name), span))
+    /// Parses an integer, a name, or a call if the name is followed by `(`.
+    fn atom(&mut self) -> PResult<Expr> {
+        let Token { tok, span } = self.bump()?;
+        self.height = 1;
+        match tok {
+            Tok::Name(name) if self.tok.tok == Tok::LParen => self.call(name, span),
+            Tok::Name(name) => Ok(Expr::new(ExprKind::Name(name), span)),
+            Tok::Int(n) => Ok(Expr::new(ExprKind::Integer(n), span)),
+            _ => unreachable!("atom() is only called on integers and names"),
         }
     }
 
@@ -411,19 +387,20 @@ impl Parser<'_> {
     }
 }
 
+/// Constructor of a binary node, such as `ExprKind::Add`.
+type MakeNode = fn(Box<Expr>, Box<Expr>) -> ExprKind;
+
 /// A binary operator that has been consumed.
 struct BinOp {
-    make: fn(Box<Expr>, Box<Expr>) -> ExprKind,
+    make: MakeNode,
     span: Span,
     right_bp: u8,
 }
 
-impl BinOp {
-    /// The node `lhs op rhs`.
-    fn apply(self, lhs: Expr, rhs: Expr) -> Expr {
-        let span = lhs.span.to(rhs.span);
-        Expr::new((self.make)(Box::new(lhs), Box::new(rhs)), span)
-    }
+/// Replaces `e` by `f(e)`.
+fn map_in_place(e: &mut Expr, f: impl FnOnce(Expr) -> Expr) {
+    let placeholder = Expr::new(ExprKind::Integer(BigInt::default()), e.span);
+    *e = f(std::mem::replace(e, placeholder));
 }
 
 /// The negation of `operand`, with the minus sign at `minus`.

@@ -1,0 +1,129 @@
+//! Phase spaces: canonical pairs `(q, p)`, planar or angular, and the Poisson bracket
+//! `{f, g} = Σ_i (∂f/∂q_i ∂g/∂p_i − ∂f/∂p_i ∂g/∂q_i)`, so `{q, p} = 1` and `{f, H} = df/dt`.
+
+use std::sync::Arc;
+
+use trigpoly::{Expr, Var, VarKind, VarSet};
+
+use crate::error::EngineError;
+
+/// A canonical pair: a coordinate (or angle) and its momentum.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct CanonicalPair {
+    /// The coordinate `q` (an angle for an angular pair).
+    pub q: Var,
+    /// The momentum `p`.
+    pub p: Var,
+}
+
+/// A phase space: variables and the canonical pairs among them; the other variables are
+/// parameters (constants under the flow).
+///
+/// ```
+/// use brackets::PhaseSpace;
+/// use trigpoly::{Expr, VarSet};
+/// let vars = VarSet::builder().coordinate("x").momentum("p_x").build().unwrap();
+/// let space = PhaseSpace::new(&vars, &[("x", "p_x")]).unwrap();
+/// let x = Expr::parse(&vars, "x").unwrap();
+/// let p = Expr::parse(&vars, "p_x").unwrap();
+/// assert_eq!(space.bracket(&x, &p).unwrap(), Expr::one(&vars));
+/// ```
+#[derive(Clone, Debug)]
+pub struct PhaseSpace {
+    vars: Arc<VarSet>,
+    pairs: Vec<CanonicalPair>,
+}
+
+impl PhaseSpace {
+    /// A phase space from pairs of names `(q, p)`. A `q` declared as an angle makes an angular
+    /// pair; `p` must be a momentum.
+    pub fn new(vars: &Arc<VarSet>, pairs: &[(&str, &str)]) -> Result<Self, EngineError> {
+        let find = |n: &str| {
+            vars.lookup(n).ok_or_else(|| {
+                EngineError::Invalid(format!("unknown variable '{n}' in a canonical pair"))
+            })
+        };
+        let mut out = Vec::new();
+        for &(q, p) in pairs {
+            let (qv, pv) = (find(q)?, find(p)?);
+            let qk = vars.variable(qv).kind();
+            if !matches!(qk, VarKind::Coordinate | VarKind::Angle) {
+                return Err(EngineError::Invalid(format!(
+                    "'{q}' must be a coordinate or an angle"
+                )));
+            }
+            if vars.variable(pv).kind() != VarKind::Momentum {
+                return Err(EngineError::Invalid(format!("'{p}' must be a momentum")));
+            }
+            if out
+                .iter()
+                .any(|c: &CanonicalPair| [c.q, c.p].iter().any(|&v| v == qv || v == pv))
+            {
+                return Err(EngineError::Invalid(format!(
+                    "'{q}' or '{p}' is in two canonical pairs"
+                )));
+            }
+            out.push(CanonicalPair { q: qv, p: pv });
+        }
+        Ok(PhaseSpace {
+            vars: vars.clone(),
+            pairs: out,
+        })
+    }
+
+    /// The variables.
+    pub fn vars(&self) -> &Arc<VarSet> {
+        &self.vars
+    }
+
+    /// The canonical pairs.
+    pub fn pairs(&self) -> &[CanonicalPair] {
+        &self.pairs
+    }
+
+    /// The phase-space coordinates in the order `q_1, …, q_n, p_1, …, p_n`.
+    pub fn coordinates(&self) -> Vec<Var> {
+        self.pairs
+            .iter()
+            .map(|c| c.q)
+            .chain(self.pairs.iter().map(|c| c.p))
+            .collect()
+    }
+
+    /// Whether `v` is a phase-space variable (not a parameter).
+    pub fn is_phase_variable(&self, v: Var) -> bool {
+        self.pairs.iter().any(|c| c.q == v || c.p == v)
+    }
+
+    // {f, g} = Σ_i (∂f/∂q_i ∂g/∂p_i − ∂f/∂p_i ∂g/∂q_i)
+    /// The Poisson bracket `{f, g}`.
+    pub fn bracket(&self, f: &Expr, g: &Expr) -> Result<Expr, EngineError> {
+        let mut acc = Expr::zero(&self.vars);
+        for c in &self.pairs {
+            let fq = f.derivative(c.q)?;
+            let gp = g.derivative(c.p)?;
+            if !fq.is_zero() && !gp.is_zero() {
+                acc = acc.checked_add(&fq.checked_mul(&gp)?)?;
+            }
+            let fp = f.derivative(c.p)?;
+            let gq = g.derivative(c.q)?;
+            if !fp.is_zero() && !gq.is_zero() {
+                acc = acc.checked_sub(&fp.checked_mul(&gq)?)?;
+            }
+        }
+        Ok(acc)
+    }
+
+    /// Hamilton's vector field of `h`: `(q̇_i, ṗ_i) = (∂h/∂p_i, −∂h/∂q_i)` for each pair, in the
+    /// order of [`PhaseSpace::coordinates`].
+    pub fn hamilton_equations(&self, h: &Expr) -> Result<Vec<(Var, Expr)>, EngineError> {
+        let mut out = Vec::new();
+        for c in &self.pairs {
+            out.push((c.q, h.derivative(c.p)?));
+        }
+        for c in &self.pairs {
+            out.push((c.p, -h.derivative(c.q)?));
+        }
+        Ok(out)
+    }
+}

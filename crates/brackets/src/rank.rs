@@ -1,0 +1,172 @@
+//! Functional independence: the exact rank of the Jacobian `∂(F_1, …, F_k)/∂(q, p)` over the
+//! field of rational functions, with certificates: a nonzero minor at an exact rational point
+//! for the lower bound; for the upper bound, the size of the matrix or every larger minor
+//! vanishing identically.
+
+use std::collections::HashMap;
+
+use itertools::Itertools;
+use trigpoly::{Expr, GaussianRational, Point, Rational, Var, VarKind};
+
+use crate::error::EngineError;
+use crate::linalg::Matrix;
+use crate::phase::PhaseSpace;
+
+/// Why the rank is at most what is claimed.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub enum UpperBound {
+    /// The rank equals the number of functions or of coordinates.
+    Size,
+    /// Every `(r+1) × (r+1)` minor is identically zero (this many of them were expanded).
+    VanishingMinors {
+        /// How many minors were expanded.
+        count: usize,
+    },
+}
+
+/// A certified rank.
+#[derive(Clone, Debug)]
+pub struct RankCertificate {
+    /// The rank.
+    pub rank: usize,
+    /// Indices of the functions of the nonzero minor.
+    pub minor_rows: Vec<usize>,
+    /// The coordinates of the nonzero minor.
+    pub minor_cols: Vec<Var>,
+    /// The exact point: a value for each variable (angles as `cos + i sin`).
+    pub point: Vec<(Var, GaussianRational)>,
+    /// The minor's value there (nonzero).
+    pub minor_value: GaussianRational,
+    /// The upper bound's certificate.
+    pub upper: UpperBound,
+}
+
+/// Rational points of the unit circle used for angles.
+const CIRCLE: [(i64, i64, i64); 4] = [(3, 4, 5), (5, 12, 13), (8, 15, 17), (7, 24, 25)];
+/// Distinct primes: the `k`-th variable at the `s`-th point is `(p_k + 2s)/(1 + k mod 3)`.
+const PRIMES: [i64; 16] = [2, 3, 5, 7, 11, 13, 17, 19, 23, 29, 31, 37, 41, 43, 47, 53];
+
+/// Certifies the rank of the Jacobian of `functions` by the phase-space coordinates.
+pub fn rank(space: &PhaseSpace, functions: &[Expr]) -> Result<RankCertificate, EngineError> {
+    let vars = space.vars().clone();
+    let coords = space.coordinates();
+    let jac: Vec<Vec<Expr>> = functions
+        .iter()
+        .map(|f| {
+            coords
+                .iter()
+                .map(|&c| f.derivative(c))
+                .collect::<Result<Vec<_>, _>>()
+        })
+        .collect::<Result<_, _>>()?;
+    // Lower bound: the best rank over a few exact points.
+    let mut best: Option<RankCertificate> = None;
+    for shift in 0..4 {
+        let mut point = Point::new(&vars);
+        let mut values = Vec::new();
+        for (k, v) in vars.vars().enumerate() {
+            if vars.variable(v).kind() == VarKind::Angle {
+                let (c, s, r) = CIRCLE[(k + shift) % CIRCLE.len()];
+                point = point.with_angle(v, Rational::new(c, r), Rational::new(s, r))?;
+            } else {
+                let a = PRIMES[k % PRIMES.len()] + (k / PRIMES.len()) as i64 + 2 * shift as i64;
+                point = point.with(v, Rational::new(a, 1 + (k % 3) as i64));
+            }
+            values.push((v, point.value(v).expect("just set").clone()));
+        }
+        let mut m = Matrix::zeros(functions.len(), coords.len());
+        for (i, row) in jac.iter().enumerate() {
+            for (j, e) in row.iter().enumerate() {
+                m.set(i, j, e.eval(&point)?);
+            }
+        }
+        let red = m.reduce();
+        let r = red.pivot_cols.len();
+        if best.as_ref().is_none_or(|b| r > b.rank) {
+            let mut rows = red.pivot_rows.clone();
+            rows.sort_unstable();
+            let cols = red.pivot_cols.clone();
+            let mut minor = Matrix::zeros(r, r);
+            for (a, &i) in rows.iter().enumerate() {
+                for (b, &j) in cols.iter().enumerate() {
+                    minor.set(a, b, m.get(i, j).clone());
+                }
+            }
+            best = Some(RankCertificate {
+                rank: r,
+                minor_rows: rows,
+                minor_cols: cols.iter().map(|&j| coords[j]).collect(),
+                point: values,
+                minor_value: minor.determinant(),
+                upper: UpperBound::Size,
+            });
+        }
+    }
+    let mut cert = best.expect("at least one point");
+    let r = cert.rank;
+    if r < functions.len().min(coords.len()) {
+        let mut count = 0;
+        for rows in (0..functions.len()).combinations(r + 1) {
+            for cols in (0..coords.len()).combinations(r + 1) {
+                count += 1;
+                let d = symbolic_det(&jac, &rows, &cols)?;
+                if !d.is_zero() {
+                    return Err(EngineError::Invalid(format!(
+                        "rank is above {r} (a {}-minor is not identically zero) although no \
+                         sampled point showed it; try other points",
+                        r + 1
+                    )));
+                }
+            }
+        }
+        cert.upper = UpperBound::VanishingMinors { count };
+    }
+    Ok(cert)
+}
+
+/// The determinant of the submatrix `rows × cols`, by Laplace expansion with memoised minors.
+pub fn symbolic_det(
+    jac: &[Vec<Expr>],
+    rows: &[usize],
+    cols: &[usize],
+) -> Result<Expr, EngineError> {
+    let vars = jac[0][0].vars().clone();
+    let mut memo: HashMap<(usize, u64), Expr> = HashMap::new();
+    fn go(
+        jac: &[Vec<Expr>],
+        rows: &[usize],
+        cols: &[usize],
+        depth: usize,
+        used: u64,
+        memo: &mut HashMap<(usize, u64), Expr>,
+        vars: &std::sync::Arc<trigpoly::VarSet>,
+    ) -> Result<Expr, EngineError> {
+        if depth == rows.len() {
+            return Ok(Expr::one(vars));
+        }
+        if let Some(e) = memo.get(&(depth, used)) {
+            return Ok(e.clone());
+        }
+        let mut acc = Expr::zero(vars);
+        let mut sign_positive = true;
+        for (k, &c) in cols.iter().enumerate() {
+            if used & (1 << k) != 0 {
+                continue;
+            }
+            let entry = &jac[rows[depth]][c];
+            if !entry.is_zero() {
+                let sub = go(jac, rows, cols, depth + 1, used | (1 << k), memo, vars)?;
+                let t = entry.checked_mul(&sub)?;
+                acc = if sign_positive {
+                    acc.checked_add(&t)?
+                } else {
+                    acc.checked_sub(&t)?
+                };
+            }
+            sign_positive = !sign_positive;
+        }
+        memo.insert((depth, used), acc.clone());
+        Ok(acc)
+    }
+    go(jac, rows, cols, 0, 0, &mut memo, &vars)
+}

@@ -1,0 +1,151 @@
+//! `System`: a phase space, a Hamiltonian and named functions, with a parser that knows the
+//! names and the bracket `{f, g}`.
+
+use std::sync::Arc;
+
+use trigpoly::{Context, Expr, GaussianRational, Var, VarSet};
+
+use crate::error::EngineError;
+use crate::phase::PhaseSpace;
+
+/// A named function of a system (`L`, `G1`, `Z̄`).
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct NamedFunction {
+    /// The ASCII name used in expressions (`Zbar`).
+    pub name: String,
+    /// The name as printed (`Z̄`).
+    pub display: String,
+    /// The function.
+    pub expr: Expr,
+}
+
+/// A Hamiltonian system: phase space, Hamiltonian `H`, and named functions.
+///
+/// ```
+/// use brackets::systems;
+/// let rotor = systems::harmonic_rotor();
+/// let table = rotor.parse("{L, G1} + G2").unwrap();
+/// assert!(table.is_zero());
+/// ```
+#[derive(Clone, Debug)]
+pub struct System {
+    name: String,
+    space: PhaseSpace,
+    functions: Vec<NamedFunction>,
+}
+
+impl System {
+    /// A system with Hamiltonian `h`, available under the name `H`.
+    pub fn new(name: &str, space: PhaseSpace, h: Expr) -> Self {
+        let mut s = System {
+            name: name.to_string(),
+            space,
+            functions: Vec::new(),
+        };
+        s.define("H", "H", h);
+        s
+    }
+
+    /// The system's name.
+    pub fn name(&self) -> &str {
+        &self.name
+    }
+
+    /// The phase space.
+    pub fn space(&self) -> &PhaseSpace {
+        &self.space
+    }
+
+    /// The variables.
+    pub fn vars(&self) -> &Arc<VarSet> {
+        self.space.vars()
+    }
+
+    /// The Hamiltonian.
+    pub fn hamiltonian(&self) -> &Expr {
+        &self.functions[0].expr
+    }
+
+    /// Defines (or redefines) a named function.
+    pub fn define(&mut self, name: &str, display: &str, expr: Expr) {
+        let f = NamedFunction {
+            name: name.into(),
+            display: display.into(),
+            expr,
+        };
+        match self.functions.iter_mut().find(|g| g.name == name) {
+            Some(g) => *g = f,
+            None => self.functions.push(f),
+        }
+    }
+
+    /// Defines a named function from text, which may use earlier names and brackets.
+    pub fn define_parsed(
+        &mut self,
+        name: &str,
+        display: &str,
+        src: &str,
+    ) -> Result<(), EngineError> {
+        let e = self.parse(src)?;
+        self.define(name, display, e);
+        Ok(())
+    }
+
+    /// The named functions, `H` first.
+    pub fn functions(&self) -> &[NamedFunction] {
+        &self.functions
+    }
+
+    /// A named function.
+    pub fn get(&self, name: &str) -> Result<&Expr, EngineError> {
+        self.functions
+            .iter()
+            .find(|f| f.name == name || f.display == name)
+            .map(|f| &f.expr)
+            .ok_or_else(|| EngineError::UnknownName(name.to_string()))
+    }
+
+    /// The display name of a named function (the name itself if unknown).
+    pub fn display_name<'a>(&'a self, name: &'a str) -> &'a str {
+        self.functions
+            .iter()
+            .find(|f| f.name == name || f.display == name)
+            .map_or(name, |f| f.display.as_str())
+    }
+
+    /// A variable by name. Panics if it is not declared (a bug in a built-in system).
+    pub fn var(&self, name: &str) -> Var {
+        self.vars()
+            .lookup(name)
+            .unwrap_or_else(|| panic!("variable {name} is not declared"))
+    }
+
+    /// Parses an expression in the system's variables, named functions and brackets.
+    pub fn parse(&self, src: &str) -> Result<Expr, EngineError> {
+        Expr::parse_with(self.vars(), src, self).map_err(|e| EngineError::parse(src, e))
+    }
+
+    /// `{f, g}`.
+    pub fn bracket(&self, f: &Expr, g: &Expr) -> Result<Expr, EngineError> {
+        self.space.bracket(f, g)
+    }
+
+    /// `df/dt = {f, H}`.
+    pub fn flow(&self, f: &Expr) -> Result<Expr, EngineError> {
+        self.space.bracket(f, self.hamiltonian())
+    }
+}
+
+impl Context<GaussianRational> for System {
+    fn lookup(&self, name: &str) -> Option<Expr> {
+        self.get(name).ok().cloned()
+    }
+
+    fn bracket(&self, f: &Expr, g: &Expr) -> Result<Expr, String> {
+        self.space.bracket(f, g).map_err(|e| e.to_string())
+    }
+
+    fn names(&self) -> Vec<String> {
+        self.functions.iter().map(|f| f.name.clone()).collect()
+    }
+}

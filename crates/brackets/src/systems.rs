@@ -1,0 +1,204 @@
+//! The paper's systems as values: the rotor on a planar potential, the harmonic rotor (and the
+//! rod `I = ML²/12`), the rotor under gravity, the anisotropic rotor; with their named functions
+//! and the resonant families `K_{m,n} = Z^m e^{−inθ}`.
+
+use std::sync::Arc;
+
+use trigpoly::{Expr, VarSet};
+
+use crate::error::EngineError;
+use crate::phase::PhaseSpace;
+use crate::system::System;
+
+/// The variables of a rotor in the plane: `x, y, θ, p_x, p_y, p_θ` and the given parameters.
+pub fn rotor_vars(parameters: &[&str]) -> Arc<VarSet> {
+    let mut b = VarSet::builder()
+        .coordinate("x")
+        .coordinate("y")
+        .angle("theta")
+        .momentum("p_x")
+        .momentum("p_y")
+        .momentum("p_theta");
+    for p in parameters {
+        b = b.parameter(p);
+    }
+    b.build().expect("the rotor's variables are well formed")
+}
+
+/// A system from source text. Panics on an error: built-in systems are fixed text.
+fn build(name: &str, params: &[&str], h: &str, functions: &[(&str, &str, &str)]) -> System {
+    let vars = rotor_vars(params);
+    let space = PhaseSpace::new(&vars, &[("x", "p_x"), ("y", "p_y"), ("theta", "p_theta")])
+        .expect("canonical pairs of the rotor");
+    let h = Expr::parse(&vars, h).unwrap_or_else(|e| panic!("{}", e.render(h)));
+    let mut s = System::new(name, space, h);
+    for (n, display, src) in functions {
+        s.define_parsed(n, display, src)
+            .unwrap_or_else(|e| panic!("{n}: {e}"));
+    }
+    s
+}
+
+/// `H = (p_x² + p_y²)/(2M) + V(x, y) + p_θ²/(2I)` for a polynomial potential given as text in
+/// `x, y` and the extra parameters.
+pub fn rotor(potential: &str, extra_parameters: &[&str]) -> Result<System, EngineError> {
+    let mut params = vec!["M", "I"];
+    params.extend_from_slice(extra_parameters);
+    let vars = rotor_vars(&params);
+    let space = PhaseSpace::new(&vars, &[("x", "p_x"), ("y", "p_y"), ("theta", "p_theta")])?;
+    let v = Expr::parse(&vars, potential).map_err(|e| EngineError::parse(potential, e))?;
+    let kinetic = Expr::parse(&vars, "(p_x^2 + p_y^2)/(2*M) + p_theta^2/(2*I)")
+        .expect("kinetic energy parses");
+    let mut s = System::new("rotor", space, &kinetic + &v);
+    s.define("V", "V", v);
+    Ok(s)
+}
+
+/// The harmonic rotor `H = (p_x² + p_y²)/(2M) + Mω²(x² + y²)/2 + p_θ²/(2I)` with `F1, F2, L,
+/// G1, G2, Z, Z̄` and `Ω = p_θ/I`.
+pub fn harmonic_rotor() -> System {
+    build(
+        "harmonic rotor",
+        &["M", "omega", "I"],
+        "(p_x^2 + p_y^2)/(2*M) + M*omega^2*(x^2 + y^2)/2 + p_theta^2/(2*I)",
+        &HARMONIC_FUNCTIONS,
+    )
+}
+
+const HARMONIC_FUNCTIONS: [(&str, &str, &str); 8] = [
+    ("F1", "F1", "H"),
+    ("F2", "F2", "p_theta^2/(2*I)"),
+    ("L", "L", "x*p_y - y*p_x"),
+    ("G1", "G1", "p_x*p_y/(2*M) + M*omega^2*x*y/2"),
+    (
+        "G2",
+        "G2",
+        "(p_x^2 - p_y^2)/(2*M) + M*omega^2*(x^2 - y^2)/2",
+    ),
+    ("Z", "Z", "p_x + i*p_y + i*M*omega*(x + i*y)"),
+    ("Zbar", "Z̄", "p_x - i*p_y - i*M*omega*(x - i*y)"),
+    ("Omega", "Ω", "p_theta/I"),
+];
+
+/// The harmonic rod: the harmonic rotor with `I = ML²/12` (`L` the rod's length).
+pub fn harmonic_rod() -> System {
+    build(
+        "harmonic rod",
+        &["M", "omega", "L"],
+        "(p_x^2 + p_y^2)/(2*M) + M*omega^2*(x^2 + y^2)/2 + p_theta^2/(2*(M*L^2/12))",
+        &[],
+    )
+}
+
+/// The harmonic rotor under gravity, `H_g = H + Mgy`, with the unprimed functions of the
+/// harmonic rotor, `y' = y + g/ω²`, and the primed `L', G1', G2', Z', Z̄'`.
+pub fn gravity_rotor() -> System {
+    let mut functions: Vec<(&str, &str, &str)> = HARMONIC_FUNCTIONS.to_vec();
+    functions.extend_from_slice(&[
+        ("yp", "y'", "y + g/omega^2"),
+        ("Lp", "L'", "L - g/omega^2*p_x"),
+        ("G1p", "G1'", "G1 + M*g*x/2"),
+        ("G2p", "G2'", "G2 - M*g*y - M*g^2/(2*omega^2)"),
+        ("Zp", "Z'", "p_x + i*p_y + i*M*omega*(x + i*yp)"),
+        ("Zbarp", "Z̄'", "p_x - i*p_y - i*M*omega*(x - i*yp)"),
+    ]);
+    build(
+        "gravity rotor",
+        &["M", "omega", "I", "g"],
+        "(p_x^2 + p_y^2)/(2*M) + M*omega^2*(x^2 + y^2)/2 + p_theta^2/(2*I) + M*g*y",
+        &functions,
+    )
+}
+
+/// The anisotropic rotor `V = M(ω_x² x² + ω_y² y²)/2` with `ω_x = a·ω`, `ω_y = b·ω`, and its
+/// ladder functions `A_x = p_x + iMω_x x`, `A_y = p_y + iMω_y y` (`{A, H} = iω_A A`), their
+/// conjugates, `H_x`, `H_y`, `F2` and `Ω`.
+pub fn anisotropic_rotor(a: u32, b: u32) -> System {
+    let h =
+        format!("(p_x^2 + p_y^2)/(2*M) + M*omega^2*({a}^2*x^2 + {b}^2*y^2)/2 + p_theta^2/(2*I)");
+    let hx = format!("p_x^2/(2*M) + M*{a}^2*omega^2*x^2/2");
+    let hy = format!("p_y^2/(2*M) + M*{b}^2*omega^2*y^2/2");
+    let ax = format!("p_x + i*M*{a}*omega*x");
+    let ay = format!("p_y + i*M*{b}*omega*y");
+    let axbar = format!("p_x - i*M*{a}*omega*x");
+    let aybar = format!("p_y - i*M*{b}*omega*y");
+    build(
+        &format!("anisotropic rotor {a}:{b}"),
+        &["M", "omega", "I"],
+        &h,
+        &[
+            ("Hx", "H_x", &hx),
+            ("Hy", "H_y", &hy),
+            ("F2", "F2", "p_theta^2/(2*I)"),
+            ("Ax", "A_x", &ax),
+            ("Ay", "A_y", &ay),
+            ("Axbar", "Ā_x", &axbar),
+            ("Aybar", "Ā_y", &aybar),
+            ("Omega", "Ω", "p_theta/I"),
+        ],
+    )
+}
+
+/// The resonant functions built from a ladder function `Z` (with `{Z, H} = iωZ`) and the angle:
+/// `K = Z^m e^{−inθ}`, `K̄ = Z̄^m e^{inθ}`, `P = (K + K̄)/2`, `Q = (K − K̄)/(2i)`.
+#[derive(Clone, Debug)]
+pub struct Resonant {
+    /// `K_{m,n}`.
+    pub k: Expr,
+    /// `K̄_{m,n}`.
+    pub kbar: Expr,
+    /// `P_{m,n}`, real.
+    pub p: Expr,
+    /// `Q_{m,n}`, real.
+    pub q: Expr,
+}
+
+impl System {
+    /// `K_{m,n}, K̄_{m,n}, P_{m,n}, Q_{m,n}` from the named ladder function `ladder` and the
+    /// first angle.
+    pub fn resonant(&self, ladder: &str, m: i64, n: i64) -> Result<Resonant, EngineError> {
+        let z = self.get(ladder)?;
+        let theta = self
+            .vars()
+            .angles()
+            .next()
+            .ok_or_else(|| EngineError::Invalid("the system has no angle".into()))?;
+        let k = z
+            .checked_pow(m)?
+            .checked_mul(&Expr::exp_i(self.vars(), theta, -n)?)?;
+        let kbar = k.conj();
+        let half = trigpoly::Rational::new(1, 2);
+        let p = k.checked_add(&kbar)?.scale_rational(&half);
+        // (K − K̄)/(2i) = −i(K − K̄)/2
+        let q = k.checked_sub(&kbar)?.mul_i()?.scale_rational(&-half);
+        Ok(Resonant { k, kbar, p, q })
+    }
+
+    /// The resonance `p_θ = mIω/n` as a condition.
+    pub fn resonance(&self, m: i64, n: i64) -> Result<crate::claim::Condition, EngineError> {
+        let value = self.parse(&format!("{m}*I*omega/{n}"))?;
+        let text = format!("p_θ = {}", resonance_text(m, n));
+        Ok(crate::claim::Condition::new(
+            &text,
+            self.var("p_theta"),
+            value,
+        ))
+    }
+}
+
+/// `mIω/n` in lowest terms, as text: `Iω`, `2Iω`, `Iω/2`, `3Iω/2`.
+pub fn resonance_text(m: i64, n: i64) -> String {
+    let q = trigpoly::Rational::new(m, n);
+    let num = q.numer();
+    let den = q.denom();
+    let head = if num.is_one() {
+        "Iω".to_string()
+    } else {
+        format!("{num}Iω")
+    };
+    if den.is_one() {
+        head
+    } else {
+        format!("{head}/{den}")
+    }
+}

@@ -1,0 +1,225 @@
+//! Bracket tables: every `{A, B}` of a list of named functions, written as a linear combination
+//! of the listed functions with coefficients in the parameters where one exists (found by exact
+//! linear algebra, then checked), otherwise as an expression.
+
+use std::collections::{BTreeMap, BTreeSet};
+
+use trigpoly::{Expr, GaussianRational, Style, VarKind};
+
+use crate::error::EngineError;
+use crate::linalg::Matrix;
+use crate::system::System;
+
+/// One entry of a table.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub enum Entry {
+    /// `Σ c_k F_k` with coefficients in the parameters (empty for zero), checked exactly.
+    Combination(Vec<(Expr, String)>),
+    /// No such combination: the bracket itself, in normal form.
+    Expression(Expr),
+}
+
+/// The table `{A, B}` for a list of named functions of a system.
+#[derive(Clone, Debug)]
+pub struct BracketTable {
+    /// The functions' names, as given.
+    pub names: Vec<String>,
+    /// The functions' display names.
+    pub display: Vec<String>,
+    /// `entries[a][b]` is `{names[a], names[b]}`.
+    pub entries: Vec<Vec<Entry>>,
+}
+
+impl BracketTable {
+    /// Computes the table for named functions of `system`.
+    pub fn compute(system: &System, names: &[&str]) -> Result<Self, EngineError> {
+        let funcs: Vec<Expr> = names
+            .iter()
+            .map(|n| system.get(n).cloned())
+            .collect::<Result<_, _>>()?;
+        let basis: Vec<(String, Expr)> = names
+            .iter()
+            .map(|n| system.display_name(n).to_string())
+            .zip(funcs.iter().cloned())
+            .collect();
+        let mut entries = Vec::new();
+        for a in &funcs {
+            let mut row = Vec::new();
+            for b in &funcs {
+                let br = system.bracket(a, b)?;
+                row.push(match express(&br, &basis)? {
+                    Some(c) => Entry::Combination(c),
+                    None => Entry::Expression(br),
+                });
+            }
+            entries.push(row);
+        }
+        Ok(BracketTable {
+            names: names.iter().map(|s| s.to_string()).collect(),
+            display: basis.into_iter().map(|b| b.0).collect(),
+            entries,
+        })
+    }
+}
+
+impl Entry {
+    /// The entry as text in a notation: `−ω² L`, `4 G1`, `0`.
+    pub fn render(&self, style: Style) -> String {
+        match self {
+            Entry::Expression(e) => e.render(style),
+            Entry::Combination(terms) if terms.is_empty() => "0".into(),
+            Entry::Combination(terms) => {
+                let mut out = String::new();
+                for (k, (c, name)) in terms.iter().enumerate() {
+                    let name = match style {
+                        Style::Latex => latex_name(name),
+                        _ => name.clone(),
+                    };
+                    let text = c.render(style);
+                    let (neg, body) = match text.strip_prefix(['−', '-']) {
+                        Some(rest) if c.len() == 1 => (true, rest.to_string()),
+                        _ => (false, text),
+                    };
+                    let mul = if style == Style::Ascii { "*" } else { " " };
+                    let term = match body.as_str() {
+                        "1" => name,
+                        _ if c.len() > 1 => format!("({body}){mul}{name}"),
+                        _ => format!("{body}{mul}{name}"),
+                    };
+                    let minus = if style == Style::Unicode { "−" } else { "-" };
+                    match (k, neg) {
+                        (0, false) => out.push_str(&term),
+                        (0, true) => out.push_str(&format!("{minus}{term}")),
+                        (_, false) => out.push_str(&format!(" + {term}")),
+                        (_, true) => out.push_str(&format!(" {minus} {term}")),
+                    }
+                }
+                out
+            }
+        }
+    }
+}
+
+/// `G1'` → `G_{1}'`, `Z̄` → `\bar{Z}`, `L` → `L`.
+pub fn latex_name(name: &str) -> String {
+    let (base, primes) = match name.find('\'') {
+        Some(k) => (&name[..k], &name[k..]),
+        None => (name, ""),
+    };
+    let base = if let Some(stripped) = base.strip_suffix('\u{0304}') {
+        format!(r"\bar{{{stripped}}}")
+    } else if base.contains('̄') {
+        format!(r"\bar{{{}}}", base.replace('̄', ""))
+    } else {
+        let digits = base.trim_start_matches(|c: char| !c.is_ascii_digit());
+        let head = &base[..base.len() - digits.len()];
+        if !digits.is_empty() && !head.is_empty() {
+            format!("{head}_{{{digits}}}")
+        } else {
+            base.to_string()
+        }
+    };
+    format!("{base}{primes}")
+}
+
+/// Writes `target` as `Σ c_k F_k` with `c_k` Laurent polynomials in the parameters, if possible.
+///
+/// The ansatz for `c_k` spans the parameter monomials `ν` that can carry a term of `F_k` onto a
+/// term of `target`; the coefficients come from an exact linear solve over Q(i), and the
+/// combination is then checked by expanding it.
+pub fn express(
+    target: &Expr,
+    basis: &[(String, Expr)],
+) -> Result<Option<Vec<(Expr, String)>>, EngineError> {
+    if target.is_zero() {
+        return Ok(Some(Vec::new()));
+    }
+    let vars = target.vars().clone();
+    let is_param: Vec<bool> = vars
+        .vars()
+        .map(|v| vars.variable(v).kind() == VarKind::Parameter)
+        .collect();
+    let split = |e: &[i64]| -> (Vec<i64>, Vec<i64>) {
+        let phase = e
+            .iter()
+            .zip(&is_param)
+            .map(|(&x, &p)| if p { 0 } else { x })
+            .collect();
+        let param = e
+            .iter()
+            .zip(&is_param)
+            .map(|(&x, &p)| if p { x } else { 0 })
+            .collect();
+        (phase, param)
+    };
+    let target_terms: Vec<(Vec<i64>, Vec<i64>)> =
+        target.terms().map(|t| split(&t.exponents())).collect();
+    // Candidate columns ν·F_k.
+    let mut columns: Vec<(usize, Vec<i64>, Expr)> = Vec::new();
+    for (k, (_, f)) in basis.iter().enumerate() {
+        let mut nus: BTreeSet<Vec<i64>> = BTreeSet::new();
+        for u in f.terms() {
+            let (uphase, uparam) = split(&u.exponents());
+            for (tphase, tparam) in &target_terms {
+                if *tphase == uphase {
+                    nus.insert(tparam.iter().zip(&uparam).map(|(a, b)| a - b).collect());
+                }
+            }
+        }
+        for nu in nus {
+            let powers: Vec<_> = vars.vars().zip(nu.iter().copied()).collect();
+            let m = Expr::monomial(&vars, GaussianRational::from(1), &powers)?;
+            columns.push((k, nu, f.checked_mul(&m)?));
+        }
+    }
+    if columns.is_empty() {
+        return Ok(None);
+    }
+    // Rows: every monomial that appears.
+    let mut rows: BTreeMap<Vec<i64>, usize> = BTreeMap::new();
+    for e in target.terms().map(|t| t.exponents()).chain(
+        columns
+            .iter()
+            .flat_map(|c| c.2.terms().map(|t| t.exponents()).collect::<Vec<_>>()),
+    ) {
+        let n = rows.len();
+        rows.entry(e).or_insert(n);
+    }
+    let mut a = Matrix::zeros(rows.len(), columns.len());
+    for (j, (_, _, col)) in columns.iter().enumerate() {
+        for t in col.terms() {
+            a.set(rows[&t.exponents()], j, t.coeff());
+        }
+    }
+    let mut b = vec![GaussianRational::default(); rows.len()];
+    for t in target.terms() {
+        b[rows[&t.exponents()]] = t.coeff();
+    }
+    let Some(x) = a.solve(&b) else {
+        return Ok(None);
+    };
+    let mut coeffs: Vec<Expr> = vec![Expr::zero(&vars); basis.len()];
+    for ((k, nu, _), xj) in columns.iter().zip(&x) {
+        if xj.is_zero() {
+            continue;
+        }
+        let powers: Vec<_> = vars.vars().zip(nu.iter().copied()).collect();
+        coeffs[*k] = coeffs[*k].checked_add(&Expr::monomial(&vars, xj.clone(), &powers)?)?;
+    }
+    // Check the combination exactly.
+    let mut sum = Expr::zero(&vars);
+    for (c, (_, f)) in coeffs.iter().zip(basis) {
+        sum = sum.checked_add(&c.checked_mul(f)?)?;
+    }
+    if sum != *target {
+        return Ok(None);
+    }
+    Ok(Some(
+        coeffs
+            .into_iter()
+            .zip(basis)
+            .filter(|(c, _)| !c.is_zero())
+            .map(|(c, (name, _))| (c, name.clone()))
+            .collect(),
+    ))
+}
