@@ -110,11 +110,11 @@ impl Matrix {
     /// One solution of `self · x = b` (free unknowns set to zero), or `None` if inconsistent.
     pub fn solve(&self, b: &[Q]) -> Option<Vec<Q>> {
         let mut aug = Matrix::zeros(self.rows, self.cols + 1);
-        for i in 0..self.rows {
+        for (i, bi) in b.iter().enumerate().take(self.rows) {
             for j in 0..self.cols {
                 aug.set(i, j, self.get(i, j).clone());
             }
-            aug.set(i, self.cols, b[i].clone());
+            aug.set(i, self.cols, bi.clone());
         }
         let red = aug.reduce();
         if red.pivot_cols.last() == Some(&self.cols) {

@@ -285,9 +285,11 @@ forward_binop!(GaussianRational, Mul, mul, MulAssign, mul_assign, |a, b| {
         im: &a.re * &b.im + &a.im * &b.re,
     }
 });
-// Panics if the divisor is zero (use `try_inv` for a checked division).
-forward_binop!(GaussianRational, Div, div, DivAssign, div_assign, |a, b| a
-    * b.try_inv().expect("division by zero"));
+// a / b = a · b⁻¹. Panics if the divisor is zero (use `try_inv` for a checked division).
+forward_binop!(GaussianRational, Div, div, DivAssign, div_assign, |a, b| {
+    let inv = b.try_inv().expect("division by zero");
+    <&GaussianRational as Mul<&GaussianRational>>::mul(a, &inv)
+});
 
 impl Neg for &GaussianRational {
     type Output = GaussianRational;

@@ -132,6 +132,11 @@ impl<C: Coefficient> Poly<C> {
         self.coeffs.len()
     }
 
+    /// Whether there are no terms (the zero polynomial); the same as [`Poly::is_zero`].
+    pub fn is_empty(&self) -> bool {
+        self.coeffs.is_empty()
+    }
+
     /// Whether this is the zero polynomial: the exact zero test.
     pub fn is_zero(&self) -> bool {
         self.coeffs.is_empty()
@@ -326,7 +331,7 @@ impl<C: Coefficient> Poly<C> {
             for c in coeffs.iter_mut() {
                 *c = c.div_exact(&d);
             }
-            content = content * Rational::from(d);
+            content *= Rational::from(d);
         }
         Poly {
             vars: vars.clone(),

@@ -9,6 +9,9 @@ use crate::error::AlgebraError;
 use crate::number::{Coefficient, GaussianRational, Rational};
 use crate::varset::{Var, VarKind, VarSet};
 
+/// Packed exponents and coefficients of a group of terms.
+type Terms<C> = (Vec<u64>, Vec<<C as Coefficient>::Int>);
+
 impl<C: Coefficient> Poly<C> {
     /// Replaces `v` by `value` (for an angle `θ`, replaces `e^{iθ}`). Where `v` appears with a
     /// negative exponent, `value` must be a single term.
@@ -33,7 +36,7 @@ impl<C: Coefficient> Poly<C> {
         // Group the terms by their exponents of the substituted variables.
         let layout = self.layout();
         let w = self.words();
-        let mut groups: HashMap<Vec<i64>, (Vec<u64>, Vec<C::Int>)> = HashMap::new();
+        let mut groups: HashMap<Vec<i64>, Terms<C>> = HashMap::new();
         let mut order: Vec<Vec<i64>> = Vec::new();
         for k in 0..self.len() {
             let m = self.exp(k);
@@ -62,7 +65,7 @@ impl<C: Coefficient> Poly<C> {
                 if e == 0 {
                     continue;
                 }
-                if !powers.contains_key(&(*v, e)) {
+                if let std::collections::hash_map::Entry::Vacant(slot) = powers.entry((*v, e)) {
                     let p = value_of(*v).checked_pow(e).map_err(|err| match err {
                         AlgebraError::NegativePower(s) => AlgebraError::Invalid(format!(
                             "cannot substitute {s} for {}: it appears with exponent {e}, and \
@@ -71,7 +74,7 @@ impl<C: Coefficient> Poly<C> {
                         )),
                         other => other,
                     })?;
-                    powers.insert((*v, e), p);
+                    slot.insert(p);
                 }
                 part = part.checked_mul(&powers[&(*v, e)])?;
             }
@@ -104,9 +107,8 @@ impl<C: Coefficient> Poly<C> {
                 let value = point.values[j].as_ref().ok_or_else(|| {
                     AlgebraError::MissingValue(self.vars.variable(Var(j as u16)).unicode().into())
                 })?;
-                if !cache.contains_key(&(j, e)) {
-                    let p = value.pow(e).ok_or(AlgebraError::DivisionByZero)?;
-                    cache.insert((j, e), p);
+                if let std::collections::hash_map::Entry::Vacant(slot) = cache.entry((j, e)) {
+                    slot.insert(value.pow(e).ok_or(AlgebraError::DivisionByZero)?);
                 }
                 term = &term * &cache[&(j, e)];
             }

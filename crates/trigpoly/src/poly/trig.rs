@@ -22,8 +22,8 @@ impl<C: Coefficient> Poly<C> {
     /// `cos θ = (e^{iθ} + e^{−iθ})/2`.
     pub fn cos(vars: &Arc<VarSet>, theta: Var) -> Result<Self, AlgebraError> {
         let half = C::from_rational(Rational::new(1, 2));
-        Ok(Self::monomial(vars, half.clone(), &[(theta, 1)])?
-            .checked_add(&Self::exp_i(vars, theta, -1)?.scale(&half))?)
+        Self::monomial(vars, half.clone(), &[(theta, 1)])?
+            .checked_add(&Self::exp_i(vars, theta, -1)?.scale(&half))
     }
 
     /// `sin θ = (e^{iθ} − e^{−iθ})/(2i)`.
