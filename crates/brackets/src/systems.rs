@@ -202,3 +202,43 @@ pub fn resonance_text(m: i64, n: i64) -> String {
         format!("{head}/{den}")
     }
 }
+
+/// The planar limit `V_I = α(x² + y²) + β/x² + γ/y²` (a Laurent potential) coupled to the
+/// rotor, with the second-order integrals `H_x = p_x²/(2M) + αx² + β/x²`,
+/// `H_y = p_y²/(2M) + αy² + γ/y²`, `X = L² + 2M(βy²/x² + γx²/y²)`, and `L`, `F2`.
+pub fn planar_i_rotor() -> System {
+    build(
+        "planar limit V_I with rotor",
+        &["M", "I", "alpha", "beta", "gamma"],
+        "(p_x^2 + p_y^2)/(2*M) + alpha*(x^2 + y^2) + beta/x^2 + gamma/y^2 + p_theta^2/(2*I)",
+        &[
+            ("F2", "F2", "p_theta^2/(2*I)"),
+            ("L", "L", "x*p_y - y*p_x"),
+            ("Hx", "H_x", "p_x^2/(2*M) + alpha*x^2 + beta/x^2"),
+            ("Hy", "H_y", "p_y^2/(2*M) + alpha*y^2 + gamma/y^2"),
+            ("X", "X", "L^2 + 2*M*(beta*y^2/x^2 + gamma*x^2/y^2)"),
+        ],
+    )
+}
+
+/// The planar limit `V_II = α(x² + 4y²) + β/x² + γy` (a Laurent potential) coupled to the
+/// rotor, with the second-order integrals `H_x = p_x²/(2M) + αx² + β/x²`,
+/// `H_y = p_y²/(2M) + 4αy² + γy`, `X = L p_x + M(2αx²y − 2βy/x² + γx²/2)`, and `L`, `F2`.
+pub fn planar_ii_rotor() -> System {
+    build(
+        "planar limit V_II with rotor",
+        &["M", "I", "alpha", "beta", "gamma"],
+        "(p_x^2 + p_y^2)/(2*M) + alpha*(x^2 + 4*y^2) + beta/x^2 + gamma*y + p_theta^2/(2*I)",
+        &[
+            ("F2", "F2", "p_theta^2/(2*I)"),
+            ("L", "L", "x*p_y - y*p_x"),
+            ("Hx", "H_x", "p_x^2/(2*M) + alpha*x^2 + beta/x^2"),
+            ("Hy", "H_y", "p_y^2/(2*M) + 4*alpha*y^2 + gamma*y"),
+            (
+                "X",
+                "X",
+                "L*p_x + M*(2*alpha*x^2*y - 2*beta*y/x^2 + gamma*x^2/2)",
+            ),
+        ],
+    )
+}

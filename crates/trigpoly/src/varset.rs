@@ -127,6 +127,26 @@ impl Layout {
         ((m[w] >> shift) & mask) as i64 - (1i64 << (self.bits - 1))
     }
 
+    /// Unpacks the first `out.len()` exponents of a packed monomial.
+    #[inline]
+    pub fn unpack_into(&self, m: &[u64], out: &mut [i64]) {
+        let mask = if self.bits == 64 { u64::MAX } else { (1u64 << self.bits) - 1 };
+        let bias = 1i64 << (self.bits - 1);
+        for (j, o) in out.iter_mut().enumerate() {
+            let w = j / self.per_word;
+            let slot = (j % self.per_word) as u32;
+            let shift = 64 - self.bits * (slot + 1);
+            *o = ((m[w] >> shift) & mask) as i64 - bias;
+        }
+    }
+
+    /// The packed translation by `e` in variable `j` (add it with `mul_into`).
+    pub fn unit(&self, j: usize, e: i64, out: &mut [u64]) {
+        out.copy_from_slice(&self.bias);
+        let (w, shift) = Layout::place(self.per_word, self.bits, j);
+        out[w] = out[w].wrapping_add((e as u64) << shift);
+    }
+
     /// Packs an exponent vector (each `|e| <= max_exp`) into `out`.
     pub fn pack(&self, exps: &[i64], out: &mut [u64]) {
         out.copy_from_slice(&self.bias);

@@ -112,10 +112,7 @@ impl Integer {
     pub fn gcd(&self, other: &Integer) -> Integer {
         match (self, other) {
             (Integer::Small(a), Integer::Small(b)) => {
-                let g = (*a as i128)
-                    .unsigned_abs()
-                    .gcd(&(*b as i128).unsigned_abs());
-                Integer::from_i128(g as i128)
+                Integer::from(binary_gcd(a.unsigned_abs(), b.unsigned_abs()))
             }
             _ => Integer::from_bigint(self.to_bigint().gcd(&other.to_bigint())),
         }
@@ -135,7 +132,10 @@ impl Integer {
     /// Panics if `d` is zero; the result is only meaningful when `d` divides `self`.
     pub fn div_exact(&self, d: &Integer) -> Integer {
         match (self, d) {
-            (Integer::Small(a), Integer::Small(b)) => Integer::from_i128(*a as i128 / *b as i128),
+            (Integer::Small(a), Integer::Small(b)) => match a.checked_div(*b) {
+                Some(q) => Integer::Small(q),
+                None => Integer::from_i128(*a as i128 / *b as i128),
+            },
             _ => Integer::from_bigint(self.to_bigint() / d.to_bigint()),
         }
     }
@@ -163,6 +163,28 @@ impl Integer {
         match self {
             Integer::Small(v) => 64 - v.unsigned_abs().leading_zeros() as u64,
             Integer::Big(b) => b.bits(),
+        }
+    }
+}
+
+/// Stein's binary gcd on machine words.
+fn binary_gcd(mut a: u64, mut b: u64) -> u64 {
+    if a == 0 {
+        return b;
+    }
+    if b == 0 {
+        return a;
+    }
+    let shift = (a | b).trailing_zeros();
+    a >>= a.trailing_zeros();
+    loop {
+        b >>= b.trailing_zeros();
+        if a > b {
+            std::mem::swap(&mut a, &mut b);
+        }
+        b -= a;
+        if b == 0 {
+            return a << shift;
         }
     }
 }
@@ -263,7 +285,10 @@ fn sub_ref(a: &Integer, b: &Integer) -> Integer {
 
 fn mul_ref(a: &Integer, b: &Integer) -> Integer {
     match (a, b) {
-        (Integer::Small(x), Integer::Small(y)) => Integer::from_i128(*x as i128 * *y as i128),
+        (Integer::Small(x), Integer::Small(y)) => match x.checked_mul(*y) {
+            Some(v) => Integer::Small(v),
+            None => Integer::from_i128(*x as i128 * *y as i128),
+        },
         _ => Integer::from_bigint(a.to_bigint() * b.to_bigint()),
     }
 }

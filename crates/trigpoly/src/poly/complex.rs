@@ -14,24 +14,24 @@ impl<C: Coefficient> Poly<C> {
         let angles: Vec<usize> = self.vars.angles().map(|v| v.index()).collect();
         let layout = self.layout();
         let w = self.words();
-        let terms: Vec<(Vec<u64>, C::Int)> = (0..self.len())
-            .map(|k| {
-                let m = self.exp(k);
-                let key = if angles.is_empty() {
-                    m.to_vec()
-                } else {
-                    let mut e: Vec<i64> = (0..self.vars.len()).map(|j| layout.get(m, j)).collect();
-                    for &j in &angles {
-                        e[j] = -e[j];
-                    }
-                    let mut packed = vec![0u64; w];
-                    layout.pack(&e, &mut packed);
-                    packed
-                };
-                (key, self.coeffs[k].conj())
-            })
-            .collect();
-        Self::from_unsorted(&self.vars, self.content.clone(), terms)
+        let coeffs: Vec<C::Int> = self.coeffs.iter().map(|c| c.conj()).collect();
+        if angles.is_empty() {
+            return Self::from_sorted(&self.vars, self.content.clone(), self.exps.clone(), coeffs);
+        }
+        // e^{ikθ} ↦ e^{−ikθ}: translate each angle field by −2k.
+        let mut exps = self.exps.clone();
+        let mut unit = vec![0u64; w];
+        for m in exps.chunks_exact_mut(w) {
+            for &j in &angles {
+                let e = layout.get(m, j);
+                if e != 0 {
+                    layout.unit(j, -2 * e, &mut unit);
+                    let old = m.to_vec();
+                    layout.mul_into(&old, &unit, m);
+                }
+            }
+        }
+        Self::from_distinct_unsorted(&self.vars, self.content.clone(), exps, coeffs)
     }
 
     /// Whether the function is real-valued: `conj(f) = f`.

@@ -292,11 +292,12 @@ impl<C: Coefficient> Poly<C> {
         let layout = self.vars.layout();
         let n = self.vars.len();
         let mut b = vec![(i64::MAX, i64::MIN); n];
+        let mut e = vec![0i64; n];
         for m in self.exps.chunks_exact(self.words()) {
-            for (j, bj) in b.iter_mut().enumerate() {
-                let e = layout.get(m, j);
-                bj.0 = bj.0.min(e);
-                bj.1 = bj.1.max(e);
+            layout.unpack_into(m, &mut e);
+            for (bj, &ej) in b.iter_mut().zip(&e) {
+                bj.0 = bj.0.min(ej);
+                bj.1 = bj.1.max(ej);
             }
         }
         if self.is_zero() {
@@ -341,27 +342,25 @@ impl<C: Coefficient> Poly<C> {
         }
     }
 
-    /// Builds from terms in any order, possibly repeated or zero.
-    pub(crate) fn from_unsorted(
+    /// Builds from distinct nonzero terms in any order (a bijective relabelling of monomials,
+    /// such as conjugation): sorts a permutation, no combining needed.
+    pub(crate) fn from_distinct_unsorted(
         vars: &Arc<VarSet>,
         content: Rational,
-        mut terms: Vec<(Vec<u64>, C::Int)>,
+        exps: Vec<u64>,
+        coeffs: Vec<C::Int>,
     ) -> Self {
-        terms.sort_unstable_by(|a, b| b.0.cmp(&a.0));
-        let mut exps = Vec::with_capacity(terms.len() * vars.layout().words);
-        let mut coeffs: Vec<C::Int> = Vec::with_capacity(terms.len());
-        let mut last: Option<Vec<u64>> = None;
-        for (e, c) in terms {
-            if last.as_ref() == Some(&e) {
-                let top = coeffs.last_mut().expect("a previous term");
-                *top = top.add(&c);
-            } else {
-                exps.extend_from_slice(&e);
-                coeffs.push(c);
-                last = Some(e);
-            }
+        let w = vars.layout().words;
+        let mut order: Vec<usize> = (0..coeffs.len()).collect();
+        order.sort_unstable_by(|&a, &b| exps[b * w..(b + 1) * w].cmp(&exps[a * w..(a + 1) * w]));
+        let mut e2 = Vec::with_capacity(exps.len());
+        let mut coeffs: Vec<Option<C::Int>> = coeffs.into_iter().map(Some).collect();
+        let mut c2 = Vec::with_capacity(coeffs.len());
+        for k in order {
+            e2.extend_from_slice(&exps[k * w..(k + 1) * w]);
+            c2.push(coeffs[k].take().expect("each term once"));
         }
-        Self::drop_zeros_and_normalize(vars, content, exps, coeffs)
+        Self::from_sorted(vars, content, e2, c2)
     }
 
     pub(crate) fn drop_zeros_and_normalize(

@@ -33,6 +33,10 @@ impl<C: Coefficient> Poly<C> {
         if targets.is_empty() {
             return Ok(self.clone());
         }
+        if let [v] = targets[..] {
+            let value = &subs.iter().find(|s| s.0 == v).expect("a target").1;
+            return self.subst_one(v, value);
+        }
         // Group the terms by their exponents of the substituted variables.
         let layout = self.layout();
         let w = self.words();
@@ -79,6 +83,42 @@ impl<C: Coefficient> Poly<C> {
                 part = part.checked_mul(&powers[&(*v, e)])?;
             }
             result = result.checked_add(&part)?;
+        }
+        Ok(result)
+    }
+
+    /// `self` with `v ↦ value`: the terms are grouped by their exponent `e` of `v`, each group
+    /// translated to `e = 0` (which keeps its order) and multiplied by `value^e`.
+    fn subst_one(&self, v: Var, value: &Self) -> Result<Self, AlgebraError> {
+        let layout = self.layout();
+        let w = self.words();
+        let j = v.index();
+        let mut groups: std::collections::BTreeMap<i64, Terms<C>> = Default::default();
+        let mut unit = vec![0u64; w];
+        for k in 0..self.len() {
+            let m = self.exp(k);
+            let e = layout.get(m, j);
+            let group = groups.entry(e).or_default();
+            let start = group.0.len();
+            group.0.extend_from_slice(m);
+            if e != 0 {
+                layout.unit(j, -e, &mut unit);
+                layout.mul_into(m, &unit, &mut group.0[start..]);
+            }
+            group.1.push(self.coeffs[k].clone());
+        }
+        let mut result = Self::zero(&self.vars);
+        for (e, (exps, coeffs)) in groups {
+            let part = Self::from_sorted(&self.vars, self.content.clone(), exps, coeffs);
+            let power = value.checked_pow(e).map_err(|err| match err {
+                AlgebraError::NegativePower(s) => AlgebraError::Invalid(format!(
+                    "cannot substitute {s} for {}: it appears with exponent {e}, and only a \
+                     single term can be raised to a negative power",
+                    self.vars.variable(v).unicode()
+                )),
+                other => other,
+            })?;
+            result = result.checked_add(&part.checked_mul(&power)?)?;
         }
         Ok(result)
     }

@@ -1,0 +1,92 @@
+//! Integration tests. `claims`: every claim of the paper (ids of `claims.md`), each proved
+//! exactly beside a false neighbour that the engine must refute with the exact residual.
+
+use brackets::{Claim, Condition, Outcome, System};
+
+/// Checks the identity `lhs = rhs`, both sides written in the notation of `system` (named
+/// functions and brackets `{f, g}` allowed), under an optional condition such as a resonance.
+///
+/// **Panics if** the text has no `=` or a side does not parse: a test's text is fixed.
+pub fn check(system: &System, identity: &str, when: Option<&Condition>) -> Outcome {
+    let (lhs, rhs) = identity
+        .split_once('=')
+        .unwrap_or_else(|| panic!("{identity:?} is not an identity `lhs = rhs`"));
+    let parse = |side: &str| {
+        system
+            .parse(side.trim())
+            .unwrap_or_else(|e| panic!("{identity:?}: {e}"))
+    };
+    let mut claim = Claim::new("test", identity, parse(lhs), parse(rhs));
+    if let Some(c) = when {
+        claim = claim.when(c.clone());
+    }
+    claim
+        .check()
+        .unwrap_or_else(|e| panic!("{identity:?}: {e}"))
+        .outcome
+}
+
+/// The one way tests state identities, in the paper's notation:
+///
+/// - `identity!(sys, "{L, G1} = -G2")` asserts that the engine proves it;
+/// - `identity!(sys, "{P, H} = 0", when sys.resonance(1, 1)?)` proves it under a condition;
+/// - `identity!(sys, "{L, G1} = G2" => refuted "-2*G2")` asserts that the engine refutes it and
+///   that the residual `lhs − rhs` is exactly the expected expression (read under the same
+///   condition, if any); it evaluates to the residual.
+macro_rules! identity {
+    ($sys:expr, $text:expr) => {
+        $crate::assert_proved(&$sys, &$text, None)
+    };
+    ($sys:expr, $text:expr, when $cond:expr) => {
+        $crate::assert_proved(&$sys, &$text, Some(&$cond))
+    };
+    ($sys:expr, $text:expr => refuted $residual:expr) => {
+        $crate::assert_refuted(&$sys, &$text, None, &$residual)
+    };
+    ($sys:expr, $text:expr, when $cond:expr => refuted $residual:expr) => {
+        $crate::assert_refuted(&$sys, &$text, Some(&$cond), &$residual)
+    };
+}
+
+/// The proved arm of [`identity!`].
+#[track_caller]
+pub fn assert_proved(system: &System, identity: &str, when: Option<&Condition>) {
+    if let Outcome::Refuted { residual } = check(system, identity, when) {
+        panic!(
+            "{identity}{} is refuted: residual {residual}",
+            when.map_or(String::new(), |c| format!(" when {}", c.text))
+        );
+    }
+}
+
+/// The refuted arm of [`identity!`]: the residual, which must equal `expected` (parsed, and
+/// under the same condition).
+#[track_caller]
+pub fn assert_refuted(
+    system: &System,
+    identity: &str,
+    when: Option<&Condition>,
+    expected: &str,
+) -> trigpoly::Expr {
+    let mut want = system
+        .parse(expected)
+        .unwrap_or_else(|e| panic!("expected residual {expected:?}: {e}"));
+    if let Some(c) = when {
+        want = c.apply(&want).expect("the condition applies");
+    }
+    assert!(!want.is_zero(), "a refutation needs a nonzero residual");
+    match check(system, identity, when) {
+        Outcome::Proved => panic!("{identity} was proved, but it is false"),
+        Outcome::Refuted { residual } => {
+            pretty_assertions::assert_eq!(
+                residual.to_string(),
+                want.to_string(),
+                "residual of {identity}"
+            );
+            assert_eq!(residual, want, "residual of {identity}");
+            residual
+        }
+    }
+}
+
+mod claims;
