@@ -47,6 +47,23 @@ pub trait IntegerRing:
     fn conj(&self) -> Self;
     /// `i · a`, if `i` is in the ring.
     fn try_mul_i(&self) -> Option<Self>;
+    /// The value in machine words, if every component fits an `i64`.
+    type Small: Copy + Default + Send + Sync;
+    /// A wide accumulator for `Small` products (`i128` per component).
+    type Wide: Copy + Default + PartialEq + Send + Sync;
+    /// The value in machine words, if every component fits.
+    fn to_small(&self) -> Option<Self::Small>;
+    /// Bits of the largest component of a small value.
+    fn small_bits(s: &Self::Small) -> u32;
+    /// `acc += a · b` in wide arithmetic; the caller guarantees no overflow.
+    fn wide_add_mul(acc: &mut Self::Wide, a: &Self::Small, b: &Self::Small);
+    /// The value of a wide accumulator.
+    fn from_wide(w: Self::Wide) -> Self;
+    /// Whether products of primitive elements are primitive (Gauss's lemma: true for Z, false
+    /// for Z[i] with primitivity taken componentwise, as `(1 + i)(1 − i) = 2` shows).
+    const GAUSS_LEMMA: bool;
+    /// How many real products one `wide_add_mul` adds to a component (1 for Z, 2 for Z[i]).
+    const PRODUCTS_PER_COMPONENT: u32;
     /// `acc += a · b`.
     fn acc_add_mul(acc: &mut Self::Acc, a: &Self, b: &Self);
     /// `acc += a`.
@@ -57,6 +74,23 @@ pub trait IntegerRing:
 
 impl IntegerRing for Integer {
     type Acc = IntegerAcc;
+    type Small = i64;
+    type Wide = i128;
+    const GAUSS_LEMMA: bool = true;
+    const PRODUCTS_PER_COMPONENT: u32 = 1;
+    fn to_small(&self) -> Option<i64> {
+        self.to_i64()
+    }
+    fn small_bits(s: &i64) -> u32 {
+        64 - s.unsigned_abs().leading_zeros()
+    }
+    #[inline(always)]
+    fn wide_add_mul(acc: &mut i128, a: &i64, b: &i64) {
+        *acc += *a as i128 * *b as i128;
+    }
+    fn from_wide(w: i128) -> Self {
+        Integer::from_i128(w)
+    }
     fn is_zero(&self) -> bool {
         Integer::is_zero(self)
     }
@@ -108,6 +142,26 @@ impl IntegerRing for Integer {
 
 impl IntegerRing for GaussianInteger {
     type Acc = GaussianAcc;
+    type Small = (i64, i64);
+    type Wide = (i128, i128);
+    const GAUSS_LEMMA: bool = false;
+    const PRODUCTS_PER_COMPONENT: u32 = 2;
+    fn to_small(&self) -> Option<(i64, i64)> {
+        Some((self.re.to_i64()?, self.im.to_i64()?))
+    }
+    fn small_bits(s: &(i64, i64)) -> u32 {
+        64 - (s.0.unsigned_abs() | s.1.unsigned_abs()).leading_zeros()
+    }
+    // (a + bi)(c + di) = (ac − bd) + (ad + bc)i
+    #[inline(always)]
+    fn wide_add_mul(acc: &mut (i128, i128), a: &(i64, i64), b: &(i64, i64)) {
+        let (ar, ai, br, bi) = (a.0 as i128, a.1 as i128, b.0 as i128, b.1 as i128);
+        acc.0 += ar * br - ai * bi;
+        acc.1 += ar * bi + ai * br;
+    }
+    fn from_wide(w: (i128, i128)) -> Self {
+        GaussianInteger::new(Integer::from_i128(w.0), Integer::from_i128(w.1))
+    }
     fn is_zero(&self) -> bool {
         GaussianInteger::is_zero(self)
     }

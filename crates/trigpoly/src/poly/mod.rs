@@ -9,6 +9,7 @@
 mod arith;
 mod calculus;
 mod complex;
+mod dense;
 mod mul;
 mod pow;
 mod subst;
@@ -318,8 +319,9 @@ impl<C: Coefficient> Poly<C> {
         if coeffs.is_empty() || content.is_zero() {
             return Self::zero(vars);
         }
+        // The trailing coefficient is often small: start there to reach gcd 1 early.
         let mut g = Integer::ZERO;
-        for c in &coeffs {
+        for c in coeffs.iter().rev() {
             g = c.gcd_into(&g);
             if g.is_one() {
                 break;
@@ -340,6 +342,22 @@ impl<C: Coefficient> Poly<C> {
             exps,
             coeffs,
         }
+    }
+
+    /// Builds from sorted, distinct, nonzero terms that are already primitive with a positive
+    /// leading coefficient (a product of such polynomials over Z, by Gauss's lemma).
+    pub(crate) fn from_sorted_primitive(
+        vars: &Arc<VarSet>,
+        content: Rational,
+        exps: Vec<u64>,
+        coeffs: Vec<C::Int>,
+    ) -> Self {
+        debug_assert!(C::Int::GAUSS_LEMMA);
+        if coeffs.is_empty() {
+            return Self::zero(vars);
+        }
+        debug_assert!(coeffs[0].leading_sign() > 0);
+        Poly { vars: vars.clone(), content, exps, coeffs }
     }
 
     /// Builds from distinct nonzero terms in any order (a bijective relabelling of monomials,

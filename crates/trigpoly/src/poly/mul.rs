@@ -60,17 +60,6 @@ macro_rules! dispatch_words {
 const SMALL_SIDE: usize = 6;
 
 impl<C: Coefficient> Poly<C> {
-    /// Checks that the exponents of `self · other` stay within the limit.
-    pub(crate) fn check_product_bounds(&self, other: &Self) -> Result<(), AlgebraError> {
-        let (a, b) = (self.bounds(), other.bounds());
-        for v in self.vars.vars() {
-            let j = v.index();
-            check_exponent(&self.vars, v, a[j].0 + b[j].0)?;
-            check_exponent(&self.vars, v, a[j].1 + b[j].1)?;
-        }
-        Ok(())
-    }
-
     /// `self · other`, or an error if the variable sets differ, an exponent would pass the
     /// limit, or the product would have more terms than the limit.
     pub fn checked_mul(&self, other: &Self) -> Result<Self, AlgebraError> {
@@ -78,7 +67,6 @@ impl<C: Coefficient> Poly<C> {
         if self.is_zero() || other.is_zero() {
             return Ok(Self::zero(&self.vars));
         }
-        self.check_product_bounds(other)?;
         let content = &self.content * &other.content;
         let (small, big) = if self.len() <= other.len() {
             (self, other)
@@ -86,9 +74,22 @@ impl<C: Coefficient> Poly<C> {
             (other, self)
         };
         if small.len() <= SMALL_SIDE {
+            check_sum_bounds(&self.vars, &small.bounds(), &big.bounds())?;
             return Ok(shift_and_merge(small, big, content));
         }
+        let (ba, bb) = (self.bounds(), other.bounds());
+        check_sum_bounds(&self.vars, &ba, &bb)?;
         let limit = self.vars.limits().max_terms;
+        if let Some(result) = super::dense::try_mul_dense(
+            self.layout(),
+            self.vars.len(),
+            (&self.exps, &self.coeffs, &ba),
+            (&other.exps, &other.coeffs, &bb),
+            limit,
+        ) {
+            let (exps, coeffs) = result?;
+            return Ok(Self::product(&self.vars, content, exps, coeffs));
+        }
         let (exps, coeffs) = dispatch_words!(
             self.words(),
             mul_hash,
@@ -99,7 +100,21 @@ impl<C: Coefficient> Poly<C> {
             limit
         )?;
         Self::check_terms(&self.vars, coeffs.len())?;
-        Ok(Self::from_sorted(&self.vars, content, exps, coeffs))
+        Ok(Self::product(&self.vars, content, exps, coeffs))
+    }
+
+    /// The canonical form of a product of two canonical polynomials.
+    fn product(
+        vars: &std::sync::Arc<crate::varset::VarSet>,
+        content: crate::number::Rational,
+        exps: Vec<u64>,
+        coeffs: Vec<C::Int>,
+    ) -> Self {
+        if C::Int::GAUSS_LEMMA {
+            Self::from_sorted_primitive(vars, content, exps, coeffs)
+        } else {
+            Self::from_sorted(vars, content, exps, coeffs)
+        }
     }
 
     /// `self · c·m` for one term given by its packed monomial `m` and integer coefficient `c`:
@@ -120,6 +135,20 @@ impl<C: Coefficient> Poly<C> {
         let m = Self::monomial(&self.vars, C::one(), &[(v, e)])?;
         self.checked_mul(&m)
     }
+}
+
+/// Checks that exponents `a + b` stay within the limit, given per-variable bounds.
+fn check_sum_bounds(
+    vars: &crate::varset::VarSet,
+    a: &[(i64, i64)],
+    b: &[(i64, i64)],
+) -> Result<(), AlgebraError> {
+    for v in vars.vars() {
+        let j = v.index();
+        check_exponent(vars, v, a[j].0 + b[j].0)?;
+        check_exponent(vars, v, a[j].1 + b[j].1)?;
+    }
+    Ok(())
 }
 
 /// `small · big` as a sum of shifted copies of `big`, merged pairwise.
@@ -163,7 +192,7 @@ fn shift_and_merge<C: Coefficient>(
         parts = next;
     }
     let p = parts.pop().expect("at least one term");
-    Poly::from_sorted(vars, content, p.exps, p.coeffs)
+    Poly::product(vars, content, p.exps, p.coeffs)
 }
 
 fn drop_zeros<I: IntegerRing>(exps: Vec<u64>, coeffs: Vec<I>, w: usize) -> (Vec<u64>, Vec<I>) {
