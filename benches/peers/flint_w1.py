@@ -10,6 +10,7 @@ import time
 import flint
 
 N = int(sys.argv[1]) if len(sys.argv) > 1 else 8
+SINGLE = len(sys.argv) > 2 and sys.argv[2] == "single"
 ctx = flint.fmpq_mpoly_ctx.get(("x", "y", "c", "s", "px", "py", "pt", "M", "w", "I"), "lex")
 x, y, c, s, px, py, pt, M, w, I = ctx.gens()
 G = I * (px**2 + py**2) + M**2 * w**2 * I * (x**2 + y**2) + M * pt**2  # 2MI·H
@@ -41,8 +42,9 @@ def bracket(P0, P1):
 def w1(N):
     checked = 0
     terms = 0
-    for m in range(1, N + 1):
-        for n in range(1, N + 1):
+    pairs = [(N, N)] if SINGLE else [(m, n) for m in range(1, N + 1) for n in range(1, N + 1)]
+    for m, n in pairs:
+        if True:
             R, Im = ctx.from_dict({}) + 1, ctx.from_dict({})
             for _ in range(m):
                 R, Im = R * A - Im * B, R * B + Im * A

@@ -105,7 +105,7 @@ pub fn define_family(sys: &mut System, ladder: &str, m: i64, n: i64) {
 // a wrong residual; otherwise the claims' tests would prove nothing.
 
 #[test]
-#[should_panic(expected = "{L, G1} = G2 is refuted: residual −Mω²x² + Mω²y² − p_x²/M + p_y²/M")]
+#[should_panic(expected = "{L, G1} = G2 is refuted: residual −p_x²/M + p_y²/M − Mω²x² + Mω²y²")]
 fn identity_helper_fails_on_a_false_identity() {
     identity!(brackets::systems::harmonic_rotor(), "{L, G1} = G2");
 }

@@ -90,3 +90,4 @@ pub fn assert_refuted(
 }
 
 mod claims;
+mod cli;

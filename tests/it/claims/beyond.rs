@@ -213,8 +213,8 @@ fn section5_bracket_table_renders() {
         ])
     );
     // V_II: {H_x, X} is no combination of the integrals, and {H_y, X} = −{H_x, X}.
-    let hx_x = "2αx² p_y − 8αxy p_x − γx p_x − p_x² p_y/M − 2β p_y/x²";
-    let hy_x = "−2αx² p_y + 8αxy p_x + γx p_x + p_x² p_y/M + 2β p_y/x²";
+    let hx_x = "−p_x² p_y/M + 2αx² p_y − 8αxy p_x − γx p_x − 2β p_y/x²";
+    let hy_x = "p_x² p_y/M − 2αx² p_y + 8αxy p_x + γx p_x + 2β p_y/x²";
     let two = systems::planar_ii_rotor();
     pretty_assertions::assert_eq!(
         rendered_table(&two, &["Hx", "Hy", "X"]),

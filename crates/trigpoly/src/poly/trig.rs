@@ -34,13 +34,20 @@ impl<C: Coefficient> Poly<C> {
     }
 
     /// The terms in the normal form `c · m · Π cos^a θ sin^b θ` (`b ≤ 1`), grouped and ordered
-    /// for printing: by trigonometric monomial, then by the monomial in the other variables.
+    /// for printing as the paper does: by trigonometric monomial, then by degree in the momenta
+    /// (highest first, so `(p_x − Mωy) cos θ`), then by the monomial in the other variables.
     pub fn cos_sin_terms(&self) -> Vec<CosSinTerm> {
         let angles: Vec<usize> = self.vars.angles().map(|v| v.index()).collect();
+        let momenta: Vec<usize> = self
+            .vars
+            .vars()
+            .filter(|&v| self.vars.variable(v).kind() == VarKind::Momentum)
+            .map(|v| v.index())
+            .collect();
+        type Key = (TrigMonomial, std::cmp::Reverse<(i64, Vec<i64>)>);
         let layout = self.layout();
         let mut tables: HashMap<i64, Vec<(u32, u32, GaussianInteger)>> = HashMap::new();
-        let mut acc: BTreeMap<(TrigMonomial, std::cmp::Reverse<Vec<i64>>), GaussianRational> =
-            BTreeMap::new();
+        let mut acc: BTreeMap<Key, GaussianRational> = BTreeMap::new();
         for k in 0..self.len() {
             let m = self.exp(k);
             let mut exps: Vec<i64> = (0..self.vars.len()).map(|j| layout.get(m, j)).collect();
@@ -64,9 +71,10 @@ impl<C: Coefficient> Poly<C> {
                 partial = next;
             }
             for (pows, c) in partial {
+                let momentum_degree = momenta.iter().map(|&j| exps[j].abs()).sum();
                 let key = (
                     TrigMonomial { powers: pows },
-                    std::cmp::Reverse(exps.clone()),
+                    std::cmp::Reverse((momentum_degree, exps.clone())),
                 );
                 let slot = acc.entry(key).or_default();
                 *slot = &*slot + &c;
@@ -77,7 +85,7 @@ impl<C: Coefficient> Poly<C> {
             .filter(|(_, c)| !c.is_zero())
             .map(|((trig, exps), c)| CosSinTerm {
                 coeff: &c * &content,
-                exps: exps.0,
+                exps: exps.0 .1,
                 trig,
             })
             .collect()

@@ -1,0 +1,44 @@
+//! # superint
+//!
+//! Exact Poisson-bracket identities of superintegrable Hamiltonian systems: a rigid rotor
+//! coupled to planar potentials. This crate is the facade of the workspace: it re-exports the
+//! ring ([`trigpoly`]) and the bracket engine ([`brackets`]), holds the paper as data
+//! ([`paper`]), the structured [`report`] that checking it produces, and the renderers
+//! ([`render`]) that print a report as text, Markdown, LaTeX or JSON.
+//!
+//! ```
+//! use superint::prelude::*;
+//!
+//! // C09: the su(2) brackets of the harmonic rotor, proved exactly.
+//! let rotor = systems::harmonic_rotor();
+//! for (lhs, rhs) in [("{L, G1}", "-G2"), ("{L, G2}", "4*G1"), ("{G1, G2}", "-omega^2*L")] {
+//!     let claim = Claim::new("C09", lhs, rotor.parse(lhs)?, rotor.parse(rhs)?);
+//!     assert_eq!(claim.check()?.outcome, Outcome::Proved);
+//! }
+//! // The table prints like the paper.
+//! let table = BracketTable::compute(&rotor, &["L", "G1", "G2"])?;
+//! assert_eq!(table.entries[2][1].render(Style::Unicode), "ω² L");
+//! # Ok::<(), EngineError>(())
+//! ```
+#![deny(missing_docs)]
+
+pub use brackets;
+pub use trigpoly;
+
+pub mod paper;
+pub mod render;
+pub mod report;
+
+/// Everything a user of the library needs: `use superint::prelude::*;`.
+pub mod prelude {
+    pub use brackets::{
+        check_tower, eigen_proof, rank, systems, BracketTable, Claim, Condition, EigenProof,
+        EngineError, Entry as TableEntry, Outcome, PhaseSpace, RankCertificate, System,
+        TowerReport, Verdict,
+    };
+    pub use trigpoly::{Expr, GaussianRational, Poly, Rational, Style, Var, VarSet};
+
+    pub use crate::paper::{tower_report, Paper, PaperOptions, TowerSystem};
+    pub use crate::render::{render, Format, Options as RenderOptions};
+    pub use crate::report::{ClaimResult, Report};
+}

@@ -1,0 +1,589 @@
+//! The paper as data: its sections, each a list of [`Item`]s (prose, Hamiltonians, claims,
+//! bracket tables, towers, proofs, ranks) built from the engine's systems, and
+//! [`Paper::check`], which computes every item into a [`Report`].
+//!
+//! Building the catalogue only parses; checking does the mathematics; rendering
+//! ([`crate::render`]) only prints. Every claim of `claims.md` from C01 to C26 appears with its
+//! id, its statement in the paper's notation and its condition.
+//!
+//! ```
+//! use superint::paper::{Paper, PaperOptions};
+//!
+//! let paper = Paper::build(&PaperOptions { tower_max: 2 })?;
+//! let report = paper.check()?;
+//! assert!(report.all_proved());
+//! assert!(report.claim_ids().iter().any(|(id, _)| id == "C09"));
+//! # Ok::<(), brackets::EngineError>(())
+//! ```
+
+mod beyond;
+mod gravity;
+mod harmonic;
+mod planar;
+
+use std::sync::Arc;
+use std::time::Instant;
+
+use brackets::{
+    check_tower, eigen_proof, rank, BracketTable, Claim, Condition, EngineError, System,
+};
+use trigpoly::Expr;
+
+use crate::report::{
+    ClaimKind, ClaimResult, Entry, Equation, Equations, Fact, ProofResult, RankResult, Report,
+    Section as ReportSection, SummaryKind, TableResult, TowerResult,
+};
+
+/// The paper's title.
+pub const TITLE: &str =
+    "Rigid body rotors in planar potentials: the paper's claims, checked exactly";
+/// The paper checked.
+pub const SUBTITLE: &str = "D. Latini, Rigid Body Rotors in Planar Potentials: A Novel type of \
+                            Superintegrable Mechanical Systems in the Plane";
+
+/// Choices for building the catalogue.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct PaperOptions {
+    /// The bound `N` of the towers `1 ≤ m, n ≤ N` checked by expansion (the paper's claim C12
+    /// asks for at least 8).
+    pub tower_max: i64,
+}
+
+impl Default for PaperOptions {
+    fn default() -> Self {
+        PaperOptions { tower_max: 8 }
+    }
+}
+
+/// The paper: sections of items.
+#[derive(Clone, Debug)]
+pub struct Paper {
+    /// The title of the report.
+    pub title: String,
+    /// The paper checked.
+    pub subtitle: String,
+    /// The sections, in the paper's order.
+    pub sections: Vec<Section>,
+}
+
+/// A section of the paper.
+#[derive(Clone, Debug)]
+pub struct Section {
+    /// The paper's section number.
+    pub number: u32,
+    /// The title.
+    pub title: String,
+    /// The items, in order.
+    pub items: Vec<Item>,
+}
+
+/// One item of a section, before it is computed.
+#[derive(Clone, Debug)]
+pub enum Item {
+    /// A sub-heading.
+    Heading(String),
+    /// Prose, with mathematics between backticks.
+    Text(String),
+    /// Equations shown as they are (definitions): `L = x p_y − y p_x`.
+    Equations(Equations),
+    /// A Hamiltonian and Hamilton's equations, computed from the system.
+    Hamilton {
+        /// The system.
+        system: Arc<System>,
+    },
+    /// A claim to check.
+    Claim(Box<PaperClaim>),
+    /// A bracket table of named functions.
+    Table {
+        /// What the table shows.
+        caption: String,
+        /// The system.
+        system: Arc<System>,
+        /// The functions' names.
+        names: Vec<String>,
+    },
+    /// `{K_{m,n}, H} = i(mω − nΩ) K_{m,n}` by expansion for `1 ≤ m, n ≤ max`.
+    Tower {
+        /// The claim's id.
+        id: String,
+        /// The claim as the paper states it.
+        statement: String,
+        /// The system.
+        system: Arc<System>,
+        /// The ladder function's name.
+        ladder: String,
+        /// The bound.
+        max: i64,
+    },
+    /// The all-`m, n` proof by the eigenfunction lemma.
+    Proof {
+        /// What the proof shows.
+        title: String,
+        /// The claims it settles: `(id, statement)`.
+        settles: Vec<(String, String)>,
+        /// The system.
+        system: Arc<System>,
+        /// The ladder function's name.
+        ladder: String,
+    },
+    /// The rank of the Jacobian of some functions.
+    Rank {
+        /// The claim's id.
+        id: String,
+        /// The system (its phase space).
+        system: Arc<System>,
+        /// The functions, with their names in the paper's notation.
+        functions: Vec<(String, Expr)>,
+        /// The rank the paper states.
+        expected: usize,
+    },
+}
+
+/// A claim of the paper: an engine [`Claim`] and whether it asserts an identity or a
+/// nonvanishing.
+#[derive(Clone, Debug)]
+pub struct PaperClaim {
+    /// The claim (id, statement, sides, condition).
+    pub claim: Claim,
+    /// Identity or nonvanishing.
+    pub kind: ClaimKind,
+}
+
+impl Paper {
+    /// The catalogue: sections 2 to 5 of the paper with every claim from C01 to C26.
+    pub fn build(options: &PaperOptions) -> Result<Paper, EngineError> {
+        Ok(Paper {
+            title: TITLE.into(),
+            subtitle: SUBTITLE.into(),
+            sections: vec![
+                planar::section()?,
+                harmonic::section(options)?,
+                gravity::section(options)?,
+                beyond::section()?,
+            ],
+        })
+    }
+
+    /// Computes every item: the report.
+    pub fn check(&self) -> Result<Report, EngineError> {
+        let start = Instant::now();
+        let sections = self
+            .sections
+            .iter()
+            .map(|s| {
+                Ok(ReportSection {
+                    number: s.number,
+                    title: s.title.clone(),
+                    entries: s
+                        .items
+                        .iter()
+                        .map(|item| item.compute(&mut |_, _| {}))
+                        .collect::<Result<Vec<_>, EngineError>>()?
+                        .into_iter()
+                        .flatten()
+                        .collect(),
+                })
+            })
+            .collect::<Result<Vec<_>, EngineError>>()?;
+        Ok(Report {
+            title: self.title.clone(),
+            subtitle: self.subtitle.clone(),
+            sections,
+            summary: SummaryKind::Claims,
+            seconds: start.elapsed().as_secs_f64(),
+        })
+    }
+}
+
+/// Which system a tower job runs on.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum TowerSystem {
+    /// The harmonic rotor with `Z` (claim C12).
+    Harmonic,
+    /// The rotor under gravity with the shifted `Z'` (claim C24).
+    Gravity,
+}
+
+/// The tower job: `{K_{m,n}, H} = i(mω − nΩ) K_{m,n}` by expansion for `1 ≤ m, n ≤ max`, and
+/// the all-`m, n` proof; `progress(done, total)` is called after each bracket.
+pub fn tower_report(
+    which: TowerSystem,
+    max: i64,
+    progress: &mut dyn FnMut(usize, usize),
+) -> Result<Report, EngineError> {
+    let start = Instant::now();
+    let (system, ladder, id, k) = match which {
+        TowerSystem::Harmonic => (brackets::systems::harmonic_rotor(), "Z", "C12", "K"),
+        TowerSystem::Gravity => (brackets::systems::gravity_rotor(), "Zp", "C24", "K'"),
+    };
+    let system = Arc::new(system);
+    let z = system.display_name(ladder).to_string();
+    let tower = Item::Tower {
+        id: id.into(),
+        statement: format!("{{{k}_{{m,n}}, F1}} = i(mω − nΩ){k}_{{m,n}} for 1 ≤ m, n ≤ {max}"),
+        system: system.clone(),
+        ladder: ladder.into(),
+        max,
+    };
+    let proof = Item::Proof {
+        title: format!("for all m, n ≥ 0, from the ladder function {z}"),
+        settles: vec![(
+            id.into(),
+            format!("{{{k}_{{m,n}}, F1}} = i(mω − nΩ){k}_{{m,n}} for all m, n ≥ 0"),
+        )],
+        system: system.clone(),
+        ladder: ladder.into(),
+    };
+    let text = Item::Text(format!(
+        "The {}: `{k}_{{m,n}} = {z}^m e^{{−inθ}}` with `Ω = p_θ/I`.",
+        system.name()
+    ));
+    let mut entries = Vec::new();
+    for item in [text, tower, proof] {
+        entries.extend(item.compute(progress)?);
+    }
+    Ok(Report {
+        title: format!("The tower of resonant integrals, 1 ≤ m, n ≤ {max}"),
+        subtitle: String::new(),
+        sections: vec![ReportSection {
+            number: if which == TowerSystem::Harmonic { 3 } else { 4 },
+            title: format!("{{{k}_{{m,n}}, H}} for the {}", system.name()),
+            entries,
+        }],
+        summary: SummaryKind::Tower,
+        seconds: start.elapsed().as_secs_f64(),
+    })
+}
+
+impl Item {
+    /// Computes the item: the entries it contributes to the report.
+    pub fn compute(
+        &self,
+        progress: &mut dyn FnMut(usize, usize),
+    ) -> Result<Vec<Entry>, EngineError> {
+        Ok(match self {
+            Item::Heading(h) => vec![Entry::Heading(h.clone())],
+            Item::Text(t) => vec![Entry::Text(t.clone())],
+            Item::Equations(e) => vec![Entry::Equations(e.clone())],
+            Item::Hamilton { system } => hamilton(system)?,
+            Item::Claim(c) => vec![Entry::Claim(c.check()?)],
+            Item::Table {
+                caption,
+                system,
+                names,
+            } => {
+                let names: Vec<&str> = names.iter().map(String::as_str).collect();
+                vec![Entry::Table(TableResult {
+                    caption: caption.clone(),
+                    table: BracketTable::compute(system, &names)?,
+                })]
+            }
+            Item::Tower {
+                id,
+                statement,
+                system,
+                ladder,
+                max,
+            } => {
+                let t = check_tower(system, ladder, *max, progress)?;
+                let note = (!t.failures.is_empty())
+                    .then(|| format!("fails for (m, n) in {:?}", t.failures));
+                vec![Entry::Tower(TowerResult {
+                    system: system.name().to_string(),
+                    ladder: system.display_name(ladder).to_string(),
+                    max: t.max,
+                    checked: t.checked,
+                    failures: t.failures.clone(),
+                    claim: ClaimResult::derived(id, statement, t.failures.is_empty(), note)
+                        .timed(t.seconds),
+                })]
+            }
+            Item::Proof {
+                title,
+                settles,
+                system,
+                ladder,
+            } => {
+                let start = Instant::now();
+                let p = eigen_proof(system, ladder)?;
+                let seconds = start.elapsed().as_secs_f64();
+                let holds = p.holds();
+                let note = (!holds).then(|| "a base fact or the derivation check fails".into());
+                vec![Entry::Proof(ProofResult {
+                    title: title.clone(),
+                    facts: p
+                        .facts
+                        .iter()
+                        .map(|f| Fact {
+                            statement: f.statement.clone(),
+                            holds: f.holds,
+                        })
+                        .collect(),
+                    lemma: p.lemma.clone(),
+                    leibniz_check: p.leibniz_check,
+                    conclusion: p.conclusion.clone(),
+                    claims: settles
+                        .iter()
+                        .map(|(id, st)| {
+                            ClaimResult::derived(id, st, holds, note.clone()).timed(seconds)
+                        })
+                        .collect(),
+                })]
+            }
+            Item::Rank {
+                id,
+                system,
+                functions,
+                expected,
+            } => {
+                let start = Instant::now();
+                let exprs: Vec<Expr> = functions.iter().map(|f| f.1.clone()).collect();
+                let cert = rank(system.space(), &exprs)?;
+                let names: Vec<String> = functions.iter().map(|f| f.0.clone()).collect();
+                let coordinates = system.space().coordinates();
+                let coords: Vec<&str> = coordinates
+                    .iter()
+                    .map(|&v| system.vars().variable(v).unicode())
+                    .collect();
+                let statement = format!(
+                    "rank ∂({})/∂({}) = {expected}",
+                    names.join(", "),
+                    coords.join(", ")
+                );
+                let proved = cert.rank == *expected;
+                let note = (!proved).then(|| format!("the rank is {}", cert.rank));
+                vec![Entry::Rank(RankResult {
+                    functions: names,
+                    vars: system.vars().clone(),
+                    coordinates,
+                    expected: *expected,
+                    claim: ClaimResult::derived(id, &statement, proved, note)
+                        .timed(start.elapsed().as_secs_f64()),
+                    certificate: cert,
+                })]
+            }
+        })
+    }
+}
+
+impl PaperClaim {
+    /// Checks the claim exactly.
+    pub fn check(&self) -> Result<ClaimResult, EngineError> {
+        let v = self.claim.check()?;
+        let residual = match v.outcome {
+            brackets::Outcome::Proved => None,
+            brackets::Outcome::Refuted { residual } => Some(residual),
+        };
+        let (proved, residual, witness, note) = match self.kind {
+            ClaimKind::Identity => (residual.is_none(), residual, None, None),
+            ClaimKind::Nonvanishing => match residual {
+                Some(w) => (true, None, Some(w), None),
+                None => (
+                    false,
+                    None,
+                    None,
+                    Some("the value is identically zero".into()),
+                ),
+            },
+        };
+        Ok(ClaimResult {
+            id: v.id,
+            statement: v.statement,
+            condition: v.condition,
+            kind: self.kind,
+            proved,
+            residual,
+            witness,
+            note,
+            seconds: v.seconds,
+        })
+    }
+}
+
+/// `H = …` and Hamilton's equations `q̇ = ∂H/∂p`, `ṗ = −∂H/∂q`, computed.
+fn hamilton(system: &System) -> Result<Vec<Entry>, EngineError> {
+    let vars = system.vars();
+    let lines = system
+        .space()
+        .hamilton_equations(system.hamiltonian())?
+        .into_iter()
+        .map(|(v, e)| Equation::new(&dotted(vars.variable(v).unicode()), e))
+        .collect();
+    Ok(vec![
+        Entry::Equations(Equations {
+            caption: String::new(),
+            lines: vec![Equation::new("H", system.hamiltonian().clone())],
+        }),
+        Entry::Equations(Equations {
+            caption: "Hamilton's equations".into(),
+            lines,
+        }),
+    ])
+}
+
+/// `p_x` → `ṗ_x`: a combining dot over the first character.
+pub fn dotted(name: &str) -> String {
+    let mut chars = name.chars();
+    let first = chars.next().unwrap_or(' ');
+    format!("{first}\u{307}{}", chars.as_str())
+}
+
+/// Collects a section's items, parsing in one system at a time.
+pub(crate) struct SectionBuilder {
+    number: u32,
+    title: String,
+    items: Vec<Item>,
+    system: Arc<System>,
+}
+
+impl SectionBuilder {
+    pub(crate) fn new(number: u32, title: &str, system: System) -> Self {
+        SectionBuilder {
+            number,
+            title: title.into(),
+            items: Vec::new(),
+            system: Arc::new(system),
+        }
+    }
+
+    /// The system claims are parsed in from now on.
+    pub(crate) fn use_system(&mut self, system: System) -> Arc<System> {
+        self.system = Arc::new(system);
+        self.system.clone()
+    }
+
+    pub(crate) fn system(&self) -> &Arc<System> {
+        &self.system
+    }
+
+    pub(crate) fn parse(&self, src: &str) -> Result<Expr, EngineError> {
+        self.system.parse(src)
+    }
+
+    pub(crate) fn heading(&mut self, h: &str) {
+        self.items.push(Item::Heading(h.into()));
+    }
+
+    pub(crate) fn text(&mut self, t: &str) {
+        self.items.push(Item::Text(t.into()));
+    }
+
+    pub(crate) fn item(&mut self, item: Item) {
+        self.items.push(item);
+    }
+
+    pub(crate) fn hamilton(&mut self) {
+        self.items.push(Item::Hamilton {
+            system: self.system.clone(),
+        });
+    }
+
+    /// Shows `lhs = value` for named functions or expressions of the current system.
+    pub(crate) fn show(
+        &mut self,
+        caption: &str,
+        lines: &[(&str, &str)],
+    ) -> Result<(), EngineError> {
+        let lines = lines
+            .iter()
+            .map(|(lhs, src)| Ok(Equation::new(lhs, self.parse(src)?)))
+            .collect::<Result<_, EngineError>>()?;
+        self.items.push(Item::Equations(Equations {
+            caption: caption.into(),
+            lines,
+        }));
+        Ok(())
+    }
+
+    pub(crate) fn show_exprs(&mut self, caption: &str, lines: Vec<(String, Expr)>) {
+        self.items.push(Item::Equations(Equations {
+            caption: caption.into(),
+            lines: lines
+                .into_iter()
+                .map(|(l, e)| Equation::new(&l, e))
+                .collect(),
+        }));
+    }
+
+    /// `lhs = rhs`, both parsed in the current system.
+    pub(crate) fn identity(
+        &mut self,
+        id: &str,
+        statement: &str,
+        lhs: &str,
+        rhs: &str,
+    ) -> Result<(), EngineError> {
+        let (l, r) = (self.parse(lhs)?, self.parse(rhs)?);
+        self.claim(id, statement, l, r, None, ClaimKind::Identity);
+        Ok(())
+    }
+
+    /// `lhs = rhs` under a condition, both parsed in the current system.
+    pub(crate) fn identity_when(
+        &mut self,
+        id: &str,
+        statement: &str,
+        lhs: &str,
+        rhs: &str,
+        condition: Condition,
+    ) -> Result<(), EngineError> {
+        let (l, r) = (self.parse(lhs)?, self.parse(rhs)?);
+        self.claim(id, statement, l, r, Some(condition), ClaimKind::Identity);
+        Ok(())
+    }
+
+    /// A claim from expressions.
+    pub(crate) fn claim(
+        &mut self,
+        id: &str,
+        statement: &str,
+        lhs: Expr,
+        rhs: Expr,
+        condition: Option<Condition>,
+        kind: ClaimKind,
+    ) {
+        let mut claim = Claim::new(id, statement, lhs, rhs);
+        if let Some(c) = condition {
+            claim = claim.when(c);
+        }
+        self.items
+            .push(Item::Claim(Box::new(PaperClaim { claim, kind })));
+    }
+
+    /// A bracket table of named functions of the current system.
+    pub(crate) fn table(&mut self, caption: &str, names: &[&str]) {
+        self.items.push(Item::Table {
+            caption: caption.into(),
+            system: self.system.clone(),
+            names: names.iter().map(|s| s.to_string()).collect(),
+        });
+    }
+
+    /// A rank claim on named functions (`(display name, expression source)`).
+    pub(crate) fn rank(
+        &mut self,
+        id: &str,
+        functions: &[(&str, &str)],
+        expected: usize,
+    ) -> Result<(), EngineError> {
+        let functions = functions
+            .iter()
+            .map(|(n, src)| Ok((n.to_string(), self.parse(src)?)))
+            .collect::<Result<_, EngineError>>()?;
+        self.items.push(Item::Rank {
+            id: id.into(),
+            system: self.system.clone(),
+            functions,
+            expected,
+        });
+        Ok(())
+    }
+
+    pub(crate) fn finish(self) -> Section {
+        Section {
+            number: self.number,
+            title: self.title,
+            items: self.items,
+        }
+    }
+}

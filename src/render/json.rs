@@ -1,0 +1,210 @@
+//! JSON with a stable schema, `superint-report/1`:
+//!
+//! ```text
+//! {
+//!   "schema": "superint-report/1",
+//!   "title": string, "subtitle": string,
+//!   "summary": { "claims": int (distinct ids), "proved": int, "refuted": int,
+//!                "checks": int, "all_proved": bool, "seconds": number | null },
+//!   "claims": [ { "id": "C09", "section": int, "statement": "{L, G1} = −G2",
+//!                 "condition": string | null, "kind": "identity" | "nonvanishing",
+//!                 "outcome": "proved" | "refuted",
+//!                 "residual": ascii | null   (lhs − rhs of a refuted identity),
+//!                 "witness": ascii | null    (the nonzero value of a proved nonvanishing),
+//!                 "note": string | null, "seconds": number | null } ],
+//!   "equations": [ { "section", "caption", "lines": [ { "lhs", "text", "ascii", "latex" } ] } ],
+//!   "tables": [ { "section", "caption", "functions": [ascii names], "display": [names],
+//!                 "entries": [[ { "text", "ascii", "latex" } ]] } ],
+//!   "towers": [ { "section", "id", "system", "ladder", "max", "checked",
+//!                 "failures": [[m, n]], "outcome", "seconds" } ],
+//!   "proofs": [ { "section", "title", "facts": [ { "statement", "holds" } ],
+//!                 "leibniz_check", "lemma", "conclusion", "claims": [ids], "outcome" } ],
+//!   "ranks": [ { "section", "id", "functions", "coordinates", "expected", "rank",
+//!                "minor": { "rows": [names], "columns": [names], "value": string },
+//!                "point": [ { "variable", "value" } | { "variable", "cos", "sin" } ],
+//!                "upper_bound": { "kind": "size" | "vanishing_minors", "minors": int | null },
+//!                "outcome" } ]
+//! }
+//! ```
+//!
+//! Exact numbers (minor values, point coordinates) are strings, so that no reader rounds them;
+//! expressions are given in ASCII that `superint` parses back (and in unicode and LaTeX where
+//! they are shown). `seconds` is `null` under `--no-timings`, which makes the output
+//! reproducible byte for byte.
+
+use serde_json::{json, Value};
+use trigpoly::{Expr, Style, VarKind};
+
+use super::Options;
+use crate::report::{ClaimKind, ClaimResult, Entry, RankResult, Report};
+use brackets::UpperBound;
+
+/// The schema's name and version.
+pub const SCHEMA: &str = "superint-report/1";
+
+/// Renders a report as pretty-printed JSON.
+pub fn render(report: &Report, options: &Options) -> String {
+    let mut text = serde_json::to_string_pretty(&value(report, options))
+        .expect("a JSON value always serialises");
+    text.push('\n');
+    text
+}
+
+/// The report as a JSON value.
+pub fn value(report: &Report, options: &Options) -> Value {
+    let seconds = |s: f64| {
+        if options.timings {
+            json!(s)
+        } else {
+            Value::Null
+        }
+    };
+    let outcome = |ok: bool| if ok { "proved" } else { "refuted" };
+    let mut claims = Vec::new();
+    let mut equations = Vec::new();
+    let mut tables = Vec::new();
+    let mut towers = Vec::new();
+    let mut proofs = Vec::new();
+    let mut ranks = Vec::new();
+    for s in &report.sections {
+        let sec = s.number;
+        let claim = |c: &ClaimResult| claim(c, sec, seconds(c.seconds));
+        for e in &s.entries {
+            match e {
+                Entry::Heading(_) | Entry::Text(_) => {}
+                Entry::Equations(eq) => equations.push(json!({
+                    "section": sec,
+                    "caption": eq.caption,
+                    "lines": eq.lines.iter().map(|l| {
+                        let mut v = expr(&l.rhs);
+                        v.as_object_mut().expect("an object").insert("lhs".into(), json!(l.lhs));
+                        v
+                    }).collect::<Vec<_>>(),
+                })),
+                Entry::Claim(c) => claims.push(claim(c)),
+                Entry::Table(t) => tables.push(json!({
+                    "section": sec,
+                    "caption": t.caption,
+                    "functions": t.table.names,
+                    "display": t.table.display,
+                    "entries": t.table.entries.iter().map(|row| row.iter().map(|e| json!({
+                        "text": e.render(Style::Unicode),
+                        "ascii": e.render(Style::Ascii),
+                        "latex": e.render(Style::Latex),
+                    })).collect::<Vec<_>>()).collect::<Vec<_>>(),
+                })),
+                Entry::Tower(t) => {
+                    claims.push(claim(&t.claim));
+                    towers.push(json!({
+                        "section": sec,
+                        "id": t.claim.id,
+                        "system": t.system,
+                        "ladder": t.ladder,
+                        "max": t.max,
+                        "checked": t.checked,
+                        "failures": t.failures.iter().map(|&(m, n)| json!([m, n])).collect::<Vec<_>>(),
+                        "outcome": outcome(t.claim.proved),
+                        "seconds": seconds(t.claim.seconds),
+                    }));
+                }
+                Entry::Proof(p) => {
+                    claims.extend(p.claims.iter().map(claim));
+                    proofs.push(json!({
+                        "section": sec,
+                        "title": p.title,
+                        "facts": p.facts.iter().map(|f| json!({
+                            "statement": f.statement,
+                            "holds": f.holds,
+                        })).collect::<Vec<_>>(),
+                        "leibniz_check": p.leibniz_check,
+                        "lemma": p.lemma,
+                        "conclusion": p.conclusion,
+                        "claims": p.claims.iter().map(|c| c.id.clone()).collect::<Vec<_>>(),
+                        "outcome": outcome(p.holds()),
+                    }));
+                }
+                Entry::Rank(r) => {
+                    claims.push(claim(&r.claim));
+                    ranks.push(rank(r, sec));
+                }
+            }
+        }
+    }
+    let ids = report.claim_ids();
+    let proved = ids.iter().filter(|(_, ok)| *ok).count();
+    json!({
+        "schema": SCHEMA,
+        "title": report.title,
+        "subtitle": report.subtitle,
+        "summary": {
+            "claims": ids.len(),
+            "proved": proved,
+            "refuted": ids.len() - proved,
+            "checks": claims.len(),
+            "all_proved": report.all_proved(),
+            "seconds": seconds(report.seconds),
+        },
+        "claims": claims,
+        "equations": equations,
+        "tables": tables,
+        "towers": towers,
+        "proofs": proofs,
+        "ranks": ranks,
+    })
+}
+
+fn expr(e: &Expr) -> Value {
+    json!({
+        "text": e.render(Style::Unicode),
+        "ascii": e.render(Style::Ascii),
+        "latex": e.render(Style::Latex),
+    })
+}
+
+fn claim(c: &ClaimResult, section: u32, seconds: Value) -> Value {
+    json!({
+        "id": c.id,
+        "section": section,
+        "statement": c.statement,
+        "condition": c.condition,
+        "kind": match c.kind {
+            ClaimKind::Identity => "identity",
+            ClaimKind::Nonvanishing => "nonvanishing",
+        },
+        "outcome": if c.proved { "proved" } else { "refuted" },
+        "residual": c.residual.as_ref().map(|r| r.render(Style::Ascii)),
+        "witness": c.witness.as_ref().map(|w| w.render(Style::Ascii)),
+        "note": c.note,
+        "seconds": seconds,
+    })
+}
+
+fn rank(r: &RankResult, section: u32) -> Value {
+    let c = &r.certificate;
+    let name = |v| r.vars.variable(v).name().to_string();
+    json!({
+        "section": section,
+        "id": r.claim.id,
+        "functions": r.functions,
+        "coordinates": r.coordinates.iter().map(|&v| name(v)).collect::<Vec<_>>(),
+        "expected": r.expected,
+        "rank": c.rank,
+        "minor": {
+            "rows": c.minor_rows.iter().map(|&i| r.functions[i].clone()).collect::<Vec<_>>(),
+            "columns": c.minor_cols.iter().map(|&v| name(v)).collect::<Vec<_>>(),
+            "value": c.minor_value.to_string(),
+        },
+        "point": c.point.iter().map(|(v, value)| {
+            if r.vars.variable(*v).kind() == VarKind::Angle {
+                json!({"variable": name(*v), "cos": value.re.to_string(), "sin": value.im.to_string()})
+            } else {
+                json!({"variable": name(*v), "value": value.to_string()})
+            }
+        }).collect::<Vec<_>>(),
+        "upper_bound": match &c.upper {
+            UpperBound::Size => json!({"kind": "size", "minors": null}),
+            UpperBound::VanishingMinors { count } => json!({"kind": "vanishing_minors", "minors": count}),
+        },
+        "outcome": if r.claim.proved { "proved" } else { "refuted" },
+    })
+}

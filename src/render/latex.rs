@@ -1,0 +1,316 @@
+//! A complete LaTeX document (article class and amsmath only): claims and equations in
+//! `align*`, bracket tables as `array`s. Valid by construction: every string goes through
+//! [`super::tex`], which escapes and balances, and the output is ASCII.
+
+use trigpoly::Style;
+
+use super::tex::{markup, math, relation, sentence, text};
+use super::text::{number, point, upper_bound};
+use super::Options;
+use crate::report::{
+    ClaimKind, ClaimResult, Entry, Equations, ProofResult, RankResult, Report, TableResult,
+    TowerResult,
+};
+
+/// Renders a report as a LaTeX document.
+pub fn render(report: &Report, options: &Options) -> String {
+    let mut out: Vec<String> = vec![
+        r"\documentclass{article}".into(),
+        r"\usepackage{amsmath}".into(),
+        r"\allowdisplaybreaks".into(),
+        r"\setlength{\emergencystretch}{3em}".into(),
+        r"\begin{document}".into(),
+        r"\begin{center}".into(),
+        format!(r"{{\Large\bfseries {}}}", text(&report.title)),
+    ];
+    if !report.subtitle.is_empty() {
+        out.push(format!(r"\\[1ex] {}", text(&report.subtitle)));
+    }
+    out.push(r"\end{center}".into());
+    for s in &report.sections {
+        out.push(String::new());
+        out.push(format!(
+            r"\section*{{{}\quad {}}}",
+            s.number,
+            text(&s.title)
+        ));
+        let mut rows: Vec<String> = Vec::new();
+        for e in &s.entries {
+            if let Entry::Claim(c) = e {
+                rows.extend(claim_rows(c));
+                continue;
+            }
+            flush(&mut out, &mut rows);
+            entry(&mut out, e);
+        }
+        flush(&mut out, &mut rows);
+    }
+    out.push(String::new());
+    out.push(format!(
+        r"\bigskip\noindent\textbf{{{}}}",
+        sentence(&report.summary_line(options.timings))
+    ));
+    out.push(r"\end{document}".into());
+    let mut doc = out.join("\n");
+    doc.push('\n');
+    doc
+}
+
+/// Writes pending `align*` rows.
+fn flush(out: &mut Vec<String>, rows: &mut Vec<String>) {
+    if rows.is_empty() {
+        return;
+    }
+    out.push(r"\begin{align*}".into());
+    let n = rows.len();
+    for (k, r) in rows.drain(..).enumerate() {
+        out.push(if k + 1 < n { format!(r"{r} \\") } else { r });
+    }
+    out.push(r"\end{align*}".into());
+}
+
+/// `lhs &= rhs`: a statement split at its relation for alignment.
+fn aligned(statement: &str) -> String {
+    match relation(statement) {
+        Some(k) => format!("{} &{}", math(&statement[..k]), math(&statement[k..])),
+        None => format!("& {}", math(statement)),
+    }
+}
+
+/// How wide a displayed equation may be, in printed characters.
+const ROW: usize = 55;
+/// How wide the formula of a claim's row may be (the verdict takes the rest of the line).
+const CLAIM_ROW: usize = 30;
+
+/// A rough width of LaTeX math as printed: characters that are not markup.
+fn visual_width(s: &str) -> usize {
+    let mut n = 0;
+    let mut chars = s.chars().peekable();
+    while let Some(c) = chars.next() {
+        match c {
+            '\\' => {
+                // A control word prints as about one character.
+                while chars.peek().is_some_and(|c| c.is_ascii_alphabetic()) {
+                    chars.next();
+                }
+                n += 1;
+            }
+            '{' | '}' | '^' | '_' | ' ' => {}
+            _ => n += 1,
+        }
+    }
+    n
+}
+
+/// Splits a long LaTeX sum at the ` + ` and ` - ` outside braces into pieces about `max` wide;
+/// every piece after the first starts with its sign. `\left( … \right)` becomes
+/// `\bigl( … \bigr)`, which may span rows.
+fn split_sum(s: &str, max: usize) -> Vec<String> {
+    if visual_width(s) <= max {
+        return vec![s.to_string()];
+    }
+    let s = &s
+        .replace(r"\left(", r"\bigl(")
+        .replace(r"\right)", r"\bigr)");
+    let mut cuts = Vec::new();
+    let mut depth = 0i32;
+    for (k, c) in s.char_indices() {
+        match c {
+            '{' => depth += 1,
+            '}' => depth -= 1,
+            ' ' if depth == 0 && (s[k..].starts_with(" + ") || s[k..].starts_with(" - ")) => {
+                cuts.push(k)
+            }
+            _ => {}
+        }
+    }
+    let mut pieces = Vec::new();
+    let mut start = 0;
+    let mut last: Option<usize> = None;
+    for &k in &cuts {
+        if visual_width(&s[start..k]) > max {
+            if let Some(l) = last.filter(|&l| l > start) {
+                pieces.push(s[start..l].to_string());
+                start = l + 1;
+            }
+        }
+        last = Some(k);
+    }
+    if visual_width(&s[start..]) > max {
+        if let Some(l) = last.filter(|&l| l > start) {
+            pieces.push(s[start..l].to_string());
+            start = l + 1;
+        }
+    }
+    pieces.push(s[start..].to_string());
+    pieces
+}
+
+/// `lhs &= rhs` rows for a long expression, continued on further rows; `tail` ends each row.
+fn long_rows(lhs: &str, rel: &str, e: &trigpoly::Expr, tail: &str, max: usize) -> Vec<String> {
+    split_sum(&e.render(Style::Latex), max)
+        .into_iter()
+        .enumerate()
+        .map(|(k, piece)| {
+            if k == 0 {
+                format!("{lhs} &{rel} {piece}{tail}")
+            } else {
+                format!(r"&\quad {piece}{tail}")
+            }
+        })
+        .collect()
+}
+
+fn claim_rows(c: &ClaimResult) -> Vec<String> {
+    let cond = match &c.condition {
+        Some(cond) => format!(r"\quad\text{{at }} {}", math(cond)),
+        None => String::new(),
+    };
+    let verdict = if c.proved { "proved" } else { "REFUTED" };
+    let mut rows = vec![format!(
+        r"{}{cond} && \text{{[{} {verdict}]}}",
+        aligned(&c.statement),
+        text(&c.id)
+    )];
+    if let Some(r) = &c.residual {
+        rows.extend(long_rows(r"\text{residual}", "=", r, " &&", CLAIM_ROW));
+    }
+    if let (ClaimKind::Nonvanishing, Some(w)) = (c.kind, &c.witness) {
+        if visual_width(&w.render(Style::Latex)) <= 3 * CLAIM_ROW {
+            rows.extend(long_rows("", r"\text{it equals}", w, " &&", CLAIM_ROW));
+        } else {
+            rows.push(format!(
+                r"&\text{{it is a nonzero sum of {} terms}} &&",
+                w.len()
+            ));
+        }
+    }
+    if let Some(n) = &c.note {
+        rows.push(format!(r"&\text{{{}}} &&", text(n)));
+    }
+    rows
+}
+
+fn entry(out: &mut Vec<String>, e: &Entry) {
+    match e {
+        Entry::Heading(h) => out.push(format!(r"\subsection*{{{}}}", text(h))),
+        Entry::Text(t) => {
+            out.push(markup(t));
+            out.push(String::new());
+        }
+        Entry::Equations(eq) => equations(out, eq),
+        Entry::Claim(c) => {
+            let mut rows = claim_rows(c);
+            flush(out, &mut rows);
+        }
+        Entry::Table(t) => table(out, t),
+        Entry::Proof(p) => proof(out, p),
+        Entry::Tower(t) => tower(out, t),
+        Entry::Rank(r) => rank(out, r),
+    }
+}
+
+fn equations(out: &mut Vec<String>, eq: &Equations) {
+    if !eq.caption.is_empty() {
+        out.push(format!(r"\noindent {}:", text(&eq.caption)));
+    }
+    let mut rows: Vec<String> = eq
+        .lines
+        .iter()
+        .flat_map(|l| long_rows(&math(&l.lhs), "=", &l.rhs, "", ROW))
+        .collect();
+    flush(out, &mut rows);
+}
+
+fn table(out: &mut Vec<String>, t: &TableResult) {
+    let table = &t.table;
+    out.push(r"\begin{center}".into());
+    out.push(format!(r"{}\\[1ex]", markup(&t.caption)));
+    out.push(r"$\begin{array}{c|".to_string() + &"c".repeat(table.display.len()) + "}");
+    let head: Vec<String> = table.display.iter().map(|d| math(d)).collect();
+    out.push(format!(r"\{{\cdot,\cdot\}} & {} \\", head.join(" & ")));
+    out.push(r"\hline".into());
+    for (name, row) in table.display.iter().zip(&table.entries) {
+        let cells: Vec<String> = row.iter().map(|e| e.render(Style::Latex)).collect();
+        out.push(format!(r"{} & {} \\", math(name), cells.join(" & ")));
+    }
+    out.push(r"\end{array}$".into());
+    out.push(r"\end{center}".into());
+}
+
+fn tower(out: &mut Vec<String>, t: &TowerResult) {
+    let mut rows = claim_rows(&t.claim);
+    flush(out, &mut rows);
+    let verdict = if t.failures.is_empty() {
+        "all hold".to_string()
+    } else {
+        format!("{} fail: {:?}", t.failures.len(), t.failures)
+    };
+    out.push(format!(
+        r"\noindent {} brackets expanded for the {} (ladder ${}$), {}.",
+        t.checked,
+        text(&t.system),
+        math(&t.ladder),
+        text(&verdict)
+    ));
+    out.push(String::new());
+}
+
+fn proof(out: &mut Vec<String>, p: &ProofResult) {
+    out.push(format!(r"\paragraph{{Proof}} {}:", sentence(&p.title)));
+    out.push(r"\begin{enumerate}".into());
+    let mark = |ok: bool| if ok { "holds" } else { "FAILS" };
+    for f in &p.facts {
+        out.push(format!(
+            r"\item computed: ${}$ --- {}",
+            math(&f.statement),
+            mark(f.holds)
+        ));
+    }
+    out.push(format!(
+        r"\item computed: the derivation property ${}$ on the base functions --- {}",
+        math("{AB, H} = A{B, H} + B{A, H}"),
+        mark(p.leibniz_check)
+    ));
+    out.push(r"\end{enumerate}".into());
+    out.push(format!(r"\emph{{Lemma:}} {}.", sentence(&p.lemma)));
+    out.push(String::new());
+    out.push(format!(r"\emph{{Therefore:}} {}.", sentence(&p.conclusion)));
+    let mut rows: Vec<String> = p.claims.iter().flat_map(claim_rows).collect();
+    flush(out, &mut rows);
+}
+
+fn rank(out: &mut Vec<String>, r: &RankResult) {
+    let mut rows = claim_rows(&r.claim);
+    flush(out, &mut rows);
+    let c = &r.certificate;
+    let fns: Vec<String> = c
+        .minor_rows
+        .iter()
+        .map(|&i| format!("${}$", math(&r.functions[i])))
+        .collect();
+    let cols: Vec<String> = c
+        .minor_cols
+        .iter()
+        .map(|&v| format!("${}$", r.vars.variable(v).latex()))
+        .collect();
+    out.push(r"\begin{itemize}".into());
+    let at: Vec<String> = point(r, Style::Latex)
+        .iter()
+        .map(|p| format!("${p}$"))
+        .collect();
+    out.push(format!(
+        r"\item $\ge {}$: the minor with rows {} and columns {} is ${} \neq 0$ at {}",
+        c.rank,
+        fns.join(", "),
+        cols.join(", "),
+        number(&c.minor_value).replace('*', " "),
+        at.join(", ")
+    ));
+    out.push(format!(
+        r"\item $\le {}$: {}",
+        c.rank,
+        text(&upper_bound(r))
+    ));
+    out.push(r"\end{itemize}".into());
+}

@@ -1,0 +1,172 @@
+//! Markdown: formulas as code spans in the paper's unicode notation, bracket tables as Markdown
+//! tables, claims as lists.
+
+use trigpoly::Style;
+
+use super::text::{number, point, upper_bound};
+use super::Options;
+use crate::report::{
+    ClaimKind, ClaimResult, Entry, Equations, ProofResult, RankResult, Report, TableResult,
+    TowerResult,
+};
+
+/// Renders a report as Markdown.
+pub fn render(report: &Report, options: &Options) -> String {
+    let mut blocks: Vec<String> = vec![format!("# {}", report.title)];
+    if !report.subtitle.is_empty() {
+        blocks.push(format!("*{}*", report.subtitle));
+    }
+    for s in &report.sections {
+        blocks.push(format!("## {}. {}", s.number, s.title));
+        let mut list: Vec<String> = Vec::new();
+        for e in &s.entries {
+            if let Entry::Claim(c) = e {
+                list.push(claim(c));
+                continue;
+            }
+            if !list.is_empty() {
+                blocks.push(std::mem::take(&mut list).join("\n"));
+            }
+            blocks.push(entry(e));
+        }
+        if !list.is_empty() {
+            blocks.push(list.join("\n"));
+        }
+    }
+    blocks.push(format!("**{}**", report.summary_line(options.timings)));
+    let mut out = blocks.join("\n\n");
+    out.push('\n');
+    out
+}
+
+fn code(s: &str) -> String {
+    format!("`{s}`")
+}
+
+fn entry(e: &Entry) -> String {
+    match e {
+        Entry::Heading(h) => format!("### {h}"),
+        Entry::Text(t) => t.clone(),
+        Entry::Equations(eq) => equations(eq),
+        Entry::Claim(c) => claim(c),
+        Entry::Table(t) => table(t),
+        Entry::Proof(p) => proof(p),
+        Entry::Tower(t) => tower(t),
+        Entry::Rank(r) => rank(r),
+    }
+}
+
+fn equations(eq: &Equations) -> String {
+    let mut lines = Vec::new();
+    if !eq.caption.is_empty() {
+        lines.push(format!("{}:", eq.caption));
+        lines.push(String::new());
+    }
+    for l in &eq.lines {
+        lines.push(format!("- {}", code(&format!("{} = {}", l.lhs, l.rhs))));
+    }
+    lines.join("\n")
+}
+
+fn claim(c: &ClaimResult) -> String {
+    let cond = match &c.condition {
+        Some(cond) => format!(" at {}", code(cond)),
+        None => String::new(),
+    };
+    let verdict = if c.proved { "proved" } else { "REFUTED" };
+    let mut line = format!("- {}{cond} — **{} {verdict}**", code(&c.statement), c.id);
+    if let Some(r) = &c.residual {
+        line.push_str(&format!(", residual {}", code(&r.to_string())));
+    }
+    if let (ClaimKind::Nonvanishing, Some(w)) = (c.kind, &c.witness) {
+        line.push_str(&format!(" (it equals {})", code(&w.to_string())));
+    }
+    if let Some(n) = &c.note {
+        line.push_str(&format!(" ({n})"));
+    }
+    line
+}
+
+fn table(t: &TableResult) -> String {
+    let table = &t.table;
+    let mut lines = vec![format!("*{}*", t.caption), String::new()];
+    let head: Vec<String> = table.display.iter().map(|d| code(d)).collect();
+    lines.push(format!("| {} | {} |", code("{·,·}"), head.join(" | ")));
+    lines.push(format!("|---|{}", "---|".repeat(head.len())));
+    for (name, row) in table.display.iter().zip(&table.entries) {
+        let cells: Vec<String> = row
+            .iter()
+            .map(|e| code(&e.render(Style::Unicode)))
+            .collect();
+        lines.push(format!("| {} | {} |", code(name), cells.join(" | ")));
+    }
+    lines.join("\n")
+}
+
+fn tower(t: &TowerResult) -> String {
+    let verdict = if t.failures.is_empty() {
+        "all hold".to_string()
+    } else {
+        format!("{} fail: {:?}", t.failures.len(), t.failures)
+    };
+    format!(
+        "{}: {} brackets expanded for the {} (ladder {}), {verdict}",
+        claim(&t.claim),
+        t.checked,
+        t.system,
+        code(&t.ladder)
+    )
+}
+
+fn proof(p: &ProofResult) -> String {
+    let mut lines = vec![format!("**Proof** {}:", p.title), String::new()];
+    let mark = |ok: bool| if ok { "holds" } else { "FAILS" };
+    for (k, f) in p.facts.iter().enumerate() {
+        lines.push(format!(
+            "{}. computed: {} — {}",
+            k + 1,
+            code(&f.statement),
+            mark(f.holds)
+        ));
+    }
+    lines.push(format!(
+        "{}. computed: the derivation property {} on the base functions — {}",
+        p.facts.len() + 1,
+        code("{AB, H} = A{B, H} + B{A, H}"),
+        mark(p.leibniz_check)
+    ));
+    lines.push(String::new());
+    lines.push(format!("*Lemma:* {}.", p.lemma));
+    lines.push(String::new());
+    lines.push(format!("*Therefore:* {}.", p.conclusion));
+    lines.push(String::new());
+    lines.extend(p.claims.iter().map(claim));
+    lines.join("\n")
+}
+
+fn rank(r: &RankResult) -> String {
+    let c = &r.certificate;
+    let rows: Vec<&str> = c
+        .minor_rows
+        .iter()
+        .map(|&i| r.functions[i].as_str())
+        .collect();
+    let cols: Vec<&str> = c
+        .minor_cols
+        .iter()
+        .map(|&v| r.vars.variable(v).unicode())
+        .collect();
+    let point: Vec<String> = point(r, Style::Unicode).iter().map(|p| code(p)).collect();
+    [
+        claim(&r.claim),
+        format!(
+            "  - ≥ {}: the minor {} = {} ≠ 0 at {}",
+            c.rank,
+            code(&format!("∂({})/∂({})", rows.join(", "), cols.join(", "))),
+            code(&number(&c.minor_value)),
+            point.join(", ")
+        ),
+        format!("  - ≤ {}: {}", c.rank, upper_bound(r)),
+    ]
+    .join("\n")
+}

@@ -1,0 +1,123 @@
+//! Rendering a [`Report`] in four formats: unicode text that reads like the paper, Markdown,
+//! a complete LaTeX document, and JSON with a stable schema (see [`json`]).
+//!
+//! Rendering is deterministic: the only nondeterministic data are timings, which appear only in
+//! JSON and in the closing summary line of text and Markdown, and not at all when
+//! [`Options::timings`] is off.
+
+pub mod json;
+pub mod latex;
+pub mod markdown;
+pub mod tex;
+pub mod text;
+
+use std::fmt;
+use std::str::FromStr;
+
+use crate::report::Report;
+
+/// An output format.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Default)]
+pub enum Format {
+    /// Unicode text that reads like the paper: `{L, G1} = −G2   [C09 proved]`.
+    #[default]
+    Text,
+    /// Markdown, tables as Markdown tables.
+    Markdown,
+    /// A complete LaTeX (amsmath) document.
+    Latex,
+    /// JSON: one object per claim, plus tables, proofs, towers and ranks.
+    Json,
+}
+
+impl Format {
+    /// Every format, in the order `--help` lists them.
+    pub const ALL: [Format; 4] = [Format::Text, Format::Markdown, Format::Latex, Format::Json];
+
+    /// The format's name on the command line.
+    pub fn name(self) -> &'static str {
+        match self {
+            Format::Text => "text",
+            Format::Markdown => "markdown",
+            Format::Latex => "latex",
+            Format::Json => "json",
+        }
+    }
+}
+
+impl fmt::Display for Format {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.write_str(self.name())
+    }
+}
+
+impl FromStr for Format {
+    type Err = String;
+
+    fn from_str(s: &str) -> Result<Self, Self::Err> {
+        Format::ALL
+            .into_iter()
+            .find(|f| f.name() == s || (s == "md" && *f == Format::Markdown))
+            .ok_or_else(|| format!("unknown format '{s}' (expected text, markdown, latex or json)"))
+    }
+}
+
+/// Rendering choices.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Options {
+    /// Whether to print timings (off makes the output byte-for-byte reproducible).
+    pub timings: bool,
+}
+
+impl Default for Options {
+    fn default() -> Self {
+        Options { timings: true }
+    }
+}
+
+/// Renders a report; the result ends with a newline.
+pub fn render(report: &Report, format: Format, options: &Options) -> String {
+    match format {
+        Format::Text => text::render(report, options),
+        Format::Markdown => markdown::render(report, options),
+        Format::Latex => latex::render(report, options),
+        Format::Json => json::render(report, options),
+    }
+}
+
+/// Prose markup (formulas between backticks) as plain text.
+pub(crate) fn plain(markup: &str) -> String {
+    markup.replace('`', "")
+}
+
+/// The width of text in a terminal: characters, not counting combining marks.
+pub(crate) fn width(s: &str) -> usize {
+    s.chars().filter(|&c| !tex::is_combining(c)).count()
+}
+
+/// Pads to a width (in terminal columns).
+pub(crate) fn pad(s: &str, w: usize) -> String {
+    let n = width(s);
+    if n >= w {
+        s.to_string()
+    } else {
+        format!("{s}{}", " ".repeat(w - n))
+    }
+}
+
+/// `p_θ = Iω` → ` at p_θ = Iω`; nothing without a condition.
+pub(crate) fn condition_suffix(condition: &Option<String>) -> String {
+    condition
+        .as_ref()
+        .map(|c| format!(" at {c}"))
+        .unwrap_or_default()
+}
+
+/// The name of a number of functions: "5 functions".
+pub(crate) fn plural(n: usize, word: &str) -> String {
+    if n == 1 {
+        format!("{n} {word}")
+    } else {
+        format!("{n} {word}s")
+    }
+}

@@ -1,0 +1,534 @@
+//! From the paper's unicode notation to LaTeX: [`math`] for formulas (`{L, G1} = −G2` →
+//! `\{L, G_{1}\} = -G_{2}`), [`text`] for prose, [`markup`] for prose with formulas between
+//! backticks. The output is ASCII and valid by construction: every special character is
+//! escaped, braces balance, and characters without a translation become `?`.
+
+/// Greek letters and their LaTeX commands.
+const GREEK: &[(char, &str)] = &[
+    ('α', r"\alpha"),
+    ('β', r"\beta"),
+    ('γ', r"\gamma"),
+    ('δ', r"\delta"),
+    ('ε', r"\varepsilon"),
+    ('ζ', r"\zeta"),
+    ('η', r"\eta"),
+    ('θ', r"\theta"),
+    ('ι', r"\iota"),
+    ('κ', r"\kappa"),
+    ('λ', r"\lambda"),
+    ('μ', r"\mu"),
+    ('ν', r"\nu"),
+    ('ξ', r"\xi"),
+    ('π', r"\pi"),
+    ('ρ', r"\rho"),
+    ('σ', r"\sigma"),
+    ('τ', r"\tau"),
+    ('φ', r"\varphi"),
+    ('χ', r"\chi"),
+    ('ψ', r"\psi"),
+    ('ω', r"\omega"),
+    ('Γ', r"\Gamma"),
+    ('Δ', r"\Delta"),
+    ('Θ', r"\Theta"),
+    ('Λ', r"\Lambda"),
+    ('Ξ', r"\Xi"),
+    ('Π', r"\Pi"),
+    ('Σ', r"\Sigma"),
+    ('Φ', r"\Phi"),
+    ('Ψ', r"\Psi"),
+    ('Ω', r"\Omega"),
+];
+
+/// Symbols and their LaTeX math commands.
+const SYMBOLS: &[(char, &str)] = &[
+    ('−', "-"),
+    ('·', r"\cdot"),
+    ('×', r"\times"),
+    ('≤', r"\le"),
+    ('≥', r"\ge"),
+    ('≠', r"\neq"),
+    ('→', r"\to"),
+    ('⇒', r"\Rightarrow"),
+    ('∂', r"\partial"),
+    ('…', r"\dots"),
+    ('⋯', r"\cdots"),
+    ('∈', r"\in"),
+    ('∞', r"\infty"),
+    ('±', r"\pm"),
+    ('∘', r"\circ"),
+    ('≡', r"\equiv"),
+    ('≈', r"\approx"),
+    ('√', r"\surd"),
+    ('∑', r"\sum"),
+    ('′', "'"),
+    ('%', r"\%"),
+    ('&', r"\&"),
+    ('#', r"\#"),
+    ('$', r"\$"),
+    ('~', r"\sim"),
+    ('\\', r"\backslash"),
+];
+
+/// Precomposed letters with an accent: (char, accent, base).
+const ACCENTED: &[(char, &str, char)] = &[
+    ('ẋ', "dot", 'x'),
+    ('ẏ', "dot", 'y'),
+    ('ṗ', "dot", 'p'),
+    ('ẍ', "ddot", 'x'),
+    ('ÿ', "ddot", 'y'),
+    ('ā', "bar", 'a'),
+    ('Ā', "bar", 'A'),
+    ('ū', "bar", 'u'),
+    ('ē', "bar", 'e'),
+];
+
+/// Function names set upright.
+const FUNCTIONS: &[(&str, &str)] = &[
+    ("cos", r"\cos"),
+    ("sin", r"\sin"),
+    ("exp", r"\exp"),
+    ("log", r"\log"),
+    ("Re", r"\operatorname{Re}"),
+    ("Im", r"\operatorname{Im}"),
+    ("rank", r"\operatorname{rank}"),
+    ("conj", r"\operatorname{conj}"),
+];
+
+/// Short words that are prose, not products of variables.
+const STOPWORDS: &[&str] = &[
+    "is", "at", "on", "of", "by", "so", "to", "if", "as", "or", "in", "no", "be", "an", "it",
+];
+
+const SUPERSCRIPTS: &str = "⁰¹²³⁴⁵⁶⁷⁸⁹";
+const SUBSCRIPTS: &str = "₀₁₂₃₄₅₆₇₈₉";
+
+fn greek(c: char) -> Option<&'static str> {
+    GREEK.iter().find(|g| g.0 == c).map(|g| g.1)
+}
+
+fn symbol(c: char) -> Option<&'static str> {
+    SYMBOLS.iter().find(|g| g.0 == c).map(|g| g.1)
+}
+
+fn accent_of(mark: char) -> Option<&'static str> {
+    match mark {
+        '\u{304}' | '\u{305}' => Some("bar"),
+        '\u{307}' => Some("dot"),
+        '\u{308}' => Some("ddot"),
+        '\u{302}' => Some("hat"),
+        '\u{303}' => Some("tilde"),
+        _ => None,
+    }
+}
+
+/// Whether a character is a combining mark (drawn over the previous one).
+pub fn is_combining(c: char) -> bool {
+    ('\u{300}'..='\u{36f}').contains(&c)
+}
+
+/// A lexical token of the unicode notation.
+#[derive(Clone, Debug, PartialEq)]
+enum Tok {
+    /// A run of ASCII letters, with the digits that follow it (`G1` → ("G", "1")).
+    Word(String, String),
+    /// A run of spaces.
+    Space,
+    /// One character (with the accent over it, if any).
+    Char(char, Option<&'static str>),
+}
+
+fn tokenize(s: &str) -> Vec<Tok> {
+    let chars: Vec<char> = s.chars().collect();
+    let mut out = Vec::new();
+    let mut i = 0;
+    let accent_at = |j: usize| chars.get(j).copied().and_then(accent_of);
+    while i < chars.len() {
+        let c = chars[i];
+        if c == ' ' {
+            while i < chars.len() && chars[i] == ' ' {
+                i += 1;
+            }
+            out.push(Tok::Space);
+        } else if c.is_ascii_alphabetic() && accent_at(i + 1).is_none() {
+            let mut word = String::new();
+            while i < chars.len() && chars[i].is_ascii_alphabetic() && accent_at(i + 1).is_none() {
+                word.push(chars[i]);
+                i += 1;
+            }
+            let mut digits = String::new();
+            while i < chars.len() && chars[i].is_ascii_digit() {
+                digits.push(chars[i]);
+                i += 1;
+            }
+            out.push(Tok::Word(word, digits));
+        } else {
+            let accent = accent_at(i + 1);
+            out.push(Tok::Char(c, accent));
+            i += 1;
+            // Skip the combining marks (an unknown one is dropped).
+            while i < chars.len() && is_combining(chars[i]) {
+                i += 1;
+            }
+        }
+    }
+    out
+}
+
+fn is_prose_word(w: &str) -> bool {
+    let lower = w.chars().all(|c| c.is_ascii_lowercase());
+    (lower && w.len() >= 3 && !FUNCTIONS.iter().any(|f| f.0 == w)) || STOPWORDS.contains(&w)
+}
+
+/// Appends a control word, followed by a space so that a letter after it cannot extend it.
+fn push_cmd(out: &mut String, cmd: &str) {
+    out.push_str(cmd);
+    if cmd.starts_with('\\') && cmd[1..].chars().all(|c| c.is_ascii_alphabetic()) {
+        out.push(' ');
+    }
+}
+
+fn char_math(c: char) -> Option<String> {
+    if let Some(g) = greek(c) {
+        return Some(g.to_string());
+    }
+    if let Some(s) = symbol(c) {
+        return Some(s.to_string());
+    }
+    if let Some((_, accent, base)) = ACCENTED.iter().find(|a| a.0 == c) {
+        return Some(format!(r"\{accent}{{{base}}}"));
+    }
+    if c.is_ascii() && !c.is_ascii_control() {
+        return Some(c.to_string());
+    }
+    None
+}
+
+/// Translates a formula in the paper's unicode notation into LaTeX math (without `$`).
+///
+/// ```
+/// use superint::render::tex::math;
+/// assert_eq!(math("{L, G1} = −G2"), r"\{L, G_{1}\} = -G_{2}");
+/// assert_eq!(math("ṗ_θ = 0"), r"\dot{p}_{\theta } = 0");
+/// assert_eq!(math("K̄_{m,n} for all m"), r"\bar{K}_{m,n}\ \text{for all}\ m");
+/// ```
+pub fn math(s: &str) -> String {
+    translate(s)
+}
+
+/// A sentence that mixes prose and formulas, in text mode: runs of prose words stay text,
+/// runs of anything else become inline math, so that the line can break between words.
+///
+/// ```
+/// use superint::render::tex::sentence;
+/// assert_eq!(
+///     sentence("so {A, H} = λ_A A for all m, n ≥ 0"),
+///     r"so $\{A, H\} = \lambda _{A} A$ for all $m, n \ge 0$"
+/// );
+/// ```
+pub fn sentence(s: &str) -> String {
+    let is_prose = |chunk: &str| {
+        let w = chunk.trim_end_matches([',', '.', ';', ':']);
+        !w.is_empty()
+            && (w == "a" || is_prose_word(w))
+            && w.chars().all(|c| c.is_ascii_alphabetic())
+    };
+    let mut out: Vec<String> = Vec::new();
+    let mut run: Vec<&str> = Vec::new();
+    let flush = |run: &mut Vec<&str>, out: &mut Vec<String>| {
+        if !run.is_empty() {
+            out.push(format!("${}$", math(&run.join(" "))));
+            run.clear();
+        }
+    };
+    for chunk in s.split(' ').filter(|c| !c.is_empty()) {
+        if is_prose(chunk) {
+            flush(&mut run, &mut out);
+            out.push(text(chunk));
+        } else {
+            run.push(chunk);
+        }
+    }
+    flush(&mut run, &mut out);
+    out.join(" ")
+}
+
+fn translate(s: &str) -> String {
+    let toks = tokenize(s);
+    // Classify words: prose or mathematics.
+    // Words inside a script (`e^{−inθ}`) are never prose.
+    let mut prose = vec![false; toks.len()];
+    let mut scripts: Vec<bool> = Vec::new();
+    for (k, t) in toks.iter().enumerate() {
+        match t {
+            Tok::Word(w, d) => {
+                prose[k] = d.is_empty() && is_prose_word(w) && !scripts.contains(&true);
+            }
+            Tok::Char('{', _) => {
+                let script = k > 0 && matches!(toks[k - 1], Tok::Char('_' | '^', _));
+                scripts.push(script);
+            }
+            Tok::Char('}', _) => {
+                scripts.pop();
+            }
+            _ => {}
+        }
+    }
+    // A lone "a" before a prose word is the article.
+    for k in 0..toks.len() {
+        if toks[k] == Tok::Word("a".into(), String::new())
+            && toks.get(k + 1) == Some(&Tok::Space)
+            && prose.get(k + 2) == Some(&true)
+        {
+            prose[k] = true;
+        }
+    }
+    let mut out = String::new();
+    let mut braces: Vec<bool> = Vec::new();
+    let mut k = 0;
+    while k < toks.len() {
+        match &toks[k] {
+            Tok::Space => {
+                let before = k > 0 && prose[k - 1];
+                let after = prose.get(k + 1) == Some(&true);
+                if before || after {
+                    if out.ends_with(' ') {
+                        out.pop();
+                    }
+                    out.push_str(r"\ ");
+                } else if !out.ends_with(' ') {
+                    out.push(' ');
+                }
+            }
+            Tok::Word(w, d) if prose[k] => {
+                // Merge a run of prose words into one \text{…}.
+                let mut words = vec![w.clone()];
+                let _ = d;
+                while toks.get(k + 1) == Some(&Tok::Space) && prose.get(k + 2) == Some(&true) {
+                    if let Tok::Word(w2, _) = &toks[k + 2] {
+                        words.push(w2.clone());
+                    }
+                    k += 2;
+                }
+                out.push_str(&format!(r"\text{{{}}}", words.join(" ")));
+            }
+            Tok::Word(w, d) => {
+                match FUNCTIONS.iter().find(|f| f.0 == w) {
+                    Some(f) => push_cmd(&mut out, f.1),
+                    None => out.push_str(w),
+                }
+                if !d.is_empty() {
+                    out.push_str(&format!("_{{{d}}}"));
+                }
+            }
+            Tok::Char(c, accent) => {
+                let c = *c;
+                match c {
+                    '{' => {
+                        let group = out.ends_with('_') || out.ends_with('^');
+                        braces.push(group);
+                        out.push_str(if group { "{" } else { r"\{" });
+                    }
+                    '}' => match braces.pop() {
+                        Some(true) => out.push('}'),
+                        _ => out.push_str(r"\}"),
+                    },
+                    '_' | '^' => {
+                        out.push(c);
+                        // `p_x`, `a_ij`, `A^m`: an unbraced script takes a run of letters.
+                        match toks.get(k + 1) {
+                            Some(Tok::Word(w, d)) => {
+                                out.push_str(&format!("{{{w}{d}}}"));
+                                k += 1;
+                            }
+                            Some(Tok::Char(c2, acc)) if *c2 != '{' => {
+                                out.push('{');
+                                push_char(&mut out, *c2, *acc);
+                                out.push('}');
+                                k += 1;
+                            }
+                            _ => {}
+                        }
+                    }
+                    _ if SUPERSCRIPTS.contains(c) || c == '⁻' || SUBSCRIPTS.contains(c) => {
+                        let sup = !SUBSCRIPTS.contains(c);
+                        let mut run = String::new();
+                        while let Some(Tok::Char(c2, None)) = toks.get(k) {
+                            let digit = if sup {
+                                SUPERSCRIPTS.chars().position(|d| d == *c2)
+                            } else {
+                                SUBSCRIPTS.chars().position(|d| d == *c2)
+                            };
+                            match (digit, *c2 == '⁻' && sup) {
+                                (Some(d), _) => run.push_str(&d.to_string()),
+                                (None, true) => run.push('-'),
+                                _ => break,
+                            }
+                            k += 1;
+                        }
+                        out.push_str(&format!("{}{{{run}}}", if sup { '^' } else { '_' }));
+                        continue;
+                    }
+                    _ => push_char(&mut out, c, *accent),
+                }
+            }
+        }
+        k += 1;
+    }
+    // Close anything left open so the output always balances.
+    while let Some(group) = braces.pop() {
+        out.push_str(if group { "}" } else { "" });
+    }
+    out.trim_end().to_string()
+}
+
+fn push_char(out: &mut String, c: char, accent: Option<&'static str>) {
+    let body = char_math(c).unwrap_or_else(|| "?".into());
+    match accent {
+        Some(a) => out.push_str(&format!(r"\{a}{{{body}}}")),
+        None => push_cmd(out, &body),
+    }
+}
+
+/// Escapes prose for LaTeX text mode; mathematical characters become inline math.
+///
+/// ```
+/// use superint::render::tex::text;
+/// assert_eq!(text("rank 5 & 50% of ω"), r"rank 5 \& 50\% of $\omega$");
+/// ```
+pub fn text(s: &str) -> String {
+    let mut out = String::new();
+    for c in s.chars() {
+        match c {
+            '{' => out.push_str(r"\{"),
+            '}' => out.push_str(r"\}"),
+            '_' => out.push_str(r"\_"),
+            '^' => out.push_str(r"\^{}"),
+            '%' | '&' | '#' | '$' => {
+                out.push('\\');
+                out.push(c);
+            }
+            '\\' => out.push_str(r"\textbackslash{}"),
+            '~' => out.push_str(r"\textasciitilde{}"),
+            '<' => out.push_str(r"\textless{}"),
+            '>' => out.push_str(r"\textgreater{}"),
+            '|' => out.push_str(r"\textbar{}"),
+            '"' => out.push_str("''"),
+            '’' => out.push('\''),
+            '—' => out.push_str("---"),
+            '–' => out.push_str("--"),
+            _ if c.is_ascii() => out.push(c),
+            _ if is_combining(c) => {}
+            _ => out.push_str(&format!("${}$", math(&c.to_string()))),
+        }
+    }
+    out
+}
+
+/// Prose with formulas between backticks: the formulas become inline math.
+///
+/// ```
+/// use superint::render::tex::markup;
+/// assert_eq!(markup("adds `p_θ²/(2I)` to H"), r"adds $p_{\theta }^{2}/(2I)$ to H");
+/// ```
+pub fn markup(s: &str) -> String {
+    s.split('`')
+        .enumerate()
+        .map(|(k, part)| {
+            if k % 2 == 1 {
+                format!("${}$", math(part))
+            } else {
+                text(part)
+            }
+        })
+        .collect()
+}
+
+/// Where a statement's relation is: the byte offset of the first `=` or `≠` outside brackets
+/// and parentheses, for aligning.
+pub fn relation(s: &str) -> Option<usize> {
+    let mut depth = 0i32;
+    for (k, c) in s.char_indices() {
+        match c {
+            '{' | '(' | '[' => depth += 1,
+            '}' | ')' | ']' => depth -= 1,
+            '=' | '≠' if depth == 0 => return Some(k),
+            _ => {}
+        }
+    }
+    None
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn balanced(s: &str) -> bool {
+        let mut depth = 0i32;
+        let mut prev = ' ';
+        for c in s.chars() {
+            if prev != '\\' {
+                match c {
+                    '{' => depth += 1,
+                    '}' => depth -= 1,
+                    _ => {}
+                }
+            }
+            if depth < 0 {
+                return false;
+            }
+            prev = if prev == '\\' { ' ' } else { c };
+        }
+        depth == 0
+    }
+
+    #[test]
+    fn formulas_translate_like_the_paper() {
+        for (u, t) in [
+            ("{L, G1} = −G2", r"\{L, G_{1}\} = -G_{2}"),
+            (
+                "4G1² + G2² + ω²L² = (F1 − F2)²",
+                r"4G_{1}^{2} + G_{2}^{2} + \omega ^{2}L^{2} = (F_{1} - F_{2})^{2}",
+            ),
+            ("ẋ = p_x/M", r"\dot{x} = p_{x}/M"),
+            ("θ̇ = p_θ/I", r"\dot{\theta} = p_{\theta }/I"),
+            ("{Z̄, F1} = −iωZ̄", r"\{\bar{Z}, F_{1}\} = -i\omega \bar{Z}"),
+            ("e^{−inθ}", r"e^{-in\theta }"),
+            ("G1'", "G_{1}'"),
+            ("a_ij", "a_{ij}"),
+            ("x₀", "x_{0}"),
+            ("ω⁻¹²", r"\omega ^{-12}"),
+            ("e^{−inθ} for all", r"e^{-in\theta }\ \text{for all}"),
+            (
+                "Re(A_x⁵Ā_y³)",
+                r"\operatorname{Re}(A_{x}^{5}\bar{A}_{y}^{3})",
+            ),
+            ("cos θ", r"\cos \theta"),
+            ("50% & #1 $", r"50\% \& \#1 \$"),
+        ] {
+            assert_eq!(math(u), t, "{u}");
+            assert!(balanced(&math(u)), "{u}");
+            assert!(math(u).is_ascii(), "{u}");
+        }
+    }
+
+    #[test]
+    fn prose_is_set_as_text() {
+        assert_eq!(
+            math("the bracket is a derivation, so A"),
+            r"\text{the bracket is a derivation},\ \text{so}\ A"
+        );
+    }
+
+    #[test]
+    fn unbalanced_input_still_balances() {
+        for s in ["{x", "x}", "e^{x", "{{", "}}"] {
+            assert!(balanced(&math(s)), "{s} → {}", math(s));
+        }
+    }
+
+    #[test]
+    fn relation_skips_brackets() {
+        assert_eq!(relation("{a = b} = c"), Some(8));
+        assert_eq!(relation("f(x = 1)"), None);
+    }
+}

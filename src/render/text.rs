@@ -1,0 +1,325 @@
+//! Unicode text that reads like the paper: `{L, G1} = −G2   [C09 proved]`.
+
+use brackets::UpperBound;
+use trigpoly::{GaussianRational, Style, VarKind};
+
+use super::{condition_suffix, pad, plain, plural, width, Options};
+use crate::report::{
+    ClaimKind, ClaimResult, Entry, Equations, ProofResult, RankResult, Report, TableResult,
+    TowerResult,
+};
+
+/// The column where claim verdicts start.
+const VERDICT_COLUMN: usize = 66;
+/// Prose is wrapped at this width.
+const WRAP: usize = 96;
+
+/// Renders a report as text.
+pub fn render(report: &Report, options: &Options) -> String {
+    let mut out = Vec::<String>::new();
+    out.push(report.title.clone());
+    if !report.subtitle.is_empty() {
+        out.extend(wrap(&report.subtitle, WRAP, ""));
+    }
+    for s in &report.sections {
+        out.push(String::new());
+        let heading = format!("{}  {}", s.number, s.title);
+        out.push(heading.clone());
+        out.push("═".repeat(width(&heading)));
+        // Entries are blocks separated by a blank line, except that consecutive claims form
+        // one block and a heading sits right on its block.
+        let mut previous: Option<&Entry> = None;
+        for e in &s.entries {
+            let joined = matches!(
+                (previous, e),
+                (Some(Entry::Claim(_)), Entry::Claim(_)) | (Some(Entry::Heading(_)), _)
+            );
+            if previous.is_some() && !joined {
+                out.push(String::new());
+            }
+            entry(&mut out, e);
+            previous = Some(e);
+        }
+    }
+    out.push(String::new());
+    out.push(report.summary_line(options.timings));
+    let mut text = out.join("\n");
+    text.push('\n');
+    text
+}
+
+fn entry(out: &mut Vec<String>, e: &Entry) {
+    match e {
+        Entry::Heading(h) => {
+            out.push(h.clone());
+            out.push("─".repeat(width(h)));
+        }
+        Entry::Text(t) => out.extend(wrap(&plain(t), WRAP, "")),
+        Entry::Equations(eq) => equations(out, eq),
+        Entry::Claim(c) => claim(out, c),
+        Entry::Table(t) => table(out, t),
+        Entry::Proof(p) => proof(out, p),
+        Entry::Tower(t) => tower(out, t),
+        Entry::Rank(r) => rank(out, r),
+    }
+}
+
+/// Greedy word wrap at spaces, keeping the leading indentation; continuation lines start
+/// with `indent`.
+pub(crate) fn wrap(s: &str, w: usize, indent: &str) -> Vec<String> {
+    let lead = &s[..s.len() - s.trim_start_matches(' ').len()];
+    let mut lines = Vec::new();
+    let mut line = lead.to_string();
+    let mut empty = true;
+    for word in s.split(' ').filter(|w| !w.is_empty()) {
+        if !empty && width(&line) + 1 + width(word) > w {
+            lines.push(std::mem::take(&mut line));
+            line.push_str(indent);
+            empty = true;
+        }
+        if !empty {
+            line.push(' ');
+        }
+        line.push_str(word);
+        empty = false;
+    }
+    if !empty {
+        lines.push(line);
+    }
+    lines
+}
+
+/// Items joined by `, `, wrapped between items only.
+fn wrap_items(indent: &str, items: &[String], w: usize) -> Vec<String> {
+    let mut lines = Vec::new();
+    let mut line = indent.to_string();
+    for (k, item) in items.iter().enumerate() {
+        let piece = if k + 1 < items.len() {
+            format!("{item},")
+        } else {
+            item.clone()
+        };
+        if line.len() > indent.len() && width(&line) + 1 + width(&piece) > w {
+            lines.push(std::mem::take(&mut line));
+            line.push_str(indent);
+        } else if line.len() > indent.len() {
+            line.push(' ');
+        }
+        line.push_str(&piece);
+    }
+    lines.push(line);
+    lines
+}
+
+fn equations(out: &mut Vec<String>, eq: &Equations) {
+    if !eq.caption.is_empty() {
+        out.push(format!("{}:", eq.caption));
+    }
+    let lw = eq.lines.iter().map(|l| width(&l.lhs)).max().unwrap_or(0);
+    for l in &eq.lines {
+        let line = format!("    {} = {}", pad(&l.lhs, lw), l.rhs);
+        if width(&line) <= WRAP {
+            out.push(line);
+        } else {
+            out.extend(wrap(&line, WRAP, &" ".repeat(4 + lw + 3)));
+        }
+    }
+}
+
+/// `  statement at condition ........ [C09 proved]`, and what was found when it failed.
+fn verdict_line(out: &mut Vec<String>, c: &ClaimResult) {
+    let head = format!("  {}{}", c.statement, condition_suffix(&c.condition));
+    let tag = if c.proved {
+        format!("[{} proved]", c.id)
+    } else {
+        format!("[{} REFUTED]", c.id)
+    };
+    if width(&head) + 2 <= VERDICT_COLUMN {
+        out.push(format!("{}{tag}", pad(&head, VERDICT_COLUMN)));
+    } else {
+        out.push(format!("{head}  {tag}"));
+    }
+    if let Some(r) = &c.residual {
+        out.push(format!("      residual lhs − rhs = {r}"));
+    }
+    if let Some(n) = &c.note {
+        out.push(format!("      {n}"));
+    }
+}
+
+fn claim(out: &mut Vec<String>, c: &ClaimResult) {
+    verdict_line(out, c);
+    if let (ClaimKind::Nonvanishing, Some(w)) = (c.kind, &c.witness) {
+        let line = format!("      it equals {w}");
+        if width(&line) <= 3 * WRAP {
+            out.extend(wrap(&line, WRAP, "        "));
+        } else {
+            out.push(format!("      it is a nonzero sum of {} terms", w.len()));
+        }
+    }
+}
+
+fn table(out: &mut Vec<String>, t: &TableResult) {
+    out.push(plain(&t.caption));
+    let table = &t.table;
+    let corner = "{·,·}".to_string();
+    let cells: Vec<Vec<String>> = table
+        .entries
+        .iter()
+        .map(|row| row.iter().map(|e| e.render(Style::Unicode)).collect())
+        .collect();
+    let first = table
+        .display
+        .iter()
+        .map(|d| width(d))
+        .chain([width(&corner)])
+        .max()
+        .unwrap_or(0);
+    let widths: Vec<usize> = (0..table.display.len())
+        .map(|j| {
+            cells
+                .iter()
+                .map(|row| width(&row[j]))
+                .chain([width(&table.display[j])])
+                .max()
+                .unwrap_or(0)
+        })
+        .collect();
+    let row = |head: &str, items: &[String]| {
+        let body: Vec<String> = items.iter().zip(&widths).map(|(c, &w)| pad(c, w)).collect();
+        format!("    {} │ {}", pad(head, first), body.join("   "))
+            .trim_end()
+            .to_string()
+    };
+    out.push(row(&corner, &table.display));
+    let rule: usize = widths.iter().sum::<usize>() + 3 * widths.len().saturating_sub(1) + 1;
+    out.push(format!(
+        "    {}┼{}",
+        "─".repeat(first + 1),
+        "─".repeat(rule)
+    ));
+    for (name, items) in table.display.iter().zip(&cells) {
+        out.push(row(name, items));
+    }
+}
+
+fn tower(out: &mut Vec<String>, t: &TowerResult) {
+    verdict_line(out, &t.claim);
+    let verdict = if t.failures.is_empty() {
+        "all hold".to_string()
+    } else {
+        format!("{} fail: {:?}", t.failures.len(), t.failures)
+    };
+    out.push(format!(
+        "      {} brackets expanded for the {} (ladder {}), {verdict}",
+        t.checked, t.system, t.ladder
+    ));
+}
+
+fn proof(out: &mut Vec<String>, p: &ProofResult) {
+    out.push(format!("  Proof {}:", p.title));
+    let mark = |ok: bool| if ok { "holds" } else { "FAILS" };
+    let lines: Vec<(String, bool)> = p
+        .facts
+        .iter()
+        .map(|f| (f.statement.clone(), f.holds))
+        .chain([(
+            "the derivation property {AB, H} = A{B, H} + B{A, H} on the base functions".into(),
+            p.leibniz_check,
+        )])
+        .collect();
+    for (k, (st, ok)) in lines.iter().enumerate() {
+        let head = format!("    {}. computed: {st}", k + 1);
+        if width(&head) + 2 <= VERDICT_COLUMN {
+            out.push(format!("{}{}", pad(&head, VERDICT_COLUMN), mark(*ok)));
+        } else {
+            out.push(format!("{head}  {}", mark(*ok)));
+        }
+    }
+    out.extend(wrap(&format!("    Lemma: {}.", p.lemma), WRAP, "      "));
+    out.extend(wrap(
+        &format!("    Therefore: {}.", p.conclusion),
+        WRAP,
+        "      ",
+    ));
+    for c in &p.claims {
+        verdict_line(out, c);
+    }
+}
+
+/// `x = 2`, `cos θ = 3/5, sin θ = 4/5`: the point of a rank certificate, in a style.
+pub(crate) fn point(r: &RankResult, style: Style) -> Vec<String> {
+    let name = |v| {
+        let var = r.vars.variable(v);
+        match style {
+            Style::Unicode => var.unicode().to_string(),
+            Style::Latex => var.latex().to_string(),
+            Style::Ascii => var.name().to_string(),
+        }
+    };
+    r.certificate
+        .point
+        .iter()
+        .map(|(v, value)| {
+            if r.vars.variable(*v).kind() == VarKind::Angle {
+                let (c, s) = (&value.re, &value.im);
+                match style {
+                    Style::Latex => format!(r"\cos{0} = {c}, \sin{0} = {s}", name(*v)),
+                    Style::Ascii => format!("cos({0}) = {c}, sin({0}) = {s}", name(*v)),
+                    Style::Unicode => format!("cos {0} = {c}, sin {0} = {s}", name(*v)),
+                }
+            } else {
+                format!("{} = {}", name(*v), number(value))
+            }
+        })
+        .collect()
+}
+
+/// A number of Q(i) as text.
+pub(crate) fn number(q: &GaussianRational) -> String {
+    q.to_string()
+}
+
+/// Why the rank is at most the certified one, in words.
+pub(crate) fn upper_bound(r: &RankResult) -> String {
+    let k = r.certificate.rank;
+    match &r.certificate.upper {
+        UpperBound::Size if r.functions.len() <= r.coordinates.len() => {
+            format!("there are {}", plural(r.functions.len(), "function"))
+        }
+        UpperBound::Size => format!("there are {}", plural(r.coordinates.len(), "coordinate")),
+        UpperBound::VanishingMinors { count } => format!(
+            "every {0} × {0} minor ({1}) vanishes identically",
+            k + 1,
+            plural(*count, "minor")
+        ),
+    }
+}
+
+fn rank(out: &mut Vec<String>, r: &RankResult) {
+    verdict_line(out, &r.claim);
+    let c = &r.certificate;
+    let rows: Vec<&str> = c
+        .minor_rows
+        .iter()
+        .map(|&i| r.functions[i].as_str())
+        .collect();
+    let cols: Vec<&str> = c
+        .minor_cols
+        .iter()
+        .map(|&v| r.vars.variable(v).unicode())
+        .collect();
+    out.extend(wrap(
+        &format!(
+            "      ≥ {}: the minor ∂({})/∂({}) = {} ≠ 0 at",
+            c.rank,
+            rows.join(", "),
+            cols.join(", "),
+            number(&c.minor_value).replace('-', "−"),
+        ),
+        WRAP,
+        "        ",
+    ));
+    out.extend(wrap_items("        ", &point(r, Style::Unicode), WRAP));
+    out.push(format!("      ≤ {}: {}", c.rank, upper_bound(r)));
+}

@@ -1,0 +1,315 @@
+//! The structured result of a job: sections of entries (prose, equations, checked claims,
+//! bracket tables, proofs, towers, rank certificates), computed once and rendered by
+//! [`crate::render`] in any format.
+//!
+//! Mathematics is kept as values ([`Expr`], [`BracketTable`], [`RankCertificate`]) and as short
+//! strings in the paper's unicode notation (`{L, G1} = −G2`); a renderer turns both into its
+//! own notation. Timings are the only nondeterministic data and are kept apart (`seconds`).
+
+use std::sync::Arc;
+
+use brackets::{BracketTable, RankCertificate};
+use trigpoly::{Expr, Var, VarSet};
+
+/// A whole report: a title, sections, and what its closing line summarises.
+#[derive(Clone, Debug)]
+pub struct Report {
+    /// The report's title.
+    pub title: String,
+    /// A subtitle (the paper it checks), possibly empty.
+    pub subtitle: String,
+    /// The sections, in order.
+    pub sections: Vec<Section>,
+    /// What the closing line says.
+    pub summary: SummaryKind,
+    /// Seconds spent computing the whole report.
+    pub seconds: f64,
+}
+
+/// What the closing summary line of a report counts.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum SummaryKind {
+    /// The claims: `26 claims: 26 proved, 0 refuted`.
+    Claims,
+    /// The first tower of the report: `tower: 64 brackets … checked for 1 ≤ m, n ≤ 8, all hold`.
+    Tower,
+}
+
+/// A numbered section of the paper.
+#[derive(Clone, Debug)]
+pub struct Section {
+    /// The paper's section number (2 to 5).
+    pub number: u32,
+    /// The title.
+    pub title: String,
+    /// The entries, in order.
+    pub entries: Vec<Entry>,
+}
+
+/// One item of a section, computed.
+#[derive(Clone, Debug)]
+pub enum Entry {
+    /// A sub-heading.
+    Heading(String),
+    /// A paragraph in markup: plain prose with mathematics between backticks
+    /// (`` the rotor adds `p_θ²/(2I)` ``).
+    Text(String),
+    /// Displayed equations `lhs = rhs`, such as a Hamiltonian or Hamilton's equations.
+    Equations(Equations),
+    /// A checked claim.
+    Claim(ClaimResult),
+    /// A table of brackets.
+    Table(TableResult),
+    /// A proof for all `m, n` (base facts computed, lemma, conclusion).
+    Proof(ProofResult),
+    /// A bounded tower of brackets checked by expansion.
+    Tower(TowerResult),
+    /// A certified Jacobian rank.
+    Rank(RankResult),
+}
+
+/// Displayed equations.
+#[derive(Clone, Debug)]
+pub struct Equations {
+    /// What the equations are (`Hamilton's equations`), possibly empty.
+    pub caption: String,
+    /// The lines.
+    pub lines: Vec<Equation>,
+}
+
+/// One displayed equation `lhs = rhs`.
+#[derive(Clone, Debug)]
+pub struct Equation {
+    /// The left side in the paper's unicode notation (`ṗ_x`, `H`, `P_{1,1}`).
+    pub lhs: String,
+    /// The right side.
+    pub rhs: Expr,
+}
+
+impl Equation {
+    /// `lhs = rhs`.
+    pub fn new(lhs: &str, rhs: Expr) -> Self {
+        Equation {
+            lhs: lhs.to_string(),
+            rhs,
+        }
+    }
+}
+
+/// Whether a claim asserts an identity or that something does not vanish.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum ClaimKind {
+    /// `lhs = rhs` (under the condition): proved when `lhs − rhs` is exactly zero.
+    Identity,
+    /// `lhs ≠ rhs` (under the condition): proved when `lhs − rhs` is not zero; the nonzero
+    /// difference is the witness.
+    Nonvanishing,
+}
+
+/// A claim of the paper, checked.
+#[derive(Clone, Debug)]
+pub struct ClaimResult {
+    /// The claim's id (`C09`).
+    pub id: String,
+    /// How the claim reads, in the paper's unicode notation (`{L, G1} = −G2`).
+    pub statement: String,
+    /// Where it is claimed to hold (`p_θ = Iω`), if it is conditional.
+    pub condition: Option<String>,
+    /// Identity or nonvanishing.
+    pub kind: ClaimKind,
+    /// Whether the claim was proved.
+    pub proved: bool,
+    /// For a refuted identity, the nonzero residual `lhs − rhs` in normal form.
+    pub residual: Option<Expr>,
+    /// For a proved nonvanishing claim, the nonzero value that proves it.
+    pub witness: Option<Expr>,
+    /// For a claim proved or refuted by a derived check (a tower, a proof, a rank), what failed.
+    pub note: Option<String>,
+    /// Seconds spent checking it.
+    pub seconds: f64,
+}
+
+impl ClaimResult {
+    /// A claim decided by a derived check (tower, proof, rank) rather than one residual.
+    pub fn derived(id: &str, statement: &str, proved: bool, note: Option<String>) -> Self {
+        ClaimResult {
+            id: id.to_string(),
+            statement: statement.to_string(),
+            condition: None,
+            kind: ClaimKind::Identity,
+            proved,
+            residual: None,
+            witness: None,
+            note,
+            seconds: 0.0,
+        }
+    }
+
+    /// The same result with a timing.
+    pub fn timed(mut self, seconds: f64) -> Self {
+        self.seconds = seconds;
+        self
+    }
+}
+
+/// A bracket table of named functions of a system.
+#[derive(Clone, Debug)]
+pub struct TableResult {
+    /// What the table shows (`{A, B} for the harmonic rotor`).
+    pub caption: String,
+    /// The table, as the engine computed it.
+    pub table: BracketTable,
+}
+
+/// One computed base fact of a proof.
+#[derive(Clone, Debug)]
+pub struct Fact {
+    /// How the fact reads (`{Z, H} = iω Z`).
+    pub statement: String,
+    /// Whether the engine found it to hold exactly.
+    pub holds: bool,
+}
+
+/// A proof for all `m, n` by the eigenfunction lemma.
+#[derive(Clone, Debug)]
+pub struct ProofResult {
+    /// What is proved, in one line.
+    pub title: String,
+    /// The base facts, each computed by the engine.
+    pub facts: Vec<Fact>,
+    /// The lemma applied (prose with mathematics, as the engine states it).
+    pub lemma: String,
+    /// Whether the derivation property was checked on the base functions.
+    pub leibniz_check: bool,
+    /// The conclusion (prose with mathematics, as the engine states it).
+    pub conclusion: String,
+    /// The claims the proof settles.
+    pub claims: Vec<ClaimResult>,
+}
+
+impl ProofResult {
+    /// Whether every step holds.
+    pub fn holds(&self) -> bool {
+        self.facts.iter().all(|f| f.holds) && self.leibniz_check
+    }
+}
+
+/// `{K_{m,n}, H} = i(mω − nΩ) K_{m,n}` checked by expansion for `1 ≤ m, n ≤ max`.
+#[derive(Clone, Debug)]
+pub struct TowerResult {
+    /// The system's name.
+    pub system: String,
+    /// The ladder function's display name (`Z`, `Z'`).
+    pub ladder: String,
+    /// The bound.
+    pub max: i64,
+    /// How many brackets were expanded.
+    pub checked: usize,
+    /// The `(m, n)` where the identity failed.
+    pub failures: Vec<(i64, i64)>,
+    /// The claim it settles.
+    pub claim: ClaimResult,
+}
+
+/// A certified rank of a Jacobian `∂(F_1, …, F_k)/∂(q, p)`.
+#[derive(Clone, Debug)]
+pub struct RankResult {
+    /// The functions' names, in the paper's notation.
+    pub functions: Vec<String>,
+    /// The variables of the system (for printing the point and the coordinates).
+    pub vars: Arc<VarSet>,
+    /// The phase-space coordinates, in the Jacobian's column order.
+    pub coordinates: Vec<Var>,
+    /// The rank the paper states.
+    pub expected: usize,
+    /// The engine's certificate.
+    pub certificate: RankCertificate,
+    /// The claim it settles.
+    pub claim: ClaimResult,
+}
+
+impl Report {
+    /// Every checked claim, in order: plain claims and those settled by tables, proofs, towers
+    /// and ranks.
+    pub fn claims(&self) -> Vec<&ClaimResult> {
+        let mut out = Vec::new();
+        for s in &self.sections {
+            for e in &s.entries {
+                match e {
+                    Entry::Claim(c) => out.push(c),
+                    Entry::Proof(p) => out.extend(p.claims.iter()),
+                    Entry::Tower(t) => out.push(&t.claim),
+                    Entry::Rank(r) => out.push(&r.claim),
+                    _ => {}
+                }
+            }
+        }
+        out
+    }
+
+    /// The claim ids in order of first appearance, each with whether all its checks were
+    /// proved.
+    pub fn claim_ids(&self) -> Vec<(String, bool)> {
+        let mut out: Vec<(String, bool)> = Vec::new();
+        for c in self.claims() {
+            match out.iter_mut().find(|(id, _)| *id == c.id) {
+                Some((_, ok)) => *ok &= c.proved,
+                None => out.push((c.id.clone(), c.proved)),
+            }
+        }
+        out
+    }
+
+    /// Whether every check was proved.
+    pub fn all_proved(&self) -> bool {
+        self.claims().iter().all(|c| c.proved)
+    }
+
+    /// The first tower of the report, if any.
+    pub fn tower(&self) -> Option<&TowerResult> {
+        self.sections
+            .iter()
+            .flat_map(|s| &s.entries)
+            .find_map(|e| match e {
+                Entry::Tower(t) => Some(t),
+                _ => None,
+            })
+    }
+
+    /// The closing line: `26 claims: 26 proved, 0 refuted (93 exact checks, 0.41 s)`, or for a
+    /// tower job `tower: 64 brackets {K_{m,n}, H} = … checked for 1 ≤ m, n ≤ 8, all hold (0.04 s)`.
+    /// `timings` adds the seconds.
+    pub fn summary_line(&self, timings: bool) -> String {
+        let time = if timings {
+            format!(", {:.2} s", self.seconds)
+        } else {
+            String::new()
+        };
+        if let (SummaryKind::Tower, Some(t)) = (self.summary, self.tower()) {
+            let verdict = if t.failures.is_empty() {
+                "all hold".to_string()
+            } else {
+                format!("{} FAIL", t.failures.len())
+            };
+            let time = if timings {
+                format!(" ({:.2} s)", t.claim.seconds)
+            } else {
+                String::new()
+            };
+            return format!(
+                "tower: {} brackets {{K_{{m,n}}, H}} = i(mω − nΩ)K_{{m,n}} checked for \
+                 1 ≤ m, n ≤ {}, {verdict}{time}",
+                t.checked, t.max
+            );
+        }
+        let ids = self.claim_ids();
+        let proved = ids.iter().filter(|(_, ok)| *ok).count();
+        format!(
+            "{} claims: {} proved, {} refuted ({} exact checks{time})",
+            ids.len(),
+            proved,
+            ids.len() - proved,
+            self.claims().len()
+        )
+    }
+}

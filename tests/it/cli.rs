@@ -1,0 +1,307 @@
+//! The `superint` binary, run for real: whole outputs compared with snapshot files in
+//! `tests/it/snapshots/`, every format parsed or checked for structure, exit codes.
+//!
+//! After an intended change of output, rewrite the snapshots with
+//! `SUPERINT_UPDATE_SNAPSHOTS=1 cargo test --test it cli`, and read the diff.
+
+use std::path::{Path, PathBuf};
+use std::process::{Command, Output};
+
+use pretty_assertions::assert_eq;
+use serde_json::Value;
+
+/// Runs the binary with arguments.
+fn superint(args: &[&str]) -> Output {
+    Command::new(env!("CARGO_BIN_EXE_superint"))
+        .args(args)
+        .output()
+        .expect("the superint binary runs")
+}
+
+fn stdout(o: &Output) -> String {
+    String::from_utf8(o.stdout.clone()).expect("stdout is UTF-8")
+}
+
+fn stderr(o: &Output) -> String {
+    String::from_utf8(o.stderr.clone()).expect("stderr is UTF-8")
+}
+
+/// Runs the binary and expects exit code `code`; returns stdout.
+#[track_caller]
+fn run(args: &[&str], code: i32) -> String {
+    let o = superint(args);
+    assert_eq!(
+        o.status.code(),
+        Some(code),
+        "superint {args:?}\nstderr: {}",
+        stderr(&o)
+    );
+    stdout(&o)
+}
+
+fn snapshot_path(name: &str) -> PathBuf {
+    Path::new(env!("CARGO_MANIFEST_DIR"))
+        .join("tests/it/snapshots")
+        .join(name)
+}
+
+/// Compares a whole output with its snapshot (or rewrites the snapshot when
+/// `SUPERINT_UPDATE_SNAPSHOTS` is set).
+#[track_caller]
+fn assert_snapshot(name: &str, actual: &str) {
+    let path = snapshot_path(name);
+    if std::env::var_os("SUPERINT_UPDATE_SNAPSHOTS").is_some() {
+        std::fs::create_dir_all(path.parent().expect("a parent")).expect("create snapshots/");
+        std::fs::write(&path, actual).expect("write the snapshot");
+        return;
+    }
+    let expected = std::fs::read_to_string(&path).unwrap_or_else(|e| {
+        panic!(
+            "{}: {e}; run with SUPERINT_UPDATE_SNAPSHOTS=1 to create it",
+            path.display()
+        )
+    });
+    assert_eq!(expected, actual, "output differs from {}", path.display());
+}
+
+#[test]
+fn cli_default_job_text_matches_snapshot() {
+    let out = run(&["--no-timings"], 0);
+    assert_snapshot("paper.txt", &out);
+    for claim in ["{L, G1} = −G2", "{L, G2} = 4G1", "{G1, G2} = −ω²L"] {
+        assert!(
+            out.lines()
+                .any(|l| l.trim_start().starts_with(claim) && l.ends_with("[C09 proved]")),
+            "{claim} is not printed as proved"
+        );
+    }
+}
+
+#[test]
+fn cli_paper_subcommand_is_the_default_job() {
+    let default = run(&["--no-timings", "--format", "markdown"], 0);
+    let paper = run(&["paper", "--format", "markdown", "--no-timings"], 0);
+    assert_eq!(default, paper);
+}
+
+#[test]
+fn cli_summary_line_has_the_count_and_the_seconds() {
+    let out = run(&[], 0);
+    let last = out.lines().last().expect("a summary line");
+    assert!(
+        last.starts_with("27 claims: 27 proved, 0 refuted (") && last.ends_with(" s)"),
+        "{last}"
+    );
+    // Timings appear in the summary line only.
+    let without = run(&["--no-timings"], 0);
+    let body = |s: &str| s.lines().rev().skip(1).collect::<Vec<_>>().join("\n");
+    assert_eq!(body(&out), body(&without));
+    assert!(!without
+        .lines()
+        .last()
+        .expect("a summary line")
+        .contains(" s)"));
+}
+
+#[test]
+fn cli_json_has_every_claim_proved() {
+    let out = run(&["--format", "json", "--no-timings"], 0);
+    let v: Value = serde_json::from_str(&out).expect("the output is JSON");
+    assert_eq!(v["schema"], "superint-report/1");
+    let claims = v["claims"].as_array().expect("a list of claims");
+    assert!(claims.len() >= 25, "only {} claims", claims.len());
+    for c in claims {
+        assert_eq!(c["outcome"], "proved", "{c}");
+        assert!(c["residual"].is_null(), "{c}");
+        assert!(
+            c["seconds"].is_null(),
+            "--no-timings leaves seconds out: {c}"
+        );
+        for key in ["id", "statement", "condition", "kind", "witness", "note"] {
+            assert!(c.get(key).is_some(), "{key} missing in {c}");
+        }
+    }
+    for k in 1..=25 {
+        let id = format!("C{k:02}");
+        assert!(
+            claims.iter().any(|c| c["id"] == id.as_str()),
+            "{id} is missing"
+        );
+    }
+    let summary = &v["summary"];
+    assert_eq!(summary["all_proved"], true);
+    assert_eq!(summary["refuted"], 0);
+    assert!(summary["claims"].as_u64().expect("a count") >= 25);
+    // Tables, proofs, towers and ranks come along; exact numbers are strings.
+    assert_eq!(v["tables"][0]["entries"][2][3]["ascii"], "-G2");
+    assert_eq!(v["tables"][0]["entries"][3][4]["text"], "−ω² L");
+    assert!(!v["proofs"].as_array().expect("proofs").is_empty());
+    assert_eq!(v["towers"][0]["checked"], 64);
+    let rank = &v["ranks"][0];
+    assert_eq!(rank["rank"], 5);
+    assert!(rank["minor"]["value"].is_string());
+}
+
+#[test]
+fn cli_json_timings_are_numbers() {
+    let out = run(&["--format", "json", "tower", "--max", "2"], 0);
+    let v: Value = serde_json::from_str(&out).expect("the output is JSON");
+    assert!(v["summary"]["seconds"].is_number());
+    assert!(v["claims"][0]["seconds"].is_number());
+}
+
+/// `\begin{…}`/`\end{…}` pairs nest, braces balance (ignoring `\{`, `\}`), and `$` pair up.
+fn assert_balanced_latex(doc: &str) {
+    let mut envs: Vec<&str> = Vec::new();
+    let mut rest = doc;
+    while let Some(k) = rest.find(['\\']) {
+        rest = &rest[k + 1..];
+        for (kw, open) in [("begin{", true), ("end{", false)] {
+            if let Some(tail) = rest.strip_prefix(kw) {
+                let name = &tail[..tail.find('}').expect("a closing brace")];
+                if open {
+                    envs.push(name);
+                } else {
+                    assert_eq!(envs.pop(), Some(name), "\\end{{{name}}} closes nothing");
+                }
+            }
+        }
+    }
+    assert!(envs.is_empty(), "unclosed environments {envs:?}");
+    let mut depth = 0i64;
+    let mut dollars = 0;
+    let mut escaped = false;
+    for c in doc.chars() {
+        match (escaped, c) {
+            (true, _) => escaped = false,
+            (false, '\\') => escaped = true,
+            (false, '{') => depth += 1,
+            (false, '}') => depth -= 1,
+            (false, '$') => dollars += 1,
+            _ => {}
+        }
+        assert!(depth >= 0, "a brace closes nothing");
+    }
+    assert_eq!(depth, 0, "unbalanced braces");
+    assert_eq!(dollars % 2, 0, "unpaired $");
+}
+
+#[test]
+fn cli_latex_is_a_complete_valid_document() {
+    let doc = run(&["--format", "latex", "--no-timings"], 0);
+    assert!(doc.starts_with("\\documentclass{article}\n"));
+    assert!(doc.contains("\\usepackage{amsmath}"));
+    assert!(doc.contains("\\begin{document}"));
+    assert!(doc.trim_end().ends_with("\\end{document}"));
+    assert!(doc.contains("\\begin{align*}") && doc.contains("\\begin{array}"));
+    assert!(doc.contains(r"\{L, G_{1}\} &= -G_{2} && \text{[C09 proved]}"));
+    assert!(doc.is_ascii(), "LaTeX output is ASCII");
+    assert_balanced_latex(&doc);
+    compile_if_possible(&doc);
+}
+
+/// Compiles with `pdflatex` when it is installed (CI machines may not have it).
+fn compile_if_possible(doc: &str) {
+    let Ok(probe) = Command::new("pdflatex").arg("--version").output() else {
+        return;
+    };
+    if !probe.status.success() {
+        return;
+    }
+    let dir = std::env::temp_dir().join(format!("superint-latex-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).expect("a temporary directory");
+    std::fs::write(dir.join("paper.tex"), doc).expect("write paper.tex");
+    let o = Command::new("pdflatex")
+        .args(["-interaction=nonstopmode", "-halt-on-error", "paper.tex"])
+        .current_dir(&dir)
+        .output()
+        .expect("pdflatex runs");
+    let log = String::from_utf8_lossy(&o.stdout).to_string();
+    let _ = std::fs::remove_dir_all(&dir);
+    assert!(o.status.success(), "pdflatex failed:\n{log}");
+}
+
+#[test]
+fn cli_markdown_has_tables() {
+    let md = run(&["--format", "markdown", "--no-timings"], 0);
+    assert!(md.starts_with("# "));
+    assert!(md.contains("| `{·,·}` | `F1` | `F2` | `L` | `G1` | `G2` |\n|---|---|---|---|---|---|"));
+    assert!(md.contains("| `L` | `0` | `0` | `0` | `−G2` | `4 G1` |"));
+    assert!(md.contains("- `{L, G1} = −G2` — **C09 proved**"));
+    let rules = md.lines().filter(|l| l.starts_with("|---|")).count();
+    assert_eq!(rules, 2, "two bracket tables");
+}
+
+#[test]
+fn cli_tower_small_matches_snapshot() {
+    let out = run(&["tower", "--max", "3", "--no-timings"], 0);
+    assert_snapshot("tower-3.txt", &out);
+    assert_eq!(
+        out.lines().last(),
+        Some(
+            "tower: 9 brackets {K_{m,n}, H} = i(mω − nΩ)K_{m,n} checked for 1 ≤ m, n ≤ 3, \
+             all hold"
+        )
+    );
+    let timed = run(&["tower", "--max", "3"], 0);
+    let last = timed.lines().last().expect("a summary line");
+    assert!(
+        last.starts_with("tower: 9 brackets") && last.ends_with(" s)"),
+        "{last}"
+    );
+}
+
+#[test]
+fn cli_tower_gravity_and_formats() {
+    let out = run(
+        &["tower", "--max", "2", "--system", "gravity", "--no-timings"],
+        0,
+    );
+    assert!(out.contains("[C24 proved]"));
+    let v: Value = serde_json::from_str(&run(
+        &["tower", "--max", "2", "--format", "json", "--no-timings"],
+        0,
+    ))
+    .expect("JSON");
+    assert_eq!(v["towers"][0]["checked"], 4);
+    assert_eq!(v["towers"][0]["outcome"], "proved");
+    assert_eq!(v["proofs"][0]["outcome"], "proved");
+}
+
+#[test]
+fn cli_bad_usage_exits_2_with_a_message() {
+    for (args, message) in [
+        (
+            &["tower", "--max", "x"][..],
+            "invalid value 'x' for '--max <N>'",
+        ),
+        (
+            &["tower", "--max", "0"][..],
+            "invalid value '0' for '--max <N>'",
+        ),
+        (
+            &["--format", "pdf"][..],
+            "invalid value 'pdf' for '--format <FORMAT>'",
+        ),
+        (&["frobnicate"][..], "unrecognized subcommand 'frobnicate'"),
+        (&["paper", "--bogus"][..], "unexpected argument '--bogus'"),
+    ] {
+        let o = superint(args);
+        assert_eq!(o.status.code(), Some(2), "superint {args:?}");
+        assert!(stdout(&o).is_empty(), "superint {args:?} printed to stdout");
+        assert!(
+            stderr(&o).contains(message),
+            "superint {args:?}: {}",
+            stderr(&o)
+        );
+    }
+}
+
+#[test]
+fn cli_every_help_shows_an_example() {
+    for args in [&["--help"][..], &["paper", "--help"], &["tower", "--help"]] {
+        let out = run(args, 0);
+        assert!(out.contains("Examples:\n  superint"), "superint {args:?}");
+    }
+    assert!(run(&["--version"], 0).starts_with("superint "));
+}
