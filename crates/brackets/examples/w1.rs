@@ -2,7 +2,10 @@
 use brackets::{systems, Claim};
 use trigpoly::Expr;
 fn main() {
-    let n: i64 = std::env::args().nth(1).map(|s| s.parse().unwrap()).unwrap_or(8);
+    let n: i64 = std::env::args()
+        .nth(1)
+        .map(|s| s.parse().unwrap())
+        .unwrap_or(8);
     let r = systems::harmonic_rotor();
     let t0 = std::time::Instant::now();
     let mut terms = 0;
@@ -17,5 +20,9 @@ fn main() {
             }
         }
     }
-    println!("seconds: {:.3}\nterms: {}", t0.elapsed().as_secs_f64(), terms);
+    println!(
+        "seconds: {:.3}\nterms: {}",
+        t0.elapsed().as_secs_f64(),
+        terms
+    );
 }

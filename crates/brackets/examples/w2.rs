@@ -2,7 +2,10 @@
 use brackets::{systems, Claim};
 use trigpoly::Expr;
 fn main() {
-    let m: i64 = std::env::args().nth(1).map(|s| s.parse().unwrap()).unwrap_or(40);
+    let m: i64 = std::env::args()
+        .nth(1)
+        .map(|s| s.parse().unwrap())
+        .unwrap_or(40);
     let r = systems::harmonic_rotor();
     let t0 = std::time::Instant::now();
     let res = r.resonant("Z", m, m).unwrap();
@@ -10,9 +13,14 @@ fn main() {
     let mut terms = 0;
     for f in [&res.p, &res.q] {
         terms += f.len();
-        let c = Claim::new("w2", "", r.flow(f).unwrap(), Expr::zero(r.vars())).when(r.resonance(m, m).unwrap());
+        let c = Claim::new("w2", "", r.flow(f).unwrap(), Expr::zero(r.vars()))
+            .when(r.resonance(m, m).unwrap());
         assert!(c.check().unwrap().outcome.is_proved());
     }
     eprintln!("expand {t1:.3}");
-    println!("seconds: {:.3}\nterms: {}", t0.elapsed().as_secs_f64(), terms);
+    println!(
+        "seconds: {:.3}\nterms: {}",
+        t0.elapsed().as_secs_f64(),
+        terms
+    );
 }

@@ -30,7 +30,9 @@
 //! assert_eq!(e, p("exp(-3*i*theta)")?);
 //! assert_eq!(e.re(), p("4*cos(theta)^3 - 3*cos(theta)")?);
 //! // Printing reads like the paper.
-//! assert_eq!(p("-omega^2*M*x + p_x^2/(2*M)")?.to_string(), "−Mω²x + p_x²/(2M)");
+//! assert_eq!(p("-omega^2*M*x + p_x^2/(2*M)")?.to_string(), "p_x²/(2M) − Mω²x");
+//! // The text form parses back.
+//! assert_eq!(p("p_x²/(2M) − Mω²x")?, p("-omega^2*M*x + p_x^2/(2*M)")?);
 //! # Ok::<(), Box<dyn std::error::Error>>(())
 //! ```
 #![deny(missing_docs)]

@@ -41,7 +41,7 @@ impl<C: Coefficient> Poly<C> {
     /// use trigpoly::{Poly, Rational, VarSet};
     /// let vars = VarSet::builder().coordinate("x").momentum("p_x").parameter("M").build().unwrap();
     /// let h = Poly::<Rational>::parse(&vars, "p_x^2/(2*M) + M*x^2/2").unwrap();
-    /// assert_eq!(h.to_string(), "Mx²/2 + p_x²/(2M)");
+    /// assert_eq!(h.to_string(), "p_x²/(2M) + Mx²/2");
     /// let err = Poly::<Rational>::parse(&vars, "x/(1+x)").unwrap_err();
     /// assert_eq!(err.line_col("x/(1+x)"), (1, 3));
     /// ```
@@ -72,6 +72,14 @@ impl<C: Coefficient> Poly<C> {
 struct Lower<'a, C: Coefficient> {
     vars: &'a Arc<VarSet>,
     ctx: &'a dyn Context<C>,
+}
+
+/// An angle multiple that does not even fit a machine word.
+fn past_limit(span: Span) -> ParseError {
+    ParseError::new(
+        span,
+        "the multiple of the angle is past the limit of the exponents",
+    )
 }
 
 fn at(span: Span) -> impl Fn(AlgebraError) -> ParseError {
@@ -106,6 +114,25 @@ impl<C: Coefficient> Lower<'_, C> {
                 num.checked_div(&den).map_err(at(b.span))
             }
             ExprKind::Pow(a, b) => {
+                // `Mω²` as printed: the power belongs to the last name only.
+                if let ExprKind::Name(name) = &a.kind {
+                    if self.vars.lookup(name).is_none() && self.ctx.lookup(name).is_none() {
+                        if let Some(mut parts) = self.split_name(name) {
+                            let last = parts.pop().expect("a split has two parts or more");
+                            let exp = self.integer_exponent(b)?;
+                            let mut acc = self
+                                .name(&last, a.span)?
+                                .checked_pow(exp)
+                                .map_err(at(span))?;
+                            for part in parts {
+                                acc = acc
+                                    .checked_mul(&self.name(&part, a.span)?)
+                                    .map_err(at(span))?;
+                            }
+                            return Ok(acc);
+                        }
+                    }
+                }
                 let base = self.lower(a)?;
                 let exp = self.integer_exponent(b)?;
                 base.checked_pow(exp).map_err(at(span))
@@ -146,6 +173,16 @@ impl<C: Coefficient> Lower<'_, C> {
         if let Some(p) = self.ctx.lookup(name) {
             return Ok(p);
         }
+        // The text form writes products of names side by side: `Mω` is `M·ω`.
+        if let Some(parts) = self.split_name(name) {
+            let mut acc = Poly::one(self.vars);
+            for part in parts {
+                acc = acc
+                    .checked_mul(&self.name(&part, span)?)
+                    .map_err(at(span))?;
+            }
+            return Ok(acc);
+        }
         let mut known: Vec<String> = self
             .vars
             .vars()
@@ -156,6 +193,42 @@ impl<C: Coefficient> Lower<'_, C> {
             span,
             format!("unknown name '{name}' (known: {})", known.join(", ")),
         ))
+    }
+
+    /// Splits a name that is not declared into declared names (`Mω` → `M`, `ω`), longest
+    /// prefix first; `None` if no split exists.
+    fn split_name(&self, name: &str) -> Option<Vec<String>> {
+        let known = |s: &str| {
+            s == "i"
+                || self
+                    .vars
+                    .lookup(s)
+                    .is_some_and(|v| self.vars.variable(v).kind() != VarKind::Angle)
+                || self.ctx.lookup(s).is_some()
+        };
+        fn go(rest: &str, known: &dyn Fn(&str) -> bool, out: &mut Vec<String>) -> bool {
+            if rest.is_empty() {
+                return true;
+            }
+            let cuts: Vec<usize> = rest
+                .char_indices()
+                .map(|(k, _)| k)
+                .skip(1)
+                .chain([rest.len()])
+                .collect();
+            for &cut in cuts.iter().rev() {
+                if known(&rest[..cut]) {
+                    out.push(rest[..cut].to_string());
+                    if go(&rest[cut..], known, out) {
+                        return true;
+                    }
+                    out.pop();
+                }
+            }
+            false
+        }
+        let mut out = Vec::new();
+        (name.chars().count() > 1 && go(name, &known, &mut out) && out.len() > 1).then_some(out)
     }
 
     fn integer_exponent(&self, e: &Expr) -> Result<i64, ParseError> {
@@ -276,12 +349,12 @@ impl<C: Coefficient> Lower<'_, C> {
                     product(low, b, acc, bad)
                 }
                 ExprKind::Neg(a) => {
-                    acc.0 = -acc.0;
+                    acc.0 = acc.0.checked_neg().ok_or_else(|| past_limit(e.span))?;
                     product(low, a, acc, bad)
                 }
                 ExprKind::Integer(n) => {
-                    let n = i64::try_from(n.clone()).map_err(|_| bad(e.span))?;
-                    acc.0 = acc.0.checked_mul(n).ok_or_else(|| bad(e.span))?;
+                    let n = i64::try_from(n.clone()).map_err(|_| past_limit(e.span))?;
+                    acc.0 = acc.0.checked_mul(n).ok_or_else(|| past_limit(e.span))?;
                     Ok(())
                 }
                 ExprKind::Name(n) if n == "i" => {
@@ -325,9 +398,19 @@ impl<C: Coefficient> Lower<'_, C> {
             }
             imaginary = Some(acc.1 == 1);
             match combo.iter_mut().find(|c| c.0 == angle) {
-                Some(c) => c.1 += acc.0,
+                Some(c) => c.1 = c.1.checked_add(acc.0).ok_or_else(|| past_limit(t.span))?,
                 None => combo.push((angle, acc.0)),
             }
+        }
+        let limit = self.vars.limits().max_degree;
+        if let Some((v, n)) = combo.iter().find(|c| c.1.unsigned_abs() > limit as u64) {
+            return Err(ParseError::new(
+                e.span,
+                format!(
+                    "the multiple {n} of {} is past the limit of {limit}",
+                    self.vars.variable(*v).unicode()
+                ),
+            ));
         }
         Ok((combo, imaginary.unwrap_or(false)))
     }

@@ -130,7 +130,11 @@ impl Layout {
     /// Unpacks the first `out.len()` exponents of a packed monomial.
     #[inline]
     pub fn unpack_into(&self, m: &[u64], out: &mut [i64]) {
-        let mask = if self.bits == 64 { u64::MAX } else { (1u64 << self.bits) - 1 };
+        let mask = if self.bits == 64 {
+            u64::MAX
+        } else {
+            (1u64 << self.bits) - 1
+        };
         let bias = 1i64 << (self.bits - 1);
         for (j, o) in out.iter_mut().enumerate() {
             let w = j / self.per_word;

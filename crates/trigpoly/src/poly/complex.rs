@@ -78,8 +78,11 @@ impl Poly<Rational> {
 }
 
 impl Poly<GaussianRational> {
-    /// The same polynomial over Q, if every coefficient (in the `e^{ikθ}` basis) is real.
+    /// The same polynomial over Q, if it has no angle and every coefficient is real.
     pub fn to_rational(&self) -> Option<Poly<Rational>> {
+        if self.has_angles() {
+            return None;
+        }
         let (content, exps, coeffs) = self.raw_parts();
         let real: Option<Vec<Integer>> = coeffs
             .iter()

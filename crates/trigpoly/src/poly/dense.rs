@@ -16,6 +16,9 @@ const CHUNK: u64 = 1 << 15;
 /// The largest box scanned, relative to the number of products.
 const BOX_PER_PRODUCT: u64 = 32;
 
+/// Packed exponents and coefficients of a product, sorted descending.
+pub(crate) type Product<I> = (Vec<u64>, Vec<I>);
+
 /// The product by the dense method, or `None` when the method does not apply (box too large
 /// for the work, or coefficients too large for the accumulators).
 pub(crate) fn try_mul_dense<I: IntegerRing>(
@@ -24,18 +27,17 @@ pub(crate) fn try_mul_dense<I: IntegerRing>(
     a: (&[u64], &[I], &[(i64, i64)]),
     b: (&[u64], &[I], &[(i64, i64)]),
     max_terms: usize,
-) -> Option<Result<(Vec<u64>, Vec<I>), AlgebraError>> {
+) -> Option<Result<Product<I>, AlgebraError>> {
     let w = layout.words;
     let (n, m) = (a.1.len(), b.1.len());
     let work = (n as u64).saturating_mul(m as u64);
     // The product's box.
-    let mut ranges = vec![0u64; nvars];
-    let mut size: u64 = 1;
-    for j in 0..nvars {
-        let r = (a.2[j].1 + b.2[j].1 - a.2[j].0 - b.2[j].0 + 1) as u64;
-        ranges[j] = r;
-        size = size.checked_mul(r)?;
-    }
+    let ranges: Vec<u64> =
+        a.2.iter()
+            .zip(b.2)
+            .map(|(ea, eb)| (ea.1 + eb.1 - ea.0 - eb.0 + 1) as u64)
+            .collect();
+    let size = ranges.iter().try_fold(1u64, |acc, &r| acc.checked_mul(r))?;
     if size > work.saturating_mul(BOX_PER_PRODUCT) || size > 1 << 40 {
         return None;
     }
@@ -58,7 +60,9 @@ pub(crate) fn try_mul_dense<I: IntegerRing>(
             .rev()
             .map(|mono| {
                 layout.unpack_into(mono, &mut e);
-                (0..nvars).map(|j| (e[j] - lo[j].0) as u64 * strides[j]).sum()
+                (0..nvars)
+                    .map(|j| (e[j] - lo[j].0) as u64 * strides[j])
+                    .sum()
             })
             .collect()
     };

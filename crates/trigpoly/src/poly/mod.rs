@@ -88,9 +88,14 @@ impl<C: Coefficient> Poly<C> {
 
     /// `c · Π v^e`, for any integer exponents within the limit.
     pub fn monomial(vars: &Arc<VarSet>, c: C, powers: &[(Var, i64)]) -> Result<Self, AlgebraError> {
-        let mut exps = vec![0i64; vars.len()];
-        for &(v, e) in powers {
-            exps[v.index()] += e;
+        let exps = sum_powers(vars, powers)?;
+        if !C::HAS_I {
+            if let Some(v) = vars.angles().find(|v| exps[v.index()] != 0) {
+                return Err(AlgebraError::NeedsGaussian(format!(
+                    "the angle {} (stored as e^{{iθ}})",
+                    vars.variable(v).unicode()
+                )));
+            }
         }
         for v in vars.vars() {
             check_exponent(vars, v, exps[v.index()])?;
@@ -169,10 +174,9 @@ impl<C: Coefficient> Poly<C> {
 
     /// The coefficient of a monomial, given as `(variable, exponent)` pairs (zero if absent).
     pub fn coeff(&self, powers: &[(Var, i64)]) -> C {
-        let mut exps = vec![0i64; self.vars.len()];
-        for &(v, e) in powers {
-            exps[v.index()] += e;
-        }
+        let Ok(exps) = sum_powers(&self.vars, powers) else {
+            return C::zero();
+        };
         if exps
             .iter()
             .any(|e| e.unsigned_abs() > self.vars.layout().max_exp as u64)
@@ -357,7 +361,12 @@ impl<C: Coefficient> Poly<C> {
             return Self::zero(vars);
         }
         debug_assert!(coeffs[0].leading_sign() > 0);
-        Poly { vars: vars.clone(), content, exps, coeffs }
+        Poly {
+            vars: vars.clone(),
+            content,
+            exps,
+            coeffs,
+        }
     }
 
     /// Builds from distinct nonzero terms in any order (a bijective relabelling of monomials,
@@ -405,6 +414,17 @@ impl<C: Coefficient> Poly<C> {
     pub(crate) fn raw_parts(&self) -> (&Rational, &[u64], &[C::Int]) {
         (&self.content, &self.exps, &self.coeffs)
     }
+}
+
+/// The exponent vector of `Π v^e`, or an error if an exponent passes the limit.
+fn sum_powers(vars: &VarSet, powers: &[(Var, i64)]) -> Result<Vec<i64>, AlgebraError> {
+    let mut exps = vec![0i64; vars.len()];
+    for &(v, e) in powers {
+        let sum = exps[v.index()].checked_add(e).unwrap_or(i64::MAX);
+        check_exponent(vars, v, sum)?;
+        exps[v.index()] = sum;
+    }
+    Ok(exps)
 }
 
 pub(crate) fn check_exponent(vars: &VarSet, v: Var, e: i64) -> Result<(), AlgebraError> {

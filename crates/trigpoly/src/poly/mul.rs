@@ -75,7 +75,9 @@ impl<C: Coefficient> Poly<C> {
         };
         if small.len() <= SMALL_SIDE {
             check_sum_bounds(&self.vars, &small.bounds(), &big.bounds())?;
-            return Ok(shift_and_merge(small, big, content));
+            let product = shift_and_merge(small, big, content);
+            Self::check_terms(&self.vars, product.len())?;
+            return Ok(product);
         }
         let (ba, bb) = (self.bounds(), other.bounds());
         check_sum_bounds(&self.vars, &ba, &bb)?;

@@ -24,6 +24,18 @@ impl<C: Coefficient> Poly<C> {
             check_exponent(&self.vars, v, hi.saturating_mul(e))?;
         }
         if self.is_monomial() {
+            // A single term's coefficient grows without any new term: bound its size.
+            let z = C::from_parts(&self.content, &self.coeffs[0]).to_gaussian();
+            let bits = [&z.re, &z.im]
+                .iter()
+                .map(|q| q.numer().bits().max(q.denom().bits()))
+                .max()
+                .unwrap_or(1);
+            if bits.saturating_mul(e.unsigned_abs()) > MAX_COEFFICIENT_BITS {
+                return Err(AlgebraError::Invalid(format!(
+                    "the coefficient of this power would have more than {MAX_COEFFICIENT_BITS} bits"
+                )));
+            }
             return Ok(self.monomial_pow(e));
         }
         if e < 0 {
@@ -75,6 +87,9 @@ impl<C: Coefficient> Poly<C> {
         }
     }
 }
+
+/// The largest coefficient a power of a single term may produce, in bits (2 MiB of digits).
+const MAX_COEFFICIENT_BITS: u64 = 1 << 24;
 
 /// `c^e` in the field (c nonzero).
 pub(crate) fn pow_field<C: Coefficient>(c: &C, e: i64) -> C {

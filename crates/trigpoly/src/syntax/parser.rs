@@ -236,6 +236,18 @@ impl Parser<'_> {
             Tok::Star => (3, 4, ExprKind::Mul),
             Tok::Slash => (3, 4, ExprKind::Div),
             Tok::Caret => (7, 6, ExprKind::Pow),
+            // Juxtaposition multiplies, as in the printed text: `2M`, `Mω²x²`, `x p_y`.
+            ref t if t.starts_operand() => {
+                if 3 < min_bp {
+                    return Ok(None);
+                }
+                let at = Span::new(self.tok.span.start, self.tok.span.start);
+                return Ok(Some(BinOp {
+                    make: ExprKind::Mul,
+                    span: at,
+                    right_bp: 4,
+                }));
+            }
             _ => return Ok(None),
         };
         if left_bp < min_bp {
@@ -305,10 +317,46 @@ impl Parser<'_> {
         self.height = 1;
         match tok {
             Tok::Name(name) if self.tok.tok == Tok::LParen => self.call(name, span),
+            Tok::Name(name) if is_trig(&name) && !matches!(self.tok.tok, Tok::Eof) => {
+                self.trig_without_parens(name, span)
+            }
             Tok::Name(name) => Ok(Expr::new(ExprKind::Name(name), span)),
             Tok::Int(n) => Ok(Expr::new(ExprKind::Integer(n), span)),
             _ => unreachable!("atom() is only called on integers and names"),
         }
+    }
+
+    /// Parses `cos θ` or `cos²θ` (a power written between the function and its argument), as
+    /// the text form prints them.
+    fn trig_without_parens(&mut self, name: String, span: Span) -> PResult<Expr> {
+        let power = match self.tok.tok {
+            Tok::Sup { .. } => Some(self.superscript()?),
+            _ => None,
+        };
+        let call = if self.tok.tok == Tok::LParen {
+            self.call(name, span)?
+        } else {
+            let Token {
+                tok: Tok::Name(arg),
+                span: arg_span,
+            } = self.bump()?
+            else {
+                return Err(ParseError::new(
+                    self.prev.unwrap_or(span),
+                    format!("expected an angle or '(' after '{name}'"),
+                ));
+            };
+            let arg = Expr::new(ExprKind::Name(arg), arg_span);
+            Expr::new(ExprKind::Call(name, span, vec![arg]), span.to(arg_span))
+        };
+        self.height = 2;
+        Ok(match power {
+            None => call,
+            Some(exponent) => {
+                let whole = call.span.to(exponent.span);
+                Expr::new(ExprKind::Pow(Box::new(call), Box::new(exponent)), whole)
+            }
+        })
     }
 
     /// Parses the parenthesized arguments of a call of `name` (at `span`).
@@ -395,6 +443,11 @@ struct BinOp {
     make: MakeNode,
     span: Span,
     right_bp: u8,
+}
+
+/// Functions that the text form writes without parentheses: `cos θ`, `sin²θ`.
+fn is_trig(name: &str) -> bool {
+    matches!(name, "cos" | "sin")
 }
 
 /// Replaces `e` by `f(e)`.

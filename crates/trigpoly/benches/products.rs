@@ -1,0 +1,55 @@
+//! The Fateman benchmark: `f = (1 + x + y + z + t)^n`, the product `f·(f + 1)` over Q.
+//! For n = 20 the product has C(44, 4) = 135751 terms; n = 10 (10626 terms) runs quickly.
+
+use std::sync::Arc;
+
+use divan::{black_box, Bencher};
+use trigpoly::{Poly, Rational, VarSet};
+
+fn main() {
+    divan::main();
+}
+
+type Q = Poly<Rational>;
+
+/// `f` and `f + 1`, with the term count of their product checked once, outside the timing.
+fn fateman(n: u64) -> (Q, Q) {
+    let vars: Arc<VarSet> = VarSet::builder()
+        .coordinate("x")
+        .coordinate("y")
+        .coordinate("z")
+        .coordinate("t")
+        .build()
+        .expect("valid names");
+    let f = Q::parse(&vars, &format!("(1 + x + y + z + t)^{n}")).expect("parses");
+    let g = &f + &Q::one(&vars);
+    // Monomials of total degree ≤ 2n in 4 variables: C(2n + 4, 4).
+    let m = 2 * n + 4;
+    let terms = m * (m - 1) * (m - 2) * (m - 3) / 24;
+    assert_eq!(
+        f.checked_mul(&g).expect("within the limits").len() as u64,
+        terms
+    );
+    (f, g)
+}
+
+#[divan::bench(sample_count = 10, sample_size = 1)]
+fn fateman_10(bencher: Bencher) {
+    let (f, g) = fateman(10);
+    bencher.bench(|| {
+        black_box(&f)
+            .checked_mul(black_box(&g))
+            .expect("within the limits")
+    });
+}
+
+#[divan::bench(sample_count = 3, sample_size = 1)]
+fn fateman_20(bencher: Bencher) {
+    let (f, g) = fateman(20);
+    assert_eq!(f.len(), 10626);
+    bencher.bench(|| {
+        black_box(&f)
+            .checked_mul(black_box(&g))
+            .expect("within the limits")
+    });
+}

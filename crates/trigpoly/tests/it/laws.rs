@@ -1,0 +1,225 @@
+//! The commutative ring axioms, checked by one generic function on every triple of a list of
+//! edge-case elements, for Q, Q(i) and polynomials over both.
+
+use std::fmt::Debug;
+
+use num_bigint::BigInt;
+use trigpoly::{Coefficient, GaussianRational, Poly, Rational};
+
+use crate::common::{big_rational, gauss, p, phase_space, G, Q};
+
+/// What the axioms need of a commutative ring.
+pub trait Ring: Clone + PartialEq + Debug {
+    fn add(&self, other: &Self) -> Self;
+    fn sub(&self, other: &Self) -> Self;
+    fn mul(&self, other: &Self) -> Self;
+    fn neg(&self) -> Self;
+    /// The zero of the ring `self` lives in.
+    fn zero_like(&self) -> Self;
+    /// The one of the ring `self` lives in.
+    fn one_like(&self) -> Self;
+}
+
+impl Ring for Rational {
+    fn add(&self, other: &Self) -> Self {
+        self + other
+    }
+    fn sub(&self, other: &Self) -> Self {
+        self - other
+    }
+    fn mul(&self, other: &Self) -> Self {
+        self * other
+    }
+    fn neg(&self) -> Self {
+        -self
+    }
+    fn zero_like(&self) -> Self {
+        Rational::zero()
+    }
+    fn one_like(&self) -> Self {
+        Rational::one()
+    }
+}
+
+impl Ring for GaussianRational {
+    fn add(&self, other: &Self) -> Self {
+        self + other
+    }
+    fn sub(&self, other: &Self) -> Self {
+        self - other
+    }
+    fn mul(&self, other: &Self) -> Self {
+        self * other
+    }
+    fn neg(&self) -> Self {
+        -self
+    }
+    fn zero_like(&self) -> Self {
+        GaussianRational::from(0)
+    }
+    fn one_like(&self) -> Self {
+        GaussianRational::from(1)
+    }
+}
+
+impl<C: Coefficient> Ring for Poly<C> {
+    fn add(&self, other: &Self) -> Self {
+        self.checked_add(other).expect("sum within the limits")
+    }
+    fn sub(&self, other: &Self) -> Self {
+        self.checked_sub(other)
+            .expect("difference within the limits")
+    }
+    fn mul(&self, other: &Self) -> Self {
+        self.checked_mul(other).expect("product within the limits")
+    }
+    fn neg(&self) -> Self {
+        -self
+    }
+    fn zero_like(&self) -> Self {
+        Poly::zero(self.vars())
+    }
+    fn one_like(&self) -> Self {
+        Poly::one(self.vars())
+    }
+}
+
+/// Checks associativity and commutativity of + and ×, both distributive laws, the identities 0
+/// and 1, the additive inverse and `a − b = a + (−b)` on every triple of `elements`.
+pub fn ring_axioms<T: Ring>(elements: &[T]) {
+    for a in elements {
+        let zero = a.zero_like();
+        let one = a.one_like();
+        assert_eq!(a.add(&zero), *a, "a + 0 = a for a = {a:?}");
+        assert_eq!(zero.add(a), *a, "0 + a = a for a = {a:?}");
+        assert_eq!(a.mul(&one), *a, "a · 1 = a for a = {a:?}");
+        assert_eq!(one.mul(a), *a, "1 · a = a for a = {a:?}");
+        assert_eq!(a.mul(&zero), zero, "a · 0 = 0 for a = {a:?}");
+        assert_eq!(a.add(&a.neg()), zero, "a + (−a) = 0 for a = {a:?}");
+        assert_eq!(a.neg().neg(), *a, "−(−a) = a for a = {a:?}");
+        assert_eq!(a.sub(a), zero, "a − a = 0 for a = {a:?}");
+        for b in elements {
+            assert_eq!(a.add(b), b.add(a), "a + b = b + a for a = {a:?}, b = {b:?}");
+            assert_eq!(a.mul(b), b.mul(a), "a · b = b · a for a = {a:?}, b = {b:?}");
+            assert_eq!(
+                a.sub(b),
+                a.add(&b.neg()),
+                "a − b = a + (−b) for a = {a:?}, b = {b:?}"
+            );
+            assert_eq!(
+                a.neg().mul(b),
+                a.mul(b).neg(),
+                "(−a)b = −(ab) for a = {a:?}, b = {b:?}"
+            );
+            for c in elements {
+                assert_eq!(
+                    a.add(b).add(c),
+                    a.add(&b.add(c)),
+                    "(a + b) + c = a + (b + c), a = {a:?}, b = {b:?}, c = {c:?}"
+                );
+                assert_eq!(
+                    a.mul(b).mul(c),
+                    a.mul(&b.mul(c)),
+                    "(ab)c = a(bc), a = {a:?}, b = {b:?}, c = {c:?}"
+                );
+                assert_eq!(
+                    a.mul(&b.add(c)),
+                    a.mul(b).add(&a.mul(c)),
+                    "a(b + c) = ab + ac, a = {a:?}, b = {b:?}, c = {c:?}"
+                );
+                assert_eq!(
+                    a.add(b).mul(c),
+                    a.mul(c).add(&b.mul(c)),
+                    "(a + b)c = ac + bc, a = {a:?}, b = {b:?}, c = {c:?}"
+                );
+            }
+        }
+    }
+}
+
+fn q(s: &str) -> Rational {
+    s.parse().unwrap_or_else(|e| panic!("{e}"))
+}
+
+fn z(s: &str) -> GaussianRational {
+    s.parse().unwrap_or_else(|e| panic!("{e}"))
+}
+
+#[test]
+fn ring_axioms_hold_in_q() {
+    let two_pow_70 = BigInt::from(1) << 70;
+    ring_axioms(&[
+        Rational::zero(),
+        Rational::one(),
+        -Rational::one(),
+        Rational::from(i64::MAX),
+        Rational::from(i64::MIN),
+        Rational::from(i64::MAX - 1),
+        Rational::new(i64::MAX, i64::MAX - 1),
+        Rational::new(1, i64::MIN + 1),
+        q("1/3"),
+        q("-7/12"),
+        big_rational(&(two_pow_70 + 1)) / Rational::from(3i64).pow(40).expect("3 ≠ 0"),
+    ]);
+}
+
+#[test]
+fn ring_axioms_hold_in_gaussian_rationals() {
+    ring_axioms(&[
+        z("0"),
+        z("1"),
+        z("-1"),
+        GaussianRational::i(),
+        z("-i"),
+        z("3/5 + 4/5*i"),
+        z("1/2 - 1/3*i"),
+        gauss(i64::MAX, i64::MAX),
+        gauss(i64::MIN, 1),
+        gauss(0, i64::MIN),
+        gauss(i64::MAX, i64::MIN),
+    ]);
+}
+
+#[test]
+fn ring_axioms_hold_for_laurent_polynomials_over_q() {
+    let vars = phase_space();
+    let elements: Vec<Q> = [
+        "0",
+        "1",
+        "-1",
+        "x",
+        "x^-3*y^2 - 1/2*M",
+        "9223372036854775807*x + 9223372036854775806/y",
+        "-9223372036854775808*p_x*p_y^-1 + 3",
+        "p_x^2/(2*M) + M*omega^2*x^2/2",
+        "(x + 1/x)^3",
+        "1 + x + y + p_x + p_y + M + omega - 1/omega",
+    ]
+    .iter()
+    .map(|s| p(&vars, s))
+    .collect();
+    ring_axioms(&elements);
+}
+
+#[test]
+fn ring_axioms_hold_for_trigonometric_polynomials_over_gaussian_rationals() {
+    let vars = phase_space();
+    let elements: Vec<G> = [
+        "0",
+        "1",
+        "-i",
+        "i*x/M",
+        "cos(theta)",
+        "x*sin(theta) - i*y",
+        "exp(3*i*theta) + exp(-i*phi)",
+        "(cos(theta) + i*sin(phi))^2",
+        "cos(theta - 2*phi)/omega^2",
+        "9223372036854775807*i*x + 9223372036854775807*y",
+        "(3/5 + 4/5*i)*p_x^-2 - 9223372036854775808*i",
+        "1 + x + y + p_x + p_y + M + omega + sin(theta)",
+    ]
+    .iter()
+    .map(|s| p(&vars, s))
+    .collect();
+    ring_axioms(&elements);
+}

@@ -1,0 +1,206 @@
+//! Limits: runaway expansions and exponents end in an error value, never in an allocation
+//! blow-up, a wrapped exponent or a panic.
+
+use trigpoly::{AlgebraError, Limits, Poly, Rational, VarSet};
+
+use crate::common::{p, phase_space, var, G, Q};
+
+fn small_vars() -> std::sync::Arc<VarSet> {
+    VarSet::builder()
+        .coordinate("x")
+        .coordinate("y")
+        .coordinate("z")
+        .coordinate("t")
+        .coordinate("u")
+        .coordinate("v")
+        .coordinate("w")
+        .limits(Limits {
+            max_terms: 1000,
+            ..Limits::default()
+        })
+        .build()
+        .unwrap()
+}
+
+/// `(1 + x + y + z)^30` has C(33, 3) = 5456 terms, past the limit of 1000.
+#[test]
+fn term_limit_stops_a_power_of_a_short_polynomial() {
+    let vars = small_vars();
+    let f: Q = p(&vars, "1 + x + y + z");
+    assert_eq!(
+        f.checked_pow(30).map(|g| g.len()),
+        Err(AlgebraError::TooManyTerms { limit: 1000 })
+    );
+    // Just below the limit it works: (1 + x + y + z)^15 has C(18, 3) = 816 terms.
+    assert_eq!(f.checked_pow(15).map(|g| g.len()), Ok(816));
+}
+
+/// The same through the general (dense or hashed) product: `(1 + x + … + w)^6` has C(13, 6) =
+/// 1716 terms.
+#[test]
+fn term_limit_stops_a_power_of_a_long_polynomial() {
+    let vars = small_vars();
+    let f: Q = p(&vars, "1 + x + y + z + t + u + v + w");
+    assert_eq!(
+        f.checked_pow(6).map(|g| g.len()),
+        Err(AlgebraError::TooManyTerms { limit: 1000 })
+    );
+    let g: Q = p(&vars, "1 + x + y + z + t + u + v");
+    assert_eq!(g.checked_mul(&g).map(|h| h.len()), Ok(28));
+}
+
+/// A product of a short polynomial (at most 6 terms) by a long one, past the limit.
+#[test]
+fn term_limit_stops_a_short_times_long_product() {
+    let vars = small_vars();
+    let long: Q = p(&vars, "(1 + x + y + z + t + u + v)^4"); // C(10, 4) = 210 terms
+    assert_eq!(long.len(), 210);
+    let short: Q = p(&vars, "1 + w + w^2 + w^3 + w^4 + w^5");
+    // 210 · 6 = 1260 distinct terms.
+    assert_eq!(
+        long.checked_mul(&short).map(|h| h.len()),
+        Err(AlgebraError::TooManyTerms { limit: 1000 })
+    );
+    let shorter: Q = p(&vars, "1 + w + w^2 + w^3");
+    assert_eq!(long.checked_mul(&shorter).map(|h| h.len()), Ok(840));
+}
+
+#[test]
+fn term_limit_stops_a_sum() {
+    let vars = small_vars();
+    let f: Q = p(&vars, "(1 + x + y)^30"); // C(32, 2) = 496 terms
+    let g: Q = p(&vars, "(1 + z + t)^30");
+    assert_eq!(f.len(), 496);
+    // 496 + 496 − 1 (the shared constant 1) = 991 terms: within the limit.
+    assert_eq!(f.checked_add(&g).map(|h| h.len()), Ok(991));
+    let h: Q = p(&vars, "(1 + u + v)^30");
+    assert_eq!(
+        f.checked_add(&g)
+            .and_then(|fg| fg.checked_add(&h))
+            .map(|s| s.len()),
+        Err(AlgebraError::TooManyTerms { limit: 1000 })
+    );
+}
+
+#[test]
+fn exponent_overflow_in_products_and_powers_is_an_error() {
+    let vars = phase_space();
+    let x = var(&vars, "x");
+    let too_large = |exponent: i64| AlgebraError::ExponentTooLarge {
+        var: "x".into(),
+        exponent,
+        limit: 10_000,
+    };
+    let big: G = p(&vars, "x^10000");
+    let xv: G = p(&vars, "x");
+    assert_eq!(big.checked_mul(&xv), Err(too_large(10_001)));
+    assert_eq!(big.checked_mul(&big), Err(too_large(20_000)));
+    let half: G = p(&vars, "x^5000 + 1");
+    assert_eq!(half.checked_pow(3), Err(too_large(15_000)));
+    assert_eq!(half.checked_pow(2).map(|f| f.degree(x)), Ok(Some(10_000)));
+    assert_eq!(xv.checked_pow(i64::MAX), Err(too_large(i64::MAX)));
+    assert_eq!(xv.checked_pow(i64::MIN), Err(too_large(i64::MIN)));
+    let low: G = p(&vars, "x^-10000");
+    assert_eq!(low.derivative(x), Err(too_large(-10_001)));
+    assert_eq!(
+        Poly::<Rational>::monomial(&vars, Rational::one(), &[(x, 10_001)]),
+        Err(too_large(10_001))
+    );
+    assert_eq!(
+        G::exp_i(&vars, var(&vars, "theta"), -10_001).map(|f| f.len()),
+        Err(AlgebraError::ExponentTooLarge {
+            var: "θ".into(),
+            exponent: -10_001,
+            limit: 10_000
+        })
+    );
+}
+
+#[test]
+fn exponent_overflow_with_narrow_exponent_fields() {
+    let vars = VarSet::builder()
+        .coordinate("x")
+        .angle("theta")
+        .exponent_bits(8)
+        .build()
+        .unwrap();
+    assert_eq!(vars.limits().max_degree, 127);
+    let x = var(&vars, "x");
+    let f: G = p(&vars, "x^100");
+    assert_eq!(
+        f.checked_mul(&f),
+        Err(AlgebraError::ExponentTooLarge {
+            var: "x".into(),
+            exponent: 200,
+            limit: 127
+        })
+    );
+    let e: G = p(&vars, "exp(i*100*theta)");
+    assert_eq!(
+        e.checked_pow(-2),
+        Err(AlgebraError::ExponentTooLarge {
+            var: "θ".into(),
+            exponent: -200,
+            limit: 127
+        })
+    );
+    // At the limit the packed field is exact, both signs.
+    let top: G = p(&vars, "x^127 + x^-127");
+    assert_eq!(top.exponent_range(x), Some((-127, 127)));
+    assert_eq!(&top * &G::one(&vars), top);
+}
+
+/// Exponents and angle multiples written in the source that overflow `i64` while being
+/// combined must be reported, not wrap around or panic.
+#[test]
+fn angle_multiples_that_overflow_i64_are_rejected() {
+    let vars = phase_space();
+    let mut failures = Vec::new();
+    for src in [
+        // The multiples are summed: 2·(2^63 − 1) + 2 wraps to 0 in i64.
+        "exp(i*9223372036854775807*theta + i*9223372036854775807*theta + i*2*theta)",
+        "cos(9223372036854775807*theta + 9223372036854775807*theta)",
+        // −2 · 2^62 = −2^63 = i64::MIN, then negated by the minus of −θ.
+        "cos(-2*4611686018427387904*-theta)",
+    ] {
+        let result = std::panic::catch_unwind(|| G::parse(&vars, src).map_err(|e| e.message));
+        match result {
+            Ok(Err(message)) if message.contains("past the limit") => {}
+            Ok(Err(message)) => failures.push(format!("{src}: unexpected message {message}")),
+            Ok(Ok(f)) => failures.push(format!("{src} parsed to {f}")),
+            Err(_) => failures.push(format!("{src}: panicked (integer overflow)")),
+        }
+    }
+    assert!(failures.is_empty(), "{}", failures.join("\n"));
+}
+
+/// `Poly::monomial` and `Poly::coeff` add up repeated variables; overflow must be an error
+/// (or, for `coeff`, the coefficient 0 of a monomial that cannot occur).
+#[test]
+fn repeated_variable_exponents_that_overflow_i64_are_rejected() {
+    let vars = phase_space();
+    let x = var(&vars, "x");
+    let powers = [(x, i64::MAX), (x, i64::MAX), (x, 2)];
+    let monomial =
+        std::panic::catch_unwind(|| Poly::<Rational>::monomial(&vars, Rational::one(), &powers));
+    assert!(
+        matches!(monomial, Ok(Err(AlgebraError::ExponentTooLarge { .. }))),
+        "Poly::monomial on x^MAX · x^MAX · x²: {}",
+        if monomial.is_err() {
+            "panicked (integer overflow)"
+        } else {
+            "no ExponentTooLarge"
+        }
+    );
+    let f: Q = p(&vars, "1 + x");
+    let coeff = std::panic::catch_unwind(|| f.coeff(&powers));
+    assert!(
+        matches!(&coeff, Ok(c) if c.is_zero()),
+        "Poly::coeff on x^MAX · x^MAX · x²: {}",
+        if coeff.is_err() {
+            "panicked (integer overflow)"
+        } else {
+            "nonzero"
+        }
+    );
+}

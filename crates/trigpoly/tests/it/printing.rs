@@ -1,0 +1,314 @@
+//! Printing like the paper: exact unicode, LaTeX and ASCII strings.
+
+use std::sync::Arc;
+
+use pretty_assertions::assert_eq;
+use trigpoly::{GaussianRational, Poly, Style, VarSet};
+
+use crate::common::{p, phase_space, G, Q};
+
+/// `x, y, p_x, p_y, θ, M, ω, L, L_z`: coordinates declared before momenta.
+fn plane() -> Arc<VarSet> {
+    VarSet::builder()
+        .coordinate("x")
+        .coordinate("y")
+        .momentum("p_x")
+        .momentum("p_y")
+        .angle("theta")
+        .parameter("M")
+        .parameter("omega")
+        .parameter("L")
+        .parameter("L_z")
+        .build()
+        .unwrap()
+}
+
+/// Asserts the three renderings of `src` and that the ASCII one parses back.
+fn prints(vars: &Arc<VarSet>, src: &str, [unicode, latex, ascii]: [&str; 3]) {
+    let f: G = p(vars, src);
+    assert_eq!(
+        [f.to_string(), f.to_latex(), f.to_ascii()],
+        [unicode.to_string(), latex.to_string(), ascii.to_string()],
+        "{src}"
+    );
+    assert_eq!(f.render(Style::Unicode), unicode);
+    assert_eq!(
+        p::<GaussianRational>(vars, ascii),
+        f,
+        "the ASCII form {ascii:?} parses back"
+    );
+}
+
+#[test]
+fn kinetic_energy_prints_as_a_fraction() {
+    let vars = plane();
+    prints(
+        &vars,
+        "p_x^2/(2*M)",
+        ["p_x²/(2M)", r"\frac{p_{x}^{2}}{2 M}", "p_x^2/(2*M)"],
+    );
+}
+
+#[test]
+fn potential_energy_prints_with_juxtaposed_factors() {
+    let vars = plane();
+    prints(
+        &vars,
+        "M*omega^2*x^2/2",
+        [
+            "Mω²x²/2",
+            r"\frac{M \omega^{2} x^{2}}{2}",
+            "M*omega^2*x^2/2",
+        ],
+    );
+    // Parameters first, then coordinates, then momenta, whatever the input order.
+    prints(
+        &vars,
+        "x^2*omega^2/2*M",
+        [
+            "Mω²x²/2",
+            r"\frac{M \omega^{2} x^{2}}{2}",
+            "M*omega^2*x^2/2",
+        ],
+    );
+}
+
+#[test]
+fn minus_omega_squared_times_a_parameter() {
+    let vars = plane();
+    // A one-letter name is juxtaposed, a longer one is set apart by a space.
+    prints(
+        &vars,
+        "-omega^2*L",
+        ["−ω²L", r"-\omega^{2} L", "-omega^2*L"],
+    );
+    prints(
+        &vars,
+        "-L_z*omega^2",
+        ["−ω² L_z", r"-\omega^{2} L_{z}", "-omega^2*L_z"],
+    );
+}
+
+#[test]
+fn angular_momentum_prints_in_declaration_order() {
+    let vars = plane();
+    prints(
+        &vars,
+        "x*p_y - y*p_x",
+        ["x p_y − y p_x", "x p_{y} - y p_{x}", "x*p_y - y*p_x"],
+    );
+    prints(
+        &vars,
+        "-p_x*y + p_y*x",
+        ["x p_y − y p_x", "x p_{y} - y p_{x}", "x*p_y - y*p_x"],
+    );
+}
+
+/// Terms of higher degree in the momenta come first, as in the paper: kinetic before
+/// potential energy.
+#[test]
+fn hamiltonian_of_the_oscillator() {
+    let vars = plane();
+    prints(
+        &vars,
+        "M*omega^2*x^2/2 + p_x^2/(2*M)",
+        [
+            "p_x²/(2M) + Mω²x²/2",
+            r"\frac{p_{x}^{2}}{2 M} + \frac{M \omega^{2} x^{2}}{2}",
+            "p_x^2/(2*M) + M*omega^2*x^2/2",
+        ],
+    );
+    prints(
+        &vars,
+        "-omega^2*M*x + p_x^2/(2*M)",
+        [
+            "p_x²/(2M) − Mω²x",
+            r"\frac{p_{x}^{2}}{2 M} - M \omega^{2} x",
+            "p_x^2/(2*M) - M*omega^2*x",
+        ],
+    );
+}
+
+/// `P_{1,1}`, grouped by its trigonometric factor, each group led by its momentum: exactly as
+/// in the paper, with coordinates declared before momenta.
+#[test]
+fn p11_groups_terms_by_cos_and_sin() {
+    let vars = plane();
+    prints(
+        &vars,
+        "(p_x - M*omega*y)*cos(theta) + (p_y + M*omega*x)*sin(theta)",
+        [
+            "(p_x − Mωy) cos θ + (p_y + Mωx) sin θ",
+            r"\left(p_{x} - M \omega y\right) \cos\theta + \left(p_{y} + M \omega x\right) \sin\theta",
+            "(p_x - M*omega*y)*cos(theta) + (p_y + M*omega*x)*sin(theta)",
+        ],
+    );
+}
+
+/// With momenta declared first, `P_{1,1}` prints the same way.
+#[test]
+fn p11_prints_as_in_the_paper_with_momenta_declared_first() {
+    let vars = VarSet::builder()
+        .momentum("p_x")
+        .momentum("p_y")
+        .coordinate("x")
+        .coordinate("y")
+        .angle("theta")
+        .parameter("M")
+        .parameter("omega")
+        .build()
+        .unwrap();
+    prints(
+        &vars,
+        "(p_x - M*omega*y)*cos(theta) + (p_y + M*omega*x)*sin(theta)",
+        [
+            "(p_x − Mωy) cos θ + (p_y + Mωx) sin θ",
+            r"\left(p_{x} - M \omega y\right) \cos\theta + \left(p_{y} + M \omega x\right) \sin\theta",
+            "(p_x - M*omega*y)*cos(theta) + (p_y + M*omega*x)*sin(theta)",
+        ],
+    );
+}
+
+#[test]
+fn trigonometric_normal_form_a_of_cos_plus_sin_times_b_of_cos() {
+    let vars = plane();
+    prints(
+        &vars,
+        "cos(theta)^2",
+        ["cos²θ", r"\cos^{2}\theta", "cos(theta)^2"],
+    );
+    // sin²θ → 1 − cos²θ, sin³θ → sin θ − cos²θ sin θ.
+    prints(
+        &vars,
+        "sin(theta)^2",
+        ["1 − cos²θ", r"1 - \cos^{2}\theta", "1 - cos(theta)^2"],
+    );
+    prints(
+        &vars,
+        "sin(theta)^3",
+        [
+            "sin θ − cos²θ sin θ",
+            r"\sin\theta - \cos^{2}\theta \sin\theta",
+            "sin(theta) - cos(theta)^2*sin(theta)",
+        ],
+    );
+    prints(
+        &vars,
+        "cos(2*theta)",
+        [
+            "−1 + 2 cos²θ",
+            r"-1 + 2 \cos^{2}\theta",
+            "-1 + 2*cos(theta)^2",
+        ],
+    );
+    prints(
+        &vars,
+        "x*exp(i*theta)",
+        [
+            "x cos θ + ix sin θ",
+            r"x \cos\theta + i x \sin\theta",
+            "x*cos(theta) + i*x*sin(theta)",
+        ],
+    );
+    prints(
+        &vars,
+        "x*cos(theta) + y*cos(theta) + 1",
+        [
+            "1 + (x + y) cos θ",
+            r"1 + \left(x + y\right) \cos\theta",
+            "1 + (x + y)*cos(theta)",
+        ],
+    );
+    let two = phase_space();
+    prints(
+        &two,
+        "cos(theta)*sin(phi)",
+        ["cos θ sin φ", r"\cos\theta \sin\phi", "cos(theta)*sin(phi)"],
+    );
+}
+
+#[test]
+fn coefficients_fractions_and_negative_powers() {
+    let vars = plane();
+    prints(&vars, "0", ["0", "0", "0"]);
+    prints(&vars, "3/4", ["3/4", r"\frac{3}{4}", "3/4"]);
+    prints(&vars, "-i/2", ["−i/2", r"-\frac{i}{2}", "-i/2"]);
+    prints(
+        &vars,
+        "-1/(2*M*x)",
+        ["−1/(2Mx)", r"-\frac{1}{2 M x}", "-1/(2*M*x)"],
+    );
+    prints(&vars, "x^-2*y", ["y/x²", r"\frac{y}{x^{2}}", "y/x^2"]);
+    prints(
+        &vars,
+        "(3 + 4*i)*x/M",
+        [
+            "(3 + 4i) x/M",
+            r"\frac{\left(3 + 4 i\right) x}{M}",
+            "(3 + 4*i)*x/M",
+        ],
+    );
+}
+
+#[test]
+fn polynomials_over_q_print_the_same_way() {
+    let vars = plane();
+    let f: Q = p(&vars, "p_x^2/(2*M) + M*omega^2*x^2/2");
+    assert_eq!(f.to_string(), "p_x²/(2M) + Mω²x²/2");
+    assert_eq!(f.to_string(), f.to_gaussian().to_string());
+}
+
+/// The unicode text of an element parses back to it (the parser accepts `ω`, `p_θ`, `²`,
+/// `⁻¹` and `−`). Checked on the paper's examples; every failure is listed.
+#[test]
+fn print_parse_roundtrip_text_of_the_paper_examples() {
+    let vars = plane();
+    let mut failures = Vec::new();
+    for src in [
+        "p_x^2/(2*M)",
+        "M*omega^2*x^2/2",
+        "-omega^2*L",
+        "x*p_y - y*p_x",
+        "2*x",
+        "(p_x - M*omega*y)*cos(theta) + (p_y + M*omega*x)*sin(theta)",
+        "(3 + 4*i)*x",
+    ] {
+        let f: G = p(&vars, src);
+        let text = f.to_string();
+        match Poly::<GaussianRational>::parse(&vars, &text) {
+            Ok(back) if back == f => {}
+            Ok(back) => failures.push(format!("{text:?} parses to {back}")),
+            Err(e) => failures.push(e.render(&text)),
+        }
+    }
+    assert_eq!(
+        failures.join("\n\n"),
+        "",
+        "unicode text that does not parse back"
+    );
+}
+
+/// Over Q there are no angles (they live in `e^{iθ}`): the ASCII form of a real trigonometric
+/// polynomial parses back over Q(i), and over Q it is refused with a message naming Q(i).
+#[test]
+fn real_trigonometric_polynomials_round_trip_over_gaussian_rationals_only() {
+    let vars = plane();
+    let f: trigpoly::Poly<GaussianRational> = p(&vars, "x*cos(theta)");
+    let text = f.to_ascii();
+    assert_eq!(text, "x*cos(theta)");
+    let back = trigpoly::Poly::<GaussianRational>::parse(&vars, &text);
+    assert_eq!(back.map_err(|e| e.render(&text)), Ok(f));
+    let err = Q::parse(&vars, &text).expect_err("no angles over Q");
+    assert!(err.message.contains("Q(i)"), "{}", err.message);
+}
+
+/// A polynomial over Q holds real coefficients: `e^{iθ} = cos θ + i sin θ` is not one, and
+/// must not come out of `to_rational` as a "polynomial over Q" that prints an `i`.
+#[test]
+fn polynomials_over_q_never_print_the_imaginary_unit() {
+    let vars = plane();
+    let e: G = p(&vars, "x*exp(i*theta)");
+    assert_eq!(e.to_string(), "x cos θ + ix sin θ");
+    let over_q = e.to_rational().map(|f| f.to_string());
+    assert_eq!(over_q, None, "x·e^(iθ) is not a polynomial over Q");
+}

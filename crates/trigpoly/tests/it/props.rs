@@ -1,0 +1,334 @@
+//! Property tests: each test is named after the law it checks, on random sparse Laurent ×
+//! trigonometric polynomials in `x, y, p_x, p_y, θ, φ, M, ω`.
+
+use proptest::prelude::*;
+use proptest::test_runner::Config;
+use trigpoly::{GaussianRational, Point, Poly, Rational, VarKind};
+
+use crate::common::{phase_space, var, G, Q};
+
+/// Numerators: mostly small, sometimes near the ends of `i64`.
+fn numerator() -> impl Strategy<Value = i64> {
+    prop_oneof![
+        8 => -20i64..20,
+        1 => prop_oneof![Just(i64::MAX), Just(i64::MIN), i64::MAX - 3..=i64::MAX, (1i64 << 40)..(1i64 << 41)],
+    ]
+}
+
+fn rational() -> impl Strategy<Value = Rational> {
+    (numerator(), prop_oneof![3 => Just(1i64), 1 => 2i64..7]).prop_map(|(n, d)| Rational::new(n, d))
+}
+
+fn gaussian() -> impl Strategy<Value = GaussianRational> {
+    prop_oneof![
+        2 => rational().prop_map(GaussianRational::from),
+        1 => (rational(), rational()).prop_map(|(re, im)| GaussianRational::new(re, im)),
+    ]
+}
+
+/// An exponent: zero more often than not, otherwise in −3..=4.
+fn exponent() -> impl Strategy<Value = i64> {
+    prop_oneof![3 => Just(0i64), 2 => -3i64..=4]
+}
+
+/// Exponents of all 8 variables; angles get 0 when `angles` is false.
+fn exponents(angles: bool) -> impl Strategy<Value = Vec<i64>> {
+    let vars = phase_space();
+    let kinds: Vec<bool> = vars
+        .vars()
+        .map(|v| vars.variable(v).kind() == VarKind::Angle)
+        .collect();
+    proptest::collection::vec(exponent(), vars.len()).prop_map(move |mut e| {
+        if !angles {
+            for (ej, &is_angle) in e.iter_mut().zip(&kinds) {
+                if is_angle {
+                    *ej = 0;
+                }
+            }
+        }
+        e
+    })
+}
+
+/// A random polynomial over Q(i) with up to `max_terms − 1` terms (both multiplication
+/// paths: short times long, and the hashed product of two long ones).
+fn gpoly(max_terms: usize) -> impl Strategy<Value = G> {
+    proptest::collection::vec((gaussian(), exponents(true)), 0..max_terms)
+        .prop_map(|terms| Poly::from_terms(&phase_space(), terms).expect("small exponents"))
+}
+
+/// A random polynomial over Q (no angles).
+fn qpoly(max_terms: usize) -> impl Strategy<Value = Q> {
+    proptest::collection::vec((rational(), exponents(false)), 0..max_terms)
+        .prop_map(|terms| Poly::from_terms(&phase_space(), terms).expect("small exponents"))
+}
+
+/// A polynomial dense in `x, y, M` (exponents −2..=3) with 7 to 19 terms, so that products
+/// take the dense (Kronecker) path; coefficients up to ~2^61 so that both the machine-word
+/// accumulators and the fallback for larger ones are used.
+fn dense_poly() -> impl Strategy<Value = G> {
+    let coeff = prop_oneof![
+        4 => -20i64..20,
+        1 => (1i64 << 59)..(1i64 << 61),
+        1 => -(1i64 << 61)..-(1i64 << 59),
+        1 => prop_oneof![Just(i64::MAX), Just(i64::MIN)],
+    ];
+    let gauss = prop_oneof![
+        coeff
+            .clone()
+            .prop_map(|re| GaussianRational::from(Rational::from(re))),
+        (coeff.clone(), coeff)
+            .prop_map(|(re, im)| GaussianRational::new(Rational::from(re), Rational::from(im))),
+    ];
+    proptest::collection::vec((gauss, proptest::collection::vec(-2i64..=3, 3)), 7..20).prop_map(
+        |terms| {
+            let vars = phase_space();
+            let (x, y, m) = (var(&vars, "x"), var(&vars, "y"), var(&vars, "M"));
+            let mut acc = G::zero(&vars);
+            for (c, e) in terms {
+                acc += G::monomial(&vars, c, &[(x, e[0]), (y, e[1]), (m, e[2])])
+                    .expect("small exponents");
+            }
+            acc
+        },
+    )
+}
+
+/// `f · g` as `Σ_t f · t` over the terms `t` of `g`: each product by a single term is a
+/// translation, independent of the dense and hashed multiplication.
+fn product_by_terms<C: trigpoly::Coefficient>(f: &Poly<C>, g: &Poly<C>) -> Poly<C> {
+    let vars = f.vars();
+    g.terms().fold(Poly::zero(vars), |acc, t| {
+        let powers: Vec<_> = vars.vars().zip(t.exponents()).collect();
+        acc + f * &Poly::monomial(vars, t.coeff(), &powers).expect("a term of g")
+    })
+}
+
+/// A value to substitute: a single term (always allowed) or a short polynomial with
+/// non-negative exponents.
+fn subst_value() -> impl Strategy<Value = G> {
+    let term = (
+        gaussian().prop_filter("nonzero", |c| !c.is_zero()),
+        exponents(true),
+    )
+        .prop_map(|t| Poly::from_terms(&phase_space(), [t]).expect("small exponents"));
+    let short =
+        proptest::collection::vec((gaussian(), proptest::collection::vec(0i64..=2, 8)), 1..4)
+            .prop_map(|terms| Poly::from_terms(&phase_space(), terms).expect("small exponents"));
+    prop_oneof![term, short]
+}
+
+/// Rational points of the unit circle used for the angles.
+const CIRCLE: [(i64, i64, i64); 3] = [(3, 4, 5), (5, 12, 13), (8, 15, 17)];
+
+/// A point giving every variable a nonzero value (negative exponents occur).
+fn point() -> impl Strategy<Value = Point> {
+    let nonzero = (prop_oneof![-9i64..0, 1i64..10], 1i64..6).prop_map(|(n, d)| Rational::new(n, d));
+    (
+        proptest::collection::vec(nonzero, 6),
+        proptest::sample::select(CIRCLE.to_vec()),
+        proptest::sample::select(CIRCLE.to_vec()),
+        any::<(bool, bool)>(),
+    )
+        .prop_map(|(values, a, b, (sa, sb))| {
+            let vars = phase_space();
+            let sign = |s: bool| if s { -1 } else { 1 };
+            let mut point = Point::new(&vars)
+                .with_angle(
+                    var(&vars, "theta"),
+                    Rational::new(a.0, a.2),
+                    Rational::new(sign(sa) * a.1, a.2),
+                )
+                .expect("on the unit circle")
+                .with_angle(
+                    var(&vars, "phi"),
+                    Rational::new(sign(sb) * b.1, b.2),
+                    Rational::new(b.0, b.2),
+                )
+                .expect("on the unit circle");
+            for (name, value) in ["x", "y", "p_x", "p_y", "M", "omega"].iter().zip(values) {
+                point = point.with(var(&vars, name), value);
+            }
+            point
+        })
+}
+
+fn config() -> Config {
+    Config {
+        cases: 64,
+        failure_persistence: None,
+        ..Config::default()
+    }
+}
+
+proptest! {
+    #![proptest_config(config())]
+
+    #[test]
+    fn ring_add_commutative(f in gpoly(10), g in gpoly(10), a in qpoly(10), b in qpoly(10)) {
+        prop_assert_eq!(&f + &g, &g + &f);
+        prop_assert_eq!(&a + &b, &b + &a);
+        prop_assert_eq!(&f * &g, &g * &f);
+        prop_assert_eq!(&a * &b, &b * &a);
+    }
+
+    #[test]
+    fn ring_add_associative_with_inverse(f in gpoly(10), g in gpoly(10), h in gpoly(10)) {
+        prop_assert_eq!((&f + &g) + &h, &f + (&g + &h));
+        prop_assert!((&f - &f).is_zero());
+        prop_assert_eq!(&f - &g, &f + &(-&g));
+        prop_assert_eq!(&(&f - &g) + &g, f);
+    }
+
+    #[test]
+    fn ring_mul_associative(f in gpoly(9), g in gpoly(9), h in gpoly(9), a in qpoly(9), b in qpoly(9), c in qpoly(9)) {
+        prop_assert_eq!((&f * &g) * &h, &f * (&g * &h));
+        prop_assert_eq!((&a * &b) * &c, &a * (&b * &c));
+    }
+
+    #[test]
+    fn ring_mul_distributive(f in gpoly(10), g in gpoly(10), h in gpoly(10), a in qpoly(10), b in qpoly(10), c in qpoly(10)) {
+        prop_assert_eq!(&f * (&g + &h), &f * &g + &f * &h);
+        prop_assert_eq!(&a * (&b - &c), &a * &b - &a * &c);
+    }
+
+    #[test]
+    fn ring_embedding_of_q_in_gaussian_is_a_homomorphism(a in qpoly(9), b in qpoly(9)) {
+        prop_assert_eq!((&a * &b).to_gaussian(), &a.to_gaussian() * &b.to_gaussian());
+        prop_assert_eq!((&a + &b).to_gaussian(), &a.to_gaussian() + &b.to_gaussian());
+        prop_assert_eq!(a.to_gaussian().to_rational(), Some(a));
+    }
+
+    /// The product of two long polynomials (dense or hashed multiplication) equals the sum of
+    /// the products by single terms.
+    #[test]
+    fn ring_mul_agrees_with_sum_of_term_products(f in dense_poly(), g in dense_poly(), h in gpoly(10), k in gpoly(10)) {
+        prop_assert_eq!(&f * &g, product_by_terms(&f, &g));
+        prop_assert_eq!(&h * &k, product_by_terms(&h, &k));
+        let (fr, gr) = (f.re().to_rational().expect("real"), g.re().to_rational().expect("real"));
+        prop_assert_eq!(&fr * &gr, product_by_terms(&fr, &gr));
+    }
+
+    #[test]
+    fn ring_mul_associative_dense(f in dense_poly(), g in dense_poly(), h in dense_poly()) {
+        prop_assert_eq!((&f * &g) * &h, &f * (&g * &h));
+        prop_assert_eq!(&f * (&g + &h), &f * &g + &f * &h);
+    }
+
+    /// ∂(fg) = f ∂g + g ∂f for every variable, the angles included.
+    #[test]
+    fn derivative_leibniz(f in gpoly(8), g in gpoly(8)) {
+        let vars = phase_space();
+        for v in vars.vars() {
+            let d = |h: &G| h.derivative(v).expect("derivative within the limits");
+            prop_assert_eq!(d(&(&f * &g)), &f * &d(&g) + &g * &d(&f), "∂/∂{}", vars.variable(v).name());
+            prop_assert_eq!(d(&(&f + &g)), d(&f) + d(&g), "∂/∂{}", vars.variable(v).name());
+        }
+    }
+
+    /// Over Q, for the non-angle variables.
+    #[test]
+    fn derivative_leibniz_over_q(a in qpoly(8), b in qpoly(8)) {
+        let vars = phase_space();
+        for v in vars.vars().filter(|&v| vars.variable(v).kind() != VarKind::Angle) {
+            let d = |h: &Q| h.derivative(v).expect("derivative within the limits");
+            prop_assert_eq!(d(&(&a * &b)), &a * &d(&b) + &b * &d(&a), "∂/∂{}", vars.variable(v).name());
+        }
+    }
+
+    /// subst(f·g) = subst(f)·subst(g) and subst(f + g) = subst(f) + subst(g), whenever the
+    /// substitutions of f and g are defined.
+    #[test]
+    fn subst_is_ring_homomorphism(f in gpoly(5), g in gpoly(5), k in 0usize..8, value in subst_value()) {
+        let vars = phase_space();
+        let v = vars.vars().nth(k).expect("8 variables");
+        let (Ok(sf), Ok(sg)) = (f.subst(v, &value), g.subst(v, &value)) else {
+            // A negative power of a value that is not a single term: rejected, not wrong.
+            prop_assert!(!value.is_monomial());
+            return Ok(());
+        };
+        prop_assert_eq!((&f * &g).subst(v, &value).expect("defined"), &sf * &sg);
+        prop_assert_eq!((&f + &g).subst(v, &value).expect("defined"), &sf + &sg);
+        prop_assert_eq!(f.subst(v, &Poly::var(&vars, v)).expect("identity substitution"), f);
+    }
+
+    /// Swapping x ↔ y twice, simultaneously, is the identity; it commutes with products.
+    #[test]
+    fn subst_many_swap_is_an_involution(f in gpoly(8), g in gpoly(8)) {
+        let vars = phase_space();
+        let (x, y) = (var(&vars, "x"), var(&vars, "y"));
+        let swap = [(x, Poly::var(&vars, y)), (y, Poly::var(&vars, x))];
+        let s = |h: &G| h.subst_many(&swap).expect("monomial values");
+        prop_assert_eq!(s(&s(&f)), f.clone());
+        prop_assert_eq!(s(&(&f * &g)), s(&f) * s(&g));
+    }
+
+    #[test]
+    fn print_parse_roundtrip_ascii(f in gpoly(9), a in qpoly(9)) {
+        let vars = phase_space();
+        let text = f.to_ascii();
+        match G::parse(&vars, &text) {
+            Ok(back) => prop_assert_eq!(back, f, "{}", text),
+            Err(e) => prop_assert!(false, "{}", e.render(&text)),
+        }
+        let text = a.to_ascii();
+        match Q::parse(&vars, &text) {
+            Ok(back) => prop_assert_eq!(back, a, "{}", text),
+            Err(e) => prop_assert!(false, "{}", e.render(&text)),
+        }
+    }
+
+    /// The unicode text (`Mω²x²/2`, `x p_y`, `cos θ`) parses back to the same element.
+    #[test]
+    fn print_parse_roundtrip_text(f in gpoly(9)) {
+        let vars = phase_space();
+        let text = f.to_string();
+        match G::parse(&vars, &text) {
+            Ok(back) => prop_assert_eq!(back, f, "{}", text),
+            Err(e) => prop_assert!(false, "{}", e.render(&text)),
+        }
+    }
+
+    /// cos²θ + sin²θ = 1 for every angle, also multiplied by anything.
+    #[test]
+    fn cos2_plus_sin2_is_one(f in gpoly(9)) {
+        let vars = phase_space();
+        for theta in vars.angles() {
+            let c = G::cos(&vars, theta).expect("an angle");
+            let s = G::sin(&vars, theta).expect("an angle");
+            prop_assert_eq!(&c * &c + &s * &s, G::one(&vars));
+            prop_assert_eq!(&f * &c * &c + &f * &s * &s, f.clone());
+        }
+    }
+
+    #[test]
+    fn conj_is_involution(f in gpoly(9), g in gpoly(9)) {
+        prop_assert_eq!(f.conj().conj(), f.clone());
+        prop_assert_eq!((&f * &g).conj(), f.conj() * g.conj());
+        prop_assert_eq!((&f + &g).conj(), f.conj() + g.conj());
+        prop_assert!((&f * &f.conj()).is_real());
+    }
+
+    /// f = re f + i·im f with re f and im f real.
+    #[test]
+    fn re_plus_i_im(f in gpoly(9)) {
+        let re = f.re();
+        let im = f.im().expect("over Q(i)");
+        prop_assert!(re.is_real());
+        prop_assert!(im.is_real());
+        prop_assert_eq!(&re + &im.mul_i().expect("over Q(i)"), f);
+    }
+
+    /// eval(f·g) = eval(f)·eval(g), eval(f + g) = eval(f) + eval(g), at rational points with
+    /// the angles on rational points of the unit circle.
+    #[test]
+    fn eval_is_ring_homomorphism(f in gpoly(9), g in gpoly(9), a in qpoly(6), point in point()) {
+        let e = |h: &G| h.eval(&point).expect("every variable has a nonzero value");
+        prop_assert_eq!(e(&(&f * &g)), &e(&f) * &e(&g));
+        prop_assert_eq!(e(&(&f + &g)), &e(&f) + &e(&g));
+        prop_assert_eq!(e(&f.conj()), e(&f).conj());
+        let ea = a.eval(&point).expect("every variable has a value");
+        prop_assert!(ea.is_real());
+        prop_assert_eq!(ea, e(&a.to_gaussian()));
+    }
+}

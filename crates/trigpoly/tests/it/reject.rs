@@ -1,0 +1,253 @@
+//! Rejected inputs: each with its exact message, its (line, column) and the caret rendering.
+
+use pretty_assertions::assert_eq;
+use trigpoly::{GaussianRational, Poly, Rational};
+
+use crate::common::phase_space;
+
+/// Over which field an input is parsed.
+#[derive(Clone, Copy, Debug)]
+enum Field {
+    Q,
+    Qi,
+}
+
+struct Case {
+    field: Field,
+    src: &'static str,
+    message: &'static str,
+    line_col: (usize, usize),
+    /// The whole rendering: location, message, source line, carets.
+    render: &'static str,
+}
+
+const KNOWN: &str = "x, y, p_x, p_y, theta, phi, M, omega";
+
+fn cases() -> Vec<Case> {
+    use Field::{Qi, Q};
+    let case = |field, src, message, line_col, render| Case {
+        field,
+        src,
+        message,
+        line_col,
+        render,
+    };
+    vec![
+        case(Qi, "1/0", "division by zero", (1, 3), "line 1, column 3: division by zero\n  1/0\n    ^"),
+        case(
+            Qi,
+            "x^",
+            "expected an expression after '^', found end of input",
+            (1, 3),
+            "line 1, column 3: expected an expression after '^', found end of input\n  x^\n    ^",
+        ),
+        case(
+            Qi,
+            "cos(x",
+            "expected ')' to close '(' opened at column 4, found end of input",
+            (1, 6),
+            "line 1, column 6: expected ')' to close '(' opened at column 4, found end of input\n  cos(x\n       ^",
+        ),
+        case(
+            Q,
+            "x/(1+x)",
+            "cannot divide by x + 1: only division by a nonzero constant or a single term (monomial) is exact here",
+            (1, 3),
+            "line 1, column 3: cannot divide by x + 1: only division by a nonzero constant or a single \
+             term (monomial) is exact here\n  x/(1+x)\n    ^^^^^",
+        ),
+        case(
+            Q,
+            "2^(1/2)",
+            "exponents must be integers, found 1/2 (fractional powers are not polynomial)",
+            (1, 3),
+            "line 1, column 3: exponents must be integers, found 1/2 (fractional powers are not \
+             polynomial)\n  2^(1/2)\n    ^^^^^",
+        ),
+        case(
+            Qi,
+            "exp(i*theta/2)",
+            "exp takes an integer multiple of an angle times i, such as exp(i*2*theta)",
+            (1, 5),
+            "line 1, column 5: exp takes an integer multiple of an angle times i, such as \
+             exp(i*2*theta)\n  exp(i*theta/2)\n      ^^^^^^^^^",
+        ),
+        case(
+            Qi,
+            "x + q*y",
+            "unknown name 'q' (known: x, y, p_x, p_y, theta, phi, M, omega)",
+            (1, 5),
+            "line 1, column 5: unknown name 'q' (known: x, y, p_x, p_y, theta, phi, M, omega)\n  \
+             x + q*y\n      ^",
+        ),
+        case(
+            Q,
+            "x^100000",
+            "the exponent 100000 is past the limit of 10000",
+            (1, 3),
+            "line 1, column 3: the exponent 100000 is past the limit of 10000\n  x^100000\n    ^^^^^^",
+        ),
+        case(
+            Qi,
+            "theta",
+            "theta is an angle: functions depend on it through cos(theta), sin(theta) or exp(i*k*theta)",
+            (1, 1),
+            "line 1, column 1: theta is an angle: functions depend on it through cos(theta), \
+             sin(theta) or exp(i*k*theta)\n  theta\n  ^^^^^",
+        ),
+        case(
+            Qi,
+            "2*θ",
+            "θ is an angle: functions depend on it through cos(theta), sin(theta) or exp(i*k*theta)",
+            (1, 3),
+            "line 1, column 3: θ is an angle: functions depend on it through cos(theta), sin(theta) \
+             or exp(i*k*theta)\n  2*θ\n    ^",
+        ),
+        case(
+            Qi,
+            "sin(x)",
+            "sin takes an integer multiple of an angle, such as sin(2*theta)",
+            (1, 5),
+            "line 1, column 5: sin takes an integer multiple of an angle, such as sin(2*theta)\n  \
+             sin(x)\n      ^",
+        ),
+        case(
+            Q,
+            "x + i*y",
+            "the imaginary unit i needs Gaussian rational coefficients Q(i)",
+            (1, 5),
+            "line 1, column 5: the imaginary unit i needs Gaussian rational coefficients Q(i)\n  \
+             x + i*y\n      ^",
+        ),
+        case(
+            Q,
+            "1.5",
+            "decimal numbers are not exact; write a fraction such as 3/2",
+            (1, 1),
+            "line 1, column 1: decimal numbers are not exact; write a fraction such as 3/2\n  1.5\n  ^^^",
+        ),
+        case(
+            Q,
+            "cos(theta)",
+            "the angle θ (stored as e^{iθ}) needs Gaussian rational coefficients Q(i), but this polynomial is over Q",
+            (1, 5),
+            "line 1, column 5: the angle θ (stored as e^{iθ}) needs Gaussian rational coefficients \
+             Q(i), but this polynomial is over Q\n  cos(theta)\n      ^^^^^",
+        ),
+        case(
+            Qi,
+            "(x + y)^-1",
+            "cannot raise x + y to a negative power: only single terms (monomials) are invertible",
+            (1, 1),
+            "line 1, column 1: cannot raise x + y to a negative power: only single terms (monomials) \
+             are invertible\n  (x + y)^-1\n  ^^^^^^^^^^",
+        ),
+        case(
+            Qi,
+            "exp(theta)",
+            "exp takes i·n·θ with an integer n and an angle θ, such as exp(-i*2*theta)",
+            (1, 5),
+            "line 1, column 5: exp takes i·n·θ with an integer n and an angle θ, such as \
+             exp(-i*2*theta)\n  exp(theta)\n      ^^^^^",
+        ),
+        case(
+            Qi,
+            "cos(i*theta)",
+            "cos takes a real angle n·θ; use exp for complex exponentials",
+            (1, 5),
+            "line 1, column 5: cos takes a real angle n·θ; use exp for complex exponentials\n  \
+             cos(i*theta)\n      ^^^^^^^",
+        ),
+        case(
+            Qi,
+            "tan(theta)",
+            "unknown function 'tan' (known: cos, sin, exp)",
+            (1, 1),
+            "line 1, column 1: unknown function 'tan' (known: cos, sin, exp)\n  tan(theta)\n  ^^^",
+        ),
+        case(
+            Qi,
+            "cos(theta, phi)",
+            "cos takes one argument, found 2",
+            (1, 1),
+            "line 1, column 1: cos takes one argument, found 2\n  cos(theta, phi)\n  ^^^^^^^^^^^^^^^",
+        ),
+        case(
+            Qi,
+            "x^y",
+            "exponents must be integer constants",
+            (1, 3),
+            "line 1, column 3: exponents must be integer constants\n  x^y\n    ^",
+        ),
+        case(
+            Qi,
+            "(x - x)^-2",
+            "division by zero",
+            (1, 1),
+            "line 1, column 1: division by zero\n  (x - x)^-2\n  ^^^^^^^^^^",
+        ),
+        case(
+            Qi,
+            "{x, y}",
+            "a bracket {f, g} needs a phase space; parse it through a system",
+            (1, 1),
+            "line 1, column 1: a bracket {f, g} needs a phase space; parse it through a system\n  \
+             {x, y}\n  ^^^^^^",
+        ),
+        case(
+            Qi,
+            "x +\n  1/(x + y)",
+            "cannot divide by x + y: only division by a nonzero constant or a single term (monomial) is exact here",
+            (2, 5),
+            "line 2, column 5: cannot divide by x + y: only division by a nonzero constant or a single \
+             term (monomial) is exact here\n    1/(x + y)\n      ^^^^^^^",
+        ),
+        case(
+            Qi,
+            "(x^5000)^3",
+            "the exponent of x would reach 15000, past the limit of 10000",
+            (1, 1),
+            "line 1, column 1: the exponent of x would reach 15000, past the limit of 10000\n  \
+             (x^5000)^3\n  ^^^^^^^^^^",
+        ),
+    ]
+}
+
+#[test]
+fn rejected_inputs_have_exact_messages_locations_and_carets() {
+    let vars = phase_space();
+    assert!(cases()[6].message.ends_with(&format!("(known: {KNOWN})")));
+    for case in cases() {
+        let err = match case.field {
+            Field::Q => Poly::<Rational>::parse(&vars, case.src).map(|f| f.to_string()),
+            Field::Qi => Poly::<GaussianRational>::parse(&vars, case.src).map(|f| f.to_string()),
+        }
+        .map(|f| {
+            panic!(
+                "{:?} over {:?} parsed to {f}, but must be rejected",
+                case.src, case.field
+            )
+        })
+        .unwrap_err();
+        assert_eq!(
+            (err.message.as_str(), err.line_col(case.src)),
+            (case.message, case.line_col),
+            "{:?}",
+            case.src
+        );
+        assert_eq!(err.render(case.src), case.render, "{:?}", case.src);
+    }
+}
+
+/// The same source is fine over Q(i) where Q rejects it, and vice versa nothing else changes.
+#[test]
+fn rejected_over_q_accepted_over_gaussian_rationals() {
+    let vars = phase_space();
+    for src in ["x + i*y", "cos(theta)", "exp(2*i*phi)"] {
+        assert!(Poly::<Rational>::parse(&vars, src).is_err(), "{src} over Q");
+        assert!(
+            Poly::<GaussianRational>::parse(&vars, src).is_ok(),
+            "{src} over Q(i)"
+        );
+    }
+}

@@ -1,0 +1,117 @@
+//! Substitution and exact evaluation on named examples.
+
+use trigpoly::{AlgebraError, GaussianRational, Point, Rational};
+
+use crate::common::{p, phase_space, var, G, Q};
+
+#[test]
+fn subst_of_angle_doubles_the_angle() {
+    let vars = phase_space();
+    let theta = var(&vars, "theta");
+    let double: G = p(&vars, "exp(2*i*theta)");
+    // Substituting e^{iθ} ↦ e^{2iθ} maps cos θ to cos 2θ = 2cos²θ − 1, sin θ to sin 2θ.
+    let c: G = p(&vars, "cos(theta)");
+    assert_eq!(c.subst(theta, &double), Ok(p(&vars, "2*cos(theta)^2 - 1")));
+    let s: G = p(&vars, "x*sin(theta)^3");
+    assert_eq!(s.subst(theta, &double), Ok(p(&vars, "x*sin(2*theta)^3")));
+    // e^{iθ} ↦ e^{−iθ} is complex conjugation on a function of θ alone with real coefficients.
+    let f: G = p(&vars, "cos(theta)^2 + 3*sin(theta) - i*sin(2*theta)");
+    let flip: G = p(&vars, "exp(-i*theta)");
+    assert_eq!(
+        f.subst(theta, &flip),
+        Ok(p(&vars, "cos(theta)^2 - 3*sin(theta) + i*sin(2*theta)"))
+    );
+}
+
+#[test]
+fn subst_of_a_coordinate_by_a_sum_expands_the_binomial() {
+    let vars = phase_space();
+    let x = var(&vars, "x");
+    let f: G = p(&vars, "x^3 - M*x");
+    let shifted: G = p(&vars, "x + y");
+    assert_eq!(
+        f.subst(x, &shifted),
+        Ok(p(&vars, "x^3 + 3*x^2*y + 3*x*y^2 + y^3 - M*x - M*y"))
+    );
+    // A negative power of a sum is not a Laurent polynomial.
+    let g: G = p(&vars, "1/x");
+    assert!(
+        matches!(g.subst(x, &shifted), Err(AlgebraError::Invalid(m)) if m.contains("only a single term"))
+    );
+    // A monomial may replace a variable that has negative powers.
+    assert_eq!(
+        g.subst(x, &p(&vars, "2*M/omega")),
+        Ok(p(&vars, "omega/(2*M)"))
+    );
+}
+
+#[test]
+fn subst_many_is_simultaneous() {
+    let vars = phase_space();
+    let (x, y) = (var(&vars, "x"), var(&vars, "y"));
+    let l: G = p(&vars, "x*p_y - y*p_x");
+    let rotated = l
+        .subst_many(&[(x, p(&vars, "-y")), (y, p(&vars, "x"))])
+        .unwrap();
+    assert_eq!(rotated, p(&vars, "-y*p_y - x*p_x"));
+    let swapped = l
+        .subst_many(&[(x, p(&vars, "y")), (y, p(&vars, "x"))])
+        .unwrap();
+    assert_eq!(swapped, p(&vars, "y*p_y - x*p_x"));
+}
+
+#[test]
+fn eval_at_a_rational_point_of_the_unit_circle() {
+    let vars = phase_space();
+    let point = Point::new(&vars)
+        .with(var(&vars, "x"), Rational::new(1, 2))
+        .with(var(&vars, "M"), Rational::new(3, 1))
+        .with_angle(
+            var(&vars, "theta"),
+            Rational::new(3, 5),
+            Rational::new(4, 5),
+        )
+        .unwrap();
+    let value = |src: &str| p::<GaussianRational>(&vars, src).eval(&point);
+    let q = |s: &str| -> Result<GaussianRational, AlgebraError> { Ok(s.parse().unwrap()) };
+    assert_eq!(value("cos(theta)"), q("3/5"));
+    assert_eq!(value("sin(2*theta)"), q("24/25"));
+    assert_eq!(value("cos(theta)^2 + sin(theta)^2"), q("1"));
+    assert_eq!(value("exp(i*theta)"), q("3/5 + 4/5*i"));
+    assert_eq!(value("exp(-3*i*theta)"), q("-117/125 - 44/125*i"));
+    assert_eq!(value("M*x^-2 + x*sin(theta)/M"), q("182/15"));
+    assert_eq!(value("x + y"), Err(AlgebraError::MissingValue("y".into())));
+    let over_q: Q = p(&vars, "M/x - 1");
+    assert_eq!(over_q.eval(&point), q("5"));
+    let zero = Point::new(&vars).with(var(&vars, "x"), Rational::zero());
+    assert_eq!(
+        p::<Rational>(&vars, "1/x").eval(&zero),
+        Err(AlgebraError::DivisionByZero)
+    );
+    assert_eq!(
+        Point::new(&vars)
+            .with_angle(var(&vars, "phi"), Rational::new(3, 5), Rational::new(3, 5))
+            .map(|_| ()),
+        Err(AlgebraError::NotOnUnitCircle("φ".into()))
+    );
+}
+
+#[test]
+fn degrees_and_ranges_of_laurent_and_trigonometric_polynomials() {
+    use trigpoly::VarKind;
+    let vars = phase_space();
+    let (x, theta) = (var(&vars, "x"), var(&vars, "theta"));
+    let f: G = p(&vars, "x^3*p_x^2 + p_y/x^2 + cos(2*theta)");
+    assert_eq!(f.exponent_range(x), Some((-2, 3)));
+    assert_eq!((f.degree(x), f.low_degree(x)), (Some(3), Some(-2)));
+    assert_eq!(f.exponent_range(theta), Some((-2, 2)));
+    assert_eq!(f.total_degree(&[VarKind::Momentum]), Some(2));
+    assert_eq!(
+        f.total_degree(&[VarKind::Coordinate, VarKind::Momentum]),
+        Some(5)
+    );
+    assert!(f.contains(theta) && f.has_angles() && !f.contains(var(&vars, "phi")));
+    assert!(f.is_free_of(VarKind::Parameter) && !f.is_free_of(VarKind::Angle));
+    assert!(f.is_real());
+    assert_eq!(G::zero(&vars).degree(x), None);
+}
