@@ -25,9 +25,17 @@
 pub use brackets;
 pub use trigpoly;
 
+pub mod discovery;
 pub mod paper;
 pub mod render;
 pub mod report;
+pub mod system_file;
+pub mod workloads;
+
+// The README's Rust example runs as a doctest, so the front page cannot rot.
+#[cfg(doctest)]
+#[doc = include_str!("../README.md")]
+pub struct ReadmeDoctests;
 
 /// Everything a user of the library needs: `use superint::prelude::*;`.
 pub mod prelude {

@@ -33,6 +33,36 @@ pub enum SummaryKind {
     Claims,
     /// The first tower of the report: `tower: 64 brackets … checked for 1 ≤ m, n ≤ 8, all hold`.
     Tower,
+    /// Every check counted once, with expectations:
+    /// `12 claims in 2 files: 10 proved, 2 refuted; all as expected`.
+    Check {
+        /// How many system files were checked.
+        files: usize,
+    },
+    /// No claim, a computation (a bracket, a table): `computed exactly (0.01 s)`.
+    Computed,
+}
+
+/// What a claim is expected to do: a system file marks deliberately false claims
+/// `expect = "refuted"`; the paper's claims are all expected to be proved.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, serde::Deserialize)]
+#[serde(rename_all = "lowercase")]
+pub enum Expect {
+    /// The claim should be proved.
+    #[default]
+    Proved,
+    /// The claim should be refuted (a deliberately false claim).
+    Refuted,
+}
+
+impl Expect {
+    /// `proved` or `refuted`.
+    pub fn name(self) -> &'static str {
+        match self {
+            Expect::Proved => "proved",
+            Expect::Refuted => "refuted",
+        }
+    }
 }
 
 /// A numbered section of the paper.
@@ -119,6 +149,8 @@ pub struct ClaimResult {
     pub kind: ClaimKind,
     /// Whether the claim was proved.
     pub proved: bool,
+    /// What the claim is expected to do (proved, unless it is marked as deliberately false).
+    pub expect: Expect,
     /// For a refuted identity, the nonzero residual `lhs − rhs` in normal form.
     pub residual: Option<Expr>,
     /// For a proved nonvanishing claim, the nonzero value that proves it.
@@ -138,6 +170,7 @@ impl ClaimResult {
             condition: None,
             kind: ClaimKind::Identity,
             proved,
+            expect: Expect::Proved,
             residual: None,
             witness: None,
             note,
@@ -149,6 +182,18 @@ impl ClaimResult {
     pub fn timed(mut self, seconds: f64) -> Self {
         self.seconds = seconds;
         self
+    }
+
+    /// The same result with an expectation.
+    pub fn expecting(mut self, expect: Expect) -> Self {
+        self.expect = expect;
+        self
+    }
+
+    /// Whether the outcome is the expected one: proved when expected proved, refuted when
+    /// expected refuted.
+    pub fn meets_expectation(&self) -> bool {
+        self.proved == (self.expect == Expect::Proved)
     }
 }
 
@@ -265,6 +310,11 @@ impl Report {
         self.claims().iter().all(|c| c.proved)
     }
 
+    /// Whether every check met its expectation (see [`Expect`]).
+    pub fn all_as_expected(&self) -> bool {
+        self.claims().iter().all(|c| c.meets_expectation())
+    }
+
     /// The first tower of the report, if any.
     pub fn tower(&self) -> Option<&TowerResult> {
         self.sections
@@ -300,6 +350,50 @@ impl Report {
                 "tower: {} brackets {{K_{{m,n}}, H}} = i(mω − nΩ)K_{{m,n}} checked for \
                  1 ≤ m, n ≤ {}, {verdict}{time}",
                 t.checked, t.max
+            );
+        }
+        if self.summary == SummaryKind::Computed {
+            return if timings {
+                format!("computed exactly ({:.2} s)", self.seconds)
+            } else {
+                "computed exactly".to_string()
+            };
+        }
+        if let SummaryKind::Check { files } = self.summary {
+            let claims = self.claims();
+            let proved = claims.iter().filter(|c| c.proved).count();
+            let unexpected: Vec<&str> = claims
+                .iter()
+                .filter(|c| !c.meets_expectation())
+                .map(|c| c.id.as_str())
+                .collect();
+            let verdict = if unexpected.is_empty() {
+                "all as expected".to_string()
+            } else {
+                format!(
+                    "{} NOT as expected: {}",
+                    unexpected.len(),
+                    unexpected.join(", ")
+                )
+            };
+            let files = if files == 1 {
+                "1 file".to_string()
+            } else {
+                format!("{files} files")
+            };
+            let count = if claims.len() == 1 {
+                "1 claim".to_string()
+            } else {
+                format!("{} claims", claims.len())
+            };
+            return format!(
+                "{count} in {files}: {proved} proved, {} refuted; {verdict}{}",
+                claims.len() - proved,
+                if timings {
+                    format!(" ({:.2} s)", self.seconds)
+                } else {
+                    String::new()
+                }
             );
         }
         let ids = self.claim_ids();

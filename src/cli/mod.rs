@@ -1,11 +1,19 @@
 //! The command line: clap parses it into [`Cli`] (the raw arguments), [`Cli::job`] turns that
 //! into a plain [`Job`], and [`run`] acts on it. One module per subcommand.
 //!
-//! Subcommands today: `paper` (the default job) and `tower`. The next ones (`check FILE`,
-//! `bracket`, `table`, `rank`) get a module here each, a variant of [`Command`] and of [`Job`].
+//! Subcommands: `paper` (the default job), `tower`, and on system files `check`, `bracket`,
+//! `table`, `rank`; each has a module here, a variant of [`Command`] and of [`Job`].
 
+mod bench;
+mod bracket;
+mod check;
+mod closure;
+mod limits;
 mod output;
 mod paper;
+mod rank;
+mod search;
+mod table;
 mod tower;
 
 use std::ffi::OsString;
@@ -52,8 +60,28 @@ enum Command {
     /// all m, n.
     #[command(after_help = tower::EXAMPLES)]
     Tower(tower::TowerArgs),
-    // Reserved for the next subcommands, one module each: `check FILE`, `bracket`, `table`,
-    // `rank`.
+    /// Run one performance workload once (W1–W4), printing its time and term count.
+    #[command(after_help = bench::EXAMPLES)]
+    Bench(bench::BenchArgs),
+    /// Check every claim of system files: proved, or refuted with the residual.
+    #[command(after_help = check::EXAMPLES)]
+    Check(check::CheckArgs),
+    /// Print the bracket {F, G} of two expressions of a system file, in normal form.
+    #[command(after_help = bracket::EXAMPLES)]
+    Bracket(bracket::BracketArgs),
+    /// Print the bracket table of named functions of a system file.
+    #[command(after_help = table::EXAMPLES)]
+    Table(table::TableArgs),
+    /// Certify the rank of the Jacobian of functions of a system file.
+    #[command(after_help = rank::EXAMPLES)]
+    Rank(rank::RankArgs),
+    /// Find a basis of every integral in a space of functions (exact linear algebra), each
+    /// proved.
+    #[command(after_help = search::EXAMPLES)]
+    Search(search::SearchArgs),
+    /// Write the brackets of generators as polynomials in them, and find their relations.
+    #[command(after_help = closure::EXAMPLES)]
+    Closure(closure::ClosureArgs),
 }
 
 /// What to do, as plain data.
@@ -63,6 +91,20 @@ pub enum Job {
     Paper(paper::PaperJob),
     /// Check a tower.
     Tower(tower::TowerJob),
+    /// Run a performance workload.
+    Bench(bench::BenchArgs),
+    /// Check system files.
+    Check(check::CheckJob),
+    /// One bracket of a system file.
+    Bracket(bracket::BracketJob),
+    /// A bracket table of a system file.
+    Table(table::TableJob),
+    /// A rank of a system file.
+    Rank(rank::RankJob),
+    /// A search for integrals.
+    Search(search::SearchJob),
+    /// The closure of generators.
+    Closure(closure::ClosureJob),
 }
 
 impl Cli {
@@ -73,6 +115,13 @@ impl Cli {
             None => Job::Paper(paper::PaperArgs::default().job(output)),
             Some(Command::Paper(a)) => Job::Paper(a.job(output)),
             Some(Command::Tower(a)) => Job::Tower(a.job(output)),
+            Some(Command::Bench(a)) => Job::Bench(a),
+            Some(Command::Check(a)) => Job::Check(a.job(output)),
+            Some(Command::Bracket(a)) => Job::Bracket(a.job(output)),
+            Some(Command::Table(a)) => Job::Table(a.job(output)),
+            Some(Command::Rank(a)) => Job::Rank(a.job(output)),
+            Some(Command::Search(a)) => Job::Search(a.job(output)),
+            Some(Command::Closure(a)) => Job::Closure(a.job(output)),
         }
     }
 }
@@ -100,6 +149,13 @@ where
     let all_proved = match cli.job() {
         Job::Paper(job) => paper::run(&job)?,
         Job::Tower(job) => tower::run(&job)?,
+        Job::Bench(args) => bench::run(&args)?,
+        Job::Check(job) => check::run(&job)?,
+        Job::Bracket(job) => bracket::run(&job)?,
+        Job::Table(job) => table::run(&job)?,
+        Job::Rank(job) => rank::run(&job)?,
+        Job::Search(job) => search::run(&job)?,
+        Job::Closure(job) => closure::run(&job)?,
     };
     Ok(ExitCode::from(if all_proved {
         EXIT_PROVED

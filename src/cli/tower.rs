@@ -1,30 +1,48 @@
 //! `superint tower --max N`: the tower of resonant integrals by expansion, with the proof for
-//! all `m, n`.
+//! all `m, n`; of a built-in system or of a family of a system file (`--system FILE`).
 
 use std::io::IsTerminal;
 
+use std::path::PathBuf;
+
 use anyhow::Context;
-use clap::{Args, ValueEnum};
+use clap::Args;
 use indicatif::{ProgressBar, ProgressStyle};
 use superint::paper::{tower_report, TowerSystem};
 use superint::render::render;
+use superint::system_file::{family_tower_report, load, LimitsOverride};
 
+use super::limits::LimitsArgs;
 use super::output::{emit, Output};
 
 pub const EXAMPLES: &str = "\
 Examples:
   superint tower --max 8                  {K_{m,n}, H} for 1 ≤ m, n ≤ 8 (claim C12)
   superint tower --max 24 --system gravity   the shifted tower K'_{m,n} (claim C24)
-  superint tower --max 4 --format json";
+  superint tower --max 4 --format json
+  superint tower --max 6 --system systems/harmonic-rotor.toml --family K
 
-/// Which system.
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, ValueEnum)]
+With a system file, the tower is that of a [[family]] with an eigenvalue (the first, or the
+one named by --family): {K_{m,n}, H} = λ(m, n) K_{m,n} (see docs/system-files.md).";
+
+/// Which system: a built-in one or a system file.
+#[derive(Clone, Debug, PartialEq, Eq)]
 pub enum SystemArg {
-    /// The harmonic rotor, K_{m,n} = Z^m e^{−inθ}.
-    #[default]
-    Harmonic,
-    /// The rotor under gravity, K'_{m,n} = Z'^m e^{−inθ}.
-    Gravity,
+    /// A built-in system: the harmonic rotor (K_{m,n} = Z^m e^{−inθ}) or the rotor under
+    /// gravity (K'_{m,n} = Z'^m e^{−inθ}).
+    Builtin(TowerSystem),
+    /// A system file with a family.
+    File(PathBuf),
+}
+
+/// `harmonic`, `gravity`, or a path.
+fn system_arg(s: &str) -> Result<SystemArg, String> {
+    match s {
+        "harmonic" => Ok(SystemArg::Builtin(TowerSystem::Harmonic)),
+        "gravity" => Ok(SystemArg::Builtin(TowerSystem::Gravity)),
+        "" => Err("expected harmonic, gravity or a system file".into()),
+        path => Ok(SystemArg::File(PathBuf::from(path))),
+    }
 }
 
 /// Arguments of `superint tower`.
@@ -34,15 +52,24 @@ pub struct TowerArgs {
     #[arg(long, value_name = "N", default_value_t = 8,
           value_parser = clap::value_parser!(i64).range(1..=64))]
     max: i64,
-    /// The system.
-    #[arg(long, value_enum, default_value_t = SystemArg::Harmonic)]
+    /// The system: harmonic, gravity, or a system file that declares a [[family]] with an
+    /// eigenvalue.
+    #[arg(long, value_name = "harmonic|gravity|FILE", default_value = "harmonic",
+          value_parser = system_arg)]
     system: SystemArg,
+    /// With a system file: the family (default: the first with an eigenvalue).
+    #[arg(long, value_name = "NAME")]
+    family: Option<String>,
+    #[command(flatten)]
+    limits: LimitsArgs,
 }
 
 /// The tower job, as plain data.
 #[derive(Debug)]
 pub struct TowerJob {
-    pub system: TowerSystem,
+    pub system: SystemArg,
+    pub family: Option<String>,
+    pub limits: Option<LimitsOverride>,
     pub max: i64,
     pub output: Output,
 }
@@ -50,10 +77,9 @@ pub struct TowerJob {
 impl TowerArgs {
     pub fn job(self, output: Output) -> TowerJob {
         TowerJob {
-            system: match self.system {
-                SystemArg::Harmonic => TowerSystem::Harmonic,
-                SystemArg::Gravity => TowerSystem::Gravity,
-            },
+            system: self.system,
+            family: self.family,
+            limits: self.limits.any().then(|| self.limits.settings()),
             max: self.max,
             output,
         }
@@ -78,11 +104,25 @@ fn progress_bar() -> ProgressBar {
 /// Checks the tower and prints it; whether every bracket held and the proof went through.
 pub fn run(job: &TowerJob) -> anyhow::Result<bool> {
     let bar = progress_bar();
-    let report = tower_report(job.system, job.max, &mut |done, total| {
+    let mut progress = |done: usize, total: usize| {
         bar.set_length(total as u64);
         bar.set_position(done as u64);
-    })
-    .context("checking the tower")?;
+    };
+    let report = match &job.system {
+        SystemArg::Builtin(system) => {
+            if job.family.is_some() || job.limits.is_some() {
+                anyhow::bail!(
+                    "--family, --max-terms and --max-degree need a system file: \
+                     --system FILE"
+                );
+            }
+            tower_report(*system, job.max, &mut progress).context("checking the tower")?
+        }
+        SystemArg::File(path) => {
+            let file = load(path, &job.limits.unwrap_or_default())?;
+            family_tower_report(&file, job.family.as_deref(), job.max, &mut progress)?
+        }
+    };
     bar.finish_and_clear();
     emit(&render(&report, job.output.format, &job.output.options))?;
     Ok(report.all_proved())

@@ -392,6 +392,7 @@ impl PaperClaim {
             condition: v.condition,
             kind: self.kind,
             proved,
+            expect: crate::report::Expect::Proved,
             residual,
             witness,
             note,

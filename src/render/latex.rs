@@ -6,7 +6,7 @@ use trigpoly::Style;
 
 use super::tex::{markup, math, relation, sentence, text};
 use super::text::{number, point, upper_bound};
-use super::Options;
+use super::{verdict, Options};
 use crate::report::{
     ClaimKind, ClaimResult, Entry, Equations, ProofResult, RankResult, Report, TableResult,
     TowerResult,
@@ -166,11 +166,11 @@ fn claim_rows(c: &ClaimResult) -> Vec<String> {
         Some(cond) => format!(r"\quad\text{{at }} {}", math(cond)),
         None => String::new(),
     };
-    let verdict = if c.proved { "proved" } else { "REFUTED" };
     let mut rows = vec![format!(
-        r"{}{cond} && \text{{[{} {verdict}]}}",
+        r"{}{cond} && \text{{[{} {}]}}",
         aligned(&c.statement),
-        text(&c.id)
+        text(&c.id),
+        text(verdict(c))
     )];
     if let Some(r) = &c.residual {
         rows.extend(long_rows(r"\text{residual}", "=", r, " &&", CLAIM_ROW));

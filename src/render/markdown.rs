@@ -4,7 +4,7 @@
 use trigpoly::Style;
 
 use super::text::{number, point, upper_bound};
-use super::Options;
+use super::{verdict, Options};
 use crate::report::{
     ClaimKind, ClaimResult, Entry, Equations, ProofResult, RankResult, Report, TableResult,
     TowerResult,
@@ -73,8 +73,12 @@ fn claim(c: &ClaimResult) -> String {
         Some(cond) => format!(" at {}", code(cond)),
         None => String::new(),
     };
-    let verdict = if c.proved { "proved" } else { "REFUTED" };
-    let mut line = format!("- {}{cond} — **{} {verdict}**", code(&c.statement), c.id);
+    let mut line = format!(
+        "- {}{cond} — **{} {}**",
+        code(&c.statement),
+        c.id,
+        verdict(c)
+    );
     if let Some(r) = &c.residual {
         line.push_str(&format!(", residual {}", code(&r.to_string())));
     }

@@ -14,7 +14,7 @@ pub mod text;
 use std::fmt;
 use std::str::FromStr;
 
-use crate::report::Report;
+use crate::report::{ClaimResult, Expect, Report};
 
 /// An output format.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Default)]
@@ -102,6 +102,17 @@ pub(crate) fn pad(s: &str, w: usize) -> String {
         s.to_string()
     } else {
         format!("{s}{}", " ".repeat(w - n))
+    }
+}
+
+/// The verdict on a claim, as its tag reads: `proved`, `REFUTED`, and for a claim expected to
+/// be refuted `refuted, as expected` or `PROVED, expected refuted`.
+pub(crate) fn verdict(c: &ClaimResult) -> &'static str {
+    match (c.proved, c.expect) {
+        (true, Expect::Proved) => "proved",
+        (false, Expect::Proved) => "REFUTED",
+        (false, Expect::Refuted) => "refuted, as expected",
+        (true, Expect::Refuted) => "PROVED, expected refuted",
     }
 }
 

@@ -3,7 +3,7 @@
 use brackets::UpperBound;
 use trigpoly::{GaussianRational, Style, VarKind};
 
-use super::{condition_suffix, pad, plain, plural, width, Options};
+use super::{condition_suffix, pad, plain, plural, verdict, width, Options};
 use crate::report::{
     ClaimKind, ClaimResult, Entry, Equations, ProofResult, RankResult, Report, TableResult,
     TowerResult,
@@ -129,11 +129,7 @@ fn equations(out: &mut Vec<String>, eq: &Equations) {
 /// `  statement at condition ........ [C09 proved]`, and what was found when it failed.
 fn verdict_line(out: &mut Vec<String>, c: &ClaimResult) {
     let head = format!("  {}{}", c.statement, condition_suffix(&c.condition));
-    let tag = if c.proved {
-        format!("[{} proved]", c.id)
-    } else {
-        format!("[{} REFUTED]", c.id)
-    };
+    let tag = format!("[{} {}]", c.id, verdict(c));
     if width(&head) + 2 <= VERDICT_COLUMN {
         out.push(format!("{}{tag}", pad(&head, VERDICT_COLUMN)));
     } else {

@@ -91,3 +91,4 @@ pub fn assert_refuted(
 
 mod claims;
 mod cli;
+mod system_files;

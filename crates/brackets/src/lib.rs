@@ -21,19 +21,25 @@
 #![deny(missing_docs)]
 
 mod claim;
+pub mod closure;
 mod error;
 pub mod linalg;
+pub mod modular;
 mod phase;
 pub mod rank;
+pub mod scaling;
+pub mod search;
 mod system;
 pub mod systems;
 pub mod table;
 pub mod tower;
 
 pub use claim::{Claim, Condition, Outcome, Verdict};
+pub use closure::{closure, Bracket as ClosureBracket, Closure, ClosureOptions, Relation};
 pub use error::EngineError;
 pub use phase::{CanonicalPair, PhaseSpace};
 pub use rank::{rank, RankCertificate, UpperBound};
+pub use search::{search, Integral, SearchOptions, SearchResult, SearchSpace};
 pub use system::{NamedFunction, System};
 pub use table::{BracketTable, Entry};
 pub use tower::{check_tower, eigen_proof, EigenProof, TowerReport};

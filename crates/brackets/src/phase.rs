@@ -98,20 +98,39 @@ impl PhaseSpace {
     // {f, g} = Σ_i (∂f/∂q_i ∂g/∂p_i − ∂f/∂p_i ∂g/∂q_i)
     /// The Poisson bracket `{f, g}`.
     pub fn bracket(&self, f: &Expr, g: &Expr) -> Result<Expr, EngineError> {
-        let mut acc = Expr::zero(&self.vars);
+        let dg = self.gradient(g)?;
+        self.bracket_with_gradient(f, &dg)
+    }
+
+    /// `(∂g/∂q_i, ∂g/∂p_i)` for each pair: what a bracket with `g` needs of `g`, worth keeping
+    /// when `g` (a Hamiltonian, say) enters many brackets.
+    pub fn gradient(&self, g: &Expr) -> Result<Vec<(Expr, Expr)>, EngineError> {
+        self.pairs
+            .iter()
+            .map(|c| Ok((g.derivative(c.q)?, g.derivative(c.p)?)))
+            .collect()
+    }
+
+    /// `{f, g}` given the gradient of `g` from [`PhaseSpace::gradient`]: one fused sum of
+    /// products, normalised once.
+    pub fn bracket_with_gradient(
+        &self,
+        f: &Expr,
+        dg: &[(Expr, Expr)],
+    ) -> Result<Expr, EngineError> {
+        let mut derivatives = Vec::with_capacity(2 * self.pairs.len());
         for c in &self.pairs {
-            let fq = f.derivative(c.q)?;
-            let gp = g.derivative(c.p)?;
-            if !fq.is_zero() && !gp.is_zero() {
-                acc = acc.checked_add(&fq.checked_mul(&gp)?)?;
-            }
-            let fp = f.derivative(c.p)?;
-            let gq = g.derivative(c.q)?;
-            if !fp.is_zero() && !gq.is_zero() {
-                acc = acc.checked_sub(&fp.checked_mul(&gq)?)?;
-            }
+            derivatives.push((f.derivative(c.q)?, f.derivative(c.p)?));
         }
-        Ok(acc)
+        let mut terms: Vec<(&Expr, &Expr, bool)> = Vec::with_capacity(2 * self.pairs.len());
+        for ((fq, fp), (gq, gp)) in derivatives.iter().zip(dg) {
+            terms.push((fq, gp, false));
+            terms.push((fp, gq, true));
+        }
+        if terms.is_empty() {
+            return Ok(Expr::zero(&self.vars));
+        }
+        Ok(Expr::sum_of_products(&terms)?)
     }
 
     /// Hamilton's vector field of `h`: `(q̇_i, ṗ_i) = (∂h/∂p_i, −∂h/∂q_i)` for each pair, in the

@@ -32,6 +32,8 @@ pub struct System {
     name: String,
     space: PhaseSpace,
     functions: Vec<NamedFunction>,
+    /// The gradient of `H`, kept because every flow `{f, H}` needs it.
+    dh: Vec<(Expr, Expr)>,
 }
 
 impl System {
@@ -41,6 +43,7 @@ impl System {
             name: name.to_string(),
             space,
             functions: Vec::new(),
+            dh: Vec::new(),
         };
         s.define("H", "H", h);
         s
@@ -73,6 +76,10 @@ impl System {
             display: display.into(),
             expr,
         };
+        if name == "H" {
+            // A gradient that cannot be formed leaves `flow` to report the error itself.
+            self.dh = self.space.gradient(&f.expr).unwrap_or_default();
+        }
         match self.functions.iter_mut().find(|g| g.name == name) {
             Some(g) => *g = f,
             None => self.functions.push(f),
@@ -130,9 +137,13 @@ impl System {
         self.space.bracket(f, g)
     }
 
-    /// `df/dt = {f, H}`.
+    /// `df/dt = {f, H}`, with the gradient of `H` computed once per system.
     pub fn flow(&self, f: &Expr) -> Result<Expr, EngineError> {
-        self.space.bracket(f, self.hamiltonian())
+        if self.dh.len() == self.space.pairs().len() {
+            self.space.bracket_with_gradient(f, &self.dh)
+        } else {
+            self.space.bracket(f, self.hamiltonian())
+        }
     }
 }
 

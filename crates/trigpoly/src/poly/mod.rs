@@ -13,6 +13,7 @@ mod dense;
 mod mul;
 mod pow;
 mod subst;
+mod sum;
 mod trig;
 
 use std::fmt;
@@ -296,19 +297,32 @@ impl<C: Coefficient> Poly<C> {
     pub(crate) fn bounds(&self) -> Vec<(i64, i64)> {
         let layout = self.vars.layout();
         let n = self.vars.len();
-        let mut b = vec![(i64::MAX, i64::MIN); n];
-        let mut e = vec![0i64; n];
+        if self.is_zero() {
+            return vec![(0, 0); n];
+        }
+        // Field by field on the packed words: no unpacking, no division.
+        let (bits, per_word) = (layout.bits, layout.per_word);
+        let mask = if bits == 64 {
+            u64::MAX
+        } else {
+            (1u64 << bits) - 1
+        };
+        let mut lo = vec![u64::MAX; layout.words * per_word];
+        let mut hi = vec![0u64; layout.words * per_word];
         for m in self.exps.chunks_exact(self.words()) {
-            layout.unpack_into(m, &mut e);
-            for (bj, &ej) in b.iter_mut().zip(&e) {
-                bj.0 = bj.0.min(ej);
-                bj.1 = bj.1.max(ej);
+            for (w, &word) in m.iter().enumerate() {
+                for s in 0..per_word {
+                    let v = (word >> (64 - bits * (s as u32 + 1))) & mask;
+                    let k = w * per_word + s;
+                    lo[k] = lo[k].min(v);
+                    hi[k] = hi[k].max(v);
+                }
             }
         }
-        if self.is_zero() {
-            b.iter_mut().for_each(|bj| *bj = (0, 0));
-        }
-        b
+        let bias = 1i64 << (bits - 1);
+        (0..n)
+            .map(|j| (lo[j] as i64 - bias, hi[j] as i64 - bias))
+            .collect()
     }
 
     /// Builds from sorted, distinct, nonzero terms and restores the invariant (primitive part,
@@ -364,6 +378,16 @@ impl<C: Coefficient> Poly<C> {
         Poly {
             vars: vars.clone(),
             content,
+            exps,
+            coeffs,
+        }
+    }
+
+    /// Sorted terms with content 1 and no normalization: an intermediate inside a kernel.
+    pub(crate) fn raw(vars: &Arc<VarSet>, exps: Vec<u64>, coeffs: Vec<C::Int>) -> Self {
+        Poly {
+            vars: vars.clone(),
+            content: Rational::one(),
             exps,
             coeffs,
         }

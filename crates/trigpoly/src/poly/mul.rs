@@ -57,7 +57,7 @@ macro_rules! dispatch_words {
 }
 
 /// Inputs with at most this many terms on one side are multiplied by shifting and merging.
-const SMALL_SIDE: usize = 6;
+pub(crate) const SMALL_SIDE: usize = 6;
 
 impl<C: Coefficient> Poly<C> {
     /// `self · other`, or an error if the variable sets differ, an exponent would pass the
@@ -140,7 +140,7 @@ impl<C: Coefficient> Poly<C> {
 }
 
 /// Checks that exponents `a + b` stay within the limit, given per-variable bounds.
-fn check_sum_bounds(
+pub(crate) fn check_sum_bounds(
     vars: &crate::varset::VarSet,
     a: &[(i64, i64)],
     b: &[(i64, i64)],
@@ -159,42 +159,36 @@ fn shift_and_merge<C: Coefficient>(
     big: &Poly<C>,
     content: crate::number::Rational,
 ) -> Poly<C> {
-    let vars = &big.vars;
-    let one = crate::number::Rational::one();
-    let mut parts: Vec<Poly<C>> = (0..small.len())
+    let parts: Vec<Poly<C>> = (0..small.len())
         .map(|k| {
             let (exps, coeffs) = big.shifted(small.exp(k), &small.coeffs[k]);
-            Poly {
-                vars: vars.clone(),
-                content: one.clone(),
-                exps,
-                coeffs,
-            }
+            Poly::raw(&big.vars, exps, coeffs)
         })
         .collect();
+    let p = merge_tree(parts);
+    Poly::product(&big.vars, content, p.exps, p.coeffs)
+}
+
+/// Merges sorted raw term lists (content ignored) pairwise, like the levels of a tree, so each
+/// term is touched `log₂ k` times; zeros from cancellation are dropped.
+pub(crate) fn merge_tree<C: Coefficient>(mut parts: Vec<Poly<C>>) -> Poly<C> {
+    let one_i = crate::number::Integer::ONE;
     while parts.len() > 1 {
         let mut next = Vec::with_capacity(parts.len().div_ceil(2));
         let mut it = parts.into_iter();
         while let Some(a) = it.next() {
             match it.next() {
                 Some(b) => {
-                    let one_i = crate::number::Integer::ONE;
                     let (exps, coeffs) = super::arith::merge(&a, &one_i, &b, &one_i);
                     let (exps, coeffs) = drop_zeros(exps, coeffs, a.words());
-                    next.push(Poly {
-                        vars: vars.clone(),
-                        content: one.clone(),
-                        exps,
-                        coeffs,
-                    });
+                    next.push(Poly::raw(&a.vars, exps, coeffs));
                 }
                 None => next.push(a),
             }
         }
         parts = next;
     }
-    let p = parts.pop().expect("at least one term");
-    Poly::product(vars, content, p.exps, p.coeffs)
+    parts.pop().expect("at least one part")
 }
 
 fn drop_zeros<I: IntegerRing>(exps: Vec<u64>, coeffs: Vec<I>, w: usize) -> (Vec<u64>, Vec<I>) {

@@ -2,7 +2,7 @@
 
 use super::{check_exponent, Poly};
 use crate::error::AlgebraError;
-use crate::number::Coefficient;
+use crate::number::{Coefficient, Integer, IntegerRing, Rational};
 
 impl<C: Coefficient> Poly<C> {
     /// `self^e`. Negative `e` only for a single term (`Err(NegativePower)` otherwise); `0^e`
@@ -42,7 +42,18 @@ impl<C: Coefficient> Poly<C> {
             return Err(AlgebraError::NegativePower(self.to_string()));
         }
         if self.len() <= 6 {
-            // Repeated multiplication by a short polynomial: each step shifts and merges.
+            let compositions =
+                binomial_u128(e as u128 + self.len() as u128 - 1, self.len() as u128 - 1);
+            let limit = self.vars.limits().max_terms;
+            if compositions <= limit as u128 {
+                return Ok(self.multinomial_pow(e as usize));
+            }
+            if self.compositions_are_distinct() {
+                // Every composition is its own term: the power has too many, known up front.
+                return Err(AlgebraError::TooManyTerms { limit });
+            }
+            // Repeated multiplication by a short polynomial: each step shifts and merges, and
+            // checks the term limit as the power grows.
             let mut acc = self.clone();
             for _ in 1..e {
                 acc = acc.checked_mul(self)?;
@@ -68,6 +79,139 @@ impl<C: Coefficient> Poly<C> {
         Ok(acc.expect("e > 0"))
     }
 
+    /// `self^e` by the multinomial theorem (bounds already checked): one term per composition
+    /// `e = a_1 + … + a_t`, with coefficient `e!/(a_1!…a_t!) · Π c_i^{a_i}` and monomial
+    /// `Π m_i^{a_i}`; the terms are sorted once and equal monomials combined. For a short
+    /// polynomial this is as many term operations as the power has terms, where repeated
+    /// multiplication needs about `e` times more.
+    fn multinomial_pow(&self, e: usize) -> Self {
+        let t = self.len();
+        let w = self.words();
+        let layout = self.layout();
+        // Pascal's triangle up to e.
+        let mut binom: Vec<Vec<Integer>> = vec![vec![Integer::ONE]];
+        for n in 1..=e {
+            let prev = &binom[n - 1];
+            let mut row = vec![Integer::ONE; n + 1];
+            for k in 1..n {
+                row[k] = &prev[k - 1] + &prev[k];
+            }
+            binom.push(row);
+        }
+        // c_i^a for a ≤ e.
+        let powers: Vec<Vec<C::Int>> = self
+            .coeffs
+            .iter()
+            .map(|c| {
+                let mut row = vec![C::Int::from_integer(Integer::ONE)];
+                for a in 1..=e {
+                    row.push(row[a - 1].mul(c));
+                }
+                row
+            })
+            .collect();
+        // m_i − 1 word by word (wrapping): the translation that multiplies by m_i.
+        let one = layout.one();
+        let steps: Vec<Vec<u64>> = (0..t)
+            .map(|i| {
+                self.exp(i)
+                    .iter()
+                    .zip(one)
+                    .map(|(m, b)| m.wrapping_sub(*b))
+                    .collect()
+            })
+            .collect();
+        let mut keys: Vec<u64> = Vec::new();
+        let mut coeffs: Vec<C::Int> = Vec::new();
+        struct Walk<'a, I> {
+            t: usize,
+            binom: &'a [Vec<Integer>],
+            powers: &'a [Vec<I>],
+            steps: &'a [Vec<u64>],
+            keys: &'a mut Vec<u64>,
+            coeffs: &'a mut Vec<I>,
+        }
+        fn go<I: IntegerRing>(walk: &mut Walk<'_, I>, i: usize, rem: usize, key: &[u64], c: &I) {
+            let last = i + 1 == walk.t;
+            let range = if last { rem..=rem } else { 0..=rem };
+            for a in range {
+                let next_key: Vec<u64> = key
+                    .iter()
+                    .zip(&walk.steps[i])
+                    .map(|(k, s)| k.wrapping_add(s.wrapping_mul(a as u64)))
+                    .collect();
+                let next_c = c.mul(&walk.powers[i][a]).scale(&walk.binom[rem][a]);
+                if last {
+                    walk.keys.extend_from_slice(&next_key);
+                    walk.coeffs.push(next_c);
+                } else {
+                    go(walk, i + 1, rem - a, &next_key, &next_c);
+                }
+            }
+        }
+        let mut walk = Walk {
+            t,
+            binom: &binom,
+            powers: &powers,
+            steps: &steps,
+            keys: &mut keys,
+            coeffs: &mut coeffs,
+        };
+        go(&mut walk, 0, e, one, &C::Int::from_integer(Integer::ONE));
+        // Sort once, combine equal monomials.
+        let n = coeffs.len();
+        let mut order: Vec<usize> = (0..n).collect();
+        order.sort_unstable_by(|&a, &b| keys[b * w..(b + 1) * w].cmp(&keys[a * w..(a + 1) * w]));
+        let mut out_e: Vec<u64> = Vec::with_capacity(n * w);
+        let mut out_c: Vec<C::Int> = Vec::with_capacity(n);
+        let mut coeffs: Vec<Option<C::Int>> = coeffs.into_iter().map(Some).collect();
+        for k in order {
+            let key = &keys[k * w..(k + 1) * w];
+            let c = coeffs[k].take().expect("each term once");
+            if !out_c.is_empty() && &out_e[out_e.len() - w..] == key {
+                let top = out_c.last_mut().expect("a previous term");
+                *top = top.add(&c);
+            } else {
+                out_e.extend_from_slice(key);
+                out_c.push(c);
+            }
+        }
+        let content = self.content.pow(e as i64).expect("nonzero content");
+        Self::drop_zeros_and_normalize(&self.vars, content, out_e, out_c)
+    }
+
+    /// Whether distinct compositions `Σ a_i = e` give distinct monomials `Π m_i^{a_i}`: true
+    /// when the vectors `(1, exponents of m_i)` are linearly independent (exact elimination).
+    fn compositions_are_distinct(&self) -> bool {
+        let n = self.vars.len();
+        let mut rows: Vec<Vec<Rational>> = self
+            .terms()
+            .map(|t| {
+                std::iter::once(Rational::one())
+                    .chain(t.exponents().into_iter().map(Rational::from))
+                    .collect()
+            })
+            .collect();
+        let mut rank = 0;
+        for col in 0..=n {
+            let Some(p) = (rank..rows.len()).find(|&r| !rows[r][col].is_zero()) else {
+                continue;
+            };
+            rows.swap(rank, p);
+            for r in 0..rows.len() {
+                if r != rank && !rows[r][col].is_zero() {
+                    let f = &rows[r][col] / &rows[rank][col];
+                    let pivot = rows[rank].clone();
+                    for (x, y) in rows[r].iter_mut().zip(&pivot) {
+                        *x -= &f * y;
+                    }
+                }
+            }
+            rank += 1;
+        }
+        rank == rows.len()
+    }
+
     /// `(c·m)^e` for a single term (bounds already checked).
     fn monomial_pow(&self, e: i64) -> Self {
         let c = C::from_parts(&self.content, &self.coeffs[0]);
@@ -90,6 +234,16 @@ impl<C: Coefficient> Poly<C> {
 
 /// The largest coefficient a power of a single term may produce, in bits (2 MiB of digits).
 const MAX_COEFFICIENT_BITS: u64 = 1 << 24;
+
+/// `C(n, k)`, saturating.
+fn binomial_u128(n: u128, k: u128) -> u128 {
+    let k = k.min(n - k.min(n));
+    let mut acc: u128 = 1;
+    for j in 0..k {
+        acc = acc.saturating_mul(n - j) / (j + 1);
+    }
+    acc
+}
 
 /// `c^e` in the field (c nonzero).
 pub(crate) fn pow_field<C: Coefficient>(c: &C, e: i64) -> C {

@@ -210,6 +210,27 @@ proptest! {
     }
 
     #[test]
+    fn pow_agrees_with_repeated_multiplication(f in gpoly(5), a in qpoly(5), e in 0i64..7) {
+        // The multinomial expansion against e − 1 plain multiplications.
+        let mut fe = Poly::one(f.vars());
+        let mut ae = Poly::one(a.vars());
+        for _ in 0..e {
+            fe = &fe * &f;
+            ae = &ae * &a;
+        }
+        prop_assert_eq!(f.checked_pow(e).unwrap(), fe);
+        prop_assert_eq!(a.checked_pow(e).unwrap(), ae);
+    }
+
+    #[test]
+    fn sum_of_products_agrees_with_the_sum(f in gpoly(8), g in gpoly(3), h in gpoly(9), k in gpoly(8), neg in any::<bool>()) {
+        let fused = Poly::sum_of_products(&[(&f, &g, false), (&h, &k, neg), (&g, &h, true)]).unwrap();
+        let hk = &h * &k;
+        let second = if neg { -hk } else { hk };
+        prop_assert_eq!(fused, &(&(&f * &g) + &second) - &(&g * &h));
+    }
+
+    #[test]
     fn ring_mul_associative_dense(f in dense_poly(), g in dense_poly(), h in dense_poly()) {
         prop_assert_eq!((&f * &g) * &h, &f * (&g * &h));
         prop_assert_eq!(&f * (&g + &h), &f * &g + &f * &h);

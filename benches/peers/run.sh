@@ -1,0 +1,21 @@
+#!/usr/bin/env bash
+# One command: installs the peers (python-flint and SymPy in a local virtual environment,
+# Singular from Debian's packages), builds superint, and runs the side-by-side comparison.
+#   benches/peers/run.sh [--quick] [--repeats N] [--markdown]
+set -euo pipefail
+here="$(cd "$(dirname "$0")" && pwd)"
+root="$(cd "$here/../.." && pwd)"
+venv="$here/.venv"
+if [ ! -x "$venv/bin/python" ]; then
+  python3 -m venv "$venv"
+  "$venv/bin/pip" install --quiet "python-flint==0.9.0" "sympy==1.14.0"
+fi
+if ! command -v Singular >/dev/null 2>&1; then
+  if [ "$(id -u)" = 0 ]; then
+    apt-get update -qq && DEBIAN_FRONTEND=noninteractive apt-get install -y -qq singular >/dev/null
+  else
+    sudo apt-get update -qq && sudo DEBIAN_FRONTEND=noninteractive apt-get install -y -qq singular >/dev/null
+  fi
+fi
+(cd "$root" && cargo build --release --quiet)
+PEERS_PYTHON="$venv/bin/python" exec "$venv/bin/python" "$here/compare.py" "$@"

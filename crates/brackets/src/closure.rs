@@ -1,0 +1,854 @@
+//! Closure: the algebra a list of functions generates under the Poisson bracket.
+//!
+//! For generators `G_1, …, G_r` and a degree `D`, every bracket `{G_a, G_b}` is written as a
+//! polynomial `Σ c_β G^β` of degree `≤ D` in the generators when one exists, and the polynomial
+//! relations among the generators up to degree `D` (syzygies, such as the Casimir
+//! `4 G1² + G2² + ω² L² = (F1 − F2)²`) are found, each relation minimal: not a combination of
+//! multiples of lower ones. Both are exact linear algebra over `Q` on the monomials `G^β`
+//! expanded at fixed parameter values (modulo a 62-bit prime, reconstructed, checked exactly);
+//! coefficients are then lifted to Laurent monomials in the parameters by homogeneity
+//! ([`crate::scaling`]) and every bracket and relation is checked by expanding it symbolically.
+//! A condition such as a resonance is applied to the generators and to each bracket after it
+//! is formed, so the identities hold on the condition's surface.
+//!
+//! ```
+//! use brackets::closure::{closure, ClosureOptions};
+//! use brackets::systems;
+//!
+//! // su(2) of the harmonic rotor, and its Casimir.
+//! let rotor = systems::harmonic_rotor();
+//! let c = closure(&rotor, &["F1", "F2", "L", "G1", "G2"], &ClosureOptions::new(2))?;
+//! assert_eq!(c.render_bracket(3, 4), "−ω²L"); // {G1, G2}
+//! assert_eq!(c.relations.len(), 1);
+//! assert!(c.relations[0].symbolic);
+//! # Ok::<(), brackets::EngineError>(())
+//! ```
+
+use std::collections::HashMap;
+use std::sync::Arc;
+use std::time::Instant;
+
+use trigpoly::{Expr, GaussianRational, Rational, Style, Var, VarKind, VarSet};
+
+use crate::claim::Condition;
+use crate::error::EngineError;
+use crate::modular::{self, Echelon, Fp, SparseVec};
+use crate::scaling::{Lifter, Scaling};
+use crate::search::fix_parameters;
+use crate::system::System;
+use crate::table::{BracketTable, Entry};
+
+/// What to compute.
+#[derive(Clone, Debug)]
+pub struct ClosureOptions {
+    /// The largest degree of the polynomials in the generators.
+    pub degree: u32,
+    /// The condition (a resonance), applied to generators and brackets.
+    pub condition: Option<Condition>,
+    /// Parameter values for the linear algebra (every other parameter is fixed to 1).
+    pub fixed: Vec<(Var, Rational)>,
+}
+
+impl ClosureOptions {
+    /// Degree `D`, no condition.
+    pub fn new(degree: u32) -> Self {
+        ClosureOptions {
+            degree,
+            condition: None,
+            fixed: Vec::new(),
+        }
+    }
+
+    /// Under a condition.
+    pub fn when(mut self, condition: Condition) -> Self {
+        self.condition = Some(condition);
+        self
+    }
+
+    /// With a parameter fixed to a value for the linear algebra.
+    pub fn fix(mut self, v: Var, value: Rational) -> Self {
+        self.fixed.retain(|f| f.0 != v);
+        self.fixed.push((v, value));
+        self
+    }
+}
+
+/// One bracket of the structure table.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub enum Bracket {
+    /// `{G_a, G_b}` as a polynomial in the generators (in [`Closure::ring`]), checked by
+    /// expanding it: for all parameter values when `symbolic`, else at the fixed values.
+    Polynomial {
+        /// The polynomial.
+        poly: Expr,
+        /// Whether it was proved with symbolic parameters.
+        symbolic: bool,
+    },
+    /// No polynomial of degree `≤ D` in the generators: the bracket itself.
+    Outside {
+        /// `{G_a, G_b}` (after the condition).
+        bracket: Expr,
+    },
+}
+
+/// A polynomial relation among the generators.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct Relation {
+    /// `R(G) = 0`, a polynomial in [`Closure::ring`].
+    pub poly: Expr,
+    /// Its degree in the generators.
+    pub degree: u32,
+    /// Whether it was proved with symbolic parameters (else only at the fixed values).
+    pub symbolic: bool,
+}
+
+/// Seconds spent (reported, never used to decide anything).
+#[derive(Clone, Debug, Default)]
+pub struct ClosureTimings {
+    /// Expanding the monomials at the fixed values.
+    pub monomials: f64,
+    /// Linear algebra and reconstruction.
+    pub solve: f64,
+    /// Symbolic lifting and proofs.
+    pub proofs: f64,
+    /// Everything.
+    pub total: f64,
+}
+
+/// The closure of a list of generators.
+#[derive(Clone, Debug)]
+pub struct Closure {
+    /// The generators' names, as given.
+    pub names: Vec<String>,
+    /// Their display names.
+    pub display: Vec<String>,
+    /// The ring the polynomials live in: the parameters and one symbol per generator.
+    pub ring: Arc<VarSet>,
+    /// The generators' symbols in [`Closure::ring`].
+    pub symbols: Vec<Var>,
+    /// The degree bound.
+    pub degree: u32,
+    /// The condition's text, if any.
+    pub condition: Option<String>,
+    /// The parameter values used for the linear algebra.
+    pub parameters: Vec<(Var, Rational)>,
+    /// Whether the weights determine every parameter (so that results can be lifted).
+    pub liftable: bool,
+    /// `brackets[a][b] = {G_a, G_b}`.
+    pub brackets: Vec<Vec<Bracket>>,
+    /// The minimal relations, by degree.
+    pub relations: Vec<Relation>,
+    /// How many monomials of degree `≤ D` there are.
+    pub monomials: usize,
+    /// The dimension of their span (monomials minus independent relations).
+    pub rank: usize,
+    /// Timings.
+    pub timings: ClosureTimings,
+}
+
+impl Closure {
+    /// The bracket `{G_a, G_b}` as text: `−ω² L`, `0`, or the expression itself.
+    pub fn render_bracket(&self, a: usize, b: usize) -> String {
+        match &self.brackets[a][b] {
+            Bracket::Polynomial { poly, .. } => poly.render(Style::Unicode),
+            Bracket::Outside { bracket } => bracket.render(Style::Unicode),
+        }
+    }
+
+    /// The structure table as a [`BracketTable`], for printing.
+    pub fn table(&self) -> BracketTable {
+        BracketTable {
+            names: self.names.clone(),
+            display: self.display.clone(),
+            entries: self
+                .brackets
+                .iter()
+                .map(|row| {
+                    row.iter()
+                        .map(|b| match b {
+                            Bracket::Polynomial { poly, .. } if poly.is_zero() => {
+                                Entry::Combination(Vec::new())
+                            }
+                            Bracket::Polynomial { poly, .. } => Entry::Expression(poly.clone()),
+                            Bracket::Outside { bracket } => Entry::Expression(bracket.clone()),
+                        })
+                        .collect()
+                })
+                .collect(),
+        }
+    }
+
+    /// The pairs `(a, b)`, `a < b`, whose bracket is not a polynomial of degree `≤ D`.
+    pub fn outside(&self) -> Vec<(usize, usize)> {
+        let r = self.names.len();
+        (0..r)
+            .flat_map(|a| (a + 1..r).map(move |b| (a, b)))
+            .filter(|&(a, b)| matches!(self.brackets[a][b], Bracket::Outside { .. }))
+            .collect()
+    }
+
+    /// Whether the table closes: every bracket is a polynomial in the generators.
+    pub fn closes(&self) -> bool {
+        self.outside().is_empty()
+    }
+
+    /// Whether every polynomial bracket and relation was proved symbolically.
+    pub fn all_symbolic(&self) -> bool {
+        self.relations.iter().all(|r| r.symbolic)
+            && self.brackets.iter().flatten().all(|b| match b {
+                Bracket::Polynomial { symbolic, .. } => *symbolic,
+                Bracket::Outside { .. } => true,
+            })
+    }
+}
+
+/// Exponent vectors over `r` generators of degree `≤ d`, ordered: degree 1, then the constant,
+/// then degrees 2, 3, … (so that a generator is preferred over a constant it equals), each
+/// degree in lexicographic order.
+fn monomials(r: usize, d: u32) -> Vec<Vec<u32>> {
+    fn of_degree(r: usize, d: u32) -> Vec<Vec<u32>> {
+        if r == 0 {
+            return if d == 0 { vec![Vec::new()] } else { Vec::new() };
+        }
+        let mut out = Vec::new();
+        for e in (0..=d).rev() {
+            for mut rest in of_degree(r - 1, d - e) {
+                rest.insert(0, e);
+                out.push(rest);
+            }
+        }
+        out
+    }
+    let mut order = vec![1, 0];
+    order.extend(2..=d);
+    order
+        .into_iter()
+        .filter(|&k| k <= d)
+        .flat_map(|k| of_degree(r, k))
+        .collect()
+}
+
+/// The closure of the named generators of `system`.
+pub fn closure(
+    system: &System,
+    names: &[&str],
+    options: &ClosureOptions,
+) -> Result<Closure, EngineError> {
+    let gens: Vec<(String, String, Expr)> = names
+        .iter()
+        .map(|n| {
+            Ok((
+                n.to_string(),
+                system.display_name(n).to_string(),
+                system.get(n)?.clone(),
+            ))
+        })
+        .collect::<Result<_, EngineError>>()?;
+    closure_of(system, &gens, options)
+}
+
+/// The closure of generators given as `(name, display name, function)`.
+pub fn closure_of(
+    system: &System,
+    generators: &[(String, String, Expr)],
+    options: &ClosureOptions,
+) -> Result<Closure, EngineError> {
+    let start = Instant::now();
+    let mut timings = ClosureTimings::default();
+    let vars = system.vars().clone();
+    let r = generators.len();
+    let condition = options.condition.as_ref();
+    let restrict = |e: Expr| -> Result<Expr, EngineError> {
+        match condition {
+            Some(c) => c.apply(&e),
+            None => Ok(e),
+        }
+    };
+    // Symbolic generators and brackets, after the condition.
+    let g_sym: Vec<Expr> = generators
+        .iter()
+        .map(|g| restrict(g.2.clone()))
+        .collect::<Result<_, _>>()?;
+    let mut b_sym: HashMap<(usize, usize), Expr> = HashMap::new();
+    for a in 0..r {
+        for b in a + 1..r {
+            let br = system.bracket(&generators[a].2, &generators[b].2)?;
+            b_sym.insert((a, b), restrict(br)?);
+        }
+    }
+    // Parameters: those that occur, each given or 1.
+    let mut parameters: Vec<(Var, Rational)> = Vec::new();
+    for v in vars.vars() {
+        if vars.variable(v).kind() != VarKind::Parameter {
+            continue;
+        }
+        let given = options.fixed.iter().find(|f| f.0 == v).map(|f| f.1.clone());
+        let occurs = g_sym.iter().chain(b_sym.values()).any(|e| e.contains(v));
+        if given.is_some() || occurs {
+            parameters.push((v, given.unwrap_or_else(Rational::one)));
+        }
+    }
+    let fix = |e: &Expr| fix_parameters(e, &parameters);
+    let g: Vec<Expr> = g_sym.iter().map(fix).collect::<Result<_, _>>()?;
+    let complex = g.iter().any(|e| !e.is_real());
+
+    // Monomials at the fixed values.
+    // Generators that are constant on the condition's surface (`F2 = Iω²/2` at `p_θ = Iω`)
+    // enter the polynomials as their values: relations `G − c = 0` of their own.
+    let phase_free = |e: &Expr| {
+        vars.vars()
+            .filter(|v| vars.variable(*v).kind() != VarKind::Parameter)
+            .all(|v| !e.contains(v))
+    };
+    let constant: Vec<bool> = g_sym.iter().map(phase_free).collect();
+    let monos: Vec<Vec<u32>> = monomials(r, options.degree)
+        .into_iter()
+        .filter(|b| b.iter().zip(&constant).all(|(e, c)| *e == 0 || !c))
+        .collect();
+    let mut values: HashMap<Vec<u32>, Expr> = HashMap::new();
+    values.insert(vec![0; r], Expr::one(&vars));
+    let mut by_degree = monos.clone();
+    by_degree.sort_by_key(|b| b.iter().sum::<u32>());
+    for beta in &by_degree {
+        if values.contains_key(beta) {
+            continue;
+        }
+        let a = beta.iter().position(|e| *e > 0).expect("nonconstant");
+        let mut lower = beta.clone();
+        lower[a] -= 1;
+        let v = values[&lower].checked_mul(&g[a])?;
+        values.insert(beta.clone(), v);
+    }
+    timings.monomials = start.elapsed().as_secs_f64();
+
+    // Columns: each monomial (and i times it, for complex generators), as real vectors.
+    let t = Instant::now();
+    let angles: Vec<Var> = vars.angles().collect();
+    let mut rows: HashMap<(Vec<i64>, bool), usize> = HashMap::new();
+    let mut vectorize = |e: &Expr, times_i: bool| -> SparseVec<Rational> {
+        let mut out = Vec::new();
+        for t in e.terms() {
+            let ex = t.exponents();
+            if !complex {
+                let k: Vec<i64> = angles.iter().map(|v| ex[v.index()]).collect();
+                if k.iter().find(|x| **x != 0).is_some_and(|x| *x < 0) {
+                    continue;
+                }
+            }
+            let c = t.coeff();
+            let (re, im) = if times_i {
+                (-&c.im, c.re.clone())
+            } else {
+                (c.re.clone(), c.im.clone())
+            };
+            for (part, x) in [(false, re), (true, im)] {
+                if x.is_zero() {
+                    continue;
+                }
+                let len = rows.len();
+                let row = *rows.entry((ex.clone(), part)).or_insert(len);
+                out.push((row, x));
+            }
+        }
+        out
+    };
+    // Column j: (monomial index, times i).
+    let mut col_ids: Vec<(usize, bool)> = Vec::new();
+    let mut columns: Vec<SparseVec<Rational>> = Vec::new();
+    for (m, beta) in monos.iter().enumerate() {
+        for times_i in [false, true] {
+            if times_i && !complex {
+                continue;
+            }
+            col_ids.push((m, times_i));
+            columns.push(vectorize(&values[beta], times_i));
+        }
+    }
+    let mut targets: HashMap<(usize, usize), SparseVec<Rational>> = HashMap::new();
+    for (&(a, b), e) in &b_sym {
+        targets.insert((a, b), vectorize(&fix(e)?, false));
+    }
+    let nrows = rows.len();
+
+    // Relations: the kernel, in column order (exact).
+    let kernel = modular::kernel(&columns, nrows);
+    let rank = columns.len() - kernel.len();
+    // Brackets: each target in the span of the columns.
+    let mut echelon = Echelon::<Fp>::new(nrows);
+    let mut exact: Option<Echelon<Rational>> = None;
+    let mut fp_ok = true;
+    for (j, c) in columns.iter().enumerate() {
+        match modular::to_fp(c) {
+            Some(v) => {
+                echelon.insert(j, &v);
+            }
+            None => fp_ok = false,
+        }
+    }
+    let mut solutions: HashMap<(usize, usize), Option<SparseVec<Rational>>> = HashMap::new();
+    for (&key, target) in &targets {
+        let mut found = None;
+        let mut decided = false;
+        if fp_ok {
+            if let Some(tf) = modular::to_fp(target) {
+                match echelon.express(&tf) {
+                    None => decided = true, // independent modulo p: certainly outside
+                    Some(dep) => {
+                        if let Some(sol) = modular::reconstruct_vec(&dep) {
+                            if combination_equals(&columns, nrows, &sol, target) {
+                                found = Some(sol);
+                                decided = true;
+                            }
+                        }
+                    }
+                }
+            }
+        }
+        if !decided {
+            let e = exact.get_or_insert_with(|| {
+                let mut e = Echelon::<Rational>::new(nrows);
+                for (j, c) in columns.iter().enumerate() {
+                    e.insert(j, c);
+                }
+                e
+            });
+            found = e.express(target);
+        }
+        solutions.insert(key, found);
+    }
+    timings.solve = t.elapsed().as_secs_f64();
+
+    // The ring for printing: the parameters and one symbol per generator.
+    let t = Instant::now();
+    let mut builder = VarSet::builder();
+    for v in vars.vars() {
+        if vars.variable(v).kind() == VarKind::Parameter {
+            builder = builder.parameter(vars.variable(v).name());
+        }
+    }
+    for (name, _, _) in generators {
+        if vars
+            .lookup(name)
+            .is_some_and(|v| vars.variable(v).kind() == VarKind::Parameter)
+        {
+            return Err(EngineError::Invalid(format!(
+                "the generator '{name}' has the name of a parameter"
+            )));
+        }
+        builder = builder.coordinate(name);
+    }
+    let ring = builder
+        .build()
+        .map_err(|e| EngineError::Invalid(format!("cannot name the generators: {e}")))?;
+    let symbols: Vec<Var> = generators
+        .iter()
+        .map(|g| ring.lookup(&g.0).expect("declared"))
+        .collect();
+    let param_in_ring: HashMap<Var, Var> = vars
+        .vars()
+        .filter(|v| vars.variable(*v).kind() == VarKind::Parameter)
+        .map(|v| (v, ring.lookup(vars.variable(v).name()).expect("declared")))
+        .collect();
+
+    // Lifting.
+    let scaling = Scaling::of_functions(
+        system.space(),
+        &generators.iter().map(|g| g.2.clone()).collect::<Vec<_>>(),
+        condition,
+    )?;
+    // The parameters that the lift must restore: those of the generators that are not
+    // constant on the surface and of the brackets (a surface constant such as `F2 = Iω²/2` is
+    // a relation of its own, kept symbolic).
+    let lifted_parameters: Vec<(Var, Rational)> = parameters
+        .iter()
+        .filter(|(v, _)| {
+            g_sym
+                .iter()
+                .zip(&constant)
+                .filter(|(_, c)| !**c)
+                .map(|(e, _)| e)
+                .chain(b_sym.values())
+                .any(|e| e.contains(*v))
+        })
+        .cloned()
+        .collect();
+    let lifter = scaling.lifter(&lifted_parameters);
+    let gen_weights: Option<Vec<Vec<Rational>>> = g_sym
+        .iter()
+        .map(|e| scaling.homogeneous_weight(e))
+        .collect();
+    let mut lift_ctx = LiftContext {
+        vars: vars.clone(),
+        ring: ring.clone(),
+        symbols: symbols.clone(),
+        param_in_ring,
+        monos: &monos,
+        col_ids: &col_ids,
+        g_sym: &g_sym,
+        sym_values: HashMap::new(),
+        lifter: lifter.as_ref(),
+        scaling: &scaling,
+        gen_weights: gen_weights.as_deref(),
+    };
+
+    // Minimal relations, by degree.
+    let degree_of = |v: &SparseVec<Rational>| -> u32 {
+        v.iter()
+            .map(|(j, _)| monos[col_ids[*j].0].iter().sum::<u32>())
+            .max()
+            .unwrap_or(0)
+    };
+    let mut order: Vec<usize> = (0..kernel.len()).collect();
+    order.sort_by_key(|&k| degree_of(&kernel[k]));
+    let col_of: HashMap<(Vec<u32>, bool), usize> = col_ids
+        .iter()
+        .enumerate()
+        .map(|(j, (m, i))| ((monos[*m].clone(), *i), j))
+        .collect();
+    let mut ideal = Echelon::<Fp>::new(columns.len());
+    let mut ideal_id = 0;
+    let mut accepted: Vec<(SparseVec<Rational>, u32, u32)> = Vec::new(); // (relation, degree, multiples added up to)
+    let mut relations = Vec::new();
+    for (a, g) in g_sym.iter().enumerate() {
+        if constant[a] && options.degree >= 1 {
+            let value = lift_ctx.to_ring(g)?;
+            let symbol = Expr::monomial(&ring, GaussianRational::from(1), &[(symbols[a], 1)])?;
+            relations.push(Relation {
+                poly: symbol.checked_sub(&value)?,
+                degree: 1,
+                symbolic: true,
+            });
+        }
+    }
+    for k in order {
+        let rel = &kernel[k];
+        let d = degree_of(rel);
+        // Multiples of the accepted relations by monomials, up to degree d.
+        for (r0, d0, added) in accepted.iter_mut() {
+            while *d0 + *added < d {
+                *added += 1;
+                for gamma in monomials(r, *added)
+                    .iter()
+                    .filter(|m| m.iter().sum::<u32>() == *added)
+                {
+                    for times_i in [false, true] {
+                        if times_i && !complex {
+                            continue;
+                        }
+                        if let Some(v) = shift(r0, gamma, times_i, &col_ids, &monos, &col_of) {
+                            if let Some(vf) = modular::to_fp(&v) {
+                                ideal.insert(ideal_id, &vf);
+                                ideal_id += 1;
+                            }
+                        }
+                    }
+                }
+            }
+        }
+        let Some(rf) = modular::to_fp(rel) else {
+            continue;
+        };
+        if ideal.contains(&rf) {
+            continue;
+        }
+        ideal.insert(ideal_id, &rf);
+        ideal_id += 1;
+        accepted.push((rel.clone(), d, 0));
+        let (poly, symbolic) = lift_ctx.relation(rel)?;
+        relations.push(Relation {
+            poly,
+            degree: d,
+            symbolic,
+        });
+    }
+
+    // The structure table.
+    let mut brackets = vec![
+        vec![
+            Bracket::Polynomial {
+                poly: Expr::zero(&ring),
+                symbolic: true
+            };
+            r
+        ];
+        r
+    ];
+    for a in 0..r {
+        for b in a + 1..r {
+            let entry = match &solutions[&(a, b)] {
+                Some(sol) => {
+                    let (poly, symbolic) = lift_ctx.bracket(sol, &b_sym[&(a, b)])?;
+                    Bracket::Polynomial { poly, symbolic }
+                }
+                None => Bracket::Outside {
+                    bracket: b_sym[&(a, b)].clone(),
+                },
+            };
+            let negated = match &entry {
+                Bracket::Polynomial { poly, symbolic } => Bracket::Polynomial {
+                    poly: -poly,
+                    symbolic: *symbolic,
+                },
+                Bracket::Outside { bracket } => Bracket::Outside { bracket: -bracket },
+            };
+            brackets[a][b] = entry;
+            brackets[b][a] = negated;
+        }
+    }
+    timings.proofs = t.elapsed().as_secs_f64();
+    timings.total = start.elapsed().as_secs_f64();
+    Ok(Closure {
+        names: generators.iter().map(|g| g.0.clone()).collect(),
+        display: generators.iter().map(|g| g.1.clone()).collect(),
+        ring,
+        symbols,
+        degree: options.degree,
+        condition: condition.map(|c| c.text.clone()),
+        parameters,
+        liftable: lifter.is_some() && gen_weights.is_some(),
+        brackets,
+        relations,
+        monomials: monos.len(),
+        rank,
+        timings,
+    })
+}
+
+/// Whether `Σ sol_j column_j = target` exactly.
+fn combination_equals(
+    columns: &[SparseVec<Rational>],
+    rows: usize,
+    sol: &SparseVec<Rational>,
+    target: &SparseVec<Rational>,
+) -> bool {
+    let mut acc = vec![Rational::zero(); rows];
+    for (j, x) in sol {
+        for (i, a) in &columns[*j] {
+            acc[*i] += x * a;
+        }
+    }
+    for (i, x) in target {
+        acc[*i] -= x;
+    }
+    acc.iter().all(Rational::is_zero)
+}
+
+/// A relation (over columns) multiplied by the monomial `gamma` (and by `i`), if every
+/// product is still a column.
+fn shift(
+    rel: &SparseVec<Rational>,
+    gamma: &[u32],
+    times_i: bool,
+    col_ids: &[(usize, bool)],
+    monos: &[Vec<u32>],
+    col_of: &HashMap<(Vec<u32>, bool), usize>,
+) -> Option<SparseVec<Rational>> {
+    let mut out: HashMap<usize, Rational> = HashMap::new();
+    for (j, x) in rel {
+        let (m, imag) = col_ids[*j];
+        let beta: Vec<u32> = monos[m].iter().zip(gamma).map(|(a, b)| a + b).collect();
+        // i · (i m) = −m.
+        let (imag, x) = match (times_i, imag) {
+            (false, i) => (i, x.clone()),
+            (true, false) => (true, x.clone()),
+            (true, true) => (false, -x),
+        };
+        let c = *col_of.get(&(beta, imag))?;
+        *out.entry(c).or_insert_with(Rational::zero) += &x;
+    }
+    let mut v: SparseVec<Rational> = out.into_iter().filter(|(_, x)| !x.is_zero()).collect();
+    v.sort_by_key(|x| x.0);
+    Some(v)
+}
+
+/// A term `c · Π p^ν · G^β` of a polynomial in the generators: coefficient, parameter
+/// exponents, index of the monomial `β`.
+type LiftedTerm = (GaussianRational, Vec<(Var, i64)>, usize);
+
+/// What lifting and printing need.
+struct LiftContext<'a> {
+    vars: Arc<VarSet>,
+    ring: Arc<VarSet>,
+    symbols: Vec<Var>,
+    param_in_ring: HashMap<Var, Var>,
+    monos: &'a [Vec<u32>],
+    col_ids: &'a [(usize, bool)],
+    g_sym: &'a [Expr],
+    sym_values: HashMap<Vec<u32>, Expr>,
+    lifter: Option<&'a Lifter>,
+    scaling: &'a Scaling,
+    gen_weights: Option<&'a [Vec<Rational>]>,
+}
+
+impl LiftContext<'_> {
+    /// A function of the parameters alone, in the ring.
+    fn to_ring(&self, e: &Expr) -> Result<Expr, EngineError> {
+        let mut acc = Expr::zero(&self.ring);
+        for t in e.terms() {
+            let powers: Vec<(Var, i64)> = self
+                .vars
+                .vars()
+                .filter(|v| t.exponent(*v) != 0)
+                .map(|v| (self.param_in_ring[&v], t.exponent(v)))
+                .collect();
+            acc = acc.checked_add(&Expr::monomial(&self.ring, t.coeff(), &powers)?)?;
+        }
+        Ok(acc)
+    }
+
+    /// The symbolic value of a monomial in the generators.
+    fn sym_value(&mut self, beta: &[u32]) -> Result<Expr, EngineError> {
+        if let Some(v) = self.sym_values.get(beta) {
+            return Ok(v.clone());
+        }
+        let mut acc = Expr::one(&self.vars);
+        for (g, e) in self.g_sym.iter().zip(beta) {
+            if *e > 0 {
+                acc = acc.checked_mul(&g.checked_pow(*e as i64)?)?;
+            }
+        }
+        self.sym_values.insert(beta.to_vec(), acc.clone());
+        Ok(acc)
+    }
+
+    /// The coefficients of a solution over columns, combined per monomial (`re + i·im`).
+    fn per_monomial(&self, sol: &SparseVec<Rational>) -> Vec<(usize, GaussianRational)> {
+        let mut out: Vec<(usize, GaussianRational)> = Vec::new();
+        for (j, x) in sol {
+            let (m, imag) = self.col_ids[*j];
+            let c = if imag {
+                GaussianRational::new(Rational::zero(), x.clone())
+            } else {
+                GaussianRational::from(x.clone())
+            };
+            match out.iter_mut().find(|o| o.0 == m) {
+                Some(o) => o.1 = &o.1 + &c,
+                None => out.push((m, c)),
+            }
+        }
+        out
+    }
+
+    fn weight_of(&self, beta: &[u32]) -> Option<Vec<Rational>> {
+        let gw = self.gen_weights?;
+        let mut w = vec![Rational::zero(); self.scaling.dimension()];
+        for (g, e) in gw.iter().zip(beta) {
+            for (wi, gi) in w.iter_mut().zip(g) {
+                *wi += gi * &Rational::from(*e as i64);
+            }
+        }
+        Some(w)
+    }
+
+    /// Terms `(coefficient, parameter exponents ν, monomial)` lifted to the weight `target`;
+    /// `None` if not possible.
+    fn lift_terms(
+        &self,
+        terms: &[(usize, GaussianRational)],
+        target: &[Rational],
+    ) -> Result<Option<Vec<LiftedTerm>>, EngineError> {
+        let Some(lifter) = self.lifter else {
+            return Ok(None);
+        };
+        let mut out = Vec::new();
+        for (m, c) in terms {
+            let Some(w) = self.weight_of(&self.monos[*m]) else {
+                return Ok(None);
+            };
+            let delta: Vec<Rational> = target.iter().zip(&w).map(|(a, b)| a - b).collect();
+            let Some(nu) = lifter.exponents(&delta) else {
+                return Ok(None);
+            };
+            let (_, value) = lifter.monomial(&nu)?;
+            let inv = GaussianRational::from(value.try_inv().expect("nonzero values"));
+            let powers: Vec<(Var, i64)> = lifter.fixed().iter().map(|f| f.0).zip(nu).collect();
+            out.push((c * &inv, powers, *m));
+        }
+        Ok(Some(out))
+    }
+
+    /// `Σ c ν G^β` in the ring.
+    fn ring_poly(&self, terms: &[LiftedTerm]) -> Result<Expr, EngineError> {
+        let mut acc = Expr::zero(&self.ring);
+        for (c, nu, m) in terms {
+            let mut powers: Vec<(Var, i64)> = nu
+                .iter()
+                .map(|(v, e)| (self.param_in_ring[v], *e))
+                .collect();
+            powers.extend(
+                self.symbols
+                    .iter()
+                    .zip(&self.monos[*m])
+                    .map(|(s, e)| (*s, *e as i64)),
+            );
+            acc = acc.checked_add(&Expr::monomial(&self.ring, c.clone(), &powers)?)?;
+        }
+        Ok(acc)
+    }
+
+    /// `Σ c ν G^β` expanded in phase space.
+    fn expand(&mut self, terms: &[LiftedTerm]) -> Result<Expr, EngineError> {
+        let mut acc = Expr::zero(&self.vars);
+        for (c, nu, m) in terms {
+            let monomial = Expr::monomial(&self.vars, c.clone(), nu)?;
+            let beta = self.monos[*m].clone();
+            acc = acc.checked_add(&monomial.checked_mul(&self.sym_value(&beta)?)?)?;
+        }
+        Ok(acc)
+    }
+
+    /// A relation (kernel vector), lifted and proved if possible.
+    fn relation(&mut self, rel: &SparseVec<Rational>) -> Result<(Expr, bool), EngineError> {
+        let terms = self.per_monomial(rel);
+        let fixed_terms: Vec<_> = terms
+            .iter()
+            .map(|(m, c)| (c.clone(), Vec::new(), *m))
+            .collect();
+        // Reference: the leading (last) monomial.
+        let lead = terms
+            .iter()
+            .map(|t| t.0)
+            .max()
+            .expect("a relation has terms");
+        if let Some(target) = self.weight_of(&self.monos[lead]) {
+            if let Some(lifted) = self.lift_terms(&terms, &target)? {
+                if self.expand(&lifted)?.is_zero() {
+                    return Ok((normalize(self.ring_poly(&lifted)?), true));
+                }
+            }
+        }
+        Ok((normalize(self.ring_poly(&fixed_terms)?), false))
+    }
+
+    /// A bracket's expression, lifted and proved if possible.
+    fn bracket(
+        &mut self,
+        sol: &SparseVec<Rational>,
+        target: &Expr,
+    ) -> Result<(Expr, bool), EngineError> {
+        let terms = self.per_monomial(sol);
+        if terms.is_empty() {
+            return Ok((Expr::zero(&self.ring), target.is_zero()));
+        }
+        if let Some(w) = self.scaling.homogeneous_weight(target) {
+            if let Some(lifted) = self.lift_terms(&terms, &w)? {
+                if self.expand(&lifted)? == *target {
+                    return Ok((self.ring_poly(&lifted)?, true));
+                }
+            }
+        }
+        let fixed_terms: Vec<_> = terms
+            .iter()
+            .map(|(m, c)| (c.clone(), Vec::new(), *m))
+            .collect();
+        Ok((self.ring_poly(&fixed_terms)?, false))
+    }
+}
+
+/// A relation scaled to coprime integer coefficients with a positive leading one.
+fn normalize(e: Expr) -> Expr {
+    match e.content().try_inv() {
+        Some(inv) => e.scale_rational(&inv),
+        None => e,
+    }
+}

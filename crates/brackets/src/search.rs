@@ -1,0 +1,944 @@
+//! Discovery: a basis of *all* integrals of a system in a finite space of functions, found by
+//! exact linear algebra, each basis element proved by the engine.
+//!
+//! The space ([`SearchSpace`]) is spanned by `x^a y^b · p_x^c p_y^d · {1, cos kθ, sin kθ}`:
+//! planar coordinates of total degree `Σ|a| ≤ e` (negative exponents too when `laurent`),
+//! planar momenta of total degree `≤ d`, and trigonometric order `Σ|k| ≤ K` in the angles. The
+//! angular momenta are left out: on a resonance surface `p_θ = mIω/n` they are constants, and
+//! every function of them is an integral.
+//!
+//! The unknowns are the real coefficients of that basis, so the equations `{F, H} = 0` (after the
+//! condition) are linear over `Q`: the real and imaginary parts of the coefficients of
+//! `e^{ik·θ}` with `k ≥ 0`, the others being their conjugates. Parameters are fixed to rational
+//! values for the linear algebra ([`SearchOptions::fixed`], 1 by default). The system splits
+//! into connected components (unknowns sharing an equation: for a quadratic Hamiltonian, one
+//! per degree and trigonometric order), each solved modulo a 62-bit prime, reconstructed and
+//! checked exactly ([`crate::modular::kernel`]). Every basis element is then proved by the
+//! engine at the fixed values, lifted back to symbolic parameters by homogeneity
+//! ([`crate::scaling`]) and proved again symbolically.
+//!
+//! ```
+//! use brackets::search::{search, SearchOptions, SearchSpace};
+//! use brackets::systems;
+//!
+//! // The harmonic rotor at p_θ = Iω: the integrals linear in the momenta, trig order ≤ 1.
+//! let rotor = systems::harmonic_rotor();
+//! let options = SearchOptions::new(SearchSpace::new(1, 1, 1)).when(rotor.resonance(1, 1)?);
+//! let found = search(&rotor, &options)?;
+//! // The constant, L = x p_y − y p_x, and four linear integrals: Re and Im of
+//! // (p_x + iMωx)e^{−iθ} and of (p_y + iMωy)e^{−iθ}.
+//! assert_eq!(found.basis.len(), 6);
+//! assert!(found.basis.iter().all(|f| f.symbolic.is_some()));
+//! # Ok::<(), brackets::EngineError>(())
+//! ```
+
+use std::collections::HashMap;
+use std::sync::Arc;
+use std::time::Instant;
+
+use trigpoly::{Expr, GaussianRational, Rational, Var, VarKind, VarSet};
+
+use crate::claim::Condition;
+use crate::error::EngineError;
+use crate::modular::{self, Echelon, Fp, SparseVec};
+use crate::scaling::{Lifter, Scaling};
+use crate::system::System;
+
+/// The finite space of functions searched.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct SearchSpace {
+    /// Total degree in the planar momenta.
+    pub momenta_degree: u32,
+    /// Total degree `Σ|a|` in the planar coordinates.
+    pub positions_degree: u32,
+    /// Trigonometric order `Σ|k|` in the angles.
+    pub trig_degree: u32,
+    /// Whether coordinates may carry negative exponents (Laurent potentials such as `β/x²`).
+    pub laurent: bool,
+}
+
+impl SearchSpace {
+    /// Momenta degree `d`, positions degree `e`, trigonometric order `k`, no negative powers.
+    pub fn new(momenta_degree: u32, positions_degree: u32, trig_degree: u32) -> Self {
+        SearchSpace {
+            momenta_degree,
+            positions_degree,
+            trig_degree,
+            laurent: false,
+        }
+    }
+
+    /// The same space with negative powers of the coordinates allowed.
+    pub fn laurent(mut self) -> Self {
+        self.laurent = true;
+        self
+    }
+}
+
+/// What to search for and how.
+#[derive(Clone, Debug)]
+pub struct SearchOptions {
+    /// The space.
+    pub space: SearchSpace,
+    /// The condition (a resonance), applied after the bracket.
+    pub condition: Option<Condition>,
+    /// Values for parameters; every parameter of `H` or of the condition that is not listed
+    /// here is fixed to 1.
+    pub fixed: Vec<(Var, Rational)>,
+    /// Known integrals (symbolic) for [`SearchOptions::new_only`]; the system's named
+    /// functions that are real integrals are always used.
+    pub known: Vec<(String, Expr)>,
+    /// Also find a complement of what products and sums of known and lower integrals give.
+    pub new_only: bool,
+}
+
+impl SearchOptions {
+    /// Searches a space with parameters fixed to 1 and no condition.
+    pub fn new(space: SearchSpace) -> Self {
+        SearchOptions {
+            space,
+            condition: None,
+            fixed: Vec::new(),
+            known: Vec::new(),
+            new_only: false,
+        }
+    }
+
+    /// Under a condition.
+    pub fn when(mut self, condition: Condition) -> Self {
+        self.condition = Some(condition);
+        self
+    }
+
+    /// With a parameter fixed to a value.
+    pub fn fix(mut self, v: Var, value: Rational) -> Self {
+        self.fixed.retain(|f| f.0 != v);
+        self.fixed.push((v, value));
+        self
+    }
+
+    /// With the complement of the known integrals' products.
+    pub fn new_only(mut self) -> Self {
+        self.new_only = true;
+        self
+    }
+
+    /// With an extra known integral.
+    pub fn known(mut self, name: &str, f: Expr) -> Self {
+        self.known.push((name.to_string(), f));
+        self
+    }
+}
+
+/// One basis element of the integrals found.
+#[derive(Clone, Debug)]
+pub struct Integral {
+    /// The integral at the fixed parameter values, with coprime integer coefficients.
+    pub fixed: Expr,
+    /// Whether the engine found `{F, H} = 0` (after the condition) at the fixed values.
+    pub proved_fixed: bool,
+    /// The integral with its parameters, if lifting and the symbolic proof succeeded.
+    pub symbolic: Option<Expr>,
+    /// Degree in the planar momenta.
+    pub momenta_degree: i64,
+    /// Degree `Σ|a|` in the coordinates.
+    pub positions_degree: i64,
+    /// Trigonometric order.
+    pub trig_degree: i64,
+}
+
+impl Integral {
+    /// The integral as printed: symbolic if it was lifted, otherwise at the fixed values.
+    pub fn expr(&self) -> &Expr {
+        self.symbolic.as_ref().unwrap_or(&self.fixed)
+    }
+}
+
+/// What `--new-only` found.
+#[derive(Clone, Debug)]
+pub struct NewIntegrals {
+    /// The known integrals used (named functions that are real integrals lying in the space).
+    pub known: Vec<String>,
+    /// The dimension of the span of the known integrals and of all products of known and found
+    /// integrals that lie in the space.
+    pub generated: usize,
+    /// Indices into the basis of a complement: the integrals that nothing known generates.
+    pub new: Vec<usize>,
+    /// How many products were formed.
+    pub products: usize,
+}
+
+/// Seconds spent in each stage (reported, never used to decide anything).
+#[derive(Clone, Debug, Default)]
+pub struct SearchTimings {
+    /// Building the unknowns and their images `{φ, H}`.
+    pub equations: f64,
+    /// The exact linear algebra.
+    pub solve: f64,
+    /// The engine's proofs at the fixed values, lifting and symbolic proofs.
+    pub proofs: f64,
+    /// The complement of known products.
+    pub new_only: f64,
+    /// Everything.
+    pub total: f64,
+}
+
+/// The result of a search.
+#[derive(Clone, Debug)]
+pub struct SearchResult {
+    /// The space searched.
+    pub space: SearchSpace,
+    /// The condition's text, if any.
+    pub condition: Option<String>,
+    /// The parameters as fixed for the linear algebra.
+    pub parameters: Vec<(Var, Rational)>,
+    /// Whether lifting back to symbolic parameters was possible at all (the weights determine
+    /// every parameter).
+    pub liftable: bool,
+    /// The variables (for printing the parameters).
+    pub vars: Arc<VarSet>,
+    /// Number of unknowns (real basis functions).
+    pub unknowns: usize,
+    /// Number of (nonzero) linear equations.
+    pub equations: usize,
+    /// Number of connected components of the linear system.
+    pub components: usize,
+    /// Unknowns in the largest component.
+    pub largest_component: usize,
+    /// A basis of all integrals in the space, by increasing degree in the momenta.
+    pub basis: Vec<Integral>,
+    /// The complement of the known integrals' products, if asked for.
+    pub new: Option<NewIntegrals>,
+    /// Timings.
+    pub timings: SearchTimings,
+}
+
+impl SearchResult {
+    /// The number of basis integrals of momenta degree `≤ j` for each `j = 0, …, d`: the
+    /// dimensions of the spaces with smaller `d` (same coordinates and trigonometric order).
+    pub fn dimensions_by_momenta_degree(&self) -> Vec<usize> {
+        (0..=self.space.momenta_degree as i64)
+            .map(|j| self.basis.iter().filter(|f| f.momenta_degree <= j).count())
+            .collect()
+    }
+
+    /// `counts[j][k]`: basis integrals of momenta degree exactly `j` and trigonometric order
+    /// exactly `k`.
+    pub fn counts(&self) -> Vec<Vec<usize>> {
+        let d = self.space.momenta_degree as usize;
+        let k = self.space.trig_degree as usize;
+        let mut c = vec![vec![0; k + 1]; d + 1];
+        for f in &self.basis {
+            c[f.momenta_degree as usize][f.trig_degree as usize] += 1;
+        }
+        c
+    }
+
+    /// Whether every basis element was proved symbolically.
+    pub fn all_symbolic(&self) -> bool {
+        self.basis.iter().all(|f| f.symbolic.is_some())
+    }
+}
+
+/// How an unknown depends on the angles.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, PartialOrd, Ord)]
+enum Trig {
+    One,
+    Cos,
+    Sin,
+}
+
+/// One real basis function `φ · trig(k·θ)`.
+#[derive(Clone, Debug)]
+struct Unknown {
+    /// Exponents of the planar coordinates and momenta (angles zero), over all variables.
+    phase: Vec<i64>,
+    /// `k` over the angles, canonical (first nonzero entry positive), zero for `One`.
+    k: Vec<i64>,
+    trig: Trig,
+    momenta_degree: i64,
+    positions_degree: i64,
+    trig_degree: i64,
+}
+
+/// The search problem at fixed parameter values.
+struct Problem {
+    vars: Arc<VarSet>,
+    angles: Vec<Var>,
+    unknowns: Vec<Unknown>,
+    /// Unknown by (phase, k, trig).
+    index: HashMap<(Vec<i64>, Vec<i64>, Trig), usize>,
+    /// The fixed Hamiltonian and condition.
+    h: Expr,
+    condition: Option<Vec<(Var, Expr)>>,
+}
+
+/// Exponent vectors `≥ 0` (or any sign) over `n` slots with `Σ|e| ≤ max`.
+fn exponent_vectors(n: usize, max: u32, signed: bool) -> Vec<Vec<i64>> {
+    let mut out = vec![Vec::new()];
+    for _ in 0..n {
+        let mut next = Vec::new();
+        for v in &out {
+            let used: i64 = v.iter().map(|x: &i64| x.abs()).sum();
+            let left = max as i64 - used;
+            let lo = if signed { -left } else { 0 };
+            for e in lo..=left {
+                let mut w = v.clone();
+                w.push(e);
+                next.push(w);
+            }
+        }
+        out = next;
+    }
+    out
+}
+
+/// Whether the first nonzero entry is positive (or all are zero).
+fn canonical(k: &[i64]) -> bool {
+    k.iter().find(|x| **x != 0).is_none_or(|x| *x > 0)
+}
+
+impl Problem {
+    fn new(system: &System, space: &SearchSpace, h: Expr, cond: Option<Vec<(Var, Expr)>>) -> Self {
+        let vars = system.vars().clone();
+        let pairs = system.space().pairs();
+        let coords: Vec<Var> = pairs
+            .iter()
+            .filter(|p| vars.variable(p.q).kind() == VarKind::Coordinate)
+            .map(|p| p.q)
+            .collect();
+        let momenta: Vec<Var> = pairs
+            .iter()
+            .filter(|p| vars.variable(p.q).kind() == VarKind::Coordinate)
+            .map(|p| p.p)
+            .collect();
+        let angles: Vec<Var> = pairs
+            .iter()
+            .filter(|p| vars.variable(p.q).kind() == VarKind::Angle)
+            .map(|p| p.q)
+            .collect();
+        let positions = exponent_vectors(coords.len(), space.positions_degree, space.laurent);
+        let moms = exponent_vectors(momenta.len(), space.momenta_degree, false);
+        let ks: Vec<Vec<i64>> = exponent_vectors(angles.len(), space.trig_degree, true)
+            .into_iter()
+            .filter(|k| canonical(k))
+            .collect();
+        let mut unknowns = Vec::new();
+        for a in &positions {
+            for c in &moms {
+                let mut phase = vec![0i64; vars.len()];
+                for (v, e) in coords.iter().zip(a) {
+                    phase[v.index()] = *e;
+                }
+                for (v, e) in momenta.iter().zip(c) {
+                    phase[v.index()] = *e;
+                }
+                let momenta_degree = c.iter().sum();
+                let positions_degree = a.iter().map(|x| x.abs()).sum();
+                for k in &ks {
+                    let trig_degree: i64 = k.iter().map(|x| x.abs()).sum();
+                    let trigs: &[Trig] = if trig_degree == 0 {
+                        &[Trig::One]
+                    } else {
+                        &[Trig::Cos, Trig::Sin]
+                    };
+                    for &trig in trigs {
+                        unknowns.push(Unknown {
+                            phase: phase.clone(),
+                            k: k.clone(),
+                            trig,
+                            momenta_degree,
+                            positions_degree,
+                            trig_degree,
+                        });
+                    }
+                }
+            }
+        }
+        // The order decides which basis comes out: each kernel vector ends at its own unknown
+        // and uses only earlier ones, so simpler unknowns come first.
+        unknowns.sort_by(|a, b| {
+            (a.momenta_degree, a.trig_degree, a.positions_degree)
+                .cmp(&(b.momenta_degree, b.trig_degree, b.positions_degree))
+                .then_with(|| b.k.cmp(&a.k))
+                .then_with(|| a.phase.cmp(&b.phase))
+                .then_with(|| a.trig.cmp(&b.trig))
+        });
+        let index = unknowns
+            .iter()
+            .enumerate()
+            .map(|(j, u)| ((u.phase.clone(), u.k.clone(), u.trig), j))
+            .collect();
+        Problem {
+            vars,
+            angles,
+            unknowns,
+            index,
+            h,
+            condition: cond,
+        }
+    }
+
+    /// The unknown as a function.
+    fn expr(&self, j: usize, coeff: &Rational) -> Result<Expr, EngineError> {
+        let u = &self.unknowns[j];
+        let mut plus = u.phase.clone();
+        let mut minus = u.phase.clone();
+        for (v, k) in self.angles.iter().zip(&u.k) {
+            plus[v.index()] += k;
+            minus[v.index()] -= k;
+        }
+        let half = coeff * &Rational::new(1, 2);
+        let terms = match u.trig {
+            Trig::One => vec![(GaussianRational::from(coeff.clone()), plus)],
+            Trig::Cos => vec![
+                (GaussianRational::from(half.clone()), plus),
+                (GaussianRational::from(half), minus),
+            ],
+            // sin = (z − z̄)/(2i): coefficients −i/2 at z, i/2 at z̄.
+            Trig::Sin => vec![
+                (GaussianRational::new(Rational::zero(), -&half), plus),
+                (GaussianRational::new(Rational::zero(), half), minus),
+            ],
+        };
+        Ok(Expr::from_terms(&self.vars, terms)?)
+    }
+
+    /// The exponents of the `e^{ik·θ}` term of unknown `j` (`k ≥ 0`).
+    fn leading_exponents(&self, j: usize) -> Vec<i64> {
+        let u = &self.unknowns[j];
+        let mut e = u.phase.clone();
+        for (v, k) in self.angles.iter().zip(&u.k) {
+            e[v.index()] += k;
+        }
+        e
+    }
+
+    /// `Σ v_j φ_j`.
+    fn combination(&self, v: &SparseVec<Rational>) -> Result<Expr, EngineError> {
+        let mut terms = Vec::new();
+        for (j, x) in v {
+            let e = self.expr(*j, x)?;
+            terms.extend(e.terms().map(|t| (t.coeff(), t.exponents())));
+        }
+        Ok(Expr::from_terms(&self.vars, terms)?)
+    }
+
+    fn apply_condition(&self, e: Expr) -> Result<Expr, EngineError> {
+        match &self.condition {
+            Some(subs) => Ok(e.subst_many(subs)?),
+            None => Ok(e),
+        }
+    }
+
+    /// `{f, H}` after the condition, at the fixed values.
+    fn flow(&self, system: &System, f: &Expr) -> Result<Expr, EngineError> {
+        self.apply_condition(system.bracket(f, &self.h)?)
+    }
+
+    /// The `e^{ik·θ}` components `f_k e^{ik·θ}` of `f`, one per `k`.
+    fn components(&self, f: &Expr) -> Result<Vec<Expr>, EngineError> {
+        type Terms = Vec<(GaussianRational, Vec<i64>)>;
+        let mut groups: Vec<(Vec<i64>, Terms)> = Vec::new();
+        for t in f.terms() {
+            let e = t.exponents();
+            let k: Vec<i64> = self.angles.iter().map(|v| e[v.index()]).collect();
+            match groups.iter_mut().find(|g| g.0 == k) {
+                Some(g) => g.1.push((t.coeff(), e)),
+                None => groups.push((k, vec![(t.coeff(), e)])),
+            }
+        }
+        groups
+            .into_iter()
+            .map(|(_, terms)| Ok(Expr::from_terms(&self.vars, terms)?))
+            .collect()
+    }
+
+    /// The coordinates of a real function in the basis, if it lies in the space.
+    fn coordinates(&self, f: &Expr) -> Option<SparseVec<Rational>> {
+        let mut out: HashMap<usize, Rational> = HashMap::new();
+        for t in f.terms() {
+            let e = t.exponents();
+            let k: Vec<i64> = self.angles.iter().map(|v| e[v.index()]).collect();
+            let mut phase = e.clone();
+            for v in &self.angles {
+                phase[v.index()] = 0;
+            }
+            let c = t.coeff();
+            if k.iter().all(|x| *x == 0) {
+                if !c.is_real() {
+                    return None;
+                }
+                let j = *self.index.get(&(phase, k, Trig::One))?;
+                *out.entry(j).or_insert_with(Rational::zero) += &c.re;
+            } else if canonical(&k) {
+                // c z^k + c̄ z^{−k} = 2 Re c · cos − 2 Im c · sin.
+                let jc = *self.index.get(&(phase.clone(), k.clone(), Trig::Cos))?;
+                let js = *self.index.get(&(phase, k, Trig::Sin))?;
+                *out.entry(jc).or_insert_with(Rational::zero) += &c.re * &Rational::from(2);
+                *out.entry(js).or_insert_with(Rational::zero) -= &c.im * &Rational::from(2);
+            } else {
+                // The conjugate half; checked by the caller through is_real.
+                let mut kk = k.clone();
+                kk.iter_mut().for_each(|x| *x = -*x);
+                self.index.get(&(phase, kk, Trig::Cos))?;
+            }
+        }
+        let mut v: SparseVec<Rational> = out.into_iter().filter(|(_, x)| !x.is_zero()).collect();
+        v.sort_by_key(|x| x.0);
+        Some(v)
+    }
+}
+
+/// Union–find.
+struct Components(Vec<usize>);
+
+impl Components {
+    fn find(&mut self, mut a: usize) -> usize {
+        while self.0[a] != a {
+            self.0[a] = self.0[self.0[a]];
+            a = self.0[a];
+        }
+        a
+    }
+    fn union(&mut self, a: usize, b: usize) {
+        let (ra, rb) = (self.find(a), self.find(b));
+        if ra != rb {
+            self.0[ra.max(rb)] = ra.min(rb);
+        }
+    }
+}
+
+/// Every parameter of `h` or of the condition, with its value (given, or 1).
+fn parameter_values(
+    system: &System,
+    condition: Option<&Condition>,
+    given: &[(Var, Rational)],
+) -> Vec<(Var, Rational)> {
+    let vars = system.vars();
+    let mut exprs = vec![system.hamiltonian().clone()];
+    if let Some(c) = condition {
+        exprs.extend(c.subs.iter().map(|s| s.1.clone()));
+    }
+    let mut out: Vec<(Var, Rational)> = Vec::new();
+    for v in vars.vars() {
+        if vars.variable(v).kind() != VarKind::Parameter {
+            continue;
+        }
+        let value = given.iter().find(|g| g.0 == v).map(|g| g.1.clone());
+        if value.is_some() || exprs.iter().any(|e| e.contains(v)) {
+            out.push((v, value.unwrap_or_else(Rational::one)));
+        }
+    }
+    out
+}
+
+/// Substitutes parameter values.
+pub fn fix_parameters(e: &Expr, values: &[(Var, Rational)]) -> Result<Expr, EngineError> {
+    let vars = e.vars();
+    let subs: Vec<(Var, Expr)> = values
+        .iter()
+        .map(|(v, x)| (*v, Expr::constant(vars, GaussianRational::from(x.clone()))))
+        .collect();
+    Ok(e.subst_many(&subs)?)
+}
+
+/// The vector scaled to coprime integers, its last (leading) entry positive.
+fn primitive_vector(v: &SparseVec<Rational>) -> SparseVec<Rational> {
+    use num_integer::Integer as _;
+    let mut den = num_bigint::BigInt::from(1);
+    let mut num = num_bigint::BigInt::from(0);
+    for (_, x) in v {
+        let b = x.as_big_rational();
+        den = den.lcm(b.denom());
+        num = num.gcd(b.numer());
+    }
+    let lead = v.iter().max_by_key(|x| x.0).map(|x| x.1.clone());
+    let mut scale = Rational::from(trigpoly::Integer::from_bigint(den))
+        / Rational::from(trigpoly::Integer::from_bigint(num));
+    if lead.is_some_and(|l| l.sign() == std::cmp::Ordering::Less) {
+        scale = -scale;
+    }
+    v.iter().map(|(j, x)| (*j, x * &scale)).collect()
+}
+
+/// Finds a basis of every integral of `system` in the space of `options`.
+pub fn search(system: &System, options: &SearchOptions) -> Result<SearchResult, EngineError> {
+    let start = Instant::now();
+    let mut timings = SearchTimings::default();
+    let condition = options.condition.as_ref();
+    let parameters = parameter_values(system, condition, &options.fixed);
+    let h = fix_parameters(system.hamiltonian(), &parameters)?;
+    let cond_fixed = match condition {
+        Some(c) => Some(
+            c.subs
+                .iter()
+                .map(|(v, e)| Ok((*v, fix_parameters(e, &parameters)?)))
+                .collect::<Result<Vec<_>, EngineError>>()?,
+        ),
+        None => None,
+    };
+    let problem = Problem::new(system, &options.space, h, cond_fixed);
+    let n = problem.unknowns.len();
+
+    // The images {φ_j, H} as real equations over Q.
+    let mut rows: HashMap<(Vec<i64>, bool), usize> = HashMap::new();
+    let mut columns: Vec<SparseVec<Rational>> = Vec::with_capacity(n);
+    for j in 0..n {
+        let image = problem.flow(system, &problem.expr(j, &Rational::one())?)?;
+        let mut col = Vec::new();
+        for t in image.terms() {
+            let e = t.exponents();
+            let k: Vec<i64> = problem.angles.iter().map(|v| e[v.index()]).collect();
+            if !canonical(&k) {
+                continue;
+            }
+            let c = t.coeff();
+            for (part, x) in [(false, c.re), (true, c.im)] {
+                if x.is_zero() {
+                    continue;
+                }
+                let len = rows.len();
+                let r = *rows.entry((e.clone(), part)).or_insert(len);
+                col.push((r, x));
+            }
+        }
+        columns.push(col);
+    }
+    let nrows = rows.len();
+    timings.equations = start.elapsed().as_secs_f64();
+
+    // Connected components.
+    let t = Instant::now();
+    let mut uf = Components((0..n).collect());
+    let mut first_col: Vec<Option<usize>> = vec![None; nrows];
+    for (j, col) in columns.iter().enumerate() {
+        for (r, _) in col {
+            match first_col[*r] {
+                Some(f) => uf.union(f, j),
+                None => first_col[*r] = Some(j),
+            }
+        }
+    }
+    let mut groups: HashMap<usize, Vec<usize>> = HashMap::new();
+    for j in 0..n {
+        let r = uf.find(j);
+        groups.entry(r).or_default().push(j);
+    }
+    let mut groups: Vec<Vec<usize>> = groups.into_values().collect();
+    groups.sort();
+    let largest_component = groups.iter().map(Vec::len).max().unwrap_or(0);
+    let mut kernel: Vec<SparseVec<Rational>> = Vec::new();
+    for g in &groups {
+        let mut local_row: HashMap<usize, usize> = HashMap::new();
+        let cols: Vec<SparseVec<Rational>> = g
+            .iter()
+            .map(|&j| {
+                columns[j]
+                    .iter()
+                    .map(|(r, x)| {
+                        let len = local_row.len();
+                        (*local_row.entry(*r).or_insert(len), x.clone())
+                    })
+                    .collect()
+            })
+            .collect();
+        for v in modular::kernel(&cols, local_row.len()) {
+            kernel.push(v.into_iter().map(|(i, x)| (g[i], x)).collect());
+        }
+    }
+    // By leading (last) unknown, i.e. by the order of the unknowns.
+    kernel.sort_by_key(|v| v.iter().map(|x| x.0).max().unwrap_or(0));
+    timings.solve = t.elapsed().as_secs_f64();
+
+    // Proofs: at the fixed values, then lifted and proved symbolically.
+    let t = Instant::now();
+    let scaling = Scaling::of_flow(system.space(), system.hamiltonian(), condition)?;
+    let lifter = scaling.lifter(&parameters);
+    let mut basis = Vec::with_capacity(kernel.len());
+    for v in kernel.iter_mut() {
+        *v = primitive_vector(v);
+        let fixed = problem.combination(v)?;
+        let proved_fixed = problem.flow(system, &fixed)?.is_zero();
+        let lead = v
+            .iter()
+            .map(|x| x.0)
+            .max()
+            .expect("a kernel vector is not zero");
+        let reference = problem.leading_exponents(lead);
+        let symbolic = match &lifter {
+            Some(l) => lift_and_prove(system, condition, l, &scaling, &fixed, Some(&reference))?,
+            None => None,
+        };
+        let deg = |kinds: &[VarKind]| fixed.total_degree(kinds).unwrap_or(0);
+        let momenta_degree = {
+            // Only planar momenta: angular momenta do not occur.
+            deg(&[VarKind::Momentum])
+        };
+        basis.push(Integral {
+            momenta_degree,
+            positions_degree: deg(&[VarKind::Coordinate]),
+            trig_degree: deg(&[VarKind::Angle]),
+            fixed,
+            proved_fixed,
+            symbolic,
+        });
+    }
+    timings.proofs = t.elapsed().as_secs_f64();
+
+    let t = Instant::now();
+    let new = if options.new_only {
+        Some(new_integrals(
+            system,
+            &problem,
+            &options.space,
+            &parameters,
+            &options.known,
+            &kernel,
+            &basis,
+        )?)
+    } else {
+        None
+    };
+    timings.new_only = t.elapsed().as_secs_f64();
+    timings.total = start.elapsed().as_secs_f64();
+    Ok(SearchResult {
+        space: options.space,
+        condition: condition.map(|c| c.text.clone()),
+        parameters,
+        liftable: lifter.is_some(),
+        vars: system.vars().clone(),
+        unknowns: n,
+        equations: nrows,
+        components: groups.len(),
+        largest_component,
+        basis,
+        new,
+        timings,
+    })
+}
+
+/// Lifts an integral found at fixed values and proves `{F, H} = 0` symbolically (after the
+/// condition); `None` if the lift does not exist or is not an integral.
+pub fn lift_and_prove(
+    system: &System,
+    condition: Option<&Condition>,
+    lifter: &Lifter,
+    scaling: &Scaling,
+    fixed: &Expr,
+    reference: Option<&[i64]>,
+) -> Result<Option<Expr>, EngineError> {
+    let Some(f) = lifter.lift(scaling, fixed, reference)? else {
+        return Ok(None);
+    };
+    let mut flow = system.flow(&f)?;
+    if let Some(c) = condition {
+        flow = c.apply(&flow)?;
+    }
+    Ok(flow.is_zero().then_some(f))
+}
+
+/// Degrees `(momenta, positions)` of a function.
+fn degrees(f: &Expr) -> (i64, i64) {
+    (
+        f.total_degree(&[VarKind::Momentum]).unwrap_or(0),
+        f.total_degree(&[VarKind::Coordinate]).unwrap_or(0),
+    )
+}
+
+/// The most products `--new-only` forms before giving up.
+const MAX_PRODUCTS: usize = 200_000;
+
+#[allow(clippy::too_many_arguments)]
+fn new_integrals(
+    system: &System,
+    problem: &Problem,
+    space: &SearchSpace,
+    parameters: &[(Var, Rational)],
+    extra: &[(String, Expr)],
+    kernel: &[SparseVec<Rational>],
+    basis: &[Integral],
+) -> Result<NewIntegrals, EngineError> {
+    // Known integrals: named real functions that are integrals, restricted to the condition.
+    let mut known_names = Vec::new();
+    let mut known: Vec<(Expr, SparseVec<Rational>)> = Vec::new();
+    let named = system
+        .functions()
+        .iter()
+        .map(|f| (f.display.clone(), f.expr.clone()));
+    for (name, f) in named.chain(extra.iter().cloned()) {
+        if !f.is_real() {
+            continue;
+        }
+        let fv = fix_parameters(&f, parameters)?;
+        if !problem.flow(system, &fv)?.is_zero() {
+            continue;
+        }
+        let restricted = problem.apply_condition(fv)?;
+        if restricted.is_constant() || known.iter().any(|k| k.0 == restricted) {
+            continue;
+        }
+        if let Some(v) = problem.coordinates(&restricted) {
+            known_names.push(name);
+            known.push((restricted, v));
+        }
+    }
+    // The filtration by total degree in the coordinates and momenta: an integral of degree N
+    // is generated when it lies in the span of the known integrals, the constants and the
+    // products of at least two integrals of degree < N (known or found). Generators are the
+    // `e^{ik·θ}` components of those integrals (each component of an integral is one, since
+    // the flow keeps `k`), made monic: complex components multiply without the cancellations
+    // of real ones (`Re(J Q̄)` lies in the space when `Re J · Re Q` does not).
+    let total = |f: &Expr| {
+        f.total_degree(&[VarKind::Coordinate, VarKind::Momentum])
+            .unwrap_or(0)
+    };
+    let mut gens: Vec<(Expr, (i64, i64), i64)> = Vec::new();
+    let sources = known
+        .iter()
+        .map(|k| &k.0)
+        .chain(basis.iter().map(|b| &b.fixed));
+    for f in sources {
+        let degree = total(f);
+        if degree == 0 {
+            continue;
+        }
+        for c in problem.components(f)? {
+            let Some(lead) = c.terms().next().map(|t| t.coeff()) else {
+                continue;
+            };
+            let c = c.scale(&lead.try_inv().expect("nonzero"));
+            match gens.iter_mut().find(|g| g.0 == c) {
+                Some(g) => g.2 = g.2.min(degree),
+                None => {
+                    let d = degrees(&c);
+                    gens.push((c, d, degree));
+                }
+            }
+        }
+    }
+    let bounds = (space.momenta_degree as i64, space.positions_degree as i64);
+    // Every product of at least two generators whose degrees fit (degrees in the momenta and,
+    // without negative powers, in the coordinates add up), by increasing number of factors
+    // with non-decreasing indices so that each monomial comes once, with the largest degree
+    // of its factors; the real and imaginary parts of those that lie in the space.
+    let mut spanning: Vec<(i64, SparseVec<Rational>)> =
+        known.iter().map(|k| (0, k.1.clone())).collect();
+    if let Some(&j) = problem.index.get(&(
+        vec![0; problem.vars.len()],
+        vec![0; problem.angles.len()],
+        Trig::One,
+    )) {
+        spanning.push((0, vec![(j, Rational::one())]));
+    }
+    let mut level: Vec<(usize, Expr, (i64, i64), i64)> = gens
+        .iter()
+        .enumerate()
+        .map(|(i, g)| (i, g.0.clone(), g.1, g.2))
+        .collect();
+    let mut products = 0;
+    let max_factors = (bounds.0 + bounds.1).max(1) as usize + 1;
+    for _ in 1..max_factors {
+        let mut next = Vec::new();
+        for (last, e, d, mu) in &level {
+            for (i, (g, gd, gdeg)) in gens.iter().enumerate().skip(*last) {
+                let sum = (d.0 + gd.0, d.1 + gd.1);
+                if sum.0 > bounds.0 || (!space.laurent && sum.1 > bounds.1) {
+                    continue;
+                }
+                let p = e.checked_mul(g)?;
+                products += 1;
+                if products > MAX_PRODUCTS {
+                    return Err(EngineError::Invalid(format!(
+                        "--new-only: more than {MAX_PRODUCTS} products of known integrals; \
+                         search a smaller space"
+                    )));
+                }
+                let mu = (*mu).max(*gdeg);
+                if let (Some(re), Some(im)) = (
+                    problem.coordinates(&p.re()),
+                    problem.coordinates(&p.im()?),
+                ) {
+                    for v in [re, im] {
+                        if !v.is_empty() {
+                            spanning.push((mu, v));
+                        }
+                    }
+                }
+                next.push((i, p, sum, mu));
+            }
+        }
+        if next.is_empty() {
+            break;
+        }
+        level = next;
+    }
+    spanning.sort_by_key(|s| s.0);
+    // By increasing degree N: the products of factors of degree < N join the span, then each
+    // basis integral of degree N is new unless it lies in the span (of those and of the new
+    // ones so far).
+    let degrees_of: Vec<i64> = basis.iter().map(|b| total(&b.fixed)).collect();
+    let mut order: Vec<usize> = (0..basis.len()).collect();
+    order.sort_by_key(|&k| (degrees_of[k], k));
+    let dim = problem.unknowns.len();
+    let decide = |exact: bool| -> Option<Vec<usize>> {
+        let mut fp = Echelon::<Fp>::new(dim);
+        let mut q = Echelon::<Rational>::new(dim);
+        // Vectors by identifier, for checking dependencies exactly.
+        let mut inserted: Vec<&SparseVec<Rational>> = Vec::new();
+        let mut next_span = 0;
+        let mut new = Vec::new();
+        for &k in &order {
+            while next_span < spanning.len() && spanning[next_span].0 < degrees_of[k] {
+                let v = &spanning[next_span].1;
+                if exact {
+                    q.insert(inserted.len(), v);
+                } else {
+                    fp.insert(inserted.len(), &modular::to_fp(v)?);
+                }
+                inserted.push(v);
+                next_span += 1;
+            }
+            let v = &kernel[k];
+            let id = inserted.len();
+            inserted.push(v);
+            if exact {
+                if q.insert(id, v).is_none() {
+                    new.push(k);
+                }
+                continue;
+            }
+            match fp.insert(id, &modular::to_fp(v)?) {
+                None => new.push(k),
+                Some(dep) => {
+                    // Independence modulo p is certain; a dependency is checked over Q.
+                    let coeffs = modular::reconstruct_vec(&dep)?;
+                    let mut acc: HashMap<usize, Rational> = HashMap::new();
+                    for (id, c) in &coeffs {
+                        for (i, x) in inserted[*id] {
+                            *acc.entry(*i).or_insert_with(Rational::zero) += c * x;
+                        }
+                    }
+                    for (i, x) in v {
+                        *acc.entry(*i).or_insert_with(Rational::zero) -= x;
+                    }
+                    if acc.values().any(|x| !x.is_zero()) {
+                        return None;
+                    }
+                }
+            }
+        }
+        new.sort_unstable();
+        Some(new)
+    };
+    let new = match decide(false) {
+        Some(r) => r,
+        None => decide(true).expect("exact elimination always decides"),
+    };
+    Ok(NewIntegrals {
+        known: known_names,
+        generated: basis.len() - new.len(),
+        new,
+        products,
+    })
+}

@@ -1,0 +1,42 @@
+//! `superint bench W SIZE`: runs one performance workload once; the last two lines are
+//! `seconds: X` and `terms: T`, which the peer comparison (`benches/peers/compare.py`) reads.
+
+use std::time::Instant;
+
+use anyhow::Context;
+use clap::Args;
+use superint::workloads::Workload;
+
+pub const EXAMPLES: &str = "\
+Examples:
+  superint bench W1 24        the tower: {P, H}, {Q, H} at resonance for 1 ≤ m, n ≤ 24
+  superint bench W2 80        one pair m = n = 80
+  superint bench fateman 20   the Fateman product f·(f + 1), f = (1 + x + y + z + t)^20
+  superint bench pearce 12    the sparse Pearce product
+  superint bench W4 1000      the su(2) table and the Casimir, 1000 times";
+
+/// Arguments of `superint bench`.
+#[derive(Debug, Args)]
+pub struct BenchArgs {
+    /// The workload: W1|tower, W2|single, W3a|fateman, W3b|pearce, W4|algebra.
+    workload: String,
+    /// Its size (N for W1, m for W2, the exponent for W3, repetitions for W4).
+    #[arg(value_parser = clap::value_parser!(i64).range(1..=100_000))]
+    size: i64,
+}
+
+/// Runs the workload once and prints what it computed and how long it took.
+pub fn run(args: &BenchArgs) -> anyhow::Result<bool> {
+    let workload = Workload::new(&args.workload, args.size)?;
+    let start = Instant::now();
+    let outcome = workload
+        .run()
+        .with_context(|| format!("workload {workload}"))?;
+    // Wall-clock time is reported, never used to decide anything.
+    let seconds = start.elapsed().as_secs_f64();
+    println!("workload: {workload}");
+    println!("zeros: {}", outcome.zeros);
+    println!("seconds: {seconds:.6}");
+    println!("terms: {}", outcome.terms);
+    Ok(true)
+}

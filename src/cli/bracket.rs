@@ -1,0 +1,71 @@
+//! `superint bracket FILE F G`: `{F, G}` in normal form.
+
+use std::path::PathBuf;
+
+use clap::Args;
+use superint::render::render;
+use superint::system_file::{bracket_report, load, LimitsOverride};
+
+use super::limits::LimitsArgs;
+use super::output::{emit, Output};
+
+pub const EXAMPLES: &str = "\
+Examples:
+  superint bracket systems/harmonic-rotor.toml G1 G2          {G1, G2} = −ω²L
+  superint bracket systems/harmonic-rotor.toml 'x*p_y' H
+  superint bracket systems/harmonic-rotor.toml P_1_1 H --when 'p_theta = I*omega'
+  superint bracket systems/harmonic-rotor.toml L G1 --format latex
+
+F and G are expressions in the file's variables, functions and family instances (K_2_3).";
+
+/// Arguments of `superint bracket`.
+#[derive(Debug, Args)]
+pub struct BracketArgs {
+    /// A system file (TOML, see docs/system-files.md).
+    #[arg(value_name = "FILE")]
+    file: PathBuf,
+    /// The first expression.
+    #[arg(value_name = "F")]
+    f: String,
+    /// The second expression.
+    #[arg(value_name = "G")]
+    g: String,
+    /// Substitute after forming the bracket, such as 'p_theta = 2*I*omega/3' (several
+    /// separated by commas).
+    #[arg(long, value_name = "CONDITION")]
+    when: Option<String>,
+    #[command(flatten)]
+    limits: LimitsArgs,
+}
+
+/// The bracket job, as plain data.
+#[derive(Debug)]
+pub struct BracketJob {
+    pub file: PathBuf,
+    pub f: String,
+    pub g: String,
+    pub when: Option<String>,
+    pub limits: LimitsOverride,
+    pub output: Output,
+}
+
+impl BracketArgs {
+    pub fn job(self, output: Output) -> BracketJob {
+        BracketJob {
+            file: self.file,
+            f: self.f,
+            g: self.g,
+            when: self.when,
+            limits: self.limits.settings(),
+            output,
+        }
+    }
+}
+
+/// Computes the bracket and prints it.
+pub fn run(job: &BracketJob) -> anyhow::Result<bool> {
+    let file = load(&job.file, &job.limits)?;
+    let report = bracket_report(&file, &job.f, &job.g, job.when.as_deref())?;
+    emit(&render(&report, job.output.format, &job.output.options))?;
+    Ok(true)
+}

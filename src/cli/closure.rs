@@ -1,0 +1,127 @@
+//! `superint closure FILE NAMES... --degree d`: the brackets of the generators as polynomials
+//! in them, and the polynomial relations among them.
+
+use std::path::PathBuf;
+
+use anyhow::{anyhow, bail, Context};
+use brackets::closure::ClosureOptions;
+use clap::Args;
+use superint::discovery::closure_report;
+use superint::render::render;
+
+use super::limits::LimitsArgs;
+use super::output::{emit, Output};
+use super::search::Subject;
+
+pub const EXAMPLES: &str = "\
+Examples:
+  superint closure systems/harmonic-rotor.toml F1 F2 L G1 G2 --degree 2
+  superint closure systems/harmonic-rotor.toml F1 F2 L G1 G2 P_1_1 Q_1_1 \\
+      --when 'p_theta = I*omega' --degree 2
+  superint closure --system harmonic F1 F2 L G1 G2 P11 Q11 R11 S11 \\
+      --when 'p_theta = I*omega' --degree 2
+  superint closure --system harmonic Hp L G1 G2 --define 'Hx=p_x^2/(2*M) + M*omega^2*x^2/2'
+
+Each bracket is written as a polynomial of degree ≤ D in the generators where one exists
+(coefficients Laurent monomials in the parameters), and every minimal polynomial relation of
+degree ≤ D is listed; each is checked by expanding it.";
+
+/// Arguments of `superint closure`.
+#[derive(Debug, Args)]
+pub struct ClosureArgs {
+    /// A system file followed by the generators (named functions, family instances such as
+    /// P_1_1, or names given by --define); with --system, only the generators.
+    #[arg(value_name = "FILE NAMES", required = true, num_args = 1..)]
+    args: Vec<String>,
+    /// A built-in system instead of a file: harmonic, gravity, anisotropic-3-5,
+    /// anisotropic-1-2, planar-i, planar-ii.
+    #[arg(long, value_name = "NAME")]
+    system: Option<String>,
+    /// The largest degree of the polynomials in the generators.
+    #[arg(long, value_name = "D", default_value_t = 2,
+          value_parser = clap::value_parser!(u32).range(0..=6))]
+    degree: u32,
+    /// The condition applied to the generators and after each bracket, such as
+    /// 'p_theta = I*omega'.
+    #[arg(long, value_name = "CONDITION")]
+    when: Option<String>,
+    /// Parameter values for the linear algebra, such as omega=1,M=2/3 (others are 1).
+    #[arg(long, value_name = "VALUES")]
+    fix: Option<String>,
+    /// A generator given by its expression, NAME=EXPR (repeatable).
+    #[arg(long, value_name = "NAME=EXPR")]
+    define: Vec<String>,
+    #[command(flatten)]
+    limits: LimitsArgs,
+}
+
+/// The closure job, as plain data.
+#[derive(Debug)]
+pub struct ClosureJob {
+    pub args: ClosureArgs,
+    pub output: Output,
+}
+
+impl ClosureArgs {
+    pub fn job(self, output: Output) -> ClosureJob {
+        ClosureJob { args: self, output }
+    }
+}
+
+/// `P_{1,1}` → `P_1_1`: a name the generators' ring accepts.
+fn identifier(name: &str) -> String {
+    let mut out = String::new();
+    for c in name.chars() {
+        if c.is_alphanumeric() {
+            out.push(c);
+        } else if !out.ends_with('_') && !out.is_empty() {
+            out.push('_');
+        }
+    }
+    out.trim_end_matches('_').to_string()
+}
+
+/// Computes the closure and prints it.
+pub fn run(job: &ClosureJob) -> anyhow::Result<bool> {
+    let a = &job.args;
+    let (file, names) = match &a.system {
+        Some(_) => (None, &a.args[..]),
+        None => (Some(PathBuf::from(&a.args[0])), &a.args[1..]),
+    };
+    let subject = Subject::open(file.as_ref(), a.system.as_deref(), true, &a.limits)?;
+    let mut generators = Vec::new();
+    let mut defined = Vec::new();
+    for d in &a.define {
+        let (name, value) = d
+            .split_once('=')
+            .ok_or_else(|| anyhow!("--define '{d}': give NAME=EXPR"))?;
+        let e = subject
+            .parse(value.trim())
+            .map_err(|e| anyhow!("--define {}: {e}", name.trim()))?;
+        defined.push((name.trim().to_string(), e));
+    }
+    let mut all: Vec<&str> = names.iter().map(String::as_str).collect();
+    for (n, _) in &defined {
+        if !all.contains(&n.as_str()) {
+            all.push(n);
+        }
+    }
+    if all.is_empty() {
+        bail!("give the generators: names of functions of the system, or --define NAME=EXPR");
+    }
+    for name in all {
+        let e = match defined.iter().find(|d| d.0 == name) {
+            Some(d) => d.1.clone(),
+            None => subject.parse(name).map_err(|e| anyhow!("{name}: {e}"))?,
+        };
+        let display = subject.system().display_name(name).to_string();
+        generators.push((identifier(name), display, e));
+    }
+    let mut options = ClosureOptions::new(a.degree);
+    options.condition = subject.condition(a.when.as_deref())?;
+    options.fixed = subject.fixed(a.fix.as_deref())?;
+    let (report, _) = closure_report(subject.name(), subject.system(), &generators, &options)
+        .context("computing the closure")?;
+    emit(&render(&report, job.output.format, &job.output.options))?;
+    Ok(report.all_proved())
+}

@@ -1,0 +1,65 @@
+//! `superint rank FILE NAMES...`: the certified rank of a Jacobian.
+
+use std::path::PathBuf;
+
+use clap::Args;
+use superint::render::render;
+use superint::system_file::{load, rank_report, LimitsOverride};
+
+use super::limits::LimitsArgs;
+use super::output::{emit, Output};
+
+pub const EXAMPLES: &str = "\
+Examples:
+  superint rank systems/harmonic-rotor.toml F1 F2 G1 G2 P_1_1          rank 5 (claim C17)
+  superint rank systems/harmonic-rotor.toml F1 F2 G1 G2 L --expect 4
+  superint rank systems/harmonic-rotor.toml F1 'F2 + L' --format json
+
+The rank of ∂(F_1, …, F_k)/∂(q, p) over the rational functions: at least r by an r × r minor
+that is nonzero at an exact rational point, at most r by every larger minor vanishing.";
+
+/// Arguments of `superint rank`.
+#[derive(Debug, Args)]
+pub struct RankArgs {
+    /// A system file (TOML, see docs/system-files.md).
+    #[arg(value_name = "FILE")]
+    file: PathBuf,
+    /// Functions: names, family instances or expressions.
+    #[arg(value_name = "NAMES", required = true)]
+    functions: Vec<String>,
+    /// Claim that the rank is R: exit status 1 if it is not.
+    #[arg(long, value_name = "R")]
+    expect: Option<usize>,
+    #[command(flatten)]
+    limits: LimitsArgs,
+}
+
+/// The rank job, as plain data.
+#[derive(Debug)]
+pub struct RankJob {
+    pub file: PathBuf,
+    pub functions: Vec<String>,
+    pub expect: Option<usize>,
+    pub limits: LimitsOverride,
+    pub output: Output,
+}
+
+impl RankArgs {
+    pub fn job(self, output: Output) -> RankJob {
+        RankJob {
+            file: self.file,
+            functions: self.functions,
+            expect: self.expect,
+            limits: self.limits.settings(),
+            output,
+        }
+    }
+}
+
+/// Certifies the rank and prints it; whether it is the expected one (if one was given).
+pub fn run(job: &RankJob) -> anyhow::Result<bool> {
+    let file = load(&job.file, &job.limits)?;
+    let report = rank_report(&file, &job.functions, job.expect)?;
+    emit(&render(&report, job.output.format, &job.output.options))?;
+    Ok(report.all_as_expected())
+}

@@ -1,0 +1,184 @@
+//! `superint search [FILE] --when … --momenta-degree d --positions-degree e --trig-degree k`:
+//! a basis of every integral in a finite space, by exact linear algebra, each proved.
+
+use std::path::PathBuf;
+
+use anyhow::{anyhow, bail, Context};
+use brackets::search::{SearchOptions, SearchSpace};
+use brackets::System;
+use clap::Args;
+use superint::discovery::{builtin_system, parse_condition, parse_fixed, search_report};
+use superint::render::render;
+use superint::system_file::{load, LoadedSystem};
+use trigpoly::Expr;
+
+use super::limits::LimitsArgs;
+use super::output::{emit, Output};
+
+pub const EXAMPLES: &str = "\
+Examples:
+  superint search systems/harmonic-rotor.toml --when 'p_theta = I*omega' \\
+      --momenta-degree 4 --positions-degree 4 --trig-degree 4
+  superint search --system harmonic --when 'p_theta = 2*I*omega' --momenta-degree 2 \\
+      --positions-degree 2 --trig-degree 2 --new-only
+  superint search systems/smorodinsky-winternitz-i.toml --momenta-degree 2 \\
+      --positions-degree 4 --trig-degree 0 --laurent
+  superint search --system anisotropic-3-5 --when 'p_theta = I*omega' --fix omega=1,M=2
+
+Parameters are fixed to rational values for the linear algebra (1 unless --fix says
+otherwise, and the output says which); every basis element is then lifted back to
+symbolic parameters by homogeneity and proved symbolically where the system allows.
+Built-in systems (--system): harmonic, gravity, anisotropic-3-5, anisotropic-1-2,
+planar-i, planar-ii.";
+
+/// Arguments of `superint search`.
+#[derive(Debug, Args)]
+pub struct SearchArgs {
+    /// A system file (TOML, see docs/system-files.md); or use --system.
+    #[arg(value_name = "FILE", required_unless_present = "system")]
+    file: Option<PathBuf>,
+    /// A built-in system instead of a file: harmonic, gravity, anisotropic-3-5,
+    /// anisotropic-1-2, planar-i, planar-ii.
+    #[arg(long, value_name = "NAME", conflicts_with = "file")]
+    system: Option<String>,
+    /// The condition applied after the bracket, such as 'p_theta = m*I*omega/n'.
+    #[arg(long, value_name = "CONDITION")]
+    when: Option<String>,
+    /// Total degree in the planar momenta.
+    #[arg(long, value_name = "D", default_value_t = 2,
+          value_parser = clap::value_parser!(u32).range(0..=12))]
+    momenta_degree: u32,
+    /// Total degree in the planar coordinates (sum of absolute exponents).
+    #[arg(long, value_name = "E", default_value_t = 2,
+          value_parser = clap::value_parser!(u32).range(0..=12))]
+    positions_degree: u32,
+    /// Trigonometric order in the angles.
+    #[arg(long, value_name = "K", default_value_t = 2,
+          value_parser = clap::value_parser!(u32).range(0..=12))]
+    trig_degree: u32,
+    /// Allow negative powers of the coordinates (Laurent potentials such as β/x²).
+    #[arg(long)]
+    laurent: bool,
+    /// Parameter values for the linear algebra, such as omega=1,M=2/3 (others are 1).
+    #[arg(long, value_name = "VALUES")]
+    fix: Option<String>,
+    /// Show only what the known integrals (the file's named functions, --known, and products
+    /// of known and found integrals) do not generate.
+    #[arg(long)]
+    new_only: bool,
+    /// More known integrals for --new-only: expressions or family instances (P_1_1),
+    /// separated by commas.
+    #[arg(long, value_name = "EXPRS")]
+    known: Option<String>,
+    #[command(flatten)]
+    limits: LimitsArgs,
+}
+
+/// The search job, as plain data.
+#[derive(Debug)]
+pub struct SearchJob {
+    pub args: SearchArgs,
+    pub output: Output,
+}
+
+impl SearchArgs {
+    pub fn job(self, output: Output) -> SearchJob {
+        SearchJob { args: self, output }
+    }
+}
+
+/// The system a discovery command works on: a loaded file or a built-in system.
+pub enum Subject {
+    /// A system file.
+    File(Box<LoadedSystem>),
+    /// A built-in system, with its name.
+    Builtin(String, System),
+}
+
+impl Subject {
+    /// Loads a file or looks up a built-in system.
+    /// Loads a file or looks up a built-in system (with its resonant functions `P11`, …
+    /// when `resonant`).
+    pub fn open(
+        file: Option<&PathBuf>,
+        builtin: Option<&str>,
+        resonant: bool,
+        limits: &LimitsArgs,
+    ) -> anyhow::Result<Subject> {
+        if let Some(name) = builtin {
+            return match builtin_system(name, resonant)? {
+                Some((display, s)) => Ok(Subject::Builtin(display, s)),
+                None => bail!(
+                    "unknown system '{name}' (built-in: {})",
+                    superint::discovery::BUILTIN_SYSTEMS.join(", ")
+                ),
+            };
+        }
+        let path = file.ok_or_else(|| anyhow!("give a system file or --system NAME"))?;
+        Ok(Subject::File(Box::new(load(path, &limits.settings())?)))
+    }
+
+    pub fn system(&self) -> &System {
+        match self {
+            Subject::File(f) => &f.system,
+            Subject::Builtin(_, s) => s,
+        }
+    }
+
+    pub fn name(&self) -> &str {
+        match self {
+            Subject::File(f) => &f.name,
+            Subject::Builtin(n, _) => n,
+        }
+    }
+
+    /// Parses an expression: named functions, family instances, brackets.
+    pub fn parse(&self, src: &str) -> Result<Expr, String> {
+        match self {
+            Subject::File(f) => f.parse_argument(src).map_err(|e| e.to_string()),
+            Subject::Builtin(_, s) => s.parse(src).map_err(|e| e.to_string()),
+        }
+    }
+
+    pub fn condition(&self, when: Option<&str>) -> anyhow::Result<Option<brackets::Condition>> {
+        when.map(|w| {
+            parse_condition(self.system(), w, &|s| self.parse(s))
+                .map_err(|e| anyhow!("--when: {e}"))
+        })
+        .transpose()
+    }
+
+    pub fn fixed(
+        &self,
+        fix: Option<&str>,
+    ) -> anyhow::Result<Vec<(trigpoly::Var, trigpoly::Rational)>> {
+        match fix {
+            Some(f) => parse_fixed(self.system(), f).map_err(|e| anyhow!("--fix: {e}")),
+            None => Ok(Vec::new()),
+        }
+    }
+}
+
+/// Searches and prints.
+pub fn run(job: &SearchJob) -> anyhow::Result<bool> {
+    let a = &job.args;
+    let subject = Subject::open(a.file.as_ref(), a.system.as_deref(), false, &a.limits)?;
+    let mut space = SearchSpace::new(a.momenta_degree, a.positions_degree, a.trig_degree);
+    if a.laurent {
+        space = space.laurent();
+    }
+    let mut options = SearchOptions::new(space);
+    options.condition = subject.condition(a.when.as_deref())?;
+    options.fixed = subject.fixed(a.fix.as_deref())?;
+    options.new_only = a.new_only;
+    if let Some(known) = &a.known {
+        for k in known.split(',').map(str::trim).filter(|k| !k.is_empty()) {
+            let e = subject.parse(k).map_err(|e| anyhow!("--known: {e}"))?;
+            options.known.push((k.to_string(), e));
+        }
+    }
+    let (report, _) = search_report(subject.name(), subject.system(), &options)
+        .context("searching for integrals")?;
+    emit(&render(&report, job.output.format, &job.output.options))?;
+    Ok(report.all_proved())
+}

@@ -1,0 +1,60 @@
+//! `superint table FILE [NAMES...]`: the bracket table of named functions.
+
+use std::path::PathBuf;
+
+use clap::Args;
+use superint::render::render;
+use superint::system_file::{load, table_report, LimitsOverride};
+
+use super::limits::LimitsArgs;
+use super::output::{emit, Output};
+
+pub const EXAMPLES: &str = "\
+Examples:
+  superint table systems/harmonic-rotor.toml F1 F2 L G1 G2    the su(2) table of section 3
+  superint table systems/harmonic-rotor.toml                  every function of the file
+  superint table systems/harmonic-rotor.toml L G1 G2 --format markdown
+
+Each entry is written as a combination of the listed functions with coefficients in the
+parameters where one exists, otherwise as an expression.";
+
+/// Arguments of `superint table`.
+#[derive(Debug, Args)]
+pub struct TableArgs {
+    /// A system file (TOML, see docs/system-files.md).
+    #[arg(value_name = "FILE")]
+    file: PathBuf,
+    /// Named functions or family instances (K_1_1); every function of the file but H if none.
+    #[arg(value_name = "NAMES")]
+    names: Vec<String>,
+    #[command(flatten)]
+    limits: LimitsArgs,
+}
+
+/// The table job, as plain data.
+#[derive(Debug)]
+pub struct TableJob {
+    pub file: PathBuf,
+    pub names: Vec<String>,
+    pub limits: LimitsOverride,
+    pub output: Output,
+}
+
+impl TableArgs {
+    pub fn job(self, output: Output) -> TableJob {
+        TableJob {
+            file: self.file,
+            names: self.names,
+            limits: self.limits.settings(),
+            output,
+        }
+    }
+}
+
+/// Computes the table and prints it.
+pub fn run(job: &TableJob) -> anyhow::Result<bool> {
+    let file = load(&job.file, &job.limits)?;
+    let report = table_report(&file, &job.names)?;
+    emit(&render(&report, job.output.format, &job.output.options))?;
+    Ok(true)
+}

@@ -1,0 +1,422 @@
+//! Claims of a system file: `lhs = rhs` under optional conditions, or `rank(F, G, …) = r`;
+//! read (syntax, conditions) when the file is loaded, computed by
+//! [`LoadedSystem::check_claim`].
+
+use std::ops::Range;
+use std::time::Instant;
+
+use brackets::{rank, Claim, Condition, EngineError, Outcome};
+use toml::Spanned;
+use trigpoly::syntax::ExprKind;
+use trigpoly::{AlgebraError, Expr, Span, VarKind};
+
+use super::error::{ErrorKind, FileError};
+use super::model::{ClaimModel, When};
+use super::scope::{rewrite_braces, LIMIT_HINT};
+use super::text::{array_strings, split_top_level, Source, Text};
+use super::LoadedSystem;
+use crate::report::{ClaimKind, ClaimResult, Expect, RankResult};
+
+/// What a claim says.
+#[derive(Clone, Debug)]
+pub enum ClaimForm {
+    /// `lhs = rhs`.
+    Identity {
+        /// The left side's text.
+        lhs: Text,
+        /// The right side's text.
+        rhs: Text,
+    },
+    /// `rank(F, G, …) = r`: the Jacobian of the functions by the phase-space coordinates.
+    Rank {
+        /// Each function: as printed, and its text.
+        functions: Vec<(String, Text)>,
+        /// The claimed rank.
+        expected: usize,
+    },
+}
+
+/// A claim as read from the file: id, statement in the paper's notation, form, condition,
+/// expectation, and where it is.
+#[derive(Clone, Debug)]
+pub struct ClaimSpec {
+    /// The id (`id`, or `#k` for the `k`-th claim).
+    pub id: String,
+    /// The statement in the paper's notation (`{L, G1} = −G2`).
+    pub statement: String,
+    /// What the claim says.
+    pub form: ClaimForm,
+    /// The condition (substitutions applied after the sides are computed), if any.
+    pub condition: Option<Condition>,
+    /// Proved, or deliberately refuted.
+    pub expect: Expect,
+    /// Where the claim's text is in the file.
+    pub span: Range<usize>,
+}
+
+/// A checked claim, as the report shows it.
+#[derive(Clone, Debug)]
+pub enum CheckedClaim {
+    /// An identity, proved or refuted with its residual.
+    Identity(Box<ClaimResult>),
+    /// A rank, with its certificate.
+    Rank(Box<RankResult>),
+}
+
+impl CheckedClaim {
+    /// The claim's result.
+    pub fn result(&self) -> &ClaimResult {
+        match self {
+            CheckedClaim::Identity(c) => c,
+            CheckedClaim::Rank(r) => &r.claim,
+        }
+    }
+}
+
+/// An engine error at a place of the file: limits are limit errors, with the hint.
+pub(crate) fn engine_error(source: &Source, span: Range<usize>, e: &EngineError) -> FileError {
+    match e {
+        EngineError::Algebra(
+            a @ (AlgebraError::TooManyTerms { .. } | AlgebraError::ExponentTooLarge { .. }),
+        ) => source
+            .error(ErrorKind::Limit, span, a.to_string())
+            .with_hint(LIMIT_HINT),
+        _ => source.error(ErrorKind::Engine, span, e.to_string()),
+    }
+}
+
+impl ClaimSpec {
+    /// Reads the `k`-th claim of a file.
+    pub(crate) fn parse(
+        file: &LoadedSystem,
+        k: usize,
+        model: &Spanned<ClaimModel>,
+    ) -> Result<ClaimSpec, FileError> {
+        let source = &file.source;
+        let c = model.get_ref();
+        let text = Text::in_toml(&source.text, c.claim.span(), c.claim.get_ref());
+        let scope = file.scope(file.families.len());
+        let parts = split_top_level(&text.value, '=');
+        let usage = "a claim reads `lhs = rhs`, such as \"{L, G1} = -G2\", or \
+                     `rank(F, G, ...) = r`";
+        if parts.len() == 1 {
+            return Err(text.error(
+                source,
+                ErrorKind::Claim,
+                Span::new(0, text.value.len()),
+                format!("{usage}; there is no '=' here"),
+            ));
+        }
+        if parts.len() > 2 {
+            let at = parts[2].start - 1;
+            return Err(text.error(
+                source,
+                ErrorKind::Claim,
+                Span::new(at, at + 1),
+                format!("{usage}, with one '='; put conditions in `when`"),
+            ));
+        }
+        let lhs = text.slice(parts[0].clone());
+        let rhs = text.slice(parts[1].clone());
+        for side in [&lhs, &rhs] {
+            if side.value.trim().is_empty() {
+                return Err(side.error(
+                    source,
+                    ErrorKind::Claim,
+                    Span::new(0, side.value.len()),
+                    format!("{usage}; one side is empty"),
+                ));
+            }
+        }
+        let lhs_tree = scope.tree(source, &lhs)?;
+        let rhs_tree = scope.tree(source, &rhs)?;
+        let (form, statement) = match &lhs_tree.kind {
+            ExprKind::Call(f, _, args) if f == "rank" => {
+                let expected = match &rhs_tree.kind {
+                    ExprKind::Integer(n) => usize::try_from(n.clone()).ok(),
+                    _ => None,
+                };
+                let Some(expected) = expected else {
+                    return Err(rhs.error(
+                        source,
+                        ErrorKind::Claim,
+                        rhs_tree.span,
+                        "the right side of a rank claim is a whole number, such as 5",
+                    ));
+                };
+                // Family instances written K_{1,1} are K_1_1 in the rewritten text, at the
+                // same places.
+                let rewritten = lhs.rewritten(rewrite_braces(&lhs.value, &file.families));
+                let functions: Vec<(String, Text)> = args
+                    .iter()
+                    .map(|a| (file.pretty(a), rewritten.slice(a.span.start..a.span.end)))
+                    .collect();
+                let vars = file.system.vars();
+                let coordinates: Vec<&str> = file
+                    .system
+                    .space()
+                    .coordinates()
+                    .iter()
+                    .map(|&v| vars.variable(v).unicode())
+                    .collect();
+                let names: Vec<&str> = functions.iter().map(|f| f.0.as_str()).collect();
+                let statement = format!(
+                    "rank ∂({})/∂({}) = {expected}",
+                    names.join(", "),
+                    coordinates.join(", ")
+                );
+                (
+                    ClaimForm::Rank {
+                        functions,
+                        expected,
+                    },
+                    statement,
+                )
+            }
+            _ => {
+                let statement = format!("{} = {}", file.pretty(&lhs_tree), file.pretty(&rhs_tree));
+                (ClaimForm::Identity { lhs, rhs }, statement)
+            }
+        };
+        let condition = match &c.when {
+            None => None,
+            Some(w) => {
+                if matches!(form, ClaimForm::Rank { .. }) {
+                    return Err(source.error(
+                        ErrorKind::Condition,
+                        w.span(),
+                        "a rank claim takes no condition: the rank is that of the Jacobian on \
+                         the whole phase space",
+                    ));
+                }
+                Some(condition(file, w)?)
+            }
+        };
+        let id = match &c.id {
+            Some(id) if id.get_ref().trim().is_empty() => {
+                return Err(source.error(ErrorKind::Claim, id.span(), "a claim's id is empty"))
+            }
+            Some(id) => id.get_ref().clone(),
+            None => format!("#{}", k + 1),
+        };
+        Ok(ClaimSpec {
+            id,
+            statement,
+            form,
+            condition,
+            expect: c.expect.as_ref().map_or(Expect::Proved, |e| *e.get_ref()),
+            span: c.claim.span(),
+        })
+    }
+}
+
+/// Reads `when`: `var = value` pieces separated by commas, or an array of them.
+fn condition(file: &LoadedSystem, when: &Spanned<When>) -> Result<Condition, FileError> {
+    let source = &file.source;
+    let pieces: Vec<Text> = match when.get_ref() {
+        When::One(s) => {
+            let whole = Text::in_toml(&source.text, when.span(), s);
+            split_top_level(s, ',')
+                .into_iter()
+                .map(|r| whole.slice(r))
+                .collect()
+        }
+        When::Many(items) => match array_strings(&source.text, when.span()) {
+            Some(spans) if spans.len() == items.len() => spans
+                .into_iter()
+                .zip(items)
+                .map(|(span, s)| Text::in_toml(&source.text, span, s))
+                .collect(),
+            _ => items
+                .iter()
+                .map(|s| Text::in_toml(&source.text, when.span(), s))
+                .collect(),
+        },
+    };
+    if pieces.is_empty() {
+        return Err(source.error(
+            ErrorKind::Condition,
+            when.span(),
+            "`when` is empty: give a condition such as \"p_theta = 2*I*omega/3\"",
+        ));
+    }
+    parse_condition(file, source, &pieces)
+}
+
+/// Reads conditions `var = value` (one per text) of `source` into one substitution.
+pub(crate) fn parse_condition(
+    file: &LoadedSystem,
+    source: &Source,
+    pieces: &[Text],
+) -> Result<Condition, FileError> {
+    let usage = "a condition reads `variable = value`, such as \"p_theta = 2*I*omega/3\"";
+    let scope = file.scope(file.families.len());
+    let vars = file.system.vars();
+    let mut subs = Vec::new();
+    let mut shown = Vec::new();
+    for piece in pieces {
+        let parts = split_top_level(&piece.value, '=');
+        if parts.len() != 2 {
+            let span = match parts.get(2) {
+                Some(p) => Span::new(p.start - 1, p.start),
+                None => Span::new(0, piece.value.len()),
+            };
+            return Err(piece.error(source, ErrorKind::Condition, span, usage));
+        }
+        let lhs = piece.slice(parts[0].clone());
+        let rhs = piece.slice(parts[1].clone());
+        if lhs.value.trim().is_empty() || rhs.value.trim().is_empty() {
+            return Err(piece.error(
+                source,
+                ErrorKind::Condition,
+                Span::new(0, piece.value.len()),
+                format!("{usage}; one side is empty"),
+            ));
+        }
+        let lhs_tree = scope.tree(source, &lhs)?;
+        let var = match &lhs_tree.kind {
+            ExprKind::Name(n) => vars.lookup(n),
+            _ => None,
+        };
+        let Some(var) = var else {
+            return Err(lhs.error(
+                source,
+                ErrorKind::Condition,
+                lhs_tree.span,
+                format!(
+                    "the left side of a condition is one declared variable (a coordinate, a \
+                     momentum or a parameter), found '{}'",
+                    lhs.value.trim()
+                ),
+            ));
+        };
+        if vars.variable(var).kind() == VarKind::Angle {
+            return Err(lhs.error(
+                source,
+                ErrorKind::Condition,
+                lhs_tree.span,
+                "a condition cannot fix an angle: functions depend on it through cos, sin, exp",
+            ));
+        }
+        if subs.iter().any(|(v, _): &(trigpoly::Var, Expr)| *v == var) {
+            return Err(lhs.error(
+                source,
+                ErrorKind::Condition,
+                lhs_tree.span,
+                format!("'{}' is fixed twice", lhs.value.trim()),
+            ));
+        }
+        let rhs_tree = scope.tree(source, &rhs)?;
+        let value = scope.lower(source, &rhs, &rhs_tree)?;
+        shown.push(format!(
+            "{} = {}",
+            vars.variable(var).unicode(),
+            file.pretty(&rhs_tree)
+        ));
+        subs.push((var, value));
+    }
+    Ok(Condition {
+        text: shown.join(", "),
+        subs,
+    })
+}
+
+impl LoadedSystem {
+    /// Computes a claim: parses its sides (expanding brackets and families), applies the
+    /// condition, and proves or refutes it; timed.
+    pub fn check_claim(&self, spec: &ClaimSpec) -> Result<CheckedClaim, FileError> {
+        let start = Instant::now();
+        let scope = self.scope(self.families.len());
+        let at = |e: &EngineError| engine_error(&self.source, spec.span.clone(), e);
+        match &spec.form {
+            ClaimForm::Identity { lhs, rhs } => {
+                let l = scope.parse(&self.source, lhs)?;
+                let r = scope.parse(&self.source, rhs)?;
+                let mut claim = Claim::new(&spec.id, &spec.statement, l, r);
+                if let Some(c) = &spec.condition {
+                    claim = claim.when(c.clone());
+                }
+                let v = claim.check().map_err(|e| at(&e))?;
+                let (proved, residual) = match v.outcome {
+                    Outcome::Proved => (true, None),
+                    Outcome::Refuted { residual } => (false, Some(residual)),
+                };
+                Ok(CheckedClaim::Identity(Box::new(ClaimResult {
+                    id: spec.id.clone(),
+                    statement: spec.statement.clone(),
+                    condition: spec.condition.as_ref().map(|c| c.text.clone()),
+                    kind: ClaimKind::Identity,
+                    proved,
+                    expect: spec.expect,
+                    residual,
+                    witness: None,
+                    note: None,
+                    seconds: start.elapsed().as_secs_f64(),
+                })))
+            }
+            ClaimForm::Rank {
+                functions,
+                expected,
+            } => {
+                let exprs: Vec<Expr> = functions
+                    .iter()
+                    .map(|(_, t)| scope.parse(&self.source, t))
+                    .collect::<Result<_, _>>()?;
+                Ok(CheckedClaim::Rank(Box::new(self.rank_result(
+                    &self.source,
+                    &spec.id,
+                    functions.iter().map(|f| f.0.clone()).collect(),
+                    &exprs,
+                    *expected,
+                    spec.expect,
+                    spec.span.clone(),
+                    start,
+                )?)))
+            }
+        }
+    }
+
+    /// The certified rank of functions as a report entry; `expected` is the claimed rank.
+    #[allow(clippy::too_many_arguments)]
+    pub(crate) fn rank_result(
+        &self,
+        source: &Source,
+        id: &str,
+        names: Vec<String>,
+        exprs: &[Expr],
+        expected: usize,
+        expect: Expect,
+        span: Range<usize>,
+        start: Instant,
+    ) -> Result<RankResult, FileError> {
+        if exprs.is_empty() {
+            return Err(source.error(ErrorKind::Claim, span, "a rank needs at least one function"));
+        }
+        let cert = rank(self.system.space(), exprs).map_err(|e| engine_error(source, span, &e))?;
+        let proved = cert.rank == expected;
+        let note = (!proved).then(|| format!("the rank is {}", cert.rank));
+        let vars = self.system.vars();
+        let coordinates: Vec<&str> = self
+            .system
+            .space()
+            .coordinates()
+            .iter()
+            .map(|&v| vars.variable(v).unicode())
+            .collect();
+        let statement = format!(
+            "rank ∂({})/∂({}) = {expected}",
+            names.join(", "),
+            coordinates.join(", ")
+        );
+        Ok(RankResult {
+            functions: names,
+            vars: self.system.vars().clone(),
+            coordinates: self.system.space().coordinates(),
+            expected,
+            claim: ClaimResult::derived(id, &statement, proved, note)
+                .expecting(expect)
+                .timed(start.elapsed().as_secs_f64()),
+            certificate: cert,
+        })
+    }
+}

@@ -1,0 +1,210 @@
+//! [`FileError`]: what is wrong with a system file (or an expression on the command line),
+//! where, and what to do about it, rendered as
+//!
+//! ```text
+//! systems/mine.toml:12:21: unknown name 'G3' (known: x, y, …)
+//!    12 | claim = "{L, G1} = -G3"
+//!       |                     ^^
+//! ```
+
+use std::fmt;
+use std::ops::Range;
+
+/// What kind of problem a [`FileError`] reports.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum ErrorKind {
+    /// The file could not be read.
+    Io,
+    /// The file is empty (or blank).
+    Empty,
+    /// The file is not UTF-8 text (a NUL byte, invalid UTF-8).
+    NotText,
+    /// The file is not valid TOML.
+    Toml,
+    /// A field is missing, unknown or of the wrong type.
+    Schema,
+    /// A declared name is invalid, reserved or declared twice.
+    Name,
+    /// An expression does not parse or does not mean anything (unknown name, division by a
+    /// non-monomial, a bracket with a parameter, ...).
+    Expression,
+    /// A condition (`when`) is malformed.
+    Condition,
+    /// A claim is malformed (no `=`, a bad rank claim).
+    Claim,
+    /// A family is malformed or cannot be used as asked.
+    Family,
+    /// A term or degree limit was reached.
+    Limit,
+    /// The engine could not finish a computation (a rank it could not certify, ...).
+    Engine,
+}
+
+/// Where in its source an error is: 1-based line and column (in characters), the source line
+/// and the caret under the offending text.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct Location {
+    /// 1-based line.
+    pub line: usize,
+    /// 1-based column, in characters.
+    pub column: usize,
+    /// The source line (empty for a binary file).
+    pub excerpt: String,
+    /// The text before the caret: spaces, and tabs where the line has tabs.
+    pad: String,
+    /// How many carets.
+    width: usize,
+}
+
+/// A problem with a system file or a command-line expression: kind, origin (the file's path,
+/// or `<command line>`), location, message and an optional hint.
+#[derive(Clone, Debug, PartialEq, Eq, thiserror::Error)]
+pub struct FileError {
+    /// What kind of problem it is.
+    pub kind: ErrorKind,
+    /// The file's path as given, or `<command line>`.
+    pub origin: String,
+    /// Where, when the problem has a place in the text.
+    pub location: Option<Box<Location>>,
+    /// What is wrong, in one line.
+    pub message: String,
+    /// What to do about it.
+    pub hint: Option<String>,
+}
+
+impl FileError {
+    /// An error without a place in the text (an unreadable file).
+    pub fn new(kind: ErrorKind, origin: &str, message: impl Into<String>) -> Self {
+        FileError {
+            kind,
+            origin: origin.to_string(),
+            location: None,
+            message: message.into(),
+            hint: None,
+        }
+    }
+
+    /// An error at the byte range `span` of `text`; the caret covers the span's part of its
+    /// first line (at least one character).
+    pub fn at(
+        kind: ErrorKind,
+        origin: &str,
+        text: &str,
+        span: Range<usize>,
+        message: impl Into<String>,
+    ) -> Self {
+        FileError {
+            location: Some(Box::new(locate(text, span))),
+            ..FileError::new(kind, origin, message)
+        }
+    }
+
+    /// The same error with a hint.
+    #[must_use]
+    pub fn with_hint(mut self, hint: impl Into<String>) -> Self {
+        self.hint = Some(hint.into());
+        self
+    }
+
+    /// 1-based line and column, if the error has a place.
+    pub fn line_col(&self) -> Option<(usize, usize)> {
+        self.location.as_ref().map(|l| (l.line, l.column))
+    }
+}
+
+impl fmt::Display for FileError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self.location.as_deref() {
+            None => write!(f, "{}: {}", self.origin, self.message)?,
+            Some(l) => {
+                write!(
+                    f,
+                    "{}:{}:{}: {}",
+                    self.origin, l.line, l.column, self.message
+                )?;
+                if !l.excerpt.is_empty() || l.width > 0 {
+                    let number = l.line.to_string();
+                    let gutter = " ".repeat(number.len());
+                    write!(f, "\n {number} | {}", l.excerpt)?;
+                    write!(f, "\n {gutter} | {}{}", l.pad, "^".repeat(l.width.max(1)))?;
+                }
+            }
+        }
+        if let Some(h) = &self.hint {
+            write!(f, "\nhint: {h}")?;
+        }
+        Ok(())
+    }
+}
+
+/// The largest char boundary of `text` that is at most `offset`.
+fn char_floor(text: &str, offset: usize) -> usize {
+    let mut i = offset.min(text.len());
+    while !text.is_char_boundary(i) {
+        i -= 1;
+    }
+    i
+}
+
+/// Line, column, source line and caret of a byte range.
+pub(crate) fn locate(text: &str, span: Range<usize>) -> Location {
+    let start = char_floor(text, span.start);
+    let line_start = text[..start].rfind('\n').map_or(0, |i| i + 1);
+    let line_end = text[start..].find('\n').map_or(text.len(), |i| start + i);
+    let end = char_floor(text, span.end).clamp(start, line_end);
+    let line_text = text[line_start..line_end].trim_end_matches('\r');
+    let pad: String = text[line_start..start]
+        .chars()
+        .map(|c| if c == '\t' { '\t' } else { ' ' })
+        .collect();
+    Location {
+        line: text[..start].matches('\n').count() + 1,
+        column: text[line_start..start].chars().count() + 1,
+        excerpt: line_text.to_string(),
+        pad,
+        width: text[start..end].chars().count().max(1),
+    }
+}
+
+/// Line and column of a byte offset in bytes that need not be UTF-8 (for binary files): no
+/// excerpt, no caret.
+pub(crate) fn locate_bytes(bytes: &[u8], offset: usize) -> Location {
+    let before = &bytes[..offset.min(bytes.len())];
+    let line_start = before
+        .iter()
+        .rposition(|&b| b == b'\n')
+        .map_or(0, |i| i + 1);
+    let column = String::from_utf8_lossy(&before[line_start..])
+        .chars()
+        .count()
+        + 1;
+    Location {
+        line: before.iter().filter(|&&b| b == b'\n').count() + 1,
+        column,
+        excerpt: String::new(),
+        pad: String::new(),
+        width: 0,
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn error_renders_with_file_line_column_and_caret() {
+        let text = "name = \"x\"\nclaim = \"{L, G1} = -G3\"\n";
+        let start = text.find("G3").unwrap();
+        let e = FileError::at(
+            ErrorKind::Expression,
+            "a.toml",
+            text,
+            start..start + 2,
+            "unknown name 'G3'",
+        );
+        assert_eq!(
+            e.to_string(),
+            "a.toml:2:21: unknown name 'G3'\n 2 | claim = \"{L, G1} = -G3\"\n   |                     ^^"
+        );
+    }
+}

@@ -1,0 +1,405 @@
+//! Loading a system file: bytes → text (no binary, no empty file) → the TOML model → variables
+//! with their limits, phase space, Hamiltonian, functions, families and claims, each checked
+//! where it is written.
+
+use std::collections::HashMap;
+use std::ops::Range;
+use std::path::Path;
+use std::sync::Mutex;
+
+use brackets::{PhaseSpace, System};
+use toml::Spanned;
+use trigpoly::{Expr, Limits, VarSet, RESERVED};
+
+use super::claims::ClaimSpec;
+use super::error::{locate_bytes, ErrorKind, FileError};
+use super::model::SystemModel;
+use super::scope::mention;
+use super::text::{Source, Text};
+use super::{Family, LimitsOverride, LoadedSystem, DEFAULT_MAX_DEGREE, DEFAULT_MAX_TERMS};
+
+/// The largest exponent the packed monomials hold (16 bits a field).
+const MAX_DEGREE_CEILING: u32 = 32_767;
+
+/// Reads and loads a system file. Every problem is a [`FileError`] naming the file, line and
+/// column.
+pub fn load(path: &Path, limits: &LimitsOverride) -> Result<LoadedSystem, FileError> {
+    let origin = path.display().to_string();
+    let bytes = std::fs::read(path).map_err(|e| {
+        FileError::new(ErrorKind::Io, &origin, format!("cannot read the file: {e}"))
+    })?;
+    load_bytes(&origin, &bytes, limits)
+}
+
+/// Loads a system file from its bytes; `origin` names it in messages.
+pub fn load_bytes(
+    origin: &str,
+    bytes: &[u8],
+    limits: &LimitsOverride,
+) -> Result<LoadedSystem, FileError> {
+    if let Some(k) = bytes.iter().position(|&b| b == 0) {
+        return Err(FileError {
+            location: Some(Box::new(locate_bytes(bytes, k))),
+            ..FileError::new(
+                ErrorKind::NotText,
+                origin,
+                "this is a binary file (it contains a NUL byte), not a TOML system file",
+            )
+        });
+    }
+    let text = std::str::from_utf8(bytes).map_err(|e| {
+        let k = e.valid_up_to();
+        FileError {
+            location: Some(Box::new(locate_bytes(bytes, k))),
+            ..FileError::new(
+                ErrorKind::NotText,
+                origin,
+                format!(
+                    "the file is not UTF-8 text (byte 0x{:02X} is not valid UTF-8); a system \
+                     file is a UTF-8 TOML file",
+                    bytes[k]
+                ),
+            )
+        }
+    })?;
+    load_str(origin, text, limits)
+}
+
+/// Loads a system file from its text; `origin` names it in messages.
+pub fn load_str(
+    origin: &str,
+    text: &str,
+    limits: &LimitsOverride,
+) -> Result<LoadedSystem, FileError> {
+    let source = Source::new(origin, text);
+    if text.trim_start_matches('\u{feff}').trim().is_empty() {
+        return Err(source
+            .error(
+                ErrorKind::Empty,
+                0..0,
+                "the file is empty: a system file declares at least `hamiltonian` and \
+                 [phase_space]",
+            )
+            .with_hint("see docs/system-files.md for a complete example"));
+    }
+    let model: SystemModel = toml::from_str(text).map_err(|e| toml_error(&source, &e))?;
+    Builder::new(source, limits).build(model)
+}
+
+/// A TOML error (syntax, or a missing, unknown or mistyped field) at its place.
+fn toml_error(source: &Source, e: &toml::de::Error) -> FileError {
+    let message = e
+        .message()
+        .lines()
+        .map(str::trim)
+        .filter(|l| !l.is_empty())
+        .collect::<Vec<_>>()
+        .join("; ");
+    let schema = [
+        "missing field",
+        "unknown field",
+        "invalid type",
+        "invalid value",
+        "unknown variant",
+        "invalid length",
+    ]
+    .iter()
+    .any(|p| message.starts_with(p));
+    let kind = if schema {
+        ErrorKind::Schema
+    } else {
+        ErrorKind::Toml
+    };
+    let message = if message.starts_with("missing field") {
+        format!("{message} (see docs/system-files.md for every field)")
+    } else {
+        message
+    };
+    let span = e.span().unwrap_or(0..0);
+    source.error(kind, span, message)
+}
+
+fn is_identifier(s: &str) -> bool {
+    let mut chars = s.chars();
+    matches!(chars.next(), Some(c) if c.is_alphabetic() || c == '_')
+        && chars.all(|c| c.is_alphanumeric() || c == '_')
+}
+
+struct Builder<'a> {
+    source: Source,
+    limits: &'a LimitsOverride,
+    /// Every declared name: what it is and where.
+    names: HashMap<String, (&'static str, Range<usize>)>,
+}
+
+impl<'a> Builder<'a> {
+    fn new(source: Source, limits: &'a LimitsOverride) -> Self {
+        Builder {
+            source,
+            limits,
+            names: HashMap::new(),
+        }
+    }
+
+    fn text(&self, s: &Spanned<String>) -> Text {
+        Text::in_toml(&self.source.text, s.span(), s.get_ref())
+    }
+
+    fn error(&self, kind: ErrorKind, span: Range<usize>, message: impl Into<String>) -> FileError {
+        self.source.error(kind, span, message)
+    }
+
+    /// Declares a name of the given kind, checking that it is an identifier, not reserved,
+    /// and new.
+    fn declare(
+        &mut self,
+        name: &str,
+        span: Range<usize>,
+        what: &'static str,
+    ) -> Result<(), FileError> {
+        if !is_identifier(name) {
+            return Err(self.error(
+                ErrorKind::Name,
+                span,
+                format!(
+                    "'{name}' cannot name a {what}: a name is letters, digits and '_', starting \
+                     with a letter or '_'"
+                ),
+            ));
+        }
+        if RESERVED.contains(&name) || matches!(name, "conj" | "re" | "im" | "rank") {
+            return Err(self.error(
+                ErrorKind::Name,
+                span,
+                format!("'{name}' is reserved (i, cos, sin, exp, conj, re, im, rank)"),
+            ));
+        }
+        if name == "H" {
+            return Err(self.error(ErrorKind::Name, span, "'H' is reserved for the Hamiltonian"));
+        }
+        if let Some((other, at)) = self.names.get(name) {
+            let line = super::error::locate(&self.source.text, at.clone()).line;
+            return Err(self.error(
+                ErrorKind::Name,
+                span,
+                format!("'{name}' is already declared as a {other} on line {line}"),
+            ));
+        }
+        self.names.insert(name.to_string(), (what, span));
+        Ok(())
+    }
+
+    fn build(mut self, model: SystemModel) -> Result<LoadedSystem, FileError> {
+        let ps = model.phase_space.get_ref();
+        if ps.coordinates.is_empty() && ps.angles.is_empty() {
+            return Err(self.error(
+                ErrorKind::Schema,
+                model.phase_space.span(),
+                "[phase_space] declares no coordinates or angles: a phase space needs at least \
+                 one canonical pair",
+            ));
+        }
+        for c in &ps.coordinates {
+            self.declare(c.get_ref(), c.span(), "coordinate")?;
+        }
+        for a in &ps.angles {
+            self.declare(a.get_ref(), a.span(), "angle")?;
+        }
+        for p in &ps.parameters {
+            self.declare(p.get_ref(), p.span(), "parameter")?;
+        }
+        let qs: Vec<&Spanned<String>> = ps.coordinates.iter().chain(&ps.angles).collect();
+        for q in &qs {
+            let p = format!("p_{}", q.get_ref());
+            if let Some((other, _)) = self.names.get(&p) {
+                return Err(self.error(
+                    ErrorKind::Name,
+                    q.span(),
+                    format!(
+                        "the momentum of '{}' is '{p}', which is already declared as a {other}",
+                        q.get_ref()
+                    ),
+                ));
+            }
+            self.names.insert(p, ("momentum", q.span()));
+        }
+        let limits = self.limits(&model)?;
+        let mut builder = VarSet::builder().limits(limits);
+        for c in &ps.coordinates {
+            builder = builder.coordinate(c.get_ref());
+        }
+        for a in &ps.angles {
+            builder = builder.angle(a.get_ref());
+        }
+        for q in &qs {
+            builder = builder.momentum(&format!("p_{}", q.get_ref()));
+        }
+        for p in &ps.parameters {
+            builder = builder.parameter(p.get_ref());
+        }
+        let span = model.phase_space.span();
+        let vars = builder
+            .build()
+            .map_err(|e| self.error(ErrorKind::Name, span.clone(), e.to_string()))?;
+        let pairs: Vec<(String, String)> = qs
+            .iter()
+            .map(|q| (q.get_ref().clone(), format!("p_{}", q.get_ref())))
+            .collect();
+        let pairs: Vec<(&str, &str)> = pairs
+            .iter()
+            .map(|(q, p)| (q.as_str(), p.as_str()))
+            .collect();
+        let space = PhaseSpace::new(&vars, &pairs)
+            .map_err(|e| self.error(ErrorKind::Name, span.clone(), e.to_string()))?;
+        let name = match &model.name {
+            Some(n) => n.get_ref().clone(),
+            None => Path::new(&self.source.origin).file_stem().map_or_else(
+                || "system".to_string(),
+                |s| s.to_string_lossy().into_owned(),
+            ),
+        };
+        let mut file = LoadedSystem {
+            source: self.source.clone(),
+            name: name.clone(),
+            citation: model.source.as_ref().map(|s| s.get_ref().clone()),
+            description: model.description.as_ref().map(|s| s.get_ref().clone()),
+            system: System::new(&name, space, Expr::zero(&vars)),
+            families: Vec::new(),
+            claims: Vec::new(),
+            limits,
+            cache: Mutex::new(HashMap::new()),
+        };
+
+        // H may use the variables only.
+        let h_text = self.text(&model.hamiltonian);
+        let h = {
+            let scope = file.scope(0);
+            let tree = scope.tree(&self.source, &h_text)?;
+            if let Some(at) = mention(&tree, "H") {
+                return Err(h_text.error(
+                    &self.source,
+                    ErrorKind::Expression,
+                    at,
+                    "the Hamiltonian cannot use H itself",
+                ));
+            }
+            scope.lower(&self.source, &h_text, &tree)?
+        };
+        file.system.define("H", "H", h);
+
+        for f in &model.function {
+            let f = f.get_ref();
+            self.declare(f.name.get_ref(), f.name.span(), "function")?;
+            let value = file.scope(0).parse(&self.source, &self.text(&f.value))?;
+            let display = f.display.as_ref().unwrap_or(&f.name).get_ref();
+            file.system.define(f.name.get_ref(), display, value);
+        }
+
+        for spanned in &model.family {
+            let f = spanned.get_ref();
+            self.declare(f.name.get_ref(), f.name.span(), "family")?;
+            let indices = match &f.indices {
+                None => ["m".to_string(), "n".to_string()],
+                Some(list) => {
+                    let items = list.get_ref();
+                    if items.len() != 2 {
+                        return Err(self.error(
+                            ErrorKind::Family,
+                            list.span(),
+                            format!(
+                                "a family has two indices, such as [\"m\", \"n\"]; found {}",
+                                items.len()
+                            ),
+                        ));
+                    }
+                    [items[0].get_ref().clone(), items[1].get_ref().clone()]
+                }
+            };
+            let index_span = f.indices.as_ref().map_or(f.name.span(), |l| l.span());
+            for (k, idx) in indices.iter().enumerate() {
+                if !is_identifier(idx) || idx.contains('_') || idx == "i" {
+                    return Err(self.error(
+                        ErrorKind::Family,
+                        index_span,
+                        format!("'{idx}' cannot name an index: use a plain name such as m or n"),
+                    ));
+                }
+                if let Some((other, _)) = self.names.get(idx) {
+                    return Err(self.error(
+                        ErrorKind::Family,
+                        index_span,
+                        format!("the index '{idx}' is already declared as a {other}"),
+                    ));
+                }
+                if k == 1 && indices[0] == *idx {
+                    return Err(self.error(
+                        ErrorKind::Family,
+                        index_span,
+                        format!("the two indices are both named '{idx}'"),
+                    ));
+                }
+            }
+            let display = f.display.as_ref().unwrap_or(&f.name).get_ref().clone();
+            file.families.push(Family {
+                name: f.name.get_ref().clone(),
+                display,
+                indices,
+                value: self.text(&f.value),
+                eigenvalue: f.eigenvalue.as_ref().map(|e| self.text(e)),
+                span: f.name.span(),
+            });
+            // Check the value and the eigenvalue on the instance (1, 1).
+            let k = file.families.len() - 1;
+            file.scope(k + 1).expand(k, 1, 1, &self.source, 0..0)?;
+            if file.families[k].eigenvalue.is_some() {
+                file.eigenvalue_at(k, 1, 1)?;
+            }
+        }
+
+        for (k, c) in model.claim.iter().enumerate() {
+            let spec = ClaimSpec::parse(&file, k, c)?;
+            file.claims.push(spec);
+        }
+        Ok(file)
+    }
+
+    /// The limits: the command line's, else the file's, else the defaults.
+    fn limits(&self, model: &SystemModel) -> Result<Limits, FileError> {
+        let file = model.limits.as_ref().map(|l| l.get_ref());
+        let terms = file.and_then(|l| l.max_terms.as_ref());
+        let degree = file.and_then(|l| l.max_degree.as_ref());
+        if let Some(t) = terms {
+            if *t.get_ref() == 0 {
+                return Err(self.error(
+                    ErrorKind::Schema,
+                    t.span(),
+                    "max_terms must be at least 1",
+                ));
+            }
+        }
+        if let Some(d) = degree {
+            if *d.get_ref() == 0 || *d.get_ref() > MAX_DEGREE_CEILING {
+                return Err(self.error(
+                    ErrorKind::Schema,
+                    d.span(),
+                    format!("max_degree must be between 1 and {MAX_DEGREE_CEILING}"),
+                ));
+            }
+        }
+        let max_terms = self
+            .limits
+            .max_terms
+            .or(terms.map(|t| usize::try_from(*t.get_ref()).unwrap_or(usize::MAX)))
+            .unwrap_or(DEFAULT_MAX_TERMS);
+        let max_degree = self
+            .limits
+            .max_degree
+            .or(degree.map(|d| *d.get_ref()))
+            .unwrap_or(DEFAULT_MAX_DEGREE)
+            .min(MAX_DEGREE_CEILING);
+        Ok(Limits {
+            max_terms,
+            max_degree,
+        })
+    }
+}

@@ -1,0 +1,146 @@
+//! System files: a researcher's own Hamiltonian system, its named functions, families and
+//! claims, declared in TOML (the format is documented in `docs/system-files.md`), loaded into
+//! a [`brackets::System`] and checked.
+//!
+//! ```
+//! use superint::system_file::{load_str, LimitsOverride};
+//!
+//! let file = r#"
+//! name = "Harmonic oscillator"
+//! hamiltonian = "p_x^2/(2*M) + M*omega^2*x^2/2"
+//!
+//! [phase_space]
+//! coordinates = ["x"]
+//! parameters = ["M", "omega"]
+//!
+//! [[function]]
+//! name = "A"
+//! value = "p_x + i*M*omega*x"
+//!
+//! [[claim]]
+//! id = "ladder"
+//! claim = "{A, H} = i*omega*A"
+//!
+//! [[claim]]
+//! id = "wrong-sign"
+//! claim = "{A, H} = -i*omega*A"
+//! expect = "refuted"
+//! "#;
+//! let system = load_str("oscillator.toml", file, &LimitsOverride::default())?;
+//! let report = superint::system_file::check_report(&[system])?;
+//! assert!(report.all_as_expected());
+//! assert_eq!(report.claims().len(), 2);
+//! # Ok::<(), superint::system_file::FileError>(())
+//! ```
+//!
+//! The loader is the only part of the workspace that reads files: `brackets` does no I/O.
+//! Every expression string keeps its place in the file ([`Text`]), so that an error anywhere,
+//! in TOML, in an expression, or in a family expanded much later, is reported as
+//! `FILE:LINE:COLUMN: message` with the source line and a caret ([`FileError`]).
+
+mod claims;
+mod error;
+mod load;
+mod model;
+mod pretty;
+mod reports;
+mod scope;
+mod text;
+mod tower;
+
+pub use claims::{CheckedClaim, ClaimForm, ClaimSpec};
+pub use error::{ErrorKind, FileError, Location};
+pub use load::{load, load_bytes, load_str};
+pub use reports::{bracket_report, check_report, rank_report, table_report};
+pub use text::{Source, Text};
+pub use tower::family_tower_report;
+
+use std::collections::HashMap;
+use std::ops::Range;
+use std::sync::Mutex;
+
+use brackets::System;
+use trigpoly::{Expr, Limits};
+
+/// The default term limit of a system file: no single result may have more terms.
+pub const DEFAULT_MAX_TERMS: usize = 2_000_000;
+/// The default degree limit of a system file: no exponent may exceed it in absolute value.
+pub const DEFAULT_MAX_DEGREE: u32 = 1000;
+
+/// Limits given on the command line (`--max-terms`, `--max-degree`): they override the file's
+/// `[limits]`, which override the defaults.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct LimitsOverride {
+    /// `--max-terms`.
+    pub max_terms: Option<usize>,
+    /// `--max-degree`.
+    pub max_degree: Option<u32>,
+}
+
+/// A family of functions with two integer indices, such as `K_{m,n} = Z^m e^{−inθ}`: its
+/// instances are named `K_2_3` (or `K_{2,3}`) in expressions.
+#[derive(Clone, Debug)]
+pub struct Family {
+    /// The name (`K`).
+    pub name: String,
+    /// The name as printed (`K̄`).
+    pub display: String,
+    /// The index names (`m`, `n`).
+    pub indices: [String; 2],
+    /// The value, in the indices.
+    pub value: Text,
+    /// The eigenvalue `λ(m, n)` with `{K_{m,n}, H} = λ(m, n) K_{m,n}`, if declared.
+    pub eigenvalue: Option<Text>,
+    /// Where the family's name is in the file.
+    pub span: Range<usize>,
+}
+
+/// A loaded system file: the system (phase space, `H`, named functions), its families and
+/// claims, its limits, and the source for error messages.
+#[derive(Debug)]
+pub struct LoadedSystem {
+    /// The file's text and path as given.
+    pub source: Source,
+    /// The system's name (`name`, or the file name).
+    pub name: String,
+    /// Where the system comes from (`source`, a citation), if given.
+    pub citation: Option<String>,
+    /// What the system is (`description`), if given.
+    pub description: Option<String>,
+    /// The phase space, Hamiltonian `H` and named functions.
+    pub system: System,
+    /// The families, in file order.
+    pub families: Vec<Family>,
+    /// The claims, in file order (parsed syntactically; [`LoadedSystem::check_claim`] computes).
+    pub claims: Vec<ClaimSpec>,
+    /// The limits in force.
+    pub limits: Limits,
+    /// Expanded family instances: `(family, m, n)`.
+    cache: Mutex<HashMap<(usize, i64, i64), Expr>>,
+}
+
+impl LoadedSystem {
+    /// Parses an expression given on the command line (named functions, family instances,
+    /// brackets, `conj`/`re`/`im` allowed); errors point into the argument.
+    pub fn parse_argument(&self, src: &str) -> Result<Expr, FileError> {
+        let source = Source::new("<command line>", src);
+        let text = Text::whole(&source);
+        self.scope(self.families.len()).parse(&source, &text)
+    }
+
+    /// The instance `family_{m,n}` of a family, expanded (and cached).
+    pub fn family_instance(&self, family: usize, m: i64, n: i64) -> Result<Expr, FileError> {
+        self.scope(self.families.len())
+            .expand(family, m, n, &self.source, 0..0)
+    }
+
+    /// The index of a family by name.
+    pub fn family(&self, name: &str) -> Option<usize> {
+        self.families.iter().position(|f| f.name == name)
+    }
+
+    /// A parsing scope that sees the first `families` families.
+    fn scope(&self, families: usize) -> scope::Scope<'_> {
+        scope::Scope::new(self, families)
+    }
+}

@@ -1,0 +1,185 @@
+//! Statements in the paper's notation: a parsed expression printed back as written, with
+//! unicode names (`p_θ`, `ω`, `Z̄`, `K_{2,3}`), superscript exponents and implicit products:
+//! `{L, G1} = -G2` reads `{L, G1} = −G2`, `4*G1^2 + omega^2*L^2` reads `4G1² + ω²L²`.
+
+use trigpoly::superscript;
+use trigpoly::syntax::{Expr as Tree, ExprKind};
+
+use super::scope::instance_of;
+use super::LoadedSystem;
+
+/// A printed subexpression: its text, how tightly it binds, and whether its first and last
+/// atoms are names longer than one character (which products separate by a space).
+struct Printed {
+    text: String,
+    prec: u8,
+    first_long: bool,
+    last_long: bool,
+}
+
+const SUM: u8 = 1;
+const PRODUCT: u8 = 2;
+const NEG: u8 = 3;
+const POWER: u8 = 4;
+const ATOM: u8 = 5;
+
+impl Printed {
+    fn atom(text: String) -> Self {
+        let long = text
+            .chars()
+            .filter(|c| !crate::render::tex::is_combining(*c))
+            .count()
+            > 1
+            && !text.chars().all(|c| c.is_ascii_digit());
+        Printed {
+            text,
+            prec: ATOM,
+            first_long: long,
+            last_long: long,
+        }
+    }
+
+    fn wrapped(self, min: u8) -> Self {
+        if self.prec >= min {
+            self
+        } else {
+            Printed {
+                text: format!("({})", self.text),
+                prec: ATOM,
+                first_long: false,
+                last_long: false,
+            }
+        }
+    }
+}
+
+impl LoadedSystem {
+    /// The name of a variable, function or family instance as printed.
+    pub(crate) fn display_name(&self, name: &str) -> String {
+        let vars = self.system.vars();
+        if let Some(v) = vars.lookup(name) {
+            return vars.variable(v).unicode().to_string();
+        }
+        if self.system.get(name).is_ok() {
+            return self.system.display_name(name).to_string();
+        }
+        if let Some((k, m, n)) = instance_of(&self.families, name) {
+            return format!("{}_{{{m},{n}}}", self.families[k].display);
+        }
+        for f in &self.families {
+            let pattern = format!("{}_{}_{}", f.name, f.indices[0], f.indices[1]);
+            if name == pattern {
+                return format!("{}_{{{},{}}}", f.display, f.indices[0], f.indices[1]);
+            }
+        }
+        name.to_string()
+    }
+
+    /// An expression tree in the paper's notation.
+    pub(crate) fn pretty(&self, tree: &Tree) -> String {
+        self.print(tree).text
+    }
+
+    fn print(&self, tree: &Tree) -> Printed {
+        match &tree.kind {
+            ExprKind::Integer(n) => Printed::atom(n.to_string()),
+            ExprKind::Name(n) => Printed::atom(self.display_name(n)),
+            ExprKind::Neg(a) => {
+                let a = self.print(a).wrapped(PRODUCT);
+                Printed {
+                    text: format!("−{}", a.text),
+                    prec: NEG,
+                    first_long: false,
+                    last_long: a.last_long,
+                }
+            }
+            ExprKind::Add(a, b) | ExprKind::Sub(a, b) => {
+                let op = if matches!(tree.kind, ExprKind::Add(..)) {
+                    "+"
+                } else {
+                    "−"
+                };
+                let a = self.print(a);
+                let b = self.print(b).wrapped(PRODUCT);
+                let b = if b.prec == NEG { b.wrapped(ATOM) } else { b };
+                Printed {
+                    text: format!("{} {op} {}", a.text, b.text),
+                    prec: SUM,
+                    first_long: a.first_long,
+                    last_long: b.last_long,
+                }
+            }
+            ExprKind::Mul(a, b) => {
+                let a = self.print(a).wrapped(PRODUCT);
+                let b = self.print(b);
+                let b = if b.prec < PRODUCT || b.prec == NEG {
+                    b.wrapped(ATOM)
+                } else {
+                    b
+                };
+                let number_left = a.text.ends_with(|c: char| c.is_ascii_digit());
+                let digit_right = b.text.starts_with(|c: char| c.is_ascii_digit());
+                let sep = if digit_right {
+                    "·"
+                } else if number_left && !a.text.contains(|c: char| c.is_alphabetic()) {
+                    ""
+                } else if a.last_long || b.first_long {
+                    " "
+                } else {
+                    ""
+                };
+                Printed {
+                    text: format!("{}{sep}{}", a.text, b.text),
+                    prec: PRODUCT,
+                    first_long: a.first_long,
+                    last_long: b.last_long,
+                }
+            }
+            ExprKind::Div(a, b) => {
+                let a = self.print(a).wrapped(PRODUCT);
+                let b = self.print(b).wrapped(POWER);
+                Printed {
+                    text: format!("{}/{}", a.text, b.text),
+                    prec: PRODUCT,
+                    first_long: a.first_long,
+                    last_long: false,
+                }
+            }
+            ExprKind::Pow(a, b) => {
+                let base = self.print(a).wrapped(ATOM);
+                let small = |n: &num_bigint::BigInt| i64::try_from(n.clone()).ok();
+                let exponent = match &b.kind {
+                    ExprKind::Integer(n) => small(n).map(superscript),
+                    ExprKind::Neg(inner) => match &inner.kind {
+                        ExprKind::Integer(n) => small(n).map(|k| superscript(-k)),
+                        _ => None,
+                    },
+                    _ => None,
+                };
+                let text = match exponent {
+                    Some(e) => format!("{}{e}", base.text),
+                    None => format!("{}^{}", base.text, self.print(b).wrapped(ATOM).text),
+                };
+                Printed {
+                    text,
+                    prec: POWER,
+                    first_long: base.first_long,
+                    last_long: base.last_long,
+                }
+            }
+            ExprKind::Call(f, _, args) => {
+                let args: Vec<String> = args.iter().map(|a| self.pretty(a)).collect();
+                let mut p = Printed::atom(format!("{f}({})", args.join(", ")));
+                p.first_long = true;
+                p.last_long = true;
+                p
+            }
+            ExprKind::Bracket(a, b) => {
+                let mut p = Printed::atom(format!("{{{}, {}}}", self.pretty(a), self.pretty(b)));
+                p.first_long = true;
+                p.last_long = true;
+                p
+            }
+        }
+    }
+}

@@ -1,0 +1,269 @@
+//! Reports of system files, rendered by [`crate::render`] like the default job: every claim
+//! of some files checked ([`check_report`]), one bracket ([`bracket_report`]), a bracket table
+//! ([`table_report`]) and a certified rank ([`rank_report`]).
+
+use std::time::Instant;
+
+use brackets::{BracketTable, System};
+use trigpoly::Expr;
+
+use super::claims::{engine_error, parse_condition, CheckedClaim};
+use super::error::{ErrorKind, FileError};
+use super::scope::instance_of;
+use super::text::{split_top_level, Source, Text};
+use super::LoadedSystem;
+use crate::report::{
+    Entry, Equation, Equations, Expect, Report, Section, SummaryKind, TableResult,
+};
+
+/// Where command-line expressions come from in messages.
+const COMMAND_LINE: &str = "<command line>";
+
+impl LoadedSystem {
+    /// An expression given on the command line: as printed, and its value.
+    fn argument(&self, src: &str) -> Result<(String, Expr), FileError> {
+        let source = Source::new(COMMAND_LINE, src);
+        let text = Text::whole(&source);
+        let scope = self.scope(self.families.len());
+        let tree = scope.tree(&source, &text)?;
+        let value = scope.lower(&source, &text, &tree)?;
+        Ok((self.pretty(&tree), value))
+    }
+
+    /// A section heading the file's entries: its citation and Hamiltonian.
+    fn preamble(&self) -> Vec<Entry> {
+        let mut entries = Vec::new();
+        if let Some(d) = &self.description {
+            entries.push(Entry::Text(d.clone()));
+        }
+        if let Some(c) = &self.citation {
+            entries.push(Entry::Text(format!("Source: {c}")));
+        }
+        entries.push(Entry::Equations(Equations {
+            caption: String::new(),
+            lines: vec![Equation::new("H", self.system.hamiltonian().clone())],
+        }));
+        entries
+    }
+
+    fn section_title(&self) -> String {
+        format!("{} ({})", self.name, self.source.origin)
+    }
+}
+
+/// An error of the engine on a command-line computation (no place in a file).
+fn command_error(e: &brackets::EngineError) -> FileError {
+    let source = Source::new(COMMAND_LINE, "");
+    let mut err = engine_error(&source, 0..0, e);
+    err.location = None;
+    err
+}
+
+/// Checks every claim of every file: one section per file (its source, its Hamiltonian, its
+/// claims proved or refuted, ranks with their certificates).
+pub fn check_report(files: &[LoadedSystem]) -> Result<Report, FileError> {
+    let start = Instant::now();
+    let mut sections = Vec::new();
+    for (k, file) in files.iter().enumerate() {
+        let mut entries = file.preamble();
+        for claim in &file.claims {
+            entries.push(match file.check_claim(claim)? {
+                CheckedClaim::Identity(c) => Entry::Claim(*c),
+                CheckedClaim::Rank(r) => Entry::Rank(*r),
+            });
+        }
+        sections.push(Section {
+            number: k as u32 + 1,
+            title: file.section_title(),
+            entries,
+        });
+    }
+    let title = match files {
+        [one] => format!("The claims of the {}, checked exactly", one.name),
+        _ => format!(
+            "The claims of {} system files, checked exactly",
+            files.len()
+        ),
+    };
+    Ok(Report {
+        title,
+        subtitle: String::new(),
+        sections,
+        summary: SummaryKind::Check { files: files.len() },
+        seconds: start.elapsed().as_secs_f64(),
+    })
+}
+
+/// `{F, G}` in normal form, for expressions `f` and `g` of the file's system, optionally
+/// under a condition such as `p_theta = 2*I*omega/3`.
+pub fn bracket_report(
+    file: &LoadedSystem,
+    f: &str,
+    g: &str,
+    when: Option<&str>,
+) -> Result<Report, FileError> {
+    let start = Instant::now();
+    let (fname, fe) = file.argument(f)?;
+    let (gname, ge) = file.argument(g)?;
+    let mut value = file
+        .system
+        .bracket(&fe, &ge)
+        .map_err(|e| command_error(&e))?;
+    let mut caption = String::new();
+    if let Some(w) = when {
+        let source = Source::new(COMMAND_LINE, w);
+        let whole = Text::whole(&source);
+        let pieces: Vec<Text> = split_top_level(w, ',')
+            .into_iter()
+            .map(|r| whole.slice(r))
+            .collect();
+        let condition = parse_condition(file, &source, &pieces)?;
+        value = condition.apply(&value).map_err(|e| command_error(&e))?;
+        caption = format!("at {}", condition.text);
+    }
+    let lhs = format!("{{{fname}, {gname}}}");
+    Ok(Report {
+        title: format!("{lhs} for the {}", file.name),
+        subtitle: String::new(),
+        sections: vec![Section {
+            number: 1,
+            title: file.section_title(),
+            entries: vec![Entry::Equations(Equations {
+                caption,
+                lines: vec![Equation::new(&lhs, value)],
+            })],
+        }],
+        summary: SummaryKind::Computed,
+        seconds: start.elapsed().as_secs_f64(),
+    })
+}
+
+/// The bracket table of named functions (or family instances such as `K_1_1`) of the file;
+/// all its functions but `H` when `names` is empty.
+pub fn table_report(file: &LoadedSystem, names: &[String]) -> Result<Report, FileError> {
+    let start = Instant::now();
+    let defined: Vec<String> = file
+        .system
+        .functions()
+        .iter()
+        .skip(1)
+        .map(|f| f.name.clone())
+        .collect();
+    let names: Vec<String> = if names.is_empty() {
+        defined.clone()
+    } else {
+        names.to_vec()
+    };
+    if names.is_empty() {
+        return Err(FileError::new(
+            ErrorKind::Claim,
+            &file.source.origin,
+            "the file defines no [[function]] to tabulate; name some on the command line, \
+             such as: superint table FILE H L",
+        ));
+    }
+    let mut system: System = file.system.clone();
+    for name in &names {
+        if system.get(name).is_ok() {
+            continue;
+        }
+        match instance_of(&file.families, name) {
+            Some((k, m, n)) => {
+                let value = file.family_instance(k, m, n)?;
+                let display = format!("{}_{{{m},{n}}}", file.families[k].display);
+                system.define(name, &display, value);
+            }
+            None => {
+                let mut known = vec!["H".to_string()];
+                known.extend(defined.iter().cloned());
+                known.extend(
+                    file.families
+                        .iter()
+                        .map(|f| format!("{}_{}_{}", f.name, f.indices[0], f.indices[1])),
+                );
+                return Err(FileError::new(
+                    ErrorKind::Expression,
+                    COMMAND_LINE,
+                    format!(
+                        "'{name}' is not a function of {} (known: {})",
+                        file.source.origin,
+                        known.join(", ")
+                    ),
+                ));
+            }
+        }
+    }
+    let refs: Vec<&str> = names.iter().map(String::as_str).collect();
+    let table = BracketTable::compute(&system, &refs).map_err(|e| command_error(&e))?;
+    Ok(Report {
+        title: format!("Bracket table of the {}", file.name),
+        subtitle: String::new(),
+        sections: vec![Section {
+            number: 1,
+            title: file.section_title(),
+            entries: vec![Entry::Table(TableResult {
+                caption: format!("`{{A, B}}` for the {} (row `A`, column `B`)", file.name),
+                table,
+            })],
+        }],
+        summary: SummaryKind::Computed,
+        seconds: start.elapsed().as_secs_f64(),
+    })
+}
+
+/// The certified rank of the Jacobian of expressions of the file by its phase-space
+/// coordinates; with `expected`, a claim that the rank is that.
+pub fn rank_report(
+    file: &LoadedSystem,
+    functions: &[String],
+    expected: Option<usize>,
+) -> Result<Report, FileError> {
+    let start = Instant::now();
+    let mut names = Vec::new();
+    let mut exprs = Vec::new();
+    for f in functions {
+        let (name, value) = file.argument(f)?;
+        names.push(name);
+        exprs.push(value);
+    }
+    let source = Source::new(COMMAND_LINE, &functions.join(" "));
+    let mut rank = file.rank_result(
+        &source,
+        "rank",
+        names.clone(),
+        &exprs,
+        expected.unwrap_or(0),
+        Expect::Proved,
+        0..0,
+        start,
+    )?;
+    if expected.is_none() {
+        // No claim: the rank is what was found.
+        rank.expected = rank.certificate.rank;
+        rank.claim.proved = true;
+        rank.claim.note = None;
+    }
+    let vars = file.system.vars();
+    let coordinates: Vec<&str> = rank
+        .coordinates
+        .iter()
+        .map(|&v| vars.variable(v).unicode())
+        .collect();
+    rank.claim.statement = format!(
+        "rank ∂({})/∂({}) = {}",
+        names.join(", "),
+        coordinates.join(", "),
+        rank.expected
+    );
+    Ok(Report {
+        title: format!("Functional independence in the {}", file.name),
+        subtitle: String::new(),
+        sections: vec![Section {
+            number: 1,
+            title: file.section_title(),
+            entries: vec![Entry::Rank(rank)],
+        }],
+        summary: SummaryKind::Check { files: 1 },
+        seconds: start.elapsed().as_secs_f64(),
+    })
+}

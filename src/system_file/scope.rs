@@ -1,0 +1,467 @@
+//! Parsing expressions of a system file: a [`trigpoly::Context`] over the system that knows the
+//! named functions, the family instances (`K_2_3`, expanded on first use and cached), and
+//! `conj`, `re`, `im`; with every error mapped back to its place in the file.
+//!
+//! The parser and the lowering belong to `trigpoly`; this module only prepares the tree: it
+//! expands family instances (so that an expansion's error has a place), evaluates `conj(…)`,
+//! `re(…)`, `im(…)` into names of its own, and rejects a bracket with a bare parameter.
+
+use std::cell::RefCell;
+use std::collections::HashMap;
+
+use num_bigint::BigInt;
+use trigpoly::syntax::{parse_expr, Expr as Tree, ExprKind, ParseError};
+use trigpoly::{Context, Expr, GaussianRational, Span, VarKind};
+
+use super::error::{ErrorKind, FileError};
+use super::text::{Source, Text};
+use super::LoadedSystem;
+
+/// What a scope sees: the system's functions, the first `families` families, and names it
+/// made for `conj(…)`, `re(…)`, `im(…)` and family instances while preparing a tree.
+pub(crate) struct Scope<'a> {
+    file: &'a LoadedSystem,
+    families: usize,
+    made: RefCell<HashMap<String, Expr>>,
+}
+
+/// `K_2_3` → (family `K`, 2, 3) among `families`.
+pub(crate) fn instance_of(families: &[super::Family], name: &str) -> Option<(usize, i64, i64)> {
+    let mut parts = name.rsplitn(3, '_');
+    let n = parts.next()?;
+    let m = parts.next()?;
+    let head = parts.next()?;
+    let index = |s: &str| {
+        (!s.is_empty() && s.len() <= 9 && s.bytes().all(|b| b.is_ascii_digit()))
+            .then(|| s.parse::<i64>().ok())
+            .flatten()
+    };
+    let k = families.iter().position(|f| f.name == head)?;
+    Some((k, index(m)?, index(n)?))
+}
+
+/// Rewrites `K_{2,3}` into `K_2_3` padded with spaces to the same length, for the family
+/// names given, so that every other span stays where it was.
+pub(crate) fn rewrite_braces(s: &str, families: &[super::Family]) -> String {
+    let mut out = s.to_string();
+    let mut search = 0;
+    while let Some(k) = out[search..].find("_{").map(|k| k + search) {
+        search = k + 2;
+        let head_start = out[..k]
+            .char_indices()
+            .rev()
+            .take_while(|&(_, c)| c.is_alphanumeric() || c == '_')
+            .last()
+            .map_or(k, |(i, _)| i);
+        let head = &out[head_start..k];
+        if !families.iter().any(|f| f.name == head) {
+            continue;
+        }
+        let Some(close) = out[k..].find('}').map(|c| c + k) else {
+            continue;
+        };
+        let inner: Vec<&str> = out[k + 2..close].split(',').map(str::trim).collect();
+        let digits = |s: &str| !s.is_empty() && s.bytes().all(|b| b.is_ascii_digit());
+        if inner.len() != 2 || !inner.iter().all(|s| digits(s)) {
+            continue;
+        }
+        let replacement = format!("{head}_{}_{}", inner[0], inner[1]);
+        let width = close + 1 - head_start;
+        let padded = format!("{replacement:width$}");
+        out.replace_range(head_start..=close, &padded);
+    }
+    out
+}
+
+/// Replaces the index names by their values in a family's tree: `m` → `2`, and inside names
+/// of family instances, `K_m_n` → `K_2_3`.
+pub(crate) fn substitute(
+    tree: &Tree,
+    indices: &[String; 2],
+    values: [i64; 2],
+    families: &[super::Family],
+) -> Tree {
+    let sub = |t: &Tree| Box::new(substitute(t, indices, values, families));
+    let kind = match &tree.kind {
+        ExprKind::Name(s) => {
+            if let Some(k) = indices.iter().position(|i| i == s) {
+                ExprKind::Integer(BigInt::from(values[k]))
+            } else {
+                let parts: Vec<String> = s
+                    .split('_')
+                    .map(|p| match indices.iter().position(|i| i == p) {
+                        Some(k) => values[k].to_string(),
+                        None => p.to_string(),
+                    })
+                    .collect();
+                let renamed = parts.join("_");
+                if renamed != *s && instance_of(families, &renamed).is_some() {
+                    ExprKind::Name(renamed)
+                } else {
+                    ExprKind::Name(s.clone())
+                }
+            }
+        }
+        ExprKind::Integer(n) => ExprKind::Integer(n.clone()),
+        ExprKind::Neg(a) => ExprKind::Neg(sub(a)),
+        ExprKind::Add(a, b) => ExprKind::Add(sub(a), sub(b)),
+        ExprKind::Sub(a, b) => ExprKind::Sub(sub(a), sub(b)),
+        ExprKind::Mul(a, b) => ExprKind::Mul(sub(a), sub(b)),
+        ExprKind::Div(a, b) => ExprKind::Div(sub(a), sub(b)),
+        ExprKind::Pow(a, b) => ExprKind::Pow(sub(a), sub(b)),
+        ExprKind::Bracket(a, b) => ExprKind::Bracket(sub(a), sub(b)),
+        ExprKind::Call(f, span, args) => ExprKind::Call(
+            f.clone(),
+            *span,
+            args.iter()
+                .map(|a| substitute(a, indices, values, families))
+                .collect(),
+        ),
+    };
+    Tree {
+        kind,
+        span: tree.span,
+    }
+}
+
+/// Whether a message is one of the limit errors of the algebra.
+fn is_limit_message(message: &str) -> bool {
+    message.contains("(the term limit)") || message.contains("past the limit of")
+}
+
+/// The hint that goes with a limit error.
+pub(crate) const LIMIT_HINT: &str = "raise the limit with --max-terms N or --max-degree D, or \
+    with max_terms or max_degree under [limits] in the file, if the machine has the memory";
+
+/// An expression error at a span of a text, classified as a limit error when it is one.
+pub(crate) fn expression_error(source: &Source, text: &Text, e: &ParseError) -> FileError {
+    let message = relocate_opener(source, text, e);
+    if is_limit_message(&message) {
+        text.error(source, ErrorKind::Limit, e.span, message)
+            .with_hint(LIMIT_HINT)
+    } else {
+        text.error(source, ErrorKind::Expression, e.span, message)
+    }
+}
+
+/// The parser says where an unclosed bracket was opened in the expression's own lines and
+/// columns (`opened at column 7`); this says it in the file's.
+fn relocate_opener(source: &Source, text: &Text, e: &ParseError) -> String {
+    const MARK: &str = " opened at ";
+    let Some(k) = e.message.find(MARK) else {
+        return e.message.clone();
+    };
+    let rest = &e.message[k + MARK.len()..];
+    let Some(comma) = rest.find(", found") else {
+        return e.message.clone();
+    };
+    let place = &rest[..comma];
+    let number = |s: &str| s.trim().parse::<usize>().ok();
+    let (line, col) = match place.strip_prefix("line ") {
+        Some(lc) => match lc.split_once(", column ") {
+            Some((l, c)) => (number(l), number(c)),
+            None => (None, None),
+        },
+        None => {
+            let here = text.value[..e.span.start.min(text.value.len())]
+                .matches('\n')
+                .count();
+            (
+                Some(here + 1),
+                place.strip_prefix("column ").and_then(number),
+            )
+        }
+    };
+    let (Some(line), Some(col)) = (line.filter(|&l| l >= 1), col.filter(|&c| c >= 1)) else {
+        return e.message.clone();
+    };
+    let line_start: usize = text
+        .value
+        .split_inclusive('\n')
+        .take(line - 1)
+        .map(str::len)
+        .sum();
+    let Some((offset, _)) = text.value[line_start..].char_indices().nth(col - 1) else {
+        return e.message.clone();
+    };
+    let at = text.source_span(Span::new(line_start + offset, line_start + offset + 1));
+    let loc = super::error::locate(&source.text, at);
+    format!(
+        "{}{MARK}line {}, column {}{}",
+        &e.message[..k],
+        loc.line,
+        loc.column,
+        &rest[comma..]
+    )
+}
+
+impl<'a> Scope<'a> {
+    pub(crate) fn new(file: &'a LoadedSystem, families: usize) -> Self {
+        Scope {
+            file,
+            families,
+            made: RefCell::new(HashMap::new()),
+        }
+    }
+
+    /// Parses a text of `source` into a polynomial.
+    pub(crate) fn parse(&self, source: &Source, text: &Text) -> Result<Expr, FileError> {
+        let tree = self.tree(source, text)?;
+        self.lower(source, text, &tree)
+    }
+
+    /// Parses a text into a tree (family instances written `K_{2,3}` are accepted).
+    pub(crate) fn tree(&self, source: &Source, text: &Text) -> Result<Tree, FileError> {
+        let rewritten = rewrite_braces(&text.value, &self.file.families[..self.families]);
+        parse_expr(&rewritten).map_err(|e| expression_error(source, text, &e))
+    }
+
+    /// Lowers a tree whose spans are in `text`.
+    pub(crate) fn lower(
+        &self,
+        source: &Source,
+        text: &Text,
+        tree: &Tree,
+    ) -> Result<Expr, FileError> {
+        let prepared = self.prepare(source, text, tree)?;
+        Expr::from_expr(self.file.system.vars(), &prepared, self)
+            .map_err(|e| expression_error(source, text, &e))
+    }
+
+    /// Expands family instances, evaluates `conj`, `re`, `im`, checks brackets.
+    fn prepare(&self, source: &Source, text: &Text, tree: &Tree) -> Result<Tree, FileError> {
+        let span = tree.span;
+        let vars = self.file.system.vars();
+        let rec = |t: &Tree| self.prepare(source, text, t).map(Box::new);
+        let kind = match &tree.kind {
+            ExprKind::Name(name) => {
+                let known = name == "i"
+                    || vars.lookup(name).is_some()
+                    || self.file.system.get(name).is_ok();
+                if !known {
+                    if let Some((k, m, n)) = instance_of(&self.file.families, name) {
+                        if k >= self.families {
+                            let f = &self.file.families[k];
+                            return Err(text.error(
+                                source,
+                                ErrorKind::Family,
+                                span,
+                                format!(
+                                    "the family '{}' cannot be used here: a family may only use \
+                                     families declared before it, and a function none",
+                                    f.name
+                                ),
+                            ));
+                        }
+                        let e = self.expand(k, m, n, source, text.source_span(span))?;
+                        self.made.borrow_mut().insert(name.clone(), e);
+                    }
+                }
+                ExprKind::Name(name.clone())
+            }
+            ExprKind::Call(f, name_span, args) if matches!(f.as_str(), "conj" | "re" | "im") => {
+                if args.len() != 1 {
+                    return Err(text.error(
+                        source,
+                        ErrorKind::Expression,
+                        span,
+                        format!("{f} takes one argument, found {}", args.len()),
+                    ));
+                }
+                let arg = self.prepare(source, text, &args[0])?;
+                let value = Expr::from_expr(vars, &arg, self)
+                    .map_err(|e| expression_error(source, text, &e))?;
+                let result = match f.as_str() {
+                    "conj" => Ok(value.conj()),
+                    "re" => Ok(value.re()),
+                    _ => value.im(),
+                }
+                .map_err(|e| {
+                    text.error(source, ErrorKind::Expression, *name_span, e.to_string())
+                })?;
+                let made = format!("#{}", self.made.borrow().len());
+                self.made.borrow_mut().insert(made.clone(), result);
+                ExprKind::Name(made)
+            }
+            ExprKind::Call(f, name_span, args) => ExprKind::Call(
+                f.clone(),
+                *name_span,
+                args.iter()
+                    .map(|a| self.prepare(source, text, a))
+                    .collect::<Result<_, _>>()?,
+            ),
+            ExprKind::Bracket(a, b) => {
+                for side in [a, b] {
+                    if let ExprKind::Name(n) = &side.kind {
+                        let parameter = vars
+                            .lookup(n)
+                            .is_some_and(|v| vars.variable(v).kind() == VarKind::Parameter);
+                        if parameter {
+                            return Err(text.error(
+                                source,
+                                ErrorKind::Expression,
+                                side.span,
+                                format!(
+                                    "'{n}' is a parameter, not a variable of the phase space, so \
+                                     every bracket with it is 0; declare it under coordinates or \
+                                     angles if it is meant to be canonical"
+                                ),
+                            ));
+                        }
+                    }
+                }
+                ExprKind::Bracket(rec(a)?, rec(b)?)
+            }
+            ExprKind::Integer(n) => ExprKind::Integer(n.clone()),
+            ExprKind::Neg(a) => ExprKind::Neg(rec(a)?),
+            ExprKind::Add(a, b) => ExprKind::Add(rec(a)?, rec(b)?),
+            ExprKind::Sub(a, b) => ExprKind::Sub(rec(a)?, rec(b)?),
+            ExprKind::Mul(a, b) => ExprKind::Mul(rec(a)?, rec(b)?),
+            ExprKind::Div(a, b) => ExprKind::Div(rec(a)?, rec(b)?),
+            ExprKind::Pow(a, b) => ExprKind::Pow(rec(a)?, rec(b)?),
+        };
+        Ok(Tree { kind, span })
+    }
+
+    /// The instance `(m, n)` of family `k`, expanded in a scope that sees the families before
+    /// it; an error is reported at `used_at` in `source` (where the instance is used), with
+    /// the place of the family in the hint.
+    pub(crate) fn expand(
+        &self,
+        k: usize,
+        m: i64,
+        n: i64,
+        source: &Source,
+        used_at: std::ops::Range<usize>,
+    ) -> Result<Expr, FileError> {
+        if let Some(e) = self.cache().get(&(k, m, n)) {
+            return Ok(e.clone());
+        }
+        let family = &self.file.families[k];
+        match self.file.compute_instance(k, m, n) {
+            Ok(e) => {
+                self.cache().insert((k, m, n), e.clone());
+                Ok(e)
+            }
+            Err(inner) if used_at.is_empty() => Err(inner),
+            Err(inner) => {
+                let at = inner
+                    .location
+                    .as_ref()
+                    .map(|l| format!("{}:{}:{}", inner.origin, l.line, l.column))
+                    .unwrap_or_else(|| inner.origin.clone());
+                let hint = match &inner.hint {
+                    Some(h) => format!("the family's value is at {at}; {h}"),
+                    None => format!("the family's value is at {at}"),
+                };
+                Err(source
+                    .error(
+                        inner.kind,
+                        used_at,
+                        format!(
+                            "cannot expand {}_{{{m},{n}}}: {}",
+                            family.name, inner.message
+                        ),
+                    )
+                    .with_hint(hint))
+            }
+        }
+    }
+
+    fn cache(&self) -> std::sync::MutexGuard<'_, HashMap<(usize, i64, i64), Expr>> {
+        self.file
+            .cache
+            .lock()
+            .unwrap_or_else(std::sync::PoisonError::into_inner)
+    }
+}
+
+impl LoadedSystem {
+    /// The instance `(m, n)` of family `k`, computed (not cached), in a scope that sees the
+    /// families before it.
+    pub(crate) fn compute_instance(&self, k: usize, m: i64, n: i64) -> Result<Expr, FileError> {
+        self.family_text_at(k, &self.families[k].value, m, n)
+    }
+
+    /// A text of family `k` (its value or its eigenvalue) at `(m, n)`.
+    pub(crate) fn family_text_at(
+        &self,
+        k: usize,
+        text: &Text,
+        m: i64,
+        n: i64,
+    ) -> Result<Expr, FileError> {
+        let family = &self.families[k];
+        let scope = Scope::new(self, k);
+        let tree = scope.tree(&self.source, text)?;
+        let tree = substitute(&tree, &family.indices, [m, n], &self.families[..k]);
+        scope.lower(&self.source, text, &tree)
+    }
+}
+
+impl Context<GaussianRational> for Scope<'_> {
+    fn lookup(&self, name: &str) -> Option<Expr> {
+        match self.file.system.get(name) {
+            Ok(e) => Some(e.clone()),
+            Err(_) => self.made.borrow().get(name).cloned(),
+        }
+    }
+
+    fn bracket(&self, f: &Expr, g: &Expr) -> Result<Expr, String> {
+        self.file.system.bracket(f, g).map_err(|e| e.to_string())
+    }
+
+    fn names(&self) -> Vec<String> {
+        let mut names: Vec<String> = self
+            .file
+            .system
+            .functions()
+            .iter()
+            .map(|f| f.name.clone())
+            .collect();
+        names.extend(
+            self.file.families[..self.families]
+                .iter()
+                .map(|f| format!("{}_{}_{}", f.name, f.indices[0], f.indices[1])),
+        );
+        names
+    }
+}
+
+/// The span of the first use of `name` in a tree, if any.
+pub(crate) fn mention(tree: &Tree, name: &str) -> Option<Span> {
+    match &tree.kind {
+        ExprKind::Name(n) if n == name => Some(tree.span),
+        ExprKind::Name(_) | ExprKind::Integer(_) => None,
+        ExprKind::Neg(a) => mention(a, name),
+        ExprKind::Add(a, b)
+        | ExprKind::Sub(a, b)
+        | ExprKind::Mul(a, b)
+        | ExprKind::Div(a, b)
+        | ExprKind::Pow(a, b)
+        | ExprKind::Bracket(a, b) => mention(a, name).or_else(|| mention(b, name)),
+        ExprKind::Call(_, _, args) => args.iter().find_map(|a| mention(a, name)),
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn braces_of_family_instances_are_rewritten_in_place() {
+        let fam = super::super::Family {
+            name: "K".into(),
+            display: "K".into(),
+            indices: ["m".into(), "n".into()],
+            value: Text::whole(&Source::new("t", "Z")),
+            eigenvalue: None,
+            span: 0..0,
+        };
+        let s = "{K_{2, 3}, H} + L_{1,1}";
+        let r = rewrite_braces(s, std::slice::from_ref(&fam));
+        assert_eq!(r, "{K_2_3   , H} + L_{1,1}");
+        assert_eq!(r.len(), s.len());
+        assert_eq!(instance_of(&[fam], "K_2_3"), Some((0, 2, 3)));
+    }
+}

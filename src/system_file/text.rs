@@ -1,0 +1,237 @@
+//! [`Text`]: an expression string together with where it sits in its source, so that a byte
+//! span inside the string maps to a byte span of the file.
+//!
+//! A TOML string's value starts after its opening quote (three quotes, and a newline right
+//! after them, for a multi-line string). When the raw text between the quotes is the decoded
+//! value itself (no escapes), spans map one to one; otherwise every span maps to the value's
+//! first character.
+
+use std::ops::Range;
+use std::sync::Arc;
+
+use trigpoly::Span;
+
+use super::error::{ErrorKind, FileError};
+
+/// The source an expression comes from: a file's text or the command line.
+#[derive(Clone, Debug)]
+pub struct Source {
+    /// The file's path as given, or `<command line>`.
+    pub origin: String,
+    /// The whole text.
+    pub text: Arc<str>,
+}
+
+impl Source {
+    /// A source with its origin.
+    pub fn new(origin: &str, text: &str) -> Self {
+        Source {
+            origin: origin.to_string(),
+            text: Arc::from(text),
+        }
+    }
+
+    /// An error at a byte range of this source.
+    pub fn error(
+        &self,
+        kind: ErrorKind,
+        span: Range<usize>,
+        message: impl Into<String>,
+    ) -> FileError {
+        FileError::at(kind, &self.origin, &self.text, span, message)
+    }
+}
+
+/// An expression (or claim, or condition) string and where it is.
+#[derive(Clone, Debug)]
+pub struct Text {
+    /// The decoded string.
+    pub value: String,
+    /// The byte offset in the source of `value[0]`, when the raw text is the value itself.
+    offset: Option<usize>,
+    /// Where errors point when the raw text differs from the value (escapes): the value's
+    /// first byte.
+    anchor: usize,
+}
+
+impl Text {
+    /// The whole of a source (a command-line argument).
+    pub fn whole(source: &Source) -> Self {
+        Text {
+            value: source.text.to_string(),
+            offset: Some(0),
+            anchor: 0,
+        }
+    }
+
+    /// A TOML string whose token (quotes included) is `span` in `file`, decoded as `value`.
+    pub fn in_toml(file: &str, span: Range<usize>, value: &str) -> Self {
+        let raw = file.get(span.clone()).unwrap_or("");
+        let delim = ["\"\"\"", "'''", "\"", "'"]
+            .into_iter()
+            .find(|d| raw.starts_with(d) && raw.len() >= 2 * d.len() && raw.ends_with(d));
+        let Some(d) = delim else {
+            return Text {
+                value: value.to_string(),
+                offset: None,
+                anchor: span.start,
+            };
+        };
+        let mut start = span.start + d.len();
+        let mut inner = &raw[d.len()..raw.len() - d.len()];
+        if d.len() == 3 {
+            for newline in ["\r\n", "\n"] {
+                if let Some(rest) = inner.strip_prefix(newline) {
+                    inner = rest;
+                    start += newline.len();
+                    break;
+                }
+            }
+        }
+        Text {
+            value: value.to_string(),
+            offset: (inner == value).then_some(start),
+            anchor: start,
+        }
+    }
+
+    /// The part `range` of this text (byte offsets into `value`), keeping the mapping.
+    pub fn slice(&self, range: Range<usize>) -> Text {
+        Text {
+            value: self.value[range.clone()].to_string(),
+            offset: self.offset.map(|o| o + range.start),
+            anchor: self.anchor,
+        }
+    }
+
+    /// The same place with a value of the same length (a rewritten form of the value).
+    pub(crate) fn rewritten(&self, value: String) -> Text {
+        debug_assert_eq!(value.len(), self.value.len());
+        Text {
+            value,
+            offset: self.offset,
+            anchor: self.anchor,
+        }
+    }
+
+    /// The span in the source of a span inside the value.
+    pub fn source_span(&self, span: Span) -> Range<usize> {
+        match self.offset {
+            Some(o) => o + span.start..o + span.end,
+            None => self.anchor..self.anchor + 1,
+        }
+    }
+
+    /// The span in the source of the whole value.
+    pub fn whole_span(&self) -> Range<usize> {
+        self.source_span(Span::new(0, self.value.len()))
+    }
+
+    /// An error at a span inside the value.
+    pub fn error(
+        &self,
+        source: &Source,
+        kind: ErrorKind,
+        span: Span,
+        message: impl Into<String>,
+    ) -> FileError {
+        source.error(kind, self.source_span(span), message)
+    }
+}
+
+/// Splits `s` at the top-level (outside parentheses and braces) occurrences of `sep`: the
+/// byte ranges of the pieces.
+pub(crate) fn split_top_level(s: &str, sep: char) -> Vec<Range<usize>> {
+    let mut depth = 0i32;
+    let mut pieces = Vec::new();
+    let mut start = 0;
+    for (k, c) in s.char_indices() {
+        match c {
+            '(' | '{' => depth += 1,
+            ')' | '}' => depth -= 1,
+            c if c == sep && depth == 0 => {
+                pieces.push(start..k);
+                start = k + c.len_utf8();
+            }
+            _ => {}
+        }
+    }
+    pieces.push(start..s.len());
+    pieces
+}
+
+/// The spans of the string literals of a TOML array whose token is `span` in `file`, in
+/// order (skipping comments); `None` if the array holds something else.
+pub(crate) fn array_strings(file: &str, span: Range<usize>) -> Option<Vec<Range<usize>>> {
+    let raw = file.get(span.clone())?;
+    let bytes = raw.as_bytes();
+    let mut out = Vec::new();
+    let mut k = 0;
+    while k < bytes.len() {
+        match bytes[k] {
+            b'#' => {
+                while k < bytes.len() && bytes[k] != b'\n' {
+                    k += 1;
+                }
+            }
+            q @ (b'"' | b'\'') => {
+                let triple = raw[k..].starts_with(if q == b'"' { "\"\"\"" } else { "'''" });
+                let d = if triple { 3 } else { 1 };
+                let start = k;
+                k += d;
+                loop {
+                    if k >= bytes.len() {
+                        return None;
+                    }
+                    if q == b'"' && bytes[k] == b'\\' {
+                        k += 2;
+                        continue;
+                    }
+                    if bytes[k] == q && (!triple || raw[k..].starts_with(&raw[start..start + 3])) {
+                        k += d;
+                        break;
+                    }
+                    k += 1;
+                }
+                out.push(span.start + start..span.start + k);
+                continue;
+            }
+            b'[' | b']' | b',' | b' ' | b'\t' | b'\n' | b'\r' => {}
+            _ => return None,
+        }
+        k += 1;
+    }
+    Some(out)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn text_maps_spans_into_the_file() {
+        let file = "value = \"x + y\"\n";
+        let t = Text::in_toml(file, 8..15, "x + y");
+        assert_eq!(t.source_span(Span::new(4, 5)), 13..14);
+        let escaped = "value = \"x + \\u0079\"\n";
+        let t = Text::in_toml(escaped, 8..20, "x + y");
+        assert_eq!(t.source_span(Span::new(4, 5)), 9..10);
+        let multi = "value = \"\"\"\nx + y\"\"\"\n";
+        let t = Text::in_toml(multi, 8..multi.len() - 1, "x + y");
+        assert_eq!(t.source_span(Span::new(0, 1)), 12..13);
+    }
+
+    #[test]
+    fn arrays_of_strings_are_found() {
+        let file = "when = [\"a = 1\", 'b = 2'] # c";
+        let spans = array_strings(file, 7..25).unwrap();
+        assert_eq!(spans, vec![8..15, 17..24]);
+    }
+
+    #[test]
+    fn top_level_split_skips_brackets() {
+        let s = "{f, g} = 0, x = 1";
+        let parts: Vec<&str> = split_top_level(s, ',').into_iter().map(|r| &s[r]).collect();
+        assert_eq!(parts, ["{f, g} = 0", " x = 1"]);
+    }
+}

@@ -1,0 +1,212 @@
+//! The performance workloads W1–W4, defined once: the `bench` subcommand, the Rust benchmarks
+//! (`benches/workloads.rs`) and the peer scripts (`benches/peers/`) all run exactly these.
+//!
+//! - **W1 tower(N)**: for all `1 ≤ m, n ≤ N`, expand `P_{m,n}` and `Q_{m,n}` with symbolic
+//!   `M, ω`, form their bracket with `H`, restrict to `p_θ = mIω/n`, test for zero. Every bracket
+//!   is expanded in full; no use of the eigenfunction lemma.
+//! - **W2 single(m)**: the same for the one pair `m = n`.
+//! - **W3 products**: Fateman `f·(f + 1)` with `f = (1 + x + y + z + t)^N`, and Pearce
+//!   `(1 + x + y + 2z² + 3t³ + 5u⁵)^N · (1 + u + t + 2z² + 3y³ + 5x⁵)^N`.
+//! - **W4 algebra**: the su(2) brackets `{L, G1} = −G2`, `{L, G2} = 4G1`, `{G1, G2} = −ω²L` and
+//!   the Casimir (C09, C10), each formed from its text and checked, `N` times.
+
+use std::fmt;
+use std::str::FromStr;
+
+use brackets::{systems, Claim, EngineError, System};
+use trigpoly::{Expr, Poly, Rational, VarSet};
+
+/// One workload with its size.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Workload {
+    /// W1: every `1 ≤ m, n ≤ N`.
+    Tower(i64),
+    /// W2: `m = n = N`.
+    Single(i64),
+    /// W3a: the Fateman product with `f = (1 + x + y + z + t)^N`.
+    Fateman(i64),
+    /// W3b: the sparse Pearce product with exponent `N`.
+    Pearce(i64),
+    /// W4: the su(2) table and Casimir, `N` times.
+    Algebra(i64),
+}
+
+/// What a workload computed: the number of terms it produced and the identities it checked.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Outcome {
+    /// Terms of the expanded inputs (W1, W2: `P` and `Q`), or of the product (W3), or of the
+    /// brackets (W4).
+    pub terms: usize,
+    /// Identities found exactly zero (W3: 0, it only multiplies).
+    pub zeros: usize,
+}
+
+/// Why a workload failed: the engine refused, or an identity was not zero.
+#[derive(Debug, thiserror::Error)]
+pub enum WorkloadError {
+    /// The engine refused (a limit, say).
+    #[error(transparent)]
+    Engine(#[from] EngineError),
+    /// An identity that must hold did not.
+    #[error("{0} is not zero")]
+    NotZero(String),
+}
+
+impl From<trigpoly::AlgebraError> for WorkloadError {
+    fn from(e: trigpoly::AlgebraError) -> Self {
+        WorkloadError::Engine(e.into())
+    }
+}
+
+/// `{P, H}` and `{Q, H}` at `p_θ = mIω/n` for one pair; returns the terms of `P` and `Q`.
+fn resonant_pair(rotor: &System, m: i64, n: i64) -> Result<usize, WorkloadError> {
+    let res = rotor.resonant("Z", m, n)?;
+    let resonance = rotor.resonance(m, n)?;
+    for f in [&res.p, &res.q] {
+        let claim = Claim::new("W1", "{P, H} = 0", rotor.flow(f)?, Expr::zero(rotor.vars()))
+            .when(resonance.clone());
+        if !claim.residual()?.is_zero() {
+            return Err(WorkloadError::NotZero(format!(
+                "{{P_{{{m},{n}}}, H}} at resonance"
+            )));
+        }
+    }
+    Ok(res.p.len() + res.q.len())
+}
+
+impl Workload {
+    /// Runs the workload once.
+    pub fn run(&self) -> Result<Outcome, WorkloadError> {
+        match *self {
+            Workload::Tower(n) => {
+                let rotor = systems::harmonic_rotor();
+                let mut terms = 0;
+                for m in 1..=n {
+                    for k in 1..=n {
+                        terms += resonant_pair(&rotor, m, k)?;
+                    }
+                }
+                Ok(Outcome {
+                    terms,
+                    zeros: (2 * n * n) as usize,
+                })
+            }
+            Workload::Single(m) => {
+                let rotor = systems::harmonic_rotor();
+                Ok(Outcome {
+                    terms: resonant_pair(&rotor, m, m)?,
+                    zeros: 2,
+                })
+            }
+            Workload::Fateman(n) => {
+                let vars = product_vars();
+                let f = parse(&vars, &format!("(1 + x + y + z + t)^{n}"))?;
+                let g = f.checked_add(&Poly::one(&vars))?;
+                Ok(Outcome {
+                    terms: f.checked_mul(&g)?.len(),
+                    zeros: 0,
+                })
+            }
+            Workload::Pearce(n) => {
+                let vars = product_vars();
+                let f = parse(&vars, &format!("(1 + x + y + 2*z^2 + 3*t^3 + 5*u^5)^{n}"))?;
+                let g = parse(&vars, &format!("(1 + u + t + 2*z^2 + 3*y^3 + 5*x^5)^{n}"))?;
+                Ok(Outcome {
+                    terms: f.checked_mul(&g)?.len(),
+                    zeros: 0,
+                })
+            }
+            Workload::Algebra(reps) => {
+                let rotor = systems::harmonic_rotor();
+                let identities = [
+                    ("{L, G1}", "-G2"),
+                    ("{L, G2}", "4*G1"),
+                    ("{G1, G2}", "-omega^2*L"),
+                    ("4*G1^2 + G2^2 + omega^2*L^2", "(F1 - F2)^2"),
+                ];
+                let (mut terms, mut zeros) = (0, 0);
+                for _ in 0..reps {
+                    let mut all = true;
+                    for (lhs, rhs) in identities {
+                        let l = rotor.parse(lhs)?;
+                        terms += l.len();
+                        all &= l.checked_sub(&rotor.parse(rhs)?)?.is_zero();
+                    }
+                    if !all {
+                        return Err(WorkloadError::NotZero("an su(2) identity".into()));
+                    }
+                    zeros += 1;
+                }
+                Ok(Outcome { terms, zeros })
+            }
+        }
+    }
+
+    /// The workload's name and size as the command line writes them: `tower 24`.
+    pub fn label(&self) -> String {
+        self.to_string()
+    }
+}
+
+fn product_vars() -> std::sync::Arc<VarSet> {
+    VarSet::builder()
+        .coordinate("x")
+        .coordinate("y")
+        .coordinate("z")
+        .coordinate("t")
+        .coordinate("u")
+        .build()
+        .expect("valid names")
+}
+
+fn parse(vars: &std::sync::Arc<VarSet>, src: &str) -> Result<Poly<Rational>, WorkloadError> {
+    Poly::parse(vars, src).map_err(|e| WorkloadError::Engine(EngineError::parse(src, e)))
+}
+
+impl fmt::Display for Workload {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        let (name, size) = match *self {
+            Workload::Tower(n) => ("tower", n),
+            Workload::Single(n) => ("single", n),
+            Workload::Fateman(n) => ("fateman", n),
+            Workload::Pearce(n) => ("pearce", n),
+            Workload::Algebra(n) => ("algebra", n),
+        };
+        write!(f, "{name} {size}")
+    }
+}
+
+/// Why a workload name did not parse.
+#[derive(Debug, thiserror::Error)]
+#[error(
+    "unknown workload {0:?}: expected W1|tower, W2|single, W3a|fateman, W3b|pearce, W4|algebra"
+)]
+pub struct UnknownWorkload(pub String);
+
+impl Workload {
+    /// A workload from its name (`W1` or `tower`, ...) and size.
+    pub fn new(name: &str, size: i64) -> Result<Workload, UnknownWorkload> {
+        Ok(match name.to_ascii_lowercase().as_str() {
+            "w1" | "tower" => Workload::Tower(size),
+            "w2" | "single" => Workload::Single(size),
+            "w3" | "w3a" | "fateman" => Workload::Fateman(size),
+            "w3b" | "pearce" => Workload::Pearce(size),
+            "w4" | "algebra" => Workload::Algebra(size),
+            _ => return Err(UnknownWorkload(name.to_string())),
+        })
+    }
+}
+
+impl FromStr for Workload {
+    type Err = UnknownWorkload;
+    /// `"tower 24"` or `"W1 24"`.
+    fn from_str(s: &str) -> Result<Self, Self::Err> {
+        let mut it = s.split_whitespace();
+        let name = it.next().unwrap_or_default();
+        let size = it
+            .next()
+            .and_then(|v| v.parse().ok())
+            .ok_or_else(|| UnknownWorkload(s.into()))?;
+        Workload::new(name, size)
+    }
+}

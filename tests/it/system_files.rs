@@ -1,0 +1,678 @@
+//! System files, through the real binary: every file of `systems/` checks as expected, the
+//! example of `docs/system-files.md` works as documented, every output format holds together,
+//! and every kind of bad input gets its message (file, line, column, caret) and exit status 2.
+//!
+//! The messages of bad inputs are compared whole with `tests/it/snapshots/bad-inputs.txt`;
+//! after an intended change, rewrite it with
+//! `SUPERINT_UPDATE_SNAPSHOTS=1 cargo test --test it system_files`, and read the diff.
+
+use std::path::{Path, PathBuf};
+use std::process::{Command, Output};
+
+use pretty_assertions::assert_eq;
+use serde_json::Value;
+
+fn root() -> &'static Path {
+    Path::new(env!("CARGO_MANIFEST_DIR"))
+}
+
+/// Runs the binary in `dir` with arguments.
+fn superint_in(dir: &Path, args: &[&str]) -> Output {
+    Command::new(env!("CARGO_BIN_EXE_superint"))
+        .args(args)
+        .current_dir(dir)
+        .output()
+        .expect("the superint binary runs")
+}
+
+fn text(bytes: &[u8]) -> String {
+    String::from_utf8(bytes.to_vec()).expect("UTF-8 output")
+}
+
+/// Runs the binary at the workspace root and expects exit status `code`; returns stdout.
+#[track_caller]
+fn run(args: &[&str], code: i32) -> String {
+    let o = superint_in(root(), args);
+    assert_eq!(
+        o.status.code(),
+        Some(code),
+        "superint {args:?}\nstdout: {}\nstderr: {}",
+        text(&o.stdout),
+        text(&o.stderr)
+    );
+    text(&o.stdout)
+}
+
+/// A fresh directory for one test's files.
+fn scratch(name: &str) -> PathBuf {
+    let dir = Path::new(env!("CARGO_TARGET_TMPDIR"))
+        .join("system-files")
+        .join(name);
+    let _ = std::fs::remove_dir_all(&dir);
+    std::fs::create_dir_all(&dir).expect("a scratch directory");
+    dir
+}
+
+/// Compares with a snapshot, or rewrites it when `SUPERINT_UPDATE_SNAPSHOTS` is set.
+#[track_caller]
+fn assert_snapshot(name: &str, actual: &str) {
+    let path = root().join("tests/it/snapshots").join(name);
+    if std::env::var_os("SUPERINT_UPDATE_SNAPSHOTS").is_some() {
+        std::fs::write(&path, actual).expect("write the snapshot");
+        return;
+    }
+    let expected = std::fs::read_to_string(&path).unwrap_or_else(|e| {
+        panic!(
+            "{}: {e}; run with SUPERINT_UPDATE_SNAPSHOTS=1 to create it",
+            path.display()
+        )
+    });
+    assert_eq!(expected, actual, "output differs from {}", path.display());
+}
+
+/// Every file of `systems/`, sorted.
+fn system_files() -> Vec<String> {
+    let mut files: Vec<String> = std::fs::read_dir(root().join("systems"))
+        .expect("systems/ exists")
+        .map(|e| e.expect("an entry").path())
+        .filter(|p| p.extension().is_some_and(|e| e == "toml"))
+        .map(|p| format!("systems/{}", p.file_name().unwrap().to_string_lossy()))
+        .collect();
+    files.sort();
+    files
+}
+
+#[test]
+fn systems_every_file_checks_as_expected() {
+    let files = system_files();
+    assert!(files.len() >= 7, "systems/ has only {files:?}");
+    let mut args = vec!["check", "--no-timings"];
+    args.extend(files.iter().map(String::as_str));
+    let out = run(&args, 0);
+    let last = out.lines().last().expect("a summary line");
+    assert!(last.ends_with("; all as expected"), "{last}");
+    assert!(!out.contains("REFUTED") && !out.contains("PROVED"), "{out}");
+    // Each file declares deliberately false claims, and they are refuted.
+    for f in &files {
+        let json = run(&["check", f, "--format", "json", "--no-timings"], 0);
+        let v: Value = serde_json::from_str(&json).expect("JSON");
+        let refuted = v["claims"]
+            .as_array()
+            .expect("claims")
+            .iter()
+            .filter(|c| c["expect"] == "refuted" && c["outcome"] == "refuted")
+            .count();
+        assert!(refuted >= 1, "{f} has no deliberately false claim");
+    }
+}
+
+#[test]
+fn systems_paper_claims_are_all_there() {
+    let mut ids = Vec::new();
+    for f in system_files() {
+        let v: Value =
+            serde_json::from_str(&run(&["check", &f, "--format", "json", "--no-timings"], 0))
+                .expect("JSON");
+        for c in v["claims"].as_array().expect("claims") {
+            ids.push(c["id"].as_str().expect("an id").to_string());
+        }
+    }
+    for k in 4..=26 {
+        let id = format!("C{k:02}");
+        assert!(ids.contains(&id), "{id} is in no system file");
+    }
+}
+
+/// The complete example of `docs/system-files.md` checks as the document shows.
+#[test]
+fn docs_example_checks_as_documented() {
+    let doc = std::fs::read_to_string(root().join("docs/system-files.md")).expect("the doc");
+    let start = doc.find("```toml\n").expect("a TOML example") + "```toml\n".len();
+    let example = &doc[start..start + doc[start..].find("```").expect("its end")];
+    let dir = scratch("docs-example");
+    std::fs::write(dir.join("rotor.toml"), example).expect("write the example");
+    let o = superint_in(&dir, &["check", "rotor.toml", "--no-timings"]);
+    assert_eq!(o.status.code(), Some(0), "{}", text(&o.stderr));
+    let out = text(&o.stdout);
+    assert_snapshot("system-file-example.txt", &out);
+    // The document shows the same output (with the timing).
+    let shown = doc
+        .split("```console\n$ superint check rotor.toml\n")
+        .nth(1)
+        .expect("the output in the doc");
+    let shown = &shown[..shown.find("```").expect("its end")];
+    let body = |s: &str| s.lines().rev().skip(1).collect::<Vec<_>>().join("\n");
+    assert_eq!(body(shown), body(&out));
+}
+
+const BASE: &str = r#"name = "oscillator"
+hamiltonian = "p_x^2/(2*M) + M*omega^2*x^2/2"
+
+[phase_space]
+coordinates = ["x"]
+parameters = ["M", "omega"]
+
+[[function]]
+name = "A"
+value = "p_x + i*M*omega*x"
+
+[[claim]]
+id = "ladder"
+claim = "{A, H} = i*omega*A"
+"#;
+
+/// The rotor's variables and a power that no machine can expand: C(405, 5) ≈ 9·10¹⁰ terms.
+const HUGE: &str = r#"name = "runaway"
+hamiltonian = "(p_x^2 + p_y^2)/(2*M) + M*omega^2*(x^2 + y^2)/2 + p_theta^2/(2*I)"
+
+[phase_space]
+coordinates = ["x", "y"]
+angles = ["theta"]
+parameters = ["M", "omega", "I"]
+
+[limits]
+max_terms = 10000
+
+[[claim]]
+id = "runaway"
+claim = "(x + y + p_x + p_y + M + omega)^400 = 0"
+"#;
+
+/// `BASE` with `from` replaced by `to` (which must occur).
+fn base_with(from: &str, to: &str) -> Vec<u8> {
+    assert!(BASE.contains(from), "{from:?}");
+    BASE.replacen(from, to, 1).into_bytes()
+}
+
+/// Every kind of bad input: its file, where the message must point, and the command line.
+fn bad_inputs() -> Vec<(&'static str, Vec<u8>, &'static str, Vec<&'static str>)> {
+    let check = vec!["check", "bad.toml"];
+    vec![
+        (
+            "unknown name",
+            base_with("i*omega*A\"", "i*omega*B\""),
+            "bad.toml:14:27: unknown name 'B'",
+            check.clone(),
+        ),
+        (
+            "malformed expression",
+            base_with("p_x + i*M", "p_x + (i*M"),
+            "bad.toml:10:28: expected ')' to close '(' opened at line 10, column 16",
+            check.clone(),
+        ),
+        (
+            "division by a non-monomial",
+            base_with("p_x + i*M*omega*x", "p_x/(1 + x)"),
+            "bad.toml:10:14: cannot divide by x + 1",
+            check.clone(),
+        ),
+        (
+            "bracket with a parameter",
+            base_with("{A, H}", "{A, omega}"),
+            "bad.toml:14:14: 'omega' is a parameter, not a variable of the phase space",
+            check.clone(),
+        ),
+        (
+            "bracket with an angle",
+            BASE.replacen(
+                "coordinates = [\"x\"]",
+                "coordinates = [\"x\"]\nangles = [\"theta\"]",
+                1,
+            )
+            .replacen("{A, H}", "{theta, H}", 1)
+            .into_bytes(),
+            "bad.toml:15:11: theta is an angle",
+            check.clone(),
+        ),
+        (
+            "misspelt field",
+            base_with("hamiltonian = ", "hamiltonien = "),
+            "bad.toml:2:1: unknown field `hamiltonien`",
+            check.clone(),
+        ),
+        (
+            "missing hamiltonian",
+            base_with("hamiltonian = \"p_x^2/(2*M) + M*omega^2*x^2/2\"\n", ""),
+            "bad.toml:1:1: missing field `hamiltonian`",
+            check.clone(),
+        ),
+        (
+            "missing value of a function",
+            base_with("value = \"p_x + i*M*omega*x\"\n", ""),
+            "bad.toml:8:1: missing field `value`",
+            check.clone(),
+        ),
+        (
+            "mistyped field",
+            base_with("coordinates = [\"x\"]", "coordinates = \"x\""),
+            "bad.toml:5:15: invalid type: string \"x\", expected a sequence",
+            check.clone(),
+        ),
+        (
+            "mistyped expectation",
+            base_with("claim = \"{A, H}", "expect = \"false\"\nclaim = \"{A, H}"),
+            "bad.toml:14:10: unknown variant `false`, expected `proved` or `refuted`",
+            check.clone(),
+        ),
+        (
+            "unknown field",
+            base_with("claim = \"{A", "clam = \"{A"),
+            "bad.toml:14:1: unknown field `clam`",
+            check.clone(),
+        ),
+        (
+            "bad condition",
+            base_with("claim = \"{A, H}", "when = \"omega 2\"\nclaim = \"{A, H}"),
+            "bad.toml:14:9: a condition reads `variable = value`",
+            check.clone(),
+        ),
+        (
+            "condition on a function",
+            base_with(
+                "claim = \"{A, H}",
+                "when = \"M = 1, A = 0\"\nclaim = \"{A, H}",
+            ),
+            "bad.toml:14:16: the left side of a condition is one declared variable",
+            check.clone(),
+        ),
+        (
+            "claim without =",
+            base_with("{A, H} = i*omega*A", "{A, H}"),
+            "bad.toml:14:10: a claim reads `lhs = rhs`",
+            check.clone(),
+        ),
+        (
+            "rank claim with a non-integer rank",
+            base_with("{A, H} = i*omega*A", "rank(A, H) = two"),
+            "bad.toml:14:23: the right side of a rank claim is a whole number",
+            check.clone(),
+        ),
+        (
+            "name declared twice",
+            base_with(
+                "parameters = [\"M\", \"omega\"]",
+                "parameters = [\"M\", \"x\"]",
+            ),
+            "bad.toml:6:20: 'x' is already declared as a coordinate on line 5",
+            check.clone(),
+        ),
+        (
+            "family with an unknown name",
+            base_with(
+                "[[claim]]",
+                "[[family]]\nname = \"K\"\nvalue = \"Q^m*A^n\"\n\n[[claim]]",
+            ),
+            "bad.toml:14:10: unknown name 'Q'",
+            check.clone(),
+        ),
+        (
+            "TOML syntax error",
+            base_with(
+                "claim = \"{A, H} = i*omega*A\"",
+                "claim = \"{A, H} = i*omega*A",
+            ),
+            "bad.toml:14:",
+            check.clone(),
+        ),
+        (
+            "empty file",
+            b"\n  \n".to_vec(),
+            "bad.toml:1:1: the file is empty",
+            check.clone(),
+        ),
+        (
+            "binary file",
+            b"\x7fELF\x02\x01\x01\x00\x00\x00".to_vec(),
+            "bad.toml:1:8: this is a binary file",
+            check.clone(),
+        ),
+        (
+            "invalid UTF-8",
+            b"name = \"caf\xe9\"\n".to_vec(),
+            "bad.toml:1:12: the file is not UTF-8 text (byte 0xE9",
+            check.clone(),
+        ),
+        (
+            "degree limit",
+            base_with("{A, H} = i*omega*A", "x^5000 = 0"),
+            "bad.toml:14:12: the exponent 5000 is past the limit of 1000",
+            check.clone(),
+        ),
+        (
+            "term limit from the file",
+            HUGE.as_bytes().to_vec(),
+            "bad.toml:14:10: the result would have more than 10000 terms (the term limit)",
+            check.clone(),
+        ),
+        (
+            "term limit from the command line",
+            HUGE.as_bytes().to_vec(),
+            "bad.toml:14:10: the result would have more than 3000 terms (the term limit)",
+            vec!["check", "bad.toml", "--max-terms", "3000"],
+        ),
+        (
+            "unknown name on the command line",
+            BASE.as_bytes().to_vec(),
+            "<command line>:1:5: unknown name 'B'",
+            vec!["bracket", "bad.toml", "A", "H + B"],
+        ),
+        (
+            "tower without a family",
+            BASE.as_bytes().to_vec(),
+            "bad.toml: the file declares no [[family]] with an eigenvalue",
+            vec!["tower", "--system", "bad.toml", "--max", "2"],
+        ),
+        (
+            "missing file",
+            Vec::new(),
+            "missing.toml: cannot read the file",
+            vec!["check", "missing.toml"],
+        ),
+    ]
+}
+
+#[test]
+fn bad_inputs_get_file_line_column_and_exit_2() {
+    let dir = scratch("bad-inputs");
+    let mut all = String::new();
+    let mut wrong = Vec::new();
+    for (name, content, expected, args) in bad_inputs() {
+        std::fs::write(dir.join("bad.toml"), &content).expect("write the file");
+        let o = superint_in(&dir, &args);
+        let stderr = text(&o.stderr);
+        assert_eq!(o.status.code(), Some(2), "{name}: {stderr}");
+        assert!(text(&o.stdout).is_empty(), "{name} printed to stdout");
+        assert!(!stderr.contains("panicked"), "{name}: {stderr}");
+        if !stderr.starts_with(&format!("superint: error: {expected}")) {
+            wrong.push(format!("{name}: expected {expected:?}, got\n{stderr}"));
+        }
+        all.push_str(&format!(
+            "== {name}: superint {}\n{stderr}\n",
+            args.join(" ")
+        ));
+    }
+    assert!(wrong.is_empty(), "{}", wrong.join("\n"));
+    assert_snapshot("bad-inputs.txt", &all);
+}
+
+#[test]
+fn limits_flag_overrides_the_file() {
+    let dir = scratch("limits");
+    std::fs::write(dir.join("huge.toml"), HUGE).expect("write");
+    // A larger limit on the command line wins over the file's 10000 and still stops it.
+    let o = superint_in(&dir, &["check", "huge.toml", "--max-terms", "20000"]);
+    assert_eq!(o.status.code(), Some(2));
+    assert!(text(&o.stderr).contains("more than 20000 terms"));
+    // A degree limit from the command line stops a modest power.
+    let o = superint_in(
+        root(),
+        &["check", "systems/harmonic-rotor.toml", "--max-degree", "3"],
+    );
+    assert_eq!(o.status.code(), Some(2));
+    assert!(
+        text(&o.stderr).contains("past the limit of 3"),
+        "{}",
+        text(&o.stderr)
+    );
+}
+
+#[test]
+fn check_exit_status_follows_expectations() {
+    let dir = scratch("expectations");
+    let wrong = BASE.replace("i*omega*A\"", "-i*omega*A\"");
+    std::fs::write(dir.join("wrong.toml"), &wrong).expect("write");
+    let o = superint_in(&dir, &["check", "wrong.toml", "--no-timings"]);
+    assert_eq!(o.status.code(), Some(1));
+    let out = text(&o.stdout);
+    assert!(out.contains("[ladder REFUTED]"), "{out}");
+    assert!(
+        out.contains("residual lhs − rhs = 2iω p_x − 2Mω²x"),
+        "{out}"
+    );
+    assert!(out.ends_with("1 claim in 1 file: 0 proved, 1 refuted; 1 NOT as expected: ladder\n"));
+    // Marked as deliberately false, the same claim meets its expectation.
+    let marked = wrong.replace("id = \"ladder\"", "id = \"ladder\"\nexpect = \"refuted\"");
+    std::fs::write(dir.join("marked.toml"), &marked).expect("write");
+    let out = text(&superint_in(&dir, &["check", "marked.toml"]).stdout);
+    assert!(out.contains("[ladder refuted, as expected]"), "{out}");
+    // A true claim marked as false does not.
+    let proved = BASE.replace("id = \"ladder\"", "id = \"ladder\"\nexpect = \"refuted\"");
+    std::fs::write(dir.join("proved.toml"), &proved).expect("write");
+    let o = superint_in(&dir, &["check", "proved.toml"]);
+    assert_eq!(o.status.code(), Some(1));
+    assert!(text(&o.stdout).contains("[ladder PROVED, expected refuted]"));
+}
+
+#[test]
+fn check_json_is_one_object_per_claim() {
+    let out = run(
+        &[
+            "check",
+            "systems/harmonic-rotor.toml",
+            "--format",
+            "json",
+            "--no-timings",
+        ],
+        0,
+    );
+    let v: Value = serde_json::from_str(&out).expect("JSON");
+    assert_eq!(v["schema"], "superint-report/1");
+    assert_eq!(v["summary"]["all_as_expected"], true);
+    assert_eq!(
+        v["sections"][0]["title"],
+        "harmonic rotor (systems/harmonic-rotor.toml)"
+    );
+    let claims = v["claims"].as_array().expect("claims");
+    assert_eq!(v["summary"]["checks"], claims.len());
+    for c in claims {
+        for key in [
+            "id",
+            "statement",
+            "condition",
+            "expect",
+            "outcome",
+            "meets_expectation",
+            "residual",
+            "seconds",
+        ] {
+            assert!(c.get(key).is_some(), "{key} missing in {c}");
+        }
+        assert_eq!(c["meets_expectation"], true, "{c}");
+        assert!(c["seconds"].is_null(), "{c}");
+        match c["outcome"].as_str() {
+            Some("proved") => assert!(c["residual"].is_null(), "{c}"),
+            // An identity has its residual; a rank, the rank found.
+            Some("refuted") => assert!(c["residual"].is_string() || c["note"].is_string(), "{c}"),
+            other => panic!("outcome {other:?}"),
+        }
+    }
+    let c16 = claims
+        .iter()
+        .find(|c| c["id"] == "C16-off")
+        .expect("C16-off");
+    assert_eq!(c16["expect"], "refuted");
+    assert_eq!(c16["condition"], "p_θ = Iω");
+    assert!(c16["residual"]
+        .as_str()
+        .expect("a residual")
+        .contains("cos(theta)"));
+    let sw = run(
+        &[
+            "check",
+            "systems/smorodinsky-winternitz-i.toml",
+            "--format",
+            "json",
+        ],
+        0,
+    );
+    let v: Value = serde_json::from_str(&sw).expect("JSON");
+    assert!(v["claims"][0]["seconds"].is_number());
+    assert!(v["summary"]["seconds"].is_number());
+}
+
+#[test]
+fn check_every_format_renders() {
+    let file = "systems/anisotropic-oscillator-1-2.toml";
+    let md = run(&["check", file, "--format", "markdown", "--no-timings"], 0);
+    assert!(md.contains("- `{a, H} = iωa` — **ladders proved**"), "{md}");
+    assert!(md.contains("**false-sign refuted, as expected**"), "{md}");
+    let tex = run(&["check", file, "--format", "latex", "--no-timings"], 0);
+    assert!(tex.starts_with("\\documentclass{article}") && tex.is_ascii());
+    assert!(
+        tex.contains(r"\text{[false-sign refuted, as expected]}"),
+        "{tex}"
+    );
+    let txt = run(&["check", file, "--no-timings"], 0);
+    assert!(txt.contains("Source: J. M. Jauch, E. L. Hill"));
+}
+
+#[test]
+fn bracket_prints_the_normal_form() {
+    let f = "systems/harmonic-rotor.toml";
+    let out = run(&["bracket", f, "G1", "G2", "--no-timings"], 0);
+    assert!(
+        out.contains("\n    {G1, G2} = −ω²x p_y + ω²y p_x\n"),
+        "{out}"
+    );
+    let v: Value = serde_json::from_str(&run(&["bracket", f, "L", "G1", "--format", "json"], 0))
+        .expect("JSON");
+    let line = &v["equations"][0]["lines"][0];
+    assert_eq!(line["lhs"], "{L, G1}");
+    assert_eq!(
+        line["ascii"],
+        "-p_x^2/(2*M) + p_y^2/(2*M) - M*omega^2*x^2/2 + M*omega^2*y^2/2"
+    );
+    // Off resonance P_{2,3} moves; on it, it does not.
+    let on = run(
+        &[
+            "bracket",
+            f,
+            "P_{2,3}",
+            "H",
+            "--when",
+            "p_theta = 2*I*omega/3",
+            "--no-timings",
+        ],
+        0,
+    );
+    assert!(on.contains("{P_{2,3}, H} = 0"), "{on}");
+    assert!(on.contains("at p_θ = 2Iω/3"), "{on}");
+}
+
+#[test]
+fn table_is_the_su2_table() {
+    let out = run(
+        &[
+            "table",
+            "systems/harmonic-rotor.toml",
+            "L",
+            "G1",
+            "G2",
+            "--no-timings",
+        ],
+        0,
+    );
+    assert!(out.contains("    L     │ 0       −G2    4 G1\n"), "{out}");
+    assert!(out.contains("    G1    │ G2      0      −ω² L\n"), "{out}");
+    let v: Value = serde_json::from_str(&run(
+        &[
+            "table",
+            "systems/gravity-rotor.toml",
+            "Lp",
+            "G1p",
+            "G2p",
+            "--format",
+            "json",
+        ],
+        0,
+    ))
+    .expect("JSON");
+    assert_eq!(v["tables"][0]["display"][0], "L'");
+    assert_eq!(v["tables"][0]["entries"][0][1]["ascii"], "-G2'");
+}
+
+#[test]
+fn rank_prints_its_certificate() {
+    let f = "systems/harmonic-rotor.toml";
+    let out = run(
+        &["rank", f, "F1", "F2", "G1", "G2", "P_1_1", "--no-timings"],
+        0,
+    );
+    assert!(out.contains("= 5   [rank proved]"), "{out}");
+    assert!(out.contains("≥ 5: the minor"), "{out}");
+    run(
+        &["rank", f, "F1", "F2", "G1", "G2", "L", "--expect", "4"],
+        0,
+    );
+    let out = run(
+        &["rank", f, "F1", "F2", "G1", "G2", "L", "--expect", "5"],
+        1,
+    );
+    assert!(out.contains("the rank is 4"), "{out}");
+}
+
+#[test]
+fn tower_of_a_file_family_with_its_proof() {
+    let out = run(
+        &[
+            "tower",
+            "--system",
+            "systems/gravity-rotor.toml",
+            "--max",
+            "2",
+            "--no-timings",
+        ],
+        0,
+    );
+    assert!(out.contains("[Kp-tower proved]"), "{out}");
+    assert!(out.contains("[Kp-all proved]"), "{out}");
+    assert!(out.contains("computed: {Z', H} = (iω) Z'"), "{out}");
+    let out = run(
+        &[
+            "tower",
+            "--system",
+            "systems/anisotropic-oscillator-1-2.toml",
+            "--max",
+            "2",
+            "--no-timings",
+        ],
+        0,
+    );
+    assert!(out.contains("[W-all proved]"), "{out}");
+    assert!(
+        out.contains("computed: {conj(b), H} = (−2iω) conj(b)"),
+        "{out}"
+    );
+    // A family that is not a product of powers A^m B^n: the bounded check only.
+    let dir = scratch("tower");
+    let family = "[[family]]\nname = \"S\"\nvalue = \"A^(m + n)\"\n\
+                  eigenvalue = \"i*(m + n)*omega\"\n\n[[claim]]";
+    std::fs::write(dir.join("s.toml"), BASE.replacen("[[claim]]", family, 1)).expect("write");
+    let o = superint_in(&dir, &["tower", "--system", "s.toml", "--max", "2"]);
+    assert_eq!(o.status.code(), Some(0), "{}", text(&o.stderr));
+    let out = text(&o.stdout);
+    assert!(out.contains("[S-tower proved]"), "{out}");
+    assert!(out.contains("No proof for all m, n"), "{out}");
+    let out = run(
+        &[
+            "tower",
+            "--system",
+            "systems/harmonic-rotor.toml",
+            "--family",
+            "P",
+            "--max",
+            "1",
+        ],
+        2,
+    );
+    assert!(out.is_empty());
+}
+
+#[test]
+fn every_new_help_shows_an_example() {
+    for cmd in ["check", "bracket", "table", "rank", "tower"] {
+        let out = run(&[cmd, "--help"], 0);
+        assert!(out.contains("Examples:\n  superint"), "{cmd}");
+        assert!(out.contains("--max-terms"), "{cmd}");
+    }
+}
