@@ -174,9 +174,11 @@ pub fn search_report(
             format!("`{}`", n.known.join(", "))
         };
         entries.push(Entry::Text(format!(
-            "Known integrals in the space: {known}. With the constants and every product of \
-             known and found integrals ({} products formed) they span {} of the {} dimensions; \
-             a complement, the new integrals:",
+            "Known integrals in the space: {known}. An integral of degree `N` (in the \
+             coordinates and momenta together) is generated when it is a sum of known \
+             integrals, constants and products of integrals of degree `< N` ({} products \
+             formed); the generated ones span {} of the {} dimensions, and a complement, the \
+             new integrals, is:",
             n.products,
             n.generated,
             r.basis.len()

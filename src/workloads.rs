@@ -8,7 +8,8 @@
 //! - **W3 products**: Fateman `f·(f + 1)` with `f = (1 + x + y + z + t)^N`, and Pearce
 //!   `(1 + x + y + 2z² + 3t³ + 5u⁵)^N · (1 + u + t + 2z² + 3y³ + 5x⁵)^N`.
 //! - **W4 algebra**: the su(2) brackets `{L, G1} = −G2`, `{L, G2} = 4G1`, `{G1, G2} = −ω²L` and
-//!   the Casimir (C09, C10), each formed from its text and checked, `N` times.
+//!   the Casimir (C09, C10), each formed and checked, `N` times (the brackets and squares are
+//!   computed in every repetition, as the peers do).
 
 use std::fmt;
 use std::str::FromStr;
@@ -118,20 +119,28 @@ impl Workload {
             }
             Workload::Algebra(reps) => {
                 let rotor = systems::harmonic_rotor();
-                let identities = [
-                    ("{L, G1}", "-G2"),
-                    ("{L, G2}", "4*G1"),
-                    ("{G1, G2}", "-omega^2*L"),
-                    ("4*G1^2 + G2^2 + omega^2*L^2", "(F1 - F2)^2"),
-                ];
+                let get = |name: &str| rotor.get(name).cloned();
+                let (l, g1, g2) = (get("L")?, get("G1")?, get("G2")?);
+                let casimir_rhs = get("F1")?.checked_sub(&get("F2")?)?.checked_pow(2)?;
+                let omega2 = rotor.parse("omega^2")?;
+                let four = trigpoly::GaussianRational::from(4);
                 let (mut terms, mut zeros) = (0, 0);
                 for _ in 0..reps {
-                    let mut all = true;
-                    for (lhs, rhs) in identities {
-                        let l = rotor.parse(lhs)?;
-                        terms += l.len();
-                        all &= l.checked_sub(&rotor.parse(rhs)?)?.is_zero();
-                    }
+                    let lg1 = rotor.bracket(&l, &g1)?;
+                    let lg2 = rotor.bracket(&l, &g2)?;
+                    let g1g2 = rotor.bracket(&g1, &g2)?;
+                    terms += lg1.len() + lg2.len() + g1g2.len();
+                    // {L, G1} = −G2, {L, G2} = 4 G1, {G1, G2} = −ω² L
+                    let mut all = lg1.checked_add(&g2)?.is_zero();
+                    all &= lg2.checked_sub(&g1.scale(&four))?.is_zero();
+                    all &= g1g2.checked_add(&omega2.checked_mul(&l)?)?.is_zero();
+                    // 4 G1² + G2² + ω² L² = (F1 − F2)²
+                    let lhs = g1
+                        .checked_pow(2)?
+                        .scale(&four)
+                        .checked_add(&g2.checked_pow(2)?)?
+                        .checked_add(&omega2.checked_mul(&l.checked_pow(2)?)?)?;
+                    all &= lhs.checked_sub(&casimir_rhs)?.is_zero();
                     if !all {
                         return Err(WorkloadError::NotZero("an su(2) identity".into()));
                     }

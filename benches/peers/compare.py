@@ -21,7 +21,7 @@ import time
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.dirname(os.path.dirname(HERE))
-SUPERINT = os.path.join(ROOT, "target", "release", "superint")
+SUPERINT = os.environ.get("SUPERINT_BIN", os.path.join(ROOT, "target", "release", "superint"))
 PYTHON = os.environ.get("PEERS_PYTHON", sys.executable)
 
 NAMES = {"tower": "W1 tower", "single": "W2 single", "fateman": "W3a Fateman",

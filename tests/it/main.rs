@@ -91,4 +91,5 @@ pub fn assert_refuted(
 
 mod claims;
 mod cli;
+mod discovery;
 mod system_files;

@@ -553,6 +553,16 @@ pub fn closure_of(
         }
         ideal.insert(ideal_id, &rf);
         ideal_id += 1;
+        if complex {
+            // Over Q(i), i·R is the same relation.
+            let zero = vec![0; r];
+            if let Some(v) = shift(rel, &zero, true, &col_ids, &monos, &col_of) {
+                if let Some(vf) = modular::to_fp(&v) {
+                    ideal.insert(ideal_id, &vf);
+                    ideal_id += 1;
+                }
+            }
+        }
         accepted.push((rel.clone(), d, 0));
         let (poly, symbolic) = lift_ctx.relation(rel)?;
         relations.push(Relation {
@@ -850,5 +860,43 @@ fn normalize(e: Expr) -> Expr {
     match e.content().try_inv() {
         Some(inv) => e.scale_rational(&inv),
         None => e,
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::systems;
+
+    #[test]
+    fn complex_generators_close_with_one_relation() {
+        let rotor = systems::harmonic_rotor();
+        let c = closure(
+            &rotor,
+            &["Z", "Zbar", "F1", "F2", "L"],
+            &ClosureOptions::new(2),
+        )
+        .unwrap();
+        assert!(c.closes());
+        assert!(c.all_symbolic());
+        // {Z, Z̄} = 4iMω, {Z, F1} = iωZ (C11).
+        assert_eq!(c.render_bracket(0, 1), "4iMω");
+        assert_eq!(c.render_bracket(0, 2), "iωZ");
+        // Z Z̄ = 2M(F1 − F2) + 2MωL, once (not again times i).
+        assert_eq!(c.relations.len(), 1);
+    }
+
+    #[test]
+    fn surface_constants_are_relations_of_their_own() {
+        let mut rotor = systems::harmonic_rotor();
+        let k = rotor.resonant("Z", 1, 1).unwrap();
+        rotor.define("P", "P", k.p);
+        rotor.define("Q", "Q", k.q);
+        let options = ClosureOptions::new(2).when(rotor.resonance(1, 1).unwrap());
+        let c = closure(&rotor, &["F1", "F2", "L", "P", "Q"], &options).unwrap();
+        assert_eq!(c.render_bracket(3, 4), "−2Mω");
+        let first = c.relations[0].poly.to_string();
+        assert_eq!(first, "−ω²I/2 + F2");
+        assert!(c.relations.iter().all(|r| r.symbolic));
     }
 }

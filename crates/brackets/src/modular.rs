@@ -70,9 +70,8 @@ impl Fp {
 
     /// `q mod p`, or `None` if `p` divides the denominator.
     pub fn from_rational(q: &Rational) -> Option<Self> {
-        let big = q.as_big_rational();
-        let n = bigint_mod(big.numer());
-        let d = bigint_mod(big.denom());
+        let n = integer_mod(&q.numer());
+        let d = integer_mod(&q.denom());
         (!d.is_zero()).then(|| n.mul(&d.inv()))
     }
 
@@ -87,6 +86,13 @@ impl Fp {
             e >>= 1;
         }
         acc
+    }
+}
+
+fn integer_mod(a: &trigpoly::Integer) -> Fp {
+    match a.to_i64() {
+        Some(v) => Fp::from_i64(v),
+        None => bigint_mod(&a.to_bigint()),
     }
 }
 

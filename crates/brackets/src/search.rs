@@ -271,6 +271,9 @@ struct Problem {
     /// The fixed Hamiltonian and condition.
     h: Expr,
     condition: Option<Vec<(Var, Expr)>>,
+    /// For each canonical pair `(q, p)`: `∂H/∂p` and `∂H/∂q` after the condition, to form the
+    /// images of the unknowns without differentiating `H` again each time.
+    dh: Vec<(Var, Var, Expr, Expr)>,
 }
 
 /// Exponent vectors `≥ 0` (or any sign) over `n` slots with `Σ|e| ≤ max`.
@@ -299,7 +302,12 @@ fn canonical(k: &[i64]) -> bool {
 }
 
 impl Problem {
-    fn new(system: &System, space: &SearchSpace, h: Expr, cond: Option<Vec<(Var, Expr)>>) -> Self {
+    fn new(
+        system: &System,
+        space: &SearchSpace,
+        h: Expr,
+        cond: Option<Vec<(Var, Expr)>>,
+    ) -> Result<Self, EngineError> {
         let vars = system.vars().clone();
         let pairs = system.space().pairs();
         let coords: Vec<Var> = pairs
@@ -369,14 +377,39 @@ impl Problem {
             .enumerate()
             .map(|(j, u)| ((u.phase.clone(), u.k.clone(), u.trig), j))
             .collect();
-        Problem {
+        let mut problem = Problem {
             vars,
             angles,
             unknowns,
             index,
             h,
             condition: cond,
+            dh: Vec::new(),
+        };
+        for pair in pairs {
+            let dp = problem.apply_condition(problem.h.derivative(pair.p)?)?;
+            let dq = problem.apply_condition(problem.h.derivative(pair.q)?)?;
+            problem.dh.push((pair.q, pair.p, dp, dq));
         }
+        Ok(problem)
+    }
+
+    /// `{f, H}` after the condition for `f` free of the variables the condition fixes (the
+    /// unknowns): `Σ ∂f/∂q · (∂H/∂p)|_c − ∂f/∂p · (∂H/∂q)|_c`, the condition being a ring
+    /// homomorphism that leaves `f` alone.
+    fn image(&self, f: &Expr) -> Result<Expr, EngineError> {
+        let mut acc = Expr::zero(&self.vars);
+        for (q, p, dp, dq) in &self.dh {
+            let fq = f.derivative(*q)?;
+            if !fq.is_zero() && !dp.is_zero() {
+                acc = acc.checked_add(&fq.checked_mul(dp)?)?;
+            }
+            let fp = f.derivative(*p)?;
+            if !fp.is_zero() && !dq.is_zero() {
+                acc = acc.checked_sub(&fp.checked_mul(dq)?)?;
+            }
+        }
+        Ok(acc)
     }
 
     /// The unknown as a function.
@@ -549,9 +582,8 @@ fn primitive_vector(v: &SparseVec<Rational>) -> SparseVec<Rational> {
     let mut den = num_bigint::BigInt::from(1);
     let mut num = num_bigint::BigInt::from(0);
     for (_, x) in v {
-        let b = x.as_big_rational();
-        den = den.lcm(b.denom());
-        num = num.gcd(b.numer());
+        den = den.lcm(&x.denom().to_bigint());
+        num = num.gcd(&x.numer().to_bigint());
     }
     let lead = v.iter().max_by_key(|x| x.0).map(|x| x.1.clone());
     let mut scale = Rational::from(trigpoly::Integer::from_bigint(den))
@@ -578,14 +610,14 @@ pub fn search(system: &System, options: &SearchOptions) -> Result<SearchResult, 
         ),
         None => None,
     };
-    let problem = Problem::new(system, &options.space, h, cond_fixed);
+    let problem = Problem::new(system, &options.space, h, cond_fixed)?;
     let n = problem.unknowns.len();
 
     // The images {φ_j, H} as real equations over Q.
     let mut rows: HashMap<(Vec<i64>, bool), usize> = HashMap::new();
     let mut columns: Vec<SparseVec<Rational>> = Vec::with_capacity(n);
     for j in 0..n {
-        let image = problem.flow(system, &problem.expr(j, &Rational::one())?)?;
+        let image = problem.image(&problem.expr(j, &Rational::one())?)?;
         let mut col = Vec::new();
         for t in image.terms() {
             let e = t.exponents();
@@ -731,11 +763,39 @@ pub fn lift_and_prove(
     let Some(f) = lifter.lift(scaling, fixed, reference)? else {
         return Ok(None);
     };
+    // Coprime integer coefficients again (fixed values other than 1 leave a common factor).
+    let f = real_primitive(&f);
     let mut flow = system.flow(&f)?;
     if let Some(c) = condition {
         flow = c.apply(&flow)?;
     }
     Ok(flow.is_zero().then_some(f))
+}
+
+/// A real function scaled so that its coefficients in the basis `cos kθ, sin kθ` are coprime
+/// integers (the sign kept): in the `e^{ikθ}` basis those are twice the coefficients of
+/// `e^{±ikθ}` for `k ≠ 0`.
+fn real_primitive(f: &Expr) -> Expr {
+    let vars = f.vars();
+    let angles: Vec<Var> = vars.angles().collect();
+    let mut g = Rational::zero();
+    for t in f.terms() {
+        let c = t.coeff();
+        let factor = if angles.iter().any(|v| t.exponent(*v) != 0) {
+            Rational::from(2)
+        } else {
+            Rational::one()
+        };
+        for x in [&c.re, &c.im] {
+            if !x.is_zero() {
+                g = Rational::content_gcd(&g, &(x * &factor));
+            }
+        }
+    }
+    match g.abs().try_inv() {
+        Some(inv) => f.scale_rational(&inv),
+        None => f.clone(),
+    }
 }
 
 /// Degrees `(momenta, positions)` of a function.
@@ -823,13 +883,13 @@ fn new_integrals(
     // with non-decreasing indices so that each monomial comes once, with the largest degree
     // of its factors; the real and imaginary parts of those that lie in the space.
     let mut spanning: Vec<(i64, SparseVec<Rational>)> =
-        known.iter().map(|k| (0, k.1.clone())).collect();
+        known.iter().map(|k| (-1, k.1.clone())).collect();
     if let Some(&j) = problem.index.get(&(
         vec![0; problem.vars.len()],
         vec![0; problem.angles.len()],
         Trig::One,
     )) {
-        spanning.push((0, vec![(j, Rational::one())]));
+        spanning.push((-1, vec![(j, Rational::one())]));
     }
     let mut level: Vec<(usize, Expr, (i64, i64), i64)> = gens
         .iter()
@@ -855,10 +915,9 @@ fn new_integrals(
                     )));
                 }
                 let mu = (*mu).max(*gdeg);
-                if let (Some(re), Some(im)) = (
-                    problem.coordinates(&p.re()),
-                    problem.coordinates(&p.im()?),
-                ) {
+                if let (Some(re), Some(im)) =
+                    (problem.coordinates(&p.re()), problem.coordinates(&p.im()?))
+                {
                     for v in [re, im] {
                         if !v.is_empty() {
                             spanning.push((mu, v));
@@ -941,4 +1000,58 @@ fn new_integrals(
         new,
         products,
     })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::systems;
+
+    #[test]
+    fn new_integrals_at_one_to_one_are_the_four_linear_ones() {
+        let rotor = systems::harmonic_rotor();
+        let options = SearchOptions::new(SearchSpace::new(2, 2, 2))
+            .when(rotor.resonance(1, 1).unwrap())
+            .new_only();
+        let r = search(&rotor, &options).unwrap();
+        assert_eq!(r.dimensions_by_momenta_degree(), [1, 6, 20]);
+        assert!(r.all_symbolic());
+        let new = r.new.as_ref().unwrap();
+        assert_eq!(new.new.len(), 4);
+        assert_eq!(new.generated, 16);
+        for &i in &new.new {
+            let f = &r.basis[i];
+            assert_eq!((f.momenta_degree, f.trig_degree), (1, 1));
+        }
+    }
+
+    #[test]
+    fn off_resonance_there_is_no_trigonometric_integral() {
+        // At p_θ = 3Iω/2 nothing of trigonometric order ≤ 2 and degree ≤ 2 is conserved but
+        // the planar u(2) and the constants.
+        let rotor = systems::harmonic_rotor();
+        let options =
+            SearchOptions::new(SearchSpace::new(2, 2, 2)).when(rotor.resonance(3, 2).unwrap());
+        let r = search(&rotor, &options).unwrap();
+        assert!(r.basis.iter().all(|f| f.trig_degree == 0));
+        // 1, L and the quadratic H_x, H_y, G1 (times 2M) and L².
+        assert_eq!(r.basis.len(), 6);
+    }
+
+    #[test]
+    fn fixed_values_other_than_one_lift_the_same() {
+        let rotor = systems::harmonic_rotor();
+        let omega = rotor.var("omega");
+        let m = rotor.var("M");
+        let options = SearchOptions::new(SearchSpace::new(1, 1, 1))
+            .when(rotor.resonance(1, 1).unwrap())
+            .fix(omega, Rational::new(3, 2))
+            .fix(m, Rational::new(5, 7));
+        let r = search(&rotor, &options).unwrap();
+        let lifted: Vec<String> = r.basis.iter().map(|f| f.expr().to_string()).collect();
+        assert!(
+            lifted.contains(&"p_x cos θ + Mωx sin θ".to_string()),
+            "{lifted:?}"
+        );
+    }
 }

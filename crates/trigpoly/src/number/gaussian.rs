@@ -1,4 +1,4 @@
-//! Gaussian integers Z[i] and Gaussian rationals Q(i) = Q + iQ.
+//! Gaussian integers Z\[i\] and Gaussian rationals Q(i) = Q + iQ.
 
 use std::fmt;
 use std::ops::{Add, AddAssign, Div, DivAssign, Mul, MulAssign, Neg, Sub, SubAssign};

@@ -1,8 +1,8 @@
-//! Exact numbers: integers with a machine fast path, Q, Z[i], Q(i), and the two traits that let
+//! Exact numbers: integers with a machine fast path, Q, Z\[i\], Q(i), and the two traits that let
 //! one polynomial type serve both fields.
 //!
 //! A polynomial over a field `C` is stored as a rational *content* times a primitive polynomial
-//! over the integer ring `C::Int` (Z for Q, Z[i] for Q(i)), as FLINT's `fmpq_mpoly` does: the hot
+//! over the integer ring `C::Int` (Z for Q, Z\[i\] for Q(i)), as FLINT's `fmpq_mpoly` does: the hot
 //! loops then multiply machine integers, not fractions.
 
 mod gaussian;
@@ -17,7 +17,7 @@ pub use gaussian::{GaussianAcc, GaussianInteger, GaussianRational, ParseGaussian
 pub use integer::{Integer, IntegerAcc};
 pub use rational::{ParseRationalError, Rational};
 
-/// The integer ring under a coefficient field: `Integer` (Z) or `GaussianInteger` (Z[i]).
+/// The integer ring under a coefficient field: `Integer` (Z) or `GaussianInteger` (Z\[i\]).
 pub trait IntegerRing:
     Clone + PartialEq + Eq + Hash + Debug + Default + Send + Sync + 'static
 {
@@ -60,9 +60,9 @@ pub trait IntegerRing:
     /// The value of a wide accumulator.
     fn from_wide(w: Self::Wide) -> Self;
     /// Whether products of primitive elements are primitive (Gauss's lemma: true for Z, false
-    /// for Z[i] with primitivity taken componentwise, as `(1 + i)(1 − i) = 2` shows).
+    /// for Z\[i\] with primitivity taken componentwise, as `(1 + i)(1 − i) = 2` shows).
     const GAUSS_LEMMA: bool;
-    /// How many real products one `wide_add_mul` adds to a component (1 for Z, 2 for Z[i]).
+    /// How many real products one `wide_add_mul` adds to a component (1 for Z, 2 for Z\[i\]).
     const PRODUCTS_PER_COMPONENT: u32;
     /// `acc += a · b`.
     fn acc_add_mul(acc: &mut Self::Acc, a: &Self, b: &Self);
@@ -232,7 +232,7 @@ impl IntegerRing for GaussianInteger {
 pub trait Coefficient:
     Clone + PartialEq + Eq + Hash + Debug + Display + FromStr + Default + Send + Sync + 'static
 {
-    /// The integer ring: Z for Q, Z[i] for Q(i).
+    /// The integer ring: Z for Q, Z\[i\] for Q(i).
     type Int: IntegerRing;
     /// Whether the field contains `i` (so angles, `e^{iθ}`, can be represented).
     const HAS_I: bool;

@@ -7,11 +7,15 @@ use std::str::FromStr;
 
 use num_bigint::BigInt;
 use num_rational::BigRational;
-use num_traits::{One, Signed, Zero};
+use num_traits::{Signed, ToPrimitive, Zero};
 
 use super::Integer;
 
 /// An exact rational number in lowest terms with a positive denominator.
+///
+/// Values whose numerator and denominator fit an `i64` are kept in machine words and computed
+/// with `i128` intermediates; others are `num_rational::BigRational`. The representation is
+/// canonical (a value that fits is never big), so equality and hashing are structural.
 ///
 /// ```
 /// use trigpoly::Rational;
@@ -20,13 +24,81 @@ use super::Integer;
 /// assert_eq!((a + b).to_string(), "1");
 /// assert_eq!(Rational::new(-6, 8).to_string(), "-3/4");
 /// ```
-#[derive(Clone, PartialEq, Eq, Hash, PartialOrd, Ord, Default)]
-pub struct Rational(BigRational);
+#[derive(Clone, PartialEq, Eq, Hash)]
+pub struct Rational(Repr);
+
+#[derive(Clone, PartialEq, Eq, Hash)]
+enum Repr {
+    /// `num/den` with `den > 0` and `gcd(|num|, den) = 1`.
+    Small { num: i64, den: i64 },
+    /// A value whose numerator or denominator does not fit an `i64`.
+    Big(Box<BigRational>),
+}
+
+/// Stein's binary gcd on `u128`.
+fn gcd_u128(mut a: u128, mut b: u128) -> u128 {
+    if a == 0 {
+        return b;
+    }
+    if b == 0 {
+        return a;
+    }
+    let shift = (a | b).trailing_zeros();
+    a >>= a.trailing_zeros();
+    loop {
+        b >>= b.trailing_zeros();
+        if a > b {
+            std::mem::swap(&mut a, &mut b);
+        }
+        b -= a;
+        if b == 0 {
+            return a << shift;
+        }
+    }
+}
 
 impl Rational {
+    /// `num/den` from `i128` parts, reduced; `den` nonzero.
+    fn from_i128(num: i128, den: i128) -> Rational {
+        debug_assert!(den != 0);
+        let g = gcd_u128(num.unsigned_abs(), den.unsigned_abs()) as i128;
+        let (mut n, mut d) = (num / g, den / g);
+        if d < 0 {
+            // |n|, |d| ≤ 2^127 − 1 here unless they were i128::MIN, which the callers never pass.
+            n = -n;
+            d = -d;
+        }
+        match (i64::try_from(n), i64::try_from(d)) {
+            (Ok(num), Ok(den)) => Rational(Repr::Small { num, den }),
+            _ => Rational(Repr::Big(Box::new(BigRational::new(
+                BigInt::from(n),
+                BigInt::from(d),
+            )))),
+        }
+    }
+
+    /// The canonical form of a big rational.
+    fn from_big(v: BigRational) -> Rational {
+        match (v.numer().to_i64(), v.denom().to_i64()) {
+            (Some(num), Some(den)) => Rational(Repr::Small { num, den }),
+            _ => Rational(Repr::Big(Box::new(v))),
+        }
+    }
+
+    /// The value as a `BigRational`.
+    pub fn to_big_rational(&self) -> BigRational {
+        match &self.0 {
+            Repr::Small { num, den } => {
+                BigRational::new_raw(BigInt::from(*num), BigInt::from(*den))
+            }
+            Repr::Big(b) => (**b).clone(),
+        }
+    }
+
     /// `num/den`, reduced. Panics if `den == 0`.
     pub fn new(num: i64, den: i64) -> Rational {
-        Rational(BigRational::new(BigInt::from(num), BigInt::from(den)))
+        assert!(den != 0, "denominator is zero");
+        Rational::from_i128(num as i128, den as i128)
     }
 
     /// `num/den` from integers, reduced; `None` if `den` is zero.
@@ -34,120 +106,188 @@ impl Rational {
         if den.is_zero() {
             return None;
         }
-        Some(Rational(BigRational::new(num.to_bigint(), den.to_bigint())))
+        Some(match (num.to_i64(), den.to_i64()) {
+            (Some(n), Some(d)) => Rational::from_i128(n as i128, d as i128),
+            _ => Rational::from_big(BigRational::new(num.to_bigint(), den.to_bigint())),
+        })
     }
 
     /// Zero.
     pub fn zero() -> Rational {
-        Rational(BigRational::zero())
+        Rational(Repr::Small { num: 0, den: 1 })
     }
 
     /// One.
     pub fn one() -> Rational {
-        Rational(BigRational::one())
+        Rational(Repr::Small { num: 1, den: 1 })
     }
 
     /// Whether the value is zero.
     pub fn is_zero(&self) -> bool {
-        self.0.is_zero()
+        matches!(self.0, Repr::Small { num: 0, .. })
     }
 
     /// Whether the value is one.
     pub fn is_one(&self) -> bool {
-        self.0.is_one()
+        matches!(self.0, Repr::Small { num: 1, den: 1 })
     }
 
     /// Whether the value is negative.
     pub fn is_negative(&self) -> bool {
-        self.0.is_negative()
+        match &self.0 {
+            Repr::Small { num, .. } => *num < 0,
+            Repr::Big(b) => b.is_negative(),
+        }
     }
 
     /// Whether the value is an integer.
     pub fn is_integer(&self) -> bool {
-        self.0.is_integer()
+        match &self.0 {
+            Repr::Small { den, .. } => *den == 1,
+            Repr::Big(b) => b.is_integer(),
+        }
     }
 
     /// The numerator (carries the sign).
     pub fn numer(&self) -> Integer {
-        Integer::from_bigint(self.0.numer().clone())
+        match &self.0 {
+            Repr::Small { num, .. } => Integer::Small(*num),
+            Repr::Big(b) => Integer::from_bigint(b.numer().clone()),
+        }
     }
 
     /// The denominator (positive).
     pub fn denom(&self) -> Integer {
-        Integer::from_bigint(self.0.denom().clone())
+        match &self.0 {
+            Repr::Small { den, .. } => Integer::Small(*den),
+            Repr::Big(b) => Integer::from_bigint(b.denom().clone()),
+        }
     }
 
     /// The inverse, or `None` for zero.
     pub fn try_inv(&self) -> Option<Rational> {
         if self.is_zero() {
-            None
-        } else {
-            Some(Rational(self.0.recip()))
+            return None;
         }
+        Some(match &self.0 {
+            Repr::Small { num, den } => Rational::from_i128(*den as i128, *num as i128),
+            Repr::Big(b) => Rational::from_big(b.recip()),
+        })
     }
 
     /// Absolute value.
     pub fn abs(&self) -> Rational {
-        Rational(self.0.abs())
+        if self.is_negative() {
+            -self
+        } else {
+            self.clone()
+        }
     }
 
     /// `self^e` for any integer `e`; `None` for `0^e` with `e < 0`.
     pub fn pow(&self, e: i64) -> Option<Rational> {
-        if e < 0 && self.is_zero() {
-            return None;
+        let mut base = if e < 0 { self.try_inv()? } else { self.clone() };
+        let mut k = e.unsigned_abs();
+        let mut acc = Rational::one();
+        while k > 0 {
+            if k & 1 == 1 {
+                acc = &acc * &base;
+            }
+            k >>= 1;
+            if k > 0 {
+                base = &base * &base;
+            }
         }
-        let base = if e < 0 {
-            self.0.recip()
-        } else {
-            self.0.clone()
-        };
-        Some(Rational(num_traits::pow(base, e.unsigned_abs() as usize)))
+        Some(acc)
     }
 
     /// `gcd(a, b)` in the sense of contents: `gcd(numerators)/lcm(denominators)`, positive, so
     /// that `a/g` and `b/g` are coprime integers. `gcd(0, b) = |b|`.
     pub fn content_gcd(a: &Rational, b: &Rational) -> Rational {
+        if let (Repr::Small { num: n1, den: d1 }, Repr::Small { num: n2, den: d2 }) = (&a.0, &b.0) {
+            let g = gcd_u128(n1.unsigned_abs() as u128, n2.unsigned_abs() as u128);
+            let dg = gcd_u128(*d1 as u128, *d2 as u128);
+            let lcm = (*d1 as u128 / dg) * *d2 as u128;
+            if g == 0 {
+                return Rational::zero();
+            }
+            if let (Ok(g), Ok(l)) = (i128::try_from(g), i128::try_from(lcm)) {
+                return Rational::from_i128(g, l);
+            }
+        }
         let num = a.numer().gcd(&b.numer());
         let den = a.denom().lcm(&b.denom());
         Rational::from_fraction(&num, &den).expect("lcm of denominators is nonzero")
     }
 
-    /// The underlying `num_rational` value.
-    pub fn as_big_rational(&self) -> &BigRational {
-        &self.0
+    /// Compares with zero.
+    pub fn sign(&self) -> Ordering {
+        match &self.0 {
+            Repr::Small { num, .. } => num.cmp(&0),
+            Repr::Big(b) => (**b).cmp(&BigRational::zero()),
+        }
+    }
+}
+
+impl Default for Rational {
+    fn default() -> Self {
+        Rational::zero()
+    }
+}
+
+impl Ord for Rational {
+    fn cmp(&self, other: &Self) -> Ordering {
+        match (&self.0, &other.0) {
+            (Repr::Small { num: a, den: b }, Repr::Small { num: c, den: d }) => {
+                (*a as i128 * *d as i128).cmp(&(*c as i128 * *b as i128))
+            }
+            _ => self.to_big_rational().cmp(&other.to_big_rational()),
+        }
+    }
+}
+
+impl PartialOrd for Rational {
+    fn partial_cmp(&self, other: &Self) -> Option<Ordering> {
+        Some(self.cmp(other))
     }
 }
 
 impl From<BigRational> for Rational {
     fn from(v: BigRational) -> Self {
-        Rational(v)
+        Rational::from_big(v)
     }
 }
 
 impl From<Integer> for Rational {
     fn from(v: Integer) -> Self {
-        Rational(BigRational::from_integer(v.to_bigint()))
+        Rational::from(&v)
     }
 }
 
 impl From<&Integer> for Rational {
     fn from(v: &Integer) -> Self {
-        Rational(BigRational::from_integer(v.to_bigint()))
+        match v {
+            Integer::Small(n) => Rational(Repr::Small { num: *n, den: 1 }),
+            Integer::Big(b) => Rational(Repr::Big(Box::new(BigRational::from_integer(
+                (**b).clone(),
+            )))),
+        }
     }
 }
 
 impl From<i64> for Rational {
     fn from(v: i64) -> Self {
-        Rational(BigRational::from_integer(BigInt::from(v)))
+        Rational(Repr::Small { num: v, den: 1 })
     }
 }
 
 impl fmt::Display for Rational {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        if self.0.is_integer() {
-            write!(f, "{}", self.0.numer())
-        } else {
-            write!(f, "{}/{}", self.0.numer(), self.0.denom())
+        match &self.0 {
+            Repr::Small { num, den: 1 } => write!(f, "{num}"),
+            Repr::Small { num, den } => write!(f, "{num}/{den}"),
+            Repr::Big(b) if b.is_integer() => write!(f, "{}", b.numer()),
+            Repr::Big(b) => write!(f, "{}/{}", b.numer(), b.denom()),
         }
     }
 }
@@ -177,7 +317,7 @@ impl FromStr for Rational {
         if d.is_zero() {
             return Err(err());
         }
-        Ok(Rational(BigRational::new(n, d)))
+        Ok(Rational::from_big(BigRational::new(n, d)))
     }
 }
 
@@ -222,37 +362,79 @@ macro_rules! forward_binop {
 }
 pub(crate) use forward_binop;
 
-forward_binop!(Rational, Add, add, AddAssign, add_assign, |a, b| Rational(
-    &a.0 + &b.0
-));
-forward_binop!(Rational, Sub, sub, SubAssign, sub_assign, |a, b| Rational(
-    &a.0 - &b.0
-));
-forward_binop!(Rational, Mul, mul, MulAssign, mul_assign, |a, b| Rational(
-    &a.0 * &b.0
-));
-// Panics if the divisor is zero (use `try_inv` for a checked division).
-forward_binop!(Rational, Div, div, DivAssign, div_assign, |a, b| Rational(
-    &a.0 / &b.0
-));
+// a/b + c/d = (ad + cb)/(bd), in i128 for machine-word values.
+forward_binop!(
+    Rational,
+    Add,
+    add,
+    AddAssign,
+    add_assign,
+    |a, b| match (&a.0, &b.0) {
+        (Repr::Small { num: n1, den: d1 }, Repr::Small { num: n2, den: d2 }) =>
+            Rational::from_i128(
+                *n1 as i128 * *d2 as i128 + *n2 as i128 * *d1 as i128,
+                *d1 as i128 * *d2 as i128
+            ),
+        _ => Rational::from_big(a.to_big_rational() + b.to_big_rational()),
+    }
+);
+// a/b − c/d = (ad − cb)/(bd)
+forward_binop!(
+    Rational,
+    Sub,
+    sub,
+    SubAssign,
+    sub_assign,
+    |a, b| match (&a.0, &b.0) {
+        (Repr::Small { num: n1, den: d1 }, Repr::Small { num: n2, den: d2 }) =>
+            Rational::from_i128(
+                *n1 as i128 * *d2 as i128 - *n2 as i128 * *d1 as i128,
+                *d1 as i128 * *d2 as i128
+            ),
+        _ => Rational::from_big(a.to_big_rational() - b.to_big_rational()),
+    }
+);
+// (a/b)(c/d) = (ac)/(bd)
+forward_binop!(
+    Rational,
+    Mul,
+    mul,
+    MulAssign,
+    mul_assign,
+    |a, b| match (&a.0, &b.0) {
+        (Repr::Small { num: n1, den: d1 }, Repr::Small { num: n2, den: d2 }) => {
+            Rational::from_i128(*n1 as i128 * *n2 as i128, *d1 as i128 * *d2 as i128)
+        }
+        _ => Rational::from_big(a.to_big_rational() * b.to_big_rational()),
+    }
+);
+// (a/b)/(c/d) = (ad)/(bc). Panics if the divisor is zero (use `try_inv` for a checked division).
+forward_binop!(Rational, Div, div, DivAssign, div_assign, |a, b| {
+    assert!(!b.is_zero(), "division by zero");
+    match (&a.0, &b.0) {
+        (Repr::Small { num: n1, den: d1 }, Repr::Small { num: n2, den: d2 }) => {
+            Rational::from_i128(*n1 as i128 * *d2 as i128, *d1 as i128 * *n2 as i128)
+        }
+        _ => Rational::from_big(a.to_big_rational() / b.to_big_rational()),
+    }
+});
 
 impl Neg for &Rational {
     type Output = Rational;
     fn neg(self) -> Rational {
-        Rational(-&self.0)
+        match &self.0 {
+            Repr::Small { num, den } => match num.checked_neg() {
+                Some(n) => Rational(Repr::Small { num: n, den: *den }),
+                None => Rational::from_i128(-(*num as i128), *den as i128),
+            },
+            Repr::Big(b) => Rational::from_big(-(**b).clone()),
+        }
     }
 }
 
 impl Neg for Rational {
     type Output = Rational;
     fn neg(self) -> Rational {
-        Rational(-self.0)
-    }
-}
-
-impl Rational {
-    /// Compares with zero.
-    pub fn sign(&self) -> Ordering {
-        self.0.cmp(&BigRational::zero())
+        -&self
     }
 }

@@ -1,0 +1,497 @@
+//! Discovery: every statement of `docs/results.md`, asserted by running the command that
+//! produced it (the same text, which `results_md_quotes_every_command` finds in the note) and
+//! finding the quoted output in what it prints. Every command also exits 0, which means that
+//! every integral, bracket and relation it reports was proved by the engine.
+
+use std::process::Command;
+
+use superint::system_file::{load, LimitsOverride};
+
+/// Every command of `docs/results.md`, by name.
+const COMMANDS: &[(&str, &str)] = &[
+    (
+        "h11",
+        "superint search systems/harmonic-rotor.toml --when 'p_theta = I*omega' \
+         --momenta-degree 4 --positions-degree 4 --trig-degree 4",
+    ),
+    (
+        "h11-new",
+        "superint search systems/harmonic-rotor.toml --when 'p_theta = I*omega' \
+         --momenta-degree 4 --positions-degree 4 --trig-degree 4 --new-only",
+    ),
+    (
+        "h11-new-pq",
+        "superint search systems/harmonic-rotor.toml --when 'p_theta = I*omega' \
+         --momenta-degree 4 --positions-degree 4 --trig-degree 4 --new-only --known P_1_1,Q_1_1",
+    ),
+    (
+        "h11-closure",
+        "superint closure systems/harmonic-rotor.toml F1 F2 L G1 G2 P_1_1 Q_1_1 \
+         --when 'p_theta = I*omega' --degree 2",
+    ),
+    (
+        "h11-closure-rs",
+        "superint closure systems/harmonic-rotor.toml F1 F2 L G1 G2 P_1_1 Q_1_1 \
+         --define 'R_1_1=re((p_x - i*p_y + i*M*omega*(x - i*y))*exp(-i*theta))' \
+         --define 'S_1_1=im((p_x - i*p_y + i*M*omega*(x - i*y))*exp(-i*theta))' \
+         --when 'p_theta = I*omega' --degree 2",
+    ),
+    (
+        "h21-new",
+        "superint search systems/harmonic-rotor.toml --when 'p_theta = 2*I*omega' \
+         --momenta-degree 4 --positions-degree 4 --trig-degree 4 --new-only --known P_2_1,Q_2_1",
+    ),
+    (
+        "h21-closure",
+        "superint closure systems/harmonic-rotor.toml F1 F2 L G1 G2 P_2_1 Q_2_1 \
+         --define 'R_2_1=re((p_x - i*p_y + i*M*omega*(x - i*y))^2*exp(-i*theta))' \
+         --define 'S_2_1=im((p_x - i*p_y + i*M*omega*(x - i*y))^2*exp(-i*theta))' \
+         --define 'T_2_1=re(Z*(p_x - i*p_y + i*M*omega*(x - i*y))*exp(-i*theta))' \
+         --define 'U_2_1=im(Z*(p_x - i*p_y + i*M*omega*(x - i*y))*exp(-i*theta))' \
+         --when 'p_theta = 2*I*omega' --degree 2",
+    ),
+    (
+        "h12-new",
+        "superint search systems/harmonic-rotor.toml --when 'p_theta = I*omega/2' \
+         --momenta-degree 4 --positions-degree 4 --trig-degree 4 --new-only --known P_1_2,Q_1_2",
+    ),
+    (
+        "h12-closure",
+        "superint closure systems/harmonic-rotor.toml F1 F2 L G1 G2 P_1_2 Q_1_2 \
+         --define 'R_1_2=re((p_x - i*p_y + i*M*omega*(x - i*y))*exp(-2*i*theta))' \
+         --define 'S_1_2=im((p_x - i*p_y + i*M*omega*(x - i*y))*exp(-2*i*theta))' \
+         --when 'p_theta = I*omega/2' --degree 2",
+    ),
+    (
+        "h23-new",
+        "superint search systems/harmonic-rotor.toml --when 'p_theta = 2*I*omega/3' \
+         --momenta-degree 4 --positions-degree 4 --trig-degree 4 --new-only --known P_2_3,Q_2_3",
+    ),
+    (
+        "h23-closure",
+        "superint closure systems/harmonic-rotor.toml F1 F2 L G1 G2 P_2_3 Q_2_3 \
+         --define 'R_2_3=re((p_x - i*p_y + i*M*omega*(x - i*y))^2*exp(-3*i*theta))' \
+         --define 'S_2_3=im((p_x - i*p_y + i*M*omega*(x - i*y))^2*exp(-3*i*theta))' \
+         --define 'T_2_3=re(Z*(p_x - i*p_y + i*M*omega*(x - i*y))*exp(-3*i*theta))' \
+         --define 'U_2_3=im(Z*(p_x - i*p_y + i*M*omega*(x - i*y))*exp(-3*i*theta))' \
+         --when 'p_theta = 2*I*omega/3' --degree 2",
+    ),
+    (
+        "g11-new",
+        "superint search systems/gravity-rotor.toml --when 'p_theta = I*omega' \
+         --momenta-degree 4 --positions-degree 4 --trig-degree 4 --new-only",
+    ),
+    (
+        "g11-closure",
+        "superint closure systems/gravity-rotor.toml Hp F2 Lp G1p G2p Pp_1_1 Qp_1_1 \
+         --define 'Hp=F1 - F2' \
+         --define 'Rp_1_1=re((p_x - i*p_y + i*M*omega*(x - i*yp))*exp(-i*theta))' \
+         --define 'Sp_1_1=im((p_x - i*p_y + i*M*omega*(x - i*yp))*exp(-i*theta))' \
+         --when 'p_theta = I*omega' --degree 2",
+    ),
+    (
+        "g11-closure-f1",
+        "superint closure systems/gravity-rotor.toml F1 F2 Lp G1p G2p Pp_1_1 Qp_1_1 \
+         --when 'p_theta = I*omega' --degree 2",
+    ),
+    (
+        "a35-new",
+        "superint search systems/anisotropic-3-5-rotor.toml --when 'p_theta = I*omega' \
+         --momenta-degree 3 --positions-degree 3 --trig-degree 5 --new-only",
+    ),
+    (
+        "a35-closure",
+        "superint closure systems/anisotropic-3-5-rotor.toml Hx Hy F2 \
+         --define 'J1=re(Ax*exp(-3*i*theta))' --define 'J2=im(Ax*exp(-3*i*theta))' \
+         --define 'Y1=re(Ay*exp(-5*i*theta))' --define 'Y2=im(Ay*exp(-5*i*theta))' \
+         --when 'p_theta = I*omega' --degree 2",
+    ),
+    (
+        "a12-new",
+        "superint search --system anisotropic-1-2 --when 'p_theta = I*omega' \
+         --momenta-degree 3 --positions-degree 3 --trig-degree 3 --new-only",
+    ),
+    (
+        "sw1",
+        "superint search systems/smorodinsky-winternitz-i.toml --momenta-degree 2 \
+         --positions-degree 4 --trig-degree 0 --laurent",
+    ),
+    (
+        "sw2",
+        "superint search systems/smorodinsky-winternitz-ii.toml --momenta-degree 2 \
+         --positions-degree 4 --trig-degree 0 --laurent",
+    ),
+    (
+        "su2",
+        "superint closure systems/harmonic-rotor.toml F1 F2 L G1 G2 --degree 2",
+    ),
+];
+
+/// The words of a command line, single quotes grouping.
+fn words(command: &str) -> Vec<String> {
+    let mut out = Vec::new();
+    let mut word = String::new();
+    let mut quoted = false;
+    let mut any = false;
+    for c in command.chars() {
+        match c {
+            '\'' => {
+                quoted = !quoted;
+                any = true;
+            }
+            ' ' if !quoted => {
+                if any {
+                    out.push(std::mem::take(&mut word));
+                    any = false;
+                }
+            }
+            _ => {
+                word.push(c);
+                any = true;
+            }
+        }
+    }
+    if any {
+        out.push(word);
+    }
+    out
+}
+
+/// A system file of `systems/`, loaded.
+fn system_file(name: &str) -> superint::system_file::LoadedSystem {
+    let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR"))
+        .join("systems")
+        .join(name);
+    load(&path, &LimitsOverride::default()).expect("the file loads")
+}
+
+/// Whitespace runs as one space, so that wrapped and padded lines compare.
+fn normalize(s: &str) -> String {
+    s.split_whitespace().collect::<Vec<_>>().join(" ")
+}
+
+/// Runs the named command of the note (with `--no-timings`), expects exit 0, returns stdout.
+fn run(name: &str) -> String {
+    let command = COMMANDS
+        .iter()
+        .find(|c| c.0 == name)
+        .unwrap_or_else(|| panic!("no command {name}"))
+        .1;
+    let args = words(command);
+    assert_eq!(args[0], "superint");
+    let out = Command::new(env!("CARGO_BIN_EXE_superint"))
+        .args(&args[1..])
+        .arg("--no-timings")
+        .current_dir(env!("CARGO_MANIFEST_DIR"))
+        .output()
+        .expect("the superint binary runs");
+    let stdout = String::from_utf8(out.stdout).expect("UTF-8");
+    assert_eq!(
+        out.status.code(),
+        Some(0),
+        "{command}\nstdout:\n{stdout}\nstderr:\n{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    stdout
+}
+
+/// Runs the named command and asserts that each expected piece of output appears.
+#[track_caller]
+fn expect(name: &str, pieces: &[&str]) -> String {
+    let out = run(name);
+    let flat = normalize(&out);
+    for p in pieces {
+        assert!(
+            flat.contains(&normalize(p)),
+            "`{name}` does not print {p:?}; it printed:\n{out}"
+        );
+    }
+    out
+}
+
+#[test]
+fn results_md_quotes_every_command() {
+    let note = std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/docs/results.md"))
+        .expect("docs/results.md exists");
+    let flat = normalize(&note.replace("\\\n", " "));
+    for (name, command) in COMMANDS {
+        assert!(
+            flat.contains(&normalize(command)),
+            "docs/results.md does not show the command `{name}`: {command}"
+        );
+    }
+}
+
+#[test]
+fn harmonic_1_1_dimensions_and_basis() {
+    expect(
+        "h11",
+        &[
+            "Dimension of the space of integrals: 105. By degree in the momenta: ≤ 0: 1, \
+             ≤ 1: 6, ≤ 2: 20, ≤ 3: 50, ≤ 4: 105.",
+            "Momenta degree exactly 1: 1 of order 0, 4 of order 1.",
+            "I2 = x p_y − y p_x",
+            "I3 = p_y cos θ + Mωy sin θ",
+            "I5 = p_x cos θ + Mωx sin θ",
+            "I9 = p_x² + M²ω²x²",
+            "then each basis element was lifted back to symbolic parameters by homogeneity and \
+             proved symbolically",
+            "105 claims: 105 proved, 0 refuted",
+        ],
+    );
+}
+
+#[test]
+fn harmonic_1_1_new_integrals() {
+    expect(
+        "h11-new",
+        &[
+            "Known integrals in the space: H, L, G1, G2.",
+            "the generated ones span 101 of the 105 dimensions",
+            "I3 = p_y cos θ + Mωy sin θ",
+            "I4 = −Mωy cos θ + p_y sin θ",
+            "I5 = p_x cos θ + Mωx sin θ",
+            "I6 = −Mωx cos θ + p_x sin θ",
+            "A5 (k = 1) = p_x + iMωx",
+        ],
+    );
+    expect(
+        "h11-new-pq",
+        &[
+            "Known integrals in the space: H, L, G1, G2, P_1_1, Q_1_1.",
+            "the generated ones span 103 of the 105 dimensions",
+            "I3 = p_y cos θ + Mωy sin θ",
+            "I4 = −Mωy cos θ + p_y sin θ",
+            "3 claims: 3 proved",
+        ],
+    );
+}
+
+#[test]
+fn harmonic_1_1_closure() {
+    expect(
+        "h11-closure",
+        &[
+            "Not a polynomial of degree ≤ 2 in the generators (shown as expressions): \
+             {G1, P_1_1}, {G1, Q_1_1}, {G2, P_1_1}, {G2, Q_1_1}.",
+            "{F2, P_1_1} = −ω Q_1_1",
+            "{L, P_1_1} = Q_1_1",
+            "{P_1_1, Q_1_1} = −2Mω",
+            "F2 = ω²I/2",
+            "ω⁴I² + 4 F1² = 4ω²I F1 + 4ω²L² + 16 G1² + 4 G2²",
+            "Mω²I + P_1_1² + Q_1_1² = 2MωL + 2M F1",
+        ],
+    );
+    expect(
+        "h11-closure-rs",
+        &[
+            "The table closes",
+            "{G1, P_1_1} = ω R_1_1/2",
+            "{G2, P_1_1} = ω S_1_1",
+            "{G1, R_1_1} = −ω P_1_1/2",
+            "{R_1_1, S_1_1} = −2Mω",
+            "2M G2 = P_1_1 R_1_1 + Q_1_1 S_1_1",
+            "4M G1 + P_1_1 S_1_1 = Q_1_1 R_1_1",
+            "Mω²I + 2MωL + R_1_1² + S_1_1² = 2M F1",
+            "11 claims: 11 proved, 0 refuted",
+        ],
+    );
+    // The two circular modes commute: {P, R} = {P, S} = {Q, R} = {Q, S} = 0.
+    let file = system_file("harmonic-rotor.toml");
+    let parse = |s: &str| file.parse_argument(s).expect("parses");
+    let w = "(p_x - i*p_y + i*M*omega*(x - i*y))*exp(-i*theta)";
+    for a in ["P_1_1", "Q_1_1"] {
+        for b in [format!("re({w})"), format!("im({w})")] {
+            let bracket = file.system.bracket(&parse(a), &parse(&b)).unwrap();
+            assert!(bracket.is_zero(), "{{{a}, {b}}} = {bracket}");
+        }
+    }
+}
+
+#[test]
+fn harmonic_2_1() {
+    expect(
+        "h21-new",
+        &[
+            "Dimension of the space of integrals: 57. By degree in the momenta: ≤ 0: 1, \
+             ≤ 1: 2, ≤ 2: 12, ≤ 3: 22, ≤ 4: 57.",
+            "the generated ones span 53 of the 57 dimensions",
+            "A7 (k = 1) = p_y² + 2iMωy p_y − M²ω²y²",
+            "A9 (k = 1) = p_x p_y + iMωx p_y + iMωy p_x − M²ω²xy",
+        ],
+    );
+    expect(
+        "h21-closure",
+        &[
+            "The table closes",
+            "{G1, P_2_1} = ω T_2_1",
+            "{P_2_1, Q_2_1} = 32M²ω³I − 16M²ω²L − 16M²ω F1",
+            "{T_2_1, U_2_1} = 16M²ω³I − 8M²ω F1",
+            "16M² G1² + P_2_1 R_2_1 = T_2_1²",
+            "22 claims: 22 proved, 0 refuted",
+        ],
+    );
+}
+
+#[test]
+fn harmonic_1_2() {
+    expect(
+        "h12-new",
+        &[
+            "Dimension of the space of integrals: 79. By degree in the momenta: ≤ 0: 1, \
+             ≤ 1: 6, ≤ 2: 20, ≤ 3: 42, ≤ 4: 79.",
+            "the generated ones span 77 of the 79 dimensions",
+            "A3 (k = 2) = p_y + iMωy",
+        ],
+    );
+    expect(
+        "h12-closure",
+        &[
+            "The table closes",
+            "{G1, P_1_2} = ω R_1_2/2",
+            "{P_1_2, Q_1_2} = −2Mω",
+            "Mω²I + 4 P_1_2² + 4 Q_1_2² = 8MωL + 8M F1",
+        ],
+    );
+}
+
+#[test]
+fn harmonic_2_3() {
+    expect(
+        "h23-new",
+        &[
+            "Dimension of the space of integrals: 47. By degree in the momenta: ≤ 0: 1, \
+             ≤ 1: 2, ≤ 2: 12, ≤ 3: 22, ≤ 4: 47.",
+            "the generated ones span 43 of the 47 dimensions",
+            "A7 (k = 3) = p_y² + 2iMωy p_y − M²ω²y²",
+        ],
+    );
+    expect(
+        "h23-closure",
+        &[
+            "The table closes",
+            "{G1, P_2_3} = ω T_2_3",
+            "{P_2_3, Q_2_3} = 32M²ω³I/9 − 16M²ω²L − 16M²ω F1",
+        ],
+    );
+}
+
+#[test]
+fn gravity_1_1() {
+    expect(
+        "g11-new",
+        &[
+            "Dimension of the space of integrals: 105. By degree in the momenta: ≤ 0: 1, \
+             ≤ 1: 6, ≤ 2: 20, ≤ 3: 50, ≤ 4: 105.",
+            "Known integrals in the space: H, L', G1', G2'.",
+            "the generated ones span 101 of the 105 dimensions",
+            "I3 = p_y cos θ + (Mωy + Mg/ω) sin θ",
+            "I5 = p_x cos θ + Mωx sin θ",
+        ],
+    );
+    let out = expect(
+        "g11-closure",
+        &[
+            "The table closes",
+            "M²g⁴/ω⁴ + 4Mg² Hp/ω² + 4 Hp² = 4ω² Lp² + 16 G1p² + 4 G2p²",
+            "M²g²/ω² + 2Mω Lp + 2M Hp = Pp_1_1² + Qp_1_1²",
+            "2M G2p = Pp_1_1 Rp_1_1 + Qp_1_1 Sp_1_1",
+            "11 claims: 11 proved, 0 refuted",
+        ],
+    );
+    assert!(!out.contains("only: no symbolic lift"), "{out}");
+    expect(
+        "g11-closure-f1",
+        &[
+            "F1² = Lp² + 4 G1p² + G2p²",
+            "proved at M = 1, ω = 1, I = 1, g = 1 only: no symbolic lift",
+        ],
+    );
+}
+
+#[test]
+fn anisotropic_3_5_c26() {
+    expect(
+        "a35-new",
+        &[
+            "Dimension of the space of integrals: 19. By degree in the momenta: ≤ 0: 1, \
+             ≤ 1: 5, ≤ 2: 9, ≤ 3: 19.",
+            "Known integrals in the space: H, H_x, H_y, Re K, Im K.",
+            "the generated ones span 15 of the 19 dimensions",
+            "A2 (k = 3) = p_x + 3iMωx",
+            "A4 (k = 5) = p_y + 5iMωy",
+        ],
+    );
+    expect(
+        "a35-closure",
+        &[
+            "The table closes",
+            "{J1, J2} = −3Mω",
+            "{Y1, Y2} = −5Mω",
+            "2M Hx = J1² + J2²",
+            "2M Hy = Y1² + Y2²",
+        ],
+    );
+    // C26's integrals are products of the two linear ones: with J = A_x e^{−3iθ} and
+    // Y = A_y e^{−5iθ}, K = A_x² Ā_y e^{−iθ} = J² Ȳ and A_x⁵ Ā_y³ = J⁵ Ȳ³.
+    let file = system_file("anisotropic-3-5-rotor.toml");
+    let parse = |s: &str| file.parse_argument(s).expect("parses");
+    let j = parse("Ax*exp(-3*i*theta)");
+    let ybar = parse("Aybar*exp(5*i*theta)");
+    let jj = j.checked_mul(&j).unwrap();
+    assert_eq!(jj.checked_mul(&ybar).unwrap(), parse("K"));
+    let j5 = j.checked_pow(5).unwrap();
+    let y3 = ybar.checked_pow(3).unwrap();
+    assert_eq!(j5.checked_mul(&y3).unwrap(), parse("A"));
+}
+
+#[test]
+fn anisotropic_1_2() {
+    expect(
+        "a12-new",
+        &[
+            "Dimension of the space of integrals: 27. By degree in the momenta: ≤ 0: 1, \
+             ≤ 1: 5, ≤ 2: 14, ≤ 3: 27.",
+            "the generated ones span 23 of the 27 dimensions",
+            "I2 = p_x cos θ + Mωx sin θ",
+            "A4 (k = 2) = p_y + 2iMωy",
+        ],
+    );
+}
+
+#[test]
+fn c27_smorodinsky_winternitz_second_order_integrals() {
+    expect(
+        "sw1",
+        &[
+            "Dimension of the space of integrals: 4.",
+            "I2 = p_y² + 2Mαy² + 2Mγ/y²",
+            "I3 = p_x² + 2Mαx² + 2Mβ/x²",
+            "I4 = x² p_y² − 2xy p_x p_y + y² p_x² + 2Mγx²/y² + 2Mβy²/x²",
+            "4 claims: 4 proved, 0 refuted",
+        ],
+    );
+    expect(
+        "sw2",
+        &[
+            "Dimension of the space of integrals: 4.",
+            "I2 = p_y² + 8Mαy² + 2Mγy",
+            "I3 = p_x² + 2Mαx² + 2Mβ/x²",
+            "I4 = 2x p_x p_y − 2y p_x² + 4Mαx²y + Mγx² − 4Mβy/x²",
+            "4 claims: 4 proved, 0 refuted",
+        ],
+    );
+}
+
+#[test]
+fn su2_and_its_casimir() {
+    expect(
+        "su2",
+        &[
+            "{L, G1} = −G2",
+            "{L, G2} = 4 G1",
+            "{G1, G2} = −ω²L",
+            "ω²L² + 2 F1 F2 + 4 G1² + G2² = F1² + F2²",
+        ],
+    );
+}
