@@ -15,6 +15,7 @@ use std::fmt;
 use std::str::FromStr;
 
 use brackets::{systems, Claim, EngineError, System};
+use rayon::prelude::*;
 use trigpoly::{Expr, Poly, Rational, VarSet};
 
 /// One workload with its size.
@@ -60,18 +61,23 @@ impl From<trigpoly::AlgebraError> for WorkloadError {
 }
 
 /// `{P, H}` and `{Q, H}` at `p_θ = mIω/n` for one pair; returns the terms of `P` and `Q`.
+/// The two brackets are independent: with more than one thread they run side by side.
 fn resonant_pair(rotor: &System, m: i64, n: i64) -> Result<usize, WorkloadError> {
     let res = rotor.resonant("Z", m, n)?;
     let resonance = rotor.resonance(m, n)?;
-    for f in [&res.p, &res.q] {
+    let check = |f: &Expr| -> Result<(), WorkloadError> {
         let claim = Claim::new("W1", "{P, H} = 0", rotor.flow(f)?, Expr::zero(rotor.vars()))
             .when(resonance.clone());
-        if !claim.residual()?.is_zero() {
-            return Err(WorkloadError::NotZero(format!(
+        if claim.residual()?.is_zero() {
+            Ok(())
+        } else {
+            Err(WorkloadError::NotZero(format!(
                 "{{P_{{{m},{n}}}, H}} at resonance"
-            )));
+            )))
         }
-    }
+    };
+    let (p, q) = rayon::join(|| check(&res.p), || check(&res.q));
+    p.and(q)?;
     Ok(res.p.len() + res.q.len())
 }
 
@@ -81,12 +87,16 @@ impl Workload {
         match *self {
             Workload::Tower(n) => {
                 let rotor = systems::harmonic_rotor();
-                let mut terms = 0;
-                for m in 1..=n {
-                    for k in 1..=n {
-                        terms += resonant_pair(&rotor, m, k)?;
-                    }
-                }
+                // The pairs are independent; rayon spreads them over the threads of the pool
+                // the caller installed (one thread: the plain loop, in order).
+                let pairs: Vec<(i64, i64)> =
+                    (1..=n).flat_map(|m| (1..=n).map(move |k| (m, k))).collect();
+                let terms: usize = pairs
+                    .par_iter()
+                    .map(|&(m, k)| resonant_pair(&rotor, m, k))
+                    .collect::<Result<Vec<_>, _>>()?
+                    .into_iter()
+                    .sum();
                 Ok(Outcome {
                     terms,
                     zeros: (2 * n * n) as usize,

@@ -27,13 +27,15 @@ PYTHON = os.environ.get("PEERS_PYTHON", sys.executable)
 NAMES = {"tower": "W1 tower", "single": "W2 single", "fateman": "W3a Fateman",
          "pearce": "W3b Pearce", "algebra": "W4 algebra"}
 # (workload, size, tools)
-FULL = [("tower", 24, "superint flint singular"), ("single", 80, "superint flint singular"),
+FULL = [("tower", 24, "superint superint2 flint singular"),
+        ("single", 80, "superint superint2 flint singular"),
         ("fateman", 20, "superint flint singular"), ("pearce", 12, "superint flint singular"),
         ("algebra", 1000, "superint flint singular"),
         ("tower", 8, "superint sympy"), ("single", 20, "superint sympy"),
         ("fateman", 10, "superint sympy"), ("pearce", 4, "superint sympy"),
         ("algebra", 100, "superint sympy")]
-QUICK = [("tower", 8, "superint flint singular sympy"), ("single", 20, "superint flint singular sympy"),
+QUICK = [("tower", 8, "superint superint2 flint singular sympy"),
+         ("single", 20, "superint superint2 flint singular sympy"),
          ("fateman", 10, "superint flint singular sympy"), ("pearce", 4, "superint flint singular sympy"),
          ("algebra", 100, "superint flint singular sympy")]
 EXPECTED_ZEROS = {"tower": lambda n: 2 * n * n, "single": lambda n: 2, "fateman": lambda n: 0,
@@ -43,6 +45,8 @@ EXPECTED_ZEROS = {"tower": lambda n: 2 * n * n, "single": lambda n: 2, "fateman"
 def command(tool, workload, size):
     if tool == "superint":
         return [SUPERINT, "bench", workload, str(size)], None
+    if tool == "superint2":  # the same on two threads (W1 pairs and W2 brackets in parallel)
+        return [SUPERINT, "bench", workload, str(size), "--threads", "2"], None
     if tool in ("flint", "sympy"):
         return [PYTHON, os.path.join(HERE, "peers.py"), tool, workload, str(size)], None
     if tool == "singular":
@@ -111,12 +115,13 @@ def main():
 def print_table(rows, memory, markdown, repeats):
     peers = ["flint", "singular", "sympy"]
     label = {"flint": "python-flint", "singular": "Singular", "sympy": "SymPy"}
-    head = ["workload", "size", "superint terms", "superint s"]
+    head = ["workload", "size", "superint terms", "superint s", "superint 2 threads s"]
     for p in peers:
         head += [f"{label[p]} s", f"ratio vs {label[p]}"]
     lines = []
     for workload, size, med, terms in rows:
-        cells = [NAMES[workload], str(size), str(terms), f"{med['superint']:.4f}"]
+        two = f"{med['superint2']:.4f}" if "superint2" in med else ""
+        cells = [NAMES[workload], str(size), str(terms), f"{med['superint']:.4f}", two]
         for p in peers:
             if p in med:
                 cells += [f"{med[p]:.4f}", f"{med['superint'] / med[p]:.3g}"]
@@ -132,8 +137,9 @@ def print_table(rows, memory, markdown, repeats):
         widths = [max(len(r[k]) for r in [head] + lines) for k in range(len(head))]
         for r in [head] + lines:
             print("  ".join(c.rjust(w) for c, w in zip(r, widths)))
-    print(f"\nmedian of {repeats} runs per tool, tools alternating; ratio = superint / peer "
-          "(below 1: superint is faster); every run reported the identities as exact zeros.")
+    print(f"\nmedian of {repeats} runs per tool, tools alternating; ratio = single-threaded "
+          "superint / peer (below 1: superint is faster); every run reported the identities as "
+          "exact zeros.")
     if memory:
         print("peak memory (max RSS) of W1: " + ", ".join(
             f"{label.get(t, t)} {kib / 1024:.1f} MiB" for t, kib in memory.items()))

@@ -13,7 +13,8 @@ Examples:
   superint bench W2 80        one pair m = n = 80
   superint bench fateman 20   the Fateman product f·(f + 1), f = (1 + x + y + z + t)^20
   superint bench pearce 12    the sparse Pearce product
-  superint bench W4 1000      the su(2) table and the Casimir, 1000 times";
+  superint bench W4 1000      the su(2) table and the Casimir, 1000 times
+  superint bench W1 24 --threads 2   the pairs spread over two threads";
 
 /// Arguments of `superint bench`.
 #[derive(Debug, Args)]
@@ -23,18 +24,26 @@ pub struct BenchArgs {
     /// Its size (N for W1, m for W2, the exponent for W3, repetitions for W4).
     #[arg(value_parser = clap::value_parser!(i64).range(1..=100_000))]
     size: i64,
+    /// Threads for the workloads that have independent parts (W1 pairs, W2 brackets); 1 runs
+    /// everything on the calling thread.
+    #[arg(long, default_value_t = 1, value_parser = clap::value_parser!(u16).range(1..=256))]
+    threads: u16,
 }
 
 /// Runs the workload once and prints what it computed and how long it took.
 pub fn run(args: &BenchArgs) -> anyhow::Result<bool> {
     let workload = Workload::new(&args.workload, args.size)?;
+    let pool = rayon::ThreadPoolBuilder::new()
+        .num_threads(args.threads as usize)
+        .build()?;
     let start = Instant::now();
-    let outcome = workload
-        .run()
+    let outcome = pool
+        .install(|| workload.run())
         .with_context(|| format!("workload {workload}"))?;
     // Wall-clock time is reported, never used to decide anything.
     let seconds = start.elapsed().as_secs_f64();
     println!("workload: {workload}");
+    println!("threads: {}", args.threads);
     println!("zeros: {}", outcome.zeros);
     println!("seconds: {seconds:.6}");
     println!("terms: {}", outcome.terms);

@@ -305,3 +305,21 @@ fn cli_every_help_shows_an_example() {
     }
     assert!(run(&["--version"], 0).starts_with("superint "));
 }
+
+/// `superint bench W SIZE` runs a workload once; the last two lines are `seconds:` and
+/// `terms:`, which the peer comparison reads. The term counts are exact facts: W3a(4) is
+/// `f·(f + 1)` with `C(12, 4) = 495` terms, and one or two threads find the same W1.
+#[test]
+fn cli_bench_prints_seconds_and_terms_last() {
+    let out = run(&["bench", "fateman", "4"], 0);
+    let lines: Vec<&str> = out.lines().collect();
+    let n = lines.len();
+    assert!(lines[n - 2].starts_with("seconds: "), "{out}");
+    assert_eq!(lines[n - 1], "terms: 495");
+    let one = run(&["bench", "W1", "3"], 0);
+    let two = run(&["bench", "W1", "3", "--threads", "2"], 0);
+    let terms = |s: &str| s.lines().last().map(str::to_string);
+    assert_eq!(terms(&one), terms(&two));
+    assert!(one.contains("zeros: 18"), "{one}");
+    run(&["bench", "W9", "3"], 2);
+}
