@@ -10,6 +10,7 @@ use std::fmt;
 use std::ops::{Add, AddAssign, Mul, MulAssign, Neg, Sub, SubAssign};
 use std::str::FromStr;
 
+use super::gcd::binary_gcd;
 use num_bigint::BigInt;
 use num_integer::Integer as _;
 use num_traits::{One, Signed, ToPrimitive, Zero};
@@ -163,28 +164,6 @@ impl Integer {
         match self {
             Integer::Small(v) => 64 - v.unsigned_abs().leading_zeros() as u64,
             Integer::Big(b) => b.bits(),
-        }
-    }
-}
-
-/// Stein's binary gcd on machine words.
-fn binary_gcd(mut a: u64, mut b: u64) -> u64 {
-    if a == 0 {
-        return b;
-    }
-    if b == 0 {
-        return a;
-    }
-    let shift = (a | b).trailing_zeros();
-    a >>= a.trailing_zeros();
-    loop {
-        b >>= b.trailing_zeros();
-        if a > b {
-            std::mem::swap(&mut a, &mut b);
-        }
-        b -= a;
-        if b == 0 {
-            return a << shift;
         }
     }
 }

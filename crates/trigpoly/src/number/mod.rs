@@ -6,6 +6,7 @@
 //! loops then multiply machine integers, not fractions.
 
 mod gaussian;
+mod gcd;
 mod integer;
 mod rational;
 

@@ -9,6 +9,7 @@ use num_bigint::BigInt;
 use num_rational::BigRational;
 use num_traits::{Signed, ToPrimitive, Zero};
 
+use super::gcd::gcd_u128;
 use super::Integer;
 
 /// An exact rational number in lowest terms with a positive denominator.
@@ -33,28 +34,6 @@ enum Repr {
     Small { num: i64, den: i64 },
     /// A value whose numerator or denominator does not fit an `i64`.
     Big(Box<BigRational>),
-}
-
-/// Stein's binary gcd on `u128`.
-fn gcd_u128(mut a: u128, mut b: u128) -> u128 {
-    if a == 0 {
-        return b;
-    }
-    if b == 0 {
-        return a;
-    }
-    let shift = (a | b).trailing_zeros();
-    a >>= a.trailing_zeros();
-    loop {
-        b >>= b.trailing_zeros();
-        if a > b {
-            std::mem::swap(&mut a, &mut b);
-        }
-        b -= a;
-        if b == 0 {
-            return a << shift;
-        }
-    }
 }
 
 impl Rational {
