@@ -103,6 +103,12 @@ pub fn eigen_proof(system: &System, ladder: &str) -> Result<EigenProof, EngineEr
     let i_omega = system.parse("i*omega")?;
     let i_big_omega = system.parse("i*p_theta/I")?;
     let name = system.display_name(ladder).to_string();
+    // The conjugate's own name if the system has one (`Z̄`), else `conj Z`.
+    let bar = system
+        .functions()
+        .iter()
+        .find(|f| f.expr == zbar)
+        .map_or_else(|| format!("conj {name}"), |f| f.display.clone());
     let fact = |f: &Expr, lambda: &Expr, statement: String| -> Result<EigenFact, EngineError> {
         let holds = system
             .flow(f)?
@@ -117,11 +123,7 @@ pub fn eigen_proof(system: &System, ladder: &str) -> Result<EigenProof, EngineEr
             &-&i_big_omega,
             "{e^{−iθ}, H} = −iΩ e^{−iθ}  (Ω = p_θ/I)".into(),
         )?,
-        fact(
-            &zbar,
-            &-&i_omega,
-            format!("{{conj {name}, H}} = −iω conj {name}"),
-        )?,
+        fact(&zbar, &-&i_omega, format!("{{{bar}, H}} = −iω {bar}"))?,
         fact(&ebar, &i_big_omega, "{e^{iθ}, H} = iΩ e^{iθ}".into())?,
     ];
     // The derivation property on the base functions: {AB, H} = A{B, H} + B{A, H}.
