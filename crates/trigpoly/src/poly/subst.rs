@@ -6,7 +6,7 @@ use std::sync::Arc;
 
 use super::Poly;
 use crate::error::AlgebraError;
-use crate::number::{Coefficient, GaussianRational, Rational};
+use crate::number::{Coefficient, GaussianRational, IntegerRing, Rational};
 use crate::varset::{Var, VarKind, VarSet};
 
 /// Packed exponents and coefficients of a group of terms.
@@ -90,6 +90,11 @@ impl<C: Coefficient> Poly<C> {
     /// `self` with `v ↦ value`: the terms are grouped by their exponent `e` of `v`, each group
     /// translated to `e = 0` (which keeps its order) and multiplied by `value^e`.
     fn subst_one(&self, v: Var, value: &Self) -> Result<Self, AlgebraError> {
+        if value.is_monomial() {
+            if let Some(result) = self.subst_term(v, value) {
+                return result;
+            }
+        }
         let layout = self.layout();
         let w = self.words();
         let j = v.index();
@@ -121,6 +126,91 @@ impl<C: Coefficient> Poly<C> {
             result = result.checked_add(&part.checked_mul(&power)?)?;
         }
         Ok(result)
+    }
+
+    /// `self` with `v ↦ c·m` for a single term, in one pass: a term with exponent `e` of `v` is
+    /// translated by `e·(m − v)` and scaled by `c^e`; the groups of equal `e` stay sorted, so
+    /// they are merged once and normalised once. `None` when this path does not apply (a
+    /// non-unit integer part raised to a negative power, or exponents near the limit), and
+    /// the general path decides.
+    fn subst_term(&self, v: Var, value: &Self) -> Option<Result<Self, AlgebraError>> {
+        let layout = self.layout();
+        let w = self.words();
+        let j = v.index();
+        let one = C::Int::from_integer(crate::number::Integer::ONE);
+        let (q, n) = (&value.content, &value.coeffs[0]);
+        // Exponents of v that occur, and whether n^e stays integral (n a unit, or e ≥ 0).
+        let exps_v: std::collections::BTreeSet<i64> = (0..self.len())
+            .map(|k| layout.get(self.exp(k), j))
+            .collect();
+        let unit_n = *n == one || *n == one.neg();
+        if !unit_n && exps_v.iter().any(|&e| e < 0) {
+            return None;
+        }
+        // Conservative exponent check from the overall bounds; near the limit, the general path.
+        let bounds = self.bounds();
+        let mv: Vec<i64> = (0..self.vars.len())
+            .map(|k| layout.get(value.exp(0), k))
+            .collect();
+        for &e in &exps_v {
+            for (k, var) in self.vars.vars().enumerate() {
+                let (lo, hi) = if k == j { (0, 0) } else { bounds[k] };
+                let shift = e.checked_mul(mv[k])?;
+                for x in [lo.checked_add(shift)?, hi.checked_add(shift)?] {
+                    if super::check_exponent(&self.vars, var, x).is_err() {
+                        return None;
+                    }
+                }
+            }
+        }
+        // One rational content for every group: q^e = d · s_e with s_e an integer.
+        let powers: Vec<(i64, Rational)> = exps_v
+            .iter()
+            .map(|&e| Some((e, q.pow(e)?)))
+            .collect::<Option<_>>()?;
+        let d = powers
+            .iter()
+            .skip(1)
+            .fold(powers[0].1.abs(), |g, (_, p)| Rational::content_gcd(&g, p));
+        let mut parts = Vec::with_capacity(powers.len());
+        let mut delta = vec![0u64; w];
+        for (e, qe) in &powers {
+            // delta = e·(m − v), word by word (wrapping, exact because the fields stay in range).
+            let mut unit = vec![0u64; w];
+            layout.unit(j, 1, &mut unit);
+            for (x, (mw, uw)) in delta.iter_mut().zip(value.exp(0).iter().zip(&unit)) {
+                *x = mw.wrapping_sub(*uw).wrapping_mul(*e as u64);
+            }
+            let scale = (qe / &d).numer();
+            // n^e; for e < 0 only n = ±1 gets here, and (±1)^e = (±1)^{|e|}.
+            let mut ne = one.clone();
+            for _ in 0..e.unsigned_abs() {
+                ne = ne.mul(n);
+            }
+            let factor = ne.scale(&scale);
+            let mut exps = Vec::new();
+            let mut coeffs = Vec::new();
+            for k in 0..self.len() {
+                let m = self.exp(k);
+                if layout.get(m, j) != *e {
+                    continue;
+                }
+                exps.extend(m.iter().zip(&delta).map(|(a, b)| a.wrapping_add(*b)));
+                coeffs.push(self.coeffs[k].mul(&factor));
+            }
+            parts.push(Self::raw(&self.vars, exps, coeffs));
+        }
+        let total = super::mul::merge_tree(parts);
+        if let Err(err) = Self::check_terms(&self.vars, total.len()) {
+            return Some(Err(err));
+        }
+        let content = &self.content * &d;
+        Some(Ok(Self::drop_zeros_and_normalize(
+            &self.vars,
+            content,
+            total.exps,
+            total.coeffs,
+        )))
     }
 
     /// Replaces `v` by a constant.
