@@ -256,6 +256,20 @@ pub struct TowerResult {
     pub claim: ClaimResult,
 }
 
+impl RankResult {
+    /// The names of the functions of the certificate's nonzero minor (its rows).
+    pub fn minor_functions(&self) -> Vec<&str> {
+        let rows = &self.certificate.minor_rows;
+        rows.iter().map(|&i| self.functions[i].as_str()).collect()
+    }
+
+    /// The coordinates of the certificate's nonzero minor (its columns).
+    pub fn minor_coordinates(&self) -> Vec<&trigpoly::Variable> {
+        let cols = &self.certificate.minor_cols;
+        cols.iter().map(|&v| self.vars.variable(v)).collect()
+    }
+}
+
 /// A certified rank of a Jacobian `∂(F_1, …, F_k)/∂(q, p)`.
 #[derive(Clone, Debug)]
 pub struct RankResult {

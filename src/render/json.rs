@@ -203,8 +203,8 @@ fn rank(r: &RankResult, section: u32) -> Value {
         "expected": r.expected,
         "rank": c.rank,
         "minor": {
-            "rows": c.minor_rows.iter().map(|&i| r.functions[i].clone()).collect::<Vec<_>>(),
-            "columns": c.minor_cols.iter().map(|&v| name(v)).collect::<Vec<_>>(),
+            "rows": r.minor_functions(),
+            "columns": r.minor_coordinates().iter().map(|v| v.name()).collect::<Vec<_>>(),
             "value": c.minor_value.to_string(),
         },
         "point": c.point.iter().map(|(v, value)| {

@@ -284,15 +284,15 @@ fn rank(out: &mut Vec<String>, r: &RankResult) {
     let mut rows = claim_rows(&r.claim);
     flush(out, &mut rows);
     let c = &r.certificate;
-    let fns: Vec<String> = c
-        .minor_rows
+    let fns: Vec<String> = r
+        .minor_functions()
         .iter()
-        .map(|&i| format!("${}$", math(&r.functions[i])))
+        .map(|f| format!("${}$", math(f)))
         .collect();
-    let cols: Vec<String> = c
-        .minor_cols
+    let cols: Vec<String> = r
+        .minor_coordinates()
         .iter()
-        .map(|&v| format!("${}$", r.vars.variable(v).latex()))
+        .map(|v| format!("${}$", v.latex()))
         .collect();
     out.push(r"\begin{itemize}".into());
     let at: Vec<String> = point(r, Style::Latex)

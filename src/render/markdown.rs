@@ -150,16 +150,8 @@ fn proof(p: &ProofResult) -> String {
 
 fn rank(r: &RankResult) -> String {
     let c = &r.certificate;
-    let rows: Vec<&str> = c
-        .minor_rows
-        .iter()
-        .map(|&i| r.functions[i].as_str())
-        .collect();
-    let cols: Vec<&str> = c
-        .minor_cols
-        .iter()
-        .map(|&v| r.vars.variable(v).unicode())
-        .collect();
+    let rows = r.minor_functions();
+    let cols: Vec<&str> = r.minor_coordinates().iter().map(|v| v.unicode()).collect();
     let point: Vec<String> = point(r, Style::Unicode).iter().map(|p| code(p)).collect();
     [
         claim(&r.claim),

@@ -295,16 +295,8 @@ pub(crate) fn upper_bound(r: &RankResult) -> String {
 fn rank(out: &mut Vec<String>, r: &RankResult) {
     verdict_line(out, &r.claim);
     let c = &r.certificate;
-    let rows: Vec<&str> = c
-        .minor_rows
-        .iter()
-        .map(|&i| r.functions[i].as_str())
-        .collect();
-    let cols: Vec<&str> = c
-        .minor_cols
-        .iter()
-        .map(|&v| r.vars.variable(v).unicode())
-        .collect();
+    let rows = r.minor_functions();
+    let cols: Vec<&str> = r.minor_coordinates().iter().map(|v| v.unicode()).collect();
     out.extend(wrap(
         &format!(
             "      ≥ {}: the minor ∂({})/∂({}) = {} ≠ 0 at",
