@@ -21,7 +21,7 @@ use std::hash::{Hash, Hasher};
 use std::sync::Arc;
 
 use crate::error::AlgebraError;
-use crate::number::{Coefficient, Integer, IntegerRing, Rational};
+use crate::number::{Coefficient, GaussianRational, Integer, IntegerRing, Rational};
 use crate::varset::{Layout, Var, VarKind, VarSet};
 
 pub use subst::Point;
@@ -121,12 +121,49 @@ impl<C: Coefficient> Poly<C> {
         vars: &Arc<VarSet>,
         terms: impl IntoIterator<Item = (C, Vec<i64>)>,
     ) -> Result<Self, AlgebraError> {
-        let mut acc = Self::zero(vars);
+        // Pack every term, sort once, combine equal monomials, then bring the coefficients to
+        // one rational content (a sum term by term would merge n times).
+        let w = vars.layout().words;
+        let mut packed: Vec<(Vec<u64>, GaussianRational)> = Vec::new();
         for (c, e) in terms {
             let powers: Vec<(Var, i64)> = vars.vars().zip(e).collect();
-            acc = acc.checked_add(&Self::monomial(vars, c, &powers)?)?;
+            let m = Self::monomial(vars, c.clone(), &powers)?;
+            if !m.is_zero() {
+                packed.push((m.exps, c.to_gaussian()));
+            }
         }
-        Ok(acc)
+        packed.sort_unstable_by(|a, b| b.0.cmp(&a.0));
+        let mut combined: Vec<(Vec<u64>, GaussianRational)> = Vec::with_capacity(packed.len());
+        for (key, c) in packed {
+            match combined.last_mut() {
+                Some(last) if last.0 == key => last.1 = &last.1 + &c,
+                _ => combined.push((key, c)),
+            }
+        }
+        let parts: Vec<(Rational, C::Int)> = combined
+            .iter()
+            .filter(|(_, c)| !c.is_zero())
+            .map(|(_, c)| {
+                C::from_gaussian(c)
+                    .expect("a sum of field elements")
+                    .split()
+            })
+            .collect();
+        let Some(first) = parts.first() else {
+            return Ok(Self::zero(vars));
+        };
+        let d = parts
+            .iter()
+            .skip(1)
+            .fold(first.0.abs(), |g, (q, _)| Rational::content_gcd(&g, q));
+        let mut exps = Vec::with_capacity(parts.len() * w);
+        let mut coeffs = Vec::with_capacity(parts.len());
+        for ((key, _), (q, n)) in combined.iter().filter(|(_, c)| !c.is_zero()).zip(parts) {
+            exps.extend_from_slice(key);
+            coeffs.push(n.scale(&(&q / &d).numer()));
+        }
+        Self::check_terms(vars, coeffs.len())?;
+        Ok(Self::from_sorted(vars, d, exps, coeffs))
     }
 
     /// The variable set.
