@@ -1,12 +1,10 @@
-//! Dense multiplication by Kronecker substitution, chunked over the output index range.
-//!
-//! Each monomial of the product's exponent box gets an index `Σ (e_j − lo_j)·stride_j` with the
-//! first variable most significant, so index order is the term order and `idx(a·b) =
-//! idx(a) + idx(b)`. The inputs are sorted, so for each term of `a` the partners in `b` that land
-//! in an output chunk form a contiguous run; a chunk of machine-word accumulators stays in
-//! cache, and is scanned once, in order, for the nonzero results. Used when the box is not much
-//! larger than the work and every coefficient product fits the accumulators.
+//! Dense multiplication on Kronecker indices (`kronecker.rs`), chunked over the output index
+//! range. The inputs are sorted, so for each term of `a` the partners in `b` that land in an
+//! output chunk form a contiguous run; a chunk of machine-word accumulators stays in cache, and
+//! is scanned once, in order, for the nonzero results. Used when the box is not much larger than
+//! the work and every coefficient product fits the accumulators.
 
+use super::kronecker::Kronecker;
 use crate::error::AlgebraError;
 use crate::number::IntegerRing;
 use crate::varset::Layout;
@@ -22,23 +20,15 @@ pub(crate) type Product<I> = (Vec<u64>, Vec<I>);
 /// The product by the dense method, or `None` when the method does not apply (box too large
 /// for the work, or coefficients too large for the accumulators).
 pub(crate) fn try_mul_dense<I: IntegerRing>(
+    kron: &Kronecker,
     layout: &Layout,
-    nvars: usize,
     a: (&[u64], &[I], &[(i64, i64)]),
     b: (&[u64], &[I], &[(i64, i64)]),
     max_terms: usize,
 ) -> Option<Result<Product<I>, AlgebraError>> {
-    let w = layout.words;
     let (n, m) = (a.1.len(), b.1.len());
     let work = (n as u64).saturating_mul(m as u64);
-    // The product's box.
-    let ranges: Vec<u64> =
-        a.2.iter()
-            .zip(b.2)
-            .map(|(ea, eb)| (ea.1 + eb.1 - ea.0 - eb.0 + 1) as u64)
-            .collect();
-    let size = ranges.iter().try_fold(1u64, |acc, &r| acc.checked_mul(r))?;
-    if size > work.saturating_mul(BOX_PER_PRODUCT) || size > 1 << 40 {
+    if kron.size() > work.saturating_mul(BOX_PER_PRODUCT) || kron.size() > 1 << 40 {
         return None;
     }
     // Coefficients must fit machine words, and sums of products the accumulators.
@@ -49,25 +39,13 @@ pub(crate) fn try_mul_dense<I: IntegerRing>(
     if bits(&small_a) + bits(&small_b) + terms_bits + I::PRODUCTS_PER_COMPONENT > 126 {
         return None;
     }
-    let mut strides = vec![1u64; nvars];
-    for j in (0..nvars.saturating_sub(1)).rev() {
-        strides[j] = strides[j + 1] * ranges[j + 1];
-    }
     // Kronecker indices, ascending (the inputs are sorted descending).
-    let index = |exps: &[u64], lo: &[(i64, i64)]| -> Vec<u64> {
-        let mut e = vec![0i64; nvars];
-        exps.chunks_exact(w)
-            .rev()
-            .map(|mono| {
-                layout.unpack_into(mono, &mut e);
-                (0..nvars)
-                    .map(|j| (e[j] - lo[j].0) as u64 * strides[j])
-                    .sum()
-            })
-            .collect()
+    let ascending = |mut v: Vec<u64>| {
+        v.reverse();
+        v
     };
-    let fa = index(a.0, a.2);
-    let gb = index(b.0, b.2);
+    let fa = ascending(kron.indices(layout, a.0, a.2));
+    let gb = ascending(kron.indices(layout, b.0, b.2));
     let ca: Vec<I::Small> = small_a.into_iter().rev().collect();
     let cb: Vec<I::Small> = small_b.into_iter().rev().collect();
     let zero = I::Wide::default();
@@ -116,15 +94,7 @@ pub(crate) fn try_mul_dense<I: IntegerRing>(
         }
         lo = hi;
     }
-    // Decode, descending.
-    let mut exps = vec![0u64; out_idx.len() * w];
-    let mut e = vec![0i64; nvars];
-    for (slot, &idx) in exps.chunks_exact_mut(w).zip(out_idx.iter().rev()) {
-        for j in 0..nvars {
-            e[j] = ((idx / strides[j]) % ranges[j]) as i64 + a.2[j].0 + b.2[j].0;
-        }
-        layout.pack(&e, slot);
-    }
+    out_idx.reverse();
     out_c.reverse();
-    Some(Ok((exps, out_c)))
+    Some(Ok((kron.decode(layout, &out_idx), out_c)))
 }

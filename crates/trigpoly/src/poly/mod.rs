@@ -10,6 +10,7 @@ mod arith;
 mod calculus;
 mod complex;
 mod dense;
+mod kronecker;
 mod mul;
 mod pow;
 mod subst;

@@ -1,18 +1,19 @@
 //! Multiplication: exponent bounds are checked once up front, so the inner loops add packed
-//! words without per-term overflow tests; products are accumulated without an allocation per
-//! term (machine-integer accumulators, one hash slot per distinct monomial), then sorted once.
+//! words without per-term overflow tests. Three methods, by shape: a short factor shifts and
+//! merges copies of the long one; a product whose exponent box is not much larger than the work
+//! goes dense (`dense.rs`); anything sparser goes through a heap (Johnson's method with
+//! Monagan and Pearce's lazy rows), which produces the terms in order, one machine-integer
+//! accumulator at a time, with a working set of one heap entry per term of the shorter factor.
 
-use std::hash::Hash;
-
-use rustc_hash::FxHashMap;
-
+use super::dense::try_mul_dense;
+use super::kronecker::Kronecker;
 use super::{check_exponent, Poly};
 use crate::error::AlgebraError;
 use crate::number::{Coefficient, IntegerRing};
-use crate::varset::Var;
+use crate::varset::{Layout, Var};
 
 /// A packed monomial of a fixed number of words, padded with zero words.
-pub(crate) trait Key: Copy + Eq + Hash + Ord {
+pub(crate) trait Key: Copy + Eq + Ord {
     fn load(s: &[u64]) -> Self;
     fn store(&self, out: &mut Vec<u64>, words: usize);
     fn mul(&self, other: &Self, bias: &Self) -> Self;
@@ -82,25 +83,47 @@ impl<C: Coefficient> Poly<C> {
         let (ba, bb) = (self.bounds(), other.bounds());
         check_sum_bounds(&self.vars, &ba, &bb)?;
         let limit = self.vars.limits().max_terms;
-        if let Some(result) = super::dense::try_mul_dense(
-            self.layout(),
-            self.vars.len(),
-            (&self.exps, &self.coeffs, &ba),
-            (&other.exps, &other.coeffs, &bb),
-            limit,
-        ) {
-            let (exps, coeffs) = result?;
-            return Ok(Self::product(&self.vars, content, exps, coeffs));
-        }
-        let (exps, coeffs) = dispatch_words!(
-            self.words(),
-            mul_hash,
-            self.layout().one(),
-            self.words(),
-            (&self.exps, &self.coeffs),
-            (&other.exps, &other.coeffs),
-            limit
-        )?;
+        let (exps, coeffs) = match Kronecker::new(&ba, &bb) {
+            Some(kron) => {
+                let layout = self.layout();
+                if let Some(result) = try_mul_dense(
+                    &kron,
+                    layout,
+                    (&self.exps, &self.coeffs, &ba),
+                    (&other.exps, &other.coeffs, &bb),
+                    limit,
+                ) {
+                    result?
+                } else {
+                    let (bs, bl) = if self.len() <= other.len() {
+                        (&ba, &bb)
+                    } else {
+                        (&bb, &ba)
+                    };
+                    let ka = kron.indices(layout, &small.exps, bs);
+                    let kb = kron.indices(layout, &big.exps, bl);
+                    let (pairs, coeffs) = heap_product(
+                        (&ka, &small.coeffs),
+                        (&kb, &big.coeffs),
+                        |x, y| x + y,
+                        limit,
+                    )?;
+                    (
+                        pair_monomials(layout, &small.exps, &big.exps, &pairs),
+                        coeffs,
+                    )
+                }
+            }
+            None => dispatch_words!(
+                self.words(),
+                mul_heap_packed,
+                self.layout().one(),
+                self.words(),
+                (&small.exps, &small.coeffs),
+                (&big.exps, &big.coeffs),
+                limit
+            )?,
+        };
         Self::check_terms(&self.vars, coeffs.len())?;
         Ok(Self::product(&self.vars, content, exps, coeffs))
     }
@@ -206,8 +229,8 @@ fn drop_zeros<I: IntegerRing>(exps: Vec<u64>, coeffs: Vec<I>, w: usize) -> (Vec<
     (e2, c2)
 }
 
-/// Sparse product by hashing: one accumulator per distinct monomial, sorted once at the end.
-fn mul_hash<K: Key, I: IntegerRing>(
+/// The heap product on packed monomials, for a box too large for Kronecker indices.
+fn mul_heap_packed<K: Key, I: IntegerRing>(
     bias: &[u64],
     w: usize,
     a: (&[u64], &[I]),
@@ -217,36 +240,144 @@ fn mul_hash<K: Key, I: IntegerRing>(
     let bias = K::load(bias);
     let ak: Vec<K> = a.0.chunks_exact(w).map(K::load).collect();
     let bk: Vec<K> = b.0.chunks_exact(w).map(K::load).collect();
-    let estimate = (ak.len() * bk.len()).min(1 << 20);
-    let mut index: FxHashMap<K, u32> = FxHashMap::default();
-    index.reserve(estimate / 4);
-    let mut keys: Vec<K> = Vec::new();
-    let mut accs: Vec<I::Acc> = Vec::new();
-    for (ka, ca) in ak.iter().zip(a.1) {
-        for (kb, cb) in bk.iter().zip(b.1) {
-            let k = ka.mul(kb, &bias);
-            let slot = *index.entry(k).or_insert_with(|| {
-                keys.push(k);
-                accs.push(I::Acc::default());
-                (keys.len() - 1) as u32
-            });
-            I::acc_add_mul(&mut accs[slot as usize], ca, cb);
-        }
-        if keys.len() > max_terms {
-            return Err(AlgebraError::TooManyTerms { limit: max_terms });
-        }
-    }
-    drop(index);
-    let mut order: Vec<u32> = (0..keys.len() as u32).collect();
-    order.sort_unstable_by(|&x, &y| keys[y as usize].cmp(&keys[x as usize]));
-    let mut exps = Vec::with_capacity(keys.len() * w);
-    let mut coeffs = Vec::with_capacity(keys.len());
-    for k in order {
-        let c = I::acc_finish(std::mem::take(&mut accs[k as usize]));
-        if !c.is_zero() {
-            keys[k as usize].store(&mut exps, w);
-            coeffs.push(c);
-        }
+    let (pairs, coeffs) = heap_product((&ak, a.1), (&bk, b.1), |x, y| x.mul(y, &bias), max_terms)?;
+    let mut exps = Vec::with_capacity(pairs.len() * w);
+    for &(i, j) in &pairs {
+        ak[i as usize]
+            .mul(&bk[j as usize], &bias)
+            .store(&mut exps, w);
     }
     Ok((exps, coeffs))
+}
+
+/// One row of the heap product: the next unmerged product `a_i·b_j` and its monomial.
+#[derive(Clone, Copy)]
+struct Entry<K> {
+    key: K,
+    i: u32,
+    j: u32,
+}
+
+/// A binary max-heap on `Entry::key` alone, whose top is replaced in place (the next product
+/// of the same row) and sifted down.
+struct RowHeap<K> {
+    v: Vec<Entry<K>>,
+}
+
+impl<K: Copy + Ord> RowHeap<K> {
+    fn top(&self) -> Option<&Entry<K>> {
+        self.v.first()
+    }
+
+    fn push(&mut self, e: Entry<K>) {
+        self.v.push(e);
+        let mut pos = self.v.len() - 1;
+        while pos > 0 {
+            let parent = (pos - 1) / 2;
+            if e.key <= self.v[parent].key {
+                break;
+            }
+            self.v[pos] = self.v[parent];
+            pos = parent;
+        }
+        self.v[pos] = e;
+    }
+
+    fn replace_top(&mut self, e: Entry<K>) {
+        let v = &mut self.v[..];
+        let end = v.len();
+        let mut pos = 0;
+        let mut child = 1;
+        while child < end {
+            if child + 1 < end && v[child].key < v[child + 1].key {
+                child += 1;
+            }
+            if e.key >= v[child].key {
+                break;
+            }
+            v[pos] = v[child];
+            pos = child;
+            child = 2 * pos + 1;
+        }
+        v[pos] = e;
+    }
+
+    fn pop_top(&mut self) {
+        let last = self.v.pop().expect("a nonempty heap");
+        if !self.v.is_empty() {
+            self.replace_top(last);
+        }
+    }
+}
+
+/// The terms of a heap product: for each, a pair `(i, j)` of factor terms whose product is its
+/// monomial, and its coefficient.
+type PairProduct<I> = (Vec<(u32, u32)>, Vec<I>);
+
+/// Sparse product by a heap over the rows of the shorter factor `a` (keys sorted descending,
+/// `mul` the monomial product): row `i` holds the next unmerged product `a_i·b_j`; the largest
+/// is taken, equal monomials are summed in one accumulator, and row `i + 1` enters only when
+/// `a_i·b_0` leaves (it is smaller than every product still to come from the rows before), so
+/// the heap never holds more than `len(a)` entries and the terms come out sorted. Returns, for
+/// each term, one pair `(i, j)` whose product is its monomial, and the coefficient.
+fn heap_product<K: Copy + Ord, I: IntegerRing>(
+    a: (&[K], &[I]),
+    b: (&[K], &[I]),
+    mul: impl Fn(&K, &K) -> K,
+    max_terms: usize,
+) -> Result<PairProduct<I>, AlgebraError> {
+    let (ak, bk) = (a.0, b.0);
+    let (n, m) = (ak.len(), bk.len());
+    let entry = |i: usize, j: usize| Entry {
+        key: mul(&ak[i], &bk[j]),
+        i: i as u32,
+        j: j as u32,
+    };
+    let mut heap = RowHeap {
+        v: Vec::with_capacity(n),
+    };
+    heap.push(entry(0, 0));
+    let mut pairs = Vec::new();
+    let mut coeffs = Vec::new();
+    while let Some(&Entry { key, .. }) = heap.top() {
+        let mut acc = I::Acc::default();
+        let mut last = (0, 0);
+        while let Some(&Entry { key: k, i, j }) = heap.top() {
+            if k != key {
+                break;
+            }
+            last = (i, j);
+            let (i, j) = (i as usize, j as usize);
+            I::acc_add_mul(&mut acc, &a.1[i], &b.1[j]);
+            if j + 1 < m {
+                heap.replace_top(entry(i, j + 1));
+            } else {
+                heap.pop_top();
+            }
+            if j == 0 && i + 1 < n {
+                // a_{i+1}·b_0 < a_i·b_0 = key: it cannot join this monomial's sum.
+                heap.push(entry(i + 1, 0));
+            }
+        }
+        let c = I::acc_finish(acc);
+        if !c.is_zero() {
+            pairs.push(last);
+            coeffs.push(c);
+            if coeffs.len() > max_terms {
+                return Err(AlgebraError::TooManyTerms { limit: max_terms });
+            }
+        }
+    }
+    Ok((pairs, coeffs))
+}
+
+/// The packed monomials `a_i·b_j` of the given pairs.
+fn pair_monomials(layout: &Layout, a: &[u64], b: &[u64], pairs: &[(u32, u32)]) -> Vec<u64> {
+    let w = layout.words;
+    let mut exps = vec![0u64; pairs.len() * w];
+    for (out, &(i, j)) in exps.chunks_exact_mut(w).zip(pairs) {
+        let (i, j) = (i as usize, j as usize);
+        layout.mul_into(&a[i * w..(i + 1) * w], &b[j * w..(j + 1) * w], out);
+    }
+    exps
 }

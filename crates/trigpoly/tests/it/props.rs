@@ -94,6 +94,26 @@ fn dense_poly() -> impl Strategy<Value = G> {
     )
 }
 
+/// A sparse polynomial in 16 coordinates with exponents up to ±900, 7 to 12 terms: the
+/// exponent box of a product of two (1801^16 cells) is too large for Kronecker indices, so the
+/// heap product runs on the packed monomials.
+fn wide_poly() -> impl Strategy<Value = Q> {
+    static VARS: std::sync::OnceLock<std::sync::Arc<trigpoly::VarSet>> = std::sync::OnceLock::new();
+    let vars = VARS
+        .get_or_init(|| {
+            (0..16)
+                .fold(trigpoly::VarSet::builder(), |b, k| {
+                    b.coordinate(&format!("x{k}"))
+                })
+                .build()
+                .expect("valid names")
+        })
+        .clone();
+    let exps = proptest::collection::vec(prop_oneof![2 => Just(0i64), 1 => -450i64..=450], 16);
+    proptest::collection::vec((rational(), exps), 7..13)
+        .prop_map(move |terms| Poly::from_terms(&vars, terms).expect("small exponents"))
+}
+
 /// `f · g` as `Σ_t f · t` over the terms `t` of `g`: each product by a single term is a
 /// translation, independent of the dense and hashed multiplication.
 fn product_by_terms<C: trigpoly::Coefficient>(f: &Poly<C>, g: &Poly<C>) -> Poly<C> {
@@ -199,10 +219,11 @@ proptest! {
         prop_assert_eq!(a.to_gaussian().to_rational(), Some(a));
     }
 
-    /// The product of two long polynomials (dense or hashed multiplication) equals the sum of
-    /// the products by single terms.
+    /// The product of two long polynomials (dense, or by a heap on Kronecker indices or on
+    /// packed monomials) equals the sum of the products by single terms.
     #[test]
-    fn ring_mul_agrees_with_sum_of_term_products(f in dense_poly(), g in dense_poly(), h in gpoly(10), k in gpoly(10)) {
+    fn ring_mul_agrees_with_sum_of_term_products(f in dense_poly(), g in dense_poly(), h in gpoly(10), k in gpoly(10), u in wide_poly(), v in wide_poly()) {
+        prop_assert_eq!(&u * &v, product_by_terms(&u, &v));
         prop_assert_eq!(&f * &g, product_by_terms(&f, &g));
         prop_assert_eq!(&h * &k, product_by_terms(&h, &k));
         let (fr, gr) = (f.re().to_rational().expect("real"), g.re().to_rational().expect("real"));
