@@ -115,6 +115,12 @@ impl Layout {
         (w, 64 - bits * (slot + 1))
     }
 
+    /// Where variable `j` is stored: the word, and the shift of its field in that word.
+    #[inline]
+    pub fn field(&self, j: usize) -> (usize, u32) {
+        Layout::place(self.per_word, self.bits, j)
+    }
+
     /// The exponent of variable `j` in a packed monomial.
     #[inline]
     pub fn get(&self, m: &[u64], j: usize) -> i64 {

@@ -9,7 +9,7 @@ use num_bigint::BigInt;
 use num_rational::BigRational;
 use num_traits::{Signed, ToPrimitive, Zero};
 
-use super::gcd::gcd_u128;
+use super::gcd::{binary_gcd, gcd_u128};
 use super::Integer;
 
 /// An exact rational number in lowest terms with a positive denominator.
@@ -40,6 +40,15 @@ impl Rational {
     /// `num/den` from `i128` parts, reduced; `den` nonzero.
     fn from_i128(num: i128, den: i128) -> Rational {
         debug_assert!(den != 0);
+        if let (Ok(n), Ok(d)) = (i64::try_from(num), i64::try_from(den)) {
+            // The common case: word-sized gcd and division (no 128-bit division).
+            if n != i64::MIN && d != i64::MIN {
+                let g = binary_gcd(n.unsigned_abs(), d.unsigned_abs()) as i64;
+                let (n, d) = if g == 1 { (n, d) } else { (n / g, d / g) };
+                let (n, d) = if d < 0 { (-n, -d) } else { (n, d) };
+                return Rational(Repr::Small { num: n, den: d });
+            }
+        }
         let g = gcd_u128(num.unsigned_abs(), den.unsigned_abs()) as i128;
         let (mut n, mut d) = (num / g, den / g);
         if d < 0 {

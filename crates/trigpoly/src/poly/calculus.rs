@@ -13,14 +13,11 @@ impl<C: Coefficient> Poly<C> {
         let j = v.index();
         let layout = self.layout();
         let angle = self.vars.variable(v).kind() == VarKind::Angle;
-        let w = self.words();
+        let limit = self.vars.limits().max_degree as i64;
         let mut exps = Vec::with_capacity(self.exps.len());
         let mut coeffs = Vec::with_capacity(self.len());
-        // The packed unit vector of v, to subtract from each exponent.
-        let mut unit = vec![0i64; self.vars.len()];
-        unit[j] = -1;
-        let mut shift = vec![0u64; w];
-        layout.pack(&unit, &mut shift);
+        // Lowering the exponent of v by one is a subtraction in one field of one word.
+        let (word, shift) = layout.field(j);
         for k in 0..self.len() {
             let m = self.exp(k);
             let e = layout.get(m, j);
@@ -38,10 +35,12 @@ impl<C: Coefficient> Poly<C> {
                 exps.extend_from_slice(m);
                 coeffs.push(ci);
             } else {
-                check_exponent(&self.vars, v, e - 1)?;
+                if (e - 1).abs() > limit {
+                    check_exponent(&self.vars, v, e - 1)?;
+                }
                 let start = exps.len();
                 exps.extend_from_slice(m);
-                layout.mul_into(m, &shift, &mut exps[start..]);
+                exps[start + word] = exps[start + word].wrapping_sub(1u64 << shift);
                 coeffs.push(c);
             }
         }

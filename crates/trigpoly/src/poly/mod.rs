@@ -331,6 +331,43 @@ impl<C: Coefficient> Poly<C> {
         }
     }
 
+    /// The largest `|e|` over every exponent of every term (0 for zero): one pass over the
+    /// packed words, no allocation. Enough to clear most exponent checks at once, since the
+    /// limit is the same for every variable.
+    pub(crate) fn max_abs_exponent(&self) -> i64 {
+        let layout = self.vars.layout();
+        let (bits, per_word) = (layout.bits, layout.per_word as u32);
+        let bias = layout.one();
+        let mut max = 0u64;
+        for m in self.exps.chunks_exact(self.words()) {
+            for (&word, &b) in m.iter().zip(bias) {
+                // XOR with the bias leaves each exponent in two's complement (unused fields 0).
+                let x = word ^ b;
+                if bits == 16 {
+                    // The common layout, unrolled: four fields per word.
+                    let f = |s: u32| (((x << s) as i64) >> 48).unsigned_abs();
+                    max = max.max(f(0).max(f(16)).max(f(32).max(f(48))));
+                } else {
+                    for s in 0..per_word {
+                        let e = ((x << (bits * s)) as i64) >> (64 - bits);
+                        max = max.max(e.unsigned_abs());
+                    }
+                }
+            }
+        }
+        max as i64
+    }
+
+    /// Checks that the exponents of a product of `self` and `other` stay within the limit:
+    /// from the largest exponents when that suffices, else variable by variable.
+    pub(crate) fn check_product_exponents(&self, other: &Self) -> Result<(), AlgebraError> {
+        let limit = self.vars.limits().max_degree as i64;
+        if self.max_abs_exponent() + other.max_abs_exponent() <= limit {
+            return Ok(());
+        }
+        mul::check_sum_bounds(&self.vars, &self.bounds(), &other.bounds())
+    }
+
     /// Per-variable `(min, max)` exponents (all zero for the zero polynomial).
     pub(crate) fn bounds(&self) -> Vec<(i64, i64)> {
         let layout = self.vars.layout();

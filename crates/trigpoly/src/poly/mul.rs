@@ -75,7 +75,7 @@ impl<C: Coefficient> Poly<C> {
             (other, self)
         };
         if small.len() <= SMALL_SIDE {
-            check_sum_bounds(&self.vars, &small.bounds(), &big.bounds())?;
+            small.check_product_exponents(big)?;
             let product = shift_and_merge(small, big, content);
             Self::check_terms(&self.vars, product.len())?;
             return Ok(product);

@@ -18,10 +18,14 @@ impl<C: Coefficient> Poly<C> {
                 Ok(self.clone())
             };
         }
-        // Exponent bounds of the result, checked before any work.
-        for (v, (lo, hi)) in self.vars.vars().zip(self.bounds()) {
-            check_exponent(&self.vars, v, lo.saturating_mul(e))?;
-            check_exponent(&self.vars, v, hi.saturating_mul(e))?;
+        // Exponent bounds of the result, checked before any work (variable by variable only
+        // when the largest exponent does not clear it).
+        let limit = self.vars.limits().max_degree as u64;
+        if (self.max_abs_exponent() as u64).saturating_mul(e.unsigned_abs()) > limit {
+            for (v, (lo, hi)) in self.vars.vars().zip(self.bounds()) {
+                check_exponent(&self.vars, v, lo.saturating_mul(e))?;
+                check_exponent(&self.vars, v, hi.saturating_mul(e))?;
+            }
         }
         if self.is_monomial() {
             // A single term's coefficient grows without any new term: bound its size.

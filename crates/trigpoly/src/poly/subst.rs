@@ -148,11 +148,19 @@ impl<C: Coefficient> Poly<C> {
             return None;
         }
         // Conservative exponent check from the overall bounds; near the limit, the general path.
-        let bounds = self.bounds();
         let mv: Vec<i64> = (0..self.vars.len())
             .map(|k| layout.get(value.exp(0), k))
             .collect();
-        for &e in &exps_v {
+        let largest_shift = exps_v
+            .iter()
+            .map(|e| e.unsigned_abs())
+            .max()
+            .unwrap_or(0)
+            .checked_mul(mv.iter().map(|m| m.unsigned_abs()).max().unwrap_or(0))?;
+        let clear = (self.max_abs_exponent() as u64).checked_add(largest_shift)?
+            <= self.vars.limits().max_degree as u64;
+        let bounds = if clear { Vec::new() } else { self.bounds() };
+        for &e in exps_v.iter().filter(|_| !clear) {
             for (k, var) in self.vars.vars().enumerate() {
                 let (lo, hi) = if k == j { (0, 0) } else { bounds[k] };
                 let shift = e.checked_mul(mv[k])?;

@@ -4,7 +4,7 @@
 //! all streams are brought to one rational content, merged pairwise like the levels of a tree,
 //! and normalised once, instead of normalising every product and every partial sum.
 
-use super::mul::{check_sum_bounds, merge_tree, SMALL_SIDE};
+use super::mul::{merge_tree, SMALL_SIDE};
 use super::Poly;
 use crate::error::AlgebraError;
 use crate::number::{Coefficient, IntegerRing, Rational};
@@ -37,7 +37,7 @@ impl<C: Coefficient> Poly<C> {
             }
             let (small, big) = if a.len() <= b.len() { (a, b) } else { (b, a) };
             if small.len() <= SMALL_SIDE {
-                check_sum_bounds(&vars, &small.bounds(), &big.bounds())?;
+                small.check_product_exponents(big)?;
                 let mut q = &a.content * &b.content;
                 if negate {
                     q = -q;
