@@ -112,25 +112,21 @@ impl PhaseSpace {
     }
 
     /// `{f, g}` given the gradient of `g` from [`PhaseSpace::gradient`]: one fused sum of
-    /// products, normalised once.
+    /// products of the derivatives of `f` (never built on their own) with it, normalised once.
     pub fn bracket_with_gradient(
         &self,
         f: &Expr,
         dg: &[(Expr, Expr)],
     ) -> Result<Expr, EngineError> {
-        let mut derivatives = Vec::with_capacity(2 * self.pairs.len());
-        for c in &self.pairs {
-            derivatives.push((f.derivative(c.q)?, f.derivative(c.p)?));
-        }
-        let mut terms: Vec<(&Expr, &Expr, bool)> = Vec::with_capacity(2 * self.pairs.len());
-        for ((fq, fp), (gq, gp)) in derivatives.iter().zip(dg) {
-            terms.push((fq, gp, false));
-            terms.push((fp, gq, true));
+        let mut terms: Vec<(&Expr, Var, &Expr, bool)> = Vec::with_capacity(2 * self.pairs.len());
+        for (c, (gq, gp)) in self.pairs.iter().zip(dg) {
+            terms.push((f, c.q, gp, false));
+            terms.push((f, c.p, gq, true));
         }
         if terms.is_empty() {
             return Ok(Expr::zero(&self.vars));
         }
-        Ok(Expr::sum_of_products(&terms)?)
+        Ok(Expr::sum_of_derivative_products(&terms)?)
     }
 
     /// Hamilton's vector field of `h`: `(q̇_i, ṗ_i) = (∂h/∂p_i, −∂h/∂q_i)` for each pair, in the

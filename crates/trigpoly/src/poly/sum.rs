@@ -1,13 +1,20 @@
-//! Sums of products `Σ ± a_k·b_k` in one accumulation: the kernel of the Poisson bracket.
+//! Sums of products `Σ ± a_k·b_k`, and of derivative products `Σ ± (∂f_k/∂v_k)·g_k`, in one
+//! accumulation: the kernel of the Poisson bracket.
 //!
-//! Each product with a short factor becomes sorted streams (shifted copies of the long factor);
-//! all streams are brought to one rational content, merged pairwise like the levels of a tree,
-//! and normalised once, instead of normalising every product and every partial sum.
+//! Each product with a short factor becomes sorted streams (shifted copies of the long factor;
+//! for a derivative, shifted copies of the terms of `f` that contain `v`, scaled by their
+//! exponent, so the derivative is never built on its own); all streams are brought to one
+//! rational content, merged pairwise like the levels of a tree, and normalised once, instead of
+//! normalising every derivative, every product and every partial sum.
 
 use super::mul::{merge_tree, SMALL_SIDE};
 use super::Poly;
 use crate::error::AlgebraError;
-use crate::number::{Coefficient, IntegerRing, Rational};
+use crate::number::{Coefficient, Integer, IntegerRing, Rational};
+use crate::varset::{Var, VarKind};
+
+/// Sorted term lists with their rational contents, waiting to be summed.
+type Streams<C> = Vec<(Rational, Poly<C>)>;
 
 impl<C: Coefficient> Poly<C> {
     /// `Σ_k ± a_k · b_k` (minus where the flag is `true`), exactly as the sum of the products,
@@ -28,36 +35,152 @@ impl<C: Coefficient> Poly<C> {
             ));
         };
         let vars = first.0.vars.clone();
-        let mut streams: Vec<(Rational, Self)> = Vec::new();
+        let mut streams: Streams<C> = Vec::new();
         for &(a, b, negate) in terms {
             a.same_vars(b)?;
             first.0.same_vars(a)?;
-            if a.is_zero() || b.is_zero() {
+            Self::push_product(&mut streams, a, b, negate)?;
+        }
+        Self::sum_streams(&vars, streams)
+    }
+
+    /// `Σ_k ± (∂f_k/∂v_k) · g_k` (minus where the flag is `true`), exactly as the sum of the
+    /// products of the derivatives, computed with one accumulation and one normalization: the
+    /// Poisson bracket `Σ ∂f/∂q·∂g/∂p − ∂f/∂p·∂g/∂q` is one call.
+    ///
+    /// ```
+    /// use trigpoly::{Poly, Rational, VarSet};
+    /// let vars = VarSet::builder().coordinate("x").momentum("p").build().unwrap();
+    /// let (x, p) = (vars.lookup("x").unwrap(), vars.lookup("p").unwrap());
+    /// let q = |s: &str| Poly::<Rational>::parse(&vars, s).unwrap();
+    /// let (f, g) = (q("x^2 p"), q("p^3 + x"));
+    /// let bracket = Poly::sum_of_derivative_products(&[
+    ///     (&f, x, &g.derivative(p).unwrap(), false),
+    ///     (&f, p, &g.derivative(x).unwrap(), true),
+    /// ])
+    /// .unwrap();
+    /// assert_eq!(bracket, q("6 x p^3 - x^2"));
+    /// ```
+    pub fn sum_of_derivative_products(
+        terms: &[(&Self, Var, &Self, bool)],
+    ) -> Result<Self, AlgebraError> {
+        let Some(first) = terms.first() else {
+            return Err(AlgebraError::Invalid(
+                "an empty sum of products has no variable set".into(),
+            ));
+        };
+        let vars = first.0.vars.clone();
+        let mut streams: Streams<C> = Vec::new();
+        for &(f, v, g, negate) in terms {
+            f.same_vars(g)?;
+            first.0.same_vars(f)?;
+            if f.is_zero() || g.is_zero() || !f.contains(v) {
                 continue;
             }
-            let (small, big) = if a.len() <= b.len() { (a, b) } else { (b, a) };
-            if small.len() <= SMALL_SIDE {
-                small.check_product_exponents(big)?;
-                let mut q = &a.content * &b.content;
-                if negate {
-                    q = -q;
-                }
-                for k in 0..small.len() {
-                    let (exps, coeffs) = big.shifted(small.exp(k), &small.coeffs[k]);
-                    streams.push((q.clone(), Self::raw(&vars, exps, coeffs)));
-                }
+            let limit = vars.limits().max_degree as i64;
+            let angle = vars.variable(v).kind() == VarKind::Angle;
+            let fused = g.len() <= SMALL_SIDE
+                && (!angle || C::HAS_I)
+                && f.max_abs_exponent() + 1 + g.max_abs_exponent() <= limit;
+            if fused {
+                f.push_derivative_streams(&mut streams, v, g, negate, angle);
             } else {
-                let p = a.checked_mul(b)?;
-                let q = if negate {
-                    -p.content.clone()
-                } else {
-                    p.content.clone()
-                };
-                streams.push((q, Self::raw(&vars, p.exps, p.coeffs)));
+                Self::push_product(&mut streams, &f.derivative(v)?, g, negate)?;
             }
         }
+        Self::sum_streams(&vars, streams)
+    }
+
+    /// The streams of `± (∂self/∂v) · g` for a short `g` whose exponents are known to stay
+    /// within the limit: one stream per term of `g`, each the terms of `self` containing `v`,
+    /// with `v`'s exponent lowered by one, translated by the term's monomial, and their
+    /// coefficients multiplied by the exponent (times `i` for an angle) and the term's.
+    fn push_derivative_streams(
+        &self,
+        streams: &mut Streams<C>,
+        v: Var,
+        g: &Self,
+        negate: bool,
+        angle: bool,
+    ) {
+        let layout = self.layout();
+        let w = self.words();
+        let j = v.index();
+        // The coefficients of ∂self/∂v over the integer ring, and the terms they belong to.
+        let mut rows = Vec::with_capacity(self.len());
+        let mut coeffs = Vec::with_capacity(self.len());
+        for k in 0..self.len() {
+            let e = layout.get(self.exp(k), j);
+            if e != 0 {
+                let c = self.coeffs[k].scale(&Integer::from(e));
+                rows.push(k);
+                coeffs.push(if angle {
+                    c.try_mul_i().expect("a ring with i")
+                } else {
+                    c
+                });
+            }
+        }
+        // Lowering v's exponent is a subtraction in one field (for an angle, e^{ikθ} stays).
+        let (word, shift) = layout.field(j);
+        let lower = if angle { 0 } else { 1u64 << shift };
+        let mut q = &self.content * &g.content;
+        if negate {
+            q = -q;
+        }
+        for t in 0..g.len() {
+            let mut exps = vec![0u64; rows.len() * w];
+            for (out, &k) in exps.chunks_exact_mut(w).zip(&rows) {
+                layout.mul_into(self.exp(k), g.exp(t), out);
+                out[word] = out[word].wrapping_sub(lower);
+            }
+            let ct = &g.coeffs[t];
+            let cs = coeffs.iter().map(|c| c.mul(ct)).collect();
+            streams.push((q.clone(), Self::raw(&self.vars, exps, cs)));
+        }
+    }
+
+    /// The streams of `± a·b`: shifted copies of the longer factor when the other is short, or
+    /// the product itself.
+    fn push_product(
+        streams: &mut Streams<C>,
+        a: &Self,
+        b: &Self,
+        negate: bool,
+    ) -> Result<(), AlgebraError> {
+        if a.is_zero() || b.is_zero() {
+            return Ok(());
+        }
+        let (small, big) = if a.len() <= b.len() { (a, b) } else { (b, a) };
+        if small.len() <= SMALL_SIDE {
+            small.check_product_exponents(big)?;
+            let mut q = &a.content * &b.content;
+            if negate {
+                q = -q;
+            }
+            for k in 0..small.len() {
+                let (exps, coeffs) = big.shifted(small.exp(k), &small.coeffs[k]);
+                streams.push((q.clone(), Self::raw(&a.vars, exps, coeffs)));
+            }
+        } else {
+            let p = a.checked_mul(b)?;
+            let q = if negate {
+                -p.content.clone()
+            } else {
+                p.content.clone()
+            };
+            streams.push((q, Self::raw(&a.vars, p.exps, p.coeffs)));
+        }
+        Ok(())
+    }
+
+    /// The sum of the streams: one content, a tree of merges, one normalization.
+    fn sum_streams(
+        vars: &std::sync::Arc<crate::varset::VarSet>,
+        streams: Streams<C>,
+    ) -> Result<Self, AlgebraError> {
         if streams.is_empty() {
-            return Ok(Self::zero(&vars));
+            return Ok(Self::zero(vars));
         }
         let d = streams
             .iter()
@@ -74,9 +197,9 @@ impl<C: Coefficient> Poly<C> {
             })
             .collect();
         let total = merge_tree(parts);
-        Self::check_terms(&vars, total.len())?;
+        Self::check_terms(vars, total.len())?;
         Ok(Self::drop_zeros_and_normalize(
-            &vars,
+            vars,
             d,
             total.exps,
             total.coeffs,

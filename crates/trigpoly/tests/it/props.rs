@@ -251,6 +251,22 @@ proptest! {
         prop_assert_eq!(fused, &(&(&f * &g) + &second) - &(&g * &h));
     }
 
+    /// The fused kernel of the bracket, for every variable (angles, Laurent exponents, short
+    /// and long second factors), against derivatives taken and multiplied one by one.
+    #[test]
+    fn sum_of_derivative_products_agrees_with_the_sum(f in gpoly(12), g in gpoly(4), h in gpoly(9), k in gpoly(9), a in qpoly(9), b in qpoly(4)) {
+        let vars = phase_space();
+        for v in vars.vars() {
+            let fused = Poly::sum_of_derivative_products(&[(&f, v, &g, false), (&h, v, &k, true)]).unwrap();
+            let direct = &(&f.derivative(v).unwrap() * &g) - &(&h.derivative(v).unwrap() * &k);
+            prop_assert_eq!(fused, direct);
+            if vars.variable(v).kind() != VarKind::Angle {
+                let fused = Poly::sum_of_derivative_products(&[(&a, v, &b, true)]).unwrap();
+                prop_assert_eq!(fused, -(&a.derivative(v).unwrap() * &b));
+            }
+        }
+    }
+
     #[test]
     fn ring_mul_associative_dense(f in dense_poly(), g in dense_poly(), h in dense_poly()) {
         prop_assert_eq!((&f * &g) * &h, &f * (&g * &h));
