@@ -125,43 +125,52 @@ impl<C: Coefficient> Poly<C> {
                     .collect()
             })
             .collect();
-        let mut keys: Vec<u64> = Vec::new();
-        let mut coeffs: Vec<C::Int> = Vec::new();
+        let compositions = binomial_u128(e as u128 + t as u128 - 1, t as u128 - 1) as usize;
+        let mut keys: Vec<u64> = Vec::with_capacity(compositions * w);
+        let mut coeffs: Vec<C::Int> = Vec::with_capacity(compositions);
         struct Walk<'a, I> {
             t: usize,
+            w: usize,
             binom: &'a [Vec<Integer>],
             powers: &'a [Vec<I>],
             steps: &'a [Vec<u64>],
+            /// The partial monomial of each level of the walk, `w` words each.
+            scratch: Vec<u64>,
             keys: &'a mut Vec<u64>,
             coeffs: &'a mut Vec<I>,
         }
-        fn go<I: IntegerRing>(walk: &mut Walk<'_, I>, i: usize, rem: usize, key: &[u64], c: &I) {
+        fn go<I: IntegerRing>(walk: &mut Walk<'_, I>, i: usize, rem: usize, c: &I) {
             let last = i + 1 == walk.t;
             let range = if last { rem..=rem } else { 0..=rem };
+            let w = walk.w;
             for a in range {
-                let next_key: Vec<u64> = key
-                    .iter()
-                    .zip(&walk.steps[i])
-                    .map(|(k, s)| k.wrapping_add(s.wrapping_mul(a as u64)))
-                    .collect();
+                let (done, next) = walk.scratch.split_at_mut((i + 1) * w);
+                let key = &done[i * w..];
+                for ((n, k), s) in next[..w].iter_mut().zip(key).zip(&walk.steps[i]) {
+                    *n = k.wrapping_add(s.wrapping_mul(a as u64));
+                }
                 let next_c = c.mul(&walk.powers[i][a]).scale(&walk.binom[rem][a]);
                 if last {
-                    walk.keys.extend_from_slice(&next_key);
+                    walk.keys.extend_from_slice(&next[..w]);
                     walk.coeffs.push(next_c);
                 } else {
-                    go(walk, i + 1, rem - a, &next_key, &next_c);
+                    go(walk, i + 1, rem - a, &next_c);
                 }
             }
         }
+        let mut scratch = vec![0u64; (t + 1) * w];
+        scratch[..w].copy_from_slice(one);
         let mut walk = Walk {
             t,
+            w,
             binom: &binom,
             powers: &powers,
             steps: &steps,
+            scratch,
             keys: &mut keys,
             coeffs: &mut coeffs,
         };
-        go(&mut walk, 0, e, one, &C::Int::from_integer(Integer::ONE));
+        go(&mut walk, 0, e, &C::Int::from_integer(Integer::ONE));
         // Sort once, combine equal monomials.
         let n = coeffs.len();
         let mut order: Vec<usize> = (0..n).collect();

@@ -71,17 +71,27 @@ impl<C: Coefficient> Poly<C> {
         };
         let vars = first.0.vars.clone();
         let mut streams: Streams<C> = Vec::new();
+        // The largest exponent of the last `f` seen (a bracket passes one `f` many times).
+        let mut f_max: Option<(*const Self, i64)> = None;
         for &(f, v, g, negate) in terms {
             f.same_vars(g)?;
             first.0.same_vars(f)?;
-            if f.is_zero() || g.is_zero() || !f.contains(v) {
+            if f.is_zero() || g.is_zero() {
                 continue;
             }
             let limit = vars.limits().max_degree as i64;
             let angle = vars.variable(v).kind() == VarKind::Angle;
+            let fm = match f_max {
+                Some((p, m)) if std::ptr::eq(p, f) => m,
+                _ => {
+                    let m = f.max_abs_exponent();
+                    f_max = Some((f, m));
+                    m
+                }
+            };
             let fused = g.len() <= SMALL_SIDE
                 && (!angle || C::HAS_I)
-                && f.max_abs_exponent() + 1 + g.max_abs_exponent() <= limit;
+                && fm + 1 + g.max_abs_exponent() <= limit;
             if fused {
                 f.push_derivative_streams(&mut streams, v, g, negate, angle);
             } else {
@@ -120,6 +130,9 @@ impl<C: Coefficient> Poly<C> {
                     c
                 });
             }
+        }
+        if rows.is_empty() {
+            return;
         }
         // Lowering v's exponent is a subtraction in one field (for an angle, e^{ikθ} stays).
         let (word, shift) = layout.field(j);
