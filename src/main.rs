@@ -7,6 +7,12 @@ mod cli;
 
 use std::process::ExitCode;
 
+/// mimalloc instead of the system allocator: the engine makes many short-lived vectors (a
+/// polynomial is two), and this halves the cost of allocating them (docs/performance.md). Its
+/// arenas are committed lazily (`.cargo/config.toml`), so the peak memory stays near what is used.
+#[global_allocator]
+static ALLOCATOR: mimalloc::MiMalloc = mimalloc::MiMalloc;
+
 fn main() -> ExitCode {
     match cli::run(std::env::args_os()) {
         Ok(code) => code,
