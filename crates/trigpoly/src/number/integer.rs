@@ -85,11 +85,17 @@ impl Integer {
     }
 
     /// Builds from an `i128`, staying small when it fits.
+    #[inline]
     pub fn from_i128(v: i128) -> Integer {
         match i64::try_from(v) {
             Ok(s) => Integer::Small(s),
-            Err(_) => Integer::Big(Box::new(BigInt::from(v))),
+            Err(_) => Integer::big_from_i128(v),
         }
+    }
+
+    #[cold]
+    fn big_from_i128(v: i128) -> Integer {
+        Integer::Big(Box::new(BigInt::from(v)))
     }
 
     /// Builds from a `BigInt`, demoting to `Small` when it fits (the canonical form).
@@ -242,6 +248,7 @@ impl FromStr for Integer {
 }
 
 // a + b, a - b, a * b: machine path with overflow check, else BigInt.
+#[inline]
 fn add_ref(a: &Integer, b: &Integer) -> Integer {
     match (a, b) {
         (Integer::Small(x), Integer::Small(y)) => match x.checked_add(*y) {
@@ -262,6 +269,7 @@ fn sub_ref(a: &Integer, b: &Integer) -> Integer {
     }
 }
 
+#[inline]
 fn mul_ref(a: &Integer, b: &Integer) -> Integer {
     match (a, b) {
         (Integer::Small(x), Integer::Small(y)) => match x.checked_mul(*y) {

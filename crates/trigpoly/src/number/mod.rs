@@ -176,7 +176,16 @@ impl IntegerRing for GaussianInteger {
         GaussianInteger::new(&self.re - &o.re, &self.im - &o.im)
     }
     // (a + bi)(c + di) = (ac − bd) + (ad + bc)i
+    #[inline]
     fn mul(&self, o: &Self) -> Self {
+        if let (Some((a, b)), Some((c, d))) = (self.to_small(), o.to_small()) {
+            // Word-sized parts: each product and each sum fits an i128.
+            let (a, b, c, d) = (a as i128, b as i128, c as i128, d as i128);
+            return GaussianInteger::new(
+                Integer::from_i128(a * c - b * d),
+                Integer::from_i128(a * d + b * c),
+            );
+        }
         if self.im.is_zero() {
             return GaussianInteger::new(&self.re * &o.re, &self.re * &o.im);
         }
@@ -191,7 +200,15 @@ impl IntegerRing for GaussianInteger {
     fn neg(&self) -> Self {
         GaussianInteger::new(-&self.re, -&self.im)
     }
+    #[inline]
     fn scale(&self, k: &Integer) -> Self {
+        if let (Some((a, b)), Some(k)) = (self.to_small(), k.to_i64()) {
+            let k = k as i128;
+            return GaussianInteger::new(
+                Integer::from_i128(a as i128 * k),
+                Integer::from_i128(b as i128 * k),
+            );
+        }
         GaussianInteger::new(&self.re * k, &self.im * k)
     }
     fn div_exact(&self, k: &Integer) -> Self {

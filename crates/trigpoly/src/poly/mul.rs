@@ -195,17 +195,12 @@ fn shift_and_merge<C: Coefficient>(
 /// Merges sorted raw term lists (content ignored) pairwise, like the levels of a tree, so each
 /// term is touched `log₂ k` times; zeros from cancellation are dropped.
 pub(crate) fn merge_tree<C: Coefficient>(mut parts: Vec<Poly<C>>) -> Poly<C> {
-    let one_i = crate::number::Integer::ONE;
     while parts.len() > 1 {
         let mut next = Vec::with_capacity(parts.len().div_ceil(2));
         let mut it = parts.into_iter();
         while let Some(a) = it.next() {
             match it.next() {
-                Some(b) => {
-                    let (exps, coeffs) = super::arith::merge(&a, &one_i, &b, &one_i);
-                    let (exps, coeffs) = drop_zeros(exps, coeffs, a.words());
-                    next.push(Poly::raw(&a.vars, exps, coeffs));
-                }
+                Some(b) => next.push(merge_owned(a, b)),
                 None => next.push(a),
             }
         }
@@ -214,19 +209,49 @@ pub(crate) fn merge_tree<C: Coefficient>(mut parts: Vec<Poly<C>>) -> Poly<C> {
     parts.pop().expect("at least one part")
 }
 
-fn drop_zeros<I: IntegerRing>(exps: Vec<u64>, coeffs: Vec<I>, w: usize) -> (Vec<u64>, Vec<I>) {
-    if coeffs.iter().all(|c| !c.is_zero()) {
-        return (exps, coeffs);
-    }
-    let mut e2 = Vec::with_capacity(exps.len());
-    let mut c2 = Vec::with_capacity(coeffs.len());
-    for (k, c) in coeffs.into_iter().enumerate() {
-        if !c.is_zero() {
-            e2.extend_from_slice(&exps[k * w..(k + 1) * w]);
-            c2.push(c);
+/// `a + b` for sorted raw term lists (content ignored), moving the coefficients rather than
+/// copying them; sums that cancel are dropped.
+fn merge_owned<C: Coefficient>(a: Poly<C>, b: Poly<C>) -> Poly<C> {
+    let w = a.words();
+    let (n, m) = (a.len(), b.len());
+    let mut exps = Vec::with_capacity((n + m) * w);
+    let mut coeffs = Vec::with_capacity(n + m);
+    let (ea, eb) = (&a.exps, &b.exps);
+    let mut ca = a.coeffs.into_iter();
+    let mut cb = b.coeffs.into_iter();
+    let (mut i, mut j) = (0, 0);
+    while i < n && j < m {
+        let (x, y) = (&ea[i * w..(i + 1) * w], &eb[j * w..(j + 1) * w]);
+        match x.cmp(y) {
+            std::cmp::Ordering::Greater => {
+                exps.extend_from_slice(x);
+                coeffs.push(ca.next().expect("n terms"));
+                i += 1;
+            }
+            std::cmp::Ordering::Less => {
+                exps.extend_from_slice(y);
+                coeffs.push(cb.next().expect("m terms"));
+                j += 1;
+            }
+            std::cmp::Ordering::Equal => {
+                let c = ca
+                    .next()
+                    .expect("n terms")
+                    .add(&cb.next().expect("m terms"));
+                if !c.is_zero() {
+                    exps.extend_from_slice(x);
+                    coeffs.push(c);
+                }
+                i += 1;
+                j += 1;
+            }
         }
     }
-    (e2, c2)
+    exps.extend_from_slice(&ea[i * w..]);
+    coeffs.extend(ca);
+    exps.extend_from_slice(&eb[j * w..]);
+    coeffs.extend(cb);
+    Poly::raw(&a.vars, exps, coeffs)
 }
 
 /// The heap product on packed monomials, for a box too large for Kronecker indices.

@@ -180,34 +180,45 @@ impl<C: Coefficient> Poly<C> {
             .iter()
             .skip(1)
             .fold(powers[0].1.abs(), |g, (_, p)| Rational::content_gcd(&g, p));
-        let mut parts = Vec::with_capacity(powers.len());
-        let mut delta = vec![0u64; w];
-        for (e, qe) in &powers {
-            // delta = e·(m − v), word by word (wrapping, exact because the fields stay in range).
-            let mut unit = vec![0u64; w];
-            layout.unit(j, 1, &mut unit);
-            for (x, (mw, uw)) in delta.iter_mut().zip(value.exp(0).iter().zip(&unit)) {
-                *x = mw.wrapping_sub(*uw).wrapping_mul(*e as u64);
-            }
-            let scale = (qe / &d).numer();
-            // n^e; for e < 0 only n = ±1 gets here, and (±1)^e = (±1)^{|e|}.
-            let mut ne = one.clone();
-            for _ in 0..e.unsigned_abs() {
-                ne = ne.mul(n);
-            }
-            let factor = ne.scale(&scale);
-            let mut exps = Vec::new();
-            let mut coeffs = Vec::new();
-            for k in 0..self.len() {
-                let m = self.exp(k);
-                if layout.get(m, j) != *e {
-                    continue;
+        // Per group: the translation e·(m − v) and the integer factor of the coefficients.
+        let mut unit = vec![0u64; w];
+        layout.unit(j, 1, &mut unit);
+        let groups: Vec<(Vec<u64>, C::Int)> = powers
+            .iter()
+            .map(|(e, qe)| {
+                // Word by word (wrapping, exact because the fields stay in range).
+                let delta = value
+                    .exp(0)
+                    .iter()
+                    .zip(&unit)
+                    .map(|(mw, uw)| mw.wrapping_sub(*uw).wrapping_mul(*e as u64))
+                    .collect();
+                let scale = (qe / &d).numer();
+                // n^e; for e < 0 only n = ±1 gets here, and (±1)^e = (±1)^{|e|}.
+                let mut ne = one.clone();
+                for _ in 0..e.unsigned_abs() {
+                    ne = ne.mul(n);
                 }
-                exps.extend(m.iter().zip(&delta).map(|(a, b)| a.wrapping_add(*b)));
-                coeffs.push(self.coeffs[k].mul(&factor));
-            }
-            parts.push(Self::raw(&self.vars, exps, coeffs));
+                (delta, ne.scale(&scale))
+            })
+            .collect();
+        // One pass over the terms, each to its group (groups stay sorted).
+        let exps_list: Vec<i64> = exps_v.into_iter().collect();
+        let mut parts: Vec<(Vec<u64>, Vec<C::Int>)> = vec![(Vec::new(), Vec::new()); groups.len()];
+        for k in 0..self.len() {
+            let m = self.exp(k);
+            let g = exps_list
+                .binary_search(&layout.get(m, j))
+                .expect("every exponent has its group");
+            let (delta, factor) = &groups[g];
+            let (exps, coeffs) = &mut parts[g];
+            exps.extend(m.iter().zip(delta).map(|(a, b)| a.wrapping_add(*b)));
+            coeffs.push(self.coeffs[k].mul(factor));
         }
+        let parts = parts
+            .into_iter()
+            .map(|(exps, coeffs)| Self::raw(&self.vars, exps, coeffs))
+            .collect();
         let total = super::mul::merge_tree(parts);
         if let Err(err) = Self::check_terms(&self.vars, total.len()) {
             return Some(Err(err));
