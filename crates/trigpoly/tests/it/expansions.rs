@@ -188,7 +188,7 @@ fn overflow_to_big_integers_in_sums_near_i64_max() {
     assert!(matches!(-Integer::from(i64::MIN), Integer::Big(_)));
 }
 
-/// `Σ_{k<8} (MAX − k) x^k` squared: both sides have 8 terms, so the hashed product runs, and
+/// `Σ_{k<8} (MAX − k) x^k` squared: both sides have 8 terms, so the heap product runs, and
 /// its `i128` accumulators overflow (each product is ~2^126) and spill to big integers.
 #[test]
 fn overflow_of_product_accumulators_to_big_integers() {

@@ -35,7 +35,7 @@ fn term_limit_stops_a_power_of_a_short_polynomial() {
     assert_eq!(f.checked_pow(15).map(|g| g.len()), Ok(816));
 }
 
-/// The same through the general (dense or hashed) product: `(1 + x + … + w)^6` has C(13, 6) =
+/// The same through the general (dense or heap) product: `(1 + x + … + w)^6` has C(13, 6) =
 /// 1716 terms.
 #[test]
 fn term_limit_stops_a_power_of_a_long_polynomial() {
@@ -47,6 +47,29 @@ fn term_limit_stops_a_power_of_a_long_polynomial() {
     );
     let g: Q = p(&vars, "1 + x + y + z + t + u + v");
     assert_eq!(g.checked_mul(&g).map(|h| h.len()), Ok(28));
+}
+
+/// A sparse product (the heap method: the box of `Σ x^{k²} · Σ y^{k²}` is thousands of times
+/// larger than the work) stops at the limit: 40 × 40 distinct terms against 1000, while
+/// 30 × 30 = 900 fit.
+#[test]
+fn term_limit_stops_a_sparse_heap_product() {
+    let vars = small_vars();
+    let squares = |v: &str, n: i64| -> Q {
+        let src: Vec<String> = (0..n).map(|k| format!("{v}^{}", k * k)).collect();
+        p(&vars, &src.join(" + "))
+    };
+    let (f, g) = (squares("x", 40), squares("y", 40));
+    assert_eq!(
+        f.checked_mul(&g).map(|h| h.len()),
+        Err(AlgebraError::TooManyTerms { limit: 1000 })
+    );
+    assert_eq!(
+        squares("x", 30)
+            .checked_mul(&squares("y", 30))
+            .map(|h| h.len()),
+        Ok(900)
+    );
 }
 
 /// A product of a short polynomial (at most 6 terms) by a long one, past the limit.

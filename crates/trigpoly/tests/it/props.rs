@@ -51,7 +51,7 @@ fn exponents(angles: bool) -> impl Strategy<Value = Vec<i64>> {
 }
 
 /// A random polynomial over Q(i) with up to `max_terms − 1` terms (both multiplication
-/// paths: short times long, and the hashed product of two long ones).
+/// paths: short times long, and the heap product of two long ones).
 fn gpoly(max_terms: usize) -> impl Strategy<Value = G> {
     proptest::collection::vec((gaussian(), exponents(true)), 0..max_terms)
         .prop_map(|terms| Poly::from_terms(&phase_space(), terms).expect("small exponents"))
@@ -115,7 +115,7 @@ fn wide_poly() -> impl Strategy<Value = Q> {
 }
 
 /// `f · g` as `Σ_t f · t` over the terms `t` of `g`: each product by a single term is a
-/// translation, independent of the dense and hashed multiplication.
+/// translation, independent of the dense and heap multiplications.
 fn product_by_terms<C: trigpoly::Coefficient>(f: &Poly<C>, g: &Poly<C>) -> Poly<C> {
     let vars = f.vars();
     g.terms().fold(Poly::zero(vars), |acc, t| {
