@@ -1,6 +1,7 @@
 """Runs superint and its peers on the workloads W1-W4, alternating, and prints medians and ratios.
 
     python compare.py [--repeats 3] [--quick] [--markdown]
+    python compare.py --sympy-goal [--repeats 3] [--max-cap 1800] [--markdown]
 
 Each (workload, size) row is run by every tool in turn, `--repeats` times; the table shows the
 median seconds of each tool and the ratio superint / peer (below 1: superint is faster). Every
@@ -9,6 +10,15 @@ the same number of terms as superint, or the script stops. (The terms of P and Q
 between tools by design: superint stores angles as e^{ikθ}, the peers as cos θ, sin θ.) Peak memory (max RSS) of W1 is measured in a separate
 run per tool. SymPy runs at smaller sizes, where it finishes in seconds; superint runs those
 sizes too, so each ratio compares equal work.
+
+`--sympy-goal` measures the goal of issue 5 (superint at least 300x faster than SymPy) at the
+workloads' defined sizes (GOAL below). Per row: superint and python-flint `--repeats` times,
+alternating (medians), then SymPy once, stopped at a cap of 300 x superint's median (and at most
+`--max-cap` seconds). The cap is on SymPy's own timing; the subprocess timeout adds SymPy's
+start-up (interpreter and import, measured once), so a stopped run had spent at least the cap
+in the workload. A finished SymPy run is checked like the normal mode and gives the ratios
+superint / SymPy and python-flint / SymPy; a stopped run gives `> CAP s` and upper bounds on
+the ratios (< superint / CAP), which prove the goal when CAP is the full 300 x superint.
 """
 import argparse
 import os
@@ -38,6 +48,10 @@ QUICK = [("tower", 8, "superint superint2 flint singular sympy"),
          ("single", 20, "superint superint2 flint singular sympy"),
          ("fateman", 10, "superint flint singular sympy"), ("pearce", 4, "superint flint singular sympy"),
          ("algebra", 100, "superint flint singular sympy")]
+# the goal rows: every workload at its defined sizes
+GOAL = [("tower", 8), ("tower", 16), ("tower", 24), ("single", 40), ("single", 80),
+        ("fateman", 20), ("pearce", 12), ("algebra", 1000)]
+GOAL_FACTOR = 300  # superint at least this many times faster than SymPy
 EXPECTED_ZEROS = {"tower": lambda n: 2 * n * n, "single": lambda n: 2, "fateman": lambda n: 0,
                   "pearce": lambda n: 0, "algebra": lambda n: n}
 
@@ -56,13 +70,25 @@ def command(tool, workload, size):
     raise ValueError(tool)
 
 
-def run(tool, workload, size):
-    """Runs once; returns (seconds, terms, zeros) as the tool reports them."""
+def run(tool, workload, size, timeout=None):
+    """Runs once; returns (seconds, terms, zeros) as the tool reports them. Past `timeout`
+    seconds the process is killed and subprocess.TimeoutExpired raised."""
     cmd, stdin = command(tool, workload, size)
-    out = subprocess.run(cmd, input=stdin, capture_output=True, text=True, check=True).stdout
+    out = subprocess.run(cmd, input=stdin, capture_output=True, text=True, check=True,
+                         timeout=timeout).stdout
     fields = dict(re.findall(r"^(\w+): (\S+)$", out, re.M))
     seconds = float(fields["seconds"]) if "seconds" in fields else int(fields["ms"]) / 1000
     return seconds, int(fields["terms"]), int(fields["zeros"])
+
+
+def check(tool, workload, size, terms, zeros, reference):
+    """Stops the script unless the run found the expected exact zeros and, for the products of
+    W3, the same number of terms as `reference` (superint's)."""
+    want = EXPECTED_ZEROS[workload](size)
+    if zeros != want:
+        sys.exit(f"{tool} {workload} {size}: {zeros} exact zeros, expected {want}")
+    if reference is not None and workload in ("fateman", "pearce") and terms != reference:
+        sys.exit(f"{tool} {workload} {size}: {terms} terms, superint had {reference}")
 
 
 def peak_memory_kib(tool, workload, size):
@@ -82,7 +108,17 @@ def main():
     ap.add_argument("--quick", action="store_true", help="small sizes only (for CI)")
     ap.add_argument("--markdown", action="store_true")
     ap.add_argument("--no-memory", action="store_true")
+    ap.add_argument("--sympy-goal", action="store_true",
+                    help="SymPy at the goal sizes, capped at 300 x superint's time")
+    ap.add_argument("--max-cap", type=float, default=1800,
+                    help="with --sympy-goal: stop any one SymPy run after this many seconds")
+    ap.add_argument("--rows", help=argparse.SUPPRESS)  # testing: e.g. tower:8,algebra:100
     args = ap.parse_args()
+    if args.sympy_goal:
+        plan = GOAL
+        if args.rows:
+            plan = [(w, int(n)) for w, n in (r.split(":") for r in args.rows.split(","))]
+        return sympy_goal(plan, args)
     plan = QUICK if args.quick else FULL
     rows = []
     for workload, size, tools in plan:
@@ -92,13 +128,9 @@ def main():
         for _ in range(args.repeats):
             for tool in tools:  # alternate the tools within each repeat
                 seconds, terms, zeros = run(tool, workload, size)
-                want = EXPECTED_ZEROS[workload](size)
-                if zeros != want:
-                    sys.exit(f"{tool} {workload} {size}: {zeros} exact zeros, expected {want}")
+                check(tool, workload, size, terms, zeros, reference)
                 if reference is None:
                     reference = terms
-                elif workload in ("fateman", "pearce") and terms != reference:
-                    sys.exit(f"{tool} {workload} {size}: {terms} terms, superint had {reference}")
                 times[tool].append(seconds)
         medians = {t: statistics.median(v) for t, v in times.items()}
         rows.append((workload, size, medians, reference))
@@ -143,6 +175,87 @@ def print_table(rows, memory, markdown, repeats):
     if memory:
         print("peak memory (max RSS) of W1: " + ", ".join(
             f"{label.get(t, t)} {kib / 1024:.1f} MiB" for t, kib in memory.items()))
+
+
+def sympy_startup():
+    """Wall seconds of SymPy's start-up alone (interpreter, import, ring), median of three."""
+    walls = []
+    for _ in range(3):
+        start = time.perf_counter()
+        run("sympy", "algebra", 0)
+        walls.append(time.perf_counter() - start)
+    return statistics.median(walls)
+
+
+def sympy_goal(plan, args):
+    startup = sympy_startup()
+    print(f"  SymPy start-up {startup:.2f} s, added to each timeout", file=sys.stderr, flush=True)
+    rows = []
+    for workload, size in plan:
+        times = {"superint": [], "flint": []}
+        reference = None
+        for _ in range(args.repeats):
+            for tool in times:  # alternate the tools within each repeat
+                seconds, terms, zeros = run(tool, workload, size)
+                check(tool, workload, size, terms, zeros, reference)
+                if reference is None:
+                    reference = terms
+                times[tool].append(seconds)
+        med = {t: statistics.median(v) for t, v in times.items()}
+        cap = min(GOAL_FACTOR * med["superint"], args.max_cap)
+        print(f"  {NAMES[workload]} {size}: superint {med['superint']:.4f} s, flint "
+              f"{med['flint']:.4f} s; SymPy capped at {cap:.1f} s ...", file=sys.stderr, flush=True)
+        try:
+            seconds, terms, zeros = run("sympy", workload, size, timeout=cap + startup)
+            check("sympy", workload, size, terms, zeros, reference)
+            med["sympy"] = seconds
+        except subprocess.TimeoutExpired:
+            med["sympy"] = None
+        print(f"  {NAMES[workload]} {size}: SymPy " + (f"{med['sympy']:.4f} s" if med["sympy"]
+              is not None else "stopped at the cap"), file=sys.stderr, flush=True)
+        rows.append((workload, size, med, cap, reference))
+    print_goal_table(rows, args.markdown, args.repeats, args.max_cap)
+
+
+def one_over(x):
+    """A ratio below 1 as 1/N (N to three digits, or whole from 100 on)."""
+    if x >= 1:
+        return f"{x:.3g}"
+    n = 1 / x
+    return f"1/{n:.0f}" if n >= 100 else f"1/{n:.3g}"
+
+
+def print_goal_table(rows, markdown, repeats, max_cap):
+    head = ["workload", "size", "superint terms", "superint s", "python-flint s", "SymPy cap s",
+            "SymPy s", "superint / SymPy", "python-flint / SymPy", f"goal {GOAL_FACTOR}x"]
+    lines = []
+    for workload, size, med, cap, terms in rows:
+        si, fl, sy = med["superint"], med["flint"], med["sympy"]
+        cells = [NAMES[workload], str(size), str(terms), f"{si:.4f}", f"{fl:.4f}", f"{cap:.1f}"]
+        if sy is not None:
+            cells += [f"{sy:.4f}", one_over(si / sy), one_over(fl / sy),
+                      "yes" if sy >= GOAL_FACTOR * si else "no"]
+        else:  # stopped at the cap: SymPy > cap, so the ratios are upper bounds
+            full = cap >= GOAL_FACTOR * si
+            cells += [f"> {cap:.1f}", "< " + one_over(si / cap), "< " + one_over(fl / cap),
+                      "yes (bound)" if full else "open (max cap)"]
+        lines.append(cells)
+    if markdown:
+        print("| " + " | ".join(head) + " |")
+        print("|" + "---|" * len(head))
+        for c in lines:
+            print("| " + " | ".join(c) + " |")
+    else:
+        widths = [max(len(r[k]) for r in [head] + lines) for k in range(len(head))]
+        for r in [head] + lines:
+            print("  ".join(c.rjust(w) for c, w in zip(r, widths)))
+    print(f"\nsuperint (single-threaded) and python-flint: median of {repeats} runs, alternating; "
+          f"SymPy: one run, stopped at the cap = {GOAL_FACTOR} x superint's median (at most "
+          f"{max_cap:g} s); ratio = tool / SymPy, goal superint / SymPy <= 1/{GOAL_FACTOR}. "
+          f"`> CAP`: SymPy did not finish within the cap, so the ratios are upper bounds "
+          f"(< tool / CAP); at the full {GOAL_FACTOR}x cap that proves the goal (yes (bound)), "
+          f"at the max cap it may not (open). Every finished run reported the identities as exact "
+          f"zeros.")
 
 
 if __name__ == "__main__":

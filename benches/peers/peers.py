@@ -122,13 +122,14 @@ def algebra(reps):
         g1 = px * py + M**2 * w**2 * x * y
         g2 = px**2 - py**2 + M**2 * w**2 * (x**2 - y**2)
         h = px**2 + py**2 + M**2 * w**2 * (x**2 + y**2)  # 2M (F1 - F2)
+        b1, b2, b3 = bracket(L, g1), bracket(L, g2), bracket(g1, g2)  # each once per repetition
         checks = [
-            bracket(L, g1) + g2,  # {L, G1} = -G2
-            bracket(L, g2) - 4 * g1,  # {L, G2} = 4 G1
-            bracket(g1, g2) + 4 * M**2 * w**2 * L,  # {G1, G2} = -w^2 L, times (2M)^2
+            b1 + g2,  # {L, G1} = -G2
+            b2 - 4 * g1,  # {L, G2} = 4 G1
+            b3 + 4 * M**2 * w**2 * L,  # {G1, G2} = -w^2 L, times (2M)^2
             4 * g1**2 + g2**2 + 4 * M**2 * w**2 * L**2 - h**2,  # the Casimir, times (2M)^2
         ]
-        terms += sum(len(bracket(a, b)) for a, b in ((L, g1), (L, g2), (g1, g2)))
+        terms += len(b1) + len(b2) + len(b3)
         zeros += all(e == 0 for e in checks)
     return zeros, terms
 

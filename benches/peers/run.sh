@@ -2,6 +2,7 @@
 # One command: installs the peers (python-flint and SymPy in a local virtual environment,
 # Singular from Debian's packages), builds superint, and runs the side-by-side comparison.
 #   benches/peers/run.sh [--quick] [--repeats N] [--markdown]
+#   benches/peers/run.sh --sympy-goal [--repeats N] [--max-cap SECONDS] [--markdown]   (SymPy at the goal sizes, capped at 300x superint)
 set -euo pipefail
 here="$(cd "$(dirname "$0")" && pwd)"
 root="$(cd "$here/../.." && pwd)"
