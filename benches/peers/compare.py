@@ -144,6 +144,19 @@ def main():
     print_table(rows, memory, args.markdown, args.repeats)
 
 
+def print_rows(head, lines, markdown):
+    """A table with a header row, as markdown or as right-aligned text columns."""
+    if markdown:
+        print("| " + " | ".join(head) + " |")
+        print("|" + "---|" * len(head))
+        for c in lines:
+            print("| " + " | ".join(c) + " |")
+    else:
+        widths = [max(len(r[k]) for r in [head] + lines) for k in range(len(head))]
+        for r in [head] + lines:
+            print("  ".join(c.rjust(w) for c, w in zip(r, widths)))
+
+
 def print_table(rows, memory, markdown, repeats):
     peers = ["flint", "singular", "sympy"]
     label = {"flint": "python-flint", "singular": "Singular", "sympy": "SymPy"}
@@ -160,15 +173,7 @@ def print_table(rows, memory, markdown, repeats):
             else:
                 cells += ["", ""]
         lines.append(cells)
-    if markdown:
-        print("| " + " | ".join(head) + " |")
-        print("|" + "---|" * len(head))
-        for c in lines:
-            print("| " + " | ".join(c) + " |")
-    else:
-        widths = [max(len(r[k]) for r in [head] + lines) for k in range(len(head))]
-        for r in [head] + lines:
-            print("  ".join(c.rjust(w) for c, w in zip(r, widths)))
+    print_rows(head, lines, markdown)
     print(f"\nmedian of {repeats} runs per tool, tools alternating; ratio = single-threaded "
           "superint / peer (below 1: superint is faster); every run reported the identities as "
           "exact zeros.")
@@ -240,15 +245,7 @@ def print_goal_table(rows, markdown, repeats, max_cap):
             cells += [f"> {cap:.1f}", "< " + one_over(si / cap), "< " + one_over(fl / cap),
                       "yes (bound)" if full else "open (max cap)"]
         lines.append(cells)
-    if markdown:
-        print("| " + " | ".join(head) + " |")
-        print("|" + "---|" * len(head))
-        for c in lines:
-            print("| " + " | ".join(c) + " |")
-    else:
-        widths = [max(len(r[k]) for r in [head] + lines) for k in range(len(head))]
-        for r in [head] + lines:
-            print("  ".join(c.rjust(w) for c, w in zip(r, widths)))
+    print_rows(head, lines, markdown)
     print(f"\nsuperint (single-threaded) and python-flint: median of {repeats} runs, alternating; "
           f"SymPy: one run, stopped at the cap = {GOAL_FACTOR} x superint's median (at most "
           f"{max_cap:g} s); ratio = tool / SymPy, goal superint / SymPy <= 1/{GOAL_FACTOR}. "
