@@ -91,6 +91,21 @@ def check(tool, workload, size, terms, zeros, reference):
         sys.exit(f"{tool} {workload} {size}: {terms} terms, superint had {reference}")
 
 
+def alternate(tools, workload, size, repeats):
+    """Runs every tool `repeats` times, alternating within each repeat, checking each run;
+    returns the median seconds per tool and the first tool's term count."""
+    times = {t: [] for t in tools}
+    reference = None
+    for _ in range(repeats):
+        for tool in tools:
+            seconds, terms, zeros = run(tool, workload, size)
+            check(tool, workload, size, terms, zeros, reference)
+            if reference is None:
+                reference = terms
+            times[tool].append(seconds)
+    return {t: statistics.median(v) for t, v in times.items()}, reference
+
+
 def peak_memory_kib(tool, workload, size):
     """Max RSS of one run, measured in a fresh wrapper process so earlier runs do not count."""
     cmd, stdin = command(tool, workload, size)
@@ -122,17 +137,7 @@ def main():
     plan = QUICK if args.quick else FULL
     rows = []
     for workload, size, tools in plan:
-        tools = tools.split()
-        times = {t: [] for t in tools}
-        reference = None
-        for _ in range(args.repeats):
-            for tool in tools:  # alternate the tools within each repeat
-                seconds, terms, zeros = run(tool, workload, size)
-                check(tool, workload, size, terms, zeros, reference)
-                if reference is None:
-                    reference = terms
-                times[tool].append(seconds)
-        medians = {t: statistics.median(v) for t, v in times.items()}
+        medians, reference = alternate(tools.split(), workload, size, args.repeats)
         rows.append((workload, size, medians, reference))
         print(f"  {NAMES[workload]} {size}: " + ", ".join(f"{t} {m:.4f} s" for t, m in medians.items()),
               file=sys.stderr, flush=True)
@@ -197,16 +202,7 @@ def sympy_goal(plan, args):
     print(f"  SymPy start-up {startup:.2f} s, added to each timeout", file=sys.stderr, flush=True)
     rows = []
     for workload, size in plan:
-        times = {"superint": [], "flint": []}
-        reference = None
-        for _ in range(args.repeats):
-            for tool in times:  # alternate the tools within each repeat
-                seconds, terms, zeros = run(tool, workload, size)
-                check(tool, workload, size, terms, zeros, reference)
-                if reference is None:
-                    reference = terms
-                times[tool].append(seconds)
-        med = {t: statistics.median(v) for t, v in times.items()}
+        med, reference = alternate(["superint", "flint"], workload, size, args.repeats)
         cap = min(GOAL_FACTOR * med["superint"], args.max_cap)
         print(f"  {NAMES[workload]} {size}: superint {med['superint']:.4f} s, flint "
               f"{med['flint']:.4f} s; SymPy capped at {cap:.1f} s ...", file=sys.stderr, flush=True)
