@@ -80,40 +80,32 @@ impl<C: Coefficient> Poly<C> {
             Self::check_terms(&self.vars, product.len())?;
             return Ok(product);
         }
-        let (ba, bb) = (self.bounds(), other.bounds());
-        check_sum_bounds(&self.vars, &ba, &bb)?;
+        let (bs, bb) = (small.bounds(), big.bounds());
+        check_sum_bounds(&self.vars, &bs, &bb)?;
         let limit = self.vars.limits().max_terms;
-        let (exps, coeffs) = match Kronecker::new(&ba, &bb) {
-            Some(kron) => {
-                let layout = self.layout();
-                if let Some(result) = try_mul_dense(
-                    &kron,
-                    layout,
-                    (&self.exps, &self.coeffs, &ba),
-                    (&other.exps, &other.coeffs, &bb),
-                    limit,
-                ) {
-                    result?
-                } else {
-                    let (bs, bl) = if self.len() <= other.len() {
-                        (&ba, &bb)
-                    } else {
-                        (&bb, &ba)
-                    };
-                    let ka = kron.indices(layout, &small.exps, bs);
-                    let kb = kron.indices(layout, &big.exps, bl);
+        let layout = self.layout();
+        let (exps, coeffs) = match Kronecker::new(&bs, &bb) {
+            Some(kron) => match try_mul_dense(
+                &kron,
+                layout,
+                (&small.exps, &small.coeffs, &bs),
+                (&big.exps, &big.coeffs, &bb),
+                limit,
+            ) {
+                Some(result) => result?,
+                None => {
+                    let ka = kron.indices(layout, &small.exps, &bs);
+                    let kb = kron.indices(layout, &big.exps, &bb);
                     let (pairs, coeffs) = heap_product(
                         (&ka, &small.coeffs),
                         (&kb, &big.coeffs),
                         |x, y| x + y,
                         limit,
                     )?;
-                    (
-                        pair_monomials(layout, &small.exps, &big.exps, &pairs),
-                        coeffs,
-                    )
+                    let exps = pair_monomials(layout, &small.exps, &big.exps, &pairs);
+                    (exps, coeffs)
                 }
-            }
+            },
             None => dispatch_words!(
                 self.words(),
                 mul_heap_packed,
