@@ -45,6 +45,13 @@ impl<C: Coefficient> Poly<C> {
         if e < 0 {
             return Err(AlgebraError::NegativePower(self.to_string()));
         }
+        if e == 1 {
+            return Ok(self.clone());
+        }
+        if e == 2 {
+            // A square: the product itself costs less than setting up the multinomial walk.
+            return self.checked_mul(self);
+        }
         if self.len() <= 6 {
             let compositions =
                 binomial_u128(e as u128 + self.len() as u128 - 1, self.len() as u128 - 1);
