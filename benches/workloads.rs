@@ -7,6 +7,10 @@
 use divan::Bencher;
 use superint::workloads::Workload;
 
+/// The allocator of the `superint` binary, so that these figures match `superint bench`.
+#[global_allocator]
+static ALLOCATOR: mimalloc::MiMalloc = mimalloc::MiMalloc;
+
 fn main() {
     divan::main();
 }
