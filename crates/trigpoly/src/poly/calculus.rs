@@ -7,48 +7,75 @@ use crate::error::AlgebraError;
 use crate::number::{Coefficient, Integer, IntegerRing};
 use crate::varset::{Var, VarKind};
 
+/// The terms of a derivative before normalisation (see [`Poly::derivative_terms`]).
+pub(crate) struct DerivativeTerms<I> {
+    /// The indices of the terms that contain the variable.
+    pub rows: Vec<usize>,
+    /// Their coefficients times the exponent (times `i` for an angle).
+    pub coeffs: Vec<I>,
+    /// The word holding the variable's field.
+    pub word: usize,
+    /// What to subtract from that word: one in the variable's field, or zero for an angle
+    /// (`e^{ikθ}` keeps its exponent).
+    pub lower: u64,
+}
+
 impl<C: Coefficient> Poly<C> {
     /// `∂self/∂v`. For an angle `θ` this is `∂/∂θ`, which needs Q(i) coefficients.
     pub fn derivative(&self, v: Var) -> Result<Self, AlgebraError> {
-        let j = v.index();
-        let layout = self.layout();
-        let angle = self.vars.variable(v).kind() == VarKind::Angle;
-        let limit = self.vars.limits().max_degree as i64;
-        let mut exps = Vec::with_capacity(self.exps.len());
-        let mut coeffs = Vec::with_capacity(self.len());
-        // Lowering the exponent of v by one is a subtraction in one field of one word.
-        let (word, shift) = layout.field(j);
-        for k in 0..self.len() {
-            let m = self.exp(k);
-            let e = layout.get(m, j);
-            if e == 0 {
-                continue;
-            }
-            let c = self.coeffs[k].scale(&Integer::from(e));
-            if angle {
-                let ci = c.try_mul_i().ok_or_else(|| {
-                    AlgebraError::NeedsGaussian(format!(
-                        "the derivative by the angle {}",
-                        self.vars.variable(v).unicode()
-                    ))
-                })?;
-                exps.extend_from_slice(m);
-                coeffs.push(ci);
-            } else {
-                if (e - 1).abs() > limit {
-                    check_exponent(&self.vars, v, e - 1)?;
-                }
-                let start = exps.len();
-                exps.extend_from_slice(m);
-                exps[start + word] = exps[start + word].wrapping_sub(1u64 << shift);
-                coeffs.push(c);
-            }
+        let d = self.derivative_terms(v)?;
+        let mut exps = Vec::with_capacity(d.rows.len() * self.words());
+        for &k in &d.rows {
+            let start = exps.len();
+            exps.extend_from_slice(self.exp(k));
+            exps[start + d.word] = exps[start + d.word].wrapping_sub(d.lower);
         }
         Ok(Self::from_sorted(
             &self.vars,
             self.content.clone(),
             exps,
-            coeffs,
+            d.coeffs,
         ))
+    }
+
+    /// The terms of `∂self/∂v` over the integer ring, with the content of `self`: which terms
+    /// contain `v`, their new coefficients, and how their monomials change. The derivative
+    /// and the bracket's fused kernel (`sum.rs`) both build on this.
+    pub(crate) fn derivative_terms(&self, v: Var) -> Result<DerivativeTerms<C::Int>, AlgebraError> {
+        let j = v.index();
+        let layout = self.layout();
+        let angle = self.vars.variable(v).kind() == VarKind::Angle;
+        let limit = self.vars.limits().max_degree as i64;
+        let mut rows = Vec::with_capacity(self.len());
+        let mut coeffs = Vec::with_capacity(self.len());
+        for k in 0..self.len() {
+            let e = layout.get(self.exp(k), j);
+            if e == 0 {
+                continue;
+            }
+            let c = self.coeffs[k].scale(&Integer::from(e));
+            if angle {
+                coeffs.push(c.try_mul_i().ok_or_else(|| {
+                    AlgebraError::NeedsGaussian(format!(
+                        "the derivative by the angle {}",
+                        self.vars.variable(v).unicode()
+                    ))
+                })?);
+            } else {
+                if (e - 1).abs() > limit {
+                    check_exponent(&self.vars, v, e - 1)?;
+                }
+                coeffs.push(c);
+            }
+            rows.push(k);
+        }
+        // Lowering the exponent of v by one is a subtraction in one field of one word.
+        let (word, shift) = layout.field(j);
+        Ok(DerivativeTerms {
+            rows,
+            coeffs,
+            word,
+            lower: if angle { 0 } else { 1u64 << shift },
+        })
     }
 }

@@ -159,14 +159,16 @@ impl<C: Coefficient> Poly<C> {
             .checked_mul(mv.iter().map(|m| m.unsigned_abs()).max().unwrap_or(0))?;
         let clear = (self.max_abs_exponent() as u64).checked_add(largest_shift)?
             <= self.vars.limits().max_degree as u64;
-        let bounds = if clear { Vec::new() } else { self.bounds() };
-        for &e in exps_v.iter().filter(|_| !clear) {
-            for (k, var) in self.vars.vars().enumerate() {
-                let (lo, hi) = if k == j { (0, 0) } else { bounds[k] };
-                let shift = e.checked_mul(mv[k])?;
-                for x in [lo.checked_add(shift)?, hi.checked_add(shift)?] {
-                    if super::check_exponent(&self.vars, var, x).is_err() {
-                        return None;
+        if !clear {
+            let bounds = self.bounds();
+            for &e in &exps_v {
+                for (k, var) in self.vars.vars().enumerate() {
+                    let (lo, hi) = if k == j { (0, 0) } else { bounds[k] };
+                    let shift = e.checked_mul(mv[k])?;
+                    for x in [lo.checked_add(shift)?, hi.checked_add(shift)?] {
+                        if super::check_exponent(&self.vars, var, x).is_err() {
+                            return None;
+                        }
                     }
                 }
             }

@@ -10,8 +10,8 @@
 use super::mul::{merge_tree, SMALL_SIDE};
 use super::Poly;
 use crate::error::AlgebraError;
-use crate::number::{Coefficient, Integer, IntegerRing, Rational};
-use crate::varset::{Var, VarKind};
+use crate::number::{Coefficient, IntegerRing, Rational};
+use crate::varset::Var;
 
 /// Sorted term lists with their rational contents, waiting to be summed.
 type Streams<C> = Vec<(Rational, Poly<C>)>;
@@ -80,7 +80,6 @@ impl<C: Coefficient> Poly<C> {
                 continue;
             }
             let limit = vars.limits().max_degree as i64;
-            let angle = vars.variable(v).kind() == VarKind::Angle;
             let fm = match f_max {
                 Some((p, m)) if std::ptr::eq(p, f) => m,
                 _ => {
@@ -89,11 +88,8 @@ impl<C: Coefficient> Poly<C> {
                     m
                 }
             };
-            let fused = g.len() <= SMALL_SIDE
-                && (!angle || C::HAS_I)
-                && fm + 1 + g.max_abs_exponent() <= limit;
-            if fused {
-                f.push_derivative_streams(&mut streams, v, g, negate, angle);
+            if g.len() <= SMALL_SIDE && fm + 1 + g.max_abs_exponent() <= limit {
+                f.push_derivative_streams(&mut streams, v, g, negate)?;
             } else {
                 Self::push_product(&mut streams, &f.derivative(v)?, g, negate)?;
             }
@@ -102,55 +98,36 @@ impl<C: Coefficient> Poly<C> {
     }
 
     /// The streams of `± (∂self/∂v) · g` for a short `g` whose exponents are known to stay
-    /// within the limit: one stream per term of `g`, each the terms of `self` containing `v`,
-    /// with `v`'s exponent lowered by one, translated by the term's monomial, and their
-    /// coefficients multiplied by the exponent (times `i` for an angle) and the term's.
+    /// within the limit: one stream per term of `g`, each the terms of the derivative
+    /// translated by the term's monomial and multiplied by its coefficient.
     fn push_derivative_streams(
         &self,
         streams: &mut Streams<C>,
         v: Var,
         g: &Self,
         negate: bool,
-        angle: bool,
-    ) {
+    ) -> Result<(), AlgebraError> {
+        let d = self.derivative_terms(v)?;
+        if d.rows.is_empty() {
+            return Ok(());
+        }
         let layout = self.layout();
         let w = self.words();
-        let j = v.index();
-        // The coefficients of ∂self/∂v over the integer ring, and the terms they belong to.
-        let mut rows = Vec::with_capacity(self.len());
-        let mut coeffs = Vec::with_capacity(self.len());
-        for k in 0..self.len() {
-            let e = layout.get(self.exp(k), j);
-            if e != 0 {
-                let c = self.coeffs[k].scale(&Integer::from(e));
-                rows.push(k);
-                coeffs.push(if angle {
-                    c.try_mul_i().expect("a ring with i")
-                } else {
-                    c
-                });
-            }
-        }
-        if rows.is_empty() {
-            return;
-        }
-        // Lowering v's exponent is a subtraction in one field (for an angle, e^{ikθ} stays).
-        let (word, shift) = layout.field(j);
-        let lower = if angle { 0 } else { 1u64 << shift };
         let mut q = &self.content * &g.content;
         if negate {
             q = -q;
         }
         for t in 0..g.len() {
-            let mut exps = vec![0u64; rows.len() * w];
-            for (out, &k) in exps.chunks_exact_mut(w).zip(&rows) {
+            let mut exps = vec![0u64; d.rows.len() * w];
+            for (out, &k) in exps.chunks_exact_mut(w).zip(&d.rows) {
                 layout.mul_into(self.exp(k), g.exp(t), out);
-                out[word] = out[word].wrapping_sub(lower);
+                out[d.word] = out[d.word].wrapping_sub(d.lower);
             }
             let ct = &g.coeffs[t];
-            let cs = coeffs.iter().map(|c| c.mul(ct)).collect();
+            let cs = d.coeffs.iter().map(|c| c.mul(ct)).collect();
             streams.push((q.clone(), Self::raw(&self.vars, exps, cs)));
         }
+        Ok(())
     }
 
     /// The streams of `± a·b`: shifted copies of the longer factor when the other is short, or
