@@ -29,16 +29,12 @@ impl<C: Coefficient> Poly<C> {
     /// assert_eq!(sum, &(&x * &px) - &(&px * &px));
     /// ```
     pub fn sum_of_products(terms: &[(&Self, &Self, bool)]) -> Result<Self, AlgebraError> {
-        let Some(first) = terms.first() else {
-            return Err(AlgebraError::Invalid(
-                "an empty sum of products has no variable set".into(),
-            ));
-        };
-        let vars = first.0.vars.clone();
+        let first = Self::first_factor(terms.first().map(|t| t.0))?;
+        let vars = first.vars.clone();
         let mut streams: Streams<C> = Vec::new();
         for &(a, b, negate) in terms {
             a.same_vars(b)?;
-            first.0.same_vars(a)?;
+            first.same_vars(a)?;
             Self::push_product(&mut streams, a, b, negate)?;
         }
         Self::sum_streams(&vars, streams)
@@ -64,18 +60,14 @@ impl<C: Coefficient> Poly<C> {
     pub fn sum_of_derivative_products(
         terms: &[(&Self, Var, &Self, bool)],
     ) -> Result<Self, AlgebraError> {
-        let Some(first) = terms.first() else {
-            return Err(AlgebraError::Invalid(
-                "an empty sum of products has no variable set".into(),
-            ));
-        };
-        let vars = first.0.vars.clone();
+        let first = Self::first_factor(terms.first().map(|t| t.0))?;
+        let vars = first.vars.clone();
         let mut streams: Streams<C> = Vec::new();
         // The largest exponent of the last `f` seen (a bracket passes one `f` many times).
         let mut f_max: Option<(*const Self, i64)> = None;
         for &(f, v, g, negate) in terms {
             f.same_vars(g)?;
-            first.0.same_vars(f)?;
+            first.same_vars(f)?;
             if f.is_zero() || g.is_zero() {
                 continue;
             }
@@ -162,6 +154,13 @@ impl<C: Coefficient> Poly<C> {
             streams.push((q, Self::raw(&a.vars, p.exps, p.coeffs)));
         }
         Ok(())
+    }
+
+    /// The first factor of a sum, which gives its variable set (an empty sum has none).
+    fn first_factor(first: Option<&Self>) -> Result<&Self, AlgebraError> {
+        first.ok_or_else(|| {
+            AlgebraError::Invalid("an empty sum of products has no variable set".into())
+        })
     }
 
     /// The sum of the streams: one content, a tree of merges, one normalization.
