@@ -39,14 +39,16 @@ NAMES = {"tower": "W1 tower", "single": "W2 single", "fateman": "W3a Fateman",
 # (workload, size, tools)
 FULL = [("tower", 24, "superint superint2 flint singular"),
         ("single", 80, "superint superint2 flint singular"),
-        ("fateman", 20, "superint flint singular"), ("pearce", 12, "superint flint singular"),
+        ("fateman", 20, "superint superint2 flint singular"),
+        ("pearce", 12, "superint superint2 flint singular"),
         ("algebra", 1000, "superint flint singular"),
         ("tower", 8, "superint sympy"), ("single", 20, "superint sympy"),
         ("fateman", 10, "superint sympy"), ("pearce", 4, "superint sympy"),
         ("algebra", 100, "superint sympy")]
 QUICK = [("tower", 8, "superint superint2 flint singular sympy"),
          ("single", 20, "superint superint2 flint singular sympy"),
-         ("fateman", 10, "superint flint singular sympy"), ("pearce", 4, "superint flint singular sympy"),
+         ("fateman", 10, "superint superint2 flint singular sympy"),
+         ("pearce", 4, "superint superint2 flint singular sympy"),
          ("algebra", 100, "superint flint singular sympy")]
 # the goal rows: every workload at its defined sizes
 GOAL = [("tower", 8), ("tower", 16), ("tower", 24), ("single", 40), ("single", 80),
@@ -59,7 +61,7 @@ EXPECTED_ZEROS = {"tower": lambda n: 2 * n * n, "single": lambda n: 2, "fateman"
 def command(tool, workload, size):
     if tool == "superint":
         return [SUPERINT, "bench", workload, str(size)], None
-    if tool == "superint2":  # the same on two threads (W1 pairs and W2 brackets in parallel)
+    if tool == "superint2":  # the same on two threads (W1 pairs, W2 brackets, W3 product parts)
         return [SUPERINT, "bench", workload, str(size), "--threads", "2"], None
     if tool in ("flint", "sympy"):
         return [PYTHON, os.path.join(HERE, "peers.py"), tool, workload, str(size)], None

@@ -24,8 +24,8 @@ pub struct BenchArgs {
     /// Its size (N for W1, m for W2, the exponent for W3, repetitions for W4).
     #[arg(value_parser = clap::value_parser!(i64).range(1..=100_000))]
     size: i64,
-    /// Threads for the workloads that have independent parts (W1 pairs, W2 brackets); 1 runs
-    /// everything on the calling thread.
+    /// Threads for the workloads that have independent parts (W1 pairs, W2 brackets, the index
+    /// range of a large dense product in W3); 1 runs everything on the calling thread.
     #[arg(long, default_value_t = 1, value_parser = clap::value_parser!(u16).range(1..=256))]
     threads: u16,
 }

@@ -64,17 +64,60 @@ impl Kronecker {
             .collect()
     }
 
-    /// The packed monomials of product indices, in the order given.
-    pub(crate) fn decode(&self, layout: &Layout, indices: &[u64]) -> Vec<u64> {
-        let w = layout.words;
-        let mut exps = vec![0u64; indices.len() * w];
-        let mut e = vec![0i64; self.ranges.len()];
-        for (slot, &idx) in exps.chunks_exact_mut(w).zip(indices) {
-            for (j, ej) in e.iter_mut().enumerate() {
-                *ej = ((idx / self.strides[j]) % self.ranges[j]) as i64 + self.lo[j];
-            }
-            layout.pack(&e, slot);
+    /// A decoder from indices of this box to packed monomials.
+    pub(crate) fn decoder(&self, layout: &Layout) -> Decoder {
+        let mut corner = vec![0u64; layout.words];
+        layout.pack(&self.lo, &mut corner);
+        let small = self.size <= 1 << 32;
+        let digits = (0..self.ranges.len())
+            .rev()
+            .filter(|&j| self.ranges[j] > 1)
+            .map(|j| {
+                let (word, shift) = layout.field(j);
+                let radix = self.ranges[j];
+                Digit {
+                    radix,
+                    magic: if small { u64::MAX / radix + 1 } else { 0 },
+                    word,
+                    shift,
+                }
+            })
+            .collect();
+        Decoder { corner, digits }
+    }
+}
+
+/// One variable's digit of a Kronecker index, least significant first in [`Decoder`].
+struct Digit {
+    radix: u64,
+    /// `⌈2⁶⁴ / radix⌉` when every index fits 32 bits (Lemire's exact division by
+    /// multiplication), else 0 (hardware division).
+    magic: u64,
+    word: usize,
+    shift: u32,
+}
+
+/// Turns Kronecker indices into packed monomials: the packing is linear in the exponents, so a
+/// monomial is the box's packed lower corner plus each digit shifted into its field.
+pub(crate) struct Decoder {
+    corner: Vec<u64>,
+    digits: Vec<Digit>,
+}
+
+impl Decoder {
+    /// Writes the packed monomial of index `idx` into `out` (`layout.words` words).
+    #[inline]
+    pub(crate) fn decode_into(&self, mut idx: u64, out: &mut [u64]) {
+        out.copy_from_slice(&self.corner);
+        for d in &self.digits {
+            let q = if d.magic != 0 {
+                ((d.magic as u128 * idx as u128) >> 64) as u64
+            } else {
+                idx / d.radix
+            };
+            let r = idx - q * d.radix;
+            out[d.word] = out[d.word].wrapping_add(r << d.shift);
+            idx = q;
         }
-        exps
     }
 }

@@ -19,6 +19,7 @@ mod expansions;
 mod laws;
 mod limits;
 mod printing;
+mod products;
 mod props;
 mod reject;
 mod subst_eval;

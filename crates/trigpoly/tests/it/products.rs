@@ -1,0 +1,49 @@
+//! Large products through the dense kernel: split into parts over two threads or run as one
+//! part, with the touched accumulators marked (a sparse box) or all of them scanned (a dense
+//! box), the product is the same canonical polynomial, and takes the value of `f(p)·g(p)` at an
+//! integer point.
+
+use trigpoly::{Point, Rational, VarSet};
+
+use crate::common::{p, var, Q};
+
+/// `f · g` computed on a rayon pool of `threads` threads.
+fn product_on(threads: usize, f: &Q, g: &Q) -> Q {
+    rayon::ThreadPoolBuilder::new()
+        .num_threads(threads)
+        .build()
+        .expect("a thread pool")
+        .install(|| f * g)
+}
+
+#[test]
+fn dense_products_split_over_threads_agree_with_one_thread() {
+    let vars = VarSet::builder()
+        .coordinate("x")
+        .coordinate("y")
+        .coordinate("z")
+        .coordinate("t")
+        .build()
+        .unwrap();
+    let point = [("x", 2), ("y", -1), ("z", 1), ("t", -1)]
+        .iter()
+        .fold(Point::new(&vars), |pt, &(name, v)| {
+            pt.with(var(&vars, name), Rational::from(v))
+        });
+    for (f, g) in [
+        // 715² ≈ 511k products into a box of 19⁴ ≈ 130k cells: every accumulator is scanned.
+        ("(1 + x + y + z + t)^9", "(1 + 2*x - y + 3*z + t)^9"),
+        // 715² products into a box of 37⁴ ≈ 1.9M cells: the touched ones are marked.
+        ("(1 + x + y + 2*z^3 - t^3)^9", "(1 - x^3 + 3*y^3 + z + t)^9"),
+    ] {
+        let (f, g): (Q, Q) = (p(&vars, f), p(&vars, g));
+        let one = product_on(1, &f, &g);
+        let two = product_on(2, &f, &g);
+        assert_eq!(one, two);
+        // The terms are in canonical order: rebuilding from them (which sorts) changes nothing.
+        let rebuilt = Q::from_terms(&vars, one.terms().map(|t| (t.coeff(), t.exponents())));
+        assert_eq!(rebuilt.as_ref(), Ok(&one));
+        let value = f.eval(&point).unwrap() * g.eval(&point).unwrap();
+        assert_eq!(one.eval(&point), Ok(value));
+    }
+}
