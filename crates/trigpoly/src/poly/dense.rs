@@ -55,22 +55,23 @@ pub(crate) fn try_mul_dense<I: IntegerRing>(
     // A chunk spans a cache's worth of accumulators or, on sparse boxes, more: every chunk
     // visits each term of `a` whose products reach it, so it must hold enough products.
     let cells = (CHUNK_BYTES / std::mem::size_of::<I::Wide>()) as u64;
+    let fa = kron.indices(layout, a.0, a.2);
+    let gb = kron.indices(layout, b.0, b.2);
+    // Index range of the product.
+    let (lo, end) = (fa[n - 1] + gb[m - 1], fa[0] + gb[0] + 1);
     let chunk = (cells * SPARSE_PRODUCTS_PER_CACHE * kron.size() / work)
         .clamp(cells, cells * MAX_CHUNK_CACHES)
+        .min(end - lo)
         .next_multiple_of(64);
     let factors = Factors {
         chunk,
-        fa: kron.indices(layout, a.0, a.2),
-        gb: kron.indices(layout, b.0, b.2),
+        fa,
+        gb,
         ca: small_a,
         cb: small_b,
     };
     let decoder = kron.decoder(layout);
-    // Index range of the product, cut into parts, highest first.
-    let (lo, end) = (
-        factors.fa[n - 1] + factors.gb[m - 1],
-        factors.fa[0] + factors.gb[0] + 1,
-    );
+    // The index range cut into parts, highest first.
     let threads = rayon::current_num_threads() as u64;
     let parts = if work < PARALLEL_WORK || threads < 2 {
         1
