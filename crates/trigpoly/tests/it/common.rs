@@ -30,6 +30,15 @@ pub fn phase_space() -> Arc<VarSet> {
     .clone()
 }
 
+/// A variable set of plain coordinates, in the order given.
+pub fn coordinates(names: &[&str]) -> Arc<VarSet> {
+    names
+        .iter()
+        .fold(VarSet::builder(), |b, name| b.coordinate(name))
+        .build()
+        .expect("valid variable names")
+}
+
 /// The handle of a declared variable.
 pub fn var(vars: &VarSet, name: &str) -> Var {
     vars.lookup(name)

@@ -3,9 +3,9 @@
 //! integers into big integers.
 
 use num_bigint::BigInt;
-use trigpoly::{GaussianRational, Integer, Rational, VarSet};
+use trigpoly::{GaussianRational, Integer, Rational};
 
-use crate::common::{big_rational, gauss, p, phase_space, rational_i128, var, G, Q};
+use crate::common::{big_rational, coordinates, gauss, p, phase_space, rational_i128, var, G, Q};
 
 /// Coefficient lists (by powers of c) of T_0..=T_n or U_0..=U_n from
 /// `P_{k+1} = 2c P_k − P_{k−1}` with the given `P_0 = 1`, `P_1`.
@@ -85,12 +85,7 @@ fn factorial(n: u64) -> u128 {
 
 #[test]
 fn multinomial_coefficients_of_one_plus_x_plus_y_plus_z() {
-    let vars = VarSet::builder()
-        .coordinate("x")
-        .coordinate("y")
-        .coordinate("z")
-        .build()
-        .unwrap();
+    let vars = coordinates(&["x", "y", "z"]);
     let (x, y, z) = (var(&vars, "x"), var(&vars, "y"), var(&vars, "z"));
     for k in 0..=12u64 {
         let f: Q = p(&vars, &format!("(1 + x + y + z)^{k}"));
@@ -272,13 +267,7 @@ fn pythagorean_angle_expansions() {
 #[test]
 fn fateman_product_coefficients_are_multinomials() {
     const N: u64 = 6;
-    let vars = VarSet::builder()
-        .coordinate("x")
-        .coordinate("y")
-        .coordinate("z")
-        .coordinate("t")
-        .build()
-        .unwrap();
+    let vars = coordinates(&["x", "y", "z", "t"]);
     let f: Q = p(&vars, &format!("(1 + x + y + z + t)^{N}"));
     assert_eq!(f.len(), 210); // C(10, 4)
     let product = &f * &(&f + &Q::one(&vars));

@@ -3,9 +3,9 @@
 //! box), the product is the same canonical polynomial, and takes the value of `f(p)·g(p)` at an
 //! integer point.
 
-use trigpoly::{Point, Rational, VarSet};
+use trigpoly::{Point, Rational};
 
-use crate::common::{p, var, Q};
+use crate::common::{coordinates, p, var, Q};
 
 /// `f · g` computed on a rayon pool of `threads` threads.
 fn product_on(threads: usize, f: &Q, g: &Q) -> Q {
@@ -18,13 +18,7 @@ fn product_on(threads: usize, f: &Q, g: &Q) -> Q {
 
 #[test]
 fn dense_products_split_over_threads_agree_with_one_thread() {
-    let vars = VarSet::builder()
-        .coordinate("x")
-        .coordinate("y")
-        .coordinate("z")
-        .coordinate("t")
-        .build()
-        .unwrap();
+    let vars = coordinates(&["x", "y", "z", "t"]);
     let point = [("x", 2), ("y", -1), ("z", 1), ("t", -1)]
         .iter()
         .fold(Point::new(&vars), |pt, &(name, v)| {
