@@ -10,6 +10,9 @@
 //!   stored as powers of `e^{iθ}`.
 //! * Normal form: every operation returns the canonical representation, so an identity holds
 //!   exactly when the difference [`Poly::is_zero`].
+//! * Threads: a large product (2¹⁸ pairs of terms or more, on the dense path) splits its work
+//!   over the rayon thread pool it is called from; call it inside a one-thread pool
+//!   (`rayon::ThreadPoolBuilder::new().num_threads(1)`) to keep it on the calling thread.
 //!
 //! ```
 //! use trigpoly::{GaussianRational, Poly, VarSet};
