@@ -52,13 +52,13 @@ pub(crate) fn try_mul_dense<I: IntegerRing>(
     if bits(&small_a) + bits(&small_b) + terms_bits + I::PRODUCTS_PER_COMPONENT > 126 {
         return None;
     }
-    // A chunk spans a cache's worth of accumulators or, on sparse boxes, more: every chunk
-    // visits each term of `a` whose products reach it, so it must hold enough products.
-    let cells = (CHUNK_BYTES / std::mem::size_of::<I::Wide>()) as u64;
     let fa = kron.indices(layout, a.0, a.2);
     let gb = kron.indices(layout, b.0, b.2);
     // Index range of the product.
     let (lo, end) = (fa[n - 1] + gb[m - 1], fa[0] + gb[0] + 1);
+    // A chunk spans a cache's worth of accumulators or, on sparse boxes, more: every chunk
+    // visits each term of `a` whose products reach it, so it must hold enough products.
+    let cells = (CHUNK_BYTES / std::mem::size_of::<I::Wide>()) as u64;
     let chunk = (cells * SPARSE_PRODUCTS_PER_CACHE * kron.size() / work)
         .clamp(cells, cells * MAX_CHUNK_CACHES)
         .min(end - lo)
@@ -73,13 +73,13 @@ pub(crate) fn try_mul_dense<I: IntegerRing>(
     let decoder = kron.decoder(layout);
     // The index range cut into parts, highest first.
     let threads = rayon::current_num_threads() as u64;
-    let parts = if work < PARALLEL_WORK || threads < 2 {
+    let count = if work < PARALLEL_WORK || threads < 2 {
         1
     } else {
         (threads * PARTS_PER_THREAD).min(end - lo)
     };
-    let cut = |p: u64| lo + ((end - lo) as u128 * p as u128 / parts as u128) as u64;
-    let ranges: Vec<(u64, u64)> = (0..parts).rev().map(|p| (cut(p), cut(p + 1))).collect();
+    let cut = |p: u64| lo + ((end - lo) as u128 * p as u128 / count as u128) as u64;
+    let ranges: Vec<(u64, u64)> = (0..count).rev().map(|p| (cut(p), cut(p + 1))).collect();
     // Marking costs a little per product, scanning a little per accumulator.
     let mark = kron.size() > work;
     let parts: Vec<Product<I>> = match ranges
