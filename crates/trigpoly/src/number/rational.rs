@@ -208,6 +208,14 @@ impl Rational {
         Rational::from_fraction(&num, &den).expect("lcm of denominators is nonzero")
     }
 
+    /// The content of a list: `content_gcd` of all of them (zero for an empty list), so that
+    /// each value divided by it is an integer and those integers are coprime.
+    pub fn content_of<'a>(values: impl IntoIterator<Item = &'a Rational>) -> Rational {
+        values
+            .into_iter()
+            .fold(Rational::zero(), |g, q| Rational::content_gcd(&g, q))
+    }
+
     /// Compares with zero.
     pub fn sign(&self) -> Ordering {
         match &self.0 {

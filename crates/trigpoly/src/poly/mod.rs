@@ -141,25 +141,22 @@ impl<C: Coefficient> Poly<C> {
                 _ => combined.push((key, c)),
             }
         }
+        combined.retain(|(_, c)| !c.is_zero());
         let parts: Vec<(Rational, C::Int)> = combined
             .iter()
-            .filter(|(_, c)| !c.is_zero())
             .map(|(_, c)| {
                 C::from_gaussian(c)
                     .expect("a sum of field elements")
                     .split()
             })
             .collect();
-        let Some(first) = parts.first() else {
+        if parts.is_empty() {
             return Ok(Self::zero(vars));
-        };
-        let d = parts
-            .iter()
-            .skip(1)
-            .fold(first.0.abs(), |g, (q, _)| Rational::content_gcd(&g, q));
+        }
+        let d = Rational::content_of(parts.iter().map(|(q, _)| q));
         let mut exps = Vec::with_capacity(parts.len() * w);
         let mut coeffs = Vec::with_capacity(parts.len());
-        for ((key, _), (q, n)) in combined.iter().filter(|(_, c)| !c.is_zero()).zip(parts) {
+        for ((key, _), (q, n)) in combined.iter().zip(parts) {
             exps.extend_from_slice(key);
             coeffs.push(n.scale(&(&q / &d).numer()));
         }

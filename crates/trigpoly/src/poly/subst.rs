@@ -178,10 +178,7 @@ impl<C: Coefficient> Poly<C> {
             .iter()
             .map(|&e| Some((e, q.pow(e)?)))
             .collect::<Option<_>>()?;
-        let d = powers
-            .iter()
-            .skip(1)
-            .fold(powers[0].1.abs(), |g, (_, p)| Rational::content_gcd(&g, p));
+        let d = Rational::content_of(powers.iter().map(|(_, p)| p));
         // Per group: the translation e·(m − v) and the integer factor of the coefficients.
         let mut unit = vec![0u64; w];
         layout.unit(j, 1, &mut unit);

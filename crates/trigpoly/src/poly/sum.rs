@@ -171,10 +171,7 @@ impl<C: Coefficient> Poly<C> {
         if streams.is_empty() {
             return Ok(Self::zero(vars));
         }
-        let d = streams
-            .iter()
-            .skip(1)
-            .fold(streams[0].0.abs(), |g, (q, _)| Rational::content_gcd(&g, q));
+        let d = Rational::content_of(streams.iter().map(|(q, _)| q));
         let parts: Vec<Self> = streams
             .into_iter()
             .map(|(q, mut s)| {
