@@ -63,15 +63,15 @@ impl<C: Coefficient> Poly<C> {
         let first = Self::first_factor(terms.first().map(|t| t.0))?;
         let vars = first.vars.clone();
         let mut streams: Streams<C> = Vec::new();
+        let limit = vars.limits().max_degree as i64;
         // The largest exponent of the last `f` seen (a bracket passes one `f` many times).
-        let mut f_max: Option<(*const Self, i64)> = None;
+        let mut f_max: Option<(&Self, i64)> = None;
         for &(f, v, g, negate) in terms {
             f.same_vars(g)?;
             first.same_vars(f)?;
             if f.is_zero() || g.is_zero() {
                 continue;
             }
-            let limit = vars.limits().max_degree as i64;
             let fm = match f_max {
                 Some((p, m)) if std::ptr::eq(p, f) => m,
                 _ => {
