@@ -64,7 +64,6 @@ pub(crate) fn try_mul_dense<I: IntegerRing>(
         .min(end - lo)
         .next_multiple_of(64);
     let factors = Factors {
-        chunk,
         fa,
         gb,
         ca: small_a,
@@ -88,9 +87,9 @@ pub(crate) fn try_mul_dense<I: IntegerRing>(
             || vec![I::Wide::default(); chunk as usize],
             |acc, (lo, hi)| {
                 if mark {
-                    factors.range::<I, true>(acc, lo, hi, &decoder, layout.words, max_terms)
+                    factors.range::<I, true>(acc, lo, hi, &decoder, max_terms)
                 } else {
-                    factors.range::<I, false>(acc, lo, hi, &decoder, layout.words, max_terms)
+                    factors.range::<I, false>(acc, lo, hi, &decoder, max_terms)
                 }
             },
         )
@@ -99,10 +98,8 @@ pub(crate) fn try_mul_dense<I: IntegerRing>(
         Ok(parts) => parts,
         Err(e) => return Some(Err(e)),
     };
+    // Each part kept to the term limit; the caller checks the total.
     let total: usize = parts.iter().map(|(_, c)| c.len()).sum();
-    if total > max_terms {
-        return Some(Err(AlgebraError::TooManyTerms { limit: max_terms }));
-    }
     if parts.len() == 1 {
         return parts.into_iter().next().map(Ok);
     }
@@ -117,7 +114,6 @@ pub(crate) fn try_mul_dense<I: IntegerRing>(
 
 /// The two factors as Kronecker indices (descending) and machine-word coefficients.
 struct Factors<S> {
-    chunk: u64,
     fa: Vec<u64>,
     gb: Vec<u64>,
     ca: Vec<S>,
@@ -126,21 +122,21 @@ struct Factors<S> {
 
 impl<S: Copy + Send + Sync> Factors<S> {
     /// The terms of the product with indices in `[lo, hi)`, descending, as packed monomials.
-    /// With `MARK`, a bitmap records the touched accumulators and only those are read back;
-    /// without, every accumulator of a chunk is read back.
+    /// A chunk is as wide as `acc`. With `MARK`, a bitmap records the touched accumulators and
+    /// only those are read back; without, every accumulator of a chunk is read back.
     fn range<I: IntegerRing<Small = S>, const MARK: bool>(
         &self,
         acc: &mut [I::Wide],
         lo: u64,
         hi: u64,
         decoder: &Decoder,
-        words: usize,
         max_terms: usize,
     ) -> Result<Product<I>, AlgebraError> {
         let (fa, gb, ca, cb) = (&self.fa, &self.gb, &self.ca, &self.cb);
         let (n, m) = (fa.len(), gb.len());
         let (g_max, g_min) = (gb[0], gb[m - 1]);
-        let chunk = self.chunk;
+        let chunk = acc.len() as u64;
+        let words = decoder.words();
         let zero = I::Wide::default();
         let mut touched = vec![0u64; if MARK { (chunk / 64) as usize } else { 0 }];
         // `next[i]`: the first partner of term `i` of `a` not yet multiplied (partners are

@@ -105,6 +105,11 @@ pub(crate) struct Decoder {
 }
 
 impl Decoder {
+    /// Words per packed monomial.
+    pub(crate) fn words(&self) -> usize {
+        self.corner.len()
+    }
+
     /// Writes the packed monomial of index `idx` into `out` (`layout.words` words).
     #[inline]
     pub(crate) fn decode_into(&self, mut idx: u64, out: &mut [u64]) {
