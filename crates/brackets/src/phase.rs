@@ -98,8 +98,8 @@ impl PhaseSpace {
     // {f, g} = Σ_i (∂f/∂q_i ∂g/∂p_i − ∂f/∂p_i ∂g/∂q_i)
     /// The Poisson bracket `{f, g}`.
     pub fn bracket(&self, f: &Expr, g: &Expr) -> Result<Expr, EngineError> {
-        let dg = self.gradient(g)?;
-        self.bracket_with_gradient(f, &dg)
+        let pairs: Vec<(Var, Var)> = self.pairs.iter().map(|c| (c.q, c.p)).collect();
+        Ok(Expr::sum_of_jacobians(f, g, &pairs)?)
     }
 
     /// `(∂g/∂q_i, ∂g/∂p_i)` for each pair: what a bracket with `g` needs of `g`, worth keeping

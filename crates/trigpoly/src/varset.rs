@@ -124,7 +124,13 @@ impl Layout {
     /// The exponent of variable `j` in a packed monomial.
     #[inline]
     pub fn get(&self, m: &[u64], j: usize) -> i64 {
-        let (w, shift) = Layout::place(self.per_word, self.bits, j);
+        self.read(m, self.field(j))
+    }
+
+    /// The exponent in the field `(word, shift)` (from [`Layout::field`]) of a packed
+    /// monomial: what `get` does once the field is known.
+    #[inline]
+    pub fn read(&self, m: &[u64], (w, shift): (usize, u32)) -> i64 {
         let mask = if self.bits == 64 {
             u64::MAX
         } else {

@@ -41,6 +41,9 @@ impl Rational {
     fn from_i128(num: i128, den: i128) -> Rational {
         debug_assert!(den != 0);
         if let (Ok(n), Ok(d)) = (i64::try_from(num), i64::try_from(den)) {
+            if d == 1 {
+                return Rational(Repr::Small { num: n, den: 1 });
+            }
             // The common case: word-sized gcd and division (no 128-bit division).
             if n != i64::MIN && d != i64::MIN {
                 let g = binary_gcd(n.unsigned_abs(), d.unsigned_abs()) as i64;
@@ -193,14 +196,16 @@ impl Rational {
     /// that `a/g` and `b/g` are coprime integers. `gcd(0, b) = |b|`.
     pub fn content_gcd(a: &Rational, b: &Rational) -> Rational {
         if let (Repr::Small { num: n1, den: d1 }, Repr::Small { num: n2, den: d2 }) = (&a.0, &b.0) {
-            let g = gcd_u128(n1.unsigned_abs() as u128, n2.unsigned_abs() as u128);
-            let dg = gcd_u128(*d1 as u128, *d2 as u128);
-            let lcm = (*d1 as u128 / dg) * *d2 as u128;
+            let g = binary_gcd(n1.unsigned_abs(), n2.unsigned_abs());
             if g == 0 {
                 return Rational::zero();
             }
-            if let (Ok(g), Ok(l)) = (i128::try_from(g), i128::try_from(lcm)) {
-                return Rational::from_i128(g, l);
+            // Both fractions are in lowest terms, so `g` (which divides both numerators) is
+            // prime to both denominators and to their lcm: the quotient needs no reduction.
+            let dg = binary_gcd(*d1 as u64, *d2 as u64);
+            let lcm = (*d1 as u64 / dg).checked_mul(*d2 as u64);
+            if let (Ok(num), Some(Ok(den))) = (i64::try_from(g), lcm.map(i64::try_from)) {
+                return Rational(Repr::Small { num, den });
             }
         }
         let num = a.numer().gcd(&b.numer());

@@ -10,6 +10,7 @@ mod arith;
 mod calculus;
 mod complex;
 mod dense;
+mod gather;
 mod kronecker;
 mod mul;
 mod pow;
@@ -328,38 +329,44 @@ impl<C: Coefficient> Poly<C> {
         }
     }
 
-    /// The largest `|e|` over every exponent of every term (0 for zero): one pass over the
-    /// packed words, no allocation. Enough to clear most exponent checks at once, since the
-    /// limit is the same for every variable.
-    pub(crate) fn max_abs_exponent(&self) -> i64 {
+    /// A power of two at least the largest `|e|` over every exponent of every term: one pass
+    /// over the packed words, a few operations per word, no allocation. Enough to clear most
+    /// exponent checks at once, since the limit is the same for every variable; a check it
+    /// does not clear goes variable by variable.
+    pub(crate) fn exponent_bound(&self) -> i64 {
         let layout = self.vars.layout();
-        let (bits, per_word) = (layout.bits, layout.per_word as u32);
+        let bits = layout.bits;
+        let field = if bits == 64 {
+            u64::MAX
+        } else {
+            (1u64 << bits) - 1
+        };
         let bias = layout.one();
-        let mut max = 0u64;
+        let mut acc = 0u64;
         for m in self.exps.chunks_exact(self.words()) {
             for (&word, &b) in m.iter().zip(bias) {
-                // XOR with the bias leaves each exponent in two's complement (unused fields 0).
+                // XOR with the bias leaves each field in two's complement (unused fields 0,
+                // and `b` has the sign bit of each used field); complementing the negative
+                // fields leaves `|e|` or `|e| − 1` in each.
                 let x = word ^ b;
-                if bits == 16 {
-                    // The common layout, unrolled: four fields per word.
-                    let f = |s: u32| (((x << s) as i64) >> 48).unsigned_abs();
-                    max = max.max(f(0).max(f(16)).max(f(32).max(f(48))));
-                } else {
-                    for s in 0..per_word {
-                        let e = ((x << (bits * s)) as i64) >> (64 - bits);
-                        max = max.max(e.unsigned_abs());
-                    }
-                }
+                let negative = ((x & b) >> (bits - 1)).wrapping_mul(field);
+                acc |= x ^ negative;
             }
         }
-        max as i64
+        let mut r = 0u64;
+        for s in (0..64).step_by(bits as usize) {
+            r |= (acc >> s) & field;
+        }
+        // Every |e| ≤ r + 1 ≤ 2^(bit length of r).
+        let bound = 1u128 << (64 - r.leading_zeros());
+        bound.min(i64::MAX as u128) as i64
     }
 
     /// Checks that the exponents of a product of `self` and `other` stay within the limit:
     /// from the largest exponents when that suffices, else variable by variable.
     pub(crate) fn check_product_exponents(&self, other: &Self) -> Result<(), AlgebraError> {
         let limit = self.vars.limits().max_degree as i64;
-        if self.max_abs_exponent() + other.max_abs_exponent() <= limit {
+        if self.exponent_bound() + other.exponent_bound() <= limit {
             return Ok(());
         }
         mul::check_sum_bounds(&self.vars, &self.bounds(), &other.bounds())

@@ -6,6 +6,7 @@
 //! accumulator at a time, with a working set of one heap entry per term of the shorter factor.
 
 use super::dense::try_mul_dense;
+use super::gather;
 use super::kronecker::Kronecker;
 use super::{check_exponent, Poly};
 use crate::error::AlgebraError;
@@ -74,6 +75,18 @@ impl<C: Coefficient> Poly<C> {
         } else {
             (other, self)
         };
+        if self.words() <= gather::WORDS
+            && small.len().saturating_mul(big.len()) <= gather::MAX_PAIRS
+        {
+            small.check_product_exponents(big)?;
+            let (exps, coeffs) = gather::product(
+                self.layout(),
+                (&small.exps, &small.coeffs),
+                (&big.exps, &big.coeffs),
+            );
+            Self::check_terms(&self.vars, coeffs.len())?;
+            return Ok(Self::product(&self.vars, content, exps, coeffs));
+        }
         if small.len() <= SMALL_SIDE {
             small.check_product_exponents(big)?;
             let product = shift_and_merge(small, big, content);

@@ -19,9 +19,9 @@ impl<C: Coefficient> Poly<C> {
             };
         }
         // Exponent bounds of the result, checked before any work (variable by variable only
-        // when the largest exponent does not clear it).
+        // when the bound on the largest exponent does not clear it).
         let limit = self.vars.limits().max_degree as u64;
-        if (self.max_abs_exponent() as u64).saturating_mul(e.unsigned_abs()) > limit {
+        if (self.exponent_bound() as u64).saturating_mul(e.unsigned_abs()) > limit {
             for (v, (lo, hi)) in self.vars.vars().zip(self.bounds()) {
                 check_exponent(&self.vars, v, lo.saturating_mul(e))?;
                 check_exponent(&self.vars, v, hi.saturating_mul(e))?;

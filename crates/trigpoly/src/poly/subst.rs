@@ -157,7 +157,7 @@ impl<C: Coefficient> Poly<C> {
             .max()
             .unwrap_or(0)
             .checked_mul(mv.iter().map(|m| m.unsigned_abs()).max().unwrap_or(0))?;
-        let clear = (self.max_abs_exponent() as u64).checked_add(largest_shift)?
+        let clear = (self.exponent_bound() as u64).checked_add(largest_shift)?
             <= self.vars.limits().max_degree as u64;
         if !clear {
             let bounds = self.bounds();

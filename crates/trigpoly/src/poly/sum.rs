@@ -7,11 +7,12 @@
 //! rational content, merged pairwise like the levels of a tree, and normalised once, instead of
 //! normalising every derivative, every product and every partial sum.
 
-use super::mul::{merge_tree, SMALL_SIDE};
+use super::gather::{self, Gather, Monomial};
+use super::mul::{merge_tree, Key, SMALL_SIDE};
 use super::Poly;
 use crate::error::AlgebraError;
-use crate::number::{Coefficient, IntegerRing, Rational};
-use crate::varset::Var;
+use crate::number::{Coefficient, Integer, IntegerRing, Rational};
+use crate::varset::{Var, VarKind};
 
 /// Sorted term lists with their rational contents, waiting to be summed.
 type Streams<C> = Vec<(Rational, Poly<C>)>;
@@ -64,7 +65,7 @@ impl<C: Coefficient> Poly<C> {
         let vars = first.vars.clone();
         let mut streams: Streams<C> = Vec::new();
         let limit = vars.limits().max_degree as i64;
-        // The largest exponent of the last `f` seen (a bracket passes one `f` many times).
+        // The exponent bound of the last `f` seen (a bracket passes one `f` many times).
         let mut f_max: Option<(&Self, i64)> = None;
         for &(f, v, g, negate) in terms {
             f.same_vars(g)?;
@@ -75,18 +76,149 @@ impl<C: Coefficient> Poly<C> {
             let fm = match f_max {
                 Some((p, m)) if std::ptr::eq(p, f) => m,
                 _ => {
-                    let m = f.max_abs_exponent();
+                    let m = f.exponent_bound();
                     f_max = Some((f, m));
                     m
                 }
             };
-            if g.len() <= SMALL_SIDE && fm + 1 + g.max_abs_exponent() <= limit {
+            if g.len() <= SMALL_SIDE && fm + 1 + g.exponent_bound() <= limit {
                 f.push_derivative_streams(&mut streams, v, g, negate)?;
             } else {
                 Self::push_product(&mut streams, &f.derivative(v)?, g, negate)?;
             }
         }
         Self::sum_streams(&vars, streams)
+    }
+
+    /// `Σ_k (∂f/∂q_k·∂g/∂p_k − ∂f/∂p_k·∂g/∂q_k)` over the pairs `(q_k, p_k)`: the sum of the
+    /// Jacobian determinants `∂(f, g)/∂(q_k, p_k)`, which is the Poisson bracket `{f, g}` when
+    /// the pairs are canonical.
+    ///
+    /// Short inputs take one pass over their term pairs: both products of derivatives of the
+    /// terms `c·m` and `d·n` have the monomial `m·n/(q·p)`, with the coefficient
+    /// `c·d·(a_q·b_p − a_p·b_q)`, where `a`, `b` are the exponents in `m`, `n` (for an angle,
+    /// `∂/∂θ e^{ikθ} = ik·e^{ikθ}` keeps the monomial and brings a factor `i`). Longer inputs
+    /// go through the derivatives of `g` and [`Poly::sum_of_derivative_products`].
+    ///
+    /// ```
+    /// use trigpoly::{Poly, Rational, VarSet};
+    /// let vars = VarSet::builder().coordinate("x").momentum("p").build().unwrap();
+    /// let (x, p) = (vars.lookup("x").unwrap(), vars.lookup("p").unwrap());
+    /// let q = |s: &str| Poly::<Rational>::parse(&vars, s).unwrap();
+    /// let bracket = Poly::sum_of_jacobians(&q("x^2 p"), &q("p^3 + x"), &[(x, p)]).unwrap();
+    /// assert_eq!(bracket, q("6 x p^3 - x^2"));
+    /// ```
+    pub fn sum_of_jacobians(
+        f: &Self,
+        g: &Self,
+        pairs: &[(Var, Var)],
+    ) -> Result<Self, AlgebraError> {
+        f.same_vars(g)?;
+        if f.is_zero() || g.is_zero() || pairs.is_empty() {
+            return Ok(Self::zero(&f.vars));
+        }
+        if let Some(sum) = Self::short_jacobians(f, g, pairs)? {
+            return Ok(sum);
+        }
+        let mut dg = Vec::with_capacity(pairs.len());
+        for &(q, p) in pairs {
+            dg.push((g.derivative(q)?, g.derivative(p)?));
+        }
+        let mut terms = Vec::with_capacity(2 * pairs.len());
+        for (&(q, p), (gq, gp)) in pairs.iter().zip(&dg) {
+            terms.push((f, q, gp, false));
+            terms.push((f, p, gq, true));
+        }
+        Self::sum_of_derivative_products(&terms)
+    }
+
+    /// [`Poly::sum_of_jacobians`] by gathering the products of the term pairs, or `None` when
+    /// the inputs are too long, their monomials too wide, an exponent could pass the limit, or
+    /// an angle needs `i` in a ring without it (the general path reports that).
+    fn short_jacobians(
+        f: &Self,
+        g: &Self,
+        pairs: &[(Var, Var)],
+    ) -> Result<Option<Self>, AlgebraError> {
+        let vars = &f.vars;
+        let layout = f.layout();
+        let w = layout.words;
+        let limit = vars.limits().max_degree as i64;
+        if w > gather::WORDS
+            || f.len().saturating_mul(g.len()) > gather::MAX_PAIRS
+            || f.exponent_bound() + g.exponent_bound() + 1 > limit
+        {
+            return Ok(None);
+        }
+        // For each pair: its variables, what its derivatives take off a monomial (one in the
+        // field of each variable that is not an angle), and how many factors `i` they bring.
+        let mut shapes = Vec::with_capacity(pairs.len());
+        for &(q, p) in pairs {
+            let mut lower: Monomial = [0; gather::WORDS];
+            let mut turns = 0;
+            for v in [q, p] {
+                if vars.variable(v).kind() == VarKind::Angle {
+                    turns += 1;
+                } else {
+                    let (word, shift) = layout.field(v.index());
+                    lower[word] = lower[word].wrapping_add(1 << shift);
+                }
+            }
+            shapes.push((
+                layout.field(q.index()),
+                layout.field(p.index()),
+                lower,
+                turns,
+            ));
+        }
+        // The exponents of each pair's variables in each term.
+        let exponents = |h: &Self| -> Vec<(i64, i64)> {
+            let mut out = Vec::with_capacity(h.len() * shapes.len());
+            for m in h.exps.chunks_exact(w) {
+                for &(q, p, ..) in &shapes {
+                    out.push((layout.read(m, q), layout.read(m, p)));
+                }
+            }
+            out
+        };
+        let (ef, eg) = (exponents(f), exponents(g));
+        let k = shapes.len();
+        let bias = Monomial::load(layout.one());
+        let mut out = Gather::with_capacity(f.len() * g.len());
+        for (i, (mf, cf)) in f.exps.chunks_exact(w).zip(&f.coeffs).enumerate() {
+            let mf = Monomial::load(mf);
+            for (j, (mg, cg)) in g.exps.chunks_exact(w).zip(&g.coeffs).enumerate() {
+                let mut product = None;
+                for (s, &(_, _, lower, turns)) in shapes.iter().enumerate() {
+                    let ((aq, ap), (bq, bp)) = (ef[i * k + s], eg[j * k + s]);
+                    let factor = aq * bp - ap * bq;
+                    if factor == 0 {
+                        continue;
+                    }
+                    let c = product.get_or_insert_with(|| cf.mul(cg));
+                    let mut t = c.scale(&Integer::from(factor));
+                    for _ in 0..turns {
+                        match t.try_mul_i() {
+                            Some(ti) => t = ti,
+                            None => return Ok(None),
+                        }
+                    }
+                    let mut m = mf.mul(&Monomial::load(mg), &bias);
+                    for (word, lower) in m.iter_mut().zip(lower) {
+                        *word = word.wrapping_sub(lower);
+                    }
+                    out.push(m, t);
+                }
+            }
+        }
+        let (exps, coeffs) = out.finish(w);
+        Self::check_terms(vars, coeffs.len())?;
+        Ok(Some(Self::from_sorted(
+            vars,
+            &f.content * &g.content,
+            exps,
+            coeffs,
+        )))
     }
 
     /// The streams of `± (∂self/∂v) · g` for a short `g` whose exponents are known to stay

@@ -267,6 +267,54 @@ proptest! {
         }
     }
 
+    /// The sum of Jacobians (the bracket's kernel) against derivatives multiplied one by one:
+    /// short inputs (one pass over the term pairs) and long ones (through the derivatives), on
+    /// pairs with no angle, one angle and two.
+    #[test]
+    fn sum_of_jacobians_agrees_with_the_derivatives(
+        f in gpoly(10),
+        g in gpoly(10),
+        h in proptest::collection::vec((gaussian(), exponents(true)), 30..40),
+        k in proptest::collection::vec((gaussian(), exponents(true)), 10..16),
+        a in qpoly(9),
+        b in qpoly(9),
+    ) {
+        let vars = phase_space();
+        let poly = |terms| G::from_terms(&vars, terms).expect("small exponents");
+        let (h, k) = (poly(h), poly(k));
+        let v = |name: &str| var(&vars, name);
+        let pairs = [(v("x"), v("p_x")), (v("y"), v("p_y")), (v("theta"), v("M")), (v("phi"), v("theta"))];
+        let direct = |f: &G, g: &G| {
+            pairs.iter().fold(G::zero(&vars), |sum, &(q, p)| {
+                let d = |h: &G, w| h.derivative(w).expect("derivative within the limits");
+                &(&sum + &(&d(f, q) * &d(g, p))) - &(&d(f, p) * &d(g, q))
+            })
+        };
+        prop_assert_eq!(Poly::sum_of_jacobians(&f, &g, &pairs).unwrap(), direct(&f, &g));
+        prop_assert_eq!(Poly::sum_of_jacobians(&h, &k, &pairs).unwrap(), direct(&h, &k));
+        let flat = &pairs[..2];
+        let sum = flat.iter().fold(Q::zero(&vars), |sum, &(q, p)| {
+            let d = |h: &Q, w| h.derivative(w).expect("derivative within the limits");
+            &(&sum + &(&d(&a, q) * &d(&b, p))) - &(&d(&a, p) * &d(&b, q))
+        });
+        prop_assert_eq!(Poly::sum_of_jacobians(&a, &b, flat).unwrap(), sum);
+    }
+
+    /// Products with few term pairs are gathered and sorted once; a short factor times a long
+    /// one is shifted and merged. Distributivity makes the two meet: `f·(g + h)` has too many
+    /// pairs to gather, `f·g` and `f·h` do not.
+    #[test]
+    fn gathered_products_agree_with_shifted_ones(
+        f in proptest::collection::vec((gaussian(), exponents(true)), 5..7),
+        g in proptest::collection::vec((gaussian(), exponents(true)), 40..50),
+        h in proptest::collection::vec((gaussian(), exponents(true)), 40..50),
+    ) {
+        let vars = phase_space();
+        let poly = |terms| G::from_terms(&vars, terms).expect("small exponents");
+        let (f, g, h) = (poly(f), poly(g), poly(h));
+        prop_assert_eq!(&f * &(&g + &h), &(&f * &g) + &(&f * &h));
+    }
+
     #[test]
     fn ring_mul_associative_dense(f in dense_poly(), g in dense_poly(), h in dense_poly()) {
         prop_assert_eq!((&f * &g) * &h, &f * (&g * &h));
