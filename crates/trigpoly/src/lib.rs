@@ -51,8 +51,8 @@ mod varset;
 pub use error::AlgebraError;
 pub use lower::{Context, NoContext};
 pub use number::{
-    Coefficient, GaussianAcc, GaussianInteger, GaussianRational, Integer, IntegerAcc, IntegerRing,
-    ParseGaussianError, ParseRationalError, Rational,
+    Coefficient, ExactDivisor, GaussianAcc, GaussianInteger, GaussianRational, Integer, IntegerAcc,
+    IntegerRing, ParseGaussianError, ParseRationalError, Rational,
 };
 pub use poly::{CosSinTerm, Point, Poly, Term, TrigMonomial};
 pub use print::{superscript, Style};

@@ -174,6 +174,84 @@ impl Integer {
     }
 }
 
+/// A nonzero divisor prepared for many exact divisions (the content of a polynomial taken out
+/// of each coefficient). For a machine-word divisor `±2^k·u` with `u` odd, an exact quotient is
+/// `(a >> k)·u⁻¹` modulo `2^64` with the sign of the divisor: a shift and a multiplication
+/// instead of a hardware division.
+///
+/// ```
+/// use trigpoly::{ExactDivisor, Integer};
+/// let d = ExactDivisor::new(&Integer::from(-12));
+/// assert_eq!(d.divide(&Integer::from(36)), Integer::from(-3));
+/// assert_eq!(d.divide(&Integer::from(-12 * 1_000_000_007i64)), Integer::from(1_000_000_007));
+/// ```
+#[derive(Clone, Debug)]
+pub struct ExactDivisor {
+    d: Integer,
+    kind: DivisorKind,
+}
+
+/// How an [`ExactDivisor`] divides.
+#[derive(Clone, Copy, Debug)]
+enum DivisorKind {
+    /// `|d| ≥ 2` in `i64` range: the shift `k`, the inverse of `u` modulo `2^64`, and whether
+    /// `d` is negative.
+    Word {
+        shift: u32,
+        inverse: u64,
+        negative: bool,
+    },
+    /// `d = −1`: a negation.
+    MinusOne,
+    /// Anything else: the general division.
+    General,
+}
+
+impl ExactDivisor {
+    /// Prepares `d`, which must not be zero.
+    pub fn new(d: &Integer) -> ExactDivisor {
+        let kind = match d {
+            Integer::Small(-1) => DivisorKind::MinusOne,
+            Integer::Small(v) if v.unsigned_abs() >= 2 => {
+                let shift = v.trailing_zeros();
+                let u = v.unsigned_abs() >> shift;
+                // Newton's iteration doubles the correct low bits: u·u ≡ 1 (mod 8) to start.
+                let mut inverse = u;
+                for _ in 0..5 {
+                    inverse = inverse.wrapping_mul(2u64.wrapping_sub(u.wrapping_mul(inverse)));
+                }
+                DivisorKind::Word {
+                    shift,
+                    inverse,
+                    negative: *v < 0,
+                }
+            }
+            _ => DivisorKind::General,
+        };
+        ExactDivisor { d: d.clone(), kind }
+    }
+
+    /// `a / d`, for `a` a multiple of `d` (the quotient is wrong otherwise).
+    pub fn divide(&self, a: &Integer) -> Integer {
+        match (a, self.kind) {
+            (
+                Integer::Small(v),
+                DivisorKind::Word {
+                    shift,
+                    inverse,
+                    negative,
+                },
+            ) => {
+                // |d| ≥ 2, so the quotient fits an i64 and so does its negation.
+                let q = (v >> shift).wrapping_mul(inverse as i64);
+                Integer::Small(if negative { -q } else { q })
+            }
+            (_, DivisorKind::MinusOne) => -a,
+            _ => a.div_exact(&self.d),
+        }
+    }
+}
+
 impl Default for Integer {
     fn default() -> Self {
         Integer::ZERO

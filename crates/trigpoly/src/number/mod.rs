@@ -15,7 +15,7 @@ use std::hash::Hash;
 use std::str::FromStr;
 
 pub use gaussian::{GaussianAcc, GaussianInteger, GaussianRational, ParseGaussianError};
-pub use integer::{Integer, IntegerAcc};
+pub use integer::{ExactDivisor, Integer, IntegerAcc};
 pub use rational::{ParseRationalError, Rational};
 
 /// The integer ring under a coefficient field: `Integer` (Z) or `GaussianInteger` (Z\[i\]).
@@ -39,7 +39,7 @@ pub trait IntegerRing:
     /// `a · k` for an integer `k`.
     fn scale(&self, k: &Integer) -> Self;
     /// `a / k`, exact: `k` divides every component.
-    fn div_exact(&self, k: &Integer) -> Self;
+    fn div_exact(&self, k: &ExactDivisor) -> Self;
     /// `gcd(g, every component of a)`.
     fn gcd_into(&self, g: &Integer) -> Integer;
     /// The sign of the first nonzero component (real part first).
@@ -113,8 +113,8 @@ impl IntegerRing for Integer {
     fn scale(&self, k: &Integer) -> Self {
         self * k
     }
-    fn div_exact(&self, k: &Integer) -> Self {
-        Integer::div_exact(self, k)
+    fn div_exact(&self, k: &ExactDivisor) -> Self {
+        k.divide(self)
     }
     fn gcd_into(&self, g: &Integer) -> Integer {
         g.gcd(self)
@@ -211,8 +211,8 @@ impl IntegerRing for GaussianInteger {
         }
         GaussianInteger::new(&self.re * k, &self.im * k)
     }
-    fn div_exact(&self, k: &Integer) -> Self {
-        GaussianInteger::new(self.re.div_exact(k), self.im.div_exact(k))
+    fn div_exact(&self, k: &ExactDivisor) -> Self {
+        GaussianInteger::new(k.divide(&self.re), k.divide(&self.im))
     }
     fn gcd_into(&self, g: &Integer) -> Integer {
         g.gcd(&self.re).gcd(&self.im)

@@ -48,8 +48,9 @@ impl<C: Coefficient> Poly<C> {
         let limit = self.vars.limits().max_degree as i64;
         let mut rows = Vec::with_capacity(self.len());
         let mut coeffs = Vec::with_capacity(self.len());
-        for k in 0..self.len() {
-            let e = layout.get(self.exp(k), j);
+        let field = layout.field(j);
+        for (k, m) in self.exps.chunks_exact(layout.words).enumerate() {
+            let e = layout.read(m, field);
             if e == 0 {
                 continue;
             }
@@ -70,7 +71,7 @@ impl<C: Coefficient> Poly<C> {
             rows.push(k);
         }
         // Lowering the exponent of v by one is a subtraction in one field of one word.
-        let (word, shift) = layout.field(j);
+        let (word, shift) = field;
         Ok(DerivativeTerms {
             rows,
             coeffs,

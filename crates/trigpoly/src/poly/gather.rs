@@ -38,7 +38,8 @@ impl<I: IntegerRing> Gather<I> {
     /// The terms sorted descending, equal monomials summed, zero sums dropped; monomials of
     /// `words` words.
     pub(crate) fn finish(mut self, words: usize) -> (Vec<u64>, Vec<I>) {
-        self.items.sort_unstable_by_key(|&(m, _)| std::cmp::Reverse(m));
+        self.items
+            .sort_unstable_by_key(|&(m, _)| std::cmp::Reverse(m));
         let mut exps = Vec::with_capacity(self.items.len() * words);
         let mut coeffs = Vec::with_capacity(self.items.len());
         let mut items = self.items.into_iter().peekable();

@@ -23,7 +23,7 @@ use std::hash::{Hash, Hasher};
 use std::sync::Arc;
 
 use crate::error::AlgebraError;
-use crate::number::{Coefficient, GaussianRational, Integer, IntegerRing, Rational};
+use crate::number::{Coefficient, ExactDivisor, GaussianRational, Integer, IntegerRing, Rational};
 use crate::varset::{Layout, Var, VarKind, VarSet};
 
 pub use subst::Point;
@@ -428,8 +428,9 @@ impl<C: Coefficient> Poly<C> {
         let mut content = content;
         if !g.is_one() || negative {
             let d = if negative { -g } else { g };
+            let divisor = ExactDivisor::new(&d);
             for c in coeffs.iter_mut() {
-                *c = c.div_exact(&d);
+                *c = c.div_exact(&divisor);
             }
             content *= Rational::from(d);
         }

@@ -24,12 +24,20 @@ impl<const N: usize> Key for [u64; N] {
     #[inline]
     fn load(s: &[u64]) -> Self {
         let mut k = [0u64; N];
-        k[..s.len()].copy_from_slice(s);
+        if s.len() == N {
+            k.copy_from_slice(s);
+        } else {
+            k[..s.len()].copy_from_slice(s);
+        }
         k
     }
     #[inline]
     fn store(&self, out: &mut Vec<u64>, words: usize) {
-        out.extend_from_slice(&self[..words]);
+        if words == N {
+            out.extend_from_slice(self);
+        } else {
+            out.extend_from_slice(&self[..words]);
+        }
     }
     #[inline]
     fn mul(&self, other: &Self, bias: &Self) -> Self {

@@ -139,10 +139,28 @@ impl<C: Coefficient> Poly<C> {
         let j = v.index();
         let one = C::Int::from_integer(crate::number::Integer::ONE);
         let (q, n) = (&value.content, &value.coeffs[0]);
-        // Exponents of v that occur, and whether n^e stays integral (n a unit, or e ≥ 0).
-        let exps_v: std::collections::BTreeSet<i64> = (0..self.len())
-            .map(|k| layout.get(self.exp(k), j))
+        // The exponent of v in each term, and the distinct ones, ascending (they span at most
+        // twice the degree limit); n^e must stay integral (n a unit, or e ≥ 0).
+        let field = layout.field(j);
+        let term_exps: Vec<i64> = self
+            .exps
+            .chunks_exact(w)
+            .map(|m| layout.read(m, field))
             .collect();
+        let lowest = *term_exps.iter().min()?;
+        let highest = *term_exps.iter().max()?;
+        // The group of each exponent, by its offset from the lowest.
+        let mut group_of = vec![u32::MAX; usize::try_from(highest - lowest).ok()? + 1];
+        for &e in &term_exps {
+            group_of[(e - lowest) as usize] = 0;
+        }
+        let mut exps_v = Vec::new();
+        for (offset, g) in group_of.iter_mut().enumerate() {
+            if *g == 0 {
+                *g = exps_v.len() as u32;
+                exps_v.push(lowest + offset as i64);
+            }
+        }
         let unit_n = *n == one || *n == one.neg();
         if !unit_n && exps_v.iter().any(|&e| e < 0) {
             return None;
@@ -202,13 +220,10 @@ impl<C: Coefficient> Poly<C> {
             })
             .collect();
         // One pass over the terms, each to its group (groups stay sorted).
-        let exps_list: Vec<i64> = exps_v.into_iter().collect();
         let mut parts: Vec<(Vec<u64>, Vec<C::Int>)> = vec![(Vec::new(), Vec::new()); groups.len()];
-        for k in 0..self.len() {
+        for (k, &e) in term_exps.iter().enumerate() {
             let m = self.exp(k);
-            let g = exps_list
-                .binary_search(&layout.get(m, j))
-                .expect("every exponent has its group");
+            let g = group_of[(e - lowest) as usize] as usize;
             let (delta, factor) = &groups[g];
             let (exps, coeffs) = &mut parts[g];
             exps.extend(m.iter().zip(delta).map(|(a, b)| a.wrapping_add(*b)));

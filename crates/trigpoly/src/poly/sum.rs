@@ -241,16 +241,30 @@ impl<C: Coefficient> Poly<C> {
         if negate {
             q = -q;
         }
-        for t in 0..g.len() {
+        // The monomials of the stream of term `t` of `g`.
+        let monomials = |t: usize| {
             let mut exps = vec![0u64; d.rows.len() * w];
             for (out, &k) in exps.chunks_exact_mut(w).zip(&d.rows) {
                 layout.mul_into(self.exp(k), g.exp(t), out);
                 out[d.word] = out[d.word].wrapping_sub(d.lower);
             }
-            let ct = &g.coeffs[t];
+            exps
+        };
+        let Some((last, rest)) = g.coeffs.split_last() else {
+            return Ok(());
+        };
+        for (t, ct) in rest.iter().enumerate() {
             let cs = d.coeffs.iter().map(|c| c.mul(ct)).collect();
-            streams.push((q.clone(), Self::raw(&self.vars, exps, cs)));
+            streams.push((q.clone(), Self::raw(&self.vars, monomials(t), cs)));
         }
+        // The last stream takes the derivative's coefficients (a monomial `g`, as in a
+        // Hamiltonian's gradient, has the integer part 1: nothing to multiply).
+        let exps = monomials(rest.len());
+        let mut cs = d.coeffs;
+        if *last != C::Int::from_integer(Integer::ONE) {
+            cs.iter_mut().for_each(|c| *c = c.mul(last));
+        }
+        streams.push((q, Self::raw(&self.vars, exps, cs)));
         Ok(())
     }
 

@@ -3,7 +3,7 @@
 
 use proptest::prelude::*;
 use proptest::test_runner::Config;
-use trigpoly::{GaussianRational, Point, Poly, Rational, VarKind};
+use trigpoly::{ExactDivisor, GaussianRational, Integer, Point, Poly, Rational, VarKind};
 
 use crate::common::{phase_space, var, G, Q};
 
@@ -313,6 +313,18 @@ proptest! {
         let poly = |terms| G::from_terms(&vars, terms).expect("small exponents");
         let (f, g, h) = (poly(f), poly(g), poly(h));
         prop_assert_eq!(&f * &(&g + &h), &(&f * &g) + &(&f * &h));
+    }
+
+    /// Exact division by a prepared divisor (a shift and a multiplication by an inverse for
+    /// machine words) undoes multiplication, for quotients and divisors of every size and sign.
+    #[test]
+    fn exact_division_undoes_multiplication(
+        q in numerator(),
+        d in prop_oneof![numerator(), -64i64..64, Just(1i64 << 62), Just(-(1i64 << 61) * 3)],
+    ) {
+        prop_assume!(d != 0);
+        let (q, d) = (Integer::from(q), Integer::from(d));
+        prop_assert_eq!(ExactDivisor::new(&d).divide(&(&q * &d)), q);
     }
 
     #[test]
