@@ -46,9 +46,15 @@ impl<C: Coefficient> Poly<C> {
         let layout = self.layout();
         let angle = self.vars.variable(v).kind() == VarKind::Angle;
         let limit = self.vars.limits().max_degree as i64;
-        let mut rows = Vec::with_capacity(self.len());
-        let mut coeffs = Vec::with_capacity(self.len());
         let field = layout.field(j);
+        // Sized exactly: the bracket's kernel keeps these coefficients as a stream.
+        let count = self
+            .exps
+            .chunks_exact(layout.words)
+            .filter(|m| layout.read(m, field) != 0)
+            .count();
+        let mut rows = Vec::with_capacity(count);
+        let mut coeffs = Vec::with_capacity(count);
         for (k, m) in self.exps.chunks_exact(layout.words).enumerate() {
             let e = layout.read(m, field);
             if e == 0 {
