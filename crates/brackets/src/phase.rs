@@ -98,8 +98,12 @@ impl PhaseSpace {
     // {f, g} = Σ_i (∂f/∂q_i ∂g/∂p_i − ∂f/∂p_i ∂g/∂q_i)
     /// The Poisson bracket `{f, g}`.
     pub fn bracket(&self, f: &Expr, g: &Expr) -> Result<Expr, EngineError> {
-        let pairs: Vec<(Var, Var)> = self.pairs.iter().map(|c| (c.q, c.p)).collect();
-        Ok(Expr::sum_of_jacobians(f, g, &pairs)?)
+        Ok(Expr::sum_of_jacobians(f, g, &self.var_pairs())?)
+    }
+
+    /// The canonical pairs as `(q, p)` variables, the form the kernels take.
+    fn var_pairs(&self) -> Vec<(Var, Var)> {
+        self.pairs.iter().map(|c| (c.q, c.p)).collect()
     }
 
     /// `(∂g/∂q_i, ∂g/∂p_i)` for each pair: what a bracket with `g` needs of `g`, worth keeping
@@ -118,15 +122,11 @@ impl PhaseSpace {
         f: &Expr,
         dg: &[(Expr, Expr)],
     ) -> Result<Expr, EngineError> {
-        let mut terms: Vec<(&Expr, Var, &Expr, bool)> = Vec::with_capacity(2 * self.pairs.len());
-        for (c, (gq, gp)) in self.pairs.iter().zip(dg) {
-            terms.push((f, c.q, gp, false));
-            terms.push((f, c.p, gq, true));
-        }
-        if terms.is_empty() {
-            return Ok(Expr::zero(&self.vars));
-        }
-        Ok(Expr::sum_of_derivative_products(&terms)?)
+        Ok(Expr::sum_of_jacobians_with_gradient(
+            f,
+            &self.var_pairs(),
+            dg,
+        )?)
     }
 
     /// Hamilton's vector field of `h`: `(q̇_i, ṗ_i) = (∂h/∂p_i, −∂h/∂q_i)` for each pair, in the

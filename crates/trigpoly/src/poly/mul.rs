@@ -24,20 +24,12 @@ impl<const N: usize> Key for [u64; N] {
     #[inline]
     fn load(s: &[u64]) -> Self {
         let mut k = [0u64; N];
-        if s.len() == N {
-            k.copy_from_slice(s);
-        } else {
-            k[..s.len()].copy_from_slice(s);
-        }
+        k[..s.len()].copy_from_slice(s);
         k
     }
     #[inline]
     fn store(&self, out: &mut Vec<u64>, words: usize) {
-        if words == N {
-            out.extend_from_slice(self);
-        } else {
-            out.extend_from_slice(&self[..words]);
-        }
+        out.extend_from_slice(&self[..words]);
     }
     #[inline]
     fn mul(&self, other: &Self, bias: &Self) -> Self {

@@ -149,15 +149,17 @@ impl<C: Coefficient> Poly<C> {
             .collect();
         let lowest = *term_exps.iter().min()?;
         let highest = *term_exps.iter().max()?;
-        // The group of each exponent, by its offset from the lowest.
-        let mut group_of = vec![u32::MAX; usize::try_from(highest - lowest).ok()? + 1];
+        // The exponents present, by their offset from the lowest; the group of a present one
+        // is the number of present ones below it.
+        let mut present = vec![false; usize::try_from(highest - lowest).ok()? + 1];
         for &e in &term_exps {
-            group_of[(e - lowest) as usize] = 0;
+            present[(e - lowest) as usize] = true;
         }
         let mut exps_v = Vec::new();
-        for (offset, g) in group_of.iter_mut().enumerate() {
-            if *g == 0 {
-                *g = exps_v.len() as u32;
+        let mut group_of = Vec::with_capacity(present.len());
+        for (offset, &here) in present.iter().enumerate() {
+            group_of.push(exps_v.len());
+            if here {
                 exps_v.push(lowest + offset as i64);
             }
         }
@@ -223,7 +225,7 @@ impl<C: Coefficient> Poly<C> {
         let mut parts: Vec<(Vec<u64>, Vec<C::Int>)> = vec![(Vec::new(), Vec::new()); groups.len()];
         for (k, &e) in term_exps.iter().enumerate() {
             let m = self.exp(k);
-            let g = group_of[(e - lowest) as usize] as usize;
+            let g = group_of[(e - lowest) as usize];
             let (delta, factor) = &groups[g];
             let (exps, coeffs) = &mut parts[g];
             exps.extend(m.iter().zip(delta).map(|(a, b)| a.wrapping_add(*b)));

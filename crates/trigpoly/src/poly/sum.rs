@@ -120,12 +120,33 @@ impl<C: Coefficient> Poly<C> {
         if let Some(sum) = Self::short_jacobians(f, g, pairs)? {
             return Ok(sum);
         }
-        let mut dg = Vec::with_capacity(pairs.len());
+        let mut gradient = Vec::with_capacity(pairs.len());
         for &(q, p) in pairs {
-            dg.push((g.derivative(q)?, g.derivative(p)?));
+            gradient.push((g.derivative(q)?, g.derivative(p)?));
+        }
+        Self::sum_of_jacobians_with_gradient(f, pairs, &gradient)
+    }
+
+    /// [`Poly::sum_of_jacobians`] given the derivatives `(∂g/∂q_k, ∂g/∂p_k)` of `g` for each
+    /// pair, worth keeping when `g` (a Hamiltonian, say) enters many sums: one
+    /// [`Poly::sum_of_derivative_products`], whose derivatives of `f` are never built.
+    pub fn sum_of_jacobians_with_gradient(
+        f: &Self,
+        pairs: &[(Var, Var)],
+        gradient: &[(Self, Self)],
+    ) -> Result<Self, AlgebraError> {
+        if pairs.len() != gradient.len() {
+            return Err(AlgebraError::Invalid(format!(
+                "{} pairs of variables but {} pairs of derivatives",
+                pairs.len(),
+                gradient.len()
+            )));
+        }
+        if pairs.is_empty() {
+            return Ok(Self::zero(&f.vars));
         }
         let mut terms = Vec::with_capacity(2 * pairs.len());
-        for (&(q, p), (gq, gp)) in pairs.iter().zip(&dg) {
+        for (&(q, p), (gq, gp)) in pairs.iter().zip(gradient) {
             terms.push((f, q, gp, false));
             terms.push((f, p, gq, true));
         }
@@ -150,33 +171,43 @@ impl<C: Coefficient> Poly<C> {
         {
             return Ok(None);
         }
-        // For each pair: its variables, what its derivatives take off a monomial (one in the
-        // field of each variable that is not an angle), and how many factors `i` they bring.
-        let mut shapes = Vec::with_capacity(pairs.len());
-        for &(q, p) in pairs {
-            let mut lower: Monomial = [0; gather::WORDS];
-            let mut turns = 0;
-            for v in [q, p] {
-                if vars.variable(v).kind() == VarKind::Angle {
-                    turns += 1;
-                } else {
-                    let (word, shift) = layout.field(v.index());
-                    lower[word] = lower[word].wrapping_add(1 << shift);
-                }
-            }
-            shapes.push((
-                layout.field(q.index()),
-                layout.field(p.index()),
-                lower,
-                turns,
-            ));
+        /// One pair `(q, p)` as the kernel reads it.
+        struct Shape {
+            q: (usize, u32),
+            p: (usize, u32),
+            /// What both derivatives take off a monomial: one in the field of each variable
+            /// that is not an angle.
+            lower: Monomial,
+            /// Factors `i` the derivatives bring, one per angle.
+            turns: u32,
         }
+        let shapes: Vec<Shape> = pairs
+            .iter()
+            .map(|&(q, p)| {
+                let mut lower: Monomial = [0; gather::WORDS];
+                let mut turns = 0;
+                for v in [q, p] {
+                    if vars.variable(v).kind() == VarKind::Angle {
+                        turns += 1;
+                    } else {
+                        let (word, shift) = layout.field(v.index());
+                        lower[word] = lower[word].wrapping_add(1 << shift);
+                    }
+                }
+                Shape {
+                    q: layout.field(q.index()),
+                    p: layout.field(p.index()),
+                    lower,
+                    turns,
+                }
+            })
+            .collect();
         // The exponents of each pair's variables in each term.
         let exponents = |h: &Self| -> Vec<(i64, i64)> {
             let mut out = Vec::with_capacity(h.len() * shapes.len());
             for m in h.exps.chunks_exact(w) {
-                for &(q, p, ..) in &shapes {
-                    out.push((layout.read(m, q), layout.read(m, p)));
+                for shape in &shapes {
+                    out.push((layout.read(m, shape.q), layout.read(m, shape.p)));
                 }
             }
             out
@@ -189,7 +220,7 @@ impl<C: Coefficient> Poly<C> {
             let mf = Monomial::load(mf);
             for (j, (mg, cg)) in g.exps.chunks_exact(w).zip(&g.coeffs).enumerate() {
                 let mut product = None;
-                for (s, &(_, _, lower, turns)) in shapes.iter().enumerate() {
+                for (s, shape) in shapes.iter().enumerate() {
                     let ((aq, ap), (bq, bp)) = (ef[i * k + s], eg[j * k + s]);
                     let factor = aq * bp - ap * bq;
                     if factor == 0 {
@@ -197,14 +228,14 @@ impl<C: Coefficient> Poly<C> {
                     }
                     let c = product.get_or_insert_with(|| cf.mul(cg));
                     let mut t = c.scale(&Integer::from(factor));
-                    for _ in 0..turns {
+                    for _ in 0..shape.turns {
                         match t.try_mul_i() {
                             Some(ti) => t = ti,
                             None => return Ok(None),
                         }
                     }
                     let mut m = mf.mul(&Monomial::load(mg), &bias);
-                    for (word, lower) in m.iter_mut().zip(lower) {
+                    for (word, lower) in m.iter_mut().zip(shape.lower) {
                         *word = word.wrapping_sub(lower);
                     }
                     out.push(m, t);

@@ -85,3 +85,23 @@ fn angles_need_gaussian_coefficients_over_q() {
         Ok(p(&vars, "M*omega^2*x/2"))
     );
 }
+
+/// The sum of Jacobians given a gradient needs one pair of derivatives per pair of variables;
+/// a mismatch is an error, never a silently shorter sum.
+#[test]
+fn sum_of_jacobians_with_gradient_rejects_a_gradient_of_another_length() {
+    let vars = phase_space();
+    let (x, px) = (var(&vars, "x"), var(&vars, "p_x"));
+    let f: G = p(&vars, "x^2 p_x");
+    let g: G = p(&vars, "p_x^3 + x");
+    let gradient = [(g.derivative(x).unwrap(), g.derivative(px).unwrap())];
+    assert_eq!(
+        G::sum_of_jacobians_with_gradient(&f, &[(x, px)], &gradient),
+        G::sum_of_jacobians(&f, &g, &[(x, px)])
+    );
+    let err = G::sum_of_jacobians_with_gradient(&f, &[(x, px)], &[]).unwrap_err();
+    assert_eq!(
+        err.to_string(),
+        "1 pairs of variables but 0 pairs of derivatives"
+    );
+}
