@@ -41,7 +41,11 @@ impl<const N: usize> Key for [u64; N] {
     }
 }
 
-/// Calls `$f::<[u64; N], _>(args)` with the smallest supported `N >= words`.
+/// The widest monomial, in words, that [`dispatch_words!`] has a key for.
+pub(crate) const MAX_KEY_WORDS: usize = 32;
+
+/// Calls `$f::<[u64; N], _>(args)` with the smallest supported `N >= words` (at most
+/// [`MAX_KEY_WORDS`]; wider monomials must not get here).
 macro_rules! dispatch_words {
     ($words:expr, $f:ident, $($arg:expr),*) => {
         match $words {
@@ -53,7 +57,7 @@ macro_rules! dispatch_words {
             7..=8 => $f::<[u64; 8], _>($($arg),*),
             9..=12 => $f::<[u64; 12], _>($($arg),*),
             13..=16 => $f::<[u64; 16], _>($($arg),*),
-            _ => $f::<[u64; 32], _>($($arg),*),
+            _ => $f::<[u64; MAX_KEY_WORDS], _>($($arg),*),
         }
     };
 }
@@ -87,7 +91,8 @@ impl<C: Coefficient> Poly<C> {
             Self::check_terms(&self.vars, coeffs.len())?;
             return Ok(Self::product(&self.vars, content, exps, coeffs));
         }
-        if small.len() <= SMALL_SIDE {
+        // Monomials wider than the heap's keys also shift and merge, whatever the lengths.
+        if small.len() <= SMALL_SIDE || self.words() > MAX_KEY_WORDS {
             small.check_product_exponents(big)?;
             let product = shift_and_merge(small, big, content);
             Self::check_terms(&self.vars, product.len())?;

@@ -41,3 +41,33 @@ fn dense_products_split_over_threads_agree_with_one_thread() {
         assert_eq!(one.eval(&point), Ok(value));
     }
 }
+
+/// 140 variables pack into 35 words, wider than the heap product's fixed-width keys: a sparse
+/// product of two 8-term polynomials shifts and merges instead, and equals the sum of the
+/// products by each term.
+#[test]
+fn products_of_monomials_wider_than_the_heap_keys() {
+    let names: Vec<String> = (0..140).map(|k| format!("v{k}")).collect();
+    let refs: Vec<&str> = names.iter().map(String::as_str).collect();
+    let vars = coordinates(&refs);
+    let sum = |terms: Vec<String>| terms.join(" + ");
+    let f: Q = p(
+        &vars,
+        &sum((0..8)
+            .map(|k| format!("{} v{}^{}", k + 1, k * 17, 900 + k))
+            .collect()),
+    );
+    let g: Q = p(
+        &vars,
+        &sum((0..8)
+            .map(|k| format!("v{}^{}", k * 13 + 1, 700 + k))
+            .collect()),
+    );
+    let product = f.checked_mul(&g).expect("a product within the limits");
+    let by_terms = g
+        .terms()
+        .map(|t| Q::from_terms(&vars, [(t.coeff(), t.exponents())]).expect("one term"))
+        .fold(Q::zero(&vars), |acc, term| &acc + &(&f * &term));
+    assert_eq!(product.len(), 64);
+    assert_eq!(product, by_terms);
+}
