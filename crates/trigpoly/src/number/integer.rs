@@ -1,8 +1,9 @@
 //! `Integer`: a machine integer that becomes a big integer only when it has to.
 //!
-//! Every value that fits an `i64` is stored as `Small`; the `Big` variant holds only values
-//! outside that range, so equality and hashing are structural. Each operation tries the machine
-//! path with exact overflow detection (`checked_*`, `i128` intermediates) and falls back to
+//! Every value that fits an `i64` is stored as `Small`, every other value that fits an `i128`
+//! as `Wide` (one 16-byte allocation, where a `BigInt` takes two), and only the rest as `Big`,
+//! so equality and hashing are structural. Each operation tries the machine path with exact
+//! overflow detection (`checked_*`, `i128` intermediates) and falls back to
 //! `num_bigint::BigInt`.
 
 use std::cmp::Ordering;
@@ -15,9 +16,10 @@ use num_bigint::BigInt;
 use num_integer::Integer as _;
 use num_traits::{One, Signed, ToPrimitive, Zero};
 
-/// An exact integer: `i64` when it fits, `BigInt` otherwise.
+/// An exact integer: `i64` when it fits, else `i128` when that fits, else `BigInt`.
 ///
-/// Invariant: `Big` never holds a value that fits in `i64`.
+/// Invariant: `Wide` never holds a value that fits in `i64`, and `Big` never one that fits in
+/// `i128`.
 ///
 /// ```
 /// use trigpoly::Integer;
@@ -29,7 +31,10 @@ use num_traits::{One, Signed, ToPrimitive, Zero};
 pub enum Integer {
     /// A value in `i64` range.
     Small(i64),
-    /// A value outside `i64` range.
+    /// A value outside `i64` range but inside `i128` range (sums of products of `i64`s, the
+    /// coefficients of most large products).
+    Wide(Box<i128>),
+    /// A value outside `i128` range.
     Big(Box<BigInt>),
 }
 
@@ -53,6 +58,7 @@ impl Integer {
     pub fn signum(&self) -> i32 {
         match self {
             Integer::Small(v) => v.signum() as i32,
+            Integer::Wide(v) => v.signum() as i32,
             Integer::Big(b) => {
                 if b.is_negative() {
                     -1
@@ -72,6 +78,16 @@ impl Integer {
     pub fn to_i64(&self) -> Option<i64> {
         match self {
             Integer::Small(v) => Some(*v),
+            Integer::Wide(_) | Integer::Big(_) => None,
+        }
+    }
+
+    /// The value as `i128`, if it fits.
+    #[inline]
+    pub fn to_i128(&self) -> Option<i128> {
+        match self {
+            Integer::Small(v) => Some(*v as i128),
+            Integer::Wide(v) => Some(**v),
             Integer::Big(_) => None,
         }
     }
@@ -80,6 +96,7 @@ impl Integer {
     pub fn to_bigint(&self) -> BigInt {
         match self {
             Integer::Small(v) => BigInt::from(*v),
+            Integer::Wide(v) => BigInt::from(**v),
             Integer::Big(b) => (**b).clone(),
         }
     }
@@ -89,19 +106,27 @@ impl Integer {
     pub fn from_i128(v: i128) -> Integer {
         match i64::try_from(v) {
             Ok(s) => Integer::Small(s),
-            Err(_) => Integer::big_from_i128(v),
+            Err(_) => Integer::Wide(Box::new(v)),
         }
     }
 
-    #[cold]
-    fn big_from_i128(v: i128) -> Integer {
-        Integer::Big(Box::new(BigInt::from(v)))
+    /// `a + b`, `a − b`, `a · b` of two `i128`s, exactly.
+    fn from_i128_op(
+        a: i128,
+        b: i128,
+        machine: fn(i128, i128) -> Option<i128>,
+        big: fn(BigInt, BigInt) -> BigInt,
+    ) -> Integer {
+        match machine(a, b) {
+            Some(v) => Integer::from_i128(v),
+            None => Integer::from_bigint(big(BigInt::from(a), BigInt::from(b))),
+        }
     }
 
-    /// Builds from a `BigInt`, demoting to `Small` when it fits (the canonical form).
+    /// Builds from a `BigInt`, demoting to `Small` or `Wide` when it fits (the canonical form).
     pub fn from_bigint(b: BigInt) -> Integer {
-        match b.to_i64() {
-            Some(s) => Integer::Small(s),
+        match b.to_i128() {
+            Some(v) => Integer::from_i128(v),
             None => Integer::Big(Box::new(b)),
         }
     }
@@ -143,7 +168,10 @@ impl Integer {
                 Some(q) => Integer::Small(q),
                 None => Integer::from_i128(*a as i128 / *b as i128),
             },
-            _ => Integer::from_bigint(self.to_bigint() / d.to_bigint()),
+            _ => match (self.to_i128(), d.to_i128()) {
+                (Some(a), Some(b)) => Integer::from_i128_op(a, b, i128::checked_div, |a, b| a / b),
+                _ => Integer::from_bigint(self.to_bigint() / d.to_bigint()),
+            },
         }
     }
 
@@ -151,7 +179,11 @@ impl Integer {
     pub fn is_divisible_by(&self, d: &Integer) -> bool {
         match (self, d) {
             (Integer::Small(a), Integer::Small(b)) => (*a as i128) % (*b as i128) == 0,
-            _ => (self.to_bigint() % d.to_bigint()).is_zero(),
+            _ => match (self.to_i128(), d.to_i128()) {
+                // The remainder overflows only for i128::MIN / −1, which divides.
+                (Some(a), Some(b)) => a.checked_rem(b).is_none_or(|r| r == 0),
+                _ => (self.to_bigint() % d.to_bigint()).is_zero(),
+            },
         }
     }
 
@@ -169,6 +201,7 @@ impl Integer {
     pub fn bits(&self) -> u64 {
         match self {
             Integer::Small(v) => 64 - v.unsigned_abs().leading_zeros() as u64,
+            Integer::Wide(v) => 128 - v.unsigned_abs().leading_zeros() as u64,
             Integer::Big(b) => b.bits(),
         }
     }
@@ -292,7 +325,10 @@ impl Ord for Integer {
     fn cmp(&self, other: &Self) -> Ordering {
         match (self, other) {
             (Integer::Small(a), Integer::Small(b)) => a.cmp(b),
-            _ => self.to_bigint().cmp(&other.to_bigint()),
+            _ => match (self.to_i128(), other.to_i128()) {
+                (Some(a), Some(b)) => a.cmp(&b),
+                _ => self.to_bigint().cmp(&other.to_bigint()),
+            },
         }
     }
 }
@@ -307,6 +343,7 @@ impl fmt::Display for Integer {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         match self {
             Integer::Small(v) => write!(f, "{v}"),
+            Integer::Wide(v) => write!(f, "{v}"),
             Integer::Big(b) => write!(f, "{b}"),
         }
     }
@@ -333,7 +370,7 @@ fn add_ref(a: &Integer, b: &Integer) -> Integer {
             Some(v) => Integer::Small(v),
             None => Integer::from_i128(*x as i128 + *y as i128),
         },
-        _ => Integer::from_bigint(a.to_bigint() + b.to_bigint()),
+        _ => wide_or_big(a, b, i128::checked_add, |a, b| a + b),
     }
 }
 
@@ -343,7 +380,7 @@ fn sub_ref(a: &Integer, b: &Integer) -> Integer {
             Some(v) => Integer::Small(v),
             None => Integer::from_i128(*x as i128 - *y as i128),
         },
-        _ => Integer::from_bigint(a.to_bigint() - b.to_bigint()),
+        _ => wide_or_big(a, b, i128::checked_sub, |a, b| a - b),
     }
 }
 
@@ -354,7 +391,22 @@ fn mul_ref(a: &Integer, b: &Integer) -> Integer {
             Some(v) => Integer::Small(v),
             None => Integer::from_i128(*x as i128 * *y as i128),
         },
-        _ => Integer::from_bigint(a.to_bigint() * b.to_bigint()),
+        _ => wide_or_big(a, b, i128::checked_mul, |a, b| a * b),
+    }
+}
+
+/// An operation with at least one operand outside `i64` range: in `i128` when both operands
+/// and the result fit, else in `BigInt`.
+#[cold]
+fn wide_or_big(
+    a: &Integer,
+    b: &Integer,
+    machine: fn(i128, i128) -> Option<i128>,
+    big: fn(BigInt, BigInt) -> BigInt,
+) -> Integer {
+    match (a.to_i128(), b.to_i128()) {
+        (Some(x), Some(y)) => Integer::from_i128_op(x, y, machine, big),
+        _ => Integer::from_bigint(big(a.to_bigint(), b.to_bigint())),
     }
 }
 
@@ -408,6 +460,10 @@ impl Neg for &Integer {
             Integer::Small(v) => match v.checked_neg() {
                 Some(n) => Integer::Small(n),
                 None => Integer::from_i128(-(*v as i128)),
+            },
+            Integer::Wide(v) => match v.checked_neg() {
+                Some(n) => Integer::from_i128(n),
+                None => Integer::from_bigint(-BigInt::from(**v)),
             },
             Integer::Big(b) => Integer::from_bigint(-(**b).clone()),
         }
@@ -466,6 +522,10 @@ impl IntegerAcc {
             Integer::Small(x) => match self.small.checked_add(*x as i128) {
                 Some(s) => self.small = s,
                 None => self.spill(BigInt::from(*x)),
+            },
+            Integer::Wide(v) => match self.small.checked_add(**v) {
+                Some(s) => self.small = s,
+                None => self.spill(BigInt::from(**v)),
             },
             Integer::Big(b) => self.spill((**b).clone()),
         }

@@ -269,9 +269,9 @@ impl From<&Integer> for Rational {
     fn from(v: &Integer) -> Self {
         match v {
             Integer::Small(n) => Rational(Repr::Small { num: *n, den: 1 }),
-            Integer::Big(b) => Rational(Repr::Big(Box::new(BigRational::from_integer(
-                (**b).clone(),
-            )))),
+            Integer::Wide(_) | Integer::Big(_) => Rational(Repr::Big(Box::new(
+                BigRational::from_integer(v.to_bigint()),
+            ))),
         }
     }
 }

@@ -147,7 +147,22 @@ impl<S: Copy + Send + Sync> Factors<S> {
             .collect();
         // Terms of `a` before `first` land above every remaining chunk.
         let mut first = fa.partition_point(|&fi| fi + g_min >= hi);
+        // The part has at most one term per product and per index: reserving that much up
+        // front costs address space only (pages are backed when written), where growing by
+        // doubling would copy and fault in the terms about twice over. If the address space
+        // is refused, the vectors grow as usual.
+        let products: usize = fa
+            .iter()
+            .zip(&next)
+            .map(|(&fi, &j)| gb.partition_point(|&g| fi + g >= lo) - j)
+            .sum();
+        let bound = (products as u64).min(hi - lo).min(max_terms as u64 + 1) as usize;
         let (mut exps, mut coeffs) = (Vec::new(), Vec::new());
+        if exps.try_reserve_exact(bound * words).is_err()
+            || coeffs.try_reserve_exact(bound).is_err()
+        {
+            (exps, coeffs) = (Vec::new(), Vec::new());
+        }
         let mut top = hi;
         while top > lo {
             let bottom = top.saturating_sub(chunk).max(lo);

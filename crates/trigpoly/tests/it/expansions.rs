@@ -180,7 +180,8 @@ fn overflow_to_big_integers_in_sums_near_i64_max() {
     let back = Integer::from(i64::MAX) + Integer::from(1) - Integer::from(1);
     assert!(matches!(back, Integer::Small(i64::MAX)), "{back:?}");
     assert_eq!(-(-Integer::from(i64::MIN)), Integer::Small(i64::MIN));
-    assert!(matches!(-Integer::from(i64::MIN), Integer::Big(_)));
+    assert!(matches!(-Integer::from(i64::MIN), Integer::Wide(_)));
+    assert!(matches!(-Integer::from_i128(i128::MIN), Integer::Big(_)));
 }
 
 /// `Σ_{k<8} (MAX − k) x^k` squared: both sides have 8 terms, so the heap product runs, and

@@ -1,6 +1,7 @@
 //! Property tests: each test is named after the law it checks, on random sparse Laurent ×
 //! trigonometric polynomials in `x, y, p_x, p_y, θ, φ, M, ω`.
 
+use num_bigint::BigInt;
 use proptest::prelude::*;
 use proptest::test_runner::Config;
 use trigpoly::{ExactDivisor, GaussianRational, Integer, Point, Poly, Rational, VarKind};
@@ -13,6 +14,31 @@ fn numerator() -> impl Strategy<Value = i64> {
         8 => -20i64..20,
         1 => prop_oneof![Just(i64::MAX), Just(i64::MIN), i64::MAX - 3..=i64::MAX, (1i64 << 40)..(1i64 << 41)],
     ]
+}
+
+/// Integers on both sides of the `i64` and `i128` bounds, as `BigInt`s.
+fn integer() -> impl Strategy<Value = BigInt> {
+    let near = |bound: BigInt| (-3i64..=3).prop_map(move |k| &bound + k);
+    prop_oneof![
+        2 => any::<i64>().prop_map(BigInt::from),
+        2 => any::<i128>().prop_map(BigInt::from),
+        1 => (-5i64..5).prop_map(BigInt::from),
+        1 => near(BigInt::from(i64::MAX)),
+        1 => near(BigInt::from(i64::MIN)),
+        1 => near(BigInt::from(i128::MAX)),
+        1 => near(BigInt::from(i128::MIN)),
+        1 => (any::<i128>(), any::<i64>()).prop_map(|(hi, lo)| (BigInt::from(hi) << 64) + lo),
+    ]
+}
+
+/// Whether `v` is stored in the variant its size calls for (the structural-equality invariant).
+fn canonical(v: &Integer) -> bool {
+    let b = v.to_bigint();
+    match v {
+        Integer::Small(_) => true,
+        Integer::Wide(_) => i64::try_from(&b).is_err() && i128::try_from(&b).is_ok(),
+        Integer::Big(_) => i128::try_from(&b).is_err(),
+    }
 }
 
 fn rational() -> impl Strategy<Value = Rational> {
@@ -313,6 +339,32 @@ proptest! {
         let poly = |terms| G::from_terms(&vars, terms).expect("small exponents");
         let (f, g, h) = (poly(f), poly(g), poly(h));
         prop_assert_eq!(&f * &(&g + &h), &(&f * &g) + &(&f * &h));
+    }
+
+    /// `Integer`'s three tiers (`i64`, `i128`, `BigInt`) compute what `BigInt` computes, and
+    /// every result is stored in the tier its size calls for.
+    #[test]
+    fn integer_arithmetic_agrees_with_bigint(a in integer(), b in integer()) {
+        let (x, y) = (Integer::from(a.clone()), Integer::from(b.clone()));
+        prop_assert!(canonical(&x) && canonical(&y));
+        let mut results = vec![
+            (&x + &y, &a + &b),
+            (&x - &y, &a - &b),
+            (&x * &y, &a * &b),
+            (-&x, -&a),
+            (x.gcd(&y), num_integer::Integer::gcd(&a, &b)),
+        ];
+        if !y.is_zero() {
+            results.push(((&x * &y).div_exact(&y), a.clone()));
+            prop_assert_eq!(x.is_divisible_by(&y), (&a % &b) == BigInt::from(0));
+        }
+        for (got, want) in results {
+            prop_assert!(canonical(&got), "{got:?} is not canonical");
+            prop_assert_eq!(got.to_bigint(), want);
+        }
+        prop_assert_eq!(x.cmp(&y), a.cmp(&b));
+        prop_assert_eq!(x.bits(), a.bits());
+        prop_assert_eq!(x.to_string(), a.to_string());
     }
 
     /// Exact division by a prepared divisor (a shift and a multiplication by an inverse for
