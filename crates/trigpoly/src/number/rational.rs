@@ -213,6 +213,40 @@ impl Rational {
         Rational::from_fraction(&num, &den).expect("lcm of denominators is nonzero")
     }
 
+    /// `(g, a/g, b/g)` with `g = content_gcd(a, b)`: the content common to two polynomials
+    /// and the coprime integers that bring each content to it (what a sum needs). `a`, `b`
+    /// nonzero.
+    ///
+    /// ```
+    /// use trigpoly::{Integer, Rational};
+    /// let (g, sa, sb) = Rational::content_split(&Rational::new(4, 3), &Rational::new(-6, 5));
+    /// assert_eq!((g, sa, sb), (Rational::new(2, 15), Integer::from(10), Integer::from(-9)));
+    /// ```
+    pub fn content_split(a: &Rational, b: &Rational) -> (Rational, Integer, Integer) {
+        debug_assert!(!a.is_zero() && !b.is_zero());
+        if let (Repr::Small { num: n1, den: d1 }, Repr::Small { num: n2, den: d2 }) = (&a.0, &b.0) {
+            // g = gcd(n1, n2)/lcm(d1, d2); a/g = (n1/gcd)·(d2/dg), b/g = (n2/gcd)·(d1/dg).
+            let gn = binary_gcd(n1.unsigned_abs(), n2.unsigned_abs());
+            let dg = binary_gcd(*d1 as u64, *d2 as u64);
+            let (e1, e2) = (*d1 as u64 / dg, *d2 as u64 / dg);
+            let lcm = e1
+                .checked_mul(*d2 as u64)
+                .and_then(|l| i64::try_from(l).ok());
+            if let (Ok(num), Some(den)) = (i64::try_from(gn), lcm) {
+                let sa = (*n1 / num) as i128 * e2 as i128;
+                let sb = (*n2 / num) as i128 * e1 as i128;
+                return (
+                    Rational(Repr::Small { num, den }),
+                    Integer::from_i128(sa),
+                    Integer::from_i128(sb),
+                );
+            }
+        }
+        let g = Rational::content_gcd(a, b);
+        let (sa, sb) = ((a / &g).numer(), (b / &g).numer());
+        (g, sa, sb)
+    }
+
     /// The content of a list: `content_gcd` of all of them (zero for an empty list), so that
     /// each value divided by it is an integer and those integers are coprime.
     pub fn content_of<'a>(values: impl IntoIterator<Item = &'a Rational>) -> Rational {

@@ -17,9 +17,7 @@ impl<C: Coefficient> Poly<C> {
         if self.is_zero() {
             return Ok(if negate_other { -other } else { other.clone() });
         }
-        let d = Rational::content_gcd(&self.content, &other.content);
-        let sa = (&self.content / &d).numer();
-        let mut sb = (&other.content / &d).numer();
+        let (d, sa, mut sb) = Rational::content_split(&self.content, &other.content);
         if negate_other {
             sb = -sb;
         }

@@ -75,3 +75,22 @@ pub(crate) fn product<I: IntegerRing>(
     }
     out.finish(w)
 }
+
+/// The square of a term list, from the `n(n + 1)/2` products `c_i²·m_i²` and `2c_ic_j·m_im_j`
+/// (`i < j`), sorted, combined, zeros dropped. The caller has checked the exponents.
+pub(crate) fn square<I: IntegerRing>(layout: &Layout, a: (&[u64], &[I])) -> (Vec<u64>, Vec<I>) {
+    let w = layout.words;
+    debug_assert!(w <= WORDS);
+    let bias = Monomial::load(layout.one());
+    let n = a.1.len();
+    let mut out = Gather::with_capacity(n * (n + 1) / 2);
+    let monomials: Vec<Monomial> = a.0.chunks_exact(w).map(Monomial::load).collect();
+    for (i, (mi, ci)) in monomials.iter().zip(a.1).enumerate() {
+        out.push(mi.mul(mi, &bias), ci.mul(ci));
+        for (mj, cj) in monomials[i + 1..].iter().zip(&a.1[i + 1..]) {
+            let p = ci.mul(cj);
+            out.push(mi.mul(mj, &bias), p.add(&p));
+        }
+    }
+    out.finish(w)
+}

@@ -49,8 +49,7 @@ impl<C: Coefficient> Poly<C> {
             return Ok(self.clone());
         }
         if e == 2 {
-            // A square: the product itself costs less than setting up the multinomial walk.
-            return self.checked_mul(self);
+            return self.checked_square();
         }
         if self.len() <= 6 {
             let compositions =

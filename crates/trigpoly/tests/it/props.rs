@@ -367,6 +367,21 @@ proptest! {
         prop_assert_eq!(x.to_string(), a.to_string());
     }
 
+    /// The content common to two sums: `a = g·sa`, `b = g·sb` with `sa`, `sb` coprime
+    /// integers and `g > 0`, on word-sized and larger fractions alike.
+    #[test]
+    fn content_split_is_the_content_gcd(a in rational(), b in rational(), big in any::<bool>()) {
+        prop_assume!(!a.is_zero() && !b.is_zero());
+        // Push one side past i64 to cover the general path too.
+        let a = if big { &a * &Rational::from(Integer::from_i128(1 << 70)) } else { a };
+        let (g, sa, sb) = Rational::content_split(&a, &b);
+        prop_assert_eq!(&g, &Rational::content_gcd(&a, &b));
+        prop_assert!(g > Rational::zero());
+        prop_assert_eq!(&g * &Rational::from(&sa), a);
+        prop_assert_eq!(&g * &Rational::from(&sb), b);
+        prop_assert!(sa.gcd(&sb).is_one());
+    }
+
     /// Exact division by a prepared divisor (a shift and a multiplication by an inverse for
     /// machine words) undoes multiplication, for quotients and divisors of every size and sign.
     #[test]
@@ -487,6 +502,26 @@ proptest! {
         prop_assert!(re.is_real());
         prop_assert!(im.is_real());
         prop_assert_eq!(&re + &im.mul_i().expect("over Q(i)"), f);
+    }
+
+    /// A product by a single term (a translation, which keeps the coefficients when the
+    /// term's integer part is 1) has the product of the values and distributes over a sum
+    /// with a product by two terms (another kernel), structurally.
+    #[test]
+    fn products_by_a_single_term(
+        f in gpoly(10), a in qpoly(10), c in gaussian(), e in exponents(true),
+        d in gaussian(), e2 in exponents(true), q in rational(), eq in exponents(false),
+        r in rational(), er in exponents(false), point in point(),
+    ) {
+        let vars = phase_space();
+        let term = |c: &GaussianRational, e: &[i64]| G::from_terms(&vars, [(c.clone(), e.to_vec())]).expect("small exponents");
+        let (m, t) = (term(&c, &e), term(&d, &e2));
+        let value = |h: &G| h.eval(&point).expect("every variable has a nonzero value");
+        prop_assert_eq!(value(&(&f * &m)), &value(&f) * &value(&m));
+        prop_assert_eq!(&(&f * &m) + &(&f * &t), &f * &(&m + &t));
+        let mq = Q::from_terms(&vars, [(q, eq)]).expect("small exponents");
+        let tq = Q::from_terms(&vars, [(r, er)]).expect("small exponents");
+        prop_assert_eq!(&(&a * &mq) + &(&a * &tq), &a * &(&mq + &tq));
     }
 
     /// eval(f·g) = eval(f)·eval(g), eval(f + g) = eval(f) + eval(g), at rational points with
