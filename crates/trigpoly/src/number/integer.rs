@@ -455,18 +455,24 @@ forward_binop!(Mul, mul, MulAssign, mul_assign, mul_ref);
 
 impl Neg for &Integer {
     type Output = Integer;
+    #[inline]
     fn neg(self) -> Integer {
         match self {
-            Integer::Small(v) => match v.checked_neg() {
-                Some(n) => Integer::Small(n),
-                None => Integer::from_i128(-(*v as i128)),
-            },
-            Integer::Wide(v) => match v.checked_neg() {
-                Some(n) => Integer::from_i128(n),
-                None => Integer::from_bigint(-BigInt::from(**v)),
-            },
-            Integer::Big(b) => Integer::from_bigint(-(**b).clone()),
+            Integer::Small(v) if *v != i64::MIN => Integer::Small(-v),
+            _ => neg_wide_or_big(self),
         }
+    }
+}
+
+/// `−a` for `i64::MIN` and anything wider.
+#[cold]
+fn neg_wide_or_big(a: &Integer) -> Integer {
+    match a.to_i128() {
+        Some(v) => match v.checked_neg() {
+            Some(n) => Integer::from_i128(n),
+            None => Integer::from_bigint(-BigInt::from(v)),
+        },
+        None => Integer::from_bigint(-a.to_bigint()),
     }
 }
 
