@@ -265,6 +265,7 @@ impl ExactDivisor {
     }
 
     /// `a / d`, for `a` a multiple of `d` (the quotient is wrong otherwise).
+    #[inline]
     pub fn divide(&self, a: &Integer) -> Integer {
         match (a, self.kind) {
             (

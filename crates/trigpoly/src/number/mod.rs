@@ -169,6 +169,7 @@ impl IntegerRing for GaussianInteger {
     fn from_integer(k: Integer) -> Self {
         GaussianInteger::new(k, Integer::ZERO)
     }
+    #[inline]
     fn add(&self, o: &Self) -> Self {
         GaussianInteger::new(&self.re + &o.re, &self.im + &o.im)
     }
@@ -211,6 +212,7 @@ impl IntegerRing for GaussianInteger {
         }
         GaussianInteger::new(&self.re * k, &self.im * k)
     }
+    #[inline]
     fn div_exact(&self, k: &ExactDivisor) -> Self {
         GaussianInteger::new(k.divide(&self.re), k.divide(&self.im))
     }
