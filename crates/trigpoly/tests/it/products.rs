@@ -1,14 +1,14 @@
 //! Large products through the dense kernel: split into parts over two threads or run as one
 //! part, with the touched accumulators marked (a sparse box) or all of them scanned (a dense
-//! box), the product is the same canonical polynomial, and takes the value of `f(p)·g(p)` at an
-//! integer point.
+//! box), over Q and over Q(i), the product is the same canonical polynomial, and takes the
+//! value of `f(p)·g(p)` at an integer point.
 
-use trigpoly::{Point, Rational};
+use trigpoly::{Coefficient, Point, Poly, Rational};
 
-use crate::common::{coordinates, p, var, Q};
+use crate::common::{coordinates, p, var, G, Q};
 
 /// `f · g` computed on a rayon pool of `threads` threads.
-fn product_on(threads: usize, f: &Q, g: &Q) -> Q {
+fn product_on<C: Coefficient>(threads: usize, f: &Poly<C>, g: &Poly<C>) -> Poly<C> {
     rayon::ThreadPoolBuilder::new()
         .num_threads(threads)
         .build()
@@ -40,6 +40,16 @@ fn dense_products_split_over_threads_agree_with_one_thread() {
         let value = f.eval(&point).unwrap() * g.eval(&point).unwrap();
         assert_eq!(one.eval(&point), Ok(value));
     }
+    // Over Q(i) on a sparse box: the accumulators hold both components.
+    let (f, g): (G, G) = (
+        p(&vars, "(1 + i*x + y + 2*z^3 - t^3)^9"),
+        p(&vars, "(1 - x^3 + 3*i*y^3 + z + t)^9"),
+    );
+    let one = product_on(1, &f, &g);
+    assert_eq!(one, product_on(2, &f, &g));
+    let value = f.eval(&point).unwrap() * g.eval(&point).unwrap();
+    assert_eq!(one.eval(&point), Ok(value));
+    assert!(one.terms().any(|t| !t.coeff().is_real()));
 }
 
 /// 140 variables pack into 35 words, wider than the heap product's fixed-width keys: a sparse
