@@ -110,7 +110,8 @@ impl Integer {
         }
     }
 
-    /// `a + b`, `a − b`, `a · b` of two `i128`s, exactly.
+    /// An operation on two `i128`s (a sum, a difference, a product, an exact quotient),
+    /// exactly: by `machine` when that does not overflow, else by `big`.
     fn from_i128_op(
         a: i128,
         b: i128,

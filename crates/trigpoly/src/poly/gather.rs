@@ -84,12 +84,12 @@ pub(crate) fn square<I: IntegerRing>(layout: &Layout, a: (&[u64], &[I])) -> (Vec
     let bias = Monomial::load(layout.one());
     let n = a.1.len();
     let mut out = Gather::with_capacity(n * (n + 1) / 2);
-    let monomials: Vec<Monomial> = a.0.chunks_exact(w).map(Monomial::load).collect();
-    for (i, (mi, ci)) in monomials.iter().zip(a.1).enumerate() {
-        out.push(mi.mul(mi, &bias), ci.mul(ci));
-        for (mj, cj) in monomials[i + 1..].iter().zip(&a.1[i + 1..]) {
+    for (i, (mi, ci)) in a.0.chunks_exact(w).zip(a.1).enumerate() {
+        let mi = Monomial::load(mi);
+        out.push(mi.mul(&mi, &bias), ci.mul(ci));
+        for (mj, cj) in a.0[(i + 1) * w..].chunks_exact(w).zip(&a.1[i + 1..]) {
             let p = ci.mul(cj);
-            out.push(mi.mul(mj, &bias), p.add(&p));
+            out.push(mi.mul(&Monomial::load(mj), &bias), p.add(&p));
         }
     }
     out.finish(w)
