@@ -1,10 +1,13 @@
 //! Dense multiplication on Kronecker indices (`kronecker.rs`), chunked over the output index
-//! range. The inputs are sorted, so for each term of `a` the partners in `b` that land in an
-//! output chunk form a contiguous run. A chunk of machine-word accumulators stays in cache and
-//! is read back highest first, so the terms come out in order; on a sparse box a bitmap records
-//! the touched accumulators and only those are read. Used when the box is not much larger than
-//! the work and every coefficient product fits the accumulators. Large products split the index
-//! range into parts that rayon runs on the threads of the caller's pool.
+//! range. The inputs are sorted, so for each term of `a` (a row) the partners in `b` that land
+//! in an output chunk form a contiguous run. A chunk of machine-word accumulators stays in the
+//! L2 cache and is read back highest first, so the terms come out in order. On a sparse box a
+//! bitmap records the touched accumulators and only those are read, and each chunk visits only
+//! the rows with a product in it: every row waits in the list of the chunk of its next product
+//! (a bucket queue), where a scan would pass over every row in every chunk. Used when the box
+//! is not much larger than the work and every coefficient product fits the accumulators. Large
+//! products split the index range into parts that rayon runs on the threads of the caller's
+//! pool.
 
 use rayon::prelude::*;
 
@@ -15,11 +18,6 @@ use crate::varset::Layout;
 
 /// Bytes of accumulators per chunk: half the L2 cache of a typical core.
 const CHUNK_BYTES: usize = 1 << 18;
-/// On sparse boxes a chunk is wide enough to receive this many cache's worth of products (they
-/// collide and spread out, so far fewer accumulators are touched).
-const SPARSE_PRODUCTS_PER_CACHE: u64 = 1;
-/// The widest chunk, in cache's worth of accumulators.
-const MAX_CHUNK_CACHES: u64 = 64;
 /// The largest box scanned, relative to the number of products.
 const BOX_PER_PRODUCT: u64 = 32;
 /// Products below this many term pairs run as one part.
@@ -56,13 +54,9 @@ pub(crate) fn try_mul_dense<I: IntegerRing>(
     let gb = kron.indices(layout, b.0, b.2);
     // Index range of the product.
     let (lo, end) = (fa[n - 1] + gb[m - 1], fa[0] + gb[0] + 1);
-    // A chunk spans a cache's worth of accumulators or, on sparse boxes, more: every chunk
-    // visits each term of `a` whose products reach it, so it must hold enough products.
+    // A chunk spans a cache's worth of accumulators.
     let cells = (CHUNK_BYTES / std::mem::size_of::<I::Wide>()) as u64;
-    let chunk = (cells * SPARSE_PRODUCTS_PER_CACHE * kron.size() / work)
-        .clamp(cells, cells * MAX_CHUNK_CACHES)
-        .min(end - lo)
-        .next_multiple_of(64);
+    let chunk = cells.min(end - lo).next_multiple_of(64);
     let factors = Factors {
         fa,
         gb,
@@ -112,6 +106,9 @@ pub(crate) fn try_mul_dense<I: IntegerRing>(
     Some(Ok((exps, coeffs)))
 }
 
+/// The end of a list of rows.
+const NONE: usize = usize::MAX;
+
 /// The two factors as Kronecker indices (descending) and machine-word coefficients.
 struct Factors<S> {
     fa: Vec<u64>,
@@ -121,9 +118,39 @@ struct Factors<S> {
 }
 
 impl<S: Copy + Send + Sync> Factors<S> {
+    /// A row's products from its next partner down to `bottom`, added into the chunk's
+    /// accumulators (offset from `bottom`, marked with `MARK`); moves the row on past them and
+    /// returns the index of its next product, if any.
+    #[inline(always)]
+    fn add_row<I: IntegerRing<Small = S>, const MARK: bool>(
+        &self,
+        (fi, ai, next): (u64, S, &mut usize),
+        bottom: u64,
+        acc: &mut [I::Wide],
+        touched: &mut [u64],
+    ) -> Option<u64> {
+        let j = *next;
+        let mut run = 0;
+        for (&g, c) in self.gb[j..].iter().zip(&self.cb[j..]) {
+            let k = fi + g;
+            if k < bottom {
+                break;
+            }
+            let off = (k - bottom) as usize;
+            I::wide_add_mul(&mut acc[off], &ai, c);
+            if MARK {
+                touched[off >> 6] |= 1 << (off & 63);
+            }
+            run += 1;
+        }
+        *next = j + run;
+        self.gb.get(j + run).map(|&g| fi + g)
+    }
+
     /// The terms of the product with indices in `[lo, hi)`, descending, as packed monomials.
     /// A chunk is as wide as `acc`. With `MARK`, a bitmap records the touched accumulators and
-    /// only those are read back; without, every accumulator of a chunk is read back.
+    /// only those are read back, and each chunk visits only the rows with a product in it;
+    /// without, every accumulator of a chunk is read back.
     fn range<I: IntegerRing<Small = S>, const MARK: bool>(
         &self,
         acc: &mut [I::Wide],
@@ -132,21 +159,19 @@ impl<S: Copy + Send + Sync> Factors<S> {
         decoder: &Decoder,
         max_terms: usize,
     ) -> Result<Product<I>, AlgebraError> {
-        let (fa, gb, ca, cb) = (&self.fa, &self.gb, &self.ca, &self.cb);
+        let (fa, gb, ca) = (&self.fa, &self.gb, &self.ca);
         let (n, m) = (fa.len(), gb.len());
         let (g_max, g_min) = (gb[0], gb[m - 1]);
         let chunk = acc.len() as u64;
         let words = decoder.words();
         let zero = I::Wide::default();
         let mut touched = vec![0u64; if MARK { (chunk / 64) as usize } else { 0 }];
-        // `next[i]`: the first partner of term `i` of `a` not yet multiplied (partners are
-        // visited in descending index order, as the chunks are).
+        // `next[i]`: the first partner of row `i` not yet multiplied (partners are visited in
+        // descending index order, as the chunks are).
         let mut next: Vec<usize> = fa
             .iter()
             .map(|&fi| gb.partition_point(|&g| fi + g >= hi))
             .collect();
-        // Terms of `a` before `first` land above every remaining chunk.
-        let mut first = fa.partition_point(|&fi| fi + g_min >= hi);
         // The part has at most one term per product and per index: reserving that much up
         // front costs address space only (pages are backed when written), where growing by
         // doubling would copy and fault in the terms about twice over. If the address space
@@ -163,33 +188,62 @@ impl<S: Copy + Send + Sync> Factors<S> {
         {
             (exps, coeffs) = (Vec::new(), Vec::new());
         }
+        // Sparse: `waiting[c]` starts the list of the rows whose next product falls in chunk
+        // `c` (counted from the top), linked through `then`. Dense: rows before `first` land
+        // above every remaining chunk, and the others are scanned in order.
+        let chunk_of = |k: u64| ((hi - 1 - k) / chunk) as usize;
+        let mut waiting = vec![
+            NONE;
+            if MARK {
+                (hi - lo).div_ceil(chunk) as usize
+            } else {
+                0
+            }
+        ];
+        let mut then = vec![NONE; if MARK { n } else { 0 }];
+        if MARK {
+            for (i, (&fi, &j)) in fa.iter().zip(&next).enumerate().rev() {
+                match gb.get(j) {
+                    Some(&g) if fi + g >= lo => {
+                        then[i] = std::mem::replace(&mut waiting[chunk_of(fi + g)], i);
+                    }
+                    _ => {}
+                }
+            }
+        }
+        let mut first = fa.partition_point(|&fi| fi + g_min >= hi);
         let mut top = hi;
+        let mut current = 0;
         while top > lo {
             let bottom = top.saturating_sub(chunk).max(lo);
-            while first < n && fa[first] + g_min >= top {
-                first += 1;
-            }
-            for i in first..n {
-                let fi = fa[i];
-                if fi + g_max < bottom {
-                    break;
+            if MARK {
+                let mut row = std::mem::replace(&mut waiting[current], NONE);
+                while row != NONE {
+                    let i = row;
+                    row = then[i];
+                    // The row waits again in the chunk of its next product.
+                    let state = (fa[i], ca[i], &mut next[i]);
+                    if let Some(k) = self.add_row::<I, MARK>(state, bottom, acc, &mut touched) {
+                        if k >= lo {
+                            then[i] = std::mem::replace(&mut waiting[chunk_of(k)], i);
+                        }
+                    }
                 }
-                let ai = ca[i];
-                let j = next[i];
-                let mut run = 0;
-                for (&g, c) in gb[j..].iter().zip(&cb[j..]) {
-                    let k = fi + g;
-                    if k < bottom {
+            } else {
+                while first < n && fa[first] + g_min >= top {
+                    first += 1;
+                }
+                for i in first..n {
+                    if fa[i] + g_max < bottom {
                         break;
                     }
-                    let off = (k - bottom) as usize;
-                    I::wide_add_mul(&mut acc[off], &ai, c);
-                    if MARK {
-                        touched[off >> 6] |= 1 << (off & 63);
-                    }
-                    run += 1;
+                    self.add_row::<I, MARK>(
+                        (fa[i], ca[i], &mut next[i]),
+                        bottom,
+                        acc,
+                        &mut touched,
+                    );
                 }
-                next[i] = j + run;
             }
             // Read the accumulators back, highest index first.
             let mut emit = |off: usize| {
@@ -213,6 +267,7 @@ impl<S: Copy + Send + Sync> Factors<S> {
             } else {
                 (0..(top - bottom) as usize).rev().for_each(emit);
             }
+            current += 1;
             if coeffs.len() > max_terms {
                 return Err(AlgebraError::TooManyTerms { limit: max_terms });
             }
