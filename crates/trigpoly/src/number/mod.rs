@@ -28,6 +28,10 @@ pub trait IntegerRing:
     fn is_zero(&self) -> bool;
     /// The embedding of an integer.
     fn from_integer(k: Integer) -> Self;
+    /// Whether the value is one.
+    fn is_one(&self) -> bool {
+        *self == Self::from_integer(Integer::ONE)
+    }
     /// `a + b`.
     fn add(&self, other: &Self) -> Self;
     /// `a − b`.
@@ -97,6 +101,9 @@ impl IntegerRing for Integer {
     }
     fn from_integer(k: Integer) -> Self {
         k
+    }
+    fn is_one(&self) -> bool {
+        Integer::is_one(self)
     }
     fn add(&self, other: &Self) -> Self {
         self + other
@@ -168,6 +175,9 @@ impl IntegerRing for GaussianInteger {
     }
     fn from_integer(k: Integer) -> Self {
         GaussianInteger::new(k, Integer::ZERO)
+    }
+    fn is_one(&self) -> bool {
+        self.re.is_one() && self.im.is_zero()
     }
     #[inline]
     fn add(&self, o: &Self) -> Self {

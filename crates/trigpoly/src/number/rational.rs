@@ -195,18 +195,14 @@ impl Rational {
     /// `gcd(a, b)` in the sense of contents: `gcd(numerators)/lcm(denominators)`, positive, so
     /// that `a/g` and `b/g` are coprime integers. `gcd(0, b) = |b|`.
     pub fn content_gcd(a: &Rational, b: &Rational) -> Rational {
-        if let (Repr::Small { num: n1, den: d1 }, Repr::Small { num: n2, den: d2 }) = (&a.0, &b.0) {
-            let g = binary_gcd(n1.unsigned_abs(), n2.unsigned_abs());
-            if g == 0 {
+        if let Some(words) = WordContent::of(a, b) {
+            if words.num == 0 {
                 return Rational::zero();
             }
-            // Both fractions are in lowest terms, so `g` (which divides both numerators) is
-            // prime to both denominators and to their lcm: the quotient needs no reduction.
-            let dg = binary_gcd(*d1 as u64, *d2 as u64);
-            let lcm = (*d1 as u64 / dg).checked_mul(*d2 as u64);
-            if let (Ok(num), Some(Ok(den))) = (i64::try_from(g), lcm.map(i64::try_from)) {
-                return Rational(Repr::Small { num, den });
-            }
+            return Rational(Repr::Small {
+                num: words.num,
+                den: words.den,
+            });
         }
         let num = a.numer().gcd(&b.numer());
         let den = a.denom().lcm(&b.denom());
@@ -224,23 +220,17 @@ impl Rational {
     /// ```
     pub fn content_split(a: &Rational, b: &Rational) -> (Rational, Integer, Integer) {
         debug_assert!(!a.is_zero() && !b.is_zero());
-        if let (Repr::Small { num: n1, den: d1 }, Repr::Small { num: n2, den: d2 }) = (&a.0, &b.0) {
-            // g = gcd(n1, n2)/lcm(d1, d2); a/g = (n1/gcd)·(d2/dg), b/g = (n2/gcd)·(d1/dg).
-            let gn = binary_gcd(n1.unsigned_abs(), n2.unsigned_abs());
-            let dg = binary_gcd(*d1 as u64, *d2 as u64);
-            let (e1, e2) = (*d1 as u64 / dg, *d2 as u64 / dg);
-            let lcm = e1
-                .checked_mul(*d2 as u64)
-                .and_then(|l| i64::try_from(l).ok());
-            if let (Ok(num), Some(den)) = (i64::try_from(gn), lcm) {
-                let sa = (*n1 / num) as i128 * e2 as i128;
-                let sb = (*n2 / num) as i128 * e1 as i128;
-                return (
-                    Rational(Repr::Small { num, den }),
-                    Integer::from_i128(sa),
-                    Integer::from_i128(sb),
-                );
-            }
+        if let Some(words) = WordContent::of(a, b) {
+            // a/g = (n1/num)·(d2/dg), b/g = (n2/num)·(d1/dg).
+            let scale = |n: i64, e: u64| Integer::from_i128((n / words.num) as i128 * e as i128);
+            return (
+                Rational(Repr::Small {
+                    num: words.num,
+                    den: words.den,
+                }),
+                scale(words.n1, words.e2),
+                scale(words.n2, words.e1),
+            );
         }
         let g = Rational::content_gcd(a, b);
         let (sa, sb) = ((a / &g).numer(), (b / &g).numer());
@@ -261,6 +251,41 @@ impl Rational {
             Repr::Small { num, .. } => num.cmp(&0),
             Repr::Big(b) => (**b).cmp(&BigRational::zero()),
         }
+    }
+}
+
+/// `content_gcd` of two word-sized fractions `n1/d1`, `n2/d2` in word arithmetic:
+/// `num/den = gcd(n1, n2)/lcm(d1, d2)`, with `e1 = d1/dg`, `e2 = d2/dg` for `dg = gcd(d1, d2)`.
+/// Both fractions are in lowest terms, so `num` (which divides both numerators) is prime to
+/// both denominators and to their lcm: the quotient needs no reduction.
+struct WordContent {
+    num: i64,
+    den: i64,
+    n1: i64,
+    n2: i64,
+    e1: u64,
+    e2: u64,
+}
+
+impl WordContent {
+    /// `None` when a value is not word-sized or the gcd or the lcm passes `i64`.
+    fn of(a: &Rational, b: &Rational) -> Option<WordContent> {
+        let (Repr::Small { num: n1, den: d1 }, Repr::Small { num: n2, den: d2 }) = (&a.0, &b.0)
+        else {
+            return None;
+        };
+        let num = i64::try_from(binary_gcd(n1.unsigned_abs(), n2.unsigned_abs())).ok()?;
+        let dg = binary_gcd(*d1 as u64, *d2 as u64);
+        let (e1, e2) = (*d1 as u64 / dg, *d2 as u64 / dg);
+        let den = i64::try_from(e1.checked_mul(*d2 as u64)?).ok()?;
+        Some(WordContent {
+            num,
+            den,
+            n1: *n1,
+            n2: *n2,
+            e1,
+            e2,
+        })
     }
 }
 

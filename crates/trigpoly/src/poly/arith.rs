@@ -43,7 +43,7 @@ impl<C: Coefficient> Poly<C> {
             return Self::zero(&self.vars);
         }
         let content = &self.content * &q;
-        if n == C::Int::from_integer(Integer::ONE) {
+        if n.is_one() {
             return Poly {
                 content,
                 ..self.clone()

@@ -119,8 +119,7 @@ struct Factors<S> {
 
 impl<S: Copy + Send + Sync> Factors<S> {
     /// A row's products from its next partner down to `bottom`, added into the chunk's
-    /// accumulators (offset from `bottom`, marked with `MARK`); moves the row on past them and
-    /// returns the index of its next product, if any.
+    /// accumulators (offset from `bottom`, marked with `MARK`); moves the row on past them.
     #[inline(always)]
     fn add_row<I: IntegerRing<Small = S>, const MARK: bool>(
         &self,
@@ -128,7 +127,7 @@ impl<S: Copy + Send + Sync> Factors<S> {
         bottom: u64,
         acc: &mut [I::Wide],
         touched: &mut [u64],
-    ) -> Option<u64> {
+    ) {
         let j = *next;
         let mut run = 0;
         for (&g, c) in self.gb[j..].iter().zip(&self.cb[j..]) {
@@ -144,7 +143,6 @@ impl<S: Copy + Send + Sync> Factors<S> {
             run += 1;
         }
         *next = j + run;
-        self.gb.get(j + run).map(|&g| fi + g)
     }
 
     /// The terms of the product with indices in `[lo, hi)`, descending, as packed monomials.
@@ -201,14 +199,16 @@ impl<S: Copy + Send + Sync> Factors<S> {
             }
         ];
         let mut then = vec![NONE; if MARK { n } else { 0 }];
+        // Row `i`, whose next partner is `j`, waits in the chunk of that product, if it has one
+        // in the range.
+        let wait = |waiting: &mut [usize], then: &mut [usize], i: usize, j: usize| {
+            if let Some(k) = gb.get(j).map(|&g| fa[i] + g).filter(|&k| k >= lo) {
+                then[i] = std::mem::replace(&mut waiting[chunk_of(k)], i);
+            }
+        };
         if MARK {
-            for (i, (&fi, &j)) in fa.iter().zip(&next).enumerate().rev() {
-                match gb.get(j) {
-                    Some(&g) if fi + g >= lo => {
-                        then[i] = std::mem::replace(&mut waiting[chunk_of(fi + g)], i);
-                    }
-                    _ => {}
-                }
+            for (i, &j) in next.iter().enumerate().rev() {
+                wait(&mut waiting, &mut then, i, j);
             }
         }
         let mut first = fa.partition_point(|&fi| fi + g_min >= hi);
@@ -221,13 +221,13 @@ impl<S: Copy + Send + Sync> Factors<S> {
                 while row != NONE {
                     let i = row;
                     row = then[i];
-                    // The row waits again in the chunk of its next product.
-                    let state = (fa[i], ca[i], &mut next[i]);
-                    if let Some(k) = self.add_row::<I, MARK>(state, bottom, acc, &mut touched) {
-                        if k >= lo {
-                            then[i] = std::mem::replace(&mut waiting[chunk_of(k)], i);
-                        }
-                    }
+                    self.add_row::<I, MARK>(
+                        (fa[i], ca[i], &mut next[i]),
+                        bottom,
+                        acc,
+                        &mut touched,
+                    );
+                    wait(&mut waiting, &mut then, i, next[i]);
                 }
             } else {
                 while first < n && fa[first] + g_min >= top {

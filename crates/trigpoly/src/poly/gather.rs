@@ -13,6 +13,11 @@ pub(crate) const WORDS: usize = 4;
 /// Products of at most this many term pairs take this path.
 pub(crate) const MAX_PAIRS: usize = 256;
 
+/// Whether a product of `pairs` term pairs of monomials of `words` words takes this path.
+pub(crate) fn fits(words: usize, pairs: usize) -> bool {
+    words <= WORDS && pairs <= MAX_PAIRS
+}
+
 /// A packed monomial padded to [`WORDS`] words.
 pub(crate) type Monomial = [u64; WORDS];
 

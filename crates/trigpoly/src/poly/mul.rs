@@ -86,20 +86,19 @@ impl<C: Coefficient> Poly<C> {
         if small.len() == 1 {
             small.check_product_exponents(big)?;
             let c = &small.coeffs[0];
-            if *c == C::Int::from_integer(crate::number::Integer::ONE) {
-                return Ok(Poly {
+            let (exps, coeffs) = big.shifted(&small.exps, c);
+            return Ok(if c.is_one() {
+                Poly {
                     vars: self.vars.clone(),
                     content,
-                    exps: big.shifted_monomials(&small.exps),
-                    coeffs: big.coeffs.clone(),
-                });
-            }
-            let (exps, coeffs) = big.shifted(&small.exps, c);
-            return Ok(Self::product(&self.vars, content, exps, coeffs));
+                    exps,
+                    coeffs,
+                }
+            } else {
+                Self::product(&self.vars, content, exps, coeffs)
+            });
         }
-        if self.words() <= gather::WORDS
-            && small.len().saturating_mul(big.len()) <= gather::MAX_PAIRS
-        {
+        if gather::fits(self.words(), small.len().saturating_mul(big.len())) {
             small.check_product_exponents(big)?;
             let (exps, coeffs) = gather::product(
                 self.layout(),
@@ -159,8 +158,7 @@ impl<C: Coefficient> Poly<C> {
     /// `self²`: a short polynomial gathers each pair of terms once (the multinomial walk's
     /// tables cost more than they save at `e = 2`); anything longer is the product by itself.
     pub(crate) fn checked_square(&self) -> Result<Self, AlgebraError> {
-        if self.words() > gather::WORDS || self.len().saturating_mul(self.len()) > gather::MAX_PAIRS
-        {
+        if !gather::fits(self.words(), self.len().saturating_mul(self.len())) {
             return self.checked_mul(self);
         }
         self.check_product_exponents(self)?;
@@ -189,21 +187,21 @@ impl<C: Coefficient> Poly<C> {
     }
 
     /// `self · c·m` for one term given by its packed monomial `m` and integer coefficient `c`:
-    /// a translation of every exponent, which keeps the order.
+    /// a translation of every exponent, which keeps the order (and the coefficients, when `c`
+    /// is 1).
     pub(crate) fn shifted(&self, m: &[u64], c: &C::Int) -> (Vec<u64>, Vec<C::Int>) {
-        let coeffs = self.coeffs.iter().map(|x| x.mul(c)).collect();
-        (self.shifted_monomials(m), coeffs)
-    }
-
-    /// The packed monomials of `self · m`, in order.
-    fn shifted_monomials(&self, m: &[u64]) -> Vec<u64> {
         let w = self.words();
         let layout = self.layout();
         let mut exps = vec![0u64; self.exps.len()];
         for (out, a) in exps.chunks_exact_mut(w).zip(self.exps.chunks_exact(w)) {
             layout.mul_into(a, m, out);
         }
-        exps
+        let coeffs = if c.is_one() {
+            self.coeffs.clone()
+        } else {
+            self.coeffs.iter().map(|x| x.mul(c)).collect()
+        };
+        (exps, coeffs)
     }
 
     /// `self · v^e` (a translation; exponents are checked).

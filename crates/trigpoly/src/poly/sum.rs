@@ -165,8 +165,7 @@ impl<C: Coefficient> Poly<C> {
         let layout = f.layout();
         let w = layout.words;
         let limit = vars.limits().max_degree as i64;
-        if w > gather::WORDS
-            || f.len().saturating_mul(g.len()) > gather::MAX_PAIRS
+        if !gather::fits(w, f.len().saturating_mul(g.len()))
             || f.exponent_bound() + g.exponent_bound() + 1 > limit
         {
             return Ok(None);
@@ -292,7 +291,7 @@ impl<C: Coefficient> Poly<C> {
         // Hamiltonian's gradient, has the integer part 1: nothing to multiply).
         let exps = monomials(rest.len());
         let mut cs = d.coeffs;
-        if *last != C::Int::from_integer(Integer::ONE) {
+        if !last.is_one() {
             cs.iter_mut().for_each(|c| *c = c.mul(last));
         }
         streams.push((q, Self::raw(&self.vars, exps, cs)));
