@@ -190,12 +190,12 @@ impl IntegerRing for GaussianInteger {
     #[inline]
     fn mul(&self, o: &Self) -> Self {
         if let (Some((a, b)), Some((c, d))) = (self.to_small(), o.to_small()) {
-            // Word-sized parts: each product and each sum fits an i128.
+            // Word-sized parts: each product fits an i128, and so does each sum except at
+            // the edge, (−2⁶³)² + (−2⁶³)² = 2¹²⁷, which goes the general way below.
             let (a, b, c, d) = (a as i128, b as i128, c as i128, d as i128);
-            return GaussianInteger::new(
-                Integer::from_i128(a * c - b * d),
-                Integer::from_i128(a * d + b * c),
-            );
+            if let (Some(re), Some(im)) = ((a * c).checked_sub(b * d), (a * d).checked_add(b * c)) {
+                return GaussianInteger::new(Integer::from_i128(re), Integer::from_i128(im));
+            }
         }
         if self.im.is_zero() {
             return GaussianInteger::new(&self.re * &o.re, &self.re * &o.im);

@@ -199,6 +199,32 @@ fn point() -> impl Strategy<Value = Point> {
         })
 }
 
+/// Products of Gaussian integers whose components are all ±2⁶³ (`i64::MIN`, or one past
+/// `i64::MAX`), every sign pattern: with all four `i64::MIN`, `ad + bc = 2¹²⁷` passes `i128`.
+#[test]
+fn gaussian_products_at_the_edge_of_the_machine_words() {
+    use trigpoly::{GaussianInteger, IntegerRing};
+    for signs in 0..16u32 {
+        let edge = |k: u32| {
+            let v = BigInt::from(i64::MIN);
+            if signs >> k & 1 == 1 {
+                -v
+            } else {
+                v
+            }
+        };
+        let (a, b, c, d) = (edge(0), edge(1), edge(2), edge(3));
+        let x = GaussianInteger::new(Integer::from(a.clone()), Integer::from(b.clone()));
+        let y = GaussianInteger::new(Integer::from(c.clone()), Integer::from(d.clone()));
+        let p = x.mul(&y);
+        assert_eq!(
+            (p.re.to_bigint(), p.im.to_bigint()),
+            (&a * &c - &b * &d, &a * &d + &b * &c),
+            "signs {signs:04b}"
+        );
+    }
+}
+
 fn config() -> Config {
     Config {
         cases: 64,
@@ -365,6 +391,32 @@ proptest! {
         prop_assert_eq!(x.cmp(&y), a.cmp(&b));
         prop_assert_eq!(x.bits(), a.bits());
         prop_assert_eq!(x.to_string(), a.to_string());
+    }
+
+    /// `GaussianInteger`'s ring operations compute what `BigInt` computes componentwise,
+    /// `(a + bi)(c + di) = (ac − bd) + (ad + bc)i`, at the edges of the machine words too:
+    /// `(−2⁶³ − 2⁶³i)² = 2¹²⁷i` passes `i128` by one.
+    #[test]
+    fn gaussian_integer_arithmetic_agrees_with_bigint(
+        a in integer(), b in integer(), c in integer(), d in integer(), k in integer(),
+    ) {
+        use trigpoly::{GaussianInteger, IntegerRing};
+        let gauss = |re: &BigInt, im: &BigInt| {
+            GaussianInteger::new(Integer::from(re.clone()), Integer::from(im.clone()))
+        };
+        let (x, y) = (gauss(&a, &b), gauss(&c, &d));
+        let results = [
+            (x.mul(&y), (&a * &c - &b * &d, &a * &d + &b * &c)),
+            (x.add(&y), (&a + &c, &b + &d)),
+            (x.neg(), (-&a, -&b)),
+            (x.scale(&Integer::from(k.clone())), (&a * &k, &b * &k)),
+            (x.conj(), (a.clone(), -&b)),
+            (x.try_mul_i().expect("i is in Z[i]"), (-&b, a.clone())),
+        ];
+        for (got, (re, im)) in results {
+            prop_assert!(canonical(&got.re) && canonical(&got.im), "{got:?} is not canonical");
+            prop_assert_eq!((got.re.to_bigint(), got.im.to_bigint()), (re, im));
+        }
     }
 
     /// The content common to two sums: `a = g·sa`, `b = g·sb` with `sa`, `sb` coprime
