@@ -106,6 +106,21 @@ pub(crate) fn try_mul_dense<I: IntegerRing>(
     Some(Ok((exps, coeffs)))
 }
 
+/// How many of the leading entries of `desc` (descending) are at least `lowest`: a galloping
+/// search from the front (doubling steps, then bisection), which reads near the front when the
+/// answer is short, as a row's run in a chunk is.
+#[inline]
+fn gallop(desc: &[u64], lowest: u64) -> usize {
+    let mut known = 0;
+    let mut step = 1;
+    while step < desc.len() && desc[step] >= lowest {
+        known = step;
+        step *= 2;
+    }
+    let end = step.min(desc.len());
+    known + desc[known..end].partition_point(|&g| g >= lowest)
+}
+
 /// The end of a list of rows.
 const NONE: usize = usize::MAX;
 
@@ -129,18 +144,17 @@ impl<S: Copy + Send + Sync> Factors<S> {
         touched: &mut [u64],
     ) {
         let j = *next;
-        let mut run = 0;
-        for (&g, c) in self.gb[j..].iter().zip(&self.cb[j..]) {
-            let k = fi + g;
-            if k < bottom {
-                break;
-            }
-            let off = (k - bottom) as usize;
+        // The partners from `j` on with `fi + g >= bottom`, found first, so that the loop
+        // below only multiplies and adds; `off = g + fi − bottom` (wrapping, in range).
+        let lowest = bottom.saturating_sub(fi);
+        let run = gallop(&self.gb[j..], lowest);
+        let shift = fi.wrapping_sub(bottom);
+        for (&g, c) in self.gb[j..j + run].iter().zip(&self.cb[j..j + run]) {
+            let off = g.wrapping_add(shift) as usize;
             I::wide_add_mul(&mut acc[off], &ai, c);
             if MARK {
                 touched[off >> 6] |= 1 << (off & 63);
             }
-            run += 1;
         }
         *next = j + run;
     }
@@ -274,5 +288,27 @@ impl<S: Copy + Send + Sync> Factors<S> {
             top = bottom;
         }
         Ok((exps, coeffs))
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::gallop;
+
+    /// The galloping search finds the same run as a bisection over the whole slice, for every
+    /// length up to 70 and every threshold around its entries (runs at, between and past the
+    /// doubling steps).
+    #[test]
+    fn gallop_agrees_with_partition_point() {
+        for len in 0..70u64 {
+            let desc: Vec<u64> = (0..len).map(|k| 3 * (len - k)).collect();
+            for lowest in 0..=3 * len + 2 {
+                assert_eq!(
+                    gallop(&desc, lowest),
+                    desc.partition_point(|&g| g >= lowest),
+                    "len {len}, lowest {lowest}"
+                );
+            }
+        }
     }
 }
