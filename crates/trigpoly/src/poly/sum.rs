@@ -14,6 +14,10 @@ use crate::error::AlgebraError;
 use crate::number::{Coefficient, Integer, IntegerRing, Rational};
 use crate::varset::{Var, VarKind};
 
+/// The most pairs of variables the short Jacobian kernel takes (every pair of a phase space
+/// whose monomials fit [`gather::WORDS`] words, with room to spare).
+const MAX_SHORT_PAIRS: usize = 16;
+
 /// Sorted term lists with their rational contents, waiting to be summed.
 type Streams<C> = Vec<(Rational, Poly<C>)>;
 
@@ -166,11 +170,13 @@ impl<C: Coefficient> Poly<C> {
         let w = layout.words;
         let limit = vars.limits().max_degree as i64;
         if !gather::fits(w, f.len().saturating_mul(g.len()))
+            || pairs.len() > MAX_SHORT_PAIRS
             || f.exponent_bound() + g.exponent_bound() + 1 > limit
         {
             return Ok(None);
         }
         /// One pair `(q, p)` as the kernel reads it.
+        #[derive(Clone, Copy, Default)]
         struct Shape {
             q: (usize, u32),
             p: (usize, u32),
@@ -180,48 +186,36 @@ impl<C: Coefficient> Poly<C> {
             /// Factors `i` the derivatives bring, one per angle.
             turns: u32,
         }
-        let shapes: Vec<Shape> = pairs
-            .iter()
-            .map(|&(q, p)| {
-                let mut lower: Monomial = [0; gather::WORDS];
-                let mut turns = 0;
-                for v in [q, p] {
-                    if vars.variable(v).kind() == VarKind::Angle {
-                        turns += 1;
-                    } else {
-                        let (word, shift) = layout.field(v.index());
-                        lower[word] = lower[word].wrapping_add(1 << shift);
-                    }
-                }
-                Shape {
-                    q: layout.field(q.index()),
-                    p: layout.field(p.index()),
-                    lower,
-                    turns,
-                }
-            })
-            .collect();
-        // The exponents of each pair's variables in each term.
-        let exponents = |h: &Self| -> Vec<(i64, i64)> {
-            let mut out = Vec::with_capacity(h.len() * shapes.len());
-            for m in h.exps.chunks_exact(w) {
-                for shape in &shapes {
-                    out.push((layout.read(m, shape.q), layout.read(m, shape.p)));
+        // On the stack: a bracket of generators is a few dozen term products, and an
+        // allocation would cost as much as several of them.
+        let mut shapes = [Shape::default(); MAX_SHORT_PAIRS];
+        for (shape, &(q, p)) in shapes.iter_mut().zip(pairs) {
+            let mut lower: Monomial = [0; gather::WORDS];
+            let mut turns = 0;
+            for v in [q, p] {
+                if vars.variable(v).kind() == VarKind::Angle {
+                    turns += 1;
+                } else {
+                    let (word, shift) = layout.field(v.index());
+                    lower[word] = lower[word].wrapping_add(1 << shift);
                 }
             }
-            out
-        };
-        let (ef, eg) = (exponents(f), exponents(g));
-        let k = shapes.len();
+            *shape = Shape {
+                q: layout.field(q.index()),
+                p: layout.field(p.index()),
+                lower,
+                turns,
+            };
+        }
+        let shapes = &shapes[..pairs.len()];
         let bias = Monomial::load(layout.one());
         let mut out = Gather::with_capacity(f.len() * g.len());
-        for (i, (mf, cf)) in f.exps.chunks_exact(w).zip(&f.coeffs).enumerate() {
-            let mf = Monomial::load(mf);
-            for (j, (mg, cg)) in g.exps.chunks_exact(w).zip(&g.coeffs).enumerate() {
+        for (mf, cf) in f.exps.chunks_exact(w).zip(&f.coeffs) {
+            for (mg, cg) in g.exps.chunks_exact(w).zip(&g.coeffs) {
                 let mut product = None;
-                for (s, shape) in shapes.iter().enumerate() {
-                    let ((aq, ap), (bq, bp)) = (ef[i * k + s], eg[j * k + s]);
-                    let factor = aq * bp - ap * bq;
+                for shape in shapes {
+                    let factor = layout.read(mf, shape.q) * layout.read(mg, shape.p)
+                        - layout.read(mf, shape.p) * layout.read(mg, shape.q);
                     if factor == 0 {
                         continue;
                     }
@@ -233,7 +227,7 @@ impl<C: Coefficient> Poly<C> {
                             None => return Ok(None),
                         }
                     }
-                    let mut m = mf.mul(&Monomial::load(mg), &bias);
+                    let mut m = Monomial::load(mf).mul(&Monomial::load(mg), &bias);
                     for (word, lower) in m.iter_mut().zip(shape.lower) {
                         *word = word.wrapping_sub(lower);
                     }
