@@ -20,6 +20,7 @@ mod trig;
 
 use std::fmt;
 use std::hash::{Hash, Hasher};
+use std::sync::atomic::{AtomicU8, Ordering};
 use std::sync::Arc;
 
 use crate::error::AlgebraError;
@@ -52,17 +53,27 @@ pub struct Poly<C: Coefficient> {
     content: Rational,
     exps: Vec<u64>,
     coeffs: Vec<C::Int>,
+    /// [`Poly::exponent_bound`], computed when first asked for: a polynomial that enters many
+    /// products (a generator, a Hamiltonian's gradient) has its exponents read once.
+    exponent_bound: BoundCache,
+}
+
+/// The bit length `b` of [`Poly::exponent_bound`] `= 2^b`, plus one; 0 until computed. One
+/// byte, so a polynomial is no larger for it; relaxed atomics, since every thread that
+/// computes it writes the same value.
+#[derive(Default)]
+struct BoundCache(AtomicU8);
+
+impl Clone for BoundCache {
+    fn clone(&self) -> Self {
+        BoundCache(AtomicU8::new(self.0.load(Ordering::Relaxed)))
+    }
 }
 
 impl<C: Coefficient> Poly<C> {
     /// The zero polynomial.
     pub fn zero(vars: &Arc<VarSet>) -> Self {
-        Poly {
-            vars: vars.clone(),
-            content: Rational::zero(),
-            exps: Vec::new(),
-            coeffs: Vec::new(),
-        }
+        Self::assemble(vars, Rational::zero(), Vec::new(), Vec::new())
     }
 
     /// The constant 1.
@@ -76,12 +87,7 @@ impl<C: Coefficient> Poly<C> {
         if content.is_zero() {
             return Self::zero(vars);
         }
-        Poly {
-            vars: vars.clone(),
-            content,
-            exps: vars.layout().one().to_vec(),
-            coeffs: vec![n],
-        }
+        Self::assemble(vars, content, vars.layout().one().to_vec(), vec![n])
     }
 
     /// The variable `v` (for an angle, `e^{iθ}`).
@@ -109,12 +115,7 @@ impl<C: Coefficient> Poly<C> {
         }
         let mut w = vec![0u64; vars.layout().words];
         vars.layout().pack(&exps, &mut w);
-        Ok(Poly {
-            vars: vars.clone(),
-            content,
-            exps: w,
-            coeffs: vec![n],
-        })
+        Ok(Self::assemble(vars, content, w, vec![n]))
     }
 
     /// Builds a polynomial from terms `(coefficient, exponent vector)` in any order; equal
@@ -334,7 +335,21 @@ impl<C: Coefficient> Poly<C> {
     /// exponent checks at once, since the limit is the same for every variable; a check it
     /// does not clear goes variable by variable.
     pub(crate) fn exponent_bound(&self) -> i64 {
-        let layout = self.vars.layout();
+        let cache = &self.exponent_bound.0;
+        let bits = match cache.load(Ordering::Relaxed) {
+            0 => {
+                let bits = Self::exponent_bound_bits(&self.vars, &self.exps);
+                cache.store(bits as u8 + 1, Ordering::Relaxed);
+                bits
+            }
+            known => u32::from(known) - 1,
+        };
+        (1u128 << bits).min(i64::MAX as u128) as i64
+    }
+
+    /// The bit length `b` of [`Poly::exponent_bound`] `= 2^b` for the packed monomials `exps`.
+    fn exponent_bound_bits(vars: &VarSet, exps: &[u64]) -> u32 {
+        let layout = vars.layout();
         let bits = layout.bits;
         let field = if bits == 64 {
             u64::MAX
@@ -343,7 +358,7 @@ impl<C: Coefficient> Poly<C> {
         };
         let bias = layout.one();
         let mut acc = 0u64;
-        for m in self.exps.chunks_exact(self.words()) {
+        for m in exps.chunks_exact(layout.words) {
             for (&word, &b) in m.iter().zip(bias) {
                 // XOR with the bias leaves each field in two's complement (unused fields 0,
                 // and `b` has the sign bit of each used field); complementing the negative
@@ -358,8 +373,7 @@ impl<C: Coefficient> Poly<C> {
             r |= (acc >> s) & field;
         }
         // Every |e| ≤ r + 1 ≤ 2^(bit length of r).
-        let bound = 1u128 << (64 - r.leading_zeros());
-        bound.min(i64::MAX as u128) as i64
+        64 - r.leading_zeros()
     }
 
     /// Checks that the exponents of a product of `self` and `other` stay within the limit:
@@ -434,12 +448,7 @@ impl<C: Coefficient> Poly<C> {
             }
             content *= Rational::from(d);
         }
-        Poly {
-            vars: vars.clone(),
-            content,
-            exps,
-            coeffs,
-        }
+        Self::assemble(vars, content, exps, coeffs)
     }
 
     /// Builds from sorted, distinct, nonzero terms that are already primitive with a positive
@@ -455,22 +464,28 @@ impl<C: Coefficient> Poly<C> {
             return Self::zero(vars);
         }
         debug_assert!(coeffs[0].leading_sign() > 0);
+        Self::assemble(vars, content, exps, coeffs)
+    }
+
+    /// The polynomial with these parts, as they are: the caller keeps the invariant.
+    pub(crate) fn assemble(
+        vars: &Arc<VarSet>,
+        content: Rational,
+        exps: Vec<u64>,
+        coeffs: Vec<C::Int>,
+    ) -> Self {
         Poly {
             vars: vars.clone(),
             content,
             exps,
             coeffs,
+            exponent_bound: BoundCache::default(),
         }
     }
 
     /// Sorted terms with content 1 and no normalization: an intermediate inside a kernel.
     pub(crate) fn raw(vars: &Arc<VarSet>, exps: Vec<u64>, coeffs: Vec<C::Int>) -> Self {
-        Poly {
-            vars: vars.clone(),
-            content: Rational::one(),
-            exps,
-            coeffs,
-        }
+        Self::assemble(vars, Rational::one(), exps, coeffs)
     }
 
     /// Builds from distinct nonzero terms in any order (a bijective relabelling of monomials,

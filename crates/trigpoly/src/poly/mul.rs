@@ -88,12 +88,7 @@ impl<C: Coefficient> Poly<C> {
             let c = &small.coeffs[0];
             let (exps, coeffs) = big.shifted(&small.exps, c);
             return Ok(if c.is_one() {
-                Poly {
-                    vars: self.vars.clone(),
-                    content,
-                    exps,
-                    coeffs,
-                }
+                Self::assemble(&self.vars, content, exps, coeffs)
             } else {
                 Self::product(&self.vars, content, exps, coeffs)
             });

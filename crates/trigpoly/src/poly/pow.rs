@@ -242,12 +242,7 @@ impl<C: Coefficient> Poly<C> {
         let mut w = vec![0u64; self.words()];
         layout.pack(&exps, &mut w);
         let (content, n) = ce.split();
-        Poly {
-            vars: self.vars.clone(),
-            content,
-            exps: w,
-            coeffs: vec![n],
-        }
+        Self::assemble(&self.vars, content, w, vec![n])
     }
 }
 
