@@ -189,6 +189,19 @@ impl IntegerRing for GaussianInteger {
     // (a + bi)(c + di) = (ac − bd) + (ad + bc)i
     #[inline]
     fn mul(&self, o: &Self) -> Self {
+        if let (Integer::Small(a), Integer::Small(b), Integer::Small(c), Integer::Small(d)) =
+            (&self.re, &self.im, &o.re, &o.im)
+        {
+            // Products and sums that stay in a word are words (the canonical tier) at once.
+            let re = a.checked_mul(*c).zip(b.checked_mul(*d));
+            let im = a.checked_mul(*d).zip(b.checked_mul(*c));
+            if let (Some(re), Some(im)) = (
+                re.and_then(|(ac, bd)| ac.checked_sub(bd)),
+                im.and_then(|(ad, bc)| ad.checked_add(bc)),
+            ) {
+                return GaussianInteger::new(Integer::Small(re), Integer::Small(im));
+            }
+        }
         if let (Some((a, b)), Some((c, d))) = (self.to_small(), o.to_small()) {
             // Word-sized parts: each product fits an i128, and so does each sum except at
             // the edge, (−2⁶³)² + (−2⁶³)² = 2¹²⁷, which goes the general way below.
@@ -213,6 +226,12 @@ impl IntegerRing for GaussianInteger {
     }
     #[inline]
     fn scale(&self, k: &Integer) -> Self {
+        // Products that stay in a word are words (the canonical tier) at once.
+        if let (Integer::Small(a), Integer::Small(b), Integer::Small(k)) = (&self.re, &self.im, k) {
+            if let (Some(x), Some(y)) = (a.checked_mul(*k), b.checked_mul(*k)) {
+                return GaussianInteger::new(Integer::Small(x), Integer::Small(y));
+            }
+        }
         if let (Some((a, b)), Some(k)) = (self.to_small(), k.to_i64()) {
             let k = k as i128;
             return GaussianInteger::new(
