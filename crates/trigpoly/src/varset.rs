@@ -177,6 +177,23 @@ impl Layout {
         &self.bias
     }
 
+    /// The word-wise amount that multiplies a packed monomial by `m` when added with wrapping,
+    /// `m − 1` (the bias): see [`Layout::push_translated`].
+    pub fn translation(&self, m: &[u64]) -> Vec<u64> {
+        m.iter()
+            .zip(&self.bias)
+            .map(|(m, one)| m.wrapping_sub(*one))
+            .collect()
+    }
+
+    /// Appends `a · m` given `by = translation(m)` (one add per word, exact because the caller
+    /// guarantees every field stays in range): a product's monomials are appended without
+    /// zeroing their vector first.
+    #[inline]
+    pub fn push_translated(out: &mut Vec<u64>, a: &[u64], by: &[u64]) {
+        out.extend(a.iter().zip(by).map(|(a, b)| a.wrapping_add(*b)));
+    }
+
     /// `out = a · b` (exponents add); the caller guarantees every field stays in range.
     #[inline]
     pub fn mul_into(&self, a: &[u64], b: &[u64], out: &mut [u64]) {

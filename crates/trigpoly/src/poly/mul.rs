@@ -185,11 +185,10 @@ impl<C: Coefficient> Poly<C> {
     /// a translation of every exponent, which keeps the order (and the coefficients, when `c`
     /// is 1).
     pub(crate) fn shifted(&self, m: &[u64], c: &C::Int) -> (Vec<u64>, Vec<C::Int>) {
-        let w = self.words();
-        let layout = self.layout();
-        let mut exps = vec![0u64; self.exps.len()];
-        for (out, a) in exps.chunks_exact_mut(w).zip(self.exps.chunks_exact(w)) {
-            layout.mul_into(a, m, out);
+        let by = self.layout().translation(m);
+        let mut exps = Vec::with_capacity(self.exps.len());
+        for a in self.exps.chunks_exact(self.words()) {
+            Layout::push_translated(&mut exps, a, &by);
         }
         let coeffs = if c.is_one() {
             self.coeffs.clone()

@@ -12,7 +12,7 @@ use super::mul::{merge_tree, Key, SMALL_SIDE};
 use super::Poly;
 use crate::error::AlgebraError;
 use crate::number::{Coefficient, Integer, IntegerRing, Rational};
-use crate::varset::{Var, VarKind};
+use crate::varset::{Layout, Var, VarKind};
 
 /// The most pairs of variables the short Jacobian kernel takes (every pair of a phase space
 /// whose monomials fit [`gather::WORDS`] words, with room to spare).
@@ -265,12 +265,14 @@ impl<C: Coefficient> Poly<C> {
         if negate {
             q = -q;
         }
-        // The monomials of the stream of term `t` of `g`.
+        // The monomials of the stream of term `t` of `g`: each row's monomial times `g`'s,
+        // lowered in `v`, as one translation.
         let monomials = |t: usize| {
-            let mut exps = vec![0u64; d.rows.len() * w];
-            for (out, &k) in exps.chunks_exact_mut(w).zip(&d.rows) {
-                layout.mul_into(self.exp(k), g.exp(t), out);
-                out[d.word] = out[d.word].wrapping_sub(d.lower);
+            let mut by = layout.translation(g.exp(t));
+            by[d.word] = by[d.word].wrapping_sub(d.lower);
+            let mut exps = Vec::with_capacity(d.rows.len() * w);
+            for &k in &d.rows {
+                Layout::push_translated(&mut exps, self.exp(k), &by);
             }
             exps
         };
