@@ -101,10 +101,11 @@ impl Claim {
 
     /// The residual `lhs − rhs` after the condition, in normal form.
     pub fn residual(&self) -> Result<Expr, EngineError> {
-        let d = self.lhs.checked_sub(&self.rhs)?;
-        match &self.condition {
-            Some(c) => c.apply(&d),
-            None => Ok(d),
+        match (&self.condition, self.rhs.is_zero()) {
+            // `lhs − 0` is `lhs`: the condition applies to it without a copy.
+            (Some(c), true) => c.apply(&self.lhs),
+            (Some(c), false) => c.apply(&self.lhs.checked_sub(&self.rhs)?),
+            (None, _) => Ok(self.lhs.checked_sub(&self.rhs)?),
         }
     }
 

@@ -168,9 +168,9 @@ impl System {
             .checked_mul(&Expr::exp_i(self.vars(), theta, -n)?)?;
         let kbar = k.conj();
         let half = trigpoly::Rational::new(1, 2);
-        let p = k.checked_add(&kbar)?.scale_rational(&half);
+        let p = k.checked_add(&kbar)? * &half;
         // (K − K̄)/(2i) = −i(K − K̄)/2
-        let q = k.checked_sub(&kbar)?.mul_i()?.scale_rational(&-half);
+        let q = k.checked_sub(&kbar)?.mul_i()? * &-half;
         Ok(Resonant { k, kbar, p, q })
     }
 

@@ -141,6 +141,18 @@ pub(crate) fn merge<C: Coefficient>(
     (exps, coeffs)
 }
 
+/// `q · f` for a rational `q`, taking `f` (no copy of its terms, only a new content).
+impl<C: Coefficient> Mul<&Rational> for Poly<C> {
+    type Output = Poly<C>;
+    fn mul(mut self, q: &Rational) -> Poly<C> {
+        if q.is_zero() || self.is_zero() {
+            return Poly::zero(&self.vars);
+        }
+        self.content = &self.content * q;
+        self
+    }
+}
+
 impl<C: Coefficient> Neg for &Poly<C> {
     type Output = Poly<C>;
     fn neg(self) -> Poly<C> {

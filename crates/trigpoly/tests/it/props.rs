@@ -455,6 +455,16 @@ proptest! {
         prop_assert_eq!(ExactDivisor::new(&d).divide(&(&q * &d)), q);
     }
 
+    /// A rational multiple taken by value (a new content on the same terms) is the multiple
+    /// by the constant polynomial `q`, zero included.
+    #[test]
+    fn rational_multiple_is_the_product_by_the_constant(f in gpoly(8), q in rational(), zero in any::<bool>()) {
+        let q = if zero { Rational::zero() } else { q };
+        let constant = G::constant(&phase_space(), GaussianRational::from(q.clone()));
+        prop_assert_eq!(f.scale_rational(&q), &f * &constant);
+        prop_assert_eq!(f.clone() * &q, &f * &constant);
+    }
+
     #[test]
     fn ring_mul_associative_dense(f in dense_poly(), g in dense_poly(), h in dense_poly()) {
         prop_assert_eq!((&f * &g) * &h, &f * (&g * &h));
