@@ -176,13 +176,23 @@ impl System {
 
     /// The resonance `p_θ = mIω/n` as a condition.
     pub fn resonance(&self, m: i64, n: i64) -> Result<crate::claim::Condition, EngineError> {
-        let value = self.parse(&format!("{m}*I*omega/{n}"))?;
+        if n == 0 {
+            return Err(EngineError::Invalid("a resonance m : n needs n ≠ 0".into()));
+        }
+        let var = |name: &str| {
+            self.vars().lookup(name).ok_or_else(|| {
+                EngineError::Invalid(format!("a resonance needs the variable {name}"))
+            })
+        };
+        // Built as the term it is (a tower checks one resonance per pair; parsing its text
+        // cost a few percent of W1).
+        let value = Expr::monomial(
+            self.vars(),
+            trigpoly::GaussianRational::from(trigpoly::Rational::new(m, n)),
+            &[(var("I")?, 1), (var("omega")?, 1)],
+        )?;
         let text = format!("p_θ = {}", resonance_text(m, n));
-        Ok(crate::claim::Condition::new(
-            &text,
-            self.var("p_theta"),
-            value,
-        ))
+        Ok(crate::claim::Condition::new(&text, var("p_theta")?, value))
     }
 }
 
@@ -241,4 +251,31 @@ pub fn planar_ii_rotor() -> System {
             ),
         ],
     )
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The resonance is the substitution `p_θ ↦ mIω/n`, built as a term; without `n`, or in a
+    /// system without `I`, it is an error, not a panic.
+    #[test]
+    fn resonance_substitutes_m_i_omega_over_n() {
+        let rotor = harmonic_rotor();
+        let at = rotor.resonance(3, 2).unwrap();
+        let p = |s: &str| rotor.parse(s).unwrap();
+        assert_eq!(
+            at.apply(&p("p_theta^2 + x")).unwrap(),
+            p("9*I^2*omega^2/4 + x")
+        );
+        assert_eq!(at.text, "p_θ = 3Iω/2");
+        assert!(matches!(
+            rotor.resonance(1, 0),
+            Err(EngineError::Invalid(_))
+        ));
+        assert!(matches!(
+            harmonic_rod().resonance(1, 1),
+            Err(EngineError::Invalid(_))
+        ));
+    }
 }

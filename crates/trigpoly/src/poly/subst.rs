@@ -221,8 +221,16 @@ impl<C: Coefficient> Poly<C> {
                 (delta, ne.scale(&scale))
             })
             .collect();
-        // One pass over the terms, each to its group (groups stay sorted).
-        let mut parts: Vec<(Vec<u64>, Vec<C::Int>)> = vec![(Vec::new(), Vec::new()); groups.len()];
+        // One pass over the terms, each to its group (groups stay sorted), into vectors sized
+        // by a count first (growing them by doubling copied every group about twice).
+        let mut sizes = vec![0usize; groups.len()];
+        for &e in &term_exps {
+            sizes[group_of[(e - lowest) as usize]] += 1;
+        }
+        let mut parts: Vec<(Vec<u64>, Vec<C::Int>)> = sizes
+            .iter()
+            .map(|&n| (Vec::with_capacity(n * w), Vec::with_capacity(n)))
+            .collect();
         for (k, &e) in term_exps.iter().enumerate() {
             let m = self.exp(k);
             let g = group_of[(e - lowest) as usize];
