@@ -59,8 +59,8 @@ pub struct Poly<C: Coefficient> {
 }
 
 /// The bit length `b` of [`Poly::exponent_bound`] `= 2^b`, plus one; 0 until computed. One
-/// byte, so a polynomial is no larger for it; relaxed atomics, since every thread that
-/// computes it writes the same value.
+/// byte of state (a word of the struct with its padding); relaxed atomics, since every thread
+/// that computes it writes the same value.
 #[derive(Default)]
 struct BoundCache(AtomicU8);
 
