@@ -11,6 +11,11 @@ macro_rules! binary_gcd_for {
                 return a;
             }
             let shift = (a | b).trailing_zeros();
+            // A power of two (a content of 1 or 2 met again and again while a polynomial is
+            // normalised) shares only its twos.
+            if a.is_power_of_two() || b.is_power_of_two() {
+                return 1 << shift;
+            }
             a >>= a.trailing_zeros();
             loop {
                 b >>= b.trailing_zeros();
