@@ -7,7 +7,7 @@ use std::sync::Arc;
 use super::Poly;
 use crate::error::AlgebraError;
 use crate::number::{Coefficient, GaussianRational, IntegerRing, Rational};
-use crate::varset::{Var, VarKind, VarSet};
+use crate::varset::{Layout, Var, VarKind, VarSet};
 
 /// Packed exponents and coefficients of a group of terms.
 type Terms<C> = (Vec<u64>, Vec<<C as Coefficient>::Int>);
@@ -236,7 +236,7 @@ impl<C: Coefficient> Poly<C> {
             let g = group_of[(e - lowest) as usize];
             let (delta, factor) = &groups[g];
             let (exps, coeffs) = &mut parts[g];
-            exps.extend(m.iter().zip(delta).map(|(a, b)| a.wrapping_add(*b)));
+            Layout::push_translated(exps, m, delta);
             coeffs.push(self.coeffs[k].mul(factor));
         }
         let parts = parts

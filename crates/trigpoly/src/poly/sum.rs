@@ -211,8 +211,10 @@ impl<C: Coefficient> Poly<C> {
         let bias = Monomial::load(layout.one());
         let mut out = Gather::with_capacity(f.len() * g.len());
         for (mf, cf) in f.exps.chunks_exact(w).zip(&f.coeffs) {
+            let kf = Monomial::load(mf);
             for (mg, cg) in g.exps.chunks_exact(w).zip(&g.coeffs) {
                 let mut product = None;
+                let mfg = kf.mul(&Monomial::load(mg), &bias);
                 for shape in shapes {
                     let factor = layout.read(mf, shape.q) * layout.read(mg, shape.p)
                         - layout.read(mf, shape.p) * layout.read(mg, shape.q);
@@ -227,7 +229,7 @@ impl<C: Coefficient> Poly<C> {
                             None => return Ok(None),
                         }
                     }
-                    let mut m = Monomial::load(mf).mul(&Monomial::load(mg), &bias);
+                    let mut m = mfg;
                     for (word, lower) in m.iter_mut().zip(shape.lower) {
                         *word = word.wrapping_sub(lower);
                     }
