@@ -18,7 +18,8 @@ use super::scope::mention;
 use super::text::{Source, Text};
 use super::{Family, LimitsOverride, LoadedSystem, DEFAULT_MAX_DEGREE, DEFAULT_MAX_TERMS};
 
-/// The largest exponent the packed monomials hold (16 bits a field).
+/// The largest degree limit a file or the command line may set (what a 16-bit exponent field
+/// holds; the packing widens its fields as the limit asks).
 const MAX_DEGREE_CEILING: u32 = 32_767;
 
 /// Reads and loads a system file. Every problem is a [`FileError`] naming the file, line and

@@ -72,10 +72,14 @@ impl Default for Limits {
     fn default() -> Self {
         Limits {
             max_terms: 20_000_000,
-            max_degree: 10_000,
+            max_degree: 1000,
         }
     }
 }
+
+/// The widths an exponent field may have: `64 / bits` fields fill a word (the bits left over,
+/// at the bottom of each word, stay zero).
+pub const FIELD_BITS: [u32; 6] = [8, 10, 12, 16, 21, 32];
 
 /// How exponent vectors are packed: `bits` per variable, fields never straddle words, variable
 /// 0 in the top bits of word 0, each field storing `e + 2^(bits−1)`. Comparing the words as
@@ -93,7 +97,7 @@ pub(crate) struct Layout {
 impl Layout {
     fn new(nvars: usize, bits: u32) -> Layout {
         let per_word = (64 / bits) as usize;
-        let words = nvars.div_ceil(per_word).max(1);
+        let words = Layout::words_for(nvars, bits);
         let mut bias = vec![0u64; words];
         for j in 0..nvars {
             let (w, shift) = Layout::place(per_word, bits, j);
@@ -106,6 +110,22 @@ impl Layout {
             bias,
             max_exp: (1i64 << (bits - 1)) - 1,
         }
+    }
+
+    /// The words a monomial in `nvars` variables takes with fields of `bits`.
+    fn words_for(nvars: usize, bits: u32) -> usize {
+        nvars.div_ceil((64 / bits) as usize).max(1)
+    }
+
+    /// The field width for `nvars` variables whose exponents stay within `max_degree`: of the
+    /// widths that hold `max_degree`, the one that packs a monomial into the fewest words (the
+    /// widest of those, for room to spare); the widest of all when none holds it.
+    fn automatic_bits(nvars: usize, max_degree: u32) -> u32 {
+        FIELD_BITS
+            .into_iter()
+            .filter(|&bits| (1u64 << (bits - 1)) > u64::from(max_degree))
+            .min_by_key(|&bits| (Layout::words_for(nvars, bits), std::cmp::Reverse(bits)))
+            .unwrap_or(FIELD_BITS[FIELD_BITS.len() - 1])
     }
 
     #[inline]
@@ -224,6 +244,8 @@ pub struct VarSet {
     vars: Vec<Variable>,
     layout: Layout,
     limits: Limits,
+    /// The field width the declaration asked for, if it did (else the limits chose it).
+    requested_bits: Option<u32>,
 }
 
 impl VarSet {
@@ -275,34 +297,36 @@ impl VarSet {
         &self.layout
     }
 
-    /// The same variables with other limits.
+    /// The same variables with other limits (and the packing those limits call for, unless
+    /// the declaration asked for a field width).
     pub fn with_limits(&self, limits: Limits) -> Result<Arc<VarSet>, AlgebraError> {
         VarSetBuilder {
             vars: self.vars.clone(),
             limits,
-            bits: self.layout.bits,
+            bits: self.requested_bits,
         }
         .build()
+    }
+
+    /// The bits of each exponent field in the packed monomials.
+    pub fn exponent_bits(&self) -> u32 {
+        self.layout.bits
+    }
+
+    /// The machine words a packed monomial takes.
+    pub fn monomial_words(&self) -> usize {
+        self.layout.words
     }
 }
 
 /// Declares the variables of a `VarSet`, in order.
-#[derive(Clone, Debug)]
+#[derive(Clone, Debug, Default)]
 pub struct VarSetBuilder {
     vars: Vec<Variable>,
     limits: Limits,
-    bits: u32,
+    bits: Option<u32>,
 }
 
-impl Default for VarSetBuilder {
-    fn default() -> Self {
-        VarSetBuilder {
-            vars: Vec::new(),
-            limits: Limits::default(),
-            bits: 16,
-        }
-    }
-}
 
 impl VarSetBuilder {
     /// Declares a variable of the given kind.
@@ -337,19 +361,21 @@ impl VarSetBuilder {
         self.limits = limits;
         self
     }
-    /// Bits per exponent in the packed words: 8, 16 (the default) or 32. Wider fields allow
-    /// larger exponents, narrower ones pack more variables per word.
+    /// Bits per exponent in the packed words, one of [`FIELD_BITS`]: wider fields allow
+    /// larger exponents (the degree limit is lowered to what the field holds), narrower ones
+    /// pack more variables per word. Without this the width follows the degree limit: the
+    /// fewest words whose fields hold it (`max_degree` 1000, the default, takes 12 bits: five
+    /// variables to a word).
     pub fn exponent_bits(mut self, bits: u32) -> Self {
-        self.bits = bits;
+        self.bits = Some(bits);
         self
     }
 
     /// Checks names and builds the set.
     pub fn build(self) -> Result<Arc<VarSet>, AlgebraError> {
-        if ![8, 16, 32].contains(&self.bits) {
+        if let Some(bits) = self.bits.filter(|b| !FIELD_BITS.contains(b)) {
             return Err(AlgebraError::Invalid(format!(
-                "exponent bits must be 8, 16 or 32, not {}",
-                self.bits
+                "exponent bits must be one of {FIELD_BITS:?}, not {bits}"
             )));
         }
         for (k, v) in self.vars.iter().enumerate() {
@@ -371,7 +397,10 @@ impl VarSetBuilder {
         if self.vars.len() > u16::MAX as usize {
             return Err(AlgebraError::Invalid("too many variables".into()));
         }
-        let layout = Layout::new(self.vars.len(), self.bits);
+        let bits = self
+            .bits
+            .unwrap_or_else(|| Layout::automatic_bits(self.vars.len(), self.limits.max_degree));
+        let layout = Layout::new(self.vars.len(), bits);
         let max_degree = self.limits.max_degree.min(layout.max_exp as u32);
         let limits = Limits {
             max_degree,
@@ -381,6 +410,7 @@ impl VarSetBuilder {
             vars: self.vars,
             layout,
             limits,
+            requested_bits: self.bits,
         }))
     }
 }

@@ -369,7 +369,8 @@ impl<C: Coefficient> Poly<C> {
             }
         }
         let mut r = 0u64;
-        for s in (0..64).step_by(bits as usize) {
+        // The fields sit above the bits a word leaves over (64 mod bits of them).
+        for s in (64 % bits..64).step_by(bits as usize) {
             r |= (acc >> s) & field;
         }
         // Every |e| ≤ r + 1 ≤ 2^(bit length of r).

@@ -3,7 +3,7 @@
 
 use trigpoly::{AlgebraError, Limits, Poly, Rational, VarSet};
 
-use crate::common::{p, phase_space, var, G, Q};
+use crate::common::{coordinates, p, phase_space, var, G, Q};
 
 fn small_vars() -> std::sync::Arc<VarSet> {
     VarSet::builder()
@@ -14,9 +14,10 @@ fn small_vars() -> std::sync::Arc<VarSet> {
         .coordinate("u")
         .coordinate("v")
         .coordinate("w")
+        // Exponents up to 39² below: a degree limit above the default.
         .limits(Limits {
             max_terms: 1000,
-            ..Limits::default()
+            max_degree: 10_000,
         })
         .build()
         .unwrap()
@@ -112,29 +113,29 @@ fn exponent_overflow_in_products_and_powers_is_an_error() {
     let too_large = |exponent: i64| AlgebraError::ExponentTooLarge {
         var: "x".into(),
         exponent,
-        limit: 10_000,
+        limit: 1000,
     };
-    let big: G = p(&vars, "x^10000");
+    let big: G = p(&vars, "x^1000");
     let xv: G = p(&vars, "x");
-    assert_eq!(big.checked_mul(&xv), Err(too_large(10_001)));
-    assert_eq!(big.checked_mul(&big), Err(too_large(20_000)));
-    let half: G = p(&vars, "x^5000 + 1");
-    assert_eq!(half.checked_pow(3), Err(too_large(15_000)));
-    assert_eq!(half.checked_pow(2).map(|f| f.degree(x)), Ok(Some(10_000)));
+    assert_eq!(big.checked_mul(&xv), Err(too_large(1001)));
+    assert_eq!(big.checked_mul(&big), Err(too_large(2000)));
+    let half: G = p(&vars, "x^500 + 1");
+    assert_eq!(half.checked_pow(3), Err(too_large(1500)));
+    assert_eq!(half.checked_pow(2).map(|f| f.degree(x)), Ok(Some(1000)));
     assert_eq!(xv.checked_pow(i64::MAX), Err(too_large(i64::MAX)));
     assert_eq!(xv.checked_pow(i64::MIN), Err(too_large(i64::MIN)));
-    let low: G = p(&vars, "x^-10000");
-    assert_eq!(low.derivative(x), Err(too_large(-10_001)));
+    let low: G = p(&vars, "x^-1000");
+    assert_eq!(low.derivative(x), Err(too_large(-1001)));
     assert_eq!(
-        Poly::<Rational>::monomial(&vars, Rational::one(), &[(x, 10_001)]),
-        Err(too_large(10_001))
+        Poly::<Rational>::monomial(&vars, Rational::one(), &[(x, 1001)]),
+        Err(too_large(1001))
     );
     assert_eq!(
-        G::exp_i(&vars, var(&vars, "theta"), -10_001).map(|f| f.len()),
+        G::exp_i(&vars, var(&vars, "theta"), -1001).map(|f| f.len()),
         Err(AlgebraError::ExponentTooLarge {
             var: "θ".into(),
-            exponent: -10_001,
-            limit: 10_000
+            exponent: -1001,
+            limit: 1000
         })
     );
 }
@@ -171,6 +172,103 @@ fn exponent_overflow_with_narrow_exponent_fields() {
     let top: G = p(&vars, "x^127 + x^-127");
     assert_eq!(top.exponent_range(x), Some((-127, 127)));
     assert_eq!(&top * &G::one(&vars), top);
+}
+
+/// Without a requested width the packing follows the degree limit: the fewest words whose
+/// fields hold it, and a new limit packs anew (a requested width stays).
+#[test]
+fn exponent_fields_follow_the_degree_limit() {
+    let five = coordinates(&["x", "y", "z", "t", "u"]);
+    assert_eq!((five.exponent_bits(), five.monomial_words()), (12, 1));
+    let phase = phase_space();
+    assert_eq!((phase.len(), phase.monomial_words()), (8, 2));
+    let wide = five
+        .with_limits(Limits {
+            max_degree: 10_000,
+            ..five.limits()
+        })
+        .unwrap();
+    assert_eq!((wide.exponent_bits(), wide.monomial_words()), (21, 2));
+    assert_eq!(wide.limits().max_degree, 10_000);
+    let tight = five
+        .with_limits(Limits {
+            max_degree: 100,
+            ..five.limits()
+        })
+        .unwrap();
+    assert_eq!((tight.exponent_bits(), tight.monomial_words()), (12, 1));
+    let asked = VarSet::builder()
+        .coordinate("x")
+        .exponent_bits(16)
+        .build()
+        .unwrap();
+    let again = asked
+        .with_limits(Limits {
+            max_degree: 100_000,
+            ..asked.limits()
+        })
+        .unwrap();
+    assert_eq!(
+        (again.exponent_bits(), again.limits().max_degree),
+        (16, 32_767)
+    );
+    assert_eq!(
+        VarSet::builder()
+            .coordinate("x")
+            .exponent_bits(13)
+            .build()
+            .map(|v| v.len()),
+        Err(AlgebraError::Invalid(
+            "exponent bits must be one of [8, 10, 12, 16, 21, 32], not 13".into()
+        ))
+    );
+}
+
+/// Twelve-bit fields leave four bits over at the bottom of each word: the last variable's
+/// field sits above them, and its exponents are as exact and as checked as the first's.
+#[test]
+fn twelve_bit_fields_are_exact_up_to_the_limit() {
+    let vars = coordinates(&["x", "y", "z", "t", "u"]);
+    assert_eq!(vars.exponent_bits(), 12);
+    for name in ["x", "u"] {
+        let v = var(&vars, name);
+        let top: Q = p(&vars, &format!("{name}^1000 + {name}^-1000 + x*u"));
+        assert_eq!(top.exponent_range(v), Some((-1000, 1000)));
+        assert_eq!(&top * &Q::one(&vars), top);
+        let one: Q = p(&vars, name);
+        assert_eq!(
+            top.checked_mul(&one).map(|f| f.len()),
+            Err(AlgebraError::ExponentTooLarge {
+                var: name.into(),
+                exponent: 1001,
+                limit: 1000
+            })
+        );
+        let inverse: Q = p(&vars, &format!("{name}^-1"));
+        assert_eq!(
+            top.checked_mul(&inverse).map(|f| f.len()),
+            Err(AlgebraError::ExponentTooLarge {
+                var: name.into(),
+                exponent: -1001,
+                limit: 1000
+            })
+        );
+        // 512 is one bit of the field: its product with itself passes the limit.
+        let power: Q = p(&vars, &format!("{name}^512"));
+        assert_eq!(
+            power.checked_mul(&power).map(|f| f.len()),
+            Err(AlgebraError::ExponentTooLarge {
+                var: name.into(),
+                exponent: 1024,
+                limit: 1000
+            })
+        );
+        let square: Q = p(&vars, &format!("{name}^500 - {name}^-500"));
+        assert_eq!(
+            square.checked_mul(&square),
+            Ok(p(&vars, &format!("{name}^1000 - 2 + {name}^-1000")))
+        );
+    }
 }
 
 /// Exponents and angle multiples written in the source that overflow `i64` while being

@@ -83,9 +83,9 @@ fn cases() -> Vec<Case> {
         case(
             Q,
             "x^100000",
-            "the exponent 100000 is past the limit of 10000",
+            "the exponent 100000 is past the limit of 1000",
             (1, 3),
-            "line 1, column 3: the exponent 100000 is past the limit of 10000\n  x^100000\n    ^^^^^^",
+            "line 1, column 3: the exponent 100000 is past the limit of 1000\n  x^100000\n    ^^^^^^",
         ),
         case(
             Qi,
@@ -204,11 +204,11 @@ fn cases() -> Vec<Case> {
         ),
         case(
             Qi,
-            "(x^5000)^3",
-            "the exponent of x would reach 15000, past the limit of 10000",
+            "(x^500)^3",
+            "the exponent of x would reach 1500, past the limit of 1000",
             (1, 1),
-            "line 1, column 1: the exponent of x would reach 15000, past the limit of 10000\n  \
-             (x^5000)^3\n  ^^^^^^^^^^",
+            "line 1, column 1: the exponent of x would reach 1500, past the limit of 1000\n  \
+             (x^500)^3\n  ^^^^^^^^^",
         ),
     ]
 }
