@@ -327,7 +327,6 @@ pub struct VarSetBuilder {
     bits: Option<u32>,
 }
 
-
 impl VarSetBuilder {
     /// Declares a variable of the given kind.
     pub fn variable(mut self, name: &str, kind: VarKind) -> Self {
