@@ -66,6 +66,54 @@ fn exponent() -> impl Strategy<Value = i64> {
     prop_oneof![3 => Just(0i64), 2 => -3i64..=4]
 }
 
+/// An exponent that is sometimes far out: products of two pass a limit of 511 now and then.
+fn wide_exponent() -> impl Strategy<Value = i64> {
+    prop_oneof![3 => Just(0i64), 2 => -3i64..=4, 1 => -300i64..=300]
+}
+
+/// Products, a sum, a square, a derivative and a substitution of `f` and `g` in variables
+/// `x, y, z, t, u, v` packed with fields of `bits`, under the degree limit `limit`: each
+/// printed, or its error.
+fn same_computation_in(
+    bits: u32,
+    limit: u32,
+    f: &[(Rational, Vec<i64>)],
+    g: &[(Rational, Vec<i64>)],
+) -> Vec<String> {
+    let vars = ["x", "y", "z", "t", "u", "v"]
+        .iter()
+        .fold(trigpoly::VarSet::builder(), |b, name| b.coordinate(name))
+        .limits(trigpoly::Limits {
+            max_degree: limit,
+            ..Default::default()
+        })
+        .exponent_bits(bits)
+        .build()
+        .expect("valid names");
+    let (f, g) = match (
+        Q::from_terms(&vars, f.to_vec()),
+        Q::from_terms(&vars, g.to_vec()),
+    ) {
+        (Ok(f), Ok(g)) => (f, g),
+        (f, g) => return vec![format!("{:?} {:?}", f.err(), g.err())],
+    };
+    let (x, v) = (var(&vars, "x"), var(&vars, "v"));
+    let yz = Q::parse(&vars, "y*z^-1").expect("a term");
+    [
+        f.checked_mul(&g),
+        f.checked_add(&g),
+        f.checked_pow(2),
+        f.derivative(v).and_then(|d| g.checked_mul(&d)),
+        f.subst(x, &yz),
+    ]
+    .iter()
+    .map(|r| match r {
+        Ok(h) => h.to_string(),
+        Err(e) => format!("error: {e}"),
+    })
+    .collect()
+}
+
 /// Exponents of all 8 variables; angles get 0 when `angles` is false.
 fn exponents(angles: bool) -> impl Strategy<Value = Vec<i64>> {
     let vars = phase_space();
@@ -593,6 +641,34 @@ proptest! {
         let mq = Q::from_terms(&vars, [(q, eq)]).expect("small exponents");
         let tq = Q::from_terms(&vars, [(r, er)]).expect("small exponents");
         prop_assert_eq!(&(&a * &mq) + &(&a * &tq), &a * &(&mq + &tq));
+    }
+
+    /// Every field width computes the same: under one degree limit, products (short, dense
+    /// and heap), sums, squares, derivatives and substitutions print the same in each width,
+    /// or fail with the same error when an exponent passes the limit. The widths from 10 bits
+    /// up share the limit 511 (the 10-bit field's), so exponents reach their fields' top bits;
+    /// all six, 8 bits included, share 127 on the same terms with exponents quartered.
+    #[test]
+    fn every_field_width_computes_the_same(
+        f in proptest::collection::vec((rational(), proptest::collection::vec(wide_exponent(), 6)), 0..30),
+        g in proptest::collection::vec((rational(), proptest::collection::vec(wide_exponent(), 6)), 0..12),
+    ) {
+        let quarter = |terms: &[(Rational, Vec<i64>)]| -> Vec<(Rational, Vec<i64>)> {
+            terms.iter().map(|(c, e)| (c.clone(), e.iter().map(|x| x / 4).collect())).collect()
+        };
+        let groups = [
+            (&trigpoly::FIELD_BITS[1..], 511, f.clone(), g.clone()),
+            (&trigpoly::FIELD_BITS[..], 127, quarter(&f), quarter(&g)),
+        ];
+        for (widths, limit, f, g) in groups {
+            let results: Vec<Vec<String>> = widths
+                .iter()
+                .map(|&bits| same_computation_in(bits, limit, &f, &g))
+                .collect();
+            for (bits, r) in widths.iter().zip(&results).skip(1) {
+                prop_assert_eq!(r, &results[0], "{} bits against {}", bits, widths[0]);
+            }
+        }
     }
 
     /// eval(f·g) = eval(f)·eval(g), eval(f + g) = eval(f) + eval(g), at rational points with
