@@ -239,7 +239,7 @@ impl Layout {
 /// assert_eq!(vars.variable(omega).kind(), VarKind::Parameter);
 /// assert_eq!(vars.variable(vars.lookup("theta").unwrap()).latex(), r"\theta");
 /// ```
-#[derive(Clone, Debug, PartialEq, Eq)]
+#[derive(Clone, Debug)]
 pub struct VarSet {
     vars: Vec<Variable>,
     layout: Layout,
@@ -247,6 +247,16 @@ pub struct VarSet {
     /// The field width the declaration asked for, if it did (else the limits chose it).
     requested_bits: Option<u32>,
 }
+
+/// Two sets are the same ring when they have the same variables, packing and limits, whether
+/// the width was asked for or chosen.
+impl PartialEq for VarSet {
+    fn eq(&self, other: &Self) -> bool {
+        (&self.vars, &self.layout, self.limits) == (&other.vars, &other.layout, other.limits)
+    }
+}
+
+impl Eq for VarSet {}
 
 impl VarSet {
     /// Starts declaring variables.

@@ -198,6 +198,14 @@ fn exponent_fields_follow_the_degree_limit() {
         .build()
         .unwrap();
     assert_eq!(with_degree(&asked, 100_000), (16, 1, 32_767));
+    // Asking for the width the limit would choose declares the same ring.
+    let chosen = coordinates(&["x"]);
+    let named = VarSet::builder()
+        .coordinate("x")
+        .exponent_bits(chosen.exponent_bits())
+        .build()
+        .unwrap();
+    assert_eq!(named, chosen);
     assert_eq!(
         VarSet::builder()
             .coordinate("x")
