@@ -308,12 +308,12 @@ impl<C: Coefficient> Lower<'_, C> {
                 let minus = exp_i(-1)?;
                 let half = Rational::new(1, 2);
                 if f == "cos" {
-                    Ok((&plus + &minus).scale_rational(&half))
+                    Ok((&plus + &minus) * &half)
                 } else {
                     // sin φ = (e^{iφ} − e^{−iφ})/(2i)
                     (&plus - &minus)
                         .mul_i()
-                        .map(|p| p.scale_rational(&Rational::new(-1, 2)))
+                        .map(|p| p * &Rational::new(-1, 2))
                         .map_err(wrap)
                 }
             }

@@ -53,15 +53,9 @@ impl<C: Coefficient> Poly<C> {
         Self::from_sorted(&self.vars, content, self.exps.clone(), coeffs)
     }
 
-    /// `q · self` for a rational `q`.
+    /// `q · self` for a rational `q` (a copy; `f * &q` takes `f` and copies nothing).
     pub fn scale_rational(&self, q: &Rational) -> Self {
-        if q.is_zero() || self.is_zero() {
-            return Self::zero(&self.vars);
-        }
-        Poly {
-            content: &self.content * q,
-            ..self.clone()
-        }
+        self.clone() * q
     }
 
     /// `self / d` where `d` is a nonzero constant or a single term; anything else is an error

@@ -41,14 +41,14 @@ impl<C: Coefficient> Poly<C> {
 
     /// The real part `(f + conj f)/2`.
     pub fn re(&self) -> Self {
-        (self + &self.conj()).scale_rational(&Rational::new(1, 2))
+        (self + &self.conj()) * &Rational::new(1, 2)
     }
 
     /// The imaginary part `(f − conj f)/(2i)`; needs Q(i) unless `f` is real.
     pub fn im(&self) -> Result<Self, AlgebraError> {
         let d = self - &self.conj();
         // 1/(2i) = −i/2
-        Ok(d.mul_i()?.scale_rational(&Rational::new(-1, 2)))
+        Ok(d.mul_i()? * &Rational::new(-1, 2))
     }
 
     /// Whether an angle appears.

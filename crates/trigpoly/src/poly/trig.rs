@@ -30,7 +30,7 @@ impl<C: Coefficient> Poly<C> {
     pub fn sin(vars: &Arc<VarSet>, theta: Var) -> Result<Self, AlgebraError> {
         let d = Self::exp_i(vars, theta, 1)?.checked_sub(&Self::exp_i(vars, theta, -1)?)?;
         // 1/(2i) = −i/2
-        Ok(d.mul_i()?.scale_rational(&Rational::new(-1, 2)))
+        Ok(d.mul_i()? * &Rational::new(-1, 2))
     }
 
     /// The terms in the normal form `c · m · Π cos^a θ sin^b θ` (`b ≤ 1`), grouped and ordered
