@@ -1,6 +1,7 @@
 //! Claims `lhs = rhs`, optionally under a condition on phase space, and their outcome: proved,
 //! or refuted with the nonzero residual `lhs − rhs` in normal form.
 
+use std::borrow::Cow;
 use std::time::Instant;
 
 use trigpoly::{Expr, Var};
@@ -101,11 +102,15 @@ impl Claim {
 
     /// The residual `lhs − rhs` after the condition, in normal form.
     pub fn residual(&self) -> Result<Expr, EngineError> {
-        match (&self.condition, self.rhs.is_zero()) {
-            // `lhs − 0` is `lhs`: the condition applies to it without a copy.
-            (Some(c), true) => c.apply(&self.lhs),
-            (Some(c), false) => c.apply(&self.lhs.checked_sub(&self.rhs)?),
-            (None, _) => Ok(self.lhs.checked_sub(&self.rhs)?),
+        // `lhs − 0` is `lhs`: no copy before the condition.
+        let d = if self.rhs.is_zero() {
+            Cow::Borrowed(&self.lhs)
+        } else {
+            Cow::Owned(self.lhs.checked_sub(&self.rhs)?)
+        };
+        match &self.condition {
+            Some(c) => c.apply(&d),
+            None => Ok(d.into_owned()),
         }
     }
 
