@@ -108,8 +108,19 @@ impl Layout {
             per_word,
             words,
             bias,
-            max_exp: (1i64 << (bits - 1)) - 1,
+            max_exp: Layout::max_exp_for(bits),
         }
+    }
+
+    /// The largest exponent a field of `bits` holds (its values are `e + 2^(bits−1)`).
+    fn max_exp_for(bits: u32) -> i64 {
+        (1i64 << (bits - 1)) - 1
+    }
+
+    /// The ones of one field, at the bottom of a word (every width is below 64 bits).
+    #[inline]
+    pub fn field_mask(&self) -> u64 {
+        (1u64 << self.bits) - 1
     }
 
     /// The words a monomial in `nvars` variables takes with fields of `bits`.
@@ -123,7 +134,7 @@ impl Layout {
     fn automatic_bits(nvars: usize, max_degree: u32) -> u32 {
         FIELD_BITS
             .into_iter()
-            .filter(|&bits| (1u64 << (bits - 1)) > u64::from(max_degree))
+            .filter(|&bits| Layout::max_exp_for(bits) >= i64::from(max_degree))
             .min_by_key(|&bits| (Layout::words_for(nvars, bits), std::cmp::Reverse(bits)))
             .unwrap_or(FIELD_BITS[FIELD_BITS.len() - 1])
     }
@@ -151,22 +162,13 @@ impl Layout {
     /// monomial: what `get` does once the field is known.
     #[inline]
     pub fn read(&self, m: &[u64], (w, shift): (usize, u32)) -> i64 {
-        let mask = if self.bits == 64 {
-            u64::MAX
-        } else {
-            (1u64 << self.bits) - 1
-        };
-        ((m[w] >> shift) & mask) as i64 - (1i64 << (self.bits - 1))
+        ((m[w] >> shift) & self.field_mask()) as i64 - (1i64 << (self.bits - 1))
     }
 
     /// Unpacks the first `out.len()` exponents of a packed monomial.
     #[inline]
     pub fn unpack_into(&self, m: &[u64], out: &mut [i64]) {
-        let mask = if self.bits == 64 {
-            u64::MAX
-        } else {
-            (1u64 << self.bits) - 1
-        };
+        let mask = self.field_mask();
         let bias = 1i64 << (self.bits - 1);
         for (j, o) in out.iter_mut().enumerate() {
             let w = j / self.per_word;

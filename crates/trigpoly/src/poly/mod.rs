@@ -350,12 +350,7 @@ impl<C: Coefficient> Poly<C> {
     /// The bit length `b` of [`Poly::exponent_bound`] `= 2^b` for the packed monomials `exps`.
     fn exponent_bound_bits(vars: &VarSet, exps: &[u64]) -> u32 {
         let layout = vars.layout();
-        let bits = layout.bits;
-        let field = if bits == 64 {
-            u64::MAX
-        } else {
-            (1u64 << bits) - 1
-        };
+        let (bits, field) = (layout.bits, layout.field_mask());
         let bias = layout.one();
         let mut acc = 0u64;
         for m in exps.chunks_exact(layout.words) {
@@ -395,12 +390,7 @@ impl<C: Coefficient> Poly<C> {
             return vec![(0, 0); n];
         }
         // Field by field on the packed words: no unpacking, no division.
-        let (bits, per_word) = (layout.bits, layout.per_word);
-        let mask = if bits == 64 {
-            u64::MAX
-        } else {
-            (1u64 << bits) - 1
-        };
+        let (bits, per_word, mask) = (layout.bits, layout.per_word, layout.field_mask());
         let mut lo = vec![u64::MAX; layout.words * per_word];
         let mut hi = vec![0u64; layout.words * per_word];
         for m in self.exps.chunks_exact(self.words()) {
