@@ -63,7 +63,7 @@ pub(crate) fn try_mul_dense<I: IntegerRing>(
         ca: small_a,
         cb: small_b,
     };
-    let decoder = kron.decoder(layout);
+    let decoder = kron.decoder(layout, work);
     // The index range cut into parts, highest first.
     let threads = rayon::current_num_threads() as u64;
     let count = if work < PARALLEL_WORK || threads < 2 {
@@ -178,6 +178,7 @@ impl<S: Copy + Send + Sync> Factors<S> {
         let words = decoder.words();
         let zero = I::Wide::default();
         let mut touched = vec![0u64; if MARK { (chunk / 64) as usize } else { 0 }];
+        let mut cursor = decoder.cursor();
         // `next[i]`: the first partner of row `i` not yet multiplied (partners are visited in
         // descending index order, as the chunks are).
         let mut next: Vec<usize> = fa
@@ -263,9 +264,7 @@ impl<S: Copy + Send + Sync> Factors<S> {
             let mut emit = |off: usize| {
                 let slot = std::mem::take(&mut acc[off]);
                 if slot != zero {
-                    let at = exps.len();
-                    exps.resize(at + words, 0);
-                    decoder.decode_into(bottom + off as u64, &mut exps[at..]);
+                    decoder.decode_onto(&mut cursor, bottom + off as u64, &mut exps);
                     coeffs.push(I::from_wide(slot));
                 }
             };

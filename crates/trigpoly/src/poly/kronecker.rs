@@ -64,65 +64,210 @@ impl Kronecker {
             .collect()
     }
 
-    /// A decoder from indices of this box to packed monomials.
-    pub(crate) fn decoder(&self, layout: &Layout) -> Decoder {
-        let mut corner = vec![0u64; layout.words];
-        layout.pack(&self.lo, &mut corner);
+    /// A decoder from indices of this box to packed monomials, for a product that reads about
+    /// `reads` indices (the table of low digits is kept no larger than that).
+    pub(crate) fn decoder(&self, layout: &Layout, reads: u64) -> Decoder {
+        let words = layout.words;
         let small = self.size <= 1 << 32;
-        let digits = (0..self.ranges.len())
+        // Least significant first; a variable of extent 1 has no digit.
+        let mut digits = (0..self.ranges.len())
             .rev()
             .filter(|&j| self.ranges[j] > 1)
             .map(|j| {
                 let (word, shift) = layout.field(j);
-                let radix = self.ranges[j];
                 Digit {
-                    radix,
-                    magic: if small { u64::MAX / radix + 1 } else { 0 },
+                    divisor: Divisor::new(self.ranges[j], small),
                     word,
                     shift,
                 }
             })
-            .collect();
-        Decoder { corner, digits }
+            .peekable();
+        // The low digits whose cells fit the table.
+        let cells = (TABLE_BYTES / (8 * words) as u64).min(reads.max(1));
+        let mut span = 1u64;
+        let mut low = Vec::new();
+        while let Some(d) = digits.next_if(|d| span * d.divisor.radix <= cells) {
+            span *= d.divisor.radix;
+            low.push(d);
+        }
+        let mut corner = vec![0u64; words];
+        layout.pack(&self.lo, &mut corner);
+        let mut table = Vec::with_capacity(span as usize * words);
+        for r in 0..span {
+            let at = table.len();
+            table.extend_from_slice(&corner);
+            add_digits(&low, r, &mut table[at..]);
+        }
+        Decoder {
+            words,
+            table,
+            split: Divisor::new(span, small),
+            high: digits.collect(),
+        }
     }
 }
 
-/// One variable's digit of a Kronecker index, least significant first in [`Decoder`].
-struct Digit {
+/// Bytes of the table of low digits in a [`Decoder`]: an L1 cache's worth.
+const TABLE_BYTES: u64 = 1 << 15;
+
+/// Division by a constant: by Lemire's multiplication when every dividend fits 32 bits (and
+/// the divisor is not 1), else by the hardware.
+struct Divisor {
     radix: u64,
-    /// `⌈2⁶⁴ / radix⌉` when every index fits 32 bits (Lemire's exact division by
-    /// multiplication), else 0 (hardware division).
+    /// `⌈2⁶⁴ / radix⌉` when the multiplication applies, else 0.
     magic: u64,
+}
+
+impl Divisor {
+    fn new(radix: u64, small: bool) -> Divisor {
+        Divisor {
+            radix,
+            magic: if small && radix > 1 {
+                u64::MAX / radix + 1
+            } else {
+                0
+            },
+        }
+    }
+
+    /// `(idx / radix, idx % radix)`.
+    #[inline(always)]
+    fn div_rem(&self, idx: u64) -> (u64, u64) {
+        let q = if self.magic != 0 {
+            ((self.magic as u128 * idx as u128) >> 64) as u64
+        } else {
+            idx / self.radix
+        };
+        (q, idx - q * self.radix)
+    }
+}
+
+/// One variable's digit of a Kronecker index, and the field it is packed into.
+struct Digit {
+    divisor: Divisor,
     word: usize,
     shift: u32,
 }
 
-/// Turns Kronecker indices into packed monomials: the packing is linear in the exponents, so a
-/// monomial is the box's packed lower corner plus each digit shifted into its field.
+/// Adds the digits of `idx` (least significant first) into their fields of `out`.
+fn add_digits(digits: &[Digit], mut idx: u64, out: &mut [u64]) {
+    for d in digits {
+        let (q, r) = d.divisor.div_rem(idx);
+        out[d.word] = out[d.word].wrapping_add(r << d.shift);
+        idx = q;
+    }
+}
+
+/// Turns Kronecker indices into packed monomials. The packing is linear in the exponents, so a
+/// monomial is the box's packed lower corner plus each digit shifted into its field. The low
+/// digits are looked up in a table (the corner included), indexed by `idx % span`; the high
+/// ones, `idx / span`, are decoded digit by digit only when they change, which on indices read
+/// in order, as the dense product reads them, is once per `span` indices.
 pub(crate) struct Decoder {
-    corner: Vec<u64>,
-    digits: Vec<Digit>,
+    words: usize,
+    /// For each `r < span`, the packed corner plus the fields of the low digits of `r`.
+    table: Vec<u64>,
+    /// Division by `span`, the number of low indices.
+    split: Divisor,
+    /// The digits above the table, least significant first.
+    high: Vec<Digit>,
+}
+
+/// A [`Decoder`]'s memory of the high part it decoded last.
+pub(crate) struct Cursor {
+    high: u64,
+    fields: Vec<u64>,
 }
 
 impl Decoder {
     /// Words per packed monomial.
     pub(crate) fn words(&self) -> usize {
-        self.corner.len()
+        self.words
     }
 
-    /// Writes the packed monomial of index `idx` into `out` (`layout.words` words).
+    /// A cursor that has decoded nothing yet.
+    pub(crate) fn cursor(&self) -> Cursor {
+        Cursor {
+            high: u64::MAX,
+            fields: vec![0; self.words],
+        }
+    }
+
+    /// Appends the packed monomial of index `idx` to `out`.
     #[inline]
-    pub(crate) fn decode_into(&self, mut idx: u64, out: &mut [u64]) {
-        out.copy_from_slice(&self.corner);
-        for d in &self.digits {
-            let q = if d.magic != 0 {
-                ((d.magic as u128 * idx as u128) >> 64) as u64
-            } else {
-                idx / d.radix
-            };
-            let r = idx - q * d.radix;
-            out[d.word] = out[d.word].wrapping_add(r << d.shift);
-            idx = q;
+    pub(crate) fn decode_onto(&self, cursor: &mut Cursor, idx: u64, out: &mut Vec<u64>) {
+        let (high, low) = self.split.div_rem(idx);
+        if high != cursor.high {
+            cursor.high = high;
+            cursor.fields.fill(0);
+            add_digits(&self.high, high, &mut cursor.fields);
+        }
+        let at = low as usize * self.words;
+        let low = &self.table[at..at + self.words];
+        out.extend(
+            low.iter()
+                .zip(&cursor.fields)
+                .map(|(l, h)| l.wrapping_add(*h)),
+        );
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::Kronecker;
+    use crate::varset::VarSet;
+
+    /// Every index of a box decodes to the monomial whose index it is, read in descending
+    /// order (as the dense product reads) and in a scattered order, with tables of every size
+    /// from none to all the low digits, in one-word and two-word layouts.
+    #[test]
+    fn decoding_inverts_indexing() {
+        for (names, bits) in [(3, 16), (5, 32)] {
+            let mut builder = VarSet::builder().exponent_bits(bits);
+            for k in 0..names {
+                builder = builder.coordinate(&format!("v{k}"));
+            }
+            let vars = builder.build().unwrap();
+            let layout = vars.layout();
+            let n = names;
+            // Bounds with a negative corner and one variable of extent 1 (no digit).
+            let a: Vec<(i64, i64)> = (0..n).map(|j| (-(j as i64), 2 + j as i64)).collect();
+            let mut b: Vec<(i64, i64)> = (0..n).map(|j| (1, 1 + (j as i64 % 3))).collect();
+            b[1] = (0, 0);
+            let mut a1 = a.clone();
+            a1[1] = (3, 3);
+            let kron = Kronecker::new(&a1, &b).unwrap();
+            let lo: Vec<i64> = a1.iter().zip(&b).map(|(x, y)| x.0 + y.0).collect();
+            let hi: Vec<i64> = a1.iter().zip(&b).map(|(x, y)| x.1 + y.1).collect();
+            // Every monomial of the box, packed, with its index from the box's corner.
+            let mut expected = Vec::new();
+            let mut e = lo.clone();
+            loop {
+                let mut packed = vec![0u64; layout.words];
+                layout.pack(&e, &mut packed);
+                let own: Vec<(i64, i64)> = lo.iter().map(|&l| (l, l)).collect();
+                let idx = kron.indices(layout, &packed, &own)[0];
+                expected.push((idx, packed));
+                let Some(j) = (0..n).rev().find(|&j| e[j] < hi[j]) else {
+                    break;
+                };
+                e[j] += 1;
+                e[j + 1..].copy_from_slice(&lo[j + 1..]);
+            }
+            assert_eq!(expected.len() as u64, kron.size());
+            expected.sort();
+            for reads in [1, 2, 7, 30, 1 << 20] {
+                let decoder = kron.decoder(layout, reads);
+                let mut cursor = decoder.cursor();
+                let scattered = (0..expected.len()).map(|k| (k * 7919) % expected.len());
+                for k in (0..expected.len()).rev().chain(scattered) {
+                    let (idx, packed) = &expected[k];
+                    assert_eq!(*idx, k as u64);
+                    let mut out = Vec::new();
+                    decoder.decode_onto(&mut cursor, *idx, &mut out);
+                    assert_eq!(&out, packed, "index {idx}, table for {reads} reads");
+                }
+            }
         }
     }
 }
