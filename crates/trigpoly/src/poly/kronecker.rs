@@ -219,7 +219,7 @@ mod tests {
 
     /// Every index of a box decodes to the monomial whose index it is, read in descending
     /// order (as the dense product reads) and in a scattered order, with tables of every size
-    /// from none to all the low digits, in one-word and two-word layouts.
+    /// from none to all the low digits, in a one-word and a three-word layout.
     #[test]
     fn decoding_inverts_indexing() {
         for (names, bits) in [(3, 16), (5, 32)] {
@@ -230,22 +230,20 @@ mod tests {
             let vars = builder.build().unwrap();
             let layout = vars.layout();
             let n = names;
-            // Bounds with a negative corner and one variable of extent 1 (no digit).
-            let a: Vec<(i64, i64)> = (0..n).map(|j| (-(j as i64), 2 + j as i64)).collect();
+            // The factors' bounds: a negative corner, and one variable of extent 1 (no digit).
+            let mut a: Vec<(i64, i64)> = (0..n).map(|j| (-(j as i64), 2 + j as i64)).collect();
             let mut b: Vec<(i64, i64)> = (0..n).map(|j| (1, 1 + (j as i64 % 3))).collect();
-            b[1] = (0, 0);
-            let mut a1 = a.clone();
-            a1[1] = (3, 3);
-            let kron = Kronecker::new(&a1, &b).unwrap();
-            let lo: Vec<i64> = a1.iter().zip(&b).map(|(x, y)| x.0 + y.0).collect();
-            let hi: Vec<i64> = a1.iter().zip(&b).map(|(x, y)| x.1 + y.1).collect();
+            (a[1], b[1]) = ((3, 3), (0, 0));
+            let kron = Kronecker::new(&a, &b).unwrap();
+            let lo: Vec<i64> = a.iter().zip(&b).map(|(x, y)| x.0 + y.0).collect();
+            let hi: Vec<i64> = a.iter().zip(&b).map(|(x, y)| x.1 + y.1).collect();
+            let own: Vec<(i64, i64)> = lo.iter().map(|&l| (l, l)).collect();
             // Every monomial of the box, packed, with its index from the box's corner.
             let mut expected = Vec::new();
             let mut e = lo.clone();
             loop {
                 let mut packed = vec![0u64; layout.words];
                 layout.pack(&e, &mut packed);
-                let own: Vec<(i64, i64)> = lo.iter().map(|&l| (l, l)).collect();
                 let idx = kron.indices(layout, &packed, &own)[0];
                 expected.push((idx, packed));
                 let Some(j) = (0..n).rev().find(|&j| e[j] < hi[j]) else {
