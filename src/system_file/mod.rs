@@ -65,8 +65,8 @@ use trigpoly::{Expr, Limits};
 /// The default term limit of a system file: no single result may have more terms.
 pub const DEFAULT_MAX_TERMS: usize = 2_000_000;
 /// The default degree limit of a system file: no exponent may exceed it in absolute value
-/// (the library's default, [`Limits::default`]).
-pub const DEFAULT_MAX_DEGREE: u32 = 1000;
+/// (the library's default, [`Limits::DEFAULT_MAX_DEGREE`]).
+pub const DEFAULT_MAX_DEGREE: u32 = Limits::DEFAULT_MAX_DEGREE;
 
 /// Limits given on the command line (`--max-terms`, `--max-degree`): they override the file's
 /// `[limits]`, which override the defaults.

@@ -68,11 +68,17 @@ pub struct Limits {
     pub max_degree: u32,
 }
 
+impl Limits {
+    /// The default degree limit, of the library and of system files: 12-bit exponent fields
+    /// hold it, five variables to a word.
+    pub const DEFAULT_MAX_DEGREE: u32 = 1000;
+}
+
 impl Default for Limits {
     fn default() -> Self {
         Limits {
             max_terms: 20_000_000,
-            max_degree: 1000,
+            max_degree: Limits::DEFAULT_MAX_DEGREE,
         }
     }
 }
