@@ -62,31 +62,17 @@ impl<C: Coefficient> Poly<C> {
                 // Every composition is its own term: the power has too many, known up front.
                 return Err(AlgebraError::TooManyTerms { limit });
             }
-            // Repeated multiplication by a short polynomial: each step shifts and merges, and
-            // checks the term limit as the power grows.
-            let mut acc = self.clone();
-            for _ in 1..e {
-                acc = acc.checked_mul(self)?;
-            }
-            return Ok(acc);
         }
-        let mut base = self.clone();
-        let mut k = e as u64;
-        let mut acc: Option<Self> = None;
-        loop {
-            if k & 1 == 1 {
-                acc = Some(match acc {
-                    None => base.clone(),
-                    Some(a) => a.checked_mul(&base)?,
-                });
-            }
-            k >>= 1;
-            if k == 0 {
-                break;
-            }
-            base = base.checked_mul(&base)?;
+        // Repeated multiplication by `self`, after one square. Each step costs the terms of the
+        // power so far times those of `self`, and checks the term limit as the power grows.
+        // Repeated squaring multiplies two large powers instead: on a sparse polynomial that
+        // is far more work (P_{3,2}^16 of the harmonic rotor, 40 terms: 47 s by squaring, 2.3 s
+        // this way), and on a dense one it saves at most about a third.
+        let mut acc = self.checked_square()?;
+        for _ in 2..e {
+            acc = acc.checked_mul(self)?;
         }
-        Ok(acc.expect("e > 0"))
+        Ok(acc)
     }
 
     /// `self^e` by the multinomial theorem (bounds already checked): one term per composition

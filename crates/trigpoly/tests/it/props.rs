@@ -352,6 +352,24 @@ proptest! {
         prop_assert_eq!(a.checked_pow(e).unwrap(), ae);
     }
 
+    /// A power of a polynomial of more than six terms (repeated multiplication, where a short
+    /// one takes the multinomial walk) has the power of its value at a point, and equals the
+    /// product of two lower powers, one of them a square (its own kernel).
+    #[test]
+    fn pow_of_a_long_polynomial(
+        terms in proptest::collection::vec(((-3i64..4, -3i64..4), exponents(true)), 7..12),
+        e in 3i64..5, point in point(),
+    ) {
+        // Small Gaussian integer coefficients, so that the values' fractions stay short.
+        let terms = terms.into_iter().map(|((re, im), e)| (GaussianRational::new(re.into(), im.into()), e));
+        let f = G::from_terms(&phase_space(), terms).expect("small exponents");
+        prop_assume!(f.len() > 6);
+        let value = |h: &G| h.eval(&point).expect("every variable has a nonzero value");
+        let fe = f.checked_pow(e).unwrap();
+        prop_assert_eq!(value(&fe), value(&f).pow(e).expect("nonzero"));
+        prop_assert_eq!(fe, &f.checked_pow(e - 2).unwrap() * &f.checked_pow(2).unwrap());
+    }
+
     #[test]
     fn sum_of_products_agrees_with_the_sum(f in gpoly(8), g in gpoly(3), h in gpoly(9), k in gpoly(8), neg in any::<bool>()) {
         let fused = Poly::sum_of_products(&[(&f, &g, false), (&h, &k, neg), (&g, &h, true)]).unwrap();
