@@ -5,6 +5,7 @@
 use std::time::Instant;
 
 use brackets::{BracketTable, System};
+use trigpoly::syntax::Expr as Tree;
 use trigpoly::Expr;
 
 use super::claims::{engine_error, parse_condition, CheckedClaim};
@@ -19,15 +20,30 @@ use crate::report::{
 /// Where command-line expressions come from in messages.
 const COMMAND_LINE: &str = "<command line>";
 
+/// An expression given on the command line, parsed but not yet expanded. A command parses
+/// all its arguments before it expands any, so that a slip in the last one is reported at
+/// once rather than after the expansion of the first.
+struct Argument {
+    source: Source,
+    text: Text,
+    tree: Tree,
+}
+
 impl LoadedSystem {
-    /// An expression given on the command line: as printed, and its value.
-    fn argument(&self, src: &str) -> Result<(String, Expr), FileError> {
+    /// Parses an expression given on the command line.
+    fn argument(&self, src: &str) -> Result<Argument, FileError> {
         let source = Source::new(COMMAND_LINE, src);
         let text = Text::whole(&source);
-        let scope = self.scope(self.families.len());
-        let tree = scope.tree(&source, &text)?;
-        let value = scope.lower(&source, &text, &tree)?;
-        Ok((self.pretty(&tree), value))
+        let tree = self.scope(self.families.len()).tree(&source, &text)?;
+        Ok(Argument { source, text, tree })
+    }
+
+    /// A parsed argument as printed, and its value.
+    fn expand(&self, arg: &Argument) -> Result<(String, Expr), FileError> {
+        let value = self
+            .scope(self.families.len())
+            .lower(&arg.source, &arg.text, &arg.tree)?;
+        Ok((self.pretty(&arg.tree), value))
     }
 
     /// A section heading the file's entries: its citation and Hamiltonian.
@@ -103,21 +119,28 @@ pub fn bracket_report(
     when: Option<&str>,
 ) -> Result<Report, FileError> {
     let start = Instant::now();
-    let (fname, fe) = file.argument(f)?;
-    let (gname, ge) = file.argument(g)?;
+    let (f, g) = (file.argument(f)?, file.argument(g)?);
+    // The condition is read first too: its values are short.
+    let condition = match when {
+        Some(w) => {
+            let source = Source::new(COMMAND_LINE, w);
+            let whole = Text::whole(&source);
+            let pieces: Vec<Text> = split_top_level(w, ',')
+                .into_iter()
+                .map(|r| whole.slice(r))
+                .collect();
+            Some(parse_condition(file, &source, &pieces)?)
+        }
+        None => None,
+    };
+    let (fname, fe) = file.expand(&f)?;
+    let (gname, ge) = file.expand(&g)?;
     let mut value = file
         .system
         .bracket(&fe, &ge)
         .map_err(|e| command_error(&e))?;
     let mut caption = String::new();
-    if let Some(w) = when {
-        let source = Source::new(COMMAND_LINE, w);
-        let whole = Text::whole(&source);
-        let pieces: Vec<Text> = split_top_level(w, ',')
-            .into_iter()
-            .map(|r| whole.slice(r))
-            .collect();
-        let condition = parse_condition(file, &source, &pieces)?;
+    if let Some(condition) = condition {
         value = condition.apply(&value).map_err(|e| command_error(&e))?;
         caption = format!("at {}", condition.text);
     }
@@ -162,17 +185,14 @@ pub fn table_report(file: &LoadedSystem, names: &[String]) -> Result<Report, Fil
              such as: superint table FILE H L",
         ));
     }
-    let mut system: System = file.system.clone();
+    // Every name is looked up before any family instance is expanded.
+    let mut instances = Vec::new();
     for name in &names {
-        if system.get(name).is_ok() {
+        if file.system.get(name).is_ok() {
             continue;
         }
         match instance_of(&file.families, name) {
-            Some((k, m, n)) => {
-                let value = file.family_instance(k, m, n)?;
-                let display = format!("{}_{{{m},{n}}}", file.families[k].display);
-                system.define(name, &display, value);
-            }
+            Some(instance) => instances.push((name, instance)),
             None => {
                 let mut known = vec!["H".to_string()];
                 known.extend(defined.iter().cloned());
@@ -192,6 +212,15 @@ pub fn table_report(file: &LoadedSystem, names: &[String]) -> Result<Report, Fil
                 ));
             }
         }
+    }
+    let mut system: System = file.system.clone();
+    for (name, (k, m, n)) in instances {
+        if system.get(name).is_ok() {
+            continue; // named twice
+        }
+        let value = file.family_instance(k, m, n)?;
+        let display = format!("{}_{{{m},{n}}}", file.families[k].display);
+        system.define(name, &display, value);
     }
     let refs: Vec<&str> = names.iter().map(String::as_str).collect();
     let table = BracketTable::compute(&system, &refs).map_err(|e| command_error(&e))?;
@@ -219,10 +248,14 @@ pub fn rank_report(
     expected: Option<usize>,
 ) -> Result<Report, FileError> {
     let start = Instant::now();
+    let parsed = functions
+        .iter()
+        .map(|f| file.argument(f))
+        .collect::<Result<Vec<_>, _>>()?;
     let mut names = Vec::new();
     let mut exprs = Vec::new();
-    for f in functions {
-        let (name, value) = file.argument(f)?;
+    for arg in &parsed {
+        let (name, value) = file.expand(arg)?;
         names.push(name);
         exprs.push(value);
     }

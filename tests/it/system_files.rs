@@ -559,6 +559,46 @@ fn bracket_prints_the_normal_form() {
     assert!(on.contains("at p_θ = 2Iω/3"), "{on}");
 }
 
+/// A command reads all its arguments before it expands any: with a term limit that the first
+/// expression's expansion passes, a slip in a later argument is still what is reported.
+#[test]
+fn arguments_are_read_before_any_is_expanded() {
+    let f = "systems/harmonic-rotor.toml";
+    let (big, limit) = ("(P_{3,2})^6", "1000");
+    // The limit is real: alone, the expansion stops at it.
+    let alone = superint_in(root(), &["bracket", f, big, "H", "--max-terms", limit]);
+    assert_eq!(alone.status.code(), Some(2));
+    assert!(
+        text(&alone.stderr).contains("more than 1000 terms"),
+        "{}",
+        text(&alone.stderr)
+    );
+    for (args, message) in [
+        (
+            vec!["bracket", f, big, "L - , G1"],
+            "1:5: expected an expression after '-'",
+        ),
+        (
+            vec!["bracket", f, big, "L", "--when", "p_theta ="],
+            "one side is empty",
+        ),
+        (
+            vec!["rank", f, big, "F1", "G1 +"],
+            "1:5: expected an expression after '+'",
+        ),
+        (vec!["table", f, "K_30_1", "Foo"], "'Foo' is not a function"),
+    ] {
+        let args = [args, vec!["--max-terms", limit]].concat();
+        let o = superint_in(root(), &args);
+        assert_eq!(o.status.code(), Some(2), "{args:?}");
+        assert!(
+            text(&o.stderr).contains(message),
+            "{args:?}: {}",
+            text(&o.stderr)
+        );
+    }
+}
+
 #[test]
 fn table_is_the_su2_table() {
     let out = run(
