@@ -661,6 +661,40 @@ proptest! {
         prop_assert_eq!(&(&a * &mq) + &(&a * &tq), &a * &(&mq + &tq));
     }
 
+    /// The value at a point (summed over one common denominator) is the sum of the terms'
+    /// values `c·Π v^e` as fractions, for polynomials and Laurent polynomials over Q and Q(i),
+    /// angles included; a variable whose value is zero may appear with non-negative exponents.
+    #[test]
+    fn eval_is_the_sum_of_the_values_of_the_terms(f in gpoly(12), a in qpoly(12), point in point(), zero_x in any::<bool>()) {
+        let vars = phase_space();
+        let all: Vec<trigpoly::Var> = vars.vars().collect();
+        let by_terms = |terms: Vec<(GaussianRational, Vec<i64>)>, point: &Point| -> GaussianRational {
+            terms.into_iter().fold(GaussianRational::default(), |sum, (c, e)| {
+                let term = e.iter().enumerate().filter(|(_, &k)| k != 0).fold(c, |t, (j, &k)| {
+                    let v = point.value(all[j]).expect("a value");
+                    &t * &v.pow(k).expect("nonzero where negative")
+                });
+                &sum + &term
+            })
+        };
+        let terms_a = a.terms().map(|t| (GaussianRational::from(t.coeff()), t.exponents())).collect();
+        prop_assert_eq!(a.eval(&point), Ok(by_terms(terms_a, &point)));
+        let (f, point) = if zero_x {
+            // x = 0 at the point, and x only to non-negative powers.
+            let x = var(&vars, "x");
+            let shifted = f.terms().map(|t| {
+                let mut e = t.exponents();
+                e[x.index()] = e[x.index()].abs();
+                (t.coeff(), e)
+            });
+            (G::from_terms(&vars, shifted).expect("small exponents"), point.with(x, Rational::zero()))
+        } else {
+            (f, point)
+        };
+        let terms_f = f.terms().map(|t| (t.coeff(), t.exponents())).collect();
+        prop_assert_eq!(f.eval(&point), Ok(by_terms(terms_f, &point)));
+    }
+
     /// Every field width computes the same: under one degree limit, products (short, dense
     /// and heap), sums, squares, derivatives and substitutions print the same in each width,
     /// or fail with the same error when an exponent passes the limit. The widths from 10 bits
