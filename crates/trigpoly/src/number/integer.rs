@@ -11,7 +11,7 @@ use std::fmt;
 use std::ops::{Add, AddAssign, Mul, MulAssign, Neg, Sub, SubAssign};
 use std::str::FromStr;
 
-use super::gcd::binary_gcd;
+use super::gcd::{binary_gcd, gcd_u128};
 use num_bigint::BigInt;
 use num_integer::Integer as _;
 use num_traits::{One, Signed, ToPrimitive, Zero};
@@ -142,12 +142,48 @@ impl Integer {
     }
 
     /// Greatest common divisor, always `>= 0`; `gcd(0, 0) = 0`.
+    ///
+    /// When one side fits a machine word (`i64` or `i128`) and the other does not,
+    /// `gcd(a, b) = gcd(a, b mod a)` takes one pass over `b`'s digits and then a binary gcd on
+    /// machine words: the running gcd of a polynomial's coefficients is short after the first
+    /// few, and `num-bigint`'s gcd shifts the long side one step per bit.
+    #[inline]
     pub fn gcd(&self, other: &Integer) -> Integer {
         match (self, other) {
             (Integer::Small(a), Integer::Small(b)) => {
                 Integer::from(binary_gcd(a.unsigned_abs(), b.unsigned_abs()))
             }
-            _ => Integer::from_bigint(self.to_bigint().gcd(&other.to_bigint())),
+            _ => self.gcd_long(other),
+        }
+    }
+
+    /// [`Integer::gcd`] when a side is longer than an `i64` (out of line, so that the short
+    /// case inlines).
+    #[inline(never)]
+    fn gcd_long(&self, other: &Integer) -> Integer {
+        match (self, other) {
+            (Integer::Big(b), Integer::Big(c)) => Integer::from_bigint(b.gcd(c)),
+            (Integer::Big(b), short) | (short, Integer::Big(b)) => {
+                let a = short.to_i128().expect("not Big").unsigned_abs();
+                if a == 0 {
+                    return Integer::Big(Box::new(b.abs()));
+                }
+                let r = (b.magnitude() % a).to_u128().expect("below a u128");
+                Integer::from_u128(gcd_u128(a, r))
+            }
+            _ => {
+                let (a, b) = (self.to_i128(), other.to_i128());
+                let (a, b) = (a.expect("not Big"), b.expect("not Big"));
+                Integer::from_u128(gcd_u128(a.unsigned_abs(), b.unsigned_abs()))
+            }
+        }
+    }
+
+    /// Builds from a `u128` (above `i128::MAX` only as the gcd `2^127` of `i128::MIN`).
+    fn from_u128(v: u128) -> Integer {
+        match i128::try_from(v) {
+            Ok(v) => Integer::from_i128(v),
+            Err(_) => Integer::from_bigint(BigInt::from(v)),
         }
     }
 

@@ -223,3 +223,50 @@ fn ring_axioms_hold_for_trigonometric_polynomials_over_gaussian_rationals() {
     .collect();
     ring_axioms(&elements);
 }
+
+/// The gcd at the edges of `Integer`'s tiers: a zero beside a long value, `i128::MIN` (whose
+/// absolute value, the gcd of it with 0, is past `i128`), and a short factor of a long value.
+#[test]
+fn gcd_at_the_edges_of_the_tiers() {
+    use trigpoly::Integer;
+    let int = |s: &str| s.parse::<Integer>().expect("an integer");
+    let long = int("-340282366920938463463374607431768211456"); // −2^128
+    let min = Integer::from(BigInt::from(i128::MIN));
+    for (a, b, gcd) in [
+        (
+            Integer::ZERO,
+            long.clone(),
+            "340282366920938463463374607431768211456",
+        ),
+        (
+            long.clone(),
+            Integer::ZERO,
+            "340282366920938463463374607431768211456",
+        ),
+        (
+            min.clone(),
+            Integer::ZERO,
+            "170141183460469231731687303715884105728",
+        ),
+        (
+            min.clone(),
+            min.clone(),
+            "170141183460469231731687303715884105728",
+        ),
+        (
+            min.clone(),
+            long.clone(),
+            "170141183460469231731687303715884105728",
+        ),
+        (Integer::from(-6i64), long.clone(), "2"),
+        (long.clone(), Integer::from(3i64), "1"),
+        (int("-12"), int("30"), "6"),
+    ] {
+        let g = a.gcd(&b);
+        assert_eq!(g, int(gcd), "gcd({a}, {b})");
+        assert_eq!(
+            g.to_bigint(),
+            num_integer::Integer::gcd(&a.to_bigint(), &b.to_bigint())
+        );
+    }
+}

@@ -445,15 +445,22 @@ proptest! {
     /// `Integer`'s three tiers (`i64`, `i128`, `BigInt`) compute what `BigInt` computes, and
     /// every result is stored in the tier its size calls for.
     #[test]
-    fn integer_arithmetic_agrees_with_bigint(a in integer(), b in integer()) {
+    fn integer_arithmetic_agrees_with_bigint(a in integer(), b in integer(), c in integer()) {
         let (x, y) = (Integer::from(a.clone()), Integer::from(b.clone()));
         prop_assert!(canonical(&x) && canonical(&y));
+        // Multiples of a common factor, for gcds other than 1 between any two tiers.
+        let (ac, bc) = (&a * &c, &b * &c);
         let mut results = vec![
             (&x + &y, &a + &b),
             (&x - &y, &a - &b),
             (&x * &y, &a * &b),
             (-&x, -&a),
             (x.gcd(&y), num_integer::Integer::gcd(&a, &b)),
+            (
+                Integer::from(ac.clone()).gcd(&Integer::from(bc.clone())),
+                num_integer::Integer::gcd(&ac, &bc),
+            ),
+            (y.gcd(&Integer::from(ac.clone())), num_integer::Integer::gcd(&b, &ac)),
         ];
         if !y.is_zero() {
             results.push(((&x * &y).div_exact(&y), a.clone()));
