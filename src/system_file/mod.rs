@@ -60,6 +60,7 @@ use std::ops::Range;
 use std::sync::Mutex;
 
 use brackets::System;
+use trigpoly::syntax::Expr as Tree;
 use trigpoly::{Expr, Limits};
 
 /// The default term limit of a system file: no single result may have more terms.
@@ -120,13 +121,37 @@ pub struct LoadedSystem {
     cache: Mutex<HashMap<(usize, i64, i64), Expr>>,
 }
 
+/// Where command-line expressions come from in messages.
+const COMMAND_LINE: &str = "<command line>";
+
+/// An expression given on the command line, parsed but not yet expanded. A command parses
+/// all its arguments before it expands any, so that a slip in the last one is reported at
+/// once rather than after the expansion of the first.
+struct Argument {
+    source: Source,
+    text: Text,
+    tree: Tree,
+}
+
 impl LoadedSystem {
     /// Parses an expression given on the command line (named functions, family instances,
     /// brackets, `conj`/`re`/`im` allowed); errors point into the argument.
     pub fn parse_argument(&self, src: &str) -> Result<Expr, FileError> {
-        let source = Source::new("<command line>", src);
+        self.value(&self.argument(src)?)
+    }
+
+    /// Reads an expression given on the command line, without expanding it.
+    fn argument(&self, src: &str) -> Result<Argument, FileError> {
+        let source = Source::new(COMMAND_LINE, src);
         let text = Text::whole(&source);
-        self.scope(self.families.len()).parse(&source, &text)
+        let tree = self.scope(self.families.len()).tree(&source, &text)?;
+        Ok(Argument { source, text, tree })
+    }
+
+    /// The value of a read argument.
+    fn value(&self, arg: &Argument) -> Result<Expr, FileError> {
+        self.scope(self.families.len())
+            .lower(&arg.source, &arg.text, &arg.tree)
     }
 
     /// The instance `family_{m,n}` of a family, expanded (and cached).

@@ -5,45 +5,21 @@
 use std::time::Instant;
 
 use brackets::{BracketTable, System};
-use trigpoly::syntax::Expr as Tree;
 use trigpoly::Expr;
 
 use super::claims::{engine_error, parse_condition, CheckedClaim};
 use super::error::{ErrorKind, FileError};
 use super::scope::instance_of;
 use super::text::{split_top_level, Source, Text};
-use super::LoadedSystem;
+use super::{Argument, LoadedSystem, COMMAND_LINE};
 use crate::report::{
     Entry, Equation, Equations, Expect, Report, Section, SummaryKind, TableResult,
 };
 
-/// Where command-line expressions come from in messages.
-const COMMAND_LINE: &str = "<command line>";
-
-/// An expression given on the command line, parsed but not yet expanded. A command parses
-/// all its arguments before it expands any, so that a slip in the last one is reported at
-/// once rather than after the expansion of the first.
-struct Argument {
-    source: Source,
-    text: Text,
-    tree: Tree,
-}
-
 impl LoadedSystem {
-    /// Parses an expression given on the command line.
-    fn argument(&self, src: &str) -> Result<Argument, FileError> {
-        let source = Source::new(COMMAND_LINE, src);
-        let text = Text::whole(&source);
-        let tree = self.scope(self.families.len()).tree(&source, &text)?;
-        Ok(Argument { source, text, tree })
-    }
-
     /// A parsed argument as printed, and its value.
     fn expand(&self, arg: &Argument) -> Result<(String, Expr), FileError> {
-        let value = self
-            .scope(self.families.len())
-            .lower(&arg.source, &arg.text, &arg.tree)?;
-        Ok((self.pretty(&arg.tree), value))
+        Ok((self.pretty(&arg.tree), self.value(arg)?))
     }
 
     /// A section heading the file's entries: its citation and Hamiltonian.

@@ -161,21 +161,18 @@ impl Integer {
     /// case inlines).
     #[inline(never)]
     fn gcd_long(&self, other: &Integer) -> Integer {
+        let word = |v: &Integer| v.to_i128().expect("not Big").unsigned_abs();
         match (self, other) {
             (Integer::Big(b), Integer::Big(c)) => Integer::from_bigint(b.gcd(c)),
             (Integer::Big(b), short) | (short, Integer::Big(b)) => {
-                let a = short.to_i128().expect("not Big").unsigned_abs();
+                let a = word(short);
                 if a == 0 {
                     return Integer::Big(Box::new(b.abs()));
                 }
                 let r = (b.magnitude() % a).to_u128().expect("below a u128");
                 Integer::from_u128(gcd_u128(a, r))
             }
-            _ => {
-                let (a, b) = (self.to_i128(), other.to_i128());
-                let (a, b) = (a.expect("not Big"), b.expect("not Big"));
-                Integer::from_u128(gcd_u128(a.unsigned_abs(), b.unsigned_abs()))
-            }
+            _ => Integer::from_u128(gcd_u128(word(self), word(other))),
         }
     }
 

@@ -317,61 +317,38 @@ impl<C: Coefficient> Poly<C> {
     }
 }
 
-/// A variable's value `v = g/d` (`g ∈ Z[i]`, `d > 0`) scaled for a sum over one denominator,
-/// its exponents being in `[lo, hi]`: each power `v^e` times `d^{hi⁺}·N^{lo⁻}` (with
-/// `N = g·ḡ`, `hi⁺ = max(hi, 0)`, `lo⁻ = max(−lo, 0)`) is the Gaussian integer
-/// `g^e·d^{hi⁺−e}·N^{lo⁻}` for `e ≥ 0` and `ḡ^{−e}·d^{hi⁺−e}·N^{lo⁻+e}` for `e < 0`.
-struct ScaledValue {
-    g: GaussianInteger,
-    d: Integer,
-    norm: Integer,
-    hi: u32,
-    lo: u32,
+/// A variable's value `v` scaled for a sum over one denominator, its exponents lying in
+/// `[lo, hi]`: with `v = g/d` (`g ∈ Z[i]`, `d > 0`) and `N = g·ḡ = d²·|v|²`, every power `v^e`
+/// times `scale = d^{hi⁺}·N^{lo⁻}` (`hi⁺ = max(hi, 0)`, `lo⁻ = max(−lo, 0)`) is a Gaussian
+/// integer: `g^e·d^{hi⁺−e}·N^{lo⁻}` for `e ≥ 0`, `ḡ^{−e}·d^{hi⁺−e}·N^{lo⁻+e}` for `e < 0`.
+struct ScaledValue<'a> {
+    value: &'a GaussianRational,
+    scale: Rational,
 }
 
-impl ScaledValue {
-    fn new(value: &GaussianRational, lo: i64, hi: i64) -> Result<Self, AlgebraError> {
-        let (re_d, im_d) = (value.re.denom(), value.im.denom());
-        let d = re_d.lcm(&im_d);
-        let g = GaussianInteger::new(
-            &value.re.numer() * &d.div_exact(&re_d),
-            &value.im.numer() * &d.div_exact(&im_d),
-        );
-        let norm = &(&g.re * &g.re) + &(&g.im * &g.im);
-        if lo < 0 && norm.is_zero() {
+impl<'a> ScaledValue<'a> {
+    fn new(value: &'a GaussianRational, lo: i64, hi: i64) -> Result<Self, AlgebraError> {
+        if lo < 0 && value.is_zero() {
             return Err(AlgebraError::DivisionByZero);
         }
-        // Exponents are within the degree limit, far below `u32::MAX`.
-        let exponent = |e: i64| u32::try_from(e.max(0)).expect("an exponent within the limit");
-        Ok(ScaledValue {
-            g,
-            d,
-            norm,
-            hi: exponent(hi),
-            lo: exponent(-lo),
-        })
+        let d = Rational::from(value.re.denom().lcm(&value.im.denom()));
+        let norm = &(&d * &d) * &value.norm();
+        let scale = &d.pow(hi.max(0)).expect("d > 0")
+            * &norm.pow(lo.min(0).abs()).expect("N ≠ 0 when lo < 0");
+        Ok(ScaledValue { value, scale })
     }
 
-    /// `d^{hi⁺}·N^{lo⁻}`, by which the sum is scaled.
+    /// `d^{hi⁺}·N^{lo⁻}`, by which the sum is scaled (an integer).
     fn denominator(&self) -> Integer {
-        &self.d.pow(self.hi) * &self.norm.pow(self.lo)
+        self.scale.numer()
     }
 
     /// `v^e·d^{hi⁺}·N^{lo⁻}`, a Gaussian integer for `e` in `[lo, hi]`.
     fn factor(&self, e: i64) -> GaussianInteger {
-        let k = e.unsigned_abs() as u32;
-        let base = if e >= 0 {
-            self.g.clone()
-        } else {
-            self.g.conj()
-        };
-        let mut power = GaussianInteger::new(Integer::ONE, Integer::ZERO);
-        for _ in 0..k {
-            power = power.mul(&base);
-        }
-        let scale = &self.d.pow((self.hi as i64 - e) as u32)
-            * &self.norm.pow((self.lo as i64 + e.min(0)) as u32);
-        power.scale(&scale)
+        let power = self.value.pow(e).expect("v ≠ 0 when e < 0");
+        let f = &power * &GaussianRational::from(self.scale.clone());
+        debug_assert!(f.re.is_integer() && f.im.is_integer());
+        GaussianInteger::new(f.re.numer(), f.im.numer())
     }
 }
 
