@@ -8,8 +8,9 @@
 //! - **W3 products**: Fateman `f·(f + 1)` with `f = (1 + x + y + z + t)^N`, and Pearce
 //!   `(1 + x + y + 2z² + 3t³ + 5u⁵)^N · (1 + u + t + 2z² + 3y³ + 5x⁵)^N`.
 //! - **W4 algebra**: the su(2) brackets `{L, G1} = −G2`, `{L, G2} = 4G1`, `{G1, G2} = −ω²L` and
-//!   the Casimir (C09, C10), each formed and checked, `N` times (the brackets and squares are
-//!   computed in every repetition, as the peers do).
+//!   the Casimir (C09, C10), each formed and checked, `N` times. The generators are the inputs,
+//!   built once; the brackets and every square, `(F1 − F2)²` included, are computed in every
+//!   repetition, on every side of the comparison.
 
 use std::fmt;
 use std::str::FromStr;
@@ -131,7 +132,7 @@ impl Workload {
                 let rotor = systems::harmonic_rotor();
                 let get = |name: &str| rotor.get(name).cloned();
                 let (l, g1, g2) = (get("L")?, get("G1")?, get("G2")?);
-                let casimir_rhs = get("F1")?.checked_sub(&get("F2")?)?.checked_pow(2)?;
+                let f1_minus_f2 = get("F1")?.checked_sub(&get("F2")?)?;
                 let omega2 = rotor.parse("omega^2")?;
                 let four = trigpoly::GaussianRational::from(4);
                 let (mut terms, mut zeros) = (0, 0);
@@ -150,7 +151,7 @@ impl Workload {
                         .scale(&four)
                         .checked_add(&g2.checked_pow(2)?)?
                         .checked_add(&omega2.checked_mul(&l.checked_pow(2)?)?)?;
-                    all &= lhs.checked_sub(&casimir_rhs)?.is_zero();
+                    all &= lhs.checked_sub(&f1_minus_f2.checked_pow(2)?)?.is_zero();
                     if !all {
                         return Err(WorkloadError::NotZero("an su(2) identity".into()));
                     }

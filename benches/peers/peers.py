@@ -116,18 +116,21 @@ def algebra(reps):
         return (diff(f, "x") * diff(g, "px") - diff(f, "px") * diff(g, "x")
                 + diff(f, "y") * diff(g, "py") - diff(f, "py") * diff(g, "y"))
 
+    # The generators are the inputs, built once (superint takes them from its system); the
+    # brackets and every square, h^2 included, are computed in every repetition.
+    mw2 = M**2 * w**2
+    L = x * py - y * px
+    g1 = px * py + mw2 * x * y
+    g2 = px**2 - py**2 + mw2 * (x**2 - y**2)
+    h = px**2 + py**2 + mw2 * (x**2 + y**2)  # 2M (F1 - F2)
     zeros = terms = 0
     for _ in range(reps):
-        L = x * py - y * px
-        g1 = px * py + M**2 * w**2 * x * y
-        g2 = px**2 - py**2 + M**2 * w**2 * (x**2 - y**2)
-        h = px**2 + py**2 + M**2 * w**2 * (x**2 + y**2)  # 2M (F1 - F2)
-        b1, b2, b3 = bracket(L, g1), bracket(L, g2), bracket(g1, g2)  # each once per repetition
+        b1, b2, b3 = bracket(L, g1), bracket(L, g2), bracket(g1, g2)
         checks = [
             b1 + g2,  # {L, G1} = -G2
             b2 - 4 * g1,  # {L, G2} = 4 G1
-            b3 + 4 * M**2 * w**2 * L,  # {G1, G2} = -w^2 L, times (2M)^2
-            4 * g1**2 + g2**2 + 4 * M**2 * w**2 * L**2 - h**2,  # the Casimir, times (2M)^2
+            b3 + 4 * mw2 * L,  # {G1, G2} = -w^2 L, times (2M)^2
+            4 * g1**2 + g2**2 + 4 * mw2 * L**2 - h**2,  # the Casimir, times (2M)^2
         ]
         terms += len(b1) + len(b2) + len(b3)
         zeros += all(e == 0 for e in checks)
