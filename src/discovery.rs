@@ -64,6 +64,15 @@ pub fn complex_form(f: &Expr) -> Option<(Expr, i64)> {
     Some((Expr::from_terms(vars, terms).ok()?, hi))
 }
 
+/// The names of parameters, `A, B`.
+fn parameter_names(vars: &VarSet, params: &[Var]) -> String {
+    params
+        .iter()
+        .map(|v| vars.variable(*v).unicode().to_string())
+        .collect::<Vec<_>>()
+        .join(", ")
+}
+
 fn space_text(r: &SearchResult) -> String {
     let s = &r.space;
     let laurent = if s.laurent {
@@ -71,10 +80,18 @@ fn space_text(r: &SearchResult) -> String {
     } else {
         ""
     };
+    let symbolic = match &r.module {
+        Some(m) => format!(
+            ", coefficients polynomials of degree `≤ {}` in `{}`",
+            s.parameters_degree,
+            parameter_names(&r.vars, &m.parameters)
+        ),
+        None => String::new(),
+    };
     format!(
         "The space: `x^a y^b p_x^c p_y^d` times `1, cos kθ, sin kθ`, with momenta degree \
-         `c + d ≤ {}`, positions degree `|a| + |b| ≤ {}`{laurent} and trigonometric order \
-         `k ≤ {}`: {} unknowns, {} linear equations over `Q`, in {} independent blocks (the \
+         `c + d ≤ {}`, positions degree `|a| + |b| ≤ {}`{laurent}, trigonometric order \
+         `k ≤ {}`{symbolic}: {} unknowns, {} linear equations over `Q`, in {} independent blocks (the \
          largest has {} unknowns). Angular momenta are left out: on a resonance surface they \
          are constants, and every function of them is an integral.",
         s.momenta_degree,
@@ -87,11 +104,14 @@ fn space_text(r: &SearchResult) -> String {
     )
 }
 
-fn proof_note(f: &Integral, fixed: &str) -> Option<String> {
-    match (&f.symbolic, f.proved_fixed) {
-        (Some(_), _) => None,
-        (None, true) => Some(format!("proved at {fixed} only: no symbolic lift")),
-        (None, false) => Some("not proved".into()),
+/// What a proof covers, when it is not every value of every parameter: `fixed` is the text
+/// of the fixed values, `symbolic` the names of the parameters kept symbolic (if any).
+fn proof_note(f: &Integral, fixed: &str, symbolic: Option<&str>) -> Option<String> {
+    match (&f.symbolic, f.proved_fixed, symbolic) {
+        (Some(_), _, _) => None,
+        (None, true, Some(names)) => Some(format!("proved for every {names}, at {fixed}")),
+        (None, true, None) => Some(format!("proved at {fixed} only: no symbolic lift")),
+        (None, false, _) => Some("not proved".into()),
     }
 }
 
@@ -108,6 +128,10 @@ pub fn search_report(
     let vars = system.vars();
     let cond = r.condition.clone();
     let fixed = parameter_text(vars, &r.parameters);
+    let symbolic = r
+        .module
+        .as_ref()
+        .map(|m| parameter_names(vars, &m.parameters));
     let mut entries = vec![
         Entry::Equations(Equations {
             caption: String::new(),
@@ -127,6 +151,14 @@ pub fn search_report(
         };
         entries.push(Entry::Text(format!(
             "Parameters fixed for the linear algebra: `{fixed}`; {lift}."
+        )));
+    }
+    if let Some(m) = &r.module {
+        entries.push(Entry::Text(format!(
+            "Parameters kept symbolic: `{}`. The equations are the coefficients of every \
+             monomial in the variables and these parameters, so what is found holds for every \
+             value of them.",
+            parameter_names(vars, &m.parameters)
         )));
     }
     let dims = r.dimensions_by_momenta_degree();
@@ -161,12 +193,28 @@ pub fn search_report(
         entries,
     }];
 
-    // The basis (or the new part), proved.
-    let shown: Vec<usize> = match &r.new {
+    // The basis (or the new part; with symbolic parameters, its generators), proved.
+    let mut shown: Vec<usize> = match &r.new {
         Some(n) => n.new.clone(),
         None => (0..r.basis.len()).collect(),
     };
     let mut entries = Vec::new();
+    if let Some(m) = &r.module {
+        shown.retain(|i| m.generators.contains(i));
+        entries.push(Entry::Text(format!(
+            "Over the polynomials in `{}`, {} of the {} basis integrals generate all of them: \
+             each of the others is a sum of parameter multiples of integrals. Shown: the \
+             generators{}.",
+            parameter_names(vars, &m.parameters),
+            m.generators.len(),
+            r.basis.len(),
+            if r.new.is_some() {
+                " that are also new"
+            } else {
+                ""
+            }
+        )));
+    }
     if let Some(n) = &r.new {
         let known = if n.known.is_empty() {
             "no named function".to_string()
@@ -191,10 +239,10 @@ pub fn search_report(
         ));
     }
     entries.push(Entry::Equations(Equations {
-        caption: if r.new.is_some() {
-            "New integrals".into()
-        } else {
-            "A basis of the integrals".into()
+        caption: match (&r.new, &symbolic) {
+            (Some(_), _) => "New integrals".into(),
+            (None, Some(names)) => format!("Generators over the polynomials in {names}"),
+            (None, None) => "A basis of the integrals".into(),
         },
         lines: shown
             .iter()
@@ -220,7 +268,7 @@ pub fn search_report(
             &label(i),
             &format!("{{{}, H}} = 0", label(i)),
             f.proved_fixed,
-            proof_note(f, &fixed),
+            proof_note(f, &fixed, symbolic.as_deref()),
         );
         c.condition = cond.clone();
         entries.push(Entry::Claim(c));
@@ -231,12 +279,18 @@ pub fn search_report(
         .collect();
     if !rest.is_empty() {
         let proved = rest.iter().all(|f| f.proved_fixed);
-        let symbolic = rest.iter().filter(|f| f.symbolic.is_some()).count();
+        let lifted = rest.iter().filter(|f| f.symbolic.is_some()).count();
+        let note = match &symbolic {
+            // Nothing fixed: every proof was symbolic.
+            _ if r.parameters.is_empty() => None,
+            Some(names) => Some(format!("proved for every {names}, at {fixed}")),
+            None => Some(format!("{lifted} of them lifted and proved symbolically")),
+        };
         let mut c = ClaimResult::derived(
             "basis",
             &format!("{{I, H}} = 0 for the other {} basis elements", rest.len()),
             proved,
-            Some(format!("{symbolic} of them lifted and proved symbolically")),
+            note,
         );
         c.condition = cond.clone();
         entries.push(Entry::Claim(c));
@@ -512,9 +566,25 @@ pub fn parse_condition(
     })
 }
 
+/// The parameter called `name`.
+fn parameter(system: &System, name: &str) -> Result<Var, String> {
+    let vars = system.vars();
+    vars.lookup(name)
+        .filter(|v| vars.variable(*v).kind() == trigpoly::VarKind::Parameter)
+        .ok_or_else(|| format!("'{name}' is not a parameter of the system"))
+}
+
+/// Parameters named in `A,B` (kept symbolic by a search).
+pub fn parse_symbolic(system: &System, text: &str) -> Result<Vec<Var>, String> {
+    text.split(',')
+        .map(str::trim)
+        .filter(|p| !p.is_empty())
+        .map(|name| parameter(system, name))
+        .collect()
+}
+
 /// Reads parameter values `omega=1,M=2/3`.
 pub fn parse_fixed(system: &System, text: &str) -> Result<Vec<(Var, Rational)>, String> {
-    let vars = system.vars();
     let mut out = Vec::new();
     for piece in text.split(',').filter(|p| !p.trim().is_empty()) {
         let Some((name, value)) = piece.split_once('=') else {
@@ -523,10 +593,7 @@ pub fn parse_fixed(system: &System, text: &str) -> Result<Vec<(Var, Rational)>, 
             ));
         };
         let name = name.trim();
-        let v = vars
-            .lookup(name)
-            .filter(|v| vars.variable(*v).kind() == trigpoly::VarKind::Parameter)
-            .ok_or_else(|| format!("'{name}' is not a parameter of the system"))?;
+        let v = parameter(system, name)?;
         let q: Rational = value
             .trim()
             .parse()

@@ -7,7 +7,9 @@ use anyhow::{anyhow, bail, Context};
 use brackets::search::{SearchOptions, SearchSpace};
 use brackets::System;
 use clap::Args;
-use superint::discovery::{builtin_system, parse_condition, parse_fixed, search_report};
+use superint::discovery::{
+    builtin_system, parse_condition, parse_fixed, parse_symbolic, search_report,
+};
 use superint::render::render;
 use superint::system_file::{load, LoadedSystem};
 use trigpoly::Expr;
@@ -24,10 +26,14 @@ Examples:
   superint search systems/smorodinsky-winternitz-i.toml --momenta-degree 2 \\
       --positions-degree 4 --trig-degree 0 --laurent
   superint search --system anisotropic-3-5 --when 'p_theta = I*omega' --fix omega=1,M=2
+  superint search systems/henon-heiles-kdv.toml --momenta-degree 2 --positions-degree 4 \
+      --trig-degree 0 --symbolic A,B
 
 Parameters are fixed to rational values for the linear algebra (1 unless --fix says
 otherwise, and the output says which); every basis element is then lifted back to
 symbolic parameters by homogeneity and proved symbolically where the system allows.
+Parameters named by --symbolic are never fixed: the unknowns are polynomials in them, and
+the output lists the integrals that generate all the others over those polynomials.
 Built-in systems (--system): harmonic, gravity, anisotropic-3-5, anisotropic-1-2,
 planar-i, planar-ii.";
 
@@ -62,6 +68,15 @@ pub struct SearchArgs {
     /// Parameter values for the linear algebra, such as omega=1,M=2/3 (others are 1).
     #[arg(long, value_name = "VALUES")]
     fix: Option<String>,
+    /// Parameters kept symbolic, such as A,B: the coefficients of the integrals are then
+    /// polynomials in them (of total degree at most --parameters-degree), and what is found
+    /// holds for every value of them.
+    #[arg(long, value_name = "PARAMS", conflicts_with = "new_only")]
+    symbolic: Option<String>,
+    /// Total degree in the parameters kept symbolic.
+    #[arg(long, value_name = "S", default_value_t = 2, requires = "symbolic",
+          value_parser = clap::value_parser!(u32).range(0..=12))]
+    parameters_degree: u32,
     /// Show only what the known integrals (the file's named functions, --known, and products
     /// of known and found integrals) do not generate.
     #[arg(long)]
@@ -170,6 +185,11 @@ pub fn run(job: &SearchJob) -> anyhow::Result<bool> {
     let mut options = SearchOptions::new(space);
     options.condition = subject.condition(a.when.as_deref())?;
     options.fixed = subject.fixed(a.fix.as_deref())?;
+    if let Some(names) = &a.symbolic {
+        options.symbolic =
+            parse_symbolic(subject.system(), names).map_err(|e| anyhow!("--symbolic: {e}"))?;
+        options.space = options.space.parameters_degree(a.parameters_degree);
+    }
     options.new_only = a.new_only;
     if let Some(known) = &a.known {
         for k in known.split(',').map(str::trim).filter(|k| !k.is_empty()) {

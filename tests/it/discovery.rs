@@ -5,7 +5,9 @@
 
 use std::process::Command;
 
+use brackets::search::{search, SearchOptions, SearchSpace};
 use superint::system_file::{load, LimitsOverride};
+use trigpoly::{Expr, Rational};
 
 /// Every command of `docs/results.md`, by name.
 const COMMANDS: &[(&str, &str)] = &[
@@ -124,6 +126,16 @@ const COMMANDS: &[(&str, &str)] = &[
     (
         "su2",
         "superint closure systems/harmonic-rotor.toml F1 F2 L G1 G2 --degree 2",
+    ),
+    (
+        "hh-kdv",
+        "superint search systems/henon-heiles.toml --momenta-degree 2 --positions-degree 4 \
+         --trig-degree 0 --fix C=2 --symbolic A,B",
+    ),
+    (
+        "hh-generic",
+        "superint search systems/henon-heiles.toml --momenta-degree 2 --positions-degree 4 \
+         --trig-degree 0 --symbolic A,B,C",
     ),
 ];
 
@@ -494,4 +506,93 @@ fn su2_and_its_casimir() {
             "ω²L² + 2 F1 F2 + 4 G1² + G2² = F1² + F2²",
         ],
     );
+}
+
+#[test]
+fn henon_heiles_kdv_integral_for_every_a_and_b() {
+    expect(
+        "hh-kdv",
+        &[
+            "coefficients polynomials of degree ≤ 2 in A, B: 540 unknowns",
+            "Over the polynomials in A, B, 3 of the 10 basis integrals generate all of them",
+            "I7 = p_x² + p_y² + 2x²y + Ax² + 4y³ + By²",
+            "I10 = 4x p_x p_y − 4y p_x² − 4A p_y² + B p_y² + x⁴ + 4x²y² − 4Ax²y + 2Bx²y − \
+             16Ay³ + 4By³ − 4ABy² + B²y²",
+            "proved for every A, B, at C = 2",
+        ],
+    );
+    // The generator is the file's K, whose claim holds at C = 2 and is refuted elsewhere.
+    let file = system_file("henon-heiles.toml");
+    let var = |name: &str| file.system.vars().lookup(name).expect("a parameter");
+    let options = SearchOptions::new(SearchSpace::new(2, 4, 0).parameters_degree(2))
+        .fix(var("C"), Rational::from(2))
+        .symbolic(var("A"))
+        .symbolic(var("B"));
+    let r = search(&file.system, &options).expect("the search runs");
+    let generators: Vec<&Expr> = r
+        .module
+        .as_ref()
+        .expect("parameters kept symbolic")
+        .generators
+        .iter()
+        .map(|&i| r.basis[i].expr())
+        .collect();
+    let k = file.parse_argument("K").expect("K parses");
+    assert!(generators.contains(&&k), "{generators:?}");
+    assert!(r.basis.iter().all(|f| f.proved_fixed));
+}
+
+#[test]
+fn henon_heiles_with_c_symbolic_has_only_the_energy() {
+    // For C symbolic nothing but 1 and H is conserved: no quadratic integral holds for every C.
+    expect(
+        "hh-generic",
+        &[
+            "Over the polynomials in A, B, C, 2 of the 14 basis integrals generate all of them",
+            "I1 = 1",
+            "I11 = p_x² + p_y² + 2x²y + Ax² + 2Cy³ + By²",
+            "3 claims: 3 proved, 0 refuted",
+        ],
+    );
+}
+
+#[test]
+fn bad_search_arguments_exit_2_with_a_message() {
+    let file = "systems/henon-heiles.toml";
+    for (args, message) in [
+        (
+            vec!["--symbolic", "A,x"],
+            "--symbolic: 'x' is not a parameter of the system",
+        ),
+        (
+            vec!["--symbolic", "A", "--fix", "A=2"],
+            "A is both fixed to a value and kept symbolic",
+        ),
+        (
+            vec!["--fix", "C=0"],
+            "--fix: C = 0: parameters are fixed to nonzero values",
+        ),
+        (
+            vec!["--fix", "C=two"],
+            "--fix: 'two' is not a rational number",
+        ),
+        (
+            vec!["--symbolic", "A", "--new-only"],
+            "cannot be used with '--new-only'",
+        ),
+        (
+            vec!["--parameters-degree", "3"],
+            "required arguments were not provided",
+        ),
+    ] {
+        let out = Command::new(env!("CARGO_BIN_EXE_superint"))
+            .args(["search", file])
+            .args(&args)
+            .current_dir(env!("CARGO_MANIFEST_DIR"))
+            .output()
+            .expect("the superint binary runs");
+        let stderr = String::from_utf8_lossy(&out.stderr);
+        assert_eq!(out.status.code(), Some(2), "{args:?}: {stderr}");
+        assert!(stderr.contains(message), "{args:?}: {stderr}");
+    }
 }

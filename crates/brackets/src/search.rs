@@ -10,7 +10,12 @@
 //! The unknowns are the real coefficients of that basis, so the equations `{F, H} = 0` (after the
 //! condition) are linear over `Q`: the real and imaginary parts of the coefficients of
 //! `e^{ik·θ}` with `k ≥ 0`, the others being their conjugates. Parameters are fixed to rational
-//! values for the linear algebra ([`SearchOptions::fixed`], 1 by default). The system splits
+//! values for the linear algebra ([`SearchOptions::fixed`], 1 by default), or kept symbolic
+//! ([`SearchOptions::symbolic`]): then each basis function is also multiplied by the monomials
+//! of those parameters up to [`SearchSpace::parameters_degree`], the equations are the
+//! coefficients of every monomial in the variables *and* those parameters, and what is found
+//! holds for every value of them; [`SearchResult::module`] picks the integrals that generate
+//! the others over the polynomials in the parameters. The system splits
 //! into connected components (unknowns sharing an equation: for a quadratic Hamiltonian, one
 //! per degree and trigonometric order), each solved modulo a 62-bit prime, reconstructed and
 //! checked exactly ([`crate::modular::kernel`]). Every basis element is then proved by the
@@ -55,6 +60,8 @@ pub struct SearchSpace {
     pub trig_degree: u32,
     /// Whether coordinates may carry negative exponents (Laurent potentials such as `β/x²`).
     pub laurent: bool,
+    /// Total degree in the parameters kept symbolic ([`SearchOptions::symbolic`]).
+    pub parameters_degree: u32,
 }
 
 impl SearchSpace {
@@ -65,7 +72,15 @@ impl SearchSpace {
             positions_degree,
             trig_degree,
             laurent: false,
+            parameters_degree: 0,
         }
+    }
+
+    /// The same space with coefficients polynomial of total degree `≤ d` in the parameters
+    /// kept symbolic.
+    pub fn parameters_degree(mut self, d: u32) -> Self {
+        self.parameters_degree = d;
+        self
     }
 
     /// The same space with negative powers of the coordinates allowed.
@@ -82,13 +97,16 @@ pub struct SearchOptions {
     pub space: SearchSpace,
     /// The condition (a resonance), applied after the bracket.
     pub condition: Option<Condition>,
-    /// Values for parameters; every parameter of `H` or of the condition that is not listed
-    /// here is fixed to 1.
+    /// Values for parameters; every parameter of `H` or of the condition that is neither
+    /// listed here nor kept symbolic is fixed to 1.
     pub fixed: Vec<(Var, Rational)>,
+    /// Parameters kept symbolic: the coefficients of the integrals are polynomials in them.
+    pub symbolic: Vec<Var>,
     /// Known integrals (symbolic) for [`SearchOptions::new_only`]; the system's named
     /// functions that are real integrals are always used.
     pub known: Vec<(String, Expr)>,
-    /// Also find a complement of what products and sums of known and lower integrals give.
+    /// Also find a complement of what products and sums of known and lower integrals give
+    /// (with every parameter fixed: not together with [`SearchOptions::symbolic`]).
     pub new_only: bool,
 }
 
@@ -99,6 +117,7 @@ impl SearchOptions {
             space,
             condition: None,
             fixed: Vec::new(),
+            symbolic: Vec::new(),
             known: Vec::new(),
             new_only: false,
         }
@@ -114,6 +133,14 @@ impl SearchOptions {
     pub fn fix(mut self, v: Var, value: Rational) -> Self {
         self.fixed.retain(|f| f.0 != v);
         self.fixed.push((v, value));
+        self
+    }
+
+    /// With a parameter kept symbolic (see [`SearchSpace::parameters_degree`]).
+    pub fn symbolic(mut self, v: Var) -> Self {
+        if !self.symbolic.contains(&v) {
+            self.symbolic.push(v);
+        }
         self
     }
 
@@ -168,6 +195,19 @@ pub struct NewIntegrals {
     pub products: usize,
 }
 
+/// With parameters kept symbolic, the integrals found form a module over the polynomials in
+/// them: `A·I` is an integral whenever `I` is.
+#[derive(Clone, Debug)]
+pub struct ParameterModule {
+    /// The parameters kept symbolic.
+    pub parameters: Vec<Var>,
+    /// Indices into the basis of generators: the basis integrals that are not sums of
+    /// parameter multiples `a·J` (`a` a parameter, `J` an integral of the space) and of
+    /// earlier generators. Every integral of the space is a combination of them with
+    /// polynomial coefficients.
+    pub generators: Vec<usize>,
+}
+
 /// Seconds spent in each stage (reported, never used to decide anything).
 #[derive(Clone, Debug, Default)]
 pub struct SearchTimings {
@@ -209,6 +249,8 @@ pub struct SearchResult {
     pub basis: Vec<Integral>,
     /// The complement of the known integrals' products, if asked for.
     pub new: Option<NewIntegrals>,
+    /// With parameters kept symbolic, the generators over the polynomials in them.
+    pub module: Option<ParameterModule>,
     /// Timings.
     pub timings: SearchTimings,
 }
@@ -251,7 +293,8 @@ enum Trig {
 /// One real basis function `φ · trig(k·θ)`.
 #[derive(Clone, Debug)]
 struct Unknown {
-    /// Exponents of the planar coordinates and momenta (angles zero), over all variables.
+    /// Exponents of the planar coordinates and momenta and of the parameters kept symbolic
+    /// (angles zero), over all variables.
     phase: Vec<i64>,
     /// `k` over the angles, canonical (first nonzero entry positive), zero for `One`.
     k: Vec<i64>,
@@ -259,6 +302,7 @@ struct Unknown {
     momenta_degree: i64,
     positions_degree: i64,
     trig_degree: i64,
+    parameters_degree: i64,
 }
 
 /// The search problem at fixed parameter values.
@@ -305,6 +349,7 @@ impl Problem {
     fn new(
         system: &System,
         space: &SearchSpace,
+        symbolic: &[Var],
         h: Expr,
         cond: Option<Vec<(Var, Expr)>>,
     ) -> Result<Self, EngineError> {
@@ -327,47 +372,58 @@ impl Problem {
             .collect();
         let positions = exponent_vectors(coords.len(), space.positions_degree, space.laurent);
         let moms = exponent_vectors(momenta.len(), space.momenta_degree, false);
+        let params = exponent_vectors(symbolic.len(), space.parameters_degree, false);
         let ks: Vec<Vec<i64>> = exponent_vectors(angles.len(), space.trig_degree, true)
             .into_iter()
             .filter(|k| canonical(k))
             .collect();
         let mut unknowns = Vec::new();
-        for a in &positions {
-            for c in &moms {
-                let mut phase = vec![0i64; vars.len()];
-                for (v, e) in coords.iter().zip(a) {
-                    phase[v.index()] = *e;
-                }
-                for (v, e) in momenta.iter().zip(c) {
-                    phase[v.index()] = *e;
-                }
-                let momenta_degree = c.iter().sum();
-                let positions_degree = a.iter().map(|x| x.abs()).sum();
-                for k in &ks {
-                    let trig_degree: i64 = k.iter().map(|x| x.abs()).sum();
-                    let trigs: &[Trig] = if trig_degree == 0 {
-                        &[Trig::One]
-                    } else {
-                        &[Trig::Cos, Trig::Sin]
-                    };
-                    for &trig in trigs {
-                        unknowns.push(Unknown {
-                            phase: phase.clone(),
-                            k: k.clone(),
-                            trig,
-                            momenta_degree,
-                            positions_degree,
-                            trig_degree,
-                        });
-                    }
+        for (a, c, s) in itertools::iproduct!(&positions, &moms, &params) {
+            let mut phase = vec![0i64; vars.len()];
+            for (v, e) in coords
+                .iter()
+                .chain(&momenta)
+                .chain(symbolic)
+                .zip(a.iter().chain(c).chain(s))
+            {
+                phase[v.index()] = *e;
+            }
+            let momenta_degree = c.iter().sum();
+            let positions_degree = a.iter().map(|x| x.abs()).sum();
+            let parameters_degree = s.iter().sum();
+            for k in &ks {
+                let trig_degree: i64 = k.iter().map(|x| x.abs()).sum();
+                let trigs: &[Trig] = if trig_degree == 0 {
+                    &[Trig::One]
+                } else {
+                    &[Trig::Cos, Trig::Sin]
+                };
+                for &trig in trigs {
+                    unknowns.push(Unknown {
+                        phase: phase.clone(),
+                        k: k.clone(),
+                        trig,
+                        momenta_degree,
+                        positions_degree,
+                        trig_degree,
+                        parameters_degree,
+                    });
                 }
             }
         }
         // The order decides which basis comes out: each kernel vector ends at its own unknown
         // and uses only earlier ones, so simpler unknowns come first.
         unknowns.sort_by(|a, b| {
-            (a.momenta_degree, a.trig_degree, a.positions_degree)
-                .cmp(&(b.momenta_degree, b.trig_degree, b.positions_degree))
+            let key = |u: &Unknown| {
+                (
+                    u.momenta_degree,
+                    u.trig_degree,
+                    u.positions_degree,
+                    u.parameters_degree,
+                )
+            };
+            key(a)
+                .cmp(&key(b))
                 .then_with(|| b.k.cmp(&a.k))
                 .then_with(|| a.phase.cmp(&b.phase))
                 .then_with(|| a.trig.cmp(&b.trig))
@@ -542,11 +598,13 @@ impl Components {
     }
 }
 
-/// Every parameter of `h` or of the condition, with its value (given, or 1).
+/// Every parameter of `h` or of the condition that is not kept symbolic, with its value
+/// (given, or 1).
 fn parameter_values(
     system: &System,
     condition: Option<&Condition>,
     given: &[(Var, Rational)],
+    symbolic: &[Var],
 ) -> Vec<(Var, Rational)> {
     let vars = system.vars();
     let mut exprs = vec![system.hamiltonian().clone()];
@@ -555,7 +613,7 @@ fn parameter_values(
     }
     let mut out: Vec<(Var, Rational)> = Vec::new();
     for v in vars.vars() {
-        if vars.variable(v).kind() != VarKind::Parameter {
+        if vars.variable(v).kind() != VarKind::Parameter || symbolic.contains(&v) {
             continue;
         }
         let value = given.iter().find(|g| g.0 == v).map(|g| g.1.clone());
@@ -599,7 +657,28 @@ pub fn search(system: &System, options: &SearchOptions) -> Result<SearchResult, 
     let start = Instant::now();
     let mut timings = SearchTimings::default();
     let condition = options.condition.as_ref();
-    let parameters = parameter_values(system, condition, &options.fixed);
+    let vars = system.vars();
+    if options.new_only && !options.symbolic.is_empty() {
+        return Err(EngineError::Invalid(
+            "the complement of known integrals (new only) is found with every parameter fixed; \
+             it does not take parameters kept symbolic"
+                .into(),
+        ));
+    }
+    for &v in &options.symbolic {
+        let name = vars.variable(v).name();
+        if vars.variable(v).kind() != VarKind::Parameter {
+            return Err(EngineError::Invalid(format!(
+                "only parameters can be kept symbolic, and {name} is not one"
+            )));
+        }
+        if options.fixed.iter().any(|f| f.0 == v) {
+            return Err(EngineError::Invalid(format!(
+                "{name} is both fixed to a value and kept symbolic"
+            )));
+        }
+    }
+    let parameters = parameter_values(system, condition, &options.fixed, &options.symbolic);
     let h = fix_parameters(system.hamiltonian(), &parameters)?;
     let cond_fixed = match condition {
         Some(c) => Some(
@@ -610,7 +689,7 @@ pub fn search(system: &System, options: &SearchOptions) -> Result<SearchResult, 
         ),
         None => None,
     };
-    let problem = Problem::new(system, &options.space, h, cond_fixed)?;
+    let problem = Problem::new(system, &options.space, &options.symbolic, h, cond_fixed)?;
     let n = problem.unknowns.len();
 
     // The images {φ_j, H} as real equations over Q.
@@ -699,6 +778,8 @@ pub fn search(system: &System, options: &SearchOptions) -> Result<SearchResult, 
             .expect("a kernel vector is not zero");
         let reference = problem.leading_exponents(lead);
         let symbolic = match &lifter {
+            // Nothing was fixed: the integral found is the symbolic one.
+            _ if parameters.is_empty() => proved_fixed.then(|| fixed.clone()),
             Some(l) => lift_and_prove(system, condition, l, &scaling, &fixed, Some(&reference))?,
             None => None,
         };
@@ -733,6 +814,14 @@ pub fn search(system: &System, options: &SearchOptions) -> Result<SearchResult, 
         None
     };
     timings.new_only = t.elapsed().as_secs_f64();
+    let module = if options.symbolic.is_empty() {
+        None
+    } else {
+        Some(ParameterModule {
+            parameters: options.symbolic.clone(),
+            generators: module_generators(&problem, &options.symbolic, &kernel, &basis)?,
+        })
+    };
     timings.total = start.elapsed().as_secs_f64();
     Ok(SearchResult {
         space: options.space,
@@ -746,8 +835,43 @@ pub fn search(system: &System, options: &SearchOptions) -> Result<SearchResult, 
         largest_component,
         basis,
         new,
+        module,
         timings,
     })
+}
+
+/// The basis integrals that generate the space over the polynomials in the `symbolic`
+/// parameters: those outside the span of the multiples `a·I` (`a` a symbolic parameter, `I`
+/// a basis integral, when `a·I` lies in the space) and of the earlier generators. The span of
+/// those multiples is every sum of parameter multiples of integrals in the space, since a
+/// product by a monomial of higher degree is a product by one parameter of an integral that
+/// lies in the space.
+fn module_generators(
+    problem: &Problem,
+    symbolic: &[Var],
+    kernel: &[SparseVec<Rational>],
+    basis: &[Integral],
+) -> Result<Vec<usize>, EngineError> {
+    let vars = &problem.vars;
+    let mut span = Echelon::<Rational>::new(problem.unknowns.len());
+    let mut id = 0;
+    for f in basis {
+        for &a in symbolic {
+            let product = f.fixed.checked_mul(&Expr::var(vars, a))?;
+            if let Some(v) = problem.coordinates(&product) {
+                span.insert(id, &v);
+                id += 1;
+            }
+        }
+    }
+    let mut generators = Vec::new();
+    for (k, v) in kernel.iter().enumerate() {
+        if span.insert(id, v).is_none() {
+            generators.push(k);
+        }
+        id += 1;
+    }
+    Ok(generators)
 }
 
 /// Lifts an integral found at fixed values and proves `{F, H} = 0` symbolically (after the
@@ -1036,6 +1160,58 @@ mod tests {
         assert!(r.basis.iter().all(|f| f.trig_degree == 0));
         // 1, L and the quadratic H_x, H_y, G1 (times 2M) and L².
         assert_eq!(r.basis.len(), 6);
+    }
+
+    /// The harmonic rotor at 1:1, integrals linear in the momenta: found at `M = ω = I = 1`
+    /// and lifted by homogeneity, or found with `M, ω, I` symbolic (coefficients of degree
+    /// `≤ 2` in them), the generators are the same six functions.
+    #[test]
+    fn symbolic_parameters_find_the_lifted_basis() {
+        let rotor = systems::harmonic_rotor();
+        let space = SearchSpace::new(1, 1, 1);
+        let resonance = rotor.resonance(1, 1).unwrap();
+        let lifted = search(&rotor, &SearchOptions::new(space).when(resonance.clone())).unwrap();
+        assert!(lifted.all_symbolic() && lifted.module.is_none());
+        let mut options = SearchOptions::new(space.parameters_degree(2)).when(resonance);
+        for p in ["M", "omega", "I"] {
+            options = options.symbolic(rotor.var(p));
+        }
+        let r = search(&rotor, &options).unwrap();
+        assert!(r.parameters.is_empty() && r.all_symbolic());
+        // 1, L and the four trigonometric ones, each also times 1, M, ω, I, M², Mω, ….
+        assert_eq!(r.basis.len(), 24);
+        let module = r.module.as_ref().unwrap();
+        let generators: Vec<&Expr> = module
+            .generators
+            .iter()
+            .map(|&i| r.basis[i].expr())
+            .collect();
+        let expected: Vec<&Expr> = lifted.basis.iter().map(Integral::expr).collect();
+        assert_eq!(generators, expected);
+    }
+
+    #[test]
+    fn a_parameter_is_either_fixed_or_symbolic() {
+        let rotor = systems::harmonic_rotor();
+        let m = rotor.var("M");
+        let options = SearchOptions::new(SearchSpace::new(1, 1, 0))
+            .fix(m, Rational::from(2))
+            .symbolic(m);
+        let err = search(&rotor, &options).unwrap_err().to_string();
+        assert!(
+            err.contains("M is both fixed to a value and kept symbolic"),
+            "{err}"
+        );
+        let options = SearchOptions::new(SearchSpace::new(1, 1, 0)).symbolic(rotor.var("x"));
+        let err = search(&rotor, &options).unwrap_err().to_string();
+        assert!(
+            err.contains("only parameters can be kept symbolic"),
+            "{err}"
+        );
+        let options = SearchOptions::new(SearchSpace::new(1, 1, 0))
+            .symbolic(m)
+            .new_only();
+        assert!(search(&rotor, &options).is_err());
     }
 
     #[test]
