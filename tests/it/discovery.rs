@@ -584,6 +584,19 @@ fn bad_search_arguments_exit_2_with_a_message() {
             vec!["--parameters-degree", "3"],
             "required arguments were not provided",
         ),
+        (
+            vec![
+                "--positions-degree",
+                "4",
+                "--trig-degree",
+                "0",
+                "--symbolic",
+                "A,B",
+                "--max-terms",
+                "500",
+            ],
+            "the space has 540 unknowns, more than the term limit 500",
+        ),
     ] {
         let out = Command::new(env!("CARGO_BIN_EXE_superint"))
             .args(["search", file])

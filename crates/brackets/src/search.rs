@@ -377,7 +377,24 @@ impl Problem {
             .into_iter()
             .filter(|k| canonical(k))
             .collect();
-        let mut unknowns = Vec::new();
+        // Each angular vector gives cos and sin, except k = 0.
+        let trig_functions: usize = ks
+            .iter()
+            .map(|k| if k.iter().all(|x| *x == 0) { 1 } else { 2 })
+            .sum();
+        let count = positions
+            .len()
+            .saturating_mul(moms.len())
+            .saturating_mul(params.len())
+            .saturating_mul(trig_functions);
+        let limit = vars.limits().max_terms;
+        if count > limit {
+            return Err(EngineError::Invalid(format!(
+                "the space has {count} unknowns, more than the term limit {limit}: search a \
+                 smaller space, or raise the limit (--max-terms)"
+            )));
+        }
+        let mut unknowns = Vec::with_capacity(count);
         for (a, c, s) in itertools::iproduct!(&positions, &moms, &params) {
             let mut phase = vec![0i64; vars.len()];
             for (v, e) in coords
