@@ -200,19 +200,18 @@ pub fn search_report(
     };
     let mut entries = Vec::new();
     if let Some(m) = &r.module {
-        shown.retain(|i| m.generators.contains(i));
+        let shown_text = if r.new.is_some() {
+            "Below, parameter multiples of integrals count as generated."
+        } else {
+            shown.retain(|i| m.generators.contains(i));
+            "Shown: the generators."
+        };
         entries.push(Entry::Text(format!(
             "Over the polynomials in `{}`, {} of the {} basis integrals generate all of them: \
-             each of the others is a sum of parameter multiples of integrals. Shown: the \
-             generators{}.",
+             each of the others is a sum of parameter multiples of integrals. {shown_text}",
             parameter_names(vars, &m.parameters),
             m.generators.len(),
             r.basis.len(),
-            if r.new.is_some() {
-                " that are also new"
-            } else {
-                ""
-            }
         )));
     }
     if let Some(n) = &r.new {

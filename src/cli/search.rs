@@ -71,14 +71,14 @@ pub struct SearchArgs {
     /// Parameters kept symbolic, such as A,B: the coefficients of the integrals are then
     /// polynomials in them (of total degree at most --parameters-degree), and what is found
     /// holds for every value of them.
-    #[arg(long, value_name = "PARAMS", conflicts_with = "new_only")]
+    #[arg(long, value_name = "PARAMS")]
     symbolic: Option<String>,
     /// Total degree in the parameters kept symbolic.
     #[arg(long, value_name = "S", default_value_t = 2, requires = "symbolic",
           value_parser = clap::value_parser!(u32).range(0..=12))]
     parameters_degree: u32,
     /// Show only what the known integrals (the file's named functions, --known, and products
-    /// of known and found integrals) do not generate.
+    /// of known and found integrals; with --symbolic, parameter multiples too) do not generate.
     #[arg(long)]
     new_only: bool,
     /// More known integrals for --new-only: expressions or family instances (P_1_1),

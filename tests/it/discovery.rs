@@ -577,10 +577,6 @@ fn bad_search_arguments_exit_2_with_a_message() {
             "--fix: 'two' is not a rational number",
         ),
         (
-            vec!["--symbolic", "A", "--new-only"],
-            "cannot be used with '--new-only'",
-        ),
-        (
             vec!["--parameters-degree", "3"],
             "required arguments were not provided",
         ),
