@@ -41,6 +41,7 @@ use std::collections::HashMap;
 use std::sync::Arc;
 use std::time::Instant;
 
+use itertools::Itertools;
 use trigpoly::{Expr, GaussianRational, Rational, Var, VarKind, VarSet};
 
 use crate::claim::Condition;
@@ -674,6 +675,11 @@ pub fn search(system: &System, options: &SearchOptions) -> Result<SearchResult, 
     let start = Instant::now();
     let mut timings = SearchTimings::default();
     let condition = options.condition.as_ref();
+    // A parameter named twice is kept symbolic once.
+    let options = &SearchOptions {
+        symbolic: options.symbolic.iter().copied().unique().collect(),
+        ..options.clone()
+    };
     let vars = system.vars();
     for &v in &options.symbolic {
         let name = vars.variable(v).name();
@@ -1250,6 +1256,24 @@ mod tests {
             err.contains("only parameters can be kept symbolic"),
             "{err}"
         );
+    }
+
+    #[test]
+    fn a_parameter_named_twice_is_kept_symbolic_once() {
+        let rotor = systems::harmonic_rotor();
+        let (m, omega) = (rotor.var("M"), rotor.var("omega"));
+        let space = SearchSpace::new(1, 1, 0).parameters_degree(2);
+        let once = search(
+            &rotor,
+            &SearchOptions::new(space).symbolic(m).symbolic(omega),
+        )
+        .unwrap();
+        let mut options = SearchOptions::new(space);
+        options.symbolic = vec![m, m, omega, m];
+        let twice = search(&rotor, &options).unwrap();
+        assert_eq!(twice.unknowns, once.unknowns);
+        assert_eq!(twice.basis.len(), once.basis.len());
+        assert_eq!(twice.module.unwrap().parameters, [m, omega]);
     }
 
     /// At 1:1 the new integrals are the four linear ones whether the parameters are fixed and
