@@ -593,6 +593,9 @@ pub fn parse_fixed(system: &System, text: &str) -> Result<Vec<(Var, Rational)>, 
         };
         let name = name.trim();
         let v = parameter(system, name)?;
+        if out.iter().any(|(w, _)| *w == v) {
+            return Err(format!("'{name}' is given two values"));
+        }
         let q: Rational = value
             .trim()
             .parse()

@@ -577,6 +577,10 @@ fn bad_search_arguments_exit_2_with_a_message() {
             "--fix: 'two' is not a rational number",
         ),
         (
+            vec!["--fix", "A=2,B=1,A=3"],
+            "--fix: 'A' is given two values",
+        ),
+        (
             vec!["--parameters-degree", "3"],
             "required arguments were not provided",
         ),
