@@ -179,7 +179,12 @@ impl IntegerRing for GaussianInteger {
     }
     #[inline]
     fn add(&self, o: &Self) -> Self {
-        GaussianInteger::new(&self.re + &o.re, &self.im + &o.im)
+        if let Some((a, b, c, d)) = word_parts(self, o) {
+            if let (Some(re), Some(im)) = (a.checked_add(c), b.checked_add(d)) {
+                return GaussianInteger::new(Integer::Small(re), Integer::Small(im));
+            }
+        }
+        self.add_beyond_words(o)
     }
     fn sub(&self, o: &Self) -> Self {
         GaussianInteger::new(&self.re - &o.re, &self.im - &o.im)
@@ -187,12 +192,10 @@ impl IntegerRing for GaussianInteger {
     // (a + bi)(c + di) = (ac − bd) + (ad + bc)i
     #[inline]
     fn mul(&self, o: &Self) -> Self {
-        if let (Integer::Small(a), Integer::Small(b), Integer::Small(c), Integer::Small(d)) =
-            (&self.re, &self.im, &o.re, &o.im)
-        {
+        if let Some((a, b, c, d)) = word_parts(self, o) {
             // Products and sums that stay in a word are words (the canonical tier) at once.
-            let re = a.checked_mul(*c).zip(b.checked_mul(*d));
-            let im = a.checked_mul(*d).zip(b.checked_mul(*c));
+            let re = a.checked_mul(c).zip(b.checked_mul(d));
+            let im = a.checked_mul(d).zip(b.checked_mul(c));
             if let (Some(re), Some(im)) = (
                 re.and_then(|(ac, bd)| ac.checked_sub(bd)),
                 im.and_then(|(ad, bc)| ad.checked_add(bc)),
@@ -200,24 +203,7 @@ impl IntegerRing for GaussianInteger {
                 return GaussianInteger::new(Integer::Small(re), Integer::Small(im));
             }
         }
-        if let (Some((a, b)), Some((c, d))) = (self.to_small(), o.to_small()) {
-            // Word-sized parts: each product fits an i128, and so does each sum except at
-            // the edge, (−2⁶³)² + (−2⁶³)² = 2¹²⁷, which goes the general way below.
-            let (a, b, c, d) = (a as i128, b as i128, c as i128, d as i128);
-            if let (Some(re), Some(im)) = ((a * c).checked_sub(b * d), (a * d).checked_add(b * c)) {
-                return GaussianInteger::new(Integer::from_i128(re), Integer::from_i128(im));
-            }
-        }
-        if self.im.is_zero() {
-            return GaussianInteger::new(&self.re * &o.re, &self.re * &o.im);
-        }
-        if o.im.is_zero() {
-            return GaussianInteger::new(&self.re * &o.re, &self.im * &o.re);
-        }
-        GaussianInteger::new(
-            &self.re * &o.re - &self.im * &o.im,
-            &self.re * &o.im + &self.im * &o.re,
-        )
+        self.mul_beyond_words(o)
     }
     fn neg(&self) -> Self {
         GaussianInteger::new(-&self.re, -&self.im)
@@ -230,14 +216,7 @@ impl IntegerRing for GaussianInteger {
                 return GaussianInteger::new(Integer::Small(x), Integer::Small(y));
             }
         }
-        if let (Some((a, b)), Some(k)) = (self.to_small(), k.to_i64()) {
-            let k = k as i128;
-            return GaussianInteger::new(
-                Integer::from_i128(a as i128 * k),
-                Integer::from_i128(b as i128 * k),
-            );
-        }
-        GaussianInteger::new(&self.re * k, &self.im * k)
+        self.scale_beyond_words(k)
     }
     #[inline]
     fn div_exact(&self, k: &ExactDivisor) -> Self {
@@ -269,6 +248,61 @@ impl IntegerRing for GaussianInteger {
     }
     fn acc_finish(acc: GaussianAcc) -> Self {
         acc.finish()
+    }
+}
+
+/// The parts `(a, b, c, d)` of `a + bi` and `c + di` when all four are machine words.
+#[inline]
+fn word_parts(x: &GaussianInteger, y: &GaussianInteger) -> Option<(i64, i64, i64, i64)> {
+    match (&x.re, &x.im, &y.re, &y.im) {
+        (Integer::Small(a), Integer::Small(b), Integer::Small(c), Integer::Small(d)) => {
+            Some((*a, *b, *c, *d))
+        }
+        _ => None,
+    }
+}
+
+/// The paths of Gaussian sums and products beyond machine words, out of line so that the
+/// word paths of [`IntegerRing::add`], [`IntegerRing::mul`] and [`IntegerRing::scale`] inline
+/// into the kernels.
+impl GaussianInteger {
+    #[inline(never)]
+    fn mul_beyond_words(&self, o: &Self) -> Self {
+        if let (Some((a, b)), Some((c, d))) = (self.to_small(), o.to_small()) {
+            // Word-sized parts: each product fits an i128, and so does each sum except at
+            // the edge, (−2⁶³)² + (−2⁶³)² = 2¹²⁷, which goes the general way below.
+            let (a, b, c, d) = (a as i128, b as i128, c as i128, d as i128);
+            if let (Some(re), Some(im)) = ((a * c).checked_sub(b * d), (a * d).checked_add(b * c)) {
+                return GaussianInteger::new(Integer::from_i128(re), Integer::from_i128(im));
+            }
+        }
+        if self.im.is_zero() {
+            return GaussianInteger::new(&self.re * &o.re, &self.re * &o.im);
+        }
+        if o.im.is_zero() {
+            return GaussianInteger::new(&self.re * &o.re, &self.im * &o.re);
+        }
+        GaussianInteger::new(
+            &self.re * &o.re - &self.im * &o.im,
+            &self.re * &o.im + &self.im * &o.re,
+        )
+    }
+
+    #[inline(never)]
+    fn add_beyond_words(&self, o: &Self) -> Self {
+        GaussianInteger::new(&self.re + &o.re, &self.im + &o.im)
+    }
+
+    #[inline(never)]
+    fn scale_beyond_words(&self, k: &Integer) -> Self {
+        if let (Some((a, b)), Some(k)) = (self.to_small(), k.to_i64()) {
+            let k = k as i128;
+            return GaussianInteger::new(
+                Integer::from_i128(a as i128 * k),
+                Integer::from_i128(b as i128 * k),
+            );
+        }
+        GaussianInteger::new(&self.re * k, &self.im * k)
     }
 }
 

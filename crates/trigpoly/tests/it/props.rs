@@ -256,10 +256,11 @@ fn point() -> impl Strategy<Value = Point> {
         })
 }
 
-/// Products of Gaussian integers whose components are all ±2⁶³ (`i64::MIN`, or one past
-/// `i64::MAX`), every sign pattern: with all four `i64::MIN`, `ad + bc = 2¹²⁷` passes `i128`.
+/// Sums, products and scalings of Gaussian integers whose components are all ±2⁶³
+/// (`i64::MIN`, or one past `i64::MAX`), every sign pattern: with all four `i64::MIN`,
+/// `ad + bc = 2¹²⁷` passes `i128`, and every sum of two `i64::MIN` passes `i64`.
 #[test]
-fn gaussian_products_at_the_edge_of_the_machine_words() {
+fn gaussian_arithmetic_at_the_edge_of_the_machine_words() {
     use trigpoly::{GaussianInteger, IntegerRing};
     for signs in 0..16u32 {
         let edge = |k: u32| {
@@ -277,6 +278,18 @@ fn gaussian_products_at_the_edge_of_the_machine_words() {
         assert_eq!(
             (p.re.to_bigint(), p.im.to_bigint()),
             (&a * &c - &b * &d, &a * &d + &b * &c),
+            "signs {signs:04b}"
+        );
+        let s = x.add(&y);
+        assert_eq!(
+            (s.re.to_bigint(), s.im.to_bigint()),
+            (&a + &c, &b + &d),
+            "signs {signs:04b}"
+        );
+        let k = x.scale(&Integer::from(c.clone()));
+        assert_eq!(
+            (k.re.to_bigint(), k.im.to_bigint()),
+            (&a * &c, &b * &c),
             "signs {signs:04b}"
         );
     }
