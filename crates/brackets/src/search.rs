@@ -306,7 +306,7 @@ struct Unknown {
     parameters_degree: i64,
 }
 
-/// The search problem at fixed parameter values.
+/// The search problem, with the parameters that are not kept symbolic at fixed values.
 struct Problem {
     vars: Arc<VarSet>,
     angles: Vec<Var>,
