@@ -133,6 +133,21 @@ const COMMANDS: &[(&str, &str)] = &[
          --trig-degree 0 --fix C=2 --symbolic A,B",
     ),
     (
+        "hh-separable",
+        "superint search systems/henon-heiles.toml --momenta-degree 2 --positions-degree 4 \
+         --trig-degree 0 --when 'B = A, C = 1/3' --symbolic A",
+    ),
+    (
+        "hh-quartic",
+        "superint search systems/henon-heiles.toml --momenta-degree 4 --positions-degree 6 \
+         --trig-degree 0 --when 'B = 16*A, C = 16/3' --symbolic A",
+    ),
+    (
+        "hh-quartic-new",
+        "superint search systems/henon-heiles.toml --momenta-degree 4 --positions-degree 6 \
+         --trig-degree 0 --when 'B = 16*A, C = 16/3' --symbolic A --new-only",
+    ),
+    (
         "hh-generic",
         "superint search systems/henon-heiles.toml --momenta-degree 2 --positions-degree 4 \
          --trig-degree 0 --symbolic A,B,C",
@@ -581,6 +596,10 @@ fn bad_search_arguments_exit_2_with_a_message() {
             "--fix: 'A' is given two values",
         ),
         (
+            vec!["--when", "C = 2", "--fix", "C=3"],
+            "C is set by the condition; it can be neither fixed nor kept symbolic",
+        ),
+        (
             vec!["--parameters-degree", "3"],
             "required arguments were not provided",
         ),
@@ -608,4 +627,74 @@ fn bad_search_arguments_exit_2_with_a_message() {
         assert_eq!(out.status.code(), Some(2), "{args:?}: {stderr}");
         assert!(stderr.contains(message), "{args:?}: {stderr}");
     }
+}
+
+/// A parameter set by the condition takes the condition's value: `--when 'C = 2'` finds what
+/// `--fix C=2` finds (it was fixed to 1 first, and the search ran at `C = 1`).
+#[test]
+fn a_parameter_set_by_the_condition_is_not_fixed_first() {
+    let file = system_file("henon-heiles.toml");
+    let vars = file.system.vars();
+    let var = |name: &str| vars.lookup(name).expect("a parameter");
+    let space = SearchSpace::new(2, 4, 0).parameters_degree(2);
+    let symbolic = SearchOptions::new(space)
+        .symbolic(var("A"))
+        .symbolic(var("B"));
+    let two = || Expr::constant(vars, trigpoly::GaussianRational::from(2));
+    let by_condition = search(
+        &file.system,
+        &symbolic
+            .clone()
+            .when(brackets::Condition::new("C = 2", var("C"), two())),
+    )
+    .expect("the search runs");
+    let by_value =
+        search(&file.system, &symbolic.fix(var("C"), Rational::from(2))).expect("the search runs");
+    let generators = |r: &brackets::search::SearchResult| -> Vec<String> {
+        let module = r.module.as_ref().expect("parameters kept symbolic");
+        module
+            .generators
+            .iter()
+            .map(|&i| r.basis[i].expr().to_string())
+            .collect()
+    };
+    assert!(by_condition.parameters.is_empty());
+    assert_eq!(generators(&by_condition), generators(&by_value));
+    assert_eq!(generators(&by_condition).len(), 3);
+}
+
+#[test]
+fn henon_heiles_separable_and_quartic_cases_for_every_a() {
+    let file = system_file("henon-heiles.toml");
+    let printed = |name: &str| normalize(&file.parse_argument(name).expect("parses").to_string());
+    let out = expect(
+        "hh-separable",
+        &[
+            "Over the polynomials in A, 3 of the 7 basis integrals generate all of them",
+            "{I4, H} = 0 at B = A, C = 1/3",
+        ],
+    );
+    assert!(
+        normalize(&out).contains(&format!("I4 = {}", printed("S"))),
+        "{out}"
+    );
+    let out = expect(
+        "hh-quartic",
+        &[
+            "Over the polynomials in A, 4 of the 7 basis integrals generate all of them",
+            "{I6, H} = 0 at B = 16A, C = 16/3",
+        ],
+    );
+    assert!(
+        normalize(&out).contains(&format!("I6 = {}", printed("Q"))),
+        "{out}"
+    );
+    expect(
+        "hh-quartic-new",
+        &[
+            "Known integrals in the space: H, Q.",
+            "the generated ones span 7 of the 7 dimensions",
+            "None: the known integrals generate every integral in the space.",
+        ],
+    );
 }

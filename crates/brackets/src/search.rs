@@ -616,8 +616,8 @@ impl Components {
     }
 }
 
-/// Every parameter of `h` or of the condition that is not kept symbolic, with its value
-/// (given, or 1).
+/// Every parameter of `h` or of the condition that is neither kept symbolic nor set by the
+/// condition, with its value (given, or 1).
 fn parameter_values(
     system: &System,
     condition: Option<&Condition>,
@@ -631,7 +631,11 @@ fn parameter_values(
     }
     let mut out: Vec<(Var, Rational)> = Vec::new();
     for v in vars.vars() {
-        if vars.variable(v).kind() != VarKind::Parameter || symbolic.contains(&v) {
+        let set_by_condition = condition.is_some_and(|c| c.subs.iter().any(|s| s.0 == v));
+        if vars.variable(v).kind() != VarKind::Parameter
+            || symbolic.contains(&v)
+            || set_by_condition
+        {
             continue;
         }
         let value = given.iter().find(|g| g.0 == v).map(|g| g.1.clone());
@@ -692,6 +696,18 @@ pub fn search(system: &System, options: &SearchOptions) -> Result<SearchResult, 
             return Err(EngineError::Invalid(format!(
                 "{name} is both fixed to a value and kept symbolic"
             )));
+        }
+    }
+    // A parameter the condition sets takes its value from the condition (after the bracket,
+    // like a resonance): fixing it first would search at another value.
+    if let Some(c) = &options.condition {
+        for (v, _) in &c.subs {
+            let name = vars.variable(*v).name();
+            if options.fixed.iter().any(|f| f.0 == *v) || options.symbolic.contains(v) {
+                return Err(EngineError::Invalid(format!(
+                    "{name} is set by the condition; it can be neither fixed nor kept symbolic"
+                )));
+            }
         }
     }
     let parameters = parameter_values(system, condition, &options.fixed, &options.symbolic);
