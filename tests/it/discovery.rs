@@ -666,28 +666,32 @@ fn a_parameter_set_by_the_condition_is_not_fixed_first() {
 #[test]
 fn henon_heiles_separable_and_quartic_cases_for_every_a() {
     let file = system_file("henon-heiles.toml");
-    let printed = |name: &str| normalize(&file.parse_argument(name).expect("parses").to_string());
-    let out = expect(
+    // The command prints the integral `label` as the file states `function`.
+    let prints = |command: &str, pieces: &[&str], label: &str, function: &str| {
+        let out = normalize(&expect(command, pieces));
+        let f = file.parse_argument(function).expect("parses").to_string();
+        assert!(
+            out.contains(&format!("{label} = {}", normalize(&f))),
+            "{out}"
+        );
+    };
+    prints(
         "hh-separable",
         &[
             "Over the polynomials in A, 3 of the 7 basis integrals generate all of them",
             "{I4, H} = 0 at B = A, C = 1/3",
         ],
+        "I4",
+        "S",
     );
-    assert!(
-        normalize(&out).contains(&format!("I4 = {}", printed("S"))),
-        "{out}"
-    );
-    let out = expect(
+    prints(
         "hh-quartic",
         &[
             "Over the polynomials in A, 4 of the 7 basis integrals generate all of them",
             "{I6, H} = 0 at B = 16A, C = 16/3",
         ],
-    );
-    assert!(
-        normalize(&out).contains(&format!("I6 = {}", printed("Q"))),
-        "{out}"
+        "I6",
+        "Q",
     );
     expect(
         "hh-quartic-new",
