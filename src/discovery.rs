@@ -88,15 +88,25 @@ fn space_text(r: &SearchResult) -> String {
         ),
         None => String::new(),
     };
+    // Without angles there is no trigonometric part and no angular momentum to leave out.
+    let angles = r.vars.angles().next().is_some();
+    let (trig_factor, trig_order, angular) = if angles {
+        (
+            " times `1, cos kθ, sin kθ`".to_string(),
+            format!(", trigonometric order `k ≤ {}`", s.trig_degree),
+            " Angular momenta are left out: on a resonance surface they are constants, and \
+             every function of them is an integral.",
+        )
+    } else {
+        (String::new(), String::new(), "")
+    };
     format!(
-        "The space: `x^a y^b p_x^c p_y^d` times `1, cos kθ, sin kθ`, with momenta degree \
-         `c + d ≤ {}`, positions degree `|a| + |b| ≤ {}`{laurent}, trigonometric order \
-         `k ≤ {}`{symbolic}: {} unknowns, {} linear equations over `Q`, in {} independent blocks (the \
-         largest has {} unknowns). Angular momenta are left out: on a resonance surface they \
-         are constants, and every function of them is an integral.",
+        "The space: `x^a y^b p_x^c p_y^d`{trig_factor}, with momenta degree `c + d ≤ {}`, \
+         positions degree `|a| + |b| ≤ {}`{laurent}{trig_order}{symbolic}: {} unknowns, {} \
+         linear equations over `Q`, in {} independent blocks (the largest has {} \
+         unknowns).{angular}",
         s.momenta_degree,
         s.positions_degree,
-        s.trig_degree,
         r.unknowns,
         r.equations,
         r.components,
@@ -173,12 +183,19 @@ pub fn search_report(
         by_degree.join(", ")
     )));
     let counts = r.counts();
+    let angles = vars.angles().next().is_some();
     for (j, row) in counts.iter().enumerate() {
         let parts: Vec<String> = row
             .iter()
             .enumerate()
             .filter(|(_, c)| **c > 0)
-            .map(|(k, c)| format!("{c} of order {k}"))
+            .map(|(k, c)| {
+                if angles {
+                    format!("{c} of order {k}")
+                } else {
+                    c.to_string()
+                }
+            })
             .collect();
         if !parts.is_empty() {
             entries.push(Entry::Text(format!(
