@@ -528,7 +528,10 @@ fn henon_heiles_kdv_integral_for_every_a_and_b() {
     expect(
         "hh-kdv",
         &[
-            "coefficients polynomials of degree ≤ 2 in A, B: 540 unknowns",
+            // No angles: no trigonometric part in the space or the counts.
+            "The space: x^a y^b p_x^c p_y^d, with momenta degree c + d ≤ 2, positions degree \
+             |a| + |b| ≤ 4, coefficients polynomials of degree ≤ 2 in A, B: 540 unknowns",
+            "Momenta degree exactly 2: 4.",
             "Over the polynomials in A, B, 3 of the 10 basis integrals generate all of them",
             "I7 = p_x² + p_y² + 2x²y + Ax² + 4y³ + By²",
             "I10 = 4x p_x p_y − 4y p_x² − 4A p_y² + B p_y² + x⁴ + 4x²y² − 4Ax²y + 2Bx²y − \
