@@ -41,7 +41,7 @@ FULL = [("tower", 24, "superint superint2 flint singular"),
         ("single", 80, "superint superint2 flint singular"),
         ("fateman", 20, "superint superint2 flint singular"),
         ("pearce", 12, "superint superint2 flint singular"),
-        ("algebra", 1000, "superint flint singular"),
+        ("algebra", 1000, "superint superint2 flint singular"),
         ("tower", 8, "superint sympy"), ("single", 20, "superint sympy"),
         ("fateman", 10, "superint sympy"), ("pearce", 4, "superint sympy"),
         ("algebra", 100, "superint sympy")]
@@ -49,7 +49,7 @@ QUICK = [("tower", 8, "superint superint2 flint singular sympy"),
          ("single", 20, "superint superint2 flint singular sympy"),
          ("fateman", 10, "superint superint2 flint singular sympy"),
          ("pearce", 4, "superint superint2 flint singular sympy"),
-         ("algebra", 100, "superint flint singular sympy")]
+         ("algebra", 100, "superint superint2 flint singular sympy")]
 # the goal rows: every workload at its defined sizes
 GOAL = [("tower", 8), ("tower", 16), ("tower", 24), ("single", 40), ("single", 80),
         ("fateman", 20), ("pearce", 12), ("algebra", 1000)]
@@ -61,7 +61,7 @@ EXPECTED_ZEROS = {"tower": lambda n: 2 * n * n, "single": lambda n: 2, "fateman"
 def command(tool, workload, size):
     if tool == "superint":
         return [SUPERINT, "bench", workload, str(size)], None
-    if tool == "superint2":  # the same on two threads (W1 pairs, W2 brackets, W3 product parts)
+    if tool == "superint2":  # on two threads (W1 pairs, W2 brackets, W3 product parts, W4 repetitions)
         return [SUPERINT, "bench", workload, str(size), "--threads", "2"], None
     if tool in ("flint", "sympy"):
         return [PYTHON, os.path.join(HERE, "peers.py"), tool, workload, str(size)], None

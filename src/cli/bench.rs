@@ -25,7 +25,8 @@ pub struct BenchArgs {
     #[arg(value_parser = clap::value_parser!(i64).range(1..=100_000))]
     size: i64,
     /// Threads for the workloads that have independent parts (W1 pairs, W2 brackets, the index
-    /// range of a large dense product in W3); 1 runs everything on the calling thread.
+    /// range of a large dense product in W3, W4 repetitions); 1 runs everything on the calling
+    /// thread.
     #[arg(long, default_value_t = 1, value_parser = clap::value_parser!(u16).range(1..=256))]
     threads: u16,
 }
