@@ -26,8 +26,8 @@ Examples:
   superint search systems/smorodinsky-winternitz-i.toml --momenta-degree 2 \\
       --positions-degree 4 --trig-degree 0 --laurent
   superint search --system anisotropic-3-5 --when 'p_theta = I*omega' --fix omega=1,M=2
-  superint search systems/henon-heiles-kdv.toml --momenta-degree 2 --positions-degree 4 \
-      --trig-degree 0 --symbolic A,B
+  superint search systems/henon-heiles.toml --momenta-degree 2 --positions-degree 4 \\
+      --trig-degree 0 --when 'C = 2' --symbolic A,B
 
 Parameters are fixed to rational values for the linear algebra (1 unless --fix says
 otherwise, and the output says which); every basis element is then lifted back to
