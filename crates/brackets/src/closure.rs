@@ -34,7 +34,7 @@ use crate::claim::Condition;
 use crate::error::EngineError;
 use crate::modular::{self, Echelon, Fp, SparseVec};
 use crate::scaling::{Lifter, Scaling};
-use crate::search::fix_parameters;
+use crate::search::{fix_parameters, is_phase_free};
 use crate::system::System;
 use crate::table::{BracketTable, Entry};
 
@@ -295,12 +295,7 @@ pub fn closure_of(
     // Monomials at the fixed values.
     // Generators that are constant on the condition's surface (`F2 = Iω²/2` at `p_θ = Iω`)
     // enter the polynomials as their values: relations `G − c = 0` of their own.
-    let phase_free = |e: &Expr| {
-        vars.vars()
-            .filter(|v| vars.variable(*v).kind() != VarKind::Parameter)
-            .all(|v| !e.contains(v))
-    };
-    let constant: Vec<bool> = g_sym.iter().map(phase_free).collect();
+    let constant: Vec<bool> = g_sym.iter().map(is_phase_free).collect();
     let monos: Vec<Vec<u32>> = monomials(r, options.degree)
         .into_iter()
         .filter(|b| b.iter().zip(&constant).all(|(e, c)| *e == 0 || !c))

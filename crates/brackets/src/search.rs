@@ -139,9 +139,7 @@ impl SearchOptions {
 
     /// With a parameter kept symbolic (see [`SearchSpace::parameters_degree`]).
     pub fn symbolic(mut self, v: Var) -> Self {
-        if !self.symbolic.contains(&v) {
-            self.symbolic.push(v);
-        }
+        self.symbolic.push(v);
         self
     }
 
@@ -831,6 +829,7 @@ pub fn search(system: &System, options: &SearchOptions) -> Result<SearchResult, 
     }
     timings.proofs = t.elapsed().as_secs_f64();
 
+    let multiples = parameter_multiples(&problem, &options.symbolic, &basis)?;
     let t = Instant::now();
     let new = if options.new_only {
         Some(new_integrals(
@@ -840,19 +839,16 @@ pub fn search(system: &System, options: &SearchOptions) -> Result<SearchResult, 
             &parameters,
             &kernel,
             &basis,
+            &multiples,
         )?)
     } else {
         None
     };
     timings.new_only = t.elapsed().as_secs_f64();
-    let module = if options.symbolic.is_empty() {
-        None
-    } else {
-        Some(ParameterModule {
-            parameters: options.symbolic.clone(),
-            generators: module_generators(&problem, &options.symbolic, &kernel, &basis)?,
-        })
-    };
+    let module = (!options.symbolic.is_empty()).then(|| ParameterModule {
+        parameters: options.symbolic.clone(),
+        generators: module_generators(&problem, &kernel, &multiples),
+    });
     timings.total = start.elapsed().as_secs_f64();
     Ok(SearchResult {
         space: options.space,
@@ -871,38 +867,40 @@ pub fn search(system: &System, options: &SearchOptions) -> Result<SearchResult, 
     })
 }
 
-/// The basis integrals that generate the space over the polynomials in the `symbolic`
-/// parameters: those outside the span of the multiples `a·I` (`a` a symbolic parameter, `I`
-/// a basis integral, when `a·I` lies in the space) and of the earlier generators. The span of
-/// those multiples is every sum of parameter multiples of integrals in the space, since a
-/// product by a monomial of higher degree is a product by one parameter of an integral that
-/// lies in the space.
-fn module_generators(
+/// The multiples `a·I` that lie in the space, for `a` a symbolic parameter and `I` a basis
+/// integral: each with the index of `I` and its coordinates. Their span is every sum of
+/// parameter multiples of integrals in the space, since a product by a monomial of higher
+/// degree is a product by one parameter of an integral that lies in the space.
+fn parameter_multiples(
     problem: &Problem,
     symbolic: &[Var],
-    kernel: &[SparseVec<Rational>],
     basis: &[Integral],
-) -> Result<Vec<usize>, EngineError> {
-    let vars = &problem.vars;
-    let mut span = Echelon::<Rational>::new(problem.unknowns.len());
-    let mut id = 0;
-    for f in basis {
+) -> Result<Vec<(usize, SparseVec<Rational>)>, EngineError> {
+    let mut out = Vec::new();
+    for (i, f) in basis.iter().enumerate() {
         for &a in symbolic {
-            let product = f.fixed.checked_mul(&Expr::var(vars, a))?;
-            if let Some(v) = problem.coordinates(&product) {
-                span.insert(id, &v);
-                id += 1;
-            }
+            let product = f.fixed.checked_mul(&Expr::var(&problem.vars, a))?;
+            out.extend(problem.coordinates(&product).map(|v| (i, v)));
         }
     }
-    let mut generators = Vec::new();
-    for (k, v) in kernel.iter().enumerate() {
-        if span.insert(id, v).is_none() {
-            generators.push(k);
-        }
-        id += 1;
+    Ok(out)
+}
+
+/// The basis integrals that generate the space over the polynomials in the symbolic
+/// parameters: those outside the span of the parameter `multiples` and of the earlier
+/// generators.
+fn module_generators(
+    problem: &Problem,
+    kernel: &[SparseVec<Rational>],
+    multiples: &[(usize, SparseVec<Rational>)],
+) -> Vec<usize> {
+    let mut span = Echelon::<Rational>::new(problem.unknowns.len());
+    for (id, (_, v)) in multiples.iter().enumerate() {
+        span.insert(id, v);
     }
-    Ok(generators)
+    (0..kernel.len())
+        .filter(|&k| span.insert(multiples.len() + k, &kernel[k]).is_none())
+        .collect()
 }
 
 /// Lifts an integral found at fixed values and proves `{F, H} = 0` symbolically (after the
@@ -980,6 +978,14 @@ fn without_parameter_denominators(f: &Expr, symbolic: &[Var]) -> Result<Expr, En
     Ok(f.checked_mul(&monomial)?)
 }
 
+/// Whether `e` depends on no variable of phase space (parameters only, or a number).
+pub(crate) fn is_phase_free(e: &Expr) -> bool {
+    let vars = e.vars();
+    vars.vars()
+        .filter(|v| vars.variable(*v).kind() != VarKind::Parameter)
+        .all(|v| !e.contains(v))
+}
+
 fn new_integrals(
     system: &System,
     problem: &Problem,
@@ -987,6 +993,7 @@ fn new_integrals(
     parameters: &[(Var, Rational)],
     kernel: &[SparseVec<Rational>],
     basis: &[Integral],
+    multiples: &[(usize, SparseVec<Rational>)],
 ) -> Result<NewIntegrals, EngineError> {
     let (space, extra, symbolic) = (&options.space, &options.known, &options.symbolic);
     // Known integrals: named real functions that are integrals, restricted to the condition.
@@ -1006,13 +1013,7 @@ fn new_integrals(
         }
         let restricted = without_parameter_denominators(&problem.apply_condition(fv)?, symbolic)?;
         // A constant on phase space (`Ω = ω` at a resonance) is no integral worth naming.
-        let on_phase_space = restricted.terms().any(|t| {
-            t.exponents()
-                .iter()
-                .zip(problem.vars.vars())
-                .any(|(e, v)| *e != 0 && problem.vars.variable(v).kind() != VarKind::Parameter)
-        });
-        if !on_phase_space || known.iter().any(|k| k.0 == restricted) {
+        if is_phase_free(&restricted) || known.iter().any(|k| k.0 == restricted) {
             continue;
         }
         if let Some(v) = problem.coordinates(&restricted) {
@@ -1112,13 +1113,8 @@ fn new_integrals(
     }
     // With parameters kept symbolic, `a·I` is generated by `I`: it joins the span before the
     // basis integrals of `I`'s degree.
-    for b in basis {
-        for &a in symbolic.iter() {
-            let product = b.fixed.checked_mul(&Expr::var(&problem.vars, a))?;
-            if let Some(v) = problem.coordinates(&product) {
-                spanning.push((total(&b.fixed) - 1, v));
-            }
-        }
+    for (i, v) in multiples {
+        spanning.push((total(&basis[*i].fixed) - 1, v.clone()));
     }
     spanning.sort_by_key(|s| s.0);
     // By increasing degree N: the products of factors of degree < N join the span, then each
