@@ -163,12 +163,11 @@ pub fn search_report(
             "Parameters fixed for the linear algebra: `{fixed}`; {lift}."
         )));
     }
-    if let Some(m) = &r.module {
+    if let Some(names) = &symbolic {
         entries.push(Entry::Text(format!(
-            "Parameters kept symbolic: `{}`. The equations are the coefficients of every \
+            "Parameters kept symbolic: `{names}`. The equations are the coefficients of every \
              monomial in the variables and these parameters, so what is found holds for every \
-             value of them.",
-            parameter_names(vars, &m.parameters)
+             value of them."
         )));
     }
     let dims = r.dimensions_by_momenta_degree();
@@ -216,7 +215,7 @@ pub fn search_report(
         None => (0..r.basis.len()).collect(),
     };
     let mut entries = Vec::new();
-    if let Some(m) = &r.module {
+    if let (Some(m), Some(names)) = (&r.module, &symbolic) {
         let shown_text = if r.new.is_some() {
             "Below, parameter multiples of integrals count as generated."
         } else {
@@ -224,9 +223,9 @@ pub fn search_report(
             "Shown: the generators."
         };
         entries.push(Entry::Text(format!(
-            "Over the polynomials in `{}`, {} of the {} basis integrals generate all of them: \
-             each of the others is a sum of parameter multiples of integrals. {shown_text}",
-            parameter_names(vars, &m.parameters),
+            "Over the polynomials in `{names}`, {} of the {} basis integrals generate all of \
+             them: each of the others is a sum of parameter multiples of integrals. \
+             {shown_text}",
             m.generators.len(),
             r.basis.len(),
         )));
