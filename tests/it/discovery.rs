@@ -197,6 +197,15 @@ fn normalize(s: &str) -> String {
     s.split_whitespace().collect::<Vec<_>>().join(" ")
 }
 
+/// Runs the binary at the workspace root.
+fn superint(args: &[&str]) -> std::process::Output {
+    Command::new(env!("CARGO_BIN_EXE_superint"))
+        .args(args)
+        .current_dir(env!("CARGO_MANIFEST_DIR"))
+        .output()
+        .expect("the superint binary runs")
+}
+
 /// Runs the named command of the note (with `--no-timings`), expects exit 0, returns stdout.
 fn run(name: &str) -> String {
     let command = COMMANDS
@@ -206,12 +215,9 @@ fn run(name: &str) -> String {
         .1;
     let args = words(command);
     assert_eq!(args[0], "superint");
-    let out = Command::new(env!("CARGO_BIN_EXE_superint"))
-        .args(&args[1..])
-        .arg("--no-timings")
-        .current_dir(env!("CARGO_MANIFEST_DIR"))
-        .output()
-        .expect("the superint binary runs");
+    let mut args: Vec<&str> = args[1..].iter().map(String::as_str).collect();
+    args.push("--no-timings");
+    let out = superint(&args);
     let stdout = String::from_utf8(out.stdout).expect("UTF-8");
     assert_eq!(
         out.status.code(),
@@ -576,59 +582,40 @@ fn henon_heiles_with_c_symbolic_has_only_the_energy() {
 
 #[test]
 fn bad_search_arguments_exit_2_with_a_message() {
-    let file = "systems/henon-heiles.toml";
     for (args, message) in [
         (
-            vec!["--symbolic", "A,x"],
+            "--symbolic A,x",
             "--symbolic: 'x' is not a parameter of the system",
         ),
         (
-            vec!["--symbolic", "A", "--fix", "A=2"],
+            "--symbolic A --fix A=2",
             "A is both fixed to a value and kept symbolic",
         ),
         (
-            vec!["--fix", "C=0"],
+            "--fix C=0",
             "--fix: C = 0: parameters are fixed to nonzero values",
         ),
+        ("--fix C=two", "--fix: 'two' is not a rational number"),
+        ("--fix A=2,B=1,A=3", "--fix: 'A' is given two values"),
         (
-            vec!["--fix", "C=two"],
-            "--fix: 'two' is not a rational number",
-        ),
-        (
-            vec!["--fix", "A=2,B=1,A=3"],
-            "--fix: 'A' is given two values",
-        ),
-        (
-            vec!["--when", "C = 2", "--fix", "C=3"],
+            "--when C=2 --fix C=3",
             "C is set by the condition; it can be neither fixed nor kept symbolic",
         ),
         (
-            vec!["--parameters-degree", "3"],
+            "--parameters-degree 3",
             "required arguments were not provided",
         ),
         (
-            vec![
-                "--positions-degree",
-                "4",
-                "--trig-degree",
-                "0",
-                "--symbolic",
-                "A,B",
-                "--max-terms",
-                "500",
-            ],
+            "--positions-degree 4 --trig-degree 0 --symbolic A,B --max-terms 500",
             "the space has 540 unknowns, more than the term limit 500",
         ),
     ] {
-        let out = Command::new(env!("CARGO_BIN_EXE_superint"))
-            .args(["search", file])
-            .args(&args)
-            .current_dir(env!("CARGO_MANIFEST_DIR"))
-            .output()
-            .expect("the superint binary runs");
+        let mut words = vec!["search", "systems/henon-heiles.toml"];
+        words.extend(args.split_whitespace());
+        let out = superint(&words);
         let stderr = String::from_utf8_lossy(&out.stderr);
-        assert_eq!(out.status.code(), Some(2), "{args:?}: {stderr}");
-        assert!(stderr.contains(message), "{args:?}: {stderr}");
+        assert_eq!(out.status.code(), Some(2), "{args}: {stderr}");
+        assert!(stderr.contains(message), "{args}: {stderr}");
     }
 }
 
