@@ -11,8 +11,10 @@
 //! * Normal form: every operation returns the canonical representation, so an identity holds
 //!   exactly when the difference [`Poly::is_zero`].
 //! * Threads: a large product (2¹⁸ pairs of terms or more, on the dense path) splits its work
-//!   over the rayon thread pool it is called from; call it inside a one-thread pool
-//!   (`rayon::ThreadPoolBuilder::new().num_threads(1)`) to keep it on the calling thread.
+//!   over the rayon thread pool it is called from, and when that pool has two threads or more
+//!   a large sparse one (2²⁰ pairs or more) writes its terms on a second thread spawned for it;
+//!   call it inside a one-thread pool (`rayon::ThreadPoolBuilder::new().num_threads(1)`) to
+//!   keep it on the calling thread.
 //!
 //! ```
 //! use trigpoly::{GaussianRational, Poly, VarSet};

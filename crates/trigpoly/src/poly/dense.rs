@@ -5,13 +5,19 @@
 //! bitmap records the touched accumulators and only those are read, and each chunk visits only
 //! the rows with a product in it: every row waits in the list of the chunk of its next product
 //! (a bucket queue), where a scan would pass over every row in every chunk. Used when the box
-//! is not much larger than the work and every coefficient product fits the accumulators. Large
-//! products split the index range into parts that rayon runs on the threads of the caller's
-//! pool.
+//! is not much larger than the work and every coefficient product fits the accumulators.
+//!
+//! When the caller's rayon pool has more than one thread, large products use a second core: on
+//! a dense box they split the index range into parts that rayon runs on the pool's threads; on
+//! a sparse box, where writing the terms (and backing their pages) costs as much as the
+//! additions, one thread adds and reads back while a second one, spawned for the product,
+//! decodes and writes the terms, so that they are written once.
 
 use rayon::prelude::*;
 
-use super::kronecker::{Decoder, Kronecker};
+use std::sync::mpsc;
+
+use super::kronecker::{Cursor, Decoder, Kronecker};
 use crate::error::AlgebraError;
 use crate::number::IntegerRing;
 use crate::varset::Layout;
@@ -24,6 +30,12 @@ const BOX_PER_PRODUCT: u64 = 32;
 const PARALLEL_WORK: u64 = 1 << 18;
 /// Parts per thread, so that unequal parts balance.
 const PARTS_PER_THREAD: u64 = 4;
+/// Sparse products of at least this many term pairs build their terms on a second thread.
+const PIPELINE_WORK: u64 = 1 << 20;
+/// Terms handed from the accumulating thread to the building one at a time.
+const BATCH: usize = 1 << 16;
+/// Batches on their way to the building thread before the accumulating one waits.
+const BATCHES_IN_FLIGHT: usize = 4;
 
 /// Packed exponents and coefficients of a product, sorted descending.
 pub(crate) type Product<I> = (Vec<u64>, Vec<I>);
@@ -64,8 +76,17 @@ pub(crate) fn try_mul_dense<I: IntegerRing>(
         cb: small_b,
     };
     let decoder = kron.decoder(layout, work);
-    // The index range cut into parts, highest first.
+    // Marking costs a little per product, scanning a little per accumulator.
+    let mark = kron.size() > work;
     let threads = rayon::current_num_threads() as u64;
+    // A sparse box: the terms are few per product, and writing them costs as much as adding
+    // (page faults included). A second thread writes them while this one adds, so that the
+    // terms are written once, by one thread.
+    if mark && threads >= 2 && work >= PIPELINE_WORK {
+        let mut acc = vec![I::Wide::default(); chunk as usize];
+        return Some(factors.pipelined::<I>(&mut acc, (lo, end), &decoder, max_terms));
+    }
+    // The index range cut into parts, highest first.
     let count = if work < PARALLEL_WORK || threads < 2 {
         1
     } else {
@@ -73,17 +94,15 @@ pub(crate) fn try_mul_dense<I: IntegerRing>(
     };
     let cut = |p: u64| lo + ((end - lo) as u128 * p as u128 / count as u128) as u64;
     let ranges: Vec<(u64, u64)> = (0..count).rev().map(|p| (cut(p), cut(p + 1))).collect();
-    // Marking costs a little per product, scanning a little per accumulator.
-    let mark = kron.size() > work;
     let parts: Vec<Product<I>> = match ranges
         .into_par_iter()
         .map_init(
             || vec![I::Wide::default(); chunk as usize],
             |acc, (lo, hi)| {
                 if mark {
-                    factors.range::<I, true>(acc, lo, hi, &decoder, max_terms)
+                    factors.range::<I, true>(acc, (lo, hi), &decoder, max_terms)
                 } else {
-                    factors.range::<I, false>(acc, lo, hi, &decoder, max_terms)
+                    factors.range::<I, false>(acc, (lo, hi), &decoder, max_terms)
                 }
             },
         )
@@ -159,48 +178,103 @@ impl<S: Copy + Send + Sync> Factors<S> {
         *next = j + run;
     }
 
-    /// The terms of the product with indices in `[lo, hi)`, descending, as packed monomials.
-    /// A chunk is as wide as `acc`. With `MARK`, a bitmap records the touched accumulators and
-    /// only those are read back, and each chunk visits only the rows with a product in it;
-    /// without, every accumulator of a chunk is read back.
+    /// The most terms the product of the indices in `[lo, hi)` can have (one per product and
+    /// one per index), and at most one more than `max_terms`.
+    fn bound(&self, lo: u64, hi: u64, max_terms: usize) -> usize {
+        let gb = &self.gb;
+        let products: usize = self
+            .fa
+            .iter()
+            .map(|&fi| {
+                gb.partition_point(|&g| fi + g >= lo) - gb.partition_point(|&g| fi + g >= hi)
+            })
+            .sum();
+        (products as u64).min(hi - lo).min(max_terms as u64 + 1) as usize
+    }
+
+    /// The terms of the product with indices in `[lo, hi)`, descending, as packed monomials,
+    /// built on this thread.
     fn range<I: IntegerRing<Small = S>, const MARK: bool>(
         &self,
         acc: &mut [I::Wide],
-        lo: u64,
-        hi: u64,
+        (lo, hi): (u64, u64),
         decoder: &Decoder,
         max_terms: usize,
     ) -> Result<Product<I>, AlgebraError> {
+        let mut builder = Builder::<I>::new(decoder, self.bound(lo, hi, max_terms));
+        self.accumulate::<I, MARK>(acc, (lo, hi), max_terms, &mut builder)?;
+        Ok(builder.finish())
+    }
+
+    /// [`Factors::range`] with the terms built on a second thread: this one adds into the
+    /// accumulators and reads them back, the other decodes the indices and writes the product,
+    /// whose pages are backed as it writes them (page faults cost as much as the additions on
+    /// a large sparse product).
+    fn pipelined<I: IntegerRing<Small = S>>(
+        &self,
+        acc: &mut [I::Wide],
+        (lo, hi): (u64, u64),
+        decoder: &Decoder,
+        max_terms: usize,
+    ) -> Result<Product<I>, AlgebraError> {
+        let bound = self.bound(lo, hi, max_terms);
+        let (full, batches) = mpsc::sync_channel::<Vec<(u64, I)>>(BATCHES_IN_FLIGHT);
+        let (emptied, empties) = mpsc::channel::<Vec<(u64, I)>>();
+        std::thread::scope(|scope| {
+            let building = scope.spawn(move || {
+                let mut builder = Builder::<I>::new(decoder, bound);
+                for mut batch in batches {
+                    for (k, c) in batch.drain(..) {
+                        builder.append(k, c);
+                    }
+                    // The accumulating side may have finished; then the batch is dropped.
+                    let _ = emptied.send(batch);
+                }
+                builder.finish()
+            });
+            let mut sender = Sender {
+                batch: Vec::with_capacity(BATCH),
+                sent: 0,
+                full,
+                empties,
+            };
+            let added = self.accumulate::<I, true>(acc, (lo, hi), max_terms, &mut sender);
+            if added.is_ok() && !sender.batch.is_empty() {
+                sender.flush();
+            }
+            // The building side ends when the channel closes.
+            drop(sender);
+            let built = building
+                .join()
+                .unwrap_or_else(|panic| std::panic::resume_unwind(panic));
+            added.map(|()| built)
+        })
+    }
+
+    /// Adds the products with indices in `[lo, hi)` into the accumulators, chunk by chunk
+    /// (a chunk is as wide as `acc`), and passes each nonzero sum to `sink` with its index,
+    /// highest first. With `MARK`, a bitmap records the touched accumulators and only those
+    /// are read back, and each chunk visits only the rows with a product in it; without, every
+    /// accumulator of a chunk is read back.
+    fn accumulate<I: IntegerRing<Small = S>, const MARK: bool>(
+        &self,
+        acc: &mut [I::Wide],
+        (lo, hi): (u64, u64),
+        max_terms: usize,
+        sink: &mut impl Sink<I>,
+    ) -> Result<(), AlgebraError> {
         let (fa, gb, ca) = (&self.fa, &self.gb, &self.ca);
         let (n, m) = (fa.len(), gb.len());
         let (g_max, g_min) = (gb[0], gb[m - 1]);
         let chunk = acc.len() as u64;
-        let words = decoder.words();
         let zero = I::Wide::default();
         let mut touched = vec![0u64; if MARK { (chunk / 64) as usize } else { 0 }];
-        let mut cursor = decoder.cursor();
         // `next[i]`: the first partner of row `i` not yet multiplied (partners are visited in
         // descending index order, as the chunks are).
         let mut next: Vec<usize> = fa
             .iter()
             .map(|&fi| gb.partition_point(|&g| fi + g >= hi))
             .collect();
-        // The part has at most one term per product and per index: reserving that much up
-        // front costs address space only (pages are backed when written), where growing by
-        // doubling would copy and fault in the terms about twice over. If the address space
-        // is refused, the vectors grow as usual.
-        let products: usize = fa
-            .iter()
-            .zip(&next)
-            .map(|(&fi, &j)| gb.partition_point(|&g| fi + g >= lo) - j)
-            .sum();
-        let bound = (products as u64).min(hi - lo).min(max_terms as u64 + 1) as usize;
-        let (mut exps, mut coeffs) = (Vec::new(), Vec::new());
-        if exps.try_reserve_exact(bound * words).is_err()
-            || coeffs.try_reserve_exact(bound).is_err()
-        {
-            (exps, coeffs) = (Vec::new(), Vec::new());
-        }
         // Sparse: `waiting[c]` starts the list of the rows whose next product falls in chunk
         // `c` (counted from the top), linked through `then`. Dense: rows before `first` land
         // above every remaining chunk, and the others are scanned in order.
@@ -261,11 +335,10 @@ impl<S: Copy + Send + Sync> Factors<S> {
                 }
             }
             // Read the accumulators back, highest index first.
-            let mut emit = |off: usize| {
+            let mut read = |off: usize| {
                 let slot = std::mem::take(&mut acc[off]);
                 if slot != zero {
-                    decoder.decode_onto(&mut cursor, bottom + off as u64, &mut exps);
-                    coeffs.push(I::from_wide(slot));
+                    sink.push(bottom + off as u64, slot);
                 }
             };
             if MARK {
@@ -274,19 +347,117 @@ impl<S: Copy + Send + Sync> Factors<S> {
                     while bits != 0 {
                         let bit = 63 - bits.leading_zeros() as usize;
                         bits &= !(1 << bit);
-                        emit(w * 64 + bit);
+                        read(w * 64 + bit);
                     }
                 }
             } else {
-                (0..(top - bottom) as usize).rev().for_each(emit);
+                (0..(top - bottom) as usize).rev().for_each(read);
             }
             current += 1;
-            if coeffs.len() > max_terms {
+            if sink.len() > max_terms {
                 return Err(AlgebraError::TooManyTerms { limit: max_terms });
             }
             top = bottom;
         }
-        Ok((exps, coeffs))
+        Ok(())
+    }
+}
+
+/// Where the terms of a product go as the accumulators are read back.
+trait Sink<I: IntegerRing> {
+    /// The term with Kronecker index `k` and sum `w`, lower than every term before it.
+    fn push(&mut self, k: u64, w: I::Wide);
+    /// How many terms have come.
+    fn len(&self) -> usize;
+}
+
+/// The terms of a product, written as they come: indices decoded to packed monomials,
+/// accumulators to coefficients.
+struct Builder<'d, I> {
+    decoder: &'d Decoder,
+    cursor: Cursor,
+    exps: Vec<u64>,
+    coeffs: Vec<I>,
+}
+
+impl<'d, I: IntegerRing> Builder<'d, I> {
+    /// Room for `bound` terms. A part has at most one term per product and per index:
+    /// reserving that much up front costs address space only (pages are backed when
+    /// written), where growing by doubling would copy and fault in the terms about twice
+    /// over. If the address space is refused, the vectors grow as usual.
+    fn new(decoder: &'d Decoder, bound: usize) -> Self {
+        let (mut exps, mut coeffs) = (Vec::new(), Vec::new());
+        if exps.try_reserve_exact(bound * decoder.words()).is_err()
+            || coeffs.try_reserve_exact(bound).is_err()
+        {
+            (exps, coeffs) = (Vec::new(), Vec::new());
+        }
+        Builder {
+            decoder,
+            cursor: decoder.cursor(),
+            exps,
+            coeffs,
+        }
+    }
+
+    /// Appends the term `c` with Kronecker index `k` (lower than every term so far).
+    #[inline(always)]
+    fn append(&mut self, k: u64, c: I) {
+        self.decoder
+            .decode_onto(&mut self.cursor, k, &mut self.exps);
+        self.coeffs.push(c);
+    }
+
+    fn finish(self) -> Product<I> {
+        (self.exps, self.coeffs)
+    }
+}
+
+impl<I: IntegerRing> Sink<I> for Builder<'_, I> {
+    #[inline(always)]
+    fn push(&mut self, k: u64, w: I::Wide) {
+        self.append(k, I::from_wide(w));
+    }
+
+    fn len(&self) -> usize {
+        self.coeffs.len()
+    }
+}
+
+/// The accumulating side of a pipelined product: terms in batches, sent to the building
+/// thread, whose emptied batches come back for reuse.
+struct Sender<I> {
+    batch: Vec<(u64, I)>,
+    sent: usize,
+    full: mpsc::SyncSender<Vec<(u64, I)>>,
+    empties: mpsc::Receiver<Vec<(u64, I)>>,
+}
+
+impl<I> Sender<I> {
+    /// Sends the batch, and takes an emptied one (or a new one) in its place.
+    fn flush(&mut self) {
+        let next = self
+            .empties
+            .try_recv()
+            .unwrap_or_else(|_| Vec::with_capacity(BATCH));
+        let batch = std::mem::replace(&mut self.batch, next);
+        self.sent += batch.len();
+        // A send fails only if the building side has panicked, which `join` passes on.
+        let _ = self.full.send(batch);
+    }
+}
+
+impl<I: IntegerRing> Sink<I> for Sender<I> {
+    #[inline(always)]
+    fn push(&mut self, k: u64, w: I::Wide) {
+        self.batch.push((k, I::from_wide(w)));
+        if self.batch.len() == BATCH {
+            self.flush();
+        }
+    }
+
+    fn len(&self) -> usize {
+        self.sent + self.batch.len()
     }
 }
 

@@ -1,9 +1,13 @@
-//! Large products through the dense kernel: split into parts over two threads or run as one
-//! part, with the touched accumulators marked (a sparse box) or all of them scanned (a dense
-//! box), over Q and over Q(i), the product is the same canonical polynomial, and takes the
-//! value of `f(p)·g(p)` at an integer point.
+//! Large products through the dense kernel: split into parts over two threads, written by a
+//! second thread as the first adds, or run as one part, with the touched accumulators marked
+//! (a sparse box) or all of them scanned (a dense box), over Q and over Q(i), the product is
+//! the same canonical polynomial, and takes the value of `f(p)·g(p)` at an integer point.
 
-use trigpoly::{Coefficient, Point, Poly, Rational};
+use std::sync::Arc;
+
+use trigpoly::{
+    AlgebraError, Coefficient, GaussianRational, Limits, Point, Poly, Rational, VarSet,
+};
 
 use crate::common::{coordinates, p, var, G, Q};
 
@@ -16,40 +20,97 @@ fn product_on<C: Coefficient>(threads: usize, f: &Poly<C>, g: &Poly<C>) -> Poly<
         .install(|| f * g)
 }
 
-#[test]
-fn dense_products_split_over_threads_agree_with_one_thread() {
+/// The point of `vars` with the given integer values.
+fn point(vars: &Arc<VarSet>, values: &[(&str, i64)]) -> Point {
+    values.iter().fold(Point::new(vars), |pt, &(name, v)| {
+        pt.with(var(vars, name), Rational::from(v))
+    })
+}
+
+/// `f · g` on one thread, checked against the same product on two threads, against the
+/// canonical order (rebuilding from its terms, which sorts, changes nothing) and against
+/// `f(pt)·g(pt)`.
+fn checked_product<C: Coefficient>(f: &str, g: &str, pt: &[(&str, i64)]) -> Poly<C> {
     let vars = coordinates(&["x", "y", "z", "t"]);
-    let point = [("x", 2), ("y", -1), ("z", 1), ("t", -1)]
-        .iter()
-        .fold(Point::new(&vars), |pt, &(name, v)| {
-            pt.with(var(&vars, name), Rational::from(v))
-        });
-    for (f, g) in [
-        // 715² ≈ 511k products into a box of 19⁴ ≈ 130k cells: every accumulator is scanned.
-        ("(1 + x + y + z + t)^9", "(1 + 2*x - y + 3*z + t)^9"),
-        // 715² products into a box of 37⁴ ≈ 1.9M cells: the touched ones are marked.
-        ("(1 + x + y + 2*z^3 - t^3)^9", "(1 - x^3 + 3*y^3 + z + t)^9"),
-    ] {
-        let (f, g): (Q, Q) = (p(&vars, f), p(&vars, g));
-        let one = product_on(1, &f, &g);
-        let two = product_on(2, &f, &g);
-        assert_eq!(one, two);
-        // The terms are in canonical order: rebuilding from them (which sorts) changes nothing.
-        let rebuilt = Q::from_terms(&vars, one.terms().map(|t| (t.coeff(), t.exponents())));
-        assert_eq!(rebuilt.as_ref(), Ok(&one));
-        let value = f.eval(&point).unwrap() * g.eval(&point).unwrap();
-        assert_eq!(one.eval(&point), Ok(value));
-    }
-    // Over Q(i) on a sparse box: the accumulators hold both components.
-    let (f, g): (G, G) = (
-        p(&vars, "(1 + i*x + y + 2*z^3 - t^3)^9"),
-        p(&vars, "(1 - x^3 + 3*i*y^3 + z + t)^9"),
-    );
+    let (f, g): (Poly<C>, Poly<C>) = (p(&vars, f), p(&vars, g));
     let one = product_on(1, &f, &g);
     assert_eq!(one, product_on(2, &f, &g));
-    let value = f.eval(&point).unwrap() * g.eval(&point).unwrap();
-    assert_eq!(one.eval(&point), Ok(value));
-    assert!(one.terms().any(|t| !t.coeff().is_real()));
+    let rebuilt = Poly::<C>::from_terms(&vars, one.terms().map(|t| (t.coeff(), t.exponents())));
+    assert_eq!(rebuilt.as_ref(), Ok(&one));
+    let pt = point(&vars, pt);
+    let value = f.eval(&pt).unwrap() * g.eval(&pt).unwrap();
+    assert_eq!(one.eval(&pt), Ok(value));
+    one
+}
+
+#[test]
+fn dense_products_split_over_threads_agree_with_one_thread() {
+    let pt = [("x", 2), ("y", -1), ("z", 1), ("t", -1)];
+    // 715² ≈ 511k products into a box of 19⁴ ≈ 130k cells: every accumulator is scanned.
+    checked_product::<Rational>("(1 + x + y + z + t)^9", "(1 + 2*x - y + 3*z + t)^9", &pt);
+    // 715² products into a box of 37⁴ ≈ 1.9M cells: the touched ones are marked.
+    checked_product::<Rational>(
+        "(1 + x + y + 2*z^3 - t^3)^9",
+        "(1 - x^3 + 3*y^3 + z + t)^9",
+        &pt,
+    );
+    // Over Q(i) on a sparse box: the accumulators hold both components.
+    let product: G = checked_product(
+        "(1 + i*x + y + 2*z^3 - t^3)^9",
+        "(1 - x^3 + 3*i*y^3 + z + t)^9",
+        &pt,
+    );
+    assert!(product.terms().any(|t| !t.coeff().is_real()));
+}
+
+/// A sparse product of 1365² ≈ 1.9M term pairs (a box of 67⁴ ≈ 20M cells): on two threads
+/// one adds into the accumulators while the other writes the terms, in batches. The product
+/// is the one computed on one thread, over Q and over Q(i).
+#[test]
+fn sparse_products_written_by_a_second_thread_agree_with_one_thread() {
+    let pt = [("x", 1), ("y", -1), ("z", 2), ("t", 1)];
+    let product: Q = checked_product(
+        "(1 + x + y + 2*z^3 - t^3)^11",
+        "(1 - x^3 + 3*y^3 + z + t)^11",
+        &pt,
+    );
+    // More terms than one batch carries.
+    assert!(product.len() > 1 << 16, "{} terms", product.len());
+    checked_product::<GaussianRational>(
+        "(1 + i*x + y + 2*z^3 - t^3)^11",
+        "(1 - x^3 + 3*i*y^3 + z + t)^11",
+        &pt,
+    );
+}
+
+/// The same sparse product under a term limit it exceeds: on two threads as on one, the adding
+/// side stops at the limit with an error, and the writing side lets go of what it wrote.
+#[test]
+fn a_sparse_product_written_by_a_second_thread_stops_at_the_term_limit() {
+    let vars = ["x", "y", "z", "t"]
+        .iter()
+        .fold(VarSet::builder(), |b, name| b.coordinate(name))
+        .limits(Limits {
+            max_terms: 100_000,
+            ..Limits::default()
+        })
+        .build()
+        .expect("valid variable names");
+    let (f, g): (Q, Q) = (
+        p(&vars, "(1 + x + y + 2*z^3 - t^3)^11"),
+        p(&vars, "(1 - x^3 + 3*y^3 + z + t)^11"),
+    );
+    for threads in [1, 2] {
+        let product = rayon::ThreadPoolBuilder::new()
+            .num_threads(threads)
+            .build()
+            .expect("a thread pool")
+            .install(|| f.checked_mul(&g));
+        assert_eq!(
+            product.map(|h| h.len()),
+            Err(AlgebraError::TooManyTerms { limit: 100_000 })
+        );
+    }
 }
 
 /// 140 variables pack into 35 words, wider than the heap product's fixed-width keys: a sparse
