@@ -221,7 +221,7 @@ impl<S: Copy + Send + Sync> Factors<S> {
         let (full, batches) = mpsc::sync_channel::<Vec<(u64, I)>>(BATCHES_IN_FLIGHT);
         let (emptied, empties) = mpsc::channel::<Vec<(u64, I)>>();
         std::thread::scope(|scope| {
-            let building = scope.spawn(move || {
+            let spawned = std::thread::Builder::new().spawn_scoped(scope, move || {
                 let mut builder = Builder::<I>::new(decoder, bound);
                 for mut batch in batches {
                     for (k, c) in batch.drain(..) {
@@ -232,6 +232,10 @@ impl<S: Copy + Send + Sync> Factors<S> {
                 }
                 builder.finish()
             });
+            let Ok(building) = spawned else {
+                // No thread to be had: the terms are built on this one.
+                return self.range::<I, true>(acc, (lo, hi), decoder, max_terms);
+            };
             let mut sender = Sender {
                 batch: Vec::with_capacity(BATCH),
                 sent: 0,
