@@ -194,21 +194,31 @@ impl Decoder {
     }
 
     /// Appends the packed monomial of index `idx` to `out`.
-    #[inline]
+    #[inline(always)]
     pub(crate) fn decode_onto(&self, cursor: &mut Cursor, idx: u64, out: &mut Vec<u64>) {
         let (high, low) = self.split.div_rem(idx);
         if high != cursor.high {
-            cursor.high = high;
-            cursor.fields.fill(0);
-            add_digits(&self.high, high, &mut cursor.fields);
+            self.move_to(cursor, high);
         }
-        let at = low as usize * self.words;
-        let low = &self.table[at..at + self.words];
-        out.extend(
-            low.iter()
-                .zip(&cursor.fields)
-                .map(|(l, h)| l.wrapping_add(*h)),
-        );
+        let low = low as usize;
+        // One word (most products): a push, where the general path's iterators cost more than
+        // the addition.
+        if self.words == 1 {
+            out.push(self.table[low].wrapping_add(cursor.fields[0]));
+        } else {
+            let at = low * self.words;
+            for (l, h) in self.table[at..at + self.words].iter().zip(&cursor.fields) {
+                out.push(l.wrapping_add(*h));
+            }
+        }
+    }
+
+    /// Decodes the high part `high` into the cursor (once per `span` indices read in order).
+    #[inline(never)]
+    fn move_to(&self, cursor: &mut Cursor, high: u64) {
+        cursor.high = high;
+        cursor.fields.fill(0);
+        add_digits(&self.high, high, &mut cursor.fields);
     }
 }
 
