@@ -178,16 +178,26 @@ impl<S: Copy + Send + Sync> Factors<S> {
         *next = j + run;
     }
 
+    /// For each row, its first partner whose product lies below `hi` (partners are visited in
+    /// descending index order, as the chunks are).
+    fn first_partners(&self, hi: u64) -> Vec<usize> {
+        let gb = &self.gb;
+        self.fa
+            .iter()
+            .map(|&fi| gb.partition_point(|&g| fi + g >= hi))
+            .collect()
+    }
+
     /// The most terms the product of the indices in `[lo, hi)` can have (one per product and
-    /// one per index), and at most one more than `max_terms`.
-    fn bound(&self, lo: u64, hi: u64, max_terms: usize) -> usize {
+    /// one per index), and at most one more than `max_terms`; `next` from
+    /// [`Factors::first_partners`].
+    fn bound(&self, next: &[usize], (lo, hi): (u64, u64), max_terms: usize) -> usize {
         let gb = &self.gb;
         let products: usize = self
             .fa
             .iter()
-            .map(|&fi| {
-                gb.partition_point(|&g| fi + g >= lo) - gb.partition_point(|&g| fi + g >= hi)
-            })
+            .zip(next)
+            .map(|(&fi, &j)| gb.partition_point(|&g| fi + g >= lo) - j)
             .sum();
         (products as u64).min(hi - lo).min(max_terms as u64 + 1) as usize
     }
@@ -201,8 +211,9 @@ impl<S: Copy + Send + Sync> Factors<S> {
         decoder: &Decoder,
         max_terms: usize,
     ) -> Result<Product<I>, AlgebraError> {
-        let mut builder = Builder::<I>::new(decoder, self.bound(lo, hi, max_terms));
-        self.accumulate::<I, MARK>(acc, (lo, hi), max_terms, &mut builder)?;
+        let next = self.first_partners(hi);
+        let mut builder = Builder::<I>::new(decoder, self.bound(&next, (lo, hi), max_terms));
+        self.accumulate::<I, MARK>(acc, next, (lo, hi), max_terms, &mut builder)?;
         Ok(builder.finish())
     }
 
@@ -217,7 +228,8 @@ impl<S: Copy + Send + Sync> Factors<S> {
         decoder: &Decoder,
         max_terms: usize,
     ) -> Result<Product<I>, AlgebraError> {
-        let bound = self.bound(lo, hi, max_terms);
+        let next = self.first_partners(hi);
+        let bound = self.bound(&next, (lo, hi), max_terms);
         let (full, batches) = mpsc::sync_channel::<Vec<(u64, I)>>(BATCHES_IN_FLIGHT);
         let (emptied, empties) = mpsc::channel::<Vec<(u64, I)>>();
         std::thread::scope(|scope| {
@@ -242,7 +254,7 @@ impl<S: Copy + Send + Sync> Factors<S> {
                 full,
                 empties,
             };
-            let added = self.accumulate::<I, true>(acc, (lo, hi), max_terms, &mut sender);
+            let added = self.accumulate::<I, true>(acc, next, (lo, hi), max_terms, &mut sender);
             if added.is_ok() && !sender.batch.is_empty() {
                 sender.flush();
             }
@@ -256,13 +268,15 @@ impl<S: Copy + Send + Sync> Factors<S> {
     }
 
     /// Adds the products with indices in `[lo, hi)` into the accumulators, chunk by chunk
-    /// (a chunk is as wide as `acc`), and passes each nonzero sum to `sink` with its index,
+    /// (a chunk is as wide as `acc`), starting each row at its partner in `next` (from
+    /// [`Factors::first_partners`]), and passes each nonzero sum to `sink` with its index,
     /// highest first. With `MARK`, a bitmap records the touched accumulators and only those
     /// are read back, and each chunk visits only the rows with a product in it; without, every
     /// accumulator of a chunk is read back.
     fn accumulate<I: IntegerRing<Small = S>, const MARK: bool>(
         &self,
         acc: &mut [I::Wide],
+        mut next: Vec<usize>,
         (lo, hi): (u64, u64),
         max_terms: usize,
         sink: &mut impl Sink<I>,
@@ -273,12 +287,7 @@ impl<S: Copy + Send + Sync> Factors<S> {
         let chunk = acc.len() as u64;
         let zero = I::Wide::default();
         let mut touched = vec![0u64; if MARK { (chunk / 64) as usize } else { 0 }];
-        // `next[i]`: the first partner of row `i` not yet multiplied (partners are visited in
-        // descending index order, as the chunks are).
-        let mut next: Vec<usize> = fa
-            .iter()
-            .map(|&fi| gb.partition_point(|&g| fi + g >= hi))
-            .collect();
+        // `next[i]`: the first partner of row `i` not yet multiplied.
         // Sparse: `waiting[c]` starts the list of the rows whose next product falls in chunk
         // `c` (counted from the top), linked through `then`. Dense: rows before `first` land
         // above every remaining chunk, and the others are scanned in order.
