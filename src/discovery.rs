@@ -114,12 +114,17 @@ fn space_text(r: &SearchResult) -> String {
     )
 }
 
+/// The reach of a proof with the parameters `names` kept symbolic and the others at `fixed`.
+fn proved_for_every(names: &str, fixed: &str) -> String {
+    format!("proved for every {names}, at {fixed}")
+}
+
 /// What a proof covers, when it is not every value of every parameter: `fixed` is the text
 /// of the fixed values, `symbolic` the names of the parameters kept symbolic (if any).
 fn proof_note(f: &Integral, fixed: &str, symbolic: Option<&str>) -> Option<String> {
     match (&f.symbolic, f.proved_fixed, symbolic) {
         (Some(_), _, _) => None,
-        (None, true, Some(names)) => Some(format!("proved for every {names}, at {fixed}")),
+        (None, true, Some(names)) => Some(proved_for_every(names, fixed)),
         (None, true, None) => Some(format!("proved at {fixed} only: no symbolic lift")),
         (None, false, _) => Some("not proved".into()),
     }
@@ -298,7 +303,7 @@ pub fn search_report(
         let note = match &symbolic {
             // Nothing fixed: every proof was symbolic.
             _ if r.parameters.is_empty() => None,
-            Some(names) => Some(format!("proved for every {names}, at {fixed}")),
+            Some(names) => Some(proved_for_every(names, &fixed)),
             None => Some(format!("{lifted} of them lifted and proved symbolically")),
         };
         let mut c = ClaimResult::derived(
