@@ -9,7 +9,7 @@ use superint::workloads::Workload;
 
 /// The allocator of the `superint` binary, so that these figures match `superint bench`.
 #[global_allocator]
-static ALLOCATOR: mimalloc::MiMalloc = mimalloc::MiMalloc;
+static ALLOCATOR: superint::allocator::Allocator = superint::allocator::Allocator;
 
 fn main() {
     divan::main();

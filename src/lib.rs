@@ -25,6 +25,7 @@
 pub use brackets;
 pub use trigpoly;
 
+pub mod allocator;
 pub mod discovery;
 pub mod paper;
 pub mod render;

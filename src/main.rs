@@ -11,7 +11,7 @@ use std::process::ExitCode;
 /// polynomial is two), and this halves the cost of allocating them (docs/performance.md). Its
 /// arenas are committed lazily (`.cargo/config.toml`), so the peak memory stays near what is used.
 #[global_allocator]
-static ALLOCATOR: mimalloc::MiMalloc = mimalloc::MiMalloc;
+static ALLOCATOR: superint::allocator::Allocator = superint::allocator::Allocator;
 
 fn main() -> ExitCode {
     match cli::run(std::env::args_os()) {
