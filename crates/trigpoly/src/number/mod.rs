@@ -62,6 +62,12 @@ pub trait IntegerRing:
     fn wide_add_mul(acc: &mut Self::Wide, a: &Self::Small, b: &Self::Small);
     /// The value of a wide accumulator.
     fn from_wide(w: Self::Wide) -> Self;
+    /// `acc += w` in wide arithmetic; the caller guarantees no overflow.
+    fn wide_add(acc: &mut Self::Wide, w: &Self::Wide);
+    /// `k · w` in wide arithmetic; the caller guarantees no overflow.
+    fn wide_scale(w: &Self::Wide, k: i64) -> Self::Wide;
+    /// `i · w`, if `i` is in the ring.
+    fn wide_mul_i(w: &Self::Wide) -> Option<Self::Wide>;
     /// Whether products of primitive elements are primitive (Gauss's lemma: true for Z, false
     /// for Z\[i\] with primitivity taken componentwise, as `(1 + i)(1 − i) = 2` shows).
     const GAUSS_LEMMA: bool;
@@ -91,8 +97,20 @@ impl IntegerRing for Integer {
     fn wide_add_mul(acc: &mut i128, a: &i64, b: &i64) {
         *acc += *a as i128 * *b as i128;
     }
+    #[inline]
     fn from_wide(w: i128) -> Self {
         Integer::from_i128(w)
+    }
+    #[inline(always)]
+    fn wide_add(acc: &mut i128, w: &i128) {
+        *acc += *w;
+    }
+    #[inline(always)]
+    fn wide_scale(w: &i128, k: i64) -> i128 {
+        *w * k as i128
+    }
+    fn wide_mul_i(_: &i128) -> Option<i128> {
+        None
     }
     fn is_zero(&self) -> bool {
         Integer::is_zero(self)
@@ -165,8 +183,22 @@ impl IntegerRing for GaussianInteger {
         acc.0 += ar * br - ai * bi;
         acc.1 += ar * bi + ai * br;
     }
+    #[inline]
     fn from_wide(w: (i128, i128)) -> Self {
         GaussianInteger::new(Integer::from_i128(w.0), Integer::from_i128(w.1))
+    }
+    #[inline(always)]
+    fn wide_add(acc: &mut (i128, i128), w: &(i128, i128)) {
+        acc.0 += w.0;
+        acc.1 += w.1;
+    }
+    #[inline(always)]
+    fn wide_scale(w: &(i128, i128), k: i64) -> (i128, i128) {
+        (w.0 * k as i128, w.1 * k as i128)
+    }
+    #[inline(always)]
+    fn wide_mul_i(w: &(i128, i128)) -> Option<(i128, i128)> {
+        Some((-w.1, w.0))
     }
     fn is_zero(&self) -> bool {
         GaussianInteger::is_zero(self)

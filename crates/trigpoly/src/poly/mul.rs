@@ -17,12 +17,18 @@ use crate::varset::{Layout, Var};
 
 /// A packed monomial of a fixed number of words, padded with zero words.
 pub(crate) trait Key: Copy + Eq + Ord {
+    /// The words of a key.
+    const WORDS: usize;
     fn load(s: &[u64]) -> Self;
     fn store(&self, out: &mut Vec<u64>, words: usize);
     fn mul(&self, other: &Self, bias: &Self) -> Self;
+    /// The monomial divided by the one whose packed fields are `by` (no bias: `by` holds the
+    /// exponents themselves, word by word).
+    fn lowered(&self, by: &[u64]) -> Self;
 }
 
 impl<const N: usize> Key for [u64; N] {
+    const WORDS: usize = N;
     #[inline]
     fn load(s: &[u64]) -> Self {
         let mut k = [0u64; N];
@@ -38,6 +44,14 @@ impl<const N: usize> Key for [u64; N] {
         let mut r = [0u64; N];
         for w in 0..N {
             r[w] = self[w].wrapping_add(other[w]).wrapping_sub(bias[w]);
+        }
+        r
+    }
+    #[inline]
+    fn lowered(&self, by: &[u64]) -> Self {
+        let mut r = *self;
+        for (word, by) in r.iter_mut().zip(by) {
+            *word = word.wrapping_sub(*by);
         }
         r
     }

@@ -7,16 +7,12 @@
 //! rational content, merged pairwise like the levels of a tree, and normalised once, instead of
 //! normalising every derivative, every product and every partial sum.
 
-use super::gather::{self, Gather, Monomial};
-use super::mul::{merge_tree, Key, SMALL_SIDE};
+use super::gather::{self, JacobianPair, Monomial, MAX_JACOBIAN_PAIRS};
+use super::mul::{merge_tree, SMALL_SIDE};
 use super::Poly;
 use crate::error::AlgebraError;
-use crate::number::{Coefficient, Integer, IntegerRing, Rational};
+use crate::number::{Coefficient, IntegerRing, Rational};
 use crate::varset::{Layout, Var, VarKind};
-
-/// The most pairs of variables the short Jacobian kernel takes (every pair of a phase space
-/// whose monomials fit [`gather::WORDS`] words, with room to spare).
-const MAX_SHORT_PAIRS: usize = 16;
 
 /// Sorted term lists with their rational contents, waiting to be summed.
 type Streams<C> = Vec<(Rational, Poly<C>)>;
@@ -170,25 +166,14 @@ impl<C: Coefficient> Poly<C> {
         let w = layout.words;
         let limit = vars.limits().max_degree as i64;
         if !gather::fits(w, f.len().saturating_mul(g.len()))
-            || pairs.len() > MAX_SHORT_PAIRS
+            || pairs.len() > MAX_JACOBIAN_PAIRS
             || f.exponent_bound() + g.exponent_bound() + 1 > limit
         {
             return Ok(None);
         }
-        /// One pair `(q, p)` as the kernel reads it.
-        #[derive(Clone, Copy, Default)]
-        struct Shape {
-            q: (usize, u32),
-            p: (usize, u32),
-            /// What both derivatives take off a monomial: one in the field of each variable
-            /// that is not an angle.
-            lower: Monomial,
-            /// Factors `i` the derivatives bring, one per angle.
-            turns: u32,
-        }
         // On the stack: a bracket of generators is a few dozen term products, and an
         // allocation would cost as much as several of them.
-        let mut shapes = [Shape::default(); MAX_SHORT_PAIRS];
+        let mut shapes = [JacobianPair::default(); MAX_JACOBIAN_PAIRS];
         for (shape, &(q, p)) in shapes.iter_mut().zip(pairs) {
             let mut lower: Monomial = [0; gather::WORDS];
             let mut turns = 0;
@@ -200,7 +185,7 @@ impl<C: Coefficient> Poly<C> {
                     lower[word] = lower[word].wrapping_add(1 << shift);
                 }
             }
-            *shape = Shape {
+            *shape = JacobianPair {
                 q: layout.field(q.index()),
                 p: layout.field(p.index()),
                 lower,
@@ -208,36 +193,11 @@ impl<C: Coefficient> Poly<C> {
             };
         }
         let shapes = &shapes[..pairs.len()];
-        let bias = Monomial::load(layout.one());
-        let mut out = Gather::with_capacity(f.len() * g.len());
-        for (mf, cf) in f.exps.chunks_exact(w).zip(&f.coeffs) {
-            let kf = Monomial::load(mf);
-            for (mg, cg) in g.exps.chunks_exact(w).zip(&g.coeffs) {
-                let mut product = None;
-                let mfg = kf.mul(&Monomial::load(mg), &bias);
-                for shape in shapes {
-                    let factor = layout.read(mf, shape.q) * layout.read(mg, shape.p)
-                        - layout.read(mf, shape.p) * layout.read(mg, shape.q);
-                    if factor == 0 {
-                        continue;
-                    }
-                    let c = product.get_or_insert_with(|| cf.mul(cg));
-                    let mut t = c.scale(&Integer::from(factor));
-                    for _ in 0..shape.turns {
-                        match t.try_mul_i() {
-                            Some(ti) => t = ti,
-                            None => return Ok(None),
-                        }
-                    }
-                    let mut m = mfg;
-                    for (word, lower) in m.iter_mut().zip(shape.lower) {
-                        *word = word.wrapping_sub(lower);
-                    }
-                    out.push(m, t);
-                }
-            }
-        }
-        let (exps, coeffs) = out.finish(w);
+        let Some((exps, coeffs)) =
+            gather::jacobians(layout, (&f.exps, &f.coeffs), (&g.exps, &g.coeffs), shapes)
+        else {
+            return Ok(None);
+        };
         Self::check_terms(vars, coeffs.len())?;
         Ok(Some(Self::from_sorted(
             vars,

@@ -142,3 +142,69 @@ fn products_of_monomials_wider_than_the_heap_keys() {
     assert_eq!(product.len(), 64);
     assert_eq!(product, by_terms);
 }
+
+/// Short products, squares and brackets gather their term products in `i128` when the
+/// coefficients fit machine words, and as exact integers past a word or past the bits an
+/// `i128` sum holds. On both sides of each boundary, over Q and over Q(i): the product and the
+/// square take the values of `f(p)·g(p)` and `f(p)²`, and the bracket equals the one built from
+/// the derivatives, each taken and multiplied on its own.
+#[test]
+fn short_products_squares_and_brackets_on_both_sides_of_the_word_boundary() {
+    let vars = VarSet::builder()
+        .coordinate("x")
+        .coordinate("y")
+        .momentum("p")
+        .angle("theta")
+        .build()
+        .unwrap();
+    let [x, y, pm, theta] = ["x", "y", "p", "theta"].map(|v| var(&vars, v));
+    let pt = point(&vars, &[("x", 3), ("y", -2), ("p", 5)]);
+    // At e^{iθ} = (3 + 4i)/5: cos θ = 3/5, sin θ = 4/5.
+    let on_circle = G::constant(
+        &vars,
+        GaussianRational::new(Rational::new(3, 5), Rational::new(4, 5)),
+    );
+    let coefficients = [
+        "3", "2^31", "2^55", "2^56 + 1", "2^62", "2^63 - 1", "-2^63", "2^63", "2^64 + 7", "2^100",
+    ];
+    for c in coefficients {
+        for unit in ["1", "(2 - 3*i)"] {
+            let f: G = p(
+                &vars,
+                &format!("{unit}*({c})*x*y*p - 5*x^2 + ({c})*y^2*cos(theta) + {unit}"),
+            );
+            let g: G = p(&vars, &format!("x*p^2 - ({c})*y^3 + 7*{unit}*sin(theta)"));
+            let at = |h: &G| h.subst(theta, &on_circle).and_then(|h| h.eval(&pt));
+            let (fp, gp) = (at(&f).unwrap(), at(&g).unwrap());
+            assert_eq!(at(&(&f * &g)), Ok(&fp * &gp), "f·g with c = {c}");
+            assert_eq!(
+                at(&f.checked_pow(2).unwrap()),
+                Ok(&fp * &fp),
+                "f² with c = {c}"
+            );
+            let pairs = [(x, pm), (theta, y)];
+            let direct = pairs.iter().fold(G::zero(&vars), |sum, &(q, m)| {
+                let d = |h: &G, v| h.derivative(v).unwrap();
+                &(&sum + &(&d(&f, q) * &d(&g, m))) - &(&d(&f, m) * &d(&g, q))
+            });
+            assert_eq!(
+                G::sum_of_jacobians(&f, &g, &pairs),
+                Ok(direct),
+                "{{f, g}} with c = {c}"
+            );
+        }
+        // Over Q, where the gather's word path has no `i` to multiply by.
+        let f: Q = p(&vars, &format!("({c})*x*y*p - 5*x^2 + ({c})*y^2 + 1"));
+        let g: Q = p(&vars, &format!("x*p^2 - ({c})*y^3 + 7"));
+        let (fp, gp) = (f.eval(&pt).unwrap(), g.eval(&pt).unwrap());
+        assert_eq!(
+            (&f * &g).eval(&pt),
+            Ok(&fp * &gp),
+            "f·g over Q with c = {c}"
+        );
+        assert_eq!(f.checked_pow(2).unwrap().eval(&pt), Ok(&fp * &fp));
+        let direct = &(&f.derivative(x).unwrap() * &g.derivative(pm).unwrap())
+            - &(&f.derivative(pm).unwrap() * &g.derivative(x).unwrap());
+        assert_eq!(Q::sum_of_jacobians(&f, &g, &[(x, pm)]), Ok(direct));
+    }
+}
