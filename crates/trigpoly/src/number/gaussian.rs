@@ -8,12 +8,22 @@ use super::rational::forward_binop;
 use super::{Integer, IntegerAcc, Rational};
 
 /// A Gaussian integer `re + i·im`.
-#[derive(Clone, PartialEq, Eq, Hash, Default)]
+#[derive(PartialEq, Eq, Hash, Default)]
 pub struct GaussianInteger {
     /// Real part.
     pub re: Integer,
     /// Imaginary part.
     pub im: Integer,
+}
+
+impl Clone for GaussianInteger {
+    #[inline]
+    fn clone(&self) -> Self {
+        GaussianInteger {
+            re: self.re.clone(),
+            im: self.im.clone(),
+        }
+    }
 }
 
 impl GaussianInteger {

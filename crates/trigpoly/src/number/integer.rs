@@ -27,7 +27,7 @@ use num_traits::{One, Signed, ToPrimitive, Zero};
 /// assert_eq!(big.to_string(), "9223372036854775808");
 /// assert_eq!(big - Integer::from(1), Integer::from(i64::MAX));
 /// ```
-#[derive(Clone, PartialEq, Eq, Hash)]
+#[derive(PartialEq, Eq, Hash)]
 pub enum Integer {
     /// A value in `i64` range.
     Small(i64),
@@ -38,7 +38,28 @@ pub enum Integer {
     Big(Box<BigInt>),
 }
 
+/// Written out so that the common case, a `Small` value, is a copy inlined at the call (the
+/// derived clone is a call that matches every variant).
+impl Clone for Integer {
+    #[inline]
+    fn clone(&self) -> Self {
+        match self {
+            Integer::Small(v) => Integer::Small(*v),
+            boxed => boxed.clone_boxed(),
+        }
+    }
+}
+
 impl Integer {
+    #[inline(never)]
+    fn clone_boxed(&self) -> Self {
+        match self {
+            Integer::Small(v) => Integer::Small(*v),
+            Integer::Wide(v) => Integer::Wide(v.clone()),
+            Integer::Big(b) => Integer::Big(b.clone()),
+        }
+    }
+
     /// Zero.
     pub const ZERO: Integer = Integer::Small(0);
     /// One.

@@ -95,28 +95,47 @@ pub(crate) fn merge<C: Coefficient>(
     b: &Poly<C>,
     sb: &Integer,
 ) -> (Vec<u64>, Vec<C::Int>) {
-    let w = a.words();
+    // Monomials of a width known at compile time are copied in place (a runtime width is a
+    // `memcpy` call per term).
+    match a.words() {
+        1 => merge_of_width::<C, 1>(a, sa, b, sb),
+        2 => merge_of_width::<C, 2>(a, sa, b, sb),
+        3 => merge_of_width::<C, 3>(a, sa, b, sb),
+        4 => merge_of_width::<C, 4>(a, sa, b, sb),
+        _ => merge_of_width::<C, 0>(a, sa, b, sb),
+    }
+}
+
+/// [`merge`] for monomials of `W` words (`W = 0`: the polynomials' width, read at run time).
+#[inline(always)]
+fn merge_of_width<C: Coefficient, const W: usize>(
+    a: &Poly<C>,
+    sa: &Integer,
+    b: &Poly<C>,
+    sb: &Integer,
+) -> (Vec<u64>, Vec<C::Int>) {
+    let w = if W == 0 { a.words() } else { W };
     let (n, m) = (a.len(), b.len());
     let mut exps = Vec::with_capacity((n + m) * w);
     let mut coeffs = Vec::with_capacity(n + m);
     let scale = |c: &C::Int, s: &Integer| if s.is_one() { c.clone() } else { c.scale(s) };
     let (mut i, mut j) = (0, 0);
     while i < n && j < m {
-        match a.exp(i).cmp(b.exp(j)) {
+        match monomial(a, i, w).cmp(monomial(b, j, w)) {
             std::cmp::Ordering::Greater => {
-                exps.extend_from_slice(a.exp(i));
+                exps.extend_from_slice(monomial(a, i, w));
                 coeffs.push(scale(&a.coeffs[i], sa));
                 i += 1;
             }
             std::cmp::Ordering::Less => {
-                exps.extend_from_slice(b.exp(j));
+                exps.extend_from_slice(monomial(b, j, w));
                 coeffs.push(scale(&b.coeffs[j], sb));
                 j += 1;
             }
             std::cmp::Ordering::Equal => {
                 let c = scale(&a.coeffs[i], sa).add(&scale(&b.coeffs[j], sb));
                 if !c.is_zero() {
-                    exps.extend_from_slice(a.exp(i));
+                    exps.extend_from_slice(monomial(a, i, w));
                     coeffs.push(c);
                 }
                 i += 1;
@@ -125,14 +144,20 @@ pub(crate) fn merge<C: Coefficient>(
         }
     }
     for k in i..n {
-        exps.extend_from_slice(a.exp(k));
+        exps.extend_from_slice(monomial(a, k, w));
         coeffs.push(scale(&a.coeffs[k], sa));
     }
     for k in j..m {
-        exps.extend_from_slice(b.exp(k));
+        exps.extend_from_slice(monomial(b, k, w));
         coeffs.push(scale(&b.coeffs[k], sb));
     }
     (exps, coeffs)
+}
+
+/// The monomial of term `k` of `p`, of `w` words.
+#[inline(always)]
+fn monomial<C: Coefficient>(p: &Poly<C>, k: usize, w: usize) -> &[u64] {
+    &p.exps[k * w..(k + 1) * w]
 }
 
 /// `q · f` for a rational `q`, taking `f` (no copy of its terms, only a new content).
