@@ -415,6 +415,19 @@ impl Coefficient for GaussianRational {
         if self.is_zero() {
             return (Rational::zero(), GaussianInteger::default());
         }
+        // A real or an imaginary value (most constants) is itself times 1 or i.
+        if self.im.is_zero() {
+            return (
+                self.re.clone(),
+                GaussianInteger::new(Integer::ONE, Integer::ZERO),
+            );
+        }
+        if self.re.is_zero() {
+            return (
+                self.im.clone(),
+                GaussianInteger::new(Integer::ZERO, Integer::ONE),
+            );
+        }
         let g = Rational::content_gcd(&self.re, &self.im);
         let sign = if self.re.is_zero() {
             self.im.sign()

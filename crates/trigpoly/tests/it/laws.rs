@@ -270,3 +270,29 @@ fn gcd_at_the_edges_of_the_tiers() {
         );
     }
 }
+
+/// Multiplying by a constant keeps the normal form whatever the constant's shape (real,
+/// imaginary or neither, either sign, a fraction): `c·f` equals `Re c·f + i·Im c·f`, built from
+/// real scalings, `i` and a sum, and `c` as a polynomial equals the same sum for `f = 1`.
+#[test]
+fn scaling_by_a_constant_of_any_shape_keeps_the_normal_form() {
+    let vars = phase_space();
+    let f: G = p(&vars, "x*p_x - 3*y^2/2 + cos(theta)");
+    for (re, im) in [
+        (3, 0),
+        (-3, 0),
+        (0, 2),
+        (0, -2),
+        (0, -1),
+        (1, -1),
+        (-1, 2),
+        (-4, -6),
+    ] {
+        let c = GaussianRational::new(Rational::new(re, 5), Rational::from(im));
+        let (re, im) = (c.re.clone().into(), c.im.clone().into());
+        let parts = |f: &G| &f.scale(&re) + &f.mul_i().unwrap().scale(&im);
+        assert_eq!(f.scale(&c), parts(&f), "c = {c}");
+        let one = G::one(&vars);
+        assert_eq!(G::constant(&vars, c.clone()), parts(&one), "c = {c}");
+    }
+}
