@@ -428,13 +428,9 @@ impl Coefficient for GaussianRational {
                 GaussianInteger::new(Integer::ZERO, Integer::ONE),
             );
         }
+        // Both parts are nonzero here: the real part leads.
         let g = Rational::content_gcd(&self.re, &self.im);
-        let sign = if self.re.is_zero() {
-            self.im.sign()
-        } else {
-            self.re.sign()
-        };
-        let g = if sign == std::cmp::Ordering::Less {
+        let g = if self.re.sign() == std::cmp::Ordering::Less {
             -g
         } else {
             g

@@ -12,7 +12,7 @@
 
 use super::mul::Key;
 use crate::number::IntegerRing;
-use crate::varset::Layout;
+use crate::varset::{Layout, Var, VarKind, VarSet};
 
 /// Monomials of at most this many words take this path.
 pub(crate) const WORDS: usize = 4;
@@ -44,6 +44,30 @@ pub(crate) struct JacobianPair {
     pub(crate) lower: Monomial,
     /// Factors `i` the derivatives bring, one per angle.
     pub(crate) turns: u32,
+}
+
+impl JacobianPair {
+    /// The pair `(q, p)` of `vars`, whose monomials fit [`WORDS`] words.
+    #[inline]
+    pub(crate) fn new(vars: &VarSet, q: Var, p: Var) -> Self {
+        let layout = vars.layout();
+        let mut lower: Monomial = [0; WORDS];
+        let mut turns = 0;
+        for v in [q, p] {
+            if vars.variable(v).kind() == VarKind::Angle {
+                turns += 1;
+            } else {
+                let (word, shift) = layout.field(v.index());
+                lower[word] = lower[word].wrapping_add(1 << shift);
+            }
+        }
+        JacobianPair {
+            q: layout.field(q.index()),
+            p: layout.field(p.index()),
+            lower,
+            turns,
+        }
+    }
 }
 
 /// Calls `$f::<[u64; N], _>(args)` with `N` = `$words` (1 to [`WORDS`]).

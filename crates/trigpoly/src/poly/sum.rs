@@ -7,12 +7,12 @@
 //! rational content, merged pairwise like the levels of a tree, and normalised once, instead of
 //! normalising every derivative, every product and every partial sum.
 
-use super::gather::{self, JacobianPair, Monomial, MAX_JACOBIAN_PAIRS};
+use super::gather::{self, JacobianPair, MAX_JACOBIAN_PAIRS};
 use super::mul::{merge_tree, SMALL_SIDE};
 use super::Poly;
 use crate::error::AlgebraError;
 use crate::number::{Coefficient, IntegerRing, Rational};
-use crate::varset::{Layout, Var, VarKind};
+use crate::varset::{Layout, Var};
 
 /// Sorted term lists with their rational contents, waiting to be summed.
 type Streams<C> = Vec<(Rational, Poly<C>)>;
@@ -173,29 +173,17 @@ impl<C: Coefficient> Poly<C> {
         }
         // On the stack: a bracket of generators is a few dozen term products, and an
         // allocation would cost as much as several of them.
-        let mut shapes = [JacobianPair::default(); MAX_JACOBIAN_PAIRS];
-        for (shape, &(q, p)) in shapes.iter_mut().zip(pairs) {
-            let mut lower: Monomial = [0; gather::WORDS];
-            let mut turns = 0;
-            for v in [q, p] {
-                if vars.variable(v).kind() == VarKind::Angle {
-                    turns += 1;
-                } else {
-                    let (word, shift) = layout.field(v.index());
-                    lower[word] = lower[word].wrapping_add(1 << shift);
-                }
-            }
-            *shape = JacobianPair {
-                q: layout.field(q.index()),
-                p: layout.field(p.index()),
-                lower,
-                turns,
-            };
+        let mut kernel_pairs = [JacobianPair::default(); MAX_JACOBIAN_PAIRS];
+        for (kernel_pair, &(q, p)) in kernel_pairs.iter_mut().zip(pairs) {
+            *kernel_pair = JacobianPair::new(vars, q, p);
         }
-        let shapes = &shapes[..pairs.len()];
-        let Some((exps, coeffs)) =
-            gather::jacobians(layout, (&f.exps, &f.coeffs), (&g.exps, &g.coeffs), shapes)
-        else {
+        let kernel_pairs = &kernel_pairs[..pairs.len()];
+        let Some((exps, coeffs)) = gather::jacobians(
+            layout,
+            (&f.exps, &f.coeffs),
+            (&g.exps, &g.coeffs),
+            kernel_pairs,
+        ) else {
             return Ok(None);
         };
         Self::check_terms(vars, coeffs.len())?;
