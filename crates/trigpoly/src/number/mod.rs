@@ -14,6 +14,8 @@ use std::fmt::{Debug, Display};
 use std::hash::Hash;
 use std::str::FromStr;
 
+use gcd::gcd_u128;
+
 pub use gaussian::{GaussianAcc, GaussianInteger, GaussianRational, ParseGaussianError};
 pub use integer::{ExactDivisor, Integer, IntegerAcc};
 pub use rational::{ParseRationalError, Rational};
@@ -68,6 +70,12 @@ pub trait IntegerRing:
     fn wide_scale(w: &Self::Wide, k: i64) -> Self::Wide;
     /// `i · w`, if `i` is in the ring.
     fn wide_mul_i(w: &Self::Wide) -> Option<Self::Wide>;
+    /// `gcd(g, |c|)` over the components `c` of `w`.
+    fn wide_gcd(g: u128, w: &Self::Wide) -> u128;
+    /// The sign of the first nonzero component of `w` (real part first).
+    fn wide_leading_sign(w: &Self::Wide) -> i32;
+    /// `w / d`, exact: `d ≠ 0` divides every component.
+    fn wide_div_exact(w: &Self::Wide, d: i128) -> Self::Wide;
     /// Whether products of primitive elements are primitive (Gauss's lemma: true for Z, false
     /// for Z\[i\] with primitivity taken componentwise, as `(1 + i)(1 − i) = 2` shows).
     const GAUSS_LEMMA: bool;
@@ -111,6 +119,18 @@ impl IntegerRing for Integer {
     }
     fn wide_mul_i(_: &i128) -> Option<i128> {
         None
+    }
+    #[inline]
+    fn wide_gcd(g: u128, w: &i128) -> u128 {
+        gcd_u128(g, w.unsigned_abs())
+    }
+    #[inline]
+    fn wide_leading_sign(w: &i128) -> i32 {
+        w.signum() as i32
+    }
+    #[inline]
+    fn wide_div_exact(w: &i128, d: i128) -> i128 {
+        w / d
     }
     fn is_zero(&self) -> bool {
         Integer::is_zero(self)
@@ -199,6 +219,22 @@ impl IntegerRing for GaussianInteger {
     #[inline(always)]
     fn wide_mul_i(w: &(i128, i128)) -> Option<(i128, i128)> {
         Some((-w.1, w.0))
+    }
+    #[inline]
+    fn wide_gcd(g: u128, w: &(i128, i128)) -> u128 {
+        gcd_u128(gcd_u128(g, w.0.unsigned_abs()), w.1.unsigned_abs())
+    }
+    #[inline]
+    fn wide_leading_sign(w: &(i128, i128)) -> i32 {
+        if w.0 == 0 {
+            w.1.signum() as i32
+        } else {
+            w.0.signum() as i32
+        }
+    }
+    #[inline]
+    fn wide_div_exact(w: &(i128, i128), d: i128) -> (i128, i128) {
+        (w.0 / d, w.1 / d)
     }
     fn is_zero(&self) -> bool {
         GaussianInteger::is_zero(self)

@@ -17,6 +17,22 @@ impl<C: Coefficient> Poly<C> {
         if self.is_zero() {
             return Ok(if negate_other { -other } else { other.clone() });
         }
+        // Equal term lists (as in an identity's residual `a − a`): only the contents add, so
+        // nothing is merged, and a sum that cancels costs no allocation.
+        if self.exps == other.exps && self.coeffs == other.coeffs {
+            let content = if negate_other {
+                &self.content - &other.content
+            } else {
+                &self.content + &other.content
+            };
+            if content.is_zero() {
+                return Ok(Self::zero(&self.vars));
+            }
+            return Ok(Poly {
+                content,
+                ..self.clone()
+            });
+        }
         let (d, sa, mut sb) = Rational::content_split(&self.content, &other.content);
         if negate_other {
             sb = -sb;

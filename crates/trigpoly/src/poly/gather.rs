@@ -11,8 +11,18 @@
 //! coefficients of any size.
 
 use super::mul::Key;
-use crate::number::IntegerRing;
+use crate::number::{Integer, IntegerRing};
 use crate::varset::{Layout, Var, VarKind, VarSet};
+
+/// The terms a kernel gathered: sorted, distinct, nonzero.
+pub(crate) struct Gathered<I> {
+    pub(crate) exps: Vec<u64>,
+    pub(crate) coeffs: Vec<I>,
+    /// `Some(d)` when the sums were divided by `d` (their gcd, with the sign of the leading
+    /// one), which leaves them primitive with a positive lead; `None` when they are as they
+    /// came, and still to be normalised.
+    pub(crate) divisor: Option<Integer>,
+}
 
 /// Monomials of at most this many words take this path.
 pub(crate) const WORDS: usize = 4;
@@ -88,14 +98,14 @@ pub(crate) fn product<I: IntegerRing>(
     layout: &Layout,
     a: (&[u64], &[I]),
     b: (&[u64], &[I]),
-) -> (Vec<u64>, Vec<I>) {
+) -> Gathered<I> {
     debug_assert!(layout.words <= WORDS);
     by_width!(layout.words, product_of_width, layout, a, b)
 }
 
 /// The square of a term list, from the `n(n + 1)/2` products `c_i²·m_i²` and `2c_ic_j·m_im_j`
 /// (`i < j`), sorted, combined, zeros dropped. The caller has checked the exponents.
-pub(crate) fn square<I: IntegerRing>(layout: &Layout, a: (&[u64], &[I])) -> (Vec<u64>, Vec<I>) {
+pub(crate) fn square<I: IntegerRing>(layout: &Layout, a: (&[u64], &[I])) -> Gathered<I> {
     debug_assert!(layout.words <= WORDS);
     by_width!(layout.words, square_of_width, layout, a)
 }
@@ -111,36 +121,116 @@ pub(crate) fn jacobians<I: IntegerRing>(
     f: (&[u64], &[I]),
     g: (&[u64], &[I]),
     pairs: &[JacobianPair],
-) -> Option<(Vec<u64>, Vec<I>)> {
+) -> Option<Gathered<I>> {
     debug_assert!(layout.words <= WORDS);
     by_width!(layout.words, jacobians_of_width, layout, f, g, pairs)
+}
+
+/// One product of a [`sum_of_products`]: the term lists of its factors and an integer
+/// multiplier `k ≠ 0`. A square (`b` is `a`) gathers each pair of terms once.
+#[derive(Clone, Copy)]
+pub(crate) struct Product<'a, I> {
+    a: (&'a [u64], &'a [I]),
+    b: (&'a [u64], &'a [I]),
+    k: i64,
+}
+
+impl<'a, I> Product<'a, I> {
+    /// No product: a placeholder in a fixed array.
+    pub(crate) const EMPTY: Self = Product {
+        a: (&[], &[]),
+        b: (&[], &[]),
+        k: 0,
+    };
+
+    /// `k·a·b`.
+    pub(crate) fn new(a: (&'a [u64], &'a [I]), b: (&'a [u64], &'a [I]), k: i64) -> Self {
+        Product { a, b, k }
+    }
+
+    /// Whether both factors are the same term list.
+    fn is_square(&self) -> bool {
+        std::ptr::eq(self.a.1, self.b.1) && std::ptr::eq(self.a.0, self.b.0)
+    }
+
+    /// The term products it gathers: `n(n + 1)/2` for a square, else `n·m`.
+    pub(crate) fn pairs(&self) -> usize {
+        let n = self.a.1.len();
+        if self.is_square() {
+            n * (n + 1) / 2
+        } else {
+            n.saturating_mul(self.b.1.len())
+        }
+    }
+}
+
+/// `Σ_k k·a_k·b_k` over the products, sorted, combined, zeros dropped: every term product of
+/// every pair in one buffer, sorted once. `None` when a coefficient does not fit a word (the
+/// general path handles it). The caller has checked the exponents and that the products
+/// gather at most [`MAX_PAIRS`] term products in all.
+pub(crate) fn sum_of_products<I: IntegerRing>(
+    layout: &Layout,
+    products: &[Product<'_, I>],
+) -> Option<Gathered<I>> {
+    debug_assert!(layout.words <= WORDS);
+    by_width!(layout.words, sum_of_products_of_width, layout, products)
+}
+
+fn sum_of_products_of_width<K: Key, I: IntegerRing>(
+    layout: &Layout,
+    products: &[Product<'_, I>],
+) -> Option<Gathered<I>> {
+    let bias = K::load(layout.one());
+    let mut n = 0;
+    let mut ab_bits = 0;
+    for p in products {
+        n += p.pairs();
+        ab_bits = ab_bits.max(small_bits(p.a.1)? + small_bits(p.b.1)?);
+    }
+    let mut words = WordGather::<K, I>::new(n, ab_bits);
+    for p in products {
+        let k = p.k;
+        let all = if p.is_square() {
+            square_pairs(p.a, &bias, |m, x, y, two| match k.checked_mul(two) {
+                Some(k) => words.push(m, x, y, k, 0),
+                None => false,
+            })
+        } else {
+            product_pairs(p.a, p.b, &bias, |m, x, y, _| words.push(m, x, y, k, 0))
+        };
+        if !all {
+            return None;
+        }
+    }
+    Some(words.finish())
 }
 
 fn product_of_width<K: Key, I: IntegerRing>(
     layout: &Layout,
     a: (&[u64], &[I]),
     b: (&[u64], &[I]),
-) -> (Vec<u64>, Vec<I>) {
+) -> Gathered<I> {
     let bias = K::load(layout.one());
     let n = a.1.len() * b.1.len();
-    let mut words = WordGather::<K, I>::with_capacity(n);
-    if product_pairs(a, b, &bias, |m, x, y, k| words.push(m, x, y, k, 0)) {
-        return words.finish();
+    if let (Some(x), Some(y)) = (small_bits(a.1), small_bits(b.1)) {
+        let mut words = WordGather::<K, I>::new(n, x + y);
+        if product_pairs(a, b, &bias, |m, x, y, k| words.push(m, x, y, k, 0)) {
+            return words.finish();
+        }
     }
     let mut exact = Gather::<K, I>::with_capacity(n);
     product_pairs(a, b, &bias, |m, x, y, k| exact.push(m, x, y, k));
     exact.finish()
 }
 
-fn square_of_width<K: Key, I: IntegerRing>(
-    layout: &Layout,
-    a: (&[u64], &[I]),
-) -> (Vec<u64>, Vec<I>) {
+fn square_of_width<K: Key, I: IntegerRing>(layout: &Layout, a: (&[u64], &[I])) -> Gathered<I> {
     let bias = K::load(layout.one());
     let n = a.1.len() * (a.1.len() + 1) / 2;
-    let mut words = WordGather::<K, I>::with_capacity(n);
-    if square_pairs(a, &bias, |m, x, y, k| words.push(m, x, y, k, 0)) {
-        return words.finish();
+    if let Some(x) = small_bits(a.1) {
+        let mut words = WordGather::<K, I>::new(n, 2 * x);
+        if square_pairs(a, &bias, |m, x, y, k| words.push(m, x, y, k, 0)) {
+            return words.finish();
+        }
     }
     let mut exact = Gather::<K, I>::with_capacity(n);
     square_pairs(a, &bias, |m, x, y, k| exact.push(m, x, y, k));
@@ -152,21 +242,39 @@ fn jacobians_of_width<K: Key, I: IntegerRing>(
     f: (&[u64], &[I]),
     g: (&[u64], &[I]),
     pairs: &[JacobianPair],
-) -> Option<(Vec<u64>, Vec<I>)> {
+) -> Option<Gathered<I>> {
     let bias = K::load(layout.one());
-    let mut out = WordGather::<K, I>::with_capacity(f.1.len() * g.1.len());
+    let ab_bits = small_bits(f.1)? + small_bits(g.1)?;
+    // ∂(f, g)/∂(q, p) = f_q·g_p − f_p·g_q vanishes unless one side has `q` and the other `p`.
+    let (in_f, in_g) = (occurring::<K>(f.0, &bias), occurring::<K>(g.0, &bias));
+    let has = |vars: &K, (word, shift): (usize, u32)| {
+        (vars.as_ref()[word] >> shift) & layout.field_mask() != 0
+    };
+    let mut active = [JacobianPair::default(); MAX_JACOBIAN_PAIRS];
+    let mut count = 0;
+    for pair in pairs {
+        if (has(&in_f, pair.q) && has(&in_g, pair.p)) || (has(&in_f, pair.p) && has(&in_g, pair.q))
+        {
+            active[count] = *pair;
+            count += 1;
+        }
+    }
     let n = K::WORDS;
-    for (mf, cf) in f.0.chunks_exact(n).zip(f.1) {
-        let kf = K::load(mf);
-        for (mg, cg) in g.0.chunks_exact(n).zip(g.1) {
-            let mfg = kf.mul(&K::load(mg), &bias);
-            for pair in pairs {
-                let factor = layout.read(mf, pair.q) * layout.read(mg, pair.p)
-                    - layout.read(mf, pair.p) * layout.read(mg, pair.q);
+    let mut out = WordGather::<K, I>::new(f.1.len() * g.1.len() * count, ab_bits);
+    for pair in &active[..count] {
+        for (mf, cf) in f.0.chunks_exact(n).zip(f.1) {
+            let (aq, ap) = (layout.read(mf, pair.q), layout.read(mf, pair.p));
+            if aq == 0 && ap == 0 {
+                continue;
+            }
+            // The monomial m_f·m_g/(q·p), lowered once per term of `f`.
+            let lowered = K::load(mf).lowered(&pair.lower[..n]);
+            for (mg, cg) in g.0.chunks_exact(n).zip(g.1) {
+                let factor = aq * layout.read(mg, pair.p) - ap * layout.read(mg, pair.q);
                 if factor == 0 {
                     continue;
                 }
-                let m = mfg.lowered(&pair.lower[..n]);
+                let m = lowered.mul(&K::load(mg), &bias);
                 if !out.push(m, cf, cg, factor, pair.turns) {
                     return None;
                 }
@@ -174,6 +282,18 @@ fn jacobians_of_width<K: Key, I: IntegerRing>(
         }
     }
     Some(out.finish())
+}
+
+/// The fields of the variables that occur in some monomial of `exps` are nonzero in the
+/// result (an exponent differs from the bias there), and only those.
+fn occurring<K: Key>(exps: &[u64], bias: &K) -> K {
+    let mut seen = K::ZERO;
+    for m in exps.chunks_exact(K::WORDS) {
+        for ((s, &w), &b) in seen.as_mut().iter_mut().zip(m).zip(bias.as_ref()) {
+            *s |= w ^ b;
+        }
+    }
+    seen
 }
 
 /// Calls `emit(m_a·m_b, c_a, c_b, 1)` for every pair of terms of `a` and `b`, while it
@@ -225,31 +345,56 @@ fn square_pairs<K: Key, I>(
 /// adds two real products, so every sum stays below `2^(112 + 13) < 2^127`.
 const ITEM_BITS: u32 = 112;
 
-/// Term products with word-sized coefficients, unsorted, each kept exactly in the ring's wide
-/// form: no allocation, clone or drop per coefficient.
+/// The most bits of a component of any of the coefficients, if every one fits a word.
+fn small_bits<I: IntegerRing>(coeffs: &[I]) -> Option<u32> {
+    let mut bits = 0;
+    for c in coeffs {
+        bits = bits.max(I::small_bits(&c.to_small()?));
+    }
+    Some(bits)
+}
+
+/// Term products with word-sized coefficients, each kept exactly in the ring's wide form (no
+/// allocation, clone or drop per coefficient) and added at once to the running sum of its
+/// monomial, which an open-addressing table finds: only the distinct monomials are sorted at
+/// the end, and only those whose sums did not cancel (none, for an identity's residual).
 struct WordGather<K, I: IntegerRing> {
+    /// The distinct monomials in the order they came, with their sums.
     items: Vec<(K, I::Wide)>,
+    /// Linear probing over `items`: a slot holds an index into `items` plus one, or 0 when
+    /// empty; a power of two, more than twice the items.
+    slots: Vec<u32>,
+    /// `64 − log₂(slots)`: a hash's top bits pick the slot.
+    shift: u32,
+    /// The most bits of `a` and `b` together over the products pushed (from [`small_bits`]).
+    ab_bits: u32,
 }
 
 impl<K: Key, I: IntegerRing> WordGather<K, I> {
-    fn with_capacity(n: usize) -> Self {
+    /// Room for at most `n` term products, whose coefficients fit words and take at most
+    /// `ab_bits` bits together.
+    fn new(n: usize, ab_bits: u32) -> Self {
+        let slots = (2 * n + 1).next_power_of_two().max(8);
         WordGather {
             items: Vec::with_capacity(n),
+            slots: vec![0; slots],
+            shift: 64 - slots.trailing_zeros(),
+            ab_bits,
         }
     }
 
     /// Adds the term `a·b·k·iᵗ·m` (`k ≠ 0`, `t` = `turns`), or returns `false` and adds nothing
-    /// when a component of `a` or `b` does not fit a word, the product could take more than
-    /// [`ITEM_BITS`] bits, or `t > 0` in a ring without `i`.
-    #[inline]
+    /// when the product could take more than [`ITEM_BITS`] bits, or `t > 0` in a ring
+    /// without `i`.
+    #[inline(always)]
     fn push(&mut self, m: K, a: &I, b: &I, k: i64, turns: u32) -> bool {
+        let k_bits = 64 - k.unsigned_abs().leading_zeros();
+        if self.ab_bits + k_bits > ITEM_BITS {
+            return false;
+        }
         let (Some(a), Some(b)) = (a.to_small(), b.to_small()) else {
             return false;
         };
-        let k_bits = 64 - k.unsigned_abs().leading_zeros();
-        if I::small_bits(&a) + I::small_bits(&b) + k_bits > ITEM_BITS {
-            return false;
-        }
         let mut w = I::Wide::default();
         I::wide_add_mul(&mut w, &a, &b);
         if k != 1 {
@@ -261,31 +406,76 @@ impl<K: Key, I: IntegerRing> WordGather<K, I> {
                 None => return false,
             }
         }
-        self.items.push((m, w));
+        self.add(m, w);
         true
     }
 
-    /// The terms sorted descending, equal monomials summed, zero sums dropped.
-    fn finish(mut self) -> (Vec<u64>, Vec<I>) {
-        let items = &mut self.items;
-        items.sort_unstable_by_key(|&(m, _)| std::cmp::Reverse(m));
-        let mut exps = Vec::with_capacity(items.len() * K::WORDS);
-        let mut coeffs = Vec::with_capacity(items.len());
-        let zero = I::Wide::default();
-        let mut k = 0;
-        while k < items.len() {
-            let (m, mut sum) = items[k];
-            k += 1;
-            while k < items.len() && items[k].0 == m {
-                I::wide_add(&mut sum, &items[k].1);
-                k += 1;
+    /// `sum(m) += w`.
+    #[inline(always)]
+    fn add(&mut self, m: K, w: I::Wide) {
+        debug_assert!(
+            2 * self.items.len() < self.slots.len(),
+            "more items than promised"
+        );
+        let mask = self.slots.len() - 1;
+        let mut slot = (m.hash() >> self.shift) as usize;
+        loop {
+            match self.slots[slot] {
+                0 => {
+                    self.items.push((m, w));
+                    self.slots[slot] = self.items.len() as u32;
+                    return;
+                }
+                k => {
+                    let item = &mut self.items[k as usize - 1];
+                    if item.0 == m {
+                        I::wide_add(&mut item.1, &w);
+                        return;
+                    }
+                }
             }
-            if sum != zero {
-                m.store(&mut exps, K::WORDS);
-                coeffs.push(I::from_wide(sum));
+            slot = (slot + 1) & mask;
+        }
+    }
+
+    /// The terms sorted descending, zero sums dropped, divided by the gcd of the sums and the
+    /// sign of the leading one (on machine words, while they are converted), so that they are
+    /// primitive.
+    fn finish(mut self) -> Gathered<I> {
+        let zero = I::Wide::default();
+        let items = &mut self.items;
+        items.retain(|(_, sum)| *sum != zero);
+        items.sort_unstable_by_key(|&(m, _)| std::cmp::Reverse(m));
+        let mut g = 0u128;
+        for (_, sum) in items.iter() {
+            g = I::wide_gcd(g, sum);
+            if g == 1 {
+                break;
             }
         }
-        (exps, coeffs)
+        // Every sum is below 2^127 in size, and so is their gcd.
+        let mut divisor = (g as i128).max(1);
+        if items
+            .first()
+            .is_some_and(|(_, sum)| I::wide_leading_sign(sum) < 0)
+        {
+            divisor = -divisor;
+        }
+        let mut exps = Vec::with_capacity(items.len() * K::WORDS);
+        let mut coeffs = Vec::with_capacity(items.len());
+        for &(m, sum) in items.iter() {
+            m.store(&mut exps, K::WORDS);
+            coeffs.push(I::from_wide(match divisor {
+                1 => sum,
+                -1 => I::wide_scale(&sum, -1),
+                d => I::wide_div_exact(&sum, d),
+            }));
+        }
+        Gathered {
+            exps,
+            coeffs,
+            divisor: Some(Integer::from_i128(divisor)),
+        }
     }
 }
 
@@ -310,7 +500,7 @@ impl<K: Key, I: IntegerRing> Gather<K, I> {
     }
 
     /// The terms sorted descending, equal monomials summed, zero sums dropped.
-    fn finish(mut self) -> (Vec<u64>, Vec<I>) {
+    fn finish(mut self) -> Gathered<I> {
         self.items
             .sort_unstable_by_key(|&(m, _)| std::cmp::Reverse(m));
         let mut exps = Vec::with_capacity(self.items.len() * K::WORDS);
@@ -325,6 +515,10 @@ impl<K: Key, I: IntegerRing> Gather<K, I> {
                 coeffs.push(c);
             }
         }
-        (exps, coeffs)
+        Gathered {
+            exps,
+            coeffs,
+            divisor: None,
+        }
     }
 }

@@ -442,6 +442,26 @@ impl<C: Coefficient> Poly<C> {
         Self::assemble(vars, content, exps, coeffs)
     }
 
+    /// `content ·` the terms a kernel gathered, brought to the canonical form unless the
+    /// kernel did that already.
+    pub(crate) fn from_gathered(
+        vars: &Arc<VarSet>,
+        content: Rational,
+        terms: gather::Gathered<C::Int>,
+    ) -> Self {
+        let gather::Gathered {
+            exps,
+            coeffs,
+            divisor,
+        } = terms;
+        match divisor {
+            None => Self::from_sorted(vars, content, exps, coeffs),
+            Some(_) if coeffs.is_empty() || content.is_zero() => Self::zero(vars),
+            Some(d) if d.is_one() => Self::assemble(vars, content, exps, coeffs),
+            Some(d) => Self::assemble(vars, content * Rational::from(d), exps, coeffs),
+        }
+    }
+
     /// Builds from sorted, distinct, nonzero terms that are already primitive with a positive
     /// leading coefficient (a product of such polynomials over Z, by Gauss's lemma).
     pub(crate) fn from_sorted_primitive(
@@ -523,6 +543,12 @@ impl<C: Coefficient> Poly<C> {
 
     pub(crate) fn raw_parts(&self) -> (&Rational, &[u64], &[C::Int]) {
         (&self.content, &self.exps, &self.coeffs)
+    }
+
+    /// The packed monomials and integer coefficients, as the kernels take them.
+    #[inline]
+    pub(crate) fn raw_terms(&self) -> (&[u64], &[C::Int]) {
+        (&self.exps, &self.coeffs)
     }
 }
 

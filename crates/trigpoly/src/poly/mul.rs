@@ -16,7 +16,9 @@ use crate::number::{Coefficient, IntegerRing};
 use crate::varset::{Layout, Var};
 
 /// A packed monomial of a fixed number of words, padded with zero words.
-pub(crate) trait Key: Copy + Eq + Ord {
+pub(crate) trait Key: Copy + Eq + Ord + AsRef<[u64]> + AsMut<[u64]> {
+    /// The key of all zero words.
+    const ZERO: Self;
     /// The words of a key.
     const WORDS: usize;
     fn load(s: &[u64]) -> Self;
@@ -25,9 +27,12 @@ pub(crate) trait Key: Copy + Eq + Ord {
     /// The monomial divided by the one whose packed fields are `by` (no bias: `by` holds the
     /// exponents themselves, word by word).
     fn lowered(&self, by: &[u64]) -> Self;
+    /// A hash of the monomial whose top bits are well mixed (a multiplicative hash).
+    fn hash(&self) -> u64;
 }
 
 impl<const N: usize> Key for [u64; N] {
+    const ZERO: Self = [0; N];
     const WORDS: usize = N;
     #[inline]
     fn load(s: &[u64]) -> Self {
@@ -46,6 +51,12 @@ impl<const N: usize> Key for [u64; N] {
             r[w] = self[w].wrapping_add(other[w]).wrapping_sub(bias[w]);
         }
         r
+    }
+    #[inline]
+    fn hash(&self) -> u64 {
+        // Fibonacci hashing, word by word.
+        self.iter()
+            .fold(0u64, |h, &w| (h ^ w).wrapping_mul(0x9E37_79B9_7F4A_7C15))
     }
     #[inline]
     fn lowered(&self, by: &[u64]) -> Self {
@@ -109,13 +120,13 @@ impl<C: Coefficient> Poly<C> {
         }
         if gather::fits(self.words(), small.len().saturating_mul(big.len())) {
             small.check_product_exponents(big)?;
-            let (exps, coeffs) = gather::product(
+            let terms = gather::product(
                 self.layout(),
                 (&small.exps, &small.coeffs),
                 (&big.exps, &big.coeffs),
             );
-            Self::check_terms(&self.vars, coeffs.len())?;
-            return Ok(Self::product(&self.vars, content, exps, coeffs));
+            Self::check_terms(&self.vars, terms.coeffs.len())?;
+            return Ok(Self::from_gathered(&self.vars, content, terms));
         }
         // Monomials wider than the heap's keys also shift and merge, whatever the lengths.
         if small.len() <= SMALL_SIDE || self.words() > MAX_KEY_WORDS {
@@ -171,13 +182,12 @@ impl<C: Coefficient> Poly<C> {
             return self.checked_mul(self);
         }
         self.check_product_exponents(self)?;
-        let (exps, coeffs) = gather::square(self.layout(), (&self.exps, &self.coeffs));
-        Self::check_terms(&self.vars, coeffs.len())?;
-        Ok(Self::product(
+        let terms = gather::square(self.layout(), (&self.exps, &self.coeffs));
+        Self::check_terms(&self.vars, terms.coeffs.len())?;
+        Ok(Self::from_gathered(
             &self.vars,
             &self.content * &self.content,
-            exps,
-            coeffs,
+            terms,
         ))
     }
 

@@ -31,14 +31,74 @@ impl<C: Coefficient> Poly<C> {
     /// ```
     pub fn sum_of_products(terms: &[(&Self, &Self, bool)]) -> Result<Self, AlgebraError> {
         let first = Self::first_factor(terms.first().map(|t| t.0))?;
-        let vars = first.vars.clone();
-        let mut streams: Streams<C> = Vec::new();
-        for &(a, b, negate) in terms {
+        for &(a, b, _) in terms {
             a.same_vars(b)?;
             first.same_vars(a)?;
+        }
+        if let Some(sum) = Self::short_sum_of_products(terms)? {
+            return Ok(sum);
+        }
+        let mut streams: Streams<C> = Vec::new();
+        for &(a, b, negate) in terms {
             Self::push_product(&mut streams, a, b, negate)?;
         }
-        Self::sum_streams(&vars, streams)
+        Self::sum_streams(&first.vars, streams)
+    }
+
+    /// [`Poly::sum_of_products`] by gathering every term product of every pair into one
+    /// buffer, sorted once (a square gathers each pair of its terms once), or `None` when the
+    /// products are too many, their monomials too wide, or a coefficient or a product's share
+    /// of the common content does not fit a word (the general path handles all three).
+    fn short_sum_of_products(terms: &[(&Self, &Self, bool)]) -> Result<Option<Self>, AlgebraError> {
+        const MAX_PRODUCTS: usize = 16;
+        let Some(first) = terms.first() else {
+            return Ok(None);
+        };
+        let vars = &first.0.vars;
+        if terms.len() > MAX_PRODUCTS || vars.layout().words > gather::WORDS {
+            return Ok(None);
+        }
+        // The content of each product, and their common content `d`.
+        let mut contents: [Rational; MAX_PRODUCTS] = Default::default();
+        let mut d = Rational::zero();
+        let mut pairs = 0usize;
+        for (q, &(a, b, negate)) in contents.iter_mut().zip(terms) {
+            if a.is_zero() || b.is_zero() {
+                continue;
+            }
+            let product = gather::Product::new(a.raw_terms(), b.raw_terms(), 1);
+            pairs = pairs.saturating_add(product.pairs());
+            *q = &a.content * &b.content;
+            if negate {
+                *q = -std::mem::take(q);
+            }
+            d = Rational::content_gcd(&d, q);
+        }
+        if d.is_zero() {
+            return Ok(Some(Self::zero(vars)));
+        }
+        if !gather::fits(vars.layout().words, pairs) {
+            return Ok(None);
+        }
+        let mut products = [gather::Product::EMPTY; MAX_PRODUCTS];
+        let mut n = 0;
+        for (q, &(a, b, _)) in contents.iter().zip(terms) {
+            if q.is_zero() {
+                continue;
+            }
+            a.check_product_exponents(b)?;
+            // `q/d` is an integer: `d` divides every content.
+            let Some(k) = (q / &d).numer().to_i64() else {
+                return Ok(None);
+            };
+            products[n] = gather::Product::new(a.raw_terms(), b.raw_terms(), k);
+            n += 1;
+        }
+        let Some(terms) = gather::sum_of_products(vars.layout(), &products[..n]) else {
+            return Ok(None);
+        };
+        Self::check_terms(vars, terms.coeffs.len())?;
+        Ok(Some(Self::from_gathered(vars, d, terms)))
     }
 
     /// `Σ_k ± (∂f_k/∂v_k) · g_k` (minus where the flag is `true`), exactly as the sum of the
@@ -178,7 +238,7 @@ impl<C: Coefficient> Poly<C> {
             *kernel_pair = JacobianPair::new(vars, q, p);
         }
         let kernel_pairs = &kernel_pairs[..pairs.len()];
-        let Some((exps, coeffs)) = gather::jacobians(
+        let Some(terms) = gather::jacobians(
             layout,
             (&f.exps, &f.coeffs),
             (&g.exps, &g.coeffs),
@@ -186,12 +246,11 @@ impl<C: Coefficient> Poly<C> {
         ) else {
             return Ok(None);
         };
-        Self::check_terms(vars, coeffs.len())?;
-        Ok(Some(Self::from_sorted(
+        Self::check_terms(vars, terms.coeffs.len())?;
+        Ok(Some(Self::from_gathered(
             vars,
             &f.content * &g.content,
-            exps,
-            coeffs,
+            terms,
         )))
     }
 

@@ -143,13 +143,14 @@ fn products_of_monomials_wider_than_the_heap_keys() {
     assert_eq!(product, by_terms);
 }
 
-/// Short products, squares and brackets gather their term products in `i128` when the
-/// coefficients fit machine words, and as exact integers past a word or past the bits an
-/// `i128` sum holds. On both sides of each boundary, over Q and over Q(i): the product and the
-/// square take the values of `f(p)·g(p)` and `f(p)²`, and the bracket equals the one built from
-/// the derivatives, each taken and multiplied on its own.
+/// Short products, squares, sums of products and brackets gather their term products in
+/// `i128` when the coefficients fit machine words, and as exact integers past a word or past
+/// the bits an `i128` sum holds. On both sides of each boundary, over Q and over Q(i): the
+/// product, the square and the sum `(3/2)·f·g + f² − g²` take the values of `f(p)·g(p)`,
+/// `f(p)²` and the sum of those, and the bracket equals the one built from the derivatives,
+/// each taken and multiplied on its own.
 #[test]
-fn short_products_squares_and_brackets_on_both_sides_of_the_word_boundary() {
+fn short_products_squares_sums_and_brackets_on_both_sides_of_the_word_boundary() {
     let vars = VarSet::builder()
         .coordinate("x")
         .coordinate("y")
@@ -182,6 +183,18 @@ fn short_products_squares_and_brackets_on_both_sides_of_the_word_boundary() {
                 Ok(&fp * &fp),
                 "f² with c = {c}"
             );
+            let three_halves = GaussianRational::from(Rational::new(3, 2));
+            let sum = G::sum_of_products(&[
+                (&f.scale(&three_halves), &g, false),
+                (&f, &f, false),
+                (&g, &g, true),
+            ]);
+            let expected = &(&(&three_halves * &(&fp * &gp)) + &(&fp * &fp)) - &(&gp * &gp);
+            assert_eq!(
+                sum.and_then(|s| at(&s)),
+                Ok(expected),
+                "(3/2)·f·g + f² − g² with c = {c}"
+            );
             let pairs = [(x, pm), (theta, y)];
             let direct = pairs.iter().fold(G::zero(&vars), |sum, &(q, m)| {
                 let d = |h: &G, v| h.derivative(v).unwrap();
@@ -203,6 +216,12 @@ fn short_products_squares_and_brackets_on_both_sides_of_the_word_boundary() {
             "f·g over Q with c = {c}"
         );
         assert_eq!(f.checked_pow(2).unwrap().eval(&pt), Ok(&fp * &fp));
+        let sum = Q::sum_of_products(&[(&f, &g, true), (&g, &g, false), (&f, &f, false)]);
+        assert_eq!(
+            sum.and_then(|s| s.eval(&pt)),
+            Ok(&(&(&gp * &gp) + &(&fp * &fp)) - &(&fp * &gp)),
+            "f² + g² − f·g over Q with c = {c}"
+        );
         let direct = &(&f.derivative(x).unwrap() * &g.derivative(pm).unwrap())
             - &(&f.derivative(pm).unwrap() * &g.derivative(x).unwrap());
         assert_eq!(Q::sum_of_jacobians(&f, &g, &[(x, pm)]), Ok(direct));

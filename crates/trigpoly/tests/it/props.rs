@@ -391,6 +391,28 @@ proptest! {
         prop_assert_eq!(fused, &(&(&f * &g) + &second) - &(&g * &h));
     }
 
+    /// The short path of a sum of products (one gathering, each square's pairs once, the
+    /// products' contents brought to one) in the Casimir's shape `c·f·g + h² − k²`, against
+    /// the products multiplied one by one; and the same with the squares' signs cancelling.
+    #[test]
+    fn sum_of_products_with_squares_agrees_with_the_sum(f in gpoly(5), g in gpoly(5), h in gpoly(7), k in gpoly(7), c in rational()) {
+        let cf = f.scale(&GaussianRational::from(c));
+        let fused = Poly::sum_of_products(&[(&cf, &g, false), (&h, &h, false), (&k, &k, true)]).unwrap();
+        prop_assert_eq!(fused, &(&(&cf * &g) + &(&h * &h)) - &(&k * &k));
+        let cancelled = Poly::sum_of_products(&[(&h, &h, false), (&cf, &g, false), (&h, &h, true)]).unwrap();
+        prop_assert_eq!(cancelled, &cf * &g);
+    }
+
+    /// `a ± b` when both have the same terms adds only the contents: `a − a = 0`, and
+    /// `c·a + d·a = (c + d)·a`.
+    #[test]
+    fn sums_of_multiples_of_one_polynomial(f in gpoly(8), c in rational(), d in rational()) {
+        let (cf, df) = (f.scale(&GaussianRational::from(c.clone())), f.scale(&GaussianRational::from(d.clone())));
+        prop_assert!((&cf - &cf).is_zero());
+        prop_assert_eq!(&cf + &df, f.scale(&GaussianRational::from(&c + &d)));
+        prop_assert_eq!(&cf - &df, f.scale(&GaussianRational::from(&c - &d)));
+    }
+
     /// The fused kernel of the bracket, for every variable (angles, Laurent exponents, short
     /// and long second factors), against derivatives taken and multiplied one by one.
     #[test]
