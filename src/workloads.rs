@@ -17,7 +17,7 @@
 use std::fmt;
 use std::str::FromStr;
 
-use brackets::{systems, Claim, EngineError, System};
+use brackets::{systems, EngineError, System};
 use rayon::prelude::*;
 use trigpoly::{Expr, Poly, Rational, VarSet};
 
@@ -69,9 +69,7 @@ fn resonant_pair(rotor: &System, m: i64, n: i64) -> Result<usize, WorkloadError>
     let res = rotor.resonant("Z", m, n)?;
     let resonance = rotor.resonance(m, n)?;
     let check = |f: &Expr| -> Result<(), WorkloadError> {
-        let claim = Claim::new("W1", "{P, H} = 0", rotor.flow(f)?, Expr::zero(rotor.vars()))
-            .when(resonance.clone());
-        if claim.residual()?.is_zero() {
+        if rotor.flow_when(f, &resonance)?.is_zero() {
             Ok(())
         } else {
             Err(WorkloadError::NotZero(format!(

@@ -129,6 +129,24 @@ impl PhaseSpace {
         )?)
     }
 
+    /// `{f, g}` given the gradient of `g`, with the substitution `subs` applied (a condition
+    /// such as a resonance): the bracket's term products are formed, substituted and added in
+    /// one table when the values are single terms, so the bracket before the condition is
+    /// never built.
+    pub fn bracket_with_gradient_at(
+        &self,
+        f: &Expr,
+        dg: &[(Expr, Expr)],
+        subs: &[(Var, Expr)],
+    ) -> Result<Expr, EngineError> {
+        Ok(Expr::sum_of_jacobians_with_gradient_at(
+            f,
+            &self.var_pairs(),
+            dg,
+            subs,
+        )?)
+    }
+
     /// Hamilton's vector field of `h`: `(q̇_i, ṗ_i) = (∂h/∂p_i, −∂h/∂q_i)` for each pair, in the
     /// order of [`PhaseSpace::coordinates`].
     pub fn hamilton_equations(&self, h: &Expr) -> Result<Vec<(Var, Expr)>, EngineError> {

@@ -5,6 +5,7 @@ use std::sync::Arc;
 
 use trigpoly::{Context, Expr, GaussianRational, Var, VarSet};
 
+use crate::claim::Condition;
 use crate::error::EngineError;
 use crate::phase::PhaseSpace;
 
@@ -143,6 +144,19 @@ impl System {
             self.space.bracket_with_gradient(f, &self.dh)
         } else {
             self.space.bracket(f, self.hamiltonian())
+        }
+    }
+
+    /// `{f, H}` under a condition (a resonance `p_θ = mIω/n`, say): the flow with the
+    /// condition's substitution applied, formed term by term and substituted as it is formed
+    /// where the condition's values are single terms, so that the flow off the condition is
+    /// never built. The same value as [`Condition::apply`] on [`System::flow`].
+    pub fn flow_when(&self, f: &Expr, condition: &Condition) -> Result<Expr, EngineError> {
+        if self.dh.len() == self.space.pairs().len() {
+            self.space
+                .bracket_with_gradient_at(f, &self.dh, &condition.subs)
+        } else {
+            condition.apply(&self.flow(f)?)
         }
     }
 }

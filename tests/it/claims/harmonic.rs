@@ -336,6 +336,15 @@ fn c16_resonant_integrals_conserved_on_resonance() {
             let next = sys.resonance(m + 1, n).unwrap();
             identity!(sys, "{P, F1} = 0", when next => refuted "omega*Q");
             identity!(sys, "{Q, F1} = 0", when next => refuted "-omega*P");
+            // The flow on a condition formed term by term (as the tower's workload forms it)
+            // is the flow with the condition applied, on the resonance and off it.
+            for name in ["P", "Q"] {
+                let f = sys.get(name).unwrap().clone();
+                assert!(sys.flow_when(&f, &on).unwrap().is_zero());
+                let off = next.apply(&sys.flow(&f).unwrap()).unwrap();
+                assert!(!off.is_zero());
+                assert_eq!(sys.flow_when(&f, &next).unwrap(), off);
+            }
         }
     }
 }

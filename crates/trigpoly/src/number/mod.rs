@@ -52,6 +52,8 @@ pub trait IntegerRing:
     fn conj(&self) -> Self;
     /// `i · a`, if `i` is in the ring.
     fn try_mul_i(&self) -> Option<Self>;
+    /// The value as a machine integer, if it is real and fits an `i64`.
+    fn to_real_i64(&self) -> Option<i64>;
     /// The value in machine words, if every component fits an `i64`.
     type Small: Copy + Default + Send + Sync;
     /// A wide accumulator for `Small` products (`i128` per component).
@@ -96,6 +98,9 @@ impl IntegerRing for Integer {
     const GAUSS_LEMMA: bool = true;
     const PRODUCTS_PER_COMPONENT: u32 = 1;
     fn to_small(&self) -> Option<i64> {
+        self.to_i64()
+    }
+    fn to_real_i64(&self) -> Option<i64> {
         self.to_i64()
     }
     fn small_bits(s: &i64) -> u32 {
@@ -192,6 +197,9 @@ impl IntegerRing for GaussianInteger {
     const PRODUCTS_PER_COMPONENT: u32 = 2;
     fn to_small(&self) -> Option<(i64, i64)> {
         Some((self.re.to_i64()?, self.im.to_i64()?))
+    }
+    fn to_real_i64(&self) -> Option<i64> {
+        self.im.is_zero().then(|| self.re.to_i64()).flatten()
     }
     fn small_bits(s: &(i64, i64)) -> u32 {
         64 - (s.0.unsigned_abs() | s.1.unsigned_abs()).leading_zeros()

@@ -27,6 +27,10 @@ pub(crate) struct Gathered<I> {
 /// Monomials of at most this many words take this path.
 pub(crate) const WORDS: usize = 4;
 
+/// Sums at a substitution ([`MonomialMap`]) of at most this many term pairs take this path:
+/// their sums mostly cancel, so the table is all they need.
+pub(crate) const MAX_MAPPED_PAIRS: usize = 1 << 20;
+
 /// Products of at most this many term pairs take this path.
 pub(crate) const MAX_PAIRS: usize = 256;
 
@@ -126,34 +130,84 @@ pub(crate) fn jacobians<I: IntegerRing>(
     by_width!(layout.words, jacobians_of_width, layout, f, g, pairs)
 }
 
-/// One product of a [`sum_of_products`]: the term lists of its factors and an integer
-/// multiplier `k ≠ 0`. A square (`b` is `a`) gathers each pair of terms once.
+/// A derivative `∂/∂v` as the kernels apply it to a packed monomial `c·m` of exponent `e` in
+/// `v`: the coefficient times `e` (and `i` for an angle), the field of `v` lowered by one
+/// (kept for an angle, since `∂/∂θ e^{ikθ} = ik·e^{ikθ}`).
+#[derive(Clone, Copy)]
+pub(crate) struct Partial {
+    /// The field of `v` (word, shift).
+    field: (usize, u32),
+    /// What the derivative takes off a monomial: one in the field of `v`, or nothing for an
+    /// angle.
+    lower: Monomial,
+    /// Factors `i`: 1 for an angle, else 0.
+    turns: u32,
+}
+
+impl Partial {
+    /// `∂/∂v` in `vars`.
+    pub(crate) fn new(vars: &VarSet, v: Var) -> Self {
+        let field = vars.layout().field(v.index());
+        let angle = vars.variable(v).kind() == VarKind::Angle;
+        let mut lower = [0; WORDS];
+        if !angle {
+            lower[field.0] = 1 << field.1;
+        }
+        Partial {
+            field,
+            lower,
+            turns: u32::from(angle),
+        }
+    }
+}
+
+/// One product of a [`sum_of_products`]: `k·a·b`, or `k·(∂a/∂v)·b`, from the term lists of
+/// its factors and an integer multiplier `k ≠ 0`. A square (`b` is `a`) gathers each pair of
+/// terms once.
 #[derive(Clone, Copy)]
 pub(crate) struct Product<'a, I> {
     a: (&'a [u64], &'a [I]),
+    by: Option<Partial>,
     b: (&'a [u64], &'a [I]),
     k: i64,
+    /// The [`small_bits`] of `a` and of `b` together.
+    ab_bits: u32,
 }
 
 impl<'a, I> Product<'a, I> {
     /// No product: a placeholder in a fixed array.
     pub(crate) const EMPTY: Self = Product {
         a: (&[], &[]),
+        by: None,
         b: (&[], &[]),
         k: 0,
+        ab_bits: 0,
     };
 
-    /// `k·a·b`.
-    pub(crate) fn new(a: (&'a [u64], &'a [I]), b: (&'a [u64], &'a [I]), k: i64) -> Self {
-        Product { a, b, k }
+    /// `k·a·b`, or `k·(∂a/∂v)·b` when `by` is the derivative, where the coefficients of `a`
+    /// and `b` fit words and take at most `ab_bits` bits together ([`small_bits`]).
+    pub(crate) fn new(
+        a: (&'a [u64], &'a [I]),
+        by: Option<Partial>,
+        b: (&'a [u64], &'a [I]),
+        k: i64,
+        ab_bits: u32,
+    ) -> Self {
+        Product {
+            a,
+            by,
+            b,
+            k,
+            ab_bits,
+        }
     }
 
-    /// Whether both factors are the same term list.
+    /// Whether this is the square of a term list.
     fn is_square(&self) -> bool {
-        std::ptr::eq(self.a.1, self.b.1) && std::ptr::eq(self.a.0, self.b.0)
+        self.by.is_none() && std::ptr::eq(self.a.1, self.b.1) && std::ptr::eq(self.a.0, self.b.0)
     }
 
-    /// The term products it gathers: `n(n + 1)/2` for a square, else `n·m`.
+    /// The most term products it gathers: `n(n + 1)/2` for a square, else `n·m`.
     pub(crate) fn pairs(&self) -> usize {
         let n = self.a.1.len();
         if self.is_square() {
@@ -162,41 +216,130 @@ impl<'a, I> Product<'a, I> {
             n.saturating_mul(self.b.1.len())
         }
     }
+
+    /// The most of its term products that share a monomial: a term of one factor and the
+    /// monomial fix the term of the other.
+    fn per_monomial(&self) -> usize {
+        self.a.1.len().min(self.b.1.len())
+    }
 }
 
-/// `Σ_k k·a_k·b_k` over the products, sorted, combined, zeros dropped: every term product of
-/// every pair in one buffer, sorted once. `None` when a coefficient does not fit a word (the
-/// general path handles it). The caller has checked the exponents and that the products
-/// gather at most [`MAX_PAIRS`] term products in all.
+/// A substitution of single terms `v ↦ c·m_v` as a map on the packed monomials of the term
+/// products: a monomial of exponent `e` in `v` is translated by `e·(m_v − v)` and its
+/// coefficient multiplied by the integer `(c^e)/d` (with `d` the common content of the powers
+/// `c^e` over the exponents the products can have). With several variables, every exponent
+/// is read before any translation, so the substitution is simultaneous.
+pub(crate) struct MonomialMap {
+    vars: Vec<MappedVar>,
+}
+
+/// One variable of a [`MonomialMap`].
+struct MappedVar {
+    field: (usize, u32),
+    /// The lowest exponent of the table.
+    lowest: i64,
+    /// For each exponent from `lowest` on: the translation and the integer factor.
+    table: Vec<(Monomial, i64)>,
+}
+
+impl MonomialMap {
+    /// A map of no variables, to which [`MonomialMap::push`] adds them.
+    pub(crate) fn new() -> Self {
+        MonomialMap { vars: Vec::new() }
+    }
+
+    /// Maps the variable of the field `field`, for the exponents `lowest ..` with their
+    /// translations and factors.
+    pub(crate) fn push(&mut self, field: (usize, u32), lowest: i64, table: Vec<(Monomial, i64)>) {
+        self.vars.push(MappedVar {
+            field,
+            lowest,
+            table,
+        });
+    }
+
+    /// Whether no variable is mapped.
+    pub(crate) fn is_empty(&self) -> bool {
+        self.vars.is_empty()
+    }
+
+    /// The most term products that one monomial of the image can gather from each monomial
+    /// of the preimage's products: the number of exponent combinations.
+    fn fan_in(&self) -> usize {
+        self.vars
+            .iter()
+            .fold(1usize, |n, v| n.saturating_mul(v.table.len()))
+    }
+
+    /// The image of the term `k·m`, or `None` when the factor would pass a word or an
+    /// exponent lies outside the tables.
+    #[inline]
+    fn apply<K: Key>(&self, layout: &Layout, m: K, k: i64) -> Option<(K, i64)> {
+        let mut image = m;
+        let mut k = k;
+        for v in &self.vars {
+            let e = layout.read(m.as_ref(), v.field);
+            let (by, factor) = v.table.get(usize::try_from(e - v.lowest).ok()?)?;
+            image = image.translated(&by[..K::WORDS]);
+            k = k.checked_mul(*factor)?;
+        }
+        Some((image, k))
+    }
+}
+
+/// `Σ_k k·a_k·b_k` (or `k·(∂a_k/∂v_k)·b_k`) over the products, mapped by `map` when given,
+/// sorted, combined, zeros dropped: every term product of every pair in one table. `None`
+/// when a product could pass the `i128` sums (the general path handles it). The caller has checked the exponents, before and after the
+/// map.
 pub(crate) fn sum_of_products<I: IntegerRing>(
     layout: &Layout,
     products: &[Product<'_, I>],
+    map: Option<&MonomialMap>,
 ) -> Option<Gathered<I>> {
     debug_assert!(layout.words <= WORDS);
-    by_width!(layout.words, sum_of_products_of_width, layout, products)
+    by_width!(
+        layout.words,
+        sum_of_products_of_width,
+        layout,
+        products,
+        map
+    )
 }
 
 fn sum_of_products_of_width<K: Key, I: IntegerRing>(
     layout: &Layout,
     products: &[Product<'_, I>],
+    map: Option<&MonomialMap>,
 ) -> Option<Gathered<I>> {
     let bias = K::load(layout.one());
-    let mut n = 0;
-    let mut ab_bits = 0;
+    let (mut n, mut per_monomial, mut ab_bits) = (0usize, 0usize, 0);
     for p in products {
-        n += p.pairs();
-        ab_bits = ab_bits.max(small_bits(p.a.1)? + small_bits(p.b.1)?);
+        n = n.saturating_add(p.pairs());
+        per_monomial = per_monomial.saturating_add(p.per_monomial());
+        ab_bits = ab_bits.max(p.ab_bits);
     }
-    let mut words = WordGather::<K, I>::new(n, ab_bits);
+    if let Some(map) = map {
+        per_monomial = per_monomial.saturating_mul(map.fan_in());
+    }
+    let mut words = WordGather::<K, I>::new(n, ab_bits, per_monomial)?;
     for p in products {
         let k = p.k;
-        let all = if p.is_square() {
-            square_pairs(p.a, &bias, |m, x, y, two| match k.checked_mul(two) {
-                Some(k) => words.push(m, x, y, k, 0),
+        let all = match p.by {
+            Some(by) => derivative_pairs(layout, p.a, by, p.b, &bias, |m, x, y, e, turns| match k
+                .checked_mul(e)
+            {
+                Some(k) => words.push_mapped(layout, map, m, x, y, k, turns),
                 None => false,
-            })
-        } else {
-            product_pairs(p.a, p.b, &bias, |m, x, y, _| words.push(m, x, y, k, 0))
+            }),
+            None if p.is_square() => {
+                square_pairs(p.a, &bias, |m, x, y, two| match k.checked_mul(two) {
+                    Some(k) => words.push_mapped(layout, map, m, x, y, k, 0),
+                    None => false,
+                })
+            }
+            None => product_pairs(p.a, p.b, &bias, |m, x, y, _| {
+                words.push_mapped(layout, map, m, x, y, k, 0)
+            }),
         };
         if !all {
             return None;
@@ -213,9 +356,11 @@ fn product_of_width<K: Key, I: IntegerRing>(
     let bias = K::load(layout.one());
     let n = a.1.len() * b.1.len();
     if let (Some(x), Some(y)) = (small_bits(a.1), small_bits(b.1)) {
-        let mut words = WordGather::<K, I>::new(n, x + y);
-        if product_pairs(a, b, &bias, |m, x, y, k| words.push(m, x, y, k, 0)) {
-            return words.finish();
+        let per_monomial = a.1.len().min(b.1.len());
+        if let Some(mut words) = WordGather::<K, I>::new(n, x + y, per_monomial) {
+            if product_pairs(a, b, &bias, |m, x, y, k| words.push(m, x, y, k, 0)) {
+                return words.finish();
+            }
         }
     }
     let mut exact = Gather::<K, I>::with_capacity(n);
@@ -227,9 +372,10 @@ fn square_of_width<K: Key, I: IntegerRing>(layout: &Layout, a: (&[u64], &[I])) -
     let bias = K::load(layout.one());
     let n = a.1.len() * (a.1.len() + 1) / 2;
     if let Some(x) = small_bits(a.1) {
-        let mut words = WordGather::<K, I>::new(n, 2 * x);
-        if square_pairs(a, &bias, |m, x, y, k| words.push(m, x, y, k, 0)) {
-            return words.finish();
+        if let Some(mut words) = WordGather::<K, I>::new(n, 2 * x, a.1.len()) {
+            if square_pairs(a, &bias, |m, x, y, k| words.push(m, x, y, k, 0)) {
+                return words.finish();
+            }
         }
     }
     let mut exact = Gather::<K, I>::with_capacity(n);
@@ -260,7 +406,8 @@ fn jacobians_of_width<K: Key, I: IntegerRing>(
         }
     }
     let n = K::WORDS;
-    let mut out = WordGather::<K, I>::new(f.1.len() * g.1.len() * count, ab_bits);
+    let per_monomial = f.1.len().min(g.1.len()) * count;
+    let mut out = WordGather::<K, I>::new(f.1.len() * g.1.len() * count, ab_bits, per_monomial)?;
     for pair in &active[..count] {
         for (mf, cf) in f.0.chunks_exact(n).zip(f.1) {
             let (aq, ap) = (layout.read(mf, pair.q), layout.read(mf, pair.p));
@@ -340,13 +487,43 @@ fn square_pairs<K: Key, I>(
     true
 }
 
-/// The most bits one term product may take in a [`WordGather`]. At most `2^12` products are
-/// summed ([`MAX_PAIRS`] term pairs times [`MAX_JACOBIAN_PAIRS`]), and a Gaussian component
-/// adds two real products, so every sum stays below `2^(112 + 13) < 2^127`.
-const ITEM_BITS: u32 = 112;
+/// Calls `emit(m_a·m_b/v, c_a, c_b, e, t)` for every term `c_a·m_a` of `a` with exponent
+/// `e ≠ 0` in `v` and every term `c_b·m_b` of `b` (`t` factors `i` for an angle), while it
+/// returns `true`; whether every call did.
+#[inline(always)]
+fn derivative_pairs<K: Key, I>(
+    layout: &Layout,
+    a: (&[u64], &[I]),
+    by: Partial,
+    b: (&[u64], &[I]),
+    bias: &K,
+    mut emit: impl FnMut(K, &I, &I, i64, u32) -> bool,
+) -> bool {
+    let n = K::WORDS;
+    // m_a·m_b/v is m_a + m_b − (bias + lower), word by word.
+    let bias = bias.translated(&by.lower[..n]);
+    for (ma, ca) in a.0.chunks_exact(n).zip(a.1) {
+        let e = layout.read(ma, by.field);
+        if e == 0 {
+            continue;
+        }
+        let ka = K::load(ma);
+        for (mb, cb) in b.0.chunks_exact(n).zip(b.1) {
+            if !emit(ka.mul(&K::load(mb), &bias), ca, cb, e, by.turns) {
+                return false;
+            }
+        }
+    }
+    true
+}
+
+/// The bits of the `i128` sums: a term product whose real products each take at most `b`
+/// bits has components below `2^(b + 1)` (a Gaussian component adds two), so that `n` of them
+/// sum below `2^(b + 1 + ⌈log₂ n⌉)`, which must stay below `2^127`.
+const SUM_BITS: u32 = 126;
 
 /// The most bits of a component of any of the coefficients, if every one fits a word.
-fn small_bits<I: IntegerRing>(coeffs: &[I]) -> Option<u32> {
+pub(crate) fn small_bits<I: IntegerRing>(coeffs: &[I]) -> Option<u32> {
     let mut bits = 0;
     for c in coeffs {
         bits = bits.max(I::small_bits(&c.to_small()?));
@@ -366,30 +543,34 @@ struct WordGather<K, I: IntegerRing> {
     slots: Vec<u32>,
     /// `64 − log₂(slots)`: a hash's top bits pick the slot.
     shift: u32,
-    /// The most bits of `a` and `b` together over the products pushed (from [`small_bits`]).
-    ab_bits: u32,
+    /// The bits left for the multiplier `k` of a product `a·b·k`: [`SUM_BITS`] less the
+    /// bits of the most term products one monomial can gather and the most bits of `a` and
+    /// `b` together (from [`small_bits`]).
+    k_budget: u32,
 }
 
 impl<K: Key, I: IntegerRing> WordGather<K, I> {
     /// Room for at most `n` term products, whose coefficients fit words and take at most
-    /// `ab_bits` bits together.
-    fn new(n: usize, ab_bits: u32) -> Self {
+    /// `ab_bits` bits together, and of which at most `per_monomial` share a monomial; `None`
+    /// when no multiplier would leave room in the sums.
+    fn new(n: usize, ab_bits: u32, per_monomial: usize) -> Option<Self> {
+        let fan_in_bits = usize::BITS - per_monomial.max(1).saturating_sub(1).leading_zeros();
+        let k_budget = SUM_BITS.checked_sub(fan_in_bits + ab_bits)?;
         let slots = (2 * n + 1).next_power_of_two().max(8);
-        WordGather {
+        Some(WordGather {
             items: Vec::with_capacity(n),
             slots: vec![0; slots],
             shift: 64 - slots.trailing_zeros(),
-            ab_bits,
-        }
+            k_budget,
+        })
     }
 
     /// Adds the term `a·b·k·iᵗ·m` (`k ≠ 0`, `t` = `turns`), or returns `false` and adds nothing
-    /// when the product could take more than [`ITEM_BITS`] bits, or `t > 0` in a ring
-    /// without `i`.
+    /// when `k` takes more bits than the sums leave it, or `t > 0` in a ring without `i`.
     #[inline(always)]
     fn push(&mut self, m: K, a: &I, b: &I, k: i64, turns: u32) -> bool {
         let k_bits = 64 - k.unsigned_abs().leading_zeros();
-        if self.ab_bits + k_bits > ITEM_BITS {
+        if k_bits > self.k_budget {
             return false;
         }
         let (Some(a), Some(b)) = (a.to_small(), b.to_small()) else {
@@ -408,6 +589,29 @@ impl<K: Key, I: IntegerRing> WordGather<K, I> {
         }
         self.add(m, w);
         true
+    }
+
+    /// [`WordGather::push`] of the image of the term under `map`, when given; `false` when
+    /// the image's factor passes a word.
+    #[inline(always)]
+    #[allow(clippy::too_many_arguments)]
+    fn push_mapped(
+        &mut self,
+        layout: &Layout,
+        map: Option<&MonomialMap>,
+        m: K,
+        a: &I,
+        b: &I,
+        k: i64,
+        turns: u32,
+    ) -> bool {
+        match map {
+            None => self.push(m, a, b, k, turns),
+            Some(map) => match map.apply(layout, m, k) {
+                Some((m, k)) => self.push(m, a, b, k, turns),
+                None => false,
+            },
+        }
     }
 
     /// `sum(m) += w`.

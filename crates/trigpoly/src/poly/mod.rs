@@ -16,6 +16,7 @@ mod mul;
 mod pow;
 mod subst;
 mod sum;
+mod sum_at;
 mod trig;
 
 use std::fmt;

@@ -27,6 +27,9 @@ pub(crate) trait Key: Copy + Eq + Ord + AsRef<[u64]> + AsMut<[u64]> {
     /// The monomial divided by the one whose packed fields are `by` (no bias: `by` holds the
     /// exponents themselves, word by word).
     fn lowered(&self, by: &[u64]) -> Self;
+    /// The monomial multiplied by the one whose packed fields are `by`, less the bias (a
+    /// translation, as [`crate::varset::Layout::translation`] gives).
+    fn translated(&self, by: &[u64]) -> Self;
     /// A hash of the monomial whose top bits are well mixed (a multiplicative hash).
     fn hash(&self) -> u64;
 }
@@ -49,6 +52,14 @@ impl<const N: usize> Key for [u64; N] {
         let mut r = [0u64; N];
         for w in 0..N {
             r[w] = self[w].wrapping_add(other[w]).wrapping_sub(bias[w]);
+        }
+        r
+    }
+    #[inline]
+    fn translated(&self, by: &[u64]) -> Self {
+        let mut r = *self;
+        for (word, by) in r.iter_mut().zip(by) {
+            *word = word.wrapping_add(*by);
         }
         r
     }

@@ -14,6 +14,9 @@ use crate::error::AlgebraError;
 use crate::number::{Coefficient, IntegerRing, Rational};
 use crate::varset::{Layout, Var};
 
+/// The most products of a sum that go to [`Poly::gathered_sum`].
+const MAX_GATHERED: usize = 16;
+
 /// Sorted term lists with their rational contents, waiting to be summed.
 type Streams<C> = Vec<(Rational, Poly<C>)>;
 
@@ -35,70 +38,22 @@ impl<C: Coefficient> Poly<C> {
             a.same_vars(b)?;
             first.same_vars(a)?;
         }
-        if let Some(sum) = Self::short_sum_of_products(terms)? {
-            return Ok(sum);
+        // Short products: every term product in one table (each square's pairs once).
+        let mut sources = [(first, None, first, false); MAX_GATHERED];
+        if terms.len() <= MAX_GATHERED {
+            for (source, &(a, b, negate)) in sources.iter_mut().zip(terms) {
+                *source = (a, None, b, negate);
+            }
+            let sources = &sources[..terms.len()];
+            if let Some(sum) = Self::gathered_sum(sources, &[], gather::MAX_PAIRS)? {
+                return Ok(sum);
+            }
         }
         let mut streams: Streams<C> = Vec::new();
         for &(a, b, negate) in terms {
             Self::push_product(&mut streams, a, b, negate)?;
         }
         Self::sum_streams(&first.vars, streams)
-    }
-
-    /// [`Poly::sum_of_products`] by gathering every term product of every pair into one
-    /// buffer, sorted once (a square gathers each pair of its terms once), or `None` when the
-    /// products are too many, their monomials too wide, or a coefficient or a product's share
-    /// of the common content does not fit a word (the general path handles all three).
-    fn short_sum_of_products(terms: &[(&Self, &Self, bool)]) -> Result<Option<Self>, AlgebraError> {
-        const MAX_PRODUCTS: usize = 16;
-        let Some(first) = terms.first() else {
-            return Ok(None);
-        };
-        let vars = &first.0.vars;
-        if terms.len() > MAX_PRODUCTS || vars.layout().words > gather::WORDS {
-            return Ok(None);
-        }
-        // The content of each product, and their common content `d`.
-        let mut contents: [Rational; MAX_PRODUCTS] = Default::default();
-        let mut d = Rational::zero();
-        let mut pairs = 0usize;
-        for (q, &(a, b, negate)) in contents.iter_mut().zip(terms) {
-            if a.is_zero() || b.is_zero() {
-                continue;
-            }
-            let product = gather::Product::new(a.raw_terms(), b.raw_terms(), 1);
-            pairs = pairs.saturating_add(product.pairs());
-            *q = &a.content * &b.content;
-            if negate {
-                *q = -std::mem::take(q);
-            }
-            d = Rational::content_gcd(&d, q);
-        }
-        if d.is_zero() {
-            return Ok(Some(Self::zero(vars)));
-        }
-        if !gather::fits(vars.layout().words, pairs) {
-            return Ok(None);
-        }
-        let mut products = [gather::Product::EMPTY; MAX_PRODUCTS];
-        let mut n = 0;
-        for (q, &(a, b, _)) in contents.iter().zip(terms) {
-            if q.is_zero() {
-                continue;
-            }
-            a.check_product_exponents(b)?;
-            // `q/d` is an integer: `d` divides every content.
-            let Some(k) = (q / &d).numer().to_i64() else {
-                return Ok(None);
-            };
-            products[n] = gather::Product::new(a.raw_terms(), b.raw_terms(), k);
-            n += 1;
-        }
-        let Some(terms) = gather::sum_of_products(vars.layout(), &products[..n]) else {
-            return Ok(None);
-        };
-        Self::check_terms(vars, terms.coeffs.len())?;
-        Ok(Some(Self::from_gathered(vars, d, terms)))
     }
 
     /// `Σ_k ± (∂f_k/∂v_k) · g_k` (minus where the flag is `true`), exactly as the sum of the
@@ -195,6 +150,36 @@ impl<C: Coefficient> Poly<C> {
         pairs: &[(Var, Var)],
         gradient: &[(Self, Self)],
     ) -> Result<Self, AlgebraError> {
+        let terms = Self::gradient_terms(f, pairs, gradient)?;
+        if terms.is_empty() {
+            return Ok(Self::zero(&f.vars));
+        }
+        Self::sum_of_derivative_products(&terms)
+    }
+
+    /// [`Poly::sum_of_jacobians_with_gradient`] with the substitution `subs` applied to the
+    /// sum: a bracket on a condition, such as `{f, H}` at a resonance, formed term by term
+    /// as [`Poly::sum_of_derivative_products_at`] forms it.
+    pub fn sum_of_jacobians_with_gradient_at(
+        f: &Self,
+        pairs: &[(Var, Var)],
+        gradient: &[(Self, Self)],
+        subs: &[(Var, Self)],
+    ) -> Result<Self, AlgebraError> {
+        let terms = Self::gradient_terms(f, pairs, gradient)?;
+        if terms.is_empty() {
+            return Ok(Self::zero(&f.vars));
+        }
+        Self::sum_of_derivative_products_at(&terms, subs)
+    }
+
+    /// The derivative products `∂f/∂q·∂g/∂p` and `−∂f/∂p·∂g/∂q` of a bracket with a kept
+    /// gradient of `g`.
+    fn gradient_terms<'a>(
+        f: &'a Self,
+        pairs: &[(Var, Var)],
+        gradient: &'a [(Self, Self)],
+    ) -> Result<Vec<(&'a Self, Var, &'a Self, bool)>, AlgebraError> {
         if pairs.len() != gradient.len() {
             return Err(AlgebraError::Invalid(format!(
                 "{} pairs of variables but {} pairs of derivatives",
@@ -202,15 +187,12 @@ impl<C: Coefficient> Poly<C> {
                 gradient.len()
             )));
         }
-        if pairs.is_empty() {
-            return Ok(Self::zero(&f.vars));
-        }
         let mut terms = Vec::with_capacity(2 * pairs.len());
         for (&(q, p), (gq, gp)) in pairs.iter().zip(gradient) {
             terms.push((f, q, gp, false));
             terms.push((f, p, gq, true));
         }
-        Self::sum_of_derivative_products(&terms)
+        Ok(terms)
     }
 
     /// [`Poly::sum_of_jacobians`] by gathering the products of the term pairs, or `None` when
@@ -338,7 +320,7 @@ impl<C: Coefficient> Poly<C> {
     }
 
     /// The first factor of a sum, which gives its variable set (an empty sum has none).
-    fn first_factor(first: Option<&Self>) -> Result<&Self, AlgebraError> {
+    pub(super) fn first_factor(first: Option<&Self>) -> Result<&Self, AlgebraError> {
         first.ok_or_else(|| {
             AlgebraError::Invalid("an empty sum of products has no variable set".into())
         })

@@ -429,6 +429,36 @@ proptest! {
         }
     }
 
+    /// A sum of derivative products at a substitution of single terms (the form of a flow on
+    /// a condition) is the sum, then the substitution: on every variable, angles and Laurent
+    /// exponents included, with values of rational or Gaussian coefficients (negative powers
+    /// of a non-unit one and Gaussian ones take the general path), one variable or two at once.
+    #[test]
+    fn sum_of_derivative_products_at_agrees_with_the_substitution_of_the_sum(
+        f in gpoly(12), g in gpoly(3), h in gpoly(9), k in gpoly(2),
+        values in proptest::collection::vec((prop_oneof![3 => rational().prop_map(GaussianRational::from), 1 => gaussian()], exponents(true)), 2),
+        which in (0usize..8, 0usize..8),
+    ) {
+        let vars = phase_space();
+        let all: Vec<_> = vars.vars().collect();
+        let (v, w) = (all[which.0], all[which.1]);
+        let values: Vec<G> = values
+            .into_iter()
+            .map(|term| Poly::from_terms(&vars, [term]).expect("small exponents"))
+            .collect();
+        prop_assume!(values.iter().all(|t| !t.is_zero()));
+        let terms = [(&f, v, &g, false), (&h, w, &k, true), (&f, w, &k, false)];
+        let sum = Poly::sum_of_derivative_products(&terms).unwrap();
+        let mut subs = vec![(v, values[0].clone())];
+        if w != v {
+            subs.push((w, values[1].clone()));
+        }
+        for subs in [&subs[..1], &subs[..]] {
+            let fused = Poly::sum_of_derivative_products_at(&terms, subs);
+            prop_assert_eq!(fused, sum.subst_many(subs), "at {:?}", subs);
+        }
+    }
+
     /// The sum of Jacobians (the bracket's kernel) against derivatives multiplied one by one:
     /// short inputs (one pass over the term pairs) and long ones (through the derivatives), on
     /// pairs with no angle, one angle and two.

@@ -1,0 +1,311 @@
+//! Sums of products and of derivative products gathered in one table, and optionally taken at
+//! a substitution of single terms (`p_θ ↦ mIω/n`, a resonance): every term product is formed,
+//! mapped by the substitution and added to its monomial's sum at once, so neither the
+//! products nor the sum before the substitution are ever built. An identity's residual, whose
+//! sums all cancel, then costs one pass over the term products and nothing to sort.
+
+use super::gather::{self, Monomial, MonomialMap, Partial, Product};
+use super::Poly;
+use crate::error::AlgebraError;
+use crate::number::{Coefficient, IntegerRing, Rational};
+use crate::varset::Var;
+
+/// One product of a gathered sum: `± a·b`, or `± (∂a/∂v)·b` with `v` given; minus where the
+/// flag is `true`.
+pub(crate) type Source<'a, C> = (&'a Poly<C>, Option<Var>, &'a Poly<C>, bool);
+
+/// The most products one gathered sum takes (its contents and products live on the stack).
+const MAX_PRODUCTS: usize = 16;
+
+/// The most exponents of one substituted variable that a gathered sum tabulates.
+const MAX_MAPPED_EXPONENTS: i64 = 4096;
+
+impl<C: Coefficient> Poly<C> {
+    /// [`Poly::sum_of_derivative_products`] with the substitution `subs` applied to the sum
+    /// (simultaneously, as [`Poly::subst_many`]): the form of a bracket on a condition, such
+    /// as `{f, H}` at a resonance.
+    ///
+    /// When every value is a single term and the coefficients fit machine words, every term
+    /// product is formed, substituted and added in one table, and the sum before the
+    /// substitution is never built; otherwise this is the sum, then the substitution.
+    ///
+    /// ```
+    /// use trigpoly::{Poly, Rational, VarSet};
+    /// let vars = VarSet::builder().coordinate("x").momentum("p").build().unwrap();
+    /// let (x, p) = (vars.lookup("x").unwrap(), vars.lookup("p").unwrap());
+    /// let q = |s: &str| Poly::<Rational>::parse(&vars, s).unwrap();
+    /// // {x p, H} with H = (p² + x²)/2, whose gradient is (∂H/∂x, ∂H/∂p) = (x, p): p² − x²,
+    /// // which vanishes on p = x and is 3x² on p = 2x.
+    /// let (f, dh_dx, dh_dp) = (q("x*p"), q("x"), q("p"));
+    /// let flow = [(&f, x, &dh_dp, false), (&f, p, &dh_dx, true)];
+    /// assert!(Poly::sum_of_derivative_products_at(&flow, &[(p, q("x"))]).unwrap().is_zero());
+    /// assert_eq!(
+    ///     Poly::sum_of_derivative_products_at(&flow, &[(p, q("2*x"))]).unwrap(),
+    ///     q("3*x^2")
+    /// );
+    /// ```
+    pub fn sum_of_derivative_products_at(
+        terms: &[(&Self, Var, &Self, bool)],
+        subs: &[(Var, Self)],
+    ) -> Result<Self, AlgebraError> {
+        let first = Self::first_factor(terms.first().map(|t| t.0))?;
+        for &(f, _, g, _) in terms {
+            f.same_vars(g)?;
+            first.same_vars(f)?;
+        }
+        for (_, value) in subs {
+            first.same_vars(value)?;
+        }
+        let sources: Vec<Source<'_, C>> = terms
+            .iter()
+            .map(|&(f, v, g, negate)| (f, Some(v), g, negate))
+            .collect();
+        if let Some(sum) = Self::gathered_sum(&sources, subs, gather::MAX_MAPPED_PAIRS)? {
+            return Ok(sum);
+        }
+        Self::sum_of_derivative_products(terms)?.subst_many(subs)
+    }
+
+    /// The sum of the `sources` at `subs` in one table, or `None` when that path does not
+    /// apply: more than `max_pairs` term products, too many products, monomials too wide, a
+    /// coefficient or a product's share of the common content past a word, a value of more
+    /// than one term, or exponents that could come near the limit (the general path decides
+    /// all of these, and reports what is wrong). The caller has checked the variable sets.
+    pub(crate) fn gathered_sum(
+        sources: &[Source<'_, C>],
+        subs: &[(Var, Self)],
+        max_pairs: usize,
+    ) -> Result<Option<Self>, AlgebraError> {
+        let Some(&(first, ..)) = sources.first() else {
+            return Ok(None);
+        };
+        let vars = &first.vars;
+        let layout = vars.layout();
+        let limit = vars.limits().max_degree as i64;
+        if sources.len() > MAX_PRODUCTS || layout.words > gather::WORDS {
+            return Ok(None);
+        }
+        // The content of each product, their common content `d`, and the most exponent any
+        // term product can reach.
+        let mut contents: [Rational; MAX_PRODUCTS] = Default::default();
+        let mut d = Rational::zero();
+        let (mut pairs, mut reach) = (0usize, 0i64);
+        for (q, &(a, _, b, negate)) in contents.iter_mut().zip(sources) {
+            if a.is_zero() || b.is_zero() {
+                continue;
+            }
+            pairs = pairs.saturating_add(a.len().saturating_mul(b.len()));
+            reach = reach.max(a.exponent_bound() + b.exponent_bound() + 1);
+            *q = &a.content * &b.content;
+            if negate {
+                *q = -std::mem::take(q);
+            }
+            d = Rational::content_gcd(&d, q);
+        }
+        if d.is_zero() {
+            return Ok(Some(Self::zero(vars)));
+        }
+        if pairs > max_pairs || reach > limit {
+            return Ok(None);
+        }
+        let mut products = [Product::EMPTY; MAX_PRODUCTS];
+        let mut n = 0;
+        let mut factors = Factors::default();
+        for (q, &(a, v, b, _)) in contents.iter().zip(sources) {
+            if q.is_zero() {
+                continue;
+            }
+            // `q/d` is an integer: `d` divides every content.
+            let (Some(k), Some(bits_a), Some(bits_b)) = (
+                (q / &d).numer().to_i64(),
+                factors.small_bits(a),
+                factors.small_bits(b),
+            ) else {
+                return Ok(None);
+            };
+            let by = v.map(|v| Partial::new(vars, v));
+            products[n] = Product::new(a.raw_terms(), by, b.raw_terms(), k, bits_a + bits_b);
+            n += 1;
+        }
+        let map = match Self::monomial_map(sources, subs, limit - reach, &mut factors)? {
+            Some(map) => map,
+            None => return Ok(None),
+        };
+        let (map, map_content) = match map {
+            Mapping::Identity => (None, None),
+            Mapping::Map(map, content) => (Some(map), Some(content)),
+        };
+        let Some(terms) = gather::sum_of_products(layout, &products[..n], map.as_ref()) else {
+            return Ok(None);
+        };
+        Self::check_terms(vars, terms.coeffs.len())?;
+        let content = match map_content {
+            Some(c) => &d * &c,
+            None => d,
+        };
+        Ok(Some(Self::from_gathered(vars, content, terms)))
+    }
+
+    /// The substitution `subs` as a map on the monomials of the term products of `sources`,
+    /// with the content it brings; `Identity` when no substituted variable occurs. `None`
+    /// when a value is not a single term with a real integer part that fits a word, the
+    /// tables would be too long, a factor would pass a word, or the translated exponents
+    /// could pass `room` (what the products leave below the limit).
+    fn monomial_map<'a>(
+        sources: &[Source<'a, C>],
+        subs: &[(Var, Self)],
+        room: i64,
+        factors: &mut Factors<'a, C>,
+    ) -> Result<Option<Mapping>, AlgebraError> {
+        let Some(&(first, ..)) = sources.first() else {
+            return Ok(Some(Mapping::Identity));
+        };
+        let vars = &first.vars;
+        let layout = vars.layout();
+        let mut map = MonomialMap::new();
+        let mut content = Rational::one();
+        let mut shift = 0i64;
+        for (k, (v, value)) in subs.iter().enumerate() {
+            if subs[..k].iter().any(|(w, _)| w == v) {
+                return Ok(None);
+            }
+            // The exponents of `v` the term products can have: a product's exponent is the
+            // sum of its factors', less one where `v` is the variable of the derivative.
+            let mut range: Option<(i64, i64)> = None;
+            let mut occurs = false;
+            for &(a, by, b, _) in sources {
+                let (Some((la, ha)), Some((lb, hb))) = (factors.range(a, *v), factors.range(b, *v))
+                else {
+                    continue;
+                };
+                occurs |= (la, ha, lb, hb) != (0, 0, 0, 0);
+                let down = i64::from(by == Some(*v));
+                let (lo, hi) = (la + lb - down, ha + hb);
+                range = Some(range.map_or((lo, hi), |(l, h)| (l.min(lo), h.max(hi))));
+            }
+            let Some((lowest, highest)) = range.filter(|_| occurs) else {
+                continue;
+            };
+            if value.len() != 1 || highest - lowest >= MAX_MAPPED_EXPONENTS {
+                return Ok(None);
+            }
+            let Some(n) = value.coeffs[0].to_real_i64() else {
+                return Ok(None);
+            };
+            let unit = n == 1 || n == -1;
+            if lowest < 0 && !unit {
+                return Ok(None);
+            }
+            let q = &value.content;
+            let powers: Option<Vec<Rational>> = (lowest..=highest).map(|e| q.pow(e)).collect();
+            let Some(powers) = powers else {
+                return Ok(None);
+            };
+            let dv = Rational::content_of(powers.iter());
+            // e·(m_v − v), word by word (wrapping: exact, since the fields stay in range).
+            let mut step: Monomial = [0; gather::WORDS];
+            let mut unit_v = vec![0u64; layout.words];
+            layout.unit(v.index(), 1, &mut unit_v);
+            for ((s, m), u) in step.iter_mut().zip(value.exp(0)).zip(&unit_v) {
+                *s = m.wrapping_sub(*u);
+            }
+            let mut table = Vec::with_capacity(powers.len());
+            for (e, qe) in (lowest..).zip(&powers) {
+                let Some(scale) = (qe / &dv).numer().to_i64() else {
+                    return Ok(None);
+                };
+                // n^e; for e < 0 only n = ±1 gets here, and (±1)^e = (±1)^{|e|}.
+                let ne = if n == -1 && e % 2 != 0 {
+                    -1
+                } else if unit {
+                    1
+                } else {
+                    match n.checked_pow(e as u32) {
+                        Some(p) => p,
+                        None => return Ok(None),
+                    }
+                };
+                let Some(factor) = scale.checked_mul(ne) else {
+                    return Ok(None);
+                };
+                let by = step.map(|s| s.wrapping_mul(e as u64));
+                table.push((by, factor));
+            }
+            map.push(layout.field(v.index()), lowest, table);
+            content = &content * &dv;
+            shift += lowest.abs().max(highest.abs()) * value.exponent_bound();
+        }
+        if map.is_empty() {
+            return Ok(Some(Mapping::Identity));
+        }
+        Ok((shift <= room).then_some(Mapping::Map(map, content)))
+    }
+}
+
+/// What a substitution does to the term products of a gathered sum.
+enum Mapping {
+    /// Nothing: no substituted variable occurs.
+    Identity,
+    /// The map, and the content its factors left out.
+    Map(MonomialMap, Rational),
+}
+
+/// What a gathered sum reads of its factors, once per distinct factor however many products
+/// share it (a flow's `f` enters one product per variable): the bits of the coefficients and
+/// the exponent ranges of the substituted variables. On the stack: a sum has at most
+/// `2 · MAX_PRODUCTS` factors.
+struct Factors<'a, C: Coefficient> {
+    bits: [Option<(&'a Poly<C>, Option<u32>)>; 2 * MAX_PRODUCTS],
+    ranges: [Option<RangeOf<'a, C>>; 2 * MAX_PRODUCTS],
+}
+
+/// A factor, a variable, and the range of its exponents there.
+type RangeOf<'a, C> = (&'a Poly<C>, Var, Option<(i64, i64)>);
+
+impl<C: Coefficient> Default for Factors<'_, C> {
+    fn default() -> Self {
+        Factors {
+            bits: [None; 2 * MAX_PRODUCTS],
+            ranges: [None; 2 * MAX_PRODUCTS],
+        }
+    }
+}
+
+impl<'a, C: Coefficient> Factors<'a, C> {
+    /// [`gather::small_bits`] of the coefficients of `p`.
+    fn small_bits(&mut self, p: &'a Poly<C>) -> Option<u32> {
+        remembered(
+            &mut self.bits,
+            |&(q, _)| std::ptr::eq(q, p),
+            || (p, gather::small_bits(&p.coeffs)),
+        )
+        .1
+    }
+
+    /// [`Poly::exponent_range`] of `v` in `p`.
+    fn range(&mut self, p: &'a Poly<C>, v: Var) -> Option<(i64, i64)> {
+        remembered(
+            &mut self.ranges,
+            |&(q, w, _)| std::ptr::eq(q, p) && w == v,
+            || (p, v, p.exponent_range(v)),
+        )
+        .2
+    }
+}
+
+/// The entry of `table` that `is` picks, else the one `make` gives, remembered in the first
+/// free place (when there is one).
+fn remembered<T: Copy>(
+    table: &mut [Option<T>],
+    is: impl Fn(&T) -> bool,
+    make: impl FnOnce() -> T,
+) -> T {
+    for entry in table.iter_mut() {
+        match entry {
+            Some(t) if is(t) => return *t,
+            Some(_) => {}
+            None => return *entry.insert(make()),
+        }
+    }
+    make()
+}
