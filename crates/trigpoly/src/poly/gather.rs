@@ -172,6 +172,10 @@ pub(crate) struct Product<'a, I> {
     k: i64,
     /// The [`small_bits`] of `a` and of `b` together.
     ab_bits: u32,
+    /// Whether `a` is free of the variables a [`MonomialMap`] substitutes: then the image
+    /// of each term of `b` (divided by `v` for a derivative) holds for every term of `a`
+    /// with it, and is found once per term of `b`.
+    a_unmapped: bool,
 }
 
 impl<'a, I> Product<'a, I> {
@@ -182,6 +186,7 @@ impl<'a, I> Product<'a, I> {
         b: (&[], &[]),
         k: 0,
         ab_bits: 0,
+        a_unmapped: false,
     };
 
     /// `k·a·b`, or `k·(∂a/∂v)·b` when `by` is the derivative, where the coefficients of `a`
@@ -199,7 +204,13 @@ impl<'a, I> Product<'a, I> {
             b,
             k,
             ab_bits,
+            a_unmapped: false,
         }
+    }
+
+    /// Marks `a` free (or not) of the variables of the map the sum is taken at.
+    pub(crate) fn set_a_unmapped(&mut self, free: bool) {
+        self.a_unmapped = free;
     }
 
     /// Whether this is the square of a term list.
@@ -324,20 +335,32 @@ fn sum_of_products_of_width<K: Key, I: IntegerRing>(
     let mut words = WordGather::<K, I>::new(n, ab_bits, per_monomial)?;
     for p in products {
         let k = p.k;
-        let all = match p.by {
-            Some(by) => derivative_pairs(layout, p.a, by, p.b, &bias, |m, x, y, e, turns| match k
-                .checked_mul(e)
-            {
-                Some(k) => words.push_mapped(layout, map, m, x, y, k, turns),
-                None => false,
+        let all = match (map, p.by) {
+            (Some(map), by) if p.a_unmapped => mapped_pairs(
+                layout,
+                p.a,
+                by,
+                p.b,
+                &bias,
+                map,
+                |m, x, y, f, turns| match k.checked_mul(f) {
+                    Some(k) => words.push(m, x, y, k, turns),
+                    None => false,
+                },
+            ),
+            (_, Some(by)) => derivative_pairs(layout, p.a, by, p.b, &bias, |m, x, y, e, turns| {
+                match k.checked_mul(e) {
+                    Some(k) => words.push_mapped(layout, map, m, x, y, k, turns),
+                    None => false,
+                }
             }),
-            None if p.is_square() => {
+            (_, None) if p.is_square() => {
                 square_pairs(p.a, &bias, |m, x, y, two| match k.checked_mul(two) {
                     Some(k) => words.push_mapped(layout, map, m, x, y, k, 0),
                     None => false,
                 })
             }
-            None => product_pairs(p.a, p.b, &bias, |m, x, y, _| {
+            (_, None) => product_pairs(p.a, p.b, &bias, |m, x, y, _| {
                 words.push_mapped(layout, map, m, x, y, k, 0)
             }),
         };
@@ -510,6 +533,47 @@ fn derivative_pairs<K: Key, I>(
         let ka = K::load(ma);
         for (mb, cb) in b.0.chunks_exact(n).zip(b.1) {
             if !emit(ka.mul(&K::load(mb), &bias), ca, cb, e, by.turns) {
+                return false;
+            }
+        }
+    }
+    true
+}
+
+/// Calls `emit(m, c_a, c_b, f, t)` for the term products `c_a·m_a · c_b·m_b` of `a·b`, or of
+/// `(∂a/∂v)·b` with `by`, mapped by `map`: `m` is the image of the monomial and `f` its
+/// factor (times the exponent `e ≠ 0` of `v` in `m_a` for a derivative; `t` factors `i` for
+/// an angle), while it returns `true`; whether every call did, and `false` when a factor
+/// passes a word. `a` must be free of the map's variables: each term of `b` (divided by `v`)
+/// is then mapped once, and its image and factor hold for every term of `a`.
+#[inline(always)]
+fn mapped_pairs<K: Key, I>(
+    layout: &Layout,
+    a: (&[u64], &[I]),
+    by: Option<Partial>,
+    b: (&[u64], &[I]),
+    bias: &K,
+    map: &MonomialMap,
+    mut emit: impl FnMut(K, &I, &I, i64, u32) -> bool,
+) -> bool {
+    let n = K::WORDS;
+    let (lower, turns) = by.map_or(([0; WORDS], 0), |p| (p.lower, p.turns));
+    for (mb, cb) in b.0.chunks_exact(n).zip(b.1) {
+        let Some((image, factor)) = map.apply(layout, K::load(mb).lowered(&lower[..n]), 1) else {
+            return false;
+        };
+        for (ma, ca) in a.0.chunks_exact(n).zip(a.1) {
+            let e = match by {
+                Some(p) => layout.read(ma, p.field),
+                None => 1,
+            };
+            if e == 0 {
+                continue;
+            }
+            let Some(f) = e.checked_mul(factor) else {
+                return false;
+            };
+            if !emit(K::load(ma).mul(&image, bias), ca, cb, f, turns) {
                 return false;
             }
         }

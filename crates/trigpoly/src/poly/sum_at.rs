@@ -133,7 +133,18 @@ impl<C: Coefficient> Poly<C> {
         };
         let (map, map_content) = match map {
             Mapping::Identity => (None, None),
-            Mapping::Map(map, content) => (Some(map), Some(content)),
+            Mapping::Map(map, content) => {
+                // A first factor free of the substituted variables (the `f` of a flow at a
+                // resonance, free of `p_θ`) has the map applied once per term of the other.
+                let live = contents.iter().zip(sources).filter(|(q, _)| !q.is_zero());
+                for (product, (_, &(a, ..))) in products.iter_mut().zip(live) {
+                    let free = subs
+                        .iter()
+                        .all(|(v, _)| matches!(factors.range(a, *v), None | Some((0, 0))));
+                    product.set_a_unmapped(free);
+                }
+                (Some(map), Some(content))
+            }
         };
         let Some(terms) = gather::sum_of_products(layout, &products[..n], map.as_ref()) else {
             return Ok(None);

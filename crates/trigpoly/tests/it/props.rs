@@ -457,6 +457,14 @@ proptest! {
             let fused = Poly::sum_of_derivative_products_at(&terms, subs);
             prop_assert_eq!(fused, sum.subst_many(subs), "at {:?}", subs);
         }
+        // First factors free of the substituted variable (as a flow's `f` is free of `p_θ`):
+        // the map is applied once per term of the second factor.
+        let one = G::one(&vars);
+        let (f_free, h_free) = (f.subst(v, &one).unwrap(), h.subst(v, &one).unwrap());
+        let terms = [(&f_free, w, &g, false), (&h_free, v, &k, true)];
+        let sum = Poly::sum_of_derivative_products(&terms).unwrap();
+        let fused = Poly::sum_of_derivative_products_at(&terms, &subs[..1]);
+        prop_assert_eq!(fused, sum.subst_many(&subs[..1]), "free of {:?}", v);
     }
 
     /// The sum of Jacobians (the bracket's kernel) against derivatives multiplied one by one:
