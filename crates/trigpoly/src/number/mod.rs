@@ -64,6 +64,10 @@ pub trait IntegerRing:
     fn small_bits(s: &Self::Small) -> u32;
     /// `acc += a · b` in wide arithmetic; the caller guarantees no overflow.
     fn wide_add_mul(acc: &mut Self::Wide, a: &Self::Small, b: &Self::Small);
+    /// `a · b · k` in machine words; the caller guarantees no overflow.
+    fn small_mul_scale(a: &Self::Small, b: &Self::Small, k: i64) -> Self::Small;
+    /// A small value as a wide one.
+    fn small_to_wide(a: &Self::Small) -> Self::Wide;
     /// The value of a wide accumulator.
     fn from_wide(w: Self::Wide) -> Self;
     /// `acc += w` in wide arithmetic; the caller guarantees no overflow.
@@ -109,6 +113,14 @@ impl IntegerRing for Integer {
     #[inline(always)]
     fn wide_add_mul(acc: &mut i128, a: &i64, b: &i64) {
         *acc += *a as i128 * *b as i128;
+    }
+    #[inline(always)]
+    fn small_mul_scale(a: &i64, b: &i64, k: i64) -> i64 {
+        a * b * k
+    }
+    #[inline(always)]
+    fn small_to_wide(a: &i64) -> i128 {
+        *a as i128
     }
     #[inline]
     fn from_wide(w: i128) -> Self {
@@ -203,6 +215,15 @@ impl IntegerRing for GaussianInteger {
     }
     fn small_bits(s: &(i64, i64)) -> u32 {
         64 - (s.0.unsigned_abs() | s.1.unsigned_abs()).leading_zeros()
+    }
+    // (a + bi)(c + di)k = (ac − bd)k + (ad + bc)k i
+    #[inline(always)]
+    fn small_mul_scale(a: &(i64, i64), b: &(i64, i64), k: i64) -> (i64, i64) {
+        ((a.0 * b.0 - a.1 * b.1) * k, (a.0 * b.1 + a.1 * b.0) * k)
+    }
+    #[inline(always)]
+    fn small_to_wide(a: &(i64, i64)) -> (i128, i128) {
+        (a.0 as i128, a.1 as i128)
     }
     // (a + bi)(c + di) = (ac − bd) + (ad + bc)i
     #[inline(always)]

@@ -95,7 +95,8 @@ impl<C: Coefficient> Poly<C> {
             .map(|c| c.try_mul_i())
             .collect::<Option<Vec<_>>>()
             .ok_or_else(|| AlgebraError::NeedsGaussian("multiplication by i".into()))?;
-        Ok(Self::from_sorted(
+        // `i·(a + bi) = −b + ai` keeps the components' sizes, so they stay coprime.
+        Ok(Self::from_sorted_coprime(
             &self.vars,
             self.content.clone(),
             self.exps.clone(),

@@ -11,25 +11,29 @@ use crate::varset::VarKind;
 impl<C: Coefficient> Poly<C> {
     /// The complex conjugate: coefficients conjugated, every angle exponent negated.
     pub fn conj(&self) -> Self {
-        let angles: Vec<usize> = self.vars.angles().map(|v| v.index()).collect();
         let layout = self.layout();
         let w = self.words();
+        let fields: Vec<(usize, u32)> = self
+            .vars
+            .angles()
+            .map(|v| layout.field(v.index()))
+            .collect();
+        // Conjugation keeps the components' sizes: the coefficients stay coprime.
         let coeffs: Vec<C::Int> = self.coeffs.iter().map(|c| c.conj()).collect();
-        if angles.is_empty() {
-            return Self::from_sorted(&self.vars, self.content.clone(), self.exps.clone(), coeffs);
-        }
-        // e^{ikθ} ↦ e^{−ikθ}: translate each angle field by −2k.
+        // e^{ikθ} ↦ e^{−ikθ}: subtract 2k in each angle's field (wrapping: exact, since −k is
+        // within the limit as k is).
         let mut exps = self.exps.clone();
-        let mut unit = vec![0u64; w];
-        for m in exps.chunks_exact_mut(w) {
-            for &j in &angles {
-                let e = layout.get(m, j);
-                if e != 0 {
-                    layout.unit(j, -2 * e, &mut unit);
-                    let old = m.to_vec();
-                    layout.mul_into(&old, &unit, m);
+        if !fields.is_empty() {
+            for m in exps.chunks_exact_mut(w) {
+                for &field in &fields {
+                    let k = layout.read(m, field);
+                    m[field.0] = m[field.0].wrapping_sub(((2 * k) as u64) << field.1);
                 }
             }
+        }
+        // Terms that share their angle exponents (a `K_{m,n}`, say) keep their order.
+        if exps.chunks_exact(w).is_sorted_by(|a, b| a > b) {
+            return Self::from_sorted_coprime(&self.vars, self.content.clone(), exps, coeffs);
         }
         Self::from_distinct_unsorted(&self.vars, self.content.clone(), exps, coeffs)
     }

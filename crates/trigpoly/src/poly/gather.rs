@@ -466,6 +466,112 @@ fn occurring<K: Key>(exps: &[u64], bias: &K) -> K {
     seen
 }
 
+/// `(Σ c_i·m_i)^e` by the multinomial theorem, one term product per composition
+/// `e = a_1 + … + a_t`: `e!/(a_1!…a_t!) · Π c_i^{a_i} · Π m_i^{a_i}`, every one in machine
+/// words and added in one table. `None` when that could pass a word: the terms' coefficients
+/// bound every coefficient of the power and every partial product of the walk by
+/// `(Σ |c_i|)^e`, which must stay below `2^62`. The caller has checked the exponents.
+pub(crate) fn multinomial_power<I: IntegerRing>(
+    layout: &Layout,
+    a: (&[u64], &[I]),
+    e: usize,
+    compositions: usize,
+) -> Option<Gathered<I>> {
+    debug_assert!(layout.words <= WORDS);
+    by_width!(
+        layout.words,
+        multinomial_power_of_width,
+        layout,
+        a,
+        e,
+        compositions
+    )
+}
+
+fn multinomial_power_of_width<K: Key, I: IntegerRing>(
+    layout: &Layout,
+    a: (&[u64], &[I]),
+    e: usize,
+    compositions: usize,
+) -> Option<Gathered<I>> {
+    let t = a.1.len();
+    let smalls: Vec<I::Small> = a.1.iter().map(I::to_small).collect::<Option<_>>()?;
+    // Σ |c_i| ≤ Σ 2^(bits + 1) (a Gaussian component counts both parts).
+    let sum: u128 = smalls.iter().map(|c| 1u128 << (I::small_bits(c) + 1)).sum();
+    let bound = sum.checked_pow(u32::try_from(e).ok()?)?;
+    if bound >= 1 << 62 {
+        return None;
+    }
+    // Pascal's triangle up to e, and c_i^a for a ≤ e.
+    let mut binom: Vec<Vec<i64>> = vec![vec![1]];
+    for n in 1..=e {
+        let prev = &binom[n - 1];
+        let mut row = vec![1i64; n + 1];
+        for k in 1..n {
+            row[k] = prev[k - 1] + prev[k];
+        }
+        binom.push(row);
+    }
+    let one = I::to_small(&I::from_integer(Integer::ONE)).expect("one is small");
+    let powers: Vec<Vec<I::Small>> = smalls
+        .iter()
+        .map(|c| {
+            let mut row = vec![one];
+            for k in 1..=e {
+                row.push(I::small_mul_scale(&row[k - 1], c, 1));
+            }
+            row
+        })
+        .collect();
+    let bias = K::load(layout.one());
+    // m_i − 1, the translation that multiplies by m_i.
+    let steps: Vec<K> =
+        a.0.chunks_exact(K::WORDS)
+            .map(|m| K::load(m).lowered(bias.as_ref()))
+            .collect();
+    // Every composition is a term; they are distinct unless the monomials are dependent.
+    let mut words = WordGather::<K, I>::new(compositions, 0, compositions)?;
+    struct Walk<'a, K, I: IntegerRing> {
+        binom: &'a [Vec<i64>],
+        powers: &'a [Vec<I::Small>],
+        steps: &'a [K],
+        words: &'a mut WordGather<K, I>,
+    }
+    fn go<K: Key, I: IntegerRing>(
+        walk: &mut Walk<'_, K, I>,
+        i: usize,
+        rem: usize,
+        m: K,
+        c: &I::Small,
+    ) {
+        if i + 1 == walk.powers.len() {
+            let mut by = walk.steps[i];
+            for word in by.as_mut() {
+                *word = word.wrapping_mul(rem as u64);
+            }
+            let m = m.translated(by.as_ref());
+            let c = I::small_mul_scale(c, &walk.powers[i][rem], 1);
+            walk.words.add(m, I::small_to_wide(&c));
+            return;
+        }
+        let mut m = m;
+        for k in 0..=rem {
+            let next = I::small_mul_scale(c, &walk.powers[i][k], walk.binom[rem][k]);
+            go(walk, i + 1, rem - k, m, &next);
+            m = m.translated(walk.steps[i].as_ref());
+        }
+    }
+    let mut walk = Walk {
+        binom: &binom,
+        powers: &powers,
+        steps: &steps,
+        words: &mut words,
+    };
+    debug_assert!(t >= 1);
+    go(&mut walk, 0, e, bias, &one);
+    Some(words.finish())
+}
+
 /// Calls `emit(m_a·m_b, c_a, c_b, 1)` for every pair of terms of `a` and `b`, while it
 /// returns `true`; whether every call did.
 #[inline(always)]

@@ -463,6 +463,28 @@ impl<C: Coefficient> Poly<C> {
         }
     }
 
+    /// Builds from sorted, distinct, nonzero terms whose components are coprime but whose
+    /// leading coefficient may be negative (the image of a canonical polynomial under a map
+    /// that keeps every component's size, such as conjugation or the factor `i`): only the
+    /// sign is restored, with no gcd to take.
+    pub(crate) fn from_sorted_coprime(
+        vars: &Arc<VarSet>,
+        content: Rational,
+        exps: Vec<u64>,
+        mut coeffs: Vec<C::Int>,
+    ) -> Self {
+        match coeffs.first() {
+            None => Self::zero(vars),
+            Some(lead) if lead.leading_sign() < 0 => {
+                for c in coeffs.iter_mut() {
+                    *c = c.neg();
+                }
+                Self::assemble(vars, -content, exps, coeffs)
+            }
+            Some(_) => Self::assemble(vars, content, exps, coeffs),
+        }
+    }
+
     /// Builds from sorted, distinct, nonzero terms that are already primitive with a positive
     /// leading coefficient (a product of such polynomials over Z, by Gauss's lemma).
     pub(crate) fn from_sorted_primitive(

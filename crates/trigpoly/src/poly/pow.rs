@@ -1,6 +1,6 @@
 //! Integer powers: any power of a single term, non-negative powers of anything else.
 
-use super::{check_exponent, Poly};
+use super::{check_exponent, gather, Poly};
 use crate::error::AlgebraError;
 use crate::number::{Coefficient, Integer, IntegerRing, Rational};
 
@@ -82,6 +82,15 @@ impl<C: Coefficient> Poly<C> {
     /// multiplication needs about `e` times more.
     fn multinomial_pow(&self, e: usize) -> Self {
         let t = self.len();
+        let compositions = binomial_u128(e as u128 + t as u128 - 1, t as u128 - 1) as usize;
+        let content = || self.content.pow(e as i64).expect("nonzero content");
+        if self.words() <= gather::WORDS {
+            if let Some(terms) =
+                gather::multinomial_power(self.layout(), self.raw_terms(), e, compositions)
+            {
+                return Self::from_gathered(&self.vars, content(), terms);
+            }
+        }
         let w = self.words();
         let layout = self.layout();
         // Pascal's triangle up to e.
@@ -117,7 +126,6 @@ impl<C: Coefficient> Poly<C> {
                     .collect()
             })
             .collect();
-        let compositions = binomial_u128(e as u128 + t as u128 - 1, t as u128 - 1) as usize;
         let mut keys: Vec<u64> = Vec::with_capacity(compositions * w);
         let mut coeffs: Vec<C::Int> = Vec::with_capacity(compositions);
         struct Walk<'a, I> {
@@ -181,8 +189,7 @@ impl<C: Coefficient> Poly<C> {
                 out_c.push(c);
             }
         }
-        let content = self.content.pow(e as i64).expect("nonzero content");
-        Self::drop_zeros_and_normalize(&self.vars, content, out_e, out_c)
+        Self::drop_zeros_and_normalize(&self.vars, content(), out_e, out_c)
     }
 
     /// Whether distinct compositions `Σ a_i = e` give distinct monomials `Π m_i^{a_i}`: true
