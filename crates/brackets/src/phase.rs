@@ -32,6 +32,8 @@ pub struct CanonicalPair {
 pub struct PhaseSpace {
     vars: Arc<VarSet>,
     pairs: Vec<CanonicalPair>,
+    /// The pairs as `(q, p)` variables, the form the kernels take.
+    var_pairs: Vec<(Var, Var)>,
 }
 
 impl PhaseSpace {
@@ -67,6 +69,7 @@ impl PhaseSpace {
         }
         Ok(PhaseSpace {
             vars: vars.clone(),
+            var_pairs: out.iter().map(|c| (c.q, c.p)).collect(),
             pairs: out,
         })
     }
@@ -98,12 +101,12 @@ impl PhaseSpace {
     // {f, g} = Σ_i (∂f/∂q_i ∂g/∂p_i − ∂f/∂p_i ∂g/∂q_i)
     /// The Poisson bracket `{f, g}`.
     pub fn bracket(&self, f: &Expr, g: &Expr) -> Result<Expr, EngineError> {
-        Ok(Expr::sum_of_jacobians(f, g, &self.var_pairs())?)
+        Ok(Expr::sum_of_jacobians(f, g, self.var_pairs())?)
     }
 
     /// The canonical pairs as `(q, p)` variables, the form the kernels take.
-    fn var_pairs(&self) -> Vec<(Var, Var)> {
-        self.pairs.iter().map(|c| (c.q, c.p)).collect()
+    fn var_pairs(&self) -> &[(Var, Var)] {
+        &self.var_pairs
     }
 
     /// `(∂g/∂q_i, ∂g/∂p_i)` for each pair: what a bracket with `g` needs of `g`, worth keeping
@@ -124,7 +127,7 @@ impl PhaseSpace {
     ) -> Result<Expr, EngineError> {
         Ok(Expr::sum_of_jacobians_with_gradient(
             f,
-            &self.var_pairs(),
+            self.var_pairs(),
             dg,
         )?)
     }
@@ -141,7 +144,7 @@ impl PhaseSpace {
     ) -> Result<Expr, EngineError> {
         Ok(Expr::sum_of_jacobians_with_gradient_at(
             f,
-            &self.var_pairs(),
+            self.var_pairs(),
             dg,
             subs,
         )?)

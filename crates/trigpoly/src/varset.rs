@@ -98,6 +98,8 @@ pub(crate) struct Layout {
     pub words: usize,
     pub bias: Vec<u64>,
     pub max_exp: i64,
+    /// The field of each variable: [`Layout::field`] without a division.
+    fields: Vec<(usize, u32)>,
 }
 
 impl Layout {
@@ -105,8 +107,10 @@ impl Layout {
         let per_word = (64 / bits) as usize;
         let words = Layout::words_for(nvars, bits);
         let mut bias = vec![0u64; words];
-        for j in 0..nvars {
-            let (w, shift) = Layout::place(per_word, bits, j);
+        let fields: Vec<(usize, u32)> = (0..nvars)
+            .map(|j| Layout::place(per_word, bits, j))
+            .collect();
+        for &(w, shift) in &fields {
             bias[w] |= 1u64 << (shift + bits - 1);
         }
         Layout {
@@ -115,6 +119,7 @@ impl Layout {
             words,
             bias,
             max_exp: Layout::max_exp_for(bits),
+            fields,
         }
     }
 
@@ -155,7 +160,7 @@ impl Layout {
     /// Where variable `j` is stored: the word, and the shift of its field in that word.
     #[inline]
     pub fn field(&self, j: usize) -> (usize, u32) {
-        Layout::place(self.per_word, self.bits, j)
+        self.fields[j]
     }
 
     /// The exponent of variable `j` in a packed monomial.
