@@ -64,6 +64,8 @@ pub trait IntegerRing:
     fn small_bits(s: &Self::Small) -> u32;
     /// `acc += a · b` in wide arithmetic; the caller guarantees no overflow.
     fn wide_add_mul(acc: &mut Self::Wide, a: &Self::Small, b: &Self::Small);
+    /// `a · k` in machine words, if every component fits.
+    fn small_checked_scale(a: &Self::Small, k: i64) -> Option<Self::Small>;
     /// `a · b · k` in machine words; the caller guarantees no overflow.
     fn small_mul_scale(a: &Self::Small, b: &Self::Small, k: i64) -> Self::Small;
     /// A small value as a wide one.
@@ -115,6 +117,10 @@ impl IntegerRing for Integer {
         *acc += *a as i128 * *b as i128;
     }
     #[inline(always)]
+    fn small_checked_scale(a: &i64, k: i64) -> Option<i64> {
+        a.checked_mul(k)
+    }
+    #[inline(always)]
     fn small_mul_scale(a: &i64, b: &i64, k: i64) -> i64 {
         a * b * k
     }
@@ -147,7 +153,7 @@ impl IntegerRing for Integer {
     }
     #[inline]
     fn wide_div_exact(w: &i128, d: i128) -> i128 {
-        w / d
+        div_i128(*w, d)
     }
     fn is_zero(&self) -> bool {
         Integer::is_zero(self)
@@ -216,6 +222,10 @@ impl IntegerRing for GaussianInteger {
     fn small_bits(s: &(i64, i64)) -> u32 {
         64 - (s.0.unsigned_abs() | s.1.unsigned_abs()).leading_zeros()
     }
+    #[inline(always)]
+    fn small_checked_scale(a: &(i64, i64), k: i64) -> Option<(i64, i64)> {
+        Some((a.0.checked_mul(k)?, a.1.checked_mul(k)?))
+    }
     // (a + bi)(c + di)k = (ac − bd)k + (ad + bc)k i
     #[inline(always)]
     fn small_mul_scale(a: &(i64, i64), b: &(i64, i64), k: i64) -> (i64, i64) {
@@ -263,7 +273,7 @@ impl IntegerRing for GaussianInteger {
     }
     #[inline]
     fn wide_div_exact(w: &(i128, i128), d: i128) -> (i128, i128) {
-        (w.0 / d, w.1 / d)
+        (div_i128(w.0, d), div_i128(w.1, d))
     }
     fn is_zero(&self) -> bool {
         GaussianInteger::is_zero(self)
@@ -515,5 +525,18 @@ impl Coefficient for GaussianRational {
     }
     fn is_zero(&self) -> bool {
         GaussianRational::is_zero(self)
+    }
+}
+
+/// `x / d` for an exact division, on machine words when both fit one (the common case, where
+/// an `i128` division is a library call).
+#[inline]
+fn div_i128(x: i128, d: i128) -> i128 {
+    match (i64::try_from(x), i64::try_from(d)) {
+        (Ok(x), Ok(d)) => match x.checked_div(d) {
+            Some(q) => q as i128,
+            None => x as i128 / d as i128,
+        },
+        _ => x / d,
     }
 }

@@ -747,9 +747,14 @@ impl<K: Key, I: IntegerRing> WordGather<K, I> {
             return false;
         };
         let mut w = I::Wide::default();
-        I::wide_add_mul(&mut w, &a, &b);
-        if k != 1 {
-            w = I::wide_scale(&w, k);
+        // The multiplier goes into a word-sized factor when it fits, else into the product.
+        match (k, I::small_checked_scale(&a, k)) {
+            (1, _) => I::wide_add_mul(&mut w, &a, &b),
+            (_, Some(ak)) => I::wide_add_mul(&mut w, &ak, &b),
+            (_, None) => {
+                I::wide_add_mul(&mut w, &a, &b);
+                w = I::wide_scale(&w, k);
+            }
         }
         for _ in 0..turns {
             match I::wide_mul_i(&w) {
