@@ -147,6 +147,14 @@ impl Rational {
         }
     }
 
+    /// `(numerator, denominator)` as machine integers, if both fit.
+    pub fn small_parts(&self) -> Option<(i64, i64)> {
+        match &self.0 {
+            Repr::Small { num, den } => Some((*num, *den)),
+            Repr::Big(_) => None,
+        }
+    }
+
     /// The denominator (positive).
     pub fn denom(&self) -> Integer {
         match &self.0 {

@@ -179,16 +179,6 @@ pub(crate) struct Product<'a, I> {
 }
 
 impl<'a, I> Product<'a, I> {
-    /// No product: a placeholder in a fixed array.
-    pub(crate) const EMPTY: Self = Product {
-        a: (&[], &[]),
-        by: None,
-        b: (&[], &[]),
-        k: 0,
-        ab_bits: 0,
-        a_unmapped: false,
-    };
-
     /// `k·a·b`, or `k·(∂a/∂v)·b` when `by` is the derivative, where the coefficients of `a`
     /// and `b` fit words and take at most `ab_bits` bits together ([`small_bits`]).
     pub(crate) fn new(

@@ -54,20 +54,39 @@ pub struct Poly<C: Coefficient> {
     content: Rational,
     exps: Vec<u64>,
     coeffs: Vec<C::Int>,
-    /// [`Poly::exponent_bound`], computed when first asked for: a polynomial that enters many
-    /// products (a generator, a Hamiltonian's gradient) has its exponents read once.
-    exponent_bound: BoundCache,
+    /// The bit length `b` of [`Poly::exponent_bound`] `= 2^b`, computed when first asked
+    /// for: a polynomial that enters many products (a generator, a Hamiltonian's gradient)
+    /// has its exponents read once.
+    exponent_bound: Cached,
+    /// [`Poly::small_bits`] (`u8::MAX` for `None`), computed when first asked for, likewise
+    /// for its coefficients.
+    small_bits: Cached,
 }
 
-/// The bit length `b` of [`Poly::exponent_bound`] `= 2^b`, plus one; 0 until computed. One
-/// byte of state (a word of the struct with its padding); relaxed atomics, since every thread
-/// that computes it writes the same value.
+/// A byte computed from a polynomial's terms when first asked for (plus one; 0 until then).
+/// One byte of state, in the padding of the struct; relaxed atomics, since every thread that
+/// computes it writes the same value.
 #[derive(Default)]
-struct BoundCache(AtomicU8);
+struct Cached(AtomicU8);
 
-impl Clone for BoundCache {
+impl Cached {
+    /// The value, computed by `f` the first time (`f` must give less than `u8::MAX`).
+    #[inline]
+    fn get(&self, f: impl FnOnce() -> u8) -> u8 {
+        match self.0.load(Ordering::Relaxed) {
+            0 => {
+                let value = f();
+                self.0.store(value + 1, Ordering::Relaxed);
+                value
+            }
+            known => known - 1,
+        }
+    }
+}
+
+impl Clone for Cached {
     fn clone(&self) -> Self {
-        BoundCache(AtomicU8::new(self.0.load(Ordering::Relaxed)))
+        Cached(AtomicU8::new(self.0.load(Ordering::Relaxed)))
     }
 }
 
@@ -336,16 +355,19 @@ impl<C: Coefficient> Poly<C> {
     /// exponent checks at once, since the limit is the same for every variable; a check it
     /// does not clear goes variable by variable.
     pub(crate) fn exponent_bound(&self) -> i64 {
-        let cache = &self.exponent_bound.0;
-        let bits = match cache.load(Ordering::Relaxed) {
-            0 => {
-                let bits = Self::exponent_bound_bits(&self.vars, &self.exps);
-                cache.store(bits as u8 + 1, Ordering::Relaxed);
-                bits
-            }
-            known => u32::from(known) - 1,
-        };
+        let bits = self
+            .exponent_bound
+            .get(|| Self::exponent_bound_bits(&self.vars, &self.exps) as u8);
         (1u128 << bits).min(i64::MAX as u128) as i64
+    }
+
+    /// The most bits of a component of any coefficient of the primitive part, if every one
+    /// fits a machine word (what the word kernels ask of a factor).
+    pub(crate) fn small_bits(&self) -> Option<u32> {
+        let bits = self
+            .small_bits
+            .get(|| gather::small_bits(&self.coeffs).map_or(u8::MAX - 1, |b| b as u8));
+        (bits != u8::MAX - 1).then_some(u32::from(bits))
     }
 
     /// The bit length `b` of [`Poly::exponent_bound`] `= 2^b` for the packed monomials `exps`.
@@ -513,7 +535,8 @@ impl<C: Coefficient> Poly<C> {
             content,
             exps,
             coeffs,
-            exponent_bound: BoundCache::default(),
+            exponent_bound: Cached::default(),
+            small_bits: Cached::default(),
         }
     }
 

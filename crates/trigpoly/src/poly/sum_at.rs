@@ -85,68 +85,56 @@ impl<C: Coefficient> Poly<C> {
         if sources.len() > MAX_PRODUCTS || layout.words > gather::WORDS {
             return Ok(None);
         }
-        // The content of each product, their common content `d`, and the most exponent any
-        // term product can reach.
-        let mut contents: [Rational; MAX_PRODUCTS] = Default::default();
-        let mut d = Rational::zero();
+        // The most exponent any term product can reach, and the products' share of the
+        // common content.
         let (mut pairs, mut reach) = (0usize, 0i64);
-        for (q, &(a, _, b, negate)) in contents.iter_mut().zip(sources) {
-            if a.is_zero() || b.is_zero() {
-                continue;
+        for &(a, _, b, _) in sources {
+            if !a.is_zero() && !b.is_zero() {
+                pairs = pairs.saturating_add(a.len().saturating_mul(b.len()));
+                reach = reach.max(a.exponent_bound() + b.exponent_bound() + 1);
             }
-            pairs = pairs.saturating_add(a.len().saturating_mul(b.len()));
-            reach = reach.max(a.exponent_bound() + b.exponent_bound() + 1);
-            *q = &a.content * &b.content;
-            if negate {
-                *q = -std::mem::take(q);
-            }
-            d = Rational::content_gcd(&d, q);
-        }
-        if d.is_zero() {
-            return Ok(Some(Self::zero(vars)));
         }
         if pairs > max_pairs || reach > limit {
             return Ok(None);
         }
-        let mut products = [Product::EMPTY; MAX_PRODUCTS];
-        let mut n = 0;
-        let mut factors = Factors::default();
-        for (q, &(a, v, b, _)) in contents.iter().zip(sources) {
-            if q.is_zero() {
+        let mut multipliers = [0i64; MAX_PRODUCTS];
+        let Some(d) = Self::multipliers(sources, &mut multipliers) else {
+            return Ok(None);
+        };
+        if d.is_zero() {
+            return Ok(Some(Self::zero(vars)));
+        }
+        let mut products = Vec::with_capacity(sources.len());
+        for (&k, &(a, v, b, _)) in multipliers.iter().zip(sources) {
+            if k == 0 {
                 continue;
             }
-            // `q/d` is an integer: `d` divides every content.
-            let (Some(k), Some(bits_a), Some(bits_b)) = (
-                (q / &d).numer().to_i64(),
-                factors.small_bits(a),
-                factors.small_bits(b),
-            ) else {
+            let (Some(bits_a), Some(bits_b)) = (a.small_bits(), b.small_bits()) else {
                 return Ok(None);
             };
             let by = v.map(|v| Partial::new(vars, v));
-            products[n] = Product::new(a.raw_terms(), by, b.raw_terms(), k, bits_a + bits_b);
-            n += 1;
+            products.push(Product::new(
+                a.raw_terms(),
+                by,
+                b.raw_terms(),
+                k,
+                bits_a + bits_b,
+            ));
         }
-        let map = match Self::monomial_map(sources, subs, limit - reach, &mut factors)? {
-            Some(map) => map,
+        let (map, map_content) = match Self::monomial_map(sources, subs, limit - reach)? {
             None => return Ok(None),
-        };
-        let (map, map_content) = match map {
-            Mapping::Identity => (None, None),
-            Mapping::Map(map, content) => {
+            Some(Mapping::Identity) => (None, None),
+            Some(Mapping::Map(map, content, unmapped)) => {
                 // A first factor free of the substituted variables (the `f` of a flow at a
                 // resonance, free of `p_θ`) has the map applied once per term of the other.
-                let live = contents.iter().zip(sources).filter(|(q, _)| !q.is_zero());
-                for (product, (_, &(a, ..))) in products.iter_mut().zip(live) {
-                    let free = subs
-                        .iter()
-                        .all(|(v, _)| matches!(factors.range(a, *v), None | Some((0, 0))));
+                let live = multipliers.iter().zip(unmapped).filter(|(&k, _)| k != 0);
+                for (product, (_, free)) in products.iter_mut().zip(live) {
                     product.set_a_unmapped(free);
                 }
                 (Some(map), Some(content))
             }
         };
-        let Some(terms) = gather::sum_of_products(layout, &products[..n], map.as_ref()) else {
+        let Some(terms) = gather::sum_of_products(layout, &products, map.as_ref()) else {
             return Ok(None);
         };
         Self::check_terms(vars, terms.coeffs.len())?;
@@ -162,12 +150,15 @@ impl<C: Coefficient> Poly<C> {
     /// when a value is not a single term with a real integer part that fits a word, the
     /// tables would be too long, a factor would pass a word, or the translated exponents
     /// could pass `room` (what the products leave below the limit).
-    fn monomial_map<'a>(
-        sources: &[Source<'a, C>],
+    fn monomial_map(
+        sources: &[Source<'_, C>],
         subs: &[(Var, Self)],
         room: i64,
-        factors: &mut Factors<'a, C>,
     ) -> Result<Option<Mapping>, AlgebraError> {
+        if subs.is_empty() {
+            return Ok(Some(Mapping::Identity));
+        }
+        let mut factors = Factors::default();
         let Some(&(first, ..)) = sources.first() else {
             return Ok(Some(Mapping::Identity));
         };
@@ -249,7 +240,97 @@ impl<C: Coefficient> Poly<C> {
         if map.is_empty() {
             return Ok(Some(Mapping::Identity));
         }
-        Ok((shift <= room).then_some(Mapping::Map(map, content)))
+        // Which sources have a first factor free of every substituted variable.
+        let mut unmapped = [false; MAX_PRODUCTS];
+        for (free, &(a, ..)) in unmapped.iter_mut().zip(sources) {
+            *free = subs
+                .iter()
+                .all(|(v, _)| matches!(factors.range(a, *v), None | Some((0, 0))));
+        }
+        Ok((shift <= room).then_some(Mapping::Map(map, content, unmapped)))
+    }
+
+    /// The integer multipliers `k_i` of the products (0 for a zero product) and the content
+    /// `d` with `±c(a_i)·c(b_i) = d·k_i`, or `None` when a multiplier passes a word. On machine
+    /// words `d = 1/D` for the lcm `D` of the contents' denominators: the multipliers need not
+    /// be coprime, since the gathered terms are brought to their content at the end anyway.
+    fn multipliers(sources: &[Source<'_, C>], out: &mut [i64; MAX_PRODUCTS]) -> Option<Rational> {
+        let parts = |q: &Rational| q.small_parts();
+        let mut lcm: i64 = 1;
+        let mut any = false;
+        let mut words = true;
+        for &(a, _, b, _) in sources {
+            if a.is_zero() || b.is_zero() {
+                continue;
+            }
+            any = true;
+            match (parts(&a.content), parts(&b.content)) {
+                (Some((_, da)), Some((_, db))) => {
+                    let Some(den) = da.checked_mul(db) else {
+                        words = false;
+                        break;
+                    };
+                    match lcm.checked_mul(den / gcd_i64(lcm, den)) {
+                        Some(l) => lcm = l,
+                        None => {
+                            words = false;
+                            break;
+                        }
+                    }
+                }
+                _ => {
+                    words = false;
+                    break;
+                }
+            }
+        }
+        if !any {
+            return Some(Rational::zero());
+        }
+        if words {
+            let mut all = true;
+            for (k, &(a, _, b, negate)) in out.iter_mut().zip(sources) {
+                *k = 0;
+                if a.is_zero() || b.is_zero() {
+                    continue;
+                }
+                let ((na, da), (nb, db)) = (parts(&a.content)?, parts(&b.content)?);
+                // k = ±na·nb·(D/(da·db)).
+                let multiple = lcm / (da * db);
+                match na
+                    .checked_mul(nb)
+                    .and_then(|n| n.checked_mul(multiple))
+                    .and_then(|n| if negate { n.checked_neg() } else { Some(n) })
+                {
+                    Some(m) => *k = m,
+                    None => {
+                        all = false;
+                        break;
+                    }
+                }
+            }
+            if all {
+                return Some(Rational::new(1, lcm));
+            }
+        }
+        // Contents past machine words: the common content by rational gcds.
+        let content = |&(a, _, b, negate): &Source<'_, C>| {
+            let q = &a.content * &b.content;
+            if negate {
+                -q
+            } else {
+                q
+            }
+        };
+        let live = sources.iter().filter(|s| !s.0.is_zero() && !s.2.is_zero());
+        let d = Rational::content_of(live.clone().map(content).collect::<Vec<_>>().iter());
+        for (k, source) in out.iter_mut().zip(sources) {
+            *k = 0;
+            if !source.0.is_zero() && !source.2.is_zero() {
+                *k = (&content(source) / &d).numer().to_i64()?;
+            }
+        }
+        Some(d)
     }
 }
 
@@ -257,16 +338,16 @@ impl<C: Coefficient> Poly<C> {
 enum Mapping {
     /// Nothing: no substituted variable occurs.
     Identity,
-    /// The map, and the content its factors left out.
-    Map(MonomialMap, Rational),
+    /// The map, the content its factors left out, and which sources have a first factor
+    /// free of the substituted variables.
+    Map(MonomialMap, Rational, [bool; MAX_PRODUCTS]),
 }
 
 /// What a gathered sum reads of its factors, once per distinct factor however many products
-/// share it (a flow's `f` enters one product per variable): the bits of the coefficients and
-/// the exponent ranges of the substituted variables. On the stack: a sum has at most
+/// share it (a flow's `f` enters one product per variable): the exponent ranges of the
+/// substituted variables. On the stack: a sum has at most
 /// `2 · MAX_PRODUCTS` factors.
 struct Factors<'a, C: Coefficient> {
-    bits: [Option<(&'a Poly<C>, Option<u32>)>; 2 * MAX_PRODUCTS],
     ranges: [Option<RangeOf<'a, C>>; 2 * MAX_PRODUCTS],
 }
 
@@ -276,23 +357,12 @@ type RangeOf<'a, C> = (&'a Poly<C>, Var, Option<(i64, i64)>);
 impl<C: Coefficient> Default for Factors<'_, C> {
     fn default() -> Self {
         Factors {
-            bits: [None; 2 * MAX_PRODUCTS],
             ranges: [None; 2 * MAX_PRODUCTS],
         }
     }
 }
 
 impl<'a, C: Coefficient> Factors<'a, C> {
-    /// [`gather::small_bits`] of the coefficients of `p`.
-    fn small_bits(&mut self, p: &'a Poly<C>) -> Option<u32> {
-        remembered(
-            &mut self.bits,
-            |&(q, _)| std::ptr::eq(q, p),
-            || (p, gather::small_bits(&p.coeffs)),
-        )
-        .1
-    }
-
     /// [`Poly::exponent_range`] of `v` in `p`.
     fn range(&mut self, p: &'a Poly<C>, v: Var) -> Option<(i64, i64)> {
         remembered(
@@ -319,4 +389,13 @@ fn remembered<T: Copy>(
         }
     }
     make()
+}
+
+/// `gcd(a, b)` of positive machine integers.
+fn gcd_i64(a: i64, b: i64) -> i64 {
+    let (mut a, mut b) = (a.unsigned_abs(), b.unsigned_abs());
+    while b != 0 {
+        (a, b) = (b, a % b);
+    }
+    a as i64
 }
