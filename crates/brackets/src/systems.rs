@@ -166,11 +166,8 @@ impl System {
         let k = z
             .checked_pow(m)?
             .checked_mul(&Expr::exp_i(self.vars(), theta, -n)?)?;
-        let kbar = k.conj();
-        let half = trigpoly::Rational::new(1, 2);
-        let p = k.checked_add(&kbar)? * &half;
-        // (K − K̄)/(2i) = −i(K − K̄)/2
-        let q = k.checked_sub(&kbar)?.mul_i()? * &-half;
+        // P = (K + K̄)/2, Q = (K − K̄)/(2i): both from one pass over K and K̄.
+        let (kbar, p, q) = k.conj_re_im();
         Ok(Resonant { k, kbar, p, q })
     }
 

@@ -38,6 +38,78 @@ impl<C: Coefficient> Poly<C> {
         Self::from_distinct_unsorted(&self.vars, self.content.clone(), exps, coeffs)
     }
 
+    /// The conjugate, the real part `(f + conj f)/2` and the imaginary part
+    /// `(f − conj f)/(2i)` at once: one conjugation and one pass over both term lists, which
+    /// gives the monomials of both parts. When `f` and its conjugate share no monomial (a
+    /// `K_{m,n} = Z^m e^{−inθ}`, whose angle exponent is `−n ≠ 0` in every term), the parts
+    /// keep the coefficients of `f` up to sign and `i`, and need no gcd.
+    pub fn conj_re_im(&self) -> (Self, Self, Self) {
+        let conj = self.conj();
+        if !C::HAS_I || self.is_zero() {
+            // Over Q every function is real.
+            return (conj, self.clone(), Self::zero(&self.vars));
+        }
+        let w = self.words();
+        let (n, m) = (self.len(), conj.len());
+        let (d, sa, sb) = Rational::content_split(&self.content, &conj.content);
+        let scale = |c: &C::Int, s: &Integer| if s.is_one() { c.clone() } else { c.scale(s) };
+        // −i·c (over Q(i), where every coefficient has a product by i).
+        let minus_i = |c: &C::Int| c.try_mul_i().expect("over Q(i)").neg();
+        let (mut re_e, mut im_e) = (
+            Vec::with_capacity((n + m) * w),
+            Vec::with_capacity((n + m) * w),
+        );
+        let (mut re_c, mut im_c) = (Vec::with_capacity(n + m), Vec::with_capacity(n + m));
+        let mut overlap = false;
+        let (mut i, mut j) = (0, 0);
+        while i < n || j < m {
+            let order = match (i < n, j < m) {
+                (true, true) => self.exp(i).cmp(conj.exp(j)),
+                (true, false) => std::cmp::Ordering::Greater,
+                _ => std::cmp::Ordering::Less,
+            };
+            // re: sa·F + sb·F̄; im: −i·(sa·F − sb·F̄).
+            let (monomial, re, im) = match order {
+                std::cmp::Ordering::Greater => {
+                    let a = scale(&self.coeffs[i], &sa);
+                    i += 1;
+                    let im = minus_i(&a);
+                    (self.exp(i - 1), a, im)
+                }
+                std::cmp::Ordering::Less => {
+                    let b = scale(&conj.coeffs[j], &sb);
+                    j += 1;
+                    let im = minus_i(&b.neg());
+                    (conj.exp(j - 1), b, im)
+                }
+                std::cmp::Ordering::Equal => {
+                    overlap = true;
+                    let (a, b) = (scale(&self.coeffs[i], &sa), scale(&conj.coeffs[j], &sb));
+                    i += 1;
+                    j += 1;
+                    (self.exp(i - 1), a.add(&b), minus_i(&a.sub(&b)))
+                }
+            };
+            if !re.is_zero() {
+                re_e.extend_from_slice(monomial);
+                re_c.push(re);
+            }
+            if !im.is_zero() {
+                im_e.extend_from_slice(monomial);
+                im_c.push(im);
+            }
+        }
+        let half = &d * &Rational::new(1, 2);
+        let build = |exps, coeffs| {
+            if overlap {
+                Self::from_sorted(&self.vars, half.clone(), exps, coeffs)
+            } else {
+                Self::from_sorted_coprime(&self.vars, half.clone(), exps, coeffs)
+            }
+        };
+        (conj, build(re_e, re_c), build(im_e, im_c))
+    }
+
     /// Whether the function is real-valued: `conj(f) = f`.
     pub fn is_real(&self) -> bool {
         self.conj() == *self

@@ -721,6 +721,23 @@ proptest! {
         prop_assert_eq!(&re + &im.mul_i().expect("over Q(i)"), f);
     }
 
+    /// The conjugate and both parts at once are `conj f`, `re f` and `im f`: for any `f`, and
+    /// for `f e^{3iθ}` with `f` free of `θ`, which shares no monomial with its conjugate (the
+    /// shape of a `K_{m,n}`).
+    #[test]
+    fn conj_re_im_at_once(f in gpoly(9)) {
+        let vars = phase_space();
+        let theta = var(&vars, "theta");
+        let one = G::one(&vars);
+        let shifted = &f.subst(theta, &one).unwrap() * &G::exp_i(&vars, theta, 3).unwrap();
+        for g in [f, shifted] {
+            let (conj, re, im) = g.conj_re_im();
+            prop_assert_eq!(&conj, &g.conj());
+            prop_assert_eq!(&re, &g.re());
+            prop_assert_eq!(&im, &g.im().expect("over Q(i)"));
+        }
+    }
+
     /// A product by a single term (a translation, which keeps the coefficients when the
     /// term's integer part is 1) has the product of the values and distributes over a sum
     /// with a product by two terms (another kernel), structurally.
