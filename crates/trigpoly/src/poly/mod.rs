@@ -58,8 +58,8 @@ pub struct Poly<C: Coefficient> {
     /// for: a polynomial that enters many products (a generator, a Hamiltonian's gradient)
     /// has its exponents read once.
     exponent_bound: Cached,
-    /// [`Poly::small_bits`] (`u8::MAX` for `None`), computed when first asked for, likewise
-    /// for its coefficients.
+    /// [`Poly::small_bits`], computed when first asked for, likewise for its coefficients
+    /// (`u8::MAX − 1` stands for `None`).
     small_bits: Cached,
 }
 

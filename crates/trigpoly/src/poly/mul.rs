@@ -1,6 +1,6 @@
 //! Multiplication: exponent bounds are checked once up front, so the inner loops add packed
 //! words without per-term overflow tests. The method goes by shape: a single term translates
-//! the other factor; a few term pairs are gathered, sorted once and combined (`gather.rs`,
+//! the other factor; a few term pairs are gathered into one table and combined (`gather/`,
 //! which also squares); a short factor shifts and merges copies of the long one; a product
 //! whose exponent box is not much larger than the work goes dense (`dense.rs`); anything
 //! sparser goes through a heap (Johnson's method with Monagan and Pearce's lazy rows), which

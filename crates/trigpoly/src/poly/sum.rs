@@ -9,13 +9,11 @@
 
 use super::gather::{self, JacobianPair, MAX_JACOBIAN_PAIRS};
 use super::mul::{merge_tree, SMALL_SIDE};
+use super::sum_at::MAX_PRODUCTS;
 use super::Poly;
 use crate::error::AlgebraError;
 use crate::number::{Coefficient, IntegerRing, Rational};
 use crate::varset::{Layout, Var};
-
-/// The most products of a sum that go to [`Poly::gathered_sum`].
-const MAX_GATHERED: usize = 16;
 
 /// Sorted term lists with their rational contents, waiting to be summed.
 type Streams<C> = Vec<(Rational, Poly<C>)>;
@@ -39,8 +37,8 @@ impl<C: Coefficient> Poly<C> {
             first.same_vars(a)?;
         }
         // Short products: every term product in one table (each square's pairs once).
-        let mut sources = [(first, None, first, false); MAX_GATHERED];
-        if terms.len() <= MAX_GATHERED {
+        let mut sources = [(first, None, first, false); MAX_PRODUCTS];
+        if terms.len() <= MAX_PRODUCTS {
             for (source, &(a, b, negate)) in sources.iter_mut().zip(terms) {
                 *source = (a, None, b, negate);
             }

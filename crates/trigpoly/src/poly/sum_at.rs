@@ -14,8 +14,8 @@ use crate::varset::Var;
 /// flag is `true`.
 pub(crate) type Source<'a, C> = (&'a Poly<C>, Option<Var>, &'a Poly<C>, bool);
 
-/// The most products one gathered sum takes (its contents and products live on the stack).
-const MAX_PRODUCTS: usize = 16;
+/// The most products one gathered sum takes (its multipliers live on the stack).
+pub(super) const MAX_PRODUCTS: usize = 16;
 
 /// The most exponents of one substituted variable that a gathered sum tabulates.
 const MAX_MAPPED_EXPONENTS: i64 = 4096;
@@ -121,7 +121,7 @@ impl<C: Coefficient> Poly<C> {
                 bits_a + bits_b,
             ));
         }
-        let (map, map_content) = match Self::monomial_map(sources, subs, limit - reach)? {
+        let (map, map_content) = match Self::monomial_map(sources, subs, limit - reach) {
             None => return Ok(None),
             Some(Mapping::Identity) => (None, None),
             Some(Mapping::Map(map, content, unmapped)) => {
@@ -150,17 +150,13 @@ impl<C: Coefficient> Poly<C> {
     /// when a value is not a single term with a real integer part that fits a word, the
     /// tables would be too long, a factor would pass a word, or the translated exponents
     /// could pass `room` (what the products leave below the limit).
-    fn monomial_map(
-        sources: &[Source<'_, C>],
-        subs: &[(Var, Self)],
-        room: i64,
-    ) -> Result<Option<Mapping>, AlgebraError> {
+    fn monomial_map(sources: &[Source<'_, C>], subs: &[(Var, Self)], room: i64) -> Option<Mapping> {
         if subs.is_empty() {
-            return Ok(Some(Mapping::Identity));
+            return Some(Mapping::Identity);
         }
         let mut factors = Factors::default();
         let Some(&(first, ..)) = sources.first() else {
-            return Ok(Some(Mapping::Identity));
+            return Some(Mapping::Identity);
         };
         let vars = &first.vars;
         let layout = vars.layout();
@@ -169,7 +165,7 @@ impl<C: Coefficient> Poly<C> {
         let mut shift = 0i64;
         for (k, (v, value)) in subs.iter().enumerate() {
             if subs[..k].iter().any(|(w, _)| w == v) {
-                return Ok(None);
+                return None;
             }
             // The exponents of `v` the term products can have: a product's exponent is the
             // sum of its factors', less one where `v` is the variable of the derivative.
@@ -189,19 +185,19 @@ impl<C: Coefficient> Poly<C> {
                 continue;
             };
             if value.len() != 1 || highest - lowest >= MAX_MAPPED_EXPONENTS {
-                return Ok(None);
+                return None;
             }
             let Some(n) = value.coeffs[0].to_real_i64() else {
-                return Ok(None);
+                return None;
             };
             let unit = n == 1 || n == -1;
             if lowest < 0 && !unit {
-                return Ok(None);
+                return None;
             }
             let q = &value.content;
             let powers: Option<Vec<Rational>> = (lowest..=highest).map(|e| q.pow(e)).collect();
             let Some(powers) = powers else {
-                return Ok(None);
+                return None;
             };
             let dv = Rational::content_of(powers.iter());
             // e·(m_v − v), word by word (wrapping: exact, since the fields stay in range).
@@ -214,7 +210,7 @@ impl<C: Coefficient> Poly<C> {
             let mut table = Vec::with_capacity(powers.len());
             for (e, qe) in (lowest..).zip(&powers) {
                 let Some(scale) = (qe / &dv).numer().to_i64() else {
-                    return Ok(None);
+                    return None;
                 };
                 // n^e; for e < 0 only n = ±1 gets here, and (±1)^e = (±1)^{|e|}.
                 let ne = if n == -1 && e % 2 != 0 {
@@ -224,11 +220,11 @@ impl<C: Coefficient> Poly<C> {
                 } else {
                     match n.checked_pow(e as u32) {
                         Some(p) => p,
-                        None => return Ok(None),
+                        None => return None,
                     }
                 };
                 let Some(factor) = scale.checked_mul(ne) else {
-                    return Ok(None);
+                    return None;
                 };
                 let by = step.map(|s| s.wrapping_mul(e as u64));
                 table.push((by, factor));
@@ -238,7 +234,7 @@ impl<C: Coefficient> Poly<C> {
             shift += lowest.abs().max(highest.abs()) * value.exponent_bound();
         }
         if map.is_empty() {
-            return Ok(Some(Mapping::Identity));
+            return Some(Mapping::Identity);
         }
         // Which sources have a first factor free of every substituted variable.
         let mut unmapped = [false; MAX_PRODUCTS];
@@ -247,7 +243,7 @@ impl<C: Coefficient> Poly<C> {
                 .iter()
                 .all(|(v, _)| matches!(factors.range(a, *v), None | Some((0, 0))));
         }
-        Ok((shift <= room).then_some(Mapping::Map(map, content, unmapped)))
+        (shift <= room).then_some(Mapping::Map(map, content, unmapped))
     }
 
     /// The integer multipliers `k_i` of the products (0 for a zero product) and the content

@@ -1,0 +1,233 @@
+//! Where the gathering kernels add their term products: `WordGather`, exact sums in machine
+//! words found by open addressing, and `Gather`, ring elements for coefficients of any size;
+//! and `Gathered`, the sorted terms either gives back.
+
+use super::MonomialMap;
+use crate::number::{Integer, IntegerRing};
+use crate::poly::mul::Key;
+use crate::varset::Layout;
+
+/// The terms a kernel gathered: sorted, distinct, nonzero.
+pub(crate) struct Gathered<I> {
+    pub(crate) exps: Vec<u64>,
+    pub(crate) coeffs: Vec<I>,
+    /// `Some(d)` when the sums were divided by `d` (their gcd, with the sign of the leading
+    /// one), which leaves them primitive with a positive lead; `None` when they are as they
+    /// came, and still to be normalised.
+    pub(crate) divisor: Option<Integer>,
+}
+
+/// The bits of the `i128` sums: a term product whose real products each take at most `b`
+/// bits has components below `2^(b + 1)` (a Gaussian component adds two), so that `n` of them
+/// sum below `2^(b + 1 + ⌈log₂ n⌉)`, which must stay below `2^127`.
+const SUM_BITS: u32 = 126;
+
+/// The most bits of a component of any of the coefficients, if every one fits a word.
+pub(crate) fn small_bits<I: IntegerRing>(coeffs: &[I]) -> Option<u32> {
+    let mut bits = 0;
+    for c in coeffs {
+        bits = bits.max(I::small_bits(&c.to_small()?));
+    }
+    Some(bits)
+}
+
+/// Term products with word-sized coefficients, each kept exactly in the ring's wide form (no
+/// allocation, clone or drop per coefficient) and added at once to the running sum of its
+/// monomial, which an open-addressing table finds: only the distinct monomials are sorted at
+/// the end, and only those whose sums did not cancel (none, for an identity's residual).
+pub(super) struct WordGather<K, I: IntegerRing> {
+    /// The distinct monomials in the order they came, with their sums.
+    items: Vec<(K, I::Wide)>,
+    /// Linear probing over `items`: a slot holds an index into `items` plus one, or 0 when
+    /// empty; a power of two, more than twice the items.
+    slots: Vec<u32>,
+    /// `64 − log₂(slots)`: a hash's top bits pick the slot.
+    shift: u32,
+    /// The bits left for the multiplier `k` of a product `a·b·k`: [`SUM_BITS`] less the
+    /// bits of the most term products one monomial can gather and the most bits of `a` and
+    /// `b` together (from [`small_bits`]).
+    k_budget: u32,
+}
+
+impl<K: Key, I: IntegerRing> WordGather<K, I> {
+    /// Room for at most `n` term products, whose coefficients fit words and take at most
+    /// `ab_bits` bits together, and of which at most `per_monomial` share a monomial; `None`
+    /// when no multiplier would leave room in the sums.
+    pub(super) fn new(n: usize, ab_bits: u32, per_monomial: usize) -> Option<Self> {
+        let fan_in_bits = usize::BITS - per_monomial.max(1).saturating_sub(1).leading_zeros();
+        let k_budget = SUM_BITS.checked_sub(fan_in_bits + ab_bits)?;
+        let slots = (2 * n + 1).next_power_of_two().max(8);
+        Some(WordGather {
+            items: Vec::with_capacity(n),
+            slots: vec![0; slots],
+            shift: 64 - slots.trailing_zeros(),
+            k_budget,
+        })
+    }
+
+    /// Adds the term `a·b·k·iᵗ·m` (`k ≠ 0`, `t` = `turns`), or returns `false` and adds nothing
+    /// when `k` takes more bits than the sums leave it, or `t > 0` in a ring without `i`.
+    #[inline(always)]
+    pub(super) fn push(&mut self, m: K, a: &I, b: &I, k: i64, turns: u32) -> bool {
+        let k_bits = 64 - k.unsigned_abs().leading_zeros();
+        if k_bits > self.k_budget {
+            return false;
+        }
+        let (Some(a), Some(b)) = (a.to_small(), b.to_small()) else {
+            return false;
+        };
+        let mut w = I::Wide::default();
+        // The multiplier goes into a word-sized factor when it fits, else into the product.
+        match (k, I::small_checked_scale(&a, k)) {
+            (1, _) => I::wide_add_mul(&mut w, &a, &b),
+            (_, Some(ak)) => I::wide_add_mul(&mut w, &ak, &b),
+            (_, None) => {
+                I::wide_add_mul(&mut w, &a, &b);
+                w = I::wide_scale(&w, k);
+            }
+        }
+        for _ in 0..turns {
+            match I::wide_mul_i(&w) {
+                Some(iw) => w = iw,
+                None => return false,
+            }
+        }
+        self.add(m, w);
+        true
+    }
+
+    /// [`WordGather::push`] of the image of the term under `map`, when given; `false` when
+    /// the image's factor passes a word.
+    #[inline(always)]
+    #[allow(clippy::too_many_arguments)]
+    pub(super) fn push_mapped(
+        &mut self,
+        layout: &Layout,
+        map: Option<&MonomialMap>,
+        m: K,
+        a: &I,
+        b: &I,
+        k: i64,
+        turns: u32,
+    ) -> bool {
+        match map {
+            None => self.push(m, a, b, k, turns),
+            Some(map) => match map.apply(layout, m, k) {
+                Some((m, k)) => self.push(m, a, b, k, turns),
+                None => false,
+            },
+        }
+    }
+
+    /// `sum(m) += w`.
+    #[inline(always)]
+    pub(super) fn add(&mut self, m: K, w: I::Wide) {
+        debug_assert!(
+            2 * self.items.len() < self.slots.len(),
+            "more items than promised"
+        );
+        let mask = self.slots.len() - 1;
+        let mut slot = (m.hash() >> self.shift) as usize;
+        loop {
+            match self.slots[slot] {
+                0 => {
+                    self.items.push((m, w));
+                    self.slots[slot] = self.items.len() as u32;
+                    return;
+                }
+                k => {
+                    let item = &mut self.items[k as usize - 1];
+                    if item.0 == m {
+                        I::wide_add(&mut item.1, &w);
+                        return;
+                    }
+                }
+            }
+            slot = (slot + 1) & mask;
+        }
+    }
+
+    /// The terms sorted descending, zero sums dropped, divided by the gcd of the sums and the
+    /// sign of the leading one (on machine words, while they are converted), so that they are
+    /// primitive.
+    pub(super) fn finish(mut self) -> Gathered<I> {
+        let zero = I::Wide::default();
+        let items = &mut self.items;
+        items.retain(|(_, sum)| *sum != zero);
+        items.sort_unstable_by_key(|&(m, _)| std::cmp::Reverse(m));
+        let mut g = 0u128;
+        for (_, sum) in items.iter() {
+            g = I::wide_gcd(g, sum);
+            if g == 1 {
+                break;
+            }
+        }
+        // Every sum is below 2^127 in size, and so is their gcd.
+        let mut divisor = (g as i128).max(1);
+        if items
+            .first()
+            .is_some_and(|(_, sum)| I::wide_leading_sign(sum) < 0)
+        {
+            divisor = -divisor;
+        }
+        let mut exps = Vec::with_capacity(items.len() * K::WORDS);
+        let mut coeffs = Vec::with_capacity(items.len());
+        for &(m, sum) in items.iter() {
+            m.store(&mut exps, K::WORDS);
+            coeffs.push(I::from_wide(match divisor {
+                1 => sum,
+                -1 => I::wide_scale(&sum, -1),
+                d => I::wide_div_exact(&sum, d),
+            }));
+        }
+        Gathered {
+            exps,
+            coeffs,
+            divisor: Some(Integer::from_i128(divisor)),
+        }
+    }
+}
+
+/// Term products as ring elements, unsorted, with their monomials.
+pub(super) struct Gather<K, I> {
+    items: Vec<(K, I)>,
+}
+
+impl<K: Key, I: IntegerRing> Gather<K, I> {
+    pub(super) fn with_capacity(n: usize) -> Self {
+        Gather {
+            items: Vec::with_capacity(n),
+        }
+    }
+
+    /// Adds the term `a·b·k·m` (`k` is 1 or 2); always `true`.
+    pub(super) fn push(&mut self, m: K, a: &I, b: &I, k: i64) -> bool {
+        debug_assert!(k == 1 || k == 2);
+        let p = a.mul(b);
+        self.items.push((m, if k == 2 { p.add(&p) } else { p }));
+        true
+    }
+
+    /// The terms sorted descending, equal monomials summed, zero sums dropped.
+    pub(super) fn finish(mut self) -> Gathered<I> {
+        self.items
+            .sort_unstable_by_key(|&(m, _)| std::cmp::Reverse(m));
+        let mut exps = Vec::with_capacity(self.items.len() * K::WORDS);
+        let mut coeffs = Vec::with_capacity(self.items.len());
+        let mut items = self.items.into_iter().peekable();
+        while let Some((m, mut c)) = items.next() {
+            while let Some((_, d)) = items.next_if(|(n, _)| *n == m) {
+                c = c.add(&d);
+            }
+            if !c.is_zero() {
+                m.store(&mut exps, K::WORDS);
+                coeffs.push(c);
+            }
+        }
+        Gathered {
+            exps,
+            coeffs,
+            divisor: None,
+        }
+    }
+}
