@@ -187,18 +187,15 @@ impl<C: Coefficient> Poly<C> {
             if value.len() != 1 || highest - lowest >= MAX_MAPPED_EXPONENTS {
                 return None;
             }
-            let Some(n) = value.coeffs[0].to_real_i64() else {
-                return None;
-            };
+            let n = value.coeffs[0].to_real_i64()?;
             let unit = n == 1 || n == -1;
             if lowest < 0 && !unit {
                 return None;
             }
             let q = &value.content;
-            let powers: Option<Vec<Rational>> = (lowest..=highest).map(|e| q.pow(e)).collect();
-            let Some(powers) = powers else {
-                return None;
-            };
+            let powers: Vec<Rational> = (lowest..=highest)
+                .map(|e| q.pow(e))
+                .collect::<Option<_>>()?;
             let dv = Rational::content_of(powers.iter());
             // e·(m_v − v), word by word (wrapping: exact, since the fields stay in range).
             let mut step: Monomial = [0; gather::WORDS];
@@ -209,23 +206,16 @@ impl<C: Coefficient> Poly<C> {
             }
             let mut table = Vec::with_capacity(powers.len());
             for (e, qe) in (lowest..).zip(&powers) {
-                let Some(scale) = (qe / &dv).numer().to_i64() else {
-                    return None;
-                };
+                let scale = (qe / &dv).numer().to_i64()?;
                 // n^e; for e < 0 only n = ±1 gets here, and (±1)^e = (±1)^{|e|}.
                 let ne = if n == -1 && e % 2 != 0 {
                     -1
                 } else if unit {
                     1
                 } else {
-                    match n.checked_pow(e as u32) {
-                        Some(p) => p,
-                        None => return None,
-                    }
+                    n.checked_pow(e as u32)?
                 };
-                let Some(factor) = scale.checked_mul(ne) else {
-                    return None;
-                };
+                let factor = scale.checked_mul(ne)?;
                 let by = step.map(|s| s.wrapping_mul(e as u64));
                 table.push((by, factor));
             }
