@@ -62,6 +62,9 @@ pub trait IntegerRing:
     fn to_small(&self) -> Option<Self::Small>;
     /// Bits of the largest component of a small value.
     fn small_bits(s: &Self::Small) -> u32;
+    /// The sum of the absolute values of the components of a small value (at least its
+    /// absolute value, and submultiplicative).
+    fn small_norm1(s: &Self::Small) -> u128;
     /// `acc += a · b` in wide arithmetic; the caller guarantees no overflow.
     fn wide_add_mul(acc: &mut Self::Wide, a: &Self::Small, b: &Self::Small);
     /// `a · k` in machine words, if every component fits.
@@ -111,6 +114,9 @@ impl IntegerRing for Integer {
     }
     fn small_bits(s: &i64) -> u32 {
         64 - s.unsigned_abs().leading_zeros()
+    }
+    fn small_norm1(s: &i64) -> u128 {
+        s.unsigned_abs() as u128
     }
     #[inline(always)]
     fn wide_add_mul(acc: &mut i128, a: &i64, b: &i64) {
@@ -221,6 +227,10 @@ impl IntegerRing for GaussianInteger {
     }
     fn small_bits(s: &(i64, i64)) -> u32 {
         64 - (s.0.unsigned_abs() | s.1.unsigned_abs()).leading_zeros()
+    }
+    // |re(zw)| + |im(zw)| ≤ (|re z| + |im z|)(|re w| + |im w|)
+    fn small_norm1(s: &(i64, i64)) -> u128 {
+        s.0.unsigned_abs() as u128 + s.1.unsigned_abs() as u128
     }
     #[inline(always)]
     fn small_checked_scale(a: &(i64, i64), k: i64) -> Option<(i64, i64)> {

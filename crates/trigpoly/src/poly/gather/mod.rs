@@ -399,9 +399,10 @@ fn occurring<K: Key>(exps: &[u64], bias: &K) -> K {
 
 /// `(Σ c_i·m_i)^e` by the multinomial theorem, one term product per composition
 /// `e = a_1 + … + a_t`: `e!/(a_1!…a_t!) · Π c_i^{a_i} · Π m_i^{a_i}`, every one in machine
-/// words and added in one table. `None` when that could pass a word: the terms' coefficients
-/// bound every coefficient of the power and every partial product of the walk by
-/// `(Σ |c_i|)^e`, which must stay below `2^62`. The caller has checked the exponents.
+/// words and added in one table. `None` when that could pass a word: every coefficient of the
+/// power, every sum of them and every partial product of the walk is at most `(Σ |c_i|)^e`
+/// (the multinomial theorem on absolute values, each `|c_i| ≥ 1`), which must stay below
+/// `2^62`. The caller has checked the exponents.
 pub(crate) fn multinomial_power<I: IntegerRing>(
     layout: &Layout,
     a: (&[u64], &[I]),
@@ -427,8 +428,8 @@ fn multinomial_power_of_width<K: Key, I: IntegerRing>(
 ) -> Option<Gathered<I>> {
     let t = a.1.len();
     let smalls: Vec<I::Small> = a.1.iter().map(I::to_small).collect::<Option<_>>()?;
-    // Σ |c_i| ≤ Σ 2^(bits + 1) (a Gaussian component counts both parts).
-    let sum: u128 = smalls.iter().map(|c| 1u128 << (I::small_bits(c) + 1)).sum();
+    // Σ |c_i| (a Gaussian coefficient counts both parts).
+    let sum: u128 = smalls.iter().map(I::small_norm1).sum();
     let bound = sum.checked_pow(u32::try_from(e).ok()?)?;
     if bound >= 1 << 62 {
         return None;
