@@ -12,6 +12,7 @@ use superint::workloads::Workload;
 static ALLOCATOR: superint::allocator::Allocator = superint::allocator::Allocator;
 
 fn main() {
+    superint::allocator::configure();
     divan::main();
 }
 

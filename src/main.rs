@@ -14,6 +14,7 @@ use std::process::ExitCode;
 static ALLOCATOR: superint::allocator::Allocator = superint::allocator::Allocator;
 
 fn main() -> ExitCode {
+    superint::allocator::configure();
     match cli::run(std::env::args_os()) {
         Ok(code) => code,
         Err(e) => {

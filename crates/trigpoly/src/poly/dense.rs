@@ -225,9 +225,13 @@ impl<S: Copy + Send + Sync> Factors<S> {
     }
 
     /// [`Factors::range`] with the terms built on a second thread: this one adds into the
-    /// accumulators and reads them back, the other decodes the indices and writes the product,
-    /// whose pages are backed as it writes them (page faults cost as much as the additions on
-    /// a large sparse product).
+    /// accumulators and reads them back, the other turns the sums into coefficients (a box
+    /// for each past a word), decodes the indices and writes the product, whose pages are
+    /// backed as it writes them (page faults cost as much as the additions on a large sparse
+    /// product). The boxes are freed later by another thread: the binary sets mimalloc to
+    /// reclaim the pages of the ended building thread on a free, so that those frees are
+    /// local (`superint::allocator::configure`); without that, converting on this thread is
+    /// as fast.
     fn pipelined<I: IntegerRing<Small = S>>(
         &self,
         acc: &mut [I::Wide],
@@ -237,14 +241,14 @@ impl<S: Copy + Send + Sync> Factors<S> {
     ) -> Result<Product<I>, AlgebraError> {
         let next = self.first_partners(hi);
         let bound = self.bound(&next, (lo, hi), max_terms);
-        let (full, batches) = mpsc::sync_channel::<Vec<(u64, I)>>(BATCHES_IN_FLIGHT);
-        let (emptied, empties) = mpsc::channel::<Vec<(u64, I)>>();
+        let (full, batches) = mpsc::sync_channel::<Vec<(u64, I::Wide)>>(BATCHES_IN_FLIGHT);
+        let (emptied, empties) = mpsc::channel::<Vec<(u64, I::Wide)>>();
         std::thread::scope(|scope| {
             let spawned = std::thread::Builder::new().spawn_scoped(scope, move || {
                 let mut builder = Builder::<I>::new(decoder, bound);
                 for mut batch in batches {
-                    for (k, c) in batch.drain(..) {
-                        builder.append(k, c);
+                    for (k, w) in batch.drain(..) {
+                        builder.append(k, I::from_wide(w));
                     }
                     // The accumulating side may have finished; then the batch is dropped.
                     let _ = emptied.send(batch);
@@ -444,16 +448,16 @@ impl<I: IntegerRing> Sink<I> for Builder<'_, I> {
     }
 }
 
-/// The accumulating side of a pipelined product: terms in batches, sent to the building
-/// thread, whose emptied batches come back for reuse.
-struct Sender<I> {
-    batch: Vec<(u64, I)>,
+/// The accumulating side of a pipelined product: sums with their indices in batches, sent to
+/// the building thread, whose emptied batches come back for reuse.
+struct Sender<I: IntegerRing> {
+    batch: Vec<(u64, I::Wide)>,
     sent: usize,
-    full: mpsc::SyncSender<Vec<(u64, I)>>,
-    empties: mpsc::Receiver<Vec<(u64, I)>>,
+    full: mpsc::SyncSender<Vec<(u64, I::Wide)>>,
+    empties: mpsc::Receiver<Vec<(u64, I::Wide)>>,
 }
 
-impl<I> Sender<I> {
+impl<I: IntegerRing> Sender<I> {
     /// Sends the batch, and takes an emptied one (or a new one) in its place.
     fn flush(&mut self) {
         let next = self
@@ -470,7 +474,7 @@ impl<I> Sender<I> {
 impl<I: IntegerRing> Sink<I> for Sender<I> {
     #[inline(always)]
     fn push(&mut self, k: u64, w: I::Wide) {
-        self.batch.push((k, I::from_wide(w)));
+        self.batch.push((k, w));
         if self.batch.len() == BATCH {
             self.flush();
         }
