@@ -6,10 +6,8 @@
 //! strings in the paper's unicode notation (`{L, G1} = −G2`); a renderer turns both into its
 //! own notation. Timings are the only nondeterministic data and are kept apart (`seconds`).
 
-use std::sync::Arc;
-
 use brackets::{BracketTable, RankCertificate};
-use trigpoly::{Expr, Var, VarSet};
+use trigpoly::{Expr, Var, Vars};
 
 /// A whole report: a title, sections, and what its closing line summarises.
 #[derive(Clone, Debug)]
@@ -276,7 +274,7 @@ pub struct RankResult {
     /// The functions' names, in the paper's notation.
     pub functions: Vec<String>,
     /// The variables of the system (for printing the point and the coordinates).
-    pub vars: Arc<VarSet>,
+    pub vars: Vars,
     /// The phase-space coordinates, in the Jacobian's column order.
     pub coordinates: Vec<Var>,
     /// The rank the paper states.

@@ -19,7 +19,7 @@ use std::str::FromStr;
 
 use brackets::{systems, EngineError, System};
 use rayon::prelude::*;
-use trigpoly::{Expr, Poly, Rational, VarSet};
+use trigpoly::{Expr, Poly, Rational, VarSet, Vars};
 
 /// One workload with its size.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -179,7 +179,7 @@ impl Workload {
     }
 }
 
-fn product_vars() -> std::sync::Arc<VarSet> {
+fn product_vars() -> Vars {
     VarSet::builder()
         .coordinate("x")
         .coordinate("y")
@@ -190,7 +190,7 @@ fn product_vars() -> std::sync::Arc<VarSet> {
         .expect("valid names")
 }
 
-fn parse(vars: &std::sync::Arc<VarSet>, src: &str) -> Result<Poly<Rational>, WorkloadError> {
+fn parse(vars: &Vars, src: &str) -> Result<Poly<Rational>, WorkloadError> {
     Poly::parse(vars, src).map_err(|e| WorkloadError::Engine(EngineError::parse(src, e)))
 }
 

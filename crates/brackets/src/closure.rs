@@ -25,10 +25,9 @@
 //! ```
 
 use std::collections::HashMap;
-use std::sync::Arc;
 use std::time::Instant;
 
-use trigpoly::{Expr, GaussianRational, Rational, Style, Var, VarKind, VarSet};
+use trigpoly::{Expr, GaussianRational, Rational, Style, Var, VarKind, VarSet, Vars};
 
 use crate::claim::Condition;
 use crate::error::EngineError;
@@ -123,7 +122,7 @@ pub struct Closure {
     /// Their display names.
     pub display: Vec<String>,
     /// The ring the polynomials live in: the parameters and one symbol per generator.
-    pub ring: Arc<VarSet>,
+    pub ring: Vars,
     /// The generators' symbols in [`Closure::ring`].
     pub symbols: Vec<Var>,
     /// The degree bound.
@@ -672,8 +671,8 @@ type LiftedTerm = (GaussianRational, Vec<(Var, i64)>, usize);
 
 /// What lifting and printing need.
 struct LiftContext<'a> {
-    vars: Arc<VarSet>,
-    ring: Arc<VarSet>,
+    vars: Vars,
+    ring: Vars,
     symbols: Vec<Var>,
     param_in_ring: HashMap<Var, Var>,
     monos: &'a [Vec<u32>],

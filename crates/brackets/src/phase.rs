@@ -1,9 +1,7 @@
 //! Phase spaces: canonical pairs `(q, p)`, planar or angular, and the Poisson bracket
 //! `{f, g} = Σ_i (∂f/∂q_i ∂g/∂p_i − ∂f/∂p_i ∂g/∂q_i)`, so `{q, p} = 1` and `{f, H} = df/dt`.
 
-use std::sync::Arc;
-
-use trigpoly::{Expr, Var, VarKind, VarSet};
+use trigpoly::{Expr, Var, VarKind, Vars};
 
 use crate::error::EngineError;
 
@@ -30,7 +28,7 @@ pub struct CanonicalPair {
 /// ```
 #[derive(Clone, Debug)]
 pub struct PhaseSpace {
-    vars: Arc<VarSet>,
+    vars: Vars,
     pairs: Vec<CanonicalPair>,
     /// The pairs as `(q, p)` variables, the form the kernels take.
     var_pairs: Vec<(Var, Var)>,
@@ -39,7 +37,7 @@ pub struct PhaseSpace {
 impl PhaseSpace {
     /// A phase space from pairs of names `(q, p)`. A `q` declared as an angle makes an angular
     /// pair; `p` must be a momentum.
-    pub fn new(vars: &Arc<VarSet>, pairs: &[(&str, &str)]) -> Result<Self, EngineError> {
+    pub fn new(vars: &Vars, pairs: &[(&str, &str)]) -> Result<Self, EngineError> {
         let find = |n: &str| {
             vars.lookup(n).ok_or_else(|| {
                 EngineError::Invalid(format!("unknown variable '{n}' in a canonical pair"))
@@ -75,7 +73,7 @@ impl PhaseSpace {
     }
 
     /// The variables.
-    pub fn vars(&self) -> &Arc<VarSet> {
+    pub fn vars(&self) -> &Vars {
         &self.vars
     }
 

@@ -139,7 +139,7 @@ pub fn symbolic_det(
         depth: usize,
         used: u64,
         memo: &mut HashMap<(usize, u64), Expr>,
-        vars: &std::sync::Arc<trigpoly::VarSet>,
+        vars: &trigpoly::Vars,
     ) -> Result<Expr, EngineError> {
         if depth == rows.len() {
             return Ok(Expr::one(vars));

@@ -9,9 +9,7 @@
 //! homogeneous: [`Lifter::lift`] puts the parameters back. The lift is then proved by the
 //! engine, never assumed.
 
-use std::sync::Arc;
-
-use trigpoly::{Expr, GaussianRational, Rational, Var, VarKind, VarSet};
+use trigpoly::{Expr, GaussianRational, Rational, Var, VarKind, Vars};
 
 use crate::claim::Condition;
 use crate::error::EngineError;
@@ -22,7 +20,7 @@ use crate::phase::PhaseSpace;
 /// A basis of the weights under which a computation is homogeneous.
 #[derive(Clone, Debug)]
 pub struct Scaling {
-    vars: Arc<VarSet>,
+    vars: Vars,
     /// Each weight vector has one entry per variable.
     basis: Vec<Vec<Rational>>,
 }
@@ -220,7 +218,7 @@ impl Scaling {
 /// Puts parameters back into results found at fixed values, by homogeneity.
 #[derive(Clone, Debug)]
 pub struct Lifter {
-    vars: Arc<VarSet>,
+    vars: Vars,
     fixed: Vec<(Var, Rational)>,
     matrix: Matrix,
 }

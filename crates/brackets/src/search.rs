@@ -38,11 +38,10 @@
 //! ```
 
 use std::collections::HashMap;
-use std::sync::Arc;
 use std::time::Instant;
 
 use itertools::Itertools;
-use trigpoly::{Expr, GaussianRational, Rational, Var, VarKind, VarSet};
+use trigpoly::{Expr, GaussianRational, Rational, Var, VarKind, Vars};
 
 use crate::claim::Condition;
 use crate::error::EngineError;
@@ -235,7 +234,7 @@ pub struct SearchResult {
     /// every parameter).
     pub liftable: bool,
     /// The variables (for printing the parameters).
-    pub vars: Arc<VarSet>,
+    pub vars: Vars,
     /// Number of unknowns (real basis functions).
     pub unknowns: usize,
     /// Number of (nonzero) linear equations.
@@ -306,7 +305,7 @@ struct Unknown {
 
 /// The search problem, with the parameters that are not kept symbolic at fixed values.
 struct Problem {
-    vars: Arc<VarSet>,
+    vars: Vars,
     angles: Vec<Var>,
     unknowns: Vec<Unknown>,
     /// Unknown by (phase, k, trig).

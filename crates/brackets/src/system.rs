@@ -1,9 +1,7 @@
 //! `System`: a phase space, a Hamiltonian and named functions, with a parser that knows the
 //! names and the bracket `{f, g}`.
 
-use std::sync::Arc;
-
-use trigpoly::{Context, Expr, GaussianRational, Var, VarSet};
+use trigpoly::{Context, Expr, GaussianRational, Var, Vars};
 
 use crate::claim::Condition;
 use crate::error::EngineError;
@@ -61,7 +59,7 @@ impl System {
     }
 
     /// The variables.
-    pub fn vars(&self) -> &Arc<VarSet> {
+    pub fn vars(&self) -> &Vars {
         self.space.vars()
     }
 

@@ -2,16 +2,14 @@
 //! rod `I = ML²/12`), the rotor under gravity, the anisotropic rotor; with their named functions
 //! and the resonant families `K_{m,n} = Z^m e^{−inθ}`.
 
-use std::sync::Arc;
-
-use trigpoly::{Expr, VarSet};
+use trigpoly::{Expr, VarSet, Vars};
 
 use crate::error::EngineError;
 use crate::phase::PhaseSpace;
 use crate::system::System;
 
 /// The variables of a rotor in the plane: `x, y, θ, p_x, p_y, p_θ` and the given parameters.
-pub fn rotor_vars(parameters: &[&str]) -> Arc<VarSet> {
+pub fn rotor_vars(parameters: &[&str]) -> Vars {
     let mut b = VarSet::builder()
         .coordinate("x")
         .coordinate("y")

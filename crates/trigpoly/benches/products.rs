@@ -1,10 +1,8 @@
 //! The Fateman benchmark: `f = (1 + x + y + z + t)^n`, the product `f·(f + 1)` over Q.
 //! For n = 20 the product has C(44, 4) = 135751 terms; n = 10 (10626 terms) runs quickly.
 
-use std::sync::Arc;
-
 use divan::{black_box, Bencher};
-use trigpoly::{Poly, Rational, VarSet};
+use trigpoly::{Poly, Rational, VarSet, Vars};
 
 fn main() {
     divan::main();
@@ -14,7 +12,7 @@ type Q = Poly<Rational>;
 
 /// `f` and `f + 1`, with the term count of their product checked once, outside the timing.
 fn fateman(n: u64) -> (Q, Q) {
-    let vars: Arc<VarSet> = VarSet::builder()
+    let vars: Vars = VarSet::builder()
         .coordinate("x")
         .coordinate("y")
         .coordinate("z")

@@ -59,7 +59,9 @@ pub use number::{
 pub use poly::{CosSinTerm, Point, Poly, Term, TrigMonomial};
 pub use print::{superscript, Style};
 pub use syntax::{ParseError, Span};
-pub use varset::{Limits, Var, VarKind, VarSet, VarSetBuilder, Variable, FIELD_BITS, RESERVED};
+pub use varset::{
+    Limits, Var, VarKind, VarSet, VarSetBuilder, Variable, Vars, FIELD_BITS, RESERVED,
+};
 
 /// Polynomials over Q(i): the type of phase-space functions (angles need `i`).
 pub type Expr = Poly<GaussianRational>;

@@ -1,13 +1,11 @@
 //! Lowering: from a parsed expression (`syntax::Expr`) to a polynomial, checking what the
 //! grammar cannot: names, integer exponents, exact divisions, angles inside `cos`, `sin`, `exp`.
 
-use std::sync::Arc;
-
 use crate::error::AlgebraError;
 use crate::number::{Coefficient, GaussianRational, Integer, Rational};
 use crate::poly::Poly;
 use crate::syntax::{parse_expr, Expr, ExprKind, ParseError, Span};
-use crate::varset::{Var, VarKind, VarSet};
+use crate::varset::{Var, VarKind, Vars};
 
 /// What names and brackets mean beyond the variables: named functions defined elsewhere (a
 /// system file's `H`, `L`) and the Poisson bracket `{f, g}` of a phase space.
@@ -45,32 +43,24 @@ impl<C: Coefficient> Poly<C> {
     /// let err = Poly::<Rational>::parse(&vars, "x/(1+x)").unwrap_err();
     /// assert_eq!(err.line_col("x/(1+x)"), (1, 3));
     /// ```
-    pub fn parse(vars: &Arc<VarSet>, src: &str) -> Result<Self, ParseError> {
+    pub fn parse(vars: &Vars, src: &str) -> Result<Self, ParseError> {
         Self::parse_with(vars, src, &NoContext)
     }
 
     /// Parses with named functions and brackets supplied by `ctx`.
-    pub fn parse_with(
-        vars: &Arc<VarSet>,
-        src: &str,
-        ctx: &dyn Context<C>,
-    ) -> Result<Self, ParseError> {
+    pub fn parse_with(vars: &Vars, src: &str, ctx: &dyn Context<C>) -> Result<Self, ParseError> {
         let expr = parse_expr(src)?;
         Lower { vars, ctx }.lower(&expr)
     }
 
     /// Lowers an already parsed expression.
-    pub fn from_expr(
-        vars: &Arc<VarSet>,
-        expr: &Expr,
-        ctx: &dyn Context<C>,
-    ) -> Result<Self, ParseError> {
+    pub fn from_expr(vars: &Vars, expr: &Expr, ctx: &dyn Context<C>) -> Result<Self, ParseError> {
         Lower { vars, ctx }.lower(expr)
     }
 }
 
 struct Lower<'a, C: Coefficient> {
-    vars: &'a Arc<VarSet>,
+    vars: &'a Vars,
     ctx: &'a dyn Context<C>,
 }
 

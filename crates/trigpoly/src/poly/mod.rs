@@ -22,11 +22,10 @@ mod trig;
 use std::fmt;
 use std::hash::{Hash, Hasher};
 use std::sync::atomic::{AtomicU8, Ordering};
-use std::sync::Arc;
 
 use crate::error::AlgebraError;
 use crate::number::{Coefficient, ExactDivisor, GaussianRational, Integer, IntegerRing, Rational};
-use crate::varset::{Layout, Var, VarKind, VarSet};
+use crate::varset::{Layout, Var, VarKind, VarSet, Vars};
 
 pub use subst::Point;
 pub use trig::{CosSinTerm, TrigMonomial};
@@ -50,7 +49,7 @@ pub use trig::{CosSinTerm, TrigMonomial};
 /// ```
 #[derive(Clone)]
 pub struct Poly<C: Coefficient> {
-    vars: Arc<VarSet>,
+    vars: Vars,
     content: Rational,
     exps: Vec<u64>,
     coeffs: Vec<C::Int>,
@@ -92,17 +91,17 @@ impl Clone for Cached {
 
 impl<C: Coefficient> Poly<C> {
     /// The zero polynomial.
-    pub fn zero(vars: &Arc<VarSet>) -> Self {
+    pub fn zero(vars: &Vars) -> Self {
         Self::assemble(vars, Rational::zero(), Vec::new(), Vec::new())
     }
 
     /// The constant 1.
-    pub fn one(vars: &Arc<VarSet>) -> Self {
+    pub fn one(vars: &Vars) -> Self {
         Self::constant(vars, C::one())
     }
 
     /// A constant.
-    pub fn constant(vars: &Arc<VarSet>, c: C) -> Self {
+    pub fn constant(vars: &Vars, c: C) -> Self {
         let (content, n) = c.split();
         if content.is_zero() {
             return Self::zero(vars);
@@ -111,12 +110,12 @@ impl<C: Coefficient> Poly<C> {
     }
 
     /// The variable `v` (for an angle, `e^{iθ}`).
-    pub fn var(vars: &Arc<VarSet>, v: Var) -> Self {
+    pub fn var(vars: &Vars, v: Var) -> Self {
         Self::monomial(vars, C::one(), &[(v, 1)]).expect("exponent 1 is within every limit")
     }
 
     /// `c · Π v^e`, for any integer exponents within the limit.
-    pub fn monomial(vars: &Arc<VarSet>, c: C, powers: &[(Var, i64)]) -> Result<Self, AlgebraError> {
+    pub fn monomial(vars: &Vars, c: C, powers: &[(Var, i64)]) -> Result<Self, AlgebraError> {
         let exps = sum_powers(vars, powers)?;
         if !C::HAS_I {
             if let Some(v) = vars.angles().find(|v| exps[v.index()] != 0) {
@@ -141,7 +140,7 @@ impl<C: Coefficient> Poly<C> {
     /// Builds a polynomial from terms `(coefficient, exponent vector)` in any order; equal
     /// monomials are combined.
     pub fn from_terms(
-        vars: &Arc<VarSet>,
+        vars: &Vars,
         terms: impl IntoIterator<Item = (C, Vec<i64>)>,
     ) -> Result<Self, AlgebraError> {
         // Pack every term, sort once, combine equal monomials, then bring the coefficients to
@@ -187,7 +186,7 @@ impl<C: Coefficient> Poly<C> {
     }
 
     /// The variable set.
-    pub fn vars(&self) -> &Arc<VarSet> {
+    pub fn vars(&self) -> &Vars {
         &self.vars
     }
 
@@ -333,7 +332,7 @@ impl<C: Coefficient> Poly<C> {
     }
 
     pub(crate) fn same_vars(&self, other: &Self) -> Result<(), AlgebraError> {
-        if Arc::ptr_eq(&self.vars, &other.vars) || self.vars == other.vars {
+        if Vars::ptr_eq(&self.vars, &other.vars) || self.vars == other.vars {
             Ok(())
         } else {
             Err(AlgebraError::VarSetMismatch)
@@ -435,7 +434,7 @@ impl<C: Coefficient> Poly<C> {
     /// Builds from sorted, distinct, nonzero terms and restores the invariant (primitive part,
     /// sign): the one place where the canonical form is enforced.
     pub(crate) fn from_sorted(
-        vars: &Arc<VarSet>,
+        vars: &Vars,
         content: Rational,
         exps: Vec<u64>,
         mut coeffs: Vec<C::Int>,
@@ -468,7 +467,7 @@ impl<C: Coefficient> Poly<C> {
     /// `content ·` the terms a kernel gathered, brought to the canonical form unless the
     /// kernel did that already.
     pub(crate) fn from_gathered(
-        vars: &Arc<VarSet>,
+        vars: &Vars,
         content: Rational,
         terms: gather::Gathered<C::Int>,
     ) -> Self {
@@ -490,7 +489,7 @@ impl<C: Coefficient> Poly<C> {
     /// that keeps every component's size, such as conjugation or the factor `i`): only the
     /// sign is restored, with no gcd to take.
     pub(crate) fn from_sorted_coprime(
-        vars: &Arc<VarSet>,
+        vars: &Vars,
         content: Rational,
         exps: Vec<u64>,
         mut coeffs: Vec<C::Int>,
@@ -510,7 +509,7 @@ impl<C: Coefficient> Poly<C> {
     /// Builds from sorted, distinct, nonzero terms that are already primitive with a positive
     /// leading coefficient (a product of such polynomials over Z, by Gauss's lemma).
     pub(crate) fn from_sorted_primitive(
-        vars: &Arc<VarSet>,
+        vars: &Vars,
         content: Rational,
         exps: Vec<u64>,
         coeffs: Vec<C::Int>,
@@ -525,7 +524,7 @@ impl<C: Coefficient> Poly<C> {
 
     /// The polynomial with these parts, as they are: the caller keeps the invariant.
     pub(crate) fn assemble(
-        vars: &Arc<VarSet>,
+        vars: &Vars,
         content: Rational,
         exps: Vec<u64>,
         coeffs: Vec<C::Int>,
@@ -541,14 +540,14 @@ impl<C: Coefficient> Poly<C> {
     }
 
     /// Sorted terms with content 1 and no normalization: an intermediate inside a kernel.
-    pub(crate) fn raw(vars: &Arc<VarSet>, exps: Vec<u64>, coeffs: Vec<C::Int>) -> Self {
+    pub(crate) fn raw(vars: &Vars, exps: Vec<u64>, coeffs: Vec<C::Int>) -> Self {
         Self::assemble(vars, Rational::one(), exps, coeffs)
     }
 
     /// Builds from distinct nonzero terms in any order (a bijective relabelling of monomials,
     /// such as conjugation): sorts a permutation, no combining needed.
     pub(crate) fn from_distinct_unsorted(
-        vars: &Arc<VarSet>,
+        vars: &Vars,
         content: Rational,
         exps: Vec<u64>,
         coeffs: Vec<C::Int>,
@@ -567,7 +566,7 @@ impl<C: Coefficient> Poly<C> {
     }
 
     pub(crate) fn drop_zeros_and_normalize(
-        vars: &Arc<VarSet>,
+        vars: &Vars,
         content: Rational,
         exps: Vec<u64>,
         coeffs: Vec<C::Int>,
@@ -654,7 +653,7 @@ impl<C: Coefficient> PartialEq for Poly<C> {
         self.content == other.content
             && self.exps == other.exps
             && self.coeffs == other.coeffs
-            && (Arc::ptr_eq(&self.vars, &other.vars) || self.vars == other.vars)
+            && (Vars::ptr_eq(&self.vars, &other.vars) || self.vars == other.vars)
     }
 }
 

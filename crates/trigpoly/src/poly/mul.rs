@@ -204,7 +204,7 @@ impl<C: Coefficient> Poly<C> {
 
     /// The canonical form of a product of two canonical polynomials.
     fn product(
-        vars: &std::sync::Arc<crate::varset::VarSet>,
+        vars: &crate::varset::Vars,
         content: crate::number::Rational,
         exps: Vec<u64>,
         coeffs: Vec<C::Int>,

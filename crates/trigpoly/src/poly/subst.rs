@@ -2,14 +2,13 @@
 //! rational points, with angles evaluated only at rational points of the unit circle.
 
 use std::collections::HashMap;
-use std::sync::Arc;
 
 use super::Poly;
 use crate::error::AlgebraError;
 use crate::number::{
     Coefficient, GaussianInteger, GaussianRational, Integer, IntegerRing, Rational,
 };
-use crate::varset::{Layout, Var, VarKind, VarSet};
+use crate::varset::{Layout, Var, VarKind, Vars};
 
 /// Packed exponents and coefficients of a group of terms.
 type Terms<C> = (Vec<u64>, Vec<<C as Coefficient>::Int>);
@@ -270,7 +269,7 @@ impl<C: Coefficient> Poly<C> {
     /// 10 000 terms of degree 40. Consecutive terms share the leading exponents, so each term
     /// reuses the product of the factors of its common prefix with the term before.
     pub fn eval(&self, point: &Point) -> Result<GaussianRational, AlgebraError> {
-        if !Arc::ptr_eq(&self.vars, &point.vars) && *self.vars != *point.vars {
+        if !Vars::ptr_eq(&self.vars, &point.vars) && *self.vars != *point.vars {
             return Err(AlgebraError::VarSetMismatch);
         }
         let mut scaled = Vec::new();
@@ -367,13 +366,13 @@ impl<'a> ScaledValue<'a> {
 /// ```
 #[derive(Clone, Debug)]
 pub struct Point {
-    vars: Arc<VarSet>,
+    vars: Vars,
     values: Vec<Option<GaussianRational>>,
 }
 
 impl Point {
     /// A point with no values yet.
-    pub fn new(vars: &Arc<VarSet>) -> Point {
+    pub fn new(vars: &Vars) -> Point {
         Point {
             vars: vars.clone(),
             values: vec![None; vars.len()],

@@ -325,10 +325,7 @@ impl<C: Coefficient> Poly<C> {
     }
 
     /// The sum of the streams: one content, a tree of merges, one normalization.
-    fn sum_streams(
-        vars: &std::sync::Arc<crate::varset::VarSet>,
-        streams: Streams<C>,
-    ) -> Result<Self, AlgebraError> {
+    fn sum_streams(vars: &crate::varset::Vars, streams: Streams<C>) -> Result<Self, AlgebraError> {
         if streams.is_empty() {
             return Ok(Self::zero(vars));
         }

@@ -3,31 +3,30 @@
 //! which is how elements are printed.
 
 use std::collections::{BTreeMap, HashMap};
-use std::sync::Arc;
 
 use super::Poly;
 use crate::error::AlgebraError;
 use crate::number::{
     Coefficient, GaussianInteger, GaussianRational, Integer, IntegerRing, Rational,
 };
-use crate::varset::{Var, VarKind, VarSet};
+use crate::varset::{Var, VarKind, VarSet, Vars};
 
 impl<C: Coefficient> Poly<C> {
     /// `e^{inθ}` for an angle `θ`.
-    pub fn exp_i(vars: &Arc<VarSet>, theta: Var, n: i64) -> Result<Self, AlgebraError> {
+    pub fn exp_i(vars: &Vars, theta: Var, n: i64) -> Result<Self, AlgebraError> {
         check_angle::<C>(vars, theta, "e^{inθ}")?;
         Self::monomial(vars, C::one(), &[(theta, n)])
     }
 
     /// `cos θ = (e^{iθ} + e^{−iθ})/2`.
-    pub fn cos(vars: &Arc<VarSet>, theta: Var) -> Result<Self, AlgebraError> {
+    pub fn cos(vars: &Vars, theta: Var) -> Result<Self, AlgebraError> {
         let half = C::from_rational(Rational::new(1, 2));
         Self::monomial(vars, half.clone(), &[(theta, 1)])?
             .checked_add(&Self::exp_i(vars, theta, -1)?.scale(&half))
     }
 
     /// `sin θ = (e^{iθ} − e^{−iθ})/(2i)`.
-    pub fn sin(vars: &Arc<VarSet>, theta: Var) -> Result<Self, AlgebraError> {
+    pub fn sin(vars: &Vars, theta: Var) -> Result<Self, AlgebraError> {
         let d = Self::exp_i(vars, theta, 1)?.checked_sub(&Self::exp_i(vars, theta, -1)?)?;
         // 1/(2i) = −i/2
         Ok(d.mul_i()? * &Rational::new(-1, 2))

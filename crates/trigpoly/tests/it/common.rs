@@ -1,10 +1,10 @@
 //! Helpers through which the tests reach the API: a shared phase space, a parse function that
 //! shows the caret rendering on failure, and small conversions.
 
-use std::sync::{Arc, OnceLock};
+use std::sync::OnceLock;
 
 use num_bigint::BigInt;
-use trigpoly::{Coefficient, GaussianRational, Integer, Poly, Rational, Var, VarSet};
+use trigpoly::{Coefficient, GaussianRational, Integer, Poly, Rational, Var, VarSet, Vars};
 
 /// Polynomials over Q(i).
 pub type G = Poly<GaussianRational>;
@@ -12,8 +12,8 @@ pub type G = Poly<GaussianRational>;
 pub type Q = Poly<Rational>;
 
 /// The phase space of the property tests: `x, y, p_x, p_y, θ, φ, M, ω` (two angles).
-pub fn phase_space() -> Arc<VarSet> {
-    static VARS: OnceLock<Arc<VarSet>> = OnceLock::new();
+pub fn phase_space() -> Vars {
+    static VARS: OnceLock<Vars> = OnceLock::new();
     VARS.get_or_init(|| {
         VarSet::builder()
             .coordinate("x")
@@ -31,7 +31,7 @@ pub fn phase_space() -> Arc<VarSet> {
 }
 
 /// A variable set of plain coordinates, in the order given.
-pub fn coordinates(names: &[&str]) -> Arc<VarSet> {
+pub fn coordinates(names: &[&str]) -> Vars {
     names
         .iter()
         .fold(VarSet::builder(), |b, name| b.coordinate(name))
@@ -46,7 +46,7 @@ pub fn var(vars: &VarSet, name: &str) -> Var {
 }
 
 /// Parses `src`; on failure panics with the rendered error (line, column, caret).
-pub fn p<C: Coefficient>(vars: &Arc<VarSet>, src: &str) -> Poly<C> {
+pub fn p<C: Coefficient>(vars: &Vars, src: &str) -> Poly<C> {
     Poly::parse(vars, src).unwrap_or_else(|e| panic!("{src:?} does not parse:\n{}", e.render(src)))
 }
 

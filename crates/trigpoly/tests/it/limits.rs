@@ -1,11 +1,11 @@
 //! Limits: runaway expansions and exponents end in an error value, never in an allocation
 //! blow-up, a wrapped exponent or a panic.
 
-use trigpoly::{AlgebraError, Limits, Poly, Rational, VarSet};
+use trigpoly::{AlgebraError, Limits, Poly, Rational, VarSet, Vars};
 
 use crate::common::{coordinates, p, phase_space, var, G, Q};
 
-fn small_vars() -> std::sync::Arc<VarSet> {
+fn small_vars() -> Vars {
     VarSet::builder()
         .coordinate("x")
         .coordinate("y")

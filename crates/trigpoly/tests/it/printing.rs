@@ -1,14 +1,12 @@
 //! Printing like the paper: exact unicode, LaTeX and ASCII strings.
 
-use std::sync::Arc;
-
 use pretty_assertions::assert_eq;
-use trigpoly::{GaussianRational, Poly, Style, VarSet};
+use trigpoly::{GaussianRational, Poly, Style, VarSet, Vars};
 
 use crate::common::{p, phase_space, G, Q};
 
 /// `x, y, p_x, p_y, θ, M, ω, L, L_z`: coordinates declared before momenta.
-fn plane() -> Arc<VarSet> {
+fn plane() -> Vars {
     VarSet::builder()
         .coordinate("x")
         .coordinate("y")
@@ -24,7 +22,7 @@ fn plane() -> Arc<VarSet> {
 }
 
 /// Asserts the three renderings of `src` and that the ASCII one parses back.
-fn prints(vars: &Arc<VarSet>, src: &str, [unicode, latex, ascii]: [&str; 3]) {
+fn prints(vars: &Vars, src: &str, [unicode, latex, ascii]: [&str; 3]) {
     let f: G = p(vars, src);
     assert_eq!(
         [f.to_string(), f.to_latex(), f.to_ascii()],

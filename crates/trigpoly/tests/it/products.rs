@@ -3,10 +3,8 @@
 //! (a sparse box) or all of them scanned (a dense box), over Q and over Q(i), the product is
 //! the same canonical polynomial, and takes the value of `f(p)·g(p)` at an integer point.
 
-use std::sync::Arc;
-
 use trigpoly::{
-    AlgebraError, Coefficient, GaussianRational, Limits, Point, Poly, Rational, VarSet,
+    AlgebraError, Coefficient, GaussianRational, Limits, Point, Poly, Rational, VarSet, Vars,
 };
 
 use crate::common::{coordinates, p, var, G, Q};
@@ -21,7 +19,7 @@ fn product_on<C: Coefficient>(threads: usize, f: &Poly<C>, g: &Poly<C>) -> Poly<
 }
 
 /// The point of `vars` with the given integer values.
-fn point(vars: &Arc<VarSet>, values: &[(&str, i64)]) -> Point {
+fn point(vars: &Vars, values: &[(&str, i64)]) -> Point {
     values.iter().fold(Point::new(vars), |pt, &(name, v)| {
         pt.with(var(vars, name), Rational::from(v))
     })

@@ -181,7 +181,7 @@ fn dense_poly() -> impl Strategy<Value = G> {
 /// exponent box of a product of two (1801^16 cells) is too large for Kronecker indices, so the
 /// heap product runs on the packed monomials.
 fn wide_poly() -> impl Strategy<Value = Q> {
-    static VARS: std::sync::OnceLock<std::sync::Arc<trigpoly::VarSet>> = std::sync::OnceLock::new();
+    static VARS: std::sync::OnceLock<trigpoly::Vars> = std::sync::OnceLock::new();
     let vars = VARS
         .get_or_init(|| {
             (0..16)
