@@ -380,13 +380,8 @@ impl std::ops::Deref for Vars {
     }
 }
 
-impl AsRef<VarSet> for Vars {
-    fn as_ref(&self) -> &VarSet {
-        self.0
-    }
-}
-
-/// Handles are equal when their sets are the same ring ([`VarSet`]'s equality).
+/// Handles are equal when their sets are the same ring ([`VarSet`]'s equality): the pointer
+/// first, so that the common case, one interned set, compares no variables.
 impl PartialEq for Vars {
     fn eq(&self, other: &Vars) -> bool {
         Vars::ptr_eq(self, other) || *self.0 == *other.0

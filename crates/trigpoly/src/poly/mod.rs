@@ -332,7 +332,7 @@ impl<C: Coefficient> Poly<C> {
     }
 
     pub(crate) fn same_vars(&self, other: &Self) -> Result<(), AlgebraError> {
-        if Vars::ptr_eq(&self.vars, &other.vars) || self.vars == other.vars {
+        if self.vars == other.vars {
             Ok(())
         } else {
             Err(AlgebraError::VarSetMismatch)
@@ -653,7 +653,7 @@ impl<C: Coefficient> PartialEq for Poly<C> {
         self.content == other.content
             && self.exps == other.exps
             && self.coeffs == other.coeffs
-            && (Vars::ptr_eq(&self.vars, &other.vars) || self.vars == other.vars)
+            && self.vars == other.vars
     }
 }
 

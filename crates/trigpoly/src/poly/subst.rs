@@ -269,7 +269,7 @@ impl<C: Coefficient> Poly<C> {
     /// 10 000 terms of degree 40. Consecutive terms share the leading exponents, so each term
     /// reuses the product of the factors of its common prefix with the term before.
     pub fn eval(&self, point: &Point) -> Result<GaussianRational, AlgebraError> {
-        if !Vars::ptr_eq(&self.vars, &point.vars) && *self.vars != *point.vars {
+        if self.vars != point.vars {
             return Err(AlgebraError::VarSetMismatch);
         }
         let mut scaled = Vec::new();
