@@ -28,10 +28,7 @@ impl<C: Coefficient> Poly<C> {
             if content.is_zero() {
                 return Ok(Self::zero(&self.vars));
             }
-            return Ok(Poly {
-                content,
-                ..self.clone()
-            });
+            return Ok(self.with_content(content));
         }
         let (d, sa, mut sb) = Rational::content_split(&self.content, &other.content);
         if negate_other {
@@ -60,10 +57,7 @@ impl<C: Coefficient> Poly<C> {
         }
         let content = &self.content * &q;
         if n.is_one() {
-            return Poly {
-                content,
-                ..self.clone()
-            };
+            return self.with_content(content);
         }
         let coeffs = self.coeffs.iter().map(|x| x.mul(&n)).collect();
         Self::from_sorted(&self.vars, content, self.exps.clone(), coeffs)
@@ -192,17 +186,14 @@ impl<C: Coefficient> Mul<&Rational> for Poly<C> {
 impl<C: Coefficient> Neg for &Poly<C> {
     type Output = Poly<C>;
     fn neg(self) -> Poly<C> {
-        Poly {
-            content: -&self.content,
-            ..self.clone()
-        }
+        self.with_content(-&self.content)
     }
 }
 
 impl<C: Coefficient> Neg for Poly<C> {
     type Output = Poly<C>;
     fn neg(mut self) -> Poly<C> {
-        self.content = -self.content;
+        self.content = -std::mem::take(&mut self.content);
         self
     }
 }

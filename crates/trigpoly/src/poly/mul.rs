@@ -266,8 +266,8 @@ fn shift_and_merge<C: Coefficient>(
             Poly::raw(&big.vars, exps, coeffs)
         })
         .collect();
-    let p = merge_tree(parts);
-    Poly::product(&big.vars, content, p.exps, p.coeffs)
+    let (exps, coeffs) = merge_tree(parts).into_terms();
+    Poly::product(&big.vars, content, exps, coeffs)
 }
 
 /// Merges sorted raw term lists (content ignored) pairwise, like the levels of a tree, so each
@@ -291,12 +291,13 @@ pub(crate) fn merge_tree<C: Coefficient>(mut parts: Vec<Poly<C>>) -> Poly<C> {
 /// copying them; sums that cancel are dropped.
 fn merge_owned<C: Coefficient>(a: Poly<C>, b: Poly<C>) -> Poly<C> {
     let w = a.words();
+    let vars = a.vars.clone();
     let (n, m) = (a.len(), b.len());
     let mut exps = Vec::with_capacity((n + m) * w);
     let mut coeffs = Vec::with_capacity(n + m);
-    let (ea, eb) = (&a.exps, &b.exps);
-    let mut ca = a.coeffs.into_iter();
-    let mut cb = b.coeffs.into_iter();
+    let (ea, ca) = a.into_terms();
+    let (eb, cb) = b.into_terms();
+    let (mut ca, mut cb) = (ca.into_iter(), cb.into_iter());
     let (mut i, mut j) = (0, 0);
     while i < n && j < m {
         let (x, y) = (&ea[i * w..(i + 1) * w], &eb[j * w..(j + 1) * w]);
@@ -329,7 +330,7 @@ fn merge_owned<C: Coefficient>(a: Poly<C>, b: Poly<C>) -> Poly<C> {
     coeffs.extend(ca);
     exps.extend_from_slice(&eb[j * w..]);
     coeffs.extend(cb);
-    Poly::raw(&a.vars, exps, coeffs)
+    Poly::raw(&vars, exps, coeffs)
 }
 
 /// The heap product on packed monomials, for a box too large for Kronecker indices.

@@ -249,11 +249,9 @@ impl<C: Coefficient> Poly<C> {
             return Some(Err(err));
         }
         let content = &self.content * &d;
+        let (exps, coeffs) = total.into_terms();
         Some(Ok(Self::drop_zeros_and_normalize(
-            &self.vars,
-            content,
-            total.exps,
-            total.coeffs,
+            &self.vars, content, exps, coeffs,
         )))
     }
 

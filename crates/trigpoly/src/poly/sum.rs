@@ -312,7 +312,8 @@ impl<C: Coefficient> Poly<C> {
             } else {
                 p.content.clone()
             };
-            streams.push((q, Self::raw(&a.vars, p.exps, p.coeffs)));
+            let (exps, coeffs) = p.into_terms();
+            streams.push((q, Self::raw(&a.vars, exps, coeffs)));
         }
         Ok(())
     }
@@ -342,11 +343,7 @@ impl<C: Coefficient> Poly<C> {
             .collect();
         let total = merge_tree(parts);
         Self::check_terms(vars, total.len())?;
-        Ok(Self::drop_zeros_and_normalize(
-            vars,
-            d,
-            total.exps,
-            total.coeffs,
-        ))
+        let (exps, coeffs) = total.into_terms();
+        Ok(Self::drop_zeros_and_normalize(vars, d, exps, coeffs))
     }
 }
