@@ -16,6 +16,8 @@ use std::str::FromStr;
 
 use gcd::gcd_u128;
 
+pub(crate) use gcd::binary_gcd;
+
 pub use gaussian::{GaussianAcc, GaussianInteger, GaussianRational, ParseGaussianError};
 pub use integer::{ExactDivisor, Integer, IntegerAcc};
 pub use rational::{ParseRationalError, Rational};

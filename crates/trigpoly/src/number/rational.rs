@@ -68,6 +68,36 @@ impl Rational {
         }
     }
 
+    /// `(n1/d1)·(n2/d2)` for canonical word-sized parts (each in lowest terms, positive
+    /// denominators). Cancelling across first, by `gcd(n1, d2)` and `gcd(n2, d1)`, leaves the
+    /// product in lowest terms: no gcd of the products, and no division at all when the cross
+    /// gcds are 1, as they mostly are.
+    #[inline]
+    fn mul_small(n1: i64, d1: i64, n2: i64, d2: i64) -> Rational {
+        if n1 == 0 || n2 == 0 {
+            return Rational::zero();
+        }
+        if n1 != i64::MIN && n2 != i64::MIN {
+            // Each gcd divides a positive `i64`, so it is one too.
+            let g1 = binary_gcd(n1.unsigned_abs(), d2 as u64) as i64;
+            let g2 = binary_gcd(n2.unsigned_abs(), d1 as u64) as i64;
+            let (a, d) = if g1 == 1 {
+                (n1, d2)
+            } else {
+                (n1 / g1, d2 / g1)
+            };
+            let (b, c) = if g2 == 1 {
+                (n2, d1)
+            } else {
+                (n2 / g2, d1 / g2)
+            };
+            if let (Some(num), Some(den)) = (a.checked_mul(b), c.checked_mul(d)) {
+                return Rational(Repr::Small { num, den });
+            }
+        }
+        Rational::from_i128(n1 as i128 * n2 as i128, d1 as i128 * d2 as i128)
+    }
+
     /// The canonical form of a big rational.
     fn from_big(v: BigRational) -> Rational {
         match (v.numer().to_i64(), v.denom().to_i64()) {
@@ -471,7 +501,7 @@ forward_binop!(
     mul_assign,
     |a, b| match (&a.0, &b.0) {
         (Repr::Small { num: n1, den: d1 }, Repr::Small { num: n2, den: d2 }) => {
-            Rational::from_i128(*n1 as i128 * *n2 as i128, *d1 as i128 * *d2 as i128)
+            Rational::mul_small(*n1, *d1, *n2, *d2)
         }
         _ => Rational::from_big(a.to_big_rational() * b.to_big_rational()),
     }
@@ -481,7 +511,11 @@ forward_binop!(Rational, Div, div, DivAssign, div_assign, |a, b| {
     assert!(!b.is_zero(), "division by zero");
     match (&a.0, &b.0) {
         (Repr::Small { num: n1, den: d1 }, Repr::Small { num: n2, den: d2 }) => {
-            Rational::from_i128(*n1 as i128 * *d2 as i128, *d1 as i128 * *n2 as i128)
+            match n2.checked_abs() {
+                // (n1/d1)·(±d2/|n2|), the second factor in lowest terms too.
+                Some(m2) => Rational::mul_small(*n1, *d1, d2 * n2.signum(), m2),
+                None => Rational::from_i128(*n1 as i128 * *d2 as i128, *d1 as i128 * *n2 as i128),
+            }
         }
         _ => Rational::from_big(a.to_big_rational() / b.to_big_rational()),
     }

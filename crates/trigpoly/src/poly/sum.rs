@@ -7,7 +7,7 @@
 //! rational content, merged pairwise like the levels of a tree, and normalised once, instead of
 //! normalising every derivative, every product and every partial sum.
 
-use super::gather::{self, JacobianPair, MAX_JACOBIAN_PAIRS};
+use super::gather::{self, MAX_JACOBIAN_PAIRS};
 use super::mul::{merge_tree, SMALL_SIDE};
 use super::sum_at::MAX_PRODUCTS;
 use super::Poly;
@@ -211,19 +211,9 @@ impl<C: Coefficient> Poly<C> {
         {
             return Ok(None);
         }
-        // On the stack: a bracket of generators is a few dozen term products, and an
-        // allocation would cost as much as several of them.
-        let mut kernel_pairs = [JacobianPair::default(); MAX_JACOBIAN_PAIRS];
-        for (kernel_pair, &(q, p)) in kernel_pairs.iter_mut().zip(pairs) {
-            *kernel_pair = JacobianPair::new(vars, q, p);
-        }
-        let kernel_pairs = &kernel_pairs[..pairs.len()];
-        let Some(terms) = gather::jacobians(
-            layout,
-            (&f.exps, &f.coeffs),
-            (&g.exps, &g.coeffs),
-            kernel_pairs,
-        ) else {
+        let Some(terms) =
+            gather::jacobians(vars, (&f.exps, &f.coeffs), (&g.exps, &g.coeffs), pairs)
+        else {
             return Ok(None);
         };
         Self::check_terms(vars, terms.coeffs.len())?;

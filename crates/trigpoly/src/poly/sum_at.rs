@@ -7,7 +7,7 @@
 use super::gather::{self, Monomial, MonomialMap, Partial, Product};
 use super::Poly;
 use crate::error::AlgebraError;
-use crate::number::{Coefficient, IntegerRing, Rational};
+use crate::number::{binary_gcd, Coefficient, IntegerRing, Rational};
 use crate::varset::Var;
 
 /// One product of a gathered sum: `± a·b`, or `± (∂a/∂v)·b` with `v` given; minus where the
@@ -379,9 +379,5 @@ fn remembered<T: Copy>(
 
 /// `gcd(a, b)` of positive machine integers.
 fn gcd_i64(a: i64, b: i64) -> i64 {
-    let (mut a, mut b) = (a.unsigned_abs(), b.unsigned_abs());
-    while b != 0 {
-        (a, b) = (b, a % b);
-    }
-    a as i64
+    binary_gcd(a.unsigned_abs(), b.unsigned_abs()) as i64
 }

@@ -50,6 +50,24 @@ fn canonical(v: &Integer) -> bool {
     }
 }
 
+/// A word-sized part of a fraction: small values (where cross gcds other than 1 are common),
+/// powers of two, any `i64`, and the edges `i64::MIN`, `i64::MAX`.
+fn word() -> impl Strategy<Value = i64> {
+    prop_oneof![
+        4 => -40i64..40,
+        1 => (0u32..63).prop_map(|k| 1i64 << k),
+        1 => any::<i64>(),
+        1 => Just(i64::MIN),
+        1 => Just(i64::MAX),
+    ]
+}
+
+/// A rational from word-sized parts (reduced, so its parts may be anything up to `2^63`).
+fn word_rational() -> impl Strategy<Value = Rational> {
+    (word(), word().prop_filter("a denominator", |d| *d != 0))
+        .prop_map(|(n, d)| Rational::new(n, d))
+}
+
 fn rational() -> impl Strategy<Value = Rational> {
     (numerator(), prop_oneof![3 => Just(1i64), 1 => 2i64..7]).prop_map(|(n, d)| Rational::new(n, d))
 }
@@ -305,6 +323,18 @@ fn config() -> Config {
 
 proptest! {
     #![proptest_config(config())]
+
+    /// Products and quotients of rationals equal num-rational's, in canonical form (machine
+    /// words exactly when the value fits), across the machine path's cross-cancellation, its
+    /// overflow into big values, and the edges of `i64`.
+    #[test]
+    fn rational_products_and_quotients_match_big_rationals(x in word_rational(), y in word_rational()) {
+        let (bx, by) = (x.to_big_rational(), y.to_big_rational());
+        prop_assert_eq!(&x * &y, Rational::from(&bx * &by));
+        if !y.is_zero() {
+            prop_assert_eq!(&x / &y, Rational::from(&bx / &by));
+        }
+    }
 
     #[test]
     fn ring_add_commutative(f in gpoly(10), g in gpoly(10), a in qpoly(10), b in qpoly(10)) {

@@ -50,41 +50,71 @@ pub(crate) fn fits(words: usize, pairs: usize) -> bool {
 /// A packed monomial padded to [`WORDS`] words.
 pub(crate) type Monomial = [u64; WORDS];
 
-/// One pair of variables `(q, p)` of a sum of Jacobians, as [`jacobians`] reads it.
+/// One pair of variables `(q, p)` of a sum of Jacobians, as [`jacobians`] reads it: the field
+/// (word, shift) of each and whether it is an angle. Six bytes, so that the kernel's table of
+/// the active pairs costs next to nothing to set up.
 #[derive(Clone, Copy, Default)]
-pub(crate) struct JacobianPair {
-    /// The field of `q` (word, shift).
-    pub(crate) q: (usize, u32),
-    /// The field of `p`.
-    pub(crate) p: (usize, u32),
-    /// What both derivatives take off a monomial: one in the field of each variable that is
-    /// not an angle.
-    pub(crate) lower: Monomial,
-    /// Factors `i` the derivatives bring, one per angle.
-    pub(crate) turns: u32,
+struct JacobianPair {
+    q: (u8, u8),
+    p: (u8, u8),
+    q_angle: bool,
+    p_angle: bool,
 }
 
 impl JacobianPair {
     /// The pair `(q, p)` of `vars`, whose monomials fit [`WORDS`] words.
     #[inline]
-    pub(crate) fn new(vars: &VarSet, q: Var, p: Var) -> Self {
+    fn new(vars: &VarSet, q: Var, p: Var) -> Self {
         let layout = vars.layout();
-        let mut lower: Monomial = [0; WORDS];
-        let mut turns = 0;
-        for v in [q, p] {
-            if vars.variable(v).kind() == VarKind::Angle {
-                turns += 1;
-            } else {
-                let (word, shift) = layout.field(v.index());
-                lower[word] = lower[word].wrapping_add(1 << shift);
-            }
-        }
+        let field = |v: Var| {
+            let (word, shift) = layout.field(v.index());
+            (word as u8, shift as u8)
+        };
+        let angle = |v: Var| vars.variable(v).kind() == VarKind::Angle;
         JacobianPair {
-            q: layout.field(q.index()),
-            p: layout.field(p.index()),
-            lower,
-            turns,
+            q: field(q),
+            p: field(p),
+            q_angle: angle(q),
+            p_angle: angle(p),
         }
+    }
+
+    /// The field of `q`, as [`Layout::read`] takes it.
+    #[inline]
+    fn q(&self) -> (usize, u32) {
+        (usize::from(self.q.0), u32::from(self.q.1))
+    }
+
+    /// The field of `p`.
+    #[inline]
+    fn p(&self) -> (usize, u32) {
+        (usize::from(self.p.0), u32::from(self.p.1))
+    }
+
+    /// Factors `i` the derivatives bring, one per angle.
+    #[inline]
+    fn turns(&self) -> u32 {
+        u32::from(self.q_angle) + u32::from(self.p_angle)
+    }
+
+    /// What both derivatives take off a monomial: one in the field of each variable that is
+    /// not an angle.
+    #[inline]
+    fn lower<K: Key>(&self) -> K {
+        let one = |(word, shift): (u8, u8), angle: bool, i: usize| {
+            if !angle && usize::from(word) == i {
+                1u64 << shift
+            } else {
+                0
+            }
+        };
+        // Word by word, with no store at a computed index (whose reload as a whole would
+        // wait for the store to retire).
+        let mut lower = K::ZERO;
+        for (i, w) in lower.as_mut().iter_mut().enumerate() {
+            *w = one(self.q, self.q_angle, i).wrapping_add(one(self.p, self.p_angle, i));
+        }
+        lower
     }
 }
 
@@ -118,20 +148,22 @@ pub(crate) fn square<I: IntegerRing>(layout: &Layout, a: (&[u64], &[I])) -> Gath
     by_width!(layout.words, square_of_width, layout, a)
 }
 
-/// `Σ_k ∂(f, g)/∂(q_k, p_k)` over the `pairs`, from the term pairs: both products of
+/// `Σ_k ∂(f, g)/∂(q_k, p_k)` over the `pairs` of variables of `vars` (at most
+/// [`MAX_JACOBIAN_PAIRS`]), from the term pairs: both products of
 /// derivatives of the terms `c·m` and `d·n` have the monomial `m·n/(q·p)`, with the
 /// coefficient `c·d·(a_q·b_p − a_p·b_q)·iᵗ`, where `a`, `b` are the exponents in `m`, `n` and
 /// `t` counts the angles of the pair. `None` when a coefficient does not fit a word or an
 /// angle needs `i` in a ring without it (the general path handles both). The caller has
 /// checked the exponents.
 pub(crate) fn jacobians<I: IntegerRing>(
-    layout: &Layout,
+    vars: &VarSet,
     f: (&[u64], &[I]),
     g: (&[u64], &[I]),
-    pairs: &[JacobianPair],
+    pairs: &[(Var, Var)],
 ) -> Option<Gathered<I>> {
-    debug_assert!(layout.words <= WORDS);
-    by_width!(layout.words, jacobians_of_width, layout, f, g, pairs)
+    let layout = vars.layout();
+    debug_assert!(layout.words <= WORDS && pairs.len() <= MAX_JACOBIAN_PAIRS);
+    by_width!(layout.words, jacobians_of_width, vars, f, g, pairs)
 }
 
 /// A derivative `∂/∂v` as the kernels apply it to a packed monomial `c·m` of exponent `e` in
@@ -338,11 +370,12 @@ fn square_of_width<K: Key, I: IntegerRing>(layout: &Layout, a: (&[u64], &[I])) -
 }
 
 fn jacobians_of_width<K: Key, I: IntegerRing>(
-    layout: &Layout,
+    vars: &VarSet,
     f: (&[u64], &[I]),
     g: (&[u64], &[I]),
-    pairs: &[JacobianPair],
+    pairs: &[(Var, Var)],
 ) -> Option<Gathered<I>> {
+    let layout = vars.layout();
     let bias = K::load(layout.one());
     let ab_bits = small_bits(f.1)? + small_bits(g.1)?;
     // ∂(f, g)/∂(q, p) = f_q·g_p − f_p·g_q vanishes unless one side has `q` and the other `p`.
@@ -352,10 +385,11 @@ fn jacobians_of_width<K: Key, I: IntegerRing>(
     };
     let mut active = [JacobianPair::default(); MAX_JACOBIAN_PAIRS];
     let mut count = 0;
-    for pair in pairs {
-        if (has(&in_f, pair.q) && has(&in_g, pair.p)) || (has(&in_f, pair.p) && has(&in_g, pair.q))
-        {
-            active[count] = *pair;
+    for &(q, p) in pairs {
+        let pair = JacobianPair::new(vars, q, p);
+        let (q, p) = (pair.q(), pair.p());
+        if (has(&in_f, q) && has(&in_g, p)) || (has(&in_f, p) && has(&in_g, q)) {
+            active[count] = pair;
             count += 1;
         }
     }
@@ -363,20 +397,22 @@ fn jacobians_of_width<K: Key, I: IntegerRing>(
     let per_monomial = f.1.len().min(g.1.len()) * count;
     let mut out = WordGather::<K, I>::new(f.1.len() * g.1.len() * count, ab_bits, per_monomial)?;
     for pair in &active[..count] {
+        let (q, p, turns) = (pair.q(), pair.p(), pair.turns());
+        let lower = pair.lower::<K>();
         for (mf, cf) in f.0.chunks_exact(n).zip(f.1) {
-            let (aq, ap) = (layout.read(mf, pair.q), layout.read(mf, pair.p));
+            let (aq, ap) = (layout.read(mf, q), layout.read(mf, p));
             if aq == 0 && ap == 0 {
                 continue;
             }
             // The monomial m_f·m_g/(q·p), lowered once per term of `f`.
-            let lowered = K::load(mf).lowered(&pair.lower[..n]);
+            let lowered = K::load(mf).lowered(lower.as_ref());
             for (mg, cg) in g.0.chunks_exact(n).zip(g.1) {
-                let factor = aq * layout.read(mg, pair.p) - ap * layout.read(mg, pair.q);
+                let factor = aq * layout.read(mg, p) - ap * layout.read(mg, q);
                 if factor == 0 {
                     continue;
                 }
                 let m = lowered.mul(&K::load(mg), &bias);
-                if !out.push(m, cf, cg, factor, pair.turns) {
+                if !out.push(m, cf, cg, factor, turns) {
                     return None;
                 }
             }

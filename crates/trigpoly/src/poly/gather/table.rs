@@ -53,6 +53,7 @@ impl<K: Key, I: IntegerRing> WordGather<K, I> {
     /// Room for at most `n` term products, whose coefficients fit words and take at most
     /// `ab_bits` bits together, and of which at most `per_monomial` share a monomial; `None`
     /// when no multiplier would leave room in the sums.
+    #[inline]
     pub(super) fn new(n: usize, ab_bits: u32, per_monomial: usize) -> Option<Self> {
         let fan_in_bits = usize::BITS - per_monomial.max(1).saturating_sub(1).leading_zeros();
         let k_budget = SUM_BITS.checked_sub(fan_in_bits + ab_bits)?;
