@@ -384,6 +384,9 @@ impl<C: Coefficient> Poly<C> {
     /// over the packed words, a few operations per word, no allocation. Enough to clear most
     /// exponent checks at once, since the limit is the same for every variable; a check it
     /// does not clear goes variable by variable.
+    ///
+    /// Inlined, so that a known bound costs a load and a shift; the pass is out of line.
+    #[inline]
     pub(crate) fn exponent_bound(&self) -> i64 {
         let bits = self
             .exponent_bound
@@ -392,15 +395,22 @@ impl<C: Coefficient> Poly<C> {
     }
 
     /// The most bits of a component of any coefficient of the primitive part, if every one
-    /// fits a machine word (what the word kernels ask of a factor).
+    /// fits a machine word (what the word kernels ask of a factor). Inlined like
+    /// [`Poly::exponent_bound`].
+    #[inline]
     pub(crate) fn small_bits(&self) -> Option<u32> {
-        let bits = self
-            .small_bits
-            .get(|| gather::small_bits(&self.coeffs).map_or(u8::MAX - 1, |b| b as u8));
+        let bits = self.small_bits.get(|| Self::small_bits_of(&self.coeffs));
         (bits != u8::MAX - 1).then_some(u32::from(bits))
     }
 
+    /// [`Poly::small_bits`] read from the coefficients (`u8::MAX − 1` for `None`).
+    #[inline(never)]
+    fn small_bits_of(coeffs: &[C::Int]) -> u8 {
+        gather::small_bits(coeffs).map_or(u8::MAX - 1, |b| b as u8)
+    }
+
     /// The bit length `b` of [`Poly::exponent_bound`] `= 2^b` for the packed monomials `exps`.
+    #[inline(never)]
     fn exponent_bound_bits(vars: &VarSet, exps: &[u64]) -> u32 {
         let layout = vars.layout();
         let (bits, field) = (layout.bits, layout.field_mask());
