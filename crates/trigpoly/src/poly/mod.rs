@@ -94,8 +94,9 @@ impl Clone for Cached {
 const PARALLEL_DROP_TERMS: usize = 1 << 20;
 
 /// Dropping a coefficient reads it and frees it if boxed: for a product of millions of terms
-/// (Pearce(12): 5.8 M coefficients, 1.7 M of them boxed) that is 8–10 ms on one thread, which
-/// the pool's other threads share when the drop happens inside a pool of more than one.
+/// (Pearce(12): 5.8 M coefficients, 1.7 M of them boxed) that is several milliseconds on one
+/// thread, which the pool's other threads share when the drop happens inside a pool of more
+/// than one. (Handing the pages back to the system, the rest of such a drop, stays serial.)
 impl<C: Coefficient> Drop for Poly<C> {
     fn drop(&mut self) {
         use std::mem::take;
