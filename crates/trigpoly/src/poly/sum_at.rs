@@ -256,7 +256,9 @@ impl<C: Coefficient> Poly<C> {
                         words = false;
                         break;
                     };
-                    match lcm.checked_mul(den / gcd_i64(lcm, den)) {
+                    // Both are positive.
+                    let g = binary_gcd(lcm as u64, den as u64) as i64;
+                    match lcm.checked_mul(den / g) {
                         Some(l) => lcm = l,
                         None => {
                             words = false;
@@ -375,9 +377,4 @@ fn remembered<T: Copy>(
         }
     }
     make()
-}
-
-/// `gcd(a, b)` of positive machine integers.
-fn gcd_i64(a: i64, b: i64) -> i64 {
-    binary_gcd(a.unsigned_abs(), b.unsigned_abs()) as i64
 }
