@@ -162,9 +162,16 @@ impl Workload {
                     }
                 };
                 // The repetitions are independent: with more than one thread they share the
-                // pool (one thread: the plain loop, in order).
-                let terms = (0..reps)
+                // pool in pieces of at most 16 (rayon's own split, four pieces of 250 on two
+                // threads, left a thread that woke late a quarter of the work or none); one
+                // thread runs the plain loop, in order.
+                let pieces = match rayon::current_num_threads() {
+                    1 => usize::MAX,
+                    _ => 16,
+                };
+                let terms = (0..usize::try_from(reps).unwrap_or(0))
                     .into_par_iter()
+                    .with_max_len(pieces)
                     .map(|_| repetition())
                     .try_reduce(|| 0, |a, b| Ok(a + b))?;
                 let zeros = reps.max(0) as usize;
