@@ -22,7 +22,7 @@ pub(crate) use map::MonomialMap;
 pub(crate) use table::{small_bits, Gathered};
 
 use pairs::{derivative_pairs, mapped_pairs, product_pairs, square_pairs};
-use table::{Gather, WordGather};
+use table::{Gather, Inline, Table, WordGather, INLINE};
 
 use super::mul::Key;
 use crate::number::{Integer, IntegerRing};
@@ -285,7 +285,6 @@ fn sum_of_products_of_width<K: Key, I: IntegerRing>(
     products: &[Product<'_, I>],
     map: Option<&MonomialMap>,
 ) -> Option<Gathered<I>> {
-    let bias = K::load(layout.one());
     let (mut n, mut per_monomial, mut ab_bits) = (0usize, 0usize, 0);
     for p in products {
         n = n.saturating_add(p.pairs());
@@ -295,7 +294,25 @@ fn sum_of_products_of_width<K: Key, I: IntegerRing>(
     if let Some(map) = map {
         per_monomial = per_monomial.saturating_mul(map.fan_in());
     }
-    let mut words = WordGather::<K, I>::new(n, ab_bits, per_monomial)?;
+    let budget = WordGather::<K, I>::budget(ab_bits, per_monomial)?;
+    if n < INLINE {
+        let mut words = WordGather::<K, I, Inline<K, I::Wide>>::new(n, budget);
+        gather_products(&mut words, layout, products, map).then(|| words.finish())
+    } else {
+        let mut words = WordGather::<K, I>::new(n, budget);
+        gather_products(&mut words, layout, products, map).then(|| words.finish())
+    }
+}
+
+/// Adds the term products of every product to `words`; whether all of them fit.
+#[inline(always)]
+fn gather_products<K: Key, I: IntegerRing, T: Table<K, I::Wide>>(
+    words: &mut WordGather<K, I, T>,
+    layout: &Layout,
+    products: &[Product<'_, I>],
+    map: Option<&MonomialMap>,
+) -> bool {
+    let bias = K::load(layout.one());
     for p in products {
         let k = p.k;
         let all = match (map, p.by) {
@@ -328,10 +345,10 @@ fn sum_of_products_of_width<K: Key, I: IntegerRing>(
             }),
         };
         if !all {
-            return None;
+            return false;
         }
     }
-    Some(words.finish())
+    true
 }
 
 fn product_of_width<K: Key, I: IntegerRing>(
@@ -343,9 +360,18 @@ fn product_of_width<K: Key, I: IntegerRing>(
     let n = a.1.len() * b.1.len();
     if let (Some(x), Some(y)) = (small_bits(a.1), small_bits(b.1)) {
         let per_monomial = a.1.len().min(b.1.len());
-        if let Some(mut words) = WordGather::<K, I>::new(n, x + y, per_monomial) {
-            if product_pairs(a, b, &bias, |m, x, y, k| words.push(m, x, y, k, 0)) {
-                return words.finish();
+        if let Some(budget) = WordGather::<K, I>::budget(x + y, per_monomial) {
+            let sums = if n < INLINE {
+                let mut words = WordGather::<K, I, Inline<K, I::Wide>>::new(n, budget);
+                product_pairs(a, b, &bias, |m, x, y, k| words.push(m, x, y, k, 0))
+                    .then(|| words.finish())
+            } else {
+                let mut words = WordGather::<K, I>::new(n, budget);
+                product_pairs(a, b, &bias, |m, x, y, k| words.push(m, x, y, k, 0))
+                    .then(|| words.finish())
+            };
+            if let Some(sums) = sums {
+                return sums;
             }
         }
     }
@@ -358,9 +384,18 @@ fn square_of_width<K: Key, I: IntegerRing>(layout: &Layout, a: (&[u64], &[I])) -
     let bias = K::load(layout.one());
     let n = a.1.len() * (a.1.len() + 1) / 2;
     if let Some(x) = small_bits(a.1) {
-        if let Some(mut words) = WordGather::<K, I>::new(n, 2 * x, a.1.len()) {
-            if square_pairs(a, &bias, |m, x, y, k| words.push(m, x, y, k, 0)) {
-                return words.finish();
+        if let Some(budget) = WordGather::<K, I>::budget(2 * x, a.1.len()) {
+            let sums = if n < INLINE {
+                let mut words = WordGather::<K, I, Inline<K, I::Wide>>::new(n, budget);
+                square_pairs(a, &bias, |m, x, y, k| words.push(m, x, y, k, 0))
+                    .then(|| words.finish())
+            } else {
+                let mut words = WordGather::<K, I>::new(n, budget);
+                square_pairs(a, &bias, |m, x, y, k| words.push(m, x, y, k, 0))
+                    .then(|| words.finish())
+            };
+            if let Some(sums) = sums {
+                return sums;
             }
         }
     }
@@ -393,10 +428,32 @@ fn jacobians_of_width<K: Key, I: IntegerRing>(
             count += 1;
         }
     }
-    let n = K::WORDS;
     let per_monomial = f.1.len().min(g.1.len()) * count;
-    let mut out = WordGather::<K, I>::new(f.1.len() * g.1.len() * count, ab_bits, per_monomial)?;
-    for pair in &active[..count] {
+    let budget = WordGather::<K, I>::budget(ab_bits, per_monomial)?;
+    let n = f.1.len() * g.1.len() * count;
+    let active = &active[..count];
+    if n < INLINE {
+        let mut out = WordGather::<K, I, Inline<K, I::Wide>>::new(n, budget);
+        gather_jacobians(&mut out, layout, f, g, active).then(|| out.finish())
+    } else {
+        let mut out = WordGather::<K, I>::new(n, budget);
+        gather_jacobians(&mut out, layout, f, g, active).then(|| out.finish())
+    }
+}
+
+/// Adds the term products of `Σ ∂(f, g)/∂(q, p)` over the `active` pairs to `out`; whether
+/// all of them fit.
+#[inline(always)]
+fn gather_jacobians<K: Key, I: IntegerRing, T: Table<K, I::Wide>>(
+    out: &mut WordGather<K, I, T>,
+    layout: &Layout,
+    f: (&[u64], &[I]),
+    g: (&[u64], &[I]),
+    active: &[JacobianPair],
+) -> bool {
+    let bias = K::load(layout.one());
+    let n = K::WORDS;
+    for pair in active {
         let (q, p, turns) = (pair.q(), pair.p(), pair.turns());
         let lower = pair.lower::<K>();
         for (mf, cf) in f.0.chunks_exact(n).zip(f.1) {
@@ -413,12 +470,12 @@ fn jacobians_of_width<K: Key, I: IntegerRing>(
                 }
                 let m = lowered.mul(&K::load(mg), &bias);
                 if !out.push(m, cf, cg, factor, turns) {
-                    return None;
+                    return false;
                 }
             }
         }
     }
-    Some(out.finish())
+    true
 }
 
 /// The fields of the variables that occur in some monomial of `exps` are nonzero in the
@@ -498,7 +555,8 @@ fn multinomial_power_of_width<K: Key, I: IntegerRing>(
             .map(|m| K::load(m).lowered(bias.as_ref()))
             .collect();
     // Every composition is a term; they are distinct unless the monomials are dependent.
-    let mut words = WordGather::<K, I>::new(compositions, 0, compositions)?;
+    let mut words =
+        WordGather::<K, I>::new(compositions, WordGather::<K, I>::budget(0, compositions)?);
     struct Walk<'a, K, I: IntegerRing> {
         binom: &'a [Vec<i64>],
         powers: &'a [Vec<I::Small>],

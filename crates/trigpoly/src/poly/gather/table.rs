@@ -2,6 +2,10 @@
 //! words found by open addressing, and `Gather`, ring elements for coefficients of any size;
 //! and `Gathered`, the sorted terms either gives back.
 
+use std::marker::PhantomData;
+
+use arrayvec::ArrayVec;
+
 use super::MonomialMap;
 use crate::number::{Integer, IntegerRing};
 use crate::poly::mul::Key;
@@ -33,37 +37,156 @@ pub(crate) fn small_bits<I: IntegerRing>(coeffs: &[I]) -> Option<u32> {
 
 /// Term products with word-sized coefficients, each kept exactly in the ring's wide form (no
 /// allocation, clone or drop per coefficient) and added at once to the running sum of its
-/// monomial, which an open-addressing table finds: only the distinct monomials are sorted at
-/// the end, and only those whose sums did not cancel (none, for an identity's residual).
-pub(super) struct WordGather<K, I: IntegerRing> {
-    /// The distinct monomials in the order they came, with their sums.
-    items: Vec<(K, I::Wide)>,
-    /// Linear probing over `items`: a slot holds an index into `items` plus one, or 0 when
-    /// empty; a power of two, more than twice the items.
-    slots: Vec<u32>,
+/// monomial, which an open-addressing table (`T`) finds: only the distinct monomials are
+/// sorted at the end, and only those whose sums did not cancel (none, for an identity's
+/// residual).
+pub(super) struct WordGather<K, I: IntegerRing, T = Heap<K, <I as IntegerRing>::Wide>> {
+    /// The distinct monomials in the order they came, with their sums, and the slots that
+    /// find them.
+    table: T,
     /// `64 − log₂(slots)`: a hash's top bits pick the slot.
     shift: u32,
+    /// `slots − 1`.
+    mask: usize,
     /// The bits left for the multiplier `k` of a product `a·b·k`: [`SUM_BITS`] less the
     /// bits of the most term products one monomial can gather and the most bits of `a` and
     /// `b` together (from [`small_bits`]).
     k_budget: u32,
+    ring: PhantomData<(K, I)>,
+}
+
+/// A gathering of fewer term products than this can be held [`Inline`]: its slots, `2n + 1`
+/// rounded up to a power of two, are then at most `2·INLINE`. A bracket of two generators of
+/// an algebra gathers 8 to 16 term products, the Casimir of su(2) 27.
+pub(super) const INLINE: usize = 32;
+
+/// The sums of a [`WordGather`] and the slots that find them, by linear probing: a slot holds
+/// an index into the sums plus one, or 0 when empty; a power of two, more than twice the sums.
+pub(super) trait Table<K, W>: Sized {
+    /// Room for `n` sums in `slots` slots.
+    fn new(n: usize, slots: usize) -> Self;
+    /// `sum(m) += w` by `plus`, the sum probed for from `slot` (below `mask + 1`), or a new
+    /// one.
+    fn add(&mut self, slot: usize, mask: usize, m: K, w: W, plus: impl FnOnce(&mut W, &W));
+    /// Drops the sums equal to `zero` and gives the rest, in the order they came.
+    fn nonzero(&mut self, zero: W) -> &mut [(K, W)];
+}
+
+/// A [`Table`] on the heap, of any size.
+pub(super) struct Heap<K, W> {
+    items: Vec<(K, W)>,
+    slots: Vec<u32>,
+}
+
+/// A [`Table`] held inline, for fewer than [`INLINE`] sums: no allocation (the two of a
+/// [`Heap`] table and their frees were a tenth of a short bracket).
+pub(super) struct Inline<K, W> {
+    items: ArrayVec<(K, W), INLINE>,
+    slots: [u8; 2 * INLINE],
+}
+
+impl<K: Key, W: Copy + PartialEq> Table<K, W> for Heap<K, W> {
+    #[inline(always)]
+    fn new(n: usize, slots: usize) -> Self {
+        Heap {
+            items: Vec::with_capacity(n),
+            slots: vec![0; slots],
+        }
+    }
+
+    #[inline(always)]
+    fn add(&mut self, mut slot: usize, mask: usize, m: K, w: W, plus: impl FnOnce(&mut W, &W)) {
+        debug_assert!(
+            2 * self.items.len() < self.slots.len(),
+            "more sums than promised"
+        );
+        loop {
+            match self.slots[slot] {
+                0 => {
+                    self.items.push((m, w));
+                    self.slots[slot] = self.items.len() as u32;
+                    return;
+                }
+                k => {
+                    let item = &mut self.items[k as usize - 1];
+                    if item.0 == m {
+                        return plus(&mut item.1, &w);
+                    }
+                }
+            }
+            slot = (slot + 1) & mask;
+        }
+    }
+
+    fn nonzero(&mut self, zero: W) -> &mut [(K, W)] {
+        self.items.retain(|(_, sum)| *sum != zero);
+        &mut self.items
+    }
+}
+
+impl<K: Key, W: Copy + PartialEq> Table<K, W> for Inline<K, W> {
+    #[inline(always)]
+    fn new(n: usize, slots: usize) -> Self {
+        debug_assert!(n < INLINE && slots <= 2 * INLINE);
+        Inline {
+            items: ArrayVec::new(),
+            slots: [0; 2 * INLINE],
+        }
+    }
+
+    #[inline(always)]
+    fn add(&mut self, mut slot: usize, mask: usize, m: K, w: W, plus: impl FnOnce(&mut W, &W)) {
+        debug_assert!(2 * self.items.len() < mask + 1, "more sums than promised");
+        // `mask` is below the array's length; the masks here only spare the bounds checks.
+        loop {
+            match self.slots[slot & (2 * INLINE - 1)] {
+                0 => {
+                    self.items.push((m, w));
+                    self.slots[slot & (2 * INLINE - 1)] = self.items.len() as u8;
+                    return;
+                }
+                k => {
+                    let item = &mut self.items[usize::from(k - 1) & (INLINE - 1)];
+                    if item.0 == m {
+                        return plus(&mut item.1, &w);
+                    }
+                }
+            }
+            slot = (slot + 1) & mask;
+        }
+    }
+
+    fn nonzero(&mut self, zero: W) -> &mut [(K, W)] {
+        self.items.retain(|(_, sum)| *sum != zero);
+        &mut self.items
+    }
 }
 
 impl<K: Key, I: IntegerRing> WordGather<K, I> {
-    /// Room for at most `n` term products, whose coefficients fit words and take at most
-    /// `ab_bits` bits together, and of which at most `per_monomial` share a monomial; `None`
-    /// when no multiplier would leave room in the sums.
-    #[inline]
-    pub(super) fn new(n: usize, ab_bits: u32, per_monomial: usize) -> Option<Self> {
+    /// The bits a multiplier may take in the sums of term products whose coefficients fit
+    /// words and take at most `ab_bits` bits together, and of which at most `per_monomial`
+    /// share a monomial; `None` when no multiplier would leave room in the sums.
+    #[inline(always)]
+    pub(super) fn budget(ab_bits: u32, per_monomial: usize) -> Option<u32> {
         let fan_in_bits = usize::BITS - per_monomial.max(1).saturating_sub(1).leading_zeros();
-        let k_budget = SUM_BITS.checked_sub(fan_in_bits + ab_bits)?;
+        SUM_BITS.checked_sub(fan_in_bits + ab_bits)
+    }
+}
+
+impl<K: Key, I: IntegerRing, T: Table<K, I::Wide>> WordGather<K, I, T> {
+    /// Room for at most `n` term products, with the [`WordGather::budget`] of their
+    /// coefficients. (Not an `Option`: an [`Inline`] table is built where it stays, never
+    /// moved out of one, which would copy its 1.5 KB.)
+    #[inline(always)]
+    pub(super) fn new(n: usize, k_budget: u32) -> Self {
         let slots = (2 * n + 1).next_power_of_two().max(8);
-        Some(WordGather {
-            items: Vec::with_capacity(n),
-            slots: vec![0; slots],
+        WordGather {
+            table: T::new(n, slots),
             shift: 64 - slots.trailing_zeros(),
+            mask: slots - 1,
             k_budget,
-        })
+            ring: PhantomData,
+        }
     }
 
     /// Adds the term `a·b·k·iᵗ·m` (`k ≠ 0`, `t` = `turns`), or returns `false` and adds nothing
@@ -123,38 +246,16 @@ impl<K: Key, I: IntegerRing> WordGather<K, I> {
     /// `sum(m) += w`.
     #[inline(always)]
     pub(super) fn add(&mut self, m: K, w: I::Wide) {
-        debug_assert!(
-            2 * self.items.len() < self.slots.len(),
-            "more items than promised"
-        );
-        let mask = self.slots.len() - 1;
-        let mut slot = (m.hash() >> self.shift) as usize;
-        loop {
-            match self.slots[slot] {
-                0 => {
-                    self.items.push((m, w));
-                    self.slots[slot] = self.items.len() as u32;
-                    return;
-                }
-                k => {
-                    let item = &mut self.items[k as usize - 1];
-                    if item.0 == m {
-                        I::wide_add(&mut item.1, &w);
-                        return;
-                    }
-                }
-            }
-            slot = (slot + 1) & mask;
-        }
+        let slot = (m.hash() >> self.shift) as usize;
+        self.table.add(slot, self.mask, m, w, I::wide_add);
     }
 
     /// The terms sorted descending, zero sums dropped, divided by the gcd of the sums and the
     /// sign of the leading one (on machine words, while they are converted), so that they are
     /// primitive.
-    pub(super) fn finish(mut self) -> Gathered<I> {
+    pub(super) fn finish(&mut self) -> Gathered<I> {
         let zero = I::Wide::default();
-        let items = &mut self.items;
-        items.retain(|(_, sum)| *sum != zero);
+        let items = self.table.nonzero(zero);
         items.sort_unstable_by_key(|&(m, _)| std::cmp::Reverse(m));
         let mut g = 0u128;
         for (_, sum) in items.iter() {
@@ -230,5 +331,54 @@ impl<K: Key, I: IntegerRing> Gather<K, I> {
             coeffs,
             divisor: None,
         }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::{Gathered, Heap, Inline, Table, WordGather, INLINE};
+    use crate::number::{Integer, IntegerRing};
+
+    type Sums = <Integer as IntegerRing>::Wide;
+
+    /// `Σ c·m` over `terms`, gathered in a table of type `T`.
+    fn gather<T: Table<[u64; 1], Sums>>(terms: &[(u64, i64)]) -> Gathered<Integer> {
+        let budget = WordGather::<[u64; 1], Integer>::budget(64, terms.len()).expect("room");
+        let mut sums = WordGather::<[u64; 1], Integer, T>::new(terms.len(), budget);
+        for &(m, c) in terms {
+            assert!(sums.push([m], &Integer::from(c), &Integer::from(1), 1, 0));
+        }
+        sums.finish()
+    }
+
+    fn parts(g: &Gathered<Integer>) -> (Vec<u64>, Vec<Integer>, Option<Integer>) {
+        (g.exps.clone(), g.coeffs.clone(), g.divisor.clone())
+    }
+
+    #[test]
+    fn inline_and_heap_tables_gather_the_same_sums() {
+        // The most term products an inline table takes, on monomials that collide in its
+        // slots (every one a multiple of 8), with sums that cancel and a common factor 2.
+        let terms: Vec<(u64, i64)> = (0..INLINE as i64 - 1)
+            .map(|i| {
+                let c = match i {
+                    4 => 3,
+                    13 => -1,
+                    22 => -2,
+                    _ => 2 * i,
+                };
+                (8 * (i % 9) as u64, c)
+            })
+            .collect();
+        let inline = gather::<Inline<_, _>>(&terms);
+        let heap = gather::<Heap<_, _>>(&terms);
+        assert_eq!(parts(&inline), parts(&heap));
+        // Monomial 32 gathers 3 − 1 − 2 = 0 and is dropped; the others are divided by 2
+        // and sorted descending.
+        assert!(!inline.exps.contains(&32));
+        assert_eq!(inline.exps, vec![64, 56, 48, 40, 24, 16, 8, 0]);
+        assert_eq!(inline.divisor, Some(Integer::from(2)));
+        // Monomial 0 gathers 2·(0 + 9 + 18 + 27) = 108, halved.
+        assert_eq!(inline.coeffs.last(), Some(&Integer::from(54)));
     }
 }
