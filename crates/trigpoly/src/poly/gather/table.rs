@@ -65,9 +65,12 @@ pub(super) const INLINE: usize = 32;
 pub(super) trait Table<K, W>: Sized {
     /// Room for `n` sums in `slots` slots.
     fn new(n: usize, slots: usize) -> Self;
-    /// `sum(m) += w` by `plus`, the sum probed for from `slot` (below `mask + 1`), or a new
-    /// one.
-    fn add(&mut self, slot: usize, mask: usize, m: K, w: W, plus: impl FnOnce(&mut W, &W));
+    /// What slot `slot` holds: the index of a sum plus one, or 0.
+    fn slot(&self, slot: usize) -> usize;
+    /// The monomial and sum of index `k`, which a slot holds.
+    fn sum(&mut self, k: usize) -> &mut (K, W);
+    /// A new sum, found from the empty slot `slot`.
+    fn insert(&mut self, slot: usize, m: K, w: W);
     /// Drops the sums equal to `zero` and gives the rest, in the order they came.
     fn nonzero(&mut self, zero: W) -> &mut [(K, W)];
 }
@@ -79,7 +82,8 @@ pub(super) struct Heap<K, W> {
 }
 
 /// A [`Table`] held inline, for fewer than [`INLINE`] sums: no allocation (the two of a
-/// [`Heap`] table and their frees were a tenth of a short bracket).
+/// [`Heap`] table and their frees were a tenth of a short bracket). Its indices are masked by
+/// the arrays' lengths, which changes none of them and spares the bounds checks.
 pub(super) struct Inline<K, W> {
     items: ArrayVec<(K, W), INLINE>,
     slots: [u8; 2 * INLINE],
@@ -95,27 +99,23 @@ impl<K: Key, W: Copy + PartialEq> Table<K, W> for Heap<K, W> {
     }
 
     #[inline(always)]
-    fn add(&mut self, mut slot: usize, mask: usize, m: K, w: W, plus: impl FnOnce(&mut W, &W)) {
+    fn slot(&self, slot: usize) -> usize {
+        self.slots[slot] as usize
+    }
+
+    #[inline(always)]
+    fn sum(&mut self, k: usize) -> &mut (K, W) {
+        &mut self.items[k]
+    }
+
+    #[inline(always)]
+    fn insert(&mut self, slot: usize, m: K, w: W) {
         debug_assert!(
             2 * self.items.len() < self.slots.len(),
             "more sums than promised"
         );
-        loop {
-            match self.slots[slot] {
-                0 => {
-                    self.items.push((m, w));
-                    self.slots[slot] = self.items.len() as u32;
-                    return;
-                }
-                k => {
-                    let item = &mut self.items[k as usize - 1];
-                    if item.0 == m {
-                        return plus(&mut item.1, &w);
-                    }
-                }
-            }
-            slot = (slot + 1) & mask;
-        }
+        self.items.push((m, w));
+        self.slots[slot] = self.items.len() as u32;
     }
 
     fn nonzero(&mut self, zero: W) -> &mut [(K, W)] {
@@ -135,25 +135,19 @@ impl<K: Key, W: Copy + PartialEq> Table<K, W> for Inline<K, W> {
     }
 
     #[inline(always)]
-    fn add(&mut self, mut slot: usize, mask: usize, m: K, w: W, plus: impl FnOnce(&mut W, &W)) {
-        debug_assert!(2 * self.items.len() < mask + 1, "more sums than promised");
-        // `mask` is below the array's length; the masks here only spare the bounds checks.
-        loop {
-            match self.slots[slot & (2 * INLINE - 1)] {
-                0 => {
-                    self.items.push((m, w));
-                    self.slots[slot & (2 * INLINE - 1)] = self.items.len() as u8;
-                    return;
-                }
-                k => {
-                    let item = &mut self.items[usize::from(k - 1) & (INLINE - 1)];
-                    if item.0 == m {
-                        return plus(&mut item.1, &w);
-                    }
-                }
-            }
-            slot = (slot + 1) & mask;
-        }
+    fn slot(&self, slot: usize) -> usize {
+        usize::from(self.slots[slot & (2 * INLINE - 1)])
+    }
+
+    #[inline(always)]
+    fn sum(&mut self, k: usize) -> &mut (K, W) {
+        &mut self.items[k & (INLINE - 1)]
+    }
+
+    #[inline(always)]
+    fn insert(&mut self, slot: usize, m: K, w: W) {
+        self.items.push((m, w));
+        self.slots[slot & (2 * INLINE - 1)] = self.items.len() as u8;
     }
 
     fn nonzero(&mut self, zero: W) -> &mut [(K, W)] {
@@ -246,8 +240,19 @@ impl<K: Key, I: IntegerRing, T: Table<K, I::Wide>> WordGather<K, I, T> {
     /// `sum(m) += w`.
     #[inline(always)]
     pub(super) fn add(&mut self, m: K, w: I::Wide) {
-        let slot = (m.hash() >> self.shift) as usize;
-        self.table.add(slot, self.mask, m, w, I::wide_add);
+        let mut slot = (m.hash() >> self.shift) as usize;
+        loop {
+            match self.table.slot(slot) {
+                0 => return self.table.insert(slot, m, w),
+                k => {
+                    let item = self.table.sum(k - 1);
+                    if item.0 == m {
+                        return I::wide_add(&mut item.1, &w);
+                    }
+                }
+            }
+            slot = (slot + 1) & self.mask;
+        }
     }
 
     /// The terms sorted descending, zero sums dropped, divided by the gcd of the sums and the
