@@ -130,6 +130,23 @@ macro_rules! by_width {
     };
 }
 
+/// `$fill` (which adds term products to `$words`, a `WordGather` for at most `$n` of them
+/// with the multiplier budget `$budget`, and says whether all of them fit) and then the sums,
+/// or `None`: the table is [`Inline`] for fewer than [`INLINE`] term products, else on the
+/// heap. The one place that picks; both tables are built where they stay (a macro, since
+/// the fill is compiled once for each).
+macro_rules! gathered {
+    ($n:expr, $budget:expr, |$words:ident| $fill:expr) => {
+        if $n < INLINE {
+            let mut $words = WordGather::<K, I, Inline<K, I::Wide>>::new($n, $budget);
+            ($fill).then(|| $words.finish())
+        } else {
+            let mut $words = WordGather::<K, I>::new($n, $budget);
+            ($fill).then(|| $words.finish())
+        }
+    };
+}
+
 /// The product of two term lists, sorted, combined, zeros dropped. The caller has checked
 /// that every exponent of the product stays within its field.
 pub(crate) fn product<I: IntegerRing>(
@@ -295,13 +312,9 @@ fn sum_of_products_of_width<K: Key, I: IntegerRing>(
         per_monomial = per_monomial.saturating_mul(map.fan_in());
     }
     let budget = WordGather::<K, I>::budget(ab_bits, per_monomial)?;
-    if n < INLINE {
-        let mut words = WordGather::<K, I, Inline<K, I::Wide>>::new(n, budget);
-        gather_products(&mut words, layout, products, map).then(|| words.finish())
-    } else {
-        let mut words = WordGather::<K, I>::new(n, budget);
-        gather_products(&mut words, layout, products, map).then(|| words.finish())
-    }
+    gathered!(n, budget, |words| gather_products(
+        &mut words, layout, products, map
+    ))
 }
 
 /// Adds the term products of every product to `words`; whether all of them fit.
@@ -361,15 +374,12 @@ fn product_of_width<K: Key, I: IntegerRing>(
     if let (Some(x), Some(y)) = (small_bits(a.1), small_bits(b.1)) {
         let per_monomial = a.1.len().min(b.1.len());
         if let Some(budget) = WordGather::<K, I>::budget(x + y, per_monomial) {
-            let sums = if n < INLINE {
-                let mut words = WordGather::<K, I, Inline<K, I::Wide>>::new(n, budget);
-                product_pairs(a, b, &bias, |m, x, y, k| words.push(m, x, y, k, 0))
-                    .then(|| words.finish())
-            } else {
-                let mut words = WordGather::<K, I>::new(n, budget);
-                product_pairs(a, b, &bias, |m, x, y, k| words.push(m, x, y, k, 0))
-                    .then(|| words.finish())
-            };
+            let sums = gathered!(n, budget, |words| product_pairs(
+                a,
+                b,
+                &bias,
+                |m, x, y, k| { words.push(m, x, y, k, 0) }
+            ));
             if let Some(sums) = sums {
                 return sums;
             }
@@ -385,15 +395,9 @@ fn square_of_width<K: Key, I: IntegerRing>(layout: &Layout, a: (&[u64], &[I])) -
     let n = a.1.len() * (a.1.len() + 1) / 2;
     if let Some(x) = small_bits(a.1) {
         if let Some(budget) = WordGather::<K, I>::budget(2 * x, a.1.len()) {
-            let sums = if n < INLINE {
-                let mut words = WordGather::<K, I, Inline<K, I::Wide>>::new(n, budget);
-                square_pairs(a, &bias, |m, x, y, k| words.push(m, x, y, k, 0))
-                    .then(|| words.finish())
-            } else {
-                let mut words = WordGather::<K, I>::new(n, budget);
-                square_pairs(a, &bias, |m, x, y, k| words.push(m, x, y, k, 0))
-                    .then(|| words.finish())
-            };
+            let sums = gathered!(n, budget, |words| square_pairs(a, &bias, |m, x, y, k| {
+                words.push(m, x, y, k, 0)
+            }));
             if let Some(sums) = sums {
                 return sums;
             }
@@ -432,13 +436,9 @@ fn jacobians_of_width<K: Key, I: IntegerRing>(
     let budget = WordGather::<K, I>::budget(ab_bits, per_monomial)?;
     let n = f.1.len() * g.1.len() * count;
     let active = &active[..count];
-    if n < INLINE {
-        let mut out = WordGather::<K, I, Inline<K, I::Wide>>::new(n, budget);
-        gather_jacobians(&mut out, layout, f, g, active).then(|| out.finish())
-    } else {
-        let mut out = WordGather::<K, I>::new(n, budget);
-        gather_jacobians(&mut out, layout, f, g, active).then(|| out.finish())
-    }
+    gathered!(n, budget, |out| gather_jacobians(
+        &mut out, layout, f, g, active
+    ))
 }
 
 /// Adds the term products of `Σ ∂(f, g)/∂(q, p)` over the `active` pairs to `out`; whether

@@ -46,7 +46,7 @@ pub(super) struct WordGather<K, I: IntegerRing, T = Heap<K, <I as IntegerRing>::
     table: T,
     /// `64 − log₂(slots)`: a hash's top bits pick the slot.
     shift: u32,
-    /// `slots − 1`.
+    /// `slots − 1`, kept rather than derived from `shift`: every probe reads it.
     mask: usize,
     /// The bits left for the multiplier `k` of a product `a·b·k`: [`SUM_BITS`] less the
     /// bits of the most term products one monomial can gather and the most bits of `a` and
@@ -257,7 +257,8 @@ impl<K: Key, I: IntegerRing, T: Table<K, I::Wide>> WordGather<K, I, T> {
 
     /// The terms sorted descending, zero sums dropped, divided by the gcd of the sums and the
     /// sign of the leading one (on machine words, while they are converted), so that they are
-    /// primitive.
+    /// primitive. Takes `&mut self` so that an [`Inline`] table is not moved (copied) into
+    /// the call; the table is spent afterwards.
     pub(super) fn finish(&mut self) -> Gathered<I> {
         let zero = I::Wide::default();
         let items = self.table.nonzero(zero);
