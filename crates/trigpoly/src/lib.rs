@@ -54,7 +54,7 @@ pub use error::AlgebraError;
 pub use lower::{Context, NoContext};
 pub use number::{
     Coefficient, ExactDivisor, GaussianAcc, GaussianInteger, GaussianRational, Integer, IntegerAcc,
-    IntegerRing, ParseGaussianError, ParseRationalError, Rational,
+    IntegerRing, IntegerView, ParseGaussianError, ParseRationalError, Rational,
 };
 pub use poly::{CosSinTerm, Point, Poly, Term, TrigMonomial};
 pub use print::{superscript, Style};

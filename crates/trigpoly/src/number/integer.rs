@@ -1,13 +1,18 @@
-//! `Integer`: a machine integer that becomes a big integer only when it has to.
+//! `Integer`: a machine integer that becomes a big integer only when it has to, in one word.
 //!
-//! Every value that fits an `i64` is stored as `Small`, every other value that fits an `i128`
-//! as `Wide` (one 16-byte allocation, where a `BigInt` takes two), and only the rest as `Big`,
-//! so equality and hashing are structural. Each operation tries the machine path with exact
+//! A value of 63 bits is held in the word itself, tagged by its low bit (as FLINT's `fmpz` holds
+//! its small values); any other value that fits an `i128` is boxed as `Wide` (one 16-byte
+//! allocation, where a `BigInt` takes two), and only the rest as `Big`. The form is canonical,
+//! so equality and hashing follow the value. Each operation tries the machine path with exact
 //! overflow detection (`checked_*`, `i128` intermediates) and falls back to
-//! `num_bigint::BigInt`.
+//! `num_bigint::BigInt`. The word and its tag live in the module `word` below, the one place
+//! with `unsafe` code; everything else reads an `Integer` through [`Integer::view`]. The unit
+//! tests at the end check the representation at every boundary, also under Miri:
+//! `MIRIFLAGS=-Zmiri-strict-provenance cargo +nightly miri test -p trigpoly --lib number::integer`.
 
 use std::cmp::Ordering;
 use std::fmt;
+use std::hash::{Hash, Hasher};
 use std::ops::{Add, AddAssign, Mul, MulAssign, Neg, Sub, SubAssign};
 use std::str::FromStr;
 
@@ -16,71 +21,233 @@ use num_bigint::BigInt;
 use num_integer::Integer as _;
 use num_traits::{One, Signed, ToPrimitive, Zero};
 
-/// An exact integer: `i64` when it fits, else `i128` when that fits, else `BigInt`.
-///
-/// Invariant: `Wide` never holds a value that fits in `i64`, and `Big` never one that fits in
-/// `i128`.
-///
-/// ```
-/// use trigpoly::Integer;
-/// let big = Integer::from(i64::MAX) + Integer::from(1);
-/// assert_eq!(big.to_string(), "9223372036854775808");
-/// assert_eq!(big - Integer::from(1), Integer::from(i64::MAX));
-/// ```
-#[derive(PartialEq, Eq, Hash)]
-pub enum Integer {
-    /// A value in `i64` range.
+pub use word::Integer;
+
+/// An [`Integer`] as read: a value of the word, or a boxed wider one.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum IntegerView<'a> {
+    /// A value in `[−2⁶², 2⁶²)`, held in the word.
     Small(i64),
-    /// A value outside `i64` range but inside `i128` range (sums of products of `i64`s, the
-    /// coefficients of most large products).
-    Wide(Box<i128>),
+    /// A value outside the word's range but inside `i128` range (sums of products of words,
+    /// the coefficients of most large products).
+    Wide(i128),
     /// A value outside `i128` range.
-    Big(Box<BigInt>),
+    Big(&'a BigInt),
 }
 
-/// Written out so that the common case, a `Small` value, is a copy inlined at the call (the
-/// derived clone is a call that matches every variant).
-impl Clone for Integer {
+/// A value an [`Integer`] boxes, as it is built.
+enum Boxed {
+    Wide(i128),
+    Big(BigInt),
+}
+
+/// The one-word representation and the `unsafe` code it takes.
+mod word {
+    use std::num::NonZeroUsize;
+    use std::ptr::NonNull;
+
+    use num_bigint::BigInt;
+
+    use super::{Boxed, IntegerView};
+
+    /// An exact integer in one word: a 63-bit value tagged by a low bit of one, or a pointer
+    /// to a boxed `i128` (low bits `00`) or to a boxed `BigInt`, plus two (low bits `10`);
+    /// the alignment of both leaves the two low bits of their addresses zero.
+    ///
+    /// Invariant: a boxed `i128` never holds a value of 63 bits, and a boxed `BigInt` never
+    /// one that fits in `i128`.
+    ///
+    /// ```
+    /// use trigpoly::Integer;
+    /// let big = Integer::from(i64::MAX) + Integer::from(1);
+    /// assert_eq!(big.to_string(), "9223372036854775808");
+    /// assert_eq!(big - Integer::from(1), Integer::from(i64::MAX));
+    /// ```
+    pub struct Integer {
+        /// `2v + 1` for a small value `v` (an address without provenance), or the box.
+        word: NonNull<u8>,
+    }
+
+    /// The low bit that marks a small value.
+    const SMALL: usize = 1;
+    /// The offset that marks a pointer to a `BigInt`.
+    const BIG: usize = 2;
+
+    const _: () = assert!(std::mem::align_of::<i128>() >= 4 && std::mem::align_of::<BigInt>() >= 4);
+
+    // SAFETY: an `Integer` owns its box, if it has one, as a `Box<i128>` or `Box<BigInt>`
+    // would, and never shares it (`Clone` copies it); both are `Send` and `Sync`.
+    unsafe impl Send for Integer {}
+    // SAFETY: as for `Send`: `&Integer` only reads the box.
+    unsafe impl Sync for Integer {}
+
+    impl Integer {
+        /// The smallest value held in the word.
+        pub(crate) const SMALL_MIN: i64 = -(1 << 62);
+        /// The largest value held in the word.
+        pub(crate) const SMALL_MAX: i64 = (1 << 62) - 1;
+
+        /// `v`, which must lie in `[SMALL_MIN, SMALL_MAX]`, in the word.
+        #[inline(always)]
+        pub(crate) const fn small_unchecked(v: i64) -> Integer {
+            debug_assert!(Integer::SMALL_MIN <= v && v <= Integer::SMALL_MAX);
+            let tagged = ((v << 1) as usize) | SMALL;
+            match NonZeroUsize::new(tagged) {
+                // The tag bit makes it nonzero.
+                Some(nonzero) => Integer {
+                    word: NonNull::without_provenance(nonzero),
+                },
+                None => unreachable!(),
+            }
+        }
+
+        /// `v` boxed; `v` must be outside the word's range (`Wide`) or `i128`'s (`Big`).
+        #[inline(never)]
+        pub(super) fn boxed(v: Boxed) -> Integer {
+            let word = match v {
+                Boxed::Wide(v) => NonNull::from(Box::leak(Box::new(v))).cast::<u8>(),
+                // SAFETY: a `BigInt` is larger than `BIG` bytes, so the tagged pointer stays
+                // inside its allocation (and is not null).
+                Boxed::Big(b) => unsafe {
+                    NonNull::from(Box::leak(Box::new(b)))
+                        .cast::<u8>()
+                        .byte_add(BIG)
+                },
+            };
+            Integer { word }
+        }
+
+        /// The value in the word, if it is held there.
+        #[inline(always)]
+        pub fn small(&self) -> Option<i64> {
+            let w = self.word.addr().get();
+            (w & SMALL != 0).then_some((w as i64) >> 1)
+        }
+
+        /// The value, read.
+        #[inline(always)]
+        pub fn view(&self) -> IntegerView<'_> {
+            let w = self.word.addr().get();
+            if w & SMALL != 0 {
+                IntegerView::Small((w as i64) >> 1)
+            } else if w & BIG == 0 {
+                // SAFETY: the pointer from `Box::leak` of an `i128` in `boxed`, to a box this
+                // `Integer` owns and that lives as long as it does.
+                IntegerView::Wide(unsafe { *self.word.cast::<i128>().as_ref() })
+            } else {
+                // SAFETY: the pointer from `Box::leak` of a `BigInt` in `boxed`, plus `BIG`;
+                // the box is owned by this `Integer` and lives as long as it does.
+                IntegerView::Big(unsafe { self.word.byte_sub(BIG).cast::<BigInt>().as_ref() })
+            }
+        }
+
+        /// Whether two values are the same word: equal small values (boxed ones never share
+        /// a word, so a `false` says nothing).
+        #[inline(always)]
+        pub(super) fn same_word(&self, other: &Integer) -> bool {
+            self.word == other.word
+        }
+    }
+
+    impl Drop for Integer {
+        #[inline]
+        fn drop(&mut self) {
+            let w = self.word.addr().get();
+            if w & SMALL != 0 {
+                return;
+            }
+            // SAFETY: the pointers from `Box::leak` in `boxed` (less `BIG` for a `BigInt`),
+            // owned by this `Integer` alone and freed once, here.
+            unsafe {
+                if w & BIG == 0 {
+                    drop(Box::from_raw(self.word.cast::<i128>().as_ptr()));
+                } else {
+                    drop(Box::from_raw(
+                        self.word.byte_sub(BIG).cast::<BigInt>().as_ptr(),
+                    ));
+                }
+            }
+        }
+    }
+
+    /// Written out so that the common case, a small value, is a copy of the word inlined at
+    /// the call.
+    impl Clone for Integer {
+        #[inline]
+        fn clone(&self) -> Self {
+            match self.small() {
+                Some(_) => Integer { word: self.word },
+                None => self.clone_boxed(),
+            }
+        }
+    }
+
+    impl Integer {
+        #[inline(never)]
+        fn clone_boxed(&self) -> Self {
+            match self.view() {
+                IntegerView::Small(v) => Integer::small_unchecked(v),
+                IntegerView::Wide(v) => Integer::boxed(Boxed::Wide(v)),
+                IntegerView::Big(b) => Integer::boxed(Boxed::Big(b.clone())),
+            }
+        }
+    }
+}
+
+impl PartialEq for Integer {
     #[inline]
-    fn clone(&self) -> Self {
-        match self {
-            Integer::Small(v) => Integer::Small(*v),
-            boxed => boxed.clone_boxed(),
+    fn eq(&self, other: &Self) -> bool {
+        // The form is canonical: equal values are equal views.
+        self.same_word(other) || (self.small().is_none() && self.view() == other.view())
+    }
+}
+
+impl Eq for Integer {}
+
+impl Hash for Integer {
+    fn hash<H: Hasher>(&self, state: &mut H) {
+        match self.view() {
+            IntegerView::Small(v) => v.hash(state),
+            IntegerView::Wide(v) => v.hash(state),
+            IntegerView::Big(b) => b.hash(state),
         }
     }
 }
 
 impl Integer {
-    #[inline(never)]
-    fn clone_boxed(&self) -> Self {
-        match self {
-            Integer::Small(v) => Integer::Small(*v),
-            Integer::Wide(v) => Integer::Wide(v.clone()),
-            Integer::Big(b) => Integer::Big(b.clone()),
-        }
-    }
-
     /// Zero.
-    pub const ZERO: Integer = Integer::Small(0);
+    pub const ZERO: Integer = Integer::small_unchecked(0);
     /// One.
-    pub const ONE: Integer = Integer::Small(1);
+    pub const ONE: Integer = Integer::small_unchecked(1);
 
     /// Whether the value is zero.
+    #[inline]
     pub fn is_zero(&self) -> bool {
-        matches!(self, Integer::Small(0))
+        self.small() == Some(0)
     }
 
     /// Whether the value is one.
+    #[inline]
     pub fn is_one(&self) -> bool {
-        matches!(self, Integer::Small(1))
+        self.small() == Some(1)
+    }
+
+    /// `v`, in the word when it fits there.
+    #[inline(always)]
+    fn from_i64(v: i64) -> Integer {
+        if (Integer::SMALL_MIN..=Integer::SMALL_MAX).contains(&v) {
+            Integer::small_unchecked(v)
+        } else {
+            Integer::boxed(Boxed::Wide(v as i128))
+        }
     }
 
     /// The sign: -1, 0 or 1.
     pub fn signum(&self) -> i32 {
-        match self {
-            Integer::Small(v) => v.signum() as i32,
-            Integer::Wide(v) => v.signum() as i32,
-            Integer::Big(b) => {
+        match self.view() {
+            IntegerView::Small(v) => v.signum() as i32,
+            IntegerView::Wide(v) => v.signum() as i32,
+            IntegerView::Big(b) => {
                 if b.is_negative() {
                     -1
                 } else {
@@ -96,29 +263,40 @@ impl Integer {
     }
 
     /// The value as `i64`, if it fits.
+    #[inline]
     pub fn to_i64(&self) -> Option<i64> {
-        match self {
-            Integer::Small(v) => Some(*v),
-            Integer::Wide(_) | Integer::Big(_) => None,
+        match self.small() {
+            Some(v) => Some(v),
+            None => self.boxed_to_i64(),
+        }
+    }
+
+    /// [`Integer::to_i64`] of a boxed value (the 64th bit), out of line.
+    #[inline(never)]
+    fn boxed_to_i64(&self) -> Option<i64> {
+        match self.view() {
+            IntegerView::Wide(v) => i64::try_from(v).ok(),
+            IntegerView::Small(v) => Some(v),
+            IntegerView::Big(_) => None,
         }
     }
 
     /// The value as `i128`, if it fits.
     #[inline]
     pub fn to_i128(&self) -> Option<i128> {
-        match self {
-            Integer::Small(v) => Some(*v as i128),
-            Integer::Wide(v) => Some(**v),
-            Integer::Big(_) => None,
+        match self.view() {
+            IntegerView::Small(v) => Some(v as i128),
+            IntegerView::Wide(v) => Some(v),
+            IntegerView::Big(_) => None,
         }
     }
 
     /// The value as a `BigInt`.
     pub fn to_bigint(&self) -> BigInt {
-        match self {
-            Integer::Small(v) => BigInt::from(*v),
-            Integer::Wide(v) => BigInt::from(**v),
-            Integer::Big(b) => (**b).clone(),
+        match self.view() {
+            IntegerView::Small(v) => BigInt::from(v),
+            IntegerView::Wide(v) => BigInt::from(v),
+            IntegerView::Big(b) => b.clone(),
         }
     }
 
@@ -126,8 +304,8 @@ impl Integer {
     #[inline]
     pub fn from_i128(v: i128) -> Integer {
         match i64::try_from(v) {
-            Ok(s) => Integer::Small(s),
-            Err(_) => Integer::Wide(Box::new(v)),
+            Ok(s) => Integer::from_i64(s),
+            Err(_) => Integer::boxed(Boxed::Wide(v)),
         }
     }
 
@@ -149,7 +327,7 @@ impl Integer {
     pub fn from_bigint(b: BigInt) -> Integer {
         match b.to_i128() {
             Some(v) => Integer::from_i128(v),
-            None => Integer::Big(Box::new(b)),
+            None => Integer::boxed(Boxed::Big(b)),
         }
     }
 
@@ -170,10 +348,8 @@ impl Integer {
     /// few, and `num-bigint`'s gcd shifts the long side one step per bit.
     #[inline]
     pub fn gcd(&self, other: &Integer) -> Integer {
-        match (self, other) {
-            (Integer::Small(a), Integer::Small(b)) => {
-                Integer::from(binary_gcd(a.unsigned_abs(), b.unsigned_abs()))
-            }
+        match (self.small(), other.small()) {
+            (Some(a), Some(b)) => Integer::from(binary_gcd(a.unsigned_abs(), b.unsigned_abs())),
             _ => self.gcd_long(other),
         }
     }
@@ -183,12 +359,17 @@ impl Integer {
     #[inline(never)]
     fn gcd_long(&self, other: &Integer) -> Integer {
         let word = |v: &Integer| v.to_i128().expect("not Big").unsigned_abs();
-        match (self, other) {
-            (Integer::Big(b), Integer::Big(c)) => Integer::from_bigint(b.gcd(c)),
-            (Integer::Big(b), short) | (short, Integer::Big(b)) => {
+        match (self.view(), other.view()) {
+            (IntegerView::Big(b), IntegerView::Big(c)) => Integer::from_bigint(b.gcd(c)),
+            (IntegerView::Big(b), _) | (_, IntegerView::Big(b)) => {
+                let short = if matches!(self.view(), IntegerView::Big(_)) {
+                    other
+                } else {
+                    self
+                };
                 let a = word(short);
                 if a == 0 {
-                    return Integer::Big(Box::new(b.abs()));
+                    return Integer::boxed(Boxed::Big(b.abs()));
                 }
                 let r = (b.magnitude() % a).to_u128().expect("below a u128");
                 Integer::from_u128(gcd_u128(a, r))
@@ -218,10 +399,10 @@ impl Integer {
     ///
     /// Panics if `d` is zero; the result is only meaningful when `d` divides `self`.
     pub fn div_exact(&self, d: &Integer) -> Integer {
-        match (self, d) {
-            (Integer::Small(a), Integer::Small(b)) => match a.checked_div(*b) {
-                Some(q) => Integer::Small(q),
-                None => Integer::from_i128(*a as i128 / *b as i128),
+        match (self.small(), d.small()) {
+            (Some(a), Some(b)) => match a.checked_div(b) {
+                Some(q) => Integer::from_i64(q),
+                None => Integer::from_i128(a as i128 / b as i128),
             },
             _ => match (self.to_i128(), d.to_i128()) {
                 (Some(a), Some(b)) => Integer::from_i128_op(a, b, i128::checked_div, |a, b| a / b),
@@ -232,8 +413,8 @@ impl Integer {
 
     /// Whether `d` divides `self` (`d` nonzero).
     pub fn is_divisible_by(&self, d: &Integer) -> bool {
-        match (self, d) {
-            (Integer::Small(a), Integer::Small(b)) => (*a as i128) % (*b as i128) == 0,
+        match (self.small(), d.small()) {
+            (Some(a), Some(b)) => (a as i128) % (b as i128) == 0,
             _ => match (self.to_i128(), d.to_i128()) {
                 // The remainder overflows only for i128::MIN / −1, which divides.
                 (Some(a), Some(b)) => a.checked_rem(b).is_none_or(|r| r == 0),
@@ -244,9 +425,9 @@ impl Integer {
 
     /// `self^e`.
     pub fn pow(&self, e: u32) -> Integer {
-        if let Integer::Small(v) = self {
+        if let Some(v) = self.small() {
             if let Some(p) = v.checked_pow(e) {
-                return Integer::Small(p);
+                return Integer::from_i64(p);
             }
         }
         Integer::from_bigint(num_traits::pow(self.to_bigint(), e as usize))
@@ -254,10 +435,10 @@ impl Integer {
 
     /// Number of bits of the absolute value.
     pub fn bits(&self) -> u64 {
-        match self {
-            Integer::Small(v) => 64 - v.unsigned_abs().leading_zeros() as u64,
-            Integer::Wide(v) => 128 - v.unsigned_abs().leading_zeros() as u64,
-            Integer::Big(b) => b.bits(),
+        match self.view() {
+            IntegerView::Small(v) => 64 - v.unsigned_abs().leading_zeros() as u64,
+            IntegerView::Wide(v) => 128 - v.unsigned_abs().leading_zeros() as u64,
+            IntegerView::Big(b) => b.bits(),
         }
     }
 }
@@ -298,9 +479,9 @@ enum DivisorKind {
 impl ExactDivisor {
     /// Prepares `d`, which must not be zero.
     pub fn new(d: &Integer) -> ExactDivisor {
-        let kind = match d {
-            Integer::Small(-1) => DivisorKind::MinusOne,
-            Integer::Small(v) if v.unsigned_abs() >= 2 => {
+        let kind = match d.to_i64() {
+            Some(-1) => DivisorKind::MinusOne,
+            Some(v) if v.unsigned_abs() >= 2 => {
                 let shift = v.trailing_zeros();
                 let u = v.unsigned_abs() >> shift;
                 // Newton's iteration doubles the correct low bits: u·u ≡ 1 (mod 8) to start.
@@ -311,7 +492,7 @@ impl ExactDivisor {
                 DivisorKind::Word {
                     shift,
                     inverse,
-                    negative: *v < 0,
+                    negative: v < 0,
                 }
             }
             _ => DivisorKind::General,
@@ -322,18 +503,18 @@ impl ExactDivisor {
     /// `a / d`, for `a` a multiple of `d` (the quotient is wrong otherwise).
     #[inline]
     pub fn divide(&self, a: &Integer) -> Integer {
-        match (a, self.kind) {
+        match (a.small(), self.kind) {
             (
-                Integer::Small(v),
+                Some(v),
                 DivisorKind::Word {
                     shift,
                     inverse,
                     negative,
                 },
             ) => {
-                // |d| ≥ 2, so the quotient fits an i64 and so does its negation.
+                // |d| ≥ 2, so the quotient and its negation are in the word's range.
                 let q = (v >> shift).wrapping_mul(inverse as i64);
-                Integer::Small(if negative { -q } else { q })
+                Integer::small_unchecked(if negative { -q } else { q })
             }
             (_, DivisorKind::MinusOne) => -a,
             _ => a.div_exact(&self.d),
@@ -348,14 +529,15 @@ impl Default for Integer {
 }
 
 impl From<i64> for Integer {
+    #[inline]
     fn from(v: i64) -> Self {
-        Integer::Small(v)
+        Integer::from_i64(v)
     }
 }
 
 impl From<i32> for Integer {
     fn from(v: i32) -> Self {
-        Integer::Small(v as i64)
+        Integer::small_unchecked(v as i64)
     }
 }
 
@@ -379,8 +561,8 @@ impl From<&Integer> for BigInt {
 
 impl Ord for Integer {
     fn cmp(&self, other: &Self) -> Ordering {
-        match (self, other) {
-            (Integer::Small(a), Integer::Small(b)) => a.cmp(b),
+        match (self.small(), other.small()) {
+            (Some(a), Some(b)) => a.cmp(&b),
             _ => match (self.to_i128(), other.to_i128()) {
                 (Some(a), Some(b)) => a.cmp(&b),
                 _ => self.to_bigint().cmp(&other.to_bigint()),
@@ -397,10 +579,10 @@ impl PartialOrd for Integer {
 
 impl fmt::Display for Integer {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        match self {
-            Integer::Small(v) => write!(f, "{v}"),
-            Integer::Wide(v) => write!(f, "{v}"),
-            Integer::Big(b) => write!(f, "{b}"),
+        match self.view() {
+            IntegerView::Small(v) => write!(f, "{v}"),
+            IntegerView::Wide(v) => write!(f, "{v}"),
+            IntegerView::Big(b) => write!(f, "{b}"),
         }
     }
 }
@@ -421,31 +603,26 @@ impl FromStr for Integer {
 // a + b, a - b, a * b: machine path with overflow check, else BigInt.
 #[inline]
 fn add_ref(a: &Integer, b: &Integer) -> Integer {
-    match (a, b) {
-        (Integer::Small(x), Integer::Small(y)) => match x.checked_add(*y) {
-            Some(v) => Integer::Small(v),
-            None => Integer::from_i128(*x as i128 + *y as i128),
-        },
+    match (a.small(), b.small()) {
+        // Two values of 63 bits: the sum has 64.
+        (Some(x), Some(y)) => Integer::from_i64(x + y),
         _ => wide_or_big(a, b, i128::checked_add, |a, b| a + b),
     }
 }
 
 fn sub_ref(a: &Integer, b: &Integer) -> Integer {
-    match (a, b) {
-        (Integer::Small(x), Integer::Small(y)) => match x.checked_sub(*y) {
-            Some(v) => Integer::Small(v),
-            None => Integer::from_i128(*x as i128 - *y as i128),
-        },
+    match (a.small(), b.small()) {
+        (Some(x), Some(y)) => Integer::from_i64(x - y),
         _ => wide_or_big(a, b, i128::checked_sub, |a, b| a - b),
     }
 }
 
 #[inline]
 fn mul_ref(a: &Integer, b: &Integer) -> Integer {
-    match (a, b) {
-        (Integer::Small(x), Integer::Small(y)) => match x.checked_mul(*y) {
-            Some(v) => Integer::Small(v),
-            None => Integer::from_i128(*x as i128 * *y as i128),
+    match (a.small(), b.small()) {
+        (Some(x), Some(y)) => match x.checked_mul(y) {
+            Some(v) => Integer::from_i64(v),
+            None => Integer::from_i128(x as i128 * y as i128),
         },
         _ => wide_or_big(a, b, i128::checked_mul, |a, b| a * b),
     }
@@ -513,14 +690,15 @@ impl Neg for &Integer {
     type Output = Integer;
     #[inline]
     fn neg(self) -> Integer {
-        match self {
-            Integer::Small(v) if *v != i64::MIN => Integer::Small(-v),
-            _ => neg_wide_or_big(self),
+        match self.small() {
+            // −2⁶² negates to 2⁶², past the word: `from_i64` boxes it.
+            Some(v) => Integer::from_i64(-v),
+            None => neg_wide_or_big(self),
         }
     }
 }
 
-/// `−a` for `i64::MIN` and anything wider.
+/// `−a` for a boxed `a`.
 #[cold]
 fn neg_wide_or_big(a: &Integer) -> Integer {
     match a.to_i128() {
@@ -566,8 +744,8 @@ impl IntegerAcc {
     /// `acc += a * b`.
     #[inline]
     pub fn add_mul(&mut self, a: &Integer, b: &Integer) {
-        if let (Integer::Small(x), Integer::Small(y)) = (a, b) {
-            let p = *x as i128 * *y as i128;
+        if let (Some(x), Some(y)) = (a.small(), b.small()) {
+            let p = x as i128 * y as i128;
             match self.small.checked_add(p) {
                 Some(s) => self.small = s,
                 None => self.spill(BigInt::from(p)),
@@ -580,24 +758,24 @@ impl IntegerAcc {
     /// `acc += a`.
     #[inline]
     pub fn add(&mut self, a: &Integer) {
-        match a {
-            Integer::Small(x) => match self.small.checked_add(*x as i128) {
+        match a.view() {
+            IntegerView::Small(x) => match self.small.checked_add(x as i128) {
                 Some(s) => self.small = s,
-                None => self.spill(BigInt::from(*x)),
+                None => self.spill(BigInt::from(x)),
             },
-            Integer::Wide(v) => match self.small.checked_add(**v) {
+            IntegerView::Wide(v) => match self.small.checked_add(v) {
                 Some(s) => self.small = s,
-                None => self.spill(BigInt::from(**v)),
+                None => self.spill(BigInt::from(v)),
             },
-            Integer::Big(b) => self.spill((**b).clone()),
+            IntegerView::Big(b) => self.spill(b.clone()),
         }
     }
 
     /// `acc -= a * b`.
     #[inline]
     pub fn sub_mul(&mut self, a: &Integer, b: &Integer) {
-        if let (Integer::Small(x), Integer::Small(y)) = (a, b) {
-            let p = *x as i128 * *y as i128;
+        if let (Some(x), Some(y)) = (a.small(), b.small()) {
+            let p = x as i128 * y as i128;
             match self.small.checked_sub(p) {
                 Some(s) => self.small = s,
                 None => self.spill(-BigInt::from(p)),
@@ -627,5 +805,100 @@ impl IntegerAcc {
             None => self.small == 0,
             Some(b) => (b + BigInt::from(self.small)).is_zero(),
         }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::{Integer, IntegerView};
+    use num_bigint::BigInt;
+    use std::collections::HashSet;
+
+    /// The values either side of every boundary between the word, the boxed `i128` and the
+    /// boxed `BigInt`, and of `i64`'s range.
+    fn edges() -> Vec<BigInt> {
+        let word = 1i128 << 62;
+        let mut v: Vec<BigInt> = [0, 1, -1, word, i64::MAX as i128 + 1, i128::MAX]
+            .iter()
+            .flat_map(|&e| [e, -e, e - 1, -e + 1, e.saturating_add(1), -e - 1])
+            .map(BigInt::from)
+            .collect();
+        let past: BigInt = BigInt::from(i128::MAX) + 1u32;
+        v.extend([
+            past.clone(),
+            -past.clone() - 1u32,
+            -past,
+            BigInt::from(3u32).pow(200u32),
+        ]);
+        v
+    }
+
+    #[test]
+    fn an_integer_is_one_word() {
+        assert_eq!(std::mem::size_of::<Integer>(), 8);
+        assert_eq!(std::mem::size_of::<Option<Integer>>(), 8);
+    }
+
+    /// Every value is held where its size says (the word for 63 bits, a boxed `i128` up to
+    /// `i128`'s range, a boxed `BigInt` beyond), however it was built, and reads back as
+    /// itself.
+    #[test]
+    fn values_are_held_canonically_and_read_back() {
+        let word = -(1i128 << 62)..(1i128 << 62);
+        for b in edges() {
+            let direct = Integer::from_bigint(b.clone());
+            // The same value reached by arithmetic from a different tier.
+            let reached = &(&direct + &Integer::from(3)) - &Integer::from(3);
+            for v in [&direct, &reached, &direct.clone()] {
+                assert_eq!(v.to_bigint(), b);
+                match (v.view(), i128::try_from(&b)) {
+                    (IntegerView::Small(s), Ok(x)) => {
+                        assert!(word.contains(&x));
+                        assert_eq!(s as i128, x);
+                    }
+                    (IntegerView::Wide(w), Ok(x)) => {
+                        assert!(!word.contains(&x));
+                        assert_eq!(w, x);
+                    }
+                    (IntegerView::Big(big), Err(_)) => assert_eq!(big, &b),
+                    (view, _) => panic!("{b} held as {view:?}"),
+                }
+                assert_eq!(v.to_i64(), i64::try_from(&b).ok());
+                assert_eq!(v.to_i128(), i128::try_from(&b).ok());
+            }
+            assert_eq!(direct, reached);
+        }
+    }
+
+    /// Equal values are equal and hash alike, distinct ones are not equal, across the tiers;
+    /// clones and drops of boxed values leave the originals intact.
+    #[test]
+    fn equality_hashing_clones_and_drops_follow_the_value() {
+        let values: Vec<Integer> = edges().into_iter().map(Integer::from_bigint).collect();
+        let distinct: HashSet<BigInt> = edges().into_iter().collect();
+        let set: HashSet<Integer> = values.iter().cloned().collect();
+        assert_eq!(set.len(), distinct.len());
+        for a in &values {
+            assert!(set.contains(&a.clone()));
+            for b in &values {
+                assert_eq!(a == b, a.to_bigint() == b.to_bigint(), "{a} {b}");
+                assert_eq!(a.cmp(b), a.to_bigint().cmp(&b.to_bigint()), "{a} {b}");
+            }
+            let copy = a.clone();
+            drop(a.clone());
+            assert_eq!(&copy, a);
+        }
+    }
+
+    /// The constants are the small values they name, and the negation of the word's least
+    /// value leaves the word.
+    #[test]
+    fn constants_and_the_words_edge_under_negation() {
+        assert_eq!(Integer::ZERO.view(), IntegerView::Small(0));
+        assert_eq!(Integer::ONE.view(), IntegerView::Small(1));
+        let least = Integer::from(-(1i64 << 62));
+        assert_eq!(least.view(), IntegerView::Small(-(1 << 62)));
+        assert_eq!((-&least).view(), IntegerView::Wide(1 << 62));
+        assert_eq!(-(-&least), least);
     }
 }

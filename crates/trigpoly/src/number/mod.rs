@@ -19,7 +19,7 @@ use gcd::gcd_u128;
 pub(crate) use gcd::binary_gcd;
 
 pub use gaussian::{GaussianAcc, GaussianInteger, GaussianRational, ParseGaussianError};
-pub use integer::{ExactDivisor, Integer, IntegerAcc};
+pub use integer::{ExactDivisor, Integer, IntegerAcc, IntegerView};
 pub use rational::{ParseRationalError, Rational};
 
 /// The integer ring under a coefficient field: `Integer` (Z) or `GaussianInteger` (Z\[i\]).
@@ -108,6 +108,7 @@ impl IntegerRing for Integer {
     type Wide = i128;
     const GAUSS_LEMMA: bool = true;
     const PRODUCTS_PER_COMPONENT: u32 = 1;
+    #[inline]
     fn to_small(&self) -> Option<i64> {
         self.to_i64()
     }
@@ -221,6 +222,7 @@ impl IntegerRing for GaussianInteger {
     type Wide = (i128, i128);
     const GAUSS_LEMMA: bool = false;
     const PRODUCTS_PER_COMPONENT: u32 = 2;
+    #[inline]
     fn to_small(&self) -> Option<(i64, i64)> {
         Some((self.re.to_i64()?, self.im.to_i64()?))
     }
@@ -299,9 +301,8 @@ impl IntegerRing for GaussianInteger {
     #[inline]
     fn add(&self, o: &Self) -> Self {
         if let Some((a, b, c, d)) = word_parts(self, o) {
-            if let (Some(re), Some(im)) = (a.checked_add(c), b.checked_add(d)) {
-                return GaussianInteger::new(Integer::Small(re), Integer::Small(im));
-            }
+            // Values of 63 bits: the sums have 64.
+            return GaussianInteger::new(Integer::from(a + c), Integer::from(b + d));
         }
         self.add_beyond_words(o)
     }
@@ -319,7 +320,7 @@ impl IntegerRing for GaussianInteger {
                 re.and_then(|(ac, bd)| ac.checked_sub(bd)),
                 im.and_then(|(ad, bc)| ad.checked_add(bc)),
             ) {
-                return GaussianInteger::new(Integer::Small(re), Integer::Small(im));
+                return GaussianInteger::new(Integer::from(re), Integer::from(im));
             }
         }
         self.mul_beyond_words(o)
@@ -330,9 +331,9 @@ impl IntegerRing for GaussianInteger {
     #[inline]
     fn scale(&self, k: &Integer) -> Self {
         // Products that stay in a word are words (the canonical tier) at once.
-        if let (Integer::Small(a), Integer::Small(b), Integer::Small(k)) = (&self.re, &self.im, k) {
-            if let (Some(x), Some(y)) = (a.checked_mul(*k), b.checked_mul(*k)) {
-                return GaussianInteger::new(Integer::Small(x), Integer::Small(y));
+        if let (Some(a), Some(b), Some(k)) = (self.re.small(), self.im.small(), k.small()) {
+            if let (Some(x), Some(y)) = (a.checked_mul(k), b.checked_mul(k)) {
+                return GaussianInteger::new(Integer::from(x), Integer::from(y));
             }
         }
         self.scale_beyond_words(k)
@@ -373,10 +374,8 @@ impl IntegerRing for GaussianInteger {
 /// The parts `(a, b, c, d)` of `a + bi` and `c + di` when all four are machine words.
 #[inline]
 fn word_parts(x: &GaussianInteger, y: &GaussianInteger) -> Option<(i64, i64, i64, i64)> {
-    match (&x.re, &x.im, &y.re, &y.im) {
-        (Integer::Small(a), Integer::Small(b), Integer::Small(c), Integer::Small(d)) => {
-            Some((*a, *b, *c, *d))
-        }
+    match (x.re.small(), x.im.small(), y.re.small(), y.im.small()) {
+        (Some(a), Some(b), Some(c), Some(d)) => Some((a, b, c, d)),
         _ => None,
     }
 }

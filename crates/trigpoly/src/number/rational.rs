@@ -172,7 +172,7 @@ impl Rational {
     /// The numerator (carries the sign).
     pub fn numer(&self) -> Integer {
         match &self.0 {
-            Repr::Small { num, .. } => Integer::Small(*num),
+            Repr::Small { num, .. } => Integer::from(*num),
             Repr::Big(b) => Integer::from_bigint(b.numer().clone()),
         }
     }
@@ -188,7 +188,7 @@ impl Rational {
     /// The denominator (positive).
     pub fn denom(&self) -> Integer {
         match &self.0 {
-            Repr::Small { den, .. } => Integer::Small(*den),
+            Repr::Small { den, .. } => Integer::from(*den),
             Repr::Big(b) => Integer::from_bigint(b.denom().clone()),
         }
     }
@@ -364,11 +364,11 @@ impl From<Integer> for Rational {
 
 impl From<&Integer> for Rational {
     fn from(v: &Integer) -> Self {
-        match v {
-            Integer::Small(n) => Rational(Repr::Small { num: *n, den: 1 }),
-            Integer::Wide(_) | Integer::Big(_) => Rational(Repr::Big(Box::new(
-                BigRational::from_integer(v.to_bigint()),
-            ))),
+        match v.to_i64() {
+            Some(n) => Rational(Repr::Small { num: n, den: 1 }),
+            None => Rational(Repr::Big(Box::new(BigRational::from_integer(
+                v.to_bigint(),
+            )))),
         }
     }
 }

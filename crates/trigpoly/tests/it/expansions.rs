@@ -3,7 +3,7 @@
 //! integers into big integers.
 
 use num_bigint::BigInt;
-use trigpoly::{GaussianRational, Integer, Rational};
+use trigpoly::{GaussianRational, Integer, IntegerView, Rational};
 
 use crate::common::{big_rational, coordinates, gauss, p, phase_space, rational_i128, var, G, Q};
 
@@ -176,12 +176,22 @@ fn overflow_to_big_integers_in_sums_near_i64_max() {
     let f: Q = p(&vars, "9223372036854775807*x + 9223372036854775806*y");
     assert_eq!((&f + &f).coeff(&[(x, 1)]), big_rational(&(&max * 2)));
     assert_eq!((&f - &f), Q::zero(&vars));
-    // Back below the bound, the value is a machine integer again (structural equality).
-    let back = Integer::from(i64::MAX) + Integer::from(1) - Integer::from(1);
-    assert!(matches!(back, Integer::Small(i64::MAX)), "{back:?}");
-    assert_eq!(-(-Integer::from(i64::MIN)), Integer::Small(i64::MIN));
-    assert!(matches!(-Integer::from(i64::MIN), Integer::Wide(_)));
-    assert!(matches!(-Integer::from_i128(i128::MIN), Integer::Big(_)));
+    // Back below the bound, the value is in the word again (structural equality).
+    let word_max = (1i64 << 62) - 1;
+    let past = Integer::from(word_max) + Integer::from(1);
+    assert_eq!(past.view(), IntegerView::Wide(1 << 62));
+    let back = past - Integer::from(1);
+    assert_eq!(back.view(), IntegerView::Small(word_max));
+    assert_eq!(Integer::from(i64::MAX).to_i64(), Some(i64::MAX));
+    assert_eq!(-(-Integer::from(i64::MIN)), Integer::from(i64::MIN));
+    assert!(matches!(
+        (-Integer::from(i64::MIN)).view(),
+        IntegerView::Wide(_)
+    ));
+    assert!(matches!(
+        (-Integer::from_i128(i128::MIN)).view(),
+        IntegerView::Big(_)
+    ));
 }
 
 /// `Σ_{k<8} (MAX − k) x^k` squared: both sides have 8 terms, so the heap product runs, and

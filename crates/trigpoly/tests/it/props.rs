@@ -4,7 +4,9 @@
 use num_bigint::BigInt;
 use proptest::prelude::*;
 use proptest::test_runner::Config;
-use trigpoly::{ExactDivisor, GaussianRational, Integer, Point, Poly, Rational, VarKind};
+use trigpoly::{
+    ExactDivisor, GaussianRational, Integer, IntegerView, Point, Poly, Rational, VarKind,
+};
 
 use crate::common::{phase_space, var, G, Q};
 
@@ -43,10 +45,12 @@ fn component() -> impl Strategy<Value = BigInt> {
 /// Whether `v` is stored in the variant its size calls for (the structural-equality invariant).
 fn canonical(v: &Integer) -> bool {
     let b = v.to_bigint();
-    match v {
-        Integer::Small(_) => true,
-        Integer::Wide(_) => i64::try_from(&b).is_err() && i128::try_from(&b).is_ok(),
-        Integer::Big(_) => i128::try_from(&b).is_err(),
+    let word = -(1i64 << 62)..(1i64 << 62);
+    let in_word = i64::try_from(&b).is_ok_and(|v| word.contains(&v));
+    match v.view() {
+        IntegerView::Small(_) => in_word,
+        IntegerView::Wide(_) => !in_word && i128::try_from(&b).is_ok(),
+        IntegerView::Big(_) => i128::try_from(&b).is_err(),
     }
 }
 
