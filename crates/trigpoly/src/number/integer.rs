@@ -35,12 +35,6 @@ pub enum IntegerView<'a> {
     Big(&'a BigInt),
 }
 
-/// A value an [`Integer`] boxes, as it is built.
-enum Boxed {
-    Wide(i128),
-    Big(BigInt),
-}
-
 /// The one-word representation and the `unsafe` code it takes.
 mod word {
     use std::num::NonZeroUsize;
@@ -48,7 +42,7 @@ mod word {
 
     use num_bigint::BigInt;
 
-    use super::{Boxed, IntegerView};
+    use super::IntegerView;
 
     /// An exact integer in one word: a 63-bit value tagged by a low bit of one, or a pointer
     /// to a boxed `i128` (low bits `00`) or to a boxed `BigInt`, plus two (low bits `10`);
@@ -101,18 +95,22 @@ mod word {
             }
         }
 
-        /// `v` boxed; `v` must be outside the word's range (`Wide`) or `i128`'s (`Big`).
+        /// `v` in a box; `v` must be outside the word's range.
         #[inline(never)]
-        pub(super) fn boxed(v: Boxed) -> Integer {
-            let word = match v {
-                Boxed::Wide(v) => NonNull::from(Box::leak(Box::new(v))).cast::<u8>(),
-                // SAFETY: a `BigInt` is larger than `BIG` bytes, so the tagged pointer stays
-                // inside its allocation (and is not null).
-                Boxed::Big(b) => unsafe {
-                    NonNull::from(Box::leak(Box::new(b)))
-                        .cast::<u8>()
-                        .byte_add(BIG)
-                },
+        pub(super) fn wide(v: i128) -> Integer {
+            Integer {
+                word: NonNull::from(Box::leak(Box::new(v))).cast::<u8>(),
+            }
+        }
+
+        /// `b` in a box; `b` must be outside `i128`'s range.
+        pub(super) fn big(b: BigInt) -> Integer {
+            // SAFETY: a `BigInt` is larger than `BIG` bytes, so the tagged pointer stays
+            // inside its allocation (and is not null).
+            let word = unsafe {
+                NonNull::from(Box::leak(Box::new(b)))
+                    .cast::<u8>()
+                    .byte_add(BIG)
             };
             Integer { word }
         }
@@ -187,8 +185,8 @@ mod word {
         fn clone_boxed(&self) -> Self {
             match self.view() {
                 IntegerView::Small(v) => Integer::small_unchecked(v),
-                IntegerView::Wide(v) => Integer::boxed(Boxed::Wide(v)),
-                IntegerView::Big(b) => Integer::boxed(Boxed::Big(b.clone())),
+                IntegerView::Wide(v) => Integer::wide(v),
+                IntegerView::Big(b) => Integer::big(b.clone()),
             }
         }
     }
@@ -238,7 +236,7 @@ impl Integer {
         if (Integer::SMALL_MIN..=Integer::SMALL_MAX).contains(&v) {
             Integer::small_unchecked(v)
         } else {
-            Integer::boxed(Boxed::Wide(v as i128))
+            Integer::wide(v as i128)
         }
     }
 
@@ -303,9 +301,10 @@ impl Integer {
     /// Builds from an `i128`, staying small when it fits.
     #[inline]
     pub fn from_i128(v: i128) -> Integer {
-        match i64::try_from(v) {
-            Ok(s) => Integer::from_i64(s),
-            Err(_) => Integer::boxed(Boxed::Wide(v)),
+        if (Integer::SMALL_MIN as i128..=Integer::SMALL_MAX as i128).contains(&v) {
+            Integer::small_unchecked(v as i64)
+        } else {
+            Integer::wide(v)
         }
     }
 
@@ -327,7 +326,7 @@ impl Integer {
     pub fn from_bigint(b: BigInt) -> Integer {
         match b.to_i128() {
             Some(v) => Integer::from_i128(v),
-            None => Integer::boxed(Boxed::Big(b)),
+            None => Integer::big(b),
         }
     }
 
@@ -361,21 +360,19 @@ impl Integer {
         let word = |v: &Integer| v.to_i128().expect("not Big").unsigned_abs();
         match (self.view(), other.view()) {
             (IntegerView::Big(b), IntegerView::Big(c)) => Integer::from_bigint(b.gcd(c)),
-            (IntegerView::Big(b), _) | (_, IntegerView::Big(b)) => {
-                let short = if matches!(self.view(), IntegerView::Big(_)) {
-                    other
-                } else {
-                    self
-                };
-                let a = word(short);
-                if a == 0 {
-                    return Integer::boxed(Boxed::Big(b.abs()));
-                }
-                let r = (b.magnitude() % a).to_u128().expect("below a u128");
-                Integer::from_u128(gcd_u128(a, r))
-            }
+            (IntegerView::Big(b), _) => Integer::gcd_big_short(b, word(other)),
+            (_, IntegerView::Big(b)) => Integer::gcd_big_short(b, word(self)),
             _ => Integer::from_u128(gcd_u128(word(self), word(other))),
         }
+    }
+
+    /// `gcd(b, a)` for a `b` past `i128` and `a = |short|`: `gcd(a, b mod a)`.
+    fn gcd_big_short(b: &BigInt, a: u128) -> Integer {
+        if a == 0 {
+            return Integer::big(b.abs());
+        }
+        let r = (b.magnitude() % a).to_u128().expect("below a u128");
+        Integer::from_u128(gcd_u128(a, r))
     }
 
     /// Builds from a `u128` (above `i128::MAX` only as the gcd `2^127` of `i128::MIN`).
@@ -400,10 +397,8 @@ impl Integer {
     /// Panics if `d` is zero; the result is only meaningful when `d` divides `self`.
     pub fn div_exact(&self, d: &Integer) -> Integer {
         match (self.small(), d.small()) {
-            (Some(a), Some(b)) => match a.checked_div(b) {
-                Some(q) => Integer::from_i64(q),
-                None => Integer::from_i128(a as i128 / b as i128),
-            },
+            // Values of 63 bits: the quotient cannot overflow (a zero divisor panics).
+            (Some(a), Some(b)) => Integer::from_i64(a / b),
             _ => match (self.to_i128(), d.to_i128()) {
                 (Some(a), Some(b)) => Integer::from_i128_op(a, b, i128::checked_div, |a, b| a / b),
                 _ => Integer::from_bigint(self.to_bigint() / d.to_bigint()),
@@ -414,7 +409,7 @@ impl Integer {
     /// Whether `d` divides `self` (`d` nonzero).
     pub fn is_divisible_by(&self, d: &Integer) -> bool {
         match (self.small(), d.small()) {
-            (Some(a), Some(b)) => (a as i128) % (b as i128) == 0,
+            (Some(a), Some(b)) => a % b == 0,
             _ => match (self.to_i128(), d.to_i128()) {
                 // The remainder overflows only for i128::MIN / −1, which divides.
                 (Some(a), Some(b)) => a.checked_rem(b).is_none_or(|r| r == 0),
@@ -620,10 +615,8 @@ fn sub_ref(a: &Integer, b: &Integer) -> Integer {
 #[inline]
 fn mul_ref(a: &Integer, b: &Integer) -> Integer {
     match (a.small(), b.small()) {
-        (Some(x), Some(y)) => match x.checked_mul(y) {
-            Some(v) => Integer::from_i64(v),
-            None => Integer::from_i128(x as i128 * y as i128),
-        },
+        // Two values of 63 bits: the product has at most 125.
+        (Some(x), Some(y)) => Integer::from_i128(x as i128 * y as i128),
         _ => wide_or_big(a, b, i128::checked_mul, |a, b| a * b),
     }
 }

@@ -183,7 +183,7 @@ impl<S: Copy + Send + Sync> Factors<S> {
             let off = off & acc_mask;
             I::wide_add_mul(&mut acc[off], &ai, c);
             if MARK {
-                let w = (off >> 6) & touched_mask;
+                let w = off >> 6;
                 if w != word {
                     touched[word & touched_mask] |= bits;
                     (word, bits) = (w, 0);
