@@ -18,6 +18,7 @@ use rayon::prelude::*;
 use std::sync::mpsc;
 
 use super::kronecker::{Cursor, Decoder, Kronecker};
+use super::pages;
 use crate::error::AlgebraError;
 use crate::number::IntegerRing;
 use crate::varset::Layout;
@@ -36,6 +37,9 @@ const PIPELINE_WORK: u64 = 1 << 20;
 const BATCH: usize = 1 << 16;
 /// Batches on their way to the building thread before the accumulating one waits.
 const BATCHES_IN_FLIGHT: usize = 4;
+/// A product that may have this many terms has its vectors' pages backed ahead of its writes,
+/// this many terms at a time (256 KB of each vector for one-word monomials).
+const BACKED_TERMS: usize = 1 << 15;
 
 /// Packed exponents and coefficients of a product, sorted descending.
 pub(crate) type Product<I> = (Vec<u64>, Vec<I>);
@@ -418,6 +422,11 @@ struct Builder<'d, I> {
     cursor: Cursor,
     exps: Vec<u64>,
     coeffs: Vec<I>,
+    /// Whether the vectors' pages are backed [`BACKED_TERMS`] at a time before they are
+    /// written (`pages.rs`), which saves most of a page fault's cost per page; only for
+    /// products large enough that the window past their last term, backed but unused, is
+    /// small beside them.
+    back_ahead: bool,
 }
 
 impl<'d, I: IntegerRing> Builder<'d, I> {
@@ -435,6 +444,7 @@ impl<'d, I: IntegerRing> Builder<'d, I> {
         Builder {
             decoder,
             cursor: decoder.cursor(),
+            back_ahead: coeffs.capacity() >= 4 * BACKED_TERMS,
             exps,
             coeffs,
         }
@@ -443,6 +453,10 @@ impl<'d, I: IntegerRing> Builder<'d, I> {
     /// Appends the term `c` with Kronecker index `k` (lower than every term so far).
     #[inline(always)]
     fn append(&mut self, k: u64, c: I) {
+        if self.back_ahead && self.coeffs.len().is_multiple_of(BACKED_TERMS) {
+            pages::back_spare(&mut self.exps, BACKED_TERMS * self.decoder.words());
+            pages::back_spare(&mut self.coeffs, BACKED_TERMS);
+        }
         self.decoder
             .decode_onto(&mut self.cursor, k, &mut self.exps);
         self.coeffs.push(c);

@@ -13,6 +13,7 @@ mod dense;
 mod gather;
 mod kronecker;
 mod mul;
+mod pages;
 mod pow;
 mod subst;
 mod sum;
