@@ -11,7 +11,9 @@
 //! a dense box they split the index range into parts that rayon runs on the pool's threads; on
 //! a sparse box, where writing the terms (and backing their pages) costs as much as the
 //! additions, one thread adds and reads back while a second one, spawned for the product,
-//! decodes and writes the terms, so that they are written once.
+//! decodes and writes the terms, so that they are written once. A large product's vectors
+//! have their pages backed a window ahead of the writes (`pages.rs`), a system call per window
+//! instead of a page fault per page.
 
 use rayon::prelude::*;
 
