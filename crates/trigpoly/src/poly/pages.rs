@@ -53,8 +53,10 @@ mod tests {
     /// then only the values are checked.)
     #[test]
     fn backs_the_window_and_keeps_values() {
-        // 32 MiB from the system allocator: a fresh mapping, not yet backed.
-        let mut v: Vec<u64> = Vec::with_capacity(4 << 20);
+        // 64 MiB from the system allocator: a fresh mapping, not yet backed (above glibc's
+        // largest threshold for serving a block from its heap, 32 MiB, which could hand back
+        // memory another test touched).
+        let mut v: Vec<u64> = Vec::with_capacity(8 << 20);
         v.extend(0..1000);
         let window = 256 * PAGE / 8;
         let backed = back_spare(&mut v, window);
