@@ -129,11 +129,11 @@ mod word {
             if w & SMALL != 0 {
                 IntegerView::Small((w as i64) >> 1)
             } else if w & BIG == 0 {
-                // SAFETY: the pointer from `Box::leak` of an `i128` in `boxed`, to a box this
+                // SAFETY: the pointer from `Box::leak` of an `i128` in `wide`, to a box this
                 // `Integer` owns and that lives as long as it does.
                 IntegerView::Wide(unsafe { *self.word.cast::<i128>().as_ref() })
             } else {
-                // SAFETY: the pointer from `Box::leak` of a `BigInt` in `boxed`, plus `BIG`;
+                // SAFETY: the pointer from `Box::leak` of a `BigInt` in `big`, plus `BIG`;
                 // the box is owned by this `Integer` and lives as long as it does.
                 IntegerView::Big(unsafe { self.word.byte_sub(BIG).cast::<BigInt>().as_ref() })
             }
@@ -154,7 +154,7 @@ mod word {
             if w & SMALL != 0 {
                 return;
             }
-            // SAFETY: the pointers from `Box::leak` in `boxed` (less `BIG` for a `BigInt`),
+            // SAFETY: the pointers from `Box::leak` in `wide` and `big` (less `BIG` for a `BigInt`),
             // owned by this `Integer` alone and freed once, here.
             unsafe {
                 if w & BIG == 0 {

@@ -424,11 +424,11 @@ struct Builder<'d, I> {
     cursor: Cursor,
     exps: Vec<u64>,
     coeffs: Vec<I>,
-    /// Whether the vectors' pages are backed [`BACKED_TERMS`] at a time before they are
-    /// written (`pages.rs`), which saves most of a page fault's cost per page; only for
-    /// products large enough that the window past their last term, backed but unused, is
-    /// small beside them.
-    back_ahead: bool,
+    /// The number of terms at which the vectors' next [`BACKED_TERMS`] pages' worth are
+    /// backed before they are written (`pages.rs`), which saves most of a page fault's cost
+    /// per page; `usize::MAX` (never) unless the product is large enough that the window past
+    /// its last term, backed but unused, is small beside it.
+    back_at: usize,
 }
 
 impl<'d, I: IntegerRing> Builder<'d, I> {
@@ -446,7 +446,11 @@ impl<'d, I: IntegerRing> Builder<'d, I> {
         Builder {
             decoder,
             cursor: decoder.cursor(),
-            back_ahead: coeffs.capacity() >= 4 * BACKED_TERMS,
+            back_at: if coeffs.capacity() >= 4 * BACKED_TERMS {
+                0
+            } else {
+                usize::MAX
+            },
             exps,
             coeffs,
         }
@@ -455,9 +459,10 @@ impl<'d, I: IntegerRing> Builder<'d, I> {
     /// Appends the term `c` with Kronecker index `k` (lower than every term so far).
     #[inline(always)]
     fn append(&mut self, k: u64, c: I) {
-        if self.back_ahead && self.coeffs.len().is_multiple_of(BACKED_TERMS) {
+        if self.coeffs.len() == self.back_at {
             pages::back_spare(&mut self.exps, BACKED_TERMS * self.decoder.words());
             pages::back_spare(&mut self.coeffs, BACKED_TERMS);
+            self.back_at += BACKED_TERMS;
         }
         self.decoder
             .decode_onto(&mut self.cursor, k, &mut self.exps);
