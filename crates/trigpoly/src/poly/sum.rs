@@ -211,9 +211,16 @@ impl<C: Coefficient> Poly<C> {
         {
             return Ok(None);
         }
-        let Some(terms) =
-            gather::jacobians(vars, (&f.exps, &f.coeffs), (&g.exps, &g.coeffs), pairs)
-        else {
+        let (Some(f_bits), Some(g_bits)) = (f.small_bits(), g.small_bits()) else {
+            return Ok(None);
+        };
+        let Some(terms) = gather::jacobians(
+            vars,
+            (&f.exps, &f.coeffs),
+            (&g.exps, &g.coeffs),
+            pairs,
+            f_bits + g_bits,
+        ) else {
             return Ok(None);
         };
         Self::check_terms(vars, terms.coeffs.len())?;

@@ -22,7 +22,7 @@ pub(crate) use map::MonomialMap;
 pub(crate) use table::{small_bits, Gathered};
 
 use pairs::{derivative_pairs, mapped_pairs, product_pairs, square_pairs};
-use table::{Gather, Inline, Table, WordGather, INLINE};
+use table::{Gather, Inline, Smalls, Table, WordGather, INLINE};
 
 use super::mul::Key;
 use crate::number::{Integer, IntegerRing};
@@ -118,6 +118,20 @@ impl JacobianPair {
     }
 }
 
+/// The layout's bias (the monomial 1) as a key of its exact width: the layout's words as they
+/// are, with no `memcpy` call for a length known at run time only.
+#[inline(always)]
+fn bias_of<K: Key>(layout: &Layout) -> K {
+    let one = layout.one();
+    let mut bias = K::ZERO;
+    if bias.as_ref().len() == one.len() {
+        bias.as_mut().copy_from_slice(one);
+        bias
+    } else {
+        K::load(one)
+    }
+}
+
 /// Calls `$f::<[u64; N], _>(args)` with `N` = `$words` (1 to [`WORDS`]).
 macro_rules! by_width {
     ($words:expr, $f:ident, $($arg:expr),*) => {
@@ -169,18 +183,23 @@ pub(crate) fn square<I: IntegerRing>(layout: &Layout, a: (&[u64], &[I])) -> Gath
 /// [`MAX_JACOBIAN_PAIRS`]), from the term pairs: both products of
 /// derivatives of the terms `c·m` and `d·n` have the monomial `m·n/(q·p)`, with the
 /// coefficient `c·d·(a_q·b_p − a_p·b_q)·iᵗ`, where `a`, `b` are the exponents in `m`, `n` and
-/// `t` counts the angles of the pair. `None` when a coefficient does not fit a word or an
-/// angle needs `i` in a ring without it (the general path handles both). The caller has
-/// checked the exponents.
+/// `t` counts the angles of the pair. The coefficients of `f` and `g` fit words and take at
+/// most `ab_bits` bits together ([`small_bits`], which the polynomials keep). `None` when a
+/// term product could pass the sums or an angle needs `i` in a ring without it (the general
+/// path handles both). The caller has checked the exponents.
 pub(crate) fn jacobians<I: IntegerRing>(
     vars: &VarSet,
     f: (&[u64], &[I]),
     g: (&[u64], &[I]),
     pairs: &[(Var, Var)],
+    ab_bits: u32,
 ) -> Option<Gathered<I>> {
     let layout = vars.layout();
     debug_assert!(layout.words <= WORDS && pairs.len() <= MAX_JACOBIAN_PAIRS);
-    by_width!(layout.words, jacobians_of_width, vars, f, g, pairs)
+    debug_assert!(small_bits(f.1)
+        .zip(small_bits(g.1))
+        .is_some_and(|(a, b)| a + b <= ab_bits));
+    by_width!(layout.words, jacobians_of_width, vars, f, g, pairs, ab_bits)
 }
 
 /// A derivative `∂/∂v` as the kernels apply it to a packed monomial `c·m` of exponent `e` in
@@ -325,7 +344,14 @@ fn gather_products<K: Key, I: IntegerRing, T: Table<K, I::Wide>>(
     products: &[Product<'_, I>],
     map: Option<&MonomialMap>,
 ) -> bool {
-    let bias = K::load(layout.one());
+    let bias = bias_of::<K>(layout);
+    // A product or a square visits every term pair: its coefficients are converted to words
+    // once per factor (a square's once). A derivative skips the terms without its variable, and
+    // a flow on a condition has one long factor: those convert the coefficients of each term
+    // product they form. The closures of products and squares are inlined into their walks:
+    // called, each term product spilled the walk's registers (W4's Casimir).
+    let (mut small_a, mut small_b) = (Smalls::new(), Smalls::new());
+    let small = |c: &I| c.to_small();
     for p in products {
         let k = p.k;
         let all = match (map, p.by) {
@@ -337,25 +363,44 @@ fn gather_products<K: Key, I: IntegerRing, T: Table<K, I::Wide>>(
                 &bias,
                 map,
                 |m, x, y, f, turns| match k.checked_mul(f) {
-                    Some(k) => words.push(m, x, y, k, turns),
+                    Some(k) => words.push_ring(m, x, y, k, turns),
                     None => false,
                 },
             ),
             (_, Some(by)) => derivative_pairs(layout, p.a, by, p.b, &bias, |m, x, y, e, turns| {
-                match k.checked_mul(e) {
-                    Some(k) => words.push_mapped(layout, map, m, x, y, k, turns),
-                    None => false,
+                match (k.checked_mul(e), small(x), small(y)) {
+                    (Some(k), Some(x), Some(y)) => {
+                        words.push_mapped(layout, map, m, &x, &y, k, turns)
+                    }
+                    _ => false,
                 }
             }),
             (_, None) if p.is_square() => {
-                square_pairs(p.a, &bias, |m, x, y, two| match k.checked_mul(two) {
-                    Some(k) => words.push_mapped(layout, map, m, x, y, k, 0),
-                    None => false,
-                })
+                let Some(a) = small_a.fill(p.a.1) else {
+                    return false;
+                };
+                square_pairs(
+                    (p.a.0, a),
+                    &bias,
+                    #[inline(always)]
+                    |m, x, y, two| match k.checked_mul(two) {
+                        Some(k) => words.push_mapped(layout, map, m, x, y, k, 0),
+                        None => false,
+                    },
+                )
             }
-            (_, None) => product_pairs(p.a, p.b, &bias, |m, x, y, _| {
-                words.push_mapped(layout, map, m, x, y, k, 0)
-            }),
+            (_, None) => {
+                let (Some(a), Some(b)) = (small_a.fill(p.a.1), small_b.fill(p.b.1)) else {
+                    return false;
+                };
+                product_pairs(
+                    (p.a.0, a),
+                    (p.b.0, b),
+                    &bias,
+                    #[inline(always)]
+                    |m, x, y, _| words.push_mapped(layout, map, m, x, y, k, 0),
+                )
+            }
         };
         if !all {
             return false;
@@ -369,14 +414,17 @@ fn product_of_width<K: Key, I: IntegerRing>(
     a: (&[u64], &[I]),
     b: (&[u64], &[I]),
 ) -> Gathered<I> {
-    let bias = K::load(layout.one());
+    let bias = bias_of::<K>(layout);
     let n = a.1.len() * b.1.len();
-    if let (Some(x), Some(y)) = (small_bits(a.1), small_bits(b.1)) {
+    let (mut small_a, mut small_b) = (Smalls::new(), Smalls::new());
+    if let (Some(sa), Some(sb)) = (small_a.fill(a.1), small_b.fill(b.1)) {
         let per_monomial = a.1.len().min(b.1.len());
-        if let Some(budget) = WordGather::<K, I>::budget(x + y, per_monomial) {
+        if let Some(budget) =
+            WordGather::<K, I>::budget(bits::<I>(sa) + bits::<I>(sb), per_monomial)
+        {
             let sums = gathered!(n, budget, |words| product_pairs(
-                a,
-                b,
+                (a.0, sa),
+                (b.0, sb),
                 &bias,
                 |m, x, y, k| { words.push(m, x, y, k, 0) }
             ));
@@ -391,13 +439,16 @@ fn product_of_width<K: Key, I: IntegerRing>(
 }
 
 fn square_of_width<K: Key, I: IntegerRing>(layout: &Layout, a: (&[u64], &[I])) -> Gathered<I> {
-    let bias = K::load(layout.one());
+    let bias = bias_of::<K>(layout);
     let n = a.1.len() * (a.1.len() + 1) / 2;
-    if let Some(x) = small_bits(a.1) {
-        if let Some(budget) = WordGather::<K, I>::budget(2 * x, a.1.len()) {
-            let sums = gathered!(n, budget, |words| square_pairs(a, &bias, |m, x, y, k| {
-                words.push(m, x, y, k, 0)
-            }));
+    let mut small_a = Smalls::new();
+    if let Some(sa) = small_a.fill(a.1) {
+        if let Some(budget) = WordGather::<K, I>::budget(2 * bits::<I>(sa), a.1.len()) {
+            let sums = gathered!(n, budget, |words| square_pairs(
+                (a.0, sa),
+                &bias,
+                |m, x, y, k| { words.push(m, x, y, k, 0) }
+            ));
             if let Some(sums) = sums {
                 return sums;
             }
@@ -413,10 +464,10 @@ fn jacobians_of_width<K: Key, I: IntegerRing>(
     f: (&[u64], &[I]),
     g: (&[u64], &[I]),
     pairs: &[(Var, Var)],
+    ab_bits: u32,
 ) -> Option<Gathered<I>> {
     let layout = vars.layout();
-    let bias = K::load(layout.one());
-    let ab_bits = small_bits(f.1)? + small_bits(g.1)?;
+    let bias = bias_of::<K>(layout);
     // ∂(f, g)/∂(q, p) = f_q·g_p − f_p·g_q vanishes unless one side has `q` and the other `p`.
     let (in_f, in_g) = (occurring::<K>(f.0, &bias), occurring::<K>(g.0, &bias));
     let has = |vars: &K, (word, shift): (usize, u32)| {
@@ -436,6 +487,8 @@ fn jacobians_of_width<K: Key, I: IntegerRing>(
     let budget = WordGather::<K, I>::budget(ab_bits, per_monomial)?;
     let n = f.1.len() * g.1.len() * count;
     let active = &active[..count];
+    let (mut small_f, mut small_g) = (Smalls::new(), Smalls::new());
+    let (f, g) = ((f.0, small_f.fill(f.1)?), (g.0, small_g.fill(g.1)?));
     gathered!(n, budget, |out| gather_jacobians(
         &mut out, layout, f, g, active
     ))
@@ -447,11 +500,11 @@ fn jacobians_of_width<K: Key, I: IntegerRing>(
 fn gather_jacobians<K: Key, I: IntegerRing, T: Table<K, I::Wide>>(
     out: &mut WordGather<K, I, T>,
     layout: &Layout,
-    f: (&[u64], &[I]),
-    g: (&[u64], &[I]),
+    f: (&[u64], &[I::Small]),
+    g: (&[u64], &[I::Small]),
     active: &[JacobianPair],
 ) -> bool {
-    let bias = K::load(layout.one());
+    let bias = bias_of::<K>(layout);
     let n = K::WORDS;
     for pair in active {
         let (q, p, turns) = (pair.q(), pair.p(), pair.turns());
@@ -476,6 +529,11 @@ fn gather_jacobians<K: Key, I: IntegerRing, T: Table<K, I::Wide>>(
         }
     }
     true
+}
+
+/// The most bits of a component of any of the word-sized coefficients.
+fn bits<I: IntegerRing>(smalls: &[I::Small]) -> u32 {
+    smalls.iter().map(I::small_bits).max().unwrap_or(0)
 }
 
 /// The fields of the variables that occur in some monomial of `exps` are nonzero in the
@@ -548,7 +606,7 @@ fn multinomial_power_of_width<K: Key, I: IntegerRing>(
             row
         })
         .collect();
-    let bias = K::load(layout.one());
+    let bias = bias_of::<K>(layout);
     // m_i − 1, the translation that multiplies by m_i.
     let steps: Vec<K> =
         a.0.chunks_exact(K::WORDS)

@@ -35,6 +35,43 @@ pub(crate) fn small_bits<I: IntegerRing>(coeffs: &[I]) -> Option<u32> {
     Some(bits)
 }
 
+/// Coefficients as machine words ([`IntegerRing::Small`]), converted once per factor rather
+/// than once per term product: held inline for the short polynomials these kernels mostly see,
+/// on the heap past [`INLINE_SMALLS`] terms. Filled where it stays (its inline part is half a
+/// kilobyte, which a move would copy).
+pub(super) struct Smalls<S> {
+    inline: ArrayVec<S, INLINE_SMALLS>,
+    heap: Vec<S>,
+}
+
+/// The most coefficients [`Smalls`] holds inline.
+const INLINE_SMALLS: usize = 32;
+
+impl<S: Copy> Smalls<S> {
+    #[inline(always)]
+    pub(super) fn new() -> Self {
+        Smalls {
+            inline: ArrayVec::new(),
+            heap: Vec::new(),
+        }
+    }
+
+    /// The coefficients as words, or `None` if one does not fit.
+    #[inline(always)]
+    pub(super) fn fill<I: IntegerRing<Small = S>>(&mut self, coeffs: &[I]) -> Option<&[S]> {
+        if coeffs.len() <= INLINE_SMALLS {
+            self.inline.clear();
+            for c in coeffs {
+                self.inline.push(c.to_small()?);
+            }
+            Some(&self.inline)
+        } else {
+            self.heap = coeffs.iter().map(I::to_small).collect::<Option<_>>()?;
+            Some(&self.heap)
+        }
+    }
+}
+
 /// Term products with word-sized coefficients, each kept exactly in the ring's wide form (no
 /// allocation, clone or drop per coefficient) and added at once to the running sum of its
 /// monomial, which an open-addressing table (`T`) finds: only the distinct monomials are
@@ -183,35 +220,67 @@ impl<K: Key, I: IntegerRing, T: Table<K, I::Wide>> WordGather<K, I, T> {
         }
     }
 
-    /// Adds the term `a·b·k·iᵗ·m` (`k ≠ 0`, `t` = `turns`), or returns `false` and adds nothing
-    /// when `k` takes more bits than the sums leave it, or `t > 0` in a ring without `i`.
+    /// Adds the term `a·b·k·iᵗ·m` (`k ≠ 0`, `t` = `turns`; `a`, `b` from [`Smalls`]), or
+    /// returns `false` and adds nothing when `k` takes more bits than the sums leave it, or
+    /// `t > 0` in a ring without `i`. Tests for `k = 1`, the multiplier of most term products
+    /// of products, squares and brackets, first.
     #[inline(always)]
-    pub(super) fn push(&mut self, m: K, a: &I, b: &I, k: i64, turns: u32) -> bool {
-        let k_bits = 64 - k.unsigned_abs().leading_zeros();
-        if k_bits > self.k_budget {
-            return false;
-        }
+    pub(super) fn push(&mut self, m: K, a: &I::Small, b: &I::Small, k: i64, turns: u32) -> bool {
+        // `k = 1` takes one bit of the budget, like any other multiplier.
+        let w = if k == 1 && turns == 0 && self.k_budget >= 1 {
+            let mut w = I::Wide::default();
+            I::wide_add_mul(&mut w, a, b);
+            w
+        } else {
+            match self.term(a, b, k, turns) {
+                Some(w) => w,
+                None => return false,
+            }
+        };
+        self.add(m, w);
+        true
+    }
+
+    /// [`WordGather::push`] of ring elements, converted to words here: for walks that form
+    /// each term product once and skip terms (a derivative's), or have one long factor (a flow
+    /// on a condition), where converting every coefficient of a factor beforehand would be
+    /// wasted, and whose multipliers are seldom 1.
+    #[inline(always)]
+    pub(super) fn push_ring(&mut self, m: K, a: &I, b: &I, k: i64, turns: u32) -> bool {
         let (Some(a), Some(b)) = (a.to_small(), b.to_small()) else {
             return false;
         };
+        match self.term(&a, &b, k, turns) {
+            Some(w) => {
+                self.add(m, w);
+                true
+            }
+            None => false,
+        }
+    }
+
+    /// `a·b·k·iᵗ` in the wide form, or `None` when `k` takes more bits than the sums leave
+    /// it, or `t > 0` in a ring without `i`.
+    #[inline(always)]
+    fn term(&self, a: &I::Small, b: &I::Small, k: i64, turns: u32) -> Option<I::Wide> {
+        let k_bits = 64 - k.unsigned_abs().leading_zeros();
+        if k_bits > self.k_budget {
+            return None;
+        }
         let mut w = I::Wide::default();
         // The multiplier goes into a word-sized factor when it fits, else into the product.
-        match (k, I::small_checked_scale(&a, k)) {
-            (1, _) => I::wide_add_mul(&mut w, &a, &b),
-            (_, Some(ak)) => I::wide_add_mul(&mut w, &ak, &b),
+        match (k, I::small_checked_scale(a, k)) {
+            (1, _) => I::wide_add_mul(&mut w, a, b),
+            (_, Some(ak)) => I::wide_add_mul(&mut w, &ak, b),
             (_, None) => {
-                I::wide_add_mul(&mut w, &a, &b);
+                I::wide_add_mul(&mut w, a, b);
                 w = I::wide_scale(&w, k);
             }
         }
         for _ in 0..turns {
-            match I::wide_mul_i(&w) {
-                Some(iw) => w = iw,
-                None => return false,
-            }
+            w = I::wide_mul_i(&w)?;
         }
-        self.add(m, w);
-        true
+        Some(w)
     }
 
     /// [`WordGather::push`] of the image of the term under `map`, when given; `false` when
@@ -223,8 +292,8 @@ impl<K: Key, I: IntegerRing, T: Table<K, I::Wide>> WordGather<K, I, T> {
         layout: &Layout,
         map: Option<&MonomialMap>,
         m: K,
-        a: &I,
-        b: &I,
+        a: &I::Small,
+        b: &I::Small,
         k: i64,
         turns: u32,
     ) -> bool {
@@ -342,8 +411,8 @@ impl<K: Key, I: IntegerRing> Gather<K, I> {
 
 #[cfg(test)]
 mod tests {
-    use super::{Gathered, Heap, Inline, Table, WordGather, INLINE};
-    use crate::number::{Integer, IntegerRing};
+    use super::{Gathered, Heap, Inline, Smalls, Table, WordGather, INLINE, INLINE_SMALLS};
+    use crate::number::{GaussianInteger, Integer, IntegerRing};
 
     type Sums = <Integer as IntegerRing>::Wide;
 
@@ -352,7 +421,7 @@ mod tests {
         let budget = WordGather::<[u64; 1], Integer>::budget(64, terms.len()).expect("room");
         let mut sums = WordGather::<[u64; 1], Integer, T>::new(terms.len(), budget);
         for &(m, c) in terms {
-            assert!(sums.push([m], &Integer::from(c), &Integer::from(1), 1, 0));
+            assert!(sums.push([m], &c, &1, 1, 0));
         }
         sums.finish()
     }
@@ -386,5 +455,49 @@ mod tests {
         assert_eq!(inline.divisor, Some(Integer::from(2)));
         // Monomial 0 gathers 2·(0 + 9 + 18 + 27) = 108, halved.
         assert_eq!(inline.coeffs.last(), Some(&Integer::from(54)));
+    }
+
+    #[test]
+    fn a_multiplier_of_one_takes_a_bit_of_the_budget() {
+        // No bit left for a multiplier: even 1 is refused (its product could pass the sums),
+        // as 2 and −1 are; one bit left takes 1 and −1 but not 2.
+        for (budget, k, fits) in [
+            (0, 1, false),
+            (0, -1, false),
+            (0, 2, false),
+            (1, 1, true),
+            (1, -1, true),
+            (1, 2, false),
+        ] {
+            let mut sums = WordGather::<[u64; 1], Integer, Heap<_, _>>::new(1, budget);
+            assert_eq!(sums.push([7], &3, &5, k, 0), fits, "budget {budget}, k {k}");
+            let expected = if fits { vec![7] } else { vec![] };
+            assert_eq!(sums.finish().exps, expected, "budget {budget}, k {k}");
+        }
+    }
+
+    #[test]
+    fn smalls_hold_word_coefficients_inline_or_on_the_heap_and_refuse_wider_ones() {
+        let ints = |n: i64| {
+            (1..=n)
+                .map(|k| Integer::from(k * (1 - 2 * (k % 2))))
+                .collect::<Vec<_>>()
+        };
+        let mut smalls = Smalls::new();
+        for n in [0, 1, INLINE_SMALLS as i64, INLINE_SMALLS as i64 + 1, 100] {
+            let words: Vec<i64> = (1..=n).map(|k| k * (1 - 2 * (k % 2))).collect();
+            assert_eq!(smalls.fill(&ints(n)), Some(&words[..]), "{n} coefficients");
+        }
+        // Past a word, inline and on the heap.
+        let wide = Integer::from_i128(1 << 70);
+        let mut short = ints(3);
+        short.push(wide.clone());
+        assert_eq!(smalls.fill(&short), None);
+        let mut long = ints(40);
+        long.push(wide);
+        assert_eq!(smalls.fill(&long), None);
+        // A Gaussian coefficient is two words.
+        let z = GaussianInteger::new(Integer::from(2), Integer::from(-3));
+        assert_eq!(Smalls::new().fill(&[z]), Some(&[(2, -3)][..]));
     }
 }
