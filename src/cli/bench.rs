@@ -55,9 +55,9 @@ pub fn run(args: &BenchArgs) -> anyhow::Result<bool> {
 /// Allocates and frees blocks of the sizes from a word to 64 KiB, so that this thread's heap
 /// exists and has its first pages before the clock starts, as the calling thread's has from
 /// parsing the arguments: mimalloc makes a thread's heap at its first allocation and takes
-/// fresh pages (page faults) for each size class it then meets. Without this, W4(1) on two
-/// threads took 0.30 ms against 0.19 ms on the calling thread alone (medians of 21
-/// alternating runs in a slow quarter hour); with it, 0.22 ms.
+/// fresh pages (page faults) for each size class it then meets. Without this, W4(1) took
+/// 0.32 ms on two threads and 0.18 ms on one (medians of 21 alternating runs in a slow quarter
+/// hour); with it, 0.20 ms and 0.14 ms.
 fn warm_heap() {
     let sizes = (1..=64).chain((7..=13).map(|b| 1 << b));
     let blocks: Vec<Vec<u64>> = sizes.map(Vec::with_capacity).collect();
