@@ -4,6 +4,8 @@
 //! products nor the sum before the substitution are ever built. An identity's residual, whose
 //! sums all cancel, then costs one pass over the term products and nothing to sort.
 
+use arrayvec::ArrayVec;
+
 use super::gather::{self, Monomial, MonomialMap, Partial, Product};
 use super::Poly;
 use crate::error::AlgebraError;
@@ -14,7 +16,7 @@ use crate::varset::Var;
 /// flag is `true`.
 pub(crate) type Source<'a, C> = (&'a Poly<C>, Option<Var>, &'a Poly<C>, bool);
 
-/// The most products one gathered sum takes (its multipliers live on the stack).
+/// The most products one gathered sum takes (its multipliers and products live on the stack).
 pub(super) const MAX_PRODUCTS: usize = 16;
 
 /// The most exponents of one substituted variable that a gathered sum tabulates.
@@ -104,7 +106,7 @@ impl<C: Coefficient> Poly<C> {
         if d.is_zero() {
             return Ok(Some(Self::zero(vars)));
         }
-        let mut products = Vec::with_capacity(sources.len());
+        let mut products = ArrayVec::<_, MAX_PRODUCTS>::new();
         for (&k, &(a, v, b, _)) in multipliers.iter().zip(sources) {
             if k == 0 {
                 continue;
