@@ -476,10 +476,9 @@ fn jacobians_of_width<K: Key, I: IntegerRing>(
     let mut active = [JacobianPair::default(); MAX_JACOBIAN_PAIRS];
     let mut count = 0;
     for &(q, p) in pairs {
-        let pair = JacobianPair::new(vars, q, p);
-        let (q, p) = (pair.q(), pair.p());
-        if (has(&in_f, q) && has(&in_g, p)) || (has(&in_f, p) && has(&in_g, q)) {
-            active[count] = pair;
+        let (fq, fp) = (layout.field(q.index()), layout.field(p.index()));
+        if (has(&in_f, fq) && has(&in_g, fp)) || (has(&in_f, fp) && has(&in_g, fq)) {
+            active[count] = JacobianPair::new(vars, q, p);
             count += 1;
         }
     }
