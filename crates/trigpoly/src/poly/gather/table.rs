@@ -67,7 +67,11 @@ impl<S: Copy> Smalls<S> {
             }
             Some(&self.inline)
         } else {
-            self.heap = coeffs.iter().map(I::to_small).collect::<Option<_>>()?;
+            // The vector's room is kept from one factor to the next.
+            self.heap.clear();
+            for c in coeffs {
+                self.heap.push(c.to_small()?);
+            }
             Some(&self.heap)
         }
     }
