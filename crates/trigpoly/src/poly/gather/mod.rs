@@ -62,20 +62,17 @@ struct JacobianPair {
 }
 
 impl JacobianPair {
-    /// The pair `(q, p)` of `vars`, whose monomials fit [`WORDS`] words.
+    /// The pair `(q, p)` of `vars`, whose monomials fit [`WORDS`] words, each variable with
+    /// its field (word, shift) as [`Layout::field`] gives it.
     #[inline]
-    fn new(vars: &VarSet, q: Var, p: Var) -> Self {
-        let layout = vars.layout();
-        let field = |v: Var| {
-            let (word, shift) = layout.field(v.index());
-            (word as u8, shift as u8)
-        };
+    fn new(vars: &VarSet, q: (Var, (usize, u32)), p: (Var, (usize, u32))) -> Self {
+        let field = |(word, shift): (usize, u32)| (word as u8, shift as u8);
         let angle = |v: Var| vars.variable(v).kind() == VarKind::Angle;
         JacobianPair {
-            q: field(q),
-            p: field(p),
-            q_angle: angle(q),
-            p_angle: angle(p),
+            q: field(q.1),
+            p: field(p.1),
+            q_angle: angle(q.0),
+            p_angle: angle(p.0),
         }
     }
 
@@ -351,7 +348,6 @@ fn gather_products<K: Key, I: IntegerRing, T: Table<K, I::Wide>>(
     // product they form. The closures of products and squares are inlined into their walks:
     // called, each term product spilled the walk's registers (W4's Casimir).
     let (mut small_a, mut small_b) = (Smalls::new(), Smalls::new());
-    let small = |c: &I| c.to_small();
     for p in products {
         let k = p.k;
         let all = match (map, p.by) {
@@ -368,7 +364,7 @@ fn gather_products<K: Key, I: IntegerRing, T: Table<K, I::Wide>>(
                 },
             ),
             (_, Some(by)) => derivative_pairs(layout, p.a, by, p.b, &bias, |m, x, y, e, turns| {
-                match (k.checked_mul(e), small(x), small(y)) {
+                match (k.checked_mul(e), x.to_small(), y.to_small()) {
                     (Some(k), Some(x), Some(y)) => {
                         words.push_mapped(layout, map, m, &x, &y, k, turns)
                     }
@@ -478,7 +474,7 @@ fn jacobians_of_width<K: Key, I: IntegerRing>(
     for &(q, p) in pairs {
         let (fq, fp) = (layout.field(q.index()), layout.field(p.index()));
         if (has(&in_f, fq) && has(&in_g, fp)) || (has(&in_f, fp) && has(&in_g, fq)) {
-            active[count] = JacobianPair::new(vars, q, p);
+            active[count] = JacobianPair::new(vars, (q, fq), (p, fp));
             count += 1;
         }
     }
