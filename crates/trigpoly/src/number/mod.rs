@@ -56,6 +56,14 @@ pub trait IntegerRing:
     fn try_mul_i(&self) -> Option<Self>;
     /// The value as a machine integer, if it is real and fits an `i64`.
     fn to_real_i64(&self) -> Option<i64>;
+    /// Whether the value is real (always, in Z).
+    fn is_real(&self) -> bool;
+    /// Whether the ring has elements off the real line (Z\[i\]). Its kernels then gather
+    /// factors whose coefficients are all real in Z's words ([`IntegerRing::from_real_wide`]):
+    /// a product of real words is one multiplication, where a Gaussian one takes four.
+    const COMPLEX: bool;
+    /// The element of a real sum in Z's wide form.
+    fn from_real_wide(w: i128) -> Self;
     /// The value in machine words, if every component fits an `i64`.
     type Small: Copy + Default + Send + Sync;
     /// A wide accumulator for `Small` products (`i128` per component).
@@ -108,12 +116,20 @@ impl IntegerRing for Integer {
     type Wide = i128;
     const GAUSS_LEMMA: bool = true;
     const PRODUCTS_PER_COMPONENT: u32 = 1;
+    const COMPLEX: bool = false;
     #[inline]
     fn to_small(&self) -> Option<i64> {
         self.to_i64()
     }
     fn to_real_i64(&self) -> Option<i64> {
         self.to_i64()
+    }
+    fn is_real(&self) -> bool {
+        true
+    }
+    #[inline]
+    fn from_real_wide(w: i128) -> Self {
+        Integer::from_i128(w)
     }
     fn small_bits(s: &i64) -> u32 {
         64 - s.unsigned_abs().leading_zeros()
@@ -222,12 +238,21 @@ impl IntegerRing for GaussianInteger {
     type Wide = (i128, i128);
     const GAUSS_LEMMA: bool = false;
     const PRODUCTS_PER_COMPONENT: u32 = 2;
+    const COMPLEX: bool = true;
     #[inline]
     fn to_small(&self) -> Option<(i64, i64)> {
         Some((self.re.to_i64()?, self.im.to_i64()?))
     }
+    #[inline]
     fn to_real_i64(&self) -> Option<i64> {
         self.im.is_zero().then(|| self.re.to_i64()).flatten()
+    }
+    fn is_real(&self) -> bool {
+        self.im.is_zero()
+    }
+    #[inline]
+    fn from_real_wide(w: i128) -> Self {
+        GaussianInteger::new(Integer::from_i128(w), Integer::ZERO)
     }
     fn small_bits(s: &(i64, i64)) -> u32 {
         64 - (s.0.unsigned_abs() | s.1.unsigned_abs()).leading_zeros()

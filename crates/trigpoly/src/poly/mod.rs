@@ -61,6 +61,8 @@ pub struct Poly<C: Coefficient> {
     /// [`Poly::small_bits`], computed when first asked for, likewise for its coefficients
     /// (`u8::MAX − 1` stands for `None`).
     small_bits: Cached,
+    /// [`Poly::real_coefficients`], computed when first asked for (1 for true).
+    real_coefficients: Cached,
 }
 
 /// A byte computed from a polynomial's terms when first asked for (plus one; 0 until then).
@@ -405,6 +407,17 @@ impl<C: Coefficient> Poly<C> {
         (bits != u8::MAX - 1).then_some(u32::from(bits))
     }
 
+    /// Whether every coefficient of the primitive part is real: always over Q; over Q(i),
+    /// what lets the word kernels multiply in Z (one product where a Gaussian takes four).
+    #[inline]
+    pub(crate) fn real_coefficients(&self) -> bool {
+        !C::Int::COMPLEX
+            || self
+                .real_coefficients
+                .get(|| u8::from(self.coeffs.iter().all(IntegerRing::is_real)))
+                == 1
+    }
+
     /// [`Poly::small_bits`] read from the coefficients (`u8::MAX − 1` for `None`).
     #[inline(never)]
     fn small_bits_of(coeffs: &[C::Int]) -> u8 {
@@ -579,6 +592,7 @@ impl<C: Coefficient> Poly<C> {
             coeffs,
             exponent_bound: Cached::default(),
             small_bits: Cached::default(),
+            real_coefficients: Cached::default(),
         }
     }
 

@@ -135,6 +135,7 @@ impl<C: Coefficient> Poly<C> {
                 self.layout(),
                 (&small.exps, &small.coeffs),
                 (&big.exps, &big.coeffs),
+                small.real_coefficients() && big.real_coefficients(),
             );
             Self::check_terms(&self.vars, terms.coeffs.len())?;
             return Ok(Self::from_gathered(&self.vars, content, terms));
@@ -193,7 +194,11 @@ impl<C: Coefficient> Poly<C> {
             return self.checked_mul(self);
         }
         self.check_product_exponents(self)?;
-        let terms = gather::square(self.layout(), (&self.exps, &self.coeffs));
+        let terms = gather::square(
+            self.layout(),
+            (&self.exps, &self.coeffs),
+            self.real_coefficients(),
+        );
         Self::check_terms(&self.vars, terms.coeffs.len())?;
         Ok(Self::from_gathered(
             &self.vars,

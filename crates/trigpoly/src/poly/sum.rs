@@ -219,7 +219,10 @@ impl<C: Coefficient> Poly<C> {
             (&f.exps, &f.coeffs),
             (&g.exps, &g.coeffs),
             pairs,
-            f_bits + g_bits,
+            (
+                f_bits + g_bits,
+                f.real_coefficients() && g.real_coefficients(),
+            ),
         ) else {
             return Ok(None);
         };

@@ -120,7 +120,11 @@ impl<C: Coefficient> Poly<C> {
                 by,
                 b.raw_terms(),
                 k,
-                bits_a + bits_b,
+                // Only products and squares gather in Z's words.
+                (
+                    bits_a + bits_b,
+                    v.is_none() && a.real_coefficients() && b.real_coefficients(),
+                ),
             ));
         }
         let (map, map_content) = match Self::monomial_map(sources, subs, limit - reach) {

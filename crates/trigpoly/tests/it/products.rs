@@ -225,3 +225,66 @@ fn short_products_squares_sums_and_brackets_on_both_sides_of_the_word_boundary()
         assert_eq!(Q::sum_of_jacobians(&f, &g, &[(x, pm)]), Ok(direct));
     }
 }
+
+/// Over Q(i), factors whose coefficients are all real gather in Z's words, with one product
+/// per term pair where a Gaussian takes four; a bracket on a pair with an angle, whose
+/// derivative brings `i`, does not. On both sides of the word boundary: the product, the
+/// square, the sum `(3/2)·f·g + f² − g²` and the brackets on `(x, p)` alone and with
+/// `(θ, y)` take the values that the factors and their derivatives give at a point.
+#[test]
+fn real_factors_over_q_i_gather_in_integer_words() {
+    let vars = VarSet::builder()
+        .coordinate("x")
+        .coordinate("y")
+        .momentum("p")
+        .angle("theta")
+        .build()
+        .unwrap();
+    let [x, y, pm, theta] = ["x", "y", "p", "theta"].map(|v| var(&vars, v));
+    let pt = point(&vars, &[("x", 3), ("y", -2), ("p", 5)]);
+    // At e^{iθ} = (3 + 4i)/5.
+    let on_circle = G::constant(
+        &vars,
+        GaussianRational::new(Rational::new(3, 5), Rational::new(4, 5)),
+    );
+    let at = |h: &G| {
+        h.subst(theta, &on_circle)
+            .and_then(|h| h.eval(&pt))
+            .unwrap()
+    };
+    for c in ["3", "2^31", "2^62", "2^63 - 1", "2^63", "2^100"] {
+        // cos θ = (e^{iθ} + e^{−iθ})/2 and cos 2θ have real coefficients.
+        let f: G = p(
+            &vars,
+            &format!("({c})*x*y*p - 5*x^2 + ({c})*y^2*cos(theta) + 1"),
+        );
+        let g: G = p(&vars, &format!("x*p^2 - ({c})*y^3 + 7*cos(2*theta)"));
+        assert!(f.is_real() && g.is_real());
+        let (fp, gp) = (at(&f), at(&g));
+        assert_eq!(at(&(&f * &g)), &fp * &gp, "f·g with c = {c}");
+        assert_eq!(at(&f.checked_pow(2).unwrap()), &fp * &fp, "f² with c = {c}");
+        let three_halves = GaussianRational::from(Rational::new(3, 2));
+        let sum = G::sum_of_products(&[
+            (&f.scale(&three_halves), &g, false),
+            (&f, &f, false),
+            (&g, &g, true),
+        ])
+        .unwrap();
+        let expected = &(&(&three_halves * &(&fp * &gp)) + &(&fp * &fp)) - &(&gp * &gp);
+        assert_eq!(at(&sum), expected, "(3/2)·f·g + f² − g² with c = {c}");
+        let d = |h: &G, v| at(&h.derivative(v).unwrap());
+        let jacobian = |q, m| &(&d(&f, q) * &d(&g, m)) - &(&d(&f, m) * &d(&g, q));
+        let flat = G::sum_of_jacobians(&f, &g, &[(x, pm)]).unwrap();
+        assert_eq!(
+            at(&flat),
+            jacobian(x, pm),
+            "{{f, g}} on (x, p) with c = {c}"
+        );
+        let angled = G::sum_of_jacobians(&f, &g, &[(x, pm), (theta, y)]).unwrap();
+        assert_eq!(
+            at(&angled),
+            &jacobian(x, pm) + &jacobian(theta, y),
+            "{{f, g}} on (x, p), (θ, y) with c = {c}"
+        );
+    }
+}

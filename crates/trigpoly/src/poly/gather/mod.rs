@@ -12,7 +12,9 @@
 //! term pairs (`pairs.rs`) into a `WordGather` (`table.rs`), which keeps every term product
 //! exactly in the ring's wide form (`i128` per component) while the coefficients fit machine
 //! words, as they do for such inputs; a `Gather` keeps ring elements, for coefficients of any
-//! size.
+//! size. Over Q(i), factors whose coefficients are all real (an algebra's generators, the
+//! Hamiltonian; [`Poly::real_coefficients`](super::Poly::real_coefficients)) gather in Z's
+//! words, one product per term pair where a Gaussian takes four, unless an angle brings `i`.
 
 mod map;
 mod pairs;
@@ -145,35 +147,51 @@ macro_rules! by_width {
 /// with the multiplier budget `$budget`, and says whether all of them fit) and then the sums,
 /// or `None`: the table is [`Inline`] for fewer than [`INLINE`] term products, else on the
 /// heap. The one place that picks; both tables are built where they stay (a macro, since
-/// the fill is compiled once for each).
+/// the fill is compiled once for each). With `real:` first, the words are Z's and the sums
+/// become elements of `I` by [`IntegerRing::from_real_wide`].
 macro_rules! gathered {
     ($n:expr, $budget:expr, |$words:ident| $fill:expr) => {
+        gathered!(I, I::from_wide; $n, $budget, |$words| $fill)
+    };
+    (real: $n:expr, $budget:expr, |$words:ident| $fill:expr) => {
+        gathered!(Integer, I::from_real_wide; $n, $budget, |$words| $fill)
+    };
+    ($ring:ty, $element:expr; $n:expr, $budget:expr, |$words:ident| $fill:expr) => {
         if $n < INLINE {
-            let mut $words = WordGather::<K, I, Inline<K, I::Wide>>::new($n, $budget);
-            ($fill).then(|| $words.finish())
+            let mut $words = WordGather::<K, $ring, Inline<K, <$ring as IntegerRing>::Wide>>::new(
+                $n, $budget,
+            );
+            ($fill).then(|| $words.finish_as($element))
         } else {
-            let mut $words = WordGather::<K, I>::new($n, $budget);
-            ($fill).then(|| $words.finish())
+            let mut $words = WordGather::<K, $ring>::new($n, $budget);
+            ($fill).then(|| $words.finish_as($element))
         }
     };
 }
 
-/// The product of two term lists, sorted, combined, zeros dropped. The caller has checked
-/// that every exponent of the product stays within its field.
+/// The product of two term lists, sorted, combined, zeros dropped; `real` when all their
+/// coefficients are real. The caller has checked that every exponent of the product stays
+/// within its field.
 pub(crate) fn product<I: IntegerRing>(
     layout: &Layout,
     a: (&[u64], &[I]),
     b: (&[u64], &[I]),
+    real: bool,
 ) -> Gathered<I> {
     debug_assert!(layout.words <= WORDS);
-    by_width!(layout.words, product_of_width, layout, a, b)
+    by_width!(layout.words, product_of_width, layout, a, Some(b), real)
 }
 
 /// The square of a term list, from the `n(n + 1)/2` products `c_i²·m_i²` and `2c_ic_j·m_im_j`
-/// (`i < j`), sorted, combined, zeros dropped. The caller has checked the exponents.
-pub(crate) fn square<I: IntegerRing>(layout: &Layout, a: (&[u64], &[I])) -> Gathered<I> {
+/// (`i < j`), sorted, combined, zeros dropped; `real` when all its coefficients are real.
+/// The caller has checked the exponents.
+pub(crate) fn square<I: IntegerRing>(
+    layout: &Layout,
+    a: (&[u64], &[I]),
+    real: bool,
+) -> Gathered<I> {
     debug_assert!(layout.words <= WORDS);
-    by_width!(layout.words, square_of_width, layout, a)
+    by_width!(layout.words, product_of_width, layout, a, None, real)
 }
 
 /// `Σ_k ∂(f, g)/∂(q_k, p_k)` over the `pairs` of variables of `vars` (at most
@@ -181,22 +199,32 @@ pub(crate) fn square<I: IntegerRing>(layout: &Layout, a: (&[u64], &[I])) -> Gath
 /// derivatives of the terms `c·m` and `d·n` have the monomial `m·n/(q·p)`, with the
 /// coefficient `c·d·(a_q·b_p − a_p·b_q)·iᵗ`, where `a`, `b` are the exponents in `m`, `n` and
 /// `t` counts the angles of the pair. The coefficients of `f` and `g` fit words and take at
-/// most `ab_bits` bits together ([`small_bits`], which the polynomials keep). `None` when a
-/// term product could pass the sums or an angle needs `i` in a ring without it (the general
-/// path handles both). The caller has checked the exponents.
+/// most `ab_bits` bits together ([`small_bits`], which the polynomials keep); `real` when
+/// all of them are real, which lets a ring with `i` gather in Z's words when no angle is
+/// active. `None` when a term product could pass the sums or an angle needs `i` in a ring
+/// without it (the general path handles both). The caller has checked the exponents.
 pub(crate) fn jacobians<I: IntegerRing>(
     vars: &VarSet,
     f: (&[u64], &[I]),
     g: (&[u64], &[I]),
     pairs: &[(Var, Var)],
-    ab_bits: u32,
+    (ab_bits, real): (u32, bool),
 ) -> Option<Gathered<I>> {
     let layout = vars.layout();
     debug_assert!(layout.words <= WORDS && pairs.len() <= MAX_JACOBIAN_PAIRS);
     debug_assert!(small_bits(f.1)
         .zip(small_bits(g.1))
         .is_some_and(|(a, b)| a + b <= ab_bits));
-    by_width!(layout.words, jacobians_of_width, vars, f, g, pairs, ab_bits)
+    debug_assert!(!real || f.1.iter().chain(g.1).all(I::is_real));
+    by_width!(
+        layout.words,
+        jacobians_of_width,
+        vars,
+        f,
+        g,
+        pairs,
+        (ab_bits, real)
+    )
 }
 
 /// A derivative `∂/∂v` as the kernels apply it to a packed monomial `c·m` of exponent `e` in
@@ -241,6 +269,8 @@ pub(crate) struct Product<'a, I> {
     k: i64,
     /// The [`small_bits`] of `a` and of `b` together.
     ab_bits: u32,
+    /// Whether the coefficients of `a` and `b` are all real.
+    real: bool,
     /// Whether `a` is free of the variables a [`MonomialMap`] substitutes: then the image
     /// of each term of `b` (divided by `v` for a derivative) holds for every term of `a`
     /// with it, and is found once per term of `b`.
@@ -249,13 +279,14 @@ pub(crate) struct Product<'a, I> {
 
 impl<'a, I> Product<'a, I> {
     /// `k·a·b`, or `k·(∂a/∂v)·b` when `by` is the derivative, where the coefficients of `a`
-    /// and `b` fit words and take at most `ab_bits` bits together ([`small_bits`]).
+    /// and `b` fit words and take at most `ab_bits` bits together ([`small_bits`]), and are
+    /// all real when `real`.
     pub(crate) fn new(
         a: (&'a [u64], &'a [I]),
         by: Option<Partial>,
         b: (&'a [u64], &'a [I]),
         k: i64,
-        ab_bits: u32,
+        (ab_bits, real): (u32, bool),
     ) -> Self {
         Product {
             a,
@@ -263,6 +294,7 @@ impl<'a, I> Product<'a, I> {
             b,
             k,
             ab_bits,
+            real,
             a_unmapped: false,
         }
     }
@@ -304,6 +336,17 @@ pub(crate) fn sum_of_products<I: IntegerRing>(
     map: Option<&MonomialMap>,
 ) -> Option<Gathered<I>> {
     debug_assert!(layout.words <= WORDS);
+    // Real products and squares, at no substitution: the sums are real. Decided here, out
+    // of the kernels: tested inside the flows' kernel, the branch made it 0.6 % more
+    // instructions (W1(8)).
+    if I::COMPLEX && map.is_none() && products.iter().all(|p| p.real && p.by.is_none()) {
+        return by_width!(
+            layout.words,
+            real_sum_of_products_of_width,
+            layout,
+            products
+        );
+    }
     by_width!(
         layout.words,
         sum_of_products_of_width,
@@ -313,17 +356,25 @@ pub(crate) fn sum_of_products<I: IntegerRing>(
     )
 }
 
-fn sum_of_products_of_width<K: Key, I: IntegerRing>(
-    layout: &Layout,
-    products: &[Product<'_, I>],
-    map: Option<&MonomialMap>,
-) -> Option<Gathered<I>> {
+/// The term products of `products`, the most of them that share a monomial, and the most
+/// bits of their factors' coefficients together.
+#[inline(always)]
+fn extent<I>(products: &[Product<'_, I>]) -> (usize, usize, u32) {
     let (mut n, mut per_monomial, mut ab_bits) = (0usize, 0usize, 0);
     for p in products {
         n = n.saturating_add(p.pairs());
         per_monomial = per_monomial.saturating_add(p.per_monomial());
         ab_bits = ab_bits.max(p.ab_bits);
     }
+    (n, per_monomial, ab_bits)
+}
+
+fn sum_of_products_of_width<K: Key, I: IntegerRing>(
+    layout: &Layout,
+    products: &[Product<'_, I>],
+    map: Option<&MonomialMap>,
+) -> Option<Gathered<I>> {
+    let (n, mut per_monomial, ab_bits) = extent(products);
     if let Some(map) = map {
         per_monomial = per_monomial.saturating_mul(map.fan_in());
     }
@@ -331,6 +382,80 @@ fn sum_of_products_of_width<K: Key, I: IntegerRing>(
     gathered!(n, budget, |words| gather_products(
         &mut words, layout, products, map
     ))
+}
+
+/// [`sum_of_products_of_width`] of products and squares of real factors, gathered in Z's
+/// words.
+fn real_sum_of_products_of_width<K: Key, I: IntegerRing>(
+    layout: &Layout,
+    products: &[Product<'_, I>],
+) -> Option<Gathered<I>> {
+    let (n, per_monomial, ab_bits) = extent(products);
+    let budget = WordGather::<K, Integer>::budget(ab_bits, per_monomial)?;
+    gathered!(real: n, budget, |words| gather_real_products(
+        &mut words, layout, products
+    ))
+}
+
+/// Adds the term products of products and squares of real factors to `words`, in Z's words;
+/// whether all of them fit.
+#[inline(always)]
+fn gather_real_products<K: Key, I: IntegerRing, T: Table<K, i128>>(
+    words: &mut WordGather<K, Integer, T>,
+    layout: &Layout,
+    products: &[Product<'_, I>],
+) -> bool {
+    let bias = bias_of::<K>(layout);
+    let (mut real_a, mut real_b) = (Smalls::new(), Smalls::new());
+    for p in products {
+        let Some(a) = real_a.fill_real(p.a.1) else {
+            return false;
+        };
+        let b = match p.is_square() {
+            true => None,
+            false => match real_b.fill_real(p.b.1) {
+                Some(b) => Some((p.b.0, b)),
+                None => return false,
+            },
+        };
+        if !plain_pairs(words, layout, None, &bias, (p.a.0, a), b, p.k) {
+            return false;
+        }
+    }
+    true
+}
+
+/// Adds `k·a·b`, or `k·a²` when `b` is `None`, from factors in words, to `words`, mapped by
+/// `map` when given; whether all of them fit. The walks' closures are inlined into them:
+/// called, each term product spilled the walk's registers (W4's Casimir).
+#[inline(always)]
+fn plain_pairs<K: Key, I: IntegerRing, T: Table<K, I::Wide>>(
+    words: &mut WordGather<K, I, T>,
+    layout: &Layout,
+    map: Option<&MonomialMap>,
+    bias: &K,
+    a: (&[u64], &[I::Small]),
+    b: Option<(&[u64], &[I::Small])>,
+    k: i64,
+) -> bool {
+    match b {
+        None => square_pairs(
+            a,
+            bias,
+            #[inline(always)]
+            |m, x, y, two| match k.checked_mul(two) {
+                Some(k) => words.push_mapped(layout, map, m, x, y, k, 0),
+                None => false,
+            },
+        ),
+        Some(b) => product_pairs(
+            a,
+            b,
+            bias,
+            #[inline(always)]
+            |m, x, y, _| words.push_mapped(layout, map, m, x, y, k, 0),
+        ),
+    }
 }
 
 /// Adds the term products of every product to `words`; whether all of them fit.
@@ -345,8 +470,7 @@ fn gather_products<K: Key, I: IntegerRing, T: Table<K, I::Wide>>(
     // A product or a square visits every term pair: its coefficients are converted to words
     // once per factor (a square's once). A derivative skips the terms without its variable, and
     // a flow on a condition has one long factor: those convert the coefficients of each term
-    // product they form. The closures of products and squares are inlined into their walks:
-    // called, each term product spilled the walk's registers (W4's Casimir).
+    // product they form.
     let (mut small_a, mut small_b) = (Smalls::new(), Smalls::new());
     for p in products {
         let k = p.k;
@@ -375,27 +499,13 @@ fn gather_products<K: Key, I: IntegerRing, T: Table<K, I::Wide>>(
                 let Some(a) = small_a.fill(p.a.1) else {
                     return false;
                 };
-                square_pairs(
-                    (p.a.0, a),
-                    &bias,
-                    #[inline(always)]
-                    |m, x, y, two| match k.checked_mul(two) {
-                        Some(k) => words.push_mapped(layout, map, m, x, y, k, 0),
-                        None => false,
-                    },
-                )
+                plain_pairs(words, layout, map, &bias, (p.a.0, a), None, k)
             }
             (_, None) => {
                 let (Some(a), Some(b)) = (small_a.fill(p.a.1), small_b.fill(p.b.1)) else {
                     return false;
                 };
-                product_pairs(
-                    (p.a.0, a),
-                    (p.b.0, b),
-                    &bias,
-                    #[inline(always)]
-                    |m, x, y, _| words.push_mapped(layout, map, m, x, y, k, 0),
-                )
+                plain_pairs(words, layout, map, &bias, (p.a.0, a), Some((p.b.0, b)), k)
             }
         };
         if !all {
@@ -405,54 +515,85 @@ fn gather_products<K: Key, I: IntegerRing, T: Table<K, I::Wide>>(
     true
 }
 
+/// `a·b`, or `a²` when `b` is `None`: in words while the sums fit them (Z's for real
+/// factors of a ring with `i`), else in ring elements.
 fn product_of_width<K: Key, I: IntegerRing>(
     layout: &Layout,
     a: (&[u64], &[I]),
-    b: (&[u64], &[I]),
+    b: Option<(&[u64], &[I])>,
+    real: bool,
 ) -> Gathered<I> {
+    let words = if I::COMPLEX && real {
+        let (mut real_a, mut real_b) = (Smalls::new(), Smalls::new());
+        in_words::<K, Integer, I>(
+            layout,
+            (a, b),
+            (|c| real_a.fill_real(c), |c| real_b.fill_real(c)),
+            I::from_real_wide,
+        )
+    } else {
+        let (mut small_a, mut small_b) = (Smalls::new(), Smalls::new());
+        in_words::<K, I, I>(
+            layout,
+            (a, b),
+            (|c| small_a.fill(c), |c| small_b.fill(c)),
+            I::from_wide,
+        )
+    };
+    if let Some(sums) = words {
+        return sums;
+    }
     let bias = bias_of::<K>(layout);
-    let n = a.1.len() * b.1.len();
-    let (mut small_a, mut small_b) = (Smalls::new(), Smalls::new());
-    if let (Some(sa), Some(sb)) = (small_a.fill(a.1), small_b.fill(b.1)) {
-        let per_monomial = a.1.len().min(b.1.len());
-        if let Some(budget) =
-            WordGather::<K, I>::budget(bits::<I>(sa) + bits::<I>(sb), per_monomial)
-        {
-            let sums = gathered!(n, budget, |words| product_pairs(
-                (a.0, sa),
-                (b.0, sb),
-                &bias,
-                |m, x, y, k| { words.push(m, x, y, k, 0) }
-            ));
-            if let Some(sums) = sums {
-                return sums;
-            }
+    match b {
+        Some(b) => {
+            let mut exact = Gather::<K, I>::with_capacity(a.1.len() * b.1.len());
+            product_pairs(a, b, &bias, |m, x, y, k| exact.push(m, x, y, k));
+            exact.finish()
+        }
+        None => {
+            let mut exact = Gather::<K, I>::with_capacity(a.1.len() * (a.1.len() + 1) / 2);
+            square_pairs(a, &bias, |m, x, y, k| exact.push(m, x, y, k));
+            exact.finish()
         }
     }
-    let mut exact = Gather::<K, I>::with_capacity(n);
-    product_pairs(a, b, &bias, |m, x, y, k| exact.push(m, x, y, k));
-    exact.finish()
 }
 
-fn square_of_width<K: Key, I: IntegerRing>(layout: &Layout, a: (&[u64], &[I])) -> Gathered<I> {
+/// [`product_of_width`] in words of the ring `A`, the factors' coefficients converted by
+/// `words` and the sums made elements of `I` by `element`; `None` when a coefficient has no
+/// word or a sum could pass the words.
+#[inline(always)]
+#[allow(clippy::type_complexity)]
+fn in_words<'s, K: Key, A: IntegerRing, I>(
+    layout: &Layout,
+    (a, b): ((&[u64], &[I]), Option<(&[u64], &[I])>),
+    words: (
+        impl FnOnce(&[I]) -> Option<&'s [A::Small]>,
+        impl FnOnce(&[I]) -> Option<&'s [A::Small]>,
+    ),
+    element: impl Fn(A::Wide) -> I,
+) -> Option<Gathered<I>> {
     let bias = bias_of::<K>(layout);
-    let n = a.1.len() * (a.1.len() + 1) / 2;
-    let mut small_a = Smalls::new();
-    if let Some(sa) = small_a.fill(a.1) {
-        if let Some(budget) = WordGather::<K, I>::budget(2 * bits::<I>(sa), a.1.len()) {
-            let sums = gathered!(n, budget, |words| square_pairs(
-                (a.0, sa),
-                &bias,
-                |m, x, y, k| { words.push(m, x, y, k, 0) }
-            ));
-            if let Some(sums) = sums {
-                return sums;
-            }
+    let sa = (a.0, (words.0)(a.1)?);
+    let (n, per_monomial, ab_bits, sb) = match b {
+        None => {
+            let n = a.1.len() * (a.1.len() + 1) / 2;
+            (n, a.1.len(), 2 * bits::<A>(sa.1), None)
         }
-    }
-    let mut exact = Gather::<K, I>::with_capacity(n);
-    square_pairs(a, &bias, |m, x, y, k| exact.push(m, x, y, k));
-    exact.finish()
+        Some(b) => {
+            let sb = (b.0, (words.1)(b.1)?);
+            let ab_bits = bits::<A>(sa.1) + bits::<A>(sb.1);
+            (
+                a.1.len() * b.1.len(),
+                a.1.len().min(b.1.len()),
+                ab_bits,
+                Some(sb),
+            )
+        }
+    };
+    let budget = WordGather::<K, A>::budget(ab_bits, per_monomial)?;
+    gathered!(A, element; n, budget, |words| plain_pairs(
+        &mut words, layout, None, &bias, sa, sb, 1
+    ))
 }
 
 fn jacobians_of_width<K: Key, I: IntegerRing>(
@@ -460,7 +601,7 @@ fn jacobians_of_width<K: Key, I: IntegerRing>(
     f: (&[u64], &[I]),
     g: (&[u64], &[I]),
     pairs: &[(Var, Var)],
-    ab_bits: u32,
+    (ab_bits, real): (u32, bool),
 ) -> Option<Gathered<I>> {
     let layout = vars.layout();
     let bias = bias_of::<K>(layout);
@@ -482,6 +623,14 @@ fn jacobians_of_width<K: Key, I: IntegerRing>(
     let budget = WordGather::<K, I>::budget(ab_bits, per_monomial)?;
     let n = f.1.len() * g.1.len() * count;
     let active = &active[..count];
+    // Real factors, and no angle to bring `i`: the sums are real.
+    if I::COMPLEX && real && active.iter().all(|pair| pair.turns() == 0) {
+        let (mut real_f, mut real_g) = (Smalls::new(), Smalls::new());
+        let (f, g) = ((f.0, real_f.fill_real(f.1)?), (g.0, real_g.fill_real(g.1)?));
+        return gathered!(real: n, budget, |out| gather_jacobians(
+            &mut out, layout, f, g, active
+        ));
+    }
     let (mut small_f, mut small_g) = (Smalls::new(), Smalls::new());
     let (f, g) = ((f.0, small_f.fill(f.1)?), (g.0, small_g.fill(g.1)?));
     gathered!(n, budget, |out| gather_jacobians(

@@ -60,20 +60,35 @@ impl<S: Copy> Smalls<S> {
     /// The coefficients as words, or `None` if one does not fit.
     #[inline(always)]
     pub(super) fn fill<I: IntegerRing<Small = S>>(&mut self, coeffs: &[I]) -> Option<&[S]> {
+        self.fill_with(coeffs, I::to_small)
+    }
+
+    /// The coefficients each as `word`, or `None` if one has none.
+    #[inline(always)]
+    fn fill_with<I>(&mut self, coeffs: &[I], word: impl Fn(&I) -> Option<S>) -> Option<&[S]> {
         if coeffs.len() <= INLINE_SMALLS {
             self.inline.clear();
             for c in coeffs {
-                self.inline.push(c.to_small()?);
+                self.inline.push(word(c)?);
             }
             Some(&self.inline)
         } else {
             // The vector's room is kept from one factor to the next.
             self.heap.clear();
             for c in coeffs {
-                self.heap.push(c.to_small()?);
+                self.heap.push(word(c)?);
             }
             Some(&self.heap)
         }
+    }
+}
+
+impl Smalls<i64> {
+    /// The coefficients as words of Z, or `None` if one is not real or does not fit: the
+    /// factors of a real gathering ([`IntegerRing::COMPLEX`]).
+    #[inline(always)]
+    pub(super) fn fill_real<I: IntegerRing>(&mut self, coeffs: &[I]) -> Option<&[i64]> {
+        self.fill_with(coeffs, I::to_real_i64)
     }
 }
 
@@ -334,6 +349,12 @@ impl<K: Key, I: IntegerRing, T: Table<K, I::Wide>> WordGather<K, I, T> {
     /// primitive. Takes `&mut self` so that an [`Inline`] table is not moved (copied) into
     /// the call; the table is spent afterwards.
     pub(super) fn finish(&mut self) -> Gathered<I> {
+        self.finish_as(I::from_wide)
+    }
+
+    /// [`WordGather::finish`] with each sum, divided, made an element of the ring `O` by
+    /// `element`: a real gathering for Z\[i\] ([`IntegerRing::from_real_wide`]).
+    pub(super) fn finish_as<O>(&mut self, element: impl Fn(I::Wide) -> O) -> Gathered<O> {
         let zero = I::Wide::default();
         let items = self.table.nonzero(zero);
         items.sort_unstable_by_key(|&(m, _)| std::cmp::Reverse(m));
@@ -356,7 +377,7 @@ impl<K: Key, I: IntegerRing, T: Table<K, I::Wide>> WordGather<K, I, T> {
         let mut coeffs = Vec::with_capacity(items.len());
         for &(m, sum) in items.iter() {
             m.store(&mut exps, K::WORDS);
-            coeffs.push(I::from_wide(match divisor {
+            coeffs.push(element(match divisor {
                 1 => sum,
                 -1 => I::wide_scale(&sum, -1),
                 d => I::wide_div_exact(&sum, d),
