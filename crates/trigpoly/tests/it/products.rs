@@ -4,7 +4,7 @@
 //! the same canonical polynomial, and takes the value of `f(p)·g(p)` at an integer point.
 
 use trigpoly::{
-    AlgebraError, Coefficient, GaussianRational, Limits, Point, Poly, Rational, VarSet, Vars,
+    AlgebraError, Coefficient, GaussianRational, Limits, Point, Poly, Rational, Var, VarSet, Vars,
 };
 
 use crate::common::{coordinates, p, var, G, Q};
@@ -141,6 +141,26 @@ fn products_of_monomials_wider_than_the_heap_keys() {
     assert_eq!(product, by_terms);
 }
 
+/// The space `x, y, p, θ` of the word-boundary tests, its variables, the point `x = 3,
+/// y = −2, p = 5`, and the constant `e^{iθ} = (3 + 4i)/5` (`cos θ = 3/5`, `sin θ = 4/5`) to
+/// put for `θ` before evaluating there.
+fn word_boundary_space() -> (Vars, [Var; 4], Point, G) {
+    let vars = VarSet::builder()
+        .coordinate("x")
+        .coordinate("y")
+        .momentum("p")
+        .angle("theta")
+        .build()
+        .unwrap();
+    let names = ["x", "y", "p", "theta"].map(|v| var(&vars, v));
+    let pt = point(&vars, &[("x", 3), ("y", -2), ("p", 5)]);
+    let on_circle = G::constant(
+        &vars,
+        GaussianRational::new(Rational::new(3, 5), Rational::new(4, 5)),
+    );
+    (vars, names, pt, on_circle)
+}
+
 /// Short products, squares, sums of products and brackets gather their term products in
 /// `i128` when the coefficients fit machine words, and as exact integers past a word or past
 /// the bits an `i128` sum holds. On both sides of each boundary, over Q and over Q(i): the
@@ -149,20 +169,7 @@ fn products_of_monomials_wider_than_the_heap_keys() {
 /// each taken and multiplied on its own.
 #[test]
 fn short_products_squares_sums_and_brackets_on_both_sides_of_the_word_boundary() {
-    let vars = VarSet::builder()
-        .coordinate("x")
-        .coordinate("y")
-        .momentum("p")
-        .angle("theta")
-        .build()
-        .unwrap();
-    let [x, y, pm, theta] = ["x", "y", "p", "theta"].map(|v| var(&vars, v));
-    let pt = point(&vars, &[("x", 3), ("y", -2), ("p", 5)]);
-    // At e^{iθ} = (3 + 4i)/5: cos θ = 3/5, sin θ = 4/5.
-    let on_circle = G::constant(
-        &vars,
-        GaussianRational::new(Rational::new(3, 5), Rational::new(4, 5)),
-    );
+    let (vars, [x, y, pm, theta], pt, on_circle) = word_boundary_space();
     let coefficients = [
         "3", "2^31", "2^55", "2^56 + 1", "2^62", "2^63 - 1", "-2^63", "2^63", "2^64 + 7", "2^100",
     ];
@@ -233,20 +240,7 @@ fn short_products_squares_sums_and_brackets_on_both_sides_of_the_word_boundary()
 /// `(θ, y)` take the values that the factors and their derivatives give at a point.
 #[test]
 fn real_factors_over_q_i_gather_in_integer_words() {
-    let vars = VarSet::builder()
-        .coordinate("x")
-        .coordinate("y")
-        .momentum("p")
-        .angle("theta")
-        .build()
-        .unwrap();
-    let [x, y, pm, theta] = ["x", "y", "p", "theta"].map(|v| var(&vars, v));
-    let pt = point(&vars, &[("x", 3), ("y", -2), ("p", 5)]);
-    // At e^{iθ} = (3 + 4i)/5.
-    let on_circle = G::constant(
-        &vars,
-        GaussianRational::new(Rational::new(3, 5), Rational::new(4, 5)),
-    );
+    let (vars, [x, y, pm, theta], pt, on_circle) = word_boundary_space();
     let at = |h: &G| {
         h.subst(theta, &on_circle)
             .and_then(|h| h.eval(&pt))

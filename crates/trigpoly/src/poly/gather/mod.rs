@@ -147,8 +147,10 @@ macro_rules! by_width {
 /// with the multiplier budget `$budget`, and says whether all of them fit) and then the sums,
 /// or `None`: the table is [`Inline`] for fewer than [`INLINE`] term products, else on the
 /// heap. The one place that picks; both tables are built where they stay (a macro, since
-/// the fill is compiled once for each). With `real:` first, the words are Z's and the sums
-/// become elements of `I` by [`IntegerRing::from_real_wide`].
+/// the fill is compiled once for each). The words are those of the ring `I` in scope, and
+/// `finish` makes the sums its elements; with `real:` first, they are Z's and the sums become
+/// elements of `I` by [`IntegerRing::from_real_wide`]; with `Ring, element;` first, they are
+/// `Ring`'s, made elements by `element`.
 macro_rules! gathered {
     ($n:expr, $budget:expr, |$words:ident| $fill:expr) => {
         gathered!(I, I::from_wide; $n, $budget, |$words| $fill)
