@@ -490,7 +490,7 @@ impl Coefficient for Rational {
     const HAS_I: bool = false;
     const NAME: &'static str = "Q";
     fn from_parts(content: &Rational, n: &Integer) -> Self {
-        content * Rational::from(n)
+        content.mul_integer(n)
     }
     fn split(&self) -> (Rational, Integer) {
         if self.is_zero() {
@@ -517,10 +517,7 @@ impl Coefficient for GaussianRational {
     const HAS_I: bool = true;
     const NAME: &'static str = "Q(i)";
     fn from_parts(content: &Rational, n: &GaussianInteger) -> Self {
-        GaussianRational::new(
-            content * Rational::from(&n.re),
-            content * Rational::from(&n.im),
-        )
+        GaussianRational::new(content.mul_integer(&n.re), content.mul_integer(&n.im))
     }
     fn split(&self) -> (Rational, GaussianInteger) {
         if self.is_zero() {

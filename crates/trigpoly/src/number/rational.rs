@@ -98,6 +98,24 @@ impl Rational {
         Rational::from_i128(n1 as i128 * n2 as i128, d1 as i128 * d2 as i128)
     }
 
+    /// `self · k`: for word-sized values one gcd, of `k` and the denominator, where a product
+    /// of two rationals takes two.
+    pub fn mul_integer(&self, k: &Integer) -> Rational {
+        if let (Repr::Small { num, den }, Some(k)) = (&self.0, k.to_i64()) {
+            if k == 0 || *num == 0 {
+                return Rational::zero();
+            }
+            if k != i64::MIN {
+                // The gcd divides the positive `den`, so it is a positive `i64`.
+                let g = binary_gcd(k.unsigned_abs(), *den as u64) as i64;
+                if let Some(num) = num.checked_mul(k / g) {
+                    return Rational(Repr::Small { num, den: den / g });
+                }
+            }
+        }
+        self * &Rational::from(k)
+    }
+
     /// The canonical form of a big rational.
     fn from_big(v: BigRational) -> Rational {
         match (v.numer().to_i64(), v.denom().to_i64()) {

@@ -536,7 +536,7 @@ impl<C: Coefficient> Poly<C> {
             None => Self::from_sorted(vars, content, exps, coeffs),
             Some(_) if coeffs.is_empty() || content.is_zero() => Self::zero(vars),
             Some(d) if d.is_one() => Self::assemble(vars, content, exps, coeffs),
-            Some(d) => Self::assemble(vars, content * Rational::from(d), exps, coeffs),
+            Some(d) => Self::assemble(vars, content.mul_integer(&d), exps, coeffs),
         }
     }
 

@@ -2,6 +2,7 @@
 //! trigonometric polynomials in `x, y, p_x, p_y, θ, φ, M, ω`.
 
 use num_bigint::BigInt;
+use num_rational::BigRational;
 use proptest::prelude::*;
 use proptest::test_runner::Config;
 use trigpoly::{
@@ -338,6 +339,14 @@ proptest! {
         if !y.is_zero() {
             prop_assert_eq!(&x / &y, Rational::from(&bx / &by));
         }
+    }
+
+    /// A rational times an integer (one gcd on the machine path) equals num-rational's
+    /// product, in canonical form, across the edges of `i64` and `i128`.
+    #[test]
+    fn rational_times_integer_matches_big_rationals(x in word_rational(), k in integer()) {
+        let product = x.to_big_rational() * BigRational::from_integer(k.clone());
+        prop_assert_eq!(x.mul_integer(&Integer::from(k)), Rational::from(product));
     }
 
     #[test]
