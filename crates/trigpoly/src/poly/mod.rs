@@ -443,8 +443,10 @@ impl<C: Coefficient> Poly<C> {
         }
         let mut r = 0u64;
         // The fields sit above the bits a word leaves over (64 mod bits of them).
-        for s in (64 % bits..64).step_by(bits as usize) {
+        let mut s = 64 % bits;
+        while s < 64 {
             r |= (acc >> s) & field;
+            s += bits;
         }
         // Every |e| ≤ r + 1 ≤ 2^(bit length of r).
         64 - r.leading_zeros()
