@@ -271,7 +271,9 @@ pub(crate) struct Product<'a, I> {
     k: i64,
     /// The [`small_bits`] of `a` and of `b` together.
     ab_bits: u32,
-    /// Whether the coefficients of `a` and `b` are all real.
+    /// Whether the coefficients of `a` and `b` are all real. Only plain products and squares
+    /// gather in Z's words, so a caller may leave it `false` for a derivative product without
+    /// reading the coefficients ([`sum_of_products`] tests `by` as well).
     real: bool,
     /// Whether `a` is free of the variables a [`MonomialMap`] substitutes: then the image
     /// of each term of `b` (divided by `v` for a derivative) holds for every term of `a`
@@ -526,21 +528,9 @@ fn product_of_width<K: Key, I: IntegerRing>(
     real: bool,
 ) -> Gathered<I> {
     let words = if I::COMPLEX && real {
-        let (mut real_a, mut real_b) = (Smalls::new(), Smalls::new());
-        in_words::<K, Integer, I>(
-            layout,
-            (a, b),
-            (|c| real_a.fill_real(c), |c| real_b.fill_real(c)),
-            I::from_real_wide,
-        )
+        in_words::<K, Integer, I>(layout, a, b, Smalls::fill_real, I::from_real_wide)
     } else {
-        let (mut small_a, mut small_b) = (Smalls::new(), Smalls::new());
-        in_words::<K, I, I>(
-            layout,
-            (a, b),
-            (|c| small_a.fill(c), |c| small_b.fill(c)),
-            I::from_wide,
-        )
+        in_words::<K, I, I>(layout, a, b, Smalls::fill, I::from_wide)
     };
     if let Some(sums) = words {
         return sums;
@@ -560,29 +550,27 @@ fn product_of_width<K: Key, I: IntegerRing>(
     }
 }
 
-/// [`product_of_width`] in words of the ring `A`, the factors' coefficients converted by
-/// `words` and the sums made elements of `I` by `element`; `None` when a coefficient has no
-/// word or a sum could pass the words.
+/// [`product_of_width`] in words of the ring `A`, the factors' coefficients taken as words
+/// by `fill` ([`Smalls::fill`], or [`Smalls::fill_real`] for Z's) and the sums made elements
+/// of `I` by `element`; `None` when a coefficient has no word or a sum could pass the words.
 #[inline(always)]
-#[allow(clippy::type_complexity)]
-fn in_words<'s, K: Key, A: IntegerRing, I>(
+fn in_words<K: Key, A: IntegerRing, I>(
     layout: &Layout,
-    (a, b): ((&[u64], &[I]), Option<(&[u64], &[I])>),
-    words: (
-        impl FnOnce(&[I]) -> Option<&'s [A::Small]>,
-        impl FnOnce(&[I]) -> Option<&'s [A::Small]>,
-    ),
+    a: (&[u64], &[I]),
+    b: Option<(&[u64], &[I])>,
+    fill: impl for<'s> Fn(&'s mut Smalls<A::Small>, &[I]) -> Option<&'s [A::Small]>,
     element: impl Fn(A::Wide) -> I,
 ) -> Option<Gathered<I>> {
     let bias = bias_of::<K>(layout);
-    let sa = (a.0, (words.0)(a.1)?);
+    let (mut small_a, mut small_b) = (Smalls::new(), Smalls::new());
+    let sa = (a.0, fill(&mut small_a, a.1)?);
     let (n, per_monomial, ab_bits, sb) = match b {
         None => {
             let n = a.1.len() * (a.1.len() + 1) / 2;
             (n, a.1.len(), 2 * bits::<A>(sa.1), None)
         }
         Some(b) => {
-            let sb = (b.0, (words.1)(b.1)?);
+            let sb = (b.0, fill(&mut small_b, b.1)?);
             let ab_bits = bits::<A>(sa.1) + bits::<A>(sb.1);
             (
                 a.1.len() * b.1.len(),
