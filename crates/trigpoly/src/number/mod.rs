@@ -52,6 +52,8 @@ pub trait IntegerRing:
     fn leading_sign(&self) -> i32;
     /// Complex conjugate (identity on Z).
     fn conj(&self) -> Self;
+    /// The value in Z\[i\].
+    fn to_gaussian_integer(&self) -> GaussianInteger;
     /// `i · a`, if `i` is in the ring.
     fn try_mul_i(&self) -> Option<Self>;
     /// The value as a machine integer, if it is real and fits an `i64`.
@@ -216,6 +218,9 @@ impl IntegerRing for Integer {
     fn conj(&self) -> Self {
         self.clone()
     }
+    fn to_gaussian_integer(&self) -> GaussianInteger {
+        GaussianInteger::new(self.clone(), Integer::ZERO)
+    }
     fn try_mul_i(&self) -> Option<Self> {
         None
     }
@@ -379,6 +384,9 @@ impl IntegerRing for GaussianInteger {
     }
     fn conj(&self) -> Self {
         GaussianInteger::conj(self)
+    }
+    fn to_gaussian_integer(&self) -> GaussianInteger {
+        self.clone()
     }
     fn try_mul_i(&self) -> Option<Self> {
         Some(self.mul_i())

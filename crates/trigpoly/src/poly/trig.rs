@@ -2,12 +2,12 @@
 //! normal form `Σ c · m · cos^a θ · sin^b θ` with `b ∈ {0, 1}` per angle (`sin²θ → 1 − cos²θ`),
 //! which is how elements are printed.
 
-use std::collections::{BTreeMap, HashMap};
+use std::collections::HashMap;
 
 use super::Poly;
 use crate::error::AlgebraError;
 use crate::number::{
-    Coefficient, GaussianInteger, GaussianRational, Integer, IntegerRing, Rational,
+    Coefficient, GaussianAcc, GaussianInteger, GaussianRational, Integer, IntegerRing, Rational,
 };
 use crate::varset::{Var, VarKind, VarSet, Vars};
 
@@ -35,61 +35,106 @@ impl<C: Coefficient> Poly<C> {
     /// The terms in the normal form `c · m · Π cos^a θ sin^b θ` (`b ≤ 1`), grouped and ordered
     /// for printing as the paper does: by trigonometric monomial, then by degree in the momenta
     /// (highest first, so `(p_x − Mωy) cos θ`), then by the monomial in the other variables.
+    ///
+    /// Each term's `e^{ikθ}` expands by a table of `(cos θ + i sin θ)^k` with integer
+    /// coefficients, so the sums are taken over Z\[i\] (no gcd per addition) and the content
+    /// multiplies each surviving sum once.
     pub fn cos_sin_terms(&self) -> Vec<CosSinTerm> {
         let angles: Vec<usize> = self.vars.angles().map(|v| v.index()).collect();
+        let n = self.vars.len();
+        let layout = self.layout();
+        let mut tables: HashMap<i64, Vec<(u32, u32, GaussianInteger)>> = HashMap::new();
+        // Keyed by the exponents (zero at the angles), then `(cos, sin)` powers per angle.
+        let mut sums: HashMap<Vec<i64>, GaussianAcc> = HashMap::new();
+        let mut key = vec![0i64; n + 2 * angles.len()];
+        let mut multiples = vec![0i64; angles.len()];
+        for k in 0..self.len() {
+            let m = self.exp(k);
+            for (j, e) in key[..n].iter_mut().enumerate() {
+                *e = layout.get(m, j);
+            }
+            for (kj, &j) in multiples.iter_mut().zip(&angles) {
+                *kj = std::mem::take(&mut key[j]);
+                tables.entry(*kj).or_insert_with(|| euler_power(*kj));
+            }
+            let rows: Vec<&[(u32, u32, GaussianInteger)]> =
+                multiples.iter().map(|kj| tables[kj].as_slice()).collect();
+            let coeff = self.coeffs[k].to_gaussian_integer();
+            // Every choice of one entry per angle's table (an odometer over the rows).
+            let mut choice = vec![0usize; rows.len()];
+            loop {
+                let mut factor: Option<GaussianInteger> = None;
+                for (a, (row, &i)) in rows.iter().zip(&choice).enumerate() {
+                    let (cos, sin, ref g) = row[i];
+                    key[n + 2 * a] = i64::from(cos);
+                    key[n + 2 * a + 1] = i64::from(sin);
+                    factor = Some(match factor {
+                        None => g.clone(),
+                        Some(f) => IntegerRing::mul(&f, g),
+                    });
+                }
+                let acc = match sums.get_mut(key.as_slice()) {
+                    Some(acc) => acc,
+                    None => sums.entry(key.clone()).or_default(),
+                };
+                match &factor {
+                    Some(f) => acc.add_mul(&coeff, f),
+                    None => acc.add(&coeff),
+                }
+                let Some(a) = (0..rows.len())
+                    .rev()
+                    .find(|&a| choice[a] + 1 < rows[a].len())
+                else {
+                    break;
+                };
+                choice[a] += 1;
+                choice[a + 1..].iter_mut().for_each(|i| *i = 0);
+            }
+        }
         let momenta: Vec<usize> = self
             .vars
             .vars()
             .filter(|&v| self.vars.variable(v).kind() == VarKind::Momentum)
             .map(|v| v.index())
             .collect();
-        type Key = (TrigMonomial, std::cmp::Reverse<(i64, Vec<i64>)>);
-        let layout = self.layout();
-        let mut tables: HashMap<i64, Vec<(u32, u32, GaussianInteger)>> = HashMap::new();
-        let mut acc: BTreeMap<Key, GaussianRational> = BTreeMap::new();
-        for k in 0..self.len() {
-            let m = self.exp(k);
-            let mut exps: Vec<i64> = (0..self.vars.len()).map(|j| layout.get(m, j)).collect();
-            let coeff = C::from_parts(&Rational::one(), &self.coeffs[k]).to_gaussian();
-            // Expand Π_j (cos θ_j ± i sin θ_j)^{|k_j|} in normal form.
-            let mut partial: Vec<(Vec<(u32, u32)>, GaussianRational)> = vec![(Vec::new(), coeff)];
-            for &j in &angles {
-                let kj = exps[j];
-                exps[j] = 0;
-                let table = tables.entry(kj).or_insert_with(|| euler_power(kj));
-                let mut next = Vec::with_capacity(partial.len() * table.len());
-                for (pows, c) in &partial {
-                    for (a, b, g) in table.iter() {
-                        let mut p = pows.clone();
-                        p.push((*a, *b));
-                        let gq =
-                            GaussianRational::new(Rational::from(&g.re), Rational::from(&g.im));
-                        next.push((p, c * &gq));
-                    }
+        let mut terms: Vec<(TrigKey, i64, CosSinTerm)> = sums
+            .into_iter()
+            .filter_map(|(mut exps, acc)| {
+                let sum = acc.finish();
+                if sum.is_zero() {
+                    return None;
                 }
-                partial = next;
-            }
-            for (pows, c) in partial {
+                let powers = exps[n..]
+                    .chunks_exact(2)
+                    .map(|p| (p[0] as u32, p[1] as u32));
+                let trig = TrigMonomial {
+                    powers: powers.collect(),
+                };
+                exps.truncate(n);
                 let momentum_degree = momenta.iter().map(|&j| exps[j].abs()).sum();
-                let key = (
-                    TrigMonomial { powers: pows },
-                    std::cmp::Reverse((momentum_degree, exps.clone())),
+                let coeff = GaussianRational::new(
+                    self.content.mul_integer(&sum.re),
+                    self.content.mul_integer(&sum.im),
                 );
-                let slot = acc.entry(key).or_default();
-                *slot = &*slot + &c;
-            }
-        }
-        let content = GaussianRational::from(self.content.clone());
-        acc.into_iter()
-            .filter(|(_, c)| !c.is_zero())
-            .map(|((trig, exps), c)| CosSinTerm {
-                coeff: &c * &content,
-                exps: exps.0 .1,
-                trig,
+                Some((
+                    trig.sort_key(),
+                    momentum_degree,
+                    CosSinTerm { coeff, exps, trig },
+                ))
             })
-            .collect()
+            .collect();
+        // Trigonometric monomial first, then the momenta's degree and the exponents, both
+        // descending; no two terms share all three.
+        terms.sort_unstable_by(|x, y| {
+            x.0.cmp(&y.0)
+                .then_with(|| (y.1, &y.2.exps).cmp(&(x.1, &x.2.exps)))
+        });
+        terms.into_iter().map(|(_, _, term)| term).collect()
     }
 }
+
+/// [`TrigMonomial`]'s order, computed once per term.
+type TrigKey = (u32, Vec<(u32, u32)>);
 
 fn check_angle<C: Coefficient>(vars: &VarSet, v: Var, what: &str) -> Result<(), AlgebraError> {
     if vars.variable(v).kind() != VarKind::Angle {
@@ -158,7 +203,7 @@ impl TrigMonomial {
         self.powers.iter().all(|&(a, b)| a == 0 && b == 0)
     }
 
-    fn sort_key(&self) -> (u32, Vec<(u32, u32)>) {
+    fn sort_key(&self) -> TrigKey {
         let degree = self.powers.iter().map(|&(a, b)| a + b).sum();
         (degree, self.powers.iter().map(|&(a, b)| (b, a)).collect())
     }

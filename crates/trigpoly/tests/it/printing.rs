@@ -310,3 +310,23 @@ fn polynomials_over_q_never_print_the_imaginary_unit() {
     let over_q = e.to_rational().map(|f| f.to_string());
     assert_eq!(over_q, None, "x·e^(iθ) is not a polynomial over Q");
 }
+
+/// High powers of `e^{iθ}` expand into cosines and sines with coefficients past 64 and 128
+/// bits, summed over Z[i] and scaled by the content once (`Poly::cos_sin_terms`): the printed
+/// forms still parse back to the element, and a known coefficient comes out exact.
+#[test]
+fn high_trigonometric_powers_with_long_coefficients_print_exactly() {
+    let vars = plane();
+    let f: G = p(
+        &vars,
+        "(12345678901*p_x*cos(theta) + 98765432109*i*M*omega*x*sin(theta) + 3/7)^9/11",
+    );
+    for (style, text) in [("ascii", f.to_ascii()), ("unicode", f.to_string())] {
+        let back = Poly::<GaussianRational>::parse(&vars, &text).map_err(|e| e.render(&text));
+        assert_eq!(back, Ok(f.clone()), "the {style} form parses back");
+    }
+    // p_x⁹ cos⁹θ has the coefficient 12345678901⁹/11, and heads the group of cos⁹θ.
+    let lead = num_bigint::BigInt::from(12345678901u64).pow(9);
+    let text = f.to_ascii();
+    assert!(text.contains(&format!("({lead}*p_x^9/11 + ")), "{text}");
+}
