@@ -164,12 +164,10 @@ pub fn value(report: &Report, options: &Options) -> Value {
     })
 }
 
+/// An expression in the three notations (its cos/sin normal form computed once).
 fn expr(e: &Expr) -> Value {
-    json!({
-        "text": e.render(Style::Unicode),
-        "ascii": e.render(Style::Ascii),
-        "latex": e.render(Style::Latex),
-    })
+    let [text, ascii, latex] = e.render_each([Style::Unicode, Style::Ascii, Style::Latex]);
+    json!({ "text": text, "ascii": ascii, "latex": latex })
 }
 
 fn claim(c: &ClaimResult, section: u32, seconds: Value) -> Value {

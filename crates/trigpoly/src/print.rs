@@ -24,6 +24,21 @@ impl<C: Coefficient> Poly<C> {
         render_terms(self.vars(), &self.cos_sin_terms(), style)
     }
 
+    /// The element in several notations, its cos/sin normal form ([`Poly::cos_sin_terms`])
+    /// computed once for all of them.
+    ///
+    /// ```
+    /// use trigpoly::{Poly, Rational, Style, VarSet};
+    /// let vars = VarSet::builder().coordinate("x").momentum("p_x").parameter("M").build().unwrap();
+    /// let h = Poly::<Rational>::parse(&vars, "p_x^2/(2*M)").unwrap();
+    /// let [text, latex] = h.render_each([Style::Unicode, Style::Latex]);
+    /// assert_eq!((text, latex), (h.to_string(), h.to_latex()));
+    /// ```
+    pub fn render_each<const N: usize>(&self, styles: [Style; N]) -> [String; N] {
+        let terms = self.cos_sin_terms();
+        styles.map(|style| render_terms(self.vars(), &terms, style))
+    }
+
     /// LaTeX math (no surrounding `$`).
     pub fn to_latex(&self) -> String {
         self.render(Style::Latex)
