@@ -42,17 +42,21 @@ impl BracketTable {
             .map(|n| system.display_name(n).to_string())
             .zip(funcs.iter().cloned())
             .collect();
-        let mut entries = Vec::new();
-        for a in &funcs {
-            let mut row = Vec::new();
-            for b in &funcs {
-                let br = system.bracket(a, b)?;
-                row.push(match express(&br, &basis)? {
+        // The bracket is antisymmetric: the entries above the diagonal are computed, those on
+        // it are zero and those below are the negated entries above.
+        let n = funcs.len();
+        let mut entries: Vec<Vec<Entry>> = (0..n).map(|_| Vec::with_capacity(n)).collect();
+        for a in 0..n {
+            entries[a].push(Entry::Combination(Vec::new()));
+            for b in a + 1..n {
+                let br = system.bracket(&funcs[a], &funcs[b])?;
+                let entry = match express(&br, &basis)? {
                     Some(c) => Entry::Combination(c),
                     None => Entry::Expression(br),
-                });
+                };
+                entries[b].push(entry.negated());
+                entries[a].push(entry);
             }
-            entries.push(row);
         }
         Ok(BracketTable {
             names: names.iter().map(|s| s.to_string()).collect(),
@@ -63,6 +67,16 @@ impl BracketTable {
 }
 
 impl Entry {
+    /// `−entry`: the entry of the transposed bracket.
+    fn negated(&self) -> Entry {
+        match self {
+            Entry::Combination(terms) => {
+                Entry::Combination(terms.iter().map(|(c, name)| (-c, name.clone())).collect())
+            }
+            Entry::Expression(e) => Entry::Expression(-e),
+        }
+    }
+
     /// The entry as text in a notation: `−ω² L`, `4 G1`, `0`.
     pub fn render(&self, style: Style) -> String {
         match self {

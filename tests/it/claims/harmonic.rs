@@ -392,3 +392,19 @@ fn section3_bracket_table_renders() {
         ])
     );
 }
+
+/// A bracket of two long functions (past the short kernel): of a function with itself it is
+/// zero (the antisymmetry the engine reads off equal term lists), and of P_{8,8} with Q_{8,8},
+/// whose terms have the same monomials and other coefficients, it is
+/// `{P, Q} = −{K, K̄}/(2i) = −64 Z⁷Z̄⁷ {Z, Z̄}/(2i) = −128 Mω Z⁷Z̄⁷`, which a test of equal
+/// lengths instead of equal term lists would give as zero.
+#[test]
+fn long_brackets_of_a_function_with_itself_and_with_its_partner() {
+    let mut sys = systems::harmonic_rotor();
+    define_family(&mut sys, "Z", 8, 8);
+    assert_eq!(sys.get("P").unwrap().len(), sys.get("Q").unwrap().len());
+    identity!(sys, "{P, P} = 0");
+    identity!(sys, "{K, K} = 0");
+    identity!(sys, "{P, Q} = -128*M*omega*Z^7*Zbar^7");
+    identity!(sys, "{P, Q} = 0" => refuted "-128*M*omega*Z^7*Zbar^7");
+}
