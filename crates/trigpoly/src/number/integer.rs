@@ -725,12 +725,88 @@ impl One for Integer {
     }
 }
 
-/// An accumulator for sums of products `Σ a_k b_k` of integers: `i128` while it fits, then
-/// `BigInt`. This is what keeps multiplication free of allocations for small coefficients.
+/// An accumulator for sums of products `Σ a_k b_k` of integers: products of words in an `i128`
+/// while it fits; products of values up to `i128` (the `Wide` tier) in a 256-bit two's
+/// complement sum; `BigInt` for the rest. This is what keeps multiplication free of allocations
+/// for small coefficients, and the square of a polynomial with 70-bit coefficients free of
+/// `BigInt` products.
 #[derive(Clone, Debug, Default)]
 pub struct IntegerAcc {
     small: i128,
-    big: Option<BigInt>,
+    long: Long,
+}
+
+/// The part of an [`IntegerAcc`]'s sum past the `i128`.
+#[derive(Clone, Debug, Default)]
+enum Long {
+    /// Nothing yet (a tag to test, so a short sum costs no more than an `i128`).
+    #[default]
+    Zero,
+    /// Products of values up to `i128`, in 256 bits.
+    Wide(Wide256),
+    /// Past 256 bits, or with a factor past `i128`.
+    Big(BigInt),
+}
+
+/// A 256-bit two's complement integer `high·2¹²⁸ + low`.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+struct Wide256 {
+    low: u128,
+    high: i128,
+}
+
+impl Wide256 {
+    /// `x·y` (at most `2²⁵⁴` in magnitude, so it always fits).
+    fn product(x: i128, y: i128) -> Wide256 {
+        let (a, b) = (x.unsigned_abs(), y.unsigned_abs());
+        let (a1, a0) = (a >> 64, a & u128::from(u64::MAX));
+        let (b1, b0) = (b >> 64, b & u128::from(u64::MAX));
+        // Each cross product is below 2¹²⁷, so their sum fits.
+        let cross = a0 * b1 + a1 * b0;
+        let (low, low_carry) = (a0 * b0).overflowing_add(cross << 64);
+        let high = a1 * b1 + (cross >> 64) + u128::from(low_carry);
+        let magnitude = Wide256 {
+            low,
+            high: high as i128,
+        };
+        if (x < 0) != (y < 0) {
+            magnitude.negated()
+        } else {
+            magnitude
+        }
+    }
+
+    /// `−self` (never overflows for a product's magnitude, below `2²⁵⁴`).
+    fn negated(self) -> Wide256 {
+        let low = (!self.low).wrapping_add(1);
+        Wide256 {
+            low,
+            high: (!self.high).wrapping_add(i128::from(low == 0)),
+        }
+    }
+
+    /// `self + v`, or `None` past 256 bits.
+    fn checked_add(self, v: Wide256) -> Option<Wide256> {
+        let (low, carry) = self.low.overflowing_add(v.low);
+        let high = self
+            .high
+            .checked_add(v.high)?
+            .checked_add(i128::from(carry))?;
+        Some(Wide256 { low, high })
+    }
+
+    fn to_bigint(self) -> BigInt {
+        (BigInt::from(self.high) << 128) + BigInt::from(self.low)
+    }
+}
+
+/// The value of `a` as an `i128`, unless it is a `BigInt`.
+fn up_to_i128(a: &Integer) -> Option<i128> {
+    match a.view() {
+        IntegerView::Small(x) => Some(i128::from(x)),
+        IntegerView::Wide(v) => Some(v),
+        IntegerView::Big(_) => None,
+    }
 }
 
 impl IntegerAcc {
@@ -741,10 +817,10 @@ impl IntegerAcc {
             let p = x as i128 * y as i128;
             match self.small.checked_add(p) {
                 Some(s) => self.small = s,
-                None => self.spill(BigInt::from(p)),
+                None => self.add_wide(Wide256::product(p, 1)),
             }
         } else {
-            self.spill(a.to_bigint() * b.to_bigint());
+            self.add_mul_wide(a, b, false);
         }
     }
 
@@ -754,11 +830,11 @@ impl IntegerAcc {
         match a.view() {
             IntegerView::Small(x) => match self.small.checked_add(x as i128) {
                 Some(s) => self.small = s,
-                None => self.spill(BigInt::from(x)),
+                None => self.add_wide(Wide256::product(i128::from(x), 1)),
             },
             IntegerView::Wide(v) => match self.small.checked_add(v) {
                 Some(s) => self.small = s,
-                None => self.spill(BigInt::from(v)),
+                None => self.add_wide(Wide256::product(v, 1)),
             },
             IntegerView::Big(b) => self.spill(b.clone()),
         }
@@ -771,39 +847,83 @@ impl IntegerAcc {
             let p = x as i128 * y as i128;
             match self.small.checked_sub(p) {
                 Some(s) => self.small = s,
-                None => self.spill(-BigInt::from(p)),
+                None => self.add_wide(Wide256::product(p, -1)),
             }
         } else {
-            self.spill(-(a.to_bigint() * b.to_bigint()));
+            self.add_mul_wide(a, b, true);
+        }
+    }
+
+    /// `acc ±= a * b` for factors past a word: in 256 bits when both fit an `i128`.
+    #[cold]
+    fn add_mul_wide(&mut self, a: &Integer, b: &Integer, negate: bool) {
+        match (up_to_i128(a), up_to_i128(b)) {
+            (Some(x), Some(y)) => {
+                let p = Wide256::product(x, y);
+                self.add_wide(if negate { p.negated() } else { p });
+            }
+            _ => {
+                let p = a.to_bigint() * b.to_bigint();
+                self.spill(if negate { -p } else { p });
+            }
+        }
+    }
+
+    /// `acc += v` in the 256-bit tier, or as a `BigInt` past it.
+    #[cold]
+    fn add_wide(&mut self, v: Wide256) {
+        match &mut self.long {
+            Long::Zero => self.long = Long::Wide(v),
+            Long::Wide(w) => match w.checked_add(v) {
+                Some(sum) => *w = sum,
+                None => self.long = Long::Big(w.to_bigint() + v.to_bigint()),
+            },
+            Long::Big(b) => *b += v.to_bigint(),
         }
     }
 
     #[cold]
     fn spill(&mut self, v: BigInt) {
-        let big = self.big.get_or_insert_with(BigInt::zero);
-        *big += v;
+        match &mut self.long {
+            Long::Zero => self.long = Long::Big(v),
+            Long::Wide(w) => self.long = Long::Big(w.to_bigint() + v),
+            Long::Big(b) => *b += v,
+        }
     }
 
     /// The accumulated value.
+    #[inline]
     pub fn finish(self) -> Integer {
-        match self.big {
-            None => Integer::from_i128(self.small),
-            Some(b) => Integer::from_bigint(b + BigInt::from(self.small)),
+        match self.long {
+            Long::Zero => Integer::from_i128(self.small),
+            long => Integer::from_bigint(Self::long_sum(self.small, long)),
         }
     }
 
     /// Whether the accumulated value is zero.
+    #[inline]
     pub fn is_zero(&self) -> bool {
-        match &self.big {
-            None => self.small == 0,
-            Some(b) => (b + BigInt::from(self.small)).is_zero(),
+        match &self.long {
+            Long::Zero => self.small == 0,
+            long => Self::long_sum(self.small, long.clone()).is_zero(),
         }
+    }
+
+    /// The value of a sum that passed the `i128`.
+    #[cold]
+    fn long_sum(small: i128, long: Long) -> BigInt {
+        let long = match long {
+            Long::Zero => BigInt::zero(),
+            Long::Wide(w) => w.to_bigint(),
+            Long::Big(b) => b,
+        };
+        long + BigInt::from(small)
     }
 }
 
 #[cfg(test)]
 mod tests {
-    use super::{Integer, IntegerView};
+    use super::{Integer, IntegerAcc, IntegerView};
     use num_bigint::BigInt;
     use std::collections::HashSet;
 
@@ -893,5 +1013,53 @@ mod tests {
         assert_eq!(least.view(), IntegerView::Small(-(1 << 62)));
         assert_eq!((-&least).view(), IntegerView::Wide(1 << 62));
         assert_eq!(-(-&least), least);
+    }
+
+    /// The accumulator through every pair of edge values, each row on a fresh accumulator (so
+    /// that its sum climbs the tiers in order) and then all rows in one, added and subtracted
+    /// in turn; and the 256-bit tier's own edge: `(−2¹²⁷)² = 2²⁵⁴`, twice, passes its signed
+    /// range, and the sum must go on in a `BigInt`, up and back down.
+    #[test]
+    fn the_accumulator_sums_edge_products_exactly() {
+        let least = Integer::from(BigInt::from(i128::MIN));
+        let square = BigInt::from(i128::MIN) * BigInt::from(i128::MIN);
+        let mut acc = IntegerAcc::default();
+        let mut want = BigInt::from(0);
+        for k in 0..6 {
+            if k < 3 {
+                acc.add_mul(&least, &least);
+                want += &square;
+            } else {
+                acc.sub_mul(&least, &least);
+                want -= &square;
+            }
+            assert_eq!(acc.clone().finish().to_bigint(), want, "after {k} squares");
+        }
+        assert!(acc.is_zero());
+        let values = edges();
+        let mut all = IntegerAcc::default();
+        let mut all_want = BigInt::from(0);
+        for (k, a) in values.iter().enumerate() {
+            let mut row = IntegerAcc::default();
+            let mut row_want = BigInt::from(0);
+            for b in &values {
+                let (x, y) = (Integer::from(a.clone()), Integer::from(b.clone()));
+                let p = a * b;
+                if k % 2 == 0 {
+                    row.add_mul(&x, &y);
+                    all.add_mul(&x, &y);
+                    row_want += &p;
+                    all_want += p;
+                } else {
+                    row.sub_mul(&x, &y);
+                    all.sub_mul(&x, &y);
+                    row_want -= &p;
+                    all_want -= p;
+                }
+            }
+            assert_eq!(row.is_zero(), row_want == BigInt::from(0));
+            assert_eq!(row.finish().to_bigint(), row_want, "row {k}");
+        }
+        assert_eq!(all.finish().to_bigint(), all_want);
     }
 }

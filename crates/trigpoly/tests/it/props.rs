@@ -6,7 +6,8 @@ use num_rational::BigRational;
 use proptest::prelude::*;
 use proptest::test_runner::Config;
 use trigpoly::{
-    ExactDivisor, GaussianRational, Integer, IntegerView, Point, Poly, Rational, VarKind,
+    ExactDivisor, GaussianRational, Integer, IntegerAcc, IntegerView, Point, Poly, Rational,
+    VarKind,
 };
 
 use crate::common::{phase_space, var, G, Q};
@@ -589,6 +590,39 @@ proptest! {
         prop_assert_eq!(x.cmp(&y), a.cmp(&b));
         prop_assert_eq!(x.bits(), a.bits());
         prop_assert_eq!(x.to_string(), a.to_string());
+    }
+
+    /// `IntegerAcc` sums products and values of every tier as `BigInt` does: word products
+    /// in an `i128`, products of values up to `i128` in 256 bits, the rest as `BigInt`, in
+    /// any order; `finish` is canonical. (The 256-bit tier's own overflow, which needs the
+    /// largest products several times over, is pinned by a unit test beside the type.)
+    #[test]
+    fn integer_accumulator_agrees_with_bigint(
+        ops in proptest::collection::vec((0u8..3, integer(), integer()), 0..12),
+    ) {
+        let mut acc = IntegerAcc::default();
+        let mut want = BigInt::from(0);
+        for (op, a, b) in &ops {
+            let (x, y) = (Integer::from(a.clone()), Integer::from(b.clone()));
+            match op {
+                0 => {
+                    acc.add_mul(&x, &y);
+                    want += a * b;
+                }
+                1 => {
+                    acc.sub_mul(&x, &y);
+                    want -= a * b;
+                }
+                _ => {
+                    acc.add(&x);
+                    want += a;
+                }
+            }
+        }
+        prop_assert_eq!(acc.is_zero(), want == BigInt::from(0));
+        let got = acc.finish();
+        prop_assert!(canonical(&got), "{got:?} is not canonical");
+        prop_assert_eq!(got.to_bigint(), want);
     }
 
     /// `GaussianInteger`'s ring operations compute what `BigInt` computes componentwise,
