@@ -146,23 +146,48 @@ fn char_floor(text: &str, offset: usize) -> usize {
     i
 }
 
-/// Line, column, source line and caret of a byte range.
+/// A source line longer than this many characters is shown as a window around the error.
+const EXCERPT_CHARS: usize = 100;
+
+/// Characters of context the window keeps on each side of the caret.
+const EXCERPT_CONTEXT: usize = 40;
+
+/// Line, column, source line and caret of a byte range. A long line (a generated expression
+/// pasted into a file) is cut to a window around the caret, with `…` where it was cut.
 pub(crate) fn locate(text: &str, span: Range<usize>) -> Location {
     let start = char_floor(text, span.start);
     let line_start = text[..start].rfind('\n').map_or(0, |i| i + 1);
     let line_end = text[start..].find('\n').map_or(text.len(), |i| start + i);
     let end = char_floor(text, span.end).clamp(start, line_end);
-    let line_text = text[line_start..line_end].trim_end_matches('\r');
-    let pad: String = text[line_start..start]
+    let line: Vec<char> = text[line_start..line_end]
+        .trim_end_matches('\r')
         .chars()
-        .map(|c| if c == '\t' { '\t' } else { ' ' })
         .collect();
+    let column = text[line_start..start].chars().count();
+    let width = text[start..end].chars().count().max(1);
+    let (from, to) = if line.len() <= EXCERPT_CHARS {
+        (0, line.len())
+    } else {
+        let to = column + width.min(EXCERPT_CONTEXT) + EXCERPT_CONTEXT;
+        (column.saturating_sub(EXCERPT_CONTEXT), to.min(line.len()))
+    };
+    let cut_before = if from > 0 { "…" } else { "" };
+    let cut_after = if to < line.len() { "…" } else { "" };
+    let excerpt = format!(
+        "{cut_before}{}{cut_after}",
+        line[from..to].iter().collect::<String>()
+    );
+    let pad: String = " ".repeat(cut_before.chars().count())
+        + &line[from..column.min(line.len())]
+            .iter()
+            .map(|&c| if c == '\t' { '\t' } else { ' ' })
+            .collect::<String>();
     Location {
         line: text[..start].matches('\n').count() + 1,
-        column: text[line_start..start].chars().count() + 1,
-        excerpt: line_text.to_string(),
+        column: column + 1,
+        excerpt,
         pad,
-        width: text[start..end].chars().count().max(1),
+        width: width.min(to.saturating_sub(column)).max(1),
     }
 }
 
@@ -205,6 +230,43 @@ mod tests {
         assert_eq!(
             e.to_string(),
             "a.toml:2:21: unknown name 'G3'\n 2 | claim = \"{L, G1} = -G3\"\n   |                     ^^"
+        );
+    }
+
+    /// A long line (here 4000 terms) shows a window of 40 characters either side of the
+    /// caret, cut with `…`, and the caret stays under the offending text.
+    #[test]
+    fn a_long_line_is_shown_as_a_window_around_the_error() {
+        let expr = format!("{}q{}", "x+".repeat(2000), "+x".repeat(2000));
+        let text = format!("value = \"{expr}\"\n");
+        let start = text.find('q').unwrap();
+        let e = FileError::at(
+            ErrorKind::Expression,
+            "a.toml",
+            &text,
+            start..start + 1,
+            "unknown name 'q'",
+        );
+        let side = "x+".repeat(20);
+        let after = "+x".repeat(20);
+        assert_eq!(
+            e.to_string(),
+            format!(
+                "a.toml:1:{}: unknown name 'q'\n 1 | …{side}q{after}…\n   | {}^",
+                start + 1,
+                " ".repeat(41)
+            )
+        );
+        // Near the start of the line nothing is cut before it.
+        let e = FileError::at(ErrorKind::Expression, "a.toml", &text, 9..10, "here");
+        let shown = e.to_string();
+        assert!(
+            shown.contains(&format!(" 1 | value = \"{}", "x+".repeat(20))),
+            "{shown}"
+        );
+        assert!(
+            shown.ends_with(&format!("…\n   | {}^", " ".repeat(9))),
+            "{shown}"
         );
     }
 }
