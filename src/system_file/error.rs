@@ -10,6 +10,8 @@
 use std::fmt;
 use std::ops::Range;
 
+use trigpoly::{Excerpt, Span};
+
 /// What kind of problem a [`FileError`] reports.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum ErrorKind {
@@ -146,48 +148,18 @@ fn char_floor(text: &str, offset: usize) -> usize {
     i
 }
 
-/// A source line longer than this many characters is shown as a window around the error.
-const EXCERPT_CHARS: usize = 100;
-
-/// Characters of context the window keeps on each side of the caret.
-const EXCERPT_CONTEXT: usize = 40;
-
-/// Line, column, source line and caret of a byte range. A long line (a generated expression
-/// pasted into a file) is cut to a window around the caret, with `…` where it was cut.
+/// Line, column, source line and caret of a byte range; a long line is shown as a window
+/// around the caret ([`Excerpt`]).
 pub(crate) fn locate(text: &str, span: Range<usize>) -> Location {
     let start = char_floor(text, span.start);
     let line_start = text[..start].rfind('\n').map_or(0, |i| i + 1);
-    let line_end = text[start..].find('\n').map_or(text.len(), |i| start + i);
-    let end = char_floor(text, span.end).clamp(start, line_end);
-    let line: Vec<char> = text[line_start..line_end]
-        .trim_end_matches('\r')
-        .chars()
-        .collect();
-    let column = text[line_start..start].chars().count();
-    let width = text[start..end].chars().count().max(1);
-    let (from, to) = if line.len() <= EXCERPT_CHARS {
-        (0, line.len())
-    } else {
-        let to = column + width.min(EXCERPT_CONTEXT) + EXCERPT_CONTEXT;
-        (column.saturating_sub(EXCERPT_CONTEXT), to.min(line.len()))
-    };
-    let cut_before = if from > 0 { "…" } else { "" };
-    let cut_after = if to < line.len() { "…" } else { "" };
-    let excerpt = format!(
-        "{cut_before}{}{cut_after}",
-        line[from..to].iter().collect::<String>()
-    );
-    let pad: String = " ".repeat(cut_before.chars().count())
-        + &line[from..column.min(line.len())]
-            .iter()
-            .map(|&c| if c == '\t' { '\t' } else { ' ' })
-            .collect::<String>();
+    let excerpt = Excerpt::of(text, Span::new(span.start, span.end));
     Location {
         line: text[..start].matches('\n').count() + 1,
-        column: column + 1,
-        excerpt,
-        pad,
-        width: width.min(to.saturating_sub(column)).max(1),
+        column: text[line_start..start].chars().count() + 1,
+        excerpt: excerpt.text,
+        pad: excerpt.pad,
+        width: excerpt.width,
     }
 }
 

@@ -58,7 +58,7 @@ pub use number::{
 };
 pub use poly::{CosSinTerm, Point, Poly, Term, TrigMonomial};
 pub use print::{superscript, Style};
-pub use syntax::{ParseError, Span};
+pub use syntax::{Excerpt, ParseError, Span};
 pub use varset::{
     Limits, Var, VarKind, VarSet, VarSetBuilder, Variable, Vars, FIELD_BITS, RESERVED,
 };

@@ -49,26 +49,74 @@ impl ParseError {
     }
 
     /// Multi-line rendering: `"line L, column C: message"`, then the source line, then a line of
-    /// carets under the offending span (as wide as the span in characters, at least one).
+    /// carets under the offending span (as wide as the span in characters, at least one); a
+    /// long line is shown as a window around the caret ([`Excerpt`]).
     #[must_use]
     pub fn render(&self, src: &str) -> String {
-        let start = char_floor(src, self.span.start);
-        let (line, col) = line_col(src, start);
+        let (line, col) = line_col(src, self.span.start);
+        let excerpt = Excerpt::of(src, self.span);
+        format!(
+            "line {line}, column {col}: {}\n  {}\n  {}{}",
+            self.message,
+            excerpt.text,
+            excerpt.pad,
+            "^".repeat(excerpt.width)
+        )
+    }
+}
+
+/// A source line longer than this many characters is shown as a window around the error.
+const EXCERPT_CHARS: usize = 100;
+
+/// Characters of context a window keeps on each side of the caret.
+const EXCERPT_CONTEXT: usize = 40;
+
+/// The part of a source line shown under an error, and the caret under the offending span:
+/// the whole line, or for a long one (a generated expression pasted into a file) a window of
+/// [`EXCERPT_CONTEXT`] characters either side of the caret, cut with `…`.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct Excerpt {
+    /// The line, or its window.
+    pub text: String,
+    /// What goes before the caret: spaces, and tabs where the line has tabs.
+    pub pad: String,
+    /// How many carets (at least one).
+    pub width: usize,
+}
+
+impl Excerpt {
+    /// The excerpt of the line of `src` where `span` starts; the caret covers the span's part
+    /// of that line.
+    #[must_use]
+    pub fn of(src: &str, span: Span) -> Excerpt {
+        let start = char_floor(src, span.start);
         let line_start = src[..start].rfind('\n').map_or(0, |i| i + 1);
         let line_end = src[start..].find('\n').map_or(src.len(), |i| start + i);
-        let end = char_floor(src, self.span.end).clamp(start, line_end);
-        let width = src[start..end].chars().count().max(1);
-        // Keep tabs so that the carets line up with the source line.
-        let pad: String = src[line_start..start]
+        let end = char_floor(src, span.end).clamp(start, line_end);
+        let line: Vec<char> = src[line_start..line_end]
+            .trim_end_matches('\r')
             .chars()
-            .map(|c| if c == '\t' { '\t' } else { ' ' })
             .collect();
-        let text = src[line_start..line_end].trim_end_matches('\r');
-        format!(
-            "line {line}, column {col}: {}\n  {text}\n  {pad}{}",
-            self.message,
-            "^".repeat(width)
-        )
+        let column = src[line_start..start].chars().count();
+        let width = src[start..end].chars().count().max(1);
+        let (from, to) = if line.len() <= EXCERPT_CHARS {
+            (0, line.len())
+        } else {
+            let to = column + width.min(EXCERPT_CONTEXT) + EXCERPT_CONTEXT;
+            (column.saturating_sub(EXCERPT_CONTEXT), to.min(line.len()))
+        };
+        let cut_before = if from > 0 { "…" } else { "" };
+        let cut_after = if to < line.len() { "…" } else { "" };
+        let window: String = line[from..to].iter().collect();
+        let pad: String = line[from..column.min(line.len())]
+            .iter()
+            .map(|&c| if c == '\t' { '\t' } else { ' ' })
+            .collect();
+        Excerpt {
+            text: format!("{cut_before}{window}{cut_after}"),
+            pad: " ".repeat(cut_before.chars().count()) + &pad,
+            width: width.min(to.saturating_sub(column)).max(1),
+        }
     }
 }
 

@@ -20,7 +20,7 @@ mod error;
 mod lexer;
 mod parser;
 
-pub use error::{ParseError, Span};
+pub use error::{Excerpt, ParseError, Span};
 pub use parser::{parse_expr, Expr, ExprKind, MAX_DEPTH, MAX_HEIGHT};
 
 #[cfg(test)]

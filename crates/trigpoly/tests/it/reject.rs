@@ -251,3 +251,23 @@ fn rejected_over_q_accepted_over_gaussian_rationals() {
         );
     }
 }
+
+/// A long line (a generated expression) is rendered as a window of 40 characters either side
+/// of the caret, cut with `…`, with the caret under the offending character.
+#[test]
+fn a_long_line_renders_as_a_window_around_the_error() {
+    let src = format!("{}@{}", "x + ".repeat(500), " + y".repeat(500));
+    let err = Poly::<Rational>::parse(&phase_space(), &src).expect_err("@ is not an operator");
+    let rendered = err.render(&src);
+    let column = 4 * 500 + 1;
+    assert_eq!(
+        rendered,
+        format!(
+            "line 1, column {column}: {}\n  …{}@{}…\n  {}^",
+            err.message,
+            &"x + ".repeat(10),
+            &" + y".repeat(10),
+            " ".repeat(41)
+        )
+    );
+}
