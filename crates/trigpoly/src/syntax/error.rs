@@ -72,8 +72,8 @@ const EXCERPT_CHARS: usize = 100;
 const EXCERPT_CONTEXT: usize = 40;
 
 /// The part of a source line shown under an error, and the caret under the offending span:
-/// the whole line, or for a long one (a generated expression pasted into a file) a window of
-/// [`EXCERPT_CONTEXT`] characters either side of the caret, cut with `…`.
+/// the whole line, or for a line past 100 characters (a generated expression pasted into a
+/// file) a window of 40 characters either side of the caret, cut with `…`.
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub struct Excerpt {
     /// The line, or its window.
