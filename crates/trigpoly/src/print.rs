@@ -39,6 +39,21 @@ impl<C: Coefficient> Poly<C> {
         styles.map(|style| render_terms(self.vars(), &terms, style))
     }
 
+    /// The element's text for a message: in full when it is short, else only its size (`a
+    /// polynomial of 24310 terms`), which a one-line message has no room for and an error no
+    /// time to print (a refused division once printed a 270 MB divisor).
+    pub(crate) fn brief(&self) -> String {
+        const TERMS: usize = 8;
+        const CHARS: usize = 80;
+        if self.len() <= TERMS {
+            let text = self.to_string();
+            if text.chars().count() <= CHARS {
+                return text;
+            }
+        }
+        format!("a polynomial of {} terms", self.len())
+    }
+
     /// LaTeX math (no surrounding `$`).
     pub fn to_latex(&self) -> String {
         self.render(Style::Latex)

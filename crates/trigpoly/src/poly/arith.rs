@@ -76,7 +76,7 @@ impl<C: Coefficient> Poly<C> {
             return Err(AlgebraError::DivisionByZero);
         }
         if !d.is_monomial() {
-            return Err(AlgebraError::NotAMonomial(d.to_string()));
+            return Err(AlgebraError::NotAMonomial(d.brief()));
         }
         self.checked_mul(&d.checked_pow(-1)?)
     }

@@ -43,7 +43,7 @@ impl<C: Coefficient> Poly<C> {
             return Ok(self.monomial_pow(e));
         }
         if e < 0 {
-            return Err(AlgebraError::NegativePower(self.to_string()));
+            return Err(AlgebraError::NegativePower(self.brief()));
         }
         if e == 1 {
             return Ok(self.clone());

@@ -271,3 +271,21 @@ fn a_long_line_renders_as_a_window_around_the_error() {
         )
     );
 }
+
+/// A refused division or negative power names a long polynomial by its size, not its text (a
+/// divisor of 24 k terms once made a 270 MB message); a short one is still shown in full.
+#[test]
+fn a_long_divisor_is_named_by_its_size() {
+    let vars = phase_space();
+    let long = Poly::<Rational>::parse(&vars, "x/(1 + x)^20").expect_err("not a monomial");
+    assert_eq!(
+        long.message,
+        "cannot divide by a polynomial of 21 terms: only division by a nonzero constant or a \
+         single term (monomial) is exact here"
+    );
+    let power = Poly::<Rational>::parse(&vars, "(1 + x + y)^(-1)").expect_err("not invertible");
+    assert_eq!(
+        power.message,
+        "cannot raise x + y + 1 to a negative power: only single terms (monomials) are invertible"
+    );
+}
