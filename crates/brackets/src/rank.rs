@@ -124,13 +124,22 @@ pub fn rank(space: &PhaseSpace, functions: &[Expr]) -> Result<RankCertificate, E
     Ok(cert)
 }
 
-/// The determinant of the submatrix `rows × cols`, by Laplace expansion with memoised minors.
+/// The determinant of the submatrix `rows × cols`, by Laplace expansion with memoised minors;
+/// zero at once when two of its rows are equal (the same function given twice, say).
 pub fn symbolic_det(
     jac: &[Vec<Expr>],
     rows: &[usize],
     cols: &[usize],
 ) -> Result<Expr, EngineError> {
     let vars = jac[0][0].vars().clone();
+    let row = |i: usize| cols.iter().map(move |&c| &jac[i][c]);
+    if rows
+        .iter()
+        .enumerate()
+        .any(|(k, &a)| rows[k + 1..].iter().any(|&b| row(a).eq(row(b))))
+    {
+        return Ok(Expr::zero(&vars));
+    }
     let mut memo: HashMap<(usize, u64), Expr> = HashMap::new();
     fn go(
         jac: &[Vec<Expr>],

@@ -408,3 +408,24 @@ fn long_brackets_of_a_function_with_itself_and_with_its_partner() {
     identity!(sys, "{P, Q} = -128*M*omega*Z^7*Zbar^7");
     identity!(sys, "{P, Q} = 0" => refuted "-128*M*omega*Z^7*Zbar^7");
 }
+
+/// The rank's symbolic minors: a minor whose rows agree on its columns is zero at once (the
+/// same function given twice), and one whose rows agree elsewhere but not on its columns is
+/// computed: a test of one column instead of all would call `x` zero. And the rank of a list
+/// with a function given twice certifies its upper bound by such minors.
+#[test]
+fn symbolic_minors_with_equal_rows() {
+    let sys = systems::harmonic_rotor();
+    let e = |s: &str| sys.parse(s).unwrap();
+    let jac = vec![vec![e("x"), e("1"), e("y")], vec![e("x"), e("2"), e("y")]];
+    let det = |cols: &[usize]| brackets::rank::symbolic_det(&jac, &[0, 1], cols).unwrap();
+    assert!(det(&[0, 2]).is_zero());
+    assert_eq!(det(&[0, 1]), e("x"));
+    assert_eq!(det(&[1, 2]), e("-y"));
+    assert_rank(
+        &sys,
+        &["F1", "G1", "G1"],
+        2,
+        UpperBound::VanishingMinors { count: 20 },
+    );
+}
