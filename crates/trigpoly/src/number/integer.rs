@@ -749,13 +749,21 @@ enum Long {
 }
 
 /// A 256-bit two's complement integer `high·2¹²⁸ + low`.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[derive(Clone, Copy, Debug)]
 struct Wide256 {
     low: u128,
     high: i128,
 }
 
 impl Wide256 {
+    /// `v`, sign-extended.
+    fn from_i128(v: i128) -> Wide256 {
+        Wide256 {
+            low: v as u128,
+            high: v >> 127,
+        }
+    }
+
     /// `x·y` (at most `2²⁵⁴` in magnitude, so it always fits).
     fn product(x: i128, y: i128) -> Wide256 {
         let (a, b) = (x.unsigned_abs(), y.unsigned_abs());
@@ -817,7 +825,7 @@ impl IntegerAcc {
             let p = x as i128 * y as i128;
             match self.small.checked_add(p) {
                 Some(s) => self.small = s,
-                None => self.add_wide(Wide256::product(p, 1)),
+                None => self.add_wide(Wide256::from_i128(p)),
             }
         } else {
             self.add_mul_wide(a, b, false);
@@ -830,11 +838,11 @@ impl IntegerAcc {
         match a.view() {
             IntegerView::Small(x) => match self.small.checked_add(x as i128) {
                 Some(s) => self.small = s,
-                None => self.add_wide(Wide256::product(i128::from(x), 1)),
+                None => self.add_wide(Wide256::from_i128(i128::from(x))),
             },
             IntegerView::Wide(v) => match self.small.checked_add(v) {
                 Some(s) => self.small = s,
-                None => self.add_wide(Wide256::product(v, 1)),
+                None => self.add_wide(Wide256::from_i128(v)),
             },
             IntegerView::Big(b) => self.spill(b.clone()),
         }
@@ -847,7 +855,7 @@ impl IntegerAcc {
             let p = x as i128 * y as i128;
             match self.small.checked_sub(p) {
                 Some(s) => self.small = s,
-                None => self.add_wide(Wide256::product(p, -1)),
+                None => self.add_wide(Wide256::from_i128(p).negated()),
             }
         } else {
             self.add_mul_wide(a, b, true);

@@ -219,7 +219,7 @@ impl IntegerRing for Integer {
         self.clone()
     }
     fn to_gaussian_integer(&self) -> GaussianInteger {
-        GaussianInteger::new(self.clone(), Integer::ZERO)
+        GaussianInteger::from_integer(self.clone())
     }
     fn try_mul_i(&self) -> Option<Self> {
         None

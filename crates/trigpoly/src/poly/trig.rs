@@ -112,10 +112,7 @@ impl<C: Coefficient> Poly<C> {
                 };
                 exps.truncate(n);
                 let momentum_degree = momenta.iter().map(|&j| exps[j].abs()).sum();
-                let coeff = GaussianRational::new(
-                    self.content.mul_integer(&sum.re),
-                    self.content.mul_integer(&sum.im),
-                );
+                let coeff = GaussianRational::from_parts(&self.content, &sum);
                 Some((
                     trig.sort_key(),
                     momentum_degree,
