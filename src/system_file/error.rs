@@ -139,24 +139,13 @@ impl fmt::Display for FileError {
     }
 }
 
-/// The largest char boundary of `text` that is at most `offset`.
-fn char_floor(text: &str, offset: usize) -> usize {
-    let mut i = offset.min(text.len());
-    while !text.is_char_boundary(i) {
-        i -= 1;
-    }
-    i
-}
-
 /// Line, column, source line and caret of a byte range; a long line is shown as a window
 /// around the caret ([`Excerpt`]).
 pub(crate) fn locate(text: &str, span: Range<usize>) -> Location {
-    let start = char_floor(text, span.start);
-    let line_start = text[..start].rfind('\n').map_or(0, |i| i + 1);
     let excerpt = Excerpt::of(text, Span::new(span.start, span.end));
     Location {
-        line: text[..start].matches('\n').count() + 1,
-        column: text[line_start..start].chars().count() + 1,
+        line: excerpt.line,
+        column: excerpt.column,
         excerpt: excerpt.text,
         pad: excerpt.pad,
         width: excerpt.width,

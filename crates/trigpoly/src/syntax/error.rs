@@ -53,10 +53,11 @@ impl ParseError {
     /// long line is shown as a window around the caret ([`Excerpt`]).
     #[must_use]
     pub fn render(&self, src: &str) -> String {
-        let (line, col) = line_col(src, self.span.start);
         let excerpt = Excerpt::of(src, self.span);
         format!(
-            "line {line}, column {col}: {}\n  {}\n  {}{}",
+            "line {}, column {}: {}\n  {}\n  {}{}",
+            excerpt.line,
+            excerpt.column,
             self.message,
             excerpt.text,
             excerpt.pad,
@@ -76,6 +77,10 @@ const EXCERPT_CONTEXT: usize = 40;
 /// file) a window of 40 characters either side of the caret, cut with `…`.
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub struct Excerpt {
+    /// 1-based line of the span's start.
+    pub line: usize,
+    /// 1-based column of the span's start, in characters.
+    pub column: usize,
     /// The line, or its window.
     pub text: String,
     /// What goes before the caret: spaces, and tabs where the line has tabs.
@@ -85,8 +90,8 @@ pub struct Excerpt {
 }
 
 impl Excerpt {
-    /// The excerpt of the line of `src` where `span` starts; the caret covers the span's part
-    /// of that line.
+    /// The place and excerpt of the line of `src` where `span` starts; the caret covers the
+    /// span's part of that line.
     #[must_use]
     pub fn of(src: &str, span: Span) -> Excerpt {
         let start = char_floor(src, span.start);
@@ -113,6 +118,8 @@ impl Excerpt {
             .map(|&c| if c == '\t' { '\t' } else { ' ' })
             .collect();
         Excerpt {
+            line: src[..start].matches('\n').count() + 1,
+            column: column + 1,
             text: format!("{cut_before}{window}{cut_after}"),
             pad: " ".repeat(cut_before.chars().count()) + &pad,
             width: width.min(to.saturating_sub(column)).max(1),
