@@ -27,6 +27,10 @@ impl<C: Coefficient> Poly<C> {
                 check_exponent(&self.vars, v, hi.saturating_mul(e))?;
             }
         }
+        if self.has_unit_coefficient() {
+            // `x^2`, `ω^2`: the power of a variable product keeps the coefficient 1.
+            return Ok(self.monomial_pow(e));
+        }
         if self.is_monomial() {
             // A single term's coefficient grows without any new term: bound its size.
             let z = C::from_parts(&self.content, &self.coeffs[0]).to_gaussian();
@@ -224,17 +228,24 @@ impl<C: Coefficient> Poly<C> {
         rank == rows.len()
     }
 
+    /// Whether the polynomial is a single term with coefficient 1, such as `x` or `M ω`.
+    fn has_unit_coefficient(&self) -> bool {
+        self.len() == 1 && self.content.is_one() && self.coeffs[0].is_one()
+    }
+
     /// `(c·m)^e` for a single term (bounds already checked).
     fn monomial_pow(&self, e: i64) -> Self {
-        let c = C::from_parts(&self.content, &self.coeffs[0]);
-        let ce = pow_field(&c, e);
+        let (content, n) = if self.has_unit_coefficient() {
+            (Rational::one(), self.coeffs[0].clone())
+        } else {
+            pow_field(&C::from_parts(&self.content, &self.coeffs[0]), e).split()
+        };
         let layout = self.layout();
         let exps: Vec<i64> = (0..self.vars.len())
             .map(|j| layout.get(self.exp(0), j) * e)
             .collect();
         let mut w = vec![0u64; self.words()];
         layout.pack(&exps, &mut w);
-        let (content, n) = ce.split();
         Self::assemble(&self.vars, content, w, vec![n])
     }
 }

@@ -50,6 +50,9 @@ pub(crate) struct Token {
 
 /// The ASCII digit corresponding to a superscript digit such as `²`, if `c` is one.
 fn superscript_digit(c: char) -> Option<char> {
+    if c.is_ascii() {
+        return None;
+    }
     let value = "⁰¹²³⁴⁵⁶⁷⁸⁹".chars().position(|d| d == c)?;
     char::from_digit(value as u32, 10)
 }
