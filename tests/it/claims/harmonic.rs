@@ -409,6 +409,57 @@ fn long_brackets_of_a_function_with_itself_and_with_its_partner() {
     identity!(sys, "{P, Q} = 0" => refuted "-128*M*omega*Z^7*Zbar^7");
 }
 
+/// The minors of fixed rows for every set of columns share their smaller minors (the rank's
+/// upper bound computes them so): each is the rule of Sarrus, with a zero entry among them
+/// (its column still turns the sign), and computing them in any order changes none.
+#[test]
+fn minors_of_fixed_rows_share_their_smaller_minors() {
+    let sys = systems::harmonic_rotor();
+    let entries = [
+        ["x", "y", "p_x", "1"],
+        ["x^2", "2", "0", "M"],
+        ["omega", "x*y", "3", "p_y"],
+    ];
+    let jac: Vec<Vec<Expr>> = entries
+        .iter()
+        .map(|row| row.iter().map(|s| sys.parse(s).unwrap()).collect())
+        .collect();
+    let sarrus = |c: [usize; 3]| {
+        let m = |i: usize, j: usize| format!("({})", entries[i][c[j]]);
+        sys.parse(&format!(
+            "{}*({}*{} - {}*{}) - {}*({}*{} - {}*{}) + {}*({}*{} - {}*{})",
+            m(0, 0),
+            m(1, 1),
+            m(2, 2),
+            m(1, 2),
+            m(2, 1),
+            m(0, 1),
+            m(1, 0),
+            m(2, 2),
+            m(1, 2),
+            m(2, 0),
+            m(0, 2),
+            m(1, 0),
+            m(2, 1),
+            m(1, 1),
+            m(2, 0),
+        ))
+        .unwrap()
+    };
+    let sets = [[0, 1, 2], [0, 1, 3], [0, 2, 3], [1, 2, 3]];
+    for order in [[0, 1, 2, 3], [3, 1, 0, 2]] {
+        let mut minors = brackets::rank::Minors::new(&jac, &[0, 1, 2]);
+        for k in order {
+            assert_eq!(
+                minors.det(&sets[k]).unwrap(),
+                sarrus(sets[k]),
+                "{:?}",
+                sets[k]
+            );
+        }
+    }
+}
+
 /// The rank's symbolic minors: a minor whose rows agree on its columns is zero at once (the
 /// same function given twice), and one whose rows agree elsewhere but not on its columns is
 /// computed: a test of one column instead of all would call `x` zero. And the rank of a list
