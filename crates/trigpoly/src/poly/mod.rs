@@ -11,6 +11,7 @@ mod calculus;
 mod complex;
 mod dense;
 mod gather;
+mod hashed;
 mod kronecker;
 mod mul;
 mod pages;

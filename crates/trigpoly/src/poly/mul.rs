@@ -9,6 +9,7 @@
 
 use super::dense::try_mul_dense;
 use super::gather;
+use super::hashed;
 use super::kronecker::Kronecker;
 use super::{check_exponent, Poly};
 use crate::error::AlgebraError;
@@ -162,13 +163,19 @@ impl<C: Coefficient> Poly<C> {
                 Some(result) => result?,
                 None => {
                     let ka = kron.indices(layout, &small.exps, &bs);
-                    let kb = kron.indices(layout, &big.exps, &bb);
-                    let (pairs, coeffs) = heap_product(
-                        (&ka, &small.coeffs),
-                        (&kb, &big.coeffs),
-                        |x, y| x + y,
-                        limit,
-                    )?;
+                    // A square's factors are one list (the hashed product takes each pair once).
+                    let kb =
+                        (!std::ptr::eq(small, big)).then(|| kron.indices(layout, &big.exps, &bb));
+                    let kb = kb.as_deref().unwrap_or(&ka);
+                    let (a, b) = ((&ka[..], &small.coeffs[..]), (kb, &big.coeffs[..]));
+                    let hashed = match hashed::meets_often(a.0, b.0) {
+                        true => hashed::hashed_product(a, b, limit),
+                        false => None,
+                    };
+                    let (pairs, coeffs) = match hashed {
+                        Some(product) => product?,
+                        None => heap_product(a, b, |x, y| x + y, limit)?,
+                    };
                     let exps = pair_monomials(layout, &small.exps, &big.exps, &pairs);
                     (exps, coeffs)
                 }
@@ -421,7 +428,7 @@ impl<K: Copy + Ord> RowHeap<K> {
 
 /// The terms of a heap product: for each, a pair `(i, j)` of factor terms whose product is its
 /// monomial, and its coefficient.
-type PairProduct<I> = (Vec<(u32, u32)>, Vec<I>);
+pub(super) type PairProduct<I> = (Vec<(u32, u32)>, Vec<I>);
 
 /// Sparse product by a heap over the rows of the shorter factor `a` (keys sorted descending,
 /// `mul` the monomial product): row `i` holds the next unmerged product `a_i·b_j`; the largest

@@ -81,6 +81,32 @@ fn sparse_products_written_by_a_second_thread_agree_with_one_thread() {
     );
 }
 
+/// Products too sparse for the dense accumulators (a box of 21·141·261·581 ≈ 449M cells for
+/// 286² ≈ 82k term pairs) whose term pairs meet on few monomials (1771 of them): the hashed
+/// product. A square equals the power by the multinomial walk, and a product the one on two
+/// threads and its value at a point, over Q and over Q(i).
+#[test]
+fn sparse_products_whose_term_pairs_meet_are_hashed_exactly() {
+    let vars = coordinates(&["x", "y", "z", "t"]);
+    let f: Q = p(&vars, "(x + y^7 + 2*z^13 - t^29)^10");
+    let square = &f * &f;
+    assert_eq!(square, p(&vars, "(x + y^7 + 2*z^13 - t^29)^20"));
+    assert_eq!(square.len(), 1771);
+    let g: G = p(&vars, "(x + i*y^7 + 2*z^13 - t^29)^10");
+    assert_eq!(&g * &g, p(&vars, "(x + i*y^7 + 2*z^13 - t^29)^20"));
+    let pt = [("x", 1), ("y", -1), ("z", 2), ("t", 1)];
+    checked_product::<Rational>(
+        "(x + y^7 + 2*z^13 - t^29)^10",
+        "(3*x - y^7 + z^13 + t^29)^10",
+        &pt,
+    );
+    checked_product::<GaussianRational>(
+        "(x + i*y^7 + 2*z^13 - t^29)^10",
+        "(3*x - y^7 + i*z^13 + t^29)^10",
+        &pt,
+    );
+}
+
 /// The same sparse product under a term limit it exceeds: on two threads as on one, the adding
 /// side stops at the limit with an error, and the writing side lets go of what it wrote.
 #[test]

@@ -1,0 +1,291 @@
+//! The hashed product: every term product added into a hash table keyed by its monomial's
+//! Kronecker index, for products too sparse for the dense accumulators whose term products
+//! nonetheless meet on few monomials (the minors of a rank's upper bound: 9.5 M term products
+//! onto some ten thousand monomials). The heap product pays `log₂ n` comparisons a term
+//! product to bring equal monomials together; the table pays one probe, and a sort of the
+//! result. [`meets_often`] decides between them from a sample of rows.
+
+use super::mul::PairProduct;
+use crate::error::AlgebraError;
+use crate::number::IntegerRing;
+
+/// About how many term products [`meets_often`] samples: at most 32 rows of the shorter
+/// factor, and at least 2, whole.
+const SAMPLE_PRODUCTS: usize = 1 << 13;
+
+/// Products of fewer term pairs than this stay with the heap: both ways are quick, and the
+/// sample would cost a tenth of the product.
+const MIN_PAIRS: usize = 1 << 16;
+
+/// The least number of term products per monomial, estimated, for which the hashed product
+/// is taken: it then adds into a table that many times smaller than the work, mostly in
+/// cache, where the heap pays `log₂ n` comparisons a term product.
+const MIN_MULTIPLICITY: usize = 8;
+
+/// Whether the term products of `a·b` (Kronecker indices, a term's index the sum of its
+/// factors') meet on shared monomials often enough for the hashed product. A sample of `s`
+/// rows of `a` spread over it, each times all of `b`, shows `e` products that land on a
+/// monomial another sampled product has: when each monomial of the product is met by `μ`
+/// products from as many rows, a sample of `s` of its `n` rows meets it about `λ = μs/n`
+/// times, and `e/(sm) ≈ λ/2` while `λ` is small (less beyond), so `μ ≈ 2en/(s²m)`, an
+/// underestimate for large `λ`. The minors of a rank's upper bound give `μ` over a hundred;
+/// Pearce's sparse products about one to three. Products whose monomials are mostly
+/// distinct stay with the heap, whose memory is the product's own, where a table would hold
+/// a sum for nearly each term product, out of cache.
+pub(super) fn meets_often(a: &[u64], b: &[u64]) -> bool {
+    let (n, m) = (a.len(), b.len());
+    if n < 2 || n.saturating_mul(m) < MIN_PAIRS {
+        return false;
+    }
+    let rows = (SAMPLE_PRODUCTS / m).clamp(2, 32).min(n);
+    // The sample's distinct indices, counted in a set by open addressing: one probe each,
+    // where sorting them cost a tenth of a product of 1287² pairs.
+    let slots = (2 * rows * m).next_power_of_two();
+    let shift = 64 - slots.trailing_zeros();
+    let mut seen = vec![0u64; slots];
+    let mut distinct = 0;
+    for k in 0..rows {
+        // Row midpoints of `rows` equal parts: the extreme rows, the least alike, are left.
+        let ai = a[(2 * k + 1) * n / (2 * rows)];
+        for &bj in b {
+            // Stored plus one: 0 marks an empty slot.
+            let key = ai + bj + 1;
+            let mut slot = (key.wrapping_mul(0x9E37_79B9_7F4A_7C15) >> shift) as usize;
+            loop {
+                match seen[slot] {
+                    0 => {
+                        seen[slot] = key;
+                        distinct += 1;
+                        break;
+                    }
+                    k if k == key => break,
+                    _ => slot = (slot + 1) & (slots - 1),
+                }
+            }
+        }
+    }
+    let excess = rows * m - distinct;
+    2 * excess * n >= MIN_MULTIPLICITY * rows * rows * m
+}
+
+/// One monomial of the table: its index, one pair of factor terms whose product it is, and
+/// the sum so far.
+struct Sum<A> {
+    key: u64,
+    pair: (u32, u32),
+    acc: A,
+}
+
+/// The sums, in the order their monomials came, and the slots that find them by linear
+/// probing (an index into the sums plus one, or 0 when empty; more than twice the sums).
+struct Table<A> {
+    sums: Vec<Sum<A>>,
+    slots: Vec<u32>,
+    shift: u32,
+}
+
+impl<A: Default> Table<A> {
+    fn with_slots(slots: usize) -> Self {
+        debug_assert!(slots.is_power_of_two());
+        Table {
+            sums: Vec::with_capacity(slots / 2),
+            slots: vec![0; slots],
+            shift: 64 - slots.trailing_zeros(),
+        }
+    }
+
+    fn slot_of(&self, key: u64) -> usize {
+        (key.wrapping_mul(0x9E37_79B9_7F4A_7C15) >> self.shift) as usize
+    }
+
+    /// The sum of `key`, new (from `pair`) when the key has none yet.
+    #[inline(always)]
+    fn sum(&mut self, key: u64, pair: (u32, u32)) -> &mut A {
+        let mask = self.slots.len() - 1;
+        let mut slot = self.slot_of(key);
+        loop {
+            match self.slots[slot] {
+                0 => {
+                    if 2 * (self.sums.len() + 1) >= self.slots.len() {
+                        self.grow();
+                        return self.sum(key, pair);
+                    }
+                    self.sums.push(Sum {
+                        key,
+                        pair,
+                        acc: A::default(),
+                    });
+                    self.slots[slot] = self.sums.len() as u32;
+                    let last = self.sums.len() - 1;
+                    return &mut self.sums[last].acc;
+                }
+                k => {
+                    let k = k as usize - 1;
+                    if self.sums[k].key == key {
+                        return &mut self.sums[k].acc;
+                    }
+                }
+            }
+            slot = (slot + 1) & mask;
+        }
+    }
+
+    /// Twice the slots, every sum found again.
+    #[cold]
+    fn grow(&mut self) {
+        let slots = 2 * self.slots.len();
+        self.slots = vec![0; slots];
+        self.shift = 64 - slots.trailing_zeros();
+        let mask = slots - 1;
+        for (k, s) in self.sums.iter().enumerate() {
+            let mut slot = self.slot_of(s.key);
+            while self.slots[slot] != 0 {
+                slot = (slot + 1) & mask;
+            }
+            self.slots[slot] = k as u32 + 1;
+        }
+    }
+}
+
+/// `a·b` on Kronecker indices (each factor's sorted descending), every term product added to
+/// its monomial's sum in a hash table; a square (`a` and `b` the same terms) takes each pair of
+/// distinct terms once, doubled. The terms come out sorted descending, each with one pair of
+/// factor terms whose product is its monomial, like the heap product's. `None` when the
+/// table would hold more than `max_terms` monomials (sums that cancel included): the heap
+/// product then decides whether the product itself has too many terms.
+pub(super) fn hashed_product<I: IntegerRing>(
+    a: (&[u64], &[I]),
+    b: (&[u64], &[I]),
+    max_terms: usize,
+) -> Option<Result<PairProduct<I>, AlgebraError>> {
+    let square = std::ptr::eq(a.0, b.0) && std::ptr::eq(a.1, b.1);
+    let doubled: Vec<I> = if square {
+        b.1.iter().map(|c| c.add(c)).collect()
+    } else {
+        Vec::new()
+    };
+    let mut table =
+        Table::<I::Acc>::with_slots((2 * a.1.len().max(b.1.len())).next_power_of_two().max(1024));
+    for (i, (&ka, ca)) in a.0.iter().zip(a.1).enumerate() {
+        let first = if square { i } else { 0 };
+        for (j, &kb) in b.0.iter().enumerate().skip(first) {
+            let cb = if square && j > i {
+                &doubled[j]
+            } else {
+                &b.1[j]
+            };
+            let acc = table.sum(ka + kb, (i as u32, j as u32));
+            I::acc_add_mul(acc, ca, cb);
+        }
+        if table.sums.len() > max_terms {
+            return None;
+        }
+    }
+    let mut terms: Vec<(u64, (u32, u32), I)> = table
+        .sums
+        .into_iter()
+        .filter_map(|s| {
+            let c = I::acc_finish(s.acc);
+            (!c.is_zero()).then_some((s.key, s.pair, c))
+        })
+        .collect();
+    terms.sort_unstable_by_key(|t| std::cmp::Reverse(t.0));
+    let (pairs, coeffs) = terms.into_iter().map(|(_, p, c)| (p, c)).unzip();
+    Some(Ok((pairs, coeffs)))
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::number::Integer;
+
+    /// Kronecker indices of a two-variable polynomial `Σ c x^i y^j` with `i, j < 100`.
+    fn index(i: u64, j: u64) -> u64 {
+        100 * i + j
+    }
+
+    fn dense(terms: &[(u64, u64, i64)]) -> (Vec<u64>, Vec<Integer>) {
+        let mut t: Vec<(u64, Integer)> = terms
+            .iter()
+            .map(|&(i, j, c)| (index(i, j), Integer::from(c)))
+            .collect();
+        t.sort_unstable_by_key(|x| std::cmp::Reverse(x.0));
+        t.into_iter().unzip()
+    }
+
+    /// The product by the definition: every pair, summed per index, zeros dropped.
+    fn naive(a: &(Vec<u64>, Vec<Integer>), b: &(Vec<u64>, Vec<Integer>)) -> Vec<(u64, Integer)> {
+        let mut sums = std::collections::BTreeMap::<u64, num_bigint::BigInt>::new();
+        for (ka, ca) in a.0.iter().zip(&a.1) {
+            for (kb, cb) in b.0.iter().zip(&b.1) {
+                *sums.entry(ka + kb).or_default() += ca.to_bigint() * cb.to_bigint();
+            }
+        }
+        sums.into_iter()
+            .rev()
+            .filter(|(_, c)| *c != num_bigint::BigInt::from(0))
+            .map(|(k, c)| (k, Integer::from_bigint(c)))
+            .collect()
+    }
+
+    fn hashed(a: &(Vec<u64>, Vec<Integer>), b: &(Vec<u64>, Vec<Integer>)) -> Vec<(u64, Integer)> {
+        let (pairs, coeffs) = hashed_product((&a.0, &a.1), (&b.0, &b.1), usize::MAX)
+            .expect("no limit")
+            .expect("no error");
+        pairs
+            .iter()
+            .map(|&(i, j)| a.0[i as usize] + b.0[j as usize])
+            .zip(coeffs)
+            .collect()
+    }
+
+    #[test]
+    fn sums_products_squares_and_cancellations_like_the_definition() {
+        // (x + y)^k-like rows: many products per monomial, a cancellation, a wide coefficient
+        // and more monomials than the first table's slots (it grows).
+        let mut f = vec![
+            (3, 0, 1),
+            (2, 1, -3),
+            (1, 2, 3),
+            (0, 3, -1),
+            (5, 5, i64::MAX),
+        ];
+        let g: Vec<(u64, u64, i64)> = (0..40)
+            .flat_map(|i| (0..40).map(move |j| (i, j, (i * 7 + j * 3) as i64 % 11 - 5)))
+            .filter(|t| t.2 != 0)
+            .collect();
+        let (fa, gb) = (dense(&f), dense(&g));
+        assert_eq!(hashed(&fa, &gb), naive(&fa, &gb));
+        assert_eq!(hashed(&gb, &gb), naive(&gb, &gb));
+        // x − y times x + y: x² − y², the xy terms cancel.
+        f = vec![(1, 0, 1), (0, 1, -1)];
+        let h = dense(&[(1, 0, 1), (0, 1, 1)]);
+        assert_eq!(
+            hashed(&dense(&f), &h),
+            vec![
+                (index(2, 0), Integer::from(1)),
+                (index(0, 2), Integer::from(-1))
+            ]
+        );
+    }
+
+    #[test]
+    fn a_table_past_the_limit_is_left_to_the_heap() {
+        let g = dense(&[(1, 0, 1), (0, 1, 1), (0, 0, 1)]);
+        let h = dense(&[(9, 0, 1), (0, 9, 1), (3, 3, 1)]);
+        assert!(hashed_product((&g.0, &g.1), (&h.0, &h.1), 8).is_none());
+        assert!(hashed_product((&g.0, &g.1), (&h.0, &h.1), 9).is_some());
+    }
+
+    #[test]
+    fn only_products_whose_monomials_meet_are_hashed() {
+        // (1 + x + … + x^299)²: every monomial is met by many products.
+        let line: Vec<u64> = (0..300).rev().collect();
+        assert!(meets_often(&line, &line));
+        // x^(300 i) · y^j: every product a monomial of its own.
+        let spread: Vec<u64> = (0..300).rev().map(|i| 300 * i).collect();
+        assert!(!meets_often(&spread, &line));
+        // Too few pairs to be worth a sample.
+        assert!(!meets_often(&line[..200], &line[..200]));
+    }
+}
