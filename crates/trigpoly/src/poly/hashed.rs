@@ -153,45 +153,118 @@ impl<A: Default> Table<A> {
 /// factor terms whose product is its monomial, like the heap product's. `None` when the
 /// table would hold more than `max_terms` monomials (sums that cancel included): the heap
 /// product then decides whether the product itself has too many terms.
+///
+/// When every coefficient fits a word and no sum can pass an `i128` component (a monomial
+/// gathers at most one product per row), the sums are machine words, a table entry is 32
+/// bytes over Z and 48 over Z\[i\], and a product is one multiply-add; otherwise each sum is
+/// the ring's accumulator, which spills past the `i128` when it must.
 pub(super) fn hashed_product<I: IntegerRing>(
     a: (&[u64], &[I]),
     b: (&[u64], &[I]),
     max_terms: usize,
 ) -> Option<Result<PairProduct<I>, AlgebraError>> {
     let square = std::ptr::eq(a.0, b.0) && std::ptr::eq(a.1, b.1);
-    let doubled: Vec<I> = if square {
-        b.1.iter().map(|c| c.add(c)).collect()
-    } else {
-        Vec::new()
+    let slots = (2 * a.1.len().max(b.1.len())).next_power_of_two().max(1024);
+    if let Some((sa, sb, doubled)) = in_words(a.1, b.1, square) {
+        let mut table = Table::<I::Wide>::with_slots(slots);
+        let added = add_pairs(
+            &mut table,
+            a.0,
+            b.0,
+            square,
+            max_terms,
+            |acc, i, j, twice| {
+                I::wide_add_mul(acc, &sa[i], if twice { &doubled[j] } else { &sb[j] })
+            },
+        );
+        return added.then(|| {
+            let zero = I::Wide::default();
+            let sums = table.sums.into_iter().filter(|s| s.acc != zero);
+            Ok(sorted(sums.map(|s| (s.key, s.pair, I::from_wide(s.acc)))))
+        });
+    }
+    let doubled: Vec<I> = match square {
+        true => b.1.iter().map(|c| c.add(c)).collect(),
+        false => Vec::new(),
     };
-    let mut table =
-        Table::<I::Acc>::with_slots((2 * a.1.len().max(b.1.len())).next_power_of_two().max(1024));
-    for (i, (&ka, ca)) in a.0.iter().zip(a.1).enumerate() {
+    let mut table = Table::<I::Acc>::with_slots(slots);
+    let added = add_pairs(
+        &mut table,
+        a.0,
+        b.0,
+        square,
+        max_terms,
+        |acc, i, j, twice| I::acc_add_mul(acc, &a.1[i], if twice { &doubled[j] } else { &b.1[j] }),
+    );
+    added.then(|| {
+        let sums = table
+            .sums
+            .into_iter()
+            .map(|s| (s.key, s.pair, I::acc_finish(s.acc)));
+        Ok(sorted(sums.filter(|t| !t.2.is_zero())))
+    })
+}
+
+/// The factors' coefficients as words, and the second's doubled for a square, when every
+/// sum of at most one product a row (doubled) stays within the `i128` components.
+#[allow(clippy::type_complexity)]
+fn in_words<I: IntegerRing>(
+    a: &[I],
+    b: &[I],
+    square: bool,
+) -> Option<(Vec<I::Small>, Vec<I::Small>, Vec<I::Small>)> {
+    let words = |c: &[I]| c.iter().map(I::to_small).collect::<Option<Vec<_>>>();
+    let (sa, sb) = (words(a)?, words(b)?);
+    let bits = |s: &[I::Small]| s.iter().map(I::small_bits).max().unwrap_or(0);
+    let rows = a.len().min(b.len()) as u64;
+    let fan_in = 64 - rows.leading_zeros() + I::PRODUCTS_PER_COMPONENT + u32::from(square);
+    if bits(&sa) + bits(&sb) + fan_in > 126 {
+        return None;
+    }
+    let doubled = match square {
+        true => sb
+            .iter()
+            .map(|c| I::small_checked_scale(c, 2))
+            .collect::<Option<_>>()?,
+        false => Vec::new(),
+    };
+    Some((sa, sb, doubled))
+}
+
+/// Adds every term product `a_i·b_j` (for a square, `j ≥ i`, those off the diagonal twice,
+/// which `add`'s last argument asks for) to its index's sum in `table`; `false`, leaving the
+/// table partial, once it holds more than `max_terms` sums.
+#[inline(always)]
+fn add_pairs<A: Default>(
+    table: &mut Table<A>,
+    a: &[u64],
+    b: &[u64],
+    square: bool,
+    max_terms: usize,
+    mut add: impl FnMut(&mut A, usize, usize, bool),
+) -> bool {
+    for (i, &ka) in a.iter().enumerate() {
         let first = if square { i } else { 0 };
-        for (j, &kb) in b.0.iter().enumerate().skip(first) {
-            let cb = if square && j > i {
-                &doubled[j]
-            } else {
-                &b.1[j]
-            };
-            let acc = table.sum(ka + kb, (i as u32, j as u32));
-            I::acc_add_mul(acc, ca, cb);
+        for (j, &kb) in b.iter().enumerate().skip(first) {
+            add(
+                table.sum(ka + kb, (i as u32, j as u32)),
+                i,
+                j,
+                square && j > i,
+            );
         }
         if table.sums.len() > max_terms {
-            return None;
+            return false;
         }
     }
-    let mut terms: Vec<(u64, (u32, u32), I)> = table
-        .sums
-        .into_iter()
-        .filter_map(|s| {
-            let c = I::acc_finish(s.acc);
-            (!c.is_zero()).then_some((s.key, s.pair, c))
-        })
-        .collect();
+    true
+}
+
+/// The terms by index, descending, as a heap product gives them: pairs and coefficients.
+fn sorted<I>(terms: impl Iterator<Item = (u64, (u32, u32), I)>) -> PairProduct<I> {
+    let mut terms: Vec<_> = terms.collect();
     terms.sort_unstable_by_key(|t| std::cmp::Reverse(t.0));
-    let (pairs, coeffs) = terms.into_iter().map(|(_, p, c)| (p, c)).unzip();
-    Some(Ok((pairs, coeffs)))
+    terms.into_iter().map(|(_, p, c)| (p, c)).unzip()
 }
 
 #[cfg(test)]
@@ -257,6 +330,21 @@ mod tests {
         let (fa, gb) = (dense(&f), dense(&g));
         assert_eq!(hashed(&fa, &gb), naive(&fa, &gb));
         assert_eq!(hashed(&gb, &gb), naive(&gb, &gb));
+        // Words whose sums could pass an `i128` (63 + 63 bits, 40 rows), and a coefficient past
+        // a word: the ring's accumulators.
+        let wide: Vec<(u64, u64, i64)> = g
+            .iter()
+            .map(|&(i, j, c)| (i, j, i64::MAX - 5 - c))
+            .collect();
+        let wide = dense(&wide);
+        assert_eq!(hashed(&wide, &wide), naive(&wide, &wide));
+        // The same, as a product of two lists (a square doubles past a word, which alone
+        // would leave the words).
+        let other = wide.clone();
+        assert_eq!(hashed(&wide, &other), naive(&wide, &other));
+        let mut long = dense(&f);
+        long.1[0] = Integer::from_bigint(num_bigint::BigInt::from(3) << 100);
+        assert_eq!(hashed(&long, &gb), naive(&long, &gb));
         // x − y times x + y: x² − y², the xy terms cancel.
         f = vec![(1, 0, 1), (0, 1, -1)];
         let h = dense(&[(1, 0, 1), (0, 1, 1)]);

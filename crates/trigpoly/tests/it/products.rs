@@ -94,6 +94,9 @@ fn sparse_products_whose_term_pairs_meet_are_hashed_exactly() {
     assert_eq!(square.len(), 1771);
     let g: G = p(&vars, "(x + i*y^7 + 2*z^13 - t^29)^10");
     assert_eq!(&g * &g, p(&vars, "(x + i*y^7 + 2*z^13 - t^29)^20"));
+    // Coefficients past a word: the sums are the ring's accumulators.
+    let h: G = p(&vars, "(x + i*y^7 + 2^40*z^13 - t^29)^10");
+    assert_eq!(&h * &h, p(&vars, "(x + i*y^7 + 2^40*z^13 - t^29)^20"));
     let pt = [("x", 1), ("y", -1), ("z", 2), ("t", 1)];
     checked_product::<Rational>(
         "(x + y^7 + 2*z^13 - t^29)^10",
