@@ -168,10 +168,8 @@ impl<C: Coefficient> Poly<C> {
                         (!std::ptr::eq(small, big)).then(|| kron.indices(layout, &big.exps, &bb));
                     let kb = kb.as_deref().unwrap_or(&ka);
                     let (a, b) = ((&ka[..], &small.coeffs[..]), (kb, &big.coeffs[..]));
-                    let hashed = match hashed::meets_often(a.0, b.0) {
-                        true => hashed::hashed_product(a, b, limit),
-                        false => None,
-                    };
+                    let hashed = hashed::plan(a.0, b.0)
+                        .and_then(|lows| hashed::hashed_product(a, b, &lows, limit));
                     let (pairs, coeffs) = match hashed {
                         Some(product) => product?,
                         None => heap_product(a, b, |x, y| x + y, limit)?,
