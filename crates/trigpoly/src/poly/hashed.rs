@@ -5,8 +5,8 @@
 //! product to bring equal monomials together; the table pays one probe, and a sort of the
 //! result. [`plan`] decides between them from a sample of rows, and cuts the range of the
 //! product's indices into chunks of about [`CHUNK_SUMS`] monomials each, so that the table of
-//! the chunk at hand stays in cache (a square of 24 682 terms meets 1.2 M monomials: one table
-//! of them all spent most of its time waiting for memory).
+//! the chunk at hand stays in cache (the square of a polynomial of 24 682 terms has 229 723:
+//! one table of them all spent most of its time waiting for memory).
 
 use super::mul::PairProduct;
 use crate::error::AlgebraError;
