@@ -20,6 +20,10 @@ const SAMPLE_PRODUCTS: usize = 1 << 13;
 /// sample would cost a tenth of the product.
 const MIN_PAIRS: usize = 1 << 16;
 
+/// A longer factor with more terms than this stays with the heap: the sample's set (16 bytes
+/// a sampled product, two rows of it) would take more memory than it is worth.
+const MAX_SAMPLED_ROW: usize = 1 << 19;
+
 /// The least number of term products per monomial, estimated, for which the hashed product
 /// is taken: it then adds into a table that many times smaller than the work, where the heap
 /// pays `log₂ n` comparisons a term product.
@@ -46,7 +50,7 @@ const CHUNK_SUMS: usize = 1 << 10;
 /// as the product's estimated monomials `nm/μ` fill at [`CHUNK_SUMS`] each.
 pub(super) fn plan(a: &[u64], b: &[u64]) -> Option<Vec<u64>> {
     let (n, m) = (a.len(), b.len());
-    if n < 2 || n.saturating_mul(m) < MIN_PAIRS {
+    if n < 2 || m > MAX_SAMPLED_ROW || n.saturating_mul(m) < MIN_PAIRS {
         return None;
     }
     let rows = (SAMPLE_PRODUCTS / m).clamp(2, 32).min(n);
@@ -197,10 +201,9 @@ pub(super) fn hashed_product<I: IntegerRing>(
     max_terms: usize,
 ) -> Option<Result<PairProduct<I>, AlgebraError>> {
     let square = std::ptr::eq(a.0, b.0) && std::ptr::eq(a.1, b.1);
-    let mut out = Product::default();
+    let pairs = (a.0, b.0, square);
     if let Some((sa, sb, doubled)) = in_words(a.1, b.1, square) {
         let zero = I::Wide::default();
-        let mut table = Table::<I::Wide>::with_slots(4 * CHUNK_SUMS);
         let add = |acc: &mut I::Wide, i: usize, j: usize, twice: bool| {
             I::wide_add_mul(acc, &sa[i], if twice { &doubled[j] } else { &sb[j] })
         };
@@ -208,22 +211,12 @@ pub(super) fn hashed_product<I: IntegerRing>(
             let sums = table.drain().filter(|s| s.acc != zero);
             out.append(sums.map(|s| (s.key, s.pair, I::from_wide(s.acc))));
         };
-        let added = add_pairs(
-            &mut table,
-            (a.0, b.0, square),
-            lows,
-            max_terms,
-            add,
-            drain,
-            &mut out,
-        );
-        return added.then(|| Ok((out.pairs, out.coeffs)));
+        return chunked(pairs, lows, max_terms, add, drain).map(Ok);
     }
     let doubled: Vec<I> = match square {
         true => b.1.iter().map(|c| c.add(c)).collect(),
         false => Vec::new(),
     };
-    let mut table = Table::<I::Acc>::with_slots(4 * CHUNK_SUMS);
     let add = |acc: &mut I::Acc, i: usize, j: usize, twice: bool| {
         I::acc_add_mul(acc, &a.1[i], if twice { &doubled[j] } else { &b.1[j] })
     };
@@ -231,16 +224,7 @@ pub(super) fn hashed_product<I: IntegerRing>(
         let sums = table.drain().map(|s| (s.key, s.pair, I::acc_finish(s.acc)));
         out.append(sums.filter(|t| !t.2.is_zero()));
     };
-    let added = add_pairs(
-        &mut table,
-        (a.0, b.0, square),
-        lows,
-        max_terms,
-        add,
-        drain,
-        &mut out,
-    );
-    added.then(|| Ok((out.pairs, out.coeffs)))
+    chunked(pairs, lows, max_terms, add, drain).map(Ok)
 }
 
 /// The factors' coefficients as words, and the second's doubled for a square, when every
@@ -297,19 +281,19 @@ impl<I> Product<I> {
 }
 
 /// Adds every term product `a_i·b_j` (for a square, `j ≥ i`, those off the diagonal twice,
-/// which `add`'s last argument asks for) to its index's sum in `table`, a chunk of indices at
-/// a time (`lows`), and hands each chunk's sums to `drain`, which writes them to `out`;
-/// `false`, leaving `out` partial, once the terms and the table hold more than `max_terms`.
+/// which `add`'s last argument asks for) to its index's sum in a table of sums `A`, a chunk of
+/// indices at a time (`lows`), and hands each chunk's sums to `drain`, which writes them as
+/// terms; `None` once the terms and the table hold more than `max_terms`.
 #[inline(always)]
-fn add_pairs<A: Default, I>(
-    table: &mut Table<A>,
+fn chunked<A: Default, I>(
     (a, b, square): (&[u64], &[u64], bool),
     lows: &[u64],
     max_terms: usize,
     mut add: impl FnMut(&mut A, usize, usize, bool),
     mut drain: impl FnMut(&mut Table<A>, &mut Product<I>),
-    out: &mut Product<I>,
-) -> bool {
+) -> Option<PairProduct<I>> {
+    let mut table = Table::<A>::with_slots(4 * CHUNK_SUMS);
+    let mut out = Product::default();
     // `next[i]`: the first partner of row `i` not yet multiplied (products of a row descend).
     let mut next: Vec<usize> = (0..a.len()).map(|i| if square { i } else { 0 }).collect();
     for &low in lows {
@@ -329,11 +313,11 @@ fn add_pairs<A: Default, I>(
             *next = start + run;
         }
         if out.coeffs.len() + table.sums.len() > max_terms {
-            return false;
+            return None;
         }
-        drain(table, out);
+        drain(&mut table, &mut out);
     }
-    true
+    Some((out.pairs, out.coeffs))
 }
 
 #[cfg(test)]
@@ -455,6 +439,10 @@ mod tests {
         // x^(300 i) · y^j: every product a monomial of its own.
         let spread: Vec<u64> = (0..300).rev().map(|i| 300 * i).collect();
         assert_eq!(plan(&spread, &line), None);
+        // A longer factor past the sample's size (its products would meet often).
+        let wide: Vec<u64> = (0..=MAX_SAMPLED_ROW as u64).rev().collect();
+        assert_eq!(plan(&line, &wide), None);
+        assert!(plan(&line, &wide[..MAX_SAMPLED_ROW]).is_some());
         // Too few pairs to be worth a sample.
         assert_eq!(plan(&line[..200], &line[..200]), None);
         // (1 + … + x^19999)²: 39 999 monomials, estimated from two rows (whose 20 000 products
