@@ -910,3 +910,55 @@ proptest! {
         prop_assert_eq!(ea, e(&a.to_gaussian()));
     }
 }
+
+/// Two polynomials on the monomials of `(x + y^a + z^b + t^c)^10` (286 of them), with the same
+/// random `a, b, c` and random Gaussian coefficients (small, up to a word, or `i64::MAX`; for
+/// half the pairs all small):
+/// their product has 286² ≈ 82 k term pairs on at most 1771 monomials, in a box too sparse for
+/// the dense accumulators, and takes the hashed product, in words or in accumulators.
+fn meeting_pair() -> impl Strategy<Value = (G, G)> {
+    static VARS: std::sync::OnceLock<trigpoly::Vars> = std::sync::OnceLock::new();
+    let vars = VARS
+        .get_or_init(|| crate::common::coordinates(&["x", "y", "z", "t"]))
+        .clone();
+    let coeff = prop_oneof![
+        6 => -50i64..50,
+        1 => (1i64 << 40)..(1i64 << 62),
+        1 => Just(i64::MAX),
+    ];
+    let coefficients = proptest::collection::vec((coeff.clone(), coeff), 286);
+    let exponents = (5i64..40, 5i64..40, 5i64..40);
+    (exponents, any::<bool>(), coefficients.clone(), coefficients).prop_map(
+        move |((a, b, c), small, f, g)| {
+            let mut monomials = Vec::new();
+            for i in 0..=10 {
+                for j in 0..=10 - i {
+                    for k in 0..=10 - i - j {
+                        monomials.push(vec![i, a * j, b * k, c * (10 - i - j - k)]);
+                    }
+                }
+            }
+            // Half the pairs small throughout, so that their sums stay in words.
+            let coefficient = |v: i64| Rational::from(if small { v % 50 } else { v });
+            let poly = |cs: Vec<(i64, i64)>| {
+                let cs = cs
+                    .into_iter()
+                    .map(|(re, im)| GaussianRational::new(coefficient(re), coefficient(im)));
+                Poly::from_terms(&vars, cs.zip(monomials.clone())).expect("small exponents")
+            };
+            (poly(f), poly(g))
+        },
+    )
+}
+
+proptest! {
+    #![proptest_config(Config { cases: 8, ..config() })]
+
+    /// Products and squares whose term pairs meet on few monomials (the hashed product)
+    /// equal the sums of the products by single terms.
+    #[test]
+    fn products_meeting_on_few_monomials_agree_with_sum_of_term_products((f, g) in meeting_pair()) {
+        prop_assert_eq!(&f * &g, product_by_terms(&f, &g));
+        prop_assert_eq!(&f * &f, product_by_terms(&f, &f));
+    }
+}
