@@ -1,7 +1,7 @@
 //! The hashed product: every term product added into a hash table keyed by its monomial's
 //! Kronecker index, for products too sparse for the dense accumulators whose term products
-//! nonetheless meet on few monomials (the minors of a rank's upper bound: 9.5 M term products
-//! onto some ten thousand monomials). The heap product pays `log₂ n` comparisons a term
+//! nonetheless meet on few monomials (the minors of a rank's upper bound: 9.5 M term products,
+//! each monomial met by hundreds of them). The heap product pays `log₂ n` comparisons a term
 //! product to bring equal monomials together; the table pays one probe, and a sort of the
 //! result. [`plan`] decides between them from a sample of rows, and cuts the range of the
 //! product's indices into chunks of about [`CHUNK_SUMS`] monomials each, so that the table of
@@ -54,8 +54,9 @@ pub(super) fn plan(a: &[u64], b: &[u64]) -> Option<Vec<u64>> {
         return None;
     }
     let rows = (SAMPLE_PRODUCTS / m).clamp(2, 32).min(n);
-    // The sample's distinct indices, counted in a set by open addressing: one probe each,
-    // where sorting them all cost a tenth of a product of 1287² pairs.
+    // The sample's distinct indices, counted in a set by open addressing: one probe each
+    // (sorting them all cost a tenth of a product of 1287² pairs that the heap then took;
+    // they are sorted below only for a product that is hashed).
     let slots = (2 * rows * m).next_power_of_two();
     let shift = 64 - slots.trailing_zeros();
     let mut seen = vec![0u64; slots];
