@@ -2,7 +2,7 @@
 //! normal form `Σ c · m · cos^a θ · sin^b θ` with `b ∈ {0, 1}` per angle (`sin²θ → 1 − cos²θ`),
 //! which is how elements are printed.
 
-use std::collections::HashMap;
+use rustc_hash::FxHashMap;
 
 use super::Poly;
 use crate::error::AlgebraError;
@@ -43,9 +43,10 @@ impl<C: Coefficient> Poly<C> {
         let angles: Vec<usize> = self.vars.angles().map(|v| v.index()).collect();
         let n = self.vars.len();
         let layout = self.layout();
-        let mut tables: HashMap<i64, Vec<(u32, u32, GaussianInteger)>> = HashMap::new();
+        let mut tables: FxHashMap<i64, Vec<(u32, u32, GaussianInteger)>> = FxHashMap::default();
         // Keyed by the exponents (zero at the angles), then `(cos, sin)` powers per angle.
-        let mut sums: HashMap<Vec<i64>, GaussianAcc> = HashMap::new();
+        let mut sums: FxHashMap<Vec<i64>, GaussianAcc> =
+            FxHashMap::with_capacity_and_hasher(self.len(), Default::default());
         let mut key = vec![0i64; n + 2 * angles.len()];
         let mut multiples = vec![0i64; angles.len()];
         for k in 0..self.len() {
