@@ -12,20 +12,16 @@ use super::mul::PairProduct;
 use crate::error::AlgebraError;
 use crate::number::IntegerRing;
 
-/// The share of the term products [`plan`] samples, at most (whole rows of the longer
-/// factor, at least 2 and at most 32 of them): one in 64.
+/// The share of the term products [`plan`] samples, at most: one in 64 (whole rows of the
+/// longer factor, 2 to 32 of them, or 32 rows of a share of its columns).
 const SAMPLE_SHARE: usize = 64;
 
-/// The most term products [`plan`] samples beyond two rows (its set then takes 4 MB).
+/// The most term products [`plan`] samples (its set then takes 4 MB).
 const MAX_SAMPLE: usize = 1 << 18;
 
 /// Products of fewer term pairs than this stay with the heap: both ways are quick, and the
 /// sample would cost a tenth of the product.
 const MIN_PAIRS: usize = 1 << 16;
-
-/// A longer factor with more terms than this stays with the heap: the sample's set (16 bytes
-/// a sampled product, two rows of it) would take more memory than it is worth.
-const MAX_SAMPLED_ROW: usize = 1 << 19;
 
 /// The least number of term products per monomial, estimated, for which the hashed product
 /// is taken: it then adds into a table that many times smaller than the work, where the heap
@@ -57,23 +53,38 @@ const CHUNK_SUMS: usize = 1 << 10;
 /// as the product's estimated monomials `nm/μ` fill at [`CHUNK_SUMS`] each.
 pub(super) fn plan(a: &[u64], b: &[u64]) -> Option<Vec<u64>> {
     let (n, m) = (a.len(), b.len());
-    if n < 2 || m > MAX_SAMPLED_ROW || n.saturating_mul(m) < MIN_PAIRS {
+    if n < 2 || n.saturating_mul(m) < MIN_PAIRS {
         return None;
     }
-    let rows = ((n * m / SAMPLE_SHARE).min(MAX_SAMPLE) / m)
-        .clamp(2, 32)
-        .min(n);
+    let budget = (n.saturating_mul(m) / SAMPLE_SHARE).min(MAX_SAMPLE);
+    // Whole rows while two of them fit the budget; past that, 32 rows of a share of the
+    // columns, picked by a hash of their position (the same ones in every row).
+    let rows = match budget / m {
+        0 | 1 => n.min(32),
+        r => r.min(32).min(n),
+    };
+    let wanted = (budget / rows).min(m) as u64;
+    let threshold = (wanted << 32) / m as u64;
+    let cols: Vec<u64> = (0u64..)
+        .zip(b)
+        .filter(|&(j, _)| wanted == m as u64 || mix(j) >> 32 < threshold)
+        .map(|(_, &bj)| bj)
+        .collect();
+    let t = cols.len();
+    if t == 0 {
+        return None;
+    }
     // The sample's distinct indices, counted in a set by open addressing: one probe each
     // (sorting them all cost a tenth of a product of 1287² pairs that the heap then took;
     // they are sorted below only for a product that is hashed).
-    let slots = (2 * rows * m).next_power_of_two();
+    let slots = (2 * rows * t).next_power_of_two();
     let shift = 64 - slots.trailing_zeros();
     let mut seen = vec![0u64; slots];
     let mut distinct = 0;
     for k in 0..rows {
         // Row midpoints of `rows` equal parts: the extreme rows, the least alike, are left.
         let ai = a[(2 * k + 1) * n / (2 * rows)];
-        for &bj in b {
+        for &bj in &cols {
             // Stored plus one: 0 marks an empty slot.
             let key = ai + bj + 1;
             let mut slot = (key.wrapping_mul(0x9E37_79B9_7F4A_7C15) >> shift) as usize;
@@ -90,12 +101,15 @@ pub(super) fn plan(a: &[u64], b: &[u64]) -> Option<Vec<u64>> {
             }
         }
     }
-    let excess = rows * m - distinct;
-    if 2 * excess * n < MIN_MULTIPLICITY * rows * rows * m {
+    // With a share `t/m` of the columns, a sampled product finds its partner only when that
+    // column is sampled too: `e/(st) ≈ (λ/2)(t/m)`, so `μ ≈ 2enm/(s²t²)`.
+    let excess = (rows * t - distinct) as u128;
+    let (n, m, s, t) = (n as u128, m as u128, rows as u128, t as u128);
+    if 2 * excess * n * m < MIN_MULTIPLICITY as u128 * (s * t).pow(2) {
         return None;
     }
-    // The estimated monomials, `nm/μ = n m · s² m / (2 e n) = s² m² / (2e)`, in chunks.
-    let monomials = (rows * m).pow(2) / (2 * excess);
+    // The estimated monomials, `nm/μ = s²t²/(2e)`, in chunks.
+    let monomials = ((s * t).pow(2) / (2 * excess)).min(usize::MAX as u128) as usize;
     let chunks = monomials.div_ceil(CHUNK_SUMS).clamp(1, distinct);
     let mut sample: Vec<u64> = seen.into_iter().filter(|&k| k != 0).collect();
     sample.sort_unstable_by(|x, y| y.cmp(x));
@@ -105,6 +119,16 @@ pub(super) fn plan(a: &[u64], b: &[u64]) -> Option<Vec<u64>> {
     lows.dedup();
     lows.push(0);
     Some(lows)
+}
+
+/// A well-mixed hash of a column's position (SplitMix64's finaliser): the columns it picks
+/// must look random, since a collision needs two picked columns at a given distance (a
+/// multiplicative hash picks them on a lattice whose distances miss most others).
+fn mix(j: u64) -> u64 {
+    let mut z = j.wrapping_add(0x9E37_79B9_7F4A_7C15);
+    z = (z ^ (z >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
+    z = (z ^ (z >> 27)).wrapping_mul(0x94D0_49BB_1331_11EB);
+    z ^ (z >> 31)
 }
 
 /// One monomial of the table: its index, one pair of factor terms whose product it is, and
@@ -449,10 +473,12 @@ mod tests {
         // x^(300 i) · y^j: every product a monomial of its own.
         let spread: Vec<u64> = (0..300).rev().map(|i| 300 * i).collect();
         assert_eq!(plan(&spread, &line), None);
-        // A longer factor past the sample's size (its products would meet often).
-        let wide: Vec<u64> = (0..=MAX_SAMPLED_ROW as u64).rev().collect();
-        assert_eq!(plan(&line, &wide), None);
-        assert!(plan(&line, &wide[..MAX_SAMPLED_ROW]).is_some());
+        // A longer factor than the sample holds whole rows of: 32 rows of a share of its
+        // columns, which still meet.
+        let wide: Vec<u64> = (0..1u64 << 20).rev().collect();
+        assert!(plan(&line, &wide).is_some_and(|lows| chunked(&lows)));
+        let far: Vec<u64> = (0..1u64 << 20).rev().map(|j| j << 20).collect();
+        assert_eq!(plan(&line, &far), None);
         // Too few pairs to be worth a sample.
         assert_eq!(plan(&line[..200], &line[..200]), None);
         // (1 + … + x^19999)²: 39 999 monomials, estimated from 13 rows at about 150 000 (the
