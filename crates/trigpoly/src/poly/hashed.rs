@@ -42,10 +42,12 @@ const CHUNK_SUMS: usize = 1 << 10;
 /// land on an index another sampled product has. When each monomial of the product is met by
 /// `μ` products from as many rows, a sample of `s` of the `n` rows meets it about `λ = μs/n`
 /// times, and `e/(sm) ≈ λ/2` while `λ` is small (less beyond), so `μ ≈ 2en/(s²m)`, an
-/// underestimate for large `λ`. The sample is a 64th of the products, at most [`MAX_SAMPLE`],
-/// in 2 to 32 rows: two rows alone, far apart, can miss each other's monomials altogether
-/// (the products of a bracket of `{K_{26,25}, F1}` with `P_{24,24}`: `μ` 0 from two rows,
-/// 230 from 32, and 5.5 s on the heap against 0.8 s hashed). The minors of a rank's upper
+/// underestimate for large `λ`. The sample is a 64th of the products, at most [`MAX_SAMPLE`]:
+/// 2 to 32 whole rows, or, when fewer than two fit, 32 rows of a share `t/m` of the columns
+/// (a product finds its partner only when that column is sampled too, so `μ ≈ 2enm/(s²t²)`).
+/// Two rows alone, far apart, can miss each other's monomials altogether (the products of a
+/// bracket of `{K_{26,25}, F1}` with `P_{24,24}`: `μ` 0 from two rows, 230 from 32, and 5.5 s
+/// on the heap against 0.8 s hashed). The minors of a rank's upper
 /// bound give `μ` over a hundred; Pearce's sparse products (truly 1.9 and 2.8 at sizes 6 and
 /// 8, where the heap was the faster) under one. Below [`MIN_MULTIPLICITY`] the product stays
 /// with the heap, whose memory is the product's own, where a table would hold a sum for
