@@ -13,15 +13,20 @@ fn main() {
 
 type Q = Poly<Rational>;
 
-/// `f` and `f + 1`, with the term count of their product checked once, outside the timing.
-fn fateman(n: u64) -> (Q, Q) {
-    let vars: Vars = VarSet::builder()
+/// The coordinates `x, y, z, t`.
+fn xyzt() -> Vars {
+    VarSet::builder()
         .coordinate("x")
         .coordinate("y")
         .coordinate("z")
         .coordinate("t")
         .build()
-        .expect("valid names");
+        .expect("valid names")
+}
+
+/// `f` and `f + 1`, with the term count of their product checked once, outside the timing.
+fn fateman(n: u64) -> (Q, Q) {
+    let vars = xyzt();
     let f = Q::parse(&vars, &format!("(1 + x + y + z + t)^{n}")).expect("parses");
     let g = &f + &Q::one(&vars);
     // Monomials of total degree ≤ 2n in 4 variables: C(2n + 4, 4).
@@ -57,13 +62,7 @@ fn fateman_20(bencher: Bencher) {
 
 #[divan::bench(sample_count = 10, sample_size = 1)]
 fn meeting_square(bencher: Bencher) {
-    let vars: Vars = VarSet::builder()
-        .coordinate("x")
-        .coordinate("y")
-        .coordinate("z")
-        .coordinate("t")
-        .build()
-        .expect("valid names");
+    let vars = xyzt();
     let g = Q::parse(&vars, "(x + y^7 + 2*z^13 - t^23)^20").expect("parses");
     assert_eq!(g.len(), 1771);
     let square = g.checked_mul(&g).expect("within the limits");
