@@ -27,22 +27,21 @@ impl<C: Coefficient> Poly<C> {
                 check_exponent(&self.vars, v, hi.saturating_mul(e))?;
             }
         }
-        if self.has_unit_coefficient() {
-            // `x^2`, `ω^2`: the power of a variable product keeps the coefficient 1.
-            return Ok(self.monomial_pow(e));
-        }
         if self.is_monomial() {
-            // A single term's coefficient grows without any new term: bound its size.
-            let z = C::from_parts(&self.content, &self.coeffs[0]).to_gaussian();
-            let bits = [&z.re, &z.im]
-                .iter()
-                .map(|q| q.numer().bits().max(q.denom().bits()))
-                .max()
-                .unwrap_or(1);
-            if bits.saturating_mul(e.unsigned_abs()) > MAX_COEFFICIENT_BITS {
-                return Err(AlgebraError::Invalid(format!(
-                    "the coefficient of this power would have more than {MAX_COEFFICIENT_BITS} bits"
-                )));
+            // A single term's coefficient grows without any new term: bound its size (a
+            // coefficient 1, as in `x^2` or `ω^2`, stays 1).
+            if !self.has_unit_coefficient() {
+                let z = C::from_parts(&self.content, &self.coeffs[0]).to_gaussian();
+                let bits = [&z.re, &z.im]
+                    .iter()
+                    .map(|q| q.numer().bits().max(q.denom().bits()))
+                    .max()
+                    .unwrap_or(1);
+                if bits.saturating_mul(e.unsigned_abs()) > MAX_COEFFICIENT_BITS {
+                    return Err(AlgebraError::Invalid(format!(
+                        "the coefficient of this power would have more than {MAX_COEFFICIENT_BITS} bits"
+                    )));
+                }
             }
             return Ok(self.monomial_pow(e));
         }
