@@ -8,6 +8,8 @@
 //! the chunk at hand stays in cache (the square of a polynomial of 24 682 terms has 229 723:
 //! one table of them all spent most of its time waiting for memory).
 
+use rustc_hash::FxHashSet;
+
 use super::mul::PairProduct;
 use crate::error::AlgebraError;
 use crate::number::IntegerRing;
@@ -16,7 +18,7 @@ use crate::number::IntegerRing;
 /// longer factor, 2 to 32 of them, or 32 rows of a share of its columns).
 const SAMPLE_SHARE: usize = 64;
 
-/// The most term products [`plan`] samples (its set then takes 4 MB).
+/// The most term products [`plan`] samples.
 const MAX_SAMPLE: usize = 1 << 18;
 
 /// Products of fewer term pairs than this stay with the heap: both ways are quick, and the
@@ -76,33 +78,15 @@ pub(super) fn plan(a: &[u64], b: &[u64]) -> Option<Vec<u64>> {
     if t == 0 {
         return None;
     }
-    // The sample's distinct indices, counted in a set by open addressing: one probe each
-    // (sorting them all cost a tenth of a product of 1287² pairs that the heap then took;
-    // they are sorted below only for a product that is hashed).
-    let slots = (2 * rows * t).next_power_of_two();
-    let shift = 64 - slots.trailing_zeros();
-    let mut seen = vec![0u64; slots];
-    let mut distinct = 0;
+    // The sample's distinct indices (sorted below only for a product that is hashed:
+    // sorting them all cost a tenth of a product of 1287² pairs that the heap then took).
+    let mut seen = FxHashSet::with_capacity_and_hasher(rows * t, Default::default());
     for k in 0..rows {
         // Row midpoints of `rows` equal parts: the extreme rows, the least alike, are left.
         let ai = a[(2 * k + 1) * n / (2 * rows)];
-        for &bj in &cols {
-            // Stored plus one: 0 marks an empty slot.
-            let key = ai + bj + 1;
-            let mut slot = (key.wrapping_mul(0x9E37_79B9_7F4A_7C15) >> shift) as usize;
-            loop {
-                match seen[slot] {
-                    0 => {
-                        seen[slot] = key;
-                        distinct += 1;
-                        break;
-                    }
-                    k if k == key => break,
-                    _ => slot = (slot + 1) & (slots - 1),
-                }
-            }
-        }
+        seen.extend(cols.iter().map(|&bj| ai + bj));
     }
+    let distinct = seen.len();
     // With a share `t/m` of the columns, a sampled product finds its partner only when that
     // column is sampled too: `e/(st) ≈ (λ/2)(t/m)`, so `μ ≈ 2enm/(s²t²)`.
     let excess = (rows * t - distinct) as u128;
@@ -113,10 +97,10 @@ pub(super) fn plan(a: &[u64], b: &[u64]) -> Option<Vec<u64>> {
     // The estimated monomials, `nm/μ = s²t²/(2e)`, in chunks.
     let monomials = ((s * t).pow(2) / (2 * excess)).min(usize::MAX as u128) as usize;
     let chunks = monomials.div_ceil(CHUNK_SUMS).clamp(1, distinct);
-    let mut sample: Vec<u64> = seen.into_iter().filter(|&k| k != 0).collect();
+    let mut sample: Vec<u64> = seen.into_iter().collect();
     sample.sort_unstable_by(|x, y| y.cmp(x));
     let mut lows: Vec<u64> = (1..chunks)
-        .map(|c| sample[c * sample.len() / chunks] - 1)
+        .map(|c| sample[c * sample.len() / chunks])
         .collect();
     lows.dedup();
     lows.push(0);
@@ -142,7 +126,9 @@ struct Sum<A> {
 }
 
 /// The sums, in the order their monomials came, and the slots that find them by linear
-/// probing (an index into the sums plus one, or 0 when empty; more than twice the sums).
+/// probing (an index into the sums plus one, or 0 when empty; more than twice the sums). An
+/// `FxHashMap` of the same sums took 5 % more time for the rank's minors and 13 % more for the
+/// closure's square.
 struct Table<A> {
     sums: Vec<Sum<A>>,
     slots: Vec<u32>,
