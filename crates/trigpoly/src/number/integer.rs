@@ -748,14 +748,47 @@ enum Long {
     Big(BigInt),
 }
 
-/// A 256-bit two's complement integer `high·2¹²⁸ + low`.
-#[derive(Clone, Copy, Debug)]
-struct Wide256 {
+/// A 256-bit two's complement integer `high·2¹²⁸ + low`: the sums of products of `i128`s in
+/// [`IntegerAcc`], and the sums of the hashed product for coefficients past a word.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub(crate) struct Wide256 {
     low: u128,
     high: i128,
 }
 
 impl Wide256 {
+    /// `self += x·y` without a branch, modulo 2²⁵⁶ (exact when the sum fits, which the caller
+    /// guarantees; a partial sum may wrap on the way). The factors are split at 64 bits,
+    /// `x = x₁·2⁶⁴ + x₀` with `x₁` signed and `x₀` not, so that each of the four partial
+    /// products fits an `i128` or a `u128`.
+    #[inline(always)]
+    pub(crate) fn add_mul(&mut self, x: i128, y: i128) {
+        let (x1, x0) = (i128::from((x >> 64) as i64), x as u64);
+        let (y1, y0) = (i128::from((y >> 64) as i64), y as u64);
+        let (low, carry) = self.low.overflowing_add(u128::from(x0) * u128::from(y0));
+        self.low = low;
+        self.high = self.high.wrapping_add(i128::from(carry) + x1 * y1);
+        self.add_shifted(x1 * i128::from(y0));
+        self.add_shifted(y1 * i128::from(x0));
+    }
+
+    /// `self += v·2⁶⁴`.
+    #[inline(always)]
+    fn add_shifted(&mut self, v: i128) {
+        let (low, carry) = self.low.overflowing_add((v as u128) << 64);
+        self.low = low;
+        self.high = self.high.wrapping_add((v >> 64) + i128::from(carry));
+    }
+
+    /// The value.
+    pub(crate) fn to_integer(self) -> Integer {
+        if self.high == (self.low as i128) >> 127 {
+            Integer::from_i128(self.low as i128)
+        } else {
+            Integer::from_bigint(self.to_bigint())
+        }
+    }
+
     /// `v`, sign-extended.
     fn from_i128(v: i128) -> Wide256 {
         Wide256 {
@@ -808,15 +841,6 @@ impl Wide256 {
     }
 }
 
-/// The value of `a` as an `i128`, unless it is a `BigInt`.
-fn up_to_i128(a: &Integer) -> Option<i128> {
-    match a.view() {
-        IntegerView::Small(x) => Some(i128::from(x)),
-        IntegerView::Wide(v) => Some(v),
-        IntegerView::Big(_) => None,
-    }
-}
-
 impl IntegerAcc {
     /// `acc += a * b`.
     #[inline]
@@ -865,7 +889,7 @@ impl IntegerAcc {
     /// `acc ±= a * b` for factors past a word: in 256 bits when both fit an `i128`.
     #[cold]
     fn add_mul_wide(&mut self, a: &Integer, b: &Integer, negate: bool) {
-        match (up_to_i128(a), up_to_i128(b)) {
+        match (a.to_i128(), b.to_i128()) {
             (Some(x), Some(y)) => {
                 let p = Wide256::product(x, y);
                 self.add_wide(if negate { p.negated() } else { p });
@@ -931,7 +955,7 @@ impl IntegerAcc {
 
 #[cfg(test)]
 mod tests {
-    use super::{Integer, IntegerAcc, IntegerView};
+    use super::{Integer, IntegerAcc, IntegerView, Wide256};
     use num_bigint::BigInt;
     use std::collections::HashSet;
 
@@ -1069,5 +1093,49 @@ mod tests {
             assert_eq!(row.finish().to_bigint(), row_want, "row {k}");
         }
         assert_eq!(all.finish().to_bigint(), all_want);
+    }
+
+    /// The branch-free 256-bit multiply-add through every pair of `i128` edge values (the
+    /// halves' signs and carries at 2⁶⁴ and 2¹²⁷ included), each row summed alone and all in
+    /// a running sum (rows of `e` and `−e` follow each other, so it climbs past the `i128`
+    /// and comes back), each read back.
+    #[test]
+    fn the_256_bit_sum_adds_products_of_i128_edges_exactly() {
+        let values: Vec<i128> = edges()
+            .iter()
+            .filter_map(|v| i128::try_from(v).ok())
+            .filter(|&v| v != i128::MIN)
+            .chain([
+                1 << 64,
+                -(1 << 64),
+                (1 << 64) - 1,
+                0x1234_5678_9abc_def0_1122,
+            ])
+            .collect();
+        let mut running = Wide256::default();
+        let mut running_want = BigInt::from(0);
+        for &x in &values {
+            let mut row = Wide256::default();
+            let mut row_want = BigInt::from(0);
+            for &y in &values {
+                row.add_mul(x, y);
+                running.add_mul(x, y);
+                let p = BigInt::from(x) * BigInt::from(y);
+                row_want += &p;
+                running_want += p;
+            }
+            assert_eq!(row.to_integer().to_bigint(), row_want, "row {x}");
+            assert_eq!(
+                running.to_integer().to_bigint(),
+                running_want,
+                "after row {x}"
+            );
+        }
+        // x·y − x·y: back to zero, and a sum that fits an i128 read back as one.
+        let mut sum = Wide256::default();
+        sum.add_mul(i128::MAX, i128::MAX);
+        sum.add_mul(-i128::MAX, i128::MAX);
+        sum.add_mul(-3, 1 << 100);
+        assert_eq!(sum.to_integer(), Integer::from_i128(-3 << 100));
     }
 }

@@ -19,6 +19,7 @@ use gcd::gcd_u128;
 pub(crate) use gcd::binary_gcd;
 
 pub use gaussian::{GaussianAcc, GaussianInteger, GaussianRational, ParseGaussianError};
+pub(crate) use integer::Wide256;
 pub use integer::{ExactDivisor, Integer, IntegerAcc, IntegerView};
 pub use rational::{ParseRationalError, Rational};
 
@@ -99,6 +100,11 @@ pub trait IntegerRing:
     fn wide_leading_sign(w: &Self::Wide) -> i32;
     /// `w / d`, exact: `d ≠ 0` divides every component.
     fn wide_div_exact(w: &Self::Wide, d: i128) -> Self::Wide;
+    /// The value as `(r, false)` for `r` or `(r, true)` for `i·r`, with `r` an `i128`, if it
+    /// is real or imaginary and fits (each coefficient of `Z^m e^{−inθ}` is).
+    fn to_real_or_imaginary(&self) -> Option<(i128, bool)>;
+    /// `re + i·im`; `im` is zero in Z.
+    fn from_parts(re: Integer, im: Integer) -> Self;
     /// Whether products of primitive elements are primitive (Gauss's lemma: true for Z, false
     /// for Z\[i\] with primitivity taken componentwise, as `(1 + i)(1 − i) = 2` shows).
     const GAUSS_LEMMA: bool;
@@ -181,6 +187,14 @@ impl IntegerRing for Integer {
     #[inline]
     fn wide_div_exact(w: &i128, d: i128) -> i128 {
         div_i128(*w, d)
+    }
+    #[inline]
+    fn to_real_or_imaginary(&self) -> Option<(i128, bool)> {
+        Some((self.to_i128()?, false))
+    }
+    fn from_parts(re: Integer, im: Integer) -> Self {
+        debug_assert!(im.is_zero());
+        re
     }
     fn is_zero(&self) -> bool {
         Integer::is_zero(self)
@@ -318,6 +332,17 @@ impl IntegerRing for GaussianInteger {
     #[inline]
     fn wide_div_exact(w: &(i128, i128), d: i128) -> (i128, i128) {
         (div_i128(w.0, d), div_i128(w.1, d))
+    }
+    #[inline]
+    fn to_real_or_imaginary(&self) -> Option<(i128, bool)> {
+        match (self.re.is_zero(), self.im.is_zero()) {
+            (_, true) => Some((self.re.to_i128()?, false)),
+            (true, false) => Some((self.im.to_i128()?, true)),
+            (false, false) => None,
+        }
+    }
+    fn from_parts(re: Integer, im: Integer) -> Self {
+        GaussianInteger::new(re, im)
     }
     fn is_zero(&self) -> bool {
         GaussianInteger::is_zero(self)

@@ -12,7 +12,7 @@ use rustc_hash::FxHashSet;
 
 use super::mul::PairProduct;
 use crate::error::AlgebraError;
-use crate::number::IntegerRing;
+use crate::number::{IntegerRing, Wide256};
 
 /// The share of the term products [`plan`] samples, at most: one in 64 (whole rows of the
 /// longer factor, 2 to 32 of them, or 32 rows of a share of its columns).
@@ -212,10 +212,15 @@ impl<A: Default> Table<A> {
 /// would hold more than `max_terms` monomials (sums that cancel included): the heap product
 /// then decides whether the product itself has too many terms.
 ///
-/// When every coefficient fits a word and no sum can pass an `i128` component (a monomial
-/// gathers at most one product per row), the sums are machine words, a table entry is 32
-/// bytes over Z and 48 over Z\[i\], and a product is one multiply-add; otherwise each sum is
-/// the ring's accumulator, which spills past the `i128` when it must.
+/// The sums are the narrowest that hold them. When every coefficient fits a word and no sum
+/// can pass an `i128` component (a monomial gathers at most one product per row), they are
+/// machine words: a table entry is 32 bytes over Z and 48 over Z\[i\], and a product one
+/// multiply-add. When every coefficient is real or imaginary and fits an `i128` (each of
+/// `Z^m e^{−inθ}`'s is), and no sum can pass 255 bits, a product is one real product, added
+/// to the real or the imaginary part of a pair of 256-bit sums without a branch: the squares
+/// of the closure's resonant integrals, whose 70-bit coefficients spilled the accumulators to
+/// their 256-bit tier a product at a time. Otherwise each sum is the ring's accumulator,
+/// which spills past 256 bits when it must.
 pub(super) fn hashed_product<I: IntegerRing>(
     a: (&[u64], &[I]),
     b: (&[u64], &[I]),
@@ -224,16 +229,30 @@ pub(super) fn hashed_product<I: IntegerRing>(
 ) -> Option<Result<PairProduct<I>, AlgebraError>> {
     let square = std::ptr::eq(a.0, b.0) && std::ptr::eq(a.1, b.1);
     let pairs = (a.0, b.0, square);
-    if let Some((sa, sb, doubled)) = in_words(a.1, b.1, square) {
-        let zero = I::Wide::default();
-        let add = |acc: &mut I::Wide, i: usize, j: usize, twice: bool| {
-            I::wide_add_mul(acc, &sa[i], if twice { &doubled[j] } else { &sb[j] })
+    // Bits a sum can gain over the largest product: one product a row, each component the sum
+    // of `products` real ones, and doubled off a square's diagonal.
+    let fan_in = |products: u32| {
+        let rows = a.1.len().min(b.1.len()) as u64;
+        64 - rows.leading_zeros() + products + u32::from(square)
+    };
+    let words = Converted::new(a.1, b.1, square, I::to_small, I::small_bits, |c| {
+        I::small_checked_scale(c, 2)
+    });
+    if let Some(words) = words.filter(|w| w.bits + fan_in(I::PRODUCTS_PER_COMPONENT) <= 126) {
+        return words.product(pairs, lows, max_terms, I::wide_add_mul, I::from_wide);
+    }
+    let bits = |c: &(i128, bool)| 128 - c.0.unsigned_abs().leading_zeros();
+    let parts = Converted::new(a.1, b.1, square, I::to_real_or_imaginary, bits, |c| {
+        (bits(c) < 126).then(|| (2 * c.0, c.1))
+    });
+    if let Some(parts) = parts.filter(|p| p.max_bits <= 126 && p.bits + fan_in(1) <= 254) {
+        // (i^e x)(i^f y) = i^(e+f) xy: real for e = f, negated when both are imaginary.
+        let add_mul = |sum: &mut [Wide256; 2], x: &(i128, bool), y: &(i128, bool)| {
+            let x_signed = if x.1 & y.1 { -x.0 } else { x.0 };
+            sum[usize::from(x.1 ^ y.1)].add_mul(x_signed, y.0);
         };
-        let drain = |table: &mut Table<I::Wide>, out: &mut Product<I>| {
-            let sums = table.drain().filter(|s| s.acc != zero);
-            out.append(sums.map(|s| (s.key, s.pair, I::from_wide(s.acc))));
-        };
-        return chunked(pairs, lows, max_terms, add, drain).map(Ok);
+        let finish = |[re, im]: [Wide256; 2]| I::from_parts(re.to_integer(), im.to_integer());
+        return parts.product(pairs, lows, max_terms, add_mul, finish);
     }
     let doubled: Vec<I> = match square {
         true => b.1.iter().map(|c| c.add(c)).collect(),
@@ -249,30 +268,68 @@ pub(super) fn hashed_product<I: IntegerRing>(
     chunked(pairs, lows, max_terms, add, drain).map(Ok)
 }
 
-/// The factors' coefficients as words, and the second's doubled for a square, when every
-/// sum of at most one product a row (doubled) stays within the `i128` components.
-#[allow(clippy::type_complexity)]
-fn in_words<I: IntegerRing>(
-    a: &[I],
-    b: &[I],
-    square: bool,
-) -> Option<(Vec<I::Small>, Vec<I::Small>, Vec<I::Small>)> {
-    let words = |c: &[I]| c.iter().map(I::to_small).collect::<Option<Vec<_>>>();
-    let (sa, sb) = (words(a)?, words(b)?);
-    let bits = |s: &[I::Small]| s.iter().map(I::small_bits).max().unwrap_or(0);
-    let rows = a.len().min(b.len()) as u64;
-    let fan_in = 64 - rows.leading_zeros() + I::PRODUCTS_PER_COMPONENT + u32::from(square);
-    if bits(&sa) + bits(&sb) + fan_in > 126 {
-        return None;
+/// The factors' coefficients in a fixed-width form `W` (machine words, or real and imaginary
+/// `i128`s), the second's doubled for a square, with the bits their products can take.
+struct Converted<W> {
+    a: Vec<W>,
+    b: Vec<W>,
+    /// The second factor's coefficients doubled (a square's pairs off the diagonal), or none.
+    doubled: Vec<W>,
+    /// Bits of the largest coefficient of `a` plus those of `b` (doubled, for a square).
+    bits: u32,
+    /// Bits of the largest coefficient of either factor, doubled ones included.
+    max_bits: u32,
+}
+
+impl<W: Copy> Converted<W> {
+    /// Both factors' coefficients in the form `W`, if every one converts (and doubles, for
+    /// a square).
+    fn new<I>(
+        a: &[I],
+        b: &[I],
+        square: bool,
+        convert: impl Fn(&I) -> Option<W>,
+        bits_of: impl Fn(&W) -> u32,
+        double: impl Fn(&W) -> Option<W>,
+    ) -> Option<Self> {
+        let all = |c: &[I]| c.iter().map(&convert).collect::<Option<Vec<_>>>();
+        let (a, b) = (all(a)?, all(b)?);
+        let doubled: Vec<W> = match square {
+            true => b.iter().map(&double).collect::<Option<_>>()?,
+            false => Vec::new(),
+        };
+        let max = |s: &[W]| s.iter().map(&bits_of).max().unwrap_or(0);
+        let (bits_a, bits_b) = (max(&a), max(&b));
+        Some(Converted {
+            bits: bits_a + bits_b,
+            max_bits: bits_a.max(bits_b).max(max(&doubled)),
+            a,
+            b,
+            doubled,
+        })
     }
-    let doubled = match square {
-        true => sb
-            .iter()
-            .map(|c| I::small_checked_scale(c, 2))
-            .collect::<Option<_>>()?,
-        false => Vec::new(),
-    };
-    Some((sa, sb, doubled))
+
+    /// The product with sums `A` (`add_mul` adds a product of coefficients, `finish` reads a
+    /// sum back), which the caller has checked cannot overflow.
+    fn product<A: Default + PartialEq, I>(
+        &self,
+        pairs: (&[u64], &[u64], bool),
+        lows: &[u64],
+        max_terms: usize,
+        add_mul: impl Fn(&mut A, &W, &W),
+        finish: impl Fn(A) -> I,
+    ) -> Option<Result<PairProduct<I>, AlgebraError>> {
+        let add = |acc: &mut A, i: usize, j: usize, twice: bool| {
+            let partner = if twice { &self.doubled[j] } else { &self.b[j] };
+            add_mul(acc, &self.a[i], partner)
+        };
+        let drain = |table: &mut Table<A>, out: &mut Product<I>| {
+            let zero = A::default();
+            let sums = table.drain().filter(|s| s.acc != zero);
+            out.append(sums.map(|s| (s.key, s.pair, finish(s.acc))));
+        };
+        chunked(pairs, lows, max_terms, add, drain).map(Ok)
+    }
 }
 
 /// The terms of a product as they come, chunk by chunk, highest first.
@@ -345,40 +402,51 @@ fn chunked<A: Default, I>(
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::number::Integer;
+    use crate::number::{GaussianInteger, Integer};
 
     /// Kronecker indices of a two-variable polynomial `Σ c x^i y^j` with `i, j < 100`.
     fn index(i: u64, j: u64) -> u64 {
         100 * i + j
     }
 
-    fn dense(terms: &[(u64, u64, i64)]) -> (Vec<u64>, Vec<Integer>) {
-        let mut t: Vec<(u64, Integer)> = terms
-            .iter()
-            .map(|&(i, j, c)| (index(i, j), Integer::from(c)))
+    /// The terms `c x^i y^j` sorted by index, descending.
+    fn sorted<I: IntegerRing>(terms: Vec<(u64, u64, I)>) -> (Vec<u64>, Vec<I>) {
+        let mut t: Vec<(u64, I)> = terms
+            .into_iter()
+            .map(|(i, j, c)| (index(i, j), c))
             .collect();
         t.sort_unstable_by_key(|x| std::cmp::Reverse(x.0));
         t.into_iter().unzip()
     }
 
-    /// The product by the definition: every pair, summed per index, zeros dropped.
-    fn naive(a: &(Vec<u64>, Vec<Integer>), b: &(Vec<u64>, Vec<Integer>)) -> Vec<(u64, Integer)> {
-        let mut sums = std::collections::BTreeMap::<u64, num_bigint::BigInt>::new();
+    fn dense(terms: &[(u64, u64, i64)]) -> (Vec<u64>, Vec<Integer>) {
+        sorted(
+            terms
+                .iter()
+                .map(|&(i, j, c)| (i, j, Integer::from(c)))
+                .collect(),
+        )
+    }
+
+    /// The product by the definition: every pair, summed per index by the ring's own
+    /// arithmetic, zeros dropped.
+    fn naive<I: IntegerRing>(a: &(Vec<u64>, Vec<I>), b: &(Vec<u64>, Vec<I>)) -> Vec<(u64, I)> {
+        let mut sums = std::collections::BTreeMap::<u64, I>::new();
         for (ka, ca) in a.0.iter().zip(&a.1) {
             for (kb, cb) in b.0.iter().zip(&b.1) {
-                *sums.entry(ka + kb).or_default() += ca.to_bigint() * cb.to_bigint();
+                let sum = sums.entry(ka + kb).or_default();
+                *sum = sum.add(&ca.mul(cb));
             }
         }
         sums.into_iter()
             .rev()
-            .filter(|(_, c)| *c != num_bigint::BigInt::from(0))
-            .map(|(k, c)| (k, Integer::from_bigint(c)))
+            .filter(|(_, c)| !c.is_zero())
             .collect()
     }
 
     /// The hashed product as one chunk, checked against the same in chunks that cut it
     /// anywhere (a chunk with no monomial included).
-    fn hashed(a: &(Vec<u64>, Vec<Integer>), b: &(Vec<u64>, Vec<Integer>)) -> Vec<(u64, Integer)> {
+    fn hashed<I: IntegerRing>(a: &(Vec<u64>, Vec<I>), b: &(Vec<u64>, Vec<I>)) -> Vec<(u64, I)> {
         let run = |lows: &[u64]| {
             let (pairs, coeffs) = hashed_product((&a.0, &a.1), (&b.0, &b.1), lows, usize::MAX)
                 .expect("no limit")
@@ -413,7 +481,7 @@ mod tests {
         assert_eq!(hashed(&fa, &gb), naive(&fa, &gb));
         assert_eq!(hashed(&gb, &gb), naive(&gb, &gb));
         // Words whose sums could pass an `i128` (63 + 63 bits, 40 rows), and a coefficient past
-        // a word: the ring's accumulators.
+        // a word: 256-bit sums.
         let wide: Vec<(u64, u64, i64)> = g
             .iter()
             .map(|&(i, j, c)| (i, j, i64::MAX - 5 - c))
@@ -424,9 +492,13 @@ mod tests {
         // would leave the words).
         let other = wide.clone();
         assert_eq!(hashed(&wide, &other), naive(&wide, &other));
+        // A coefficient of 102 bits (256-bit sums), and one past an `i128` (the accumulators).
         let mut long = dense(&f);
-        long.1[0] = Integer::from_bigint(num_bigint::BigInt::from(3) << 100);
-        assert_eq!(hashed(&long, &gb), naive(&long, &gb));
+        for bits in [100, 130] {
+            long.1[0] = Integer::from_bigint(num_bigint::BigInt::from(3) << bits);
+            assert_eq!(hashed(&long, &gb), naive(&long, &gb));
+            assert_eq!(hashed(&long, &long), naive(&long, &long));
+        }
         // x − y times x + y: x² − y², the xy terms cancel.
         f = vec![(1, 0, 1), (0, 1, -1)];
         let h = dense(&[(1, 0, 1), (0, 1, 1)]);
@@ -437,6 +509,55 @@ mod tests {
                 (index(0, 2), Integer::from(-1))
             ]
         );
+    }
+
+    /// Over Z\[i\]: real and imaginary coefficients of 70 bits (the 256-bit sums of real
+    /// products, where two imaginary factors make a negative real product, and a monomial
+    /// gathers real and imaginary products both), squares among them; a coefficient with
+    /// both parts (the accumulators); and words (48-byte sums).
+    #[test]
+    fn gaussian_products_of_real_and_imaginary_coefficients_like_the_definition() {
+        let gaussian = |re: i128, im: i128| {
+            GaussianInteger::new(Integer::from_i128(re), Integer::from_i128(im))
+        };
+        let big = 1i128 << 69;
+        let part = |i: u64, j: u64| {
+            let v = big - (i * 31 + j * 17) as i128 % 97 + 48;
+            match (i * j + i) % 4 {
+                0 => gaussian(v, 0),
+                1 => gaussian(0, v),
+                2 => gaussian(-v, 0),
+                _ => gaussian(0, -v),
+            }
+        };
+        let grid = |n: u64| -> Vec<(u64, u64, GaussianInteger)> {
+            (0..n)
+                .flat_map(|i| (0..n).map(move |j| (i, j, part(i, j))))
+                .collect()
+        };
+        let (f, g) = (sorted(grid(7)), sorted(grid(20)));
+        for (a, b) in [(&f, &g), (&g, &g), (&f, &f)] {
+            let want = naive(a, b);
+            assert!(want.iter().any(|(_, c)| !c.re.is_zero() && !c.im.is_zero()));
+            assert_eq!(hashed(a, b), want);
+        }
+        let mut mixed = f.clone();
+        mixed.1[3] = gaussian(big, -big);
+        assert_eq!(hashed(&mixed, &g), naive(&mixed, &g));
+        assert_eq!(hashed(&mixed, &mixed), naive(&mixed, &mixed));
+        let small: Vec<(u64, u64, GaussianInteger)> = grid(12)
+            .into_iter()
+            .map(|(i, j, c)| {
+                (
+                    i,
+                    j,
+                    gaussian(c.re.to_i128().unwrap() >> 40, c.im.to_i128().unwrap() >> 40),
+                )
+            })
+            .collect();
+        let small = sorted(small);
+        assert_eq!(hashed(&small, &small), naive(&small, &small));
+        assert_eq!(hashed(&small, &g), naive(&small, &g));
     }
 
     #[test]
