@@ -70,17 +70,23 @@ pub(crate) fn wrap(s: &str, w: usize, indent: &str) -> Vec<String> {
     let lead = &s[..s.len() - s.trim_start_matches(' ').len()];
     let mut lines = Vec::new();
     let mut line = lead.to_string();
+    // The line's width, counted as it grows (a long expression has millions of words).
+    let mut line_width = width(lead);
     let mut empty = true;
     for word in s.split(' ').filter(|w| !w.is_empty()) {
-        if !empty && width(&line) + 1 + width(word) > w {
+        let word_width = width(word);
+        if !empty && line_width + 1 + word_width > w {
             lines.push(std::mem::take(&mut line));
             line.push_str(indent);
+            line_width = width(indent);
             empty = true;
         }
         if !empty {
             line.push(' ');
+            line_width += 1;
         }
         line.push_str(word);
+        line_width += word_width;
         empty = false;
     }
     if !empty {

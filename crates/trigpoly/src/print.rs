@@ -89,18 +89,24 @@ pub(crate) fn render_terms(vars: &VarSet, terms: &[CosSinTerm], style: Style) ->
                 push_signed(&mut out, neg, &body, style);
             }
         } else {
-            let mut inner = String::new();
+            // `(inner) factor`, written in place: the inner sum can run to megabytes.
+            push_signed(&mut out, false, "", style);
+            out.push_str(if style == Style::Latex {
+                r"\left("
+            } else {
+                "("
+            });
+            let start = out.len();
             for t in group {
                 let (neg, body) = render_term(vars, &t.coeff, &t.exps, None, style);
-                push_signed(&mut inner, neg, &body, style);
+                push_signed_after(&mut out, start, neg, &body, style);
             }
-            let factor = render_trig(vars, trig, style);
-            let body = match style {
-                Style::Ascii => format!("({inner})*{factor}"),
-                Style::Latex => format!(r"\left({inner}\right) {factor}"),
-                Style::Unicode => format!("({inner}) {factor}"),
-            };
-            push_signed(&mut out, false, &body, style);
+            out.push_str(match style {
+                Style::Ascii => ")*",
+                Style::Latex => r"\right) ",
+                Style::Unicode => ") ",
+            });
+            out.push_str(&render_trig(vars, trig, style));
         }
         k = end;
     }
@@ -115,7 +121,12 @@ fn minus(style: Style) -> &'static str {
 }
 
 fn push_signed(out: &mut String, negative: bool, body: &str, style: Style) {
-    match (out.is_empty(), negative) {
+    push_signed_after(out, 0, negative, body, style)
+}
+
+/// [`push_signed`] for a sum written into `out` from byte `start` on.
+fn push_signed_after(out: &mut String, start: usize, negative: bool, body: &str, style: Style) {
+    match (out.len() == start, negative) {
         (true, false) => {}
         (true, true) => out.push_str(minus(style)),
         (false, false) => out.push_str(" + "),

@@ -44,43 +44,67 @@ impl<C: Coefficient> Poly<C> {
         let n = self.vars.len();
         let layout = self.layout();
         let mut tables: FxHashMap<i64, Vec<(u32, u32, GaussianInteger)>> = FxHashMap::default();
-        // Keyed by the exponents (zero at the angles), then `(cos, sin)` powers per angle.
-        let mut sums: FxHashMap<Vec<i64>, GaussianAcc> =
+        for k in 0..self.len() {
+            for &j in &angles {
+                let multiple = layout.get(self.exp(k), j);
+                tables
+                    .entry(multiple)
+                    .or_insert_with(|| euler_power(multiple));
+            }
+        }
+        // The terms' monomials with the angles' exponents cleared, and their trigonometric
+        // monomials (`(cos, sin)` powers per angle), each numbered once, and the sums keyed by
+        // the two numbers: a hash of two words per sum, where a vector of every exponent took
+        // a hash of the vector and an allocation.
+        let mut groups = Numbering::<i64>::default();
+        let mut trigs = Numbering::<u32>::default();
+        let mut powers = vec![0u32; 2 * angles.len()];
+        // The sums, found by their keys: a map of small entries, which grows by moving those
+        // rather than the accumulators.
+        let mut index: FxHashMap<(u32, u32), u32> =
             FxHashMap::with_capacity_and_hasher(self.len(), Default::default());
-        let mut key = vec![0i64; n + 2 * angles.len()];
+        let mut sums: Vec<GaussianAcc> = Vec::with_capacity(self.len());
+        let mut exps = vec![0i64; n];
         let mut multiples = vec![0i64; angles.len()];
+        let mut choice = vec![0usize; angles.len()];
+        let mut rows: Vec<&[(u32, u32, GaussianInteger)]> = Vec::with_capacity(angles.len());
         for k in 0..self.len() {
             let m = self.exp(k);
-            for (j, e) in key[..n].iter_mut().enumerate() {
+            for (j, e) in exps.iter_mut().enumerate() {
                 *e = layout.get(m, j);
             }
+            rows.clear();
             for (kj, &j) in multiples.iter_mut().zip(&angles) {
-                *kj = std::mem::take(&mut key[j]);
-                tables.entry(*kj).or_insert_with(|| euler_power(*kj));
+                *kj = std::mem::take(&mut exps[j]);
+                rows.push(&tables[kj]);
             }
-            let rows: Vec<&[(u32, u32, GaussianInteger)]> =
-                multiples.iter().map(|kj| tables[kj].as_slice()).collect();
+            let group = groups.number(&exps);
             let coeff = self.coeffs[k].to_gaussian_integer();
             // Every choice of one entry per angle's table (an odometer over the rows).
-            let mut choice = vec![0usize; rows.len()];
+            choice.fill(0);
             loop {
-                let mut factor: Option<GaussianInteger> = None;
-                for (a, (row, &i)) in rows.iter().zip(&choice).enumerate() {
-                    let (cos, sin, ref g) = row[i];
-                    key[n + 2 * a] = i64::from(cos);
-                    key[n + 2 * a + 1] = i64::from(sin);
-                    factor = Some(match factor {
-                        None => g.clone(),
-                        Some(f) => IntegerRing::mul(&f, g),
-                    });
+                for ((row, &i), power) in rows.iter().zip(&choice).zip(powers.chunks_exact_mut(2)) {
+                    (power[0], power[1]) = (row[i].0, row[i].1);
                 }
-                let acc = match sums.get_mut(key.as_slice()) {
-                    Some(acc) => acc,
-                    None => sums.entry(key.clone()).or_default(),
-                };
-                match &factor {
-                    Some(f) => acc.add_mul(&coeff, f),
-                    None => acc.add(&coeff),
+                let trig = trigs.number(&powers);
+                let slot = *index.entry((group, trig)).or_insert_with(|| {
+                    sums.push(GaussianAcc::default());
+                    sums.len() as u32 - 1
+                });
+                let acc = &mut sums[slot as usize];
+                match rows.as_slice() {
+                    [] => acc.add(&coeff),
+                    [row] => acc.add_mul(&coeff, &row[choice[0]].2),
+                    _ => {
+                        let factor = rows
+                            .iter()
+                            .zip(&choice)
+                            .map(|(row, &i)| &row[i].2)
+                            .fold(GaussianInteger::from_integer(Integer::ONE), |f, g| {
+                                IntegerRing::mul(&f, g)
+                            });
+                        acc.add_mul(&coeff, &factor)
+                    }
                 }
                 let Some(a) = (0..rows.len())
                     .rev()
@@ -98,41 +122,85 @@ impl<C: Coefficient> Poly<C> {
             .filter(|&v| self.vars.variable(v).kind() == VarKind::Momentum)
             .map(|v| v.index())
             .collect();
-        let mut terms: Vec<(TrigKey, i64, CosSinTerm)> = sums
+        // The order of printing: trigonometric monomial first, then the momenta's degree and
+        // the exponents, both descending; each ranked once, so that a term sorts by two
+        // numbers (no two terms share both).
+        let trig_monomials: Vec<TrigMonomial> = trigs
+            .values
+            .iter()
+            .map(|powers| TrigMonomial {
+                powers: powers.chunks_exact(2).map(|p| (p[0], p[1])).collect(),
+            })
+            .collect();
+        let trig_rank = ranks(&trig_monomials, |t| t.sort_key());
+        let group_rank = ranks(&groups.values, |exps| {
+            let momentum_degree: i64 = momenta.iter().map(|&j| exps[j].abs()).sum();
+            std::cmp::Reverse((momentum_degree, exps.clone()))
+        });
+        let mut terms: Vec<(u64, CosSinTerm)> = index
             .into_iter()
-            .filter_map(|(mut exps, acc)| {
-                let sum = acc.finish();
+            .filter_map(|((group, trig), slot)| {
+                let sum = std::mem::take(&mut sums[slot as usize]).finish();
                 if sum.is_zero() {
                     return None;
                 }
-                let powers = exps[n..]
-                    .chunks_exact(2)
-                    .map(|p| (p[0] as u32, p[1] as u32));
-                let trig = TrigMonomial {
-                    powers: powers.collect(),
+                let (group, trig) = (group as usize, trig as usize);
+                let order = u64::from(trig_rank[trig]) << 32 | u64::from(group_rank[group]);
+                let term = CosSinTerm {
+                    coeff: GaussianRational::from_parts(&self.content, &sum),
+                    exps: groups.values[group].clone(),
+                    trig: trig_monomials[trig].clone(),
                 };
-                exps.truncate(n);
-                let momentum_degree = momenta.iter().map(|&j| exps[j].abs()).sum();
-                let coeff = GaussianRational::from_parts(&self.content, &sum);
-                Some((
-                    trig.sort_key(),
-                    momentum_degree,
-                    CosSinTerm { coeff, exps, trig },
-                ))
+                Some((order, term))
             })
             .collect();
-        // Trigonometric monomial first, then the momenta's degree and the exponents, both
-        // descending; no two terms share all three.
-        terms.sort_unstable_by(|x, y| {
-            x.0.cmp(&y.0)
-                .then_with(|| (y.1, &y.2.exps).cmp(&(x.1, &x.2.exps)))
-        });
-        terms.into_iter().map(|(_, _, term)| term).collect()
+        terms.sort_unstable_by_key(|t| t.0);
+        terms.into_iter().map(|(_, term)| term).collect()
     }
+}
+
+/// The rank of each item in the order of `key` (0 for the least).
+fn ranks<T, K: Ord>(items: &[T], key: impl Fn(&T) -> K) -> Vec<u32> {
+    let keys: Vec<K> = items.iter().map(key).collect();
+    let mut order: Vec<u32> = (0..items.len() as u32).collect();
+    order.sort_unstable_by(|&a, &b| keys[a as usize].cmp(&keys[b as usize]));
+    let mut rank = vec![0u32; items.len()];
+    for (r, &k) in order.iter().enumerate() {
+        rank[k as usize] = r as u32;
+    }
+    rank
 }
 
 /// [`TrigMonomial`]'s order, computed once per term.
 type TrigKey = (u32, Vec<(u32, u32)>);
+
+/// Distinct vectors numbered in the order they come: a vector is copied once, when it is new.
+struct Numbering<T> {
+    numbers: FxHashMap<Vec<T>, u32>,
+    values: Vec<Vec<T>>,
+}
+
+impl<T> Default for Numbering<T> {
+    fn default() -> Self {
+        Numbering {
+            numbers: FxHashMap::default(),
+            values: Vec::new(),
+        }
+    }
+}
+
+impl<T: Clone + Eq + std::hash::Hash> Numbering<T> {
+    /// The number of `v`, new if `v` has none yet.
+    fn number(&mut self, v: &[T]) -> u32 {
+        if let Some(&k) = self.numbers.get(v) {
+            return k;
+        }
+        let k = self.values.len() as u32;
+        self.values.push(v.to_vec());
+        self.numbers.insert(v.to_vec(), k);
+        k
+    }
+}
 
 fn check_angle<C: Coefficient>(vars: &VarSet, v: Var, what: &str) -> Result<(), AlgebraError> {
     if vars.variable(v).kind() != VarKind::Angle {
