@@ -330,3 +330,31 @@ fn high_trigonometric_powers_with_long_coefficients_print_exactly() {
     let text = f.to_ascii();
     assert!(text.contains(&format!("({lead}*p_x^9/11 + ")), "{text}");
 }
+
+/// Two angles: the cos/sin view sums each term of `e^{i(jθ + kφ)}`'s expansion under its
+/// monomial and its `cos^a θ sin^b θ cos^c φ sin^d φ`, both numbered once per element; the
+/// ASCII form of elements with long expansions in both angles parses back to the element, and
+/// a short one prints grouped by the trigonometric monomials in their order (fewer factors
+/// first, then by the powers of θ, lower first, a sine after a cosine, then those of φ).
+#[test]
+fn two_angles_print_grouped_and_parse_back() {
+    let vars = phase_space();
+    for src in [
+        "(cos(theta) + 2*sin(phi) + x)^4*(sin(theta) - cos(phi))^3",
+        "x^3*exp(3*i*theta - 2*i*phi) + p_x*exp(-5*i*phi) + y*exp(4*i*theta)",
+        "(x*cos(theta)*sin(phi) - p_x*sin(theta)*cos(phi))^5",
+    ] {
+        let f: G = p(&vars, src);
+        let text = f.to_ascii();
+        assert_eq!(p::<GaussianRational>(&vars, &text), f, "{src}");
+    }
+    prints(
+        &vars,
+        "x*sin(phi) + y*cos(theta) + x*cos(theta) + cos(theta)*cos(phi) + 3",
+        [
+            "3 + x sin φ + (x + y) cos θ + cos θ cos φ",
+            r"3 + x \sin\phi + \left(x + y\right) \cos\theta + \cos\theta \cos\phi",
+            "3 + x*sin(phi) + (x + y)*cos(theta) + cos(theta)*cos(phi)",
+        ],
+    );
+}
