@@ -77,6 +77,7 @@ pub(crate) fn render_terms(vars: &VarSet, terms: &[CosSinTerm], style: Style) ->
     if terms.is_empty() {
         return "0".into();
     }
+    let names = Names::new(vars, style);
     let mut out = String::new();
     let mut k = 0;
     while k < terms.len() {
@@ -85,7 +86,7 @@ pub(crate) fn render_terms(vars: &VarSet, terms: &[CosSinTerm], style: Style) ->
         let group = &terms[k..end];
         if trig.is_one() || group.len() == 1 {
             for t in group {
-                let (neg, body) = render_term(vars, &t.coeff, &t.exps, Some(&t.trig), style);
+                let (neg, body) = render_term(&names, &t.coeff, &t.exps, Some(&t.trig), style);
                 push_signed(&mut out, neg, &body, style);
             }
         } else {
@@ -98,7 +99,7 @@ pub(crate) fn render_terms(vars: &VarSet, terms: &[CosSinTerm], style: Style) ->
             });
             let start = out.len();
             for t in group {
-                let (neg, body) = render_term(vars, &t.coeff, &t.exps, None, style);
+                let (neg, body) = render_term(&names, &t.coeff, &t.exps, None, style);
                 push_signed_after(&mut out, start, neg, &body, style);
             }
             out.push_str(match style {
@@ -106,7 +107,7 @@ pub(crate) fn render_terms(vars: &VarSet, terms: &[CosSinTerm], style: Style) ->
                 Style::Latex => r"\right) ",
                 Style::Unicode => ") ",
             });
-            out.push_str(&render_trig(vars, trig, style));
+            out.push_str(&join(&trig_factors(&names, trig, style), style));
         }
         k = end;
     }
@@ -201,26 +202,51 @@ pub fn superscript(e: i64) -> String {
         .collect()
 }
 
-fn var_name(vars: &VarSet, j: usize, style: Style) -> String {
-    let v = vars.vars().nth(j).expect("index in range");
-    let var = vars.variable(v);
-    match style {
-        Style::Unicode => var.unicode().to_string(),
-        Style::Latex => var.latex().to_string(),
-        Style::Ascii => var.name().to_string(),
+/// The variables' names in one notation, and the order in which a term's factors are
+/// written, worked out once for all the terms of an element.
+struct Names {
+    /// The name of each variable, by index.
+    names: Vec<String>,
+    /// The variables as the paper orders a term's factors: parameters, then coordinates,
+    /// then momenta (then angles), each kind in declaration order.
+    order: Vec<usize>,
+    /// The angles' indices, in declaration order.
+    angles: Vec<usize>,
+}
+
+impl Names {
+    fn new(vars: &VarSet, style: Style) -> Self {
+        let names = vars
+            .vars()
+            .map(|v| {
+                let var = vars.variable(v);
+                match style {
+                    Style::Unicode => var.unicode().to_string(),
+                    Style::Latex => var.latex().to_string(),
+                    Style::Ascii => var.name().to_string(),
+                }
+            })
+            .collect();
+        let rank = |v: &crate::varset::Var| match vars.variable(*v).kind() {
+            VarKind::Parameter => 0,
+            VarKind::Coordinate => 1,
+            VarKind::Momentum => 2,
+            VarKind::Angle => 3,
+        };
+        let mut order: Vec<crate::varset::Var> = vars.vars().collect();
+        order.sort_by_key(rank);
+        Names {
+            names,
+            order: order.iter().map(|v| v.index()).collect(),
+            angles: vars.angles().map(|v| v.index()).collect(),
+        }
     }
 }
 
-fn render_trig(vars: &VarSet, trig: &TrigMonomial, style: Style) -> String {
-    let factors = trig_factors(vars, trig, style);
-    join(&factors, style)
-}
-
-fn trig_factors(vars: &VarSet, trig: &TrigMonomial, style: Style) -> Vec<Factor> {
-    let angles: Vec<usize> = vars.angles().map(|v| v.index()).collect();
+fn trig_factors(names: &Names, trig: &TrigMonomial, style: Style) -> Vec<Factor> {
     let mut out = Vec::new();
-    for (&j, &(a, b)) in angles.iter().zip(&trig.powers) {
-        let name = var_name(vars, j, style);
+    for (&j, &(a, b)) in names.angles.iter().zip(&trig.powers) {
+        let name = &names.names[j];
         for (fun, e) in [("cos", a), ("sin", b)] {
             if e == 0 {
                 continue;
@@ -239,8 +265,8 @@ fn trig_factors(vars: &VarSet, trig: &TrigMonomial, style: Style) -> Vec<Factor>
 }
 
 /// Renders `coeff · Π v^e · trig` as (is it negative, text without the sign).
-pub(crate) fn render_term(
-    vars: &VarSet,
+fn render_term(
+    names: &Names,
     coeff: &GaussianRational,
     exps: &[i64],
     trig: Option<&TrigMonomial>,
@@ -274,21 +300,12 @@ pub(crate) fn render_term(
             wide: false,
         });
     }
-    // Factors as the paper orders them: parameters, then coordinates, then momenta.
-    let rank = |j: &usize| match vars.variable(vars.vars().nth(*j).expect("in range")).kind() {
-        VarKind::Parameter => 0,
-        VarKind::Coordinate => 1,
-        VarKind::Momentum => 2,
-        VarKind::Angle => 3,
-    };
-    let mut order: Vec<usize> = (0..exps.len()).filter(|&j| exps[j] != 0).collect();
-    order.sort_by_key(rank);
-    for j in order {
+    for &j in names.order.iter().filter(|&&j| exps[j] != 0) {
         let e = exps[j];
-        let name = var_name(vars, j, style);
+        let name = &names.names[j];
         let wide = style == Style::Unicode && name.chars().count() > 1;
         let f = Factor {
-            text: power(&name, e.abs(), style),
+            text: power(name, e.abs(), style),
             wide,
         };
         if e > 0 {
@@ -298,7 +315,7 @@ pub(crate) fn render_term(
         }
     }
     if let Some(t) = trig {
-        num.extend(trig_factors(vars, t, style));
+        num.extend(trig_factors(names, t, style));
     }
     let numer = if num.is_empty() {
         "1".to_string()
