@@ -2,10 +2,11 @@
 //! `f·(f + 1)` (dense); for n = 20 it has C(44, 4) = 135751 terms, n = 10 (10626 terms) runs
 //! quickly. And a sparse square whose term pairs meet on few monomials (the hashed product):
 //! `g = (x + y^7 + 2z^13 − t^23)^20`, 1771 terms, `g²` 3.1 M term pairs onto 12341 terms in a
-//! box of some 10¹¹ cells.
+//! box of some 10¹¹ cells; and over Q(i) with coefficients past a word, each real or
+//! imaginary, `(3x + 5iy^7 + 7z^13 − 11it^23)^20` squared (the 256-bit sums).
 
 use divan::{black_box, Bencher};
-use trigpoly::{Poly, Rational, VarSet, Vars};
+use trigpoly::{GaussianRational, Poly, Rational, VarSet, Vars};
 
 fn main() {
     divan::main();
@@ -70,6 +71,22 @@ fn meeting_square(bencher: Bencher) {
     let power = Q::parse(&vars, "(x + y^7 + 2*z^13 - t^23)^40").expect("parses");
     assert_eq!(square, power);
     assert_eq!(square.len(), 12341);
+    bencher.bench(|| {
+        black_box(&g)
+            .checked_mul(black_box(&g))
+            .expect("within the limits")
+    });
+}
+
+#[divan::bench(sample_count = 10, sample_size = 1)]
+fn meeting_square_past_a_word(bencher: Bencher) {
+    type G = Poly<GaussianRational>;
+    let vars = xyzt();
+    let g = G::parse(&vars, "(3*x + 5*i*y^7 + 7*z^13 - 11*i*t^23)^20").expect("parses");
+    assert_eq!(g.len(), 1771);
+    let square = g.checked_mul(&g).expect("within the limits");
+    let power = G::parse(&vars, "(3*x + 5*i*y^7 + 7*z^13 - 11*i*t^23)^40").expect("parses");
+    assert_eq!(square, power);
     bencher.bench(|| {
         black_box(&g)
             .checked_mul(black_box(&g))

@@ -275,7 +275,7 @@ struct Converted<W> {
     b: Vec<W>,
     /// The second factor's coefficients doubled (a square's pairs off the diagonal), or none.
     doubled: Vec<W>,
-    /// Bits of the largest coefficient of `a` plus those of `b` (doubled, for a square).
+    /// Bits of the largest coefficient of `a` plus those of the largest of `b`.
     bits: u32,
     /// Bits of the largest coefficient of either factor, doubled ones included.
     max_bits: u32,
