@@ -928,8 +928,8 @@ fn meeting_pair() -> impl Strategy<Value = (G, G)> {
     ];
     let coefficients = proptest::collection::vec((coeff.clone(), coeff), 286);
     let exponents = (5i64..40, 5i64..40, 5i64..40);
-    (exponents, any::<bool>(), coefficients.clone(), coefficients).prop_map(
-        move |((a, b, c), small, f, g)| {
+    (exponents, 0u8..3, coefficients.clone(), coefficients).prop_map(
+        move |((a, b, c), kind, f, g)| {
             let mut monomials = Vec::new();
             for i in 0..=10 {
                 for j in 0..=10 - i {
@@ -938,11 +938,19 @@ fn meeting_pair() -> impl Strategy<Value = (G, G)> {
                     }
                 }
             }
-            // Half the pairs small throughout, so that their sums stay in words.
+            // A third of the pairs small throughout, so that their sums stay in words; a third
+            // with each coefficient real or imaginary (the 256-bit sums, past words).
+            let small = kind == 0;
             let coefficient = |v: i64| Rational::from(if small { v % 50 } else { v });
+            let part = |(re, im): (i64, i64)| match (kind, (re ^ im) & 1) {
+                (2, 0) => (re, 0),
+                (2, _) => (0, im),
+                _ => (re, im),
+            };
             let poly = |cs: Vec<(i64, i64)>| {
                 let cs = cs
                     .into_iter()
+                    .map(part)
                     .map(|(re, im)| GaussianRational::new(coefficient(re), coefficient(im)));
                 Poly::from_terms(&vars, cs.zip(monomials.clone())).expect("small exponents")
             };
