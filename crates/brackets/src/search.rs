@@ -37,7 +37,7 @@
 //! # Ok::<(), brackets::EngineError>(())
 //! ```
 
-use std::collections::HashMap;
+use rustc_hash::FxHashMap;
 use std::time::Instant;
 
 use itertools::Itertools;
@@ -309,7 +309,7 @@ struct Problem {
     angles: Vec<Var>,
     unknowns: Vec<Unknown>,
     /// Unknown by (phase, k, trig).
-    index: HashMap<(Vec<i64>, Vec<i64>, Trig), usize>,
+    index: FxHashMap<(Vec<i64>, Vec<i64>, Trig), usize>,
     /// The fixed Hamiltonian and condition.
     h: Expr,
     condition: Option<Vec<(Var, Expr)>>,
@@ -560,7 +560,7 @@ impl Problem {
 
     /// The coordinates of a real function in the basis, if it lies in the space.
     fn coordinates(&self, f: &Expr) -> Option<SparseVec<Rational>> {
-        let mut out: HashMap<usize, Rational> = HashMap::new();
+        let mut out: FxHashMap<usize, Rational> = FxHashMap::default();
         for t in f.terms() {
             let e = t.exponents();
             let k: Vec<i64> = self.angles.iter().map(|v| e[v.index()]).collect();
@@ -722,7 +722,7 @@ pub fn search(system: &System, options: &SearchOptions) -> Result<SearchResult, 
     let n = problem.unknowns.len();
 
     // The images {φ_j, H} as real equations over Q.
-    let mut rows: HashMap<(Vec<i64>, bool), usize> = HashMap::new();
+    let mut rows: FxHashMap<(Vec<i64>, bool), usize> = FxHashMap::default();
     let mut columns: Vec<SparseVec<Rational>> = Vec::with_capacity(n);
     for j in 0..n {
         let image = problem.image(&problem.expr(j, &Rational::one())?)?;
@@ -760,7 +760,7 @@ pub fn search(system: &System, options: &SearchOptions) -> Result<SearchResult, 
             }
         }
     }
-    let mut groups: HashMap<usize, Vec<usize>> = HashMap::new();
+    let mut groups: FxHashMap<usize, Vec<usize>> = FxHashMap::default();
     for j in 0..n {
         let r = uf.find(j);
         groups.entry(r).or_default().push(j);
@@ -770,7 +770,7 @@ pub fn search(system: &System, options: &SearchOptions) -> Result<SearchResult, 
     let largest_component = groups.iter().map(Vec::len).max().unwrap_or(0);
     let mut kernel: Vec<SparseVec<Rational>> = Vec::new();
     for g in &groups {
-        let mut local_row: HashMap<usize, usize> = HashMap::new();
+        let mut local_row: FxHashMap<usize, usize> = FxHashMap::default();
         let cols: Vec<SparseVec<Rational>> = g
             .iter()
             .map(|&j| {
@@ -1155,7 +1155,7 @@ fn new_integrals(
                 Some(dep) => {
                     // Independence modulo p is certain; a dependency is checked over Q.
                     let coeffs = modular::reconstruct_vec(&dep)?;
-                    let mut acc: HashMap<usize, Rational> = HashMap::new();
+                    let mut acc: FxHashMap<usize, Rational> = FxHashMap::default();
                     for (id, c) in &coeffs {
                         for (i, x) in inserted[*id] {
                             *acc.entry(*i).or_insert_with(Rational::zero) += c * x;
