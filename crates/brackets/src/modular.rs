@@ -324,10 +324,13 @@ impl<F: Field> Echelon<F> {
     /// Reduces `v` by the basis: the residue (by increasing index) and the combination of
     /// inserted vectors that was subtracted (by increasing identifier).
     fn reduce(&self, v: &SparseVec<F>) -> (SparseVec<F>, SparseVec<F>) {
+        // Checked before any is added, so that the scratch stays zero.
+        if let Some((i, _)) = v.iter().find(|(i, _)| *i >= self.dim) {
+            panic!("index {i} out of range {}", self.dim);
+        }
         let mut scratch = self.scratch.borrow_mut();
         let (acc, combo) = &mut *scratch;
         for (i, x) in v {
-            assert!(*i < self.dim, "index {i} out of range {}", self.dim);
             acc.add(*i, x);
         }
         // Rows were reduced by all earlier rows when inserted, so reducing in insertion order
