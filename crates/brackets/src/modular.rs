@@ -19,8 +19,8 @@
 //! assert_eq!(e.rank(), 2);
 //! ```
 
-use std::cell::RefCell;
 use std::fmt::Debug;
+use std::sync::{Mutex, PoisonError};
 
 use num_bigint::BigInt;
 use num_integer::Integer as _;
@@ -247,19 +247,31 @@ struct Row<F> {
 /// vectors kept between calls and read back only the entries they touched, so that an insertion
 /// costs what the rows it subtracts hold, not the dimension nor the number of vectors so far: a
 /// search at degree 7 inserts tens of thousands of short vectors.
-#[derive(Clone, Debug)]
+#[derive(Debug)]
 pub struct Echelon<F> {
     dim: usize,
     rows: Vec<Row<F>>,
     /// For each index, the basis row whose pivot it is.
     pivot_row: Vec<Option<usize>>,
-    /// The residue of a reduction, by index, and its combination, by identifier.
-    scratch: RefCell<(Accumulator<F>, Accumulator<F>)>,
+    /// The residue of a reduction, by index, and its combination, by identifier (behind a
+    /// lock, so that a basis shared between threads answers `contains` and `express`).
+    scratch: Mutex<(Accumulator<F>, Accumulator<F>)>,
+}
+
+impl<F: Field> Clone for Echelon<F> {
+    fn clone(&self) -> Self {
+        Echelon {
+            dim: self.dim,
+            rows: self.rows.clone(),
+            pivot_row: self.pivot_row.clone(),
+            scratch: Mutex::new((Accumulator::new(), Accumulator::new())),
+        }
+    }
 }
 
 /// A sparse vector summed in a dense one that is zero between sums (grown as indices need),
 /// with the indices touched since.
-#[derive(Clone, Debug)]
+#[derive(Debug)]
 struct Accumulator<F> {
     dense: Vec<F>,
     touched: Vec<usize>,
@@ -312,7 +324,7 @@ impl<F: Field> Echelon<F> {
             dim,
             rows: Vec::new(),
             pivot_row: vec![None; dim],
-            scratch: RefCell::new((Accumulator::new(), Accumulator::new())),
+            scratch: Mutex::new((Accumulator::new(), Accumulator::new())),
         }
     }
 
@@ -328,7 +340,9 @@ impl<F: Field> Echelon<F> {
         if let Some((i, _)) = v.iter().find(|(i, _)| *i >= self.dim) {
             panic!("index {i} out of range {}", self.dim);
         }
-        let mut scratch = self.scratch.borrow_mut();
+        // Nothing panics while the lock is held (the indices are checked above), so a poisoned
+        // lock still holds zero scratch vectors.
+        let mut scratch = self.scratch.lock().unwrap_or_else(PoisonError::into_inner);
         let (acc, combo) = &mut *scratch;
         for (i, x) in v {
             acc.add(*i, x);
@@ -520,7 +534,7 @@ mod tests {
     /// cancel entries and touch them again): every dependency returned adds up to its vector,
     /// every independent vector raises the rank, and the span answers `contains` and
     /// `express` for combinations and for vectors outside it, the scratch vectors clean
-    /// between calls.
+    /// between calls, also from two threads at once.
     #[test]
     fn dependencies_add_up_and_the_span_is_the_inserted_vectors() {
         let mut x = 0x2545_F491_4F6C_DD1Du64;
@@ -575,6 +589,12 @@ mod tests {
             assert_eq!(combine(&c, &inserted), w);
         }
         assert_eq!(e.rank(), dim);
+        // A basis shared between threads answers queries from each.
+        let (first, second) = (inserted[0].clone(), inserted[1].clone());
+        std::thread::scope(|s| {
+            s.spawn(|| assert!(e.contains(&first)));
+            s.spawn(|| assert!(e.express(&second).is_some()));
+        });
         let mut small = Echelon::<Fp>::new(3);
         small.insert(0, &vec![(0, Fp(1))]);
         assert!(!small.contains(&vec![(1, Fp(1))]));
