@@ -86,8 +86,7 @@ pub(crate) fn render_terms(vars: &VarSet, terms: &[CosSinTerm], style: Style) ->
         let group = &terms[k..end];
         if trig.is_one() || group.len() == 1 {
             for t in group {
-                let (neg, body) = render_term(&names, &t.coeff, &t.exps, Some(&t.trig), style);
-                push_signed(&mut out, neg, &body, style);
+                write_term(&mut out, 0, &names, t, Some(&t.trig), style);
             }
         } else {
             // `(inner) factor`, written in place: the inner sum can run to megabytes.
@@ -99,15 +98,14 @@ pub(crate) fn render_terms(vars: &VarSet, terms: &[CosSinTerm], style: Style) ->
             });
             let start = out.len();
             for t in group {
-                let (neg, body) = render_term(&names, &t.coeff, &t.exps, None, style);
-                push_signed_after(&mut out, start, neg, &body, style);
+                write_term(&mut out, start, &names, t, None, style);
             }
             out.push_str(match style {
                 Style::Ascii => ")*",
                 Style::Latex => r"\right) ",
                 Style::Unicode => ") ",
             });
-            out.push_str(&join(&trig_factors(&names, trig, style), style));
+            write_trig_factors(&mut out, &mut Product::new(style), &names, trig);
         }
         k = end;
     }
@@ -140,46 +138,55 @@ fn push_signed_after(out: &mut String, start: usize, negative: bool, body: &str,
     out.push_str(body);
 }
 
-/// One factor of a product, with whether it is "wide" (needs spaces around it in text).
-struct Factor {
-    text: String,
+/// A product written factor by factor: `*` between factors in ASCII, a space in LaTeX, and in
+/// text a space where either neighbour is "wide" (a word, a name of several letters:
+/// `2 cos θ`, `Mω²x`).
+struct Product {
+    style: Style,
+    factors: usize,
     wide: bool,
 }
 
-fn join(factors: &[Factor], style: Style) -> String {
-    let mut s = String::new();
-    for (k, f) in factors.iter().enumerate() {
-        if k > 0 {
-            match style {
-                Style::Ascii => s.push('*'),
-                Style::Latex => s.push(' '),
-                Style::Unicode => {
-                    if f.wide || factors[k - 1].wide {
-                        s.push(' ');
-                    }
-                }
+impl Product {
+    fn new(style: Style) -> Self {
+        Product {
+            style,
+            factors: 0,
+            wide: false,
+        }
+    }
+
+    /// Writes what separates the next factor (`wide` or not) from the one before, if any.
+    fn next(&mut self, out: &mut String, wide: bool) {
+        if self.factors > 0 {
+            match self.style {
+                Style::Ascii => out.push('*'),
+                Style::Latex => out.push(' '),
+                Style::Unicode if wide || self.wide => out.push(' '),
+                Style::Unicode => {}
             }
         }
-        s.push_str(&f.text);
+        self.factors += 1;
+        self.wide = wide;
     }
-    s
 }
 
-fn power(base: &str, e: i64, style: Style) -> String {
+/// `base^e` (`e ≥ 1`) in the notation of `style`.
+fn write_power(out: &mut String, base: &str, e: i64, style: Style) {
+    out.push_str(base);
     if e == 1 {
-        return base.to_string();
+        return;
     }
     match style {
-        Style::Unicode => format!("{base}{}", superscript(e)),
-        Style::Latex => format!("{base}^{{{e}}}"),
-        Style::Ascii => {
-            if e < 0 {
-                format!("{base}^({e})")
-            } else {
-                format!("{base}^{e}")
-            }
-        }
+        Style::Unicode => out.push_str(&superscript(e)),
+        Style::Latex => write_display(out, format_args!("^{{{e}}}")),
+        Style::Ascii => write_display(out, format_args!("^{e}")),
     }
+}
+
+/// Appends formatted text (writing to a `String` cannot fail).
+fn write_display(out: &mut String, args: fmt::Arguments<'_>) {
+    let _ = fmt::Write::write_fmt(out, args);
 }
 
 /// `-12` → `⁻¹²`.
@@ -243,95 +250,103 @@ impl Names {
     }
 }
 
-fn trig_factors(names: &Names, trig: &TrigMonomial, style: Style) -> Vec<Factor> {
-    let mut out = Vec::new();
+/// The factors `cos^a θ sin^b θ` of a trigonometric monomial, each wide, into `product`.
+fn write_trig_factors(out: &mut String, product: &mut Product, names: &Names, trig: &TrigMonomial) {
+    let style = product.style;
     for (&j, &(a, b)) in names.angles.iter().zip(&trig.powers) {
         let name = &names.names[j];
         for (fun, e) in [("cos", a), ("sin", b)] {
             if e == 0 {
                 continue;
             }
-            let text = match style {
-                Style::Unicode if e == 1 => format!("{fun} {name}"),
-                Style::Unicode => format!("{fun}{}{name}", superscript(e as i64)),
-                Style::Latex if e == 1 => format!(r"\{fun}{name}"),
-                Style::Latex => format!(r"\{fun}^{{{e}}}{name}"),
-                Style::Ascii => power(&format!("{fun}({name})"), e as i64, style),
-            };
-            out.push(Factor { text, wide: true });
+            product.next(out, true);
+            match style {
+                Style::Unicode if e == 1 => write_display(out, format_args!("{fun} {name}")),
+                Style::Unicode => {
+                    write_display(out, format_args!("{fun}{}{name}", superscript(e as i64)))
+                }
+                Style::Latex if e == 1 => write_display(out, format_args!(r"\{fun}{name}")),
+                Style::Latex => write_display(out, format_args!(r"\{fun}^{{{e}}}{name}")),
+                Style::Ascii => {
+                    write_display(out, format_args!("{fun}({name})"));
+                    if e != 1 {
+                        write_display(out, format_args!("^{e}"));
+                    }
+                }
+            }
         }
     }
-    out
 }
 
-/// Renders `coeff · Π v^e · trig` as (is it negative, text without the sign).
-fn render_term(
+/// Writes the term `coeff · Π v^e · trig` of a sum written from byte `start` of `out` on: its
+/// sign or the ` + ` before it, then its text, factor by factor, with no string of its own.
+fn write_term(
+    out: &mut String,
+    start: usize,
     names: &Names,
-    coeff: &GaussianRational,
-    exps: &[i64],
+    term: &CosSinTerm,
     trig: Option<&TrigMonomial>,
     style: Style,
-) -> (bool, String) {
+) {
+    let (coeff, exps) = (&term.coeff, &term.exps);
     let (negative, num_int, den_int, complex) = split_coeff(coeff, style);
-    let mut num: Vec<Factor> = Vec::new();
-    let mut den: Vec<Factor> = Vec::new();
+    push_signed_after(out, start, negative, "", style);
+    let denominators =
+        usize::from(!den_int.is_one()) + names.order.iter().filter(|&&j| exps[j] < 0).count();
+    if style == Style::Latex && denominators > 0 {
+        out.push_str(r"\frac{");
+    }
+    let mut numerator = Product::new(style);
     if let Some(c) = complex {
-        num.push(Factor {
-            text: c,
-            wide: true,
-        });
+        numerator.next(out, true);
+        out.push_str(&c);
     } else {
         if !num_int.is_one() {
-            num.push(Factor {
-                text: num_int.to_string(),
-                wide: false,
-            });
+            numerator.next(out, false);
+            write_display(out, format_args!("{num_int}"));
         }
         if !coeff.im.is_zero() {
-            num.push(Factor {
-                text: "i".into(),
-                wide: false,
-            });
+            numerator.next(out, false);
+            out.push('i');
         }
     }
-    if !den_int.is_one() {
-        den.push(Factor {
-            text: den_int.to_string(),
-            wide: false,
-        });
-    }
-    for &j in names.order.iter().filter(|&&j| exps[j] != 0) {
-        let e = exps[j];
-        let name = &names.names[j];
-        let wide = style == Style::Unicode && name.chars().count() > 1;
-        let f = Factor {
-            text: power(name, e.abs(), style),
-            wide,
-        };
-        if e > 0 {
-            num.push(f);
-        } else {
-            den.push(f);
+    let variables = |out: &mut String, product: &mut Product, positive: bool| {
+        for &j in names
+            .order
+            .iter()
+            .filter(|&&j| exps[j] != 0 && (exps[j] > 0) == positive)
+        {
+            let name = &names.names[j];
+            product.next(out, style == Style::Unicode && name.chars().count() > 1);
+            write_power(out, name, exps[j].abs(), style);
         }
-    }
+    };
+    variables(out, &mut numerator, true);
     if let Some(t) = trig {
-        num.extend(trig_factors(names, t, style));
+        write_trig_factors(out, &mut numerator, names, t);
     }
-    let numer = if num.is_empty() {
-        "1".to_string()
-    } else {
-        join(&num, style)
-    };
-    if den.is_empty() {
-        return (negative, numer);
+    if numerator.factors == 0 {
+        out.push('1');
     }
-    let denom = join(&den, style);
-    let text = match style {
-        Style::Latex => format!(r"\frac{{{numer}}}{{{denom}}}"),
-        _ if den.len() == 1 => format!("{numer}/{denom}"),
-        _ => format!("{numer}/({denom})"),
-    };
-    (negative, text)
+    if denominators == 0 {
+        return;
+    }
+    match style {
+        Style::Latex => out.push_str("}{"),
+        _ if denominators == 1 => out.push('/'),
+        _ => out.push_str("/("),
+    }
+    let mut denominator = Product::new(style);
+    if !den_int.is_one() {
+        denominator.next(out, false);
+        write_display(out, format_args!("{den_int}"));
+    }
+    variables(out, &mut denominator, false);
+    match style {
+        Style::Latex => out.push('}'),
+        _ if denominators > 1 => out.push(')'),
+        _ => {}
+    }
 }
 
 /// `(negative, |numerator|, denominator, general complex text)` of a coefficient.
