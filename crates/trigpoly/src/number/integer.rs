@@ -763,6 +763,14 @@ impl Wide256 {
     /// products fits an `i128` or a `u128`.
     #[inline(always)]
     pub(crate) fn add_mul(&mut self, x: i128, y: i128) {
+        // Factors that fit a word (most, in most sums): one product, sign-extended.
+        if i128::from(x as i64) == x && i128::from(y as i64) == y {
+            let p = x * y;
+            let (low, carry) = self.low.overflowing_add(p as u128);
+            self.low = low;
+            self.high = self.high.wrapping_add(i128::from(carry) + (p >> 127));
+            return;
+        }
         let (x1, x0) = (i128::from((x >> 64) as i64), x as u64);
         let (y1, y0) = (i128::from((y >> 64) as i64), y as u64);
         let (low, carry) = self.low.overflowing_add(u128::from(x0) * u128::from(y0));
