@@ -130,7 +130,11 @@ struct Sum<A> {
 /// `FxHashMap` of the same sums took 5 % more time for the rank's minors and 13 % more for the
 /// closure's square.
 struct Table<A> {
-    sums: Vec<Sum<A>>,
+    /// The sums' monomials, apart from the sums themselves, so that a probe compares in a
+    /// small array that stays in the L1 cache (8 bytes a monomial, where a sum is 32 to 144).
+    keys: Vec<u64>,
+    pairs: Vec<(u32, u32)>,
+    accs: Vec<A>,
     slots: Vec<u32>,
     shift: u32,
 }
@@ -139,7 +143,9 @@ impl<A: Default> Table<A> {
     fn with_slots(slots: usize) -> Self {
         debug_assert!(slots.is_power_of_two());
         Table {
-            sums: Vec::with_capacity(slots / 2),
+            keys: Vec::with_capacity(slots / 2),
+            pairs: Vec::with_capacity(slots / 2),
+            accs: Vec::with_capacity(slots / 2),
             slots: vec![0; slots],
             shift: 64 - slots.trailing_zeros(),
         }
@@ -147,6 +153,11 @@ impl<A: Default> Table<A> {
 
     fn slot_of(&self, key: u64) -> usize {
         (key.wrapping_mul(0x9E37_79B9_7F4A_7C15) >> self.shift) as usize
+    }
+
+    /// How many monomials the table holds.
+    fn len(&self) -> usize {
+        self.keys.len()
     }
 
     /// The sum of `key`, new (from `pair`) when the key has none yet.
@@ -157,23 +168,21 @@ impl<A: Default> Table<A> {
         loop {
             match self.slots[slot] {
                 0 => {
-                    if 2 * (self.sums.len() + 1) >= self.slots.len() {
+                    if 2 * (self.len() + 1) >= self.slots.len() {
                         self.grow();
                         return self.sum(key, pair);
                     }
-                    self.sums.push(Sum {
-                        key,
-                        pair,
-                        acc: A::default(),
-                    });
-                    self.slots[slot] = self.sums.len() as u32;
-                    let last = self.sums.len() - 1;
-                    return &mut self.sums[last].acc;
+                    self.keys.push(key);
+                    self.pairs.push(pair);
+                    self.accs.push(A::default());
+                    self.slots[slot] = self.len() as u32;
+                    let last = self.len() - 1;
+                    return &mut self.accs[last];
                 }
                 k => {
                     let k = k as usize - 1;
-                    if self.sums[k].key == key {
-                        return &mut self.sums[k].acc;
+                    if self.keys[k] == key {
+                        return &mut self.accs[k];
                     }
                 }
             }
@@ -188,8 +197,8 @@ impl<A: Default> Table<A> {
         self.slots = vec![0; slots];
         self.shift = 64 - slots.trailing_zeros();
         let mask = slots - 1;
-        for (k, s) in self.sums.iter().enumerate() {
-            let mut slot = self.slot_of(s.key);
+        for (k, &key) in self.keys.iter().enumerate() {
+            let mut slot = self.slot_of(key);
             while self.slots[slot] != 0 {
                 slot = (slot + 1) & mask;
             }
@@ -198,9 +207,11 @@ impl<A: Default> Table<A> {
     }
 
     /// The sums, the table emptied for the next chunk.
-    fn drain(&mut self) -> std::vec::Drain<'_, Sum<A>> {
+    fn drain(&mut self) -> impl Iterator<Item = Sum<A>> + '_ {
         self.slots.fill(0);
-        self.sums.drain(..)
+        let keys = self.keys.drain(..).zip(self.pairs.drain(..));
+        keys.zip(self.accs.drain(..))
+            .map(|((key, pair), acc)| Sum { key, pair, acc })
     }
 }
 
@@ -391,7 +402,7 @@ fn chunked<A: Default, I>(
             }
             *next = start + run;
         }
-        if out.coeffs.len() + table.sums.len() > max_terms {
+        if out.coeffs.len() + table.len() > max_terms {
             return None;
         }
         drain(&mut table, &mut out);
