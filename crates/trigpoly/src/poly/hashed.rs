@@ -117,8 +117,8 @@ fn mix(j: u64) -> u64 {
     z ^ (z >> 31)
 }
 
-/// One monomial of the table: its index, one pair of factor terms whose product it is, and
-/// the sum so far.
+/// One monomial of the table as it is drained: its index, one pair of factor terms whose
+/// product it is, and its sum.
 struct Sum<A> {
     key: u64,
     pair: (u32, u32),
