@@ -90,7 +90,7 @@ pub(crate) fn render_terms(vars: &VarSet, terms: &[CosSinTerm], style: Style) ->
             }
         } else {
             // `(inner) factor`, written in place: the inner sum can run to megabytes.
-            push_signed(&mut out, false, "", style);
+            push_sign(&mut out, 0, false, style);
             out.push_str(if style == Style::Latex {
                 r"\left("
             } else {
@@ -119,12 +119,9 @@ fn minus(style: Style) -> &'static str {
     }
 }
 
-fn push_signed(out: &mut String, negative: bool, body: &str, style: Style) {
-    push_signed_after(out, 0, negative, body, style)
-}
-
-/// [`push_signed`] for a sum written into `out` from byte `start` on.
-fn push_signed_after(out: &mut String, start: usize, negative: bool, body: &str, style: Style) {
+/// The sign of the next term of a sum written into `out` from byte `start` on: `−` before a
+/// negative first term, ` + ` or ` − ` between terms.
+fn push_sign(out: &mut String, start: usize, negative: bool, style: Style) {
     match (out.len() == start, negative) {
         (true, false) => {}
         (true, true) => out.push_str(minus(style)),
@@ -135,7 +132,6 @@ fn push_signed_after(out: &mut String, start: usize, negative: bool, body: &str,
             out.push(' ');
         }
     }
-    out.push_str(body);
 }
 
 /// A product written factor by factor: `*` between factors in ASCII, a space in LaTeX, and in
@@ -174,6 +170,11 @@ impl Product {
 /// `base^e` (`e ≥ 1`) in the notation of `style`.
 fn write_power(out: &mut String, base: &str, e: i64, style: Style) {
     out.push_str(base);
+    write_exponent(out, e, style);
+}
+
+/// The exponent `e ≥ 1` of a power, nothing for 1: `²`, `^{2}`, `^2`.
+fn write_exponent(out: &mut String, e: i64, style: Style) {
     if e == 1 {
         return;
     }
@@ -260,20 +261,21 @@ fn write_trig_factors(out: &mut String, product: &mut Product, names: &Names, tr
                 continue;
             }
             product.next(out, true);
-            match style {
-                Style::Unicode if e == 1 => write_display(out, format_args!("{fun} {name}")),
-                Style::Unicode => {
-                    write_display(out, format_args!("{fun}{}{name}", superscript(e as i64)))
-                }
-                Style::Latex if e == 1 => write_display(out, format_args!(r"\{fun}{name}")),
-                Style::Latex => write_display(out, format_args!(r"\{fun}^{{{e}}}{name}")),
-                Style::Ascii => {
-                    write_display(out, format_args!("{fun}({name})"));
-                    if e != 1 {
-                        write_display(out, format_args!("^{e}"));
-                    }
-                }
+            // `cos²θ`, `cos θ`, `\cos^{2}\theta`; `cos(theta)^2`.
+            if style == Style::Ascii {
+                write_display(out, format_args!("{fun}({name})"));
+                write_exponent(out, e.into(), style);
+                continue;
             }
+            if style == Style::Latex {
+                out.push('\\');
+            }
+            out.push_str(fun);
+            write_exponent(out, e.into(), style);
+            if style == Style::Unicode && e == 1 {
+                out.push(' ');
+            }
+            out.push_str(name);
         }
     }
 }
@@ -290,7 +292,7 @@ fn write_term(
 ) {
     let (coeff, exps) = (&term.coeff, &term.exps);
     let (negative, num_int, den_int, complex) = split_coeff(coeff, style);
-    push_signed_after(out, start, negative, "", style);
+    push_sign(out, start, negative, style);
     let denominators =
         usize::from(!den_int.is_one()) + names.order.iter().filter(|&&j| exps[j] < 0).count();
     if style == Style::Latex && denominators > 0 {

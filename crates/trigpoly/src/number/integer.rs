@@ -757,10 +757,10 @@ pub(crate) struct Wide256 {
 }
 
 impl Wide256 {
-    /// `self += x·y` without a branch, modulo 2²⁵⁶ (exact when the sum fits, which the caller
-    /// guarantees; a partial sum may wrap on the way). The factors are split at 64 bits,
-    /// `x = x₁·2⁶⁴ + x₀` with `x₁` signed and `x₀` not, so that each of the four partial
-    /// products fits an `i128` or a `u128`.
+    /// `self += x·y` modulo 2²⁵⁶ (exact when the sum fits, which the caller guarantees; a
+    /// partial sum may wrap on the way). Factors that both fit a word take one product;
+    /// others are split at 64 bits, `x = x₁·2⁶⁴ + x₀` with `x₁` signed and `x₀` not, so that
+    /// each of the four partial products fits an `i128` or a `u128`.
     #[inline(always)]
     pub(crate) fn add_mul(&mut self, x: i128, y: i128) {
         // Factors that fit a word (most, in most sums): one product, sign-extended.
@@ -805,24 +805,11 @@ impl Wide256 {
         }
     }
 
-    /// `x·y` (at most `2²⁵⁴` in magnitude, so it always fits).
+    /// `x·y` (at most `2²⁵⁴` in magnitude, so it always fits): the multiply-add from zero.
     fn product(x: i128, y: i128) -> Wide256 {
-        let (a, b) = (x.unsigned_abs(), y.unsigned_abs());
-        let (a1, a0) = (a >> 64, a & u128::from(u64::MAX));
-        let (b1, b0) = (b >> 64, b & u128::from(u64::MAX));
-        // Each cross product is below 2¹²⁷, so their sum fits.
-        let cross = a0 * b1 + a1 * b0;
-        let (low, low_carry) = (a0 * b0).overflowing_add(cross << 64);
-        let high = a1 * b1 + (cross >> 64) + u128::from(low_carry);
-        let magnitude = Wide256 {
-            low,
-            high: high as i128,
-        };
-        if (x < 0) != (y < 0) {
-            magnitude.negated()
-        } else {
-            magnitude
-        }
+        let mut p = Wide256::default();
+        p.add_mul(x, y);
+        p
     }
 
     /// `−self` (never overflows for a product's magnitude, below `2²⁵⁴`).

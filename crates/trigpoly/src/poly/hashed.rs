@@ -228,7 +228,7 @@ impl<A: Default> Table<A> {
 /// machine words: a table entry is 32 bytes over Z and 48 over Z\[i\], and a product one
 /// multiply-add. When every coefficient is real or imaginary and fits an `i128` (each of
 /// `Z^m e^{−inθ}`'s is), and no sum can pass 255 bits, a product is one real product, added
-/// to the real or the imaginary part of a pair of 256-bit sums without a branch: the squares
+/// to the real or the imaginary part (chosen without a branch) of a pair of 256-bit sums: the squares
 /// of the closure's resonant integrals, whose 70-bit coefficients spilled the accumulators to
 /// their 256-bit tier a product at a time. Otherwise each sum is the ring's accumulator,
 /// which spills past 256 bits when it must.

@@ -65,7 +65,6 @@ impl<C: Coefficient> Poly<C> {
             FxHashMap::with_capacity_and_hasher(self.len(), Default::default());
         let mut sums: Vec<GaussianAcc> = Vec::with_capacity(self.len());
         let mut exps = vec![0i64; n];
-        let mut multiples = vec![0i64; angles.len()];
         let mut choice = vec![0usize; angles.len()];
         let mut rows: Vec<&[(u32, u32, GaussianInteger)]> = Vec::with_capacity(angles.len());
         for k in 0..self.len() {
@@ -74,9 +73,8 @@ impl<C: Coefficient> Poly<C> {
                 *e = layout.get(m, j);
             }
             rows.clear();
-            for (kj, &j) in multiples.iter_mut().zip(&angles) {
-                *kj = std::mem::take(&mut exps[j]);
-                rows.push(&tables[kj]);
+            for &j in &angles {
+                rows.push(&tables[&std::mem::take(&mut exps[j])]);
             }
             let group = groups.number(&exps);
             let coeff = self.coeffs[k].to_gaussian_integer();
@@ -171,7 +169,8 @@ fn ranks<T, K: Ord>(items: &[T], key: impl Fn(&T) -> K) -> Vec<u32> {
     rank
 }
 
-/// [`TrigMonomial`]'s order, computed once per term.
+/// [`TrigMonomial`]'s order as a key (computed once per trigonometric monomial when terms
+/// are sorted).
 type TrigKey = (u32, Vec<(u32, u32)>);
 
 /// Distinct vectors numbered in the order they come: a vector is copied once, when it is new.
