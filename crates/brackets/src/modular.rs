@@ -19,6 +19,8 @@
 //! assert_eq!(e.rank(), 2);
 //! ```
 
+use std::cmp::Reverse;
+use std::collections::BinaryHeap;
 use std::fmt::Debug;
 use std::sync::{Mutex, PoisonError};
 
@@ -71,6 +73,15 @@ impl Fp {
 
     /// `q mod p`, or `None` if `p` divides the denominator.
     pub fn from_rational(q: &Rational) -> Option<Self> {
+        if let Some((n, d)) = q.small_parts() {
+            // A denominator fits an i64, so p (below 2⁶²) can still divide it.
+            let (n, d) = (Fp::from_i64(n), Fp::from_i64(d));
+            return match d.0 {
+                0 => None,
+                1 => Some(n),
+                _ => Some(n.mul(&d.inv())),
+            };
+        }
         let n = integer_mod(&q.numer());
         // An integer needs no inverse (a power by `p − 2`, some 120 products).
         if q.is_integer() {
@@ -244,18 +255,19 @@ struct Row<F> {
 /// comes out in reduced form (one kernel vector per dependent column).
 ///
 /// A reduction, and the combination it makes of inserted vectors, add into dense scratch
-/// vectors kept between calls and read back only the entries they touched, so that an insertion
-/// costs what the rows it subtracts hold, not the dimension nor the number of vectors so far: a
-/// search at degree 7 inserts tens of thousands of short vectors.
+/// vectors kept between calls and read back only the entries they touched, and it visits only
+/// the rows whose pivots it meets (in a queue by row), so that an insertion costs what the rows
+/// it subtracts hold, not the dimension nor the number of rows or of vectors so far: a search
+/// at degree 8 inserts hundreds of thousands of short vectors into thousands of rows.
 #[derive(Debug)]
 pub struct Echelon<F> {
     dim: usize,
     rows: Vec<Row<F>>,
     /// For each index, the basis row whose pivot it is.
     pivot_row: Vec<Option<usize>>,
-    /// The residue of a reduction, by index, and its combination, by identifier (behind a
-    /// lock, so that a basis shared between threads answers `contains` and `express`).
-    scratch: Mutex<(Accumulator<F>, Accumulator<F>)>,
+    /// What a reduction works in, kept between reductions (behind a lock, so that a basis
+    /// shared between threads answers `contains` and `express`).
+    scratch: Mutex<Scratch<F>>,
 }
 
 impl<F: Field> Clone for Echelon<F> {
@@ -264,7 +276,26 @@ impl<F: Field> Clone for Echelon<F> {
             dim: self.dim,
             rows: self.rows.clone(),
             pivot_row: self.pivot_row.clone(),
-            scratch: Mutex::new((Accumulator::new(), Accumulator::new())),
+            scratch: Mutex::new(Scratch::new()),
+        }
+    }
+}
+
+/// The working space of a reduction, empty between reductions: the residue by index, the
+/// combination by identifier, and the rows still to visit, by row (duplicates allowed).
+#[derive(Debug)]
+struct Scratch<F> {
+    residue: Accumulator<F>,
+    combo: Accumulator<F>,
+    queue: BinaryHeap<Reverse<usize>>,
+}
+
+impl<F: Field> Scratch<F> {
+    fn new() -> Self {
+        Scratch {
+            residue: Accumulator::new(),
+            combo: Accumulator::new(),
+            queue: BinaryHeap::new(),
         }
     }
 }
@@ -285,15 +316,17 @@ impl<F: Field> Accumulator<F> {
         }
     }
 
-    /// Adds `x` at `i`.
-    fn add(&mut self, i: usize, x: &F) {
+    /// Adds `x` at `i`; whether the value there was zero.
+    fn add(&mut self, i: usize, x: &F) -> bool {
         if i >= self.dense.len() {
             self.dense.resize(i + 1, F::zero());
         }
-        if self.dense[i].is_zero() {
+        let was_zero = self.dense[i].is_zero();
+        if was_zero {
             self.touched.push(i);
         }
         self.dense[i] = self.dense[i].add(x);
+        was_zero
     }
 
     /// The value at `i`.
@@ -324,7 +357,7 @@ impl<F: Field> Echelon<F> {
             dim,
             rows: Vec::new(),
             pivot_row: vec![None; dim],
-            scratch: Mutex::new((Accumulator::new(), Accumulator::new())),
+            scratch: Mutex::new(Scratch::new()),
         }
     }
 
@@ -333,9 +366,10 @@ impl<F: Field> Echelon<F> {
         self.rows.len()
     }
 
-    /// Reduces `v` by the basis: the residue (by increasing index) and the combination of
-    /// inserted vectors that was subtracted (by increasing identifier).
-    fn reduce(&self, v: &SparseVec<F>) -> (SparseVec<F>, SparseVec<F>) {
+    /// Reduces `v` by the basis: the residue (by increasing index) and, when `track`, the
+    /// combination of inserted vectors that was subtracted (by increasing identifier; empty
+    /// otherwise, which spares a row's combination for each row subtracted).
+    fn reduce(&self, v: &SparseVec<F>, track: bool) -> (SparseVec<F>, SparseVec<F>) {
         // Checked before any is added, so that the scratch stays zero.
         if let Some((i, _)) = v.iter().find(|(i, _)| *i >= self.dim) {
             panic!("index {i} out of range {}", self.dim);
@@ -343,22 +377,46 @@ impl<F: Field> Echelon<F> {
         // Nothing panics while the lock is held (the indices are checked above), so a poisoned
         // lock still holds zero scratch vectors.
         let mut scratch = self.scratch.lock().unwrap_or_else(PoisonError::into_inner);
-        let (acc, combo) = &mut *scratch;
+        let Scratch {
+            residue: acc,
+            combo,
+            queue,
+        } = &mut *scratch;
+        // Row r holds no pivot of an earlier row (it was reduced by them when inserted), so
+        // subtracting it puts entries only on pivots of later rows: visited by increasing row,
+        // each row is reached after every row that changes its pivot's entry.
+        let pivot_rows = &self.pivot_row;
+        let meet = |queue: &mut BinaryHeap<Reverse<usize>>, i: usize| {
+            if let Some(r) = pivot_rows[i] {
+                queue.push(Reverse(r));
+            }
+        };
         for (i, x) in v {
-            acc.add(*i, x);
+            if acc.add(*i, x) {
+                meet(queue, *i);
+            }
         }
-        // Rows were reduced by all earlier rows when inserted, so reducing in insertion order
-        // clears every pivot.
-        for row in &self.rows {
+        let mut last = None;
+        while let Some(Reverse(r)) = queue.pop() {
+            // A pivot that cancelled and came back was queued twice.
+            if last == Some(r) {
+                continue;
+            }
+            last = Some(r);
+            let row = &self.rows[r];
             let c = acc.get(row.pivot);
             if c.is_zero() {
                 continue;
             }
             for (i, x) in &row.vec {
-                acc.add(*i, &F::zero().sub(&c.mul(x)));
+                if acc.add(*i, &F::zero().sub(&c.mul(x))) {
+                    meet(queue, *i);
+                }
             }
-            for (j, x) in &row.combo {
-                combo.add(*j, &c.mul(x));
+            if track {
+                for (j, x) in &row.combo {
+                    combo.add(*j, &c.mul(x));
+                }
             }
         }
         (acc.take(), combo.take())
@@ -368,7 +426,7 @@ impl<F: Field> Echelon<F> {
     /// independent of the earlier vectors (the basis grows), otherwise the coefficients `c_j`,
     /// by earlier identifiers, with `v = Σ c_j v_j`.
     pub fn insert(&mut self, id: usize, v: &SparseVec<F>) -> Option<SparseVec<F>> {
-        let (residue, combo) = self.reduce(v);
+        let (residue, combo) = self.reduce(v, true);
         let Some((pivot, lead)) = residue.first() else {
             return Some(combo);
         };
@@ -384,16 +442,23 @@ impl<F: Field> Echelon<F> {
         None
     }
 
+    /// Inserts `v` under the identifier `id` if it is independent of the earlier vectors;
+    /// whether it was. A dependent vector costs one reduction without its combination, which
+    /// is what a span of many dependent vectors (products of integrals) needs.
+    pub fn extend(&mut self, id: usize, v: &SparseVec<F>) -> bool {
+        !self.contains(v) && self.insert(id, v).is_none()
+    }
+
     /// `v` as a combination `Σ c_j v_j` of the inserted vectors (by identifier), if it lies in
     /// their span.
     pub fn express(&self, v: &SparseVec<F>) -> Option<SparseVec<F>> {
-        let (residue, combo) = self.reduce(v);
+        let (residue, combo) = self.reduce(v, true);
         residue.is_empty().then_some(combo)
     }
 
     /// Whether `v` lies in the span of the inserted vectors.
     pub fn contains(&self, v: &SparseVec<F>) -> bool {
-        self.reduce(v).0.is_empty()
+        self.reduce(v, false).0.is_empty()
     }
 
     /// The pivots of the basis rows, in insertion order.
@@ -650,6 +715,37 @@ mod tests {
         }
         // −1/2 is (p − 1)/2.
         assert_eq!(reconstruct(Fp::new(PRIME / 2)), Some(Rational::new(-1, 2)));
+    }
+
+    #[test]
+    fn rationals_map_to_their_residues() {
+        // q·d ≡ n (mod p), with machine-word and big numerators and denominators alike.
+        let big = |n: &str, d: &str| {
+            Rational::from_fraction(
+                &trigpoly::Integer::from_bigint(n.parse().unwrap()),
+                &trigpoly::Integer::from_bigint(d.parse().unwrap()),
+            )
+            .unwrap()
+        };
+        let p = PRIME as i64;
+        for (q, n, d) in [
+            (Rational::new(-7, 3), Fp::from_i64(-7), Fp::from_i64(3)),
+            (Rational::new(p + 5, 1), Fp::from_i64(5), Fp::from_i64(1)),
+            (Rational::new(1, p - 1), Fp::from_i64(1), Fp::from_i64(-1)),
+            (
+                big("-100000000000000000000000000001", "3"),
+                Fp::from_rational(&big("-100000000000000000000000000001", "1")).unwrap(),
+                Fp::from_i64(3),
+            ),
+        ] {
+            let r = Fp::from_rational(&q).unwrap();
+            assert_eq!(r.mul(&d), n, "{q:?}");
+        }
+        // p divides the denominator: no residue, in a word or past one.
+        assert_eq!(Fp::from_rational(&Rational::new(1, p)), None);
+        assert_eq!(Fp::from_rational(&Rational::new(3, 2 * p)), None);
+        let p_squared = (PRIME as u128 * PRIME as u128).to_string();
+        assert_eq!(Fp::from_rational(&big("1", &p_squared)), None);
     }
 
     #[test]

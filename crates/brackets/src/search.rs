@@ -41,7 +41,7 @@ use rustc_hash::FxHashMap;
 use std::time::Instant;
 
 use itertools::Itertools;
-use trigpoly::{Expr, GaussianRational, Rational, Var, VarKind, Vars};
+use trigpoly::{Expr, GaussianRational, MonomialIndex, Rational, Var, VarKind, Vars};
 
 use crate::claim::Condition;
 use crate::error::EngineError;
@@ -303,13 +303,24 @@ struct Unknown {
     parameters_degree: i64,
 }
 
+/// Where a monomial `φ·e^{ik·θ}` of the space sits among the unknowns.
+#[derive(Clone, Copy, Debug)]
+enum Slot {
+    /// `k = 0`: the unknown `φ`.
+    One(usize),
+    /// `k` canonical: the unknowns `φ cos k·θ` and `φ sin k·θ`.
+    Canonical { cos: usize, sin: usize },
+    /// `−k` for a canonical `k`: the same two unknowns, met from the conjugate side.
+    Conjugate { cos: usize, sin: usize },
+}
+
 /// The search problem, with the parameters that are not kept symbolic at fixed values.
 struct Problem {
     vars: Vars,
     angles: Vec<Var>,
     unknowns: Vec<Unknown>,
-    /// Unknown by (phase, k, trig).
-    index: FxHashMap<(Vec<i64>, Vec<i64>, Trig), usize>,
+    /// Where each monomial `φ·e^{ik·θ}` of the space sits among the unknowns.
+    slots: MonomialIndex<Slot>,
     /// The fixed Hamiltonian and condition.
     h: Expr,
     condition: Option<Vec<(Var, Expr)>>,
@@ -443,16 +454,12 @@ impl Problem {
                 .then_with(|| a.phase.cmp(&b.phase))
                 .then_with(|| a.trig.cmp(&b.trig))
         });
-        let index = unknowns
-            .iter()
-            .enumerate()
-            .map(|(j, u)| ((u.phase.clone(), u.k.clone(), u.trig), j))
-            .collect();
+        let slots = Problem::slots(&vars, &angles, &unknowns)?;
         let mut problem = Problem {
             vars,
             angles,
             unknowns,
-            index,
+            slots,
             h,
             condition: cond,
             dh: Vec::new(),
@@ -463,6 +470,40 @@ impl Problem {
             problem.dh.push((pair.q, pair.p, dp, dq));
         }
         Ok(problem)
+    }
+
+    /// The slot of each monomial of the space: `φ` for each unknown of `k = 0`, and
+    /// `φ·e^{±ik·θ}` for each pair `φ cos k·θ`, `φ sin k·θ`.
+    fn slots(
+        vars: &Vars,
+        angles: &[Var],
+        unknowns: &[Unknown],
+    ) -> Result<MonomialIndex<Slot>, EngineError> {
+        let with_angles = |u: &Unknown, sign: i64| {
+            let mut e = u.phase.clone();
+            for (v, k) in angles.iter().zip(&u.k) {
+                e[v.index()] = sign * k;
+            }
+            e
+        };
+        let mut cosines: FxHashMap<Vec<i64>, usize> = FxHashMap::default();
+        let mut slots = MonomialIndex::new(vars);
+        for (j, u) in unknowns.iter().enumerate() {
+            match u.trig {
+                Trig::One => {
+                    slots.insert(&u.phase, Slot::One(j))?;
+                }
+                Trig::Cos => {
+                    cosines.insert(with_angles(u, 1), j);
+                }
+                Trig::Sin => {
+                    let cos = cosines[&with_angles(u, 1)];
+                    slots.insert(&with_angles(u, 1), Slot::Canonical { cos, sin: j })?;
+                    slots.insert(&with_angles(u, -1), Slot::Conjugate { cos, sin: j })?;
+                }
+            }
+        }
+        Ok(slots)
     }
 
     /// `{f, H}` after the condition for `f` free of the variables the condition fixes (the
@@ -560,38 +601,71 @@ impl Problem {
 
     /// The coordinates of a real function in the basis, if it lies in the space.
     fn coordinates(&self, f: &Expr) -> Option<SparseVec<Rational>> {
-        let mut out: FxHashMap<usize, Rational> = FxHashMap::default();
-        for t in f.terms() {
-            let e = t.exponents();
-            let k: Vec<i64> = self.angles.iter().map(|v| e[v.index()]).collect();
-            let mut phase = e.clone();
-            for v in &self.angles {
-                phase[v.index()] = 0;
-            }
-            let c = t.coeff();
-            if k.iter().all(|x| *x == 0) {
-                if !c.is_real() {
-                    return None;
-                }
-                let j = *self.index.get(&(phase, k, Trig::One))?;
-                *out.entry(j).or_insert_with(Rational::zero) += &c.re;
-            } else if canonical(&k) {
-                // c z^k + c̄ z^{−k} = 2 Re c · cos − 2 Im c · sin.
-                let jc = *self.index.get(&(phase.clone(), k.clone(), Trig::Cos))?;
-                let js = *self.index.get(&(phase, k, Trig::Sin))?;
-                *out.entry(jc).or_insert_with(Rational::zero) += &c.re * &Rational::from(2);
-                *out.entry(js).or_insert_with(Rational::zero) -= &c.im * &Rational::from(2);
-            } else {
-                // The conjugate half; checked by the caller through is_real.
-                let mut kk = k.clone();
-                kk.iter_mut().for_each(|x| *x = -*x);
-                self.index.get(&(phase, kk, Trig::Cos))?;
-            }
-        }
-        let mut v: SparseVec<Rational> = out.into_iter().filter(|(_, x)| !x.is_zero()).collect();
-        v.sort_by_key(|x| x.0);
-        Some(v)
+        let (re, im) = self.coordinates_of_parts(f)?;
+        im.is_empty().then_some(re)
     }
+
+    /// The coordinates of the real and of the imaginary part of `f` in the basis, if they lie
+    /// in the space (every monomial of `f` is one of the space's), in one pass over the terms
+    /// of `f`. Where `f` has `a e^{ik·θ} + b e^{−ik·θ}` (times `φ`, `k` canonical), that is
+    /// `(a + b) cos k·θ + i(a − b) sin k·θ`: its real part has `Re a + Re b` on the cosine
+    /// and `Im b − Im a` on the sine, its imaginary part `Im a + Im b` and `Re a − Re b`.
+    fn coordinates_of_parts(&self, f: &Expr) -> Option<(SparseVec<Rational>, SparseVec<Rational>)> {
+        let (mut re, mut im) = (
+            Vec::with_capacity(2 * f.len()),
+            Vec::with_capacity(2 * f.len()),
+        );
+        for t in f.terms() {
+            let slot = *self.slots.get_term(&t)?;
+            let c = t.coeff();
+            let (cos, sin, conjugate) = match slot {
+                Slot::One(j) => {
+                    push_nonzero(&mut re, j, c.re);
+                    push_nonzero(&mut im, j, c.im);
+                    continue;
+                }
+                Slot::Canonical { cos, sin } => (cos, sin, false),
+                Slot::Conjugate { cos, sin } => (cos, sin, true),
+            };
+            // a (canonical side) or b (conjugate side): the signs above.
+            let (re_sin, im_sin) = if conjugate {
+                (c.im.clone(), -&c.re)
+            } else {
+                (-&c.im, c.re.clone())
+            };
+            push_nonzero(&mut re, cos, c.re);
+            push_nonzero(&mut re, sin, re_sin);
+            push_nonzero(&mut im, cos, c.im);
+            push_nonzero(&mut im, sin, im_sin);
+        }
+        Some((sum_by_index(re), sum_by_index(im)))
+    }
+}
+
+/// Appends `(j, x)` unless `x` is zero.
+fn push_nonzero(v: &mut SparseVec<Rational>, j: usize, x: Rational) {
+    if !x.is_zero() {
+        v.push((j, x));
+    }
+}
+
+/// The sparse vector of entries `(j, x)` in any order, those of one index added up, zeros
+/// dropped.
+fn sum_by_index(mut v: SparseVec<Rational>) -> SparseVec<Rational> {
+    v.sort_unstable_by_key(|x| x.0);
+    v.dedup_by(|later, kept| {
+        let same = later.0 == kept.0;
+        if same {
+            kept.1 += &later.1;
+        }
+        same
+    });
+    v.retain(|x| !x.1.is_zero());
+    // Kept (a product's coordinates join the span until the end): moved into a vector of its
+    // length, where `v` has room for two entries per term of the function.
+    let mut out = Vec::with_capacity(v.len());
+    out.append(&mut v);
+    out
 }
 
 /// Union–find.
@@ -1062,11 +1136,7 @@ fn new_integrals(
     // of its factors; the real and imaginary parts of those that lie in the space.
     let mut spanning: Vec<(i64, SparseVec<Rational>)> =
         known.iter().map(|k| (-1, k.1.clone())).collect();
-    if let Some(&j) = problem.index.get(&(
-        vec![0; problem.vars.len()],
-        vec![0; problem.angles.len()],
-        Trig::One,
-    )) {
+    if let Some(&Slot::One(j)) = problem.slots.get(&vec![0; problem.vars.len()]) {
         spanning.push((-1, vec![(j, Rational::one())]));
     }
     let mut level: Vec<(usize, Expr, (i64, i64), i64)> = gens
@@ -1074,16 +1144,32 @@ fn new_integrals(
         .enumerate()
         .map(|(i, g)| (i, g.0.clone(), g.1, g.2))
         .collect();
+    let fits = |d: (i64, i64)| d.0 <= bounds.0 && (space.laurent || d.1 <= bounds.1);
+    // The generators' degrees on their own, read for every pair that is then not formed, and
+    // the least of them from each index on: a product that no generator from its last index
+    // on can extend is not kept for the next level.
+    let gen_degrees: Vec<(i64, i64)> = gens.iter().map(|g| g.1).collect();
+    let mut least = vec![(i64::MAX, i64::MAX); gens.len() + 1];
+    for (i, d) in gen_degrees.iter().enumerate().rev() {
+        least[i] = (least[i + 1].0.min(d.0), least[i + 1].1.min(d.1));
+    }
+    let extendable = |i: usize, d: (i64, i64)| {
+        fits((
+            d.0.saturating_add(least[i].0),
+            d.1.saturating_add(least[i].1),
+        ))
+    };
     let mut products = 0;
     let max_factors = (bounds.0 + bounds.1).max(1) as usize + 1;
     for _ in 1..max_factors {
         let mut next = Vec::new();
         for (last, e, d, mu) in &level {
-            for (i, (g, gd, gdeg)) in gens.iter().enumerate().skip(*last) {
+            for (i, gd) in gen_degrees.iter().enumerate().skip(*last) {
                 let sum = (d.0 + gd.0, d.1 + gd.1);
-                if sum.0 > bounds.0 || (!space.laurent && sum.1 > bounds.1) {
+                if !fits(sum) {
                     continue;
                 }
+                let (g, _, gdeg) = &gens[i];
                 let p = e.checked_mul(g)?;
                 products += 1;
                 if products > MAX_PRODUCTS {
@@ -1093,16 +1179,16 @@ fn new_integrals(
                     )));
                 }
                 let mu = (*mu).max(*gdeg);
-                if let (Some(re), Some(im)) =
-                    (problem.coordinates(&p.re()), problem.coordinates(&p.im()?))
-                {
+                if let Some((re, im)) = problem.coordinates_of_parts(&p) {
                     for v in [re, im] {
                         if !v.is_empty() {
                             spanning.push((mu, v));
                         }
                     }
                 }
-                next.push((i, p, sum, mu));
+                if extendable(i, sum) {
+                    next.push((i, p, sum, mu));
+                }
             }
         }
         if next.is_empty() {
@@ -1134,9 +1220,9 @@ fn new_integrals(
             while next_span < spanning.len() && spanning[next_span].0 < degrees_of[k] {
                 let v = &spanning[next_span].1;
                 if exact {
-                    q.insert(inserted.len(), v);
+                    q.extend(inserted.len(), v);
                 } else {
-                    fp.insert(inserted.len(), &modular::to_fp(v)?);
+                    fp.extend(inserted.len(), &modular::to_fp(v)?);
                 }
                 inserted.push(v);
                 next_span += 1;
@@ -1189,6 +1275,43 @@ fn new_integrals(
 mod tests {
     use super::*;
     use crate::systems;
+
+    #[test]
+    fn coordinates_are_those_of_the_real_and_imaginary_parts() {
+        let rotor = systems::harmonic_rotor();
+        let h = rotor.hamiltonian().clone();
+        let problem = Problem::new(&rotor, &SearchSpace::new(2, 1, 2), &[], h, None).unwrap();
+        let n = problem.unknowns.len();
+        // f = Σ (a_j + i b_j) φ_j over every third unknown (the φ_j are real): Re f has the
+        // coordinates a, Im f the coordinates b.
+        let (mut a, mut b) = (Vec::new(), Vec::new());
+        let mut f = Expr::zero(&problem.vars);
+        for j in (0..n).step_by(3) {
+            let (x, y) = (
+                Rational::new(j as i64 % 7 - 3, 2),
+                Rational::new(1, j as i64 + 1),
+            );
+            let c = GaussianRational::new(x.clone(), y.clone());
+            f = f + problem.expr(j, &Rational::one()).unwrap().scale(&c);
+            if !x.is_zero() {
+                a.push((j, x));
+            }
+            b.push((j, y));
+        }
+        assert_eq!(
+            problem.coordinates_of_parts(&f),
+            Some((a.clone(), b.clone()))
+        );
+        assert_eq!(problem.combination(&a).unwrap(), f.re());
+        assert_eq!(problem.combination(&b).unwrap(), f.im().unwrap());
+        // A real function has no imaginary part; a complex one has no real coordinates.
+        assert_eq!(problem.coordinates(&f.re()), Some(a));
+        assert_eq!(problem.coordinates(&f), None);
+        // Outside the space (positions degree 2 > 1): no coordinates.
+        let outside = f.re() + rotor.parse("x^2").unwrap();
+        assert_eq!(problem.coordinates(&outside), None);
+        assert_eq!(problem.coordinates_of_parts(&outside), None);
+    }
 
     #[test]
     fn new_integrals_at_one_to_one_are_the_four_linear_ones() {

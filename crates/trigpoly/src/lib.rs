@@ -56,7 +56,7 @@ pub use number::{
     Coefficient, ExactDivisor, GaussianAcc, GaussianInteger, GaussianRational, Integer, IntegerAcc,
     IntegerRing, IntegerView, ParseGaussianError, ParseRationalError, Rational,
 };
-pub use poly::{CosSinTerm, Point, Poly, Term, TrigMonomial};
+pub use poly::{CosSinTerm, MonomialIndex, Point, Poly, Term, TrigMonomial};
 pub use print::{superscript, Style};
 pub use syntax::{Excerpt, ParseError, Span};
 pub use varset::{

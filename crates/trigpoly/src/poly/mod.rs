@@ -12,6 +12,7 @@ mod complex;
 mod dense;
 mod gather;
 mod hashed;
+mod index;
 mod kronecker;
 mod mul;
 mod pages;
@@ -29,6 +30,7 @@ use crate::error::AlgebraError;
 use crate::number::{Coefficient, ExactDivisor, GaussianRational, Integer, IntegerRing, Rational};
 use crate::varset::{Layout, Var, VarKind, VarSet, Vars};
 
+pub use index::MonomialIndex;
 pub use subst::Point;
 pub use trig::{CosSinTerm, TrigMonomial};
 

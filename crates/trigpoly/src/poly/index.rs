@@ -1,0 +1,165 @@
+//! `MonomialIndex`: a map from the monomials of one variable set to values, keyed by their
+//! packed words. Looking a polynomial's term up hashes and compares a word or two and
+//! allocates nothing, where a map keyed by exponent vectors unpacks each term into a new
+//! vector, hashes it and compares it element by element (the coordinates of a function in a
+//! basis of monomials, for a search, are one lookup per term).
+
+use rustc_hash::FxHashMap;
+
+use super::{check_exponent, Term};
+use crate::error::AlgebraError;
+use crate::number::Coefficient;
+use crate::varset::Vars;
+
+/// A map from monomials of one [`VarSet`](crate::VarSet) to values of type `V`, looked up by
+/// exponent vector or, without unpacking, by a polynomial's [`Term`].
+///
+/// ```
+/// use trigpoly::{Expr, MonomialIndex, VarSet};
+/// let vars = VarSet::builder().coordinate("x").coordinate("y").build().unwrap();
+/// let mut index = MonomialIndex::new(&vars);
+/// index.insert(&[2, 0], "x²").unwrap();
+/// index.insert(&[1, 1], "xy").unwrap();
+/// let f = Expr::parse(&vars, "3*x*y - x^2 + y").unwrap();
+/// let found: Vec<_> = f.terms().map(|t| index.get_term(&t).copied()).collect();
+/// assert_eq!(found, [Some("x²"), Some("xy"), None]);
+/// assert_eq!(index.get(&[1, 1]), Some(&"xy"));
+/// ```
+#[derive(Clone, Debug)]
+pub struct MonomialIndex<V> {
+    vars: Vars,
+    map: FxHashMap<Box<[u64]>, V>,
+}
+
+impl<V> MonomialIndex<V> {
+    /// An empty index of monomials of `vars`.
+    pub fn new(vars: &Vars) -> Self {
+        MonomialIndex {
+            vars: vars.clone(),
+            map: FxHashMap::default(),
+        }
+    }
+
+    /// Puts `value` at the monomial with exponents `exps` (one per variable, in the order of
+    /// the variable set; for an angle `θ`, `k` in `e^{ikθ}`), returning the value it replaces.
+    /// An error when `exps` has the wrong length or an exponent is past the degree limit.
+    pub fn insert(&mut self, exps: &[i64], value: V) -> Result<Option<V>, AlgebraError> {
+        let key = self.pack(exps)?;
+        Ok(self.map.insert(key.into_boxed_slice(), value))
+    }
+
+    /// The value at the monomial with exponents `exps`, if any (none for a vector of the
+    /// wrong length or past the degree limit, which no monomial has).
+    pub fn get(&self, exps: &[i64]) -> Option<&V> {
+        let key = self.pack(exps).ok()?;
+        self.map.get(key.as_slice())
+    }
+
+    /// The value at the monomial of `term`, if any; none when the term's polynomial belongs
+    /// to another variable set.
+    pub fn get_term<C: Coefficient>(&self, term: &Term<'_, C>) -> Option<&V> {
+        if !Vars::ptr_eq(&self.vars, &term.poly.vars) {
+            return None;
+        }
+        self.map.get(term.poly.exp(term.k))
+    }
+
+    /// The number of monomials in the index.
+    pub fn len(&self) -> usize {
+        self.map.len()
+    }
+
+    /// Whether the index holds no monomial.
+    pub fn is_empty(&self) -> bool {
+        self.map.is_empty()
+    }
+
+    /// The variable set of the monomials.
+    pub fn vars(&self) -> &Vars {
+        &self.vars
+    }
+
+    /// The packed words of the monomial with exponents `exps`, as a polynomial stores them.
+    fn pack(&self, exps: &[i64]) -> Result<Vec<u64>, AlgebraError> {
+        if exps.len() != self.vars.len() {
+            return Err(AlgebraError::Invalid(format!(
+                "{} exponents for {} variables",
+                exps.len(),
+                self.vars.len()
+            )));
+        }
+        for (v, &e) in self.vars.vars().zip(exps) {
+            check_exponent(&self.vars, v, e)?;
+        }
+        let layout = self.vars.layout();
+        let mut key = vec![0; layout.words];
+        layout.pack(exps, &mut key);
+        Ok(key)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::{Expr, VarSet};
+
+    #[test]
+    fn terms_find_the_monomials_inserted_by_exponents() {
+        let vars = VarSet::builder()
+            .coordinate("x")
+            .momentum("p")
+            .parameter("a")
+            .angle("theta")
+            .build()
+            .unwrap();
+        let mut index = MonomialIndex::new(&vars);
+        assert!(index.is_empty());
+        // x·p·e^{2iθ}, a/x·e^{−2iθ} and 1.
+        assert_eq!(index.insert(&[1, 1, 0, 2], 'A'), Ok(None));
+        assert_eq!(index.insert(&[-1, 0, 1, -2], 'B'), Ok(None));
+        assert_eq!(index.insert(&[0, 0, 0, 0], 'C'), Ok(None));
+        assert_eq!(index.insert(&[0, 0, 0, 0], 'D'), Ok(Some('C')));
+        assert_eq!(index.len(), 3);
+        let f = Expr::parse(
+            &vars,
+            "x*p*(cos(theta) + i*sin(theta))^2 + a/x*(cos(theta) - i*sin(theta))^2 + 7 + x",
+        )
+        .unwrap();
+        let mut found: Vec<_> = f.terms().map(|t| index.get_term(&t).copied()).collect();
+        found.sort();
+        assert_eq!(found, [None, Some('A'), Some('B'), Some('D')]);
+        assert_eq!(index.get(&[-1, 0, 1, -2]), Some(&'B'));
+        assert_eq!(index.get(&[-1, 0, 1, 2]), None);
+        // The same monomials of another variable set are not there.
+        let other = VarSet::builder()
+            .coordinate("x")
+            .momentum("p")
+            .parameter("a")
+            .angle("phi")
+            .build()
+            .unwrap();
+        let g = Expr::parse(&other, "7").unwrap();
+        assert_eq!(index.get_term(&g.terms().next().unwrap()), None);
+    }
+
+    #[test]
+    fn exponents_of_the_wrong_length_or_past_the_limit_are_refused() {
+        let vars = VarSet::builder()
+            .coordinate("x")
+            .coordinate("y")
+            .build()
+            .unwrap();
+        let mut index = MonomialIndex::new(&vars);
+        let limit = i64::from(vars.limits().max_degree);
+        assert!(index.insert(&[1], ()).is_err());
+        assert!(index.insert(&[1, 2, 3], ()).is_err());
+        assert!(matches!(
+            index.insert(&[0, limit + 1], ()),
+            Err(AlgebraError::ExponentTooLarge { .. })
+        ));
+        assert_eq!(index.insert(&[-limit, limit], ()), Ok(None));
+        assert_eq!(index.get(&[-limit, limit]), Some(&()));
+        assert_eq!(index.get(&[0, limit + 1]), None);
+        assert_eq!(index.len(), 1);
+    }
+}
