@@ -81,6 +81,12 @@ pub struct SearchArgs {
     /// of known and found integrals; with --symbolic, parameter multiples too) do not generate.
     #[arg(long)]
     new_only: bool,
+    /// With --new-only, decide what is new by elimination over Q alone (slower). By default it
+    /// is decided modulo a 62-bit prime with every dependency checked over Q, which could
+    /// report an integral new that is not only if the prime divides a minor of the products'
+    /// span.
+    #[arg(long, requires = "new_only")]
+    exact_complement: bool,
     /// More known integrals for --new-only: expressions or family instances (P_1_1),
     /// separated by commas.
     #[arg(long, value_name = "EXPRS")]
@@ -191,6 +197,7 @@ pub fn run(job: &SearchJob) -> anyhow::Result<bool> {
         options.space = options.space.parameters_degree(a.parameters_degree);
     }
     options.new_only = a.new_only;
+    options.exact_complement = a.exact_complement;
     if let Some(known) = &a.known {
         for k in known.split(',').map(str::trim).filter(|k| !k.is_empty()) {
             let e = subject.parse(k).map_err(|e| anyhow!("--known: {e}"))?;

@@ -284,6 +284,10 @@ fn cli_bad_usage_exits_2_with_a_message() {
             "invalid value 'pdf' for '--format <FORMAT>'",
         ),
         (&["frobnicate"][..], "unrecognized subcommand 'frobnicate'"),
+        (
+            &["search", "systems/harmonic-rotor.toml", "--exact-complement"][..],
+            "the following required arguments were not provided",
+        ),
         (&["paper", "--bogus"][..], "unexpected argument '--bogus'"),
     ] {
         let o = superint(args);
@@ -295,6 +299,28 @@ fn cli_bad_usage_exits_2_with_a_message() {
             stderr(&o)
         );
     }
+}
+
+#[test]
+fn cli_search_complement_over_q_alone_prints_the_same() {
+    let args = [
+        "search",
+        "systems/harmonic-rotor.toml",
+        "--when",
+        "p_theta = 2*I*omega",
+        "--momenta-degree",
+        "3",
+        "--positions-degree",
+        "3",
+        "--trig-degree",
+        "3",
+        "--new-only",
+        "--no-timings",
+    ];
+    let modular = run(&args, 0);
+    assert!(modular.contains("products formed"), "{modular}");
+    let exact = run(&[&args[..], &["--exact-complement"]].concat(), 0);
+    assert_eq!(modular, exact);
 }
 
 #[test]

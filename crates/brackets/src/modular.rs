@@ -71,6 +71,11 @@ impl Fp {
         Fp(r as u64)
     }
 
+    /// `a mod p` for an integer of any size.
+    pub fn from_integer(a: &trigpoly::Integer) -> Self {
+        integer_mod(a)
+    }
+
     /// `q mod p`, or `None` if `p` divides the denominator.
     pub fn from_rational(q: &Rational) -> Option<Self> {
         if let Some((n, d)) = q.small_parts() {

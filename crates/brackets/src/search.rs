@@ -38,14 +38,15 @@
 //! ```
 
 use rustc_hash::FxHashMap;
+use std::collections::BTreeMap;
 use std::time::Instant;
 
 use itertools::Itertools;
-use trigpoly::{Expr, GaussianRational, MonomialIndex, Rational, Var, VarKind, Vars};
+use trigpoly::{Expr, GaussianRational, MonomialIndex, Rational, Term, Var, VarKind, Vars};
 
 use crate::claim::Condition;
 use crate::error::EngineError;
-use crate::modular::{self, Echelon, Fp, SparseVec};
+use crate::modular::{self, Echelon, Field, Fp, SparseVec};
 use crate::scaling::{Lifter, Scaling};
 use crate::system::System;
 
@@ -108,6 +109,12 @@ pub struct SearchOptions {
     /// Also find a complement of what products and sums of known and lower integrals give
     /// (and, with parameters kept symbolic, parameter multiples of integrals).
     pub new_only: bool,
+    /// Decide that complement by elimination over Q alone. By default it is decided modulo a
+    /// 62-bit prime, each dependency found there checked over Q (falling back to Q when one
+    /// fails): an integral reported generated is then generated, and one reported new is new
+    /// unless the prime divides a minor of the span of the known products, which this rules
+    /// out at some cost in time.
+    pub exact_complement: bool,
 }
 
 impl SearchOptions {
@@ -120,6 +127,7 @@ impl SearchOptions {
             symbolic: Vec::new(),
             known: Vec::new(),
             new_only: false,
+            exact_complement: false,
         }
     }
 
@@ -145,6 +153,12 @@ impl SearchOptions {
     /// With the complement of the known integrals' products.
     pub fn new_only(mut self) -> Self {
         self.new_only = true;
+        self
+    }
+
+    /// With the complement decided over Q alone ([`SearchOptions::exact_complement`]).
+    pub fn exact_complement(mut self) -> Self {
+        self.exact_complement = true;
         self
     }
 
@@ -607,21 +621,49 @@ impl Problem {
 
     /// The coordinates of the real and of the imaginary part of `f` in the basis, if they lie
     /// in the space (every monomial of `f` is one of the space's), in one pass over the terms
-    /// of `f`. Where `f` has `a e^{ik·θ} + b e^{−ik·θ}` (times `φ`, `k` canonical), that is
+    /// of `f`.
+    fn coordinates_of_parts(&self, f: &Expr) -> Option<(SparseVec<Rational>, SparseVec<Rational>)> {
+        let [re, im] = self.parts_by_slot(f, |t| {
+            let c = t.coeff();
+            (c.re, c.im)
+        })?;
+        Some((re, im))
+    }
+
+    /// [`Problem::coordinates_of_parts`] modulo p, with the content of `f` applied to each
+    /// coefficient of its primitive part (no rational product per term): `None` when the
+    /// content's denominator vanishes modulo p, `Some(None)` outside the space.
+    fn coordinates_of_parts_mod_p(&self, f: &Expr) -> Option<Option<[SparseVec<Fp>; 2]>> {
+        let content = Fp::from_rational(f.content())?;
+        Some(self.parts_by_slot(f, |t| {
+            let c = t.primitive_coeff();
+            let part = |x| content.mul(&Fp::from_integer(x));
+            (part(&c.re), part(&c.im))
+        }))
+    }
+
+    /// The coordinates of the real and imaginary parts of `f` in a field `F`, given each
+    /// term's coefficient `(re, im)` in `F`; `None` when a monomial of `f` is outside the
+    /// space. Where `f` has `a e^{ik·θ} + b e^{−ik·θ}` (times `φ`, `k` canonical), that is
     /// `(a + b) cos k·θ + i(a − b) sin k·θ`: its real part has `Re a + Re b` on the cosine
     /// and `Im b − Im a` on the sine, its imaginary part `Im a + Im b` and `Re a − Re b`.
-    fn coordinates_of_parts(&self, f: &Expr) -> Option<(SparseVec<Rational>, SparseVec<Rational>)> {
+    fn parts_by_slot<F: Field>(
+        &self,
+        f: &Expr,
+        coeff: impl Fn(&Term<'_, GaussianRational>) -> (F, F),
+    ) -> Option<[SparseVec<F>; 2]> {
         let (mut re, mut im) = (
             Vec::with_capacity(2 * f.len()),
             Vec::with_capacity(2 * f.len()),
         );
+        let minus = |x: &F| F::zero().sub(x);
         for t in f.terms() {
             let slot = *self.slots.get_term(&t)?;
-            let c = t.coeff();
+            let (a, b) = coeff(&t);
             let (cos, sin, conjugate) = match slot {
                 Slot::One(j) => {
-                    push_nonzero(&mut re, j, c.re);
-                    push_nonzero(&mut im, j, c.im);
+                    push_nonzero(&mut re, j, a);
+                    push_nonzero(&mut im, j, b);
                     continue;
                 }
                 Slot::Canonical { cos, sin } => (cos, sin, false),
@@ -629,21 +671,21 @@ impl Problem {
             };
             // a (canonical side) or b (conjugate side): the signs above.
             let (re_sin, im_sin) = if conjugate {
-                (c.im.clone(), -&c.re)
+                (b.clone(), minus(&a))
             } else {
-                (-&c.im, c.re.clone())
+                (minus(&b), a.clone())
             };
-            push_nonzero(&mut re, cos, c.re);
+            push_nonzero(&mut re, cos, a);
             push_nonzero(&mut re, sin, re_sin);
-            push_nonzero(&mut im, cos, c.im);
+            push_nonzero(&mut im, cos, b);
             push_nonzero(&mut im, sin, im_sin);
         }
-        Some((sum_by_index(re), sum_by_index(im)))
+        Some([sum_by_index(re), sum_by_index(im)])
     }
 }
 
 /// Appends `(j, x)` unless `x` is zero.
-fn push_nonzero(v: &mut SparseVec<Rational>, j: usize, x: Rational) {
+fn push_nonzero<F: Field>(v: &mut SparseVec<F>, j: usize, x: F) {
     if !x.is_zero() {
         v.push((j, x));
     }
@@ -651,18 +693,18 @@ fn push_nonzero(v: &mut SparseVec<Rational>, j: usize, x: Rational) {
 
 /// The sparse vector of entries `(j, x)` in any order, those of one index added up, zeros
 /// dropped.
-fn sum_by_index(mut v: SparseVec<Rational>) -> SparseVec<Rational> {
+fn sum_by_index<F: Field>(mut v: SparseVec<F>) -> SparseVec<F> {
     v.sort_unstable_by_key(|x| x.0);
     v.dedup_by(|later, kept| {
         let same = later.0 == kept.0;
         if same {
-            kept.1 += &later.1;
+            kept.1 = kept.1.add(&later.1);
         }
         same
     });
     v.retain(|x| !x.1.is_zero());
-    // Kept (a product's coordinates join the span until the end): moved into a vector of its
-    // length, where `v` has room for two entries per term of the function.
+    // Kept (a product's coordinates may join the span until the end): moved into a vector of
+    // its length, where `v` has room for two entries per term of the function.
     let mut out = Vec::with_capacity(v.len());
     out.append(&mut v);
     out
@@ -1033,7 +1075,7 @@ fn degrees(f: &Expr) -> (i64, i64) {
 }
 
 /// The most products `--new-only` forms before giving up.
-const MAX_PRODUCTS: usize = 200_000;
+const MAX_PRODUCTS: usize = 1_000_000;
 
 /// A function times the least monomial in the `symbolic` parameters that leaves none of them
 /// with a negative exponent (`G1 = p_x p_y/(2M) + …` becomes `M·G1`).
@@ -1130,86 +1172,38 @@ fn new_integrals(
         }
     }
     let bounds = (space.momenta_degree as i64, space.positions_degree as i64);
-    // Every product of at least two generators whose degrees fit (degrees in the momenta and,
-    // without negative powers, in the coordinates add up), by increasing number of factors
-    // with non-decreasing indices so that each monomial comes once, with the largest degree
-    // of its factors; the real and imaginary parts of those that lie in the space.
-    let mut spanning: Vec<(i64, SparseVec<Rational>)> =
-        known.iter().map(|k| (-1, k.1.clone())).collect();
-    if let Some(&Slot::One(j)) = problem.slots.get(&vec![0; problem.vars.len()]) {
-        spanning.push((-1, vec![(j, Rational::one())]));
-    }
-    let mut level: Vec<(usize, Expr, (i64, i64), i64)> = gens
-        .iter()
-        .enumerate()
-        .map(|(i, g)| (i, g.0.clone(), g.1, g.2))
-        .collect();
-    let fits = |d: (i64, i64)| d.0 <= bounds.0 && (space.laurent || d.1 <= bounds.1);
-    // The generators' degrees on their own, read for every pair that is then not formed, and
-    // the least of them from each index on: a product that no generator from its last index
-    // on can extend is not kept for the next level.
-    let gen_degrees: Vec<(i64, i64)> = gens.iter().map(|g| g.1).collect();
-    let mut least = vec![(i64::MAX, i64::MAX); gens.len() + 1];
-    for (i, d) in gen_degrees.iter().enumerate().rev() {
-        least[i] = (least[i + 1].0.min(d.0), least[i + 1].1.min(d.1));
-    }
-    let extendable = |i: usize, d: (i64, i64)| {
-        fits((
-            d.0.saturating_add(least[i].0),
-            d.1.saturating_add(least[i].1),
-        ))
+    let degrees_of: Vec<i64> = basis.iter().map(|b| total(&b.fixed)).collect();
+    let generated = |exact: bool| {
+        let mut span = Stamped::new(problem.unknowns.len(), exact);
+        // The known integrals and the constants, then the products; with parameters kept
+        // symbolic, `a·I` is generated by `I`: it joins the span before the basis integrals of
+        // `I`'s degree. `None` when a denominator vanishes modulo p.
+        let mut vectors: Vec<(i64, SparseVec<Rational>)> =
+            known.iter().map(|k| (-1, k.1.clone())).collect();
+        if let Some(&Slot::One(j)) = problem.slots.get(&vec![0; problem.vars.len()]) {
+            vectors.push((-1, vec![(j, Rational::one())]));
+        }
+        vectors.extend(
+            multiples
+                .iter()
+                .map(|(i, v)| (degrees_of[*i] - 1, v.clone())),
+        );
+        if vectors
+            .into_iter()
+            .any(|(stamp, v)| span.add(stamp, v).is_none())
+        {
+            return Ok(None);
+        }
+        let products = span_products(problem, &gens, bounds, space.laurent, &mut span)?;
+        Ok::<_, EngineError>(products.map(|n| (span.into_vectors(), n)))
     };
-    let mut products = 0;
-    let max_factors = (bounds.0 + bounds.1).max(1) as usize + 1;
-    for _ in 1..max_factors {
-        let mut next = Vec::new();
-        for (last, e, d, mu) in &level {
-            for (i, gd) in gen_degrees.iter().enumerate().skip(*last) {
-                let sum = (d.0 + gd.0, d.1 + gd.1);
-                if !fits(sum) {
-                    continue;
-                }
-                let (g, _, gdeg) = &gens[i];
-                let p = e.checked_mul(g)?;
-                products += 1;
-                if products > MAX_PRODUCTS {
-                    return Err(EngineError::Invalid(format!(
-                        "--new-only: more than {MAX_PRODUCTS} products of known integrals; \
-                         search a smaller space"
-                    )));
-                }
-                let mu = (*mu).max(*gdeg);
-                if let Some((re, im)) = problem.coordinates_of_parts(&p) {
-                    for v in [re, im] {
-                        if !v.is_empty() {
-                            spanning.push((mu, v));
-                        }
-                    }
-                }
-                if extendable(i, sum) {
-                    next.push((i, p, sum, mu));
-                }
-            }
-        }
-        if next.is_empty() {
-            break;
-        }
-        level = next;
-    }
-    // With parameters kept symbolic, `a·I` is generated by `I`: it joins the span before the
-    // basis integrals of `I`'s degree.
-    for (i, v) in multiples {
-        spanning.push((total(&basis[*i].fixed) - 1, v.clone()));
-    }
-    spanning.sort_by_key(|s| s.0);
     // By increasing degree N: the products of factors of degree < N join the span, then each
     // basis integral of degree N is new unless it lies in the span (of those and of the new
     // ones so far).
-    let degrees_of: Vec<i64> = basis.iter().map(|b| total(&b.fixed)).collect();
     let mut order: Vec<usize> = (0..basis.len()).collect();
     order.sort_by_key(|&k| (degrees_of[k], k));
     let dim = problem.unknowns.len();
-    let decide = |exact: bool| -> Option<Vec<usize>> {
+    let decide = |exact: bool, spanning: &[(i64, SparseVec<Rational>)]| -> Option<Vec<usize>> {
         let mut fp = Echelon::<Fp>::new(dim);
         let mut q = Echelon::<Rational>::new(dim);
         // Vectors by identifier, for checking dependencies exactly.
@@ -1239,7 +1233,9 @@ fn new_integrals(
             match fp.insert(id, &modular::to_fp(v)?) {
                 None => new.push(k),
                 Some(dep) => {
-                    // Independence modulo p is certain; a dependency is checked over Q.
+                    // A dependency is checked over Q. Independence modulo p is independence
+                    // over Q unless p divides a minor of the span (its rank then drops
+                    // modulo p): `exact_complement` rules that out.
                     let coeffs = modular::reconstruct_vec(&dep)?;
                     let mut acc: FxHashMap<usize, Rational> = FxHashMap::default();
                     for (id, c) in &coeffs {
@@ -1259,9 +1255,21 @@ fn new_integrals(
         new.sort_unstable();
         Some(new)
     };
-    let new = match decide(false) {
-        Some(r) => r,
-        None => decide(true).expect("exact elimination always decides"),
+    // Modulo p first (unless asked for Q alone); over Q when a denominator vanishes modulo p
+    // or a dependency found modulo p does not hold over Q.
+    let modular = match options.exact_complement {
+        false => generated(false)?,
+        true => None,
+    };
+    let (new, products) = match modular.and_then(|(span, n)| Some((decide(false, &span)?, n))) {
+        Some(found) => found,
+        None => {
+            let (span, n) = generated(true)?.expect("the span over Q always forms");
+            (
+                decide(true, &span).expect("exact elimination always decides"),
+                n,
+            )
+        }
     };
     Ok(NewIntegrals {
         known: known_names,
@@ -1269,6 +1277,172 @@ fn new_integrals(
         new,
         products,
     })
+}
+
+/// Every product of at least two generators whose degrees fit (degrees in the momenta and,
+/// without negative powers, in the coordinates add up), by increasing number of factors with
+/// non-decreasing indices so that each monomial comes once, stamped with the largest degree of
+/// its factors: the real and imaginary parts of those that lie in the space join `span`. How
+/// many products were formed, or `None` when one has a denominator that vanishes modulo p
+/// (`span` not exact).
+fn span_products(
+    problem: &Problem,
+    gens: &[(Expr, (i64, i64), i64)],
+    bounds: (i64, i64),
+    laurent: bool,
+    span: &mut Stamped,
+) -> Result<Option<usize>, EngineError> {
+    let fits = |d: (i64, i64)| d.0 <= bounds.0 && (laurent || d.1 <= bounds.1);
+    // The generators' degrees on their own, read for every pair that is then not formed, and
+    // the least of them from each index on: a product that no generator from its last index
+    // on can extend is not kept for the next level.
+    let gen_degrees: Vec<(i64, i64)> = gens.iter().map(|g| g.1).collect();
+    let mut least = vec![(i64::MAX, i64::MAX); gens.len() + 1];
+    for (i, d) in gen_degrees.iter().enumerate().rev() {
+        least[i] = (least[i + 1].0.min(d.0), least[i + 1].1.min(d.1));
+    }
+    let extendable = |i: usize, d: (i64, i64)| {
+        fits((
+            d.0.saturating_add(least[i].0),
+            d.1.saturating_add(least[i].1),
+        ))
+    };
+    let mut level: Vec<(usize, Expr, (i64, i64), i64)> = gens
+        .iter()
+        .enumerate()
+        .map(|(i, g)| (i, g.0.clone(), g.1, g.2))
+        .collect();
+    let mut products = 0;
+    let max_factors = (bounds.0 + bounds.1).max(1) as usize + 1;
+    for _ in 1..max_factors {
+        let mut next = Vec::new();
+        for (last, e, d, mu) in &level {
+            for (i, gd) in gen_degrees.iter().enumerate().skip(*last) {
+                let sum = (d.0 + gd.0, d.1 + gd.1);
+                if !fits(sum) {
+                    continue;
+                }
+                let (g, _, gdeg) = &gens[i];
+                let p = e.checked_mul(g)?;
+                products += 1;
+                if products > MAX_PRODUCTS {
+                    return Err(EngineError::Invalid(format!(
+                        "--new-only: more than {MAX_PRODUCTS} products of known integrals; \
+                         search a smaller space"
+                    )));
+                }
+                let mu = (*mu).max(*gdeg);
+                if span.add_parts(problem, mu, &p).is_none() {
+                    return Ok(None);
+                }
+                if extendable(i, sum) {
+                    next.push((i, p, sum, mu));
+                }
+            }
+        }
+        if next.is_empty() {
+            break;
+        }
+        level = next;
+    }
+    Ok(Some(products))
+}
+
+/// Vectors that join the span of what is generated, each stamped with the degree from which
+/// it counts, and kept only when it is independent of those of its stamp so far: modulo p, or
+/// over Q when `exact`. What is dropped lies in the span of what is kept, modulo p or over Q,
+/// so the pass modulo p decides with the same span as with every vector, and checks its
+/// dependencies over Q with vectors that are kept; the products of a search at degree 8 are
+/// some 380 000 vectors, of which a few thousand are kept.
+struct Stamped {
+    dim: usize,
+    exact: bool,
+    /// By stamp: the basis of the kept vectors, and the kept vectors over Q.
+    groups: BTreeMap<i64, (Independent, Vec<SparseVec<Rational>>)>,
+}
+
+/// The vectors of one stamp so far, as a basis modulo p or over Q.
+enum Independent {
+    Modular(Echelon<Fp>),
+    Exact(Echelon<Rational>),
+}
+
+impl Stamped {
+    fn new(dim: usize, exact: bool) -> Self {
+        Stamped {
+            dim,
+            exact,
+            groups: BTreeMap::new(),
+        }
+    }
+
+    /// The group of `stamp`, with its basis and its kept vectors.
+    fn group(&mut self, stamp: i64) -> &mut (Independent, Vec<SparseVec<Rational>>) {
+        let (dim, exact) = (self.dim, self.exact);
+        self.groups.entry(stamp).or_insert_with(|| {
+            let basis = if exact {
+                Independent::Exact(Echelon::new(dim))
+            } else {
+                Independent::Modular(Echelon::new(dim))
+            };
+            (basis, Vec::new())
+        })
+    }
+
+    /// Adds `v` under `stamp`; `None` when a denominator of `v` vanishes modulo p.
+    fn add(&mut self, stamp: i64, v: SparseVec<Rational>) -> Option<()> {
+        let (basis, kept) = self.group(stamp);
+        let id = kept.len();
+        let independent = match basis {
+            Independent::Modular(e) => e.extend(id, &modular::to_fp(&v)?),
+            Independent::Exact(e) => e.extend(id, &v),
+        };
+        if independent {
+            kept.push(v);
+        }
+        Some(())
+    }
+
+    /// Adds the coordinates of the real and imaginary parts of `p` under `stamp`, if they lie
+    /// in the space; `None` when a denominator vanishes modulo p. Modulo p the coordinates are
+    /// taken modulo p first, and over Q only for a part that is kept.
+    fn add_parts(&mut self, problem: &Problem, stamp: i64, p: &Expr) -> Option<()> {
+        if self.exact {
+            if let Some((re, im)) = problem.coordinates_of_parts(p) {
+                for v in [re, im] {
+                    if !v.is_empty() {
+                        self.add(stamp, v)?;
+                    }
+                }
+            }
+            return Some(());
+        }
+        let Some(parts) = problem.coordinates_of_parts_mod_p(p)? else {
+            return Some(());
+        };
+        let (basis, kept) = self.group(stamp);
+        let Independent::Modular(e) = basis else {
+            unreachable!("a modular span has modular bases")
+        };
+        let mut exact_parts = None;
+        for (part, v) in parts.iter().enumerate() {
+            if v.is_empty() || !e.extend(kept.len(), v) {
+                continue;
+            }
+            let (re, im) = exact_parts
+                .get_or_insert_with(|| problem.coordinates_of_parts(p).expect("in the space"));
+            kept.push(std::mem::take(if part == 0 { re } else { im }));
+        }
+        Some(())
+    }
+
+    /// The kept vectors with their stamps, by increasing stamp.
+    fn into_vectors(self) -> Vec<(i64, SparseVec<Rational>)> {
+        self.groups
+            .into_iter()
+            .flat_map(|(stamp, (_, kept))| kept.into_iter().map(move |v| (stamp, v)))
+            .collect()
+    }
 }
 
 #[cfg(test)]
@@ -1311,6 +1485,82 @@ mod tests {
         let outside = f.re() + rotor.parse("x^2").unwrap();
         assert_eq!(problem.coordinates(&outside), None);
         assert_eq!(problem.coordinates_of_parts(&outside), None);
+    }
+
+    #[test]
+    fn the_complement_over_q_alone_is_the_modular_one() {
+        let rotor = systems::harmonic_rotor();
+        for (m, n, d) in [(1, 1, 4), (2, 1, 3)] {
+            let options = SearchOptions::new(SearchSpace::new(d, d, d))
+                .when(rotor.resonance(m, n).unwrap())
+                .new_only();
+            let modular = search(&rotor, &options).unwrap().new.unwrap();
+            let exact = search(&rotor, &options.exact_complement())
+                .unwrap()
+                .new
+                .unwrap();
+            assert!(!modular.new.is_empty() && modular.generated > 0);
+            assert_eq!(
+                (modular.new, modular.generated, modular.products),
+                (exact.new, exact.generated, exact.products)
+            );
+        }
+    }
+
+    #[test]
+    fn a_stamp_keeps_the_parts_of_a_product_in_both_fields() {
+        let rotor = systems::harmonic_rotor();
+        let h = rotor.hamiltonian().clone();
+        let problem = Problem::new(&rotor, &SearchSpace::new(2, 1, 2), &[], h, None).unwrap();
+        // f = Σ (a_j + i b_j) φ_j/3 and i·f, whose parts are those of f again.
+        let mut f = Expr::zero(&problem.vars);
+        for j in (0..problem.unknowns.len()).step_by(5) {
+            let c = GaussianRational::new(Rational::new(j as i64 % 7 - 3, 3), Rational::new(1, 3));
+            f = f + problem.expr(j, &Rational::one()).unwrap().scale(&c);
+        }
+        let i_f = f.scale(&GaussianRational::new(Rational::zero(), Rational::one()));
+        let (re, im) = problem.coordinates_of_parts(&f).unwrap();
+        for exact in [false, true] {
+            let mut span = Stamped::new(problem.unknowns.len(), exact);
+            assert_eq!(span.add_parts(&problem, 2, &f), Some(()));
+            assert_eq!(span.add_parts(&problem, 2, &i_f), Some(()));
+            let outside = f.clone() + rotor.parse("x^2").unwrap();
+            assert_eq!(span.add_parts(&problem, 2, &outside), Some(()));
+            assert_eq!(span.into_vectors(), [(2, re.clone()), (2, im.clone())]);
+        }
+    }
+
+    #[test]
+    fn a_stamp_keeps_only_independent_vectors() {
+        let v = |entries: &[(usize, i64)]| -> SparseVec<Rational> {
+            entries
+                .iter()
+                .map(|&(j, x)| (j, Rational::from(x)))
+                .collect()
+        };
+        for exact in [false, true] {
+            let mut span = Stamped::new(4, exact);
+            let a = v(&[(0, 1), (2, 3)]);
+            let b = v(&[(1, 2), (2, -1)]);
+            let sum = v(&[(0, 1), (1, 2), (2, 2)]);
+            for (stamp, x) in [
+                (3, a.clone()),
+                (3, b.clone()),
+                (3, sum),
+                (1, b.clone()),
+                (3, a.clone()),
+            ] {
+                assert_eq!(span.add(stamp, x), Some(()));
+            }
+            // p divides a denominator: no residue, so only over Q is it kept.
+            let unmappable = vec![(3, Rational::new(1, modular::PRIME as i64))];
+            assert_eq!(span.add(2, unmappable.clone()).is_some(), exact);
+            let mut expected = vec![(1, b.clone()), (3, a), (3, b)];
+            if exact {
+                expected.insert(1, (2, unmappable));
+            }
+            assert_eq!(span.into_vectors(), expected);
+        }
     }
 
     #[test]

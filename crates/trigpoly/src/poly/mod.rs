@@ -711,6 +711,13 @@ impl<C: Coefficient> Term<'_, C> {
         C::from_parts(&self.poly.content, &self.poly.coeffs[self.k])
     }
 
+    /// The term's coefficient in the primitive part: the coefficient is the polynomial's
+    /// [`Poly::content`] times this (exact modular or integer work can take the two apart,
+    /// with no rational product per term).
+    pub fn primitive_coeff(&self) -> &C::Int {
+        &self.poly.coeffs[self.k]
+    }
+
     /// The exponent of `v` (for an angle, `k` in `e^{ikθ}`).
     pub fn exponent(&self, v: Var) -> i64 {
         self.poly.layout().get(self.poly.exp(self.k), v.index())
