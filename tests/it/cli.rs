@@ -285,7 +285,11 @@ fn cli_bad_usage_exits_2_with_a_message() {
         ),
         (&["frobnicate"][..], "unrecognized subcommand 'frobnicate'"),
         (
-            &["search", "systems/harmonic-rotor.toml", "--exact-complement"][..],
+            &[
+                "search",
+                "systems/harmonic-rotor.toml",
+                "--exact-complement",
+            ][..],
             "the following required arguments were not provided",
         ),
         (&["paper", "--bogus"][..], "unexpected argument '--bogus'"),

@@ -1466,7 +1466,7 @@ mod tests {
                 Rational::new(1, j as i64 + 1),
             );
             let c = GaussianRational::new(x.clone(), y.clone());
-            f = f + problem.expr(j, &Rational::one()).unwrap().scale(&c);
+            f += problem.expr(j, &Rational::one()).unwrap().scale(&c);
             if !x.is_zero() {
                 a.push((j, x));
             }
@@ -1516,7 +1516,7 @@ mod tests {
         let mut f = Expr::zero(&problem.vars);
         for j in (0..problem.unknowns.len()).step_by(5) {
             let c = GaussianRational::new(Rational::new(j as i64 % 7 - 3, 3), Rational::new(1, 3));
-            f = f + problem.expr(j, &Rational::one()).unwrap().scale(&c);
+            f += problem.expr(j, &Rational::one()).unwrap().scale(&c);
         }
         let i_f = f.scale(&GaussianRational::new(Rational::zero(), Rational::one()));
         let (re, im) = problem.coordinates_of_parts(&f).unwrap();
