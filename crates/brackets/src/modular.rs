@@ -257,7 +257,8 @@ struct Row<F> {
 /// Inserting a vector either extends the basis or returns its dependency on the earlier
 /// independent vectors: `v_id = Σ c_j v_j`. Inserting vectors in a chosen order gives, for each
 /// dependent one, a relation with the earlier ones only, which is how the kernel of a matrix
-/// comes out in reduced form (one kernel vector per dependent column).
+/// comes out in reduced form (one kernel vector per dependent column). The vectors it takes
+/// may also list their entries in any order, an index more than once (the entries add up).
 ///
 /// A reduction, and the combination it makes of inserted vectors, add into dense scratch
 /// vectors kept between calls and read back only the entries they touched, and it visits only

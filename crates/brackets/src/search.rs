@@ -627,12 +627,13 @@ impl Problem {
             let c = t.coeff();
             (c.re, c.im)
         })?;
-        Some((re, im))
+        Some((sum_by_index(re), sum_by_index(im)))
     }
 
     /// [`Problem::coordinates_of_parts`] modulo p, with the content of `f` applied to each
-    /// coefficient of its primitive part (no rational product per term): `None` when the
-    /// content's denominator vanishes modulo p, `Some(None)` outside the space.
+    /// coefficient of its primitive part (no rational product per term), as entries in any
+    /// order with an index possibly twice (an [`Echelon`] adds them up as they come): `None`
+    /// when the content's denominator vanishes modulo p, `Some(None)` outside the space.
     fn coordinates_of_parts_mod_p(&self, f: &Expr) -> Option<Option<[SparseVec<Fp>; 2]>> {
         let content = Fp::from_rational(f.content())?;
         Some(self.parts_by_slot(f, |t| {
@@ -643,8 +644,9 @@ impl Problem {
     }
 
     /// The coordinates of the real and imaginary parts of `f` in a field `F`, given each
-    /// term's coefficient `(re, im)` in `F`; `None` when a monomial of `f` is outside the
-    /// space. Where `f` has `a e^{ik·θ} + b e^{−ik·θ}` (times `φ`, `k` canonical), that is
+    /// term's coefficient `(re, im)` in `F`, as entries in the order of the terms (an index
+    /// twice when `f` has both `e^{±ik·θ}` of it); `None` when a monomial of `f` is outside
+    /// the space. Where `f` has `a e^{ik·θ} + b e^{−ik·θ}` (times `φ`, `k` canonical), that is
     /// `(a + b) cos k·θ + i(a − b) sin k·θ`: its real part has `Re a + Re b` on the cosine
     /// and `Im b − Im a` on the sine, its imaginary part `Im a + Im b` and `Re a − Re b`.
     fn parts_by_slot<F: Field>(
@@ -680,7 +682,7 @@ impl Problem {
             push_nonzero(&mut im, cos, b);
             push_nonzero(&mut im, sin, im_sin);
         }
-        Some([sum_by_index(re), sum_by_index(im)])
+        Some([re, im])
     }
 }
 

@@ -1,6 +1,6 @@
 //! `MonomialIndex`: a map from the monomials of one variable set to values, keyed by their
-//! packed words. Looking a polynomial's term up hashes and compares a word or two and
-//! allocates nothing, where a map keyed by exponent vectors unpacks each term into a new
+//! packed words (up to two words as one fixed-size key, hashed and compared inline). Looking
+//! a polynomial's term up hashes and compares a word or two and allocates nothing, where a map keyed by exponent vectors unpacks each term into a new
 //! vector, hashes it and compares it element by element (the coordinates of a function in a
 //! basis of monomials, for a search, are one lookup per term).
 
@@ -28,15 +28,39 @@ use crate::varset::Vars;
 #[derive(Clone, Debug)]
 pub struct MonomialIndex<V> {
     vars: Vars,
-    map: FxHashMap<Box<[u64]>, V>,
+    map: Map<V>,
+}
+
+/// The map by the width of the monomials: up to [`NARROW`] words as an array padded with
+/// zeros (a slice key costs a call to compare and hashes its length), wider ones as slices.
+#[derive(Clone, Debug)]
+enum Map<V> {
+    Narrow(FxHashMap<[u64; NARROW], V>),
+    Wide(FxHashMap<Box<[u64]>, V>),
+}
+
+/// The most words of a monomial kept as an array key.
+const NARROW: usize = 2;
+
+/// The words of a monomial of at most [`NARROW`] words, padded with zeros.
+#[inline]
+fn narrow(words: &[u64]) -> [u64; NARROW] {
+    let mut key = [0; NARROW];
+    key[..words.len()].copy_from_slice(words);
+    key
 }
 
 impl<V> MonomialIndex<V> {
     /// An empty index of monomials of `vars`.
     pub fn new(vars: &Vars) -> Self {
+        let map = if vars.layout().words <= NARROW {
+            Map::Narrow(FxHashMap::default())
+        } else {
+            Map::Wide(FxHashMap::default())
+        };
         MonomialIndex {
             vars: vars.clone(),
-            map: FxHashMap::default(),
+            map,
         }
     }
 
@@ -45,14 +69,17 @@ impl<V> MonomialIndex<V> {
     /// An error when `exps` has the wrong length or an exponent is past the degree limit.
     pub fn insert(&mut self, exps: &[i64], value: V) -> Result<Option<V>, AlgebraError> {
         let key = self.pack(exps)?;
-        Ok(self.map.insert(key.into_boxed_slice(), value))
+        Ok(match &mut self.map {
+            Map::Narrow(map) => map.insert(narrow(&key), value),
+            Map::Wide(map) => map.insert(key.into_boxed_slice(), value),
+        })
     }
 
     /// The value at the monomial with exponents `exps`, if any (none for a vector of the
     /// wrong length or past the degree limit, which no monomial has).
     pub fn get(&self, exps: &[i64]) -> Option<&V> {
         let key = self.pack(exps).ok()?;
-        self.map.get(key.as_slice())
+        self.get_words(&key)
     }
 
     /// The value at the monomial of `term`, if any; none when the term's polynomial belongs
@@ -61,17 +88,29 @@ impl<V> MonomialIndex<V> {
         if !Vars::ptr_eq(&self.vars, &term.poly.vars) {
             return None;
         }
-        self.map.get(term.poly.exp(term.k))
+        self.get_words(term.poly.exp(term.k))
+    }
+
+    /// The value at the monomial of these packed words.
+    #[inline]
+    fn get_words(&self, words: &[u64]) -> Option<&V> {
+        match &self.map {
+            Map::Narrow(map) => map.get(&narrow(words)),
+            Map::Wide(map) => map.get(words),
+        }
     }
 
     /// The number of monomials in the index.
     pub fn len(&self) -> usize {
-        self.map.len()
+        match &self.map {
+            Map::Narrow(map) => map.len(),
+            Map::Wide(map) => map.len(),
+        }
     }
 
     /// Whether the index holds no monomial.
     pub fn is_empty(&self) -> bool {
-        self.map.is_empty()
+        self.len() == 0
     }
 
     /// The variable set of the monomials.
@@ -140,6 +179,36 @@ mod tests {
             .unwrap();
         let g = Expr::parse(&other, "7").unwrap();
         assert_eq!(index.get_term(&g.terms().next().unwrap()), None);
+    }
+
+    #[test]
+    fn monomials_of_three_words_are_found_too() {
+        // Twelve coordinates of 12 bits: three words, past the array keys.
+        let names: Vec<String> = (0..12).map(|i| format!("x{i}")).collect();
+        let vars = names
+            .iter()
+            .fold(VarSet::builder(), |b, n| b.coordinate(n))
+            .build()
+            .unwrap();
+        assert_eq!(vars.monomial_words(), 3);
+        let mut index = MonomialIndex::new(&vars);
+        let unit = |i: usize, e: i64| {
+            let mut exps = vec![0; 12];
+            exps[i] = e;
+            exps
+        };
+        for i in 0..12 {
+            assert_eq!(index.insert(&unit(i, 2), i), Ok(None));
+        }
+        let f = Expr::parse(&vars, "x0^2 + x5^2 + x11^2 + x11 + x3*x4").unwrap();
+        let found: Vec<_> = f
+            .terms()
+            .filter_map(|t| index.get_term(&t).copied())
+            .collect();
+        assert_eq!(found, [0, 5, 11]);
+        assert_eq!(index.get(&unit(7, 2)), Some(&7));
+        assert_eq!(index.get(&unit(7, -2)), None);
+        assert_eq!(index.len(), 12);
     }
 
     #[test]
