@@ -3,7 +3,7 @@
 
 use std::fmt;
 
-use crate::number::{Coefficient, GaussianRational, Rational};
+use crate::number::{Coefficient, GaussianRational, Magnitude, Rational};
 use crate::poly::{CosSinTerm, Poly, TrigMonomial};
 use crate::varset::{VarKind, VarSet};
 
@@ -351,9 +351,12 @@ fn write_term(
     }
 }
 
-/// `(negative, |numerator|, denominator, general complex text)` of a coefficient.
-fn split_coeff(c: &GaussianRational, style: Style) -> (bool, Rational, Rational, Option<String>) {
-    let one = Rational::one();
+/// `(negative, |numerator|, denominator, general complex text)` of a coefficient, the two
+/// magnitudes borrowed from it (one for a complex coefficient, written whole in the text).
+fn split_coeff(
+    c: &GaussianRational,
+    style: Style,
+) -> (bool, Magnitude<'_>, Magnitude<'_>, Option<String>) {
     let (part, complex) = match (c.re.is_zero(), c.im.is_zero()) {
         (_, true) => (&c.re, false),
         (true, false) => (&c.im, false),
@@ -363,30 +366,39 @@ fn split_coeff(c: &GaussianRational, style: Style) -> (bool, Rational, Rational,
         let text = match style {
             Style::Ascii => format!("({c})"),
             Style::Latex => {
-                let (neg, body) = render_term_free(&c.im, style);
-                let sign = if neg { "-" } else { "+" };
+                let sign = if c.im.is_negative() { "-" } else { "+" };
                 let re = render_term_free(&c.re, style);
                 let re = if re.0 { format!("-{}", re.1) } else { re.1 };
-                format!(r"\left({re} {sign} {body} i\right)")
+                format!(r"\left({re} {sign} {}\right)", imaginary(&c.im, style))
             }
             Style::Unicode => {
-                let (neg, body) = render_term_free(&c.im, style);
-                let sign = if neg { "−" } else { "+" };
+                let sign = if c.im.is_negative() { "−" } else { "+" };
                 let re = render_term_free(&c.re, style);
                 let re = if re.0 { format!("−{}", re.1) } else { re.1 };
-                format!("({re} {sign} {body}i)")
+                format!("({re} {sign} {})", imaginary(&c.im, style))
             }
         };
-        return (false, one.clone(), one, Some(text));
+        return (false, Magnitude::Word(1), Magnitude::Word(1), Some(text));
     }
-    let negative = part.is_negative();
-    let abs = part.abs();
-    (
-        negative,
-        Rational::from(abs.numer()),
-        Rational::from(abs.denom()),
-        None,
-    )
+    let (numerator, denominator) = part.magnitudes();
+    (part.is_negative(), numerator, denominator, None)
+}
+
+/// `|q|·i` beside a real part: `i` alone for `±1`, the `i` on the numerator in text (`5i/7`,
+/// where `5/7i` reads as `5/(7i)`), after the fraction in LaTeX (`\frac{5}{7} i`).
+fn imaginary(q: &Rational, style: Style) -> String {
+    let (numerator, denominator) = q.magnitudes();
+    let n = if numerator.is_one() {
+        String::new()
+    } else {
+        numerator.to_string()
+    };
+    match (style, denominator.is_one()) {
+        (_, true) if style == Style::Latex && !n.is_empty() => format!("{n} i"),
+        (_, true) => format!("{n}i"),
+        (Style::Latex, false) => format!(r"\frac{{{numerator}}}{{{denominator}}} i"),
+        (_, false) => format!("{n}i/{denominator}"),
+    }
 }
 
 fn render_term_free(q: &Rational, style: Style) -> (bool, String) {

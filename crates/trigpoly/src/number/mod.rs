@@ -21,6 +21,7 @@ pub(crate) use gcd::binary_gcd;
 pub use gaussian::{GaussianAcc, GaussianInteger, GaussianRational, ParseGaussianError};
 pub(crate) use integer::Wide256;
 pub use integer::{ExactDivisor, Integer, IntegerAcc, IntegerView};
+pub(crate) use rational::Magnitude;
 pub use rational::{ParseRationalError, Rational};
 
 /// The integer ring under a coefficient field: `Integer` (Z) or `GaussianInteger` (Z\[i\]).

@@ -36,7 +36,46 @@ enum Repr {
     Big(Box<BigRational>),
 }
 
+/// The absolute value of a numerator, or a denominator, borrowed for printing.
+#[derive(Clone, Copy, Debug)]
+pub(crate) enum Magnitude<'a> {
+    Word(u64),
+    Big(&'a num_bigint::BigUint),
+}
+
+impl Magnitude<'_> {
+    pub(crate) fn is_one(&self) -> bool {
+        match self {
+            Magnitude::Word(w) => *w == 1,
+            Magnitude::Big(b) => **b == num_bigint::BigUint::from(1u32),
+        }
+    }
+}
+
+impl fmt::Display for Magnitude<'_> {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            Magnitude::Word(w) => w.fmt(f),
+            Magnitude::Big(b) => b.fmt(f),
+        }
+    }
+}
+
 impl Rational {
+    /// `|numerator|` and the denominator, borrowed (no copy of a big value).
+    pub(crate) fn magnitudes(&self) -> (Magnitude<'_>, Magnitude<'_>) {
+        match &self.0 {
+            Repr::Small { num, den } => (
+                Magnitude::Word(num.unsigned_abs()),
+                Magnitude::Word(den.unsigned_abs()),
+            ),
+            Repr::Big(b) => (
+                Magnitude::Big(b.numer().magnitude()),
+                Magnitude::Big(b.denom().magnitude()),
+            ),
+        }
+    }
+
     /// `num/den` from `i128` parts, reduced; `den` nonzero.
     fn from_i128(num: i128, den: i128) -> Rational {
         debug_assert!(den != 0);

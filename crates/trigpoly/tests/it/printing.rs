@@ -37,6 +37,31 @@ fn prints(vars: &Vars, src: &str, [unicode, latex, ascii]: [&str; 3]) {
     );
 }
 
+/// A coefficient with both parts is one factor in parentheses: `i` alone for `±i`, and a
+/// fraction's `i` on its numerator in text (`5/7i` would read as `5/(7i)`).
+#[test]
+fn complex_coefficients_print_their_imaginary_unit_unambiguously() {
+    let vars = plane();
+    prints(
+        &vars,
+        "(2 + i)*x - (1 - i)*y",
+        [
+            "(2 + i) x + (−1 + i) y",
+            r"\left(2 + i\right) x + \left(-1 + i\right) y",
+            "(2 + i)*x + (-1 + i)*y",
+        ],
+    );
+    prints(
+        &vars,
+        "(3 - 5/7*i)*x + (1/2 + i/2)*p_x + (-4 + 6*i)*M",
+        [
+            "(1/2 + i/2) p_x + (3 − 5i/7) x + (−4 + 6i) M",
+            r"\left(\frac{1}{2} + \frac{1}{2} i\right) p_{x} + \left(3 - \frac{5}{7} i\right) x + \left(-4 + 6 i\right) M",
+            "(1/2 + 1/2*i)*p_x + (3 - 5/7*i)*x + (-4 + 6*i)*M",
+        ],
+    );
+}
+
 #[test]
 fn kinetic_energy_prints_as_a_fraction() {
     let vars = plane();
@@ -270,6 +295,7 @@ fn print_parse_roundtrip_text_of_the_paper_examples() {
         "2*x",
         "(p_x - M*omega*y)*cos(theta) + (p_y + M*omega*x)*sin(theta)",
         "(3 + 4*i)*x",
+        "(3 + 5/7*i)*x - (2 - i)*y + (1/2 - i/2)*p_x",
     ] {
         let f: G = p(&vars, src);
         let text = f.to_string();
