@@ -18,10 +18,13 @@ struct Printed {
 }
 
 const SUM: u8 = 1;
-const PRODUCT: u8 = 2;
-const NEG: u8 = 3;
-const POWER: u8 = 4;
-const ATOM: u8 = 5;
+/// A quotient: a factor of a product only in parentheses, since `x/2y` and `5/7i` read as
+/// `x/(2y)` and `5/(7i)` (written `(x/2)y`, `x·(5/7)i`).
+const QUOTIENT: u8 = 2;
+const PRODUCT: u8 = 3;
+const NEG: u8 = 4;
+const POWER: u8 = 5;
+const ATOM: u8 = 6;
 
 impl Printed {
     fn atom(text: String) -> Self {
@@ -85,7 +88,7 @@ impl LoadedSystem {
             ExprKind::Integer(n) => Printed::atom(n.to_string()),
             ExprKind::Name(n) => Printed::atom(self.display_name(n)),
             ExprKind::Neg(a) => {
-                let a = self.print(a).wrapped(PRODUCT);
+                let a = self.print(a).wrapped(QUOTIENT);
                 Printed {
                     text: format!("−{}", a.text),
                     prec: NEG,
@@ -100,7 +103,7 @@ impl LoadedSystem {
                     "−"
                 };
                 let a = self.print(a);
-                let b = self.print(b).wrapped(PRODUCT);
+                let b = self.print(b).wrapped(QUOTIENT);
                 let b = if b.prec == NEG { b.wrapped(ATOM) } else { b };
                 Printed {
                     text: format!("{} {op} {}", a.text, b.text),
@@ -136,11 +139,11 @@ impl LoadedSystem {
                 }
             }
             ExprKind::Div(a, b) => {
-                let a = self.print(a).wrapped(PRODUCT);
+                let a = self.print(a).wrapped(QUOTIENT);
                 let b = self.print(b).wrapped(POWER);
                 Printed {
                     text: format!("{}/{}", a.text, b.text),
-                    prec: PRODUCT,
+                    prec: QUOTIENT,
                     first_long: a.first_long,
                     last_long: false,
                 }

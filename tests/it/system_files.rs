@@ -561,6 +561,42 @@ fn bracket_prints_the_normal_form() {
 
 /// A command reads all its arguments before it expands any: with a term limit that the first
 /// expression's expansion passes, a slip in a later argument is still what is reported.
+/// The inputs echoed in the paper's notation: a quotient that is a factor of a product is in
+/// parentheses (`x/2y` and `5/7i` would read as `x/(2y)` and `5/(7i)`), and a sum's or a
+/// minus sign's quotient is not; the result writes `i` on the numerator.
+#[test]
+fn echoed_quotients_inside_products_are_parenthesised() {
+    let out = run(
+        &[
+            "bracket",
+            "systems/harmonic-rotor.toml",
+            "x/2*y + 3/2*i*x - x/2/3 - (x/2)",
+            "p_x/(2*M)*y",
+            "--no-timings",
+        ],
+        0,
+    );
+    assert!(
+        out.contains(
+            "{(x/2)y + (3/2)ix − x/2/3 − x/2, (p_x/(2M))y} = y²/(4M) + (−1/3 + 3i/4) y/M\n"
+        ),
+        "{out}"
+    );
+    // The trajectory's claim of the harmonic rotor's solution: `(p_x_0/M) cos(φ)`.
+    let solution = run(
+        &[
+            "check",
+            "systems/harmonic-rotor-solution.toml",
+            "--no-timings",
+        ],
+        0,
+    );
+    assert!(
+        solution.contains("ω {x(t), p_φ} = −ω x_0 sin(φ) + (p_x_0/M) cos(φ)"),
+        "{solution}"
+    );
+}
+
 #[test]
 fn arguments_are_read_before_any_is_expanded() {
     let f = "systems/harmonic-rotor.toml";
