@@ -340,6 +340,16 @@ impl<F: Field> Accumulator<F> {
         self.dense.get(i).cloned().unwrap_or_else(F::zero)
     }
 
+    /// Whether every entry is zero; the accumulator is zero again.
+    fn clear(&mut self) -> bool {
+        let dense = &mut self.dense;
+        let mut zero = true;
+        for i in self.touched.drain(..) {
+            zero &= std::mem::replace(&mut dense[i], F::zero()).is_zero();
+        }
+        zero
+    }
+
     /// The nonzero entries by increasing index; the accumulator is zero again.
     fn take(&mut self) -> SparseVec<F> {
         // An index that cancelled and came back is listed twice, and read as zero the second
@@ -376,6 +386,17 @@ impl<F: Field> Echelon<F> {
     /// combination of inserted vectors that was subtracted (by increasing identifier; empty
     /// otherwise, which spares a row's combination for each row subtracted).
     fn reduce(&self, v: &SparseVec<F>, track: bool) -> (SparseVec<F>, SparseVec<F>) {
+        self.reduce_then(v, track, |residue, combo| (residue.take(), combo.take()))
+    }
+
+    /// Reduces `v` by the basis into the scratch accumulators, the residue and (when `track`)
+    /// the combination, and returns what `finish` reads of them; `finish` leaves both zero.
+    fn reduce_then<R>(
+        &self,
+        v: &SparseVec<F>,
+        track: bool,
+        finish: impl FnOnce(&mut Accumulator<F>, &mut Accumulator<F>) -> R,
+    ) -> R {
         // Checked before any is added, so that the scratch stays zero.
         if let Some((i, _)) = v.iter().find(|(i, _)| *i >= self.dim) {
             panic!("index {i} out of range {}", self.dim);
@@ -425,7 +446,7 @@ impl<F: Field> Echelon<F> {
                 }
             }
         }
-        (acc.take(), combo.take())
+        finish(acc, combo)
     }
 
     /// Inserts `v` under the identifier `id` (larger than every earlier one). `None` if it is
@@ -464,7 +485,8 @@ impl<F: Field> Echelon<F> {
 
     /// Whether `v` lies in the span of the inserted vectors.
     pub fn contains(&self, v: &SparseVec<F>) -> bool {
-        self.reduce(v, false).0.is_empty()
+        // Whether the residue is zero needs no sorted list of it.
+        self.reduce_then(v, false, |residue, _| residue.clear())
     }
 
     /// The pivots of the basis rows, in insertion order.
