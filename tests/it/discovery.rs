@@ -58,6 +58,21 @@ const COMMANDS: &[(&str, &str)] = &[
          --when 'p_theta = 2*I*omega' --degree 2",
     ),
     (
+        "h21-new-8",
+        "superint search systems/harmonic-rotor.toml --when 'p_theta = 2*I*omega' \
+         --momenta-degree 8 --positions-degree 8 --trig-degree 8 --new-only --known P_2_1,Q_2_1",
+    ),
+    (
+        "h23-new-8",
+        "superint search systems/harmonic-rotor.toml --when 'p_theta = 2*I*omega/3' \
+         --momenta-degree 8 --positions-degree 8 --trig-degree 8 --new-only --known P_2_3,Q_2_3",
+    ),
+    (
+        "h12-new-6",
+        "superint search systems/harmonic-rotor.toml --when 'p_theta = I*omega/2' \
+         --momenta-degree 6 --positions-degree 6 --trig-degree 6 --new-only --known P_1_2,Q_1_2",
+    ),
+    (
         "h12-new",
         "superint search systems/harmonic-rotor.toml --when 'p_theta = I*omega/2' \
          --momenta-degree 4 --positions-degree 4 --trig-degree 4 --new-only --known P_1_2,Q_1_2",
@@ -320,6 +335,52 @@ fn harmonic_1_1_new_integrals_to_degree_8_are_the_same_four() {
             "5 claims: 5 proved, 0 refuted",
         ],
     );
+}
+
+/// At 2:1, 2:3 and 1:2, twice the degree of §1.2–1.4 finds the same new integrals and no
+/// other: the names of the new ones run from the first to the last of the same count.
+#[test]
+fn other_resonances_at_twice_the_degree_find_the_same_new_integrals() {
+    for (name, dimension, generated, new, first_a) in [
+        (
+            "h21-new-8",
+            425,
+            421,
+            "I7 I8 I9 I10",
+            "A7 (k = 1) = p_y² + 2iMωy p_y − M²ω²y²",
+        ),
+        (
+            "h23-new-8",
+            347,
+            343,
+            "I7 I8 I9 I10",
+            "A7 (k = 3) = p_y² + 2iMωy p_y − M²ω²y²",
+        ),
+        ("h12-new-6", 254, 252, "I3 I4", "A3 (k = 2) = p_y + iMωy"),
+    ] {
+        let out = expect(
+            name,
+            &[
+                &format!("Dimension of the space of integrals: {dimension}."),
+                &format!("the generated ones span {generated} of the {dimension} dimensions"),
+                first_a,
+            ],
+        );
+        let listed = out
+            .split("New integrals:")
+            .nth(1)
+            .and_then(|rest| rest.split("Those of").next())
+            .expect("a list of new integrals");
+        let names: Vec<&str> = listed
+            .lines()
+            .filter_map(|l| l.trim_start().split(' ').next())
+            .filter(|w| {
+                w.strip_prefix('I')
+                    .is_some_and(|n| !n.is_empty() && n.chars().all(|c| c.is_ascii_digit()))
+            })
+            .collect();
+        assert_eq!(names.join(" "), new, "`{name}`:\n{out}");
+    }
 }
 
 #[test]
