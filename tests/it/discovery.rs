@@ -73,6 +73,11 @@ const COMMANDS: &[(&str, &str)] = &[
          --momenta-degree 6 --positions-degree 6 --trig-degree 6 --new-only --known P_1_2,Q_1_2",
     ),
     (
+        "g11-new-6",
+        "superint search systems/gravity-rotor.toml --when 'p_theta = I*omega' \
+         --momenta-degree 6 --positions-degree 6 --trig-degree 6 --new-only",
+    ),
+    (
         "h12-new",
         "superint search systems/harmonic-rotor.toml --when 'p_theta = I*omega/2' \
          --momenta-degree 4 --positions-degree 4 --trig-degree 4 --new-only --known P_1_2,Q_1_2",
@@ -337,10 +342,10 @@ fn harmonic_1_1_new_integrals_to_degree_8_are_the_same_four() {
     );
 }
 
-/// At 2:1, 2:3 and 1:2, twice the degree of §1.2–1.4 finds the same new integrals and no
-/// other: the names of the new ones run from the first to the last of the same count.
+/// At 2:1, 2:3 and 1:2, and with gravity at 1:1, higher degrees than in §1.2–1.4 and §2 find
+/// the same new integrals and no other (their names listed in order).
 #[test]
-fn other_resonances_at_twice_the_degree_find_the_same_new_integrals() {
+fn higher_degrees_find_the_same_new_integrals() {
     for (name, dimension, generated, new, first_a) in [
         (
             "h21-new-8",
@@ -357,6 +362,13 @@ fn other_resonances_at_twice_the_degree_find_the_same_new_integrals() {
             "A7 (k = 3) = p_y² + 2iMωy p_y − M²ω²y²",
         ),
         ("h12-new-6", 254, 252, "I3 I4", "A3 (k = 2) = p_y + iMωy"),
+        (
+            "g11-new-6",
+            336,
+            332,
+            "I3 I4 I5 I6",
+            "I3 = p_y cos θ + (Mωy + Mg/ω) sin θ",
+        ),
     ] {
         let out = expect(
             name,
