@@ -19,7 +19,7 @@ struct Printed {
 
 const SUM: u8 = 1;
 /// A quotient: a factor of a product only in parentheses, since `x/2y` and `5/7i` read as
-/// `x/(2y)` and `5/(7i)` (written `(x/2)y`, `x·(5/7)i`).
+/// `x/(2y)` and `5/(7i)` (written `(x/2)y`, `x(5/7)i`).
 const QUOTIENT: u8 = 2;
 const PRODUCT: u8 = 3;
 const NEG: u8 = 4;

@@ -388,16 +388,14 @@ fn split_coeff(
 /// where `5/7i` reads as `5/(7i)`), after the fraction in LaTeX (`\frac{5}{7} i`).
 fn imaginary(q: &Rational, style: Style) -> String {
     let (numerator, denominator) = q.magnitudes();
-    let n = if numerator.is_one() {
-        String::new()
-    } else {
-        numerator.to_string()
-    };
-    match (style, denominator.is_one()) {
-        (_, true) if style == Style::Latex && !n.is_empty() => format!("{n} i"),
-        (_, true) => format!("{n}i"),
-        (Style::Latex, false) => format!(r"\frac{{{numerator}}}{{{denominator}}} i"),
-        (_, false) => format!("{n}i/{denominator}"),
+    let latex = style == Style::Latex;
+    match (latex, numerator.is_one(), denominator.is_one()) {
+        (_, true, true) => "i".to_string(),
+        (true, false, true) => format!("{numerator} i"),
+        (false, false, true) => format!("{numerator}i"),
+        (true, _, false) => format!(r"\frac{{{numerator}}}{{{denominator}}} i"),
+        (false, true, false) => format!("i/{denominator}"),
+        (false, false, false) => format!("{numerator}i/{denominator}"),
     }
 }
 

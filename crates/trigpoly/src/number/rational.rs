@@ -7,7 +7,7 @@ use std::str::FromStr;
 
 use num_bigint::BigInt;
 use num_rational::BigRational;
-use num_traits::{Signed, ToPrimitive, Zero};
+use num_traits::{One, Signed, ToPrimitive, Zero};
 
 use super::gcd::{binary_gcd, gcd_u128};
 use super::Integer;
@@ -47,7 +47,7 @@ impl Magnitude<'_> {
     pub(crate) fn is_one(&self) -> bool {
         match self {
             Magnitude::Word(w) => *w == 1,
-            Magnitude::Big(b) => **b == num_bigint::BigUint::from(1u32),
+            Magnitude::Big(b) => b.is_one(),
         }
     }
 }
