@@ -73,27 +73,25 @@ impl Fp {
 
     /// `a mod p` for an integer of any size.
     pub fn from_integer(a: &trigpoly::Integer) -> Self {
-        integer_mod(a)
+        match a.to_i64() {
+            Some(v) => Fp::from_i64(v),
+            None => bigint_mod(&a.to_bigint()),
+        }
     }
 
-    /// `q mod p`, or `None` if `p` divides the denominator.
+    /// `q mod p`, or `None` if `p` divides the denominator (which can be so in a machine
+    /// word too: `p` is below 2⁶²).
     pub fn from_rational(q: &Rational) -> Option<Self> {
-        if let Some((n, d)) = q.small_parts() {
-            // A denominator fits an i64, so p (below 2⁶²) can still divide it.
-            let (n, d) = (Fp::from_i64(n), Fp::from_i64(d));
-            return match d.0 {
-                0 => None,
-                1 => Some(n),
-                _ => Some(n.mul(&d.inv())),
-            };
-        }
-        let n = integer_mod(&q.numer());
+        let (n, d) = match q.small_parts() {
+            Some((n, d)) => (Fp::from_i64(n), Fp::from_i64(d)),
+            None => (Fp::from_integer(&q.numer()), Fp::from_integer(&q.denom())),
+        };
         // An integer needs no inverse (a power by `p − 2`, some 120 products).
-        if q.is_integer() {
-            return Some(n);
+        match d.0 {
+            0 => None,
+            1 => Some(n),
+            _ => Some(n.mul(&d.inv())),
         }
-        let d = integer_mod(&q.denom());
-        (!d.is_zero()).then(|| n.mul(&d.inv()))
     }
 
     fn pow(self, mut e: u64) -> Self {
@@ -107,13 +105,6 @@ impl Fp {
             e >>= 1;
         }
         acc
-    }
-}
-
-fn integer_mod(a: &trigpoly::Integer) -> Fp {
-    match a.to_i64() {
-        Some(v) => Fp::from_i64(v),
-        None => bigint_mod(&a.to_bigint()),
     }
 }
 
@@ -435,8 +426,9 @@ impl<F: Field> Echelon<F> {
             if c.is_zero() {
                 continue;
             }
+            let minus_c = F::zero().sub(&c);
             for (i, x) in &row.vec {
-                if acc.add(*i, &F::zero().sub(&c.mul(x))) {
+                if acc.add(*i, &minus_c.mul(x)) {
                     meet(queue, *i);
                 }
             }

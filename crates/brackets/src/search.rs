@@ -511,8 +511,9 @@ impl Problem {
                     cosines.insert(with_angles(u, 1), j);
                 }
                 Trig::Sin => {
-                    let cos = cosines[&with_angles(u, 1)];
-                    slots.insert(&with_angles(u, 1), Slot::Canonical { cos, sin: j })?;
+                    let plus = with_angles(u, 1);
+                    let cos = cosines[&plus];
+                    slots.insert(&plus, Slot::Canonical { cos, sin: j })?;
                     slots.insert(&with_angles(u, -1), Slot::Conjugate { cos, sin: j })?;
                 }
             }
@@ -705,11 +706,7 @@ fn sum_by_index<F: Field>(mut v: SparseVec<F>) -> SparseVec<F> {
         same
     });
     v.retain(|x| !x.1.is_zero());
-    // Kept (a product's coordinates may join the span until the end): moved into a vector of
-    // its length, where `v` has room for two entries per term of the function.
-    let mut out = Vec::with_capacity(v.len());
-    out.append(&mut v);
-    out
+    v
 }
 
 /// Union–find.
