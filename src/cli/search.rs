@@ -4,7 +4,7 @@
 use std::path::PathBuf;
 
 use anyhow::{anyhow, bail, Context};
-use brackets::search::{SearchOptions, SearchSpace};
+use brackets::search::{SearchOptions, SearchSpace, DEFAULT_MAX_PRODUCTS};
 use brackets::System;
 use clap::Args;
 use superint::discovery::{
@@ -87,6 +87,11 @@ pub struct SearchArgs {
     /// span.
     #[arg(long, requires = "new_only")]
     exact_complement: bool,
+    /// With --new-only, stop with an error past N products of integrals.
+    #[arg(long, value_name = "N", requires = "new_only",
+          default_value_t = DEFAULT_MAX_PRODUCTS as u64,
+          value_parser = clap::value_parser!(u64).range(1..))]
+    max_products: u64,
     /// More known integrals for --new-only: expressions or family instances (P_1_1),
     /// separated by commas.
     #[arg(long, value_name = "EXPRS")]
@@ -198,6 +203,7 @@ pub fn run(job: &SearchJob) -> anyhow::Result<bool> {
     }
     options.new_only = a.new_only;
     options.exact_complement = a.exact_complement;
+    options.max_products = usize::try_from(a.max_products).unwrap_or(usize::MAX);
     if let Some(known) = &a.known {
         for k in known.split(',').map(str::trim).filter(|k| !k.is_empty()) {
             let e = subject.parse(k).map_err(|e| anyhow!("--known: {e}"))?;

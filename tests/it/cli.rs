@@ -292,6 +292,39 @@ fn cli_bad_usage_exits_2_with_a_message() {
             ][..],
             "the following required arguments were not provided",
         ),
+        (
+            &[
+                "search",
+                "systems/harmonic-rotor.toml",
+                "--max-products",
+                "9",
+            ][..],
+            "the following required arguments were not provided",
+        ),
+        (
+            &[
+                "search",
+                "systems/harmonic-rotor.toml",
+                "--new-only",
+                "--max-products",
+                "0",
+            ][..],
+            "invalid value '0' for '--max-products <N>'",
+        ),
+        // The products of integrals up to degree 2 at p_θ = Iω are more than nine.
+        (
+            &[
+                "search",
+                "systems/harmonic-rotor.toml",
+                "--when",
+                "p_theta = I*omega",
+                "--new-only",
+                "--max-products",
+                "9",
+            ][..],
+            "more than 9 products of integrals; search a smaller space, or raise the limit \
+             with --max-products",
+        ),
         (&["paper", "--bogus"][..], "unexpected argument '--bogus'"),
     ] {
         let o = superint(args);

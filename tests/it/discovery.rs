@@ -27,6 +27,11 @@ const COMMANDS: &[(&str, &str)] = &[
          --momenta-degree 8 --positions-degree 8 --trig-degree 8 --new-only",
     ),
     (
+        "h11-new-10",
+        "superint search systems/harmonic-rotor.toml --when 'p_theta = I*omega' \
+         --momenta-degree 10 --positions-degree 10 --trig-degree 10 --new-only",
+    ),
+    (
         "h11-new-pq",
         "superint search systems/harmonic-rotor.toml --when 'p_theta = I*omega' \
          --momenta-degree 4 --positions-degree 4 --trig-degree 4 --new-only --known P_1_1,Q_1_1",
@@ -334,7 +339,24 @@ fn harmonic_1_1_new_integrals_to_degree_8_are_the_same_four() {
             "Dimension of the space of integrals: 825.",
             "≤ 5: 196, ≤ 6: 336, ≤ 7: 540, ≤ 8: 825.",
             "Known integrals in the space: H, L, G1, G2.",
-            "(189706 products formed); the generated ones span 821 of the 825 dimensions",
+            "(20290 products formed); the generated ones span 821 of the 825 dimensions",
+            "New integrals: I3 = p_y cos θ + Mωy sin θ I4 = −Mωy cos θ + p_y sin θ \
+             I5 = p_x cos θ + Mωx sin θ I6 = −Mωx cos θ + p_x sin θ Those",
+            "5 claims: 5 proved, 0 refuted",
+        ],
+    );
+}
+
+#[test]
+fn harmonic_1_1_new_integrals_to_degree_10_are_the_same_four() {
+    expect(
+        "h11-new-10",
+        &[
+            "91476 unknowns",
+            "Dimension of the space of integrals: 1716.",
+            "≤ 8: 825, ≤ 9: 1210, ≤ 10: 1716.",
+            "Known integrals in the space: H, L, G1, G2.",
+            "the generated ones span 1712 of the 1716 dimensions",
             "New integrals: I3 = p_y cos θ + Mωy sin θ I4 = −Mωy cos θ + p_y sin θ \
              I5 = p_x cos θ + Mωx sin θ I6 = −Mωx cos θ + p_x sin θ Those",
             "5 claims: 5 proved, 0 refuted",

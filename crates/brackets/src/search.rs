@@ -38,7 +38,6 @@
 //! ```
 
 use rustc_hash::FxHashMap;
-use std::collections::BTreeMap;
 use std::time::Instant;
 
 use itertools::Itertools;
@@ -115,7 +114,14 @@ pub struct SearchOptions {
     /// unless the prime divides a minor of the span of the known products, which this rules
     /// out at some cost in time.
     pub exact_complement: bool,
+    /// The most products of integrals [`SearchOptions::new_only`] forms before it stops with
+    /// an error ([`DEFAULT_MAX_PRODUCTS`] unless set).
+    pub max_products: usize,
 }
+
+/// The most products of integrals `--new-only` forms unless told otherwise: a few seconds'
+/// work (the 1:1 resonance up to degree 12 forms some 560 000).
+pub const DEFAULT_MAX_PRODUCTS: usize = 1_000_000;
 
 impl SearchOptions {
     /// Searches a space with parameters fixed to 1 and no condition.
@@ -128,6 +134,7 @@ impl SearchOptions {
             known: Vec::new(),
             new_only: false,
             exact_complement: false,
+            max_products: DEFAULT_MAX_PRODUCTS,
         }
     }
 
@@ -159,6 +166,12 @@ impl SearchOptions {
     /// With the complement decided over Q alone ([`SearchOptions::exact_complement`]).
     pub fn exact_complement(mut self) -> Self {
         self.exact_complement = true;
+        self
+    }
+
+    /// With at most `n` products of integrals for the complement.
+    pub fn max_products(mut self, n: usize) -> Self {
+        self.max_products = n;
         self
     }
 
@@ -758,6 +771,25 @@ fn parameter_values(
     out
 }
 
+/// The search's problem with the parameters at `parameters`, in `H` and in the condition.
+fn fixed_problem(
+    system: &System,
+    options: &SearchOptions,
+    parameters: &[(Var, Rational)],
+) -> Result<Problem, EngineError> {
+    let h = fix_parameters(system.hamiltonian(), parameters)?;
+    let condition = match &options.condition {
+        Some(c) => Some(
+            c.subs
+                .iter()
+                .map(|(v, e)| Ok((*v, fix_parameters(e, parameters)?)))
+                .collect::<Result<Vec<_>, EngineError>>()?,
+        ),
+        None => None,
+    };
+    Problem::new(system, &options.space, &options.symbolic, h, condition)
+}
+
 /// Substitutes parameter values.
 pub fn fix_parameters(e: &Expr, values: &[(Var, Rational)]) -> Result<Expr, EngineError> {
     let vars = e.vars();
@@ -823,17 +855,7 @@ pub fn search(system: &System, options: &SearchOptions) -> Result<SearchResult, 
         }
     }
     let parameters = parameter_values(system, condition, &options.fixed, &options.symbolic);
-    let h = fix_parameters(system.hamiltonian(), &parameters)?;
-    let cond_fixed = match condition {
-        Some(c) => Some(
-            c.subs
-                .iter()
-                .map(|(v, e)| Ok((*v, fix_parameters(e, &parameters)?)))
-                .collect::<Result<Vec<_>, EngineError>>()?,
-        ),
-        None => None,
-    };
-    let problem = Problem::new(system, &options.space, &options.symbolic, h, cond_fixed)?;
+    let problem = fixed_problem(system, options, &parameters)?;
     let n = problem.unknowns.len();
 
     // The images {φ_j, H} as real equations over Q.
@@ -1073,9 +1095,6 @@ fn degrees(f: &Expr) -> (i64, i64) {
     )
 }
 
-/// The most products `--new-only` forms before giving up.
-const MAX_PRODUCTS: usize = 1_000_000;
-
 /// A function times the least monomial in the `symbolic` parameters that leaves none of them
 /// with a negative exponent (`G1 = p_x p_y/(2M) + …` becomes `M·G1`).
 fn without_parameter_denominators(f: &Expr, symbolic: &[Var]) -> Result<Expr, EngineError> {
@@ -1138,42 +1157,16 @@ fn new_integrals(
     // The filtration by total degree in the coordinates and momenta: an integral of degree N
     // is generated when it lies in the span of the known integrals, the constants, the
     // products of at least two integrals of degree < N (known or found) and the parameter
-    // multiples of integrals of degree ≤ N. Generators are the
-    // `e^{ik·θ}` components of those integrals (each component of an integral is one, since
-    // the flow keeps `k`), made monic: complex components multiply without the cancellations
-    // of real ones (`Re(J Q̄)` lies in the space when `Re J · Re Q` does not).
-    let total = |f: &Expr| {
-        f.total_degree(&[VarKind::Coordinate, VarKind::Momentum])
-            .unwrap_or(0)
-    };
-    let mut gens: Vec<(Expr, (i64, i64), i64)> = Vec::new();
+    // multiples of integrals of degree ≤ N.
     let sources = known
         .iter()
         .map(|k| &k.0)
         .chain(basis.iter().map(|b| &b.fixed));
-    for f in sources {
-        let degree = total(f);
-        if degree == 0 {
-            continue;
-        }
-        for c in problem.components(f)? {
-            let Some(lead) = c.terms().next().map(|t| t.coeff()) else {
-                continue;
-            };
-            let c = c.scale(&lead.try_inv().expect("nonzero"));
-            match gens.iter_mut().find(|g| g.0 == c) {
-                Some(g) => g.2 = g.2.min(degree),
-                None => {
-                    let d = degrees(&c);
-                    gens.push((c, d, degree));
-                }
-            }
-        }
-    }
+    let gens = generators(problem, sources)?;
     let bounds = (space.momenta_degree as i64, space.positions_degree as i64);
-    let degrees_of: Vec<i64> = basis.iter().map(|b| total(&b.fixed)).collect();
+    let degrees_of: Vec<i64> = basis.iter().map(|b| total_degree(&b.fixed)).collect();
     let generated = |exact: bool| {
-        let mut span = Stamped::new(problem.unknowns.len(), exact);
+        let span = Stamped::new(problem.unknowns.len(), exact);
         // The known integrals and the constants, then the products; with parameters kept
         // symbolic, `a·I` is generated by `I`: it joins the span before the basis integrals of
         // `I`'s degree. `None` when a denominator vanishes modulo p.
@@ -1187,14 +1180,8 @@ fn new_integrals(
                 .iter()
                 .map(|(i, v)| (degrees_of[*i] - 1, v.clone())),
         );
-        if vectors
-            .into_iter()
-            .any(|(stamp, v)| span.add(stamp, v).is_none())
-        {
-            return Ok(None);
-        }
-        let products = span_products(problem, &gens, bounds, space.laurent, &mut span)?;
-        Ok::<_, EngineError>(products.map(|n| (span.into_vectors(), n)))
+        let limits = (kernel.len(), options.max_products);
+        span_of_products(problem, &gens, vectors, bounds, space.laurent, span, limits)
     };
     // By increasing degree N: the products of factors of degree < N join the span, then each
     // basis integral of degree N is new unless it lies in the span (of those and of the new
@@ -1278,90 +1265,264 @@ fn new_integrals(
     })
 }
 
-/// Every product of at least two generators whose degrees fit (degrees in the momenta and,
-/// without negative powers, in the coordinates add up), by increasing number of factors with
-/// non-decreasing indices so that each monomial comes once, stamped with the largest degree of
-/// its factors: the real and imaginary parts of those that lie in the space join `span`. How
-/// many products were formed, or `None` when one has a denominator that vanishes modulo p
-/// (`span` not exact).
-fn span_products(
+/// A generator of what is generated: an `e^{ik·θ}` component of an integral (each component
+/// of an integral is one, since the flow keeps `k`), made monic. Complex components multiply
+/// without the cancellations of real ones (`Re(J Q̄)` lies in the space when `Re J · Re Q`
+/// does not).
+struct Generator {
+    expr: Expr,
+    /// Degrees in the momenta and in the coordinates, which add up in products.
+    degrees: (i64, i64),
+    /// The least total degree of an integral it is a component of: products count from the
+    /// largest stamp of their factors on.
+    stamp: i64,
+}
+
+/// Total degree in the coordinates and momenta together: the filtration's degree.
+fn total_degree(f: &Expr) -> i64 {
+    f.total_degree(&[VarKind::Coordinate, VarKind::Momentum])
+        .unwrap_or(0)
+}
+
+/// The generators of the integrals `sources` (constants left out), each component once.
+fn generators<'a>(
     problem: &Problem,
-    gens: &[(Expr, (i64, i64), i64)],
-    bounds: (i64, i64),
-    laurent: bool,
-    span: &mut Stamped,
-) -> Result<Option<usize>, EngineError> {
-    let fits = |d: (i64, i64)| d.0 <= bounds.0 && (laurent || d.1 <= bounds.1);
-    // The generators' degrees on their own, read for every pair that is then not formed, and
-    // the least of them from each index on: a product that no generator from its last index
-    // on can extend is not kept for the next level.
-    let gen_degrees: Vec<(i64, i64)> = gens.iter().map(|g| g.1).collect();
-    let mut least = vec![(i64::MAX, i64::MAX); gens.len() + 1];
-    for (i, d) in gen_degrees.iter().enumerate().rev() {
-        least[i] = (least[i + 1].0.min(d.0), least[i + 1].1.min(d.1));
-    }
-    let extendable = |i: usize, d: (i64, i64)| {
-        fits((
-            d.0.saturating_add(least[i].0),
-            d.1.saturating_add(least[i].1),
-        ))
-    };
-    let mut level: Vec<(usize, Expr, (i64, i64), i64)> = gens
-        .iter()
-        .enumerate()
-        .map(|(i, g)| (i, g.0.clone(), g.1, g.2))
-        .collect();
-    let mut products = 0;
-    let max_factors = (bounds.0 + bounds.1).max(1) as usize + 1;
-    for _ in 1..max_factors {
-        let mut next = Vec::new();
-        for (last, e, d, mu) in &level {
-            for (i, gd) in gen_degrees.iter().enumerate().skip(*last) {
-                let sum = (d.0 + gd.0, d.1 + gd.1);
-                if !fits(sum) {
-                    continue;
-                }
-                let (g, _, gdeg) = &gens[i];
-                let p = e.checked_mul(g)?;
-                products += 1;
-                if products > MAX_PRODUCTS {
-                    return Err(EngineError::Invalid(format!(
-                        "--new-only: more than {MAX_PRODUCTS} products of known integrals; \
-                         search a smaller space"
-                    )));
-                }
-                let mu = (*mu).max(*gdeg);
-                if span.add_parts(problem, mu, &p).is_none() {
-                    return Ok(None);
-                }
-                if extendable(i, sum) {
-                    next.push((i, p, sum, mu));
-                }
+    sources: impl IntoIterator<Item = &'a Expr>,
+) -> Result<Vec<Generator>, EngineError> {
+    let mut gens: Vec<Generator> = Vec::new();
+    for f in sources {
+        let degree = total_degree(f);
+        if degree == 0 {
+            continue;
+        }
+        for c in problem.components(f)? {
+            let Some(lead) = c.terms().next().map(|t| t.coeff()) else {
+                continue;
+            };
+            let c = c.scale(&lead.try_inv().expect("nonzero"));
+            match gens.iter_mut().find(|g| g.expr == c) {
+                Some(g) => g.stamp = g.stamp.min(degree),
+                None => gens.push(Generator {
+                    degrees: degrees(&c),
+                    expr: c,
+                    stamp: degree,
+                }),
             }
         }
-        if next.is_empty() {
-            break;
-        }
-        level = next;
     }
-    Ok(Some(products))
+    Ok(gens)
 }
 
-/// Vectors that join the span of what is generated, each stamped with the degree from which
-/// it counts, and kept only when it is independent of those of its stamp so far: modulo p, or
-/// over Q when `exact`. What is dropped lies in the span of what is kept, modulo p or over Q,
-/// so the pass modulo p decides with the same span as with every vector, and checks its
-/// dependencies over Q with vectors that are kept; the products of a search at degree 8 are
-/// some 380 000 vectors, of which each stamp keeps at most the dimension of the integrals
-/// (825 there; 5 780 in all).
+/// Vectors, each with the stamp from which it counts.
+type StampedVectors = Vec<(i64, SparseVec<Rational>)>;
+
+/// The span of `vectors` (`(stamp, coordinates)`) and of the products of `gens` whose degrees
+/// fit `bounds` (momenta, and coordinates unless `laurent`), in `span`: its kept vectors by
+/// increasing stamp and how many products were formed, or `None` when a denominator vanishes
+/// modulo p. The products stop once the span has `dimension`, that of the integrals, and
+/// fail past `max_products`.
+fn span_of_products(
+    problem: &Problem,
+    gens: &[Generator],
+    vectors: StampedVectors,
+    bounds: (i64, i64),
+    laurent: bool,
+    mut span: Stamped,
+    (dimension, max_products): (usize, usize),
+) -> Result<Option<(StampedVectors, usize)>, EngineError> {
+    let products = Spanning {
+        problem,
+        bounds,
+        laurent,
+        dimension,
+        span: &mut span,
+        formed: 0,
+        max_products,
+    }
+    .run(gens, vectors)?;
+    Ok(products.map(|n| (span.into_vectors(), n)))
+}
+
+/// The products of at least two generators whose degrees fit (degrees in the momenta and,
+/// without negative powers, in the coordinates add up), each monomial once (non-decreasing
+/// indices), stamped with the largest stamp of its factors, formed by increasing stamp: the
+/// real and imaginary parts of those that lie in the space join the span, after the given
+/// vectors of stamps up to theirs. Everything in the span is an integral of the space
+/// (products of integrals are integrals), so once the span has the dimension of the integrals,
+/// every integral is generated from that stamp on and no more products are formed.
+struct Spanning<'a> {
+    problem: &'a Problem,
+    bounds: (i64, i64),
+    laurent: bool,
+    /// The dimension of the space of integrals.
+    dimension: usize,
+    span: &'a mut Stamped,
+    /// Products formed so far (a prefix formed again in a later stamp's round counts again).
+    formed: usize,
+    /// The most products to form.
+    max_products: usize,
+}
+
+/// Why the products stop before the last: the span holds every integral, a denominator
+/// vanishes modulo p, or an error.
+enum Stop {
+    Spanned,
+    NotModular,
+    Failed(EngineError),
+}
+
+impl From<EngineError> for Stop {
+    fn from(e: EngineError) -> Self {
+        Stop::Failed(e)
+    }
+}
+
+impl Spanning<'_> {
+    /// Forms the products of `gens` and adds them and `vectors` (`(stamp, coordinates)`) to
+    /// the span. How many products were formed, or `None` when a denominator vanishes modulo
+    /// p (the span is then not exact).
+    fn run(
+        mut self,
+        gens: &[Generator],
+        mut vectors: StampedVectors,
+    ) -> Result<Option<usize>, EngineError> {
+        let mut gens: Vec<&Generator> = gens.iter().collect();
+        gens.sort_by_key(|g| g.stamp);
+        vectors.sort_by_key(|v| v.0);
+        let mut vectors = vectors.into_iter().peekable();
+        let mut all = || -> Result<(), Stop> {
+            let mut lo = 0;
+            while lo < gens.len() {
+                let stamp = gens[lo].stamp;
+                let hi = lo + gens[lo..].iter().take_while(|g| g.stamp == stamp).count();
+                while let Some((at, v)) = vectors.next_if(|v| v.0 <= stamp) {
+                    self.add(|span| span.add(at, v))?;
+                }
+                self.round(&gens[..hi], lo, stamp)?;
+                lo = hi;
+            }
+            for (at, v) in vectors.by_ref() {
+                self.add(|span| span.add(at, v))?;
+            }
+            Ok(())
+        };
+        match all() {
+            Ok(()) | Err(Stop::Spanned) => Ok(Some(self.formed)),
+            Err(Stop::NotModular) => Ok(None),
+            Err(Stop::Failed(e)) => Err(e),
+        }
+    }
+
+    /// Adds to the span; stops when a denominator vanishes modulo p or the span is full.
+    fn add(&mut self, add: impl FnOnce(&mut Stamped) -> Option<()>) -> Result<(), Stop> {
+        add(self.span).ok_or(Stop::NotModular)?;
+        match self.span.rank() >= self.dimension {
+            true => Err(Stop::Spanned),
+            false => Ok(()),
+        }
+    }
+
+    /// The products whose last factor is one of `gens[lo..]`, the generators of `stamp` (the
+    /// others have smaller stamps), depth first; a prefix of factors below `lo` only is formed
+    /// again, its own stamp's round having added it.
+    fn round(&mut self, gens: &[&Generator], lo: usize, stamp: i64) -> Result<(), Stop> {
+        // The least degrees from each index on.
+        let mut least = vec![(i64::MAX, i64::MAX); gens.len() + 1];
+        for (i, g) in gens.iter().enumerate().rev() {
+            least[i] = (
+                least[i + 1].0.min(g.degrees.0),
+                least[i + 1].1.min(g.degrees.1),
+            );
+        }
+        let round = Round {
+            gens,
+            lo,
+            stamp,
+            least,
+            max_factors: (self.bounds.0 + self.bounds.1).max(1) as usize + 1,
+        };
+        for (i, g) in gens.iter().enumerate() {
+            if round.extendable(self, i, g.degrees) {
+                round.extend(self, (i, &g.expr, g.degrees), 1)?;
+            }
+        }
+        Ok(())
+    }
+
+    fn fits(&self, d: (i64, i64)) -> bool {
+        d.0 <= self.bounds.0 && (self.laurent || d.1 <= self.bounds.1)
+    }
+}
+
+/// One stamp's depth-first walk over the products of [`Spanning::round`].
+struct Round<'g> {
+    gens: &'g [&'g Generator],
+    lo: usize,
+    stamp: i64,
+    /// From each index on, the least degrees of a generator.
+    least: Vec<(i64, i64)>,
+    max_factors: usize,
+}
+
+impl Round<'_> {
+    /// Whether a prefix whose last index is `last`, of degrees `d`, can take one more factor
+    /// and still fit: one from its last index on, and from `lo` on while it has none there.
+    fn extendable(&self, spanning: &Spanning, last: usize, d: (i64, i64)) -> bool {
+        let least = self.least[last.max(self.lo)];
+        spanning.fits((d.0.saturating_add(least.0), d.1.saturating_add(least.1)))
+    }
+
+    /// Extends the prefix `(last index, product, degrees)` of `factors` factors by each
+    /// generator from its last index on, and what fits further, depth first.
+    fn extend(
+        &self,
+        spanning: &mut Spanning,
+        (last, prefix, d): (usize, &Expr, (i64, i64)),
+        factors: usize,
+    ) -> Result<(), Stop> {
+        if factors >= self.max_factors {
+            return Ok(());
+        }
+        for (i, g) in self.gens.iter().enumerate().skip(last) {
+            let sum = (d.0 + g.degrees.0, d.1 + g.degrees.1);
+            if !spanning.fits(sum) || (i < self.lo && !self.extendable(spanning, i, sum)) {
+                continue;
+            }
+            let p = prefix.checked_mul(&g.expr).map_err(EngineError::from)?;
+            spanning.formed += 1;
+            if spanning.formed > spanning.max_products {
+                return Err(Stop::Failed(EngineError::Invalid(format!(
+                    "--new-only: more than {} products of integrals; search a smaller space, \
+                     or raise the limit with --max-products",
+                    spanning.max_products
+                ))));
+            }
+            if i >= self.lo {
+                let (problem, stamp) = (spanning.problem, self.stamp);
+                spanning.add(|span| span.add_parts(problem, stamp, &p))?;
+            }
+            if self.extendable(spanning, i, sum) {
+                self.extend(spanning, (i, &p, sum), factors + 1)?;
+            }
+        }
+        Ok(())
+    }
+}
+
+/// Vectors that join the span of what is generated, by non-decreasing stamp (the degree from
+/// which each counts), each kept only when it is independent of those kept so far: modulo p,
+/// or over Q when `exact`. What is dropped lies in the span of what is kept under its stamp or
+/// a smaller one, modulo p or over Q, so the pass modulo p decides with the same span as with
+/// every vector, and checks its dependencies over Q with vectors that are kept. At most the
+/// dimension of the integrals is kept (825 at degree 8 at the 1:1 resonance).
 struct Stamped {
-    dim: usize,
     exact: bool,
-    /// By stamp: the basis of the kept vectors, and the kept vectors over Q.
-    groups: BTreeMap<i64, (Independent, Vec<SparseVec<Rational>>)>,
+    basis: Independent,
+    /// The kept vectors over Q, with their stamps.
+    kept: StampedVectors,
 }
 
-/// The vectors of one stamp so far, as a basis modulo p or over Q.
+/// The vectors kept so far, as a basis modulo p or over Q.
 enum Independent {
     Modular(Echelon<Fp>),
     Exact(Echelon<Rational>),
@@ -1369,36 +1530,33 @@ enum Independent {
 
 impl Stamped {
     fn new(dim: usize, exact: bool) -> Self {
+        let basis = match exact {
+            true => Independent::Exact(Echelon::new(dim)),
+            false => Independent::Modular(Echelon::new(dim)),
+        };
         Stamped {
-            dim,
             exact,
-            groups: BTreeMap::new(),
+            basis,
+            kept: Vec::new(),
         }
     }
 
-    /// The group of `stamp`, with its basis and its kept vectors.
-    fn group(&mut self, stamp: i64) -> &mut (Independent, Vec<SparseVec<Rational>>) {
-        let (dim, exact) = (self.dim, self.exact);
-        self.groups.entry(stamp).or_insert_with(|| {
-            let basis = if exact {
-                Independent::Exact(Echelon::new(dim))
-            } else {
-                Independent::Modular(Echelon::new(dim))
-            };
-            (basis, Vec::new())
-        })
+    /// How many vectors are kept: the dimension of their span.
+    fn rank(&self) -> usize {
+        self.kept.len()
     }
 
-    /// Adds `v` under `stamp`; `None` when a denominator of `v` vanishes modulo p.
+    /// Adds `v` under `stamp`, no smaller than any stamp before it; `None` when a denominator
+    /// of `v` vanishes modulo p.
     fn add(&mut self, stamp: i64, v: SparseVec<Rational>) -> Option<()> {
-        let (basis, kept) = self.group(stamp);
-        let id = kept.len();
-        let independent = match basis {
+        debug_assert!(self.kept.last().is_none_or(|k| k.0 <= stamp));
+        let id = self.kept.len();
+        let independent = match &mut self.basis {
             Independent::Modular(e) => e.extend(id, &modular::to_fp(&v)?),
             Independent::Exact(e) => e.extend(id, &v),
         };
         if independent {
-            kept.push(v);
+            self.kept.push((stamp, v));
         }
         Some(())
     }
@@ -1420,28 +1578,26 @@ impl Stamped {
         let Some(parts) = problem.coordinates_of_parts_mod_p(p)? else {
             return Some(());
         };
-        let (basis, kept) = self.group(stamp);
-        let Independent::Modular(e) = basis else {
-            unreachable!("a modular span has modular bases")
+        debug_assert!(self.kept.last().is_none_or(|k| k.0 <= stamp));
+        let Independent::Modular(e) = &mut self.basis else {
+            unreachable!("a modular span has a modular basis")
         };
         let mut exact_parts = None;
         for (part, v) in parts.iter().enumerate() {
-            if v.is_empty() || !e.extend(kept.len(), v) {
+            if v.is_empty() || !e.extend(self.kept.len(), v) {
                 continue;
             }
             let (re, im) = exact_parts
                 .get_or_insert_with(|| problem.coordinates_of_parts(p).expect("in the space"));
-            kept.push(std::mem::take(if part == 0 { re } else { im }));
+            let v = std::mem::take(if part == 0 { re } else { im });
+            self.kept.push((stamp, v));
         }
         Some(())
     }
 
     /// The kept vectors with their stamps, by increasing stamp.
-    fn into_vectors(self) -> Vec<(i64, SparseVec<Rational>)> {
-        self.groups
-            .into_iter()
-            .flat_map(|(stamp, (_, kept))| kept.into_iter().map(move |v| (stamp, v)))
-            .collect()
+    fn into_vectors(self) -> StampedVectors {
+        self.kept
     }
 }
 
@@ -1531,7 +1687,7 @@ mod tests {
     }
 
     #[test]
-    fn a_stamp_keeps_only_independent_vectors() {
+    fn the_span_keeps_only_vectors_independent_of_those_before() {
         let v = |entries: &[(usize, i64)]| -> SparseVec<Rational> {
             entries
                 .iter()
@@ -1543,23 +1699,60 @@ mod tests {
             let a = v(&[(0, 1), (2, 3)]);
             let b = v(&[(1, 2), (2, -1)]);
             let sum = v(&[(0, 1), (1, 2), (2, 2)]);
+            // b under stamp 1 spans b under stamp 3 too.
             for (stamp, x) in [
+                (1, b.clone()),
                 (3, a.clone()),
                 (3, b.clone()),
                 (3, sum),
-                (1, b.clone()),
                 (3, a.clone()),
             ] {
                 assert_eq!(span.add(stamp, x), Some(()));
             }
+            assert_eq!(span.rank(), 2);
             // p divides a denominator: no residue, so only over Q is it kept.
             let unmappable = vec![(3, Rational::new(1, modular::PRIME as i64))];
-            assert_eq!(span.add(2, unmappable.clone()).is_some(), exact);
-            let mut expected = vec![(1, b.clone()), (3, a), (3, b)];
+            assert_eq!(span.add(4, unmappable.clone()).is_some(), exact);
+            let mut expected = vec![(1, b.clone()), (3, a)];
             if exact {
-                expected.insert(1, (2, unmappable));
+                expected.push((4, unmappable));
             }
             assert_eq!(span.into_vectors(), expected);
+        }
+    }
+
+    #[test]
+    fn products_stop_once_they_span_every_integral() {
+        // At the 1:1 resonance the products of the integrals up to degree 4 span what they
+        // span before the last stamp's products: told that dimension, the walk stops there.
+        let rotor = systems::harmonic_rotor();
+        let options =
+            SearchOptions::new(SearchSpace::new(4, 4, 4)).when(rotor.resonance(1, 1).unwrap());
+        let found = search(&rotor, &options).unwrap();
+        let parameters = parameter_values(&rotor, options.condition.as_ref(), &[], &[]);
+        let problem = fixed_problem(&rotor, &options, &parameters).unwrap();
+        let gens = generators(&problem, found.basis.iter().map(|b| &b.fixed)).unwrap();
+        let dim = problem.unknowns.len();
+        for exact in [false, true] {
+            let span = |dimension| {
+                let span = Stamped::new(dim, exact);
+                let limits = (dimension, DEFAULT_MAX_PRODUCTS);
+                span_of_products(&problem, &gens, Vec::new(), (4, 4), false, span, limits)
+                    .unwrap()
+                    .unwrap()
+            };
+            let (all, formed_all) = span(usize::MAX);
+            assert!(all.len() < found.basis.len());
+            let (stopped, formed) = span(all.len());
+            assert!(formed < formed_all, "{formed} of {formed_all}");
+            // The same span: every vector of the whole walk lies in that of the stopped one.
+            let mut basis = Echelon::<Rational>::new(dim);
+            for (id, (_, v)) in stopped.iter().enumerate() {
+                assert!(basis.insert(id, v).is_none());
+            }
+            assert!(all.iter().all(|(_, v)| basis.contains(v)));
+            // Stamps never decrease.
+            assert!(stopped.windows(2).all(|w| w[0].0 <= w[1].0));
         }
     }
 
