@@ -73,14 +73,14 @@ const COMMANDS: &[(&str, &str)] = &[
          --momenta-degree 8 --positions-degree 8 --trig-degree 8 --new-only --known P_2_3,Q_2_3",
     ),
     (
-        "h12-new-6",
+        "h12-new-8",
         "superint search systems/harmonic-rotor.toml --when 'p_theta = I*omega/2' \
-         --momenta-degree 6 --positions-degree 6 --trig-degree 6 --new-only --known P_1_2,Q_1_2",
+         --momenta-degree 8 --positions-degree 8 --trig-degree 8 --new-only --known P_1_2,Q_1_2",
     ),
     (
-        "g11-new-6",
+        "g11-new-8",
         "superint search systems/gravity-rotor.toml --when 'p_theta = I*omega' \
-         --momenta-degree 6 --positions-degree 6 --trig-degree 6 --new-only",
+         --momenta-degree 8 --positions-degree 8 --trig-degree 8 --new-only",
     ),
     (
         "h12-new",
@@ -383,11 +383,11 @@ fn higher_degrees_find_the_same_new_integrals() {
             "I7 I8 I9 I10",
             "A7 (k = 3) = p_y² + 2iMωy p_y − M²ω²y²",
         ),
-        ("h12-new-6", 254, 252, "I3 I4", "A3 (k = 2) = p_y + iMωy"),
+        ("h12-new-8", 635, 633, "I3 I4", "A3 (k = 2) = p_y + iMωy"),
         (
-            "g11-new-6",
-            336,
-            332,
+            "g11-new-8",
+            825,
+            821,
             "I3 I4 I5 I6",
             "I3 = p_y cos θ + (Mωy + Mg/ω) sin θ",
         ),
