@@ -155,7 +155,21 @@ impl Field for Fp {
     }
     fn inv(&self) -> Self {
         assert!(self.0 != 0, "inverse of zero in F_p");
-        self.pow(PRIME - 2)
+        if self.0 >> 32 != 0 {
+            return self.pow(PRIME - 2);
+        }
+        // Extended Euclid: after `p mod a` the remainders are below `a`, so a small residue
+        // (a denominator such as 2 or 4: most of those a search converts) takes a few
+        // divisions where the power takes some 120 products.
+        let (mut r0, mut r1) = (PRIME, self.0);
+        let (mut t0, mut t1) = (0i128, 1i128);
+        while r1 != 0 {
+            let q = r0 / r1;
+            (r0, r1) = (r1, r0 - q * r1);
+            (t0, t1) = (t1, t0 - i128::from(q) * t1);
+        }
+        debug_assert_eq!(r0, 1, "p is prime");
+        Fp(t0.rem_euclid(i128::from(PRIME)) as u64)
     }
 }
 
@@ -706,6 +720,32 @@ mod tests {
                 let want = (a as u128 * b as u128 % PRIME as u128) as u64;
                 assert_eq!(Fp(a).mul(&Fp(b)), Fp(want), "{a} * {b}");
             }
+        }
+    }
+
+    /// Inverses by Euclid (residues below 2³²) and by Fermat (the others) alike.
+    #[test]
+    fn inverses_multiply_to_one() {
+        let mut values: Vec<u64> = (1..=300).collect();
+        values.extend([
+            (1 << 32) - 1,
+            1 << 32,
+            (1 << 32) + 1,
+            1 << 61,
+            PRIME - 2,
+            PRIME - 1,
+        ]);
+        let mut x = 0xD1B5_4A32_D192_ED03u64;
+        for _ in 0..200 {
+            x ^= x << 13;
+            x ^= x >> 7;
+            x ^= x << 17;
+            values.extend([x % PRIME, x % (1 << 32)]);
+        }
+        for a in values.into_iter().filter(|a| a % PRIME != 0) {
+            let a = Fp::new(a);
+            assert_eq!(a.mul(&a.inv()), Fp(1), "{a:?}");
+            assert_eq!(a.inv(), a.pow(PRIME - 2), "{a:?}");
         }
     }
 

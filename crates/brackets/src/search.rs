@@ -377,8 +377,8 @@ fn exponent_vectors(n: usize, max: u32, signed: bool) -> Vec<Vec<i64>> {
 }
 
 /// Whether the first nonzero entry is positive (or all are zero).
-fn canonical(k: &[i64]) -> bool {
-    k.iter().find(|x| **x != 0).is_none_or(|x| *x > 0)
+fn canonical(k: impl IntoIterator<Item = i64>) -> bool {
+    k.into_iter().find(|x| *x != 0).is_none_or(|x| x > 0)
 }
 
 impl Problem {
@@ -411,7 +411,7 @@ impl Problem {
         let params = exponent_vectors(symbolic.len(), space.parameters_degree, false);
         let ks: Vec<Vec<i64>> = exponent_vectors(angles.len(), space.trig_degree, true)
             .into_iter()
-            .filter(|k| canonical(k))
+            .filter(|k| canonical(k.iter().copied()))
             .collect();
         // Each angular vector gives cos and sin, except k = 0.
         let trig_functions: usize = ks
@@ -538,18 +538,19 @@ impl Problem {
     /// unknowns): `Σ ∂f/∂q · (∂H/∂p)|_c − ∂f/∂p · (∂H/∂q)|_c`, the condition being a ring
     /// homomorphism that leaves `f` alone.
     fn image(&self, f: &Expr) -> Result<Expr, EngineError> {
-        let mut acc = Expr::zero(&self.vars);
+        let mut products = Vec::with_capacity(2 * self.dh.len());
         for (q, p, dp, dq) in &self.dh {
-            let fq = f.derivative(*q)?;
-            if !fq.is_zero() && !dp.is_zero() {
-                acc = acc.checked_add(&fq.checked_mul(dp)?)?;
+            if !dp.is_zero() {
+                products.push((f, *q, dp, false));
             }
-            let fp = f.derivative(*p)?;
-            if !fp.is_zero() && !dq.is_zero() {
-                acc = acc.checked_sub(&fp.checked_mul(dq)?)?;
+            if !dq.is_zero() {
+                products.push((f, *p, dq, true));
             }
         }
-        Ok(acc)
+        if products.is_empty() {
+            return Ok(Expr::zero(&self.vars));
+        }
+        Ok(Expr::sum_of_derivative_products(&products)?)
     }
 
     /// The unknown as a function.
@@ -858,31 +859,35 @@ pub fn search(system: &System, options: &SearchOptions) -> Result<SearchResult, 
     let problem = fixed_problem(system, options, &parameters)?;
     let n = problem.unknowns.len();
 
-    // The images {φ_j, H} as real equations over Q.
-    let mut rows: FxHashMap<(Vec<i64>, bool), usize> = FxHashMap::default();
+    // The images {φ_j, H} as real equations over Q: a row for the real and for the imaginary
+    // part of each monomial with a canonical `e^{ik·θ}`, numbered as they first appear.
+    let mut rows: MonomialIndex<[Option<usize>; 2]> = MonomialIndex::new(&problem.vars);
+    let mut nrows = 0;
     let mut columns: Vec<SparseVec<Rational>> = Vec::with_capacity(n);
     for j in 0..n {
         let image = problem.image(&problem.expr(j, &Rational::one())?)?;
         let mut col = Vec::new();
         for t in image.terms() {
-            let e = t.exponents();
-            let k: Vec<i64> = problem.angles.iter().map(|v| e[v.index()]).collect();
-            if !canonical(&k) {
+            if !canonical(problem.angles.iter().map(|v| t.exponent(*v))) {
                 continue;
             }
             let c = t.coeff();
-            for (part, x) in [(false, c.re), (true, c.im)] {
+            let row = rows
+                .get_or_insert_with_term(&t, || [None, None])
+                .expect("an image has the problem's variables");
+            for (part, x) in [c.re, c.im].into_iter().enumerate() {
                 if x.is_zero() {
                     continue;
                 }
-                let len = rows.len();
-                let r = *rows.entry((e.clone(), part)).or_insert(len);
+                let r = *row[part].get_or_insert_with(|| {
+                    nrows += 1;
+                    nrows - 1
+                });
                 col.push((r, x));
             }
         }
         columns.push(col);
     }
-    let nrows = rows.len();
     timings.equations = start.elapsed().as_secs_f64();
 
     // Connected components.

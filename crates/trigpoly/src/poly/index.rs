@@ -91,6 +91,28 @@ impl<V> MonomialIndex<V> {
         self.get_words(term.poly.exp(term.k))
     }
 
+    /// The value at the monomial of `term`, put there by `value` first if there is none;
+    /// none when the term's polynomial belongs to another variable set.
+    pub fn get_or_insert_with_term<C: Coefficient>(
+        &mut self,
+        term: &Term<'_, C>,
+        value: impl FnOnce() -> V,
+    ) -> Option<&mut V> {
+        if !Vars::ptr_eq(&self.vars, &term.poly.vars) {
+            return None;
+        }
+        let words = term.poly.exp(term.k);
+        Some(match &mut self.map {
+            Map::Narrow(map) => map.entry(narrow(words)).or_insert_with(value),
+            Map::Wide(map) => {
+                if !map.contains_key(words) {
+                    map.insert(words.into(), value());
+                }
+                map.get_mut(words).expect("just inserted")
+            }
+        })
+    }
+
     /// The value at the monomial of these packed words.
     #[inline]
     fn get_words(&self, words: &[u64]) -> Option<&V> {
@@ -209,6 +231,59 @@ mod tests {
         assert_eq!(index.get(&unit(7, 2)), Some(&7));
         assert_eq!(index.get(&unit(7, -2)), None);
         assert_eq!(index.len(), 12);
+    }
+
+    /// Numbering monomials by first appearance, as the search numbers its equations: one and
+    /// three words alike, and none for a term of another variable set.
+    #[test]
+    fn terms_are_numbered_by_first_appearance() {
+        let narrow = VarSet::builder()
+            .coordinate("x")
+            .coordinate("y")
+            .build()
+            .unwrap();
+        let names: Vec<String> = (0..12).map(|i| format!("x{i}")).collect();
+        let wide = names
+            .iter()
+            .fold(VarSet::builder(), |b, n| b.coordinate(n))
+            .build()
+            .unwrap();
+        for (vars, f, g) in [
+            (&narrow, "x^2 + 3*x*y - y", "y + x*y - 2*x^3 + x^2"),
+            (
+                &wide,
+                "x0^2 + 3*x0*x11 - x11",
+                "x11 + x0*x11 - 2*x0^3 + x0^2",
+            ),
+        ] {
+            let mut index = MonomialIndex::new(vars);
+            let mut number = |t: &Term<'_, crate::GaussianRational>| {
+                let next = index.len();
+                *index.get_or_insert_with_term(t, || next).unwrap()
+            };
+            let (f, g) = (Expr::parse(vars, f).unwrap(), Expr::parse(vars, g).unwrap());
+            let first: Vec<usize> = f.terms().map(|t| number(&t)).collect();
+            let mut sorted = first.clone();
+            sorted.sort_unstable();
+            assert_eq!(sorted, [0, 1, 2]);
+            // g's terms: the three monomials of f by their numbers, and x³ new.
+            let at = |e: &Expr, t| e.terms().position(|u| u.exponents() == t).unwrap();
+            let second: Vec<(Vec<i64>, usize)> =
+                g.terms().map(|t| (t.exponents(), number(&t))).collect();
+            for (exps, n) in &second {
+                match f.terms().find(|t| &t.exponents() == exps) {
+                    Some(_) => assert_eq!(*n, first[at(&f, exps.clone())]),
+                    None => assert_eq!(*n, 3),
+                }
+            }
+            assert_eq!(index.len(), 4);
+        }
+        let mut index = MonomialIndex::<usize>::new(&narrow);
+        let other = Expr::parse(&wide, "x0").unwrap();
+        assert!(index
+            .get_or_insert_with_term(&other.terms().next().unwrap(), || 0)
+            .is_none());
+        assert!(index.is_empty());
     }
 
     #[test]
