@@ -339,7 +339,7 @@ fn harmonic_1_1_new_integrals_to_degree_8_are_the_same_four() {
             "Dimension of the space of integrals: 825.",
             "≤ 5: 196, ≤ 6: 336, ≤ 7: 540, ≤ 8: 825.",
             "Known integrals in the space: H, L, G1, G2.",
-            "(20290 products formed); the generated ones span 821 of the 825 dimensions",
+            "(8454 products formed); the generated ones span 821 of the 825 dimensions",
             "New integrals: I3 = p_y cos θ + Mωy sin θ I4 = −Mωy cos θ + p_y sin θ \
              I5 = p_x cos θ + Mωx sin θ I6 = −Mωx cos θ + p_x sin θ Those",
             "5 claims: 5 proved, 0 refuted",

@@ -1428,8 +1428,12 @@ impl Spanning<'_> {
     }
 
     /// The products whose last factor is one of `gens[lo..]`, the generators of `stamp` (the
-    /// others have smaller stamps), depth first; a prefix of factors below `lo` only is formed
-    /// again, its own stamp's round having added it.
+    /// others have smaller stamps), depth first and from the last generator down, so that
+    /// the products of the stamp's own generators come first; a prefix of factors below `lo`
+    /// only is formed again, its own stamp's round having added it. The order decides only
+    /// how soon the span fills up: at the 1:1 resonance the last integrals to join it are
+    /// powers such as `L^k` of the stamp's generators, which the order from the first
+    /// generator up reached last (1:1 at degree 10: 44 185 products instead of 126 086).
     fn round(&mut self, gens: &[&Generator], lo: usize, stamp: i64) -> Result<(), Stop> {
         // The least degrees from each index on.
         let mut least = vec![(i64::MAX, i64::MAX); gens.len() + 1];
@@ -1446,7 +1450,7 @@ impl Spanning<'_> {
             least,
             max_factors: (self.bounds.0 + self.bounds.1).max(1) as usize + 1,
         };
-        for (i, g) in gens.iter().enumerate() {
+        for (i, g) in gens.iter().enumerate().rev() {
             if round.extendable(self, i, g.degrees) {
                 round.extend(self, (i, &g.expr, g.degrees), 1)?;
             }
@@ -1478,7 +1482,7 @@ impl Round<'_> {
     }
 
     /// Extends the prefix `(last index, product, degrees)` of `factors` factors by each
-    /// generator from its last index on, and what fits further, depth first.
+    /// generator from its last index on, the last first, and what fits further, depth first.
     fn extend(
         &self,
         spanning: &mut Spanning,
@@ -1488,7 +1492,7 @@ impl Round<'_> {
         if factors >= self.max_factors {
             return Ok(());
         }
-        for (i, g) in self.gens.iter().enumerate().skip(last) {
+        for (i, g) in self.gens.iter().enumerate().skip(last).rev() {
             let sum = (d.0 + g.degrees.0, d.1 + g.degrees.1);
             if !spanning.fits(sum) || (i < self.lo && !self.extendable(spanning, i, sum)) {
                 continue;
