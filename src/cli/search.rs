@@ -52,15 +52,15 @@ pub struct SearchArgs {
     when: Option<String>,
     /// Total degree in the planar momenta.
     #[arg(long, value_name = "D", default_value_t = 2,
-          value_parser = clap::value_parser!(u32).range(0..=12))]
+          value_parser = clap::value_parser!(u32).range(0..=20))]
     momenta_degree: u32,
     /// Total degree in the planar coordinates (sum of absolute exponents).
     #[arg(long, value_name = "E", default_value_t = 2,
-          value_parser = clap::value_parser!(u32).range(0..=12))]
+          value_parser = clap::value_parser!(u32).range(0..=20))]
     positions_degree: u32,
     /// Trigonometric order in the angles.
     #[arg(long, value_name = "K", default_value_t = 2,
-          value_parser = clap::value_parser!(u32).range(0..=12))]
+          value_parser = clap::value_parser!(u32).range(0..=20))]
     trig_degree: u32,
     /// Allow negative powers of the coordinates (Laurent potentials such as β/x²).
     #[arg(long)]

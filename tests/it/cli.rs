@@ -325,6 +325,15 @@ fn cli_bad_usage_exits_2_with_a_message() {
             "more than 9 products of integrals; search a smaller space, or raise the limit \
              with --max-products",
         ),
+        (
+            &[
+                "search",
+                "systems/harmonic-rotor.toml",
+                "--trig-degree",
+                "21",
+            ][..],
+            "invalid value '21' for '--trig-degree <K>': 21 is not in 0..=20",
+        ),
         (&["paper", "--bogus"][..], "unexpected argument '--bogus'"),
     ] {
         let o = superint(args);
