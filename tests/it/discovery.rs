@@ -330,38 +330,39 @@ fn harmonic_1_1_new_integrals() {
     );
 }
 
+/// At 1:1 up to degrees 8 and 10, the same four linear integrals are the only new ones.
 #[test]
-fn harmonic_1_1_new_integrals_to_degree_8_are_the_same_four() {
-    expect(
-        "h11-new-8",
-        &[
-            "34425 unknowns",
-            "Dimension of the space of integrals: 825.",
+fn harmonic_1_1_new_integrals_to_degrees_8_and_10_are_the_same_four() {
+    for (name, unknowns, dimensions, filtration, span) in [
+        (
+            "h11-new-8",
+            34425,
+            825,
             "≤ 5: 196, ≤ 6: 336, ≤ 7: 540, ≤ 8: 825.",
-            "Known integrals in the space: H, L, G1, G2.",
             "(8454 products formed); the generated ones span 821 of the 825 dimensions",
-            "New integrals: I3 = p_y cos θ + Mωy sin θ I4 = −Mωy cos θ + p_y sin θ \
-             I5 = p_x cos θ + Mωx sin θ I6 = −Mωx cos θ + p_x sin θ Those",
-            "5 claims: 5 proved, 0 refuted",
-        ],
-    );
-}
-
-#[test]
-fn harmonic_1_1_new_integrals_to_degree_10_are_the_same_four() {
-    expect(
-        "h11-new-10",
-        &[
-            "91476 unknowns",
-            "Dimension of the space of integrals: 1716.",
+        ),
+        (
+            "h11-new-10",
+            91476,
+            1716,
             "≤ 8: 825, ≤ 9: 1210, ≤ 10: 1716.",
-            "Known integrals in the space: H, L, G1, G2.",
             "the generated ones span 1712 of the 1716 dimensions",
-            "New integrals: I3 = p_y cos θ + Mωy sin θ I4 = −Mωy cos θ + p_y sin θ \
-             I5 = p_x cos θ + Mωx sin θ I6 = −Mωx cos θ + p_x sin θ Those",
-            "5 claims: 5 proved, 0 refuted",
-        ],
-    );
+        ),
+    ] {
+        expect(
+            name,
+            &[
+                &format!("{unknowns} unknowns"),
+                &format!("Dimension of the space of integrals: {dimensions}."),
+                filtration,
+                "Known integrals in the space: H, L, G1, G2.",
+                span,
+                "New integrals: I3 = p_y cos θ + Mωy sin θ I4 = −Mωy cos θ + p_y sin θ \
+                 I5 = p_x cos θ + Mωx sin θ I6 = −Mωx cos θ + p_x sin θ Those",
+                "5 claims: 5 proved, 0 refuted",
+            ],
+        );
+    }
 }
 
 /// At 2:1, 2:3 and 1:2, and with gravity at 1:1, higher degrees than in §1.2–1.4 and §2 find
