@@ -763,7 +763,7 @@ impl LiftContext<'_> {
             let Some(nu) = lifter.exponents(&delta) else {
                 return Ok(None);
             };
-            let (_, value) = lifter.monomial(&nu)?;
+            let value = lifter.value(&nu)?;
             let inv = GaussianRational::from(value.try_inv().expect("nonzero values"));
             let powers: Vec<(Var, i64)> = lifter.fixed().iter().map(|f| f.0).zip(nu).collect();
             out.push((c * &inv, powers, *m));

@@ -9,6 +9,9 @@
 //! homogeneous: [`Lifter::lift`] puts the parameters back. The lift is then proved by the
 //! engine, never assumed.
 
+use std::collections::hash_map::Entry;
+
+use rustc_hash::FxHashMap;
 use trigpoly::{Expr, GaussianRational, Rational, Var, VarKind, Vars};
 
 use crate::claim::Condition;
@@ -246,20 +249,13 @@ impl Lifter {
             .collect()
     }
 
-    /// The parameter monomial `Π p^ν` and its value at the fixed point.
-    pub fn monomial(&self, nu: &[i64]) -> Result<(Expr, Rational), EngineError> {
-        let powers: Vec<(Var, i64)> = self
-            .fixed
-            .iter()
-            .map(|(v, _)| *v)
-            .zip(nu.to_vec())
-            .collect();
-        let m = Expr::monomial(&self.vars, GaussianRational::from(1), &powers)?;
+    /// The value of the parameter monomial `Π p^ν` at the fixed point.
+    pub fn value(&self, nu: &[i64]) -> Result<Rational, EngineError> {
         let mut value = Rational::one();
         for ((_, x), e) in self.fixed.iter().zip(nu) {
             value *= x.pow(*e).ok_or(trigpoly::AlgebraError::DivisionByZero)?;
         }
-        Ok((m, value))
+        Ok(value)
     }
 
     /// Lifts `e`, known at the fixed values, to the homogeneous function that takes those
@@ -279,20 +275,34 @@ impl Lifter {
             return Ok(Some(e.clone()));
         };
         let reference = scaling.weight(reference.unwrap_or(first));
+        // The terms share few weights: each weight's exponents (a linear solve) and the
+        // inverse of their monomial's value, found once.
+        let mut by_weight: FxHashMap<Vec<Rational>, (Vec<i64>, GaussianRational)> =
+            FxHashMap::default();
         let mut out = Vec::with_capacity(terms.len());
         for (exps, c) in &terms {
             let w = scaling.weight(exps);
-            let delta: Vec<Rational> = reference.iter().zip(&w).map(|(a, b)| a - b).collect();
-            let Some(nu) = self.exponents(&delta) else {
-                return Ok(None);
+            let (nu, inv) = match by_weight.entry(w) {
+                Entry::Occupied(found) => found.into_mut(),
+                Entry::Vacant(slot) => {
+                    let delta: Vec<Rational> = reference
+                        .iter()
+                        .zip(slot.key())
+                        .map(|(a, b)| a - b)
+                        .collect();
+                    let Some(nu) = self.exponents(&delta) else {
+                        return Ok(None);
+                    };
+                    let value = self.value(&nu)?;
+                    let inv = value.try_inv().expect("nonzero parameter values");
+                    slot.insert((nu, GaussianRational::from(inv)))
+                }
             };
-            let (_, value) = self.monomial(&nu)?;
-            let inv = GaussianRational::from(value.try_inv().expect("nonzero parameter values"));
             let mut exps = exps.clone();
-            for ((v, _), k) in self.fixed.iter().zip(&nu) {
+            for ((v, _), k) in self.fixed.iter().zip(nu.iter()) {
                 exps[v.index()] += k;
             }
-            out.push((c * &inv, exps));
+            out.push((c * &*inv, exps));
         }
         Ok(Some(Expr::from_terms(&self.vars, out)?))
     }
