@@ -119,8 +119,8 @@ pub struct SearchOptions {
     pub max_products: usize,
 }
 
-/// The most products of integrals `--new-only` forms unless told otherwise: a few seconds'
-/// work (the 1:1 resonance up to degree 12 forms some 560 000).
+/// The most products of integrals `--new-only` forms unless told otherwise: some seconds'
+/// work (the 1:1 resonance up to degree 12 forms some 165 000).
 pub const DEFAULT_MAX_PRODUCTS: usize = 1_000_000;
 
 impl SearchOptions {
