@@ -1520,12 +1520,11 @@ impl Round<'_> {
 
 /// Vectors that join the span of what is generated, by non-decreasing stamp (the degree from
 /// which each counts), each kept only when it is independent of those kept so far: modulo p,
-/// or over Q when `exact`. What is dropped lies in the span of what is kept under its stamp or
-/// a smaller one, modulo p or over Q, so the pass modulo p decides with the same span as with
-/// every vector, and checks its dependencies over Q with vectors that are kept. At most the
-/// dimension of the integrals is kept (825 at degree 8 at the 1:1 resonance).
+/// or over Q for an exact span. What is dropped lies in the span of what is kept under its
+/// stamp or a smaller one, modulo p or over Q, so the pass modulo p decides with the same span
+/// as with every vector, and checks its dependencies over Q with vectors that are kept. At
+/// most the dimension of the integrals is kept (825 at degree 8 at the 1:1 resonance).
 struct Stamped {
-    exact: bool,
     basis: Independent,
     /// The kept vectors over Q, with their stamps.
     kept: StampedVectors,
@@ -1544,7 +1543,6 @@ impl Stamped {
             false => Independent::Modular(Echelon::new(dim)),
         };
         Stamped {
-            exact,
             basis,
             kept: Vec::new(),
         }
@@ -1574,23 +1572,23 @@ impl Stamped {
     /// in the space; `None` when a denominator vanishes modulo p. Modulo p the coordinates are
     /// taken modulo p first, and over Q only for a part that is kept.
     fn add_parts(&mut self, problem: &Problem, stamp: i64, p: &Expr) -> Option<()> {
-        if self.exact {
-            if let Some((re, im)) = problem.coordinates_of_parts(p) {
-                for v in [re, im] {
-                    if !v.is_empty() {
-                        self.add(stamp, v)?;
+        let e = match &mut self.basis {
+            Independent::Modular(e) => e,
+            Independent::Exact(_) => {
+                if let Some((re, im)) = problem.coordinates_of_parts(p) {
+                    for v in [re, im] {
+                        if !v.is_empty() {
+                            self.add(stamp, v)?;
+                        }
                     }
                 }
+                return Some(());
             }
-            return Some(());
-        }
+        };
         let Some(parts) = problem.coordinates_of_parts_mod_p(p)? else {
             return Some(());
         };
         debug_assert!(self.kept.last().is_none_or(|k| k.0 <= stamp));
-        let Independent::Modular(e) = &mut self.basis else {
-            unreachable!("a modular span has a modular basis")
-        };
         let mut exact_parts = None;
         for (part, v) in parts.iter().enumerate() {
             if v.is_empty() || !e.extend(self.kept.len(), v) {
