@@ -96,6 +96,10 @@ pub struct SearchArgs {
     /// separated by commas.
     #[arg(long, value_name = "EXPRS")]
     known: Option<String>,
+    /// Threads for forming the equations, solving them, proving the integrals and printing
+    /// them (default: one per core, or RAYON_NUM_THREADS). The output is the same for any.
+    #[arg(long, value_name = "N", value_parser = clap::value_parser!(u16).range(1..))]
+    threads: Option<u16>,
     #[command(flatten)]
     limits: LimitsArgs,
 }
@@ -185,8 +189,19 @@ impl Subject {
     }
 }
 
-/// Searches and prints.
+/// Searches and prints, on a pool of `--threads` threads if asked.
 pub fn run(job: &SearchJob) -> anyhow::Result<bool> {
+    match job.args.threads {
+        Some(n) => rayon::ThreadPoolBuilder::new()
+            .num_threads(n.into())
+            .build()
+            .context("starting the threads")?
+            .install(|| search_and_print(job)),
+        None => search_and_print(job),
+    }
+}
+
+fn search_and_print(job: &SearchJob) -> anyhow::Result<bool> {
     let a = &job.args;
     let subject = Subject::open(a.file.as_ref(), a.system.as_deref(), false, &a.limits)?;
     let mut space = SearchSpace::new(a.momenta_degree, a.positions_degree, a.trig_degree);

@@ -1,6 +1,7 @@
 //! Unicode text that reads like the paper: `{L, G1} = −G2   [C09 proved]`.
 
 use brackets::UpperBound;
+use rayon::prelude::*;
 use trigpoly::{GaussianRational, Style, VarKind};
 
 use super::{condition_suffix, pad, plain, plural, verdict, width, Options};
@@ -122,14 +123,20 @@ fn equations(out: &mut Vec<String>, eq: &Equations) {
         out.push(format!("{}:", eq.caption));
     }
     let lw = eq.lines.iter().map(|l| width(&l.lhs)).max().unwrap_or(0);
-    for l in &eq.lines {
-        let line = format!("    {} = {}", pad(&l.lhs, lw), l.rhs);
-        if width(&line) <= WRAP {
-            out.push(line);
-        } else {
-            out.extend(wrap(&line, WRAP, &" ".repeat(4 + lw + 3)));
-        }
-    }
+    let indent = " ".repeat(4 + lw + 3);
+    let lines: Vec<Vec<String>> = eq
+        .lines
+        .par_iter()
+        .map(|l| {
+            let line = format!("    {} = {}", pad(&l.lhs, lw), l.rhs);
+            if width(&line) <= WRAP {
+                vec![line]
+            } else {
+                wrap(&line, WRAP, &indent)
+            }
+        })
+        .collect();
+    out.extend(lines.into_iter().flatten());
 }
 
 /// `  statement at condition ........ [C09 proved]`, and what was found when it failed.

@@ -334,6 +334,10 @@ fn cli_bad_usage_exits_2_with_a_message() {
             ][..],
             "invalid value '21' for '--trig-degree <K>': 21 is not in 0..=20",
         ),
+        (
+            &["search", "systems/harmonic-rotor.toml", "--threads", "0"][..],
+            "invalid value '0' for '--threads <N>': 0 is not in 1..=65535",
+        ),
         (&["paper", "--bogus"][..], "unexpected argument '--bogus'"),
     ] {
         let o = superint(args);
@@ -367,6 +371,34 @@ fn cli_search_complement_over_q_alone_prints_the_same() {
     assert!(modular.contains("products formed"), "{modular}");
     let exact = run(&[&args[..], &["--exact-complement"]].concat(), 0);
     assert_eq!(modular, exact);
+}
+
+/// The equations, their blocks, the proofs and the printing are shared among threads; what
+/// comes out is in the order of the unknowns, whatever the number of threads.
+#[test]
+fn cli_search_prints_the_same_on_any_number_of_threads() {
+    let args = [
+        "search",
+        "systems/harmonic-rotor.toml",
+        "--when",
+        "p_theta = I*omega",
+        "--momenta-degree",
+        "4",
+        "--positions-degree",
+        "4",
+        "--trig-degree",
+        "4",
+        "--no-timings",
+    ];
+    let one = run(&[&args[..], &["--threads", "1"]].concat(), 0);
+    assert!(
+        one.contains("Dimension of the space of integrals: 105."),
+        "{one}"
+    );
+    for threads in ["2", "3"] {
+        let many = run(&[&args[..], &["--threads", threads]].concat(), 0);
+        assert_eq!(one, many, "--threads {threads}");
+    }
 }
 
 #[test]

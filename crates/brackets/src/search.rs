@@ -41,6 +41,7 @@ use rustc_hash::FxHashMap;
 use std::time::Instant;
 
 use itertools::Itertools;
+use rayon::prelude::*;
 use trigpoly::{Expr, GaussianRational, MonomialIndex, Rational, Term, Var, VarKind, Vars};
 
 use crate::claim::Condition;
@@ -48,6 +49,10 @@ use crate::error::EngineError;
 use crate::modular::{self, Echelon, Field, Fp, SparseVec};
 use crate::scaling::{Lifter, Scaling};
 use crate::system::System;
+
+/// How many images `{φ, H}` are formed at a time on the pool's threads before they are numbered
+/// into equations: enough to share among threads, few enough to keep little in memory.
+const IMAGE_BLOCK: usize = 4096;
 
 /// The finite space of functions searched.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -466,7 +471,8 @@ impl Problem {
         }
         // The order decides which basis comes out: each kernel vector ends at its own unknown
         // and uses only earlier ones, so simpler unknowns come first.
-        unknowns.sort_by(|a, b| {
+        // A total order (no two unknowns are equal), so the parallel sort is deterministic.
+        unknowns.par_sort_unstable_by(|a, b| {
             let key = |u: &Unknown| {
                 (
                     u.momenta_degree,
@@ -513,20 +519,23 @@ impl Problem {
             }
             e
         };
-        let mut cosines: FxHashMap<Vec<i64>, usize> = FxHashMap::default();
         let mut slots = MonomialIndex::new(vars);
         for (j, u) in unknowns.iter().enumerate() {
             match u.trig {
                 Trig::One => {
                     slots.insert(&u.phase, Slot::One(j))?;
                 }
-                Trig::Cos => {
-                    cosines.insert(with_angles(u, 1), j);
-                }
+                Trig::Cos => {}
                 Trig::Sin => {
-                    let plus = with_angles(u, 1);
-                    let cos = cosines[&plus];
-                    slots.insert(&plus, Slot::Canonical { cos, sin: j })?;
+                    // The order of the unknowns ends with the trigonometric function: the
+                    // cosine of the same `φ` and `k` comes right before.
+                    let cos = j - 1;
+                    debug_assert!(
+                        unknowns[cos].trig == Trig::Cos
+                            && unknowns[cos].phase == u.phase
+                            && unknowns[cos].k == u.k
+                    );
+                    slots.insert(&with_angles(u, 1), Slot::Canonical { cos, sin: j })?;
                     slots.insert(&with_angles(u, -1), Slot::Conjugate { cos, sin: j })?;
                 }
             }
@@ -821,6 +830,12 @@ fn primitive_vector(v: &SparseVec<Rational>) -> SparseVec<Rational> {
 
 /// Finds a basis of every integral of `system` in the space of `options`.
 pub fn search(system: &System, options: &SearchOptions) -> Result<SearchResult, EngineError> {
+    // The search hands blocks of work to rayon's pool (images, blocks of equations, proofs):
+    // it runs on a thread of the pool, which takes its share of each and, on a pool of one
+    // thread, does it in place, where any other thread would wait for the pool's at each.
+    if rayon::current_thread_index().is_none() {
+        return rayon::scope(|_| search(system, options));
+    }
     let start = Instant::now();
     let mut timings = SearchTimings::default();
     let condition = options.condition.as_ref();
@@ -860,33 +875,41 @@ pub fn search(system: &System, options: &SearchOptions) -> Result<SearchResult, 
     let n = problem.unknowns.len();
 
     // The images {φ_j, H} as real equations over Q: a row for the real and for the imaginary
-    // part of each monomial with a canonical `e^{ik·θ}`, numbered as they first appear.
+    // part of each monomial with a canonical `e^{ik·θ}`, numbered as they first appear. The
+    // images are formed on the pool's threads, a block of unknowns at a time, and numbered in
+    // the order of the unknowns.
     let mut rows: MonomialIndex<[Option<usize>; 2]> = MonomialIndex::new(&problem.vars);
     let mut nrows = 0;
     let mut columns: Vec<SparseVec<Rational>> = Vec::with_capacity(n);
-    for j in 0..n {
-        let image = problem.image(&problem.expr(j, &Rational::one())?)?;
-        let mut col = Vec::new();
-        for t in image.terms() {
-            if !canonical(problem.angles.iter().map(|v| t.exponent(*v))) {
-                continue;
-            }
-            let c = t.coeff();
-            let row = rows
-                .get_or_insert_with_term(&t, || [None, None])
-                .expect("an image has the problem's variables");
-            for (part, x) in [c.re, c.im].into_iter().enumerate() {
-                if x.is_zero() {
+    for start in (0..n).step_by(IMAGE_BLOCK) {
+        let images: Vec<Result<Expr, EngineError>> = (start..n.min(start + IMAGE_BLOCK))
+            .into_par_iter()
+            .map(|j| problem.image(&problem.expr(j, &Rational::one())?))
+            .collect();
+        for image in images {
+            let image = image?;
+            let mut col = Vec::new();
+            for t in image.terms() {
+                if !canonical(problem.angles.iter().map(|v| t.exponent(*v))) {
                     continue;
                 }
-                let r = *row[part].get_or_insert_with(|| {
-                    nrows += 1;
-                    nrows - 1
-                });
-                col.push((r, x));
+                let c = t.coeff();
+                let row = rows
+                    .get_or_insert_with_term(&t, || [None, None])
+                    .expect("an image has the problem's variables");
+                for (part, x) in [c.re, c.im].into_iter().enumerate() {
+                    if x.is_zero() {
+                        continue;
+                    }
+                    let r = *row[part].get_or_insert_with(|| {
+                        nrows += 1;
+                        nrows - 1
+                    });
+                    col.push((r, x));
+                }
             }
+            columns.push(col);
         }
-        columns.push(col);
     }
     timings.equations = start.elapsed().as_secs_f64();
 
@@ -910,25 +933,30 @@ pub fn search(system: &System, options: &SearchOptions) -> Result<SearchResult, 
     let mut groups: Vec<Vec<usize>> = groups.into_values().collect();
     groups.sort();
     let largest_component = groups.iter().map(Vec::len).max().unwrap_or(0);
-    let mut kernel: Vec<SparseVec<Rational>> = Vec::new();
-    for g in &groups {
-        let mut local_row: FxHashMap<usize, usize> = FxHashMap::default();
-        let cols: Vec<SparseVec<Rational>> = g
-            .iter()
-            .map(|&j| {
-                columns[j]
-                    .iter()
-                    .map(|(r, x)| {
-                        let len = local_row.len();
-                        (*local_row.entry(*r).or_insert(len), x.clone())
-                    })
-                    .collect()
-            })
-            .collect();
-        for v in modular::kernel(&cols, local_row.len()) {
-            kernel.push(v.into_iter().map(|(i, x)| (g[i], x)).collect());
-        }
-    }
+    // The blocks are independent: solved on the pool's threads, kept in the order of the blocks.
+    let kernels: Vec<Vec<SparseVec<Rational>>> = groups
+        .par_iter()
+        .map(|g| {
+            let mut local_row: FxHashMap<usize, usize> = FxHashMap::default();
+            let cols: Vec<SparseVec<Rational>> = g
+                .iter()
+                .map(|&j| {
+                    columns[j]
+                        .iter()
+                        .map(|(r, x)| {
+                            let len = local_row.len();
+                            (*local_row.entry(*r).or_insert(len), x.clone())
+                        })
+                        .collect()
+                })
+                .collect();
+            modular::kernel(&cols, local_row.len())
+                .into_iter()
+                .map(|v| v.into_iter().map(|(i, x)| (g[i], x)).collect())
+                .collect()
+        })
+        .collect();
+    let mut kernel: Vec<SparseVec<Rational>> = kernels.into_iter().flatten().collect();
     // By leading (last) unknown, i.e. by the order of the unknowns.
     kernel.sort_by_key(|v| v.iter().map(|x| x.0).max().unwrap_or(0));
     timings.solve = t.elapsed().as_secs_f64();
@@ -937,37 +965,41 @@ pub fn search(system: &System, options: &SearchOptions) -> Result<SearchResult, 
     let t = Instant::now();
     let scaling = Scaling::of_flow(system.space(), system.hamiltonian(), condition)?;
     let lifter = scaling.lifter(&parameters);
-    let mut basis = Vec::with_capacity(kernel.len());
-    for v in kernel.iter_mut() {
-        *v = primitive_vector(v);
-        let fixed = problem.combination(v)?;
-        let proved_fixed = problem.flow(system, &fixed)?.is_zero();
-        let lead = v
-            .iter()
-            .map(|x| x.0)
-            .max()
-            .expect("a kernel vector is not zero");
-        let reference = problem.leading_exponents(lead);
-        let symbolic = match &lifter {
-            // Nothing was fixed: the integral found is the symbolic one.
-            _ if parameters.is_empty() => proved_fixed.then(|| fixed.clone()),
-            Some(l) => lift_and_prove(system, condition, l, &scaling, &fixed, Some(&reference))?,
-            None => None,
-        };
-        let deg = |kinds: &[VarKind]| fixed.total_degree(kinds).unwrap_or(0);
-        let momenta_degree = {
-            // Only planar momenta: angular momenta do not occur.
-            deg(&[VarKind::Momentum])
-        };
-        basis.push(Integral {
-            momenta_degree,
-            positions_degree: deg(&[VarKind::Coordinate]),
-            trig_degree: deg(&[VarKind::Angle]),
-            fixed,
-            proved_fixed,
-            symbolic,
-        });
-    }
+    // Each basis element is proved on its own, on the pool's threads; the first error in
+    // the order of the basis is the one reported.
+    let proved: Vec<Result<Integral, EngineError>> = kernel
+        .par_iter_mut()
+        .map(|v| {
+            *v = primitive_vector(v);
+            let fixed = problem.combination(v)?;
+            let proved_fixed = problem.flow(system, &fixed)?.is_zero();
+            let lead = v
+                .iter()
+                .map(|x| x.0)
+                .max()
+                .expect("a kernel vector is not zero");
+            let reference = problem.leading_exponents(lead);
+            let symbolic = match &lifter {
+                // Nothing was fixed: the integral found is the symbolic one.
+                _ if parameters.is_empty() => proved_fixed.then(|| fixed.clone()),
+                Some(l) => {
+                    lift_and_prove(system, condition, l, &scaling, &fixed, Some(&reference))?
+                }
+                None => None,
+            };
+            let deg = |kinds: &[VarKind]| fixed.total_degree(kinds).unwrap_or(0);
+            Ok(Integral {
+                // Only planar momenta: angular momenta do not occur.
+                momenta_degree: deg(&[VarKind::Momentum]),
+                positions_degree: deg(&[VarKind::Coordinate]),
+                trig_degree: deg(&[VarKind::Angle]),
+                fixed,
+                proved_fixed,
+                symbolic,
+            })
+        })
+        .collect();
+    let basis = proved.into_iter().collect::<Result<Vec<_>, _>>()?;
     timings.proofs = t.elapsed().as_secs_f64();
 
     let multiples = parameter_multiples(&problem, &options.symbolic, &basis)?;
@@ -1820,6 +1852,38 @@ mod tests {
             .collect();
         let expected: Vec<&Expr> = lifted.basis.iter().map(Integral::expr).collect();
         assert_eq!(generators, expected);
+    }
+
+    /// The images, the blocks of equations and the proofs are shared among the pool's threads
+    /// and kept in order: the same basis, proofs and new integrals on one thread or several,
+    /// and from a thread outside any pool.
+    #[test]
+    fn the_search_is_the_same_on_any_number_of_threads() {
+        let rotor = systems::harmonic_rotor();
+        let options = SearchOptions::new(SearchSpace::new(3, 3, 3))
+            .when(rotor.resonance(1, 1).unwrap())
+            .new_only();
+        let on = |threads: usize| {
+            let pool = rayon::ThreadPoolBuilder::new()
+                .num_threads(threads)
+                .build()
+                .unwrap();
+            pool.install(|| search(&rotor, &options).unwrap())
+        };
+        let summary = |r: &SearchResult| {
+            let basis: Vec<(Expr, bool, Option<Expr>)> = r
+                .basis
+                .iter()
+                .map(|b| (b.fixed.clone(), b.proved_fixed, b.symbolic.clone()))
+                .collect();
+            let new = r.new.as_ref().map(|n| (n.new.clone(), n.products));
+            (basis, new, r.equations, r.components)
+        };
+        let one = summary(&on(1));
+        assert_eq!(one.0.len(), 50);
+        assert!(one.0.iter().all(|b| b.1 && b.2.is_some()));
+        assert_eq!(summary(&on(3)), one);
+        assert_eq!(summary(&search(&rotor, &options).unwrap()), one);
     }
 
     #[test]
