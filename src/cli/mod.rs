@@ -30,6 +30,10 @@ pub const EXIT_REFUTED: u8 = 1;
 /// Bad input or usage.
 pub const EXIT_USAGE: u8 = 2;
 
+/// The most threads `--threads` asks for: each is an operating-system thread with its own
+/// stack, and tens of thousands exhaust the machine before they help.
+const MAX_THREADS: i64 = 256;
+
 const EXAMPLES: &str = "\
 Examples:
   superint                         check every claim of the paper, print it as text

@@ -98,7 +98,8 @@ pub struct SearchArgs {
     known: Option<String>,
     /// Threads for forming the equations, solving them, proving the integrals and printing
     /// them (default: one per core, or RAYON_NUM_THREADS). The output is the same for any.
-    #[arg(long, value_name = "N", value_parser = clap::value_parser!(u16).range(1..))]
+    #[arg(long, value_name = "N",
+          value_parser = clap::value_parser!(u16).range(1..=super::MAX_THREADS))]
     threads: Option<u16>,
     #[command(flatten)]
     limits: LimitsArgs,

@@ -336,7 +336,16 @@ fn cli_bad_usage_exits_2_with_a_message() {
         ),
         (
             &["search", "systems/harmonic-rotor.toml", "--threads", "0"][..],
-            "invalid value '0' for '--threads <N>': 0 is not in 1..=65535",
+            "invalid value '0' for '--threads <N>': 0 is not in 1..=256",
+        ),
+        (
+            &[
+                "search",
+                "systems/harmonic-rotor.toml",
+                "--threads",
+                "65535",
+            ][..],
+            "invalid value '65535' for '--threads <N>': 65535 is not in 1..=256",
         ),
         (&["paper", "--bogus"][..], "unexpected argument '--bogus'"),
     ] {
