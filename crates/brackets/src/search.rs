@@ -1816,21 +1816,29 @@ mod tests {
         }
     }
 
+    /// The integrals of the harmonic rotor in `space` at the 1:1 resonance, the problem at the
+    /// fixed values, and the basis's coordinates there.
+    fn found_at_one_to_one(space: SearchSpace) -> (SearchResult, Problem, Kernel) {
+        let rotor = systems::harmonic_rotor();
+        let options = SearchOptions::new(space).when(rotor.resonance(1, 1).unwrap());
+        let found = search(&rotor, &options).unwrap();
+        let parameters = parameter_values(&rotor, options.condition.as_ref(), &[], &[]);
+        let problem = fixed_problem(&rotor, &options, &parameters).unwrap();
+        let kernel = (found.basis.iter())
+            .map(|b| problem.coordinates(&b.fixed).unwrap())
+            .collect();
+        (found, problem, kernel)
+    }
+
+    type Kernel = Vec<SparseVec<Rational>>;
+
     /// An integral is zero exactly when its coordinates on the leads are: a combination of the
     /// basis has, at the lead of its last basis element, that element's coefficient times its
     /// own. A lead coefficient divisible by p keeps every coordinate.
     #[test]
     fn integrals_are_told_apart_by_their_coordinates_on_the_leads() {
-        let rotor = systems::harmonic_rotor();
-        let options =
-            SearchOptions::new(SearchSpace::new(2, 2, 2)).when(rotor.resonance(1, 1).unwrap());
-        let found = search(&rotor, &options).unwrap();
-        let parameters = parameter_values(&rotor, options.condition.as_ref(), &[], &[]);
-        let problem = fixed_problem(&rotor, &options, &parameters).unwrap();
+        let (_, problem, kernel) = found_at_one_to_one(SearchSpace::new(2, 2, 2));
         let dim = problem.unknowns.len();
-        let kernel: Vec<SparseVec<Rational>> = (found.basis.iter())
-            .map(|b| problem.coordinates(&b.fixed).unwrap())
-            .collect();
         let leads = Leads::of(&kernel, dim);
         assert_eq!(leads.count, kernel.len());
         assert_eq!(leads.position.iter().flatten().count(), kernel.len());
@@ -1864,17 +1872,9 @@ mod tests {
     fn products_stop_once_they_span_every_integral() {
         // At the 1:1 resonance the products of the integrals up to degree 4 span what they
         // span before the last stamp's products: told that dimension, the walk stops there.
-        let rotor = systems::harmonic_rotor();
-        let options =
-            SearchOptions::new(SearchSpace::new(4, 4, 4)).when(rotor.resonance(1, 1).unwrap());
-        let found = search(&rotor, &options).unwrap();
-        let parameters = parameter_values(&rotor, options.condition.as_ref(), &[], &[]);
-        let problem = fixed_problem(&rotor, &options, &parameters).unwrap();
+        let (found, problem, kernel) = found_at_one_to_one(SearchSpace::new(4, 4, 4));
         let gens = generators(&problem, found.basis.iter().map(|b| &b.fixed)).unwrap();
         let dim = problem.unknowns.len();
-        let kernel: Vec<SparseVec<Rational>> = (found.basis.iter())
-            .map(|b| problem.coordinates(&b.fixed).unwrap())
-            .collect();
         let leads = Leads::of(&kernel, dim);
         assert_eq!(leads.count, found.basis.len());
         for exact in [false, true] {
