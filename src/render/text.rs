@@ -6,8 +6,8 @@ use trigpoly::{GaussianRational, Style, VarKind};
 
 use super::{condition_suffix, pad, plain, plural, verdict, width, Options};
 use crate::report::{
-    ClaimKind, ClaimResult, Entry, Equations, ProofResult, RankResult, Report, TableResult,
-    TowerResult,
+    ClaimKind, ClaimResult, Entry, Equation, Equations, ProofResult, RankResult, Report,
+    TableResult, TowerResult,
 };
 
 /// The column where claim verdicts start.
@@ -118,24 +118,31 @@ fn wrap_items(indent: &str, items: &[String], w: usize) -> Vec<String> {
     lines
 }
 
+/// The terms from which a list of equations is printed on the pool's threads.
+const PARALLEL_TERMS: usize = 10_000;
+
 fn equations(out: &mut Vec<String>, eq: &Equations) {
     if !eq.caption.is_empty() {
         out.push(format!("{}:", eq.caption));
     }
     let lw = eq.lines.iter().map(|l| width(&l.lhs)).max().unwrap_or(0);
     let indent = " ".repeat(4 + lw + 3);
-    let lines: Vec<Vec<String>> = eq
-        .lines
-        .par_iter()
-        .map(|l| {
-            let line = format!("    {} = {}", pad(&l.lhs, lw), l.rhs);
-            if width(&line) <= WRAP {
-                vec![line]
-            } else {
-                wrap(&line, WRAP, &indent)
-            }
-        })
-        .collect();
+    let print = |l: &Equation| {
+        let line = format!("    {} = {}", pad(&l.lhs, lw), l.rhs);
+        if width(&line) <= WRAP {
+            vec![line]
+        } else {
+            wrap(&line, WRAP, &indent)
+        }
+    };
+    // A long list (a search's thousands of integrals) is printed on the pool's threads; a
+    // short one where it is, without starting them.
+    let terms: usize = eq.lines.iter().map(|l| l.rhs.len()).sum();
+    let lines: Vec<Vec<String>> = if terms >= PARALLEL_TERMS {
+        eq.lines.par_iter().map(print).collect()
+    } else {
+        eq.lines.iter().map(print).collect()
+    };
     out.extend(lines.into_iter().flatten());
 }
 

@@ -810,6 +810,12 @@ pub fn fix_parameters(e: &Expr, values: &[(Var, Rational)]) -> Result<Expr, Engi
     Ok(e.subst_many(&subs)?)
 }
 
+/// The entry of `v` at its last unknown, its lead: a kernel vector ends at its own unknown, and
+/// uses only earlier ones.
+fn lead<F>(v: &SparseVec<F>) -> Option<&(usize, F)> {
+    v.iter().max_by_key(|x| x.0)
+}
+
 /// The vector scaled to coprime integers, its last (leading) entry positive.
 fn primitive_vector(v: &SparseVec<Rational>) -> SparseVec<Rational> {
     use num_integer::Integer as _;
@@ -819,10 +825,10 @@ fn primitive_vector(v: &SparseVec<Rational>) -> SparseVec<Rational> {
         den = den.lcm(&x.denom().to_bigint());
         num = num.gcd(&x.numer().to_bigint());
     }
-    let lead = v.iter().max_by_key(|x| x.0).map(|x| x.1.clone());
+    let negative = lead(v).is_some_and(|l| l.1.sign() == std::cmp::Ordering::Less);
     let mut scale = Rational::from(trigpoly::Integer::from_bigint(den))
         / Rational::from(trigpoly::Integer::from_bigint(num));
-    if lead.is_some_and(|l| l.sign() == std::cmp::Ordering::Less) {
+    if negative {
         scale = -scale;
     }
     v.iter().map(|(j, x)| (*j, x * &scale)).collect()
@@ -958,7 +964,7 @@ pub fn search(system: &System, options: &SearchOptions) -> Result<SearchResult, 
         .collect();
     let mut kernel: Vec<SparseVec<Rational>> = kernels.into_iter().flatten().collect();
     // By leading (last) unknown, i.e. by the order of the unknowns.
-    kernel.sort_by_key(|v| v.iter().map(|x| x.0).max().unwrap_or(0));
+    kernel.sort_by_key(|v| lead(v).map_or(0, |l| l.0));
     timings.solve = t.elapsed().as_secs_f64();
 
     // Proofs: at the fixed values, then lifted and proved symbolically.
@@ -973,12 +979,8 @@ pub fn search(system: &System, options: &SearchOptions) -> Result<SearchResult, 
             *v = primitive_vector(v);
             let fixed = problem.combination(v)?;
             let proved_fixed = problem.flow(system, &fixed)?.is_zero();
-            let lead = v
-                .iter()
-                .map(|x| x.0)
-                .max()
-                .expect("a kernel vector is not zero");
-            let reference = problem.leading_exponents(lead);
+            let last = lead(v).expect("a kernel vector is not zero").0;
+            let reference = problem.leading_exponents(last);
             let symbolic = match &lifter {
                 // Nothing was fixed: the integral found is the symbolic one.
                 _ if parameters.is_empty() => proved_fixed.then(|| fixed.clone()),
@@ -1572,12 +1574,9 @@ impl Leads {
     fn of(kernel: &[SparseVec<Rational>], dim: usize) -> Self {
         let mut position = vec![None; dim];
         for (k, v) in kernel.iter().enumerate() {
-            let lead = v
-                .iter()
-                .max_by_key(|x| x.0)
-                .expect("a kernel vector is not zero");
-            match Fp::from_rational(&lead.1) {
-                Some(x) if !x.is_zero() => position[lead.0] = Some(k),
+            let (last, x) = lead(v).expect("a kernel vector is not zero");
+            match Fp::from_rational(x) {
+                Some(x) if !x.is_zero() => position[*last] = Some(k),
                 _ => return Leads::all(dim),
             }
         }
@@ -1854,9 +1853,9 @@ mod tests {
             }
             let v: SparseVec<Fp> = sum.into_iter().filter(|x| !x.1.is_zero()).collect();
             let on_leads = leads.restrict(v);
-            let top = on_leads.iter().max_by_key(|x| x.0).unwrap();
-            let lead = &kernel[last].iter().max_by_key(|x| x.0).unwrap().1;
-            let expected = Fp::from_i64(last as i64 + 1).mul(&Fp::from_rational(lead).unwrap());
+            let top = lead(&on_leads).unwrap();
+            let own = &lead(&kernel[last]).unwrap().1;
+            let expected = Fp::from_i64(last as i64 + 1).mul(&Fp::from_rational(own).unwrap());
             assert_eq!(*top, (last, expected));
         }
         let mut divisible = kernel.clone();

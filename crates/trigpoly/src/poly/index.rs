@@ -85,10 +85,7 @@ impl<V> MonomialIndex<V> {
     /// The value at the monomial of `term`, if any; none when the term's polynomial belongs
     /// to another variable set.
     pub fn get_term<C: Coefficient>(&self, term: &Term<'_, C>) -> Option<&V> {
-        if !Vars::ptr_eq(&self.vars, &term.poly.vars) {
-            return None;
-        }
-        self.get_words(term.poly.exp(term.k))
+        self.get_words(self.words_of(term)?)
     }
 
     /// The value at the monomial of `term`, put there by `value` first if there is none;
@@ -98,10 +95,7 @@ impl<V> MonomialIndex<V> {
         term: &Term<'_, C>,
         value: impl FnOnce() -> V,
     ) -> Option<&mut V> {
-        if !Vars::ptr_eq(&self.vars, &term.poly.vars) {
-            return None;
-        }
-        let words = term.poly.exp(term.k);
+        let words = self.words_of(term)?;
         Some(match &mut self.map {
             Map::Narrow(map) => map.entry(narrow(words)).or_insert_with(value),
             Map::Wide(map) => {
@@ -111,6 +105,14 @@ impl<V> MonomialIndex<V> {
                 map.get_mut(words).expect("just inserted")
             }
         })
+    }
+
+    /// The packed words of `term`'s monomial; none when its polynomial belongs to another
+    /// variable set.
+    #[inline]
+    fn words_of<'t, C: Coefficient>(&self, term: &Term<'t, C>) -> Option<&'t [u64]> {
+        let poly = term.poly;
+        Vars::ptr_eq(&self.vars, &poly.vars).then(|| poly.exp(term.k))
     }
 
     /// The value at the monomial of these packed words.
@@ -203,15 +205,19 @@ mod tests {
         assert_eq!(index.get_term(&g.terms().next().unwrap()), None);
     }
 
-    #[test]
-    fn monomials_of_three_words_are_found_too() {
-        // Twelve coordinates of 12 bits: three words, past the array keys.
+    /// Twelve coordinates `x0, …, x11` of 12 bits: three words, past the array keys.
+    fn twelve_coordinates() -> crate::Vars {
         let names: Vec<String> = (0..12).map(|i| format!("x{i}")).collect();
-        let vars = names
+        names
             .iter()
             .fold(VarSet::builder(), |b, n| b.coordinate(n))
             .build()
-            .unwrap();
+            .unwrap()
+    }
+
+    #[test]
+    fn monomials_of_three_words_are_found_too() {
+        let vars = twelve_coordinates();
         assert_eq!(vars.monomial_words(), 3);
         let mut index = MonomialIndex::new(&vars);
         let unit = |i: usize, e: i64| {
@@ -242,12 +248,7 @@ mod tests {
             .coordinate("y")
             .build()
             .unwrap();
-        let names: Vec<String> = (0..12).map(|i| format!("x{i}")).collect();
-        let wide = names
-            .iter()
-            .fold(VarSet::builder(), |b, n| b.coordinate(n))
-            .build()
-            .unwrap();
+        let wide = twelve_coordinates();
         for (vars, f, g) in [
             (&narrow, "x^2 + 3*x*y - y", "y + x*y - 2*x^3 + x^2"),
             (
