@@ -31,6 +31,7 @@ pub mod paper;
 pub mod render;
 pub mod report;
 pub mod system_file;
+pub mod trajectory;
 pub mod workloads;
 
 // The README's Rust example runs as a doctest, so the front page cannot rot.

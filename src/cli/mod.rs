@@ -1,8 +1,9 @@
 //! The command line: clap parses it into [`Cli`] (the raw arguments), [`Cli::job`] turns that
 //! into a plain [`Job`], and [`run`] acts on it. One module per subcommand.
 //!
-//! Subcommands: `paper` (the default job), `tower`, and on system files `check`, `bracket`,
-//! `table`, `rank`; each has a module here, a variant of [`Command`] and of [`Job`].
+//! Subcommands: `paper` (the default job), `tower`, `bench`, and on system files `check`,
+//! `bracket`, `table`, `rank`, `search`, `closure` and `plot`; each has a module here, a
+//! variant of [`Command`] and of [`Job`].
 
 mod bench;
 mod bracket;
@@ -11,6 +12,7 @@ mod closure;
 mod limits;
 mod output;
 mod paper;
+mod plot;
 mod rank;
 mod search;
 mod table;
@@ -86,6 +88,10 @@ enum Command {
     /// Write the brackets of generators as polynomials in them, and find their relations.
     #[command(after_help = closure::EXAMPLES)]
     Closure(closure::ClosureArgs),
+    /// Draw functions along a trajectory of the flow (floating point, SVG): a picture, not a
+    /// proof.
+    #[command(after_help = plot::EXAMPLES)]
+    Plot(plot::PlotArgs),
 }
 
 /// What to do, as plain data.
@@ -109,6 +115,8 @@ pub enum Job {
     Search(search::SearchJob),
     /// The closure of generators.
     Closure(closure::ClosureJob),
+    /// A picture of a trajectory.
+    Plot(plot::PlotJob),
 }
 
 impl Cli {
@@ -126,6 +134,7 @@ impl Cli {
             Some(Command::Rank(a)) => Job::Rank(a.job(output)),
             Some(Command::Search(a)) => Job::Search(a.job(output)),
             Some(Command::Closure(a)) => Job::Closure(a.job(output)),
+            Some(Command::Plot(a)) => Job::Plot(a.job(output)),
         }
     }
 }
@@ -160,6 +169,7 @@ where
         Job::Rank(job) => rank::run(&job)?,
         Job::Search(job) => search::run(&job)?,
         Job::Closure(job) => closure::run(&job)?,
+        Job::Plot(job) => plot::run(&job)?,
     };
     Ok(ExitCode::from(if all_proved {
         EXIT_PROVED

@@ -250,10 +250,49 @@ pub(crate) fn parse_condition(
     pieces: &[Text],
 ) -> Result<Condition, FileError> {
     let usage = "a condition reads `variable = value`, such as \"p_theta = 2*I*omega/3\"";
+    let vars = file.system.vars();
+    let admit = |v: trigpoly::Var| {
+        (vars.variable(v).kind() == VarKind::Angle).then(|| {
+            "a condition cannot fix an angle: functions depend on it through cos, sin, exp".into()
+        })
+    };
+    let assignments = parse_assignments(file, source, pieces, ("a condition", usage), admit)?;
+    Ok(Condition {
+        text: assignments
+            .iter()
+            .map(|a| a.shown.as_str())
+            .collect::<Vec<_>>()
+            .join(", "),
+        subs: assignments.into_iter().map(|a| (a.var, a.value)).collect(),
+    })
+}
+
+/// One `var = value` of a list such as a condition: the variable, its exact value, how it
+/// reads, and where the value is written, for later messages.
+pub(crate) struct Assignment {
+    /// The variable.
+    pub var: trigpoly::Var,
+    /// Its value.
+    pub value: Expr,
+    /// `p_θ = 2Iω/3`.
+    pub shown: String,
+    /// The right side.
+    pub rhs: Text,
+}
+
+/// Reads `var = value` (one per text) of `source`: each left side one declared variable that
+/// `admit` does not refuse (it says why it does), set once; each right side an expression of
+/// the file. `what` names such a text (`a condition`) and says how one reads.
+pub(crate) fn parse_assignments(
+    file: &LoadedSystem,
+    source: &Source,
+    pieces: &[Text],
+    (what, usage): (&str, &str),
+    admit: impl Fn(trigpoly::Var) -> Option<String>,
+) -> Result<Vec<Assignment>, FileError> {
     let scope = file.scope(file.families.len());
     let vars = file.system.vars();
-    let mut subs = Vec::new();
-    let mut shown = Vec::new();
+    let mut assignments: Vec<Assignment> = Vec::new();
     for piece in pieces {
         let parts = split_top_level(&piece.value, '=');
         if parts.len() != 2 {
@@ -284,21 +323,16 @@ pub(crate) fn parse_condition(
                 ErrorKind::Condition,
                 lhs_tree.span,
                 format!(
-                    "the left side of a condition is one declared variable (a coordinate, a \
+                    "the left side of {what} is one declared variable (a coordinate, a \
                      momentum or a parameter), found '{}'",
                     lhs.value.trim()
                 ),
             ));
         };
-        if vars.variable(var).kind() == VarKind::Angle {
-            return Err(lhs.error(
-                source,
-                ErrorKind::Condition,
-                lhs_tree.span,
-                "a condition cannot fix an angle: functions depend on it through cos, sin, exp",
-            ));
+        if let Some(why) = admit(var) {
+            return Err(lhs.error(source, ErrorKind::Condition, lhs_tree.span, why));
         }
-        if subs.iter().any(|(v, _): &(trigpoly::Var, Expr)| *v == var) {
+        if assignments.iter().any(|a| a.var == var) {
             return Err(lhs.error(
                 source,
                 ErrorKind::Condition,
@@ -308,17 +342,19 @@ pub(crate) fn parse_condition(
         }
         let rhs_tree = scope.tree(source, &rhs)?;
         let value = scope.lower(source, &rhs, &rhs_tree)?;
-        shown.push(format!(
+        let shown = format!(
             "{} = {}",
             vars.variable(var).unicode(),
             file.pretty(&rhs_tree)
-        ));
-        subs.push((var, value));
+        );
+        assignments.push(Assignment {
+            var,
+            value,
+            shown,
+            rhs,
+        });
     }
-    Ok(Condition {
-        text: shown.join(", "),
-        subs,
-    })
+    Ok(assignments)
 }
 
 impl LoadedSystem {

@@ -18,7 +18,7 @@ use crate::report::{
 
 impl LoadedSystem {
     /// A parsed argument as printed, and its value.
-    fn expand(&self, arg: &Argument) -> Result<(String, Expr), FileError> {
+    pub(super) fn expand(&self, arg: &Argument) -> Result<(String, Expr), FileError> {
         Ok((self.pretty(&arg.tree), self.value(arg)?))
     }
 
@@ -44,7 +44,7 @@ impl LoadedSystem {
 }
 
 /// An error of the engine on a command-line computation (no place in a file).
-fn command_error(e: &brackets::EngineError) -> FileError {
+pub(super) fn command_error(e: &brackets::EngineError) -> FileError {
     let source = Source::new(COMMAND_LINE, "");
     let mut err = engine_error(&source, 0..0, e);
     err.location = None;

@@ -412,7 +412,12 @@ fn cli_search_prints_the_same_on_any_number_of_threads() {
 
 #[test]
 fn cli_every_help_shows_an_example() {
-    for args in [&["--help"][..], &["paper", "--help"], &["tower", "--help"]] {
+    for args in [
+        &["--help"][..],
+        &["paper", "--help"],
+        &["tower", "--help"],
+        &["plot", "--help"],
+    ] {
         let out = run(args, 0);
         assert!(out.contains("Examples:\n  superint"), "superint {args:?}");
     }
@@ -435,4 +440,205 @@ fn cli_bench_prints_seconds_and_terms_last() {
     assert_eq!(terms(&one), terms(&two));
     assert!(one.contains("zeros: 18"), "{one}");
     run(&["bench", "W9", "3"], 2);
+}
+
+/// The harmonic rotor at `M = ω = I = 1` from `(x, y) = (1, 0)` with momentum `(0, 1/2)`:
+/// `x = cos t`, `y = sin(t)/2`, and `Ω = p_θ`, so that `p_θ = 1` is the resonance 1 : 1.
+fn plot_args<'a>(p_theta: &'a str, rest: &[&'a str]) -> Vec<String> {
+    let mut args: Vec<String> = ["plot", "systems/harmonic-rotor.toml"]
+        .iter()
+        .chain(rest)
+        .map(|s| s.to_string())
+        .collect();
+    args.extend([
+        "--at".into(),
+        "M = 1, omega = 1, I = 1".into(),
+        "--from".into(),
+        format!("x = 1, y = 0, theta = 0, p_x = 0, p_y = 1/2, p_theta = {p_theta}"),
+    ]);
+    args
+}
+
+/// A scratch file for a test's output.
+fn scratch_file(name: &str) -> PathBuf {
+    let dir = Path::new(env!("CARGO_TARGET_TMPDIR")).join("plot");
+    std::fs::create_dir_all(&dir).expect("a scratch directory");
+    dir.join(name)
+}
+
+/// `largest_change` of each function of a plot's JSON table, by label.
+fn changes(json: &str) -> Vec<(String, f64)> {
+    let doc: Value = serde_json::from_str(json).expect("plot --format json is JSON");
+    doc["functions"]
+        .as_array()
+        .expect("a list of functions")
+        .iter()
+        .map(|f| {
+            let label = f["function"].as_str().expect("a label").to_string();
+            (label, f["largest_change"].as_f64().expect("a number"))
+        })
+        .collect()
+}
+
+/// The paper's resonance in a picture: `K_{1,1}` stands still when `Ω = ω` (numerically, to
+/// rounding) and turns when `Ω = 2ω`, while `H` and `L` stay put in both.
+#[test]
+fn cli_plot_shows_k_still_at_resonance_and_turning_off_it() {
+    let svg = scratch_file("resonance.svg");
+    let svg_arg = svg.to_str().unwrap();
+    for (p_theta, k_moves) in [("I*omega", false), ("2", true)] {
+        let rest = ["re(K_1_1)", "im(K_1_1)", "L", "--time", "20", "-o", svg_arg];
+        let args = plot_args(p_theta, &rest);
+        let mut args: Vec<&str> = args.iter().map(String::as_str).collect();
+        args.extend(["--format", "json"]);
+        let table = changes(&run(&args, 0));
+        let labels: Vec<&str> = table.iter().map(|(l, _)| l.as_str()).collect();
+        assert_eq!(labels, ["H", "re(K_{1,1})", "im(K_{1,1})", "L"]);
+        for (label, change) in &table {
+            let moves = label.contains('K') && k_moves;
+            assert_eq!(
+                *change > 0.5,
+                moves,
+                "{label} changed by {change} at p_θ = {p_theta}"
+            );
+            if !moves {
+                assert!(
+                    *change < 1e-9,
+                    "{label} changed by {change} at p_θ = {p_theta}"
+                );
+            }
+        }
+        let drawn = std::fs::read_to_string(&svg).expect("the chart was written");
+        assert!(drawn.starts_with("<svg") && drawn.contains("re(K_{1,1})"));
+    }
+}
+
+/// `y` against `x` is the orbit, the ellipse `x² + 4y² = 1`; the CSV holds every sample.
+#[test]
+fn cli_plot_draws_the_orbit_and_writes_its_samples() {
+    let (svg, csv) = (scratch_file("orbit.svg"), scratch_file("orbit.csv"));
+    let rest = ["y", "--against", "x", "--time", "7", "--samples", "70"];
+    let mut args = plot_args("2", &rest);
+    args.extend(["-o", svg.to_str().unwrap(), "--data", csv.to_str().unwrap()].map(String::from));
+    let args: Vec<&str> = args.iter().map(String::as_str).collect();
+    let table = run(&args, 0);
+    assert!(
+        table.starts_with("harmonic rotor at M = 1, ω = 1, I = 1\n"),
+        "{table}"
+    );
+    let data = std::fs::read_to_string(&csv).expect("the data was written");
+    let mut lines = data.lines();
+    assert_eq!(lines.next(), Some(r#"t,"x","y""#));
+    let rows: Vec<Vec<f64>> = lines
+        .map(|l| l.split(',').map(|v| v.parse().expect("a number")).collect())
+        .collect();
+    assert_eq!(rows.len(), 71);
+    assert_eq!((rows[0][0], rows[70][0]), (0.0, 7.0));
+    for row in &rows {
+        let (t, x, y) = (row[0], row[1], row[2]);
+        assert!(
+            (x - t.cos()).abs() < 1e-9 && (x * x + 4.0 * y * y - 1.0).abs() < 1e-9,
+            "{row:?}"
+        );
+    }
+}
+
+/// `-o -` writes the chart to standard output and the table to standard error.
+#[test]
+fn cli_plot_to_stdout_is_the_svg_alone() {
+    let args = plot_args("1", &["L", "--time", "1", "--steps", "100", "-o", "-"]);
+    let o = superint(&args.iter().map(String::as_str).collect::<Vec<_>>());
+    assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
+    assert!(stdout(&o).starts_with("<svg") && stdout(&o).trim_end().ends_with("</svg>"));
+    assert!(stderr(&o).contains("largest change"), "{}", stderr(&o));
+}
+
+/// Every mistake in a plot's arguments is exit 2 with a message that says what to do, and
+/// where in the argument when it has a place there.
+#[test]
+fn cli_plot_bad_arguments_exit_2_with_a_message() {
+    let full = "x = 1, y = 0, theta = 0, p_x = 0, p_y = 1/2, p_theta = 1";
+    let out = scratch_file("bad.svg");
+    let out = out.to_str().unwrap();
+    let at = "M = 1, omega = 1, I = 1";
+    for (args, message) in [
+        (
+            vec!["L", "--at", at, "--from", "x = 1, y = 0, p_x = 0, p_y = 1"],
+            "--from gives no value for θ, p_θ: every coordinate, angle and momentum needs one",
+        ),
+        (
+            vec!["L", "--at", "M = 1, x = 1", "--from", full],
+            "<command line>:1:8: --at gives the parameters their values; x is a coordinate \
+             (give it with --from)",
+        ),
+        (
+            vec!["L", "--at", at, "--from", &format!("{full}, M = 2")],
+            "M is a parameter: give its value with --at",
+        ),
+        (
+            vec!["L", "--at", "M = 1, omega = x", "--from", full],
+            "<command line>:1:16: the value of a parameter is a real number, such as 3/2",
+        ),
+        (
+            vec!["L", "--at", "M = 1, omega = 1", "--from", full],
+            "H holds I, which has no value: give it with --at, such as --at 'I = 1'",
+        ),
+        (
+            vec!["L*l", "--at", at, "--from", full],
+            "<command line>:1:1: 'L*l' holds l, which has no value: give it with --at, such as \
+             --at 'l = 1'",
+        ),
+        (
+            vec!["L + Q3", "--at", at, "--from", full],
+            "<command line>:1:5: unknown name 'Q3'",
+        ),
+        (
+            vec!["L", "--against", "K_1_1", "--at", at, "--from", full],
+            "--against takes a real function; K_{1,1} is not: take re(…) or im(…)",
+        ),
+        (
+            vec![
+                "L",
+                "--at",
+                at,
+                "--from",
+                "x = 1, y = 0, theta = i, p_x = 0, p_y = 0, p_theta = 0",
+            ],
+            "the starting value of θ must be a real number once the parameters have their values",
+        ),
+        (
+            vec![
+                "L",
+                "--at",
+                at,
+                "--from",
+                "x = 10^400, y = 0, theta = 0, p_x = 0, p_y = 0, p_theta = 0",
+            ],
+            "the starting value of x: the number 100000000000000000000000… (401 characters) is \
+             too large for floating point",
+        ),
+        (
+            vec!["L", "--at", at, "--from", full, "--time", "0"],
+            "invalid value '0' for '--time <T>': 0 is not a positive number of time units",
+        ),
+        (
+            vec!["L", "--at", at, "--from", full, "--format", "latex"],
+            "plot prints its table as text, markdown or json, not latex",
+        ),
+    ] {
+        let mut all = vec!["plot", "systems/harmonic-rotor.toml"];
+        all.extend(&args);
+        if !all.contains(&"--time") {
+            all.extend(["--time", "1"]);
+        }
+        all.extend(["-o", out]);
+        let o = superint(&all);
+        assert_eq!(o.status.code(), Some(2), "superint {all:?}: {}", stderr(&o));
+        assert!(stdout(&o).is_empty(), "superint {all:?} printed to stdout");
+        assert!(
+            stderr(&o).contains(message),
+            "superint {all:?}: {}",
+            stderr(&o)
+        );
+    }
 }

@@ -1,0 +1,334 @@
+//! `superint plot FILE CURVES… --from … --time T -o FILE.svg`: a trajectory of the system's
+//! flow, computed in floating point, drawn as an SVG chart of the curves over time (or against
+//! another function), with a table of how far each curve moved. A picture, never a proof.
+
+use std::fmt::Write as _;
+use std::path::PathBuf;
+
+use anyhow::{bail, Context};
+use clap::Args;
+use superint::render::Format;
+use superint::system_file::{load, LimitsOverride};
+use superint::trajectory::chart::{self, Curve};
+use superint::trajectory::{nearest_f64, short, Flow, Numeric};
+
+use super::limits::LimitsArgs;
+use super::output::{emit, Output};
+
+pub const EXAMPLES: &str = "\
+Examples:
+  superint plot systems/harmonic-rotor.toml 're(K_1_1)' 'im(K_1_1)' L \\
+      --at 'M = 1, omega = 1, I = 1' --time 20 -o resonant.svg \\
+      --from 'x = 1, y = 0, theta = 0, p_x = 0, p_y = 1/2, p_theta = I*omega'
+  superint plot systems/harmonic-rotor.toml y --against x --time 7 -o orbit.svg \\
+      --at 'M = 1, omega = 1, I = 1' \\
+      --from 'x = 1, y = 0, theta = 0, p_x = 0, p_y = 1/2, p_theta = 2'
+
+Hamilton's equations are formed exactly, then integrated in floating point by the classical
+Runge–Kutta method at a fixed step: the chart illustrates, `check` proves. The table gives
+each curve at the start and the end, its range, and its largest change from the start; H
+comes first, and its change tells how far the integration can be trusted. A complex function
+(K_1_1) is drawn as its real and imaginary parts.";
+
+/// Arguments of `superint plot`.
+#[derive(Debug, Args)]
+pub struct PlotArgs {
+    /// A system file (TOML, see docs/system-files.md).
+    #[arg(value_name = "FILE")]
+    file: PathBuf,
+    /// What to draw: names, family instances or expressions of the file.
+    #[arg(value_name = "CURVES", required = true)]
+    curves: Vec<String>,
+    /// The parameters' values, such as 'M = 1, omega = 3/2' (exact numbers).
+    #[arg(long, value_name = "VALUES")]
+    at: Option<String>,
+    /// The starting point: a value for every coordinate, angle and momentum, such as
+    /// 'x = 1, y = 0, theta = 0, p_x = 0, p_y = 1, p_theta = I*omega' (exact; parameters
+    /// allowed).
+    #[arg(long, value_name = "POINT")]
+    from: String,
+    /// How long to follow the motion.
+    #[arg(long, value_name = "T", value_parser = positive_time)]
+    time: f64,
+    /// Steps of the integrator over the whole time.
+    #[arg(long, value_name = "N", default_value_t = 10_000,
+          value_parser = clap::value_parser!(u64).range(1..=10_000_000))]
+    steps: u64,
+    /// Points drawn for each curve (at most the steps).
+    #[arg(long, value_name = "N", default_value_t = 1_000,
+          value_parser = clap::value_parser!(u64).range(1..=100_000))]
+    samples: u64,
+    /// Draw the curves against this real function instead of the time (`y --against x`
+    /// draws the orbit).
+    #[arg(long, value_name = "F")]
+    against: Option<String>,
+    /// Where to write the SVG chart; '-' writes it to standard output, and the table to
+    /// standard error.
+    #[arg(short, long, value_name = "FILE.svg")]
+    output: PathBuf,
+    /// Also write the sampled values as CSV: t, the function of --against, each curve.
+    #[arg(long, value_name = "FILE.csv")]
+    data: Option<PathBuf>,
+    #[command(flatten)]
+    limits: LimitsArgs,
+}
+
+/// `--time`: a finite positive number of time units.
+fn positive_time(s: &str) -> Result<f64, String> {
+    match s.trim().parse::<f64>() {
+        Ok(t) if t.is_finite() && t > 0.0 => Ok(t),
+        _ => Err(format!("{s} is not a positive number of time units")),
+    }
+}
+
+/// The plot job, as plain data.
+#[derive(Debug)]
+pub struct PlotJob {
+    pub args: PlotArgs,
+    pub limits: LimitsOverride,
+    pub output: Output,
+}
+
+impl PlotArgs {
+    pub fn job(self, output: Output) -> PlotJob {
+        let limits = self.limits.settings();
+        PlotJob {
+            args: self,
+            limits,
+            output,
+        }
+    }
+}
+
+/// One drawn function: its label and values at the samples.
+struct Series {
+    label: String,
+    values: Vec<f64>,
+}
+
+/// Integrates, draws the chart, writes it (and the data), prints the table.
+pub fn run(job: &PlotJob) -> anyhow::Result<bool> {
+    let args = &job.args;
+    if job.output.format == Format::Latex {
+        bail!("plot prints its table as text, markdown or json, not latex");
+    }
+    let file = load(&args.file, &job.limits)?;
+    let input = file.plot_input(
+        args.at.as_deref(),
+        &args.from,
+        &args.curves,
+        args.against.as_deref(),
+    )?;
+    let flow = Flow::new(file.system.space(), &input.hamiltonian)
+        .context("Hamilton's equations at these values")?;
+    let mut start = vec![0.0; file.system.vars().len()];
+    for (v, value) in &input.start {
+        start[v.index()] = nearest_f64(value).with_context(|| {
+            format!(
+                "the starting value of {}",
+                file.system.vars().variable(*v).unicode()
+            )
+        })?;
+    }
+    let path = flow.integrate(
+        &start,
+        args.time,
+        args.steps as usize,
+        args.samples as usize,
+    )?;
+    let series = |label: &str, f: &trigpoly::Expr| -> anyhow::Result<Series> {
+        let f = Numeric::new(f, flow.phase()).with_context(|| label.to_string())?;
+        Ok(Series {
+            label: label.to_string(),
+            values: path.values(|s| f.real(s)),
+        })
+    };
+    let energy = series("H", &input.hamiltonian)?;
+    let curves = input
+        .curves
+        .iter()
+        .map(|(label, f)| series(label, f))
+        .collect::<anyhow::Result<Vec<_>>>()?;
+    let axis = match &input.against {
+        Some((label, f)) => series(label, f)?,
+        None => Series {
+            label: "t".into(),
+            values: path.times.clone(),
+        },
+    };
+    let title = match input.parameters.as_str() {
+        "" => file.name.clone(),
+        p => format!("{} at {p}", file.name),
+    };
+    let drawn: Vec<Curve> = curves
+        .iter()
+        .map(|c| Curve {
+            label: c.label.clone(),
+            points: axis
+                .values
+                .iter()
+                .copied()
+                .zip(c.values.iter().copied())
+                .collect(),
+        })
+        .collect();
+    let svg = chart::svg(&title, &axis.label, &drawn)?;
+    let to_stdout = args.output.as_os_str() == "-";
+    if to_stdout {
+        emit(&svg)?;
+    } else {
+        std::fs::write(&args.output, svg)
+            .with_context(|| format!("cannot write {}", args.output.display()))?;
+    }
+    if let Some(data) = &args.data {
+        std::fs::write(
+            data,
+            csv(&path.times, input.against.as_ref().map(|_| &axis), &curves),
+        )
+        .with_context(|| format!("cannot write {}", data.display()))?;
+    }
+    let rows: Vec<&Series> = std::iter::once(&energy).chain(&curves).collect();
+    let table = match job.output.format {
+        Format::Json => json(&title, args, &rows),
+        Format::Markdown => markdown(&title, args, path.times.len(), &rows),
+        _ => text(&title, args, path.times.len(), &rows),
+    };
+    if to_stdout {
+        eprint!("{table}");
+    } else {
+        emit(&table)?;
+    }
+    Ok(true)
+}
+
+/// What the table says of one function: at the start and the end, least, greatest, and the
+/// largest change from the start.
+fn stats(s: &Series) -> [f64; 5] {
+    let first = s.values[0];
+    let last = *s.values.last().expect("a sample at t = 0 at least");
+    let least = s.values.iter().copied().fold(f64::INFINITY, f64::min);
+    let greatest = s.values.iter().copied().fold(f64::NEG_INFINITY, f64::max);
+    let change = s
+        .values
+        .iter()
+        .map(|v| (v - first).abs())
+        .fold(0.0, f64::max);
+    [first, last, least, greatest, change]
+}
+
+const HEADINGS: [&str; 6] = [
+    "function",
+    "at t = 0",
+    "at the end",
+    "least",
+    "greatest",
+    "largest change",
+];
+
+/// The run in one line: time, steps, method, samples, where the chart went.
+fn method(args: &PlotArgs, points: usize) -> String {
+    format!(
+        "t from 0 to {} in {} steps of the classical Runge–Kutta method (floating point), {} \
+         points a curve; chart: {}",
+        short(args.time),
+        args.steps,
+        points,
+        args.output.display()
+    )
+}
+
+fn text(title: &str, args: &PlotArgs, points: usize, rows: &[&Series]) -> String {
+    let cells: Vec<[String; 6]> = rows
+        .iter()
+        .map(|s| {
+            let [a, b, c, d, e] = stats(s).map(number);
+            [s.label.clone(), a, b, c, d, e]
+        })
+        .collect();
+    let width = |k: usize| {
+        cells
+            .iter()
+            .map(|r| r[k].chars().count())
+            .chain([HEADINGS[k].chars().count()])
+            .max()
+            .unwrap_or(0)
+    };
+    let widths: Vec<usize> = (0..6).map(width).collect();
+    let mut out = format!("{title}\n{}\n\n", method(args, points));
+    for row in std::iter::once(HEADINGS.map(String::from)).chain(cells) {
+        let mut line = String::new();
+        for (k, cell) in row.iter().enumerate() {
+            let pad = widths[k] - cell.chars().count();
+            if k == 0 {
+                let _ = write!(line, "{cell}{}", " ".repeat(pad));
+            } else {
+                let _ = write!(line, "  {}{cell}", " ".repeat(pad));
+            }
+        }
+        out.push_str(line.trim_end());
+        out.push('\n');
+    }
+    out
+}
+
+fn markdown(title: &str, args: &PlotArgs, points: usize, rows: &[&Series]) -> String {
+    let mut out = format!("## {title}\n\n{}\n\n", method(args, points));
+    out.push_str("| function | at t = 0 | at the end | least | greatest | largest change |\n");
+    out.push_str("|---|---:|---:|---:|---:|---:|\n");
+    for s in rows {
+        let [a, b, c, d, e] = stats(s).map(number);
+        let _ = writeln!(out, "| {} | {a} | {b} | {c} | {d} | {e} |", s.label);
+    }
+    out
+}
+
+fn json(title: &str, args: &PlotArgs, rows: &[&Series]) -> String {
+    let functions: Vec<serde_json::Value> = rows
+        .iter()
+        .map(|s| {
+            let [start, end, least, greatest, change] = stats(s);
+            serde_json::json!({
+                "function": s.label,
+                "start": start,
+                "end": end,
+                "least": least,
+                "greatest": greatest,
+                "largest_change": change,
+            })
+        })
+        .collect();
+    let doc = serde_json::json!({
+        "schema": "superint-plot/1",
+        "title": title,
+        "time": args.time,
+        "steps": args.steps,
+        "method": "classical Runge-Kutta, fixed step, floating point",
+        "chart": args.output.display().to_string(),
+        "functions": functions,
+    });
+    format!("{doc:#}\n")
+}
+
+/// The samples as CSV: `t`, the function of --against if any, each curve.
+fn csv(times: &[f64], against: Option<&Series>, curves: &[Series]) -> String {
+    let quote = |s: &str| format!("\"{}\"", s.replace('"', "\"\""));
+    let columns: Vec<&Series> = against.into_iter().chain(curves).collect();
+    let mut out = std::iter::once("t".to_string())
+        .chain(columns.iter().map(|c| quote(&c.label)))
+        .collect::<Vec<_>>()
+        .join(",");
+    out.push('\n');
+    for (k, t) in times.iter().enumerate() {
+        out.push_str(&t.to_string());
+        for c in &columns {
+            let _ = write!(out, ",{}", c.values[k]);
+        }
+        out.push('\n');
+    }
+    out
+}
+
+/// A value for the table, with the paper's minus sign.
+fn number(v: f64) -> String {
+    short(v).replace('-', "−")
+}

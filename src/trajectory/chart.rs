@@ -1,0 +1,172 @@
+//! A chart of curves as an SVG document (through `plotters`, which writes SVG text and needs
+//! no fonts): the picture `superint plot` draws.
+
+use plotters::prelude::*;
+
+/// One curve of a chart: its label and its points `(x, y)`.
+#[derive(Clone, Debug)]
+pub struct Curve {
+    /// The legend's text.
+    pub label: String,
+    /// The points, in order.
+    pub points: Vec<(f64, f64)>,
+}
+
+/// The chart could not be drawn.
+#[derive(Debug, thiserror::Error)]
+#[error("the chart could not be drawn: {0}")]
+pub struct ChartError(String);
+
+/// The size of the picture, in SVG pixels.
+const SIZE: (u32, u32) = (960, 600);
+
+/// The curves' colours, in turn: ten that stay apart on white (Tableau's).
+const PALETTE: [RGBColor; 10] = [
+    RGBColor(31, 119, 180),
+    RGBColor(214, 39, 40),
+    RGBColor(44, 160, 44),
+    RGBColor(255, 127, 14),
+    RGBColor(148, 103, 189),
+    RGBColor(23, 190, 207),
+    RGBColor(140, 86, 75),
+    RGBColor(227, 119, 194),
+    RGBColor(127, 127, 127),
+    RGBColor(188, 189, 34),
+];
+
+/// The curves in one chart with a title, the x axis labelled `x_label`, as an SVG document.
+pub fn svg(title: &str, x_label: &str, curves: &[Curve]) -> Result<String, ChartError> {
+    let fail = |e: &dyn std::fmt::Display| ChartError(e.to_string());
+    let xs = span(curves.iter().flat_map(|c| c.points.iter().map(|p| p.0)));
+    let ys = span(curves.iter().flat_map(|c| c.points.iter().map(|p| p.1)));
+    let mut out = String::new();
+    {
+        let root = SVGBackend::with_string(&mut out, SIZE).into_drawing_area();
+        root.fill(&WHITE).map_err(|e| fail(&e))?;
+        let mut chart = ChartBuilder::on(&root)
+            .caption(title, ("sans-serif", 22))
+            .margin(16)
+            .x_label_area_size(44)
+            .y_label_area_size(84)
+            .build_cartesian_2d(xs.0..xs.1, ys.0..ys.1)
+            .map_err(|e| fail(&e))?;
+        let (x_decimals, y_decimals) = (decimals(xs), decimals(ys));
+        chart
+            .configure_mesh()
+            .x_label_formatter(&|v| tick(*v, x_decimals))
+            .y_label_formatter(&|v| tick(*v, y_decimals))
+            .x_desc(x_label)
+            .label_style(("sans-serif", 15))
+            .axis_desc_style(("sans-serif", 17))
+            .light_line_style(WHITE.mix(0.0))
+            .draw()
+            .map_err(|e| fail(&e))?;
+        for (k, curve) in curves.iter().enumerate() {
+            let color = PALETTE[k % PALETTE.len()];
+            chart
+                .draw_series(LineSeries::new(
+                    curve.points.iter().copied(),
+                    color.stroke_width(2),
+                ))
+                .map_err(|e| fail(&e))?
+                .label(curve.label.as_str())
+                .legend(move |(x, y)| {
+                    PathElement::new(vec![(x, y), (x + 24, y)], color.stroke_width(2))
+                });
+        }
+        chart
+            .configure_series_labels()
+            .position(SeriesLabelPosition::UpperRight)
+            .background_style(WHITE.mix(0.85))
+            .border_style(BLACK.mix(0.4))
+            .label_font(("sans-serif", 16))
+            .draw()
+            .map_err(|e| fail(&e))?;
+        root.present().map_err(|e| fail(&e))?;
+    }
+    Ok(out)
+}
+
+/// The range an axis shows for `values`: their least and greatest, widened a little. A range
+/// too narrow to draw (a conserved quantity, equal to rounding) is widened to a thousandth of
+/// its size, so that such a curve shows as the straight line it is rather than as magnified
+/// rounding.
+fn span(values: impl Iterator<Item = f64>) -> (f64, f64) {
+    let (lo, hi) = values.fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), v| {
+        (lo.min(v), hi.max(v))
+    });
+    if !lo.is_finite() || !hi.is_finite() {
+        return (0.0, 1.0);
+    }
+    let scale = lo.abs().max(hi.abs()).max(1.0);
+    if hi - lo < 1e-6 * scale {
+        let mid = (lo + hi) / 2.0;
+        return (mid - 1e-3 * scale, mid + 1e-3 * scale);
+    }
+    let pad = (hi - lo) * 0.04;
+    (lo - pad, hi + pad)
+}
+
+/// Decimals enough to tell apart the ticks of an axis over `range` (about ten of them).
+fn decimals((lo, hi): (f64, f64)) -> usize {
+    let step = (hi - lo) / 10.0;
+    (-step.log10().floor()).clamp(0.0, 12.0) as usize
+}
+
+/// A tick's label: `decimals` of them, and no `-0`.
+fn tick(v: f64, decimals: usize) -> String {
+    let s = format!("{v:.decimals$}");
+    if s.trim_start_matches('-')
+        .chars()
+        .all(|c| c == '0' || c == '.')
+    {
+        s.trim_start_matches('-').to_string()
+    } else {
+        s
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn a_chart_is_an_svg_document_with_its_curves_and_labels() {
+        let curves = [
+            Curve {
+                label: "x".into(),
+                points: (0..50)
+                    .map(|k| (k as f64, (k as f64 / 8.0).sin()))
+                    .collect(),
+            },
+            Curve {
+                label: "re(K₁,₁)".into(),
+                points: (0..50).map(|k| (k as f64, 0.25)).collect(),
+            },
+        ];
+        let svg = svg("harmonic rotor", "t", &curves).unwrap();
+        assert!(svg.starts_with("<svg"), "{}", &svg[..60.min(svg.len())]);
+        assert!(svg.trim_end().ends_with("</svg>"));
+        // The two curves and their two marks in the legend are the polylines drawn 2 wide.
+        assert_eq!(svg.matches(r#"stroke-width="2""#).count(), 4);
+        for text in ["harmonic rotor", "re(K₁,₁)", "\nt\n"] {
+            assert!(svg.contains(text), "{text:?} missing");
+        }
+    }
+
+    #[test]
+    fn a_flat_curve_gets_a_range_around_its_value() {
+        let (lo, hi) = span([2.0, 2.0 + 1e-14].into_iter());
+        assert!(lo < 2.0 && hi > 2.0 && hi - lo < 0.01);
+        let (lo, hi) = span([-1.0, 3.0].into_iter());
+        assert!(lo < -1.0 && hi > 3.0);
+    }
+
+    #[test]
+    fn ticks_have_the_decimals_of_their_step_and_no_minus_zero() {
+        assert_eq!(decimals((-0.5, 0.5)), 1);
+        assert_eq!(decimals((0.0, 20.0)), 0);
+        assert_eq!(tick(-1e-17, 1), "0.0");
+        assert_eq!(tick(-0.25, 2), "-0.25");
+    }
+}

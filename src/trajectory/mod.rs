@@ -1,0 +1,385 @@
+//! Trajectories of a Hamiltonian flow in floating point, for pictures (`superint plot`).
+//!
+//! This is the one place where superint computes with `f64`, and nothing here decides whether
+//! an identity holds. Hamilton's equations are formed exactly
+//! ([`PhaseSpace::hamilton_equations`]) from a Hamiltonian whose parameters the caller has
+//! already replaced by exact rationals; only then are they rounded to floating-point term
+//! lists ([`Numeric`]) and integrated by the classical fourth-order Runge–Kutta method at a
+//! fixed step ([`Flow::integrate`]). How far `H` moves along the computed trajectory tells how
+//! far the picture can be trusted.
+//!
+//! ```
+//! use superint::prelude::*;
+//! use superint::trajectory::{Flow, Numeric};
+//!
+//! // A harmonic oscillator, M = ω = 1: a circle in the phase plane.
+//! let vars = VarSet::builder().coordinate("x").momentum("p_x").build()?;
+//! let space = PhaseSpace::new(&vars, &[("x", "p_x")])?;
+//! let h = Expr::parse(&vars, "(p_x^2 + x^2)/2")?;
+//! let flow = Flow::new(&space, &h)?;
+//! let mut start = vec![0.0; vars.len()];
+//! start[vars.lookup("x").unwrap().index()] = 1.0;
+//! let path = flow.integrate(&start, 3.0, 3000, 4)?;
+//! assert_eq!(path.times, [0.0, 0.75, 1.5, 2.25, 3.0]);
+//! let x = Numeric::new(&Expr::parse(&vars, "x")?, flow.phase())?;
+//! assert!((x.real(path.states.last().unwrap()) - 3.0f64.cos()).abs() < 1e-9);
+//! # Ok::<(), Box<dyn std::error::Error>>(())
+//! ```
+
+pub mod chart;
+
+use brackets::{EngineError, PhaseSpace};
+use num_traits::ToPrimitive;
+use trigpoly::{Expr, Rational, Var, VarKind};
+
+/// Why a trajectory could not be computed.
+#[derive(Debug, thiserror::Error)]
+pub enum TrajectoryError {
+    /// The engine refused (a limit, say) while forming Hamilton's equations.
+    #[error(transparent)]
+    Engine(#[from] EngineError),
+    /// A variable that is not a coordinate, angle or momentum (a parameter) is still there.
+    #[error("{0} has no value")]
+    Unbound(String),
+    /// A number does not fit a floating-point number.
+    #[error("the number {0} is too large for floating point")]
+    Overflow(String),
+    /// The Hamiltonian is not real, so its flow is not a motion in phase space.
+    #[error("H is not real, so its flow has no picture")]
+    NotReal,
+    /// A state of the trajectory is not a finite number.
+    #[error(
+        "the trajectory left the finite numbers near t = {}: the motion runs off to \
+         infinity or into a singularity of H (a shorter --time or more --steps may help)",
+        short(*.time)
+    )]
+    NotFinite {
+        /// The time of the first state that is not finite.
+        time: f64,
+    },
+}
+
+/// A function of the ring rounded for evaluation in floating point: its terms, each a
+/// complex coefficient and the powers of the phase variables it holds (for an angle `θ`,
+/// `k` stands for `e^{ikθ}`).
+#[derive(Clone, Debug)]
+pub struct Numeric {
+    terms: Vec<NumericTerm>,
+}
+
+#[derive(Clone, Debug)]
+struct NumericTerm {
+    re: f64,
+    im: f64,
+    /// `(variable index, exponent)` of the coordinates and momenta.
+    powers: Vec<(usize, i32)>,
+    /// `(variable index, k)` of the angles: `e^{ikθ}`.
+    turns: Vec<(usize, i32)>,
+}
+
+impl Numeric {
+    /// Rounds `e`, which may hold only the variables of `phase`; `Unbound` names any other.
+    pub fn new(e: &Expr, phase: &[Var]) -> Result<Numeric, TrajectoryError> {
+        let vars = e.vars();
+        let mut terms = Vec::with_capacity(e.len());
+        for term in e.terms() {
+            let c = term.coeff();
+            let (mut powers, mut turns) = (Vec::new(), Vec::new());
+            for (v, &k) in vars.vars().zip(&term.exponents()) {
+                if k == 0 {
+                    continue;
+                }
+                let j = v.index();
+                let variable = vars.variable(v);
+                if !phase.contains(&v) {
+                    return Err(TrajectoryError::Unbound(variable.unicode().to_string()));
+                }
+                // Exponents are bounded by the degree limit (at most 32 767).
+                let k = i32::try_from(k).expect("exponents fit 32 bits");
+                match variable.kind() {
+                    VarKind::Angle => turns.push((j, k)),
+                    _ => powers.push((j, k)),
+                }
+            }
+            terms.push(NumericTerm {
+                re: nearest_f64(&c.re)?,
+                im: nearest_f64(&c.im)?,
+                powers,
+                turns,
+            });
+        }
+        Ok(Numeric { terms })
+    }
+
+    /// The value at `state` (indexed by variable; an angle's entry is the angle itself), as
+    /// `(re, im)`.
+    pub fn eval(&self, state: &[f64]) -> (f64, f64) {
+        let (mut re, mut im) = (0.0, 0.0);
+        for t in &self.terms {
+            let magnitude: f64 = t.powers.iter().map(|&(j, e)| state[j].powi(e)).product();
+            let phase: f64 = t.turns.iter().map(|&(j, k)| f64::from(k) * state[j]).sum();
+            let (s, c) = phase.sin_cos();
+            // (re + i·im)·(c + i·s)·magnitude
+            re += magnitude * (t.re * c - t.im * s);
+            im += magnitude * (t.re * s + t.im * c);
+        }
+        (re, im)
+    }
+
+    /// The real part of the value at `state`.
+    pub fn real(&self, state: &[f64]) -> f64 {
+        self.eval(state).0
+    }
+}
+
+/// The nearest `f64` to an exact rational, or `Overflow` (naming the number by its first
+/// digits when it is long).
+pub fn nearest_f64(q: &Rational) -> Result<f64, TrajectoryError> {
+    match q.to_big_rational().to_f64() {
+        Some(v) if v.is_finite() => Ok(v),
+        _ => {
+            let digits = q.to_string();
+            let shown = match digits.char_indices().nth(24) {
+                Some((cut, _)) => format!("{}… ({} characters)", &digits[..cut], digits.len()),
+                None => digits,
+            };
+            Err(TrajectoryError::Overflow(shown))
+        }
+    }
+}
+
+/// A floating-point value to read: six significant digits, in scientific notation when it is
+/// very small or large.
+pub fn short(v: f64) -> String {
+    let a = v.abs();
+    if v == 0.0 || !v.is_finite() {
+        v.to_string()
+    } else if (1e-3..1e6).contains(&a) {
+        let decimals = (5 - a.log10().floor() as i32).max(0) as usize;
+        let s = format!("{v:.decimals$}");
+        match s.contains('.') {
+            true => s.trim_end_matches('0').trim_end_matches('.').to_string(),
+            false => s,
+        }
+    } else {
+        format!("{v:.3e}")
+    }
+}
+
+/// Hamilton's equations of a real Hamiltonian with no parameters left, rounded for
+/// integration.
+#[derive(Clone, Debug)]
+pub struct Flow {
+    /// The phase variables, coordinates and angles first, then their momenta.
+    phase: Vec<Var>,
+    /// `d/dt` of each, in the same order.
+    rates: Vec<Numeric>,
+    /// How many variables a state holds (every variable of the ring, parameters included).
+    width: usize,
+}
+
+impl Flow {
+    /// The flow of `h` on `space`: `h` must be real and hold only phase variables.
+    pub fn new(space: &PhaseSpace, h: &Expr) -> Result<Flow, TrajectoryError> {
+        if !h.is_real() {
+            return Err(TrajectoryError::NotReal);
+        }
+        let equations = space.hamilton_equations(h)?;
+        let phase: Vec<Var> = equations.iter().map(|(v, _)| *v).collect();
+        let rates = equations
+            .iter()
+            .map(|(_, rate)| Numeric::new(rate, &phase))
+            .collect::<Result<_, _>>()?;
+        Ok(Flow {
+            phase,
+            rates,
+            width: space.vars().len(),
+        })
+    }
+
+    /// The phase variables, coordinates and angles first, then their momenta.
+    pub fn phase(&self) -> &[Var] {
+        &self.phase
+    }
+
+    /// `d/dt` of every variable at `state` (zero for the parameters).
+    fn velocity(&self, state: &[f64], out: &mut [f64]) {
+        for (v, rate) in self.phase.iter().zip(&self.rates) {
+            out[v.index()] = rate.real(state);
+        }
+    }
+
+    /// Integrates from `start` (a value for every variable, by index; parameters' entries are
+    /// not read) over `time` in `steps` equal steps of classical fourth-order Runge–Kutta, and
+    /// keeps `samples + 1` states at equally spaced times (fewer if there are fewer steps),
+    /// the first and the last included.
+    pub fn integrate(
+        &self,
+        start: &[f64],
+        time: f64,
+        steps: usize,
+        samples: usize,
+    ) -> Result<Trajectory, TrajectoryError> {
+        assert_eq!(start.len(), self.width, "a state holds every variable");
+        assert!(steps > 0 && samples > 0, "at least one step and one sample");
+        let stride = steps.div_ceil(samples);
+        let dt = time / steps as f64;
+        let n = self.width;
+        let mut y = start.to_vec();
+        let (mut k1, mut k2, mut k3, mut k4, mut tmp) = (
+            vec![0.0; n],
+            vec![0.0; n],
+            vec![0.0; n],
+            vec![0.0; n],
+            vec![0.0; n],
+        );
+        let mut path = Trajectory {
+            times: vec![0.0],
+            states: vec![y.clone()],
+        };
+        let stage = |y: &[f64], k: &[f64], h: f64, out: &mut [f64]| {
+            for ((o, &a), &b) in out.iter_mut().zip(y).zip(k) {
+                *o = a + h * b;
+            }
+        };
+        for step in 1..=steps {
+            self.velocity(&y, &mut k1);
+            stage(&y, &k1, dt / 2.0, &mut tmp);
+            self.velocity(&tmp, &mut k2);
+            stage(&y, &k2, dt / 2.0, &mut tmp);
+            self.velocity(&tmp, &mut k3);
+            stage(&y, &k3, dt, &mut tmp);
+            self.velocity(&tmp, &mut k4);
+            for j in 0..n {
+                y[j] += dt / 6.0 * (k1[j] + 2.0 * k2[j] + 2.0 * k3[j] + k4[j]);
+            }
+            let t = time * step as f64 / steps as f64;
+            if self.phase.iter().any(|v| !y[v.index()].is_finite()) {
+                return Err(TrajectoryError::NotFinite { time: t });
+            }
+            if step % stride == 0 || step == steps {
+                path.times.push(t);
+                path.states.push(y.clone());
+            }
+        }
+        Ok(path)
+    }
+}
+
+/// States of a flow at increasing times, the first at `t = 0`.
+#[derive(Clone, Debug)]
+pub struct Trajectory {
+    /// The times.
+    pub times: Vec<f64>,
+    /// The state at each time, indexed by variable.
+    pub states: Vec<Vec<f64>>,
+}
+
+impl Trajectory {
+    /// The values of `f` along the trajectory.
+    pub fn values(&self, f: impl Fn(&[f64]) -> f64) -> Vec<f64> {
+        self.states.iter().map(|s| f(s)).collect()
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use brackets::systems;
+
+    /// The harmonic rotor at M = ω = I = 1.
+    fn unit_rotor() -> (brackets::System, Expr) {
+        let rotor = systems::harmonic_rotor();
+        let mut h = rotor.hamiltonian().clone();
+        for name in ["M", "omega", "I"] {
+            let one = trigpoly::GaussianRational::from(1);
+            h = h.subst_value(rotor.var(name), &one).unwrap();
+        }
+        (rotor, h)
+    }
+
+    #[test]
+    fn the_oscillator_moves_on_its_exact_solution() {
+        // x(t) = cos t, y(t) = sin t from (1, 0) with momentum (0, 1); θ(t) = θ0 + p_θ t.
+        let (rotor, h) = unit_rotor();
+        let flow = Flow::new(rotor.space(), &h).unwrap();
+        let mut start = vec![0.0; rotor.vars().len()];
+        for (name, value) in [("x", 1.0), ("p_y", 1.0), ("theta", 0.5), ("p_theta", 2.0)] {
+            start[rotor.var(name).index()] = value;
+        }
+        let path = flow.integrate(&start, 2.0, 2000, 8).unwrap();
+        assert_eq!(path.times.len(), 9);
+        let end = path.states.last().unwrap();
+        let at = |name: &str| end[rotor.var(name).index()];
+        assert!((at("x") - 2f64.cos()).abs() < 1e-10);
+        assert!((at("y") - 2f64.sin()).abs() < 1e-10);
+        assert!((at("theta") - 4.5).abs() < 1e-10);
+        assert!((at("p_theta") - 2.0).abs() < 1e-12);
+    }
+
+    #[test]
+    fn an_angle_is_evaluated_through_its_exponentials() {
+        let (rotor, _) = unit_rotor();
+        let e = rotor.parse("cos(theta)^2*x - sin(theta)").unwrap();
+        let phase = [rotor.var("x"), rotor.var("theta")];
+        let f = Numeric::new(&e, &phase).unwrap();
+        let mut state = vec![0.0; rotor.vars().len()];
+        state[rotor.var("x").index()] = 3.0;
+        state[rotor.var("theta").index()] = 0.7;
+        let (re, im) = f.eval(&state);
+        assert!((re - (0.7f64.cos().powi(2) * 3.0 - 0.7f64.sin())).abs() < 1e-12);
+        assert!(im.abs() < 1e-12);
+    }
+
+    #[test]
+    fn numbers_read_short_and_long_ones_are_cut() {
+        assert_eq!(short(1.125), "1.125");
+        assert_eq!(short(-2.111083), "-2.11108");
+        assert_eq!(short(6.2e-15), "6.200e-15");
+        assert_eq!(short(0.0), "0");
+        let huge: Rational = format!("1{}", "0".repeat(400)).parse().unwrap();
+        let err = nearest_f64(&huge).unwrap_err().to_string();
+        assert_eq!(
+            err,
+            "the number 100000000000000000000000… (401 characters) is too large for floating point"
+        );
+    }
+
+    #[test]
+    fn a_parameter_left_in_is_named() {
+        let rotor = systems::harmonic_rotor();
+        let err = Flow::new(rotor.space(), rotor.hamiltonian()).unwrap_err();
+        assert!(
+            matches!(err, TrajectoryError::Unbound(ref v) if v == "M"),
+            "{err}"
+        );
+    }
+
+    #[test]
+    fn a_complex_hamiltonian_has_no_flow() {
+        let rotor = systems::harmonic_rotor();
+        let h = rotor.parse("i*x*p_x").unwrap();
+        assert!(matches!(
+            Flow::new(rotor.space(), &h),
+            Err(TrajectoryError::NotReal)
+        ));
+    }
+
+    #[test]
+    fn a_run_to_infinity_stops_with_its_time() {
+        // ẋ = p, ṗ = 3x²/... : H = p²/2 − x³ blows up in finite time from x = 1.
+        let vars = trigpoly::VarSet::builder()
+            .coordinate("x")
+            .momentum("p")
+            .build()
+            .unwrap();
+        let space = PhaseSpace::new(&vars, &[("x", "p")]).unwrap();
+        let h = Expr::parse(&vars, "p^2/2 - x^3").unwrap();
+        let flow = Flow::new(&space, &h).unwrap();
+        let err = flow.integrate(&[1.0, 0.0], 10.0, 1000, 10).unwrap_err();
+        let TrajectoryError::NotFinite { time } = err else {
+            panic!("{err}")
+        };
+        assert!(time > 0.5 && time < 10.0, "{time}");
+    }
+}
