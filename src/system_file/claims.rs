@@ -214,13 +214,7 @@ impl ClaimSpec {
 fn condition(file: &LoadedSystem, when: &Spanned<When>) -> Result<Condition, FileError> {
     let source = &file.source;
     let pieces: Vec<Text> = match when.get_ref() {
-        When::One(s) => {
-            let whole = Text::in_toml(&source.text, when.span(), s);
-            split_top_level(s, ',')
-                .into_iter()
-                .map(|r| whole.slice(r))
-                .collect()
-        }
+        When::One(s) => Text::in_toml(&source.text, when.span(), s).split(','),
         When::Many(items) => match array_strings(&source.text, when.span()) {
             Some(spans) if spans.len() == items.len() => spans
                 .into_iter()

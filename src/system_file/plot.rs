@@ -9,8 +9,8 @@ use trigpoly::{Expr, GaussianRational, Rational, Span, Var, VarKind};
 use super::claims::{parse_assignments, Assignment};
 use super::error::{ErrorKind, FileError};
 use super::reports::command_error;
-use super::text::{split_top_level, Source, Text};
-use super::{LoadedSystem, COMMAND_LINE};
+use super::text::{Source, Text};
+use super::{Argument, LoadedSystem, COMMAND_LINE};
 
 /// A plot's exact input.
 #[derive(Clone, Debug)]
@@ -29,6 +29,9 @@ pub struct PlotInput {
     pub against: Option<(String, Expr)>,
 }
 
+/// The parameters' values of a plot, as a substitution.
+type Values = Vec<(Var, Expr)>;
+
 impl LoadedSystem {
     /// Reads a plot's parameters `at` (`"M = 1, omega = 2"`), its starting point `from`
     /// (every coordinate, angle and momentum; values may hold parameters), its `curves` and
@@ -41,120 +44,18 @@ impl LoadedSystem {
         curves: &[String],
         against: Option<&str>,
     ) -> Result<PlotInput, FileError> {
-        let vars = self.system.vars();
-        let kind = |v: Var| vars.variable(v).kind();
-        let name = |v: Var| vars.variable(v).unicode().to_string();
-        // The parameters' values: numbers.
-        let mut values: Vec<(Var, Expr)> = Vec::new();
-        let mut shown = Vec::new();
-        if let Some(at) = at {
-            let usage = "--at reads `parameter = number, …`, such as \"M = 1, omega = 3/2\"";
-            let admit = |v: Var| {
-                (kind(v) != VarKind::Parameter).then(|| {
-                    format!(
-                        "--at gives the parameters their values; {} is a {} (give it with --from)",
-                        name(v),
-                        kind_name(kind(v))
-                    )
-                })
-            };
-            let (source, assignments) = self.assignments(at, usage, admit)?;
-            for a in assignments {
-                let why = "the value of a parameter is a real number, such as 3/2";
-                let value = number(&a.value, &a.rhs, &source, why)?;
-                values.push((a.var, Expr::constant(vars, GaussianRational::from(value))));
-                shown.push(a.shown);
-            }
-        }
-        let at_values = |e: &Expr| e.subst_many(&values).map_err(EngineError::from);
-        // The starting point: numbers once the parameters have their values.
-        let usage = "--from reads `variable = value, …`, such as \"x = 1, p_y = 1/2\"";
-        let admit = |v: Var| {
-            (kind(v) == VarKind::Parameter).then(|| {
-                format!(
-                    "{} is a parameter: give its value with --at (--from gives the coordinates, \
-                     angles and momenta theirs)",
-                    name(v)
-                )
-            })
+        let (values, parameters) = match at {
+            Some(at) => self.parameter_values(at)?,
+            None => (Values::new(), String::new()),
         };
-        let mut given = Vec::new();
-        let (source, assignments) = self.assignments(from, usage, admit)?;
-        for a in assignments {
-            let value = at_values(&a.value).map_err(|e| command_error(&e))?;
-            let why = format!(
-                "the starting value of {} must be a real number once the parameters have their \
-                 values (--at)",
-                name(a.var)
-            );
-            given.push((a.var, number(&value, &a.rhs, &source, why)?));
-        }
-        let pairs = self.system.space().pairs();
-        let phase: Vec<Var> = pairs
-            .iter()
-            .map(|c| c.q)
-            .chain(pairs.iter().map(|c| c.p))
-            .collect();
-        let missing: Vec<String> = phase
-            .iter()
-            .filter(|v| !given.iter().any(|(g, _)| g == *v))
-            .map(|&v| name(v))
-            .collect();
-        if !missing.is_empty() {
-            return Err(FileError::new(
-                ErrorKind::Condition,
-                COMMAND_LINE,
-                format!(
-                    "--from gives no value for {}: every coordinate, angle and momentum needs one",
-                    missing.join(", ")
-                ),
-            ));
-        }
-        let start = phase
-            .iter()
-            .map(|v| {
-                given
-                    .iter()
-                    .find(|(g, _)| g == v)
-                    .cloned()
-                    .expect("checked")
-            })
-            .collect();
-        // Why `what`, a function at the parameters' values, cannot be drawn: a parameter
-        // with no value.
-        let unset = |what: &str, e: &Expr| {
-            e.terms()
-                .flat_map(|t| vars.vars().zip(t.exponents()).filter(|(_, k)| *k != 0))
-                .find(|(v, _)| kind(*v) == VarKind::Parameter)
-                .map(|(v, _)| {
-                    format!(
-                        "{what} holds {0}, which has no value: give it with --at, such as \
-                         --at '{1} = 1'",
-                        name(v),
-                        vars.variable(v).name()
-                    )
-                })
-        };
-        let hamiltonian = at_values(self.system.hamiltonian()).map_err(|e| command_error(&e))?;
-        if let Some(why) = unset("H", &hamiltonian) {
+        let start = self.starting_point(from, &values)?;
+        let hamiltonian = at_values(self.system.hamiltonian(), &values)?;
+        if let Some(why) = self.unset("H", &hamiltonian) {
             return Err(FileError::new(ErrorKind::Expression, COMMAND_LINE, why));
         }
-        // The curves, and what they are plotted against: real functions.
-        let function = |src: &str| -> Result<(String, Expr, Text, Source), FileError> {
-            let arg = self.argument(src)?;
-            let (label, value) = self.expand(&arg)?;
-            let value = at_values(&value).map_err(|e| command_error(&e))?;
-            if let Some(why) = unset(&format!("'{}'", src.trim()), &value) {
-                let whole = Span::new(0, arg.text.value.len());
-                return Err(arg
-                    .text
-                    .error(&arg.source, ErrorKind::Expression, whole, why));
-            }
-            Ok((label, value, arg.text, arg.source))
-        };
         let mut real_curves = Vec::new();
         for src in curves {
-            let (label, value, ..) = function(src)?;
+            let (label, value, _) = self.drawable(src, &values)?;
             if value.is_real() {
                 real_curves.push((label, value));
             } else {
@@ -166,28 +67,139 @@ impl LoadedSystem {
         let against = match against {
             None => None,
             Some(src) => {
-                let (label, value, text, source) = function(src)?;
+                let (label, value, arg) = self.drawable(src, &values)?;
                 if !value.is_real() {
-                    let whole = Span::new(0, text.value.len());
-                    return Err(text.error(
-                        &source,
-                        ErrorKind::Expression,
-                        whole,
-                        format!(
-                            "--against takes a real function; {label} is not: take re(…) or im(…)"
-                        ),
-                    ));
+                    let why = format!(
+                        "--against takes a real function; {label} is not: take re(…) or im(…)"
+                    );
+                    let whole = Span::new(0, arg.text.value.len());
+                    return Err(arg
+                        .text
+                        .error(&arg.source, ErrorKind::Expression, whole, why));
                 }
                 Some((label, value))
             }
         };
         Ok(PlotInput {
-            parameters: shown.join(", "),
+            parameters,
             hamiltonian,
             start,
             curves: real_curves,
             against,
         })
+    }
+
+    /// `--at`: each parameter named a real number. The substitution, and how it reads.
+    fn parameter_values(&self, at: &str) -> Result<(Values, String), FileError> {
+        let usage = "--at reads `parameter = number, …`, such as \"M = 1, omega = 3/2\"";
+        let admit = |v: Var| {
+            let kind = self.system.vars().variable(v).kind();
+            (kind != VarKind::Parameter).then(|| {
+                format!(
+                    "--at gives the parameters their values; {} is a {} (give it with --from)",
+                    self.display(v),
+                    kind_name(kind)
+                )
+            })
+        };
+        let (source, assignments) = self.assignments(at, usage, admit)?;
+        let mut values = Values::new();
+        let mut shown = Vec::new();
+        for a in assignments {
+            let why = "the value of a parameter is a real number, such as 3/2";
+            let value = number(&a.value, &a.rhs, &source, why)?;
+            let value = Expr::constant(self.system.vars(), GaussianRational::from(value));
+            values.push((a.var, value));
+            shown.push(a.shown);
+        }
+        Ok((values, shown.join(", ")))
+    }
+
+    /// `--from`: a real number for every coordinate, angle and momentum, once the parameters
+    /// have their `values`; in the phase space's order.
+    fn starting_point(
+        &self,
+        from: &str,
+        values: &Values,
+    ) -> Result<Vec<(Var, Rational)>, FileError> {
+        let usage = "--from reads `variable = value, …`, such as \"x = 1, p_y = 1/2\"";
+        let admit = |v: Var| {
+            (self.system.vars().variable(v).kind() == VarKind::Parameter).then(|| {
+                format!(
+                    "{} is a parameter: give its value with --at (--from gives the coordinates, \
+                     angles and momenta theirs)",
+                    self.display(v)
+                )
+            })
+        };
+        let (source, assignments) = self.assignments(from, usage, admit)?;
+        let mut given = Vec::new();
+        for a in assignments {
+            let why = format!(
+                "the starting value of {} must be a real number once the parameters have their \
+                 values (--at)",
+                self.display(a.var)
+            );
+            let value = number(&at_values(&a.value, values)?, &a.rhs, &source, why)?;
+            given.push((a.var, value));
+        }
+        let pairs = self.system.space().pairs();
+        let phase = pairs.iter().map(|c| c.q).chain(pairs.iter().map(|c| c.p));
+        let (mut start, mut missing) = (Vec::new(), Vec::new());
+        for v in phase {
+            match given.iter().find(|(g, _)| *g == v) {
+                Some(found) => start.push(found.clone()),
+                None => missing.push(self.display(v)),
+            }
+        }
+        if !missing.is_empty() {
+            return Err(FileError::new(
+                ErrorKind::Condition,
+                COMMAND_LINE,
+                format!(
+                    "--from gives no value for {}: every coordinate, angle and momentum needs one",
+                    missing.join(", ")
+                ),
+            ));
+        }
+        Ok(start)
+    }
+
+    /// A curve (or what curves are drawn against) given on the command line: its label and
+    /// value at the parameters' `values`, which must leave no parameter in it.
+    fn drawable(&self, src: &str, values: &Values) -> Result<(String, Expr, Argument), FileError> {
+        let arg = self.argument(src)?;
+        let (label, value) = self.expand(&arg)?;
+        let value = at_values(&value, values)?;
+        if let Some(why) = self.unset(&format!("'{}'", src.trim()), &value) {
+            let whole = Span::new(0, arg.text.value.len());
+            return Err(arg
+                .text
+                .error(&arg.source, ErrorKind::Expression, whole, why));
+        }
+        Ok((label, value, arg))
+    }
+
+    /// Why `what`, a function at the parameters' values, cannot be drawn: a parameter it
+    /// holds has no value.
+    fn unset(&self, what: &str, e: &Expr) -> Option<String> {
+        let vars = self.system.vars();
+        e.terms()
+            .flat_map(|t| vars.vars().zip(t.exponents()).filter(|(_, k)| *k != 0))
+            .find(|(v, _)| vars.variable(*v).kind() == VarKind::Parameter)
+            .map(|(v, _)| {
+                format!(
+                    "{what} holds {0}, which has no value: give it with --at, such as --at \
+                     '{1} = 1'",
+                    self.display(v),
+                    vars.variable(v).name()
+                )
+            })
+    }
+
+    /// A variable as messages print it (`θ`).
+    fn display(&self, v: Var) -> String {
+        self.system.vars().variable(v).unicode().to_string()
     }
 
     /// `var = value, …` given on the command line, each variable one `admit` accepts.
@@ -198,15 +210,17 @@ impl LoadedSystem {
         admit: impl Fn(Var) -> Option<String>,
     ) -> Result<(Source, Vec<Assignment>), FileError> {
         let source = Source::new(COMMAND_LINE, list);
-        let whole = Text::whole(&source);
-        let pieces: Vec<Text> = split_top_level(list, ',')
-            .into_iter()
-            .map(|r| whole.slice(r))
-            .collect();
+        let pieces = Text::whole(&source).split(',');
         let assignments =
             parse_assignments(self, &source, &pieces, ("`name = value`", usage), admit)?;
         Ok((source, assignments))
     }
+}
+
+/// `e` at the parameters' `values`.
+fn at_values(e: &Expr, values: &Values) -> Result<Expr, FileError> {
+    e.subst_many(values)
+        .map_err(|err| command_error(&EngineError::from(err)))
 }
 
 /// `value` as a real number, or the error `why` at `rhs`, where it is written.

@@ -10,7 +10,7 @@ use trigpoly::Expr;
 use super::claims::{engine_error, parse_condition, CheckedClaim};
 use super::error::{ErrorKind, FileError};
 use super::scope::instance_of;
-use super::text::{split_top_level, Source, Text};
+use super::text::{Source, Text};
 use super::{Argument, LoadedSystem, COMMAND_LINE};
 use crate::report::{
     Entry, Equation, Equations, Expect, Report, Section, SummaryKind, TableResult,
@@ -100,11 +100,7 @@ pub fn bracket_report(
     let condition = match when {
         Some(w) => {
             let source = Source::new(COMMAND_LINE, w);
-            let whole = Text::whole(&source);
-            let pieces: Vec<Text> = split_top_level(w, ',')
-                .into_iter()
-                .map(|r| whole.slice(r))
-                .collect();
+            let pieces = Text::whole(&source).split(',');
             Some(parse_condition(file, &source, &pieces)?)
         }
         None => None,

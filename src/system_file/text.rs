@@ -114,6 +114,15 @@ impl Text {
         }
     }
 
+    /// The pieces of this text between the top-level occurrences of `sep` (outside
+    /// parentheses and braces), keeping the mapping.
+    pub(crate) fn split(&self, sep: char) -> Vec<Text> {
+        split_top_level(&self.value, sep)
+            .into_iter()
+            .map(|r| self.slice(r))
+            .collect()
+    }
+
     /// The span in the source of a span inside the value.
     pub fn source_span(&self, span: Span) -> Range<usize> {
         match self.offset {
