@@ -8,9 +8,9 @@ use std::path::PathBuf;
 use anyhow::{bail, Context};
 use clap::Args;
 use superint::render::Format;
-use superint::system_file::{load, LimitsOverride};
-use superint::trajectory::chart::{self, Curve};
-use superint::trajectory::{nearest_f64, short, Flow, Numeric};
+use superint::system_file::{load, LimitsOverride, PlotFunctions};
+use superint::trajectory::chart::{self, Curve, Style};
+use superint::trajectory::{nearest_f64, short, Flow, Numeric, Trajectory};
 
 use super::limits::LimitsArgs;
 use super::output::{emit, Output};
@@ -23,12 +23,16 @@ Examples:
   superint plot systems/harmonic-rotor.toml y --against x --time 7 -o orbit.svg \\
       --at 'M = 1, omega = 1, I = 1' \\
       --from 'x = 1, y = 0, theta = 0, p_x = 0, p_y = 1/2, p_theta = 2'
+  superint plot systems/henon-heiles.toml p_y --against y --section x -o section.svg \
+      --at 'A = 1, B = 1, C = -1/3' --from 'x = 0, y = 1/10, p_x = 2/5, p_y = 0' \
+      --time 3000 --steps 300000 --samples 3000
 
 Hamilton's equations are formed exactly, then integrated in floating point by the classical
 Runge–Kutta method at a fixed step: the chart illustrates, `check` proves. The table gives
 each curve at the start and the end, its range, and its largest change from the start; H
 comes first, and its change tells how far the integration can be trusted. A complex function
-(K_1_1) is drawn as its real and imaginary parts.";
+(K_1_1) is drawn as its real and imaginary parts. --section S keeps the states where S crosses
+zero upward, a Poincaré section, drawn as dots.";
 
 /// Arguments of `superint plot`.
 #[derive(Debug, Args)]
@@ -62,6 +66,10 @@ pub struct PlotArgs {
     /// draws the orbit).
     #[arg(long, value_name = "F")]
     against: Option<String>,
+    /// A Poincaré section: keep the states where this real function crosses zero upward
+    /// (at most --samples of them), drawn as dots against --against.
+    #[arg(long, value_name = "S", requires = "against")]
+    section: Option<String>,
     /// Where to write the SVG chart; '-' writes it to standard output, and the table to
     /// standard error.
     #[arg(short, long, value_name = "FILE.svg")]
@@ -113,12 +121,12 @@ pub fn run(job: &PlotJob) -> anyhow::Result<bool> {
         bail!("plot prints its table as text, markdown or json, not latex");
     }
     let file = load(&args.file, &job.limits)?;
-    let input = file.plot_input(
-        args.at.as_deref(),
-        &args.from,
-        &args.curves,
-        args.against.as_deref(),
-    )?;
+    let functions = PlotFunctions {
+        curves: &args.curves,
+        against: args.against.as_deref(),
+        section: args.section.as_deref(),
+    };
+    let input = file.plot_input(args.at.as_deref(), &args.from, functions)?;
     let flow = Flow::new(file.system.space(), &input.hamiltonian)
         .context("Hamilton's equations at these values")?;
     let mut start = vec![0.0; file.system.vars().len()];
@@ -130,12 +138,22 @@ pub fn run(job: &PlotJob) -> anyhow::Result<bool> {
             )
         })?;
     }
-    let path = flow.integrate(
-        &start,
-        args.time,
-        args.steps as usize,
-        args.samples as usize,
-    )?;
+    let (steps, samples) = (args.steps as usize, args.samples as usize);
+    let path = match &input.section {
+        None => flow.integrate(&start, args.time, steps, samples)?,
+        Some((label, f)) => {
+            let f = Numeric::new(f, flow.phase()).with_context(|| label.to_string())?;
+            let path = flow.section(&start, args.time, steps, &f, samples)?;
+            if path.times.is_empty() {
+                bail!(
+                    "{label} does not cross zero upward from t = 0 to {}: no point of the \
+                     section (a longer --time, or another section)",
+                    short(args.time)
+                );
+            }
+            path
+        }
+    };
     let series = |label: &str, f: &trigpoly::Expr| -> anyhow::Result<Series> {
         let f = Numeric::new(f, flow.phase()).with_context(|| label.to_string())?;
         Ok(Series {
@@ -172,7 +190,11 @@ pub fn run(job: &PlotJob) -> anyhow::Result<bool> {
                 .collect(),
         })
         .collect();
-    let svg = chart::svg(&title, &axis.label, &drawn)?;
+    let style = match input.section {
+        Some(_) => Style::Dots,
+        None => Style::Lines,
+    };
+    let svg = chart::svg(&title, &axis.label, &drawn, style)?;
     let to_stdout = args.output.as_os_str() == "-";
     if to_stdout {
         emit(&svg)?;
@@ -188,10 +210,11 @@ pub fn run(job: &PlotJob) -> anyhow::Result<bool> {
         .with_context(|| format!("cannot write {}", data.display()))?;
     }
     let rows: Vec<&Series> = std::iter::once(&energy).chain(&curves).collect();
+    let section = input.section.as_ref().map(|(label, _)| label.as_str());
     let table = match job.output.format {
-        Format::Json => json(&title, args, &rows),
-        Format::Markdown => markdown(&title, args, path.times.len(), &rows),
-        _ => text(&title, args, path.times.len(), &rows),
+        Format::Json => json(&title, args, &path, section, &rows),
+        Format::Markdown => markdown(&title, &method(args, &path, section), &rows),
+        _ => text(&title, &method(args, &path, section), &rows),
     };
     if to_stdout {
         eprint!("{table}");
@@ -201,11 +224,12 @@ pub fn run(job: &PlotJob) -> anyhow::Result<bool> {
     Ok(true)
 }
 
-/// What the table says of one function: at the start and the end, least, greatest, and the
-/// largest change from the start.
+/// What the table says of one function: its first and last values (at `t = 0` and at the
+/// end, or at the first and last points of a section), least, greatest, and the largest change
+/// from the first.
 fn stats(s: &Series) -> [f64; 5] {
     let first = s.values[0];
-    let last = *s.values.last().expect("a sample at t = 0 at least");
+    let last = *s.values.last().expect("a point at least");
     let least = s.values.iter().copied().fold(f64::INFINITY, f64::min);
     let greatest = s.values.iter().copied().fold(f64::NEG_INFINITY, f64::max);
     let change = s
@@ -218,26 +242,33 @@ fn stats(s: &Series) -> [f64; 5] {
 
 const HEADINGS: [&str; 6] = [
     "function",
-    "at t = 0",
-    "at the end",
+    "first",
+    "last",
     "least",
     "greatest",
     "largest change",
 ];
 
-/// The run in one line: time, steps, method, samples, where the chart went.
-fn method(args: &PlotArgs, points: usize) -> String {
+/// The run in one line: time, steps, method, what was kept, where the chart went.
+fn method(args: &PlotArgs, path: &Trajectory, section: Option<&str>) -> String {
+    let kept = match section {
+        None => format!("{} points a curve", path.times.len()),
+        Some(label) => format!(
+            "{} upward crossings of {label} = 0, the last at t = {}",
+            path.times.len(),
+            path.times.last().map_or(String::new(), |&t| short(t))
+        ),
+    };
     format!(
-        "t from 0 to {} in {} steps of the classical Runge–Kutta method (floating point), {} \
-         points a curve; chart: {}",
+        "t from 0 to {} in {} steps of the classical Runge–Kutta method (floating point); \
+         {kept}; chart: {}",
         short(args.time),
         args.steps,
-        points,
         args.output.display()
     )
 }
 
-fn text(title: &str, args: &PlotArgs, points: usize, rows: &[&Series]) -> String {
+fn text(title: &str, how: &str, rows: &[&Series]) -> String {
     let cells: Vec<[String; 6]> = rows
         .iter()
         .map(|s| {
@@ -254,7 +285,7 @@ fn text(title: &str, args: &PlotArgs, points: usize, rows: &[&Series]) -> String
             .unwrap_or(0)
     };
     let widths: Vec<usize> = (0..6).map(width).collect();
-    let mut out = format!("{title}\n{}\n\n", method(args, points));
+    let mut out = format!("{title}\n{how}\n\n");
     for row in std::iter::once(HEADINGS.map(String::from)).chain(cells) {
         let mut line = String::new();
         for (k, cell) in row.iter().enumerate() {
@@ -271,9 +302,9 @@ fn text(title: &str, args: &PlotArgs, points: usize, rows: &[&Series]) -> String
     out
 }
 
-fn markdown(title: &str, args: &PlotArgs, points: usize, rows: &[&Series]) -> String {
-    let mut out = format!("## {title}\n\n{}\n\n", method(args, points));
-    out.push_str("| function | at t = 0 | at the end | least | greatest | largest change |\n");
+fn markdown(title: &str, how: &str, rows: &[&Series]) -> String {
+    let mut out = format!("## {title}\n\n{how}\n\n");
+    out.push_str("| function | first | last | least | greatest | largest change |\n");
     out.push_str("|---|---:|---:|---:|---:|---:|\n");
     for s in rows {
         let [a, b, c, d, e] = stats(s).map(number);
@@ -282,15 +313,21 @@ fn markdown(title: &str, args: &PlotArgs, points: usize, rows: &[&Series]) -> St
     out
 }
 
-fn json(title: &str, args: &PlotArgs, rows: &[&Series]) -> String {
+fn json(
+    title: &str,
+    args: &PlotArgs,
+    path: &Trajectory,
+    section: Option<&str>,
+    rows: &[&Series],
+) -> String {
     let functions: Vec<serde_json::Value> = rows
         .iter()
         .map(|s| {
-            let [start, end, least, greatest, change] = stats(s);
+            let [first, last, least, greatest, change] = stats(s);
             serde_json::json!({
                 "function": s.label,
-                "start": start,
-                "end": end,
+                "first": first,
+                "last": last,
                 "least": least,
                 "greatest": greatest,
                 "largest_change": change,
@@ -303,6 +340,8 @@ fn json(title: &str, args: &PlotArgs, rows: &[&Series]) -> String {
         "time": args.time,
         "steps": args.steps,
         "method": "classical Runge-Kutta, fixed step, floating point",
+        "section": section,
+        "points": path.times.len(),
         "chart": args.output.display().to_string(),
         "functions": functions,
     });

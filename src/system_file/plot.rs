@@ -27,6 +27,21 @@ pub struct PlotInput {
     pub curves: Vec<(String, Expr)>,
     /// What the horizontal axis shows, if not the time: a label and a real function.
     pub against: Option<(String, Expr)>,
+    /// The function whose upward zeros are kept instead of equally spaced times (a
+    /// Poincaré section), if any: a label and a real function.
+    pub section: Option<(String, Expr)>,
+}
+
+/// What a plot draws, as given on the command line: the curves, what they are drawn against
+/// (the time if `None`), and the function of a Poincaré section, if any.
+#[derive(Clone, Copy, Debug)]
+pub struct PlotFunctions<'a> {
+    /// The curves.
+    pub curves: &'a [String],
+    /// `--against`.
+    pub against: Option<&'a str>,
+    /// `--section`.
+    pub section: Option<&'a str>,
 }
 
 /// The parameters' values of a plot, as a substitution.
@@ -34,15 +49,13 @@ type Values = Vec<(Var, Expr)>;
 
 impl LoadedSystem {
     /// Reads a plot's parameters `at` (`"M = 1, omega = 2"`), its starting point `from`
-    /// (every coordinate, angle and momentum; values may hold parameters), its `curves` and
-    /// what to plot them `against` (the time if `None`), and makes them exact. Errors point
-    /// into the argument at fault.
+    /// (every coordinate, angle and momentum; values may hold parameters) and its
+    /// `functions`, and makes them exact. Errors point into the argument at fault.
     pub fn plot_input(
         &self,
         at: Option<&str>,
         from: &str,
-        curves: &[String],
-        against: Option<&str>,
+        functions: PlotFunctions<'_>,
     ) -> Result<PlotInput, FileError> {
         let (values, parameters) = match at {
             Some(at) => self.parameter_values(at)?,
@@ -54,7 +67,7 @@ impl LoadedSystem {
             return Err(FileError::new(ErrorKind::Expression, COMMAND_LINE, why));
         }
         let mut real_curves = Vec::new();
-        for src in curves {
+        for src in functions.curves {
             let (label, value, _) = self.drawable(src, &values)?;
             if value.is_real() {
                 real_curves.push((label, value));
@@ -64,29 +77,40 @@ impl LoadedSystem {
                 real_curves.push((format!("im({label})"), im));
             }
         }
-        let against = match against {
-            None => None,
-            Some(src) => {
-                let (label, value, arg) = self.drawable(src, &values)?;
-                if !value.is_real() {
-                    let why = format!(
-                        "--against takes a real function; {label} is not: take re(…) or im(…)"
-                    );
-                    let whole = Span::new(0, arg.text.value.len());
-                    return Err(arg
-                        .text
-                        .error(&arg.source, ErrorKind::Expression, whole, why));
-                }
-                Some((label, value))
-            }
+        let real = |option: &str, src: Option<&str>| match src {
+            None => Ok(None),
+            Some(src) => self.real_drawable(option, src, &values).map(Some),
         };
+        let against = real("--against", functions.against)?;
+        let section = real("--section", functions.section)?;
         Ok(PlotInput {
             parameters,
             hamiltonian,
             start,
             curves: real_curves,
             against,
+            section,
         })
+    }
+
+    /// A real function given to `option`: its label and value, or an error saying to take
+    /// its real or imaginary part.
+    fn real_drawable(
+        &self,
+        option: &str,
+        src: &str,
+        values: &Values,
+    ) -> Result<(String, Expr), FileError> {
+        let (label, value, arg) = self.drawable(src, values)?;
+        if !value.is_real() {
+            let why =
+                format!("{option} takes a real function; {label} is not: take re(…) or im(…)");
+            let whole = Span::new(0, arg.text.value.len());
+            return Err(arg
+                .text
+                .error(&arg.source, ErrorKind::Expression, whole, why));
+        }
+        Ok((label, value))
     }
 
     /// `--at`: each parameter named a real number. The substitution, and how it reads.

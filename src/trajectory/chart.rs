@@ -12,6 +12,16 @@ pub struct Curve {
     pub points: Vec<(f64, f64)>,
 }
 
+/// How curves are drawn: joined by lines (values over time, an orbit), or as dots (the
+/// points of a Poincaré section, which follow no order).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Style {
+    /// Lines through the points, in order.
+    Lines,
+    /// A dot at each point.
+    Dots,
+}
+
 /// The chart could not be drawn.
 #[derive(Debug, thiserror::Error)]
 #[error("the chart could not be drawn: {0}")]
@@ -35,7 +45,12 @@ const PALETTE: [RGBColor; 10] = [
 ];
 
 /// The curves in one chart with a title, the x axis labelled `x_label`, as an SVG document.
-pub fn svg(title: &str, x_label: &str, curves: &[Curve]) -> Result<String, ChartError> {
+pub fn svg(
+    title: &str,
+    x_label: &str,
+    curves: &[Curve],
+    style: Style,
+) -> Result<String, ChartError> {
     let fail = |e: &dyn std::fmt::Display| ChartError(e.to_string());
     let xs = span(curves.iter().flat_map(|c| c.points.iter().map(|p| p.0)));
     let ys = span(curves.iter().flat_map(|c| c.points.iter().map(|p| p.1)));
@@ -63,16 +78,25 @@ pub fn svg(title: &str, x_label: &str, curves: &[Curve]) -> Result<String, Chart
             .map_err(|e| fail(&e))?;
         for (k, curve) in curves.iter().enumerate() {
             let color = PALETTE[k % PALETTE.len()];
-            chart
-                .draw_series(LineSeries::new(
-                    curve.points.iter().copied(),
-                    color.stroke_width(2),
-                ))
+            let points = curve.points.iter().copied();
+            let drawn = match style {
+                Style::Lines => chart.draw_series(LineSeries::new(points, color.stroke_width(2))),
+                Style::Dots => chart.draw_series(points.map(|p| Circle::new(p, 2, color.filled()))),
+            };
+            drawn
                 .map_err(|e| fail(&e))?
                 .label(curve.label.as_str())
-                .legend(move |(x, y)| {
-                    PathElement::new(vec![(x, y), (x + 24, y)], color.stroke_width(2))
-                });
+                .legend(
+                    move |(x, y)| -> DynElement<'static, SVGBackend<'_>, (i32, i32)> {
+                        match style {
+                            Style::Lines => {
+                                PathElement::new(vec![(x, y), (x + 24, y)], color.stroke_width(2))
+                                    .into_dyn()
+                            }
+                            Style::Dots => Circle::new((x + 12, y), 3, color.filled()).into_dyn(),
+                        }
+                    },
+                );
         }
         chart
             .configure_series_labels()
@@ -144,7 +168,7 @@ mod tests {
                 points: (0..50).map(|k| (k as f64, 0.25)).collect(),
             },
         ];
-        let svg = svg("harmonic rotor", "t", &curves).unwrap();
+        let svg = svg("harmonic rotor", "t", &curves, Style::Lines).unwrap();
         assert!(svg.starts_with("<svg"), "{}", &svg[..60.min(svg.len())]);
         assert!(svg.trim_end().ends_with("</svg>"));
         // The two curves and their two marks in the legend are the polylines drawn 2 wide.
@@ -152,6 +176,18 @@ mod tests {
         for text in ["harmonic rotor", "re(K₁,₁)", "\nt\n"] {
             assert!(svg.contains(text), "{text:?} missing");
         }
+    }
+
+    #[test]
+    fn dots_are_circles_one_a_point() {
+        let curve = Curve {
+            label: "p_y".into(),
+            points: vec![(0.0, 1.0), (0.5, -1.0), (1.0, 0.0)],
+        };
+        let svg = svg("section", "y", &[curve], Style::Dots).unwrap();
+        // One a point, and one in the legend.
+        assert_eq!(svg.matches("<circle").count(), 3 + 1);
+        assert!(!svg.contains(r#"stroke-width="2""#), "no line");
     }
 
     #[test]

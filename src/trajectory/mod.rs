@@ -220,12 +220,68 @@ impl Flow {
         steps: usize,
         samples: usize,
     ) -> Result<Trajectory, TrajectoryError> {
-        assert_eq!(start.len(), self.width, "a state holds every variable");
-        assert!(steps > 0 && samples > 0, "at least one step and one sample");
+        assert!(samples > 0, "at least one sample");
         let stride = steps.div_ceil(samples);
+        let mut path = Trajectory {
+            times: vec![0.0],
+            states: vec![start.to_vec()],
+        };
+        self.walk(start, time, steps, |step, done| {
+            if step.number % stride == 0 || step.number == steps {
+                path.times.push(step.t1);
+                path.states.push(step.y1.to_vec());
+            }
+            *done = false;
+        })?;
+        Ok(path)
+    }
+
+    /// Integrates as [`Flow::integrate`] does and keeps the states where `section` crosses
+    /// zero upward (from below zero to zero or above), at most `points` of them: a Poincaré
+    /// section. Each crossing is found within its step on the cubic that matches the states
+    /// and velocities at both ends (Hermite's, accurate to the order of the method), by
+    /// regula falsi on `section` along it.
+    pub fn section(
+        &self,
+        start: &[f64],
+        time: f64,
+        steps: usize,
+        section: &Numeric,
+        points: usize,
+    ) -> Result<Trajectory, TrajectoryError> {
+        let mut path = Trajectory {
+            times: Vec::new(),
+            states: Vec::new(),
+        };
+        let mut end_velocity = vec![0.0; self.width];
+        self.walk(start, time, steps, |step, done| {
+            let (f0, f1) = (section.real(step.y0), section.real(step.y1));
+            if f0 < 0.0 && f1 >= 0.0 {
+                self.velocity(step.y1, &mut end_velocity);
+                let (s, y) = crossing(step, &end_velocity, |y| section.real(y), (f0, f1));
+                path.times.push(step.t0 + s * (step.t1 - step.t0));
+                path.states.push(y);
+            }
+            *done = path.times.len() >= points;
+        })?;
+        Ok(path)
+    }
+
+    /// Takes `steps` equal steps of classical Runge–Kutta from `start` over `time`, handing
+    /// each to `visit`, until the last or until `visit` says it is done; stops with
+    /// `NotFinite` at a state that is not finite.
+    fn walk(
+        &self,
+        start: &[f64],
+        time: f64,
+        steps: usize,
+        mut visit: impl FnMut(&Step<'_>, &mut bool),
+    ) -> Result<(), TrajectoryError> {
+        assert_eq!(start.len(), self.width, "a state holds every variable");
+        assert!(steps > 0, "at least one step");
         let dt = time / steps as f64;
         let n = self.width;
-        let mut y = start.to_vec();
+        let (mut y0, mut y1) = (start.to_vec(), start.to_vec());
         let (mut k1, mut k2, mut k3, mut k4, mut tmp) = (
             vec![0.0; n],
             vec![0.0; n],
@@ -233,37 +289,110 @@ impl Flow {
             vec![0.0; n],
             vec![0.0; n],
         );
-        let mut path = Trajectory {
-            times: vec![0.0],
-            states: vec![y.clone()],
-        };
         let stage = |y: &[f64], k: &[f64], h: f64, out: &mut [f64]| {
             for ((o, &a), &b) in out.iter_mut().zip(y).zip(k) {
                 *o = a + h * b;
             }
         };
-        for step in 1..=steps {
-            self.velocity(&y, &mut k1);
-            stage(&y, &k1, dt / 2.0, &mut tmp);
+        let mut t0 = 0.0;
+        for number in 1..=steps {
+            self.velocity(&y0, &mut k1);
+            stage(&y0, &k1, dt / 2.0, &mut tmp);
             self.velocity(&tmp, &mut k2);
-            stage(&y, &k2, dt / 2.0, &mut tmp);
+            stage(&y0, &k2, dt / 2.0, &mut tmp);
             self.velocity(&tmp, &mut k3);
-            stage(&y, &k3, dt, &mut tmp);
+            stage(&y0, &k3, dt, &mut tmp);
             self.velocity(&tmp, &mut k4);
             for j in 0..n {
-                y[j] += dt / 6.0 * (k1[j] + 2.0 * k2[j] + 2.0 * k3[j] + k4[j]);
+                y1[j] = y0[j] + dt / 6.0 * (k1[j] + 2.0 * k2[j] + 2.0 * k3[j] + k4[j]);
             }
-            let t = time * step as f64 / steps as f64;
-            if self.phase.iter().any(|v| !y[v.index()].is_finite()) {
-                return Err(TrajectoryError::NotFinite { time: t });
+            let t1 = time * number as f64 / steps as f64;
+            if self.phase.iter().any(|v| !y1[v.index()].is_finite()) {
+                return Err(TrajectoryError::NotFinite { time: t1 });
             }
-            if step % stride == 0 || step == steps {
-                path.times.push(t);
-                path.states.push(y.clone());
+            let mut done = false;
+            let step = Step {
+                number,
+                t0,
+                t1,
+                y0: &y0,
+                y1: &y1,
+                velocity: &k1,
+            };
+            visit(&step, &mut done);
+            if done {
+                break;
             }
+            std::mem::swap(&mut y0, &mut y1);
+            t0 = t1;
         }
-        Ok(path)
+        Ok(())
     }
+}
+
+/// One step of a walk: its number (from 1), its times and states, and the velocity at its
+/// start.
+struct Step<'a> {
+    number: usize,
+    t0: f64,
+    t1: f64,
+    y0: &'a [f64],
+    y1: &'a [f64],
+    velocity: &'a [f64],
+}
+
+/// Where in `step` the function `f`, with the values `(f0 < 0, f1 ≥ 0)` at its ends, is zero:
+/// the fraction `s` of the step and the state there, on Hermite's cubic through both ends'
+/// states and velocities (`end_velocity` at the end), by regula falsi with the Illinois
+/// rule.
+fn crossing(
+    step: &Step<'_>,
+    end_velocity: &[f64],
+    f: impl Fn(&[f64]) -> f64,
+    (f0, f1): (f64, f64),
+) -> (f64, Vec<f64>) {
+    let h = step.t1 - step.t0;
+    let at = |s: f64| -> Vec<f64> {
+        let (s2, s3) = (s * s, s * s * s);
+        let (h00, h10, h01, h11) = (
+            2.0 * s3 - 3.0 * s2 + 1.0,
+            s3 - 2.0 * s2 + s,
+            3.0 * s2 - 2.0 * s3,
+            s3 - s2,
+        );
+        (0..step.y0.len())
+            .map(|j| {
+                h00 * step.y0[j]
+                    + h10 * h * step.velocity[j]
+                    + h01 * step.y1[j]
+                    + h11 * h * end_velocity[j]
+            })
+            .collect()
+    };
+    let (mut a, mut fa, mut b, mut fb) = (0.0, f0, 1.0, f1);
+    let mut s = a - fa * (b - a) / (fb - fa);
+    let mut side = 0;
+    for _ in 0..40 {
+        s = a - fa * (b - a) / (fb - fa);
+        let fs = f(&at(s));
+        if fs == 0.0 || (b - a).abs() < 1e-15 {
+            break;
+        }
+        if fs < 0.0 {
+            (a, fa) = (s, fs);
+            if side == -1 {
+                fb /= 2.0;
+            }
+            side = -1;
+        } else {
+            (b, fb) = (s, fs);
+            if side == 1 {
+                fa /= 2.0;
+            }
+            side = 1;
+        }
+    }
+    (s, at(s))
 }
 
 /// States of a flow at increasing times, the first at `t = 0`.
@@ -286,6 +415,7 @@ impl Trajectory {
 mod tests {
     use super::*;
     use brackets::systems;
+    use std::f64::consts::PI;
 
     /// The harmonic rotor at M = ω = I = 1.
     fn unit_rotor() -> (brackets::System, Expr) {
@@ -315,6 +445,37 @@ mod tests {
         assert!((at("y") - 2f64.sin()).abs() < 1e-10);
         assert!((at("theta") - 4.5).abs() < 1e-10);
         assert!((at("p_theta") - 2.0).abs() < 1e-12);
+    }
+
+    #[test]
+    fn a_section_finds_each_upward_crossing_on_the_exact_solution() {
+        // x = cos t, y = sin(t)/2: x crosses 0 upward at t = 3π/2 + 2πk, where y = −1/2.
+        let (rotor, h) = unit_rotor();
+        let flow = Flow::new(rotor.space(), &h).unwrap();
+        let mut start = vec![0.0; rotor.vars().len()];
+        for (name, value) in [("x", 1.0), ("p_y", 0.5), ("p_theta", 1.0)] {
+            start[rotor.var(name).index()] = value;
+        }
+        let x = Numeric::new(&rotor.parse("x").unwrap(), flow.phase()).unwrap();
+        let path = flow.section(&start, 20.0, 2000, &x, 100).unwrap();
+        let expected: Vec<f64> = (0..3).map(|k| 1.5 * PI + 2.0 * PI * f64::from(k)).collect();
+        assert_eq!(path.times.len(), expected.len());
+        for (t, state) in path.times.iter().zip(&path.states) {
+            let nearest = expected
+                .iter()
+                .map(|e| (e - t).abs())
+                .fold(f64::MAX, f64::min);
+            // Steps of 0.01: the crossing to the method's accuracy, where a straight line
+            // between the steps' ends would be off by about 1e-5.
+            assert!(nearest < 1e-8, "a crossing at {t}");
+            assert!(state[rotor.var("x").index()].abs() < 1e-8);
+            assert!((state[rotor.var("y").index()] + 0.5).abs() < 1e-8);
+        }
+        // At most `points` of them: the walk stops at the second.
+        assert_eq!(
+            flow.section(&start, 20.0, 200, &x, 2).unwrap().times.len(),
+            2
+        );
     }
 
     #[test]

@@ -622,6 +622,10 @@ fn cli_plot_bad_arguments_exit_2_with_a_message() {
             "invalid value '0' for '--time <T>': 0 is not a positive number of time units",
         ),
         (
+            vec!["L", "--section", "x", "--at", at, "--from", full],
+            "the following required arguments were not provided:\n  --against <F>",
+        ),
+        (
             vec!["L", "--at", at, "--from", full, "--format", "latex"],
             "plot prints its table as text, markdown or json, not latex",
         ),
@@ -641,4 +645,60 @@ fn cli_plot_bad_arguments_exit_2_with_a_message() {
             stderr(&o)
         );
     }
+}
+
+/// A Poincaré section of the oscillator's ellipse at `x = 0` (upward): every crossing is at
+/// `y = −1/2`, `p_y = 0`, once a period `2π`; one that is never crossed is an error.
+#[test]
+fn cli_plot_section_keeps_the_upward_crossings() {
+    let (svg, csv) = (scratch_file("section.svg"), scratch_file("section.csv"));
+    let rest = ["p_y", "--against", "y", "--section", "x", "--time", "20"];
+    let mut args = plot_args("1", &rest);
+    args.extend(["-o", svg.to_str().unwrap(), "--data", csv.to_str().unwrap()].map(String::from));
+    args.extend(["--format", "json"].map(String::from));
+    let args: Vec<&str> = args.iter().map(String::as_str).collect();
+    let doc: Value = serde_json::from_str(&run(&args, 0)).expect("JSON");
+    assert_eq!(doc["section"], "x");
+    assert_eq!(doc["points"], 3);
+    let data = std::fs::read_to_string(&csv).expect("the data was written");
+    let rows: Vec<Vec<f64>> = data
+        .lines()
+        .skip(1)
+        .map(|l| l.split(',').map(|v| v.parse().expect("a number")).collect())
+        .collect();
+    let period = 2.0 * std::f64::consts::PI;
+    for (k, row) in rows.iter().enumerate() {
+        let (t, y, p_y) = (row[0], row[1], row[2]);
+        assert!((t - (0.75 + k as f64) * period).abs() < 1e-9, "{row:?}");
+        assert!((y + 0.5).abs() < 1e-9 && p_y.abs() < 1e-9, "{row:?}");
+    }
+    assert_eq!(rows.len(), 3);
+    let drawn = std::fs::read_to_string(&svg).expect("the chart was written");
+    assert_eq!(
+        drawn.matches("<circle").count(),
+        3 + 1,
+        "three dots and the legend's"
+    );
+
+    let never = plot_args(
+        "1",
+        &[
+            "p_y",
+            "--against",
+            "y",
+            "--section",
+            "x - 2",
+            "--time",
+            "20",
+        ],
+    );
+    let mut never: Vec<&str> = never.iter().map(String::as_str).collect();
+    never.extend(["-o", svg.to_str().unwrap()]);
+    let o = superint(&never);
+    assert_eq!(o.status.code(), Some(2));
+    assert!(
+        stderr(&o).contains("x − 2 does not cross zero upward from t = 0 to 20"),
+        "{}",
+        stderr(&o)
+    );
 }
