@@ -28,6 +28,8 @@
 
 pub mod chart;
 
+use std::ops::ControlFlow;
+
 use brackets::{EngineError, PhaseSpace};
 use num_traits::ToPrimitive;
 use trigpoly::{Expr, Rational, Var, VarKind};
@@ -226,12 +228,12 @@ impl Flow {
             times: vec![0.0],
             states: vec![start.to_vec()],
         };
-        self.walk(start, time, steps, |step, done| {
+        self.walk(start, time, steps, |step| {
             if step.number % stride == 0 || step.number == steps {
                 path.times.push(step.t1);
                 path.states.push(step.y1.to_vec());
             }
-            *done = false;
+            ControlFlow::Continue(())
         })?;
         Ok(path)
     }
@@ -254,7 +256,7 @@ impl Flow {
             states: Vec::new(),
         };
         let mut end_velocity = vec![0.0; self.width];
-        self.walk(start, time, steps, |step, done| {
+        self.walk(start, time, steps, |step| {
             let (f0, f1) = (section.real(step.y0), section.real(step.y1));
             if f0 < 0.0 && f1 >= 0.0 {
                 self.velocity(step.y1, &mut end_velocity);
@@ -262,20 +264,23 @@ impl Flow {
                 path.times.push(step.t0 + s * (step.t1 - step.t0));
                 path.states.push(y);
             }
-            *done = path.times.len() >= points;
+            match path.times.len() < points {
+                true => ControlFlow::Continue(()),
+                false => ControlFlow::Break(()),
+            }
         })?;
         Ok(path)
     }
 
     /// Takes `steps` equal steps of classical Runge–Kutta from `start` over `time`, handing
-    /// each to `visit`, until the last or until `visit` says it is done; stops with
+    /// each to `visit`, until the last or until `visit` breaks; stops with
     /// `NotFinite` at a state that is not finite.
     fn walk(
         &self,
         start: &[f64],
         time: f64,
         steps: usize,
-        mut visit: impl FnMut(&Step<'_>, &mut bool),
+        mut visit: impl FnMut(&Step<'_>) -> ControlFlow<()>,
     ) -> Result<(), TrajectoryError> {
         assert_eq!(start.len(), self.width, "a state holds every variable");
         assert!(steps > 0, "at least one step");
@@ -310,7 +315,6 @@ impl Flow {
             if self.phase.iter().any(|v| !y1[v.index()].is_finite()) {
                 return Err(TrajectoryError::NotFinite { time: t1 });
             }
-            let mut done = false;
             let step = Step {
                 number,
                 t0,
@@ -319,8 +323,7 @@ impl Flow {
                 y1: &y1,
                 velocity: &k1,
             };
-            visit(&step, &mut done);
-            if done {
+            if visit(&step).is_break() {
                 break;
             }
             std::mem::swap(&mut y0, &mut y1);
@@ -370,13 +373,12 @@ fn crossing(
             .collect()
     };
     let (mut a, mut fa, mut b, mut fb) = (0.0, f0, 1.0, f1);
-    let mut s = a - fa * (b - a) / (fb - fa);
     let mut side = 0;
     for _ in 0..40 {
-        s = a - fa * (b - a) / (fb - fa);
+        let s = a - fa * (b - a) / (fb - fa);
         let fs = f(&at(s));
-        if fs == 0.0 || (b - a).abs() < 1e-15 {
-            break;
+        if fs == 0.0 || b - a < 1e-15 {
+            return (s, at(s));
         }
         if fs < 0.0 {
             (a, fa) = (s, fs);
@@ -392,6 +394,7 @@ fn crossing(
             side = 1;
         }
     }
+    let s = a - fa * (b - a) / (fb - fa);
     (s, at(s))
 }
 
