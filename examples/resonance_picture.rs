@@ -1,7 +1,7 @@
 //! The resonance `Ω = ω` twice: proved exactly (`{K_{1,1}, H} = 0` at `p_θ = Iω`), then seen
 //! along trajectories computed in floating point at `M = ω = I = 1`, where `K_{1,1}` stands
 //! still at `p_θ = 1` and turns at `p_θ = 2`; the chart of the first is written to
-//! `resonance.svg`.
+//! `resonance.svg` in the system's temporary directory.
 //!
 //! Run with `cargo run --example resonance_picture`.
 
@@ -59,10 +59,12 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
                     .collect(),
             };
             let drawn = [curve("re K₁,₁", &re_k), curve("im K₁,₁", &im_k)];
+            let file = std::env::temp_dir().join("resonance.svg");
             std::fs::write(
-                "resonance.svg",
+                &file,
                 chart::svg("K₁,₁ at Ω = ω", "t", &drawn, Style::Lines)?,
             )?;
+            println!("  its chart: {}", file.display());
         }
     }
     Ok(())
