@@ -1,6 +1,7 @@
-//! `superint plot FILE CURVES… --from … --time T -o FILE.svg`: a trajectory of the system's
-//! flow, computed in floating point, drawn as an SVG chart of the curves over time (or against
-//! another function), with a table of how far each curve moved. A picture, never a proof.
+//! `superint plot FILE CURVES… --from … --time T -o FILE.svg`: trajectories of the system's
+//! flow, one from each starting point, computed in floating point and drawn as an SVG chart of
+//! the curves over time, against another function, or at a Poincaré section, with a table of
+//! how far each curve moved. A picture, never a proof.
 
 use std::fmt::Write as _;
 use std::path::PathBuf;
@@ -10,7 +11,7 @@ use clap::Args;
 use superint::render::Format;
 use superint::system_file::{load, LimitsOverride, PlotFunctions};
 use superint::trajectory::chart::{self, Curve, Style};
-use superint::trajectory::{nearest_f64, short, Flow, Numeric, Trajectory};
+use superint::trajectory::{nearest_f64, short, Flow, Numeric};
 
 use super::limits::LimitsArgs;
 use super::output::{emit, Output};
@@ -24,15 +25,15 @@ Examples:
       --at 'M = 1, omega = 1, I = 1' \\
       --from 'x = 1, y = 0, theta = 0, p_x = 0, p_y = 1/2, p_theta = 2'
   superint plot systems/henon-heiles.toml p_y --against y --section x -o section.svg \
-      --at 'A = 1, B = 1, C = -1/3' --from 'x = 0, y = 1/10, p_x = 2/5, p_y = 0' \
-      --time 3000 --steps 300000 --samples 3000
+      --at 'A = 1, B = 1, C = -1/3' --time 3000 --steps 300000 --samples 3000 \
+      --from 'x = 0, y = 1/10, p_x = 2/5, p_y = 0' --from 'x = 0, y = 1/4, p_x = 3/10, p_y = 0'
 
 Hamilton's equations are formed exactly, then integrated in floating point by the classical
 Runge–Kutta method at a fixed step: the chart illustrates, `check` proves. The table gives
 each curve at the start and the end, its range, and its largest change from the start; H
 comes first, and its change tells how far the integration can be trusted. A complex function
 (K_1_1) is drawn as its real and imaginary parts. --section S keeps the states where S crosses
-zero upward, a Poincaré section, drawn as dots.";
+zero upward, a Poincaré section, drawn as dots. Each --from is an orbit of its own.";
 
 /// Arguments of `superint plot`.
 #[derive(Debug, Args)]
@@ -48,9 +49,9 @@ pub struct PlotArgs {
     at: Option<String>,
     /// The starting point: a value for every coordinate, angle and momentum, such as
     /// 'x = 1, y = 0, theta = 0, p_x = 0, p_y = 1, p_theta = I*omega' (exact; parameters
-    /// allowed).
-    #[arg(long, value_name = "POINT")]
-    from: String,
+    /// allowed). Give it again for more orbits in the same chart.
+    #[arg(long, value_name = "POINT", required = true)]
+    from: Vec<String>,
     /// How long to follow the motion.
     #[arg(long, value_name = "T", value_parser = positive_time)]
     time: f64,
@@ -114,6 +115,20 @@ struct Series {
     values: Vec<f64>,
 }
 
+/// What one starting point gave: the times of its points, the values of the horizontal axis
+/// there, and its rows, `H` first and then each curve.
+struct Orbit {
+    times: Vec<f64>,
+    axis: Vec<f64>,
+    rows: Vec<Series>,
+}
+
+/// A function ready to evaluate along trajectories, with its label.
+struct Function {
+    label: String,
+    numeric: Numeric,
+}
+
 /// Integrates, draws the chart, writes it (and the data), prints the table.
 pub fn run(job: &PlotJob) -> anyhow::Result<bool> {
     let args = &job.args;
@@ -129,72 +144,98 @@ pub fn run(job: &PlotJob) -> anyhow::Result<bool> {
     let input = file.plot_input(args.at.as_deref(), &args.from, functions)?;
     let flow = Flow::new(file.system.space(), &input.hamiltonian)
         .context("Hamilton's equations at these values")?;
-    let mut start = vec![0.0; file.system.vars().len()];
-    for (v, value) in &input.start {
-        start[v.index()] = nearest_f64(value).with_context(|| {
-            format!(
-                "the starting value of {}",
-                file.system.vars().variable(*v).unicode()
-            )
-        })?;
-    }
-    let (steps, samples) = (args.steps as usize, args.samples as usize);
-    let path = match &input.section {
-        None => flow.integrate(&start, args.time, steps, samples)?,
-        Some((label, f)) => {
-            let f = Numeric::new(f, flow.phase()).with_context(|| label.to_string())?;
-            let path = flow.section(&start, args.time, steps, &f, samples)?;
-            if path.times.is_empty() {
-                bail!(
-                    "{label} does not cross zero upward from t = 0 to {}: no point of the \
-                     section (a longer --time, or another section)",
-                    short(args.time)
-                );
-            }
-            path
-        }
-    };
-    let series = |label: &str, f: &trigpoly::Expr| -> anyhow::Result<Series> {
-        let f = Numeric::new(f, flow.phase()).with_context(|| label.to_string())?;
-        Ok(Series {
+    let function = |label: &str, f: &trigpoly::Expr| -> anyhow::Result<Function> {
+        let numeric = Numeric::new(f, flow.phase()).with_context(|| label.to_string())?;
+        Ok(Function {
             label: label.to_string(),
-            values: path.values(|s| f.real(s)),
+            numeric,
         })
     };
-    let energy = series("H", &input.hamiltonian)?;
-    let curves = input
-        .curves
-        .iter()
-        .map(|(label, f)| series(label, f))
-        .collect::<anyhow::Result<Vec<_>>>()?;
-    let axis = match &input.against {
-        Some((label, f)) => series(label, f)?,
-        None => Series {
-            label: "t".into(),
-            values: path.times.clone(),
-        },
-    };
+    let mut rows = vec![function("H", &input.hamiltonian)?];
+    for (label, f) in &input.curves {
+        rows.push(function(label, f)?);
+    }
+    let against = input
+        .against
+        .as_ref()
+        .map(|(l, f)| function(l, f))
+        .transpose()?;
+    let section = input
+        .section
+        .as_ref()
+        .map(|(l, f)| function(l, f))
+        .transpose()?;
+    let several = input.starts.len() > 1;
+    let mut orbits = Vec::new();
+    for (k, point) in input.starts.iter().enumerate() {
+        // `[2]` after each label when there are several starting points.
+        let mark = if several {
+            format!(" [{}]", k + 1)
+        } else {
+            String::new()
+        };
+        let mut start = vec![0.0; file.system.vars().len()];
+        for (v, value) in point {
+            start[v.index()] = nearest_f64(value).with_context(|| {
+                let name = file.system.vars().variable(*v).unicode();
+                format!("the starting value of {name}{mark}")
+            })?;
+        }
+        let (steps, samples) = (args.steps as usize, args.samples as usize);
+        let path = match &section {
+            None => flow.integrate(&start, args.time, steps, samples)?,
+            Some(f) => flow.section(&start, args.time, steps, &f.numeric, samples)?,
+        };
+        if path.times.is_empty() {
+            let label = section.as_ref().map_or("", |f| f.label.as_str());
+            bail!(
+                "{label} does not cross zero upward from t = 0 to {}{}: no point of the section \
+                 (a longer --time, or another section)",
+                short(args.time),
+                if several {
+                    format!(" from the starting point {}", k + 1)
+                } else {
+                    String::new()
+                }
+            );
+        }
+        let values = |f: &Function| path.values(|s| f.numeric.real(s));
+        orbits.push(Orbit {
+            axis: against.as_ref().map_or_else(|| path.times.clone(), values),
+            rows: rows
+                .iter()
+                .map(|f| Series {
+                    label: format!("{}{mark}", f.label),
+                    values: values(f),
+                })
+                .collect(),
+            times: path.times,
+        });
+    }
     let title = match input.parameters.as_str() {
         "" => file.name.clone(),
         p => format!("{} at {p}", file.name),
     };
-    let drawn: Vec<Curve> = curves
+    let drawn: Vec<Curve> = orbits
         .iter()
-        .map(|c| Curve {
-            label: c.label.clone(),
-            points: axis
-                .values
-                .iter()
-                .copied()
-                .zip(c.values.iter().copied())
-                .collect(),
+        .flat_map(|o| {
+            o.rows[1..].iter().map(|c| Curve {
+                label: c.label.clone(),
+                points: o
+                    .axis
+                    .iter()
+                    .copied()
+                    .zip(c.values.iter().copied())
+                    .collect(),
+            })
         })
         .collect();
-    let style = match input.section {
+    let style = match section {
         Some(_) => Style::Dots,
         None => Style::Lines,
     };
-    let svg = chart::svg(&title, &axis.label, &drawn, style)?;
+    let axis_label = against.as_ref().map_or("t", |f| f.label.as_str());
+    let svg = chart::svg(&title, axis_label, &drawn, style)?;
     let to_stdout = args.output.as_os_str() == "-";
     if to_stdout {
         emit(&svg)?;
@@ -203,18 +244,19 @@ pub fn run(job: &PlotJob) -> anyhow::Result<bool> {
             .with_context(|| format!("cannot write {}", args.output.display()))?;
     }
     if let Some(data) = &args.data {
-        std::fs::write(
-            data,
-            csv(&path.times, input.against.as_ref().map(|_| &axis), &curves),
-        )
-        .with_context(|| format!("cannot write {}", data.display()))?;
+        let columns: Vec<&str> = against
+            .iter()
+            .chain(&rows[1..])
+            .map(|f| f.label.as_str())
+            .collect();
+        std::fs::write(data, csv(&columns, against.is_some(), &orbits))
+            .with_context(|| format!("cannot write {}", data.display()))?;
     }
-    let rows: Vec<&Series> = std::iter::once(&energy).chain(&curves).collect();
-    let section = input.section.as_ref().map(|(label, _)| label.as_str());
+    let section = section.as_ref().map(|f| f.label.as_str());
     let table = match job.output.format {
-        Format::Json => json(&title, args, &path, section, &rows),
-        Format::Markdown => markdown(&title, &method(args, &path, section), &rows),
-        _ => text(&title, &method(args, &path, section), &rows),
+        Format::Json => json(&title, args, &orbits, section),
+        Format::Markdown => markdown(&title, &method(args, &orbits, section), &orbits),
+        _ => text(&title, &method(args, &orbits, section), &orbits),
     };
     if to_stdout {
         eprint!("{table}");
@@ -250,27 +292,29 @@ const HEADINGS: [&str; 6] = [
 ];
 
 /// The run in one line: time, steps, method, what was kept, where the chart went.
-fn method(args: &PlotArgs, path: &Trajectory, section: Option<&str>) -> String {
+fn method(args: &PlotArgs, orbits: &[Orbit], section: Option<&str>) -> String {
+    let counts: Vec<String> = orbits.iter().map(|o| o.times.len().to_string()).collect();
     let kept = match section {
-        None => format!("{} points a curve", path.times.len()),
-        Some(label) => format!(
-            "{} upward crossings of {label} = 0, the last at t = {}",
-            path.times.len(),
-            path.times.last().map_or(String::new(), |&t| short(t))
-        ),
+        None => format!("{} points a curve", counts[0]),
+        Some(label) => format!("{} upward crossings of {label} = 0", counts.join(", ")),
+    };
+    let from = match orbits.len() {
+        1 => String::new(),
+        n => format!(" from each of {n} starting points"),
     };
     format!(
-        "t from 0 to {} in {} steps of the classical Runge–Kutta method (floating point); \
-         {kept}; chart: {}",
+        "t from 0 to {}{from} in {} steps of the classical Runge–Kutta method (floating \
+         point); {kept}; chart: {}",
         short(args.time),
         args.steps,
         args.output.display()
     )
 }
 
-fn text(title: &str, how: &str, rows: &[&Series]) -> String {
-    let cells: Vec<[String; 6]> = rows
+fn text(title: &str, how: &str, orbits: &[Orbit]) -> String {
+    let cells: Vec<[String; 6]> = orbits
         .iter()
+        .flat_map(|o| &o.rows)
         .map(|s| {
             let [a, b, c, d, e] = stats(s).map(number);
             [s.label.clone(), a, b, c, d, e]
@@ -302,30 +346,27 @@ fn text(title: &str, how: &str, rows: &[&Series]) -> String {
     out
 }
 
-fn markdown(title: &str, how: &str, rows: &[&Series]) -> String {
+fn markdown(title: &str, how: &str, orbits: &[Orbit]) -> String {
     let mut out = format!("## {title}\n\n{how}\n\n");
     out.push_str("| function | first | last | least | greatest | largest change |\n");
     out.push_str("|---|---:|---:|---:|---:|---:|\n");
-    for s in rows {
+    for s in orbits.iter().flat_map(|o| &o.rows) {
         let [a, b, c, d, e] = stats(s).map(number);
         let _ = writeln!(out, "| {} | {a} | {b} | {c} | {d} | {e} |", s.label);
     }
     out
 }
 
-fn json(
-    title: &str,
-    args: &PlotArgs,
-    path: &Trajectory,
-    section: Option<&str>,
-    rows: &[&Series],
-) -> String {
-    let functions: Vec<serde_json::Value> = rows
+fn json(title: &str, args: &PlotArgs, orbits: &[Orbit], section: Option<&str>) -> String {
+    let functions: Vec<serde_json::Value> = orbits
         .iter()
-        .map(|s| {
+        .enumerate()
+        .flat_map(|(k, o)| o.rows.iter().map(move |s| (k, s)))
+        .map(|(k, s)| {
             let [first, last, least, greatest, change] = stats(s);
             serde_json::json!({
                 "function": s.label,
+                "orbit": k + 1,
                 "first": first,
                 "last": last,
                 "least": least,
@@ -334,6 +375,7 @@ fn json(
             })
         })
         .collect();
+    let points: Vec<usize> = orbits.iter().map(|o| o.times.len()).collect();
     let doc = serde_json::json!({
         "schema": "superint-plot/1",
         "title": title,
@@ -341,28 +383,35 @@ fn json(
         "steps": args.steps,
         "method": "classical Runge-Kutta, fixed step, floating point",
         "section": section,
-        "points": path.times.len(),
+        "points": points,
         "chart": args.output.display().to_string(),
         "functions": functions,
     });
     format!("{doc:#}\n")
 }
 
-/// The samples as CSV: `t`, the function of --against if any, each curve.
-fn csv(times: &[f64], against: Option<&Series>, curves: &[Series]) -> String {
+/// The samples as CSV: the orbit (its starting point's number), `t`, the function of
+/// --against if `against`, each curve; `columns` names the functions.
+fn csv(columns: &[&str], against: bool, orbits: &[Orbit]) -> String {
     let quote = |s: &str| format!("\"{}\"", s.replace('"', "\"\""));
-    let columns: Vec<&Series> = against.into_iter().chain(curves).collect();
-    let mut out = std::iter::once("t".to_string())
-        .chain(columns.iter().map(|c| quote(&c.label)))
+    let mut out = ["orbit", "t"]
+        .into_iter()
+        .map(String::from)
+        .chain(columns.iter().map(|c| quote(c)))
         .collect::<Vec<_>>()
         .join(",");
     out.push('\n');
-    for (k, t) in times.iter().enumerate() {
-        out.push_str(&t.to_string());
-        for c in &columns {
-            let _ = write!(out, ",{}", c.values[k]);
+    for (k, o) in orbits.iter().enumerate() {
+        for (i, t) in o.times.iter().enumerate() {
+            let _ = write!(out, "{},{t}", k + 1);
+            if against {
+                let _ = write!(out, ",{}", o.axis[i]);
+            }
+            for c in &o.rows[1..] {
+                let _ = write!(out, ",{}", c.values[i]);
+            }
+            out.push('\n');
         }
-        out.push('\n');
     }
     out
 }

@@ -19,9 +19,9 @@ pub struct PlotInput {
     pub parameters: String,
     /// `H` at those values.
     pub hamiltonian: Expr,
-    /// The value of every coordinate, angle and momentum at `t = 0`, in the phase space's
-    /// order (coordinates and angles, then momenta).
-    pub start: Vec<(Var, Rational)>,
+    /// The starting points, one an orbit: the value of every coordinate, angle and momentum
+    /// at `t = 0`, in the phase space's order (coordinates and angles, then momenta).
+    pub starts: Vec<Vec<(Var, Rational)>>,
     /// The curves, each a label and a real function at the parameters' values: a complex
     /// function is two curves, its real and imaginary parts.
     pub curves: Vec<(String, Expr)>,
@@ -48,20 +48,23 @@ pub struct PlotFunctions<'a> {
 type Values = Vec<(Var, Expr)>;
 
 impl LoadedSystem {
-    /// Reads a plot's parameters `at` (`"M = 1, omega = 2"`), its starting point `from`
-    /// (every coordinate, angle and momentum; values may hold parameters) and its
-    /// `functions`, and makes them exact. Errors point into the argument at fault.
+    /// Reads a plot's parameters `at` (`"M = 1, omega = 2"`), its starting points `from`
+    /// (each a value for every coordinate, angle and momentum; values may hold parameters)
+    /// and its `functions`, and makes them exact. Errors point into the argument at fault.
     pub fn plot_input(
         &self,
         at: Option<&str>,
-        from: &str,
+        from: &[String],
         functions: PlotFunctions<'_>,
     ) -> Result<PlotInput, FileError> {
         let (values, parameters) = match at {
             Some(at) => self.parameter_values(at)?,
             None => (Values::new(), String::new()),
         };
-        let start = self.starting_point(from, &values)?;
+        let starts = from
+            .iter()
+            .map(|point| self.starting_point(point, &values))
+            .collect::<Result<_, _>>()?;
         let hamiltonian = at_values(self.system.hamiltonian(), &values)?;
         if let Some(why) = self.unset("H", &hamiltonian) {
             return Err(FileError::new(ErrorKind::Expression, COMMAND_LINE, why));
@@ -86,7 +89,7 @@ impl LoadedSystem {
         Ok(PlotInput {
             parameters,
             hamiltonian,
-            start,
+            starts,
             curves: real_curves,
             against,
             section,

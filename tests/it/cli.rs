@@ -528,14 +528,15 @@ fn cli_plot_draws_the_orbit_and_writes_its_samples() {
     );
     let data = std::fs::read_to_string(&csv).expect("the data was written");
     let mut lines = data.lines();
-    assert_eq!(lines.next(), Some(r#"t,"x","y""#));
+    assert_eq!(lines.next(), Some(r#"orbit,t,"x","y""#));
     let rows: Vec<Vec<f64>> = lines
         .map(|l| l.split(',').map(|v| v.parse().expect("a number")).collect())
         .collect();
     assert_eq!(rows.len(), 71);
-    assert_eq!((rows[0][0], rows[70][0]), (0.0, 7.0));
+    assert_eq!((rows[0][1], rows[70][1]), (0.0, 7.0));
     for row in &rows {
-        let (t, x, y) = (row[0], row[1], row[2]);
+        let (orbit, t, x, y) = (row[0], row[1], row[2], row[3]);
+        assert_eq!(orbit, 1.0);
         assert!(
             (x - t.cos()).abs() < 1e-9 && (x * x + 4.0 * y * y - 1.0).abs() < 1e-9,
             "{row:?}"
@@ -659,7 +660,7 @@ fn cli_plot_section_keeps_the_upward_crossings() {
     let args: Vec<&str> = args.iter().map(String::as_str).collect();
     let doc: Value = serde_json::from_str(&run(&args, 0)).expect("JSON");
     assert_eq!(doc["section"], "x");
-    assert_eq!(doc["points"], 3);
+    assert_eq!(doc["points"], serde_json::json!([3]));
     let data = std::fs::read_to_string(&csv).expect("the data was written");
     let rows: Vec<Vec<f64>> = data
         .lines()
@@ -668,7 +669,7 @@ fn cli_plot_section_keeps_the_upward_crossings() {
         .collect();
     let period = 2.0 * std::f64::consts::PI;
     for (k, row) in rows.iter().enumerate() {
-        let (t, y, p_y) = (row[0], row[1], row[2]);
+        let (t, y, p_y) = (row[1], row[2], row[3]);
         assert!((t - (0.75 + k as f64) * period).abs() < 1e-9, "{row:?}");
         assert!((y + 0.5).abs() < 1e-9 && p_y.abs() < 1e-9, "{row:?}");
     }
@@ -700,5 +701,53 @@ fn cli_plot_section_keeps_the_upward_crossings() {
         stderr(&o).contains("x − 2 does not cross zero upward from t = 0 to 20"),
         "{}",
         stderr(&o)
+    );
+}
+
+/// Several starting points are several orbits in one chart: a section of two ellipses of the
+/// oscillator, `x = cos t`, `y = b sin t` for `b = 1/2` and `b = 1/4`, crossed at `y = −b`.
+#[test]
+fn cli_plot_draws_an_orbit_from_each_starting_point() {
+    let svg = scratch_file("orbits.svg");
+    let mut args = plot_args(
+        "1",
+        &["p_y", "--against", "y", "--section", "x", "--time", "20"],
+    );
+    args.extend([
+        "--from".to_string(),
+        "x = 1, y = 0, theta = 0, p_x = 0, p_y = 1/4, p_theta = 1".to_string(),
+        "-o".to_string(),
+        svg.to_str().unwrap().to_string(),
+        "--format".to_string(),
+        "json".to_string(),
+    ]);
+    let args: Vec<&str> = args.iter().map(String::as_str).collect();
+    let doc: Value = serde_json::from_str(&run(&args, 0)).expect("JSON");
+    assert_eq!(doc["points"], serde_json::json!([3, 3]));
+    let rows: Vec<(String, i64, f64)> = doc["functions"]
+        .as_array()
+        .expect("rows")
+        .iter()
+        .map(|f| {
+            let label = f["function"].as_str().expect("a label").to_string();
+            (
+                label,
+                f["orbit"].as_i64().expect("an orbit"),
+                f["first"].as_f64().expect("a value"),
+            )
+        })
+        .collect();
+    let labels: Vec<(&str, i64)> = rows.iter().map(|(l, k, _)| (l.as_str(), *k)).collect();
+    assert_eq!(
+        labels,
+        [("H [1]", 1), ("p_y [1]", 1), ("H [2]", 2), ("p_y [2]", 2)]
+    );
+    // H = (p_y² + x²)/2 + p_θ²/2 at the start: 1/8 + 1/2 + 1/2 and 1/32 + 1/2 + 1/2.
+    assert!((rows[0].2 - 1.125).abs() < 1e-12 && (rows[2].2 - 1.03125).abs() < 1e-12);
+    let drawn = std::fs::read_to_string(&svg).expect("the chart was written");
+    assert_eq!(
+        drawn.matches("<circle").count(),
+        2 * 3 + 2,
+        "six dots and two in the legend"
     );
 }
