@@ -64,7 +64,16 @@ impl OutputArgs {
 
 /// Writes the rendered output to stdout; a closed pipe (`superint | head`) is not an error.
 pub fn emit(text: &str) -> anyhow::Result<()> {
-    let mut out = io::stdout().lock();
+    write_to(io::stdout().lock(), text)
+}
+
+/// Writes to stderr what goes there when stdout carries something else (`plot -o -`); a
+/// closed pipe is not an error.
+pub fn emit_to_stderr(text: &str) -> anyhow::Result<()> {
+    write_to(io::stderr().lock(), text)
+}
+
+fn write_to(mut out: impl Write, text: &str) -> anyhow::Result<()> {
     match out.write_all(text.as_bytes()).and_then(|()| out.flush()) {
         Err(e) if e.kind() != io::ErrorKind::BrokenPipe => Err(e.into()),
         _ => Ok(()),

@@ -14,7 +14,7 @@ use superint::trajectory::chart::{self, Curve, Style};
 use superint::trajectory::{nearest_f64, short, Flow, Numeric};
 
 use super::limits::LimitsArgs;
-use super::output::{emit, Output};
+use super::output::{emit, emit_to_stderr, Output};
 
 pub const EXAMPLES: &str = "\
 Examples:
@@ -24,8 +24,8 @@ Examples:
   superint plot systems/harmonic-rotor.toml y --against x --time 7 -o orbit.svg \\
       --at 'M = 1, omega = 1, I = 1' \\
       --from 'x = 1, y = 0, theta = 0, p_x = 0, p_y = 1/2, p_theta = 2'
-  superint plot systems/henon-heiles.toml p_y --against y --section x -o section.svg \
-      --at 'A = 1, B = 1, C = -1/3' --time 3000 --steps 300000 --samples 3000 \
+  superint plot systems/henon-heiles.toml p_y --against y --section x -o section.svg \\
+      --at 'A = 1, B = 1, C = -1/3' --time 3000 --steps 300000 --samples 3000 \\
       --from 'x = 0, y = 1/10, p_x = 2/5, p_y = 0' --from 'x = 0, y = 1/4, p_x = 3/10, p_y = 0'
 
 Hamilton's equations are formed exactly, then integrated in floating point by the classical
@@ -75,7 +75,8 @@ pub struct PlotArgs {
     /// standard error.
     #[arg(short, long, value_name = "FILE.svg")]
     output: PathBuf,
-    /// Also write the sampled values as CSV: t, the function of --against, each curve.
+    /// Also write the sampled values as CSV: the orbit (its --from's number), t, the function
+    /// of --against, each curve.
     #[arg(long, value_name = "FILE.csv")]
     data: Option<PathBuf>,
     #[command(flatten)]
@@ -182,10 +183,15 @@ pub fn run(job: &PlotJob) -> anyhow::Result<bool> {
             })?;
         }
         let (steps, samples) = (args.steps as usize, args.samples as usize);
-        let path = match &section {
-            None => flow.integrate(&start, args.time, steps, samples)?,
-            Some(f) => flow.section(&start, args.time, steps, &f.numeric, samples)?,
+        let orbit = || match several {
+            true => format!("the orbit from starting point {}", k + 1),
+            false => "the orbit".to_string(),
         };
+        let path = match &section {
+            None => flow.integrate(&start, args.time, steps, samples),
+            Some(f) => flow.section(&start, args.time, steps, &f.numeric, samples),
+        }
+        .with_context(orbit)?;
         if path.times.is_empty() {
             let label = section.as_ref().map_or("", |f| f.label.as_str());
             bail!(
@@ -199,16 +205,34 @@ pub fn run(job: &PlotJob) -> anyhow::Result<bool> {
                 }
             );
         }
-        let values = |f: &Function| path.values(|s| f.numeric.real(s));
+        // Every value drawn or tabled is finite: a function that overflows along the orbit
+        // (a high power) is named with the time.
+        let values = |f: &Function| -> anyhow::Result<Vec<f64>> {
+            let values = path.values(|s| f.numeric.real(s));
+            match values.iter().position(|v| !v.is_finite()) {
+                None => Ok(values),
+                Some(i) => bail!(
+                    "{}{mark} is not a finite floating-point number at t = {} of {}",
+                    f.label,
+                    short(path.times[i]),
+                    orbit()
+                ),
+            }
+        };
         orbits.push(Orbit {
-            axis: against.as_ref().map_or_else(|| path.times.clone(), values),
+            axis: match &against {
+                Some(f) => values(f)?,
+                None => path.times.clone(),
+            },
             rows: rows
                 .iter()
-                .map(|f| Series {
-                    label: format!("{}{mark}", f.label),
-                    values: values(f),
+                .map(|f| {
+                    Ok(Series {
+                        label: format!("{}{mark}", f.label),
+                        values: values(f)?,
+                    })
                 })
-                .collect(),
+                .collect::<anyhow::Result<_>>()?,
             times: path.times,
         });
     }
@@ -259,7 +283,7 @@ pub fn run(job: &PlotJob) -> anyhow::Result<bool> {
         _ => text(&title, &method(args, &orbits, section), &orbits),
     };
     if to_stdout {
-        eprint!("{table}");
+        emit_to_stderr(&table)?;
     } else {
         emit(&table)?;
     }

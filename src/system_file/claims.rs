@@ -250,7 +250,12 @@ pub(crate) fn parse_condition(
             "a condition cannot fix an angle: functions depend on it through cos, sin, exp".into()
         })
     };
-    let assignments = parse_assignments(file, source, pieces, ("a condition", usage), admit)?;
+    let form = AssignmentForm {
+        what: "a condition",
+        kinds: "a coordinate, a momentum or a parameter",
+        usage,
+    };
+    let assignments = parse_assignments(file, source, pieces, &form, admit)?;
     Ok(Condition {
         text: assignments
             .iter()
@@ -259,6 +264,16 @@ pub(crate) fn parse_condition(
             .join(", "),
         subs: assignments.into_iter().map(|a| (a.var, a.value)).collect(),
     })
+}
+
+/// How a list of `var = value` reads, for its messages.
+pub(crate) struct AssignmentForm<'a> {
+    /// What one is called: `a condition`.
+    pub what: &'a str,
+    /// What its left side may name: `a coordinate, a momentum or a parameter`.
+    pub kinds: &'a str,
+    /// How one reads, with an example.
+    pub usage: &'a str,
 }
 
 /// One `var = value` of a list such as a condition: the variable, its exact value, how it
@@ -274,16 +289,17 @@ pub(crate) struct Assignment {
     pub rhs: Text,
 }
 
-/// Reads `var = value` (one per text) of `source`: each left side one declared variable that
-/// `admit` does not refuse (it says why it does), set once; each right side an expression of
-/// the file. `what` names such a text (`a condition`) and says how one reads.
+/// Reads `var = value` (one per text) of `source`, written in `form`: each left side one
+/// declared variable that `admit` does not refuse (it says why it does), set once; each right
+/// side an expression of the file.
 pub(crate) fn parse_assignments(
     file: &LoadedSystem,
     source: &Source,
     pieces: &[Text],
-    (what, usage): (&str, &str),
+    form: &AssignmentForm<'_>,
     admit: impl Fn(trigpoly::Var) -> Option<String>,
 ) -> Result<Vec<Assignment>, FileError> {
+    let usage = form.usage;
     let scope = file.scope(file.families.len());
     let vars = file.system.vars();
     let mut assignments: Vec<Assignment> = Vec::new();
@@ -317,8 +333,9 @@ pub(crate) fn parse_assignments(
                 ErrorKind::Condition,
                 lhs_tree.span,
                 format!(
-                    "the left side of {what} is one declared variable (a coordinate, a \
-                     momentum or a parameter), found '{}'",
+                    "the left side of {} is one declared variable ({}), found '{}'",
+                    form.what,
+                    form.kinds,
                     lhs.value.trim()
                 ),
             ));

@@ -6,7 +6,7 @@
 use brackets::EngineError;
 use trigpoly::{Expr, GaussianRational, Rational, Span, Var, VarKind};
 
-use super::claims::{parse_assignments, Assignment};
+use super::claims::{parse_assignments, Assignment, AssignmentForm};
 use super::error::{ErrorKind, FileError};
 use super::reports::command_error;
 use super::text::{Source, Text};
@@ -65,7 +65,7 @@ impl LoadedSystem {
             .iter()
             .map(|point| self.starting_point(point, &values))
             .collect::<Result<_, _>>()?;
-        let hamiltonian = at_values(self.system.hamiltonian(), &values)?;
+        let hamiltonian = at_values("H", self.system.hamiltonian(), &values)?;
         if let Some(why) = self.unset("H", &hamiltonian) {
             return Err(FileError::new(ErrorKind::Expression, COMMAND_LINE, why));
         }
@@ -118,18 +118,22 @@ impl LoadedSystem {
 
     /// `--at`: each parameter named a real number. The substitution, and how it reads.
     fn parameter_values(&self, at: &str) -> Result<(Values, String), FileError> {
-        let usage = "--at reads `parameter = number, …`, such as \"M = 1, omega = 3/2\"";
+        let form = AssignmentForm {
+            what: "a value of --at",
+            kinds: "a parameter",
+            usage: "--at reads `parameter = number, …`, such as \"M = 1, omega = 3/2\"",
+        };
         let admit = |v: Var| {
             let kind = self.system.vars().variable(v).kind();
             (kind != VarKind::Parameter).then(|| {
                 format!(
-                    "--at gives the parameters their values; {} is a {} (give it with --from)",
+                    "--at gives the parameters their values; {} is {} (give it with --from)",
                     self.display(v),
                     kind_name(kind)
                 )
             })
         };
-        let (source, assignments) = self.assignments(at, usage, admit)?;
+        let (source, assignments) = self.assignments(at, &form, admit)?;
         let mut values = Values::new();
         let mut shown = Vec::new();
         for a in assignments {
@@ -149,7 +153,11 @@ impl LoadedSystem {
         from: &str,
         values: &Values,
     ) -> Result<Vec<(Var, Rational)>, FileError> {
-        let usage = "--from reads `variable = value, …`, such as \"x = 1, p_y = 1/2\"";
+        let form = AssignmentForm {
+            what: "a value of --from",
+            kinds: "a coordinate, an angle or a momentum",
+            usage: "--from reads `variable = value, …`, such as \"x = 1, p_y = 1/2\"",
+        };
         let admit = |v: Var| {
             (self.system.vars().variable(v).kind() == VarKind::Parameter).then(|| {
                 format!(
@@ -159,7 +167,7 @@ impl LoadedSystem {
                 )
             })
         };
-        let (source, assignments) = self.assignments(from, usage, admit)?;
+        let (source, assignments) = self.assignments(from, &form, admit)?;
         let mut given = Vec::new();
         for a in assignments {
             let why = format!(
@@ -167,7 +175,8 @@ impl LoadedSystem {
                  values (--at)",
                 self.display(a.var)
             );
-            let value = number(&at_values(&a.value, values)?, &a.rhs, &source, why)?;
+            let what = format!("the starting value of {}", self.display(a.var));
+            let value = number(&at_values(&what, &a.value, values)?, &a.rhs, &source, why)?;
             given.push((a.var, value));
         }
         let pairs = self.system.space().pairs();
@@ -197,7 +206,7 @@ impl LoadedSystem {
     fn drawable(&self, src: &str, values: &Values) -> Result<(String, Expr, Argument), FileError> {
         let arg = self.argument(src)?;
         let (label, value) = self.expand(&arg)?;
-        let value = at_values(&value, values)?;
+        let value = at_values(&format!("'{}'", src.trim()), &value, values)?;
         if let Some(why) = self.unset(&format!("'{}'", src.trim()), &value) {
             let whole = Span::new(0, arg.text.value.len());
             return Err(arg
@@ -233,21 +242,23 @@ impl LoadedSystem {
     fn assignments(
         &self,
         list: &str,
-        usage: &str,
+        form: &AssignmentForm<'_>,
         admit: impl Fn(Var) -> Option<String>,
     ) -> Result<(Source, Vec<Assignment>), FileError> {
         let source = Source::new(COMMAND_LINE, list);
         let pieces = Text::whole(&source).split(',');
-        let assignments =
-            parse_assignments(self, &source, &pieces, ("`name = value`", usage), admit)?;
+        let assignments = parse_assignments(self, &source, &pieces, form, admit)?;
         Ok((source, assignments))
     }
 }
 
-/// `e` at the parameters' `values`.
-fn at_values(e: &Expr, values: &Values) -> Result<Expr, FileError> {
-    e.subst_many(values)
-        .map_err(|err| command_error(&EngineError::from(err)))
+/// `what`, the function `e`, at the parameters' `values`.
+fn at_values(what: &str, e: &Expr, values: &Values) -> Result<Expr, FileError> {
+    e.subst_many(values).map_err(|err| {
+        let mut error = command_error(&EngineError::from(err));
+        error.message = format!("{what} at the values of --at: {}", error.message);
+        error
+    })
 }
 
 /// `value` as a real number, or the error `why` at `rhs`, where it is written.
@@ -268,12 +279,12 @@ fn number(
     }
 }
 
-/// How a kind of variable is called in messages.
+/// How a kind of variable is called in messages, with its article.
 fn kind_name(kind: VarKind) -> &'static str {
     match kind {
-        VarKind::Coordinate => "coordinate",
-        VarKind::Momentum => "momentum",
-        VarKind::Parameter => "parameter",
-        VarKind::Angle => "angle",
+        VarKind::Coordinate => "a coordinate",
+        VarKind::Momentum => "a momentum",
+        VarKind::Parameter => "a parameter",
+        VarKind::Angle => "an angle",
     }
 }

@@ -45,6 +45,7 @@ const PALETTE: [RGBColor; 10] = [
 ];
 
 /// The curves in one chart with a title, the x axis labelled `x_label`, as an SVG document.
+/// Every point must be finite.
 pub fn svg(
     title: &str,
     x_label: &str,
@@ -52,8 +53,9 @@ pub fn svg(
     style: Style,
 ) -> Result<String, ChartError> {
     let fail = |e: &dyn std::fmt::Display| ChartError(e.to_string());
-    let xs = span(curves.iter().flat_map(|c| c.points.iter().map(|p| p.0)));
-    let ys = span(curves.iter().flat_map(|c| c.points.iter().map(|p| p.1)));
+    let too_wide = || ChartError("the values are too far apart to draw in floating point".into());
+    let xs = span(curves.iter().flat_map(|c| c.points.iter().map(|p| p.0))).ok_or_else(too_wide)?;
+    let ys = span(curves.iter().flat_map(|c| c.points.iter().map(|p| p.1))).ok_or_else(too_wide)?;
     let mut out = String::new();
     {
         let root = SVGBackend::with_string(&mut out, SIZE).into_drawing_area();
@@ -111,24 +113,29 @@ pub fn svg(
     Ok(out)
 }
 
-/// The range an axis shows for `values`: their least and greatest, widened a little. A range
-/// too narrow to draw (a conserved quantity, equal to rounding) is widened to a thousandth of
-/// its size, so that such a curve shows as the straight line it is rather than as magnified
-/// rounding.
-fn span(values: impl Iterator<Item = f64>) -> (f64, f64) {
+/// The range an axis shows for `values` (finite, the caller has checked): their least and
+/// greatest, widened a little. A range narrower than a millionth of its scale (its size, or 1
+/// when its values are smaller: a conserved quantity, or one that vanishes, equal to rounding)
+/// is widened to a thousandth of that scale, so that such a curve shows as the straight line it
+/// is rather than as magnified rounding; the table gives its exact range. `None` when the range
+/// is too wide for floating point.
+fn span(values: impl Iterator<Item = f64>) -> Option<(f64, f64)> {
     let (lo, hi) = values.fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), v| {
         (lo.min(v), hi.max(v))
     });
-    if !lo.is_finite() || !hi.is_finite() {
-        return (0.0, 1.0);
+    if lo > hi {
+        return Some((0.0, 1.0));
     }
     let scale = lo.abs().max(hi.abs()).max(1.0);
-    if hi - lo < 1e-6 * scale {
+    let (lo, hi) = if hi - lo < 1e-6 * scale {
         let mid = (lo + hi) / 2.0;
-        return (mid - 1e-3 * scale, mid + 1e-3 * scale);
-    }
-    let pad = (hi - lo) * 0.04;
-    (lo - pad, hi + pad)
+        (mid - 1e-3 * scale, mid + 1e-3 * scale)
+    } else {
+        let pad = (hi - lo) * 0.04;
+        (lo - pad, hi + pad)
+    };
+    // plotters maps the range to pixels through its width.
+    (lo.is_finite() && hi.is_finite() && (hi - lo).is_finite()).then_some((lo, hi))
 }
 
 /// Decimals enough to tell apart the ticks of an axis over `range` (about ten of them).
@@ -192,10 +199,11 @@ mod tests {
 
     #[test]
     fn a_flat_curve_gets_a_range_around_its_value() {
-        let (lo, hi) = span([2.0, 2.0 + 1e-14].into_iter());
+        let (lo, hi) = span([2.0, 2.0 + 1e-14].into_iter()).unwrap();
         assert!(lo < 2.0 && hi > 2.0 && hi - lo < 0.01);
-        let (lo, hi) = span([-1.0, 3.0].into_iter());
+        let (lo, hi) = span([-1.0, 3.0].into_iter()).unwrap();
         assert!(lo < -1.0 && hi > 3.0);
+        assert_eq!(span([-1e308, 1e308].into_iter()), None);
     }
 
     #[test]

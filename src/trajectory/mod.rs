@@ -213,8 +213,9 @@ impl Flow {
 
     /// Integrates from `start` (a value for every variable, by index; parameters' entries are
     /// not read) over `time` in `steps` equal steps of classical fourth-order Runge–Kutta, and
-    /// keeps `samples + 1` states at equally spaced times (fewer if there are fewer steps),
-    /// the first and the last included.
+    /// keeps the state at `t = 0` and `samples` more (`steps` if there are fewer steps), at
+    /// steps as evenly spaced as the steps allow (equally when `samples` divides `steps`), the
+    /// last step included.
     pub fn integrate(
         &self,
         start: &[f64],
@@ -223,13 +224,14 @@ impl Flow {
         samples: usize,
     ) -> Result<Trajectory, TrajectoryError> {
         assert!(samples > 0, "at least one sample");
-        let stride = steps.div_ceil(samples);
+        // The step `n` is kept when `n·samples/steps` reaches a new integer.
+        let kept = |n: usize| n * samples / steps > (n - 1) * samples / steps;
         let mut path = Trajectory {
             times: vec![0.0],
             states: vec![start.to_vec()],
         };
         self.walk(start, time, steps, |step| {
-            if step.number % stride == 0 || step.number == steps {
+            if kept(step.number) {
                 path.times.push(step.t1);
                 path.states.push(step.y1.to_vec());
             }
@@ -256,14 +258,17 @@ impl Flow {
             states: Vec::new(),
         };
         let mut end_velocity = vec![0.0; self.width];
+        // The section's value at the start of each step, carried from the end of the last.
+        let mut f0 = section.real(start);
         self.walk(start, time, steps, |step| {
-            let (f0, f1) = (section.real(step.y0), section.real(step.y1));
+            let f1 = section.real(step.y1);
             if f0 < 0.0 && f1 >= 0.0 {
                 self.velocity(step.y1, &mut end_velocity);
                 let (s, y) = crossing(step, &end_velocity, |y| section.real(y), (f0, f1));
                 path.times.push(step.t0 + s * (step.t1 - step.t0));
                 path.states.push(y);
             }
+            f0 = f1;
             match path.times.len() < points {
                 true => ControlFlow::Continue(()),
                 false => ControlFlow::Break(()),
@@ -442,6 +447,15 @@ mod tests {
         }
         let path = flow.integrate(&start, 2.0, 2000, 8).unwrap();
         assert_eq!(path.times.len(), 9);
+        let spaced: Vec<f64> = (0..=8).map(|k| f64::from(k) / 4.0).collect();
+        for (t, want) in path.times.iter().zip(&spaced) {
+            assert!((t - want).abs() < 1e-12, "{:?}", path.times);
+        }
+        // As evenly as the steps allow, and never more samples than steps.
+        let times = |steps, samples| flow.integrate(&start, 10.0, steps, samples).unwrap().times;
+        assert_eq!(times(10, 4), [0.0, 3.0, 5.0, 8.0, 10.0]);
+        assert_eq!(times(10_000, 3000).len(), 3001);
+        assert_eq!(times(10, 6000).len(), 11);
         let end = path.states.last().unwrap();
         let at = |name: &str| end[rotor.var(name).index()];
         assert!((at("x") - 2f64.cos()).abs() < 1e-10);

@@ -623,6 +623,30 @@ fn cli_plot_bad_arguments_exit_2_with_a_message() {
             "invalid value '0' for '--time <T>': 0 is not a positive number of time units",
         ),
         (
+            vec!["L", "--at", "M = 1, theta = 1", "--from", full],
+            "<command line>:1:8: --at gives the parameters their values; θ is an angle (give it \
+             with --from)",
+        ),
+        (
+            vec!["L", "--at", at, "--from", &format!("{full}, H = 2")],
+            "the left side of a value of --from is one declared variable (a coordinate, an angle \
+             or a momentum), found 'H'",
+        ),
+        (
+            vec!["L", "--at", "M = 0, omega = 1, I = 1", "--from", full],
+            "H at the values of --at: division by zero",
+        ),
+        (
+            vec![
+                "x^309/10",
+                "--at",
+                at,
+                "--from",
+                &full.replace("x = 1", "x = 10"),
+            ],
+            "x³⁰⁹/10 is not a finite floating-point number at t = 0 of the orbit",
+        ),
+        (
             vec!["L", "--section", "x", "--at", at, "--from", full],
             "the following required arguments were not provided:\n  --against <F>",
         ),
