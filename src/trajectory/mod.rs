@@ -49,6 +49,16 @@ pub enum TrajectoryError {
     /// The Hamiltonian is not real, so its flow is not a motion in phase space.
     #[error("H is not real, so its flow has no picture")]
     NotReal,
+    /// An implicit step did not converge.
+    #[error(
+        "the implicit step near t = {} did not converge: the step is too long for this motion \
+         (more --steps may help)",
+        short(*.time)
+    )]
+    NoConvergence {
+        /// The time at the step's end.
+        time: f64,
+    },
     /// A state of the trajectory is not a finite number.
     #[error(
         "the trajectory left the finite numbers near t = {}: the motion runs off to \
@@ -168,6 +178,19 @@ pub fn short(v: f64) -> String {
     }
 }
 
+/// How a [`Flow`] steps.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub enum Method {
+    /// The classical fourth-order Runge–Kutta method: explicit, four evaluations a step; its
+    /// error in `H` grows with the time.
+    #[default]
+    RungeKutta,
+    /// The two-stage Gauss–Legendre method: implicit (its stages solved by fixed-point
+    /// iteration to rounding), of order four and symplectic, so that its error in `H` stays
+    /// bounded over long times.
+    Gauss,
+}
+
 /// Hamilton's equations of a real Hamiltonian with no parameters left, rounded for
 /// integration.
 #[derive(Clone, Debug)]
@@ -178,6 +201,8 @@ pub struct Flow {
     rates: Vec<Numeric>,
     /// How many variables a state holds (every variable of the ring, parameters included).
     width: usize,
+    /// How it steps.
+    method: Method,
 }
 
 impl Flow {
@@ -196,7 +221,13 @@ impl Flow {
             phase,
             rates,
             width: space.vars().len(),
+            method: Method::default(),
         })
+    }
+
+    /// The same flow, stepped by `method`.
+    pub fn with_method(self, method: Method) -> Flow {
+        Flow { method, ..self }
     }
 
     /// The phase variables, coordinates and angles first, then their momenta.
@@ -290,35 +321,25 @@ impl Flow {
         assert_eq!(start.len(), self.width, "a state holds every variable");
         assert!(steps > 0, "at least one step");
         let dt = time / steps as f64;
-        let n = self.width;
         let (mut y0, mut y1) = (start.to_vec(), start.to_vec());
-        let (mut k1, mut k2, mut k3, mut k4, mut tmp) = (
-            vec![0.0; n],
-            vec![0.0; n],
-            vec![0.0; n],
-            vec![0.0; n],
-            vec![0.0; n],
-        );
-        let stage = |y: &[f64], k: &[f64], h: f64, out: &mut [f64]| {
-            for ((o, &a), &b) in out.iter_mut().zip(y).zip(k) {
-                *o = a + h * b;
-            }
-        };
+        let mut k1 = vec![0.0; self.width];
+        let mut scratch = Scratch::new(self.width);
         let mut t0 = 0.0;
         for number in 1..=steps {
             self.velocity(&y0, &mut k1);
-            stage(&y0, &k1, dt / 2.0, &mut tmp);
-            self.velocity(&tmp, &mut k2);
-            stage(&y0, &k2, dt / 2.0, &mut tmp);
-            self.velocity(&tmp, &mut k3);
-            stage(&y0, &k3, dt, &mut tmp);
-            self.velocity(&tmp, &mut k4);
-            for j in 0..n {
-                y1[j] = y0[j] + dt / 6.0 * (k1[j] + 2.0 * k2[j] + 2.0 * k3[j] + k4[j]);
-            }
+            let converged = match self.method {
+                Method::RungeKutta => {
+                    self.runge_kutta(&y0, &k1, dt, &mut scratch, &mut y1);
+                    true
+                }
+                Method::Gauss => self.gauss(&y0, &k1, dt, &mut scratch, &mut y1),
+            };
             let t1 = time * number as f64 / steps as f64;
             if self.phase.iter().any(|v| !y1[v.index()].is_finite()) {
                 return Err(TrajectoryError::NotFinite { time: t1 });
+            }
+            if !converged {
+                return Err(TrajectoryError::NoConvergence { time: t1 });
             }
             let step = Step {
                 number,
@@ -335,6 +356,90 @@ impl Flow {
             t0 = t1;
         }
         Ok(())
+    }
+
+    /// One step of classical Runge–Kutta from `y0`, whose velocity is `k1`, into `y1`.
+    fn runge_kutta(&self, y0: &[f64], k1: &[f64], dt: f64, s: &mut Scratch, y1: &mut [f64]) {
+        stage(y0, &[(k1, dt / 2.0)], &mut s.y);
+        self.velocity(&s.y, &mut s.k[0]);
+        stage(y0, &[(&s.k[0], dt / 2.0)], &mut s.y);
+        self.velocity(&s.y, &mut s.k[1]);
+        stage(y0, &[(&s.k[1], dt)], &mut s.y);
+        self.velocity(&s.y, &mut s.k[2]);
+        let (k2, k3, k4) = (&s.k[0], &s.k[1], &s.k[2]);
+        for j in 0..y1.len() {
+            y1[j] = y0[j] + dt / 6.0 * (k1[j] + 2.0 * k2[j] + 2.0 * k3[j] + k4[j]);
+        }
+    }
+
+    /// One step of the two-stage Gauss–Legendre method from `y0`, whose velocity is `k1`, into
+    /// `y1`: the stages' velocities `K_i = f(y0 + dt·Σ_j a_ij K_j)` by fixed-point iteration
+    /// from `k1` until an iteration moves the stages by no more than rounding. Whether it
+    /// converged.
+    fn gauss(&self, y0: &[f64], k1: &[f64], dt: f64, s: &mut Scratch, y1: &mut [f64]) -> bool {
+        let r = 3f64.sqrt() / 6.0;
+        let a = [[0.25, 0.25 - r], [0.25 + r, 0.25]];
+        let scale = 1.0
+            + self
+                .phase
+                .iter()
+                .map(|v| y0[v.index()].abs())
+                .fold(0.0, f64::max);
+        let [k_1, k_2, n_1, n_2] = &mut s.k;
+        k_1.copy_from_slice(k1);
+        k_2.copy_from_slice(k1);
+        let mut converged = false;
+        for iteration in 0..100 {
+            stage(y0, &[(k_1, dt * a[0][0]), (k_2, dt * a[0][1])], &mut s.y);
+            self.velocity(&s.y, n_1);
+            stage(y0, &[(k_1, dt * a[1][0]), (k_2, dt * a[1][1])], &mut s.y);
+            self.velocity(&s.y, n_2);
+            let moved = self
+                .phase
+                .iter()
+                .map(|v| {
+                    dt.abs()
+                        * ((n_1[v.index()] - k_1[v.index()]).abs()
+                            + (n_2[v.index()] - k_2[v.index()]).abs())
+                })
+                .fold(0.0, f64::max);
+            std::mem::swap(k_1, n_1);
+            std::mem::swap(k_2, n_2);
+            // Rounding, or (after many iterations that circle at the last bits) near it.
+            if moved <= 4.0 * f64::EPSILON * scale || (iteration >= 50 && moved <= 1e-12 * scale) {
+                converged = true;
+                break;
+            }
+        }
+        for j in 0..y1.len() {
+            y1[j] = y0[j] + dt / 2.0 * (k_1[j] + k_2[j]);
+        }
+        converged
+    }
+}
+
+/// `out = y + Σ h·k` over the pairs `(k, h)`.
+fn stage(y: &[f64], terms: &[(&[f64], f64)], out: &mut [f64]) {
+    out.copy_from_slice(y);
+    for (k, h) in terms {
+        for (o, &x) in out.iter_mut().zip(*k) {
+            *o += h * x;
+        }
+    }
+}
+
+/// The working vectors of a step: a state and four velocities.
+struct Scratch {
+    y: Vec<f64>,
+    k: [Vec<f64>; 4],
+}
+
+impl Scratch {
+    fn new(width: usize) -> Scratch {
+        Scratch {
+            y: vec![0.0; width],
+            k: std::array::from_fn(|_| vec![0.0; width]),
+        }
     }
 }
 
@@ -492,6 +597,83 @@ mod tests {
         assert_eq!(
             flow.section(&start, 20.0, 200, &x, 2).unwrap().times.len(),
             2
+        );
+    }
+
+    /// Hénon–Heiles (`A = B = 1`, `C = −1/3`) from a bounded orbit: the largest change of
+    /// `H` over `time` in `steps` steps of `method`.
+    fn henon_heiles_drift(method: Method, time: f64, steps: usize) -> f64 {
+        let vars = trigpoly::VarSet::builder()
+            .coordinate("x")
+            .coordinate("y")
+            .momentum("p_x")
+            .momentum("p_y")
+            .build()
+            .unwrap();
+        let space = PhaseSpace::new(&vars, &[("x", "p_x"), ("y", "p_y")]).unwrap();
+        let h = Expr::parse(&vars, "(p_x^2 + p_y^2 + x^2 + y^2)/2 + x^2*y - y^3/3").unwrap();
+        let flow = Flow::new(&space, &h).unwrap().with_method(method);
+        let energy = Numeric::new(&h, flow.phase()).unwrap();
+        let path = flow
+            .integrate(&[0.0, 0.1, 0.4, 0.0], time, steps, 1000)
+            .unwrap();
+        let first = energy.real(&path.states[0]);
+        path.values(|s| (energy.real(s) - first).abs())
+            .into_iter()
+            .fold(0.0, f64::max)
+    }
+
+    #[test]
+    fn gauss_keeps_the_energy_where_runge_kutta_lets_it_drift() {
+        // Steps of 0.25 over 5000 time units: Runge–Kutta's error in H grows with the time,
+        // the symplectic method's stays at its size after one orbit.
+        let (rk, gauss) = (
+            henon_heiles_drift(Method::RungeKutta, 5000.0, 20_000),
+            henon_heiles_drift(Method::Gauss, 5000.0, 20_000),
+        );
+        let gauss_short = henon_heiles_drift(Method::Gauss, 50.0, 200);
+        assert!(
+            gauss < 1e-5 && gauss < 3.0 * gauss_short,
+            "{gauss} after {gauss_short}"
+        );
+        assert!(rk > 100.0 * gauss, "Runge–Kutta {rk}, Gauss {gauss}");
+    }
+
+    #[test]
+    fn gauss_follows_the_exact_solution_to_fourth_order() {
+        let (rotor, h) = unit_rotor();
+        let flow = Flow::new(rotor.space(), &h)
+            .unwrap()
+            .with_method(Method::Gauss);
+        let mut start = vec![0.0; rotor.vars().len()];
+        for (name, value) in [("x", 1.0), ("p_y", 1.0), ("theta", 0.5), ("p_theta", 2.0)] {
+            start[rotor.var(name).index()] = value;
+        }
+        let error = |steps: usize| {
+            let path = flow.integrate(&start, 2.0, steps, 1).unwrap();
+            let end = path.states.last().unwrap();
+            (end[rotor.var("x").index()] - 2f64.cos()).abs()
+        };
+        // Halving the step divides the error by about 2⁴ = 16.
+        let ratio = error(50) / error(100);
+        assert!((12.0..20.0).contains(&ratio), "{ratio}");
+        assert!(error(2000) < 1e-12);
+    }
+
+    #[test]
+    fn a_step_too_long_for_the_implicit_method_is_an_error() {
+        let vars = trigpoly::VarSet::builder()
+            .coordinate("x")
+            .momentum("p")
+            .build()
+            .unwrap();
+        let space = PhaseSpace::new(&vars, &[("x", "p")]).unwrap();
+        let h = Expr::parse(&vars, "(p^2 + 10000*x^2)/2").unwrap();
+        let flow = Flow::new(&space, &h).unwrap().with_method(Method::Gauss);
+        let err = flow.integrate(&[1.0, 0.0], 10.0, 10, 10).unwrap_err();
+        assert!(
+            matches!(err, TrajectoryError::NoConvergence { time } if time == 1.0),
+            "{err}"
         );
     }
 
