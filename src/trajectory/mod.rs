@@ -600,6 +600,17 @@ mod tests {
         );
     }
 
+    /// The flow of `h` on the phase plane `(x, p)`.
+    fn one_degree_of_freedom(h: &str) -> Flow {
+        let vars = trigpoly::VarSet::builder()
+            .coordinate("x")
+            .momentum("p")
+            .build()
+            .unwrap();
+        let space = PhaseSpace::new(&vars, &[("x", "p")]).unwrap();
+        Flow::new(&space, &Expr::parse(&vars, h).unwrap()).unwrap()
+    }
+
     /// Hénon–Heiles (`A = B = 1`, `C = −1/3`) from a bounded orbit: the largest change of
     /// `H` over `time` in `steps` steps of `method`.
     fn henon_heiles_drift(method: Method, time: f64, steps: usize) -> f64 {
@@ -662,14 +673,7 @@ mod tests {
 
     #[test]
     fn a_step_too_long_for_the_implicit_method_is_an_error() {
-        let vars = trigpoly::VarSet::builder()
-            .coordinate("x")
-            .momentum("p")
-            .build()
-            .unwrap();
-        let space = PhaseSpace::new(&vars, &[("x", "p")]).unwrap();
-        let h = Expr::parse(&vars, "(p^2 + 10000*x^2)/2").unwrap();
-        let flow = Flow::new(&space, &h).unwrap().with_method(Method::Gauss);
+        let flow = one_degree_of_freedom("(p^2 + 10000*x^2)/2").with_method(Method::Gauss);
         let err = flow.integrate(&[1.0, 0.0], 10.0, 10, 10).unwrap_err();
         assert!(
             matches!(err, TrajectoryError::NoConvergence { time } if time == 1.0),
@@ -728,14 +732,7 @@ mod tests {
     #[test]
     fn a_run_to_infinity_stops_with_its_time() {
         // ẋ = p, ṗ = 3x²/... : H = p²/2 − x³ blows up in finite time from x = 1.
-        let vars = trigpoly::VarSet::builder()
-            .coordinate("x")
-            .momentum("p")
-            .build()
-            .unwrap();
-        let space = PhaseSpace::new(&vars, &[("x", "p")]).unwrap();
-        let h = Expr::parse(&vars, "p^2/2 - x^3").unwrap();
-        let flow = Flow::new(&space, &h).unwrap();
+        let flow = one_degree_of_freedom("p^2/2 - x^3");
         let err = flow.integrate(&[1.0, 0.0], 10.0, 1000, 10).unwrap_err();
         let TrajectoryError::NotFinite { time } = err else {
             panic!("{err}")

@@ -349,15 +349,26 @@ fn cli_bad_usage_exits_2_with_a_message() {
         ),
         (&["paper", "--bogus"][..], "unexpected argument '--bogus'"),
     ] {
-        let o = superint(args);
-        assert_eq!(o.status.code(), Some(2), "superint {args:?}");
-        assert!(stdout(&o).is_empty(), "superint {args:?} printed to stdout");
-        assert!(
-            stderr(&o).contains(message),
-            "superint {args:?}: {}",
-            stderr(&o)
-        );
+        assert_bad_usage(args, message);
     }
+}
+
+/// Runs the binary and expects exit code 2, nothing on stdout and `message` on stderr.
+#[track_caller]
+fn assert_bad_usage(args: &[&str], message: &str) {
+    let o = superint(args);
+    assert_eq!(
+        o.status.code(),
+        Some(2),
+        "superint {args:?}: {}",
+        stderr(&o)
+    );
+    assert!(stdout(&o).is_empty(), "superint {args:?} printed to stdout");
+    assert!(
+        stderr(&o).contains(message),
+        "superint {args:?}: {}",
+        stderr(&o)
+    );
 }
 
 #[test]
@@ -466,6 +477,17 @@ fn scratch_file(name: &str) -> PathBuf {
     dir.join(name)
 }
 
+/// The header and the rows of numbers of a plot's CSV file.
+fn csv_rows(path: &Path) -> (String, Vec<Vec<f64>>) {
+    let data = std::fs::read_to_string(path).expect("the data was written");
+    let mut lines = data.lines();
+    let header = lines.next().expect("a header").to_string();
+    let rows = lines
+        .map(|l| l.split(',').map(|v| v.parse().expect("a number")).collect())
+        .collect();
+    (header, rows)
+}
+
 /// `largest_change` of each function of a plot's JSON table, by label.
 fn changes(json: &str) -> Vec<(String, f64)> {
     let doc: Value = serde_json::from_str(json).expect("plot --format json is JSON");
@@ -526,12 +548,8 @@ fn cli_plot_draws_the_orbit_and_writes_its_samples() {
         table.starts_with("harmonic rotor at M = 1, ω = 1, I = 1\n"),
         "{table}"
     );
-    let data = std::fs::read_to_string(&csv).expect("the data was written");
-    let mut lines = data.lines();
-    assert_eq!(lines.next(), Some(r#"orbit,t,"x","y""#));
-    let rows: Vec<Vec<f64>> = lines
-        .map(|l| l.split(',').map(|v| v.parse().expect("a number")).collect())
-        .collect();
+    let (header, rows) = csv_rows(&csv);
+    assert_eq!(header, r#"orbit,t,"x","y""#);
     assert_eq!(rows.len(), 71);
     assert_eq!((rows[0][1], rows[70][1]), (0.0, 7.0));
     for row in &rows {
@@ -661,14 +679,7 @@ fn cli_plot_bad_arguments_exit_2_with_a_message() {
             all.extend(["--time", "1"]);
         }
         all.extend(["-o", out]);
-        let o = superint(&all);
-        assert_eq!(o.status.code(), Some(2), "superint {all:?}: {}", stderr(&o));
-        assert!(stdout(&o).is_empty(), "superint {all:?} printed to stdout");
-        assert!(
-            stderr(&o).contains(message),
-            "superint {all:?}: {}",
-            stderr(&o)
-        );
+        assert_bad_usage(&all, message);
     }
 }
 
@@ -685,12 +696,7 @@ fn cli_plot_section_keeps_the_upward_crossings() {
     let doc: Value = serde_json::from_str(&run(&args, 0)).expect("JSON");
     assert_eq!(doc["section"], "x");
     assert_eq!(doc["points"], serde_json::json!([3]));
-    let data = std::fs::read_to_string(&csv).expect("the data was written");
-    let rows: Vec<Vec<f64>> = data
-        .lines()
-        .skip(1)
-        .map(|l| l.split(',').map(|v| v.parse().expect("a number")).collect())
-        .collect();
+    let (_, rows) = csv_rows(&csv);
     let period = 2.0 * std::f64::consts::PI;
     for (k, row) in rows.iter().enumerate() {
         let (t, y, p_y) = (row[1], row[2], row[3]);
