@@ -4,9 +4,11 @@
 //! an identity holds. Hamilton's equations are formed exactly
 //! ([`PhaseSpace::hamilton_equations`]) from a Hamiltonian whose parameters the caller has
 //! already replaced by exact rationals; only then are they rounded to floating-point term
-//! lists ([`Numeric`]) and integrated by the classical fourth-order Runge–Kutta method at a
-//! fixed step ([`Flow::integrate`]). How far `H` moves along the computed trajectory tells how
-//! far the picture can be trusted.
+//! lists ([`Numeric`]) and integrated at a fixed step, by the classical fourth-order
+//! Runge–Kutta method or the symplectic Gauss–Legendre one ([`Method`]), and sampled at equal
+//! times ([`Flow::integrate`]) or where a function crosses zero, a Poincaré section
+//! ([`Flow::section`]). How far `H` moves along the computed trajectory tells how far the
+//! picture can be trusted.
 //!
 //! ```
 //! use superint::prelude::*;
@@ -52,7 +54,7 @@ pub enum TrajectoryError {
     /// An implicit step did not converge.
     #[error(
         "the implicit step near t = {} did not converge: the step is too long for this motion \
-         (more --steps may help)",
+         (more steps may help)",
         short(*.time)
     )]
     NoConvergence {
@@ -62,7 +64,7 @@ pub enum TrajectoryError {
     /// A state of the trajectory is not a finite number.
     #[error(
         "the trajectory left the finite numbers near t = {}: the motion runs off to \
-         infinity or into a singularity of H (a shorter --time or more --steps may help)",
+         infinity or into a singularity of H (a shorter time or more steps may help)",
         short(*.time)
     )]
     NotFinite {
