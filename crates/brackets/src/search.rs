@@ -1815,11 +1815,16 @@ mod tests {
         }
     }
 
+    /// A search of `space` for integrals of `rotor` at its 1:1 resonance.
+    fn at_one_to_one(rotor: &System, space: SearchSpace) -> SearchOptions {
+        SearchOptions::new(space).when(rotor.resonance(1, 1).unwrap())
+    }
+
     /// The integrals of the harmonic rotor in `space` at the 1:1 resonance, the problem at the
     /// fixed values, and the basis's coordinates there.
     fn found_at_one_to_one(space: SearchSpace) -> (SearchResult, Problem, Kernel) {
         let rotor = systems::harmonic_rotor();
-        let options = SearchOptions::new(space).when(rotor.resonance(1, 1).unwrap());
+        let options = at_one_to_one(&rotor, space);
         let found = search(&rotor, &options).unwrap();
         let parameters = parameter_values(&rotor, options.condition.as_ref(), &[], &[]);
         let problem = fixed_problem(&rotor, &options, &parameters).unwrap();
@@ -1902,9 +1907,7 @@ mod tests {
     #[test]
     fn new_integrals_at_one_to_one_are_the_four_linear_ones() {
         let rotor = systems::harmonic_rotor();
-        let options = SearchOptions::new(SearchSpace::new(2, 2, 2))
-            .when(rotor.resonance(1, 1).unwrap())
-            .new_only();
+        let options = at_one_to_one(&rotor, SearchSpace::new(2, 2, 2)).new_only();
         let r = search(&rotor, &options).unwrap();
         assert_eq!(r.dimensions_by_momenta_degree(), [1, 6, 20]);
         assert!(r.all_symbolic());
@@ -1964,9 +1967,7 @@ mod tests {
     #[test]
     fn the_search_is_the_same_on_any_number_of_threads() {
         let rotor = systems::harmonic_rotor();
-        let options = SearchOptions::new(SearchSpace::new(3, 3, 3))
-            .when(rotor.resonance(1, 1).unwrap())
-            .new_only();
+        let options = at_one_to_one(&rotor, SearchSpace::new(3, 3, 3)).new_only();
         let on = |threads: usize| {
             let pool = rayon::ThreadPoolBuilder::new()
                 .num_threads(threads)
@@ -2067,8 +2068,7 @@ mod tests {
         let rotor = systems::harmonic_rotor();
         let omega = rotor.var("omega");
         let m = rotor.var("M");
-        let options = SearchOptions::new(SearchSpace::new(1, 1, 1))
-            .when(rotor.resonance(1, 1).unwrap())
+        let options = at_one_to_one(&rotor, SearchSpace::new(1, 1, 1))
             .fix(omega, Rational::new(3, 2))
             .fix(m, Rational::new(5, 7));
         let r = search(&rotor, &options).unwrap();
