@@ -455,19 +455,32 @@ fn cli_bench_prints_seconds_and_terms_last() {
 
 /// The harmonic rotor at `M = ω = I = 1` from `(x, y) = (1, 0)` with momentum `(0, 1/2)`:
 /// `x = cos t`, `y = sin(t)/2`, and `Ω = p_θ`, so that `p_θ = 1` is the resonance 1 : 1.
-fn plot_args<'a>(p_theta: &'a str, rest: &[&'a str]) -> Vec<String> {
-    let mut args: Vec<String> = ["plot", "systems/harmonic-rotor.toml"]
-        .iter()
-        .chain(rest)
-        .map(|s| s.to_string())
-        .collect();
-    args.extend([
-        "--at".into(),
-        "M = 1, omega = 1, I = 1".into(),
-        "--from".into(),
-        format!("x = 1, y = 0, theta = 0, p_x = 0, p_y = 1/2, p_theta = {p_theta}"),
-    ]);
-    args
+/// `rest` follows its `--from`, so that a further `--from` in it is the second orbit.
+fn plot_args(p_theta: &str, rest: &[&str]) -> Vec<String> {
+    let first = format!("x = 1, y = 0, theta = 0, p_x = 0, p_y = 1/2, p_theta = {p_theta}");
+    let fixed = [
+        "plot",
+        "systems/harmonic-rotor.toml",
+        "--at",
+        "M = 1, omega = 1, I = 1",
+    ];
+    (fixed.iter().copied())
+        .chain(["--from", &first])
+        .chain(rest.iter().copied())
+        .map(String::from)
+        .collect()
+}
+
+/// Runs `superint` with [`plot_args`] and expects exit code `code`; returns stdout.
+fn run_plot(p_theta: &str, rest: &[&str], code: i32) -> String {
+    let args = plot_args(p_theta, rest);
+    run(&args.iter().map(String::as_str).collect::<Vec<_>>(), code)
+}
+
+/// Runs `superint` with [`plot_args`].
+fn plot_output(p_theta: &str, rest: &[&str]) -> Output {
+    let args = plot_args(p_theta, rest);
+    superint(&args.iter().map(String::as_str).collect::<Vec<_>>())
 }
 
 /// A scratch file for a test's output.
@@ -509,11 +522,18 @@ fn cli_plot_shows_k_still_at_resonance_and_turning_off_it() {
     let svg = scratch_file("resonance.svg");
     let svg_arg = svg.to_str().unwrap();
     for (p_theta, k_moves) in [("I*omega", false), ("2", true)] {
-        let rest = ["re(K_1_1)", "im(K_1_1)", "L", "--time", "20", "-o", svg_arg];
-        let args = plot_args(p_theta, &rest);
-        let mut args: Vec<&str> = args.iter().map(String::as_str).collect();
-        args.extend(["--format", "json"]);
-        let table = changes(&run(&args, 0));
+        let rest = [
+            "re(K_1_1)",
+            "im(K_1_1)",
+            "L",
+            "--time",
+            "20",
+            "-o",
+            svg_arg,
+            "--format",
+            "json",
+        ];
+        let table = changes(&run_plot(p_theta, &rest, 0));
         let labels: Vec<&str> = table.iter().map(|(l, _)| l.as_str()).collect();
         assert_eq!(labels, ["H", "re(K_{1,1})", "im(K_{1,1})", "L"]);
         for (label, change) in &table {
@@ -539,11 +559,21 @@ fn cli_plot_shows_k_still_at_resonance_and_turning_off_it() {
 #[test]
 fn cli_plot_draws_the_orbit_and_writes_its_samples() {
     let (svg, csv) = (scratch_file("orbit.svg"), scratch_file("orbit.csv"));
-    let rest = ["y", "--against", "x", "--time", "7", "--samples", "70"];
-    let mut args = plot_args("2", &rest);
-    args.extend(["-o", svg.to_str().unwrap(), "--data", csv.to_str().unwrap()].map(String::from));
-    let args: Vec<&str> = args.iter().map(String::as_str).collect();
-    let table = run(&args, 0);
+    let (svg_arg, csv_arg) = (svg.to_str().unwrap(), csv.to_str().unwrap());
+    let rest = [
+        "y",
+        "--against",
+        "x",
+        "--time",
+        "7",
+        "--samples",
+        "70",
+        "-o",
+        svg_arg,
+        "--data",
+        csv_arg,
+    ];
+    let table = run_plot("2", &rest, 0);
     assert!(
         table.starts_with("harmonic rotor at M = 1, ω = 1, I = 1\n"),
         "{table}"
@@ -565,8 +595,7 @@ fn cli_plot_draws_the_orbit_and_writes_its_samples() {
 /// `-o -` writes the chart to standard output and the table to standard error.
 #[test]
 fn cli_plot_to_stdout_is_the_svg_alone() {
-    let args = plot_args("1", &["L", "--time", "1", "--steps", "100", "-o", "-"]);
-    let o = superint(&args.iter().map(String::as_str).collect::<Vec<_>>());
+    let o = plot_output("1", &["L", "--time", "1", "--steps", "100", "-o", "-"]);
     assert_eq!(o.status.code(), Some(0), "{}", stderr(&o));
     assert!(stdout(&o).starts_with("<svg") && stdout(&o).trim_end().ends_with("</svg>"));
     assert!(stderr(&o).contains("largest change"), "{}", stderr(&o));
@@ -688,12 +717,20 @@ fn cli_plot_bad_arguments_exit_2_with_a_message() {
 #[test]
 fn cli_plot_section_keeps_the_upward_crossings() {
     let (svg, csv) = (scratch_file("section.svg"), scratch_file("section.csv"));
-    let rest = ["p_y", "--against", "y", "--section", "x", "--time", "20"];
-    let mut args = plot_args("1", &rest);
-    args.extend(["-o", svg.to_str().unwrap(), "--data", csv.to_str().unwrap()].map(String::from));
-    args.extend(["--format", "json"].map(String::from));
-    let args: Vec<&str> = args.iter().map(String::as_str).collect();
-    let doc: Value = serde_json::from_str(&run(&args, 0)).expect("JSON");
+    let (svg_arg, csv_arg) = (svg.to_str().unwrap(), csv.to_str().unwrap());
+    let section = [
+        "p_y",
+        "--against",
+        "y",
+        "--section",
+        "x",
+        "--time",
+        "20",
+        "-o",
+        svg_arg,
+    ];
+    let rest = [&section[..], &["--data", csv_arg, "--format", "json"]].concat();
+    let doc: Value = serde_json::from_str(&run_plot("1", &rest, 0)).expect("JSON");
     assert_eq!(doc["section"], "x");
     assert_eq!(doc["points"], serde_json::json!([3]));
     let (_, rows) = csv_rows(&csv);
@@ -711,21 +748,8 @@ fn cli_plot_section_keeps_the_upward_crossings() {
         "three dots and the legend's"
     );
 
-    let never = plot_args(
-        "1",
-        &[
-            "p_y",
-            "--against",
-            "y",
-            "--section",
-            "x - 2",
-            "--time",
-            "20",
-        ],
-    );
-    let mut never: Vec<&str> = never.iter().map(String::as_str).collect();
-    never.extend(["-o", svg.to_str().unwrap()]);
-    let o = superint(&never);
+    let never = section.map(|a| if a == "x" { "x - 2" } else { a });
+    let o = plot_output("1", &never);
     assert_eq!(o.status.code(), Some(2));
     assert!(
         stderr(&o).contains("x − 2 does not cross zero upward from t = 0 to 20"),
@@ -739,20 +763,22 @@ fn cli_plot_section_keeps_the_upward_crossings() {
 #[test]
 fn cli_plot_draws_an_orbit_from_each_starting_point() {
     let svg = scratch_file("orbits.svg");
-    let mut args = plot_args(
-        "1",
-        &["p_y", "--against", "y", "--section", "x", "--time", "20"],
-    );
-    args.extend([
-        "--from".to_string(),
-        "x = 1, y = 0, theta = 0, p_x = 0, p_y = 1/4, p_theta = 1".to_string(),
-        "-o".to_string(),
-        svg.to_str().unwrap().to_string(),
-        "--format".to_string(),
-        "json".to_string(),
-    ]);
-    let args: Vec<&str> = args.iter().map(String::as_str).collect();
-    let doc: Value = serde_json::from_str(&run(&args, 0)).expect("JSON");
+    let rest = [
+        "p_y",
+        "--against",
+        "y",
+        "--section",
+        "x",
+        "--time",
+        "20",
+        "--from",
+        "x = 1, y = 0, theta = 0, p_x = 0, p_y = 1/4, p_theta = 1",
+        "-o",
+        svg.to_str().unwrap(),
+        "--format",
+        "json",
+    ];
+    let doc: Value = serde_json::from_str(&run_plot("1", &rest, 0)).expect("JSON");
     assert_eq!(doc["points"], serde_json::json!([3, 3]));
     let rows: Vec<(String, i64, f64)> = doc["functions"]
         .as_array()
