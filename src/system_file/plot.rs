@@ -270,7 +270,6 @@ fn number(
 ) -> Result<Rational, FileError> {
     match value.as_constant() {
         Some(c) if c.is_real() => Ok(c.re),
-        None if value.is_zero() => Ok(Rational::zero()),
         _ => {
             let lead = rhs.value.len() - rhs.value.trim_start().len();
             let span = Span::new(lead, rhs.value.trim_end().len());
