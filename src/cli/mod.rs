@@ -2,13 +2,14 @@
 //! into a plain [`Job`], and [`run`] acts on it. One module per subcommand.
 //!
 //! Subcommands: `paper` (the default job), `tower`, `bench`, and on system files `check`,
-//! `bracket`, `table`, `rank`, `search`, `closure` and `plot`; each has a module here, a
+//! `bracket`, `expand`, `table`, `rank`, `search`, `closure` and `plot`; each has a module here, a
 //! variant of [`Command`] and of [`Job`].
 
 mod bench;
 mod bracket;
 mod check;
 mod closure;
+mod expand;
 mod limits;
 mod output;
 mod paper;
@@ -75,6 +76,9 @@ enum Command {
     /// Print the bracket {F, G} of two expressions of a system file, in normal form.
     #[command(after_help = bracket::EXAMPLES)]
     Bracket(bracket::BracketArgs),
+    /// Print expressions of a system file in normal form.
+    #[command(after_help = expand::EXAMPLES)]
+    Expand(expand::ExpandArgs),
     /// Print the bracket table of named functions of a system file.
     #[command(after_help = table::EXAMPLES)]
     Table(table::TableArgs),
@@ -107,6 +111,8 @@ pub enum Job {
     Check(check::CheckJob),
     /// One bracket of a system file.
     Bracket(bracket::BracketJob),
+    /// Expressions of a system file in normal form.
+    Expand(expand::ExpandJob),
     /// A bracket table of a system file.
     Table(table::TableJob),
     /// A rank of a system file.
@@ -130,6 +136,7 @@ impl Cli {
             Some(Command::Bench(a)) => Job::Bench(a),
             Some(Command::Check(a)) => Job::Check(a.job(output)),
             Some(Command::Bracket(a)) => Job::Bracket(a.job(output)),
+            Some(Command::Expand(a)) => Job::Expand(a.job(output)),
             Some(Command::Table(a)) => Job::Table(a.job(output)),
             Some(Command::Rank(a)) => Job::Rank(a.job(output)),
             Some(Command::Search(a)) => Job::Search(a.job(output)),
@@ -165,6 +172,7 @@ where
         Job::Bench(args) => bench::run(&args)?,
         Job::Check(job) => check::run(&job)?,
         Job::Bracket(job) => bracket::run(&job)?,
+        Job::Expand(job) => expand::run(&job)?,
         Job::Table(job) => table::run(&job)?,
         Job::Rank(job) => rank::run(&job)?,
         Job::Search(job) => search::run(&job)?,

@@ -1,10 +1,11 @@
 //! Reports of system files, rendered by [`crate::render`] like the default job: every claim
-//! of some files checked ([`check_report`]), one bracket ([`bracket_report`]), a bracket table
-//! ([`table_report`]) and a certified rank ([`rank_report`]).
+//! of some files checked ([`check_report`]), one bracket ([`bracket_report`]), expressions in
+//! normal form ([`expand_report`]), a bracket table ([`table_report`]) and a certified rank
+//! ([`rank_report`]).
 
 use std::time::Instant;
 
-use brackets::{BracketTable, System};
+use brackets::{BracketTable, Condition, System};
 use trigpoly::Expr;
 
 use super::claims::{engine_error, parse_condition, CheckedClaim};
@@ -97,14 +98,7 @@ pub fn bracket_report(
     let start = Instant::now();
     let (f, g) = (file.argument(f)?, file.argument(g)?);
     // The condition is read first too: its values are short.
-    let condition = match when {
-        Some(w) => {
-            let source = Source::new(COMMAND_LINE, w);
-            let pieces = Text::whole(&source).split(',');
-            Some(parse_condition(file, &source, &pieces)?)
-        }
-        None => None,
-    };
+    let condition = command_condition(file, when)?;
     let (fname, fe) = file.expand(&f)?;
     let (gname, ge) = file.expand(&g)?;
     let mut value = file
@@ -131,6 +125,58 @@ pub fn bracket_report(
         summary: SummaryKind::Computed,
         seconds: start.elapsed().as_secs_f64(),
     })
+}
+
+/// Expressions of the file's system in normal form, each optionally under a condition such
+/// as `p_theta = I*omega`: what `superint expand` prints. Every expression is read before any
+/// is expanded, so that a mistake in the last one is found before a long expansion.
+pub fn expand_report(
+    file: &LoadedSystem,
+    expressions: &[String],
+    when: Option<&str>,
+) -> Result<Report, FileError> {
+    let start = Instant::now();
+    let arguments = expressions
+        .iter()
+        .map(|e| file.argument(e))
+        .collect::<Result<Vec<_>, _>>()?;
+    let condition = command_condition(file, when)?;
+    let mut lines = Vec::with_capacity(arguments.len());
+    for argument in &arguments {
+        let (name, mut value) = file.expand(argument)?;
+        if let Some(condition) = &condition {
+            value = condition.apply(&value).map_err(|e| command_error(&e))?;
+        }
+        lines.push(Equation::new(&name, value));
+    }
+    let names: Vec<&str> = lines.iter().map(|line| line.lhs.as_str()).collect();
+    Ok(Report {
+        title: format!("{} in normal form, for the {}", names.join(", "), file.name),
+        subtitle: String::new(),
+        sections: vec![Section {
+            number: 1,
+            title: file.section_title(),
+            entries: vec![Entry::Equations(Equations {
+                caption: condition.map_or_else(String::new, |c| format!("at {}", c.text)),
+                lines,
+            })],
+        }],
+        summary: SummaryKind::Computed,
+        seconds: start.elapsed().as_secs_f64(),
+    })
+}
+
+/// A condition given on the command line (`--when`), if any.
+fn command_condition(
+    file: &LoadedSystem,
+    when: Option<&str>,
+) -> Result<Option<Condition>, FileError> {
+    when.map(|w| {
+        let source = Source::new(COMMAND_LINE, w);
+        let pieces = Text::whole(&source).split(',');
+        parse_condition(file, &source, &pieces)
+    })
+    .transpose()
 }
 
 /// The bracket table of named functions (or family instances such as `K_1_1`) of the file;

@@ -559,6 +559,61 @@ fn bracket_prints_the_normal_form() {
     assert!(on.contains("at p_θ = 2Iω/3"), "{on}");
 }
 
+/// `expand` prints expressions in the normal form the claims are decided in: the Casimir
+/// relation C10 expands to zero, and so does not a wrong neighbour of it; a condition applies
+/// after the expansion.
+#[test]
+fn expand_prints_the_normal_form() {
+    let f = "systems/harmonic-rotor.toml";
+    let out = run(&["expand", f, "K_1_1", "sin(theta)^2", "--no-timings"], 0);
+    assert!(
+        out.contains(
+            "\n    K_{1,1} = (p_x + i p_y + iMωx − Mωy) cos θ + (−i p_x + p_y + Mωx + iMωy) sin θ\n"
+        ),
+        "{out}"
+    );
+    assert!(out.contains("\n    sin(θ)² = 1 − cos²θ\n"), "{out}");
+    let casimir = "4*G1^2 + G2^2 + omega^2*L^2 - (F1 - F2)^2";
+    let wrong = "4*G1^2 + G2^2 + omega^2*L^2 - F1^2";
+    let v: Value =
+        serde_json::from_str(&run(&["expand", f, casimir, wrong, "--format", "json"], 0))
+            .expect("JSON");
+    let lines = &v["equations"][0]["lines"];
+    assert_eq!(lines[0]["ascii"], "0");
+    // 4G1² + G2² + ω²L² − F1² = −2F1F2 + F2², worked out by hand from F1 = H, F2 = p_θ²/(2I).
+    assert_eq!(
+        lines[1]["ascii"],
+        "-p_x^2*p_theta^2/(2*M*I) - p_y^2*p_theta^2/(2*M*I) - p_theta^4/(4*I^2) \
+         - M*omega^2*x^2*p_theta^2/(2*I) - M*omega^2*y^2*p_theta^2/(2*I)"
+    );
+    // {P_{1,1}, H} vanishes at the resonance p_θ = Iω and not off it.
+    let on = run(
+        &[
+            "expand",
+            f,
+            "{P_1_1, H}",
+            "--when",
+            "p_theta = I*omega",
+            "--no-timings",
+        ],
+        0,
+    );
+    assert!(on.contains("at p_θ = Iω:\n    {P_{1,1}, H} = 0\n"), "{on}");
+    let off = run(
+        &[
+            "expand",
+            f,
+            "{P_1_1, H}",
+            "--when",
+            "p_theta = 2*I*omega",
+            "--no-timings",
+        ],
+        0,
+    );
+    assert!(!off.contains("{P_{1,1}, H} = 0\n"), "{off}");
+    assert!(off.contains("at p_θ = 2Iω:\n    {P_{1,1}, H} = "), "{off}");
+}
+
 /// A command reads all its arguments before it expands any: with a term limit that the first
 /// expression's expansion passes, a slip in a later argument is still what is reported.
 /// The inputs echoed in the paper's notation: a quotient that is a factor of a product is in
@@ -623,6 +678,14 @@ fn arguments_are_read_before_any_is_expanded() {
             "1:5: expected an expression after '+'",
         ),
         (vec!["table", f, "K_30_1", "Foo"], "'Foo' is not a function"),
+        (
+            vec!["expand", f, big, "L - "],
+            "1:4: expected an expression after '-'",
+        ),
+        (
+            vec!["expand", f, big, "--when", "theta = 0"],
+            "a condition cannot fix an angle",
+        ),
     ] {
         let args = [args, vec!["--max-terms", limit]].concat();
         let o = superint_in(root(), &args);
@@ -746,7 +809,7 @@ fn tower_of_a_file_family_with_its_proof() {
 
 #[test]
 fn every_new_help_shows_an_example() {
-    for cmd in ["check", "bracket", "table", "rank", "tower"] {
+    for cmd in ["check", "bracket", "expand", "table", "rank", "tower"] {
         let out = run(&[cmd, "--help"], 0);
         assert!(out.contains("Examples:\n  superint"), "{cmd}");
         assert!(out.contains("--max-terms"), "{cmd}");
