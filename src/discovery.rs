@@ -75,6 +75,34 @@ fn parameter_names(vars: &VarSet, params: &[Var]) -> String {
 
 fn space_text(r: &SearchResult) -> String {
     let s = &r.space;
+    let space = &r.variables;
+    let name = |v: &Var| r.vars.variable(*v).unicode().to_string();
+    // One exponent letter per coordinate and momentum, in order (`x^a y^b p_x^c p_y^d`);
+    // `k` is the trigonometric order's.
+    let mut letters = "abcdefghjlmnqrsuvw".chars();
+    let mut monomial = Vec::new();
+    let mut exponents = |vars: &[Var], absolute: bool| -> String {
+        let degree: Vec<String> = vars
+            .iter()
+            .zip(&mut letters)
+            .map(|(v, letter)| {
+                monomial.push(format!("{}^{letter}", name(v)));
+                if absolute {
+                    format!("|{letter}|")
+                } else {
+                    letter.to_string()
+                }
+            })
+            .collect();
+        degree.join(" + ")
+    };
+    let positions = exponents(&space.coordinates, true);
+    let momenta = exponents(&space.momenta, false);
+    let monomial = if monomial.is_empty() {
+        "1".to_string()
+    } else {
+        monomial.join(" ")
+    };
     let laurent = if s.laurent {
         " (negative powers of the coordinates allowed)"
     } else {
@@ -88,25 +116,62 @@ fn space_text(r: &SearchResult) -> String {
         ),
         None => String::new(),
     };
-    // Without angles there is no trigonometric part and no angular momentum to leave out.
-    let angles = r.vars.angles().next().is_some();
-    let (trig_factor, trig_order, angular) = if angles {
-        (
-            " times `1, cos kθ, sin kθ`".to_string(),
-            format!(", trigonometric order `k ≤ {}`", s.trig_degree),
-            " Angular momenta are left out: on a resonance surface they are constants, and \
-             every function of them is an integral.",
-        )
-    } else {
-        (String::new(), String::new(), "")
+    let mut degrees = Vec::new();
+    if !momenta.is_empty() {
+        degrees.push(format!("momenta degree `{momenta} ≤ {}`", s.momenta_degree));
+    }
+    if !positions.is_empty() {
+        degrees.push(format!(
+            "positions degree `{positions} ≤ {}`{laurent}",
+            s.positions_degree
+        ));
+    }
+    let angles = match s.trig_degree {
+        0 => &[][..],
+        _ => space.angles.as_slice(),
+    };
+    let trig_factor = match angles {
+        [] => String::new(),
+        [theta] => {
+            let theta = name(theta);
+            degrees.push(format!("trigonometric order `k ≤ {}`", s.trig_degree));
+            format!(" times `1, cos k{theta}, sin k{theta}`")
+        }
+        angles => {
+            let sum = |f: &dyn Fn(usize, &Var) -> String| {
+                angles
+                    .iter()
+                    .enumerate()
+                    .map(|(j, v)| f(j + 1, v))
+                    .collect::<Vec<_>>()
+            };
+            let phase = sum(&|j, v| format!("k_{j}{}", name(v))).join(" + ");
+            let order = sum(&|j, _| format!("|k_{j}|")).join(" + ");
+            degrees.push(format!("trigonometric order `{order} ≤ {}`", s.trig_degree));
+            format!(" times `1, cos({phase}), sin({phase})`")
+        }
+    };
+    // An angle's momentum that the condition fixes is left out of the space.
+    let left_out: Vec<String> = space
+        .left_out
+        .iter()
+        .map(|p| format!("`{}`", name(p)))
+        .collect();
+    let left_out = match left_out.as_slice() {
+        [] => String::new(),
+        [p] => format!(
+            " {p} is left out: the condition fixes it, and every function of it is an integral."
+        ),
+        ps => format!(
+            " {} are left out: the condition fixes them, and every function of them is an \
+             integral.",
+            ps.join(", ")
+        ),
     };
     format!(
-        "The space: `x^a y^b p_x^c p_y^d`{trig_factor}, with momenta degree `c + d ≤ {}`, \
-         positions degree `|a| + |b| ≤ {}`{laurent}{trig_order}{symbolic}: {} unknowns, {} \
-         linear equations over `Q`, in {} independent blocks (the largest has {} \
-         unknowns).{angular}",
-        s.momenta_degree,
-        s.positions_degree,
+        "The space: `{monomial}`{trig_factor}, with {}{symbolic}: {} unknowns, {} linear \
+         equations over `Q`, in {} independent blocks (the largest has {} unknowns).{left_out}",
+        degrees.join(", "),
         r.unknowns,
         r.equations,
         r.components,
@@ -276,9 +341,10 @@ pub fn search_report(
                 .map(|(a, k)| Equation::new(&format!("A{} (k = {k})", i + 1), a))
         })
         .collect();
-    if !complex.is_empty() {
+    if let (false, [theta]) = (complex.is_empty(), r.variables.angles.as_slice()) {
+        let theta = r.vars.variable(*theta).unicode();
         entries.push(Entry::Equations(Equations {
-            caption: "Those of trigonometric order k > 0 as I = Re(A e^{−ikθ})".into(),
+            caption: format!("Those of trigonometric order k > 0 as I = Re(A e^{{−ik{theta}}})"),
             lines: complex,
         }));
     }

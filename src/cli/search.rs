@@ -50,11 +50,11 @@ pub struct SearchArgs {
     /// The condition applied after the bracket, such as 'p_theta = m*I*omega/n'.
     #[arg(long, value_name = "CONDITION")]
     when: Option<String>,
-    /// Total degree in the planar momenta.
+    /// Total degree in the momenta (an angle's momentum that --when fixes is left out).
     #[arg(long, value_name = "D", default_value_t = 2,
           value_parser = clap::value_parser!(u32).range(0..=20))]
     momenta_degree: u32,
-    /// Total degree in the planar coordinates (sum of absolute exponents).
+    /// Total degree in the coordinates, not the angles (sum of absolute exponents).
     #[arg(long, value_name = "E", default_value_t = 2,
           value_parser = clap::value_parser!(u32).range(0..=20))]
     positions_degree: u32,

@@ -420,7 +420,8 @@ pub fn closure_of(
             builder = builder.parameter(vars.variable(v).name());
         }
     }
-    for (name, _, _) in generators {
+    let mut shown = builder.clone();
+    for (name, display, _) in generators {
         if vars
             .lookup(name)
             .is_some_and(|v| vars.variable(v).kind() == VarKind::Parameter)
@@ -430,9 +431,13 @@ pub fn closure_of(
             )));
         }
         builder = builder.coordinate(name);
+        shown = shown.coordinate(name).shown_as(display);
     }
-    let ring = builder
+    // Each generator printed as its display name (`A_x` for `Ax`), unless two would then
+    // print alike.
+    let ring = shown
         .build()
+        .or_else(|_| builder.build())
         .map_err(|e| EngineError::Invalid(format!("cannot name the generators: {e}")))?;
     let symbols: Vec<Var> = generators
         .iter()

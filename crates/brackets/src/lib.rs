@@ -39,7 +39,7 @@ pub use closure::{closure, Bracket as ClosureBracket, Closure, ClosureOptions, R
 pub use error::EngineError;
 pub use phase::{CanonicalPair, PhaseSpace};
 pub use rank::{rank, RankCertificate, UpperBound};
-pub use search::{search, Integral, SearchOptions, SearchResult, SearchSpace};
+pub use search::{search, Integral, SearchOptions, SearchResult, SearchSpace, SpaceVariables};
 pub use system::{NamedFunction, System};
 pub use table::{BracketTable, Entry};
 pub use tower::{check_tower, eigen_proof, EigenProof, TowerReport};

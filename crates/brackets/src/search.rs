@@ -2,10 +2,10 @@
 //! exact linear algebra, each basis element proved by the engine.
 //!
 //! The space ([`SearchSpace`]) is spanned by `x^a y^b · p_x^c p_y^d · {1, cos kθ, sin kθ}`:
-//! planar coordinates of total degree `Σ|a| ≤ e` (negative exponents too when `laurent`),
-//! planar momenta of total degree `≤ d`, and trigonometric order `Σ|k| ≤ K` in the angles. The
-//! angular momenta are left out: on a resonance surface `p_θ = mIω/n` they are constants, and
-//! every function of them is an integral.
+//! coordinates of total degree `Σ|a| ≤ e` (negative exponents too when `laurent`), momenta of
+//! total degree `≤ d`, and trigonometric order `Σ|k| ≤ K` in the angles. An angle's momentum
+//! that the condition fixes is left out: on a resonance surface `p_θ = mIω/n` it is a
+//! constant, and every function of it is an integral ([`SpaceVariables`]).
 //!
 //! The unknowns are the real coefficients of that basis, so the equations `{F, H} = 0` (after the
 //! condition) are linear over `Q`: the real and imaginary parts of the coefficients of
@@ -57,9 +57,9 @@ const IMAGE_BLOCK: usize = 4096;
 /// The finite space of functions searched.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct SearchSpace {
-    /// Total degree in the planar momenta.
+    /// Total degree in the momenta ([`SpaceVariables::momenta`]).
     pub momenta_degree: u32,
-    /// Total degree `Σ|a|` in the planar coordinates.
+    /// Total degree `Σ|a|` in the coordinates.
     pub positions_degree: u32,
     /// Trigonometric order `Σ|k|` in the angles.
     pub trig_degree: u32,
@@ -196,7 +196,7 @@ pub struct Integral {
     pub proved_fixed: bool,
     /// The integral with its parameters, if lifting and the symbolic proof succeeded.
     pub symbolic: Option<Expr>,
-    /// Degree in the planar momenta.
+    /// Degree in the momenta.
     pub momenta_degree: i64,
     /// Degree `Σ|a|` in the coordinates.
     pub positions_degree: i64,
@@ -267,6 +267,8 @@ pub struct SearchResult {
     pub liftable: bool,
     /// The variables (for printing the parameters).
     pub vars: Vars,
+    /// The variables the space's functions are formed in.
+    pub variables: SpaceVariables,
     /// Number of unknowns (real basis functions).
     pub unknowns: usize,
     /// Number of (nonzero) linear equations.
@@ -312,6 +314,21 @@ impl SearchResult {
     }
 }
 
+/// The variables of a search's space: monomials in the coordinates and in the momenta, times
+/// `cos k·θ`, `sin k·θ` in the angles. Every momentum of the phase space is among them but an
+/// angle's momentum that the condition fixes (`p_θ = mIω/n`), a constant there.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct SpaceVariables {
+    /// The coordinates (not the angles), whose total degree is the positions degree.
+    pub coordinates: Vec<Var>,
+    /// The momenta, whose total degree is the momenta degree.
+    pub momenta: Vec<Var>,
+    /// The angles, whose trigonometric order is bounded.
+    pub angles: Vec<Var>,
+    /// The angles' momenta that the condition fixes, left out.
+    pub left_out: Vec<Var>,
+}
+
 /// How an unknown depends on the angles.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, PartialOrd, Ord)]
 enum Trig {
@@ -323,7 +340,7 @@ enum Trig {
 /// One real basis function `φ · trig(k·θ)`.
 #[derive(Clone, Debug)]
 struct Unknown {
-    /// Exponents of the planar coordinates and momenta and of the parameters kept symbolic
+    /// Exponents of the coordinates and momenta and of the parameters kept symbolic
     /// (angles zero), over all variables.
     phase: Vec<i64>,
     /// `k` over the angles, canonical (first nonzero entry positive), zero for `One`.
@@ -349,6 +366,7 @@ enum Slot {
 /// The search problem, with the parameters that are not kept symbolic at fixed values.
 struct Problem {
     vars: Vars,
+    variables: SpaceVariables,
     angles: Vec<Var>,
     unknowns: Vec<Unknown>,
     /// Where each monomial `φ·e^{ik·θ}` of the space sits among the unknowns.
@@ -401,11 +419,17 @@ impl Problem {
             .filter(|p| vars.variable(p.q).kind() == VarKind::Coordinate)
             .map(|p| p.q)
             .collect();
-        let momenta: Vec<Var> = pairs
-            .iter()
-            .filter(|p| vars.variable(p.q).kind() == VarKind::Coordinate)
-            .map(|p| p.p)
-            .collect();
+        // An angle's momentum that the condition fixes (`p_θ = mIω/n`) is a constant there:
+        // every function of it is an integral, so it is left out. Any other momentum counts.
+        let fixed = |v: Var| cond.iter().flatten().any(|(w, _)| *w == v);
+        let (mut momenta, mut left_out) = (Vec::new(), Vec::new());
+        for pair in pairs {
+            if vars.variable(pair.q).kind() == VarKind::Angle && fixed(pair.p) {
+                left_out.push(pair.p);
+            } else {
+                momenta.push(pair.p);
+            }
+        }
         let angles: Vec<Var> = pairs
             .iter()
             .filter(|p| vars.variable(p.q).kind() == VarKind::Angle)
@@ -488,8 +512,15 @@ impl Problem {
                 .then_with(|| a.trig.cmp(&b.trig))
         });
         let slots = Problem::slots(&vars, &angles, &unknowns)?;
+        let variables = SpaceVariables {
+            coordinates: coords,
+            momenta,
+            angles: angles.clone(),
+            left_out,
+        };
         let mut problem = Problem {
             vars,
+            variables,
             angles,
             unknowns,
             slots,
@@ -991,7 +1022,8 @@ pub fn search(system: &System, options: &SearchOptions) -> Result<SearchResult, 
             };
             let deg = |kinds: &[VarKind]| fixed.total_degree(kinds).unwrap_or(0);
             Ok(Integral {
-                // Only planar momenta: angular momenta do not occur.
+                // Every momentum of the space (an angle's momentum fixed by the condition
+                // does not occur).
                 momenta_degree: deg(&[VarKind::Momentum]),
                 positions_degree: deg(&[VarKind::Coordinate]),
                 trig_degree: deg(&[VarKind::Angle]),
@@ -1031,6 +1063,7 @@ pub fn search(system: &System, options: &SearchOptions) -> Result<SearchResult, 
         parameters,
         liftable: lifter.is_some(),
         vars: system.vars().clone(),
+        variables: problem.variables.clone(),
         unknowns: n,
         equations: nrows,
         components: groups.len(),

@@ -432,6 +432,16 @@ impl VarSetBuilder {
     pub fn angle(self, name: &str) -> Self {
         self.variable(name, VarKind::Angle)
     }
+    /// Shows the variable declared last as the name `display` would be shown (`A_x`, `A_{x}`
+    /// in LaTeX, for a variable named `Ax`), when `display` is an identifier; otherwise, or
+    /// with nothing declared, changes nothing. [`VarSetBuilder::build`] refuses two variables
+    /// shown alike.
+    pub fn shown_as(mut self, display: &str) -> Self {
+        if let (Some(v), true) = (self.vars.last_mut(), is_identifier(display)) {
+            (v.unicode, v.latex) = render_name(display);
+        }
+        self
+    }
     /// Sets the limits.
     pub fn limits(mut self, limits: Limits) -> Self {
         self.limits = limits;
@@ -611,6 +621,29 @@ mod tests {
         assert_eq!(render_name("omega"), ("ω".into(), r"\omega".into()));
         assert_eq!(render_name("G1"), ("G1".into(), "G_{1}".into()));
         assert_eq!(render_name("M"), ("M".into(), "M".into()));
+    }
+
+    #[test]
+    fn a_variable_shown_as_another_name() {
+        let vars = VarSet::builder()
+            .coordinate("Ax")
+            .shown_as("A_x")
+            .coordinate("B")
+            .shown_as("{not an identifier}")
+            .build()
+            .unwrap();
+        let (ax, b) = (vars.lookup("Ax").unwrap(), vars.lookup("B").unwrap());
+        assert_eq!(vars.variable(ax).name(), "Ax");
+        assert_eq!(vars.variable(ax).unicode(), "A_x");
+        assert_eq!(vars.variable(ax).latex(), "A_{x}");
+        assert_eq!(vars.variable(b).unicode(), "B");
+        // Two variables shown alike are refused, as two declared alike are.
+        let twice = VarSet::builder()
+            .coordinate("Ax")
+            .shown_as("A_x")
+            .coordinate("A_x")
+            .build();
+        assert!(twice.is_err());
     }
 
     #[test]
