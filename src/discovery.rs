@@ -77,9 +77,13 @@ fn space_text(r: &SearchResult) -> String {
     let s = &r.space;
     let space = &r.variables;
     let name = |v: &Var| r.vars.variable(*v).unicode().to_string();
-    // One exponent letter per coordinate and momentum, in order (`x^a y^b p_x^c p_y^d`);
-    // `k` is the trigonometric order's.
-    let mut letters = "abcdefghjlmnqrsuvw".chars();
+    // One exponent letter per coordinate and momentum, in order (`x^a y^b p_x^c p_y^d`),
+    // none the name of a variable; `k` is the trigonometric order's.
+    let taken = |c: &char| {
+        let mut buf = [0; 4];
+        r.vars.lookup(c.encode_utf8(&mut buf)).is_some()
+    };
+    let mut letters = "abcdefghjlmnqrsuvw".chars().filter(|c| !taken(c));
     let mut monomial = Vec::new();
     let mut exponents = |vars: &[Var], absolute: bool| -> String {
         let degree: Vec<String> = vars
@@ -145,7 +149,7 @@ fn space_text(r: &SearchResult) -> String {
                     .map(|(j, v)| f(j + 1, v))
                     .collect::<Vec<_>>()
             };
-            let phase = sum(&|j, v| format!("k_{j}{}", name(v))).join(" + ");
+            let phase = sum(&|j, v| format!("k_{j} {}", name(v))).join(" + ");
             let order = sum(&|j, _| format!("|k_{j}|")).join(" + ");
             degrees.push(format!("trigonometric order `{order} ≤ {}`", s.trig_degree));
             format!(" times `1, cos({phase}), sin({phase})`")

@@ -903,3 +903,44 @@ fn an_angle_momentum_is_left_out_only_when_fixed() {
     );
     assert!(!fixed.contains("= p_θ\n"), "{fixed}");
 }
+
+/// The space is described in the file's own variables, its exponent letters none of their
+/// names: two coupled rotors with angles `a`, `b` (so the exponents start at `c`) conserve the
+/// total angular momentum.
+#[test]
+fn the_space_is_described_in_the_files_variables() {
+    let dir = std::path::Path::new(env!("CARGO_TARGET_TMPDIR")).join("discovery-two-rotors");
+    std::fs::create_dir_all(&dir).expect("a scratch directory");
+    let file = dir.join("two-rotors.toml");
+    std::fs::write(
+        &file,
+        "name = \"two rotors\"\nhamiltonian = \"p_a^2/2 + p_b^2/2 + cos(a - b)\"\n\
+         [phase_space]\nangles = [\"a\", \"b\"]\n",
+    )
+    .expect("the file is written");
+    let out = superint(&[
+        "search",
+        file.to_str().expect("a UTF-8 path"),
+        "--momenta-degree",
+        "1",
+        "--positions-degree",
+        "0",
+        "--trig-degree",
+        "1",
+        "--no-timings",
+    ]);
+    assert_eq!(out.status.code(), Some(0));
+    let out = String::from_utf8(out.stdout).expect("UTF-8");
+    assert!(
+        normalize(&out).contains(
+            "The space: p_a^c p_b^d times 1, cos(k_1 a + k_2 b), sin(k_1 a + k_2 b), with \
+             momenta degree c + d ≤ 1, trigonometric order |k_1| + |k_2| ≤ 1: 15 unknowns"
+        ),
+        "{out}"
+    );
+    assert!(out.contains("\n    I2 = p_a + p_b\n"), "{out}");
+    assert!(
+        out.contains("Dimension of the space of integrals: 2."),
+        "{out}"
+    );
+}
