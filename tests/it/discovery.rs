@@ -738,6 +738,10 @@ fn bad_search_arguments_exit_2_with_a_message() {
             "required arguments were not provided",
         ),
         (
+            "--when C=i --trig-degree 0",
+            "the search needs a real condition, and the value of C is not real",
+        ),
+        (
             "--positions-degree 4 --trig-degree 0 --symbolic A,B --max-terms 500",
             "the space has 540 unknowns, more than the term limit 500",
         ),
@@ -909,18 +913,10 @@ fn an_angle_momentum_is_left_out_only_when_fixed() {
 /// total angular momentum.
 #[test]
 fn the_space_is_described_in_the_files_variables() {
-    let dir = std::path::Path::new(env!("CARGO_TARGET_TMPDIR")).join("discovery-two-rotors");
-    std::fs::create_dir_all(&dir).expect("a scratch directory");
-    let file = dir.join("two-rotors.toml");
-    std::fs::write(
-        &file,
-        "name = \"two rotors\"\nhamiltonian = \"p_a^2/2 + p_b^2/2 + cos(a - b)\"\n\
-         [phase_space]\nangles = [\"a\", \"b\"]\n",
-    )
-    .expect("the file is written");
+    let file = scratch_system("two-rotors", "p_a^2/2 + p_b^2/2 + cos(a - b)", "a, b");
     let out = superint(&[
         "search",
-        file.to_str().expect("a UTF-8 path"),
+        &file,
         "--momenta-degree",
         "1",
         "--positions-degree",
@@ -943,4 +939,43 @@ fn the_space_is_described_in_the_files_variables() {
         out.contains("Dimension of the space of integrals: 2."),
         "{out}"
     );
+}
+
+/// A system file in a scratch directory, named `name`, with Hamiltonian `h` and the
+/// comma-separated `angles`; its path.
+fn scratch_system(name: &str, h: &str, angles: &str) -> String {
+    let dir = std::path::Path::new(env!("CARGO_TARGET_TMPDIR")).join("discovery");
+    std::fs::create_dir_all(&dir).expect("a scratch directory");
+    let file = dir.join(format!("{name}.toml"));
+    let angles: Vec<String> = angles.split(", ").map(|a| format!("{a:?}")).collect();
+    std::fs::write(
+        &file,
+        format!(
+            "name = {name:?}\nhamiltonian = {h:?}\n[phase_space]\nangles = [{}]\n",
+            angles.join(", ")
+        ),
+    )
+    .expect("the file is written");
+    file.to_str().expect("a UTF-8 path").to_string()
+}
+
+/// The search finds the real integrals of a real Hamiltonian: a complex one is refused (the
+/// pendulum `p_t²/2 − e^{it}` gave `p_t² − 4 cos t` as an integral, which the proof refuted).
+#[test]
+fn a_complex_hamiltonian_is_refused() {
+    let file = scratch_system("complex-pendulum", "p_t^2/2 - exp(i*t)", "t");
+    let out = superint(&["search", &file, "--trig-degree", "1"]);
+    assert_eq!(out.status.code(), Some(2));
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert!(
+        stderr.contains(
+            "the search finds the real integrals of a real Hamiltonian, and H is not real"
+        ),
+        "{stderr}"
+    );
+    // Its real part is searched as usual: the energy.
+    let file = scratch_system("real-pendulum", "p_t^2/2 - cos(t)", "t");
+    let out = superint(&["search", &file, "--trig-degree", "1", "--no-timings"]);
+    assert_eq!(out.status.code(), Some(0));
+    assert!(String::from_utf8_lossy(&out.stdout).contains("    I2 = p_t² − 2 cos t\n"));
 }

@@ -895,6 +895,24 @@ pub fn search(system: &System, options: &SearchOptions) -> Result<SearchResult, 
             )));
         }
     }
+    // The unknowns are the real coefficients of real functions, and the equations only the
+    // coefficients of `e^{ik·θ}` with `k ≥ 0`: right when `{F, H}` is real, that is when `H`
+    // and the condition's values are.
+    if !system.hamiltonian().is_real() {
+        return Err(EngineError::Invalid(
+            "the search finds the real integrals of a real Hamiltonian, and H is not real \
+             (it differs from its conjugate)"
+                .into(),
+        ));
+    }
+    if let Some(c) = &options.condition {
+        if let Some((v, _)) = c.subs.iter().find(|(_, value)| !value.is_real()) {
+            return Err(EngineError::Invalid(format!(
+                "the search needs a real condition, and the value of {} is not real",
+                vars.variable(*v).name()
+            )));
+        }
+    }
     // A parameter the condition sets takes its value from the condition (after the bracket,
     // like a resonance): fixing it first would search at another value.
     if let Some(c) = &options.condition {
