@@ -366,7 +366,9 @@ pub fn closure_of(
 
     // Relations: the kernel, in column order (exact).
     let kernel = modular::kernel(&columns, nrows);
-    let rank = columns.len() - kernel.len();
+    // With complex generators the columns are each monomial and i times it: their span over
+    // Q is a space over Q(i), of half its dimension, which is the monomials' span.
+    let rank = (columns.len() - kernel.len()) / if complex { 2 } else { 1 };
     // Brackets: each target in the span of the columns.
     let mut echelon = Echelon::<Fp>::new(nrows);
     let mut exact: Option<Echelon<Rational>> = None;
@@ -883,6 +885,9 @@ mod tests {
         assert_eq!(c.render_bracket(0, 2), "iωZ");
         // Z Z̄ = 2M(F1 − F2) + 2MωL, once (not again times i).
         assert_eq!(c.relations.len(), 1);
+        // The 21 monomials of degree ≤ 2 in five generators span 20 dimensions over Q(i)
+        // (it read 40, the dimension over Q of the monomials and i times them).
+        assert_eq!((c.monomials, c.rank), (21, 20));
     }
 
     #[test]
