@@ -235,6 +235,22 @@ impl ProofResult {
     pub fn holds(&self) -> bool {
         self.facts.iter().all(|f| f.holds) && self.leibniz_check
     }
+
+    /// The proof's last line, as a label and prose: `Therefore` and the conclusion when every
+    /// step holds, otherwise `Not proved` and why the conclusion does not follow.
+    pub fn closing(&self) -> (&'static str, String) {
+        if self.holds() {
+            ("Therefore", self.conclusion.clone())
+        } else {
+            (
+                "Not proved",
+                format!(
+                    "a step above fails, so the lemma does not give {}",
+                    self.conclusion
+                ),
+            )
+        }
+    }
 }
 
 /// `{K_{m,n}, H} = i(mω − nΩ) K_{m,n}` checked by expansion for `1 ≤ m, n ≤ max`.

@@ -275,7 +275,8 @@ fn proof(out: &mut Vec<String>, p: &ProofResult) {
     out.push(r"\end{enumerate}".into());
     out.push(format!(r"\emph{{Lemma:}} {}.", sentence(&p.lemma)));
     out.push(String::new());
-    out.push(format!(r"\emph{{Therefore:}} {}.", sentence(&p.conclusion)));
+    let (label, closing) = p.closing();
+    out.push(format!(r"\emph{{{label}:}} {}.", sentence(&closing)));
     let mut rows: Vec<String> = p.claims.iter().flat_map(claim_rows).collect();
     flush(out, &mut rows);
 }

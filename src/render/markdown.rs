@@ -142,7 +142,8 @@ fn proof(p: &ProofResult) -> String {
     lines.push(String::new());
     lines.push(format!("*Lemma:* {}.", p.lemma));
     lines.push(String::new());
-    lines.push(format!("*Therefore:* {}.", p.conclusion));
+    let (label, closing) = p.closing();
+    lines.push(format!("*{label}:* {closing}."));
     lines.push(String::new());
     lines.extend(p.claims.iter().map(claim));
     lines.join("\n")

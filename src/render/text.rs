@@ -253,11 +253,8 @@ fn proof(out: &mut Vec<String>, p: &ProofResult) {
         }
     }
     out.extend(wrap(&format!("    Lemma: {}.", p.lemma), WRAP, "      "));
-    out.extend(wrap(
-        &format!("    Therefore: {}.", p.conclusion),
-        WRAP,
-        "      ",
-    ));
+    let (label, closing) = p.closing();
+    out.extend(wrap(&format!("    {label}: {closing}."), WRAP, "      "));
     for c in &p.claims {
         verdict_line(out, c);
     }

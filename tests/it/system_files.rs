@@ -782,6 +782,23 @@ fn tower_of_a_file_family_with_its_proof() {
         out.contains("computed: {conj(b), H} = (−2iω) conj(b)"),
         "{out}"
     );
+    assert!(out.contains("    Therefore: {W_{m,n}, H} = "), "{out}");
+    // With a wrong eigenvalue a base fact fails, and the proof says that nothing follows.
+    let dir = scratch("tower-wrong");
+    let file = std::fs::read_to_string(root().join("systems/anisotropic-oscillator-1-2.toml"))
+        .expect("the file");
+    let wrong = file.replace("i*(m - 2*n)*omega", "i*(m + 2*n)*omega");
+    assert_ne!(wrong, file);
+    std::fs::write(dir.join("w.toml"), wrong).expect("write");
+    let o = superint_in(&dir, &["tower", "--system", "w.toml", "--max", "1"]);
+    assert_eq!(o.status.code(), Some(1), "{}", text(&o.stderr));
+    let out = text(&o.stdout);
+    assert!(out.contains("[W-all REFUTED]"), "{out}");
+    assert!(
+        out.contains("    Not proved: a step above fails, so the lemma does not give"),
+        "{out}"
+    );
+    assert!(!out.contains("Therefore"), "{out}");
     // A family that is not a product of powers A^m B^n: the bounded check only.
     let dir = scratch("tower");
     let family = "[[family]]\nname = \"S\"\nvalue = \"A^(m + n)\"\n\
