@@ -13,7 +13,7 @@ use trigpoly::{AlgebraError, Expr, Span, VarKind};
 use super::error::{ErrorKind, FileError};
 use super::model::{ClaimModel, When};
 use super::scope::{rewrite_braces, LIMIT_HINT};
-use super::text::{array_strings, split_top_level, Source, Text};
+use super::text::{array_strings, split_top_level, unbalanced_bracket, Source, Text};
 use super::LoadedSystem;
 use crate::report::{ClaimKind, ClaimResult, Expect, RankResult};
 
@@ -99,6 +99,9 @@ impl ClaimSpec {
         let parts = split_top_level(&text.value, '=');
         let usage = "a claim reads `lhs = rhs`, such as \"{L, G1} = -G2\", or \
                      `rank(F, G, ...) = r`";
+        if let (1, Some((at, message))) = (parts.len(), unbalanced_bracket(&text.value)) {
+            return Err(text.error(source, ErrorKind::Claim, Span::new(at, at + 1), message));
+        }
         if parts.len() == 1 {
             return Err(text.error(
                 source,

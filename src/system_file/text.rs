@@ -169,6 +169,27 @@ pub(crate) fn split_top_level(s: &str, sep: char) -> Vec<Range<usize>> {
     pieces
 }
 
+/// The first bracket of `s` that does not pair up, and what is wrong with it: a closing one
+/// with nothing open or of the other kind, or an opening one never closed; its byte offset.
+pub(crate) fn unbalanced_bracket(s: &str) -> Option<(usize, String)> {
+    let mut open = Vec::new();
+    for (k, c) in s.char_indices() {
+        match c {
+            '(' | '{' => open.push((k, c)),
+            ')' | '}' => match open.pop() {
+                Some((_, o)) if (o, c) == ('(', ')') || (o, c) == ('{', '}') => {}
+                Some((_, o)) => {
+                    return Some((k, format!("this '{c}' does not close the '{o}' before it")))
+                }
+                None => return Some((k, format!("this '{c}' closes nothing"))),
+            },
+            _ => {}
+        }
+    }
+    open.first()
+        .map(|&(k, c)| (k, format!("this '{c}' is never closed")))
+}
+
 /// The spans of the string literals of a TOML array whose token is `span` in `file`, in
 /// order (skipping comments); `None` if the array holds something else.
 pub(crate) fn array_strings(file: &str, span: Range<usize>) -> Option<Vec<Range<usize>>> {

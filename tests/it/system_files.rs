@@ -306,6 +306,18 @@ fn bad_inputs() -> Vec<(&'static str, Vec<u8>, &'static str, Vec<&'static str>)>
             check.clone(),
         ),
         (
+            "claim with an unclosed brace",
+            base_with("{A, H} = i*omega*A", "{A, H = i*omega*A"),
+            "bad.toml:14:10: this '{' is never closed",
+            check.clone(),
+        ),
+        (
+            "claim with a bracket that closes nothing",
+            base_with("{A, H} = i*omega*A", "A, H} = i*omega*A"),
+            "bad.toml:14:14: this '}' closes nothing",
+            check.clone(),
+        ),
+        (
             "TOML syntax error",
             base_with(
                 "claim = \"{A, H} = i*omega*A\"",
