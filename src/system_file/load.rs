@@ -129,7 +129,7 @@ fn is_identifier(s: &str) -> bool {
 struct Builder<'a> {
     source: Source,
     limits: &'a LimitsOverride,
-    /// Every declared name: what it is and where.
+    /// Every declared name: what it is (`an angle`) and where.
     names: HashMap<String, (&'static str, Range<usize>)>,
 }
 
@@ -150,7 +150,7 @@ impl<'a> Builder<'a> {
         self.source.error(kind, span, message)
     }
 
-    /// Declares a name of the given kind, checking that it is an identifier, not reserved,
+    /// Declares a name of the given kind (`a coordinate`), checking that it is an identifier, not reserved,
     /// and new.
     fn declare(
         &mut self,
@@ -163,7 +163,7 @@ impl<'a> Builder<'a> {
                 ErrorKind::Name,
                 span,
                 format!(
-                    "'{name}' cannot name a {what}: a name is letters, digits and '_', starting \
+                    "'{name}' cannot name {what}: a name is letters, digits and '_', starting \
                      with a letter or '_'"
                 ),
             ));
@@ -183,7 +183,7 @@ impl<'a> Builder<'a> {
             return Err(self.error(
                 ErrorKind::Name,
                 span,
-                format!("'{name}' is already declared as a {other} on line {line}"),
+                format!("'{name}' is already declared as {other} on line {line}"),
             ));
         }
         self.names.insert(name.to_string(), (what, span));
@@ -201,13 +201,13 @@ impl<'a> Builder<'a> {
             ));
         }
         for c in &ps.coordinates {
-            self.declare(c.get_ref(), c.span(), "coordinate")?;
+            self.declare(c.get_ref(), c.span(), "a coordinate")?;
         }
         for a in &ps.angles {
-            self.declare(a.get_ref(), a.span(), "angle")?;
+            self.declare(a.get_ref(), a.span(), "an angle")?;
         }
         for p in &ps.parameters {
-            self.declare(p.get_ref(), p.span(), "parameter")?;
+            self.declare(p.get_ref(), p.span(), "a parameter")?;
         }
         let qs: Vec<&Spanned<String>> = ps.coordinates.iter().chain(&ps.angles).collect();
         for q in &qs {
@@ -217,12 +217,12 @@ impl<'a> Builder<'a> {
                     ErrorKind::Name,
                     q.span(),
                     format!(
-                        "the momentum of '{}' is '{p}', which is already declared as a {other}",
+                        "the momentum of '{}' is '{p}', which is already declared as {other}",
                         q.get_ref()
                     ),
                 ));
             }
-            self.names.insert(p, ("momentum", q.span()));
+            self.names.insert(p, ("a momentum", q.span()));
         }
         let limits = self.limits(&model)?;
         let mut builder = VarSet::builder().limits(limits);
@@ -290,7 +290,7 @@ impl<'a> Builder<'a> {
 
         for f in &model.function {
             let f = f.get_ref();
-            self.declare(f.name.get_ref(), f.name.span(), "function")?;
+            self.declare(f.name.get_ref(), f.name.span(), "a function")?;
             let value = file.scope(0).parse(&self.source, &self.text(&f.value))?;
             let display = f.display.as_ref().unwrap_or(&f.name).get_ref();
             file.system.define(f.name.get_ref(), display, value);
@@ -298,7 +298,7 @@ impl<'a> Builder<'a> {
 
         for spanned in &model.family {
             let f = spanned.get_ref();
-            self.declare(f.name.get_ref(), f.name.span(), "family")?;
+            self.declare(f.name.get_ref(), f.name.span(), "a family")?;
             let indices = match &f.indices {
                 None => ["m".to_string(), "n".to_string()],
                 Some(list) => {
@@ -329,7 +329,7 @@ impl<'a> Builder<'a> {
                     return Err(self.error(
                         ErrorKind::Family,
                         index_span,
-                        format!("the index '{idx}' is already declared as a {other}"),
+                        format!("the index '{idx}' is already declared as {other}"),
                     ));
                 }
                 if k == 1 && indices[0] == *idx {

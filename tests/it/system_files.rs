@@ -297,6 +297,15 @@ fn bad_inputs() -> Vec<(&'static str, Vec<u8>, &'static str, Vec<&'static str>)>
             check.clone(),
         ),
         (
+            "parameter named as an angle",
+            base_with(
+                "parameters = [\"M\", \"omega\"]",
+                "angles = [\"phi\"]\nparameters = [\"M\", \"phi\"]",
+            ),
+            "bad.toml:7:20: 'phi' is already declared as an angle on line 6",
+            check.clone(),
+        ),
+        (
             "family with an unknown name",
             base_with(
                 "[[claim]]",
