@@ -326,18 +326,19 @@ pub fn search_report(
         entries.push(Entry::Text(
             "None: the known integrals generate every integral in the space.".into(),
         ));
+    } else {
+        entries.push(Entry::Equations(Equations {
+            caption: match (&r.new, &symbolic) {
+                (Some(_), _) => "New integrals".into(),
+                (None, Some(names)) => format!("Generators over the polynomials in {names}"),
+                (None, None) => "A basis of the integrals".into(),
+            },
+            lines: shown
+                .iter()
+                .map(|&i| Equation::new(&label(i), r.basis[i].expr().clone()))
+                .collect(),
+        }));
     }
-    entries.push(Entry::Equations(Equations {
-        caption: match (&r.new, &symbolic) {
-            (Some(_), _) => "New integrals".into(),
-            (None, Some(names)) => format!("Generators over the polynomials in {names}"),
-            (None, None) => "A basis of the integrals".into(),
-        },
-        lines: shown
-            .iter()
-            .map(|&i| Equation::new(&label(i), r.basis[i].expr().clone()))
-            .collect(),
-    }));
     let complex: Vec<Equation> = shown
         .iter()
         .filter_map(|&i| {
