@@ -64,14 +64,6 @@ struct Lower<'a, C: Coefficient> {
     ctx: &'a dyn Context<C>,
 }
 
-/// An angle multiple that does not even fit a machine word.
-fn past_limit(span: Span) -> ParseError {
-    ParseError::new(
-        span,
-        "the multiple of the angle is past the limit of the exponents",
-    )
-}
-
 fn at(span: Span) -> impl Fn(AlgebraError) -> ParseError {
     move |e| ParseError::new(span, e.to_string())
 }
@@ -271,137 +263,159 @@ impl<C: Coefficient> Lower<'_, C> {
             ));
         }
         let arg = &args[0];
-        let (combo, imaginary) = self.angle_combination(arg, fun)?;
+        let multiples = self.angle_multiples(arg, fun)?;
         let wrap = |e: AlgebraError| ParseError::new(arg.span, e.to_string());
-        // e^{i Σ n_j θ_j}
+        // e^{±i Σ n_j θ_j}
         let exp_i = |sign: i64| -> Result<Poly<C>, ParseError> {
             let mut acc = Poly::one(self.vars);
-            for &(v, n) in &combo {
+            for &(v, n) in &multiples {
                 acc = acc
                     .checked_mul(&Poly::exp_i(self.vars, v, sign * n).map_err(wrap)?)
                     .map_err(wrap)?;
             }
             Ok(acc)
         };
-        match (fun, imaginary) {
-            ("exp", true) => exp_i(1),
-            ("exp", false) => Err(ParseError::new(
-                arg.span,
-                "exp takes i·n·θ with an integer n and an angle θ, such as exp(-i*2*theta)",
-            )),
-            (_, true) => Err(ParseError::new(
-                arg.span,
-                format!("{fun} takes a real angle n·θ; use exp for complex exponentials"),
-            )),
-            (f, false) => {
-                let plus = exp_i(1)?;
-                let minus = exp_i(-1)?;
-                let half = Rational::new(1, 2);
-                if f == "cos" {
-                    Ok((&plus + &minus) * &half)
-                } else {
-                    // sin φ = (e^{iφ} − e^{−iφ})/(2i)
-                    (&plus - &minus)
-                        .mul_i()
-                        .map(|p| p * &Rational::new(-1, 2))
-                        .map_err(wrap)
-                }
-            }
+        match fun {
+            "exp" => exp_i(1),
+            "cos" => Ok((&exp_i(1)? + &exp_i(-1)?) * &Rational::new(1, 2)),
+            // sin φ = (e^{iφ} − e^{−iφ})/(2i)
+            _ => (&exp_i(1)? - &exp_i(-1)?)
+                .mul_i()
+                .map(|p| p * &Rational::new(-1, 2))
+                .map_err(wrap),
         }
     }
 
-    /// Reads `Σ n_j θ_j` (or `i·Σ n_j θ_j`) with integer `n_j`; says whether `i` is a factor.
-    fn angle_combination(
+    /// The multiples `n_j` in `cos(Σ n_j θ_j)`, `sin(Σ n_j θ_j)` or `exp(i Σ n_j θ_j)`: the
+    /// argument read as a linear form over the angles, whose coefficients must be integers for
+    /// `cos` and `sin` and `i` times integers for `exp`.
+    fn angle_multiples(&self, arg: &Expr, fun: &str) -> Result<Vec<(Var, i64)>, ParseError> {
+        let bad = |span: Span| {
+            let message = if fun == "exp" {
+                "exp takes i times an integer combination of angles, such as exp(i*(2*theta - phi))"
+                    .to_string()
+            } else {
+                format!(
+                    "{fun} takes an integer combination of angles, such as {fun}(2*theta - phi)"
+                )
+            };
+            ParseError::new(span, message)
+        };
+        let LinearForm::Angles(form) = self.linear_form(arg, &bad)? else {
+            return Err(bad(arg.span));
+        };
+        let real = form.iter().all(|(_, c)| c.im.is_zero());
+        let imaginary = form.iter().all(|(_, c)| c.re.is_zero());
+        let multiple: fn(&GaussianRational) -> &Rational = match fun {
+            "exp" if imaginary => |c| &c.im,
+            "exp" if real => {
+                return Err(ParseError::new(
+                    arg.span,
+                    "exp takes i·n·θ with an integer n and an angle θ, such as exp(-i*2*theta)",
+                ))
+            }
+            "exp" => return Err(bad(arg.span)),
+            _ if real => |c| &c.re,
+            _ if imaginary => {
+                return Err(ParseError::new(
+                    arg.span,
+                    format!("{fun} takes a real angle n·θ; use exp for complex exponentials"),
+                ))
+            }
+            _ => return Err(bad(arg.span)),
+        };
+        let limit = self.vars.limits().max_degree;
+        form.iter()
+            .map(|(v, c)| {
+                // Only integers and i enter the form: its coefficients are Gaussian integers.
+                let n = multiple(c).numer();
+                match n.to_i64() {
+                    Some(k) if k.unsigned_abs() <= limit as u64 => Ok((*v, k)),
+                    _ => Err(ParseError::new(
+                        arg.span,
+                        format!(
+                            "the multiple {n} of {} is past the limit of {limit}",
+                            self.vars.variable(*v).unicode()
+                        ),
+                    )),
+                }
+            })
+            .collect()
+    }
+
+    /// Reads `e` as a linear form over the angles with Gaussian-integer coefficients: integers,
+    /// `i` and angles combined by `+`, `−` and products in which one side is a constant. What
+    /// does not fit is refused by `bad` at its span.
+    fn linear_form(
         &self,
         e: &Expr,
-        fun: &str,
-    ) -> Result<(Vec<(Var, i64)>, bool), ParseError> {
-        let bad = |span: Span| {
-            ParseError::new(
-                span,
-                format!(
-                    "{fun} takes an integer multiple of an angle{}, such as {fun}({}2*theta)",
-                    if fun == "exp" { " times i" } else { "" },
-                    if fun == "exp" { "i*" } else { "" }
-                ),
-            )
-        };
-        // (integer factor, i-count, angle) of a product.
-        fn product<C: Coefficient>(
-            low: &Lower<'_, C>,
-            e: &Expr,
-            acc: &mut (i64, u32, Option<Var>),
-            bad: &dyn Fn(Span) -> ParseError,
-        ) -> Result<(), ParseError> {
-            match &e.kind {
-                ExprKind::Mul(a, b) => {
-                    product(low, a, acc, bad)?;
-                    product(low, b, acc, bad)
+        bad: &dyn Fn(Span) -> ParseError,
+    ) -> Result<LinearForm, ParseError> {
+        use LinearForm::{Angles, Constant};
+        let form = match &e.kind {
+            ExprKind::Integer(n) => Constant(Rational::from(Integer::from(n.clone())).into()),
+            ExprKind::Name(n) if n == "i" => Constant(GaussianRational::i()),
+            ExprKind::Name(n) => match self.vars.lookup(n) {
+                Some(v) if self.vars.variable(v).kind() == VarKind::Angle => {
+                    Angles(vec![(v, GaussianRational::from(1))])
                 }
-                ExprKind::Neg(a) => {
-                    acc.0 = acc.0.checked_neg().ok_or_else(|| past_limit(e.span))?;
-                    product(low, a, acc, bad)
-                }
-                ExprKind::Integer(n) => {
-                    let n = i64::try_from(n.clone()).map_err(|_| past_limit(e.span))?;
-                    acc.0 = acc.0.checked_mul(n).ok_or_else(|| past_limit(e.span))?;
-                    Ok(())
-                }
-                ExprKind::Name(n) if n == "i" => {
-                    acc.1 += 1;
-                    Ok(())
-                }
-                ExprKind::Name(n) => match low.vars.lookup(n) {
-                    Some(v) if low.vars.variable(v).kind() == VarKind::Angle && acc.2.is_none() => {
-                        acc.2 = Some(v);
-                        Ok(())
+                Some(_) => return Err(bad(e.span)),
+                None => return Err(ParseError::new(e.span, format!("unknown angle '{n}'"))),
+            },
+            ExprKind::Neg(a) => self.linear_form(a, bad)?.scale(&GaussianRational::from(-1)),
+            ExprKind::Add(a, b) | ExprKind::Sub(a, b) => {
+                let sign = if matches!(e.kind, ExprKind::Sub(..)) {
+                    -1
+                } else {
+                    1
+                };
+                let lhs = self.linear_form(a, bad)?;
+                let rhs = self
+                    .linear_form(b, bad)?
+                    .scale(&GaussianRational::from(sign));
+                match (lhs, rhs) {
+                    (Constant(x), Constant(y)) => Constant(&x + &y),
+                    (Angles(mut x), Angles(y)) => {
+                        for (v, c) in y {
+                            match x.iter_mut().find(|(w, _)| *w == v) {
+                                Some((_, sum)) => *sum = &*sum + &c,
+                                None => x.push((v, c)),
+                            }
+                        }
+                        Angles(x)
                     }
-                    Some(_) => Err(bad(e.span)),
-                    None => Err(ParseError::new(e.span, format!("unknown angle '{n}'"))),
-                },
-                _ => Err(bad(e.span)),
-            }
-        }
-        let mut terms: Vec<(i64, Expr)> = Vec::new();
-        fn sum(e: &Expr, sign: i64, out: &mut Vec<(i64, Expr)>) {
-            match &e.kind {
-                ExprKind::Add(a, b) => {
-                    sum(a, sign, out);
-                    sum(b, sign, out);
+                    // A constant phase, as in cos(θ + 1), is not a polynomial in cos θ, sin θ.
+                    (Angles(x), Constant(c)) | (Constant(c), Angles(x)) if c.is_zero() => Angles(x),
+                    (Angles(_), Constant(_)) => return Err(bad(b.span)),
+                    (Constant(_), Angles(_)) => return Err(bad(a.span)),
                 }
-                ExprKind::Sub(a, b) => {
-                    sum(a, sign, out);
-                    sum(b, -sign, out);
-                }
-                _ => out.push((sign, e.clone())),
+            }
+            ExprKind::Mul(a, b) => match (self.linear_form(a, bad)?, self.linear_form(b, bad)?) {
+                (Constant(x), Constant(y)) => Constant(&x * &y),
+                (Constant(c), form) | (form, Constant(c)) => form.scale(&c),
+                // A product of angles.
+                (Angles(_), Angles(_)) => return Err(bad(b.span)),
+            },
+            _ => return Err(bad(e.span)),
+        };
+        Ok(form)
+    }
+}
+
+/// An argument of `cos`, `sin` or `exp` read as a linear form: a constant, or `Σ c_j θ_j` over
+/// the angles (each angle once).
+enum LinearForm {
+    Constant(GaussianRational),
+    Angles(Vec<(Var, GaussianRational)>),
+}
+
+impl LinearForm {
+    fn scale(self, k: &GaussianRational) -> LinearForm {
+        match self {
+            LinearForm::Constant(c) => LinearForm::Constant(&c * k),
+            LinearForm::Angles(form) => {
+                LinearForm::Angles(form.into_iter().map(|(v, c)| (v, &c * k)).collect())
             }
         }
-        sum(e, 1, &mut terms);
-        let mut combo: Vec<(Var, i64)> = Vec::new();
-        let mut imaginary: Option<bool> = None;
-        for (sign, t) in &terms {
-            let mut acc = (*sign, 0u32, None);
-            product(self, t, &mut acc, &bad)?;
-            let angle = acc.2.ok_or_else(|| bad(t.span))?;
-            if acc.1 > 1 || imaginary.is_some_and(|im| im != (acc.1 == 1)) {
-                return Err(bad(t.span));
-            }
-            imaginary = Some(acc.1 == 1);
-            match combo.iter_mut().find(|c| c.0 == angle) {
-                Some(c) => c.1 = c.1.checked_add(acc.0).ok_or_else(|| past_limit(t.span))?,
-                None => combo.push((angle, acc.0)),
-            }
-        }
-        let limit = self.vars.limits().max_degree;
-        if let Some((v, n)) = combo.iter().find(|c| c.1.unsigned_abs() > limit as u64) {
-            return Err(ParseError::new(
-                e.span,
-                format!(
-                    "the multiple {n} of {} is past the limit of {limit}",
-                    self.vars.variable(*v).unicode()
-                ),
-            ));
-        }
-        Ok((combo, imaginary.unwrap_or(false)))
     }
 }

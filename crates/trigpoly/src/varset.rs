@@ -57,6 +57,15 @@ impl Variable {
     pub fn kind(&self) -> VarKind {
         self.kind
     }
+    /// Whether a spelling finds both variables in a lookup: the same name, the same unicode
+    /// form, or one's name shown as the other is (`omega` and `ω`, or a name and a variable
+    /// shown as that name).
+    fn spelled_alike(&self, other: &Variable) -> bool {
+        self.name == other.name
+            || self.unicode == other.unicode
+            || render_name(&self.name).0 == other.unicode
+            || render_name(&other.name).0 == self.unicode
+    }
 }
 
 /// Limits that stop runaway expansions with a clear error instead of exhausting memory.
@@ -297,12 +306,18 @@ impl VarSet {
         (0..self.vars.len()).map(|k| Var(k as u16))
     }
 
-    /// The variable of a name: the ASCII name (`omega`, `p_theta`) or the unicode one (`ω`, `p_θ`).
+    /// The variable of a name, in any spelling that is shown as the variable is: its declared
+    /// name, its unicode form (`ω`, `p_θ`) or another spelling of that form (`omega`, and
+    /// `p_theta` for a momentum declared `p_θ`). [`VarSetBuilder::build`] makes sure that no
+    /// spelling fits two variables.
     pub fn lookup(&self, name: &str) -> Option<Var> {
-        self.vars
-            .iter()
-            .position(|v| v.name == name || v.unicode == name)
-            .map(|k| Var(k as u16))
+        let find = |fits: &dyn Fn(&Variable) -> bool| {
+            self.vars.iter().position(fits).map(|k| Var(k as u16))
+        };
+        find(&|v| v.name == name || v.unicode == name).or_else(|| {
+            let shown = render_name(name).0;
+            find(&|v| v.unicode == shown)
+        })
     }
 
     /// The limits in force.
@@ -472,7 +487,7 @@ impl VarSetBuilder {
                 )));
             }
             for w in &self.vars[..k] {
-                if w.name == v.name || w.unicode == v.unicode || w.name == v.unicode {
+                if w.spelled_alike(v) {
                     return Err(AlgebraError::Invalid(format!(
                         "variable {:?} is declared twice",
                         v.name
@@ -597,6 +612,7 @@ impl fmt::Display for VarSet {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::{GaussianRational, Poly};
 
     #[test]
     fn equal_declarations_share_one_interned_set() {
@@ -644,6 +660,62 @@ mod tests {
             .coordinate("A_x")
             .build();
         assert!(twice.is_err());
+    }
+
+    #[test]
+    fn a_variable_is_found_by_every_spelling_shown_as_it_is() {
+        // An angle declared in unicode, with its momentum named as a system file names it.
+        let vars = VarSet::builder()
+            .angle("θ")
+            .momentum(&format!("p_{}", "θ"))
+            .parameter("omega")
+            .parameter("Ω")
+            .build()
+            .unwrap();
+        let [theta, p_theta, omega, big_omega] = ["θ", "p_θ", "ω", "Ω"].map(|n| {
+            let v = vars.lookup(n).unwrap();
+            assert_eq!(vars.variable(v).unicode(), n);
+            v
+        });
+        for (spelling, var) in [
+            ("theta", theta),
+            ("θ", theta),
+            ("p_theta", p_theta),
+            ("p_θ", p_theta),
+            ("omega", omega),
+            ("ω", omega),
+            ("Omega", big_omega),
+        ] {
+            assert_eq!(vars.lookup(spelling), Some(var), "{spelling}");
+        }
+        // Names shown otherwise are not these variables.
+        for other in ["Theta", "p_Theta", "p_thet", "p_omega", "theta_p", "o"] {
+            assert_eq!(vars.lookup(other), None, "{other}");
+        }
+        // And the same in expressions.
+        let parse = |src| Poly::<GaussianRational>::parse(&vars, src).unwrap();
+        assert_eq!(
+            parse("p_theta^2/2 + omega*cos(2*theta)"),
+            parse("p_θ^2/2 + ω*cos(2*θ)")
+        );
+        let unknown = Poly::<GaussianRational>::parse(&vars, "p_phi").unwrap_err();
+        assert!(unknown.message.starts_with("unknown name 'p_phi'"));
+    }
+
+    #[test]
+    fn two_variables_found_by_one_spelling_are_refused() {
+        let twice = |builder: VarSetBuilder| builder.build().map(|_| ()).unwrap_err().to_string();
+        let angles = VarSet::builder().angle("theta").angle("θ");
+        assert_eq!(twice(angles), r#"variable "θ" is declared twice"#);
+        let parameters = VarSet::builder().parameter("ω").parameter("omega");
+        assert_eq!(twice(parameters), r#"variable "omega" is declared twice"#);
+        // `y` would name the first, shown as y, and the second, declared y.
+        let shown = VarSet::builder()
+            .coordinate("x")
+            .shown_as("y")
+            .coordinate("y")
+            .shown_as("z");
+        assert_eq!(twice(shown), r#"variable "y" is declared twice"#);
     }
 
     #[test]

@@ -273,6 +273,99 @@ fn pythagorean_angle_expansions() {
     );
 }
 
+/// An argument of `cos`, `sin` or `exp` is read as an integer combination of the angles however
+/// it is written (nested sums, unary minus, integer factors on either side, `i` anywhere in
+/// a product): each spelling has the normal form of its expanded spelling, and both that of
+/// the angle-addition formula written out by hand in `cos θ, sin θ, cos φ, sin φ` alone.
+#[test]
+fn angle_arguments_are_integer_combinations_however_written() {
+    let vars = phase_space();
+    let (c, s, cp, sp) = ("cos(theta)", "sin(theta)", "cos(phi)", "sin(phi)");
+    // cos 2α = cos²α − sin²α, sin 2α = 2 sin α cos α, cos 3α = 4cos³α − 3cos α,
+    // sin 3α = 3 sin α − 4 sin³α.
+    let cos2 = |c: &str, s: &str| format!("({c}^2 - {s}^2)");
+    let sin2 = |c: &str, s: &str| format!("(2*{s}*{c})");
+    let cos3 = |c: &str| format!("(4*{c}^3 - 3*{c})");
+    let sin3 = |s: &str| format!("(3*{s} - 4*{s}^3)");
+    let cases = [
+        (
+            "cos(2*(theta - phi))",
+            "cos(2*theta - 2*phi)",
+            // cos(a − b) = cos a cos b + sin a sin b
+            format!(
+                "{}*{} + {}*{}",
+                cos2(c, s),
+                cos2(cp, sp),
+                sin2(c, s),
+                sin2(cp, sp)
+            ),
+        ),
+        (
+            "sin(-(theta + 2*phi))",
+            "sin(-theta - 2*phi)",
+            // sin(−(a + b)) = −(sin a cos b + cos a sin b)
+            format!("-({s}*{} + {c}*{})", cos2(cp, sp), sin2(cp, sp)),
+        ),
+        (
+            "cos((theta - phi)*3)",
+            "cos(3*theta - 3*phi)",
+            format!("{}*{} + {}*{}", cos3(c), cos3(cp), sin3(s), sin3(sp)),
+        ),
+        (
+            "sin((2 + 1)*theta - phi*(1 - 3))",
+            "sin(3*theta + 2*phi)",
+            format!(
+                "{}*{} + {}*{}",
+                sin3(s),
+                cos2(cp, sp),
+                cos3(c),
+                sin2(cp, sp)
+            ),
+        ),
+        (
+            "exp(i*(theta - phi))",
+            "exp(i*theta - i*phi)",
+            format!("({c} + i*{s})*({cp} - i*{sp})"),
+        ),
+        (
+            "exp((theta - phi)*i)",
+            "exp(i*theta - i*phi)",
+            format!("({c} + i*{s})*({cp} - i*{sp})"),
+        ),
+        (
+            "exp(-2*i*(theta - phi))",
+            "exp(-2*i*theta + 2*i*phi)",
+            format!("({c} - i*{s})^2*({cp} + i*{sp})^2"),
+        ),
+        (
+            "exp(2*i*theta - i*phi)",
+            "exp(2*i*theta - i*phi)",
+            format!("({c} + i*{s})^2*({cp} - i*{sp})"),
+        ),
+        (
+            "exp(i*(2*(theta - phi) + -(-phi)))",
+            "exp(2*i*theta - i*phi)",
+            format!("({c} + i*{s})^2*({cp} - i*{sp})"),
+        ),
+        // i·i = −1 wherever the factors stand.
+        (
+            "exp(i*i*(theta*i))",
+            "exp(-i*theta)",
+            format!("{c} - i*{s}"),
+        ),
+        ("cos(theta - theta)", "cos(0*theta)", "1".to_string()),
+    ];
+    for (written, expanded, by_hand) in cases {
+        identity!(vars, written => expanded);
+        identity!(vars, expanded => by_hand);
+    }
+    // The normal forms tell the sign of a combination apart.
+    assert_ne!(
+        p::<GaussianRational>(&vars, "sin(2*(theta - phi))"),
+        p::<GaussianRational>(&vars, "sin(2*(phi - theta))")
+    );
+}
+
 /// The Fateman product for n = 6: `f·(f + 1) = f² + f` with `f = (1 + x + y + z + t)^6`, so
 /// the coefficient of `x^a y^b z^c t^d` is `12!/(e! a! b! c! d!) + 6!/(e'! a! b! c! d!)`.
 #[test]

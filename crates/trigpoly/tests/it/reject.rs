@@ -67,10 +67,10 @@ fn cases() -> Vec<Case> {
         case(
             Qi,
             "exp(i*theta/2)",
-            "exp takes an integer multiple of an angle times i, such as exp(i*2*theta)",
+            "exp takes i times an integer combination of angles, such as exp(i*(2*theta - phi))",
             (1, 5),
-            "line 1, column 5: exp takes an integer multiple of an angle times i, such as \
-             exp(i*2*theta)\n  exp(i*theta/2)\n      ^^^^^^^^^",
+            "line 1, column 5: exp takes i times an integer combination of angles, such as \
+             exp(i*(2*theta - phi))\n  exp(i*theta/2)\n      ^^^^^^^^^",
         ),
         case(
             Qi,
@@ -106,10 +106,10 @@ fn cases() -> Vec<Case> {
         case(
             Qi,
             "sin(x)",
-            "sin takes an integer multiple of an angle, such as sin(2*theta)",
+            "sin takes an integer combination of angles, such as sin(2*theta - phi)",
             (1, 5),
-            "line 1, column 5: sin takes an integer multiple of an angle, such as sin(2*theta)\n  \
-             sin(x)\n      ^",
+            "line 1, column 5: sin takes an integer combination of angles, such as \
+             sin(2*theta - phi)\n  sin(x)\n      ^",
         ),
         case(
             Q,
@@ -209,6 +209,83 @@ fn cases() -> Vec<Case> {
             (1, 1),
             "line 1, column 1: the exponent of x would reach 1500, past the limit of 1000\n  \
              (x^500)^3\n  ^^^^^^^^^",
+        ),
+        // A rational multiple that is not an integer.
+        case(
+            Qi,
+            "cos(theta/2)",
+            "cos takes an integer combination of angles, such as cos(2*theta - phi)",
+            (1, 5),
+            "line 1, column 5: cos takes an integer combination of angles, such as cos(2*theta - phi)\n  \
+             cos(theta/2)\n      ^^^^^^^",
+        ),
+        case(
+            Qi,
+            "sin(1/2*theta)",
+            "sin takes an integer combination of angles, such as sin(2*theta - phi)",
+            (1, 5),
+            "line 1, column 5: sin takes an integer combination of angles, such as sin(2*theta - phi)\n  \
+             sin(1/2*theta)\n      ^^^",
+        ),
+        // A product of angles, at the second.
+        case(
+            Qi,
+            "cos(theta*(phi - theta))",
+            "cos takes an integer combination of angles, such as cos(2*theta - phi)",
+            (1, 11),
+            "line 1, column 11: cos takes an integer combination of angles, such as cos(2*theta - phi)\n  \
+             cos(theta*(phi - theta))\n            ^^^^^^^^^^^^^",
+        ),
+        // A coordinate or a parameter in the combination.
+        case(
+            Qi,
+            "cos(2*(theta - x))",
+            "cos takes an integer combination of angles, such as cos(2*theta - phi)",
+            (1, 16),
+            "line 1, column 16: cos takes an integer combination of angles, such as cos(2*theta - phi)\n  \
+             cos(2*(theta - x))\n                 ^",
+        ),
+        case(
+            Qi,
+            "cos(M*theta)",
+            "cos takes an integer combination of angles, such as cos(2*theta - phi)",
+            (1, 5),
+            "line 1, column 5: cos takes an integer combination of angles, such as cos(2*theta - phi)\n  \
+             cos(M*theta)\n      ^",
+        ),
+        case(
+            Qi,
+            "cos(k*theta)",
+            "unknown angle 'k'",
+            (1, 5),
+            "line 1, column 5: unknown angle 'k'\n  \
+             cos(k*theta)\n      ^",
+        ),
+        // A constant phase.
+        case(
+            Qi,
+            "cos(theta + 1)",
+            "cos takes an integer combination of angles, such as cos(2*theta - phi)",
+            (1, 13),
+            "line 1, column 13: cos takes an integer combination of angles, such as cos(2*theta - phi)\n  \
+             cos(theta + 1)\n              ^",
+        ),
+        // A combination without i, and one that is partly real and partly imaginary.
+        case(
+            Qi,
+            "exp(2*(theta - phi))",
+            "exp takes i·n·θ with an integer n and an angle θ, such as exp(-i*2*theta)",
+            (1, 5),
+            "line 1, column 5: exp takes i·n·θ with an integer n and an angle θ, such as exp(-i*2*theta)\n  \
+             exp(2*(theta - phi))\n      ^^^^^^^^^^^^^^^",
+        ),
+        case(
+            Qi,
+            "exp(i*theta + phi)",
+            "exp takes i times an integer combination of angles, such as exp(i*(2*theta - phi))",
+            (1, 5),
+            "line 1, column 5: exp takes i times an integer combination of angles, such as exp(i*(2*theta - phi))\n  \
+             exp(i*theta + phi)\n      ^^^^^^^^^^^^^",
         ),
     ]
 }
