@@ -37,6 +37,9 @@ pub struct Variable {
     name: String,
     unicode: String,
     latex: String,
+    /// The unicode form with its Greek letters spelled out (`p_theta` for `p_θ`), when it has
+    /// any: a third spelling that [`VarSet::lookup`] takes.
+    spelled_out: Option<String>,
     kind: VarKind,
 }
 
@@ -57,14 +60,24 @@ impl Variable {
     pub fn kind(&self) -> VarKind {
         self.kind
     }
-    /// Whether a spelling finds both variables in a lookup: the same name, the same unicode
-    /// form, or one's name shown as the other is (`omega` and `ω`, or a name and a variable
-    /// shown as that name).
+    /// Whether [`VarSet::lookup`] finds the variable by `spelling`: its name, its unicode
+    /// form, or that form with its Greek letters spelled out.
+    fn spelled(&self, spelling: &str) -> bool {
+        self.name == spelling
+            || self.unicode == spelling
+            || self.spelled_out.as_deref() == Some(spelling)
+    }
+    /// Whether a spelling finds both variables in a lookup (`omega` and `ω`, or a name and a
+    /// variable shown as that name).
     fn spelled_alike(&self, other: &Variable) -> bool {
-        self.name == other.name
-            || self.unicode == other.unicode
-            || render_name(&self.name).0 == other.unicode
-            || render_name(&other.name).0 == self.unicode
+        [
+            Some(&self.name),
+            Some(&self.unicode),
+            self.spelled_out.as_ref(),
+        ]
+        .into_iter()
+        .flatten()
+        .any(|s| other.spelled(s))
     }
 }
 
@@ -306,18 +319,15 @@ impl VarSet {
         (0..self.vars.len()).map(|k| Var(k as u16))
     }
 
-    /// The variable of a name, in any spelling that is shown as the variable is: its declared
-    /// name, its unicode form (`ω`, `p_θ`) or another spelling of that form (`omega`, and
-    /// `p_theta` for a momentum declared `p_θ`). [`VarSetBuilder::build`] makes sure that no
-    /// spelling fits two variables.
+    /// The variable of a name, in any of its spellings: its declared name, its unicode form
+    /// (`ω`, `p_θ`) or that form with the Greek letters spelled out (`omega`, and `p_theta`
+    /// for a momentum declared `p_θ`). [`VarSetBuilder::build`] makes sure that no spelling
+    /// fits two variables.
     pub fn lookup(&self, name: &str) -> Option<Var> {
-        let find = |fits: &dyn Fn(&Variable) -> bool| {
-            self.vars.iter().position(fits).map(|k| Var(k as u16))
-        };
-        find(&|v| v.name == name || v.unicode == name).or_else(|| {
-            let shown = render_name(name).0;
-            find(&|v| v.unicode == shown)
-        })
+        self.vars
+            .iter()
+            .position(|v| v.spelled(name))
+            .map(|k| Var(k as u16))
     }
 
     /// The limits in force.
@@ -425,6 +435,7 @@ impl VarSetBuilder {
         let (unicode, latex) = render_name(name);
         self.vars.push(Variable {
             name: name.to_string(),
+            spelled_out: spell_out(&unicode),
             unicode,
             latex,
             kind,
@@ -454,6 +465,7 @@ impl VarSetBuilder {
     pub fn shown_as(mut self, display: &str) -> Self {
         if let (Some(v), true) = (self.vars.last_mut(), is_identifier(display)) {
             (v.unicode, v.latex) = render_name(display);
+            v.spelled_out = spell_out(&v.unicode);
         }
         self
     }
@@ -555,6 +567,23 @@ const GREEK: &[(&str, &str, &str)] = &[
     ("Psi", "Ψ", r"\Psi"),
     ("Omega", "Ω", r"\Omega"),
 ];
+
+/// A unicode name with its Greek letters spelled out, piece by piece between underscores and
+/// before trailing digits: `p_θ` → `p_theta`, `ω1` → `omega1`, `Ω_x` → `Omega_x`; `None` for an
+/// ASCII name, which has none.
+fn spell_out(unicode: &str) -> Option<String> {
+    if unicode.is_ascii() {
+        return None;
+    }
+    let piece = |p: &str| -> String {
+        let letters = p.trim_end_matches(|c: char| c.is_ascii_digit());
+        match GREEK.iter().find(|(_, uni, _)| *uni == letters) {
+            Some((ascii, _, _)) => format!("{ascii}{}", &p[letters.len()..]),
+            None => p.to_string(),
+        }
+    };
+    Some(unicode.split('_').map(piece).collect::<Vec<_>>().join("_"))
+}
 
 /// `omega_x` → (`ω_x`, `\omega_{x}`); `p_theta` → (`p_θ`, `p_{\theta}`); `G1` → (`G1`, `G_{1}`).
 pub(crate) fn render_name(name: &str) -> (String, String) {
