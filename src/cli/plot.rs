@@ -32,7 +32,8 @@ Hamilton's equations are formed exactly, then integrated in floating point at a 
 by the classical Runge–Kutta method or (--method gauss) the symplectic Gauss–Legendre one,
 whose error in H stays bounded over long times: the chart illustrates, `check` proves. The
 table gives each curve first and last, its range, and its largest change from the first; H
-comes first, and its change tells how far the integration can be trusted. A complex function
+comes first, and its change tells how far the integration can be trusted (past a thousandth
+of its size, a warning says so). A complex function
 (K_1_1) is drawn as its real and imaginary parts. --section S keeps the states where S crosses
 zero upward, a Poincaré section, drawn as dots. Each --from is an orbit of its own.";
 
@@ -321,7 +322,42 @@ pub fn run(job: &PlotJob) -> anyhow::Result<bool> {
     } else {
         emit(&table)?;
     }
+    for (k, orbit) in orbits.iter().enumerate() {
+        let drift = energy_drift(&orbit.rows[0]);
+        if drift > ENERGY_DRIFT_WARNING {
+            let along = match orbits.len() {
+                1 => "the orbit".to_string(),
+                _ => format!("the orbit from starting point {}", k + 1),
+            };
+            let gauss = match args.method {
+                MethodArg::RungeKutta => " or use --method gauss",
+                MethodArg::Gauss => "",
+            };
+            emit_to_stderr(&format!(
+                "superint: warning: H moved by {:.2} % of its size along {along}: the \
+                 integration is not accurate at {} steps; raise --steps{gauss}\n",
+                100.0 * drift,
+                args.steps
+            ))?;
+        }
+    }
     Ok(true)
+}
+
+/// The largest relative move of H along an orbit past which `plot` warns: H is conserved, so
+/// its move is the integration's error.
+const ENERGY_DRIFT_WARNING: f64 = 1e-3;
+
+/// The largest change of H along an orbit as a fraction of its largest size (0 when H is 0
+/// all along).
+fn energy_drift(h: &Series) -> f64 {
+    let [.., change] = stats(h);
+    let size = h.values.iter().map(|v| v.abs()).fold(0.0, f64::max);
+    if size > 0.0 {
+        change / size
+    } else {
+        0.0
+    }
 }
 
 /// What the table says of one function: its first and last values (at `t = 0` and at the

@@ -850,3 +850,32 @@ fn cli_plot_gauss_keeps_the_energy_over_long_times() {
         "Gauss {gauss}, Runge–Kutta {rk}"
     );
 }
+
+/// `plot` warns when H moves by more than a thousandth of its size along an orbit (the
+/// integration's error, since H is conserved), and says nothing when the steps are fine
+/// enough. The rotor's orbit at 200 steps of 1/2 loses far more than that with RK4.
+#[test]
+fn cli_plot_warns_when_the_energy_drifts() {
+    let svg = scratch_file("drift.svg");
+    let svg = svg.to_str().unwrap();
+    let stderr = |steps: &str, method: &str| {
+        let rest = [
+            "--time", "100", "--steps", steps, "--method", method, "-o", svg,
+        ];
+        let o = plot_output("1", &[&["L"][..], &rest].concat());
+        assert_eq!(
+            o.status.code(),
+            Some(0),
+            "{}",
+            String::from_utf8_lossy(&o.stderr)
+        );
+        String::from_utf8(o.stderr).expect("UTF-8")
+    };
+    let coarse = stderr("200", "rk4");
+    assert!(
+        coarse.starts_with("superint: warning: H moved by ")
+            && coarse.contains("% of its size along the orbit: the integration is not accurate at 200 steps; raise --steps or use --method gauss"),
+        "{coarse}"
+    );
+    assert_eq!(stderr("10000", "rk4"), "");
+}
