@@ -133,12 +133,20 @@ fn is_limit_message(message: &str) -> bool {
 pub(crate) const LIMIT_HINT: &str = "raise the limit with --max-terms N or --max-degree D, or \
     with max_terms or max_degree under [limits] in the file, if the machine has the memory";
 
+/// The hint that goes with an unknown name: where each kind of name is declared.
+const UNKNOWN_NAME_HINT: &str = "a constant such as a mass is declared under [phase_space] \
+    parameters, a named function with [[function]], a family with [[family]] (used as K_2_3); \
+    see docs/system-files.md";
+
 /// An expression error at a span of a text, classified as a limit error when it is one.
 pub(crate) fn expression_error(source: &Source, text: &Text, e: &ParseError) -> FileError {
     let message = relocate_opener(source, text, e);
     if is_limit_message(&message) {
         text.error(source, ErrorKind::Limit, e.span, message)
             .with_hint(LIMIT_HINT)
+    } else if message.starts_with("unknown name") {
+        text.error(source, ErrorKind::Expression, e.span, message)
+            .with_hint(UNKNOWN_NAME_HINT)
     } else {
         text.error(source, ErrorKind::Expression, e.span, message)
     }
