@@ -42,6 +42,27 @@ impl LoadedSystem {
     fn section_title(&self) -> String {
         format!("{} ({})", self.name, self.source.origin)
     }
+
+    /// A report of one entry in one section on this file, computed since `start`.
+    fn one_entry(
+        &self,
+        title: String,
+        entry: Entry,
+        summary: SummaryKind,
+        start: Instant,
+    ) -> Report {
+        Report {
+            title,
+            subtitle: String::new(),
+            sections: vec![Section {
+                number: 1,
+                title: self.section_title(),
+                entries: vec![entry],
+            }],
+            summary,
+            seconds: start.elapsed().as_secs_f64(),
+        }
+    }
 }
 
 /// An error of the engine on a command-line computation (no place in a file).
@@ -111,20 +132,16 @@ pub fn bracket_report(
         caption = format!("at {}", condition.text);
     }
     let lhs = format!("{{{fname}, {gname}}}");
-    Ok(Report {
-        title: format!("{lhs} for the {}", file.name),
-        subtitle: String::new(),
-        sections: vec![Section {
-            number: 1,
-            title: file.section_title(),
-            entries: vec![Entry::Equations(Equations {
-                caption,
-                lines: vec![Equation::new(&lhs, value)],
-            })],
-        }],
-        summary: SummaryKind::Computed,
-        seconds: start.elapsed().as_secs_f64(),
-    })
+    let entry = Entry::Equations(Equations {
+        caption,
+        lines: vec![Equation::new(&lhs, value)],
+    });
+    Ok(file.one_entry(
+        format!("{lhs} for the {}", file.name),
+        entry,
+        SummaryKind::Computed,
+        start,
+    ))
 }
 
 /// Expressions of the file's system in normal form, each optionally under a condition such
@@ -150,20 +167,12 @@ pub fn expand_report(
         lines.push(Equation::new(&name, value));
     }
     let names: Vec<&str> = lines.iter().map(|line| line.lhs.as_str()).collect();
-    Ok(Report {
-        title: format!("{} in normal form, for the {}", names.join(", "), file.name),
-        subtitle: String::new(),
-        sections: vec![Section {
-            number: 1,
-            title: file.section_title(),
-            entries: vec![Entry::Equations(Equations {
-                caption: condition.map_or_else(String::new, |c| format!("at {}", c.text)),
-                lines,
-            })],
-        }],
-        summary: SummaryKind::Computed,
-        seconds: start.elapsed().as_secs_f64(),
-    })
+    let title = format!("{} in normal form, for the {}", names.join(", "), file.name);
+    let entry = Entry::Equations(Equations {
+        caption: condition.map_or_else(String::new, |c| format!("at {}", c.text)),
+        lines,
+    });
+    Ok(file.one_entry(title, entry, SummaryKind::Computed, start))
 }
 
 /// A condition given on the command line (`--when`), if any.
@@ -242,20 +251,16 @@ pub fn table_report(file: &LoadedSystem, names: &[String]) -> Result<Report, Fil
     }
     let refs: Vec<&str> = names.iter().map(String::as_str).collect();
     let table = BracketTable::compute(&system, &refs).map_err(|e| command_error(&e))?;
-    Ok(Report {
-        title: format!("Bracket table of the {}", file.name),
-        subtitle: String::new(),
-        sections: vec![Section {
-            number: 1,
-            title: file.section_title(),
-            entries: vec![Entry::Table(TableResult {
-                caption: format!("`{{A, B}}` for the {} (row `A`, column `B`)", file.name),
-                table,
-            })],
-        }],
-        summary: SummaryKind::Computed,
-        seconds: start.elapsed().as_secs_f64(),
-    })
+    let entry = Entry::Table(TableResult {
+        caption: format!("`{{A, B}}` for the {} (row `A`, column `B`)", file.name),
+        table,
+    });
+    Ok(file.one_entry(
+        format!("Bracket table of the {}", file.name),
+        entry,
+        SummaryKind::Computed,
+        start,
+    ))
 }
 
 /// The certified rank of the Jacobian of expressions of the file by its phase-space
@@ -306,15 +311,10 @@ pub fn rank_report(
         coordinates.join(", "),
         rank.expected
     );
-    Ok(Report {
-        title: format!("Functional independence in the {}", file.name),
-        subtitle: String::new(),
-        sections: vec![Section {
-            number: 1,
-            title: file.section_title(),
-            entries: vec![Entry::Rank(rank)],
-        }],
-        summary: SummaryKind::Check { files: 1 },
-        seconds: start.elapsed().as_secs_f64(),
-    })
+    Ok(file.one_entry(
+        format!("Functional independence in the {}", file.name),
+        Entry::Rank(rank),
+        SummaryKind::Check { files: 1 },
+        start,
+    ))
 }
