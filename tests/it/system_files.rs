@@ -315,6 +315,15 @@ fn bad_inputs() -> Vec<(&'static str, Vec<u8>, &'static str, Vec<&'static str>)>
             check.clone(),
         ),
         (
+            "condition that divides by zero",
+            base_with(
+                "claim = \"{A, H} = i*omega*A\"",
+                "when = \"M = 0\"\nclaim = \"{x, H} = p_x/M\"",
+            ),
+            "bad.toml:15:9: the condition sets M = 0, but the claim divides by M",
+            check.clone(),
+        ),
+        (
             "claim with an unclosed brace",
             base_with("{A, H} = i*omega*A", "{A, H = i*omega*A"),
             "bad.toml:14:10: this '{' is never closed",
