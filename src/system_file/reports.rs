@@ -122,20 +122,12 @@ pub fn bracket_report(
     let condition = command_condition(file, when)?;
     let (fname, fe) = file.expand(&f)?;
     let (gname, ge) = file.expand(&g)?;
-    let mut value = file
+    let value = file
         .system
         .bracket(&fe, &ge)
         .map_err(|e| command_error(&e))?;
-    let mut caption = String::new();
-    if let Some(condition) = condition {
-        value = condition.apply(&value).map_err(|e| command_error(&e))?;
-        caption = format!("at {}", condition.text);
-    }
     let lhs = format!("{{{fname}, {gname}}}");
-    let entry = Entry::Equations(Equations {
-        caption,
-        lines: vec![Equation::new(&lhs, value)],
-    });
+    let entry = equations_at(condition.as_ref(), vec![(lhs.clone(), value)])?;
     Ok(file.one_entry(
         format!("{lhs} for the {}", file.name),
         entry,
@@ -158,21 +150,36 @@ pub fn expand_report(
         .map(|e| file.argument(e))
         .collect::<Result<Vec<_>, _>>()?;
     let condition = command_condition(file, when)?;
-    let mut lines = Vec::with_capacity(arguments.len());
-    for argument in &arguments {
-        let (name, mut value) = file.expand(argument)?;
-        if let Some(condition) = &condition {
-            value = condition.apply(&value).map_err(|e| command_error(&e))?;
-        }
-        lines.push(Equation::new(&name, value));
-    }
-    let names: Vec<&str> = lines.iter().map(|line| line.lhs.as_str()).collect();
+    let lines = arguments
+        .iter()
+        .map(|argument| file.expand(argument))
+        .collect::<Result<Vec<_>, _>>()?;
+    let names: Vec<&str> = lines.iter().map(|(name, _)| name.as_str()).collect();
     let title = format!("{} in normal form, for the {}", names.join(", "), file.name);
-    let entry = Entry::Equations(Equations {
+    let entry = equations_at(condition.as_ref(), lines)?;
+    Ok(file.one_entry(title, entry, SummaryKind::Computed, start))
+}
+
+/// Displayed equations `lhs = value`, each value under the command line's condition if there
+/// is one, which the caption names.
+fn equations_at(
+    condition: Option<&Condition>,
+    lines: Vec<(String, Expr)>,
+) -> Result<Entry, FileError> {
+    let lines = lines
+        .into_iter()
+        .map(|(lhs, value)| {
+            let value = match condition {
+                Some(c) => c.apply(&value).map_err(|e| command_error(&e))?,
+                None => value,
+            };
+            Ok(Equation::new(&lhs, value))
+        })
+        .collect::<Result<_, FileError>>()?;
+    Ok(Entry::Equations(Equations {
         caption: condition.map_or_else(String::new, |c| format!("at {}", c.text)),
         lines,
-    });
-    Ok(file.one_entry(title, entry, SummaryKind::Computed, start))
+    }))
 }
 
 /// A condition given on the command line (`--when`), if any.
