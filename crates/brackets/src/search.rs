@@ -366,8 +366,8 @@ enum Slot {
 /// The search problem, with the parameters that are not kept symbolic at fixed values.
 struct Problem {
     vars: Vars,
+    /// The coordinates, momenta and angles of the space.
     variables: SpaceVariables,
-    angles: Vec<Var>,
     unknowns: Vec<Unknown>,
     /// Where each monomial `φ·e^{ik·θ}` of the space sits among the unknowns.
     slots: MonomialIndex<Slot>,
@@ -515,13 +515,12 @@ impl Problem {
         let variables = SpaceVariables {
             coordinates: coords,
             momenta,
-            angles: angles.clone(),
+            angles,
             left_out,
         };
         let mut problem = Problem {
             vars,
             variables,
-            angles,
             unknowns,
             slots,
             h,
@@ -598,7 +597,7 @@ impl Problem {
         let u = &self.unknowns[j];
         let mut plus = u.phase.clone();
         let mut minus = u.phase.clone();
-        for (v, k) in self.angles.iter().zip(&u.k) {
+        for (v, k) in self.variables.angles.iter().zip(&u.k) {
             plus[v.index()] += k;
             minus[v.index()] -= k;
         }
@@ -622,7 +621,7 @@ impl Problem {
     fn leading_exponents(&self, j: usize) -> Vec<i64> {
         let u = &self.unknowns[j];
         let mut e = u.phase.clone();
-        for (v, k) in self.angles.iter().zip(&u.k) {
+        for (v, k) in self.variables.angles.iter().zip(&u.k) {
             e[v.index()] += k;
         }
         e
@@ -656,7 +655,7 @@ impl Problem {
         let mut groups: Vec<(Vec<i64>, Terms)> = Vec::new();
         for t in f.terms() {
             let e = t.exponents();
-            let k: Vec<i64> = self.angles.iter().map(|v| e[v.index()]).collect();
+            let k: Vec<i64> = self.variables.angles.iter().map(|v| e[v.index()]).collect();
             match groups.iter_mut().find(|g| g.0 == k) {
                 Some(g) => g.1.push((t.coeff(), e)),
                 None => groups.push((k, vec![(t.coeff(), e)])),
@@ -945,7 +944,7 @@ pub fn search(system: &System, options: &SearchOptions) -> Result<SearchResult, 
             let image = image?;
             let mut col = Vec::new();
             for t in image.terms() {
-                if !canonical(problem.angles.iter().map(|v| t.exponent(*v))) {
+                if !canonical(problem.variables.angles.iter().map(|v| t.exponent(*v))) {
                     continue;
                 }
                 let c = t.coeff();
