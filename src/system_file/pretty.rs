@@ -172,6 +172,12 @@ impl LoadedSystem {
             }
             ExprKind::Call(f, _, args) => {
                 let args: Vec<String> = args.iter().map(|a| self.pretty(a)).collect();
+                // The paper's (and LaTeX's) real and imaginary parts are `Re` and `Im`.
+                let f = match f.as_str() {
+                    "re" => "Re",
+                    "im" => "Im",
+                    other => other,
+                };
                 let mut p = Printed::atom(format!("{f}({})", args.join(", ")));
                 p.first_long = true;
                 p.last_long = true;

@@ -40,35 +40,90 @@ pub(crate) fn instance_of(families: &[super::Family], name: &str) -> Option<(usi
     Some((k, index(m)?, index(n)?))
 }
 
-/// Rewrites `K_{2,3}` into `K_2_3` padded with spaces to the same length, for the family
-/// names given, so that every other span stays where it was.
-pub(crate) fn rewrite_braces(s: &str, families: &[super::Family]) -> String {
-    let mut out = s.to_string();
-    let mut search = 0;
-    while let Some(k) = out[search..].find("_{").map(|k| k + search) {
-        search = k + 2;
-        let head_start = out[..k]
+/// The family whose instances a malformed name was meant to be: `P_1`, `P_` (of `P_-1_2`)
+/// and `P_1_2_3` start as instances of `P` without being one.
+fn meant_family<'f>(families: &'f [super::Family], name: &str) -> Option<&'f super::Family> {
+    families.iter().find(|f| {
+        name.strip_prefix(f.name.as_str())
+            .is_some_and(|rest| rest.starts_with('_'))
+    })
+}
+
+/// What an instance of a family must look like, for a name or braces that are not one.
+fn malformed_instance_message(family: &super::Family, written: &str) -> String {
+    let [m, n] = &family.indices;
+    let f = &family.name;
+    format!(
+        "'{written}' is not an instance of the family {f}_{m}_{n}, which takes two indices, \
+         each a whole number 0, 1, 2, … of at most nine digits: write {f}_2_3 or {f}_{{2,3}} \
+         (in a family's value, with index names: {f}_{m}_{n})"
+    )
+}
+
+/// A family instance written with braces, `K_{2, 3}`: where it is and what the braces hold.
+struct BracedInstance<'f> {
+    family: &'f super::Family,
+    /// From the family's name to the closing brace, or to the end when it is not closed.
+    span: std::ops::Range<usize>,
+    /// The two indices, when the braces hold two whole numbers.
+    indices: Option<(&'f str, &'f str)>,
+}
+
+/// Every `K_{…}` in `s` whose `K` is one of `families`, left to right.
+fn braced_instances<'f>(
+    s: &'f str,
+    families: &'f [super::Family],
+) -> impl Iterator<Item = BracedInstance<'f>> {
+    s.match_indices("_{").filter_map(move |(k, _)| {
+        let head_start = s[..k]
             .char_indices()
             .rev()
             .take_while(|&(_, c)| c.is_alphanumeric() || c == '_')
             .last()
             .map_or(k, |(i, _)| i);
-        let head = &out[head_start..k];
-        if !families.iter().any(|f| f.name == head) {
-            continue;
+        let family = families.iter().find(|f| f.name == s[head_start..k])?;
+        let close = s[k..].find('}').map(|c| c + k);
+        let end = close.map_or(s.len(), |c| c + 1);
+        let inner = &s[k + 2..close.unwrap_or(end)];
+        let digits = |p: &str| !p.is_empty() && p.bytes().all(|b| b.is_ascii_digit());
+        let indices = close
+            .and_then(|_| inner.split_once(','))
+            .map(|(m, n)| (m.trim(), n.trim()))
+            .filter(|(m, n)| digits(m) && digits(n));
+        Some(BracedInstance {
+            family,
+            span: head_start..end,
+            indices,
+        })
+    })
+}
+
+/// The first `K_{…}` of a family `K` whose braces do not hold two whole numbers (`K_{1}`,
+/// `K_{m,2}`), with the message that says what they must hold.
+fn malformed_braces(s: &str, families: &[super::Family]) -> Option<(Span, String)> {
+    braced_instances(s, families)
+        .find(|b| b.indices.is_none())
+        .map(|b| {
+            let written = &s[b.span.clone()];
+            let message = if written.ends_with('}') {
+                malformed_instance_message(b.family, written)
+            } else {
+                format!("the braces of '{written}' are never closed")
+            };
+            (Span::new(b.span.start, b.span.end), message)
+        })
+}
+
+/// Rewrites `K_{2,3}` into `K_2_3` padded with spaces to the same length, for the family
+/// names given, so that every other span stays where it was.
+pub(crate) fn rewrite_braces(s: &str, families: &[super::Family]) -> String {
+    let mut out = s.to_string();
+    for b in braced_instances(s, families) {
+        if let Some((m, n)) = b.indices {
+            let replacement = format!("{}_{m}_{n}", b.family.name);
+            let width = b.span.len();
+            out.replace_range(b.span, &format!("{replacement:width$}"));
         }
-        let Some(close) = out[k..].find('}').map(|c| c + k) else {
-            continue;
-        };
-        let inner: Vec<&str> = out[k + 2..close].split(',').map(str::trim).collect();
-        let digits = |s: &str| !s.is_empty() && s.bytes().all(|b| b.is_ascii_digit());
-        if inner.len() != 2 || !inner.iter().all(|s| digits(s)) {
-            continue;
-        }
-        let replacement = format!("{head}_{}_{}", inner[0], inner[1]);
-        let width = close + 1 - head_start;
-        let padded = format!("{replacement:width$}");
-        out.replace_range(head_start..=close, &padded);
     }
     out
 }
@@ -220,7 +275,12 @@ impl<'a> Scope<'a> {
 
     /// Parses a text into a tree (family instances written `K_{2,3}` are accepted).
     pub(crate) fn tree(&self, source: &Source, text: &Text) -> Result<Tree, FileError> {
-        let rewritten = rewrite_braces(&text.value, &self.file.families[..self.families]);
+        let families = &self.file.families[..self.families];
+        // `P_{1}` does not parse, and `P_{m,2}` would be an unknown `P_`: the braces are the news.
+        if let Some((span, message)) = malformed_braces(&text.value, families) {
+            return Err(text.error(source, ErrorKind::Family, span, message));
+        }
+        let rewritten = rewrite_braces(&text.value, families);
         parse_expr(&rewritten).map_err(|e| expression_error(source, text, &e))
     }
 
@@ -263,6 +323,13 @@ impl<'a> Scope<'a> {
                         }
                         let e = self.expand(k, m, n, source, text.source_span(span))?;
                         self.made.borrow_mut().insert(name.clone(), e);
+                    } else if let Some(family) = meant_family(&self.file.families, name) {
+                        return Err(text.error(
+                            source,
+                            ErrorKind::Family,
+                            span,
+                            malformed_instance_message(family, name),
+                        ));
                     }
                 }
                 ExprKind::Name(name.clone())

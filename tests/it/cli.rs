@@ -535,7 +535,7 @@ fn cli_plot_shows_k_still_at_resonance_and_turning_off_it() {
         ];
         let table = changes(&run_plot(p_theta, &rest, 0));
         let labels: Vec<&str> = table.iter().map(|(l, _)| l.as_str()).collect();
-        assert_eq!(labels, ["H", "re(K_{1,1})", "im(K_{1,1})", "L"]);
+        assert_eq!(labels, ["H", "Re(K_{1,1})", "Im(K_{1,1})", "L"]);
         for (label, change) in &table {
             let moves = label.contains('K') && k_moves;
             assert_eq!(

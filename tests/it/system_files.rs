@@ -387,6 +387,34 @@ fn bad_inputs() -> Vec<(&'static str, Vec<u8>, &'static str, Vec<&'static str>)>
             vec!["bracket", "bad.toml", "A", "H + B"],
         ),
         (
+            "family instance with one index",
+            base_with(
+                "[[claim]]",
+                "[[family]]\nname = \"K\"\nvalue = \"A^m*x^n\"\n\n[[claim]]",
+            ),
+            "<command line>:1:5: 'K_1' is not an instance of the family K_m_n, which takes two \
+             indices, each a whole number",
+            vec!["bracket", "bad.toml", "A", "H + K_1"],
+        ),
+        (
+            "family instance with a negative index",
+            base_with(
+                "[[claim]]",
+                "[[family]]\nname = \"K\"\nvalue = \"A^m*x^n\"\n\n[[claim]]",
+            ),
+            "<command line>:1:1: 'K_{-1,2}' is not an instance of the family K_m_n",
+            vec!["expand", "bad.toml", "K_{-1,2}"],
+        ),
+        (
+            "family instance with unclosed braces",
+            base_with(
+                "[[claim]]",
+                "[[family]]\nname = \"K\"\nvalue = \"A^m*x^n\"\n\n[[claim]]",
+            ),
+            "<command line>:1:3: the braces of 'K_{1,2' are never closed",
+            vec!["expand", "bad.toml", "2*K_{1,2"],
+        ),
+        (
             "tower without a family",
             BASE.as_bytes().to_vec(),
             "bad.toml: the file declares no [[family]] with an eigenvalue",
@@ -642,6 +670,27 @@ fn expand_prints_the_normal_form() {
     );
     assert!(!off.contains("{P_{1,1}, H} = 0\n"), "{off}");
     assert!(off.contains("at p_θ = 2Iω:\n    {P_{1,1}, H} = "), "{off}");
+}
+
+/// `re(…)` and `im(…)` print as the paper's `Re` and `Im` (upright in LaTeX), and take the
+/// parts of `Z = (p_x − Mωy) + i(p_y + Mωx)`.
+#[test]
+fn real_and_imaginary_parts_print_as_re_and_im() {
+    let f = "systems/harmonic-rotor.toml";
+    let parts = "re(Z)*im(Z)";
+    let text = run(&["expand", f, parts, "--no-timings"], 0);
+    assert!(
+        text.contains("\n    Re(Z) Im(Z) = p_x p_y + Mωx p_x − Mωy p_y − M²ω²xy\n"),
+        "{text}"
+    );
+    let latex = run(
+        &["expand", f, parts, "--format", "latex", "--no-timings"],
+        0,
+    );
+    assert!(
+        latex.contains(r"\operatorname{Re}(Z) \operatorname{Im}(Z) &= p_{x} p_{y}"),
+        "{latex}"
+    );
 }
 
 /// A command reads all its arguments before it expands any: with a term limit that the first
