@@ -551,7 +551,7 @@ fn cli_plot_shows_k_still_at_resonance_and_turning_off_it() {
             }
         }
         let drawn = std::fs::read_to_string(&svg).expect("the chart was written");
-        assert!(drawn.starts_with("<svg") && drawn.contains("re(K_{1,1})"));
+        assert!(drawn.starts_with("<svg") && drawn.contains("Re(K_{1,1})"));
     }
 }
 
