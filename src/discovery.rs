@@ -651,10 +651,7 @@ pub fn parse_condition(
         ));
         subs.push((v, value));
     }
-    Ok(brackets::Condition {
-        text: shown.join(", "),
-        subs,
-    })
+    brackets::Condition::all(&shown.join(", "), subs).map_err(|e| e.to_string())
 }
 
 /// The parameter called `name`.

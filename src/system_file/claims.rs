@@ -259,13 +259,32 @@ pub(crate) fn parse_condition(
         usage,
     };
     let assignments = parse_assignments(file, source, pieces, &form, admit)?;
-    Ok(Condition {
-        text: assignments
-            .iter()
-            .map(|a| a.shown.as_str())
-            .collect::<Vec<_>>()
-            .join(", "),
-        subs: assignments.into_iter().map(|a| (a.var, a.value)).collect(),
+    let text = assignments
+        .iter()
+        .map(|a| a.shown.as_str())
+        .collect::<Vec<_>>()
+        .join(", ");
+    let subs = assignments
+        .iter()
+        .map(|a| (a.var, a.value.clone()))
+        .collect();
+    Condition::all(&text, subs).map_err(|e| {
+        // A circular condition is shown at the value of the variable it is about.
+        let at = match &e {
+            EngineError::CircularCondition { var, .. } => {
+                assignments.iter().find(|a| a.var == *var)
+            }
+            _ => None,
+        };
+        let rhs = &at.unwrap_or(&assignments[0]).rhs;
+        let start = rhs.value.len() - rhs.value.trim_start().len();
+        let end = rhs.value.trim_end().len();
+        rhs.error(
+            source,
+            ErrorKind::Condition,
+            Span::new(start, end),
+            e.to_string(),
+        )
     })
 }
 

@@ -276,6 +276,21 @@ fn bad_inputs() -> Vec<(&'static str, Vec<u8>, &'static str, Vec<&'static str>)>
             check.clone(),
         ),
         (
+            "condition that sets a variable in terms of itself",
+            base_with("claim = \"{A, H}", "when = \"M = 2*M\"\nclaim = \"{A, H}"),
+            "bad.toml:14:13: the condition sets M in terms of itself",
+            check.clone(),
+        ),
+        (
+            "circular condition",
+            base_with(
+                "claim = \"{A, H}",
+                "when = \"M = omega, omega = 2*M\"\nclaim = \"{A, H}",
+            ),
+            "bad.toml:14:13: the condition sets M in terms of itself",
+            check.clone(),
+        ),
+        (
             "claim without =",
             base_with("{A, H} = i*omega*A", "{A, H}"),
             "bad.toml:14:10: a claim reads `lhs = rhs`",
@@ -670,6 +685,94 @@ fn expand_prints_the_normal_form() {
     );
     assert!(!off.contains("{P_{1,1}, H} = 0\n"), "{off}");
     assert!(off.contains("at p_θ = 2Iω:\n    {P_{1,1}, H} = "), "{off}");
+}
+
+/// A condition whose values use the variables it sets is resolved before it applies: at
+/// `p_θ = Iω, ω = 1/2` (in either order) `K = Z e^{−iθ}` is conserved, and at
+/// `p_θ = 2Iω, ω = 1/2` it is not, with a residual in which ω is 1/2. They were refuted, and
+/// the residual kept ω, when the values were substituted once, all at the same time.
+#[test]
+fn chained_conditions_are_resolved() {
+    let dir = scratch("chained-conditions");
+    let file = r#"name = "rotor"
+hamiltonian = "(p_x^2 + p_y^2)/(2*M) + M*omega^2*(x^2 + y^2)/2 + p_theta^2/(2*I)"
+
+[phase_space]
+coordinates = ["x", "y"]
+angles = ["theta"]
+parameters = ["M", "omega", "I"]
+
+[[function]]
+name = "K"
+value = "(p_x + i*p_y + i*M*omega*(x + i*y))*exp(-i*theta)"
+
+[[claim]]
+id = "resonance"
+claim = "{K, H} = 0"
+when = "p_theta = I*omega, omega = 1/2"
+
+[[claim]]
+id = "resonance, the other order"
+claim = "{K, H} = 0"
+when = ["omega = 1/2", "p_theta = I*omega"]
+
+[[claim]]
+id = "off resonance"
+claim = "{K, H} = 0"
+when = "p_theta = 2*I*omega, omega = 1/2"
+expect = "refuted"
+
+[[claim]]
+id = "a chain to zero"
+claim = "x*M = x*I"
+when = "M = I, I = 0"
+"#;
+    std::fs::write(dir.join("chain.toml"), file).expect("write the file");
+    let o = superint_in(&dir, &["check", "chain.toml", "--format", "json"]);
+    assert_eq!(o.status.code(), Some(0), "{}", text(&o.stderr));
+    let v: Value = serde_json::from_str(&text(&o.stdout)).expect("JSON");
+    let claims = v["claims"].as_array().expect("claims");
+    let outcome = |id: &str| {
+        let c = claims.iter().find(|c| c["id"] == id).expect(id);
+        (
+            c["outcome"].as_str().unwrap().to_string(),
+            c.get("residual").cloned(),
+        )
+    };
+    assert_eq!(outcome("resonance").0, "proved");
+    assert_eq!(outcome("resonance, the other order").0, "proved");
+    assert_eq!(outcome("a chain to zero").0, "proved");
+    // {K, H} = i(ω − Ω)K = −(i/2)K at Ω = 2ω = 1: no ω left in the residual.
+    let (off, residual) = outcome("off resonance");
+    assert_eq!(off, "refuted");
+    let residual = residual.expect("a residual").to_string();
+    assert!(
+        !residual.contains("omega") && !residual.contains('ω'),
+        "{residual}"
+    );
+    // The search counts the integrals at the resolved point: the same space as `p_θ = I, ω = 1`.
+    let f = "systems/harmonic-rotor.toml";
+    let space = [
+        "--momenta-degree",
+        "2",
+        "--positions-degree",
+        "2",
+        "--trig-degree",
+        "1",
+    ];
+    let dimension = |when: &str| {
+        let mut args = vec!["search", f, "--when", when, "--no-timings"];
+        args.extend(space);
+        let out = run(&args, 0);
+        out.lines()
+            .find(|l| l.starts_with("Dimension of the space of integrals"))
+            .expect("the dimension")
+            .to_string()
+    };
+    assert_eq!(
+        dimension("p_theta = I*omega, omega = 1"),
+        dimension("p_theta = I, omega = 1")
+    );
 }
 
 /// `re(…)` and `im(…)` print as the paper's `Re` and `Im` (upright in LaTeX), and take the

@@ -10,21 +10,72 @@ use crate::error::EngineError;
 
 /// A condition on phase space, applied after the bracket is formed: a substitution such as the
 /// resonance `p_θ = mIω/n`.
+///
+/// Its values are resolved: none mentions a variable the condition sets, so that one
+/// simultaneous substitution applies it (`p_θ = Iω, ω = 1/2` substitutes `p_θ → I/2, ω → 1/2`).
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub struct Condition {
     /// How the condition reads (`p_θ = 2Iω`).
     pub text: String,
-    /// The substitution.
-    pub subs: Vec<(Var, Expr)>,
+    /// The substitution, resolved.
+    subs: Vec<(Var, Expr)>,
 }
 
 impl Condition {
-    /// `v = value`.
+    /// `v = value`, where `value` does not mention `v` (a value read from input goes through
+    /// [`Condition::all`], which says so when it does).
     pub fn new(text: &str, v: Var, value: Expr) -> Self {
+        debug_assert!(
+            !value.contains(v),
+            "a condition's value mentions its variable"
+        );
         Condition {
             text: text.to_string(),
             subs: vec![(v, value)],
         }
+    }
+
+    /// `v₁ = value₁, v₂ = value₂, …`, each variable set once, where a value may use the
+    /// variables set by the others (`p_θ = Iω, ω = 1/2`): the values are substituted into one
+    /// another until none mentions a variable the condition sets. A variable set in terms of
+    /// itself, directly (`x = 2x`) or through the others (`x = y, y = x`), is refused: such a
+    /// condition is an equation, not a substitution.
+    pub fn all(text: &str, subs: Vec<(Var, Expr)>) -> Result<Self, EngineError> {
+        let mut subs = subs;
+        if let Some(k) = (1..subs.len()).find(|&k| subs[..k].iter().any(|s| s.0 == subs[k].0)) {
+            let name = subs[k].1.vars().variable(subs[k].0).unicode().to_string();
+            return Err(EngineError::Invalid(format!(
+                "the condition sets {name} twice"
+            )));
+        }
+        let sets = |e: &Expr, subs: &[(Var, Expr)]| subs.iter().any(|(v, _)| e.contains(*v));
+        // A chain of k substitutions resolves in k rounds; what is left after as many rounds
+        // as there are substitutions goes round a cycle.
+        for _ in 0..subs.len() {
+            if let Some((v, _)) = subs.iter().find(|(v, e)| e.contains(*v)) {
+                return Err(circular(*v, &subs));
+            }
+            if !subs.iter().any(|(_, e)| sets(e, &subs)) {
+                return Ok(Condition {
+                    text: text.to_string(),
+                    subs,
+                });
+            }
+            subs = subs
+                .iter()
+                .map(|(v, e)| Ok((*v, e.subst_many(&subs)?)))
+                .collect::<Result<_, EngineError>>()?;
+        }
+        let (v, _) = subs
+            .iter()
+            .find(|(_, e)| sets(e, &subs))
+            .expect("a value still mentions a variable the condition sets");
+        Err(circular(*v, &subs))
+    }
+
+    /// The substitution `(variable, value)`, resolved: no value mentions a variable set here.
+    pub fn subs(&self) -> &[(Var, Expr)] {
+        &self.subs
     }
 
     /// Applies the substitution.
@@ -46,6 +97,19 @@ impl Condition {
             }
         }
         Ok(())
+    }
+}
+
+/// The error for a condition that sets `v` in terms of itself.
+fn circular(v: Var, subs: &[(Var, Expr)]) -> EngineError {
+    let vars = subs[0].1.vars();
+    let name = vars.variable(v).unicode().to_string();
+    EngineError::CircularCondition {
+        var: v,
+        message: format!(
+            "the condition sets {name} in terms of itself (directly or through the other \
+             variables it sets): a condition is a substitution, so give {name} a value free of them"
+        ),
     }
 }
 

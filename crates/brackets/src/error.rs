@@ -22,6 +22,14 @@ pub enum EngineError {
     /// A name that the system does not define.
     #[error("unknown function '{0}'")]
     UnknownName(String),
+    /// A condition that sets a variable in terms of itself (`x = y, y = x`).
+    #[error("{message}")]
+    CircularCondition {
+        /// The variable.
+        var: trigpoly::Var,
+        /// What is wrong, in words.
+        message: String,
+    },
     /// A phase space or system that is not well formed.
     #[error("{0}")]
     Invalid(String),

@@ -152,7 +152,7 @@ impl Scaling {
             c.push(&e, -1);
         }
         if let Some(k) = condition {
-            for (v, value) in &k.subs {
+            for (v, value) in k.subs() {
                 for t in value.terms() {
                     c.push(&minus(&t.exponents(), &unit(n, v.index(), 1)), 0);
                 }

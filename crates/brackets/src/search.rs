@@ -792,11 +792,11 @@ fn parameter_values(
     let vars = system.vars();
     let mut exprs = vec![system.hamiltonian().clone()];
     if let Some(c) = condition {
-        exprs.extend(c.subs.iter().map(|s| s.1.clone()));
+        exprs.extend(c.subs().iter().map(|s| s.1.clone()));
     }
     let mut out: Vec<(Var, Rational)> = Vec::new();
     for v in vars.vars() {
-        let set_by_condition = condition.is_some_and(|c| c.subs.iter().any(|s| s.0 == v));
+        let set_by_condition = condition.is_some_and(|c| c.subs().iter().any(|s| s.0 == v));
         if vars.variable(v).kind() != VarKind::Parameter
             || symbolic.contains(&v)
             || set_by_condition
@@ -820,7 +820,7 @@ fn fixed_problem(
     let h = fix_parameters(system.hamiltonian(), parameters)?;
     let condition = match &options.condition {
         Some(c) => Some(
-            c.subs
+            c.subs()
                 .iter()
                 .map(|(v, e)| Ok((*v, fix_parameters(e, parameters)?)))
                 .collect::<Result<Vec<_>, EngineError>>()?,
@@ -905,7 +905,7 @@ pub fn search(system: &System, options: &SearchOptions) -> Result<SearchResult, 
         ));
     }
     if let Some(c) = &options.condition {
-        if let Some((v, _)) = c.subs.iter().find(|(_, value)| !value.is_real()) {
+        if let Some((v, _)) = c.subs().iter().find(|(_, value)| !value.is_real()) {
             return Err(EngineError::Invalid(format!(
                 "the search needs a real condition, and the value of {} is not real",
                 vars.variable(*v).name()
@@ -915,7 +915,7 @@ pub fn search(system: &System, options: &SearchOptions) -> Result<SearchResult, 
     // A parameter the condition sets takes its value from the condition (after the bracket,
     // like a resonance): fixing it first would search at another value.
     if let Some(c) = &options.condition {
-        for (v, _) in &c.subs {
+        for (v, _) in c.subs() {
             let name = vars.variable(*v).name();
             if options.fixed.iter().any(|f| f.0 == *v) || options.symbolic.contains(v) {
                 return Err(EngineError::Invalid(format!(

@@ -152,7 +152,7 @@ impl System {
     pub fn flow_when(&self, f: &Expr, condition: &Condition) -> Result<Expr, EngineError> {
         if self.dh.len() == self.space.pairs().len() {
             self.space
-                .bracket_with_gradient_at(f, &self.dh, &condition.subs)
+                .bracket_with_gradient_at(f, &self.dh, condition.subs())
         } else {
             condition.apply(&self.flow(f)?)
         }

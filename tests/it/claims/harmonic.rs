@@ -100,10 +100,8 @@ impl Trajectory {
     /// The condition `t = 0`, i.e. `φ = 0` (`e^{iφ} = 1`) and `t = 0`.
     fn at_start(&self) -> Condition {
         let vars = self.sys.vars();
-        Condition {
-            text: "t = 0".into(),
-            subs: vec![(self.phi, Expr::one(vars)), (self.t, Expr::zero(vars))],
-        }
+        let subs = vec![(self.phi, Expr::one(vars)), (self.t, Expr::zero(vars))];
+        Condition::all("t = 0", subs).expect("values free of φ and t")
     }
 }
 
