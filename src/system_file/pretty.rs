@@ -83,6 +83,12 @@ impl LoadedSystem {
         self.print(tree).text
     }
 
+    /// An expression tree in the paper's notation as the left factor of a product: a sum or a
+    /// quotient in parentheses (`(iωm − 3iωn) W_{m,n}`).
+    pub(crate) fn pretty_factor(&self, tree: &Tree) -> String {
+        self.print(tree).wrapped(PRODUCT).text
+    }
+
     fn print(&self, tree: &Tree) -> Printed {
         match &tree.kind {
             ExprKind::Integer(n) => Printed::atom(n.to_string()),

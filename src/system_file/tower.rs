@@ -3,8 +3,10 @@
 //! family is a product of powers `A^m B^n` (with `exp(c·n·θ)` read as `exp(c·θ)^n`).
 //!
 //! The proof's steps are computed: `{A, H} = λ(1, 0) A`, `{B, H} = λ(0, 1) B`, the derivation
-//! property on `A, B`, and that `λ` is affine in `m, n` with `λ(0, 0) = 0` (its degree in the
-//! indices is read from its expression, its value at `(0, 0)` computed). The lemma then gives
+//! property on `A, B`, and that `λ(m, n) = mλ(1, 0) + nλ(0, 1)` (a bound on its degree in the
+//! indices read from its expression, and the identity checked exactly on a grid of that size:
+//! a polynomial of degree at most `d` in each index that vanishes on `0 ≤ m, n ≤ d` is zero).
+//! The lemma then gives
 //! `{A^m B^n, H} = (mλ(1, 0) + nλ(0, 1)) A^m B^n = λ(m, n) A^m B^n`.
 
 use std::time::Instant;
@@ -19,6 +21,10 @@ use super::LoadedSystem;
 use crate::report::{
     ClaimResult, Entry, Fact, ProofResult, Report, Section, SummaryKind, TowerResult,
 };
+
+/// The largest degree in the indices of an eigenvalue that the all-`m, n` proof compares on
+/// a grid (`(d + 1)²` evaluations).
+const MAX_EIGENVALUE_DEGREE: u32 = 32;
 
 /// Whether a tree uses an index, as a name or inside the name of a family instance.
 fn uses(tree: &Tree, index: &str) -> bool {
@@ -80,7 +86,8 @@ fn product_uses(tree: &Tree, index: &str) -> Option<usize> {
     }
 }
 
-/// The degree of a tree in the indices, if it is a polynomial in them that the syntax shows.
+/// A bound on the total degree of a tree in the indices, if it is a polynomial in them that
+/// the syntax shows (`(m − 3n)^2` has degree at most 2; `m·n − m·n` is bounded by 2, too).
 fn degree(tree: &Tree, indices: &[String; 2]) -> Option<u32> {
     let free = |t: &Tree| !indices.iter().any(|i| uses(t, i));
     match &tree.kind {
@@ -91,8 +98,12 @@ fn degree(tree: &Tree, indices: &[String; 2]) -> Option<u32> {
         ExprKind::Add(a, b) | ExprKind::Sub(a, b) => {
             Some(degree(a, indices)?.max(degree(b, indices)?))
         }
-        ExprKind::Mul(a, b) => Some(degree(a, indices)? + degree(b, indices)?),
+        ExprKind::Mul(a, b) => degree(a, indices)?.checked_add(degree(b, indices)?),
         ExprKind::Div(a, b) => (degree(b, indices)? == 0).then_some(degree(a, indices)?),
+        ExprKind::Pow(a, e) if !free(a) => match &e.kind {
+            ExprKind::Integer(k) => degree(a, indices)?.checked_mul(u32::try_from(k).ok()?),
+            _ => None,
+        },
         ExprKind::Pow(..) | ExprKind::Call(..) | ExprKind::Bracket(..) => free(tree).then_some(0),
     }
 }
@@ -151,6 +162,48 @@ impl LoadedSystem {
         self.family_text_at(k, text, m, n)
     }
 
+    /// The fact that `λ(m, n) = m λ(1, 0) + n λ(0, 1)` for all `m, n`, where `λ` is a
+    /// polynomial of total degree at most `d` in the indices: so is the difference, which is
+    /// then zero when it vanishes on the grid `0 ≤ m, n ≤ d` (a polynomial of degree at most
+    /// `d` in each variable is determined by its values there), so the grid decides it exactly.
+    fn eigenvalue_is_linear(&self, k: usize, d: u32, shown: &str) -> Result<Fact, FileError> {
+        let [m, n] = &self.families[k].indices;
+        let at = |e: trigpoly::AlgebraError| {
+            engine_error(&self.source, self.families[k].span.clone(), &e.into())
+        };
+        let (la, lb) = (self.eigenvalue_at(k, 1, 0)?, self.eigenvalue_at(k, 0, 1)?);
+        let top = i64::from(d);
+        let mut differs = None;
+        'grid: for i in 0..=top {
+            for j in 0..=top {
+                let linear = la
+                    .scale(&i.into())
+                    .checked_add(&lb.scale(&j.into()))
+                    .map_err(at)?;
+                if self.eigenvalue_at(k, i, j)? != linear {
+                    differs = Some((i, j));
+                    break 'grid;
+                }
+            }
+        }
+        let points = (top + 1) * (top + 1);
+        let statement = match differs {
+            None => format!(
+                "λ({m}, {n}) = {shown} equals {m}λ(1, 0) + {n}λ(0, 1): both are polynomials of \
+                 degree at most {d} in {m}, {n}, and they agree at the {points} points \
+                 0 ≤ {m}, {n} ≤ {d}"
+            ),
+            Some((i, j)) => format!(
+                "λ({m}, {n}) = {shown} equals {m}λ(1, 0) + {n}λ(0, 1): they differ at \
+                 ({m}, {n}) = ({i}, {j})"
+            ),
+        };
+        Ok(Fact {
+            statement,
+            holds: differs.is_none(),
+        })
+    }
+
     /// The all-`m, n` proof for family `k`, or why there is none.
     fn family_proof(&self, k: usize, id: &str, statement: &str) -> Result<Entry, FileError> {
         let family = &self.families[k];
@@ -190,17 +243,17 @@ impl LoadedSystem {
             bases.push(base);
         }
         let eigen_tree = scope.tree(source, family.eigenvalue.as_ref().expect("checked"))?;
-        let affine = degree(&eigen_tree, &family.indices).is_some_and(|d| d <= 1);
-        let at_zero = self.eigenvalue_at(k, 0, 0)?.is_zero();
         let [m, n] = &family.indices;
-        facts.push(Fact {
-            statement: format!(
-                "λ({m}, {n}) = {} is affine in {m}, {n} (read from its expression) and \
-                 λ(0, 0) = 0",
-                self.pretty(&eigen_tree)
-            ),
-            holds: affine && at_zero,
-        });
+        let shown = self.pretty(&eigen_tree);
+        let Some(d) = degree(&eigen_tree, &family.indices).filter(|&d| d <= MAX_EIGENVALUE_DEGREE)
+        else {
+            return Ok(Entry::Text(format!(
+                "No proof for all {m}, {n}: λ({m}, {n}) = {shown} is not a polynomial in {m}, {n} \
+                 of degree at most {MAX_EIGENVALUE_DEGREE} as written, so it cannot be compared \
+                 with {m}λ(1, 0) + {n}λ(0, 1) everywhere; the bounded check above is what holds."
+            )));
+        };
+        facts.push(self.eigenvalue_is_linear(k, d.max(1), &shown)?);
         // {AB, H} = A{B, H} + B{A, H}
         let e = |r: Result<Expr, trigpoly::AlgebraError>| r.map_err(|e| at(&e.into()));
         let ab = e(bases[0].checked_mul(&bases[1]))?;
@@ -220,8 +273,7 @@ impl LoadedSystem {
             lemma: format!(
                 "the bracket is a derivation in each argument, so {{A, H}} = λ_A A and \
                  {{B, H}} = λ_B B give {{A^{m} B^{n}, H}} = ({m}λ_A + {n}λ_B) A^{m} B^{n} for all \
-                 {m}, {n} ≥ 0; with λ_A = λ(1, 0), λ_B = λ(0, 1) and λ affine with λ(0, 0) = 0, \
-                 {m}λ_A + {n}λ_B = λ({m}, {n})"
+                 {m}, {n} ≥ 0, and {m}λ_A + {n}λ_B = {m}λ(1, 0) + {n}λ(0, 1) = λ({m}, {n})"
             ),
             leibniz_check,
             conclusion: statement.to_string(),
@@ -280,7 +332,8 @@ pub fn family_tower_report(
     file.eigenvalue_at(k, 1, 1)?;
     let scope = Scope::new(file, k);
     let value = file.pretty(&scope.tree(&file.source, &f.value)?);
-    let eigen = file.pretty(&scope.tree(&file.source, f.eigenvalue.as_ref().expect("checked"))?);
+    let eigen_tree = scope.tree(&file.source, f.eigenvalue.as_ref().expect("checked"))?;
+    let eigen = file.pretty_factor(&eigen_tree);
     let [m, n] = &f.indices;
     let kmn = format!("{}_{{{m},{n}}}", f.display);
     let at = |e: &brackets::EngineError| engine_error(&file.source, f.span.clone(), e);

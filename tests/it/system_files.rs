@@ -1006,6 +1006,51 @@ fn tower_of_a_file_family_with_its_proof() {
     assert!(out.is_empty());
 }
 
+/// The all-`m, n` proof decides `λ(m, n) = mλ(1, 0) + nλ(0, 1)` from the eigenvalue's values on
+/// a grid as large as its degree, not from how it is written: `iω(m − n)^1 + mn − mn` is
+/// proved (it was refuted as "not affine"), a term `m(m − 1)(m − 2)(m − 3)` that the bounded
+/// check to 3 cannot see is refuted at `(4, 0)`, and `1^n` gives no proof, not a refutation.
+#[test]
+fn tower_decides_the_eigenvalue_by_its_values() {
+    let dir = scratch("tower-eigenvalue");
+    let tower = |eigenvalue: &str, code: i32| {
+        let family = format!(
+            "[[family]]\nname = \"W\"\nvalue = \"A^m*conj(A)^n\"\n\
+             eigenvalue = \"{eigenvalue}\"\n\n[[claim]]"
+        );
+        std::fs::write(dir.join("w.toml"), BASE.replacen("[[claim]]", &family, 1)).expect("write");
+        let args = ["tower", "--system", "w.toml", "--max", "3", "--no-timings"];
+        let o = superint_in(&dir, &args);
+        assert_eq!(
+            o.status.code(),
+            Some(code),
+            "{eigenvalue}: {}",
+            text(&o.stderr)
+        );
+        let out = text(&o.stdout);
+        assert!(out.contains("[W-tower proved]"), "{out}");
+        out
+    };
+    let out = tower("i*omega*(m - n)^1 + m*n - m*n", 0);
+    assert!(out.contains("[W-all proved]"), "{out}");
+    assert!(
+        out.contains(
+            "both are polynomials of degree at most 2 in m, n, and they agree at the 9 points"
+        ),
+        "{out}"
+    );
+    assert!(
+        out.contains("{W_{m,n}, H} = (iω(m − n)¹ + mn − mn) W_{m,n} for all m, n ≥ 0"),
+        "{out}"
+    );
+    let out = tower("i*omega*(m - n) + m*(m - 1)*(m - 2)*(m - 3)", 1);
+    assert!(out.contains("[W-all REFUTED]"), "{out}");
+    assert!(out.contains("they differ at (m, n) = (4, 0)"), "{out}");
+    let out = tower("i*omega*(m - n)*1^n", 0);
+    assert!(out.contains("No proof for all m, n"), "{out}");
+    assert!(!out.contains("W-all"), "{out}");
+}
+
 #[test]
 fn every_new_help_shows_an_example() {
     for cmd in ["check", "bracket", "expand", "table", "rank", "tower"] {
