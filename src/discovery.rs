@@ -188,13 +188,23 @@ fn proved_for_every(names: &str, fixed: &str) -> String {
     format!("proved for every {names}, at {fixed}")
 }
 
+/// Where a result holds: under the condition `when`, and also at the `fixed` parameter values
+/// when it was not lifted back to the parameters.
+fn held_at(when: &Option<String>, fixed: &str, unlifted: bool) -> Option<String> {
+    match (when, unlifted) {
+        (Some(when), true) => Some(format!("{when}, {fixed}")),
+        (None, true) => Some(fixed.to_string()),
+        (when, false) => when.clone(),
+    }
+}
+
 /// What a proof covers, when it is not every value of every parameter: `fixed` is the text
 /// of the fixed values, `symbolic` the names of the parameters kept symbolic (if any).
 fn proof_note(f: &Integral, fixed: &str, symbolic: Option<&str>) -> Option<String> {
     match (&f.symbolic, f.proved_fixed, symbolic) {
         (Some(_), _, _) => None,
         (None, true, Some(names)) => Some(proved_for_every(names, fixed)),
-        (None, true, None) => Some(format!("proved at {fixed} only: no symbolic lift")),
+        (None, true, None) => Some("not lifted back to the parameters (no symbolic lift)".into()),
         (None, false, _) => Some("not proved".into()),
     }
 }
@@ -361,7 +371,11 @@ pub fn search_report(
             f.proved_fixed,
             proof_note(f, &fixed, symbolic.as_deref()),
         );
-        c.condition = cond.clone();
+        c.condition = held_at(
+            &cond,
+            &fixed,
+            f.symbolic.is_none() && !r.parameters.is_empty(),
+        );
         entries.push(Entry::Claim(c));
     }
     let rest: Vec<&Integral> = (0..r.basis.len())
@@ -449,30 +463,52 @@ pub fn closure_report(
     let c = closure_of(system, generators, options)?;
     let cond = c.condition.clone();
     let fixed = parameter_text(system.vars(), &c.parameters);
+    // A result that could not be lifted back to the parameters holds at the fixed values only,
+    // and says so in its condition.
+    let unlifted = |symbolic: bool| !symbolic && !c.parameters.is_empty();
     let note = |symbolic: bool| {
-        (!symbolic && !c.parameters.is_empty())
-            .then(|| format!("proved at {fixed} only: no symbolic lift"))
+        unlifted(symbolic).then(|| "not lifted back to the parameters (no symbolic lift)".into())
     };
+    let condition = |symbolic: bool| held_at(&cond, &fixed, unlifted(symbolic));
+    let results: Vec<bool> = c
+        .brackets
+        .iter()
+        .enumerate()
+        .flat_map(|(a, row)| row.iter().skip(a + 1))
+        .filter_map(|b| match b {
+            Bracket::Polynomial { symbolic, .. } => Some(*symbolic),
+            Bracket::Outside { .. } => None,
+        })
+        .chain(c.relations.iter().map(|r| r.symbolic))
+        .collect();
+    let stuck = results.iter().filter(|&&s| unlifted(s)).count();
     let gens = c.display.join(", ");
+    let lift = match (c.parameters.is_empty(), stuck) {
+        (true, _) => String::new(),
+        (false, 0) => format!(
+            " at `{fixed}`, the coefficients then lifted back to the parameters by homogeneity"
+        ),
+        (false, k) => format!(
+            " at `{fixed}`, the coefficients then lifted back to the parameters by homogeneity \
+             where the weights allow: {k} of the {} brackets and relations could not be lifted, \
+             and hold at `{fixed}` only (so does the table)",
+            results.len()
+        ),
+    };
     let mut entries = vec![Entry::Text(format!(
         "Every bracket `{{G_a, G_b}}` of the generators `{gens}` written as a polynomial of \
          degree `≤ {}` in them, by exact linear algebra on the {} monomials (their span has \
-         dimension {}){}; each expansion checked by the engine.",
-        c.degree,
-        c.monomials,
-        c.rank,
-        if c.parameters.is_empty() {
-            String::new()
-        } else {
-            format!(
-                " at `{fixed}`, the coefficients then lifted back to the parameters by \
-                 homogeneity"
-            )
-        }
+         dimension {}){lift}; each expansion checked by the engine.",
+        c.degree, c.monomials, c.rank,
     ))];
     let when = cond.clone().map(|c| format!(" at {c}")).unwrap_or_default();
+    let table_at = match (stuck, &cond) {
+        (0, _) => when.clone(),
+        (_, Some(c)) => format!(" at {c}, {fixed}"),
+        (_, None) => format!(" at {fixed}"),
+    };
     entries.push(Entry::Table(TableResult {
-        caption: format!("{{A, B}} for the {name}{when}"),
+        caption: format!("{{A, B}} for the {name}{table_at}"),
         table: c.table(),
     }));
     let outside = c.outside();
@@ -494,14 +530,16 @@ pub fn closure_report(
         )));
     }
     let r = c.names.len();
+    let mut shown = 0;
     for a in 0..r {
         for b in a + 1..r {
             if let Bracket::Polynomial { poly, symbolic } = &c.brackets[a][b] {
                 if poly.is_zero() {
                     continue;
                 }
+                shown += 1;
                 let mut claim = ClaimResult::derived(
-                    "bracket",
+                    &format!("B{shown}"),
                     &format!(
                         "{{{}, {}}} = {}",
                         c.display[a],
@@ -511,7 +549,7 @@ pub fn closure_report(
                     true,
                     note(*symbolic),
                 );
-                claim.condition = cond.clone();
+                claim.condition = condition(*symbolic);
                 entries.push(Entry::Claim(claim));
             }
         }
@@ -536,7 +574,7 @@ pub fn closure_report(
             true,
             note(rel.symbolic),
         );
-        claim.condition = cond.clone();
+        claim.condition = condition(rel.symbolic);
         entries.push(Entry::Claim(claim));
     }
     sections.push(Section {

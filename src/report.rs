@@ -305,14 +305,22 @@ impl Report {
     /// Every checked claim, in order: plain claims and those settled by tables, proofs, towers
     /// and ranks.
     pub fn claims(&self) -> Vec<&ClaimResult> {
+        self.claims_by_section()
+            .into_iter()
+            .map(|(_, c)| c)
+            .collect()
+    }
+
+    /// Every checked claim, in order, with the number of its section.
+    fn claims_by_section(&self) -> Vec<(u32, &ClaimResult)> {
         let mut out = Vec::new();
         for s in &self.sections {
             for e in &s.entries {
                 match e {
-                    Entry::Claim(c) => out.push(c),
-                    Entry::Proof(p) => out.extend(p.claims.iter()),
-                    Entry::Tower(t) => out.push(&t.claim),
-                    Entry::Rank(r) => out.push(&r.claim),
+                    Entry::Claim(c) => out.push((s.number, c)),
+                    Entry::Proof(p) => out.extend(p.claims.iter().map(|c| (s.number, c))),
+                    Entry::Tower(t) => out.push((s.number, &t.claim)),
+                    Entry::Rank(r) => out.push((s.number, &r.claim)),
                     _ => {}
                 }
             }
@@ -321,16 +329,22 @@ impl Report {
     }
 
     /// The claim ids in order of first appearance, each with whether all its checks were
-    /// proved.
+    /// proved. The paper's ids (`C12`) gather checks across the report; the ids of a check of
+    /// system files are their files' own, so the same id in two files is two claims.
     pub fn claim_ids(&self) -> Vec<(String, bool)> {
-        let mut out: Vec<(String, bool)> = Vec::new();
-        for c in self.claims() {
-            match out.iter_mut().find(|(id, _)| *id == c.id) {
-                Some((_, ok)) => *ok &= c.proved,
-                None => out.push((c.id.clone(), c.proved)),
+        let per_file = matches!(self.summary, SummaryKind::Check { .. });
+        let mut out: Vec<(u32, String, bool)> = Vec::new();
+        for (section, c) in self.claims_by_section() {
+            let section = if per_file { section } else { 0 };
+            match out
+                .iter_mut()
+                .find(|(s, id, _)| *s == section && *id == c.id)
+            {
+                Some((_, _, ok)) => *ok &= c.proved,
+                None => out.push((section, c.id.clone(), c.proved)),
             }
         }
-        out
+        out.into_iter().map(|(_, id, ok)| (id, ok)).collect()
     }
 
     /// Whether every check was proved.
@@ -388,12 +402,16 @@ impl Report {
             };
         }
         if let SummaryKind::Check { files } = self.summary {
-            let claims = self.claims();
-            let proved = claims.iter().filter(|c| c.proved).count();
-            let unexpected: Vec<&str> = claims
+            let claims = self.claims_by_section();
+            let proved = claims.iter().filter(|(_, c)| c.proved).count();
+            // With several files, an id says where it is: `main (section 2)`.
+            let unexpected: Vec<String> = claims
                 .iter()
-                .filter(|c| !c.meets_expectation())
-                .map(|c| c.id.as_str())
+                .filter(|(_, c)| !c.meets_expectation())
+                .map(|(s, c)| match files {
+                    1 => c.id.clone(),
+                    _ => format!("{} (section {s})", c.id),
+                })
                 .collect();
             let verdict = if unexpected.is_empty() {
                 "all as expected".to_string()

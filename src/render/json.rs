@@ -4,7 +4,7 @@
 //! {
 //!   "schema": "superint-report/1",
 //!   "title": string, "subtitle": string,
-//!   "summary": { "claims": int (distinct ids), "proved": int, "refuted": int,
+//!   "summary": { "claims": int (distinct ids, a file's own in a check), "proved": int, "refuted": int,
 //!                "checks": int, "all_proved": bool,
 //!                "as_expected": int (checks that met their expectation),
 //!                "all_as_expected": bool, "seconds": number | null },

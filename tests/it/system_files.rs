@@ -1059,3 +1059,37 @@ fn every_new_help_shows_an_example() {
         assert!(out.contains("--max-terms"), "{cmd}");
     }
 }
+
+/// Ids are a file's own: the same id in two files is two claims, in the text's summary and in
+/// the JSON's (which counted one, refuted, and lost the proved one), and the claim that did
+/// not meet its expectation is named with its section.
+#[test]
+fn the_same_id_in_two_files_is_two_claims() {
+    let dir = scratch("id-in-two-files");
+    std::fs::write(
+        dir.join("one.toml"),
+        BASE.replace("id = \"ladder\"", "id = \"main\""),
+    )
+    .expect("write");
+    let wrong = BASE
+        .replace("id = \"ladder\"", "id = \"main\"")
+        .replace("{A, H} = i*omega*A", "{A, H} = -i*omega*A");
+    std::fs::write(dir.join("two.toml"), wrong).expect("write");
+    let o = superint_in(&dir, &["check", "one.toml", "two.toml", "--no-timings"]);
+    assert_eq!(o.status.code(), Some(1), "{}", text(&o.stderr));
+    let out = text(&o.stdout);
+    assert!(
+        out.contains(
+            "2 claims in 2 files: 1 proved, 1 refuted; 1 NOT as expected: main (section 2)"
+        ),
+        "{out}"
+    );
+    let o = superint_in(&dir, &["check", "one.toml", "two.toml", "--format", "json"]);
+    let v: Value = serde_json::from_slice(&o.stdout).expect("JSON");
+    let summary = &v["summary"];
+    assert_eq!(
+        (&summary["claims"], &summary["proved"], &summary["refuted"]),
+        (&Value::from(2), &Value::from(1), &Value::from(1)),
+        "{summary}"
+    );
+}

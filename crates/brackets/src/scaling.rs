@@ -12,7 +12,7 @@
 use std::collections::hash_map::Entry;
 
 use rustc_hash::FxHashMap;
-use trigpoly::{Expr, GaussianRational, Rational, Var, VarKind, Vars};
+use trigpoly::{Expr, GaussianRational, Rational, Var, Vars};
 
 use crate::claim::Condition;
 use crate::error::EngineError;
@@ -94,8 +94,9 @@ fn minus(a: &[i64], b: &[i64]) -> Vec<i64> {
 impl Scaling {
     /// The weights under which the flow `F ↦ {F, H}` (after the condition) maps homogeneous
     /// functions of the planar variables and the angles to homogeneous ones: for each canonical
-    /// pair `(q, p)`, every term of `∂H/∂p` has weight `δ + w(q)` and, for a planar pair, every
-    /// term of `∂H/∂q` has weight `δ + w(p)`; angles have weight 0.
+    /// pair `(q, p)`, every term of `∂H/∂p` has weight `δ + w(q)` and every term of `∂H/∂q`
+    /// has weight `δ + w(p)`; angles have weight 0 (so `∂/∂θ` keeps a term's weight, and a
+    /// potential `−g cos θ` gives `g` the weight `δ + w(p_θ)`).
     pub fn of_flow(
         space: &PhaseSpace,
         h: &Expr,
@@ -114,16 +115,13 @@ impl Scaling {
             }
         };
         for pair in space.pairs() {
-            let angle = vars.variable(pair.q).kind() == VarKind::Angle;
             let dp = cond(h.derivative(pair.p)?)?;
             for t in dp.terms() {
                 c.push(&minus(&t.exponents(), &unit(n, pair.q.index(), 1)), -1);
             }
-            if !angle {
-                let dq = cond(h.derivative(pair.q)?)?;
-                for t in dq.terms() {
-                    c.push(&minus(&t.exponents(), &unit(n, pair.p.index(), 1)), -1);
-                }
+            let dq = cond(h.derivative(pair.q)?)?;
+            for t in dq.terms() {
+                c.push(&minus(&t.exponents(), &unit(n, pair.p.index(), 1)), -1);
             }
         }
         Ok(Scaling {
