@@ -73,17 +73,29 @@ fn parameter_names(vars: &VarSet, params: &[Var]) -> String {
         .join(", ")
 }
 
+/// The letter of the trigonometric order, `k` unless the system names a variable so (the
+/// Kepler problem's `k`): then the first of `j, l, o, ν` that is free.
+fn order_letter(vars: &trigpoly::Vars) -> &'static str {
+    ["k", "j", "l", "o", "ν"]
+        .into_iter()
+        .find(|c| vars.lookup(c).is_none())
+        .unwrap_or("κ")
+}
+
 fn space_text(r: &SearchResult) -> String {
+    let k = order_letter(&r.vars);
     let s = &r.space;
     let space = &r.variables;
     let name = |v: &Var| r.vars.variable(*v).unicode().to_string();
     // One exponent letter per coordinate and momentum, in order (`x^a y^b p_x^c p_y^d`),
-    // none the name of a variable; `k` is the trigonometric order's.
+    // none the name of a variable or the trigonometric order's letter.
     let taken = |c: &char| {
         let mut buf = [0; 4];
         r.vars.lookup(c.encode_utf8(&mut buf)).is_some()
     };
-    let mut letters = "abcdefghjlmnqrsuvw".chars().filter(|c| !taken(c));
+    let mut letters = "abcdefghjlmnqrsuvw"
+        .chars()
+        .filter(|c| !taken(c) && c.to_string() != k);
     let mut monomial = Vec::new();
     let mut exponents = |vars: &[Var], absolute: bool| -> String {
         let degree: Vec<String> = vars
@@ -138,8 +150,8 @@ fn space_text(r: &SearchResult) -> String {
         [] => String::new(),
         [theta] => {
             let theta = name(theta);
-            degrees.push(format!("trigonometric order `k ≤ {}`", s.trig_degree));
-            format!(" times `1, cos k{theta}, sin k{theta}`")
+            degrees.push(format!("trigonometric order `{k} ≤ {}`", s.trig_degree));
+            format!(" times `1, cos {k}{theta}, sin {k}{theta}`")
         }
         angles => {
             let sum = |f: &dyn Fn(usize, &Var) -> String| {
@@ -149,8 +161,8 @@ fn space_text(r: &SearchResult) -> String {
                     .map(|(j, v)| f(j + 1, v))
                     .collect::<Vec<_>>()
             };
-            let phase = sum(&|j, v| format!("k_{j} {}", name(v))).join(" + ");
-            let order = sum(&|j, _| format!("|k_{j}|")).join(" + ");
+            let phase = sum(&|j, v| format!("{k}_{j} {}", name(v))).join(" + ");
+            let order = sum(&|j, _| format!("|{k}_{j}|")).join(" + ");
             degrees.push(format!("trigonometric order `{order} ≤ {}`", s.trig_degree));
             format!(" times `1, cos({phase}), sin({phase})`")
         }
@@ -349,17 +361,20 @@ pub fn search_report(
                 .collect(),
         }));
     }
+    let k = order_letter(&r.vars);
     let complex: Vec<Equation> = shown
         .iter()
         .filter_map(|&i| {
             complex_form(r.basis[i].expr())
-                .map(|(a, k)| Equation::new(&format!("A{} (k = {k})", i + 1), a))
+                .map(|(a, order)| Equation::new(&format!("A{} ({k} = {order})", i + 1), a))
         })
         .collect();
     if let (false, [theta]) = (complex.is_empty(), r.variables.angles.as_slice()) {
         let theta = r.vars.variable(*theta).unicode();
         entries.push(Entry::Equations(Equations {
-            caption: format!("Those of trigonometric order k > 0 as I = Re(A e^{{−ik{theta}}})"),
+            caption: format!(
+                "Those of trigonometric order {k} > 0 as I = Re(A e^{{−i{k}{theta}}})"
+            ),
             lines: complex,
         }));
     }

@@ -301,6 +301,14 @@ pub struct RankResult {
     pub claim: ClaimResult,
 }
 
+/// `1 claim`, `2 claims`.
+fn counted(n: usize, noun: &str) -> String {
+    match n {
+        1 => format!("1 {noun}"),
+        _ => format!("{n} {noun}s"),
+    }
+}
+
 impl Report {
     /// Every checked claim, in order: plain claims and those settled by tables, proofs, towers
     /// and ranks.
@@ -422,16 +430,8 @@ impl Report {
                     unexpected.join(", ")
                 )
             };
-            let files = if files == 1 {
-                "1 file".to_string()
-            } else {
-                format!("{files} files")
-            };
-            let count = if claims.len() == 1 {
-                "1 claim".to_string()
-            } else {
-                format!("{} claims", claims.len())
-            };
+            let files = counted(files, "file");
+            let count = counted(claims.len(), "claim");
             return format!(
                 "{count} in {files}: {proved} proved, {} refuted; {verdict}{}",
                 claims.len() - proved,
@@ -444,12 +444,12 @@ impl Report {
         }
         let ids = self.claim_ids();
         let proved = ids.iter().filter(|(_, ok)| *ok).count();
+        let checks = self.claims().len();
         format!(
-            "{} claims: {} proved, {} refuted ({} exact checks{time})",
-            ids.len(),
-            proved,
+            "{}: {proved} proved, {} refuted ({}{time})",
+            counted(ids.len(), "claim"),
             ids.len() - proved,
-            self.claims().len()
+            counted(checks, "exact check"),
         )
     }
 }

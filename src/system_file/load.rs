@@ -239,9 +239,18 @@ impl<'a> Builder<'a> {
             builder = builder.parameter(p.get_ref());
         }
         let span = model.phase_space.span();
-        let vars = builder
-            .build()
-            .map_err(|e| self.error(ErrorKind::Name, span.clone(), e.to_string()))?;
+        let vars = builder.build().map_err(|e| {
+            // Two names that one spelling finds (`omega` and `ω`): shown at the second.
+            let message = e.to_string();
+            let at = ps
+                .coordinates
+                .iter()
+                .chain(&ps.angles)
+                .chain(&ps.parameters)
+                .find(|n| message.starts_with(&format!("variable {:?} ", n.get_ref())))
+                .map_or(span.clone(), |n| n.span());
+            self.error(ErrorKind::Name, at, message)
+        })?;
         let pairs: Vec<(String, String)> = qs
             .iter()
             .map(|q| (q.get_ref().clone(), format!("p_{}", q.get_ref())))

@@ -838,15 +838,16 @@ fn kepler_laplace_runge_lenz_and_nothing_else() {
     expect(
         "kepler",
         &[
-            "The space: r^a p_r^b p_φ^c times 1, cos kφ, sin kφ, with momenta degree b + c ≤ 2, \
+            // The Kepler problem's parameter is `k`: the trigonometric order takes `j`.
+            "The space: r^a p_r^b p_φ^c times 1, cos jφ, sin jφ, with momenta degree b + c ≤ 2, \
              positions degree |a| ≤ 2 (negative powers of the coordinates allowed), \
-             trigonometric order k ≤ 1: 90 unknowns",
+             trigonometric order j ≤ 1: 90 unknowns",
             "Dimension of the space of integrals: 6.",
             "I2 = p_φ",
             "I4 = p_r² + p_φ²/r² − 2Mk/r",
             "I5 = (p_φ²/r − Mk) cos φ + p_r p_φ sin φ",
             "I6 = −p_r p_φ cos φ + (p_φ²/r − Mk) sin φ",
-            "Those of trigonometric order k > 0 as I = Re(A e^{−ikφ})",
+            "Those of trigonometric order j > 0 as I = Re(A e^{−ijφ})",
             "6 claims: 6 proved, 0 refuted",
         ],
     );

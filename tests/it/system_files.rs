@@ -402,6 +402,15 @@ fn bad_inputs() -> Vec<(&'static str, Vec<u8>, &'static str, Vec<&'static str>)>
             vec!["bracket", "bad.toml", "A", "H + B"],
         ),
         (
+            "two spellings of one parameter",
+            base_with(
+                "parameters = [\"M\", \"omega\"]",
+                "parameters = [\"M\", \"omega\", \"ω\"]",
+            ),
+            "bad.toml:6:29: variable \"ω\" is declared twice (as \"omega\"",
+            check.clone(),
+        ),
+        (
             "family instance with one index",
             base_with(
                 "[[claim]]",

@@ -177,17 +177,26 @@ impl<C: Coefficient> Lower<'_, C> {
         ))
     }
 
+    /// Whether `name` is a declared name other than an angle, `i`, or a product of such names
+    /// side by side (`Mω`).
+    fn is_product_of_names(&self, name: &str) -> bool {
+        self.is_declared(name) || self.split_name(name).is_some()
+    }
+
+    /// Whether `name` is `i` or a declared name that stands for a value (an angle does not).
+    fn is_declared(&self, name: &str) -> bool {
+        name == "i"
+            || self
+                .vars
+                .lookup(name)
+                .is_some_and(|v| self.vars.variable(v).kind() != VarKind::Angle)
+            || self.ctx.lookup(name).is_some()
+    }
+
     /// Splits a name that is not declared into declared names (`Mω` → `M`, `ω`), longest
     /// prefix first; `None` if no split exists.
     fn split_name(&self, name: &str) -> Option<Vec<String>> {
-        let known = |s: &str| {
-            s == "i"
-                || self
-                    .vars
-                    .lookup(s)
-                    .is_some_and(|v| self.vars.variable(v).kind() != VarKind::Angle)
-                || self.ctx.lookup(s).is_some()
-        };
+        let known = |s: &str| self.is_declared(s);
         fn go(rest: &str, known: &dyn Fn(&str) -> bool, out: &mut Vec<String>) -> bool {
             if rest.is_empty() {
                 return true;
@@ -249,6 +258,14 @@ impl<C: Coefficient> Lower<'_, C> {
     ) -> Result<Poly<C>, ParseError> {
         let fun = match name {
             "cos" | "sin" | "exp" => name,
+            // A name before parentheses is a product, as the text form prints it:
+            // `Mω(3x p_x² − …)`, `i(mω − nΩ)`.
+            _ if args.len() == 1 && self.is_product_of_names(name) => {
+                return self
+                    .name(name, name_span)?
+                    .checked_mul(&self.lower(&args[0])?)
+                    .map_err(at(span));
+            }
             _ => {
                 return Err(ParseError::new(
                     name_span,

@@ -500,8 +500,13 @@ impl VarSetBuilder {
             }
             for w in &self.vars[..k] {
                 if w.spelled_alike(v) {
+                    let how = if w.name == v.name {
+                        String::new()
+                    } else {
+                        format!(" (as {:?}, which one spelling finds with it)", w.name)
+                    };
                     return Err(AlgebraError::Invalid(format!(
-                        "variable {:?} is declared twice",
+                        "variable {:?} is declared twice{how}",
                         v.name
                     )));
                 }
@@ -735,16 +740,25 @@ mod tests {
     fn two_variables_found_by_one_spelling_are_refused() {
         let twice = |builder: VarSetBuilder| builder.build().map(|_| ()).unwrap_err().to_string();
         let angles = VarSet::builder().angle("theta").angle("θ");
-        assert_eq!(twice(angles), r#"variable "θ" is declared twice"#);
+        assert_eq!(
+            twice(angles),
+            r#"variable "θ" is declared twice (as "theta", which one spelling finds with it)"#
+        );
         let parameters = VarSet::builder().parameter("ω").parameter("omega");
-        assert_eq!(twice(parameters), r#"variable "omega" is declared twice"#);
+        assert_eq!(
+            twice(parameters),
+            r#"variable "omega" is declared twice (as "ω", which one spelling finds with it)"#
+        );
         // `y` would name the first, shown as y, and the second, declared y.
         let shown = VarSet::builder()
             .coordinate("x")
             .shown_as("y")
             .coordinate("y")
             .shown_as("z");
-        assert_eq!(twice(shown), r#"variable "y" is declared twice"#);
+        assert_eq!(
+            twice(shown),
+            r#"variable "y" is declared twice (as "x", which one spelling finds with it)"#
+        );
     }
 
     #[test]

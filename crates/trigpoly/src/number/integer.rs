@@ -16,9 +16,8 @@ use std::hash::{Hash, Hasher};
 use std::ops::{Add, AddAssign, Mul, MulAssign, Neg, Sub, SubAssign};
 use std::str::FromStr;
 
-use super::gcd::{binary_gcd, gcd_u128};
+use super::gcd::{binary_gcd, gcd_bigint, gcd_u128};
 use num_bigint::BigInt;
-use num_integer::Integer as _;
 use num_traits::{One, Signed, ToPrimitive, Zero};
 
 pub use word::Integer;
@@ -359,7 +358,7 @@ impl Integer {
     fn gcd_long(&self, other: &Integer) -> Integer {
         let word = |v: &Integer| v.to_i128().expect("not Big").unsigned_abs();
         match (self.view(), other.view()) {
-            (IntegerView::Big(b), IntegerView::Big(c)) => Integer::from_bigint(b.gcd(c)),
+            (IntegerView::Big(b), IntegerView::Big(c)) => Integer::from_bigint(gcd_bigint(b, c)),
             (IntegerView::Big(b), _) => Integer::gcd_big_short(b, word(other)),
             (_, IntegerView::Big(b)) => Integer::gcd_big_short(b, word(self)),
             _ => Integer::from_u128(gcd_u128(word(self), word(other))),

@@ -9,7 +9,7 @@ use num_bigint::BigInt;
 use num_rational::BigRational;
 use num_traits::{One, Signed, ToPrimitive, Zero};
 
-use super::gcd::{binary_gcd, gcd_u128};
+use super::gcd::{binary_gcd, gcd_bigint, gcd_u128};
 use super::Integer;
 
 /// An exact rational number in lowest terms with a positive denominator.
@@ -100,7 +100,7 @@ impl Rational {
         }
         match (i64::try_from(n), i64::try_from(d)) {
             (Ok(num), Ok(den)) => Rational(Repr::Small { num, den }),
-            _ => Rational(Repr::Big(Box::new(BigRational::new(
+            _ => Rational(Repr::Big(Box::new(BigRational::new_raw(
                 BigInt::from(n),
                 BigInt::from(d),
             )))),
@@ -203,7 +203,7 @@ impl Rational {
         }
         Some(match (num.to_i64(), den.to_i64()) {
             (Some(n), Some(d)) => Rational::from_i128(n as i128, d as i128),
-            _ => Rational::from_big(BigRational::new(num.to_bigint(), den.to_bigint())),
+            _ => Rational::from_big(big::reduced(num.to_bigint(), den.to_bigint())),
         })
     }
 
@@ -489,7 +489,7 @@ impl FromStr for Rational {
         if d.is_zero() {
             return Err(err());
         }
-        Ok(Rational::from_big(BigRational::new(n, d)))
+        Ok(Rational::from_big(big::reduced(n, d)))
     }
 }
 
@@ -534,6 +534,71 @@ macro_rules! forward_binop {
 }
 pub(crate) use forward_binop;
 
+/// Arithmetic of big rationals in lowest terms, with gcds that take a short side to a word
+/// first ([`gcd_bigint`]). `num-rational`'s own operators reduce with `num-integer`'s binary
+/// gcd, whose cost is quadratic in the long side even when the other is 1 (an integer's
+/// denominator): `(10^999)^100` took a second.
+mod big {
+    use num_bigint::BigInt;
+    use num_rational::BigRational;
+    use num_traits::{One, Signed};
+
+    use super::gcd_bigint;
+
+    /// `num/den` in lowest terms with a positive denominator (`den` nonzero).
+    pub(super) fn reduced(num: BigInt, den: BigInt) -> BigRational {
+        let g = gcd_bigint(&num, &den);
+        let (num, den) = if g.is_one() {
+            (num, den)
+        } else {
+            (num / &g, den / &g)
+        };
+        if den.is_negative() {
+            BigRational::new_raw(-num, -den)
+        } else {
+            BigRational::new_raw(num, den)
+        }
+    }
+
+    /// `a/b + c/d`.
+    pub(super) fn add(x: &BigRational, y: &BigRational) -> BigRational {
+        let (a, b, c, d) = (x.numer(), x.denom(), y.numer(), y.denom());
+        if b == d {
+            // Integers (b = d = 1) above all: the sum is in lowest terms.
+            return if b.is_one() {
+                BigRational::new_raw(a + c, b.clone())
+            } else {
+                reduced(a + c, b.clone())
+            };
+        }
+        reduced(a * d + c * b, b * d)
+    }
+
+    /// `a/b − c/d`.
+    pub(super) fn sub(x: &BigRational, y: &BigRational) -> BigRational {
+        add(x, &-y)
+    }
+
+    /// `(a/b)(c/d) = (a/g₁ · c/g₂)/(b/g₂ · d/g₁)` with `g₁ = gcd(a, d)`, `g₂ = gcd(c, b)`: in
+    /// lowest terms, since `a/b` and `c/d` are.
+    pub(super) fn mul(x: &BigRational, y: &BigRational) -> BigRational {
+        let (a, b, c, d) = (x.numer(), x.denom(), y.numer(), y.denom());
+        let (g1, g2) = (gcd_bigint(a, d), gcd_bigint(c, b));
+        let num = (a / &g1) * (c / &g2);
+        let den = (b / &g2) * (d / &g1);
+        if den.is_negative() {
+            BigRational::new_raw(-num, -den)
+        } else {
+            BigRational::new_raw(num, den)
+        }
+    }
+
+    /// `(a/b)/(c/d)` (`c` nonzero).
+    pub(super) fn div(x: &BigRational, y: &BigRational) -> BigRational {
+        mul(x, &y.recip())
+    }
+}
+
 // a/b + c/d = (ad + cb)/(bd), in i128 for machine-word values.
 forward_binop!(
     Rational,
@@ -547,7 +612,7 @@ forward_binop!(
                 *n1 as i128 * *d2 as i128 + *n2 as i128 * *d1 as i128,
                 *d1 as i128 * *d2 as i128
             ),
-        _ => Rational::from_big(a.to_big_rational() + b.to_big_rational()),
+        _ => Rational::from_big(big::add(&a.to_big_rational(), &b.to_big_rational())),
     }
 );
 // a/b − c/d = (ad − cb)/(bd)
@@ -563,7 +628,7 @@ forward_binop!(
                 *n1 as i128 * *d2 as i128 - *n2 as i128 * *d1 as i128,
                 *d1 as i128 * *d2 as i128
             ),
-        _ => Rational::from_big(a.to_big_rational() - b.to_big_rational()),
+        _ => Rational::from_big(big::sub(&a.to_big_rational(), &b.to_big_rational())),
     }
 );
 // (a/b)(c/d) = (ac)/(bd)
@@ -577,7 +642,7 @@ forward_binop!(
         (Repr::Small { num: n1, den: d1 }, Repr::Small { num: n2, den: d2 }) => {
             Rational::mul_small(*n1, *d1, *n2, *d2)
         }
-        _ => Rational::from_big(a.to_big_rational() * b.to_big_rational()),
+        _ => Rational::from_big(big::mul(&a.to_big_rational(), &b.to_big_rational())),
     }
 );
 // (a/b)/(c/d) = (ad)/(bc). Panics if the divisor is zero (use `try_inv` for a checked division).
@@ -591,7 +656,7 @@ forward_binop!(Rational, Div, div, DivAssign, div_assign, |a, b| {
                 None => Rational::from_i128(*n1 as i128 * *d2 as i128, *d1 as i128 * *n2 as i128),
             }
         }
-        _ => Rational::from_big(a.to_big_rational() / b.to_big_rational()),
+        _ => Rational::from_big(big::div(&a.to_big_rational(), &b.to_big_rational())),
     }
 });
 

@@ -384,3 +384,26 @@ fn two_angles_print_grouped_and_parse_back() {
         ],
     );
 }
+
+/// A name before parentheses is a product, as the paper and the claims' echo write it
+/// (`Mω(3x p_x² − …)`, `i(mω − nΩ)`): it reads back as one; a name that is no product of
+/// declared names is still an unknown function.
+#[test]
+fn a_name_before_parentheses_is_a_product() {
+    let vars = plane();
+    let g: G = p(&vars, "M*omega*(x + y) + i*(p_x - M*omega*y) + x*(y + 1)");
+    let read: G = p(&vars, "Mω(x + y) + i(p_x − Mωy) + x(y + 1)");
+    assert_eq!(read, g);
+    let err = Poly::<GaussianRational>::parse(&vars, "f(x)").expect_err("no function f");
+    assert!(
+        err.message.starts_with("unknown function 'f'"),
+        "{}",
+        err.message
+    );
+    let err = Poly::<GaussianRational>::parse(&vars, "theta(x)").expect_err("an angle");
+    assert!(
+        err.message.starts_with("unknown function 'theta'"),
+        "{}",
+        err.message
+    );
+}

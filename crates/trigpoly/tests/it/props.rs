@@ -342,6 +342,30 @@ proptest! {
         }
     }
 
+    /// Sums, differences, products and quotients of big rationals (past `i128`, with common
+    /// factors so that the gcds are long) equal num-rational's: the big path reduces with its
+    /// own gcds (Lehmer's, and a remainder when a side is short) and cross-cancels products.
+    #[test]
+    fn big_rational_arithmetic_matches_num_rational(
+        n1 in integer(), d1 in integer(), n2 in integer(), d2 in integer(), f in integer(),
+    ) {
+        let f = if f == BigInt::from(0) { BigInt::from(1) } else { f };
+        let nonzero = |d: BigInt| if d == BigInt::from(0) { BigInt::from(7) } else { d };
+        let bx = BigRational::new(&n1 * &f * &n2, nonzero(d1.clone()) * &f);
+        let by = BigRational::new(&n2 * &f, nonzero(nonzero(d2.clone()) * &f * &d1 + 1));
+        let by = if by == BigRational::from_integer(0.into()) { bx.clone() } else { by };
+        let (x, y) = (Rational::from(bx.clone()), Rational::from(by.clone()));
+        prop_assert_eq!(&x + &y, Rational::from(&bx + &by));
+        prop_assert_eq!(&x - &y, Rational::from(&bx - &by));
+        prop_assert_eq!(&x * &y, Rational::from(&bx * &by));
+        if !y.is_zero() {
+            prop_assert_eq!(&x / &y, Rational::from(&bx / &by));
+        }
+        let text = format!("{}/{}", bx.numer(), bx.denom() * &f);
+        let parsed: Rational = text.parse().expect("a fraction");
+        prop_assert_eq!(parsed, Rational::from(BigRational::new(bx.numer().clone(), bx.denom() * &f)));
+    }
+
     /// A rational times an integer (one gcd on the machine path) equals num-rational's
     /// product, in canonical form, across the edges of `i64` and `i128`.
     #[test]
