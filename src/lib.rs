@@ -42,13 +42,15 @@ pub struct ReadmeDoctests;
 /// Everything a user of the library needs: `use superint::prelude::*;`.
 pub mod prelude {
     pub use brackets::{
-        check_tower, eigen_proof, rank, systems, BracketTable, Claim, Condition, EigenProof,
-        EngineError, Entry as TableEntry, Outcome, PhaseSpace, RankCertificate, System,
-        TowerReport, Verdict,
+        check_tower, closure, eigen_proof, rank, search, systems, BracketTable, Claim, Closure,
+        ClosureBracket, ClosureOptions, Condition, EigenProof, EngineError, Entry as TableEntry,
+        Integral, Outcome, PhaseSpace, RankCertificate, SearchOptions, SearchResult, SearchSpace,
+        System, TowerReport, Verdict,
     };
     pub use trigpoly::{Expr, GaussianRational, Poly, Rational, Style, Var, VarSet};
 
     pub use crate::paper::{tower_report, Paper, PaperOptions, TowerSystem};
     pub use crate::render::{render, Format, Options as RenderOptions};
     pub use crate::report::{ClaimResult, Report};
+    pub use crate::system_file::{load as load_system_file, LimitsOverride, LoadedSystem};
 }

@@ -1,10 +1,10 @@
 //! Parsing expressions of a system file: a [`trigpoly::Context`] over the system that knows the
-//! named functions, the family instances (`K_2_3`, expanded on first use and cached), and
-//! `conj`, `re`, `im`; with every error mapped back to its place in the file.
+//! named functions and the family instances (`K_2_3`, expanded on first use and cached); with
+//! every error mapped back to its place in the file.
 //!
 //! The parser and the lowering belong to `trigpoly`; this module only prepares the tree: it
-//! expands family instances (so that an expansion's error has a place), evaluates `conj(…)`,
-//! `re(…)`, `im(…)` into names of its own, and rejects a bracket with a bare parameter.
+//! expands family instances (so that an expansion's error has a place) and rejects a bracket
+//! with a bare parameter; `conj`, `re` and `im` are the lowering's.
 
 use std::cell::RefCell;
 use std::collections::HashMap;
@@ -18,7 +18,7 @@ use super::text::{Source, Text};
 use super::LoadedSystem;
 
 /// What a scope sees: the system's functions, the first `families` families, and names it
-/// made for `conj(…)`, `re(…)`, `im(…)` and family instances while preparing a tree.
+/// made for family instances while preparing a tree.
 pub(crate) struct Scope<'a> {
     file: &'a LoadedSystem,
     families: usize,
@@ -296,7 +296,7 @@ impl<'a> Scope<'a> {
             .map_err(|e| expression_error(source, text, &e))
     }
 
-    /// Expands family instances, evaluates `conj`, `re`, `im`, checks brackets.
+    /// Expands family instances, checks brackets.
     fn prepare(&self, source: &Source, text: &Text, tree: &Tree) -> Result<Tree, FileError> {
         let span = tree.span;
         let vars = self.file.system.vars();
@@ -333,30 +333,6 @@ impl<'a> Scope<'a> {
                     }
                 }
                 ExprKind::Name(name.clone())
-            }
-            ExprKind::Call(f, name_span, args) if matches!(f.as_str(), "conj" | "re" | "im") => {
-                if args.len() != 1 {
-                    return Err(text.error(
-                        source,
-                        ErrorKind::Expression,
-                        span,
-                        format!("{f} takes one argument, found {}", args.len()),
-                    ));
-                }
-                let arg = self.prepare(source, text, &args[0])?;
-                let value = Expr::from_expr(vars, &arg, self)
-                    .map_err(|e| expression_error(source, text, &e))?;
-                let result = match f.as_str() {
-                    "conj" => Ok(value.conj()),
-                    "re" => Ok(value.re()),
-                    _ => value.im(),
-                }
-                .map_err(|e| {
-                    text.error(source, ErrorKind::Expression, *name_span, e.to_string())
-                })?;
-                let made = format!("#{}", self.made.borrow().len());
-                self.made.borrow_mut().insert(made.clone(), result);
-                ExprKind::Name(made)
             }
             ExprKind::Call(f, name_span, args) => ExprKind::Call(
                 f.clone(),

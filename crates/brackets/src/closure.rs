@@ -227,7 +227,23 @@ fn monomials(r: usize, d: u32) -> Vec<Vec<u32>> {
         .collect()
 }
 
-/// The closure of the named generators of `system`.
+/// The closure of the named generators of `system`: each bracket of two of them as a
+/// polynomial in them ([`Closure::brackets`]), and their relations ([`Closure::relations`]).
+///
+/// ```
+/// use brackets::{closure, systems, ClosureBracket, ClosureOptions};
+///
+/// // su(2) and its Casimir (C09, C10): {G1, G2} = −ω² L, and a relation of degree 2.
+/// let rotor = systems::harmonic_rotor();
+/// let c = closure(&rotor, &["F1", "F2", "L", "G1", "G2"], &ClosureOptions::new(2))?;
+/// let ClosureBracket::Polynomial { poly, symbolic } = &c.brackets[3][4] else {
+///     panic!("{{G1, G2}} is a polynomial in the generators");
+/// };
+/// assert!(*symbolic);
+/// assert_eq!(poly.to_string(), "−ω²L");
+/// assert!(c.relations.iter().any(|r| r.degree == 2 && r.symbolic));
+/// # Ok::<(), brackets::EngineError>(())
+/// ```
 pub fn closure(
     system: &System,
     names: &[&str],

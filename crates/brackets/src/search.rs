@@ -864,7 +864,25 @@ fn primitive_vector(v: &SparseVec<Rational>) -> SparseVec<Rational> {
     v.iter().map(|(j, x)| (*j, x * &scale)).collect()
 }
 
-/// Finds a basis of every integral of `system` in the space of `options`.
+/// Finds a basis of every integral of `system` in the space of `options`: each element of
+/// [`SearchResult::basis`] is an [`Integral`], its function [`Integral::expr`], proved.
+///
+/// ```
+/// use brackets::{search, systems, SearchOptions, SearchSpace};
+///
+/// // The harmonic rotor at the resonance p_θ = Iω: the integrals of degree ≤ 1 in the momenta
+/// // and in the positions, of trigonometric order ≤ 1, are 1, L and the four components of
+/// // the two linear integrals Z e^{−iθ} and W e^{−iθ} (docs/results.md, section 1.1).
+/// let rotor = systems::harmonic_rotor();
+/// let resonance = rotor.resonance(1, 1)?;
+/// let options = SearchOptions::new(SearchSpace::new(1, 1, 1)).when(resonance.clone());
+/// let found = search(&rotor, &options)?;
+/// assert_eq!(found.basis.len(), 6);
+/// for integral in &found.basis {
+///     assert!(rotor.flow_when(integral.expr(), &resonance)?.is_zero());
+/// }
+/// # Ok::<(), brackets::EngineError>(())
+/// ```
 pub fn search(system: &System, options: &SearchOptions) -> Result<SearchResult, EngineError> {
     // The search hands blocks of work to rayon's pool (images, blocks of equations, proofs):
     // it runs on a thread of the pool, which takes its share of each and, on a pool of one

@@ -126,7 +126,19 @@ impl System {
             .unwrap_or_else(|| panic!("variable {name} is not declared"))
     }
 
-    /// Parses an expression in the system's variables, named functions and brackets.
+    /// Parses an expression in the system's variables, named functions and brackets, with
+    /// `cos`, `sin`, `exp` of angles and the complex structure's `conj`, `re`, `im`.
+    ///
+    /// ```
+    /// let rotor = brackets::systems::harmonic_rotor();
+    /// // P_{1,1} = Re(Z e^{−iθ}) and Q_{1,1} = Im(Z e^{−iθ}), with |Z|² = P² + Q².
+    /// let p = rotor.parse("re(Z*exp(-i*theta))")?;
+    /// let q = rotor.parse("im(Z*exp(-i*theta))")?;
+    /// assert_eq!(p.to_string(), "(p_x − Mωy) cos θ + (p_y + Mωx) sin θ");
+    /// let modulus = rotor.parse("Z*conj(Z)")?;
+    /// assert_eq!(modulus, &(&p * &p) + &(&q * &q));
+    /// # Ok::<(), brackets::EngineError>(())
+    /// ```
     pub fn parse(&self, src: &str) -> Result<Expr, EngineError> {
         Expr::parse_with(self.vars(), src, self).map_err(|e| EngineError::parse(src, e))
     }

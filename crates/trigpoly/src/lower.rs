@@ -1,5 +1,6 @@
 //! Lowering: from a parsed expression (`syntax::Expr`) to a polynomial, checking what the
-//! grammar cannot: names, integer exponents, exact divisions, angles inside `cos`, `sin`, `exp`.
+//! grammar cannot: names, integer exponents, exact divisions, angles inside `cos`, `sin`, `exp`;
+//! and the complex structure's `conj`, `re`, `im`.
 
 use crate::error::AlgebraError;
 use crate::number::{Coefficient, GaussianRational, Integer, Rational};
@@ -257,7 +258,7 @@ impl<C: Coefficient> Lower<'_, C> {
         span: Span,
     ) -> Result<Poly<C>, ParseError> {
         let fun = match name {
-            "cos" | "sin" | "exp" => name,
+            "cos" | "sin" | "exp" | "conj" | "re" | "im" => name,
             // A name before parentheses is a product, as the text form prints it:
             // `Mω(3x p_x² − …)`, `i(mω − nΩ)`.
             _ if args.len() == 1 && self.is_product_of_names(name) => {
@@ -269,7 +270,7 @@ impl<C: Coefficient> Lower<'_, C> {
             _ => {
                 return Err(ParseError::new(
                     name_span,
-                    format!("unknown function '{name}' (known: cos, sin, exp)"),
+                    format!("unknown function '{name}' (known: cos, sin, exp, conj, re, im)"),
                 ))
             }
         };
@@ -280,6 +281,13 @@ impl<C: Coefficient> Lower<'_, C> {
             ));
         }
         let arg = &args[0];
+        // The complex structure: every variable is real, so conj maps e^{ikθ} to e^{−ikθ}.
+        match fun {
+            "conj" => return Ok(self.lower(arg)?.conj()),
+            "re" => return Ok(self.lower(arg)?.re()),
+            "im" => return self.lower(arg)?.im().map_err(at(span)),
+            _ => {}
+        }
         let multiples = self.angle_multiples(arg, fun)?;
         let wrap = |e: AlgebraError| ParseError::new(arg.span, e.to_string());
         // e^{±i Σ n_j θ_j}

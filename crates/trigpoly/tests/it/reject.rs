@@ -161,9 +161,9 @@ fn cases() -> Vec<Case> {
         case(
             Qi,
             "tan(theta)",
-            "unknown function 'tan' (known: cos, sin, exp)",
+            "unknown function 'tan' (known: cos, sin, exp, conj, re, im)",
             (1, 1),
-            "line 1, column 1: unknown function 'tan' (known: cos, sin, exp)\n  tan(theta)\n  ^^^",
+            "line 1, column 1: unknown function 'tan' (known: cos, sin, exp, conj, re, im)\n  tan(theta)\n  ^^^",
         ),
         case(
             Qi,
