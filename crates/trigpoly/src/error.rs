@@ -11,6 +11,10 @@ pub enum AlgebraError {
     /// Division by a polynomial that is not a single term.
     #[error("cannot divide by {0}: only division by a nonzero constant or a single term (monomial) is exact here")]
     NotAMonomial(String),
+    /// Division by a function of an angle that is not a single `e^{ikθ}` (it prints as one
+    /// term, `cos²φ`, but is a sum of exponentials).
+    #[error("cannot divide by {0}: cos and sin of an angle are sums of exponentials, which are not invertible here; only division by a nonzero constant, a single term in the other variables, or exp(i*k*angle) is exact")]
+    NotAMonomialInAngles(String),
     /// A negative power of a polynomial that is not a single term.
     #[error("cannot raise {0} to a negative power: only single terms (monomials) are invertible")]
     NegativePower(String),

@@ -560,7 +560,7 @@ const GREEK: &[(&str, &str, &str)] = &[
     ("rho", "ρ", r"\rho"),
     ("sigma", "σ", r"\sigma"),
     ("tau", "τ", r"\tau"),
-    ("phi", "φ", r"\phi"),
+    ("phi", "φ", r"\varphi"),
     ("chi", "χ", r"\chi"),
     ("psi", "ψ", r"\psi"),
     ("omega", "ω", r"\omega"),

@@ -76,9 +76,35 @@ impl<C: Coefficient> Poly<C> {
             return Err(AlgebraError::DivisionByZero);
         }
         if !d.is_monomial() {
-            return Err(AlgebraError::NotAMonomial(d.brief()));
+            // `r² cos²φ` prints as one term: say why it is not one.
+            return Err(if d.has_angles() && d.one_monomial_but_for_angles() {
+                AlgebraError::NotAMonomialInAngles(d.brief())
+            } else {
+                AlgebraError::NotAMonomial(d.brief())
+            });
         }
         self.checked_mul(&d.checked_pow(-1)?)
+    }
+
+    /// Whether every term has the same exponents in the variables other than the angles
+    /// (`r² cos²φ`: a single term times a function of the angles).
+    fn one_monomial_but_for_angles(&self) -> bool {
+        let others: Vec<usize> = self
+            .vars
+            .vars()
+            .filter(|&v| self.vars.variable(v).kind() != crate::VarKind::Angle)
+            .map(|v| v.index())
+            .collect();
+        let layout = self.layout();
+        let mut monomials = self.exps.chunks_exact(self.words());
+        let Some(first) = monomials.next() else {
+            return true;
+        };
+        monomials.all(|m| {
+            others
+                .iter()
+                .all(|&j| layout.get(m, j) == layout.get(first, j))
+        })
     }
 
     /// Multiplies every term by `i` (needs Q(i)).

@@ -246,7 +246,11 @@ fn trigonometric_normal_form_a_of_cos_plus_sin_times_b_of_cos() {
     prints(
         &two,
         "cos(theta)*sin(phi)",
-        ["cos θ sin φ", r"\cos\theta \sin\phi", "cos(theta)*sin(phi)"],
+        [
+            "cos θ sin φ",
+            r"\cos\theta \sin\varphi",
+            "cos(theta)*sin(phi)",
+        ],
     );
 }
 
@@ -379,7 +383,7 @@ fn two_angles_print_grouped_and_parse_back() {
         "x*sin(phi) + y*cos(theta) + x*cos(theta) + cos(theta)*cos(phi) + 3",
         [
             "3 + x sin φ + (x + y) cos θ + cos θ cos φ",
-            r"3 + x \sin\phi + \left(x + y\right) \cos\theta + \cos\theta \cos\phi",
+            r"3 + x \sin\varphi + \left(x + y\right) \cos\theta + \cos\theta \cos\varphi",
             "3 + x*sin(phi) + (x + y)*cos(theta) + cos(theta)*cos(phi)",
         ],
     );

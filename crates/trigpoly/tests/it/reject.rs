@@ -287,6 +287,18 @@ fn cases() -> Vec<Case> {
             "line 1, column 5: exp takes i times an integer combination of angles, such as exp(i*(2*theta - phi))\n  \
              exp(i*theta + phi)\n      ^^^^^^^^^^^^^",
         ),
+        case(
+            Qi,
+            "M/(x^2*cos(phi)^2)",
+            "cannot divide by x² cos²φ: cos and sin of an angle are sums of exponentials, which \
+             are not invertible here; only division by a nonzero constant, a single term in the \
+             other variables, or exp(i*k*angle) is exact",
+            (1, 3),
+            "line 1, column 3: cannot divide by x² cos²φ: cos and sin of an angle are sums of \
+             exponentials, which are not invertible here; only division by a nonzero constant, a \
+             single term in the other variables, or exp(i*k*angle) is exact\n  \
+             M/(x^2*cos(phi)^2)\n    ^^^^^^^^^^^^^^^^",
+        ),
     ]
 }
 
