@@ -9,7 +9,7 @@ use std::path::PathBuf;
 use anyhow::{bail, Context};
 use clap::{Args, ValueEnum};
 use superint::render::Format;
-use superint::system_file::{load, LimitsOverride, PlotFunctions};
+use superint::system_file::{load, Against, LimitsOverride, PlotFunctions};
 use superint::trajectory::chart::{self, Curve, Style};
 use superint::trajectory::{nearest_f64, short, Flow, Method, Numeric};
 
@@ -66,7 +66,8 @@ pub struct PlotArgs {
           value_parser = clap::value_parser!(u64).range(1..=100_000))]
     samples: u64,
     /// Draw the curves against this real function instead of the time (`y --against x`
-    /// draws the orbit).
+    /// draws the orbit), or against an angle, not reduced mod 2π (`p_θ --against θ` draws a
+    /// phase portrait).
     #[arg(long, value_name = "F")]
     against: Option<String>,
     /// A Poincaré section: keep the states where this real function crosses zero upward
@@ -164,6 +165,28 @@ struct Function {
     numeric: Numeric,
 }
 
+/// The horizontal axis, when it is not the time.
+enum Axis {
+    /// A function of the state.
+    Function(Function),
+    /// An angle, read off the state as the integration carries it.
+    Angle {
+        /// The axis' label.
+        label: String,
+        /// The angle's place in the state.
+        index: usize,
+    },
+}
+
+impl Axis {
+    fn label(&self) -> &str {
+        match self {
+            Axis::Function(f) => &f.label,
+            Axis::Angle { label, .. } => label,
+        }
+    }
+}
+
 /// Integrates, draws the chart, writes it (and the data), prints the table.
 pub fn run(job: &PlotJob) -> anyhow::Result<bool> {
     let args = &job.args;
@@ -191,11 +214,14 @@ pub fn run(job: &PlotJob) -> anyhow::Result<bool> {
     for (label, f) in &input.curves {
         rows.push(function(label, f)?);
     }
-    let against = input
-        .against
-        .as_ref()
-        .map(|(l, f)| function(l, f))
-        .transpose()?;
+    let against = match &input.against {
+        None => None,
+        Some(Against::Function(l, f)) => Some(Axis::Function(function(l, f)?)),
+        Some(Against::Angle(label, v)) => Some(Axis::Angle {
+            label: format!("{label} (not reduced mod 2π)"),
+            index: v.index(),
+        }),
+    };
     let section = input
         .section
         .as_ref()
@@ -256,7 +282,8 @@ pub fn run(job: &PlotJob) -> anyhow::Result<bool> {
         };
         orbits.push(Orbit {
             axis: match &against {
-                Some(f) => values(f)?,
+                Some(Axis::Function(f)) => values(f)?,
+                Some(Axis::Angle { index, .. }) => path.values(|s| s[*index]),
                 None => path.times.clone(),
             },
             rows: rows
@@ -293,7 +320,7 @@ pub fn run(job: &PlotJob) -> anyhow::Result<bool> {
         Some(_) => Style::Dots,
         None => Style::Lines,
     };
-    let axis_label = against.as_ref().map_or("t", |f| f.label.as_str());
+    let axis_label = against.as_ref().map_or("t", Axis::label);
     let svg = chart::svg(&title, axis_label, &drawn, style)?;
     let to_stdout = args.output.as_os_str() == "-";
     if to_stdout {
@@ -305,8 +332,8 @@ pub fn run(job: &PlotJob) -> anyhow::Result<bool> {
     if let Some(data) = &args.data {
         let columns: Vec<&str> = against
             .iter()
-            .chain(&rows[1..])
-            .map(|f| f.label.as_str())
+            .map(Axis::label)
+            .chain(rows[1..].iter().map(|f| f.label.as_str()))
             .collect();
         std::fs::write(data, csv(&columns, against.is_some(), &orbits))
             .with_context(|| format!("cannot write {}", data.display()))?;

@@ -25,11 +25,22 @@ pub struct PlotInput {
     /// The curves, each a label and a real function at the parameters' values: a complex
     /// function is two curves, its real and imaginary parts.
     pub curves: Vec<(String, Expr)>,
-    /// What the horizontal axis shows, if not the time: a label and a real function.
-    pub against: Option<(String, Expr)>,
+    /// What the horizontal axis shows, if not the time.
+    pub against: Option<Against>,
     /// The function whose upward zeros are kept instead of equally spaced times (a
     /// Poincaré section), if any: a label and a real function.
     pub section: Option<(String, Expr)>,
+}
+
+/// What a plot's horizontal axis shows instead of the time.
+#[derive(Clone, Debug)]
+pub enum Against {
+    /// A real function: its label and value.
+    Function(String, Expr),
+    /// An angle as the integration carries it, not reduced modulo 2π (a pendulum that goes
+    /// round moves to the right), so that `p_θ --against θ` draws a phase portrait: its
+    /// label and the variable.
+    Angle(String, Var),
 }
 
 /// What a plot draws, as given on the command line: the curves, what they are drawn against
@@ -84,7 +95,15 @@ impl LoadedSystem {
             None => Ok(None),
             Some(src) => self.real_drawable(option, src, &values).map(Some),
         };
-        let against = real("--against", functions.against)?;
+        let vars = self.system.vars();
+        let angle = functions
+            .against
+            .and_then(|src| vars.lookup(src.trim()))
+            .filter(|&v| vars.variable(v).kind() == VarKind::Angle);
+        let against = match angle {
+            Some(v) => Some(Against::Angle(self.display(v), v)),
+            None => real("--against", functions.against)?.map(|(l, f)| Against::Function(l, f)),
+        };
         let section = real("--section", functions.section)?;
         Ok(PlotInput {
             parameters,

@@ -879,3 +879,62 @@ fn cli_plot_warns_when_the_energy_drifts() {
     );
     assert_eq!(stderr("10000", "rk4"), "");
 }
+
+/// `--against` an angle draws a phase portrait, the angle as the integration carries it: the
+/// pendulum `p_t²/2 − g cos t` at `g = 1` librates between `±π/3` from `p_t = 1` (`H = −1/2`,
+/// so `cos t ≥ 1/2`), and from `p_t = 3` (`H = 7/2`, so `p_t ≥ √5`) goes round, past `2π`
+/// within `t = 10`, which an angle reduced modulo `2π` would hide. It was refused.
+#[test]
+fn cli_plot_against_an_angle_draws_a_phase_portrait() {
+    let dir = Path::new(env!("CARGO_TARGET_TMPDIR")).join("plot");
+    std::fs::create_dir_all(&dir).expect("a scratch directory");
+    let file = dir.join("pendulum.toml");
+    std::fs::write(
+        &file,
+        "name = \"pendulum\"\nhamiltonian = \"p_t^2/2 - g*cos(t)\"\n\
+         [phase_space]\nangles = [\"t\"]\nparameters = [\"g\"]\n",
+    )
+    .expect("the file is written");
+    let (svg, data) = (scratch_file("pendulum.svg"), scratch_file("pendulum.csv"));
+    run(
+        &[
+            "plot",
+            file.to_str().unwrap(),
+            "p_t",
+            "--against",
+            "t",
+            "--at",
+            "g = 1",
+            "--from",
+            "t = 0, p_t = 1",
+            "--from",
+            "t = 0, p_t = 3",
+            "--time",
+            "10",
+            "-o",
+            svg.to_str().unwrap(),
+            "--data",
+            data.to_str().unwrap(),
+        ],
+        0,
+    );
+    let drawn = std::fs::read_to_string(&svg).expect("the chart was written");
+    assert!(
+        drawn.contains("t (not reduced mod 2π)"),
+        "the axis says what it shows"
+    );
+    let (header, rows) = csv_rows(&data);
+    assert_eq!(header, "orbit,t,\"t (not reduced mod 2π)\",\"p_t\"");
+    let angles = |orbit: f64| rows.iter().filter(move |r| r[0] == orbit).map(|r| r[2]);
+    let turning = std::f64::consts::FRAC_PI_3 + 1e-3;
+    assert!(
+        angles(1.0).all(|a| a.abs() <= turning),
+        "the first orbit librates"
+    );
+    assert!(angles(1.0).any(|a| a > 1.0) && angles(1.0).any(|a| a < -1.0));
+    let last = angles(2.0).next_back().expect("the second orbit");
+    assert!(
+        last > 2.0 * std::f64::consts::PI,
+        "the second orbit goes round: {last}"
+    );
+}
