@@ -102,7 +102,7 @@ pub fn svg(
         }
         chart
             .configure_series_labels()
-            .position(SeriesLabelPosition::UpperRight)
+            .position(legend_corner(curves, xs, ys))
             .background_style(WHITE.mix(0.85))
             .border_style(BLACK.mix(0.4))
             .label_font(("sans-serif", 16))
@@ -136,6 +136,45 @@ fn span(values: impl Iterator<Item = f64>) -> Option<(f64, f64)> {
     };
     // plotters maps the range to pixels through its width.
     (lo.is_finite() && hi.is_finite() && (hi - lo).is_finite()).then_some((lo, hi))
+}
+
+/// The corner of the plotting area where the legend covers the fewest points: the legend
+/// is about a quarter of the width wide, and a line of about 4 % of the height a curve
+/// tall; ties go to the upper right, then the upper left.
+fn legend_corner(curves: &[Curve], xs: (f64, f64), ys: (f64, f64)) -> SeriesLabelPosition {
+    let width = 0.25;
+    let height = (0.04 * curves.len() as f64 + 0.03).min(0.9);
+    let corners = [
+        (SeriesLabelPosition::UpperRight, true, true),
+        (SeriesLabelPosition::UpperLeft, false, true),
+        (SeriesLabelPosition::LowerRight, true, false),
+        (SeriesLabelPosition::LowerLeft, false, false),
+    ];
+    let covered = |right: bool, upper: bool| {
+        curves
+            .iter()
+            .flat_map(|c| &c.points)
+            .filter(|&&(x, y)| {
+                let fx = (x - xs.0) / (xs.1 - xs.0);
+                let fy = (y - ys.0) / (ys.1 - ys.0);
+                let in_x = if right {
+                    fx >= 1.0 - width
+                } else {
+                    fx <= width
+                };
+                let in_y = if upper {
+                    fy >= 1.0 - height
+                } else {
+                    fy <= height
+                };
+                in_x && in_y
+            })
+            .count()
+    };
+    corners
+        .into_iter()
+        .min_by_key(|&(_, right, upper)| covered(right, upper))
+        .map_or(SeriesLabelPosition::UpperRight, |c| c.0)
 }
 
 /// Decimals enough to tell apart the ticks of an axis over `range` (about ten of them).
@@ -195,6 +234,37 @@ mod tests {
         // One a point, and one in the legend.
         assert_eq!(svg.matches("<circle").count(), 3 + 1);
         assert!(!svg.contains(r#"stroke-width="2""#), "no line");
+    }
+
+    #[test]
+    fn the_legend_goes_to_the_emptiest_corner() {
+        let curve = |points: Vec<(f64, f64)>| Curve {
+            label: "p".into(),
+            points,
+        };
+        let (xs, ys) = ((0.0, 1.0), (0.0, 1.0));
+        // A rising line fills the lower left and upper right corners.
+        let rising = curve(
+            (0..=100)
+                .map(|k| (k as f64 / 100.0, k as f64 / 100.0))
+                .collect(),
+        );
+        let corner = legend_corner(std::slice::from_ref(&rising), xs, ys);
+        assert!(
+            matches!(corner, SeriesLabelPosition::UpperLeft),
+            "{corner:?}"
+        );
+        // A falling one fills the upper left and lower right: the upper right is free.
+        let falling = curve(
+            (0..=100)
+                .map(|k| (k as f64 / 100.0, 1.0 - k as f64 / 100.0))
+                .collect(),
+        );
+        let corner = legend_corner(&[falling], xs, ys);
+        assert!(
+            matches!(corner, SeriesLabelPosition::UpperRight),
+            "{corner:?}"
+        );
     }
 
     #[test]
