@@ -277,14 +277,7 @@ pub(crate) fn parse_condition(
             _ => None,
         };
         let rhs = &at.unwrap_or(&assignments[0]).rhs;
-        let start = rhs.value.len() - rhs.value.trim_start().len();
-        let end = rhs.value.trim_end().len();
-        rhs.error(
-            source,
-            ErrorKind::Condition,
-            Span::new(start, end),
-            e.to_string(),
-        )
+        rhs.error(source, ErrorKind::Condition, rhs.trimmed_span(), e.to_string())
     })
 }
 

@@ -290,9 +290,7 @@ fn number(
     match value.as_constant() {
         Some(c) if c.is_real() => Ok(c.re),
         _ => {
-            let lead = rhs.value.len() - rhs.value.trim_start().len();
-            let span = Span::new(lead, rhs.value.trim_end().len());
-            Err(rhs.error(source, ErrorKind::Condition, span, why))
+            Err(rhs.error(source, ErrorKind::Condition, rhs.trimmed_span(), why))
         }
     }
 }

@@ -136,6 +136,12 @@ impl Text {
         self.source_span(Span::new(0, self.value.len()))
     }
 
+    /// The span of the value without its surrounding spaces (a condition's ` 2*M`).
+    pub fn trimmed_span(&self) -> Span {
+        let lead = self.value.len() - self.value.trim_start().len();
+        Span::new(lead, self.value.trim_end().len())
+    }
+
     /// An error at a span inside the value.
     pub fn error(
         &self,
