@@ -9,7 +9,7 @@ use std::sync::Mutex;
 
 use brackets::{PhaseSpace, System};
 use toml::Spanned;
-use trigpoly::{Expr, Limits, VarSet, RESERVED};
+use trigpoly::{AlgebraError, Expr, Limits, VarSet, RESERVED};
 
 use super::claims::ClaimSpec;
 use super::error::{locate_bytes, ErrorKind, FileError};
@@ -241,15 +241,17 @@ impl<'a> Builder<'a> {
         let span = model.phase_space.span();
         let vars = builder.build().map_err(|e| {
             // Two names that one spelling finds (`omega` and `ω`): shown at the second.
-            let message = e.to_string();
-            let at = ps
-                .coordinates
-                .iter()
-                .chain(&ps.angles)
-                .chain(&ps.parameters)
-                .find(|n| message.starts_with(&format!("variable {:?} ", n.get_ref())))
-                .map_or(span.clone(), |n| n.span());
-            self.error(ErrorKind::Name, at, message)
+            let at = match &e {
+                AlgebraError::DeclaredTwice { name, .. } => ps
+                    .coordinates
+                    .iter()
+                    .chain(&ps.angles)
+                    .chain(&ps.parameters)
+                    .find(|n| n.get_ref() == name)
+                    .map(|n| n.span()),
+                _ => None,
+            };
+            self.error(ErrorKind::Name, at.unwrap_or(span.clone()), e.to_string())
         })?;
         let pairs: Vec<(String, String)> = qs
             .iter()

@@ -46,7 +46,24 @@ pub enum AlgebraError {
     /// A point that is not on the unit circle given for an angle.
     #[error("the value of {0} must be a point (cos, sin) on the unit circle with cos² + sin² = 1")]
     NotOnUnitCircle(String),
+    /// A variable declared twice, or under two names that one spelling finds (`omega`, `ω`).
+    #[error("variable {name:?} is declared twice{}", declared_twice_how(.name, .first))]
+    DeclaredTwice {
+        /// The second declaration's name.
+        name: String,
+        /// The first's.
+        first: String,
+    },
     /// Something else invalid, with its explanation.
     #[error("{0}")]
     Invalid(String),
+}
+
+/// How a second declaration meets the first, when the names differ.
+fn declared_twice_how(name: &str, first: &str) -> String {
+    if name == first {
+        String::new()
+    } else {
+        format!(" (as {first:?}, which one spelling finds with it)")
+    }
 }

@@ -500,15 +500,10 @@ impl VarSetBuilder {
             }
             for w in &self.vars[..k] {
                 if w.spelled_alike(v) {
-                    let how = if w.name == v.name {
-                        String::new()
-                    } else {
-                        format!(" (as {:?}, which one spelling finds with it)", w.name)
-                    };
-                    return Err(AlgebraError::Invalid(format!(
-                        "variable {:?} is declared twice{how}",
-                        v.name
-                    )));
+                    return Err(AlgebraError::DeclaredTwice {
+                        name: v.name.clone(),
+                        first: w.name.clone(),
+                    });
                 }
             }
         }
