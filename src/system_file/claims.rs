@@ -277,7 +277,12 @@ pub(crate) fn parse_condition(
             _ => None,
         };
         let rhs = &at.unwrap_or(&assignments[0]).rhs;
-        rhs.error(source, ErrorKind::Condition, rhs.trimmed_span(), e.to_string())
+        rhs.error(
+            source,
+            ErrorKind::Condition,
+            rhs.trimmed_span(),
+            e.to_string(),
+        )
     })
 }
 

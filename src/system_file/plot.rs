@@ -289,9 +289,7 @@ fn number(
 ) -> Result<Rational, FileError> {
     match value.as_constant() {
         Some(c) if c.is_real() => Ok(c.re),
-        _ => {
-            Err(rhs.error(source, ErrorKind::Condition, rhs.trimmed_span(), why))
-        }
+        _ => Err(rhs.error(source, ErrorKind::Condition, rhs.trimmed_span(), why)),
     }
 }
 

@@ -886,15 +886,7 @@ fn cli_plot_warns_when_the_energy_drifts() {
 /// within `t = 10`, which an angle reduced modulo `2π` would hide. It was refused.
 #[test]
 fn cli_plot_against_an_angle_draws_a_phase_portrait() {
-    let dir = Path::new(env!("CARGO_TARGET_TMPDIR")).join("plot");
-    std::fs::create_dir_all(&dir).expect("a scratch directory");
-    let file = dir.join("pendulum.toml");
-    std::fs::write(
-        &file,
-        "name = \"pendulum\"\nhamiltonian = \"p_t^2/2 - g*cos(t)\"\n\
-         [phase_space]\nangles = [\"t\"]\nparameters = [\"g\"]\n",
-    )
-    .expect("the file is written");
+    let file = crate::scratch_text("plot", "pendulum.toml", crate::PENDULUM);
     let (svg, data) = (scratch_file("pendulum.svg"), scratch_file("pendulum.csv"));
     run(
         &[

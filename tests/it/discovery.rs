@@ -945,18 +945,12 @@ fn the_space_is_described_in_the_files_variables() {
 /// A system file in a scratch directory, named `name`, with Hamiltonian `h` and the
 /// comma-separated `angles`; its path.
 fn scratch_system(name: &str, h: &str, angles: &str) -> String {
-    let dir = std::path::Path::new(env!("CARGO_TARGET_TMPDIR")).join("discovery");
-    std::fs::create_dir_all(&dir).expect("a scratch directory");
-    let file = dir.join(format!("{name}.toml"));
     let angles: Vec<String> = angles.split(", ").map(|a| format!("{a:?}")).collect();
-    std::fs::write(
-        &file,
-        format!(
-            "name = {name:?}\nhamiltonian = {h:?}\n[phase_space]\nangles = [{}]\n",
-            angles.join(", ")
-        ),
-    )
-    .expect("the file is written");
+    let text = format!(
+        "name = {name:?}\nhamiltonian = {h:?}\n[phase_space]\nangles = [{}]\n",
+        angles.join(", ")
+    );
+    let file = crate::scratch_text("discovery", &format!("{name}.toml"), &text);
     file.to_str().expect("a UTF-8 path").to_string()
 }
 
@@ -988,11 +982,9 @@ fn a_complex_hamiltonian_is_refused() {
 /// printed as `{U, V} = 4W` under a header that said the coefficients were lifted.
 #[test]
 fn a_closure_that_cannot_lift_says_where_it_holds() {
-    let dir = std::path::Path::new(env!("CARGO_TARGET_TMPDIR")).join("discovery");
-    std::fs::create_dir_all(&dir).expect("a scratch directory");
-    let file = dir.join("unliftable.toml");
-    std::fs::write(
-        &file,
+    let file = crate::scratch_text(
+        "discovery",
+        "unliftable.toml",
         r#"name = "unliftable"
 hamiltonian = "p_x^2/2 + p_y^2/2"
 [phase_space]
@@ -1011,8 +1003,7 @@ value = "a*x*p_x"
 name = "T"
 value = "b*x*p_x + a*y*p_y"
 "#,
-    )
-    .expect("the file is written");
+    );
     let file = file.to_str().expect("a UTF-8 path");
     let args = ["closure", file, "U", "V", "W", "T", "--no-timings"];
     let o = superint(&args);
@@ -1048,15 +1039,7 @@ value = "b*x*p_x + a*y*p_y"
 /// weights left out `∂H/∂t`, so `g` had none and the energy held "at g = 1 only").
 #[test]
 fn a_pendulums_energy_is_lifted_to_its_parameter() {
-    let dir = std::path::Path::new(env!("CARGO_TARGET_TMPDIR")).join("discovery");
-    std::fs::create_dir_all(&dir).expect("a scratch directory");
-    let file = dir.join("pendulum.toml");
-    std::fs::write(
-        &file,
-        "name = \"pendulum\"\nhamiltonian = \"p_t^2/2 - g*cos(t)\"\n\
-         [phase_space]\nangles = [\"t\"]\nparameters = [\"g\"]\n",
-    )
-    .expect("the file is written");
+    let file = crate::scratch_text("discovery", "pendulum.toml", crate::PENDULUM);
     let o = superint(&["search", file.to_str().expect("UTF-8"), "--no-timings"]);
     assert_eq!(o.status.code(), Some(0));
     let out = String::from_utf8(o.stdout).expect("UTF-8");

@@ -89,6 +89,20 @@ pub fn assert_refuted(
     }
 }
 
+/// Writes `text` to the file `name` in the scratch directory `dir` (under Cargo's temporary
+/// directory for tests), and returns its path.
+pub fn scratch_text(dir: &str, name: &str, text: &str) -> std::path::PathBuf {
+    let dir = std::path::Path::new(env!("CARGO_TARGET_TMPDIR")).join(dir);
+    std::fs::create_dir_all(&dir).expect("a scratch directory");
+    let file = dir.join(name);
+    std::fs::write(&file, text).expect("the file is written");
+    file
+}
+
+/// The pendulum `p_t²/2 − g cos t` as a system file: one angle, the parameter `g`.
+pub const PENDULUM: &str = "name = \"pendulum\"\nhamiltonian = \"p_t^2/2 - g*cos(t)\"\n\
+                            [phase_space]\nangles = [\"t\"]\nparameters = [\"g\"]\n";
+
 mod claims;
 mod cli;
 mod discovery;
