@@ -80,21 +80,41 @@ impl LoadedSystem {
 
     /// An expression tree in the paper's notation.
     pub(crate) fn pretty(&self, tree: &Tree) -> String {
-        self.print(tree).text
+        self.print(tree, self.spaced_products(tree)).text
     }
 
     /// An expression tree in the paper's notation as the left factor of a product: a sum or a
     /// quotient in parentheses (`(iωm − 3iωn) W_{m,n}`).
     pub(crate) fn pretty_factor(&self, tree: &Tree) -> String {
-        self.print(tree).wrapped(PRODUCT).text
+        self.print(tree, self.spaced_products(tree))
+            .wrapped(PRODUCT)
+            .text
     }
 
-    fn print(&self, tree: &Tree) -> Printed {
+    /// Whether every product of `tree` is written with a space (`x y`), because its one-letter
+    /// names side by side could read back as another name of the system (a variable or
+    /// function `xy`).
+    fn spaced_products(&self, tree: &Tree) -> bool {
+        let mut written = Vec::new();
+        names_in(tree, &mut written);
+        let written: Vec<String> = written.iter().map(|n| self.display_name(n)).collect();
+        let vars = self.system.vars();
+        let functions = self.system.functions().iter();
+        trigpoly::juxtaposition_is_ambiguous(
+            vars.vars()
+                .flat_map(|v| vars.variable(v).spellings())
+                .chain(functions.flat_map(|f| [f.name.as_str(), f.display.as_str()])),
+            written.iter().map(String::as_str),
+        )
+    }
+
+    /// `tree` printed, every product spaced if `spaced`.
+    fn print(&self, tree: &Tree, spaced: bool) -> Printed {
         match &tree.kind {
             ExprKind::Integer(n) => Printed::atom(n.to_string()),
             ExprKind::Name(n) => Printed::atom(self.display_name(n)),
             ExprKind::Neg(a) => {
-                let a = self.print(a).wrapped(QUOTIENT);
+                let a = self.print(a, spaced).wrapped(QUOTIENT);
                 Printed {
                     text: format!("−{}", a.text),
                     prec: NEG,
@@ -108,8 +128,8 @@ impl LoadedSystem {
                 } else {
                     "−"
                 };
-                let a = self.print(a);
-                let b = self.print(b).wrapped(QUOTIENT);
+                let a = self.print(a, spaced);
+                let b = self.print(b, spaced).wrapped(QUOTIENT);
                 let b = if b.prec == NEG { b.wrapped(ATOM) } else { b };
                 Printed {
                     text: format!("{} {op} {}", a.text, b.text),
@@ -119,8 +139,8 @@ impl LoadedSystem {
                 }
             }
             ExprKind::Mul(a, b) => {
-                let a = self.print(a).wrapped(PRODUCT);
-                let b = self.print(b);
+                let a = self.print(a, spaced).wrapped(PRODUCT);
+                let b = self.print(b, spaced);
                 let b = if b.prec < PRODUCT || b.prec == NEG {
                     b.wrapped(ATOM)
                 } else {
@@ -132,7 +152,7 @@ impl LoadedSystem {
                     "·"
                 } else if number_left && !a.text.contains(|c: char| c.is_alphabetic()) {
                     ""
-                } else if a.last_long || b.first_long {
+                } else if spaced || a.last_long || b.first_long {
                     " "
                 } else {
                     ""
@@ -145,8 +165,8 @@ impl LoadedSystem {
                 }
             }
             ExprKind::Div(a, b) => {
-                let a = self.print(a).wrapped(QUOTIENT);
-                let b = self.print(b).wrapped(POWER);
+                let a = self.print(a, spaced).wrapped(QUOTIENT);
+                let b = self.print(b, spaced).wrapped(POWER);
                 Printed {
                     text: format!("{}/{}", a.text, b.text),
                     prec: QUOTIENT,
@@ -155,7 +175,7 @@ impl LoadedSystem {
                 }
             }
             ExprKind::Pow(a, b) => {
-                let base = self.print(a).wrapped(ATOM);
+                let base = self.print(a, spaced).wrapped(ATOM);
                 let small = |n: &num_bigint::BigInt| i64::try_from(n.clone()).ok();
                 let exponent = match &b.kind {
                     ExprKind::Integer(n) => small(n).map(superscript),
@@ -167,7 +187,7 @@ impl LoadedSystem {
                 };
                 let text = match exponent {
                     Some(e) => format!("{}{e}", base.text),
-                    None => format!("{}^{}", base.text, self.print(b).wrapped(ATOM).text),
+                    None => format!("{}^{}", base.text, self.print(b, spaced).wrapped(ATOM).text),
                 };
                 Printed {
                     text,
@@ -177,7 +197,7 @@ impl LoadedSystem {
                 }
             }
             ExprKind::Call(f, _, args) => {
-                let args: Vec<String> = args.iter().map(|a| self.pretty(a)).collect();
+                let args: Vec<String> = args.iter().map(|a| self.print(a, spaced).text).collect();
                 // The paper's (and LaTeX's) real and imaginary parts are `Re` and `Im`.
                 let f = match f.as_str() {
                     "re" => "Re",
@@ -190,11 +210,34 @@ impl LoadedSystem {
                 p
             }
             ExprKind::Bracket(a, b) => {
-                let mut p = Printed::atom(format!("{{{}, {}}}", self.pretty(a), self.pretty(b)));
+                let mut p = Printed::atom(format!(
+                    "{{{}, {}}}",
+                    self.print(a, spaced).text,
+                    self.print(b, spaced).text
+                ));
                 p.first_long = true;
                 p.last_long = true;
                 p
             }
         }
+    }
+}
+
+/// The names of `tree`, as written, into `out`.
+fn names_in<'t>(tree: &'t Tree, out: &mut Vec<&'t str>) {
+    match &tree.kind {
+        ExprKind::Integer(_) => {}
+        ExprKind::Name(n) => out.push(n),
+        ExprKind::Neg(a) => names_in(a, out),
+        ExprKind::Add(a, b)
+        | ExprKind::Sub(a, b)
+        | ExprKind::Mul(a, b)
+        | ExprKind::Div(a, b)
+        | ExprKind::Pow(a, b)
+        | ExprKind::Bracket(a, b) => {
+            names_in(a, out);
+            names_in(b, out);
+        }
+        ExprKind::Call(_, _, args) => args.iter().for_each(|a| names_in(a, out)),
     }
 }

@@ -1102,3 +1102,39 @@ fn the_same_id_in_two_files_is_two_claims() {
         "{summary}"
     );
 }
+
+/// A claim is echoed so that it reads back: where one-letter names side by side spell another
+/// name of the system (a coordinate `xy`, a function `Mx`), every product is spaced.
+#[test]
+fn echoed_products_do_not_spell_another_name() {
+    let dir = scratch("names-side-by-side");
+    let coordinate = "name = \"xy\"\nhamiltonian = \"(p_x^2 + p_y^2 + p_xy^2)/2\"\n\
+                      [phase_space]\ncoordinates = [\"x\", \"y\", \"xy\"]\n\
+                      [[claim]]\nid = \"product\"\nclaim = \"{x*y, p_xy} = 0\"\n";
+    let function = "name = \"Mx\"\nhamiltonian = \"p_x^2/2 + M*x\"\n\
+                    [phase_space]\ncoordinates = [\"x\"]\nparameters = [\"M\"]\n\
+                    [[function]]\nname = \"Mx\"\nvalue = \"M*p_x\"\n\
+                    [[claim]]\nid = \"function\"\nclaim = \"{Mx, M*x} = -M^2\"\n";
+    std::fs::write(dir.join("coordinate.toml"), coordinate).expect("write");
+    std::fs::write(dir.join("function.toml"), function).expect("write");
+    let o = superint_in(&dir, &["check", "coordinate.toml", "function.toml"]);
+    assert_eq!(o.status.code(), Some(0), "{}", text(&o.stderr));
+    let out = text(&o.stdout);
+    assert!(out.contains("{x y, p_xy} = 0 "), "{out}");
+    assert!(out.contains("{Mx, M x} = −M² "), "{out}");
+    // Where nothing is spelled that way, factors stay side by side, as in the paper.
+    let plain = superint_in(
+        root(),
+        &[
+            "expand",
+            "systems/harmonic-rotor.toml",
+            "M*x*y",
+            "--no-timings",
+        ],
+    );
+    assert!(
+        text(&plain.stdout).contains("Mxy = Mxy"),
+        "{}",
+        text(&plain.stdout)
+    );
+}

@@ -60,7 +60,8 @@ pub use poly::{CosSinTerm, MonomialIndex, Point, Poly, Term, TrigMonomial};
 pub use print::{superscript, Style};
 pub use syntax::{Excerpt, ParseError, Span};
 pub use varset::{
-    Limits, Var, VarKind, VarSet, VarSetBuilder, Variable, Vars, FIELD_BITS, RESERVED,
+    juxtaposition_is_ambiguous, Limits, Var, VarKind, VarSet, VarSetBuilder, Variable, Vars,
+    FIELD_BITS, RESERVED,
 };
 
 /// Polynomials over Q(i): the type of phase-space functions (angles need `i`).

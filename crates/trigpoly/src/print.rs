@@ -77,7 +77,7 @@ pub(crate) fn render_terms(vars: &VarSet, terms: &[CosSinTerm], style: Style) ->
     if terms.is_empty() {
         return "0".into();
     }
-    let names = Names::new(vars, style);
+    let names = Names::new(vars, terms, style);
     let mut out = String::new();
     let mut k = 0;
     while k < terms.len() {
@@ -220,10 +220,14 @@ struct Names {
     order: Vec<usize>,
     /// The angles' indices, in declaration order.
     angles: Vec<usize>,
+    /// Whether every variable is a wide factor, spaced from its neighbours even when its name
+    /// is one letter, because the element's one-letter names side by side could spell another
+    /// variable ([`VarSet::juxtaposition_is_ambiguous`]: `x y` beside a variable `xy`).
+    all_wide: bool,
 }
 
 impl Names {
-    fn new(vars: &VarSet, style: Style) -> Self {
+    fn new(vars: &VarSet, terms: &[CosSinTerm], style: Style) -> Self {
         let names = vars
             .vars()
             .map(|v| {
@@ -247,6 +251,11 @@ impl Names {
             names,
             order: order.iter().map(|v| v.index()).collect(),
             angles: vars.angles().map(|v| v.index()).collect(),
+            all_wide: style == Style::Unicode
+                && vars.juxtaposition_is_ambiguous(
+                    vars.vars()
+                        .filter(|v| terms.iter().any(|t| t.exps[v.index()] != 0)),
+                ),
         }
     }
 }
@@ -319,7 +328,8 @@ fn write_term(
             .filter(|&&j| exps[j] != 0 && (exps[j] > 0) == positive)
         {
             let name = &names.names[j];
-            product.next(out, style == Style::Unicode && name.chars().count() > 1);
+            let wide = names.all_wide || (style == Style::Unicode && name.chars().count() > 1);
+            product.next(out, wide);
             write_power(out, name, exps[j].abs(), style);
         }
     };

@@ -67,18 +67,44 @@ impl Variable {
             || self.unicode == spelling
             || self.spelled_out.as_deref() == Some(spelling)
     }
-    /// Whether a spelling finds both variables in a lookup (`omega` and `ω`, or a name and a
-    /// variable shown as that name).
-    fn spelled_alike(&self, other: &Variable) -> bool {
+    /// Every spelling [`VarSet::lookup`] finds the variable by: its name, its unicode form,
+    /// and that form with its Greek letters spelled out.
+    pub fn spellings(&self) -> impl Iterator<Item = &str> {
         [
-            Some(&self.name),
-            Some(&self.unicode),
-            self.spelled_out.as_ref(),
+            Some(self.name.as_str()),
+            Some(self.unicode.as_str()),
+            self.spelled_out.as_deref(),
         ]
         .into_iter()
         .flatten()
-        .any(|s| other.spelled(s))
     }
+    /// Whether a spelling finds both variables in a lookup (`omega` and `ω`, or a name and a
+    /// variable shown as that name).
+    fn spelled_alike(&self, other: &Variable) -> bool {
+        self.spellings().any(|s| other.spelled(s))
+    }
+}
+
+/// Whether one-letter names written side by side could read back as another name: a name of
+/// `declared` of several letters, each of them one of the one-letter names in `written` or the
+/// imaginary unit `i` (`xy` when `x` and `y` are written, `omega` when `o`, `m`, `e`, `g` and
+/// `a` are). The parser reads a run of letters as a declared name before it splits it into a
+/// product, so such a product must be written with spaces (`x y`).
+pub fn juxtaposition_is_ambiguous<'a>(
+    declared: impl IntoIterator<Item = &'a str>,
+    written: impl IntoIterator<Item = &'a str>,
+) -> bool {
+    let mut letters: Vec<char> = written
+        .into_iter()
+        .filter_map(|s| {
+            let mut chars = s.chars();
+            chars.next().filter(|_| chars.next().is_none())
+        })
+        .collect();
+    letters.push('i');
+    declared
+        .into_iter()
+        .any(|s| s.chars().nth(1).is_some() && s.chars().all(|c| letters.contains(&c)))
 }
 
 /// Limits that stop runaway expansions with a clear error instead of exhausting memory.
@@ -328,6 +354,16 @@ impl VarSet {
             .iter()
             .position(|v| v.spelled(name))
             .map(|k| Var(k as u16))
+    }
+
+    /// Whether the one-letter names of the variables `written`, side by side, could read back
+    /// as another variable ([`juxtaposition_is_ambiguous`]): `xy` beside a variable `xy`.
+    pub fn juxtaposition_is_ambiguous(&self, written: impl IntoIterator<Item = Var>) -> bool {
+        let written: Vec<&str> = written
+            .into_iter()
+            .flat_map(|v| self.variable(v).spellings())
+            .collect();
+        juxtaposition_is_ambiguous(self.vars.iter().flat_map(Variable::spellings), written)
     }
 
     /// The limits in force.

@@ -411,3 +411,62 @@ fn a_name_before_parentheses_is_a_product() {
         err.message
     );
 }
+
+/// One-letter names side by side read back as one name when a variable is spelled that way:
+/// beside a coordinate `xy`, the product x·y prints `x y`, and every factor is spaced; where
+/// no name is spelled by one-letter names, factors stay side by side (`Mω²xy`).
+#[test]
+fn one_letter_names_are_spaced_where_side_by_side_they_spell_another_name() {
+    let vars = VarSet::builder()
+        .coordinate("x")
+        .coordinate("y")
+        .coordinate("xy")
+        .parameter("a")
+        .parameter("b")
+        .parameter("ab")
+        .build()
+        .unwrap();
+    let f: G = p(&vars, "x*y + xy + a*b*x + ab*x + 2*i*x");
+    let text = f.to_string();
+    assert_eq!(text, "x y + a b x + ab x + 2i x + xy");
+    assert_eq!(
+        p::<GaussianRational>(&vars, &text),
+        f,
+        "{text:?} parses back"
+    );
+
+    // Only names the element writes count: without y, nothing spells `xy` or `ab`.
+    assert_eq!(p::<GaussianRational>(&vars, "a*x*xy").to_string(), "ax xy");
+    let plane = plane();
+    assert_eq!(
+        p::<GaussianRational>(&plane, "M*omega^2*x*y").to_string(),
+        "Mω²xy"
+    );
+}
+
+/// The names that make juxtaposition ambiguous: a declared name of several letters each of
+/// which is a one-letter name written (`omega` beside `o, m, e, g, a`), the imaginary unit
+/// counting as one; names with other characters (`p_x`, `G1`) never are.
+#[test]
+fn juxtaposition_is_ambiguous_for_names_spelled_by_written_one_letter_names() {
+    let ambiguous = |declared: &[&str], written: &[&str]| {
+        trigpoly::juxtaposition_is_ambiguous(declared.iter().copied(), written.iter().copied())
+    };
+    let declared = [
+        "x", "y", "xy", "o", "m", "e", "g", "a", "omega", "xi", "p", "p_x", "G1",
+    ];
+    assert!(ambiguous(&declared, &["x", "y"]));
+    assert!(ambiguous(&declared, &["o", "m", "e", "g", "a"]));
+    assert!(
+        ambiguous(&declared, &["x"]),
+        "i is the imaginary unit: `xi`"
+    );
+    assert!(
+        !ambiguous(&declared, &["y", "o", "m", "e", "g"]),
+        "no x, no a"
+    );
+    assert!(
+        !ambiguous(&declared, &["p", "G", "y", "xy"]),
+        "`p_x`, `G1` are not letters"
+    );
+}
