@@ -2,9 +2,10 @@
 
 use std::path::PathBuf;
 
+use super::input::load_system;
 use clap::Args;
 use superint::render::render;
-use superint::system_file::{bracket_report, load, LimitsOverride};
+use superint::system_file::{bracket_report, LimitsOverride};
 
 use super::limits::LimitsArgs;
 use super::output::{emit, Output};
@@ -21,7 +22,7 @@ F and G are expressions in the file's variables, functions and family instances 
 /// Arguments of `superint bracket`.
 #[derive(Debug, Args)]
 pub struct BracketArgs {
-    /// A system file (TOML, see docs/system-files.md).
+    /// A system file (TOML, see docs/system-files.md), or - for standard input.
     #[arg(value_name = "FILE")]
     file: PathBuf,
     /// The first expression.
@@ -64,7 +65,7 @@ impl BracketArgs {
 
 /// Computes the bracket and prints it.
 pub fn run(job: &BracketJob) -> anyhow::Result<bool> {
-    let file = load(&job.file, &job.limits)?;
+    let file = load_system(&job.file, &job.limits)?;
     let report = bracket_report(&file, &job.f, &job.g, job.when.as_deref())?;
     emit(&render(&report, job.output.format, &job.output.options))?;
     Ok(true)

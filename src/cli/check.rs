@@ -2,9 +2,10 @@
 
 use std::path::PathBuf;
 
+use super::input::load_system;
 use clap::Args;
 use superint::render::render;
-use superint::system_file::{check_report, load, LimitsOverride};
+use superint::system_file::{check_report, LimitsOverride};
 
 use super::limits::LimitsArgs;
 use super::output::{emit, Output};
@@ -25,7 +26,7 @@ marked expect = \"refuted\"), 1 a claim not as expected, 2 bad input.";
 /// Arguments of `superint check`.
 #[derive(Debug, Args)]
 pub struct CheckArgs {
-    /// System files (TOML, see docs/system-files.md).
+    /// System files (TOML, see docs/system-files.md); - reads one from standard input.
     #[arg(value_name = "FILE", required = true)]
     files: Vec<PathBuf>,
     #[command(flatten)]
@@ -56,7 +57,7 @@ pub fn run(job: &CheckJob) -> anyhow::Result<bool> {
     let files = job
         .files
         .iter()
-        .map(|p| load(p, &job.limits))
+        .map(|p| load_system(p, &job.limits))
         .collect::<Result<Vec<_>, _>>()?;
     let report = check_report(&files)?;
     emit(&render(&report, job.output.format, &job.output.options))?;

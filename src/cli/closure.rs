@@ -29,8 +29,9 @@ degree ≤ D is listed; each is checked by expanding it.";
 /// Arguments of `superint closure`.
 #[derive(Debug, Args)]
 pub struct ClosureArgs {
-    /// A system file followed by the generators (named functions, family instances such as
-    /// P_1_1, or names given by --define); with --system, only the generators.
+    /// A system file (or - for standard input) followed by the generators (named functions,
+    /// family instances such as P_1_1, or names given by --define); with --system, only the
+    /// generators.
     #[arg(value_name = "FILE NAMES", required = true, num_args = 1..)]
     args: Vec<String>,
     /// A built-in system instead of a file: harmonic, gravity, anisotropic-3-5,

@@ -2,9 +2,10 @@
 
 use std::path::PathBuf;
 
+use super::input::load_system;
 use clap::Args;
 use superint::render::render;
-use superint::system_file::{expand_report, load, LimitsOverride};
+use superint::system_file::{expand_report, LimitsOverride};
 
 use super::limits::LimitsArgs;
 use super::output::{emit, Output};
@@ -23,7 +24,7 @@ brackets {F, G}, re, im and conj; it is printed in the normal form every claim i
 /// Arguments of `superint expand`.
 #[derive(Debug, Args)]
 pub struct ExpandArgs {
-    /// A system file (TOML, see docs/system-files.md).
+    /// A system file (TOML, see docs/system-files.md), or - for standard input.
     #[arg(value_name = "FILE")]
     file: PathBuf,
     /// The expressions.
@@ -60,7 +61,7 @@ impl ExpandArgs {
 
 /// Expands the expressions and prints them.
 pub fn run(job: &ExpandJob) -> anyhow::Result<bool> {
-    let file = load(&job.file, &job.limits)?;
+    let file = load_system(&job.file, &job.limits)?;
     let report = expand_report(&file, &job.expressions, job.when.as_deref())?;
     emit(&render(&report, job.output.format, &job.output.options))?;
     Ok(true)

@@ -10,6 +10,7 @@ mod bracket;
 mod check;
 mod closure;
 mod expand;
+mod input;
 mod limits;
 mod output;
 mod paper;

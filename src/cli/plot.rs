@@ -6,10 +6,11 @@
 use std::fmt::Write as _;
 use std::path::PathBuf;
 
+use super::input::load_system;
 use anyhow::{bail, Context};
 use clap::{Args, ValueEnum};
 use superint::render::Format;
-use superint::system_file::{load, Against, LimitsOverride, PlotFunctions};
+use superint::system_file::{Against, LimitsOverride, PlotFunctions};
 use superint::trajectory::chart::{self, Curve, Style};
 use superint::trajectory::{nearest_f64, short, Flow, Method, Numeric};
 
@@ -40,7 +41,7 @@ zero upward, a Poincaré section, drawn as dots. Each --from is an orbit of its 
 /// Arguments of `superint plot`.
 #[derive(Debug, Args)]
 pub struct PlotArgs {
-    /// A system file (TOML, see docs/system-files.md).
+    /// A system file (TOML, see docs/system-files.md), or - for standard input.
     #[arg(value_name = "FILE")]
     file: PathBuf,
     /// What to draw: names, family instances or expressions of the file.
@@ -193,7 +194,7 @@ pub fn run(job: &PlotJob) -> anyhow::Result<bool> {
     if job.output.format == Format::Latex {
         bail!("plot prints its table as text, markdown or json, not latex");
     }
-    let file = load(&args.file, &job.limits)?;
+    let file = load_system(&args.file, &job.limits)?;
     let functions = PlotFunctions {
         curves: &args.curves,
         against: args.against.as_deref(),

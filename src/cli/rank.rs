@@ -2,9 +2,10 @@
 
 use std::path::PathBuf;
 
+use super::input::load_system;
 use clap::Args;
 use superint::render::render;
-use superint::system_file::{load, rank_report, LimitsOverride};
+use superint::system_file::{rank_report, LimitsOverride};
 
 use super::limits::LimitsArgs;
 use super::output::{emit, Output};
@@ -21,7 +22,7 @@ that is nonzero at an exact rational point, at most r by every larger minor vani
 /// Arguments of `superint rank`.
 #[derive(Debug, Args)]
 pub struct RankArgs {
-    /// A system file (TOML, see docs/system-files.md).
+    /// A system file (TOML, see docs/system-files.md), or - for standard input.
     #[arg(value_name = "FILE")]
     file: PathBuf,
     /// Functions: names, family instances or expressions.
@@ -58,7 +59,7 @@ impl RankArgs {
 
 /// Certifies the rank and prints it; whether it is the expected one (if one was given).
 pub fn run(job: &RankJob) -> anyhow::Result<bool> {
-    let file = load(&job.file, &job.limits)?;
+    let file = load_system(&job.file, &job.limits)?;
     let report = rank_report(&file, &job.functions, job.expect)?;
     emit(&render(&report, job.output.format, &job.output.options))?;
     Ok(report.all_as_expected())

@@ -3,6 +3,7 @@
 
 use std::path::PathBuf;
 
+use super::input::load_system;
 use anyhow::{anyhow, bail, Context};
 use brackets::search::{SearchOptions, SearchSpace, DEFAULT_MAX_PRODUCTS};
 use brackets::System;
@@ -11,7 +12,7 @@ use superint::discovery::{
     builtin_system, parse_condition, parse_fixed, parse_symbolic, search_report,
 };
 use superint::render::render;
-use superint::system_file::{load, LoadedSystem};
+use superint::system_file::LoadedSystem;
 use trigpoly::Expr;
 
 use super::limits::LimitsArgs;
@@ -40,7 +41,8 @@ planar-i, planar-ii.";
 /// Arguments of `superint search`.
 #[derive(Debug, Args)]
 pub struct SearchArgs {
-    /// A system file (TOML, see docs/system-files.md); or use --system.
+    /// A system file (TOML, see docs/system-files.md), or - for standard input; or use
+    /// --system.
     #[arg(value_name = "FILE", required_unless_present = "system")]
     file: Option<PathBuf>,
     /// A built-in system instead of a file: harmonic, gravity, anisotropic-3-5,
@@ -127,7 +129,6 @@ pub enum Subject {
 }
 
 impl Subject {
-    /// Loads a file or looks up a built-in system.
     /// Loads a file or looks up a built-in system (with its resonant functions `P11`, …
     /// when `resonant`).
     pub fn open(
@@ -146,7 +147,10 @@ impl Subject {
             };
         }
         let path = file.ok_or_else(|| anyhow!("give a system file or --system NAME"))?;
-        Ok(Subject::File(Box::new(load(path, &limits.settings())?)))
+        Ok(Subject::File(Box::new(load_system(
+            path,
+            &limits.settings(),
+        )?)))
     }
 
     pub fn system(&self) -> &System {

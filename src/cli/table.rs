@@ -2,9 +2,10 @@
 
 use std::path::PathBuf;
 
+use super::input::load_system;
 use clap::Args;
 use superint::render::render;
-use superint::system_file::{load, table_report, LimitsOverride};
+use superint::system_file::{table_report, LimitsOverride};
 
 use super::limits::LimitsArgs;
 use super::output::{emit, Output};
@@ -21,7 +22,7 @@ parameters where one exists, otherwise as an expression.";
 /// Arguments of `superint table`.
 #[derive(Debug, Args)]
 pub struct TableArgs {
-    /// A system file (TOML, see docs/system-files.md).
+    /// A system file (TOML, see docs/system-files.md), or - for standard input.
     #[arg(value_name = "FILE")]
     file: PathBuf,
     /// Named functions or family instances (K_1_1); every function of the file but H if none.
@@ -53,7 +54,7 @@ impl TableArgs {
 
 /// Computes the table and prints it.
 pub fn run(job: &TableJob) -> anyhow::Result<bool> {
-    let file = load(&job.file, &job.limits)?;
+    let file = load_system(&job.file, &job.limits)?;
     let report = table_report(&file, &job.names)?;
     emit(&render(&report, job.output.format, &job.output.options))?;
     Ok(true)

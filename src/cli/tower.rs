@@ -5,12 +5,13 @@ use std::io::IsTerminal;
 
 use std::path::PathBuf;
 
+use super::input::load_system;
 use anyhow::Context;
 use clap::Args;
 use indicatif::{ProgressBar, ProgressStyle};
 use superint::paper::{tower_report, TowerSystem};
 use superint::render::render;
-use superint::system_file::{family_tower_report, load, LimitsOverride};
+use superint::system_file::{family_tower_report, LimitsOverride};
 
 use super::limits::LimitsArgs;
 use super::output::{emit, Output};
@@ -53,7 +54,7 @@ pub struct TowerArgs {
           value_parser = clap::value_parser!(i64).range(1..=64))]
     max: i64,
     /// The system: harmonic, gravity, or a system file that declares a [[family]] with an
-    /// eigenvalue.
+    /// eigenvalue (- reads it from standard input).
     #[arg(long, value_name = "harmonic|gravity|FILE", default_value = "harmonic",
           value_parser = system_arg)]
     system: SystemArg,
@@ -119,7 +120,7 @@ pub fn run(job: &TowerJob) -> anyhow::Result<bool> {
             tower_report(*system, job.max, &mut progress).context("checking the tower")?
         }
         SystemArg::File(path) => {
-            let file = load(path, &job.limits.unwrap_or_default())?;
+            let file = load_system(path, &job.limits.unwrap_or_default())?;
             family_tower_report(&file, job.family.as_deref(), job.max, &mut progress)?
         }
     };

@@ -1138,3 +1138,61 @@ fn echoed_products_do_not_spell_another_name() {
         text(&plain.stdout)
     );
 }
+
+/// Runs the binary at the workspace root with `input` on its standard input.
+fn superint_piped(args: &[&str], input: &str) -> Output {
+    use std::io::Write;
+    let mut child = Command::new(env!("CARGO_BIN_EXE_superint"))
+        .args(args)
+        .current_dir(root())
+        .stdin(std::process::Stdio::piped())
+        .stdout(std::process::Stdio::piped())
+        .stderr(std::process::Stdio::piped())
+        .spawn()
+        .expect("the superint binary runs");
+    let mut stdin = child.stdin.take().expect("a pipe");
+    stdin
+        .write_all(input.as_bytes())
+        .expect("the input is written");
+    drop(stdin);
+    child.wait_with_output().expect("the binary ends")
+}
+
+/// `-` names a system file on standard input, for scripts that write systems on the fly: it
+/// checks as the file does, may be named twice (read once), and its errors say `<stdin>`.
+#[test]
+fn a_system_file_on_standard_input() {
+    let kepler = std::fs::read_to_string(root().join("systems/kepler.toml")).expect("read");
+    let from_file = run(&["check", "systems/kepler.toml", "--no-timings"], 0);
+    let o = superint_piped(&["check", "-", "--no-timings"], &kepler);
+    assert_eq!(o.status.code(), Some(0), "{}", text(&o.stderr));
+    // The same report but for the file's name (and the rule under it, as long as the name).
+    let without_rules = |out: &str| {
+        out.lines()
+            .filter(|l| !l.starts_with('═'))
+            .collect::<Vec<_>>()
+            .join("\n")
+    };
+    assert_eq!(
+        without_rules(&text(&o.stdout).replace("(<stdin>)", "(systems/kepler.toml)")),
+        without_rules(&from_file)
+    );
+    let o = superint_piped(&["check", "-", "-", "--no-timings"], &kepler);
+    assert!(
+        text(&o.stdout).contains("20 claims in 2 files: 14 proved, 6 refuted; all as expected"),
+        "{}",
+        text(&o.stdout)
+    );
+    let o = superint_piped(
+        &["expand", "-", "x*p_x"],
+        "name = \"broken\"\nhamiltonian = \"p_x^2/2 +\"\n[phase_space]\ncoordinates = [\"x\"]\n",
+    );
+    assert_eq!(o.status.code(), Some(2));
+    assert!(
+        text(&o.stderr).starts_with(
+            "superint: error: <stdin>:2:25: expected an expression after '+', found end of input"
+        ),
+        "{}",
+        text(&o.stderr)
+    );
+}

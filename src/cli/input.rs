@@ -1,0 +1,35 @@
+//! System files named on the command line: a path, or `-` for standard input (read once, so
+//! that `check a.toml - -` checks the piped file twice rather than an empty second one).
+
+use std::io::Read;
+use std::path::Path;
+use std::sync::OnceLock;
+
+use superint::system_file::{load, load_bytes, ErrorKind, FileError, LimitsOverride, LoadedSystem};
+
+/// How messages name a system file read from standard input.
+const STDIN: &str = "<stdin>";
+
+/// Loads the system file at `path`, or the one on standard input when `path` is `-`.
+pub fn load_system(path: &Path, limits: &LimitsOverride) -> Result<LoadedSystem, FileError> {
+    if path != Path::new("-") {
+        return load(path, limits);
+    }
+    static PIPED: OnceLock<Result<Vec<u8>, String>> = OnceLock::new();
+    let piped = PIPED.get_or_init(|| {
+        let mut bytes = Vec::new();
+        std::io::stdin()
+            .lock()
+            .read_to_end(&mut bytes)
+            .map(|_| bytes)
+            .map_err(|e| e.to_string())
+    });
+    match piped {
+        Ok(bytes) => load_bytes(STDIN, bytes, limits),
+        Err(e) => Err(FileError::new(
+            ErrorKind::Io,
+            STDIN,
+            format!("cannot read standard input: {e}"),
+        )),
+    }
+}
