@@ -848,16 +848,14 @@ fn lead<F>(v: &SparseVec<F>) -> Option<&(usize, F)> {
 
 /// The vector scaled to coprime integers, its last (leading) entry positive.
 fn primitive_vector(v: &SparseVec<Rational>) -> SparseVec<Rational> {
-    use num_integer::Integer as _;
-    let mut den = num_bigint::BigInt::from(1);
-    let mut num = num_bigint::BigInt::from(0);
+    let mut den = trigpoly::Integer::from(1);
+    let mut num = trigpoly::Integer::from(0);
     for (_, x) in v {
-        den = den.lcm(&x.denom().to_bigint());
-        num = num.gcd(&x.numer().to_bigint());
+        den = den.lcm(&x.denom());
+        num = num.gcd(&x.numer());
     }
     let negative = lead(v).is_some_and(|l| l.1.sign() == std::cmp::Ordering::Less);
-    let mut scale = Rational::from(trigpoly::Integer::from_bigint(den))
-        / Rational::from(trigpoly::Integer::from_bigint(num));
+    let mut scale = Rational::from(den) / Rational::from(num);
     if negative {
         scale = -scale;
     }
