@@ -49,14 +49,9 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
             .fold(0.0, f64::max);
         println!("p_θ = {p_theta}: K_{{1,1}} moves by at most {moved:.3e} over t ∈ [0, 20]");
         if p_theta == 1.0 {
-            let curve = |label: &str, f: &Numeric| Curve {
-                label: label.into(),
-                points: path
-                    .times
-                    .iter()
-                    .copied()
-                    .zip(path.values(|s| f.real(s)))
-                    .collect(),
+            let curve = |label: &str, f: &Numeric| {
+                let values = path.values(|s| f.real(s));
+                Curve::new(label, path.times.iter().copied().zip(values).collect())
             };
             let drawn = [curve("re K₁,₁", &re_k), curve("im K₁,₁", &im_k)];
             let file = std::env::temp_dir().join("resonance.svg");

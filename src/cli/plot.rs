@@ -11,7 +11,7 @@ use anyhow::{bail, Context};
 use clap::{Args, ValueEnum};
 use superint::render::Format;
 use superint::system_file::{Against, LimitsOverride, PlotFunctions};
-use superint::trajectory::chart::{self, Curve, Style};
+use superint::trajectory::chart::{self, reduce_angle, Curve, Style};
 use superint::trajectory::{nearest_f64, short, Flow, Method, Numeric};
 
 use super::limits::LimitsArgs;
@@ -67,10 +67,14 @@ pub struct PlotArgs {
           value_parser = clap::value_parser!(u64).range(1..=100_000))]
     samples: u64,
     /// Draw the curves against this real function instead of the time (`y --against x`
-    /// draws the orbit), or against an angle, not reduced mod 2π (`p_θ --against θ` draws a
+    /// draws the orbit), or against an angle, reduced to [−π, π) (`p_θ --against θ` draws a
     /// phase portrait).
     #[arg(long, value_name = "F")]
     against: Option<String>,
+    /// With --against an angle: draw it as the integration carries it, not reduced mod 2π
+    /// (a rotation then runs on instead of coming back at −π).
+    #[arg(long, requires = "against")]
+    unreduced: bool,
     /// A Poincaré section: keep the states where this real function crosses zero upward
     /// (at most --samples of them), drawn as dots against --against.
     #[arg(long, value_name = "S", requires = "against")]
@@ -176,6 +180,8 @@ enum Axis {
         label: String,
         /// The angle's place in the state.
         index: usize,
+        /// Whether it is drawn (and written in the data) reduced to `[−π, π)`.
+        reduced: bool,
     },
 }
 
@@ -217,10 +223,17 @@ pub fn run(job: &PlotJob) -> anyhow::Result<bool> {
     }
     let against = match &input.against {
         None => None,
+        Some(Against::Function(l, _)) if args.unreduced => {
+            bail!("--unreduced is for an angle on the horizontal axis, and {l} is a function")
+        }
         Some(Against::Function(l, f)) => Some(Axis::Function(function(l, f)?)),
         Some(Against::Angle(label, v)) => Some(Axis::Angle {
-            label: format!("{label} (not reduced mod 2π)"),
+            label: match args.unreduced {
+                false => format!("{label} (mod 2π)"),
+                true => format!("{label} (not reduced mod 2π)"),
+            },
             index: v.index(),
+            reduced: !args.unreduced,
         }),
     };
     let section = input
@@ -303,24 +316,29 @@ pub fn run(job: &PlotJob) -> anyhow::Result<bool> {
         "" => file.name.clone(),
         p => format!("{} at {p}", file.name),
     };
-    let drawn: Vec<Curve> = orbits
-        .iter()
-        .flat_map(|o| {
-            o.rows[1..].iter().map(|c| Curve {
-                label: c.label.clone(),
-                points: o
-                    .axis
-                    .iter()
-                    .copied()
-                    .zip(c.values.iter().copied())
-                    .collect(),
-            })
-        })
-        .collect();
     let style = match section {
         Some(_) => Style::Dots,
         None => Style::Lines,
     };
+    let reduced = matches!(against, Some(Axis::Angle { reduced: true, .. }));
+    let drawn: Vec<Curve> = orbits
+        .iter()
+        .flat_map(|o| {
+            o.rows[1..].iter().map(|c| {
+                let points = o.axis.iter().copied().zip(c.values.iter().copied());
+                match (reduced, style) {
+                    (false, _) => Curve::new(c.label.clone(), points.collect()),
+                    (true, Style::Lines) => {
+                        Curve::with_angle_x(c.label.clone(), &points.collect::<Vec<_>>())
+                    }
+                    (true, Style::Dots) => Curve::new(
+                        c.label.clone(),
+                        points.map(|(x, y)| (reduce_angle(x), y)).collect(),
+                    ),
+                }
+            })
+        })
+        .collect();
     let axis_label = against.as_ref().map_or("t", Axis::label);
     let svg = chart::svg(&title, axis_label, &drawn, style)?;
     let to_stdout = args.output.as_os_str() == "-";
@@ -336,7 +354,12 @@ pub fn run(job: &PlotJob) -> anyhow::Result<bool> {
             .map(Axis::label)
             .chain(rows[1..].iter().map(|f| f.label.as_str()))
             .collect();
-        std::fs::write(data, csv(&columns, against.is_some(), &orbits))
+        let axis = match against {
+            None => AxisColumn::None,
+            Some(_) if reduced => AxisColumn::ReducedAngle,
+            Some(_) => AxisColumn::AsIs,
+        };
+        std::fs::write(data, csv(&columns, axis, &orbits))
             .with_context(|| format!("cannot write {}", data.display()))?;
     }
     let section = section.as_ref().map(|f| f.label.as_str());
@@ -512,9 +535,20 @@ fn json(title: &str, args: &PlotArgs, orbits: &[Orbit], section: Option<&str>) -
     format!("{doc:#}\n")
 }
 
-/// The samples as CSV: the orbit (its starting point's number), `t`, the function of
-/// --against if `against`, each curve; `columns` names the functions.
-fn csv(columns: &[&str], against: bool, orbits: &[Orbit]) -> String {
+/// Whether and how the data write the horizontal axis.
+#[derive(Clone, Copy, PartialEq, Eq)]
+enum AxisColumn {
+    /// The time is the axis: no column of its own.
+    None,
+    /// The function or angle as computed.
+    AsIs,
+    /// An angle reduced to `[−π, π)`, as drawn.
+    ReducedAngle,
+}
+
+/// The samples as CSV: the orbit (its starting point's number), `t`, the axis of --against
+/// as `axis` says, each curve; `columns` names the functions.
+fn csv(columns: &[&str], axis: AxisColumn, orbits: &[Orbit]) -> String {
     let quote = |s: &str| format!("\"{}\"", s.replace('"', "\"\""));
     let mut out = ["orbit", "t"]
         .into_iter()
@@ -526,8 +560,14 @@ fn csv(columns: &[&str], against: bool, orbits: &[Orbit]) -> String {
     for (k, o) in orbits.iter().enumerate() {
         for (i, t) in o.times.iter().enumerate() {
             let _ = write!(out, "{},{t}", k + 1);
-            if against {
-                let _ = write!(out, ",{}", o.axis[i]);
+            match axis {
+                AxisColumn::None => {}
+                AxisColumn::AsIs => {
+                    let _ = write!(out, ",{}", o.axis[i]);
+                }
+                AxisColumn::ReducedAngle => {
+                    let _ = write!(out, ",{}", reduce_angle(o.axis[i]));
+                }
             }
             for c in &o.rows[1..] {
                 let _ = write!(out, ",{}", c.values[i]);

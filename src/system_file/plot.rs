@@ -37,9 +37,8 @@ pub struct PlotInput {
 pub enum Against {
     /// A real function: its label and value.
     Function(String, Expr),
-    /// An angle as the integration carries it, not reduced modulo 2π (a pendulum that goes
-    /// round moves to the right), so that `p_θ --against θ` draws a phase portrait: its
-    /// label and the variable.
+    /// An angle, so that `p_θ --against θ` draws a phase portrait: its label and the variable.
+    /// The chart reduces it to `[−π, π)` (or not, with `--unreduced`).
     Angle(String, Var),
 }
 

@@ -3,13 +3,79 @@
 
 use plotters::prelude::*;
 
-/// One curve of a chart: its label and its points `(x, y)`.
+/// One curve of a chart: its label and its points `(x, y)`, joined in order except where a
+/// new piece begins. Built by [`Curve::new`] or [`Curve::with_angle_x`].
 #[derive(Clone, Debug)]
+#[non_exhaustive]
 pub struct Curve {
     /// The legend's text.
     pub label: String,
     /// The points, in order.
     pub points: Vec<(f64, f64)>,
+    /// Where a piece begins that is not joined to the point before (ascending indices into
+    /// `points`): an angle that leaves `[−π, π)` on one side comes back on the other.
+    pub breaks: Vec<usize>,
+}
+
+impl Curve {
+    /// A curve through `points`, in one piece.
+    pub fn new(label: impl Into<String>, points: Vec<(f64, f64)>) -> Self {
+        Curve {
+            label: label.into(),
+            points,
+            breaks: Vec::new(),
+        }
+    }
+
+    /// A curve whose `x` is an angle, drawn reduced to `[−π, π)`: where the angle crosses an
+    /// odd multiple of π between two points, the piece ends at the edge (at `π` going up,
+    /// `−π` going down), at the `y` interpolated linearly there, and the next begins at the
+    /// other edge with the same `y`.
+    pub fn with_angle_x(label: impl Into<String>, points: &[(f64, f64)]) -> Self {
+        use std::f64::consts::PI;
+        let mut curve = Curve::new(label, Vec::with_capacity(points.len()));
+        for (k, &(x, y)) in points.iter().enumerate() {
+            if let Some(&(x0, y0)) = k.checked_sub(1).map(|j| &points[j]) {
+                let (b0, b1) = (branch(x0), branch(x));
+                let up = b1 > b0;
+                let mut b = b0;
+                while b != b1 {
+                    // The boundary between branch b and the next one along the way.
+                    let edge = if up {
+                        (2.0 * b + 1.0) * PI
+                    } else {
+                        (2.0 * b - 1.0) * PI
+                    };
+                    let at = y0 + (y - y0) * (edge - x0) / (x - x0);
+                    let (leave, enter) = if up { (PI, -PI) } else { (-PI, PI) };
+                    curve.points.push((leave, at));
+                    curve.breaks.push(curve.points.len());
+                    curve.points.push((enter, at));
+                    b += if up { 1.0 } else { -1.0 };
+                }
+            }
+            curve.points.push((reduce_angle(x), y));
+        }
+        curve
+    }
+
+    /// The pieces of the curve, each joined in order.
+    fn pieces(&self) -> impl Iterator<Item = &[(f64, f64)]> {
+        let starts = std::iter::once(0).chain(self.breaks.iter().copied());
+        let ends = self.breaks.iter().copied().chain([self.points.len()]);
+        starts.zip(ends).map(|(a, b)| &self.points[a..b])
+    }
+}
+
+/// The number of the branch `[(2b − 1)π, (2b + 1)π)` that holds the angle `x`.
+fn branch(x: f64) -> f64 {
+    use std::f64::consts::{PI, TAU};
+    ((x + PI) / TAU).floor()
+}
+
+/// The angle `x` reduced to `[−π, π)`.
+pub fn reduce_angle(x: f64) -> f64 {
+    x - std::f64::consts::TAU * branch(x)
 }
 
 /// How curves are drawn: joined by lines (values over time, an orbit), or as dots (the
@@ -82,7 +148,15 @@ pub fn svg(
             let color = PALETTE[k % PALETTE.len()];
             let points = curve.points.iter().copied();
             let drawn = match style {
-                Style::Lines => chart.draw_series(LineSeries::new(points, color.stroke_width(2))),
+                Style::Lines => {
+                    let mut pieces = curve.pieces();
+                    let first = pieces.next().unwrap_or_default().iter().copied();
+                    for piece in pieces {
+                        let line = LineSeries::new(piece.iter().copied(), color.stroke_width(2));
+                        chart.draw_series(line).map_err(|e| fail(&e))?;
+                    }
+                    chart.draw_series(LineSeries::new(first, color.stroke_width(2)))
+                }
                 Style::Dots => chart.draw_series(points.map(|p| Circle::new(p, 2, color.filled()))),
             };
             drawn
@@ -203,16 +277,13 @@ mod tests {
     #[test]
     fn a_chart_is_an_svg_document_with_its_curves_and_labels() {
         let curves = [
-            Curve {
-                label: "x".into(),
-                points: (0..50)
+            Curve::new(
+                "x",
+                (0..50)
                     .map(|k| (k as f64, (k as f64 / 8.0).sin()))
                     .collect(),
-            },
-            Curve {
-                label: "re(K₁,₁)".into(),
-                points: (0..50).map(|k| (k as f64, 0.25)).collect(),
-            },
+            ),
+            Curve::new("re(K₁,₁)", (0..50).map(|k| (k as f64, 0.25)).collect()),
         ];
         let svg = svg("harmonic rotor", "t", &curves, Style::Lines).unwrap();
         assert!(svg.starts_with("<svg"), "{}", &svg[..60.min(svg.len())]);
@@ -226,10 +297,7 @@ mod tests {
 
     #[test]
     fn dots_are_circles_one_a_point() {
-        let curve = Curve {
-            label: "p_y".into(),
-            points: vec![(0.0, 1.0), (0.5, -1.0), (1.0, 0.0)],
-        };
+        let curve = Curve::new("p_y", vec![(0.0, 1.0), (0.5, -1.0), (1.0, 0.0)]);
         let svg = svg("section", "y", &[curve], Style::Dots).unwrap();
         // One a point, and one in the legend.
         assert_eq!(svg.matches("<circle").count(), 3 + 1);
@@ -238,10 +306,7 @@ mod tests {
 
     #[test]
     fn the_legend_goes_to_the_emptiest_corner() {
-        let curve = |points: Vec<(f64, f64)>| Curve {
-            label: "p".into(),
-            points,
-        };
+        let curve = |points: Vec<(f64, f64)>| Curve::new("p", points);
         let (xs, ys) = ((0.0, 1.0), (0.0, 1.0));
         // A rising line fills the lower left and upper right corners.
         let rising = curve(
@@ -265,6 +330,55 @@ mod tests {
             matches!(corner, SeriesLabelPosition::UpperRight),
             "{corner:?}"
         );
+    }
+
+    /// An angle going up through π twice and back down through −π: the pieces end and begin
+    /// at the edges, at the interpolated value, and every point is reduced to [−π, π).
+    #[test]
+    fn an_angle_axis_is_reduced_and_broken_at_the_edges() {
+        use std::f64::consts::PI;
+        let points = [
+            (3.0, 0.0),
+            (PI + 1.0, 1.0),       // crosses π at y = (π − 3)/(π − 2)
+            (3.0 * PI + 0.5, 2.0), // crosses 3π
+            (-PI - 0.5, 3.0),      // back down through 3π, π and −π
+        ];
+        let curve = Curve::with_angle_x("p_θ", &points);
+        let xs: Vec<f64> = curve.points.iter().map(|p| p.0).collect();
+        let close = |a: f64, b: f64| (a - b).abs() < 1e-12;
+        let expected_x = [
+            3.0,
+            PI,
+            -PI,
+            1.0 - PI,
+            PI,
+            -PI,
+            0.5 - PI,
+            -PI,
+            PI,
+            -PI,
+            PI,
+            -PI,
+            PI,
+            PI - 0.5,
+        ];
+        assert_eq!(xs.len(), expected_x.len(), "{xs:?}");
+        assert!(
+            xs.iter().zip(expected_x).all(|(&a, b)| close(a, b)),
+            "{xs:?}"
+        );
+        assert_eq!(curve.breaks, vec![2, 5, 8, 10, 12]);
+        assert!(close(curve.points[1].1, (PI - 3.0) / (PI - 2.0)));
+        assert_eq!(
+            curve.points[1].1, curve.points[2].1,
+            "the same value on both edges"
+        );
+        let pieces: Vec<usize> = curve.pieces().map(<[_]>::len).collect();
+        assert_eq!(pieces, vec![2, 3, 3, 2, 2, 2]);
+        assert!(xs.iter().all(|x| (-PI..=PI).contains(x)));
+        // Within (−π, π) nothing is broken.
+        let inside = Curve::with_angle_x("p_θ", &[(-1.0, 0.0), (1.0, 1.0), (-0.5, 2.0)]);
+        assert_eq!((inside.points.len(), inside.breaks.len()), (3, 0));
     }
 
     #[test]

@@ -880,16 +880,19 @@ fn cli_plot_warns_when_the_energy_drifts() {
     assert_eq!(stderr("10000", "rk4"), "");
 }
 
-/// `--against` an angle draws a phase portrait, the angle as the integration carries it: the
-/// pendulum `p_t²/2 − g cos t` at `g = 1` librates between `±π/3` from `p_t = 1` (`H = −1/2`,
-/// so `cos t ≥ 1/2`), and from `p_t = 3` (`H = 7/2`, so `p_t ≥ √5`) goes round, past `2π`
-/// within `t = 10`, which an angle reduced modulo `2π` would hide. It was refused.
+/// `--against` an angle draws a phase portrait, the angle reduced to `[−π, π)`: the pendulum
+/// `p_t²/2 − g cos t` at `g = 1` librates between `±π/3` from `p_t = 1` (`H = −1/2`, so
+/// `cos t ≥ 1/2`), and from `p_t = 3` (`H = 7/2`, so `p_t ≥ √5`) goes round, leaving at `π` and
+/// coming back at `−π`, its line broken there (no line across the chart). With `--unreduced`
+/// the angle is as the integration carries it, past `2π` within `t = 10`. An angle axis was
+/// refused; then it was drawn unreduced only.
 #[test]
 fn cli_plot_against_an_angle_draws_a_phase_portrait() {
+    use std::f64::consts::{FRAC_PI_3, PI};
     let file = crate::scratch_text("plot", "pendulum.toml", crate::PENDULUM);
     let (svg, data) = (scratch_file("pendulum.svg"), scratch_file("pendulum.csv"));
-    run(
-        &[
+    let plot = |extra: &[&str]| {
+        let args = [
             "plot",
             file.to_str().unwrap(),
             "p_t",
@@ -907,26 +910,47 @@ fn cli_plot_against_an_angle_draws_a_phase_portrait() {
             svg.to_str().unwrap(),
             "--data",
             data.to_str().unwrap(),
-        ],
-        0,
-    );
-    let drawn = std::fs::read_to_string(&svg).expect("the chart was written");
+        ];
+        run(&[&args[..], extra].concat(), 0);
+        let drawn = std::fs::read_to_string(&svg).expect("the chart was written");
+        (drawn, csv_rows(&data))
+    };
+    let (drawn, (header, rows)) = plot(&[]);
+    assert!(drawn.contains("t (mod 2π)"), "the axis says what it shows");
+    assert_eq!(header, "orbit,t,\"t (mod 2π)\",\"p_t\"");
+    let angles = |orbit: f64| {
+        rows.iter()
+            .filter(move |r| r[0] == orbit)
+            .map(|r| r[2])
+            .collect::<Vec<_>>()
+    };
+    let turning = FRAC_PI_3 + 1e-3;
     assert!(
-        drawn.contains("t (not reduced mod 2π)"),
-        "the axis says what it shows"
-    );
-    let (header, rows) = csv_rows(&data);
-    assert_eq!(header, "orbit,t,\"t (not reduced mod 2π)\",\"p_t\"");
-    let angles = |orbit: f64| rows.iter().filter(move |r| r[0] == orbit).map(|r| r[2]);
-    let turning = std::f64::consts::FRAC_PI_3 + 1e-3;
-    assert!(
-        angles(1.0).all(|a| a.abs() <= turning),
+        angles(1.0).iter().all(|a| a.abs() <= turning),
         "the first orbit librates"
     );
-    assert!(angles(1.0).any(|a| a > 1.0) && angles(1.0).any(|a| a < -1.0));
-    let last = angles(2.0).next_back().expect("the second orbit");
-    assert!(
-        last > 2.0 * std::f64::consts::PI,
-        "the second orbit goes round: {last}"
-    );
+    assert!(angles(1.0).iter().any(|&a| a > 1.0) && angles(1.0).iter().any(|&a| a < -1.0));
+    let going_round = angles(2.0);
+    assert!(going_round.iter().all(|a| (-PI..PI).contains(a)));
+    let wraps = going_round.windows(2).filter(|w| w[1] < w[0] - PI).count();
+    assert!(wraps >= 3, "the second orbit goes round, {wraps} times");
+    // The second curve's colour (Tableau's red); the legend's mark is one line more.
+    let lines = |svg: &str| {
+        svg.matches(r##"stroke="#D62728" stroke-width="2""##)
+            .count()
+    };
+    let reduced_lines = lines(&drawn);
+
+    let (drawn, (header, rows)) = plot(&["--unreduced"]);
+    assert!(drawn.contains("t (not reduced mod 2π)"));
+    assert_eq!(header, "orbit,t,\"t (not reduced mod 2π)\",\"p_t\"");
+    // Reduced, the rotation's line is broken once a turn; unreduced, it is one line.
+    assert_eq!(lines(&drawn), 1 + 1, "the rotation in one line");
+    assert_eq!(reduced_lines, 1 + 1 + wraps);
+    let last = rows
+        .iter()
+        .rev()
+        .find(|r| r[0] == 2.0)
+        .expect("the second orbit")[2];
+    assert!(last > 2.0 * PI, "the second orbit goes round: {last}");
 }
