@@ -792,6 +792,24 @@ proptest! {
         }
     }
 
+    /// Where one-letter names side by side spell other names (`xy`, `yx`, `ab`, and `xi` with
+    /// the imaginary unit), the unicode text still parses back to the same element.
+    #[test]
+    fn print_parse_roundtrip_text_with_names_that_spell_others(
+        terms in proptest::collection::vec(
+            (gaussian(), proptest::collection::vec(-3i64..4, 8)),
+            0..8,
+        ),
+    ) {
+        let vars = crate::common::coordinates(&["x", "y", "xy", "yx", "a", "b", "ab", "xi"]);
+        let f = G::from_terms(&vars, terms).expect("small exponents");
+        let text = f.to_string();
+        match G::parse(&vars, &text) {
+            Ok(back) => prop_assert_eq!(back, f, "{}", text),
+            Err(e) => prop_assert!(false, "{}", e.render(&text)),
+        }
+    }
+
     /// cos²θ + sin²θ = 1 for every angle, also multiplied by anything.
     #[test]
     fn cos2_plus_sin2_is_one(f in gpoly(9)) {
