@@ -95,9 +95,11 @@ impl LoadedSystem {
     /// names side by side could read back as another name of the system (a variable or
     /// function `xy`).
     fn spaced_products(&self, tree: &Tree) -> bool {
-        let mut written = Vec::new();
-        names_in(tree, &mut written);
-        let written: Vec<String> = written.iter().map(|n| self.display_name(n)).collect();
+        let written: Vec<String> = tree
+            .names()
+            .into_iter()
+            .map(|(n, _)| self.display_name(n))
+            .collect();
         let vars = self.system.vars();
         let functions = self.system.functions().iter();
         trigpoly::juxtaposition_is_ambiguous(
@@ -220,24 +222,5 @@ impl LoadedSystem {
                 p
             }
         }
-    }
-}
-
-/// The names of `tree`, as written, into `out`.
-fn names_in<'t>(tree: &'t Tree, out: &mut Vec<&'t str>) {
-    match &tree.kind {
-        ExprKind::Integer(_) => {}
-        ExprKind::Name(n) => out.push(n),
-        ExprKind::Neg(a) => names_in(a, out),
-        ExprKind::Add(a, b)
-        | ExprKind::Sub(a, b)
-        | ExprKind::Mul(a, b)
-        | ExprKind::Div(a, b)
-        | ExprKind::Pow(a, b)
-        | ExprKind::Bracket(a, b) => {
-            names_in(a, out);
-            names_in(b, out);
-        }
-        ExprKind::Call(_, _, args) => args.iter().for_each(|a| names_in(a, out)),
     }
 }

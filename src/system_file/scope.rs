@@ -481,18 +481,9 @@ impl Context<GaussianRational> for Scope<'_> {
 
 /// The span of the first use of `name` in a tree, if any.
 pub(crate) fn mention(tree: &Tree, name: &str) -> Option<Span> {
-    match &tree.kind {
-        ExprKind::Name(n) if n == name => Some(tree.span),
-        ExprKind::Name(_) | ExprKind::Integer(_) => None,
-        ExprKind::Neg(a) => mention(a, name),
-        ExprKind::Add(a, b)
-        | ExprKind::Sub(a, b)
-        | ExprKind::Mul(a, b)
-        | ExprKind::Div(a, b)
-        | ExprKind::Pow(a, b)
-        | ExprKind::Bracket(a, b) => mention(a, name).or_else(|| mention(b, name)),
-        ExprKind::Call(_, _, args) => args.iter().find_map(|a| mention(a, name)),
-    }
+    tree.names()
+        .into_iter()
+        .find_map(|(n, span)| (n == name).then_some(span))
 }
 
 #[cfg(test)]

@@ -28,18 +28,9 @@ const MAX_EIGENVALUE_DEGREE: u32 = 32;
 
 /// Whether a tree uses an index, as a name or inside the name of a family instance.
 fn uses(tree: &Tree, index: &str) -> bool {
-    match &tree.kind {
-        ExprKind::Name(n) => n == index || n.split('_').any(|p| p == index),
-        ExprKind::Integer(_) => false,
-        ExprKind::Neg(a) => uses(a, index),
-        ExprKind::Add(a, b)
-        | ExprKind::Sub(a, b)
-        | ExprKind::Mul(a, b)
-        | ExprKind::Div(a, b)
-        | ExprKind::Pow(a, b)
-        | ExprKind::Bracket(a, b) => uses(a, index) || uses(b, index),
-        ExprKind::Call(_, _, args) => args.iter().any(|a| uses(a, index)),
-    }
+    tree.names()
+        .into_iter()
+        .any(|(n, _)| n == index || n.split('_').any(|p| p == index))
 }
 
 /// `A^1` → `A`, `1·a` → `a`: a base after the substitution of 1 for its index, for display.

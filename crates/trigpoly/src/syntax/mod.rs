@@ -88,6 +88,30 @@ mod tests {
         }
     }
 
+    /// A tree's names in source order with their spans (a parenthesized name's includes the
+    /// parentheses): a call's arguments, not its name.
+    #[test]
+    fn names_in_source_order_with_spans() {
+        let src = "{f, cos(x + y)} + 2*x^k - (h)";
+        let e = parse_expr(src).expect("parses");
+        let names: Vec<(&str, &str)> = e
+            .names()
+            .into_iter()
+            .map(|(n, span)| (n, &src[span.start..span.end]))
+            .collect();
+        assert_eq!(
+            names,
+            [
+                ("f", "f"),
+                ("x", "x"),
+                ("y", "y"),
+                ("x", "x"),
+                ("k", "k"),
+                ("h", "(h)")
+            ]
+        );
+    }
+
     #[test]
     fn precedence_and_associativity() {
         let cases = [

@@ -36,6 +36,31 @@ impl Expr {
     pub fn new(kind: ExprKind, span: Span) -> Self {
         Expr { kind, span }
     }
+
+    /// The names the expression uses, with their spans, in source order (a call's arguments'
+    /// names, not the function's).
+    pub fn names(&self) -> Vec<(&str, Span)> {
+        fn walk<'e>(e: &'e Expr, out: &mut Vec<(&'e str, Span)>) {
+            match &e.kind {
+                ExprKind::Integer(_) => {}
+                ExprKind::Name(n) => out.push((n, e.span)),
+                ExprKind::Neg(a) => walk(a, out),
+                ExprKind::Add(a, b)
+                | ExprKind::Sub(a, b)
+                | ExprKind::Mul(a, b)
+                | ExprKind::Div(a, b)
+                | ExprKind::Pow(a, b)
+                | ExprKind::Bracket(a, b) => {
+                    walk(a, out);
+                    walk(b, out);
+                }
+                ExprKind::Call(_, _, args) => args.iter().for_each(|a| walk(a, out)),
+            }
+        }
+        let mut out = Vec::new();
+        walk(self, &mut out);
+        out
+    }
 }
 
 /// The node types of the expression tree.
