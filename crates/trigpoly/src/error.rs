@@ -37,8 +37,9 @@ pub enum AlgebraError {
     /// An operation that needs `i` in a polynomial over Q.
     #[error("{0} needs Gaussian rational coefficients Q(i), but this polynomial is over Q")]
     NeedsGaussian(String),
-    /// Polynomials from different variable sets were combined.
-    #[error("the polynomials belong to different variable sets")]
+    /// Polynomials from different variable sets were combined, or a variable handle was used
+    /// with a set that does not declare it ([`VarSet::owns`](crate::VarSet::owns)).
+    #[error("the polynomials (or variables) belong to different variable sets")]
     VarSetMismatch,
     /// A value missing in an evaluation.
     #[error("no value given for {0}")]

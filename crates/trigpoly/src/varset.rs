@@ -20,14 +20,21 @@ pub enum VarKind {
     Angle,
 }
 
-/// A variable handle: its index in its `VarSet`.
+/// A variable handle: its index in its `VarSet`, and which variables that set declares (sets
+/// that declare the same variables, whatever their limits, share handles). A handle used with a
+/// set that declares other variables is refused ([`VarSet::owns`]), where its index alone would
+/// name whatever variable stands at that place there.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, PartialOrd, Ord)]
-pub struct Var(pub(crate) u16);
+pub struct Var {
+    index: u16,
+    /// The number of the declaration (the list of variables) among those the process has made.
+    declaration: u32,
+}
 
 impl Var {
     /// The index in the variable set.
     pub fn index(self) -> usize {
-        self.0 as usize
+        self.index as usize
     }
 }
 
@@ -307,6 +314,9 @@ pub struct VarSet {
     limits: Limits,
     /// The field width the declaration asked for, if it did (else the limits chose it).
     requested_bits: Option<u32>,
+    /// The number of the list of variables, shared by every set that declares the same ones
+    /// (given when the set is interned), which its handles carry.
+    declaration: u32,
 }
 
 /// Two sets are the same ring when they have the same variables, packing and limits, whether
@@ -336,13 +346,56 @@ impl VarSet {
     }
 
     /// The variable behind a handle.
+    ///
+    /// # Panics
+    ///
+    /// If the handle is not one of this set's ([`VarSet::owns`]).
     pub fn variable(&self, v: Var) -> &Variable {
-        &self.vars[v.index()]
+        &self.vars[self.index_of(v)]
+    }
+
+    /// Whether `v` is a handle of this set: found in it, or in a set that declares the same
+    /// variables.
+    pub fn owns(&self, v: Var) -> bool {
+        v.declaration == self.declaration && v.index() < self.vars.len()
+    }
+
+    /// The index of `v`, a handle of this set.
+    ///
+    /// # Panics
+    ///
+    /// If it is not one ([`VarSet::owns`]): a handle of another set would name whatever
+    /// variable stands at its index here.
+    #[track_caller]
+    pub(crate) fn index_of(&self, v: Var) -> usize {
+        assert!(
+            self.owns(v),
+            "a variable handle of another variable set was used with {self} (a Var is valid with \
+             the set it was found in, or one that declares the same variables)"
+        );
+        v.index()
+    }
+
+    /// The index of `v`, or [`AlgebraError::VarSetMismatch`] if it is not a handle of this set.
+    pub(crate) fn checked_index(&self, v: Var) -> Result<usize, AlgebraError> {
+        match self.owns(v) {
+            true => Ok(v.index()),
+            false => Err(AlgebraError::VarSetMismatch),
+        }
+    }
+
+    /// The handle of the variable at `index`.
+    pub(crate) fn var_at(&self, index: usize) -> Var {
+        debug_assert!(index < self.vars.len());
+        Var {
+            index: index as u16,
+            declaration: self.declaration,
+        }
     }
 
     /// All handles, in declaration order.
     pub fn vars(&self) -> impl Iterator<Item = Var> + '_ {
-        (0..self.vars.len()).map(|k| Var(k as u16))
+        (0..self.vars.len()).map(|k| self.var_at(k))
     }
 
     /// The variable of a name, in any of its spellings: its declared name, its unicode form
@@ -353,7 +406,7 @@ impl VarSet {
         self.vars
             .iter()
             .position(|v| v.spelled(name))
-            .map(|k| Var(k as u16))
+            .map(|k| self.var_at(k))
     }
 
     /// Whether the one-letter names of the variables `written`, side by side, could read back
@@ -414,14 +467,21 @@ pub struct Vars(&'static VarSet);
 
 impl Vars {
     /// The handle of the interned set equal to `set` (interning it if it is new).
-    fn intern(set: VarSet) -> Vars {
+    /// Its declaration number is that of the interned sets with the same variables, or the
+    /// next one.
+    fn intern(mut set: VarSet) -> Vars {
         static INTERNED: Mutex<Vec<&'static VarSet>> = Mutex::new(Vec::new());
+        static DECLARATIONS: std::sync::atomic::AtomicU32 = std::sync::atomic::AtomicU32::new(0);
         // A panic elsewhere cannot leave the list half-changed: only a push changes it.
         let mut interned = INTERNED.lock().unwrap_or_else(|e| e.into_inner());
         let same = |s: &&'static VarSet| **s == set && s.requested_bits == set.requested_bits;
         if let Some(found) = interned.iter().copied().find(same) {
             return Vars(found);
         }
+        set.declaration = match interned.iter().find(|s| s.vars == set.vars) {
+            Some(s) => s.declaration,
+            None => DECLARATIONS.fetch_add(1, std::sync::atomic::Ordering::Relaxed),
+        };
         let leaked: &'static VarSet = Box::leak(Box::new(set));
         interned.push(leaked);
         Vars(leaked)
@@ -560,6 +620,7 @@ impl VarSetBuilder {
             layout,
             limits,
             requested_bits: self.bits,
+            declaration: 0,
         }))
     }
 }

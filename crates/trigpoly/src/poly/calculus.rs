@@ -42,7 +42,7 @@ impl<C: Coefficient> Poly<C> {
     /// contain `v`, their new coefficients, and how their monomials change. The derivative
     /// and the bracket's fused kernel (`sum.rs`) both build on this.
     pub(crate) fn derivative_terms(&self, v: Var) -> Result<DerivativeTerms<C::Int>, AlgebraError> {
-        let j = v.index();
+        let j = self.vars.checked_index(v)?;
         let layout = self.layout();
         let angle = self.vars.variable(v).kind() == VarKind::Angle;
         let limit = self.vars.limits().max_degree as i64;

@@ -148,7 +148,12 @@ impl<C: Coefficient> Poly<C> {
     }
 
     /// The variable `v` (for an angle, `e^{iθ}`).
+    ///
+    /// # Panics
+    ///
+    /// If `v` is a handle of another set ([`VarSet::owns`]).
     pub fn var(vars: &Vars, v: Var) -> Self {
+        vars.index_of(v);
         Self::monomial(vars, C::one(), &[(v, 1)]).expect("exponent 1 is within every limit")
     }
 
@@ -268,7 +273,14 @@ impl<C: Coefficient> Poly<C> {
     }
 
     /// The coefficient of a monomial, given as `(variable, exponent)` pairs (zero if absent).
+    ///
+    /// # Panics
+    ///
+    /// If a variable is a handle of another set ([`VarSet::owns`]).
     pub fn coeff(&self, powers: &[(Var, i64)]) -> C {
+        for &(v, _) in powers {
+            self.vars.index_of(v);
+        }
         let Ok(exps) = sum_powers(&self.vars, powers) else {
             return C::zero();
         };
@@ -298,12 +310,18 @@ impl<C: Coefficient> Poly<C> {
 
     /// `(lowest, highest)` exponent of `v` (`None` for zero). For an angle this is the range of
     /// `k` in `e^{ikθ}`, so the degree in `cos θ, sin θ` is `max(|low|, |high|)`.
+    ///
+    /// # Panics
+    ///
+    /// If `v` is a handle of another set ([`VarSet::owns`]), as do [`Poly::degree`],
+    /// [`Poly::low_degree`] and [`Poly::contains`].
     pub fn exponent_range(&self, v: Var) -> Option<(i64, i64)> {
         let layout = self.vars.layout();
+        let j = self.vars.index_of(v);
         let mut it = self
             .exps
             .chunks_exact(self.words())
-            .map(|m| layout.get(m, v.index()));
+            .map(|m| layout.get(m, j));
         let first = it.next()?;
         Some(it.fold((first, first), |(lo, hi), e| (lo.min(e), hi.max(e))))
     }
@@ -327,9 +345,10 @@ impl<C: Coefficient> Poly<C> {
     /// Whether `v` appears.
     pub fn contains(&self, v: Var) -> bool {
         let layout = self.vars.layout();
+        let j = self.vars.index_of(v);
         self.exps
             .chunks_exact(self.words())
-            .any(|m| layout.get(m, v.index()) != 0)
+            .any(|m| layout.get(m, j) != 0)
     }
 
     /// The content: a rational `q` such that `self/q` has coprime integer coefficients.
@@ -678,9 +697,10 @@ impl<C: Coefficient> Poly<C> {
 fn sum_powers(vars: &VarSet, powers: &[(Var, i64)]) -> Result<Vec<i64>, AlgebraError> {
     let mut exps = vec![0i64; vars.len()];
     for &(v, e) in powers {
-        let sum = exps[v.index()].checked_add(e).unwrap_or(i64::MAX);
+        let j = vars.checked_index(v)?;
+        let sum = exps[j].checked_add(e).unwrap_or(i64::MAX);
         check_exponent(vars, v, sum)?;
-        exps[v.index()] = sum;
+        exps[j] = sum;
     }
     Ok(exps)
 }
@@ -719,8 +739,13 @@ impl<C: Coefficient> Term<'_, C> {
     }
 
     /// The exponent of `v` (for an angle, `k` in `e^{ikθ}`).
+    ///
+    /// # Panics
+    ///
+    /// If `v` is a handle of another set ([`VarSet::owns`]).
     pub fn exponent(&self, v: Var) -> i64 {
-        self.poly.layout().get(self.poly.exp(self.k), v.index())
+        let j = self.poly.vars.index_of(v);
+        self.poly.layout().get(self.poly.exp(self.k), j)
     }
 
     /// All exponents, in variable order.

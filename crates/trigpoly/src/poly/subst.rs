@@ -23,8 +23,9 @@ impl<C: Coefficient> Poly<C> {
     /// Replaces several variables at once (simultaneously: values are not substituted into
     /// each other).
     pub fn subst_many(&self, subs: &[(Var, Self)]) -> Result<Self, AlgebraError> {
-        for (_, p) in subs {
+        for (v, p) in subs {
             self.same_vars(p)?;
+            self.vars.checked_index(*v)?;
         }
         let targets: Vec<Var> = subs
             .iter()
@@ -270,13 +271,16 @@ impl<C: Coefficient> Poly<C> {
         if self.vars != point.vars {
             return Err(AlgebraError::VarSetMismatch);
         }
+        if let Some(e) = &point.invalid {
+            return Err(e.clone());
+        }
         let mut scaled = Vec::new();
         for (j, (lo, hi)) in self.bounds().into_iter().enumerate() {
             if (lo, hi) == (0, 0) {
                 continue;
             }
             let value = point.values[j].as_ref().ok_or_else(|| {
-                AlgebraError::MissingValue(self.vars.variable(Var(j as u16)).unicode().into())
+                AlgebraError::MissingValue(self.vars.variable(self.vars.var_at(j)).unicode().into())
             })?;
             scaled.push((j, ScaledValue::new(value, lo, hi)?));
         }
@@ -366,6 +370,10 @@ impl<'a> ScaledValue<'a> {
 pub struct Point {
     vars: Vars,
     values: Vec<Option<GaussianRational>>,
+    /// Why the point cannot be used, if a value was given wrongly ([`Point::with`] of a
+    /// handle of another set, or of a real value off the unit circle for an angle): the
+    /// evaluation says so.
+    invalid: Option<AlgebraError>,
 }
 
 impl Point {
@@ -374,12 +382,25 @@ impl Point {
         Point {
             vars: vars.clone(),
             values: vec![None; vars.len()],
+            invalid: None,
         }
     }
 
-    /// Sets a real value.
+    /// Sets a real value. An angle takes its value as `e^{iθ}`, so only `1` or `−1` (θ = 0
+    /// or π; others through [`Point::with_angle`]); any other value for an angle, or a
+    /// variable of another set, makes [`Poly::eval`] at the point an error.
     pub fn with(mut self, v: Var, value: Rational) -> Point {
-        self.values[v.index()] = Some(GaussianRational::from(value));
+        let Ok(j) = self.vars.checked_index(v) else {
+            self.invalid.get_or_insert(AlgebraError::VarSetMismatch);
+            return self;
+        };
+        let variable = self.vars.variable(v);
+        if variable.kind() == VarKind::Angle && value.abs() != Rational::one() {
+            let name = variable.unicode().to_string();
+            self.invalid
+                .get_or_insert(AlgebraError::NotOnUnitCircle(name));
+        }
+        self.values[j] = Some(GaussianRational::from(value));
         self
     }
 
@@ -390,16 +411,21 @@ impl Point {
         cos: Rational,
         sin: Rational,
     ) -> Result<Point, AlgebraError> {
+        let j = self.vars.checked_index(v)?;
         let name = self.vars.variable(v).unicode().to_string();
         if self.vars.variable(v).kind() != VarKind::Angle || !(&cos * &cos + &sin * &sin).is_one() {
             return Err(AlgebraError::NotOnUnitCircle(name));
         }
-        self.values[v.index()] = Some(GaussianRational::new(cos, sin));
+        self.values[j] = Some(GaussianRational::new(cos, sin));
         Ok(self)
     }
 
     /// The value given to `v` (for an angle, `e^{iθ} = cos θ + i sin θ`).
+    ///
+    /// # Panics
+    ///
+    /// If `v` is a handle of another set ([`VarSet::owns`](crate::VarSet::owns)).
     pub fn value(&self, v: Var) -> Option<&GaussianRational> {
-        self.values[v.index()].as_ref()
+        self.values[self.vars.index_of(v)].as_ref()
     }
 }

@@ -202,6 +202,7 @@ impl<T: Clone + Eq + std::hash::Hash> Numbering<T> {
 }
 
 fn check_angle<C: Coefficient>(vars: &VarSet, v: Var, what: &str) -> Result<(), AlgebraError> {
+    vars.checked_index(v)?;
     if vars.variable(v).kind() != VarKind::Angle {
         return Err(AlgebraError::Invalid(format!(
             "{what} needs an angle, and {} is not declared as one",

@@ -1,6 +1,6 @@
 //! Substitution and exact evaluation on named examples.
 
-use trigpoly::{AlgebraError, GaussianRational, Point, Rational};
+use trigpoly::{AlgebraError, GaussianRational, Point, Poly, Rational};
 
 use crate::common::{p, phase_space, var, G, Q};
 
@@ -114,4 +114,75 @@ fn degrees_and_ranges_of_laurent_and_trigonometric_polynomials() {
     assert!(f.is_free_of(VarKind::Parameter) && !f.is_free_of(VarKind::Angle));
     assert!(f.is_real());
     assert_eq!(G::zero(&vars).degree(x), None);
+}
+
+/// A variable handle belongs to the variables it was found among: used with a set that
+/// declares others, an operation that returns a `Result` says `VarSetMismatch`, and one that
+/// cannot panics with a message, where the handle's index alone named whatever variable stood
+/// at that place (`ab`, the seventh here, is past the end of `{q}`; `y`, the second of
+/// `phase_space`, is `y` of `{x, y}` by index too, and still refused). A set with the same
+/// variables and other limits takes the handles.
+#[test]
+fn variable_handles_of_another_set_are_refused() {
+    use trigpoly::{Limits, VarSet};
+    let big = phase_space();
+    let small = VarSet::builder()
+        .coordinate("x")
+        .coordinate("y")
+        .build()
+        .unwrap();
+    let y_big = var(&big, "y");
+    assert!(!small.owns(y_big) && big.owns(y_big));
+    let x: G = Poly::var(&small, var(&small, "x"));
+    assert_eq!(x.derivative(y_big), Err(AlgebraError::VarSetMismatch));
+    assert_eq!(x.subst(y_big, &x), Err(AlgebraError::VarSetMismatch));
+    assert_eq!(
+        G::monomial(&small, GaussianRational::from(2), &[(y_big, 1)]),
+        Err(AlgebraError::VarSetMismatch)
+    );
+    assert_eq!(
+        x.eval(&Point::new(&small).with(y_big, Rational::one())),
+        Err(AlgebraError::VarSetMismatch)
+    );
+    let panics = |f: &dyn Fn()| {
+        let message = std::panic::catch_unwind(std::panic::AssertUnwindSafe(f))
+            .expect_err("panics")
+            .downcast::<String>()
+            .expect("a message");
+        assert!(
+            message.contains("a variable handle of another variable set"),
+            "{message}"
+        );
+    };
+    panics(&|| {
+        x.degree(y_big);
+    });
+    panics(&|| {
+        G::var(&small, y_big);
+    });
+    panics(&|| {
+        x.coeff(&[(y_big, 1)]);
+    });
+    // The same variables with other limits: the same handles.
+    let wider = small.with_limits(Limits::default()).unwrap();
+    let y = var(&small, "y");
+    assert!(wider.owns(y));
+    assert_eq!(G::var(&wider, y).to_string(), "y");
+}
+
+/// `Point::with` gives an angle its value as `e^{iθ}`: `−1` is θ = π, and any value off the
+/// unit circle makes the evaluation an error (it was taken as `e^{iθ}`, and `cos θ` at "2"
+/// came out 5/4).
+#[test]
+fn a_real_value_for_an_angle_must_be_on_the_unit_circle() {
+    let vars = phase_space();
+    let theta = var(&vars, "theta");
+    let cos: G = p(&vars, "cos(theta)");
+    let at_pi = Point::new(&vars).with(theta, Rational::from(-1));
+    assert_eq!(cos.eval(&at_pi), Ok(GaussianRational::from(-1)));
+    let off = Point::new(&vars).with(theta, Rational::from(2));
+    assert_eq!(
+        cos.eval(&off),
+        Err(AlgebraError::NotOnUnitCircle("θ".into()))
+    );
 }
