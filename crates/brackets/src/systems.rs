@@ -152,8 +152,36 @@ pub struct Resonant {
 }
 
 impl System {
+    /// Refuses, for `what`, a system that is not a rotor in the paper's names: the parameters
+    /// `omega` (the orbit's frequency ω) and `I` (the moment of inertia), and an angle `theta`
+    /// with its momentum `p_theta` (the rotor's frequency is `Ω = p_θ/I`).
+    pub(crate) fn require_rotor(&self, what: &str) -> Result<(), EngineError> {
+        let vars = self.vars();
+        let kind = |name: &str| vars.lookup(name).map(|v| vars.variable(v).kind());
+        use trigpoly::VarKind::{Angle, Momentum, Parameter};
+        let names = [
+            ("omega", Parameter),
+            ("I", Parameter),
+            ("theta", Angle),
+            ("p_theta", Momentum),
+        ];
+        match names.iter().find(|(name, k)| kind(name) != Some(*k)) {
+            None => Ok(()),
+            Some((name, _)) => Err(EngineError::Invalid(format!(
+                "{what} is stated for a rotor in the paper's names: the parameters omega and \
+                 I, and the angle theta with its momentum p_theta; this system has no {} \
+                 {name} (a system file's tower takes any names: `superint tower --system FILE`)",
+                match *name {
+                    "theta" => "angle",
+                    "p_theta" => "momentum",
+                    _ => "parameter",
+                }
+            ))),
+        }
+    }
+
     /// `K_{m,n}, K̄_{m,n}, P_{m,n}, Q_{m,n}` from the named ladder function `ladder` and the
-    /// first angle.
+    /// first angle (whatever its name).
     pub fn resonant(&self, ladder: &str, m: i64, n: i64) -> Result<Resonant, EngineError> {
         let z = self.get(ladder)?;
         let theta = self
@@ -169,11 +197,13 @@ impl System {
         Ok(Resonant { k, kbar, p, q })
     }
 
-    /// The resonance `p_θ = mIω/n` as a condition.
+    /// The resonance `p_θ = mIω/n` as a condition, in a rotor with the paper's names
+    /// (`omega`, `I`, `theta`, `p_theta`).
     pub fn resonance(&self, m: i64, n: i64) -> Result<crate::claim::Condition, EngineError> {
         if n == 0 {
             return Err(EngineError::Invalid("a resonance m : n needs n ≠ 0".into()));
         }
+        self.require_rotor("a resonance p_θ = mIω/n")?;
         let var = |name: &str| {
             self.vars().lookup(name).ok_or_else(|| {
                 EngineError::Invalid(format!("a resonance needs the variable {name}"))
@@ -191,15 +221,20 @@ impl System {
     }
 }
 
-/// `mIω/n` in lowest terms, as text: `Iω`, `2Iω`, `Iω/2`, `3Iω/2`.
+/// `mIω/n` in lowest terms, as text: `Iω`, `2Iω`, `Iω/2`, `3Iω/2`, `−Iω/2`, and `0` for
+/// `m = 0` (`n ≠ 0`).
 pub fn resonance_text(m: i64, n: i64) -> String {
     let q = trigpoly::Rational::new(m, n);
-    let num = q.numer();
+    if q.is_zero() {
+        return "0".into();
+    }
+    let sign = if q.is_negative() { "−" } else { "" };
+    let num = q.numer().abs();
     let den = q.denom();
     let head = if num.is_one() {
-        "Iω".to_string()
+        format!("{sign}Iω")
     } else {
-        format!("{num}Iω")
+        format!("{sign}{num}Iω")
     };
     if den.is_one() {
         head
@@ -252,6 +287,37 @@ pub fn planar_ii_rotor() -> System {
 mod tests {
     use super::*;
 
+    /// The resonance's text for each sign, zero and fraction (it read `0Iω` and `-1Iω/2`).
+    #[test]
+    fn resonance_text_reads_like_the_paper() {
+        let texts: Vec<String> = [
+            (1, 1),
+            (2, 1),
+            (1, 2),
+            (3, 2),
+            (4, 6),
+            (0, 3),
+            (-1, 2),
+            (3, -2),
+        ]
+        .iter()
+        .map(|&(m, n)| resonance_text(m, n))
+        .collect();
+        assert_eq!(
+            texts,
+            [
+                "Iω",
+                "2Iω",
+                "Iω/2",
+                "3Iω/2",
+                "2Iω/3",
+                "0",
+                "−Iω/2",
+                "−3Iω/2"
+            ]
+        );
+    }
+
     /// The resonance is the substitution `p_θ ↦ mIω/n`, built as a term; without `n`, or in a
     /// system without `I`, it is an error, not a panic.
     #[test]
@@ -272,5 +338,23 @@ mod tests {
             harmonic_rod().resonance(1, 1),
             Err(EngineError::Invalid(_))
         ));
+    }
+
+    /// The tower's functions are stated in the paper's names: a system without them is told
+    /// which is missing (it was "unknown name 'omega'" with a caret under text the caller never
+    /// wrote), and the built-in rotors have them all.
+    #[test]
+    fn the_tower_needs_a_rotor_in_the_papers_names() {
+        let planar = planar_i_rotor();
+        let err = crate::check_tower(&planar, "L", 1, &mut |_, _| {}).unwrap_err();
+        assert!(
+            err.to_string().contains("this system has no parameter omega"),
+            "{err}"
+        );
+        let err = crate::eigen_proof(&planar, "L").unwrap_err();
+        assert!(err.to_string().contains("the eigenfunction proof"), "{err}");
+        for rotor in [harmonic_rotor(), gravity_rotor()] {
+            assert_eq!(rotor.require_rotor("the tower"), Ok(()));
+        }
     }
 }

@@ -23,7 +23,9 @@ pub struct TowerReport {
 }
 
 /// Checks `{K_{m,n}, H} = i(mω − nΩ)K_{m,n}` with `Ω = p_θ/I` by expanding every bracket, for
-/// all `1 ≤ m, n ≤ max`; `progress(done, total)` is called after each pair.
+/// all `1 ≤ m, n ≤ max`; `progress(done, total)` is called after each pair. The system must be a
+/// rotor in the paper's names (`omega`, `I`, `theta`, `p_theta`); a system file's family takes
+/// any names (`superint tower --system FILE`).
 pub fn check_tower(
     system: &System,
     ladder: &str,
@@ -31,6 +33,7 @@ pub fn check_tower(
     progress: &mut dyn FnMut(usize, usize),
 ) -> Result<TowerReport, EngineError> {
     let start = Instant::now();
+    system.require_rotor("the tower {K_{m,n}, H} = i(mω − nΩ) K_{m,n}")?;
     let omega = system.parse("omega")?;
     let big_omega = system.parse("p_theta/I")?;
     let total = (max * max) as usize;
@@ -89,8 +92,10 @@ impl EigenProof {
 }
 
 /// Proves `{K_{m,n}, H} = i(mω − nΩ)K_{m,n}` and `{K̄_{m,n}, H} = −i(mω − nΩ)K̄_{m,n}` for all
-/// `m, n ≥ 0` from `{Z, H} = iωZ`, `{e^{−iθ}, H} = −iΩe^{−iθ}` and their conjugates.
+/// `m, n ≥ 0` from `{Z, H} = iωZ`, `{e^{−iθ}, H} = −iΩe^{−iθ}` and their conjugates, in a rotor
+/// with the paper's names (`omega`, `I`, `theta`, `p_theta`).
 pub fn eigen_proof(system: &System, ladder: &str) -> Result<EigenProof, EngineError> {
+    system.require_rotor("the eigenfunction proof of the tower")?;
     let vars = system.vars();
     let theta = vars
         .angles()
