@@ -232,6 +232,7 @@ pub fn sentence(s: &str) -> String {
             && (w == "a" || is_prose_word(w))
             && w.chars().all(|c| c.is_ascii_alphabetic())
     };
+    let is_number = |w: &str| !w.is_empty() && w.chars().all(|c| c.is_ascii_digit() || c == '.');
     let mut out: Vec<String> = Vec::new();
     let mut run: Vec<&str> = Vec::new();
     let flush = |run: &mut Vec<&str>, out: &mut Vec<String>| {
@@ -240,12 +241,32 @@ pub fn sentence(s: &str) -> String {
             run.clear();
         }
     };
+    let mut after_number = false;
     for chunk in s.split(' ').filter(|c| !c.is_empty()) {
-        if is_prose(chunk) {
+        // A parenthesis that opens before a word or a number, or closes after one, stays
+        // text: `(3 exact checks, 0.01 s)` is `($3$ exact checks, $0.01$ s)`, and `s` after a
+        // number is the unit.
+        let inner = chunk.trim_start_matches('(');
+        let open = &chunk[..chunk.len() - inner.len()];
+        let core = inner.trim_end_matches([')', ',', '.', ';', ':']);
+        let close = &inner[core.len()..];
+        let unit = after_number && core == "s";
+        after_number = is_number(core);
+        if is_prose(chunk) || (unit && open.is_empty()) {
             flush(&mut run, &mut out);
             out.push(text(chunk));
-        } else {
+        } else if (open.is_empty() && !close.contains(')'))
+            || !(is_prose(core) || unit || is_number(core))
+        {
+            // Parentheses around formulas stay in the formula: `(x + y)²`.
             run.push(chunk);
+        } else {
+            flush(&mut run, &mut out);
+            let core = match is_prose(core) || unit {
+                true => text(core),
+                false => format!("${}$", math(core)),
+            };
+            out.push(format!("{open}{core}{close}"));
         }
     }
     flush(&mut run, &mut out);
@@ -461,6 +482,21 @@ pub fn relation(s: &str) -> Option<usize> {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// A summary's parenthetical keeps its parentheses and its unit in text, each number a
+    /// formula (it was `$(3$ exact $\text{checks})$`); parentheses inside a formula stay there.
+    #[test]
+    fn sentence_parentheses_around_words_and_numbers_are_text() {
+        assert_eq!(
+            sentence("3 claims: 2 proved, 1 refuted (3 exact checks, 0.01 s)"),
+            "$3$ claims: $2$ proved, $1$ refuted ($3$ exact checks, $0.01$ s)"
+        );
+        assert_eq!(
+            sentence("all as expected (0.00 s)"),
+            "all as expected ($0.00$ s)"
+        );
+        assert_eq!(sentence("so (x + y)² = z"), "so $(x + y)^{2} = z$");
+    }
 
     fn balanced(s: &str) -> bool {
         let mut depth = 0i32;

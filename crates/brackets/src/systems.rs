@@ -348,7 +348,8 @@ mod tests {
         let planar = planar_i_rotor();
         let err = crate::check_tower(&planar, "L", 1, &mut |_, _| {}).unwrap_err();
         assert!(
-            err.to_string().contains("this system has no parameter omega"),
+            err.to_string()
+                .contains("this system has no parameter omega"),
             "{err}"
         );
         let err = crate::eigen_proof(&planar, "L").unwrap_err();
