@@ -21,7 +21,7 @@ mod lexer;
 mod parser;
 
 pub use error::{Excerpt, ParseError, Span};
-pub use parser::{parse_expr, Expr, ExprKind, MAX_DEPTH, MAX_HEIGHT};
+pub use parser::{parse_expr, Expr, ExprKind, LEFT_DEEP_SUM, MAX_DEPTH, MAX_HEIGHT};
 
 #[cfg(test)]
 mod tests {
@@ -297,17 +297,27 @@ mod tests {
                 "expression nested too deeply (more than 256 levels)"
             );
         }
-        // Long chains are parsed iteratively but make left-deep trees, whose height is limited.
-        let sum = |n: usize| vec!["x"; n].join(" + ");
-        let e = parse_expr(&nest(MAX_DEPTH - 1, &sum(MAX_HEIGHT))).unwrap();
+        // Long chains are parsed iteratively. Products make left-deep trees, whose height is
+        // limited; sums longer than LEFT_DEEP_SUM are balanced, so any length parses.
+        let product = |n: usize| vec!["x"; n].join(" * ");
+        let e = parse_expr(&nest(MAX_DEPTH - 1, &product(MAX_HEIGHT))).unwrap();
         let (mut node, mut height) = (&e, 1);
-        while let ExprKind::Add(lhs, _) = &node.kind {
+        while let ExprKind::Mul(lhs, _) = &node.kind {
             (node, height) = (lhs, height + 1);
         }
         assert_eq!(height, MAX_HEIGHT);
+        fn height_of(e: &Expr) -> usize {
+            1 + kids(e).into_iter().map(height_of).max().unwrap_or(0)
+        }
+        let sum = |n: usize| vec!["x"; n].join(" + ");
+        assert_eq!(
+            height_of(&parse_expr(&sum(LEFT_DEEP_SUM)).unwrap()),
+            LEFT_DEEP_SUM
+        );
+        assert_eq!(height_of(&parse_expr(&sum(100_000)).unwrap()), 18);
         let bad = [
-            nest(MAX_DEPTH - 1, &sum(MAX_HEIGHT + 1)),
-            sum(100_000),
+            nest(MAX_DEPTH - 1, &product(MAX_HEIGHT + 1)),
+            product(100_000),
             format!("x{}", "⁻¹".repeat(3000)),
         ];
         for src in bad {

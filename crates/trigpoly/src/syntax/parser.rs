@@ -14,9 +14,16 @@ use super::lexer::{Lexer, Tok, Token};
 pub const MAX_DEPTH: usize = 256;
 
 /// Maximum height of a parsed tree (a leaf has height 1). Chains such as `a + b + c` are
-/// left-deep, so a sum of `n` terms has height at least `n`; consumers recursing over an [`Expr`]
-/// need stack for this many levels.
+/// left-deep, so a product of `n` factors has height at least `n`; a sum of more than
+/// [`LEFT_DEEP_SUM`] terms is balanced instead, about `log₂ n` high, so that a printed
+/// polynomial of any length reads back. Consumers recursing over an [`Expr`] need stack for
+/// this many levels.
 pub const MAX_HEIGHT: usize = 2048;
+
+/// The longest sum parsed as the left-deep chain it reads as (`a − b + c` is `(a − b) + c`);
+/// a longer one is a balanced tree of the same terms and signs (`(a − b) + (c − d)` for
+/// `a − b + c − d`), whose height grows as the logarithm of its length.
+pub const LEFT_DEEP_SUM: usize = 64;
 
 /// Right binding power of unary `-` and `+`.
 const UNARY_BP: u8 = 5;
@@ -214,10 +221,41 @@ impl Parser<'_> {
         let mut lhs = self.prefix()?;
         let mut height = self.height;
         while let Some(op) = self.operator(&mut lhs, &mut height, min_bp)? {
+            if op.negative.is_some() {
+                return self.sum(lhs, height, op, min_bp);
+            }
             height = self.rhs(op, &mut lhs, height)?;
         }
         self.height = height;
         Ok(lhs)
+    }
+
+    /// Parses the rest of a sum whose first term `first` (of height `height`) is followed by
+    /// the `+` or `−` `op`: every later operator at this level is another `+` or `−`, since the
+    /// terms take all that binds more tightly.
+    fn sum(&mut self, first: Expr, height: usize, op: BinOp, min_bp: u8) -> PResult<Expr> {
+        let mut terms = vec![Term {
+            negative: false,
+            expr: first,
+            height,
+            op: op.span,
+        }];
+        let mut op = Some(op);
+        while let Some(next) = op {
+            let expr = self.nested(next.span, |p| p.expr(next.right_bp))?;
+            terms.push(Term {
+                negative: next.negative.unwrap_or(false),
+                expr,
+                height: self.height,
+                op: next.span,
+            });
+            let last = terms.last_mut().expect("a term");
+            op = self.operator(&mut last.expr, &mut last.height, min_bp)?;
+            debug_assert!(op.as_ref().is_none_or(|o| o.negative.is_some()));
+        }
+        let (tree, height) = Term::chain(terms)?;
+        self.height = height;
+        Ok(tree)
     }
 
     /// Applies any superscripts to `lhs` (of height `height`), then consumes and returns the next
@@ -271,6 +309,7 @@ impl Parser<'_> {
                     make: ExprKind::Mul,
                     span: at,
                     right_bp: 4,
+                    negative: None,
                 }));
             }
             _ => return Ok(None),
@@ -278,11 +317,17 @@ impl Parser<'_> {
         if left_bp < min_bp {
             return Ok(None);
         }
+        let negative = match self.tok.tok {
+            Tok::Plus => Some(false),
+            Tok::Minus => Some(true),
+            _ => None,
+        };
         let span = self.bump()?.span;
         Ok(Some(BinOp {
             make,
             span,
             right_bp,
+            negative,
         }))
     }
 
@@ -468,6 +513,59 @@ struct BinOp {
     make: MakeNode,
     span: Span,
     right_bp: u8,
+    /// For `+` and `−`: whether it subtracts.
+    negative: Option<bool>,
+}
+
+/// A term of a sum: its sign, the term, its height, and the operator before it (for the first,
+/// the one after it), where a height error is reported.
+struct Term {
+    negative: bool,
+    expr: Expr,
+    height: usize,
+    op: Span,
+}
+
+impl Term {
+    /// The tree of a sum of `terms` (the first positive) and its height: left-deep up to
+    /// [`LEFT_DEEP_SUM`] terms, else balanced, terms of one sign joined by `+` and of two by
+    /// `−` with the first's sign kept for the pair (`−c + d` is `−(c − d)`).
+    fn chain(terms: Vec<Term>) -> PResult<(Expr, usize)> {
+        let join = |a: Term, b: Term| -> PResult<Term> {
+            let make = match a.negative == b.negative {
+                true => ExprKind::Add,
+                false => ExprKind::Sub,
+            };
+            let span = a.expr.span.to(b.expr.span);
+            Ok(Term {
+                negative: a.negative,
+                height: grow(a.height.max(b.height), b.op)?,
+                expr: Expr::new(make(Box::new(a.expr), Box::new(b.expr)), span),
+                op: a.op,
+            })
+        };
+        let mut terms = terms;
+        if terms.len() <= LEFT_DEEP_SUM {
+            let mut rest = terms.into_iter();
+            let first = rest.next().expect("a first term");
+            let sum = rest.try_fold(first, join)?;
+            return Ok((sum.expr, sum.height));
+        }
+        while terms.len() > 1 {
+            let mut pairs = Vec::with_capacity(terms.len().div_ceil(2));
+            let mut rest = terms.into_iter();
+            while let Some(a) = rest.next() {
+                pairs.push(match rest.next() {
+                    Some(b) => join(a, b)?,
+                    None => a,
+                });
+            }
+            terms = pairs;
+        }
+        let sum = terms.pop().expect("a sum");
+        debug_assert!(!sum.negative, "the first term is positive");
+        Ok((sum.expr, sum.height))
+    }
 }
 
 /// Functions that the text form writes without parentheses: `cos θ`, `sin²θ`.

@@ -470,3 +470,35 @@ fn juxtaposition_is_ambiguous_for_names_spelled_by_written_one_letter_names() {
         "`p_x`, `G1` are not letters"
     );
 }
+
+/// A sum longer than the left-deep chain (`LEFT_DEEP_SUM` terms) is parsed as a balanced tree of
+/// the same terms and signs: an alternating sum of 5000 powers equals its terms, and the text
+/// and ASCII of a polynomial of 3003 terms read back (they passed the parser's height limit
+/// of 2048 and were refused).
+#[test]
+fn long_sums_read_back() {
+    let vars = crate::common::coordinates(&["x", "y", "z", "p_x", "p_y", "p_z"]);
+    // The k-th term is ±x^(k mod 100) y^(k div 100), negative for odd k.
+    let alternating: Vec<String> = (0..5000)
+        .map(|k| {
+            let sign = if k % 2 == 1 { "- " } else { "+ " };
+            format!("{sign}x^{}*y^{}", k % 100, k / 100)
+        })
+        .collect();
+    let f: Q = p(&vars, &alternating.join(" "));
+    let (x, y) = (
+        crate::common::var(&vars, "x"),
+        crate::common::var(&vars, "y"),
+    );
+    assert_eq!(f.len(), 5000);
+    for k in [0, 1, 2, 63, 64, 65, 127, 128, 4998, 4999] {
+        let sign = if k % 2 == 1 { -1 } else { 1 };
+        let c = f.coeff(&[(x, k % 100), (y, k / 100)]);
+        assert_eq!(c, trigpoly::Rational::from(sign), "term {k}");
+    }
+    let long: G = p(&vars, "(x + y + z + p_x + p_y + p_z + 1)^8 - 2*(x - y)^20");
+    assert!(long.len() > 3000);
+    for text in [long.to_string(), long.to_ascii()] {
+        assert_eq!(p::<GaussianRational>(&vars, &text), long);
+    }
+}
