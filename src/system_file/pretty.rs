@@ -187,9 +187,22 @@ impl LoadedSystem {
                     },
                     _ => None,
                 };
-                let text = match exponent {
-                    Some(e) => format!("{}{e}", base.text),
-                    None => format!("{}^{}", base.text, self.print(b, spaced).wrapped(ATOM).text),
+                // `cos²θ`: the exponent on the function of a bare angle, as the paper writes it.
+                let trig_of_angle = match &a.kind {
+                    ExprKind::Call(f, _, args) if f == "cos" || f == "sin" => match &args[..] {
+                        [arg] if matches!(arg.kind, ExprKind::Name(_)) => base.text.split_once(' '),
+                        _ => None,
+                    },
+                    _ => None,
+                };
+                let text = match (exponent, trig_of_angle) {
+                    (Some(e), Some((f, angle))) if !e.starts_with('⁻') => {
+                        format!("{f}{e}{angle}")
+                    }
+                    (Some(e), _) => format!("{}{e}", base.text),
+                    (None, _) => {
+                        format!("{}^{}", base.text, self.print(b, spaced).wrapped(ATOM).text)
+                    }
                 };
                 Printed {
                     text,
@@ -199,12 +212,23 @@ impl LoadedSystem {
                 }
             }
             ExprKind::Call(f, _, args) => {
+                // `cos θ` of a bare angle, as the paper (and the normal form) writes it.
+                if let ([arg], "cos" | "sin") = (&args[..], f.as_str()) {
+                    if let ExprKind::Name(angle) = &arg.kind {
+                        let mut p = Printed::atom(format!("{f} {}", self.display_name(angle)));
+                        p.first_long = true;
+                        p.last_long = true;
+                        return p;
+                    }
+                }
                 let args: Vec<String> = args.iter().map(|a| self.print(a, spaced).text).collect();
-                // The paper's (and LaTeX's) real and imaginary parts are `Re` and `Im`.
+                // The paper's (and LaTeX's) real and imaginary parts are `Re` and `Im`; any
+                // other name before parentheses multiplies them (`K_{1,1}(x)`).
                 let f = match f.as_str() {
-                    "re" => "Re",
-                    "im" => "Im",
-                    other => other,
+                    "re" => "Re".to_string(),
+                    "im" => "Im".to_string(),
+                    "cos" | "sin" | "exp" | "conj" => f.clone(),
+                    other => self.display_name(other),
                 };
                 let mut p = Printed::atom(format!("{f}({})", args.join(", ")));
                 p.first_long = true;

@@ -303,44 +303,20 @@ impl<'a> Scope<'a> {
         let rec = |t: &Tree| self.prepare(source, text, t).map(Box::new);
         let kind = match &tree.kind {
             ExprKind::Name(name) => {
-                let known = name == "i"
-                    || vars.lookup(name).is_some()
-                    || self.file.system.get(name).is_ok();
-                if !known {
-                    if let Some((k, m, n)) = instance_of(&self.file.families, name) {
-                        if k >= self.families {
-                            let f = &self.file.families[k];
-                            return Err(text.error(
-                                source,
-                                ErrorKind::Family,
-                                span,
-                                format!(
-                                    "the family '{}' cannot be used here: a family may only use \
-                                     families declared before it, and a function none",
-                                    f.name
-                                ),
-                            ));
-                        }
-                        let e = self.expand(k, m, n, source, text.source_span(span))?;
-                        self.made.borrow_mut().insert(name.clone(), e);
-                    } else if let Some(family) = meant_family(&self.file.families, name) {
-                        return Err(text.error(
-                            source,
-                            ErrorKind::Family,
-                            span,
-                            malformed_instance_message(family, name),
-                        ));
-                    }
-                }
+                self.make_instance(source, text, name, span)?;
                 ExprKind::Name(name.clone())
             }
-            ExprKind::Call(f, name_span, args) => ExprKind::Call(
-                f.clone(),
-                *name_span,
-                args.iter()
-                    .map(|a| self.prepare(source, text, a))
-                    .collect::<Result<_, _>>()?,
-            ),
+            // A name before parentheses multiplies them: a family instance there too (`K_1_1(x)`).
+            ExprKind::Call(f, name_span, args) => {
+                self.make_instance(source, text, f, *name_span)?;
+                ExprKind::Call(
+                    f.clone(),
+                    *name_span,
+                    args.iter()
+                        .map(|a| self.prepare(source, text, a))
+                        .collect::<Result<_, _>>()?,
+                )
+            }
             ExprKind::Bracket(a, b) => {
                 for side in [a, b] {
                     if let ExprKind::Name(n) = &side.kind {
@@ -372,6 +348,49 @@ impl<'a> Scope<'a> {
             ExprKind::Pow(a, b) => ExprKind::Pow(rec(a)?, rec(b)?),
         };
         Ok(Tree { kind, span })
+    }
+
+    /// Expands `name` (at `span`) if it is an instance of a family this scope sees, for the
+    /// lowering to find; refuses a family declared later and a malformed instance. Any other
+    /// name is left to the lowering.
+    fn make_instance(
+        &self,
+        source: &Source,
+        text: &Text,
+        name: &str,
+        span: Span,
+    ) -> Result<(), FileError> {
+        let vars = self.file.system.vars();
+        let known =
+            name == "i" || vars.lookup(name).is_some() || self.file.system.get(name).is_ok();
+        if known {
+            return Ok(());
+        }
+        if let Some((k, m, n)) = instance_of(&self.file.families, name) {
+            if k >= self.families {
+                let f = &self.file.families[k];
+                return Err(text.error(
+                    source,
+                    ErrorKind::Family,
+                    span,
+                    format!(
+                        "the family '{}' cannot be used here: a family may only use families \
+                         declared before it, and a function none",
+                        f.name
+                    ),
+                ));
+            }
+            let e = self.expand(k, m, n, source, text.source_span(span))?;
+            self.made.borrow_mut().insert(name.to_string(), e);
+        } else if let Some(family) = meant_family(&self.file.families, name) {
+            return Err(text.error(
+                source,
+                ErrorKind::Family,
+                span,
+                malformed_instance_message(family, name),
+            ));
+        }
+        Ok(())
     }
 
     /// The instance `(m, n)` of family `k`, expanded in a scope that sees the families before

@@ -654,7 +654,7 @@ fn expand_prints_the_normal_form() {
         ),
         "{out}"
     );
-    assert!(out.contains("\n    sin(θ)² = 1 − cos²θ\n"), "{out}");
+    assert!(out.contains("\n    sin²θ   = 1 − cos²θ\n"), "{out}");
     let casimir = "4*G1^2 + G2^2 + omega^2*L^2 - (F1 - F2)^2";
     let wrong = "4*G1^2 + G2^2 + omega^2*L^2 - F1^2";
     let v: Value =
@@ -828,7 +828,7 @@ fn echoed_quotients_inside_products_are_parenthesised() {
         ),
         "{out}"
     );
-    // The trajectory's claim of the harmonic rotor's solution: `(p_x_0/M) cos(φ)`.
+    // The trajectory's claim of the harmonic rotor's solution: `(p_x_0/M) cos φ`.
     let solution = run(
         &[
             "check",
@@ -838,7 +838,7 @@ fn echoed_quotients_inside_products_are_parenthesised() {
         0,
     );
     assert!(
-        solution.contains("ω {x(t), p_φ} = −ω x_0 sin(φ) + (p_x_0/M) cos(φ)"),
+        solution.contains("ω {x(t), p_φ} = −ω x_0 sin φ + (p_x_0/M) cos φ"),
         "{solution}"
     );
 }
@@ -1195,4 +1195,37 @@ fn a_system_file_on_standard_input() {
         "{}",
         text(&o.stderr)
     );
+}
+
+/// A family instance before parentheses multiplies them, as any name there does (it was
+/// "unknown function 'K_1_1'"), and the echo writes it `K_{1,1}(x)`; the functions of a bare
+/// angle echo as the paper writes them, `cos θ` and `cos²θ`, and read back.
+#[test]
+fn family_instances_before_parentheses_and_trigonometric_echoes() {
+    let dir = scratch("instance-before-parentheses");
+    std::fs::write(
+        dir.join("k.toml"),
+        "hamiltonian = \"p_x^2/2 + p_theta^2/2\"\n[phase_space]\ncoordinates = [\"x\"]\n\
+         angles = [\"theta\"]\n[[family]]\nname = \"K\"\nvalue = \"(x+i*p_x)^m*exp(-i*n*theta)\"\n",
+    )
+    .expect("write");
+    let exprs = [
+        "K_1_1 (x) - x*K_1_1",
+        "K_{1,1}(x) - K_1_1*x",
+        "cos(theta)^2 + sin(theta)*x - cos²θ - x sin θ",
+    ];
+    let o = superint_in(
+        &dir,
+        &[&["expand", "k.toml"][..], &exprs, &["--no-timings"]].concat(),
+    );
+    assert_eq!(o.status.code(), Some(0), "{}", text(&o.stderr));
+    let out = text(&o.stdout);
+    for echo in [
+        "K_{1,1}(x) − x K_{1,1} ",
+        "K_{1,1}(x) − K_{1,1} x ",
+        "cos²θ + sin θ x − cos²θ − x sin θ = 0",
+    ] {
+        assert!(out.contains(echo), "{echo:?} in {out}");
+    }
+    assert_eq!(out.matches("= 0\n").count(), 3, "{out}");
 }
