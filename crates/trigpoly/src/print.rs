@@ -235,7 +235,7 @@ impl Names {
                 match style {
                     Style::Unicode => var.unicode().to_string(),
                     Style::Latex => var.latex().to_string(),
-                    Style::Ascii => var.name().to_string(),
+                    Style::Ascii => var.ascii().to_string(),
                 }
             })
             .collect();

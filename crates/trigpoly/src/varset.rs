@@ -55,6 +55,16 @@ impl Variable {
     pub fn name(&self) -> &str {
         &self.name
     }
+    /// The name in ASCII, as the ASCII form of an element prints it: the declared name, or for
+    /// one declared in Greek letters (`θ`, `p_θ`) the same with the letters spelled out
+    /// (`theta`, `p_theta`), which reads back. A name with other letters outside ASCII has no
+    /// such form and is its own.
+    pub fn ascii(&self) -> &str {
+        match self.spelled_out.as_deref() {
+            Some(spelled) if !self.name.is_ascii() && spelled.is_ascii() => spelled,
+            _ => &self.name,
+        }
+    }
     /// The name as printed in text (`p_θ`, `ω`).
     pub fn unicode(&self) -> &str {
         &self.unicode

@@ -502,3 +502,22 @@ fn long_sums_read_back() {
         assert_eq!(p::<GaussianRational>(&vars, &text), long);
     }
 }
+
+/// Names declared in Greek letters print in ASCII spelled out (`p_theta`, `cos(theta)`), so
+/// the ASCII form is ASCII and reads back; it printed `p_θ*cos(θ)`.
+#[test]
+fn ascii_spells_out_names_declared_in_greek() {
+    let vars = VarSet::builder()
+        .coordinate("ξ")
+        .momentum("p_ξ")
+        .angle("θ")
+        .momentum("p_θ")
+        .parameter("ω")
+        .build()
+        .unwrap();
+    let f: G = p(&vars, "ω*ξ*p_θ*cos(θ) + p_ξ^2/2");
+    let ascii = f.to_ascii();
+    assert!(ascii.is_ascii(), "{ascii}");
+    assert!(ascii.contains("omega*xi*p_theta*cos(theta)"), "{ascii}");
+    assert_eq!(p::<GaussianRational>(&vars, &ascii), f);
+}
