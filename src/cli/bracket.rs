@@ -26,10 +26,10 @@ pub struct BracketArgs {
     #[arg(value_name = "FILE")]
     file: PathBuf,
     /// The first expression.
-    #[arg(value_name = "F")]
+    #[arg(value_name = "F", allow_hyphen_values = true)]
     f: String,
     /// The second expression.
-    #[arg(value_name = "G")]
+    #[arg(value_name = "G", allow_hyphen_values = true)]
     g: String,
     /// Substitute after forming the bracket, such as 'p_theta = 2*I*omega/3' (several
     /// separated by commas).

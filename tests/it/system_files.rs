@@ -1229,3 +1229,25 @@ fn family_instances_before_parentheses_and_trigonometric_echoes() {
     }
     assert_eq!(out.matches("= 0\n").count(), 3, "{out}");
 }
+
+/// `bracket` takes expressions that begin with a minus sign as they are (they were refused as
+/// unknown options), and the options after them still count; `expand` takes them after `--`.
+#[test]
+fn expressions_may_begin_with_a_minus_sign() {
+    let out = run(
+        &[
+            "bracket",
+            "systems/kepler.toml",
+            "-r",
+            "-p_r",
+            "--no-timings",
+        ],
+        0,
+    );
+    assert!(out.contains("{−r, −p_r} = 1\n"), "{out}");
+    let out = run(
+        &["expand", "systems/kepler.toml", "--no-timings", "--", "-r"],
+        0,
+    );
+    assert!(out.contains("−r = −r\n"), "{out}");
+}
