@@ -149,7 +149,7 @@ impl ClaimSpec {
                 };
                 // Family instances written K_{1,1} are K_1_1 in the rewritten text, at the
                 // same places.
-                let rewritten = lhs.rewritten(rewrite_braces(&lhs.value, &file.families));
+                let rewritten = lhs.rewritten(rewrite_braces(&lhs.value, &file.families, &[]));
                 let functions: Vec<(String, Text)> = args
                     .iter()
                     .map(|a| (file.pretty(a), rewritten.slice(a.span.start..a.span.end)))

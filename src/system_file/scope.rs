@@ -22,6 +22,8 @@ use super::LoadedSystem;
 pub(crate) struct Scope<'a> {
     file: &'a LoadedSystem,
     families: usize,
+    /// In a family's value or eigenvalue, its index names, which braces may hold (`K_{m,n}`).
+    indices: &'a [String],
     made: RefCell<HashMap<String, Expr>>,
 }
 
@@ -56,7 +58,7 @@ fn malformed_instance_message(family: &super::Family, written: &str) -> String {
     format!(
         "'{written}' is not an instance of the family {f}_{m}_{n}, which takes two indices, \
          each a whole number 0, 1, 2, … of at most nine digits: write {f}_2_3 or {f}_{{2,3}} \
-         (in a family's value, with index names: {f}_{m}_{n})"
+         (in a family's value, with index names: {f}_{m}_{n} or {f}_{{{m},{n}}})"
     )
 }
 
@@ -69,10 +71,12 @@ struct BracedInstance<'f> {
     indices: Option<(&'f str, &'f str)>,
 }
 
-/// Every `K_{…}` in `s` whose `K` is one of `families`, left to right.
+/// Every `K_{…}` in `s` whose `K` is one of `families`, left to right; its indices are whole
+/// numbers or, in a family's text, its `index_names`.
 fn braced_instances<'f>(
     s: &'f str,
     families: &'f [super::Family],
+    index_names: &'f [String],
 ) -> impl Iterator<Item = BracedInstance<'f>> {
     s.match_indices("_{").filter_map(move |(k, _)| {
         let head_start = s[..k]
@@ -85,11 +89,14 @@ fn braced_instances<'f>(
         let close = s[k..].find('}').map(|c| c + k);
         let end = close.map_or(s.len(), |c| c + 1);
         let inner = &s[k + 2..close.unwrap_or(end)];
-        let digits = |p: &str| !p.is_empty() && p.bytes().all(|b| b.is_ascii_digit());
+        let index = |p: &str| {
+            (!p.is_empty() && p.bytes().all(|b| b.is_ascii_digit()))
+                || index_names.iter().any(|i| i == p)
+        };
         let indices = close
             .and_then(|_| inner.split_once(','))
             .map(|(m, n)| (m.trim(), n.trim()))
-            .filter(|(m, n)| digits(m) && digits(n));
+            .filter(|(m, n)| index(m) && index(n));
         Some(BracedInstance {
             family,
             span: head_start..end,
@@ -100,8 +107,12 @@ fn braced_instances<'f>(
 
 /// The first `K_{…}` of a family `K` whose braces do not hold two whole numbers (`K_{1}`,
 /// `K_{m,2}`), with the message that says what they must hold.
-fn malformed_braces(s: &str, families: &[super::Family]) -> Option<(Span, String)> {
-    braced_instances(s, families)
+fn malformed_braces(
+    s: &str,
+    families: &[super::Family],
+    index_names: &[String],
+) -> Option<(Span, String)> {
+    braced_instances(s, families, index_names)
         .find(|b| b.indices.is_none())
         .map(|b| {
             let written = &s[b.span.clone()];
@@ -114,11 +125,16 @@ fn malformed_braces(s: &str, families: &[super::Family]) -> Option<(Span, String
         })
 }
 
-/// Rewrites `K_{2,3}` into `K_2_3` padded with spaces to the same length, for the family
-/// names given, so that every other span stays where it was.
-pub(crate) fn rewrite_braces(s: &str, families: &[super::Family]) -> String {
+/// Rewrites `K_{2,3}` into `K_2_3` (and, in a family's text, `K_{m,n}` into `K_m_n`) padded
+/// with spaces to the same length, for the family names given, so that every other span stays
+/// where it was.
+pub(crate) fn rewrite_braces(
+    s: &str,
+    families: &[super::Family],
+    index_names: &[String],
+) -> String {
     let mut out = s.to_string();
-    for b in braced_instances(s, families) {
+    for b in braced_instances(s, families, index_names) {
         if let Some((m, n)) = b.indices {
             let replacement = format!("{}_{m}_{n}", b.family.name);
             let width = b.span.len();
@@ -263,7 +279,17 @@ impl<'a> Scope<'a> {
         Scope {
             file,
             families,
+            indices: &[],
             made: RefCell::new(HashMap::new()),
+        }
+    }
+
+    /// The scope of family `k`'s value and eigenvalue: the families before it, and its index
+    /// names, also inside braces (`K_{m,n}` for `K_m_n`).
+    pub(crate) fn of_family(file: &'a LoadedSystem, k: usize) -> Self {
+        Scope {
+            indices: &file.families[k].indices,
+            ..Scope::new(file, k)
         }
     }
 
@@ -277,10 +303,10 @@ impl<'a> Scope<'a> {
     pub(crate) fn tree(&self, source: &Source, text: &Text) -> Result<Tree, FileError> {
         let families = &self.file.families[..self.families];
         // `P_{1}` does not parse, and `P_{m,2}` would be an unknown `P_`: the braces are the news.
-        if let Some((span, message)) = malformed_braces(&text.value, families) {
+        if let Some((span, message)) = malformed_braces(&text.value, families, self.indices) {
             return Err(text.error(source, ErrorKind::Family, span, message));
         }
-        let rewritten = rewrite_braces(&text.value, families);
+        let rewritten = rewrite_braces(&text.value, families, self.indices);
         parse_expr(&rewritten).map_err(|e| expression_error(source, text, &e))
     }
 
@@ -462,7 +488,7 @@ impl LoadedSystem {
         n: i64,
     ) -> Result<Expr, FileError> {
         let family = &self.families[k];
-        let scope = Scope::new(self, k);
+        let scope = Scope::of_family(self, k);
         let tree = scope.tree(&self.source, text)?;
         let tree = substitute(&tree, &family.indices, [m, n], &self.families[..k]);
         scope.lower(&self.source, text, &tree)
@@ -520,7 +546,7 @@ mod tests {
             span: 0..0,
         };
         let s = "{K_{2, 3}, H} + L_{1,1}";
-        let r = rewrite_braces(s, std::slice::from_ref(&fam));
+        let r = rewrite_braces(s, std::slice::from_ref(&fam), &[]);
         assert_eq!(r, "{K_2_3   , H} + L_{1,1}");
         assert_eq!(r.len(), s.len());
         assert_eq!(instance_of(&[fam], "K_2_3"), Some((0, 2, 3)));

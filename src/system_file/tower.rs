@@ -199,7 +199,7 @@ impl LoadedSystem {
     fn family_proof(&self, k: usize, id: &str, statement: &str) -> Result<Entry, FileError> {
         let family = &self.families[k];
         let source = &self.source;
-        let scope = Scope::new(self, k);
+        let scope = Scope::of_family(self, k);
         let tree = scope.tree(source, &family.value)?;
         let [a, b] = match powers(&tree, &family.indices) {
             Ok(p) => p,
@@ -321,7 +321,7 @@ pub fn family_tower_report(
     let f = &file.families[k];
     // Fails with a located message when the family has no eigenvalue.
     file.eigenvalue_at(k, 1, 1)?;
-    let scope = Scope::new(file, k);
+    let scope = Scope::of_family(file, k);
     let value = file.pretty(&scope.tree(&file.source, &f.value)?);
     let eigen_tree = scope.tree(&file.source, f.eigenvalue.as_ref().expect("checked"))?;
     let eigen = file.pretty_factor(&eigen_tree);

@@ -1251,3 +1251,32 @@ fn expressions_may_begin_with_a_minus_sign() {
     );
     assert!(out.contains("−r = −r\n"), "{out}");
 }
+
+/// A family's value may write an earlier family's instance with braces and its own index names,
+/// `K_{m,n}` or `K_{a, 2}`, as claims write `K_{2,3}` (only `K_m_n` was taken there).
+#[test]
+fn family_values_write_instances_with_braces() {
+    let dir = scratch("braces-in-family-values");
+    std::fs::write(
+        dir.join("f.toml"),
+        "hamiltonian = \"p_x^2/2 + p_theta^2/2\"\n[phase_space]\ncoordinates = [\"x\"]\n\
+         angles = [\"theta\"]\n[[family]]\nname = \"K\"\nvalue = \"(x+i*p_x)^m*exp(-i*n*theta)\"\n\
+         [[family]]\nname = \"P\"\nvalue = \"re(K_{m,n})\"\n\
+         [[family]]\nname = \"Q\"\nindices = [\"a\", \"b\"]\nvalue = \"K_{a, 2}*K_{1,b}\"\n",
+    )
+    .expect("write");
+    let o = superint_in(
+        &dir,
+        &[
+            "expand",
+            "f.toml",
+            "P_2_3 - re(K_2_3)",
+            "Q_3_1 - K_3_2*K_1_1",
+            "P_2_3",
+        ],
+    );
+    assert_eq!(o.status.code(), Some(0), "{}", text(&o.stderr));
+    let out = text(&o.stdout);
+    assert_eq!(out.matches(" = 0\n").count(), 2, "{out}");
+    assert!(!out.contains("P_{2,3} = 0"), "P_{{2,3}} is not zero: {out}");
+}
