@@ -44,13 +44,19 @@ pub mod prelude {
     pub use brackets::{
         check_tower, closure, eigen_proof, rank, search, systems, BracketTable, Claim, Closure,
         ClosureBracket, ClosureOptions, Condition, EigenProof, EngineError, Entry as TableEntry,
-        Integral, Outcome, PhaseSpace, RankCertificate, SearchOptions, SearchResult, SearchSpace,
-        System, TowerReport, Verdict,
+        Integral, NamedFunction, Outcome, PhaseSpace, RankCertificate, SearchOptions, SearchResult,
+        SearchSpace, System, TowerReport, Verdict,
     };
-    pub use trigpoly::{Expr, GaussianRational, Poly, Rational, Style, Var, VarSet};
+    pub use trigpoly::{
+        AlgebraError, Expr, GaussianRational, Limits, ParseError, Point, Poly, Rational, Style,
+        Var, VarKind, VarSet, Vars,
+    };
 
     pub use crate::paper::{tower_report, Paper, PaperOptions, TowerSystem};
     pub use crate::render::{render, Format, Options as RenderOptions};
     pub use crate::report::{ClaimResult, Report};
-    pub use crate::system_file::{load as load_system_file, LimitsOverride, LoadedSystem};
+    pub use crate::system_file::{
+        check_report, load as load_system_file, load_str as load_system_text, FileError,
+        LimitsOverride, LoadedSystem,
+    };
 }

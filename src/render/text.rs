@@ -293,14 +293,20 @@ pub(crate) fn number(q: &GaussianRational) -> String {
     q.to_string()
 }
 
+/// `there is 1 function`, `there are 2 functions`.
+fn there_are(n: usize, noun: &str) -> String {
+    let verb = if n == 1 { "is" } else { "are" };
+    format!("there {verb} {}", plural(n, noun))
+}
+
 /// Why the rank is at most the certified one, in words.
 pub(crate) fn upper_bound(r: &RankResult) -> String {
     let k = r.certificate.rank;
     match &r.certificate.upper {
         UpperBound::Size if r.functions.len() <= r.coordinates.len() => {
-            format!("there are {}", plural(r.functions.len(), "function"))
+            there_are(r.functions.len(), "function")
         }
-        UpperBound::Size => format!("there are {}", plural(r.coordinates.len(), "coordinate")),
+        UpperBound::Size => there_are(r.coordinates.len(), "coordinate"),
         UpperBound::VanishingMinors { count } => format!(
             "every {0} × {0} minor ({1}) vanishes identically",
             k + 1,

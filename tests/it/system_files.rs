@@ -1280,3 +1280,10 @@ fn family_values_write_instances_with_braces() {
     assert_eq!(out.matches(" = 0\n").count(), 2, "{out}");
     assert!(!out.contains("P_{2,3} = 0"), "P_{{2,3}} is not zero: {out}");
 }
+
+/// The rank's upper bound reads as English for one function too ("there are 1 function").
+#[test]
+fn rank_of_one_function_reads_there_is() {
+    let out = run(&["rank", "systems/kepler.toml", "L", "--no-timings"], 0);
+    assert!(out.contains("≤ 1: there is 1 function\n"), "{out}");
+}

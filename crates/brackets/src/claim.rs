@@ -24,10 +24,15 @@ pub struct Condition {
 impl Condition {
     /// `v = value`, where `value` does not mention `v` (a value read from input goes through
     /// [`Condition::all`], which says so when it does).
+    ///
+    /// # Panics
+    ///
+    /// If `value` mentions `v`: the condition would be an equation, not a substitution.
     pub fn new(text: &str, v: Var, value: Expr) -> Self {
-        debug_assert!(
+        assert!(
             !value.contains(v),
-            "a condition's value mentions its variable"
+            "a condition's value mentions its variable ({text}); Condition::all refuses it \
+             with an error"
         );
         Condition {
             text: text.to_string(),

@@ -35,6 +35,20 @@ pub enum EngineError {
     Invalid(String),
 }
 
+/// A parse error without its source, so that `?` works on a parse in a function that returns
+/// an `EngineError`: its message says where by byte offsets (`EngineError::parse` with the
+/// source gives line, column and caret).
+impl From<ParseError> for EngineError {
+    fn from(error: ParseError) -> Self {
+        let (start, end) = (error.span.start, error.span.end);
+        EngineError::Parse {
+            source_text: String::new(),
+            message: format!("{} (at bytes {start}..{end})", error.message),
+            error,
+        }
+    }
+}
+
 impl EngineError {
     /// A parse error rendered against its source.
     pub fn parse(source: &str, error: ParseError) -> Self {

@@ -36,7 +36,8 @@ pub struct System {
 }
 
 impl System {
-    /// A system with Hamiltonian `h`, available under the name `H`.
+    /// A system with Hamiltonian `h`, available under the name `H` (unless a variable is named
+    /// `H`, which then wins in [`System::parse`]; system files reserve the name).
     pub fn new(name: &str, space: PhaseSpace, h: Expr) -> Self {
         let mut s = System {
             name: name.to_string(),
@@ -68,7 +69,9 @@ impl System {
         &self.functions[0].expr
     }
 
-    /// Defines (or redefines) a named function.
+    /// Defines (or redefines) a named function. A variable of the same name (in any of its
+    /// spellings) wins in [`System::parse`], so such a function could not be named there:
+    /// [`System::define_parsed`] refuses the name.
     pub fn define(&mut self, name: &str, display: &str, expr: Expr) {
         let f = NamedFunction {
             name: name.into(),
@@ -85,16 +88,35 @@ impl System {
         }
     }
 
-    /// Defines a named function from text, which may use earlier names and brackets.
+    /// Defines a named function from text, which may use earlier names and brackets; the name
+    /// of a variable is refused (a variable wins in [`System::parse`]).
     pub fn define_parsed(
         &mut self,
         name: &str,
         display: &str,
         src: &str,
     ) -> Result<(), EngineError> {
+        if self.vars().lookup(name).is_some() {
+            return Err(EngineError::Invalid(format!(
+                "'{name}' is a variable of the system, so a function of that name could never \
+                 be used; choose another name"
+            )));
+        }
         let e = self.parse(src)?;
         self.define(name, display, e);
         Ok(())
+    }
+
+    /// Certifies the rank of the Jacobian of the named functions (or family instances the
+    /// system defines) by the phase-space coordinates: [`rank`](crate::rank) by names, as
+    /// [`closure`](crate::closure) and [`BracketTable::compute`](crate::BracketTable::compute)
+    /// take them.
+    pub fn rank(&self, names: &[&str]) -> Result<crate::RankCertificate, EngineError> {
+        let functions = names
+            .iter()
+            .map(|name| self.get(name).cloned())
+            .collect::<Result<Vec<_>, _>>()?;
+        crate::rank(&self.space, &functions)
     }
 
     /// The named functions, `H` first.
@@ -182,5 +204,65 @@ impl Context<GaussianRational> for System {
 
     fn names(&self) -> Vec<String> {
         self.functions.iter().map(|f| f.name.clone()).collect()
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::systems::harmonic_rotor;
+
+    /// `System::rank` by names certifies what `rank` does on the same functions, and an
+    /// unknown name is an error.
+    #[test]
+    fn rank_by_names() {
+        let rotor = harmonic_rotor();
+        let by_names = rotor.rank(&["H", "L", "F2"]).expect("a certificate");
+        let functions: Vec<Expr> = ["H", "L", "F2"]
+            .iter()
+            .map(|n| rotor.get(n).unwrap().clone())
+            .collect();
+        let direct = crate::rank(rotor.space(), &functions).expect("a certificate");
+        assert_eq!((by_names.rank, direct.rank), (3, 3));
+        assert_eq!(
+            rotor.rank(&["H", "nope"]).unwrap_err(),
+            EngineError::UnknownName("nope".into())
+        );
+    }
+
+    /// A function named like a variable could never be used: `define_parsed` refuses it.
+    #[test]
+    fn a_function_may_not_take_a_variables_name() {
+        let mut rotor = harmonic_rotor();
+        for name in ["x", "omega", "ω", "p_theta"] {
+            let err = rotor.define_parsed(name, name, "x^2").unwrap_err();
+            assert!(err.to_string().contains("is a variable"), "{name}: {err}");
+        }
+        rotor
+            .define_parsed("X2", "X₂", "x^2")
+            .expect("a fresh name");
+        assert_eq!(rotor.parse("X2").unwrap(), rotor.parse("x^2").unwrap());
+    }
+
+    /// `?` turns a parse error into an `EngineError` that says where, by bytes.
+    #[test]
+    fn parse_errors_convert_with_their_place() {
+        fn parse(rotor: &System, src: &str) -> Result<Expr, EngineError> {
+            Ok(Expr::parse(rotor.vars(), src)?)
+        }
+        let err = parse(&harmonic_rotor(), "x +").unwrap_err();
+        assert!(matches!(err, EngineError::Parse { .. }));
+        assert!(err.to_string().contains("(at bytes 3..3)"), "{err}");
+    }
+
+    /// A condition whose value mentions its variable is an equation, refused in every build
+    /// (a `debug_assert` let it through in release).
+    #[test]
+    #[should_panic(expected = "a condition's value mentions its variable")]
+    fn a_condition_may_not_set_a_variable_in_terms_of_itself() {
+        let rotor = harmonic_rotor();
+        let x = rotor.var("x");
+        let value = rotor.parse("2*x").unwrap();
+        let _ = crate::Condition::new("x = 2x", x, value);
     }
 }
