@@ -63,10 +63,11 @@ impl Expect {
     }
 }
 
-/// A numbered section of the paper.
+/// A numbered section of a report: of the paper (2 to 5), or one a file checked, a search, a
+/// closure (1, 2, …).
 #[derive(Clone, Debug)]
 pub struct Section {
-    /// The paper's section number (2 to 5).
+    /// The section's number: the paper's (2 to 5), or its place in the report.
     pub number: u32,
     /// The title.
     pub title: String,

@@ -201,8 +201,9 @@ fn is_limit_message(message: &str) -> bool {
 }
 
 /// The hint that goes with a limit error.
-pub(crate) const LIMIT_HINT: &str = "raise the limit with --max-terms N or --max-degree D, or \
-    with max_terms or max_degree under [limits] in the file, if the machine has the memory";
+pub(crate) const LIMIT_HINT: &str = "if the machine has the memory, raise the limit with \
+    max_terms or max_degree under [limits] in the file (on the command line, --max-terms N or \
+    --max-degree D; in a program, the LimitsOverride given to the loader)";
 
 /// The hint that goes with an unknown name: where each kind of name is declared.
 const UNKNOWN_NAME_HINT: &str = "a constant such as a mass is declared under [phase_space] \

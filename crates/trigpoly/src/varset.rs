@@ -124,7 +124,13 @@ pub fn juxtaposition_is_ambiguous<'a>(
         .any(|s| s.chars().nth(1).is_some() && s.chars().all(|c| letters.contains(&c)))
 }
 
-/// Limits that stop runaway expansions with a clear error instead of exhausting memory.
+/// Limits that stop runaway expansions with a clear error instead of exhausting memory. They
+/// bound the size of each result, not the time it takes: a product is checked before it is
+/// formed where its size is known, and otherwise as it is formed, so a large power may run
+/// for a while before it stops.
+///
+/// The library's default is 20 000 000 terms and degree 1000 (system files and the command
+/// line default to 2 000 000 terms: `docs/system-files.md`).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct Limits {
     /// The most terms any single result may have.
