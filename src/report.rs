@@ -196,6 +196,28 @@ impl ClaimResult {
     }
 }
 
+/// An identity's verdict as a report's claim: proved, or refuted with its residual.
+impl From<brackets::Verdict> for ClaimResult {
+    fn from(v: brackets::Verdict) -> Self {
+        let residual = match v.outcome {
+            brackets::Outcome::Proved => None,
+            brackets::Outcome::Refuted { residual } => Some(residual),
+        };
+        ClaimResult {
+            id: v.id,
+            statement: v.statement,
+            condition: v.condition,
+            kind: ClaimKind::Identity,
+            proved: residual.is_none(),
+            expect: Expect::Proved,
+            residual,
+            witness: None,
+            note: None,
+            seconds: v.seconds,
+        }
+    }
+}
+
 /// A bracket table of named functions of a system.
 #[derive(Clone, Debug)]
 pub struct TableResult {
@@ -311,6 +333,40 @@ fn counted(n: usize, noun: &str) -> String {
 }
 
 impl Report {
+    /// A report of one section of checked claims, titled `title`, whose summary counts them:
+    /// what a program that checks its own claims prints, in any format.
+    ///
+    /// ```
+    /// use superint::prelude::*;
+    ///
+    /// let rotor = systems::harmonic_rotor();
+    /// let claims = [
+    ///     Claim::new("su2", "{L, G1} = −G2", rotor.parse("{L, G1}")?, rotor.parse("-G2")?),
+    ///     Claim::new("sign", "{L, G1} = G2", rotor.parse("{L, G1}")?, rotor.parse("G2")?),
+    /// ];
+    /// let results = claims.iter().map(|c| c.check().map(ClaimResult::from));
+    /// let report = Report::of_claims("My claims", results.collect::<Result<_, _>>()?);
+    /// let text = render(&report, Format::Text, &RenderOptions { timings: false });
+    /// assert!(text.contains("[su2 proved]") && text.contains("[sign REFUTED]"));
+    /// assert!(text.contains("residual lhs − rhs = −p_x²/M + p_y²/M − Mω²x² + Mω²y²"));
+    /// assert!(text.ends_with("2 claims: 1 proved, 1 refuted (2 exact checks)\n"));
+    /// # Ok::<(), EngineError>(())
+    /// ```
+    pub fn of_claims(title: &str, claims: Vec<ClaimResult>) -> Report {
+        let seconds = claims.iter().map(|c| c.seconds).sum();
+        Report {
+            title: title.to_string(),
+            subtitle: String::new(),
+            sections: vec![Section {
+                number: 1,
+                title: title.to_string(),
+                entries: claims.into_iter().map(Entry::Claim).collect(),
+            }],
+            summary: SummaryKind::Claims,
+            seconds,
+        }
+    }
+
     /// Every checked claim, in order: plain claims and those settled by tables, proofs, towers
     /// and ranks.
     pub fn claims(&self) -> Vec<&ClaimResult> {

@@ -369,34 +369,23 @@ impl Item {
 impl PaperClaim {
     /// Checks the claim exactly.
     pub fn check(&self) -> Result<ClaimResult, EngineError> {
-        let v = self.claim.check()?;
-        let residual = match v.outcome {
-            brackets::Outcome::Proved => None,
-            brackets::Outcome::Refuted { residual } => Some(residual),
-        };
-        let (proved, residual, witness, note) = match self.kind {
-            ClaimKind::Identity => (residual.is_none(), residual, None, None),
-            ClaimKind::Nonvanishing => match residual {
-                Some(w) => (true, None, Some(w), None),
-                None => (
-                    false,
-                    None,
-                    None,
-                    Some("the value is identically zero".into()),
-                ),
-            },
-        };
-        Ok(ClaimResult {
-            id: v.id,
-            statement: v.statement,
-            condition: v.condition,
-            kind: self.kind,
-            proved,
-            expect: crate::report::Expect::Proved,
-            residual,
-            witness,
-            note,
-            seconds: v.seconds,
+        let identity = ClaimResult::from(self.claim.check()?);
+        Ok(match self.kind {
+            ClaimKind::Identity => identity,
+            // A nonvanishing claim is proved by the nonzero value its "residual" is.
+            ClaimKind::Nonvanishing => {
+                let witness = identity.residual.clone();
+                ClaimResult {
+                    kind: ClaimKind::Nonvanishing,
+                    proved: witness.is_some(),
+                    residual: None,
+                    note: witness
+                        .is_none()
+                        .then(|| "the value is identically zero".into()),
+                    witness,
+                    ..identity
+                }
+            }
         })
     }
 }
