@@ -167,6 +167,29 @@ pub struct Verdict {
     pub seconds: f64,
 }
 
+/// `proved`, or `refuted: the residual lhs − rhs is …`.
+impl std::fmt::Display for Outcome {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        match self {
+            Outcome::Proved => f.write_str("proved"),
+            Outcome::Refuted { residual } => {
+                write!(f, "refuted: the residual lhs − rhs is {residual}")
+            }
+        }
+    }
+}
+
+/// `C09: {L, G1} = −G2: proved`, with ` at p_θ = Iω` after the statement when conditional.
+impl std::fmt::Display for Verdict {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        write!(f, "{}: {}", self.id, self.statement)?;
+        if let Some(c) = &self.condition {
+            write!(f, " at {c}")?;
+        }
+        write!(f, ": {}", self.outcome)
+    }
+}
+
 impl Claim {
     /// `lhs = rhs`.
     pub fn new(id: &str, statement: &str, lhs: Expr, rhs: Expr) -> Self {
@@ -203,6 +226,21 @@ impl Claim {
     }
 
     /// Checks the claim exactly.
+    ///
+    /// ```
+    /// use brackets::{systems, Claim};
+    ///
+    /// let rotor = systems::harmonic_rotor();
+    /// let p = |s: &str| rotor.parse(s).unwrap();
+    /// let su2 = Claim::new("C09", "{L, G1} = −G2", p("{L, G1}"), p("-G2"));
+    /// assert_eq!(su2.check()?.to_string(), "C09: {L, G1} = −G2: proved");
+    /// let sign = Claim::new("sign", "{L, G2} = G1", p("{L, G2}"), p("G1"));
+    /// assert_eq!(
+    ///     sign.check()?.to_string(),
+    ///     "sign: {L, G2} = G1: refuted: the residual lhs − rhs is 3 p_x p_y/(2M) + 3Mω²xy/2"
+    /// );
+    /// # Ok::<(), brackets::EngineError>(())
+    /// ```
     pub fn check(&self) -> Result<Verdict, EngineError> {
         let start = Instant::now();
         let residual = self.residual()?;
