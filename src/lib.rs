@@ -6,6 +6,10 @@
 //! ([`paper`]), the structured [`report`] that checking it produces, and the renderers
 //! ([`render`]) that print a report as text, Markdown, LaTeX or JSON.
 //!
+//! A program that only uses the library can depend on it with `default-features = false`:
+//! the feature `cli` (on by default) adds the command-line program and its allocator, and
+//! with them clap, indicatif and mimalloc.
+//!
 //! ```
 //! use superint::prelude::*;
 //!
@@ -25,6 +29,7 @@
 pub use brackets;
 pub use trigpoly;
 
+#[cfg(feature = "cli")]
 pub mod allocator;
 pub mod discovery;
 pub mod paper;
