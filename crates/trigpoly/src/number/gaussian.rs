@@ -236,8 +236,25 @@ pub struct ParseGaussianError(pub String);
 
 impl FromStr for GaussianRational {
     type Err = ParseGaussianError;
-    /// Accepts `a`, `b*i`, `i`, `-i`, `a + b*i`, `a - b*i` with `a, b` integers or fractions.
+    /// Accepts what `Display` writes (`a`, `b*i`, `i`, `-i`, `a + b*i`, `a - b*i` with `a, b`
+    /// integers or fractions), and any other constant expression of the expression syntax:
+    /// `1 + i/2`, `i*2`, `(1 + 2i)/3`, `−1 − i`, `(1 + i)²`.
     fn from_str(s: &str) -> Result<Self, Self::Err> {
+        Self::from_plain_form(s).or_else(|e| constant_expression(s).ok_or(e))
+    }
+}
+
+/// The value of a constant expression (no variable) such as `(1 + 2i)/3`, if `s` is one.
+fn constant_expression(s: &str) -> Option<GaussianRational> {
+    let no_variables = crate::VarSet::builder().build().ok()?;
+    crate::Poly::<GaussianRational>::parse(&no_variables, s)
+        .ok()?
+        .as_constant()
+}
+
+impl GaussianRational {
+    /// The forms `Display` writes, read without the expression parser.
+    fn from_plain_form(s: &str) -> Result<Self, ParseGaussianError> {
         let err = || ParseGaussianError(s.to_string());
         let t: String = s.chars().filter(|c| !c.is_whitespace()).collect();
         let imag = |p: &str| -> Option<Rational> {
@@ -315,5 +332,48 @@ impl Neg for GaussianRational {
     type Output = GaussianRational;
     fn neg(self) -> GaussianRational {
         -&self
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// What `Display` writes reads back, and so does any constant expression (`i*2` and
+    /// `1 + i/2` were refused); a name, a non-constant or a malformed form is an error.
+    #[test]
+    fn gaussian_rationals_parse_from_display_and_constant_expressions() {
+        let g = |re: (i64, i64), im: (i64, i64)| {
+            GaussianRational::new(Rational::new(re.0, re.1), Rational::new(im.0, im.1))
+        };
+        for z in [
+            g((1, 2), (-3, 4)),
+            g((0, 1), (1, 1)),
+            g((-5, 1), (0, 1)),
+            g((0, 1), (-1, 3)),
+        ] {
+            assert_eq!(
+                z.to_string().parse::<GaussianRational>(),
+                Ok(z.clone()),
+                "{z}"
+            );
+        }
+        for (text, value) in [
+            ("i*2", g((0, 1), (2, 1))),
+            ("1 + i/2", g((1, 1), (1, 2))),
+            ("(1 + 2i)/3", g((1, 3), (2, 3))),
+            ("−1 − i", g((-1, 1), (-1, 1))),
+            ("(1 + i)²", g((0, 1), (2, 1))),
+            ("1/(1 + i)", g((1, 2), (-1, 2))),
+        ] {
+            assert_eq!(text.parse::<GaussianRational>(), Ok(value), "{text}");
+        }
+        for bad in ["x", "1 +", "", "i^i", "1/0"] {
+            assert_eq!(
+                bad.parse::<GaussianRational>(),
+                Err(ParseGaussianError(bad.into())),
+                "{bad:?}"
+            );
+        }
     }
 }
