@@ -24,11 +24,18 @@ pub enum VarKind {
 /// that declare the same variables, whatever their limits, share handles). A handle used with a
 /// set that declares other variables is refused ([`VarSet::owns`]), where its index alone would
 /// name whatever variable stands at that place there.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, PartialOrd, Ord)]
+#[derive(Clone, Copy, PartialEq, Eq, Hash, PartialOrd, Ord)]
 pub struct Var {
     index: u16,
     /// The number of the declaration (the list of variables) among those the process has made.
     declaration: u32,
+}
+
+/// `Var(2 of declaration 5)`: the index, and which variables it is an index into.
+impl std::fmt::Debug for Var {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        write!(f, "Var({} of declaration {})", self.index, self.declaration)
+    }
 }
 
 impl Var {
