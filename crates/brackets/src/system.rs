@@ -108,8 +108,8 @@ impl System {
     }
 
     /// Certifies the rank of the Jacobian of the named functions (or family instances the
-    /// system defines) by the phase-space coordinates: [`rank`](crate::rank) by names, as
-    /// [`closure`](crate::closure) and [`BracketTable::compute`](crate::BracketTable::compute)
+    /// system defines) by the phase-space coordinates: [`rank`](crate::rank()) by names, as
+    /// [`closure`](crate::closure()) and [`BracketTable::compute`](crate::BracketTable::compute)
     /// take them.
     pub fn rank(&self, names: &[&str]) -> Result<crate::RankCertificate, EngineError> {
         let functions = names
