@@ -15,10 +15,10 @@ pub(crate) fn section() -> Result<Section, EngineError> {
     let k = rotor
         .parse("Ax^2*Aybar")?
         .checked_mul(&Expr::exp_i(rotor.vars(), theta, -1)?)?;
-    rotor.define("ReA", "Re(A_x⁵Ā_y³)", a.re());
+    rotor.define("ReA", "Re(A_x⁵Ā_y³)", a.re()?);
     rotor.define("ImA", "Im(A_x⁵Ā_y³)", a.im()?);
     rotor.define("K", "K", k.clone());
-    rotor.define("ReK", "Re K", k.re());
+    rotor.define("ReK", "Re K", k.re()?);
     rotor.define("ImK", "Im K", k.im()?);
     let mut s = SectionBuilder::new(5, "Beyond the paper's examples", rotor);
     s.text(

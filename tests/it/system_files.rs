@@ -1287,3 +1287,32 @@ fn rank_of_one_function_reads_there_is() {
     let out = run(&["rank", "systems/kepler.toml", "L", "--no-timings"], 0);
     assert!(out.contains("≤ 1: there is 1 function\n"), "{out}");
 }
+
+/// Every operation an expression can reach stops at the term limit with exit status 2, never a
+/// panic: `re`, `im`, `cos`, `sin` and `conj` formed their sums with the panicking operators
+/// (exit 134 at `--max-terms 1`, and at the default limits for `re` of a long power).
+#[test]
+fn the_term_limit_stops_every_function_with_an_error() {
+    let dir = scratch("term-limit-functions");
+    std::fs::write(
+        dir.join("t.toml"),
+        "hamiltonian = \"p_t^2/2\"\n[phase_space]\ncoordinates = [\"x\"]\nangles = [\"t\"]\n",
+    )
+    .expect("write");
+    for e in [
+        "re(exp(i*t))",
+        "im(x*exp(i*t))",
+        "cos(t)",
+        "sin(t)",
+        "conj(x + exp(i*t))",
+        "{cos(t), p_t}",
+    ] {
+        let o = superint_in(&dir, &["expand", "t.toml", e, "--max-terms", "1"]);
+        let err = text(&o.stderr);
+        assert_eq!(o.status.code(), Some(2), "{e}: {err}");
+        assert!(
+            err.contains("the result would have more than 1 term (the term limit)"),
+            "{e}: {err}"
+        );
+    }
+}

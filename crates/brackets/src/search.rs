@@ -1790,13 +1790,13 @@ mod tests {
             problem.coordinates_of_parts(&f),
             Some((a.clone(), b.clone()))
         );
-        assert_eq!(problem.combination(&a).unwrap(), f.re());
+        assert_eq!(problem.combination(&a).unwrap(), f.re().unwrap());
         assert_eq!(problem.combination(&b).unwrap(), f.im().unwrap());
         // A real function has no imaginary part; a complex one has no real coordinates.
-        assert_eq!(problem.coordinates(&f.re()), Some(a));
+        assert_eq!(problem.coordinates(&f.re().unwrap()), Some(a));
         assert_eq!(problem.coordinates(&f), None);
         // Outside the space (positions degree 2 > 1): no coordinates.
-        let outside = f.re() + rotor.parse("x^2").unwrap();
+        let outside = f.re().unwrap() + rotor.parse("x^2").unwrap();
         assert_eq!(problem.coordinates(&outside), None);
         assert_eq!(problem.coordinates_of_parts(&outside), None);
     }

@@ -29,7 +29,11 @@ pub enum AlgebraError {
         limit: u32,
     },
     /// A result with more terms than the limit allows.
-    #[error("the result would have more than {limit} terms (the term limit); raise the limit or simplify the input")]
+    #[error(
+        "the result would have more than {limit} term{} (the term limit); raise the limit or \
+         simplify the input",
+        if *limit == 1 { "" } else { "s" }
+    )]
     TooManyTerms {
         /// The limit in force.
         limit: usize,

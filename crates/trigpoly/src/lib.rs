@@ -33,7 +33,7 @@
 //! // (cos θ − i sin θ)³ = e^{−3iθ}, and its real part is T₃(cos θ) = 4cos³θ − 3cos θ.
 //! let e = p("(cos(theta) - i*sin(theta))^3")?;
 //! assert_eq!(e, p("exp(-3*i*theta)")?);
-//! assert_eq!(e.re(), p("4*cos(theta)^3 - 3*cos(theta)")?);
+//! assert_eq!(e.re()?, p("4*cos(theta)^3 - 3*cos(theta)")?);
 //! // Printing reads like the paper.
 //! assert_eq!(p("-omega^2*M*x + p_x^2/(2*M)")?.to_string(), "p_x²/(2M) − Mω²x");
 //! // The text form parses back.

@@ -284,7 +284,7 @@ impl<C: Coefficient> Lower<'_, C> {
         // The complex structure: every variable is real, so conj maps e^{ikθ} to e^{−ikθ}.
         match fun {
             "conj" => return Ok(self.lower(arg)?.conj()),
-            "re" => return Ok(self.lower(arg)?.re()),
+            "re" => return self.lower(arg)?.re().map_err(at(span)),
             "im" => return self.lower(arg)?.im().map_err(at(span)),
             _ => {}
         }
@@ -302,10 +302,11 @@ impl<C: Coefficient> Lower<'_, C> {
         };
         match fun {
             "exp" => exp_i(1),
-            "cos" => Ok((&exp_i(1)? + &exp_i(-1)?) * &Rational::new(1, 2)),
+            "cos" => Ok(exp_i(1)?.checked_add(&exp_i(-1)?).map_err(wrap)? * &Rational::new(1, 2)),
             // sin φ = (e^{iφ} − e^{−iφ})/(2i)
-            _ => (&exp_i(1)? - &exp_i(-1)?)
-                .mul_i()
+            _ => exp_i(1)?
+                .checked_sub(&exp_i(-1)?)
+                .and_then(|d| d.mul_i())
                 .map(|p| p * &Rational::new(-1, 2))
                 .map_err(wrap),
         }

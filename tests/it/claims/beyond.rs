@@ -25,7 +25,11 @@ use super::{assert_rank, rendered_table, table};
 /// Defines `name`, `name_re`, `name_im` from `src`.
 fn define_with_parts(sys: &mut System, name: &str, src: &str) {
     let f = sys.parse(src).unwrap();
-    sys.define(&format!("{name}_re"), &format!("Re {name}"), f.re());
+    sys.define(
+        &format!("{name}_re"),
+        &format!("Re {name}"),
+        f.re().unwrap(),
+    );
     sys.define(
         &format!("{name}_im"),
         &format!("Im {name}"),

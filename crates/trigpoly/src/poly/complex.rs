@@ -115,14 +115,16 @@ impl<C: Coefficient> Poly<C> {
         self.conj() == *self
     }
 
-    /// The real part `(f + conj f)/2`.
-    pub fn re(&self) -> Self {
-        (self + &self.conj()) * &Rational::new(1, 2)
+    /// The real part `(f + conj f)/2`, or an error if it passes the term limit (`re e^{iθ}`
+    /// has two terms).
+    pub fn re(&self) -> Result<Self, AlgebraError> {
+        Ok(self.checked_add(&self.conj())? * &Rational::new(1, 2))
     }
 
-    /// The imaginary part `(f − conj f)/(2i)`; needs Q(i) unless `f` is real.
+    /// The imaginary part `(f − conj f)/(2i)`; needs Q(i) unless `f` is real, and is an error
+    /// if it passes the term limit.
     pub fn im(&self) -> Result<Self, AlgebraError> {
-        let d = self - &self.conj();
+        let d = self.checked_sub(&self.conj())?;
         // 1/(2i) = −i/2
         Ok(d.mul_i()? * &Rational::new(-1, 2))
     }
