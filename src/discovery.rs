@@ -245,6 +245,16 @@ pub fn search_report(
         }),
         Entry::Text(space_text(&r)),
     ];
+    let h = match &options.condition {
+        Some(c) => c.apply(system.hamiltonian())?,
+        None => system.hamiltonian().clone(),
+    };
+    if let Some(why) = options.space.why_outside(&h) {
+        entries.push(Entry::Text(format!(
+            "Note: H is not in this space ({why}), so H is not among the integrals found, nor \
+             is any that needs its terms."
+        )));
+    }
     if !r.parameters.is_empty() {
         let lift = if r.liftable && r.all_symbolic() {
             "then each basis element was lifted back to symbolic parameters by homogeneity and \

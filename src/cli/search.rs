@@ -96,7 +96,7 @@ pub struct SearchArgs {
     max_products: u64,
     /// More known integrals for --new-only: expressions or family instances (P_1_1),
     /// separated by commas.
-    #[arg(long, value_name = "EXPRS")]
+    #[arg(long, value_name = "EXPRS", requires = "new_only")]
     known: Option<String>,
     /// Threads for forming the equations, solving them, proving the integrals and printing
     /// them (default: one per core, or RAYON_NUM_THREADS). The output is the same for any.

@@ -1047,3 +1047,49 @@ fn a_pendulums_energy_is_lifted_to_its_parameter() {
     assert!(out.contains("  {I2, H} = 0  "), "{out}");
     assert!(!out.contains("no symbolic lift"), "{out}");
 }
+
+/// A search whose space cannot hold `H` says so, and why: the Smorodinsky–Winternitz
+/// potential's `β/x²` needs `--laurent` (without it the search found only the constants, with
+/// no hint), and the momenta degree 1 cannot hold the kinetic energy; a space that holds `H`
+/// says nothing of it.
+#[test]
+fn a_search_says_when_h_is_outside_its_space() {
+    let sw = "systems/smorodinsky-winternitz-i.toml";
+    let space = [
+        "--momenta-degree",
+        "2",
+        "--positions-degree",
+        "4",
+        "--trig-degree",
+        "0",
+    ];
+    let out = superint(&[&["search", sw][..], &space].concat());
+    let text = normalize(&String::from_utf8(out.stdout).expect("UTF-8"));
+    assert!(
+        text.contains(
+            "Note: H is not in this space (negative powers of x, which a Laurent space \
+             (--laurent) admits)"
+        ),
+        "{text}"
+    );
+    let out = superint(&[&["search", sw, "--laurent"][..], &space].concat());
+    let text = String::from_utf8(out.stdout).expect("UTF-8");
+    assert!(!text.contains("H is not in this space"), "{text}");
+    let out = superint(&[
+        "search",
+        "systems/harmonic-rotor.toml",
+        "--when",
+        "p_theta = I*omega",
+        "--momenta-degree",
+        "1",
+        "--positions-degree",
+        "2",
+        "--trig-degree",
+        "1",
+    ]);
+    let text = normalize(&String::from_utf8(out.stdout).expect("UTF-8"));
+    assert!(
+        text.contains("(degree 2 in the momenta, past the space's 1)"),
+        "{text}"
+    );
+}

@@ -93,6 +93,53 @@ impl SearchSpace {
         self.laurent = true;
         self
     }
+
+    /// Why `f` lies outside the space, if it does, in words: its degree in the momenta, in the
+    /// coordinates or in the angles is too high, or it has negative powers the space does not
+    /// take. A search for the integrals of a system whose Hamiltonian lies outside finds
+    /// neither `H` nor, often, anything else, so the report says why.
+    pub fn why_outside(&self, f: &Expr) -> Option<String> {
+        use trigpoly::VarKind::{Angle, Coordinate, Momentum};
+        let vars = f.vars();
+        let of_kind = |kind| -> Vec<Var> {
+            vars.vars()
+                .filter(|&v| vars.variable(v).kind() == kind)
+                .collect()
+        };
+        let (momenta, coordinates, angles) =
+            (of_kind(Momentum), of_kind(Coordinate), of_kind(Angle));
+        let degree = |term: &trigpoly::Term<'_, GaussianRational>, of: &[Var]| -> i64 {
+            of.iter().map(|&v| term.exponent(v).abs()).sum()
+        };
+        let max = |of: &[Var]| f.terms().map(|t| degree(&t, of)).max().unwrap_or(0);
+        let negative = |of: &[Var]| {
+            of.iter()
+                .find(|&&v| f.exponent_range(v).is_some_and(|(lo, _)| lo < 0))
+                .map(|&v| vars.variable(v).unicode().to_string())
+        };
+        let mut why = Vec::new();
+        if let Some(p) = negative(&momenta) {
+            why.push(format!("negative powers of {p}"));
+        }
+        if let (false, Some(x)) = (self.laurent, negative(&coordinates)) {
+            why.push(format!(
+                "negative powers of {x}, which a Laurent space (--laurent) admits"
+            ));
+        }
+        for (what, of, bound) in [
+            ("momenta", &momenta, self.momenta_degree),
+            ("coordinates", &coordinates, self.positions_degree),
+            ("angles (trigonometric order)", &angles, self.trig_degree),
+        ] {
+            let d = max(of);
+            if d > i64::from(bound) {
+                why.push(format!(
+                    "degree {d} in the {what}, past the space's {bound}"
+                ));
+            }
+        }
+        (!why.is_empty()).then(|| why.join("; "))
+    }
 }
 
 /// What to search for and how.
