@@ -1,7 +1,8 @@
 //! `superint`: checks the Poisson-bracket identities of the rotor paper exactly.
 //!
-//! Exit codes: 0 when every claim is proved, 1 when a claim is refuted, 2 for bad input or
-//! usage (including every command-line error clap reports).
+//! Exit codes: 0 when every claim is as expected (proved; or refuted, where a system file
+//! expects it), 1 when one is not, 2 for bad input or usage (including every command-line
+//! error clap reports).
 
 mod cli;
 

@@ -1,11 +1,15 @@
 //! `superint bench W SIZE`: runs one performance workload once; the last two lines are
-//! `seconds: X` and `terms: T`, which the peer comparison (`benches/peers/compare.py`) reads.
+//! `seconds: X` and `terms: T`, which the peer comparison (`benches/peers/compare.py`) reads
+//! (`--format json`: one object with the same fields).
 
 use std::time::Instant;
 
-use anyhow::Context;
+use anyhow::{bail, Context};
 use clap::Args;
+use superint::render::Format;
 use superint::workloads::Workload;
+
+use super::output::Output;
 
 pub const EXAMPLES: &str = "\
 Examples:
@@ -32,8 +36,29 @@ pub struct BenchArgs {
     threads: u16,
 }
 
+impl BenchArgs {
+    pub fn job(self, output: Output) -> BenchJob {
+        BenchJob { args: self, output }
+    }
+}
+
+/// The bench job, as plain data.
+#[derive(Debug)]
+pub struct BenchJob {
+    pub args: BenchArgs,
+    pub output: Output,
+}
+
 /// Runs the workload once and prints what it computed and how long it took.
-pub fn run(args: &BenchArgs) -> anyhow::Result<bool> {
+pub fn run(job: &BenchJob) -> anyhow::Result<bool> {
+    let args = &job.args;
+    match job.output.format {
+        Format::Text | Format::Json => {}
+        other => bail!("bench prints text or json, not {other}"),
+    }
+    if !job.output.options.timings {
+        bail!("bench measures a time: --no-timings does not apply to it");
+    }
     let workload = Workload::new(&args.workload, args.size)?;
     let pool = pool(args.threads as usize)?;
     // The pool's threads start before the clock does, heaps included: their start is not
@@ -50,6 +75,18 @@ pub fn run(args: &BenchArgs) -> anyhow::Result<bool> {
     let outcome = outcome.with_context(|| format!("workload {workload}"))?;
     // Wall-clock time is reported, never used to decide anything.
     let seconds = elapsed.as_secs_f64();
+    if job.output.format == Format::Json {
+        let doc = serde_json::json!({
+            "schema": "superint-bench/1",
+            "workload": workload.to_string(),
+            "threads": args.threads,
+            "zeros": outcome.zeros,
+            "seconds": seconds,
+            "terms": outcome.terms,
+        });
+        println!("{doc:#}");
+        return Ok(true);
+    }
     println!("workload: {workload}");
     println!("threads: {}", args.threads);
     println!("zeros: {}", outcome.zeros);

@@ -44,7 +44,8 @@ Examples:
   superint --format latex > paper.tex
   superint tower --max 24          the resonant tower {K_{m,n}, H} for 1 ≤ m, n ≤ 24
 
-Exit status: 0 every claim proved, 1 a claim refuted, 2 bad input or usage.";
+Exit status: 0 every claim as expected (proved; or refuted, where a file expects it), 1 a claim
+not as expected, 2 bad input or usage.";
 
 /// Exact Poisson-bracket identities of a rigid rotor coupled to planar potentials.
 ///
@@ -107,7 +108,7 @@ pub enum Job {
     /// Check a tower.
     Tower(tower::TowerJob),
     /// Run a performance workload.
-    Bench(bench::BenchArgs),
+    Bench(bench::BenchJob),
     /// Check system files.
     Check(check::CheckJob),
     /// One bracket of a system file.
@@ -134,7 +135,7 @@ impl Cli {
             None => Job::Paper(paper::PaperArgs::default().job(output)),
             Some(Command::Paper(a)) => Job::Paper(a.job(output)),
             Some(Command::Tower(a)) => Job::Tower(a.job(output)),
-            Some(Command::Bench(a)) => Job::Bench(a),
+            Some(Command::Bench(a)) => Job::Bench(a.job(output)),
             Some(Command::Check(a)) => Job::Check(a.job(output)),
             Some(Command::Bracket(a)) => Job::Bracket(a.job(output)),
             Some(Command::Expand(a)) => Job::Expand(a.job(output)),
@@ -170,7 +171,7 @@ where
     let all_proved = match cli.job() {
         Job::Paper(job) => paper::run(&job)?,
         Job::Tower(job) => tower::run(&job)?,
-        Job::Bench(args) => bench::run(&args)?,
+        Job::Bench(job) => bench::run(&job)?,
         Job::Check(job) => check::run(&job)?,
         Job::Bracket(job) => bracket::run(&job)?,
         Job::Expand(job) => expand::run(&job)?,

@@ -954,3 +954,21 @@ fn cli_plot_against_an_angle_draws_a_phase_portrait() {
         .expect("the second orbit")[2];
     assert!(last > 2.0 * PI, "the second orbit goes round: {last}");
 }
+
+/// `bench --format json` prints one object with the text's fields; the formats and options it
+/// cannot honour are refused (they were accepted and ignored).
+#[test]
+fn cli_bench_prints_json_and_refuses_what_it_cannot_honour() {
+    let out = run(&["bench", "W4", "3", "--format", "json"], 0);
+    let v: serde_json::Value = serde_json::from_str(&out).expect("JSON");
+    assert_eq!(v["schema"], "superint-bench/1");
+    assert_eq!((&v["zeros"], &v["terms"]), (&3.into(), &24.into()), "{v}");
+    assert!(v["seconds"].is_number());
+    for args in [
+        &["bench", "W4", "3", "--format", "latex"][..],
+        &["bench", "W4", "3", "--no-timings"],
+    ] {
+        let o = superint(args);
+        assert_eq!(o.status.code(), Some(2), "{args:?}");
+    }
+}
