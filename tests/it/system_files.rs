@@ -145,6 +145,38 @@ fn docs_example_checks_as_documented() {
     assert_eq!(body(shown), body(&out));
 }
 
+/// The error examples of `docs/system-files.md` are what `check` prints for the document's
+/// example file with, in turn, each of these appended (they had drifted: a missing hint, the
+/// carets, a limit the file did not set, line numbers of another file).
+#[test]
+fn docs_error_examples_are_what_check_prints() {
+    let doc = std::fs::read_to_string(root().join("docs/system-files.md")).expect("the doc");
+    let start = doc.find("```toml\n").expect("a TOML example") + "```toml\n".len();
+    let example = &doc[start..start + doc[start..].find("```").expect("its end")];
+    let appended = [
+        "\n[[claim]]\nclaim = \"{L, G1} = -G3\"\n",
+        "\n[[function]]\nname = \"D\"\nvalue = \"x/(1+y)\"\n",
+        "\n[[claim]]\nclaim = \"{L, omega} = -G2\"\n",
+        "\n[[claim]]\nclam = \"{L, G1} = -G2\"\n",
+        "\n[limits]\nmax_terms = 10000\n\n[[claim]]\n\
+         claim = \"(x + y + p_x + p_y + M + omega)^400 = 0\"\n",
+    ];
+    let shown: Vec<&str> = doc
+        .split("```text\n")
+        .skip(1)
+        .map(|b| &b[..b.find("```").expect("the block's end")])
+        .filter(|b| b.starts_with("superint: error: rotor.toml:"))
+        .collect();
+    assert_eq!(shown.len(), appended.len(), "one example for each");
+    let dir = scratch("docs-errors");
+    for (tail, shown) in appended.iter().zip(shown) {
+        std::fs::write(dir.join("rotor.toml"), format!("{example}{tail}")).expect("write");
+        let o = superint_in(&dir, &["check", "rotor.toml"]);
+        assert_eq!(o.status.code(), Some(2), "{tail}");
+        assert_eq!(text(&o.stderr), shown, "{tail}");
+    }
+}
+
 const BASE: &str = r#"name = "oscillator"
 hamiltonian = "p_x^2/(2*M) + M*omega^2*x^2/2"
 
