@@ -972,3 +972,15 @@ fn cli_bench_prints_json_and_refuses_what_it_cannot_honour() {
         assert_eq!(o.status.code(), Some(2), "{args:?}");
     }
 }
+
+/// The README's worked example is an excerpt of what the default job prints (it had been
+/// written by hand, and differed).
+#[test]
+fn cli_readme_excerpt_is_the_default_jobs_output() {
+    let readme = std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/README.md"))
+        .expect("the README");
+    let start = readme.find("```text\n").expect("an excerpt") + "```text\n".len();
+    let excerpt = &readme[start..start + readme[start..].find("```").expect("its end")];
+    let out = run(&["--no-timings"], 0);
+    assert!(out.contains(excerpt), "{excerpt}\nnot in\n{out}");
+}
