@@ -3,7 +3,7 @@
 //! [`Paper::check`], which computes every item into a [`Report`].
 //!
 //! Building the catalogue only parses; checking does the mathematics; rendering
-//! ([`crate::render`]) only prints. Every claim of `claims.md` from C01 to C26 appears with its
+//! ([`crate::render`]) only prints. Every claim of `docs/claims.md` from C01 to C26 appears with its
 //! id, its statement in the paper's notation and its condition.
 //!
 //! ```

@@ -1,4 +1,4 @@
-//! The paper's claims C01–C27 (`claims.md`), one test per claim named after its id, by section.
+//! The paper's claims C01–C27 (`docs/claims.md`), one test per claim named after its id, by section.
 //! Every test also refutes a false neighbour of its claim (a flipped sign, a wrong coefficient,
 //! an off-resonance point, a wrong rank) and checks the exact residual, so no test could pass on
 //! an engine that proved everything.

@@ -1,4 +1,4 @@
-//! Integration tests. `claims`: every claim of the paper (ids of `claims.md`), each proved
+//! Integration tests. `claims`: every claim of the paper (ids of `docs/claims.md`), each proved
 //! exactly beside a false neighbour that the engine must refute with the exact residual.
 
 use brackets::{Claim, Condition, Outcome, System};
