@@ -168,6 +168,16 @@ impl LoadedSystem {
     }
 
     /// A parsing scope that sees the first `families` families.
+    /// The system's name as a title says it: `the harmonic rotor`, or the file's name alone
+    /// when the file gives none (`The claims of t1`, not `of the t1`).
+    pub(crate) fn the_name(&self) -> String {
+        let stem = std::path::Path::new(&self.source.origin).file_stem();
+        match stem.is_some_and(|s| s.to_string_lossy() == self.name.as_str()) {
+            true => self.name.clone(),
+            false => format!("the {}", self.name),
+        }
+    }
+
     fn scope(&self, families: usize) -> scope::Scope<'_> {
         scope::Scope::new(self, families)
     }

@@ -93,7 +93,7 @@ pub fn check_report(files: &[LoadedSystem]) -> Result<Report, FileError> {
         });
     }
     let title = match files {
-        [one] => format!("The claims of the {}, checked exactly", one.name),
+        [one] => format!("The claims of {}, checked exactly", one.the_name()),
         _ => format!(
             "The claims of {} system files, checked exactly",
             files.len()
@@ -129,7 +129,7 @@ pub fn bracket_report(
     let lhs = format!("{{{fname}, {gname}}}");
     let entry = equations_at(condition.as_ref(), vec![(lhs.clone(), value)])?;
     Ok(file.one_entry(
-        format!("{lhs} for the {}", file.name),
+        format!("{lhs} for {}", file.the_name()),
         entry,
         SummaryKind::Computed,
         start,
@@ -155,7 +155,11 @@ pub fn expand_report(
         .map(|argument| file.expand(argument))
         .collect::<Result<Vec<_>, _>>()?;
     let names: Vec<&str> = lines.iter().map(|(name, _)| name.as_str()).collect();
-    let title = format!("{} in normal form, for the {}", names.join(", "), file.name);
+    let title = format!(
+        "{} in normal form, for {}",
+        names.join(", "),
+        file.the_name()
+    );
     let entry = equations_at(condition.as_ref(), lines)?;
     Ok(file.one_entry(title, entry, SummaryKind::Computed, start))
 }
@@ -259,11 +263,11 @@ pub fn table_report(file: &LoadedSystem, names: &[String]) -> Result<Report, Fil
     let refs: Vec<&str> = names.iter().map(String::as_str).collect();
     let table = BracketTable::compute(&system, &refs).map_err(|e| command_error(&e))?;
     let entry = Entry::Table(TableResult {
-        caption: format!("`{{A, B}}` for the {} (row `A`, column `B`)", file.name),
+        caption: format!("`{{A, B}}` for {} (row `A`, column `B`)", file.the_name()),
         table,
     });
     Ok(file.one_entry(
-        format!("Bracket table of the {}", file.name),
+        format!("Bracket table of {}", file.the_name()),
         entry,
         SummaryKind::Computed,
         start,
@@ -319,7 +323,7 @@ pub fn rank_report(
         rank.expected
     );
     Ok(file.one_entry(
-        format!("Functional independence in the {}", file.name),
+        format!("Functional independence in {}", file.the_name()),
         Entry::Rank(rank),
         SummaryKind::Check { files: 1 },
         start,

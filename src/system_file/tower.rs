@@ -379,7 +379,7 @@ pub fn family_tower_report(
         subtitle: file.source.origin.clone(),
         sections: vec![Section {
             number: 1,
-            title: format!("{{{kmn}, H}} for the {}", file.name),
+            title: format!("{{{kmn}, H}} for {}", file.the_name()),
             entries,
         }],
         summary: SummaryKind::Check { files: 1 },

@@ -1348,3 +1348,22 @@ fn the_term_limit_stops_every_function_with_an_error() {
         );
     }
 }
+
+/// A file without a `name` is named by its file name, without an article ("The claims of the
+/// t1" read oddly); a named system keeps its article.
+#[test]
+fn a_system_named_by_its_file_takes_no_article() {
+    let dir = scratch("unnamed");
+    std::fs::write(
+        dir.join("t1.toml"),
+        "hamiltonian = \"p_x^2/2\"\n[phase_space]\ncoordinates = [\"x\"]\n",
+    )
+    .expect("write");
+    let out = text(&superint_in(&dir, &["check", "t1.toml"]).stdout);
+    assert!(
+        out.starts_with("The claims of t1, checked exactly\n"),
+        "{out}"
+    );
+    let out = run(&["check", "systems/kepler.toml"], 0);
+    assert!(out.starts_with("The claims of the Kepler problem, checked exactly\n"));
+}
