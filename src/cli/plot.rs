@@ -118,7 +118,7 @@ impl MethodArg {
     fn name(self) -> &'static str {
         match self {
             MethodArg::RungeKutta => "the classical Runge–Kutta method",
-            MethodArg::Gauss => "the Gauss–Legendre method (symplectic)",
+            MethodArg::Gauss => "the symplectic Gauss–Legendre method",
         }
     }
 }
