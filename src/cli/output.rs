@@ -11,12 +11,12 @@ pub enum FormatArg {
     /// Unicode text that reads like the paper.
     #[default]
     Text,
-    /// Markdown with tables.
+    /// Markdown with tables (also `md`).
     #[value(alias = "md")]
     Markdown,
     /// A complete LaTeX document (amsmath).
     Latex,
-    /// JSON, one object per claim (schema superint-report/1).
+    /// JSON, one object per claim (schema superint-report/1; plot and bench have their own).
     Json,
 }
 
