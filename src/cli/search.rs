@@ -176,9 +176,10 @@ impl Subject {
     }
 
     pub fn condition(&self, when: Option<&str>) -> anyhow::Result<Option<brackets::Condition>> {
-        when.map(|w| {
-            parse_condition(self.system(), w, &|s| self.parse(s))
-                .map_err(|e| anyhow!("--when: {e}"))
+        when.map(|w| match self {
+            Subject::File(f) => f.condition(w).map_err(anyhow::Error::from),
+            Subject::Builtin(..) => parse_condition(self.system(), w, &|s| self.parse(s))
+                .map_err(|e| anyhow!("--when: {e}")),
         })
         .transpose()
     }

@@ -191,12 +191,18 @@ fn command_condition(
     file: &LoadedSystem,
     when: Option<&str>,
 ) -> Result<Option<Condition>, FileError> {
-    when.map(|w| {
-        let source = Source::new(COMMAND_LINE, w);
+    when.map(|w| file.condition(w)).transpose()
+}
+
+impl LoadedSystem {
+    /// A condition given as text (`p_theta = I*omega, omega = 1/2`), read as a file's `when`
+    /// is: its errors are located in `text` (named `<command line>`), and it reads as written
+    /// (`p_θ = Iω`).
+    pub fn condition(&self, text: &str) -> Result<Condition, FileError> {
+        let source = Source::new(COMMAND_LINE, text);
         let pieces = Text::whole(&source).split(',');
-        parse_condition(file, &source, &pieces)
-    })
-    .transpose()
+        parse_condition(self, &source, &pieces)
+    }
 }
 
 /// The bracket table of named functions (or family instances such as `K_1_1`) of the file;

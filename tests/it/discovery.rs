@@ -568,7 +568,7 @@ fn gravity_1_1() {
     expect(
         "g11-closure-f1",
         &[
-            "F1² = Lp² + 4 G1p² + G2p² at p_θ = ωI, M = 1, ω = 1, I = 1, g = 1",
+            "F1² = Lp² + 4 G1p² + G2p² at p_θ = Iω, M = 1, ω = 1, I = 1, g = 1",
             "not lifted back to the parameters (no symbolic lift)",
         ],
     );
@@ -1091,5 +1091,40 @@ fn a_search_says_when_h_is_outside_its_space() {
     assert!(
         text.contains("(degree 2 in the momenta, past the space's 1)"),
         "{text}"
+    );
+}
+
+/// `search` and `closure` on a file read `--when` as the file's own conditions are read: as
+/// written (`p_θ = Iω`; it printed the normal form `ωI`), and a mistake is located in it.
+#[test]
+fn search_and_closure_read_conditions_as_files_do() {
+    let rotor = "systems/harmonic-rotor.toml";
+    let when = ["--when", "p_theta = I*omega"];
+    let space = [
+        "--momenta-degree",
+        "1",
+        "--positions-degree",
+        "1",
+        "--trig-degree",
+        "1",
+    ];
+    let out = superint(&[&["search", rotor][..], &when, &space].concat());
+    let text = String::from_utf8(out.stdout).expect("UTF-8");
+    assert!(
+        text.starts_with("Integrals of the harmonic rotor at p_θ = Iω\n"),
+        "{text}"
+    );
+    let out = superint(&[&["closure", rotor, "L", "G1"][..], &when].concat());
+    let text = String::from_utf8(out.stdout).expect("UTF-8");
+    assert!(
+        text.starts_with("Closure of L, G1 for the harmonic rotor at p_θ = Iω\n"),
+        "{text}"
+    );
+    let out = superint(&["search", rotor, "--when", "p_theta = I*omeg"]);
+    assert_eq!(out.status.code(), Some(2));
+    let err = String::from_utf8(out.stderr).expect("UTF-8");
+    assert!(
+        err.starts_with("superint: error: <command line>:1:13: unknown name 'omeg'"),
+        "{err}"
     );
 }
