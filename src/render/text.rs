@@ -246,10 +246,14 @@ fn proof(out: &mut Vec<String>, p: &ProofResult) {
         .collect();
     for (k, (st, ok)) in lines.iter().enumerate() {
         let head = format!("    {}. computed: {st}", k + 1);
+        let one_line = format!("{head}  {}", mark(*ok));
         if width(&head) + 2 <= VERDICT_COLUMN {
             out.push(format!("{}{}", pad(&head, VERDICT_COLUMN), mark(*ok)));
+        } else if width(&one_line) <= WRAP + 4 {
+            out.push(one_line);
         } else {
-            out.push(format!("{head}  {}", mark(*ok)));
+            // A long fact wraps, its mark after its last line.
+            out.extend(wrap(&format!("{head}: {}", mark(*ok)), WRAP, "       "));
         }
     }
     out.extend(wrap(&format!("    Lemma: {}.", p.lemma), WRAP, "      "));
