@@ -238,6 +238,14 @@ impl<'a> Builder<'a> {
         for p in &ps.parameters {
             builder = builder.parameter(p.get_ref());
         }
+        // The functions' names, which the printer must not spell with variables (`Mx`).
+        builder = builder.also_named(model.function.iter().flat_map(|f| {
+            let f = f.get_ref();
+            [Some(&f.name), f.display.as_ref()]
+                .into_iter()
+                .flatten()
+                .map(|n| n.get_ref().as_str())
+        }));
         let span = model.phase_space.span();
         let vars = builder.build().map_err(|e| {
             // Two names that one spelling finds (`omega` and `ω`): shown at the second.

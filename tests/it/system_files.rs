@@ -1157,6 +1157,10 @@ fn echoed_products_do_not_spell_another_name() {
     let out = text(&o.stdout);
     assert!(out.contains("{x y, p_xy} = 0 "), "{out}");
     assert!(out.contains("{Mx, M x} = −M² "), "{out}");
+    // The normal form too: M·x printed `Mx` read back as the function.
+    let o = superint_in(&dir, &["expand", "function.toml", "M*x", "Mx"]);
+    let out = text(&o.stdout);
+    assert!(out.contains("M x = M x\n") && out.contains("Mx  = M p_x\n"), "{out}");
     // Where nothing is spelled that way, factors stay side by side, as in the paper.
     let plain = superint_in(
         root(),

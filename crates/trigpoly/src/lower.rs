@@ -197,32 +197,61 @@ impl<C: Coefficient> Lower<'_, C> {
     /// Splits a name that is not declared into declared names (`Mω` → `M`, `ω`), longest
     /// prefix first; `None` if no split exists.
     fn split_name(&self, name: &str) -> Option<Vec<String>> {
-        let known = |s: &str| self.is_declared(s);
-        fn go(rest: &str, known: &dyn Fn(&str) -> bool, out: &mut Vec<String>) -> bool {
-            if rest.is_empty() {
-                return true;
-            }
-            let cuts: Vec<usize> = rest
-                .char_indices()
-                .map(|(k, _)| k)
-                .skip(1)
-                .chain([rest.len()])
-                .collect();
-            for &cut in cuts.iter().rev() {
-                if known(&rest[..cut]) {
-                    out.push(rest[..cut].to_string());
-                    if go(&rest[cut..], known, out) {
-                        return true;
-                    }
-                    out.pop();
-                }
-            }
-            false
-        }
-        let mut out = Vec::new();
-        (name.chars().count() > 1 && go(name, &known, &mut out) && out.len() > 1).then_some(out)
+        split_into(name, &|s: &str| self.is_declared(s))
     }
 
+    /// Splits a name in an angle's argument into `i` and angles (`iθ`, as the echo writes
+    /// `exp(i*θ)`): the angle, if any, with its coefficient (a power of `i`); `None` if the
+    /// name is no such product.
+    fn split_angle_name(&self, name: &str) -> Option<(Option<Var>, GaussianRational)> {
+        let angle = |s: &str| {
+            self.vars
+                .lookup(s)
+                .filter(|&v| self.vars.variable(v).kind() == VarKind::Angle)
+        };
+        let pieces = split_into(name, &|s: &str| s == "i" || angle(s).is_some())?;
+        let mut coefficient = GaussianRational::from(1);
+        let mut found = None;
+        for piece in &pieces {
+            match angle(piece) {
+                Some(v) if found.is_none() => found = Some(v),
+                Some(_) => return None,
+                None => coefficient = &coefficient * &GaussianRational::i(),
+            }
+        }
+        Some((found, coefficient))
+    }
+}
+
+/// Splits `name` into names that `known` takes (`Mω` → `M`, `ω`), longest prefix first, at
+/// least two of them; `None` if no split exists.
+fn split_into(name: &str, known: &dyn Fn(&str) -> bool) -> Option<Vec<String>> {
+    fn go(rest: &str, known: &dyn Fn(&str) -> bool, out: &mut Vec<String>) -> bool {
+        if rest.is_empty() {
+            return true;
+        }
+        let cuts: Vec<usize> = rest
+            .char_indices()
+            .map(|(k, _)| k)
+            .skip(1)
+            .chain([rest.len()])
+            .collect();
+        for &cut in cuts.iter().rev() {
+            if known(&rest[..cut]) {
+                out.push(rest[..cut].to_string());
+                if go(&rest[cut..], known, out) {
+                    return true;
+                }
+                out.pop();
+            }
+        }
+        false
+    }
+    let mut out = Vec::new();
+    (name.chars().count() > 1 && go(name, known, &mut out) && out.len() > 1).then_some(out)
+}
+
+impl<C: Coefficient> Lower<'_, C> {
     fn integer_exponent(&self, e: &Expr) -> Result<i64, ParseError> {
         let p: Poly<C> = self.lower(e)?;
         let value = p
@@ -386,7 +415,11 @@ impl<C: Coefficient> Lower<'_, C> {
                     Angles(vec![(v, GaussianRational::from(1))])
                 }
                 Some(_) => return Err(bad(e.span)),
-                None => return Err(ParseError::new(e.span, format!("unknown angle '{n}'"))),
+                None => match self.split_angle_name(n) {
+                    Some((Some(v), c)) => Angles(vec![(v, c)]),
+                    Some((None, c)) => Constant(c),
+                    None => return Err(ParseError::new(e.span, format!("unknown angle '{n}'"))),
+                },
             },
             ExprKind::Neg(a) => self.linear_form(a, bad)?.scale(&GaussianRational::from(-1)),
             ExprKind::Add(a, b) | ExprKind::Sub(a, b) => {

@@ -340,13 +340,16 @@ pub struct VarSet {
     /// The number of the list of variables, shared by every set that declares the same ones
     /// (given when the set is interned), which its handles carry.
     declaration: u32,
+    /// Names the parser reads besides the variables ([`VarSetBuilder::also_named`]).
+    also_named: Vec<String>,
 }
 
 /// Two sets are the same ring when they have the same variables, packing and limits, whether
 /// the width was asked for or chosen.
 impl PartialEq for VarSet {
     fn eq(&self, other: &Self) -> bool {
-        (&self.vars, &self.layout, self.limits) == (&other.vars, &other.layout, other.limits)
+        (&self.vars, &self.layout, self.limits, &self.also_named)
+            == (&other.vars, &other.layout, other.limits, &other.also_named)
     }
 }
 
@@ -433,13 +436,15 @@ impl VarSet {
     }
 
     /// Whether the one-letter names of the variables `written`, side by side, could read back
-    /// as another variable ([`juxtaposition_is_ambiguous`]): `xy` beside a variable `xy`.
+    /// as another variable or a name of [`VarSetBuilder::also_named`]
+    /// ([`juxtaposition_is_ambiguous`]): `xy` beside a variable `xy`.
     pub fn juxtaposition_is_ambiguous(&self, written: impl IntoIterator<Item = Var>) -> bool {
         let written: Vec<&str> = written
             .into_iter()
             .flat_map(|v| self.variable(v).spellings())
             .collect();
-        juxtaposition_is_ambiguous(self.vars.iter().flat_map(Variable::spellings), written)
+        let declared = self.vars.iter().flat_map(Variable::spellings);
+        juxtaposition_is_ambiguous(declared.chain(self.also_named.iter().map(String::as_str)), written)
     }
 
     /// The limits in force.
@@ -464,6 +469,7 @@ impl VarSet {
             vars: self.vars.clone(),
             limits,
             bits: self.requested_bits,
+            also_named: self.also_named.clone(),
         }
         .build()
     }
@@ -546,6 +552,7 @@ pub struct VarSetBuilder {
     vars: Vec<Variable>,
     limits: Limits,
     bits: Option<u32>,
+    also_named: Vec<String>,
 }
 
 impl VarSetBuilder {
@@ -603,6 +610,15 @@ impl VarSetBuilder {
         self
     }
 
+    /// Names that the parser reads besides the variables (a system's functions, `Mx`): the
+    /// printer spaces the products of one-letter variables that would spell one of them
+    /// ([`VarSet::juxtaposition_is_ambiguous`]). Sets that differ in these names are different
+    /// rings; they share their variables' handles.
+    pub fn also_named<'a>(mut self, names: impl IntoIterator<Item = &'a str>) -> Self {
+        self.also_named.extend(names.into_iter().map(str::to_string));
+        self
+    }
+
     /// Checks names and builds the set.
     pub fn build(self) -> Result<Vars, AlgebraError> {
         if let Some(bits) = self.bits.filter(|b| !FIELD_BITS.contains(b)) {
@@ -644,6 +660,7 @@ impl VarSetBuilder {
             limits,
             requested_bits: self.bits,
             declaration: 0,
+            also_named: self.also_named,
         }))
     }
 }
@@ -679,6 +696,13 @@ const GREEK: &[(&str, &str, &str)] = &[
     ("chi", "χ", r"\chi"),
     ("psi", "ψ", r"\psi"),
     ("omega", "ω", r"\omega"),
+    ("pi", "π", r"\pi"),
+    ("upsilon", "υ", r"\upsilon"),
+    ("omicron", "ο", "o"),
+    ("vartheta", "ϑ", r"\vartheta"),
+    ("varrho", "ϱ", r"\varrho"),
+    ("varsigma", "ς", r"\varsigma"),
+    ("varpi", "ϖ", r"\varpi"),
     ("Gamma", "Γ", r"\Gamma"),
     ("Delta", "Δ", r"\Delta"),
     ("Theta", "Θ", r"\Theta"),
@@ -686,6 +710,10 @@ const GREEK: &[(&str, &str, &str)] = &[
     ("Phi", "Φ", r"\Phi"),
     ("Psi", "Ψ", r"\Psi"),
     ("Omega", "Ω", r"\Omega"),
+    ("Xi", "Ξ", r"\Xi"),
+    ("Pi", "Π", r"\Pi"),
+    ("Sigma", "Σ", r"\Sigma"),
+    ("Upsilon", "Υ", r"\Upsilon"),
 ];
 
 /// A unicode name with its Greek letters spelled out, piece by piece between underscores and

@@ -521,3 +521,31 @@ fn ascii_spells_out_names_declared_in_greek() {
     assert!(ascii.contains("omega*xi*p_theta*cos(theta)"), "{ascii}");
     assert_eq!(p::<GaussianRational>(&vars, &ascii), f);
 }
+
+/// An angle's argument may run `i` and the angle together, as the paper and superint's echo
+/// write `exp(iθ)` (it was "unknown angle 'iθ'"); a product of two angles is still refused.
+#[test]
+fn exp_of_i_theta_written_together() {
+    let vars = plane();
+    let together: G = p(&vars, "exp(iθ) - exp(-iθ)");
+    assert_eq!(together, p(&vars, "exp(i*theta) - exp(-i*theta)"));
+    assert!(G::parse(&vars, "exp(iθθ)").is_err());
+}
+
+/// Every Greek letter a name may be declared in has an ASCII spelling, so the ASCII form is
+/// ASCII (`ϑ` printed as itself, and did not read back from an ASCII-only source).
+#[test]
+fn greek_variants_spell_out_in_ascii() {
+    let vars = VarSet::builder()
+        .angle("ϑ")
+        .momentum("p_ϑ")
+        .parameter("π")
+        .parameter("ϱ")
+        .parameter("Σ")
+        .build()
+        .unwrap();
+    let f: G = p(&vars, "π*ϱ*Σ*p_ϑ*cos(ϑ)");
+    let ascii = f.to_ascii();
+    assert_eq!(ascii, "pi*varrho*Sigma*p_vartheta*cos(vartheta)");
+    assert_eq!(p::<GaussianRational>(&vars, &ascii), f);
+}
