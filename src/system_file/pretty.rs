@@ -78,6 +78,15 @@ impl LoadedSystem {
         name.to_string()
     }
 
+    /// Whether `name` is one name of the system (a variable, function, family instance or
+    /// `i`), not names run together.
+    fn is_declared_name(&self, name: &str) -> bool {
+        name == "i"
+            || self.system.vars().lookup(name).is_some()
+            || self.system.get(name).is_ok()
+            || instance_of(&self.families, name).is_some()
+    }
+
     /// An expression tree in the paper's notation.
     pub(crate) fn pretty(&self, tree: &Tree) -> String {
         self.print(tree, self.spaced_products(tree)).text
@@ -117,9 +126,11 @@ impl LoadedSystem {
             ExprKind::Name(n) => Printed::atom(self.display_name(n)),
             ExprKind::Neg(a) => {
                 let a = self.print(a, spaced).wrapped(QUOTIENT);
+                // `−1/x` is a quotient: as a left factor it takes parentheses like `1/x`.
+                let prec = if a.prec == QUOTIENT { QUOTIENT } else { NEG };
                 Printed {
                     text: format!("−{}", a.text),
-                    prec: NEG,
+                    prec,
                     first_long: false,
                     last_long: a.last_long,
                 }
@@ -143,7 +154,9 @@ impl LoadedSystem {
             ExprKind::Mul(a, b) => {
                 let a = self.print(a, spaced).wrapped(PRODUCT);
                 let b = self.print(b, spaced);
-                let b = if b.prec < PRODUCT || b.prec == NEG {
+                // A right factor that begins with a minus sign (`−x y`, a product whose first
+                // factor is negated) takes parentheses: `2(−xy)`, not `2−xy`.
+                let b = if b.prec < PRODUCT || b.prec == NEG || b.text.starts_with('−') {
                     b.wrapped(ATOM)
                 } else {
                     b
@@ -177,7 +190,22 @@ impl LoadedSystem {
                 }
             }
             ExprKind::Pow(a, b) => {
-                let base = self.print(a, spaced).wrapped(ATOM);
+                // Names run together are a product, which a power in parentheses takes whole
+                // (`(xy)²`) and one without takes at its last name (`xy²` is x·y²): the tree
+                // keeps the parentheses in the name's span.
+                let run_together = match &a.kind {
+                    ExprKind::Name(n) => {
+                        let parenthesized = a.span.end - a.span.start > n.len();
+                        parenthesized && n.chars().count() > 1 && !self.is_declared_name(n)
+                    }
+                    _ => false,
+                };
+                let base = self.print(a, spaced);
+                let base = if run_together {
+                    base.wrapped(ATOM + 1)
+                } else {
+                    base.wrapped(ATOM)
+                };
                 let small = |n: &num_bigint::BigInt| i64::try_from(n.clone()).ok();
                 let exponent = match &b.kind {
                     ExprKind::Integer(n) => small(n).map(superscript),

@@ -85,6 +85,11 @@ fn braced_instances<'f>(
             .take_while(|&(_, c)| c.is_alphanumeric() || c == '_')
             .last()
             .map_or(k, |(i, _)| i);
+        // A name begins after any digits before it: `2K_{1,1}` is 2·K_{1,1}.
+        let head_start = head_start + s[head_start..k].len()
+            - s[head_start..k]
+                .trim_start_matches(|c: char| c.is_ascii_digit())
+                .len();
         let family = families.iter().find(|f| f.name == s[head_start..k])?;
         let close = s[k..].find('}').map(|c| c + k);
         let end = close.map_or(s.len(), |c| c + 1);

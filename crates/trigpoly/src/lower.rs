@@ -97,8 +97,25 @@ impl<C: Coefficient> Lower<'_, C> {
                 num.checked_div(&den).map_err(at(b.span))
             }
             ExprKind::Pow(a, b) => {
-                // `Mω²` as printed: the power belongs to the last name only.
-                if let ExprKind::Name(name) = &a.kind {
+                // `M(x + y)²` as printed: the power belongs to the parentheses, not to the
+                // product the name before them makes (`(M(x + y))²` squares it all).
+                if let ExprKind::Call(name, name_span, args) = &a.kind {
+                    let bare = a.span.start == name_span.start;
+                    if bare && args.len() == 1 && !is_function(name) {
+                        let exp = self.integer_exponent(b)?;
+                        let power = self.lower(&args[0])?.checked_pow(exp).map_err(at(span))?;
+                        if self.is_product_of_names(name) {
+                            return self
+                                .name(name, *name_span)?
+                                .checked_mul(&power)
+                                .map_err(at(span));
+                        }
+                    }
+                }
+                // `Mω²` as printed: the power belongs to the last name only (`(Mω)²`, in
+                // parentheses, squares both).
+                let bare_name = a.span.end - a.span.start == name_length(a);
+                if let (ExprKind::Name(name), true) = (&a.kind, bare_name) {
                     if self.vars.lookup(name).is_none() && self.ctx.lookup(name).is_none() {
                         if let Some(mut parts) = self.split_name(name) {
                             let last = parts.pop().expect("a split has two parts or more");
@@ -223,6 +240,23 @@ impl<C: Coefficient> Lower<'_, C> {
     }
 }
 
+/// Whether `name` before parentheses is a function (`cos(θ)`, `Re(Z)`), not a product.
+fn is_function(name: &str) -> bool {
+    matches!(
+        name,
+        "cos" | "sin" | "exp" | "conj" | "re" | "im" | "Re" | "Im"
+    )
+}
+
+/// The length of a name node's name (0 for any other node): shorter than its span when the
+/// name is in parentheses.
+fn name_length(e: &Expr) -> usize {
+    match &e.kind {
+        ExprKind::Name(n) => n.len(),
+        _ => 0,
+    }
+}
+
 /// Splits `name` into names that `known` takes (`Mω` → `M`, `ω`), longest prefix first, at
 /// least two of them; `None` if no split exists.
 fn split_into(name: &str, known: &dyn Fn(&str) -> bool) -> Option<Vec<String>> {
@@ -288,6 +322,9 @@ impl<C: Coefficient> Lower<'_, C> {
     ) -> Result<Poly<C>, ParseError> {
         let fun = match name {
             "cos" | "sin" | "exp" | "conj" | "re" | "im" => name,
+            // The paper's (and the echo's) real and imaginary parts.
+            "Re" => "re",
+            "Im" => "im",
             // A name before parentheses is a product, as the text form prints it:
             // `Mω(3x p_x² − …)`, `i(mω − nΩ)`.
             _ if args.len() == 1 && self.is_product_of_names(name) => {
@@ -398,6 +435,24 @@ impl<C: Coefficient> Lower<'_, C> {
             .collect()
     }
 
+    /// The linear form of the product `a·b`: one side must be a constant.
+    fn product_form(
+        &self,
+        a: &Expr,
+        b: &Expr,
+        bad: &dyn Fn(Span) -> ParseError,
+    ) -> Result<LinearForm, ParseError> {
+        use LinearForm::{Angles, Constant};
+        Ok(
+            match (self.linear_form(a, bad)?, self.linear_form(b, bad)?) {
+                (Constant(x), Constant(y)) => Constant(&x * &y),
+                (Constant(c), form) | (form, Constant(c)) => form.scale(&c),
+                // A product of angles.
+                (Angles(_), Angles(_)) => return Err(bad(b.span)),
+            },
+        )
+    }
+
     /// Reads `e` as a linear form over the angles with Gaussian-integer coefficients: integers,
     /// `i` and angles combined by `+`, `−` and products in which one side is a constant. What
     /// does not fit is refused by `bad` at its span.
@@ -449,12 +504,12 @@ impl<C: Coefficient> Lower<'_, C> {
                     (Constant(_), Angles(_)) => return Err(bad(a.span)),
                 }
             }
-            ExprKind::Mul(a, b) => match (self.linear_form(a, bad)?, self.linear_form(b, bad)?) {
-                (Constant(x), Constant(y)) => Constant(&x * &y),
-                (Constant(c), form) | (form, Constant(c)) => form.scale(&c),
-                // A product of angles.
-                (Angles(_), Angles(_)) => return Err(bad(b.span)),
-            },
+            ExprKind::Mul(a, b) => self.product_form(a, b, bad)?,
+            // `i(θ − φ)`: a name before parentheses multiplies them, as the echo writes it.
+            ExprKind::Call(name, name_span, args) if args.len() == 1 && !is_function(name) => {
+                let factor = Expr::new(ExprKind::Name(name.clone()), *name_span);
+                self.product_form(&factor, &args[0], bad)?
+            }
             _ => return Err(bad(e.span)),
         };
         Ok(form)

@@ -444,7 +444,10 @@ impl VarSet {
             .flat_map(|v| self.variable(v).spellings())
             .collect();
         let declared = self.vars.iter().flat_map(Variable::spellings);
-        juxtaposition_is_ambiguous(declared.chain(self.also_named.iter().map(String::as_str)), written)
+        juxtaposition_is_ambiguous(
+            declared.chain(self.also_named.iter().map(String::as_str)),
+            written,
+        )
     }
 
     /// The limits in force.
@@ -615,7 +618,8 @@ impl VarSetBuilder {
     /// ([`VarSet::juxtaposition_is_ambiguous`]). Sets that differ in these names are different
     /// rings; they share their variables' handles.
     pub fn also_named<'a>(mut self, names: impl IntoIterator<Item = &'a str>) -> Self {
-        self.also_named.extend(names.into_iter().map(str::to_string));
+        self.also_named
+            .extend(names.into_iter().map(str::to_string));
         self
     }
 
