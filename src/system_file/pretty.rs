@@ -200,9 +200,21 @@ impl LoadedSystem {
                     }
                     _ => false,
                 };
+                // A name before parentheses with a power after them, `M(x + y)²`, is read with
+                // the power on the parentheses: printed as it was written, it reads back so.
+                let power_on_parentheses = match &a.kind {
+                    ExprKind::Call(f, name_span, args) => {
+                        a.span.start == name_span.start
+                            && args.len() == 1
+                            && !matches!(f.as_str(), "cos" | "sin" | "exp" | "conj" | "re" | "im")
+                    }
+                    _ => false,
+                };
                 let base = self.print(a, spaced);
                 let base = if run_together {
                     base.wrapped(ATOM + 1)
+                } else if power_on_parentheses {
+                    base
                 } else {
                     base.wrapped(ATOM)
                 };
@@ -252,15 +264,20 @@ impl LoadedSystem {
                 let args: Vec<String> = args.iter().map(|a| self.print(a, spaced).text).collect();
                 // The paper's (and LaTeX's) real and imaginary parts are `Re` and `Im`; any
                 // other name before parentheses multiplies them (`K_{1,1}(x)`).
-                let f = match f.as_str() {
-                    "re" => "Re".to_string(),
-                    "im" => "Im".to_string(),
-                    "cos" | "sin" | "exp" | "conj" => f.clone(),
-                    other => self.display_name(other),
+                // (`re` and `im` where the system declares `Re` or `Im` itself).
+                let (name, function) = match f.as_str() {
+                    "re" if !self.is_declared_name("Re") => ("Re".to_string(), true),
+                    "im" if !self.is_declared_name("Im") => ("Im".to_string(), true),
+                    "re" | "im" | "cos" | "sin" | "exp" | "conj" => (f.clone(), true),
+                    other => (self.display_name(other), false),
                 };
-                let mut p = Printed::atom(format!("{f}({})", args.join(", ")));
+                let mut p = Printed::atom(format!("{name}({})", args.join(", ")));
                 p.first_long = true;
                 p.last_long = true;
+                if !function {
+                    // A product: a power after it takes parentheses, `(p_x(x + y))²`.
+                    p.prec = PRODUCT;
+                }
                 p
             }
             ExprKind::Bracket(a, b) => {

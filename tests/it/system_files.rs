@@ -1420,9 +1420,41 @@ fn echoes_read_back_to_the_same_normal_form() {
         let (_, again) = expand(&echo);
         assert_eq!(again, value, "{input} echoed as {echo}");
     }
+    // A name before parentheses with a power after them, and the same in parentheses.
+    for input in [
+        "M(x + y)^(2)",
+        "(M(x + y))^2",
+        "(p_x (3/4*i))^2",
+        "x(cos(theta)^2)^2",
+    ] {
+        let (echo, value) = expand(input);
+        let (_, again) = expand(&echo);
+        assert_eq!(again, value, "{input} echoed as {echo}");
+    }
     // The paper's way of writing: a name before parentheses multiplies them, the power on the
     // parentheses; in parentheses, a power takes names run together whole.
     assert_eq!(expand("2M(x + y)²").1, expand("2*M*(x + y)^2").1);
     assert_eq!(expand("(Mx)²").1, "M^2*x^2");
     assert_eq!(expand("Mx²").1, "M*x^2");
+}
+
+/// `Re` and `Im` are the real and imaginary parts unless the system declares the name: a
+/// function `Re` before parentheses multiplies them, and the echo of a real part is then `re`.
+#[test]
+fn a_function_named_re_is_the_systems() {
+    let dir = scratch("function-named-re");
+    std::fs::write(
+        dir.join("re.toml"),
+        "hamiltonian = \"p_x^2/2\"\n[phase_space]\ncoordinates = [\"x\"]\nparameters = [\"E\"]\n\
+         [[function]]\nname = \"Re\"\nvalue = \"x^2 + 1\"\n",
+    )
+    .expect("write");
+    let o = superint_in(
+        &dir,
+        &["expand", "re.toml", "Re (E) - Re*E", "re(i*x) + Re"],
+    );
+    let out = text(&o.stdout);
+    assert_eq!(o.status.code(), Some(0), "{}", text(&o.stderr));
+    assert!(out.contains("Re(E) − Re E = 0\n"), "{out}");
+    assert!(out.contains("re(ix) + Re  = x² + 1\n"), "{out}");
 }

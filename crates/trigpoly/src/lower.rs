@@ -101,7 +101,7 @@ impl<C: Coefficient> Lower<'_, C> {
                 // product the name before them makes (`(M(x + y))²` squares it all).
                 if let ExprKind::Call(name, name_span, args) = &a.kind {
                     let bare = a.span.start == name_span.start;
-                    if bare && args.len() == 1 && !is_function(name) {
+                    if bare && args.len() == 1 && !self.is_function(name) {
                         let exp = self.integer_exponent(b)?;
                         let power = self.lower(&args[0])?.checked_pow(exp).map_err(at(span))?;
                         if self.is_product_of_names(name) {
@@ -211,6 +211,16 @@ impl<C: Coefficient> Lower<'_, C> {
             || self.ctx.lookup(name).is_some()
     }
 
+    /// Whether `name` before parentheses is a function (`cos(θ)`, `Re(Z)`), not a product:
+    /// `Re` and `Im` are the real and imaginary parts unless the system declares the name.
+    fn is_function(&self, name: &str) -> bool {
+        match name {
+            "cos" | "sin" | "exp" | "conj" | "re" | "im" => true,
+            "Re" | "Im" => !self.is_declared(name),
+            _ => false,
+        }
+    }
+
     /// Splits a name that is not declared into declared names (`Mω` → `M`, `ω`), longest
     /// prefix first; `None` if no split exists.
     fn split_name(&self, name: &str) -> Option<Vec<String>> {
@@ -238,14 +248,6 @@ impl<C: Coefficient> Lower<'_, C> {
         }
         Some((found, coefficient))
     }
-}
-
-/// Whether `name` before parentheses is a function (`cos(θ)`, `Re(Z)`), not a product.
-fn is_function(name: &str) -> bool {
-    matches!(
-        name,
-        "cos" | "sin" | "exp" | "conj" | "re" | "im" | "Re" | "Im"
-    )
 }
 
 /// The length of a name node's name (0 for any other node): shorter than its span when the
@@ -323,8 +325,8 @@ impl<C: Coefficient> Lower<'_, C> {
         let fun = match name {
             "cos" | "sin" | "exp" | "conj" | "re" | "im" => name,
             // The paper's (and the echo's) real and imaginary parts.
-            "Re" => "re",
-            "Im" => "im",
+            "Re" if self.is_function(name) => "re",
+            "Im" if self.is_function(name) => "im",
             // A name before parentheses is a product, as the text form prints it:
             // `Mω(3x p_x² − …)`, `i(mω − nΩ)`.
             _ if args.len() == 1 && self.is_product_of_names(name) => {
@@ -506,7 +508,7 @@ impl<C: Coefficient> Lower<'_, C> {
             }
             ExprKind::Mul(a, b) => self.product_form(a, b, bad)?,
             // `i(θ − φ)`: a name before parentheses multiplies them, as the echo writes it.
-            ExprKind::Call(name, name_span, args) if args.len() == 1 && !is_function(name) => {
+            ExprKind::Call(name, name_span, args) if args.len() == 1 && !self.is_function(name) => {
                 let factor = Expr::new(ExprKind::Name(name.clone()), *name_span);
                 self.product_form(&factor, &args[0], bad)?
             }
