@@ -206,7 +206,7 @@ impl LoadedSystem {
                     ExprKind::Call(f, name_span, args) => {
                         a.span.start == name_span.start
                             && args.len() == 1
-                            && !matches!(f.as_str(), "cos" | "sin" | "exp" | "conj" | "re" | "im")
+                            && !trigpoly::FUNCTIONS.contains(&f.as_str())
                     }
                     _ => false,
                 };
@@ -268,7 +268,7 @@ impl LoadedSystem {
                 let (name, function) = match f.as_str() {
                     "re" if !self.is_declared_name("Re") => ("Re".to_string(), true),
                     "im" if !self.is_declared_name("Im") => ("Im".to_string(), true),
-                    "re" | "im" | "cos" | "sin" | "exp" | "conj" => (f.clone(), true),
+                    other if trigpoly::FUNCTIONS.contains(&other) => (f.clone(), true),
                     other => (self.display_name(other), false),
                 };
                 let mut p = Printed::atom(format!("{name}({})", args.join(", ")));

@@ -51,6 +51,7 @@ pub mod syntax;
 mod varset;
 
 pub use error::AlgebraError;
+pub use lower::FUNCTIONS;
 pub use lower::{Context, NoContext};
 pub use number::{
     Coefficient, ExactDivisor, GaussianAcc, GaussianInteger, GaussianRational, Integer, IntegerAcc,

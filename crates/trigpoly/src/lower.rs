@@ -215,7 +215,7 @@ impl<C: Coefficient> Lower<'_, C> {
     /// `Re` and `Im` are the real and imaginary parts unless the system declares the name.
     fn is_function(&self, name: &str) -> bool {
         match name {
-            "cos" | "sin" | "exp" | "conj" | "re" | "im" => true,
+            _ if FUNCTIONS.contains(&name) => true,
             "Re" | "Im" => !self.is_declared(name),
             _ => false,
         }
@@ -249,6 +249,10 @@ impl<C: Coefficient> Lower<'_, C> {
         Some((found, coefficient))
     }
 }
+
+/// The functions an expression may call: a name before parentheses other than these (and
+/// `Re`, `Im` where the system does not declare them) multiplies them.
+pub const FUNCTIONS: [&str; 6] = ["cos", "sin", "exp", "conj", "re", "im"];
 
 /// The length of a name node's name (0 for any other node): shorter than its span when the
 /// name is in parentheses.
