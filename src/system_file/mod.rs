@@ -167,7 +167,6 @@ impl LoadedSystem {
         self.families.iter().position(|f| f.name == name)
     }
 
-    /// A parsing scope that sees the first `families` families.
     /// The system's name as a title says it: `the harmonic rotor`, or the file's name alone
     /// when the file gives none (`The claims of t1`, not `of the t1`).
     pub(crate) fn the_name(&self) -> String {
@@ -178,6 +177,12 @@ impl LoadedSystem {
         }
     }
 
+    /// Whether `name` is `i`, a variable or a named function of the system.
+    pub(crate) fn declares(&self, name: &str) -> bool {
+        name == "i" || self.system.vars().lookup(name).is_some() || self.system.get(name).is_ok()
+    }
+
+    /// A parsing scope that sees the first `families` families.
     fn scope(&self, families: usize) -> scope::Scope<'_> {
         scope::Scope::new(self, families)
     }

@@ -81,10 +81,7 @@ impl LoadedSystem {
     /// Whether `name` is one name of the system (a variable, function, family instance or
     /// `i`), not names run together.
     fn is_declared_name(&self, name: &str) -> bool {
-        name == "i"
-            || self.system.vars().lookup(name).is_some()
-            || self.system.get(name).is_ok()
-            || instance_of(&self.families, name).is_some()
+        self.declares(name) || instance_of(&self.families, name).is_some()
     }
 
     /// An expression tree in the paper's notation.
@@ -109,14 +106,10 @@ impl LoadedSystem {
             .into_iter()
             .map(|(n, _)| self.display_name(n))
             .collect();
-        let vars = self.system.vars();
-        let functions = self.system.functions().iter();
-        trigpoly::juxtaposition_is_ambiguous(
-            vars.vars()
-                .flat_map(|v| vars.variable(v).spellings())
-                .chain(functions.flat_map(|f| [f.name.as_str(), f.display.as_str()])),
-            written.iter().map(String::as_str),
-        )
+        // The file's variables know its functions' names too (`VarSetBuilder::also_named`).
+        self.system
+            .vars()
+            .juxtaposition_is_ambiguous(written.iter().map(String::as_str))
     }
 
     /// `tree` printed, every product spaced if `spaced`.
@@ -195,16 +188,15 @@ impl LoadedSystem {
                 // keeps the parentheses in the name's span.
                 let run_together = match &a.kind {
                     ExprKind::Name(n) => {
-                        let parenthesized = a.span.end - a.span.start > n.len();
-                        parenthesized && n.chars().count() > 1 && !self.is_declared_name(n)
+                        a.in_parentheses() && n.chars().count() > 1 && !self.is_declared_name(n)
                     }
                     _ => false,
                 };
                 // A name before parentheses with a power after them, `M(x + y)²`, is read with
                 // the power on the parentheses: printed as it was written, it reads back so.
                 let power_on_parentheses = match &a.kind {
-                    ExprKind::Call(f, name_span, args) => {
-                        a.span.start == name_span.start
+                    ExprKind::Call(f, _, args) => {
+                        !a.in_parentheses()
                             && args.len() == 1
                             && !trigpoly::FUNCTIONS.contains(&f.as_str())
                     }
@@ -262,9 +254,9 @@ impl LoadedSystem {
                     }
                 }
                 let args: Vec<String> = args.iter().map(|a| self.print(a, spaced).text).collect();
-                // The paper's (and LaTeX's) real and imaginary parts are `Re` and `Im`; any
-                // other name before parentheses multiplies them (`K_{1,1}(x)`).
-                // (`re` and `im` where the system declares `Re` or `Im` itself).
+                // The paper's (and LaTeX's) real and imaginary parts are `Re` and `Im` (`re`
+                // and `im` where the system declares `Re` or `Im` itself); any other name
+                // before parentheses multiplies them (`K_{1,1}(x)`).
                 let (name, function) = match f.as_str() {
                     "re" if !self.is_declared_name("Re") => ("Re".to_string(), true),
                     "im" if !self.is_declared_name("Im") => ("Im".to_string(), true),

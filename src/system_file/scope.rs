@@ -392,10 +392,7 @@ impl<'a> Scope<'a> {
         name: &str,
         span: Span,
     ) -> Result<(), FileError> {
-        let vars = self.file.system.vars();
-        let known =
-            name == "i" || vars.lookup(name).is_some() || self.file.system.get(name).is_ok();
-        if known {
+        if self.file.declares(name) {
             return Ok(());
         }
         if let Some((k, m, n)) = instance_of(&self.file.families, name) {

@@ -100,22 +100,22 @@ impl<C: Coefficient> Lower<'_, C> {
                 // `M(x + y)²` as printed: the power belongs to the parentheses, not to the
                 // product the name before them makes (`(M(x + y))²` squares it all).
                 if let ExprKind::Call(name, name_span, args) = &a.kind {
-                    let bare = a.span.start == name_span.start;
-                    if bare && args.len() == 1 && !self.is_function(name) {
+                    if !a.in_parentheses()
+                        && args.len() == 1
+                        && !self.is_function(name)
+                        && self.is_product_of_names(name)
+                    {
                         let exp = self.integer_exponent(b)?;
                         let power = self.lower(&args[0])?.checked_pow(exp).map_err(at(span))?;
-                        if self.is_product_of_names(name) {
-                            return self
-                                .name(name, *name_span)?
-                                .checked_mul(&power)
-                                .map_err(at(span));
-                        }
+                        return self
+                            .name(name, *name_span)?
+                            .checked_mul(&power)
+                            .map_err(at(span));
                     }
                 }
                 // `Mω²` as printed: the power belongs to the last name only (`(Mω)²`, in
                 // parentheses, squares both).
-                let bare_name = a.span.end - a.span.start == name_length(a);
-                if let (ExprKind::Name(name), true) = (&a.kind, bare_name) {
+                if let (ExprKind::Name(name), false) = (&a.kind, a.in_parentheses()) {
                     if self.vars.lookup(name).is_none() && self.ctx.lookup(name).is_none() {
                         if let Some(mut parts) = self.split_name(name) {
                             let last = parts.pop().expect("a split has two parts or more");
@@ -248,50 +248,7 @@ impl<C: Coefficient> Lower<'_, C> {
         }
         Some((found, coefficient))
     }
-}
 
-/// The functions an expression may call: a name before parentheses other than these (and
-/// `Re`, `Im` where the system does not declare them) multiplies them.
-pub const FUNCTIONS: [&str; 6] = ["cos", "sin", "exp", "conj", "re", "im"];
-
-/// The length of a name node's name (0 for any other node): shorter than its span when the
-/// name is in parentheses.
-fn name_length(e: &Expr) -> usize {
-    match &e.kind {
-        ExprKind::Name(n) => n.len(),
-        _ => 0,
-    }
-}
-
-/// Splits `name` into names that `known` takes (`Mω` → `M`, `ω`), longest prefix first, at
-/// least two of them; `None` if no split exists.
-fn split_into(name: &str, known: &dyn Fn(&str) -> bool) -> Option<Vec<String>> {
-    fn go(rest: &str, known: &dyn Fn(&str) -> bool, out: &mut Vec<String>) -> bool {
-        if rest.is_empty() {
-            return true;
-        }
-        let cuts: Vec<usize> = rest
-            .char_indices()
-            .map(|(k, _)| k)
-            .skip(1)
-            .chain([rest.len()])
-            .collect();
-        for &cut in cuts.iter().rev() {
-            if known(&rest[..cut]) {
-                out.push(rest[..cut].to_string());
-                if go(&rest[cut..], known, out) {
-                    return true;
-                }
-                out.pop();
-            }
-        }
-        false
-    }
-    let mut out = Vec::new();
-    (name.chars().count() > 1 && go(name, known, &mut out) && out.len() > 1).then_some(out)
-}
-
-impl<C: Coefficient> Lower<'_, C> {
     fn integer_exponent(&self, e: &Expr) -> Result<i64, ParseError> {
         let p: Poly<C> = self.lower(e)?;
         let value = p
@@ -327,7 +284,7 @@ impl<C: Coefficient> Lower<'_, C> {
         span: Span,
     ) -> Result<Poly<C>, ParseError> {
         let fun = match name {
-            "cos" | "sin" | "exp" | "conj" | "re" | "im" => name,
+            _ if FUNCTIONS.contains(&name) => name,
             // The paper's (and the echo's) real and imaginary parts.
             "Re" if self.is_function(name) => "re",
             "Im" if self.is_function(name) => "im",
@@ -538,4 +495,36 @@ impl LinearForm {
             }
         }
     }
+}
+
+/// The functions an expression may call: a name before parentheses other than these (and
+/// `Re`, `Im` where the system does not declare them) multiplies them.
+pub const FUNCTIONS: [&str; 6] = ["cos", "sin", "exp", "conj", "re", "im"];
+
+/// Splits `name` into names that `known` takes (`Mω` → `M`, `ω`), longest prefix first, at
+/// least two of them; `None` if no split exists.
+fn split_into(name: &str, known: &dyn Fn(&str) -> bool) -> Option<Vec<String>> {
+    fn go(rest: &str, known: &dyn Fn(&str) -> bool, out: &mut Vec<String>) -> bool {
+        if rest.is_empty() {
+            return true;
+        }
+        let cuts: Vec<usize> = rest
+            .char_indices()
+            .map(|(k, _)| k)
+            .skip(1)
+            .chain([rest.len()])
+            .collect();
+        for &cut in cuts.iter().rev() {
+            if known(&rest[..cut]) {
+                out.push(rest[..cut].to_string());
+                if go(&rest[cut..], known, out) {
+                    return true;
+                }
+                out.pop();
+            }
+        }
+        false
+    }
+    let mut out = Vec::new();
+    (name.chars().count() > 1 && go(name, known, &mut out) && out.len() > 1).then_some(out)
 }

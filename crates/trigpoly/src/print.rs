@@ -254,7 +254,8 @@ impl Names {
             all_wide: style == Style::Unicode
                 && vars.juxtaposition_is_ambiguous(
                     vars.vars()
-                        .filter(|v| terms.iter().any(|t| t.exps[v.index()] != 0)),
+                        .filter(|v| terms.iter().any(|t| t.exps[v.index()] != 0))
+                        .flat_map(|v| vars.variable(v).spellings()),
                 ),
         }
     }

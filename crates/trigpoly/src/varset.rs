@@ -435,14 +435,14 @@ impl VarSet {
             .map(|k| self.var_at(k))
     }
 
-    /// Whether the one-letter names of the variables `written`, side by side, could read back
-    /// as another variable or a name of [`VarSetBuilder::also_named`]
-    /// ([`juxtaposition_is_ambiguous`]): `xy` beside a variable `xy`.
-    pub fn juxtaposition_is_ambiguous(&self, written: impl IntoIterator<Item = Var>) -> bool {
-        let written: Vec<&str> = written
-            .into_iter()
-            .flat_map(|v| self.variable(v).spellings())
-            .collect();
+    /// Whether the one-letter names among `written` (the spellings of the variables, or other
+    /// names, an expression writes), side by side, could read back as another variable or a
+    /// name of [`VarSetBuilder::also_named`] ([`juxtaposition_is_ambiguous`]): `xy` beside a
+    /// variable `xy`.
+    pub fn juxtaposition_is_ambiguous<'a>(
+        &'a self,
+        written: impl IntoIterator<Item = &'a str>,
+    ) -> bool {
         let declared = self.vars.iter().flat_map(Variable::spellings);
         juxtaposition_is_ambiguous(
             declared.chain(self.also_named.iter().map(String::as_str)),

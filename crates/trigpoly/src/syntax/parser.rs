@@ -44,6 +44,17 @@ impl Expr {
         Expr { kind, span }
     }
 
+    /// Whether the node was written in parentheses, which the tree keeps in its span (wider
+    /// than a name, or starting before a call's name): `(Mω)²` and `(M(x + y))²` take their
+    /// power whole, `Mω²` and `M(x + y)²` do not. Other nodes answer `false`.
+    pub fn in_parentheses(&self) -> bool {
+        match &self.kind {
+            ExprKind::Name(n) => self.span.end - self.span.start > n.len(),
+            ExprKind::Call(_, name_span, _) => self.span.start < name_span.start,
+            _ => false,
+        }
+    }
+
     /// The names the expression uses, with their spans, in source order (a call's arguments'
     /// names, not the function's).
     pub fn names(&self) -> Vec<(&str, Span)> {
