@@ -6,7 +6,6 @@
 use std::fmt::Write as _;
 use std::path::PathBuf;
 
-use super::input::load_system;
 use anyhow::{bail, Context};
 use clap::{Args, ValueEnum};
 use superint::render::Format;
@@ -14,6 +13,7 @@ use superint::system_file::{Against, LimitsOverride, PlotFunctions};
 use superint::trajectory::chart::{self, reduce_angle, Curve, Style};
 use superint::trajectory::{nearest_f64, short, Flow, Method, Numeric};
 
+use super::input::load_system;
 use super::limits::LimitsArgs;
 use super::output::{emit, emit_to_stderr, Output};
 
@@ -192,6 +192,20 @@ impl Axis {
             Axis::Angle { label, .. } => label,
         }
     }
+
+    /// Whether the axis is an angle drawn reduced to `[−π, π)`.
+    fn reduced(&self) -> bool {
+        matches!(self, Axis::Angle { reduced: true, .. })
+    }
+
+    /// A value of the axis as drawn and written in the data.
+    fn shown(&self, x: f64) -> f64 {
+        if self.reduced() {
+            reduce_angle(x)
+        } else {
+            x
+        }
+    }
 }
 
 /// Integrates, draws the chart, writes it (and the data), prints the table.
@@ -320,7 +334,7 @@ pub fn run(job: &PlotJob) -> anyhow::Result<bool> {
         Some(_) => Style::Dots,
         None => Style::Lines,
     };
-    let reduced = matches!(against, Some(Axis::Angle { reduced: true, .. }));
+    let reduced = against.as_ref().is_some_and(Axis::reduced);
     let drawn: Vec<Curve> = orbits
         .iter()
         .flat_map(|o| {
@@ -354,12 +368,7 @@ pub fn run(job: &PlotJob) -> anyhow::Result<bool> {
             .map(Axis::label)
             .chain(rows[1..].iter().map(|f| f.label.as_str()))
             .collect();
-        let axis = match against {
-            None => AxisColumn::None,
-            Some(_) if reduced => AxisColumn::ReducedAngle,
-            Some(_) => AxisColumn::AsIs,
-        };
-        std::fs::write(data, csv(&columns, axis, &orbits))
+        std::fs::write(data, csv(&columns, against.as_ref(), &orbits))
             .with_context(|| format!("cannot write {}", data.display()))?;
     }
     let section = section.as_ref().map(|f| f.label.as_str());
@@ -535,20 +544,9 @@ fn json(title: &str, args: &PlotArgs, orbits: &[Orbit], section: Option<&str>) -
     format!("{doc:#}\n")
 }
 
-/// Whether and how the data write the horizontal axis.
-#[derive(Clone, Copy, PartialEq, Eq)]
-enum AxisColumn {
-    /// The time is the axis: no column of its own.
-    None,
-    /// The function or angle as computed.
-    AsIs,
-    /// An angle reduced to `[−π, π)`, as drawn.
-    ReducedAngle,
-}
-
-/// The samples as CSV: the orbit (its starting point's number), `t`, the axis of --against
-/// as `axis` says, each curve; `columns` names the functions.
-fn csv(columns: &[&str], axis: AxisColumn, orbits: &[Orbit]) -> String {
+/// The samples as CSV: the orbit (its starting point's number), `t`, the axis of --against as
+/// drawn, if any, each curve; `columns` names the functions.
+fn csv(columns: &[&str], against: Option<&Axis>, orbits: &[Orbit]) -> String {
     let quote = |s: &str| format!("\"{}\"", s.replace('"', "\"\""));
     let mut out = ["orbit", "t"]
         .into_iter()
@@ -560,14 +558,8 @@ fn csv(columns: &[&str], axis: AxisColumn, orbits: &[Orbit]) -> String {
     for (k, o) in orbits.iter().enumerate() {
         for (i, t) in o.times.iter().enumerate() {
             let _ = write!(out, "{},{t}", k + 1);
-            match axis {
-                AxisColumn::None => {}
-                AxisColumn::AsIs => {
-                    let _ = write!(out, ",{}", o.axis[i]);
-                }
-                AxisColumn::ReducedAngle => {
-                    let _ = write!(out, ",{}", reduce_angle(o.axis[i]));
-                }
+            if let Some(axis) = against {
+                let _ = write!(out, ",{}", axis.shown(o.axis[i]));
             }
             for c in &o.rows[1..] {
                 let _ = write!(out, ",{}", c.values[i]);

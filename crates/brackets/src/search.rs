@@ -101,37 +101,28 @@ impl SearchSpace {
     pub fn why_outside(&self, f: &Expr) -> Option<String> {
         use trigpoly::VarKind::{Angle, Coordinate, Momentum};
         let vars = f.vars();
-        let of_kind = |kind| -> Vec<Var> {
+        // The first variable of `kind` with a negative power in `f`, by name.
+        let negative = |kind| {
             vars.vars()
                 .filter(|&v| vars.variable(v).kind() == kind)
-                .collect()
-        };
-        let (momenta, coordinates, angles) =
-            (of_kind(Momentum), of_kind(Coordinate), of_kind(Angle));
-        let degree = |term: &trigpoly::Term<'_, GaussianRational>, of: &[Var]| -> i64 {
-            of.iter().map(|&v| term.exponent(v).abs()).sum()
-        };
-        let max = |of: &[Var]| f.terms().map(|t| degree(&t, of)).max().unwrap_or(0);
-        let negative = |of: &[Var]| {
-            of.iter()
-                .find(|&&v| f.exponent_range(v).is_some_and(|(lo, _)| lo < 0))
-                .map(|&v| vars.variable(v).unicode().to_string())
+                .find(|&v| f.exponent_range(v).is_some_and(|(lo, _)| lo < 0))
+                .map(|v| vars.variable(v).unicode().to_string())
         };
         let mut why = Vec::new();
-        if let Some(p) = negative(&momenta) {
+        if let Some(p) = negative(Momentum) {
             why.push(format!("negative powers of {p}"));
         }
-        if let (false, Some(x)) = (self.laurent, negative(&coordinates)) {
+        if let (false, Some(x)) = (self.laurent, negative(Coordinate)) {
             why.push(format!(
                 "negative powers of {x}, which a Laurent space (--laurent) admits"
             ));
         }
-        for (what, of, bound) in [
-            ("momenta", &momenta, self.momenta_degree),
-            ("coordinates", &coordinates, self.positions_degree),
-            ("angles (trigonometric order)", &angles, self.trig_degree),
+        for (what, kind, bound) in [
+            ("momenta", Momentum, self.momenta_degree),
+            ("coordinates", Coordinate, self.positions_degree),
+            ("angles (trigonometric order)", Angle, self.trig_degree),
         ] {
-            let d = max(of);
+            let d = f.total_degree(&[kind]).unwrap_or(0);
             if d > i64::from(bound) {
                 why.push(format!(
                     "degree {d} in the {what}, past the space's {bound}"

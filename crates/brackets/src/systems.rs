@@ -160,22 +160,17 @@ impl System {
         let kind = |name: &str| vars.lookup(name).map(|v| vars.variable(v).kind());
         use trigpoly::VarKind::{Angle, Momentum, Parameter};
         let names = [
-            ("omega", Parameter),
-            ("I", Parameter),
-            ("theta", Angle),
-            ("p_theta", Momentum),
+            ("omega", Parameter, "parameter"),
+            ("I", Parameter, "parameter"),
+            ("theta", Angle, "angle"),
+            ("p_theta", Momentum, "momentum"),
         ];
-        match names.iter().find(|(name, k)| kind(name) != Some(*k)) {
+        match names.iter().find(|(name, k, _)| kind(name) != Some(*k)) {
             None => Ok(()),
-            Some((name, _)) => Err(EngineError::Invalid(format!(
+            Some((name, _, noun)) => Err(EngineError::Invalid(format!(
                 "{what} is stated for a rotor in the paper's names: the parameters omega and \
-                 I, and the angle theta with its momentum p_theta; this system has no {} \
-                 {name} (a system file's tower takes any names: `superint tower --system FILE`)",
-                match *name {
-                    "theta" => "angle",
-                    "p_theta" => "momentum",
-                    _ => "parameter",
-                }
+                 I, and the angle theta with its momentum p_theta; this system has no {noun} \
+                 {name} (a system file's tower takes any names: `superint tower --system FILE`)"
             ))),
         }
     }
