@@ -873,22 +873,23 @@ fn kepler_laplace_runge_lenz_and_nothing_else() {
     );
 }
 
+/// The search space of degree 1 in the momenta and the positions and trigonometric order 1.
+const DEGREE_ONE: [&str; 6] = [
+    "--momenta-degree",
+    "1",
+    "--positions-degree",
+    "1",
+    "--trig-degree",
+    "1",
+];
+
 /// An angle's momentum is left out of the space only when the condition fixes it: without a
 /// condition, `p_θ` is an integral of the harmonic rotor that the search finds.
 #[test]
 fn an_angle_momentum_is_left_out_only_when_fixed() {
     let f = "systems/harmonic-rotor.toml";
-    let space = [
-        "--momenta-degree",
-        "1",
-        "--positions-degree",
-        "1",
-        "--trig-degree",
-        "1",
-        "--no-timings",
-    ];
     let output = |args: &[&str]| {
-        let out = superint(&[args, &space].concat());
+        let out = superint(&[args, &DEGREE_ONE, &["--no-timings"]].concat());
         assert_eq!(out.status.code(), Some(0));
         String::from_utf8(out.stdout).expect("UTF-8")
     };
@@ -1100,15 +1101,7 @@ fn a_search_says_when_h_is_outside_its_space() {
 fn search_and_closure_read_conditions_as_files_do() {
     let rotor = "systems/harmonic-rotor.toml";
     let when = ["--when", "p_theta = I*omega"];
-    let space = [
-        "--momenta-degree",
-        "1",
-        "--positions-degree",
-        "1",
-        "--trig-degree",
-        "1",
-    ];
-    let out = superint(&[&["search", rotor][..], &when, &space].concat());
+    let out = superint(&[&["search", rotor][..], &when, &DEGREE_ONE].concat());
     let text = String::from_utf8(out.stdout).expect("UTF-8");
     assert!(
         text.starts_with("Integrals of the harmonic rotor at p_θ = Iω\n"),
