@@ -312,6 +312,7 @@ pub fn search_report(
     let mut sections = vec![Section {
         number: 1,
         title: "Search".into(),
+        file: None,
         entries,
     }];
 
@@ -401,6 +402,7 @@ pub fn search_report(
             &fixed,
             f.symbolic.is_none() && !r.parameters.is_empty(),
         );
+        let c = c.written(&format!("{{{}, H}} = 0", f.expr().render(Style::Ascii)));
         entries.push(Entry::Claim(c));
     }
     let rest: Vec<&Integral> = (0..r.basis.len())
@@ -432,6 +434,7 @@ pub fn search_report(
         } else {
             "Basis".into()
         },
+        file: None,
         entries,
     });
     let when = cond.map(|c| format!(" at {c}")).unwrap_or_default();
@@ -575,6 +578,8 @@ pub fn closure_report(
                     note(*symbolic),
                 );
                 claim.condition = condition(*symbolic);
+                let ascii = poly.render(Style::Ascii);
+                let claim = claim.written(&format!("{{{}, {}}} = {ascii}", c.names[a], c.names[b]));
                 entries.push(Entry::Claim(claim));
             }
         }
@@ -582,6 +587,7 @@ pub fn closure_report(
     let mut sections = vec![Section {
         number: 1,
         title: "Structure".into(),
+        file: None,
         entries,
     }];
     let mut entries = vec![Entry::Text(format!(
@@ -600,11 +606,13 @@ pub fn closure_report(
             note(rel.symbolic),
         );
         claim.condition = condition(rel.symbolic);
+        let claim = claim.written(&format!("{} = 0", rel.poly.render(Style::Ascii)));
         entries.push(Entry::Claim(claim));
     }
     sections.push(Section {
         number: 2,
         title: "Relations".into(),
+        file: None,
         entries,
     });
     Ok((

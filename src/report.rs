@@ -71,6 +71,9 @@ pub struct Section {
     pub number: u32,
     /// The title.
     pub title: String,
+    /// The system file the section is about, as named on the command line (`-` read as
+    /// `<stdin>`), if it is about one.
+    pub file: Option<String>,
     /// The entries, in order.
     pub entries: Vec<Entry>,
 }
@@ -142,6 +145,10 @@ pub struct ClaimResult {
     pub id: String,
     /// How the claim reads, in the paper's unicode notation (`{L, G1} = −G2`).
     pub statement: String,
+    /// The claim as text that `superint` reads back in its system file: as the file writes
+    /// it, or a found bracket or relation in the file's names (`{L, Ax} = Ay`); `None` for
+    /// the paper's claims and for those a tower or a proof decides.
+    pub written: Option<String>,
     /// Where it is claimed to hold (`p_θ = Iω`), if it is conditional.
     pub condition: Option<String>,
     /// Identity or nonvanishing.
@@ -166,6 +173,7 @@ impl ClaimResult {
         ClaimResult {
             id: id.to_string(),
             statement: statement.to_string(),
+            written: None,
             condition: None,
             kind: ClaimKind::Identity,
             proved,
@@ -180,6 +188,12 @@ impl ClaimResult {
     /// The same result with a timing.
     pub fn timed(mut self, seconds: f64) -> Self {
         self.seconds = seconds;
+        self
+    }
+
+    /// The same result with its text as a system file writes it.
+    pub fn written(mut self, text: &str) -> Self {
+        self.written = Some(text.to_string());
         self
     }
 
@@ -206,6 +220,7 @@ impl From<brackets::Verdict> for ClaimResult {
         ClaimResult {
             id: v.id,
             statement: v.statement,
+            written: None,
             condition: v.condition,
             kind: ClaimKind::Identity,
             proved: residual.is_none(),
@@ -360,11 +375,21 @@ impl Report {
             sections: vec![Section {
                 number: 1,
                 title: title.to_string(),
+                file: None,
                 entries: claims.into_iter().map(Entry::Claim).collect(),
             }],
             summary: SummaryKind::Claims,
             seconds,
         }
+    }
+
+    /// The same report with every section that names no file about `file`: what a command
+    /// that ran on one system file reports.
+    pub fn about_file(mut self, file: &str) -> Report {
+        for s in &mut self.sections {
+            s.file.get_or_insert_with(|| file.to_string());
+        }
+        self
     }
 
     /// Every checked claim, in order: plain claims and those settled by tables, proofs, towers

@@ -3,9 +3,10 @@
 use std::path::PathBuf;
 
 use super::input::load_system;
+use anyhow::bail;
 use clap::Args;
-use superint::render::render;
-use superint::system_file::{check_report, LimitsOverride};
+use superint::render::{json, render, Format};
+use superint::system_file::{check_each, FileError, LimitsOverride};
 
 use super::limits::LimitsArgs;
 use super::output::{emit, Output};
@@ -52,14 +53,55 @@ impl CheckArgs {
 }
 
 /// Loads every file, checks every claim and prints the report; whether every claim met its
-/// expectation.
+/// expectation. A file that does not load, or whose check stops (a limit), does not stop the
+/// others: its error goes to stderr (and into the JSON report's `errors`), the others are
+/// checked and printed, and the run ends with an error (exit 2).
 pub fn run(job: &CheckJob) -> anyhow::Result<bool> {
     let files = job
         .files
         .iter()
         .map(|p| load_system(p, &job.limits))
-        .collect::<Result<Vec<_>, _>>()?;
-    let report = check_report(&files)?;
-    emit(&render(&report, job.output.format, &job.output.options))?;
-    Ok(report.all_as_expected())
+        .collect();
+    let (report, mut errors) = check_each(files);
+    let unchecked = match report.sections.is_empty() {
+        // Nothing was checked: the errors are the whole answer, the last one the run's.
+        true => errors.pop(),
+        false => None,
+    };
+    for e in &errors {
+        eprintln!("superint: error: {e}");
+    }
+    if let Some(last) = unchecked {
+        return Err(last.into());
+    }
+    let text = match job.output.format {
+        Format::Json if !errors.is_empty() => {
+            let mut value = json::value(&report, &job.output.options);
+            value["errors"] = errors.iter().map(error_value).collect();
+            json::pretty(&value)
+        }
+        format => render(&report, format, &job.output.options),
+    };
+    emit(&text)?;
+    match errors.len() {
+        0 => Ok(report.all_as_expected()),
+        n => bail!(
+            "{n} of {} files not checked (the error{} above)",
+            job.files.len(),
+            if n == 1 { "" } else { "s" }
+        ),
+    }
+}
+
+/// A file's error as the JSON report's `errors` give it.
+fn error_value(e: &FileError) -> serde_json::Value {
+    let location = e.location.as_deref();
+    serde_json::json!({
+        "file": e.origin,
+        "line": location.map(|l| l.line),
+        "column": location.map(|l| l.column),
+        "kind": e.kind.name(),
+        "message": e.message,
+        "hint": e.hint,
+    })
 }

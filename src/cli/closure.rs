@@ -123,6 +123,7 @@ pub fn run(job: &ClosureJob) -> anyhow::Result<bool> {
     options.fixed = subject.fixed(a.fix.as_deref())?;
     let (report, _) = closure_report(subject.name(), subject.system(), &generators, &options)
         .context("computing the closure")?;
+    let report = subject.tag(report);
     emit(&render(&report, job.output.format, &job.output.options))?;
     Ok(report.all_proved())
 }

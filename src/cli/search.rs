@@ -12,6 +12,7 @@ use superint::discovery::{
     builtin_system, parse_condition, parse_fixed, parse_symbolic, search_report,
 };
 use superint::render::render;
+use superint::report::Report;
 use superint::system_file::LoadedSystem;
 use trigpoly::Expr;
 
@@ -153,6 +154,14 @@ impl Subject {
         )?)))
     }
 
+    /// The report `report` about this subject: about its file, if it is one.
+    pub fn tag(&self, report: Report) -> Report {
+        match self {
+            Subject::File(f) => report.about_file(&f.source.origin),
+            Subject::Builtin(..) => report,
+        }
+    }
+
     pub fn system(&self) -> &System {
         match self {
             Subject::File(f) => &f.system,
@@ -233,6 +242,7 @@ fn search_and_print(job: &SearchJob) -> anyhow::Result<bool> {
     }
     let (report, _) = search_report(subject.name(), subject.system(), &options)
         .context("searching for integrals")?;
+    let report = subject.tag(report);
     emit(&render(&report, job.output.format, &job.output.options))?;
     Ok(report.all_proved())
 }

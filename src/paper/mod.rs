@@ -174,6 +174,7 @@ impl Paper {
                 Ok(ReportSection {
                     number: s.number,
                     title: s.title.clone(),
+                    file: None,
                     entries: s
                         .items
                         .iter()
@@ -248,6 +249,7 @@ pub fn tower_report(
         sections: vec![ReportSection {
             number: if which == TowerSystem::Harmonic { 3 } else { 4 },
             title: format!("{{{k}_{{m,n}}, H}} for the {}", system.name()),
+            file: None,
             entries,
         }],
         summary: SummaryKind::Tower,

@@ -8,8 +8,15 @@
 //!                "checks": int, "all_proved": bool,
 //!                "as_expected": int (checks that met their expectation),
 //!                "all_as_expected": bool, "seconds": number | null },
-//!   "sections": [ { "number": int, "title": string } ],
-//!   "claims": [ { "id": "C09", "section": int, "statement": "{L, G1} = −G2",
+//!   "sections": [ { "number": int, "title": string,
+//!                   "file": string | null   (the system file, as named on the command line) } ],
+//!   "claims": [ { "id": "C09",
+//!                 "section": int   (the "number" of its section in "sections"),
+//!                 "statement": "{L, G1} = −G2"   (unicode, display names),
+//!                 "ascii": string | null   (the claim as text superint reads back in its
+//!                          system file: as the file writes it, or a found bracket, relation
+//!                          or integral in the file's names; null for the paper's claims and
+//!                          those a tower or a proof decides),
 //!                 "condition": string | null, "kind": "identity" | "nonvanishing",
 //!                 "outcome": "proved" | "refuted",
 //!                 "expect": "proved" | "refuted"   (what the claim is meant to do),
@@ -49,8 +56,12 @@ pub const SCHEMA: &str = "superint-report/1";
 
 /// Renders a report as pretty-printed JSON.
 pub fn render(report: &Report, options: &Options) -> String {
-    let mut text = serde_json::to_string_pretty(&value(report, options))
-        .expect("a JSON value always serialises");
+    pretty(&value(report, options))
+}
+
+/// A JSON value pretty-printed, with a final newline.
+pub fn pretty(value: &Value) -> String {
+    let mut text = serde_json::to_string_pretty(value).expect("a JSON value always serialises");
     text.push('\n');
     text
 }
@@ -154,6 +165,7 @@ pub fn value(report: &Report, options: &Options) -> Value {
         "sections": report.sections.iter().map(|s| json!({
             "number": s.number,
             "title": s.title,
+            "file": s.file,
         })).collect::<Vec<_>>(),
         "claims": claims,
         "equations": equations,
@@ -175,6 +187,7 @@ fn claim(c: &ClaimResult, section: u32, seconds: Value) -> Value {
         "id": c.id,
         "section": section,
         "statement": c.statement,
+        "ascii": c.written,
         "condition": c.condition,
         "kind": match c.kind {
             ClaimKind::Identity => "identity",

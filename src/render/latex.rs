@@ -8,8 +8,8 @@ use super::tex::{markup, math, relation, sentence, text};
 use super::text::{number, point, upper_bound};
 use super::{verdict, Options};
 use crate::report::{
-    ClaimKind, ClaimResult, Entry, Equations, ProofResult, RankResult, Report, TableResult,
-    TowerResult,
+    ClaimKind, ClaimResult, Entry, Equations, ProofResult, RankResult, Report, SummaryKind,
+    TableResult, TowerResult,
 };
 
 /// Renders a report as a LaTeX document.
@@ -29,11 +29,9 @@ pub fn render(report: &Report, options: &Options) -> String {
     out.push(r"\end{center}".into());
     for s in &report.sections {
         out.push(String::new());
-        out.push(format!(
-            r"\section*{{{}\quad {}}}",
-            s.number,
-            text(&s.title)
-        ));
+        // A title may end with a file's path, which breaks after its slashes.
+        let title = text(&s.title).replace('/', r"/\allowbreak{}");
+        out.push(format!(r"\section*{{{}\quad {title}}}", s.number));
         let mut rows: Vec<String> = Vec::new();
         for e in &s.entries {
             if let Entry::Claim(c) = e {
@@ -46,10 +44,14 @@ pub fn render(report: &Report, options: &Options) -> String {
         flush(&mut out, &mut rows);
     }
     out.push(String::new());
-    out.push(format!(
-        r"\bigskip\noindent\textbf{{{}}}",
-        sentence(&report.summary_line(options.timings))
-    ));
+    // A check's summary is words, numbers and the ids of claims, which are names, not
+    // mathematics (`wrong_sign`, `lrl-sign`): it is set as text.
+    let summary = report.summary_line(options.timings);
+    let summary = match report.summary {
+        SummaryKind::Check { .. } => text(&summary),
+        _ => sentence(&summary),
+    };
+    out.push(format!(r"\bigskip\noindent\textbf{{{summary}}}"));
     out.push(r"\end{document}".into());
     let mut doc = out.join("\n");
     doc.push('\n');
@@ -222,20 +224,65 @@ fn equations(out: &mut Vec<String>, eq: &Equations) {
     flush(out, &mut rows);
 }
 
+/// How wide a table may be, in the characters [`visual_width`] counts, before it is set as a
+/// list of its brackets: about the width of the page.
+const TABLE_ROW: usize = 70;
+
 fn table(out: &mut Vec<String>, t: &TableResult) {
     let table = &t.table;
+    let cells: Vec<Vec<String>> = table
+        .entries
+        .iter()
+        .map(|row| row.iter().map(|e| e.render(Style::Latex)).collect())
+        .collect();
+    let head: Vec<String> = table.display.iter().map(|d| math(d)).collect();
+    let column = |k: usize| {
+        let widest = cells.iter().map(|row| visual_width(&row[k])).max();
+        widest.unwrap_or(0).max(visual_width(&head[k])) + 2
+    };
+    let width: usize = (0..head.len()).map(column).sum::<usize>() + 5;
+    if width > TABLE_ROW {
+        return table_as_list(out, t, &head, &cells);
+    }
     out.push(r"\begin{center}".into());
     out.push(format!(r"{}\\[1ex]", markup(&t.caption)));
     out.push(r"$\begin{array}{c|".to_string() + &"c".repeat(table.display.len()) + "}");
-    let head: Vec<String> = table.display.iter().map(|d| math(d)).collect();
     out.push(format!(r"\{{\cdot,\cdot\}} & {} \\", head.join(" & ")));
     out.push(r"\hline".into());
-    for (name, row) in table.display.iter().zip(&table.entries) {
-        let cells: Vec<String> = row.iter().map(|e| e.render(Style::Latex)).collect();
-        out.push(format!(r"{} & {} \\", math(name), cells.join(" & ")));
+    for (name, row) in head.iter().zip(&cells) {
+        out.push(format!(r"{name} & {} \\", row.join(" & ")));
     }
     out.push(r"\end{array}$".into());
     out.push(r"\end{center}".into());
+}
+
+/// A table too wide for the page, as the list of its brackets above the diagonal that are not
+/// zero (the others follow by antisymmetry), each broken over lines as a long equation is.
+fn table_as_list(out: &mut Vec<String>, t: &TableResult, head: &[String], cells: &[Vec<String>]) {
+    let caption = t.caption.replace(" (row `A`, column `B`)", "");
+    out.push(format!(
+        r"\noindent {}, the brackets that are not zero, $A$ before $B$:",
+        markup(&caption)
+    ));
+    let mut rows = Vec::new();
+    for (a, row) in cells.iter().enumerate() {
+        for (b, cell) in row.iter().enumerate().skip(a + 1) {
+            if cell == "0" {
+                continue;
+            }
+            let lhs = format!(r"\{{{}, {}\}}", head[a], head[b]);
+            for (k, piece) in split_sum(cell, ROW).into_iter().enumerate() {
+                rows.push(match k {
+                    0 => format!("{lhs} &= {piece}"),
+                    _ => format!(r"&\quad {piece}"),
+                });
+            }
+        }
+    }
+    if rows.is_empty() {
+        out.push(r"\[1ex] every bracket is zero.".into());
+    }
+    flush(out, &mut rows);
 }
 
 fn tower(out: &mut Vec<String>, t: &TowerResult) {

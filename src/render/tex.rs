@@ -69,7 +69,7 @@ const SYMBOLS: &[(char, &str)] = &[
     ('\\', r"\backslash"),
 ];
 
-/// Precomposed letters with an accent: (char, accent, base).
+/// Precomposed letters with an accent, in mathematics: (char, accent, base).
 const ACCENTED: &[(char, &str, char)] = &[
     ('ẋ', "dot", 'x'),
     ('ẏ', "dot", 'y'),
@@ -355,19 +355,23 @@ fn translate(s: &str) -> String {
                     },
                     '_' | '^' => {
                         out.push(c);
-                        // `p_x`, `a_ij`, `A^m`: an unbraced script takes a run of letters.
-                        match toks.get(k + 1) {
-                            Some(Tok::Word(w, d)) => {
-                                out.push_str(&format!("{{{w}{d}}}"));
-                                k += 1;
+                        // `p_x`, `a_ij`, `A^m`: an unbraced script takes a run of letters; a
+                        // name with more scripts, `p_x_0` or `P_1_1`, takes them as one
+                        // subscript, `p_{x,0}` (LaTeX refuses a double subscript).
+                        let mut pieces = Vec::new();
+                        while let Some((piece, taken)) = script_piece(&toks[k + 1..]) {
+                            pieces.push(piece);
+                            k += taken;
+                            if c != '_' || toks.get(k + 1) != Some(&Tok::Char('_', None)) {
+                                break;
                             }
-                            Some(Tok::Char(c2, acc)) if *c2 != '{' => {
-                                out.push('{');
-                                push_char(&mut out, *c2, *acc);
-                                out.push('}');
-                                k += 1;
+                            if script_piece(&toks[k + 2..]).is_none() {
+                                break;
                             }
-                            _ => {}
+                            k += 1;
+                        }
+                        if !pieces.is_empty() {
+                            out.push_str(&format!("{{{}}}", pieces.join(",")));
                         }
                     }
                     _ if SUPERSCRIPTS.contains(c) || c == '⁻' || SUBSCRIPTS.contains(c) => {
@@ -400,6 +404,87 @@ fn translate(s: &str) -> String {
         out.push_str(if group { "}" } else { "" });
     }
     out.trim_end().to_string()
+}
+
+/// The LaTeX of what an unbraced script at the start of `toks` takes, and how many tokens: a
+/// word, a run of digits, or one character other than `{`.
+fn script_piece(toks: &[Tok]) -> Option<(String, usize)> {
+    match toks.first()? {
+        Tok::Word(w, d) => Some((format!("{w}{d}"), 1)),
+        Tok::Char(c, None) if c.is_ascii_digit() && !matches!(toks.get(1), Some(Tok::Word(..))) => {
+            let digits: String = toks
+                .iter()
+                .map_while(|t| match t {
+                    Tok::Char(c, None) if c.is_ascii_digit() => Some(*c),
+                    _ => None,
+                })
+                .collect();
+            let taken = digits.len();
+            Some((digits, taken))
+        }
+        Tok::Char(c, acc) if !matches!(c, '{' | '_' | '^') => {
+            let mut out = String::new();
+            push_char(&mut out, *c, *acc);
+            Some((out, 1))
+        }
+        _ => None,
+    }
+}
+
+/// Accented Latin letters, by the LaTeX accent command that writes them: the letters and, in
+/// the same order, their bases (`é` is `\'{e}`).
+const TEXT_ACCENTED: &[(&str, &str, &str)] = &[
+    ("`", "ÀÈÌÒÙàèìòù", "AEIOUaeiou"),
+    ("'", "ÁÉÍÓÚÝáéíóúýĆćĹĺŃńŔŕŚśŹź", "AEIOUYaeiouyCcLlNnRrSsZz"),
+    ("^", "ÂÊÎÔÛâêîôûĈĉĜĝĤĥĴĵŜŝŴŵŶŷ", "AEIOUaeiouCcGgHhJjSsWwYy"),
+    ("~", "ÃÑÕãñõĨĩŨũ", "ANOanoIiUu"),
+    ("\"", "ÄËÏÖÜäëïöüÿŸ", "AEIOUaeiouyY"),
+    ("r", "ÅåŮů", "AaUu"),
+    ("c", "ÇçĢģĶķĻļŅņŖŗŞşŢţ", "CcGgKkLlNnRrSsTt"),
+    ("=", "ĀāĒēĪīŌōŪū", "AaEeIiOoUu"),
+    ("u", "ĂăĔĕĞğĬĭŎŏŬŭ", "AaEeGgIiOoUu"),
+    ("k", "ĄąĘęĮįŲų", "AaEeIiUu"),
+    (".", "ĊċĖėĠġİŻż", "CcEeGgIZz"),
+    ("v", "ČčĎďĚěĽľŇňŘřŠšŤťŽž", "CcDdEeLlNnRrSsTtZz"),
+    ("H", "ŐőŰű", "OoUu"),
+];
+
+/// Letters and signs of prose beyond ASCII that are no accented letter, in LaTeX text mode.
+const TEXT_SIGNS: &[(char, &str)] = &[
+    ('ß', r"\ss{}"),
+    ('æ', r"\ae{}"),
+    ('Æ', r"\AE{}"),
+    ('œ', r"\oe{}"),
+    ('Œ', r"\OE{}"),
+    ('ø', r"\o{}"),
+    ('Ø', r"\O{}"),
+    ('ł', r"\l{}"),
+    ('Ł', r"\L{}"),
+    ('“', "``"),
+    ('”', "''"),
+    ('‘', "`"),
+    ('…', r"\dots{}"),
+    ('½', r"\ensuremath{\tfrac{1}{2}}"),
+    ('¼', r"\ensuremath{\tfrac{1}{4}}"),
+    ('¾', r"\ensuremath{\tfrac{3}{4}}"),
+];
+
+/// A letter of prose beyond ASCII in LaTeX text mode, in ASCII: `é` → `\'{e}`, `ß` → `\ss{}`.
+fn text_letter(c: char) -> Option<String> {
+    if let Some(&(_, t)) = TEXT_SIGNS.iter().find(|s| s.0 == c) {
+        return Some(t.to_string());
+    }
+    TEXT_ACCENTED.iter().find_map(|(accent, letters, bases)| {
+        let k = letters.chars().position(|l| l == c)?;
+        let base = bases.chars().nth(k)?;
+        // An accent over i drops its dot (`\'{\i}`), except the cedilla and the ogonek, below.
+        let base = match (base, *accent) {
+            ('i', "c" | "k" | ".") => "i".to_string(),
+            ('i', _) => r"\i".to_string(),
+            _ => base.to_string(),
+        };
+        Some(format!("\\{accent}{{{base}}}"))
+    })
 }
 
 fn push_char(out: &mut String, c: char, accent: Option<&'static str>) {
@@ -439,6 +524,7 @@ pub fn text(s: &str) -> String {
             '–' => out.push_str("--"),
             _ if c.is_ascii() => out.push(c),
             _ if is_combining(c) => {}
+            _ if let Some(letter) = text_letter(c) => out.push_str(&letter),
             _ => out.push_str(&format!("${}$", math(&c.to_string()))),
         }
     }
@@ -531,6 +617,9 @@ mod tests {
             ("e^{−inθ}", r"e^{-in\theta }"),
             ("G1'", "G_{1}'"),
             ("a_ij", "a_{ij}"),
+            ("(p_x_0/M) cos φ", r"(p_{x,0}/M) \cos \varphi"),
+            ("P_1_1, Q_12_3", "P_{1,1}, Q_{12,3}"),
+            ("x_0^2", "x_{0}^{2}"),
             ("x₀", "x_{0}"),
             ("ω⁻¹²", r"\omega ^{-12}"),
             ("e^{−inθ} for all", r"e^{-in\theta }\ \text{for all}"),
@@ -545,6 +634,16 @@ mod tests {
             assert!(balanced(&math(u)), "{u}");
             assert!(math(u).is_ascii(), "{u}");
         }
+    }
+
+    #[test]
+    fn prose_letters_beyond_ascii_are_latex_accents() {
+        assert_eq!(text("Hénon–Heiles"), r"H\'{e}non--Heiles");
+        assert_eq!(
+            text("Über, Frič, Uhlíř"),
+            r#"\"{U}ber, Fri\v{c}, Uhl\'{\i}\v{r}"#
+        );
+        assert_eq!(text("Straße ½"), r"Stra\ss{}e \ensuremath{\tfrac{1}{2}}");
     }
 
     #[test]

@@ -44,6 +44,8 @@ pub struct ClaimSpec {
     pub id: String,
     /// The statement in the paper's notation (`{L, G1} = −G2`).
     pub statement: String,
+    /// The claim as the file writes it (`{L, G1} = -G2`).
+    pub written: String,
     /// What the claim says.
     pub form: ClaimForm,
     /// The condition (substitutions applied after the sides are computed), if any.
@@ -205,6 +207,7 @@ impl ClaimSpec {
         Ok(ClaimSpec {
             id,
             statement,
+            written: c.claim.get_ref().clone(),
             form,
             condition,
             expect: c.expect.as_ref().map_or(Expect::Proved, |e| *e.get_ref()),
@@ -411,6 +414,7 @@ impl LoadedSystem {
                 Ok(CheckedClaim::Identity(Box::new(ClaimResult {
                     id: spec.id.clone(),
                     statement: spec.statement.clone(),
+                    written: Some(spec.written.clone()),
                     condition: spec.condition.as_ref().map(|c| c.text.clone()),
                     kind: ClaimKind::Identity,
                     proved,
@@ -429,7 +433,7 @@ impl LoadedSystem {
                     .iter()
                     .map(|(_, t)| scope.parse(&self.source, t))
                     .collect::<Result<_, _>>()?;
-                Ok(CheckedClaim::Rank(Box::new(self.rank_result(
+                let mut rank = self.rank_result(
                     &self.source,
                     &spec.id,
                     functions.iter().map(|f| f.0.clone()).collect(),
@@ -438,7 +442,9 @@ impl LoadedSystem {
                     spec.expect,
                     spec.span.clone(),
                     start,
-                )?)))
+                )?;
+                rank.claim.written = Some(spec.written.clone());
+                Ok(CheckedClaim::Rank(Box::new(rank)))
             }
         }
     }

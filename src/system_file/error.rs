@@ -42,6 +42,26 @@ pub enum ErrorKind {
     Engine,
 }
 
+impl ErrorKind {
+    /// The kind as one lowercase word, as JSON reports it (`limit`, `expression`).
+    pub fn name(self) -> &'static str {
+        match self {
+            ErrorKind::Io => "io",
+            ErrorKind::Empty => "empty",
+            ErrorKind::NotText => "not_text",
+            ErrorKind::Toml => "toml",
+            ErrorKind::Schema => "schema",
+            ErrorKind::Name => "name",
+            ErrorKind::Expression => "expression",
+            ErrorKind::Condition => "condition",
+            ErrorKind::Claim => "claim",
+            ErrorKind::Family => "family",
+            ErrorKind::Limit => "limit",
+            ErrorKind::Engine => "engine",
+        }
+    }
+}
+
 /// Where in its source an error is: 1-based line and column (in characters), the source line
 /// and the caret under the offending text.
 #[derive(Clone, Debug, PartialEq, Eq)]

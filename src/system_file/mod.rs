@@ -53,7 +53,9 @@ pub use claims::{CheckedClaim, ClaimForm, ClaimSpec};
 pub use error::{ErrorKind, FileError, Location};
 pub use load::{load, load_bytes, load_str};
 pub use plot::{Against, PlotFunctions, PlotInput};
-pub use reports::{bracket_report, check_report, expand_report, rank_report, table_report};
+pub use reports::{
+    bracket_report, check_each, check_report, expand_report, rank_report, table_report,
+};
 pub use text::{Source, Text};
 pub use tower::family_tower_report;
 

@@ -57,6 +57,7 @@ impl LoadedSystem {
             sections: vec![Section {
                 number: 1,
                 title: self.section_title(),
+                file: Some(self.source.origin.clone()),
                 entries: vec![entry],
             }],
             summary,
@@ -74,38 +75,75 @@ pub(super) fn command_error(e: &brackets::EngineError) -> FileError {
 }
 
 /// Checks every claim of every file: one section per file (its source, its Hamiltonian, its
-/// claims proved or refuted, ranks with their certificates).
+/// claims proved or refuted, ranks with their certificates). The first error, of any file,
+/// is the answer; [`check_each`] goes on past it.
 pub fn check_report(files: &[LoadedSystem]) -> Result<Report, FileError> {
     let start = Instant::now();
+    let sections = files
+        .iter()
+        .map(LoadedSystem::checked_section)
+        .collect::<Result<Vec<_>, _>>()?;
+    Ok(checked_files(sections, start))
+}
+
+/// Checks every claim of every file that loaded, as [`check_report`] does, and goes on past a
+/// file that did not load or whose check failed (a limit, say): the report holds the files
+/// checked, and the errors of the others come beside it, in order, for the caller to show.
+pub fn check_each(files: Vec<Result<LoadedSystem, FileError>>) -> (Report, Vec<FileError>) {
+    let start = Instant::now();
     let mut sections = Vec::new();
-    for (k, file) in files.iter().enumerate() {
-        let mut entries = file.preamble();
-        for claim in &file.claims {
-            entries.push(match file.check_claim(claim)? {
+    let mut errors = Vec::new();
+    for file in files {
+        match file.and_then(|f| f.checked_section()) {
+            Ok(section) => sections.push(section),
+            Err(e) => errors.push(e),
+        }
+    }
+    (checked_files(sections, start), errors)
+}
+
+impl LoadedSystem {
+    /// The section of the file's claims, checked.
+    fn checked_section(&self) -> Result<(Section, String), FileError> {
+        let mut entries = self.preamble();
+        for claim in &self.claims {
+            entries.push(match self.check_claim(claim)? {
                 CheckedClaim::Identity(c) => Entry::Claim(*c),
                 CheckedClaim::Rank(r) => Entry::Rank(*r),
             });
         }
-        sections.push(Section {
-            number: k as u32 + 1,
-            title: file.section_title(),
+        let section = Section {
+            number: 0,
+            title: self.section_title(),
+            file: Some(self.source.origin.clone()),
             entries,
-        });
+        };
+        Ok((section, self.the_name()))
     }
-    let title = match files {
-        [one] => format!("The claims of {}, checked exactly", one.the_name()),
+}
+
+/// The report of checked files' sections, each with its system's name, numbered in order.
+fn checked_files(sections: Vec<(Section, String)>, start: Instant) -> Report {
+    let title = match sections.as_slice() {
+        [(_, name)] => format!("The claims of {name}, checked exactly"),
         _ => format!(
             "The claims of {} system files, checked exactly",
-            files.len()
+            sections.len()
         ),
     };
-    Ok(Report {
+    let files = sections.len();
+    let sections = sections
+        .into_iter()
+        .zip(1..)
+        .map(|((section, _), number)| Section { number, ..section })
+        .collect();
+    Report {
         title,
         subtitle: String::new(),
         sections,
-        summary: SummaryKind::Check { files: files.len() },
+        summary: SummaryKind::Check { files },
         seconds: start.elapsed().as_secs_f64(),
-    })
+    }
 }
 
 /// `{F, G}` in normal form, for expressions `f` and `g` of the file's system, optionally

@@ -380,6 +380,7 @@ pub fn family_tower_report(
         sections: vec![Section {
             number: 1,
             title: format!("{{{kmn}, H}} for {}", file.the_name()),
+            file: Some(file.source.origin.clone()),
             entries,
         }],
         summary: SummaryKind::Check { files: 1 },

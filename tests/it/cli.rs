@@ -200,15 +200,33 @@ fn cli_latex_is_a_complete_valid_document() {
     compile_if_possible(&doc);
 }
 
-/// Compiles with `pdflatex` when it is installed (CI machines may not have it).
+/// Whether `pdflatex` is installed; CI installs it and sets `SUPERINT_REQUIRE_PDFLATEX`, so that
+/// there the LaTeX tests cannot pass by skipping.
+fn pdflatex_available() -> bool {
+    let found = Command::new("pdflatex")
+        .arg("--version")
+        .output()
+        .is_ok_and(|o| o.status.success());
+    assert!(
+        found || std::env::var_os("SUPERINT_REQUIRE_PDFLATEX").is_none(),
+        "SUPERINT_REQUIRE_PDFLATEX is set, but pdflatex is not installed"
+    );
+    found
+}
+
+/// Compiles with `pdflatex` when it is installed (CI installs it), and fails on an error or on
+/// a line set wider than the page by more than `slack_pt` points.
 fn compile_if_possible(doc: &str) {
-    let Ok(probe) = Command::new("pdflatex").arg("--version").output() else {
-        return;
-    };
-    if !probe.status.success() {
+    compile_within(doc, f64::INFINITY);
+}
+
+fn compile_within(doc: &str, slack_pt: f64) {
+    if !pdflatex_available() {
         return;
     }
-    let dir = std::env::temp_dir().join(format!("superint-latex-{}", std::process::id()));
+    static COUNT: std::sync::atomic::AtomicUsize = std::sync::atomic::AtomicUsize::new(0);
+    let n = COUNT.fetch_add(1, std::sync::atomic::Ordering::Relaxed);
+    let dir = std::env::temp_dir().join(format!("superint-latex-{}-{n}", std::process::id()));
     std::fs::create_dir_all(&dir).expect("a temporary directory");
     std::fs::write(dir.join("paper.tex"), doc).expect("write paper.tex");
     let o = Command::new("pdflatex")
@@ -219,6 +237,85 @@ fn compile_if_possible(doc: &str) {
     let log = String::from_utf8_lossy(&o.stdout).to_string();
     let _ = std::fs::remove_dir_all(&dir);
     assert!(o.status.success(), "pdflatex failed:\n{log}");
+    for line in log.lines().filter(|l| l.starts_with("Overfull \\hbox (")) {
+        let points: f64 = line["Overfull \\hbox (".len()..]
+            .split("pt")
+            .next()
+            .and_then(|p| p.parse().ok())
+            .expect("an overfull box's width");
+        assert!(points <= slack_pt, "{line}\n{log}");
+    }
+}
+
+/// Every command that writes LaTeX writes a document that compiles, for every system file and
+/// for names with several subscripts (`p_x_0`, `P_1_1`), accented names (`Hénon`) and claim
+/// ids that LaTeX would read as mathematics (`wrong_sign`).
+#[test]
+fn cli_latex_of_every_command_compiles() {
+    let systems: Vec<String> =
+        std::fs::read_dir(Path::new(env!("CARGO_MANIFEST_DIR")).join("systems"))
+            .expect("systems/")
+            .map(|e| e.expect("an entry").path().display().to_string())
+            .filter(|p| p.ends_with(".toml"))
+            .collect();
+    let mut docs = Vec::new();
+    for file in &systems {
+        docs.push(run(
+            &["check", file, "--format", "latex", "--no-timings"],
+            0,
+        ));
+    }
+    let rotor = "systems/harmonic-rotor.toml";
+    for args in [
+        vec![
+            "closure",
+            rotor,
+            "F1",
+            "L",
+            "G1",
+            "P_1_1",
+            "Q_1_1",
+            "--when",
+            "p_theta = I*omega",
+        ],
+        vec!["tower", "--max", "2", "--system", rotor, "--family", "K"],
+        vec!["table", "systems/gravity-rotor.toml", "Lp", "G1p", "G2p"],
+        vec!["bracket", rotor, "K_1_2", "H"],
+        vec![
+            "search",
+            rotor,
+            "--when",
+            "p_theta = I*omega",
+            "--momenta-degree",
+            "1",
+            "--positions-degree",
+            "1",
+            "--trig-degree",
+            "1",
+        ],
+    ] {
+        let mut args = args;
+        args.extend(["--format", "latex", "--no-timings"]);
+        docs.push(run(&args, 0));
+    }
+    let dir = std::env::temp_dir().join(format!("superint-ids-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).expect("a temporary directory");
+    let file = dir.join("ids.toml");
+    std::fs::write(
+        &file,
+        "name = \"Hénon's test\"\nhamiltonian = \"p_x_0^2/2\"\n[phase_space]\ncoordinates = [\"x_0\"]\n\
+         [[claim]]\nid = \"wrong_sign_#1\"\nclaim = \"{x_0, H} = -p_x_0\"\n",
+    )
+    .expect("write ids.toml");
+    let out = superint(&["check", file.to_str().expect("a path"), "--format", "latex"]);
+    assert_eq!(out.status.code(), Some(1), "{}", stderr(&out));
+    docs.push(stdout(&out));
+    let _ = std::fs::remove_dir_all(&dir);
+    for doc in &docs {
+        assert!(doc.is_ascii(), "LaTeX output is ASCII");
+        assert_balanced_latex(doc);
+        compile_if_possible(doc);
+    }
 }
 
 #[test]

@@ -558,9 +558,9 @@ fn gravity_1_1() {
         "g11-closure",
         &[
             "The table closes",
-            "M²g⁴/ω⁴ + 4Mg² Hp/ω² + 4 Hp² = 4ω² Lp² + 16 G1p² + 4 G2p²",
-            "M²g²/ω² + 2Mω Lp + 2M Hp = Pp_1_1² + Qp_1_1²",
-            "2M G2p = Pp_1_1 Rp_1_1 + Qp_1_1 Sp_1_1",
+            "M²g⁴/ω⁴ + 4Mg² Hp/ω² + 4 Hp² = 4ω² L'² + 16 G1'² + 4 G2'²",
+            "M²g²/ω² + 2Mω L' + 2M Hp = Pp_1_1² + Qp_1_1²",
+            "2M G2' = Pp_1_1 Rp_1_1 + Qp_1_1 Sp_1_1",
             "35 claims: 35 proved, 0 refuted",
         ],
     );
@@ -568,7 +568,7 @@ fn gravity_1_1() {
     expect(
         "g11-closure-f1",
         &[
-            "F1² = Lp² + 4 G1p² + G2p² at p_θ = Iω, M = 1, ω = 1, I = 1, g = 1",
+            "F1² = L'² + 4 G1'² + G2'² at p_θ = Iω, M = 1, ω = 1, I = 1, g = 1",
             "not lifted back to the parameters (no symbolic lift)",
         ],
     );
@@ -1120,4 +1120,68 @@ fn search_and_closure_read_conditions_as_files_do() {
         err.starts_with("superint: error: <command line>:1:13: unknown name 'omeg'"),
         "{err}"
     );
+}
+
+/// A condition must describe a surface the flow keeps: there a function whose bracket with
+/// `H` vanishes is an integral. On `y = 0` of the Hénon–Heiles system the flow leaves at once
+/// (`ẏ = p_y`), and the search reported `p_x² + x²` as an integral "proved at y = 0"; a rotor
+/// whose coupling turns `p_θ` (`{p_θ, H} ≠ 0`) gave a false integral at `p_θ = Iω`. Both are
+/// refused, by search and closure alike; the resonance of the harmonic rotor is kept.
+#[test]
+fn a_condition_the_flow_leaves_is_refused() {
+    let leaves = [
+        (
+            vec!["systems/henon-heiles.toml", "--when", "y = 0"],
+            "the flow leaves the surface y = 0: there {y, H} = p_y, not 0",
+        ),
+        (
+            vec!["systems/harmonic-rotor.toml", "--when", "x = y"],
+            "the flow leaves the surface x = y: there {x − (y), H} = p_x/M − p_y/M, not 0",
+        ),
+    ];
+    for (args, message) in leaves {
+        for command in ["search", "closure"] {
+            let mut words = vec![command];
+            words.extend(&args);
+            if command == "closure" {
+                words.push("H");
+            }
+            let out = superint(&words);
+            let stderr = String::from_utf8_lossy(&out.stderr);
+            assert_eq!(out.status.code(), Some(2), "{words:?}: {stderr}");
+            assert!(stderr.contains(message), "{words:?}: {stderr}");
+        }
+    }
+    let coupled = scratch_system(
+        "coupled-rotors",
+        "p_theta^2/2 + p_phi^2/2 + cos(theta - phi)",
+        "theta, phi",
+    );
+    let out = superint(
+        &[
+            &["search", &coupled, "--when", "p_theta = 1"],
+            &DEGREE_ONE[..],
+        ]
+        .concat(),
+    );
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(2), "{stderr}");
+    assert!(
+        stderr.contains("the flow leaves the surface p_θ = 1"),
+        "{stderr}"
+    );
+    // Where p_θ is conserved, its level is a surface the flow keeps.
+    let out = superint(
+        &[
+            &[
+                "search",
+                "systems/harmonic-rotor.toml",
+                "--when",
+                "p_theta = I*omega",
+            ],
+            &DEGREE_ONE[..],
+        ]
+        .concat(),
+    );
+    assert_eq!(out.status.code(), Some(0));
 }

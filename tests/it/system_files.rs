@@ -950,7 +950,21 @@ fn table_is_the_su2_table() {
     ))
     .expect("JSON");
     assert_eq!(v["tables"][0]["display"][0], "L'");
-    assert_eq!(v["tables"][0]["entries"][0][1]["ascii"], "-G2'");
+    // The text shows display names; the ASCII form, the file's names, which read back.
+    assert_eq!(v["tables"][0]["entries"][0][1]["text"], "−G2'");
+    assert_eq!(v["tables"][0]["entries"][0][1]["ascii"], "-G2p");
+    assert_eq!(v["tables"][0]["entries"][1][2]["ascii"], "-omega^2*Lp");
+    assert_eq!(v["sections"][0]["file"], "systems/gravity-rotor.toml");
+    let expanded = run(
+        &[
+            "expand",
+            "systems/gravity-rotor.toml",
+            "omega^2*Lp",
+            "--no-timings",
+        ],
+        0,
+    );
+    assert!(expanded.contains("ω² L' = "), "{expanded}");
 }
 
 #[test]
@@ -1457,4 +1471,85 @@ fn a_function_named_re_is_the_systems() {
     assert_eq!(o.status.code(), Some(0), "{}", text(&o.stderr));
     assert!(out.contains("Re(E) − Re E = 0\n"), "{out}");
     assert!(out.contains("re(ix) + Re  = x² + 1\n"), "{out}");
+}
+
+/// A file that does not load does not stop a check of several: the others are checked and
+/// printed, each error goes to stderr (and into the JSON's `errors`, with its place and kind),
+/// and the run exits 2. A file whose check stops at a limit counts as one that failed.
+#[test]
+fn check_goes_on_past_a_bad_file() {
+    let dir = scratch("past-a-bad-file");
+    let good = "systems/kepler.toml";
+    let bad = dir.join("bad.toml");
+    std::fs::write(
+        &bad,
+        "name = \"bad\"\nhamiltonian = \"p_x^2/2m\"\n[phase_space]\ncoordinates = [\"x\"]\n\
+         parameters = [\"m\"]\n",
+    )
+    .expect("write bad.toml");
+    let big = dir.join("big.toml");
+    std::fs::write(
+        &big,
+        "name = \"big\"\nhamiltonian = \"p_x^2/2\"\n[phase_space]\ncoordinates = [\"x\"]\n\
+         [limits]\nmax_terms = 10\n[[claim]]\nclaim = \"(x + p_x)^20 = 0\"\n",
+    )
+    .expect("write big.toml");
+    let (bad, big) = (bad.to_str().expect("a path"), big.to_str().expect("a path"));
+    let o = superint_in(root(), &["check", good, bad, big, "--no-timings"]);
+    let (stdout, stderr) = (text(&o.stdout), text(&o.stderr));
+    assert_eq!(o.status.code(), Some(2), "{stderr}");
+    assert!(
+        stdout.contains("Kepler problem (systems/kepler.toml)"),
+        "{stdout}"
+    );
+    assert!(
+        stdout.ends_with("10 claims in 1 file: 7 proved, 3 refuted; all as expected\n"),
+        "{stdout}"
+    );
+    assert!(
+        stderr.contains("bad.toml:2:22: '/2m' is ambiguous"),
+        "{stderr}"
+    );
+    assert!(
+        stderr.contains("big.toml:8:10: the result would have more than 10 terms"),
+        "{stderr}"
+    );
+    assert!(
+        stderr.ends_with("superint: error: 2 of 3 files not checked (the errors above)\n"),
+        "{stderr}"
+    );
+    let o = superint_in(
+        root(),
+        &["check", bad, good, "--format", "json", "--no-timings"],
+    );
+    assert_eq!(o.status.code(), Some(2));
+    let v: serde_json::Value = serde_json::from_slice(&o.stdout).expect("one JSON document");
+    assert_eq!(v["sections"][0]["file"], good);
+    let error = &v["errors"][0];
+    assert_eq!(
+        (
+            &error["file"],
+            &error["line"],
+            &error["column"],
+            &error["kind"]
+        ),
+        (
+            &serde_json::json!(bad),
+            &serde_json::json!(2),
+            &serde_json::json!(22),
+            &serde_json::json!("expression")
+        )
+    );
+    // Each claim as the file writes it, which reads back there.
+    let claim = &v["claims"][0];
+    assert_eq!(
+        (&claim["statement"], &claim["ascii"]),
+        (
+            &serde_json::json!("{A_x, H} = 0"),
+            &serde_json::json!("{Ax, H} = 0")
+        )
+    );
+    // Only bad files: nothing on stdout, the last error is the run's.
+    let o = superint_in(root(), &["check", bad]);
+    assert_eq!((o.status.code(), o.stdout.is_empty()), (Some(2), true));
 }

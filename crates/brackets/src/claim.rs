@@ -4,9 +4,10 @@
 use std::borrow::Cow;
 use std::time::Instant;
 
-use trigpoly::{Expr, Var};
+use trigpoly::{Expr, Var, VarKind};
 
 use crate::error::EngineError;
+use crate::system::System;
 
 /// A condition on phase space, applied after the bracket is formed: a substitution such as the
 /// resonance `p_θ = mIω/n`.
@@ -86,6 +87,41 @@ impl Condition {
     /// Applies the substitution.
     pub fn apply(&self, e: &Expr) -> Result<Expr, EngineError> {
         Ok(e.subst_many(&self.subs)?)
+    }
+
+    /// Refuses the condition where the flow of `system`'s Hamiltonian leaves the surface it
+    /// describes: for a variable `v` set to `value`, `{v − value, H}` must vanish there, as
+    /// `{p_θ, H} = 0` does at a resonance `p_θ = mIω/n`. A function whose bracket with `H`
+    /// vanishes only on a surface that the flow leaves (`y = 0` where `ẏ = p_y`) is no
+    /// integral, so a search or a closure under such a condition would mislabel it. Parameters
+    /// are constants, always kept.
+    pub fn kept_by_flow(&self, system: &System) -> Result<(), EngineError> {
+        let vars = system.vars();
+        for (v, value) in &self.subs {
+            if vars.variable(*v).kind() == VarKind::Parameter {
+                continue;
+            }
+            let level = Expr::var(vars, *v).checked_sub(value)?;
+            let rate = self.apply(&system.flow(&level)?)?;
+            if !rate.is_zero() {
+                let name = vars.variable(*v).unicode();
+                let moves = vars
+                    .vars()
+                    .any(|w| vars.variable(w).kind() != VarKind::Parameter && value.contains(w));
+                let level = match moves {
+                    true => format!("{name} − ({value})"),
+                    false => name.to_string(),
+                };
+                return Err(EngineError::Invalid(format!(
+                    "the flow leaves the surface {}: there {{{level}, H}} = {rate}, not 0, so \
+                     what is conserved on it is no integral; a condition may set parameters, \
+                     and variables the flow keeps (p_θ at a resonance p_θ = mIω/n, where \
+                     {{p_θ, H}} = 0)",
+                    self.text
+                )));
+            }
+        }
+        Ok(())
     }
 
     /// Refuses the condition where it sets to zero a variable that one of `sides` divides by:

@@ -273,6 +273,9 @@ pub fn closure_of(
     let vars = system.vars().clone();
     let r = generators.len();
     let condition = options.condition.as_ref();
+    if let Some(c) = condition {
+        c.kept_by_flow(system)?;
+    }
     let restrict = |e: Expr| -> Result<Expr, EngineError> {
         match condition {
             Some(c) => c.apply(&e),

@@ -41,5 +41,5 @@ pub use phase::{CanonicalPair, PhaseSpace};
 pub use rank::{rank, RankCertificate, UpperBound};
 pub use search::{search, Integral, SearchOptions, SearchResult, SearchSpace, SpaceVariables};
 pub use system::{NamedFunction, System};
-pub use table::{BracketTable, Entry};
+pub use table::{BracketTable, Entry, FunctionName};
 pub use tower::{check_tower, eigen_proof, EigenProof, TowerReport};

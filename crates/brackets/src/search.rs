@@ -934,6 +934,9 @@ pub fn search(system: &System, options: &SearchOptions) -> Result<SearchResult, 
         symbolic: options.symbolic.iter().copied().unique().collect(),
         ..options.clone()
     };
+    if let Some(c) = condition {
+        c.kept_by_flow(system)?;
+    }
     let vars = system.vars();
     for &v in &options.symbolic {
         let name = vars.variable(v).name();

@@ -14,9 +14,31 @@ use crate::system::System;
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub enum Entry {
     /// `Σ c_k F_k` with coefficients in the parameters (empty for zero), checked exactly.
-    Combination(Vec<(Expr, String)>),
+    Combination(Vec<(Expr, FunctionName)>),
     /// No such combination: the bracket itself, in normal form.
     Expression(Expr),
+}
+
+/// A function of a table by name: the system's name, which reads back (`G1p`), and the name
+/// it is shown by (`G1'`).
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct FunctionName {
+    /// The name the system defines it by.
+    pub name: String,
+    /// The name it is shown by.
+    pub display: String,
+}
+
+impl FunctionName {
+    /// The name in a notation: the display name in unicode and LaTeX, the system's name in
+    /// ASCII, which `superint` reads back.
+    pub fn render(&self, style: Style) -> String {
+        match style {
+            Style::Ascii => self.name.clone(),
+            Style::Latex => latex_name(&self.display),
+            Style::Unicode => self.display.clone(),
+        }
+    }
 }
 
 /// The table `{A, B}` for a list of named functions of a system.
@@ -37,9 +59,12 @@ impl BracketTable {
             .iter()
             .map(|n| system.get(n).cloned())
             .collect::<Result<_, _>>()?;
-        let basis: Vec<(String, Expr)> = names
+        let basis: Vec<(FunctionName, Expr)> = names
             .iter()
-            .map(|n| system.display_name(n).to_string())
+            .map(|n| FunctionName {
+                name: n.to_string(),
+                display: system.display_name(n).to_string(),
+            })
             .zip(funcs.iter().cloned())
             .collect();
         // The bracket is antisymmetric: the entries above the diagonal are computed, those on
@@ -60,7 +85,7 @@ impl BracketTable {
         }
         Ok(BracketTable {
             names: names.iter().map(|s| s.to_string()).collect(),
-            display: basis.into_iter().map(|b| b.0).collect(),
+            display: basis.into_iter().map(|b| b.0.display).collect(),
             entries,
         })
     }
@@ -85,10 +110,7 @@ impl Entry {
             Entry::Combination(terms) => {
                 let mut out = String::new();
                 for (k, (c, name)) in terms.iter().enumerate() {
-                    let name = match style {
-                        Style::Latex => latex_name(name),
-                        _ => name.clone(),
-                    };
+                    let name = name.render(style);
                     let text = c.render(style);
                     let (neg, body) = match text.strip_prefix(['−', '-']) {
                         Some(rest) if c.len() == 1 => (true, rest.to_string()),
@@ -143,8 +165,8 @@ pub fn latex_name(name: &str) -> String {
 /// combination is then checked by expanding it.
 pub fn express(
     target: &Expr,
-    basis: &[(String, Expr)],
-) -> Result<Option<Vec<(Expr, String)>>, EngineError> {
+    basis: &[(FunctionName, Expr)],
+) -> Result<Option<Vec<(Expr, FunctionName)>>, EngineError> {
     if target.is_zero() {
         return Ok(Some(Vec::new()));
     }

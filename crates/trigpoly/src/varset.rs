@@ -588,12 +588,26 @@ impl VarSetBuilder {
         self.variable(name, VarKind::Angle)
     }
     /// Shows the variable declared last as the name `display` would be shown (`A_x`, `A_{x}`
-    /// in LaTeX, for a variable named `Ax`), when `display` is an identifier; otherwise, or
-    /// with nothing declared, changes nothing. [`VarSetBuilder::build`] refuses two variables
-    /// shown alike.
+    /// in LaTeX, for a variable named `Ax`), when `display` is an identifier, possibly with a
+    /// bar (a combining macron, `Z̄`) and primes (`G1'`, `G_{1}'`); otherwise, or with nothing
+    /// declared, changes nothing. Its ASCII form stays its name, which reads back.
+    /// [`VarSetBuilder::build`] refuses two variables shown alike.
     pub fn shown_as(mut self, display: &str) -> Self {
-        if let (Some(v), true) = (self.vars.last_mut(), is_identifier(display)) {
-            (v.unicode, v.latex) = render_name(display);
+        let marked = display.trim_end_matches('\'');
+        let primes = &display[marked.len()..];
+        let (base, bar) = match marked.strip_suffix('\u{304}') {
+            Some(base) => (base, true),
+            None => (marked, false),
+        };
+        if let (Some(v), true) = (self.vars.last_mut(), is_identifier(base)) {
+            let (unicode, latex) = render_name(base);
+            (v.unicode, v.latex) = match bar {
+                true => (
+                    format!("{unicode}\u{304}{primes}"),
+                    format!("\\bar{{{latex}}}{primes}"),
+                ),
+                false => (format!("{unicode}{primes}"), format!("{latex}{primes}")),
+            };
             v.spelled_out = spell_out(&v.unicode);
         }
         self

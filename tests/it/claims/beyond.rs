@@ -17,7 +17,7 @@
 //!   coefficients found by the engine from the ansatz `L p_x + M(a αx²y + b βy/x² + c γx²)`.
 
 use brackets::table::express;
-use brackets::{systems, System, UpperBound};
+use brackets::{systems, FunctionName, System, UpperBound};
 use trigpoly::{Expr, VarKind};
 
 use super::{assert_rank, rendered_table, table};
@@ -112,7 +112,16 @@ fn c26_anisotropic_3_5_rotor_resonant_integrals() {
 /// algebra), in the order of `basis`.
 fn solve(sys: &System, target: &str, basis: &[&str]) -> Vec<Expr> {
     let parse = |s: &str| sys.parse(s).unwrap();
-    let basis: Vec<(String, Expr)> = basis.iter().map(|b| (b.to_string(), parse(b))).collect();
+    let basis: Vec<(FunctionName, Expr)> = basis
+        .iter()
+        .map(|b| {
+            let name = FunctionName {
+                name: b.to_string(),
+                display: b.to_string(),
+            };
+            (name, parse(b))
+        })
+        .collect();
     let found = express(&parse(target), &basis)
         .unwrap()
         .expect("a combination exists");

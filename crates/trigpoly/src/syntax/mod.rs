@@ -181,6 +181,10 @@ mod tests {
             ("x cos θ", "(* x (cos θ))"),
             ("cos²θ sin θ", "(* (^ (cos θ) 2) (sin θ))"),
             ("(3 + 4i) x", "(* (+ 3 (* 4 i)) x)"),
+            // After a divisor in parentheses, a factor written next to it multiplies.
+            ("p²/(2M) x", "(* (/ (^ p 2) (* 2 M)) x)"),
+            ("x/2*M", "(* (/ x 2) M)"),
+            ("(x/2)M", "(* (/ x 2) M)"),
         ];
         for (src, want) in cases {
             assert_eq!(sexp(&parse_expr(src).unwrap()), want, "{src}");
@@ -245,6 +249,18 @@ mod tests {
         ("x\n  + (y\n  * z", (3, 6),
             "expected ')' to close '(' opened at line 2, column 5, found end of input"),
         ("α +\n β ·\n\n", (2, 5), "expected an expression after '·', found end of input"),
+        // A factor written next to a divisor: `(p²/2)m` by the rules, `p²/(2m)` to a reader
+        // of physics; neither is guessed.
+        ("p_x^2/2m", (1, 7), "'/2m' is ambiguous: write '/(2m)' to divide by the product, \
+                              or '/2*m' to divide by 2 alone"),
+        ("1/2 M x", (1, 3), "'/2 M' is ambiguous: write '/(2 M)' to divide by the product, \
+                             or '/2*M' to divide by 2 alone"),
+        ("p²/2Mr²", (1, 4), "'/2Mr' is ambiguous: write '/(2Mr)' to divide by the product, \
+                             or '/2*Mr' to divide by 2 alone"),
+        ("x/2(y + 1)", (1, 3), "'/2(…)' is ambiguous: write '/(2(…))' to divide by the \
+                                product, or '/2*(…)' to divide by 2 alone"),
+        ("x/y^2 z", (1, 3), "'/y^2 z' is ambiguous: write '/(y^2 z)' to divide by the \
+                             product, or '/y^2*z' to divide by y^2 alone"),
     ];
 
     #[test]

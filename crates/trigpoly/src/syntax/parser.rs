@@ -184,6 +184,30 @@ impl Parser<'_> {
         ))
     }
 
+    /// Error for a factor written next to the divisor of a `/`, as in `p_x^2/2m`: the rules
+    /// read it as `(p_x^2/2)·m`, a reader of physics as `p_x^2/(2m)`, so neither is guessed.
+    fn ambiguous_division(&self, divisor: Span) -> ParseError {
+        let written = &self.src[divisor.start..self.tok.span.end];
+        let divisor_text = &self.src[divisor.start..divisor.end];
+        let next = match self.tok.tok {
+            Tok::Name(_) | Tok::Int(_) => &self.src[self.tok.span.start..self.tok.span.end],
+            _ => "…",
+        };
+        let span = divisor.to(self.tok.span);
+        let message = if next == "…" {
+            format!(
+                "'/{divisor_text}(…)' is ambiguous: write '/({divisor_text}(…))' to divide by \
+                 the product, or '/{divisor_text}*(…)' to divide by {divisor_text} alone"
+            )
+        } else {
+            format!(
+                "'/{written}' is ambiguous: write '/({written})' to divide by the product, or \
+                 '/{divisor_text}*{next}' to divide by {divisor_text} alone"
+            )
+        };
+        ParseError::new(span, message)
+    }
+
     /// Error for a missing `close` delimiter matching the opener at `open`.
     fn unclosed(&self, close: char, open: Span) -> ParseError {
         if self.tok.tok.starts_operand() {
@@ -231,11 +255,24 @@ impl Parser<'_> {
     fn expr(&mut self, min_bp: u8) -> PResult<Expr> {
         let mut lhs = self.prefix()?;
         let mut height = self.height;
+        // The divisor of a `/` just parsed at this level, while nothing else followed it.
+        let mut divisor: Option<Span> = None;
         while let Some(op) = self.operator(&mut lhs, &mut height, min_bp)? {
             if op.negative.is_some() {
                 return self.sum(lhs, height, op, min_bp);
             }
+            if let (Some(divisor), true) = (divisor, op.is_juxtaposition()) {
+                // A divisor in parentheses is plainly the whole divisor: `p²/(2M) x`.
+                let text = &self.src[divisor.start..divisor.end];
+                if !(text.starts_with('(') && text.ends_with(')')) {
+                    return Err(self.ambiguous_division(divisor));
+                }
+            }
             height = self.rhs(op, &mut lhs, height)?;
+            divisor = match &lhs.kind {
+                ExprKind::Div(_, d) => Some(d.span),
+                _ => None,
+            };
         }
         self.height = height;
         Ok(lhs)
@@ -526,6 +563,14 @@ struct BinOp {
     right_bp: u8,
     /// For `+` and `−`: whether it subtracts.
     negative: Option<bool>,
+}
+
+impl BinOp {
+    /// Whether this is the product of two factors written side by side (`2M`), which has no
+    /// token: its span is empty.
+    fn is_juxtaposition(&self) -> bool {
+        self.span.start == self.span.end
+    }
 }
 
 /// A term of a sum: its sign, the term, its height, and the operator before it (for the first,
