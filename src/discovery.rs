@@ -268,6 +268,26 @@ pub fn search_report(
         entries.push(Entry::Text(format!(
             "Parameters fixed for the linear algebra: `{fixed}`; {lift}."
         )));
+        if !(r.liftable && r.all_symbolic()) {
+            let names: Vec<&str> = r
+                .parameters
+                .iter()
+                .map(|(v, _)| vars.variable(*v).name())
+                .collect();
+            let others: Vec<String> = names
+                .iter()
+                .zip([2, 3, 5, 7, 11, 13, 17, 19].iter().cycle())
+                .map(|(n, p)| format!("{n}={p}"))
+                .collect();
+            entries.push(Entry::Text(format!(
+                "What is not lifted holds at these values, where the system may have more \
+                 symmetry than in general (equal values can make it isotropic): for every \
+                 value, keep them symbolic (`--symbolic {}`), or compare with other values \
+                 (`--fix {}`).",
+                names.join(","),
+                others.join(",")
+            )));
+        }
     }
     if let Some(names) = &symbolic {
         entries.push(Entry::Text(format!(

@@ -249,6 +249,8 @@ pub struct Fact {
     pub statement: String,
     /// Whether the engine found it to hold exactly.
     pub holds: bool,
+    /// For a bracket that does not hold, its value as the engine computed it.
+    pub found: Option<Expr>,
 }
 
 /// A proof for all `m, n` by the eigenfunction lemma.

@@ -99,7 +99,17 @@ pub fn run(job: &ClosureJob) -> anyhow::Result<bool> {
         let e = subject
             .parse(value.trim())
             .map_err(|e| anyhow!("--define {}: {e}", name.trim()))?;
+        if defined.iter().any(|(n, _)| n == name.trim()) {
+            bail!("--define gives {} twice", name.trim());
+        }
         defined.push((name.trim().to_string(), e));
+    }
+    if let Some((_, name)) = names
+        .iter()
+        .enumerate()
+        .find(|(k, n)| names[..*k].contains(n))
+    {
+        bail!("{name} is named twice among the generators");
     }
     let mut all: Vec<&str> = names.iter().map(String::as_str).collect();
     for (n, _) in &defined {

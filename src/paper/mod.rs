@@ -319,6 +319,7 @@ impl Item {
                         .map(|f| Fact {
                             statement: f.statement.clone(),
                             holds: f.holds,
+                            found: None,
                         })
                         .collect(),
                     lemma: p.lemma.clone(),

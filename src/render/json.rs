@@ -131,6 +131,7 @@ pub fn value(report: &Report, options: &Options) -> Value {
                         "facts": p.facts.iter().map(|f| json!({
                             "statement": f.statement,
                             "holds": f.holds,
+                            "found": f.found.as_ref().map(|e| e.render(Style::Ascii)),
                         })).collect::<Vec<_>>(),
                         "leibniz_check": p.leibniz_check,
                         "lemma": p.lemma,

@@ -308,8 +308,12 @@ fn proof(out: &mut Vec<String>, p: &ProofResult) {
     out.push(r"\begin{enumerate}".into());
     let mark = |ok: bool| if ok { "holds" } else { "FAILS" };
     for f in &p.facts {
+        let found = match &f.found {
+            Some(e) => format!(": the bracket is ${}$", e.render(Style::Latex)),
+            None => String::new(),
+        };
         out.push(format!(
-            r"\item computed: ${}$ --- {}",
+            r"\item computed: ${}$ --- {}{found}",
             math(&f.statement),
             mark(f.holds)
         ));

@@ -126,8 +126,12 @@ fn proof(p: &ProofResult) -> String {
     let mut lines = vec![format!("**Proof** {}:", p.title), String::new()];
     let mark = |ok: bool| if ok { "holds" } else { "FAILS" };
     for (k, f) in p.facts.iter().enumerate() {
+        let found = match &f.found {
+            Some(e) => format!(": the bracket is {}", code(&e.to_string())),
+            None => String::new(),
+        };
         lines.push(format!(
-            "{}. computed: {} — {}",
+            "{}. computed: {} — {}{found}",
             k + 1,
             code(&f.statement),
             mark(f.holds)

@@ -255,6 +255,13 @@ fn proof(out: &mut Vec<String>, p: &ProofResult) {
             // A long fact wraps, its mark after its last line.
             out.extend(wrap(&format!("{head}: {}", mark(*ok)), WRAP, "       "));
         }
+        if let Some(found) = p.facts.get(k).and_then(|f| f.found.as_ref()) {
+            out.extend(wrap(
+                &format!("       the bracket is {found}"),
+                WRAP,
+                "       ",
+            ));
+        }
     }
     out.extend(wrap(&format!("    Lemma: {}.", p.lemma), WRAP, "      "));
     let (label, closing) = p.closing();

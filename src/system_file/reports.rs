@@ -10,7 +10,7 @@ use trigpoly::Expr;
 
 use super::claims::{engine_error, parse_condition, CheckedClaim};
 use super::error::{ErrorKind, FileError};
-use super::scope::instance_of;
+use super::scope::{instance_of, rewrite_braces};
 use super::text::{Source, Text};
 use super::{Argument, LoadedSystem, COMMAND_LINE};
 use crate::report::{
@@ -254,10 +254,12 @@ pub fn table_report(file: &LoadedSystem, names: &[String]) -> Result<Report, Fil
         .skip(1)
         .map(|f| f.name.clone())
         .collect();
+    // An instance may be written `K_{2,3}` as well as `K_2_3`.
     let names: Vec<String> = if names.is_empty() {
         defined.clone()
     } else {
-        names.to_vec()
+        let braces = |n: &String| rewrite_braces(n, &file.families, &[]).trim().to_string();
+        names.iter().map(braces).collect()
     };
     if names.is_empty() {
         return Err(FileError::new(

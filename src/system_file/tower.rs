@@ -192,6 +192,7 @@ impl LoadedSystem {
         Ok(Fact {
             statement,
             holds: differs.is_none(),
+            found: None,
         })
     }
 
@@ -230,6 +231,7 @@ impl LoadedSystem {
             facts.push(Fact {
                 statement: format!("{{{name}, H}} = ({lambda}) {name}"),
                 holds,
+                found: (!holds).then_some(flow),
             });
             bases.push(base);
         }

@@ -1185,3 +1185,58 @@ fn a_condition_the_flow_leaves_is_refused() {
     );
     assert_eq!(out.status.code(), Some(0));
 }
+
+/// A search whose basis holds only at the fixed values says how to see the general case: the
+/// Garnier system at `a = b = 1` is isotropic and has `x p_y − y p_x`, which it loses for
+/// `a ≠ b`.
+#[test]
+fn an_unlifted_search_says_how_to_see_every_value() {
+    let file = crate::scratch_text(
+        "discovery",
+        "garnier.toml",
+        "name = \"Garnier\"\nhamiltonian = \"(p_x^2 + p_y^2)/2 + (x^2 + y^2)^2 + a*x^2 + b*y^2\"\n\
+         [phase_space]\ncoordinates = [\"x\", \"y\"]\nparameters = [\"a\", \"b\"]\n",
+    );
+    let file = file.to_str().expect("a path");
+    let degrees = [
+        "--momenta-degree",
+        "2",
+        "--positions-degree",
+        "4",
+        "--trig-degree",
+        "0",
+    ];
+    let search = |extra: &[&str]| {
+        let out = superint(&[&["search", file][..], &degrees, extra, &["--no-timings"]].concat());
+        assert_eq!(out.status.code(), Some(0));
+        normalize(&String::from_utf8(out.stdout).expect("UTF-8"))
+    };
+    let at_one = search(&[]);
+    assert!(at_one.contains("I2 = x p_y − y p_x"), "{at_one}");
+    assert!(
+        at_one.contains(
+            "keep them symbolic (--symbolic a,b), or compare with other values (--fix a=2,b=3)"
+        ),
+        "{at_one}"
+    );
+    let general = search(&["--symbolic", "a,b"]);
+    assert!(!general.contains("x p_y − y p_x"), "{general}");
+    assert!(!general.contains("keep them symbolic"), "{general}");
+}
+
+/// A generator named twice, or a definition given twice, is a mistake on the command line.
+#[test]
+fn closure_refuses_a_generator_named_twice() {
+    for (args, message) in [
+        (vec!["L", "L"], "L is named twice among the generators"),
+        (
+            vec!["L", "--define", "Q=x*p_y", "--define", "Q=x"],
+            "--define gives Q twice",
+        ),
+    ] {
+        let out = superint(&[&["closure", "systems/harmonic-rotor.toml"][..], &args].concat());
+        let stderr = String::from_utf8_lossy(&out.stderr);
+        assert_eq!(out.status.code(), Some(2), "{stderr}");
+        assert!(stderr.contains(message), "{stderr}");
+    }
+}

@@ -1553,3 +1553,67 @@ fn check_goes_on_past_a_bad_file() {
     let o = superint_in(root(), &["check", bad]);
     assert_eq!((o.status.code(), o.stdout.is_empty()), (Some(2), true));
 }
+
+/// `table` takes a family instance written with braces, as every other command does.
+#[test]
+fn table_takes_family_instances_in_braces() {
+    let f = "systems/anisotropic-3-5-rotor.toml";
+    let braces = run(&["table", f, "B_{1,1}", "H", "--no-timings"], 0);
+    let plain = run(&["table", f, "B_1_1", "H", "--no-timings"], 0);
+    assert_eq!(braces, plain);
+    assert!(
+        braces.contains("B_{1,1} │ 0             −2iω B_{1,1}"),
+        "{braces}"
+    );
+}
+
+/// A base fact of a tower's proof that fails shows what the bracket is, so that the mistake
+/// (here a sign: `{Ā, H} = −iω₁Ā`) can be read off.
+#[test]
+fn a_failed_base_fact_shows_the_bracket() {
+    let dir = scratch("failed-fact");
+    std::fs::write(
+        dir.join("sign.toml"),
+        "name = \"oscillator\"\nhamiltonian = \"(p_x^2 + p_y^2)/2 + (w1^2*x^2 + w2^2*y^2)/2\"\n\
+         [phase_space]\ncoordinates = [\"x\", \"y\"]\nparameters = [\"w1\", \"w2\"]\n\
+         [[function]]\nname = \"A\"\nvalue = \"p_x + i*w1*x\"\n\
+         [[function]]\nname = \"B\"\nvalue = \"p_y + i*w2*y\"\n\
+         [[family]]\nname = \"T\"\nvalue = \"conj(A)^m*B^n\"\neigenvalue = \"i*(n*w2 + m*w1)\"\n",
+    )
+    .expect("write sign.toml");
+    let o = superint_in(
+        &dir,
+        &[
+            "tower",
+            "--system",
+            "sign.toml",
+            "--max",
+            "1",
+            "--no-timings",
+        ],
+    );
+    assert_eq!(o.status.code(), Some(1));
+    let out = text(&o.stdout);
+    assert!(
+        out.contains(
+            "    1. computed: {conj(A), H} = (i w1) conj(A)                    FAILS\n       \
+             the bracket is −i w1 p_x − w1² x\n"
+        ),
+        "{out}"
+    );
+    let o = superint_in(
+        &dir,
+        &[
+            "tower",
+            "--system",
+            "sign.toml",
+            "--max",
+            "1",
+            "--format",
+            "json",
+        ],
+    );
+    let v: serde_json::Value = serde_json::from_slice(&o.stdout).expect("JSON");
+    assert_eq!(v["proofs"][0]["facts"][0]["found"], "-i*w1*p_x - w1^2*x");
+    assert_eq!(v["proofs"][0]["facts"][1]["found"], serde_json::Value::Null);
+}

@@ -432,7 +432,25 @@ impl<C: Coefficient> Lower<'_, C> {
                 Some(v) if self.vars.variable(v).kind() == VarKind::Angle => {
                     Angles(vec![(v, GaussianRational::from(1))])
                 }
-                Some(_) => return Err(bad(e.span)),
+                // A parameter may have been meant as a multiple (`cos(k*theta)`): the message
+                // says what a multiple must be.
+                Some(v) if self.vars.variable(v).kind() == VarKind::Parameter => {
+                    return Err(bad(e.span))
+                }
+                Some(v) => {
+                    let kind = match self.vars.variable(v).kind() {
+                        VarKind::Coordinate => "a coordinate",
+                        _ => "a momentum",
+                    };
+                    return Err(ParseError::new(
+                        e.span,
+                        format!(
+                            "'{n}' is {kind}, not an angle: cos, sin and exp(i…) take angles, \
+                             declared under `angles` in [phase_space] (of anything else they \
+                             are no polynomial)"
+                        ),
+                    ));
+                }
                 None => match self.split_angle_name(n) {
                     Some((Some(v), c)) => Angles(vec![(v, c)]),
                     Some((None, c)) => Constant(c),

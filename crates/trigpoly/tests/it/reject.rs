@@ -106,10 +106,12 @@ fn cases() -> Vec<Case> {
         case(
             Qi,
             "sin(x)",
-            "sin takes an integer combination of angles, such as sin(2*theta - phi)",
+            "'x' is a coordinate, not an angle: cos, sin and exp(i…) take angles, declared \
+             under `angles` in [phase_space] (of anything else they are no polynomial)",
             (1, 5),
-            "line 1, column 5: sin takes an integer combination of angles, such as \
-             sin(2*theta - phi)\n  sin(x)\n      ^",
+            "line 1, column 5: 'x' is a coordinate, not an angle: cos, sin and exp(i…) take \
+             angles, declared under `angles` in [phase_space] (of anything else they are no \
+             polynomial)\n  sin(x)\n      ^",
         ),
         case(
             Q,
@@ -240,10 +242,12 @@ fn cases() -> Vec<Case> {
         case(
             Qi,
             "cos(2*(theta - x))",
-            "cos takes an integer combination of angles, such as cos(2*theta - phi)",
+            "'x' is a coordinate, not an angle: cos, sin and exp(i…) take angles, declared \
+             under `angles` in [phase_space] (of anything else they are no polynomial)",
             (1, 16),
-            "line 1, column 16: cos takes an integer combination of angles, such as cos(2*theta - phi)\n  \
-             cos(2*(theta - x))\n                 ^",
+            "line 1, column 16: 'x' is a coordinate, not an angle: cos, sin and exp(i…) take \
+             angles, declared under `angles` in [phase_space] (of anything else they are no \
+             polynomial)\n  cos(2*(theta - x))\n                 ^",
         ),
         case(
             Qi,
