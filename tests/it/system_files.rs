@@ -1617,3 +1617,29 @@ fn a_failed_base_fact_shows_the_bracket() {
     assert_eq!(v["proofs"][0]["facts"][0]["found"], "-i*w1*p_x - w1^2*x");
     assert_eq!(v["proofs"][0]["facts"][1]["found"], serde_json::Value::Null);
 }
+
+/// A name or function misspelled only in case or underscores is pointed to the known one.
+#[test]
+fn misspelled_names_point_to_the_known_ones() {
+    let f = "systems/harmonic-rotor.toml";
+    for (expr, message) in [
+        (
+            "px*x",
+            "unknown name 'px'; did you mean 'p_x'? (known: x, y, theta, p_x,",
+        ),
+        ("OMEGA", "unknown name 'OMEGA'; did you mean 'omega'?"),
+        (
+            "Sin(theta)",
+            "unknown function 'Sin' (known: cos, sin, exp, conj, re, im); did you mean 'sin'?",
+        ),
+        (
+            "sqrt(x^2 + y^2)",
+            "(polar coordinates, as in systems/kepler.toml)",
+        ),
+    ] {
+        let o = superint_in(root(), &["expand", f, expr]);
+        let stderr = text(&o.stderr);
+        assert_eq!(o.status.code(), Some(2), "{stderr}");
+        assert!(stderr.contains(message), "{expr}: {stderr}");
+    }
+}

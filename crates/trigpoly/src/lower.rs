@@ -189,9 +189,13 @@ impl<C: Coefficient> Lower<'_, C> {
             .map(|v| self.vars.variable(v).name().to_string())
             .collect();
         known.extend(self.ctx.names());
+        let meant = match did_you_mean(name, &known) {
+            Some(k) => format!("; did you mean '{k}'?"),
+            None => String::new(),
+        };
         Err(ParseError::new(
             span,
-            format!("unknown name '{name}' (known: {})", known.join(", ")),
+            format!("unknown name '{name}'{meant} (known: {})", known.join(", ")),
         ))
     }
 
@@ -297,10 +301,24 @@ impl<C: Coefficient> Lower<'_, C> {
                     .map_err(at(span));
             }
             _ => {
+                let known = ["cos", "sin", "exp", "conj", "re", "im"].map(String::from);
+                let hint = match (did_you_mean(name, &known), name) {
+                    (Some(k), _) => format!("; did you mean '{k}'?"),
+                    (None, "sqrt") => "; expressions are polynomials in the variables, in cos \
+                         and sin of angles and in negative powers of single terms: a potential \
+                         such as 1/sqrt(x^2 + y^2) needs coordinates that make it one (polar \
+                         coordinates, as in systems/kepler.toml)"
+                        .to_string(),
+                    (None, "tan" | "log" | "ln" | "atan" | "arctan" | "abs") => "; expressions \
+                         are polynomials in the variables, in cos and sin of angles and in \
+                         negative powers of single terms"
+                        .to_string(),
+                    _ => String::new(),
+                };
                 return Err(ParseError::new(
                     name_span,
-                    format!("unknown function '{name}' (known: cos, sin, exp, conj, re, im)"),
-                ))
+                    format!("unknown function '{name}' (known: cos, sin, exp, conj, re, im){hint}"),
+                ));
             }
         };
         if args.len() != 1 {
@@ -545,4 +563,15 @@ fn split_into(name: &str, known: &dyn Fn(&str) -> bool) -> Option<Vec<String>> {
     }
     let mut out = Vec::new();
     (name.chars().count() > 1 && go(name, known, &mut out) && out.len() > 1).then_some(out)
+}
+
+/// The known name that `name` was probably meant to be: the same letters but for case and
+/// underscores (`px` for `p_x`, `Cos` for `cos`, `Omega` for `omega`), when there is one.
+fn did_you_mean<'k>(name: &str, known: &'k [String]) -> Option<&'k str> {
+    let key = |s: &str| s.replace('_', "").to_lowercase();
+    let wanted = key(name);
+    known
+        .iter()
+        .find(|k| k.as_str() != name && key(k) == wanted)
+        .map(String::as_str)
 }

@@ -111,6 +111,9 @@ impl<'a> Lexer<'a> {
                     self.pos += 1;
                     return Err(self.decimal_error(start));
                 }
+                if let Some(error) = self.exponent_notation(start) {
+                    return Err(error);
+                }
                 Tok::Int(digits.parse().expect("ASCII digits form an integer"))
             }
             '.' if self.peek().is_some_and(|c| c.is_ascii_digit()) => {
@@ -154,13 +157,51 @@ impl<'a> Lexer<'a> {
             }
             c => {
                 let span = Span::new(start, self.pos);
-                return Err(ParseError::new(span, format!("unexpected character {c:?}")));
+                let hint = match c {
+                    '½' | '⅓' | '⅔' | '¼' | '¾' | '⅕'..='⅞' => {
+                        "; write a fraction such as 1/2"
+                    }
+                    '⁄' => "; write '/'",
+                    '‐'..='―' => "; a dash is no minus sign: write '-' or '−'",
+                    '=' => {
+                        "; an expression has no '=' (a claim has one, a condition one per variable)"
+                    }
+                    _ => "",
+                };
+                return Err(ParseError::new(
+                    span,
+                    format!("unexpected character {c:?}{hint}"),
+                ));
             }
         };
         Ok(Token {
             tok,
             span: Span::new(start, self.pos),
         })
+    }
+
+    /// Error for a number written with an exponent, `1e3` or `2E-5`, whose digits end here.
+    fn exponent_notation(&mut self, start: usize) -> Option<ParseError> {
+        let rest = &self.src[self.pos..];
+        let after_e = rest.strip_prefix(['e', 'E'])?;
+        let digits = after_e.strip_prefix(['-', '+']).unwrap_or(after_e);
+        if !digits.starts_with(|c: char| c.is_ascii_digit()) {
+            return None;
+        }
+        self.pos = self.src.len() - digits.len();
+        self.eat_while(|c| c.is_ascii_digit());
+        let written = &self.src[start..self.pos];
+        let (number, name) = written.split_at(self.src.len() - rest.len() - start);
+        let power = format!(
+            "'{written}' is no number: write a power of ten as {number}*10^{}",
+            &name[1..]
+        );
+        let message = match digits.len() < after_e.len() {
+            // A sign after the e: only a power of ten was meant.
+            true => power,
+            false => format!("{power}, and a product with a name as {number}*{name}"),
+        };
+        Some(ParseError::new(Span::new(start, self.pos), message))
     }
 
     /// Error for a decimal number starting at `start`; consumes its remaining digits.

@@ -261,6 +261,14 @@ mod tests {
                                 product, or '/2*(…)' to divide by 2 alone"),
         ("x/y^2 z", (1, 3), "'/y^2 z' is ambiguous: write '/(y^2 z)' to divide by the \
                              product, or '/y^2*z' to divide by y^2 alone"),
+        // Characters pasted from print, with what to write instead.
+        ("½x", (1, 1), "unexpected character '½'; write a fraction such as 1/2"),
+        ("x – y", (1, 3), "unexpected character '–'; a dash is no minus sign: write '-' or '−'"),
+        ("1e3 x", (1, 1), "'1e3' is no number: write a power of ten as 1*10^3, and a product \
+                           with a name as 1*e3"),
+        ("x + 2E-5", (1, 5), "'2E-5' is no number: write a power of ten as 2*10^-5"),
+        ("sin^2 theta", (1, 4), "expected an angle or '(' after 'sin'; a power of sin is \
+                                 written sin²θ or sin(theta)^2, not sin^2 theta"),
     ];
 
     #[test]

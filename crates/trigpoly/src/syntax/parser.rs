@@ -459,9 +459,17 @@ impl Parser<'_> {
                 span: arg_span,
             } = self.bump()?
             else {
+                let at = self.prev.unwrap_or(span);
+                let hint = match &self.src[at.start..at.end] {
+                    "^" => format!(
+                        "; a power of {name} is written {name}²θ or {name}(theta)^2, not \
+                         {name}^2 theta"
+                    ),
+                    _ => String::new(),
+                };
                 return Err(ParseError::new(
-                    self.prev.unwrap_or(span),
-                    format!("expected an angle or '(' after '{name}'"),
+                    at,
+                    format!("expected an angle or '(' after '{name}'{hint}"),
                 ));
             };
             let arg = Expr::new(ExprKind::Name(arg), arg_span);

@@ -163,9 +163,21 @@ fn cases() -> Vec<Case> {
         case(
             Qi,
             "tan(theta)",
-            "unknown function 'tan' (known: cos, sin, exp, conj, re, im)",
+            "unknown function 'tan' (known: cos, sin, exp, conj, re, im); expressions are \
+             polynomials in the variables, in cos and sin of angles and in negative powers of \
+             single terms",
             (1, 1),
-            "line 1, column 1: unknown function 'tan' (known: cos, sin, exp, conj, re, im)\n  tan(theta)\n  ^^^",
+            "line 1, column 1: unknown function 'tan' (known: cos, sin, exp, conj, re, im); \
+             expressions are polynomials in the variables, in cos and sin of angles and in \
+             negative powers of single terms\n  tan(theta)\n  ^^^",
+        ),
+        case(
+            Qi,
+            "Cos(theta)",
+            "unknown function 'Cos' (known: cos, sin, exp, conj, re, im); did you mean 'cos'?",
+            (1, 1),
+            "line 1, column 1: unknown function 'Cos' (known: cos, sin, exp, conj, re, im); did \
+             you mean 'cos'?\n  Cos(theta)\n  ^^^",
         ),
         case(
             Qi,
