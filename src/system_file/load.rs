@@ -13,7 +13,7 @@ use trigpoly::{AlgebraError, Expr, Limits, VarSet, RESERVED};
 
 use super::claims::ClaimSpec;
 use super::error::{locate_bytes, ErrorKind, FileError};
-use super::model::SystemModel;
+use super::model::{FunctionModel, SystemModel};
 use super::scope::mention;
 use super::text::{Source, Text};
 use super::{Family, LimitsOverride, LoadedSystem, DEFAULT_MAX_DEGREE, DEFAULT_MAX_TERMS};
@@ -303,14 +303,32 @@ impl<'a> Builder<'a> {
                     "the Hamiltonian cannot use H itself",
                 ));
             }
-            scope.lower(&self.source, &h_text, &tree)?
+            scope.lower(&self.source, &h_text, &tree).map_err(|e| {
+                later_function(e, &model.function, |name| {
+                    format!(
+                        "{name} is a function, and the Hamiltonian is read before the \
+                         functions: it uses only variables and parameters, so write {name}'s \
+                         value out"
+                    )
+                })
+            })?
         };
         file.system.define("H", "H", h);
 
-        for f in &model.function {
+        for (k, f) in model.function.iter().enumerate() {
             let f = f.get_ref();
             self.declare(f.name.get_ref(), f.name.span(), "a function")?;
-            let value = file.scope(0).parse(&self.source, &self.text(&f.value))?;
+            let value = file
+                .scope(0)
+                .parse(&self.source, &self.text(&f.value))
+                .map_err(|e| {
+                    later_function(e, &model.function[k + 1..], |name| {
+                        format!(
+                            "{name} is declared further down, and a function uses only the \
+                             functions declared before it: move this one below {name}"
+                        )
+                    })
+                })?;
             let display = f.display.as_ref().unwrap_or(&f.name).get_ref();
             file.system.define(f.name.get_ref(), display, value);
         }
@@ -421,5 +439,23 @@ impl<'a> Builder<'a> {
             max_terms,
             max_degree,
         })
+    }
+}
+
+/// An unknown name that is one of the functions `later` (declared further down the file) gets
+/// the hint `hint(name)`.
+fn later_function(
+    e: FileError,
+    later: &[Spanned<FunctionModel>],
+    hint: impl Fn(&str) -> String,
+) -> FileError {
+    let name = e
+        .message
+        .strip_prefix("unknown name '")
+        .and_then(|rest| rest.split('\'').next())
+        .map(str::to_string);
+    match name.filter(|n| later.iter().any(|f| f.get_ref().name.get_ref() == n)) {
+        Some(name) => e.with_hint(hint(&name)),
+        None => e,
     }
 }

@@ -1643,3 +1643,32 @@ fn misspelled_names_point_to_the_known_ones() {
         assert!(stderr.contains(message), "{expr}: {stderr}");
     }
 }
+
+/// A function used before it is declared, or by the Hamiltonian, is named in the hint.
+#[test]
+fn a_function_used_too_early_is_explained() {
+    let dir = scratch("too-early");
+    let head = "name = \"t\"\n[phase_space]\ncoordinates = [\"x\"]\n";
+    for (h, functions, hint) in [
+        (
+            "p_x^2/2",
+            "[[function]]\nname = \"A\"\nvalue = \"B + 1\"\n[[function]]\nname = \"B\"\nvalue = \"x\"\n",
+            "hint: B is declared further down, and a function uses only the functions declared \
+             before it: move this one below B\n",
+        ),
+        (
+            "T + x^2",
+            "[[function]]\nname = \"T\"\nvalue = \"p_x^2/2\"\n",
+            "hint: T is a function, and the Hamiltonian is read before the functions: it uses \
+             only variables and parameters, so write T's value out\n",
+        ),
+    ] {
+        let file = format!("hamiltonian = \"{h}\"\n{head}{functions}");
+        std::fs::write(dir.join("early.toml"), file).expect("write early.toml");
+        let o = superint_in(&dir, &["check", "early.toml"]);
+        let stderr = text(&o.stderr);
+        assert_eq!(o.status.code(), Some(2), "{stderr}");
+        assert!(stderr.contains("unknown name"), "{stderr}");
+        assert!(stderr.ends_with(hint), "{stderr}");
+    }
+}

@@ -261,6 +261,10 @@ mod tests {
                                 product, or '/2*(…)' to divide by 2 alone"),
         ("x/y^2 z", (1, 3), "'/y^2 z' is ambiguous: write '/(y^2 z)' to divide by the \
                              product, or '/y^2*z' to divide by y^2 alone"),
+        ("cos θ² + 1", (1, 5), "'cos θ' followed by a power is ambiguous: write cos²θ or \
+                                cos(θ)^2 for the square of cos θ"),
+        ("sin theta^2", (1, 5), "'sin theta' followed by a power is ambiguous: write \
+                                 sin²theta or sin(theta)^2 for the square of sin theta"),
         // Characters pasted from print, with what to write instead.
         ("½x", (1, 1), "unexpected character '½'; write a fraction such as 1/2"),
         ("x – y", (1, 3), "unexpected character '–'; a dash is no minus sign: write '-' or '−'"),

@@ -472,6 +472,16 @@ impl Parser<'_> {
                     format!("expected an angle or '(' after '{name}'{hint}"),
                 ));
             };
+            // `cos θ²` could be (cos θ)² or cos(θ²): neither is guessed.
+            if power.is_none() && matches!(self.tok.tok, Tok::Sup { .. } | Tok::Caret) {
+                return Err(ParseError::new(
+                    arg_span.to(self.tok.span),
+                    format!(
+                        "'{name} {arg}' followed by a power is ambiguous: write {name}²{arg} or \
+                         {name}({arg})^2 for the square of {name} {arg}"
+                    ),
+                ));
+            }
             let arg = Expr::new(ExprKind::Name(arg), arg_span);
             Expr::new(ExprKind::Call(name, span, vec![arg]), span.to(arg_span))
         };
