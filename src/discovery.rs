@@ -457,7 +457,7 @@ pub fn search_report(
         file: None,
         entries,
     });
-    let when = cond.map(|c| format!(" at {c}")).unwrap_or_default();
+    let when = cond.map(|c| format!(" at `{c}`")).unwrap_or_default();
     Ok((
         Report {
             title: format!("Integrals of the {name}{when}"),
@@ -530,7 +530,8 @@ pub fn closure_report(
         .chain(c.relations.iter().map(|r| r.symbolic))
         .collect();
     let stuck = results.iter().filter(|&&s| unlifted(s)).count();
-    let gens = c.display.join(", ");
+    let gens: Vec<String> = c.display.iter().map(|g| format!("`{g}`")).collect();
+    let gens = gens.join(", ");
     let lift = match (c.parameters.is_empty(), stuck) {
         (true, _) => String::new(),
         (false, 0) => format!(
@@ -544,12 +545,12 @@ pub fn closure_report(
         ),
     };
     let mut entries = vec![Entry::Text(format!(
-        "Every bracket `{{G_a, G_b}}` of the generators `{gens}` written as a polynomial of \
+        "Every bracket `{{G_a, G_b}}` of the generators {gens} written as a polynomial of \
          degree `≤ {}` in them, by exact linear algebra on the {} monomials (their span has \
          dimension {}){lift}; each expansion checked by the engine.",
         c.degree, c.monomials, c.rank,
     ))];
-    let when = cond.clone().map(|c| format!(" at {c}")).unwrap_or_default();
+    let when = cond.clone().map(|c| format!(" at `{c}`")).unwrap_or_default();
     let table_at = match (stuck, &cond) {
         (0, _) => when.clone(),
         (_, Some(c)) => format!(" at {c}, {fixed}"),

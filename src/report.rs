@@ -12,7 +12,7 @@ use trigpoly::{Expr, Var, Vars};
 /// A whole report: a title, sections, and what its closing line summarises.
 #[derive(Clone, Debug)]
 pub struct Report {
-    /// The report's title.
+    /// The report's title, in markup: prose with mathematics between backticks.
     pub title: String,
     /// A subtitle (the paper it checks), possibly empty.
     pub subtitle: String,
@@ -69,7 +69,7 @@ impl Expect {
 pub struct Section {
     /// The section's number: the paper's (2 to 5), or its place in the report.
     pub number: u32,
-    /// The title.
+    /// The title, in markup: prose with mathematics between backticks.
     pub title: String,
     /// The system file the section is about, as named on the command line (`-` read as
     /// `<stdin>`), if it is about one.
@@ -81,7 +81,7 @@ pub struct Section {
 /// One item of a section, computed.
 #[derive(Clone, Debug)]
 pub enum Entry {
-    /// A sub-heading.
+    /// A sub-heading, in markup.
     Heading(String),
     /// A paragraph in markup: plain prose with mathematics between backticks
     /// (`` the rotor adds `p_θ²/(2I)` ``).

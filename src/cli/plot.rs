@@ -123,10 +123,18 @@ impl MethodArg {
     }
 }
 
-/// `--time`: a finite positive number of time units.
+/// `--time`: a finite positive number of time units, as a decimal (`0.5`) or a fraction
+/// (`1/2`, the way `--at` and `--from` take numbers).
 fn positive_time(s: &str) -> Result<f64, String> {
-    match s.trim().parse::<f64>() {
-        Ok(t) if t.is_finite() && t > 0.0 => Ok(t),
+    let t = match s.trim().split_once('/') {
+        Some((num, den)) => match (num.trim().parse::<f64>(), den.trim().parse::<f64>()) {
+            (Ok(num), Ok(den)) => num / den,
+            _ => f64::NAN,
+        },
+        None => s.trim().parse::<f64>().unwrap_or(f64::NAN),
+    };
+    match t {
+        t if t.is_finite() && t > 0.0 => Ok(t),
         _ => Err(format!("{s} is not a positive number of time units")),
     }
 }

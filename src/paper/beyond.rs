@@ -80,7 +80,7 @@ pub(crate) fn section() -> Result<Section, EngineError> {
 /// C27: `V_I = α(x² + y²) + β/x² + γ/y²` and `V_II = α(x² + 4y²) + β/x² + γy` (Laurent in
 /// `x, y`) keep their second-order integrals when coupled to the rotor.
 fn planar_limits(s: &mut SectionBuilder) -> Result<(), EngineError> {
-    s.heading("The planar limits V_I and V_II");
+    s.heading("The planar limits `V_I` and `V_II`");
     s.text(
         "Two of the four second-order superintegrable planar potentials, Laurent in `x, y`, \
          coupled to the rotor: each keeps its two second-order integrals.",

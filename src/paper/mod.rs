@@ -244,11 +244,11 @@ pub fn tower_report(
         entries.extend(item.compute(progress)?);
     }
     Ok(Report {
-        title: format!("The tower of resonant integrals, 1 ≤ m, n ≤ {max}"),
+        title: format!("The tower of resonant integrals, `1 ≤ m, n ≤ {max}`"),
         subtitle: String::new(),
         sections: vec![ReportSection {
             number: if which == TowerSystem::Harmonic { 3 } else { 4 },
-            title: format!("{{{k}_{{m,n}}, H}} for the {}", system.name()),
+            title: format!("`{{{k}_{{m,n}}, H}}` for the {}", system.name()),
             file: None,
             entries,
         }],

@@ -47,7 +47,7 @@
 use serde_json::{json, Value};
 use trigpoly::{Expr, Style, VarKind};
 
-use super::Options;
+use super::{plain, Options};
 use crate::report::{ClaimKind, ClaimResult, Entry, RankResult, Report};
 use brackets::UpperBound;
 
@@ -151,7 +151,7 @@ pub fn value(report: &Report, options: &Options) -> Value {
     let proved = ids.iter().filter(|(_, ok)| *ok).count();
     json!({
         "schema": SCHEMA,
-        "title": report.title,
+        "title": plain(&report.title),
         "subtitle": report.subtitle,
         "summary": {
             "claims": ids.len(),
@@ -165,7 +165,7 @@ pub fn value(report: &Report, options: &Options) -> Value {
         },
         "sections": report.sections.iter().map(|s| json!({
             "number": s.number,
-            "title": s.title,
+            "title": plain(&s.title),
             "file": s.file,
         })).collect::<Vec<_>>(),
         "claims": claims,

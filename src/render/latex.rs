@@ -21,7 +21,7 @@ pub fn render(report: &Report, options: &Options) -> String {
         r"\setlength{\emergencystretch}{3em}".into(),
         r"\begin{document}".into(),
         r"\begin{center}".into(),
-        format!(r"{{\Large\bfseries {}}}", text(&report.title)),
+        format!(r"{{\Large\bfseries {}}}", markup(&report.title)),
     ];
     if !report.subtitle.is_empty() {
         out.push(format!(r"\\[1ex] {}", text(&report.subtitle)));
@@ -30,7 +30,7 @@ pub fn render(report: &Report, options: &Options) -> String {
     for s in &report.sections {
         out.push(String::new());
         // A title may end with a file's path, which breaks after its slashes.
-        let title = text(&s.title).replace('/', r"/\allowbreak{}");
+        let title = markup(&s.title).replace('/', r"/\allowbreak{}");
         out.push(format!(r"\section*{{{}\quad {title}}}", s.number));
         let mut rows: Vec<String> = Vec::new();
         for e in &s.entries {
@@ -195,7 +195,7 @@ fn claim_rows(c: &ClaimResult) -> Vec<String> {
 
 fn entry(out: &mut Vec<String>, e: &Entry) {
     match e {
-        Entry::Heading(h) => out.push(format!(r"\subsection*{{{}}}", text(h))),
+        Entry::Heading(h) => out.push(format!(r"\subsection*{{{}}}", markup(h))),
         Entry::Text(t) => {
             out.push(markup(t));
             out.push(String::new());

@@ -282,7 +282,20 @@ fn translate(s: &str) -> String {
     for (k, t) in toks.iter().enumerate() {
         match t {
             Tok::Word(w, d) => {
-                prose[k] = d.is_empty() && is_prose_word(w) && !scripts.contains(&true);
+                // A word is prose only between spaces or punctuation: `in` in `exp(−inθ)` is
+                // the product i·n.
+                let before = k.checked_sub(1).map(|j| &toks[j]);
+                let apart_before =
+                    matches!(before, None | Some(Tok::Space | Tok::Char('(' | '[', _)));
+                let apart_after = matches!(
+                    toks.get(k + 1),
+                    None | Some(Tok::Space | Tok::Char(',' | '.' | ':' | ';' | ')' | ']', _))
+                );
+                prose[k] = d.is_empty()
+                    && is_prose_word(w)
+                    && !scripts.contains(&true)
+                    && apart_before
+                    && apart_after;
             }
             Tok::Char('{', _) => {
                 let script = k > 0 && matches!(toks[k - 1], Tok::Char('_' | '^', _));
@@ -623,6 +636,7 @@ mod tests {
             ("x₀", "x_{0}"),
             ("ω⁻¹²", r"\omega ^{-12}"),
             ("e^{−inθ} for all", r"e^{-in\theta }\ \text{for all}"),
+            ("exp(−inθ)", r"\exp (-in\theta )"),
             (
                 "Re(A_x⁵Ā_y³)",
                 r"\operatorname{Re}(A_{x}^{5}\bar{A}_{y}^{3})",

@@ -18,13 +18,13 @@ const WRAP: usize = 96;
 /// Renders a report as text.
 pub fn render(report: &Report, options: &Options) -> String {
     let mut out = Vec::<String>::new();
-    out.push(report.title.clone());
+    out.push(plain(&report.title));
     if !report.subtitle.is_empty() {
         out.extend(wrap(&report.subtitle, WRAP, ""));
     }
     for s in &report.sections {
         out.push(String::new());
-        let heading = format!("{}  {}", s.number, s.title);
+        let heading = format!("{}  {}", s.number, plain(&s.title));
         out.push(heading.clone());
         out.push("═".repeat(width(&heading)));
         // Entries are blocks separated by a blank line, except that consecutive claims form
@@ -52,8 +52,9 @@ pub fn render(report: &Report, options: &Options) -> String {
 fn entry(out: &mut Vec<String>, e: &Entry) {
     match e {
         Entry::Heading(h) => {
-            out.push(h.clone());
-            out.push("─".repeat(width(h)));
+            let h = plain(h);
+            out.push("─".repeat(width(&h)));
+            out.insert(out.len() - 1, h);
         }
         Entry::Text(t) => out.extend(wrap(&plain(t), WRAP, "")),
         Entry::Equations(eq) => equations(out, eq),

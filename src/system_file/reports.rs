@@ -167,7 +167,7 @@ pub fn bracket_report(
     let lhs = format!("{{{fname}, {gname}}}");
     let entry = equations_at(condition.as_ref(), vec![(lhs.clone(), value)])?;
     Ok(file.one_entry(
-        format!("{lhs} for {}", file.the_name()),
+        format!("`{lhs}` for {}", file.the_name()),
         entry,
         SummaryKind::Computed,
         start,
@@ -195,7 +195,7 @@ pub fn expand_report(
     let names: Vec<&str> = lines.iter().map(|(name, _)| name.as_str()).collect();
     let title = format!(
         "{} in normal form, for {}",
-        names.join(", "),
+        names.iter().map(|n| format!("`{n}`")).collect::<Vec<_>>().join(", "),
         file.the_name()
     );
     let entry = equations_at(condition.as_ref(), lines)?;

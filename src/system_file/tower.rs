@@ -377,11 +377,11 @@ pub fn family_tower_report(
         proof,
     ];
     Ok(Report {
-        title: format!("The tower of {kmn}, 1 ≤ {m}, {n} ≤ {max}"),
+        title: format!("The tower of `{kmn}`, `1 ≤ {m}, {n} ≤ {max}`"),
         subtitle: file.source.origin.clone(),
         sections: vec![Section {
             number: 1,
-            title: format!("{{{kmn}, H}} for {}", file.the_name()),
+            title: format!("`{{{kmn}, H}}` for {}", file.the_name()),
             file: Some(file.source.origin.clone()),
             entries,
         }],

@@ -767,6 +767,10 @@ fn cli_plot_bad_arguments_exit_2_with_a_message() {
             "invalid value '0' for '--time <T>': 0 is not a positive number of time units",
         ),
         (
+            vec!["L", "--at", at, "--from", full, "--time", "1/0"],
+            "invalid value '1/0' for '--time <T>': 1/0 is not a positive number of time units",
+        ),
+        (
             vec!["L", "--at", "M = 1, theta = 1", "--from", full],
             "<command line>:1:8: --at gives the parameters their values; θ is an angle (give it \
              with --from)",
@@ -1080,4 +1084,33 @@ fn cli_readme_excerpt_is_the_default_jobs_output() {
     let excerpt = &readme[start..start + readme[start..].find("```").expect("its end")];
     let out = run(&["--no-timings"], 0);
     assert!(out.contains(excerpt), "{excerpt}\nnot in\n{out}");
+}
+
+/// `--time` takes a fraction as `--at` and `--from` take numbers, and a decimal: the same.
+#[test]
+fn cli_plot_time_takes_a_fraction() {
+    let svg = scratch_file("half.svg");
+    let json = |time: &str| {
+        let args = [
+            "plot",
+            "systems/henon-heiles.toml",
+            "p_y",
+            "--at",
+            "A = 1, B = 1, C = -1/3",
+            "--from",
+            "x = 0, y = 1/10, p_x = 2/5, p_y = 0",
+            "--time",
+            time,
+            "--steps",
+            "50",
+            "-o",
+            svg.to_str().unwrap(),
+            "--format",
+            "json",
+        ];
+        serde_json::from_str::<Value>(&run(&args, 0)).expect("JSON")
+    };
+    let half = json("1/2");
+    assert_eq!(half, json("0.5"));
+    assert_eq!(half["time"], 0.5);
 }
