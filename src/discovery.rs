@@ -550,7 +550,10 @@ pub fn closure_report(
          dimension {}){lift}; each expansion checked by the engine.",
         c.degree, c.monomials, c.rank,
     ))];
-    let when = cond.clone().map(|c| format!(" at `{c}`")).unwrap_or_default();
+    let when = cond
+        .clone()
+        .map(|c| format!(" at `{c}`"))
+        .unwrap_or_default();
     let table_at = match (stuck, &cond) {
         (0, _) => when.clone(),
         (_, Some(c)) => format!(" at {c}, {fixed}"),
@@ -567,16 +570,51 @@ pub fn closure_report(
             c.degree
         )));
     } else {
-        let pairs: Vec<String> = outside
-            .iter()
-            .map(|&(a, b)| format!("`{{{}, {}}}`", c.display[a], c.display[b]))
-            .collect();
+        // A generator that is no integral has brackets with no reason to close among
+        // integrals; what search finds closes a table of integrals.
+        let h = system.hamiltonian();
+        let mut moving = Vec::new();
+        for (g, (_, display, e)) in generators.iter().enumerate() {
+            let flow = system.bracket(e, h)?;
+            let flow = match &options.condition {
+                Some(cond) => cond.apply(&flow)?,
+                None => flow,
+            };
+            if !flow.is_zero() && outside.iter().any(|&(a, b)| a == g || b == g) {
+                moving.push(format!("`{display}`"));
+            }
+        }
+        let advice = match moving.len() {
+            0 => "Add what `superint search` finds to close the table.".to_string(),
+            1 => format!(
+                "{} is no integral (its bracket with `H` is not zero{when}), so its brackets \
+                 need not close among the others.",
+                moving[0]
+            ),
+            _ => format!(
+                "{} are no integrals (their brackets with `H` are not zero{when}), so their \
+                 brackets need not close among the others.",
+                moving.join(", ")
+            ),
+        };
         entries.push(Entry::Text(format!(
-            "Not a polynomial of degree `≤ {}` in the generators (shown as expressions): {}. \
-             Add what `superint search` finds to close the table.",
-            c.degree,
-            pairs.join(", ")
+            "The brackets marked `*` are no polynomials of degree `≤ {}` in the generators; \
+             here they are. {advice}",
+            c.degree
         )));
+        entries.push(Entry::Equations(Equations {
+            caption: String::new(),
+            lines: outside
+                .iter()
+                .map(|&(a, b)| {
+                    let Bracket::Outside { bracket } = &c.brackets[a][b] else {
+                        unreachable!("outside() lists the brackets outside")
+                    };
+                    let lhs = format!("{{{}, {}}}", c.display[a], c.display[b]);
+                    Equation::new(&lhs, bracket.clone())
+                })
+                .collect(),
+        }));
     }
     let r = c.names.len();
     let mut shown = 0;

@@ -195,7 +195,11 @@ pub fn expand_report(
     let names: Vec<&str> = lines.iter().map(|(name, _)| name.as_str()).collect();
     let title = format!(
         "{} in normal form, for {}",
-        names.iter().map(|n| format!("`{n}`")).collect::<Vec<_>>().join(", "),
+        names
+            .iter()
+            .map(|n| format!("`{n}`"))
+            .collect::<Vec<_>>()
+            .join(", "),
         file.the_name()
     );
     let entry = equations_at(condition.as_ref(), lines)?;

@@ -437,8 +437,10 @@ fn harmonic_1_1_closure() {
     expect(
         "h11-closure",
         &[
-            "Not a polynomial of degree ≤ 2 in the generators (shown as expressions): \
-             {G1, P_1_1}, {G1, Q_1_1}, {G2, P_1_1}, {G2, Q_1_1}.",
+            "The brackets marked * are no polynomials of degree ≤ 2 in the generators; here \
+             they are. Add what superint search finds to close the table.",
+            "{G1, P_1_1} = (ω p_x/2 + Mω²y/2) cos θ + (−ω p_y/2 + Mω²x/2) sin θ",
+            "{G2, Q_1_1} = (−ω p_x − Mω²y) cos θ + (ω p_y − Mω²x) sin θ",
             "{F2, P_1_1} = −ω Q_1_1",
             "{L, P_1_1} = Q_1_1",
             "{P_1_1, Q_1_1} = −2Mω",
@@ -1239,4 +1241,30 @@ fn closure_refuses_a_generator_named_twice() {
         assert_eq!(out.status.code(), Some(2), "{stderr}");
         assert!(stderr.contains(message), "{stderr}");
     }
+}
+
+/// A closure whose brackets leave the polynomials of the degree marks them `*` in the table and
+/// gives them apart, and says which generator is no integral: with `L` on the
+/// Smorodinsky–Winternitz system (`{L, H} ≠ 0` there), the table cannot close.
+#[test]
+fn a_closure_with_a_generator_that_is_no_integral_says_so() {
+    let out = superint(&[
+        "closure",
+        "systems/smorodinsky-winternitz-i.toml",
+        "H",
+        "Hx",
+        "L",
+        "--no-timings",
+    ]);
+    assert_eq!(out.status.code(), Some(0));
+    let out = String::from_utf8(out.stdout).expect("UTF-8");
+    assert!(out.contains("    L     │ *   *     0\n"), "{out}");
+    assert!(
+        normalize(&out).contains(
+            "L is no integral (its bracket with H is not zero), so its brackets need not close \
+             among the others."
+        ),
+        "{out}"
+    );
+    assert!(out.contains("    {H, L}   = −2γx/y³ + 2βy/x³\n"), "{out}");
 }

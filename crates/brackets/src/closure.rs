@@ -154,7 +154,8 @@ impl Closure {
         }
     }
 
-    /// The structure table as a [`BracketTable`], for printing.
+    /// The structure table as a [`BracketTable`], for printing: a bracket outside the
+    /// polynomials of the degree is [`Entry::Outside`], given apart by [`Closure::outside`].
     pub fn table(&self) -> BracketTable {
         BracketTable {
             names: self.names.clone(),
@@ -169,7 +170,7 @@ impl Closure {
                                 Entry::Combination(Vec::new())
                             }
                             Bracket::Polynomial { poly, .. } => Entry::Expression(poly.clone()),
-                            Bracket::Outside { bracket } => Entry::Expression(bracket.clone()),
+                            Bracket::Outside { .. } => Entry::Outside,
                         })
                         .collect()
                 })

@@ -17,6 +17,9 @@ pub enum Entry {
     Combination(Vec<(Expr, FunctionName)>),
     /// No such combination: the bracket itself, in normal form.
     Expression(Expr),
+    /// Outside what the table writes (a closure's bracket that is no polynomial of the degree
+    /// in the generators): shown as `*`, the bracket given apart.
+    Outside,
 }
 
 /// A function of a table by name: the system's name, which reads back (`G1p`), and the name
@@ -99,6 +102,7 @@ impl Entry {
                 Entry::Combination(terms.iter().map(|(c, name)| (-c, name.clone())).collect())
             }
             Entry::Expression(e) => Entry::Expression(-e),
+            Entry::Outside => Entry::Outside,
         }
     }
 
@@ -106,6 +110,7 @@ impl Entry {
     pub fn render(&self, style: Style) -> String {
         match self {
             Entry::Expression(e) => e.render(style),
+            Entry::Outside => "*".into(),
             Entry::Combination(terms) if terms.is_empty() => "0".into(),
             Entry::Combination(terms) => {
                 let mut out = String::new();
