@@ -227,13 +227,19 @@ impl LoadedSystem {
                     },
                     _ => None,
                 };
+                // Any other power of it takes the angle in parentheses: `cos θ⁻¹` and
+                // `cos θ^(3²)` would read as ambiguous.
+                let base_text = match trig_of_angle {
+                    Some((f, angle)) => format!("{f}({angle})"),
+                    None => base.text.clone(),
+                };
                 let text = match (exponent, trig_of_angle) {
                     (Some(e), Some((f, angle))) if !e.starts_with('⁻') => {
                         format!("{f}{e}{angle}")
                     }
-                    (Some(e), _) => format!("{}{e}", base.text),
+                    (Some(e), _) => format!("{base_text}{e}"),
                     (None, _) => {
-                        format!("{}^{}", base.text, self.print(b, spaced).wrapped(ATOM).text)
+                        format!("{base_text}^{}", self.print(b, spaced).wrapped(ATOM).text)
                     }
                 };
                 Printed {

@@ -1269,6 +1269,7 @@ fn family_instances_before_parentheses_and_trigonometric_echoes() {
         "K_1_1 (x) - x*K_1_1",
         "K_{1,1}(x) - K_1_1*x",
         "cos(theta)^2 + sin(theta)*x - cos²θ - x sin θ",
+        "sin(theta)^3^2 - sin(theta)^9",
     ];
     let o = superint_in(
         &dir,
@@ -1280,10 +1281,15 @@ fn family_instances_before_parentheses_and_trigonometric_echoes() {
         "K_{1,1}(x) − x K_{1,1} ",
         "K_{1,1}(x) − K_{1,1} x ",
         "cos²θ + sin θ x − cos²θ − x sin θ = 0",
+        // Another power takes the angle in parentheses: `sin θ^(3²)` reads as ambiguous.
+        "sin(θ)^(3²) − sin⁹θ ",
     ] {
         assert!(out.contains(echo), "{echo:?} in {out}");
     }
-    assert_eq!(out.matches("= 0\n").count(), 3, "{out}");
+    assert_eq!(out.matches("= 0\n").count(), 4, "{out}");
+    let echo = "sin(θ)^(3²) − sin⁹θ";
+    let o = superint_in(&dir, &["expand", "k.toml", echo, "--no-timings"]);
+    assert_eq!(o.status.code(), Some(0), "{}", text(&o.stderr));
 }
 
 /// `bracket` takes expressions that begin with a minus sign as they are (they were refused as
