@@ -302,8 +302,13 @@ pub fn search_report(
         .enumerate()
         .map(|(j, d)| format!("`≤ {j}`: {d}"))
         .collect();
+    let over = match &symbolic {
+        // With symbolic parameters the space is over Q, and `M·I` counts apart from `I`.
+        Some(_) => " over Q (a parameter's multiple of an integral counts apart from it)",
+        None => "",
+    };
     entries.push(Entry::Text(format!(
-        "Dimension of the space of integrals: {}. By degree in the momenta: {}.",
+        "Dimension of the space of integrals{over}: {}. By degree in the momenta: {}.",
         r.basis.len(),
         by_degree.join(", ")
     )));

@@ -1224,6 +1224,13 @@ fn an_unlifted_search_says_how_to_see_every_value() {
     let general = search(&["--symbolic", "a,b"]);
     assert!(!general.contains("x p_y − y p_x"), "{general}");
     assert!(!general.contains("keep them symbolic"), "{general}");
+    assert!(
+        general.contains(
+            "Dimension of the space of integrals over Q (a parameter's multiple of an integral \
+             counts apart from it):"
+        ),
+        "{general}"
+    );
 }
 
 /// A generator named twice, or a definition given twice, is a mistake on the command line.
