@@ -281,18 +281,11 @@ fn cli_latex_of_every_command_compiles() {
         vec!["tower", "--max", "2", "--system", rotor, "--family", "K"],
         vec!["table", "systems/gravity-rotor.toml", "Lp", "G1p", "G2p"],
         vec!["bracket", rotor, "K_1_2", "H"],
-        vec![
-            "search",
-            rotor,
-            "--when",
-            "p_theta = I*omega",
-            "--momenta-degree",
-            "1",
-            "--positions-degree",
-            "1",
-            "--trig-degree",
-            "1",
-        ],
+        [
+            &["search", rotor, "--when", "p_theta = I*omega"][..],
+            &crate::DEGREE_ONE,
+        ]
+        .concat(),
     ] {
         let mut args = args;
         args.extend(["--format", "latex", "--no-timings"]);

@@ -9,6 +9,8 @@ use brackets::search::{search, SearchOptions, SearchSpace};
 use superint::system_file::{load, LimitsOverride};
 use trigpoly::{Expr, Rational};
 
+use crate::DEGREE_ONE;
+
 /// Every command of `docs/results.md`, by name.
 const COMMANDS: &[(&str, &str)] = &[
     (
@@ -874,16 +876,6 @@ fn kepler_laplace_runge_lenz_and_nothing_else() {
         ],
     );
 }
-
-/// The search space of degree 1 in the momenta and the positions and trigonometric order 1.
-const DEGREE_ONE: [&str; 6] = [
-    "--momenta-degree",
-    "1",
-    "--positions-degree",
-    "1",
-    "--trig-degree",
-    "1",
-];
 
 /// An angle's momentum is left out of the space only when the condition fixes it: without a
 /// condition, `p_θ` is an integral of the harmonic rotor that the search finds.

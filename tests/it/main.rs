@@ -107,3 +107,13 @@ mod claims;
 mod cli;
 mod discovery;
 mod system_files;
+
+/// The search space of degree 1 in the momenta and the positions and trigonometric order 1.
+pub const DEGREE_ONE: [&str; 6] = [
+    "--momenta-degree",
+    "1",
+    "--positions-degree",
+    "1",
+    "--trig-degree",
+    "1",
+];
