@@ -168,27 +168,43 @@ fn claim_rows(c: &ClaimResult) -> Vec<String> {
         Some(cond) => format!(r"\quad\text{{at }} {}", math(cond)),
         None => String::new(),
     };
-    let mut rows = vec![format!(
-        r"{}{cond} && \text{{[{} {}]}}",
-        aligned(&c.statement),
+    // A long statement breaks at its sums' signs, the verdict after its last line (moved
+    // below it by amsmath when the line has no room).
+    let mut rows: Vec<String> = match relation(&c.statement) {
+        Some(k) => {
+            let lhs = math(&c.statement[..k]);
+            split_sum(&math(&c.statement[k..]), ROW)
+                .into_iter()
+                .enumerate()
+                .map(|(j, piece)| match j {
+                    0 => format!("{lhs} &{piece}"),
+                    _ => format!(r"&\quad {piece}"),
+                })
+                .collect()
+        }
+        None => vec![aligned(&c.statement)],
+    };
+    let last = rows.last_mut().expect("a row");
+    last.push_str(&format!(
+        r"{cond} \tag*{{[{} {}]}}",
         text(&c.id),
         text(verdict(c))
-    )];
+    ));
     if let Some(r) = &c.residual {
-        rows.extend(long_rows(r"\text{residual}", "=", r, " &&", CLAIM_ROW));
+        rows.extend(long_rows(r"\text{residual}", "=", r, "", CLAIM_ROW));
     }
     if let (ClaimKind::Nonvanishing, Some(w)) = (c.kind, &c.witness) {
         if visual_width(&w.render(Style::Latex)) <= 3 * CLAIM_ROW {
-            rows.extend(long_rows("", r"\text{it equals}", w, " &&", CLAIM_ROW));
+            rows.extend(long_rows("", r"\text{it equals}", w, "", CLAIM_ROW));
         } else {
             rows.push(format!(
-                r"&\text{{it is a nonzero sum of {} terms}} &&",
+                r"&\text{{it is a nonzero sum of {} terms}}",
                 w.len()
             ));
         }
     }
     if let Some(n) = &c.note {
-        rows.push(format!(r"&\text{{{}}} &&", text(n)));
+        rows.push(format!(r"&\text{{{}}}", text(n)));
     }
     rows
 }

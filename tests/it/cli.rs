@@ -194,7 +194,7 @@ fn cli_latex_is_a_complete_valid_document() {
     assert!(doc.contains("\\begin{document}"));
     assert!(doc.trim_end().ends_with("\\end{document}"));
     assert!(doc.contains("\\begin{align*}") && doc.contains("\\begin{array}"));
-    assert!(doc.contains(r"\{L, G_{1}\} &= -G_{2} && \text{[C09 proved]}"));
+    assert!(doc.contains(r"\{L, G_{1}\} &= -G_{2} \tag*{[C09 proved]}"));
     assert!(doc.is_ascii(), "LaTeX output is ASCII");
     assert_balanced_latex(&doc);
     compile_if_possible(&doc);

@@ -633,7 +633,7 @@ fn check_every_format_renders() {
     let tex = run(&["check", file, "--format", "latex", "--no-timings"], 0);
     assert!(tex.starts_with("\\documentclass{article}") && tex.is_ascii());
     assert!(
-        tex.contains(r"\text{[false-sign refuted, as expected]}"),
+        tex.contains(r"\tag*{[false-sign refuted, as expected]}"),
         "{tex}"
     );
     let txt = run(&["check", file, "--no-timings"], 0);
