@@ -197,7 +197,7 @@ fn cli_latex_is_a_complete_valid_document() {
     assert!(doc.contains(r"\{L, G_{1}\} &= -G_{2} \tag*{[C09 proved]}"));
     assert!(doc.is_ascii(), "LaTeX output is ASCII");
     assert_balanced_latex(&doc);
-    compile_if_possible(&doc);
+    compile_within(&doc, 1.0);
 }
 
 /// Whether `pdflatex` is installed; CI installs it and sets `SUPERINT_REQUIRE_PDFLATEX`, so that
@@ -216,10 +216,6 @@ fn pdflatex_available() -> bool {
 
 /// Compiles with `pdflatex` when it is installed (CI installs it), and fails on an error or on
 /// a line set wider than the page by more than `slack_pt` points.
-fn compile_if_possible(doc: &str) {
-    compile_within(doc, f64::INFINITY);
-}
-
 fn compile_within(doc: &str, slack_pt: f64) {
     if !pdflatex_available() {
         return;
@@ -280,6 +276,7 @@ fn cli_latex_of_every_command_compiles() {
         ],
         vec!["tower", "--max", "2", "--system", rotor, "--family", "K"],
         vec!["table", "systems/gravity-rotor.toml", "Lp", "G1p", "G2p"],
+        vec!["table", "systems/gravity-rotor.toml"],
         vec!["bracket", rotor, "K_1_2", "H"],
         [
             &["search", rotor, "--when", "p_theta = I*omega"][..],
@@ -304,10 +301,12 @@ fn cli_latex_of_every_command_compiles() {
     assert_eq!(out.status.code(), Some(1), "{}", stderr(&out));
     docs.push(stdout(&out));
     let _ = std::fs::remove_dir_all(&dir);
+    // Nothing runs far off the page: a wide table is a list, a long claim breaks and its
+    // verdict moves below it (a table ran 980 pt too wide).
     for doc in &docs {
         assert!(doc.is_ascii(), "LaTeX output is ASCII");
         assert_balanced_latex(doc);
-        compile_if_possible(doc);
+        compile_within(doc, 60.0);
     }
 }
 
