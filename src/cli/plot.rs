@@ -538,13 +538,20 @@ fn json(title: &str, args: &PlotArgs, orbits: &[Orbit], section: Option<&str>) -
         })
         .collect();
     let points: Vec<usize> = orbits.iter().map(|o| o.times.len()).collect();
+    let drift: Vec<f64> = orbits.iter().map(|o| energy_drift(&o.rows[0])).collect();
     let doc = serde_json::json!({
         "schema": "superint-plot/1",
         "title": title,
         "time": args.time,
         "steps": args.steps,
         "method": args.method.name(),
+        "method_id": args.method.to_possible_value().map(|v| v.get_name().to_string()),
+        "at": args.at,
+        "from": args.from,
+        "against": args.against,
         "section": section,
+        "energy_drift": drift,
+        "accurate": drift.iter().all(|&d| d <= ENERGY_DRIFT_WARNING),
         "points": points,
         "chart": args.output.display().to_string(),
         "functions": functions,

@@ -1105,4 +1105,10 @@ fn cli_plot_time_takes_a_fraction() {
     let half = json("1/2");
     assert_eq!(half, json("0.5"));
     assert_eq!(half["time"], 0.5);
+    // What was asked, as given, and whether the integration kept H.
+    assert_eq!(half["at"], "A = 1, B = 1, C = -1/3");
+    assert_eq!(half["from"][0], "x = 0, y = 1/10, p_x = 2/5, p_y = 0");
+    assert_eq!(half["method_id"], "runge-kutta");
+    assert_eq!(half["accurate"], true);
+    assert!(half["energy_drift"][0].as_f64().is_some_and(|d| d < 1e-3));
 }
