@@ -555,6 +555,20 @@ pub fn closure_report(
          dimension {}){lift}; each expansion checked by the engine.",
         c.degree, c.monomials, c.rank,
     ))];
+    if !options.symbolic.is_empty() {
+        let names: Vec<&str> = options
+            .symbolic
+            .iter()
+            .map(|v| system.vars().variable(*v).unicode())
+            .collect();
+        entries.push(Entry::Text(format!(
+            "Parameters kept symbolic: `{}`. The coefficients are polynomials of degree `≤ {}` \
+             in them, found from the symbolic expansions, so what is found holds for every \
+             value of them.",
+            names.join(", "),
+            options.parameters_degree
+        )));
+    }
     let when = cond
         .clone()
         .map(|c| format!(" at `{c}`"))

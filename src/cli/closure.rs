@@ -6,7 +6,7 @@ use std::path::PathBuf;
 use anyhow::{anyhow, bail, Context};
 use brackets::closure::ClosureOptions;
 use clap::Args;
-use superint::discovery::closure_report;
+use superint::discovery::{closure_report, parse_symbolic};
 use superint::render::render;
 
 use super::limits::LimitsArgs;
@@ -21,6 +21,8 @@ Examples:
   superint closure --system harmonic F1 F2 L G1 G2 P11 Q11 R11 S11 \\
       --when 'p_theta = I*omega' --degree 2
   superint closure --system harmonic Hp L G1 G2 --define 'Hx=p_x^2/(2*M) + M*omega^2*x^2/2'
+  superint closure systems/smorodinsky-winternitz-i.toml H Hx X --define 'C={Hx, X}' \\
+      --degree 3 --symbolic M,alpha,beta,gamma --parameters-degree 2
 
 Each bracket is written as a polynomial of degree ≤ D in the generators where one exists
 (coefficients Laurent monomials in the parameters), and every minimal polynomial relation of
@@ -49,6 +51,15 @@ pub struct ClosureArgs {
     /// Parameter values for the linear algebra, such as omega=1,M=2/3 (others are 1).
     #[arg(long, value_name = "VALUES")]
     fix: Option<String>,
+    /// Parameters kept symbolic, such as alpha,beta: the coefficients are then polynomials in
+    /// them (of total degree at most --parameters-degree), found for every value of them,
+    /// where a lift from fixed values cannot tell apart parameters of one weight.
+    #[arg(long, value_name = "PARAMS")]
+    symbolic: Option<String>,
+    /// Total degree of the coefficients in the parameters kept symbolic.
+    #[arg(long, value_name = "S", default_value_t = 2, requires = "symbolic",
+          value_parser = clap::value_parser!(u32).range(0..=6))]
+    parameters_degree: u32,
     /// A generator given by its expression, NAME=EXPR (repeatable).
     #[arg(long, value_name = "NAME=EXPR")]
     define: Vec<String>,
@@ -131,6 +142,11 @@ pub fn run(job: &ClosureJob) -> anyhow::Result<bool> {
     let mut options = ClosureOptions::new(a.degree);
     options.condition = subject.condition(a.when.as_deref())?;
     options.fixed = subject.fixed(a.fix.as_deref())?;
+    if let Some(names) = &a.symbolic {
+        options.symbolic =
+            parse_symbolic(subject.system(), names).map_err(|e| anyhow!("--symbolic: {e}"))?;
+        options.parameters_degree = a.parameters_degree;
+    }
     let (report, _) = closure_report(subject.name(), subject.system(), &generators, &options)
         .context("computing the closure")?;
     let report = subject.tag(report);

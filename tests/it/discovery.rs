@@ -198,6 +198,11 @@ const COMMANDS: &[(&str, &str)] = &[
         "superint search systems/henon-heiles.toml --momenta-degree 2 --positions-degree 4 \
          --trig-degree 0 --symbolic A,B,C",
     ),
+    (
+        "sw1-algebra",
+        "superint closure systems/smorodinsky-winternitz-i.toml H Hx X --define 'C={Hx, X}' \
+         --degree 3 --symbolic alpha,beta,gamma --parameters-degree 3",
+    ),
 ];
 
 /// The words of a command line, single quotes grouping.
@@ -1266,4 +1271,48 @@ fn a_closure_with_a_generator_that_is_no_integral_says_so() {
         "{out}"
     );
     assert!(out.contains("    {H, L}   = −2γx/y³ + 2βy/x³\n"), "{out}");
+}
+
+/// The quadratic algebra of the Smorodinsky–Winternitz system I with its parameters: `α`, `β`
+/// and `γ` have one weight, so the lift from fixed values could not restore them, and every
+/// bracket and relation held at `α = β = γ = 1` only. Kept symbolic, the coefficients are
+/// found as polynomials in them (and `M` lifted): the brackets of `H_x`, `X` and
+/// `C = {H_x, X}`, and the cubic relation among them, each proved for every value.
+#[test]
+fn smorodinsky_winternitz_quadratic_algebra_with_symbolic_parameters() {
+    let out = normalize(&expect(
+        "sw1-algebra",
+        &[
+            "{H_x, X} = C [B1 proved]",
+            "{H_x, C} = 8H H_x − 8 H_x² − 8αX/M [B2 proved]",
+            "{X, C} = −32MβH + 32Mβ H_x + 32Mγ H_x − 8HX + 16 H_x X [B3 proved]",
+            "128Mαβγ + 64MβH H_x + 16H H_x X = 32MβH² + 32Mβ H_x² + 32Mγ H_x² + 16 H_x² X + C² \
+             + 8αX²/M [R1 proved]",
+            "Parameters kept symbolic: α, β, γ.",
+        ],
+    ));
+    assert!(!out.contains("not lifted"), "{out}");
+    assert!(!out.contains("α = 1"), "{out}");
+    for (args, message) in [
+        (
+            "--symbolic x",
+            "--symbolic: 'x' is not a parameter of the system",
+        ),
+        (
+            "--symbolic alpha --fix alpha=2",
+            "alpha is both fixed to a value and kept symbolic",
+        ),
+    ] {
+        let mut words = vec![
+            "closure",
+            "systems/smorodinsky-winternitz-i.toml",
+            "H",
+            "Hx",
+        ];
+        words.extend(args.split_whitespace());
+        let out = superint(&words);
+        let stderr = String::from_utf8_lossy(&out.stderr);
+        assert_eq!(out.status.code(), Some(2), "{stderr}");
+        assert!(stderr.contains(message), "{stderr}");
+    }
 }

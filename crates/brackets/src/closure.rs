@@ -46,6 +46,12 @@ pub struct ClosureOptions {
     pub condition: Option<Condition>,
     /// Parameter values for the linear algebra (every other parameter is fixed to 1).
     pub fixed: Vec<(Var, Rational)>,
+    /// Parameters kept symbolic: the coefficients are polynomials in them, of total degree at
+    /// most [`ClosureOptions::parameters_degree`], and what is found holds for every value of
+    /// them (where the lift by homogeneity cannot tell apart parameters of one weight).
+    pub symbolic: Vec<Var>,
+    /// The total degree of the coefficients in the symbolic parameters.
+    pub parameters_degree: u32,
 }
 
 impl ClosureOptions {
@@ -55,6 +61,8 @@ impl ClosureOptions {
             degree,
             condition: None,
             fixed: Vec::new(),
+            symbolic: Vec::new(),
+            parameters_degree: 2,
         }
     }
 
@@ -68,6 +76,16 @@ impl ClosureOptions {
     pub fn fix(mut self, v: Var, value: Rational) -> Self {
         self.fixed.retain(|f| f.0 != v);
         self.fixed.push((v, value));
+        self
+    }
+
+    /// With a parameter kept symbolic, the coefficients polynomials of total degree at most
+    /// `degree` in the symbolic parameters.
+    pub fn symbolic(mut self, v: Var, degree: u32) -> Self {
+        if !self.symbolic.contains(&v) {
+            self.symbolic.push(v);
+        }
+        self.parameters_degree = degree;
         self
     }
 }
@@ -295,10 +313,37 @@ pub fn closure_of(
             b_sym.insert((a, b), restrict(br)?);
         }
     }
-    // Parameters: those that occur, each given or 1.
+    // Parameters kept symbolic enter as generators of their own, `p`, each of degree at
+    // most `parameters_degree` in the monomials: a coefficient `c(p)` of `G^β` is the
+    // combination of the monomials `p^ν G^β`.
+    let symbolic = &options.symbolic;
+    for &v in symbolic {
+        let name = vars.variable(v).name();
+        if vars.variable(v).kind() != VarKind::Parameter {
+            return Err(EngineError::Invalid(format!(
+                "only parameters can be kept symbolic, and {name} is not one"
+            )));
+        }
+        if options.fixed.iter().any(|f| f.0 == v) {
+            return Err(EngineError::Invalid(format!(
+                "{name} is both fixed to a value and kept symbolic"
+            )));
+        }
+        if condition.is_some_and(|c| c.subs().iter().any(|(w, _)| *w == v)) {
+            return Err(EngineError::Invalid(format!(
+                "{name} is set by the condition; it cannot be kept symbolic"
+            )));
+        }
+    }
+    let g_sym: Vec<Expr> = g_sym
+        .into_iter()
+        .chain(symbolic.iter().map(|&v| Expr::var(&vars, v)))
+        .collect();
+    let all = g_sym.len();
+    // Parameters: those that occur, each given or 1; the symbolic ones stay.
     let mut parameters: Vec<(Var, Rational)> = Vec::new();
     for v in vars.vars() {
-        if vars.variable(v).kind() != VarKind::Parameter {
+        if vars.variable(v).kind() != VarKind::Parameter || symbolic.contains(&v) {
             continue;
         }
         let given = options.fixed.iter().find(|f| f.0 == v).map(|f| f.1.clone());
@@ -314,13 +359,21 @@ pub fn closure_of(
     // Monomials at the fixed values.
     // Generators that are constant on the condition's surface (`F2 = Iω²/2` at `p_θ = Iω`)
     // enter the polynomials as their values: relations `G − c = 0` of their own.
-    let constant: Vec<bool> = g_sym.iter().map(is_phase_free).collect();
+    let constant: Vec<bool> = (0..all)
+        .map(|a| a < r && is_phase_free(&g_sym[a]))
+        .collect();
+    let parameter_monomials = monomials(symbolic.len(), options.parameters_degree);
     let monos: Vec<Vec<u32>> = monomials(r, options.degree)
         .into_iter()
         .filter(|b| b.iter().zip(&constant).all(|(e, c)| *e == 0 || !c))
+        .flat_map(|b| {
+            parameter_monomials
+                .iter()
+                .map(move |nu| b.iter().chain(nu).copied().collect())
+        })
         .collect();
     let mut values: HashMap<Vec<u32>, Expr> = HashMap::new();
-    values.insert(vec![0; r], Expr::one(&vars));
+    values.insert(vec![0; all], Expr::one(&vars));
     let mut by_degree = monos.clone();
     by_degree.sort_by_key(|b| b.iter().sum::<u32>());
     for beta in &by_degree {
@@ -470,6 +523,11 @@ pub fn closure_of(
         .filter(|v| vars.variable(*v).kind() == VarKind::Parameter)
         .map(|v| (v, ring.lookup(vars.variable(v).name()).expect("declared")))
         .collect();
+    // The symbolic parameters' symbols are the ring's parameters.
+    let symbols: Vec<Var> = symbols
+        .into_iter()
+        .chain(symbolic.iter().map(|v| param_in_ring[v]))
+        .collect();
 
     // Lifting.
     let scaling = Scaling::of_functions(
@@ -510,6 +568,7 @@ pub fn closure_of(
         lifter: lifter.as_ref(),
         scaling: &scaling,
         gen_weights: gen_weights.as_deref(),
+        exact: parameters.is_empty(),
     };
 
     // Minimal relations, by degree.
@@ -548,7 +607,7 @@ pub fn closure_of(
         for (r0, d0, added) in accepted.iter_mut() {
             while *d0 + *added < d {
                 *added += 1;
-                for gamma in monomials(r, *added)
+                for gamma in monomials(all, *added)
                     .iter()
                     .filter(|m| m.iter().sum::<u32>() == *added)
                 {
@@ -576,7 +635,7 @@ pub fn closure_of(
         ideal_id += 1;
         if complex {
             // Over Q(i), i·R is the same relation.
-            let zero = vec![0; r];
+            let zero = vec![0; all];
             if let Some(v) = shift(rel, &zero, true, &col_ids, &monos, &col_of) {
                 if let Some(vf) = modular::to_fp(&v) {
                     ideal.insert(ideal_id, &vf);
@@ -586,9 +645,15 @@ pub fn closure_of(
         }
         accepted.push((rel.clone(), d, 0));
         let (poly, symbolic) = lift_ctx.relation(rel)?;
+        // Its degree in the generators, the symbolic parameters apart.
+        let degree = rel
+            .iter()
+            .map(|(j, _)| monos[col_ids[*j].0][..r].iter().sum::<u32>())
+            .max()
+            .unwrap_or(0);
         relations.push(Relation {
             poly,
-            degree: d,
+            degree,
             symbolic,
         });
     }
@@ -632,7 +697,7 @@ pub fn closure_of(
         names: generators.iter().map(|g| g.0.clone()).collect(),
         display: generators.iter().map(|g| g.1.clone()).collect(),
         ring,
-        symbols,
+        symbols: symbols[..r].to_vec(),
         degree: options.degree,
         condition: condition.map(|c| c.text.clone()),
         parameters,
@@ -709,6 +774,9 @@ struct LiftContext<'a> {
     lifter: Option<&'a Lifter>,
     scaling: &'a Scaling,
     gen_weights: Option<&'a [Vec<Rational>]>,
+    /// Whether no parameter was fixed: then the linear algebra was done on the symbolic
+    /// expansions, and what it found holds as it is, with no lift.
+    exact: bool,
 }
 
 impl LiftContext<'_> {
@@ -835,6 +903,9 @@ impl LiftContext<'_> {
             .iter()
             .map(|(m, c)| (c.clone(), Vec::new(), *m))
             .collect();
+        if self.exact {
+            return Ok((normalize(self.ring_poly(&fixed_terms)?), true));
+        }
         // Reference: the leading (last) monomial.
         let lead = terms
             .iter()
@@ -860,6 +931,13 @@ impl LiftContext<'_> {
         let terms = self.per_monomial(sol);
         if terms.is_empty() {
             return Ok((Expr::zero(&self.ring), target.is_zero()));
+        }
+        if self.exact {
+            let exact_terms: Vec<_> = terms
+                .iter()
+                .map(|(m, c)| (c.clone(), Vec::new(), *m))
+                .collect();
+            return Ok((self.ring_poly(&exact_terms)?, true));
         }
         if let Some(w) = self.scaling.homogeneous_weight(target) {
             if let Some(lifted) = self.lift_terms(&terms, &w)? {
@@ -908,6 +986,41 @@ mod tests {
         // The 21 monomials of degree ≤ 2 in five generators span 20 dimensions over Q(i)
         // (it read 40, the dimension over Q of the monomials and i times them).
         assert_eq!((c.monomials, c.rank), (21, 20));
+    }
+
+    /// With every parameter symbolic, the linear algebra runs on the symbolic expansions and
+    /// its results hold as found: su(2) and its Casimir with `M, ω, I` as they are.
+    #[test]
+    fn every_parameter_symbolic() {
+        let rotor = systems::harmonic_rotor();
+        let mut options = ClosureOptions::new(2);
+        for name in ["M", "omega", "I"] {
+            options = options.symbolic(rotor.var(name), 2);
+        }
+        let c = closure(&rotor, &["F1", "F2", "L", "G1", "G2"], &options).unwrap();
+        assert!(c.parameters.is_empty() && c.all_symbolic());
+        assert_eq!(c.render_bracket(3, 4), "−ω²L");
+        assert_eq!(c.relations.len(), 1);
+        assert_eq!(c.relations[0].degree, 2);
+        // The relation, expanded in phase space, vanishes.
+        let r = &c.relations[0].poly;
+        let mut sum = Expr::zero(rotor.vars());
+        for t in r.terms() {
+            let mut term = Expr::constant(rotor.vars(), t.coeff());
+            for (v, e) in c.ring.vars().zip(t.exponents()) {
+                if e == 0 {
+                    continue;
+                }
+                let name = c.ring.variable(v).name();
+                let value = match c.names.iter().position(|n| n == name) {
+                    Some(k) => rotor.get(&c.names[k]).unwrap().clone(),
+                    None => Expr::var(rotor.vars(), rotor.var(name)),
+                };
+                term = term.checked_mul(&value.checked_pow(e).unwrap()).unwrap();
+            }
+            sum = sum.checked_add(&term).unwrap();
+        }
+        assert!(sum.is_zero(), "{r}");
     }
 
     #[test]
