@@ -840,7 +840,8 @@ pub fn parse_fixed(system: &System, text: &str) -> Result<Vec<(Var, Rational)>, 
             .map_err(|_| format!("'{}' is not a rational number", value.trim()))?;
         if q.is_zero() {
             return Err(format!(
-                "{name} = 0: parameters are fixed to nonzero values"
+                "{name} = 0: parameters are fixed to nonzero values (a value the lift back can \
+                 divide by); to study the system at {name} = 0, set it with --when '{name} = 0'"
             ));
         }
         out.push((v, q));

@@ -302,7 +302,20 @@ pub(crate) fn point(r: &RankResult, style: Style) -> Vec<String> {
 
 /// A number of Q(i) as text.
 pub(crate) fn number(q: &GaussianRational) -> String {
-    q.to_string()
+    // An imaginary part as the paper writes it: `11i`, `−11i/7` (not `11*i`, `11/7*i`).
+    let imaginary = |im: &trigpoly::Rational| match im.to_string().split_once('/') {
+        _ if im.is_one() => "i".to_string(),
+        Some((num, den)) => format!("{num}i/{den}"),
+        None => format!("{im}i"),
+    };
+    let re = q.re.to_string();
+    match (q.re.is_zero(), q.im.is_zero(), q.im.is_negative()) {
+        (_, true, _) => re,
+        (true, false, _) if (-&q.im).is_one() => "-i".to_string(),
+        (true, false, _) => imaginary(&q.im),
+        (false, false, true) => format!("{re} - {}", imaginary(&-&q.im)),
+        (false, false, false) => format!("{re} + {}", imaginary(&q.im)),
+    }
 }
 
 /// `there is 1 function`, `there are 2 functions`.
@@ -345,4 +358,28 @@ fn rank(out: &mut Vec<String>, r: &RankResult) {
     ));
     out.extend(wrap_items("        ", &point(r, Style::Unicode), WRAP));
     out.push(format!("      ≤ {}: {}", c.rank, upper_bound(r)));
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use trigpoly::Rational;
+
+    #[test]
+    fn numbers_read_like_the_paper() {
+        let q = |re: (i64, i64), im: (i64, i64)| {
+            GaussianRational::new(Rational::new(re.0, re.1), Rational::new(im.0, im.1))
+        };
+        for (value, text) in [
+            (q((0, 1), (11, 1)), "11i"),
+            (q((0, 1), (-11, 7)), "-11i/7"),
+            (q((0, 1), (1, 1)), "i"),
+            (q((0, 1), (-1, 1)), "-i"),
+            (q((3, 2), (-1, 1)), "3/2 - i"),
+            (q((-5, 1), (2, 3)), "-5 + 2i/3"),
+            (q((7, 4), (0, 1)), "7/4"),
+        ] {
+            assert_eq!(number(&value), text);
+        }
+    }
 }

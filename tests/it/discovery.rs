@@ -734,7 +734,8 @@ fn bad_search_arguments_exit_2_with_a_message() {
         ),
         (
             "--fix C=0",
-            "--fix: C = 0: parameters are fixed to nonzero values",
+            "--fix: C = 0: parameters are fixed to nonzero values (a value the lift back can \
+             divide by); to study the system at C = 0, set it with --when 'C = 0'",
         ),
         ("--fix C=two", "--fix: 'two' is not a rational number"),
         ("--fix A=2,B=1,A=3", "--fix: 'A' is given two values"),

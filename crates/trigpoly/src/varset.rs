@@ -759,6 +759,14 @@ pub(crate) fn render_name(name: &str) -> (String, String) {
                 return (uni.to_string(), tex.to_string());
             }
         }
+        // A Greek letter with digits after it: `theta1` → `θ1`, `\theta 1`.
+        let letters = p.trim_end_matches(|c: char| c.is_ascii_digit());
+        if letters.len() < p.len() {
+            if let Some((_, uni, tex)) = GREEK.iter().find(|g| letters == g.0 || letters == g.1) {
+                let digits = &p[letters.len()..];
+                return (format!("{uni}{digits}"), format!("{tex} {digits}"));
+            }
+        }
         let tex = if p.chars().count() > 1 {
             format!(r"\mathrm{{{p}}}")
         } else {
@@ -832,6 +840,14 @@ mod tests {
         assert_eq!(render_name("omega"), ("ω".into(), r"\omega".into()));
         assert_eq!(render_name("G1"), ("G1".into(), "G_{1}".into()));
         assert_eq!(render_name("M"), ("M".into(), "M".into()));
+        assert_eq!(
+            render_name("p_theta1"),
+            ("p_θ1".into(), r"p_{\theta 1}".into())
+        );
+        assert_eq!(
+            render_name("theta12"),
+            ("θ12".into(), r"\theta_{12}".into())
+        );
     }
 
     #[test]
