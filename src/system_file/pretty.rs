@@ -156,6 +156,18 @@ impl LoadedSystem {
                 };
                 let number_left = a.text.ends_with(|c: char| c.is_ascii_digit());
                 let digit_right = b.text.starts_with(|c: char| c.is_ascii_digit());
+                // Letters before parentheses that spell a function, `i·m·(x)`, would read as
+                // its call `im(x)`: the left factor takes parentheses, `(im)(x)`.
+                let run = a.text.len()
+                    - a.text
+                        .trim_end_matches(|c: char| c.is_alphanumeric() || c == '_')
+                        .len();
+                let call = b.text.starts_with('(')
+                    && trigpoly::FUNCTIONS
+                        .iter()
+                        .chain(&["Re", "Im"])
+                        .any(|f| a.text[a.text.len() - run..] == **f);
+                let a = if call { a.wrapped(ATOM) } else { a };
                 let sep = if digit_right {
                     "·"
                 } else if number_left && !a.text.contains(|c: char| c.is_alphabetic()) {

@@ -1678,3 +1678,33 @@ fn a_function_used_too_early_is_explained() {
         assert!(stderr.ends_with(hint), "{stderr}");
     }
 }
+
+/// Letters before parentheses that spell a function (`i·m` before `(−m)` as `im(−m)`, the
+/// imaginary part) are echoed in parentheses of their own, so the echo reads back as the
+/// product it is (it read back as 0).
+#[test]
+fn an_echo_does_not_spell_a_function_before_parentheses() {
+    let dir = scratch("im-echo");
+    std::fs::write(
+        dir.join("m.toml"),
+        "hamiltonian = \"p_m^2/2\"\n[phase_space]\ncoordinates = [\"m\"]\n",
+    )
+    .expect("write m.toml");
+    let expand = |e: &str| {
+        let o = superint_in(
+            &dir,
+            &["expand", "m.toml", e, "--format", "json", "--no-timings"],
+        );
+        assert_eq!(o.status.code(), Some(0), "{}", text(&o.stderr));
+        let v: serde_json::Value = serde_json::from_slice(&o.stdout).expect("JSON");
+        let line = &v["equations"][0]["lines"][0];
+        (
+            line["lhs"].as_str().unwrap().to_string(),
+            line["ascii"].as_str().unwrap().to_string(),
+        )
+    };
+    let (echo, value) = expand("((5/7*i) m)*(-m)");
+    assert_eq!(echo, "((5/7)im)(−m)");
+    assert_eq!(value, "-5*i*m^2/7");
+    assert_eq!(expand(&echo).1, value);
+}
