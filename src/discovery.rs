@@ -575,11 +575,11 @@ pub fn closure_report(
         .unwrap_or_default();
     let table_at = match (stuck, &cond) {
         (0, _) => when.clone(),
-        (_, Some(c)) => format!(" at {c}, {fixed}"),
-        (_, None) => format!(" at {fixed}"),
+        (_, Some(c)) => format!(" at `{c}`, `{fixed}`"),
+        (_, None) => format!(" at `{fixed}`"),
     };
     entries.push(Entry::Table(TableResult {
-        caption: format!("{{A, B}} for the {name}{table_at}"),
+        caption: format!("`{{A, B}}` for the {name}{table_at}"),
         table: c.table(),
     }));
     let outside = c.outside();

@@ -173,7 +173,9 @@ fn claim_rows(c: &ClaimResult) -> Vec<String> {
     let mut rows: Vec<String> = match relation(&c.statement) {
         Some(k) => {
             let lhs = math(&c.statement[..k]);
-            split_sum(&math(&c.statement[k..]), ROW)
+            // The right side takes what the left leaves of the row.
+            let room = ROW.saturating_sub(visual_width(&lhs)).max(ROW / 2);
+            split_sum(&math(&c.statement[k..]), room)
                 .into_iter()
                 .enumerate()
                 .map(|(j, piece)| match j {
