@@ -141,26 +141,15 @@ impl Entry {
     }
 }
 
-/// `G1'` → `G_{1}'`, `Z̄` → `\bar{Z}`, `L` → `L`.
+/// `G1'` → `G_{1}'`, `Z̄` → `\bar{Z}`, `L` → `L`, `P'_{1,1}` → `P'_{1,1}`: the name as
+/// [`trigpoly::display_forms`] writes it in LaTeX, before any subscript of its own (a family
+/// instance's indices); a name it has no form for stays as it is.
 pub fn latex_name(name: &str) -> String {
-    let (base, primes) = match name.find('\'') {
-        Some(k) => (&name[..k], &name[k..]),
-        None => (name, ""),
-    };
-    let base = if let Some(stripped) = base.strip_suffix('\u{0304}') {
-        format!(r"\bar{{{stripped}}}")
-    } else if base.contains('̄') {
-        format!(r"\bar{{{}}}", base.replace('̄', ""))
-    } else {
-        let digits = base.trim_start_matches(|c: char| !c.is_ascii_digit());
-        let head = &base[..base.len() - digits.len()];
-        if !digits.is_empty() && !head.is_empty() {
-            format!("{head}_{{{digits}}}")
-        } else {
-            base.to_string()
-        }
-    };
-    format!("{base}{primes}")
+    let (head, subscript) = name.split_at(name.find("_{").unwrap_or(name.len()));
+    match trigpoly::display_forms(head) {
+        Some((_, latex)) => format!("{latex}{subscript}"),
+        None => name.to_string(),
+    }
 }
 
 /// Writes `target` as `Σ c_k F_k` with `c_k` Laurent polynomials in the parameters, if possible.

@@ -593,21 +593,8 @@ impl VarSetBuilder {
     /// declared, changes nothing. Its ASCII form stays its name, which reads back.
     /// [`VarSetBuilder::build`] refuses two variables shown alike.
     pub fn shown_as(mut self, display: &str) -> Self {
-        let marked = display.trim_end_matches('\'');
-        let primes = &display[marked.len()..];
-        let (base, bar) = match marked.strip_suffix('\u{304}') {
-            Some(base) => (base, true),
-            None => (marked, false),
-        };
-        if let (Some(v), true) = (self.vars.last_mut(), is_identifier(base)) {
-            let (unicode, latex) = render_name(base);
-            (v.unicode, v.latex) = match bar {
-                true => (
-                    format!("{unicode}\u{304}{primes}"),
-                    format!("\\bar{{{latex}}}{primes}"),
-                ),
-                false => (format!("{unicode}{primes}"), format!("{latex}{primes}")),
-            };
+        if let (Some(v), Some((unicode, latex))) = (self.vars.last_mut(), display_forms(display)) {
+            (v.unicode, v.latex) = (unicode, latex);
             v.spelled_out = spell_out(&v.unicode);
         }
         self
@@ -685,6 +672,29 @@ impl VarSetBuilder {
 
 /// Names that expressions give a meaning of their own.
 pub const RESERVED: &[&str] = &["i", "cos", "sin", "exp"];
+
+/// A display name as text and as LaTeX, when it is an identifier, possibly with a bar (a
+/// combining macron) and primes: `A_x` → (`A_x`, `A_{x}`), `G1'` → (`G1'`, `G_{1}'`), `Z̄` →
+/// (`Z̄`, `\bar{Z}`), `omega` → (`ω`, `\omega`). Anything else has no such forms.
+pub fn display_forms(display: &str) -> Option<(String, String)> {
+    let marked = display.trim_end_matches('\'');
+    let primes = &display[marked.len()..];
+    let (base, bar) = match marked.strip_suffix('\u{304}') {
+        Some(base) => (base, true),
+        None => (marked, false),
+    };
+    if !is_identifier(base) {
+        return None;
+    }
+    let (unicode, latex) = render_name(base);
+    Some(match bar {
+        true => (
+            format!("{unicode}\u{304}{primes}"),
+            format!("\\bar{{{latex}}}{primes}"),
+        ),
+        false => (format!("{unicode}{primes}"), format!("{latex}{primes}")),
+    })
+}
 
 fn is_identifier(s: &str) -> bool {
     let mut chars = s.chars();
