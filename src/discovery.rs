@@ -591,15 +591,16 @@ pub fn closure_report(
     } else {
         // A generator that is no integral has brackets with no reason to close among
         // integrals; what search finds closes a table of integrals.
-        let h = system.hamiltonian();
         let mut moving = Vec::new();
         for (g, (_, display, e)) in generators.iter().enumerate() {
-            let flow = system.bracket(e, h)?;
+            if !outside.iter().any(|&(a, b)| a == g || b == g) {
+                continue;
+            }
             let flow = match &options.condition {
-                Some(cond) => cond.apply(&flow)?,
-                None => flow,
+                Some(cond) => system.flow_when(e, cond)?,
+                None => system.flow(e)?,
             };
-            if !flow.is_zero() && outside.iter().any(|&(a, b)| a == g || b == g) {
+            if !flow.is_zero() {
                 moving.push(format!("`{display}`"));
             }
         }

@@ -148,17 +148,20 @@ fn split_sum(s: &str, max: usize) -> Vec<String> {
     pieces
 }
 
-/// `lhs &= rhs` rows for a long expression, continued on further rows; `tail` ends each row.
-fn long_rows(lhs: &str, rel: &str, e: &trigpoly::Expr, tail: &str, max: usize) -> Vec<String> {
-    split_sum(&e.render(Style::Latex), max)
+/// `lhs &= rhs` rows for a long expression, continued on further rows.
+fn long_rows(lhs: &str, rel: &str, e: &trigpoly::Expr, max: usize) -> Vec<String> {
+    broken_rows(&format!("{lhs} &{rel} "), &e.render(Style::Latex), max)
+}
+
+/// `first` and the right side `rhs` broken at its sums' signs to `max` printed characters a
+/// row: `first` before the first piece, `&\quad` before the others.
+fn broken_rows(first: &str, rhs: &str, max: usize) -> Vec<String> {
+    split_sum(rhs, max)
         .into_iter()
         .enumerate()
-        .map(|(k, piece)| {
-            if k == 0 {
-                format!("{lhs} &{rel} {piece}{tail}")
-            } else {
-                format!(r"&\quad {piece}{tail}")
-            }
+        .map(|(k, piece)| match k {
+            0 => format!("{first}{piece}"),
+            _ => format!(r"&\quad {piece}"),
         })
         .collect()
 }
@@ -175,14 +178,7 @@ fn claim_rows(c: &ClaimResult) -> Vec<String> {
             let lhs = math(&c.statement[..k]);
             // The right side takes what the left leaves of the row.
             let room = ROW.saturating_sub(visual_width(&lhs)).max(ROW / 2);
-            split_sum(&math(&c.statement[k..]), room)
-                .into_iter()
-                .enumerate()
-                .map(|(j, piece)| match j {
-                    0 => format!("{lhs} &{piece}"),
-                    _ => format!(r"&\quad {piece}"),
-                })
-                .collect()
+            broken_rows(&format!("{lhs} &"), &math(&c.statement[k..]), room)
         }
         None => vec![aligned(&c.statement)],
     };
@@ -193,11 +189,11 @@ fn claim_rows(c: &ClaimResult) -> Vec<String> {
         text(verdict(c))
     ));
     if let Some(r) = &c.residual {
-        rows.extend(long_rows(r"\text{residual}", "=", r, "", CLAIM_ROW));
+        rows.extend(long_rows(r"\text{residual}", "=", r, CLAIM_ROW));
     }
     if let (ClaimKind::Nonvanishing, Some(w)) = (c.kind, &c.witness) {
         if visual_width(&w.render(Style::Latex)) <= 3 * CLAIM_ROW {
-            rows.extend(long_rows("", r"\text{it equals}", w, "", CLAIM_ROW));
+            rows.extend(long_rows("", r"\text{it equals}", w, CLAIM_ROW));
         } else {
             rows.push(format!(
                 r"&\text{{it is a nonzero sum of {} terms}}",
@@ -237,7 +233,7 @@ fn equations(out: &mut Vec<String>, eq: &Equations) {
     let mut rows: Vec<String> = eq
         .lines
         .iter()
-        .flat_map(|l| long_rows(&math(&l.lhs), "=", &l.rhs, "", ROW))
+        .flat_map(|l| long_rows(&math(&l.lhs), "=", &l.rhs, ROW))
         .collect();
     flush(out, &mut rows);
 }
@@ -288,13 +284,8 @@ fn table_as_list(out: &mut Vec<String>, t: &TableResult, head: &[String], cells:
             if cell == "0" {
                 continue;
             }
-            let lhs = format!(r"\{{{}, {}\}}", head[a], head[b]);
-            for (k, piece) in split_sum(cell, ROW).into_iter().enumerate() {
-                rows.push(match k {
-                    0 => format!("{lhs} &= {piece}"),
-                    _ => format!(r"&\quad {piece}"),
-                });
-            }
+            let first = format!(r"\{{{}, {}\}} &= ", head[a], head[b]);
+            rows.extend(broken_rows(&first, cell, ROW));
         }
     }
     if rows.is_empty() {

@@ -302,20 +302,7 @@ pub(crate) fn point(r: &RankResult, style: Style) -> Vec<String> {
 
 /// A number of Q(i) as text.
 pub(crate) fn number(q: &GaussianRational) -> String {
-    // An imaginary part as the paper writes it: `11i`, `−11i/7` (not `11*i`, `11/7*i`).
-    let imaginary = |im: &trigpoly::Rational| match im.to_string().split_once('/') {
-        _ if im.is_one() => "i".to_string(),
-        Some((num, den)) => format!("{num}i/{den}"),
-        None => format!("{im}i"),
-    };
-    let re = q.re.to_string();
-    match (q.re.is_zero(), q.im.is_zero(), q.im.is_negative()) {
-        (_, true, _) => re,
-        (true, false, _) if (-&q.im).is_one() => "-i".to_string(),
-        (true, false, _) => imaginary(&q.im),
-        (false, false, true) => format!("{re} - {}", imaginary(&-&q.im)),
-        (false, false, false) => format!("{re} + {}", imaginary(&q.im)),
-    }
+    trigpoly::render_number(q, Style::Ascii)
 }
 
 /// `there is 1 function`, `there are 2 functions`.

@@ -102,7 +102,7 @@ impl Condition {
                 continue;
             }
             let level = Expr::var(vars, *v).checked_sub(value)?;
-            let rate = self.apply(&system.flow(&level)?)?;
+            let rate = system.flow_when(&level, self)?;
             if !rate.is_zero() {
                 let name = vars.variable(*v).unicode();
                 let moves = vars

@@ -33,7 +33,7 @@ use crate::claim::Condition;
 use crate::error::EngineError;
 use crate::modular::{self, Echelon, Fp, SparseVec};
 use crate::scaling::{Lifter, Scaling};
-use crate::search::{fix_parameters, is_phase_free};
+use crate::search::{check_symbolic, fix_parameters, is_phase_free};
 use crate::system::System;
 use crate::table::{BracketTable, Entry};
 
@@ -317,23 +317,15 @@ pub fn closure_of(
     // most `parameters_degree` in the monomials: a coefficient `c(p)` of `G^β` is the
     // combination of the monomials `p^ν G^β`.
     let symbolic = &options.symbolic;
-    for &v in symbolic {
-        let name = vars.variable(v).name();
-        if vars.variable(v).kind() != VarKind::Parameter {
-            return Err(EngineError::Invalid(format!(
-                "only parameters can be kept symbolic, and {name} is not one"
-            )));
-        }
-        if options.fixed.iter().any(|f| f.0 == v) {
-            return Err(EngineError::Invalid(format!(
-                "{name} is both fixed to a value and kept symbolic"
-            )));
-        }
-        if condition.is_some_and(|c| c.subs().iter().any(|(w, _)| *w == v)) {
-            return Err(EngineError::Invalid(format!(
-                "{name} is set by the condition; it cannot be kept symbolic"
-            )));
-        }
+    check_symbolic(&vars, symbolic, &options.fixed)?;
+    if let Some(&v) = symbolic
+        .iter()
+        .find(|&&v| condition.is_some_and(|c| c.subs().iter().any(|(w, _)| *w == v)))
+    {
+        return Err(EngineError::Invalid(format!(
+            "{} is set by the condition; it cannot be kept symbolic",
+            vars.variable(v).name()
+        )));
     }
     let g_sym: Vec<Expr> = g_sym
         .into_iter()
@@ -932,12 +924,12 @@ impl LiftContext<'_> {
         if terms.is_empty() {
             return Ok((Expr::zero(&self.ring), target.is_zero()));
         }
+        let fixed_terms: Vec<_> = terms
+            .iter()
+            .map(|(m, c)| (c.clone(), Vec::new(), *m))
+            .collect();
         if self.exact {
-            let exact_terms: Vec<_> = terms
-                .iter()
-                .map(|(m, c)| (c.clone(), Vec::new(), *m))
-                .collect();
-            return Ok((self.ring_poly(&exact_terms)?, true));
+            return Ok((self.ring_poly(&fixed_terms)?, true));
         }
         if let Some(w) = self.scaling.homogeneous_weight(target) {
             if let Some(lifted) = self.lift_terms(&terms, &w)? {
@@ -946,10 +938,6 @@ impl LiftContext<'_> {
                 }
             }
         }
-        let fixed_terms: Vec<_> = terms
-            .iter()
-            .map(|(m, c)| (c.clone(), Vec::new(), *m))
-            .collect();
         Ok((self.ring_poly(&fixed_terms)?, false))
     }
 }

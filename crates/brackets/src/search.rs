@@ -819,6 +819,29 @@ impl Components {
     }
 }
 
+/// Refuses parameters to keep symbolic that are no parameters or are also fixed to a value
+/// (a search's and a closure's `symbolic`).
+pub(crate) fn check_symbolic(
+    vars: &Vars,
+    symbolic: &[Var],
+    fixed: &[(Var, Rational)],
+) -> Result<(), EngineError> {
+    for &v in symbolic {
+        let name = vars.variable(v).name();
+        if vars.variable(v).kind() != VarKind::Parameter {
+            return Err(EngineError::Invalid(format!(
+                "only parameters can be kept symbolic, and {name} is not one"
+            )));
+        }
+        if fixed.iter().any(|f| f.0 == v) {
+            return Err(EngineError::Invalid(format!(
+                "{name} is both fixed to a value and kept symbolic"
+            )));
+        }
+    }
+    Ok(())
+}
+
 /// Every parameter of `h` or of the condition that is neither kept symbolic nor set by the
 /// condition, with its value (given, or 1).
 fn parameter_values(
@@ -938,19 +961,7 @@ pub fn search(system: &System, options: &SearchOptions) -> Result<SearchResult, 
         c.kept_by_flow(system)?;
     }
     let vars = system.vars();
-    for &v in &options.symbolic {
-        let name = vars.variable(v).name();
-        if vars.variable(v).kind() != VarKind::Parameter {
-            return Err(EngineError::Invalid(format!(
-                "only parameters can be kept symbolic, and {name} is not one"
-            )));
-        }
-        if options.fixed.iter().any(|f| f.0 == v) {
-            return Err(EngineError::Invalid(format!(
-                "{name} is both fixed to a value and kept symbolic"
-            )));
-        }
-    }
+    check_symbolic(vars, &options.symbolic, &options.fixed)?;
     // The unknowns are the real coefficients of real functions, and the equations only the
     // coefficients of `e^{ik·θ}` with `k ≥ 0`: right when `{F, H}` is real, that is when `H`
     // and the condition's values are.

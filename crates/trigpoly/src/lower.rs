@@ -301,8 +301,7 @@ impl<C: Coefficient> Lower<'_, C> {
                     .map_err(at(span));
             }
             _ => {
-                let known = ["cos", "sin", "exp", "conj", "re", "im"].map(String::from);
-                let hint = match (did_you_mean(name, &known), name) {
+                let hint = match (did_you_mean(name, &FUNCTIONS), name) {
                     (Some(k), _) => format!("; did you mean '{k}'?"),
                     (None, "sqrt") => "; expressions are polynomials in the variables, in cos \
                          and sin of angles and in negative powers of single terms: a potential \
@@ -317,7 +316,10 @@ impl<C: Coefficient> Lower<'_, C> {
                 };
                 return Err(ParseError::new(
                     name_span,
-                    format!("unknown function '{name}' (known: cos, sin, exp, conj, re, im){hint}"),
+                    format!(
+                        "unknown function '{name}' (known: {}){hint}",
+                        FUNCTIONS.join(", ")
+                    ),
                 ));
             }
         };
@@ -567,11 +569,11 @@ fn split_into(name: &str, known: &dyn Fn(&str) -> bool) -> Option<Vec<String>> {
 
 /// The known name that `name` was probably meant to be: the same letters but for case and
 /// underscores (`px` for `p_x`, `Cos` for `cos`, `Omega` for `omega`), when there is one.
-fn did_you_mean<'k>(name: &str, known: &'k [String]) -> Option<&'k str> {
+fn did_you_mean<'k>(name: &str, known: &'k [impl AsRef<str>]) -> Option<&'k str> {
     let key = |s: &str| s.replace('_', "").to_lowercase();
     let wanted = key(name);
     known
         .iter()
-        .find(|k| k.as_str() != name && key(k) == wanted)
-        .map(String::as_str)
+        .map(AsRef::as_ref)
+        .find(|&k| k != name && key(k) == wanted)
 }

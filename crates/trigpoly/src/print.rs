@@ -395,6 +395,23 @@ fn split_coeff(
     (part.is_negative(), numerator, denominator, None)
 }
 
+/// A number alone, as the notation writes it: `-3/2`, `11i`, `-11i/7` (the `i` on the
+/// numerator, where `11/7i` would read as `11/(7i)`), `3/2 - i`, with the style's minus sign.
+pub fn render_number(q: &GaussianRational, style: Style) -> String {
+    let signed = |negative: bool, text: String| match negative {
+        true => format!("{}{text}", minus(style)),
+        false => text,
+    };
+    let (negative, re) = render_term_free(&q.re, style);
+    let re = signed(negative, re);
+    match (q.re.is_zero(), q.im.is_zero(), q.im.is_negative()) {
+        (_, true, _) => re,
+        (true, false, negative) => signed(negative, imaginary(&q.im, style)),
+        (false, false, true) => format!("{re} {} {}", minus(style), imaginary(&q.im, style)),
+        (false, false, false) => format!("{re} + {}", imaginary(&q.im, style)),
+    }
+}
+
 /// `|q|·i` beside a real part: `i` alone for `±1`, the `i` on the numerator in text (`5i/7`,
 /// where `5/7i` reads as `5/(7i)`), after the fraction in LaTeX (`\frac{5}{7} i`).
 fn imaginary(q: &Rational, style: Style) -> String {
