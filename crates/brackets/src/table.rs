@@ -253,3 +253,25 @@ pub fn express(
             .collect(),
     ))
 }
+
+#[cfg(test)]
+mod tests {
+    use super::latex_name;
+
+    /// Display names in LaTeX: digits as a subscript, bars, primes, and a family instance's
+    /// own subscript kept (`P_{1,1}` was written `P_{_{1,1}}`).
+    #[test]
+    fn display_names_in_latex() {
+        for (name, latex) in [
+            ("L", "L"),
+            ("G1'", "G_{1}'"),
+            ("Z̄", r"\bar{Z}"),
+            ("Z̄'", r"\bar{Z}'"),
+            ("P_{1,1}", "P_{1,1}"),
+            ("K̄'_{2,3}", r"\bar{K}'_{2,3}"),
+            ("Re K", "Re K"),
+        ] {
+            assert_eq!(latex_name(name), latex, "{name}");
+        }
+    }
+}
