@@ -24,7 +24,8 @@ use brackets::{EngineError, System};
 use trigpoly::{Expr, GaussianRational, Rational, Style, Var, VarSet};
 
 use crate::report::{
-    ClaimResult, Entry, Equation, Equations, Report, Section, SummaryKind, TableResult,
+    ClaimResult, ClosureFacts, Entry, Equation, Equations, Facts, ParameterFacts, Report,
+    SearchFacts, Section, SummaryKind, TableResult,
 };
 
 /// `M = 1, ω = 1, I = 1`.
@@ -62,6 +63,28 @@ pub fn complex_form(f: &Expr) -> Option<(Expr, i64)> {
         }
     }
     Some((Expr::from_terms(vars, terms).ok()?, hi))
+}
+
+/// The parameters of a search or closure as data: `fixed` for the linear algebra, `symbolic`
+/// (with their total degree), and the condition.
+fn parameter_facts(
+    vars: &VarSet,
+    fixed: &[(Var, Rational)],
+    symbolic: Option<(&[Var], u32)>,
+    condition: &Option<String>,
+) -> ParameterFacts {
+    let name = |v: &Var| vars.variable(*v).name().to_string();
+    ParameterFacts {
+        fixed: fixed
+            .iter()
+            .map(|(v, x)| (name(v), x.to_string()))
+            .collect(),
+        symbolic: symbolic
+            .map(|(vs, _)| vs.iter().map(name).collect())
+            .unwrap_or_default(),
+        symbolic_degree: symbolic.map(|(_, d)| d),
+        condition: condition.clone(),
+    }
 }
 
 /// The names of parameters, `A, B`.
@@ -334,6 +357,47 @@ pub fn search_report(
             )));
         }
     }
+    let name_of = |v: &Var| vars.variable(*v).name().to_string();
+    let names_of = |vs: &[Var]| vs.iter().map(name_of).collect::<Vec<_>>();
+    let shown_ids: Vec<String> = match &r.new {
+        Some(n) => n.new.clone(),
+        None => match &r.module {
+            Some(m) => m.generators.clone(),
+            None => (0..r.basis.len()).collect(),
+        },
+    }
+    .into_iter()
+    .map(|i| format!("I{}", i + 1))
+    .collect();
+    entries.push(Entry::Data(Facts::Search(SearchFacts {
+        space: r.space,
+        coordinates: names_of(&r.variables.coordinates),
+        momenta: names_of(&r.variables.momenta),
+        angles: names_of(&r.variables.angles),
+        left_out: names_of(&r.variables.left_out),
+        parameters: parameter_facts(
+            vars,
+            &r.parameters,
+            r.module
+                .as_ref()
+                .map(|m| (&m.parameters[..], r.space.parameters_degree)),
+            &cond,
+        ),
+        unknowns: r.unknowns,
+        equations: r.equations,
+        blocks: r.components,
+        largest_block: r.largest_component,
+        dimension: r.basis.len(),
+        by_momenta_degree: dims,
+        counts,
+        for_every_value: r
+            .basis
+            .iter()
+            .filter(|f| f.symbolic.is_some() || (f.proved_fixed && r.parameters.is_empty()))
+            .count(),
+        shown: shown_ids,
+        new_only: r.new.clone(),
+    })));
     let mut sections = vec![Section {
         number: 1,
         title: "Search".into(),
@@ -663,6 +727,26 @@ pub fn closure_report(
             }
         }
     }
+    let symbolic: Vec<Var> = options.symbolic.clone();
+    entries.push(Entry::Data(Facts::Closure(ClosureFacts {
+        generators: c.names.clone(),
+        degree: c.degree,
+        monomials: c.monomials,
+        rank: c.rank,
+        parameters: parameter_facts(
+            system.vars(),
+            &c.parameters,
+            (!symbolic.is_empty()).then_some((&symbolic[..], options.parameters_degree)),
+            &cond,
+        ),
+        outside: outside
+            .iter()
+            .map(|&(a, b)| (c.names[a].clone(), c.names[b].clone()))
+            .collect(),
+        unlifted: stuck,
+        brackets: (1..=shown).map(|k| format!("B{k}")).collect(),
+        relations: (1..=c.relations.len()).map(|k| format!("R{k}")).collect(),
+    })));
     let mut sections = vec![Section {
         number: 1,
         title: "Structure".into(),

@@ -78,6 +78,13 @@ pub struct Section {
     pub entries: Vec<Entry>,
 }
 
+impl Section {
+    /// The entries the prose formats show, in order (all but [`Entry::Data`]).
+    pub fn shown_entries(&self) -> impl Iterator<Item = &Entry> {
+        self.entries.iter().filter(|e| e.is_shown())
+    }
+}
+
 /// One item of a section, computed.
 #[derive(Clone, Debug)]
 pub enum Entry {
@@ -98,6 +105,102 @@ pub enum Entry {
     Tower(TowerResult),
     /// A certified Jacobian rank.
     Rank(RankResult),
+    /// What a search or a closure looked through and found, as data for the JSON; the prose
+    /// formats say the same in the entries around it, and show nothing for this one.
+    Data(Facts),
+}
+
+impl Entry {
+    /// Whether the prose formats (text, Markdown, LaTeX) show the entry: all but [`Entry::Data`].
+    pub fn is_shown(&self) -> bool {
+        !matches!(self, Entry::Data(_))
+    }
+}
+
+/// The facts of a discovery, as the JSON gives them (`searches`, `closures`).
+#[derive(Clone, Debug)]
+pub enum Facts {
+    /// Of `superint search`.
+    Search(SearchFacts),
+    /// Of `superint closure`.
+    Closure(ClosureFacts),
+}
+
+/// How the linear algebra of a search or closure treated the parameters.
+#[derive(Clone, Debug, Default)]
+pub struct ParameterFacts {
+    /// The parameters given values for the linear algebra, with them (`M`, `1`), in the
+    /// file's names.
+    pub fixed: Vec<(String, String)>,
+    /// The parameters kept symbolic, in the file's names.
+    pub symbolic: Vec<String>,
+    /// The total degree in the symbolic parameters, when there are any.
+    pub symbolic_degree: Option<u32>,
+    /// The condition, as printed, if any.
+    pub condition: Option<String>,
+}
+
+/// What `superint search` searched and found.
+#[derive(Clone, Debug)]
+pub struct SearchFacts {
+    /// The bounds of the space.
+    pub space: brackets::search::SearchSpace,
+    /// Its coordinates, momenta and angles, and the momenta of angles the condition fixes,
+    /// left out (file names).
+    pub coordinates: Vec<String>,
+    /// See [`SearchFacts::coordinates`].
+    pub momenta: Vec<String>,
+    /// See [`SearchFacts::coordinates`].
+    pub angles: Vec<String>,
+    /// See [`SearchFacts::coordinates`].
+    pub left_out: Vec<String>,
+    /// The parameters and the condition.
+    pub parameters: ParameterFacts,
+    /// The linear system: unknowns, equations, independent blocks, unknowns of the largest.
+    pub unknowns: usize,
+    /// See [`SearchFacts::unknowns`].
+    pub equations: usize,
+    /// See [`SearchFacts::unknowns`].
+    pub blocks: usize,
+    /// See [`SearchFacts::unknowns`].
+    pub largest_block: usize,
+    /// The dimension of the space of integrals.
+    pub dimension: usize,
+    /// `by_momenta_degree[j]`: the dimension of the integrals of momenta degree `≤ j`.
+    pub by_momenta_degree: Vec<usize>,
+    /// `counts[j][k]`: basis integrals of momenta degree exactly `j` and trigonometric order `k`.
+    pub counts: Vec<Vec<usize>>,
+    /// How many basis integrals are proved for every value of the parameters (the others hold
+    /// at the fixed values).
+    pub for_every_value: usize,
+    /// The ids of the integrals shown as claims (`I1`, …).
+    pub shown: Vec<String>,
+    /// With `--new-only`: the known integrals, the products formed, and the dimension they
+    /// generate.
+    pub new_only: Option<brackets::search::NewIntegrals>,
+}
+
+/// What `superint closure` found.
+#[derive(Clone, Debug)]
+pub struct ClosureFacts {
+    /// The generators, in the file's names.
+    pub generators: Vec<String>,
+    /// The degree bound.
+    pub degree: u32,
+    /// The monomials of degree `≤ degree` in the generators, and the dimension of their span.
+    pub monomials: usize,
+    /// See [`ClosureFacts::monomials`].
+    pub rank: usize,
+    /// The parameters and the condition.
+    pub parameters: ParameterFacts,
+    /// The pairs of generators whose bracket is no polynomial of the degree in them.
+    pub outside: Vec<(String, String)>,
+    /// How many brackets and relations hold at the fixed values only.
+    pub unlifted: usize,
+    /// The ids of the brackets (`B1`, …) and of the relations (`R1`, …) shown as claims.
+    pub brackets: Vec<String>,
+    /// See [`ClosureFacts::brackets`].
+    pub relations: Vec<String>,
 }
 
 /// Displayed equations.

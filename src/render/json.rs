@@ -35,8 +35,20 @@
 //!                "minor": { "rows": [names], "columns": [names], "value": string },
 //!                "point": [ { "variable", "value" } | { "variable", "cos", "sin" } ],
 //!                "upper_bound": { "kind": "size" | "vanishing_minors", "minors": int | null },
-//!                "outcome" } ]
+//!                "outcome" } ],
+//!   "searches": [ { "section", "space": { "momenta_degree", "positions_degree", "trig_degree",
+//!                   "laurent", "coordinates", "momenta", "angles", "left_out" },
+//!                   "parameters", "unknowns", "equations", "blocks", "largest_block",
+//!                   "dimension", "by_momenta_degree": [int] (≤ j), "counts": [[int]]
+//!                   (momenta degree exactly j, order k), "for_every_value": int,
+//!                   "shown": [ids], "new_only": { "known", "products", "generated" } | null } ],
+//!   "closures": [ { "section", "generators", "degree", "monomials", "rank", "parameters",
+//!                   "closes": bool, "outside": [[a, b]], "unlifted": int,
+//!                   "brackets": [ids], "relations": [ids] } ]
 //! }
+//!
+//! where a search's or closure's "parameters" is `{ "fixed": [ { "parameter", "value" } ],
+//! "symbolic": [names], "symbolic_degree": int | null, "condition": string | null }`.
 //! ```
 //!
 //! Exact numbers (minor values, point coordinates) are strings, so that no reader rounds them;
@@ -48,7 +60,10 @@ use serde_json::{json, Value};
 use trigpoly::{Expr, Style, VarKind};
 
 use super::{plain, Options};
-use crate::report::{ClaimKind, ClaimResult, Entry, RankResult, Report};
+use crate::report::{
+    ClaimKind, ClaimResult, ClosureFacts, Entry, Facts, ParameterFacts, RankResult, Report,
+    SearchFacts,
+};
 use brackets::UpperBound;
 
 /// The schema's name and version.
@@ -82,6 +97,8 @@ pub fn value(report: &Report, options: &Options) -> Value {
     let mut towers = Vec::new();
     let mut proofs = Vec::new();
     let mut ranks = Vec::new();
+    let mut searches = Vec::new();
+    let mut closures = Vec::new();
     for s in &report.sections {
         let sec = s.number;
         let claim = |c: &ClaimResult| claim(c, sec, seconds(c.seconds));
@@ -144,6 +161,8 @@ pub fn value(report: &Report, options: &Options) -> Value {
                     claims.push(claim(&r.claim));
                     ranks.push(rank(r, sec));
                 }
+                Entry::Data(Facts::Search(f)) => searches.push(search(f, sec)),
+                Entry::Data(Facts::Closure(f)) => closures.push(closure(f, sec)),
             }
         }
     }
@@ -174,6 +193,8 @@ pub fn value(report: &Report, options: &Options) -> Value {
         "towers": towers,
         "proofs": proofs,
         "ranks": ranks,
+        "searches": searches,
+        "closures": closures,
     })
 }
 
@@ -231,5 +252,65 @@ fn rank(r: &RankResult, section: u32) -> Value {
             UpperBound::VanishingMinors { count } => json!({"kind": "vanishing_minors", "minors": count}),
         },
         "outcome": if r.claim.proved { "proved" } else { "refuted" },
+    })
+}
+
+/// The parameters of a search or closure: `{"fixed": [{"parameter", "value"}], "symbolic",
+/// "symbolic_degree", "condition"}`.
+fn parameters(p: &ParameterFacts) -> Value {
+    json!({
+        "fixed": p.fixed.iter().map(|(name, value)| json!({"parameter": name, "value": value}))
+            .collect::<Vec<_>>(),
+        "symbolic": p.symbolic,
+        "symbolic_degree": p.symbolic_degree,
+        "condition": p.condition,
+    })
+}
+
+fn search(f: &SearchFacts, section: u32) -> Value {
+    let s = &f.space;
+    json!({
+        "section": section,
+        "space": {
+            "momenta_degree": s.momenta_degree,
+            "positions_degree": s.positions_degree,
+            "trig_degree": s.trig_degree,
+            "laurent": s.laurent,
+            "coordinates": f.coordinates,
+            "momenta": f.momenta,
+            "angles": f.angles,
+            "left_out": f.left_out,
+        },
+        "parameters": parameters(&f.parameters),
+        "unknowns": f.unknowns,
+        "equations": f.equations,
+        "blocks": f.blocks,
+        "largest_block": f.largest_block,
+        "dimension": f.dimension,
+        "by_momenta_degree": f.by_momenta_degree,
+        "counts": f.counts,
+        "for_every_value": f.for_every_value,
+        "shown": f.shown,
+        "new_only": f.new_only.as_ref().map(|n| json!({
+            "known": n.known,
+            "products": n.products,
+            "generated": n.generated,
+        })),
+    })
+}
+
+fn closure(f: &ClosureFacts, section: u32) -> Value {
+    json!({
+        "section": section,
+        "generators": f.generators,
+        "degree": f.degree,
+        "monomials": f.monomials,
+        "rank": f.rank,
+        "parameters": parameters(&f.parameters),
+        "closes": f.outside.is_empty(),
+        "outside": f.outside.iter().map(|(a, b)| json!([a, b])).collect::<Vec<_>>(),
+        "unlifted": f.unlifted,
+        "brackets": f.brackets,
+        "relations": f.relations,
     })
 }

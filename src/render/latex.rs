@@ -33,7 +33,7 @@ pub fn render(report: &Report, options: &Options) -> String {
         let title = markup(&s.title).replace('/', r"/\allowbreak{}");
         out.push(format!(r"\section*{{{}\quad {title}}}", s.number));
         let mut rows: Vec<String> = Vec::new();
-        for e in &s.entries {
+        for e in s.shown_entries() {
             if let Entry::Claim(c) = e {
                 rows.extend(claim_rows(c));
                 continue;
@@ -223,6 +223,7 @@ fn entry(out: &mut Vec<String>, e: &Entry) {
         Entry::Proof(p) => proof(out, p),
         Entry::Tower(t) => tower(out, t),
         Entry::Rank(r) => rank(out, r),
+        Entry::Data(_) => {}
     }
 }
 

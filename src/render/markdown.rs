@@ -19,7 +19,7 @@ pub fn render(report: &Report, options: &Options) -> String {
     for s in &report.sections {
         blocks.push(format!("## {}. {}", s.number, s.title));
         let mut list: Vec<String> = Vec::new();
-        for e in &s.entries {
+        for e in s.shown_entries() {
             if let Entry::Claim(c) = e {
                 list.push(claim(c));
                 continue;
@@ -53,6 +53,7 @@ fn entry(e: &Entry) -> String {
         Entry::Proof(p) => proof(p),
         Entry::Tower(t) => tower(t),
         Entry::Rank(r) => rank(r),
+        Entry::Data(_) => String::new(),
     }
 }
 

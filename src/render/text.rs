@@ -30,7 +30,7 @@ pub fn render(report: &Report, options: &Options) -> String {
         // Entries are blocks separated by a blank line, except that consecutive claims form
         // one block and a heading sits right on its block.
         let mut previous: Option<&Entry> = None;
-        for e in &s.entries {
+        for e in s.shown_entries() {
             let joined = matches!(
                 (previous, e),
                 (Some(Entry::Claim(_)), Entry::Claim(_)) | (Some(Entry::Heading(_)), _)
@@ -63,6 +63,7 @@ fn entry(out: &mut Vec<String>, e: &Entry) {
         Entry::Proof(p) => proof(out, p),
         Entry::Tower(t) => tower(out, t),
         Entry::Rank(r) => rank(out, r),
+        Entry::Data(_) => {}
     }
 }
 

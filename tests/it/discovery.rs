@@ -1317,3 +1317,175 @@ fn smorodinsky_winternitz_quadratic_algebra_with_symbolic_parameters() {
         assert!(stderr.contains(message), "{stderr}");
     }
 }
+
+/// Runs a command with `--format json --no-timings`, expects exit 0, returns the JSON and the
+/// command's text (the same command without `--format json`).
+fn json_and_text(args: &[&str]) -> (serde_json::Value, String) {
+    let mut with_json = args.to_vec();
+    with_json.extend(["--format", "json", "--no-timings"]);
+    let o = superint(&with_json);
+    assert_eq!(o.status.code(), Some(0), "{args:?}");
+    let v = serde_json::from_slice(&o.stdout).expect("JSON");
+    let mut with_text = args.to_vec();
+    with_text.push("--no-timings");
+    let o = superint(&with_text);
+    assert_eq!(o.status.code(), Some(0), "{args:?}");
+    (v, normalize(&String::from_utf8(o.stdout).expect("UTF-8")))
+}
+
+/// The ids of a JSON report's claims.
+fn claim_ids(v: &serde_json::Value) -> Vec<String> {
+    v["claims"]
+        .as_array()
+        .expect("claims")
+        .iter()
+        .map(|c| c["id"].as_str().expect("an id").to_string())
+        .collect()
+}
+
+/// A script reads what a search searched and found from its JSON `searches`, the same
+/// numbers the text states: the space, the linear system, the parameters fixed, the
+/// dimensions, and which integrals the claims show.
+#[test]
+fn search_json_gives_the_space_and_dimensions_as_data() {
+    let (v, text) = json_and_text(&[
+        "search",
+        "systems/harmonic-rotor.toml",
+        "--when",
+        "p_theta = I*omega",
+        "--momenta-degree",
+        "1",
+        "--positions-degree",
+        "1",
+        "--trig-degree",
+        "1",
+    ]);
+    let searches = v["searches"].as_array().expect("searches");
+    assert_eq!(searches.len(), 1);
+    let s = &searches[0];
+    let space = &s["space"];
+    assert_eq!(
+        (&space["momenta_degree"], &space["positions_degree"]),
+        (&1.into(), &1.into())
+    );
+    assert_eq!(space["coordinates"], serde_json::json!(["x", "y"]));
+    assert_eq!(space["momenta"], serde_json::json!(["p_x", "p_y"]));
+    assert_eq!(space["left_out"], serde_json::json!(["p_theta"]));
+    let said = format!(
+        "{} unknowns, {} linear equations over Q, in {} independent blocks (the largest has {} \
+         unknowns)",
+        s["unknowns"], s["equations"], s["blocks"], s["largest_block"]
+    );
+    assert!(text.contains(&said), "{said}\n{text}");
+    let fixed: Vec<(&str, &str)> = s["parameters"]["fixed"]
+        .as_array()
+        .expect("fixed")
+        .iter()
+        .map(|p| {
+            (
+                p["parameter"].as_str().unwrap(),
+                p["value"].as_str().unwrap(),
+            )
+        })
+        .collect();
+    assert_eq!(fixed, [("M", "1"), ("omega", "1"), ("I", "1")]);
+    assert_eq!(s["parameters"]["condition"], "p_θ = Iω");
+    // Six integrals, all lifted to every value; one of degree 0 and five of degree 1.
+    let dimension = s["dimension"].as_u64().expect("dimension");
+    assert!(
+        text.contains(&format!(
+            "Dimension of the space of integrals: {dimension}."
+        )),
+        "{text}"
+    );
+    assert_eq!(dimension, 6);
+    assert_eq!(s["by_momenta_degree"], serde_json::json!([1, 6]));
+    let counted: u64 = s["counts"]
+        .as_array()
+        .expect("counts")
+        .iter()
+        .flat_map(|row| row.as_array().expect("a row"))
+        .map(|c| c.as_u64().expect("a count"))
+        .sum();
+    assert_eq!(counted, dimension);
+    assert_eq!(s["for_every_value"], 6);
+    assert_eq!(s["new_only"], serde_json::Value::Null);
+    let shown: Vec<String> = serde_json::from_value(s["shown"].clone()).expect("ids");
+    assert_eq!(shown, claim_ids(&v));
+}
+
+/// With `--new-only`, `shown` lists the new integrals, which are the claims, and `new_only`
+/// says what generated the rest: the generated span and the new ones fill the space.
+#[test]
+fn search_json_new_only_accounts_for_the_whole_space() {
+    let (v, text) = json_and_text(&[
+        "search",
+        "systems/harmonic-rotor.toml",
+        "--when",
+        "p_theta = I*omega",
+        "--new-only",
+    ]);
+    let s = &v["searches"][0];
+    let new = &s["new_only"];
+    assert_eq!(new["known"], serde_json::json!(["H", "L", "G1", "G2"]));
+    let shown: Vec<String> = serde_json::from_value(s["shown"].clone()).expect("ids");
+    assert_eq!(
+        new["generated"].as_u64().unwrap() + shown.len() as u64,
+        s["dimension"].as_u64().unwrap()
+    );
+    assert!(text.contains(&format!(
+        "({} products formed); the generated ones span {} of the {} dimensions",
+        new["products"], new["generated"], s["dimension"]
+    )));
+    // The claims: one per new integral, and the one that covers the rest of the basis.
+    let ids = claim_ids(&v);
+    assert_eq!(ids[..shown.len()], shown[..]);
+    assert_eq!(ids[shown.len()..], ["basis".to_string()]);
+}
+
+/// A closure's JSON `closures` says whether the table closes, which brackets fall outside
+/// (by the generators' names), and lists the ids of the brackets and relations it proved.
+#[test]
+fn closure_json_says_what_closes_and_what_does_not() {
+    let (v, _) = json_and_text(&[
+        "closure",
+        "systems/smorodinsky-winternitz-i.toml",
+        "H",
+        "Hx",
+        "L",
+    ]);
+    let c = &v["closures"][0];
+    assert_eq!(c["generators"], serde_json::json!(["H", "Hx", "L"]));
+    assert_eq!(c["closes"], false);
+    assert_eq!(c["outside"], serde_json::json!([["H", "L"], ["Hx", "L"]]));
+    let (v, _) = json_and_text(&[
+        "closure",
+        "systems/smorodinsky-winternitz-i.toml",
+        "H",
+        "Hx",
+        "X",
+        "--define",
+        "C={Hx, X}",
+        "C",
+        "--degree",
+        "3",
+        "--symbolic",
+        "alpha,beta,gamma",
+        "--parameters-degree",
+        "3",
+    ]);
+    let c = &v["closures"][0];
+    assert_eq!(c["closes"], true);
+    assert_eq!(c["unlifted"], 0);
+    let p = &c["parameters"];
+    assert_eq!(p["symbolic"], serde_json::json!(["alpha", "beta", "gamma"]));
+    assert_eq!(p["symbolic_degree"], 3);
+    assert_eq!(
+        p["fixed"],
+        serde_json::json!([{"parameter": "M", "value": "1"}])
+    );
+    let mut ids: Vec<String> = serde_json::from_value(c["brackets"].clone()).expect("ids");
+    ids.extend(serde_json::from_value::<Vec<String>>(c["relations"].clone()).expect("ids"));
+    assert_eq!(ids, claim_ids(&v));
+    assert_eq!(ids, ["B1", "B2", "B3", "R1"]);
+}
