@@ -47,12 +47,14 @@ pub struct PlotArgs {
     /// What to draw: names, family instances or expressions of the file.
     #[arg(value_name = "CURVES", required = true)]
     curves: Vec<String>,
-    /// The parameters' values, such as 'M = 1, omega = 3/2' (exact numbers).
+    /// The parameters' values, such as 'M = 1, omega = 3/2' (numbers: fractions, or decimals
+    /// such as 1.5 or 2.5e-3, read as the fractions they write).
     #[arg(long, value_name = "VALUES")]
     at: Option<String>,
     /// The starting point: a value for every coordinate, angle and momentum, such as
-    /// 'x = 1, y = 0, theta = 0, p_x = 0, p_y = 1, p_theta = I*omega' (exact; parameters
-    /// allowed). Give it again for more orbits in the same chart.
+    /// 'x = 1, y = 0, theta = 0, p_x = 0, p_y = 1, p_theta = I*omega' (a value is a number,
+    /// fraction or decimal, or an expression in the parameters). Give it again for more orbits
+    /// in the same chart.
     #[arg(long, value_name = "POINT", required = true)]
     from: Vec<String>,
     /// How long to follow the motion.
@@ -170,6 +172,18 @@ struct Orbit {
     times: Vec<f64>,
     axis: Vec<f64>,
     rows: Vec<Series>,
+}
+
+impl Orbit {
+    /// The rows the table lists: `H`, unless it is one of the curves too (`plot FILE H L`),
+    /// and each curve.
+    fn listed(&self) -> &[Series] {
+        let (h, curves) = self.rows.split_first().expect("H is the first row");
+        match curves.iter().any(|c| c.label == h.label) {
+            true => curves,
+            false => &self.rows,
+        }
+    }
 }
 
 /// A function ready to evaluate along trajectories, with its label.
@@ -476,7 +490,7 @@ fn method(args: &PlotArgs, orbits: &[Orbit], section: Option<&str>) -> String {
 fn text(title: &str, how: &str, orbits: &[Orbit]) -> String {
     let cells: Vec<[String; 6]> = orbits
         .iter()
-        .flat_map(|o| &o.rows)
+        .flat_map(Orbit::listed)
         .map(|s| {
             let [a, b, c, d, e] = stats(s).map(number);
             [s.label.clone(), a, b, c, d, e]
@@ -512,7 +526,7 @@ fn markdown(title: &str, how: &str, orbits: &[Orbit]) -> String {
     let mut out = format!("## {title}\n\n{how}\n\n");
     out.push_str("| function | first | last | least | greatest | largest change |\n");
     out.push_str("|---|---:|---:|---:|---:|---:|\n");
-    for s in orbits.iter().flat_map(|o| &o.rows) {
+    for s in orbits.iter().flat_map(Orbit::listed) {
         let [a, b, c, d, e] = stats(s).map(number);
         let _ = writeln!(out, "| {} | {a} | {b} | {c} | {d} | {e} |", s.label);
     }
@@ -523,7 +537,7 @@ fn json(title: &str, args: &PlotArgs, orbits: &[Orbit], section: Option<&str>) -
     let functions: Vec<serde_json::Value> = orbits
         .iter()
         .enumerate()
-        .flat_map(|(k, o)| o.rows.iter().map(move |s| (k, s)))
+        .flat_map(|(k, o)| o.listed().iter().map(move |s| (k, s)))
         .map(|(k, s)| {
             let [first, last, least, greatest, change] = stats(s);
             serde_json::json!({

@@ -260,6 +260,7 @@ pub(crate) fn parse_condition(
         what: "a condition",
         kinds: "a coordinate, a momentum or a parameter",
         usage,
+        decimals: false,
     };
     let assignments = parse_assignments(file, source, pieces, &form, admit)?;
     let text = assignments
@@ -297,6 +298,44 @@ pub(crate) struct AssignmentForm<'a> {
     pub kinds: &'a str,
     /// How one reads, with an example.
     pub usage: &'a str,
+    /// Whether a right side may be a decimal number (`0.25`, `−1.5`, `2.5e-3`), read as the
+    /// fraction it writes: the numbers of `plot`. An expression is still exact fractions only.
+    pub decimals: bool,
+}
+
+/// The fraction a decimal number writes exactly (`−1.25` is `−5/4`, `2.5e-3` is `1/400`):
+/// an optional sign, digits with a decimal point or an exponent (`e` or `E`, at most 4 digits).
+/// `None` for anything else, integers without an exponent included (the parser reads those).
+pub(crate) fn decimal_number(s: &str) -> Option<trigpoly::Rational> {
+    let (negative, s) = match s.strip_prefix(['-', '+', '−']) {
+        Some(rest) => (s.starts_with(['-', '−']), rest),
+        None => (false, s),
+    };
+    let (mantissa, exponent) = match s.split_once(['e', 'E']) {
+        Some((m, e)) => {
+            let digits = e.strip_prefix(['-', '+']).unwrap_or(e);
+            if digits.is_empty() || digits.len() > 4 || !digits.bytes().all(|b| b.is_ascii_digit())
+            {
+                return None;
+            }
+            (m, e.parse::<i64>().ok()?)
+        }
+        None if s.contains('.') => (s, 0),
+        None => return None,
+    };
+    let (whole, fraction) = mantissa.split_once('.').unwrap_or((mantissa, ""));
+    let digits = format!("{whole}{fraction}");
+    if digits.is_empty() || !digits.bytes().all(|b| b.is_ascii_digit()) {
+        return None;
+    }
+    let scale = exponent - fraction.len() as i64;
+    let power = |k: i64| format!("1{}", "0".repeat(k.unsigned_abs() as usize));
+    let sign = if negative { "-" } else { "" };
+    let text = match scale {
+        k if k >= 0 => format!("{sign}{digits}{}", &power(k)[1..]),
+        k => format!("{sign}{digits}/{}", power(k)),
+    };
+    text.parse().ok()
 }
 
 /// One `var = value` of a list such as a condition: the variable, its exact value, how it
@@ -374,13 +413,31 @@ pub(crate) fn parse_assignments(
                 format!("'{}' is fixed twice", lhs.value.trim()),
             ));
         }
-        let rhs_tree = scope.tree(source, &rhs)?;
-        let value = scope.lower(source, &rhs, &rhs_tree)?;
-        let shown = format!(
-            "{} = {}",
-            vars.variable(var).unicode(),
-            file.pretty(&rhs_tree)
-        );
+        let name = vars.variable(var).unicode();
+        let decimal = form
+            .decimals
+            .then(|| decimal_number(rhs.value.trim()))
+            .flatten();
+        let (value, shown) = match decimal {
+            Some(q) => (
+                Expr::constant(vars, q.into()),
+                format!("{name} = {}", rhs.value.trim()),
+            ),
+            None => {
+                let rhs_tree = scope.tree(source, &rhs).map_err(|mut e| {
+                    if form.decimals && e.message.starts_with("decimal numbers") {
+                        e.hint = Some(
+                            "a value alone may be a decimal number (x = 0.5); in an expression, \
+                             write fractions (x = 2/3 + 1/2)"
+                                .into(),
+                        );
+                    }
+                    e
+                })?;
+                let value = scope.lower(source, &rhs, &rhs_tree)?;
+                (value, format!("{name} = {}", file.pretty(&rhs_tree)))
+            }
+        };
         assignments.push(Assignment {
             var,
             value,
@@ -491,5 +548,43 @@ impl LoadedSystem {
                 .timed(start.elapsed().as_secs_f64()),
             certificate: cert,
         })
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::decimal_number;
+
+    #[test]
+    fn a_decimal_number_is_the_fraction_it_writes() {
+        for (written, fraction) in [
+            ("0.5", "1/2"),
+            ("-1.25", "-5/4"),
+            ("−0.75", "-3/4"),
+            ("+.1", "1/10"),
+            ("2.", "2"),
+            ("2.5e-3", "1/400"),
+            ("1E3", "1000"),
+            ("-3e+2", "-300"),
+            ("0.000", "0"),
+            (
+                "123456789012345678901234567890.1",
+                "1234567890123456789012345678901/10",
+            ),
+        ] {
+            assert_eq!(
+                decimal_number(written).map(|q| q.to_string()),
+                Some(fraction.to_string()),
+                "{written}"
+            );
+        }
+        // Integers are the parser's; the rest is no decimal number (the exponent's digits
+        // are bounded, so that `1e99999` builds no huge number).
+        for other in [
+            "3", ".", "-", "e5", "1e", "1e+", "1.5.2", "1e99999", "x", "1/2", "0x10", "1_0.5",
+            " 1.5",
+        ] {
+            assert_eq!(decimal_number(other), None, "{other}");
+        }
     }
 }

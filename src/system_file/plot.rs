@@ -140,6 +140,7 @@ impl LoadedSystem {
             what: "a value of --at",
             kinds: "a parameter",
             usage: "--at reads `parameter = number, …`, such as \"M = 1, omega = 3/2\"",
+            decimals: true,
         };
         let admit = |v: Var| {
             let kind = self.system.vars().variable(v).kind();
@@ -175,6 +176,7 @@ impl LoadedSystem {
             what: "a value of --from",
             kinds: "a coordinate, an angle or a momentum",
             usage: "--from reads `variable = value, …`, such as \"x = 1, p_y = 1/2\"",
+            decimals: true,
         };
         let admit = |v: Var| {
             (self.system.vars().variable(v).kind() == VarKind::Parameter).then(|| {

@@ -1112,3 +1112,74 @@ fn cli_plot_time_takes_a_fraction() {
     assert_eq!(half["accurate"], true);
     assert!(half["energy_drift"][0].as_f64().is_some_and(|d| d < 1e-3));
 }
+
+/// `plot` reads a decimal value as the fraction it writes, so that the same orbit follows
+/// from `y = 0.1` and `y = 1/10`; a decimal inside an expression is refused with a hint, and
+/// `H` asked for as a curve is listed once.
+#[test]
+fn cli_plot_values_may_be_decimals() {
+    let svg = scratch_file("decimals.svg");
+    let json = |at: &str, from: &str, curves: &[&str]| {
+        let mut args = vec!["plot", "systems/henon-heiles.toml"];
+        args.extend(curves);
+        args.extend([
+            "--at",
+            at,
+            "--from",
+            from,
+            "--time",
+            "1",
+            "--steps",
+            "50",
+            "-o",
+            svg.to_str().unwrap(),
+            "--format",
+            "json",
+        ]);
+        serde_json::from_str::<Value>(&run(&args, 0)).expect("JSON")
+    };
+    let fractions = json(
+        "A = 1, B = 1, C = -1/4",
+        "x = 0, y = 1/10, p_x = 2/5, p_y = -1/1000",
+        &["p_y"],
+    );
+    let decimals = json(
+        "A = 1.0, B = 1, C = −0.25",
+        "x = 0, y = .1, p_x = 4e-1, p_y = -1E-3",
+        &["p_y"],
+    );
+    assert_eq!(fractions["functions"], decimals["functions"]);
+    assert_eq!(decimals["at"], "A = 1.0, B = 1, C = −0.25");
+    let with_h = json(
+        "A = 1, B = 1, C = -1/4",
+        "x = 0, y = 1/10, p_x = 2/5, p_y = 0",
+        &["H", "p_y"],
+    );
+    let labels: Vec<&str> = with_h["functions"]
+        .as_array()
+        .expect("functions")
+        .iter()
+        .map(|f| f["function"].as_str().expect("a label"))
+        .collect();
+    assert_eq!(labels, ["H", "p_y"]);
+    let out = superint(&[
+        "plot",
+        "systems/henon-heiles.toml",
+        "p_y",
+        "--at",
+        "A = 1, B = 1, C = 2*0.5",
+        "--from",
+        "x = 0, y = 1/10, p_x = 2/5, p_y = 0",
+        "--time",
+        "1",
+        "-o",
+        svg.to_str().unwrap(),
+    ]);
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert_eq!(out.status.code(), Some(2), "{stderr}");
+    assert!(
+        stderr.contains("<command line>:1:21: decimal numbers are not exact")
+            && stderr.contains("hint: a value alone may be a decimal number (x = 0.5)"),
+        "{stderr}"
+    );
+}
