@@ -1489,3 +1489,42 @@ fn closure_json_says_what_closes_and_what_does_not() {
     assert_eq!(ids, claim_ids(&v));
     assert_eq!(ids, ["B1", "B2", "B3", "R1"]);
 }
+
+/// With `H` depending on an angle, the `e^{ikψ}` components of an integral are no integrals
+/// (the energy `p_x²/2 + p_ψ²/2 + cos ψ` of a pendulum beside a free particle has `cos ψ` as
+/// one), so `--new-only` generates from whole integrals: of the nine integrals up to degree 4
+/// in the momenta, only `p_x` is new. From components, the span filled up with products that
+/// are no integrals, stopped early, and called `p_x(2H − p_x²)` and `(2H − p_x²)² − 2` new.
+#[test]
+fn new_integrals_of_an_angle_dependent_hamiltonian_are_generated_from_whole_integrals() {
+    let file = crate::scratch_text(
+        "discovery",
+        "pendulum-free.toml",
+        "name = \"pendulum and free particle\"\nhamiltonian = \"p_x^2/2 + p_psi^2/2 + cos(psi)\"\n\
+         [phase_space]\ncoordinates = [\"x\"]\nangles = [\"psi\"]\n",
+    );
+    let file = file.to_str().expect("a UTF-8 path");
+    for exact in [false, true] {
+        let mut args = vec![
+            "search",
+            file,
+            "--momenta-degree",
+            "4",
+            "--positions-degree",
+            "0",
+            "--trig-degree",
+            "4",
+            "--new-only",
+        ];
+        if exact {
+            args.push("--exact-complement");
+        }
+        let (v, text) = json_and_text(&args);
+        assert!(
+            text.contains("the generated ones span 8 of the 9 dimensions"),
+            "{text}"
+        );
+        assert!(text.contains("New integrals: I2 = p_x {I2, H} = 0"), "{text}");
+        assert_eq!(v["searches"][0]["shown"], serde_json::json!(["I2"]));
+    }
+}

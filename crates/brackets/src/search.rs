@@ -687,8 +687,14 @@ impl Problem {
         self.apply_condition(system.bracket(f, &self.h)?)
     }
 
-    /// The `e^{ik·θ}` components `f_k e^{ik·θ}` of `f`, one per `k`.
-    fn components(&self, f: &Expr) -> Result<Vec<Expr>, EngineError> {
+    /// The integrals an integral `f` splits into: its `e^{ik·θ}` components `f_k e^{ik·θ}`,
+    /// one per `k`, when `H` does not depend on the angles (the flow then keeps `k`, so each
+    /// component is an integral); `f` itself when it does (the components of the energy of a
+    /// pendulum, `p²/2` and `e^{±iψ}/2`, are none).
+    fn integral_components(&self, f: &Expr) -> Result<Vec<Expr>, EngineError> {
+        if self.variables.angles.iter().any(|&a| self.h.contains(a)) {
+            return Ok(vec![f.clone()]);
+        }
         type Terms = Vec<(GaussianRational, Vec<i64>)>;
         let mut groups: Vec<(Vec<i64>, Terms)> = Vec::new();
         for t in f.terms() {
@@ -1423,8 +1429,9 @@ fn new_integrals(
     })
 }
 
-/// A generator of what is generated: an `e^{ik·θ}` component of an integral (each component
-/// of an integral is one, since the flow keeps `k`), made monic. Complex components multiply
+/// A generator of what is generated: an integral, or an `e^{ik·θ}` component of one when `H`
+/// does not depend on the angles (each component is then an integral, since the flow keeps
+/// `k`; see [`Problem::integral_components`]), made monic. Complex components multiply
 /// without the cancellations of real ones (`Re(J Q̄)` lies in the space when `Re J · Re Q`
 /// does not).
 struct Generator {
@@ -1453,7 +1460,7 @@ fn generators<'a>(
         if degree == 0 {
             continue;
         }
-        for c in problem.components(f)? {
+        for c in problem.integral_components(f)? {
             let Some(lead) = c.terms().next().map(|t| t.coeff()) else {
                 continue;
             };
