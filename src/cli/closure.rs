@@ -60,7 +60,8 @@ pub struct ClosureArgs {
     #[arg(long, value_name = "S", default_value_t = 2, requires = "symbolic",
           value_parser = clap::value_parser!(u32).range(0..=6))]
     parameters_degree: u32,
-    /// A generator given by its expression, NAME=EXPR (repeatable).
+    /// A generator given by its expression, NAME=EXPR (repeatable), NAME a name the system
+    /// does not have.
     #[arg(long, value_name = "NAME=EXPR")]
     define: Vec<String>,
     #[command(flatten)]
@@ -110,10 +111,27 @@ pub fn run(job: &ClosureJob) -> anyhow::Result<bool> {
         let e = subject
             .parse(value.trim())
             .map_err(|e| anyhow!("--define {}: {e}", name.trim()))?;
-        if defined.iter().any(|(n, _)| n == name.trim()) {
-            bail!("--define gives {} twice", name.trim());
+        let name = name.trim();
+        if defined.iter().any(|(n, _)| n == name) {
+            bail!("--define gives {name} twice");
         }
-        defined.push((name.trim().to_string(), e));
+        // A defined name that the system has already would shadow it, and the brackets
+        // found would read, in the file's names, as claims about the system's own.
+        if subject.system().vars().lookup(name).is_some() {
+            bail!("--define {name}: {name} is a variable of the system; choose another name");
+        }
+        if let Ok(known) = subject.parse(name) {
+            bail!(
+                "--define {name}: {name} is already a name of the system ({}); choose another",
+                known.render(trigpoly::Style::Unicode)
+            );
+        }
+        if !name.starts_with(|c: char| c.is_alphabetic())
+            || !name.chars().all(|c| c.is_alphanumeric() || c == '_')
+        {
+            bail!("--define '{name}': a name is letters, digits and _, starting with a letter");
+        }
+        defined.push((name.to_string(), e));
     }
     if let Some((_, name)) = names
         .iter()

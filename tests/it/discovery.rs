@@ -1233,12 +1233,34 @@ fn an_unlifted_search_says_how_to_see_every_value() {
 
 /// A generator named twice, or a definition given twice, is a mistake on the command line.
 #[test]
-fn closure_refuses_a_generator_named_twice() {
+fn closure_refuses_a_generator_named_twice_or_a_name_the_system_has() {
     for (args, message) in [
         (vec!["L", "L"], "L is named twice among the generators"),
         (
             vec!["L", "--define", "Q=x*p_y", "--define", "Q=x"],
             "--define gives Q twice",
+        ),
+        // A defined name the system has would shadow it: `{L, P_x} = P_x` with `L = x p_x`
+        // would read, in the file's names, as a claim about the angular momentum.
+        (
+            vec!["G1", "--define", "L=x*p_x"],
+            "--define L: L is already a name of the system (x p_y − y p_x); choose another",
+        ),
+        (
+            vec!["L", "--define", "H=p_x"],
+            "--define H: H is already a name of the system",
+        ),
+        (
+            vec!["L", "--define", "K_1_1=x"],
+            "--define K_1_1: K_1_1 is already a name of the system",
+        ),
+        (
+            vec!["L", "--define", "x=p_x"],
+            "--define x: x is a variable of the system; choose another name",
+        ),
+        (
+            vec!["L", "--define", "2Q=p_x"],
+            "--define '2Q': a name is letters, digits and _, starting with a letter",
         ),
     ] {
         let out = superint(&[&["closure", "systems/harmonic-rotor.toml"][..], &args].concat());
@@ -1524,7 +1546,10 @@ fn new_integrals_of_an_angle_dependent_hamiltonian_are_generated_from_whole_inte
             text.contains("the generated ones span 8 of the 9 dimensions"),
             "{text}"
         );
-        assert!(text.contains("New integrals: I2 = p_x {I2, H} = 0"), "{text}");
+        assert!(
+            text.contains("New integrals: I2 = p_x {I2, H} = 0"),
+            "{text}"
+        );
         assert_eq!(v["searches"][0]["shown"], serde_json::json!(["I2"]));
     }
 }
