@@ -28,12 +28,18 @@ impl Condition {
     ///
     /// # Panics
     ///
-    /// If `value` mentions `v`: the condition would be an equation, not a substitution.
+    /// If `value` mentions `v`: the condition would be an equation, not a substitution; and
+    /// if `v` is an angle, which functions depend on through `e^{iθ}` (setting it would set
+    /// `e^{iθ}`, not `θ`). [`Condition::all`] refuses both with an error.
     pub fn new(text: &str, v: Var, value: Expr) -> Self {
         assert!(
             !value.contains(v),
             "a condition's value mentions its variable ({text}); Condition::all refuses it \
              with an error"
+        );
+        assert!(
+            value.vars().variable(v).kind() != VarKind::Angle,
+            "a condition cannot set an angle ({text}); Condition::all refuses it with an error"
         );
         Condition {
             text: text.to_string(),
@@ -48,6 +54,16 @@ impl Condition {
     /// condition is an equation, not a substitution.
     pub fn all(text: &str, subs: Vec<(Var, Expr)>) -> Result<Self, EngineError> {
         let mut subs = subs;
+        if let Some((v, e)) = subs
+            .iter()
+            .find(|(v, e)| e.vars().variable(*v).kind() == VarKind::Angle)
+        {
+            return Err(EngineError::Invalid(format!(
+                "a condition cannot set the angle {}: functions depend on it through cos, sin \
+                 and exp, and what is set is e^{{i{0}}}",
+                e.vars().variable(*v).unicode()
+            )));
+        }
         if let Some(k) = (1..subs.len()).find(|&k| subs[..k].iter().any(|s| s.0 == subs[k].0)) {
             let name = subs[k].1.vars().variable(subs[k].0).unicode().to_string();
             return Err(EngineError::Invalid(format!(

@@ -265,4 +265,21 @@ mod tests {
         let value = rotor.parse("2*x").unwrap();
         let _ = crate::Condition::new("x = 2x", x, value);
     }
+
+    /// An angle enters functions through `e^{iθ}`: "θ = 0" would set `e^{iθ} = 0`, and then
+    /// `e^{2iθ} = 0` was proved. `Condition::all` refuses it with an error, `new` panics.
+    #[test]
+    fn a_condition_may_not_set_an_angle() {
+        let rotor = harmonic_rotor();
+        let theta = rotor.var("theta");
+        let zero = Expr::zero(rotor.vars());
+        let err = crate::Condition::all("theta = 0", vec![(theta, zero.clone())]).unwrap_err();
+        assert!(
+            err.to_string()
+                .contains("a condition cannot set the angle θ: functions depend on it through"),
+            "{err}"
+        );
+        let set = std::panic::catch_unwind(|| crate::Condition::new("theta = 0", theta, zero));
+        assert!(set.is_err());
+    }
 }
