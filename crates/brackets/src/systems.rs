@@ -353,4 +353,24 @@ mod tests {
             assert_eq!(rotor.require_rotor("the tower"), Ok(()));
         }
     }
+
+    /// The eigenfunction proof from a function that is no ladder (`{L, H} = 0`, not `iωL`)
+    /// fails, and its conclusion says that nothing follows (it stated the tower all the same).
+    #[test]
+    fn an_eigenfunction_proof_that_fails_concludes_nothing() {
+        let rotor = harmonic_rotor();
+        let proof = crate::eigen_proof(&rotor, "L").expect("the proof runs");
+        assert!(!proof.holds());
+        assert!(
+            proof.conclusion.starts_with(
+                "nothing for all m, n: the lemma needs what fails here ({L, H} = iω L; \
+                 {L, H} = −iω L)"
+            ),
+            "{}",
+            proof.conclusion
+        );
+        let proof = crate::eigen_proof(&rotor, "Z").expect("the proof runs");
+        assert!(proof.holds());
+        assert!(proof.conclusion.ends_with("conserved exactly when Ω/ω = m/n"));
+    }
 }

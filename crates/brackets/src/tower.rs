@@ -4,7 +4,7 @@
 
 use std::time::Instant;
 
-use trigpoly::{Expr, GaussianRational, Rational};
+use trigpoly::{Expr, Rational};
 
 use crate::error::EngineError;
 use crate::system::System;
@@ -80,7 +80,8 @@ pub struct EigenProof {
     pub lemma: String,
     /// A check of the derivation property the lemma rests on, on the base functions.
     pub leibniz_check: bool,
-    /// The conclusion.
+    /// The conclusion: the tower for all `m, n` when every step holds, else that nothing
+    /// follows, and why.
     pub conclusion: String,
 }
 
@@ -139,16 +140,29 @@ pub fn eigen_proof(system: &System, ladder: &str) -> Result<EigenProof, EngineEr
         .checked_mul(&system.bracket(&e, h)?)?
         .checked_add(&e.checked_mul(&system.bracket(&z, h)?)?)?;
     let leibniz_check = lhs == rhs;
-    let _ = GaussianRational::i();
+    let failed: Vec<&str> = facts
+        .iter()
+        .filter(|f| !f.holds)
+        .map(|f| f.statement.as_str())
+        .chain((!leibniz_check).then_some("the derivation property"))
+        .collect();
+    let conclusion = match failed.is_empty() {
+        true => format!(
+            "{{K_{{m,n}}, H}} = i(mω − nΩ) K_{{m,n}} and {{K̄_{{m,n}}, H}} = −i(mω − nΩ) K̄_{{m,n}} \
+             for all m, n ≥ 0 (K_{{m,n}} = {name}^m e^{{−inθ}}): conserved exactly when Ω/ω = m/n"
+        ),
+        false => format!(
+            "nothing for all m, n: the lemma needs what fails here ({}), so K_{{m,n}} = \
+             {name}^m e^{{−inθ}} is not proved conserved",
+            failed.join("; ")
+        ),
+    };
     Ok(EigenProof {
         facts,
         lemma: "the bracket is a derivation in each argument, so {A, H} = λ_A A and \
                 {B, H} = λ_B B give {A^m B^n, H} = (mλ_A + nλ_B) A^m B^n for all m, n ≥ 0"
             .into(),
         leibniz_check,
-        conclusion: format!(
-            "{{K_{{m,n}}, H}} = i(mω − nΩ) K_{{m,n}} and {{K̄_{{m,n}}, H}} = −i(mω − nΩ) K̄_{{m,n}} \
-             for all m, n ≥ 0 (K_{{m,n}} = {name}^m e^{{−inθ}}): conserved exactly when Ω/ω = m/n"
-        ),
+        conclusion,
     })
 }
