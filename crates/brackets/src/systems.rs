@@ -371,6 +371,8 @@ mod tests {
         );
         let proof = crate::eigen_proof(&rotor, "Z").expect("the proof runs");
         assert!(proof.holds());
-        assert!(proof.conclusion.ends_with("conserved exactly when Ω/ω = m/n"));
+        assert!(proof
+            .conclusion
+            .ends_with("conserved exactly when Ω/ω = m/n"));
     }
 }

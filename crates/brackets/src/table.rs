@@ -122,9 +122,17 @@ impl Entry {
                         _ => (false, text),
                     };
                     let mul = if style == Style::Ascii { "*" } else { " " };
-                    let term = match body.as_str() {
-                        "1" => name,
+                    // A term's denominator goes last, `D/M` and `3ω² D/2`: `1/M D` is read back
+                    // as ambiguous, and writes a division before a factor.
+                    let fraction = match style {
+                        Style::Latex => None,
+                        _ => body.rsplit_once('/').filter(|_| c.len() == 1),
+                    };
+                    let term = match (body.as_str(), fraction) {
+                        ("1", _) => name,
                         _ if c.len() > 1 => format!("({body}){mul}{name}"),
+                        (_, Some(("1", den))) => format!("{name}/{den}"),
+                        (_, Some((num, den))) => format!("{num}{mul}{name}/{den}"),
                         _ => format!("{body}{mul}{name}"),
                     };
                     let minus = if style == Style::Unicode { "−" } else { "-" };
@@ -256,7 +264,43 @@ pub fn express(
 
 #[cfg(test)]
 mod tests {
-    use super::latex_name;
+    use super::{latex_name, BracketTable};
+    use crate::systems::harmonic_rotor;
+    use trigpoly::Style;
+
+    /// A combination whose coefficient has a denominator writes it last, so that the cell
+    /// reads back: `{X, H} = D/M` was printed `1/M D`, which the parser refuses as ambiguous.
+    #[test]
+    fn a_coefficients_denominator_comes_last() {
+        let mut rotor = harmonic_rotor();
+        rotor.define_parsed("X", "X", "x").expect("a fresh name");
+        rotor.define_parsed("D", "D", "p_x").expect("a fresh name");
+        rotor
+            .define_parsed("E", "E", "3*omega^2*x")
+            .expect("a fresh name");
+        let table = BracketTable::compute(&rotor, &["X", "H", "D", "E"]).expect("a table");
+        let cell = |a: usize, b: usize, style| table.entries[a][b].render(style);
+        assert_eq!(cell(0, 1, Style::Unicode), "D/M");
+        assert_eq!(cell(0, 1, Style::Ascii), "D/M");
+        assert_eq!(cell(1, 0, Style::Unicode), "−D/M");
+        assert_eq!(cell(3, 1, Style::Unicode), "3ω² D/M");
+        assert_eq!(cell(3, 1, Style::Ascii), "3*omega^2*D/M");
+        assert_eq!(cell(0, 1, Style::Latex), r"\frac{1}{M} D");
+        // Each reads back as the bracket it stands for.
+        for (a, b) in [(0, 1), (1, 0), (3, 1)] {
+            let bracket = rotor
+                .bracket(
+                    &rotor.parse(&table.names[a]).unwrap(),
+                    &rotor.parse(&table.names[b]).unwrap(),
+                )
+                .unwrap();
+            for style in [Style::Unicode, Style::Ascii] {
+                let text = cell(a, b, style);
+                let read = rotor.parse(&text.replace('−', "-").replace('ω', "omega"));
+                assert_eq!(read.as_ref(), Ok(&bracket), "{text}");
+            }
+        }
+    }
 
     /// Display names in LaTeX: digits as a subscript, bars, primes, and a family instance's
     /// own subscript kept (`P_{1,1}` was written `P_{_{1,1}}`).
