@@ -33,7 +33,7 @@ use crate::claim::Condition;
 use crate::error::EngineError;
 use crate::modular::{self, Echelon, Fp, SparseVec};
 use crate::scaling::{Lifter, Scaling};
-use crate::search::{check_symbolic, fix_parameters, is_phase_free};
+use crate::search::{check_parameters, fix_parameters, is_phase_free};
 use crate::system::System;
 use crate::table::{BracketTable, Entry};
 
@@ -80,7 +80,8 @@ impl ClosureOptions {
     }
 
     /// With a parameter kept symbolic, the coefficients polynomials of total degree at most
-    /// `degree` in the symbolic parameters.
+    /// `degree` in the symbolic parameters, all of them together: the degree is one for them
+    /// all, and the last call sets it.
     pub fn symbolic(mut self, v: Var, degree: u32) -> Self {
         if !self.symbolic.contains(&v) {
             self.symbolic.push(v);
@@ -317,7 +318,7 @@ pub fn closure_of(
     // most `parameters_degree` in the monomials: a coefficient `c(p)` of `G^β` is the
     // combination of the monomials `p^ν G^β`.
     let symbolic = &options.symbolic;
-    check_symbolic(&vars, symbolic, &options.fixed)?;
+    check_parameters(&vars, symbolic, &options.fixed)?;
     if let Some(&v) = symbolic
         .iter()
         .find(|&&v| condition.is_some_and(|c| c.subs().iter().any(|(w, _)| *w == v)))

@@ -825,13 +825,23 @@ impl Components {
     }
 }
 
-/// Refuses parameters to keep symbolic that are no parameters or are also fixed to a value
-/// (a search's and a closure's `symbolic`).
-pub(crate) fn check_symbolic(
+/// Refuses values fixed for what is no parameter, and parameters to keep symbolic that are no
+/// parameters or are also fixed to a value (a search's and a closure's `fixed`, `symbolic`).
+pub(crate) fn check_parameters(
     vars: &Vars,
     symbolic: &[Var],
     fixed: &[(Var, Rational)],
 ) -> Result<(), EngineError> {
+    if let Some((v, _)) = fixed
+        .iter()
+        .find(|(v, _)| vars.variable(*v).kind() != VarKind::Parameter)
+    {
+        return Err(EngineError::Invalid(format!(
+            "only parameters are given values for the linear algebra, and {} is not one (a \
+             condition sets a variable)",
+            vars.variable(*v).name()
+        )));
+    }
     for &v in symbolic {
         let name = vars.variable(v).name();
         if vars.variable(v).kind() != VarKind::Parameter {
@@ -967,7 +977,7 @@ pub fn search(system: &System, options: &SearchOptions) -> Result<SearchResult, 
         c.kept_by_flow(system)?;
     }
     let vars = system.vars();
-    check_symbolic(vars, &options.symbolic, &options.fixed)?;
+    check_parameters(vars, &options.symbolic, &options.fixed)?;
     // The unknowns are the real coefficients of real functions, and the equations only the
     // coefficients of `e^{ik·θ}` with `k ≥ 0`: right when `{F, H}` is real, that is when `H`
     // and the condition's values are.
@@ -2132,6 +2142,16 @@ mod tests {
         let err = search(&rotor, &options).unwrap_err().to_string();
         assert!(
             err.contains("only parameters can be kept symbolic"),
+            "{err}"
+        );
+        // A value for a coordinate was ignored: the search ran as if it were not given.
+        let options =
+            SearchOptions::new(SearchSpace::new(1, 1, 0)).fix(rotor.var("x"), Rational::from(1));
+        let err = search(&rotor, &options).unwrap_err().to_string();
+        assert!(
+            err.contains(
+                "only parameters are given values for the linear algebra, and x is not one"
+            ),
             "{err}"
         );
     }

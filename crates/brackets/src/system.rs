@@ -141,7 +141,23 @@ impl System {
             .map_or(name, |f| f.display.as_str())
     }
 
-    /// A variable by name. Panics if it is not declared (a bug in a built-in system).
+    /// A variable by name, or `None` if `name` is not a variable of the system.
+    ///
+    /// ```
+    /// let rotor = brackets::systems::harmonic_rotor();
+    /// assert!(rotor.lookup("omega").is_some());
+    /// assert_eq!(rotor.lookup("nope"), None);
+    /// ```
+    pub fn lookup(&self, name: &str) -> Option<Var> {
+        self.vars().lookup(name)
+    }
+
+    /// A variable by name.
+    ///
+    /// # Panics
+    ///
+    /// If it is not declared (a bug in a built-in system); a name read from input goes
+    /// through [`System::lookup`].
     pub fn var(&self, name: &str) -> Var {
         self.vars()
             .lookup(name)
