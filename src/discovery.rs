@@ -87,6 +87,24 @@ fn parameter_facts(
     }
 }
 
+/// The first of `candidates` that names none of `count` labels `P1, P2, …` the system has as
+/// a variable or a function (`I1`, `I2` are a coupled rotor's moments of inertia): the letter
+/// of a report's numbered labels.
+fn label_letter<'a>(system: &System, candidates: &[&'a str], count: usize) -> &'a str {
+    let taken = |name: &str| {
+        system.vars().lookup(name).is_some()
+            || system
+                .functions()
+                .iter()
+                .any(|f| f.name == name || f.display == name)
+    };
+    candidates
+        .iter()
+        .copied()
+        .find(|p| !(1..=count).any(|i| taken(&format!("{p}{i}"))))
+        .unwrap_or(candidates[candidates.len() - 1])
+}
+
 /// The names of parameters, `A, B`.
 fn parameter_names(vars: &VarSet, params: &[Var]) -> String {
     params
@@ -297,10 +315,22 @@ pub fn search_report(
                 .iter()
                 .map(|(v, _)| vars.variable(*v).name())
                 .collect();
-            let others: Vec<String> = names
+            // Distinct primes, none the value a parameter has now (`--fix a=2,b=3` was told
+            // to compare with `--fix a=2,b=3`).
+            let mut primes = [2, 3, 5, 7, 11, 13, 17, 19, 23, 29, 31, 37, 41, 43, 47]
+                .into_iter()
+                .cycle();
+            let others: Vec<String> = r
+                .parameters
                 .iter()
-                .zip([2, 3, 5, 7, 11, 13, 17, 19].iter().cycle())
-                .map(|(n, p)| format!("{n}={p}"))
+                .zip(&names)
+                .map(|((_, now), n)| {
+                    let p = primes
+                        .by_ref()
+                        .find(|&p| *now != Rational::from(p))
+                        .expect("the primes cycle");
+                    format!("{n}={p}")
+                })
                 .collect();
             entries.push(Entry::Text(format!(
                 "What is not lifted holds at these values, where the system may have more \
@@ -357,6 +387,10 @@ pub fn search_report(
             )));
         }
     }
+    // The labels of the integrals, `I1, I2, …`, and of their complex forms, `A1, …`, in
+    // letters the system does not use for names of its own.
+    let letter = label_letter(system, &["I", "J", "Φ"], r.basis.len());
+    let complex = label_letter(system, &["A", "B", "Ψ"], r.basis.len());
     let name_of = |v: &Var| vars.variable(*v).name().to_string();
     let names_of = |vs: &[Var]| vs.iter().map(name_of).collect::<Vec<_>>();
     let shown_ids: Vec<String> = match &r.new {
@@ -367,7 +401,7 @@ pub fn search_report(
         },
     }
     .into_iter()
-    .map(|i| format!("I{}", i + 1))
+    .map(|i| format!("{letter}{}", i + 1))
     .collect();
     entries.push(Entry::Data(Facts::Search(SearchFacts {
         space: r.space,
@@ -443,7 +477,7 @@ pub fn search_report(
             r.basis.len()
         )));
     }
-    let label = |i: usize| format!("I{}", i + 1);
+    let label = |i: usize| format!("{letter}{}", i + 1);
     if shown.is_empty() {
         entries.push(Entry::Text(
             "None: the known integrals generate every integral in the space.".into(),
@@ -462,20 +496,20 @@ pub fn search_report(
         }));
     }
     let k = order_letter(&r.vars);
-    let complex: Vec<Equation> = shown
+    let complex_forms: Vec<Equation> = shown
         .iter()
         .filter_map(|&i| {
             complex_form(r.basis[i].expr())
-                .map(|(a, order)| Equation::new(&format!("A{} ({k} = {order})", i + 1), a))
+                .map(|(a, order)| Equation::new(&format!("{complex}{} ({k} = {order})", i + 1), a))
         })
         .collect();
-    if let (false, [theta]) = (complex.is_empty(), r.variables.angles.as_slice()) {
+    if let (false, [theta]) = (complex_forms.is_empty(), r.variables.angles.as_slice()) {
         let theta = r.vars.variable(*theta).unicode();
         entries.push(Entry::Equations(Equations {
             caption: format!(
-                "Those of trigonometric order {k} > 0 as I = Re(A e^{{−i{k}{theta}}})"
+                "Those of trigonometric order {k} > 0 as {letter} = Re({complex} e^{{−i{k}{theta}}})"
             ),
-            lines: complex,
+            lines: complex_forms,
         }));
     }
     for &i in &shown {
@@ -509,7 +543,10 @@ pub fn search_report(
         };
         let mut c = ClaimResult::derived(
             "basis",
-            &format!("{{I, H}} = 0 for the other {} basis elements", rest.len()),
+            &format!(
+                "{{{letter}, H}} = 0 for the other {} basis elements",
+                rest.len()
+            ),
             proved,
             note,
         );

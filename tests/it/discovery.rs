@@ -1553,3 +1553,30 @@ fn new_integrals_of_an_angle_dependent_hamiltonian_are_generated_from_whole_inte
         assert_eq!(v["searches"][0]["shown"], serde_json::json!(["I2"]));
     }
 }
+
+/// The labels of a search's integrals take a letter the system does not use: two coupled
+/// rotors with moments of inertia `I1`, `I2` had their integral `I2 = p_θ + p_φ` printed
+/// beside the condition `at I1 = 1, I2 = 1`. And the values it suggests to compare with are
+/// not those given (`--fix I1=2,I2=3` was told to compare with `--fix I1=2,I2=3,k=5`).
+#[test]
+fn a_searchs_labels_and_suggestions_do_not_repeat_the_systems_own() {
+    let file = crate::scratch_text(
+        "discovery",
+        "coupled-rotors.toml",
+        "name = \"two coupled rotors\"\n\
+         hamiltonian = \"p_theta^2/(2*I1) + p_phi^2/(2*I2) - k*cos(theta - phi)\"\n\
+         [phase_space]\nangles = [\"theta\", \"phi\"]\nparameters = [\"I1\", \"I2\", \"k\"]\n",
+    );
+    let file = file.to_str().expect("a UTF-8 path");
+    let (v, text) = json_and_text(&["search", file, "--fix", "I1=2,I2=3"]);
+    assert!(text.contains("J2 = p_θ + p_φ"), "{text}");
+    assert!(!text.contains("I2 = p_θ"), "{text}");
+    assert_eq!(
+        claim_ids(&v),
+        ["J1", "J2", "J3", "J4"].map(String::from).to_vec()
+    );
+    assert!(
+        text.contains("or compare with other values (--fix I1=3,I2=5,k=7)"),
+        "{text}"
+    );
+}
