@@ -98,6 +98,52 @@ pub(crate) fn wrap(s: &str, w: usize, indent: &str) -> Vec<String> {
     lines
 }
 
+/// A line of mathematics wrapped like [`wrap`], but between the terms of a sum where it can
+/// (before ` + ` and ` − ` outside parentheses): a monomial such as `x² p_y⁴` stays on one line.
+/// A term wider than a line is wrapped at its spaces.
+pub(crate) fn wrap_sum(s: &str, w: usize, indent: &str) -> Vec<String> {
+    let mut pieces: Vec<&str> = Vec::new();
+    let (mut depth, mut start) = (0i32, 0);
+    for (k, c) in s.char_indices() {
+        match c {
+            '(' | '{' | '[' => depth += 1,
+            ')' | '}' | ']' => depth -= 1,
+            '+' | '−'
+                if depth == 0
+                    && k > start
+                    && s[..k].ends_with(' ')
+                    && s[k + c.len_utf8()..].starts_with(' ') =>
+            {
+                pieces.push(&s[start..k - 1]);
+                start = k;
+            }
+            _ => {}
+        }
+    }
+    pieces.push(&s[start..]);
+    let mut lines: Vec<String> = Vec::new();
+    let mut line = String::new();
+    for piece in pieces {
+        let joined = match line.is_empty() {
+            true => piece.to_string(),
+            false => format!("{line} {piece}"),
+        };
+        if line.is_empty() || width(&joined) <= w {
+            line = joined;
+            continue;
+        }
+        lines.push(std::mem::replace(&mut line, format!("{indent}{piece}")));
+    }
+    lines.push(line);
+    lines
+        .into_iter()
+        .flat_map(|l| match width(&l) <= w {
+            true => vec![l],
+            false => wrap(&l, w, indent),
+        })
+        .collect()
+}
+
 /// Items joined by `, `, wrapped between items only.
 fn wrap_items(indent: &str, items: &[String], w: usize) -> Vec<String> {
     let mut lines = Vec::new();
@@ -134,7 +180,7 @@ fn equations(out: &mut Vec<String>, eq: &Equations) {
         if width(&line) <= WRAP {
             vec![line]
         } else {
-            wrap(&line, WRAP, &indent)
+            wrap_sum(&line, WRAP, &indent)
         }
     };
     // A long list (a search's thousands of integrals) is printed on the pool's threads; a
@@ -178,7 +224,6 @@ fn claim(out: &mut Vec<String>, c: &ClaimResult) {
 }
 
 fn table(out: &mut Vec<String>, t: &TableResult) {
-    out.push(plain(&t.caption));
     let table = &t.table;
     let corner = "{·,·}".to_string();
     let cells: Vec<Vec<String>> = table
@@ -203,6 +248,11 @@ fn table(out: &mut Vec<String>, t: &TableResult) {
                 .unwrap_or(0)
         })
         .collect();
+    let total = 4 + first + 3 + widths.iter().sum::<usize>() + 3 * widths.len().saturating_sub(1);
+    if total > WRAP {
+        return table_as_list(out, t, &cells);
+    }
+    out.push(plain(&t.caption));
     let row = |head: &str, items: &[String]| {
         let body: Vec<String> = items.iter().zip(&widths).map(|(c, &w)| pad(c, w)).collect();
         format!("    {} │ {}", pad(head, first), body.join("   "))
@@ -218,6 +268,37 @@ fn table(out: &mut Vec<String>, t: &TableResult) {
     ));
     for (name, items) in table.display.iter().zip(&cells) {
         out.push(row(name, items));
+    }
+}
+
+/// A table wider than a line, as the list of its brackets above the diagonal that are not
+/// zero (the others follow by antisymmetry), each wrapped (a closure's bracket of two cubic
+/// integrals made rows of a thousand characters).
+fn table_as_list(out: &mut Vec<String>, t: &TableResult, cells: &[Vec<String>]) {
+    let names = &t.table.display;
+    let mut rows = Vec::new();
+    for (a, row) in cells.iter().enumerate() {
+        for (b, cell) in row.iter().enumerate().skip(a + 1) {
+            if cell != "0" {
+                rows.push(format!("    {{{}, {}}} = {cell}", names[a], names[b]));
+            }
+        }
+    }
+    let caption = plain(&t.caption.replace(" (row `A`, column `B`)", ""));
+    match rows.is_empty() {
+        true => out.push(format!("{caption}: every bracket is zero.")),
+        false => {
+            out.extend(wrap(
+                &format!(
+                    "{caption}, too wide for a table: the brackets that are not zero, A before B:"
+                ),
+                WRAP,
+                "",
+            ));
+            for row in rows {
+                out.extend(wrap_sum(&row, WRAP, "        "));
+            }
+        }
     }
 }
 
@@ -352,6 +433,32 @@ fn rank(out: &mut Vec<String>, r: &RankResult) {
 mod tests {
     use super::*;
     use trigpoly::Rational;
+
+    /// A long sum breaks before its signs, not inside a monomial (`x² p_y⁴`), and not inside
+    /// parentheses; a term wider than a line is wrapped at its spaces.
+    #[test]
+    fn a_sum_wraps_between_its_terms() {
+        let line = "    {C, S} = 12Mω p_x⁶ p_y² − 18Mω p_x⁴ p_y⁴ + 144M³ω³x² p_x⁴ p_y² − (a + b)";
+        let lines = wrap_sum(line, 40, "        ");
+        assert_eq!(
+            lines,
+            [
+                "    {C, S} = 12Mω p_x⁶ p_y²",
+                "        − 18Mω p_x⁴ p_y⁴",
+                "        + 144M³ω³x² p_x⁴ p_y² − (a + b)",
+            ]
+        );
+        let lines = wrap_sum("x = a b c d e f + g", 6, "  ");
+        assert!(lines.iter().all(|l| width(l) <= 6), "{lines:?}");
+        assert_eq!(
+            lines
+                .join(" ")
+                .split_whitespace()
+                .collect::<Vec<_>>()
+                .join(" "),
+            "x = a b c d e f + g"
+        );
+    }
 
     #[test]
     fn numbers_read_like_the_paper() {

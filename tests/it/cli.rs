@@ -1183,3 +1183,37 @@ fn cli_plot_values_may_be_decimals() {
         "{stderr}"
     );
 }
+
+/// A bracket table wider than a line is printed as the list of its brackets above the
+/// diagonal that are not zero, each sum wrapped between its terms: the full table of the
+/// rotor under gravity was over a hundred characters wide, and a closure of cubic integrals
+/// made rows of a thousand. A table that fits stays a table.
+#[test]
+fn cli_text_table_too_wide_is_a_list() {
+    let out = run(&["table", "systems/gravity-rotor.toml", "--no-timings"], 0);
+    assert!(
+        out.contains("too wide for a table: the brackets that are not zero"),
+        "{out}"
+    );
+    assert!(out.lines().all(|l| l.chars().count() <= 96), "{out}");
+    assert!(out.contains("\n    {L, G1} = −G2\n"), "{out}");
+    assert!(out.contains("\n    {G1, G2} = −ω² L\n"), "{out}");
+    // Antisymmetry gives the rest: {G1, L} is not listed, nor a zero {F1, F2}.
+    assert!(
+        !out.contains("{G1, L}") && !out.contains("{F1, F2}"),
+        "{out}"
+    );
+    let narrow = run(
+        &[
+            "table",
+            "systems/gravity-rotor.toml",
+            "Lp",
+            "G1p",
+            "G2p",
+            "--no-timings",
+        ],
+        0,
+    );
+    assert!(narrow.contains("{·,·} │"), "{narrow}");
+    assert!(!narrow.contains("too wide"), "{narrow}");
+}

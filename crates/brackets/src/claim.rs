@@ -4,7 +4,7 @@
 use std::borrow::Cow;
 use std::time::Instant;
 
-use trigpoly::{Expr, Var, VarKind};
+use trigpoly::{Expr, Rational, Style, Var, VarKind};
 
 use crate::error::EngineError;
 use crate::system::System;
@@ -22,6 +22,25 @@ pub struct Condition {
     subs: Vec<(Var, Expr)>,
 }
 
+/// Why setting `v` to `value` is impossible when `v` is an angle: functions depend on it
+/// through `e^{iθ}`, whose value is what a condition sets, and a constant of modulus other
+/// than 1 is no value of it (`θ = 0` written as the value 0 made `e^{2iθ} = 0` proved).
+fn not_on_the_circle(v: Var, value: &Expr) -> Option<String> {
+    let var = value.vars().variable(v);
+    if var.kind() != VarKind::Angle {
+        return None;
+    }
+    let c = value.as_constant()?;
+    (c.norm() != Rational::from(1)).then(|| {
+        let theta = var.unicode();
+        format!(
+            "a condition on the angle {theta} sets e^{{i{theta}}}, and {} is no value of it \
+             (its modulus is 1: 1 for {theta} = 0, i for {theta} = π/2)",
+            value.render(Style::Unicode)
+        )
+    })
+}
+
 impl Condition {
     /// `v = value`, where `value` does not mention `v` (a value read from input goes through
     /// [`Condition::all`], which says so when it does).
@@ -29,8 +48,9 @@ impl Condition {
     /// # Panics
     ///
     /// If `value` mentions `v`: the condition would be an equation, not a substitution; and
-    /// if `v` is an angle, which functions depend on through `e^{iθ}` (setting it would set
-    /// `e^{iθ}`, not `θ`). [`Condition::all`] refuses both with an error.
+    /// if `v` is an angle and `value` a constant of modulus other than 1: functions depend on
+    /// an angle through `e^{iθ}`, so the value set is that of `e^{iθ}` (1 for `θ = 0`, `i` for
+    /// `θ = π/2`), never 0. [`Condition::all`] refuses both with an error.
     pub fn new(text: &str, v: Var, value: Expr) -> Self {
         assert!(
             !value.contains(v),
@@ -38,8 +58,9 @@ impl Condition {
              with an error"
         );
         assert!(
-            value.vars().variable(v).kind() != VarKind::Angle,
-            "a condition cannot set an angle ({text}); Condition::all refuses it with an error"
+            not_on_the_circle(v, &value).is_none(),
+            "a condition sets e^{{iθ}} off the unit circle ({text}); Condition::all refuses it \
+             with an error"
         );
         Condition {
             text: text.to_string(),
@@ -54,15 +75,8 @@ impl Condition {
     /// condition is an equation, not a substitution.
     pub fn all(text: &str, subs: Vec<(Var, Expr)>) -> Result<Self, EngineError> {
         let mut subs = subs;
-        if let Some((v, e)) = subs
-            .iter()
-            .find(|(v, e)| e.vars().variable(*v).kind() == VarKind::Angle)
-        {
-            return Err(EngineError::Invalid(format!(
-                "a condition cannot set the angle {}: functions depend on it through cos, sin \
-                 and exp, and what is set is e^{{i{0}}}",
-                e.vars().variable(*v).unicode()
-            )));
+        if let Some(why) = subs.iter().find_map(|(v, e)| not_on_the_circle(*v, e)) {
+            return Err(EngineError::Invalid(why));
         }
         if let Some(k) = (1..subs.len()).find(|&k| subs[..k].iter().any(|s| s.0 == subs[k].0)) {
             let name = subs[k].1.vars().variable(subs[k].0).unicode().to_string();
@@ -124,9 +138,14 @@ impl Condition {
                 let moves = vars
                     .vars()
                     .any(|w| vars.variable(w).kind() != VarKind::Parameter && value.contains(w));
+                // An angle enters as e^{iθ}, whose bracket is the one computed.
+                let name = match vars.variable(*v).kind() {
+                    VarKind::Angle => format!("e^{{i{name}}}"),
+                    _ => name.to_string(),
+                };
                 let level = match moves {
                     true => format!("{name} − ({value})"),
-                    false => name.to_string(),
+                    false => name,
                 };
                 return Err(EngineError::Invalid(format!(
                     "the flow leaves the surface {}: there {{{level}, H}} = {rate}, not 0, so \

@@ -282,20 +282,31 @@ mod tests {
         let _ = crate::Condition::new("x = 2x", x, value);
     }
 
-    /// An angle enters functions through `e^{iθ}`: "θ = 0" would set `e^{iθ} = 0`, and then
-    /// `e^{2iθ} = 0` was proved. `Condition::all` refuses it with an error, `new` panics.
+    /// An angle enters functions through `e^{iθ}`, so a condition on it sets `e^{iθ}`: "θ = 0"
+    /// written as the value 0 made `e^{2iθ} = 0` proved. `Condition::all` refuses a constant
+    /// of modulus other than 1 with an error, `new` panics; 1 (`θ = 0`) and `i` are values.
     #[test]
-    fn a_condition_may_not_set_an_angle() {
+    fn a_condition_sets_an_angle_on_the_unit_circle_only() {
         let rotor = harmonic_rotor();
         let theta = rotor.var("theta");
         let zero = Expr::zero(rotor.vars());
         let err = crate::Condition::all("theta = 0", vec![(theta, zero.clone())]).unwrap_err();
         assert!(
-            err.to_string()
-                .contains("a condition cannot set the angle θ: functions depend on it through"),
+            err.to_string().contains(
+                "a condition on the angle θ sets e^{iθ}, and 0 is no value of it (its modulus is 1"
+            ),
             "{err}"
         );
+        let two = rotor.parse("3/5 + 4*i/5 + 1").unwrap();
+        assert!(crate::Condition::all("", vec![(theta, two)]).is_err());
         let set = std::panic::catch_unwind(|| crate::Condition::new("theta = 0", theta, zero));
         assert!(set.is_err());
+        // On the circle: e^{2iθ} at e^{iθ} = i is −1, and 3/5 + 4i/5 is a value too.
+        let i = rotor.parse("i").unwrap();
+        let at = crate::Condition::all("θ = π/2", vec![(theta, i)]).expect("a value of e^{iθ}");
+        let e2 = rotor.parse("exp(2*i*theta)").unwrap();
+        assert_eq!(at.apply(&e2).unwrap(), rotor.parse("-1").unwrap());
+        let unit = rotor.parse("3/5 + 4*i/5").unwrap();
+        assert!(crate::Condition::all("", vec![(theta, unit)]).is_ok());
     }
 }
