@@ -168,7 +168,7 @@ impl<'a> Builder<'a> {
                 ),
             ));
         }
-        if RESERVED.contains(&name) || matches!(name, "conj" | "re" | "im" | "rank") {
+        if RESERVED.contains(&name) || name == "rank" {
             return Err(self.error(
                 ErrorKind::Name,
                 span,

@@ -670,8 +670,9 @@ impl VarSetBuilder {
     }
 }
 
-/// Names that expressions give a meaning of their own.
-pub const RESERVED: &[&str] = &["i", "cos", "sin", "exp"];
+/// Names that expressions give a meaning of their own: `i` and the functions (a variable
+/// named `re` made `re(x + i p)` the real part, and `re*(x + i p)` a product).
+pub const RESERVED: &[&str] = &["i", "cos", "sin", "exp", "conj", "re", "im"];
 
 /// A display name as text and as LaTeX, when it is an identifier, possibly with a bar (a
 /// combining macron) and primes: `A_x` → (`A_x`, `A_{x}`), `G1'` → (`G1'`, `G_{1}'`), `Z̄` →
@@ -826,6 +827,17 @@ impl fmt::Display for VarSet {
 mod tests {
     use super::*;
     use crate::{GaussianRational, Poly};
+
+    /// `i` and the functions cannot name a variable: a parameter `re` made `re(x + i p_x)` the
+    /// real part and `re*(x + i p_x)` a product.
+    #[test]
+    fn function_names_are_reserved() {
+        for name in ["i", "cos", "sin", "exp", "conj", "re", "im"] {
+            let err = VarSet::builder().coordinate("x").parameter(name).build();
+            assert!(err.is_err(), "{name}");
+        }
+        assert!(VarSet::builder().parameter("real").build().is_ok());
+    }
 
     #[test]
     fn equal_declarations_share_one_interned_set() {
