@@ -47,10 +47,11 @@ pub struct ReadmeDoctests;
 /// Everything a user of the library needs: `use superint::prelude::*;`.
 pub mod prelude {
     pub use brackets::{
-        check_tower, closure, eigen_proof, rank, search, systems, BracketTable, Claim, Closure,
-        ClosureBracket, ClosureOptions, Condition, EigenProof, EngineError, Entry as TableEntry,
-        Integral, NamedFunction, Outcome, PhaseSpace, RankCertificate, SearchOptions, SearchResult,
-        SearchSpace, System, TowerReport, Verdict,
+        check_tower, closure, eigen_proof, rank, search, systems, BracketTable, CanonicalPair,
+        Claim, Closure, ClosureBracket, ClosureOptions, Condition, EigenProof, EngineError,
+        Entry as TableEntry, FunctionName, Integral, NamedFunction, Outcome, PhaseSpace,
+        RankCertificate, Relation, SearchOptions, SearchResult, SearchSpace, System, TowerReport,
+        UpperBound, Verdict,
     };
     pub use trigpoly::{
         AlgebraError, Expr, GaussianRational, Limits, ParseError, Point, Poly, Rational, Style,
