@@ -300,11 +300,24 @@ pub fn search_report(
         let lift = if r.liftable && r.all_symbolic() {
             "then each basis element was lifted back to symbolic parameters by homogeneity and \
              proved symbolically"
+                .to_string()
         } else if r.liftable {
-            "then lifted back to symbolic parameters by homogeneity where possible"
+            "then lifted back to symbolic parameters by homogeneity where possible".to_string()
         } else {
-            "the weights do not determine every parameter, so the basis is proved at these \
-             values only"
+            match (0..r.basis.len())
+                .filter(|&i| r.for_every_value(i).is_some())
+                .count()
+            {
+                0 => "the weights do not determine every parameter, so nothing is lifted, and \
+                      the basis is proved at these values only"
+                    .to_string(),
+                k => format!(
+                    "the weights do not determine every parameter, so nothing is lifted; {k} of \
+                     the {} basis elements hold as found for every value (proved \
+                     symbolically), the others at these values only",
+                    r.basis.len()
+                ),
+            }
         };
         entries.push(Entry::Text(format!(
             "Parameters fixed for the linear algebra: `{fixed}`; {lift}."
@@ -424,10 +437,8 @@ pub fn search_report(
         dimension: r.basis.len(),
         by_momenta_degree: dims,
         counts,
-        for_every_value: r
-            .basis
-            .iter()
-            .filter(|f| f.symbolic.is_some() || (f.proved_fixed && r.parameters.is_empty()))
+        for_every_value: (0..r.basis.len())
+            .filter(|&i| r.for_every_value(i).is_some())
             .count(),
         shown: shown_ids,
         new_only: r.new.clone(),

@@ -1579,4 +1579,22 @@ fn a_searchs_labels_and_suggestions_do_not_repeat_the_systems_own() {
         text.contains("or compare with other values (--fix I1=3,I2=5,k=7)"),
         "{text}"
     );
+    // The weights cannot lift `I1, I2, k`, but the total momentum holds as found for every
+    // value, and is proved so: it was said to hold "at I1 = 2, I2 = 3, k = 1" only.
+    assert!(
+        text.contains(
+            "nothing is lifted; 2 of the 4 basis elements hold as found for every value (proved \
+             symbolically), the others at these values only"
+        ),
+        "{text}"
+    );
+    let conditions: Vec<&serde_json::Value> = v["claims"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|c| &c["condition"])
+        .collect();
+    assert_eq!(conditions[1], &serde_json::Value::Null);
+    assert_eq!(conditions[2], "I1 = 2, I2 = 3, k = 1");
+    assert_eq!(v["searches"][0]["for_every_value"], 2);
 }

@@ -243,7 +243,8 @@ pub struct Integral {
 }
 
 impl Integral {
-    /// The integral as printed: symbolic if it was lifted, otherwise at the fixed values.
+    /// The integral as printed: symbolic if it was lifted, otherwise at the fixed values,
+    /// where alone it may hold; [`SearchResult::for_every_value`] says which.
     pub fn expr(&self) -> &Expr {
         self.symbolic.as_ref().unwrap_or(&self.fixed)
     }
@@ -344,6 +345,18 @@ impl SearchResult {
             c[f.momenta_degree as usize][f.trig_degree as usize] += 1;
         }
         c
+    }
+
+    /// The `i`-th basis integral as proved for every value of the parameters: lifted and
+    /// proved symbolically, or proved where no parameter was fixed. `None` when it holds at
+    /// the fixed values only (`x p_y − y p_x` of `p²/2 + (x² + a²y²)/2`, at `a = 1`).
+    pub fn for_every_value(&self, i: usize) -> Option<&Expr> {
+        let f = &self.basis[i];
+        match (&f.symbolic, f.proved_fixed && self.parameters.is_empty()) {
+            (Some(e), _) => Some(e),
+            (None, true) => Some(&f.fixed),
+            (None, false) => None,
+        }
     }
 
     /// Whether every basis element was proved symbolically.
@@ -1121,6 +1134,14 @@ pub fn search(system: &System, options: &SearchOptions) -> Result<SearchResult, 
                 }
                 None => None,
             };
+            // What the weights cannot lift may hold as found, for every value: `p_θ`, or `L`
+            // of a potential whose parameter the lift cannot restore.
+            let symbolic = match symbolic {
+                None if proved_fixed && !parameters.is_empty() => {
+                    flow_vanishes(system, condition, &fixed)?.then(|| fixed.clone())
+                }
+                found => found,
+            };
             let deg = |kinds: &[VarKind]| fixed.total_degree(kinds).unwrap_or(0);
             Ok(Integral {
                 // Every momentum of the space (an angle's momentum fixed by the condition
@@ -1227,11 +1248,20 @@ pub fn lift_and_prove(
     };
     // Coprime integer coefficients again (fixed values other than 1 leave a common factor).
     let f = real_primitive(&f);
-    let mut flow = system.flow(&f)?;
-    if let Some(c) = condition {
-        flow = c.apply(&flow)?;
-    }
-    Ok(flow.is_zero().then_some(f))
+    Ok(flow_vanishes(system, condition, &f)?.then_some(f))
+}
+
+/// Whether `{f, H} = 0` for every value of the parameters (after the condition).
+fn flow_vanishes(
+    system: &System,
+    condition: Option<&Condition>,
+    f: &Expr,
+) -> Result<bool, EngineError> {
+    let flow = match condition {
+        Some(c) => system.flow_when(f, c)?,
+        None => system.flow(f)?,
+    };
+    Ok(flow.is_zero())
 }
 
 /// A real function scaled so that its coefficients in the basis `cos kθ, sin kθ` are coprime
@@ -2124,6 +2154,30 @@ mod tests {
         assert!(one.0.iter().all(|b| b.1 && b.2.is_some()));
         assert_eq!(summary(&on(3)), one);
         assert_eq!(summary(&search(&rotor, &options).unwrap()), one);
+    }
+
+    /// At `a = 1` the rotor in `(x² + a²y²)/2` is isotropic and `x p_y − y p_x` an integral
+    /// there; the search finds it, and says it holds at the fixed values only, while the
+    /// energy holds for every value.
+    #[test]
+    fn an_integral_of_the_fixed_values_only_is_not_for_every_value() {
+        let rotor = systems::rotor("(x^2 + a^2*y^2)/2", &["a"]).unwrap();
+        let r = search(&rotor, &SearchOptions::new(SearchSpace::new(2, 2, 0))).unwrap();
+        let find = |text: &str| {
+            let e = rotor.parse(text).unwrap();
+            (0..r.basis.len())
+                .find(|&i| r.basis[i].fixed == e || r.basis[i].fixed == -&e)
+                .unwrap_or_else(|| panic!("{text} is found"))
+        };
+        let l = find("x*p_y - y*p_x");
+        assert_eq!(r.for_every_value(l), None);
+        let bracket = rotor.flow(&rotor.parse("x*p_y - y*p_x").unwrap()).unwrap();
+        assert!(!bracket.is_zero());
+        let p_theta = find("p_theta");
+        assert_eq!(
+            r.for_every_value(p_theta),
+            Some(&rotor.parse("p_theta").unwrap())
+        );
     }
 
     #[test]
