@@ -21,7 +21,7 @@ use std::time::Instant;
 use brackets::closure::{closure_of, Bracket, Closure, ClosureOptions};
 use brackets::search::{search, Integral, SearchOptions, SearchResult};
 use brackets::{EngineError, System};
-use trigpoly::{Expr, GaussianRational, Rational, Style, Var, VarSet};
+use trigpoly::{Expr, GaussianRational, Rational, Style, Var, VarKind, VarSet};
 
 use crate::report::{
     ClaimResult, ClosureFacts, Entry, Equation, Equations, Facts, ParameterFacts, Report,
@@ -103,6 +103,69 @@ fn label_letter<'a>(system: &System, candidates: &[&'a str], count: usize) -> &'
         .copied()
         .find(|p| !(1..=count).any(|i| taken(&format!("{p}{i}"))))
         .unwrap_or(candidates[candidates.len() - 1])
+}
+
+/// With parameters kept symbolic, the note that `H` or its first power `H^k` that the space
+/// holds in the phase-space variables needs a degree in them past the space's: the integrals
+/// of that degree in the momenta may then need a larger `--parameters-degree` (an oscillator
+/// with symbolic frequencies showed no quartic integral at degree 2, since `H²` has degree 4
+/// in them).
+fn power_past_parameters_degree(h: &Expr, options: &SearchOptions) -> Option<String> {
+    if options.symbolic.is_empty() {
+        return None;
+    }
+    let vars = h.vars();
+    let degree_in = |f: &dyn Fn(&Var) -> bool| {
+        h.terms()
+            .map(|t| {
+                vars.vars()
+                    .filter(|v| f(v))
+                    .map(|v| t.exponent(v).abs())
+                    .sum::<i64>()
+            })
+            .max()
+            .unwrap_or(0)
+    };
+    let s = degree_in(&|v| options.symbolic.contains(v));
+    let kind = |k: VarKind| move |v: &Var| vars.variable(*v).kind() == k;
+    let momenta = h.total_degree(&[VarKind::Momentum]).unwrap_or(0);
+    let positions = degree_in(&kind(VarKind::Coordinate));
+    let trig = degree_in(&kind(VarKind::Angle));
+    let space = &options.space;
+    let bound = i64::from(space.parameters_degree);
+    let names = parameter_names(vars, &options.symbolic);
+    if s > bound {
+        return Some(format!(
+            "Note: H has degree {s} in `{names}`, past the space's `{bound}` \
+             (`--parameters-degree`), so H is not among the integrals found, nor is any that \
+             needs its terms."
+        ));
+    }
+    let fits = |k: i64| {
+        k * momenta <= i64::from(space.momenta_degree)
+            && (space.laurent || k * positions <= i64::from(space.positions_degree))
+            && k * trig <= i64::from(space.trig_degree)
+    };
+    let k = (2..=i64::from(space.momenta_degree).max(2))
+        .take_while(|&k| fits(k) && momenta > 0)
+        .find(|&k| k * s > bound)?;
+    let power: String = k
+        .to_string()
+        .chars()
+        .map(|d| {
+            "⁰¹²³⁴⁵⁶⁷⁸⁹"
+                .chars()
+                .nth(d as usize - '0' as usize)
+                .unwrap_or(d)
+        })
+        .collect();
+    Some(format!(
+        "Note: `H{power}` lies in the space but for its degree {} in `{names}`, past the space's \
+         `{bound}` (`--parameters-degree`): integrals of degree {} in the momenta may need a \
+         larger one.",
+        k * s,
+        k * momenta
+    ))
 }
 
 /// The names of parameters, `A, B`.
@@ -295,6 +358,8 @@ pub fn search_report(
             "Note: H is not in this space ({why}), so H is not among the integrals found, nor \
              is any that needs its terms."
         )));
+    } else if let Some(note) = power_past_parameters_degree(&h, options) {
+        entries.push(Entry::Text(note));
     }
     if !r.parameters.is_empty() {
         let lift = if r.liftable && r.all_symbolic() {

@@ -1598,3 +1598,68 @@ fn a_searchs_labels_and_suggestions_do_not_repeat_the_systems_own() {
     assert_eq!(conditions[2], "I1 = 2, I2 = 3, k = 1");
     assert_eq!(v["searches"][0]["for_every_value"], 2);
 }
+
+/// With parameters kept symbolic, a search says when `H`, or the first power of it that the
+/// space holds, needs a degree in them past `--parameters-degree`: the 1:3 oscillator with
+/// symbolic frequency `a` showed no quartic integral at degree 2, since `H²` has degree 4
+/// in `a`; at degree 4 the quartic integral is found, and there is no note.
+#[test]
+fn a_search_says_when_powers_of_h_need_a_larger_parameters_degree() {
+    let file = crate::scratch_text(
+        "discovery",
+        "osc-ab.toml",
+        "name = \"oscillator with two frequencies\"\n\
+         hamiltonian = \"(p_x^2 + p_y^2)/2 + (a^2*x^2 + b^2*y^2)/2\"\n\
+         [phase_space]\ncoordinates = [\"x\", \"y\"]\nparameters = [\"a\", \"b\"]\n",
+    );
+    let file = file.to_str().expect("a UTF-8 path");
+    let search = |degree: &str| {
+        let out = superint(&[
+            "search",
+            file,
+            "--momenta-degree",
+            "4",
+            "--positions-degree",
+            "4",
+            "--trig-degree",
+            "0",
+            "--when",
+            "b = 3*a",
+            "--symbolic",
+            "a",
+            "--parameters-degree",
+            degree,
+            "--no-timings",
+        ]);
+        assert_eq!(out.status.code(), Some(0));
+        normalize(&String::from_utf8(out.stdout).expect("UTF-8"))
+    };
+    let two = search("2");
+    assert!(
+        two.contains(
+            "Note: H² lies in the space but for its degree 4 in a, past the space's 2 \
+             (--parameters-degree): integrals of degree 4 in the momenta may need a larger one."
+        ),
+        "{two}"
+    );
+    assert!(!two.contains("p_x³ p_y"), "{two}");
+    let four = search("4");
+    assert!(!four.contains("Note: H"), "{four}");
+    assert!(
+        four.contains("p_x³ p_y − 3a²x² p_x p_y + 9a²xy p_x² − 3a⁴x³y"),
+        "{four}"
+    );
+    let one = superint(&[
+        "search",
+        file,
+        "--symbolic",
+        "a,b",
+        "--parameters-degree",
+        "1",
+    ]);
+    let one = normalize(&String::from_utf8(one.stdout).expect("UTF-8"));
+    assert!(
+        one.contains("Note: H has degree 2 in a, b, past the space's 1 (--parameters-degree)"),
+        "{one}"
+    );
+}
