@@ -54,15 +54,18 @@ impl<C: Coefficient> Poly<C> {
         if e == 2 {
             return self.checked_square();
         }
-        if self.len() <= 6 {
+        // Affinely independent monomials (at most one more than the variables) give every
+        // composition `e = a_1 + … + a_t` a term of its own.
+        if self.len() <= 6 || self.len() <= self.vars.len() + 1 {
             let compositions =
                 binomial_u128(e as u128 + self.len() as u128 - 1, self.len() as u128 - 1);
             let limit = self.vars.limits().max_terms;
-            if compositions <= limit as u128 {
+            if self.len() <= 6 && compositions <= limit as u128 {
                 return Ok(self.multinomial_pow(e as usize));
             }
-            if self.compositions_are_distinct() {
-                // Every composition is its own term: the power has too many, known up front.
+            if compositions > limit as u128 && self.compositions_are_distinct() {
+                // Every composition is its own term: the power has too many, known up front
+                // (`(x + y + p_x + p_y + M + I + ω)^60` multiplied for 38 s before it stopped).
                 return Err(AlgebraError::TooManyTerms { limit });
             }
         }
@@ -257,7 +260,11 @@ fn binomial_u128(n: u128, k: u128) -> u128 {
     let k = k.min(n - k.min(n));
     let mut acc: u128 = 1;
     for j in 0..k {
-        acc = acc.saturating_mul(n - j) / (j + 1);
+        // `acc·(n − j)` is divisible by `j + 1`; past `u128`, the count is as large as any.
+        match acc.checked_mul(n - j) {
+            Some(x) => acc = x / (j + 1),
+            None => return u128::MAX,
+        }
     }
     acc
 }

@@ -302,3 +302,35 @@ fn repeated_variable_exponents_that_overflow_i64_are_rejected() {
         }
     );
 }
+
+/// A power of a polynomial of seven or eight terms in general position (every composition
+/// `60 = a_1 + … + a_t` its own monomial) is refused before any product, at the library's
+/// default limit: `(x + y + z + t + u + v + w)^60` has C(66, 6) ≈ 9·10⁷ terms, and repeated
+/// multiplication ran for 38 s and 2.3 GB before it met the limit. Terms that share a
+/// direction are multiplied as before: `(1 + x + … + x⁶)^60` has 361 terms.
+#[test]
+fn term_limit_refuses_a_power_in_general_position_up_front() {
+    let vars = VarSet::builder()
+        .coordinate("x")
+        .coordinate("y")
+        .coordinate("z")
+        .coordinate("t")
+        .coordinate("u")
+        .coordinate("v")
+        .coordinate("w")
+        .build()
+        .unwrap();
+    let limit = Limits::default().max_terms;
+    for f in ["x + y + z + t + u + v + w", "1 + x + y + z + t + u + v + w"] {
+        let f: Q = p(&vars, f);
+        assert_eq!(
+            f.checked_pow(60).map(|g| g.len()),
+            Err(AlgebraError::TooManyTerms { limit })
+        );
+    }
+    let f: Q = p(&vars, "1 + x + x^2 + x^3 + x^4 + x^5 + x^6");
+    assert_eq!(f.checked_pow(60).map(|g| g.len()), Ok(361));
+    // Eight terms in seven variables that are not in general position: no early refusal.
+    let g: Q = p(&vars, "1 + x + y + z + t + u + v + x*y");
+    assert_eq!(g.checked_pow(2).map(|h| h.len()), Ok(35));
+}
