@@ -138,6 +138,32 @@ struct Argument {
 }
 
 impl LoadedSystem {
+    /// A system built in code, as a file without families or claims would load: for the
+    /// reports that take a loaded file ([`table_report`], [`rank_report`], [`check_report`]).
+    ///
+    /// ```
+    /// use superint::system_file::{table_report, LoadedSystem};
+    ///
+    /// let rotor = LoadedSystem::of_system(superint::brackets::systems::harmonic_rotor());
+    /// let report = table_report(&rotor, &["L".into(), "G1".into(), "G2".into()])?;
+    /// assert!(superint::render::render(&report, Default::default(), &Default::default())
+    ///     .contains("−ω² L"));
+    /// # Ok::<(), superint::system_file::FileError>(())
+    /// ```
+    pub fn of_system(system: System) -> Self {
+        LoadedSystem {
+            source: Source::new("<program>", ""),
+            name: system.name().to_string(),
+            citation: None,
+            description: None,
+            limits: system.vars().limits(),
+            system,
+            families: Vec::new(),
+            claims: Vec::new(),
+            cache: Mutex::new(HashMap::new()),
+        }
+    }
+
     /// Parses an expression given on the command line (named functions, family instances,
     /// brackets, `conj`/`re`/`im` allowed); errors point into the argument.
     pub fn parse_argument(&self, src: &str) -> Result<Expr, FileError> {
