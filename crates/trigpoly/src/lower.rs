@@ -539,32 +539,51 @@ impl LinearForm {
 /// `Re`, `Im` where the system does not declare them) multiplies them.
 pub const FUNCTIONS: [&str; 6] = ["cos", "sin", "exp", "conj", "re", "im"];
 
+/// The longest piece, in bytes, that a name run together splits into: a declared name is
+/// shorter, and the bound keeps the split linear in the length of what is split (a run of
+/// 16 000 `x` took 15 s and 1 GB).
+const LONGEST_PIECE: usize = 256;
+
 /// Splits `name` into names that `known` takes (`Mω` → `M`, `ω`), longest prefix first, at
-/// least two of them; `None` if no split exists.
+/// least two of them; `None` if no split exists. Each piece is at most [`LONGEST_PIECE`]
+/// bytes; whether the rest from each place splits is decided once, from the end.
 fn split_into(name: &str, known: &dyn Fn(&str) -> bool) -> Option<Vec<String>> {
-    fn go(rest: &str, known: &dyn Fn(&str) -> bool, out: &mut Vec<String>) -> bool {
-        if rest.is_empty() {
-            return true;
-        }
-        let cuts: Vec<usize> = rest
+    if name.chars().count() < 2 {
+        return None;
+    }
+    // The cuts after `at`: the ends of its pieces of at most LONGEST_PIECE bytes, longest
+    // first.
+    let cuts = |at: usize| {
+        let rest = &name[at..];
+        let mut ends: Vec<usize> = rest
             .char_indices()
             .map(|(k, _)| k)
             .skip(1)
             .chain([rest.len()])
+            .take_while(|&k| k <= LONGEST_PIECE)
             .collect();
-        for &cut in cuts.iter().rev() {
-            if known(&rest[..cut]) {
-                out.push(rest[..cut].to_string());
-                if go(&rest[cut..], known, out) {
-                    return true;
-                }
-                out.pop();
-            }
-        }
-        false
+        ends.reverse();
+        ends.into_iter().map(move |k| at + k)
+    };
+    // splits[at]: whether name[at..] is a sequence of known names.
+    let mut splits = vec![false; name.len() + 1];
+    splits[name.len()] = true;
+    for (at, _) in name.char_indices().rev() {
+        splits[at] = cuts(at).any(|end| splits[end] && known(&name[at..end]));
+    }
+    if !splits[0] {
+        return None;
     }
     let mut out = Vec::new();
-    (name.chars().count() > 1 && go(name, known, &mut out) && out.len() > 1).then_some(out)
+    let mut at = 0;
+    while at < name.len() {
+        let end = cuts(at)
+            .find(|&end| splits[end] && known(&name[at..end]))
+            .expect("a place that splits has a first piece");
+        out.push(name[at..end].to_string());
+        at = end;
+    }
+    (out.len() > 1).then_some(out)
 }
 
 /// The known name that `name` was probably meant to be: the same letters but for case and

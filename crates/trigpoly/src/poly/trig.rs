@@ -43,75 +43,77 @@ impl<C: Coefficient> Poly<C> {
         let angles: Vec<usize> = self.vars.angles().map(|v| v.index()).collect();
         let n = self.vars.len();
         let layout = self.layout();
-        let mut tables: FxHashMap<i64, Vec<(u32, u32, GaussianInteger)>> = FxHashMap::default();
-        for k in 0..self.len() {
-            for &j in &angles {
-                let multiple = layout.get(self.exp(k), j);
-                tables
-                    .entry(multiple)
-                    .or_insert_with(|| euler_power(multiple));
-            }
-        }
-        // The terms' monomials with the angles' exponents cleared, and their trigonometric
-        // monomials (`(cos, sin)` powers per angle), each numbered once, and the sums keyed by
-        // the two numbers: a hash of two words per sum, where a vector of every exponent took
-        // a hash of the vector and an allocation.
+        let mut multiples: Vec<i64> = (0..self.len())
+            .flat_map(|k| angles.iter().map(move |&j| layout.get(self.exp(k), j)))
+            .collect();
+        multiples.sort_unstable();
+        multiples.dedup();
+        let tables = euler_powers(&multiples);
+        // The sums are keyed by two numbers: the monomial in the variables (the angles'
+        // exponents cleared once converted) and the trigonometric monomial (`(cos, sin)`
+        // powers per angle converted), each numbered once: a hash of two words per sum, where
+        // a vector of every exponent took a hash of the vector and an allocation.
         let mut groups = Numbering::<i64>::default();
         let mut trigs = Numbering::<u32>::default();
-        let mut powers = vec![0u32; 2 * angles.len()];
-        // The sums, found by their keys: a map of small entries, which grows by moving those
-        // rather than the accumulators.
+        let none = trigs.number(&vec![0u32; 2 * angles.len()]);
+        let mut exps = vec![0i64; n];
+        // The terms, then after each angle's conversion the sums so far: `(group, trig, c)`.
+        let mut entries: Vec<(u32, u32, GaussianInteger)> = (0..self.len())
+            .map(|k| {
+                let m = self.exp(k);
+                for (j, e) in exps.iter_mut().enumerate() {
+                    *e = layout.get(m, j);
+                }
+                (
+                    groups.number(&exps),
+                    none,
+                    self.coeffs[k].to_gaussian_integer(),
+                )
+            })
+            .collect();
+        // One angle at a time: each entry's `e^{ikθ}` by the table of `(cos θ + i sin θ)^k`.
+        // Converting the angles one after another costs the entries times one table each,
+        // where every choice of an entry of every table cost their product (`cos¹⁵⁰a cos¹⁵⁰b`
+        // took 37 s to print).
         let mut index: FxHashMap<(u32, u32), u32> =
             FxHashMap::with_capacity_and_hasher(self.len(), Default::default());
         let mut sums: Vec<GaussianAcc> = Vec::with_capacity(self.len());
-        let mut exps = vec![0i64; n];
-        let mut choice = vec![0usize; angles.len()];
-        let mut rows: Vec<&[(u32, u32, GaussianInteger)]> = Vec::with_capacity(angles.len());
-        for k in 0..self.len() {
-            let m = self.exp(k);
-            for (j, e) in exps.iter_mut().enumerate() {
-                *e = layout.get(m, j);
-            }
-            rows.clear();
-            for &j in &angles {
-                rows.push(&tables[&std::mem::take(&mut exps[j])]);
-            }
-            let group = groups.number(&exps);
-            let coeff = self.coeffs[k].to_gaussian_integer();
-            // Every choice of one entry per angle's table (an odometer over the rows).
-            choice.fill(0);
-            loop {
-                for ((row, &i), power) in rows.iter().zip(&choice).zip(powers.chunks_exact_mut(2)) {
-                    (power[0], power[1]) = (row[i].0, row[i].1);
+        for (a, &j) in angles.iter().enumerate() {
+            index.clear();
+            sums.clear();
+            let mut powers = vec![0u32; 2 * angles.len()];
+            for (group, trig, coeff) in &entries {
+                exps.clone_from(&groups.values[*group as usize]);
+                let row = &tables[&std::mem::take(&mut exps[j])];
+                let group = groups.number(&exps);
+                powers.clone_from(&trigs.values[*trig as usize]);
+                for (cos, sin, x) in row {
+                    (powers[2 * a], powers[2 * a + 1]) = (*cos, *sin);
+                    let trig = trigs.number(&powers);
+                    let slot = *index.entry((group, trig)).or_insert_with(|| {
+                        sums.push(GaussianAcc::default());
+                        sums.len() as u32 - 1
+                    });
+                    sums[slot as usize].add_mul(coeff, x);
                 }
-                let trig = trigs.number(&powers);
-                let slot = *index.entry((group, trig)).or_insert_with(|| {
+            }
+            if a + 1 < angles.len() {
+                entries = index
+                    .drain()
+                    .filter_map(|((group, trig), slot)| {
+                        let sum = std::mem::take(&mut sums[slot as usize]).finish();
+                        (!sum.is_zero()).then_some((group, trig, sum))
+                    })
+                    .collect();
+            }
+        }
+        if angles.is_empty() {
+            for (group, trig, coeff) in &entries {
+                let slot = *index.entry((*group, *trig)).or_insert_with(|| {
                     sums.push(GaussianAcc::default());
                     sums.len() as u32 - 1
                 });
-                let acc = &mut sums[slot as usize];
-                match rows.as_slice() {
-                    [] => acc.add(&coeff),
-                    [row] => acc.add_mul(&coeff, &row[choice[0]].2),
-                    _ => {
-                        let factor = rows
-                            .iter()
-                            .zip(&choice)
-                            .map(|(row, &i)| &row[i].2)
-                            .fold(GaussianInteger::from_integer(Integer::ONE), |f, g| {
-                                IntegerRing::mul(&f, g)
-                            });
-                        acc.add_mul(&coeff, &factor)
-                    }
-                }
-                let Some(a) = (0..rows.len())
-                    .rev()
-                    .find(|&a| choice[a] + 1 < rows[a].len())
-                else {
-                    break;
-                };
-                choice[a] += 1;
-                choice[a + 1..].iter_mut().for_each(|i| *i = 0);
+                sums[slot as usize].add(coeff);
             }
         }
         let momenta: Vec<usize> = self
@@ -219,40 +221,57 @@ fn check_angle<C: Coefficient>(vars: &VarSet, v: Var, what: &str) -> Result<(), 
 }
 
 /// `(cos θ + i sin θ)^k` (for `k < 0`, `(cos θ − i sin θ)^{|k|}`) in normal form, as
-/// `(cos power, sin power, coefficient)`. Uses `(A + sB)(c + is) = (Ac + i(1 − c²)B) + s(iA + cB)`.
-fn euler_power(k: i64) -> Vec<(u32, u32, GaussianInteger)> {
-    let n = k.unsigned_abs() as usize;
+/// `(cos power, sin power, coefficient)`, for each `k` of `multiples`: the powers are formed
+/// one from the next, `(A + sB)(c + is) = (Ac + i(1 − c²)B) + s(iA + cB)`, up to the largest
+/// `|k|`, each kept where asked for. (Formed from 1 for each `k`, `cos^1000 φ` took 24 s to
+/// print.)
+fn euler_powers(multiples: &[i64]) -> FxHashMap<i64, Vec<(u32, u32, GaussianInteger)>> {
     let zero = GaussianInteger::default();
+    let largest = multiples
+        .iter()
+        .map(|k| k.unsigned_abs())
+        .max()
+        .unwrap_or(0);
+    let mut tables = FxHashMap::default();
     let mut a = vec![GaussianInteger::from_integer(Integer::ONE)]; // A(c), by powers of c
     let mut b: Vec<GaussianInteger> = vec![]; // B(c)
-    for _ in 0..n {
-        let mut na = vec![zero.clone(); a.len().max(b.len() + 2) + 1];
-        let mut nb = vec![zero.clone(); a.len().max(b.len() + 1) + 1];
-        for (p, x) in a.iter().enumerate() {
-            na[p + 1] = na[p + 1].add(x); // A c
-            nb[p] = nb[p].add(&x.mul_i()); // s · iA
+    for n in 0..=largest {
+        if n > 0 {
+            let mut na = vec![zero.clone(); a.len().max(b.len() + 2) + 1];
+            let mut nb = vec![zero.clone(); a.len().max(b.len() + 1) + 1];
+            for (p, x) in a.iter().enumerate() {
+                na[p + 1] = na[p + 1].add(x); // A c
+                nb[p] = nb[p].add(&x.mul_i()); // s · iA
+            }
+            for (p, x) in b.iter().enumerate() {
+                let ix = x.mul_i();
+                na[p] = na[p].add(&ix); // i B
+                na[p + 2] = na[p + 2].sub(&ix); // −i c² B
+                nb[p + 1] = nb[p + 1].add(x); // s · cB
+            }
+            a = na;
+            b = nb;
         }
-        for (p, x) in b.iter().enumerate() {
-            let ix = x.mul_i();
-            na[p] = na[p].add(&ix); // i B
-            na[p + 2] = na[p + 2].sub(&ix); // −i c² B
-            nb[p + 1] = nb[p + 1].add(x); // s · cB
+        for k in [n as i64, -(n as i64)] {
+            if tables.contains_key(&k) || multiples.binary_search(&k).is_err() {
+                continue;
+            }
+            let parts = [(0, &a), (1, &b)];
+            let table = parts
+                .iter()
+                .flat_map(|&(sin, part)| {
+                    part.iter()
+                        .enumerate()
+                        .filter(|(_, x)| !x.is_zero())
+                        .map(move |(p, x)| {
+                            (p as u32, sin, if k < 0 { x.conj() } else { x.clone() })
+                        })
+                })
+                .collect();
+            tables.insert(k, table);
         }
-        a = na;
-        b = nb;
     }
-    let mut out = Vec::new();
-    for (p, x) in a.into_iter().enumerate() {
-        if !x.is_zero() {
-            out.push((p as u32, 0, if k < 0 { x.conj() } else { x }));
-        }
-    }
-    for (p, x) in b.into_iter().enumerate() {
-        if !x.is_zero() {
-            out.push((p as u32, 1, if k < 0 { x.conj() } else { x }));
-        }
-    }
-    out
+    tables
 }
 
 /// A product `Π cos^a θ sin^b θ` over the angles of a variable set, in their order; ordered

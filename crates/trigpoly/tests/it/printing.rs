@@ -549,3 +549,29 @@ fn greek_variants_spell_out_in_ascii() {
     assert_eq!(ascii, "pi*varrho*Sigma*p_vartheta*cos(vartheta)");
     assert_eq!(p::<GaussianRational>(&vars, &ascii), f);
 }
+
+/// High powers of cosines and sines print as the single terms they are, in two angles too:
+/// the conversion from `e^{ikθ}` goes one angle at a time, with the powers of
+/// `cos θ + i sin θ` formed one from the next (`cos¹⁵⁰a cos¹⁵⁰b` took 37 s to print, and
+/// `cos¹⁰⁰⁰φ` 24 s). Each printed form reads back as the same element.
+#[test]
+fn high_trigonometric_powers_print_as_single_terms() {
+    let vars = phase_space();
+    for (src, shown) in [
+        ("cos(theta)^60*cos(phi)^60", "cos⁶⁰θ cos⁶⁰φ"),
+        ("x*cos(theta)^41*sin(phi)", "x cos⁴¹θ sin φ"),
+        ("cos(phi)^400", "cos⁴⁰⁰φ"),
+    ] {
+        let f: G = p(&vars, src);
+        assert_eq!(f.to_string(), shown, "{src}");
+        assert_eq!(p::<GaussianRational>(&vars, &f.to_ascii()), f, "{src}");
+    }
+    // A sum whose terms cancel in the conversion of the second angle only.
+    let f: G = p(
+        &vars,
+        "cos(theta)^3*(cos(phi)^2 + sin(phi)^2) - cos(theta)^3",
+    );
+    assert!(f.is_zero());
+    let g: G = p(&vars, "(cos(theta) + sin(phi))^7");
+    assert_eq!(p::<GaussianRational>(&vars, &g.to_ascii()), g);
+}
