@@ -13,7 +13,7 @@ use trigpoly::{AlgebraError, Expr, Limits, VarSet, RESERVED};
 
 use super::claims::ClaimSpec;
 use super::error::{locate_bytes, ErrorKind, FileError};
-use super::model::{FunctionModel, SystemModel};
+use super::model::{ExpectShape, FunctionModel, ShapeModel, SystemModel};
 use super::scope::mention;
 use super::text::{Source, Text};
 use super::{Family, LimitsOverride, LoadedSystem, DEFAULT_MAX_DEGREE, DEFAULT_MAX_TERMS};
@@ -83,8 +83,74 @@ pub fn load_str(
             )
             .with_hint("see docs/system-files.md for a complete example"));
     }
+    check_shape(&source, text)?;
     let model: SystemModel = toml::from_str(text).map_err(|e| toml_error(&source, &e))?;
     Builder::new(source, limits).build(model)
+}
+
+/// The kind of a TOML value, in words.
+fn toml_kind(v: &toml::Value) -> &'static str {
+    match v {
+        toml::Value::String(_) => "a string",
+        toml::Value::Integer(_) => "an integer",
+        toml::Value::Float(_) => "a decimal number",
+        toml::Value::Boolean(_) => "true or false",
+        toml::Value::Datetime(_) => "a date",
+        toml::Value::Array(_) => "an array",
+        toml::Value::Table(_) => "a table",
+    }
+}
+
+/// Refuses top-level values of the wrong shape, where serde would read them anyway or say so
+/// in its own words: the text keys are strings, `[phase_space]` and `[limits]` tables,
+/// `[[function]]`, `[[family]]` and `[[claim]]` arrays of tables.
+fn check_shape(source: &Source, text: &str) -> Result<(), FileError> {
+    // A file that does not parse as TOML, or misses a key, is left to the reading proper,
+    // which says where.
+    let Ok(shape) = toml::from_str::<ShapeModel>(text) else {
+        return Ok(());
+    };
+    let wrong = |v: &Spanned<toml::Value>, key: &str, wanted: &str| {
+        source.error(
+            ErrorKind::Schema,
+            v.span(),
+            format!("{key} is {wanted}, not {}", toml_kind(v.get_ref())),
+        )
+    };
+    for (key, value) in [
+        ("name", &shape.name),
+        ("source", &shape.source),
+        ("description", &shape.description),
+        ("hamiltonian", &shape.hamiltonian),
+    ] {
+        if let Some(v) = value.as_ref().filter(|v| !v.get_ref().is_str()) {
+            return Err(wrong(v, key, "a string in quotes"));
+        }
+    }
+    for (key, value) in [("[phase_space]", &shape.phase_space), ("[limits]", &shape.limits)] {
+        if let Some(v) = value.as_ref().filter(|v| !v.get_ref().is_table()) {
+            return Err(wrong(v, key, "a table, written with one pair of brackets")
+                .with_hint(format!("write {key} on a line of its own, then its keys")));
+        }
+    }
+    for (key, value) in [
+        ("[[function]]", &shape.function),
+        ("[[family]]", &shape.family),
+        ("[[claim]]", &shape.claim),
+    ] {
+        let items = value.iter().flat_map(|list| list.get_ref());
+        if let Some(v) = items.into_iter().find(|v| !v.get_ref().is_table()) {
+            return Err(wrong(v, &format!("each {key}"), "a table")
+                .with_hint(format!("write {key} on a line of its own before each one's keys")));
+        }
+    }
+    if let Ok(claims) = toml::from_str::<ExpectShape>(text) {
+        let expects = claims.claim.iter().filter_map(|c| c.expect.as_ref());
+        if let Some(v) = expects.into_iter().find(|v| !v.get_ref().is_str()) {
+            return Err(wrong(v, "expect", "\"proved\" or \"refuted\""));
+        }
+    }
+    Ok(())
 }
 
 /// A TOML error (syntax, or a missing, unknown or mistyped field) at its place.

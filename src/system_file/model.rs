@@ -9,6 +9,34 @@ use toml::Spanned;
 
 use crate::report::Expect;
 
+/// The shape of a system file's top level, each value as TOML wrote it, for the checks that
+/// serde's own reading of [`SystemModel`] does not make: serde reads a struct from an array too
+/// (`phase_space = [["x"], [], []]` was accepted), and says "invalid type: map" of a date.
+#[derive(Debug, Deserialize)]
+pub(crate) struct ShapeModel {
+    pub name: Option<Spanned<toml::Value>>,
+    pub source: Option<Spanned<toml::Value>>,
+    pub description: Option<Spanned<toml::Value>>,
+    pub hamiltonian: Option<Spanned<toml::Value>>,
+    pub phase_space: Option<Spanned<toml::Value>>,
+    pub limits: Option<Spanned<toml::Value>>,
+    pub function: Option<Spanned<Vec<Spanned<toml::Value>>>>,
+    pub family: Option<Spanned<Vec<Spanned<toml::Value>>>>,
+    pub claim: Option<Spanned<Vec<Spanned<toml::Value>>>>,
+}
+
+/// The claims' `expect`, as TOML wrote it (see [`ShapeModel`]).
+#[derive(Debug, Deserialize)]
+pub(crate) struct ExpectShape {
+    pub claim: Vec<ClaimShape>,
+}
+
+/// A claim's `expect`, as TOML wrote it.
+#[derive(Debug, Deserialize)]
+pub(crate) struct ClaimShape {
+    pub expect: Option<Spanned<toml::Value>>,
+}
+
 /// A whole system file.
 #[derive(Debug, Deserialize)]
 #[serde(deny_unknown_fields)]

@@ -286,6 +286,46 @@ fn bad_inputs() -> Vec<(&'static str, Vec<u8>, &'static str, Vec<&'static str>)>
             "bad.toml:14:10: unknown variant `false`, expected `proved` or `refuted`",
             check.clone(),
         ),
+        // serde read a table from an array, and said "invalid type: map" of a date.
+        (
+            "phase space as an array of tables",
+            base_with("[phase_space]", "[[phase_space]]"),
+            "bad.toml:4:1: [phase_space] is a table, written with one pair of brackets, not an \
+             array",
+            check.clone(),
+        ),
+        (
+            "phase space as an array",
+            base_with(
+                "[phase_space]\ncoordinates = [\"x\"]\nparameters = [\"M\", \"omega\"]",
+                "phase_space = [[\"x\"], [], [\"M\", \"omega\"]]",
+            ),
+            "bad.toml:4:15: [phase_space] is a table, written with one pair of brackets, not an \
+             array",
+            check.clone(),
+        ),
+        (
+            "a claim as an array",
+            format!(
+                "claim = [[\"ladder\", \"{{A, H}} = i*omega*A\"]]\n{}",
+                &BASE[..BASE.find("[[claim]]").unwrap()]
+            )
+            .into_bytes(),
+            "bad.toml:1:10: each [[claim]] is a table, not an array",
+            check.clone(),
+        ),
+        (
+            "hamiltonian as a date",
+            base_with("\"p_x^2/(2*M) + M*omega^2*x^2/2\"", "1979-05-27"),
+            "bad.toml:2:15: hamiltonian is a string in quotes, not a date",
+            check.clone(),
+        ),
+        (
+            "expectation as a boolean",
+            base_with("claim = \"{A, H}", "expect = true\nclaim = \"{A, H}"),
+            "bad.toml:14:10: expect is \"proved\" or \"refuted\", not true or false",
+            check.clone(),
+        ),
         (
             "unknown field",
             base_with("claim = \"{A", "clam = \"{A"),
