@@ -19,7 +19,7 @@ fn main() -> ExitCode {
     match cli::run(std::env::args_os()) {
         Ok(code) => code,
         Err(e) => {
-            eprintln!("superint: error: {e:#}");
+            cli::error_line(&format!("{e:#}"));
             ExitCode::from(cli::EXIT_USAGE)
         }
     }

@@ -69,7 +69,7 @@ pub fn run(job: &CheckJob) -> anyhow::Result<bool> {
         false => None,
     };
     for e in &errors {
-        eprintln!("superint: error: {e}");
+        super::output::error_line(&e.to_string());
     }
     if let Some(last) = unchecked {
         return Err(last.into());

@@ -13,6 +13,7 @@ mod expand;
 mod input;
 mod limits;
 mod output;
+pub use output::error_line;
 mod paper;
 mod plot;
 mod rank;

@@ -3,7 +3,7 @@
 use std::io::{self, Write};
 
 use clap::{Args, ValueEnum};
-use superint::render::{Format, Options};
+use superint::render::{printable, Format, Options};
 
 /// `--format` values.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, ValueEnum)]
@@ -74,8 +74,16 @@ pub fn emit_to_stderr(text: &str) -> anyhow::Result<()> {
 }
 
 fn write_to(mut out: impl Write, text: &str) -> anyhow::Result<()> {
-    match out.write_all(text.as_bytes()).and_then(|()| out.flush()) {
+    match out
+        .write_all(printable(text).as_bytes())
+        .and_then(|()| out.flush())
+    {
         Err(e) if e.kind() != io::ErrorKind::BrokenPipe => Err(e.into()),
         _ => Ok(()),
     }
+}
+
+/// Prints an error line on stderr: `superint: error: …`, control characters shown as `�`.
+pub fn error_line(message: &str) {
+    eprintln!("superint: error: {}", printable(message));
 }

@@ -8,7 +8,7 @@ use std::path::PathBuf;
 
 use anyhow::{bail, Context};
 use clap::{Args, ValueEnum};
-use superint::render::Format;
+use superint::render::{printable, Format};
 use superint::system_file::{Against, LimitsOverride, PlotFunctions};
 use superint::trajectory::chart::{self, reduce_angle, Curve, Style};
 use superint::trajectory::{nearest_f64, short, Flow, Method, Numeric};
@@ -381,7 +381,7 @@ pub fn run(job: &PlotJob) -> anyhow::Result<bool> {
     if to_stdout {
         emit(&svg)?;
     } else {
-        std::fs::write(&args.output, svg)
+        std::fs::write(&args.output, printable(&svg).as_bytes())
             .with_context(|| format!("cannot write {}", args.output.display()))?;
     }
     if let Some(data) = &args.data {
@@ -390,8 +390,11 @@ pub fn run(job: &PlotJob) -> anyhow::Result<bool> {
             .map(Axis::label)
             .chain(rows[1..].iter().map(|f| f.label.as_str()))
             .collect();
-        std::fs::write(data, csv(&columns, against.as_ref(), &orbits))
-            .with_context(|| format!("cannot write {}", data.display()))?;
+        std::fs::write(
+            data,
+            printable(&csv(&columns, against.as_ref(), &orbits)).as_bytes(),
+        )
+        .with_context(|| format!("cannot write {}", data.display()))?;
     }
     let section = section.as_ref().map(|f| f.label.as_str());
     let table = match job.output.format {

@@ -85,6 +85,22 @@ pub fn render(report: &Report, format: Format, options: &Options) -> String {
     }
 }
 
+/// Text safe to print or write: each control character but newline and tab as `�` (U+FFFD).
+/// A system file's names, descriptions and ids, and a command line's expressions, may hold
+/// escapes such as `\u001b`, which on a terminal would move the cursor, clear the screen or
+/// set its title, and in an SVG chart make the file no XML.
+pub fn printable(text: &str) -> std::borrow::Cow<'_, str> {
+    let unsafe_char = |c: char| c.is_control() && c != '\n' && c != '\t';
+    match text.contains(unsafe_char) {
+        false => std::borrow::Cow::Borrowed(text),
+        true => text
+            .chars()
+            .map(|c| if unsafe_char(c) { '\u{fffd}' } else { c })
+            .collect::<String>()
+            .into(),
+    }
+}
+
 /// Prose markup (formulas between backticks) as plain text.
 pub(crate) fn plain(markup: &str) -> String {
     markup.replace('`', "")

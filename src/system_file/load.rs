@@ -127,7 +127,10 @@ fn check_shape(source: &Source, text: &str) -> Result<(), FileError> {
             return Err(wrong(v, key, "a string in quotes"));
         }
     }
-    for (key, value) in [("[phase_space]", &shape.phase_space), ("[limits]", &shape.limits)] {
+    for (key, value) in [
+        ("[phase_space]", &shape.phase_space),
+        ("[limits]", &shape.limits),
+    ] {
         if let Some(v) = value.as_ref().filter(|v| !v.get_ref().is_table()) {
             return Err(wrong(v, key, "a table, written with one pair of brackets")
                 .with_hint(format!("write {key} on a line of its own, then its keys")));
@@ -140,8 +143,11 @@ fn check_shape(source: &Source, text: &str) -> Result<(), FileError> {
     ] {
         let items = value.iter().flat_map(|list| list.get_ref());
         if let Some(v) = items.into_iter().find(|v| !v.get_ref().is_table()) {
-            return Err(wrong(v, &format!("each {key}"), "a table")
-                .with_hint(format!("write {key} on a line of its own before each one's keys")));
+            return Err(
+                wrong(v, &format!("each {key}"), "a table").with_hint(format!(
+                    "write {key} on a line of its own before each one's keys"
+                )),
+            );
         }
     }
     if let Ok(claims) = toml::from_str::<ExpectShape>(text) {
