@@ -216,7 +216,10 @@ fn equations_at(
         .into_iter()
         .map(|(lhs, value)| {
             let value = match condition {
-                Some(c) => c.apply(&value).map_err(|e| command_error(&e))?,
+                Some(c) => c
+                    .defined_on(&[&value], "the expression")
+                    .and_then(|()| c.apply(&value))
+                    .map_err(|e| command_error(&e))?,
                 None => value,
             };
             Ok(Equation::new(&lhs, value))

@@ -941,6 +941,11 @@ fn arguments_are_read_before_any_is_expanded() {
             "1:5: expected an expression after '+'",
         ),
         (vec!["table", f, "K_30_1", "Foo"], "'Foo' is not a function"),
+        // As a claim's condition in a file is: "division by zero" said neither what nor where.
+        (
+            vec!["expand", f, "x/M", "--when", "M = 0"],
+            "the condition sets M = 0, but the expression divides by M",
+        ),
         (
             vec!["expand", f, big, "L - "],
             "1:4: expected an expression after '-'",

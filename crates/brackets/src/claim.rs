@@ -161,14 +161,15 @@ impl Condition {
 
     /// Refuses the condition where it sets to zero a variable that one of `sides` divides by:
     /// there the sides have no value, even when their difference is zero before the
-    /// substitution (`p_x/M = p_x/M` at `M = 0`).
-    pub fn defined_on(&self, sides: &[&Expr]) -> Result<(), EngineError> {
+    /// substitution (`p_x/M = p_x/M` at `M = 0`). `what` names the sides in the message (`the
+    /// claim`).
+    pub fn defined_on(&self, sides: &[&Expr], what: &str) -> Result<(), EngineError> {
         for (v, value) in &self.subs {
             let divides = |e: &&Expr| e.exponent_range(*v).is_some_and(|(lo, _)| lo < 0);
             if value.is_zero() && sides.iter().any(divides) {
                 let name = value.vars().variable(*v).unicode().to_string();
                 return Err(EngineError::Invalid(format!(
-                    "the condition sets {name} = 0, but the claim divides by {name}"
+                    "the condition sets {name} = 0, but {what} divides by {name}"
                 )));
             }
         }
@@ -282,7 +283,7 @@ impl Claim {
     /// The residual `lhs − rhs` after the condition, in normal form.
     pub fn residual(&self) -> Result<Expr, EngineError> {
         if let Some(c) = &self.condition {
-            c.defined_on(&[&self.lhs, &self.rhs])?;
+            c.defined_on(&[&self.lhs, &self.rhs], "the claim")?;
         }
         // `lhs − 0` is `lhs`: no copy before the condition.
         let d = if self.rhs.is_zero() {
