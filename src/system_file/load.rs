@@ -206,6 +206,23 @@ struct Builder<'a> {
 }
 
 impl<'a> Builder<'a> {
+    /// Refuses a display name with a character that is markup in Markdown or LaTeX (`a^b^c`
+    /// stopped pdflatex, `L|x` split a Markdown table's cells).
+    fn check_display(&self, display: &Spanned<String>) -> Result<(), FileError> {
+        const MARKUP: &str = "^`|\\$%&#{}~*<>\"";
+        match display.get_ref().chars().find(|&c| MARKUP.contains(c)) {
+            None => Ok(()),
+            Some(c) => Err(self.error(
+                ErrorKind::Name,
+                display.span(),
+                format!(
+                    "a display name is letters, digits, primes (G1'), a bar (Z̄), subscripts \
+                     (A_x), spaces and parentheses: '{c}' is markup in Markdown or LaTeX"
+                ),
+            )),
+        }
+    }
+
     fn new(source: Source, limits: &'a LimitsOverride) -> Self {
         Builder {
             source,
@@ -401,6 +418,9 @@ impl<'a> Builder<'a> {
                         )
                     })
                 })?;
+            if let Some(d) = &f.display {
+                self.check_display(d)?;
+            }
             let display = f.display.as_ref().unwrap_or(&f.name).get_ref();
             file.system.define(f.name.get_ref(), display, value);
         }
@@ -448,6 +468,9 @@ impl<'a> Builder<'a> {
                         format!("the two indices are both named '{idx}'"),
                     ));
                 }
+            }
+            if let Some(d) = &f.display {
+                self.check_display(d)?;
             }
             let display = f.display.as_ref().unwrap_or(&f.name).get_ref().clone();
             file.families.push(Family {

@@ -315,6 +315,13 @@ fn bad_inputs() -> Vec<(&'static str, Vec<u8>, &'static str, Vec<&'static str>)>
             check.clone(),
         ),
         (
+            "display name with markup",
+            base_with("name = \"A\"", "name = \"A\"\ndisplay = \"a^b^c\""),
+            "bad.toml:10:11: a display name is letters, digits, primes (G1'), a bar (Z̄), \
+             subscripts (A_x), spaces and parentheses: '^' is markup in Markdown or LaTeX",
+            check.clone(),
+        ),
+        (
             "hamiltonian as a date",
             base_with("\"p_x^2/(2*M) + M*omega^2*x^2/2\"", "1979-05-27"),
             "bad.toml:2:15: hamiltonian is a string in quotes, not a date",
