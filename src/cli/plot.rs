@@ -236,6 +236,7 @@ pub fn run(job: &PlotJob) -> anyhow::Result<bool> {
     if job.output.format == Format::Latex {
         bail!("plot prints its table as text, markdown or json, not latex");
     }
+    check_outputs(args)?;
     let file = load_system(&args.file, &job.limits)?;
     let functions = PlotFunctions {
         curves: &args.curves,
@@ -427,6 +428,37 @@ pub fn run(job: &PlotJob) -> anyhow::Result<bool> {
         }
     }
     Ok(true)
+}
+
+/// Refuses outputs that would overwrite one another or the system file: `--data -` (a file
+/// named `-` was written), the chart and the data in one file (the data replaced the chart),
+/// or either one the system file itself.
+fn check_outputs(args: &PlotArgs) -> anyhow::Result<()> {
+    let same = |a: &std::path::Path, b: &std::path::Path| {
+        a == b || matches!((a.canonicalize(), b.canonicalize()), (Ok(x), Ok(y)) if x == y)
+    };
+    if let Some(data) = &args.data {
+        if data.as_os_str() == "-" {
+            bail!("--data writes a file: give its name (only -o takes - for standard output)");
+        }
+        if same(data, &args.output) {
+            bail!(
+                "-o and --data name the same file, {}: give two",
+                data.display()
+            );
+        }
+    }
+    let outputs = std::iter::once(&args.output).chain(args.data.as_ref());
+    if let Some(o) = outputs
+        .filter(|o| o.as_os_str() != "-")
+        .find(|o| same(o, &args.file))
+    {
+        bail!(
+            "{} is the system file: an output would overwrite it",
+            o.display()
+        );
+    }
+    Ok(())
 }
 
 /// The largest relative move of H along an orbit past which `plot` warns: H is conserved, so

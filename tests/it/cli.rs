@@ -794,6 +794,28 @@ fn cli_plot_bad_arguments_exit_2_with_a_message() {
             vec!["L", "--at", at, "--from", full, "--format", "latex"],
             "plot prints its table as text, markdown or json, not latex",
         ),
+        // Outputs that would overwrite one another, or the system file: `--data -` wrote a
+        // file named `-`, and the data replaced the chart of the same name.
+        (
+            vec!["L", "--at", at, "--from", full, "--data", "-"],
+            "--data writes a file: give its name (only -o takes - for standard output)",
+        ),
+        (
+            vec!["L", "--at", at, "--from", full, "--data", out],
+            "-o and --data name the same file",
+        ),
+        (
+            vec![
+                "L",
+                "--at",
+                at,
+                "--from",
+                full,
+                "--data",
+                "systems/harmonic-rotor.toml",
+            ],
+            "systems/harmonic-rotor.toml is the system file: an output would overwrite it",
+        ),
     ] {
         let mut all = vec!["plot", "systems/harmonic-rotor.toml"];
         all.extend(&args);
