@@ -161,8 +161,15 @@ impl fmt::Display for FileError {
 
 /// Line, column, source line and caret of a byte range; a long line is shown as a window
 /// around the caret ([`Excerpt`]).
+/// A byte-order mark at the start is no column of the first line.
 pub(crate) fn locate(text: &str, span: Range<usize>) -> Location {
-    let excerpt = Excerpt::of(text, Span::new(span.start, span.end));
+    let bom = if text.starts_with('\u{feff}') {
+        '\u{feff}'.len_utf8()
+    } else {
+        0
+    };
+    let shift = |at: usize| at.saturating_sub(bom);
+    let excerpt = Excerpt::of(&text[bom..], Span::new(shift(span.start), shift(span.end)));
     Location {
         line: excerpt.line,
         column: excerpt.column,

@@ -314,6 +314,17 @@ fn bad_inputs() -> Vec<(&'static str, Vec<u8>, &'static str, Vec<&'static str>)>
             "bad.toml:1:10: each [[claim]] is a table, not an array",
             check.clone(),
         ),
+        // A byte-order mark is no column (the caret was one to the right of the name).
+        (
+            "unknown name after a byte-order mark",
+            format!(
+                "\u{feff}hamiltonian = \"q\"\n{}",
+                &BASE[BASE.find("\n[phase_space]").unwrap()..]
+            )
+            .into_bytes(),
+            "bad.toml:1:16: unknown name 'q'",
+            check.clone(),
+        ),
         (
             "display name with markup",
             base_with("name = \"A\"", "name = \"A\"\ndisplay = \"a^b^c\""),
