@@ -42,6 +42,10 @@ fn system_arg(s: &str) -> Result<SystemArg, String> {
         "harmonic" => Ok(SystemArg::Builtin(TowerSystem::Harmonic)),
         "gravity" => Ok(SystemArg::Builtin(TowerSystem::Gravity)),
         "" => Err("expected harmonic, gravity or a system file".into()),
+        // A bare word that names no file is a misspelt built-in system, not a missing file.
+        word if !word.contains(['/', '.']) && !std::path::Path::new(word).exists() => Err(format!(
+            "no built-in system '{word}' (harmonic, gravity), and no file of that name"
+        )),
         path => Ok(SystemArg::File(PathBuf::from(path))),
     }
 }

@@ -1291,3 +1291,13 @@ fn cli_prints_no_control_characters() {
     let chart = std::fs::read_to_string(&svg).expect("the chart");
     assert!(clean(&chart) && chart.contains("L\u{fffd}[2J"), "{chart}");
 }
+
+/// A misspelt built-in system is named as such, with the built-in ones, where "cannot read
+/// the file" suggested a missing file.
+#[test]
+fn cli_tower_names_a_misspelt_builtin_system() {
+    assert_bad_usage(
+        &["tower", "--system", "harmonics"],
+        "no built-in system 'harmonics' (harmonic, gravity), and no file of that name",
+    );
+}
