@@ -133,13 +133,6 @@ pub fn run(job: &ClosureJob) -> anyhow::Result<bool> {
         }
         defined.push((name.to_string(), e));
     }
-    if let Some((_, name)) = names
-        .iter()
-        .enumerate()
-        .find(|(k, n)| names[..*k].contains(n))
-    {
-        bail!("{name} is named twice among the generators");
-    }
     let mut all: Vec<&str> = names.iter().map(String::as_str).collect();
     for (n, _) in &defined {
         if !all.contains(&n.as_str()) {

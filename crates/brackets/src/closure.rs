@@ -290,6 +290,15 @@ pub fn closure_of(
 ) -> Result<Closure, EngineError> {
     let start = Instant::now();
     let mut timings = ClosureTimings::default();
+    let twice = (1..generators.len())
+        .find(|&k| generators[..k].iter().any(|h| h.0 == generators[k].0))
+        .map(|k| &generators[k]);
+    if let Some(g) = twice {
+        return Err(EngineError::Invalid(format!(
+            "{} is named twice among the generators",
+            g.0
+        )));
+    }
     let vars = system.vars().clone();
     let r = generators.len();
     let condition = options.condition.as_ref();
@@ -975,6 +984,15 @@ mod tests {
         // The 21 monomials of degree ≤ 2 in five generators span 20 dimensions over Q(i)
         // (it read 40, the dimension over Q of the monomials and i times them).
         assert_eq!((c.monomials, c.rank), (21, 20));
+    }
+
+    /// A generator named twice is refused in those words (the ring of generators said
+    /// 'variable "L" is declared twice').
+    #[test]
+    fn a_generator_named_twice_is_refused() {
+        let rotor = systems::harmonic_rotor();
+        let err = closure(&rotor, &["L", "G1", "L"], &ClosureOptions::new(2)).unwrap_err();
+        assert_eq!(err.to_string(), "L is named twice among the generators");
     }
 
     /// With every parameter symbolic, the linear algebra runs on the symbolic expansions and
