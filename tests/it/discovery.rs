@@ -1370,18 +1370,18 @@ fn claim_ids(v: &serde_json::Value) -> Vec<String> {
 /// dimensions, and which integrals the claims show.
 #[test]
 fn search_json_gives_the_space_and_dimensions_as_data() {
-    let (v, text) = json_and_text(&[
-        "search",
-        "systems/harmonic-rotor.toml",
-        "--when",
-        "p_theta = I*omega",
-        "--momenta-degree",
-        "1",
-        "--positions-degree",
-        "1",
-        "--trig-degree",
-        "1",
-    ]);
+    let (v, text) = json_and_text(
+        &[
+            &[
+                "search",
+                "systems/harmonic-rotor.toml",
+                "--when",
+                "p_theta = I*omega",
+            ][..],
+            &crate::DEGREE_ONE,
+        ]
+        .concat(),
+    );
     let searches = v["searches"].as_array().expect("searches");
     assert_eq!(searches.len(), 1);
     let s = &searches[0];
