@@ -314,7 +314,13 @@ pub fn table_report(file: &LoadedSystem, names: &[String]) -> Result<Report, Fil
         system.define(name, &display, value);
     }
     let refs: Vec<&str> = names.iter().map(String::as_str).collect();
-    let table = BracketTable::compute(&system, &refs).map_err(|e| command_error(&e))?;
+    // What fails is a bracket of the file's functions, not the command line.
+    let table = BracketTable::compute(&system, &refs).map_err(|e| {
+        let mut err = command_error(&e);
+        err.origin.clone_from(&file.source.origin);
+        err.message = format!("the brackets of {}: {}", refs.join(", "), err.message);
+        err
+    })?;
     let entry = Entry::Table(TableResult {
         caption: format!("`{{A, B}}` for {} (row `A`, column `B`)", file.the_name()),
         table,

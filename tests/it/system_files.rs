@@ -1771,3 +1771,26 @@ fn an_echo_does_not_spell_a_function_before_parentheses() {
     assert_eq!(value, "-5*i*m^2/7");
     assert_eq!(expand(&echo).1, value);
 }
+
+/// A table that a limit stops names the file and the brackets it computed: it said
+/// `<command line>: the exponent of x would reach 1999` for `table FILE` with no names given.
+#[test]
+fn a_table_past_a_limit_names_the_file_and_the_brackets() {
+    let file = crate::scratch_text(
+        "system_files",
+        "table-limit.toml",
+        "hamiltonian = \"p_x^2/2\"\n[phase_space]\ncoordinates = [\"x\"]\n\
+         [[function]]\nname = \"A\"\nvalue = \"x^1000\"\n\
+         [[function]]\nname = \"B\"\nvalue = \"x^1000*p_x\"\n",
+    );
+    let path = file.to_str().expect("a UTF-8 path");
+    let out = superint_in(root(), &["table", path]);
+    assert_eq!(out.status.code(), Some(2));
+    let stderr = String::from_utf8_lossy(&out.stderr);
+    assert!(
+        stderr.contains(&format!(
+            "superint: error: {path}: the brackets of A, B: the exponent of x would reach 1999"
+        )),
+        "{stderr}"
+    );
+}
