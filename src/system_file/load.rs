@@ -110,12 +110,15 @@ fn check_shape(source: &Source, text: &str) -> Result<(), FileError> {
     let Ok(shape) = toml::from_str::<ShapeModel>(text) else {
         return Ok(());
     };
-    let wrong = |v: &Spanned<toml::Value>, key: &str, wanted: &str| {
+    let wrong_at = |span: Range<usize>, value: &toml::Value, key: &str, wanted: &str| {
         source.error(
             ErrorKind::Schema,
-            v.span(),
-            format!("{key} is {wanted}, not {}", toml_kind(v.get_ref())),
+            span,
+            format!("{key} is {wanted}, not {}", toml_kind(value)),
         )
+    };
+    let wrong = |v: &Spanned<toml::Value>, key: &str, wanted: &str| {
+        wrong_at(v.span(), v.get_ref(), key, wanted)
     };
     for (key, value) in [
         ("name", &shape.name),
@@ -141,12 +144,19 @@ fn check_shape(source: &Source, text: &str) -> Result<(), FileError> {
         ("[[family]]", &shape.family),
         ("[[claim]]", &shape.claim),
     ] {
-        let items = value.iter().flat_map(|list| list.get_ref());
-        if let Some(v) = items.into_iter().find(|v| !v.get_ref().is_table()) {
+        let hint = format!("write {key} on a line of its own before each one's keys");
+        let Some(list) = value else { continue };
+        let Some(items) = list.get_ref().as_array() else {
+            return Err(wrong(
+                list,
+                key,
+                "an array of tables, each written with two pairs of brackets",
+            )
+            .with_hint(hint));
+        };
+        if let Some(item) = items.iter().find(|v| !v.is_table()) {
             return Err(
-                wrong(v, &format!("each {key}"), "a table").with_hint(format!(
-                    "write {key} on a line of its own before each one's keys"
-                )),
+                wrong_at(list.span(), item, &format!("each {key}"), "a table").with_hint(hint),
             );
         }
     }

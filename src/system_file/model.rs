@@ -20,9 +20,9 @@ pub(crate) struct ShapeModel {
     pub hamiltonian: Option<Spanned<toml::Value>>,
     pub phase_space: Option<Spanned<toml::Value>>,
     pub limits: Option<Spanned<toml::Value>>,
-    pub function: Option<Spanned<Vec<Spanned<toml::Value>>>>,
-    pub family: Option<Spanned<Vec<Spanned<toml::Value>>>>,
-    pub claim: Option<Spanned<Vec<Spanned<toml::Value>>>>,
+    pub function: Option<Spanned<toml::Value>>,
+    pub family: Option<Spanned<toml::Value>>,
+    pub claim: Option<Spanned<toml::Value>>,
 }
 
 /// The claims' `expect`, as TOML wrote it (see [`ShapeModel`]).

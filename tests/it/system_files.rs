@@ -311,7 +311,14 @@ fn bad_inputs() -> Vec<(&'static str, Vec<u8>, &'static str, Vec<&'static str>)>
                 &BASE[..BASE.find("[[claim]]").unwrap()]
             )
             .into_bytes(),
-            "bad.toml:1:10: each [[claim]] is a table, not an array",
+            "bad.toml:1:9: each [[claim]] is a table, not an array",
+            check.clone(),
+        ),
+        (
+            "a function as a table",
+            base_with("[[function]]", "[function]"),
+            "bad.toml:8:1: [[function]] is an array of tables, each written with two pairs of \
+             brackets, not a table",
             check.clone(),
         ),
         // A byte-order mark is no column (the caret was one to the right of the name).
