@@ -11,7 +11,7 @@ use clap::{Args, ValueEnum};
 use superint::render::{printable, Format};
 use superint::system_file::{Against, LimitsOverride, PlotFunctions};
 use superint::trajectory::chart::{self, reduce_angle, Curve, Style};
-use superint::trajectory::{nearest_f64, short, Flow, Method, Numeric};
+use superint::trajectory::{short, Flow, Method, Numeric};
 
 use super::input::load_system;
 use super::limits::LimitsArgs;
@@ -52,9 +52,9 @@ pub struct PlotArgs {
     #[arg(long, value_name = "VALUES")]
     at: Option<String>,
     /// The starting point: a value for every coordinate, angle and momentum, such as
-    /// 'x = 1, y = 0, theta = 0, p_x = 0, p_y = 1, p_theta = I*omega' (a value is a number,
-    /// fraction or decimal, or an expression in the parameters). Give it again for more orbits
-    /// in the same chart.
+    /// 'x = 1, y = 0, theta = 3*pi/4, p_x = 0, p_y = 1, p_theta = I*omega' (a value is a
+    /// number, fraction or decimal, a multiple of π alone, or an expression in the
+    /// parameters). Give it again for more orbits in the same chart.
     #[arg(long, value_name = "POINT", required = true)]
     from: Vec<String>,
     /// How long to follow the motion.
@@ -289,7 +289,7 @@ pub fn run(job: &PlotJob) -> anyhow::Result<bool> {
         };
         let mut start = vec![0.0; file.system.vars().len()];
         for (v, value) in point {
-            start[v.index()] = nearest_f64(value).with_context(|| {
+            start[v.index()] = value.to_f64().with_context(|| {
                 let name = file.system.vars().variable(*v).unicode();
                 format!("the starting value of {name}{mark}")
             })?;

@@ -261,6 +261,7 @@ pub(crate) fn parse_condition(
         kinds: "a coordinate, a momentum or a parameter",
         usage,
         decimals: false,
+        pi: false,
     };
     let assignments = parse_assignments(file, source, pieces, &form, admit)?;
     let text = assignments
@@ -301,6 +302,43 @@ pub(crate) struct AssignmentForm<'a> {
     /// Whether a right side may be a decimal number (`0.25`, `−1.5`, `2.5e-3`), read as the
     /// fraction it writes: the numbers of `plot`. An expression is still exact fractions only.
     pub decimals: bool,
+    /// Whether a right side may be a rational multiple of π alone (`3*pi/4`, `−π/2`): a
+    /// starting angle of `plot`, which floating point rounds. [`Assignment::pi_times`] says so.
+    pub pi: bool,
+}
+
+/// The rational `q` of a multiple of π written alone: an optional sign, an optional
+/// coefficient (integer, fraction or decimal, then `*` or a space, or nothing), `pi` or `π`,
+/// and an optional divisor (`/4`). `None` for anything else.
+pub(crate) fn pi_multiple(s: &str) -> Option<trigpoly::Rational> {
+    let (negative, rest) = match s.trim().strip_prefix(['-', '+', '−']) {
+        Some(rest) => (s.trim().starts_with(['-', '−']), rest),
+        None => (false, s.trim()),
+    };
+    let (at, len) = match rest.find('π') {
+        Some(k) => (k, 'π'.len_utf8()),
+        None => (rest.find("pi")?, 2),
+    };
+    let before = rest[..at].trim_end();
+    let before = before.strip_suffix('*').unwrap_or(before).trim();
+    let coefficient: trigpoly::Rational = match before {
+        "" => trigpoly::Rational::from(1),
+        b if b.starts_with(|c: char| c.is_ascii_digit() || c == '.') => {
+            decimal_number(b).or_else(|| b.parse().ok())?
+        }
+        _ => return None,
+    };
+    let divisor: i64 = match rest[at + len..].trim() {
+        "" => 1,
+        d => d
+            .strip_prefix('/')?
+            .trim()
+            .parse()
+            .ok()
+            .filter(|&d: &i64| d > 0)?,
+    };
+    let q = &coefficient / &trigpoly::Rational::from(divisor);
+    Some(if negative { -q } else { q })
 }
 
 /// The fraction a decimal number writes exactly (`−1.25` is `−5/4`, `2.5e-3` is `1/400`):
@@ -349,6 +387,8 @@ pub(crate) struct Assignment {
     pub shown: String,
     /// The right side.
     pub rhs: Text,
+    /// Whether the value is `value·π` ([`AssignmentForm::pi`]).
+    pub pi_times: bool,
 }
 
 /// Reads `var = value` (one per text) of `source`, written in `form`: each left side one
@@ -418,13 +458,17 @@ pub(crate) fn parse_assignments(
             .decimals
             .then(|| decimal_number(rhs.value.trim()))
             .flatten();
-        let (value, shown) = match decimal {
+        // `3*pi/4` when the file has no variable named so.
+        let pi = form.pi && vars.lookup("pi").is_none();
+        let pi_times = pi.then(|| pi_multiple(&rhs.value)).flatten();
+        let is_pi = pi_times.is_some() && decimal.is_none();
+        let (value, shown) = match decimal.or(pi_times) {
             Some(q) => (
                 Expr::constant(vars, q.into()),
                 format!("{name} = {}", rhs.value.trim()),
             ),
             None => {
-                let rhs_tree = scope.tree(source, &rhs).map_err(|mut e| {
+                let hint = |mut e: FileError| {
                     if form.decimals && e.message.starts_with("decimal numbers") {
                         e.hint = Some(
                             "a value alone may be a decimal number (x = 0.5); in an expression, \
@@ -432,9 +476,21 @@ pub(crate) fn parse_assignments(
                                 .into(),
                         );
                     }
+                    if pi
+                        && ["unknown name 'pi'", "unknown name 'π'"]
+                            .iter()
+                            .any(|m| e.message.starts_with(m))
+                    {
+                        e.hint = Some(
+                            "a value may be a multiple of π alone (theta = 3*pi/4, phi = -pi/2), \
+                             not a part of an expression"
+                                .into(),
+                        );
+                    }
                     e
-                })?;
-                let value = scope.lower(source, &rhs, &rhs_tree)?;
+                };
+                let rhs_tree = scope.tree(source, &rhs).map_err(hint)?;
+                let value = scope.lower(source, &rhs, &rhs_tree).map_err(hint)?;
                 (value, format!("{name} = {}", file.pretty(&rhs_tree)))
             }
         };
@@ -443,6 +499,7 @@ pub(crate) fn parse_assignments(
             value,
             shown,
             rhs,
+            pi_times: is_pi,
         });
     }
     Ok(assignments)
@@ -553,7 +610,34 @@ impl LoadedSystem {
 
 #[cfg(test)]
 mod tests {
-    use super::decimal_number;
+    use super::{decimal_number, pi_multiple};
+
+    #[test]
+    fn a_multiple_of_pi_alone_is_its_rational() {
+        for (written, q) in [
+            ("pi", "1"),
+            ("π", "1"),
+            ("-pi", "-1"),
+            ("−π/2", "-1/2"),
+            ("3*pi/4", "3/4"),
+            ("3pi/4", "3/4"),
+            ("2 π", "2"),
+            ("0.5*pi", "1/2"),
+            ("1/3*pi", "1/3"),
+            (" + pi / 6 ", "1/6"),
+        ] {
+            assert_eq!(
+                pi_multiple(written).map(|q| q.to_string()),
+                Some(q.to_string()),
+                "{written}"
+            );
+        }
+        for other in [
+            "x*pi", "2*pi + 1", "pi/0", "pi/x", "pie", "pi*2", "(pi)", "p", "",
+        ] {
+            assert_eq!(pi_multiple(other), None, "{other}");
+        }
+    }
 
     #[test]
     fn a_decimal_number_is_the_fraction_it_writes() {

@@ -21,7 +21,7 @@ pub struct PlotInput {
     pub hamiltonian: Expr,
     /// The starting points, one an orbit: the value of every coordinate, angle and momentum
     /// at `t = 0`, in the phase space's order (coordinates and angles, then momenta).
-    pub starts: Vec<Vec<(Var, Rational)>>,
+    pub starts: Vec<Vec<(Var, StartValue)>>,
     /// The curves, each a label and a real function at the parameters' values: a complex
     /// function is two curves, its real and imaginary parts.
     pub curves: Vec<(String, Expr)>,
@@ -30,6 +30,28 @@ pub struct PlotInput {
     /// The function whose upward zeros are kept instead of equally spaced times (a
     /// Poincaré section), if any: a label and a real function.
     pub section: Option<(String, Expr)>,
+}
+
+/// A starting value: exact, or an exact multiple of π (`θ = 3π/4`), which floating point
+/// then rounds.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub enum StartValue {
+    /// The value.
+    Exact(Rational),
+    /// `q·π`.
+    PiTimes(Rational),
+}
+
+impl StartValue {
+    /// The nearest `f64` (for `q·π`, the nearest to `q` times `π`'s).
+    pub fn to_f64(&self) -> Result<f64, crate::trajectory::TrajectoryError> {
+        match self {
+            StartValue::Exact(q) => crate::trajectory::nearest_f64(q),
+            StartValue::PiTimes(q) => {
+                crate::trajectory::nearest_f64(q).map(|x| x * std::f64::consts::PI)
+            }
+        }
+    }
 }
 
 /// What a plot's horizontal axis shows instead of the time.
@@ -141,6 +163,7 @@ impl LoadedSystem {
             kinds: "a parameter",
             usage: "--at reads `parameter = number, …`, such as \"M = 1, omega = 3/2\"",
             decimals: true,
+            pi: false,
         };
         let admit = |v: Var| {
             let kind = self.system.vars().variable(v).kind();
@@ -171,12 +194,13 @@ impl LoadedSystem {
         &self,
         from: &str,
         values: &Values,
-    ) -> Result<Vec<(Var, Rational)>, FileError> {
+    ) -> Result<Vec<(Var, StartValue)>, FileError> {
         let form = AssignmentForm {
             what: "a value of --from",
             kinds: "a coordinate, an angle or a momentum",
             usage: "--from reads `variable = value, …`, such as \"x = 1, p_y = 1/2\"",
             decimals: true,
+            pi: true,
         };
         let admit = |v: Var| {
             (self.system.vars().variable(v).kind() == VarKind::Parameter).then(|| {
@@ -197,7 +221,13 @@ impl LoadedSystem {
             );
             let what = format!("the starting value of {}", self.display(a.var));
             let value = number(&at_values(&what, &a.value, values)?, &a.rhs, &source, why)?;
-            given.push((a.var, value));
+            given.push((
+                a.var,
+                match a.pi_times {
+                    true => StartValue::PiTimes(value),
+                    false => StartValue::Exact(value),
+                },
+            ));
         }
         let pairs = self.system.space().pairs();
         let phase = pairs.iter().map(|c| c.q).chain(pairs.iter().map(|c| c.p));

@@ -1301,3 +1301,55 @@ fn cli_tower_names_a_misspelt_builtin_system() {
         "no built-in system 'harmonics' (harmonic, gravity), and no file of that name",
     );
 }
+
+/// A starting angle may be a multiple of π alone (`theta = 3*pi/4`), which floating point
+/// then rounds; in an expression `pi` is refused with a hint.
+#[test]
+fn cli_plot_starting_angles_may_be_multiples_of_pi() {
+    let svg = scratch_file("pi.svg");
+    let args = |theta: &str| {
+        vec![
+            "plot".to_string(),
+            "systems/harmonic-rotor.toml".into(),
+            "cos(theta)".into(),
+            "sin(theta)".into(),
+            "--at".into(),
+            "M = 1, omega = 1, I = 1".into(),
+            "--from".into(),
+            format!("x = 1, y = 0, theta = {theta}, p_x = 0, p_y = 1/2, p_theta = 0"),
+            "--time".into(),
+            "1".into(),
+            "--steps".into(),
+            "10".into(),
+            "-o".into(),
+            svg.to_str().unwrap().into(),
+            "--format".into(),
+            "json".into(),
+        ]
+    };
+    let run_with = |theta: &str| {
+        let a = args(theta);
+        let doc: Value =
+            serde_json::from_str(&run(&a.iter().map(String::as_str).collect::<Vec<_>>(), 0))
+                .expect("JSON");
+        let first = |k: usize| doc["functions"][k]["first"].as_f64().expect("a number");
+        (first(1), first(2))
+    };
+    let half = std::f64::consts::FRAC_1_SQRT_2;
+    for theta in ["3*pi/4", "3π/4", "0.75*pi"] {
+        let (c, s) = run_with(theta);
+        assert!(
+            (c + half).abs() < 1e-12 && (s - half).abs() < 1e-12,
+            "{theta}: {c}, {s}"
+        );
+    }
+    let a = args("2*pi + 1");
+    let out = superint(&a.iter().map(String::as_str).collect::<Vec<_>>());
+    assert_eq!(out.status.code(), Some(2));
+    let err = stderr(&out);
+    assert!(
+        err.contains("unknown name 'pi'")
+            && err.contains("hint: a value may be a multiple of π alone (theta = 3*pi/4"),
+        "{err}"
+    );
+}
