@@ -507,7 +507,7 @@ impl Problem {
         if count > limit {
             return Err(EngineError::Invalid(format!(
                 "the space has {count} unknowns, more than the term limit {limit}: search a \
-                 smaller space, or raise the limit (--max-terms)"
+                 smaller space, or raise the limit (`Limits::max_terms`; on the command line, --max-terms)"
             )));
         }
         let mut unknowns = Vec::with_capacity(count);
