@@ -614,6 +614,8 @@ pub fn search_report(
         let note = match &symbolic {
             // Nothing fixed: every proof was symbolic.
             _ if r.parameters.is_empty() => None,
+            // Every one lifted back to the fixed parameters too: proved for every value.
+            Some(_) if lifted == rest.len() => None,
             Some(names) => Some(proved_for_every(names, &fixed)),
             None => Some(format!("{lifted} of them lifted and proved symbolically")),
         };

@@ -434,8 +434,19 @@ pub fn run(job: &PlotJob) -> anyhow::Result<bool> {
 /// named `-` was written), the chart and the data in one file (the data replaced the chart),
 /// or either one the system file itself.
 fn check_outputs(args: &PlotArgs) -> anyhow::Result<()> {
+    // The same file however spelled (`same.svg`, `./same.svg`), written yet or not: the
+    // folders as the system resolves them, and the names.
+    let resolved = |p: &std::path::Path| {
+        p.canonicalize().ok().or_else(|| {
+            let folder = match p.parent() {
+                Some(f) if !f.as_os_str().is_empty() => f,
+                _ => std::path::Path::new("."),
+            };
+            Some(folder.canonicalize().ok()?.join(p.file_name()?))
+        })
+    };
     let same = |a: &std::path::Path, b: &std::path::Path| {
-        a == b || matches!((a.canonicalize(), b.canonicalize()), (Ok(x), Ok(y)) if x == y)
+        a == b || matches!((resolved(a), resolved(b)), (Some(x), Some(y)) if x == y)
     };
     if let Some(data) = &args.data {
         if data.as_os_str() == "-" {

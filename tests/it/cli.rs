@@ -697,6 +697,8 @@ fn cli_plot_bad_arguments_exit_2_with_a_message() {
     let full = "x = 1, y = 0, theta = 0, p_x = 0, p_y = 1/2, p_theta = 1";
     let out = scratch_file("bad.svg");
     let out = out.to_str().unwrap();
+    // The same file spelled otherwise, and not written yet.
+    let dotted = out.replace("/bad.svg", "/./bad.svg");
     let at = "M = 1, omega = 1, I = 1";
     for (args, message) in [
         (
@@ -802,6 +804,10 @@ fn cli_plot_bad_arguments_exit_2_with_a_message() {
         ),
         (
             vec!["L", "--at", at, "--from", full, "--data", out],
+            "-o and --data name the same file",
+        ),
+        (
+            vec!["L", "--at", at, "--from", full, "--data", &dotted],
             "-o and --data name the same file",
         ),
         (

@@ -1663,3 +1663,30 @@ fn a_search_says_when_powers_of_h_need_a_larger_parameters_degree() {
         "{one}"
     );
 }
+
+/// With some parameters symbolic and the rest lifted back, the claim for the basis elements
+/// not shown holds for every value: it said "proved for every α, β, γ, at M = 1" although
+/// every element was lifted in `M` too.
+#[test]
+fn a_symbolic_search_lifted_in_the_rest_says_every_value() {
+    let (v, text) = json_and_text(&[
+        "search",
+        "systems/smorodinsky-winternitz-i.toml",
+        "--laurent",
+        "--symbolic",
+        "alpha,beta,gamma",
+    ]);
+    let dimension = v["searches"][0]["dimension"].as_u64().unwrap();
+    assert_eq!(
+        v["searches"][0]["for_every_value"].as_u64(),
+        Some(dimension)
+    );
+    let rest = v["claims"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .find(|c| c["id"] == "basis")
+        .expect("the claim for the other elements");
+    assert_eq!(rest["note"], serde_json::Value::Null);
+    assert!(!text.contains("at M = 1"), "{text}");
+}
