@@ -115,22 +115,25 @@ fn power_past_parameters_degree(h: &Expr, options: &SearchOptions) -> Option<Str
         return None;
     }
     let vars = h.vars();
-    let degree_in = |f: &dyn Fn(&Var) -> bool| {
-        h.terms()
-            .map(|t| {
-                vars.vars()
-                    .filter(|v| f(v))
-                    .map(|v| t.exponent(v).abs())
-                    .sum::<i64>()
-            })
-            .max()
-            .unwrap_or(0)
-    };
-    let s = degree_in(&|v| options.symbolic.contains(v));
-    let kind = |k: VarKind| move |v: &Var| vars.variable(*v).kind() == k;
-    let momenta = h.total_degree(&[VarKind::Momentum]).unwrap_or(0);
-    let positions = degree_in(&kind(VarKind::Coordinate));
-    let trig = degree_in(&kind(VarKind::Angle));
+    // The total degree in the symbolic parameters (`total_degree` counts by kind, and the
+    // fixed parameters are parameters too).
+    let s = h
+        .terms()
+        .map(|t| {
+            options
+                .symbolic
+                .iter()
+                .map(|&v| t.exponent(v).abs())
+                .sum::<i64>()
+        })
+        .max()
+        .unwrap_or(0);
+    let degree = |kind| h.total_degree(&[kind]).unwrap_or(0);
+    let (momenta, positions, trig) = (
+        degree(VarKind::Momentum),
+        degree(VarKind::Coordinate),
+        degree(VarKind::Angle),
+    );
     let space = &options.space;
     let bound = i64::from(space.parameters_degree);
     let names = parameter_names(vars, &options.symbolic);
@@ -149,16 +152,7 @@ fn power_past_parameters_degree(h: &Expr, options: &SearchOptions) -> Option<Str
     let k = (2..=i64::from(space.momenta_degree).max(2))
         .take_while(|&k| fits(k) && momenta > 0)
         .find(|&k| k * s > bound)?;
-    let power: String = k
-        .to_string()
-        .chars()
-        .map(|d| {
-            "⁰¹²³⁴⁵⁶⁷⁸⁹"
-                .chars()
-                .nth(d as usize - '0' as usize)
-                .unwrap_or(d)
-        })
-        .collect();
+    let power = trigpoly::superscript(k);
     Some(format!(
         "Note: `H{power}` lies in the space but for its degree {} in `{names}`, past the space's \
          `{bound}` (`--parameters-degree`): integrals of degree {} in the momenta may need a \
@@ -166,6 +160,18 @@ fn power_past_parameters_degree(h: &Expr, options: &SearchOptions) -> Option<Str
         k * s,
         k * momenta
     ))
+}
+
+/// The basis integrals a search shows as claims: with `--new-only` the new ones, with
+/// symbolic parameters the generators over their polynomials, else the whole basis.
+fn shown_integrals(r: &SearchResult) -> Vec<usize> {
+    match (&r.new, &r.module) {
+        (Some(n), _) => n.new.clone(),
+        (None, Some(m)) => (0..r.basis.len())
+            .filter(|i| m.generators.contains(i))
+            .collect(),
+        (None, None) => (0..r.basis.len()).collect(),
+    }
 }
 
 /// The names of parameters, `A, B`.
@@ -361,6 +367,9 @@ pub fn search_report(
     } else if let Some(note) = power_past_parameters_degree(&h, options) {
         entries.push(Entry::Text(note));
     }
+    let for_every_value = (0..r.basis.len())
+        .filter(|&i| r.for_every_value(i).is_some())
+        .count();
     if !r.parameters.is_empty() {
         let lift = if r.liftable && r.all_symbolic() {
             "then each basis element was lifted back to symbolic parameters by homogeneity and \
@@ -369,10 +378,7 @@ pub fn search_report(
         } else if r.liftable {
             "then lifted back to symbolic parameters by homogeneity where possible".to_string()
         } else {
-            match (0..r.basis.len())
-                .filter(|&i| r.for_every_value(i).is_some())
-                .count()
-            {
+            match for_every_value {
                 0 => "the weights do not determine every parameter, so nothing is lifted, and \
                       the basis is proved at these values only"
                     .to_string(),
@@ -471,16 +477,8 @@ pub fn search_report(
     let complex = label_letter(system, &["A", "B", "Ψ"], r.basis.len());
     let name_of = |v: &Var| vars.variable(*v).name().to_string();
     let names_of = |vs: &[Var]| vs.iter().map(name_of).collect::<Vec<_>>();
-    let shown_ids: Vec<String> = match &r.new {
-        Some(n) => n.new.clone(),
-        None => match &r.module {
-            Some(m) => m.generators.clone(),
-            None => (0..r.basis.len()).collect(),
-        },
-    }
-    .into_iter()
-    .map(|i| format!("{letter}{}", i + 1))
-    .collect();
+    let label = |i: usize| format!("{letter}{}", i + 1);
+    let shown = shown_integrals(&r);
     entries.push(Entry::Data(Facts::Search(SearchFacts {
         space: r.space,
         coordinates: names_of(&r.variables.coordinates),
@@ -502,10 +500,8 @@ pub fn search_report(
         dimension: r.basis.len(),
         by_momenta_degree: dims,
         counts,
-        for_every_value: (0..r.basis.len())
-            .filter(|&i| r.for_every_value(i).is_some())
-            .count(),
-        shown: shown_ids,
+        for_every_value,
+        shown: shown.iter().map(|&i| label(i)).collect(),
         new_only: r.new.clone(),
     })));
     let mut sections = vec![Section {
@@ -516,16 +512,11 @@ pub fn search_report(
     }];
 
     // The basis (or the new part; with symbolic parameters, its generators), proved.
-    let mut shown: Vec<usize> = match &r.new {
-        Some(n) => n.new.clone(),
-        None => (0..r.basis.len()).collect(),
-    };
     let mut entries = Vec::new();
     if let (Some(m), Some(names)) = (&r.module, &symbolic) {
         let shown_text = if r.new.is_some() {
             "Below, parameter multiples of integrals count as generated."
         } else {
-            shown.retain(|i| m.generators.contains(i));
             "Shown: the generators."
         };
         entries.push(Entry::Text(format!(
@@ -553,7 +544,6 @@ pub fn search_report(
             r.basis.len()
         )));
     }
-    let label = |i: usize| format!("{letter}{}", i + 1);
     if shown.is_empty() {
         entries.push(Entry::Text(
             "None: the known integrals generate every integral in the space.".into(),
@@ -842,7 +832,7 @@ pub fn closure_report(
             }
         }
     }
-    let symbolic: Vec<Var> = options.symbolic.clone();
+    let symbolic = &options.symbolic[..];
     entries.push(Entry::Data(Facts::Closure(ClosureFacts {
         generators: c.names.clone(),
         degree: c.degree,
@@ -851,7 +841,7 @@ pub fn closure_report(
         parameters: parameter_facts(
             system.vars(),
             &c.parameters,
-            (!symbolic.is_empty()).then_some((&symbolic[..], options.parameters_degree)),
+            (!symbolic.is_empty()).then_some((symbolic, options.parameters_degree)),
             &cond,
         ),
         outside: outside

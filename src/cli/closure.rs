@@ -117,7 +117,7 @@ pub fn run(job: &ClosureJob) -> anyhow::Result<bool> {
         }
         // A defined name that the system has already would shadow it, and the brackets
         // found would read, in the file's names, as claims about the system's own.
-        if subject.system().vars().lookup(name).is_some() {
+        if subject.system().lookup(name).is_some() {
             bail!("--define {name}: {name} is a variable of the system; choose another name");
         }
         if let Ok(known) = subject.parse(name) {

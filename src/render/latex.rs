@@ -6,7 +6,7 @@ use trigpoly::Style;
 
 use super::tex::{markup, math, relation, sentence, text};
 use super::text::{number, point, upper_bound};
-use super::{verdict, Options};
+use super::{table_list, verdict, Options};
 use crate::report::{
     ClaimKind, ClaimResult, Entry, Equations, ProofResult, RankResult, Report, SummaryKind,
     TableResult, TowerResult,
@@ -274,20 +274,15 @@ fn table(out: &mut Vec<String>, t: &TableResult) {
 /// A table too wide for the page, as the list of its brackets above the diagonal that are not
 /// zero (the others follow by antisymmetry), each broken over lines as a long equation is.
 fn table_as_list(out: &mut Vec<String>, t: &TableResult, head: &[String], cells: &[Vec<String>]) {
-    let caption = t.caption.replace(" (row `A`, column `B`)", "");
+    let (caption, brackets) = table_list(&t.caption, cells);
     out.push(format!(
         r"\noindent {}, the brackets that are not zero, $A$ before $B$:",
         markup(&caption)
     ));
     let mut rows = Vec::new();
-    for (a, row) in cells.iter().enumerate() {
-        for (b, cell) in row.iter().enumerate().skip(a + 1) {
-            if cell == "0" {
-                continue;
-            }
-            let first = format!(r"\{{{}, {}\}} &= ", head[a], head[b]);
-            rows.extend(broken_rows(&first, cell, ROW));
-        }
+    for (a, b, cell) in brackets {
+        let first = format!(r"\{{{}, {}\}} &= ", head[a], head[b]);
+        rows.extend(broken_rows(&first, cell, ROW));
     }
     if rows.is_empty() {
         out.push(r"\[1ex] every bracket is zero.".into());

@@ -101,6 +101,28 @@ pub fn printable(text: &str) -> std::borrow::Cow<'_, str> {
     }
 }
 
+/// A table set as a list ([`crate::report::TableResult`] too wide for a line or page): its
+/// caption without the note on rows and columns, and its brackets `(A, B, cell)` above the
+/// diagonal that are not zero, the others following by antisymmetry.
+pub(crate) fn table_list<'c>(
+    caption: &str,
+    cells: &'c [Vec<String>],
+) -> (String, Vec<(usize, usize, &'c str)>) {
+    let brackets = cells
+        .iter()
+        .enumerate()
+        .flat_map(|(a, row)| {
+            row.iter()
+                .enumerate()
+                .skip(a + 1)
+                .map(move |(b, c)| (a, b, c))
+        })
+        .filter(|(_, _, cell)| *cell != "0")
+        .map(|(a, b, cell)| (a, b, cell.as_str()))
+        .collect();
+    (caption.replace(" (row `A`, column `B`)", ""), brackets)
+}
+
 /// Prose markup (formulas between backticks) as plain text.
 pub(crate) fn plain(markup: &str) -> String {
     markup.replace('`', "")

@@ -4,7 +4,7 @@ use brackets::UpperBound;
 use rayon::prelude::*;
 use trigpoly::{GaussianRational, Style, VarKind};
 
-use super::{condition_suffix, pad, plain, plural, verdict, width, Options};
+use super::{condition_suffix, pad, plain, plural, table_list, verdict, width, Options};
 use crate::report::{
     ClaimKind, ClaimResult, Entry, Equation, Equations, ProofResult, RankResult, Report,
     TableResult, TowerResult,
@@ -276,15 +276,12 @@ fn table(out: &mut Vec<String>, t: &TableResult) {
 /// integrals made rows of a thousand characters).
 fn table_as_list(out: &mut Vec<String>, t: &TableResult, cells: &[Vec<String>]) {
     let names = &t.table.display;
-    let mut rows = Vec::new();
-    for (a, row) in cells.iter().enumerate() {
-        for (b, cell) in row.iter().enumerate().skip(a + 1) {
-            if cell != "0" {
-                rows.push(format!("    {{{}, {}}} = {cell}", names[a], names[b]));
-            }
-        }
-    }
-    let caption = plain(&t.caption.replace(" (row `A`, column `B`)", ""));
+    let (caption, brackets) = table_list(&t.caption, cells);
+    let caption = plain(&caption);
+    let rows: Vec<String> = brackets
+        .into_iter()
+        .map(|(a, b, cell)| format!("    {{{}, {}}} = {cell}", names[a], names[b]))
+        .collect();
     match rows.is_empty() {
         true => out.push(format!("{caption}: every bracket is zero.")),
         false => {

@@ -307,14 +307,19 @@ pub(crate) struct AssignmentForm<'a> {
     pub pi: bool,
 }
 
+/// A leading sign (`-`, `−` or `+`) taken off: whether it was a minus, and the rest.
+fn split_sign(s: &str) -> (bool, &str) {
+    match s.strip_prefix(['-', '+', '−']) {
+        Some(rest) => (!s.starts_with('+'), rest),
+        None => (false, s),
+    }
+}
+
 /// The rational `q` of a multiple of π written alone: an optional sign, an optional
 /// coefficient (integer, fraction or decimal, then `*` or a space, or nothing), `pi` or `π`,
 /// and an optional divisor (`/4`). `None` for anything else.
 pub(crate) fn pi_multiple(s: &str) -> Option<trigpoly::Rational> {
-    let (negative, rest) = match s.trim().strip_prefix(['-', '+', '−']) {
-        Some(rest) => (s.trim().starts_with(['-', '−']), rest),
-        None => (false, s.trim()),
-    };
+    let (negative, rest) = split_sign(s.trim());
     let (at, len) = match rest.find('π') {
         Some(k) => (k, 'π'.len_utf8()),
         None => (rest.find("pi")?, 2),
@@ -345,10 +350,7 @@ pub(crate) fn pi_multiple(s: &str) -> Option<trigpoly::Rational> {
 /// an optional sign, digits with a decimal point or an exponent (`e` or `E`, at most 4 digits).
 /// `None` for anything else, integers without an exponent included (the parser reads those).
 pub(crate) fn decimal_number(s: &str) -> Option<trigpoly::Rational> {
-    let (negative, s) = match s.strip_prefix(['-', '+', '−']) {
-        Some(rest) => (s.starts_with(['-', '−']), rest),
-        None => (false, s),
-    };
+    let (negative, s) = split_sign(s);
     let (mantissa, exponent) = match s.split_once(['e', 'E']) {
         Some((m, e)) => {
             let digits = e.strip_prefix(['-', '+']).unwrap_or(e);
@@ -454,16 +456,18 @@ pub(crate) fn parse_assignments(
             ));
         }
         let name = vars.variable(var).unicode();
-        let decimal = form
-            .decimals
-            .then(|| decimal_number(rhs.value.trim()))
-            .flatten();
-        // `3*pi/4` when the file has no variable named so.
+        // A number alone, where the form takes it: a decimal, or `3*pi/4` when the file has
+        // no variable named so (`q` with `pi_times`).
         let pi = form.pi && vars.lookup("pi").is_none();
-        let pi_times = pi.then(|| pi_multiple(&rhs.value)).flatten();
-        let is_pi = pi_times.is_some() && decimal.is_none();
-        let (value, shown) = match decimal.or(pi_times) {
-            Some(q) => (
+        let decimal = form.decimals.then(|| decimal_number(rhs.value.trim()));
+        let pi_times = || pi.then(|| pi_multiple(&rhs.value)).flatten();
+        let number = match decimal.flatten() {
+            Some(q) => Some((q, false)),
+            None => pi_times().map(|q| (q, true)),
+        };
+        let pi_times = number.as_ref().is_some_and(|n| n.1);
+        let (value, shown) = match number {
+            Some((q, _)) => (
                 Expr::constant(vars, q.into()),
                 format!("{name} = {}", rhs.value.trim()),
             ),
@@ -499,7 +503,7 @@ pub(crate) fn parse_assignments(
             value,
             shown,
             rhs,
-            pi_times: is_pi,
+            pi_times,
         });
     }
     Ok(assignments)

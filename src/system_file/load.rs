@@ -9,7 +9,7 @@ use std::sync::Mutex;
 
 use brackets::{PhaseSpace, System};
 use toml::Spanned;
-use trigpoly::{AlgebraError, Expr, Limits, VarSet, RESERVED};
+use trigpoly::{is_identifier, AlgebraError, Expr, Limits, VarSet, RESERVED};
 
 use super::claims::ClaimSpec;
 use super::error::{locate_bytes, ErrorKind, FileError};
@@ -200,12 +200,6 @@ fn toml_error(source: &Source, e: &toml::de::Error) -> FileError {
     };
     let span = e.span().unwrap_or(0..0);
     source.error(kind, span, message)
-}
-
-fn is_identifier(s: &str) -> bool {
-    let mut chars = s.chars();
-    matches!(chars.next(), Some(c) if c.is_alphabetic() || c == '_')
-        && chars.all(|c| c.is_alphanumeric() || c == '_')
 }
 
 struct Builder<'a> {

@@ -159,8 +159,7 @@ impl System {
     /// If it is not declared (a bug in a built-in system); a name read from input goes
     /// through [`System::lookup`].
     pub fn var(&self, name: &str) -> Var {
-        self.vars()
-            .lookup(name)
+        self.lookup(name)
             .unwrap_or_else(|| panic!("variable {name} is not declared"))
     }
 

@@ -697,7 +697,9 @@ pub fn display_forms(display: &str) -> Option<(String, String)> {
     })
 }
 
-fn is_identifier(s: &str) -> bool {
+/// Whether `s` can name a variable or a function: letters, digits and `_`, not starting with
+/// a digit.
+pub fn is_identifier(s: &str) -> bool {
     let mut chars = s.chars();
     matches!(chars.next(), Some(c) if c.is_alphabetic() || c == '_')
         && chars.all(|c| c.is_alphanumeric() || c == '_')

@@ -90,11 +90,7 @@ impl<C: Coefficient> Poly<C> {
                 for (cos, sin, x) in row {
                     (powers[2 * a], powers[2 * a + 1]) = (*cos, *sin);
                     let trig = trigs.number(&powers);
-                    let slot = *index.entry((group, trig)).or_insert_with(|| {
-                        sums.push(GaussianAcc::default());
-                        sums.len() as u32 - 1
-                    });
-                    sums[slot as usize].add_mul(coeff, x);
+                    sum_at(&mut index, &mut sums, (group, trig)).add_mul(coeff, x);
                 }
             }
             if a + 1 < angles.len() {
@@ -109,11 +105,7 @@ impl<C: Coefficient> Poly<C> {
         }
         if angles.is_empty() {
             for (group, trig, coeff) in &entries {
-                let slot = *index.entry((*group, *trig)).or_insert_with(|| {
-                    sums.push(GaussianAcc::default());
-                    sums.len() as u32 - 1
-                });
-                sums[slot as usize].add(coeff);
+                sum_at(&mut index, &mut sums, (*group, *trig)).add(coeff);
             }
         }
         let momenta: Vec<usize> = self
@@ -218,6 +210,21 @@ fn check_angle<C: Coefficient>(vars: &VarSet, v: Var, what: &str) -> Result<(), 
         )));
     }
     Ok(())
+}
+
+/// The sum kept for `key` (a monomial's number and a trigonometric monomial's), new if there
+/// is none yet: the map holds indices into `sums`, so that growing it moves small entries
+/// rather than the accumulators.
+fn sum_at<'s>(
+    index: &mut FxHashMap<(u32, u32), u32>,
+    sums: &'s mut Vec<GaussianAcc>,
+    key: (u32, u32),
+) -> &'s mut GaussianAcc {
+    let slot = *index.entry(key).or_insert_with(|| {
+        sums.push(GaussianAcc::default());
+        sums.len() as u32 - 1
+    });
+    &mut sums[slot as usize]
 }
 
 /// `(cos θ + i sin θ)^k` (for `k < 0`, `(cos θ − i sin θ)^{|k|}`) in normal form, as

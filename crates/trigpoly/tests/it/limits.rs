@@ -310,16 +310,7 @@ fn repeated_variable_exponents_that_overflow_i64_are_rejected() {
 /// direction are multiplied as before: `(1 + x + … + x⁶)^60` has 361 terms.
 #[test]
 fn term_limit_refuses_a_power_in_general_position_up_front() {
-    let vars = VarSet::builder()
-        .coordinate("x")
-        .coordinate("y")
-        .coordinate("z")
-        .coordinate("t")
-        .coordinate("u")
-        .coordinate("v")
-        .coordinate("w")
-        .build()
-        .unwrap();
+    let vars = coordinates(&["x", "y", "z", "t", "u", "v", "w"]);
     let limit = Limits::default().max_terms;
     for f in ["x + y + z + t + u + v + w", "1 + x + y + z + t + u + v + w"] {
         let f: Q = p(&vars, f);
