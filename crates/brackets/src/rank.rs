@@ -41,14 +41,18 @@ pub struct RankCertificate {
     pub upper: UpperBound,
 }
 
+/// How many points the lower bound samples first.
+const FIRST_POINTS: usize = 4;
+/// How many more points it may try for a minor that is not identically zero.
+const FURTHER_POINTS: usize = 64;
 /// Rational points of the unit circle used for angles.
 const CIRCLE: [(i64, i64, i64); 4] = [(3, 4, 5), (5, 12, 13), (8, 15, 17), (7, 24, 25)];
-/// Distinct primes: the `k`-th variable at the `s`-th point is `(p_k + 2s)/(1 + k mod 3)`.
+/// Distinct primes: the `k`-th variable at the `s`-th of the first points is
+/// `(p_k + 2s)/(1 + k mod 3)`.
 const PRIMES: [i64; 16] = [2, 3, 5, 7, 11, 13, 17, 19, 23, 29, 31, 37, 41, 43, 47, 53];
 
 /// Certifies the rank of the Jacobian of `functions` by the phase-space coordinates.
 pub fn rank(space: &PhaseSpace, functions: &[Expr]) -> Result<RankCertificate, EngineError> {
-    let vars = space.vars().clone();
     let coords = space.coordinates();
     let jac: Vec<Vec<Expr>> = functions
         .iter()
@@ -61,69 +65,136 @@ pub fn rank(space: &PhaseSpace, functions: &[Expr]) -> Result<RankCertificate, E
         .collect::<Result<_, _>>()?;
     // Lower bound: the best rank over a few exact points.
     let mut best: Option<RankCertificate> = None;
-    for shift in 0..4 {
-        let mut point = Point::new(&vars);
-        let mut values = Vec::new();
-        for (k, v) in vars.vars().enumerate() {
-            if vars.variable(v).kind() == VarKind::Angle {
-                let (c, s, r) = CIRCLE[(k + shift) % CIRCLE.len()];
-                point = point.with_angle(v, Rational::new(c, r), Rational::new(s, r))?;
-            } else {
-                let a = PRIMES[k % PRIMES.len()] + (k / PRIMES.len()) as i64 + 2 * shift as i64;
-                point = point.with(v, Rational::new(a, 1 + (k % 3) as i64));
-            }
-            values.push((v, point.value(v).expect("just set").clone()));
-        }
-        let mut m = Matrix::zeros(functions.len(), coords.len());
-        for (i, row) in jac.iter().enumerate() {
-            for (j, e) in row.iter().enumerate() {
-                m.set(i, j, e.eval(&point)?);
-            }
-        }
-        let red = m.reduce();
-        let r = red.pivot_cols.len();
-        if best.as_ref().is_none_or(|b| r > b.rank) {
-            let mut rows = red.pivot_rows.clone();
-            rows.sort_unstable();
-            let cols = red.pivot_cols.clone();
-            let mut minor = Matrix::zeros(r, r);
-            for (a, &i) in rows.iter().enumerate() {
-                for (b, &j) in cols.iter().enumerate() {
-                    minor.set(a, b, m.get(i, j).clone());
-                }
-            }
-            best = Some(RankCertificate {
-                rank: r,
-                minor_rows: rows,
-                minor_cols: cols.iter().map(|&j| coords[j]).collect(),
-                point: values,
-                minor_value: minor.determinant(),
-                upper: UpperBound::Size,
-            });
+    for index in 0..FIRST_POINTS {
+        let cert = certificate_at(&jac, &coords, sample_point(space, index)?)?;
+        if best.as_ref().is_none_or(|b| cert.rank > b.rank) {
+            best = Some(cert);
         }
     }
     let mut cert = best.expect("at least one point");
-    let r = cert.rank;
-    if r < functions.len().min(coords.len()) {
-        let mut count = 0;
-        for rows in (0..functions.len()).combinations(r + 1) {
-            // The minors of these rows share their smaller minors: computed once for all of
-            // their column sets.
-            let mut minors = Minors::new(&jac, &rows);
-            for cols in (0..coords.len()).combinations(r + 1) {
-                count += 1;
-                if !minors.det(&cols)?.is_zero() {
-                    return Err(EngineError::Invalid(format!(
-                        "rank is above {r} (a {}-minor is not identically zero) although no \
-                         sampled point showed it; try other points",
-                        r + 1
-                    )));
-                }
+    // Upper bound: every larger minor vanishes identically. A larger minor that does not is a
+    // polynomial nonzero somewhere: a further point where it is nonzero raises the lower bound
+    // (the first points can all lie where it vanishes: they are on one line).
+    while cert.rank < functions.len().min(coords.len()) {
+        let Some(minor) = nonvanishing_minor(&jac, cert.rank + 1, &mut cert.upper)? else {
+            break;
+        };
+        let mut raised = None;
+        for index in FIRST_POINTS..FIRST_POINTS + FURTHER_POINTS {
+            let (point, values) = sample_point(space, index)?;
+            if !minor.eval(&point)?.is_zero() {
+                raised = Some(certificate_at(&jac, &coords, (point, values))?);
+                break;
             }
         }
-        cert.upper = UpperBound::VanishingMinors { count };
+        match raised {
+            Some(higher) => cert = higher,
+            None => {
+                return Err(EngineError::Invalid(format!(
+                    "rank is above {} (a {}-minor is not identically zero), but the minor \
+                     vanished at all {} sampled points",
+                    cert.rank,
+                    cert.rank + 1,
+                    FIRST_POINTS + FURTHER_POINTS
+                )))
+            }
+        }
     }
     Ok(cert)
+}
+
+/// The exact sample point number `index`: a value for each variable (angles as `cos + i sin`
+/// on the unit circle), and those values as a list.
+fn sample_point(
+    space: &PhaseSpace,
+    index: usize,
+) -> Result<(Point, Vec<(Var, GaussianRational)>), EngineError> {
+    let vars = space.vars();
+    let mut point = Point::new(vars);
+    let mut values = Vec::new();
+    for (k, v) in vars.vars().enumerate() {
+        if vars.variable(v).kind() == VarKind::Angle {
+            let (c, s, r) = if index < FIRST_POINTS {
+                CIRCLE[(k + index) % CIRCLE.len()]
+            } else {
+                // (m² − 1, 2m, m² + 1): a rational point of the circle for every m ≥ 2.
+                let m = ((k + 3 * index) % 11 + 2) as i64;
+                (m * m - 1, 2 * m, m * m + 1)
+            };
+            point = point.with_angle(v, Rational::new(c, r), Rational::new(s, r))?;
+        } else {
+            let value = if index < FIRST_POINTS {
+                let a = PRIMES[k % PRIMES.len()] + (k / PRIMES.len()) as i64 + 2 * index as i64;
+                Rational::new(a, 1 + (k % 3) as i64)
+            } else {
+                // Quadratic in the index, so that no three of these points are on a line.
+                let t = (index - FIRST_POINTS + 1) as i64;
+                let a = PRIMES[(k + 3 * index) % PRIMES.len()] + t * t + k as i64;
+                Rational::new(a, 1 + ((k + index) % 4) as i64)
+            };
+            point = point.with(v, value);
+        }
+        values.push((v, point.value(v).expect("just set").clone()));
+    }
+    Ok((point, values))
+}
+
+/// The rank of the Jacobian at a point, with a nonzero minor of that size there.
+fn certificate_at(
+    jac: &[Vec<Expr>],
+    coords: &[Var],
+    (point, values): (Point, Vec<(Var, GaussianRational)>),
+) -> Result<RankCertificate, EngineError> {
+    let mut m = Matrix::zeros(jac.len(), coords.len());
+    for (i, row) in jac.iter().enumerate() {
+        for (j, e) in row.iter().enumerate() {
+            m.set(i, j, e.eval(&point)?);
+        }
+    }
+    let red = m.reduce();
+    let r = red.pivot_cols.len();
+    let mut rows = red.pivot_rows.clone();
+    rows.sort_unstable();
+    let cols = red.pivot_cols.clone();
+    let mut minor = Matrix::zeros(r, r);
+    for (a, &i) in rows.iter().enumerate() {
+        for (b, &j) in cols.iter().enumerate() {
+            minor.set(a, b, m.get(i, j).clone());
+        }
+    }
+    Ok(RankCertificate {
+        rank: r,
+        minor_rows: rows,
+        minor_cols: cols.iter().map(|&j| coords[j]).collect(),
+        point: values,
+        minor_value: minor.determinant(),
+        upper: UpperBound::Size,
+    })
+}
+
+/// A `size × size` minor of `jac` that is not identically zero, or `None` when all vanish
+/// (`upper` then counts the minors expanded).
+fn nonvanishing_minor(
+    jac: &[Vec<Expr>],
+    size: usize,
+    upper: &mut UpperBound,
+) -> Result<Option<Expr>, EngineError> {
+    let columns = jac.first().map_or(0, Vec::len);
+    let mut count = 0;
+    for rows in (0..jac.len()).combinations(size) {
+        // The minors of these rows share their smaller minors: computed once for all of
+        // their column sets.
+        let mut minors = Minors::new(jac, &rows);
+        for cols in (0..columns).combinations(size) {
+            count += 1;
+            let minor = minors.det(&cols)?;
+            if !minor.is_zero() {
+                return Ok(Some(minor));
+            }
+        }
+    }
+    *upper = UpperBound::VanishingMinors { count };
+    Ok(None)
 }
 
 /// The determinant of the submatrix `rows × cols`, by Laplace expansion with memoised minors;
@@ -206,5 +277,49 @@ impl<'a> Minors<'a> {
         }
         self.memo.insert(mask, acc.clone());
         Ok(acc)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::systems::harmonic_rotor;
+
+    fn rank_of(functions: &[&str]) -> RankCertificate {
+        let rotor = harmonic_rotor();
+        let exprs: Vec<Expr> = functions.iter().map(|f| rotor.parse(f).unwrap()).collect();
+        rank(rotor.space(), &exprs).expect("a certificate")
+    }
+
+    /// The first sample points lie on one line, here `x − 2y + 1 = 0` at all four: the
+    /// gradient of `(x − 2y + 1)²` vanishes there, and the rank was reported as an error.
+    /// A larger minor that does not vanish identically now sends the search to further
+    /// points, and its value there is the certificate.
+    #[test]
+    fn a_minor_vanishing_on_the_first_points_is_found_at_a_further_one() {
+        assert_eq!(rank_of(&["(x - 2*y + 1)^2"]).rank, 1);
+        let cert = rank_of(&["(x - 2*y + 1)^2", "x*p_y - y*p_x"]);
+        assert_eq!(cert.rank, 2);
+        assert_eq!(cert.upper, UpperBound::Size);
+        assert!(!cert.minor_value.is_zero());
+        let value = |name: &str| {
+            let rotor = harmonic_rotor();
+            let v = rotor.vars().lookup(name).unwrap();
+            cert.point.iter().find(|(w, _)| *w == v).unwrap().1.clone()
+        };
+        let on_line = &(&value("x") - &(&value("y") * &GaussianRational::from(2)))
+            + &GaussianRational::from(1);
+        assert!(
+            !on_line.is_zero(),
+            "the certificate's point is off the line"
+        );
+    }
+
+    /// A dependent pair keeps its rank with the vanishing minors as the upper bound.
+    #[test]
+    fn dependent_functions_keep_their_rank() {
+        let cert = rank_of(&["(x - 2*y + 1)^2", "(x - 2*y + 1)^3"]);
+        assert_eq!(cert.rank, 1);
+        assert!(matches!(cert.upper, UpperBound::VanishingMinors { count } if count > 0));
     }
 }
