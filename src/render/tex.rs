@@ -42,6 +42,8 @@ const GREEK: &[(char, &str)] = &[
 /// Symbols and their LaTeX math commands.
 const SYMBOLS: &[(char, &str)] = &[
     ('−', "-"),
+    ('ħ', r"\hbar"),
+    ('ℓ', r"\ell"),
     ('·', r"\cdot"),
     ('×', r"\times"),
     ('≤', r"\le"),
@@ -423,7 +425,21 @@ fn translate(s: &str) -> String {
 /// word, a run of digits, or one character other than `{`.
 fn script_piece(toks: &[Tok]) -> Option<(String, usize)> {
     match toks.first()? {
-        Tok::Word(w, d) => Some((format!("{w}{d}"), 1)),
+        Tok::Word(w, d) => {
+            // Subscript digits after the piece are its own subscript: `p_q₁` is `p_{q_{1}}`.
+            let lowered: String = toks[1..]
+                .iter()
+                .map_while(|t| match t {
+                    Tok::Char(c, None) => SUBSCRIPTS.chars().position(|s| s == *c),
+                    _ => None,
+                })
+                .map(|k| k.to_string())
+                .collect();
+            match lowered.len() {
+                0 => Some((format!("{w}{d}"), 1)),
+                n => Some((format!("{w}{d}_{{{lowered}}}"), 1 + n)),
+            }
+        }
         Tok::Char(c, None) if c.is_ascii_digit() && !matches!(toks.get(1), Some(Tok::Word(..))) => {
             let digits: String = toks
                 .iter()
@@ -634,6 +650,8 @@ mod tests {
             ("P_1_1, Q_12_3", "P_{1,1}, Q_{12,3}"),
             ("x_0^2", "x_{0}^{2}"),
             ("x₀", "x_{0}"),
+            ("p_q₁ + p_q₁₂", "p_{q_{1}} + p_{q_{12}}"),
+            ("ħ q", r"\hbar q"),
             ("ω⁻¹²", r"\omega ^{-12}"),
             ("e^{−inθ} for all", r"e^{-in\theta }\ \text{for all}"),
             ("exp(−inθ)", r"\exp (-in\theta )"),

@@ -9,7 +9,9 @@ use std::sync::Mutex;
 
 use brackets::{PhaseSpace, System};
 use toml::Spanned;
-use trigpoly::{is_identifier, AlgebraError, Expr, Limits, VarSet, RESERVED};
+use trigpoly::{
+    is_identifier, latex_unwritable, AlgebraError, Expr, Limits, VarSet, LATEX_LETTERS, RESERVED,
+};
 
 use super::claims::ClaimSpec;
 use super::error::{locate_bytes, ErrorKind, FileError};
@@ -259,6 +261,13 @@ impl<'a> Builder<'a> {
                     "'{name}' cannot name {what}: a name is letters, digits and '_', starting \
                      with a letter or '_'"
                 ),
+            ));
+        }
+        if let Some(c) = latex_unwritable(name) {
+            return Err(self.error(
+                ErrorKind::Name,
+                span,
+                format!("'{name}' cannot name {what}: LaTeX has no letter '{c}' ({LATEX_LETTERS})"),
             ));
         }
         if RESERVED.contains(&name) || name == "rank" {

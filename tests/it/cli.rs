@@ -244,8 +244,8 @@ fn compile_within(doc: &str, slack_pt: f64) {
 }
 
 /// Every command that writes LaTeX writes a document that compiles, for every system file and
-/// for names with several subscripts (`p_x_0`, `P_1_1`), accented names (`Hénon`) and claim
-/// ids that LaTeX would read as mathematics (`wrong_sign`).
+/// for names with several subscripts (`p_x_0`, `P_1_1`) or subscript digits (`q₁`, `p_q₁`), `ħ`,
+/// accented names (`Hénon`) and claim ids that LaTeX would read as mathematics (`wrong_sign`).
 #[test]
 fn cli_latex_of_every_command_compiles() {
     let systems: Vec<String> =
@@ -293,8 +293,10 @@ fn cli_latex_of_every_command_compiles() {
     let file = dir.join("ids.toml");
     std::fs::write(
         &file,
-        "name = \"Hénon's test\"\nhamiltonian = \"p_x_0^2/2\"\n[phase_space]\ncoordinates = [\"x_0\"]\n\
-         [[claim]]\nid = \"wrong_sign_#1\"\nclaim = \"{x_0, H} = -p_x_0\"\n",
+        "name = \"Hénon's test\"\nhamiltonian = \"p_x_0^2/2 + ħ*q₁ + p_q₁^2/2\"\n\
+         [phase_space]\ncoordinates = [\"x_0\", \"q₁\"]\nparameters = [\"ħ\"]\n\
+         [[claim]]\nid = \"wrong_sign_#1\"\nclaim = \"{x_0, H} = -p_x_0\"\n\
+         [[claim]]\nclaim = \"{q₁, H} = p_q₁\"\n",
     )
     .expect("write ids.toml");
     let out = superint(&["check", file.to_str().expect("a path"), "--format", "latex"]);

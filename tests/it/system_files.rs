@@ -239,6 +239,12 @@ fn bad_inputs() -> Vec<(&'static str, Vec<u8>, &'static str, Vec<&'static str>)>
             check.clone(),
         ),
         (
+            "a letter LaTeX has not",
+            base_with("parameters = [\"M\", ", "parameters = [\"M\", \"é\", "),
+            "bad.toml:6:20: 'é' cannot name a parameter: LaTeX has no letter 'é'",
+            check.clone(),
+        ),
+        (
             "bracket with a parameter",
             base_with("{A, H}", "{A, omega}"),
             "bad.toml:14:14: 'omega' is a parameter, not a variable of the phase space",

@@ -638,6 +638,12 @@ impl VarSetBuilder {
                     v.name
                 )));
             }
+            if let Some(c) = latex_unwritable(&v.name) {
+                return Err(AlgebraError::Invalid(format!(
+                    "{:?} cannot name a variable: LaTeX has no letter {c:?} ({LATEX_LETTERS})",
+                    v.name
+                )));
+            }
             for w in &self.vars[..k] {
                 if w.spelled_alike(v) {
                     return Err(AlgebraError::DeclaredTwice {
@@ -764,56 +770,123 @@ fn spell_out(unicode: &str) -> Option<String> {
     Some(unicode.split('_').map(piece).collect::<Vec<_>>().join("_"))
 }
 
-/// `omega_x` → (`ω_x`, `\omega_{x}`); `p_theta` → (`p_θ`, `p_{\theta}`); `G1` → (`G1`, `G_{1}`).
+/// `omega_x` → (`ω_x`, `\omega_{x}`); `p_theta` → (`p_θ`, `p_{\theta}`); `G1` → (`G1`, `G_{1}`);
+/// `q₁` → (`q₁`, `q_{1}`); `ħ` → (`ħ`, `{\hbar}`). The LaTeX is ASCII unless the name has a letter
+/// of no LaTeX command here ([`latex_unwritable`]).
 pub(crate) fn render_name(name: &str) -> (String, String) {
-    fn piece(p: &str) -> (String, String) {
-        for (ascii, uni, tex) in GREEK {
-            if p == *ascii || p == *uni {
-                return (uni.to_string(), tex.to_string());
-            }
-        }
-        // A Greek letter with digits after it: `theta1` → `θ1`, `\theta 1`.
-        let letters = p.trim_end_matches(|c: char| c.is_ascii_digit());
-        if letters.len() < p.len() {
-            if let Some((_, uni, tex)) = GREEK.iter().find(|g| letters == g.0 || letters == g.1) {
-                let digits = &p[letters.len()..];
-                return (format!("{uni}{digits}"), format!("{tex} {digits}"));
-            }
-        }
-        let tex = if p.chars().count() > 1 {
-            format!(r"\mathrm{{{p}}}")
-        } else {
-            p.to_string()
-        };
-        (p.to_string(), tex)
-    }
     match name.split_once('_') {
         Some((head, tail)) if !head.is_empty() && !tail.is_empty() => {
-            let (hu, ht) = piece(head);
-            let subs: Vec<(String, String)> = tail.split('_').map(piece).collect();
-            let su: Vec<&str> = subs.iter().map(|s| s.0.as_str()).collect();
-            let st: Vec<String> = subs
-                .iter()
-                .map(|s| s.1.trim_start_matches(r"\mathrm").to_string())
-                .collect();
-            let st: Vec<String> = st
-                .into_iter()
-                .map(|s| s.trim_start_matches('{').trim_end_matches('}').to_string())
-                .collect();
+            let head = Piece::of(head);
+            let subs: Vec<Piece> = tail.split('_').map(Piece::of).collect();
+            let unicode: Vec<&str> = subs.iter().map(|s| s.unicode.as_str()).collect();
+            let latex: Vec<&str> = subs.iter().map(|s| s.body.as_str()).collect();
             (
-                format!("{hu}_{}", su.join("_")),
-                format!("{ht}_{{{}}}", st.join(",")),
+                format!("{}_{}", head.unicode, unicode.join("_")),
+                format!("{}_{{{}}}", head.latex(), latex.join(",")),
             )
         }
         _ => {
             // Trailing digits become a subscript in LaTeX: G1 → G_{1}.
             let split = name.trim_end_matches(|c: char| c.is_ascii_digit());
             if !split.is_empty() && split.len() < name.len() {
-                let (u, t) = piece(split);
+                let piece = Piece::of(split);
                 let digits = &name[split.len()..];
-                return (format!("{u}{digits}"), format!("{t}_{{{digits}}}"));
+                return (
+                    format!("{}{digits}", piece.unicode),
+                    format!("{}_{{{digits}}}", piece.latex()),
+                );
             }
-            piece(name)
+            let piece = Piece::of(name);
+            (piece.unicode.clone(), piece.latex())
+        }
+    }
+}
+
+/// The first character of `name` that its LaTeX form cannot write in ASCII (a letter beyond
+/// ASCII, the Greek letters, `ħ`, `ℓ` and the subscript digits), if any: such a name would stop
+/// `pdflatex`.
+pub fn latex_unwritable(name: &str) -> Option<char> {
+    let (_, latex) = render_name(name);
+    latex.chars().find(|c| !c.is_ascii())
+}
+
+/// The letters a name may have, in words, for messages.
+pub const LATEX_LETTERS: &str =
+    "a name's letters are ASCII, Greek (alpha or α), ħ, ℓ and the subscript digits ₀–₉";
+
+/// Letters beyond ASCII and Greek with a LaTeX command of their own.
+const LETTERS: &[(char, &str)] = &[('ħ', r"{\hbar}"), ('ℓ', r"{\ell}")];
+
+/// The subscript digits `₀`–`₉`.
+const SUBSCRIPT_DIGITS: &str = "₀₁₂₃₄₅₆₇₈₉";
+
+/// One piece of a name between underscores, as text and as LaTeX.
+struct Piece {
+    unicode: String,
+    /// The LaTeX, without `\mathrm` (a subscript sets a word upright as it is).
+    body: String,
+    /// Whether the LaTeX is a word of several letters, upright in `\mathrm` outside a subscript.
+    word: bool,
+}
+
+impl Piece {
+    fn of(p: &str) -> Piece {
+        for (ascii, uni, tex) in GREEK {
+            if p == *ascii || p == *uni {
+                return Piece::symbol(uni, tex);
+            }
+        }
+        // Subscript digits: `q₁` → `q_{1}`.
+        let letters = p.trim_end_matches(|c| SUBSCRIPT_DIGITS.contains(c));
+        if !letters.is_empty() && letters.len() < p.len() {
+            let digits: String = p[letters.len()..]
+                .chars()
+                .filter_map(|c| SUBSCRIPT_DIGITS.chars().position(|d| d == c))
+                .map(|k| char::from(b'0' + k as u8))
+                .collect();
+            let base = Piece::of(letters);
+            return Piece {
+                unicode: p.to_string(),
+                body: format!("{}_{{{digits}}}", base.latex()),
+                word: false,
+            };
+        }
+        // A Greek letter with digits after it: `theta1` → `θ1`, `\theta 1`.
+        let letters = p.trim_end_matches(|c: char| c.is_ascii_digit());
+        if letters.len() < p.len() {
+            if let Some((_, uni, tex)) = GREEK.iter().find(|g| letters == g.0 || letters == g.1) {
+                let digits = &p[letters.len()..];
+                return Piece::symbol(&format!("{uni}{digits}"), &format!("{tex} {digits}"));
+            }
+        }
+        let body: String = p
+            .chars()
+            .map(|c| match LETTERS.iter().find(|l| l.0 == c) {
+                Some((_, tex)) => tex.to_string(),
+                None => c.to_string(),
+            })
+            .collect();
+        Piece {
+            unicode: p.to_string(),
+            body,
+            word: p.chars().count() > 1,
+        }
+    }
+
+    fn symbol(unicode: &str, tex: &str) -> Piece {
+        Piece {
+            unicode: unicode.to_string(),
+            body: tex.to_string(),
+            word: false,
+        }
+    }
+
+    /// The LaTeX outside a subscript.
+    fn latex(&self) -> String {
+        if self.word {
+            format!(r"\mathrm{{{}}}", self.body)
+        } else {
+            self.body.clone()
         }
     }
 }
@@ -832,6 +905,31 @@ mod tests {
 
     /// `i` and the functions cannot name a variable: a parameter `re` made `re(x + i p_x)` the
     /// real part and `re*(x + i p_x)` a product.
+    #[test]
+    fn names_beyond_ascii_have_latex_forms() {
+        assert_eq!(render_name("q₁"), ("q₁".into(), "q_{1}".into()));
+        assert_eq!(render_name("p_q₁"), ("p_q₁".into(), "p_{q_{1}}".into()));
+        assert_eq!(render_name("ħ"), ("ħ".into(), r"{\hbar}".into()));
+        assert_eq!(render_name("ℓ2"), ("ℓ2".into(), r"{\ell}_{2}".into()));
+        assert_eq!(render_name("ω₂"), ("ω₂".into(), r"\omega_{2}".into()));
+        assert_eq!(
+            render_name("xy₁₀"),
+            ("xy₁₀".into(), r"\mathrm{xy}_{10}".into())
+        );
+        for name in ["q₁", "p_q₁", "ħ", "ℓ", "θ_ħ"] {
+            assert_eq!(latex_unwritable(name), None, "{name}");
+        }
+        assert_eq!(latex_unwritable("é"), Some('é'));
+        assert_eq!(latex_unwritable("p_щ"), Some('щ'));
+        let err = VarSet::builder().coordinate("é").build().unwrap_err();
+        assert!(err.to_string().contains("LaTeX has no letter 'é'"), "{err}");
+        VarSet::builder()
+            .coordinate("q₁")
+            .parameter("ħ")
+            .build()
+            .expect("names LaTeX can write");
+    }
+
     #[test]
     fn function_names_are_reserved() {
         for name in ["i", "cos", "sin", "exp", "conj", "re", "im"] {
