@@ -8,7 +8,7 @@ use std::time::Instant;
 use brackets::{rank, Claim, Condition, EngineError, Outcome};
 use toml::Spanned;
 use trigpoly::syntax::ExprKind;
-use trigpoly::{AlgebraError, Expr, Span, VarKind};
+use trigpoly::{AlgebraError, Expr, Span, Var, VarKind};
 
 use super::error::{ErrorKind, FileError};
 use super::model::{ClaimModel, When};
@@ -186,15 +186,25 @@ impl ClaimSpec {
         let condition = match &c.when {
             None => None,
             Some(w) => {
-                if matches!(form, ClaimForm::Rank { .. }) {
+                let condition = condition(file, w)?;
+                let vars = file.system.vars();
+                let on_phase_space = condition
+                    .subs()
+                    .iter()
+                    .find(|(v, _)| vars.variable(*v).kind() != VarKind::Parameter);
+                if let (ClaimForm::Rank { .. }, Some((v, _))) = (&form, on_phase_space) {
                     return Err(source.error(
                         ErrorKind::Condition,
                         w.span(),
-                        "a rank claim takes no condition: the rank is that of the Jacobian on \
-                         the whole phase space",
+                        format!(
+                            "a rank claim's condition may set parameters only, not {}, a \
+                             variable of the phase space: the rank is that of the Jacobian on \
+                             the whole phase space",
+                            vars.variable(*v).unicode()
+                        ),
                     ));
                 }
-                Some(condition(file, w)?)
+                Some(condition)
             }
         };
         let id = match &c.id {
@@ -547,10 +557,18 @@ impl LoadedSystem {
                 functions,
                 expected,
             } => {
-                let exprs: Vec<Expr> = functions
+                let mut exprs: Vec<Expr> = functions
                     .iter()
                     .map(|(_, t)| scope.parse(&self.source, t))
                     .collect::<Result<_, _>>()?;
+                // A condition sets parameters only (checked when the claim was read).
+                if let Some(c) = &spec.condition {
+                    exprs = exprs
+                        .iter()
+                        .map(|e| c.apply(e))
+                        .collect::<Result<_, _>>()
+                        .map_err(|e| at(&e))?;
+                }
                 let mut rank = self.rank_result(
                     &self.source,
                     &spec.id,
@@ -562,6 +580,12 @@ impl LoadedSystem {
                     start,
                 )?;
                 rank.claim.written = Some(spec.written.clone());
+                if let Some(c) = &spec.condition {
+                    // The parameters it sets have their values there, not the point's.
+                    let set = |v: &Var| c.subs().iter().any(|(w, _)| w == v);
+                    rank.certificate.point.retain(|(v, _)| !set(v));
+                    rank.claim.condition = Some(c.text.clone());
+                }
                 Ok(CheckedClaim::Rank(Box::new(rank)))
             }
         }

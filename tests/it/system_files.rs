@@ -400,6 +400,15 @@ fn bad_inputs() -> Vec<(&'static str, Vec<u8>, &'static str, Vec<&'static str>)>
             check.clone(),
         ),
         (
+            "rank claim with a condition on phase space",
+            base_with(
+                "claim = \"{A, H} = i*omega*A\"",
+                "claim = \"rank(A, H) = 1\"\nwhen = \"x = 0\"",
+            ),
+            "bad.toml:15:8: a rank claim's condition may set parameters only, not x",
+            check.clone(),
+        ),
+        (
             "rank claim with a non-integer rank",
             base_with("{A, H} = i*omega*A", "rank(A, H) = two"),
             "bad.toml:14:23: the right side of a rank claim is a whole number",
@@ -599,6 +608,29 @@ fn limits_flag_overrides_the_file() {
         "{}",
         text(&o.stderr)
     );
+}
+
+/// A rank claim's condition sets parameters: the rank is that of the functions at those values,
+/// and the certificate's point leaves out what the condition sets.
+#[test]
+fn rank_claims_under_a_parameter_condition() {
+    let dir = scratch("rank-condition");
+    let file = "hamiltonian = \"(p_x^2 + p_y^2)/2 + (x^2 + a*y^2)/2\"\n\
+                [phase_space]\ncoordinates = [\"x\", \"y\"]\nparameters = [\"a\"]\n\
+                [[claim]]\nid = \"isotropic\"\n\
+                claim = \"rank(H, (p_x^2 + x^2 + p_y^2 + y^2)/2) = 1\"\nwhen = \"a = 1\"\n\
+                [[claim]]\nid = \"anisotropic\"\n\
+                claim = \"rank(H, (p_x^2 + x^2 + p_y^2 + y^2)/2) = 1\"\nwhen = \"a = 4\"\n\
+                expect = \"refuted\"\n";
+    std::fs::write(dir.join("rank.toml"), file).expect("write");
+    let o = superint_in(&dir, &["check", "rank.toml", "--no-timings"]);
+    assert_eq!(o.status.code(), Some(0), "{}", text(&o.stderr));
+    let out = text(&o.stdout);
+    assert!(out.contains("= 1 at a = 1"), "{out}");
+    assert!(out.contains("[isotropic proved]"), "{out}");
+    assert!(out.contains("[anisotropic refuted, as expected]"), "{out}");
+    assert!(out.contains("the rank is 2"), "{out}");
+    assert!(!out.contains("a = 11/2"), "the point leaves out a: {out}");
 }
 
 #[test]
