@@ -533,12 +533,20 @@ pub fn search_report(
         } else {
             format!("`{}`", n.known.join(", "))
         };
+        // Without angles the grade is the degree.
+        let rule = if r.variables.angles.is_empty() {
+            "An integral of degree `N` (in the coordinates and momenta together) is generated \
+             when it is a sum of known integrals, constants and products of integrals of degree \
+             `< N`"
+        } else {
+            "An integral of grade `(N, k)` (its degree `N` in the coordinates and momenta \
+             together, then its trigonometric order `k`: the largest such pair among its \
+             terms, compared in that order) is generated when it is a sum of known integrals, \
+             constants and products of integrals of grade below `(N, k)`"
+        };
         entries.push(Entry::Text(format!(
-            "Known integrals in the space: {known}. An integral of degree `N` (in the \
-             coordinates and momenta together) is generated when it is a sum of known \
-             integrals, constants and products of integrals of degree `< N` ({} products \
-             formed); the generated ones span {} of the {} dimensions, and a complement, the \
-             new integrals, is:",
+            "Known integrals in the space: {known}. {rule} ({} products formed); the generated \
+             ones span {} of the {} dimensions, and a complement, the new integrals, is:",
             n.products,
             n.generated,
             r.basis.len()

@@ -80,8 +80,11 @@ pub struct SearchArgs {
     #[arg(long, value_name = "S", default_value_t = 2, requires = "symbolic",
           value_parser = clap::value_parser!(u32).range(0..=12))]
     parameters_degree: u32,
-    /// Show only what the known integrals (the file's named functions, --known, and products
-    /// of known and found integrals; with --symbolic, parameter multiples too) do not generate.
+    /// Show only the new integrals, those that nothing known generates. An integral is
+    /// generated when it is a sum of the file's named integrals, --known ones, constants and
+    /// products of integrals of lower grade (with --symbolic, parameter multiples too); a grade
+    /// is the degree in the coordinates and momenta together, then the trigonometric order
+    /// (where cos θ and p are integrals, cos 2θ = 2cos²θ − 1 and p cos θ are generated).
     #[arg(long)]
     new_only: bool,
     /// With --new-only, decide what is new by elimination over Q alone (slower). By default it
