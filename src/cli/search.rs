@@ -99,7 +99,8 @@ pub struct SearchArgs {
           value_parser = clap::value_parser!(u64).range(1..))]
     max_products: u64,
     /// More known integrals for --new-only: expressions or family instances (P_1_1),
-    /// separated by commas.
+    /// separated by commas. Each must be a real integral (under --when); one that is not is
+    /// an error.
     #[arg(long, value_name = "EXPRS", requires = "new_only")]
     known: Option<String>,
     /// Threads for forming the equations, solving them, proving the integrals and printing

@@ -755,6 +755,15 @@ fn bad_search_arguments_exit_2_with_a_message() {
             "--positions-degree 4 --trig-degree 0 --symbolic A,B --max-terms 500",
             "the space has 540 unknowns, more than the term limit 500",
         ),
+        // A known integral that is none was left out without a word.
+        (
+            "--positions-degree 2 --trig-degree 0 --new-only --known x*p_y",
+            "the known integral x*p_y is not an integral: {x*p_y, H} = ",
+        ),
+        (
+            "--positions-degree 2 --trig-degree 0 --new-only --known x+i*p_x",
+            "the known integral x+i*p_x is not real: give its real and imaginary parts",
+        ),
     ] {
         let mut words = vec!["search", "systems/henon-heiles.toml"];
         words.extend(args.split_whitespace());

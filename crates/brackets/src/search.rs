@@ -42,7 +42,7 @@ use std::time::Instant;
 
 use itertools::Itertools;
 use rayon::prelude::*;
-use trigpoly::{Expr, GaussianRational, MonomialIndex, Rational, Term, Var, VarKind, Vars};
+use trigpoly::{Expr, GaussianRational, MonomialIndex, Rational, Style, Term, Var, VarKind, Vars};
 
 use crate::claim::Condition;
 use crate::error::EngineError;
@@ -1340,12 +1340,32 @@ fn new_integrals(
         .functions()
         .iter()
         .map(|f| (f.display.clone(), f.expr.clone()));
+    // The system's functions that are no real integrals are left out; a known integral given
+    // as one that is not is an error, not a silence.
+    let given = |name: &str| extra.iter().any(|(n, _)| n == name);
     for (name, f) in named.chain(extra.iter().cloned()) {
         if !f.is_real() {
+            if given(&name) {
+                return Err(EngineError::Invalid(format!(
+                    "the known integral {name} is not real: give its real and imaginary parts, \
+                     re({name}) and im({name})"
+                )));
+            }
             continue;
         }
         let fv = fix_parameters(&f, parameters)?;
-        if !problem.flow(system, &fv)?.is_zero() {
+        let flow = problem.flow(system, &fv)?;
+        if !flow.is_zero() {
+            if given(&name) {
+                let shown = flow.render(Style::Unicode);
+                let shown = match shown.chars().count() {
+                    0..=200 => format!("{{{name}, H}} = {shown}"),
+                    _ => format!("{{{name}, H}} ≠ 0 ({} terms)", flow.len()),
+                };
+                return Err(EngineError::Invalid(format!(
+                    "the known integral {name} is not an integral: {shown}"
+                )));
+            }
             continue;
         }
         let restricted = without_parameter_denominators(&problem.apply_condition(fv)?, symbolic)?;
