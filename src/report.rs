@@ -413,6 +413,17 @@ pub struct TowerResult {
     pub claim: ClaimResult,
 }
 
+impl TowerResult {
+    /// How the expansions went: `all hold`, `1 fails: [(2, 3)]`, `2 fail: …`.
+    pub fn verdict(&self) -> String {
+        match self.failures.len() {
+            0 => "all hold".to_string(),
+            1 => format!("1 fails: {:?}", self.failures),
+            n => format!("{n} fail: {:?}", self.failures),
+        }
+    }
+}
+
 impl RankResult {
     /// The names of the functions of the certificate's nonzero minor (its rows).
     pub fn minor_functions(&self) -> Vec<&str> {
@@ -444,10 +455,12 @@ pub struct RankResult {
     pub claim: ClaimResult,
 }
 
-/// `1 claim`, `2 claims`.
-fn counted(n: usize, noun: &str) -> String {
-    match n {
-        1 => format!("1 {noun}"),
+/// A count and its noun, singular for one: `1 claim`, `2 claims`, `0 claims`. Every count the
+/// reports and the command line print in words goes through it.
+pub fn counted(n: impl std::fmt::Display, noun: &str) -> String {
+    let n = n.to_string();
+    match n.as_str() {
+        "1" => format!("1 {noun}"),
         _ => format!("{n} {noun}s"),
     }
 }
@@ -584,9 +597,10 @@ impl Report {
                 String::new()
             };
             return format!(
-                "tower: {} brackets {{K_{{m,n}}, H}} = i(mω − nΩ)K_{{m,n}} checked for \
+                "tower: {} {{K_{{m,n}}, H}} = i(mω − nΩ)K_{{m,n}} checked for \
                  1 ≤ m, n ≤ {}, {verdict}{time}",
-                t.checked, t.max
+                counted(t.checked, "bracket"),
+                t.max
             );
         }
         if self.summary == SummaryKind::Computed {

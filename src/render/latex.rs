@@ -8,8 +8,8 @@ use super::tex::{markup, math, relation, sentence, text};
 use super::text::{number, point, upper_bound};
 use super::{table_list, verdict, Options};
 use crate::report::{
-    ClaimKind, ClaimResult, Entry, Equations, ProofResult, RankResult, Report, SummaryKind,
-    TableResult, TowerResult,
+    counted, ClaimKind, ClaimResult, Entry, Equations, ProofResult, RankResult, Report,
+    SummaryKind, TableResult, TowerResult,
 };
 
 /// Renders a report as a LaTeX document.
@@ -196,8 +196,8 @@ fn claim_rows(c: &ClaimResult) -> Vec<String> {
             rows.extend(long_rows("", r"\text{it equals}", w, CLAIM_ROW));
         } else {
             rows.push(format!(
-                r"&\text{{it is a nonzero sum of {} terms}}",
-                w.len()
+                r"&\text{{it is a nonzero sum of {}}}",
+                counted(w.len(), "term")
             ));
         }
     }
@@ -293,17 +293,12 @@ fn table_as_list(out: &mut Vec<String>, t: &TableResult, head: &[String], cells:
 fn tower(out: &mut Vec<String>, t: &TowerResult) {
     let mut rows = claim_rows(&t.claim);
     flush(out, &mut rows);
-    let verdict = if t.failures.is_empty() {
-        "all hold".to_string()
-    } else {
-        format!("{} fail: {:?}", t.failures.len(), t.failures)
-    };
     out.push(format!(
-        r"\noindent {} brackets expanded for the {} (ladder ${}$), {}.",
-        t.checked,
+        r"\noindent {} expanded for the {} (ladder ${}$), {}.",
+        counted(t.checked, "bracket"),
         text(&t.system),
         math(&t.ladder),
-        text(&verdict)
+        text(&t.verdict())
     ));
     out.push(String::new());
 }

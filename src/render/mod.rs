@@ -161,12 +161,3 @@ pub(crate) fn condition_suffix(condition: &Option<String>) -> String {
         .map(|c| format!(" at {c}"))
         .unwrap_or_default()
 }
-
-/// The name of a number of functions: "5 functions".
-pub(crate) fn plural(n: usize, word: &str) -> String {
-    if n == 1 {
-        format!("{n} {word}")
-    } else {
-        format!("{n} {word}s")
-    }
-}

@@ -1359,3 +1359,64 @@ fn cli_plot_starting_angles_may_be_multiples_of_pi() {
         "{err}"
     );
 }
+
+/// A count of one takes its noun in the singular wherever a count is printed in words: the
+/// products a search forms, its unknowns and blocks, the rest of its basis, the brackets a
+/// tower expands, the steps of a plot, the files `check` could not read.
+#[test]
+fn cli_counts_of_one_are_singular() {
+    let file = scratch_file("oscillator.toml");
+    std::fs::write(
+        &file,
+        "hamiltonian = \"p_x^2/2 + x^2/2\"\n[phase_space]\ncoordinates = [\"x\"]\n",
+    )
+    .expect("write the system");
+    let file = file.to_str().expect("a UTF-8 path");
+    let search = |degree: &str| {
+        let args = ["search", file, "--new-only", "--format", "markdown"];
+        let degrees = ["--momenta-degree", degree, "--positions-degree", degree];
+        run(&[&args[..], &degrees[..]].concat(), 0)
+    };
+    let four = search("4");
+    assert!(four.contains("(1 product formed)"), "{four}");
+    let zero = search("0");
+    for said in [
+        "1 unknown, 0 linear equations over `Q`, in 1 independent block (the largest has 1 \
+         unknown).",
+        "(0 products formed); the generated ones span 1 of the 1 dimension,",
+        "`{I, H} = 0 for the other 1 basis element`",
+    ] {
+        assert!(zero.contains(said), "{said}\n{zero}");
+    }
+    let tower = run(&["tower", "--max", "1", "--no-timings"], 0);
+    for said in [
+        "1 bracket expanded for the harmonic rotor",
+        "tower: 1 bracket {K_{m,n}, H}",
+    ] {
+        assert!(tower.contains(said), "{said}\n{tower}");
+    }
+    let svg = scratch_file("one-step.svg");
+    let plot = run_plot(
+        "1",
+        &[
+            "H",
+            "--time",
+            "1",
+            "--steps",
+            "1",
+            "--samples",
+            "1",
+            "-o",
+            svg.to_str().unwrap(),
+        ],
+        0,
+    );
+    assert!(plot.contains(" in 1 step of "), "{plot}");
+    let missing = superint(&["check", "systems/kepler.toml", "no-such-file.toml"]);
+    assert_eq!(missing.status.code(), Some(2));
+    let err = stderr(&missing);
+    assert!(
+        err.contains("1 of 2 files not checked (the error above)"),
+        "{err}"
+    );
+}
