@@ -22,6 +22,20 @@ use super::{Family, LimitsOverride, LoadedSystem, DEFAULT_MAX_DEGREE, DEFAULT_MA
 /// holds; the packing widens its fields as the limit asks).
 const MAX_DEGREE_CEILING: u32 = 32_767;
 
+/// Why `name` cannot be declared whatever the system: `'cos' is reserved (i, cos, …)`,
+/// `'H' is reserved for the Hamiltonian`; `None` for a name that is free of meaning.
+pub fn reserved(name: &str) -> Option<String> {
+    if RESERVED.contains(&name) || name == "rank" {
+        Some(format!(
+            "'{name}' is reserved (i, cos, sin, exp, conj, re, im, rank)"
+        ))
+    } else if name == "H" {
+        Some("'H' is reserved for the Hamiltonian".into())
+    } else {
+        None
+    }
+}
+
 /// Reads and loads a system file. Every problem is a [`FileError`] naming the file, line and
 /// column.
 pub fn load(path: &Path, limits: &LimitsOverride) -> Result<LoadedSystem, FileError> {
@@ -261,15 +275,8 @@ impl<'a> Builder<'a> {
                 ),
             ));
         }
-        if RESERVED.contains(&name) || name == "rank" {
-            return Err(self.error(
-                ErrorKind::Name,
-                span,
-                format!("'{name}' is reserved (i, cos, sin, exp, conj, re, im, rank)"),
-            ));
-        }
-        if name == "H" {
-            return Err(self.error(ErrorKind::Name, span, "'H' is reserved for the Hamiltonian"));
+        if let Some(why) = reserved(name) {
+            return Err(self.error(ErrorKind::Name, span, why));
         }
         if let Some((other, at)) = self.names.get(name) {
             let line = super::error::locate(&self.source.text, at.clone()).line;
