@@ -1342,13 +1342,15 @@ fn cli_plot_starting_angles_may_be_multiples_of_pi() {
         (first(1), first(2))
     };
     let half = std::f64::consts::FRAC_1_SQRT_2;
-    for theta in ["3*pi/4", "3π/4", "0.75*pi"] {
+    for theta in ["3*pi/4", "3π/4", "0.75*pi", "pi*3/4", "pi/4*3", "3pi/4"] {
         let (c, s) = run_with(theta);
         assert!(
             (c + half).abs() < 1e-12 && (s - half).abs() < 1e-12,
             "{theta}: {c}, {s}"
         );
     }
+    let (c, s) = run_with("-pi/2");
+    assert!(c.abs() < 1e-12 && (s + 1.0).abs() < 1e-12, "-pi/2: {c}, {s}");
     let a = args("2*pi + 1");
     let out = superint(&a.iter().map(String::as_str).collect::<Vec<_>>());
     assert_eq!(out.status.code(), Some(2));
