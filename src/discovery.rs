@@ -24,8 +24,8 @@ use brackets::{EngineError, System};
 use trigpoly::{Expr, GaussianRational, Rational, Style, Var, VarKind, VarSet};
 
 use crate::report::{
-    counted, ClaimResult, ClosureFacts, Entry, Equation, Equations, Facts, ParameterFacts, Report,
-    SearchFacts, Section, SummaryKind, TableResult,
+    counted, first_free, ClaimResult, ClosureFacts, Entry, Equation, Equations, Facts,
+    ParameterFacts, Report, SearchFacts, Section, SummaryKind, TableResult,
 };
 
 /// `M = 1, ω = 1, I = 1`.
@@ -91,18 +91,9 @@ fn parameter_facts(
 /// a variable or a function (`I1`, `I2` are a coupled rotor's moments of inertia): the letter
 /// of a report's numbered labels.
 fn label_letter<'a>(system: &System, candidates: &[&'a str], count: usize) -> &'a str {
-    let taken = |name: &str| {
-        system.vars().lookup(name).is_some()
-            || system
-                .functions()
-                .iter()
-                .any(|f| f.name == name || f.display == name)
-    };
-    candidates
-        .iter()
-        .copied()
-        .find(|p| !(1..=count).any(|i| taken(&format!("{p}{i}"))))
-        .unwrap_or(candidates[candidates.len() - 1])
+    first_free(system, &[], candidates, |p| {
+        (1..=count).map(|i| format!("{p}{i}")).collect()
+    })
 }
 
 /// With parameters kept symbolic, the note that `H` or its first power `H^k` that the space
@@ -759,10 +750,11 @@ pub fn closure_report(
         (_, Some(c)) => format!(" at `{c}`, `{fixed}`"),
         (_, None) => format!(" at `{fixed}`"),
     };
-    entries.push(Entry::Table(TableResult {
-        caption: format!("`{{A, B}}` for the {name}{table_at}"),
-        table: c.table(),
-    }));
+    entries.push(Entry::Table(TableResult::new(
+        c.table(),
+        system,
+        &format!("the {name}{table_at}"),
+    )));
     let outside = c.outside();
     if outside.is_empty() {
         entries.push(Entry::Text(format!(

@@ -274,10 +274,13 @@ fn table(out: &mut Vec<String>, t: &TableResult) {
 /// A table too wide for the page, as the list of its brackets above the diagonal that are not
 /// zero (the others follow by antisymmetry), each broken over lines as a long equation is.
 fn table_as_list(out: &mut Vec<String>, t: &TableResult, head: &[String], cells: &[Vec<String>]) {
-    let (caption, brackets) = table_list(&t.caption, cells);
+    let brackets = table_list(cells);
+    let [a, b] = &t.placeholders;
     out.push(format!(
-        r"\noindent {}, the brackets that are not zero, $A$ before $B$:",
-        markup(&caption)
+        r"\noindent {}, the brackets that are not zero, ${}$ before ${}$:",
+        markup(&t.list_caption()),
+        math(a),
+        math(b)
     ));
     let mut rows = Vec::new();
     for (a, b, cell) in brackets {

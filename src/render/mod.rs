@@ -102,12 +102,9 @@ pub fn printable(text: &str) -> std::borrow::Cow<'_, str> {
 }
 
 /// A table set as a list ([`crate::report::TableResult`] too wide for a line or page): its
-/// caption without the note on rows and columns, and its brackets `(A, B, cell)` above the
-/// diagonal that are not zero, the others following by antisymmetry.
-pub(crate) fn table_list<'c>(
-    caption: &str,
-    cells: &'c [Vec<String>],
-) -> (String, Vec<(usize, usize, &'c str)>) {
+/// brackets `(A, B, cell)` above the diagonal that are not zero, the others following by
+/// antisymmetry.
+pub(crate) fn table_list(cells: &[Vec<String>]) -> Vec<(usize, usize, &str)> {
     let brackets = cells
         .iter()
         .enumerate()
@@ -120,7 +117,7 @@ pub(crate) fn table_list<'c>(
         .filter(|(_, _, cell)| *cell != "0")
         .map(|(a, b, cell)| (a, b, cell.as_str()))
         .collect();
-    (caption.replace(" (row `A`, column `B`)", ""), brackets)
+    brackets
 }
 
 /// Prose markup (formulas between backticks) as plain text.

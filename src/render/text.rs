@@ -279,8 +279,9 @@ fn table(out: &mut Vec<String>, t: &TableResult) {
 /// integrals made rows of a thousand characters).
 fn table_as_list(out: &mut Vec<String>, t: &TableResult, cells: &[Vec<String>]) {
     let names = &t.table.display;
-    let (caption, brackets) = table_list(&t.caption, cells);
-    let caption = plain(&caption);
+    let brackets = table_list(cells);
+    let caption = plain(&t.list_caption());
+    let [a, b] = &t.placeholders;
     let rows: Vec<String> = brackets
         .into_iter()
         .map(|(a, b, cell)| format!("    {{{}, {}}} = {cell}", names[a], names[b]))
@@ -290,7 +291,8 @@ fn table_as_list(out: &mut Vec<String>, t: &TableResult, cells: &[Vec<String>]) 
         false => {
             out.extend(wrap(
                 &format!(
-                    "{caption}, too wide for a table: the brackets that are not zero, A before B:"
+                    "{caption}, too wide for a table: the brackets that are not zero, {a} before \
+                     {b}:"
                 ),
                 WRAP,
                 "",

@@ -1350,7 +1350,10 @@ fn cli_plot_starting_angles_may_be_multiples_of_pi() {
         );
     }
     let (c, s) = run_with("-pi/2");
-    assert!(c.abs() < 1e-12 && (s + 1.0).abs() < 1e-12, "-pi/2: {c}, {s}");
+    assert!(
+        c.abs() < 1e-12 && (s + 1.0).abs() < 1e-12,
+        "-pi/2: {c}, {s}"
+    );
     let a = args("2*pi + 1");
     let out = superint(&a.iter().map(String::as_str).collect::<Vec<_>>());
     assert_eq!(out.status.code(), Some(2));
@@ -1420,5 +1423,87 @@ fn cli_counts_of_one_are_singular() {
     assert!(
         err.contains("1 of 2 files not checked (the error above)"),
         "{err}"
+    );
+}
+
+/// A table's caption names a row and a column by letters the system does not use: the
+/// Hénon–Heiles family's parameters are `A`, `B`, `C`, so its tables (and a closure's) say
+/// `{F, G}`, in every format, and so do its generators' names where they are `F`, `G`.
+#[test]
+fn cli_table_placeholders_are_names_the_system_does_not_use() {
+    let henon = "systems/henon-heiles.toml";
+    let text = run(&["table", henon, "K", "S", "--no-timings"], 0);
+    assert!(
+        text.contains(
+            "{F, G} for the Hénon–Heiles family, too wide for a table: the brackets \
+                       that are not zero, F\nbefore G:"
+        ),
+        "{text}"
+    );
+    assert!(!text.contains("{A, B}"), "{text}");
+    let latex = run(&["table", henon, "--no-timings", "--format", "latex"], 0);
+    assert!(
+        latex.contains(
+            "$\\{F, G\\}$ for the H\\'{e}non--Heiles family, the brackets that are not \
+             zero, $F$ before $G$:"
+        ),
+        "{latex}"
+    );
+    let markdown = run(
+        &[
+            "table",
+            henon,
+            "K",
+            "S",
+            "--no-timings",
+            "--format",
+            "markdown",
+        ],
+        0,
+    );
+    assert!(
+        markdown.contains("*`{F, G}` for the Hénon–Heiles family (row `F`, column `G`)*"),
+        "{markdown}"
+    );
+    let closure = run(
+        &[
+            "closure",
+            henon,
+            "H",
+            "K",
+            "--when",
+            "C = 2",
+            "--no-timings",
+        ],
+        0,
+    );
+    assert!(
+        closure.contains("{F, G} for the Hénon–Heiles family at C = 2 (row F, column G)\n"),
+        "{closure}"
+    );
+    // Where the generators take F and G too, the next pair.
+    let args = [
+        "closure", henon, "F", "G", "--define", "F=p_x", "--define", "G=p_y",
+    ];
+    let closure = run(&[&args[..], &["--no-timings"]].concat(), 0);
+    assert!(
+        closure.contains("{U, V} for the Hénon–Heiles family (row U, column V)\n"),
+        "{closure}"
+    );
+    // Where nothing is taken, the paper's letters.
+    let rotor = run(
+        &[
+            "table",
+            "systems/harmonic-rotor.toml",
+            "L",
+            "G1",
+            "G2",
+            "--no-timings",
+        ],
+        0,
+    );
+    assert!(
+        rotor.contains("{A, B} for the harmonic rotor (row A, column B)\n"),
+        "{rotor}"
     );
 }

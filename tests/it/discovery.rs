@@ -1015,7 +1015,7 @@ value = "b*x*p_x + a*y*p_y"
         "{out}"
     );
     assert!(
-        out.contains("{A, B} for the unliftable at a = 1, b = 1\n"),
+        out.contains("{A, B} for the unliftable at a = 1, b = 1 (row A, column B)\n"),
         "{out}"
     );
     assert!(out.contains("  {U, V} = 4W at a = 1, b = 1 "), "{out}");
