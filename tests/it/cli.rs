@@ -134,6 +134,11 @@ fn cli_json_has_every_claim_proved() {
     assert!(summary["claims"].as_u64().expect("a count") >= 25);
     // Tables, proofs, towers and ranks come along; exact numbers are strings.
     assert_eq!(v["tables"][0]["entries"][2][3]["ascii"], "-G2");
+    // Captions are plain text, without the markup's backticks.
+    assert_eq!(
+        v["tables"][0]["caption"],
+        "{A, B} for the harmonic rotor (row A, column B)"
+    );
     assert_eq!(v["tables"][0]["entries"][3][4]["text"], "−ω² L");
     assert!(!v["proofs"].as_array().expect("proofs").is_empty());
     assert_eq!(v["towers"][0]["checked"], 64);
@@ -1464,6 +1469,12 @@ fn cli_table_placeholders_are_names_the_system_does_not_use() {
     assert!(
         markdown.contains("*`{F, G}` for the Hénon–Heiles family (row `F`, column `G`)*"),
         "{markdown}"
+    );
+    let json = run(&["table", henon, "K", "S", "--format", "json"], 0);
+    let json: Value = serde_json::from_str(&json).expect("JSON");
+    assert_eq!(
+        json["tables"][0]["caption"],
+        "{F, G} for the Hénon–Heiles family (row F, column G)"
     );
     let closure = run(
         &[
