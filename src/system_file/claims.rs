@@ -79,7 +79,9 @@ impl CheckedClaim {
 pub(crate) fn engine_error(source: &Source, span: Range<usize>, e: &EngineError) -> FileError {
     match e {
         EngineError::Algebra(
-            a @ (AlgebraError::TooManyTerms { .. } | AlgebraError::ExponentTooLarge { .. }),
+            a @ (AlgebraError::TooManyTerms { .. }
+            | AlgebraError::ExponentTooLarge { .. }
+            | AlgebraError::OrderTooLarge { .. }),
         ) => source
             .error(ErrorKind::Limit, span, a.to_string())
             .with_hint(LIMIT_HINT),

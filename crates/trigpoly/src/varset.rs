@@ -155,7 +155,8 @@ pub fn juxtaposition_is_ambiguous<'a>(
 pub struct Limits {
     /// The most terms any single result may have.
     pub max_terms: usize,
-    /// The largest absolute exponent of any variable.
+    /// The largest absolute exponent of any variable; for an angle, the largest trigonometric
+    /// order `k` of `cos kθ`, `sin kθ` (the exponent of `e^{iθ}`, as it is stored).
     pub max_degree: u32,
 }
 
