@@ -121,6 +121,9 @@ mod tests {
         );
         assert_eq!(error.chain().count(), 3);
         let error = anyhow::anyhow!("cannot read the file").context("systems/x.toml");
-        assert_eq!(error_message(&error), "systems/x.toml: cannot read the file");
+        assert_eq!(
+            error_message(&error),
+            "systems/x.toml: cannot read the file"
+        );
     }
 }

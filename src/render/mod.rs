@@ -85,12 +85,17 @@ pub fn render(report: &Report, format: Format, options: &Options) -> String {
     }
 }
 
-/// Text safe to print or write: each control character but newline and tab as `�` (U+FFFD).
-/// A system file's names, descriptions and ids, and a command line's expressions, may hold
-/// escapes such as `\u001b`, which on a terminal would move the cursor, clear the screen or
-/// set its title, and in an SVG chart make the file no XML.
+/// Text safe to print or write: each control character but newline and tab, and each
+/// bidirectional embedding, override or isolate (U+202A–U+202E, U+2066–U+2069), as `�`
+/// (U+FFFD). A system file's names, descriptions and ids, and a command line's expressions,
+/// may hold escapes such as `\u001b`, which on a terminal would move the cursor, clear the
+/// screen or set its title, and in an SVG chart make the file no XML; an override such as
+/// U+202E shows the rest of its line turned around (an error's excerpt of the file too).
 pub fn printable(text: &str) -> std::borrow::Cow<'_, str> {
-    let unsafe_char = |c: char| c.is_control() && c != '\n' && c != '\t';
+    let unsafe_char = |c: char| {
+        (c.is_control() && c != '\n' && c != '\t')
+            || matches!(c, '\u{202a}'..='\u{202e}' | '\u{2066}'..='\u{2069}')
+    };
     match text.contains(unsafe_char) {
         false => std::borrow::Cow::Borrowed(text),
         true => text

@@ -1263,7 +1263,7 @@ fn cli_prints_no_control_characters() {
          description = \"a\\bb\\rc\"\n\
          hamiltonian = \"p_x^2/2\"\n\
          [phase_space]\ncoordinates = [\"x\"]\n\
-         [[function]]\nname = \"L\"\ndisplay = \"L\\u001b[2J\"\nvalue = \"x*p_x\"\n\
+         [[function]]\nname = \"L\"\nvalue = \"x*p_x\"\n\
          [[claim]]\nid = \"c\\u0000\"\nclaim = \"{L, H} = p_x^2\"\n",
     );
     let file = file.to_str().expect("a UTF-8 path");
@@ -1300,7 +1300,15 @@ fn cli_prints_no_control_characters() {
     ]);
     assert_eq!(out.status.code(), Some(0), "{}", stderr(&out));
     let chart = std::fs::read_to_string(&svg).expect("the chart");
-    assert!(clean(&chart) && chart.contains("L\u{fffd}[2J"), "{chart}");
+    assert!(
+        clean(&chart) && chart.contains("t\u{fffd}]0;title\u{fffd}"),
+        "{chart}"
+    );
+    // A right-to-left override would turn the rest of an error's line around on a terminal.
+    let out = superint(&["expand", file, "x\u{202e} + y"]);
+    assert_eq!(out.status.code(), Some(2));
+    let err = stderr(&out);
+    assert!(!err.contains('\u{202e}') && err.contains("x\u{fffd} + y"), "{err:?}");
 }
 
 /// A misspelt built-in system is named as such, with the built-in ones, where "cannot read

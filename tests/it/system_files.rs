@@ -335,8 +335,65 @@ fn bad_inputs() -> Vec<(&'static str, Vec<u8>, &'static str, Vec<&'static str>)>
         (
             "display name with markup",
             base_with("name = \"A\"", "name = \"A\"\ndisplay = \"a^b^c\""),
-            "bad.toml:10:11: a display name is letters, digits, primes (G1'), a bar (Z̄), \
+            "bad.toml:10:13: a display name is letters, digits, primes (G1'), a bar (Z̄), \
              subscripts (A_x), spaces and parentheses: '^' is markup in Markdown or LaTeX",
+            check.clone(),
+        ),
+        (
+            "display name empty",
+            base_with("name = \"A\"", "name = \"A\"\ndisplay = \"\""),
+            "bad.toml:10:11: a display name is letters, digits, primes (G1'), a bar (Z̄), \
+             subscripts (A_x), spaces and parentheses: this one is empty (leave display out to \
+             show the name)",
+            check.clone(),
+        ),
+        (
+            "display name with a subscript of a subscript",
+            base_with("name = \"A\"", "name = \"A\"\ndisplay = \"a__b\""),
+            "bad.toml:10:13: a display name is letters, digits, primes (G1'), a bar (Z̄), \
+             subscripts (A_x), spaces and parentheses: a subscript '_' stands between a name \
+             and its subscript (A_x), not at an end or beside another '_' or a space",
+            check.clone(),
+        ),
+        (
+            "display name ending in a subscript of nothing",
+            base_with("name = \"A\"", "name = \"A\"\ndisplay = \"A_x_\""),
+            "bad.toml:10:15: a display name is letters, digits, primes (G1'), a bar (Z̄), \
+             subscripts (A_x), spaces and parentheses: a subscript '_' stands between a name \
+             and its subscript (A_x), not at an end or beside another '_' or a space",
+            check.clone(),
+        ),
+        (
+            "display name with a tab",
+            base_with("name = \"A\"", "name = \"A\"\ndisplay = \"A\t1\""),
+            "bad.toml:10:13: a display name is letters, digits, primes (G1'), a bar (Z̄), \
+             subscripts (A_x), spaces and parentheses: U+0009 is an invisible or control \
+             character",
+            check.clone(),
+        ),
+        // The right-to-left override turns the text after it around: the label `A2` would
+        // show as another; the excerpt shows it as U+FFFD.
+        (
+            "display name with a right-to-left override",
+            base_with("name = \"A\"", "name = \"A\"\ndisplay = \"A\u{202e}2\""),
+            "bad.toml:10:13: a display name is letters, digits, primes (G1'), a bar (Z̄), \
+             subscripts (A_x), spaces and parentheses: U+202E is an invisible or control \
+             character",
+            check.clone(),
+        ),
+        (
+            "display name escaping a zero-width space",
+            base_with("name = \"A\"", "name = \"A\"\ndisplay = \"A\\u200B\""),
+            "bad.toml:10:12: a display name is letters, digits, primes (G1'), a bar (Z̄), \
+             subscripts (A_x), spaces and parentheses: U+200B is an invisible or control \
+             character",
+            check.clone(),
+        ),
+        (
+            "display name beginning with a space",
+            base_with("name = \"A\"", "name = \"A\"\ndisplay = \" A\""),
+            "bad.toml:10:12: a display name is letters, digits, primes (G1'), a bar (Z̄), \
+             subscripts (A_x), spaces and parentheses: it begins or ends with a space",
             check.clone(),
         ),
         (

@@ -73,7 +73,10 @@ mod tests {
     #[test]
     fn a_wrapped_error_is_the_source() {
         let error = ParseError::new(trigpoly::Span::new(2, 3), "unknown name 'q'");
-        for wrapped in [EngineError::parse("x + q", error.clone()), error.clone().into()] {
+        for wrapped in [
+            EngineError::parse("x + q", error.clone()),
+            error.clone().into(),
+        ] {
             let source = wrapped.source().expect("a parse error has its source");
             assert_eq!(source.downcast_ref::<ParseError>(), Some(&error));
         }
