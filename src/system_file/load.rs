@@ -237,13 +237,62 @@ fn toml_error(source: &Source, e: &toml::de::Error) -> FileError {
     } else {
         ErrorKind::Toml
     };
+    let span = e.span().unwrap_or(0..0);
     let message = if message.starts_with("missing field") {
         format!("{message} (see docs/system-files.md for every field)")
+    } else if let Some(wanted) = message.strip_prefix("invalid type: map, expected ") {
+        // A date is read as a map: said as a date, of its key, as at the top level.
+        match date_at(&source.text, &span) {
+            Some((key, false)) => format!("{key} is {}, not a date", in_words(wanted)),
+            Some((key, true)) => {
+                format!("each of {key} is {}, not a date", in_words(wanted))
+            }
+            None => message,
+        }
     } else {
         message
     };
-    let span = e.span().unwrap_or(0..0);
     source.error(kind, span, message)
+}
+
+/// The key of the date at `span` in the TOML document `text`, and whether it is an element of
+/// that key's array (`coordinates = [1979-05-27]`); `None` where no date is.
+fn date_at(text: &str, span: &Range<usize>) -> Option<(String, bool)> {
+    fn find(
+        key: &str,
+        value: &Spanned<toml::de::DeValue<'_>>,
+        span: &Range<usize>,
+        in_array: bool,
+    ) -> Option<(String, bool)> {
+        match value.get_ref() {
+            toml::de::DeValue::Datetime(_) if value.span() == *span => {
+                Some((key.to_string(), in_array))
+            }
+            toml::de::DeValue::Array(items) => {
+                items.iter().find_map(|item| find(key, item, span, true))
+            }
+            toml::de::DeValue::Table(table) => table
+                .iter()
+                .find_map(|(k, v)| find(k.get_ref(), v, span, false)),
+            _ => None,
+        }
+    }
+    let document = toml::de::DeTable::parse(text).ok()?;
+    document
+        .get_ref()
+        .iter()
+        .find_map(|(k, v)| find(k.get_ref(), v, span, false))
+}
+
+/// What serde expected, in the words of a system file's messages: `a string` is `a string in
+/// quotes`, an unsigned integer `a whole number`, a sequence `an array`.
+fn in_words(expected: &str) -> &str {
+    match expected {
+        "a string" => "a string in quotes",
+        "u8" | "u16" | "u32" | "u64" | "usize" => "a whole number",
+        "a sequence" => "an array",
+        other => other,
+    }
 }
 
 struct Builder<'a> {

@@ -402,6 +402,26 @@ fn bad_inputs() -> Vec<(&'static str, Vec<u8>, &'static str, Vec<&'static str>)>
             "bad.toml:2:15: hamiltonian is a string in quotes, not a date",
             check.clone(),
         ),
+        // A date inside an array or a table is said as a date too (serde said "invalid type:
+        // map"), of its key.
+        (
+            "a coordinate as a date",
+            base_with("coordinates = [\"x\"]", "coordinates = [1979-05-27]"),
+            "bad.toml:5:16: each of coordinates is a string in quotes, not a date",
+            check.clone(),
+        ),
+        (
+            "a claim's id as a date",
+            base_with("id = \"ladder\"", "id = 1979-05-27"),
+            "bad.toml:13:6: id is a string in quotes, not a date",
+            check.clone(),
+        ),
+        (
+            "a limit as a time",
+            base_with("[[function]]", "[limits]\nmax_terms = 07:32:00\n\n[[function]]"),
+            "bad.toml:9:13: max_terms is a whole number, not a date",
+            check.clone(),
+        ),
         (
             "expectation as a boolean",
             base_with("claim = \"{A, H}", "expect = true\nclaim = \"{A, H}"),
