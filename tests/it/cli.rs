@@ -416,8 +416,8 @@ fn cli_bad_usage_exits_2_with_a_message() {
                 "--max-products",
                 "9",
             ][..],
-            "more than 9 products of integrals; search a smaller space, or raise the limit \
-             with --max-products",
+            "more than 9 products of integrals, the limit (`SearchOptions::max_products`; on the \
+             command line, --max-products): search a smaller space, or raise the limit",
         ),
         (
             &[
@@ -1308,7 +1308,10 @@ fn cli_prints_no_control_characters() {
     let out = superint(&["expand", file, "x\u{202e} + y"]);
     assert_eq!(out.status.code(), Some(2));
     let err = stderr(&out);
-    assert!(!err.contains('\u{202e}') && err.contains("x\u{fffd} + y"), "{err:?}");
+    assert!(
+        !err.contains('\u{202e}') && err.contains("x\u{fffd} + y"),
+        "{err:?}"
+    );
 }
 
 /// A misspelt built-in system is named as such, with the built-in ones, where "cannot read

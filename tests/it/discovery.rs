@@ -1069,7 +1069,7 @@ fn a_search_says_when_h_is_outside_its_space() {
     assert!(
         text.contains(
             "Note: H is not in this space (negative powers of x, which a Laurent space \
-             (--laurent) admits)"
+             (SearchSpace::laurent; on the command line, --laurent) admits)"
         ),
         "{text}"
     );

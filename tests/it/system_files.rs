@@ -418,7 +418,10 @@ fn bad_inputs() -> Vec<(&'static str, Vec<u8>, &'static str, Vec<&'static str>)>
         ),
         (
             "a limit as a time",
-            base_with("[[function]]", "[limits]\nmax_terms = 07:32:00\n\n[[function]]"),
+            base_with(
+                "[[function]]",
+                "[limits]\nmax_terms = 07:32:00\n\n[[function]]",
+            ),
             "bad.toml:9:13: max_terms is a whole number, not a date",
             check.clone(),
         ),
