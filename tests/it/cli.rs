@@ -423,6 +423,18 @@ fn cli_bad_usage_exits_2_with_a_message() {
             &[
                 "search",
                 "systems/harmonic-rotor.toml",
+                "--when",
+                "p_theta = I*omega",
+                "--new-only",
+                "--max-products",
+                "1",
+            ][..],
+            "more than 1 product of integrals, the limit",
+        ),
+        (
+            &[
+                "search",
+                "systems/harmonic-rotor.toml",
                 "--trig-degree",
                 "21",
             ][..],
