@@ -405,32 +405,6 @@ fn cli_bad_usage_exits_2_with_a_message() {
             ][..],
             "invalid value '0' for '--max-products <N>'",
         ),
-        // The products of integrals up to degree 2 at p_θ = Iω are more than nine.
-        (
-            &[
-                "search",
-                "systems/harmonic-rotor.toml",
-                "--when",
-                "p_theta = I*omega",
-                "--new-only",
-                "--max-products",
-                "9",
-            ][..],
-            "more than 9 products of integrals, the limit (`SearchOptions::max_products`; on the \
-             command line, --max-products): search a smaller space, or raise the limit",
-        ),
-        (
-            &[
-                "search",
-                "systems/harmonic-rotor.toml",
-                "--when",
-                "p_theta = I*omega",
-                "--new-only",
-                "--max-products",
-                "1",
-            ][..],
-            "more than 1 product of integrals, the limit",
-        ),
         (
             &[
                 "search",
@@ -456,6 +430,19 @@ fn cli_bad_usage_exits_2_with_a_message() {
         (&["paper", "--bogus"][..], "unexpected argument '--bogus'"),
     ] {
         assert_bad_usage(args, message);
+    }
+    // The products of integrals up to degree 2 at p_θ = Iω are more than nine.
+    for (limit, message) in [
+        (
+            "9",
+            "more than 9 products of integrals, the limit (`SearchOptions::max_products`; on the \
+             command line, --max-products): search a smaller space, or raise the limit",
+        ),
+        ("1", "more than 1 product of integrals, the limit"),
+    ] {
+        let search = ["search", "systems/harmonic-rotor.toml", "--new-only"];
+        let options = ["--when", "p_theta = I*omega", "--max-products", limit];
+        assert_bad_usage(&[&search[..], &options[..]].concat(), message);
     }
 }
 
