@@ -24,8 +24,8 @@ use brackets::{EngineError, System};
 use trigpoly::{Expr, GaussianRational, Rational, Style, Var, VarKind, VarSet};
 
 use crate::report::{
-    ClaimResult, ClosureFacts, Entry, Equation, Equations, Facts, ParameterFacts, Report,
-    SearchFacts, Section, SummaryKind, TableResult,
+    counted, first_free, ClaimResult, ClosureFacts, Entry, Equation, Equations, Facts,
+    ParameterFacts, Report, SearchFacts, Section, SummaryKind, TableResult,
 };
 
 /// `M = 1, ω = 1, I = 1`.
@@ -91,18 +91,9 @@ fn parameter_facts(
 /// a variable or a function (`I1`, `I2` are a coupled rotor's moments of inertia): the letter
 /// of a report's numbered labels.
 fn label_letter<'a>(system: &System, candidates: &[&'a str], count: usize) -> &'a str {
-    let taken = |name: &str| {
-        system.vars().lookup(name).is_some()
-            || system
-                .functions()
-                .iter()
-                .any(|f| f.name == name || f.display == name)
-    };
-    candidates
-        .iter()
-        .copied()
-        .find(|p| !(1..=count).any(|i| taken(&format!("{p}{i}"))))
-        .unwrap_or(candidates[candidates.len() - 1])
+    first_free(system, &[], candidates, |p| {
+        (1..=count).map(|i| format!("{p}{i}")).collect()
+    })
 }
 
 /// With parameters kept symbolic, the note that `H` or its first power `H^k` that the space
@@ -295,14 +286,23 @@ fn space_text(r: &SearchResult) -> String {
         ),
     };
     format!(
-        "The space: `{monomial}`{trig_factor}, with {}{symbolic}: {} unknowns, {} linear \
-         equations over `Q`, in {} independent blocks (the largest has {} unknowns).{left_out}",
+        "The space: `{monomial}`{trig_factor}, with {}{symbolic}: {}, {} over `Q`, in {} \
+         (the largest has {}).{left_out}",
         degrees.join(", "),
-        r.unknowns,
-        r.equations,
-        r.components,
-        r.largest_component
+        counted(r.unknowns, "unknown"),
+        counted(r.equations, "linear equation"),
+        counted(r.components, "independent block"),
+        counted(r.largest_component, "unknown")
     )
+}
+
+/// The verb of `n` things: `singular` for one, else `plural` (`1 of them holds`, `2 hold`).
+fn agreeing<'a>(n: usize, singular: &'a str, plural: &'a str) -> &'a str {
+    if n == 1 {
+        singular
+    } else {
+        plural
+    }
 }
 
 /// The reach of a proof with the parameters `names` kept symbolic and the others at `fixed`.
@@ -384,9 +384,10 @@ pub fn search_report(
                     .to_string(),
                 k => format!(
                     "the weights do not determine every parameter, so nothing is lifted; {k} of \
-                     the {} basis elements hold as found for every value (proved \
-                     symbolically), the others at these values only",
-                    r.basis.len()
+                     the {} {} as found for every value (proved symbolically), the others at \
+                     these values only",
+                    counted(r.basis.len(), "basis element"),
+                    agreeing(k, "holds", "hold")
                 ),
             }
         };
@@ -520,11 +521,11 @@ pub fn search_report(
             "Shown: the generators."
         };
         entries.push(Entry::Text(format!(
-            "Over the polynomials in `{names}`, {} of the {} basis integrals generate all of \
-             them: each of the others is a sum of parameter multiples of integrals. \
-             {shown_text}",
+            "Over the polynomials in `{names}`, {} of the {} {} all of them: each of the \
+             others is a sum of parameter multiples of integrals. {shown_text}",
             m.generators.len(),
-            r.basis.len(),
+            counted(r.basis.len(), "basis integral"),
+            agreeing(m.generators.len(), "generates", "generate"),
         )));
     }
     if let Some(n) = &r.new {
@@ -545,11 +546,11 @@ pub fn search_report(
              constants and products of integrals of grade below `(N, k)`"
         };
         entries.push(Entry::Text(format!(
-            "Known integrals in the space: {known}. {rule} ({} products formed); the generated \
-             ones span {} of the {} dimensions, and a complement, the new integrals, is:",
-            n.products,
+            "Known integrals in the space: {known}. {rule} ({} formed); the generated ones span \
+             {} of the {}, and a complement, the new integrals, is:",
+            counted(n.products, "product"),
             n.generated,
-            r.basis.len()
+            counted(r.basis.len(), "dimension")
         )));
     }
     if shown.is_empty() {
@@ -620,8 +621,8 @@ pub fn search_report(
         let mut c = ClaimResult::derived(
             "basis",
             &format!(
-                "{{{letter}, H}} = 0 for the other {} basis elements",
-                rest.len()
+                "{{{letter}, H}} = 0 for the other {}",
+                counted(rest.len(), "basis element")
             ),
             proved,
             note,
@@ -722,15 +723,18 @@ pub fn closure_report(
         (false, k) => format!(
             " at `{fixed}`, the coefficients then lifted back to the parameters by homogeneity \
              where the weights allow: {k} of the {} brackets and relations could not be lifted, \
-             and hold at `{fixed}` only (so does the table)",
-            results.len()
+             and {} at `{fixed}` only (so does the table)",
+            results.len(),
+            agreeing(k, "holds", "hold")
         ),
     };
     let mut entries = vec![Entry::Text(format!(
         "Every bracket `{{G_a, G_b}}` of the generators {gens} written as a polynomial of \
-         degree `≤ {}` in them, by exact linear algebra on the {} monomials (their span has \
-         dimension {}){lift}; each expansion checked by the engine.",
-        c.degree, c.monomials, c.rank,
+         degree `≤ {}` in them, by exact linear algebra on the {} (their span has dimension \
+         {}){lift}; each expansion checked by the engine.",
+        c.degree,
+        counted(c.monomials, "monomial"),
+        c.rank,
     ))];
     if !options.symbolic.is_empty() {
         let names: Vec<&str> = options
@@ -755,10 +759,11 @@ pub fn closure_report(
         (_, Some(c)) => format!(" at `{c}`, `{fixed}`"),
         (_, None) => format!(" at `{fixed}`"),
     };
-    entries.push(Entry::Table(TableResult {
-        caption: format!("`{{A, B}}` for the {name}{table_at}"),
-        table: c.table(),
-    }));
+    entries.push(Entry::Table(TableResult::new(
+        c.table(),
+        system,
+        &format!("the {name}{table_at}"),
+    )));
     let outside = c.outside();
     if outside.is_empty() {
         entries.push(Entry::Text(format!(

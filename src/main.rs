@@ -19,7 +19,7 @@ fn main() -> ExitCode {
     match cli::run(std::env::args_os()) {
         Ok(code) => code,
         Err(e) => {
-            cli::error_line(&format!("{e:#}"));
+            cli::error_line(&cli::error_message(&e));
             ExitCode::from(cli::EXIT_USAGE)
         }
     }

@@ -6,7 +6,7 @@
 //! strings in the paper's unicode notation (`{L, G1} = −G2`); a renderer turns both into its
 //! own notation. Timings are the only nondeterministic data and are kept apart (`seconds`).
 
-use brackets::{BracketTable, RankCertificate};
+use brackets::{BracketTable, RankCertificate, System};
 use trigpoly::{Expr, Var, Vars};
 
 /// A whole report: a title, sections, and what its closing line summarises.
@@ -339,10 +339,71 @@ impl From<brackets::Verdict> for ClaimResult {
 /// A bracket table of named functions of a system.
 #[derive(Clone, Debug)]
 pub struct TableResult {
-    /// What the table shows (`{A, B} for the harmonic rotor`).
+    /// What the table shows: `` `{A, B}` for the harmonic rotor (row `A`, column `B`) ``.
     pub caption: String,
+    /// The names the caption gives a row and a column (`A`, `B`), which name nothing of the
+    /// system or the table.
+    pub placeholders: [String; 2],
     /// The table, as the engine computed it.
     pub table: BracketTable,
+}
+
+/// The names a table's caption may give a row and a column, the first pair free taken.
+const PLACEHOLDERS: [[&str; 2]; 4] = [["A", "B"], ["F", "G"], ["U", "V"], ["Φ", "Ψ"]];
+
+impl TableResult {
+    /// `table`, a table of brackets in `system`, captioned `` `{A, B}` for {whose} (row `A`,
+    /// column `B`) ``, the placeholders the first pair that names no variable or function of
+    /// the system nor a function of the table (the Hénon–Heiles family has parameters `A`,
+    /// `B`: its tables say `{F, G}`).
+    pub fn new(table: BracketTable, system: &System, whose: &str) -> Self {
+        let names: Vec<&str> = table
+            .names
+            .iter()
+            .chain(&table.display)
+            .map(String::as_str)
+            .collect();
+        let [a, b] = first_free(system, &names, &PLACEHOLDERS, |pair| {
+            pair.iter().map(|p| p.to_string()).collect()
+        });
+        TableResult {
+            caption: format!("`{{{a}, {b}}}` for {whose} (row `{a}`, column `{b}`)"),
+            placeholders: [a.to_string(), b.to_string()],
+            table,
+        }
+    }
+
+    /// The caption without its note on rows and columns, for the table set as a list of its
+    /// brackets: `` `{A, B}` for the harmonic rotor ``.
+    pub fn list_caption(&self) -> String {
+        let [a, b] = &self.placeholders;
+        let note = format!(" (row `{a}`, column `{b}`)");
+        self.caption.replace(&note, "")
+    }
+}
+
+/// The first of `candidates` none of whose `labels` the system has as a variable or a function
+/// (by name or display name), nor are among `taken`; the last when every one is: the names
+/// of a report's labels and placeholders.
+pub(crate) fn first_free<T: Copy>(
+    system: &System,
+    taken: &[&str],
+    candidates: &[T],
+    labels: impl Fn(T) -> Vec<String>,
+) -> T {
+    let has = |name: &str| {
+        taken.contains(&name)
+            || system.vars().lookup(name).is_some()
+            || system
+                .functions()
+                .iter()
+                .any(|f| f.name == name || f.display == name)
+    };
+    candidates
+        .iter()
+        .copied()
+        .find(|&c| !labels(c).iter().any(|l| has(l)))
+        .unwrap_or(candidates[candidates.len() - 1])
 }
 
 /// One computed base fact of a proof.
@@ -413,6 +474,17 @@ pub struct TowerResult {
     pub claim: ClaimResult,
 }
 
+impl TowerResult {
+    /// How the expansions went: `all hold`, `1 fails: [(2, 3)]`, `2 fail: …`.
+    pub fn verdict(&self) -> String {
+        match self.failures.len() {
+            0 => "all hold".to_string(),
+            1 => format!("1 fails: {:?}", self.failures),
+            n => format!("{n} fail: {:?}", self.failures),
+        }
+    }
+}
+
 impl RankResult {
     /// The names of the functions of the certificate's nonzero minor (its rows).
     pub fn minor_functions(&self) -> Vec<&str> {
@@ -444,10 +516,12 @@ pub struct RankResult {
     pub claim: ClaimResult,
 }
 
-/// `1 claim`, `2 claims`.
-fn counted(n: usize, noun: &str) -> String {
-    match n {
-        1 => format!("1 {noun}"),
+/// A count and its noun, singular for one: `1 claim`, `2 claims`, `0 claims`. Every count the
+/// reports and the command line print in words goes through it.
+pub fn counted(n: impl std::fmt::Display, noun: &str) -> String {
+    let n = n.to_string();
+    match n.as_str() {
+        "1" => format!("1 {noun}"),
         _ => format!("{n} {noun}s"),
     }
 }
@@ -584,9 +658,10 @@ impl Report {
                 String::new()
             };
             return format!(
-                "tower: {} brackets {{K_{{m,n}}, H}} = i(mω − nΩ)K_{{m,n}} checked for \
+                "tower: {} {{K_{{m,n}}, H}} = i(mω − nΩ)K_{{m,n}} checked for \
                  1 ≤ m, n ≤ {}, {verdict}{time}",
-                t.checked, t.max
+                counted(t.checked, "bracket"),
+                t.max
             );
         }
         if self.summary == SummaryKind::Computed {

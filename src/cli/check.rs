@@ -6,6 +6,7 @@ use super::input::load_system;
 use anyhow::bail;
 use clap::Args;
 use superint::render::{json, render, Format};
+use superint::report::counted;
 use superint::system_file::{check_each, FileError, LimitsOverride};
 
 use super::limits::LimitsArgs;
@@ -86,9 +87,9 @@ pub fn run(job: &CheckJob) -> anyhow::Result<bool> {
     match errors.len() {
         0 => Ok(report.all_as_expected()),
         n => bail!(
-            "{n} of {} files not checked (the error{} above)",
-            job.files.len(),
-            if n == 1 { "" } else { "s" }
+            "{n} of {} not checked (the {} above)",
+            counted(job.files.len(), "file"),
+            if n == 1 { "error" } else { "errors" }
         ),
     }
 }

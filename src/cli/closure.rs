@@ -108,29 +108,14 @@ pub fn run(job: &ClosureJob) -> anyhow::Result<bool> {
         let (name, value) = d
             .split_once('=')
             .ok_or_else(|| anyhow!("--define '{d}': give NAME=EXPR"))?;
-        let e = subject
-            .parse(value.trim())
-            .map_err(|e| anyhow!("--define {}: {e}", name.trim()))?;
         let name = name.trim();
+        subject.check_new_name(name, "--define")?;
         if defined.iter().any(|(n, _)| n == name) {
             bail!("--define gives {name} twice");
         }
-        // A defined name that the system has already would shadow it, and the brackets
-        // found would read, in the file's names, as claims about the system's own.
-        if subject.system().lookup(name).is_some() {
-            bail!("--define {name}: {name} is a variable of the system; choose another name");
-        }
-        if let Ok(known) = subject.parse(name) {
-            bail!(
-                "--define {name}: {name} is already a name of the system ({}); choose another",
-                known.render(trigpoly::Style::Unicode)
-            );
-        }
-        if !name.starts_with(|c: char| c.is_alphabetic())
-            || !name.chars().all(|c| c.is_alphanumeric() || c == '_')
-        {
-            bail!("--define '{name}': a name is letters, digits and _, starting with a letter");
-        }
+        let e = subject
+            .parse(value.trim())
+            .map_err(|e| anyhow!("--define {name}: {e}"))?;
         defined.push((name.to_string(), e));
     }
     let mut all: Vec<&str> = names.iter().map(String::as_str).collect();

@@ -13,7 +13,7 @@ mod expand;
 mod input;
 mod limits;
 mod output;
-pub use output::error_line;
+pub use output::{error_line, error_message};
 mod paper;
 mod plot;
 mod rank;

@@ -87,3 +87,43 @@ fn write_to(mut out: impl Write, text: &str) -> anyhow::Result<()> {
 pub fn error_line(message: &str) {
     eprintln!("superint: error: {}", printable(message));
 }
+
+/// An error and its causes in one message, `context: error: cause`, leaving out a cause that
+/// the text before it already says (a parse error is the source of the engine's error that
+/// renders it with its line and caret).
+pub fn error_message(error: &anyhow::Error) -> String {
+    let mut message = String::new();
+    for cause in error.chain() {
+        let said = cause.to_string();
+        if message.is_empty() {
+            message = said;
+        } else if !message.contains(&said) {
+            message = format!("{message}: {said}");
+        }
+    }
+    message
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// A cause is said once: the engine's rendering of a parse error already says the parse
+    /// error that is its source; a context and a cause that says something new are chained.
+    #[test]
+    fn a_cause_already_said_is_not_repeated() {
+        let parse = trigpoly::ParseError::new(trigpoly::Span::new(4, 5), "unknown name 'q'");
+        let engine = brackets::EngineError::parse("x + q", parse);
+        let error = anyhow::Error::new(engine.clone()).context("computing the closure");
+        assert_eq!(
+            error_message(&error),
+            format!("computing the closure: {engine}")
+        );
+        assert_eq!(error.chain().count(), 3);
+        let error = anyhow::anyhow!("cannot read the file").context("systems/x.toml");
+        assert_eq!(
+            error_message(&error),
+            "systems/x.toml: cannot read the file"
+        );
+    }
+}

@@ -9,6 +9,7 @@ use std::path::PathBuf;
 use anyhow::{bail, Context};
 use clap::{Args, ValueEnum};
 use superint::render::{printable, Format};
+use superint::report::counted;
 use superint::system_file::{Against, LimitsOverride, PlotFunctions};
 use superint::trajectory::chart::{self, reduce_angle, Curve, Style};
 use superint::trajectory::{short, Flow, Method, Numeric};
@@ -53,8 +54,8 @@ pub struct PlotArgs {
     at: Option<String>,
     /// The starting point: a value for every coordinate, angle and momentum, such as
     /// 'x = 1, y = 0, theta = 3*pi/4, p_x = 0, p_y = 1, p_theta = I*omega' (a value is a
-    /// number, fraction or decimal, a multiple of π alone, or an expression in the
-    /// parameters). Give it again for more orbits in the same chart.
+    /// number, fraction or decimal, a multiple of π alone such as 3*pi/4, pi*3/4 or -π/2,
+    /// or an expression in the parameters). Give it again for more orbits in the same chart.
     #[arg(long, value_name = "POINT", required = true)]
     from: Vec<String>,
     /// How long to follow the motion.
@@ -421,9 +422,9 @@ pub fn run(job: &PlotJob) -> anyhow::Result<bool> {
             };
             emit_to_stderr(&format!(
                 "superint: warning: H moved by {:.2} % of its size along {along}: the \
-                 integration is not accurate at {} steps; raise --steps{gauss}\n",
+                 integration is not accurate at {}; raise --steps{gauss}\n",
                 100.0 * drift,
-                args.steps
+                counted(args.steps, "step")
             ))?;
         }
     }
@@ -515,19 +516,23 @@ const HEADINGS: [&str; 6] = [
 
 /// The run in one line: time, steps, method, what was kept, where the chart went.
 fn method(args: &PlotArgs, orbits: &[Orbit], section: Option<&str>) -> String {
-    let counts: Vec<String> = orbits.iter().map(|o| o.times.len().to_string()).collect();
-    let kept = match section {
-        None => format!("{} points a curve", counts[0]),
-        Some(label) => format!("{} upward crossings of {label} = 0", counts.join(", ")),
+    let counts: Vec<usize> = orbits.iter().map(|o| o.times.len()).collect();
+    let kept = match (section, counts.as_slice()) {
+        (None, _) => format!("{} a curve", counted(counts[0], "point")),
+        (Some(label), [count]) => format!("{} of {label} = 0", counted(*count, "upward crossing")),
+        (Some(label), _) => {
+            let counts: Vec<String> = counts.iter().map(usize::to_string).collect();
+            format!("{} upward crossings of {label} = 0", counts.join(", "))
+        }
     };
     let from = match orbits.len() {
         1 => String::new(),
         n => format!(" from each of {n} starting points"),
     };
     format!(
-        "t from 0 to {}{from} in {} steps of {} (floating point); {kept}; chart: {}",
+        "t from 0 to {}{from} in {} of {} (floating point); {kept}; chart: {}",
         short(args.time),
-        args.steps,
+        counted(args.steps, "step"),
         args.method.name(),
         args.output.display()
     )

@@ -13,7 +13,7 @@ use superint::discovery::{
 };
 use superint::render::render;
 use superint::report::Report;
-use superint::system_file::LoadedSystem;
+use superint::system_file::{reserved, what_is, LoadedSystem};
 use trigpoly::Expr;
 
 use super::limits::LimitsArgs;
@@ -178,6 +178,37 @@ impl Subject {
             Subject::File(f) => &f.name,
             Subject::Builtin(n, _) => n,
         }
+    }
+
+    /// Refuses `name` as a new name (for the option `option`), before anything is computed:
+    /// one that is not an identifier, is reserved, or names something of the system already
+    /// (which it would shadow, so that what is found about it would read, in the system's
+    /// names, as a claim about the system's own), each said as such.
+    pub fn check_new_name(&self, name: &str, option: &str) -> anyhow::Result<()> {
+        if !trigpoly::is_identifier(name) {
+            bail!(
+                "{option} '{name}': a name is letters, digits and '_', starting with a letter \
+                 or '_'"
+            );
+        }
+        if let Some(why) = reserved(name) {
+            bail!("{option} {name}: {why}; choose another name");
+        }
+        let what = match self {
+            Subject::File(f) => f.what_is(name),
+            Subject::Builtin(_, s) => what_is(s, &[], name),
+        };
+        if let Some(what) = what {
+            bail!("{option} {name}: {name} is {what}; choose another name");
+        }
+        // Names run together that read as a product of the system's (`Mx`).
+        if self.parse(name).is_ok() {
+            bail!(
+                "{option} {name}: the system reads {name} as a product of its names; choose \
+                 another name"
+            );
+        }
+        Ok(())
     }
 
     /// Parses an expression: named functions, family instances, brackets.

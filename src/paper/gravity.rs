@@ -44,10 +44,7 @@ pub(crate) fn section(options: &PaperOptions) -> Result<Section, EngineError> {
     )?;
     s.identity("C21", "{F1, G1'} = 0", "{F1, G1p}", "0")?;
     s.identity("C21", "{F1, G2'} = 0", "{F1, G2p}", "0")?;
-    s.table(
-        "`{A, B}` for the rotor under gravity (row `A`, column `B`)",
-        &["F1", "F2", "Lp", "G1p", "G2p"],
-    );
+    s.table("the rotor under gravity", &["F1", "F2", "Lp", "G1p", "G2p"]);
     su2(&mut s, "'")?;
     s.identity(
         "C23",

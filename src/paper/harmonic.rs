@@ -122,10 +122,7 @@ pub(crate) fn section(options: &PaperOptions) -> Result<Section, EngineError> {
             "0",
         )?;
     }
-    s.table(
-        "`{A, B}` for the harmonic rotor (row `A`, column `B`)",
-        &["F1", "F2", "L", "G1", "G2"],
-    );
+    s.table("the harmonic rotor", &["F1", "F2", "L", "G1", "G2"]);
     su2(&mut s, "")?;
     s.identity(
         "C10",

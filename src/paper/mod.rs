@@ -95,8 +95,8 @@ pub enum Item {
     Claim(Box<PaperClaim>),
     /// A bracket table of named functions.
     Table {
-        /// What the table shows.
-        caption: String,
+        /// Whose brackets the table shows (`the harmonic rotor`).
+        whose: String,
         /// The system.
         system: Arc<System>,
         /// The functions' names.
@@ -270,15 +270,16 @@ impl Item {
             Item::Hamilton { system } => hamilton(system)?,
             Item::Claim(c) => vec![Entry::Claim(c.check()?)],
             Item::Table {
-                caption,
+                whose,
                 system,
                 names,
             } => {
                 let names: Vec<&str> = names.iter().map(String::as_str).collect();
-                vec![Entry::Table(TableResult {
-                    caption: caption.clone(),
-                    table: BracketTable::compute(system, &names)?,
-                })]
+                vec![Entry::Table(TableResult::new(
+                    BracketTable::compute(system, &names)?,
+                    system,
+                    whose,
+                ))]
             }
             Item::Tower {
                 id,
@@ -544,9 +545,9 @@ impl SectionBuilder {
     }
 
     /// A bracket table of named functions of the current system.
-    pub(crate) fn table(&mut self, caption: &str, names: &[&str]) {
+    pub(crate) fn table(&mut self, whose: &str, names: &[&str]) {
         self.items.push(Item::Table {
-            caption: caption.into(),
+            whose: whose.into(),
             system: self.system.clone(),
             names: names.iter().map(|s| s.to_string()).collect(),
         });

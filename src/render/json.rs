@@ -25,7 +25,9 @@
 //!                 "witness": ascii | null    (the nonzero value of a proved nonvanishing),
 //!                 "note": string | null, "seconds": number | null } ],
 //!   "equations": [ { "section", "caption", "lines": [ { "lhs", "text", "ascii", "latex" } ] } ],
-//!   "tables": [ { "section", "caption", "functions": [ascii names], "display": [names],
+//!   "tables": [ { "section", "caption" (plain text, as every title and caption: "{A, B} for
+//!                 the harmonic rotor (row A, column B)"), "functions": [ascii names],
+//!                 "display": [names],
 //!                 "entries": [[ { "text", "ascii", "latex" } ]] } ],
 //!   "towers": [ { "section", "id", "system", "ladder", "max", "checked",
 //!                 "failures": [[m, n]], "outcome", "seconds" } ],
@@ -107,7 +109,7 @@ pub fn value(report: &Report, options: &Options) -> Value {
                 Entry::Heading(_) | Entry::Text(_) => {}
                 Entry::Equations(eq) => equations.push(json!({
                     "section": sec,
-                    "caption": eq.caption,
+                    "caption": plain(&eq.caption),
                     "lines": eq.lines.iter().map(|l| {
                         let mut v = expr(&l.rhs);
                         v.as_object_mut().expect("an object").insert("lhs".into(), json!(l.lhs));
@@ -117,7 +119,7 @@ pub fn value(report: &Report, options: &Options) -> Value {
                 Entry::Claim(c) => claims.push(claim(c)),
                 Entry::Table(t) => tables.push(json!({
                     "section": sec,
-                    "caption": t.caption,
+                    "caption": plain(&t.caption),
                     "functions": t.table.names,
                     "display": t.table.display,
                     "entries": t.table.entries.iter().map(|row| row.iter().map(|e| json!({
@@ -171,7 +173,7 @@ pub fn value(report: &Report, options: &Options) -> Value {
     json!({
         "schema": SCHEMA,
         "title": plain(&report.title),
-        "subtitle": report.subtitle,
+        "subtitle": plain(&report.subtitle),
         "summary": {
             "claims": ids.len(),
             "proved": proved,

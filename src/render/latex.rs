@@ -8,8 +8,8 @@ use super::tex::{markup, math, relation, sentence, text};
 use super::text::{number, point, upper_bound};
 use super::{table_list, verdict, Options};
 use crate::report::{
-    ClaimKind, ClaimResult, Entry, Equations, ProofResult, RankResult, Report, SummaryKind,
-    TableResult, TowerResult,
+    counted, ClaimKind, ClaimResult, Entry, Equations, ProofResult, RankResult, Report,
+    SummaryKind, TableResult, TowerResult,
 };
 
 /// Renders a report as a LaTeX document.
@@ -196,8 +196,8 @@ fn claim_rows(c: &ClaimResult) -> Vec<String> {
             rows.extend(long_rows("", r"\text{it equals}", w, CLAIM_ROW));
         } else {
             rows.push(format!(
-                r"&\text{{it is a nonzero sum of {} terms}}",
-                w.len()
+                r"&\text{{it is a nonzero sum of {}}}",
+                counted(w.len(), "term")
             ));
         }
     }
@@ -274,10 +274,13 @@ fn table(out: &mut Vec<String>, t: &TableResult) {
 /// A table too wide for the page, as the list of its brackets above the diagonal that are not
 /// zero (the others follow by antisymmetry), each broken over lines as a long equation is.
 fn table_as_list(out: &mut Vec<String>, t: &TableResult, head: &[String], cells: &[Vec<String>]) {
-    let (caption, brackets) = table_list(&t.caption, cells);
+    let brackets = table_list(cells);
+    let [a, b] = &t.placeholders;
     out.push(format!(
-        r"\noindent {}, the brackets that are not zero, $A$ before $B$:",
-        markup(&caption)
+        r"\noindent {}, the brackets that are not zero, ${}$ before ${}$:",
+        markup(&t.list_caption()),
+        math(a),
+        math(b)
     ));
     let mut rows = Vec::new();
     for (a, b, cell) in brackets {
@@ -293,17 +296,12 @@ fn table_as_list(out: &mut Vec<String>, t: &TableResult, head: &[String], cells:
 fn tower(out: &mut Vec<String>, t: &TowerResult) {
     let mut rows = claim_rows(&t.claim);
     flush(out, &mut rows);
-    let verdict = if t.failures.is_empty() {
-        "all hold".to_string()
-    } else {
-        format!("{} fail: {:?}", t.failures.len(), t.failures)
-    };
     out.push(format!(
-        r"\noindent {} brackets expanded for the {} (ladder ${}$), {}.",
-        t.checked,
+        r"\noindent {} expanded for the {} (ladder ${}$), {}.",
+        counted(t.checked, "bracket"),
         text(&t.system),
         math(&t.ladder),
-        text(&verdict)
+        text(&t.verdict())
     ));
     out.push(String::new());
 }

@@ -6,8 +6,8 @@ use trigpoly::Style;
 use super::text::{number, point, upper_bound};
 use super::{verdict, Options};
 use crate::report::{
-    ClaimKind, ClaimResult, Entry, Equations, ProofResult, RankResult, Report, TableResult,
-    TowerResult,
+    counted, ClaimKind, ClaimResult, Entry, Equations, ProofResult, RankResult, Report,
+    TableResult, TowerResult,
 };
 
 /// Renders a report as Markdown.
@@ -109,17 +109,13 @@ fn table(t: &TableResult) -> String {
 }
 
 fn tower(t: &TowerResult) -> String {
-    let verdict = if t.failures.is_empty() {
-        "all hold".to_string()
-    } else {
-        format!("{} fail: {:?}", t.failures.len(), t.failures)
-    };
     format!(
-        "{}: {} brackets expanded for the {} (ladder {}), {verdict}",
+        "{}: {} expanded for the {} (ladder {}), {}",
         claim(&t.claim),
-        t.checked,
+        counted(t.checked, "bracket"),
         t.system,
-        code(&t.ladder)
+        code(&t.ladder),
+        t.verdict()
     )
 }
 

@@ -85,12 +85,17 @@ pub fn render(report: &Report, format: Format, options: &Options) -> String {
     }
 }
 
-/// Text safe to print or write: each control character but newline and tab as `�` (U+FFFD).
-/// A system file's names, descriptions and ids, and a command line's expressions, may hold
-/// escapes such as `\u001b`, which on a terminal would move the cursor, clear the screen or
-/// set its title, and in an SVG chart make the file no XML.
+/// Text safe to print or write: each control character but newline and tab, and each
+/// bidirectional embedding, override or isolate (U+202A–U+202E, U+2066–U+2069), as `�`
+/// (U+FFFD). A system file's names, descriptions and ids, and a command line's expressions,
+/// may hold escapes such as `\u001b`, which on a terminal would move the cursor, clear the
+/// screen or set its title, and in an SVG chart make the file no XML; an override such as
+/// U+202E shows the rest of its line turned around (an error's excerpt of the file too).
 pub fn printable(text: &str) -> std::borrow::Cow<'_, str> {
-    let unsafe_char = |c: char| c.is_control() && c != '\n' && c != '\t';
+    let unsafe_char = |c: char| {
+        (c.is_control() && c != '\n' && c != '\t')
+            || matches!(c, '\u{202a}'..='\u{202e}' | '\u{2066}'..='\u{2069}')
+    };
     match text.contains(unsafe_char) {
         false => std::borrow::Cow::Borrowed(text),
         true => text
@@ -102,12 +107,9 @@ pub fn printable(text: &str) -> std::borrow::Cow<'_, str> {
 }
 
 /// A table set as a list ([`crate::report::TableResult`] too wide for a line or page): its
-/// caption without the note on rows and columns, and its brackets `(A, B, cell)` above the
-/// diagonal that are not zero, the others following by antisymmetry.
-pub(crate) fn table_list<'c>(
-    caption: &str,
-    cells: &'c [Vec<String>],
-) -> (String, Vec<(usize, usize, &'c str)>) {
+/// brackets `(A, B, cell)` above the diagonal that are not zero, the others following by
+/// antisymmetry.
+pub(crate) fn table_list(cells: &[Vec<String>]) -> Vec<(usize, usize, &str)> {
     let brackets = cells
         .iter()
         .enumerate()
@@ -120,7 +122,7 @@ pub(crate) fn table_list<'c>(
         .filter(|(_, _, cell)| *cell != "0")
         .map(|(a, b, cell)| (a, b, cell.as_str()))
         .collect();
-    (caption.replace(" (row `A`, column `B`)", ""), brackets)
+    brackets
 }
 
 /// Prose markup (formulas between backticks) as plain text.
@@ -160,13 +162,4 @@ pub(crate) fn condition_suffix(condition: &Option<String>) -> String {
         .as_ref()
         .map(|c| format!(" at {c}"))
         .unwrap_or_default()
-}
-
-/// The name of a number of functions: "5 functions".
-pub(crate) fn plural(n: usize, word: &str) -> String {
-    if n == 1 {
-        format!("{n} {word}")
-    } else {
-        format!("{n} {word}s")
-    }
 }

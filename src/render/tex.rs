@@ -524,11 +524,13 @@ fn push_char(out: &mut String, c: char, accent: Option<&'static str>) {
     }
 }
 
-/// Escapes prose for LaTeX text mode; mathematical characters become inline math.
+/// Escapes prose for LaTeX text mode; mathematical characters become inline math, and hyphens
+/// stay hyphens (`--laurent`, which LaTeX would set as a dash).
 ///
 /// ```
 /// use superint::render::tex::text;
 /// assert_eq!(text("rank 5 & 50% of ω"), r"rank 5 \& 50\% of $\omega$");
+/// assert_eq!(text("--laurent"), "-{}-laurent");
 /// ```
 pub fn text(s: &str) -> String {
     let mut out = String::new();
@@ -551,6 +553,7 @@ pub fn text(s: &str) -> String {
             '’' => out.push('\''),
             '—' => out.push_str("---"),
             '–' => out.push_str("--"),
+            '-' if out.ends_with('-') => out.push_str("{}-"),
             _ if c.is_ascii() => out.push(c),
             _ if is_combining(c) => {}
             _ if let Some(letter) = text_letter(c) => out.push_str(&letter),

@@ -4,9 +4,9 @@ use brackets::UpperBound;
 use rayon::prelude::*;
 use trigpoly::{GaussianRational, Style, VarKind};
 
-use super::{condition_suffix, pad, plain, plural, table_list, verdict, width, Options};
+use super::{condition_suffix, pad, plain, table_list, verdict, width, Options};
 use crate::report::{
-    ClaimKind, ClaimResult, Entry, Equation, Equations, ProofResult, RankResult, Report,
+    counted, ClaimKind, ClaimResult, Entry, Equation, Equations, ProofResult, RankResult, Report,
     TableResult, TowerResult,
 };
 
@@ -218,7 +218,10 @@ fn claim(out: &mut Vec<String>, c: &ClaimResult) {
         if width(&line) <= 3 * WRAP {
             out.extend(wrap(&line, WRAP, "        "));
         } else {
-            out.push(format!("      it is a nonzero sum of {} terms", w.len()));
+            out.push(format!(
+                "      it is a nonzero sum of {}",
+                counted(w.len(), "term")
+            ));
         }
     }
 }
@@ -276,8 +279,9 @@ fn table(out: &mut Vec<String>, t: &TableResult) {
 /// integrals made rows of a thousand characters).
 fn table_as_list(out: &mut Vec<String>, t: &TableResult, cells: &[Vec<String>]) {
     let names = &t.table.display;
-    let (caption, brackets) = table_list(&t.caption, cells);
-    let caption = plain(&caption);
+    let brackets = table_list(cells);
+    let caption = plain(&t.list_caption());
+    let [a, b] = &t.placeholders;
     let rows: Vec<String> = brackets
         .into_iter()
         .map(|(a, b, cell)| format!("    {{{}, {}}} = {cell}", names[a], names[b]))
@@ -287,7 +291,8 @@ fn table_as_list(out: &mut Vec<String>, t: &TableResult, cells: &[Vec<String>]) 
         false => {
             out.extend(wrap(
                 &format!(
-                    "{caption}, too wide for a table: the brackets that are not zero, A before B:"
+                    "{caption}, too wide for a table: the brackets that are not zero, {a} before \
+                     {b}:"
                 ),
                 WRAP,
                 "",
@@ -301,14 +306,12 @@ fn table_as_list(out: &mut Vec<String>, t: &TableResult, cells: &[Vec<String>]) 
 
 fn tower(out: &mut Vec<String>, t: &TowerResult) {
     verdict_line(out, &t.claim);
-    let verdict = if t.failures.is_empty() {
-        "all hold".to_string()
-    } else {
-        format!("{} fail: {:?}", t.failures.len(), t.failures)
-    };
     out.push(format!(
-        "      {} brackets expanded for the {} (ladder {}), {verdict}",
-        t.checked, t.system, t.ladder
+        "      {} expanded for the {} (ladder {}), {}",
+        counted(t.checked, "bracket"),
+        t.system,
+        t.ladder,
+        t.verdict()
     ));
 }
 
@@ -387,7 +390,7 @@ pub(crate) fn number(q: &GaussianRational) -> String {
 /// `there is 1 function`, `there are 2 functions`.
 fn there_are(n: usize, noun: &str) -> String {
     let verb = if n == 1 { "is" } else { "are" };
-    format!("there {verb} {}", plural(n, noun))
+    format!("there {verb} {}", counted(n, noun))
 }
 
 /// Why the rank is at most the certified one, in words.
@@ -401,7 +404,7 @@ pub(crate) fn upper_bound(r: &RankResult) -> String {
         UpperBound::VanishingMinors { count } => format!(
             "every {0} × {0} minor ({1}) vanishes identically",
             k + 1,
-            plural(*count, "minor")
+            counted(*count, "minor")
         ),
     }
 }

@@ -79,7 +79,9 @@ impl CheckedClaim {
 pub(crate) fn engine_error(source: &Source, span: Range<usize>, e: &EngineError) -> FileError {
     match e {
         EngineError::Algebra(
-            a @ (AlgebraError::TooManyTerms { .. } | AlgebraError::ExponentTooLarge { .. }),
+            a @ (AlgebraError::TooManyTerms { .. }
+            | AlgebraError::ExponentTooLarge { .. }
+            | AlgebraError::OrderTooLarge { .. }),
         ) => source
             .error(ErrorKind::Limit, span, a.to_string())
             .with_hint(LIMIT_HINT),
@@ -197,10 +199,10 @@ impl ClaimSpec {
                         ErrorKind::Condition,
                         w.span(),
                         format!(
-                            "a rank claim's condition may set parameters only, not {}, a \
-                             variable of the phase space: the rank is that of the Jacobian on \
-                             the whole phase space",
-                            vars.variable(*v).unicode()
+                            "a rank claim's condition may set parameters only, not {}, {}: \
+                             the rank is that of the Jacobian on the whole phase space",
+                            vars.variable(*v).unicode(),
+                            vars.variable(*v).kind().described()
                         ),
                     ));
                 }
@@ -325,9 +327,10 @@ fn split_sign(s: &str) -> (bool, &str) {
     }
 }
 
-/// The rational `q` of a multiple of π written alone: an optional sign, an optional
-/// coefficient (integer, fraction or decimal, then `*` or a space, or nothing), `pi` or `π`,
-/// and an optional divisor (`/4`). `None` for anything else.
+/// The rational `q` of a multiple of π written alone: an optional sign, then `pi` or `π` among
+/// numbers (integers or decimals) that multiply or divide it, written before it (`3*pi/4`,
+/// `3pi/4`, `1/3*pi`, `2 π`) or after it (`pi*3/4`, `pi/4*3`). π itself divides nothing and
+/// is divided by nothing (`3/pi` is no multiple of it). `None` for anything else.
 pub(crate) fn pi_multiple(s: &str) -> Option<trigpoly::Rational> {
     let (negative, rest) = split_sign(s.trim());
     let (at, len) = match rest.find('π') {
@@ -336,24 +339,49 @@ pub(crate) fn pi_multiple(s: &str) -> Option<trigpoly::Rational> {
     };
     let before = rest[..at].trim_end();
     let before = before.strip_suffix('*').unwrap_or(before).trim();
-    let coefficient: trigpoly::Rational = match before {
+    let before = match before {
         "" => trigpoly::Rational::from(1),
-        b if b.starts_with(|c: char| c.is_ascii_digit() || c == '.') => {
-            decimal_number(b).or_else(|| b.parse().ok())?
-        }
+        b => product_of_numbers(b)?,
+    };
+    let after = rest[at + len..].trim();
+    let after = match after {
+        "" => trigpoly::Rational::from(1),
+        a if a.starts_with(['*', '/']) => product_of_numbers(&format!("1{a}"))?,
         _ => return None,
     };
-    let divisor: i64 = match rest[at + len..].trim() {
-        "" => 1,
-        d => d
-            .strip_prefix('/')?
-            .trim()
-            .parse()
-            .ok()
-            .filter(|&d: &i64| d > 0)?,
-    };
-    let q = &coefficient / &trigpoly::Rational::from(divisor);
+    let q = &before * &after;
     Some(if negative { -q } else { q })
+}
+
+/// The value of numbers multiplied and divided from left to right (`3/4*2` is `3/2`), each
+/// an unsigned integer or decimal; `None` for anything else or a division by zero.
+fn product_of_numbers(s: &str) -> Option<trigpoly::Rational> {
+    let factor = |f: &str| -> Option<trigpoly::Rational> {
+        let f = f.trim();
+        if !f.starts_with(|c: char| c.is_ascii_digit() || c == '.') {
+            return None;
+        }
+        match decimal_number(f) {
+            Some(q) => Some(q),
+            None if f.bytes().all(|b| b.is_ascii_digit()) => f.parse().ok(),
+            None => None,
+        }
+    };
+    let first = s.find(['*', '/']).unwrap_or(s.len());
+    let mut value = factor(&s[..first])?;
+    let mut rest = &s[first..];
+    while let Some(op) = rest.chars().next() {
+        let body = &rest[1..];
+        let end = body.find(['*', '/']).unwrap_or(body.len());
+        let q = factor(&body[..end])?;
+        value = match op {
+            '*' => &value * &q,
+            _ if q.is_zero() => return None,
+            _ => &value / &q,
+        };
+        rest = &body[end..];
+    }
+    Some(value)
 }
 
 /// The fraction a decimal number writes exactly (`−1.25` is `−5/4`, `2.5e-3` is `1/400`):
@@ -653,6 +681,14 @@ mod tests {
             ("0.5*pi", "1/2"),
             ("1/3*pi", "1/3"),
             (" + pi / 6 ", "1/6"),
+            ("pi*3/4", "3/4"),
+            ("π*3/4", "3/4"),
+            ("pi/4*3", "3/4"),
+            ("-pi*5/6", "-5/6"),
+            ("pi * 2", "2"),
+            ("pi*0.25", "1/4"),
+            ("2*pi/3/2", "1/3"),
+            ("3/4*2*pi", "3/2"),
         ] {
             assert_eq!(
                 pi_multiple(written).map(|q| q.to_string()),
@@ -661,7 +697,8 @@ mod tests {
             );
         }
         for other in [
-            "x*pi", "2*pi + 1", "pi/0", "pi/x", "pie", "pi*2", "(pi)", "p", "",
+            "x*pi", "2*pi + 1", "pi/0", "pi/x", "pie", "(pi)", "p", "", "3/pi", "pi*", "pi/",
+            "pi*-2", "pi2", "2**pi", "pi*pi", "pi*2pi", "1/0*pi", "pi 2", "pi*(3/4)",
         ] {
             assert_eq!(pi_multiple(other), None, "{other}");
         }

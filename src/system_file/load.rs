@@ -10,7 +10,8 @@ use std::sync::Mutex;
 use brackets::{PhaseSpace, System};
 use toml::Spanned;
 use trigpoly::{
-    is_identifier, latex_unwritable, AlgebraError, Expr, Limits, VarSet, LATEX_LETTERS, RESERVED,
+    is_identifier, latex_unwritable, AlgebraError, Expr, Limits, Span, VarSet, LATEX_LETTERS,
+    RESERVED,
 };
 
 use super::claims::ClaimSpec;
@@ -23,6 +24,50 @@ use super::{Family, LimitsOverride, LoadedSystem, DEFAULT_MAX_DEGREE, DEFAULT_MA
 /// The largest degree limit a file or the command line may set (what a 16-bit exponent field
 /// holds; the packing widens its fields as the limit asks).
 const MAX_DEGREE_CEILING: u32 = 32_767;
+
+/// Whether `c` shows nothing, or moves or turns the text around it: a control character
+/// (a tab), white space other than the space (no-break, line separator), or a format character
+/// (zero width, the bidirectional marks and overrides, a byte-order mark, variation selectors).
+fn invisible(c: char) -> bool {
+    c.is_control()
+        || (c.is_whitespace() && c != ' ')
+        || matches!(
+            c,
+            '\u{ad}'
+                | '\u{34f}'
+                | '\u{61c}'
+                | '\u{115f}'
+                | '\u{1160}'
+                | '\u{17b4}'
+                | '\u{17b5}'
+                | '\u{180b}'..='\u{180f}'
+                | '\u{200b}'..='\u{200f}'
+                | '\u{202a}'..='\u{202e}'
+                | '\u{2060}'..='\u{206f}'
+                | '\u{3164}'
+                | '\u{fe00}'..='\u{fe0f}'
+                | '\u{feff}'
+                | '\u{ffa0}'
+                | '\u{fff0}'..='\u{fffb}'
+                | '\u{1bca0}'..='\u{1bca3}'
+                | '\u{1d173}'..='\u{1d17a}'
+                | '\u{e0000}'..='\u{e0fff}'
+        )
+}
+
+/// Why `name` cannot be declared whatever the system: `'cos' is reserved (i, cos, …)`,
+/// `'H' is reserved for the Hamiltonian`; `None` for a name that is free of meaning.
+pub fn reserved(name: &str) -> Option<String> {
+    if RESERVED.contains(&name) || name == "rank" {
+        Some(format!(
+            "'{name}' is reserved (i, cos, sin, exp, conj, re, im, rank)"
+        ))
+    } else if name == "H" {
+        Some("'H' is reserved for the Hamiltonian".into())
+    } else {
+        None
+    }
+}
 
 /// Reads and loads a system file. Every problem is a [`FileError`] naming the file, line and
 /// column.
@@ -195,13 +240,62 @@ fn toml_error(source: &Source, e: &toml::de::Error) -> FileError {
     } else {
         ErrorKind::Toml
     };
+    let span = e.span().unwrap_or(0..0);
     let message = if message.starts_with("missing field") {
         format!("{message} (see docs/system-files.md for every field)")
+    } else if let Some(wanted) = message.strip_prefix("invalid type: map, expected ") {
+        // A date is read as a map: said as a date, of its key, as at the top level.
+        match date_at(&source.text, &span) {
+            Some((key, false)) => format!("{key} is {}, not a date", in_words(wanted)),
+            Some((key, true)) => {
+                format!("each of {key} is {}, not a date", in_words(wanted))
+            }
+            None => message,
+        }
     } else {
         message
     };
-    let span = e.span().unwrap_or(0..0);
     source.error(kind, span, message)
+}
+
+/// The key of the date at `span` in the TOML document `text`, and whether it is an element of
+/// that key's array (`coordinates = [1979-05-27]`); `None` where no date is.
+fn date_at(text: &str, span: &Range<usize>) -> Option<(String, bool)> {
+    fn find(
+        key: &str,
+        value: &Spanned<toml::de::DeValue<'_>>,
+        span: &Range<usize>,
+        in_array: bool,
+    ) -> Option<(String, bool)> {
+        match value.get_ref() {
+            toml::de::DeValue::Datetime(_) if value.span() == *span => {
+                Some((key.to_string(), in_array))
+            }
+            toml::de::DeValue::Array(items) => {
+                items.iter().find_map(|item| find(key, item, span, true))
+            }
+            toml::de::DeValue::Table(table) => table
+                .iter()
+                .find_map(|(k, v)| find(k.get_ref(), v, span, false)),
+            _ => None,
+        }
+    }
+    let document = toml::de::DeTable::parse(text).ok()?;
+    document
+        .get_ref()
+        .iter()
+        .find_map(|(k, v)| find(k.get_ref(), v, span, false))
+}
+
+/// What serde expected, in the words of a system file's messages: `a string` is `a string in
+/// quotes`, an unsigned integer `a whole number`, a sequence `an array`.
+fn in_words(expected: &str) -> &str {
+    match expected {
+        "a string" => "a string in quotes",
+        "u8" | "u16" | "u32" | "u64" | "usize" => "a whole number",
+        "a sequence" => "an array",
+        other => other,
+    }
 }
 
 struct Builder<'a> {
@@ -212,21 +306,59 @@ struct Builder<'a> {
 }
 
 impl<'a> Builder<'a> {
-    /// Refuses a display name with a character that is markup in Markdown or LaTeX (`a^b^c`
-    /// stopped pdflatex, `L|x` split a Markdown table's cells).
+    /// Refuses a display name that would not show as written: empty, beginning or ending with
+    /// a space, with a character that is markup in Markdown or LaTeX (`a^b^c` stopped pdflatex,
+    /// `L|x` split a Markdown table's cells), one that is invisible or a control (a tab, the
+    /// right-to-left override U+202E, which turns the text after it around), or a subscript
+    /// `_` of nothing (`a_`, `a__b`: LaTeX `a__{b}` stops pdflatex). The message points at
+    /// the character.
     fn check_display(&self, display: &Spanned<String>) -> Result<(), FileError> {
         const MARKUP: &str = "^`|\\$%&#{}~*<>\"";
-        match display.get_ref().chars().find(|&c| MARKUP.contains(c)) {
-            None => Ok(()),
-            Some(c) => Err(self.error(
+        let name = display.get_ref();
+        let text = self.text(display);
+        let refuse = |span: Range<usize>, why: &str| {
+            Err(self.error(
                 ErrorKind::Name,
-                display.span(),
+                span,
                 format!(
                     "a display name is letters, digits, primes (G1'), a bar (Z̄), subscripts \
-                     (A_x), spaces and parentheses: '{c}' is markup in Markdown or LaTeX"
+                     (A_x), spaces and parentheses: {why}"
                 ),
-            )),
+            ))
+        };
+        if name.is_empty() {
+            return refuse(
+                display.span(),
+                "this one is empty (leave display out to show the name)",
+            );
         }
+        for (k, c) in name.char_indices() {
+            let here = text.source_span(Span::new(k, k + c.len_utf8()));
+            if MARKUP.contains(c) {
+                return refuse(here, &format!("'{c}' is markup in Markdown or LaTeX"));
+            }
+            if invisible(c) {
+                let code = c as u32;
+                return refuse(
+                    here,
+                    &format!("U+{code:04X} is an invisible or control character"),
+                );
+            }
+            let before = name[..k].chars().next_back();
+            let after = name[k + c.len_utf8()..].chars().next();
+            if c == ' ' && (before.is_none() || after.is_none()) {
+                return refuse(here, "it begins or ends with a space");
+            }
+            let stands = |c: Option<char>| c.is_some_and(|c| c != '_' && c != ' ');
+            if c == '_' && !(stands(before) && stands(after)) {
+                return refuse(
+                    here,
+                    "a subscript '_' stands between a name and its subscript (A_x), not at an \
+                     end or beside another '_' or a space",
+                );
+            }
+        }
+        Ok(())
     }
 
     fn new(source: Source, limits: &'a LimitsOverride) -> Self {
@@ -270,15 +402,8 @@ impl<'a> Builder<'a> {
                 format!("'{name}' cannot name {what}: LaTeX has no letter '{c}' ({LATEX_LETTERS})"),
             ));
         }
-        if RESERVED.contains(&name) || name == "rank" {
-            return Err(self.error(
-                ErrorKind::Name,
-                span,
-                format!("'{name}' is reserved (i, cos, sin, exp, conj, re, im, rank)"),
-            ));
-        }
-        if name == "H" {
-            return Err(self.error(ErrorKind::Name, span, "'H' is reserved for the Hamiltonian"));
+        if let Some(why) = reserved(name) {
+            return Err(self.error(ErrorKind::Name, span, why));
         }
         if let Some((other, at)) = self.names.get(name) {
             let line = super::error::locate(&self.source.text, at.clone()).line;

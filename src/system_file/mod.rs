@@ -51,7 +51,7 @@ mod tower;
 
 pub use claims::{CheckedClaim, ClaimForm, ClaimSpec};
 pub use error::{ErrorKind, FileError, Location};
-pub use load::{load, load_bytes, load_str};
+pub use load::{load, load_bytes, load_str, reserved};
 pub use plot::{Against, PlotFunctions, PlotInput, StartValue};
 pub use reports::{
     bracket_report, check_each, check_report, expand_report, rank_report, table_report,
@@ -125,6 +125,36 @@ pub struct LoadedSystem {
     cache: Mutex<HashMap<(usize, i64, i64), Expr>>,
 }
 
+/// What `name` already names in `system` or among `families`, in words with its article:
+/// `a parameter of the system` (or the variable's other kind), `the Hamiltonian`, `a function
+/// of the system`, `a family of the system`, `an instance of the family K`; `None` for a name
+/// the system does not have.
+///
+/// ```
+/// let rotor = superint::brackets::systems::harmonic_rotor();
+/// let what = |name| superint::system_file::what_is(&rotor, &[], name);
+/// assert_eq!(what("omega").as_deref(), Some("a parameter of the system"));
+/// assert_eq!(what("L").as_deref(), Some("a function of the system"));
+/// assert_eq!(what("Hx"), None);
+/// ```
+pub fn what_is(system: &System, families: &[Family], name: &str) -> Option<String> {
+    if let Some(v) = system.lookup(name) {
+        let kind = system.vars().variable(v).kind();
+        return Some(format!("{} of the system", kind.described()));
+    }
+    if name == "H" {
+        return Some("the Hamiltonian".into());
+    }
+    if system.functions().iter().any(|f| f.name == name) {
+        return Some("a function of the system".into());
+    }
+    if families.iter().any(|f| f.name == name) {
+        return Some("a family of the system".into());
+    }
+    scope::instance_of(families, name)
+        .map(|(k, _, _)| format!("an instance of the family {}", families[k].name))
+}
+
 /// Where command-line expressions come from in messages.
 const COMMAND_LINE: &str = "<command line>";
 
@@ -188,6 +218,12 @@ impl LoadedSystem {
     pub fn family_instance(&self, family: usize, m: i64, n: i64) -> Result<Expr, FileError> {
         self.scope(self.families.len())
             .expand(family, m, n, &self.source, 0..0)
+    }
+
+    /// What `name` already names in this system, for a message that refuses it as a new
+    /// name: [`what_is`] with the families.
+    pub fn what_is(&self, name: &str) -> Option<String> {
+        what_is(&self.system, &self.families, name)
     }
 
     /// The index of a family by name.

@@ -171,7 +171,7 @@ impl LoadedSystem {
                 format!(
                     "--at gives the parameters their values; {} is {} (give it with --from)",
                     self.display(v),
-                    kind_name(kind)
+                    kind.described()
                 )
             })
         };
@@ -321,15 +321,5 @@ fn number(
     match value.as_constant() {
         Some(c) if c.is_real() => Ok(c.re),
         _ => Err(rhs.error(source, ErrorKind::Condition, rhs.trimmed_span(), why)),
-    }
-}
-
-/// How a kind of variable is called in messages, with its article.
-fn kind_name(kind: VarKind) -> &'static str {
-    match kind {
-        VarKind::Coordinate => "a coordinate",
-        VarKind::Momentum => "a momentum",
-        VarKind::Parameter => "a parameter",
-        VarKind::Angle => "an angle",
     }
 }

@@ -321,10 +321,7 @@ pub fn table_report(file: &LoadedSystem, names: &[String]) -> Result<Report, Fil
         err.message = format!("the brackets of {}: {}", refs.join(", "), err.message);
         err
     })?;
-    let entry = Entry::Table(TableResult {
-        caption: format!("`{{A, B}}` for {} (row `A`, column `B`)", file.the_name()),
-        table,
-    });
+    let entry = Entry::Table(TableResult::new(table, &system, &file.the_name()));
     Ok(file.one_entry(
         format!("Bracket table of {}", file.the_name()),
         entry,

@@ -134,6 +134,11 @@ fn cli_json_has_every_claim_proved() {
     assert!(summary["claims"].as_u64().expect("a count") >= 25);
     // Tables, proofs, towers and ranks come along; exact numbers are strings.
     assert_eq!(v["tables"][0]["entries"][2][3]["ascii"], "-G2");
+    // Captions are plain text, without the markup's backticks.
+    assert_eq!(
+        v["tables"][0]["caption"],
+        "{A, B} for the harmonic rotor (row A, column B)"
+    );
     assert_eq!(v["tables"][0]["entries"][3][4]["text"], "−ω² L");
     assert!(!v["proofs"].as_array().expect("proofs").is_empty());
     assert_eq!(v["towers"][0]["checked"], 64);
@@ -402,20 +407,6 @@ fn cli_bad_usage_exits_2_with_a_message() {
             ][..],
             "invalid value '0' for '--max-products <N>'",
         ),
-        // The products of integrals up to degree 2 at p_θ = Iω are more than nine.
-        (
-            &[
-                "search",
-                "systems/harmonic-rotor.toml",
-                "--when",
-                "p_theta = I*omega",
-                "--new-only",
-                "--max-products",
-                "9",
-            ][..],
-            "more than 9 products of integrals; search a smaller space, or raise the limit \
-             with --max-products",
-        ),
         (
             &[
                 "search",
@@ -441,6 +432,19 @@ fn cli_bad_usage_exits_2_with_a_message() {
         (&["paper", "--bogus"][..], "unexpected argument '--bogus'"),
     ] {
         assert_bad_usage(args, message);
+    }
+    // The products of integrals up to degree 2 at p_θ = Iω are more than nine.
+    for (limit, message) in [
+        (
+            "9",
+            "more than 9 products of integrals, the limit (`SearchOptions::max_products`; on the \
+             command line, --max-products): search a smaller space, or raise the limit",
+        ),
+        ("1", "more than 1 product of integrals, the limit"),
+    ] {
+        let search = ["search", "systems/harmonic-rotor.toml", "--new-only"];
+        let options = ["--when", "p_theta = I*omega", "--max-products", limit];
+        assert_bad_usage(&[&search[..], &options[..]].concat(), message);
     }
 }
 
@@ -1260,7 +1264,7 @@ fn cli_prints_no_control_characters() {
          description = \"a\\bb\\rc\"\n\
          hamiltonian = \"p_x^2/2\"\n\
          [phase_space]\ncoordinates = [\"x\"]\n\
-         [[function]]\nname = \"L\"\ndisplay = \"L\\u001b[2J\"\nvalue = \"x*p_x\"\n\
+         [[function]]\nname = \"L\"\nvalue = \"x*p_x\"\n\
          [[claim]]\nid = \"c\\u0000\"\nclaim = \"{L, H} = p_x^2\"\n",
     );
     let file = file.to_str().expect("a UTF-8 path");
@@ -1297,7 +1301,18 @@ fn cli_prints_no_control_characters() {
     ]);
     assert_eq!(out.status.code(), Some(0), "{}", stderr(&out));
     let chart = std::fs::read_to_string(&svg).expect("the chart");
-    assert!(clean(&chart) && chart.contains("L\u{fffd}[2J"), "{chart}");
+    assert!(
+        clean(&chart) && chart.contains("t\u{fffd}]0;title\u{fffd}"),
+        "{chart}"
+    );
+    // A right-to-left override would turn the rest of an error's line around on a terminal.
+    let out = superint(&["expand", file, "x\u{202e} + y"]);
+    assert_eq!(out.status.code(), Some(2));
+    let err = stderr(&out);
+    assert!(
+        !err.contains('\u{202e}') && err.contains("x\u{fffd} + y"),
+        "{err:?}"
+    );
 }
 
 /// A misspelt built-in system is named as such, with the built-in ones, where "cannot read
@@ -1344,13 +1359,18 @@ fn cli_plot_starting_angles_may_be_multiples_of_pi() {
         (first(1), first(2))
     };
     let half = std::f64::consts::FRAC_1_SQRT_2;
-    for theta in ["3*pi/4", "3π/4", "0.75*pi"] {
+    for theta in ["3*pi/4", "3π/4", "0.75*pi", "pi*3/4", "pi/4*3", "3pi/4"] {
         let (c, s) = run_with(theta);
         assert!(
             (c + half).abs() < 1e-12 && (s - half).abs() < 1e-12,
             "{theta}: {c}, {s}"
         );
     }
+    let (c, s) = run_with("-pi/2");
+    assert!(
+        c.abs() < 1e-12 && (s + 1.0).abs() < 1e-12,
+        "-pi/2: {c}, {s}"
+    );
     let a = args("2*pi + 1");
     let out = superint(&a.iter().map(String::as_str).collect::<Vec<_>>());
     assert_eq!(out.status.code(), Some(2));
@@ -1359,5 +1379,154 @@ fn cli_plot_starting_angles_may_be_multiples_of_pi() {
         err.contains("unknown name 'pi'")
             && err.contains("hint: a value may be a multiple of π alone (theta = 3*pi/4"),
         "{err}"
+    );
+}
+
+/// A count of one takes its noun in the singular wherever a count is printed in words: the
+/// products a search forms, its unknowns and blocks, the rest of its basis, the brackets a
+/// tower expands, the steps of a plot, the files `check` could not read.
+#[test]
+fn cli_counts_of_one_are_singular() {
+    let file = scratch_file("oscillator.toml");
+    std::fs::write(
+        &file,
+        "hamiltonian = \"p_x^2/2 + x^2/2\"\n[phase_space]\ncoordinates = [\"x\"]\n",
+    )
+    .expect("write the system");
+    let file = file.to_str().expect("a UTF-8 path");
+    let search = |degree: &str| {
+        let args = ["search", file, "--new-only", "--format", "markdown"];
+        let degrees = ["--momenta-degree", degree, "--positions-degree", degree];
+        run(&[&args[..], &degrees[..]].concat(), 0)
+    };
+    let four = search("4");
+    assert!(four.contains("(1 product formed)"), "{four}");
+    let zero = search("0");
+    for said in [
+        "1 unknown, 0 linear equations over `Q`, in 1 independent block (the largest has 1 \
+         unknown).",
+        "(0 products formed); the generated ones span 1 of the 1 dimension,",
+        "`{I, H} = 0 for the other 1 basis element`",
+    ] {
+        assert!(zero.contains(said), "{said}\n{zero}");
+    }
+    let tower = run(&["tower", "--max", "1", "--no-timings"], 0);
+    for said in [
+        "1 bracket expanded for the harmonic rotor",
+        "tower: 1 bracket {K_{m,n}, H}",
+    ] {
+        assert!(tower.contains(said), "{said}\n{tower}");
+    }
+    let svg = scratch_file("one-step.svg");
+    let plot = run_plot(
+        "1",
+        &[
+            "H",
+            "--time",
+            "1",
+            "--steps",
+            "1",
+            "--samples",
+            "1",
+            "-o",
+            svg.to_str().unwrap(),
+        ],
+        0,
+    );
+    assert!(plot.contains(" in 1 step of "), "{plot}");
+    let missing = superint(&["check", "systems/kepler.toml", "no-such-file.toml"]);
+    assert_eq!(missing.status.code(), Some(2));
+    let err = stderr(&missing);
+    assert!(
+        err.contains("1 of 2 files not checked (the error above)"),
+        "{err}"
+    );
+}
+
+/// A table's caption names a row and a column by letters the system does not use: the
+/// Hénon–Heiles family's parameters are `A`, `B`, `C`, so its tables (and a closure's) say
+/// `{F, G}`, in every format, and so do its generators' names where they are `F`, `G`.
+#[test]
+fn cli_table_placeholders_are_names_the_system_does_not_use() {
+    let henon = "systems/henon-heiles.toml";
+    let text = run(&["table", henon, "K", "S", "--no-timings"], 0);
+    assert!(
+        text.contains(
+            "{F, G} for the Hénon–Heiles family, too wide for a table: the brackets \
+                       that are not zero, F\nbefore G:"
+        ),
+        "{text}"
+    );
+    assert!(!text.contains("{A, B}"), "{text}");
+    let latex = run(&["table", henon, "--no-timings", "--format", "latex"], 0);
+    assert!(
+        latex.contains(
+            "$\\{F, G\\}$ for the H\\'{e}non--Heiles family, the brackets that are not \
+             zero, $F$ before $G$:"
+        ),
+        "{latex}"
+    );
+    let markdown = run(
+        &[
+            "table",
+            henon,
+            "K",
+            "S",
+            "--no-timings",
+            "--format",
+            "markdown",
+        ],
+        0,
+    );
+    assert!(
+        markdown.contains("*`{F, G}` for the Hénon–Heiles family (row `F`, column `G`)*"),
+        "{markdown}"
+    );
+    let json = run(&["table", henon, "K", "S", "--format", "json"], 0);
+    let json: Value = serde_json::from_str(&json).expect("JSON");
+    assert_eq!(
+        json["tables"][0]["caption"],
+        "{F, G} for the Hénon–Heiles family (row F, column G)"
+    );
+    let closure = run(
+        &[
+            "closure",
+            henon,
+            "H",
+            "K",
+            "--when",
+            "C = 2",
+            "--no-timings",
+        ],
+        0,
+    );
+    assert!(
+        closure.contains("{F, G} for the Hénon–Heiles family at C = 2 (row F, column G)\n"),
+        "{closure}"
+    );
+    // Where the generators take F and G too, the next pair.
+    let args = [
+        "closure", henon, "F", "G", "--define", "F=p_x", "--define", "G=p_y",
+    ];
+    let closure = run(&[&args[..], &["--no-timings"]].concat(), 0);
+    assert!(
+        closure.contains("{U, V} for the Hénon–Heiles family (row U, column V)\n"),
+        "{closure}"
+    );
+    // Where nothing is taken, the paper's letters.
+    let rotor = run(
+        &[
+            "table",
+            "systems/harmonic-rotor.toml",
+            "L",
+            "G1",
+            "G2",
+            "--no-timings",
+        ],
+        0,
+    );
+    assert!(
+        rotor.contains("{A, B} for the harmonic rotor (row A, column B)\n"),
+        "{rotor}"
     );
 }

@@ -1024,7 +1024,7 @@ value = "b*x*p_x + a*y*p_y"
         "{out}"
     );
     assert!(
-        out.contains("{A, B} for the unliftable at a = 1, b = 1\n"),
+        out.contains("{A, B} for the unliftable at a = 1, b = 1 (row A, column B)\n"),
         "{out}"
     );
     assert!(out.contains("  {U, V} = 4W at a = 1, b = 1 "), "{out}");
@@ -1078,7 +1078,7 @@ fn a_search_says_when_h_is_outside_its_space() {
     assert!(
         text.contains(
             "Note: H is not in this space (negative powers of x, which a Laurent space \
-             (--laurent) admits)"
+             (SearchSpace::laurent; on the command line, --laurent) admits)"
         ),
         "{text}"
     );
@@ -1240,42 +1240,105 @@ fn an_unlifted_search_says_how_to_see_every_value() {
     );
 }
 
-/// A generator named twice, or a definition given twice, is a mistake on the command line.
+/// A generator named twice, or a definition given twice, is a mistake on the command line; so
+/// is a defined name that is reserved or that the system has, refused before anything is
+/// read or computed (its value may be wrong too) and said as what it is.
 #[test]
 fn closure_refuses_a_generator_named_twice_or_a_name_the_system_has() {
-    for (args, message) in [
-        (vec!["L", "L"], "L is named twice among the generators"),
+    let harmonic = &["closure", "systems/harmonic-rotor.toml"][..];
+    let builtin = &["closure", "--system", "harmonic"][..];
+    for (command, args, message) in [
         (
-            vec!["L", "--define", "Q=x*p_y", "--define", "Q=x"],
-            "--define gives Q twice",
+            harmonic,
+            vec!["L", "L"],
+            "computing the closure: L is named twice among the generators",
+        ),
+        (
+            harmonic,
+            vec!["L", "--define", "W=x*p_y", "--define", "W=x"],
+            "--define gives W twice",
         ),
         // A defined name the system has would shadow it: `{L, P_x} = P_x` with `L = x p_x`
         // would read, in the file's names, as a claim about the angular momentum.
         (
+            harmonic,
             vec!["G1", "--define", "L=x*p_x"],
-            "--define L: L is already a name of the system (x p_y − y p_x); choose another",
+            "--define L: L is a function of the system; choose another name",
         ),
         (
+            harmonic,
             vec!["L", "--define", "H=p_x"],
-            "--define H: H is already a name of the system",
+            "--define H: 'H' is reserved for the Hamiltonian; choose another name",
         ),
         (
+            harmonic,
             vec!["L", "--define", "K_1_1=x"],
-            "--define K_1_1: K_1_1 is already a name of the system",
+            "--define K_1_1: K_1_1 is an instance of the family K; choose another name",
         ),
         (
+            harmonic,
+            vec!["L", "--define", "K=x"],
+            "--define K: K is a family of the system; choose another name",
+        ),
+        (
+            harmonic,
             vec!["L", "--define", "x=p_x"],
-            "--define x: x is a variable of the system; choose another name",
+            "--define x: x is a coordinate of the system; choose another name",
         ),
         (
+            harmonic,
+            vec!["L", "--define", "M=p_x"],
+            "--define M: M is a parameter of the system; choose another name",
+        ),
+        (
+            harmonic,
+            vec!["L", "--define", "ω=p_x"],
+            "--define ω: ω is a parameter of the system; choose another name",
+        ),
+        (
+            harmonic,
+            vec!["L", "--define", "p_theta=p_x"],
+            "--define p_theta: p_theta is a momentum of the system; choose another name",
+        ),
+        (
+            harmonic,
+            vec!["L", "--define", "Mx=p_x"],
+            "--define Mx: the system reads Mx as a product of its names; choose another name",
+        ),
+        (
+            harmonic,
+            vec!["L", "--define", "cos=)"],
+            "--define cos: 'cos' is reserved (i, cos, sin, exp, conj, re, im, rank); choose \
+             another name",
+        ),
+        (
+            harmonic,
+            vec!["L", "--define", "rank=x"],
+            "--define rank: 'rank' is reserved",
+        ),
+        (
+            harmonic,
             vec!["L", "--define", "2Q=p_x"],
-            "--define '2Q': a name is letters, digits and _, starting with a letter",
+            "--define '2Q': a name is letters, digits and '_', starting with a letter or '_'",
+        ),
+        (
+            builtin,
+            vec!["L", "--define", "P11=x"],
+            "--define P11: P11 is a function of the system; choose another name",
+        ),
+        (
+            builtin,
+            vec!["L", "--define", "theta=x"],
+            "--define theta: theta is an angle of the system; choose another name",
         ),
     ] {
-        let out = superint(&[&["closure", "systems/harmonic-rotor.toml"][..], &args].concat());
+        let out = superint(&[command, &args].concat());
         let stderr = String::from_utf8_lossy(&out.stderr);
         assert_eq!(out.status.code(), Some(2), "{stderr}");
-        assert!(stderr.contains(message), "{stderr}");
+        assert!(
+            stderr.starts_with(&format!("superint: error: {message}")),
+            "{message}\n{stderr}"
+        );
     }
 }
 

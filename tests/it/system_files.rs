@@ -216,7 +216,90 @@ fn base_with(from: &str, to: &str) -> Vec<u8> {
     BASE.replacen(from, to, 1).into_bytes()
 }
 
-/// Every kind of bad input: its file, where the message must point, and the command line.
+/// The display names a file may not give, on `BASE`'s function `A` (line 10): the case, the
+/// display as the file writes it, the column the message points at, and why.
+const BAD_DISPLAY_NAMES: [(&str, &str, usize, &str); 8] = [
+    (
+        "display name with markup",
+        "a^b^c",
+        13,
+        "'^' is markup in Markdown or LaTeX",
+    ),
+    (
+        "display name empty",
+        "",
+        11,
+        "this one is empty (leave display out to show the name)",
+    ),
+    (
+        "display name with a subscript of a subscript",
+        "a__b",
+        13,
+        SUBSCRIPT_OF_NOTHING,
+    ),
+    (
+        "display name ending in a subscript of nothing",
+        "A_x_",
+        15,
+        SUBSCRIPT_OF_NOTHING,
+    ),
+    (
+        "display name with a tab",
+        "A\t1",
+        13,
+        "U+0009 is an invisible or control character",
+    ),
+    // The right-to-left override turns the text after it around: the label `A2` would show
+    // as another; the excerpt shows it as U+FFFD.
+    (
+        "display name with a right-to-left override",
+        "A\u{202e}2",
+        13,
+        "U+202E is an invisible or control character",
+    ),
+    (
+        "display name escaping a zero-width space",
+        "A\\u200B",
+        12,
+        "U+200B is an invisible or control character",
+    ),
+    (
+        "display name beginning with a space",
+        " A",
+        12,
+        "it begins or ends with a space",
+    ),
+];
+
+/// Why `a__b` and `A_x_` are no display names.
+const SUBSCRIPT_OF_NOTHING: &str = "a subscript '_' stands between a name and its subscript \
+                                    (A_x), not at an end or beside another '_' or a space";
+
+/// Every kind of bad input: its file, where the message must point, and the command line
+/// ([`BAD_DISPLAY_NAMES`] among them).
+fn every_bad_input() -> Vec<(&'static str, Vec<u8>, String, Vec<&'static str>)> {
+    let displays = BAD_DISPLAY_NAMES.map(|(case, display, column, why)| {
+        (
+            case,
+            base_with(
+                "name = \"A\"",
+                &format!("name = \"A\"\ndisplay = \"{display}\""),
+            ),
+            format!(
+                "bad.toml:10:{column}: a display name is letters, digits, primes (G1'), a bar \
+                 (Z̄), subscripts (A_x), spaces and parentheses: {why}"
+            ),
+            vec!["check", "bad.toml"],
+        )
+    });
+    (bad_inputs().into_iter())
+        .map(|(case, file, message, args)| (case, file, message.to_string(), args))
+        .chain(displays)
+        .collect()
+}
+
+/// Every kind of bad input but display names: its file, where the message must point, and the
+/// command line.
 fn bad_inputs() -> Vec<(&'static str, Vec<u8>, &'static str, Vec<&'static str>)> {
     let check = vec!["check", "bad.toml"];
     vec![
@@ -339,16 +422,32 @@ fn bad_inputs() -> Vec<(&'static str, Vec<u8>, &'static str, Vec<&'static str>)>
             check.clone(),
         ),
         (
-            "display name with markup",
-            base_with("name = \"A\"", "name = \"A\"\ndisplay = \"a^b^c\""),
-            "bad.toml:10:11: a display name is letters, digits, primes (G1'), a bar (Z̄), \
-             subscripts (A_x), spaces and parentheses: '^' is markup in Markdown or LaTeX",
-            check.clone(),
-        ),
-        (
             "hamiltonian as a date",
             base_with("\"p_x^2/(2*M) + M*omega^2*x^2/2\"", "1979-05-27"),
             "bad.toml:2:15: hamiltonian is a string in quotes, not a date",
+            check.clone(),
+        ),
+        // A date inside an array or a table is said as a date too (serde said "invalid type:
+        // map"), of its key.
+        (
+            "a coordinate as a date",
+            base_with("coordinates = [\"x\"]", "coordinates = [1979-05-27]"),
+            "bad.toml:5:16: each of coordinates is a string in quotes, not a date",
+            check.clone(),
+        ),
+        (
+            "a claim's id as a date",
+            base_with("id = \"ladder\"", "id = 1979-05-27"),
+            "bad.toml:13:6: id is a string in quotes, not a date",
+            check.clone(),
+        ),
+        (
+            "a limit as a time",
+            base_with(
+                "[[function]]",
+                "[limits]\nmax_terms = 07:32:00\n\n[[function]]",
+            ),
+            "bad.toml:9:13: max_terms is a whole number, not a date",
             check.clone(),
         ),
         (
@@ -570,7 +669,7 @@ fn bad_inputs_get_file_line_column_and_exit_2() {
     let dir = scratch("bad-inputs");
     let mut all = String::new();
     let mut wrong = Vec::new();
-    for (name, content, expected, args) in bad_inputs() {
+    for (name, content, expected, args) in every_bad_input() {
         std::fs::write(dir.join("bad.toml"), &content).expect("write the file");
         let o = superint_in(&dir, &args);
         let stderr = text(&o.stderr);

@@ -9,7 +9,8 @@ pub enum EngineError {
     /// An algebraic operation failed (a limit, a division by a non-monomial, ...).
     #[error(transparent)]
     Algebra(#[from] AlgebraError),
-    /// An expression did not parse; the message carries line and column.
+    /// An expression did not parse; the message carries line and column, and the parse error
+    /// is its [`source`](std::error::Error::source).
     #[error("{}", .message)]
     Parse {
         /// The source text.
@@ -17,6 +18,7 @@ pub enum EngineError {
         /// The rendered message with line, column and caret.
         message: String,
         /// The parse error.
+        #[source]
         error: ParseError,
     },
     /// A name that the system does not define.
@@ -57,5 +59,29 @@ impl EngineError {
             message: error.render(source),
             error,
         }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use std::error::Error as _;
+
+    use super::*;
+
+    /// A wrapped error is the source of the one that wraps it: a parse error of either
+    /// construction, and through an algebra error nothing more (it wraps none).
+    #[test]
+    fn a_wrapped_error_is_the_source() {
+        let error = ParseError::new(trigpoly::Span::new(2, 3), "unknown name 'q'");
+        for wrapped in [
+            EngineError::parse("x + q", error.clone()),
+            error.clone().into(),
+        ] {
+            let source = wrapped.source().expect("a parse error has its source");
+            assert_eq!(source.downcast_ref::<ParseError>(), Some(&error));
+        }
+        let algebra = EngineError::from(AlgebraError::DivisionByZero);
+        assert!(algebra.source().is_none());
+        assert!(EngineError::UnknownName("q".into()).source().is_none());
     }
 }

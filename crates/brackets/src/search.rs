@@ -114,7 +114,8 @@ impl SearchSpace {
         }
         if let (false, Some(x)) = (self.laurent, negative(Coordinate)) {
             why.push(format!(
-                "negative powers of {x}, which a Laurent space (--laurent) admits"
+                "negative powers of {x}, which a Laurent space (SearchSpace::laurent; on the \
+                 command line, --laurent) admits"
             ));
         }
         for (what, kind, bound) in [
@@ -1818,10 +1819,12 @@ impl Round<'_> {
             let p = prefix.checked_mul(&g.expr).map_err(EngineError::from)?;
             spanning.formed += 1;
             if spanning.formed > spanning.max_products {
+                let n = spanning.max_products;
                 return Err(Stop::Failed(EngineError::Invalid(format!(
-                    "--new-only: more than {} products of integrals; search a smaller space, \
-                     or raise the limit with --max-products",
-                    spanning.max_products
+                    "more than {n} product{} of integrals, the limit (`SearchOptions::\
+                     max_products`; on the command line, --max-products): search a smaller \
+                     space, or raise the limit",
+                    if n == 1 { "" } else { "s" }
                 ))));
             }
             if i >= self.lo {

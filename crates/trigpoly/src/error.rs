@@ -28,6 +28,20 @@ pub enum AlgebraError {
         /// The limit in force.
         limit: u32,
     },
+    /// A trigonometric order beyond the degree limit: a term in `cos kθ`, `sin kθ` with `|k|`
+    /// past it (the exponent of `e^{iθ}`, as an angle is stored, said in the user's terms).
+    #[error(
+        "the trigonometric order in {angle} would reach {order} (terms in cos {order}{angle}, \
+         sin {order}{angle}), past the limit of {limit}"
+    )]
+    OrderTooLarge {
+        /// The angle.
+        angle: String,
+        /// The order that would result.
+        order: u64,
+        /// The limit in force.
+        limit: u32,
+    },
     /// A result with more terms than the limit allows.
     #[error(
         "the result would have more than {limit} term{} (the term limit); raise the limit or \

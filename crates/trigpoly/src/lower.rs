@@ -458,10 +458,7 @@ impl<C: Coefficient> Lower<'_, C> {
                     return Err(bad(e.span))
                 }
                 Some(v) => {
-                    let kind = match self.vars.variable(v).kind() {
-                        VarKind::Coordinate => "a coordinate",
-                        _ => "a momentum",
-                    };
+                    let kind = self.vars.variable(v).kind().described();
                     return Err(ParseError::new(
                         e.span,
                         format!(

@@ -20,6 +20,19 @@ pub enum VarKind {
     Angle,
 }
 
+impl VarKind {
+    /// The kind in words, with its article, as messages name it: `a coordinate`, `a
+    /// momentum`, `a parameter`, `an angle`.
+    pub fn described(self) -> &'static str {
+        match self {
+            VarKind::Coordinate => "a coordinate",
+            VarKind::Momentum => "a momentum",
+            VarKind::Parameter => "a parameter",
+            VarKind::Angle => "an angle",
+        }
+    }
+}
+
 /// A variable handle: its index in its `VarSet`, and which variables that set declares (sets
 /// that declare the same variables, whatever their limits, share handles). A handle used with a
 /// set that declares other variables is refused ([`VarSet::owns`]), where its index alone would
@@ -142,7 +155,8 @@ pub fn juxtaposition_is_ambiguous<'a>(
 pub struct Limits {
     /// The most terms any single result may have.
     pub max_terms: usize,
-    /// The largest absolute exponent of any variable.
+    /// The largest absolute exponent of any variable; for an angle, the largest trigonometric
+    /// order `k` of `cos kθ`, `sin kθ` (the exponent of `e^{iθ}`, as it is stored).
     pub max_degree: u32,
 }
 

@@ -708,10 +708,19 @@ fn sum_powers(vars: &VarSet, powers: &[(Var, i64)]) -> Result<Vec<i64>, AlgebraE
 pub(crate) fn check_exponent(vars: &VarSet, v: Var, e: i64) -> Result<(), AlgebraError> {
     let limit = vars.limits().max_degree;
     if e.unsigned_abs() > limit as u64 {
-        Err(AlgebraError::ExponentTooLarge {
-            var: vars.variable(v).unicode().to_string(),
-            exponent: e,
-            limit,
+        let variable = vars.variable(v);
+        let name = variable.unicode().to_string();
+        Err(match variable.kind() {
+            VarKind::Angle => AlgebraError::OrderTooLarge {
+                angle: name,
+                order: e.unsigned_abs(),
+                limit,
+            },
+            _ => AlgebraError::ExponentTooLarge {
+                var: name,
+                exponent: e,
+                limit,
+            },
         })
     } else {
         Ok(())

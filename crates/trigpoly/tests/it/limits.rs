@@ -132,9 +132,9 @@ fn exponent_overflow_in_products_and_powers_is_an_error() {
     );
     assert_eq!(
         G::exp_i(&vars, var(&vars, "theta"), -1001).map(|f| f.len()),
-        Err(AlgebraError::ExponentTooLarge {
-            var: "θ".into(),
-            exponent: -1001,
+        Err(AlgebraError::OrderTooLarge {
+            angle: "θ".into(),
+            order: 1001,
             limit: 1000
         })
     );
@@ -162,9 +162,9 @@ fn exponent_overflow_with_narrow_exponent_fields() {
     let e: G = p(&vars, "exp(i*100*theta)");
     assert_eq!(
         e.checked_pow(-2),
-        Err(AlgebraError::ExponentTooLarge {
-            var: "θ".into(),
-            exponent: -200,
+        Err(AlgebraError::OrderTooLarge {
+            angle: "θ".into(),
+            order: 200,
             limit: 127
         })
     );

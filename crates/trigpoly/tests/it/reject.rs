@@ -224,6 +224,17 @@ fn cases() -> Vec<Case> {
             "line 1, column 1: the exponent of x would reach 1500, past the limit of 1000\n  \
              (x^500)^3\n  ^^^^^^^^^",
         ),
+        // An angle is stored as e^{iθ}, but its order is said as cos kθ, sin kθ say it.
+        case(
+            Qi,
+            "sin(theta)^800*cos(theta)^800",
+            "the trigonometric order in θ would reach 1600 (terms in cos 1600θ, sin 1600θ), past \
+             the limit of 1000",
+            (1, 1),
+            "line 1, column 1: the trigonometric order in θ would reach 1600 (terms in cos 1600θ, \
+             sin 1600θ), past the limit of 1000\n  sin(theta)^800*cos(theta)^800\n  \
+             ^^^^^^^^^^^^^^^^^^^^^^^^^^^^^",
+        ),
         // A rational multiple that is not an integer.
         case(
             Qi,
