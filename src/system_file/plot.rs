@@ -93,7 +93,7 @@ impl LoadedSystem {
             Some(at) => self.parameter_values(at)?,
             None => (Values::new(), String::new()),
         };
-        let starts = from
+        let starts: Vec<Vec<(Var, StartValue)>> = from
             .iter()
             .map(|point| self.starting_point(point, &values))
             .collect::<Result<_, _>>()?;
@@ -101,9 +101,19 @@ impl LoadedSystem {
         if let Some(why) = self.unset("H", &hamiltonian) {
             return Err(FileError::new(ErrorKind::Expression, COMMAND_LINE, why));
         }
+        for start in &starts {
+            if let Some(why) = self.undefined_at("H", &hamiltonian, start) {
+                return Err(FileError::new(ErrorKind::Condition, COMMAND_LINE, why));
+            }
+        }
         let mut real_curves = Vec::new();
         for src in functions.curves {
             let (label, value, _) = self.drawable(src, &values)?;
+            for start in &starts {
+                if let Some(why) = self.undefined_at(&label, &value, start) {
+                    return Err(FileError::new(ErrorKind::Condition, COMMAND_LINE, why));
+                }
+            }
             if value.is_real() {
                 real_curves.push((label, value));
             } else {
@@ -249,6 +259,24 @@ impl LoadedSystem {
             ));
         }
         Ok(start)
+    }
+
+    /// Why `e` has no value at the starting point `start`, if it has none: it divides by a
+    /// coordinate or momentum that starts at 0 (the flow of `H` would start at a singularity,
+    /// and floating point would only say later that it left the finite numbers).
+    fn undefined_at(&self, what: &str, e: &Expr, start: &[(Var, StartValue)]) -> Option<String> {
+        // An angle's negative exponents are those of `e^{−ikθ}`, defined everywhere.
+        let vars = self.system.vars();
+        let (v, _) = start.iter().find(|(v, value)| {
+            vars.variable(*v).kind() != VarKind::Angle
+                && matches!(value, StartValue::Exact(q) if q.is_zero())
+                && e.low_degree(*v).is_some_and(|low| low < 0)
+        })?;
+        let name = self.display(*v);
+        Some(format!(
+            "{what} is not defined at the starting point: it divides by {name}, which starts at 0 \
+             (--from)"
+        ))
     }
 
     /// A curve (or what curves are drawn against) given on the command line: its label and

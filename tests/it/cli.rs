@@ -837,6 +837,41 @@ fn cli_plot_bad_arguments_exit_2_with_a_message() {
         all.extend(["-o", out]);
         assert_bad_usage(&all, message);
     }
+    // A start where H or a curve divides by zero is said as such; the flow ran off at once and
+    // floating point said it 'left the finite numbers near t = 0.001'.
+    let on_axis = "x = 0, y = 1, theta = 0, p_x = 0, p_y = 1/2, p_theta = 1";
+    assert_bad_usage(
+        &[
+            "plot",
+            "systems/harmonic-rotor.toml",
+            "L/x",
+            "--at",
+            at,
+            "--from",
+            on_axis,
+            "--time",
+            "1",
+            "-o",
+            out,
+        ],
+        "L/x is not defined at the starting point: it divides by x, which starts at 0 (--from)",
+    );
+    assert_bad_usage(
+        &[
+            "plot",
+            "systems/smorodinsky-winternitz-i.toml",
+            "H",
+            "--at",
+            "M = 1, alpha = 1, beta = 1, gamma = 1",
+            "--from",
+            "x = 1, y = 0, p_x = 0, p_y = 1",
+            "--time",
+            "1",
+            "-o",
+            out,
+        ],
+        "H is not defined at the starting point: it divides by y, which starts at 0 (--from)",
+    );
 }
 
 /// A Poincaré section of the oscillator's ellipse at `x = 0` (upward): every crossing is at
