@@ -310,13 +310,41 @@ fn proved_for_every(names: &str, fixed: &str) -> String {
     format!("proved for every {names}, at {fixed}")
 }
 
-/// Where a result holds: under the condition `when`, and also at the `fixed` parameter values
-/// when it was not lifted back to the parameters.
-fn held_at(when: &Option<String>, fixed: &str, unlifted: bool) -> Option<String> {
-    match (when, unlifted) {
-        (Some(when), true) => Some(format!("{when}, {fixed}")),
-        (None, true) => Some(fixed.to_string()),
-        (when, false) => when.clone(),
+/// Where the results of a search or a closure hold, as printed and as superint reads it back:
+/// under the condition, and also at the fixed parameter values for a result not lifted back
+/// to the parameters.
+struct HeldAt {
+    when: Option<(String, String)>,
+    fixed: (String, String),
+}
+
+impl HeldAt {
+    fn new(
+        condition: Option<&brackets::Condition>,
+        vars: &VarSet,
+        fixed: &[(Var, Rational)],
+    ) -> Self {
+        let ascii = fixed
+            .iter()
+            .map(|(v, x)| format!("{} = {x}", vars.variable(*v).name()))
+            .collect::<Vec<_>>()
+            .join(", ");
+        HeldAt {
+            when: condition.map(|c| (c.text.clone(), c.ascii())),
+            fixed: (parameter_text(vars, fixed), ascii),
+        }
+    }
+
+    /// Where a result holds (`unlifted`: only at the fixed values).
+    fn at(&self, unlifted: bool) -> Option<(String, String)> {
+        let (text, ascii) = &self.fixed;
+        match (&self.when, unlifted) {
+            (Some((when, when_ascii)), true) => {
+                Some((format!("{when}, {text}"), format!("{when_ascii}, {ascii}")))
+            }
+            (None, true) => Some(self.fixed.clone()),
+            (when, false) => when.clone(),
+        }
     }
 }
 
@@ -344,6 +372,7 @@ pub fn search_report(
     let vars = system.vars();
     let cond = r.condition.clone();
     let fixed = parameter_text(vars, &r.parameters);
+    let held = HeldAt::new(options.condition.as_ref(), vars, &r.parameters);
     let symbolic = r
         .module
         .as_ref()
@@ -595,11 +624,7 @@ pub fn search_report(
             f.proved_fixed,
             proof_note(f, &fixed, symbolic.as_deref()),
         );
-        c.condition = held_at(
-            &cond,
-            &fixed,
-            f.symbolic.is_none() && !r.parameters.is_empty(),
-        );
+        c = c.at(held.at(f.symbolic.is_none() && !r.parameters.is_empty()));
         let c = c.written(&format!("{{{}, H}} = 0", f.expr().render(Style::Ascii)));
         entries.push(Entry::Claim(c));
     }
@@ -700,7 +725,8 @@ pub fn closure_report(
     let note = |symbolic: bool| {
         unlifted(symbolic).then(|| "not lifted back to the parameters (no symbolic lift)".into())
     };
-    let condition = |symbolic: bool| held_at(&cond, &fixed, unlifted(symbolic));
+    let held = HeldAt::new(options.condition.as_ref(), system.vars(), &c.parameters);
+    let condition = |symbolic: bool| held.at(unlifted(symbolic));
     let results: Vec<bool> = c
         .brackets
         .iter()
@@ -838,7 +864,7 @@ pub fn closure_report(
                     true,
                     note(*symbolic),
                 );
-                claim.condition = condition(*symbolic);
+                claim = claim.at(condition(*symbolic));
                 let ascii = poly.render(Style::Ascii);
                 let claim = claim.written(&format!("{{{}, {}}} = {ascii}", c.names[a], c.names[b]));
                 entries.push(Entry::Claim(claim));
@@ -886,7 +912,7 @@ pub fn closure_report(
             true,
             note(rel.symbolic),
         );
-        claim.condition = condition(rel.symbolic);
+        claim = claim.at(condition(rel.symbolic));
         let claim = claim.written(&format!("{} = 0", rel.poly.render(Style::Ascii)));
         entries.push(Entry::Claim(claim));
     }

@@ -254,6 +254,9 @@ pub struct ClaimResult {
     pub written: Option<String>,
     /// Where it is claimed to hold (`p_θ = Iω`), if it is conditional.
     pub condition: Option<String>,
+    /// The condition as text that superint reads back (`p_theta = I*omega`), where the claim
+    /// has such a text ([`ClaimResult::written`]).
+    pub condition_ascii: Option<String>,
     /// Identity or nonvanishing.
     pub kind: ClaimKind,
     /// Whether the claim was proved.
@@ -278,6 +281,7 @@ impl ClaimResult {
             statement: statement.to_string(),
             written: None,
             condition: None,
+            condition_ascii: None,
             kind: ClaimKind::Identity,
             proved,
             expect: Expect::Proved,
@@ -297,6 +301,12 @@ impl ClaimResult {
     /// The same result with its text as a system file writes it.
     pub fn written(mut self, text: &str) -> Self {
         self.written = Some(text.to_string());
+        self
+    }
+
+    /// The same result under a condition, as printed and as superint reads it back.
+    pub fn at(mut self, condition: Option<(String, String)>) -> Self {
+        (self.condition, self.condition_ascii) = condition.unzip();
         self
     }
 
@@ -325,6 +335,7 @@ impl From<brackets::Verdict> for ClaimResult {
             statement: v.statement,
             written: None,
             condition: v.condition,
+            condition_ascii: None,
             kind: ClaimKind::Identity,
             proved: residual.is_none(),
             expect: Expect::Proved,

@@ -17,7 +17,11 @@
 //!                          system file: as the file writes it, or a found bracket, relation
 //!                          or integral in the file's names; null for the paper's claims and
 //!                          those a tower or a proof decides),
-//!                 "condition": string | null, "kind": "identity" | "nonvanishing",
+//!                 "condition": string | null   (unicode, as printed),
+//!                 "condition_ascii": string | null   (the condition as text superint reads
+//!                          back: `p_theta = I*omega`, with the fixed parameter values a
+//!                          result holds at; null where "ascii" is null),
+//!                 "kind": "identity" | "nonvanishing",
 //!                 "outcome": "proved" | "refuted",
 //!                 "expect": "proved" | "refuted"   (what the claim is meant to do),
 //!                 "meets_expectation": bool,
@@ -213,6 +217,7 @@ fn claim(c: &ClaimResult, section: u32, seconds: Value) -> Value {
         "statement": c.statement,
         "ascii": c.written,
         "condition": c.condition,
+        "condition_ascii": c.condition_ascii,
         "kind": match c.kind {
             ClaimKind::Identity => "identity",
             ClaimKind::Nonvanishing => "nonvanishing",

@@ -572,6 +572,7 @@ impl LoadedSystem {
                     statement: spec.statement.clone(),
                     written: Some(spec.written.clone()),
                     condition: spec.condition.as_ref().map(|c| c.text.clone()),
+                    condition_ascii: spec.condition.as_ref().map(Condition::ascii),
                     kind: ClaimKind::Identity,
                     proved,
                     expect: spec.expect,
@@ -613,6 +614,7 @@ impl LoadedSystem {
                     let set = |v: &Var| c.subs().iter().any(|(w, _)| w == v);
                     rank.certificate.point.retain(|(v, _)| !set(v));
                     rank.claim.condition = Some(c.text.clone());
+                    rank.claim.condition_ascii = Some(c.ascii());
                 }
                 Ok(CheckedClaim::Rank(Box::new(rank)))
             }

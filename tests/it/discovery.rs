@@ -1038,6 +1038,7 @@ value = "b*x*p_x + a*y*p_y"
         .find(|c| c["statement"] == "{U, V} = 4W")
         .expect("{U, V}");
     assert_eq!(uv["condition"], "a = 1, b = 1");
+    assert_eq!(uv["condition_ascii"], "a = 1, b = 1");
     // Every bracket is its own claim, B1, B2, …, as the relations are R1, R2, …
     let ids: Vec<&str> = claims.iter().filter_map(|c| c["id"].as_str()).collect();
     assert_eq!(v["summary"]["claims"].as_u64(), Some(ids.len() as u64));
@@ -1818,6 +1819,7 @@ fn a_searchs_labels_and_suggestions_do_not_repeat_the_systems_own() {
         .collect();
     assert_eq!(conditions[1], &serde_json::Value::Null);
     assert_eq!(conditions[2], "I1 = 2, I2 = 3, k = 1");
+    assert_eq!(v["claims"][2]["condition_ascii"], "I1 = 2, I2 = 3, k = 1");
     assert_eq!(v["searches"][0]["for_every_value"], 2);
 }
 

@@ -808,6 +808,20 @@ fn check_json_is_one_object_per_claim() {
         .expect("C16-off");
     assert_eq!(c16["expect"], "refuted");
     assert_eq!(c16["condition"], "p_θ = Iω");
+    // The condition as superint reads it back: the same surface, read again by `--when`.
+    assert_eq!(c16["condition_ascii"], "p_theta = omega*I");
+    let read_back = run(
+        &[
+            "expand",
+            "systems/harmonic-rotor.toml",
+            "p_theta",
+            "--when",
+            c16["condition_ascii"].as_str().expect("a string"),
+            "--no-timings",
+        ],
+        0,
+    );
+    assert!(read_back.contains("    p_θ = ωI\n"), "{read_back}");
     assert!(c16["residual"]
         .as_str()
         .expect("a residual")

@@ -114,6 +114,22 @@ impl Condition {
         &self.subs
     }
 
+    /// The substitution as text that superint reads back, with the variables' ASCII names:
+    /// `p_theta = I*omega`, pieces separated by commas.
+    pub fn ascii(&self) -> String {
+        self.subs
+            .iter()
+            .map(|(v, e)| {
+                format!(
+                    "{} = {}",
+                    e.vars().variable(*v).name(),
+                    e.render(Style::Ascii)
+                )
+            })
+            .collect::<Vec<_>>()
+            .join(", ")
+    }
+
     /// Applies the substitution.
     pub fn apply(&self, e: &Expr) -> Result<Expr, EngineError> {
         Ok(e.subst_many(&self.subs)?)
