@@ -200,11 +200,25 @@ fn verdict_line(out: &mut Vec<String>, c: &ClaimResult) {
     let tag = format!("[{} {}]", c.id, verdict(c));
     if width(&head) + 2 <= VERDICT_COLUMN {
         out.push(format!("{}{tag}", pad(&head, VERDICT_COLUMN)));
-    } else {
+    } else if width(&head) + 2 + width(&tag) <= WRAP {
         out.push(format!("{head}  {tag}"));
+    } else {
+        // A long statement wraps between its terms, the verdict after its last line.
+        let mut lines = wrap_sum(&head, WRAP, "      ");
+        let last = lines.pop().expect("at least one line");
+        if width(&last) + 2 + width(&tag) <= WRAP {
+            lines.push(format!("{last}  {tag}"));
+        } else {
+            lines.extend([last, format!("      {tag}")]);
+        }
+        out.extend(lines);
     }
     if let Some(r) = &c.residual {
-        out.push(format!("      residual lhs − rhs = {r}"));
+        out.extend(wrap_sum(
+            &format!("      residual lhs − rhs = {r}"),
+            WRAP,
+            "        ",
+        ));
     }
     if let Some(n) = &c.note {
         out.push(format!("      {n}"));
@@ -433,6 +447,43 @@ fn rank(out: &mut Vec<String>, r: &RankResult) {
 mod tests {
     use super::*;
     use trigpoly::Rational;
+
+    /// A claim and a residual longer than a line wrap between their terms, the verdict after
+    /// the claim's last line (both ran on as one line of a thousand characters).
+    #[test]
+    fn a_long_claim_and_its_residual_wrap() {
+        let vars = trigpoly::VarSet::builder()
+            .coordinate("x")
+            .momentum("p")
+            .build()
+            .unwrap();
+        let sum = (1..=40)
+            .map(|k| format!("{k}*x^{k}*p"))
+            .collect::<Vec<_>>()
+            .join(" + ");
+        let residual = trigpoly::Expr::parse(&vars, &sum).unwrap();
+        let mut c = ClaimResult::derived(
+            "long",
+            &format!("{} = 0", residual.render(Style::Unicode)),
+            false,
+            None,
+        );
+        c.residual = Some(residual.clone());
+        let mut out = Vec::new();
+        verdict_line(&mut out, &c);
+        assert!(out.len() > 4, "{out:?}");
+        assert!(out.iter().all(|l| width(l) <= WRAP), "{out:?}");
+        assert!(out.iter().any(|l| l.ends_with("[long REFUTED]")), "{out:?}");
+        let words = |s: &str| s.split_whitespace().collect::<Vec<_>>().join(" ");
+        let text = words(&out.join(" "));
+        assert!(
+            text.contains(&words(&format!(
+                "residual lhs − rhs = {}",
+                residual.render(Style::Unicode)
+            ))),
+            "{text}"
+        );
+    }
 
     /// A long sum breaks before its signs, not inside a monomial (`x² p_y⁴`), and not inside
     /// parentheses; a term wider than a line is wrapped at its spaces.
