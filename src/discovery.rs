@@ -448,7 +448,8 @@ pub fn search_report(
                 .collect();
             entries.push(Entry::Text(format!(
                 "What is not lifted holds at these values, where the system may have more \
-                 symmetry than in general (equal values can make it isotropic): for every \
+                 symmetry than in general (special values, equal or in a rational ratio, can add \
+                 integrals): for every \
                  value, keep them symbolic (`--symbolic {}`), or compare with other values \
                  (`--fix {}`).",
                 names.join(","),
