@@ -190,19 +190,27 @@ impl ClaimSpec {
             Some(w) => {
                 let condition = condition(file, w)?;
                 let vars = file.system.vars();
-                let on_phase_space = condition
-                    .subs()
-                    .iter()
-                    .find(|(v, _)| vars.variable(*v).kind() != VarKind::Parameter);
-                if let (ClaimForm::Rank { .. }, Some((v, _))) = (&form, on_phase_space) {
+                // A parameter set to a function of phase space (k = p_x) would change the
+                // Jacobian, not only evaluate it: its value, too, must be free of them.
+                let phase = |v: &Var| vars.variable(*v).kind() != VarKind::Parameter;
+                let on_phase_space =
+                    condition
+                        .subs()
+                        .iter()
+                        .find_map(|(v, value)| match phase(v) {
+                            true => Some(*v),
+                            false => vars.vars().find(|w| phase(w) && value.contains(*w)),
+                        });
+                if let (ClaimForm::Rank { .. }, Some(v)) = (&form, on_phase_space) {
                     return Err(source.error(
                         ErrorKind::Condition,
                         w.span(),
                         format!(
-                            "a rank claim's condition may set parameters only, not {}, {}: \
-                             the rank is that of the Jacobian on the whole phase space",
-                            vars.variable(*v).unicode(),
-                            vars.variable(*v).kind().described()
+                            "a rank claim's condition may set parameters only, to numbers or \
+                             other parameters, and it holds {}, {}: the rank is that of the \
+                             Jacobian on the whole phase space",
+                            vars.variable(v).unicode(),
+                            vars.variable(v).kind().described()
                         ),
                     ));
                 }
@@ -592,6 +600,8 @@ impl LoadedSystem {
                     .collect::<Result<_, _>>()?;
                 // A condition sets parameters only (checked when the claim was read).
                 if let Some(c) = &spec.condition {
+                    let sides: Vec<&Expr> = exprs.iter().collect();
+                    c.defined_on(&sides, "a function").map_err(|e| at(&e))?;
                     exprs = exprs
                         .iter()
                         .map(|e| c.apply(e))

@@ -504,7 +504,27 @@ fn bad_inputs() -> Vec<(&'static str, Vec<u8>, &'static str, Vec<&'static str>)>
                 "claim = \"{A, H} = i*omega*A\"",
                 "claim = \"rank(A, H) = 1\"\nwhen = \"x = 0\"",
             ),
-            "bad.toml:15:8: a rank claim's condition may set parameters only, not x",
+            "bad.toml:15:8: a rank claim's condition may set parameters only, to numbers or \
+             other parameters, and it holds x, a coordinate",
+            check.clone(),
+        ),
+        (
+            "rank claim with a parameter set to a momentum",
+            base_with(
+                "claim = \"{A, H} = i*omega*A\"",
+                "claim = \"rank(A, H) = 1\"\nwhen = \"omega = p_x\"",
+            ),
+            "bad.toml:15:8: a rank claim's condition may set parameters only, to numbers or \
+             other parameters, and it holds p_x, a momentum",
+            check.clone(),
+        ),
+        (
+            "rank claim with a parameter set to zero where it divides",
+            base_with(
+                "claim = \"{A, H} = i*omega*A\"",
+                "claim = \"rank(A, H) = 1\"\nwhen = \"M = 0\"",
+            ),
+            "bad.toml:14:9: the condition sets M = 0, but a function divides by M",
             check.clone(),
         ),
         (

@@ -43,7 +43,9 @@ pub struct RankCertificate {
 
 /// How many points the lower bound samples first.
 const FIRST_POINTS: usize = 4;
-/// How many more points it may try for a minor that is not identically zero.
+/// How many more it samples before any symbolic minor, while the rank is below the size.
+const EARLY_POINTS: usize = 4;
+/// How many more it may try when a larger minor does not vanish identically.
 const FURTHER_POINTS: usize = 64;
 /// Rational points of the unit circle used for angles.
 const CIRCLE: [(i64, i64, i64); 4] = [(3, 4, 5), (5, 12, 13), (8, 15, 17), (7, 24, 25)];
@@ -63,9 +65,14 @@ pub fn rank(space: &PhaseSpace, functions: &[Expr]) -> Result<RankCertificate, E
                 .collect::<Result<Vec<_>, _>>()
         })
         .collect::<Result<_, _>>()?;
-    // Lower bound: the best rank over a few exact points.
+    // Lower bound: the best rank over a few exact points, then over a few more off the line
+    // of the first four (cheap beside any symbolic minor).
+    let full = functions.len().min(coords.len());
     let mut best: Option<RankCertificate> = None;
-    for index in 0..FIRST_POINTS {
+    for index in 0..FIRST_POINTS + EARLY_POINTS {
+        if index >= FIRST_POINTS && best.as_ref().is_some_and(|b| b.rank == full) {
+            break;
+        }
         let cert = certificate_at(&jac, &coords, sample_point(space, index)?)?;
         if best.as_ref().is_none_or(|b| cert.rank > b.rank) {
             best = Some(cert);
@@ -73,17 +80,18 @@ pub fn rank(space: &PhaseSpace, functions: &[Expr]) -> Result<RankCertificate, E
     }
     let mut cert = best.expect("at least one point");
     // Upper bound: every larger minor vanishes identically. A larger minor that does not is a
-    // polynomial nonzero somewhere: a further point where it is nonzero raises the lower bound
-    // (the first points can all lie where it vanishes: they are on one line).
-    while cert.rank < functions.len().min(coords.len()) {
-        let Some(minor) = nonvanishing_minor(&jac, cert.rank + 1, &mut cert.upper)? else {
+    // polynomial nonzero somewhere, so the Jacobian's rank is larger at almost every point:
+    // further points are tried until one shows it, which raises the lower bound.
+    let further = FIRST_POINTS + EARLY_POINTS..FIRST_POINTS + EARLY_POINTS + FURTHER_POINTS;
+    while cert.rank < full {
+        if nonvanishing_minor(&jac, cert.rank + 1, &mut cert.upper)?.is_none() {
             break;
-        };
+        }
         let mut raised = None;
-        for index in FIRST_POINTS..FIRST_POINTS + FURTHER_POINTS {
-            let (point, values) = sample_point(space, index)?;
-            if !minor.eval(&point)?.is_zero() {
-                raised = Some(certificate_at(&jac, &coords, (point, values))?);
+        for index in further.clone() {
+            let higher = certificate_at(&jac, &coords, sample_point(space, index)?)?;
+            if higher.rank > cert.rank {
+                raised = Some(higher);
                 break;
             }
         }
@@ -91,11 +99,12 @@ pub fn rank(space: &PhaseSpace, functions: &[Expr]) -> Result<RankCertificate, E
             Some(higher) => cert = higher,
             None => {
                 return Err(EngineError::Invalid(format!(
-                    "rank is above {} (a {}-minor is not identically zero), but the minor \
-                     vanished at all {} sampled points",
+                    "rank is above {} (a {}-minor is not identically zero), but the Jacobian's \
+                     rank was at most {} at all {} sampled points",
                     cert.rank,
                     cert.rank + 1,
-                    FIRST_POINTS + FURTHER_POINTS
+                    cert.rank,
+                    further.end
                 )))
             }
         }
@@ -117,8 +126,9 @@ fn sample_point(
             let (c, s, r) = if index < FIRST_POINTS {
                 CIRCLE[(k + index) % CIRCLE.len()]
             } else {
-                // (m² − 1, 2m, m² + 1): a rational point of the circle for every m ≥ 2.
-                let m = ((k + 3 * index) % 11 + 2) as i64;
+                // (m² − 1, 2m, m² + 1): a rational point of the circle for every m ≥ 2, a
+                // new one at each point.
+                let m = (index + 2 * k + 2) as i64;
                 (m * m - 1, 2 * m, m * m + 1)
             };
             point = point.with_angle(v, Rational::new(c, r), Rational::new(s, r))?;
