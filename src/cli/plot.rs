@@ -13,6 +13,7 @@ use superint::report::counted;
 use superint::system_file::{Against, LimitsOverride, PlotFunctions};
 use superint::trajectory::chart::{self, reduce_angle, Curve, Style};
 use superint::trajectory::{short, Flow, Method, Numeric};
+use trigpoly::VarKind;
 
 use super::input::load_system;
 use super::limits::LimitsArgs;
@@ -290,7 +291,8 @@ pub fn run(job: &PlotJob) -> anyhow::Result<bool> {
         };
         let mut start = vec![0.0; file.system.vars().len()];
         for (v, value) in point {
-            start[v.index()] = value.to_f64().with_context(|| {
+            let angle = file.system.vars().variable(*v).kind() == VarKind::Angle;
+            start[v.index()] = value.to_f64(angle).with_context(|| {
                 let name = file.system.vars().variable(*v).unicode();
                 format!("the starting value of {name}{mark}")
             })?;

@@ -43,12 +43,22 @@ pub enum StartValue {
 }
 
 impl StartValue {
-    /// The nearest `f64` (for `q·π`, the nearest to `q` times `π`'s).
-    pub fn to_f64(&self) -> Result<f64, crate::trajectory::TrajectoryError> {
+    /// The nearest `f64` (for `q·π`, the nearest to `q` times `π`'s). The value of an angle
+    /// (`angle`) is first reduced exactly modulo `2π`: `θ = 99999999999999999999π` is `π`, where
+    /// rounding `q` first would turn it into an angle of no meaning.
+    pub fn to_f64(&self, angle: bool) -> Result<f64, crate::trajectory::TrajectoryError> {
         match self {
             StartValue::Exact(q) => crate::trajectory::nearest_f64(q),
             StartValue::PiTimes(q) => {
-                crate::trajectory::nearest_f64(q).map(|x| x * std::f64::consts::PI)
+                let q = match angle {
+                    true => {
+                        let two = Rational::from(2);
+                        let turns = Rational::from((q / &two).to_big_rational().floor());
+                        q - &(&turns * &two)
+                    }
+                    false => q.clone(),
+                };
+                crate::trajectory::nearest_f64(&q).map(|x| x * std::f64::consts::PI)
             }
         }
     }
@@ -349,5 +359,27 @@ fn number(
     match value.as_constant() {
         Some(c) if c.is_real() => Ok(c.re),
         _ => Err(rhs.error(source, ErrorKind::Condition, rhs.trimmed_span(), why)),
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::StartValue;
+    use trigpoly::Rational;
+
+    /// An angle's multiple of π is reduced exactly modulo 2π before rounding: an odd multiple
+    /// far past what `f64` holds exactly is still π (rounded first, it was an angle of no
+    /// meaning); a coordinate's is not reduced.
+    #[test]
+    fn an_angles_multiple_of_pi_is_reduced_exactly() {
+        let huge: Rational = "99999999999999999999".parse().unwrap();
+        let theta = StartValue::PiTimes(huge.clone()).to_f64(true).unwrap();
+        assert_eq!(theta, std::f64::consts::PI);
+        let minus_quarter = StartValue::PiTimes(Rational::new(-1, 4))
+            .to_f64(true)
+            .unwrap();
+        assert_eq!(minus_quarter, 1.75 * std::f64::consts::PI);
+        let x = StartValue::PiTimes(huge).to_f64(false).unwrap();
+        assert!(x > 3.1e20, "{x}");
     }
 }
