@@ -227,9 +227,11 @@ impl LoadedSystem {
                 .checked_sub(&lambda.checked_mul(&base).map_err(|e| at(&e.into()))?)
                 .map_err(|e| at(&e.into()))?
                 .is_zero();
-            let name = self.pretty(&drop_ones(&base_tree));
+            let base_tree = drop_ones(&base_tree);
+            // A sum is parenthesized as the factor it is: `(i) (p_x + ix)`.
+            let (name, factor) = (self.pretty(&base_tree), self.pretty_factor(&base_tree));
             facts.push(Fact {
-                statement: format!("{{{name}, H}} = ({lambda}) {name}"),
+                statement: format!("{{{name}, H}} = ({lambda}) {factor}"),
                 holds,
                 found: (!holds).then_some(flow),
             });

@@ -752,6 +752,22 @@ fn rank_claims_under_a_parameter_condition() {
     assert!(!out.contains("a = 11/2"), "the point leaves out a: {out}");
 }
 
+/// A proof's computed fact parenthesizes a base function that is a sum: `(i) p_x + ix` read as
+/// `i p_x + ix`, where the bracket is `i(p_x + ix)`.
+#[test]
+fn tower_proof_facts_parenthesize_a_sum() {
+    let dir = scratch("tower-sum");
+    let file = "hamiltonian = \"p_x^2/2 + x^2/2\"\n[phase_space]\ncoordinates = [\"x\"]\n\
+                [[family]]\nname = \"K\"\nvalue = \"(p_x + i*x)^m*(p_x - i*x)^n\"\n\
+                eigenvalue = \"i*(m - n)\"\n";
+    std::fs::write(dir.join("sum.toml"), file).expect("write");
+    let o = superint_in(&dir, &["tower", "--system", "sum.toml", "--max", "2"]);
+    assert_eq!(o.status.code(), Some(0), "{}", text(&o.stderr));
+    let out = text(&o.stdout);
+    assert!(out.contains("{p_x + ix, H} = (i) (p_x + ix)"), "{out}");
+    assert!(out.contains("{p_x − ix, H} = (−i) (p_x − ix)"), "{out}");
+}
+
 #[test]
 fn check_exit_status_follows_expectations() {
     let dir = scratch("expectations");
