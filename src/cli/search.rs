@@ -13,7 +13,7 @@ use superint::discovery::{
 };
 use superint::render::render;
 use superint::report::Report;
-use superint::system_file::{reserved, what_is, LoadedSystem};
+use superint::system_file::{reserved, split_top_level, what_is, LoadedSystem};
 use trigpoly::Expr;
 
 use super::limits::LimitsArgs;
@@ -270,7 +270,13 @@ fn search_and_print(job: &SearchJob) -> anyhow::Result<bool> {
     options.exact_complement = a.exact_complement;
     options.max_products = usize::try_from(a.max_products).unwrap_or(usize::MAX);
     if let Some(known) = &a.known {
-        for k in known.split(',').map(str::trim).filter(|k| !k.is_empty()) {
+        // Commas inside braces belong to an instance (`P_{1,1}`).
+        let pieces = split_top_level(known, ',');
+        for k in pieces
+            .into_iter()
+            .map(|r| known[r].trim())
+            .filter(|k| !k.is_empty())
+        {
             let e = subject.parse(k).map_err(|e| anyhow!("--known: {e}"))?;
             options.known.push((k.to_string(), e));
         }

@@ -56,7 +56,7 @@ pub use plot::{Against, PlotFunctions, PlotInput, StartValue};
 pub use reports::{
     bracket_report, check_each, check_report, expand_report, rank_report, table_report,
 };
-pub use text::{Source, Text};
+pub use text::{split_top_level, Source, Text};
 pub use tower::family_tower_report;
 
 use std::collections::HashMap;

@@ -156,7 +156,7 @@ impl Text {
 
 /// Splits `s` at the top-level (outside parentheses and braces) occurrences of `sep`: the
 /// byte ranges of the pieces.
-pub(crate) fn split_top_level(s: &str, sep: char) -> Vec<Range<usize>> {
+pub fn split_top_level(s: &str, sep: char) -> Vec<Range<usize>> {
     let mut depth = 0i32;
     let mut pieces = Vec::new();
     let mut start = 0;

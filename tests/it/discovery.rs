@@ -721,6 +721,39 @@ fn henon_heiles_with_c_symbolic_has_only_the_energy() {
     );
 }
 
+/// `--known` splits at the commas between integrals, not inside an instance's braces
+/// (`P_{1,1}` was cut into `P_{1` and `1}`).
+#[test]
+fn known_integrals_may_be_instances_with_braces() {
+    let out = superint(&[
+        "search",
+        "systems/harmonic-rotor.toml",
+        "--when",
+        "p_theta = I*omega",
+        "--momenta-degree",
+        "2",
+        "--positions-degree",
+        "2",
+        "--trig-degree",
+        "2",
+        "--new-only",
+        "--known",
+        "P_{1,1}, Q_{1,1}",
+        "--no-timings",
+    ]);
+    let stdout = String::from_utf8_lossy(&out.stdout);
+    assert_eq!(
+        out.status.code(),
+        Some(0),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+    assert!(
+        stdout.contains("Known integrals in the space: H, L, G1, G2, P_{1,1}, Q_{1,1}."),
+        "{stdout}"
+    );
+}
+
 #[test]
 fn bad_search_arguments_exit_2_with_a_message() {
     for (args, message) in [
