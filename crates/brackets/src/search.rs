@@ -1363,6 +1363,22 @@ fn new_integrals(
                     0..=200 => format!("{{{name}, H}} = {shown}"),
                     _ => format!("{{{name}, H}} ≠ 0 ({} terms)", flow.len()),
                 };
+                // Where the bracket was taken: under the condition, at the fixed values.
+                let vars = system.vars();
+                let at: Vec<String> = options
+                    .condition
+                    .iter()
+                    .map(|c| c.text.clone())
+                    .chain(
+                        parameters
+                            .iter()
+                            .map(|(v, x)| format!("{} = {x}", vars.variable(*v).unicode())),
+                    )
+                    .collect();
+                let shown = match at.is_empty() {
+                    true => shown,
+                    false => format!("{shown} at {}", at.join(", ")),
+                };
                 return Err(EngineError::Invalid(format!(
                     "the known integral {name} is not an integral: {shown}"
                 )));
