@@ -191,6 +191,12 @@ impl Subject {
                  or '_'"
             );
         }
+        if let Some(c) = trigpoly::latex_unwritable(name) {
+            bail!(
+                "{option} {name}: LaTeX has no letter '{c}' ({}); choose another name",
+                trigpoly::LATEX_LETTERS
+            );
+        }
         if let Some(why) = reserved(name) {
             bail!("{option} {name}: {why}; choose another name");
         }

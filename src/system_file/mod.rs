@@ -145,7 +145,12 @@ pub fn what_is(system: &System, families: &[Family], name: &str) -> Option<Strin
     if name == "H" {
         return Some("the Hamiltonian".into());
     }
-    if system.functions().iter().any(|f| f.name == name) {
+    // By its name or as it is shown (`Ω` for a function `Omega`).
+    if system
+        .functions()
+        .iter()
+        .any(|f| f.name == name || f.display == name)
+    {
         return Some("a function of the system".into());
     }
     if families.iter().any(|f| f.name == name) {

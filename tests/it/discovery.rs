@@ -1299,6 +1299,17 @@ fn closure_refuses_a_generator_named_twice_or_a_name_the_system_has() {
             vec!["G1", "--define", "L=x*p_x"],
             "--define L: L is a function of the system; choose another name",
         ),
+        // A function by the name it is shown by (Ω for Omega), and a letter LaTeX has not.
+        (
+            harmonic,
+            vec!["G1", "--define", "Ω=L"],
+            "--define Ω: Ω is a function of the system; choose another name",
+        ),
+        (
+            harmonic,
+            vec!["G1", "--define", "é=L"],
+            "--define é: LaTeX has no letter 'é'",
+        ),
         (
             harmonic,
             vec!["L", "--define", "H=p_x"],
