@@ -144,11 +144,18 @@ impl ClaimSpec {
                     _ => None,
                 };
                 let Some(expected) = expected else {
+                    let why = match &rhs_tree.kind {
+                        ExprKind::Integer(_) => {
+                            "the right side of a rank claim is a whole number no larger than the \
+                             number of coordinates and momenta"
+                        }
+                        _ => "the right side of a rank claim is a whole number, such as 5",
+                    };
                     return Err(rhs.error(
                         source,
                         ErrorKind::Claim,
                         rhs_tree.span,
-                        "the right side of a rank claim is a whole number, such as 5",
+                        why,
                     ));
                 };
                 // Family instances written K_{1,1} are K_1_1 in the rewritten text, at the

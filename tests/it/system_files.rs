@@ -528,6 +528,12 @@ fn bad_inputs() -> Vec<(&'static str, Vec<u8>, &'static str, Vec<&'static str>)>
             check.clone(),
         ),
         (
+            "rank claim with a rank past any dimension",
+            base_with("{A, H} = i*omega*A", "rank(A, H) = 99999999999999999999999"),
+            "bad.toml:14:23: the right side of a rank claim is a whole number no larger than",
+            check.clone(),
+        ),
+        (
             "rank claim with a non-integer rank",
             base_with("{A, H} = i*omega*A", "rank(A, H) = two"),
             "bad.toml:14:23: the right side of a rank claim is a whole number",
