@@ -84,7 +84,10 @@ pub struct SearchArgs {
     /// generated when it is a sum of the file's named integrals, --known ones, constants and
     /// products of integrals of lower grade (with --symbolic, parameter multiples too); a grade
     /// is the degree in the coordinates and momenta together, then the trigonometric order
-    /// (where cos θ and p are integrals, cos 2θ = 2cos²θ − 1 and p cos θ are generated).
+    /// (where cos θ and p are integrals, cos 2θ = 2cos²θ − 1 and p cos θ are generated). A
+    /// product of integrals of the same grade is not counted: with three rotors, cos(a − c)
+    /// is new beside cos(a − b) and cos(b − c), though it is a polynomial in them and their
+    /// sines.
     #[arg(long)]
     new_only: bool,
     /// With --new-only, decide what is new by elimination over Q alone (slower). By default it
