@@ -37,7 +37,8 @@
 //!                 "failures": [[m, n]], "outcome", "seconds" } ],
 //!   "proofs": [ { "section", "title", "facts": [ { "statement", "holds" } ],
 //!                 "leibniz_check", "lemma", "conclusion", "claims": [ids], "outcome" } ],
-//!   "ranks": [ { "section", "id", "functions", "coordinates", "expected", "rank",
+//!   "ranks": [ { "section", "id", "functions", "coordinates", "expected",
+//!                "condition", "condition_ascii" (parameters the rank is taken at, or null), "rank",
 //!                "minor": { "rows": [names], "columns": [names], "value": string },
 //!                "point": [ { "variable", "value" } | { "variable", "cos", "sin" } ],
 //!                "upper_bound": { "kind": "size" | "vanishing_minors", "minors": int | null },
@@ -241,6 +242,8 @@ fn rank(r: &RankResult, section: u32) -> Value {
         "functions": r.functions,
         "coordinates": r.coordinates.iter().map(|&v| name(v)).collect::<Vec<_>>(),
         "expected": r.expected,
+        "condition": r.claim.condition,
+        "condition_ascii": r.claim.condition_ascii,
         "rank": c.rank,
         "minor": {
             "rows": r.minor_functions(),

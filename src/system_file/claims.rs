@@ -151,12 +151,7 @@ impl ClaimSpec {
                         }
                         _ => "the right side of a rank claim is a whole number, such as 5",
                     };
-                    return Err(rhs.error(
-                        source,
-                        ErrorKind::Claim,
-                        rhs_tree.span,
-                        why,
-                    ));
+                    return Err(rhs.error(source, ErrorKind::Claim, rhs_tree.span, why));
                 };
                 // Family instances written K_{1,1} are K_1_1 in the rewritten text, at the
                 // same places.

@@ -756,6 +756,12 @@ fn rank_claims_under_a_parameter_condition() {
     assert!(out.contains("[anisotropic refuted, as expected]"), "{out}");
     assert!(out.contains("the rank is 2"), "{out}");
     assert!(!out.contains("a = 11/2"), "the point leaves out a: {out}");
+    let o = superint_in(&dir, &["check", "rank.toml", "--format", "json"]);
+    let v: serde_json::Value = serde_json::from_slice(&o.stdout).expect("JSON");
+    let isotropic = &v["ranks"][0];
+    assert_eq!(isotropic["condition"], "a = 1");
+    assert_eq!(isotropic["condition_ascii"], "a = 1");
+    assert_eq!(isotropic["rank"], 1);
 }
 
 /// A proof's computed fact parenthesizes a base function that is a sum: `(i) p_x + ix` read as
