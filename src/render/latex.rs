@@ -354,14 +354,17 @@ fn rank(out: &mut Vec<String>, r: &RankResult) {
         .iter()
         .map(|p| format!("${p}$"))
         .collect();
-    out.push(format!(
-        r"\item $\ge {}$: the minor with rows {} and columns {} is ${} \neq 0$ at {}",
-        c.rank,
-        fns.join(", "),
-        cols.join(", "),
-        number(&c.minor_value).replace('*', " "),
-        at.join(", ")
-    ));
+    // Rank 0: every function has a zero gradient, and there is no minor to show.
+    if c.rank > 0 {
+        out.push(format!(
+            r"\item $\ge {}$: the minor with rows {} and columns {} is ${} \neq 0$ at {}",
+            c.rank,
+            fns.join(", "),
+            cols.join(", "),
+            number(&c.minor_value).replace('*', " "),
+            at.join(", ")
+        ));
+    }
     out.push(format!(
         r"\item $\le {}$: {}",
         c.rank,

@@ -155,6 +155,10 @@ fn rank(r: &RankResult) -> String {
     let rows = r.minor_functions();
     let cols: Vec<&str> = r.minor_coordinates().iter().map(|v| v.unicode()).collect();
     let point: Vec<String> = point(r, Style::Unicode).iter().map(|p| code(p)).collect();
+    if c.rank == 0 {
+        // Every function has a zero gradient: no minor to show.
+        return [claim(&r.claim), format!("  - ≤ 0: {}", upper_bound(r))].join("\n");
+    }
     [
         claim(&r.claim),
         format!(

@@ -428,6 +428,11 @@ fn rank(out: &mut Vec<String>, r: &RankResult) {
     let c = &r.certificate;
     let rows = r.minor_functions();
     let cols: Vec<&str> = r.minor_coordinates().iter().map(|v| v.unicode()).collect();
+    if c.rank == 0 {
+        // Every function has a zero gradient: no minor to show.
+        out.push(format!("      ≤ 0: {}", upper_bound(r)));
+        return;
+    }
     out.extend(wrap(
         &format!(
             "      ≥ {}: the minor ∂({})/∂({}) = {} ≠ 0 at",

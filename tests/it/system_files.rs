@@ -780,6 +780,27 @@ fn tower_proof_facts_parenthesize_a_sum() {
     assert!(out.contains("{p_x − ix, H} = (−i) (p_x − ix)"), "{out}");
 }
 
+/// Rank 0 has no minor to show: its certificate is the vanishing gradients alone (it read
+/// "the minor ∂()/∂() = 1 ≠ 0").
+#[test]
+fn rank_zero_shows_no_empty_minor() {
+    for format in ["text", "markdown", "latex"] {
+        let out = run(
+            &[
+                "rank",
+                "systems/harmonic-rotor.toml",
+                "M*omega",
+                "--format",
+                format,
+                "--no-timings",
+            ],
+            0,
+        );
+        assert!(!out.contains("∂()") && !out.contains("rows  and"), "{out}");
+        assert!(out.contains("0: every 1 "), "{out}");
+    }
+}
+
 #[test]
 fn check_exit_status_follows_expectations() {
     let dir = scratch("expectations");
