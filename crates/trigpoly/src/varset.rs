@@ -699,8 +699,15 @@ pub const RESERVED: &[&str] = &["i", "cos", "sin", "exp", "conj", "re", "im"];
 /// combining macron) and primes: `A_x` → (`A_x`, `A_{x}`), `G1'` → (`G1'`, `G_{1}'`), `Z̄` →
 /// (`Z̄`, `\bar{Z}`), `omega` → (`ω`, `\omega`). Anything else has no such forms.
 pub fn display_forms(display: &str) -> Option<(String, String)> {
-    let marked = display.trim_end_matches('\'');
-    let primes = &display[marked.len()..];
+    let spelled: String = display
+        .chars()
+        .flat_map(|c| match unbarred(c) {
+            Some(base) => [base, '\u{304}'].into_iter().take(2),
+            None => [c, c].into_iter().take(1),
+        })
+        .collect();
+    let marked = spelled.trim_end_matches('\'');
+    let primes = &spelled[marked.len()..];
     let (base, bar) = match marked.strip_suffix('\u{304}') {
         Some(base) => (base, true),
         None => (marked, false),
@@ -720,6 +727,14 @@ pub fn display_forms(display: &str) -> Option<(String, String)> {
         ),
         false => (format!("{unicode}{primes}"), format!("{latex}{primes}")),
     })
+}
+
+/// The letter under a precomposed bar, `Ā` → `A`, which a display name may have as `A` and a
+/// combining macron (U+0304).
+pub fn unbarred(c: char) -> Option<char> {
+    const BARRED: &str = "ĀāĒēĪīŌōŪūȲȳ";
+    let k = BARRED.chars().position(|b| b == c)?;
+    "AaEeIiOoUuYy".chars().nth(k)
 }
 
 /// Whether `s` can name a variable or a function: letters, digits and `_`, not starting with
@@ -1019,6 +1034,8 @@ mod tests {
             ("Z_x̄", r"\bar{Z_{x}}"),
             ("A\u{304}_x_y'", r"\bar{A}_{x,y}'"),
             ("ω₁\u{304}", r"\bar{\omega_{1}}"),
+            ("Ā_x", r"\bar{A}_{x}"),
+            ("ē_x", r"\bar{e}_{x}"),
         ] {
             assert_eq!(
                 display_forms(display).map(|f| f.1),
