@@ -319,7 +319,14 @@ fn translate(s: &str) -> String {
         }
     }
     let mut out = String::new();
-    let mut braces: Vec<bool> = Vec::new();
+    // Each open brace: whether it is a script's group (not an escaped brace), and whether a
+    // subscript's.
+    let mut braces: Vec<(bool, bool)> = Vec::new();
+    // Where the last subscript group ended in `out`: a second subscript right after it, the
+    // indices of a family named `K₁` or `K_a` (`K₁_{1,2}`), joins it after a semicolon,
+    // `K_{1;1,2}`, as LaTeX refuses a double subscript.
+    let mut subscript_end = None;
+    let mut joining = false;
     let mut k = 0;
     while k < toks.len() {
         match &toks[k] {
@@ -354,22 +361,39 @@ fn translate(s: &str) -> String {
                 }
                 if !d.is_empty() {
                     out.push_str(&format!("_{{{d}}}"));
+                    subscript_end = Some(out.len());
                 }
             }
             Tok::Char(c, accent) => {
                 let c = *c;
                 match c {
+                    '{' if joining => {
+                        braces.push((true, true));
+                        joining = false;
+                    }
                     '{' => {
                         let group = out.ends_with('_') || out.ends_with('^');
-                        braces.push(group);
+                        braces.push((group, out.ends_with('_')));
                         out.push_str(if group { "{" } else { r"\{" });
                     }
                     '}' => match braces.pop() {
-                        Some(true) => out.push('}'),
+                        Some((true, subscript)) => {
+                            out.push('}');
+                            if subscript {
+                                subscript_end = Some(out.len());
+                            }
+                        }
                         _ => out.push_str(r"\}"),
                     },
                     '_' | '^' => {
-                        out.push(c);
+                        let join = c == '_' && subscript_end == Some(out.len());
+                        match join {
+                            true => {
+                                out.pop();
+                                out.push(';');
+                            }
+                            false => out.push(c),
+                        }
                         // `p_x`, `a_ij`, `A^m`: an unbraced script takes a run of letters; a
                         // name with more scripts, `p_x_0` or `P_1_1`, takes them as one
                         // subscript, `p_{x,0}` (LaTeX refuses a double subscript).
@@ -385,8 +409,18 @@ fn translate(s: &str) -> String {
                             }
                             k += 1;
                         }
-                        if !pieces.is_empty() {
-                            out.push_str(&format!("{{{}}}", pieces.join(",")));
+                        let pieces = pieces.join(",");
+                        match (join, pieces.is_empty()) {
+                            (false, true) => {}
+                            (false, false) => out.push_str(&format!("{{{pieces}}}")),
+                            (true, false) => out.push_str(&format!("{pieces}}}")),
+                            (true, true) if toks.get(k + 1) == Some(&Tok::Char('{', None)) => {
+                                joining = true;
+                            }
+                            (true, true) => out.push('}'),
+                        }
+                        if c == '_' && !pieces.is_empty() {
+                            subscript_end = Some(out.len());
                         }
                     }
                     _ if SUPERSCRIPTS.contains(c) || c == '⁻' || SUBSCRIPTS.contains(c) => {
@@ -405,7 +439,18 @@ fn translate(s: &str) -> String {
                             }
                             k += 1;
                         }
-                        out.push_str(&format!("{}{{{run}}}", if sup { '^' } else { '_' }));
+                        match sup || subscript_end != Some(out.len()) {
+                            true => {
+                                out.push_str(&format!("{}{{{run}}}", if sup { '^' } else { '_' }))
+                            }
+                            false => {
+                                out.pop();
+                                out.push_str(&format!(";{run}}}"));
+                            }
+                        }
+                        if !sup {
+                            subscript_end = Some(out.len());
+                        }
                         continue;
                     }
                     _ => push_char(&mut out, c, *accent),
@@ -415,31 +460,53 @@ fn translate(s: &str) -> String {
         k += 1;
     }
     // Close anything left open so the output always balances.
-    while let Some(group) = braces.pop() {
+    while let Some((group, _)) = braces.pop() {
         out.push_str(if group { "}" } else { "" });
     }
     out.trim_end().to_string()
 }
 
 /// The LaTeX of what an unbraced script at the start of `toks` takes, and how many tokens: a
-/// word, a run of digits, or one character other than `{`.
+/// name (a run of words and of Greek letters, `ħ` and `ℓ`, each with the subscript digits after
+/// it as its own subscript: `p_q₁` is `p_{q_{1}}`, `p_ω₁₂` is `p_{\omega_{12}}`), a run of
+/// digits, or one character other than `{`.
 fn script_piece(toks: &[Tok]) -> Option<(String, usize)> {
-    match toks.first()? {
-        Tok::Word(w, d) => {
-            // Subscript digits after the piece are its own subscript: `p_q₁` is `p_{q_{1}}`.
-            let lowered: String = toks[1..]
-                .iter()
-                .map_while(|t| match t {
-                    Tok::Char(c, None) => SUBSCRIPTS.chars().position(|s| s == *c),
-                    _ => None,
-                })
-                .map(|k| k.to_string())
-                .collect();
-            match lowered.len() {
-                0 => Some((format!("{w}{d}"), 1)),
-                n => Some((format!("{w}{d}_{{{lowered}}}"), 1 + n)),
+    let lowered = |toks: &[Tok]| -> String {
+        toks.iter()
+            .map_while(|t| match t {
+                Tok::Char(c, None) => SUBSCRIPTS.chars().position(|s| s == *c),
+                _ => None,
+            })
+            .map(|d| d.to_string())
+            .collect()
+    };
+    let mut out = String::new();
+    let mut k = 0;
+    loop {
+        match toks.get(k) {
+            Some(Tok::Word(w, d)) => out.push_str(&format!("{w}{d}")),
+            Some(Tok::Char(c, None)) if greek(*c).is_some() || matches!(c, 'ħ' | 'ℓ') => {
+                push_char(&mut out, *c, None);
             }
+            // Subscript digits right after `_` (`x_₁`) are the subscript's digits.
+            Some(Tok::Char(c, None)) if k == 0 && SUBSCRIPTS.contains(*c) => {
+                out = lowered(toks);
+                k = out.len();
+                continue;
+            }
+            _ => break,
         }
+        k += 1;
+        let digits = lowered(&toks[k..]);
+        if !digits.is_empty() {
+            out = format!("{}_{{{digits}}}", out.trim_end());
+            k += digits.len();
+        }
+    }
+    if k > 0 {
+        return Some((out, k));
+    }
+    match toks.first()? {
         Tok::Char(c, None) if c.is_ascii_digit() && !matches!(toks.get(1), Some(Tok::Word(..))) => {
             let digits: String = toks
                 .iter()
@@ -663,6 +730,18 @@ mod tests {
                 r"\operatorname{Re}(A_{x}^{5}\bar{A}_{y}^{3})",
             ),
             ("cos θ", r"\cos \theta"),
+            // A Greek letter, ħ or ℓ in a script takes its subscript digits, as a word does.
+            ("{ω₁₂, p_ω₁₂} = 1", r"\{\omega _{12}, p_{\omega_{12}}\} = 1"),
+            (
+                "p_ℓ₁ + p_ħ₁ + p_θ₁₂",
+                r"p_{\ell_{1}} + p_{\hbar_{1}} + p_{\theta_{12}}",
+            ),
+            ("p_ωx + p_xω", r"p_{\omega x} + p_{x\omega }"),
+            ("x_₁ + x_₁₂y", "x_{1} + x_{12y}"),
+            // A family named with a subscript of its own: its indices join it after `;`.
+            ("K₁_{1,2} + K1_{3,4}", "K_{1;1,2} + K_{1;3,4}"),
+            ("K_a_{m,n} = K̄_{m,n}", r"K_{a;m,n} = \bar{K}_{m,n}"),
+            ("K₁_1_2, x₁₂", "K_{1;1,2}, x_{12}"),
             ("50% & #1 $", r"50\% \& \#1 \$"),
         ] {
             assert_eq!(math(u), t, "{u}");

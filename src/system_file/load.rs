@@ -10,8 +10,8 @@ use std::sync::Mutex;
 use brackets::{PhaseSpace, System};
 use toml::Spanned;
 use trigpoly::{
-    is_identifier, latex_unwritable, AlgebraError, Expr, Limits, Span, VarSet, LATEX_LETTERS,
-    RESERVED,
+    is_identifier, latex_unwritable, unbarred, AlgebraError, Expr, Limits, Span, VarSet,
+    LATEX_LETTERS, RESERVED,
 };
 
 use super::claims::ClaimSpec;
@@ -24,6 +24,17 @@ use super::{Family, LimitsOverride, LoadedSystem, DEFAULT_MAX_DEGREE, DEFAULT_MA
 /// The largest degree limit a file or the command line may set (what a 16-bit exponent field
 /// holds; the packing widens its fields as the limit asks).
 const MAX_DEGREE_CEILING: u32 = 32_767;
+
+/// Why a letter cannot be in a name or a display name, when LaTeX output could not write it
+/// ([`latex_unwritable`]): `LaTeX has no letter 'é' (…)`; a character other than a letter (a
+/// mark over a letter, a sign, one that prints nothing) is said by its code point.
+fn unwritable_letter(c: char) -> Option<String> {
+    latex_unwritable(c.encode_utf8(&mut [0; 4]))?;
+    Some(match c.is_alphabetic() {
+        true => format!("LaTeX has no letter '{c}' ({LATEX_LETTERS})"),
+        false => format!("LaTeX has no letter U+{:04X} ({LATEX_LETTERS})", c as u32),
+    })
+}
 
 /// Whether `c` shows nothing, or moves or turns the text around it: a control character
 /// (a tab), white space other than the space (no-break, line separator), or a format character
@@ -349,6 +360,19 @@ impl<'a> Builder<'a> {
             if c == ' ' && (before.is_none() || after.is_none()) {
                 return refuse(here, "it begins or ends with a space");
             }
+            if c == '\u{304}' || unbarred(c).is_some() {
+                let letter = c != '\u{304}' || before.is_some_and(|b| b.is_alphanumeric());
+                if !letter || after.is_some_and(|a| !matches!(a, '_' | '\'' | ' ' | '(' | ')')) {
+                    return refuse(
+                        here,
+                        "a bar (U+0304) stands right after the letter or digit it is drawn over, \
+                         at the end of the name or before its '_', a prime, a space or a \
+                         parenthesis (Z̄, Z̄_x)",
+                    );
+                }
+            } else if let Some(why) = unwritable_letter(c) {
+                return refuse(here, &why);
+            }
             let stands = |c: Option<char>| c.is_some_and(|c| c != '_' && c != ' ');
             if c == '_' && !(stands(before) && stands(after)) {
                 return refuse(
@@ -395,11 +419,11 @@ impl<'a> Builder<'a> {
                 ),
             ));
         }
-        if let Some(c) = latex_unwritable(name) {
+        if let Some(why) = latex_unwritable(name).and_then(unwritable_letter) {
             return Err(self.error(
                 ErrorKind::Name,
                 span,
-                format!("'{name}' cannot name {what}: LaTeX has no letter '{c}' ({LATEX_LETTERS})"),
+                format!("'{name}' cannot name {what}: {why}"),
             ));
         }
         if let Some(why) = reserved(name) {
@@ -590,6 +614,15 @@ impl<'a> Builder<'a> {
                         ErrorKind::Family,
                         index_span,
                         format!("'{idx}' cannot name an index: use a plain name such as m or n"),
+                    ));
+                }
+                if let Some(why) = latex_unwritable(idx).and_then(unwritable_letter) {
+                    let list = f.indices.as_ref().map(|l| l.get_ref());
+                    let span = list.map_or(index_span.clone(), |l| l[k].span());
+                    return Err(self.error(
+                        ErrorKind::Name,
+                        span,
+                        format!("'{idx}' cannot name an index: {why}"),
                     ));
                 }
                 if let Some((other, _)) = self.names.get(idx) {

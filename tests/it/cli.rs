@@ -248,6 +248,37 @@ fn compile_within(doc: &str, slack_pt: f64) {
     }
 }
 
+/// A system whose names LaTeX writes only with care: see [`cli_latex_of_every_command_compiles`].
+const LATEX_NAMES: &str = r#"name = "LaTeX names"
+hamiltonian = "(p_a + p_b)^2/2 + p_ω₁₂^2/2 + ω₁₂^2/2 + p_ℓ₁*ħ₁ + p_θ₁₂*θ₁₂ + ωx*x₁y"
+[phase_space]
+coordinates = ["ω₁₂", "ℓ₁", "ħ₁", "θ₁₂", "ωx", "x₁y"]
+angles = ["a", "b"]
+[[function]]
+name = "L"
+value = "p_a + p_b"
+[[function]]
+name = "A"
+display = "Z̄_x"
+value = "p_a*cos(a - b)"
+[[family]]
+name = "K₁"
+value = "(p_ω₁₂ + i*ω₁₂)^m*(p_ω₁₂ - i*ω₁₂)^n"
+eigenvalue = "i*(m - n)"
+[[family]]
+name = "K_a"
+value = "(p_ω₁₂ + i*ω₁₂)^m*(p_ω₁₂ - i*ω₁₂)^n*sin(a - b)"
+[[family]]
+name = "K1"
+value = "K_a_{m,n}*x₁y"
+[[claim]]
+claim = "{ω₁₂, p_ω₁₂} = 1"
+[[claim]]
+claim = "{cos(a)*ωx, p_a + p_ωx} = -sin(a)*ωx + cos(a)"
+[[claim]]
+claim = "{K₁_1_2, H} = -i*K₁_1_2"
+"#;
+
 /// Every command that writes LaTeX writes a document that compiles, for every system file and
 /// for names with several subscripts (`p_x_0`, `P_1_1`) or subscript digits (`q₁`, `p_q₁`), `ħ`,
 /// accented names (`Hénon`) and claim ids that LaTeX would read as mathematics (`wrong_sign`).
@@ -307,6 +338,32 @@ fn cli_latex_of_every_command_compiles() {
     let out = superint(&["check", file.to_str().expect("a path"), "--format", "latex"]);
     assert_eq!(out.status.code(), Some(1), "{}", stderr(&out));
     docs.push(stdout(&out));
+    // Angles with Latin names (`\cosa` was one undefined command), Greek letters, ħ and ℓ with
+    // subscript digits and inside a word (`p_{\omega }_{12}` was a double subscript), families
+    // named with a subscript of their own (`K_{1}_{1,2}`), a bar before a subscript (`Z̄_x` was
+    // written as it is in a table's entries).
+    let names = dir.join("names.toml");
+    std::fs::write(&names, LATEX_NAMES).expect("write names.toml");
+    let names = names.to_str().expect("a path");
+    for args in [
+        &["check", names][..],
+        &[
+            "expand",
+            names,
+            "K₁_1_2",
+            "K_a_1_1",
+            "K1_2_1",
+            "cos(a)*sin(b)",
+        ],
+        &["bracket", names, "cos(a)", "p_a"],
+        &["table", names, "L", "A", "K₁_1_2"],
+        &[&["search", names][..], &crate::DEGREE_ONE].concat(),
+    ] {
+        docs.push(run(
+            &[args, &["--format", "latex", "--no-timings"]].concat(),
+            0,
+        ));
+    }
     let _ = std::fs::remove_dir_all(&dir);
     // Nothing runs far off the page: a wide table is a list, a long claim breaks and its
     // verdict moves below it (a table ran 980 pt too wide).

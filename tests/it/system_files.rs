@@ -218,7 +218,7 @@ fn base_with(from: &str, to: &str) -> Vec<u8> {
 
 /// The display names a file may not give, on `BASE`'s function `A` (line 10): the case, the
 /// display as the file writes it, the column the message points at, and why.
-const BAD_DISPLAY_NAMES: [(&str, &str, usize, &str); 8] = [
+const BAD_DISPLAY_NAMES: [(&str, &str, usize, &str); 16] = [
     (
         "display name with markup",
         "a^b^c",
@@ -269,7 +269,55 @@ const BAD_DISPLAY_NAMES: [(&str, &str, usize, &str); 8] = [
         12,
         "it begins or ends with a space",
     ),
+    (
+        "display name with a Cyrillic letter",
+        "Lщ",
+        13,
+        "LaTeX has no letter 'щ' ",
+    ),
+    (
+        "display name with an accented letter",
+        "Lé",
+        13,
+        "LaTeX has no letter 'é' ",
+    ),
+    (
+        "display name with an emoji",
+        "😀",
+        12,
+        "LaTeX has no letter U+1F600 ",
+    ),
+    (
+        "display name with an arrow over a letter",
+        "L\u{20d7}",
+        13,
+        "LaTeX has no letter U+20D7 ",
+    ),
+    (
+        "display name with a blank braille pattern",
+        "a\u{2800}b",
+        13,
+        "LaTeX has no letter U+2800 ",
+    ),
+    ("display name a lone bar", "\u{304}", 12, BAR),
+    (
+        "display name with a bar over a subscript",
+        "a_\u{304}",
+        14,
+        BAR,
+    ),
+    (
+        "display name with a bar inside a word",
+        "Z\u{304}x",
+        13,
+        BAR,
+    ),
 ];
+
+/// Why a bar stands where it does.
+const BAR: &str = "a bar (U+0304) stands right after the letter or digit it is drawn over, at \
+                   the end of the name or before its '_', a prime, a space or a parenthesis \
+                   (Z̄, Z̄_x)";
 
 /// Why `a__b` and `A_x_` are no display names.
 const SUBSCRIPT_OF_NOTHING: &str = "a subscript '_' stands between a name and its subscript \
@@ -325,6 +373,21 @@ fn bad_inputs() -> Vec<(&'static str, Vec<u8>, &'static str, Vec<&'static str>)>
             "a letter LaTeX has not",
             base_with("parameters = [\"M\", ", "parameters = [\"M\", \"é\", "),
             "bad.toml:6:20: 'é' cannot name a parameter: LaTeX has no letter 'é'",
+            check.clone(),
+        ),
+        (
+            "a letter LaTeX has not after a Greek letter",
+            base_with("parameters = [\"M\", ", "parameters = [\"M\", \"θé\", "),
+            "bad.toml:6:20: 'θé' cannot name a parameter: LaTeX has no letter 'é'",
+            check.clone(),
+        ),
+        (
+            "family index with a letter LaTeX has not",
+            base_with(
+                "[[claim]]",
+                "[[family]]\nname = \"K\"\nindices = [\"m\", \"щ\"]\nvalue = \"A^m*x^щ\"\n\n[[claim]]",
+            ),
+            "bad.toml:14:17: 'щ' cannot name an index: LaTeX has no letter 'щ'",
             check.clone(),
         ),
         (

@@ -150,14 +150,67 @@ impl Entry {
 }
 
 /// `G1'` → `G_{1}'`, `Z̄` → `\bar{Z}`, `L` → `L`, `P'_{1,1}` → `P'_{1,1}`: the name as
-/// [`trigpoly::display_forms`] writes it in LaTeX, before any subscript of its own (a family
-/// instance's indices); a name it has no form for stays as it is.
+/// [`trigpoly::display_forms`] writes it in LaTeX (word by word in a name of several words,
+/// `Re ω` → `\mathrm{Re} \omega`), before any subscript of its own (a family instance's
+/// indices), which joins a subscript the name ends with after `;` (`K₁_{1,2}` → `K_{1;1,2}`:
+/// LaTeX refuses a double subscript).
 pub fn latex_name(name: &str) -> String {
     let (head, subscript) = name.split_at(name.find("_{").unwrap_or(name.len()));
-    match trigpoly::display_forms(head) {
-        Some((_, latex)) => format!("{latex}{subscript}"),
-        None => name.to_string(),
+    let head = match trigpoly::display_forms(head) {
+        Some((_, latex)) => latex,
+        None => words_in_latex(head),
+    };
+    let Some(indices) = subscript.strip_prefix("_{") else {
+        return head;
+    };
+    let bare = head.trim_end_matches('\'');
+    let primes = &head[bare.len()..];
+    match own_subscript(bare) {
+        Some(own) => format!(
+            "{}{own};{indices}{primes}",
+            &bare[..bare.len() - own.len() - 1]
+        ),
+        None => format!("{head}{subscript}"),
     }
+}
+
+/// A name that is no display name as a whole (`Re ω`), each word as
+/// [`trigpoly::display_forms`] writes it, the rest as it is.
+fn words_in_latex(name: &str) -> String {
+    let in_word = |c: char| c.is_alphanumeric() || matches!(c, '_' | '\'' | '\u{304}');
+    let mut out = String::new();
+    let mut rest = name;
+    while let Some(c) = rest.chars().next() {
+        let end = rest
+            .find(|d| in_word(d) != in_word(c))
+            .unwrap_or(rest.len());
+        let (part, after) = rest.split_at(end);
+        match trigpoly::display_forms(part).filter(|_| in_word(c)) {
+            Some((_, latex)) => out.push_str(&latex),
+            None => out.push_str(part),
+        }
+        rest = after;
+    }
+    out
+}
+
+/// The subscript a name's LaTeX ends with, open: `K_{1}` → `_{1` (`None` for `\bar{K}`).
+fn own_subscript(latex: &str) -> Option<&str> {
+    let body = latex.strip_suffix('}')?;
+    let mut depth = 0;
+    for (k, c) in body.char_indices().rev() {
+        match c {
+            '}' => depth += 1,
+            '{' if depth > 0 => depth -= 1,
+            '{' => {
+                return latex[..k]
+                    .ends_with('_')
+                    .then(|| &latex[k - 1..latex.len() - 1])
+            }
+            _ => {}
+        }
+    }
+    None
 }
 
 /// Writes `target` as `Σ c_k F_k` with `c_k` Laurent polynomials in the parameters, if possible.
@@ -313,7 +366,13 @@ mod tests {
             ("Z̄'", r"\bar{Z}'"),
             ("P_{1,1}", "P_{1,1}"),
             ("K̄'_{2,3}", r"\bar{K}'_{2,3}"),
-            ("Re K", "Re K"),
+            ("Re K", r"\mathrm{Re} K"),
+            ("Z̄_x", r"\bar{Z}_{x}"),
+            ("ω (x)", r"\omega (x)"),
+            ("K₁_{1,2}", "K_{1;1,2}"),
+            ("K1'_{1,2}", "K_{1;1,2}'"),
+            ("K_a_{m,n}", "K_{a;m,n}"),
+            ("K_{a}", "K_{a}"),
         ] {
             assert_eq!(latex_name(name), latex, "{name}");
         }

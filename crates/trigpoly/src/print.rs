@@ -186,7 +186,7 @@ fn write_exponent(out: &mut String, e: i64, style: Style) {
 }
 
 /// Appends formatted text (writing to a `String` cannot fail).
-fn write_display(out: &mut String, args: fmt::Arguments<'_>) {
+pub(crate) fn write_display(out: &mut String, args: fmt::Arguments<'_>) {
     let _ = fmt::Write::write_fmt(out, args);
 }
 
@@ -282,7 +282,9 @@ fn write_trig_factors(out: &mut String, product: &mut Product, names: &Names, tr
             }
             out.push_str(fun);
             write_exponent(out, e.into(), style);
-            if style == Style::Unicode && e == 1 {
+            // `cos θ`; `\cos a`, where `\cosa` would be one undefined command.
+            let letter = name.starts_with(|c: char| c.is_ascii_alphanumeric());
+            if e == 1 && (style == Style::Unicode || letter) {
                 out.push(' ');
             }
             out.push_str(name);

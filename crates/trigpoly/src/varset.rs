@@ -5,6 +5,7 @@ use std::fmt;
 use std::sync::Mutex;
 
 use crate::error::AlgebraError;
+use crate::print::write_display;
 
 /// What a variable is in a phase space; only `Angle` changes the algebra.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
@@ -698,13 +699,24 @@ pub const RESERVED: &[&str] = &["i", "cos", "sin", "exp", "conj", "re", "im"];
 /// combining macron) and primes: `A_x` → (`A_x`, `A_{x}`), `G1'` → (`G1'`, `G_{1}'`), `Z̄` →
 /// (`Z̄`, `\bar{Z}`), `omega` → (`ω`, `\omega`). Anything else has no such forms.
 pub fn display_forms(display: &str) -> Option<(String, String)> {
-    let marked = display.trim_end_matches('\'');
-    let primes = &display[marked.len()..];
+    let spelled: String = display
+        .chars()
+        .flat_map(|c| match unbarred(c) {
+            Some(base) => [base, '\u{304}'].into_iter().take(2),
+            None => [c, c].into_iter().take(1),
+        })
+        .collect();
+    let marked = spelled.trim_end_matches('\'');
+    let primes = &spelled[marked.len()..];
     let (base, bar) = match marked.strip_suffix('\u{304}') {
         Some(base) => (base, true),
         None => (marked, false),
     };
-    if !is_identifier(base) {
+    // A bar may also end a piece before a subscript, `Z̄_x`, which [`Piece::of`] writes.
+    let bars_end_pieces = base.split('_').all(|p| {
+        !p.trim_end_matches('\u{304}').contains('\u{304}') && p.matches('\u{304}').count() <= 1
+    });
+    if !bars_end_pieces || !is_identifier(&base.replace('\u{304}', "")) {
         return None;
     }
     let (unicode, latex) = render_name(base);
@@ -715,6 +727,14 @@ pub fn display_forms(display: &str) -> Option<(String, String)> {
         ),
         false => (format!("{unicode}{primes}"), format!("{latex}{primes}")),
     })
+}
+
+/// The letter under a precomposed bar, `Ā` → `A`, which a display name may have as `A` and a
+/// combining macron (U+0304).
+pub fn unbarred(c: char) -> Option<char> {
+    const BARRED: &str = "ĀāĒēĪīŌōŪūȲȳ";
+    let k = BARRED.chars().position(|b| b == c)?;
+    "AaEeIiOoUuYy".chars().nth(k)
 }
 
 /// Whether `s` can name a variable or a function: letters, digits and `_`, not starting with
@@ -834,6 +854,40 @@ const LETTERS: &[(char, &str)] = &[('ħ', r"{\hbar}"), ('ℓ', r"{\ell}")];
 /// The subscript digits `₀`–`₉`.
 const SUBSCRIPT_DIGITS: &str = "₀₁₂₃₄₅₆₇₈₉";
 
+/// A piece's LaTeX letter by letter, for a word no rule above writes whole: each Greek letter,
+/// `ħ` and `ℓ` as its command in braces (`ωx` → `{\omega}x`), a run of subscript digits as a
+/// subscript (`x₁y` → `x_{1}y`; as digits after `_` or at the start, where there is nothing to
+/// hang a subscript on: `x_₁` → `x_{1}`), anything else as it is, which
+/// [`latex_unwritable`] then names.
+fn letter_by_letter(p: &str) -> String {
+    let mut body = String::new();
+    let mut digits = String::new();
+    let mut chars = p.chars().peekable();
+    while let Some(c) = chars.next() {
+        if let Some(k) = SUBSCRIPT_DIGITS.chars().position(|d| d == c) {
+            digits.push(char::from(b'0' + k as u8));
+            if chars.peek().is_some_and(|n| SUBSCRIPT_DIGITS.contains(*n)) {
+                continue;
+            }
+            match body.is_empty() || body.ends_with('_') {
+                true => body.push_str(&digits),
+                false => write_display(&mut body, format_args!("_{{{digits}}}")),
+            }
+            digits.clear();
+            continue;
+        }
+        let greek = GREEK.iter().find(|g| g.1.chars().eq([c])).map(|g| g.2);
+        match greek.or_else(|| LETTERS.iter().find(|l| l.0 == c).map(|l| l.1)) {
+            Some(tex) if tex.starts_with('\\') => {
+                write_display(&mut body, format_args!("{{{tex}}}"))
+            }
+            Some(tex) => body.push_str(tex),
+            None => body.push(c),
+        }
+    }
+    body
+}
+
 /// One piece of a name between underscores, as text and as LaTeX.
 struct Piece {
     unicode: String,
@@ -873,16 +927,14 @@ impl Piece {
                 return Piece::symbol(&format!("{uni}{digits}"), &format!("{tex} {digits}"));
             }
         }
-        let body: String = p
-            .chars()
-            .map(|c| match LETTERS.iter().find(|l| l.0 == c) {
-                Some((_, tex)) => tex.to_string(),
-                None => c.to_string(),
-            })
-            .collect();
+        // A bar over the piece: `Z̄` → `\bar{Z}` (display names only: no variable's name has one).
+        if let Some(base) = p.strip_suffix('\u{304}').filter(|b| !b.is_empty()) {
+            let base = Piece::of(base);
+            return Piece::symbol(p, &format!("\\bar{{{}}}", base.latex()));
+        }
         Piece {
             unicode: p.to_string(),
-            body,
+            body: letter_by_letter(p),
             word: p.chars().count() > 1,
         }
     }
@@ -942,6 +994,64 @@ mod tests {
             .parameter("ħ")
             .build()
             .expect("names LaTeX can write");
+    }
+
+    /// Greek letters, `ħ` and `ℓ` inside a word are written letter by letter, so that only a
+    /// letter LaTeX has no command for is refused, and named (`θé` blamed 'θ', and `ωx` was
+    /// refused although `omegax` is not); subscript digits inside a word are a subscript.
+    #[test]
+    fn letters_inside_a_word_are_written_one_by_one() {
+        for (name, latex) in [
+            ("ωx", r"\mathrm{{\omega}x}"),
+            ("αβ", r"\mathrm{{\alpha}{\beta}}"),
+            ("Ωa", r"\mathrm{{\Omega}a}"),
+            ("aħℓ", r"\mathrm{a{\hbar}{\ell}}"),
+            ("p_ωx", r"p_{{\omega}x}"),
+            ("x₁y", r"\mathrm{x_{1}y}"),
+            ("x₁₂y₃z", r"\mathrm{x_{12}y_{3}z}"),
+            ("x_₁", r"x_{1}"),
+            ("x_₁y", r"x_{1y}"),
+        ] {
+            assert_eq!(render_name(name), (name.into(), latex.into()), "{name}");
+            assert_eq!(latex_unwritable(name), None, "{name}");
+        }
+        assert_eq!(latex_unwritable("θé"), Some('é'));
+        assert_eq!(latex_unwritable("ωщx"), Some('щ'));
+        for name in ["ωx", "αβ", "Ωa", "x₁y", "x_₁"] {
+            VarSet::builder().coordinate(name).build().expect(name);
+        }
+        let err = VarSet::builder().coordinate("θé").build().unwrap_err();
+        assert!(err.to_string().contains("LaTeX has no letter 'é'"), "{err}");
+    }
+
+    /// A bar over a display name's head, before its subscript, is LaTeX's `\bar` over the head
+    /// (`Z̄_x` has no other LaTeX, and was written as it is); a bar elsewhere in a piece has none.
+    #[test]
+    fn a_bar_ends_a_piece_of_a_display_name() {
+        for (display, latex) in [
+            ("Z̄", r"\bar{Z}"),
+            ("Z̄_x", r"\bar{Z}_{x}"),
+            ("Z_x̄", r"\bar{Z_{x}}"),
+            ("A\u{304}_x_y'", r"\bar{A}_{x,y}'"),
+            ("ω₁\u{304}", r"\bar{\omega_{1}}"),
+            ("Ā_x", r"\bar{A}_{x}"),
+            ("ē_x", r"\bar{e}_{x}"),
+        ] {
+            assert_eq!(
+                display_forms(display).map(|f| f.1),
+                Some(latex.into()),
+                "{display}"
+            );
+        }
+        for display in [
+            "\u{304}",
+            "Z̄x_y",
+            "ω\u{304}₁",
+            "a_\u{304}x",
+            "Z\u{304}\u{304}_x",
+        ] {
+            assert_eq!(display_forms(display), None, "{display}");
+        }
     }
 
     #[test]

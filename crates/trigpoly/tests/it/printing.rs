@@ -192,6 +192,27 @@ fn p11_prints_as_in_the_paper_with_momenta_declared_first() {
     );
 }
 
+/// An angle with a Latin name is spaced from `\cos` (`\cosa` and `\sint` are undefined
+/// commands); a power's braces or a command's backslash need no space.
+#[test]
+fn latin_angles_are_spaced_from_cos_and_sin_in_latex() {
+    let vars = VarSet::builder()
+        .angle("a")
+        .angle("t")
+        .angle("theta")
+        .build()
+        .unwrap();
+    prints(
+        &vars,
+        "cos(a)*sin(t) + cos(a)^2*sin(theta)",
+        [
+            "cos a sin t + cos²a sin θ",
+            r"\cos a \sin t + \cos^{2}a \sin\theta",
+            "cos(a)*sin(t) + cos(a)^2*sin(theta)",
+        ],
+    );
+}
+
 #[test]
 fn trigonometric_normal_form_a_of_cos_plus_sin_times_b_of_cos() {
     let vars = plane();
