@@ -860,7 +860,10 @@ fn rank_zero_shows_no_empty_minor() {
             0,
         );
         assert!(!out.contains("∂()") && !out.contains("rows  and"), "{out}");
-        assert!(out.contains("every 1 ") && out.contains("vanishes identically"), "{out}");
+        assert!(
+            out.contains("every 1 ") && out.contains("vanishes identically"),
+            "{out}"
+        );
         assert!(!out.contains("≥ 0") && !out.contains(r"\ge 0"), "{out}");
     }
 }
