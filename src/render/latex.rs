@@ -315,9 +315,14 @@ fn proof(out: &mut Vec<String>, p: &ProofResult) {
             Some(e) => format!(": the bracket is ${}$", e.render(Style::Latex)),
             None => String::new(),
         };
+        // A formula, and after a colon the prose that says why (the eigenvalue's linearity),
+        // set as a sentence so that it breaks between words.
+        let statement = match f.statement.split_once(": ") {
+            Some((formula, why)) => format!("${}$: {}", math(formula), sentence(why)),
+            None => format!("${}$", math(&f.statement)),
+        };
         out.push(format!(
-            r"\item computed: ${}$ --- {}{found}",
-            math(&f.statement),
+            r"\item computed: {statement} --- {}{found}",
             mark(f.holds)
         ));
     }
