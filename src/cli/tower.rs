@@ -65,6 +65,11 @@ pub struct TowerArgs {
     /// With a system file: the family (default: the first with an eigenvalue).
     #[arg(long, value_name = "NAME")]
     family: Option<String>,
+    /// With a system file: check at values of parameters, such as 'w0sq = 2*omega_c^2' (a
+    /// resonance between them; several separated by commas). Parameters only: the tower's
+    /// brackets are identities on the whole phase space.
+    #[arg(long, value_name = "CONDITION")]
+    when: Option<String>,
     #[command(flatten)]
     limits: LimitsArgs,
 }
@@ -74,6 +79,7 @@ pub struct TowerArgs {
 pub struct TowerJob {
     pub system: SystemArg,
     pub family: Option<String>,
+    pub when: Option<String>,
     pub limits: Option<LimitsOverride>,
     pub max: i64,
     pub output: Output,
@@ -84,6 +90,7 @@ impl TowerArgs {
         TowerJob {
             system: self.system,
             family: self.family,
+            when: self.when,
             limits: self.limits.any().then(|| self.limits.settings()),
             max: self.max,
             output,
@@ -115,9 +122,9 @@ pub fn run(job: &TowerJob) -> anyhow::Result<bool> {
     };
     let report = match &job.system {
         SystemArg::Builtin(system) => {
-            if job.family.is_some() || job.limits.is_some() {
+            if job.family.is_some() || job.when.is_some() || job.limits.is_some() {
                 anyhow::bail!(
-                    "--family, --max-terms and --max-degree need a system file: \
+                    "--family, --when, --max-terms and --max-degree need a system file: \
                      --system FILE"
                 );
             }
@@ -125,7 +132,14 @@ pub fn run(job: &TowerJob) -> anyhow::Result<bool> {
         }
         SystemArg::File(path) => {
             let file = load_system(path, &job.limits.unwrap_or_default())?;
-            family_tower_report(&file, job.family.as_deref(), job.max, &mut progress)?
+            let when = job.when.as_deref().map(|w| file.condition(w)).transpose()?;
+            family_tower_report(
+                &file,
+                job.family.as_deref(),
+                job.max,
+                when.as_ref(),
+                &mut progress,
+            )?
         }
     };
     bar.finish_and_clear();

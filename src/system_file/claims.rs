@@ -191,28 +191,18 @@ impl ClaimSpec {
             None => None,
             Some(w) => {
                 let condition = condition(file, w)?;
-                let vars = file.system.vars();
                 // A parameter set to a function of phase space (k = p_x) would change the
                 // Jacobian, not only evaluate it: its value, too, must be free of them.
-                let phase = |v: &Var| vars.variable(*v).kind() != VarKind::Parameter;
-                let on_phase_space =
-                    condition
-                        .subs()
-                        .iter()
-                        .find_map(|(v, value)| match phase(v) {
-                            true => Some(*v),
-                            false => vars.vars().find(|w| phase(w) && value.contains(*w)),
-                        });
-                if let (ClaimForm::Rank { .. }, Some(v)) = (&form, on_phase_space) {
+                if let (ClaimForm::Rank { .. }, Some((v, kind))) =
+                    (&form, condition.phase_variable())
+                {
                     return Err(source.error(
                         ErrorKind::Condition,
                         w.span(),
                         format!(
                             "a rank claim's condition may set parameters only, to numbers or \
-                             other parameters, and it holds {}, {}: the rank is that of the \
-                             Jacobian on the whole phase space",
-                            vars.variable(v).unicode(),
-                            vars.variable(v).kind().described()
+                             other parameters, and it holds {v}, {kind}: the rank is that of \
+                             the Jacobian on the whole phase space"
                         ),
                     ));
                 }

@@ -14,10 +14,12 @@ use std::time::Instant;
 use trigpoly::syntax::{Expr as Tree, ExprKind};
 use trigpoly::Expr;
 
+use brackets::{Condition, EngineError};
+
 use super::claims::engine_error;
 use super::error::{ErrorKind, FileError};
 use super::scope::{substitute, Scope};
-use super::LoadedSystem;
+use super::{LoadedSystem, COMMAND_LINE};
 use crate::report::{
     ClaimResult, Entry, Fact, ProofResult, Report, Section, SummaryKind, TowerResult,
 };
@@ -157,12 +159,23 @@ impl LoadedSystem {
     /// polynomial of total degree at most `d` in the indices: so is the difference, which is
     /// then zero when it vanishes on the grid `0 ≤ m, n ≤ d` (a polynomial of degree at most
     /// `d` in each variable is determined by its values there), so the grid decides it exactly.
-    fn eigenvalue_is_linear(&self, k: usize, d: u32, shown: &str) -> Result<Fact, FileError> {
+    fn eigenvalue_is_linear(
+        &self,
+        k: usize,
+        d: u32,
+        shown: &str,
+        when: Option<&Condition>,
+    ) -> Result<Fact, FileError> {
         let [m, n] = &self.families[k].indices;
         let at = |e: trigpoly::AlgebraError| {
             engine_error(&self.source, self.families[k].span.clone(), &e.into())
         };
-        let (la, lb) = (self.eigenvalue_at(k, 1, 0)?, self.eigenvalue_at(k, 0, 1)?);
+        let eigenvalue = |i: i64, j: i64| -> Result<Expr, FileError> {
+            let value = self.eigenvalue_at(k, i, j)?;
+            settled(when, value)
+                .map_err(|e| engine_error(&self.source, self.families[k].span.clone(), &e))
+        };
+        let (la, lb) = (eigenvalue(1, 0)?, eigenvalue(0, 1)?);
         let top = i64::from(d);
         let mut differs = None;
         'grid: for i in 0..=top {
@@ -171,7 +184,7 @@ impl LoadedSystem {
                     .scale(&i.into())
                     .checked_add(&lb.scale(&j.into()))
                     .map_err(at)?;
-                if self.eigenvalue_at(k, i, j)? != linear {
+                if eigenvalue(i, j)? != linear {
                     differs = Some((i, j));
                     break 'grid;
                 }
@@ -197,7 +210,13 @@ impl LoadedSystem {
     }
 
     /// The all-`m, n` proof for family `k`, or why there is none.
-    fn family_proof(&self, k: usize, id: &str, statement: &str) -> Result<Entry, FileError> {
+    fn family_proof(
+        &self,
+        k: usize,
+        id: &str,
+        statement: &str,
+        when: Option<&Condition>,
+    ) -> Result<Entry, FileError> {
         let family = &self.families[k];
         let source = &self.source;
         let scope = Scope::of_family(self, k);
@@ -223,8 +242,11 @@ impl LoadedSystem {
             let base = scope.lower(source, &family.value, &base_tree)?;
             let lambda = self.eigenvalue_at(k, unit[0], unit[1])?;
             let flow = self.system.bracket(&base, h).map_err(|e| at(&e))?;
+            let flow = settled(when, flow).map_err(|e| at(&e))?;
+            let scaled = lambda.checked_mul(&base).map_err(|e| at(&e.into()))?;
+            let scaled = settled(when, scaled).map_err(|e| at(&e))?;
             let holds = flow
-                .checked_sub(&lambda.checked_mul(&base).map_err(|e| at(&e.into()))?)
+                .checked_sub(&scaled)
                 .map_err(|e| at(&e.into()))?
                 .is_zero();
             let base_tree = drop_ones(&base_tree);
@@ -248,7 +270,7 @@ impl LoadedSystem {
                  with {m}λ(1, 0) + {n}λ(0, 1) everywhere; the bounded check above is what holds."
             )));
         };
-        facts.push(self.eigenvalue_is_linear(k, d.max(1), &shown)?);
+        facts.push(self.eigenvalue_is_linear(k, d.max(1), &shown, when)?);
         // {AB, H} = A{B, H} + B{A, H}
         let e = |r: Result<Expr, trigpoly::AlgebraError>| r.map_err(|e| at(&e.into()));
         let ab = e(bases[0].checked_mul(&bases[1]))?;
@@ -273,6 +295,7 @@ impl LoadedSystem {
             leibniz_check,
             conclusion: statement.to_string(),
             claims: vec![ClaimResult::derived(id, statement, holds, note)
+                .at(when.map(|c| (c.text.clone(), c.ascii())))
                 .timed(start.elapsed().as_secs_f64())],
         }))
     }
@@ -286,9 +309,23 @@ pub fn family_tower_report(
     file: &LoadedSystem,
     family: Option<&str>,
     max: i64,
+    when: Option<&Condition>,
     progress: &mut dyn FnMut(usize, usize),
 ) -> Result<Report, FileError> {
     let start = Instant::now();
+    // Parameters only: substituting them commutes with the bracket, so the lemma holds at
+    // their values as it does everywhere.
+    if let Some((v, kind)) = when.and_then(|c| c.phase_variable()) {
+        return Err(FileError::new(
+            ErrorKind::Condition,
+            COMMAND_LINE,
+            format!(
+                "--when: a tower's condition may set parameters only, to numbers or other \
+                 parameters, and it holds {v}, {kind}: the tower's brackets are identities on \
+                 the whole phase space"
+            ),
+        ));
+    }
     let names: Vec<&str> = file.families.iter().map(|f| f.name.as_str()).collect();
     let k = match family {
         Some(name) => file.family(name).ok_or_else(|| {
@@ -341,7 +378,9 @@ pub fn family_tower_report(
             let value = file.compute_instance(k, a, b)?;
             let lambda = file.eigenvalue_at(k, a, b)?;
             let lhs = file.system.flow(&value).map_err(|e| at(&e))?;
+            let lhs = settled(when, lhs).map_err(|e| at(&e))?;
             let rhs = lambda.checked_mul(&value).map_err(|e| at(&e.into()))?;
+            let rhs = settled(when, rhs).map_err(|e| at(&e))?;
             if lhs != rhs {
                 failures.push((a, b));
             }
@@ -362,6 +401,7 @@ pub fn family_tower_report(
             failures.is_empty(),
             note,
         )
+        .at(when.map(|c| (c.text.clone(), c.ascii())))
         .timed(tower_start.elapsed().as_secs_f64()),
         failures,
     };
@@ -369,7 +409,9 @@ pub fn family_tower_report(
         k,
         &format!("{}-all", f.name),
         &format!("{{{kmn}, H}} = {eigen} {kmn} for all {m}, {n} ≥ 0"),
+        when,
     )?;
+    let at_values = when.map_or_else(String::new, |c| format!(" at `{}`", c.text));
     let entries = vec![
         Entry::Text(format!(
             "The family `{kmn} = {value}` of the {}, with `{{{kmn}, H}} = {eigen} {kmn}`.",
@@ -379,7 +421,7 @@ pub fn family_tower_report(
         proof,
     ];
     Ok(Report {
-        title: format!("The tower of `{kmn}`, `1 ≤ {m}, {n} ≤ {max}`"),
+        title: format!("The tower of `{kmn}`, `1 ≤ {m}, {n} ≤ {max}`{at_values}"),
         subtitle: file.source.origin.clone(),
         sections: vec![Section {
             number: 1,
@@ -390,4 +432,16 @@ pub fn family_tower_report(
         summary: SummaryKind::Check { files: 1 },
         seconds: start.elapsed().as_secs_f64(),
     })
+}
+
+/// `e` under the condition, if any: defined there (no division by a parameter it sets to 0),
+/// then substituted.
+fn settled(when: Option<&Condition>, e: Expr) -> Result<Expr, EngineError> {
+    match when {
+        None => Ok(e),
+        Some(c) => {
+            c.defined_on(&[&e], "the tower")?;
+            c.apply(&e)
+        }
+    }
 }

@@ -868,6 +868,36 @@ fn rank_zero_shows_no_empty_minor() {
     }
 }
 
+/// `tower --when` checks a family at values of parameters: `K = (p_x + ix)^m (p_x − ix)^n`
+/// has the eigenvalue `i(m − n)` at `a = 1` only, where the tower and the proof hold; without
+/// the condition both are refuted, and a condition on phase space is refused.
+#[test]
+fn tower_at_values_of_parameters() {
+    let dir = scratch("tower-when");
+    let file = "hamiltonian = \"p_x^2/2 + a*x^2/2\"\n[phase_space]\ncoordinates = [\"x\"]\n\
+                parameters = [\"a\"]\n[[family]]\nname = \"K\"\n\
+                value = \"(p_x + i*x)^m*(p_x - i*x)^n\"\neigenvalue = \"i*(m - n)\"\n";
+    std::fs::write(dir.join("a.toml"), file).expect("write");
+    let tower = |extra: &[&str]| {
+        let mut args = vec!["tower", "--system", "a.toml", "--max", "2", "--no-timings"];
+        args.extend(extra);
+        superint_in(&dir, &args)
+    };
+    let out = text(&tower(&["--when", "a = 1"]).stdout);
+    assert!(out.contains("at a = 1       [K-tower proved]"), "{out}");
+    assert!(out.contains("at a = 1       [K-all proved]"), "{out}");
+    let everywhere = text(&tower(&[]).stdout);
+    assert!(everywhere.contains("[K-tower REFUTED]"), "{everywhere}");
+    assert!(everywhere.contains("[K-all REFUTED]"), "{everywhere}");
+    let o = tower(&["--when", "a = x"]);
+    assert_eq!(o.status.code(), Some(2));
+    assert!(
+        text(&o.stderr).contains("a tower's condition may set parameters only"),
+        "{}",
+        text(&o.stderr)
+    );
+}
+
 #[test]
 fn check_exit_status_follows_expectations() {
     let dir = scratch("expectations");

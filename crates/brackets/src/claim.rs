@@ -130,6 +130,22 @@ impl Condition {
             .join(", ")
     }
 
+    /// The first variable of phase space the condition sets or sets a parameter to, with its
+    /// kind in words (`("p_x", "a momentum")`); `None` when it sets parameters to numbers and
+    /// other parameters only, a substitution that commutes with every bracket.
+    pub fn phase_variable(&self) -> Option<(String, &'static str)> {
+        self.subs.iter().find_map(|(v, value)| {
+            let vars = value.vars();
+            let phase = |w: &Var| vars.variable(*w).kind() != VarKind::Parameter;
+            let w = match phase(v) {
+                true => Some(*v),
+                false => vars.vars().find(|w| phase(w) && value.contains(*w)),
+            }?;
+            let variable = vars.variable(w);
+            Some((variable.unicode().to_string(), variable.kind().described()))
+        })
+    }
+
     /// Applies the substitution.
     pub fn apply(&self, e: &Expr) -> Result<Expr, EngineError> {
         Ok(e.subst_many(&self.subs)?)
