@@ -19,7 +19,7 @@
 use std::time::Instant;
 
 use brackets::closure::{closure_of, Bracket, Closure, ClosureOptions};
-use brackets::search::{search, Integral, SearchOptions, SearchResult};
+use brackets::search::{parameter_text, search, Integral, SearchOptions, SearchResult};
 use brackets::{EngineError, System};
 use trigpoly::{Expr, GaussianRational, Rational, Style, Var, VarKind, VarSet};
 
@@ -27,15 +27,6 @@ use crate::report::{
     counted, first_free, ClaimResult, ClosureFacts, Entry, Equation, Equations, Facts,
     ParameterFacts, Report, SearchFacts, Section, SummaryKind, TableResult,
 };
-
-/// `M = 1, ω = 1, I = 1`.
-pub fn parameter_text(vars: &VarSet, values: &[(Var, Rational)]) -> String {
-    values
-        .iter()
-        .map(|(v, x)| format!("{} = {x}", vars.variable(*v).unicode()))
-        .collect::<Vec<_>>()
-        .join(", ")
-}
 
 /// `F = Re(A e^{−ik·θ})` for an integral of one trigonometric order `k > 0` in one angle:
 /// `(A, k)`, `A` twice the coefficient of `e^{−ikθ}`.
@@ -324,15 +315,18 @@ impl HeldAt {
         vars: &VarSet,
         fixed: &[(Var, Rational)],
     ) -> Self {
-        let ascii = fixed
-            .iter()
-            .map(|(v, x)| format!("{} = {x}", vars.variable(*v).name()))
-            .collect::<Vec<_>>()
-            .join(", ");
         HeldAt {
-            when: condition.map(|c| (c.text.clone(), c.ascii())),
-            fixed: (parameter_text(vars, fixed), ascii),
+            when: condition.map(brackets::Condition::forms),
+            fixed: (
+                parameter_text(vars, fixed, Style::Unicode),
+                parameter_text(vars, fixed, Style::Ascii),
+            ),
         }
+    }
+
+    /// The fixed values as printed, `M = 1, ω = 1`.
+    fn fixed(&self) -> &str {
+        &self.fixed.0
     }
 
     /// Where a result holds (`unlifted`: only at the fixed values).
@@ -371,8 +365,8 @@ pub fn search_report(
     let r = search(system, options)?;
     let vars = system.vars();
     let cond = r.condition.clone();
-    let fixed = parameter_text(vars, &r.parameters);
     let held = HeldAt::new(options.condition.as_ref(), vars, &r.parameters);
+    let fixed = held.fixed();
     let symbolic = r
         .module
         .as_ref()
@@ -623,7 +617,7 @@ pub fn search_report(
             &label(i),
             &format!("{{{}, H}} = 0", label(i)),
             f.proved_fixed,
-            proof_note(f, &fixed, symbolic.as_deref()),
+            proof_note(f, fixed, symbolic.as_deref()),
         );
         c = c.at(held.at(f.symbolic.is_none() && !r.parameters.is_empty()));
         let c = c.written(&format!("{{{}, H}} = 0", f.expr().render(Style::Ascii)));
@@ -641,7 +635,7 @@ pub fn search_report(
             _ if r.parameters.is_empty() => None,
             // Every one lifted back to the fixed parameters too: proved for every value.
             Some(_) if lifted == rest.len() => None,
-            Some(names) => Some(proved_for_every(names, &fixed)),
+            Some(names) => Some(proved_for_every(names, fixed)),
             None => Some(format!("{lifted} of them lifted and proved symbolically")),
         };
         let mut c = ClaimResult::derived(
@@ -719,14 +713,14 @@ pub fn closure_report(
     let start = Instant::now();
     let c = closure_of(system, generators, options)?;
     let cond = c.condition.clone();
-    let fixed = parameter_text(system.vars(), &c.parameters);
+    let held = HeldAt::new(options.condition.as_ref(), system.vars(), &c.parameters);
+    let fixed = held.fixed();
     // A result that could not be lifted back to the parameters holds at the fixed values only,
     // and says so in its condition.
     let unlifted = |symbolic: bool| !symbolic && !c.parameters.is_empty();
     let note = |symbolic: bool| {
         unlifted(symbolic).then(|| "not lifted back to the parameters (no symbolic lift)".into())
     };
-    let held = HeldAt::new(options.condition.as_ref(), system.vars(), &c.parameters);
     let condition = |symbolic: bool| held.at(unlifted(symbolic));
     let results: Vec<bool> = c
         .brackets

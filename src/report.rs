@@ -403,12 +403,7 @@ pub(crate) fn first_free<T: Copy>(
     labels: impl Fn(T) -> Vec<String>,
 ) -> T {
     let has = |name: &str| {
-        taken.contains(&name)
-            || system.vars().lookup(name).is_some()
-            || system
-                .functions()
-                .iter()
-                .any(|f| f.name == name || f.display == name)
+        taken.contains(&name) || system.lookup(name).is_some() || system.get(name).is_ok()
     };
     candidates
         .iter()

@@ -13,7 +13,7 @@ use superint::discovery::{
 };
 use superint::render::render;
 use superint::report::Report;
-use superint::system_file::{reserved, split_top_level, what_is, LoadedSystem};
+use superint::system_file::{reserved, split_top_level, unwritable_letter, what_is, LoadedSystem};
 use trigpoly::Expr;
 
 use super::limits::LimitsArgs;
@@ -194,11 +194,8 @@ impl Subject {
                  or '_'"
             );
         }
-        if let Some(c) = trigpoly::latex_unwritable(name) {
-            bail!(
-                "{option} {name}: LaTeX has no letter '{c}' ({}); choose another name",
-                trigpoly::LATEX_LETTERS
-            );
+        if let Some(why) = trigpoly::latex_unwritable(name).and_then(unwritable_letter) {
+            bail!("{option} {name}: {why}; choose another name");
         }
         if let Some(why) = reserved(name) {
             bail!("{option} {name}: {why}; choose another name");

@@ -567,12 +567,14 @@ impl LoadedSystem {
                     Outcome::Proved => (true, None),
                     Outcome::Refuted { residual } => (false, Some(residual)),
                 };
+                let (condition, condition_ascii) =
+                    spec.condition.as_ref().map(Condition::forms).unzip();
                 Ok(CheckedClaim::Identity(Box::new(ClaimResult {
                     id: spec.id.clone(),
                     statement: spec.statement.clone(),
                     written: Some(spec.written.clone()),
-                    condition: spec.condition.as_ref().map(|c| c.text.clone()),
-                    condition_ascii: spec.condition.as_ref().map(Condition::ascii),
+                    condition,
+                    condition_ascii,
                     kind: ClaimKind::Identity,
                     proved,
                     expect: spec.expect,
@@ -592,11 +594,9 @@ impl LoadedSystem {
                     .collect::<Result<_, _>>()?;
                 // A condition sets parameters only (checked when the claim was read).
                 if let Some(c) = &spec.condition {
-                    let sides: Vec<&Expr> = exprs.iter().collect();
-                    c.defined_on(&sides, "a function").map_err(|e| at(&e))?;
                     exprs = exprs
                         .iter()
-                        .map(|e| c.apply(e))
+                        .map(|e| c.apply_where_defined(e, "a function"))
                         .collect::<Result<_, _>>()
                         .map_err(|e| at(&e))?;
                 }
@@ -615,8 +615,7 @@ impl LoadedSystem {
                     // The parameters it sets have their values there, not the point's.
                     let set = |v: &Var| c.subs().iter().any(|(w, _)| w == v);
                     rank.certificate.point.retain(|(v, _)| !set(v));
-                    rank.claim.condition = Some(c.text.clone());
-                    rank.claim.condition_ascii = Some(c.ascii());
+                    rank.claim = rank.claim.at(Some(c.forms()));
                 }
                 Ok(CheckedClaim::Rank(Box::new(rank)))
             }

@@ -28,7 +28,7 @@ const MAX_DEGREE_CEILING: u32 = 32_767;
 /// Why a letter cannot be in a name or a display name, when LaTeX output could not write it
 /// ([`latex_unwritable`]): `LaTeX has no letter 'é' (…)`; a character other than a letter (a
 /// mark over a letter, a sign, one that prints nothing) is said by its code point.
-fn unwritable_letter(c: char) -> Option<String> {
+pub fn unwritable_letter(c: char) -> Option<String> {
     latex_unwritable(c.encode_utf8(&mut [0; 4]))?;
     Some(match c.is_alphabetic() {
         true => format!("LaTeX has no letter '{c}' ({LATEX_LETTERS})"),

@@ -51,7 +51,7 @@ mod tower;
 
 pub use claims::{CheckedClaim, ClaimForm, ClaimSpec};
 pub use error::{ErrorKind, FileError, Location};
-pub use load::{load, load_bytes, load_str, reserved};
+pub use load::{load, load_bytes, load_str, reserved, unwritable_letter};
 pub use plot::{Against, PlotFunctions, PlotInput, StartValue};
 pub use reports::{
     bracket_report, check_each, check_report, expand_report, rank_report, table_report,
@@ -146,11 +146,7 @@ pub fn what_is(system: &System, families: &[Family], name: &str) -> Option<Strin
         return Some("the Hamiltonian".into());
     }
     // By its name or as it is shown (`Ω` for a function `Omega`).
-    if system
-        .functions()
-        .iter()
-        .any(|f| f.name == name || f.display == name)
-    {
+    if system.get(name).is_ok() {
         return Some("a function of the system".into());
     }
     if families.iter().any(|f| f.name == name) {

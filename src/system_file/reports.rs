@@ -217,8 +217,7 @@ fn equations_at(
         .map(|(lhs, value)| {
             let value = match condition {
                 Some(c) => c
-                    .defined_on(&[&value], "the expression")
-                    .and_then(|()| c.apply(&value))
+                    .apply_where_defined(&value, "the expression")
                     .map_err(|e| command_error(&e))?,
                 None => value,
             };

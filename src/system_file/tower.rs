@@ -295,7 +295,7 @@ impl LoadedSystem {
             leibniz_check,
             conclusion: statement.to_string(),
             claims: vec![ClaimResult::derived(id, statement, holds, note)
-                .at(when.map(|c| (c.text.clone(), c.ascii())))
+                .at(when.map(Condition::forms))
                 .timed(start.elapsed().as_secs_f64())],
         }))
     }
@@ -401,7 +401,7 @@ pub fn family_tower_report(
             failures.is_empty(),
             note,
         )
-        .at(when.map(|c| (c.text.clone(), c.ascii())))
+        .at(when.map(Condition::forms))
         .timed(tower_start.elapsed().as_secs_f64()),
         failures,
     };
@@ -434,14 +434,10 @@ pub fn family_tower_report(
     })
 }
 
-/// `e` under the condition, if any: defined there (no division by a parameter it sets to 0),
-/// then substituted.
+/// `e` under the condition, if any ([`Condition::apply_where_defined`]).
 fn settled(when: Option<&Condition>, e: Expr) -> Result<Expr, EngineError> {
     match when {
         None => Ok(e),
-        Some(c) => {
-            c.defined_on(&[&e], "the tower")?;
-            c.apply(&e)
-        }
+        Some(c) => c.apply_where_defined(&e, "the tower"),
     }
 }

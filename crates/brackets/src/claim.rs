@@ -130,6 +130,12 @@ impl Condition {
             .join(", ")
     }
 
+    /// How the condition reads and its [`Condition::ascii`] form: `("p_θ = Iω",
+    /// "p_theta = omega*I")`.
+    pub fn forms(&self) -> (String, String) {
+        (self.text.clone(), self.ascii())
+    }
+
     /// The first variable of phase space the condition sets or sets a parameter to, with its
     /// kind in words (`("p_x", "a momentum")`); `None` when it sets parameters to numbers and
     /// other parameters only, a substitution that commutes with every bracket.
@@ -189,6 +195,13 @@ impl Condition {
             }
         }
         Ok(())
+    }
+
+    /// `e` under the condition: refused where it is not defined there ([`Condition::defined_on`],
+    /// `what` naming it in the message), else substituted.
+    pub fn apply_where_defined(&self, e: &Expr, what: &str) -> Result<Expr, EngineError> {
+        self.defined_on(&[e], what)?;
+        self.apply(e)
     }
 
     /// Refuses the condition where it sets to zero a variable that one of `sides` divides by:

@@ -84,7 +84,8 @@ pub fn rank(space: &PhaseSpace, functions: &[Expr]) -> Result<RankCertificate, E
     // further points are tried until one shows it, which raises the lower bound.
     let further = FIRST_POINTS + EARLY_POINTS..FIRST_POINTS + EARLY_POINTS + FURTHER_POINTS;
     while cert.rank < full {
-        if nonvanishing_minor(&jac, cert.rank + 1, &mut cert.upper)?.is_none() {
+        if let Some(count) = vanishing_minors(&jac, cert.rank + 1)? {
+            cert.upper = UpperBound::VanishingMinors { count };
             break;
         }
         let mut raised = None;
@@ -182,13 +183,9 @@ fn certificate_at(
     })
 }
 
-/// A `size × size` minor of `jac` that is not identically zero, or `None` when all vanish
-/// (`upper` then counts the minors expanded).
-fn nonvanishing_minor(
-    jac: &[Vec<Expr>],
-    size: usize,
-    upper: &mut UpperBound,
-) -> Result<Option<Expr>, EngineError> {
+/// How many `size × size` minors of `jac` were expanded when every one vanishes identically,
+/// or `None` at the first that does not.
+fn vanishing_minors(jac: &[Vec<Expr>], size: usize) -> Result<Option<usize>, EngineError> {
     let columns = jac.first().map_or(0, Vec::len);
     let mut count = 0;
     for rows in (0..jac.len()).combinations(size) {
@@ -197,14 +194,12 @@ fn nonvanishing_minor(
         let mut minors = Minors::new(jac, &rows);
         for cols in (0..columns).combinations(size) {
             count += 1;
-            let minor = minors.det(&cols)?;
-            if !minor.is_zero() {
-                return Ok(Some(minor));
+            if !minors.det(&cols)?.is_zero() {
+                return Ok(None);
             }
         }
     }
-    *upper = UpperBound::VanishingMinors { count };
-    Ok(None)
+    Ok(Some(count))
 }
 
 /// The determinant of the submatrix `rows × cols`, by Laplace expansion with memoised minors;

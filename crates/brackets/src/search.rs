@@ -42,7 +42,9 @@ use std::time::Instant;
 
 use itertools::Itertools;
 use rayon::prelude::*;
-use trigpoly::{Expr, GaussianRational, MonomialIndex, Rational, Style, Term, Var, VarKind, Vars};
+use trigpoly::{
+    Expr, GaussianRational, MonomialIndex, Rational, Style, Term, Var, VarKind, VarSet, Vars,
+};
 
 use crate::claim::Condition;
 use crate::error::EngineError;
@@ -1343,10 +1345,13 @@ fn new_integrals(
         .map(|f| (f.display.clone(), f.expr.clone()));
     // The system's functions that are no real integrals are left out; a known integral given
     // as one that is not is an error, not a silence.
-    let given = |name: &str| extra.iter().any(|(n, _)| n == name);
-    for (name, f) in named.chain(extra.iter().cloned()) {
+    let named = named.map(|(name, f)| (name, f, false));
+    let given = extra
+        .iter()
+        .map(|(name, f)| (name.clone(), f.clone(), true));
+    for (name, f, given) in named.chain(given) {
         if !f.is_real() {
-            if given(&name) {
+            if given {
                 return Err(EngineError::Invalid(format!(
                     "the known integral {name} is not real: give its real and imaginary parts, \
                      re({name}) and im({name})"
@@ -1357,31 +1362,8 @@ fn new_integrals(
         let fv = fix_parameters(&f, parameters)?;
         let flow = problem.flow(system, &fv)?;
         if !flow.is_zero() {
-            if given(&name) {
-                let shown = flow.render(Style::Unicode);
-                let shown = match shown.chars().count() {
-                    0..=200 => format!("{{{name}, H}} = {shown}"),
-                    _ => format!("{{{name}, H}} ≠ 0 ({} terms)", flow.len()),
-                };
-                // Where the bracket was taken: under the condition, at the fixed values.
-                let vars = system.vars();
-                let at: Vec<String> = options
-                    .condition
-                    .iter()
-                    .map(|c| c.text.clone())
-                    .chain(
-                        parameters
-                            .iter()
-                            .map(|(v, x)| format!("{} = {x}", vars.variable(*v).unicode())),
-                    )
-                    .collect();
-                let shown = match at.is_empty() {
-                    true => shown,
-                    false => format!("{shown} at {}", at.join(", ")),
-                };
-                return Err(EngineError::Invalid(format!(
-                    "the known integral {name} is not an integral: {shown}"
-                )));
+            if given {
+                return Err(not_an_integral(&name, &flow, options, parameters));
             }
             continue;
         }
@@ -1508,6 +1490,55 @@ fn new_integrals(
     })
 }
 
+/// The error for a known integral `name` whose bracket with `H` is `flow`, not zero: the
+/// bracket (or its size, when long) and where it was taken, under the condition and at the
+/// fixed values, where it may vanish only.
+fn not_an_integral(
+    name: &str,
+    flow: &Expr,
+    options: &SearchOptions,
+    parameters: &[(Var, Rational)],
+) -> EngineError {
+    let shown = flow.render(Style::Unicode);
+    let bracket = match shown.chars().count() {
+        0..=200 => format!("{{{name}, H}} = {shown}"),
+        _ => format!("{{{name}, H}} ≠ 0 ({} terms)", flow.len()),
+    };
+    let at: Vec<String> = options
+        .condition
+        .iter()
+        .map(|c| c.text.clone())
+        .chain(
+            (!parameters.is_empty())
+                .then(|| parameter_text(flow.vars(), parameters, Style::Unicode)),
+        )
+        .collect();
+    let at = match at.is_empty() {
+        true => String::new(),
+        false => format!(" at {}", at.join(", ")),
+    };
+    EngineError::Invalid(format!(
+        "the known integral {name} is not an integral: {bracket}{at}"
+    ))
+}
+
+/// Fixed values of parameters as they read, `M = 1, ω = 1` (in `Style::Ascii`, with the ASCII
+/// names superint reads back: `M = 1, omega = 1`).
+pub fn parameter_text(vars: &VarSet, values: &[(Var, Rational)], style: Style) -> String {
+    values
+        .iter()
+        .map(|(v, x)| {
+            let variable = vars.variable(*v);
+            let name = match style {
+                Style::Ascii => variable.name(),
+                _ => variable.unicode(),
+            };
+            format!("{name} = {x}")
+        })
+        .collect::<Vec<_>>()
+        .join(", ")
+}
+
 /// The filtration by which `--new-only` counts an integral generated. A function's grade is
 /// the largest of its terms' `(degree, order)`, lexicographically: the total degree `Σ|a|` in
 /// the coordinates and momenta first, then the trigonometric order `Σ|k|`. The functions of
@@ -1562,6 +1593,13 @@ struct Size {
 }
 
 impl Size {
+    /// Past every bound: the least size of no generator.
+    const UNBOUNDED: Size = Size {
+        momenta: i64::MAX,
+        coordinates: i64::MAX,
+        angles_alone: i64::MAX,
+    };
+
     fn of(f: &Expr) -> Self {
         let degree = |kinds: &[VarKind]| f.total_degree(kinds).unwrap_or(0);
         let (momenta, coordinates) = (degree(&[VarKind::Momentum]), degree(&[VarKind::Coordinate]));
@@ -1764,12 +1802,7 @@ impl Spanning<'_, '_> {
     /// products instead of 126 086).
     fn round(&mut self, gens: &[&Generator], lo: usize, stamp: i64) -> Result<(), Stop> {
         // The least sizes from each index on.
-        let unbounded = Size {
-            momenta: i64::MAX,
-            coordinates: i64::MAX,
-            angles_alone: i64::MAX,
-        };
-        let mut least = vec![unbounded; gens.len() + 1];
+        let mut least = vec![Size::UNBOUNDED; gens.len() + 1];
         for (i, g) in gens.iter().enumerate().rev() {
             least[i] = least[i + 1].min(g.size);
         }

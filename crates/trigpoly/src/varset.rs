@@ -854,6 +854,12 @@ const LETTERS: &[(char, &str)] = &[('ħ', r"{\hbar}"), ('ℓ', r"{\ell}")];
 /// The subscript digits `₀`–`₉`.
 const SUBSCRIPT_DIGITS: &str = "₀₁₂₃₄₅₆₇₈₉";
 
+/// The ASCII digit a subscript digit writes (`₁` → `1`).
+fn subscript_digit(c: char) -> Option<char> {
+    let k = SUBSCRIPT_DIGITS.chars().position(|d| d == c)?;
+    char::from_digit(k as u32, 10)
+}
+
 /// A piece's LaTeX letter by letter, for a word no rule above writes whole: each Greek letter,
 /// `ħ` and `ℓ` as its command in braces (`ωx` → `{\omega}x`), a run of subscript digits as a
 /// subscript (`x₁y` → `x_{1}y`; as digits after `_` or at the start, where there is nothing to
@@ -864,8 +870,8 @@ fn letter_by_letter(p: &str) -> String {
     let mut digits = String::new();
     let mut chars = p.chars().peekable();
     while let Some(c) = chars.next() {
-        if let Some(k) = SUBSCRIPT_DIGITS.chars().position(|d| d == c) {
-            digits.push(char::from(b'0' + k as u8));
+        if let Some(digit) = subscript_digit(c) {
+            digits.push(digit);
             if chars.peek().is_some_and(|n| SUBSCRIPT_DIGITS.contains(*n)) {
                 continue;
             }
@@ -909,8 +915,7 @@ impl Piece {
         if !letters.is_empty() && letters.len() < p.len() {
             let digits: String = p[letters.len()..]
                 .chars()
-                .filter_map(|c| SUBSCRIPT_DIGITS.chars().position(|d| d == c))
-                .map(|k| char::from(b'0' + k as u8))
+                .filter_map(subscript_digit)
                 .collect();
             let base = Piece::of(letters);
             return Piece {
