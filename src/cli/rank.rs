@@ -17,7 +17,8 @@ Examples:
   superint rank systems/harmonic-rotor.toml F1 'F2 + L' --format json
 
 The rank of ∂(F_1, …, F_k)/∂(q, p) over the rational functions: at least r by an r × r minor
-that is nonzero at an exact rational point, at most r by every larger minor vanishing.";
+that is nonzero at an exact rational point, at most r by the (r+1) × (r+1) minors that border it
+vanishing identically (Kronecker's bordered-minor theorem: then every larger minor vanishes).";
 
 /// Arguments of `superint rank`.
 #[derive(Debug, Args)]

@@ -41,7 +41,9 @@
 //!                "condition", "condition_ascii" (parameters the rank is taken at, or null), "rank",
 //!                "minor": { "rows": [names], "columns": [names], "value": string },
 //!                "point": [ { "variable", "value" } | { "variable", "cos", "sin" } ],
-//!                "upper_bound": { "kind": "size" | "vanishing_minors", "minors": int | null },
+//!                "upper_bound": { "kind": "size" | "vanishing_minors", "minors": int | null
+//!                                 (how many minors one larger than "minor" and containing it
+//!                                 were expanded, each identically zero) },
 //!                "outcome" } ],
 //!   "searches": [ { "section", "space": { "momenta_degree", "positions_degree", "trig_degree",
 //!                   "laurent", "coordinates", "momenta", "angles", "left_out" },

@@ -415,10 +415,21 @@ pub(crate) fn upper_bound(r: &RankResult) -> String {
             there_are(r.functions.len(), "function")
         }
         UpperBound::Size => there_are(r.coordinates.len(), "coordinate"),
-        UpperBound::VanishingMinors { count } => format!(
-            "every {0} × {0} minor ({1}) vanishes identically",
-            k + 1,
+        // With no minor above, the bordering minors are every entry of the Jacobian.
+        UpperBound::VanishingMinors { count } if k == 0 => format!(
+            "every 1 × 1 minor ({}) vanishes identically",
             counted(*count, "minor")
+        ),
+        // Kronecker's bordered-minor theorem: the minors one larger that contain the nonzero
+        // one all vanish, so every minor one larger does.
+        UpperBound::VanishingMinors { count: 1 } => format!(
+            "every {0} × {0} minor vanishes identically, as the one bordering the minor above does",
+            k + 1
+        ),
+        UpperBound::VanishingMinors { count } => format!(
+            "every {0} × {0} minor vanishes identically, as the {1} bordering the minor above do",
+            k + 1,
+            count
         ),
     }
 }
@@ -445,7 +456,11 @@ fn rank(out: &mut Vec<String>, r: &RankResult) {
         "        ",
     ));
     out.extend(wrap_items("        ", &point(r, Style::Unicode), WRAP));
-    out.push(format!("      ≤ {}: {}", c.rank, upper_bound(r)));
+    out.extend(wrap(
+        &format!("      ≤ {}: {}", c.rank, upper_bound(r)),
+        WRAP,
+        "        ",
+    ));
 }
 
 #[cfg(test)]

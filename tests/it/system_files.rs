@@ -1372,6 +1372,12 @@ fn rank_prints_its_certificate() {
         1,
     );
     assert!(out.contains("the rank is 4"), "{out}");
+    // The upper bound: five functions in six coordinates, rank 4, so (5 − 4)(6 − 4) = 2
+    // minors border the nonzero one.
+    assert!(
+        out.contains("≤ 4: every 5 × 5 minor vanishes identically, as the 2 bordering"),
+        "{out}"
+    );
 }
 
 #[test]

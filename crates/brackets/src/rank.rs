@@ -1,7 +1,8 @@
 //! Functional independence: the exact rank of the Jacobian `∂(F_1, …, F_k)/∂(q, p)` over the
 //! field of rational functions, with certificates: a nonzero minor at an exact rational point
-//! for the lower bound; for the upper bound, the size of the matrix or every larger minor
-//! vanishing identically.
+//! for the lower bound; for the upper bound, the size of the matrix or every minor one larger
+//! that borders the nonzero one vanishing identically (Kronecker's bordered-minor theorem: then
+//! every larger minor vanishes, and `(k − r)(n − r)` minors stand for all `C(k, r+1) C(n, r+1)`).
 
 use std::collections::HashMap;
 
@@ -17,9 +18,12 @@ use crate::phase::PhaseSpace;
 pub enum UpperBound {
     /// The rank equals the number of functions or of coordinates.
     Size,
-    /// Every `(r+1) × (r+1)` minor is identically zero (this many of them were expanded).
+    /// Every `(r+1) × (r+1)` minor that borders the nonzero `r × r` minor (its functions and
+    /// coordinates with one more of each) is identically zero, and so, by Kronecker's
+    /// bordered-minor theorem, is every `(r+1) × (r+1)` minor.
     VanishingMinors {
-        /// How many minors were expanded.
+        /// How many bordering minors were expanded: `(k − r)(n − r)` for `k` functions in `n`
+        /// coordinates.
         count: usize,
     },
 }
@@ -79,12 +83,17 @@ pub fn rank(space: &PhaseSpace, functions: &[Expr]) -> Result<RankCertificate, E
         }
     }
     let mut cert = best.expect("at least one point");
-    // Upper bound: every larger minor vanishes identically. A larger minor that does not is a
-    // polynomial nonzero somewhere, so the Jacobian's rank is larger at almost every point:
-    // further points are tried until one shows it, which raises the lower bound.
+    // Upper bound: every minor bordering the nonzero one vanishes identically. The nonzero
+    // minor is a nonzero polynomial, so over the field of rational functions its rows are
+    // independent on its columns, and each other function's gradient is, on those columns, one
+    // combination of theirs; a bordering minor is the nonzero minor times that combination's
+    // miss on the added column, so when all vanish every gradient is a combination of the
+    // minor's rows and the rank is r. A bordering minor that does not vanish is a polynomial
+    // nonzero somewhere, so the Jacobian's rank is larger at almost every point: further points
+    // are tried until one shows it, which raises the lower bound.
     let further = FIRST_POINTS + EARLY_POINTS..FIRST_POINTS + EARLY_POINTS + FURTHER_POINTS;
     while cert.rank < full {
-        if let Some(count) = vanishing_minors(&jac, cert.rank + 1)? {
+        if let Some(count) = vanishing_bordering_minors(&jac, &coords, &cert)? {
             cert.upper = UpperBound::VanishingMinors { count };
             break;
         }
@@ -183,16 +192,38 @@ fn certificate_at(
     })
 }
 
-/// How many `size × size` minors of `jac` were expanded when every one vanishes identically,
-/// or `None` at the first that does not.
-fn vanishing_minors(jac: &[Vec<Expr>], size: usize) -> Result<Option<usize>, EngineError> {
-    let columns = jac.first().map_or(0, Vec::len);
+/// How many minors of `jac` bordering the certificate's nonzero minor (its rows and columns
+/// with one more of each) were expanded when every one vanishes identically, or `None` at the
+/// first that does not.
+fn vanishing_bordering_minors(
+    jac: &[Vec<Expr>],
+    coords: &[Var],
+    cert: &RankCertificate,
+) -> Result<Option<usize>, EngineError> {
+    let minor_cols: Vec<usize> = cert
+        .minor_cols
+        .iter()
+        .map(|v| coords.iter().position(|c| c == v).expect("a coordinate"))
+        .collect();
     let mut count = 0;
-    for rows in (0..jac.len()).combinations(size) {
+    for extra_row in (0..jac.len()).filter(|i| !cert.minor_rows.contains(i)) {
+        let rows: Vec<usize> = cert
+            .minor_rows
+            .iter()
+            .copied()
+            .chain([extra_row])
+            .sorted_unstable()
+            .collect();
         // The minors of these rows share their smaller minors: computed once for all of
         // their column sets.
         let mut minors = Minors::new(jac, &rows);
-        for cols in (0..columns).combinations(size) {
+        for extra_col in (0..coords.len()).filter(|j| !minor_cols.contains(j)) {
+            let cols: Vec<usize> = minor_cols
+                .iter()
+                .copied()
+                .chain([extra_col])
+                .sorted_unstable()
+                .collect();
             count += 1;
             if !minors.det(&cols)?.is_zero() {
                 return Ok(None);
@@ -318,6 +349,45 @@ mod tests {
             !on_line.is_zero(),
             "the certificate's point is off the line"
         );
+    }
+
+    /// The angular momenta `L_ij = x_i p_j − x_j p_i` in five dimensions: ten functions of
+    /// rank 2·5 − 3 = 7 in ten coordinates. The upper bound expands the (10 − 7)(10 − 7) = 9
+    /// minors of size 8 that border the nonzero one, not all C(10, 8)² = 2025 of that size.
+    /// The minor's seven functions alone keep the rank; six of them have rank 6.
+    #[test]
+    fn the_upper_bound_expands_only_the_bordering_minors() {
+        let mut builder = trigpoly::VarSet::builder();
+        for i in 1..=5 {
+            builder = builder
+                .coordinate(&format!("x{i}"))
+                .momentum(&format!("p{i}"));
+        }
+        let vars = builder.build().unwrap();
+        let pairs: Vec<(String, String)> = (1..=5)
+            .map(|i| (format!("x{i}"), format!("p{i}")))
+            .collect();
+        let pairs: Vec<(&str, &str)> = pairs
+            .iter()
+            .map(|(q, p)| (q.as_str(), p.as_str()))
+            .collect();
+        let space = PhaseSpace::new(&vars, &pairs).unwrap();
+        let momenta: Vec<Expr> = (1..=5)
+            .flat_map(|i| (i + 1..=5).map(move |j| (i, j)))
+            .map(|(i, j)| Expr::parse(&vars, &format!("x{i}*p{j} - x{j}*p{i}")).unwrap())
+            .collect();
+        let cert = rank(&space, &momenta).expect("a certificate");
+        assert_eq!(cert.rank, 7);
+        assert_eq!(cert.upper, UpperBound::VanishingMinors { count: 9 });
+        // The nonzero minor's functions: dropping the others keeps the rank.
+        let chosen: Vec<Expr> = cert
+            .minor_rows
+            .iter()
+            .map(|&i| momenta[i].clone())
+            .collect();
+        assert_eq!(rank(&space, &chosen).unwrap().rank, 7);
+        // And one of them less lowers it.
+        assert_eq!(rank(&space, &chosen[1..]).unwrap().rank, 6);
     }
 
     /// A dependent pair keeps its rank with the vanishing minors as the upper bound.

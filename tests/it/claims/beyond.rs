@@ -104,7 +104,7 @@ fn c26_anisotropic_3_5_rotor_resonant_integrals() {
         &sys,
         &["Hx", "Hy", "F2", "S_re", "S_im"],
         4,
-        UpperBound::VanishingMinors { count: 6 },
+        UpperBound::VanishingMinors { count: 2 },
     );
 }
 
@@ -171,7 +171,7 @@ fn c27_planar_limits_second_order_integrals() {
         &one,
         &["H", "F2", "Hx", "Hy", "X"],
         4,
-        UpperBound::VanishingMinors { count: 6 },
+        UpperBound::VanishingMinors { count: 2 },
     );
 
     // V_II = α(x² + 4y²) + β/x² + γy.

@@ -138,7 +138,7 @@ fn c25_gravity_functional_independence() {
         &sys,
         &["F1", "F2", "Lp", "G1p", "G2p"],
         4,
-        UpperBound::VanishingMinors { count: 6 },
+        UpperBound::VanishingMinors { count: 2 },
     );
 }
 

@@ -363,7 +363,7 @@ fn c17_functional_independence() {
         &sys,
         &["F1", "F2", "L", "G1", "G2"],
         4,
-        UpperBound::VanishingMinors { count: 6 },
+        UpperBound::VanishingMinors { count: 2 },
     );
     let cert = certified_rank(&sys, &["F1", "F2", "L", "G1", "G2", "P"]);
     assert_ne!(cert.rank, 6);
@@ -371,7 +371,7 @@ fn c17_functional_independence() {
         &sys,
         &["F1", "F2", "F1 + F2"],
         2,
-        UpperBound::VanishingMinors { count: 20 },
+        UpperBound::VanishingMinors { count: 4 },
     );
 }
 
@@ -475,6 +475,6 @@ fn symbolic_minors_with_equal_rows() {
         &sys,
         &["F1", "G1", "G1"],
         2,
-        UpperBound::VanishingMinors { count: 20 },
+        UpperBound::VanishingMinors { count: 4 },
     );
 }
