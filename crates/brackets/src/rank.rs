@@ -246,8 +246,10 @@ pub fn symbolic_det(
 /// The minors of a fixed set of rows of a matrix of polynomials, for column sets of the
 /// rows' number: each by Laplace expansion along the rows in order, every smaller minor
 /// (the rows from some depth on, by a set of columns) computed once and kept for the other
-/// column sets. The six 5 × 5 minors of a rank's upper bound in six coordinates share their
-/// 2 × 2 minors of the last two rows, 15 of them where each minor alone would compute 10.
+/// column sets. The six 5 × 5 minors of five rows in six coordinates share their 2 × 2
+/// minors of the last two rows, 15 of them where each minor alone would compute 10; the
+/// minors bordering a rank's nonzero minor, its columns and one more, share every minor
+/// of its columns alone.
 pub struct Minors<'a> {
     jac: &'a [Vec<Expr>],
     rows: &'a [usize],
