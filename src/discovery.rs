@@ -808,7 +808,11 @@ pub fn closure_report(
             }
         }
         let advice = match moving.len() {
-            0 => "Add what `superint search` finds to close the table.".to_string(),
+            0 => {
+                "A higher `--degree`, or what `superint search` finds added to the generators, may \
+                 close the table."
+                    .to_string()
+            }
             1 => format!(
                 "{} is no integral (its bracket with `H` is not zero{when}), so its brackets \
                  need not close among the others.",

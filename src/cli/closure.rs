@@ -42,7 +42,7 @@ pub struct ClosureArgs {
     system: Option<String>,
     /// The largest degree of the polynomials in the generators.
     #[arg(long, value_name = "D", default_value_t = 2,
-          value_parser = clap::value_parser!(u32).range(0..=6))]
+          value_parser = clap::value_parser!(u32).range(0..=64))]
     degree: u32,
     /// The condition applied to the generators and after each bracket, such as
     /// 'p_theta = I*omega'.
@@ -58,8 +58,14 @@ pub struct ClosureArgs {
     symbolic: Option<String>,
     /// Total degree of the coefficients in the parameters kept symbolic.
     #[arg(long, value_name = "S", default_value_t = 2, requires = "symbolic",
-          value_parser = clap::value_parser!(u32).range(0..=6))]
+          value_parser = clap::value_parser!(u32).range(0..=64))]
     parameters_degree: u32,
+    /// Stop with an error before computing when the monomials in the generators (and the
+    /// symbolic parameters) would be more than N: each is expanded and is a column of the
+    /// linear system.
+    #[arg(long, value_name = "N", default_value_t = ClosureOptions::DEFAULT_MAX_MONOMIALS as u64,
+          value_parser = clap::value_parser!(u64).range(1..))]
+    max_monomials: u64,
     /// A generator given by its expression, NAME=EXPR (repeatable), NAME a name the system
     /// does not have.
     #[arg(long, value_name = "NAME=EXPR")]
@@ -136,6 +142,7 @@ pub fn run(job: &ClosureJob) -> anyhow::Result<bool> {
         generators.push((identifier(name), display, e));
     }
     let mut options = ClosureOptions::new(a.degree);
+    options.max_monomials = usize::try_from(a.max_monomials).unwrap_or(usize::MAX);
     options.condition = subject.condition(a.when.as_deref())?;
     options.fixed = subject.fixed(a.fix.as_deref())?;
     if let Some(names) = &a.symbolic {

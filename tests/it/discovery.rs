@@ -445,7 +445,8 @@ fn harmonic_1_1_closure() {
         "h11-closure",
         &[
             "The brackets marked * are no polynomials of degree ≤ 2 in the generators; here \
-             they are. Add what superint search finds to close the table.",
+             they are. A higher --degree, or what superint search finds added to the generators, \
+             may close the table.",
             "{G1, P_1_1} = (ω p_x/2 + Mω²y/2) cos θ + (−ω p_y/2 + Mω²x/2) sin θ",
             "{G2, Q_1_1} = (−ω p_x − Mω²y) cos θ + (ω p_y − Mω²x) sin θ",
             "{F2, P_1_1} = −ω Q_1_1",
@@ -1957,4 +1958,103 @@ fn a_symbolic_search_lifted_in_the_rest_says_every_value() {
         .expect("the claim for the other elements");
     assert_eq!(rest["note"], serde_json::Value::Null);
     assert!(!text.contains("at M = 1"), "{text}");
+}
+
+/// The planar 3:5 resonance's integral `A = A_x⁵ Ā_y³` is of degree 8 in the phase space:
+/// `{Re A, Im A}` is of degree 7 in `H_x, H_y` and the relation `|A|² = 256 M⁸ H_x⁵ H_y³` of
+/// degree 8, past the degree 6 the closure was once capped at. At degree 6 the bracket stays
+/// outside the table; at degree 8 the table closes with that relation.
+#[test]
+fn closure_past_degree_six_finds_the_3_5_oscillator_relation() {
+    let args = |degree: &str| {
+        superint(&[
+            "closure",
+            "systems/anisotropic-3-5-rotor.toml",
+            "Hx",
+            "Hy",
+            "ReA",
+            "ImA",
+            "--degree",
+            degree,
+            "--no-timings",
+        ])
+    };
+    let low = args("6");
+    let text = normalize(&String::from_utf8(low.stdout).unwrap());
+    assert_eq!(low.status.code(), Some(0), "{text}");
+    assert!(
+        text.contains("The brackets marked * are no polynomials of degree ≤ 6"),
+        "{text}"
+    );
+    let high = args("8");
+    let text = normalize(&String::from_utf8(high.stdout).unwrap());
+    assert_eq!(high.status.code(), Some(0), "{text}");
+    for line in [
+        "The table closes: every bracket is a polynomial of degree ≤ 8 in the generators.",
+        "{Re A, Im A} = 5760M⁸ω H_x⁵ H_y² − 9600M⁸ω H_x⁴ H_y³ [B5 proved]",
+        "256 H_x⁵ H_y³ = ReA²/M⁸ + ImA²/M⁸ [R1 proved]",
+        "6 claims: 6 proved, 0 refuted",
+    ] {
+        assert!(text.contains(line), "{line} not in {text}");
+    }
+}
+
+/// The monomials a closure would expand are counted before any is: past the limit it is an
+/// error that says how many there are and which option raises it, with exit code 2.
+#[test]
+fn a_closure_past_its_monomial_limit_stops_before_computing() {
+    let out = superint(&[
+        "closure",
+        "systems/harmonic-rotor.toml",
+        "F1",
+        "F2",
+        "L",
+        "G1",
+        "G2",
+        "--degree",
+        "64",
+    ]);
+    let err = String::from_utf8(out.stderr).unwrap();
+    assert_eq!(out.status.code(), Some(2), "{err}");
+    assert!(
+        err.contains(
+            "there are 11238513 monomials of degree ≤ 64 in the 5 generators, more than the \
+             limit 20000"
+        ) && err.contains("--max-monomials"),
+        "{err}"
+    );
+    // Raised, the same count passes the check (at degree 4: 126 monomials, limit 126).
+    let out = superint(&[
+        "closure",
+        "systems/harmonic-rotor.toml",
+        "F1",
+        "F2",
+        "L",
+        "G1",
+        "G2",
+        "--degree",
+        "4",
+        "--max-monomials",
+        "126",
+    ]);
+    assert_eq!(out.status.code(), Some(0));
+    let out = superint(&[
+        "closure",
+        "systems/harmonic-rotor.toml",
+        "F1",
+        "F2",
+        "L",
+        "G1",
+        "G2",
+        "--degree",
+        "4",
+        "--max-monomials",
+        "125",
+    ]);
+    let err = String::from_utf8(out.stderr).unwrap();
+    assert_eq!(out.status.code(), Some(2), "{err}");
+    assert!(
+        err.contains("there are 126 monomials of degree ≤ 4"),
+        "{err}"
+    );
 }
