@@ -569,12 +569,21 @@ pub fn search_report(
              terms, compared in that order) is generated when it is a sum of known integrals, \
              constants and products of integrals of grade below `(N, k)`"
         };
+        let span = if n.generated == r.basis.len() {
+            format!(
+                "the generated ones span the whole space ({}).",
+                counted(r.basis.len(), "dimension")
+            )
+        } else {
+            format!(
+                "the generated ones span {} of the {}, and a complement, the new integrals, is:",
+                n.generated,
+                counted(r.basis.len(), "dimension")
+            )
+        };
         entries.push(Entry::Text(format!(
-            "Known integrals in the space: {known}. {rule} ({} formed); the generated ones span \
-             {} of the {}, and a complement, the new integrals, is:",
+            "Known integrals in the space: {known}. {rule} ({} formed); {span}",
             counted(n.products, "product"),
-            n.generated,
-            counted(r.basis.len(), "dimension")
         )));
     }
     if shown.is_empty() {

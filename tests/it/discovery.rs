@@ -876,7 +876,7 @@ fn henon_heiles_separable_and_quartic_cases_for_every_a() {
         "hh-quartic-new",
         &[
             "Known integrals in the space: H, Q.",
-            "the generated ones span 7 of the 7 dimensions",
+            "the generated ones span the whole space (7 dimensions).",
             "None: the known integrals generate every integral in the space.",
         ],
     );
@@ -910,7 +910,7 @@ fn kepler_laplace_runge_lenz_and_nothing_else() {
             "Dimension of the space of integrals: 44. By degree in the momenta: ≤ 0: 1, ≤ 1: 2, \
              ≤ 2: 6, ≤ 3: 10, ≤ 4: 19, ≤ 5: 28, ≤ 6: 44.",
             "Known integrals in the space: H, L, A_x, A_y.",
-            "the generated ones span 44 of the 44 dimensions",
+            "the generated ones span the whole space (44 dimensions).",
             "None: the known integrals generate every integral in the space.",
         ],
     );
