@@ -10,8 +10,8 @@ use std::sync::Mutex;
 use brackets::{PhaseSpace, System};
 use toml::Spanned;
 use trigpoly::{
-    is_identifier, latex_unwritable, unbarred, AlgebraError, Expr, Limits, Span, VarSet,
-    LATEX_LETTERS, RESERVED,
+    display_forms, is_identifier, latex_unwritable, unbarred, AlgebraError, Expr, Limits, Span,
+    VarSet, LATEX_LETTERS, RESERVED,
 };
 
 use super::claims::ClaimSpec;
@@ -314,6 +314,16 @@ struct Builder<'a> {
     limits: &'a LimitsOverride,
     /// Every declared name: what it is (`an angle`) and where.
     names: HashMap<String, (&'static str, Range<usize>)>,
+    /// How each variable and function is printed, in text and in LaTeX: whose form it is
+    /// (`the function Gx`) and, for a function, the line of its name or display.
+    shown: HashMap<(Notation, String), (String, Option<usize>)>,
+}
+
+/// A notation a name is printed in.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+enum Notation {
+    Text,
+    Latex,
 }
 
 impl<'a> Builder<'a> {
@@ -390,7 +400,41 @@ impl<'a> Builder<'a> {
             source,
             limits,
             names: HashMap::new(),
+            shown: HashMap::new(),
         }
+    }
+
+    /// Refuses a function printed as a variable or an earlier function is, in text or in
+    /// LaTeX (`Gx` shown as `G_x` and a function `G_x`; `G1` and `G_1`, both `G_{1}`): its
+    /// tables and equations would show two things alike.
+    fn check_shown_apart(
+        &mut self,
+        whose: String,
+        forms: [(Notation, String); 2],
+        span: Range<usize>,
+    ) -> Result<(), FileError> {
+        for (notation, form) in &forms {
+            if let Some((other, line)) = self.shown.get(&(*notation, form.clone())) {
+                let place = line.map(|l| format!(" on line {l}")).unwrap_or_default();
+                let how = match notation {
+                    Notation::Text => format!("show as {form}"),
+                    Notation::Latex => format!("print as {form} in LaTeX"),
+                };
+                return Err(self.error(
+                    ErrorKind::Name,
+                    span,
+                    format!(
+                        "{whose} would {how}, as {other}{place} does: rename one, or give it \
+                         another display"
+                    ),
+                ));
+            }
+        }
+        let line = super::error::locate(&self.source.text, span).line;
+        for key in forms {
+            self.shown.insert(key, (whose.clone(), Some(line)));
+        }
+        Ok(())
     }
 
     fn text(&self, s: &Spanned<String>) -> Text {
@@ -499,9 +543,11 @@ impl<'a> Builder<'a> {
         }));
         let span = model.phase_space.span();
         let vars = builder.build().map_err(|e| {
-            // Two names that one spelling finds (`omega` and `ω`): shown at the second.
+            // Two names that one spelling finds (`omega` and `ω`), or that LaTeX prints
+            // alike (`x1` and `x₁`): shown at the second.
             let at = match &e {
-                AlgebraError::DeclaredTwice { name, .. } => ps
+                AlgebraError::DeclaredTwice { name, .. }
+                | AlgebraError::PrintedAlike { name, .. } => ps
                     .coordinates
                     .iter()
                     .chain(&ps.angles)
@@ -522,6 +568,16 @@ impl<'a> Builder<'a> {
             .collect();
         let space = PhaseSpace::new(&vars, &pairs)
             .map_err(|e| self.error(ErrorKind::Name, span.clone(), e.to_string()))?;
+        for v in vars.vars() {
+            let v = vars.variable(v);
+            // `a coordinate` → `the coordinate x1`.
+            let kind = v.kind().described().split_once(' ').map_or("", |k| k.1);
+            let whose = format!("the {kind} {}", v.name());
+            for form in [(Notation::Text, v.unicode()), (Notation::Latex, v.latex())] {
+                self.shown
+                    .insert((form.0, form.1.to_string()), (whose.clone(), None));
+            }
+        }
         let name = match &model.name {
             Some(n) => n.get_ref().clone(),
             None => Path::new(&self.source.origin).file_stem().map_or_else(
@@ -584,6 +640,12 @@ impl<'a> Builder<'a> {
                 self.check_display(d)?;
             }
             let display = f.display.as_ref().unwrap_or(&f.name).get_ref();
+            if let Some((text, latex)) = display_forms(display) {
+                let whose = format!("the function {}", f.name.get_ref());
+                let forms = [(Notation::Text, text), (Notation::Latex, latex)];
+                let span = f.display.as_ref().unwrap_or(&f.name).span();
+                self.check_shown_apart(whose, forms, span)?;
+            }
             file.system.define(f.name.get_ref(), display, value);
         }
 

@@ -1499,7 +1499,7 @@ fn cli_counts_of_one_are_singular() {
     for said in [
         "1 unknown, 0 linear equations over `Q`, in 1 independent block (the largest has 1 \
          unknown).",
-        "(0 products formed); the generated ones span 1 of the 1 dimension,",
+        "(0 products formed); the generated ones span the whole space (1 dimension).",
         "`{I, H} = 0 for the other 1 basis element`",
     ] {
         assert!(zero.contains(said), "{said}\n{zero}");

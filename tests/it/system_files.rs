@@ -710,6 +710,35 @@ fn bad_inputs() -> Vec<(&'static str, Vec<u8>, &'static str, Vec<&'static str>)>
             "bad.toml:6:29: variable \"ω\" is declared twice (as \"omega\"",
             check.clone(),
         ),
+        // Names that read apart in text print alike in LaTeX: `M1` and `M₁` are both `M_{1}`.
+        (
+            "two parameters alike in LaTeX",
+            base_with(
+                "parameters = [\"M\", \"omega\"]",
+                "parameters = [\"M\", \"omega\", \"M1\", \"M₁\"]",
+            ),
+            "bad.toml:6:35: \"M1\" and \"M₁\" would print alike in LaTeX, as M_{1}: rename one",
+            check.clone(),
+        ),
+        (
+            "a function printed as a parameter is in LaTeX",
+            base_with(
+                "parameters = [\"M\", \"omega\"]\n\n[[function]]\nname = \"A\"",
+                "parameters = [\"M\", \"omega\", \"M1\"]\n\n[[function]]\nname = \"M_1\"",
+            ),
+            "bad.toml:9:8: the function M_1 would print as M_{1} in LaTeX, as the parameter M1 \
+             does: rename one, or give it another display",
+            check.clone(),
+        ),
+        (
+            "a function shown as another is",
+            base_with(
+                "[[claim]]",
+                "[[function]]\nname = \"B\"\ndisplay = \"A\"\nvalue = \"x\"\n\n[[claim]]",
+            ),
+            "bad.toml:14:11: the function B would show as A, as the function A on line 9 does",
+            check.clone(),
+        ),
         (
             "family instance with one index",
             base_with(

@@ -73,6 +73,17 @@ pub enum AlgebraError {
         /// The first's.
         first: String,
     },
+    /// Two variables whose names read apart in text and alike in LaTeX (`x1` and `x₁`, both
+    /// `x_{1}`).
+    #[error("{first:?} and {name:?} would print alike in LaTeX, as {latex}: rename one")]
+    PrintedAlike {
+        /// The second declaration's name.
+        name: String,
+        /// The first's.
+        first: String,
+        /// The LaTeX both would print as.
+        latex: String,
+    },
     /// Something else invalid, with its explanation.
     #[error("{0}")]
     Invalid(String),

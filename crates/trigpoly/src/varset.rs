@@ -666,6 +666,14 @@ impl VarSetBuilder {
                         first: w.name.clone(),
                     });
                 }
+                // `x1` and `x₁` read apart in text, and alike in LaTeX output.
+                if w.latex == v.latex {
+                    return Err(AlgebraError::PrintedAlike {
+                        name: v.name.clone(),
+                        first: w.name.clone(),
+                        latex: v.latex.clone(),
+                    });
+                }
             }
         }
         if self.vars.len() > u16::MAX as usize {
@@ -1162,6 +1170,32 @@ mod tests {
         );
         let unknown = Poly::<GaussianRational>::parse(&vars, "p_phi").unwrap_err();
         assert!(unknown.message.starts_with("unknown name 'p_phi'"));
+    }
+
+    /// `x1` and `x₁` read apart in text and print alike in LaTeX, `x_{1}`; `x1` and `x_1`
+    /// also; `x1` and `x11` do not.
+    #[test]
+    fn two_variables_alike_in_latex_are_refused() {
+        for second in ["x₁", "x_1"] {
+            let err = VarSet::builder()
+                .coordinate("x1")
+                .coordinate(second)
+                .build()
+                .unwrap_err();
+            assert_eq!(
+                err,
+                AlgebraError::PrintedAlike {
+                    name: second.into(),
+                    first: "x1".into(),
+                    latex: "x_{1}".into()
+                }
+            );
+        }
+        assert!(VarSet::builder()
+            .coordinate("x1")
+            .coordinate("x11")
+            .build()
+            .is_ok());
     }
 
     #[test]
