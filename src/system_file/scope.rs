@@ -492,9 +492,9 @@ impl LoadedSystem {
     ) -> Result<Expr, FileError> {
         let family = &self.families[k];
         let scope = Scope::of_family(self, k);
-        let tree = scope.tree(&self.source, text)?;
+        let tree = scope.tree(&family.source, text)?;
         let tree = substitute(&tree, &family.indices, [m, n], &self.families[..k]);
-        scope.lower(&self.source, text, &tree)
+        scope.lower(&family.source, text, &tree)
     }
 }
 
@@ -547,6 +547,7 @@ mod tests {
             value: Text::whole(&Source::new("t", "Z")),
             eigenvalue: None,
             span: 0..0,
+            source: Source::new("t", "Z"),
         };
         let s = "{K_{2, 3}, H} + L_{1,1}";
         let r = rewrite_braces(s, std::slice::from_ref(&fam), &[]);

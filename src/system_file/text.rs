@@ -64,6 +64,15 @@ impl Text {
         }
     }
 
+    /// The bytes `range` of `source`, whose text is the value itself (a text given in code).
+    pub(crate) fn within(source: &Source, range: Range<usize>) -> Self {
+        Text {
+            value: source.text[range.clone()].to_string(),
+            offset: Some(range.start),
+            anchor: range.start,
+        }
+    }
+
     /// A TOML string whose token (quotes included) is `span` in `file`, decoded as `value`.
     pub fn in_toml(file: &str, span: Range<usize>, value: &str) -> Self {
         let raw = file.get(span.clone()).unwrap_or("");

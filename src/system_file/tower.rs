@@ -143,10 +143,15 @@ impl LoadedSystem {
     /// `λ(m, n)` of family `k`.
     ///
     /// Errors if the family has no eigenvalue.
+    ///
+    /// # Panics
+    ///
+    /// If `k` is not the index of one of [`LoadedSystem::families`] (see
+    /// [`LoadedSystem::family`]).
     pub fn eigenvalue_at(&self, k: usize, m: i64, n: i64) -> Result<Expr, FileError> {
         let family = &self.families[k];
         let Some(text) = &family.eigenvalue else {
-            return Err(self.source.error(
+            return Err(family.source.error(
                 ErrorKind::Family,
                 family.span.clone(),
                 format!("the family '{}' declares no eigenvalue", family.name),
@@ -167,13 +172,13 @@ impl LoadedSystem {
         when: Option<&Condition>,
     ) -> Result<Fact, FileError> {
         let [m, n] = &self.families[k].indices;
+        let family = &self.families[k];
         let at = |e: trigpoly::AlgebraError| {
-            engine_error(&self.source, self.families[k].span.clone(), &e.into())
+            engine_error(&family.source, family.span.clone(), &e.into())
         };
         let eigenvalue = |i: i64, j: i64| -> Result<Expr, FileError> {
             let value = self.eigenvalue_at(k, i, j)?;
-            settled(when, value)
-                .map_err(|e| engine_error(&self.source, self.families[k].span.clone(), &e))
+            settled(when, value).map_err(|e| engine_error(&family.source, family.span.clone(), &e))
         };
         let (la, lb) = (eigenvalue(1, 0)?, eigenvalue(0, 1)?);
         let top = i64::from(d);
@@ -218,7 +223,7 @@ impl LoadedSystem {
         when: Option<&Condition>,
     ) -> Result<Entry, FileError> {
         let family = &self.families[k];
-        let source = &self.source;
+        let source = &family.source;
         let scope = Scope::of_family(self, k);
         let tree = scope.tree(source, &family.value)?;
         let [a, b] = match powers(&tree, &family.indices) {
@@ -363,12 +368,12 @@ pub fn family_tower_report(
     // Fails with a located message when the family has no eigenvalue.
     file.eigenvalue_at(k, 1, 1)?;
     let scope = Scope::of_family(file, k);
-    let value = file.pretty(&scope.tree(&file.source, &f.value)?);
-    let eigen_tree = scope.tree(&file.source, f.eigenvalue.as_ref().expect("checked"))?;
+    let value = file.pretty(&scope.tree(&f.source, &f.value)?);
+    let eigen_tree = scope.tree(&f.source, f.eigenvalue.as_ref().expect("checked"))?;
     let eigen = file.pretty_factor(&eigen_tree);
     let [m, n] = &f.indices;
     let kmn = format!("{}_{{{m},{n}}}", f.display);
-    let at = |e: &brackets::EngineError| engine_error(&file.source, f.span.clone(), e);
+    let at = |e: &brackets::EngineError| engine_error(&f.source, f.span.clone(), e);
     let tower_start = Instant::now();
     let total = (max * max) as usize;
     let mut failures = Vec::new();
