@@ -703,7 +703,24 @@ pub fn relation_text(poly: &Expr) -> String {
 }
 
 /// The report of a closure: the structure table, what lies outside, every bracket and relation
-/// proved.
+/// proved. Each generator is `(name, display name, function)`; with names the system
+/// defines, [`brackets::closure`] gives the [`Closure`] alone.
+///
+/// ```
+/// use superint::brackets::{systems, ClosureOptions};
+/// use superint::discovery::closure_report;
+///
+/// // su(2): L, G1, G2 close on themselves, {G1, G2} = −ω² L, with the Casimir of degree 2.
+/// let rotor = systems::harmonic_rotor();
+/// let generators: Vec<_> = ["L", "G1", "G2"]
+///     .iter()
+///     .map(|&n| Ok((n.to_string(), n.to_string(), rotor.get(n)?.clone())))
+///     .collect::<Result<_, superint::brackets::EngineError>>()?;
+/// let (report, algebra) = closure_report("harmonic rotor", &rotor, &generators, &ClosureOptions::new(2))?;
+/// assert!(algebra.closes() && report.all_proved());
+/// assert_eq!(algebra.render_bracket(1, 2), "−ω²L");
+/// # Ok::<(), superint::brackets::EngineError>(())
+/// ```
 pub fn closure_report(
     name: &str,
     system: &System,

@@ -309,7 +309,20 @@ impl LoadedSystem {
 /// The tower job on a system file: the family `family` (or the first with an eigenvalue),
 /// `{K_{m,n}, H} = λ(m, n) K_{m,n}` expanded for `1 ≤ m, n ≤ max`, and the proof for all
 /// `m, n` when the family is a product of powers. `progress(done, total)` is called after
-/// each bracket.
+/// each bracket. The family may be in any names, the file's or one added in code
+/// ([`LoadedSystem::add_family`]); the tower and the proof come back as
+/// [`Report::tower`] and [`Report::proof`].
+///
+/// ```
+/// use superint::system_file::{family_tower_report, load, LimitsOverride};
+///
+/// let rotor = load("systems/gravity-rotor.toml".as_ref(), &LimitsOverride::default())?;
+/// let report = family_tower_report(&rotor, None, 3, None, &mut |_done, _total| {})?;
+/// let tower = report.tower().expect("a tower");
+/// assert_eq!((tower.checked, tower.failures.len()), (9, 0));
+/// assert!(report.proof().is_some_and(|p| p.holds()));
+/// # Ok::<(), superint::system_file::FileError>(())
+/// ```
 pub fn family_tower_report(
     file: &LoadedSystem,
     family: Option<&str>,

@@ -28,6 +28,15 @@ pub struct TowerReport {
 /// any names (`superint tower --system FILE`), and so does a family added in code to a system
 /// of any names (`superint::system_file::LoadedSystem::add_family`, then
 /// `superint::system_file::family_tower_report`, which also proves it for all `m, n`).
+///
+/// ```
+/// use brackets::{check_tower, systems};
+///
+/// let rotor = systems::harmonic_rotor();
+/// let tower = check_tower(&rotor, "Z", 3, &mut |_done, _total| {})?;
+/// assert_eq!((tower.checked, tower.failures.len()), (9, 0));
+/// # Ok::<(), brackets::EngineError>(())
+/// ```
 pub fn check_tower(
     system: &System,
     ladder: &str,
@@ -99,6 +108,15 @@ impl EigenProof {
 /// with the paper's names (`omega`, `I`, `theta`, `p_theta`). For a family in other names, and
 /// any eigenvalue linear in `m, n`, `superint::system_file::family_tower_report` gives the same
 /// proof.
+///
+/// ```
+/// use brackets::{eigen_proof, systems};
+///
+/// let proof = eigen_proof(&systems::harmonic_rotor(), "Z")?;
+/// assert!(proof.holds());
+/// assert_eq!(proof.facts[0].statement, "{Z, H} = iω Z");
+/// # Ok::<(), brackets::EngineError>(())
+/// ```
 pub fn eigen_proof(system: &System, ladder: &str) -> Result<EigenProof, EngineError> {
     system.require_rotor("the eigenfunction proof of the tower")?;
     let vars = system.vars();
