@@ -25,11 +25,11 @@ fn main() -> Result<(), EngineError> {
 
     // The algebra of F2, L, P_{1,1}, Q_{1,1} at the resonance, up to degree 2.
     let p = rotor.resonant("Z", 1, 1)?;
-    let generators = vec![
-        ("F2".to_string(), "F2".to_string(), rotor.get("F2")?.clone()),
-        ("L".to_string(), "L".to_string(), rotor.get("L")?.clone()),
-        ("P".to_string(), "P".to_string(), p.p),
-        ("Q".to_string(), "Q".to_string(), p.q),
+    let generators = [
+        NamedFunction::new("F2", "F2", rotor.get("F2")?.clone()),
+        NamedFunction::new("L", "L", rotor.get("L")?.clone()),
+        NamedFunction::new("P", "P", p.p),
+        NamedFunction::new("Q", "Q", p.q),
     ];
     let (report, algebra) = closure_report(
         "harmonic rotor",
