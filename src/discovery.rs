@@ -704,7 +704,7 @@ pub fn relation_text(poly: &Expr) -> String {
 
 /// The report of a closure: the structure table, what lies outside, every bracket and relation
 /// proved. The generators need not be functions of the system (an instance `P_{1,1}`, a
-/// bracket); with names the system defines, [`brackets::closure`] gives the [`Closure`] alone.
+/// bracket); with names the system defines, [`brackets::closure()`] gives the [`Closure`] alone.
 ///
 /// ```
 /// use superint::brackets::{systems, ClosureOptions, NamedFunction};
