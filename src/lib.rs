@@ -51,6 +51,11 @@ pub mod workloads;
 #[doc = include_str!("../README.md")]
 pub struct ReadmeDoctests;
 
+// So does the Rust example of the system files' document.
+#[cfg(doctest)]
+#[doc = include_str!("../docs/system-files.md")]
+pub struct SystemFilesDoctests;
+
 /// Everything a user of the library needs: `use superint::prelude::*;`.
 pub mod prelude {
     pub use brackets::{
