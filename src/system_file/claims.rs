@@ -92,9 +92,11 @@ pub(crate) fn engine_error(source: &Source, span: Range<usize>, e: &EngineError)
     }
 }
 
-/// An engine error where no text is to blame (a computation a program asked for), so that `?`
-/// takes it in a function that returns a `FileError`: of kind [`ErrorKind::Limit`] (with the
-/// hint to raise the limit) or [`ErrorKind::Engine`], from `<program>`, without a location.
+/// An engine error in a function that returns a `FileError`, so that `?` takes it: an
+/// expression that did not parse is of kind [`ErrorKind::Expression`], from `<expression>`,
+/// at its line and column when the error has its text ([`brackets::System::parse`]'s do); a
+/// computation a program asked for is of kind [`ErrorKind::Limit`] (with the hint to raise the
+/// limit) or [`ErrorKind::Engine`], from `<program>`, without a location.
 ///
 /// ```
 /// use superint::prelude::*;
@@ -106,12 +108,41 @@ pub(crate) fn engine_error(source: &Source, span: Range<usize>, e: &EngineError)
 /// assert_eq!(rank_of_rotor(&["F1", "F2", "L"]).unwrap(), 3);
 /// let err = rank_of_rotor(&["F1", "nope"]).unwrap_err();
 /// assert_eq!((err.kind, err.message.as_str()), (ErrorKind::Engine, "unknown function 'nope'"));
+///
+/// let rotor = systems::harmonic_rotor();
+/// let err = FileError::from(rotor.parse("{L,\n G1 + }").unwrap_err());
+/// assert_eq!((err.kind, err.line_col()), (ErrorKind::Expression, Some((2, 7))));
 /// ```
 impl From<EngineError> for FileError {
     fn from(e: EngineError) -> Self {
-        let mut err = engine_error(&Source::new("<program>", ""), 0..0, &e);
-        err.location = None;
-        err
+        let expression = "<expression>";
+        match e {
+            EngineError::Parse {
+                source_text, error, ..
+            } if !source_text.is_empty() => FileError::at(
+                ErrorKind::Expression,
+                expression,
+                &source_text,
+                error.span.start..error.span.end,
+                error.message,
+            ),
+            EngineError::Parse { message, .. } => {
+                FileError::new(ErrorKind::Expression, expression, message)
+            }
+            e => {
+                let mut err = engine_error(&Source::new("<program>", ""), 0..0, &e);
+                err.location = None;
+                err
+            }
+        }
+    }
+}
+
+/// An algebraic error (a limit, a division by a polynomial, variables declared twice), as the
+/// engine's ([`EngineError::Algebra`]) becomes a `FileError`.
+impl From<AlgebraError> for FileError {
+    fn from(e: AlgebraError) -> Self {
+        EngineError::from(e).into()
     }
 }
 

@@ -326,3 +326,54 @@ fn reports_take_names_as_str() {
     let json = render(&rank, Format::Json, &RenderOptions { timings: false });
     assert!(json.contains("\"rank\": 5"), "{json}");
 }
+
+/// A program's own error type takes the engine's errors by `?` through `FileError`: a slip in
+/// an expression parsed by the engine keeps its line and column, a name declared twice (an
+/// algebra error) is refused, and the program matches on the kinds. The harmonic oscillator
+/// it builds has `{q, H} = p/m`.
+#[test]
+fn a_programs_error_type_matches_on_kinds() {
+    #[derive(Debug, PartialEq)]
+    enum Mine {
+        Input { line: usize, column: usize },
+        Other(ErrorKind),
+    }
+    impl From<FileError> for Mine {
+        fn from(e: FileError) -> Self {
+            match (e.kind, e.line_col()) {
+                (ErrorKind::Expression, Some((line, column))) => Mine::Input { line, column },
+                (kind, _) => Mine::Other(kind),
+            }
+        }
+    }
+    fn flow_of_q(h: &str, twice: bool) -> Result<String, Mine> {
+        let mut builder = VarSet::builder()
+            .coordinate("q")
+            .momentum("p")
+            .parameter("m");
+        if twice {
+            builder = builder.parameter("q");
+        }
+        let vars = builder.build().map_err(FileError::from)?;
+        let space = PhaseSpace::new(&vars, &[("q", "p")]).map_err(FileError::from)?;
+        let blank = System::new("oscillator", space, Expr::zero(&vars));
+        let system = System::new(
+            "oscillator",
+            blank.space().clone(),
+            blank.parse(h).map_err(FileError::from)?,
+        );
+        let flow = system
+            .flow(&system.parse("q").map_err(FileError::from)?)
+            .map_err(FileError::from)?;
+        Ok(flow.to_string())
+    }
+    assert_eq!(flow_of_q("p^2/(2*m) + m*q^2/2", false).unwrap(), "p/m");
+    assert_eq!(
+        flow_of_q("p^2/(2*m)\n + m*q^^2/2", false).unwrap_err(),
+        Mine::Input { line: 2, column: 8 }
+    );
+    assert_eq!(
+        flow_of_q("p^2", true).unwrap_err(),
+        Mine::Other(ErrorKind::Engine)
+    );
+}
