@@ -31,7 +31,7 @@ impl LoadedSystem {
     /// # Ok::<(), superint::system_file::FileError>(())
     /// ```
     pub fn parse(&self, src: &str) -> Result<Expr, FileError> {
-        self.value(&self.argument_from("<expression>", src)?)
+        self.value(&self.argument_in(Source::program("<expression>", src))?)
     }
 
     /// Adds a named function, as a `[[function]]` of the file declares one; `value` may use
@@ -59,7 +59,7 @@ impl LoadedSystem {
         let origin = format!("<function {name}>");
         self.check_new_name(&origin, name, "a function")?;
         check_display_in(&origin, display)?;
-        let source = Source::new(&origin, value);
+        let source = Source::program(&origin, value);
         let value = self
             .scope(self.families.len())
             .parse(&source, &Text::whole(&source))?;
@@ -241,7 +241,7 @@ impl LoadedSystem {
 /// Refuses a display name that would not print as written, at its character in a source of
 /// its own.
 fn check_display_in(origin: &str, display: &str) -> Result<(), FileError> {
-    let source = Source::new(origin, display);
+    let source = Source::program(origin, display);
     check_display(&source, &Text::whole(&source), 0..display.len())
 }
 
@@ -257,5 +257,5 @@ fn two_lines(
         None => first.to_string(),
     };
     let second_at = second.map(|s| first.len() + 1..first.len() + 1 + s.len());
-    (Source::new(origin, &text), 0..first.len(), second_at)
+    (Source::program(origin, &text), 0..first.len(), second_at)
 }

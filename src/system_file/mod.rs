@@ -213,7 +213,7 @@ impl LoadedSystem {
     /// ```
     pub fn of_system(system: System) -> Self {
         LoadedSystem {
-            source: Source::new("<program>", ""),
+            source: Source::program("<program>", ""),
             name: system.name().to_string(),
             citation: None,
             description: None,
@@ -233,12 +233,11 @@ impl LoadedSystem {
 
     /// Reads an expression given on the command line, without expanding it.
     fn argument(&self, src: &str) -> Result<Argument, FileError> {
-        self.argument_from(COMMAND_LINE, src)
+        self.argument_in(Source::new(COMMAND_LINE, src))
     }
 
-    /// Reads an expression from `origin` (as messages name it), without expanding it.
-    fn argument_from(&self, origin: &str, src: &str) -> Result<Argument, FileError> {
-        let source = Source::new(origin, src);
+    /// Reads the expression that is `source`, without expanding it.
+    fn argument_in(&self, source: Source) -> Result<Argument, FileError> {
         let text = Text::whole(&source);
         let tree = self.scope(self.families.len()).tree(&source, &text)?;
         Ok(Argument { source, text, tree })

@@ -20,6 +20,9 @@ pub struct Source {
     pub origin: String,
     /// The whole text.
     pub text: Arc<str>,
+    /// Whether a program gave the text (a function added in code, say): hints then name the
+    /// library's calls, not a file's tables.
+    pub(crate) program: bool,
 }
 
 impl Source {
@@ -28,6 +31,15 @@ impl Source {
         Source {
             origin: origin.to_string(),
             text: Arc::from(text),
+            program: false,
+        }
+    }
+
+    /// A text a program gave, named `origin` in messages.
+    pub(crate) fn program(origin: &str, text: &str) -> Self {
+        Source {
+            program: true,
+            ..Source::new(origin, text)
         }
     }
 

@@ -351,7 +351,11 @@ pub fn family_tower_report(
                 ErrorKind::Family,
                 &file.source.origin,
                 format!(
-                    "no family named '{name}' (the file declares {})",
+                    "no family named '{name}' (the {} {})",
+                    match file.source.program {
+                        true => "system has",
+                        false => "file declares",
+                    },
                     if names.is_empty() {
                         "none".to_string()
                     } else {
@@ -364,8 +368,18 @@ pub fn family_tower_report(
             .families
             .iter()
             .position(|f| f.eigenvalue.is_some())
-            .ok_or_else(|| {
-                FileError::new(
+            .ok_or_else(|| match file.source.program {
+                true => FileError::new(
+                    ErrorKind::Family,
+                    &file.source.origin,
+                    "the system has no family with an eigenvalue, so there is no tower to check",
+                )
+                .with_hint(
+                    "add one with LoadedSystem::add_family, such as add_family(\"K\", \"K\", \
+                     [\"m\", \"n\"], \"Z^m*exp(-i*n*theta)\", \
+                     Some(\"i*(m*omega - n*p_theta/I)\"))",
+                ),
+                false => FileError::new(
                     ErrorKind::Family,
                     &file.source.origin,
                     "the file declares no [[family]] with an eigenvalue, so there is no tower to \
@@ -374,7 +388,7 @@ pub fn family_tower_report(
                 .with_hint(
                     "declare one, such as name = \"K\", value = \"Z^m*exp(-i*n*theta)\", \
                      eigenvalue = \"i*(m*omega - n*p_theta/I)\" (see docs/system-files.md)",
-                )
+                ),
             })?,
     };
     let f = &file.families[k];

@@ -377,3 +377,36 @@ fn a_programs_error_type_matches_on_kinds() {
         Mine::Other(ErrorKind::Engine)
     );
 }
+
+/// What a program is told names the library's calls, not a file's tables: a system in code
+/// without a family has no tower until `add_family`, and an unknown name in a text given in
+/// code points at `add_function`. A file's messages stay the file's.
+#[test]
+fn messages_to_a_program_name_the_library() {
+    let mut rotor = own_rotor();
+    let err = family_tower_report(&rotor, None, 2, None, &mut |_, _| {}).unwrap_err();
+    assert_eq!(
+        err.message,
+        "the system has no family with an eigenvalue, so there is no tower to check"
+    );
+    assert!(err
+        .hint
+        .unwrap()
+        .starts_with("add one with LoadedSystem::add_family"));
+    let err = family_tower_report(&rotor, Some("R"), 2, None, &mut |_, _| {}).unwrap_err();
+    assert_eq!(err.message, "no family named 'R' (the system has none)");
+    let err = rotor.add_function("B", "B", "p_x + i*w*x").unwrap_err();
+    assert_eq!(
+        (err.kind, err.line_col()),
+        (ErrorKind::Expression, Some((1, 9)))
+    );
+    assert!(err.hint.unwrap().contains("LoadedSystem::add_function"));
+    let file = harmonic_rotor_file();
+    let err = family_tower_report(&file, Some("R"), 2, None, &mut |_, _| {}).unwrap_err();
+    assert_eq!(
+        err.message,
+        "no family named 'R' (the file declares K, Kbar, P, Q)"
+    );
+    let err = file.parse_argument("w").unwrap_err();
+    assert!(err.hint.unwrap().contains("[[function]]"));
+}
