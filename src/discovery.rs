@@ -20,7 +20,7 @@ use std::time::Instant;
 
 use brackets::closure::{closure_of, Bracket, Closure, ClosureOptions};
 use brackets::search::{parameter_text, search, Integral, SearchOptions, SearchResult};
-use brackets::{EngineError, System};
+use brackets::{EngineError, NamedFunction, System};
 use trigpoly::{Expr, GaussianRational, Rational, Style, Var, VarKind, VarSet};
 
 use crate::report::{
@@ -712,11 +712,28 @@ pub fn relation_text(poly: &Expr) -> String {
 }
 
 /// The report of a closure: the structure table, what lies outside, every bracket and relation
-/// proved.
+/// proved. The generators need not be functions of the system (an instance `P_{1,1}`, a
+/// bracket); with names the system defines, [`brackets::closure()`] gives the [`Closure`] alone.
+///
+/// ```
+/// use superint::brackets::{systems, ClosureOptions, NamedFunction};
+/// use superint::discovery::closure_report;
+///
+/// // su(2): L, G1, G2 close on themselves, {G1, G2} = −ω² L, with the Casimir of degree 2.
+/// let rotor = systems::harmonic_rotor();
+/// let generators: Vec<NamedFunction> = ["L", "G1", "G2"]
+///     .iter()
+///     .map(|&n| Ok(NamedFunction::new(n, n, rotor.get(n)?.clone())))
+///     .collect::<Result<_, superint::brackets::EngineError>>()?;
+/// let (report, algebra) = closure_report("harmonic rotor", &rotor, &generators, &ClosureOptions::new(2))?;
+/// assert!(algebra.closes() && report.all_proved());
+/// assert_eq!(algebra.render_bracket(1, 2), "−ω²L");
+/// # Ok::<(), superint::brackets::EngineError>(())
+/// ```
 pub fn closure_report(
     name: &str,
     system: &System,
-    generators: &[(String, String, Expr)],
+    generators: &[NamedFunction],
     options: &ClosureOptions,
 ) -> Result<(Report, Closure), EngineError> {
     let start = Instant::now();
@@ -804,7 +821,13 @@ pub fn closure_report(
         // A generator that is no integral has brackets with no reason to close among
         // integrals; what search finds closes a table of integrals.
         let mut moving = Vec::new();
-        for (g, (_, display, e)) in generators.iter().enumerate() {
+        for (
+            g,
+            NamedFunction {
+                display, expr: e, ..
+            },
+        ) in generators.iter().enumerate()
+        {
             if !outside.iter().any(|&(a, b)| a == g || b == g) {
                 continue;
             }

@@ -6,6 +6,13 @@
 //! ([`paper`]), the structured [`report`] that checking it produces, and the renderers
 //! ([`render`]) that print a report as text, Markdown, LaTeX or JSON.
 //!
+//! A system may be built in code ([`brackets::System`]) or loaded from a system file
+//! ([`system_file::load`]); either becomes a [`system_file::LoadedSystem`], to which a program
+//! adds functions, families such as `K_{m,n}` and claims in its own names
+//! ([`system_file::LoadedSystem::add_family`]), and whose claims, brackets, tables, ranks and
+//! family towers become [`report::Report`]s rendered by [`render::render`]. The examples
+//! `own_system`, `extend_file` and `discover` show each use.
+//!
 //! A program that only uses the library can depend on it with `default-features = false`:
 //! the feature `cli` (on by default) adds the command-line program and its allocator, and
 //! with them clap, indicatif and mimalloc.
@@ -44,6 +51,11 @@ pub mod workloads;
 #[doc = include_str!("../README.md")]
 pub struct ReadmeDoctests;
 
+// So does the Rust example of the system files' document.
+#[cfg(doctest)]
+#[doc = include_str!("../docs/system-files.md")]
+pub struct SystemFilesDoctests;
+
 /// Everything a user of the library needs: `use superint::prelude::*;`.
 pub mod prelude {
     pub use brackets::{
@@ -58,11 +70,17 @@ pub mod prelude {
         Var, VarKind, VarSet, Vars,
     };
 
+    pub use brackets::systems::Resonant;
+
+    pub use crate::discovery::{closure_report, search_report};
     pub use crate::paper::{tower_report, Paper, PaperOptions, TowerSystem};
     pub use crate::render::{render, Format, Options as RenderOptions};
-    pub use crate::report::{ClaimResult, Report};
+    pub use crate::report::{
+        ClaimResult, Expect, ProofResult, RankResult, Report, TableResult, TowerResult,
+    };
     pub use crate::system_file::{
-        check_report, load as load_system_file, load_str as load_system_text, FileError,
-        LimitsOverride, LoadedSystem,
+        bracket_report, check_report, expand_report, family_tower_report, load as load_system_file,
+        load_str as load_system_text, rank_report, table_report, CheckedClaim, ClaimSpec,
+        ErrorKind, Family, FileError, LimitsOverride, LoadedSystem, Location,
     };
 }

@@ -643,6 +643,28 @@ impl Report {
             })
     }
 
+    /// The first proof in the report (a tower job's proof for all `m, n`), if any.
+    ///
+    /// ```
+    /// use superint::system_file::{family_tower_report, load, LimitsOverride};
+    ///
+    /// let rotor = load("systems/harmonic-rotor.toml".as_ref(), &LimitsOverride::default())?;
+    /// let report = family_tower_report(&rotor, Some("K"), 2, None, &mut |_, _| {})?;
+    /// let proof = report.proof().expect("K_{m,n} = Z^m e^{−inθ} is a product of powers");
+    /// assert!(proof.holds());
+    /// assert_eq!(proof.facts[0].statement, "{Z, H} = (iω) Z");
+    /// # Ok::<(), superint::system_file::FileError>(())
+    /// ```
+    pub fn proof(&self) -> Option<&ProofResult> {
+        self.sections
+            .iter()
+            .flat_map(|s| &s.entries)
+            .find_map(|e| match e {
+                Entry::Proof(p) => Some(p),
+                _ => None,
+            })
+    }
+
     /// The closing line: `26 claims: 26 proved, 0 refuted (93 exact checks, 0.41 s)`, or for a
     /// tower job `tower: 64 brackets {K_{m,n}, H} = … checked for 1 ≤ m, n ≤ 8, all hold (0.04 s)`.
     /// `timings` adds the seconds.

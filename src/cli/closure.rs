@@ -5,6 +5,7 @@ use std::path::PathBuf;
 
 use anyhow::{anyhow, bail, Context};
 use brackets::closure::ClosureOptions;
+use brackets::NamedFunction;
 use clap::Args;
 use superint::discovery::{closure_report, parse_symbolic};
 use superint::render::render;
@@ -139,7 +140,7 @@ pub fn run(job: &ClosureJob) -> anyhow::Result<bool> {
             None => subject.parse(name).map_err(|e| anyhow!("{name}: {e}"))?,
         };
         let display = subject.system().display_name(name).to_string();
-        generators.push((identifier(name), display, e));
+        generators.push(NamedFunction::new(&identifier(name), &display, e));
     }
     let mut options = ClosureOptions::new(a.degree);
     options.max_monomials = usize::try_from(a.max_monomials).unwrap_or(usize::MAX);

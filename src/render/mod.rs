@@ -51,16 +51,32 @@ impl fmt::Display for Format {
     }
 }
 
+/// A format by its name (`md` for Markdown too).
+///
+/// ```
+/// use superint::render::{Format, UnknownFormat};
+///
+/// assert_eq!("json".parse(), Ok(Format::Json));
+/// assert_eq!("md".parse::<Format>(), Ok(Format::Markdown));
+/// let err = "pdf".parse::<Format>().unwrap_err();
+/// assert_eq!(err, UnknownFormat("pdf".into()));
+/// assert_eq!(err.to_string(), "unknown format 'pdf' (expected text, markdown, latex or json)");
+/// ```
 impl FromStr for Format {
-    type Err = String;
+    type Err = UnknownFormat;
 
     fn from_str(s: &str) -> Result<Self, Self::Err> {
         Format::ALL
             .into_iter()
             .find(|f| f.name() == s || (s == "md" && *f == Format::Markdown))
-            .ok_or_else(|| format!("unknown format '{s}' (expected text, markdown, latex or json)"))
+            .ok_or_else(|| UnknownFormat(s.to_string()))
     }
 }
+
+/// A name that is no [`Format`]'s: the name.
+#[derive(Clone, Debug, PartialEq, Eq, thiserror::Error)]
+#[error("unknown format '{0}' (expected text, markdown, latex or json)")]
+pub struct UnknownFormat(pub String);
 
 /// Rendering choices.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]

@@ -52,8 +52,11 @@ pub struct ClaimSpec {
     pub condition: Option<Condition>,
     /// Proved, or deliberately refuted.
     pub expect: Expect,
-    /// Where the claim's text is in the file.
+    /// Where the claim's text is in its source.
     pub span: Range<usize>,
+    /// Its source: the file's text, or for a claim added in code
+    /// ([`LoadedSystem::add_claim`]) its own.
+    pub(crate) source: Source,
 }
 
 /// A checked claim, as the report shows it.
@@ -89,6 +92,60 @@ pub(crate) fn engine_error(source: &Source, span: Range<usize>, e: &EngineError)
     }
 }
 
+/// An engine error in a function that returns a `FileError`, so that `?` takes it: an
+/// expression that did not parse is of kind [`ErrorKind::Expression`], from `<expression>`,
+/// at its line and column when the error has its text ([`brackets::System::parse`]'s do); a
+/// computation a program asked for is of kind [`ErrorKind::Limit`] (with the hint to raise the
+/// limit) or [`ErrorKind::Engine`], from `<program>`, without a location.
+///
+/// ```
+/// use superint::prelude::*;
+///
+/// fn rank_of_rotor(names: &[&str]) -> Result<usize, FileError> {
+///     let rotor = load_system_file("systems/harmonic-rotor.toml".as_ref(), &LimitsOverride::default())?;
+///     Ok(rotor.system.rank(names)?.rank)
+/// }
+/// assert_eq!(rank_of_rotor(&["F1", "F2", "L"]).unwrap(), 3);
+/// let err = rank_of_rotor(&["F1", "nope"]).unwrap_err();
+/// assert_eq!((err.kind, err.message.as_str()), (ErrorKind::Engine, "unknown function 'nope'"));
+///
+/// let rotor = systems::harmonic_rotor();
+/// let err = FileError::from(rotor.parse("{L,\n G1 + }").unwrap_err());
+/// assert_eq!((err.kind, err.line_col()), (ErrorKind::Expression, Some((2, 7))));
+/// ```
+impl From<EngineError> for FileError {
+    fn from(e: EngineError) -> Self {
+        let expression = "<expression>";
+        match e {
+            EngineError::Parse {
+                source_text, error, ..
+            } if !source_text.is_empty() => FileError::at(
+                ErrorKind::Expression,
+                expression,
+                &source_text,
+                error.span.start..error.span.end,
+                error.message,
+            ),
+            EngineError::Parse { message, .. } => {
+                FileError::new(ErrorKind::Expression, expression, message)
+            }
+            e => {
+                let mut err = engine_error(&Source::new("<program>", ""), 0..0, &e);
+                err.location = None;
+                err
+            }
+        }
+    }
+}
+
+/// An algebraic error (a limit, a division by a polynomial, variables declared twice), as the
+/// engine's ([`EngineError::Algebra`]) becomes a `FileError`.
+impl From<AlgebraError> for FileError {
+    fn from(e: AlgebraError) -> Self {
+        EngineError::from(e).into()
+    }
+}
+
 impl ClaimSpec {
     /// Reads the `k`-th claim of a file.
     pub(crate) fn parse(
@@ -99,6 +156,32 @@ impl ClaimSpec {
         let source = &file.source;
         let c = model.get_ref();
         let text = Text::in_toml(&source.text, c.claim.span(), c.claim.get_ref());
+        let id = match &c.id {
+            Some(id) if id.get_ref().trim().is_empty() => {
+                return Err(source.error(ErrorKind::Claim, id.span(), "a claim's id is empty"))
+            }
+            Some(id) => id.get_ref().clone(),
+            None => format!("#{}", k + 1),
+        };
+        let when = match &c.when {
+            None => None,
+            Some(w) => Some((condition_texts(file, w)?, w.span())),
+        };
+        let expect = c.expect.as_ref().map_or(Expect::Proved, |e| *e.get_ref());
+        ClaimSpec::read(file, source, id, text, when, expect, c.claim.span())
+    }
+
+    /// Reads a claim's text of `source` (`text`, written at `span`) with its condition's
+    /// pieces, if any, and where the condition is written.
+    pub(crate) fn read(
+        file: &LoadedSystem,
+        source: &Source,
+        id: String,
+        text: Text,
+        when: Option<(Vec<Text>, Range<usize>)>,
+        expect: Expect,
+        span: Range<usize>,
+    ) -> Result<ClaimSpec, FileError> {
         let scope = file.scope(file.families.len());
         let parts = split_top_level(&text.value, '=');
         let usage = "a claim reads `lhs = rhs`, such as \"{L, G1} = -G2\", or \
@@ -187,10 +270,10 @@ impl ClaimSpec {
                 (ClaimForm::Identity { lhs, rhs }, statement)
             }
         };
-        let condition = match &c.when {
+        let condition = match when {
             None => None,
-            Some(w) => {
-                let condition = condition(file, w)?;
+            Some((pieces, when_span)) => {
+                let condition = parse_condition(file, source, &pieces)?;
                 // A parameter set to a function of phase space (k = p_x) would change the
                 // Jacobian, not only evaluate it: its value, too, must be free of them.
                 if let (ClaimForm::Rank { .. }, Some((v, kind))) =
@@ -198,7 +281,7 @@ impl ClaimSpec {
                 {
                     return Err(source.error(
                         ErrorKind::Condition,
-                        w.span(),
+                        when_span,
                         format!(
                             "a rank claim's condition may set parameters only, to numbers or \
                              other parameters, and it holds {v}, {kind}: the rank is that of \
@@ -209,27 +292,21 @@ impl ClaimSpec {
                 Some(condition)
             }
         };
-        let id = match &c.id {
-            Some(id) if id.get_ref().trim().is_empty() => {
-                return Err(source.error(ErrorKind::Claim, id.span(), "a claim's id is empty"))
-            }
-            Some(id) => id.get_ref().clone(),
-            None => format!("#{}", k + 1),
-        };
         Ok(ClaimSpec {
             id,
             statement,
-            written: c.claim.get_ref().clone(),
+            written: text.value.clone(),
             form,
             condition,
-            expect: c.expect.as_ref().map_or(Expect::Proved, |e| *e.get_ref()),
-            span: c.claim.span(),
+            expect,
+            span,
+            source: source.clone(),
         })
     }
 }
 
-/// Reads `when`: `var = value` pieces separated by commas, or an array of them.
-fn condition(file: &LoadedSystem, when: &Spanned<When>) -> Result<Condition, FileError> {
+/// The pieces of `when`: `var = value` texts separated by commas, or an array of them.
+fn condition_texts(file: &LoadedSystem, when: &Spanned<When>) -> Result<Vec<Text>, FileError> {
     let source = &file.source;
     let pieces: Vec<Text> = match when.get_ref() {
         When::One(s) => Text::in_toml(&source.text, when.span(), s).split(','),
@@ -252,7 +329,7 @@ fn condition(file: &LoadedSystem, when: &Spanned<When>) -> Result<Condition, Fil
             "`when` is empty: give a condition such as \"p_theta = 2*I*omega/3\"",
         ));
     }
-    parse_condition(file, source, &pieces)
+    Ok(pieces)
 }
 
 /// Reads conditions `var = value` (one per text) of `source` into one substitution.
@@ -553,11 +630,11 @@ impl LoadedSystem {
     pub fn check_claim(&self, spec: &ClaimSpec) -> Result<CheckedClaim, FileError> {
         let start = Instant::now();
         let scope = self.scope(self.families.len());
-        let at = |e: &EngineError| engine_error(&self.source, spec.span.clone(), e);
+        let at = |e: &EngineError| engine_error(&spec.source, spec.span.clone(), e);
         match &spec.form {
             ClaimForm::Identity { lhs, rhs } => {
-                let l = scope.parse(&self.source, lhs)?;
-                let r = scope.parse(&self.source, rhs)?;
+                let l = scope.parse(&spec.source, lhs)?;
+                let r = scope.parse(&spec.source, rhs)?;
                 let mut claim = Claim::new(&spec.id, &spec.statement, l, r);
                 if let Some(c) = &spec.condition {
                     claim = claim.when(c.clone());
@@ -590,7 +667,7 @@ impl LoadedSystem {
             } => {
                 let mut exprs: Vec<Expr> = functions
                     .iter()
-                    .map(|(_, t)| scope.parse(&self.source, t))
+                    .map(|(_, t)| scope.parse(&spec.source, t))
                     .collect::<Result<_, _>>()?;
                 // A condition sets parameters only (checked when the claim was read).
                 if let Some(c) = &spec.condition {
@@ -601,7 +678,7 @@ impl LoadedSystem {
                         .map_err(|e| at(&e))?;
                 }
                 let mut rank = self.rank_result(
-                    &self.source,
+                    &spec.source,
                     &spec.id,
                     functions.iter().map(|f| f.0.clone()).collect(),
                     &exprs,

@@ -62,6 +62,13 @@ impl ErrorKind {
     }
 }
 
+/// The kind as [`ErrorKind::name`] writes it (`limit`).
+impl fmt::Display for ErrorKind {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.write_str(self.name())
+    }
+}
+
 /// Where in its source an error is: 1-based line and column (in characters), the source line
 /// and the caret under the offending text.
 #[derive(Clone, Debug, PartialEq, Eq)]

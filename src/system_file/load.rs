@@ -334,65 +334,7 @@ impl<'a> Builder<'a> {
     /// `_` of nothing (`a_`, `a__b`: LaTeX `a__{b}` stops pdflatex). The message points at
     /// the character.
     fn check_display(&self, display: &Spanned<String>) -> Result<(), FileError> {
-        const MARKUP: &str = "^`|\\$%&#{}~*<>\"";
-        let name = display.get_ref();
-        let text = self.text(display);
-        let refuse = |span: Range<usize>, why: &str| {
-            Err(self.error(
-                ErrorKind::Name,
-                span,
-                format!(
-                    "a display name is letters, digits, primes (G1'), a bar (Z̄), subscripts \
-                     (A_x), spaces and parentheses: {why}"
-                ),
-            ))
-        };
-        if name.is_empty() {
-            return refuse(
-                display.span(),
-                "this one is empty (leave display out to show the name)",
-            );
-        }
-        for (k, c) in name.char_indices() {
-            let here = text.source_span(Span::new(k, k + c.len_utf8()));
-            if MARKUP.contains(c) {
-                return refuse(here, &format!("'{c}' is markup in Markdown or LaTeX"));
-            }
-            if invisible(c) {
-                let code = c as u32;
-                return refuse(
-                    here,
-                    &format!("U+{code:04X} is an invisible or control character"),
-                );
-            }
-            let before = name[..k].chars().next_back();
-            let after = name[k + c.len_utf8()..].chars().next();
-            if c == ' ' && (before.is_none() || after.is_none()) {
-                return refuse(here, "it begins or ends with a space");
-            }
-            if c == '\u{304}' || unbarred(c).is_some() {
-                let letter = c != '\u{304}' || before.is_some_and(|b| b.is_alphanumeric());
-                if !letter || after.is_some_and(|a| !matches!(a, '_' | '\'' | ' ' | '(' | ')')) {
-                    return refuse(
-                        here,
-                        "a bar (U+0304) stands right after the letter or digit it is drawn over, \
-                         at the end of the name or before its '_', a prime, a space or a \
-                         parenthesis (Z̄, Z̄_x)",
-                    );
-                }
-            } else if let Some(why) = unwritable_letter(c) {
-                return refuse(here, &why);
-            }
-            let stands = |c: Option<char>| c.is_some_and(|c| c != '_' && c != ' ');
-            if c == '_' && !(stands(before) && stands(after)) {
-                return refuse(
-                    here,
-                    "a subscript '_' stands between a name and its subscript (A_x), not at an \
-                     end or beside another '_' or a space",
-                );
-            }
-        }
-        Ok(())
+        check_display(&self.source, &self.text(display), display.span())
     }
 
     fn new(source: Source, limits: &'a LimitsOverride) -> Self {
@@ -713,6 +655,7 @@ impl<'a> Builder<'a> {
                 value: self.text(&f.value),
                 eigenvalue: f.eigenvalue.as_ref().map(|e| self.text(e)),
                 span: f.name.span(),
+                source: self.source.clone(),
             });
             // Check the value and the eigenvalue on the instance (1, 1).
             let k = file.families.len() - 1;
@@ -786,4 +729,71 @@ fn later_function(
         Some(name) => e.with_hint(hint(&name)),
         None => e,
     }
+}
+
+/// Refuses a display name (`text`, written at `whole` in `source`) that would not show as
+/// written ([`Builder::check_display`] says how); the message points at the character.
+pub(crate) fn check_display(
+    source: &Source,
+    text: &Text,
+    whole: Range<usize>,
+) -> Result<(), FileError> {
+    const MARKUP: &str = "^`|\\$%&#{}~*<>\"";
+    let name = &text.value;
+    let refuse = |span: Range<usize>, why: &str| {
+        Err(source.error(
+            ErrorKind::Name,
+            span,
+            format!(
+                "a display name is letters, digits, primes (G1'), a bar (Z̄), subscripts \
+                 (A_x), spaces and parentheses: {why}"
+            ),
+        ))
+    };
+    if name.is_empty() {
+        return refuse(
+            whole.clone(),
+            "this one is empty (leave display out to show the name)",
+        );
+    }
+    for (k, c) in name.char_indices() {
+        let here = text.source_span(Span::new(k, k + c.len_utf8()));
+        if MARKUP.contains(c) {
+            return refuse(here, &format!("'{c}' is markup in Markdown or LaTeX"));
+        }
+        if invisible(c) {
+            let code = c as u32;
+            return refuse(
+                here,
+                &format!("U+{code:04X} is an invisible or control character"),
+            );
+        }
+        let before = name[..k].chars().next_back();
+        let after = name[k + c.len_utf8()..].chars().next();
+        if c == ' ' && (before.is_none() || after.is_none()) {
+            return refuse(here, "it begins or ends with a space");
+        }
+        if c == '\u{304}' || unbarred(c).is_some() {
+            let letter = c != '\u{304}' || before.is_some_and(|b| b.is_alphanumeric());
+            if !letter || after.is_some_and(|a| !matches!(a, '_' | '\'' | ' ' | '(' | ')')) {
+                return refuse(
+                    here,
+                    "a bar (U+0304) stands right after the letter or digit it is drawn over, \
+                     at the end of the name or before its '_', a prime, a space or a \
+                     parenthesis (Z̄, Z̄_x)",
+                );
+            }
+        } else if let Some(why) = unwritable_letter(c) {
+            return refuse(here, &why);
+        }
+        let stands = |c: Option<char>| c.is_some_and(|c| c != '_' && c != ' ');
+        if c == '_' && !(stands(before) && stands(after)) {
+            return refuse(
+                here,
+                "a subscript '_' stands between a name and its subscript (A_x), not at an \
+                 end or beside another '_' or a space",
+            );
+        }
+    }
+    Ok(())
 }

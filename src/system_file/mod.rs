@@ -39,6 +39,7 @@
 //! `FILE:LINE:COLUMN: message` with the source line and a caret ([`FileError`]).
 
 mod claims;
+mod code;
 mod error;
 mod load;
 mod model;
@@ -97,12 +98,19 @@ pub struct Family {
     pub value: Text,
     /// The eigenvalue `λ(m, n)` with `{K_{m,n}, H} = λ(m, n) K_{m,n}`, if declared.
     pub eigenvalue: Option<Text>,
-    /// Where the family's name is in the file.
+    /// Where the family's name is in its source.
     pub span: Range<usize>,
+    /// The source of `value` and `eigenvalue`: the file's text, or for a family added in code
+    /// ([`LoadedSystem::add_family`]) its own.
+    pub(crate) source: Source,
 }
 
 /// A loaded system file: the system (phase space, `H`, named functions), its families and
 /// claims, its limits, and the source for error messages.
+///
+/// A system built in code becomes one by [`LoadedSystem::of_system`]; functions, families and
+/// claims are added in code by [`LoadedSystem::add_function`], [`LoadedSystem::add_family`]
+/// and [`LoadedSystem::add_claim`], and read as a file's own are.
 #[derive(Debug)]
 pub struct LoadedSystem {
     /// The file's text and path as given.
@@ -168,6 +176,28 @@ struct Argument {
     tree: Tree,
 }
 
+/// A copy with the instances expanded so far.
+impl Clone for LoadedSystem {
+    fn clone(&self) -> Self {
+        let cache = self
+            .cache
+            .lock()
+            .unwrap_or_else(std::sync::PoisonError::into_inner)
+            .clone();
+        LoadedSystem {
+            source: self.source.clone(),
+            name: self.name.clone(),
+            citation: self.citation.clone(),
+            description: self.description.clone(),
+            system: self.system.clone(),
+            families: self.families.clone(),
+            claims: self.claims.clone(),
+            limits: self.limits,
+            cache: Mutex::new(cache),
+        }
+    }
+}
+
 impl LoadedSystem {
     /// A system built in code, as a file without families or claims would load: for the
     /// reports that take a loaded file ([`table_report`], [`rank_report`], [`check_report`]).
@@ -176,14 +206,14 @@ impl LoadedSystem {
     /// use superint::system_file::{table_report, LoadedSystem};
     ///
     /// let rotor = LoadedSystem::of_system(superint::brackets::systems::harmonic_rotor());
-    /// let report = table_report(&rotor, &["L".into(), "G1".into(), "G2".into()])?;
+    /// let report = table_report(&rotor, &["L", "G1", "G2"])?;
     /// assert!(superint::render::render(&report, Default::default(), &Default::default())
     ///     .contains("−ω² L"));
     /// # Ok::<(), superint::system_file::FileError>(())
     /// ```
     pub fn of_system(system: System) -> Self {
         LoadedSystem {
-            source: Source::new("<program>", ""),
+            source: Source::program("<program>", ""),
             name: system.name().to_string(),
             citation: None,
             description: None,
@@ -203,7 +233,11 @@ impl LoadedSystem {
 
     /// Reads an expression given on the command line, without expanding it.
     fn argument(&self, src: &str) -> Result<Argument, FileError> {
-        let source = Source::new(COMMAND_LINE, src);
+        self.argument_in(Source::new(COMMAND_LINE, src))
+    }
+
+    /// Reads the expression that is `source`, without expanding it.
+    fn argument_in(&self, source: Source) -> Result<Argument, FileError> {
         let text = Text::whole(&source);
         let tree = self.scope(self.families.len()).tree(&source, &text)?;
         Ok(Argument { source, text, tree })
@@ -215,7 +249,13 @@ impl LoadedSystem {
             .lower(&arg.source, &arg.text, &arg.tree)
     }
 
-    /// The instance `family_{m,n}` of a family, expanded (and cached).
+    /// The instance `family_{m,n}` of a family, expanded (and cached); by name,
+    /// [`LoadedSystem::parse`] of `K_2_3` gives the same.
+    ///
+    /// # Panics
+    ///
+    /// If `family` is not the index of one of [`LoadedSystem::families`] (see
+    /// [`LoadedSystem::family`]).
     pub fn family_instance(&self, family: usize, m: i64, n: i64) -> Result<Expr, FileError> {
         self.scope(self.families.len())
             .expand(family, m, n, &self.source, 0..0)

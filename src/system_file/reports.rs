@@ -77,10 +77,14 @@ pub(super) fn command_error(e: &brackets::EngineError) -> FileError {
 /// Checks every claim of every file: one section per file (its source, its Hamiltonian, its
 /// claims proved or refuted, ranks with their certificates). The first error, of any file,
 /// is the answer; [`check_each`] goes on past it.
-pub fn check_report(files: &[LoadedSystem]) -> Result<Report, FileError> {
+///
+/// It takes a slice or vector of loaded systems, or references to them: `check_report([&file])`.
+pub fn check_report<'a>(
+    files: impl IntoIterator<Item = &'a LoadedSystem>,
+) -> Result<Report, FileError> {
     let start = Instant::now();
     let sections = files
-        .iter()
+        .into_iter()
         .map(LoadedSystem::checked_section)
         .collect::<Result<Vec<_>, _>>()?;
     Ok(checked_files(sections, start))
@@ -251,7 +255,7 @@ impl LoadedSystem {
 
 /// The bracket table of named functions (or family instances such as `K_1_1`) of the file;
 /// all its functions but `H` when `names` is empty.
-pub fn table_report(file: &LoadedSystem, names: &[String]) -> Result<Report, FileError> {
+pub fn table_report(file: &LoadedSystem, names: &[impl AsRef<str>]) -> Result<Report, FileError> {
     let start = Instant::now();
     let defined: Vec<String> = file
         .system
@@ -264,8 +268,8 @@ pub fn table_report(file: &LoadedSystem, names: &[String]) -> Result<Report, Fil
     let names: Vec<String> = if names.is_empty() {
         defined.clone()
     } else {
-        let braces = |n: &String| rewrite_braces(n, &file.families, &[]).trim().to_string();
-        names.iter().map(braces).collect()
+        let braces = |n: &str| rewrite_braces(n, &file.families, &[]).trim().to_string();
+        names.iter().map(|n| braces(n.as_ref())).collect()
     };
     if names.is_empty() {
         return Err(FileError::new(
@@ -333,13 +337,13 @@ pub fn table_report(file: &LoadedSystem, names: &[String]) -> Result<Report, Fil
 /// coordinates; with `expected`, a claim that the rank is that.
 pub fn rank_report(
     file: &LoadedSystem,
-    functions: &[String],
+    functions: &[impl AsRef<str>],
     expected: Option<usize>,
 ) -> Result<Report, FileError> {
     let start = Instant::now();
     let parsed = functions
         .iter()
-        .map(|f| file.argument(f))
+        .map(|f| file.argument(f.as_ref()))
         .collect::<Result<Vec<_>, _>>()?;
     let mut names = Vec::new();
     let mut exprs = Vec::new();
@@ -348,7 +352,8 @@ pub fn rank_report(
         names.push(name);
         exprs.push(value);
     }
-    let source = Source::new(COMMAND_LINE, &functions.join(" "));
+    let written: Vec<&str> = functions.iter().map(AsRef::as_ref).collect();
+    let source = Source::new(COMMAND_LINE, &written.join(" "));
     let mut rank = file.rank_result(
         &source,
         "rank",

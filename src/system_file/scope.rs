@@ -215,6 +215,11 @@ const UNKNOWN_NAME_HINT: &str = "a constant such as a mass is declared under [ph
     parameters, a named function with [[function]], a family with [[family]] (used as K_2_3); \
     see docs/system-files.md";
 
+/// The hint that goes with an unknown name in a text a program gave.
+const UNKNOWN_NAME_HINT_IN_CODE: &str = "a constant such as a mass is a parameter of the \
+    system's VarSet, a named function is added with LoadedSystem::add_function, a family with \
+    LoadedSystem::add_family (used as K_2_3)";
+
 /// An expression error at a span of a text, classified as a limit error when it is one.
 pub(crate) fn expression_error(source: &Source, text: &Text, e: &ParseError) -> FileError {
     let message = relocate_opener(source, text, e);
@@ -222,8 +227,12 @@ pub(crate) fn expression_error(source: &Source, text: &Text, e: &ParseError) -> 
         text.error(source, ErrorKind::Limit, e.span, message)
             .with_hint(LIMIT_HINT)
     } else if message.starts_with("unknown name") {
+        let hint = match source.program {
+            true => UNKNOWN_NAME_HINT_IN_CODE,
+            false => UNKNOWN_NAME_HINT,
+        };
         text.error(source, ErrorKind::Expression, e.span, message)
-            .with_hint(UNKNOWN_NAME_HINT)
+            .with_hint(hint)
     } else {
         text.error(source, ErrorKind::Expression, e.span, message)
     }
@@ -492,9 +501,9 @@ impl LoadedSystem {
     ) -> Result<Expr, FileError> {
         let family = &self.families[k];
         let scope = Scope::of_family(self, k);
-        let tree = scope.tree(&self.source, text)?;
+        let tree = scope.tree(&family.source, text)?;
         let tree = substitute(&tree, &family.indices, [m, n], &self.families[..k]);
-        scope.lower(&self.source, text, &tree)
+        scope.lower(&family.source, text, &tree)
     }
 }
 
@@ -547,6 +556,7 @@ mod tests {
             value: Text::whole(&Source::new("t", "Z")),
             eigenvalue: None,
             span: 0..0,
+            source: Source::new("t", "Z"),
         };
         let s = "{K_{2, 3}, H} + L_{1,1}";
         let r = rewrite_braces(s, std::slice::from_ref(&fam), &[]);

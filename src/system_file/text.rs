@@ -20,6 +20,9 @@ pub struct Source {
     pub origin: String,
     /// The whole text.
     pub text: Arc<str>,
+    /// Whether a program gave the text (a function added in code, say): hints then name the
+    /// library's calls, not a file's tables.
+    pub(crate) program: bool,
 }
 
 impl Source {
@@ -28,6 +31,15 @@ impl Source {
         Source {
             origin: origin.to_string(),
             text: Arc::from(text),
+            program: false,
+        }
+    }
+
+    /// A text a program gave, named `origin` in messages.
+    pub(crate) fn program(origin: &str, text: &str) -> Self {
+        Source {
+            program: true,
+            ..Source::new(origin, text)
         }
     }
 
@@ -61,6 +73,15 @@ impl Text {
             value: source.text.to_string(),
             offset: Some(0),
             anchor: 0,
+        }
+    }
+
+    /// The bytes `range` of `source`, whose text is the value itself (a text given in code).
+    pub(crate) fn within(source: &Source, range: Range<usize>) -> Self {
+        Text {
+            value: source.text[range.clone()].to_string(),
+            offset: Some(range.start),
+            anchor: range.start,
         }
     }
 

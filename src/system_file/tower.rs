@@ -143,10 +143,15 @@ impl LoadedSystem {
     /// `λ(m, n)` of family `k`.
     ///
     /// Errors if the family has no eigenvalue.
+    ///
+    /// # Panics
+    ///
+    /// If `k` is not the index of one of [`LoadedSystem::families`] (see
+    /// [`LoadedSystem::family`]).
     pub fn eigenvalue_at(&self, k: usize, m: i64, n: i64) -> Result<Expr, FileError> {
         let family = &self.families[k];
         let Some(text) = &family.eigenvalue else {
-            return Err(self.source.error(
+            return Err(family.source.error(
                 ErrorKind::Family,
                 family.span.clone(),
                 format!("the family '{}' declares no eigenvalue", family.name),
@@ -167,13 +172,13 @@ impl LoadedSystem {
         when: Option<&Condition>,
     ) -> Result<Fact, FileError> {
         let [m, n] = &self.families[k].indices;
+        let family = &self.families[k];
         let at = |e: trigpoly::AlgebraError| {
-            engine_error(&self.source, self.families[k].span.clone(), &e.into())
+            engine_error(&family.source, family.span.clone(), &e.into())
         };
         let eigenvalue = |i: i64, j: i64| -> Result<Expr, FileError> {
             let value = self.eigenvalue_at(k, i, j)?;
-            settled(when, value)
-                .map_err(|e| engine_error(&self.source, self.families[k].span.clone(), &e))
+            settled(when, value).map_err(|e| engine_error(&family.source, family.span.clone(), &e))
         };
         let (la, lb) = (eigenvalue(1, 0)?, eigenvalue(0, 1)?);
         let top = i64::from(d);
@@ -218,7 +223,7 @@ impl LoadedSystem {
         when: Option<&Condition>,
     ) -> Result<Entry, FileError> {
         let family = &self.families[k];
-        let source = &self.source;
+        let source = &family.source;
         let scope = Scope::of_family(self, k);
         let tree = scope.tree(source, &family.value)?;
         let [a, b] = match powers(&tree, &family.indices) {
@@ -304,7 +309,20 @@ impl LoadedSystem {
 /// The tower job on a system file: the family `family` (or the first with an eigenvalue),
 /// `{K_{m,n}, H} = λ(m, n) K_{m,n}` expanded for `1 ≤ m, n ≤ max`, and the proof for all
 /// `m, n` when the family is a product of powers. `progress(done, total)` is called after
-/// each bracket.
+/// each bracket. The family may be in any names, the file's or one added in code
+/// ([`LoadedSystem::add_family`]); the tower and the proof come back as
+/// [`Report::tower`] and [`Report::proof`].
+///
+/// ```
+/// use superint::system_file::{family_tower_report, load, LimitsOverride};
+///
+/// let rotor = load("systems/gravity-rotor.toml".as_ref(), &LimitsOverride::default())?;
+/// let report = family_tower_report(&rotor, None, 3, None, &mut |_done, _total| {})?;
+/// let tower = report.tower().expect("a tower");
+/// assert_eq!((tower.checked, tower.failures.len()), (9, 0));
+/// assert!(report.proof().is_some_and(|p| p.holds()));
+/// # Ok::<(), superint::system_file::FileError>(())
+/// ```
 pub fn family_tower_report(
     file: &LoadedSystem,
     family: Option<&str>,
@@ -333,7 +351,11 @@ pub fn family_tower_report(
                 ErrorKind::Family,
                 &file.source.origin,
                 format!(
-                    "no family named '{name}' (the file declares {})",
+                    "no family named '{name}' (the {} {})",
+                    match file.source.program {
+                        true => "system has",
+                        false => "file declares",
+                    },
                     if names.is_empty() {
                         "none".to_string()
                     } else {
@@ -346,8 +368,18 @@ pub fn family_tower_report(
             .families
             .iter()
             .position(|f| f.eigenvalue.is_some())
-            .ok_or_else(|| {
-                FileError::new(
+            .ok_or_else(|| match file.source.program {
+                true => FileError::new(
+                    ErrorKind::Family,
+                    &file.source.origin,
+                    "the system has no family with an eigenvalue, so there is no tower to check",
+                )
+                .with_hint(
+                    "add one with LoadedSystem::add_family, such as add_family(\"K\", \"K\", \
+                     [\"m\", \"n\"], \"Z^m*exp(-i*n*theta)\", \
+                     Some(\"i*(m*omega - n*p_theta/I)\"))",
+                ),
+                false => FileError::new(
                     ErrorKind::Family,
                     &file.source.origin,
                     "the file declares no [[family]] with an eigenvalue, so there is no tower to \
@@ -356,19 +388,19 @@ pub fn family_tower_report(
                 .with_hint(
                     "declare one, such as name = \"K\", value = \"Z^m*exp(-i*n*theta)\", \
                      eigenvalue = \"i*(m*omega - n*p_theta/I)\" (see docs/system-files.md)",
-                )
+                ),
             })?,
     };
     let f = &file.families[k];
     // Fails with a located message when the family has no eigenvalue.
     file.eigenvalue_at(k, 1, 1)?;
     let scope = Scope::of_family(file, k);
-    let value = file.pretty(&scope.tree(&file.source, &f.value)?);
-    let eigen_tree = scope.tree(&file.source, f.eigenvalue.as_ref().expect("checked"))?;
+    let value = file.pretty(&scope.tree(&f.source, &f.value)?);
+    let eigen_tree = scope.tree(&f.source, f.eigenvalue.as_ref().expect("checked"))?;
     let eigen = file.pretty_factor(&eigen_tree);
     let [m, n] = &f.indices;
     let kmn = format!("{}_{{{m},{n}}}", f.display);
-    let at = |e: &brackets::EngineError| engine_error(&file.source, f.span.clone(), e);
+    let at = |e: &brackets::EngineError| engine_error(&f.source, f.span.clone(), e);
     let tower_start = Instant::now();
     let total = (max * max) as usize;
     let mut failures = Vec::new();

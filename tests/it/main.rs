@@ -1,5 +1,6 @@
 //! Integration tests. `claims`: every claim of the paper (ids of `docs/claims.md`), each proved
 //! exactly beside a false neighbour that the engine must refute with the exact residual.
+//! `library`: the library as a program uses it, a system built or extended in code.
 
 use brackets::{Claim, Condition, Outcome, System};
 
@@ -106,6 +107,7 @@ pub const PENDULUM: &str = "name = \"pendulum\"\nhamiltonian = \"p_t^2/2 - g*cos
 mod claims;
 mod cli;
 mod discovery;
+mod library;
 mod system_files;
 
 /// The search space of degree 1 in the momenta and the positions and trigonometric order 1.

@@ -34,7 +34,7 @@ use crate::error::EngineError;
 use crate::modular::{self, Echelon, Fp, SparseVec};
 use crate::scaling::{Lifter, Scaling};
 use crate::search::{check_parameters, fix_parameters, is_phase_free};
-use crate::system::System;
+use crate::system::{NamedFunction, System};
 use crate::table::{BracketTable, Entry};
 
 /// What to compute.
@@ -288,12 +288,12 @@ pub fn closure(
     names: &[&str],
     options: &ClosureOptions,
 ) -> Result<Closure, EngineError> {
-    let gens: Vec<(String, String, Expr)> = names
+    let gens: Vec<NamedFunction> = names
         .iter()
         .map(|n| {
-            Ok((
-                n.to_string(),
-                system.display_name(n).to_string(),
+            Ok(NamedFunction::new(
+                n,
+                system.display_name(n),
                 system.get(n)?.clone(),
             ))
         })
@@ -301,21 +301,22 @@ pub fn closure(
     closure_of(system, &gens, options)
 }
 
-/// The closure of generators given as `(name, display name, function)`.
+/// The closure of generators given as named functions (name, display name, function), which
+/// need not be functions of the system.
 pub fn closure_of(
     system: &System,
-    generators: &[(String, String, Expr)],
+    generators: &[NamedFunction],
     options: &ClosureOptions,
 ) -> Result<Closure, EngineError> {
     let start = Instant::now();
     let mut timings = ClosureTimings::default();
     let twice = (1..generators.len())
-        .find(|&k| generators[..k].iter().any(|h| h.0 == generators[k].0))
+        .find(|&k| generators[..k].iter().any(|h| h.name == generators[k].name))
         .map(|k| &generators[k]);
     if let Some(g) = twice {
         return Err(EngineError::Invalid(format!(
             "{} is named twice among the generators",
-            g.0
+            g.name
         )));
     }
     let vars = system.vars().clone();
@@ -333,12 +334,12 @@ pub fn closure_of(
     // Symbolic generators and brackets, after the condition.
     let g_sym: Vec<Expr> = generators
         .iter()
-        .map(|g| restrict(g.2.clone()))
+        .map(|g| restrict(g.expr.clone()))
         .collect::<Result<_, _>>()?;
     let mut b_sym: HashMap<(usize, usize), Expr> = HashMap::new();
     for a in 0..r {
         for b in a + 1..r {
-            let br = system.bracket(&generators[a].2, &generators[b].2)?;
+            let br = system.bracket(&generators[a].expr, &generators[b].expr)?;
             b_sym.insert((a, b), restrict(br)?);
         }
     }
@@ -547,7 +548,7 @@ pub fn closure_of(
         }
     }
     let mut shown = builder.clone();
-    for (name, display, _) in generators {
+    for NamedFunction { name, display, .. } in generators {
         if vars
             .lookup(name)
             .is_some_and(|v| vars.variable(v).kind() == VarKind::Parameter)
@@ -567,7 +568,7 @@ pub fn closure_of(
         .map_err(|e| EngineError::Invalid(format!("cannot name the generators: {e}")))?;
     let symbols: Vec<Var> = generators
         .iter()
-        .map(|g| ring.lookup(&g.0).expect("declared"))
+        .map(|g| ring.lookup(&g.name).expect("declared"))
         .collect();
     let param_in_ring: HashMap<Var, Var> = vars
         .vars()
@@ -583,7 +584,10 @@ pub fn closure_of(
     // Lifting.
     let scaling = Scaling::of_functions(
         system.space(),
-        &generators.iter().map(|g| g.2.clone()).collect::<Vec<_>>(),
+        &generators
+            .iter()
+            .map(|g| g.expr.clone())
+            .collect::<Vec<_>>(),
         condition,
     )?;
     // The parameters that the lift must restore: those of the generators that are not
@@ -745,8 +749,8 @@ pub fn closure_of(
     timings.proofs = t.elapsed().as_secs_f64();
     timings.total = start.elapsed().as_secs_f64();
     Ok(Closure {
-        names: generators.iter().map(|g| g.0.clone()).collect(),
-        display: generators.iter().map(|g| g.1.clone()).collect(),
+        names: generators.iter().map(|g| g.name.clone()).collect(),
+        display: generators.iter().map(|g| g.display.clone()).collect(),
         ring,
         symbols: symbols[..r].to_vec(),
         degree: options.degree,

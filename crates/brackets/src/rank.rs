@@ -58,6 +58,24 @@ const CIRCLE: [(i64, i64, i64); 4] = [(3, 4, 5), (5, 12, 13), (8, 15, 17), (7, 2
 const PRIMES: [i64; 16] = [2, 3, 5, 7, 11, 13, 17, 19, 23, 29, 31, 37, 41, 43, 47, 53];
 
 /// Certifies the rank of the Jacobian of `functions` by the phase-space coordinates.
+///
+/// ```
+/// use brackets::{rank, systems, UpperBound};
+///
+/// // C17: F1, F2, G1, G2 and P_{1,1} are functionally independent; L, G1, G2 and F1 − F2
+/// // are not (the Casimir 4G1² + G2² + ω²L² = (F1 − F2)² ties them).
+/// let rotor = systems::harmonic_rotor();
+/// let get = |name: &str| rotor.get(name).cloned();
+/// let mut five = vec![get("F1")?, get("F2")?, get("G1")?, get("G2")?];
+/// five.push(rotor.resonant("Z", 1, 1)?.p);
+/// let certificate = rank(rotor.space(), &five)?;
+/// assert_eq!(certificate.rank, 5);
+/// assert!(!certificate.minor_value.is_zero());
+/// let tied = rank(rotor.space(), &[get("F1")?, get("F2")?, get("L")?, get("G1")?, get("G2")?])?;
+/// assert_eq!(tied.rank, 4);
+/// assert!(matches!(tied.upper, UpperBound::VanishingMinors { .. }));
+/// # Ok::<(), brackets::EngineError>(())
+/// ```
 pub fn rank(space: &PhaseSpace, functions: &[Expr]) -> Result<RankCertificate, EngineError> {
     let coords = space.coordinates();
     let jac: Vec<Vec<Expr>> = functions

@@ -7,7 +7,7 @@ use crate::claim::Condition;
 use crate::error::EngineError;
 use crate::phase::PhaseSpace;
 
-/// A named function of a system (`L`, `G1`, `Z̄`).
+/// A named function of a system (`L`, `G1`, `Z̄`), or a generator of a closure.
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub struct NamedFunction {
     /// The ASCII name used in expressions (`Zbar`).
@@ -16,6 +16,17 @@ pub struct NamedFunction {
     pub display: String,
     /// The function.
     pub expr: Expr,
+}
+
+impl NamedFunction {
+    /// A function with its name and the name it is printed by.
+    pub fn new(name: &str, display: &str, expr: Expr) -> Self {
+        NamedFunction {
+            name: name.to_string(),
+            display: display.to_string(),
+            expr,
+        }
+    }
 }
 
 /// A Hamiltonian system: phase space, Hamiltonian `H`, and named functions.

@@ -25,7 +25,18 @@ pub struct TowerReport {
 /// Checks `{K_{m,n}, H} = i(mω − nΩ)K_{m,n}` with `Ω = p_θ/I` by expanding every bracket, for
 /// all `1 ≤ m, n ≤ max`; `progress(done, total)` is called after each pair. The system must be a
 /// rotor in the paper's names (`omega`, `I`, `theta`, `p_theta`); a system file's family takes
-/// any names (`superint tower --system FILE`).
+/// any names (`superint tower --system FILE`), and so does a family added in code to a system
+/// of any names (`superint::system_file::LoadedSystem::add_family`, then
+/// `superint::system_file::family_tower_report`, which also proves it for all `m, n`).
+///
+/// ```
+/// use brackets::{check_tower, systems};
+///
+/// let rotor = systems::harmonic_rotor();
+/// let tower = check_tower(&rotor, "Z", 3, &mut |_done, _total| {})?;
+/// assert_eq!((tower.checked, tower.failures.len()), (9, 0));
+/// # Ok::<(), brackets::EngineError>(())
+/// ```
 pub fn check_tower(
     system: &System,
     ladder: &str,
@@ -94,7 +105,18 @@ impl EigenProof {
 
 /// Proves `{K_{m,n}, H} = i(mω − nΩ)K_{m,n}` and `{K̄_{m,n}, H} = −i(mω − nΩ)K̄_{m,n}` for all
 /// `m, n ≥ 0` from `{Z, H} = iωZ`, `{e^{−iθ}, H} = −iΩe^{−iθ}` and their conjugates, in a rotor
-/// with the paper's names (`omega`, `I`, `theta`, `p_theta`).
+/// with the paper's names (`omega`, `I`, `theta`, `p_theta`). For a family in other names, and
+/// any eigenvalue linear in `m, n`, `superint::system_file::family_tower_report` gives the same
+/// proof.
+///
+/// ```
+/// use brackets::{eigen_proof, systems};
+///
+/// let proof = eigen_proof(&systems::harmonic_rotor(), "Z")?;
+/// assert!(proof.holds());
+/// assert_eq!(proof.facts[0].statement, "{Z, H} = iω Z");
+/// # Ok::<(), brackets::EngineError>(())
+/// ```
 pub fn eigen_proof(system: &System, ladder: &str) -> Result<EigenProof, EngineError> {
     system.require_rotor("the eigenfunction proof of the tower")?;
     let vars = system.vars();

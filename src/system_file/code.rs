@@ -1,0 +1,261 @@
+//! A loaded system extended in code: functions, families and claims added by a program, each
+//! read and checked as a file's own are, with errors located in the text the program gave
+//! (`<family K>:2:7: unknown name 'Omegaa'`, the line and a caret).
+
+use std::ops::Range;
+
+use trigpoly::{is_identifier, latex_unwritable, Expr};
+
+use super::claims::ClaimSpec;
+use super::error::{ErrorKind, FileError};
+use super::load::{check_display, reserved, unwritable_letter};
+use super::text::{Source, Text};
+use super::{Family, LoadedSystem};
+use crate::report::Expect;
+
+impl LoadedSystem {
+    /// Parses an expression in the system's variables, named functions, family instances
+    /// (`K_2_3` or `K_{2,3}`) and brackets, as a claim's side is read; an error names the
+    /// `<expression>` with line, column and caret.
+    ///
+    /// ```
+    /// use superint::system_file::{load, LimitsOverride};
+    ///
+    /// let rotor = load("systems/harmonic-rotor.toml".as_ref(), &LimitsOverride::default())?;
+    /// // K_{1,1} = Z e^{−iθ}, and P_{1,1} its real part.
+    /// let k = rotor.parse("K_{1,1}")?;
+    /// assert_eq!(rotor.parse("(K_1_1 + Kbar_1_1)/2")?, rotor.parse("P_1_1")?);
+    /// assert_eq!(k, rotor.parse("Z*exp(-i*theta)")?);
+    /// let err = rotor.parse("K_1_1 + G3").unwrap_err();
+    /// assert_eq!(err.line_col(), Some((1, 9)));
+    /// # Ok::<(), superint::system_file::FileError>(())
+    /// ```
+    pub fn parse(&self, src: &str) -> Result<Expr, FileError> {
+        self.value(&self.argument_in(Source::program("<expression>", src))?)
+    }
+
+    /// Adds a named function, as a `[[function]]` of the file declares one; `value` may use
+    /// the variables, `H`, the functions and the family instances. A name that the system
+    /// already has (a variable in any spelling, a function, a family), a reserved or malformed
+    /// name, or a display name that would not print is refused, and the system is unchanged.
+    ///
+    /// ```
+    /// use superint::system_file::{load, ErrorKind, LimitsOverride};
+    ///
+    /// let mut rotor = load("systems/harmonic-rotor.toml".as_ref(), &LimitsOverride::default())?;
+    /// rotor.add_function("Casimir", "C", "4*G1^2 + G2^2 + omega^2*L^2")?;
+    /// assert_eq!(rotor.parse("Casimir")?, rotor.parse("(F1 - F2)^2")?);
+    /// let err = rotor.add_function("L", "L", "x").unwrap_err();
+    /// assert_eq!(err.kind, ErrorKind::Name);
+    /// assert_eq!(err.message, "'L' is already a function of the system");
+    /// # Ok::<(), superint::system_file::FileError>(())
+    /// ```
+    pub fn add_function(
+        &mut self,
+        name: &str,
+        display: &str,
+        value: &str,
+    ) -> Result<(), FileError> {
+        let origin = format!("<function {name}>");
+        self.check_new_name(&origin, name, "a function")?;
+        check_display_in(&origin, display)?;
+        let source = Source::program(&origin, value);
+        let value = self
+            .scope(self.families.len())
+            .parse(&source, &Text::whole(&source))?;
+        self.system.define(name, display, value);
+        Ok(())
+    }
+
+    /// Adds a family with two integer indices, as a `[[family]]` of the file declares one:
+    /// its instances `name_i_j` (or `name_{i,j}`) are `value` with `i, j` for the indices, and
+    /// `eigenvalue`, if given, is `λ` in `{name_{m,n}, H} = λ(m, n) name_{m,n}`, which
+    /// [`family_tower_report`](super::family_tower_report) checks for `1 ≤ m, n ≤ N` and proves
+    /// for all `m, n`. The value and the eigenvalue are read at `(1, 1)` at once; an error there,
+    /// or a name already taken, leaves the system unchanged. Errors in the value are at line 1
+    /// of `<family NAME>`, in the eigenvalue at line 2.
+    ///
+    /// ```
+    /// use superint::prelude::*;
+    ///
+    /// // The 2-d isotropic oscillator with its ladder functions, in code, with names of our own.
+    /// let vars = VarSet::builder()
+    ///     .coordinate("x").coordinate("y").momentum("p_x").momentum("p_y").parameter("k")
+    ///     .build()?;
+    /// let space = PhaseSpace::new(&vars, &[("x", "p_x"), ("y", "p_y")])?;
+    /// let h = Expr::parse(&vars, "(p_x^2 + p_y^2)/2 + k^2*(x^2 + y^2)/2")?;
+    /// let mut oscillator = LoadedSystem::of_system(System::new("oscillator", space, h));
+    /// oscillator.add_function("A", "A", "p_x + i*k*x")?;
+    /// oscillator.add_function("B", "B", "p_y - i*k*y")?;
+    /// // {A^a B^b, H} = i(a − b)k A^a B^b: conserved on the diagonal a = b.
+    /// oscillator.add_family("T", "T", ["a", "b"], "A^a*B^b", Some("i*(a - b)*k"))?;
+    /// let report = family_tower_report(&oscillator, Some("T"), 3, None, &mut |_, _| {})?;
+    /// assert!(report.all_proved());
+    /// assert_eq!(report.tower().map(|t| t.checked), Some(9));
+    /// assert!(report.proof().is_some_and(|p| p.holds()));
+    /// # Ok::<(), Box<dyn std::error::Error>>(())
+    /// ```
+    pub fn add_family(
+        &mut self,
+        name: &str,
+        display: &str,
+        indices: [&str; 2],
+        value: &str,
+        eigenvalue: Option<&str>,
+    ) -> Result<(), FileError> {
+        let origin = format!("<family {name}>");
+        self.check_new_name(&origin, name, "a family")?;
+        check_display_in(&origin, display)?;
+        for (k, index) in indices.iter().enumerate() {
+            let refuse = |kind, message: String| Err(FileError::new(kind, &origin, message));
+            if !is_identifier(index) || index.contains('_') || *index == "i" {
+                return refuse(
+                    ErrorKind::Family,
+                    format!("'{index}' cannot name an index: use a plain name such as m or n"),
+                );
+            }
+            if let Some(why) = latex_unwritable(index).and_then(unwritable_letter) {
+                return refuse(
+                    ErrorKind::Name,
+                    format!("'{index}' cannot name an index: {why}"),
+                );
+            }
+            if let Some(what) = self.what_is(index) {
+                return refuse(
+                    ErrorKind::Family,
+                    format!("the index '{index}' is already {what}"),
+                );
+            }
+            if k == 1 && indices[0] == *index {
+                return refuse(
+                    ErrorKind::Family,
+                    format!("the two indices are both named '{index}'"),
+                );
+            }
+        }
+        let (source, value_at, eigenvalue_at) = two_lines(&origin, value, eigenvalue);
+        self.families.push(Family {
+            name: name.to_string(),
+            display: display.to_string(),
+            indices: indices.map(str::to_string),
+            value: Text::within(&source, value_at.clone()),
+            eigenvalue: eigenvalue_at.map(|at| Text::within(&source, at)),
+            span: value_at,
+            source: source.clone(),
+        });
+        // Read at (1, 1), as a file's family is when it loads.
+        let k = self.families.len() - 1;
+        let checked =
+            self.scope(k + 1)
+                .expand(k, 1, 1, &source, 0..0)
+                .and_then(|_| match eigenvalue {
+                    Some(_) => self.eigenvalue_at(k, 1, 1).map(drop),
+                    None => Ok(()),
+                });
+        if let Err(e) = checked {
+            self.families.pop();
+            self.forget_instances(k);
+            return Err(e);
+        }
+        Ok(())
+    }
+
+    /// Adds a claim, as a `[[claim]]` of the file declares one: `lhs = rhs` (brackets, family
+    /// instances) or `rank(F, G, …) = r`, under the condition `when` if given
+    /// (`"p_theta = I*omega"`, several separated by commas). It is read at once and checked by
+    /// [`LoadedSystem::check_claim`] or with the others by
+    /// [`check_report`](super::check_report); it is expected to be proved, unless its `expect`
+    /// is set to [`Expect::Refuted`]. Errors in the claim are at line 1 of `<claim ID>`, in
+    /// the condition at line 2.
+    ///
+    /// ```
+    /// use superint::prelude::*;
+    ///
+    /// let mut rotor = load_system_file("systems/harmonic-rotor.toml".as_ref(), &LimitsOverride::default())?;
+    /// rotor.add_claim("mine", "{K_2_1, H} = 0", Some("p_theta = 2*I*omega"))?;
+    /// rotor.add_claim("off", "{K_2_1, H} = 0", Some("p_theta = I*omega"))?.expect = Expect::Refuted;
+    /// let report = check_report([&rotor])?;
+    /// assert!(report.all_as_expected());
+    /// assert_eq!(report.claim_ids().last(), Some(&("off".to_string(), false)));
+    /// # Ok::<(), FileError>(())
+    /// ```
+    pub fn add_claim(
+        &mut self,
+        id: &str,
+        claim: &str,
+        when: Option<&str>,
+    ) -> Result<&mut ClaimSpec, FileError> {
+        let origin = format!("<claim {id}>");
+        if id.trim().is_empty() {
+            return Err(FileError::new(
+                ErrorKind::Claim,
+                &origin,
+                "a claim's id is empty",
+            ));
+        }
+        let (source, claim_at, when_at) = two_lines(&origin, claim, when);
+        let text = Text::within(&source, claim_at.clone());
+        let when = when_at.map(|at| (Text::within(&source, at.clone()).split(','), at));
+        let spec = ClaimSpec::read(
+            self,
+            &source,
+            id.to_string(),
+            text,
+            when,
+            Expect::Proved,
+            claim_at,
+        )?;
+        self.claims.push(spec);
+        Ok(self.claims.last_mut().expect("just pushed"))
+    }
+
+    /// Refuses `name` for a new function or family (`what`) when it is malformed, reserved,
+    /// or already names something of the system.
+    fn check_new_name(&self, origin: &str, name: &str, what: &str) -> Result<(), FileError> {
+        let message = if !is_identifier(name) {
+            format!(
+                "'{name}' cannot name {what}: a name is letters, digits and '_', starting with \
+                 a letter or '_'"
+            )
+        } else if let Some(why) = latex_unwritable(name).and_then(unwritable_letter) {
+            format!("'{name}' cannot name {what}: {why}")
+        } else if let Some(why) = reserved(name) {
+            why
+        } else if let Some(other) = self.what_is(name) {
+            format!("'{name}' is already {other}")
+        } else {
+            return Ok(());
+        };
+        Err(FileError::new(ErrorKind::Name, origin, message))
+    }
+
+    /// Drops the cached instances of family `k` (a family that was refused).
+    fn forget_instances(&self, k: usize) {
+        self.cache
+            .lock()
+            .unwrap_or_else(std::sync::PoisonError::into_inner)
+            .retain(|&(family, _, _), _| family != k);
+    }
+}
+
+/// Refuses a display name that would not print as written, at its character in a source of
+/// its own.
+fn check_display_in(origin: &str, display: &str) -> Result<(), FileError> {
+    let source = Source::program(origin, display);
+    check_display(&source, &Text::whole(&source), 0..display.len())
+}
+
+/// One source for a text and an optional second one, on the line after it: the source and
+/// where each text is in it.
+fn two_lines(
+    origin: &str,
+    first: &str,
+    second: Option<&str>,
+) -> (Source, Range<usize>, Option<Range<usize>>) {
+    let text = match second {
+        Some(s) => format!("{first}\n{s}"),
+        None => first.to_string(),
+    };
+    let second_at = second.map(|s| first.len() + 1..first.len() + 1 + s.len());
+    (Source::program(origin, &text), 0..first.len(), second_at)
+}

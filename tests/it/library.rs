@@ -1,0 +1,412 @@
+//! The library as a program uses it: a system built in code with names of its own, a loaded
+//! system extended in code (functions, families, claims), the reports taken as structured
+//! results, and the errors a program matches on.
+
+use superint::prelude::*;
+
+/// A rigid rotor (angle `phi`, inertia `J`) on the oscillator of frequency `k`, in code, with
+/// its ladder function `A` and `Ω = p_φ/J`: the paper's harmonic rotor in other names.
+fn own_rotor() -> LoadedSystem {
+    let vars = VarSet::builder()
+        .coordinate("x")
+        .coordinate("y")
+        .angle("phi")
+        .momentum("p_x")
+        .momentum("p_y")
+        .momentum("p_phi")
+        .parameter("k")
+        .parameter("J")
+        .build()
+        .unwrap();
+    let space = PhaseSpace::new(&vars, &[("x", "p_x"), ("y", "p_y"), ("phi", "p_phi")]).unwrap();
+    let h = Expr::parse(
+        &vars,
+        "(p_x^2 + p_y^2)/2 + k^2*(x^2 + y^2)/2 + p_phi^2/(2*J)",
+    )
+    .unwrap();
+    let mut rotor = LoadedSystem::of_system(System::new("own rotor", space, h));
+    rotor
+        .add_function("A", "A", "p_x + i*p_y + i*k*(x + i*y)")
+        .unwrap();
+    rotor.add_function("Omega", "Ω", "p_phi/J").unwrap();
+    rotor
+}
+
+fn harmonic_rotor_file() -> LoadedSystem {
+    let path = concat!(env!("CARGO_MANIFEST_DIR"), "/systems/harmonic-rotor.toml");
+    load_system_file(path.as_ref(), &LimitsOverride::default()).unwrap()
+}
+
+/// `{R_{a,b}, H} = i(ak − bΩ) R_{a,b}` for `R_{a,b} = A^a e^{−ibφ}`, a family added in code to
+/// a system built in code, in names that are not the paper's: checked for `1 ≤ a, b ≤ 3` and
+/// proved for all `a, b`; with the sign of `bΩ` flipped, every bracket fails and nothing is
+/// proved.
+#[test]
+fn family_tower_in_own_names() {
+    let mut rotor = own_rotor();
+    rotor
+        .add_family(
+            "R",
+            "R",
+            ["a", "b"],
+            "A^a*exp(-i*b*phi)",
+            Some("i*(a*k - b*Omega)"),
+        )
+        .unwrap();
+    rotor
+        .add_family(
+            "S",
+            "S",
+            ["a", "b"],
+            "A^a*exp(-i*b*phi)",
+            Some("i*(a*k + b*Omega)"),
+        )
+        .unwrap();
+    let report = family_tower_report(&rotor, Some("R"), 3, None, &mut |_, _| {}).unwrap();
+    let tower = report.tower().unwrap();
+    assert_eq!((tower.checked, tower.failures.len()), (9, 0));
+    let proof = report.proof().unwrap();
+    assert!(proof.holds(), "{proof:?}");
+    assert!(report.all_proved());
+    // R_{a,b} is a product of powers; its instance is A^a e^{−ibφ} itself.
+    assert_eq!(
+        rotor.parse("R_{2,3}").unwrap(),
+        rotor.parse("A^2*exp(-3*i*phi)").unwrap()
+    );
+
+    let wrong = family_tower_report(&rotor, Some("S"), 2, None, &mut |_, _| {}).unwrap();
+    assert_eq!(
+        wrong.tower().unwrap().failures,
+        [(1, 1), (1, 2), (2, 1), (2, 2)]
+    );
+    assert!(!wrong.proof().unwrap().holds());
+    assert!(!wrong.all_proved());
+}
+
+/// The tower at a resonance: `{R_{1,1}, H} = 0` at `p_φ = Jk`, a claim added in code and
+/// proved; `{R_{2,1}, H} = 0` there is refuted, as it says it expects, with the residual
+/// `{R_{2,1}, H} = ik R_{2,1}` at `Ω = k`.
+#[test]
+fn claims_added_in_code_at_a_resonance() {
+    let mut rotor = own_rotor();
+    rotor
+        .add_family("R", "R", ["a", "b"], "A^a*exp(-i*b*phi)", None)
+        .unwrap();
+    rotor
+        .add_claim("resonant", "{R_{1,1}, H} = 0", Some("p_phi = J*k"))
+        .unwrap();
+    rotor
+        .add_claim("off", "{R_{2,1}, H} = 0", Some("p_phi = J*k"))
+        .unwrap()
+        .expect = Expect::Refuted;
+    let report = check_report([&rotor]).unwrap();
+    assert!(report.all_as_expected());
+    assert_eq!(
+        report.claim_ids(),
+        [("resonant".to_string(), true), ("off".to_string(), false)]
+    );
+    let off = report.claims()[1];
+    assert_eq!(
+        off.residual,
+        Some(rotor.parse("i*k*A^2*exp(-i*phi)").unwrap())
+    );
+}
+
+/// Functions, families and claims added in code to a loaded file are read like the file's own:
+/// the su(2) Casimir `4G1² + G2² + ω²L² = (F1 − F2)²` (C10) as a function, the family
+/// `Z^m Z̄^n` with `{N_{m,n}, H} = i(m − n)ω N_{m,n}`, its tower, and a rank claim; the file's
+/// own claims still hold.
+#[test]
+fn a_loaded_file_extended_in_code() {
+    let mut rotor = harmonic_rotor_file();
+    let claims = rotor.claims.len();
+    rotor
+        .add_function("C", "C", "4*G1^2 + G2^2 + omega^2*L^2")
+        .unwrap();
+    rotor
+        .add_family("N", "N", ["m", "n"], "Z^m*Zbar^n", Some("i*(m - n)*omega"))
+        .unwrap();
+    rotor.add_claim("casimir", "C = (F1 - F2)^2", None).unwrap();
+    rotor
+        .add_claim("diagonal", "{N_{2,2}, H} = 0", None)
+        .unwrap();
+    rotor
+        .add_claim("rank", "rank(F1, F2, L, C) = 3", None)
+        .unwrap();
+    rotor
+        .add_claim("five", "rank(F1, F2, G1, G2, P_1_1) = 5", None)
+        .unwrap();
+    assert_eq!(rotor.claims.len(), claims + 4);
+    let report = check_report([&rotor]).unwrap();
+    assert!(report.all_as_expected());
+    assert_eq!(report.claims().len(), claims + 4);
+    let tower = family_tower_report(&rotor, Some("N"), 3, None, &mut |_, _| {}).unwrap();
+    assert!(tower.all_proved());
+    assert!(tower.proof().unwrap().holds());
+}
+
+/// A family whose eigenvalue does not read is refused at its place (line 2 of `<family W>`,
+/// under the misspelt name), and leaves the system as it was: another family then takes its
+/// place, and its instances are its own, not the refused one's.
+#[test]
+fn a_refused_family_leaves_no_trace() {
+    let mut rotor = harmonic_rotor_file();
+    let families = rotor.families.len();
+    let err = rotor
+        .add_family("W", "W", ["m", "n"], "Z^m*Zbar^n", Some("i*(m - n)*omegaa"))
+        .unwrap_err();
+    assert_eq!(err.kind, ErrorKind::Expression);
+    assert_eq!(err.origin, "<family W>");
+    assert_eq!(err.line_col(), Some((2, 11)));
+    assert!(
+        err.to_string()
+            .starts_with("<family W>:2:11: unknown name 'omegaa'"),
+        "{err}"
+    );
+    assert_eq!(rotor.families.len(), families);
+    assert!(rotor.family("W").is_none());
+    rotor
+        .add_family("W", "W", ["m", "n"], "Zbar^m*Z^n", None)
+        .unwrap();
+    assert_eq!(
+        rotor.parse("W_1_1").unwrap(),
+        rotor.parse("Zbar*Z").unwrap()
+    );
+    assert_eq!(
+        rotor.parse("W_2_1").unwrap(),
+        rotor.parse("Zbar^2*Z").unwrap()
+    );
+}
+
+/// A name the system already has, in any spelling, a reserved one, or a malformed index is
+/// refused with what it is.
+#[test]
+fn names_already_taken_are_refused() {
+    let mut rotor = harmonic_rotor_file();
+    let refused = |result: Result<(), FileError>| {
+        let err = result.unwrap_err();
+        (err.kind, err.message)
+    };
+    assert_eq!(
+        refused(rotor.add_function("L", "L", "x")),
+        (
+            ErrorKind::Name,
+            "'L' is already a function of the system".into()
+        )
+    );
+    assert_eq!(
+        refused(rotor.add_function("ω", "ω", "x")),
+        (
+            ErrorKind::Name,
+            "'ω' is already a parameter of the system".into()
+        )
+    );
+    assert_eq!(
+        refused(rotor.add_function("K", "K", "x")),
+        (
+            ErrorKind::Name,
+            "'K' is already a family of the system".into()
+        )
+    );
+    assert_eq!(
+        refused(rotor.add_function("cos", "cos", "x")).1,
+        "'cos' is reserved (i, cos, sin, exp, conj, re, im, rank)"
+    );
+    assert_eq!(
+        refused(rotor.add_function("F3", "F^3", "x")).1,
+        "a display name is letters, digits, primes (G1'), a bar (Z̄), subscripts (A_x), spaces \
+         and parentheses: '^' is markup in Markdown or LaTeX"
+    );
+    assert_eq!(
+        refused(rotor.add_family("T", "T", ["x", "n"], "x^n", None)),
+        (
+            ErrorKind::Family,
+            "the index 'x' is already a coordinate of the system".into()
+        )
+    );
+    assert_eq!(
+        refused(rotor.add_family("T", "T", ["m", "m"], "Z^m", None)).1,
+        "the two indices are both named 'm'"
+    );
+}
+
+/// A claim given in code is read at once (its form and condition) and computed when checked,
+/// as a file's is; a slip in it is at line 1 of `<claim ID>`, a slip in its condition at
+/// line 2, and a claim refused when read is not added.
+#[test]
+fn claim_errors_point_into_the_text_given() {
+    let mut rotor = harmonic_rotor_file();
+    let claims = rotor.claims.len();
+    let spec = rotor
+        .add_claim("g3", "{L, G1} = -G3", None)
+        .unwrap()
+        .clone();
+    let err = rotor.check_claim(&spec).unwrap_err();
+    assert_eq!(
+        (err.kind, err.line_col()),
+        (ErrorKind::Expression, Some((1, 12)))
+    );
+    assert!(
+        err.to_string()
+            .starts_with("<claim g3>:1:12: unknown name 'G3'"),
+        "{err}"
+    );
+    rotor.claims.pop();
+    let err = rotor
+        .add_claim("c", "{K_1_1, H} = 0", Some("p_theta = I*omegaa"))
+        .unwrap_err();
+    assert_eq!(
+        (err.kind, err.line_col()),
+        (ErrorKind::Expression, Some((2, 13)))
+    );
+    assert_eq!(err.origin, "<claim c>");
+    let err = rotor.add_claim("c", "{L, G1}", None).unwrap_err();
+    assert_eq!(err.kind, ErrorKind::Claim);
+    let err = rotor.add_claim(" ", "L = L", None).unwrap_err();
+    assert_eq!(err.message, "a claim's id is empty");
+    assert_eq!(rotor.claims.len(), claims);
+}
+
+/// `?` takes an engine error into a `FileError`: a term limit is of kind `limit` (with the
+/// hint to raise it), an unknown name of kind `engine`; neither has a place in a text.
+#[test]
+fn engine_errors_become_file_errors() {
+    fn expand(rotor: &LoadedSystem, power: i64) -> Result<usize, FileError> {
+        let z = rotor.system.get("Z")?;
+        Ok(z.checked_pow(power).map_err(EngineError::from)?.len())
+    }
+    let mut rotor = harmonic_rotor_file();
+    assert_eq!(expand(&rotor, 2).unwrap(), 10);
+    rotor = {
+        let text = std::fs::read_to_string(concat!(
+            env!("CARGO_MANIFEST_DIR"),
+            "/systems/harmonic-rotor.toml"
+        ))
+        .unwrap();
+        let small = LimitsOverride {
+            max_terms: Some(50),
+            max_degree: None,
+        };
+        load_system_text("harmonic-rotor.toml", &text, &small).unwrap()
+    };
+    let err = expand(&rotor, 8).unwrap_err();
+    assert_eq!((err.kind, err.location), (ErrorKind::Limit, None));
+    assert!(err.hint.is_some());
+    let err = FileError::from(rotor.system.rank(&["F1", "nope"]).unwrap_err());
+    assert_eq!(
+        (err.kind, err.origin.as_str()),
+        (ErrorKind::Engine, "<program>")
+    );
+    assert_eq!(err.kind.to_string(), "engine");
+}
+
+/// A clone is a system of its own: a function added to it is not in the original.
+#[test]
+fn a_clone_is_extended_alone() {
+    let rotor = harmonic_rotor_file();
+    let _ = rotor.parse("K_2_2").unwrap();
+    let mut copy = rotor.clone();
+    copy.add_function("C", "C", "4*G1^2 + G2^2 + omega^2*L^2")
+        .unwrap();
+    assert_eq!(copy.parse("C").unwrap(), copy.parse("(F1 - F2)^2").unwrap());
+    assert!(rotor.parse("C").is_err());
+    assert_eq!(copy.parse("K_2_2").unwrap(), rotor.parse("K_2_2").unwrap());
+}
+
+/// The reports take names as `&str`: the su(2) table `{G1, G2} = −ω² L`, and the rank 5 of
+/// `F1, F2, G1, G2, P_{1,1}` (C17) as a claim.
+#[test]
+fn reports_take_names_as_str() {
+    let rotor = harmonic_rotor_file();
+    let table = table_report(&rotor, &["L", "G1", "G2"]).unwrap();
+    let text = render(&table, Format::Text, &RenderOptions { timings: false });
+    assert!(text.contains("−ω² L"), "{text}");
+    let rank = rank_report(&rotor, &["F1", "F2", "G1", "G2", "P_1_1"], Some(5)).unwrap();
+    assert!(rank.all_proved());
+    let json = render(&rank, Format::Json, &RenderOptions { timings: false });
+    assert!(json.contains("\"rank\": 5"), "{json}");
+}
+
+/// A program's own error type takes the engine's errors by `?` through `FileError`: a slip in
+/// an expression parsed by the engine keeps its line and column, a name declared twice (an
+/// algebra error) is refused, and the program matches on the kinds. The harmonic oscillator
+/// it builds has `{q, H} = p/m`.
+#[test]
+fn a_programs_error_type_matches_on_kinds() {
+    #[derive(Debug, PartialEq)]
+    enum Mine {
+        Input { line: usize, column: usize },
+        Other(ErrorKind),
+    }
+    impl From<FileError> for Mine {
+        fn from(e: FileError) -> Self {
+            match (e.kind, e.line_col()) {
+                (ErrorKind::Expression, Some((line, column))) => Mine::Input { line, column },
+                (kind, _) => Mine::Other(kind),
+            }
+        }
+    }
+    fn flow_of_q(h: &str, twice: bool) -> Result<String, Mine> {
+        let mut builder = VarSet::builder()
+            .coordinate("q")
+            .momentum("p")
+            .parameter("m");
+        if twice {
+            builder = builder.parameter("q");
+        }
+        let vars = builder.build().map_err(FileError::from)?;
+        let space = PhaseSpace::new(&vars, &[("q", "p")]).map_err(FileError::from)?;
+        let blank = System::new("oscillator", space, Expr::zero(&vars));
+        let system = System::new(
+            "oscillator",
+            blank.space().clone(),
+            blank.parse(h).map_err(FileError::from)?,
+        );
+        let flow = system
+            .flow(&system.parse("q").map_err(FileError::from)?)
+            .map_err(FileError::from)?;
+        Ok(flow.to_string())
+    }
+    assert_eq!(flow_of_q("p^2/(2*m) + m*q^2/2", false).unwrap(), "p/m");
+    assert_eq!(
+        flow_of_q("p^2/(2*m)\n + m*q^^2/2", false).unwrap_err(),
+        Mine::Input { line: 2, column: 8 }
+    );
+    assert_eq!(
+        flow_of_q("p^2", true).unwrap_err(),
+        Mine::Other(ErrorKind::Engine)
+    );
+}
+
+/// What a program is told names the library's calls, not a file's tables: a system in code
+/// without a family has no tower until `add_family`, and an unknown name in a text given in
+/// code points at `add_function`. A file's messages stay the file's.
+#[test]
+fn messages_to_a_program_name_the_library() {
+    let mut rotor = own_rotor();
+    let err = family_tower_report(&rotor, None, 2, None, &mut |_, _| {}).unwrap_err();
+    assert_eq!(
+        err.message,
+        "the system has no family with an eigenvalue, so there is no tower to check"
+    );
+    assert!(err
+        .hint
+        .unwrap()
+        .starts_with("add one with LoadedSystem::add_family"));
+    let err = family_tower_report(&rotor, Some("R"), 2, None, &mut |_, _| {}).unwrap_err();
+    assert_eq!(err.message, "no family named 'R' (the system has none)");
+    let err = rotor.add_function("B", "B", "p_x + i*w*x").unwrap_err();
+    assert_eq!(
+        (err.kind, err.line_col()),
+        (ErrorKind::Expression, Some((1, 9)))
+    );
+    assert!(err.hint.unwrap().contains("LoadedSystem::add_function"));
+    let file = harmonic_rotor_file();
+    let err = family_tower_report(&file, Some("R"), 2, None, &mut |_, _| {}).unwrap_err();
+    assert_eq!(
+        err.message,
+        "no family named 'R' (the file declares K, Kbar, P, Q)"
+    );
+    let err = file.parse_argument("w").unwrap_err();
+    assert!(err.hint.unwrap().contains("[[function]]"));
+}
