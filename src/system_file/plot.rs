@@ -249,8 +249,7 @@ impl LoadedSystem {
                 },
             ));
         }
-        let pairs = self.system.space().pairs();
-        let phase = pairs.iter().map(|c| c.q).chain(pairs.iter().map(|c| c.p));
+        let phase = self.system.space().coordinates();
         let (mut start, mut missing) = (Vec::new(), Vec::new());
         for v in phase {
             match given.iter().find(|(g, _)| *g == v) {
@@ -263,7 +262,8 @@ impl LoadedSystem {
                 ErrorKind::Condition,
                 COMMAND_LINE,
                 format!(
-                    "--from gives no value for {}: every coordinate, angle and momentum needs one",
+                    "--from gives no value for {}: every coordinate, angle, momentum and Poisson \
+                     variable needs one",
                     missing.join(", ")
                 ),
             ));
