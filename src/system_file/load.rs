@@ -397,7 +397,7 @@ impl<'a> Builder<'a> {
     /// The phase space with the brackets of `[poisson]` declared: each key `"{a, b}"` names
     /// two phase variables, one at least a Poisson variable, once; each value is a real
     /// polynomial in the variables and parameters; and the brackets satisfy the Jacobi
-    /// identity, checked exactly (a violation is shown at the first entry of its triple).
+    /// identity, checked exactly (a violation is shown at the last entry of its triple).
     fn poisson(
         &self,
         file: &LoadedSystem,
@@ -545,6 +545,7 @@ impl<'a> Builder<'a> {
             let at = match &e {
                 EngineError::Jacobi(violation) => entries
                     .iter()
+                    .rev()
                     .find(|(a, b, ..)| violation.triple.contains(a) && violation.triple.contains(b))
                     .map(|e| e.3.clone()),
                 _ => None,

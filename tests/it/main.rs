@@ -106,6 +106,7 @@ pub const PENDULUM: &str = "name = \"pendulum\"\nhamiltonian = \"p_t^2/2 - g*cos
 mod claims;
 mod cli;
 mod discovery;
+mod poisson;
 mod system_files;
 
 /// The search space of degree 1 in the momenta and the positions and trigonometric order 1.

@@ -312,9 +312,16 @@ impl PhaseSpace {
     /// kernel `Poly::sum_of_jacobians`; with them, one sum of derivative products with the
     /// gradient of `g`.
     pub fn bracket(&self, f: &Expr, g: &Expr) -> Result<Expr, EngineError> {
-        if self.declared.is_empty() {
-            return Ok(Expr::sum_of_jacobians(f, g, self.var_pairs())?);
+        if !self.declared.is_empty() {
+            return self.declared_bracket(f, g);
         }
+        Ok(Expr::sum_of_jacobians(f, g, self.var_pairs())?)
+    }
+
+    /// `{f, g}` with declared brackets: through the gradient of `g`, kept out of line so that
+    /// the canonical bracket compiles as it would alone.
+    #[inline(never)]
+    fn declared_bracket(&self, f: &Expr, g: &Expr) -> Result<Expr, EngineError> {
         self.bracket_with_gradient(f, &self.gradient(g)?)
     }
 
@@ -395,13 +402,19 @@ impl PhaseSpace {
     /// `{f, g}` given the gradient of `g` from [`PhaseSpace::gradient`]: one fused sum of
     /// products of the derivatives of `f` (never built on their own) with it, normalised once.
     pub fn bracket_with_gradient(&self, f: &Expr, dg: &Gradient) -> Result<Expr, EngineError> {
-        if dg.declared.is_empty() {
-            return Ok(Expr::sum_of_jacobians_with_gradient(
-                f,
-                self.var_pairs(),
-                &dg.canonical,
-            )?);
+        if !dg.declared.is_empty() {
+            return self.declared_bracket_with_gradient(f, dg);
         }
+        Ok(Expr::sum_of_jacobians_with_gradient(
+            f,
+            self.var_pairs(),
+            &dg.canonical,
+        )?)
+    }
+
+    /// [`PhaseSpace::bracket_with_gradient`] with declared brackets, out of line.
+    #[inline(never)]
+    fn declared_bracket_with_gradient(&self, f: &Expr, dg: &Gradient) -> Result<Expr, EngineError> {
         Ok(Expr::sum_of_derivative_products(
             &self.gradient_terms(f, dg)?,
         )?)

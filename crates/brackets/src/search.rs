@@ -993,9 +993,8 @@ pub fn search(system: &System, options: &SearchOptions) -> Result<SearchResult, 
     if let Some(&v) = system.space().poisson_variables().first() {
         return Err(EngineError::Invalid(format!(
             "the search solves for integrals in a space of monomials in canonical coordinates \
-             and momenta, and this system has Poisson variables ({} is one, with declared \
-             brackets): it cannot search them; state a candidate integral as a claim \
-             `{{F, H}} = 0` instead",
+             and momenta, and {} is a Poisson variable, whose brackets are declared: no such \
+             space holds it; state a candidate integral as a claim `{{F, H}} = 0` instead",
             system.vars().variable(v).unicode()
         )));
     }
