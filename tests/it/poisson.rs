@@ -306,7 +306,54 @@ fn commands_take_a_declared_structure_or_refuse_it() {
     assert_eq!(o.status.code(), Some(2));
     let err = text(&o.stderr);
     assert!(
-        err.contains("Poisson variables") && !err.contains("panicked"),
+        err.contains("M1 is a Poisson variable, whose brackets are declared")
+            && !err.contains("panicked"),
         "{err}"
+    );
+}
+
+/// The symmetric Euler top, `I1 = I2 = A`: `ξ = M1 + iM2` turns at the rate `(1/A − 1/C) M3`,
+/// and `M3` is conserved, so `K_{m,n} = ξ^m M3^n` is an eigenfunction of the flow, for all
+/// `m, n` by the tower's proof.
+#[test]
+fn tower_of_the_symmetric_top() {
+    let file = crate::scratch_text(
+        "poisson-tower",
+        "symmetric.toml",
+        r#"name = "symmetric top"
+hamiltonian = "(M1^2 + M2^2)/(2*A) + M3^2/(2*C)"
+
+[phase_space]
+variables = ["M1", "M2", "M3"]
+parameters = ["A", "C"]
+
+[poisson]
+"{M1, M2}" = "M3"
+"{M2, M3}" = "M1"
+"{M3, M1}" = "M2"
+
+[[function]]
+name = "xi"
+value = "M1 + i*M2"
+
+[[family]]
+name = "K"
+value = "xi^m*M3^n"
+eigenvalue = "-i*m*(1/A - 1/C)*M3"
+"#,
+    );
+    let o = superint(&["tower", "--system", file.to_str().unwrap(), "--max", "3"]);
+    assert_eq!(o.status.code(), Some(0), "{}", text(&o.stderr));
+    let out = text(&o.stdout);
+    assert!(
+        out.contains("{K_{m,n}, H} = (−im)(1/A − 1/C) M3 K_{m,n} for all m, n ≥ 0"),
+        "{out}"
+    );
+    // The rate itself, and its opposite sign refuted by twice the rate.
+    let sys = &load(&file, &LimitsOverride::default()).unwrap().system;
+    identity!(sys, "{xi, H} = -i*(1/A - 1/C)*M3*xi");
+    identity!(
+        sys,
+        "{xi, H} = i*(1/A - 1/C)*M3*xi" => refuted "-2*i*(1/A - 1/C)*M3*xi"
     );
 }

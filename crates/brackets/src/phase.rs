@@ -147,8 +147,9 @@ impl PhaseSpace {
         })
     }
 
-    /// The space with the brackets `{a, b} = value` declared, by the variables' names; the
-    /// pairs not given have bracket 0. Refused: a pair given twice (in either order), a
+    /// The space with the brackets `{a, b} = value` declared, by the variables' names (these
+    /// and no others: brackets declared before are replaced); the pairs not given have
+    /// bracket 0. Refused: a pair given twice (in either order), a
     /// variable that is not a phase variable, a pair of two canonical variables (their bracket
     /// is fixed), a value that is not real, and brackets that break the Jacobi identity
     /// `{a, {b, c}} + {b, {c, a}} + {c, {a, b}} = 0`, checked exactly for every triple of
@@ -156,6 +157,7 @@ impl PhaseSpace {
     /// and the residual).
     pub fn with_brackets(mut self, brackets: &[(&str, &str, Expr)]) -> Result<Self, EngineError> {
         let vars = self.vars.clone();
+        self.declared.clear();
         let mut given: Vec<(Var, Var)> = Vec::new();
         for (a, b, value) in brackets {
             let find = |n: &str| {
