@@ -53,7 +53,8 @@ pub struct PlotArgs {
     /// such as 1.5 or 2.5e-3, read as the fractions they write).
     #[arg(long, value_name = "VALUES")]
     at: Option<String>,
-    /// The starting point: a value for every coordinate, angle and momentum, such as
+    /// The starting point: a value for every phase variable (coordinate, angle, momentum,
+    /// Poisson variable), such as
     /// 'x = 1, y = 0, theta = 3*pi/4, p_x = 0, p_y = 1, p_theta = I*omega' (a value is a
     /// number, fraction or decimal, a multiple of π alone such as 3*pi/4, pi*3/4 or -π/2,
     /// or an expression in the parameters). Give it again for more orbits in the same chart.

@@ -133,7 +133,7 @@ pub enum Subject {
     /// A system file.
     File(Box<LoadedSystem>),
     /// A built-in system, with its name.
-    Builtin(String, System),
+    Builtin(String, Box<System>),
 }
 
 impl Subject {
@@ -147,7 +147,7 @@ impl Subject {
     ) -> anyhow::Result<Subject> {
         if let Some(name) = builtin {
             return match builtin_system(name, resonant)? {
-                Some((display, s)) => Ok(Subject::Builtin(display, s)),
+                Some((display, s)) => Ok(Subject::Builtin(display, Box::new(s))),
                 None => bail!(
                     "unknown system '{name}' (built-in: {})",
                     superint::discovery::BUILTIN_SYSTEMS.join(", ")

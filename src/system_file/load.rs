@@ -7,17 +7,17 @@ use std::ops::Range;
 use std::path::Path;
 use std::sync::Mutex;
 
-use brackets::{PhaseSpace, System};
+use brackets::{EngineError, PhaseSpace, System};
 use toml::Spanned;
 use trigpoly::{
     display_forms, is_identifier, latex_unwritable, unbarred, AlgebraError, Expr, Limits, Span,
-    VarSet, LATEX_LETTERS, RESERVED,
+    Var, VarSet, LATEX_LETTERS, RESERVED,
 };
 
 use super::claims::ClaimSpec;
 use super::error::{locate_bytes, ErrorKind, FileError};
-use super::model::{ExpectShape, FunctionModel, ShapeModel, SystemModel};
-use super::scope::mention;
+use super::model::{ExpectShape, FunctionModel, PoissonModel, ShapeModel, SystemModel};
+use super::scope::{first_bracket, mention};
 use super::text::{Source, Text};
 use super::{Family, LimitsOverride, LoadedSystem, DEFAULT_MAX_DEGREE, DEFAULT_MAX_TERMS};
 
@@ -191,6 +191,7 @@ fn check_shape(source: &Source, text: &str) -> Result<(), FileError> {
     for (key, value) in [
         ("[phase_space]", &shape.phase_space),
         ("[limits]", &shape.limits),
+        ("[poisson]", &shape.poisson),
     ] {
         if let Some(v) = value.as_ref().filter(|v| !v.get_ref().is_table()) {
             return Err(wrong(v, key, "a table, written with one pair of brackets")
@@ -379,6 +380,170 @@ impl<'a> Builder<'a> {
         Ok(())
     }
 
+    /// The phase space with the brackets of `[poisson]` declared: each key `"{a, b}"` names
+    /// two phase variables, one at least a Poisson variable, once; each value is a real
+    /// polynomial in the variables and parameters; and the brackets satisfy the Jacobi
+    /// identity, checked exactly (a violation is shown at the last entry of its triple).
+    fn poisson(
+        &self,
+        file: &LoadedSystem,
+        poisson: &Spanned<PoissonModel>,
+    ) -> Result<PhaseSpace, FileError> {
+        let space = file.system.space();
+        let vars = space.vars();
+        let phase: Vec<&str> = space
+            .coordinates()
+            .into_iter()
+            .map(|v| vars.variable(v).name())
+            .collect();
+        let mut entries: Vec<(Var, Var, Expr, Range<usize>)> = Vec::new();
+        for (key, value) in &poisson.get_ref().entries {
+            let span = key.span();
+            let names = key
+                .get_ref()
+                .trim()
+                .strip_prefix('{')
+                .and_then(|k| k.strip_suffix('}'))
+                .map(|k| k.split(',').map(str::trim).collect::<Vec<_>>())
+                .filter(|names| names.len() == 2 && names.iter().all(|n| !n.is_empty()));
+            let Some(names) = names else {
+                return Err(self.error(
+                    ErrorKind::Schema,
+                    span,
+                    format!(
+                        "a key of [poisson] is a bracket of two variables, such as \
+                         \"{{M1, M2}}\", not \"{}\"",
+                        key.get_ref()
+                    ),
+                ));
+            };
+            let mut pair = Vec::new();
+            for name in names {
+                let Some(v) = vars.lookup(name) else {
+                    return Err(self.error(
+                        ErrorKind::Name,
+                        span.clone(),
+                        format!(
+                            "unknown name '{name}' in a bracket of [poisson] (the phase \
+                             variables: {})",
+                            phase.join(", ")
+                        ),
+                    ));
+                };
+                if !space.is_phase_variable(v) {
+                    return Err(self.error(
+                        ErrorKind::Name,
+                        span.clone(),
+                        format!(
+                            "'{name}' is {}, not a variable of the phase space, so every \
+                             bracket with it is 0; declare it under variables to give it \
+                             brackets",
+                            vars.variable(v).kind().described()
+                        ),
+                    ));
+                }
+                pair.push(v);
+            }
+            let (a, b) = (pair[0], pair[1]);
+            let [ua, ub] = [a, b].map(|v| vars.variable(v).unicode());
+            if a == b {
+                return Err(self.error(
+                    ErrorKind::Name,
+                    span,
+                    format!(
+                        "{{{ua}, {ua}}} is 0: a variable's bracket with itself is not declared"
+                    ),
+                ));
+            }
+            let poisson_vars = space.poisson_variables();
+            if !poisson_vars.contains(&a) && !poisson_vars.contains(&b) {
+                return Err(self.error(
+                    ErrorKind::Name,
+                    span,
+                    format!(
+                        "{{{ua}, {ub}}} is a bracket of canonical variables, already fixed by \
+                         their pairs ({{q, p_q}} = 1, every other 0): [poisson] gives the \
+                         brackets of the Poisson variables (under variables)"
+                    ),
+                ));
+            }
+            if let Some((.., first)) = entries
+                .iter()
+                .find(|e| (e.0, e.1) == (a, b) || (e.0, e.1) == (b, a))
+            {
+                let line = super::error::locate(&self.source.text, first.clone()).line;
+                return Err(self.error(
+                    ErrorKind::Name,
+                    span,
+                    format!(
+                        "{{{ua}, {ub}}} is given twice: line {line} gives it already (a \
+                         bracket in one order gives the other, {{{ub}, {ua}}} = −{{{ua}, {ub}}})"
+                    ),
+                ));
+            }
+            let text = self.text(value);
+            let scope = file.scope(0);
+            let tree = scope.tree(&self.source, &text)?;
+            let refused = mention(&tree, "H")
+                .map(|at| {
+                    (
+                        at,
+                        "a declared bracket cannot use H: write it in the variables",
+                    )
+                })
+                .or_else(|| {
+                    first_bracket(&tree).map(|at| {
+                        (
+                            at,
+                            "a declared bracket's value cannot be a bracket: it is what \
+                             defines them; write it in the variables",
+                        )
+                    })
+                });
+            if let Some((at, message)) = refused {
+                return Err(text.error(&self.source, ErrorKind::Expression, at, message));
+            }
+            let expr = scope.lower(&self.source, &text, &tree)?;
+            if expr.conj() != expr {
+                return Err(text.error(
+                    &self.source,
+                    ErrorKind::Expression,
+                    tree.span,
+                    format!(
+                        "{{{ua}, {ub}}} = {expr} is not real: the bracket of two real \
+                         variables is real"
+                    ),
+                ));
+            }
+            entries.push((a, b, expr, span));
+        }
+        let named: Vec<(&str, &str, Expr)> = entries
+            .iter()
+            .map(|(a, b, e, _)| {
+                (
+                    vars.variable(*a).name(),
+                    vars.variable(*b).name(),
+                    e.clone(),
+                )
+            })
+            .collect();
+        space.clone().with_brackets(&named).map_err(|e| {
+            let at = match &e {
+                EngineError::Jacobi(violation) => entries
+                    .iter()
+                    .rev()
+                    .find(|(a, b, ..)| violation.triple.contains(a) && violation.triple.contains(b))
+                    .map(|e| e.3.clone()),
+                _ => None,
+            };
+            self.error(
+                ErrorKind::Engine,
+                at.unwrap_or(poisson.span()),
+                e.to_string(),
+            )
+        })
+    }
+
     fn text(&self, s: &Spanned<String>) -> Text {
         Text::in_toml(&self.source.text, s.span(), s.get_ref())
     }
@@ -429,12 +594,12 @@ impl<'a> Builder<'a> {
 
     fn build(mut self, model: SystemModel) -> Result<LoadedSystem, FileError> {
         let ps = model.phase_space.get_ref();
-        if ps.coordinates.is_empty() && ps.angles.is_empty() {
+        if ps.coordinates.is_empty() && ps.angles.is_empty() && ps.variables.is_empty() {
             return Err(self.error(
                 ErrorKind::Schema,
                 model.phase_space.span(),
-                "[phase_space] declares no coordinates or angles: a phase space needs at least \
-                 one canonical pair",
+                "[phase_space] declares no coordinates, angles or variables: a phase space \
+                 needs at least one canonical pair or Poisson variable",
             ));
         }
         for c in &ps.coordinates {
@@ -442,6 +607,9 @@ impl<'a> Builder<'a> {
         }
         for a in &ps.angles {
             self.declare(a.get_ref(), a.span(), "an angle")?;
+        }
+        for v in &ps.variables {
+            self.declare(v.get_ref(), v.span(), "a Poisson variable")?;
         }
         for p in &ps.parameters {
             self.declare(p.get_ref(), p.span(), "a parameter")?;
@@ -472,6 +640,9 @@ impl<'a> Builder<'a> {
         for q in &qs {
             builder = builder.momentum(&format!("p_{}", q.get_ref()));
         }
+        for v in &ps.variables {
+            builder = builder.poisson(v.get_ref());
+        }
         for p in &ps.parameters {
             builder = builder.parameter(p.get_ref());
         }
@@ -493,6 +664,7 @@ impl<'a> Builder<'a> {
                     .coordinates
                     .iter()
                     .chain(&ps.angles)
+                    .chain(&ps.variables)
                     .chain(&ps.parameters)
                     .find(|n| n.get_ref() == name)
                     .map(|n| n.span()),
@@ -538,6 +710,11 @@ impl<'a> Builder<'a> {
             limits,
             cache: Mutex::new(HashMap::new()),
         };
+
+        if let Some(poisson) = &model.poisson {
+            let space = self.poisson(&file, poisson)?;
+            file.system = System::new(&name, space, Expr::zero(&vars));
+        }
 
         // H may use the variables only.
         let h_text = self.text(&model.hamiltonian);

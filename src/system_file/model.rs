@@ -20,6 +20,7 @@ pub(crate) struct ShapeModel {
     pub hamiltonian: Option<Spanned<toml::Value>>,
     pub phase_space: Option<Spanned<toml::Value>>,
     pub limits: Option<Spanned<toml::Value>>,
+    pub poisson: Option<Spanned<toml::Value>>,
     pub function: Option<Spanned<toml::Value>>,
     pub family: Option<Spanned<toml::Value>>,
     pub claim: Option<Spanned<toml::Value>>,
@@ -47,6 +48,7 @@ pub(crate) struct SystemModel {
     pub hamiltonian: Spanned<String>,
     pub phase_space: Spanned<PhaseSpaceModel>,
     pub limits: Option<Spanned<LimitsModel>>,
+    pub poisson: Option<Spanned<PoissonModel>>,
     #[serde(default)]
     pub function: Vec<Spanned<FunctionModel>>,
     #[serde(default)]
@@ -65,6 +67,39 @@ pub(crate) struct PhaseSpaceModel {
     pub angles: Vec<Spanned<String>>,
     #[serde(default)]
     pub parameters: Vec<Spanned<String>>,
+    #[serde(default)]
+    pub variables: Vec<Spanned<String>>,
+}
+
+/// The `[poisson]` table: `"{M1, M2}" = "M3"`, each key and value with its span, in the
+/// order of the file.
+#[derive(Debug)]
+pub(crate) struct PoissonModel {
+    pub entries: Vec<(Spanned<String>, Spanned<String>)>,
+}
+
+impl<'de> Deserialize<'de> for PoissonModel {
+    fn deserialize<D: Deserializer<'de>>(d: D) -> Result<Self, D::Error> {
+        struct V;
+        impl<'de> Visitor<'de> for V {
+            type Value = PoissonModel;
+            fn expecting(&self, f: &mut fmt::Formatter) -> fmt::Result {
+                f.write_str("a table of brackets such as \"{M1, M2}\" = \"M3\"")
+            }
+            fn visit_map<A: de::MapAccess<'de>>(
+                self,
+                mut map: A,
+            ) -> Result<PoissonModel, A::Error> {
+                let mut entries = Vec::new();
+                while let Some(entry) = map.next_entry::<Spanned<String>, Spanned<String>>()? {
+                    entries.push(entry);
+                }
+                entries.sort_by_key(|(k, _): &(Spanned<String>, Spanned<String>)| k.span().start);
+                Ok(PoissonModel { entries })
+            }
+        }
+        d.deserialize_map(V)
+    }
 }
 
 /// `[limits]`.

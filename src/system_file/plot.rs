@@ -19,7 +19,7 @@ pub struct PlotInput {
     pub parameters: String,
     /// `H` at those values.
     pub hamiltonian: Expr,
-    /// The starting points, one an orbit: the value of every coordinate, angle and momentum
+    /// The starting points, one an orbit: the value of every coordinate, angle, momentum and Poisson variable
     /// at `t = 0`, in the phase space's order (coordinates and angles, then momenta).
     pub starts: Vec<Vec<(Var, StartValue)>>,
     /// The curves, each a label and a real function at the parameters' values: a complex
@@ -91,7 +91,7 @@ type Values = Vec<(Var, Expr)>;
 
 impl LoadedSystem {
     /// Reads a plot's parameters `at` (`"M = 1, omega = 2"`), its starting points `from`
-    /// (each a value for every coordinate, angle and momentum; values may hold parameters)
+    /// (each a value for every coordinate, angle, momentum and Poisson variable; values may hold parameters)
     /// and its `functions`, and makes them exact. Errors point into the argument at fault.
     pub fn plot_input(
         &self,
@@ -208,7 +208,7 @@ impl LoadedSystem {
         Ok((values, shown.join(", ")))
     }
 
-    /// `--from`: a real number for every coordinate, angle and momentum, once the parameters
+    /// `--from`: a real number for every coordinate, angle, momentum and Poisson variable, once the parameters
     /// have their `values`; in the phase space's order.
     fn starting_point(
         &self,
@@ -249,8 +249,7 @@ impl LoadedSystem {
                 },
             ));
         }
-        let pairs = self.system.space().pairs();
-        let phase = pairs.iter().map(|c| c.q).chain(pairs.iter().map(|c| c.p));
+        let phase = self.system.space().coordinates();
         let (mut start, mut missing) = (Vec::new(), Vec::new());
         for v in phase {
             match given.iter().find(|(g, _)| *g == v) {
@@ -263,8 +262,12 @@ impl LoadedSystem {
                 ErrorKind::Condition,
                 COMMAND_LINE,
                 format!(
-                    "--from gives no value for {}: every coordinate, angle and momentum needs one",
-                    missing.join(", ")
+                    "--from gives no value for {}: every {} needs one",
+                    missing.join(", "),
+                    match self.system.space().poisson_variables().is_empty() {
+                        true => "coordinate, angle and momentum",
+                        false => "coordinate, angle, momentum and Poisson variable",
+                    }
                 ),
             ));
         }

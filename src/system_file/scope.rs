@@ -537,6 +537,21 @@ impl Context<GaussianRational> for Scope<'_> {
 }
 
 /// The span of the first use of `name` in a tree, if any.
+/// Where `tree` has its first bracket `{f, g}`, if it has one.
+pub(crate) fn first_bracket(tree: &Tree) -> Option<Span> {
+    match &tree.kind {
+        ExprKind::Integer(_) | ExprKind::Name(_) => None,
+        ExprKind::Bracket(..) => Some(tree.span),
+        ExprKind::Neg(a) => first_bracket(a),
+        ExprKind::Call(_, _, args) => args.iter().find_map(first_bracket),
+        ExprKind::Add(a, b)
+        | ExprKind::Sub(a, b)
+        | ExprKind::Mul(a, b)
+        | ExprKind::Div(a, b)
+        | ExprKind::Pow(a, b) => first_bracket(a).or_else(|| first_bracket(b)),
+    }
+}
+
 pub(crate) fn mention(tree: &Tree, name: &str) -> Option<Span> {
     tree.names()
         .into_iter()

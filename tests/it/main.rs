@@ -108,6 +108,7 @@ mod claims;
 mod cli;
 mod discovery;
 mod library;
+mod poisson;
 mod system_files;
 
 /// The search space of degree 1 in the momenta and the positions and trigonometric order 1.

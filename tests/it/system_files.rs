@@ -177,6 +177,44 @@ fn docs_error_examples_are_what_check_prints() {
     }
 }
 
+/// The declared brackets' example of `docs/system-files.md` checks, and its error examples are
+/// what `check` prints for it with, in turn, its last bracket replaced by each of these.
+#[test]
+fn docs_poisson_error_examples_are_what_check_prints() {
+    let doc = std::fs::read_to_string(root().join("docs/system-files.md")).expect("the doc");
+    let start = doc
+        .find("```toml\n# The free rigid body on so(3)*.")
+        .expect("the declared brackets' example")
+        + "```toml\n".len();
+    let example = &doc[start..start + doc[start..].find("```").expect("its end")];
+    let dir = scratch("docs-poisson");
+    std::fs::write(dir.join("top.toml"), example).expect("write");
+    let o = superint_in(&dir, &["check", "top.toml", "--no-timings"]);
+    assert_eq!(o.status.code(), Some(0), "{}", text(&o.stdout));
+    assert!(text(&o.stdout).contains("2 claims in 1 file: 2 proved"));
+    let last = "\"{M3, M1}\" = \"M2\"";
+    let replaced = [
+        "\"{M3, M1}\" = \"M1\"",
+        "\"{M2, M1}\" = \"-M3\"",
+        "\"{M3, N}\" = \"M2\"",
+        "\"{M3, I1}\" = \"M2\"",
+    ];
+    let shown: Vec<&str> = doc
+        .split("```text\n")
+        .skip(1)
+        .map(|b| &b[..b.find("```").expect("the block's end")])
+        .filter(|b| b.starts_with("superint: error: top.toml:"))
+        .collect();
+    assert_eq!(shown.len(), replaced.len(), "one example for each");
+    for (line, shown) in replaced.iter().zip(shown) {
+        assert!(example.contains(last));
+        std::fs::write(dir.join("top.toml"), example.replacen(last, line, 1)).expect("write");
+        let o = superint_in(&dir, &["check", "top.toml"]);
+        assert_eq!(o.status.code(), Some(2), "{line}");
+        assert_eq!(text(&o.stderr), shown, "{line}");
+    }
+}
+
 const BASE: &str = r#"name = "oscillator"
 hamiltonian = "p_x^2/(2*M) + M*omega^2*x^2/2"
 
@@ -192,6 +230,29 @@ value = "p_x + i*M*omega*x"
 id = "ladder"
 claim = "{A, H} = i*omega*A"
 "#;
+
+/// so(3)* beside a canonical pair: the Poisson variables' bad inputs replace line 12.
+const TOP: &str = r#"name = "top"
+hamiltonian = "M1^2/2 + M2^2/2 + M3^2 + p_x^2/2"
+
+[phase_space]
+coordinates = ["x"]
+variables = ["M1", "M2", "M3"]
+parameters = ["a"]
+
+[poisson]
+"{M1, M2}" = "M3"
+"{M2, M3}" = "M1"
+"{M3, M1}" = "M2"
+
+[[claim]]
+claim = "{M1^2 + M2^2 + M3^2, H} = 0"
+"#;
+
+fn top_with(line_12: &str) -> Vec<u8> {
+    TOP.replacen("\"{M3, M1}\" = \"M2\"", line_12, 1)
+        .into_bytes()
+}
 
 /// The rotor's variables and a power that no machine can expand: C(405, 5) ≈ 9·10¹⁰ terms.
 const HUGE: &str = r#"name = "runaway"
@@ -772,6 +833,90 @@ fn bad_inputs() -> Vec<(&'static str, Vec<u8>, &'static str, Vec<&'static str>)>
             BASE.as_bytes().to_vec(),
             "bad.toml: the file declares no [[family]] with an eigenvalue",
             vec!["tower", "--system", "bad.toml", "--max", "2"],
+        ),
+        (
+            "declared brackets that break the Jacobi identity",
+            top_with("\"{M3, M1}\" = \"M1\""),
+            "bad.toml:12:1: the declared brackets break the Jacobi identity: {M1, {M2, M3}} + \
+             {M2, {M3, M1}} + {M3, {M1, M2}} = −M3, not 0",
+            check.clone(),
+        ),
+        (
+            "a declared bracket that breaks Jacobi with a canonical pair",
+            top_with("\"{M3, M1}\" = \"M2*x\""),
+            "bad.toml:12:1: the declared brackets break the Jacobi identity: {p_x, {M1, M3}} + \
+             {M1, {M3, p_x}} + {M3, {p_x, M1}} = M2, not 0",
+            check.clone(),
+        ),
+        (
+            "a declared bracket given twice",
+            top_with("\"{M2, M1}\" = \"-M3\""),
+            "bad.toml:12:1: {M2, M1} is given twice: line 10 gives it already",
+            check.clone(),
+        ),
+        (
+            "a declared bracket of an unknown name",
+            top_with("\"{M3, N}\" = \"M2\""),
+            "bad.toml:12:1: unknown name 'N' in a bracket of [poisson] (the phase variables: \
+             x, p_x, M1, M2, M3)",
+            check.clone(),
+        ),
+        (
+            "a declared bracket of a parameter",
+            top_with("\"{M3, a}\" = \"M2\""),
+            "bad.toml:12:1: 'a' is a parameter, not a variable of the phase space",
+            check.clone(),
+        ),
+        (
+            "a declared bracket of canonical variables",
+            top_with("\"{x, p_x}\" = \"2\""),
+            "bad.toml:12:1: {x, p_x} is a bracket of canonical variables, already fixed by \
+             their pairs",
+            check.clone(),
+        ),
+        (
+            "a declared bracket of a variable with itself",
+            top_with("\"{M3, M3}\" = \"M2\""),
+            "bad.toml:12:1: {M3, M3} is 0",
+            check.clone(),
+        ),
+        (
+            "a declared bracket's key without braces",
+            top_with("\"M3, M1\" = \"M2\""),
+            "bad.toml:12:1: a key of [poisson] is a bracket of two variables, such as \
+             \"{M1, M2}\", not \"M3, M1\"",
+            check.clone(),
+        ),
+        (
+            "a declared bracket that is not a string",
+            top_with("\"{M3, M1}\" = 2"),
+            "bad.toml:12:14: invalid type: integer `2`, expected a string",
+            check.clone(),
+        ),
+        (
+            "a declared bracket that is not real",
+            top_with("\"{M3, M1}\" = \"i*M2\""),
+            "bad.toml:12:15: {M3, M1} = i M2 is not real",
+            check.clone(),
+        ),
+        (
+            "a declared bracket that is a bracket",
+            top_with("\"{M3, M1}\" = \"{M1, M2}\""),
+            "bad.toml:12:15: a declared bracket's value cannot be a bracket",
+            check.clone(),
+        ),
+        (
+            "a declared bracket with an unknown name",
+            top_with("\"{M3, M1}\" = \"M2 + b\""),
+            "bad.toml:12:20: unknown name 'b'",
+            check.clone(),
+        ),
+        (
+            "a search over Poisson variables",
+            TOP.as_bytes().to_vec(),
+            "searching for integrals: the search solves for integrals in a space of monomials \
+             in canonical coordinates and momenta",
+            vec!["search", "bad.toml"],
         ),
         (
             "missing file",

@@ -35,6 +35,21 @@ pub enum EngineError {
     /// A phase space or system that is not well formed.
     #[error("{0}")]
     Invalid(String),
+    /// Declared brackets that break the Jacobi identity
+    /// `{a, {b, c}} + {b, {c, a}} + {c, {a, b}} = 0` for a triple of phase variables.
+    #[error("{}", .0.message)]
+    Jacobi(Box<JacobiViolation>),
+}
+
+/// A triple of phase variables for which declared brackets break the Jacobi identity.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct JacobiViolation {
+    /// The triple `a, b, c`.
+    pub triple: [trigpoly::Var; 3],
+    /// `{a, {b, c}} + {b, {c, a}} + {c, {a, b}}`, not zero.
+    pub residual: trigpoly::Expr,
+    /// The identity and its residual, in words.
+    pub message: String,
 }
 
 /// A parse error without its source, so that `?` works on a parse in a function that returns

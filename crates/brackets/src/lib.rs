@@ -36,8 +36,8 @@ pub mod tower;
 
 pub use claim::{Claim, Condition, Outcome, Verdict};
 pub use closure::{closure, Bracket as ClosureBracket, Closure, ClosureOptions, Relation};
-pub use error::EngineError;
-pub use phase::{CanonicalPair, PhaseSpace};
+pub use error::{EngineError, JacobiViolation};
+pub use phase::{CanonicalPair, DeclaredBracket, Gradient, PhaseSpace};
 pub use rank::{rank, RankCertificate, UpperBound};
 pub use search::{search, Integral, SearchOptions, SearchResult, SearchSpace, SpaceVariables};
 pub use system::{NamedFunction, System};

@@ -1,9 +1,11 @@
-//! Phase spaces: canonical pairs `(q, p)`, planar or angular, and the Poisson bracket
-//! `{f, g} = Σ_i (∂f/∂q_i ∂g/∂p_i − ∂f/∂p_i ∂g/∂q_i)`, so `{q, p} = 1` and `{f, H} = df/dt`.
+//! Phase spaces: canonical pairs `(q, p)`, planar or angular, and Poisson variables whose
+//! brackets are declared (a Lie–Poisson structure such as `{M₁, M₂} = M₃`). The bracket is
+//! `{f, g} = Σ_i (∂f/∂q_i ∂g/∂p_i − ∂f/∂p_i ∂g/∂q_i) + Σ_{a<b} {a, b} (∂f/∂a ∂g/∂b − ∂f/∂b ∂g/∂a)`,
+//! the second sum over the declared brackets, so `{q, p} = 1` and `{f, H} = df/dt`.
 
 use trigpoly::{Expr, Var, VarKind, Vars};
 
-use crate::error::EngineError;
+use crate::error::{EngineError, JacobiViolation};
 
 /// A canonical pair: a coordinate (or angle) and its momentum.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -14,8 +16,45 @@ pub struct CanonicalPair {
     pub p: Var,
 }
 
-/// A phase space: variables and the canonical pairs among them; the other variables are
-/// parameters (constants under the flow).
+/// A declared bracket `{a, b} = value` of two phase variables, at least one of them a Poisson
+/// variable (the brackets of canonical variables are fixed by their pairs).
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct DeclaredBracket {
+    /// The first variable.
+    pub a: Var,
+    /// The second variable.
+    pub b: Var,
+    /// `{a, b}`, a real polynomial in the variables and parameters.
+    pub value: Expr,
+}
+
+/// What a bracket with `g` needs of `g`, worth keeping when `g` (a Hamiltonian, say) enters
+/// many brackets: `(∂g/∂q_i, ∂g/∂p_i)` for each canonical pair and, where brackets are
+/// declared, `{v, g}`'s declared part `Σ_u {v, u} ∂g/∂u` for each variable `v` they involve,
+/// so that `{f, g}` is one fused sum of products of the derivatives of `f` with it.
+#[derive(Clone, Debug, Default)]
+pub struct Gradient {
+    canonical: Vec<(Expr, Expr)>,
+    declared: Vec<(Var, Expr)>,
+}
+
+impl Gradient {
+    /// `(∂g/∂q_i, ∂g/∂p_i)` for each canonical pair.
+    pub fn canonical(&self) -> &[(Expr, Expr)] {
+        &self.canonical
+    }
+
+    /// `(v, Σ_u {v, u} ∂g/∂u)` over the declared brackets, for each variable `v` where it is
+    /// not zero.
+    pub fn declared(&self) -> &[(Var, Expr)] {
+        &self.declared
+    }
+}
+
+/// A phase space: variables, the canonical pairs among them, the Poisson variables and their
+/// declared brackets; the other variables are parameters (constants under the flow). Its
+/// invariant: the declared brackets satisfy the Jacobi identity (checked exactly when they are
+/// given), so the bracket is a Poisson bracket.
 ///
 /// ```
 /// use brackets::PhaseSpace;
@@ -26,17 +65,47 @@ pub struct CanonicalPair {
 /// let p = Expr::parse(&vars, "p_x").unwrap();
 /// assert_eq!(space.bracket(&x, &p).unwrap(), Expr::one(&vars));
 /// ```
+///
+/// The rigid body on so(3)*: `{M₁, M₂} = M₃` and cyclically, whose Casimir `M₁² + M₂² + M₃²`
+/// commutes with everything.
+///
+/// ```
+/// use brackets::PhaseSpace;
+/// use trigpoly::{Expr, VarSet};
+/// let vars = VarSet::builder().poisson("M1").poisson("M2").poisson("M3").build().unwrap();
+/// let e = |s: &str| Expr::parse(&vars, s).unwrap();
+/// let space = PhaseSpace::new(&vars, &[])
+///     .unwrap()
+///     .with_brackets(&[("M1", "M2", e("M3")), ("M2", "M3", e("M1")), ("M3", "M1", e("M2"))])
+///     .unwrap();
+/// assert_eq!(space.bracket(&e("M1"), &e("M2")).unwrap(), e("M3"));
+/// let casimir = e("M1^2 + M2^2 + M3^2");
+/// assert!(space.bracket(&casimir, &e("M1 M2 + M3^3")).unwrap().is_zero());
+/// // {M₃, M₁} = M₁ is no Lie algebra's: {M₁, {M₂, M₃}} + {M₂, {M₃, M₁}} + {M₃, {M₁, M₂}} = −M₃.
+/// let wrong = PhaseSpace::new(&vars, &[])
+///     .unwrap()
+///     .with_brackets(&[("M1", "M2", e("M3")), ("M2", "M3", e("M1")), ("M3", "M1", e("M1"))]);
+/// let Err(brackets::EngineError::Jacobi(violation)) = wrong else { panic!() };
+/// assert_eq!(violation.residual, e("-M3"));
+/// ```
 #[derive(Clone, Debug)]
 pub struct PhaseSpace {
     vars: Vars,
     pairs: Vec<CanonicalPair>,
     /// The pairs as `(q, p)` variables, the form the kernels take.
     var_pairs: Vec<(Var, Var)>,
+    /// The Poisson variables, in the order of their declaration.
+    poisson: Vec<Var>,
+    /// The declared brackets that are not zero, each pair once.
+    declared: Vec<DeclaredBracket>,
+    /// The variables the declared brackets involve, in the order of [`PhaseSpace::coordinates`].
+    involved: Vec<Var>,
 }
 
 impl PhaseSpace {
     /// A phase space from pairs of names `(q, p)`. A `q` declared as an angle makes an angular
-    /// pair; `p` must be a momentum.
+    /// pair; `p` must be a momentum. The variables declared as Poisson variables are phase
+    /// variables too, whose brackets are 0 until [`PhaseSpace::with_brackets`] declares them.
     pub fn new(vars: &Vars, pairs: &[(&str, &str)]) -> Result<Self, EngineError> {
         let find = |n: &str| {
             vars.lookup(n).ok_or_else(|| {
@@ -69,7 +138,149 @@ impl PhaseSpace {
             vars: vars.clone(),
             var_pairs: out.iter().map(|c| (c.q, c.p)).collect(),
             pairs: out,
+            poisson: vars
+                .vars()
+                .filter(|&v| vars.variable(v).kind() == VarKind::Poisson)
+                .collect(),
+            declared: Vec::new(),
+            involved: Vec::new(),
         })
+    }
+
+    /// The space with the brackets `{a, b} = value` declared, by the variables' names (these
+    /// and no others: brackets declared before are replaced); the pairs not given have
+    /// bracket 0. Refused: a pair given twice (in either order), a
+    /// variable that is not a phase variable, a pair of two canonical variables (their bracket
+    /// is fixed), a value that is not real, and brackets that break the Jacobi identity
+    /// `{a, {b, c}} + {b, {c, a}} + {c, {a, b}} = 0`, checked exactly for every triple of
+    /// phase variables that has a Poisson variable ([`EngineError::Jacobi`], with the triple
+    /// and the residual).
+    pub fn with_brackets(mut self, brackets: &[(&str, &str, Expr)]) -> Result<Self, EngineError> {
+        let vars = self.vars.clone();
+        self.declared.clear();
+        let mut given: Vec<(Var, Var)> = Vec::new();
+        for (a, b, value) in brackets {
+            let find = |n: &str| {
+                vars.lookup(n).ok_or_else(|| {
+                    EngineError::Invalid(format!("unknown variable '{n}' in a declared bracket"))
+                })
+            };
+            let (va, vb) = (find(a)?, find(b)?);
+            let (ua, ub) = (vars.variable(va).unicode(), vars.variable(vb).unicode());
+            for (v, u) in [(va, ua), (vb, ub)] {
+                if !self.is_phase_variable(v) {
+                    return Err(EngineError::Invalid(format!(
+                        "'{u}' is {}, not a phase variable, so its brackets are 0",
+                        vars.variable(v).kind().described()
+                    )));
+                }
+            }
+            if va == vb {
+                return Err(EngineError::Invalid(format!(
+                    "{{{ua}, {ua}}} is 0 for every bracket: a variable's bracket with itself \
+                     cannot be declared"
+                )));
+            }
+            if !self.poisson.contains(&va) && !self.poisson.contains(&vb) {
+                return Err(EngineError::Invalid(format!(
+                    "{{{ua}, {ub}}} is a bracket of canonical variables, fixed by their pairs \
+                     ({{q, p}} = 1, every other 0); declare Poisson variables to give brackets"
+                )));
+            }
+            if given
+                .iter()
+                .any(|&(x, y)| (x, y) == (va, vb) || (x, y) == (vb, va))
+            {
+                return Err(EngineError::Invalid(format!(
+                    "{{{ua}, {ub}}} is given twice (a bracket given in one order gives the \
+                     other, {{{ub}, {ua}}} = −{{{ua}, {ub}}})"
+                )));
+            }
+            given.push((va, vb));
+            if *value.vars() != vars {
+                return Err(EngineError::Invalid(format!(
+                    "the value of {{{ua}, {ub}}} is over other variables than the phase space's"
+                )));
+            }
+            if value.conj() != *value {
+                return Err(EngineError::Invalid(format!(
+                    "{{{ua}, {ub}}} = {value} is not real: the bracket of two real variables \
+                     is real"
+                )));
+            }
+            if !value.is_zero() {
+                self.declared.push(DeclaredBracket {
+                    a: va,
+                    b: vb,
+                    value: value.clone(),
+                });
+            }
+        }
+        self.involved = self
+            .coordinates()
+            .into_iter()
+            .filter(|&v| self.declared.iter().any(|d| d.a == v || d.b == v))
+            .collect();
+        self.check_jacobi()?;
+        Ok(self)
+    }
+
+    /// Checks `{a, {b, c}} + {b, {c, a}} + {c, {a, b}} = 0` for every triple of distinct phase
+    /// variables with a Poisson variable among them (a triple of canonical variables has
+    /// constant brackets, so it holds); with it on the coordinates, the bracket is Poisson.
+    fn check_jacobi(&self) -> Result<(), EngineError> {
+        if self.declared.is_empty() {
+            return Ok(());
+        }
+        let coords = self.coordinates();
+        let one = |v: Var| Expr::var(&self.vars, v);
+        let n = coords.len();
+        for i in 0..n {
+            for j in i + 1..n {
+                for k in j + 1..n {
+                    let [a, b, c] = [coords[i], coords[j], coords[k]];
+                    if ![a, b, c].iter().any(|v| self.poisson.contains(v)) {
+                        continue;
+                    }
+                    let (fa, fb, fc) = (one(a), one(b), one(c));
+                    let residual = &(&self.bracket(&fa, &self.bracket(&fb, &fc)?)?
+                        + &self.bracket(&fb, &self.bracket(&fc, &fa)?)?)
+                        + &self.bracket(&fc, &self.bracket(&fa, &fb)?)?;
+                    if !residual.is_zero() {
+                        return Err(EngineError::Jacobi(Box::new(JacobiViolation {
+                            triple: [a, b, c],
+                            message: {
+                                let [ua, ub, uc] =
+                                    [a, b, c].map(|v| self.vars.variable(v).unicode());
+                                format!(
+                                    "the declared brackets break the Jacobi identity: \
+                                     {{{ua}, {{{ub}, {uc}}}}} + {{{ub}, {{{uc}, {ua}}}}} + \
+                                     {{{uc}, {{{ua}, {ub}}}}} = {residual}, not 0"
+                                )
+                            },
+                            residual,
+                        })));
+                    }
+                }
+            }
+        }
+        Ok(())
+    }
+
+    /// The Poisson variables, in the order of their declaration.
+    pub fn poisson_variables(&self) -> &[Var] {
+        &self.poisson
+    }
+
+    /// The declared brackets that are not zero, each pair once, in the order given.
+    pub fn declared_brackets(&self) -> &[DeclaredBracket] {
+        &self.declared
+    }
+
+    /// Whether the bracket is canonical: no bracket is declared, so it is
+    /// `Σ ∂(f, g)/∂(q, p)` over the pairs alone.
+    pub fn is_canonical(&self) -> bool {
+        self.declared.is_empty()
     }
 
     /// The variables.
@@ -82,24 +293,38 @@ impl PhaseSpace {
         &self.pairs
     }
 
-    /// The phase-space coordinates in the order `q_1, …, q_n, p_1, …, p_n`.
+    /// The phase-space variables in the order `q_1, …, q_n, p_1, …, p_n`, then the Poisson
+    /// variables.
     pub fn coordinates(&self) -> Vec<Var> {
         self.pairs
             .iter()
             .map(|c| c.q)
             .chain(self.pairs.iter().map(|c| c.p))
+            .chain(self.poisson.iter().copied())
             .collect()
     }
 
     /// Whether `v` is a phase-space variable (not a parameter).
     pub fn is_phase_variable(&self, v: Var) -> bool {
-        self.pairs.iter().any(|c| c.q == v || c.p == v)
+        self.pairs.iter().any(|c| c.q == v || c.p == v) || self.poisson.contains(&v)
     }
 
-    // {f, g} = Σ_i (∂f/∂q_i ∂g/∂p_i − ∂f/∂p_i ∂g/∂q_i)
-    /// The Poisson bracket `{f, g}`.
+    // {f, g} = Σ_i (∂f/∂q_i ∂g/∂p_i − ∂f/∂p_i ∂g/∂q_i) + Σ_{a<b} {a, b} (∂f/∂a ∂g/∂b − ∂f/∂b ∂g/∂a)
+    /// The Poisson bracket `{f, g}`: without declared brackets one call to the canonical
+    /// kernel `Poly::sum_of_jacobians`; with them, one sum of derivative products with the
+    /// gradient of `g`.
     pub fn bracket(&self, f: &Expr, g: &Expr) -> Result<Expr, EngineError> {
+        if !self.declared.is_empty() {
+            return self.declared_bracket(f, g);
+        }
         Ok(Expr::sum_of_jacobians(f, g, self.var_pairs())?)
+    }
+
+    /// `{f, g}` with declared brackets: through the gradient of `g`, kept out of line so that
+    /// the canonical bracket compiles as it would alone.
+    #[inline(never)]
+    fn declared_bracket(&self, f: &Expr, g: &Expr) -> Result<Expr, EngineError> {
+        self.bracket_with_gradient(f, &self.gradient(g)?)
     }
 
     /// The canonical pairs as `(q, p)` variables, the form the kernels take.
@@ -107,26 +332,93 @@ impl PhaseSpace {
         &self.var_pairs
     }
 
-    /// `(∂g/∂q_i, ∂g/∂p_i)` for each pair: what a bracket with `g` needs of `g`, worth keeping
-    /// when `g` (a Hamiltonian, say) enters many brackets.
-    pub fn gradient(&self, g: &Expr) -> Result<Vec<(Expr, Expr)>, EngineError> {
-        self.pairs
+    /// What a bracket with `g` needs of `g` ([`Gradient`]), worth keeping when `g` (a
+    /// Hamiltonian, say) enters many brackets.
+    pub fn gradient(&self, g: &Expr) -> Result<Gradient, EngineError> {
+        let canonical = self
+            .pairs
             .iter()
             .map(|c| Ok((g.derivative(c.q)?, g.derivative(c.p)?)))
-            .collect()
+            .collect::<Result<Vec<_>, EngineError>>()?;
+        let mut declared = Vec::new();
+        if !self.declared.is_empty() {
+            let dg: Vec<Expr> = self
+                .involved
+                .iter()
+                .map(|&u| g.derivative(u))
+                .collect::<Result<_, _>>()?;
+            let d = |u: Var| {
+                &dg[self
+                    .involved
+                    .iter()
+                    .position(|&w| w == u)
+                    .expect("involved")]
+            };
+            for &v in &self.involved {
+                // {v, g} = Σ_u {v, u} ∂g/∂u over the declared brackets
+                let terms: Vec<(&Expr, &Expr, bool)> = self
+                    .declared
+                    .iter()
+                    .filter_map(|e| match (e.a == v, e.b == v) {
+                        (true, _) => Some((&e.value, d(e.b), false)),
+                        (_, true) => Some((&e.value, d(e.a), true)),
+                        _ => None,
+                    })
+                    .collect();
+                let x = Expr::sum_of_products(&terms)?;
+                if !x.is_zero() {
+                    declared.push((v, x));
+                }
+            }
+        }
+        Ok(Gradient {
+            canonical,
+            declared,
+        })
+    }
+
+    /// The terms `∂f/∂v · {v, g}` of `{f, g}` with a kept gradient, for the fused kernels.
+    fn gradient_terms<'a>(
+        &self,
+        f: &'a Expr,
+        dg: &'a Gradient,
+    ) -> Result<Vec<(&'a Expr, Var, &'a Expr, bool)>, EngineError> {
+        if dg.canonical.len() != self.pairs.len() {
+            return Err(EngineError::Invalid(format!(
+                "{} canonical pairs but a gradient of {}",
+                self.pairs.len(),
+                dg.canonical.len()
+            )));
+        }
+        let mut terms = Vec::with_capacity(2 * self.pairs.len() + dg.declared.len());
+        for (&(q, p), (gq, gp)) in self.var_pairs.iter().zip(&dg.canonical) {
+            terms.push((f, q, gp, false));
+            terms.push((f, p, gq, true));
+        }
+        for (v, x) in &dg.declared {
+            terms.push((f, *v, x, false));
+        }
+        Ok(terms)
     }
 
     /// `{f, g}` given the gradient of `g` from [`PhaseSpace::gradient`]: one fused sum of
     /// products of the derivatives of `f` (never built on their own) with it, normalised once.
-    pub fn bracket_with_gradient(
-        &self,
-        f: &Expr,
-        dg: &[(Expr, Expr)],
-    ) -> Result<Expr, EngineError> {
+    pub fn bracket_with_gradient(&self, f: &Expr, dg: &Gradient) -> Result<Expr, EngineError> {
+        if !dg.declared.is_empty() {
+            return self.declared_bracket_with_gradient(f, dg);
+        }
         Ok(Expr::sum_of_jacobians_with_gradient(
             f,
             self.var_pairs(),
-            dg,
+            &dg.canonical,
+        )?)
+    }
+
+    /// [`PhaseSpace::bracket_with_gradient`] with declared brackets, out of line.
+    #[inline(never)]
+    fn declared_bracket_with_gradient(&self, f: &Expr, dg: &Gradient) -> Result<Expr, EngineError> {
+        Ok(Expr::sum_of_derivative_products(
+            &self.gradient_terms(f, dg)?,
         )?)
     }
 
@@ -137,19 +429,27 @@ impl PhaseSpace {
     pub fn bracket_with_gradient_at(
         &self,
         f: &Expr,
-        dg: &[(Expr, Expr)],
+        dg: &Gradient,
         subs: &[(Var, Expr)],
     ) -> Result<Expr, EngineError> {
-        Ok(Expr::sum_of_jacobians_with_gradient_at(
-            f,
-            self.var_pairs(),
-            dg,
+        if dg.declared.is_empty() {
+            return Ok(Expr::sum_of_jacobians_with_gradient_at(
+                f,
+                self.var_pairs(),
+                &dg.canonical,
+                subs,
+            )?);
+        }
+        Ok(Expr::sum_of_derivative_products_at(
+            &self.gradient_terms(f, dg)?,
             subs,
         )?)
     }
 
-    /// Hamilton's vector field of `h`: `(q̇_i, ṗ_i) = (∂h/∂p_i, −∂h/∂q_i)` for each pair, in the
-    /// order of [`PhaseSpace::coordinates`].
+    /// Hamilton's vector field of `h`, `ż = {z, h}` for each phase variable `z` in the order
+    /// of [`PhaseSpace::coordinates`]: `(q̇_i, ṗ_i) = (∂h/∂p_i, −∂h/∂q_i)` for each pair, with
+    /// the declared brackets' part `Σ_u {z, u} ∂h/∂u` added (for the Euler top,
+    /// `Ṁ₁ = {M₁, H}`).
     pub fn hamilton_equations(&self, h: &Expr) -> Result<Vec<(Var, Expr)>, EngineError> {
         let mut out = Vec::new();
         for c in &self.pairs {
@@ -157,6 +457,18 @@ impl PhaseSpace {
         }
         for c in &self.pairs {
             out.push((c.p, -h.derivative(c.q)?));
+        }
+        for &v in &self.poisson {
+            out.push((v, Expr::zero(&self.vars)));
+        }
+        if !self.declared.is_empty() {
+            for (v, x) in self.gradient(h)?.declared {
+                let (_, z) = out
+                    .iter_mut()
+                    .find(|(w, _)| *w == v)
+                    .expect("a declared bracket's variable is a phase variable");
+                *z = &*z + &x;
+            }
         }
         Ok(out)
     }

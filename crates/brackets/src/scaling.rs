@@ -102,6 +102,13 @@ impl Scaling {
         h: &Expr,
         condition: Option<&Condition>,
     ) -> Result<Self, EngineError> {
+        if !space.poisson_variables().is_empty() {
+            return Err(EngineError::Invalid(
+                "the scaling of a flow is formed for canonical pairs only, and this phase space \
+                 has Poisson variables"
+                    .into(),
+            ));
+        }
         let vars = space.vars().clone();
         let n = vars.len();
         let mut c = Constraints::new(n);
@@ -131,7 +138,8 @@ impl Scaling {
     }
 
     /// The weights under which the Poisson bracket is homogeneous (`w(q) + w(p)` the same for
-    /// every pair, angles of weight 0), the condition is homogeneous, and so is every one of
+    /// every pair, and `w(a) + w(b)` less that for every term of a declared `{a, b}`, angles of
+    /// weight 0), the condition is homogeneous, and so is every one of
     /// `functions`.
     pub fn of_functions(
         space: &PhaseSpace,
@@ -148,6 +156,14 @@ impl Scaling {
             let mut e = unit(n, pair.q.index(), 1);
             e[pair.p.index()] += 1;
             c.push(&e, -1);
+        }
+        // A declared {a, b} = P: every term of P has weight w(a) + w(b) − δ.
+        for d in space.declared_brackets() {
+            let mut ab = unit(n, d.a.index(), 1);
+            ab[d.b.index()] += 1;
+            for t in d.value.terms() {
+                c.push(&minus(&t.exponents(), &ab), 1);
+            }
         }
         if let Some(k) = condition {
             for (v, value) in k.subs() {

@@ -990,6 +990,14 @@ pub fn search(system: &System, options: &SearchOptions) -> Result<SearchResult, 
     if rayon::current_thread_index().is_none() {
         return rayon::scope(|_| search(system, options));
     }
+    if let Some(&v) = system.space().poisson_variables().first() {
+        return Err(EngineError::Invalid(format!(
+            "the search solves for integrals in a space of monomials in canonical coordinates \
+             and momenta, and {} is a Poisson variable, whose brackets are declared: no such \
+             space holds it; state a candidate integral as a claim `{{F, H}} = 0` instead",
+            system.vars().variable(v).unicode()
+        )));
+    }
     let start = Instant::now();
     let mut timings = SearchTimings::default();
     let condition = options.condition.as_ref();

@@ -5,7 +5,7 @@ use trigpoly::{Context, Expr, GaussianRational, Var, Vars};
 
 use crate::claim::Condition;
 use crate::error::EngineError;
-use crate::phase::PhaseSpace;
+use crate::phase::{Gradient, PhaseSpace};
 
 /// A named function of a system (`L`, `G1`, `Z̄`), or a generator of a closure.
 #[derive(Clone, Debug, PartialEq, Eq)]
@@ -43,7 +43,7 @@ pub struct System {
     space: PhaseSpace,
     functions: Vec<NamedFunction>,
     /// The gradient of `H`, kept because every flow `{f, H}` needs it.
-    dh: Vec<(Expr, Expr)>,
+    dh: Option<Gradient>,
 }
 
 impl System {
@@ -54,7 +54,7 @@ impl System {
             name: name.to_string(),
             space,
             functions: Vec::new(),
-            dh: Vec::new(),
+            dh: None,
         };
         s.define("H", "H", h);
         s
@@ -91,7 +91,7 @@ impl System {
         };
         if name == "H" {
             // A gradient that cannot be formed leaves `flow` to report the error itself.
-            self.dh = self.space.gradient(&f.expr).unwrap_or_default();
+            self.dh = self.space.gradient(&f.expr).ok();
         }
         match self.functions.iter_mut().find(|g| g.name == name) {
             Some(g) => *g = f,
@@ -198,10 +198,9 @@ impl System {
 
     /// `df/dt = {f, H}`, with the gradient of `H` computed once per system.
     pub fn flow(&self, f: &Expr) -> Result<Expr, EngineError> {
-        if self.dh.len() == self.space.pairs().len() {
-            self.space.bracket_with_gradient(f, &self.dh)
-        } else {
-            self.space.bracket(f, self.hamiltonian())
+        match &self.dh {
+            Some(dh) => self.space.bracket_with_gradient(f, dh),
+            None => self.space.bracket(f, self.hamiltonian()),
         }
     }
 
@@ -210,11 +209,9 @@ impl System {
     /// where the condition's values are single terms, so that the flow off the condition is
     /// never built. The same value as [`Condition::apply`] on [`System::flow`].
     pub fn flow_when(&self, f: &Expr, condition: &Condition) -> Result<Expr, EngineError> {
-        if self.dh.len() == self.space.pairs().len() {
-            self.space
-                .bracket_with_gradient_at(f, &self.dh, condition.subs())
-        } else {
-            condition.apply(&self.flow(f)?)
+        match &self.dh {
+            Some(dh) => self.space.bracket_with_gradient_at(f, dh, condition.subs()),
+            None => condition.apply(&self.flow(f)?),
         }
     }
 }

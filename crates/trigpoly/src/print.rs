@@ -241,7 +241,7 @@ impl Names {
             .collect();
         let rank = |v: &crate::varset::Var| match vars.variable(*v).kind() {
             VarKind::Parameter => 0,
-            VarKind::Coordinate => 1,
+            VarKind::Coordinate | VarKind::Poisson => 1,
             VarKind::Momentum => 2,
             VarKind::Angle => 3,
         };

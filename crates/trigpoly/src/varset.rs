@@ -19,17 +19,21 @@ pub enum VarKind {
     /// An angle `θ`: functions depend on it through `cos θ`, `sin θ`, stored as powers of
     /// `e^{iθ}` (exponent any integer), which needs Gaussian coefficients.
     Angle,
+    /// A Poisson variable such as the angular momentum `M₁` of a top: a phase-space variable
+    /// in no canonical pair, whose brackets are declared (the Lie–Poisson `{M₁, M₂} = M₃`).
+    Poisson,
 }
 
 impl VarKind {
     /// The kind in words, with its article, as messages name it: `a coordinate`, `a
-    /// momentum`, `a parameter`, `an angle`.
+    /// momentum`, `a parameter`, `an angle`, `a Poisson variable`.
     pub fn described(self) -> &'static str {
         match self {
             VarKind::Coordinate => "a coordinate",
             VarKind::Momentum => "a momentum",
             VarKind::Parameter => "a parameter",
             VarKind::Angle => "an angle",
+            VarKind::Poisson => "a Poisson variable",
         }
     }
 }
@@ -601,6 +605,10 @@ impl VarSetBuilder {
     /// Declares an angle.
     pub fn angle(self, name: &str) -> Self {
         self.variable(name, VarKind::Angle)
+    }
+    /// Declares a Poisson variable: a phase-space variable whose brackets are declared.
+    pub fn poisson(self, name: &str) -> Self {
+        self.variable(name, VarKind::Poisson)
     }
     /// Shows the variable declared last as the name `display` would be shown (`A_x`, `A_{x}`
     /// in LaTeX, for a variable named `Ax`), when `display` is an identifier, possibly with a
