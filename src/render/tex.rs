@@ -453,6 +453,24 @@ fn translate(s: &str) -> String {
                         }
                         continue;
                     }
+                    // A Greek letter, `ħ` or `ℓ` with digits after it is a name, `γ1`,
+                    // whose digits are its subscript as a word's are (`\gamma_{1}`, as the
+                    // variable prints; `\gamma 1` read as γ times 1).
+                    _ if greek(c).is_some() || c == 'ħ' || c == 'ℓ' => {
+                        push_char(&mut out, c, *accent);
+                        let mut digits = String::new();
+                        while let Some(Tok::Char(d, None)) = toks.get(k + 1) {
+                            if !d.is_ascii_digit() {
+                                break;
+                            }
+                            digits.push(*d);
+                            k += 1;
+                        }
+                        if !digits.is_empty() {
+                            out.push_str(&format!("_{{{digits}}}"));
+                            subscript_end = Some(out.len());
+                        }
+                    }
                     _ => push_char(&mut out, c, *accent),
                 }
             }
@@ -737,6 +755,11 @@ mod tests {
                 r"p_{\ell_{1}} + p_{\hbar_{1}} + p_{\theta_{12}}",
             ),
             ("p_ωx + p_xω", r"p_{\omega x} + p_{x\omega }"),
+            // Digits after a Greek letter are its subscript, as after a word (`G1`).
+            (
+                "{γ1, H} = M2 γ3 − 2c ω12",
+                r"\{\gamma _{1}, H\} = M_{2} \gamma _{3} - 2c \omega _{12}",
+            ),
             ("x_₁ + x_₁₂y", "x_{1} + x_{12y}"),
             // A family named with a subscript of its own: its indices join it after `;`.
             ("K₁_{1,2} + K1_{3,4}", "K_{1;1,2} + K_{1;3,4}"),
