@@ -2003,17 +2003,17 @@ fn closure_past_degree_six_finds_the_3_5_oscillator_relation() {
 /// error that says how many there are and which option raises it, with exit code 2.
 #[test]
 fn a_closure_past_its_monomial_limit_stops_before_computing() {
-    let out = superint(&[
-        "closure",
-        "systems/harmonic-rotor.toml",
-        "F1",
-        "F2",
-        "L",
-        "G1",
-        "G2",
-        "--degree",
-        "64",
-    ]);
+    // The su(2) generators and F1, F2 of the harmonic rotor, at a degree, with more options.
+    let closure = |degree: &str, more: &[&str]| {
+        let generators = ["F1", "F2", "L", "G1", "G2"];
+        let args = [
+            &["closure", "systems/harmonic-rotor.toml"][..],
+            &generators[..],
+        ]
+        .concat();
+        superint(&[&args[..], &["--degree", degree][..], more].concat())
+    };
+    let out = closure("64", &[]);
     let err = String::from_utf8(out.stderr).unwrap();
     assert_eq!(out.status.code(), Some(2), "{err}");
     assert!(
@@ -2024,33 +2024,9 @@ fn a_closure_past_its_monomial_limit_stops_before_computing() {
         "{err}"
     );
     // Raised, the same count passes the check (at degree 4: 126 monomials, limit 126).
-    let out = superint(&[
-        "closure",
-        "systems/harmonic-rotor.toml",
-        "F1",
-        "F2",
-        "L",
-        "G1",
-        "G2",
-        "--degree",
-        "4",
-        "--max-monomials",
-        "126",
-    ]);
+    let out = closure("4", &["--max-monomials", "126"]);
     assert_eq!(out.status.code(), Some(0));
-    let out = superint(&[
-        "closure",
-        "systems/harmonic-rotor.toml",
-        "F1",
-        "F2",
-        "L",
-        "G1",
-        "G2",
-        "--degree",
-        "4",
-        "--max-monomials",
-        "125",
-    ]);
+    let out = closure("4", &["--max-monomials", "125"]);
     let err = String::from_utf8(out.stderr).unwrap();
     assert_eq!(out.status.code(), Some(2), "{err}");
     assert!(
