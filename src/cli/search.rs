@@ -13,7 +13,7 @@ use superint::discovery::{
 };
 use superint::render::render;
 use superint::report::Report;
-use superint::system_file::{reserved, split_top_level, unwritable_letter, what_is, LoadedSystem};
+use superint::system_file::{split_top_level, what_is, BadName, LoadedSystem};
 use trigpoly::Expr;
 
 use super::limits::LimitsArgs;
@@ -188,17 +188,10 @@ impl Subject {
     /// (which it would shadow, so that what is found about it would read, in the system's
     /// names, as a claim about the system's own), each said as such.
     pub fn check_new_name(&self, name: &str, option: &str) -> anyhow::Result<()> {
-        if !trigpoly::is_identifier(name) {
-            bail!(
-                "{option} '{name}': a name is letters, digits and '_', starting with a letter \
-                 or '_'"
-            );
-        }
-        if let Some(why) = trigpoly::latex_unwritable(name).and_then(unwritable_letter) {
-            bail!("{option} {name}: {why}; choose another name");
-        }
-        if let Some(why) = reserved(name) {
-            bail!("{option} {name}: {why}; choose another name");
+        match BadName::of(name) {
+            Some(BadName::Malformed) => bail!("{option} '{name}': {}", BadName::Malformed.why()),
+            Some(bad) => bail!("{option} {name}: {}; choose another name", bad.why()),
+            None => {}
         }
         let what = match self {
             Subject::File(f) => f.what_is(name),

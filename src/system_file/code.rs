@@ -4,11 +4,11 @@
 
 use std::ops::Range;
 
-use trigpoly::{is_identifier, latex_unwritable, Expr};
+use trigpoly::Expr;
 
 use super::claims::ClaimSpec;
 use super::error::{ErrorKind, FileError};
-use super::load::{check_display, reserved, unwritable_letter};
+use super::load::{check_display, index_refusal, BadName};
 use super::text::{Source, Text};
 use super::{Family, LoadedSystem};
 use crate::report::Expect;
@@ -106,32 +106,8 @@ impl LoadedSystem {
         let origin = format!("<family {name}>");
         self.check_new_name(&origin, name, "a family")?;
         check_display_in(&origin, display)?;
-        for (k, index) in indices.iter().enumerate() {
-            let refuse = |kind, message: String| Err(FileError::new(kind, &origin, message));
-            if !is_identifier(index) || index.contains('_') || *index == "i" {
-                return refuse(
-                    ErrorKind::Family,
-                    format!("'{index}' cannot name an index: use a plain name such as m or n"),
-                );
-            }
-            if let Some(why) = latex_unwritable(index).and_then(unwritable_letter) {
-                return refuse(
-                    ErrorKind::Name,
-                    format!("'{index}' cannot name an index: {why}"),
-                );
-            }
-            if let Some(what) = self.what_is(index) {
-                return refuse(
-                    ErrorKind::Family,
-                    format!("the index '{index}' is already {what}"),
-                );
-            }
-            if k == 1 && indices[0] == *index {
-                return refuse(
-                    ErrorKind::Family,
-                    format!("the two indices are both named '{index}'"),
-                );
-            }
+        if let Some((_, kind, message)) = index_refusal(indices, |idx| self.what_is(idx)) {
+            return Err(FileError::new(kind, &origin, message));
         }
         let (source, value_at, eigenvalue_at) = two_lines(&origin, value, eigenvalue);
         self.families.push(Family {
@@ -212,15 +188,8 @@ impl LoadedSystem {
     /// Refuses `name` for a new function or family (`what`) when it is malformed, reserved,
     /// or already names something of the system.
     fn check_new_name(&self, origin: &str, name: &str, what: &str) -> Result<(), FileError> {
-        let message = if !is_identifier(name) {
-            format!(
-                "'{name}' cannot name {what}: a name is letters, digits and '_', starting with \
-                 a letter or '_'"
-            )
-        } else if let Some(why) = latex_unwritable(name).and_then(unwritable_letter) {
-            format!("'{name}' cannot name {what}: {why}")
-        } else if let Some(why) = reserved(name) {
-            why
+        let message = if let Some(bad) = BadName::of(name) {
+            bad.declaring(name, what)
         } else if let Some(other) = self.what_is(name) {
             format!("'{name}' is already {other}")
         } else {

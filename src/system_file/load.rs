@@ -66,6 +66,89 @@ fn invisible(c: char) -> bool {
         )
 }
 
+/// Why a name cannot name anything new, whatever the system has: each caller says it in its
+/// own words (`'2Q' cannot name a function: …`, `--define '2Q': …`).
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub enum BadName {
+    /// Not letters, digits and `_` starting with a letter or `_`.
+    Malformed,
+    /// A letter LaTeX output could not write, and why ([`unwritable_letter`]).
+    Unwritable(String),
+    /// A reserved name, and why ([`reserved`]).
+    Reserved(String),
+}
+
+impl BadName {
+    /// The first reason `name` is refused, if any: malformed, unwritable, reserved.
+    pub fn of(name: &str) -> Option<BadName> {
+        if !is_identifier(name) {
+            Some(BadName::Malformed)
+        } else if let Some(why) = latex_unwritable(name).and_then(unwritable_letter) {
+            Some(BadName::Unwritable(why))
+        } else {
+            reserved(name).map(BadName::Reserved)
+        }
+    }
+
+    /// The message for declaring `name` as `what` (`a function`): `'2Q' cannot name a
+    /// function: a name is …`; a reserved name's reason says it alone.
+    pub fn declaring(&self, name: &str, what: &str) -> String {
+        match self {
+            BadName::Reserved(why) => why.clone(),
+            _ => format!("'{name}' cannot name {what}: {}", self.why()),
+        }
+    }
+
+    /// The reason in words: `a name is letters, …`, `LaTeX has no letter 'é' (…)`, `'H' is
+    /// reserved for the Hamiltonian`.
+    pub fn why(&self) -> &str {
+        match self {
+            BadName::Malformed => {
+                "a name is letters, digits and '_', starting with a letter or '_'"
+            }
+            BadName::Unwritable(why) | BadName::Reserved(why) => why,
+        }
+    }
+}
+
+/// Why a family's two indices are refused, if they are: the index at fault, the kind of error
+/// and the message. `taken` says what already has a name, in the words after "is already"
+/// (`declared as a coordinate`).
+pub(super) fn index_refusal(
+    indices: [&str; 2],
+    taken: impl Fn(&str) -> Option<String>,
+) -> Option<(usize, ErrorKind, String)> {
+    for (k, idx) in indices.into_iter().enumerate() {
+        let refusal = if !is_identifier(idx) || idx.contains('_') || idx == "i" {
+            Some((
+                ErrorKind::Family,
+                format!("'{idx}' cannot name an index: use a plain name such as m or n"),
+            ))
+        } else if let Some(why) = latex_unwritable(idx).and_then(unwritable_letter) {
+            Some((
+                ErrorKind::Name,
+                format!("'{idx}' cannot name an index: {why}"),
+            ))
+        } else if let Some(other) = taken(idx) {
+            Some((
+                ErrorKind::Family,
+                format!("the index '{idx}' is already {other}"),
+            ))
+        } else if k == 1 && indices[0] == idx {
+            Some((
+                ErrorKind::Family,
+                format!("the two indices are both named '{idx}'"),
+            ))
+        } else {
+            None
+        };
+        if let Some((kind, message)) = refusal {
+            return Some((k, kind, message));
+        }
+    }
+    None
+}
+
 /// Why `name` cannot be declared whatever the system: `'cos' is reserved (i, cos, …)`,
 /// `'H' is reserved for the Hamiltonian`; `None` for a name that is free of meaning.
 pub fn reserved(name: &str) -> Option<String> {
@@ -560,25 +643,8 @@ impl<'a> Builder<'a> {
         span: Range<usize>,
         what: &'static str,
     ) -> Result<(), FileError> {
-        if !is_identifier(name) {
-            return Err(self.error(
-                ErrorKind::Name,
-                span,
-                format!(
-                    "'{name}' cannot name {what}: a name is letters, digits and '_', starting \
-                     with a letter or '_'"
-                ),
-            ));
-        }
-        if let Some(why) = latex_unwritable(name).and_then(unwritable_letter) {
-            return Err(self.error(
-                ErrorKind::Name,
-                span,
-                format!("'{name}' cannot name {what}: {why}"),
-            ));
-        }
-        if let Some(why) = reserved(name) {
-            return Err(self.error(ErrorKind::Name, span, why));
+        if let Some(bad) = BadName::of(name) {
+            return Err(self.error(ErrorKind::Name, span, bad.declaring(name, what)));
         }
         if let Some((other, at)) = self.names.get(name) {
             let line = super::error::locate(&self.source.text, at.clone()).line;
@@ -789,37 +855,19 @@ impl<'a> Builder<'a> {
                 }
             };
             let index_span = f.indices.as_ref().map_or(f.name.span(), |l| l.span());
-            for (k, idx) in indices.iter().enumerate() {
-                if !is_identifier(idx) || idx.contains('_') || idx == "i" {
-                    return Err(self.error(
-                        ErrorKind::Family,
-                        index_span,
-                        format!("'{idx}' cannot name an index: use a plain name such as m or n"),
-                    ));
-                }
-                if let Some(why) = latex_unwritable(idx).and_then(unwritable_letter) {
-                    let list = f.indices.as_ref().map(|l| l.get_ref());
-                    let span = list.map_or(index_span.clone(), |l| l[k].span());
-                    return Err(self.error(
-                        ErrorKind::Name,
-                        span,
-                        format!("'{idx}' cannot name an index: {why}"),
-                    ));
-                }
-                if let Some((other, _)) = self.names.get(idx) {
-                    return Err(self.error(
-                        ErrorKind::Family,
-                        index_span,
-                        format!("the index '{idx}' is already declared as {other}"),
-                    ));
-                }
-                if k == 1 && indices[0] == *idx {
-                    return Err(self.error(
-                        ErrorKind::Family,
-                        index_span,
-                        format!("the two indices are both named '{idx}'"),
-                    ));
-                }
+            let taken = |idx: &str| {
+                self.names
+                    .get(idx)
+                    .map(|(other, _)| format!("declared as {other}"))
+            };
+            if let Some((k, kind, message)) = index_refusal([&indices[0], &indices[1]], taken) {
+                // An unwritable letter is shown at its index; the rest at the list.
+                let list = f.indices.as_ref().map(|l| l.get_ref());
+                let span = match kind {
+                    ErrorKind::Name => list.map_or(index_span.clone(), |l| l[k].span()),
+                    _ => index_span,
+                };
+                return Err(self.error(kind, span, message));
             }
             if let Some(d) = &f.display {
                 self.check_display(d)?;

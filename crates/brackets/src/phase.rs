@@ -277,12 +277,6 @@ impl PhaseSpace {
         &self.declared
     }
 
-    /// Whether the bracket is canonical: no bracket is declared, so it is
-    /// `Σ ∂(f, g)/∂(q, p)` over the pairs alone.
-    pub fn is_canonical(&self) -> bool {
-        self.declared.is_empty()
-    }
-
     /// The variables.
     pub fn vars(&self) -> &Vars {
         &self.vars
