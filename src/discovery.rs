@@ -727,7 +727,7 @@ pub fn relation_text(poly: &Expr) -> String {
 ///     .collect::<Result<_, superint::brackets::EngineError>>()?;
 /// let (report, algebra) = closure_report("harmonic rotor", &rotor, &generators, &ClosureOptions::new(2))?;
 /// assert!(algebra.closes() && report.all_proved());
-/// assert_eq!(algebra.render_bracket(1, 2), "−ω²L");
+/// assert_eq!(algebra.render_bracket(1, 2), "−ω² L");
 /// # Ok::<(), superint::brackets::EngineError>(())
 /// ```
 pub fn closure_report(

@@ -686,7 +686,7 @@ impl Report {
                 String::new()
             };
             return format!(
-                "tower: {} {{K_{{m,n}}, H}} = i(mω − nΩ)K_{{m,n}} checked for \
+                "tower: {} {{K_{{m,n}}, H}} = i(mω − nΩ) K_{{m,n}} checked for \
                  1 ≤ m, n ≤ {}, {verdict}{time}",
                 counted(t.checked, "bracket"),
                 t.max

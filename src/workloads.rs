@@ -7,7 +7,7 @@
 //! - **W2 single(m)**: the same for the one pair `m = n`.
 //! - **W3 products**: Fateman `f·(f + 1)` with `f = (1 + x + y + z + t)^N`, and Pearce
 //!   `(1 + x + y + 2z² + 3t³ + 5u⁵)^N · (1 + u + t + 2z² + 3y³ + 5x⁵)^N`.
-//! - **W4 algebra**: the su(2) brackets `{L, G1} = −G2`, `{L, G2} = 4G1`, `{G1, G2} = −ω²L` and
+//! - **W4 algebra**: the su(2) brackets `{L, G1} = −G2`, `{L, G2} = 4 G1`, `{G1, G2} = −ω² L` and
 //!   the Casimir (C09, C10), each formed and checked, `N` times. The generators are the inputs,
 //!   built once; the brackets and every product of the Casimir, `(F1 − F2)²` included, are
 //!   computed in every repetition, on every side of the comparison (superint forms the

@@ -12,7 +12,7 @@ use super::output::{emit, Output};
 
 pub const EXAMPLES: &str = "\
 Examples:
-  superint bracket systems/harmonic-rotor.toml G1 G2   {G1, G2} = −ω²x p_y + ω²y p_x = −ω²L
+  superint bracket systems/harmonic-rotor.toml G1 G2   {G1, G2} = −ω²x p_y + ω²y p_x = −ω² L
   superint bracket systems/harmonic-rotor.toml 'x*p_y' H
   superint bracket systems/harmonic-rotor.toml P_1_1 H --when 'p_theta = I*omega'
   superint bracket systems/harmonic-rotor.toml L G1 --format latex

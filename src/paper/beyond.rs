@@ -27,10 +27,10 @@ pub(crate) fn section() -> Result<Section, EngineError> {
          Its ladder functions are `A_x = p_x + iMω_x x` and `A_y = p_y + iMω_y y`.",
     );
     s.hamilton();
-    s.identity("C26", "{A_x, H} = 3iωA_x", "{Ax, H}", "3*i*omega*Ax")?;
+    s.identity("C26", "{A_x, H} = 3iω A_x", "{Ax, H}", "3*i*omega*Ax")?;
     s.identity(
         "C26",
-        "{Ā_y, H} = −5iωĀ_y",
+        "{Ā_y, H} = −5iω Ā_y",
         "{Aybar, H}",
         "-5*i*omega*Aybar",
     )?;
@@ -41,7 +41,12 @@ pub(crate) fn section() -> Result<Section, EngineError> {
         "The resonance with the rotor `Ω = ω` (`2ω_x − ω_y = ω`) gives a third-order one, \
          `K = A_x² Ā_y e^{−iθ}`:",
     );
-    s.identity("C26", "{K, H} = i(ω − Ω)K", "{K, H}", "i*(omega - Omega)*K")?;
+    s.identity(
+        "C26",
+        "{K, H} = i(ω − Ω) K",
+        "{K, H}",
+        "i*(omega - Omega)*K",
+    )?;
     let sys = s.system().clone();
     for f in ["Re", "Im"] {
         s.identity_when(

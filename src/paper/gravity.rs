@@ -48,20 +48,20 @@ pub(crate) fn section(options: &PaperOptions) -> Result<Section, EngineError> {
     su2(&mut s, "'")?;
     s.identity(
         "C23",
-        "4G1'² + G2'² + ω²L'² = (F1 − F2 + Mg²/(2ω²))²",
+        "4 G1'² + G2'² + ω² L'² = (F1 − F2 + Mg²/(2ω²))²",
         "4*G1p^2 + G2p^2 + omega^2*Lp^2",
         "(F1 - F2 + M*g^2/(2*omega^2))^2",
     )?;
 
     s.heading("Shifted resonant integrals");
     s.show("", &[("Z'", "Zp")])?;
-    s.identity("C24", "{Z', F1} = iωZ'", "{Zp, F1}", "i*omega*Zp")?;
+    s.identity("C24", "{Z', F1} = iω Z'", "{Zp, F1}", "i*omega*Zp")?;
     s.text("`K'_{m,n} = Z'^m e^{−inθ}`, with `P'_{m,n}`, `Q'_{m,n}` as before:");
     let sys = s.system().clone();
     s.item(Item::Tower {
         id: "C24".into(),
         statement: format!(
-            "{{K'_{{m,n}}, F1}} = i(mω − nΩ)K'_{{m,n}} for 1 ≤ m, n ≤ {}",
+            "{{K'_{{m,n}}, F1}} = i(mω − nΩ) K'_{{m,n}} for 1 ≤ m, n ≤ {}",
             options.tower_max
         ),
         system: sys.clone(),
@@ -72,7 +72,7 @@ pub(crate) fn section(options: &PaperOptions) -> Result<Section, EngineError> {
         title: "for all m, n ≥ 0, from the ladder function Z'".into(),
         settles: vec![(
             "C24".into(),
-            "{K'_{m,n}, F1} = i(mω − nΩ)K'_{m,n} for all m, n ≥ 0".into(),
+            "{K'_{m,n}, F1} = i(mω − nΩ) K'_{m,n} for all m, n ≥ 0".into(),
         )],
         system: sys,
         ladder: "Zp".into(),

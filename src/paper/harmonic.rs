@@ -69,7 +69,7 @@ pub(crate) fn section(options: &PaperOptions) -> Result<Section, EngineError> {
     let rhs = rod.parse("(p_x^2 + p_y^2)/(2*M) + M*omega^2*(x^2 + y^2)/2 + 6*p_theta^2/(M*L^2)")?;
     s.claim(
         "C04",
-        "p_θ²/(2I) = 6p_θ²/(ML²) in H for a rod, I = ML²/12",
+        "p_θ²/(2I) = 6 p_θ²/(ML²) in H for a rod, I = ML²/12",
         lhs,
         rhs,
         None,
@@ -126,24 +126,24 @@ pub(crate) fn section(options: &PaperOptions) -> Result<Section, EngineError> {
     su2(&mut s, "")?;
     s.identity(
         "C10",
-        "4G1² + G2² + ω²L² = (F1 − F2)²",
+        "4 G1² + G2² + ω² L² = (F1 − F2)²",
         "4*G1^2 + G2^2 + omega^2*L^2",
         "(F1 - F2)^2",
     )?;
 
     s.heading("Ladder functions and resonant integrals");
     s.show("", &[("Z", "Z"), ("Z̄", "Zbar"), ("Ω", "Omega")])?;
-    s.identity("C11", "{Z, F1} = iωZ", "{Z, F1}", "i*omega*Z")?;
-    s.identity("C13", "{Z̄, F1} = −iωZ̄", "{Zbar, F1}", "-i*omega*Zbar")?;
+    s.identity("C11", "{Z, F1} = iω Z", "{Z, F1}", "i*omega*Z")?;
+    s.identity("C13", "{Z̄, F1} = −iω Z̄", "{Zbar, F1}", "-i*omega*Zbar")?;
     s.text(
         "`K_{m,n} = Z^m e^{−inθ}`, `K̄_{m,n} = Z̄^m e^{inθ}`: \
-         `{K_{m,n}, F1} = i(mω − nΩ)K_{m,n}` by expansion, and for all `m, n` by a proof.",
+         `{K_{m,n}, F1} = i(mω − nΩ) K_{m,n}` by expansion, and for all `m, n` by a proof.",
     );
     let sys = s.system().clone();
     s.item(Item::Tower {
         id: "C12".into(),
         statement: format!(
-            "{{K_{{m,n}}, F1}} = i(mω − nΩ)K_{{m,n}} for 1 ≤ m, n ≤ {}",
+            "{{K_{{m,n}}, F1}} = i(mω − nΩ) K_{{m,n}} for 1 ≤ m, n ≤ {}",
             options.tower_max
         ),
         system: sys.clone(),
@@ -155,11 +155,11 @@ pub(crate) fn section(options: &PaperOptions) -> Result<Section, EngineError> {
         settles: vec![
             (
                 "C12".into(),
-                "{K_{m,n}, F1} = i(mω − nΩ)K_{m,n} for all m, n ≥ 0".into(),
+                "{K_{m,n}, F1} = i(mω − nΩ) K_{m,n} for all m, n ≥ 0".into(),
             ),
             (
                 "C14".into(),
-                "{K̄_{m,n}, F1} = −i(mω − nΩ)K̄_{m,n} for all m, n ≥ 0".into(),
+                "{K̄_{m,n}, F1} = −i(mω − nΩ) K̄_{m,n} for all m, n ≥ 0".into(),
             ),
         ],
         system: sys,
@@ -169,7 +169,7 @@ pub(crate) fn section(options: &PaperOptions) -> Result<Section, EngineError> {
         s.identity(
             "C14",
             &format!(
-                "{{K̄_{{{m},{n}}}, F1}} = −i({})K̄_{{{m},{n}}}",
+                "{{K̄_{{{m},{n}}}, F1}} = −i({}) K̄_{{{m},{n}}}",
                 frequency(m, n)
             ),
             &format!("{{Kbar{m}{n}, F1}}"),
@@ -293,8 +293,8 @@ pub(crate) fn su2(s: &mut SectionBuilder, prime: &str) -> Result<(), EngineError
     };
     for (a, b, rhs_text, rhs) in [
         ("L", "G1", "−G2", "-G2"),
-        ("L", "G2", "4G1", "4*G1"),
-        ("G1", "G2", "−ω²L", "-omega^2*L"),
+        ("L", "G2", "4 G1", "4*G1"),
+        ("G1", "G2", "−ω² L", "-omega^2*L"),
     ] {
         let rhs_text = rhs_text.replace("G1", &format!("G1{p}"));
         let rhs_text = rhs_text.replace("G2", &format!("G2{p}"));

@@ -81,6 +81,9 @@ fn aligned(statement: &str) -> String {
 
 /// How wide a displayed equation may be, in printed characters.
 const ROW: usize = 55;
+/// How wide a claim's left side may be and still set the alignment column: wider, it takes
+/// rows of its own.
+const LONG_LHS: usize = 25;
 /// How wide the formula of a claim's row may be (the verdict takes the rest of the line).
 const CLAIM_ROW: usize = 30;
 
@@ -116,8 +119,14 @@ fn split_sum(s: &str, max: usize) -> Vec<String> {
         .replace(r"\right)", r"\bigr)");
     let mut cuts = Vec::new();
     let mut depth = 0i32;
+    let mut escaped = false;
     for (k, c) in s.char_indices() {
+        // `\{` and `\}` are a Poisson bracket's braces, printed, not TeX's groups: a sum
+        // inside a bracket breaks as one outside it does.
+        let after_backslash = escaped;
+        escaped = c == '\\' && !escaped;
         match c {
+            '{' | '}' if after_backslash => {}
             '{' => depth += 1,
             '}' => depth -= 1,
             ' ' if depth == 0 && (s[k..].starts_with(" + ") || s[k..].starts_with(" - ")) => {
@@ -174,6 +183,14 @@ fn claim_rows(c: &ClaimResult) -> Vec<String> {
     // A long statement breaks at its sums' signs, the verdict after its last line (moved
     // below it by amsmath when the line has no room).
     let mut rows: Vec<String> = match relation(&c.statement) {
+        // A long left side takes rows of its own, right of the alignment column, and the
+        // relation starts the next: as the column of the rows' `&`, it would push every other
+        // row of the section, residuals included, past the margin.
+        Some(k) if visual_width(&math(&c.statement[..k])) > LONG_LHS => {
+            let mut rows = broken_rows("&", &math(&c.statement[..k]), ROW - LONG_LHS);
+            rows.extend(broken_rows("&", &math(&c.statement[k..]), ROW - LONG_LHS));
+            rows
+        }
         Some(k) => {
             let lhs = math(&c.statement[..k]);
             // The right side takes what the left leaves of the row.

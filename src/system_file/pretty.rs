@@ -1,6 +1,6 @@
 //! Statements in the paper's notation: a parsed expression printed back as written, with
 //! unicode names (`p_θ`, `ω`, `Z̄`, `K_{2,3}`), superscript exponents and implicit products:
-//! `{L, G1} = -G2` reads `{L, G1} = −G2`, `4*G1^2 + omega^2*L^2` reads `4G1² + ω²L²`.
+//! `{L, G1} = -G2` reads `{L, G1} = −G2`, `4*G1^2 + omega^2*L^2` reads `4 G1² + ω² L²`.
 
 use trigpoly::superscript;
 use trigpoly::syntax::{Expr as Tree, ExprKind};
@@ -116,7 +116,24 @@ impl LoadedSystem {
     fn print(&self, tree: &Tree, spaced: bool) -> Printed {
         match &tree.kind {
             ExprKind::Integer(n) => Printed::atom(n.to_string()),
-            ExprKind::Name(n) => Printed::atom(self.display_name(n)),
+            ExprKind::Name(n) => {
+                let mut p = Printed::atom(self.display_name(n));
+                // A function (`L`, `H`, `K_{1,1}`) is a word in a product, `−ω² L`, as the
+                // paper sets its generators apart; variables run together, `Mω²x`, and so
+                // does a function named by one Greek letter, a frequency `Ω` as `ω` is.
+                let greek_letter = {
+                    let mut chars = p.text.chars();
+                    chars.next().is_some_and(|c| !c.is_ascii()) && chars.next().is_none()
+                };
+                let function = self.system.get(n).is_ok()
+                    || instance_of(&self.families, n).is_some()
+                    || self.families.iter().any(|f| f.name == *n);
+                if function && !greek_letter {
+                    p.first_long = true;
+                    p.last_long = true;
+                }
+                p
+            }
             ExprKind::Neg(a) => {
                 let a = self.print(a, spaced).wrapped(QUOTIENT);
                 // `−1/x` is a quotient: as a left factor it takes parentheses like `1/x`.
@@ -170,7 +187,10 @@ impl LoadedSystem {
                 let a = if call { a.wrapped(ATOM) } else { a };
                 let sep = if digit_right {
                     "·"
-                } else if number_left && !a.text.contains(|c: char| c.is_alphabetic()) {
+                } else if number_left
+                    && !a.text.contains(|c: char| c.is_alphabetic())
+                    && !b.first_long
+                {
                     ""
                 } else if spaced || a.last_long || b.first_long {
                     " "

@@ -68,7 +68,7 @@ fn assert_snapshot(name: &str, actual: &str) {
 fn cli_default_job_text_matches_snapshot() {
     let out = run(&["--no-timings"], 0);
     assert_snapshot("paper.txt", &out);
-    for claim in ["{L, G1} = −G2", "{L, G2} = 4G1", "{G1, G2} = −ω²L"] {
+    for claim in ["{L, G1} = −G2", "{L, G2} = 4 G1", "{G1, G2} = −ω² L"] {
         assert!(
             out.lines()
                 .any(|l| l.trim_start().starts_with(claim) && l.ends_with("[C09 proved]")),
@@ -376,6 +376,55 @@ fn cli_latex_of_every_command_compiles() {
     }
 }
 
+/// A claim whose left side is long takes rows of its own, so that it does not set the
+/// alignment column of its section: that pushed every row beside it, residuals included, 120 pt
+/// past the margin.
+#[test]
+fn cli_latex_long_left_side_takes_rows_of_its_own() {
+    let dir = std::env::temp_dir().join(format!("superint-long-lhs-{}", std::process::id()));
+    std::fs::create_dir_all(&dir).expect("a temporary directory");
+    let file = dir.join("long.toml");
+    std::fs::write(
+        &file,
+        r#"name = "A long left side"
+hamiltonian = "(p_x^2 + p_y^2)/2 + (x^2 + y^2)/2"
+[phase_space]
+coordinates = ["x", "y"]
+[[claim]]
+claim = "{x^3*p_y^2 + 3*x^2*y*p_x*p_y - 7*y^3*p_x^2 + 5*x*y*p_x^2*p_y^2 + x^4 + y^4 + 11*x^2*y^2 + p_x^4, H} = 0"
+[[claim]]
+claim = "{x*p_y - y*p_x, H} = 0"
+[[claim]]
+claim = "{x*p_y + y*p_x, H} = 0"
+"#,
+    )
+    .expect("write long.toml");
+    let out = superint(&[
+        "check",
+        file.to_str().expect("a path"),
+        "--format",
+        "latex",
+        "--no-timings",
+    ]);
+    let _ = std::fs::remove_dir_all(&dir);
+    assert_eq!(out.status.code(), Some(1), "{}", stderr(&out));
+    let doc = stdout(&out);
+    // The long bracket breaks inside its braces, the relation opens the next row, and the
+    // short claims keep their left sides at the column.
+    assert!(
+        doc.contains(
+            "&\\{x^{3} p_{y}^{2} + 3x^{2}y p_{x} p_{y} - 7y^{3} p_{x}^{2} \\\\\n\
+             &\\quad + 5xy p_{x}^{2} p_{y}^{2} + x^{4} + y^{4} + 11x^{2}y^{2} + p_{x}^{4}, H\\} \\\\\n\
+             &= 0 \\tag*{[\\#1 REFUTED]}"
+        ),
+        "{doc}"
+    );
+    assert!(doc.contains("\\{x p_{y} - y p_{x}, H\\} &= 0 \\tag*{[\\#2 proved]}"));
+    assert!(doc.contains("\\text{residual} &= 2 p_{x} p_{y} - 2 x y"));
+    assert_balanced_latex(&doc);
+    compile_within(&doc, 0.0);
+}
+
 #[test]
 fn cli_markdown_has_tables() {
     let md = run(&["--format", "markdown", "--no-timings"], 0);
@@ -394,7 +443,7 @@ fn cli_tower_small_matches_snapshot() {
     assert_eq!(
         out.lines().last(),
         Some(
-            "tower: 9 brackets {K_{m,n}, H} = i(mω − nΩ)K_{m,n} checked for 1 ≤ m, n ≤ 3, \
+            "tower: 9 brackets {K_{m,n}, H} = i(mω − nΩ) K_{m,n} checked for 1 ≤ m, n ≤ 3, \
              all hold"
         )
     );

@@ -453,8 +453,8 @@ fn harmonic_1_1_closure() {
             "{L, P_1_1} = Q_1_1",
             "{P_1_1, Q_1_1} = −2Mω",
             "F2 = ω²I/2",
-            "ω⁴I² + 4 F1² = 4ω²I F1 + 4ω²L² + 16 G1² + 4 G2²",
-            "Mω²I + P_1_1² + Q_1_1² = 2MωL + 2M F1",
+            "ω⁴I² + 4 F1² = 4ω²I F1 + 4ω² L² + 16 G1² + 4 G2²",
+            "Mω²I + P_1_1² + Q_1_1² = 2Mω L + 2M F1",
         ],
     );
     expect(
@@ -467,7 +467,7 @@ fn harmonic_1_1_closure() {
             "{R_1_1, S_1_1} = −2Mω",
             "2M G2 = P_1_1 R_1_1 + Q_1_1 S_1_1",
             "4M G1 + P_1_1 S_1_1 = Q_1_1 R_1_1",
-            "Mω²I + 2MωL + R_1_1² + S_1_1² = 2M F1",
+            "Mω²I + 2Mω L + R_1_1² + S_1_1² = 2M F1",
             "31 claims: 31 proved, 0 refuted",
         ],
     );
@@ -500,7 +500,7 @@ fn harmonic_2_1() {
         &[
             "The table closes",
             "{G1, P_2_1} = ω T_2_1",
-            "{P_2_1, Q_2_1} = 32M²ω³I − 16M²ω²L − 16M²ω F1",
+            "{P_2_1, Q_2_1} = 32M²ω³I − 16M²ω² L − 16M²ω F1",
             "{T_2_1, U_2_1} = 16M²ω³I − 8M²ω F1",
             "16M² G1² + P_2_1 R_2_1 = T_2_1²",
             "57 claims: 57 proved, 0 refuted",
@@ -525,7 +525,7 @@ fn harmonic_1_2() {
             "The table closes",
             "{G1, P_1_2} = ω R_1_2/2",
             "{P_1_2, Q_1_2} = −2Mω",
-            "Mω²I + 4 P_1_2² + 4 Q_1_2² = 8MωL + 8M F1",
+            "Mω²I + 4 P_1_2² + 4 Q_1_2² = 8Mω L + 8M F1",
         ],
     );
 }
@@ -546,7 +546,7 @@ fn harmonic_2_3() {
         &[
             "The table closes",
             "{G1, P_2_3} = ω T_2_3",
-            "{P_2_3, Q_2_3} = 32M²ω³I/9 − 16M²ω²L − 16M²ω F1",
+            "{P_2_3, Q_2_3} = 32M²ω³I/9 − 16M²ω² L − 16M²ω F1",
         ],
     );
 }
@@ -665,8 +665,8 @@ fn su2_and_its_casimir() {
         &[
             "{L, G1} = −G2",
             "{L, G2} = 4 G1",
-            "{G1, G2} = −ω²L",
-            "ω²L² + 2 F1 F2 + 4 G1² + G2² = F1² + F2²",
+            "{G1, G2} = −ω² L",
+            "ω² L² + 2 F1 F2 + 4 G1² + G2² = F1² + F2²",
         ],
     );
 }
@@ -920,8 +920,8 @@ fn kepler_laplace_runge_lenz_and_nothing_else() {
         &[
             "{L, A_x} = A_y",
             "{L, A_y} = −A_x",
-            "{A_x, A_y} = −2HL/M",
-            "Mk² + 2HL² = M A_x² + M A_y²",
+            "{A_x, A_y} = −2 H L/M",
+            "Mk² + 2 H L² = M A_x² + M A_y²",
         ],
     );
 }
@@ -1061,7 +1061,7 @@ value = "b*x*p_x + a*y*p_y"
         out.contains("{A, B} for the unliftable at a = 1, b = 1 (row A, column B)\n"),
         "{out}"
     );
-    assert!(out.contains("  {U, V} = 4W at a = 1, b = 1 "), "{out}");
+    assert!(out.contains("  {U, V} = 4 W at a = 1, b = 1 "), "{out}");
     let mut json_args = args.to_vec();
     json_args.extend(["--format", "json"]);
     let o = superint(&json_args);
@@ -1069,7 +1069,7 @@ value = "b*x*p_x + a*y*p_y"
     let claims = v["claims"].as_array().expect("claims");
     let uv = claims
         .iter()
-        .find(|c| c["statement"] == "{U, V} = 4W")
+        .find(|c| c["statement"] == "{U, V} = 4 W")
         .expect("{U, V}");
     assert_eq!(uv["condition"], "a = 1, b = 1");
     assert_eq!(uv["condition_ascii"], "a = 1, b = 1");
@@ -1425,10 +1425,10 @@ fn smorodinsky_winternitz_quadratic_algebra_with_symbolic_parameters() {
         "sw1-algebra",
         &[
             "{H_x, X} = C [B1 proved]",
-            "{H_x, C} = 8H H_x − 8 H_x² − 8αX/M [B2 proved]",
-            "{X, C} = −32MβH + 32Mβ H_x + 32Mγ H_x − 8HX + 16 H_x X [B3 proved]",
-            "128Mαβγ + 64MβH H_x + 16H H_x X = 32MβH² + 32Mβ H_x² + 32Mγ H_x² + 16 H_x² X + C² \
-             + 8αX²/M [R1 proved]",
+            "{H_x, C} = 8 H H_x − 8 H_x² − 8α X/M [B2 proved]",
+            "{X, C} = −32Mβ H + 32Mβ H_x + 32Mγ H_x − 8 H X + 16 H_x X [B3 proved]",
+            "128Mαβγ + 64Mβ H H_x + 16 H H_x X = 32Mβ H² + 32Mβ H_x² + 32Mγ H_x² + 16 H_x² X \
+             + C² + 8α X²/M [R1 proved]",
             "Parameters kept symbolic: α, β, γ.",
         ],
     ));

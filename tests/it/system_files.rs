@@ -1184,7 +1184,10 @@ fn check_json_is_one_object_per_claim() {
 fn check_every_format_renders() {
     let file = "systems/anisotropic-oscillator-1-2.toml";
     let md = run(&["check", file, "--format", "markdown", "--no-timings"], 0);
-    assert!(md.contains("- `{a, H} = iωa` — **ladders proved**"), "{md}");
+    assert!(
+        md.contains("- `{a, H} = iω a` — **ladders proved**"),
+        "{md}"
+    );
     assert!(md.contains("**false-sign refuted, as expected**"), "{md}");
     let tex = run(&["check", file, "--format", "latex", "--no-timings"], 0);
     assert!(tex.starts_with("\\documentclass{article}") && tex.is_ascii());

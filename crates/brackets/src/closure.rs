@@ -18,7 +18,7 @@
 //! // su(2) of the harmonic rotor, and its Casimir.
 //! let rotor = systems::harmonic_rotor();
 //! let c = closure(&rotor, &["F1", "F2", "L", "G1", "G2"], &ClosureOptions::new(2))?;
-//! assert_eq!(c.render_bracket(3, 4), "−ω²L"); // {G1, G2}
+//! assert_eq!(c.render_bracket(3, 4), "−ω² L"); // {G1, G2}
 //! assert_eq!(c.relations.len(), 1);
 //! assert!(c.relations[0].symbolic);
 //! # Ok::<(), brackets::EngineError>(())
@@ -279,7 +279,7 @@ fn monomial_count(r: usize, d: u32) -> u128 {
 ///     panic!("{{G1, G2}} is a polynomial in the generators");
 /// };
 /// assert!(*symbolic);
-/// assert_eq!(poly.to_string(), "−ω²L");
+/// assert_eq!(poly.to_string(), "−ω² L");
 /// assert!(c.relations.iter().any(|r| r.degree == 2 && r.symbolic));
 /// # Ok::<(), brackets::EngineError>(())
 /// ```
@@ -557,8 +557,8 @@ pub fn closure_of(
                 "the generator '{name}' has the name of a parameter"
             )));
         }
-        builder = builder.coordinate(name);
-        shown = shown.coordinate(name).shown_as(display);
+        builder = builder.coordinate(name).word();
+        shown = shown.coordinate(name).shown_as(display).word();
     }
     // Each generator printed as its display name (`A_x` for `Ax`), unless two would then
     // print alike.
@@ -1046,9 +1046,9 @@ mod tests {
         .unwrap();
         assert!(c.closes());
         assert!(c.all_symbolic());
-        // {Z, Z̄} = 4iMω, {Z, F1} = iωZ (C11).
+        // {Z, Z̄} = 4iMω, {Z, F1} = iω Z (C11).
         assert_eq!(c.render_bracket(0, 1), "4iMω");
-        assert_eq!(c.render_bracket(0, 2), "iωZ");
+        assert_eq!(c.render_bracket(0, 2), "iω Z");
         // Z Z̄ = 2M(F1 − F2) + 2MωL, once (not again times i).
         assert_eq!(c.relations.len(), 1);
         // The 21 monomials of degree ≤ 2 in five generators span 20 dimensions over Q(i)
@@ -1076,7 +1076,7 @@ mod tests {
         }
         let c = closure(&rotor, &["F1", "F2", "L", "G1", "G2"], &options).unwrap();
         assert!(c.parameters.is_empty() && c.all_symbolic());
-        assert_eq!(c.render_bracket(3, 4), "−ω²L");
+        assert_eq!(c.render_bracket(3, 4), "−ω² L");
         assert_eq!(c.relations.len(), 1);
         assert_eq!(c.relations[0].degree, 2);
         // The relation, expanded in phase space, vanishes.

@@ -22,7 +22,7 @@ pub struct TowerReport {
     pub seconds: f64,
 }
 
-/// Checks `{K_{m,n}, H} = i(mω − nΩ)K_{m,n}` with `Ω = p_θ/I` by expanding every bracket, for
+/// Checks `{K_{m,n}, H} = i(mω − nΩ) K_{m,n}` with `Ω = p_θ/I` by expanding every bracket, for
 /// all `1 ≤ m, n ≤ max`; `progress(done, total)` is called after each pair. The system must be a
 /// rotor in the paper's names (`omega`, `I`, `theta`, `p_theta`); a system file's family takes
 /// any names (`superint tower --system FILE`), and so does a family added in code to a system
@@ -103,7 +103,7 @@ impl EigenProof {
     }
 }
 
-/// Proves `{K_{m,n}, H} = i(mω − nΩ)K_{m,n}` and `{K̄_{m,n}, H} = −i(mω − nΩ)K̄_{m,n}` for all
+/// Proves `{K_{m,n}, H} = i(mω − nΩ) K_{m,n}` and `{K̄_{m,n}, H} = −i(mω − nΩ) K̄_{m,n}` for all
 /// `m, n ≥ 0` from `{Z, H} = iωZ`, `{e^{−iθ}, H} = −iΩe^{−iθ}` and their conjugates, in a rotor
 /// with the paper's names (`omega`, `I`, `theta`, `p_theta`). For a family in other names, and
 /// any eigenvalue linear in `m, n`, `superint::system_file::family_tower_report` gives the same

@@ -215,6 +215,8 @@ pub fn superscript(e: i64) -> String {
 struct Names {
     /// The name of each variable, by index.
     names: Vec<String>,
+    /// Whether text sets each variable apart as a word, by index ([`crate::VarSetBuilder::word`]).
+    words: Vec<bool>,
     /// The variables as the paper orders a term's factors: parameters, then coordinates,
     /// then momenta (then angles), each kind in declaration order.
     order: Vec<usize>,
@@ -249,6 +251,7 @@ impl Names {
         order.sort_by_key(rank);
         Names {
             names,
+            words: vars.vars().map(|v| vars.variable(v).is_word()).collect(),
             order: order.iter().map(|v| v.index()).collect(),
             angles: vars.angles().map(|v| v.index()).collect(),
             all_wide: style == Style::Unicode
@@ -331,7 +334,8 @@ fn write_term(
             .filter(|&&j| exps[j] != 0 && (exps[j] > 0) == positive)
         {
             let name = &names.names[j];
-            let wide = names.all_wide || (style == Style::Unicode && name.chars().count() > 1);
+            let wide = names.all_wide
+                || (style == Style::Unicode && (names.words[j] || name.chars().count() > 1));
             product.next(out, wide);
             write_power(out, name, exps[j].abs(), style);
         }

@@ -73,6 +73,9 @@ pub struct Variable {
     /// any: a third spelling that [`VarSet::lookup`] takes.
     spelled_out: Option<String>,
     kind: VarKind,
+    /// Whether text sets the variable apart from its neighbours in a product, as a word, even
+    /// when its name is one letter: the generators of an algebra (`−ω² L`, `4 G1`).
+    word: bool,
 }
 
 impl Variable {
@@ -101,6 +104,10 @@ impl Variable {
     /// The kind.
     pub fn kind(&self) -> VarKind {
         self.kind
+    }
+    /// Whether text sets the variable apart in a product as a word ([`VarSetBuilder::word`]).
+    pub fn is_word(&self) -> bool {
+        self.word
     }
     /// Whether [`VarSet::lookup`] finds the variable by `spelling`: its name, its unicode
     /// form, or that form with its Greek letters spelled out.
@@ -587,6 +594,7 @@ impl VarSetBuilder {
             unicode,
             latex,
             kind,
+            word: false,
         });
         self
     }
@@ -619,6 +627,15 @@ impl VarSetBuilder {
         if let (Some(v), Some((unicode, latex))) = (self.vars.last_mut(), display_forms(display)) {
             (v.unicode, v.latex) = (unicode, latex);
             v.spelled_out = spell_out(&v.unicode);
+        }
+        self
+    }
+    /// Sets the variable declared last apart in text's products, as a word, even when its name
+    /// is one letter: `−ω² L` and `ω² L²` where a generator `L` of an algebra stands beside
+    /// parameters, as `4 G1` does (without it, `−ω²L`, as `Mω²x` is written in a phase space).
+    pub fn word(mut self) -> Self {
+        if let Some(v) = self.vars.last_mut() {
+            v.word = true;
         }
         self
     }

@@ -112,6 +112,40 @@ fn minus_omega_squared_times_a_parameter() {
     );
 }
 
+/// The generators of an algebra are words: set apart from their neighbours in text even when
+/// one letter long (`−ω² L`, `4 G1`, as the paper writes su(2)), the parameters still run
+/// together (`4iMω`).
+#[test]
+fn generators_declared_as_words_are_set_apart() {
+    let vars = VarSet::builder()
+        .parameter("M")
+        .parameter("omega")
+        .coordinate("L")
+        .word()
+        .coordinate("G1")
+        .word()
+        .coordinate("x")
+        .build()
+        .unwrap();
+    assert!(vars.variable(vars.lookup("L").unwrap()).is_word());
+    assert!(!vars.variable(vars.lookup("x").unwrap()).is_word());
+    prints(
+        &vars,
+        "-omega^2*L",
+        ["−ω² L", r"-\omega^{2} L", "-omega^2*L"],
+    );
+    prints(
+        &vars,
+        "4*G1^2 + omega^2*L^2 + 4*i*M*omega*L*x",
+        [
+            "4iMω L x + ω² L² + 4 G1²",
+            r"4 i M \omega L x + \omega^{2} L^{2} + 4 G_{1}^{2}",
+            "4*i*M*omega*L*x + omega^2*L^2 + 4*G1^2",
+        ],
+    );
+    prints(&vars, "2*M*x", ["2Mx", "2 M x", "2*M*x"]);
+}
+
 #[test]
 fn angular_momentum_prints_in_declaration_order() {
     let vars = plane();
