@@ -912,11 +912,11 @@ fn bad_inputs() -> Vec<(&'static str, Vec<u8>, &'static str, Vec<&'static str>)>
             check.clone(),
         ),
         (
-            "a search over Poisson variables",
+            "a search on a surface of Poisson variables that the flow leaves",
             TOP.as_bytes().to_vec(),
-            "searching for integrals: the search solves for integrals in a space of monomials \
-             in canonical coordinates and momenta",
-            vec!["search", "bad.toml"],
+            "searching for integrals: the flow leaves the surface M1 = 0: there {M1, H} = \
+             −M2 M3, not 0",
+            vec!["search", "bad.toml", "--when", "M1 = 0"],
         ),
         (
             "missing file",
