@@ -325,6 +325,24 @@ fn commands_take_a_declared_structure_or_refuse_it() {
     ] {
         assert!(flat.contains(piece), "{piece} in\n{out}");
     }
+    // A space too small for H says so.
+    let o = superint(&[
+        "search",
+        "systems/kovalevskaya-top.toml",
+        "--poisson-degree",
+        "1",
+    ]);
+    assert_eq!(o.status.code(), Some(0), "{}", text(&o.stderr));
+    let flat = text(&o.stdout)
+        .split_whitespace()
+        .collect::<Vec<_>>()
+        .join(" ");
+    assert!(
+        flat.contains(
+            "Note: H is not in this space (degree 2 in the Poisson variables, past the space's 1)"
+        ),
+        "{flat}"
+    );
 }
 
 /// The dimension over Q of the span of `functions`: the rank of their coefficients on the
@@ -482,6 +500,32 @@ fn kovalevskaya_search_finds_the_quartic_integral() {
     let fixed = found.basis.iter().map(|f| &f.fixed);
     assert_eq!(span_dimension(fixed.chain(&with_k)), dimension);
     assert_eq!(found.dimensions_by_poisson_degree(), [1, 1, 4, 4, 11]);
+    // The JSON report says the same, as data.
+    let o = superint(&[
+        "search",
+        "systems/kovalevskaya-top.toml",
+        "--poisson-degree",
+        "4",
+        "--format",
+        "json",
+        "--no-timings",
+    ]);
+    assert_eq!(o.status.code(), Some(0), "{}", text(&o.stderr));
+    let v: Value = serde_json::from_slice(&o.stdout).expect("JSON");
+    let s = &v["searches"][0];
+    assert_eq!(s["space"]["poisson_degree"], 4);
+    assert_eq!(
+        s["space"]["poisson_variables"],
+        serde_json::json!(["M1", "M2", "M3", "gamma1", "gamma2", "gamma3"])
+    );
+    assert_eq!(s["space"]["momenta"], serde_json::json!([]));
+    assert_eq!(s["dimension"], dimension);
+    assert_eq!(s["by_poisson_degree"], serde_json::json!([1, 1, 4, 4, 11]));
+    assert_eq!(
+        s["poisson_counts"],
+        serde_json::json!([[1, 0, 0], [0, 0, 0], [3, 0, 0], [0, 0, 0], [7, 0, 0]])
+    );
+    assert_eq!(v["summary"]["proved"], dimension);
 }
 
 /// The same family off the Kovalevskaya ratio (`I3 = 1/3` instead of 1/2): nothing quartic but
