@@ -9,7 +9,7 @@ use brackets::search::{search, SearchOptions, SearchSpace};
 use superint::system_file::{load, LimitsOverride};
 use trigpoly::{Expr, Rational};
 
-use crate::DEGREE_ONE;
+use crate::{normalize, DEGREE_ONE};
 
 /// Every command of `docs/results.md`, by name.
 const COMMANDS: &[(&str, &str)] = &[
@@ -261,11 +261,6 @@ fn system_file(name: &str) -> superint::system_file::LoadedSystem {
         .join("systems")
         .join(name);
     load(&path, &LimitsOverride::default()).expect("the file loads")
-}
-
-/// Whitespace runs as one space, so that wrapped and padded lines compare.
-fn normalize(s: &str) -> String {
-    s.split_whitespace().collect::<Vec<_>>().join(" ")
 }
 
 /// Runs the binary at the workspace root.

@@ -317,7 +317,7 @@ fn commands_take_a_declared_structure_or_refuse_it() {
     ]);
     assert_eq!(o.status.code(), Some(0), "{}", text(&o.stderr));
     let out = text(&o.stdout);
-    let flat = out.split_whitespace().collect::<Vec<_>>().join(" ");
+    let flat = crate::normalize(&out);
     for piece in [
         "The space: M1^a M2^b M3^c, with degree a + b + c ≤ 2 in the Poisson variables",
         "By degree in the Poisson variables: ≤ 0: 1, ≤ 1: 1, ≤ 2: 3.",
@@ -333,10 +333,7 @@ fn commands_take_a_declared_structure_or_refuse_it() {
         "1",
     ]);
     assert_eq!(o.status.code(), Some(0), "{}", text(&o.stderr));
-    let flat = text(&o.stdout)
-        .split_whitespace()
-        .collect::<Vec<_>>()
-        .join(" ");
+    let flat = crate::normalize(&text(&o.stdout));
     assert!(
         flat.contains(
             "Note: H is not in this space (degree 2 in the Poisson variables, past the space's 1)"
@@ -582,7 +579,7 @@ fn off_the_kovalevskaya_ratio_the_search_finds_no_quartic_integral() {
             );
             continue;
         }
-        let flat = out.split_whitespace().collect::<Vec<_>>().join(" ");
+        let flat = crate::normalize(&out);
         assert!(
             flat.contains("the generated ones span 10 of the 11 dimensions"),
             "{out}"

@@ -1656,7 +1656,7 @@ fn tower_decides_the_eigenvalue_by_its_values() {
     let out = tower("i*omega*(m - n)^1 + m*n - m*n", 0);
     assert!(out.contains("[W-all proved]"), "{out}");
     // The fact wraps: compare its words.
-    let words = out.split_whitespace().collect::<Vec<_>>().join(" ");
+    let words = crate::normalize(&out);
     assert!(
         words.contains(
             "both are polynomials of degree at most 2 in m, n, and they agree at the 9 points"
@@ -1669,7 +1669,7 @@ fn tower_decides_the_eigenvalue_by_its_values() {
     );
     let out = tower("i*omega*(m - n) + m*(m - 1)*(m - 2)*(m - 3)", 1);
     assert!(out.contains("[W-all REFUTED]"), "{out}");
-    let words = out.split_whitespace().collect::<Vec<_>>().join(" ");
+    let words = crate::normalize(&out);
     assert!(words.contains("they differ at (m, n) = (4, 0)"), "{out}");
     let out = tower("i*omega*(m - n)*1^n", 0);
     assert!(out.contains("No proof for all m, n"), "{out}");
