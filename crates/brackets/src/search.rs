@@ -25,6 +25,21 @@
 //! engine at the fixed values, lifted back to symbolic parameters by homogeneity
 //! ([`crate::scaling`]) and proved again symbolically.
 //!
+//! ```
+//! use brackets::search::{search, SearchOptions, SearchSpace};
+//! use brackets::systems;
+//!
+//! // The harmonic rotor at p_θ = Iω: the integrals linear in the momenta, trig order ≤ 1.
+//! let rotor = systems::harmonic_rotor();
+//! let options = SearchOptions::new(SearchSpace::new(1, 1, 1)).when(rotor.resonance(1, 1)?);
+//! let found = search(&rotor, &options)?;
+//! // The constant, L = x p_y − y p_x, and four linear integrals: Re and Im of
+//! // (p_x + iMωx)e^{−iθ} and of (p_y + iMωy)e^{−iθ}.
+//! assert_eq!(found.basis.len(), 6);
+//! assert!(found.basis.iter().all(|f| f.symbolic.is_some()));
+//! # Ok::<(), brackets::EngineError>(())
+//! ```
+//!
 //! On a Lie–Poisson space the same search finds the Casimirs with the integrals: for the
 //! Euler top (so(3)*, `H = Σ M_i²/(2I_i)`) at generic moments, the quadratic integrals are
 //! spanned by `|M|²` and `H`.
@@ -51,21 +66,6 @@
 //! assert_eq!(found.dimensions_by_poisson_degree(), [1, 1, 3]);
 //! assert!(found.basis.iter().all(|f| f.proved_fixed));
 //! # Ok::<(), Box<dyn std::error::Error>>(())
-//! ```
-//!
-//! ```
-//! use brackets::search::{search, SearchOptions, SearchSpace};
-//! use brackets::systems;
-//!
-//! // The harmonic rotor at p_θ = Iω: the integrals linear in the momenta, trig order ≤ 1.
-//! let rotor = systems::harmonic_rotor();
-//! let options = SearchOptions::new(SearchSpace::new(1, 1, 1)).when(rotor.resonance(1, 1)?);
-//! let found = search(&rotor, &options)?;
-//! // The constant, L = x p_y − y p_x, and four linear integrals: Re and Im of
-//! // (p_x + iMωx)e^{−iθ} and of (p_y + iMωy)e^{−iθ}.
-//! assert_eq!(found.basis.len(), 6);
-//! assert!(found.basis.iter().all(|f| f.symbolic.is_some()));
-//! # Ok::<(), brackets::EngineError>(())
 //! ```
 
 use rustc_hash::FxHashMap;
@@ -106,7 +106,8 @@ pub struct SearchSpace {
 }
 
 impl SearchSpace {
-    /// Momenta degree `d`, positions degree `e`, trigonometric order `k`, no negative powers.
+    /// Momenta degree `d`, positions degree `e`, trigonometric order `k`, no negative powers,
+    /// degree 0 in the Poisson variables ([`SearchSpace::poisson_degree`] sets another).
     pub fn new(momenta_degree: u32, positions_degree: u32, trig_degree: u32) -> Self {
         SearchSpace {
             momenta_degree,
