@@ -89,9 +89,9 @@ fn label_letter<'a>(system: &System, candidates: &[&'a str], count: usize) -> &'
 
 /// With parameters kept symbolic, the note that `H` or its first power `H^k` that the space
 /// holds in the phase-space variables needs a degree in them past the space's: the integrals
-/// of that degree in the momenta may then need a larger `--parameters-degree` (an oscillator
-/// with symbolic frequencies showed no quartic integral at degree 2, since `H²` has degree 4
-/// in them).
+/// of that degree in the momenta (or, without momenta in `H`, in the Poisson variables) may
+/// then need a larger `--parameters-degree` (an oscillator with symbolic frequencies showed no
+/// quartic integral at degree 2, since `H²` has degree 4 in them).
 fn power_past_parameters_degree(h: &Expr, options: &SearchOptions) -> Option<String> {
     if options.symbolic.is_empty() {
         return None;
@@ -111,9 +111,10 @@ fn power_past_parameters_degree(h: &Expr, options: &SearchOptions) -> Option<Str
         .max()
         .unwrap_or(0);
     let degree = |kind| h.total_degree(&[kind]).unwrap_or(0);
-    let (momenta, positions, trig) = (
+    let (momenta, positions, poisson, trig) = (
         degree(VarKind::Momentum),
         degree(VarKind::Coordinate),
+        degree(VarKind::Poisson),
         degree(VarKind::Angle),
     );
     let space = &options.space;
@@ -129,18 +130,22 @@ fn power_past_parameters_degree(h: &Expr, options: &SearchOptions) -> Option<Str
     let fits = |k: i64| {
         k * momenta <= i64::from(space.momenta_degree)
             && (space.laurent || k * positions <= i64::from(space.positions_degree))
+            && k * poisson <= i64::from(space.poisson_degree)
             && k * trig <= i64::from(space.trig_degree)
     };
-    let k = (2..=i64::from(space.momenta_degree).max(2))
-        .take_while(|&k| fits(k) && momenta > 0)
+    let largest = space.momenta_degree.max(space.poisson_degree).max(2);
+    let k = (2..=i64::from(largest))
+        .take_while(|&k| fits(k) && (momenta > 0 || poisson > 0))
         .find(|&k| k * s > bound)?;
     let power = trigpoly::superscript(k);
+    let degree = match momenta {
+        0 => format!("{} in the Poisson variables", k * poisson),
+        _ => format!("{} in the momenta", k * momenta),
+    };
     Some(format!(
         "Note: `H{power}` lies in the space but for its degree {} in `{names}`, past the space's \
-         `{bound}` (`--parameters-degree`): integrals of degree {} in the momenta may need a \
-         larger one.",
+         `{bound}` (`--parameters-degree`): integrals of degree {degree} may need a larger one.",
         k * s,
-        k * momenta
     ))
 }
 
@@ -206,6 +211,7 @@ fn space_text(r: &SearchResult) -> String {
     };
     let positions = exponents(&space.coordinates, true);
     let momenta = exponents(&space.momenta, false);
+    let poisson = exponents(&space.poisson, false);
     let monomial = if monomial.is_empty() {
         "1".to_string()
     } else {
@@ -232,6 +238,12 @@ fn space_text(r: &SearchResult) -> String {
         degrees.push(format!(
             "positions degree `{positions} ≤ {}`{laurent}",
             s.positions_degree
+        ));
+    }
+    if !poisson.is_empty() {
+        degrees.push(format!(
+            "degree `{poisson} ≤ {}` in the Poisson variables",
+            s.poisson_degree
         ));
     }
     let angles = match s.trig_degree {
@@ -285,6 +297,43 @@ fn space_text(r: &SearchResult) -> String {
         counted(r.components, "independent block"),
         counted(r.largest_component, "unknown")
     )
+}
+
+/// ` By degree in the momenta: ≤ 0: 1, ≤ 1: 6.`, `dims[j]` integrals of degree `≤ j` (`what`:
+/// in the momenta, in the Poisson variables).
+fn dimensions_text(what: &str, dims: &[usize]) -> String {
+    let dims: Vec<String> = dims
+        .iter()
+        .enumerate()
+        .map(|(j, d)| format!("`≤ {j}`: {d}"))
+        .collect();
+    format!(" By degree {what}: {}.", dims.join(", "))
+}
+
+/// The lines `Momenta degree exactly j: 2 of order 0, 1 of order 1.` of a search's report
+/// (`exactly(j)` their start), `counts[j][k]` integrals of degree `j` and trigonometric order
+/// `k` (said only when the system has `angles`), for each `j` with any.
+fn degree_counts(
+    counts: &[Vec<usize>],
+    angles: bool,
+    exactly: impl Fn(usize) -> String,
+) -> Vec<String> {
+    let mut lines = Vec::new();
+    for (j, row) in counts.iter().enumerate() {
+        let parts: Vec<String> = row
+            .iter()
+            .enumerate()
+            .filter(|(_, c)| **c > 0)
+            .map(|(k, c)| match angles {
+                true => format!("{c} of order {k}"),
+                false => c.to_string(),
+            })
+            .collect();
+        if !parts.is_empty() {
+            lines.push(format!("{}: {}.", exactly(j), parts.join(", ")));
+        }
+    }
+    lines
 }
 
 /// The verb of `n` things: `singular` for one, else `plural` (`1 of them holds`, `2 hold`).
@@ -459,43 +508,38 @@ pub fn search_report(
         )));
     }
     let dims = r.dimensions_by_momenta_degree();
-    let by_degree: Vec<String> = dims
-        .iter()
-        .enumerate()
-        .map(|(j, d)| format!("`≤ {j}`: {d}"))
-        .collect();
+    let poisson_dims = r.dimensions_by_poisson_degree();
     let over = match &symbolic {
         // With symbolic parameters the space is over Q, and `M·I` counts apart from `I`.
         Some(_) => " over Q (a parameter's multiple of an integral counts apart from it)",
         None => "",
     };
-    entries.push(Entry::Text(format!(
-        "Dimension of the space of integrals{over}: {}. By degree in the momenta: {}.",
-        r.basis.len(),
-        by_degree.join(", ")
-    )));
+    // By degree in the momenta, unless the space has Poisson variables and no momenta; and in
+    // the Poisson variables when it has them.
+    let poisson = !r.variables.poisson.is_empty();
+    let by_momenta = !poisson || !r.variables.momenta.is_empty();
     let counts = r.counts();
+    let poisson_counts = r.poisson_counts();
     let angles = vars.angles().next().is_some();
-    for (j, row) in counts.iter().enumerate() {
-        let parts: Vec<String> = row
-            .iter()
-            .enumerate()
-            .filter(|(_, c)| **c > 0)
-            .map(|(k, c)| {
-                if angles {
-                    format!("{c} of order {k}")
-                } else {
-                    c.to_string()
-                }
-            })
-            .collect();
-        if !parts.is_empty() {
-            entries.push(Entry::Text(format!(
-                "Momenta degree exactly {j}: {}.",
-                parts.join(", ")
-            )));
-        }
+    let mut by_degree = String::new();
+    let mut exactly = Vec::new();
+    if by_momenta {
+        by_degree += &dimensions_text("in the momenta", &dims);
+        exactly.extend(degree_counts(&counts, angles, |j| {
+            format!("Momenta degree exactly {j}")
+        }));
     }
+    if poisson {
+        by_degree += &dimensions_text("in the Poisson variables", &poisson_dims);
+        exactly.extend(degree_counts(&poisson_counts, angles, |j| {
+            format!("Degree exactly {j} in the Poisson variables")
+        }));
+    }
+    entries.push(Entry::Text(format!(
+        "Dimension of the space of integrals{over}: {}.{by_degree}",
+        r.basis.len(),
+    )));
+    entries.extend(exactly.into_iter().map(Entry::Text));
     // The labels of the integrals, `I1, I2, …`, and of their complex forms, `A1, …`, in
     // letters the system does not use for names of its own.
     let letter = label_letter(system, &["I", "J", "Φ"], r.basis.len());
@@ -504,10 +548,11 @@ pub fn search_report(
     let names_of = |vs: &[Var]| vs.iter().map(name_of).collect::<Vec<_>>();
     let label = |i: usize| format!("{letter}{}", i + 1);
     let shown = shown_integrals(&r);
-    entries.push(Entry::Data(Facts::Search(SearchFacts {
+    entries.push(Entry::Data(Facts::Search(Box::new(SearchFacts {
         space: r.space,
         coordinates: names_of(&r.variables.coordinates),
         momenta: names_of(&r.variables.momenta),
+        poisson: names_of(&r.variables.poisson),
         angles: names_of(&r.variables.angles),
         left_out: names_of(&r.variables.left_out),
         parameters: parameter_facts(
@@ -525,10 +570,12 @@ pub fn search_report(
         dimension: r.basis.len(),
         by_momenta_degree: dims,
         counts,
+        by_poisson_degree: poisson_dims,
+        poisson_counts,
         for_every_value,
         shown: shown.iter().map(|&i| label(i)).collect(),
         new_only: r.new.clone(),
-    })));
+    }))));
     let mut sections = vec![Section {
         number: 1,
         title: "Search".into(),
@@ -559,15 +606,30 @@ pub fn search_report(
             format!("`{}`", n.known.join(", "))
         };
         // Without angles the grade is the degree.
+        let canonical = [
+            &r.variables.coordinates,
+            &r.variables.momenta,
+            &r.variables.angles,
+        ]
+        .iter()
+        .any(|vs| !vs.is_empty());
+        let variables = match (r.variables.poisson.is_empty(), canonical) {
+            (true, _) => "in the coordinates and momenta together",
+            (false, false) => "in the Poisson variables",
+            (false, true) => "in the coordinates, momenta and Poisson variables together",
+        };
         let rule = if r.variables.angles.is_empty() {
-            "An integral of degree `N` (in the coordinates and momenta together) is generated \
-             when it is a sum of known integrals, constants and products of integrals of degree \
-             `< N`"
+            format!(
+                "An integral of degree `N` ({variables}) is generated when it is a sum of known \
+                 integrals, constants and products of integrals of degree `< N`"
+            )
         } else {
-            "An integral of grade `(N, k)` (its degree `N` in the coordinates and momenta \
-             together, then its trigonometric order `k`: the largest such pair among its \
-             terms, compared in that order) is generated when it is a sum of known integrals, \
-             constants and products of integrals of grade below `(N, k)`"
+            format!(
+                "An integral of grade `(N, k)` (its degree `N` {variables}, then its \
+                 trigonometric order `k`: the largest such pair among its terms, compared in \
+                 that order) is generated when it is a sum of known integrals, constants and \
+                 products of integrals of grade below `(N, k)`"
+            )
         };
         let span = if n.generated == r.basis.len() {
             format!(

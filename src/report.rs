@@ -121,7 +121,7 @@ impl Entry {
 #[derive(Clone, Debug)]
 pub enum Facts {
     /// Of `superint search`.
-    Search(SearchFacts),
+    Search(Box<SearchFacts>),
     /// Of `superint closure`.
     Closure(ClosureFacts),
 }
@@ -150,6 +150,8 @@ pub struct SearchFacts {
     pub coordinates: Vec<String>,
     /// See [`SearchFacts::coordinates`].
     pub momenta: Vec<String>,
+    /// The Poisson variables of the space (file names).
+    pub poisson: Vec<String>,
     /// See [`SearchFacts::coordinates`].
     pub angles: Vec<String>,
     /// See [`SearchFacts::coordinates`].
@@ -170,6 +172,12 @@ pub struct SearchFacts {
     pub by_momenta_degree: Vec<usize>,
     /// `counts[j][k]`: basis integrals of momenta degree exactly `j` and trigonometric order `k`.
     pub counts: Vec<Vec<usize>>,
+    /// `by_poisson_degree[j]`: the dimension of the integrals of degree `≤ j` in the Poisson
+    /// variables.
+    pub by_poisson_degree: Vec<usize>,
+    /// `poisson_counts[j][k]`: basis integrals of degree exactly `j` in the Poisson variables
+    /// and trigonometric order `k`.
+    pub poisson_counts: Vec<Vec<usize>>,
     /// How many basis integrals are proved for every value of the parameters (the others hold
     /// at the fixed values).
     pub for_every_value: usize,

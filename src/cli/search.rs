@@ -1,5 +1,6 @@
-//! `superint search [FILE] --when … --momenta-degree d --positions-degree e --trig-degree k`:
-//! a basis of every integral in a finite space, by exact linear algebra, each proved.
+//! `superint search [FILE] --when … --momenta-degree d --positions-degree e --trig-degree k
+//! --poisson-degree P`: a basis of every integral in a finite space, by exact linear algebra,
+//! each proved.
 
 use std::path::PathBuf;
 
@@ -30,6 +31,8 @@ Examples:
   superint search --system anisotropic-3-5 --when 'p_theta = I*omega' --fix omega=1,M=2
   superint search systems/henon-heiles.toml --momenta-degree 2 --positions-degree 4 \\
       --trig-degree 0 --when 'C = 2' --symbolic A,B
+  superint search systems/kovalevskaya-top.toml --poisson-degree 4
+  superint search systems/euler-top.toml --poisson-degree 2 --fix I1=1,I2=2,I3=3
 
 Parameters are fixed to rational values for the linear algebra (1 unless --fix says
 otherwise, and the output says which); every basis element is then lifted back to
@@ -65,6 +68,11 @@ pub struct SearchArgs {
     #[arg(long, value_name = "K", default_value_t = 2,
           value_parser = clap::value_parser!(u32).range(0..=20))]
     trig_degree: u32,
+    /// Total degree in the Poisson variables, those whose brackets [poisson] declares (M1,
+    /// gamma1; one that --when fixes is left out).
+    #[arg(long, value_name = "P", default_value_t = 2,
+          value_parser = clap::value_parser!(u32).range(0..=20))]
+    poisson_degree: u32,
     /// Allow negative powers of the coordinates (Laurent potentials such as β/x²).
     #[arg(long)]
     laurent: bool,
@@ -83,7 +91,8 @@ pub struct SearchArgs {
     /// Show only the new integrals, those that nothing known generates. An integral is
     /// generated when it is a sum of the file's named integrals, --known ones, constants and
     /// products of integrals of lower grade (with --symbolic, parameter multiples too); a grade
-    /// is the degree in the coordinates and momenta together, then the trigonometric order
+    /// is the degree in the coordinates, momenta and Poisson variables together, then the
+    /// trigonometric order
     /// (where cos θ and p are integrals, cos 2θ = 2cos²θ − 1 and p cos θ are generated). A
     /// product of integrals of the same grade is not counted: with three rotors, cos(a − c)
     /// is new beside cos(a − b) and cos(b − c), though it is a polynomial in them and their
@@ -253,7 +262,8 @@ pub fn run(job: &SearchJob) -> anyhow::Result<bool> {
 fn search_and_print(job: &SearchJob) -> anyhow::Result<bool> {
     let a = &job.args;
     let subject = Subject::open(a.file.as_ref(), a.system.as_deref(), false, &a.limits)?;
-    let mut space = SearchSpace::new(a.momenta_degree, a.positions_degree, a.trig_degree);
+    let mut space = SearchSpace::new(a.momenta_degree, a.positions_degree, a.trig_degree)
+        .poisson_degree(a.poisson_degree);
     if a.laurent {
         space = space.laurent();
     }

@@ -46,10 +46,13 @@
 //!                                 were expanded, each identically zero) },
 //!                "outcome" } ],
 //!   "searches": [ { "section", "space": { "momenta_degree", "positions_degree", "trig_degree",
-//!                   "laurent", "coordinates", "momenta", "angles", "left_out" },
+//!                   "laurent", "coordinates", "momenta", "angles", "left_out",
+//!                   "poisson_degree", "poisson_variables" },
 //!                   "parameters", "unknowns", "equations", "blocks", "largest_block",
 //!                   "dimension", "by_momenta_degree": [int] (≤ j), "counts": [[int]]
-//!                   (momenta degree exactly j, order k), "for_every_value": int,
+//!                   (momenta degree exactly j, order k), "by_poisson_degree": [int] (≤ j in
+//!                   the Poisson variables), "poisson_counts": [[int]] (their degree exactly
+//!                   j, order k), "for_every_value": int,
 //!                   "shown": [ids], "new_only": { "known", "products", "generated" } | null } ],
 //!   "closures": [ { "section", "generators", "degree", "monomials", "rank", "parameters",
 //!                   "closes": bool, "outside": [[a, b]], "unlifted": int,
@@ -292,6 +295,8 @@ fn search(f: &SearchFacts, section: u32) -> Value {
             "momenta": f.momenta,
             "angles": f.angles,
             "left_out": f.left_out,
+            "poisson_degree": s.poisson_degree,
+            "poisson_variables": f.poisson,
         },
         "parameters": parameters(&f.parameters),
         "unknowns": f.unknowns,
@@ -301,6 +306,8 @@ fn search(f: &SearchFacts, section: u32) -> Value {
         "dimension": f.dimension,
         "by_momenta_degree": f.by_momenta_degree,
         "counts": f.counts,
+        "by_poisson_degree": f.by_poisson_degree,
+        "poisson_counts": f.poisson_counts,
         "for_every_value": f.for_every_value,
         "shown": f.shown,
         "new_only": f.new_only.as_ref().map(|n| json!({

@@ -319,6 +319,13 @@ fn cli_latex_of_every_command_compiles() {
             &crate::DEGREE_ONE,
         ]
         .concat(),
+        vec![
+            "search",
+            "systems/kovalevskaya-top.toml",
+            "--poisson-degree",
+            "4",
+            "--new-only",
+        ],
     ] {
         let mut args = args;
         args.extend(["--format", "latex", "--no-timings"]);

@@ -9,7 +9,7 @@ use brackets::search::{search, SearchOptions, SearchSpace};
 use superint::system_file::{load, LimitsOverride};
 use trigpoly::{Expr, Rational};
 
-use crate::DEGREE_ONE;
+use crate::{normalize, DEGREE_ONE};
 
 /// Every command of `docs/results.md`, by name.
 const COMMANDS: &[(&str, &str)] = &[
@@ -199,6 +199,26 @@ const COMMANDS: &[(&str, &str)] = &[
          --trig-degree 0 --symbolic A,B,C",
     ),
     (
+        "euler",
+        "superint search systems/euler-top.toml --poisson-degree 4 --fix I1=1,I2=2,I3=3",
+    ),
+    (
+        "euler-symbolic",
+        "superint search systems/euler-top.toml --poisson-degree 2 --symbolic I1,I2,I3",
+    ),
+    (
+        "kovalevskaya",
+        "superint search systems/kovalevskaya-top.toml --poisson-degree 4",
+    ),
+    (
+        "kovalevskaya-new-12",
+        "superint search systems/kovalevskaya-top.toml --poisson-degree 12 --new-only",
+    ),
+    (
+        "heavy-1-3",
+        "superint search systems/heavy-top.toml --poisson-degree 4 --when 'I3 = 1/3' --new-only",
+    ),
+    (
         "sw1-algebra",
         "superint closure systems/smorodinsky-winternitz-i.toml H Hx X --define 'C={Hx, X}' \
          --degree 3 --symbolic alpha,beta,gamma --parameters-degree 3",
@@ -241,11 +261,6 @@ fn system_file(name: &str) -> superint::system_file::LoadedSystem {
         .join("systems")
         .join(name);
     load(&path, &LimitsOverride::default()).expect("the file loads")
-}
-
-/// Whitespace runs as one space, so that wrapped and padded lines compare.
-fn normalize(s: &str) -> String {
-    s.split_whitespace().collect::<Vec<_>>().join(" ")
 }
 
 /// Runs the binary at the workspace root.
@@ -321,6 +336,77 @@ fn harmonic_1_1_dimensions_and_basis() {
             "then each basis element was lifted back to symbolic parameters by homogeneity and \
              proved symbolically",
             "105 claims: 105 proved, 0 refuted",
+        ],
+    );
+}
+
+#[test]
+fn euler_top_casimir_and_energy() {
+    expect(
+        "euler",
+        &[
+            "Dimension of the space of integrals: 6. By degree in the Poisson variables: ≤ 0: 1, \
+             ≤ 1: 1, ≤ 2: 3, ≤ 3: 3, ≤ 4: 6.",
+            "J2 = 3 M2² + 4 M3²",
+            "J3 = 3 M1² − M3²",
+            "the weights do not determine every parameter, so nothing is lifted",
+            "6 claims: 6 proved, 0 refuted",
+        ],
+    );
+    expect(
+        "euler-symbolic",
+        &[
+            "Over the polynomials in I1, I2, I3, 3 of the 21 basis integrals generate all of them",
+            "J11 = M1² + M2² + M3²",
+            "J15 = I1 I3 M2² − I2 I3 M2² + I1 I2 M3² − I2 I3 M3²",
+        ],
+    );
+    // J15 is 2I1I2I3 H less I2I3 |M|², as the note says.
+    let file = system_file("euler-top.toml");
+    let parse = |t: &str| file.parse_argument(t).unwrap();
+    assert_eq!(
+        parse("I1*I3*M2^2 - I2*I3*M2^2 + I1*I2*M3^2 - I2*I3*M3^2"),
+        parse("2*I1*I2*I3*H - I2*I3*C")
+    );
+}
+
+#[test]
+fn kovalevskaya_top_quartic_integral() {
+    expect(
+        "kovalevskaya",
+        &[
+            "Dimension of the space of integrals: 11. By degree in the Poisson variables: \
+             ≤ 0: 1, ≤ 1: 1, ≤ 2: 4, ≤ 3: 4, ≤ 4: 11.",
+            "then each basis element was lifted back to symbolic parameters by homogeneity and \
+             proved symbolically",
+            "I2 = γ1² + γ2² + γ3²",
+            "I3 = M1 γ1 + M2 γ2 + M3 γ3",
+            "I4 = M1² + M2² + 2 M3² − 2c γ1",
+            "I11 = M1⁴ + 2 M1² M2² + 4c M1² γ1 + 8c M1 M2 γ2 + M2⁴ − 4c M2² γ1 − 4c² γ3²",
+            "11 claims: 11 proved, 0 refuted",
+        ],
+    );
+    // I11 is K less 4c²Γ, as the note says.
+    let file = system_file("kovalevskaya-top.toml");
+    let i11 = file
+        .parse_argument("M1^4 + 2*M1^2*M2^2 + 4*c*M1^2*gamma1 + 8*c*M1*M2*gamma2 + M2^4 - 4*c*M2^2*gamma1 - 4*c^2*gamma3^2")
+        .unwrap();
+    assert_eq!(i11, file.parse_argument("K - 4*c^2*Gamma").unwrap());
+    expect(
+        "kovalevskaya-new-12",
+        &[
+            "Dimension of the space of integrals: 130.",
+            "Known integrals in the space: H, Γ, A, K.",
+            "(547 products formed); the generated ones span the whole space (130 dimensions).",
+            "None: the known integrals generate every integral in the space.",
+        ],
+    );
+    expect(
+        "heavy-1-3",
+        &[
+            "Dimension of the space of integrals: 10.",
+            "Known integrals in the space: H, Γ, A.",
+            "None: the known integrals generate every integral in the space.",
         ],
     );
 }

@@ -90,6 +90,11 @@ pub fn assert_refuted(
     }
 }
 
+/// Whitespace runs as one space, so that wrapped and padded lines compare.
+pub fn normalize(s: &str) -> String {
+    s.split_whitespace().collect::<Vec<_>>().join(" ")
+}
+
 /// Writes `text` to the file `name` in the scratch directory `dir` (under Cargo's temporary
 /// directory for tests), and returns its path.
 pub fn scratch_text(dir: &str, name: &str, text: &str) -> std::path::PathBuf {

@@ -1,14 +1,19 @@
 //! Declared (Lie–Poisson) structures: the Euler top on so(3)* and the Kovalevskaya top on
 //! e(3)*, proved and refuted through the library and the real binary; the bracket's laws
 //! (Jacobi, Leibniz) on functions of Poisson variables; Hamilton's equations `ż = {z, H}` and
-//! their picture; the commands that take such a structure, and the one that refuses it.
+//! their picture; the commands that take such a structure; the search for every integral of
+//! bounded degree in the Poisson variables, whose dimensions are checked against the span of
+//! the known integrals' products, formed here.
 
 use std::process::{Command, Output};
 
+use brackets::linalg::Matrix;
+use brackets::search::{fix_parameters, search, SearchOptions, SearchResult, SearchSpace};
 use brackets::{EngineError, PhaseSpace, System};
 use serde_json::Value;
+use std::collections::HashMap;
 use superint::system_file::{load, LimitsOverride, LoadedSystem};
-use trigpoly::{Expr, VarSet};
+use trigpoly::{Expr, Rational, VarSet};
 
 /// A system file of `systems/`, loaded.
 fn system_file(name: &str) -> LoadedSystem {
@@ -301,15 +306,288 @@ fn commands_take_a_declared_structure_or_refuse_it() {
         let entries = row.split('│').nth(1).expect("entries");
         assert!(entries.split_whitespace().all(|e| e == "0"), "{row}");
     }
-    // The search solves over canonical monomials: refused, with why.
-    let o = superint(&["search", "systems/euler-top.toml"]);
-    assert_eq!(o.status.code(), Some(2));
-    let err = text(&o.stderr);
+    // The search solves over monomials in the Poisson variables: at I = (1, 2, 3), 1 and two
+    // quadratic integrals (|M|² and H, combined), each proved.
+    let o = superint(&[
+        "search",
+        "--no-timings",
+        "systems/euler-top.toml",
+        "--fix",
+        "I1=1,I2=2,I3=3",
+    ]);
+    assert_eq!(o.status.code(), Some(0), "{}", text(&o.stderr));
+    let out = text(&o.stdout);
+    let flat = crate::normalize(&out);
+    for piece in [
+        "The space: M1^a M2^b M3^c, with degree a + b + c ≤ 2 in the Poisson variables",
+        "By degree in the Poisson variables: ≤ 0: 1, ≤ 1: 1, ≤ 2: 3.",
+        "3 claims: 3 proved, 0 refuted",
+    ] {
+        assert!(flat.contains(piece), "{piece} in\n{out}");
+    }
+    // A space too small for H says so.
+    let o = superint(&[
+        "search",
+        "systems/kovalevskaya-top.toml",
+        "--poisson-degree",
+        "1",
+    ]);
+    assert_eq!(o.status.code(), Some(0), "{}", text(&o.stderr));
+    let flat = crate::normalize(&text(&o.stdout));
     assert!(
-        err.contains("M1 is a Poisson variable, whose brackets are declared")
-            && !err.contains("panicked"),
-        "{err}"
+        flat.contains(
+            "Note: H is not in this space (degree 2 in the Poisson variables, past the space's 1)"
+        ),
+        "{flat}"
     );
+}
+
+/// The dimension over Q of the span of `functions`: the rank of their coefficients on the
+/// monomials they have.
+fn span_dimension<'a>(functions: impl IntoIterator<Item = &'a Expr>) -> usize {
+    let functions: Vec<&Expr> = functions.into_iter().collect();
+    let mut columns: HashMap<Vec<i64>, usize> = HashMap::new();
+    for f in &functions {
+        for t in f.terms() {
+            let next = columns.len();
+            columns.entry(t.exponents()).or_insert(next);
+        }
+    }
+    let mut m = Matrix::zeros(functions.len(), columns.len());
+    for (row, f) in functions.iter().enumerate() {
+        for t in f.terms() {
+            m.set(row, columns[&t.exponents()], t.coeff());
+        }
+    }
+    m.rank()
+}
+
+/// Every product of the `generators` (each with its degree) of total degree `≤ max`, the
+/// empty product 1 among them.
+fn products(generators: &[(Expr, u32)], max: u32) -> Vec<Expr> {
+    let Some(((g, d), rest)) = generators.split_first() else {
+        return Vec::new();
+    };
+    let one = Expr::one(g.vars());
+    let mut out = Vec::new();
+    let mut power = one.clone();
+    let mut used = 0;
+    while used <= max {
+        if rest.is_empty() {
+            out.push(power.clone());
+        }
+        for p in products(rest, max - used) {
+            out.push(&power * &p);
+        }
+        if *d == 0 {
+            break;
+        }
+        power = &power * g;
+        used += d;
+    }
+    out
+}
+
+/// The search of `system` over polynomials of degree `≤ degree` in its Poisson variables,
+/// with the parameters at `values` (the others 1), under `when`; every basis integral proved.
+fn search_poisson(
+    file: &LoadedSystem,
+    degree: u32,
+    values: &[(&str, i64, i64)],
+    when: Option<&str>,
+) -> SearchResult {
+    let sys = &file.system;
+    let mut options = SearchOptions::new(SearchSpace::new(0, 0, 0).poisson_degree(degree));
+    for &(name, num, den) in values {
+        options = options.fix(sys.var(name), Rational::new(num, den));
+    }
+    if let Some(w) = when {
+        options = options.when(file.condition(w).expect("the condition reads"));
+    }
+    let found = search(sys, &options).expect("the search runs");
+    assert!(found.basis.iter().all(|f| f.proved_fixed));
+    found
+}
+
+/// The named functions of `file`, at the parameters of `found` and under `when`, each with its
+/// degree.
+fn at_found_values(
+    file: &LoadedSystem,
+    found: &SearchResult,
+    when: Option<&str>,
+    names: &[&str],
+) -> Vec<(Expr, u32)> {
+    names
+        .iter()
+        .map(|&n| {
+            let f = match n {
+                "H" => file.system.hamiltonian(),
+                _ => file.system.get(n).expect("a named function"),
+            };
+            let mut f = fix_parameters(f, &found.parameters).unwrap();
+            if let Some(w) = when {
+                f = file.condition(w).unwrap().apply(&f).unwrap();
+            }
+            let degree = f.total_degree(&[trigpoly::VarKind::Poisson]).unwrap();
+            (f, degree as u32)
+        })
+        .collect()
+}
+
+/// The Euler top at generic moments: the integrals of degree `≤ 2` are 1, |M|² and H, and
+/// those of degree `≤ 4` their products, no more (each found space is the span of those).
+#[test]
+fn euler_top_search_finds_the_casimir_and_the_energy() {
+    let top = system_file("euler-top.toml");
+    let moments = [("I1", 1, 1), ("I2", 2, 1), ("I3", 3, 1)];
+    for degree in [2, 3, 4] {
+        let found = search_poisson(&top, degree, &moments, None);
+        let generated = products(&at_found_values(&top, &found, None, &["C", "H"]), degree);
+        let dimension = span_dimension(&generated);
+        assert_eq!(found.basis.len(), dimension, "degree {degree}");
+        let fixed = found.basis.iter().map(|f| &f.fixed);
+        assert_eq!(span_dimension(fixed.chain(&generated)), dimension);
+    }
+    assert_eq!(
+        search_poisson(&top, 4, &moments, None).dimensions_by_poisson_degree(),
+        [1, 1, 3, 3, 6]
+    );
+    // At I1 = I2 = I3 every function is conserved (H = |M|²/2, a Casimir): all 10 of degree
+    // ≤ 2, M1, M2, M3 among them.
+    let isotropic = search_poisson(&top, 2, &[], None);
+    assert_eq!(isotropic.basis.len(), 10);
+    // Kept symbolic, the moments give the integrals for every value: over the polynomials in
+    // them, 1, |M|² and one combination with H generate every integral.
+    let sys = &top.system;
+    let mut options = SearchOptions::new(
+        SearchSpace::new(0, 0, 0)
+            .poisson_degree(2)
+            .parameters_degree(2),
+    );
+    for name in ["I1", "I2", "I3"] {
+        options = options.symbolic(sys.var(name));
+    }
+    let found = search(sys, &options).unwrap();
+    assert!(found.all_symbolic());
+    let module = found.module.as_ref().unwrap();
+    assert_eq!(module.generators.len(), 3);
+    let casimir = sys.get("C").unwrap();
+    assert!(module
+        .generators
+        .iter()
+        .any(|&i| found.basis[i].expr() == casimir));
+}
+
+/// The Kovalevskaya top at degree `≤ 4`: the integrals are the products of 1, Γ, M·γ, H and K,
+/// and K is none of the others' products: the search finds the quartic integral.
+#[test]
+fn kovalevskaya_search_finds_the_quartic_integral() {
+    let top = system_file("kovalevskaya-top.toml");
+    let found = search_poisson(&top, 4, &[], None);
+    // Found at c = 1, lifted back to c by homogeneity and proved for every c.
+    assert!(found.liftable && found.all_symbolic());
+    let gens = at_found_values(&top, &found, None, &["Gamma", "A", "H"]);
+    let casimirs_and_energy = products(&gens, 4);
+    let lower = span_dimension(&casimirs_and_energy);
+    let k = at_found_values(&top, &found, None, &["K"]).remove(0).0;
+    let with_k: Vec<Expr> = casimirs_and_energy.iter().cloned().chain([k]).collect();
+    let dimension = span_dimension(&with_k);
+    assert_eq!(dimension, lower + 1);
+    assert_eq!(found.basis.len(), dimension);
+    let fixed = found.basis.iter().map(|f| &f.fixed);
+    assert_eq!(span_dimension(fixed.chain(&with_k)), dimension);
+    assert_eq!(found.dimensions_by_poisson_degree(), [1, 1, 4, 4, 11]);
+    // The JSON report says the same, as data.
+    let o = superint(&[
+        "search",
+        "systems/kovalevskaya-top.toml",
+        "--poisson-degree",
+        "4",
+        "--format",
+        "json",
+        "--no-timings",
+    ]);
+    assert_eq!(o.status.code(), Some(0), "{}", text(&o.stderr));
+    let v: Value = serde_json::from_slice(&o.stdout).expect("JSON");
+    let s = &v["searches"][0];
+    assert_eq!(s["space"]["poisson_degree"], 4);
+    assert_eq!(
+        s["space"]["poisson_variables"],
+        serde_json::json!(["M1", "M2", "M3", "gamma1", "gamma2", "gamma3"])
+    );
+    assert_eq!(s["space"]["momenta"], serde_json::json!([]));
+    assert_eq!(s["dimension"], dimension);
+    assert_eq!(s["by_poisson_degree"], serde_json::json!([1, 1, 4, 4, 11]));
+    assert_eq!(
+        s["poisson_counts"],
+        serde_json::json!([[1, 0, 0], [0, 0, 0], [3, 0, 0], [0, 0, 0], [7, 0, 0]])
+    );
+    assert_eq!(v["summary"]["proved"], dimension);
+}
+
+/// The same family off the Kovalevskaya ratio (`I3 = 1/3` instead of 1/2): nothing quartic but
+/// the products of the Casimirs and H; at 1/2 the search finds K again, with the third moment
+/// set by the condition and `c` lifted back.
+#[test]
+fn off_the_kovalevskaya_ratio_the_search_finds_no_quartic_integral() {
+    let top = system_file("heavy-top.toml");
+    for (when, new) in [("I3 = 1/3", 0), ("I3 = 2/3", 0), ("I3 = 1/2", 1)] {
+        let found = search_poisson(&top, 4, &[], Some(when));
+        assert!(found.all_symbolic(), "{when}");
+        let products = products(
+            &at_found_values(&top, &found, Some(when), &["Gamma", "A", "H"]),
+            4,
+        );
+        let generated = span_dimension(&products);
+        assert_eq!(found.basis.len(), generated + new, "{when}");
+        let fixed = found.basis.iter().map(|f| &f.fixed);
+        assert_eq!(
+            span_dimension(fixed.chain(&products)),
+            generated + new,
+            "{when}"
+        );
+    }
+    // Through the binary, with --new-only and the file's Casimirs alone known (the file cut
+    // before ξ and K): nothing is new at 1/3, and at 1/2 one quartic integral is.
+    let whole = std::fs::read_to_string(
+        std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("systems/heavy-top.toml"),
+    )
+    .unwrap();
+    let casimirs_only = &whole[..whole.find("[[function]]\nname = \"xi\"").expect("ξ")];
+    let file = crate::scratch_text("poisson-search", "casimirs.toml", casimirs_only);
+    for (when, new) in [("I3 = 1/3", false), ("I3 = 1/2", true)] {
+        let o = superint(&[
+            "search",
+            file.to_str().unwrap(),
+            "--poisson-degree",
+            "4",
+            "--when",
+            when,
+            "--new-only",
+            "--no-timings",
+        ]);
+        assert_eq!(o.status.code(), Some(0), "{}", text(&o.stderr));
+        let out = text(&o.stdout);
+        assert!(
+            out.contains("Known integrals in the space: H, Γ, A."),
+            "{out}"
+        );
+        if !new {
+            assert!(
+                out.contains("None: the known integrals generate every integral in the space."),
+                "{out}"
+            );
+            continue;
+        }
+        let flat = crate::normalize(&out);
+        assert!(
+            flat.contains("the generated ones span 10 of the 11 dimensions"),
+            "{out}"
+        );
+        // One new integral, proved (the rest in one line, `[basis proved]`).
+        let proved = out.lines().filter(|l| l.ends_with(" proved]"));
+        assert_eq!(proved.filter(|l| !l.contains("[basis")).count(), 1, "{out}");
+    }
 }
 
 /// The symmetric Euler top, `I1 = I2 = A`: `ξ = M1 + iM2` turns at the rate `(1/A − 1/C) M3`,

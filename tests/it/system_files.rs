@@ -912,11 +912,11 @@ fn bad_inputs() -> Vec<(&'static str, Vec<u8>, &'static str, Vec<&'static str>)>
             check.clone(),
         ),
         (
-            "a search over Poisson variables",
+            "a search on a surface of Poisson variables that the flow leaves",
             TOP.as_bytes().to_vec(),
-            "searching for integrals: the search solves for integrals in a space of monomials \
-             in canonical coordinates and momenta",
-            vec!["search", "bad.toml"],
+            "searching for integrals: the flow leaves the surface M1 = 0: there {M1, H} = \
+             −M2 M3, not 0",
+            vec!["search", "bad.toml", "--when", "M1 = 0"],
         ),
         (
             "missing file",
@@ -1659,7 +1659,7 @@ fn tower_decides_the_eigenvalue_by_its_values() {
     let out = tower("i*omega*(m - n)^1 + m*n - m*n", 0);
     assert!(out.contains("[W-all proved]"), "{out}");
     // The fact wraps: compare its words.
-    let words = out.split_whitespace().collect::<Vec<_>>().join(" ");
+    let words = crate::normalize(&out);
     assert!(
         words.contains(
             "both are polynomials of degree at most 2 in m, n, and they agree at the 9 points"
@@ -1672,7 +1672,7 @@ fn tower_decides_the_eigenvalue_by_its_values() {
     );
     let out = tower("i*omega*(m - n) + m*(m - 1)*(m - 2)*(m - 3)", 1);
     assert!(out.contains("[W-all REFUTED]"), "{out}");
-    let words = out.split_whitespace().collect::<Vec<_>>().join(" ");
+    let words = crate::normalize(&out);
     assert!(words.contains("they differ at (m, n) = (4, 0)"), "{out}");
     let out = tower("i*omega*(m - n)*1^n", 0);
     assert!(out.contains("No proof for all m, n"), "{out}");

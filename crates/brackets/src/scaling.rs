@@ -92,23 +92,19 @@ fn minus(a: &[i64], b: &[i64]) -> Vec<i64> {
 }
 
 impl Scaling {
-    /// The weights under which the flow `F ↦ {F, H}` (after the condition) maps homogeneous
-    /// functions of the planar variables and the angles to homogeneous ones: for each canonical
-    /// pair `(q, p)`, every term of `∂H/∂p` has weight `δ + w(q)` and every term of `∂H/∂q`
-    /// has weight `δ + w(p)`; angles have weight 0 (so `∂/∂θ` keeps a term's weight, and a
-    /// potential `−g cos θ` gives `g` the weight `δ + w(p_θ)`).
+    /// The weights under which the flow `F ↦ {F, H} = Σ_v ∂F/∂v · {v, H}` (after the
+    /// condition) maps homogeneous functions of the phase variables and the angles to
+    /// homogeneous ones: every term of `{v, H}` has weight `δ + w(v)`, that is for each
+    /// canonical pair `(q, p)` every term of `∂H/∂p` has weight `δ + w(q)` and every term of
+    /// `∂H/∂q` weight `δ + w(p)`, and for a variable `v` of declared brackets every term of
+    /// their part `Σ_u {v, u} ∂H/∂u` weight `δ + w(v)` (on so(3)*, `{M₁, H} = (1/I₂ − 1/I₃)
+    /// M₂M₃` gives the moments of inertia one weight); angles have weight 0 (so `∂/∂θ` keeps a
+    /// term's weight, and a potential `−g cos θ` gives `g` the weight `δ + w(p_θ)`).
     pub fn of_flow(
         space: &PhaseSpace,
         h: &Expr,
         condition: Option<&Condition>,
     ) -> Result<Self, EngineError> {
-        if !space.poisson_variables().is_empty() {
-            return Err(EngineError::Invalid(
-                "the scaling of a flow is formed for canonical pairs only, and this phase space \
-                 has Poisson variables"
-                    .into(),
-            ));
-        }
         let vars = space.vars().clone();
         let n = vars.len();
         let mut c = Constraints::new(n);
@@ -129,6 +125,13 @@ impl Scaling {
             let dq = cond(h.derivative(pair.q)?)?;
             for t in dq.terms() {
                 c.push(&minus(&t.exponents(), &unit(n, pair.p.index(), 1)), -1);
+            }
+        }
+        if !space.declared_brackets().is_empty() {
+            for (v, part) in space.gradient(h)?.declared() {
+                for t in cond(part.clone())?.terms() {
+                    c.push(&minus(&t.exponents(), &unit(n, v.index(), 1)), -1);
+                }
             }
         }
         Ok(Scaling {

@@ -1,11 +1,14 @@
 //! Discovery: a basis of *all* integrals of a system in a finite space of functions, found by
 //! exact linear algebra, each basis element proved by the engine.
 //!
-//! The space ([`SearchSpace`]) is spanned by `x^a y^b · p_x^c p_y^d · {1, cos kθ, sin kθ}`:
-//! coordinates of total degree `Σ|a| ≤ e` (negative exponents too when `laurent`), momenta of
-//! total degree `≤ d`, and trigonometric order `Σ|k| ≤ K` in the angles. An angle's momentum
-//! that the condition fixes is left out: on a resonance surface `p_θ = mIω/n` it is a
-//! constant, and every function of it is an integral ([`SpaceVariables`]).
+//! The space ([`SearchSpace`]) is spanned by `x^a y^b · p_x^c p_y^d · M₁^m M₂^n · {1, cos kθ,
+//! sin kθ}`: coordinates of total degree `Σ|a| ≤ e` (negative exponents too when `laurent`),
+//! momenta of total degree `≤ d`, Poisson variables (whose brackets are declared, such as the
+//! `M₁, M₂, M₃` of so(3)*) of total degree `≤ P`, and trigonometric order `Σ|k| ≤ K` in the
+//! angles. An angle's momentum or a Poisson variable that the condition fixes is left out: on a
+//! resonance surface `p_θ = mIω/n` it is a constant, and every function of it is an integral
+//! ([`SpaceVariables`]). The images `{φ, H}` are the bracket's, declared brackets included: for
+//! each phase variable `v`, `∂φ/∂v` times `{v, H}` (after the condition), formed once.
 //!
 //! The unknowns are the real coefficients of that basis, so the equations `{F, H} = 0` (after the
 //! condition) are linear over `Q`: the real and imaginary parts of the coefficients of
@@ -35,6 +38,34 @@
 //! assert_eq!(found.basis.len(), 6);
 //! assert!(found.basis.iter().all(|f| f.symbolic.is_some()));
 //! # Ok::<(), brackets::EngineError>(())
+//! ```
+//!
+//! On a Lie–Poisson space the same search finds the Casimirs with the integrals: for the
+//! Euler top (so(3)*, `H = Σ M_i²/(2I_i)`) at generic moments, the quadratic integrals are
+//! spanned by `|M|²` and `H`.
+//!
+//! ```
+//! use brackets::search::{search, SearchOptions, SearchSpace};
+//! use brackets::{PhaseSpace, System};
+//! use trigpoly::{Expr, Rational, VarSet};
+//!
+//! let vars = VarSet::builder()
+//!     .poisson("M1").poisson("M2").poisson("M3")
+//!     .parameter("I1").parameter("I2").parameter("I3")
+//!     .build()?;
+//! let e = |s: &str| Expr::parse(&vars, s).unwrap();
+//! let space = PhaseSpace::new(&vars, &[])?
+//!     .with_brackets(&[("M1", "M2", e("M3")), ("M2", "M3", e("M1")), ("M3", "M1", e("M2"))])?;
+//! let top = System::new("Euler top", space, e("M1^2/(2*I1) + M2^2/(2*I2) + M3^2/(2*I3)"));
+//! // At I = (1, 2, 3): 1, then two quadratic integrals (|M|² and H, combined).
+//! let mut options = SearchOptions::new(SearchSpace::new(0, 0, 0).poisson_degree(2));
+//! for (i, name) in ["I1", "I2", "I3"].into_iter().enumerate() {
+//!     options = options.fix(top.var(name), Rational::from(i as i64 + 1));
+//! }
+//! let found = search(&top, &options)?;
+//! assert_eq!(found.dimensions_by_poisson_degree(), [1, 1, 3]);
+//! assert!(found.basis.iter().all(|f| f.proved_fixed));
+//! # Ok::<(), Box<dyn std::error::Error>>(())
 //! ```
 
 use rustc_hash::FxHashMap;
@@ -69,10 +100,14 @@ pub struct SearchSpace {
     pub laurent: bool,
     /// Total degree in the parameters kept symbolic ([`SearchOptions::symbolic`]).
     pub parameters_degree: u32,
+    /// Total degree in the Poisson variables ([`SpaceVariables::poisson`]), those whose
+    /// brackets are declared (0 unless set, [`SearchSpace::poisson_degree`]).
+    pub poisson_degree: u32,
 }
 
 impl SearchSpace {
-    /// Momenta degree `d`, positions degree `e`, trigonometric order `k`, no negative powers.
+    /// Momenta degree `d`, positions degree `e`, trigonometric order `k`, no negative powers,
+    /// degree 0 in the Poisson variables ([`SearchSpace::poisson_degree`] sets another).
     pub fn new(momenta_degree: u32, positions_degree: u32, trig_degree: u32) -> Self {
         SearchSpace {
             momenta_degree,
@@ -80,7 +115,14 @@ impl SearchSpace {
             trig_degree,
             laurent: false,
             parameters_degree: 0,
+            poisson_degree: 0,
         }
+    }
+
+    /// The same space with polynomials of total degree `≤ d` in the Poisson variables.
+    pub fn poisson_degree(mut self, d: u32) -> Self {
+        self.poisson_degree = d;
+        self
     }
 
     /// The same space with coefficients polynomial of total degree `≤ d` in the parameters
@@ -97,11 +139,11 @@ impl SearchSpace {
     }
 
     /// Why `f` lies outside the space, if it does, in words: its degree in the momenta, in the
-    /// coordinates or in the angles is too high, or it has negative powers the space does not
-    /// take. A search for the integrals of a system whose Hamiltonian lies outside finds
-    /// neither `H` nor, often, anything else, so the report says why.
+    /// coordinates, in the Poisson variables or in the angles is too high, or it has negative
+    /// powers the space does not take. A search for the integrals of a system whose Hamiltonian
+    /// lies outside finds neither `H` nor, often, anything else, so the report says why.
     pub fn why_outside(&self, f: &Expr) -> Option<String> {
-        use trigpoly::VarKind::{Angle, Coordinate, Momentum};
+        use trigpoly::VarKind::{Angle, Coordinate, Momentum, Poisson};
         let vars = f.vars();
         // The first variable of `kind` with a negative power in `f`, by name.
         let negative = |kind| {
@@ -111,8 +153,10 @@ impl SearchSpace {
                 .map(|v| vars.variable(v).unicode().to_string())
         };
         let mut why = Vec::new();
-        if let Some(p) = negative(Momentum) {
-            why.push(format!("negative powers of {p}"));
+        for kind in [Momentum, Poisson] {
+            if let Some(p) = negative(kind) {
+                why.push(format!("negative powers of {p}"));
+            }
         }
         if let (false, Some(x)) = (self.laurent, negative(Coordinate)) {
             why.push(format!(
@@ -123,6 +167,7 @@ impl SearchSpace {
         for (what, kind, bound) in [
             ("momenta", Momentum, self.momenta_degree),
             ("coordinates", Coordinate, self.positions_degree),
+            ("Poisson variables", Poisson, self.poisson_degree),
             ("angles (trigonometric order)", Angle, self.trig_degree),
         ] {
             let d = f.total_degree(&[kind]).unwrap_or(0);
@@ -242,6 +287,8 @@ pub struct Integral {
     pub momenta_degree: i64,
     /// Degree `Σ|a|` in the coordinates.
     pub positions_degree: i64,
+    /// Degree in the Poisson variables.
+    pub poisson_degree: i64,
     /// Trigonometric order.
     pub trig_degree: i64,
 }
@@ -328,7 +375,8 @@ pub struct SearchResult {
     pub components: usize,
     /// Unknowns in the largest component.
     pub largest_component: usize,
-    /// A basis of all integrals in the space, by increasing degree in the momenta.
+    /// A basis of all integrals in the space, by increasing degree in the momenta, then in the
+    /// Poisson variables.
     pub basis: Vec<Integral>,
     /// The complement of the known integrals' products, if asked for.
     pub new: Option<NewIntegrals>,
@@ -342,19 +390,40 @@ impl SearchResult {
     /// The number of basis integrals of momenta degree `≤ j` for each `j = 0, …, d`: the
     /// dimensions of the spaces with smaller `d` (same coordinates and trigonometric order).
     pub fn dimensions_by_momenta_degree(&self) -> Vec<usize> {
-        (0..=self.space.momenta_degree as i64)
-            .map(|j| self.basis.iter().filter(|f| f.momenta_degree <= j).count())
+        self.dimensions_by(self.space.momenta_degree, |f| f.momenta_degree)
+    }
+
+    /// The number of basis integrals of degree `≤ j` in the Poisson variables for each
+    /// `j = 0, …, P`: the dimensions of the spaces with smaller `P`.
+    pub fn dimensions_by_poisson_degree(&self) -> Vec<usize> {
+        self.dimensions_by(self.space.poisson_degree, |f| f.poisson_degree)
+    }
+
+    /// The number of basis integrals whose `degree` is `≤ j`, for each `j = 0, …, bound`.
+    fn dimensions_by(&self, bound: u32, degree: impl Fn(&Integral) -> i64) -> Vec<usize> {
+        (0..=i64::from(bound))
+            .map(|j| self.basis.iter().filter(|f| degree(f) <= j).count())
             .collect()
     }
 
     /// `counts[j][k]`: basis integrals of momenta degree exactly `j` and trigonometric order
     /// exactly `k`.
     pub fn counts(&self) -> Vec<Vec<usize>> {
-        let d = self.space.momenta_degree as usize;
+        self.counts_by(self.space.momenta_degree, |f| f.momenta_degree)
+    }
+
+    /// `poisson_counts[j][k]`: basis integrals of degree exactly `j` in the Poisson variables
+    /// and trigonometric order exactly `k`.
+    pub fn poisson_counts(&self) -> Vec<Vec<usize>> {
+        self.counts_by(self.space.poisson_degree, |f| f.poisson_degree)
+    }
+
+    /// `c[j][k]`: basis integrals whose `degree` is `j` (`≤ bound`) and trigonometric order `k`.
+    fn counts_by(&self, bound: u32, degree: impl Fn(&Integral) -> i64) -> Vec<Vec<usize>> {
         let k = self.space.trig_degree as usize;
-        let mut c = vec![vec![0; k + 1]; d + 1];
+        let mut c = vec![vec![0; k + 1]; bound as usize + 1];
         for f in &self.basis {
-            c[f.momenta_degree as usize][f.trig_degree as usize] += 1;
+            c[degree(f) as usize][f.trig_degree as usize] += 1;
         }
         c
     }
@@ -377,18 +446,21 @@ impl SearchResult {
     }
 }
 
-/// The variables of a search's space: monomials in the coordinates and in the momenta, times
-/// `cos k·θ`, `sin k·θ` in the angles. Every momentum of the phase space is among them but an
-/// angle's momentum that the condition fixes (`p_θ = mIω/n`), a constant there.
+/// The variables of a search's space: monomials in the coordinates, in the momenta and in the
+/// Poisson variables, times `cos k·θ`, `sin k·θ` in the angles. Every momentum and Poisson
+/// variable of the phase space is among them but an angle's momentum or a Poisson variable that
+/// the condition fixes (`p_θ = mIω/n`, `M₃ = 1` where the flow keeps `M₃`), a constant there.
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub struct SpaceVariables {
     /// The coordinates (not the angles), whose total degree is the positions degree.
     pub coordinates: Vec<Var>,
     /// The momenta, whose total degree is the momenta degree.
     pub momenta: Vec<Var>,
+    /// The Poisson variables, whose total degree is the Poisson degree.
+    pub poisson: Vec<Var>,
     /// The angles, whose trigonometric order is bounded.
     pub angles: Vec<Var>,
-    /// The angles' momenta that the condition fixes, left out.
+    /// The angles' momenta and the Poisson variables that the condition fixes, left out.
     pub left_out: Vec<Var>,
 }
 
@@ -403,13 +475,14 @@ enum Trig {
 /// One real basis function `φ · trig(k·θ)`.
 #[derive(Clone, Debug)]
 struct Unknown {
-    /// Exponents of the coordinates and momenta and of the parameters kept symbolic
-    /// (angles zero), over all variables.
+    /// Exponents of the coordinates, momenta and Poisson variables and of the parameters kept
+    /// symbolic (angles zero), over all variables.
     phase: Vec<i64>,
     /// `k` over the angles, canonical (first nonzero entry positive), zero for `One`.
     k: Vec<i64>,
     trig: Trig,
     momenta_degree: i64,
+    poisson_degree: i64,
     positions_degree: i64,
     trig_degree: i64,
     parameters_degree: i64,
@@ -429,7 +502,7 @@ enum Slot {
 /// The search problem, with the parameters that are not kept symbolic at fixed values.
 struct Problem {
     vars: Vars,
-    /// The coordinates, momenta and angles of the space.
+    /// The coordinates, momenta, Poisson variables and angles of the space.
     variables: SpaceVariables,
     unknowns: Vec<Unknown>,
     /// Where each monomial `φ·e^{ik·θ}` of the space sits among the unknowns.
@@ -437,9 +510,12 @@ struct Problem {
     /// The fixed Hamiltonian and condition.
     h: Expr,
     condition: Option<Vec<(Var, Expr)>>,
-    /// For each canonical pair `(q, p)`: `∂H/∂p` and `∂H/∂q` after the condition, to form the
-    /// images of the unknowns without differentiating `H` again each time.
-    dh: Vec<(Var, Var, Expr, Expr)>,
+    /// `{φ, H} = Σ_v ∂φ/∂v · {v, H}`: for each phase variable `v` with `{v, H}` not zero after
+    /// the condition, `v`, that part of `{v, H}` and whether it enters negated: `∂H/∂p` for a
+    /// coordinate, `∂H/∂q` negated for a momentum, and the declared brackets' part
+    /// `Σ_u {v, u} ∂H/∂u` for a variable they involve ([`crate::phase::Gradient`]), to form
+    /// the images of the unknowns without differentiating `H` again each time.
+    flow_parts: Vec<(Var, Expr, bool)>,
 }
 
 /// Exponent vectors `≥ 0` (or any sign) over `n` slots with `Σ|e| ≤ max`.
@@ -483,7 +559,9 @@ impl Problem {
             .map(|p| p.q)
             .collect();
         // An angle's momentum that the condition fixes (`p_θ = mIω/n`) is a constant there:
-        // every function of it is an integral, so it is left out. Any other momentum counts.
+        // every function of it is an integral, so it is left out, and so is a Poisson variable
+        // that the condition fixes (the flow keeps it, or the condition is refused). Any other
+        // momentum counts.
         let fixed = |v: Var| cond.iter().flatten().any(|(w, _)| *w == v);
         let (mut momenta, mut left_out) = (Vec::new(), Vec::new());
         for pair in pairs {
@@ -493,6 +571,13 @@ impl Problem {
                 momenta.push(pair.p);
             }
         }
+        let mut poisson = Vec::new();
+        for &v in system.space().poisson_variables() {
+            match fixed(v) {
+                true => left_out.push(v),
+                false => poisson.push(v),
+            }
+        }
         let angles: Vec<Var> = pairs
             .iter()
             .filter(|p| vars.variable(p.q).kind() == VarKind::Angle)
@@ -500,6 +585,7 @@ impl Problem {
             .collect();
         let positions = exponent_vectors(coords.len(), space.positions_degree, space.laurent);
         let moms = exponent_vectors(momenta.len(), space.momenta_degree, false);
+        let lie = exponent_vectors(poisson.len(), space.poisson_degree, false);
         let params = exponent_vectors(symbolic.len(), space.parameters_degree, false);
         let ks: Vec<Vec<i64>> = exponent_vectors(angles.len(), space.trig_degree, true)
             .into_iter()
@@ -513,6 +599,7 @@ impl Problem {
         let count = positions
             .len()
             .saturating_mul(moms.len())
+            .saturating_mul(lie.len())
             .saturating_mul(params.len())
             .saturating_mul(trig_functions);
         let limit = vars.limits().max_terms;
@@ -523,17 +610,19 @@ impl Problem {
             )));
         }
         let mut unknowns = Vec::with_capacity(count);
-        for (a, c, s) in itertools::iproduct!(&positions, &moms, &params) {
+        for (a, c, m, s) in itertools::iproduct!(&positions, &moms, &lie, &params) {
             let mut phase = vec![0i64; vars.len()];
             for (v, e) in coords
                 .iter()
                 .chain(&momenta)
+                .chain(&poisson)
                 .chain(symbolic)
-                .zip(a.iter().chain(c).chain(s))
+                .zip(a.iter().chain(c).chain(m).chain(s))
             {
                 phase[v.index()] = *e;
             }
             let momenta_degree = c.iter().sum();
+            let poisson_degree = m.iter().sum();
             let positions_degree = a.iter().map(|x| x.abs()).sum();
             let parameters_degree = s.iter().sum();
             for k in &ks {
@@ -549,6 +638,7 @@ impl Problem {
                         k: k.clone(),
                         trig,
                         momenta_degree,
+                        poisson_degree,
                         positions_degree,
                         trig_degree,
                         parameters_degree,
@@ -563,6 +653,7 @@ impl Problem {
             let key = |u: &Unknown| {
                 (
                     u.momenta_degree,
+                    u.poisson_degree,
                     u.trig_degree,
                     u.positions_degree,
                     u.parameters_degree,
@@ -578,6 +669,7 @@ impl Problem {
         let variables = SpaceVariables {
             coordinates: coords,
             momenta,
+            poisson,
             angles,
             left_out,
         };
@@ -588,12 +680,18 @@ impl Problem {
             slots,
             h,
             condition: cond,
-            dh: Vec::new(),
+            flow_parts: Vec::new(),
         };
-        for pair in pairs {
-            let dp = problem.apply_condition(problem.h.derivative(pair.p)?)?;
-            let dq = problem.apply_condition(problem.h.derivative(pair.q)?)?;
-            problem.dh.push((pair.q, pair.p, dp, dq));
+        let gradient = system.space().gradient(&problem.h)?;
+        let canonical = pairs.iter().zip(gradient.canonical());
+        let parts = canonical
+            .flat_map(|(pair, (dq, dp))| [(pair.q, dp, false), (pair.p, dq, true)])
+            .chain(gradient.declared().iter().map(|(v, x)| (*v, x, false)));
+        for (v, part, negated) in parts {
+            let part = problem.apply_condition(part.clone())?;
+            if !part.is_zero() {
+                problem.flow_parts.push((v, part, negated));
+            }
         }
         Ok(problem)
     }
@@ -637,18 +735,14 @@ impl Problem {
     }
 
     /// `{f, H}` after the condition for `f` free of the variables the condition fixes (the
-    /// unknowns): `Σ ∂f/∂q · (∂H/∂p)|_c − ∂f/∂p · (∂H/∂q)|_c`, the condition being a ring
-    /// homomorphism that leaves `f` alone.
+    /// unknowns): `Σ_v ∂f/∂v · {v, H}|_c` (`Σ ∂f/∂q · (∂H/∂p)|_c − ∂f/∂p · (∂H/∂q)|_c` for
+    /// canonical pairs), the condition being a ring homomorphism that leaves `f` alone.
     fn image(&self, f: &Expr) -> Result<Expr, EngineError> {
-        let mut products = Vec::with_capacity(2 * self.dh.len());
-        for (q, p, dp, dq) in &self.dh {
-            if !dp.is_zero() {
-                products.push((f, *q, dp, false));
-            }
-            if !dq.is_zero() {
-                products.push((f, *p, dq, true));
-            }
-        }
+        let products: Vec<(&Expr, Var, &Expr, bool)> = self
+            .flow_parts
+            .iter()
+            .map(|(v, part, negated)| (f, *v, part, *negated))
+            .collect();
         if products.is_empty() {
             return Ok(Expr::zero(&self.vars));
         }
@@ -990,14 +1084,6 @@ pub fn search(system: &System, options: &SearchOptions) -> Result<SearchResult, 
     if rayon::current_thread_index().is_none() {
         return rayon::scope(|_| search(system, options));
     }
-    if let Some(&v) = system.space().poisson_variables().first() {
-        return Err(EngineError::Invalid(format!(
-            "the search solves for integrals in a space of monomials in canonical coordinates \
-             and momenta, and {} is a Poisson variable, whose brackets are declared: no such \
-             space holds it; state a candidate integral as a claim `{{F, H}} = 0` instead",
-            system.vars().variable(v).unicode()
-        )));
-    }
     let start = Instant::now();
     let mut timings = SearchTimings::default();
     let condition = options.condition.as_ref();
@@ -1167,6 +1253,7 @@ pub fn search(system: &System, options: &SearchOptions) -> Result<SearchResult, 
                 // Every momentum of the space (an angle's momentum fixed by the condition
                 // does not occur).
                 momenta_degree: deg(&[VarKind::Momentum]),
+                poisson_degree: deg(&[VarKind::Poisson]),
                 positions_degree: deg(&[VarKind::Coordinate]),
                 trig_degree: deg(&[VarKind::Angle]),
                 fixed,
@@ -1398,6 +1485,7 @@ fn new_integrals(
     let bounds = Size {
         momenta: space.momenta_degree.into(),
         coordinates: space.positions_degree.into(),
+        poisson: space.poisson_degree.into(),
         angles_alone: space.trig_degree.into(),
     };
     let grades: Vec<i64> = basis.iter().map(|b| grading.grade(&b.fixed)).collect();
@@ -1549,7 +1637,7 @@ pub fn parameter_text(vars: &VarSet, values: &[(Var, Rational)], style: Style) -
 
 /// The filtration by which `--new-only` counts an integral generated. A function's grade is
 /// the largest of its terms' `(degree, order)`, lexicographically: the total degree `Σ|a|` in
-/// the coordinates and momenta first, then the trigonometric order `Σ|k|`. The functions of
+/// the coordinates, momenta and Poisson variables first, then the trigonometric order `Σ|k|`. The functions of
 /// grade `≤ g` form a space, and a product's grade is at most the sum of its factors' (degrees
 /// add up, `|k + k'| ≤ |k| + |k'|`, and sums keep the lexicographic order): a filtration of
 /// the algebra, in which a function of the angles alone has degree 0 and is told apart by its
@@ -1560,7 +1648,7 @@ pub fn parameter_text(vars: &VarSet, values: &[(Var, Rational)], style: Style) -
 /// `(d, t)` is `d(K + 1) + t`, and a number less one stands just below its grade. Without
 /// angles the numbers order by degree alone.
 struct Grading {
-    /// The coordinates and the momenta, whose total degree comes first.
+    /// The coordinates, the momenta and the Poisson variables, whose total degree comes first.
     degree_variables: Vec<Var>,
     angles: Vec<Var>,
     /// How many trigonometric orders the space has, `K + 1`.
@@ -1570,7 +1658,12 @@ struct Grading {
 impl Grading {
     fn new(variables: &SpaceVariables, trig_degree: u32) -> Self {
         Grading {
-            degree_variables: [&variables.coordinates[..], &variables.momenta[..]].concat(),
+            degree_variables: [
+                &variables.coordinates[..],
+                &variables.momenta[..],
+                &variables.poisson[..],
+            ]
+            .concat(),
             angles: variables.angles.clone(),
             orders: i64::from(trig_degree) + 1,
         }
@@ -1589,14 +1682,15 @@ impl Grading {
 }
 
 /// What a factor takes of the space's bounds, added up over a product's factors: its degrees
-/// in the momenta and in the coordinates and, for a function of the angles alone, its
-/// trigonometric order. A factor of positive degree takes no order, since the orders of such
+/// in the momenta, in the coordinates and in the Poisson variables and, for a function of the
+/// angles alone, its trigonometric order. A factor of positive degree takes no order, since the orders of such
 /// factors cancel in products (`Z e^{−iθ}·W̄ e^{iθ}` has order 0), and their degrees bound how
 /// many fit; the orders bound how many of the angles alone do (`cos(a − b)ⁿ`).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 struct Size {
     momenta: i64,
     coordinates: i64,
+    poisson: i64,
     angles_alone: i64,
 }
 
@@ -1605,26 +1699,32 @@ impl Size {
     const UNBOUNDED: Size = Size {
         momenta: i64::MAX,
         coordinates: i64::MAX,
+        poisson: i64::MAX,
         angles_alone: i64::MAX,
     };
 
     fn of(f: &Expr) -> Self {
-        let degree = |kinds: &[VarKind]| f.total_degree(kinds).unwrap_or(0);
-        let (momenta, coordinates) = (degree(&[VarKind::Momentum]), degree(&[VarKind::Coordinate]));
-        let angles_alone = match momenta == 0 && coordinates == 0 {
-            true => degree(&[VarKind::Angle]),
+        let degree = |kind: VarKind| f.total_degree(&[kind]).unwrap_or(0);
+        let (momenta, coordinates, poisson) = (
+            degree(VarKind::Momentum),
+            degree(VarKind::Coordinate),
+            degree(VarKind::Poisson),
+        );
+        let angles_alone = match momenta == 0 && coordinates == 0 && poisson == 0 {
+            true => degree(VarKind::Angle),
             false => 0,
         };
         Size {
             momenta,
             coordinates,
+            poisson,
             angles_alone,
         }
     }
 
     /// Whether it has a positive degree (a factor that is no function of the angles alone).
     fn has_degree(&self) -> bool {
-        self.momenta > 0 || self.coordinates > 0
+        self.momenta > 0 || self.coordinates > 0 || self.poisson > 0
     }
 
     /// The sum of each (saturating: an unbounded least size stays unbounded).
@@ -1632,6 +1732,7 @@ impl Size {
         Size {
             momenta: self.momenta.saturating_add(other.momenta),
             coordinates: self.coordinates.saturating_add(other.coordinates),
+            poisson: self.poisson.saturating_add(other.poisson),
             angles_alone: self.angles_alone.saturating_add(other.angles_alone),
         }
     }
@@ -1641,6 +1742,7 @@ impl Size {
         Size {
             momenta: self.momenta.min(other.momenta),
             coordinates: self.coordinates.min(other.coordinates),
+            poisson: self.poisson.min(other.poisson),
             angles_alone: self.angles_alone.min(other.angles_alone),
         }
     }
@@ -1819,7 +1921,9 @@ impl Spanning<'_, '_> {
             lo,
             stamp,
             least,
-            max_factors: (self.bounds.momenta + self.bounds.coordinates).max(1) as usize + 1,
+            max_factors: (self.bounds.momenta + self.bounds.coordinates + self.bounds.poisson)
+                .max(1) as usize
+                + 1,
         };
         for (i, g) in gens.iter().enumerate().rev() {
             if round.extendable(self, i, g.size) {
@@ -1832,6 +1936,7 @@ impl Spanning<'_, '_> {
     fn fits(&self, size: Size) -> bool {
         size.momenta <= self.bounds.momenta
             && (self.laurent || size.coordinates <= self.bounds.coordinates)
+            && size.poisson <= self.bounds.poisson
             && size.angles_alone <= self.bounds.angles_alone
     }
 }
@@ -2262,6 +2367,7 @@ mod tests {
         let bounds = Size {
             momenta: 4,
             coordinates: 4,
+            poisson: 0,
             angles_alone: 4,
         };
         let dim = problem.unknowns.len();
@@ -2481,6 +2587,95 @@ mod tests {
             symbolic.new.as_ref().unwrap().known,
             fixed.new.as_ref().unwrap().known
         );
+    }
+
+    /// A Poisson variable `s` with a declared bracket with a canonical momentum, `{p_x, s} = 1`,
+    /// and `H = p_x²/2 + s`: `ṗ_x = 1` comes from the declared part of `{p_x, H}` alone, so an
+    /// image that took only `∂H/∂x` would find `p_x` conserved. The integrals are the
+    /// polynomials in the Casimir `u = x + s` and `v = p_x² − 2x` that fit the space: `1, u, u²,
+    /// v, uv` at degree `≤ 2` in each kind, each proved.
+    #[test]
+    fn declared_brackets_with_canonical_variables_enter_the_images() {
+        let vars = VarSet::builder()
+            .coordinate("x")
+            .momentum("p_x")
+            .poisson("s")
+            .build()
+            .unwrap();
+        let e = |t: &str| Expr::parse(&vars, t).unwrap();
+        let space = crate::PhaseSpace::new(&vars, &[("x", "p_x")])
+            .unwrap()
+            .with_brackets(&[("p_x", "s", e("1"))])
+            .unwrap();
+        let slide = System::new("slide", space, e("p_x^2/2 + s"));
+        let options = SearchOptions::new(SearchSpace::new(2, 2, 0).poisson_degree(2)).new_only();
+        let found = search(&slide, &options).unwrap();
+        assert!(found.all_symbolic() && found.basis.iter().all(|f| f.proved_fixed));
+        assert_eq!(found.variables.poisson, [slide.var("s")]);
+        let parameters = parameter_values(&slide, None, &[], &[]);
+        let problem = fixed_problem(&slide, &options, &parameters).unwrap();
+        let mut span = Echelon::<Rational>::new(problem.unknowns.len());
+        for (id, f) in found.basis.iter().enumerate() {
+            assert!(span
+                .insert(id, &problem.coordinates(&f.fixed).unwrap())
+                .is_none());
+        }
+        let expected = [
+            "1",
+            "x + s",
+            "(x + s)^2",
+            "p_x^2 - 2*x",
+            "(x + s)*(p_x^2 - 2*x)",
+        ];
+        for f in expected {
+            assert!(span.contains(&problem.coordinates(&e(f)).unwrap()), "{f}");
+        }
+        assert_eq!(found.basis.len(), expected.len());
+        assert!(problem
+            .coordinates(&e("p_x"))
+            .is_some_and(|v| !span.contains(&v)));
+        // With H = u + v/2 known, the Casimir u alone is new: v = 2(H − u), and u², uv are
+        // products.
+        let new = found.new.as_ref().unwrap();
+        assert_eq!(new.known, ["H"]);
+        let new: Vec<&Expr> = new.new.iter().map(|&i| &found.basis[i].fixed).collect();
+        assert_eq!(new, [&e("x + s")]);
+    }
+
+    /// The symmetric Euler top with the moments as parameters, on the surface `M₃ = 1`, which
+    /// its flow keeps: `M₃` is left out of the space (every function of it is an integral
+    /// there), and the integrals of degree `≤ 2` in `M₁, M₂` are `1` and `M₁² + M₂²`, lifted
+    /// back to the moments, which have one weight, so the lift needs none of them.
+    #[test]
+    fn a_poisson_variable_the_condition_fixes_is_left_out() {
+        let vars = VarSet::builder()
+            .poisson("M1")
+            .poisson("M2")
+            .poisson("M3")
+            .parameter("A")
+            .parameter("C")
+            .build()
+            .unwrap();
+        let e = |t: &str| Expr::parse(&vars, t).unwrap();
+        let space = crate::PhaseSpace::new(&vars, &[])
+            .unwrap()
+            .with_brackets(&[
+                ("M1", "M2", e("M3")),
+                ("M2", "M3", e("M1")),
+                ("M3", "M1", e("M2")),
+            ])
+            .unwrap();
+        let top = System::new("top", space, e("(M1^2 + M2^2)/(2*A) + M3^2/(2*C)"));
+        let m3 = Condition::new("M3 = 1", top.var("M3"), e("1"));
+        let options = SearchOptions::new(SearchSpace::new(0, 0, 0).poisson_degree(2))
+            .fix(top.var("A"), Rational::from(2))
+            .when(m3);
+        let found = search(&top, &options).unwrap();
+        assert_eq!(found.variables.left_out, [top.var("M3")]);
+        assert_eq!(found.variables.poisson, [top.var("M1"), top.var("M2")]);
+        let integrals: Vec<&Expr> = found.basis.iter().map(Integral::expr).collect();
+        assert_eq!(integrals, [&e("1"), &e("M1^2 + M2^2")]);
+        assert!(found.basis.iter().all(|f| f.proved_fixed));
     }
 
     #[test]

@@ -1,0 +1,56 @@
+"""The dimensions `superint search` finds on the Lie-Poisson tops (docs/results.md, section 9),
+found again by SymPy on its own: the polynomial integrals of degree <= d of a Lie-Poisson
+system are the solutions of the linear system {F, H} = 0 for a generic F of that degree, whose
+dimension is the number of coefficients less the rank.
+
+    python search_dimensions.py
+
+Prints one line a case (the Euler top at I = (1, 2, 3), degrees 2 to 4: 3, 3, 6; the heavy top
+with c = 1 at I3 = 1/2, the Kovalevskaya top, and at I3 = 1/3, degree 4: 11, 10). Not a
+benchmark: a check by another program (some ten seconds).
+"""
+import itertools
+
+import sympy as sp
+
+
+def bracket(f, g, variables, table):
+    """{f, g} = sum over a, b of {a, b} df/da dg/db."""
+    return sp.expand(sum(table.get((a, b), 0) * sp.diff(f, a) * sp.diff(g, b)
+                         for a in variables for b in variables))
+
+
+def antisymmetric(pairs):
+    table = {}
+    for (a, b), value in pairs.items():
+        table[(a, b)] = value
+        table[(b, a)] = -value
+    return table
+
+
+def dimension(variables, table, h, degree):
+    """The dimension of the integrals of degree <= degree."""
+    monomials = [sp.Mul(*[v**e for v, e in zip(variables, exponents)])
+                 for exponents in itertools.product(range(degree + 1), repeat=len(variables))
+                 if sum(exponents) <= degree]
+    unknowns = sp.symbols(f"a0:{len(monomials)}")
+    f = sum(a * m for a, m in zip(unknowns, monomials))
+    image = sp.Poly(bracket(f, h, variables, table), *variables)
+    rows = [[sp.diff(c, a) for a in unknowns] for c in image.coeffs()]
+    return len(monomials) - sp.Matrix(rows).rank()
+
+
+M1, M2, M3, g1, g2, g3 = sp.symbols("M1 M2 M3 gamma1 gamma2 gamma3")
+so3 = {(M1, M2): M3, (M2, M3): M1, (M3, M1): M2}
+e3 = dict(so3)
+e3.update({(M1, g2): g3, (M1, g3): -g2, (M2, g3): g1, (M2, g1): -g3,
+           (M3, g1): g2, (M3, g2): -g1})
+
+euler = M1**2 / 2 + M2**2 / 4 + M3**2 / 6
+for d in (2, 3, 4):
+    print(f"Euler top, I = (1, 2, 3), degree <= {d}:",
+          dimension([M1, M2, M3], antisymmetric(so3), euler, d))
+for i3 in (sp.Rational(1, 2), sp.Rational(1, 3)):
+    heavy = (M1**2 + M2**2) / 2 + M3**2 / (2 * i3) - g1
+    print(f"heavy top, I3 = {i3}, c = 1, degree <= 4:",
+          dimension([M1, M2, M3, g1, g2, g3], antisymmetric(e3), heavy, 4), flush=True)
