@@ -111,24 +111,38 @@ pub struct Family {
 /// A system built in code becomes one by [`LoadedSystem::of_system`]; functions, families and
 /// claims are added in code by [`LoadedSystem::add_function`], [`LoadedSystem::add_family`]
 /// and [`LoadedSystem::add_claim`], and read as a file's own are.
+///
+/// Its parts are read through accessors ([`LoadedSystem::system`], [`LoadedSystem::families`],
+/// [`LoadedSystem::claims`], ...) and changed only through those calls, so that every
+/// function, family and claim it holds has been checked as a file's own is: a name the system
+/// already has, or one its printed forms would confuse with another, never gets in.
+///
+/// ```compile_fail,E0616
+/// # use superint::prelude::*;
+/// let mut rotor = LoadedSystem::of_system(systems::harmonic_rotor());
+/// // A function defined behind the loader's back, unchecked: not possible.
+/// let x = rotor.parse("x")?;
+/// rotor.system.define("L", "L", x);
+/// # Ok::<(), FileError>(())
+/// ```
 #[derive(Debug)]
 pub struct LoadedSystem {
     /// The file's text and path as given.
-    pub source: Source,
+    source: Source,
     /// The system's name (`name`, or the file name).
-    pub name: String,
+    name: String,
     /// Where the system comes from (`source`, a citation), if given.
-    pub citation: Option<String>,
+    citation: Option<String>,
     /// What the system is (`description`), if given.
-    pub description: Option<String>,
+    description: Option<String>,
     /// The phase space, Hamiltonian `H` and named functions.
-    pub system: System,
+    system: System,
     /// The families, in file order.
-    pub families: Vec<Family>,
+    families: Vec<Family>,
     /// The claims, in file order (parsed syntactically; [`LoadedSystem::check_claim`] computes).
-    pub claims: Vec<ClaimSpec>,
+    claims: Vec<ClaimSpec>,
     /// The limits in force.
-    pub limits: Limits,
+    limits: Limits,
     /// Expanded family instances: `(family, m, n)`.
     cache: Mutex<HashMap<(usize, i64, i64), Expr>>,
 }
@@ -223,6 +237,51 @@ impl LoadedSystem {
             claims: Vec::new(),
             cache: Mutex::new(HashMap::new()),
         }
+    }
+
+    /// The source of the system's texts: the file's path (`origin`) and text, or `<program>`
+    /// for a system built in code.
+    pub fn source(&self) -> &Source {
+        &self.source
+    }
+
+    /// The system's name (the file's `name`, or its file name; a system built in code, its
+    /// [`System::name`]).
+    pub fn name(&self) -> &str {
+        &self.name
+    }
+
+    /// Where the system comes from (the file's `source`, a citation), if given.
+    pub fn citation(&self) -> Option<&str> {
+        self.citation.as_deref()
+    }
+
+    /// What the system is (the file's `description`), if given.
+    pub fn description(&self) -> Option<&str> {
+        self.description.as_deref()
+    }
+
+    /// The phase space, the Hamiltonian `H` and the named functions, for the engine's own
+    /// calls ([`System::bracket`], [`System::flow`], [`System::rank`], ...).
+    pub fn system(&self) -> &System {
+        &self.system
+    }
+
+    /// The families, in file order, then those added in code.
+    pub fn families(&self) -> &[Family] {
+        &self.families
+    }
+
+    /// The claims, in file order, then those added in code (read, not yet computed:
+    /// [`LoadedSystem::check_claim`] computes one).
+    pub fn claims(&self) -> &[ClaimSpec] {
+        &self.claims
+    }
+
+    /// The limits in force (the file's `[limits]` with the loader's override, or the system's
+    /// own for one built in code).
+    pub fn limits(&self) -> Limits {
+        self.limits
     }
 
     /// Parses an expression given on the command line (named functions, family instances,

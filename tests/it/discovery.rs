@@ -477,7 +477,7 @@ fn harmonic_1_1_closure() {
     let w = "(p_x - i*p_y + i*M*omega*(x - i*y))*exp(-i*theta)";
     for a in ["P_1_1", "Q_1_1"] {
         for b in [format!("re({w})"), format!("im({w})")] {
-            let bracket = file.system.bracket(&parse(a), &parse(&b)).unwrap();
+            let bracket = file.system().bracket(&parse(a), &parse(&b)).unwrap();
             assert!(bracket.is_zero(), "{{{a}, {b}}} = {bracket}");
         }
     }
@@ -689,12 +689,12 @@ fn henon_heiles_kdv_integral_for_every_a_and_b() {
     );
     // The generator is the file's K, whose claim holds at C = 2 and is refuted elsewhere.
     let file = system_file("henon-heiles.toml");
-    let var = |name: &str| file.system.vars().lookup(name).expect("a parameter");
+    let var = |name: &str| file.system().vars().lookup(name).expect("a parameter");
     let options = SearchOptions::new(SearchSpace::new(2, 4, 0).parameters_degree(2))
         .fix(var("C"), Rational::from(2))
         .symbolic(var("A"))
         .symbolic(var("B"));
-    let r = search(&file.system, &options).expect("the search runs");
+    let r = search(&file.system(), &options).expect("the search runs");
     let generators: Vec<&Expr> = r
         .module
         .as_ref()
@@ -813,7 +813,7 @@ fn bad_search_arguments_exit_2_with_a_message() {
 #[test]
 fn a_parameter_set_by_the_condition_is_not_fixed_first() {
     let file = system_file("henon-heiles.toml");
-    let vars = file.system.vars();
+    let vars = file.system().vars();
     let var = |name: &str| vars.lookup(name).expect("a parameter");
     let space = SearchSpace::new(2, 4, 0).parameters_degree(2);
     let symbolic = SearchOptions::new(space)
@@ -821,14 +821,14 @@ fn a_parameter_set_by_the_condition_is_not_fixed_first() {
         .symbolic(var("B"));
     let two = || Expr::constant(vars, trigpoly::GaussianRational::from(2));
     let by_condition = search(
-        &file.system,
+        &file.system(),
         &symbolic
             .clone()
             .when(brackets::Condition::new("C = 2", var("C"), two())),
     )
     .expect("the search runs");
-    let by_value =
-        search(&file.system, &symbolic.fix(var("C"), Rational::from(2))).expect("the search runs");
+    let by_value = search(&file.system(), &symbolic.fix(var("C"), Rational::from(2)))
+        .expect("the search runs");
     let generators = |r: &brackets::search::SearchResult| -> Vec<String> {
         let module = r.module.as_ref().expect("parameters kept symbolic");
         module
@@ -1689,7 +1689,7 @@ fn new_or_generated(
     file: &superint::system_file::LoadedSystem,
     space: SearchSpace,
 ) -> Vec<(Expr, bool)> {
-    let found = search(&file.system, &SearchOptions::new(space).new_only()).expect("searches");
+    let found = search(&file.system(), &SearchOptions::new(space).new_only()).expect("searches");
     let new = found.new.expect("--new-only").new;
     (found.basis.iter().enumerate())
         .map(|(i, f)| (f.expr().clone(), new.contains(&i)))
@@ -1699,7 +1699,7 @@ fn new_or_generated(
 /// Whether `f`, up to sign, is a basis integral and new; it must be a basis integral.
 fn is_new(file: &superint::system_file::LoadedSystem, found: &[(Expr, bool)], f: &str) -> bool {
     let e = file.parse_argument(f).expect("parses");
-    let flow = file.system.flow(&e).expect("a bracket");
+    let flow = file.system().flow(&e).expect("a bracket");
     assert!(flow.is_zero(), "{f} is no integral: {{{f}, H}} = {flow}");
     let found = found.iter().find(|(g, _)| *g == e || *g == -&e);
     found
