@@ -31,7 +31,7 @@ fn main() -> Result<(), FileError> {
             result.id, result.statement, result.proved
         );
     }
-    let tower = family_tower_report(&rotor, Some("N"), 4, None, &mut |_, _| {})?;
+    let tower = family_tower_report(&rotor, Some("N"), 4, None)?;
     println!("{}", tower.summary_line(false));
 
     // A slip: the error says where, in the text given.

@@ -89,7 +89,7 @@ impl LoadedSystem {
     /// oscillator.add_function("B", "B", "p_y - i*k*y")?;
     /// // {A^a B^b, H} = i(a − b)k A^a B^b: conserved on the diagonal a = b.
     /// oscillator.add_family("T", "T", ["a", "b"], "A^a*B^b", Some("i*(a - b)*k"))?;
-    /// let report = family_tower_report(&oscillator, Some("T"), 3, None, &mut |_, _| {})?;
+    /// let report = family_tower_report(&oscillator, Some("T"), 3, None)?;
     /// assert!(report.all_proved());
     /// assert_eq!(report.tower().map(|t| t.checked), Some(9));
     /// assert!(report.proof().is_some_and(|p| p.holds()));

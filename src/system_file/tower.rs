@@ -308,22 +308,46 @@ impl LoadedSystem {
 
 /// The tower job on a system file: the family `family` (or the first with an eigenvalue),
 /// `{K_{m,n}, H} = λ(m, n) K_{m,n}` expanded for `1 ≤ m, n ≤ max`, and the proof for all
-/// `m, n` when the family is a product of powers. `progress(done, total)` is called after
-/// each bracket. The family may be in any names, the file's or one added in code
-/// ([`LoadedSystem::add_family`]); the tower and the proof come back as
-/// [`Report::tower`] and [`Report::proof`].
+/// `m, n` when the family is a product of powers. The family may be in any names, the file's
+/// or one added in code ([`LoadedSystem::add_family`]); the tower and the proof come back as
+/// [`Report::tower`] and [`Report::proof`]. [`family_tower_report_with_progress`] reports
+/// each bracket as it is done.
 ///
 /// ```
 /// use superint::system_file::{family_tower_report, load, LimitsOverride};
 ///
 /// let rotor = load("systems/gravity-rotor.toml".as_ref(), &LimitsOverride::default())?;
-/// let report = family_tower_report(&rotor, None, 3, None, &mut |_done, _total| {})?;
+/// let report = family_tower_report(&rotor, None, 3, None)?;
 /// let tower = report.tower().expect("a tower");
 /// assert_eq!((tower.checked, tower.failures.len()), (9, 0));
 /// assert!(report.proof().is_some_and(|p| p.holds()));
 /// # Ok::<(), superint::system_file::FileError>(())
 /// ```
 pub fn family_tower_report(
+    file: &LoadedSystem,
+    family: Option<&str>,
+    max: i64,
+    when: Option<&Condition>,
+) -> Result<Report, FileError> {
+    family_tower_report_with_progress(file, family, max, when, &mut |_, _| {})
+}
+
+/// [`family_tower_report`], calling `progress(done, total)` after each bracket of the tower
+/// (the command line's progress bar; a program's own, or a log).
+///
+/// ```
+/// use superint::system_file::{family_tower_report_with_progress, load, LimitsOverride};
+///
+/// let rotor = load("systems/harmonic-rotor.toml".as_ref(), &LimitsOverride::default())?;
+/// let mut seen = Vec::new();
+/// let report = family_tower_report_with_progress(&rotor, Some("K"), 2, None, &mut |done, total| {
+///     seen.push((done, total))
+/// })?;
+/// assert!(report.all_proved());
+/// assert_eq!(seen, [(1, 4), (2, 4), (3, 4), (4, 4)]);
+/// # Ok::<(), superint::system_file::FileError>(())
+/// ```
+pub fn family_tower_report_with_progress(
     file: &LoadedSystem,
     family: Option<&str>,
     max: i64,

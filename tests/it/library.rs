@@ -62,7 +62,7 @@ fn family_tower_in_own_names() {
             Some("i*(a*k + b*Omega)"),
         )
         .unwrap();
-    let report = family_tower_report(&rotor, Some("R"), 3, None, &mut |_, _| {}).unwrap();
+    let report = family_tower_report(&rotor, Some("R"), 3, None).unwrap();
     let tower = report.tower().unwrap();
     assert_eq!((tower.checked, tower.failures.len()), (9, 0));
     let proof = report.proof().unwrap();
@@ -74,7 +74,7 @@ fn family_tower_in_own_names() {
         rotor.parse("A^2*exp(-3*i*phi)").unwrap()
     );
 
-    let wrong = family_tower_report(&rotor, Some("S"), 2, None, &mut |_, _| {}).unwrap();
+    let wrong = family_tower_report(&rotor, Some("S"), 2, None).unwrap();
     assert_eq!(
         wrong.tower().unwrap().failures,
         [(1, 1), (1, 2), (2, 1), (2, 2)]
@@ -140,7 +140,7 @@ fn a_loaded_file_extended_in_code() {
     let report = check_report([&rotor]).unwrap();
     assert!(report.all_as_expected());
     assert_eq!(report.claims().len(), claims + 4);
-    let tower = family_tower_report(&rotor, Some("N"), 3, None, &mut |_, _| {}).unwrap();
+    let tower = family_tower_report(&rotor, Some("N"), 3, None).unwrap();
     assert!(tower.all_proved());
     assert!(tower.proof().unwrap().holds());
 }
@@ -382,7 +382,7 @@ fn a_programs_error_type_matches_on_kinds() {
 #[test]
 fn messages_to_a_program_name_the_library() {
     let mut rotor = own_rotor();
-    let err = family_tower_report(&rotor, None, 2, None, &mut |_, _| {}).unwrap_err();
+    let err = family_tower_report(&rotor, None, 2, None).unwrap_err();
     assert_eq!(
         err.message,
         "the system has no family with an eigenvalue, so there is no tower to check"
@@ -391,7 +391,7 @@ fn messages_to_a_program_name_the_library() {
         .hint
         .unwrap()
         .starts_with("add one with LoadedSystem::add_family"));
-    let err = family_tower_report(&rotor, Some("R"), 2, None, &mut |_, _| {}).unwrap_err();
+    let err = family_tower_report(&rotor, Some("R"), 2, None).unwrap_err();
     assert_eq!(err.message, "no family named 'R' (the system has none)");
     let err = rotor.add_function("B", "B", "p_x + i*w*x").unwrap_err();
     assert_eq!(
@@ -400,11 +400,41 @@ fn messages_to_a_program_name_the_library() {
     );
     assert!(err.hint.unwrap().contains("LoadedSystem::add_function"));
     let file = harmonic_rotor_file();
-    let err = family_tower_report(&file, Some("R"), 2, None, &mut |_, _| {}).unwrap_err();
+    let err = family_tower_report(&file, Some("R"), 2, None).unwrap_err();
     assert_eq!(
         err.message,
         "no family named 'R' (the file declares K, Kbar, P, Q)"
     );
     let err = file.parse_argument("w").unwrap_err();
     assert!(err.hint.unwrap().contains("[[function]]"));
+}
+
+/// A tower needs no progress callback: `family_tower_report` runs without one, and
+/// `family_tower_report_with_progress` reports every bracket, `(done, total)`, in order, with
+/// the same result.
+#[test]
+fn a_tower_takes_progress_only_when_asked() {
+    let mut rotor = own_rotor();
+    rotor
+        .add_family(
+            "R",
+            "R",
+            ["a", "b"],
+            "A^a*exp(-i*b*phi)",
+            Some("i*(a*k - b*Omega)"),
+        )
+        .unwrap();
+    let quiet = family_tower_report(&rotor, Some("R"), 2, None).unwrap();
+    let mut seen = Vec::new();
+    let watched = family_tower_report_with_progress(&rotor, Some("R"), 2, None, &mut |d, t| {
+        seen.push((d, t));
+    })
+    .unwrap();
+    assert_eq!(seen, [(1, 4), (2, 4), (3, 4), (4, 4)]);
+    assert!(quiet.all_proved() && watched.all_proved());
+    assert_eq!(
+        quiet.tower().unwrap().checked,
+        watched.tower().unwrap().checked
+    );
+    assert!(tower_report(TowerSystem::Harmonic, 2).unwrap().all_proved());
 }
