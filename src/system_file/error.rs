@@ -1,5 +1,5 @@
-//! [`FileError`]: what is wrong with a system file (or an expression on the command line),
-//! where, and what to do about it, rendered as
+//! [`FileError`]: what is wrong with a system file (or a text given to it, by a program or on
+//! the command line), where, and what to do about it, rendered as
 //!
 //! ```text
 //! systems/mine.toml:12:21: unknown name 'G3' (known: x, y, …)
@@ -85,13 +85,15 @@ pub struct Location {
     width: usize,
 }
 
-/// A problem with a system file or a command-line expression: kind, origin (the file's path,
-/// or `<command line>`), location, message and an optional hint.
+/// A problem with a system file or a text given to it: kind, origin (the file's path; a text a
+/// program gave, `<expression>`, `<condition>`, `<function NAME>`, ...; `<command line>` for
+/// the command line's), location, message and an optional hint.
 #[derive(Clone, Debug, PartialEq, Eq, thiserror::Error)]
 pub struct FileError {
     /// What kind of problem it is.
     pub kind: ErrorKind,
-    /// The file's path as given, or `<command line>`.
+    /// The file's path as given, or the name of the text at fault (`<expression>`,
+    /// `<command line>`, ...).
     pub origin: String,
     /// Where, when the problem has a place in the text.
     pub location: Option<Box<Location>>,

@@ -774,6 +774,7 @@ impl<'a> Builder<'a> {
             families: Vec::new(),
             claims: Vec::new(),
             limits,
+            caller: super::Caller::Program,
             cache: Mutex::new(HashMap::new()),
         };
 

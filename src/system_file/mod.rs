@@ -143,8 +143,37 @@ pub struct LoadedSystem {
     claims: Vec<ClaimSpec>,
     /// The limits in force.
     limits: Limits,
+    /// Who gives the texts the reports read, which their messages name.
+    caller: Caller,
     /// Expanded family instances: `(family, m, n)`.
     cache: Mutex<HashMap<(usize, i64, i64), Expr>>,
+}
+
+/// Who gives the texts that the reports of a [`LoadedSystem`] read (the expressions of
+/// [`bracket_report`], [`expand_report`] and [`rank_report`], the names of [`table_report`],
+/// a condition, [`LoadedSystem::parse_argument`]), which their messages name. A loaded or built
+/// system's caller is [`Caller::Program`]; [`LoadedSystem::with_caller`] chooses another.
+///
+/// ```
+/// use superint::system_file::{bracket_report, load, Caller, LimitsOverride};
+///
+/// let rotor = load("systems/harmonic-rotor.toml".as_ref(), &LimitsOverride::default())?;
+/// let err = bracket_report(&rotor, "L", "G3", None).unwrap_err();
+/// assert_eq!(err.to_string().lines().next(), Some("<expression>:1:1: unknown name 'G3'"));
+/// let rotor = rotor.with_caller(Caller::CommandLine);
+/// let err = bracket_report(&rotor, "L", "G3", None).unwrap_err();
+/// assert_eq!(err.to_string().lines().next(), Some("<command line>:1:1: unknown name 'G3'"));
+/// # Ok::<(), superint::system_file::FileError>(())
+/// ```
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub enum Caller {
+    /// A program: an expression is `<expression>` in messages, a condition `<condition>`, a
+    /// computation `<program>`, and they name the library's calls, not the command's options.
+    #[default]
+    Program,
+    /// The command line (`superint bracket`, `table`, ...): every text given is
+    /// `<command line>`, and messages name the command's options (`--when`).
+    CommandLine,
 }
 
 /// What `name` already names in `system` or among `families`, in words with its article:
@@ -178,12 +207,12 @@ pub fn what_is(system: &System, families: &[Family], name: &str) -> Option<Strin
         .map(|(k, _, _)| format!("an instance of the family {}", families[k].name))
 }
 
-/// Where command-line expressions come from in messages.
+/// Where expressions given on the command line come from in messages ([`Caller::CommandLine`]).
 const COMMAND_LINE: &str = "<command line>";
 
-/// An expression given on the command line, parsed but not yet expanded. A command parses
-/// all its arguments before it expands any, so that a slip in the last one is reported at
-/// once rather than after the expansion of the first.
+/// An expression given to a report, parsed but not yet expanded. A report parses all its
+/// arguments before it expands any, so that a slip in the last one is reported at once rather
+/// than after the expansion of the first.
 struct Argument {
     source: Source,
     text: Text,
@@ -207,6 +236,7 @@ impl Clone for LoadedSystem {
             families: self.families.clone(),
             claims: self.claims.clone(),
             limits: self.limits,
+            caller: self.caller,
             cache: Mutex::new(cache),
         }
     }
@@ -235,8 +265,23 @@ impl LoadedSystem {
             system,
             families: Vec::new(),
             claims: Vec::new(),
+            caller: Caller::Program,
             cache: Mutex::new(HashMap::new()),
         }
+    }
+
+    /// The same system, whose reports name `caller` as the giver of their texts: the command
+    /// line's `superint bracket`, say, loads a file `with_caller(Caller::CommandLine)`.
+    #[must_use]
+    pub fn with_caller(mut self, caller: Caller) -> Self {
+        self.caller = caller;
+        self
+    }
+
+    /// Who gives the texts the reports read ([`Caller::Program`] unless
+    /// [`LoadedSystem::with_caller`] said otherwise).
+    pub fn caller(&self) -> Caller {
+        self.caller
     }
 
     /// The source of the system's texts: the file's path (`origin`) and text, or `<program>`
@@ -284,15 +329,30 @@ impl LoadedSystem {
         self.limits
     }
 
-    /// Parses an expression given on the command line (named functions, family instances,
-    /// brackets, `conj`/`re`/`im` allowed); errors point into the argument.
+    /// Parses an expression given to a report (named functions, family instances, brackets,
+    /// `conj`/`re`/`im` allowed), as the reports read theirs; errors point into the argument,
+    /// named as the [`Caller`] says (`<expression>`, or `<command line>`).
     pub fn parse_argument(&self, src: &str) -> Result<Expr, FileError> {
         self.value(&self.argument(src)?)
     }
 
-    /// Reads an expression given on the command line, without expanding it.
+    /// Reads an expression given to a report, without expanding it.
     fn argument(&self, src: &str) -> Result<Argument, FileError> {
-        self.argument_in(Source::new(COMMAND_LINE, src))
+        self.argument_in(self.given("<expression>", src))
+    }
+
+    /// The source of a text given to a report: `<command line>` for the command line, else
+    /// `what` (`<expression>`, `<condition>`). Its hints are those of the system's own texts
+    /// (a file's tables, or the library's calls for a system built in code).
+    fn given(&self, what: &str, text: &str) -> Source {
+        let origin = match self.caller {
+            Caller::CommandLine => COMMAND_LINE,
+            Caller::Program => what,
+        };
+        Source {
+            program: self.source.program,
+            ..Source::new(origin, text)
+        }
     }
 
     /// Reads the expression that is `source`, without expanding it.

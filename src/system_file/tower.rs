@@ -19,7 +19,7 @@ use brackets::{Condition, EngineError};
 use super::claims::engine_error;
 use super::error::{ErrorKind, FileError};
 use super::scope::{substitute, Scope};
-use super::{LoadedSystem, COMMAND_LINE};
+use super::{Caller, LoadedSystem};
 use crate::report::{
     ClaimResult, Entry, Fact, ProofResult, Report, Section, SummaryKind, TowerResult,
 };
@@ -358,11 +358,15 @@ pub fn family_tower_report_with_progress(
     // Parameters only: substituting them commutes with the bracket, so the lemma holds at
     // their values as it does everywhere.
     if let Some((v, kind)) = when.and_then(|c| c.phase_variable()) {
+        let option = match file.caller {
+            Caller::CommandLine => "--when: ",
+            Caller::Program => "",
+        };
         return Err(FileError::new(
             ErrorKind::Condition,
-            COMMAND_LINE,
+            &file.given("<condition>", "").origin,
             format!(
-                "--when: a tower's condition may set parameters only, to numbers or other \
+                "{option}a tower's condition may set parameters only, to numbers or other \
                  parameters, and it holds {v}, {kind}: the tower's brackets are identities on \
                  the whole phase space"
             ),

@@ -438,3 +438,73 @@ fn a_tower_takes_progress_only_when_asked() {
     );
     assert!(tower_report(TowerSystem::Harmonic, 2).unwrap().all_proved());
 }
+
+/// The reports' messages name the texts as a program gave them, not the command line: an
+/// expression is `<expression>`, a condition `<condition>`, the table names the system and the
+/// call, the tower's condition no `--when`; a file read `with_caller(Caller::CommandLine)`
+/// names the command line, as `superint` does.
+#[test]
+fn report_errors_name_the_program_not_the_command_line() {
+    let rotor = own_rotor();
+    let cli_words = |err: &FileError| {
+        let text = err.to_string();
+        assert!(
+            !text.contains("command line") && !text.contains("--") && !text.contains("superint"),
+            "{text}"
+        );
+        text
+    };
+    let err = bracket_report(&rotor, "A", "B", None).unwrap_err();
+    assert!(cli_words(&err).starts_with("<expression>:1:1: unknown name 'B'"));
+    let err = expand_report(&rotor, &["A".to_string(), "A +".to_string()], None).unwrap_err();
+    assert_eq!(
+        (err.origin.as_str(), err.line_col()),
+        ("<expression>", Some((1, 4)))
+    );
+    let err = bracket_report(&rotor, "A", "H", Some("p_phi = J*w")).unwrap_err();
+    assert!(cli_words(&err).starts_with("<condition>:1:11: unknown name 'w'"));
+    let err = rank_report(&rotor, &["A", "Omega", "B"], None).unwrap_err();
+    assert!(cli_words(&err).starts_with("<expression>:1:1: unknown name 'B'"));
+    let err = table_report(&rotor, &["A", "B"]).unwrap_err();
+    assert_eq!(
+        cli_words(&err),
+        "<expression>: 'B' is not a function of the own rotor (known: H, A, Omega)"
+    );
+    let vars = VarSet::builder()
+        .coordinate("q")
+        .momentum("p")
+        .build()
+        .unwrap();
+    let space = PhaseSpace::new(&vars, &[("q", "p")]).unwrap();
+    let h = Expr::parse(&vars, "p^2/2").unwrap();
+    let bare = LoadedSystem::of_system(System::new("free particle", space, h));
+    let err = table_report(&bare, &[] as &[&str]).unwrap_err();
+    assert!(cli_words(&err).contains("table_report(&system"), "{err}");
+    let mut towered = own_rotor();
+    towered
+        .add_family(
+            "R",
+            "R",
+            ["a", "b"],
+            "A^a*exp(-i*b*phi)",
+            Some("i*(a*k - b*Omega)"),
+        )
+        .unwrap();
+    let on_phase_space = towered.condition("p_phi = J*k").unwrap();
+    let err = family_tower_report(&towered, Some("R"), 2, Some(&on_phase_space)).unwrap_err();
+    assert_eq!(err.origin, "<condition>");
+    assert!(cli_words(&err).contains("a tower's condition may set parameters only"));
+
+    // The command line's words, when the caller says so.
+    assert_eq!(rotor.caller(), Caller::Program);
+    let cli = harmonic_rotor_file().with_caller(Caller::CommandLine);
+    let err = table_report(&cli, &["nope"]).unwrap_err();
+    assert!(err
+        .to_string()
+        .starts_with("<command line>: 'nope' is not a function of "));
+    let err = bracket_report(&cli, "L", "H", Some("p_theta = ")).unwrap_err();
+    assert_eq!(err.origin, "<command line>");
+    let on_phase_space = cli.condition("p_theta = I*omega").unwrap();
+    let err = family_tower_report(&cli, None, 2, Some(&on_phase_space)).unwrap_err();
+    assert!(err.message.starts_with("--when: "), "{err}");
+}
