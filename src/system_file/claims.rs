@@ -126,6 +126,8 @@ impl From<EngineError> for FileError {
                 error.span.start..error.span.end,
                 error.message,
             ),
+            // Located by its own excerpt when it knows its source.
+            EngineError::Parse { error, .. } if error.excerpt().is_some() => error.into(),
             EngineError::Parse { message, .. } => {
                 FileError::new(ErrorKind::Expression, expression, message)
             }

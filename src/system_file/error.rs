@@ -178,13 +178,48 @@ pub(crate) fn locate(text: &str, span: Range<usize>) -> Location {
         0
     };
     let shift = |at: usize| at.saturating_sub(bom);
-    let excerpt = Excerpt::of(&text[bom..], Span::new(shift(span.start), shift(span.end)));
-    Location {
-        line: excerpt.line,
-        column: excerpt.column,
-        excerpt: excerpt.text,
-        pad: excerpt.pad,
-        width: excerpt.width,
+    Location::from(Excerpt::of(
+        &text[bom..],
+        Span::new(shift(span.start), shift(span.end)),
+    ))
+}
+
+/// The place an excerpt shows, as a file's error shows it.
+impl From<Excerpt> for Location {
+    fn from(excerpt: Excerpt) -> Self {
+        Location {
+            line: excerpt.line,
+            column: excerpt.column,
+            excerpt: excerpt.text,
+            pad: excerpt.pad,
+            width: excerpt.width,
+        }
+    }
+}
+
+/// A parse error of the ring's own parser ([`trigpoly::Expr::parse`]), so that `?` takes it
+/// into a `FileError`: of kind [`ErrorKind::Expression`], from `<expression>`, at its line and
+/// column with the line and a caret when it knows its source (every error of
+/// `Expr::parse` does).
+///
+/// ```
+/// use superint::prelude::*;
+///
+/// fn energy(vars: &Vars, text: &str) -> Result<Expr, FileError> {
+///     Ok(Expr::parse(vars, text)?)
+/// }
+/// let vars = VarSet::builder().coordinate("x").momentum("p_x").build().unwrap();
+/// let err = energy(&vars, "p_x^2/2 +\n x^^2").unwrap_err();
+/// assert_eq!((err.kind, err.line_col()), (ErrorKind::Expression, Some((2, 4))));
+/// assert!(err.to_string().starts_with("<expression>:2:4: "), "{err}");
+/// assert!(err.to_string().contains("\n 2 |  x^^2\n   |    ^"), "{err}");
+/// ```
+impl From<trigpoly::ParseError> for FileError {
+    fn from(e: trigpoly::ParseError) -> Self {
+        FileError {
+            location: e.excerpt().map(|x| Box::new(Location::from(x.clone()))),
+            ..FileError::new(ErrorKind::Expression, "<expression>", e.message)
+        }
     }
 }
 

@@ -508,3 +508,45 @@ fn report_errors_name_the_program_not_the_command_line() {
     let err = family_tower_report(&cli, None, 2, Some(&on_phase_space)).unwrap_err();
     assert!(err.message.starts_with("--when: "), "{err}");
 }
+
+/// `Expr::parse`'s error says where and what wherever `?` takes it: into a `Box<dyn Error>`
+/// its text has the line, column, the line and a caret; into a `FileError`, directly or
+/// through an `EngineError`, it is an expression error at its line and column, shown as a
+/// file's are.
+#[test]
+fn a_parse_error_keeps_its_place_under_question_mark() {
+    let vars = VarSet::builder()
+        .coordinate("x")
+        .momentum("p_x")
+        .parameter("k")
+        .build()
+        .unwrap();
+    let boxed = || -> Result<Expr, Box<dyn std::error::Error>> {
+        Ok(Expr::parse(&vars, "p_x^2/2\n + k*x^2/2 + q")?)
+    };
+    assert_eq!(
+        boxed().unwrap_err().to_string(),
+        concat!(
+            "line 2, column 14: unknown name 'q' (known: x, p_x, k)\n",
+            "   + k*x^2/2 + q\n",
+            "               ^"
+        )
+    );
+    let file = || -> Result<Expr, FileError> { Ok(Expr::parse(&vars, "p_x^2/2 + k*x^^2")?) };
+    let err = file().unwrap_err();
+    assert_eq!(
+        (err.kind, err.origin.as_str(), err.line_col()),
+        (ErrorKind::Expression, "<expression>", Some((1, 15)))
+    );
+    assert_eq!(
+        err.to_string(),
+        "<expression>:1:15: expected an expression after '^', found '^'\n 1 | p_x^2/2 + k*x^^2\n   |               ^"
+    );
+    let engine = || -> Result<Expr, EngineError> { Ok(Expr::parse(&vars, "k*(x + ")?) };
+    let err = FileError::from(engine().unwrap_err());
+    assert_eq!(err.line_col(), Some((1, 7)));
+    assert!(engine()
+        .unwrap_err()
+        .to_string()
+        .starts_with("line 1, column 7: "));
+}
