@@ -52,7 +52,9 @@ mod tower;
 
 pub use claims::{CheckedClaim, ClaimForm, ClaimSpec};
 pub use error::{ErrorKind, FileError, Location};
-pub use load::{load, load_bytes, load_str, reserved, unwritable_letter, BadName};
+pub use load::{
+    load, load_bytes, load_str, reserved, unwritable_letter, BadName, PrintedNames, Refusal,
+};
 pub use plot::{Against, PlotFunctions, PlotInput, StartValue};
 pub use reports::{
     bracket_report, check_each, check_report, expand_report, rank_report, table_report,

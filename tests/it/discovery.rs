@@ -1276,8 +1276,9 @@ fn an_unlifted_search_says_how_to_see_every_value() {
 }
 
 /// A generator named twice, or a definition given twice, is a mistake on the command line; so
-/// is a defined name that is reserved or that the system has, refused before anything is
-/// read or computed (its value may be wrong too) and said as what it is.
+/// is a defined name that is reserved or that the system has, or that would print as one of
+/// its names does, refused before anything is read or computed (its value may be wrong too)
+/// and said as what it is.
 #[test]
 fn closure_refuses_a_generator_named_twice_or_a_name_the_system_has() {
     let harmonic = &["closure", "systems/harmonic-rotor.toml"][..];
@@ -1376,6 +1377,20 @@ fn closure_refuses_a_generator_named_twice_or_a_name_the_system_has() {
             builtin,
             vec!["L", "--define", "theta=x"],
             "--define theta: theta is an angle of the system; choose another name",
+        ),
+        // A generator printed as a function or another generator is, here in LaTeX (F_{1}),
+        // whether or not that function is a generator.
+        (
+            harmonic,
+            vec!["L", "--define", "F_1=F1"],
+            "--define F_1: the generator F_1 would print as F_{1} in LaTeX, as the function F1 \
+             does; choose another name",
+        ),
+        (
+            builtin,
+            vec!["L", "--define", "C_1=F1", "--define", "C1=F2"],
+            "--define C1: the generator C1 would print as C_{1} in LaTeX, as the generator C_1 \
+             does; choose another name",
         ),
     ] {
         let out = superint(&[command, &args].concat());

@@ -550,3 +550,118 @@ fn a_parse_error_keeps_its_place_under_question_mark() {
         .to_string()
         .starts_with("line 1, column 7: "));
 }
+
+/// A function added in code is checked against the names as they print, as a file's is: a
+/// name the printer would write for a product of one-letter variables (`kx` for `k x`) is
+/// refused, unless the variables were built knowing it, and then the product prints spaced;
+/// a display that prints as a variable's or a function's does, in text or in LaTeX (`F_1` and
+/// `F1`, both `F_{1}`), is refused; so is a family whose instances would print as another's.
+/// Each message names the offending name, and the system is unchanged.
+#[test]
+fn names_added_in_code_print_apart() {
+    let mut rotor = own_rotor();
+    let functions = rotor.system().functions().len();
+    let err = rotor.add_function("kx", "kx", "k*p_x").unwrap_err();
+    assert_eq!(
+        (err.kind, err.origin.as_str()),
+        (ErrorKind::Name, "<function kx>")
+    );
+    assert_eq!(
+        err.message,
+        "the function kx would read back from the product k x of the variables, which prints \
+         as kx: choose another name, or give it to the variables when they are built \
+         (VarSetBuilder::also_named), which has such products printed spaced"
+    );
+    // Its display alone may spell the product too.
+    let err = rotor.add_function("P", "kJ", "k*J").unwrap_err();
+    assert!(err
+        .message
+        .starts_with("the function P would read back from the product k J"));
+    let err = rotor.add_function("B", "A", "p_y").unwrap_err();
+    assert_eq!(
+        err.message,
+        "the function B would show as A, as the function A does: rename one, or give it another \
+         display"
+    );
+    rotor.add_function("J1", "J1", "J").unwrap();
+    let err = rotor.add_function("J_1", "J_1", "J").unwrap_err();
+    assert_eq!(
+        err.message,
+        "the function J_1 would print as J_{1} in LaTeX, as the function J1 does: rename one, \
+         or give it another display"
+    );
+    assert_eq!(rotor.system().functions().len(), functions + 1);
+
+    // Variables built knowing the name: the function is taken, and the product spaced.
+    let vars = VarSet::builder()
+        .coordinate("x")
+        .momentum("p_x")
+        .parameter("k")
+        .also_named(["kx"])
+        .build()
+        .unwrap();
+    let space = PhaseSpace::new(&vars, &[("x", "p_x")]).unwrap();
+    let h = Expr::parse(&vars, "p_x^2/2 + k^2*x^2/2").unwrap();
+    let mut oscillator = LoadedSystem::of_system(System::new("oscillator", space, h));
+    oscillator.add_function("kx", "kx", "k*x").unwrap();
+    let report = expand_report(&oscillator, &["kx".to_string()], None).unwrap();
+    let text = render(&report, Format::Text, &RenderOptions { timings: false });
+    assert!(text.contains("kx = k x"), "{text}");
+
+    // A loaded file: its own functions print spaced; a new one is told to go in the file.
+    let mut file = harmonic_rotor_file();
+    let err = file.add_function("Mx", "Mx", "M*x").unwrap_err();
+    assert!(
+        err.message
+            .ends_with("declare the function in the file, whose products are then printed spaced"),
+        "{err}"
+    );
+    let err = file.add_function("F_1", "F_1", "x").unwrap_err();
+    assert_eq!(
+        err.message,
+        "the function F_1 would print as F_{1} in LaTeX, as the function F1 does: rename one, \
+         or give it another display"
+    );
+    let families = file.families().len();
+    let err = file
+        .add_family("T", "K", ["m", "n"], "Z^m*Zbar^n", None)
+        .unwrap_err();
+    assert_eq!(
+        (err.kind, err.origin.as_str(), err.message.as_str()),
+        (
+            ErrorKind::Name,
+            "<family T>",
+            "the family T would show its instances as K_{m,n}, as the family K does: rename \
+             one, or give it another display"
+        )
+    );
+    assert_eq!(file.families().len(), families);
+}
+
+/// A file's families are checked as those added in code are: a family whose instances would
+/// print as another's (`T` shown as `K`, both `K_{m,n}`; `K1` and `K₁`, both `K_{1;m,n}` in
+/// LaTeX) is refused at its display or name.
+#[test]
+fn a_files_families_print_apart() {
+    let text = "hamiltonian = \"p_x^2/2\"\n[phase_space]\ncoordinates = [\"x\"]\n\
+                [[family]]\nname = \"K\"\nvalue = \"x^m*p_x^n\"\n\
+                [[family]]\nname = \"T\"\ndisplay = \"K\"\nvalue = \"p_x^m*x^n\"\n";
+    let err = load_system_text("two.toml", text, &LimitsOverride::default()).unwrap_err();
+    assert_eq!(
+        err.to_string(),
+        "two.toml:9:11: the family T would show its instances as K_{m,n}, as the family K on \
+         line 5 does: rename one, or give it another display\n 9 | display = \"K\"\n   |           ^^^"
+    );
+    let text = text
+        .replace("display = \"K\"\n", "")
+        .replace("\"T\"", "\"K₁\"");
+    let text = text.replace("name = \"K\"", "name = \"K1\"");
+    let err = load_system_text("two.toml", &text, &LimitsOverride::default()).unwrap_err();
+    assert_eq!(
+        err.to_string().lines().next(),
+        Some(
+            "two.toml:8:8: the family K₁ would print its instances in LaTeX as K_{1} with their \
+             indices, as the family K1 on line 5 does: rename one, or give it another display"
+        )
+    );
+}
