@@ -531,45 +531,7 @@ impl PrintedNames {
         display: &str,
         line: Option<usize>,
     ) -> Result<(), String> {
-        let Some((text, latex)) = display_forms(display) else {
-            return Ok(());
-        };
-        // No function's display has braces: these keys are the families' alone.
-        let forms = [
-            (Notation::Text, format!("{text}_{{m,n}}")),
-            (Notation::Latex, format!("{latex}_{{m,n}}")),
-        ];
-        self.take(whose, forms, line)
-            .map_err(|(key, other)| match key {
-                (Notation::Text, form) => {
-                    format!("{whose} would show its instances as {form}, as {other} does")
-                }
-                (Notation::Latex, form) => format!(
-                    "{whose} would print its instances in LaTeX as {} with their indices, as \
-                 {other} does",
-                    form.trim_end_matches("_{m,n}")
-                ),
-            })
-    }
-
-    /// Takes `forms` for `whose`, declared on `line` if it has one, unless a name already has
-    /// one of them: then that form, and whose it is and where (`the function A on line 9`).
-    fn take(
-        &mut self,
-        whose: &str,
-        forms: [(Notation, String); 2],
-        line: Option<usize>,
-    ) -> Result<(), ((Notation, String), String)> {
-        for key in &forms {
-            if let Some((other, at)) = self.forms.get(key) {
-                let place = at.map(|l| format!(" on line {l}")).unwrap_or_default();
-                return Err((key.clone(), format!("{other}{place}")));
-            }
-        }
-        for key in forms {
-            self.forms.insert(key, (whose.to_string(), line));
-        }
-        Ok(())
+        self.admit_forms(whose, display, line, "_{m,n}")
     }
 
     /// Takes the forms of `display`, `whose` they are, declared on `line` if it has one, unless
@@ -581,17 +543,45 @@ impl PrintedNames {
         display: &str,
         line: Option<usize>,
     ) -> Result<(), String> {
+        self.admit_forms(whose, display, line, "")
+    }
+
+    /// Takes the forms of `display` followed by `indices` (a family's instances; no
+    /// function's display has braces, so that those forms are the families' alone), `whose`
+    /// they are, declared on `line` if it has one, unless a name already has one of them: then
+    /// why, in words.
+    fn admit_forms(
+        &mut self,
+        whose: &str,
+        display: &str,
+        line: Option<usize>,
+        indices: &str,
+    ) -> Result<(), String> {
         let Some((text, latex)) = display_forms(display) else {
             return Ok(());
         };
-        let forms = [(Notation::Text, text), (Notation::Latex, latex)];
-        self.take(whose, forms, line).map_err(|(key, other)| {
-            let how = match key {
-                (Notation::Text, form) => format!("show as {form}"),
-                (Notation::Latex, form) => format!("print as {form} in LaTeX"),
-            };
-            format!("{whose} would {how}, as {other} does")
-        })
+        let forms = [
+            (Notation::Text, format!("{text}{indices}")),
+            (Notation::Latex, format!("{latex}{indices}")),
+        ];
+        for key in &forms {
+            if let Some((other, at)) = self.forms.get(key) {
+                let place = at.map(|l| format!(" on line {l}")).unwrap_or_default();
+                let how = match (key, indices.is_empty()) {
+                    ((Notation::Text, form), true) => format!("show as {form}"),
+                    ((Notation::Latex, form), true) => format!("print as {form} in LaTeX"),
+                    ((Notation::Text, form), false) => format!("show its instances as {form}"),
+                    ((Notation::Latex, _), false) => {
+                        format!("print its instances in LaTeX as {latex} with their indices")
+                    }
+                };
+                return Err(format!("{whose} would {how}, as {other}{place} does"));
+            }
+        }
+        for key in forms {
+            self.forms.insert(key, (whose.to_string(), line));
+        }
+        Ok(())
     }
 }
 

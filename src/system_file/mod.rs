@@ -161,10 +161,10 @@ pub struct LoadedSystem {
 ///
 /// let rotor = load("systems/harmonic-rotor.toml".as_ref(), &LimitsOverride::default())?;
 /// let err = bracket_report(&rotor, "L", "G3", None).unwrap_err();
-/// assert_eq!(err.to_string().lines().next(), Some("<expression>:1:1: unknown name 'G3'"));
+/// assert!(err.to_string().starts_with("<expression>:1:1: unknown name 'G3'"));
 /// let rotor = rotor.with_caller(Caller::CommandLine);
 /// let err = bracket_report(&rotor, "L", "G3", None).unwrap_err();
-/// assert_eq!(err.to_string().lines().next(), Some("<command line>:1:1: unknown name 'G3'"));
+/// assert!(err.to_string().starts_with("<command line>:1:1: unknown name 'G3'"));
 /// # Ok::<(), superint::system_file::FileError>(())
 /// ```
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]

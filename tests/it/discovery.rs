@@ -694,7 +694,7 @@ fn henon_heiles_kdv_integral_for_every_a_and_b() {
         .fix(var("C"), Rational::from(2))
         .symbolic(var("A"))
         .symbolic(var("B"));
-    let r = search(&file.system(), &options).expect("the search runs");
+    let r = search(file.system(), &options).expect("the search runs");
     let generators: Vec<&Expr> = r
         .module
         .as_ref()
@@ -821,14 +821,14 @@ fn a_parameter_set_by_the_condition_is_not_fixed_first() {
         .symbolic(var("B"));
     let two = || Expr::constant(vars, trigpoly::GaussianRational::from(2));
     let by_condition = search(
-        &file.system(),
+        file.system(),
         &symbolic
             .clone()
             .when(brackets::Condition::new("C = 2", var("C"), two())),
     )
     .expect("the search runs");
-    let by_value = search(&file.system(), &symbolic.fix(var("C"), Rational::from(2)))
-        .expect("the search runs");
+    let by_value =
+        search(file.system(), &symbolic.fix(var("C"), Rational::from(2))).expect("the search runs");
     let generators = |r: &brackets::search::SearchResult| -> Vec<String> {
         let module = r.module.as_ref().expect("parameters kept symbolic");
         module
@@ -1704,7 +1704,7 @@ fn new_or_generated(
     file: &superint::system_file::LoadedSystem,
     space: SearchSpace,
 ) -> Vec<(Expr, bool)> {
-    let found = search(&file.system(), &SearchOptions::new(space).new_only()).expect("searches");
+    let found = search(file.system(), &SearchOptions::new(space).new_only()).expect("searches");
     let new = found.new.expect("--new-only").new;
     (found.basis.iter().enumerate())
         .map(|(i, f)| (f.expr().clone(), new.contains(&i)))

@@ -32,6 +32,21 @@ fn own_rotor() -> LoadedSystem {
     rotor
 }
 
+/// [`own_rotor`] with the family `R_{a,b} = A^a e^{−ibφ}`, `{R_{a,b}, H} = i(ak − bΩ) R_{a,b}`.
+fn own_rotor_with_tower() -> LoadedSystem {
+    let mut rotor = own_rotor();
+    rotor
+        .add_family(
+            "R",
+            "R",
+            ["a", "b"],
+            "A^a*exp(-i*b*phi)",
+            Some("i*(a*k - b*Omega)"),
+        )
+        .unwrap();
+    rotor
+}
+
 fn harmonic_rotor_file() -> LoadedSystem {
     let path = concat!(env!("CARGO_MANIFEST_DIR"), "/systems/harmonic-rotor.toml");
     load_system_file(path.as_ref(), &LimitsOverride::default()).unwrap()
@@ -43,16 +58,7 @@ fn harmonic_rotor_file() -> LoadedSystem {
 /// proved.
 #[test]
 fn family_tower_in_own_names() {
-    let mut rotor = own_rotor();
-    rotor
-        .add_family(
-            "R",
-            "R",
-            ["a", "b"],
-            "A^a*exp(-i*b*phi)",
-            Some("i*(a*k - b*Omega)"),
-        )
-        .unwrap();
+    let mut rotor = own_rotor_with_tower();
     rotor
         .add_family(
             "S",
@@ -414,16 +420,7 @@ fn messages_to_a_program_name_the_library() {
 /// the same result.
 #[test]
 fn a_tower_takes_progress_only_when_asked() {
-    let mut rotor = own_rotor();
-    rotor
-        .add_family(
-            "R",
-            "R",
-            ["a", "b"],
-            "A^a*exp(-i*b*phi)",
-            Some("i*(a*k - b*Omega)"),
-        )
-        .unwrap();
+    let rotor = own_rotor_with_tower();
     let quiet = family_tower_report(&rotor, Some("R"), 2, None).unwrap();
     let mut seen = Vec::new();
     let watched = family_tower_report_with_progress(&rotor, Some("R"), 2, None, &mut |d, t| {
@@ -480,16 +477,7 @@ fn report_errors_name_the_program_not_the_command_line() {
     let bare = LoadedSystem::of_system(System::new("free particle", space, h));
     let err = table_report(&bare, &[] as &[&str]).unwrap_err();
     assert!(cli_words(&err).contains("table_report(&system"), "{err}");
-    let mut towered = own_rotor();
-    towered
-        .add_family(
-            "R",
-            "R",
-            ["a", "b"],
-            "A^a*exp(-i*b*phi)",
-            Some("i*(a*k - b*Omega)"),
-        )
-        .unwrap();
+    let towered = own_rotor_with_tower();
     let on_phase_space = towered.condition("p_phi = J*k").unwrap();
     let err = family_tower_report(&towered, Some("R"), 2, Some(&on_phase_space)).unwrap_err();
     assert_eq!(err.origin, "<condition>");
