@@ -12,7 +12,7 @@ fn main() -> Result<(), FileError> {
     let report = check_report([&rotor])?;
     println!(
         "{}: {} claims, all as expected: {}",
-        rotor.name,
+        rotor.name(),
         report.claims().len(),
         report.all_as_expected()
     );
@@ -23,7 +23,7 @@ fn main() -> Result<(), FileError> {
     rotor.add_claim("casimir", "C = (F1 - F2)^2", None)?;
     rotor.add_claim("number", "{N_{1,1}, H} = 0", None)?;
     rotor.add_claim("rank", "rank(F1, F2, L, C) = 3", None)?;
-    for spec in &rotor.claims[rotor.claims.len() - 3..] {
+    for spec in &rotor.claims()[rotor.claims().len() - 3..] {
         let checked = rotor.check_claim(spec)?;
         let result = checked.result();
         println!(
@@ -31,7 +31,7 @@ fn main() -> Result<(), FileError> {
             result.id, result.statement, result.proved
         );
     }
-    let tower = family_tower_report(&rotor, Some("N"), 4, None, &mut |_, _| {})?;
+    let tower = family_tower_report(&rotor, Some("N"), 4, None)?;
     println!("{}", tower.summary_line(false));
 
     // A slip: the error says where, in the text given.

@@ -56,7 +56,7 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
         render(&claims, Format::Text, &RenderOptions { timings: false })
     );
 
-    let tower = family_tower_report(&rotor, Some("R"), 3, None, &mut |_, _| {})?;
+    let tower = family_tower_report(&rotor, Some("R"), 3, None)?;
     let checked = tower.tower().expect("a tower job has its tower");
     let proof = tower.proof().expect("R is a product of powers");
     println!(

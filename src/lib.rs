@@ -73,14 +73,17 @@ pub mod prelude {
     pub use brackets::systems::Resonant;
 
     pub use crate::discovery::{closure_report, search_report};
-    pub use crate::paper::{tower_report, Paper, PaperOptions, TowerSystem};
+    pub use crate::paper::{
+        tower_report, tower_report_with_progress, Paper, PaperOptions, TowerSystem,
+    };
     pub use crate::render::{render, Format, Options as RenderOptions};
     pub use crate::report::{
         ClaimResult, Expect, ProofResult, RankResult, Report, TableResult, TowerResult,
     };
     pub use crate::system_file::{
-        bracket_report, check_report, expand_report, family_tower_report, load as load_system_file,
-        load_str as load_system_text, rank_report, table_report, CheckedClaim, ClaimSpec,
-        ErrorKind, Family, FileError, LimitsOverride, LoadedSystem, Location,
+        bracket_report, check_report, expand_report, family_tower_report,
+        family_tower_report_with_progress, load as load_system_file, load_str as load_system_text,
+        rank_report, table_report, Caller, CheckedClaim, ClaimSpec, ErrorKind, Family, FileError,
+        LimitsOverride, LoadedSystem, Location,
     };
 }

@@ -657,7 +657,7 @@ impl Report {
     /// use superint::system_file::{family_tower_report, load, LimitsOverride};
     ///
     /// let rotor = load("systems/harmonic-rotor.toml".as_ref(), &LimitsOverride::default())?;
-    /// let report = family_tower_report(&rotor, Some("K"), 2, None, &mut |_, _| {})?;
+    /// let report = family_tower_report(&rotor, Some("K"), 2, None)?;
     /// let proof = report.proof().expect("K_{m,n} = Z^m e^{−inθ} is a product of powers");
     /// assert!(proof.holds());
     /// assert_eq!(proof.facts[0].statement, "{Z, H} = (iω) Z");

@@ -9,6 +9,7 @@ use brackets::NamedFunction;
 use clap::Args;
 use superint::discovery::{closure_report, parse_symbolic};
 use superint::render::render;
+use superint::system_file::PrintedNames;
 
 use super::limits::LimitsArgs;
 use super::output::{emit, Output};
@@ -111,6 +112,8 @@ pub fn run(job: &ClosureJob) -> anyhow::Result<bool> {
     let subject = Subject::open(file.as_ref(), a.system.as_deref(), true, &a.limits)?;
     let mut generators = Vec::new();
     let mut defined = Vec::new();
+    // How the system's names print, and then each generator defined so far.
+    let mut printed = PrintedNames::of(subject.system());
     for d in &a.define {
         let (name, value) = d
             .split_once('=')
@@ -120,6 +123,9 @@ pub fn run(job: &ClosureJob) -> anyhow::Result<bool> {
         if defined.iter().any(|(n, _)| n == name) {
             bail!("--define gives {name} twice");
         }
+        printed
+            .admit(&format!("the generator {name}"), name, name)
+            .map_err(|why| anyhow!("--define {name}: {why}; choose another name"))?;
         let e = subject
             .parse(value.trim())
             .map_err(|e| anyhow!("--define {name}: {e}"))?;

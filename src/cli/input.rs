@@ -5,13 +5,21 @@ use std::io::Read;
 use std::path::Path;
 use std::sync::OnceLock;
 
-use superint::system_file::{load, load_bytes, ErrorKind, FileError, LimitsOverride, LoadedSystem};
+use superint::system_file::{
+    load, load_bytes, Caller, ErrorKind, FileError, LimitsOverride, LoadedSystem,
+};
 
 /// How messages name a system file read from standard input.
 const STDIN: &str = "<stdin>";
 
-/// Loads the system file at `path`, or the one on standard input when `path` is `-`.
+/// Loads the system file at `path`, or the one on standard input when `path` is `-`, whose
+/// reports name the command line as the giver of their texts ([`Caller::CommandLine`]).
 pub fn load_system(path: &Path, limits: &LimitsOverride) -> Result<LoadedSystem, FileError> {
+    load_file(path, limits).map(|file| file.with_caller(Caller::CommandLine))
+}
+
+/// Loads the system file at `path`, or the one on standard input when `path` is `-`.
+fn load_file(path: &Path, limits: &LimitsOverride) -> Result<LoadedSystem, FileError> {
     if path != Path::new("-") {
         return load(path, limits);
     }

@@ -247,7 +247,7 @@ pub fn run(job: &PlotJob) -> anyhow::Result<bool> {
         section: args.section.as_deref(),
     };
     let input = file.plot_input(args.at.as_deref(), &args.from, functions)?;
-    let flow = Flow::new(file.system.space(), &input.hamiltonian)
+    let flow = Flow::new(file.system().space(), &input.hamiltonian)
         .context("Hamilton's equations at these values")?
         .with_method(args.method.method());
     let function = |label: &str, f: &trigpoly::Expr| -> anyhow::Result<Function> {
@@ -290,11 +290,11 @@ pub fn run(job: &PlotJob) -> anyhow::Result<bool> {
         } else {
             String::new()
         };
-        let mut start = vec![0.0; file.system.vars().len()];
+        let mut start = vec![0.0; file.system().vars().len()];
         for (v, value) in point {
-            let angle = file.system.vars().variable(*v).kind() == VarKind::Angle;
+            let angle = file.system().vars().variable(*v).kind() == VarKind::Angle;
             start[v.index()] = value.to_f64(angle).with_context(|| {
-                let name = file.system.vars().variable(*v).unicode();
+                let name = file.system().vars().variable(*v).unicode();
                 format!("the starting value of {name}{mark}")
             })?;
         }
@@ -354,8 +354,8 @@ pub fn run(job: &PlotJob) -> anyhow::Result<bool> {
         });
     }
     let title = match input.parameters.as_str() {
-        "" => file.name.clone(),
-        p => format!("{} at {p}", file.name),
+        "" => file.name().to_string(),
+        p => format!("{} at {p}", file.name()),
     };
     let style = match section {
         Some(_) => Style::Dots,

@@ -173,21 +173,21 @@ impl Subject {
     /// The report `report` about this subject: about its file, if it is one.
     pub fn tag(&self, report: Report) -> Report {
         match self {
-            Subject::File(f) => report.about_file(&f.source.origin),
+            Subject::File(f) => report.about_file(&f.source().origin),
             Subject::Builtin(..) => report,
         }
     }
 
     pub fn system(&self) -> &System {
         match self {
-            Subject::File(f) => &f.system,
+            Subject::File(f) => f.system(),
             Subject::Builtin(_, s) => s,
         }
     }
 
     pub fn name(&self) -> &str {
         match self {
-            Subject::File(f) => &f.name,
+            Subject::File(f) => f.name(),
             Subject::Builtin(n, _) => n,
         }
     }

@@ -9,9 +9,9 @@ use super::input::load_system;
 use anyhow::Context;
 use clap::Args;
 use indicatif::{ProgressBar, ProgressStyle};
-use superint::paper::{tower_report, TowerSystem};
+use superint::paper::{tower_report_with_progress, TowerSystem};
 use superint::render::render;
-use superint::system_file::{family_tower_report, LimitsOverride};
+use superint::system_file::{family_tower_report_with_progress, LimitsOverride};
 
 use super::limits::LimitsArgs;
 use super::output::{emit, Output};
@@ -128,12 +128,13 @@ pub fn run(job: &TowerJob) -> anyhow::Result<bool> {
                      --system FILE"
                 );
             }
-            tower_report(*system, job.max, &mut progress).context("checking the tower")?
+            tower_report_with_progress(*system, job.max, &mut progress)
+                .context("checking the tower")?
         }
         SystemArg::File(path) => {
             let file = load_system(path, &job.limits.unwrap_or_default())?;
             let when = job.when.as_deref().map(|w| file.condition(w)).transpose()?;
-            family_tower_report(
+            family_tower_report_with_progress(
                 &file,
                 job.family.as_deref(),
                 job.max,

@@ -206,8 +206,22 @@ pub enum TowerSystem {
 }
 
 /// The tower job: `{K_{m,n}, H} = i(mω − nΩ) K_{m,n}` by expansion for `1 ≤ m, n ≤ max`, and
-/// the all-`m, n` proof; `progress(done, total)` is called after each bracket.
-pub fn tower_report(
+/// the all-`m, n` proof ([`tower_report_with_progress`] reports each bracket as it is done).
+///
+/// ```
+/// use superint::paper::{tower_report, TowerSystem};
+///
+/// let report = tower_report(TowerSystem::Harmonic, 2)?;
+/// assert!(report.all_proved());
+/// # Ok::<(), superint::brackets::EngineError>(())
+/// ```
+pub fn tower_report(which: TowerSystem, max: i64) -> Result<Report, EngineError> {
+    tower_report_with_progress(which, max, &mut |_, _| {})
+}
+
+/// [`tower_report`], calling `progress(done, total)` after each bracket (the command line's
+/// progress bar).
+pub fn tower_report_with_progress(
     which: TowerSystem,
     max: i64,
     progress: &mut dyn FnMut(usize, usize),

@@ -103,7 +103,7 @@ pub(crate) fn engine_error(source: &Source, span: Range<usize>, e: &EngineError)
 ///
 /// fn rank_of_rotor(names: &[&str]) -> Result<usize, FileError> {
 ///     let rotor = load_system_file("systems/harmonic-rotor.toml".as_ref(), &LimitsOverride::default())?;
-///     Ok(rotor.system.rank(names)?.rank)
+///     Ok(rotor.system().rank(names)?.rank)
 /// }
 /// assert_eq!(rank_of_rotor(&["F1", "F2", "L"]).unwrap(), 3);
 /// let err = rank_of_rotor(&["F1", "nope"]).unwrap_err();
@@ -126,6 +126,8 @@ impl From<EngineError> for FileError {
                 error.span.start..error.span.end,
                 error.message,
             ),
+            // Located by its own excerpt when it knows its source.
+            EngineError::Parse { error, .. } if error.excerpt().is_some() => error.into(),
             EngineError::Parse { message, .. } => {
                 FileError::new(ErrorKind::Expression, expression, message)
             }

@@ -8,7 +8,7 @@ use trigpoly::Expr;
 
 use super::claims::ClaimSpec;
 use super::error::{ErrorKind, FileError};
-use super::load::{check_display, index_refusal, BadName};
+use super::load::{check_display, index_refusal, BadName, PrintedNames, Refusal};
 use super::text::{Source, Text};
 use super::{Family, LoadedSystem};
 use crate::report::Expect;
@@ -37,7 +37,10 @@ impl LoadedSystem {
     /// Adds a named function, as a `[[function]]` of the file declares one; `value` may use
     /// the variables, `H`, the functions and the family instances. A name that the system
     /// already has (a variable in any spelling, a function, a family), a reserved or malformed
-    /// name, or a display name that would not print is refused, and the system is unchanged.
+    /// name, a display name that would not print, or one that would print as another name of
+    /// the system does, in text or in LaTeX (`F_1` beside `F1`, both `F_{1}`), or as a product
+    /// of its variables (`Mx` beside `M` and `x`) is refused ([`PrintedNames`]), and the system
+    /// is unchanged.
     ///
     /// ```
     /// use superint::system_file::{load, ErrorKind, LimitsOverride};
@@ -59,6 +62,7 @@ impl LoadedSystem {
         let origin = format!("<function {name}>");
         self.check_new_name(&origin, name, "a function")?;
         check_display_in(&origin, display)?;
+        self.check_printed_apart(&origin, name, display)?;
         let source = Source::program(&origin, value);
         let value = self
             .scope(self.families.len())
@@ -72,8 +76,10 @@ impl LoadedSystem {
     /// `eigenvalue`, if given, is `λ` in `{name_{m,n}, H} = λ(m, n) name_{m,n}`, which
     /// [`family_tower_report`](super::family_tower_report) checks for `1 ≤ m, n ≤ N` and proves
     /// for all `m, n`. The value and the eigenvalue are read at `(1, 1)` at once; an error there,
-    /// or a name already taken, leaves the system unchanged. Errors in the value are at line 1
-    /// of `<family NAME>`, in the eigenvalue at line 2.
+    /// or a name already taken, leaves the system unchanged; so does a display whose instances
+    /// would print as another family's do (`T` shown as `K` beside a family `K`: both
+    /// `K_{1,1}`). Errors in the value are at line 1 of `<family NAME>`, in the eigenvalue at
+    /// line 2.
     ///
     /// ```
     /// use superint::prelude::*;
@@ -89,7 +95,7 @@ impl LoadedSystem {
     /// oscillator.add_function("B", "B", "p_y - i*k*y")?;
     /// // {A^a B^b, H} = i(a − b)k A^a B^b: conserved on the diagonal a = b.
     /// oscillator.add_family("T", "T", ["a", "b"], "A^a*B^b", Some("i*(a - b)*k"))?;
-    /// let report = family_tower_report(&oscillator, Some("T"), 3, None, &mut |_, _| {})?;
+    /// let report = family_tower_report(&oscillator, Some("T"), 3, None)?;
     /// assert!(report.all_proved());
     /// assert_eq!(report.tower().map(|t| t.checked), Some(9));
     /// assert!(report.proof().is_some_and(|p| p.holds()));
@@ -106,6 +112,11 @@ impl LoadedSystem {
         let origin = format!("<family {name}>");
         self.check_new_name(&origin, name, "a family")?;
         check_display_in(&origin, display)?;
+        let whose = format!("the family {name}");
+        if let Err(why) = PrintedNames::of_loaded(self).admit_family(&whose, display, None) {
+            let message = format!("{why}: rename one, or give it another display");
+            return Err(FileError::new(ErrorKind::Name, &origin, message));
+        }
         if let Some((_, kind, message)) = index_refusal(indices, |idx| self.what_is(idx)) {
             return Err(FileError::new(kind, &origin, message));
         }
@@ -196,6 +207,30 @@ impl LoadedSystem {
             return Ok(());
         };
         Err(FileError::new(ErrorKind::Name, origin, message))
+    }
+
+    /// Refuses a new function `name` shown as `display` that would print as something else of
+    /// the system ([`PrintedNames::admit`]), as a file's function is refused.
+    fn check_printed_apart(
+        &self,
+        origin: &str,
+        name: &str,
+        display: &str,
+    ) -> Result<(), FileError> {
+        let whose = format!("the function {name}");
+        let advice = match PrintedNames::of_loaded(self).admit(&whose, name, display) {
+            Ok(()) => return Ok(()),
+            Err(Refusal::Alike(why)) => format!("{why}: rename one, or give it another display"),
+            Err(Refusal::Product(why)) if self.source.program => format!(
+                "{why}: choose another name, or give it to the variables when they are built \
+                 (VarSetBuilder::also_named), which has such products printed spaced"
+            ),
+            Err(Refusal::Product(why)) => format!(
+                "{why}: choose another name, or declare the function in the file, whose \
+                 products are then printed spaced"
+            ),
+        };
+        Err(FileError::new(ErrorKind::Name, origin, advice))
     }
 
     /// Drops the cached instances of family `k` (a family that was refused).

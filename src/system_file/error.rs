@@ -1,5 +1,5 @@
-//! [`FileError`]: what is wrong with a system file (or an expression on the command line),
-//! where, and what to do about it, rendered as
+//! [`FileError`]: what is wrong with a system file (or a text given to it, by a program or on
+//! the command line), where, and what to do about it, rendered as
 //!
 //! ```text
 //! systems/mine.toml:12:21: unknown name 'G3' (known: x, y, …)
@@ -85,13 +85,15 @@ pub struct Location {
     width: usize,
 }
 
-/// A problem with a system file or a command-line expression: kind, origin (the file's path,
-/// or `<command line>`), location, message and an optional hint.
+/// A problem with a system file or a text given to it: kind, origin (the file's path; a text a
+/// program gave, `<expression>`, `<condition>`, `<function NAME>`, ...; `<command line>` for
+/// the command line's), location, message and an optional hint.
 #[derive(Clone, Debug, PartialEq, Eq, thiserror::Error)]
 pub struct FileError {
     /// What kind of problem it is.
     pub kind: ErrorKind,
-    /// The file's path as given, or `<command line>`.
+    /// The file's path as given, or the name of the text at fault (`<expression>`,
+    /// `<command line>`, ...).
     pub origin: String,
     /// Where, when the problem has a place in the text.
     pub location: Option<Box<Location>>,
@@ -176,13 +178,48 @@ pub(crate) fn locate(text: &str, span: Range<usize>) -> Location {
         0
     };
     let shift = |at: usize| at.saturating_sub(bom);
-    let excerpt = Excerpt::of(&text[bom..], Span::new(shift(span.start), shift(span.end)));
-    Location {
-        line: excerpt.line,
-        column: excerpt.column,
-        excerpt: excerpt.text,
-        pad: excerpt.pad,
-        width: excerpt.width,
+    Location::from(Excerpt::of(
+        &text[bom..],
+        Span::new(shift(span.start), shift(span.end)),
+    ))
+}
+
+/// The place an excerpt shows, as a file's error shows it.
+impl From<Excerpt> for Location {
+    fn from(excerpt: Excerpt) -> Self {
+        Location {
+            line: excerpt.line,
+            column: excerpt.column,
+            excerpt: excerpt.text,
+            pad: excerpt.pad,
+            width: excerpt.width,
+        }
+    }
+}
+
+/// A parse error of the ring's own parser ([`trigpoly::Expr::parse`]), so that `?` takes it
+/// into a `FileError`: of kind [`ErrorKind::Expression`], from `<expression>`, at its line and
+/// column with the line and a caret when it knows its source (every error of
+/// `Expr::parse` does).
+///
+/// ```
+/// use superint::prelude::*;
+///
+/// fn energy(vars: &Vars, text: &str) -> Result<Expr, FileError> {
+///     Ok(Expr::parse(vars, text)?)
+/// }
+/// let vars = VarSet::builder().coordinate("x").momentum("p_x").build().unwrap();
+/// let err = energy(&vars, "p_x^2/2 +\n x^^2").unwrap_err();
+/// assert_eq!((err.kind, err.line_col()), (ErrorKind::Expression, Some((2, 4))));
+/// assert!(err.to_string().starts_with("<expression>:2:4: "), "{err}");
+/// assert!(err.to_string().contains("\n 2 |  x^^2\n   |    ^"), "{err}");
+/// ```
+impl From<trigpoly::ParseError> for FileError {
+    fn from(e: trigpoly::ParseError) -> Self {
+        FileError {
+            location: e.excerpt().map(|x| Box::new(Location::from(x.clone()))),
+            ..FileError::new(ErrorKind::Expression, "<expression>", e.message)
+        }
     }
 }
 

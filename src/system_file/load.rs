@@ -11,7 +11,7 @@ use brackets::{EngineError, PhaseSpace, System};
 use toml::Spanned;
 use trigpoly::{
     display_forms, is_identifier, latex_unwritable, unbarred, AlgebraError, Expr, Limits, Span,
-    Var, VarSet, LATEX_LETTERS, RESERVED,
+    Var, VarSet, Vars, LATEX_LETTERS, RESERVED,
 };
 
 use super::claims::ClaimSpec;
@@ -398,9 +398,8 @@ struct Builder<'a> {
     limits: &'a LimitsOverride,
     /// Every declared name: what it is (`an angle`) and where.
     names: HashMap<String, (&'static str, Range<usize>)>,
-    /// How each variable and function is printed, in text and in LaTeX: whose form it is
-    /// (`the function Gx`) and, for a function, the line of its name or display.
-    shown: HashMap<(Notation, String), (String, Option<usize>)>,
+    /// How each variable and function is printed, in text and in LaTeX.
+    shown: PrintedNames,
 }
 
 /// A notation a name is printed in.
@@ -408,6 +407,182 @@ struct Builder<'a> {
 enum Notation {
     Text,
     Latex,
+}
+
+/// Why [`PrintedNames::admit`] refuses a new name, in words (its `Display`).
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub enum Refusal {
+    /// The printer writes a product of one-letter variables as the name (`Mx` for `M x`),
+    /// which would read back as the function.
+    Product(String),
+    /// The name's display prints, in text or in LaTeX, as another name of the system does.
+    Alike(String),
+}
+
+impl std::fmt::Display for Refusal {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        match self {
+            Refusal::Product(why) | Refusal::Alike(why) => f.write_str(why),
+        }
+    }
+}
+
+/// How the names of a system print, in text and in LaTeX, so that a new function (of a file,
+/// of a program, or a generator given on the command line) that would print as one of them
+/// is refused ([`PrintedNames::admit`]): its tables and equations would show two things alike
+/// (`G_1` and a parameter `G1`, both `G_{1}` in LaTeX; a function `B` shown as `A` beside a
+/// function `A`), or a product would print as its name (`Mx` beside `M` and `x`). The loader
+/// checks a file's functions so, [`LoadedSystem::add_function`] a program's, and the command
+/// line its `--define`d generators.
+///
+/// ```
+/// use superint::system_file::{PrintedNames, Refusal};
+///
+/// let rotor = superint::brackets::systems::harmonic_rotor();
+/// let mut printed = PrintedNames::of(&rotor);
+/// assert_eq!(
+///     printed.admit("the function F_1", "F_1", "F_1").unwrap_err().to_string(),
+///     "the function F_1 would print as F_{1} in LaTeX, as the function F1 does"
+/// );
+/// let product = printed.admit("the function Mx", "Mx", "Mx").unwrap_err();
+/// assert!(matches!(product, Refusal::Product(_)), "{product}");
+/// assert!(printed.admit("the function C", "C", "C").is_ok());
+/// assert!(matches!(printed.admit("the function D", "D", "C"), Err(Refusal::Alike(_))));
+/// ```
+#[derive(Clone, Debug, Default)]
+pub struct PrintedNames {
+    /// For each form, whose it is (`the parameter M1`, `the function Gx`) and, for a file's
+    /// function, the line of its name or display.
+    forms: HashMap<(Notation, String), (String, Option<usize>)>,
+    /// The variables whose products the printer writes side by side, when their set was built
+    /// without the new names (not a file's, whose set names its functions).
+    vars: Option<Vars>,
+}
+
+impl PrintedNames {
+    /// The forms of the variables of `vars`.
+    fn of_variables(vars: &VarSet) -> Self {
+        let mut printed = PrintedNames::default();
+        for v in vars.vars() {
+            let v = vars.variable(v);
+            // `a coordinate` → `the coordinate x1`.
+            let kind = v.kind().described().split_once(' ').map_or("", |k| k.1);
+            let whose = format!("the {kind} {}", v.name());
+            for form in [(Notation::Text, v.unicode()), (Notation::Latex, v.latex())] {
+                printed
+                    .forms
+                    .insert((form.0, form.1.to_string()), (whose.clone(), None));
+            }
+        }
+        printed
+    }
+
+    /// How the variables and the named functions of `system` print.
+    pub fn of(system: &System) -> Self {
+        let mut printed = PrintedNames::of_variables(system.vars());
+        for f in system.functions() {
+            let whose = format!("the function {}", f.name);
+            // Each function was admitted beside the others: none is refused here.
+            let _ = printed.admit_display(&whose, &f.display, None);
+        }
+        printed.vars = Some(system.vars().clone());
+        printed
+    }
+
+    /// Takes a new function `name` shown as `display`, `whose` it is (`the function Gx`, `the
+    /// generator C`), unless the printer could write one of them for a product of one-letter
+    /// variables ([`VarSet::juxtaposition_spells`]), or `display` prints, in text or in LaTeX,
+    /// as a name already taken: then why, in words (`the function B would show as A, as the
+    /// function A does`), to which each caller adds what to do.
+    pub fn admit(&mut self, whose: &str, name: &str, display: &str) -> Result<(), Refusal> {
+        if let Some(vars) = &self.vars {
+            for written in [name, display] {
+                let text = display_forms(written).map_or_else(|| written.to_string(), |f| f.0);
+                if vars.juxtaposition_spells(&text) {
+                    let letters: Vec<String> = text.chars().map(String::from).collect();
+                    return Err(Refusal::Product(format!(
+                        "{whose} would read back from the product {} of the variables, which \
+                         prints as {text}",
+                        letters.join(" ")
+                    )));
+                }
+            }
+        }
+        self.admit_display(whose, display, None)
+            .map_err(Refusal::Alike)
+    }
+
+    /// How the variables, the named functions and the families of `file` print.
+    pub(crate) fn of_loaded(file: &LoadedSystem) -> Self {
+        let mut printed = PrintedNames::of(&file.system);
+        for f in &file.families {
+            // Each family was admitted beside the others: none is refused here.
+            let _ = printed.admit_family(&format!("the family {}", f.name), &f.display, None);
+        }
+        printed
+    }
+
+    /// Takes a family shown as `display`, whose instances print as `display` with their
+    /// indices (`K_{2,3}`), unless another family's print so, in text or in LaTeX: then why
+    /// (`the family T would show its instances as K_{m,n}, as the family K does`).
+    pub(crate) fn admit_family(
+        &mut self,
+        whose: &str,
+        display: &str,
+        line: Option<usize>,
+    ) -> Result<(), String> {
+        self.admit_forms(whose, display, line, "_{m,n}")
+    }
+
+    /// Takes the forms of `display`, `whose` they are, declared on `line` if it has one, unless
+    /// a name already prints so: then why (`the function B would show as A, as the function A
+    /// on line 9 does`). A display without such forms (refused elsewhere) is taken as it is.
+    fn admit_display(
+        &mut self,
+        whose: &str,
+        display: &str,
+        line: Option<usize>,
+    ) -> Result<(), String> {
+        self.admit_forms(whose, display, line, "")
+    }
+
+    /// Takes the forms of `display` followed by `indices` (a family's instances; no
+    /// function's display has braces, so that those forms are the families' alone), `whose`
+    /// they are, declared on `line` if it has one, unless a name already has one of them: then
+    /// why, in words.
+    fn admit_forms(
+        &mut self,
+        whose: &str,
+        display: &str,
+        line: Option<usize>,
+        indices: &str,
+    ) -> Result<(), String> {
+        let Some((text, latex)) = display_forms(display) else {
+            return Ok(());
+        };
+        let forms = [
+            (Notation::Text, format!("{text}{indices}")),
+            (Notation::Latex, format!("{latex}{indices}")),
+        ];
+        for key in &forms {
+            if let Some((other, at)) = self.forms.get(key) {
+                let place = at.map(|l| format!(" on line {l}")).unwrap_or_default();
+                let how = match (key, indices.is_empty()) {
+                    ((Notation::Text, form), true) => format!("show as {form}"),
+                    ((Notation::Latex, form), true) => format!("print as {form} in LaTeX"),
+                    ((Notation::Text, form), false) => format!("show its instances as {form}"),
+                    ((Notation::Latex, _), false) => {
+                        format!("print its instances in LaTeX as {latex} with their indices")
+                    }
+                };
+                return Err(format!("{whose} would {how}, as {other}{place} does"));
+            }
+        }
+        for key in forms {
+            self.forms.insert(key, (whose.to_string(), line));
+        }
+        Ok(())
+    }
 }
 
 impl<'a> Builder<'a> {
@@ -426,41 +601,29 @@ impl<'a> Builder<'a> {
             source,
             limits,
             names: HashMap::new(),
-            shown: HashMap::new(),
+            shown: PrintedNames::default(),
         }
     }
 
     /// Refuses a function printed as a variable or an earlier function is, in text or in
     /// LaTeX (`Gx` shown as `G_x` and a function `G_x`; `G1` and `G_1`, both `G_{1}`): its
-    /// tables and equations would show two things alike.
+    /// tables and equations would show two things alike ([`PrintedNames`]).
     fn check_shown_apart(
         &mut self,
-        whose: String,
-        forms: [(Notation, String); 2],
+        whose: &str,
+        display: &str,
         span: Range<usize>,
     ) -> Result<(), FileError> {
-        for (notation, form) in &forms {
-            if let Some((other, line)) = self.shown.get(&(*notation, form.clone())) {
-                let place = line.map(|l| format!(" on line {l}")).unwrap_or_default();
-                let how = match notation {
-                    Notation::Text => format!("show as {form}"),
-                    Notation::Latex => format!("print as {form} in LaTeX"),
-                };
-                return Err(self.error(
+        let line = super::error::locate(&self.source.text, span.clone()).line;
+        self.shown
+            .admit_display(whose, display, Some(line))
+            .map_err(|why| {
+                self.error(
                     ErrorKind::Name,
                     span,
-                    format!(
-                        "{whose} would {how}, as {other}{place} does: rename one, or give it \
-                         another display"
-                    ),
-                ));
-            }
-        }
-        let line = super::error::locate(&self.source.text, span).line;
-        for key in forms {
-            self.shown.insert(key, (whose.clone(), Some(line)));
-        }
-        Ok(())
+                    format!("{why}: rename one, or give it another display"),
+                )
+            })
     }
 
     /// The phase space with the brackets of `[poisson]` declared: each key `"{a, b}"` names
@@ -748,16 +911,7 @@ impl<'a> Builder<'a> {
             .collect();
         let space = PhaseSpace::new(&vars, &pairs)
             .map_err(|e| self.error(ErrorKind::Name, span.clone(), e.to_string()))?;
-        for v in vars.vars() {
-            let v = vars.variable(v);
-            // `a coordinate` → `the coordinate x1`.
-            let kind = v.kind().described().split_once(' ').map_or("", |k| k.1);
-            let whose = format!("the {kind} {}", v.name());
-            for form in [(Notation::Text, v.unicode()), (Notation::Latex, v.latex())] {
-                self.shown
-                    .insert((form.0, form.1.to_string()), (whose.clone(), None));
-            }
-        }
+        self.shown = PrintedNames::of_variables(&vars);
         let name = match &model.name {
             Some(n) => n.get_ref().clone(),
             None => Path::new(&self.source.origin).file_stem().map_or_else(
@@ -774,6 +928,7 @@ impl<'a> Builder<'a> {
             families: Vec::new(),
             claims: Vec::new(),
             limits,
+            caller: super::Caller::Program,
             cache: Mutex::new(HashMap::new()),
         };
 
@@ -825,12 +980,9 @@ impl<'a> Builder<'a> {
                 self.check_display(d)?;
             }
             let display = f.display.as_ref().unwrap_or(&f.name).get_ref();
-            if let Some((text, latex)) = display_forms(display) {
-                let whose = format!("the function {}", f.name.get_ref());
-                let forms = [(Notation::Text, text), (Notation::Latex, latex)];
-                let span = f.display.as_ref().unwrap_or(&f.name).span();
-                self.check_shown_apart(whose, forms, span)?;
-            }
+            let whose = format!("the function {}", f.name.get_ref());
+            let span = f.display.as_ref().unwrap_or(&f.name).span();
+            self.check_shown_apart(&whose, display, span)?;
             file.system.define(f.name.get_ref(), display, value);
         }
 
@@ -873,6 +1025,16 @@ impl<'a> Builder<'a> {
                 self.check_display(d)?;
             }
             let display = f.display.as_ref().unwrap_or(&f.name).get_ref().clone();
+            let span = f.display.as_ref().unwrap_or(&f.name).span();
+            let line = super::error::locate(&self.source.text, span.clone()).line;
+            let whose = format!("the family {}", f.name.get_ref());
+            if let Err(why) = self.shown.admit_family(&whose, &display, Some(line)) {
+                return Err(self.error(
+                    ErrorKind::Name,
+                    span,
+                    format!("{why}: rename one, or give it another display"),
+                ));
+            }
             file.families.push(Family {
                 name: f.name.get_ref().clone(),
                 display,

@@ -52,13 +52,15 @@ mod tower;
 
 pub use claims::{CheckedClaim, ClaimForm, ClaimSpec};
 pub use error::{ErrorKind, FileError, Location};
-pub use load::{load, load_bytes, load_str, reserved, unwritable_letter, BadName};
+pub use load::{
+    load, load_bytes, load_str, reserved, unwritable_letter, BadName, PrintedNames, Refusal,
+};
 pub use plot::{Against, PlotFunctions, PlotInput, StartValue};
 pub use reports::{
     bracket_report, check_each, check_report, expand_report, rank_report, table_report,
 };
 pub use text::{split_top_level, Source, Text};
-pub use tower::family_tower_report;
+pub use tower::{family_tower_report, family_tower_report_with_progress};
 
 use std::collections::HashMap;
 use std::ops::Range;
@@ -111,26 +113,69 @@ pub struct Family {
 /// A system built in code becomes one by [`LoadedSystem::of_system`]; functions, families and
 /// claims are added in code by [`LoadedSystem::add_function`], [`LoadedSystem::add_family`]
 /// and [`LoadedSystem::add_claim`], and read as a file's own are.
+///
+/// Its parts are read through accessors ([`LoadedSystem::system`], [`LoadedSystem::families`],
+/// [`LoadedSystem::claims`], ...) and changed only through those calls, so that every
+/// function, family and claim it holds has been checked as a file's own is: a name the system
+/// already has, or one its printed forms would confuse with another, never gets in.
+///
+/// ```compile_fail,E0616
+/// # use superint::prelude::*;
+/// let mut rotor = LoadedSystem::of_system(systems::harmonic_rotor());
+/// // A function defined behind the loader's back, unchecked: not possible.
+/// let x = rotor.parse("x")?;
+/// rotor.system.define("L", "L", x);
+/// # Ok::<(), FileError>(())
+/// ```
 #[derive(Debug)]
 pub struct LoadedSystem {
     /// The file's text and path as given.
-    pub source: Source,
+    source: Source,
     /// The system's name (`name`, or the file name).
-    pub name: String,
+    name: String,
     /// Where the system comes from (`source`, a citation), if given.
-    pub citation: Option<String>,
+    citation: Option<String>,
     /// What the system is (`description`), if given.
-    pub description: Option<String>,
+    description: Option<String>,
     /// The phase space, Hamiltonian `H` and named functions.
-    pub system: System,
+    system: System,
     /// The families, in file order.
-    pub families: Vec<Family>,
+    families: Vec<Family>,
     /// The claims, in file order (parsed syntactically; [`LoadedSystem::check_claim`] computes).
-    pub claims: Vec<ClaimSpec>,
+    claims: Vec<ClaimSpec>,
     /// The limits in force.
-    pub limits: Limits,
+    limits: Limits,
+    /// Who gives the texts the reports read, which their messages name.
+    caller: Caller,
     /// Expanded family instances: `(family, m, n)`.
     cache: Mutex<HashMap<(usize, i64, i64), Expr>>,
+}
+
+/// Who gives the texts that the reports of a [`LoadedSystem`] read (the expressions of
+/// [`bracket_report`], [`expand_report`] and [`rank_report`], the names of [`table_report`],
+/// a condition, [`LoadedSystem::parse_argument`]), which their messages name. A loaded or built
+/// system's caller is [`Caller::Program`]; [`LoadedSystem::with_caller`] chooses another.
+///
+/// ```
+/// use superint::system_file::{bracket_report, load, Caller, LimitsOverride};
+///
+/// let rotor = load("systems/harmonic-rotor.toml".as_ref(), &LimitsOverride::default())?;
+/// let err = bracket_report(&rotor, "L", "G3", None).unwrap_err();
+/// assert!(err.to_string().starts_with("<expression>:1:1: unknown name 'G3'"));
+/// let rotor = rotor.with_caller(Caller::CommandLine);
+/// let err = bracket_report(&rotor, "L", "G3", None).unwrap_err();
+/// assert!(err.to_string().starts_with("<command line>:1:1: unknown name 'G3'"));
+/// # Ok::<(), superint::system_file::FileError>(())
+/// ```
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub enum Caller {
+    /// A program: an expression is `<expression>` in messages, a condition `<condition>`, a
+    /// computation `<program>`, and they name the library's calls, not the command's options.
+    #[default]
+    Program,
+    /// The command line (`superint bracket`, `table`, ...): every text given is
+    /// `<command line>`, and messages name the command's options (`--when`).
+    CommandLine,
 }
 
 /// What `name` already names in `system` or among `families`, in words with its article:
@@ -164,12 +209,12 @@ pub fn what_is(system: &System, families: &[Family], name: &str) -> Option<Strin
         .map(|(k, _, _)| format!("an instance of the family {}", families[k].name))
 }
 
-/// Where command-line expressions come from in messages.
+/// Where expressions given on the command line come from in messages ([`Caller::CommandLine`]).
 const COMMAND_LINE: &str = "<command line>";
 
-/// An expression given on the command line, parsed but not yet expanded. A command parses
-/// all its arguments before it expands any, so that a slip in the last one is reported at
-/// once rather than after the expansion of the first.
+/// An expression given to a report, parsed but not yet expanded. A report parses all its
+/// arguments before it expands any, so that a slip in the last one is reported at once rather
+/// than after the expansion of the first.
 struct Argument {
     source: Source,
     text: Text,
@@ -193,6 +238,7 @@ impl Clone for LoadedSystem {
             families: self.families.clone(),
             claims: self.claims.clone(),
             limits: self.limits,
+            caller: self.caller,
             cache: Mutex::new(cache),
         }
     }
@@ -221,19 +267,94 @@ impl LoadedSystem {
             system,
             families: Vec::new(),
             claims: Vec::new(),
+            caller: Caller::Program,
             cache: Mutex::new(HashMap::new()),
         }
     }
 
-    /// Parses an expression given on the command line (named functions, family instances,
-    /// brackets, `conj`/`re`/`im` allowed); errors point into the argument.
+    /// The same system, whose reports name `caller` as the giver of their texts: the command
+    /// line's `superint bracket`, say, loads a file `with_caller(Caller::CommandLine)`.
+    #[must_use]
+    pub fn with_caller(mut self, caller: Caller) -> Self {
+        self.caller = caller;
+        self
+    }
+
+    /// Who gives the texts the reports read ([`Caller::Program`] unless
+    /// [`LoadedSystem::with_caller`] said otherwise).
+    pub fn caller(&self) -> Caller {
+        self.caller
+    }
+
+    /// The source of the system's texts: the file's path (`origin`) and text, or `<program>`
+    /// for a system built in code.
+    pub fn source(&self) -> &Source {
+        &self.source
+    }
+
+    /// The system's name (the file's `name`, or its file name; a system built in code, its
+    /// [`System::name`]).
+    pub fn name(&self) -> &str {
+        &self.name
+    }
+
+    /// Where the system comes from (the file's `source`, a citation), if given.
+    pub fn citation(&self) -> Option<&str> {
+        self.citation.as_deref()
+    }
+
+    /// What the system is (the file's `description`), if given.
+    pub fn description(&self) -> Option<&str> {
+        self.description.as_deref()
+    }
+
+    /// The phase space, the Hamiltonian `H` and the named functions, for the engine's own
+    /// calls ([`System::bracket`], [`System::flow`], [`System::rank`], ...).
+    pub fn system(&self) -> &System {
+        &self.system
+    }
+
+    /// The families, in file order, then those added in code.
+    pub fn families(&self) -> &[Family] {
+        &self.families
+    }
+
+    /// The claims, in file order, then those added in code (read, not yet computed:
+    /// [`LoadedSystem::check_claim`] computes one).
+    pub fn claims(&self) -> &[ClaimSpec] {
+        &self.claims
+    }
+
+    /// The limits in force (the file's `[limits]` with the loader's override, or the system's
+    /// own for one built in code).
+    pub fn limits(&self) -> Limits {
+        self.limits
+    }
+
+    /// Parses an expression given to a report (named functions, family instances, brackets,
+    /// `conj`/`re`/`im` allowed), as the reports read theirs; errors point into the argument,
+    /// named as the [`Caller`] says (`<expression>`, or `<command line>`).
     pub fn parse_argument(&self, src: &str) -> Result<Expr, FileError> {
         self.value(&self.argument(src)?)
     }
 
-    /// Reads an expression given on the command line, without expanding it.
+    /// Reads an expression given to a report, without expanding it.
     fn argument(&self, src: &str) -> Result<Argument, FileError> {
-        self.argument_in(Source::new(COMMAND_LINE, src))
+        self.argument_in(self.given("<expression>", src))
+    }
+
+    /// The source of a text given to a report: `<command line>` for the command line, else
+    /// `what` (`<expression>`, `<condition>`). Its hints are those of the system's own texts
+    /// (a file's tables, or the library's calls for a system built in code).
+    fn given(&self, what: &str, text: &str) -> Source {
+        let origin = match self.caller {
+            Caller::CommandLine => COMMAND_LINE,
+            Caller::Program => what,
+        };
+        Source {
+            program: self.source.program,
+            ..Source::new(origin, text)
+        }
     }
 
     /// Reads the expression that is `source`, without expanding it.

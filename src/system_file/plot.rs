@@ -8,7 +8,6 @@ use trigpoly::{Expr, GaussianRational, Rational, Span, Var, VarKind};
 
 use super::claims::{parse_assignments, Assignment, AssignmentForm};
 use super::error::{ErrorKind, FileError};
-use super::reports::command_error;
 use super::text::{Source, Text};
 use super::{Argument, LoadedSystem, COMMAND_LINE};
 
@@ -107,7 +106,7 @@ impl LoadedSystem {
             .iter()
             .map(|point| self.starting_point(point, &values))
             .collect::<Result<_, _>>()?;
-        let hamiltonian = at_values("H", self.system.hamiltonian(), &values)?;
+        let hamiltonian = self.at_values("H", self.system.hamiltonian(), &values)?;
         if let Some(why) = self.unset("H", &hamiltonian) {
             return Err(FileError::new(ErrorKind::Expression, COMMAND_LINE, why));
         }
@@ -240,7 +239,12 @@ impl LoadedSystem {
                 self.display(a.var)
             );
             let what = format!("the starting value of {}", self.display(a.var));
-            let value = number(&at_values(&what, &a.value, values)?, &a.rhs, &source, why)?;
+            let value = number(
+                &self.at_values(&what, &a.value, values)?,
+                &a.rhs,
+                &source,
+                why,
+            )?;
             given.push((
                 a.var,
                 match a.pi_times {
@@ -297,7 +301,7 @@ impl LoadedSystem {
     fn drawable(&self, src: &str, values: &Values) -> Result<(String, Expr, Argument), FileError> {
         let arg = self.argument(src)?;
         let (label, value) = self.expand(&arg)?;
-        let value = at_values(&format!("'{}'", src.trim()), &value, values)?;
+        let value = self.at_values(&format!("'{}'", src.trim()), &value, values)?;
         if let Some(why) = self.unset(&format!("'{}'", src.trim()), &value) {
             let whole = Span::new(0, arg.text.value.len());
             return Err(arg
@@ -341,15 +345,15 @@ impl LoadedSystem {
         let assignments = parse_assignments(self, &source, &pieces, form, admit)?;
         Ok((source, assignments))
     }
-}
 
-/// `what`, the function `e`, at the parameters' `values`.
-fn at_values(what: &str, e: &Expr, values: &Values) -> Result<Expr, FileError> {
-    e.subst_many(values).map_err(|err| {
-        let mut error = command_error(&EngineError::from(err));
-        error.message = format!("{what} at the values of --at: {}", error.message);
-        error
-    })
+    /// `what`, the function `e`, at the parameters' `values`.
+    fn at_values(&self, what: &str, e: &Expr, values: &Values) -> Result<Expr, FileError> {
+        e.subst_many(values).map_err(|err| {
+            let mut error = self.computation_error(&EngineError::from(err));
+            error.message = format!("{what} at the values of --at: {}", error.message);
+            error
+        })
+    }
 }
 
 /// `value` as a real number, or the error `why` at `rhs`, where it is written.

@@ -11,8 +11,8 @@ use trigpoly::Expr;
 use super::claims::{engine_error, parse_condition, CheckedClaim};
 use super::error::{ErrorKind, FileError};
 use super::scope::{instance_of, rewrite_braces};
-use super::text::{Source, Text};
-use super::{Argument, LoadedSystem, COMMAND_LINE};
+use super::text::Text;
+use super::{Argument, Caller, LoadedSystem};
 use crate::report::{
     Entry, Equation, Equations, Expect, Report, Section, SummaryKind, TableResult,
 };
@@ -66,12 +66,14 @@ impl LoadedSystem {
     }
 }
 
-/// An error of the engine on a command-line computation (no place in a file).
-pub(super) fn command_error(e: &brackets::EngineError) -> FileError {
-    let source = Source::new(COMMAND_LINE, "");
-    let mut err = engine_error(&source, 0..0, e);
-    err.location = None;
-    err
+impl LoadedSystem {
+    /// An error of the engine on a computation a report was asked for (no place in a text):
+    /// from `<program>`, or `<command line>`.
+    pub(super) fn computation_error(&self, e: &brackets::EngineError) -> FileError {
+        let mut err = engine_error(&self.given("<program>", ""), 0..0, e);
+        err.location = None;
+        err
+    }
 }
 
 /// Checks every claim of every file: one section per file (its source, its Hamiltonian, its
@@ -167,9 +169,9 @@ pub fn bracket_report(
     let value = file
         .system
         .bracket(&fe, &ge)
-        .map_err(|e| command_error(&e))?;
+        .map_err(|e| file.computation_error(&e))?;
     let lhs = format!("{{{fname}, {gname}}}");
-    let entry = equations_at(condition.as_ref(), vec![(lhs.clone(), value)])?;
+    let entry = equations_at(file, condition.as_ref(), vec![(lhs.clone(), value)])?;
     Ok(file.one_entry(
         format!("`{lhs}` for {}", file.the_name()),
         entry,
@@ -206,13 +208,14 @@ pub fn expand_report(
             .join(", "),
         file.the_name()
     );
-    let entry = equations_at(condition.as_ref(), lines)?;
+    let entry = equations_at(file, condition.as_ref(), lines)?;
     Ok(file.one_entry(title, entry, SummaryKind::Computed, start))
 }
 
-/// Displayed equations `lhs = value`, each value under the command line's condition if there
-/// is one, which the caption names.
+/// Displayed equations `lhs = value`, each value under the report's condition if there is
+/// one, which the caption names.
 fn equations_at(
+    file: &LoadedSystem,
     condition: Option<&Condition>,
     lines: Vec<(String, Expr)>,
 ) -> Result<Entry, FileError> {
@@ -222,7 +225,7 @@ fn equations_at(
             let value = match condition {
                 Some(c) => c
                     .apply_where_defined(&value, "the expression")
-                    .map_err(|e| command_error(&e))?,
+                    .map_err(|e| file.computation_error(&e))?,
                 None => value,
             };
             Ok(Equation::new(&lhs, value))
@@ -234,7 +237,7 @@ fn equations_at(
     }))
 }
 
-/// A condition given on the command line (`--when`), if any.
+/// A condition given to a report (`--when` on the command line), if any.
 fn command_condition(
     file: &LoadedSystem,
     when: Option<&str>,
@@ -244,10 +247,10 @@ fn command_condition(
 
 impl LoadedSystem {
     /// A condition given as text (`p_theta = I*omega, omega = 1/2`), read as a file's `when`
-    /// is: its errors are located in `text` (named `<command line>`), and it reads as written
-    /// (`p_θ = Iω`).
+    /// is: its errors are located in `text` (named `<condition>`, or `<command line>` as the
+    /// [`Caller`] says), and it reads as written (`p_θ = Iω`).
     pub fn condition(&self, text: &str) -> Result<Condition, FileError> {
-        let source = Source::new(COMMAND_LINE, text);
+        let source = self.given("<condition>", text);
         let pieces = Text::whole(&source).split(',');
         parse_condition(self, &source, &pieces)
     }
@@ -272,11 +275,21 @@ pub fn table_report(file: &LoadedSystem, names: &[impl AsRef<str>]) -> Result<Re
         names.iter().map(|n| braces(n.as_ref())).collect()
     };
     if names.is_empty() {
+        let message = match file.caller {
+            Caller::CommandLine => {
+                "the file defines no [[function]] to tabulate; name some on the command line, \
+                 such as: superint table FILE H L"
+            }
+            Caller::Program => {
+                "the system has no function to tabulate but H; name some in the call, such as \
+                 table_report(&system, &[\"H\", \"x\"]), or add them with \
+                 LoadedSystem::add_function"
+            }
+        };
         return Err(FileError::new(
             ErrorKind::Claim,
             &file.source.origin,
-            "the file defines no [[function]] to tabulate; name some on the command line, \
-             such as: superint table FILE H L",
+            message,
         ));
     }
     // Every name is looked up before any family instance is expanded.
@@ -295,12 +308,16 @@ pub fn table_report(file: &LoadedSystem, names: &[impl AsRef<str>]) -> Result<Re
                         .iter()
                         .map(|f| format!("{}_{}_{}", f.name, f.indices[0], f.indices[1])),
                 );
+                // The file by its path on the command line; a program's system by its name.
+                let of = match file.caller {
+                    Caller::CommandLine => file.source.origin.clone(),
+                    Caller::Program => file.the_name(),
+                };
                 return Err(FileError::new(
                     ErrorKind::Expression,
-                    COMMAND_LINE,
+                    &file.given("<expression>", "").origin,
                     format!(
-                        "'{name}' is not a function of {} (known: {})",
-                        file.source.origin,
+                        "'{name}' is not a function of {of} (known: {})",
                         known.join(", ")
                     ),
                 ));
@@ -317,9 +334,9 @@ pub fn table_report(file: &LoadedSystem, names: &[impl AsRef<str>]) -> Result<Re
         system.define(name, &display, value);
     }
     let refs: Vec<&str> = names.iter().map(String::as_str).collect();
-    // What fails is a bracket of the file's functions, not the command line.
+    // What fails is a bracket of the file's functions, not the names given.
     let table = BracketTable::compute(&system, &refs).map_err(|e| {
-        let mut err = command_error(&e);
+        let mut err = file.computation_error(&e);
         err.origin.clone_from(&file.source.origin);
         err.message = format!("the brackets of {}: {}", refs.join(", "), err.message);
         err
@@ -353,7 +370,7 @@ pub fn rank_report(
         exprs.push(value);
     }
     let written: Vec<&str> = functions.iter().map(AsRef::as_ref).collect();
-    let source = Source::new(COMMAND_LINE, &written.join(" "));
+    let source = file.given("<expression>", &written.join(" "));
     let mut rank = file.rank_result(
         &source,
         "rank",

@@ -13,10 +13,11 @@ use trigpoly::Span;
 
 use super::error::{ErrorKind, FileError};
 
-/// The source an expression comes from: a file's text or the command line.
+/// The source an expression comes from: a file's text, a text a program gave, or the command
+/// line.
 #[derive(Clone, Debug)]
 pub struct Source {
-    /// The file's path as given, or `<command line>`.
+    /// The file's path as given, or the name of the text (`<expression>`, `<command line>`).
     pub origin: String,
     /// The whole text.
     pub text: Arc<str>,

@@ -19,7 +19,7 @@ use brackets::{Condition, EngineError};
 use super::claims::engine_error;
 use super::error::{ErrorKind, FileError};
 use super::scope::{substitute, Scope};
-use super::{LoadedSystem, COMMAND_LINE};
+use super::{Caller, LoadedSystem};
 use crate::report::{
     ClaimResult, Entry, Fact, ProofResult, Report, Section, SummaryKind, TowerResult,
 };
@@ -308,16 +308,16 @@ impl LoadedSystem {
 
 /// The tower job on a system file: the family `family` (or the first with an eigenvalue),
 /// `{K_{m,n}, H} = λ(m, n) K_{m,n}` expanded for `1 ≤ m, n ≤ max`, and the proof for all
-/// `m, n` when the family is a product of powers. `progress(done, total)` is called after
-/// each bracket. The family may be in any names, the file's or one added in code
-/// ([`LoadedSystem::add_family`]); the tower and the proof come back as
-/// [`Report::tower`] and [`Report::proof`].
+/// `m, n` when the family is a product of powers. The family may be in any names, the file's
+/// or one added in code ([`LoadedSystem::add_family`]); the tower and the proof come back as
+/// [`Report::tower`] and [`Report::proof`]. [`family_tower_report_with_progress`] reports
+/// each bracket as it is done.
 ///
 /// ```
 /// use superint::system_file::{family_tower_report, load, LimitsOverride};
 ///
 /// let rotor = load("systems/gravity-rotor.toml".as_ref(), &LimitsOverride::default())?;
-/// let report = family_tower_report(&rotor, None, 3, None, &mut |_done, _total| {})?;
+/// let report = family_tower_report(&rotor, None, 3, None)?;
 /// let tower = report.tower().expect("a tower");
 /// assert_eq!((tower.checked, tower.failures.len()), (9, 0));
 /// assert!(report.proof().is_some_and(|p| p.holds()));
@@ -328,17 +328,45 @@ pub fn family_tower_report(
     family: Option<&str>,
     max: i64,
     when: Option<&Condition>,
+) -> Result<Report, FileError> {
+    family_tower_report_with_progress(file, family, max, when, &mut |_, _| {})
+}
+
+/// [`family_tower_report`], calling `progress(done, total)` after each bracket of the tower
+/// (the command line's progress bar; a program's own, or a log).
+///
+/// ```
+/// use superint::system_file::{family_tower_report_with_progress, load, LimitsOverride};
+///
+/// let rotor = load("systems/harmonic-rotor.toml".as_ref(), &LimitsOverride::default())?;
+/// let mut seen = Vec::new();
+/// let report = family_tower_report_with_progress(&rotor, Some("K"), 2, None, &mut |done, total| {
+///     seen.push((done, total))
+/// })?;
+/// assert!(report.all_proved());
+/// assert_eq!(seen, [(1, 4), (2, 4), (3, 4), (4, 4)]);
+/// # Ok::<(), superint::system_file::FileError>(())
+/// ```
+pub fn family_tower_report_with_progress(
+    file: &LoadedSystem,
+    family: Option<&str>,
+    max: i64,
+    when: Option<&Condition>,
     progress: &mut dyn FnMut(usize, usize),
 ) -> Result<Report, FileError> {
     let start = Instant::now();
     // Parameters only: substituting them commutes with the bracket, so the lemma holds at
     // their values as it does everywhere.
     if let Some((v, kind)) = when.and_then(|c| c.phase_variable()) {
+        let option = match file.caller {
+            Caller::CommandLine => "--when: ",
+            Caller::Program => "",
+        };
         return Err(FileError::new(
             ErrorKind::Condition,
-            COMMAND_LINE,
+            &file.given("<condition>", "").origin,
             format!(
-                "--when: a tower's condition may set parameters only, to numbers or other \
+                "{option}a tower's condition may set parameters only, to numbers or other \
                  parameters, and it holds {v}, {kind}: the tower's brackets are identities on \
                  the whole phase space"
             ),

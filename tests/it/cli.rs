@@ -269,7 +269,7 @@ eigenvalue = "i*(m - n)"
 name = "K_a"
 value = "(p_ω₁₂ + i*ω₁₂)^m*(p_ω₁₂ - i*ω₁₂)^n*sin(a - b)"
 [[family]]
-name = "K1"
+name = "K2"
 value = "K_a_{m,n}*x₁y"
 [[claim]]
 claim = "{ω₁₂, p_ω₁₂} = 1"
@@ -359,7 +359,7 @@ fn cli_latex_of_every_command_compiles() {
             names,
             "K₁_1_2",
             "K_a_1_1",
-            "K1_2_1",
+            "K2_2_1",
             "cos(a)*sin(b)",
         ],
         &["bracket", names, "cos(a)", "p_a"],

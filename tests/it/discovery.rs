@@ -563,7 +563,7 @@ fn harmonic_1_1_closure() {
     let w = "(p_x - i*p_y + i*M*omega*(x - i*y))*exp(-i*theta)";
     for a in ["P_1_1", "Q_1_1"] {
         for b in [format!("re({w})"), format!("im({w})")] {
-            let bracket = file.system.bracket(&parse(a), &parse(&b)).unwrap();
+            let bracket = file.system().bracket(&parse(a), &parse(&b)).unwrap();
             assert!(bracket.is_zero(), "{{{a}, {b}}} = {bracket}");
         }
     }
@@ -775,12 +775,12 @@ fn henon_heiles_kdv_integral_for_every_a_and_b() {
     );
     // The generator is the file's K, whose claim holds at C = 2 and is refuted elsewhere.
     let file = system_file("henon-heiles.toml");
-    let var = |name: &str| file.system.vars().lookup(name).expect("a parameter");
+    let var = |name: &str| file.system().vars().lookup(name).expect("a parameter");
     let options = SearchOptions::new(SearchSpace::new(2, 4, 0).parameters_degree(2))
         .fix(var("C"), Rational::from(2))
         .symbolic(var("A"))
         .symbolic(var("B"));
-    let r = search(&file.system, &options).expect("the search runs");
+    let r = search(file.system(), &options).expect("the search runs");
     let generators: Vec<&Expr> = r
         .module
         .as_ref()
@@ -899,7 +899,7 @@ fn bad_search_arguments_exit_2_with_a_message() {
 #[test]
 fn a_parameter_set_by_the_condition_is_not_fixed_first() {
     let file = system_file("henon-heiles.toml");
-    let vars = file.system.vars();
+    let vars = file.system().vars();
     let var = |name: &str| vars.lookup(name).expect("a parameter");
     let space = SearchSpace::new(2, 4, 0).parameters_degree(2);
     let symbolic = SearchOptions::new(space)
@@ -907,14 +907,14 @@ fn a_parameter_set_by_the_condition_is_not_fixed_first() {
         .symbolic(var("B"));
     let two = || Expr::constant(vars, trigpoly::GaussianRational::from(2));
     let by_condition = search(
-        &file.system,
+        file.system(),
         &symbolic
             .clone()
             .when(brackets::Condition::new("C = 2", var("C"), two())),
     )
     .expect("the search runs");
     let by_value =
-        search(&file.system, &symbolic.fix(var("C"), Rational::from(2))).expect("the search runs");
+        search(file.system(), &symbolic.fix(var("C"), Rational::from(2))).expect("the search runs");
     let generators = |r: &brackets::search::SearchResult| -> Vec<String> {
         let module = r.module.as_ref().expect("parameters kept symbolic");
         module
@@ -1362,8 +1362,9 @@ fn an_unlifted_search_says_how_to_see_every_value() {
 }
 
 /// A generator named twice, or a definition given twice, is a mistake on the command line; so
-/// is a defined name that is reserved or that the system has, refused before anything is
-/// read or computed (its value may be wrong too) and said as what it is.
+/// is a defined name that is reserved or that the system has, or that would print as one of
+/// its names does, refused before anything is read or computed (its value may be wrong too)
+/// and said as what it is.
 #[test]
 fn closure_refuses_a_generator_named_twice_or_a_name_the_system_has() {
     let harmonic = &["closure", "systems/harmonic-rotor.toml"][..];
@@ -1462,6 +1463,20 @@ fn closure_refuses_a_generator_named_twice_or_a_name_the_system_has() {
             builtin,
             vec!["L", "--define", "theta=x"],
             "--define theta: theta is an angle of the system; choose another name",
+        ),
+        // A generator printed as a function or another generator is, here in LaTeX (F_{1}),
+        // whether or not that function is a generator.
+        (
+            harmonic,
+            vec!["L", "--define", "F_1=F1"],
+            "--define F_1: the generator F_1 would print as F_{1} in LaTeX, as the function F1 \
+             does; choose another name",
+        ),
+        (
+            builtin,
+            vec!["L", "--define", "C_1=F1", "--define", "C1=F2"],
+            "--define C1: the generator C1 would print as C_{1} in LaTeX, as the generator C_1 \
+             does; choose another name",
         ),
     ] {
         let out = superint(&[command, &args].concat());
@@ -1775,7 +1790,7 @@ fn new_or_generated(
     file: &superint::system_file::LoadedSystem,
     space: SearchSpace,
 ) -> Vec<(Expr, bool)> {
-    let found = search(&file.system, &SearchOptions::new(space).new_only()).expect("searches");
+    let found = search(file.system(), &SearchOptions::new(space).new_only()).expect("searches");
     let new = found.new.expect("--new-only").new;
     (found.basis.iter().enumerate())
         .map(|(i, f)| (f.expr().clone(), new.contains(&i)))
@@ -1785,7 +1800,7 @@ fn new_or_generated(
 /// Whether `f`, up to sign, is a basis integral and new; it must be a basis integral.
 fn is_new(file: &superint::system_file::LoadedSystem, found: &[(Expr, bool)], f: &str) -> bool {
     let e = file.parse_argument(f).expect("parses");
-    let flow = file.system.flow(&e).expect("a bracket");
+    let flow = file.system().flow(&e).expect("a bracket");
     assert!(flow.is_zero(), "{f} is no integral: {{{f}, H}} = {flow}");
     let found = found.iter().find(|(g, _)| *g == e || *g == -&e);
     found

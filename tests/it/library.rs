@@ -32,17 +32,8 @@ fn own_rotor() -> LoadedSystem {
     rotor
 }
 
-fn harmonic_rotor_file() -> LoadedSystem {
-    let path = concat!(env!("CARGO_MANIFEST_DIR"), "/systems/harmonic-rotor.toml");
-    load_system_file(path.as_ref(), &LimitsOverride::default()).unwrap()
-}
-
-/// `{R_{a,b}, H} = i(ak − bΩ) R_{a,b}` for `R_{a,b} = A^a e^{−ibφ}`, a family added in code to
-/// a system built in code, in names that are not the paper's: checked for `1 ≤ a, b ≤ 3` and
-/// proved for all `a, b`; with the sign of `bΩ` flipped, every bracket fails and nothing is
-/// proved.
-#[test]
-fn family_tower_in_own_names() {
+/// [`own_rotor`] with the family `R_{a,b} = A^a e^{−ibφ}`, `{R_{a,b}, H} = i(ak − bΩ) R_{a,b}`.
+fn own_rotor_with_tower() -> LoadedSystem {
     let mut rotor = own_rotor();
     rotor
         .add_family(
@@ -54,6 +45,21 @@ fn family_tower_in_own_names() {
         )
         .unwrap();
     rotor
+}
+
+fn harmonic_rotor_file() -> LoadedSystem {
+    let path = concat!(env!("CARGO_MANIFEST_DIR"), "/systems/harmonic-rotor.toml");
+    load_system_file(path.as_ref(), &LimitsOverride::default()).unwrap()
+}
+
+/// `{R_{a,b}, H} = i(ak − bΩ) R_{a,b}` for `R_{a,b} = A^a e^{−ibφ}`, a family added in code to
+/// a system built in code, in names that are not the paper's: checked for `1 ≤ a, b ≤ 3` and
+/// proved for all `a, b`; with the sign of `bΩ` flipped, every bracket fails and nothing is
+/// proved.
+#[test]
+fn family_tower_in_own_names() {
+    let mut rotor = own_rotor_with_tower();
+    rotor
         .add_family(
             "S",
             "S",
@@ -62,7 +68,7 @@ fn family_tower_in_own_names() {
             Some("i*(a*k + b*Omega)"),
         )
         .unwrap();
-    let report = family_tower_report(&rotor, Some("R"), 3, None, &mut |_, _| {}).unwrap();
+    let report = family_tower_report(&rotor, Some("R"), 3, None).unwrap();
     let tower = report.tower().unwrap();
     assert_eq!((tower.checked, tower.failures.len()), (9, 0));
     let proof = report.proof().unwrap();
@@ -74,7 +80,7 @@ fn family_tower_in_own_names() {
         rotor.parse("A^2*exp(-3*i*phi)").unwrap()
     );
 
-    let wrong = family_tower_report(&rotor, Some("S"), 2, None, &mut |_, _| {}).unwrap();
+    let wrong = family_tower_report(&rotor, Some("S"), 2, None).unwrap();
     assert_eq!(
         wrong.tower().unwrap().failures,
         [(1, 1), (1, 2), (2, 1), (2, 2)]
@@ -119,7 +125,7 @@ fn claims_added_in_code_at_a_resonance() {
 #[test]
 fn a_loaded_file_extended_in_code() {
     let mut rotor = harmonic_rotor_file();
-    let claims = rotor.claims.len();
+    let claims = rotor.claims().len();
     rotor
         .add_function("C", "C", "4*G1^2 + G2^2 + omega^2*L^2")
         .unwrap();
@@ -136,11 +142,11 @@ fn a_loaded_file_extended_in_code() {
     rotor
         .add_claim("five", "rank(F1, F2, G1, G2, P_1_1) = 5", None)
         .unwrap();
-    assert_eq!(rotor.claims.len(), claims + 4);
+    assert_eq!(rotor.claims().len(), claims + 4);
     let report = check_report([&rotor]).unwrap();
     assert!(report.all_as_expected());
     assert_eq!(report.claims().len(), claims + 4);
-    let tower = family_tower_report(&rotor, Some("N"), 3, None, &mut |_, _| {}).unwrap();
+    let tower = family_tower_report(&rotor, Some("N"), 3, None).unwrap();
     assert!(tower.all_proved());
     assert!(tower.proof().unwrap().holds());
 }
@@ -151,7 +157,7 @@ fn a_loaded_file_extended_in_code() {
 #[test]
 fn a_refused_family_leaves_no_trace() {
     let mut rotor = harmonic_rotor_file();
-    let families = rotor.families.len();
+    let families = rotor.families().len();
     let err = rotor
         .add_family("W", "W", ["m", "n"], "Z^m*Zbar^n", Some("i*(m - n)*omegaa"))
         .unwrap_err();
@@ -163,7 +169,7 @@ fn a_refused_family_leaves_no_trace() {
             .starts_with("<family W>:2:11: unknown name 'omegaa'"),
         "{err}"
     );
-    assert_eq!(rotor.families.len(), families);
+    assert_eq!(rotor.families().len(), families);
     assert!(rotor.family("W").is_none());
     rotor
         .add_family("W", "W", ["m", "n"], "Zbar^m*Z^n", None)
@@ -236,12 +242,11 @@ fn names_already_taken_are_refused() {
 #[test]
 fn claim_errors_point_into_the_text_given() {
     let mut rotor = harmonic_rotor_file();
-    let claims = rotor.claims.len();
-    let spec = rotor
-        .add_claim("g3", "{L, G1} = -G3", None)
-        .unwrap()
-        .clone();
-    let err = rotor.check_claim(&spec).unwrap_err();
+    let claims = rotor.claims().len();
+    // Read now, refused when computed: added to a copy, which fails its check.
+    let mut copy = rotor.clone();
+    let spec = copy.add_claim("g3", "{L, G1} = -G3", None).unwrap().clone();
+    let err = copy.check_claim(&spec).unwrap_err();
     assert_eq!(
         (err.kind, err.line_col()),
         (ErrorKind::Expression, Some((1, 12)))
@@ -251,7 +256,6 @@ fn claim_errors_point_into_the_text_given() {
             .starts_with("<claim g3>:1:12: unknown name 'G3'"),
         "{err}"
     );
-    rotor.claims.pop();
     let err = rotor
         .add_claim("c", "{K_1_1, H} = 0", Some("p_theta = I*omegaa"))
         .unwrap_err();
@@ -264,7 +268,7 @@ fn claim_errors_point_into_the_text_given() {
     assert_eq!(err.kind, ErrorKind::Claim);
     let err = rotor.add_claim(" ", "L = L", None).unwrap_err();
     assert_eq!(err.message, "a claim's id is empty");
-    assert_eq!(rotor.claims.len(), claims);
+    assert_eq!(rotor.claims().len(), claims);
 }
 
 /// `?` takes an engine error into a `FileError`: a term limit is of kind `limit` (with the
@@ -272,7 +276,7 @@ fn claim_errors_point_into_the_text_given() {
 #[test]
 fn engine_errors_become_file_errors() {
     fn expand(rotor: &LoadedSystem, power: i64) -> Result<usize, FileError> {
-        let z = rotor.system.get("Z")?;
+        let z = rotor.system().get("Z")?;
         Ok(z.checked_pow(power).map_err(EngineError::from)?.len())
     }
     let mut rotor = harmonic_rotor_file();
@@ -292,7 +296,7 @@ fn engine_errors_become_file_errors() {
     let err = expand(&rotor, 8).unwrap_err();
     assert_eq!((err.kind, err.location), (ErrorKind::Limit, None));
     assert!(err.hint.is_some());
-    let err = FileError::from(rotor.system.rank(&["F1", "nope"]).unwrap_err());
+    let err = FileError::from(rotor.system().rank(&["F1", "nope"]).unwrap_err());
     assert_eq!(
         (err.kind, err.origin.as_str()),
         (ErrorKind::Engine, "<program>")
@@ -384,7 +388,7 @@ fn a_programs_error_type_matches_on_kinds() {
 #[test]
 fn messages_to_a_program_name_the_library() {
     let mut rotor = own_rotor();
-    let err = family_tower_report(&rotor, None, 2, None, &mut |_, _| {}).unwrap_err();
+    let err = family_tower_report(&rotor, None, 2, None).unwrap_err();
     assert_eq!(
         err.message,
         "the system has no family with an eigenvalue, so there is no tower to check"
@@ -393,7 +397,7 @@ fn messages_to_a_program_name_the_library() {
         .hint
         .unwrap()
         .starts_with("add one with LoadedSystem::add_family"));
-    let err = family_tower_report(&rotor, Some("R"), 2, None, &mut |_, _| {}).unwrap_err();
+    let err = family_tower_report(&rotor, Some("R"), 2, None).unwrap_err();
     assert_eq!(err.message, "no family named 'R' (the system has none)");
     let err = rotor.add_function("B", "B", "p_x + i*w*x").unwrap_err();
     assert_eq!(
@@ -402,11 +406,250 @@ fn messages_to_a_program_name_the_library() {
     );
     assert!(err.hint.unwrap().contains("LoadedSystem::add_function"));
     let file = harmonic_rotor_file();
-    let err = family_tower_report(&file, Some("R"), 2, None, &mut |_, _| {}).unwrap_err();
+    let err = family_tower_report(&file, Some("R"), 2, None).unwrap_err();
     assert_eq!(
         err.message,
         "no family named 'R' (the file declares K, Kbar, P, Q)"
     );
     let err = file.parse_argument("w").unwrap_err();
     assert!(err.hint.unwrap().contains("[[function]]"));
+}
+
+/// A tower needs no progress callback: `family_tower_report` runs without one, and
+/// `family_tower_report_with_progress` reports every bracket, `(done, total)`, in order, with
+/// the same result.
+#[test]
+fn a_tower_takes_progress_only_when_asked() {
+    let rotor = own_rotor_with_tower();
+    let quiet = family_tower_report(&rotor, Some("R"), 2, None).unwrap();
+    let mut seen = Vec::new();
+    let watched = family_tower_report_with_progress(&rotor, Some("R"), 2, None, &mut |d, t| {
+        seen.push((d, t));
+    })
+    .unwrap();
+    assert_eq!(seen, [(1, 4), (2, 4), (3, 4), (4, 4)]);
+    assert!(quiet.all_proved() && watched.all_proved());
+    assert_eq!(
+        quiet.tower().unwrap().checked,
+        watched.tower().unwrap().checked
+    );
+    assert!(tower_report(TowerSystem::Harmonic, 2).unwrap().all_proved());
+}
+
+/// The reports' messages name the texts as a program gave them, not the command line: an
+/// expression is `<expression>`, a condition `<condition>`, the table names the system and the
+/// call, the tower's condition no `--when`; a file read `with_caller(Caller::CommandLine)`
+/// names the command line, as `superint` does.
+#[test]
+fn report_errors_name_the_program_not_the_command_line() {
+    let rotor = own_rotor();
+    let cli_words = |err: &FileError| {
+        let text = err.to_string();
+        assert!(
+            !text.contains("command line") && !text.contains("--") && !text.contains("superint"),
+            "{text}"
+        );
+        text
+    };
+    let err = bracket_report(&rotor, "A", "B", None).unwrap_err();
+    assert!(cli_words(&err).starts_with("<expression>:1:1: unknown name 'B'"));
+    let err = expand_report(&rotor, &["A".to_string(), "A +".to_string()], None).unwrap_err();
+    assert_eq!(
+        (err.origin.as_str(), err.line_col()),
+        ("<expression>", Some((1, 4)))
+    );
+    let err = bracket_report(&rotor, "A", "H", Some("p_phi = J*w")).unwrap_err();
+    assert!(cli_words(&err).starts_with("<condition>:1:11: unknown name 'w'"));
+    let err = rank_report(&rotor, &["A", "Omega", "B"], None).unwrap_err();
+    assert!(cli_words(&err).starts_with("<expression>:1:1: unknown name 'B'"));
+    let err = table_report(&rotor, &["A", "B"]).unwrap_err();
+    assert_eq!(
+        cli_words(&err),
+        "<expression>: 'B' is not a function of the own rotor (known: H, A, Omega)"
+    );
+    let vars = VarSet::builder()
+        .coordinate("q")
+        .momentum("p")
+        .build()
+        .unwrap();
+    let space = PhaseSpace::new(&vars, &[("q", "p")]).unwrap();
+    let h = Expr::parse(&vars, "p^2/2").unwrap();
+    let bare = LoadedSystem::of_system(System::new("free particle", space, h));
+    let err = table_report(&bare, &[] as &[&str]).unwrap_err();
+    assert!(cli_words(&err).contains("table_report(&system"), "{err}");
+    let towered = own_rotor_with_tower();
+    let on_phase_space = towered.condition("p_phi = J*k").unwrap();
+    let err = family_tower_report(&towered, Some("R"), 2, Some(&on_phase_space)).unwrap_err();
+    assert_eq!(err.origin, "<condition>");
+    assert!(cli_words(&err).contains("a tower's condition may set parameters only"));
+
+    // The command line's words, when the caller says so.
+    assert_eq!(rotor.caller(), Caller::Program);
+    let cli = harmonic_rotor_file().with_caller(Caller::CommandLine);
+    let err = table_report(&cli, &["nope"]).unwrap_err();
+    assert!(err
+        .to_string()
+        .starts_with("<command line>: 'nope' is not a function of "));
+    let err = bracket_report(&cli, "L", "H", Some("p_theta = ")).unwrap_err();
+    assert_eq!(err.origin, "<command line>");
+    let on_phase_space = cli.condition("p_theta = I*omega").unwrap();
+    let err = family_tower_report(&cli, None, 2, Some(&on_phase_space)).unwrap_err();
+    assert!(err.message.starts_with("--when: "), "{err}");
+}
+
+/// `Expr::parse`'s error says where and what wherever `?` takes it: into a `Box<dyn Error>`
+/// its text has the line, column, the line and a caret; into a `FileError`, directly or
+/// through an `EngineError`, it is an expression error at its line and column, shown as a
+/// file's are.
+#[test]
+fn a_parse_error_keeps_its_place_under_question_mark() {
+    let vars = VarSet::builder()
+        .coordinate("x")
+        .momentum("p_x")
+        .parameter("k")
+        .build()
+        .unwrap();
+    let boxed = || -> Result<Expr, Box<dyn std::error::Error>> {
+        Ok(Expr::parse(&vars, "p_x^2/2\n + k*x^2/2 + q")?)
+    };
+    assert_eq!(
+        boxed().unwrap_err().to_string(),
+        concat!(
+            "line 2, column 14: unknown name 'q' (known: x, p_x, k)\n",
+            "   + k*x^2/2 + q\n",
+            "               ^"
+        )
+    );
+    let file = || -> Result<Expr, FileError> { Ok(Expr::parse(&vars, "p_x^2/2 + k*x^^2")?) };
+    let err = file().unwrap_err();
+    assert_eq!(
+        (err.kind, err.origin.as_str(), err.line_col()),
+        (ErrorKind::Expression, "<expression>", Some((1, 15)))
+    );
+    assert_eq!(
+        err.to_string(),
+        "<expression>:1:15: expected an expression after '^', found '^'\n 1 | p_x^2/2 + k*x^^2\n   |               ^"
+    );
+    let engine = || -> Result<Expr, EngineError> { Ok(Expr::parse(&vars, "k*(x + ")?) };
+    let err = FileError::from(engine().unwrap_err());
+    assert_eq!(err.line_col(), Some((1, 7)));
+    assert!(engine()
+        .unwrap_err()
+        .to_string()
+        .starts_with("line 1, column 7: "));
+}
+
+/// A function added in code is checked against the names as they print, as a file's is: a
+/// name the printer would write for a product of one-letter variables (`kx` for `k x`) is
+/// refused, unless the variables were built knowing it, and then the product prints spaced;
+/// a display that prints as a variable's or a function's does, in text or in LaTeX (`F_1` and
+/// `F1`, both `F_{1}`), is refused; so is a family whose instances would print as another's.
+/// Each message names the offending name, and the system is unchanged.
+#[test]
+fn names_added_in_code_print_apart() {
+    let mut rotor = own_rotor();
+    let functions = rotor.system().functions().len();
+    let err = rotor.add_function("kx", "kx", "k*p_x").unwrap_err();
+    assert_eq!(
+        (err.kind, err.origin.as_str()),
+        (ErrorKind::Name, "<function kx>")
+    );
+    assert_eq!(
+        err.message,
+        "the function kx would read back from the product k x of the variables, which prints \
+         as kx: choose another name, or give it to the variables when they are built \
+         (VarSetBuilder::also_named), which has such products printed spaced"
+    );
+    // Its display alone may spell the product too.
+    let err = rotor.add_function("P", "kJ", "k*J").unwrap_err();
+    assert!(err
+        .message
+        .starts_with("the function P would read back from the product k J"));
+    let err = rotor.add_function("B", "A", "p_y").unwrap_err();
+    assert_eq!(
+        err.message,
+        "the function B would show as A, as the function A does: rename one, or give it another \
+         display"
+    );
+    rotor.add_function("J1", "J1", "J").unwrap();
+    let err = rotor.add_function("J_1", "J_1", "J").unwrap_err();
+    assert_eq!(
+        err.message,
+        "the function J_1 would print as J_{1} in LaTeX, as the function J1 does: rename one, \
+         or give it another display"
+    );
+    assert_eq!(rotor.system().functions().len(), functions + 1);
+
+    // Variables built knowing the name: the function is taken, and the product spaced.
+    let vars = VarSet::builder()
+        .coordinate("x")
+        .momentum("p_x")
+        .parameter("k")
+        .also_named(["kx"])
+        .build()
+        .unwrap();
+    let space = PhaseSpace::new(&vars, &[("x", "p_x")]).unwrap();
+    let h = Expr::parse(&vars, "p_x^2/2 + k^2*x^2/2").unwrap();
+    let mut oscillator = LoadedSystem::of_system(System::new("oscillator", space, h));
+    oscillator.add_function("kx", "kx", "k*x").unwrap();
+    let report = expand_report(&oscillator, &["kx".to_string()], None).unwrap();
+    let text = render(&report, Format::Text, &RenderOptions { timings: false });
+    assert!(text.contains("kx = k x"), "{text}");
+
+    // A loaded file: its own functions print spaced; a new one is told to go in the file.
+    let mut file = harmonic_rotor_file();
+    let err = file.add_function("Mx", "Mx", "M*x").unwrap_err();
+    assert!(
+        err.message
+            .ends_with("declare the function in the file, whose products are then printed spaced"),
+        "{err}"
+    );
+    let err = file.add_function("F_1", "F_1", "x").unwrap_err();
+    assert_eq!(
+        err.message,
+        "the function F_1 would print as F_{1} in LaTeX, as the function F1 does: rename one, \
+         or give it another display"
+    );
+    let families = file.families().len();
+    let err = file
+        .add_family("T", "K", ["m", "n"], "Z^m*Zbar^n", None)
+        .unwrap_err();
+    assert_eq!(
+        (err.kind, err.origin.as_str(), err.message.as_str()),
+        (
+            ErrorKind::Name,
+            "<family T>",
+            "the family T would show its instances as K_{m,n}, as the family K does: rename \
+             one, or give it another display"
+        )
+    );
+    assert_eq!(file.families().len(), families);
+}
+
+/// A file's families are checked as those added in code are: a family whose instances would
+/// print as another's (`T` shown as `K`, both `K_{m,n}`; `K1` and `K₁`, both `K_{1;m,n}` in
+/// LaTeX) is refused at its display or name.
+#[test]
+fn a_files_families_print_apart() {
+    let text = "hamiltonian = \"p_x^2/2\"\n[phase_space]\ncoordinates = [\"x\"]\n\
+                [[family]]\nname = \"K\"\nvalue = \"x^m*p_x^n\"\n\
+                [[family]]\nname = \"T\"\ndisplay = \"K\"\nvalue = \"p_x^m*x^n\"\n";
+    let err = load_system_text("two.toml", text, &LimitsOverride::default()).unwrap_err();
+    assert_eq!(
+        err.to_string(),
+        "two.toml:9:11: the family T would show its instances as K_{m,n}, as the family K on \
+         line 5 does: rename one, or give it another display\n 9 | display = \"K\"\n   |           ^^^"
+    );
+    let text = text
+        .replace("display = \"K\"\n", "")
+        .replace("\"T\"", "\"K₁\"");
+    let text = text.replace("name = \"K\"", "name = \"K1\"");
+    let err = load_system_text("two.toml", &text, &LimitsOverride::default()).unwrap_err();
+    assert_eq!(
+        err.to_string().lines().next(),
+        Some(
+            "two.toml:8:8: the family K₁ would print its instances in LaTeX as K_{1} with their \
+             indices, as the family K1 on line 5 does: rename one, or give it another display"
+        )
+    );
 }

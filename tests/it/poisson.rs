@@ -60,7 +60,7 @@ fn so3() -> (trigpoly::Vars, PhaseSpace) {
 #[test]
 fn euler_top_casimir_energy_and_euler_equations() {
     let top = system_file("euler-top.toml");
-    let sys = &top.system;
+    let sys = top.system();
     for m in ["M1", "M2", "M3"] {
         identity!(sys, format!("{{C, {m}}} = 0"));
     }
@@ -84,7 +84,7 @@ fn euler_top_casimir_energy_and_euler_equations() {
 #[test]
 fn kovalevskaya_integral_is_conserved_and_its_neighbours_are_not() {
     let top = system_file("kovalevskaya-top.toml");
-    let sys = &top.system;
+    let sys = top.system();
     for v in ["M1", "M2", "M3", "gamma1", "gamma2", "gamma3"] {
         identity!(sys, format!("{{Gamma, {v}}} = 0"));
         identity!(sys, format!("{{A, {v}}} = 0"));
@@ -207,7 +207,7 @@ fn library_api_refuses_what_is_not_a_poisson_structure() {
 #[test]
 fn euler_top_hamilton_equations_and_plot() {
     let top = system_file("euler-top.toml");
-    let sys = &top.system;
+    let sys = top.system();
     let field = sys.space().hamilton_equations(sys.hamiltonian()).unwrap();
     let expected = [
         "(1/I2 - 1/I3)*M2*M3",
@@ -628,7 +628,10 @@ eigenvalue = "-i*m*(1/A - 1/C)*M3"
         "{out}"
     );
     // The rate itself, and its opposite sign refuted by twice the rate.
-    let sys = &load(&file, &LimitsOverride::default()).unwrap().system;
+    let sys = load(&file, &LimitsOverride::default())
+        .unwrap()
+        .system()
+        .clone();
     identity!(sys, "{xi, H} = -i*(1/A - 1/C)*M3*xi");
     identity!(
         sys,

@@ -52,15 +52,20 @@ pub struct JacobiViolation {
     pub message: String,
 }
 
-/// A parse error without its source, so that `?` works on a parse in a function that returns
-/// an `EngineError`: its message says where by byte offsets (`EngineError::parse` with the
+/// A parse error, so that `?` works on a parse in a function that returns an `EngineError`:
+/// one that knows its source ([`ParseError::in_source`], as `Expr::parse`'s do) says where by
+/// line, column and caret; one without it by byte offsets (`EngineError::parse` with the
 /// source gives line, column and caret).
 impl From<ParseError> for EngineError {
     fn from(error: ParseError) -> Self {
         let (start, end) = (error.span.start, error.span.end);
+        let message = match error.excerpt() {
+            Some(_) => error.to_string(),
+            None => format!("{} (at bytes {start}..{end})", error.message),
+        };
         EngineError::Parse {
             source_text: String::new(),
-            message: format!("{} (at bytes {start}..{end})", error.message),
+            message,
             error,
         }
     }

@@ -267,7 +267,8 @@ mod tests {
         assert_eq!(rotor.parse("X2").unwrap(), rotor.parse("x^2").unwrap());
     }
 
-    /// `?` turns a parse error into an `EngineError` that says where, by bytes.
+    /// `?` turns a parse error into an `EngineError` that says where: by line, column and
+    /// caret when the error knows its source, as `Expr::parse`'s do; by bytes when not.
     #[test]
     fn parse_errors_convert_with_their_place() {
         fn parse(rotor: &System, src: &str) -> Result<Expr, EngineError> {
@@ -275,6 +276,12 @@ mod tests {
         }
         let err = parse(&harmonic_rotor(), "x +").unwrap_err();
         assert!(matches!(err, EngineError::Parse { .. }));
+        assert_eq!(
+            err.to_string(),
+            "line 1, column 4: expected an expression after '+', found end of input\n  x +\n     ^"
+        );
+        let bare = trigpoly::ParseError::new(trigpoly::Span::new(3, 3), "expected an expression");
+        let err = EngineError::from(bare);
         assert!(err.to_string().contains("(at bytes 3..3)"), "{err}");
     }
 

@@ -51,7 +51,9 @@ impl<C: Coefficient> Poly<C> {
     /// Parses with named functions and brackets supplied by `ctx`.
     pub fn parse_with(vars: &Vars, src: &str, ctx: &dyn Context<C>) -> Result<Self, ParseError> {
         let expr = parse_expr(src)?;
-        Lower { vars, ctx }.lower(&expr)
+        Lower { vars, ctx }
+            .lower(&expr)
+            .map_err(|e| e.in_source(src))
     }
 
     /// Lowers an already parsed expression.

@@ -476,6 +476,27 @@ impl VarSet {
         )
     }
 
+    /// Whether the printer could write `name` for a product of one-letter variables side by
+    /// side and not know it: `name` has several letters, each the spelling of a one-letter
+    /// variable or `i` (`Mx` for `M x`), and it is neither a variable nor one of the names of
+    /// [`VarSetBuilder::also_named`], whose products the printer spaces (`M x`). A function of
+    /// such a name would read back from a printed product.
+    ///
+    /// ```
+    /// use trigpoly::VarSet;
+    ///
+    /// let vars = VarSet::builder().coordinate("x").parameter("M").build().unwrap();
+    /// assert!(vars.juxtaposition_spells("Mx"));
+    /// assert!(!vars.juxtaposition_spells("Mz"));
+    /// let told = VarSet::builder().coordinate("x").parameter("M").also_named(["Mx"]);
+    /// assert!(!told.build().unwrap().juxtaposition_spells("Mx"));
+    /// ```
+    pub fn juxtaposition_spells(&self, name: &str) -> bool {
+        self.lookup(name).is_none()
+            && !self.also_named.iter().any(|n| n == name)
+            && juxtaposition_is_ambiguous([name], self.vars.iter().flat_map(Variable::spellings))
+    }
+
     /// The limits in force.
     pub fn limits(&self) -> Limits {
         self.limits

@@ -24,13 +24,34 @@ impl Span {
 }
 
 /// A syntax error: what was expected and what was found, at a location in the source.
-#[derive(Clone, Debug, PartialEq, Eq, thiserror::Error)]
-#[error("{message}")]
+///
+/// An error of a parse that had its text ([`Poly::parse`](crate::Poly::parse),
+/// [`parse_expr`](crate::syntax::parse_expr)) keeps the line it is in, so that it says where on
+/// its own, wherever `?` takes it (a `Box<dyn Error>`, an `anyhow::Error`): its `Display` is
+/// [`ParseError::render`]'s, `line L, column C: message`, the line and a caret under the
+/// offending text. One made without its text ([`ParseError::new`]) shows its message alone.
+///
+/// ```
+/// use trigpoly::{Expr, VarSet};
+///
+/// let vars = VarSet::builder().coordinate("x").momentum("p_x").build().unwrap();
+/// let err = Expr::parse(&vars, "p_x^2/2 + q*x").unwrap_err();
+/// assert_eq!(err.message, "unknown name 'q' (known: x, p_x)");
+/// assert_eq!(
+///     err.to_string(),
+///     "line 1, column 11: unknown name 'q' (known: x, p_x)\n  p_x^2/2 + q*x\n            ^"
+/// );
+/// let boxed: Box<dyn std::error::Error> = err.into();
+/// assert!(boxed.to_string().ends_with("^"));
+/// ```
+#[derive(Clone, Debug, PartialEq, Eq)]
 pub struct ParseError {
     /// The offending part of the source (empty at the end of the input).
     pub span: Span,
     /// Human-readable description, without location information.
     pub message: String,
+    /// The place of `span` in the source and its line, when the error knows its source.
+    excerpt: Option<Box<Excerpt>>,
 }
 
 impl ParseError {
@@ -39,7 +60,25 @@ impl ParseError {
         ParseError {
             span,
             message: message.into(),
+            excerpt: None,
         }
+    }
+
+    /// The same error, knowing its source `src`: its line, column and the line it is in, which
+    /// its `Display` then shows. An error that knows its source already keeps it (the text of
+    /// an inner parse is the text that was parsed).
+    #[must_use]
+    pub fn in_source(mut self, src: &str) -> Self {
+        if self.excerpt.is_none() {
+            self.excerpt = Some(Box::new(Excerpt::of(src, self.span)));
+        }
+        self
+    }
+
+    /// The line, column and source line of the error, if it knows its source
+    /// ([`ParseError::in_source`]).
+    pub fn excerpt(&self) -> Option<&Excerpt> {
+        self.excerpt.as_deref()
     }
 
     /// 1-based line and column (column counted in characters, not bytes) of `span.start` in `src`.
@@ -53,18 +92,35 @@ impl ParseError {
     /// long line is shown as a window around the caret ([`Excerpt`]).
     #[must_use]
     pub fn render(&self, src: &str) -> String {
-        let excerpt = Excerpt::of(src, self.span);
-        format!(
-            "line {}, column {}: {}\n  {}\n  {}{}",
-            excerpt.line,
-            excerpt.column,
-            self.message,
-            excerpt.text,
-            excerpt.pad,
-            "^".repeat(excerpt.width)
-        )
+        rendered(&self.message, &Excerpt::of(src, self.span))
     }
 }
+
+/// `line L, column C: message`, the line and the caret.
+fn rendered(message: &str, excerpt: &Excerpt) -> String {
+    format!(
+        "line {}, column {}: {}\n  {}\n  {}{}",
+        excerpt.line,
+        excerpt.column,
+        message,
+        excerpt.text,
+        excerpt.pad,
+        "^".repeat(excerpt.width)
+    )
+}
+
+/// The message with its place, line and caret when the error knows its source
+/// ([`ParseError::render`]); else the message alone.
+impl std::fmt::Display for ParseError {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        match &self.excerpt {
+            Some(excerpt) => f.write_str(&rendered(&self.message, excerpt)),
+            None => f.write_str(&self.message),
+        }
+    }
+}
+
+impl std::error::Error for ParseError {}
 
 /// A source line longer than this many characters is shown as a window around the error.
 const EXCERPT_CHARS: usize = 100;

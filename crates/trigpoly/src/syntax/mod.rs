@@ -298,7 +298,9 @@ mod tests {
         let src = "1 + 12.75*x";
         let err = parse_expr(src).unwrap_err();
         assert!(err.render(src).ends_with("\n  1 + 12.75*x\n      ^^^^^"));
-        assert_eq!(err.to_string(), err.message);
+        // It knows its source: its Display is the rendering.
+        assert_eq!(err.to_string(), err.render(src));
+        assert_eq!(ParseError::new(Span::new(0, 1), "m").to_string(), "m");
         // Out-of-range or mid-character spans do not panic.
         let err = ParseError::new(Span::new(99, 2), "m");
         assert_eq!(err.render("é"), "line 1, column 2: m\n  é\n   ^");

@@ -110,8 +110,14 @@ pub enum ExprKind {
 ///
 /// # Errors
 ///
-/// Returns the first lexical or syntax error in `src` (see [`ParseError::render`] to show it).
+/// Returns the first lexical or syntax error in `src`, which knows its place in `src` (its
+/// `Display` shows the line and a caret).
 pub fn parse_expr(src: &str) -> Result<Expr, ParseError> {
+    parse_source(src).map_err(|e| e.in_source(src))
+}
+
+/// [`parse_expr`], its error without its source.
+fn parse_source(src: &str) -> Result<Expr, ParseError> {
     let mut lexer = Lexer::new(src);
     let tok = lexer.next_token()?;
     let mut p = Parser {
