@@ -396,7 +396,7 @@ fn search_poisson(
     values: &[(&str, i64, i64)],
     when: Option<&str>,
 ) -> SearchResult {
-    let sys = &file.system;
+    let sys = file.system();
     let mut options = SearchOptions::new(SearchSpace::new(0, 0, 0).poisson_degree(degree));
     for &(name, num, den) in values {
         options = options.fix(sys.var(name), Rational::new(num, den));
@@ -421,8 +421,8 @@ fn at_found_values(
         .iter()
         .map(|&n| {
             let f = match n {
-                "H" => file.system.hamiltonian(),
-                _ => file.system.get(n).expect("a named function"),
+                "H" => file.system().hamiltonian(),
+                _ => file.system().get(n).expect("a named function"),
             };
             let mut f = fix_parameters(f, &found.parameters).unwrap();
             if let Some(w) = when {
@@ -458,7 +458,7 @@ fn euler_top_search_finds_the_casimir_and_the_energy() {
     assert_eq!(isotropic.basis.len(), 10);
     // Kept symbolic, the moments give the integrals for every value: over the polynomials in
     // them, 1, |M|² and one combination with H generate every integral.
-    let sys = &top.system;
+    let sys = top.system();
     let mut options = SearchOptions::new(
         SearchSpace::new(0, 0, 0)
             .poisson_degree(2)
