@@ -185,11 +185,16 @@ impl Condition {
                     true => format!("{name} − ({value})"),
                     false => name,
                 };
+                // The rotor's resonance is the example where the system has an angle to
+                // resonate with; elsewhere the rule is said as it is.
+                let kept = match vars.angles().next() {
+                    Some(_) => "p_θ at a resonance p_θ = mIω/n, where {p_θ, H} = 0",
+                    None => "those whose bracket with H vanishes on the surface",
+                };
                 return Err(EngineError::Invalid(format!(
                     "the flow leaves the surface {}: there {{{level}, H}} = {rate}, not 0, so \
                      what is conserved on it is no integral; a condition may set parameters, \
-                     and variables the flow keeps (p_θ at a resonance p_θ = mIω/n, where \
-                     {{p_θ, H}} = 0)",
+                     and variables the flow keeps ({kept})",
                     self.text
                 )));
             }
