@@ -8,9 +8,16 @@ pub enum AlgebraError {
     /// Division by zero.
     #[error("division by zero")]
     DivisionByZero,
-    /// Division by a polynomial that is not a single term.
-    #[error("cannot divide by {0}: only division by a nonzero constant or a single term (monomial) is exact here")]
-    NotAMonomial(String),
+    /// Division by a polynomial that is neither a single term nor a product of powers of
+    /// declared denominators: the divisor as shown, and in ASCII, for the declaration the
+    /// message suggests.
+    #[error("cannot divide by {shown}: only division by a nonzero constant, a single term (monomial) or a product of powers of declared denominators is exact here; declare it (or its factors) as a denominator: denominators = [\"{ascii}\"] in [phase_space]")]
+    NotAMonomial {
+        /// The divisor as shown.
+        shown: String,
+        /// The divisor in ASCII.
+        ascii: String,
+    },
     /// Division by a function of an angle that is not a single `e^{ikθ}` (it prints as one
     /// term, `cos²φ`, but is a sum of exponentials).
     #[error("cannot divide by {0}: cos and sin of an angle are sums of exponentials, which are not invertible here; only division by a nonzero constant, a single term in the other variables, or exp(i*k*angle) is exact")]

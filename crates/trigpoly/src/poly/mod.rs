@@ -10,6 +10,7 @@ mod arith;
 mod calculus;
 mod complex;
 mod dense;
+mod denominators;
 mod gather;
 mod hashed;
 mod index;
