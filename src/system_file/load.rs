@@ -856,9 +856,10 @@ impl<'a> Builder<'a> {
                 ));
             }
             builder = builder.denominator(&value.to_ascii(), &value.to_string(), &value.to_latex());
-            vars = builder.clone().build().map_err(|e| {
-                self.error(ErrorKind::Expression, d.span(), e.to_string())
-            })?;
+            vars = builder
+                .clone()
+                .build()
+                .map_err(|e| self.error(ErrorKind::Expression, d.span(), e.to_string()))?;
         }
         Ok(vars)
     }

@@ -209,6 +209,26 @@ impl PhaseSpace {
         &self.atoms
     }
 
+    /// Refuses `what` (a command's work) on a space with denominator atoms: its linear algebra
+    /// or its evaluation treats the monomials as independent, and with an atom `v = 1/D` they
+    /// are not (`v · D = 1`), so its answer could be wrong.
+    pub fn refuse_denominators(&self, what: &str) -> Result<(), EngineError> {
+        if self.atoms.is_empty() {
+            return Ok(());
+        }
+        let names: Vec<&str> = self
+            .atoms
+            .iter()
+            .map(|(v, _)| self.vars.variable(*v).unicode())
+            .collect();
+        Err(EngineError::Invalid(format!(
+            "{what} is not supported on a system with denominators ({}): its linear algebra \
+             takes monomials as independent, and with 1/D they are not; check, bracket and \
+             expand decide exactly by clearing denominators",
+            names.join(", ")
+        )))
+    }
+
     /// The space with the brackets `{a, b} = value` declared, by the variables' names (these
     /// and no others: brackets declared before are replaced); the pairs not given have
     /// bracket 0. Refused: a pair given twice (in either order), a

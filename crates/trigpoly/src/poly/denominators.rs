@@ -44,10 +44,7 @@ impl<C: Coefficient> Poly<C> {
     pub(crate) fn inverse_by_atoms(d: &Self) -> Result<Option<Self>, AlgebraError> {
         let vars = d.vars.clone();
         let atoms = Self::denominator_atoms(&vars)?;
-        if atoms.is_empty()
-            || d.is_zero()
-            || atoms.iter().any(|&(v, _)| d.contains(v))
-        {
+        if atoms.is_empty() || d.is_zero() || atoms.iter().any(|&(v, _)| d.contains(v)) {
             return Ok(None);
         }
         let spans = |p: &Self| -> Vec<i64> {

@@ -9,8 +9,8 @@
 mod arith;
 mod calculus;
 mod complex;
-mod dense;
 mod denominators;
+mod dense;
 mod gather;
 mod hashed;
 mod index;
