@@ -9,14 +9,15 @@ pub enum AlgebraError {
     #[error("division by zero")]
     DivisionByZero,
     /// Division by a polynomial that is neither a single term nor a product of powers of
-    /// declared denominators: the divisor as shown, and in ASCII, for the declaration the
-    /// message suggests.
-    #[error("cannot divide by {shown}: only division by a nonzero constant, a single term (monomial) or a product of powers of declared denominators is exact here; declare it (or its factors) as a denominator: denominators = [\"{ascii}\"] in [phase_space]")]
+    /// declared denominators: the divisor as shown, and the declaration that would make the
+    /// division exact.
+    #[error("cannot divide by {shown}: only division by a nonzero constant, a single term (monomial) or a product of powers of declared denominators is exact here; {declare}")]
     NotAMonomial {
-        /// The divisor as shown.
+        /// The divisor as shown (a long one by its size).
         shown: String,
-        /// The divisor in ASCII.
-        ascii: String,
+        /// What to declare: `declare it (or its factors) as a denominator: denominators =
+        /// ["x + 1"] in [phase_space]`, without the text of a long divisor.
+        declare: String,
     },
     /// Division by a function of an angle that is not a single `e^{ikθ}` (it prints as one
     /// term, `cos²φ`, but is a sum of exponentials).

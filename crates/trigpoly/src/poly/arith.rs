@@ -86,7 +86,7 @@ impl<C: Coefficient> Poly<C> {
             } else {
                 AlgebraError::NotAMonomial {
                     shown: d.brief(),
-                    ascii: d.to_ascii(),
+                    declare: d.declaration(),
                 }
             });
         }

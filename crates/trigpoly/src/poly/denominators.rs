@@ -17,17 +17,46 @@ const MAX_CANDIDATES: usize = 4096;
 
 impl<C: Coefficient> Poly<C> {
     /// The denominator atoms of `vars` with the polynomials they stand for, in declaration
-    /// order (none for a set without them).
+    /// order (none for a set without them). Refused: a definition that does not read, or reads
+    /// as zero, a single term or an expression with atoms (its clearing would be wrong).
     pub fn denominator_atoms(vars: &Vars) -> Result<Vec<(Var, Self)>, AlgebraError> {
-        vars.vars()
+        let atoms: Vec<Var> = vars
+            .vars()
             .filter(|&v| vars.variable(v).kind() == VarKind::Denominator)
-            .map(|v| {
+            .collect();
+        atoms
+            .iter()
+            .map(|&v| {
                 let text = vars.variable(v).name();
-                Self::parse(vars, text)
-                    .map(|d| (v, d))
-                    .map_err(|e| AlgebraError::Invalid(format!("the denominator {text}: {e}")))
+                let invalid =
+                    |why: String| AlgebraError::Invalid(format!("the denominator {text} {why}"));
+                let d =
+                    Self::parse(vars, text).map_err(|e| invalid(format!("does not read: {e}")))?;
+                if d.is_zero() || d.is_monomial() {
+                    return Err(invalid("is zero or a single term, not a sum".into()));
+                }
+                if atoms.iter().any(|&w| d.contains(w)) {
+                    return Err(invalid("has a denominator of several terms".into()));
+                }
+                Ok((v, d))
             })
             .collect()
+    }
+
+    /// What to declare to divide by `self`, as a refused division says: the polynomial in
+    /// ASCII when it is short, its factors otherwise.
+    pub(crate) fn declaration(&self) -> String {
+        let ascii = match self.len() <= 8 {
+            true => Some(self.to_ascii()).filter(|a| a.len() <= 80),
+            false => None,
+        };
+        match ascii {
+            Some(a) => format!(
+                "declare it (or its factors) as a denominator: denominators = [\"{a}\"] in \
+                 [phase_space]"
+            ),
+            None => "declare its factors as denominators in [phase_space]".into(),
+        }
     }
 
     /// Whether the set declares denominator atoms.
@@ -212,6 +241,17 @@ mod tests {
         assert!(e("x/(x^2*(x - y))*(x - y)*x - 1").vanishes().unwrap());
         assert!(Expr::parse(&vars, "1/(x + y)").is_err());
         assert!(Expr::parse(&vars, "1/(x - y + z)").is_err());
+    }
+
+    #[test]
+    fn a_denominator_that_is_a_term_is_refused() {
+        let vars = VarSet::builder()
+            .coordinate("x")
+            .denominator("2*x", "2x", "2 x")
+            .build()
+            .unwrap();
+        let err = Expr::denominator_atoms(&vars).unwrap_err().to_string();
+        assert!(err.contains("(2*x) is zero or a single term"), "{err}");
     }
 
     #[test]

@@ -400,8 +400,9 @@ fn a_long_divisor_is_named_by_its_size() {
     let long = Poly::<Rational>::parse(&vars, "x/(1 + x)^20").expect_err("not a monomial");
     assert_eq!(
         long.message,
-        "cannot divide by a polynomial of 21 terms: only division by a nonzero constant or a \
-         single term (monomial) is exact here"
+        "cannot divide by a polynomial of 21 terms: only division by a nonzero constant, a \
+         single term (monomial) or a product of powers of declared denominators is exact here; \
+         declare its factors as denominators in [phase_space]"
     );
     let power = Poly::<Rational>::parse(&vars, "(1 + x + y)^(-1)").expect_err("not invertible");
     assert_eq!(
