@@ -147,8 +147,7 @@ fn denominators_bad_declarations_are_refused_at_their_place() {
 fn denominators_undeclared_division_names_the_fix() {
     let text = TWO_BODY.replace("denominators = [\"x - y\", \"x^2 + y^2\"]", "");
     let err = load_str("two.toml", &text, &LimitsOverride::default())
-        .err()
-        .expect("refused")
+        .expect_err("refused")
         .to_string();
     assert!(
         err.starts_with("two.toml:2:38: cannot divide by x² − 2xy + y²"),
