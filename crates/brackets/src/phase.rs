@@ -554,3 +554,41 @@ impl PhaseSpace {
         Ok(out)
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::PhaseSpace;
+    use trigpoly::{Expr, VarSet};
+
+    /// A space built in code with the atom `1/(x − y)`: the chain rule, and the Jacobi
+    /// identity of brackets that involve it, decided by clearing.
+    #[test]
+    fn an_atoms_brackets_are_the_chain_rule_and_poisson() {
+        let vars = VarSet::builder()
+            .coordinate("x")
+            .coordinate("y")
+            .momentum("p_x")
+            .momentum("p_y")
+            .denominator("x - y", "x − y", "x - y")
+            .build()
+            .unwrap();
+        let space = PhaseSpace::new(&vars, &[("x", "p_x"), ("y", "p_y")]).unwrap();
+        assert_eq!(space.denominator_atoms().len(), 1);
+        assert!(space.declared_brackets().is_empty());
+        let e = |s: &str| Expr::parse(&vars, s).unwrap();
+        let b = |f: &Expr, g: &Expr| space.bracket(f, g).unwrap();
+        assert_eq!(b(&e("1/(x - y)"), &e("p_x")), e("-1/(x - y)^2"));
+        assert_eq!(b(&e("1/(x - y)^2"), &e("p_y")), e("2/(x - y)^3"));
+        // {x/(x − y), p_x} = −y/(x − y)², written otherwise by the chain rule.
+        let d = &b(&e("x/(x - y)"), &e("p_x")) - &e("-y/(x - y)^2");
+        assert!(!d.is_zero() && d.vanishes().unwrap());
+        let (f, g, h) = (
+            e("p_x^2/(x - y)"),
+            e("x p_y + 1/(x - y)^2"),
+            e("p_x p_y/(x - y)"),
+        );
+        let jacobi = &(&b(&f, &b(&g, &h)) + &b(&g, &b(&h, &f))) + &b(&h, &b(&f, &g));
+        assert!(jacobi.vanishes().unwrap());
+        assert!(space.refuse_denominators("a test").is_err());
+    }
+}
