@@ -11,7 +11,7 @@ use brackets::{EngineError, PhaseSpace, System};
 use toml::Spanned;
 use trigpoly::{
     display_forms, is_identifier, latex_unwritable, unbarred, AlgebraError, Expr, Limits, Span,
-    Var, VarSet, Vars, LATEX_LETTERS, RESERVED,
+    Var, VarSet, VarSetBuilder, Vars, LATEX_LETTERS, RESERVED,
 };
 
 use super::claims::ClaimSpec;
@@ -821,6 +821,49 @@ impl<'a> Builder<'a> {
         Ok(())
     }
 
+    /// The variables with the denominator atoms of `[phase_space] denominators` added, one at
+    /// a time, each read in the variables with the atoms before it. Refused: a text that does
+    /// not read, zero, a single term (division by one is exact already), a polynomial that is
+    /// not real, and one that is a product of those declared before it (times a term).
+    fn denominators(
+        &self,
+        declared: &[Spanned<String>],
+        builder: VarSetBuilder,
+        mut vars: Vars,
+    ) -> Result<Vars, FileError> {
+        let mut builder = builder;
+        for d in declared {
+            let text = self.text(d);
+            let value = Expr::parse(&vars, &text.value)
+                .map_err(|e| super::scope::expression_error(&self.source, &text, &e))?;
+            let refuse = |why: String| Err(self.error(ErrorKind::Expression, d.span(), why));
+            if value.is_zero() {
+                return refuse("a denominator cannot be 0".into());
+            }
+            if value.is_monomial() {
+                return refuse(format!(
+                    "{value} is a single term: division by it is exact already, so declare \
+                     only sums (such as \"x - y\") as denominators"
+                ));
+            }
+            if value.conj() != value {
+                return refuse(format!("the denominator {value} is not real"));
+            }
+            if Expr::one(&vars).checked_div(&value).is_ok() {
+                return refuse(format!(
+                    "{value} is a product of the denominators declared before it (times a \
+                     term): division by it is exact already"
+                ));
+            }
+            builder = builder.denominator(&value.to_ascii(), &value.to_string(), &value.to_latex());
+            vars = builder
+                .clone()
+                .build()
+                .map_err(|e| self.error(ErrorKind::Expression, d.span(), e.to_string()))?;
+        }
+        Ok(vars)
+    }
+
     fn build(mut self, model: SystemModel) -> Result<LoadedSystem, FileError> {
         let ps = model.phase_space.get_ref();
         if ps.coordinates.is_empty() && ps.angles.is_empty() && ps.variables.is_empty() {
@@ -884,6 +927,7 @@ impl<'a> Builder<'a> {
                 .map(|n| n.get_ref().as_str())
         }));
         let span = model.phase_space.span();
+        let with_atoms = builder.clone();
         let vars = builder.build().map_err(|e| {
             // Two names that one spelling finds (`omega` and `ω`), or that LaTeX prints
             // alike (`x1` and `x₁`): shown at the second.
@@ -901,6 +945,7 @@ impl<'a> Builder<'a> {
             };
             self.error(ErrorKind::Name, at.unwrap_or(span.clone()), e.to_string())
         })?;
+        let vars = self.denominators(&ps.denominators, with_atoms, vars)?;
         let pairs: Vec<(String, String)> = qs
             .iter()
             .map(|q| (q.get_ref().clone(), format!("p_{}", q.get_ref())))

@@ -69,6 +69,9 @@ pub(crate) struct PhaseSpaceModel {
     pub parameters: Vec<Spanned<String>>,
     #[serde(default)]
     pub variables: Vec<Spanned<String>>,
+    /// Polynomials that expressions may divide by (`"x - y"`), each a denominator atom.
+    #[serde(default)]
+    pub denominators: Vec<Spanned<String>>,
 }
 
 /// The `[poisson]` table: `"{M1, M2}" = "M3"`, each key and value with its span, in the

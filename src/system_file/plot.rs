@@ -98,6 +98,12 @@ impl LoadedSystem {
         from: &[String],
         functions: PlotFunctions<'_>,
     ) -> Result<PlotInput, FileError> {
+        // Pictures are computed in floating point from the exact equations, which for an atom
+        // would need its rate, not formed here.
+        self.system
+            .space()
+            .refuse_denominators("a plot")
+            .map_err(|e| self.computation_error(&e))?;
         let (values, parameters) = match at {
             Some(at) => self.parameter_values(at)?,
             None => (Values::new(), String::new()),

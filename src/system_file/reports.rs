@@ -228,6 +228,13 @@ fn equations_at(
                     .map_err(|e| file.computation_error(&e))?,
                 None => value,
             };
+            // Over a common denominator, so that a value that is zero shows as 0.
+            let value = match Expr::has_denominator_atoms(value.vars()) {
+                true => value
+                    .over_common_denominator()
+                    .map_err(|e| file.computation_error(&e.into()))?,
+                false => value,
+            };
             Ok(Equation::new(&lhs, value))
         })
         .collect::<Result<_, FileError>>()?;

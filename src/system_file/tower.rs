@@ -354,6 +354,10 @@ pub fn family_tower_report_with_progress(
     when: Option<&Condition>,
     progress: &mut dyn FnMut(usize, usize),
 ) -> Result<Report, FileError> {
+    file.system
+        .space()
+        .refuse_denominators("a family's tower")
+        .map_err(|e| file.computation_error(&e))?;
     let start = Instant::now();
     // Parameters only: substituting them commutes with the bracket, so the lemma holds at
     // their values as it does everywhere.

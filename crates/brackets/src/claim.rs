@@ -84,6 +84,11 @@ impl Condition {
                 "the condition sets {name} twice"
             )));
         }
+        Condition {
+            text: text.to_string(),
+            subs: subs.clone(),
+        }
+        .keeps_denominators()?;
         let sets = |e: &Expr, subs: &[(Var, Expr)]| subs.iter().any(|(v, _)| e.contains(*v));
         // A chain of k substitutions resolves in k rounds; what is left after as many rounds
         // as there are substitutions goes round a cycle.
@@ -154,7 +159,29 @@ impl Condition {
 
     /// Applies the substitution.
     pub fn apply(&self, e: &Expr) -> Result<Expr, EngineError> {
+        self.keeps_denominators()?;
         Ok(e.subst_many(&self.subs)?)
+    }
+
+    /// Refuses a condition that sets a variable a denominator atom's polynomial involves: the
+    /// atom `1/(x − y)` would keep standing for `1/(x − y)`, not its value at the condition
+    /// (which may be `1/0`).
+    pub fn keeps_denominators(&self) -> Result<(), EngineError> {
+        let Some((_, first)) = self.subs.first() else {
+            return Ok(());
+        };
+        for (atom, d) in Expr::denominator_atoms(first.vars())? {
+            if let Some((v, _)) = self.subs.iter().find(|(v, _)| d.contains(*v)) {
+                let vars = first.vars();
+                return Err(EngineError::Invalid(format!(
+                    "the condition sets {}, which the denominator {} involves: a condition on \
+                     a denominator's variables is not supported",
+                    vars.variable(*v).unicode(),
+                    vars.variable(atom).unicode()
+                )));
+            }
+        }
+        Ok(())
     }
 
     /// Refuses the condition where the flow of `system`'s Hamiltonian leaves the surface it
@@ -366,10 +393,14 @@ impl Claim {
     pub fn check(&self) -> Result<Verdict, EngineError> {
         let start = Instant::now();
         let residual = self.residual()?;
-        let outcome = if residual.is_zero() {
+        // With denominator atoms, zero is decided by clearing them, and a residual shown over
+        // a common denominator, whose numerator is then plainly not zero.
+        let outcome = if residual.vanishes()? {
             Outcome::Proved
         } else {
-            Outcome::Refuted { residual }
+            Outcome::Refuted {
+                residual: residual.over_common_denominator()?,
+            }
         };
         Ok(Verdict {
             id: self.id.clone(),

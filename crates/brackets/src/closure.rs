@@ -308,6 +308,9 @@ pub fn closure_of(
     generators: &[NamedFunction],
     options: &ClosureOptions,
 ) -> Result<Closure, EngineError> {
+    system
+        .space()
+        .refuse_denominators("the closure of an algebra")?;
     let start = Instant::now();
     let mut timings = ClosureTimings::default();
     let twice = (1..generators.len())

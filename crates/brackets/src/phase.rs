@@ -2,6 +2,13 @@
 //! brackets are declared (a Lie–Poisson structure such as `{M₁, M₂} = M₃`). The bracket is
 //! `{f, g} = Σ_i (∂f/∂q_i ∂g/∂p_i − ∂f/∂p_i ∂g/∂q_i) + Σ_{a<b} {a, b} (∂f/∂a ∂g/∂b − ∂f/∂b ∂g/∂a)`,
 //! the second sum over the declared brackets, so `{q, p} = 1` and `{f, H} = df/dt`.
+//!
+//! A denominator atom `v` (a variable standing for a polynomial `D`, whose negative powers are
+//! `1/D^k`) enters as one more declared variable: `{v, z} = {D, z}` for every phase variable
+//! `z` and `{v, w} = {D, E}` for two atoms, so that the sum above is the chain rule
+//! `∂(v^{−k})/∂z = −k v^{−k−1} ∂D/∂z`. These brackets are a Poisson bracket on the ring with
+//! `v` free (`v − D` is a Casimir of it), and the map `v ↦ D` respects it, so no Jacobi check
+//! is needed for them; results are decided zero by `Poly::vanishes`.
 
 use trigpoly::{Expr, Var, VarKind, Vars};
 
@@ -98,8 +105,13 @@ pub struct PhaseSpace {
     poisson: Vec<Var>,
     /// The declared brackets that are not zero, each pair once.
     declared: Vec<DeclaredBracket>,
-    /// The variables the declared brackets involve, in the order of [`PhaseSpace::coordinates`].
+    /// The variables the declared brackets involve, in the order of [`PhaseSpace::coordinates`],
+    /// then the denominator atoms.
     involved: Vec<Var>,
+    /// The denominator atoms and the polynomials they stand for.
+    atoms: Vec<(Var, Expr)>,
+    /// How many of `declared` (the first ones) were given; the rest are the atoms'.
+    given: usize,
 }
 
 impl PhaseSpace {
@@ -134,7 +146,7 @@ impl PhaseSpace {
             }
             out.push(CanonicalPair { q: qv, p: pv });
         }
-        Ok(PhaseSpace {
+        let mut space = PhaseSpace {
             vars: vars.clone(),
             var_pairs: out.iter().map(|c| (c.q, c.p)).collect(),
             pairs: out,
@@ -144,7 +156,77 @@ impl PhaseSpace {
                 .collect(),
             declared: Vec::new(),
             involved: Vec::new(),
-        })
+            atoms: Expr::denominator_atoms(vars)?,
+            given: 0,
+        };
+        space.declare_atoms()?;
+        Ok(space)
+    }
+
+    /// Adds the brackets of the denominator atoms to the declared ones: `{v, z} = {D, z}` for
+    /// each phase variable `z`, and `{v, w} = {D, E}` for two atoms, each formed with the
+    /// brackets declared before them (the atoms' polynomials have no atoms).
+    fn declare_atoms(&mut self) -> Result<(), EngineError> {
+        self.declared.truncate(self.given);
+        self.given = self.declared.len();
+        self.update_involved();
+        if self.atoms.is_empty() {
+            return Ok(());
+        }
+        let mut extra = Vec::new();
+        for (k, (v, d)) in self.atoms.iter().enumerate() {
+            for z in self.coordinates() {
+                let value = self.bracket(d, &Expr::var(&self.vars, z))?;
+                extra.push((*v, z, value));
+            }
+            for (w, e) in &self.atoms[k + 1..] {
+                extra.push((*v, *w, self.bracket(d, e)?));
+            }
+        }
+        for (a, b, value) in extra {
+            if !value.is_zero() {
+                self.declared.push(DeclaredBracket { a, b, value });
+            }
+        }
+        self.update_involved();
+        Ok(())
+    }
+
+    /// The variables the declared brackets involve: the phase variables in their order, then
+    /// the atoms.
+    fn update_involved(&mut self) {
+        let declared = &self.declared;
+        self.involved = self
+            .coordinates()
+            .into_iter()
+            .chain(self.atoms.iter().map(|(v, _)| *v))
+            .filter(|&v| declared.iter().any(|d| d.a == v || d.b == v))
+            .collect();
+    }
+
+    /// The denominator atoms and the polynomials they stand for, in declaration order.
+    pub fn denominator_atoms(&self) -> &[(Var, Expr)] {
+        &self.atoms
+    }
+
+    /// Refuses `what` (a command's work) on a space with denominator atoms: its linear algebra
+    /// or its evaluation treats the monomials as independent, and with an atom `v = 1/D` they
+    /// are not (`v · D = 1`), so its answer could be wrong.
+    pub fn refuse_denominators(&self, what: &str) -> Result<(), EngineError> {
+        if self.atoms.is_empty() {
+            return Ok(());
+        }
+        let names: Vec<&str> = self
+            .atoms
+            .iter()
+            .map(|(v, _)| self.vars.variable(*v).unicode())
+            .collect();
+        Err(EngineError::Invalid(format!(
+            "{what} is not supported on a system with denominators ({}): its linear algebra \
+             takes monomials as independent, and with 1/D they are not; check, bracket and \
+             expand decide exactly by clearing denominators",
+            names.join(", ")
+        )))
     }
 
     /// The space with the brackets `{a, b} = value` declared, by the variables' names (these
@@ -158,6 +240,7 @@ impl PhaseSpace {
     pub fn with_brackets(mut self, brackets: &[(&str, &str, Expr)]) -> Result<Self, EngineError> {
         let vars = self.vars.clone();
         self.declared.clear();
+        self.given = 0;
         let mut given: Vec<(Var, Var)> = Vec::new();
         for (a, b, value) in brackets {
             let find = |n: &str| {
@@ -202,6 +285,12 @@ impl PhaseSpace {
                     "the value of {{{ua}, {ub}}} is over other variables than the phase space's"
                 )));
             }
+            if !value.is_free_of(VarKind::Denominator) {
+                return Err(EngineError::Invalid(format!(
+                    "{{{ua}, {ub}}} = {value} has a denominator: a declared bracket is a \
+                     polynomial"
+                )));
+            }
             if value.conj() != *value {
                 return Err(EngineError::Invalid(format!(
                     "{{{ua}, {ub}}} = {value} is not real: the bracket of two real variables \
@@ -216,12 +305,10 @@ impl PhaseSpace {
                 });
             }
         }
-        self.involved = self
-            .coordinates()
-            .into_iter()
-            .filter(|&v| self.declared.iter().any(|d| d.a == v || d.b == v))
-            .collect();
+        self.given = self.declared.len();
+        self.update_involved();
         self.check_jacobi()?;
+        self.declare_atoms()?;
         Ok(self)
     }
 
@@ -272,9 +359,10 @@ impl PhaseSpace {
         &self.poisson
     }
 
-    /// The declared brackets that are not zero, each pair once, in the order given.
+    /// The declared brackets that are not zero, each pair once, in the order given (not the
+    /// denominator atoms', which follow from their polynomials).
     pub fn declared_brackets(&self) -> &[DeclaredBracket] {
-        &self.declared
+        &self.declared[..self.given]
     }
 
     /// The variables.
@@ -456,14 +544,51 @@ impl PhaseSpace {
             out.push((v, Expr::zero(&self.vars)));
         }
         if !self.declared.is_empty() {
+            // A denominator atom is no phase variable: its rate follows from its polynomial's.
             for (v, x) in self.gradient(h)?.declared {
-                let (_, z) = out
-                    .iter_mut()
-                    .find(|(w, _)| *w == v)
-                    .expect("a declared bracket's variable is a phase variable");
-                *z = &*z + &x;
+                if let Some((_, z)) = out.iter_mut().find(|(w, _)| *w == v) {
+                    *z = &*z + &x;
+                }
             }
         }
         Ok(out)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::PhaseSpace;
+    use trigpoly::{Expr, VarSet};
+
+    /// A space built in code with the atom `1/(x − y)`: the chain rule, and the Jacobi
+    /// identity of brackets that involve it, decided by clearing.
+    #[test]
+    fn an_atoms_brackets_are_the_chain_rule_and_poisson() {
+        let vars = VarSet::builder()
+            .coordinate("x")
+            .coordinate("y")
+            .momentum("p_x")
+            .momentum("p_y")
+            .denominator("x - y", "x − y", "x - y")
+            .build()
+            .unwrap();
+        let space = PhaseSpace::new(&vars, &[("x", "p_x"), ("y", "p_y")]).unwrap();
+        assert_eq!(space.denominator_atoms().len(), 1);
+        assert!(space.declared_brackets().is_empty());
+        let e = |s: &str| Expr::parse(&vars, s).unwrap();
+        let b = |f: &Expr, g: &Expr| space.bracket(f, g).unwrap();
+        assert_eq!(b(&e("1/(x - y)"), &e("p_x")), e("-1/(x - y)^2"));
+        assert_eq!(b(&e("1/(x - y)^2"), &e("p_y")), e("2/(x - y)^3"));
+        // {x/(x − y), p_x} = −y/(x − y)², written otherwise by the chain rule.
+        let d = &b(&e("x/(x - y)"), &e("p_x")) - &e("-y/(x - y)^2");
+        assert!(!d.is_zero() && d.vanishes().unwrap());
+        let (f, g, h) = (
+            e("p_x^2/(x - y)"),
+            e("x p_y + 1/(x - y)^2"),
+            e("p_x p_y/(x - y)"),
+        );
+        let jacobi = &(&b(&f, &b(&g, &h)) + &b(&g, &b(&h, &f))) + &b(&h, &b(&f, &g));
+        assert!(jacobi.vanishes().unwrap());
+        assert!(space.refuse_denominators("a test").is_err());
     }
 }

@@ -77,6 +77,7 @@ const PRIMES: [i64; 16] = [2, 3, 5, 7, 11, 13, 17, 19, 23, 29, 31, 37, 41, 43, 4
 /// # Ok::<(), brackets::EngineError>(())
 /// ```
 pub fn rank(space: &PhaseSpace, functions: &[Expr]) -> Result<RankCertificate, EngineError> {
+    space.refuse_denominators("the rank of a Jacobian")?;
     let coords = space.coordinates();
     let jac: Vec<Vec<Expr>> = functions
         .iter()

@@ -1078,6 +1078,9 @@ fn primitive_vector(v: &SparseVec<Rational>) -> SparseVec<Rational> {
 /// # Ok::<(), brackets::EngineError>(())
 /// ```
 pub fn search(system: &System, options: &SearchOptions) -> Result<SearchResult, EngineError> {
+    system
+        .space()
+        .refuse_denominators("the search for integrals")?;
     // The search hands blocks of work to rayon's pool (images, blocks of equations, proofs):
     // it runs on a thread of the pool, which takes its share of each and, on a pool of one
     // thread, does it in place, where any other thread would wait for the pool's at each.

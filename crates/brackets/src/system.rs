@@ -209,6 +209,7 @@ impl System {
     /// where the condition's values are single terms, so that the flow off the condition is
     /// never built. The same value as [`Condition::apply`] on [`System::flow`].
     pub fn flow_when(&self, f: &Expr, condition: &Condition) -> Result<Expr, EngineError> {
+        condition.keeps_denominators()?;
         match &self.dh {
             Some(dh) => self.space.bracket_with_gradient_at(f, dh, condition.subs()),
             None => condition.apply(&self.flow(f)?),

@@ -58,6 +58,7 @@ pub struct BracketTable {
 impl BracketTable {
     /// Computes the table for named functions of `system`.
     pub fn compute(system: &System, names: &[&str]) -> Result<Self, EngineError> {
+        system.space().refuse_denominators("a bracket table")?;
         let funcs: Vec<Expr> = names
             .iter()
             .map(|n| system.get(n).cloned())

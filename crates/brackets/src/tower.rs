@@ -43,6 +43,7 @@ pub fn check_tower(
     max: i64,
     progress: &mut dyn FnMut(usize, usize),
 ) -> Result<TowerReport, EngineError> {
+    system.space().refuse_denominators("a tower")?;
     let start = Instant::now();
     system.require_rotor("the tower {K_{m,n}, H} = i(mω − nΩ) K_{m,n}")?;
     let omega = system.parse("omega")?;
@@ -118,6 +119,9 @@ impl EigenProof {
 /// # Ok::<(), brackets::EngineError>(())
 /// ```
 pub fn eigen_proof(system: &System, ladder: &str) -> Result<EigenProof, EngineError> {
+    system
+        .space()
+        .refuse_denominators("the all-m, n tower proof")?;
     system.require_rotor("the eigenfunction proof of the tower")?;
     let vars = system.vars();
     let theta = vars

@@ -8,9 +8,17 @@ pub enum AlgebraError {
     /// Division by zero.
     #[error("division by zero")]
     DivisionByZero,
-    /// Division by a polynomial that is not a single term.
-    #[error("cannot divide by {0}: only division by a nonzero constant or a single term (monomial) is exact here")]
-    NotAMonomial(String),
+    /// Division by a polynomial that is neither a single term nor a product of powers of
+    /// declared denominators: the divisor as shown, and the declaration that would make the
+    /// division exact.
+    #[error("cannot divide by {shown}: only division by a nonzero constant, a single term (monomial) or a product of powers of declared denominators is exact here; {declare}")]
+    NotAMonomial {
+        /// The divisor as shown (a long one by its size).
+        shown: String,
+        /// What to declare: `declare it (or its factors) as a denominator: denominators =
+        /// ["x + 1"] in [phase_space]`, without the text of a long divisor.
+        declare: String,
+    },
     /// Division by a function of an angle that is not a single `e^{ikθ}` (it prints as one
     /// term, `cos²φ`, but is a sum of exponentials).
     #[error("cannot divide by {0}: cos and sin of an angle are sums of exponentials, which are not invertible here; only division by a nonzero constant, a single term in the other variables, or exp(i*k*angle) is exact")]

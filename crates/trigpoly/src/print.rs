@@ -246,6 +246,7 @@ impl Names {
             VarKind::Coordinate | VarKind::Poisson => 1,
             VarKind::Momentum => 2,
             VarKind::Angle => 3,
+            VarKind::Denominator => 4,
         };
         let mut order: Vec<crate::varset::Var> = vars.vars().collect();
         order.sort_by_key(rank);

@@ -22,11 +22,16 @@ pub enum VarKind {
     /// A Poisson variable such as the angular momentum `M₁` of a top: a phase-space variable
     /// in no canonical pair, whose brackets are declared (the Lie–Poisson `{M₁, M₂} = M₃`).
     Poisson,
+    /// A denominator atom: a variable that stands for a polynomial `D` of the other variables
+    /// (named `(D)`, `(x - y)`), so that its negative powers are `1/D^k` and the Laurent
+    /// printer writes `g/(x − y)²`. Its brackets follow from `D`'s, and an element is zero
+    /// exactly when clearing it of its denominators leaves zero (`Poly::vanishes`).
+    Denominator,
 }
 
 impl VarKind {
     /// The kind in words, with its article, as messages name it: `a coordinate`, `a
-    /// momentum`, `a parameter`, `an angle`, `a Poisson variable`.
+    /// momentum`, `a parameter`, `an angle`, `a Poisson variable`, `a denominator`.
     pub fn described(self) -> &'static str {
         match self {
             VarKind::Coordinate => "a coordinate",
@@ -34,6 +39,7 @@ impl VarKind {
             VarKind::Parameter => "a parameter",
             VarKind::Angle => "an angle",
             VarKind::Poisson => "a Poisson variable",
+            VarKind::Denominator => "a denominator",
         }
     }
 }
@@ -639,6 +645,21 @@ impl VarSetBuilder {
     pub fn poisson(self, name: &str) -> Self {
         self.variable(name, VarKind::Poisson)
     }
+    /// Declares a denominator atom ([`VarKind::Denominator`]) standing for the polynomial
+    /// whose parseable ASCII form is `ascii` and whose text and LaTeX forms are `unicode` and
+    /// `latex`; its names are these in parentheses, `(x - y)`, which the parser never reads as
+    /// a name but reads back as `D` itself.
+    pub fn denominator(mut self, ascii: &str, unicode: &str, latex: &str) -> Self {
+        self.vars.push(Variable {
+            name: format!("({ascii})"),
+            spelled_out: None,
+            unicode: format!("({unicode})"),
+            latex: format!("({latex})"),
+            kind: VarKind::Denominator,
+            word: false,
+        });
+        self
+    }
     /// Shows the variable declared last as the name `display` would be shown (`A_x`, `A_{x}`
     /// in LaTeX, for a variable named `Ax`), when `display` is an identifier, possibly with a
     /// bar (a combining macron, `Z̄`) and primes (`G1'`, `G_{1}'`); otherwise, or with nothing
@@ -693,6 +714,15 @@ impl VarSetBuilder {
             )));
         }
         for (k, v) in self.vars.iter().enumerate() {
+            if v.kind == VarKind::Denominator {
+                if self.vars[..k].iter().any(|w| w.name == v.name) {
+                    return Err(AlgebraError::DeclaredTwice {
+                        name: v.name.clone(),
+                        first: v.name.clone(),
+                    });
+                }
+                continue;
+            }
             if !is_identifier(&v.name) || RESERVED.contains(&v.name.as_str()) {
                 return Err(AlgebraError::Invalid(format!(
                     "{:?} cannot name a variable (reserved or not an identifier)",

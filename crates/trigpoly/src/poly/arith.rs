@@ -68,19 +68,26 @@ impl<C: Coefficient> Poly<C> {
         self.clone() * q
     }
 
-    /// `self / d` where `d` is a nonzero constant or a single term; anything else is an error
-    /// (the quotient would not be a polynomial).
+    /// `self / d` where `d` is a nonzero constant or a single term, or (with denominator atoms
+    /// declared) such a term times a product of powers of the atoms' polynomials; anything
+    /// else is an error (the quotient would not be in the ring).
     pub fn checked_div(&self, d: &Self) -> Result<Self, AlgebraError> {
         self.same_vars(d)?;
         if d.is_zero() {
             return Err(AlgebraError::DivisionByZero);
         }
         if !d.is_monomial() {
+            if let Some(inverse) = Self::inverse_by_atoms(d)? {
+                return self.checked_mul(&inverse);
+            }
             // `r² cos²φ` prints as one term: say why it is not one.
             return Err(if d.has_angles() && d.one_monomial_but_for_angles() {
                 AlgebraError::NotAMonomialInAngles(d.brief())
             } else {
-                AlgebraError::NotAMonomial(d.brief())
+                AlgebraError::NotAMonomial {
+                    shown: d.brief(),
+                    declare: d.declaration(),
+                }
             });
         }
         self.checked_mul(&d.checked_pow(-1)?)

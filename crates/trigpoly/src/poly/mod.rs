@@ -9,6 +9,7 @@
 mod arith;
 mod calculus;
 mod complex;
+mod denominators;
 mod dense;
 mod gather;
 mod hashed;

@@ -46,6 +46,9 @@ impl<C: Coefficient> Poly<C> {
             return Ok(self.monomial_pow(e));
         }
         if e < 0 {
+            if let Some(inverse) = Self::inverse_by_atoms(self)? {
+                return inverse.checked_pow(-e);
+            }
             return Err(AlgebraError::NegativePower(self.brief()));
         }
         if e == 1 {

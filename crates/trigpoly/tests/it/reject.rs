@@ -51,10 +51,12 @@ fn cases() -> Vec<Case> {
         case(
             Q,
             "x/(1+x)",
-            "cannot divide by x + 1: only division by a nonzero constant or a single term (monomial) is exact here",
+            "cannot divide by x + 1: only division by a nonzero constant, a single term (monomial) or a product of powers of declared denominators is exact here; declare it (or its factors) as a denominator: denominators = [\"x + 1\"] in [phase_space]",
             (1, 3),
-            "line 1, column 3: cannot divide by x + 1: only division by a nonzero constant or a single \
-             term (monomial) is exact here\n  x/(1+x)\n    ^^^^^",
+            "line 1, column 3: cannot divide by x + 1: only division by a nonzero constant, a single \
+             term (monomial) or a product of powers of declared denominators is exact here; \
+             declare it (or its factors) as a denominator: denominators = [\"x + 1\"] in \
+             [phase_space]\n  x/(1+x)\n    ^^^^^",
         ),
         case(
             Q,
@@ -211,10 +213,12 @@ fn cases() -> Vec<Case> {
         case(
             Qi,
             "x +\n  1/(x + y)",
-            "cannot divide by x + y: only division by a nonzero constant or a single term (monomial) is exact here",
+            "cannot divide by x + y: only division by a nonzero constant, a single term (monomial) or a product of powers of declared denominators is exact here; declare it (or its factors) as a denominator: denominators = [\"x + y\"] in [phase_space]",
             (2, 5),
-            "line 2, column 5: cannot divide by x + y: only division by a nonzero constant or a single \
-             term (monomial) is exact here\n    1/(x + y)\n      ^^^^^^^",
+            "line 2, column 5: cannot divide by x + y: only division by a nonzero constant, a single \
+             term (monomial) or a product of powers of declared denominators is exact here; \
+             declare it (or its factors) as a denominator: denominators = [\"x + y\"] in \
+             [phase_space]\n    1/(x + y)\n      ^^^^^^^",
         ),
         case(
             Qi,
@@ -396,8 +400,9 @@ fn a_long_divisor_is_named_by_its_size() {
     let long = Poly::<Rational>::parse(&vars, "x/(1 + x)^20").expect_err("not a monomial");
     assert_eq!(
         long.message,
-        "cannot divide by a polynomial of 21 terms: only division by a nonzero constant or a \
-         single term (monomial) is exact here"
+        "cannot divide by a polynomial of 21 terms: only division by a nonzero constant, a \
+         single term (monomial) or a product of powers of declared denominators is exact here; \
+         declare its factors as denominators in [phase_space]"
     );
     let power = Poly::<Rational>::parse(&vars, "(1 + x + y)^(-1)").expect_err("not invertible");
     assert_eq!(

@@ -1,0 +1,276 @@
+//! Denominator atoms ([`VarKind::Denominator`]): a variable named `(D)` stands for the
+//! polynomial `D` of the other variables, so that its power `v^{−k}` is `1/D^k` and the ring is
+//! `Q[vars][1/D_1, …]`, a subring of the rational functions. Here: the atoms' definitions,
+//! division by a product of powers of them (`inverse_by_atoms`, which the parser's division
+//! reaches), and the exact zero test by clearing denominators (`cleared`, `vanishes`): with
+//! `N = max(0, −lowest exponent of v)`, `P` is zero iff `D^N · P`, that is `(v^N P)(v = D)`,
+//! is the zero polynomial, atom after atom. Equal elements may have different terms (`v · D`
+//! and `1`), so every decision of zero on a set with atoms goes through [`Poly::vanishes`].
+
+use super::Poly;
+use crate::error::AlgebraError;
+use crate::number::Coefficient;
+use crate::varset::{Var, VarKind, Vars};
+
+/// How many products of powers of atoms a division tries before it gives up.
+const MAX_CANDIDATES: usize = 4096;
+
+impl<C: Coefficient> Poly<C> {
+    /// The denominator atoms of `vars` with the polynomials they stand for, in declaration
+    /// order (none for a set without them). Refused: a definition that does not read, or reads
+    /// as zero, a single term or an expression with atoms (its clearing would be wrong).
+    pub fn denominator_atoms(vars: &Vars) -> Result<Vec<(Var, Self)>, AlgebraError> {
+        let atoms: Vec<Var> = vars
+            .vars()
+            .filter(|&v| vars.variable(v).kind() == VarKind::Denominator)
+            .collect();
+        atoms
+            .iter()
+            .map(|&v| {
+                let text = vars.variable(v).name();
+                let invalid =
+                    |why: String| AlgebraError::Invalid(format!("the denominator {text} {why}"));
+                let d =
+                    Self::parse(vars, text).map_err(|e| invalid(format!("does not read: {e}")))?;
+                if d.is_zero() || d.is_monomial() {
+                    return Err(invalid("is zero or a single term, not a sum".into()));
+                }
+                if atoms.iter().any(|&w| d.contains(w)) {
+                    return Err(invalid("has a denominator of several terms".into()));
+                }
+                Ok((v, d))
+            })
+            .collect()
+    }
+
+    /// What to declare to divide by `self`, as a refused division says: the polynomial in
+    /// ASCII when it is short, its factors otherwise.
+    pub(crate) fn declaration(&self) -> String {
+        let ascii = match self.len() <= 8 {
+            true => Some(self.to_ascii()).filter(|a| a.len() <= 80),
+            false => None,
+        };
+        match ascii {
+            Some(a) => format!(
+                "declare it (or its factors) as a denominator: denominators = [\"{a}\"] in \
+                 [phase_space]"
+            ),
+            None => "declare its factors as denominators in [phase_space]".into(),
+        }
+    }
+
+    /// Whether the set declares denominator atoms.
+    pub fn has_denominator_atoms(vars: &Vars) -> bool {
+        vars.vars()
+            .any(|v| vars.variable(v).kind() == VarKind::Denominator)
+    }
+
+    /// `1/d` when `d` is a nonzero constant times a monomial times a product of powers of the
+    /// atoms' polynomials (`(y − x)²` when `x − y` is an atom), written with the atoms; `None`
+    /// when it is not. The exponents are found from the spans `max − min` of each variable's
+    /// exponent, which add in a product (Newton polytopes add); each candidate is checked by
+    /// an exact product.
+    pub(crate) fn inverse_by_atoms(d: &Self) -> Result<Option<Self>, AlgebraError> {
+        let vars = d.vars.clone();
+        let atoms = Self::denominator_atoms(&vars)?;
+        if atoms.is_empty() || d.is_zero() || atoms.iter().any(|&(v, _)| d.contains(v)) {
+            return Ok(None);
+        }
+        let spans = |p: &Self| -> Vec<i64> {
+            vars.vars()
+                .map(|v| p.exponent_range(v).map_or(0, |(lo, hi)| hi - lo))
+                .collect()
+        };
+        let target = spans(d);
+        let atom_spans: Vec<Vec<i64>> = atoms.iter().map(|(_, a)| spans(a)).collect();
+        let mut candidates = Vec::new();
+        let mut ks = vec![0i64; atoms.len()];
+        exponents(&atom_spans, 0, target, &mut ks, &mut candidates);
+        for ks in candidates {
+            let mut product = Self::one(&vars);
+            for ((_, a), &k) in atoms.iter().zip(&ks) {
+                if k > 0 {
+                    product = product.checked_mul(&a.checked_pow(k)?)?;
+                }
+            }
+            let (Some(lead_d), Some(lead_p)) = (d.terms().next(), product.terms().next()) else {
+                continue;
+            };
+            let term = |t: super::Term<'_, C>| {
+                let powers: Vec<(Var, i64)> = vars.vars().zip(t.exponents()).collect();
+                Self::monomial(&vars, t.coeff(), &powers)
+            };
+            let ratio = term(lead_d)?.checked_div(&term(lead_p)?)?;
+            if ratio.checked_mul(&product)? != *d {
+                continue;
+            }
+            let mut inverse = ratio.checked_pow(-1)?;
+            for ((v, _), &k) in atoms.iter().zip(&ks) {
+                if k > 0 {
+                    inverse = inverse.checked_mul(&Self::var(&vars, *v).checked_pow(-k)?)?;
+                }
+            }
+            return Ok(Some(inverse));
+        }
+        Ok(None)
+    }
+
+    /// The element cleared of its denominators: `Π D^N · self` with every atom replaced by its
+    /// polynomial, `N` the largest power of `1/D` in `self` (a polynomial free of atoms; zero
+    /// exactly when `self` is zero, since `Q[vars][1/D]` embeds in the rational functions and
+    /// multiplying by `D^N ≠ 0` there is injective). Without atoms, `self`.
+    pub fn cleared(&self) -> Result<Self, AlgebraError> {
+        Ok(self.cleared_with_powers()?.0)
+    }
+
+    /// [`Poly::cleared`] and, for each atom, the power `N` of `D` it multiplied by.
+    fn cleared_with_powers(&self) -> Result<(Self, Vec<(Var, i64)>), AlgebraError> {
+        let mut p = self.clone();
+        let mut powers = Vec::new();
+        for (v, d) in Self::denominator_atoms(&self.vars)? {
+            let n = -p.low_degree(v).unwrap_or(0).min(0);
+            if n > 0 {
+                p = p.checked_mul(&Self::var(&self.vars, v).checked_pow(n)?)?;
+            }
+            p = p.subst(v, &d)?;
+            powers.push((v, n));
+        }
+        Ok((p, powers))
+    }
+
+    /// The element over a common denominator: its cleared numerator ([`Poly::cleared`]) times
+    /// `Π v^{−N}`, `N` the power of each atom cleared, so that whether it is zero shows (the
+    /// numerator is a polynomial in normal form). The same element; without atoms, `self`.
+    pub fn over_common_denominator(&self) -> Result<Self, AlgebraError> {
+        if !Self::has_denominator_atoms(&self.vars) {
+            return Ok(self.clone());
+        }
+        let (numerator, powers) = self.cleared_with_powers()?;
+        let mut out = numerator;
+        for (v, n) in powers {
+            if n > 0 && !out.is_zero() {
+                out = out.checked_mul(&Self::var(&self.vars, v).checked_pow(-n)?)?;
+            }
+        }
+        Ok(out)
+    }
+
+    /// The exact zero test of the ring with denominator atoms: whether the element cleared of
+    /// its denominators ([`Poly::cleared`]) is zero; [`Poly::is_zero`] on a set without atoms.
+    ///
+    /// ```
+    /// use trigpoly::{Expr, VarSet};
+    /// let vars = VarSet::builder()
+    ///     .coordinate("x")
+    ///     .coordinate("y")
+    ///     .denominator("x - y", "x − y", "x - y")
+    ///     .build()
+    ///     .unwrap();
+    /// let e = |s: &str| Expr::parse(&vars, s).unwrap();
+    /// assert!(e("(x - y)/(x - y) - 1").vanishes().unwrap());
+    /// assert!(!e("x/(x - y) - 1").vanishes().unwrap());
+    /// assert_eq!(e("x/(x - y) - 1").over_common_denominator().unwrap().to_string(), "y/(x − y)");
+    /// ```
+    pub fn vanishes(&self) -> Result<bool, AlgebraError> {
+        if self.is_zero() {
+            return Ok(true);
+        }
+        if !Self::has_denominator_atoms(&self.vars) {
+            return Ok(false);
+        }
+        Ok(self.cleared()?.is_zero())
+    }
+}
+
+/// Every vector of exponents `ks[i..]` whose spans add up to `remaining` exactly, into `out`
+/// (at most [`MAX_CANDIDATES`]).
+fn exponents(
+    spans: &[Vec<i64>],
+    i: usize,
+    remaining: Vec<i64>,
+    ks: &mut Vec<i64>,
+    out: &mut Vec<Vec<i64>>,
+) {
+    if out.len() >= MAX_CANDIDATES {
+        return;
+    }
+    if i == spans.len() {
+        if remaining.iter().all(|&r| r == 0) {
+            out.push(ks.clone());
+        }
+        return;
+    }
+    let most = spans[i]
+        .iter()
+        .zip(&remaining)
+        .filter(|(&s, _)| s > 0)
+        .map(|(&s, &r)| r / s)
+        .min()
+        .unwrap_or(0);
+    for k in 0..=most {
+        ks[i] = k;
+        let rest = remaining
+            .iter()
+            .zip(&spans[i])
+            .map(|(&r, &s)| r - k * s)
+            .collect();
+        exponents(spans, i + 1, rest, ks, out);
+    }
+    ks[i] = 0;
+}
+
+#[cfg(test)]
+mod tests {
+    use crate::{Expr, VarSet};
+
+    #[test]
+    fn division_by_powers_of_atoms_and_their_multiples() {
+        let vars = VarSet::builder()
+            .coordinate("x")
+            .coordinate("y")
+            .coordinate("z")
+            .denominator("x - y", "x − y", "x - y")
+            .denominator("x - z", "x − z", "x - z")
+            .build()
+            .unwrap();
+        let e = |s: &str| Expr::parse(&vars, s).unwrap();
+        assert_eq!(e("1/(x - y)^2").to_string(), "1/(x − y)²");
+        assert_eq!(e("3/(2*(y - x))").to_string(), "−3/(2 (x − y))");
+        assert_eq!(e("1/((x - y)*(x - z))"), e("1/(x - y) * 1/(x - z)"));
+        assert_eq!(e("(x - y)^-2"), e("1/(x - y)^2"));
+        assert!(e("x/(x^2*(x - y))*(x - y)*x - 1").vanishes().unwrap());
+        assert!(Expr::parse(&vars, "1/(x + y)").is_err());
+        assert!(Expr::parse(&vars, "1/(x - y + z)").is_err());
+    }
+
+    #[test]
+    fn a_denominator_that_is_a_term_is_refused() {
+        let vars = VarSet::builder()
+            .coordinate("x")
+            .denominator("2*x", "2x", "2 x")
+            .build()
+            .unwrap();
+        let err = Expr::denominator_atoms(&vars).unwrap_err().to_string();
+        assert!(err.contains("(2*x) is zero or a single term"), "{err}");
+    }
+
+    #[test]
+    fn clearing_decides_zero() {
+        let vars = VarSet::builder()
+            .coordinate("x")
+            .coordinate("y")
+            .denominator("x^2 + y^2", "x² + y²", "x^{2} + y^{2}")
+            .build()
+            .unwrap();
+        let e = |s: &str| Expr::parse(&vars, s).unwrap();
+        let f = e("x^2/(x^2 + y^2) + y^2/(x^2 + y^2) - 1");
+        assert!(!f.is_zero() && f.vanishes().unwrap());
+        let g = e("x^2/(x^2 + y^2) - 1");
+        assert!(!g.vanishes().unwrap());
+        assert_eq!(g.cleared().unwrap(), e("-y^2"));
+        assert_eq!(
+            g.over_common_denominator().unwrap().to_string(),
+            "−y²/(x² + y²)"
+        );
+    }
+}

@@ -1,0 +1,205 @@
+//! Denominator atoms: division by declared polynomials (`[phase_space] denominators`), the
+//! chain rule of their brackets, the zero test by clearing denominators, the Calogero–Moser
+//! claims, bad declarations, and the commands that refuse such systems.
+
+use std::process::Command;
+
+use superint::prelude::*;
+use superint::system_file::{load_str, LimitsOverride, LoadedSystem};
+
+use crate::scratch_text;
+
+const TWO_BODY: &str = "name = \"Calogero two-body\"\n\
+                        hamiltonian = \"(p_x^2 + p_y^2)/2 + g/(x - y)^2\"\n\
+                        [phase_space]\n\
+                        coordinates = [\"x\", \"y\"]\n\
+                        parameters = [\"g\"]\n\
+                        denominators = [\"x - y\", \"x^2 + y^2\"]\n\
+                        [[function]]\nname = \"P\"\nvalue = \"p_x + p_y\"\n";
+
+fn two_body() -> LoadedSystem {
+    load_str("two.toml", TWO_BODY, &LimitsOverride::default()).expect("the file loads")
+}
+
+/// Whether `lhs = rhs` is proved, both read through the system.
+fn holds(file: &LoadedSystem, lhs: &str, rhs: &str) -> bool {
+    let claim = Claim::new("t", "t", file.parse(lhs).unwrap(), file.parse(rhs).unwrap());
+    claim.check().unwrap().outcome.is_proved()
+}
+
+#[test]
+fn denominators_chain_rule_gives_the_brackets() {
+    let file = two_body();
+    assert!(holds(&file, "{1/(x - y), p_x}", "-1/(x - y)^2"));
+    assert!(holds(&file, "{1/(x - y), p_y}", "1/(x - y)^2"));
+    assert!(holds(&file, "{1/(x - y), x}", "0"));
+    assert!(holds(&file, "{p_x, g/(x - y)^2}", "2*g/(x - y)^3"));
+    assert!(holds(&file, "{p_x, 1/(x^2 + y^2)}", "2*x/(x^2 + y^2)^2"));
+    assert!(!holds(&file, "{1/(x - y), p_x}", "1/(x - y)^2"));
+    // Total momentum commutes with a function of x − y.
+    assert!(holds(&file, "{p_x + p_y, H}", "0"));
+    assert!(!holds(&file, "{p_x, H}", "0"));
+}
+
+#[test]
+fn denominators_zero_is_decided_by_clearing() {
+    let file = two_body();
+    assert!(holds(&file, "(x - y)/(x - y) - 1", "0"));
+    assert!(holds(&file, "(y - x)/(x - y)", "-1"));
+    assert!(holds(&file, "x^2/(x^2 + y^2) + y^2/(x^2 + y^2)", "1"));
+    let refuted = Claim::new(
+        "t",
+        "t",
+        file.parse("x/(x - y) - 1").unwrap(),
+        Expr::zero(file.system().vars()),
+    )
+    .check()
+    .unwrap();
+    let Outcome::Refuted { residual } = refuted.outcome else {
+        panic!("x/(x − y) − 1 is not 0")
+    };
+    assert_eq!(residual.to_string(), "y/(x − y)");
+}
+
+#[test]
+fn denominators_calogero_claims_are_proved_and_the_wrong_coefficient_refuted() {
+    let path = concat!(env!("CARGO_MANIFEST_DIR"), "/systems/calogero.toml");
+    let file = superint::system_file::load(std::path::Path::new(path), &LimitsOverride::default())
+        .expect("the file loads");
+    let report = superint::system_file::check_report([&file]).expect("checked");
+    assert!(report.all_as_expected());
+    assert_eq!(
+        report.claim_ids(),
+        [
+            ("momentum".to_string(), true),
+            ("cubic".to_string(), true),
+            ("involution".to_string(), true),
+            ("force".to_string(), true),
+            ("wrong-coefficient".to_string(), false),
+        ]
+    );
+    // The cubic integral's coefficient 3g, checked on its own: 2g fails.
+    assert!(holds(&file, "{I3, H}", "0"));
+    assert!(!holds(
+        &file,
+        "{p_x^3 + p_y^3 + p_z^3 + 2*g*((p_x + p_y)/(x - y)^2 + (p_x + p_z)/(x - z)^2 + (p_y + p_z)/(y - z)^2), H}",
+        "0"
+    ));
+}
+
+fn superint(args: &[&str]) -> std::process::Output {
+    Command::new(env!("CARGO_BIN_EXE_superint"))
+        .args(args)
+        .output()
+        .expect("the superint binary runs")
+}
+
+#[test]
+fn denominators_bad_declarations_are_refused_at_their_place() {
+    let with = |list: &str| TWO_BODY.replace("[\"x - y\", \"x^2 + y^2\"]", list);
+    let cases = [
+        (
+            "(p_x^2 + p_y^2)/2 + g/(x + y)^2",
+            "[\"x - y\"]",
+            "bad.toml:2:38: cannot divide by x² + 2xy + y²",
+        ),
+        (
+            "",
+            "[\"x - x\"]",
+            "bad.toml:6:17: a denominator cannot be 0",
+        ),
+        ("", "[\"x^2\"]", "bad.toml:6:17: x² is a single term"),
+        ("", "[\"3\"]", "bad.toml:6:17: 3 is a single term"),
+        (
+            "",
+            "[\"x - y\", \"(y - x)^2\"]",
+            "bad.toml:6:26: x² − 2xy + y² is a product of the denominators declared before it",
+        ),
+        ("", "[\"x - q\"]", "bad.toml:6:22: unknown name 'q'"),
+        (
+            "",
+            "[\"i*x + y\"]",
+            "bad.toml:6:17: the denominator ix + y is not real",
+        ),
+    ];
+    for (h, list, expected) in cases {
+        let mut text = with(list);
+        if !h.is_empty() {
+            text = text.replace("(p_x^2 + p_y^2)/2 + g/(x - y)^2", h);
+        }
+        let f = scratch_text("denominators-bad", "bad.toml", &text);
+        let dir = f.parent().unwrap();
+        let o = Command::new(env!("CARGO_BIN_EXE_superint"))
+            .current_dir(dir)
+            .args(["check", "bad.toml"])
+            .output()
+            .unwrap();
+        let err = String::from_utf8(o.stderr).unwrap();
+        assert_eq!(o.status.code(), Some(2), "{list}: {err}");
+        assert!(
+            err.starts_with(&format!("superint: error: {expected}")),
+            "{list}: expected {expected:?}, got {err}"
+        );
+    }
+}
+
+#[test]
+fn denominators_undeclared_division_names_the_fix() {
+    let text = TWO_BODY.replace("denominators = [\"x - y\", \"x^2 + y^2\"]", "");
+    let err = load_str("two.toml", &text, &LimitsOverride::default())
+        .expect_err("refused")
+        .to_string();
+    assert!(
+        err.starts_with("two.toml:2:38: cannot divide by x² − 2xy + y²"),
+        "{err}"
+    );
+    assert!(
+        err.contains("denominators = [\"x^2 - 2*x*y + y^2\"]"),
+        "{err}"
+    );
+}
+
+#[test]
+fn denominators_bracket_and_expand_work_and_other_commands_refuse() {
+    let f = scratch_text("denominators-cli", "two.toml", TWO_BODY);
+    let f = f.to_str().unwrap();
+    let o = superint(&["bracket", f, "1/(x - y)", "p_x"]);
+    assert_eq!(o.status.code(), Some(0));
+    assert!(String::from_utf8(o.stdout)
+        .unwrap()
+        .contains("{1/(x − y), p_x} = −1/(x − y)²"));
+    let o = superint(&["expand", f, "x/(x - y) - 1", "(x - y)/(x - y) - 1"]);
+    let out = String::from_utf8(o.stdout).unwrap();
+    assert!(out.contains("x/(x − y) − 1       = y/(x − y)"), "{out}");
+    assert!(out.contains("(x − y)/(x − y) − 1 = 0"), "{out}");
+    let refused: [&[&str]; 6] = [
+        &["table", f, "H", "P"],
+        &["rank", f, "H", "p_x + p_y"],
+        &["search", f],
+        &["closure", f, "H", "P"],
+        &[
+            "plot",
+            f,
+            "x",
+            "--from",
+            "x = 1, y = 0, p_x = 0, p_y = 0",
+            "--time",
+            "1",
+            "--output",
+            "/dev/null",
+            "--at",
+            "g = 1",
+        ],
+        &["bracket", f, "p_x", "H", "--when", "x = 1"],
+    ];
+    for args in refused {
+        let o = superint(args);
+        let err = String::from_utf8(o.stderr).unwrap();
+        assert_eq!(o.status.code(), Some(2), "{args:?}: {err}");
+        assert!(
+            err.contains("not supported on a system with denominators ((x − y), (x² + y²))")
+                || err.contains("the condition sets x, which the denominator (x − y) involves"),
+            "{args:?}: {err}"
+        );
+    }
+}
