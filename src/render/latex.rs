@@ -117,6 +117,33 @@ fn split_sum(s: &str, max: usize) -> Vec<String> {
     let s = &s
         .replace(r"\left(", r"\bigl(")
         .replace(r"\right)", r"\bigr)");
+    pieces_at(s, &sum_cuts(s), max)
+}
+
+/// How wide a group in plain parentheses may be and still never break: a factor such as
+/// `(x - y)^{3}` or `(p_{x} + p_{y})` reads as one thing.
+const WHOLE_GROUP: usize = 16;
+
+/// Where `s` may break: the spaces before ` + ` and ` - ` outside TeX's groups and outside
+/// short groups in plain parentheses ([`WHOLE_GROUP`]); `\bigl( … \bigr)` may span rows.
+fn sum_cuts(s: &str) -> Vec<usize> {
+    // The byte ranges of the short plain groups.
+    let mut open = Vec::new();
+    let mut whole: Vec<(usize, usize)> = Vec::new();
+    for (k, c) in s.char_indices() {
+        let sized = s[..k].ends_with(r"\bigl") || s[..k].ends_with(r"\bigr");
+        match c {
+            '(' if !sized => open.push(k),
+            ')' if !sized => {
+                if let Some(o) = open.pop() {
+                    if visual_width(&s[o..=k]) <= WHOLE_GROUP + 2 {
+                        whole.push((o, k));
+                    }
+                }
+            }
+            _ => {}
+        }
+    }
     let mut cuts = Vec::new();
     let mut depth = 0i32;
     let mut escaped = false;
@@ -129,16 +156,25 @@ fn split_sum(s: &str, max: usize) -> Vec<String> {
             '{' | '}' if after_backslash => {}
             '{' => depth += 1,
             '}' => depth -= 1,
-            ' ' if depth == 0 && (s[k..].starts_with(" + ") || s[k..].starts_with(" - ")) => {
+            ' ' if depth == 0
+                && (s[k..].starts_with(" + ") || s[k..].starts_with(" - "))
+                && !whole.iter().any(|&(o, e)| o < k && k < e) =>
+            {
                 cuts.push(k)
             }
             _ => {}
         }
     }
+    cuts
+}
+
+/// `s` cut at some of `cuts` into pieces about `max` wide; every piece after the first starts
+/// with its sign.
+fn pieces_at(s: &str, cuts: &[usize], max: usize) -> Vec<String> {
     let mut pieces = Vec::new();
     let mut start = 0;
     let mut last: Option<usize> = None;
-    for &k in &cuts {
+    for &k in cuts {
         if visual_width(&s[start..k]) > max {
             if let Some(l) = last.filter(|&l| l > start) {
                 pieces.push(s[start..l].to_string());

@@ -100,27 +100,12 @@ pub(crate) fn wrap(s: &str, w: usize, indent: &str) -> Vec<String> {
 
 /// A line of mathematics wrapped like [`wrap`], but between the terms of a sum where it can
 /// (before ` + ` and ` − ` outside parentheses): a monomial such as `x² p_y⁴` stays on one line.
-/// A term wider than a line is wrapped at its spaces.
+/// A piece wider than a line breaks between the terms of the sums inside its parentheses (a
+/// fraction's numerator, `(2g p_y² − …)/((x − y)³ …)`), and a term wider than a line at its
+/// spaces.
 pub(crate) fn wrap_sum(s: &str, w: usize, indent: &str) -> Vec<String> {
     let mut pieces: Vec<&str> = Vec::new();
-    let (mut depth, mut start) = (0i32, 0);
-    for (k, c) in s.char_indices() {
-        match c {
-            '(' | '{' | '[' => depth += 1,
-            ')' | '}' | ']' => depth -= 1,
-            '+' | '−'
-                if depth == 0
-                    && k > start
-                    && s[..k].ends_with(' ')
-                    && s[k + c.len_utf8()..].starts_with(' ') =>
-            {
-                pieces.push(&s[start..k - 1]);
-                start = k;
-            }
-            _ => {}
-        }
-    }
-    pieces.push(&s[start..]);
+    sum_pieces(s, 0, w, &mut pieces);
     let mut lines: Vec<String> = Vec::new();
     let mut line = String::new();
     for piece in pieces {
@@ -142,6 +127,37 @@ pub(crate) fn wrap_sum(s: &str, w: usize, indent: &str) -> Vec<String> {
             false => wrap(&l, w, indent),
         })
         .collect()
+}
+
+/// The pieces of `s` between the signs of its sums at parenthesis depth `level` (each piece
+/// after the first starts with its sign), into `out`; a piece wider than `w` is split again one
+/// level deeper, down to the third.
+fn sum_pieces<'a>(s: &'a str, level: i32, w: usize, out: &mut Vec<&'a str>) {
+    let mut pieces: Vec<&str> = Vec::new();
+    let (mut depth, mut start) = (0i32, 0);
+    for (k, c) in s.char_indices() {
+        match c {
+            '(' | '{' | '[' => depth += 1,
+            ')' | '}' | ']' => depth -= 1,
+            '+' | '−'
+                if depth == level
+                    && k > start
+                    && s[..k].ends_with(' ')
+                    && s[k + c.len_utf8()..].starts_with(' ') =>
+            {
+                pieces.push(&s[start..k - 1]);
+                start = k;
+            }
+            _ => {}
+        }
+    }
+    pieces.push(&s[start..]);
+    for piece in pieces {
+        match width(piece) > w && level < 2 {
+            true => sum_pieces(piece, level + 1, w, out),
+            false => out.push(piece),
+        }
+    }
 }
 
 /// Items joined by `, `, wrapped between items only.

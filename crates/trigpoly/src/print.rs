@@ -77,6 +77,9 @@ pub(crate) fn render_terms(vars: &VarSet, terms: &[CosSinTerm], style: Style) ->
     if terms.is_empty() {
         return "0".into();
     }
+    if let Some(fraction) = render_over_common_denominator(vars, terms, style) {
+        return fraction;
+    }
     let names = Names::new(vars, terms, style);
     let mut out = String::new();
     let mut k = 0;
@@ -110,6 +113,65 @@ pub(crate) fn render_terms(vars: &VarSet, terms: &[CosSinTerm], style: Style) ->
         k = end;
     }
     out
+}
+
+/// A sum whose terms all divide by the same powers of denominator atoms (as an element over a
+/// common denominator does, [`Poly::over_common_denominator`]) written as one fraction:
+/// `(2g p_y² − 2g p_z²)/((x − y)³ (y − z)³)`, not the denominator once a term. `None` for
+/// anything else.
+fn render_over_common_denominator(
+    vars: &VarSet,
+    terms: &[CosSinTerm],
+    style: Style,
+) -> Option<String> {
+    let atoms: Vec<usize> = vars
+        .vars()
+        .filter(|&v| vars.variable(v).kind() == VarKind::Denominator)
+        .map(|v| v.index())
+        .collect();
+    let powers = |t: &CosSinTerm| -> Vec<i64> { atoms.iter().map(|&j| t.exps[j]).collect() };
+    let common = powers(terms.first()?);
+    if terms.len() < 2
+        || common.iter().all(|&e| e >= 0)
+        || common.iter().any(|&e| e > 0)
+        || terms.iter().any(|t| powers(t) != common)
+    {
+        return None;
+    }
+    let numerator: Vec<CosSinTerm> = terms
+        .iter()
+        .map(|t| {
+            let mut t = t.clone();
+            for &j in &atoms {
+                t.exps[j] = 0;
+            }
+            t
+        })
+        .collect();
+    let mut exps = vec![0; vars.len()];
+    for (&j, &e) in atoms.iter().zip(&common) {
+        exps[j] = -e;
+    }
+    let denominator = CosSinTerm {
+        coeff: GaussianRational::from(1),
+        exps,
+        trig: TrigMonomial {
+            powers: vec![(0, 0); terms[0].trig.powers.len()],
+        },
+    };
+    let numerator = render_terms(vars, &numerator, style);
+    let factors = common.iter().filter(|&&e| e != 0).count();
+    let denominator = render_terms(vars, &[denominator], style);
+    Some(match style {
+        // A long numerator in `\left( … \right)`, where a display may break it between terms
+        // (a `\frac` is one box, which ran 2950 pt past the margin).
+        Style::Latex if terms.len() > 4 => {
+            format!(r"\left({numerator}\right) / \left({denominator}\right)")
+        }
+        Style::Latex => format!(r"\frac{{{numerator}}}{{{denominator}}}"),
+        _ if factors == 1 => format!("({numerator})/{denominator}"),
+        _ => format!("({numerator})/({denominator})"),
+    })
 }
 
 fn minus(style: Style) -> &'static str {

@@ -273,4 +273,36 @@ mod tests {
             "−y²/(x² + y²)"
         );
     }
+
+    /// A sum over one common denominator prints as one fraction, its numerator in
+    /// parentheses (the denominator once, not once a term), and its ASCII form reads back;
+    /// a long one in LaTeX takes `\left( … \right)`, where a display may break it.
+    #[test]
+    fn a_common_denominator_prints_once() {
+        let vars = VarSet::builder()
+            .coordinate("x")
+            .coordinate("y")
+            .coordinate("z")
+            .denominator("x - y", "x − y", "x - y")
+            .denominator("x - z", "x − z", "x - z")
+            .build()
+            .unwrap();
+        let e = |s: &str| Expr::parse(&vars, s).unwrap();
+        let f = e("x/(x - y)^2 + y/(x - y)^2");
+        assert_eq!(f.to_string(), "(x + y)/(x − y)²");
+        assert_eq!(f.to_latex(), r"\frac{x + y}{(x - y)^{2}}");
+        assert_eq!(e(&f.to_ascii()), f);
+        let g = e("(x + y + z + x*y + 1)/((x - y)*(x - z)^3)");
+        assert_eq!(g.to_string(), "(xy + x + y + z + 1)/((x − y) (x − z)³)");
+        assert_eq!(
+            g.to_latex(),
+            r"\left(x y + x + y + z + 1\right) / \left((x - y) (x - z)^{3}\right)"
+        );
+        assert_eq!(e(&g.to_ascii()), g);
+        // Terms over different denominators print term by term.
+        assert_eq!(
+            e("1/(x - y) + 1/(x - z)").to_string(),
+            "1/(x − z) + 1/(x − y)"
+        );
+    }
 }
