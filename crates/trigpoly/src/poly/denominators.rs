@@ -14,6 +14,9 @@ use crate::varset::{Var, VarKind, Vars};
 
 /// How many products of powers of atoms a division tries before it gives up.
 const MAX_CANDIDATES: usize = 4096;
+/// How many terms a numerator over a common denominator may have and still be divided by the
+/// denominators it may share a factor with (each division costs a product a quotient term).
+const MAX_REDUCED_TERMS: usize = 2000;
 
 impl<C: Coefficient> Poly<C> {
     /// The denominator atoms of `vars` with the polynomials they stand for, in declaration
@@ -147,12 +150,71 @@ impl<C: Coefficient> Poly<C> {
         }
         let (numerator, powers) = self.cleared_with_powers()?;
         let mut out = numerator;
+        // The numerator loses each factor `D` it has (`(x² + y²)/(x² + y²)` is 1), as far as
+        // exact division finds them.
+        let atoms = Self::denominator_atoms(&self.vars)?;
+        let mut powers = powers;
+        for ((_, n), (_, d)) in powers.iter_mut().zip(&atoms) {
+            while *n > 0 && out.len() <= MAX_REDUCED_TERMS {
+                match out.quotient_by(d)? {
+                    Some(q) => {
+                        out = q;
+                        *n -= 1;
+                    }
+                    None => break,
+                }
+            }
+        }
         for (v, n) in powers {
             if n > 0 && !out.is_zero() {
                 out = out.checked_mul(&Self::var(&self.vars, v).checked_pow(-n)?)?;
             }
         }
         Ok(out)
+    }
+
+    /// `self / d` when `d` divides `self` exactly, found by dividing leading terms (in the
+    /// lexicographic order of the exponents) and checked by multiplying back; `None` when it
+    /// does not divide, or when the division runs past a bound of steps (a Laurent ring need
+    /// not end it), which only leaves a fraction unreduced.
+    fn quotient_by(&self, d: &Self) -> Result<Option<Self>, AlgebraError> {
+        let leading = |p: &Self| -> Result<Option<Self>, AlgebraError> {
+            let Some(t) = p.terms().max_by(|a, b| a.exponents().cmp(&b.exponents())) else {
+                return Ok(None);
+            };
+            let powers: Vec<(Var, i64)> = p
+                .vars
+                .vars()
+                .map(|v| (v, t.exponent(v)))
+                .filter(|&(_, e)| e != 0)
+                .collect();
+            Ok(Some(Self::monomial(&p.vars, t.coeff(), &powers)?))
+        };
+        let Some(lead_d) = leading(d)? else {
+            return Ok(None);
+        };
+        let mut rest = self.clone();
+        let mut quotient = Self::zero(&self.vars);
+        for _ in 0..4 * self.len() + 16 {
+            let Some(lead) = leading(&rest)? else {
+                // Checked, not trusted: the quotient times d is self.
+                let back = quotient.checked_mul(d)?;
+                return Ok((back == *self).then_some(quotient));
+            };
+            let t = lead.checked_div(&lead_d)?;
+            // A factor that d's variables would need a negative power in: no polynomial
+            // quotient.
+            if self
+                .vars
+                .vars()
+                .any(|v| d.contains(v) && t.low_degree(v).is_some_and(|e| e < 0))
+            {
+                return Ok(None);
+            }
+            rest = rest.checked_sub(&t.checked_mul(d)?)?;
+            quotient = quotient.checked_add(&t)?;
+        }
+        Ok(None)
     }
 
     /// The exact zero test of the ring with denominator atoms: whether the element cleared of
@@ -272,6 +334,17 @@ mod tests {
             g.over_common_denominator().unwrap().to_string(),
             "−y²/(x² + y²)"
         );
+        // The numerator loses the factors it shares with the denominator, not others.
+        assert_eq!(f.over_common_denominator().unwrap().to_string(), "0");
+        let one = e("x^2/(x^2 + y^2) + y^2/(x^2 + y^2)");
+        assert_eq!(one.over_common_denominator().unwrap().to_string(), "1");
+        let h = e("(x^2 + y^2)^2*x/(x^2 + y^2)^3");
+        assert_eq!(
+            h.over_common_denominator().unwrap().to_string(),
+            "x/(x² + y²)"
+        );
+        let k = e("x^3/(x^2 + y^2)");
+        assert_eq!(k.over_common_denominator().unwrap(), k);
     }
 
     /// A sum over one common denominator prints as one fraction, its numerator in
