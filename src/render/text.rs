@@ -133,6 +133,22 @@ pub(crate) fn wrap_sum(s: &str, w: usize, indent: &str) -> Vec<String> {
 /// after the first starts with its sign), into `out`; a piece wider than `w` is split again one
 /// level deeper, down to the third.
 fn sum_pieces<'a>(s: &'a str, level: i32, w: usize, out: &mut Vec<&'a str>) {
+    // A short group in parentheses, a factor such as `(x − y)⁴`, never breaks.
+    let mut open = Vec::new();
+    let mut whole: Vec<(usize, usize)> = Vec::new();
+    for (k, c) in s.char_indices() {
+        match c {
+            '(' => open.push(k),
+            ')' => {
+                if let Some(o) = open.pop() {
+                    if width(&s[o..=k]) <= 18 {
+                        whole.push((o, k));
+                    }
+                }
+            }
+            _ => {}
+        }
+    }
     let mut pieces: Vec<&str> = Vec::new();
     let (mut depth, mut start) = (0i32, 0);
     for (k, c) in s.char_indices() {
@@ -141,6 +157,7 @@ fn sum_pieces<'a>(s: &'a str, level: i32, w: usize, out: &mut Vec<&'a str>) {
             ')' | '}' | ']' => depth -= 1,
             '+' | '−'
                 if depth == level
+                    && !whole.iter().any(|&(o, e)| o < k && k < e)
                     && k > start
                     && s[..k].ends_with(' ')
                     && s[k + c.len_utf8()..].starts_with(' ') =>

@@ -172,8 +172,7 @@ fn denominators_bracket_and_expand_work_and_other_commands_refuse() {
     let out = String::from_utf8(o.stdout).unwrap();
     assert!(out.contains("x/(x − y) − 1       = y/(x − y)"), "{out}");
     assert!(out.contains("(x − y)/(x − y) − 1 = 0"), "{out}");
-    let refused: [&[&str]; 6] = [
-        &["table", f, "H", "P"],
+    let refused: [&[&str]; 5] = [
         &["rank", f, "H", "p_x + p_y"],
         &["search", f],
         &["closure", f, "H", "P"],
@@ -202,4 +201,38 @@ fn denominators_bracket_and_expand_work_and_other_commands_refuse() {
             "{args:?}: {err}"
         );
     }
+}
+
+/// A bracket table works with denominators: a bracket equal to zero only by `v·D = 1` is 0,
+/// and one that is a listed function written another way shows as that function.
+#[test]
+fn denominators_table_decides_its_entries_exactly() {
+    let text = format!(
+        "{TWO_BODY}[[function]]\nname = \"X\"\nvalue = \"x\"\n\
+         [[function]]\nname = \"A\"\nvalue = \"p_x/(x - y)\"\n\
+         [[function]]\nname = \"U\"\nvalue = \"x/(x - y)^2 - y/(x - y)^2\"\n"
+    );
+    let f = scratch_text("denominators-table", "table.toml", &text);
+    let f = f.to_str().unwrap();
+    let o = superint(&["table", f, "H", "P", "X", "A", "U"]);
+    assert_eq!(
+        o.status.code(),
+        Some(0),
+        "{}",
+        String::from_utf8_lossy(&o.stderr)
+    );
+    let out = String::from_utf8(o.stdout).unwrap();
+    // Too wide for a table, it lists the brackets that are not zero: {X, A} = ∂A/∂p_x =
+    // 1/(x − y) is U; {H, P} = 0 and {P, A} = 0 (A depends on x − y only) are not listed.
+    let flat = out.split_whitespace().collect::<Vec<_>>().join(" ");
+    assert!(flat.contains("{X, A} = U"), "{out}");
+    assert!(flat.contains("{H, U} = (p_x − p_y)/(x − y)²"), "{out}");
+    assert!(
+        !flat.contains("{H, P}") && !flat.contains("{P, A}"),
+        "{out}"
+    );
+    assert!(
+        !out.contains("(x\n"),
+        "a factor (x − y) does not break:\n{out}"
+    );
 }

@@ -58,11 +58,13 @@ pub struct BracketTable {
 impl BracketTable {
     /// Computes the table for named functions of `system`.
     pub fn compute(system: &System, names: &[&str]) -> Result<Self, EngineError> {
-        system.space().refuse_denominators("a bracket table")?;
+        // Each over its common denominator, as the brackets will be, so that a bracket that
+        // is one of them written another way (`x/(x − y)² − y/(x − y)²` for `1/(x − y)`)
+        // shows as that one.
         let funcs: Vec<Expr> = names
             .iter()
-            .map(|n| system.get(n).cloned())
-            .collect::<Result<_, _>>()?;
+            .map(|n| Ok(system.get(n)?.over_common_denominator()?))
+            .collect::<Result<_, EngineError>>()?;
         let basis: Vec<(FunctionName, Expr)> = names
             .iter()
             .map(|n| FunctionName {
@@ -78,7 +80,11 @@ impl BracketTable {
         for a in 0..n {
             entries[a].push(Entry::Combination(Vec::new()));
             for b in a + 1..n {
-                let br = system.bracket(&funcs[a], &funcs[b])?;
+                // Over a common denominator (with denominator atoms; as it is otherwise), so
+                // that a bracket equal to zero is 0 and reads as its numerator shows.
+                let br = system
+                    .bracket(&funcs[a], &funcs[b])?
+                    .over_common_denominator()?;
                 let entry = match express(&br, &basis)? {
                     Some(c) => Entry::Combination(c),
                     None => Entry::Expression(br),
@@ -218,12 +224,14 @@ fn own_subscript(latex: &str) -> Option<&str> {
 ///
 /// The ansatz for `c_k` spans the parameter monomials `ν` that can carry a term of `F_k` onto a
 /// term of `target`; the coefficients come from an exact linear solve over Q(i), and the
-/// combination is then checked by expanding it.
+/// combination is then checked by expanding it. With denominator atoms the solve takes the
+/// monomials as independent, which they are not (`v·D = 1`): it may miss a combination, never
+/// report a wrong one, since the check is the exact zero test ([`Expr::vanishes`]).
 pub fn express(
     target: &Expr,
     basis: &[(FunctionName, Expr)],
 ) -> Result<Option<Vec<(Expr, FunctionName)>>, EngineError> {
-    if target.is_zero() {
+    if target.vanishes()? {
         return Ok(Some(Vec::new()));
     }
     let vars = target.vars().clone();
@@ -303,7 +311,9 @@ pub fn express(
     for (c, (_, f)) in coeffs.iter().zip(basis) {
         sum = sum.checked_add(&c.checked_mul(f)?)?;
     }
-    if sum != *target {
+    // Equal as elements: with denominator atoms, two forms of one element may differ in
+    // their terms (`v·D` and `1`), and the exact zero test decides.
+    if sum != *target && !sum.checked_sub(target)?.vanishes()? {
         return Ok(None);
     }
     Ok(Some(
