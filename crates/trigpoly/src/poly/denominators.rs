@@ -283,18 +283,23 @@ fn exponents(
 
 #[cfg(test)]
 mod tests {
-    use crate::{Expr, VarSet};
+    use crate::{Expr, VarSet, Vars};
 
-    #[test]
-    fn division_by_powers_of_atoms_and_their_multiples() {
-        let vars = VarSet::builder()
+    /// `x, y, z` with the atoms `x − y` and `x − z`.
+    fn three_points_two_atoms() -> Vars {
+        VarSet::builder()
             .coordinate("x")
             .coordinate("y")
             .coordinate("z")
             .denominator("x - y", "x − y", "x - y")
             .denominator("x - z", "x − z", "x - z")
             .build()
-            .unwrap();
+            .unwrap()
+    }
+
+    #[test]
+    fn division_by_powers_of_atoms_and_their_multiples() {
+        let vars = three_points_two_atoms();
         let e = |s: &str| Expr::parse(&vars, s).unwrap();
         assert_eq!(e("1/(x - y)^2").to_string(), "1/(x − y)²");
         assert_eq!(e("3/(2*(y - x))").to_string(), "−3/(2 (x − y))");
@@ -352,14 +357,7 @@ mod tests {
     /// a long one in LaTeX takes `\left( … \right)`, where a display may break it.
     #[test]
     fn a_common_denominator_prints_once() {
-        let vars = VarSet::builder()
-            .coordinate("x")
-            .coordinate("y")
-            .coordinate("z")
-            .denominator("x - y", "x − y", "x - y")
-            .denominator("x - z", "x − z", "x - z")
-            .build()
-            .unwrap();
+        let vars = three_points_two_atoms();
         let e = |s: &str| Expr::parse(&vars, s).unwrap();
         let f = e("x/(x - y)^2 + y/(x - y)^2");
         assert_eq!(f.to_string(), "(x + y)/(x − y)²");
