@@ -129,6 +129,9 @@ pub(crate) fn wrap_sum(s: &str, w: usize, indent: &str) -> Vec<String> {
         .collect()
 }
 
+/// How wide a group in parentheses, its parentheses included, may be and still never break.
+const WHOLE_GROUP: usize = 18;
+
 /// The pieces of `s` between the signs of its sums at parenthesis depth `level` (each piece
 /// after the first starts with its sign), into `out`; a piece wider than `w` is split again one
 /// level deeper, down to the third.
@@ -141,7 +144,7 @@ fn sum_pieces<'a>(s: &'a str, level: i32, w: usize, out: &mut Vec<&'a str>) {
             '(' => open.push(k),
             ')' => {
                 if let Some(o) = open.pop() {
-                    if width(&s[o..=k]) <= 18 {
+                    if width(&s[o..=k]) <= WHOLE_GROUP {
                         whole.push((o, k));
                     }
                 }

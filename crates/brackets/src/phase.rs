@@ -167,9 +167,6 @@ impl PhaseSpace {
     /// each phase variable `z`, and `{v, w} = {D, E}` for two atoms, each formed with the
     /// brackets declared before them (the atoms' polynomials have no atoms).
     fn declare_atoms(&mut self) -> Result<(), EngineError> {
-        self.declared.truncate(self.given);
-        self.given = self.declared.len();
-        self.update_involved();
         if self.atoms.is_empty() {
             return Ok(());
         }
@@ -240,7 +237,6 @@ impl PhaseSpace {
     pub fn with_brackets(mut self, brackets: &[(&str, &str, Expr)]) -> Result<Self, EngineError> {
         let vars = self.vars.clone();
         self.declared.clear();
-        self.given = 0;
         let mut given: Vec<(Var, Var)> = Vec::new();
         for (a, b, value) in brackets {
             let find = |n: &str| {

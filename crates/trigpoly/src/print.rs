@@ -124,11 +124,7 @@ fn render_over_common_denominator(
     terms: &[CosSinTerm],
     style: Style,
 ) -> Option<String> {
-    let atoms: Vec<usize> = vars
-        .vars()
-        .filter(|&v| vars.variable(v).kind() == VarKind::Denominator)
-        .map(|v| v.index())
-        .collect();
+    let atoms: Vec<usize> = vars.denominators().map(|v| v.index()).collect();
     let powers = |t: &CosSinTerm| -> Vec<i64> { atoms.iter().map(|&j| t.exps[j]).collect() };
     let common = powers(terms.first()?);
     if terms.len() < 2

@@ -514,6 +514,12 @@ impl VarSet {
             .filter(|&v| self.variable(v).kind == VarKind::Angle)
     }
 
+    /// The denominator atoms ([`VarKind::Denominator`]), in declaration order.
+    pub fn denominators(&self) -> impl Iterator<Item = Var> + '_ {
+        self.vars()
+            .filter(|&v| self.variable(v).kind == VarKind::Denominator)
+    }
+
     pub(crate) fn layout(&self) -> &Layout {
         &self.layout
     }

@@ -10,7 +10,7 @@
 use super::Poly;
 use crate::error::AlgebraError;
 use crate::number::Coefficient;
-use crate::varset::{Var, VarKind, Vars};
+use crate::varset::{Var, Vars};
 
 /// How many products of powers of atoms a division tries before it gives up.
 const MAX_CANDIDATES: usize = 4096;
@@ -18,15 +18,16 @@ const MAX_CANDIDATES: usize = 4096;
 /// denominators it may share a factor with (each division costs a product a quotient term).
 const MAX_REDUCED_TERMS: usize = 2000;
 
+/// An atom, the polynomial it stands for, and the power of that polynomial an element was
+/// multiplied by to clear it.
+type ClearedAtom<C> = (Var, Poly<C>, i64);
+
 impl<C: Coefficient> Poly<C> {
     /// The denominator atoms of `vars` with the polynomials they stand for, in declaration
     /// order (none for a set without them). Refused: a definition that does not read, or reads
     /// as zero, a single term or an expression with atoms (its clearing would be wrong).
     pub fn denominator_atoms(vars: &Vars) -> Result<Vec<(Var, Self)>, AlgebraError> {
-        let atoms: Vec<Var> = vars
-            .vars()
-            .filter(|&v| vars.variable(v).kind() == VarKind::Denominator)
-            .collect();
+        let atoms: Vec<Var> = vars.denominators().collect();
         atoms
             .iter()
             .map(|&v| {
@@ -64,8 +65,7 @@ impl<C: Coefficient> Poly<C> {
 
     /// Whether the set declares denominator atoms.
     pub fn has_denominator_atoms(vars: &Vars) -> bool {
-        vars.vars()
-            .any(|v| vars.variable(v).kind() == VarKind::Denominator)
+        vars.denominators().next().is_some()
     }
 
     /// `1/d` when `d` is a nonzero constant times a monomial times a product of powers of the
@@ -99,11 +99,7 @@ impl<C: Coefficient> Poly<C> {
             let (Some(lead_d), Some(lead_p)) = (d.terms().next(), product.terms().next()) else {
                 continue;
             };
-            let term = |t: super::Term<'_, C>| {
-                let powers: Vec<(Var, i64)> = vars.vars().zip(t.exponents()).collect();
-                Self::monomial(&vars, t.coeff(), &powers)
-            };
-            let ratio = term(lead_d)?.checked_div(&term(lead_p)?)?;
+            let ratio = d.term(lead_d)?.checked_div(&product.term(lead_p)?)?;
             if ratio.checked_mul(&product)? != *d {
                 continue;
             }
@@ -126,8 +122,9 @@ impl<C: Coefficient> Poly<C> {
         Ok(self.cleared_with_powers()?.0)
     }
 
-    /// [`Poly::cleared`] and, for each atom, the power `N` of `D` it multiplied by.
-    fn cleared_with_powers(&self) -> Result<(Self, Vec<(Var, i64)>), AlgebraError> {
+    /// [`Poly::cleared`] and, for each atom with its polynomial `D`, the power `N` of `D` it
+    /// multiplied by.
+    fn cleared_with_powers(&self) -> Result<(Self, Vec<ClearedAtom<C>>), AlgebraError> {
         let mut p = self.clone();
         let mut powers = Vec::new();
         for (v, d) in Self::denominator_atoms(&self.vars)? {
@@ -136,7 +133,7 @@ impl<C: Coefficient> Poly<C> {
                 p = p.checked_mul(&Self::var(&self.vars, v).checked_pow(n)?)?;
             }
             p = p.subst(v, &d)?;
-            powers.push((v, n));
+            powers.push((v, d, n));
         }
         Ok((p, powers))
     }
@@ -148,13 +145,10 @@ impl<C: Coefficient> Poly<C> {
         if !Self::has_denominator_atoms(&self.vars) {
             return Ok(self.clone());
         }
-        let (numerator, powers) = self.cleared_with_powers()?;
-        let mut out = numerator;
+        let (mut out, mut powers) = self.cleared_with_powers()?;
         // The numerator loses each factor `D` it has (`(x² + y²)/(x² + y²)` is 1), as far as
         // exact division finds them.
-        let atoms = Self::denominator_atoms(&self.vars)?;
-        let mut powers = powers;
-        for ((_, n), (_, d)) in powers.iter_mut().zip(&atoms) {
+        for (_, d, n) in &mut powers {
             while *n > 0 && out.len() <= MAX_REDUCED_TERMS {
                 match out.quotient_by(d)? {
                     Some(q) => {
@@ -165,12 +159,18 @@ impl<C: Coefficient> Poly<C> {
                 }
             }
         }
-        for (v, n) in powers {
+        for (v, _, n) in powers {
             if n > 0 && !out.is_zero() {
                 out = out.checked_mul(&Self::var(&self.vars, v).checked_pow(-n)?)?;
             }
         }
         Ok(out)
+    }
+
+    /// One term of `self` as an element of its own.
+    fn term(&self, t: super::Term<'_, C>) -> Result<Self, AlgebraError> {
+        let powers: Vec<(Var, i64)> = self.vars.vars().zip(t.exponents()).collect();
+        Self::monomial(&self.vars, t.coeff(), &powers)
     }
 
     /// `self / d` when `d` divides `self` exactly, found by dividing leading terms (in the
@@ -179,16 +179,10 @@ impl<C: Coefficient> Poly<C> {
     /// not end it), which only leaves a fraction unreduced.
     fn quotient_by(&self, d: &Self) -> Result<Option<Self>, AlgebraError> {
         let leading = |p: &Self| -> Result<Option<Self>, AlgebraError> {
-            let Some(t) = p.terms().max_by(|a, b| a.exponents().cmp(&b.exponents())) else {
-                return Ok(None);
-            };
-            let powers: Vec<(Var, i64)> = p
-                .vars
-                .vars()
-                .map(|v| (v, t.exponent(v)))
-                .filter(|&(_, e)| e != 0)
-                .collect();
-            Ok(Some(Self::monomial(&p.vars, t.coeff(), &powers)?))
+            p.terms()
+                .max_by(|a, b| a.exponents().cmp(&b.exponents()))
+                .map(|t| p.term(t))
+                .transpose()
         };
         let Some(lead_d) = leading(d)? else {
             return Ok(None);
