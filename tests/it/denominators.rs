@@ -1,6 +1,7 @@
 //! Denominator atoms: division by declared polynomials (`[phase_space] denominators`), the
 //! chain rule of their brackets, the zero test by clearing denominators, the Calogero–Moser
-//! claims, bad declarations, and the commands that refuse such systems.
+//! claims (maximal superintegrability among them), the rank of a Jacobian through the
+//! denominators, bad declarations, and the commands that refuse such systems.
 
 use std::process::Command;
 
@@ -74,6 +75,14 @@ fn denominators_calogero_claims_are_proved_and_the_wrong_coefficient_refuted() {
             ("momentum".to_string(), true),
             ("cubic".to_string(), true),
             ("involution".to_string(), true),
+            ("f1-moves".to_string(), true),
+            ("f2-moves".to_string(), true),
+            ("f3-moves".to_string(), true),
+            ("K1".to_string(), true),
+            ("K2".to_string(), true),
+            ("superintegrable".to_string(), true),
+            ("f3-without-interaction".to_string(), false),
+            ("dependent".to_string(), false),
             ("force".to_string(), true),
             ("wrong-coefficient".to_string(), false),
         ]
@@ -160,7 +169,7 @@ fn denominators_undeclared_division_names_the_fix() {
 }
 
 #[test]
-fn denominators_bracket_and_expand_work_and_other_commands_refuse() {
+fn denominators_bracket_expand_and_rank_work_and_other_commands_refuse() {
     let f = scratch_text("denominators-cli", "two.toml", TWO_BODY);
     let f = f.to_str().unwrap();
     let o = superint(&["bracket", f, "1/(x - y)", "p_x"]);
@@ -172,8 +181,14 @@ fn denominators_bracket_and_expand_work_and_other_commands_refuse() {
     let out = String::from_utf8(o.stdout).unwrap();
     assert!(out.contains("x/(x − y) − 1       = y/(x − y)"), "{out}");
     assert!(out.contains("(x − y)/(x − y) − 1 = 0"), "{out}");
-    let refused: [&[&str]; 5] = [
-        &["rank", f, "H", "p_x + p_y"],
+    let o = superint(&["rank", f, "H", "p_x + p_y"]);
+    assert_eq!(o.status.code(), Some(0));
+    let out = String::from_utf8(o.stdout).unwrap();
+    assert!(
+        out.contains("∂(H, p_x + p_y)/∂(x, y, p_x, p_y) = 2"),
+        "{out}"
+    );
+    let refused: [&[&str]; 4] = [
         &["search", f],
         &["closure", f, "H", "P"],
         &[
@@ -201,6 +216,51 @@ fn denominators_bracket_and_expand_work_and_other_commands_refuse() {
             "{args:?}: {err}"
         );
     }
+}
+
+/// The rank of a Jacobian with denominators: its entries through the atoms by the chain rule
+/// (`1/(x − y)` depends on `x`), its larger minors decided zero by clearing, and its sample
+/// points off the denominators' zeros.
+#[test]
+fn denominators_rank_takes_the_chain_rule_and_the_zero_test() {
+    let file = two_body();
+    let rank_of = |fs: &[&str]| {
+        let exprs: Vec<Expr> = fs.iter().map(|f| file.parse(f).unwrap()).collect();
+        rank(file.system().space(), &exprs).unwrap()
+    };
+    // 1/(x − y) has no x in its terms but depends on x through its atom: with the partial
+    // derivatives alone its row would vanish and the rank be 1.
+    let cert = rank_of(&["1/(x - y)", "x + y"]);
+    assert_eq!(cert.rank, 2);
+    assert!(!cert.minor_value.is_zero());
+    // x/(x − y) − y/(x − y) = 1: dependent, though the 2 × 2 minor's terms do not cancel
+    // until the atom is cleared.
+    let cert = rank_of(&["x/(x - y)", "y/(x - y)"]);
+    assert_eq!(cert.rank, 1);
+    assert!(matches!(
+        cert.upper,
+        UpperBound::VanishingMinors { count: 3 }
+    ));
+    // A function of x − y alone and of x² + y² alone are independent; of x − y twice, not.
+    assert_eq!(rank_of(&["g/(x - y)^2", "1/(x^2 + y^2)"]).rank, 2);
+    assert_eq!(rank_of(&["g/(x - y)^2", "(x - y)^3"]).rank, 1);
+    // The rank of the Calogero–Moser integrals is claimed in its file; a sample point where a
+    // denominator vanishes (x = 2 at the first one, for x − 2) is passed over.
+    let shifted = load_str(
+        "shifted.toml",
+        &TWO_BODY.replace("\"x^2 + y^2\"", "\"x - 2\""),
+        &LimitsOverride::default(),
+    )
+    .unwrap();
+    let exprs = [
+        shifted.parse("1/(x - 2)").unwrap(),
+        shifted.parse("y").unwrap(),
+    ];
+    let cert = rank(shifted.system().space(), &exprs).unwrap();
+    assert_eq!(cert.rank, 2);
+    let x = shifted.system().vars().lookup("x").unwrap();
+    let at_x = &cert.point.iter().find(|(v, _)| *v == x).unwrap().1;
+    assert_ne!(at_x, &GaussianRational::from(Rational::from(2)));
 }
 
 /// A bracket table works with denominators: a bracket equal to zero only by `v·D = 1` is 0,

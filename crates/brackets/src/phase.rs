@@ -207,8 +207,8 @@ impl PhaseSpace {
     }
 
     /// Refuses `what` (a command's work) on a space with denominator atoms: its linear algebra
-    /// or its evaluation treats the monomials as independent, and with an atom `v = 1/D` they
-    /// are not (`v · D = 1`), so its answer could be wrong.
+    /// or its evaluation treats the monomials as independent, and with an atom `v` standing for
+    /// `D` they are not (`v⁻¹ · D = 1`), so its answer could be wrong.
     pub fn refuse_denominators(&self, what: &str) -> Result<(), EngineError> {
         if self.atoms.is_empty() {
             return Ok(());
@@ -380,6 +380,29 @@ impl PhaseSpace {
             .chain(self.pairs.iter().map(|c| c.p))
             .chain(self.poisson.iter().copied())
             .collect()
+    }
+
+    /// `∂f/∂z` for a phase variable `z`, through the denominator atoms by the chain rule:
+    /// `∂f/∂z + Σ_v ∂f/∂v · ∂D_v/∂z` over the atoms `v = (D_v)` (an atom stands for its
+    /// polynomial, so `f`'s dependence on `z` is also through them); the partial derivative
+    /// alone on a space without atoms.
+    pub fn derivative(&self, f: &Expr, z: Var) -> Result<Expr, EngineError> {
+        let partial = f.derivative(z)?;
+        if self.atoms.is_empty() {
+            return Ok(partial);
+        }
+        let mut through = Vec::with_capacity(self.atoms.len());
+        for (v, d) in &self.atoms {
+            let (df, dd) = (f.derivative(*v)?, d.derivative(z)?);
+            if !df.is_zero() && !dd.is_zero() {
+                through.push((df, dd));
+            }
+        }
+        let one = Expr::one(&self.vars);
+        let terms: Vec<(&Expr, &Expr, bool)> = std::iter::once((&partial, &one, false))
+            .chain(through.iter().map(|(df, dd)| (df, dd, false)))
+            .collect();
+        Ok(Expr::sum_of_products(&terms)?)
     }
 
     /// Whether `v` is a phase-space variable (not a parameter).

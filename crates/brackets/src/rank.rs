@@ -77,14 +77,13 @@ const PRIMES: [i64; 16] = [2, 3, 5, 7, 11, 13, 17, 19, 23, 29, 31, 37, 41, 43, 4
 /// # Ok::<(), brackets::EngineError>(())
 /// ```
 pub fn rank(space: &PhaseSpace, functions: &[Expr]) -> Result<RankCertificate, EngineError> {
-    space.refuse_denominators("the rank of a Jacobian")?;
     let coords = space.coordinates();
     let jac: Vec<Vec<Expr>> = functions
         .iter()
         .map(|f| {
             coords
                 .iter()
-                .map(|&c| f.derivative(c))
+                .map(|&c| space.derivative(f, c))
                 .collect::<Result<Vec<_>, _>>()
         })
         .collect::<Result<_, _>>()?;
@@ -96,12 +95,21 @@ pub fn rank(space: &PhaseSpace, functions: &[Expr]) -> Result<RankCertificate, E
         if index >= FIRST_POINTS && best.as_ref().is_some_and(|b| b.rank == full) {
             break;
         }
-        let cert = certificate_at(&jac, &coords, sample_point(space, index)?)?;
+        let Some(point) = sample_point(space, index)? else {
+            continue;
+        };
+        let cert = certificate_at(&jac, &coords, point)?;
         if best.as_ref().is_none_or(|b| cert.rank > b.rank) {
             best = Some(cert);
         }
     }
-    let mut cert = best.expect("at least one point");
+    let mut cert = best.ok_or_else(|| {
+        EngineError::Invalid(format!(
+            "a denominator vanishes at each of the {} sample points, where the functions are \
+             not defined",
+            FIRST_POINTS + EARLY_POINTS
+        ))
+    })?;
     // Upper bound: every minor bordering the nonzero one vanishes identically. The nonzero
     // minor is a nonzero polynomial, so over the field of rational functions its rows are
     // independent on its columns, and each other function's gradient is, on those columns, one
@@ -118,7 +126,10 @@ pub fn rank(space: &PhaseSpace, functions: &[Expr]) -> Result<RankCertificate, E
         }
         let mut raised = None;
         for index in further.clone() {
-            let higher = certificate_at(&jac, &coords, sample_point(space, index)?)?;
+            let Some(point) = sample_point(space, index)? else {
+                continue;
+            };
+            let higher = certificate_at(&jac, &coords, point)?;
             if higher.rank > cert.rank {
                 raised = Some(higher);
                 break;
@@ -141,17 +152,22 @@ pub fn rank(space: &PhaseSpace, functions: &[Expr]) -> Result<RankCertificate, E
     Ok(cert)
 }
 
+/// An exact point, and its values as the certificate lists them.
+type SamplePoint = (Point, Vec<(Var, GaussianRational)>);
+
 /// The exact sample point number `index`: a value for each variable (angles as `cos + i sin`
-/// on the unit circle), and those values as a list.
-fn sample_point(
-    space: &PhaseSpace,
-    index: usize,
-) -> Result<(Point, Vec<(Var, GaussianRational)>), EngineError> {
+/// on the unit circle; a denominator atom its polynomial's value), and those values as a list
+/// (without the atoms'); `None` when a denominator vanishes there.
+fn sample_point(space: &PhaseSpace, index: usize) -> Result<Option<SamplePoint>, EngineError> {
     let vars = space.vars();
     let mut point = Point::new(vars);
     let mut values = Vec::new();
     for (k, v) in vars.vars().enumerate() {
-        if vars.variable(v).kind() == VarKind::Angle {
+        let kind = vars.variable(v).kind();
+        if kind == VarKind::Denominator {
+            continue;
+        }
+        if kind == VarKind::Angle {
             let (c, s, r) = if index < FIRST_POINTS {
                 CIRCLE[(k + index) % CIRCLE.len()]
             } else {
@@ -175,14 +191,16 @@ fn sample_point(
         }
         values.push((v, point.value(v).expect("just set").clone()));
     }
-    Ok((point, values))
+    Ok(point
+        .with_atoms(space.denominator_atoms())?
+        .map(|point| (point, values)))
 }
 
 /// The rank of the Jacobian at a point, with a nonzero minor of that size there.
 fn certificate_at(
     jac: &[Vec<Expr>],
     coords: &[Var],
-    (point, values): (Point, Vec<(Var, GaussianRational)>),
+    (point, values): SamplePoint,
 ) -> Result<RankCertificate, EngineError> {
     let mut m = Matrix::zeros(jac.len(), coords.len());
     for (i, row) in jac.iter().enumerate() {
@@ -244,7 +262,7 @@ fn vanishing_bordering_minors(
                 .sorted_unstable()
                 .collect();
             count += 1;
-            if !minors.det(&cols)?.is_zero() {
+            if !minors.det(&cols)?.vanishes()? {
                 return Ok(None);
             }
         }

@@ -420,6 +420,42 @@ impl Point {
         Ok(self)
     }
 
+    /// Sets each denominator atom `(D)` to `D` evaluated at the point (its other variables
+    /// given), so that its negative powers evaluate as `1/D^k`; `None` when some `D` is zero
+    /// there, where the elements with atoms are not defined. `atoms` are the set's atoms with
+    /// their polynomials, as [`Poly::denominator_atoms`] gives them.
+    ///
+    /// ```
+    /// use trigpoly::{Expr, Point, Rational, VarSet};
+    /// let vars = VarSet::builder()
+    ///     .coordinate("x")
+    ///     .coordinate("y")
+    ///     .denominator("x - y", "x − y", "x - y")
+    ///     .build()
+    ///     .unwrap();
+    /// let atoms = Expr::denominator_atoms(&vars).unwrap();
+    /// let (x, y) = (vars.lookup("x").unwrap(), vars.lookup("y").unwrap());
+    /// let f = Expr::parse(&vars, "x/(x - y)^2").unwrap();
+    /// let at = |a: i64, b: i64| Point::new(&vars).with(x, a.into()).with(y, b.into());
+    /// let point = at(3, 1).with_atoms(&atoms).unwrap().unwrap();
+    /// assert_eq!(f.eval(&point).unwrap(), Rational::new(3, 4).into());
+    /// assert!(at(2, 2).with_atoms(&atoms).unwrap().is_none());
+    /// ```
+    pub fn with_atoms<C: Coefficient>(
+        mut self,
+        atoms: &[(Var, Poly<C>)],
+    ) -> Result<Option<Point>, AlgebraError> {
+        for (v, d) in atoms {
+            let value = d.eval(&self)?;
+            if value.is_zero() {
+                return Ok(None);
+            }
+            let j = self.vars.checked_index(*v)?;
+            self.values[j] = Some(value);
+        }
+        Ok(Some(self))
+    }
+
     /// The value given to `v` (for an angle, `e^{iθ} = cos θ + i sin θ`).
     ///
     /// # Panics
