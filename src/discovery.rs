@@ -897,7 +897,7 @@ pub fn closure_report(
                 Some(cond) => system.flow_when(e, cond)?,
                 None => system.flow(e)?,
             };
-            if !flow.is_zero() {
+            if !flow.vanishes()? {
                 moving.push(format!("`{display}`"));
             }
         }

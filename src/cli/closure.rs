@@ -25,10 +25,13 @@ Examples:
   superint closure --system harmonic Hp L G1 G2 --define 'Hx=p_x^2/(2*M) + M*omega^2*x^2/2'
   superint closure systems/smorodinsky-winternitz-i.toml H Hx X --define 'C={Hx, X}' \\
       --degree 3 --symbolic M,alpha,beta,gamma --parameters-degree 2
+  superint closure systems/calogero.toml P H I3 K1 --degree 2
 
 Each bracket is written as a polynomial of degree ≤ D in the generators where one exists
 (coefficients Laurent monomials in the parameters), and every minimal polynomial relation of
-degree ≤ D is listed; each is checked by expanding it.";
+degree ≤ D is listed; each is checked by expanding it. On a system with denominators every
+vector is multiplied by one common power of each and cleared of them first, so that the
+monomials the linear algebra compares are independent.";
 
 /// Arguments of `superint closure`.
 #[derive(Debug, Args)]

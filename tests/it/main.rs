@@ -111,6 +111,7 @@ pub const PENDULUM: &str = "name = \"pendulum\"\nhamiltonian = \"p_t^2/2 - g*cos
 
 mod claims;
 mod cli;
+mod closure_denominators;
 mod denominators;
 mod discovery;
 mod library;

@@ -198,7 +198,7 @@ impl Condition {
             }
             let level = Expr::var(vars, *v).checked_sub(value)?;
             let rate = system.flow_when(&level, self)?;
-            if !rate.is_zero() {
+            if !rate.vanishes()? {
                 let name = vars.variable(*v).unicode();
                 let moves = vars
                     .vars()

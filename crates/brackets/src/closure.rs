@@ -11,6 +11,13 @@
 //! A condition such as a resonance is applied to the generators and to each bracket after it
 //! is formed, so the identities hold on the condition's surface.
 //!
+//! With denominator atoms (`v` standing for a polynomial `D`, `v^{−k} = 1/D^k`) the monomials
+//! are not independent (`v · D = 1`), so the linear algebra runs on the images of every column
+//! and target under one injective linear map, `Clearing`: multiplied by a common `Π v^N` and
+//! `v = D` substituted, polynomials on which monomials are independent. A combination or
+//! relation of the images is one of the elements, and none is missed; the symbolic checks
+//! decide zero by [`Expr::vanishes`].
+//!
 //! ```
 //! use brackets::closure::{closure, ClosureOptions};
 //! use brackets::systems;
@@ -112,7 +119,8 @@ pub enum Bracket {
     },
     /// No polynomial of degree `≤ D` in the generators: the bracket itself.
     Outside {
-        /// `{G_a, G_b}` (after the condition).
+        /// `{G_a, G_b}` (after the condition), over its common denominator on a system with
+        /// denominator atoms.
         bracket: Expr,
     },
 }
@@ -308,9 +316,6 @@ pub fn closure_of(
     generators: &[NamedFunction],
     options: &ClosureOptions,
 ) -> Result<Closure, EngineError> {
-    system
-        .space()
-        .refuse_denominators("the closure of an algebra")?;
     let start = Instant::now();
     let mut timings = ClosureTimings::default();
     let twice = (1..generators.len())
@@ -365,6 +370,12 @@ pub fn closure_of(
         .chain(symbolic.iter().map(|&v| Expr::var(&vars, v)))
         .collect();
     let all = g_sym.len();
+    let atoms = system.space().denominator_atoms();
+    // Whether `e` has the parameter `v`, in its terms or through an atom's polynomial
+    // (`1/(x − a)`).
+    let mentions = |e: &Expr, v: Var| {
+        e.contains(v) || atoms.iter().any(|(w, d)| d.contains(v) && e.contains(*w))
+    };
     // Parameters: those that occur, each given or 1; the symbolic ones stay.
     let mut parameters: Vec<(Var, Rational)> = Vec::new();
     for v in vars.vars() {
@@ -372,7 +383,7 @@ pub fn closure_of(
             continue;
         }
         let given = options.fixed.iter().find(|f| f.0 == v).map(|f| f.1.clone());
-        let occurs = g_sym.iter().chain(b_sym.values()).any(|e| e.contains(v));
+        let occurs = g_sym.iter().chain(b_sym.values()).any(|e| mentions(e, v));
         if given.is_some() || occurs {
             parameters.push((v, given.unwrap_or_else(Rational::one)));
         }
@@ -445,13 +456,26 @@ pub fn closure_of(
 
     // Columns: each monomial (and i times it, for complex generators), as real vectors.
     let t = Instant::now();
+    let fixed_targets: Vec<((usize, usize), Expr)> = b_sym
+        .iter()
+        .map(|(&key, e)| Ok((key, fix(e)?)))
+        .collect::<Result<_, EngineError>>()?;
+    // With denominator atoms, every vector is cleared first (none without).
+    let clearing = Clearing::new(
+        atoms,
+        &parameters,
+        values.values().chain(fixed_targets.iter().map(|t| &t.1)),
+    )?;
+    // A real function's terms in `e^{−ikθ}` are the conjugates of those in `e^{ikθ}`, so they
+    // are left out; its image under the clearing is real too when every atom's polynomial is.
+    let conjugates_follow = !complex && clearing.as_ref().is_none_or(|c| c.real);
     let angles: Vec<Var> = vars.angles().collect();
     let mut rows: HashMap<(Vec<i64>, bool), usize> = HashMap::new();
     let mut vectorize = |e: &Expr, times_i: bool| -> SparseVec<Rational> {
         let mut out = Vec::new();
         for t in e.terms() {
             let ex = t.exponents();
-            if !complex {
+            if conjugates_follow {
                 let k: Vec<i64> = angles.iter().map(|v| ex[v.index()]).collect();
                 if k.iter().find(|x| **x != 0).is_some_and(|x| *x < 0) {
                     continue;
@@ -478,17 +502,23 @@ pub fn closure_of(
     let mut col_ids: Vec<(usize, bool)> = Vec::new();
     let mut columns: Vec<SparseVec<Rational>> = Vec::new();
     for (m, beta) in monos.iter().enumerate() {
+        let image = clearing
+            .as_ref()
+            .map(|c| c.apply(&values[beta]))
+            .transpose()?;
+        let e = image.as_ref().unwrap_or(&values[beta]);
         for times_i in [false, true] {
             if times_i && !complex {
                 continue;
             }
             col_ids.push((m, times_i));
-            columns.push(vectorize(&values[beta], times_i));
+            columns.push(vectorize(e, times_i));
         }
     }
     let mut targets: HashMap<(usize, usize), SparseVec<Rational>> = HashMap::new();
-    for (&(a, b), e) in &b_sym {
-        targets.insert((a, b), vectorize(&fix(e)?, false));
+    for (key, e) in &fixed_targets {
+        let image = clearing.as_ref().map(|c| c.apply(e)).transpose()?;
+        targets.insert(*key, vectorize(image.as_ref().unwrap_or(e), false));
     }
     let nrows = rows.len();
 
@@ -605,7 +635,7 @@ pub fn closure_of(
                 .filter(|(_, c)| !**c)
                 .map(|(e, _)| e)
                 .chain(b_sym.values())
-                .any(|e| e.contains(*v))
+                .any(|e| mentions(e, *v))
         })
         .cloned()
         .collect();
@@ -734,8 +764,10 @@ pub fn closure_of(
                     let (poly, symbolic) = lift_ctx.bracket(sol, &b_sym[&(a, b)])?;
                     Bracket::Polynomial { poly, symbolic }
                 }
+                // Over its common denominator, as a table shows brackets (the same element;
+                // as it is without atoms).
                 None => Bracket::Outside {
-                    bracket: b_sym[&(a, b)].clone(),
+                    bracket: b_sym[&(a, b)].over_common_denominator()?,
                 },
             };
             let negated = match &entry {
@@ -972,7 +1004,7 @@ impl LiftContext<'_> {
             .expect("a relation has terms");
         if let Some(target) = self.weight_of(&self.monos[lead]) {
             if let Some(lifted) = self.lift_terms(&terms, &target)? {
-                if self.expand(&lifted)?.is_zero() {
+                if self.expand(&lifted)?.vanishes()? {
                     return Ok((normalize(self.ring_poly(&lifted)?), true));
                 }
             }
@@ -988,7 +1020,7 @@ impl LiftContext<'_> {
     ) -> Result<(Expr, bool), EngineError> {
         let terms = self.per_monomial(sol);
         if terms.is_empty() {
-            return Ok((Expr::zero(&self.ring), target.is_zero()));
+            return Ok((Expr::zero(&self.ring), target.vanishes()?));
         }
         let fixed_terms: Vec<_> = terms
             .iter()
@@ -999,12 +1031,96 @@ impl LiftContext<'_> {
         }
         if let Some(w) = self.scaling.homogeneous_weight(target) {
             if let Some(lifted) = self.lift_terms(&terms, &w)? {
-                if self.expand(&lifted)? == *target {
+                if equal(&self.expand(&lifted)?, target)? {
                     return Ok((self.ring_poly(&lifted)?, true));
                 }
             }
         }
         Ok((self.ring_poly(&fixed_terms)?, false))
+    }
+}
+
+/// Whether `a = b` as elements: equal normal forms, or with denominator atoms a difference that
+/// vanishes once cleared (`v · D` and `1` are one element).
+fn equal(a: &Expr, b: &Expr) -> Result<bool, EngineError> {
+    if a == b {
+        return Ok(true);
+    }
+    if !Expr::has_denominator_atoms(a.vars()) {
+        return Ok(false);
+    }
+    Ok(a.checked_sub(b)?.vanishes()?)
+}
+
+/// The injective linear map the linear algebra takes its vectors through on a system with
+/// denominator atoms: `e ↦ (Π v_i^{N_i} · e)(v_i = D_i)`, each `N_i` at least the highest power
+/// of `1/D_i` among the vectors, so that every image is a polynomial. It is multiplication by
+/// `Π D_i^{N_i} ≠ 0` in the rational functions, hence injective, and monomials are independent
+/// among polynomials: a combination of images is one of the elements, and a relation among
+/// the images one among the elements, exactly. The `D_i` are taken at the parameters' fixed
+/// values, where the vectors are.
+struct Clearing {
+    /// Each atom, its polynomial at the fixed values, and its power `N`.
+    atoms: Vec<(Var, Expr, i64)>,
+    /// Whether every atom's polynomial is real, so that a real vector's image is real.
+    real: bool,
+}
+
+impl Clearing {
+    /// The map for `vectors` (every column and target), `None` without atoms. Refused: an
+    /// atom's polynomial that vanishes at the fixed values (`x − a` cannot, `a − b` at
+    /// `a = b = 1` does).
+    fn new<'a>(
+        atoms: &[(Var, Expr)],
+        parameters: &[(Var, Rational)],
+        vectors: impl Iterator<Item = &'a Expr>,
+    ) -> Result<Option<Self>, EngineError> {
+        if atoms.is_empty() {
+            return Ok(None);
+        }
+        let mut powers = vec![0i64; atoms.len()];
+        for e in vectors {
+            for ((v, _), n) in atoms.iter().zip(powers.iter_mut()) {
+                *n = (*n).max(-e.low_degree(*v).unwrap_or(0));
+            }
+        }
+        let mut out = Vec::with_capacity(atoms.len());
+        for ((v, d), n) in atoms.iter().zip(powers) {
+            let at = fix_parameters(d, parameters)?;
+            if at.is_zero() {
+                let vars = d.vars();
+                let values: Vec<String> = parameters
+                    .iter()
+                    .filter(|(p, _)| d.contains(*p))
+                    .map(|(p, x)| format!("{} = {x}", vars.variable(*p).unicode()))
+                    .collect();
+                return Err(EngineError::Invalid(format!(
+                    "the denominator {} is zero at {}, the values the linear algebra takes: \
+                     give other values (`ClosureOptions::fix`; on the command line, --fix)",
+                    vars.variable(*v).unicode(),
+                    values.join(", ")
+                )));
+            }
+            out.push((*v, at, n));
+        }
+        let real = out.iter().all(|(_, d, _)| d.is_real());
+        Ok(Some(Clearing { atoms: out, real }))
+    }
+
+    /// The image of `e`: a polynomial with no atoms.
+    fn apply(&self, e: &Expr) -> Result<Expr, EngineError> {
+        let vars = e.vars();
+        let powers: Vec<(Var, i64)> = self
+            .atoms
+            .iter()
+            .filter(|a| a.2 > 0)
+            .map(|(v, _, n)| (*v, *n))
+            .collect();
+        let mut out = e.checked_mul(&Expr::monomial(vars, GaussianRational::from(1), &powers)?)?;
+        for (v, d, _) in &self.atoms {
+            out = out.subst(*v, d)?;
+        }
+        Ok(out)
     }
 }
 
@@ -1101,6 +1217,96 @@ mod tests {
             sum = sum.checked_add(&term).unwrap();
         }
         assert!(sum.is_zero(), "{r}");
+    }
+
+    /// `x, y` with their momenta, the parameters `a, b` and the atoms `x − y`, `x − a` and
+    /// `a − b`; `H = (p_x² + p_y²)/2 + 1/(x − y)²` and the functions `(name, value)`.
+    fn with_atoms(functions: &[(&str, &str)]) -> System {
+        let vars = VarSet::builder()
+            .coordinate("x")
+            .coordinate("y")
+            .momentum("p_x")
+            .momentum("p_y")
+            .parameter("a")
+            .parameter("b")
+            .denominator("x - y", "x − y", "x - y")
+            .denominator("x - a", "x − a", "x - a")
+            .denominator("a - b", "a − b", "a - b")
+            .build()
+            .unwrap();
+        let space = crate::PhaseSpace::new(&vars, &[("x", "p_x"), ("y", "p_y")]).unwrap();
+        let e = |s: &str| Expr::parse(&vars, s).unwrap();
+        let mut system = System::new("atoms", space, e("(p_x^2 + p_y^2)/2 + 1/(x - y)^2"));
+        for (name, value) in functions {
+            system.define(name, name, e(value));
+        }
+        system
+    }
+
+    /// `x/(x − y) − y/(x − y) = 1` holds only by `v · D = 1`: the terms of the two sides
+    /// share no monomial, so linear algebra on the monomials as written misses it; on the
+    /// cleared images it is found, and proved.
+    #[test]
+    fn a_relation_by_clearing_is_found() {
+        let system = with_atoms(&[("A", "x/(x - y)"), ("B", "y/(x - y)")]);
+        let c = closure(&system, &["A", "B"], &ClosureOptions::new(2)).unwrap();
+        assert_eq!(c.relations.len(), 1);
+        assert_eq!(c.relations[0].poly.to_string(), "A − B − 1");
+        assert!(c.relations[0].symbolic);
+        // {A, B} = 0: the brackets of functions of x and y alone.
+        assert_eq!(c.render_bracket(0, 1), "0");
+        assert_eq!((c.monomials, c.rank), (6, 3));
+    }
+
+    /// One power of each `D` clears every vector: clearing each by its own power would send
+    /// `p_x/(x − y)` and `p_x` to `p_x` both and report `U = V`, which is false.
+    #[test]
+    fn no_relation_by_clearing_vectors_apart() {
+        let system = with_atoms(&[("U", "p_x/(x - y)"), ("V", "p_x")]);
+        let c = closure(&system, &["U", "V"], &ClosureOptions::new(3)).unwrap();
+        assert!(c.relations.is_empty(), "{:?}", c.relations);
+        assert_eq!((c.monomials, c.rank), (10, 10));
+        // {U, V} = −p_x/(x − y)² is no polynomial in U and V (U² = p_x²/(x − y)² has p_x²),
+        // shown over its common denominator.
+        assert_eq!(c.outside(), [(0, 1)]);
+        assert_eq!(c.render_bracket(0, 1), "−p_x/(x − y)²");
+    }
+
+    /// A parameter that occurs only through an atom, `a` in `1/(x − a)`, is fixed for the
+    /// linear algebra (the atom's polynomial at that value) and lifted back: `a W + 1 = X`.
+    #[test]
+    fn a_parameter_in_an_atom_is_lifted() {
+        let system = with_atoms(&[("W", "1/(x - a)"), ("X", "x/(x - a)")]);
+        let c = closure(&system, &["W", "X"], &ClosureOptions::new(2)).unwrap();
+        assert_eq!(c.parameters, [(system.var("a"), Rational::one())]);
+        assert_eq!(c.relations.len(), 1);
+        assert_eq!(c.relations[0].poly.to_string(), "a W − X + 1");
+        assert!(c.relations[0].symbolic);
+        // Kept symbolic, the same relation is found from the symbolic expansions.
+        let options = ClosureOptions::new(2).symbolic(system.var("a"), 1);
+        let c = closure(&system, &["W", "X"], &options).unwrap();
+        assert!(c.parameters.is_empty() && c.all_symbolic());
+        assert_eq!(c.relations[0].poly.to_string(), "a W − X + 1");
+    }
+
+    /// An atom whose polynomial vanishes at the fixed values has no value there: refused,
+    /// with the values to change; other values work.
+    #[test]
+    fn an_atom_zero_at_the_fixed_values_is_refused() {
+        let system = with_atoms(&[("T", "x/(a - b)"), ("X", "x")]);
+        let err = closure(&system, &["T", "X"], &ClosureOptions::new(1)).unwrap_err();
+        assert_eq!(
+            err.to_string(),
+            "the denominator (a − b) is zero at a = 1, b = 1, the values the linear algebra \
+             takes: give other values (`ClosureOptions::fix`; on the command line, --fix)"
+        );
+        let options = ClosureOptions::new(1).fix(system.var("b"), Rational::from(2));
+        let c = closure(&system, &["T", "X"], &options).unwrap();
+        assert_eq!(c.relations.len(), 1);
+        // (a − b) T = X holds at a = 1, b = 2 as T + X = 0; its coefficient a − b is no
+        // monomial, so homogeneity cannot lift it, and it is not claimed for other values.
+        assert_eq!(c.relations[0].poly.to_string(), "T + X");
+        assert!(!c.relations[0].symbolic);
     }
 
     #[test]

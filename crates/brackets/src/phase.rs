@@ -208,7 +208,10 @@ impl PhaseSpace {
 
     /// Refuses `what` (a command's work) on a space with denominator atoms: its linear algebra
     /// or its evaluation treats the monomials as independent, and with an atom `v` standing for
-    /// `D` they are not (`v⁻¹ · D = 1`), so its answer could be wrong.
+    /// `D` they are not (`v⁻¹ · D = 1`), so its answer could be wrong. Its callers: `search`,
+    /// the towers and `plot`; `rank` differentiates through the atoms ([`Self::derivative`]) and
+    /// decides its minors by the exact zero test, and `closure` runs its linear algebra on
+    /// cleared images of its vectors, which are polynomials (`closure.rs`).
     pub fn refuse_denominators(&self, what: &str) -> Result<(), EngineError> {
         if self.atoms.is_empty() {
             return Ok(());
@@ -220,8 +223,8 @@ impl PhaseSpace {
             .collect();
         Err(EngineError::Invalid(format!(
             "{what} is not supported on a system with denominators ({}): its linear algebra \
-             takes monomials as independent, and with 1/D they are not; check, bracket and \
-             expand decide exactly by clearing denominators",
+             takes monomials as independent, and with 1/D they are not; check, bracket, \
+             expand, table and closure work there, deciding zero by clearing denominators",
             names.join(", ")
         )))
     }

@@ -142,8 +142,8 @@ impl Scaling {
 
     /// The weights under which the Poisson bracket is homogeneous (`w(q) + w(p)` the same for
     /// every pair, and `w(a) + w(b)` less that for every term of a declared `{a, b}`, angles of
-    /// weight 0), the condition is homogeneous, and so is every one of
-    /// `functions`.
+    /// weight 0), the condition and every one of `functions` are homogeneous, and every
+    /// denominator atom weighs what each term of its polynomial does.
     pub fn of_functions(
         space: &PhaseSpace,
         functions: &[Expr],
@@ -173,6 +173,13 @@ impl Scaling {
                 for t in value.terms() {
                     c.push(&minus(&t.exponents(), &unit(n, v.index(), 1)), 0);
                 }
+            }
+        }
+        // An atom weighs what every term of its polynomial does, so that `v ↦ D` keeps weights
+        // and a lift is homogeneous as an element, not only as written.
+        for (v, d) in space.denominator_atoms() {
+            for t in d.terms() {
+                c.push(&minus(&t.exponents(), &unit(n, v.index(), 1)), 0);
             }
         }
         for f in functions {
