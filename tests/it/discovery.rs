@@ -219,6 +219,14 @@ const COMMANDS: &[(&str, &str)] = &[
         "superint search systems/heavy-top.toml --poisson-degree 4 --when 'I3 = 1/3' --new-only",
     ),
     (
+        "calogero-rank",
+        "superint rank systems/calogero.toml P H I3 K1 K2",
+    ),
+    (
+        "calogero-closure",
+        "superint closure systems/calogero.toml P H I3 K1 K2 --degree 3",
+    ),
+    (
         "sw1-algebra",
         "superint closure systems/smorodinsky-winternitz-i.toml H Hx X --define 'C={Hx, X}' \
          --degree 3 --symbolic alpha,beta,gamma --parameters-degree 3",
@@ -2133,5 +2141,51 @@ fn a_closure_past_its_monomial_limit_stops_before_computing() {
     assert!(
         err.contains("there are 126 monomials of degree ≤ 4"),
         "{err}"
+    );
+}
+
+/// The Calogero–Moser system with its rational potential: five independent integrals (the
+/// rank through the denominators), and the brackets among them that close at degree 3.
+#[test]
+fn calogero_moser_is_maximally_superintegrable() {
+    expect(
+        "calogero-rank",
+        &[
+            "rank ∂(P, H, I_3, K1, K2)/∂(x, y, z, p_x, p_y, p_z) = 5 [rank proved]",
+            "≥ 5: the minor ∂(P, H, I_3, K1, K2)/∂(x, y, z, p_x, p_y) =",
+            "1 claim in 1 file: 1 proved, 0 refuted",
+        ],
+    );
+    let out = expect(
+        "calogero-closure",
+        &[
+            "{P, K1} = −P² + 6 H [B1 proved]",
+            "{P, K2} = −2 P H + 3 I_3 [B2 proved]",
+            "{I_3, K1} = −3 P I_3 + 12 H² [B3 proved]",
+            "{I_3, K2} = (",
+            "{K1, K2} = (",
+            "/((x − y)⁴ (x − z)⁴ (y − z)⁴)",
+            "3 claims: 3 proved, 0 refuted",
+        ],
+    );
+    let flat = normalize(&out);
+    let relations = flat
+        .split("2 Relations")
+        .nth(1)
+        .expect("a section of relations");
+    assert!(relations.contains("None."), "{out}");
+    // H is central: its row is all zeros.
+    let row = out
+        .lines()
+        .find(|l| l.trim_start().starts_with("H ") && l.contains('│'))
+        .expect("the row of H");
+    assert_eq!(
+        row.split('│')
+            .nth(1)
+            .unwrap()
+            .split_whitespace()
+            .collect::<Vec<_>>(),
+        ["0"; 5],
+        "{out}"
     );
 }
