@@ -30,6 +30,8 @@ Examples:
   superint plot systems/henon-heiles.toml p_y --against y --section x -o section.svg \\
       --at 'A = 1, B = 1, C = -1/3' --time 3000 --steps 300000 --samples 3000 \\
       --from 'x = 0, y = 1/10, p_x = 2/5, p_y = 0' --from 'x = 0, y = 1/4, p_x = 3/10, p_y = 0'
+  superint plot systems/calogero.toml x y z K1 K2 --at 'g = 1' --time 5 -o calogero.svg \
+      --from 'x = -1, y = 0, z = 2, p_x = 1, p_y = 0, p_z = -1/2'
 
 Hamilton's equations are formed exactly, then integrated in floating point at a fixed step,
 by the classical Runge–Kutta method or (--method gauss) the symplectic Gauss–Legendre one,
@@ -38,7 +40,8 @@ table gives each curve first and last, its range, and its largest change from th
 comes first, and its change tells how far the integration can be trusted (past a thousandth
 of its size, a warning says so). A complex function
 (K_1_1) is drawn as its real and imaginary parts. --section S keeps the states where S crosses
-zero upward, a Poincaré section, drawn as dots. Each --from is an orbit of its own.";
+zero upward, a Poincaré section, drawn as dots. Each --from is an orbit of its own. A declared
+denominator is evaluated as its polynomial; a start where one is 0 is refused.";
 
 /// Arguments of `superint plot`.
 #[derive(Debug, Args)]
@@ -247,11 +250,11 @@ pub fn run(job: &PlotJob) -> anyhow::Result<bool> {
         section: args.section.as_deref(),
     };
     let input = file.plot_input(args.at.as_deref(), &args.from, functions)?;
-    let flow = Flow::new(file.system().space(), &input.hamiltonian)
+    let flow = Flow::at(file.system().space(), &input.hamiltonian, &input.values)
         .context("Hamilton's equations at these values")?
         .with_method(args.method.method());
     let function = |label: &str, f: &trigpoly::Expr| -> anyhow::Result<Function> {
-        let numeric = Numeric::new(f, flow.phase()).with_context(|| label.to_string())?;
+        let numeric = flow.numeric(f).with_context(|| label.to_string())?;
         Ok(Function {
             label: label.to_string(),
             numeric,

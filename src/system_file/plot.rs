@@ -16,6 +16,9 @@ use super::{Argument, LoadedSystem, COMMAND_LINE};
 pub struct PlotInput {
     /// The parameters' values as they read (`M = 1, ω = 2`); empty when none is set.
     pub parameters: String,
+    /// The parameters' values as a substitution, for what is formed from the system after
+    /// (Hamilton's equations through the denominators, [`crate::trajectory::Flow::at`]).
+    pub values: Vec<(Var, Expr)>,
     /// `H` at those values.
     pub hamiltonian: Expr,
     /// The starting points, one an orbit: the value of every coordinate, angle, momentum and Poisson variable
@@ -98,12 +101,6 @@ impl LoadedSystem {
         from: &[String],
         functions: PlotFunctions<'_>,
     ) -> Result<PlotInput, FileError> {
-        // Pictures are computed in floating point from the exact equations, which for an atom
-        // would need its rate, not formed here.
-        self.system
-            .space()
-            .refuse_denominators("a plot")
-            .map_err(|e| self.computation_error(&e))?;
         let (values, parameters) = match at {
             Some(at) => self.parameter_values(at)?,
             None => (Values::new(), String::new()),
@@ -117,7 +114,10 @@ impl LoadedSystem {
             return Err(FileError::new(ErrorKind::Expression, COMMAND_LINE, why));
         }
         for start in &starts {
-            if let Some(why) = self.undefined_at("H", &hamiltonian, start) {
+            if let Some(why) = self
+                .undefined_at("H", &hamiltonian, start)
+                .or_else(|| self.divides_by_zero_at("H", &hamiltonian, start, &values))
+            {
                 return Err(FileError::new(ErrorKind::Condition, COMMAND_LINE, why));
             }
         }
@@ -125,7 +125,10 @@ impl LoadedSystem {
         for src in functions.curves {
             let (label, value, _) = self.drawable(src, &values)?;
             for start in &starts {
-                if let Some(why) = self.undefined_at(&label, &value, start) {
+                if let Some(why) = self
+                    .undefined_at(&label, &value, start)
+                    .or_else(|| self.divides_by_zero_at(&label, &value, start, &values))
+                {
                     return Err(FileError::new(ErrorKind::Condition, COMMAND_LINE, why));
                 }
             }
@@ -153,6 +156,7 @@ impl LoadedSystem {
         let section = real("--section", functions.section)?;
         Ok(PlotInput {
             parameters,
+            values,
             hamiltonian,
             starts,
             curves: real_curves,
@@ -299,6 +303,36 @@ impl LoadedSystem {
         Some(format!(
             "{what} is not defined at the starting point: it divides by {name}, which starts at 0 \
              (--from)"
+        ))
+    }
+
+    /// Why `e` has no value at the starting point `start`, if it has none: it divides by a
+    /// declared denominator that is zero there (decided exactly where every variable of the
+    /// denominator starts at an exact number; at a multiple of π the flow says so when it
+    /// leaves the finite numbers).
+    fn divides_by_zero_at(
+        &self,
+        what: &str,
+        e: &Expr,
+        start: &[(Var, StartValue)],
+        values: &Values,
+    ) -> Option<String> {
+        let space = self.system.space();
+        let mut point = values.clone();
+        for (v, value) in start {
+            if let StartValue::Exact(q) = value {
+                let q = GaussianRational::from(q.clone());
+                point.push((*v, Expr::constant(self.system.vars(), q)));
+            }
+        }
+        let (v, _) = space.denominator_atoms().iter().find(|(v, d)| {
+            e.low_degree(*v).is_some_and(|low| low < 0)
+                && d.subst_many(&point).ok().is_some_and(|at| at.is_zero())
+        })?;
+        Some(format!(
+            "{what} is not defined at the starting point: it divides by {}, which is 0 there \
+             (--from)",
+            self.display(*v)
         ))
     }
 

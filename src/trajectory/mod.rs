@@ -75,10 +75,13 @@ pub enum TrajectoryError {
 
 /// A function of the ring rounded for evaluation in floating point: its terms, each a
 /// complex coefficient and the powers of the phase variables it holds (for an angle `θ`,
-/// `k` stands for `e^{ikθ}`).
+/// `k` stands for `e^{ikθ}`), and the polynomials of the denominator atoms it holds, whose
+/// values are computed first at each evaluation (an atom `v = (D)` to the power `k` is `D^k`).
 #[derive(Clone, Debug)]
 pub struct Numeric {
     terms: Vec<NumericTerm>,
+    /// The rounded polynomials `D` of the atoms the terms hold, in the order `over` counts.
+    denominators: Vec<Numeric>,
 }
 
 #[derive(Clone, Debug)]
@@ -89,27 +92,52 @@ struct NumericTerm {
     powers: Vec<(usize, i32)>,
     /// `(variable index, k)` of the angles: `e^{ikθ}`.
     turns: Vec<(usize, i32)>,
+    /// `(index into denominators, exponent)` of the atoms.
+    over: Vec<(usize, i32)>,
 }
 
 impl Numeric {
-    /// Rounds `e`, which may hold only the variables of `phase`; `Unbound` names any other.
+    /// Rounds `e`, which may hold only the variables of `phase`; `Unbound` names any other
+    /// (a denominator atom among them: [`Flow::numeric`] rounds a function with its atoms).
     pub fn new(e: &Expr, phase: &[Var]) -> Result<Numeric, TrajectoryError> {
+        Numeric::with_atoms(e, phase, &[])
+    }
+
+    /// Rounds `e`, which may hold the variables of `phase` and the denominator atoms of
+    /// `atoms` (each with its polynomial, rounded).
+    fn with_atoms(
+        e: &Expr,
+        phase: &[Var],
+        atoms: &[(Var, Numeric)],
+    ) -> Result<Numeric, TrajectoryError> {
         let vars = e.vars();
         let mut terms = Vec::with_capacity(e.len());
+        let mut used: Vec<Var> = Vec::new();
         for term in e.terms() {
             let c = term.coeff();
-            let (mut powers, mut turns) = (Vec::new(), Vec::new());
+            let (mut powers, mut turns, mut over) = (Vec::new(), Vec::new(), Vec::new());
             for (v, &k) in vars.vars().zip(&term.exponents()) {
                 if k == 0 {
                     continue;
                 }
                 let j = v.index();
                 let variable = vars.variable(v);
+                // Exponents are bounded by the degree limit (at most 32 767).
+                let k = i32::try_from(k).expect("exponents fit 32 bits");
+                if atoms.iter().any(|(a, _)| *a == v) {
+                    let slot = match used.iter().position(|&u| u == v) {
+                        Some(slot) => slot,
+                        None => {
+                            used.push(v);
+                            used.len() - 1
+                        }
+                    };
+                    over.push((slot, k));
+                    continue;
+                }
                 if !phase.contains(&v) {
                     return Err(TrajectoryError::Unbound(variable.unicode().to_string()));
                 }
-                // Exponents are bounded by the degree limit (at most 32 767).
-                let k = i32::try_from(k).expect("exponents fit 32 bits");
                 match variable.kind() {
                     VarKind::Angle => turns.push((j, k)),
                     _ => powers.push((j, k)),
@@ -120,17 +148,34 @@ impl Numeric {
                 im: nearest_f64(&c.im)?,
                 powers,
                 turns,
+                over,
             });
         }
-        Ok(Numeric { terms })
+        let denominators = used
+            .iter()
+            .map(|u| {
+                let (_, d) = atoms.iter().find(|(a, _)| a == u).expect("an atom");
+                d.clone()
+            })
+            .collect();
+        Ok(Numeric {
+            terms,
+            denominators,
+        })
     }
 
     /// The value at `state` (indexed by variable; an angle's entry is the angle itself), as
     /// `(re, im)`.
     pub fn eval(&self, state: &[f64]) -> (f64, f64) {
+        let atoms: Vec<f64> = self.denominators.iter().map(|d| d.real(state)).collect();
         let (mut re, mut im) = (0.0, 0.0);
         for t in &self.terms {
             let magnitude: f64 = t.powers.iter().map(|&(j, e)| state[j].powi(e)).product();
+            let magnitude = magnitude
+                * t.over
+                    .iter()
+                    .map(|&(a, e)| atoms[a].powi(e))
+                    .product::<f64>();
             let phase: f64 = t.turns.iter().map(|&(j, k)| f64::from(k) * state[j]).sum();
             let (s, c) = phase.sin_cos();
             // (re + i·im)·(c + i·s)·magnitude
@@ -201,6 +246,9 @@ pub struct Flow {
     phase: Vec<Var>,
     /// `d/dt` of each, in the same order.
     rates: Vec<Numeric>,
+    /// The space's denominator atoms, each with its polynomial rounded: no state variables,
+    /// their values follow from the state's.
+    atoms: Vec<(Var, Numeric)>,
     /// How many variables a state holds (every variable of the ring, parameters included).
     width: usize,
     /// How it steps.
@@ -208,23 +256,55 @@ pub struct Flow {
 }
 
 impl Flow {
-    /// The flow of `h` on `space`: `h` must be real and hold only phase variables.
+    /// The flow of `h` on `space`: `h` must be real and hold only phase variables (and the
+    /// space's denominator atoms, whose polynomials must too).
     pub fn new(space: &PhaseSpace, h: &Expr) -> Result<Flow, TrajectoryError> {
+        Flow::at(space, h, &[])
+    }
+
+    /// The flow of `h` on `space` with the parameters given their `values` (exact constants)
+    /// after Hamilton's equations are formed: in `h`, and in the denominators' polynomials
+    /// and brackets, which the equations take through the chain rule.
+    pub fn at(
+        space: &PhaseSpace,
+        h: &Expr,
+        values: &[(Var, Expr)],
+    ) -> Result<Flow, TrajectoryError> {
         if !h.is_real() {
             return Err(TrajectoryError::NotReal);
         }
+        let at = |e: &Expr| -> Result<Expr, TrajectoryError> {
+            match values.is_empty() {
+                true => Ok(e.clone()),
+                false => e
+                    .subst_many(values)
+                    .map_err(|err| EngineError::from(err).into()),
+            }
+        };
         let equations = space.hamilton_equations(h)?;
         let phase: Vec<Var> = equations.iter().map(|(v, _)| *v).collect();
+        let atoms = space
+            .denominator_atoms()
+            .iter()
+            .map(|(v, d)| Ok((*v, Numeric::new(&at(d)?, &phase)?)))
+            .collect::<Result<Vec<_>, TrajectoryError>>()?;
         let rates = equations
             .iter()
-            .map(|(_, rate)| Numeric::new(rate, &phase))
+            .map(|(_, rate)| Numeric::with_atoms(&at(rate)?, &phase, &atoms))
             .collect::<Result<_, _>>()?;
         Ok(Flow {
             phase,
             rates,
+            atoms,
             width: space.vars().len(),
             method: Method::default(),
         })
+    }
+
+    /// `e` rounded for evaluation along this flow: it may hold the phase variables and the
+    /// denominator atoms.
+    pub fn numeric(&self, e: &Expr) -> Result<Numeric, TrajectoryError> {
+        Numeric::with_atoms(e, &self.phase, &self.atoms)
     }
 
     /// The same flow, stepped by `method`.
@@ -671,6 +751,52 @@ mod tests {
         let ratio = error(50) / error(100);
         assert!((12.0..20.0).contains(&ratio), "{ratio}");
         assert!(error(2000) < 1e-12);
+    }
+
+    /// Two bodies repelling by `1/(x − y − c)²` with the denominator `x − y − c` declared and
+    /// `c` a parameter given its value after the equations are formed: from rest at
+    /// `r = x − y − c = 1`, `r(t)² = 1 + 4t²` (`d²(r²)/dt² = 8H`); a function of the atom
+    /// is evaluated through its polynomial, and without the atoms it has no value.
+    #[test]
+    fn a_flow_through_a_denominator_follows_the_exact_solution() {
+        let vars = trigpoly::VarSet::builder()
+            .coordinate("x")
+            .coordinate("y")
+            .momentum("p_x")
+            .momentum("p_y")
+            .parameter("c")
+            .denominator("x - y - c", "x − y − c", "x - y - c")
+            .build()
+            .unwrap();
+        let space = PhaseSpace::new(&vars, &[("x", "p_x"), ("y", "p_y")]).unwrap();
+        let e = |s: &str| Expr::parse(&vars, s).unwrap();
+        let c = vars.lookup("c").unwrap();
+        let c_is_1 = [(c, e("1"))];
+        let h = e("(p_x^2 + p_y^2)/2 + 1/(x - y - c)^2")
+            .subst_many(&c_is_1)
+            .unwrap();
+        let flow = Flow::at(&space, &h, &c_is_1).unwrap();
+        let mut start = vec![0.0; vars.len()];
+        start[vars.lookup("x").unwrap().index()] = 2.0;
+        let path = flow.integrate(&start, 3.0, 3000, 6).unwrap();
+        let r = flow.numeric(&e("x - y - 1")).unwrap();
+        let energy = flow.numeric(&h).unwrap();
+        for (t, state) in path.times.iter().zip(&path.states) {
+            let exact = (1.0 + 4.0 * t * t).sqrt();
+            assert!((r.real(state) - exact).abs() < 1e-9, "r({t})");
+            assert!((energy.real(state) - 1.0).abs() < 1e-9, "H({t})");
+        }
+        let err = Numeric::new(&h, flow.phase()).unwrap_err();
+        assert!(
+            matches!(&err, TrajectoryError::Unbound(v) if v == "(x − y − c)"),
+            "{err}"
+        );
+        // Without its value c is left in the atom's bracket, and named.
+        let err = Flow::new(&space, &h).unwrap_err();
+        assert!(
+            matches!(&err, TrajectoryError::Unbound(v) if v == "c"),
+            "{err}"
+        );
     }
 
     #[test]

@@ -208,10 +208,11 @@ impl PhaseSpace {
 
     /// Refuses `what` (a command's work) on a space with denominator atoms: its linear algebra
     /// or its evaluation treats the monomials as independent, and with an atom `v` standing for
-    /// `D` they are not (`v⁻¹ · D = 1`), so its answer could be wrong. Its callers: `search`,
-    /// the towers and `plot`; `rank` differentiates through the atoms ([`Self::derivative`]) and
+    /// `D` they are not (`v⁻¹ · D = 1`), so its answer could be wrong. Its callers: `search`
+    /// and the towers; `rank` differentiates through the atoms ([`Self::derivative`]) and
     /// decides its minors by the exact zero test, and `closure` runs its linear algebra on
-    /// cleared images of its vectors, which are polynomials (`closure.rs`).
+    /// cleared images of its vectors, which are polynomials (`closure.rs`); a picture of the
+    /// flow evaluates each atom as its polynomial (`superint plot`).
     pub fn refuse_denominators(&self, what: &str) -> Result<(), EngineError> {
         if self.atoms.is_empty() {
             return Ok(());
