@@ -251,13 +251,18 @@ fn denominators_rank_takes_the_chain_rule_and_the_zero_test() {
 }
 
 /// A bracket table works with denominators: a bracket equal to zero only by `v·D = 1` is 0,
-/// and one that is a listed function written another way shows as that function.
+/// one that is a listed function written another way shows as that function, and one that is
+/// a combination whose terms share no monomial with it (`(gx + x − gy)/(x − y)²` is
+/// `g/(x − y) + x/(x − y)²`) is found by solving on the cleared forms.
 #[test]
 fn denominators_table_decides_its_entries_exactly() {
     let text = format!(
         "{TWO_BODY}[[function]]\nname = \"X\"\nvalue = \"x\"\n\
          [[function]]\nname = \"A\"\nvalue = \"p_x/(x - y)\"\n\
-         [[function]]\nname = \"U\"\nvalue = \"x/(x - y)^2 - y/(x - y)^2\"\n"
+         [[function]]\nname = \"U\"\nvalue = \"x/(x - y)^2 - y/(x - y)^2\"\n\
+         [[function]]\nname = \"B\"\nvalue = \"p_x*(g/(x - y) + x/(x - y)^2)\"\n\
+         [[function]]\nname = \"F1\"\nvalue = \"1/(x - y)\"\n\
+         [[function]]\nname = \"F2\"\nvalue = \"x/(x - y)^2\"\n"
     );
     let f = scratch_text("denominators-table", "table.toml", &text);
     let f = f.to_str().unwrap();
@@ -282,6 +287,13 @@ fn denominators_table_decides_its_entries_exactly() {
         !out.contains("(x\n"),
         "a factor (x − y) does not break:\n{out}"
     );
+    let o = superint(&["table", f, "X", "B", "F1", "F2"]);
+    let out = String::from_utf8(o.stdout).unwrap();
+    assert_eq!(o.status.code(), Some(0), "{out}");
+    let flat = out.split_whitespace().collect::<Vec<_>>().join(" ");
+    assert!(flat.contains("{X, B} = g F1 + F2"), "{out}");
+    // No combination of the four: shown over its common denominator.
+    assert!(flat.contains("{B, F1} = (gx + x − gy)/(x − y)⁴"), "{out}");
 }
 
 /// A picture of the Calogero–Moser flow: Hamilton's equations through the denominators, each

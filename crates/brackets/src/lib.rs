@@ -21,6 +21,7 @@
 #![deny(missing_docs)]
 
 mod claim;
+mod clearing;
 pub mod closure;
 mod error;
 pub mod linalg;

@@ -6,6 +6,7 @@ use std::collections::{BTreeMap, BTreeSet};
 
 use trigpoly::{Expr, GaussianRational, Style, VarKind};
 
+use crate::clearing::Clearing;
 use crate::error::EngineError;
 use crate::linalg::Matrix;
 use crate::system::System;
@@ -224,9 +225,11 @@ fn own_subscript(latex: &str) -> Option<&str> {
 ///
 /// The ansatz for `c_k` spans the parameter monomials `ν` that can carry a term of `F_k` onto a
 /// term of `target`; the coefficients come from an exact linear solve over Q(i), and the
-/// combination is then checked by expanding it. With denominator atoms the solve takes the
-/// monomials as independent, which they are not (`v·D = 1`): it may miss a combination, never
-/// report a wrong one, since the check is the exact zero test ([`Expr::vanishes`]).
+/// combination is then checked by expanding it. With denominator atoms, whose monomials are
+/// not independent (`v·D = 1`), the solve runs on the images of the target and the functions
+/// under one injective linear map onto polynomials (`Clearing`: multiplied by a common power
+/// of each `D`, `D` substituted), which commutes with the parameter monomials `ν`; the check
+/// is the exact zero test ([`Expr::vanishes`]).
 pub fn express(
     target: &Expr,
     basis: &[(FunctionName, Expr)],
@@ -234,6 +237,49 @@ pub fn express(
     if target.vanishes()? {
         return Ok(Some(Vec::new()));
     }
+    let vars = target.vars().clone();
+    let atoms = Expr::denominator_atoms(&vars)?;
+    let vectors = std::iter::once(target).chain(basis.iter().map(|(_, f)| f));
+    let (cleared_target, cleared_basis) = match Clearing::new(&atoms, &[], vectors)? {
+        None => (
+            target.clone(),
+            basis.iter().map(|(_, f)| f.clone()).collect(),
+        ),
+        Some(clearing) => (
+            clearing.apply(target)?,
+            basis
+                .iter()
+                .map(|(_, f)| clearing.apply(f))
+                .collect::<Result<Vec<_>, _>>()?,
+        ),
+    };
+    let Some(coeffs) = solve_combination(&cleared_target, &cleared_basis)? else {
+        return Ok(None);
+    };
+    // Check the combination exactly.
+    let mut sum = Expr::zero(&vars);
+    for (c, (_, f)) in coeffs.iter().zip(basis) {
+        sum = sum.checked_add(&c.checked_mul(f)?)?;
+    }
+    // Equal as elements: with denominator atoms, two forms of one element may differ in
+    // their terms (`v·D` and `1`), and the exact zero test decides.
+    if sum != *target && !sum.checked_sub(target)?.vanishes()? {
+        return Ok(None);
+    }
+    Ok(Some(
+        coeffs
+            .into_iter()
+            .zip(basis)
+            .filter(|(c, _)| !c.is_zero())
+            .map(|(c, (name, _))| (c, name.clone()))
+            .collect(),
+    ))
+}
+
+/// Coefficients `c_k`, each a polynomial in the parameters, with `Σ c_k f_k = target` as
+/// polynomials whose monomials are independent (no denominator atoms), found by an exact
+/// linear solve; `None` when the ansatz holds none.
+fn solve_combination(target: &Expr, basis: &[Expr]) -> Result<Option<Vec<Expr>>, EngineError> {
     let vars = target.vars().clone();
     let is_param: Vec<bool> = vars
         .vars()
@@ -256,7 +302,7 @@ pub fn express(
         target.terms().map(|t| split(&t.exponents())).collect();
     // Candidate columns ν·F_k.
     let mut columns: Vec<(usize, Vec<i64>, Expr)> = Vec::new();
-    for (k, (_, f)) in basis.iter().enumerate() {
+    for (k, f) in basis.iter().enumerate() {
         let mut nus: BTreeSet<Vec<i64>> = BTreeSet::new();
         for u in f.terms() {
             let (uphase, uparam) = split(&u.exponents());
@@ -306,24 +352,7 @@ pub fn express(
         let powers: Vec<_> = vars.vars().zip(nu.iter().copied()).collect();
         coeffs[*k] = coeffs[*k].checked_add(&Expr::monomial(&vars, xj.clone(), &powers)?)?;
     }
-    // Check the combination exactly.
-    let mut sum = Expr::zero(&vars);
-    for (c, (_, f)) in coeffs.iter().zip(basis) {
-        sum = sum.checked_add(&c.checked_mul(f)?)?;
-    }
-    // Equal as elements: with denominator atoms, two forms of one element may differ in
-    // their terms (`v·D` and `1`), and the exact zero test decides.
-    if sum != *target && !sum.checked_sub(target)?.vanishes()? {
-        return Ok(None);
-    }
-    Ok(Some(
-        coeffs
-            .into_iter()
-            .zip(basis)
-            .filter(|(c, _)| !c.is_zero())
-            .map(|(c, (name, _))| (c, name.clone()))
-            .collect(),
-    ))
+    Ok(Some(coeffs))
 }
 
 #[cfg(test)]

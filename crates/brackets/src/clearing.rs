@@ -1,0 +1,83 @@
+//! Clearing denominators for linear algebra: with denominator atoms (`v` standing for a
+//! polynomial `D`, `v^{−k} = 1/D^k`) the monomials of a vector are not independent
+//! (`v · D = 1`), so linear algebra that compares coefficients runs on the vectors' images
+//! under one injective linear map onto polynomials, [`Clearing`]. The closure's and the bracket
+//! table's solves take it.
+
+use trigpoly::{Expr, GaussianRational, Rational, Var};
+
+use crate::search::fix_parameters;
+use crate::EngineError;
+
+/// The injective linear map the linear algebra takes its vectors through on a system with
+/// denominator atoms: `e ↦ (Π v_i^{N_i} · e)(v_i = D_i)`, each `N_i` at least the highest power
+/// of `1/D_i` among the vectors, so that every image is a polynomial. It is multiplication by
+/// `Π D_i^{N_i} ≠ 0` in the rational functions, hence injective, and monomials are independent
+/// among polynomials: a combination of images is one of the elements, and a relation among
+/// the images one among the elements, exactly. The `D_i` are taken at the parameters' fixed
+/// values, where the vectors are (the closure's), or symbolic, with no values (a table's):
+/// multiplication by a parameter monomial commutes with the map either way.
+pub(crate) struct Clearing {
+    /// Each atom, its polynomial at the fixed values, and its power `N`.
+    atoms: Vec<(Var, Expr, i64)>,
+    /// Whether every atom's polynomial is real, so that a real vector's image is real.
+    pub(crate) real: bool,
+}
+
+impl Clearing {
+    /// The map for `vectors` (every column and target), `None` without atoms. Refused: an
+    /// atom's polynomial that vanishes at the fixed values (`x − a` cannot, `a − b` at
+    /// `a = b = 1` does).
+    pub(crate) fn new<'a>(
+        atoms: &[(Var, Expr)],
+        parameters: &[(Var, Rational)],
+        vectors: impl Iterator<Item = &'a Expr>,
+    ) -> Result<Option<Self>, EngineError> {
+        if atoms.is_empty() {
+            return Ok(None);
+        }
+        let mut powers = vec![0i64; atoms.len()];
+        for e in vectors {
+            for ((v, _), n) in atoms.iter().zip(powers.iter_mut()) {
+                *n = (*n).max(-e.low_degree(*v).unwrap_or(0));
+            }
+        }
+        let mut out = Vec::with_capacity(atoms.len());
+        for ((v, d), n) in atoms.iter().zip(powers) {
+            let at = fix_parameters(d, parameters)?;
+            if at.is_zero() {
+                let vars = d.vars();
+                let values: Vec<String> = parameters
+                    .iter()
+                    .filter(|(p, _)| d.contains(*p))
+                    .map(|(p, x)| format!("{} = {x}", vars.variable(*p).unicode()))
+                    .collect();
+                return Err(EngineError::Invalid(format!(
+                    "the denominator {} is zero at {}, the values the linear algebra takes: \
+                     give other values (`ClosureOptions::fix`; on the command line, --fix)",
+                    vars.variable(*v).unicode(),
+                    values.join(", ")
+                )));
+            }
+            out.push((*v, at, n));
+        }
+        let real = out.iter().all(|(_, d, _)| d.is_real());
+        Ok(Some(Clearing { atoms: out, real }))
+    }
+
+    /// The image of `e`: a polynomial with no atoms.
+    pub(crate) fn apply(&self, e: &Expr) -> Result<Expr, EngineError> {
+        let vars = e.vars();
+        let powers: Vec<(Var, i64)> = self
+            .atoms
+            .iter()
+            .filter(|a| a.2 > 0)
+            .map(|(v, _, n)| (*v, *n))
+            .collect();
+        let mut out = e.checked_mul(&Expr::monomial(vars, GaussianRational::from(1), &powers)?)?;
+        for (v, d, _) in &self.atoms {
+            out = out.subst(*v, d)?;
+        }
+        Ok(out)
+    }
+}
