@@ -178,11 +178,10 @@ impl<C: Coefficient> Poly<C> {
     /// does not divide, or when the division runs past a bound of steps (a Laurent ring need
     /// not end it), which only leaves a fraction unreduced.
     fn quotient_by(&self, d: &Self) -> Result<Option<Self>, AlgebraError> {
+        // Terms are sorted by exponent vector in descending lexicographic order: the first
+        // is the leading one.
         let leading = |p: &Self| -> Result<Option<Self>, AlgebraError> {
-            p.terms()
-                .max_by(|a, b| a.exponents().cmp(&b.exponents()))
-                .map(|t| p.term(t))
-                .transpose()
+            p.terms().next().map(|t| p.term(t)).transpose()
         };
         let Some(lead_d) = leading(d)? else {
             return Ok(None);
