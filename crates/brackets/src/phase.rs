@@ -225,7 +225,8 @@ impl PhaseSpace {
         Err(EngineError::Invalid(format!(
             "{what} is not supported on a system with denominators ({}): its linear algebra \
              takes monomials as independent, and with 1/D they are not; check, bracket, \
-             expand, table and closure work there, deciding zero by clearing denominators",
+             expand, table, rank, closure and plot work there, deciding zero by clearing \
+             denominators",
             names.join(", ")
         )))
     }
