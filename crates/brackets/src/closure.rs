@@ -31,6 +31,7 @@
 //! # Ok::<(), brackets::EngineError>(())
 //! ```
 
+use rustc_hash::FxHashMap;
 use std::collections::HashMap;
 use std::time::Instant;
 
@@ -471,11 +472,12 @@ pub fn closure_of(
     // are left out; its image under the clearing is real too when every atom's polynomial is.
     let conjugates_follow = !complex && clearing.as_ref().is_none_or(|c| c.real);
     let angles: Vec<Var> = vars.angles().collect();
-    let mut rows: HashMap<(Vec<i64>, bool), usize> = HashMap::new();
+    // A row is a monomial's exponents and, last, 0 or 1 for the real or imaginary part.
+    let mut rows: FxHashMap<Vec<i64>, usize> = FxHashMap::default();
     let mut vectorize = |e: &Expr, times_i: bool| -> SparseVec<Rational> {
         let mut out = Vec::new();
         for t in e.terms() {
-            let ex = t.exponents();
+            let mut ex = t.exponents();
             if conjugates_follow {
                 let k: Vec<i64> = angles.iter().map(|v| ex[v.index()]).collect();
                 if k.iter().find(|x| **x != 0).is_some_and(|x| *x < 0) {
@@ -488,12 +490,20 @@ pub fn closure_of(
             } else {
                 (c.re.clone(), c.im.clone())
             };
-            for (part, x) in [(false, re), (true, im)] {
+            ex.push(0);
+            for (part, x) in [(0, re), (1, im)] {
                 if x.is_zero() {
                     continue;
                 }
-                let len = rows.len();
-                let row = *rows.entry((ex.clone(), part)).or_insert(len);
+                *ex.last_mut().expect("the part") = part;
+                let row = match rows.get(&ex) {
+                    Some(&row) => row,
+                    None => {
+                        let row = rows.len();
+                        rows.insert(ex.clone(), row);
+                        row
+                    }
+                };
                 out.push((row, x));
             }
         }
