@@ -30,7 +30,7 @@ Examples:
   superint plot systems/henon-heiles.toml p_y --against y --section x -o section.svg \\
       --at 'A = 1, B = 1, C = -1/3' --time 3000 --steps 300000 --samples 3000 \\
       --from 'x = 0, y = 1/10, p_x = 2/5, p_y = 0' --from 'x = 0, y = 1/4, p_x = 3/10, p_y = 0'
-  superint plot systems/calogero.toml x y z K1 K2 --at 'g = 1' --time 5 -o calogero.svg \
+  superint plot systems/calogero.toml x y z K1 K2 --at 'g = 1' --time 5 -o calogero.svg \\
       --from 'x = -1, y = 0, z = 2, p_x = 1, p_y = 0, p_z = -1/2'
 
 Hamilton's equations are formed exactly, then integrated in floating point at a fixed step,

@@ -112,7 +112,8 @@ impl Numeric {
     ) -> Result<Numeric, TrajectoryError> {
         let vars = e.vars();
         let mut terms = Vec::with_capacity(e.len());
-        let mut used: Vec<Var> = Vec::new();
+        // The positions in `atoms` of the atoms the terms hold, in the order `over` counts.
+        let mut used: Vec<usize> = Vec::new();
         for term in e.terms() {
             let c = term.coeff();
             let (mut powers, mut turns, mut over) = (Vec::new(), Vec::new(), Vec::new());
@@ -124,11 +125,11 @@ impl Numeric {
                 let variable = vars.variable(v);
                 // Exponents are bounded by the degree limit (at most 32 767).
                 let k = i32::try_from(k).expect("exponents fit 32 bits");
-                if atoms.iter().any(|(a, _)| *a == v) {
-                    let slot = match used.iter().position(|&u| u == v) {
+                if let Some(atom) = atoms.iter().position(|(a, _)| *a == v) {
+                    let slot = match used.iter().position(|&u| u == atom) {
                         Some(slot) => slot,
                         None => {
-                            used.push(v);
+                            used.push(atom);
                             used.len() - 1
                         }
                     };
@@ -151,13 +152,7 @@ impl Numeric {
                 over,
             });
         }
-        let denominators = used
-            .iter()
-            .map(|u| {
-                let (_, d) = atoms.iter().find(|(a, _)| a == u).expect("an atom");
-                d.clone()
-            })
-            .collect();
+        let denominators = used.iter().map(|&i| atoms[i].1.clone()).collect();
         Ok(Numeric {
             terms,
             denominators,
@@ -274,12 +269,8 @@ impl Flow {
             return Err(TrajectoryError::NotReal);
         }
         let at = |e: &Expr| -> Result<Expr, TrajectoryError> {
-            match values.is_empty() {
-                true => Ok(e.clone()),
-                false => e
-                    .subst_many(values)
-                    .map_err(|err| EngineError::from(err).into()),
-            }
+            e.subst_many(values)
+                .map_err(|err| EngineError::from(err).into())
         };
         let equations = space.hamilton_equations(h)?;
         let phase: Vec<Var> = equations.iter().map(|(v, _)| *v).collect();

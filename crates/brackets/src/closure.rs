@@ -13,8 +13,8 @@
 //!
 //! With denominator atoms (`v` standing for a polynomial `D`, `v^{−k} = 1/D^k`) the monomials
 //! are not independent (`v · D = 1`), so the linear algebra runs on the images of every column
-//! and target under one injective linear map, `Clearing` (`clearing.rs`): multiplied by a common `Π v^N` and
-//! `v = D` substituted, polynomials on which monomials are independent. A combination or
+//! and target under one injective linear map, `Clearing` (`clearing.rs`): multiplied by a
+//! common `Π v^N` and `v = D` substituted, polynomials on which monomials are independent. A combination or
 //! relation of the images is one of the elements, and none is missed; the symbolic checks
 //! decide zero by [`Expr::vanishes`].
 //!
