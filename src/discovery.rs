@@ -212,10 +212,23 @@ fn space_text(r: &SearchResult) -> String {
     let positions = exponents(&space.coordinates, true);
     let momenta = exponents(&space.momenta, false);
     let poisson = exponents(&space.poisson, false);
-    let monomial = if monomial.is_empty() {
-        "1".to_string()
-    } else {
-        monomial.join(" ")
+    // Each denominator atom `(x − y)` to a negative power, `1/(x − y)^r`.
+    let atoms: Vec<Var> = r.vars.denominators().collect();
+    let mut over = Vec::new();
+    let denominators: Vec<String> = atoms
+        .iter()
+        .zip(&mut letters)
+        .map(|(v, letter)| {
+            over.push(format!("{}^{letter}", name(v)));
+            letter.to_string()
+        })
+        .collect();
+    let denominators = denominators.join(" + ");
+    let monomial = match (monomial.is_empty(), over.is_empty()) {
+        (true, true) => "1".to_string(),
+        (true, false) => format!("1/({})", over.join(" ")),
+        (false, true) => monomial.join(" "),
+        (false, false) => format!("{}/({})", monomial.join(" "), over.join(" ")),
     };
     let laurent = if s.laurent {
         " (negative powers of the coordinates allowed)"
@@ -244,6 +257,12 @@ fn space_text(r: &SearchResult) -> String {
         degrees.push(format!(
             "degree `{poisson} ≤ {}` in the Poisson variables",
             s.poisson_degree
+        ));
+    }
+    if !denominators.is_empty() {
+        degrees.push(format!(
+            "degree `{denominators} ≤ {}` in the denominators",
+            s.denominators_degree
         ));
     }
     let angles = match s.trig_degree {
@@ -288,8 +307,16 @@ fn space_text(r: &SearchResult) -> String {
             ps.join(", ")
         ),
     };
+    // With denominators, a monomial equal as a function to a sum of simpler ones is left out.
+    let dependent = match atoms.is_empty() {
+        true => "",
+        false => {
+            " (with denominators the monomials are not independent, `x/(x − y) − y/(x − y) = 1`: \
+             each one equal as a function to a sum of simpler ones is left out)"
+        }
+    };
     format!(
-        "The space: `{monomial}`{trig_factor}, with {}{symbolic}: {}, {} over `Q`, in {} \
+        "The space: `{monomial}`{trig_factor}, with {}{symbolic}: {}{dependent}, {} over `Q`, in {} \
          (the largest has {}).{left_out}",
         degrees.join(", "),
         counted(r.unknowns, "unknown"),

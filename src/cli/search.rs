@@ -76,6 +76,11 @@ pub struct SearchArgs {
     /// Allow negative powers of the coordinates (Laurent potentials such as β/x²).
     #[arg(long)]
     laurent: bool,
+    /// On a system with denominators, the total degree of their powers: 2 takes 1/(x − y)²
+    /// and 1/((x − y)(x − z)).
+    #[arg(long, value_name = "K", default_value_t = 2,
+          value_parser = clap::value_parser!(u32).range(0..=12))]
+    denominators_degree: u32,
     /// Parameter values for the linear algebra, such as omega=1,M=2/3 (others are 1).
     #[arg(long, value_name = "VALUES")]
     fix: Option<String>,
@@ -263,7 +268,8 @@ fn search_and_print(job: &SearchJob) -> anyhow::Result<bool> {
     let a = &job.args;
     let subject = Subject::open(a.file.as_ref(), a.system.as_deref(), false, &a.limits)?;
     let mut space = SearchSpace::new(a.momenta_degree, a.positions_degree, a.trig_degree)
-        .poisson_degree(a.poisson_degree);
+        .poisson_degree(a.poisson_degree)
+        .denominators_degree(a.denominators_degree);
     if a.laurent {
         space = space.laurent();
     }

@@ -227,6 +227,11 @@ const COMMANDS: &[(&str, &str)] = &[
         "superint closure systems/calogero.toml P H I3 K1 K2 --degree 3",
     ),
     (
+        "calogero-search",
+        "superint search systems/calogero.toml --momenta-degree 3 --positions-degree 1 \
+         --denominators-degree 2",
+    ),
+    (
         "sw1-algebra",
         "superint closure systems/smorodinsky-winternitz-i.toml H Hx X --define 'C={Hx, X}' \
          --degree 3 --symbolic alpha,beta,gamma --parameters-degree 3",
@@ -2188,4 +2193,49 @@ fn calogero_moser_is_maximally_superintegrable() {
         ["0"; 5],
         "{out}"
     );
+}
+
+/// The search on the Calogero–Moser system, through its denominators: the integrals of degree
+/// `≤ 3` in the momenta and `≤ 1` in the positions are ten, each proved for every `g`, and
+/// they span Wojciechowski's `K1` and `K2` (written in them by an exact solve, checked by the
+/// zero test) but not `f₂`, which moves (`{f₂, H} = 2H`).
+#[test]
+fn calogero_search_finds_wojciechowski_integrals() {
+    let out = run("calogero-search");
+    let flat = normalize(&out);
+    for line in [
+        "Dimension of the space of integrals: 10.",
+        "≤ 0: 1, ≤ 1: 2, ≤ 2: 5, ≤ 3: 10",
+        "p_x p_y p_z − g p_x/(y − z)² − g p_y/(x − z)² − g p_z/(x − y)²",
+        "10 claims: 10 proved, 0 refuted",
+    ] {
+        assert!(flat.contains(line), "{line}: {out}");
+    }
+    let file = system_file("calogero.toml");
+    let space = SearchSpace::new(3, 1, 0).denominators_degree(2);
+    let found = search(file.system(), &SearchOptions::new(space)).expect("searches");
+    assert!(found.all_symbolic());
+    let basis: Vec<(brackets::FunctionName, Expr)> = found
+        .basis
+        .iter()
+        .enumerate()
+        .map(|(i, f)| {
+            let name = format!("J{}", i + 1);
+            let label = brackets::FunctionName {
+                name: name.clone(),
+                display: name,
+            };
+            (label, f.expr().clone())
+        })
+        .collect();
+    for (name, expected) in [("K1", true), ("K2", true), ("f2", false), ("f3", false)] {
+        let target = file.parse_argument(name).expect("parses");
+        let written = brackets::table::express(&target, &basis).expect("solves");
+        assert_eq!(written.is_some(), expected, "{name}");
+    }
+    // Higher powers of the denominators add monomials, but no function that is zero.
+    let wider = SearchOptions::new(SearchSpace::new(3, 1, 0).denominators_degree(4));
+    let more = search(file.system(), &wider).expect("searches");
+    assert!(more.unknowns > found.unknowns);
+    assert_eq!(more.basis.len(), 10);
 }

@@ -1,8 +1,8 @@
 //! Clearing denominators for linear algebra: with denominator atoms (`v` standing for a
 //! polynomial `D`, `v^{−k} = 1/D^k`) the monomials of a vector are not independent
 //! (`v · D = 1`), so linear algebra that compares coefficients runs on the vectors' images
-//! under one injective linear map onto polynomials, [`Clearing`]. The closure's and the bracket
-//! table's solves take it.
+//! under one injective linear map onto polynomials, [`Clearing`]. The closure's, the bracket
+//! table's and the search's solves take it.
 
 use trigpoly::{Expr, GaussianRational, Rational, Var};
 
@@ -54,7 +54,7 @@ impl Clearing {
                     .collect();
                 return Err(EngineError::Invalid(format!(
                     "the denominator {} is zero at {}, the values the linear algebra takes: \
-                     give other values (`ClosureOptions::fix`; on the command line, --fix)",
+                     give other values (the options' `fix`; on the command line, --fix)",
                     vars.variable(*v).unicode(),
                     values.join(", ")
                 )));

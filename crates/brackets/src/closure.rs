@@ -1237,7 +1237,7 @@ mod tests {
         assert_eq!(
             err.to_string(),
             "the denominator (a − b) is zero at a = 1, b = 1, the values the linear algebra \
-             takes: give other values (`ClosureOptions::fix`; on the command line, --fix)"
+             takes: give other values (the options' `fix`; on the command line, --fix)"
         );
         let options = ClosureOptions::new(1).fix(system.var("b"), Rational::from(2));
         let c = closure(&system, &["T", "X"], &options).unwrap();

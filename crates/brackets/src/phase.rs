@@ -208,11 +208,11 @@ impl PhaseSpace {
 
     /// Refuses `what` (a command's work) on a space with denominator atoms: its linear algebra
     /// or its evaluation treats the monomials as independent, and with an atom `v` standing for
-    /// `D` they are not (`v⁻¹ · D = 1`), so its answer could be wrong. Its callers: `search`
-    /// and the towers; `rank` differentiates through the atoms ([`Self::derivative`]) and
-    /// decides its minors by the exact zero test, and `closure` runs its linear algebra on
-    /// cleared images of its vectors, which are polynomials (`closure.rs`); a picture of the
-    /// flow evaluates each atom as its polynomial (`superint plot`).
+    /// `D` they are not (`v⁻¹ · D = 1`), so its answer could be wrong. Its callers: the towers;
+    /// `rank` differentiates through the atoms ([`Self::derivative`]) and decides its minors by
+    /// the exact zero test, `closure` runs its linear algebra on cleared images of its vectors,
+    /// which are polynomials (`closure.rs`), and so does `search`, on monomials independent as
+    /// functions; a picture of the flow evaluates each atom as its polynomial (`superint plot`).
     pub fn refuse_denominators(&self, what: &str) -> Result<(), EngineError> {
         if self.atoms.is_empty() {
             return Ok(());
@@ -225,8 +225,8 @@ impl PhaseSpace {
         Err(EngineError::Invalid(format!(
             "{what} is not supported on a system with denominators ({}): its linear algebra \
              takes monomials as independent, and with 1/D they are not; check, bracket, \
-             expand, table, rank, closure and plot work there, deciding zero by clearing \
-             denominators",
+             expand, table, rank, closure, search and plot work there, deciding zero by \
+             clearing denominators",
             names.join(", ")
         )))
     }

@@ -81,6 +81,17 @@ impl Constraints {
     }
 }
 
+/// An atom weighs what every term of its polynomial does, so that `v ↦ D` keeps weights and
+/// a lift is homogeneous as an element, not only as written.
+fn atoms_weigh_their_polynomials(c: &mut Constraints, space: &PhaseSpace) {
+    let n = space.vars().len();
+    for (v, d) in space.denominator_atoms() {
+        for t in d.terms() {
+            c.push(&minus(&t.exponents(), &unit(n, v.index(), 1)), 0);
+        }
+    }
+}
+
 fn unit(n: usize, j: usize, value: i64) -> Vec<i64> {
     let mut e = vec![0; n];
     e[j] = value;
@@ -127,13 +138,15 @@ impl Scaling {
                 c.push(&minus(&t.exponents(), &unit(n, pair.p.index(), 1)), -1);
             }
         }
-        if !space.declared_brackets().is_empty() {
+        // The declared brackets' part of the flow, the atoms' chain rule included.
+        if !space.declared_brackets().is_empty() || !space.denominator_atoms().is_empty() {
             for (v, part) in space.gradient(h)?.declared() {
                 for t in cond(part.clone())?.terms() {
                     c.push(&minus(&t.exponents(), &unit(n, v.index(), 1)), -1);
                 }
             }
         }
+        atoms_weigh_their_polynomials(&mut c, space);
         Ok(Scaling {
             vars,
             basis: c.solve(),
@@ -175,13 +188,7 @@ impl Scaling {
                 }
             }
         }
-        // An atom weighs what every term of its polynomial does, so that `v ↦ D` keeps weights
-        // and a lift is homogeneous as an element, not only as written.
-        for (v, d) in space.denominator_atoms() {
-            for t in d.terms() {
-                c.push(&minus(&t.exponents(), &unit(n, v.index(), 1)), 0);
-            }
-        }
+        atoms_weigh_their_polynomials(&mut c, space);
         for f in functions {
             let terms: Vec<Vec<i64>> = f.terms().map(|t| t.exponents()).collect();
             for t in terms.iter().skip(1) {

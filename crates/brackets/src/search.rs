@@ -25,6 +25,15 @@
 //! engine at the fixed values, lifted back to symbolic parameters by homogeneity
 //! ([`crate::scaling`]) and proved again symbolically.
 //!
+//! On a system with denominator atoms (`1/(x − y)` exact, [`trigpoly::VarKind::Denominator`])
+//! the space also has the products `1/Π D_i^{k_i}` with `Σ k_i ≤`
+//! [`SearchSpace::denominators_degree`]. Its monomials are then not independent functions
+//! (`x/(x − y) − y/(x − y) = 1`): the unknowns are those independent of the simpler ones, and
+//! the equations and that choice are decided on images under one injective map onto
+//! polynomials, the denominators cleared (`crate::clearing`), so that no function equal to
+//! zero is reported and each integral has one set of coordinates. Which integrals are new
+//! (`new_only`) and parameters kept symbolic are not yet offered there.
+//!
 //! ```
 //! use brackets::search::{search, SearchOptions, SearchSpace};
 //! use brackets::systems;
@@ -78,6 +87,7 @@ use trigpoly::{
 };
 
 use crate::claim::Condition;
+use crate::clearing::Clearing;
 use crate::error::EngineError;
 use crate::modular::{self, Echelon, Field, Fp, SparseVec};
 use crate::scaling::{Lifter, Scaling};
@@ -103,6 +113,9 @@ pub struct SearchSpace {
     /// Total degree in the Poisson variables ([`SpaceVariables::poisson`]), those whose
     /// brackets are declared (0 unless set, [`SearchSpace::poisson_degree`]).
     pub poisson_degree: u32,
+    /// On a system with denominator atoms, the total degree `Σ k_i` of the powers
+    /// `1/D_i^{k_i}` (0 unless set, [`SearchSpace::denominators_degree`]).
+    pub denominators_degree: u32,
 }
 
 impl SearchSpace {
@@ -116,7 +129,16 @@ impl SearchSpace {
             laurent: false,
             parameters_degree: 0,
             poisson_degree: 0,
+            denominators_degree: 0,
         }
+    }
+
+    /// The same space with products of the denominators `1/D_i^{k_i}` of total degree
+    /// `Σ k_i ≤ d` (on a system that declares denominator atoms; Calogero's `g/(x − y)²`
+    /// has degree 2).
+    pub fn denominators_degree(mut self, d: u32) -> Self {
+        self.denominators_degree = d;
+        self
     }
 
     /// The same space with polynomials of total degree `≤ d` in the Poisson variables.
@@ -158,6 +180,24 @@ impl SearchSpace {
                 why.push(format!("negative powers of {p}"));
             }
         }
+        if let Some(d) = vars
+            .vars()
+            .filter(|&v| vars.variable(v).kind() == VarKind::Denominator)
+            .find(|&v| f.exponent_range(v).is_some_and(|(_, hi)| hi > 0))
+        {
+            why.push(format!(
+                "a positive power of the denominator {}, which the space takes only as 1/D",
+                vars.variable(d).unicode()
+            ));
+        }
+        let over = denominators_degree(f);
+        if over > i64::from(self.denominators_degree) {
+            why.push(format!(
+                "degree {over} in the denominators, past the space's {} \
+                 (SearchSpace::denominators_degree; on the command line, --denominators-degree)",
+                self.denominators_degree
+            ));
+        }
         if let (false, Some(x)) = (self.laurent, negative(Coordinate)) {
             why.push(format!(
                 "negative powers of {x}, which a Laurent space (SearchSpace::laurent; on the \
@@ -179,6 +219,20 @@ impl SearchSpace {
         }
         (!why.is_empty()).then(|| why.join("; "))
     }
+}
+
+/// The largest total degree `Σ k_i` of a term's denominators `1/D_i^{k_i}` (the negative
+/// exponents of its denominator atoms).
+fn denominators_degree(f: &Expr) -> i64 {
+    let vars = f.vars();
+    let atoms: Vec<Var> = vars
+        .vars()
+        .filter(|&v| vars.variable(v).kind() == VarKind::Denominator)
+        .collect();
+    f.terms()
+        .map(|t| atoms.iter().map(|&v| (-t.exponent(v)).max(0)).sum::<i64>())
+        .max()
+        .unwrap_or(0)
 }
 
 /// What to search for and how.
@@ -484,6 +538,8 @@ struct Unknown {
     momenta_degree: i64,
     poisson_degree: i64,
     positions_degree: i64,
+    /// `Σ k_i` of its denominators `1/D_i^{k_i}`.
+    denominators_degree: i64,
     trig_degree: i64,
     parameters_degree: i64,
 }
@@ -548,6 +604,7 @@ impl Problem {
         system: &System,
         space: &SearchSpace,
         symbolic: &[Var],
+        parameters: &[(Var, Rational)],
         h: Expr,
         cond: Option<Vec<(Var, Expr)>>,
     ) -> Result<Self, EngineError> {
@@ -587,6 +644,10 @@ impl Problem {
         let moms = exponent_vectors(momenta.len(), space.momenta_degree, false);
         let lie = exponent_vectors(poisson.len(), space.poisson_degree, false);
         let params = exponent_vectors(symbolic.len(), space.parameters_degree, false);
+        // The powers `k_i` of the denominators `1/D_i^{k_i}`, stored as the atoms' exponents
+        // `−k_i`.
+        let atoms = system.space().denominator_atoms();
+        let inverses = exponent_vectors(atoms.len(), space.denominators_degree, false);
         let ks: Vec<Vec<i64>> = exponent_vectors(angles.len(), space.trig_degree, true)
             .into_iter()
             .filter(|k| canonical(k.iter().copied()))
@@ -601,6 +662,7 @@ impl Problem {
             .saturating_mul(moms.len())
             .saturating_mul(lie.len())
             .saturating_mul(params.len())
+            .saturating_mul(inverses.len())
             .saturating_mul(trig_functions);
         let limit = vars.limits().max_terms;
         if count > limit {
@@ -609,8 +671,10 @@ impl Problem {
                  smaller space, or raise the limit (`Limits::max_terms`; on the command line, --max-terms)"
             )));
         }
-        let mut unknowns = Vec::with_capacity(count);
-        for (a, c, m, s) in itertools::iproduct!(&positions, &moms, &lie, &params) {
+        // The monomials `φ` without angles, then (with denominators) those whose functions are
+        // independent of the simpler ones, then each times the trigonometric functions.
+        let mut phases = Vec::with_capacity(count / trig_functions.max(1));
+        for (a, c, m, s, d) in itertools::iproduct!(&positions, &moms, &lie, &params, &inverses) {
             let mut phase = vec![0i64; vars.len()];
             for (v, e) in coords
                 .iter()
@@ -621,10 +685,26 @@ impl Problem {
             {
                 phase[v.index()] = *e;
             }
-            let momenta_degree = c.iter().sum();
-            let poisson_degree = m.iter().sum();
-            let positions_degree = a.iter().map(|x| x.abs()).sum();
-            let parameters_degree = s.iter().sum();
+            for ((v, _), e) in atoms.iter().zip(d) {
+                phase[v.index()] = -e;
+            }
+            phases.push(Unknown {
+                phase,
+                k: vec![0; angles.len()],
+                trig: Trig::One,
+                momenta_degree: c.iter().sum(),
+                poisson_degree: m.iter().sum(),
+                positions_degree: a.iter().map(|x| x.abs()).sum(),
+                denominators_degree: d.iter().sum(),
+                trig_degree: 0,
+                parameters_degree: s.iter().sum(),
+            });
+        }
+        if !atoms.is_empty() {
+            phases = independent_as_functions(&vars, atoms, parameters, phases)?;
+        }
+        let mut unknowns = Vec::with_capacity(phases.len() * trig_functions);
+        for phi in phases {
             for k in &ks {
                 let trig_degree: i64 = k.iter().map(|x| x.abs()).sum();
                 let trigs: &[Trig] = if trig_degree == 0 {
@@ -634,14 +714,10 @@ impl Problem {
                 };
                 for &trig in trigs {
                     unknowns.push(Unknown {
-                        phase: phase.clone(),
                         k: k.clone(),
                         trig,
-                        momenta_degree,
-                        poisson_degree,
-                        positions_degree,
                         trig_degree,
-                        parameters_degree,
+                        ..phi.clone()
                     });
                 }
             }
@@ -656,6 +732,7 @@ impl Problem {
                     u.poisson_degree,
                     u.trig_degree,
                     u.positions_degree,
+                    u.denominators_degree,
                     u.parameters_degree,
                 )
             };
@@ -688,7 +765,8 @@ impl Problem {
             .flat_map(|(pair, (dq, dp))| [(pair.q, dp, false), (pair.p, dq, true)])
             .chain(gradient.declared().iter().map(|(v, x)| (*v, x, false)));
         for (v, part, negated) in parts {
-            let part = problem.apply_condition(part.clone())?;
+            // The declared brackets of an atom hold its polynomial's parameters.
+            let part = problem.apply_condition(fix_parameters(part, parameters)?)?;
             if !part.is_zero() {
                 problem.flow_parts.push((v, part, negated));
             }
@@ -903,6 +981,102 @@ impl Problem {
     }
 }
 
+/// The real equations of an image `{φ, H}` (or, for the denominators, of a function), as a
+/// column: a row for the real and for the imaginary part of each monomial with a canonical
+/// `e^{ik·θ}` (`k ≥ 0`), numbered as they first appear in `rows`. Right for real functions,
+/// whose other coefficients are the conjugates of these.
+fn real_rows(
+    e: &Expr,
+    angles: &[Var],
+    rows: &mut MonomialIndex<[Option<usize>; 2]>,
+    nrows: &mut usize,
+) -> SparseVec<Rational> {
+    let mut col = Vec::new();
+    for t in e.terms() {
+        if !canonical(angles.iter().map(|v| t.exponent(*v))) {
+            continue;
+        }
+        let c = t.coeff();
+        let row = rows
+            .get_or_insert_with_term(&t, || [None, None])
+            .expect("the rows have the function's variables");
+        for (part, x) in [c.re, c.im].into_iter().enumerate() {
+            if x.is_zero() {
+                continue;
+            }
+            let r = *row[part].get_or_insert_with(|| {
+                *nrows += 1;
+                *nrows - 1
+            });
+            col.push((r, x));
+        }
+    }
+    col
+}
+
+/// With denominator atoms the monomials of the space are not independent functions
+/// (`x/(x − y) − y/(x − y) = 1`): the monomials `φ` (without angles) whose functions are
+/// independent of the simpler ones before them, in the order of [`Unknown`]'s degrees, decided
+/// exactly on their images under one [`Clearing`], which is injective. The space they span is
+/// the whole space's, and each of its functions has one set of coordinates in them. Each
+/// denominator must be free of the angles, so that the same monomials are independent times
+/// any `cos k·θ` or `sin k·θ`.
+fn independent_as_functions(
+    vars: &Vars,
+    atoms: &[(Var, Expr)],
+    parameters: &[(Var, Rational)],
+    mut phases: Vec<Unknown>,
+) -> Result<Vec<Unknown>, EngineError> {
+    if let Some((v, _)) = atoms
+        .iter()
+        .find(|(_, d)| vars.angles().any(|a| d.contains(a)))
+    {
+        return Err(EngineError::Invalid(format!(
+            "the search takes denominators free of the angles, and {} has one",
+            vars.variable(*v).unicode()
+        )));
+    }
+    phases.sort_by(|a, b| {
+        let key = |u: &Unknown| {
+            (
+                u.momenta_degree,
+                u.poisson_degree,
+                u.positions_degree,
+                u.denominators_degree,
+                u.parameters_degree,
+            )
+        };
+        key(a).cmp(&key(b)).then_with(|| a.phase.cmp(&b.phase))
+    });
+    let monomials = phases
+        .iter()
+        .map(|u| Expr::from_terms(vars, vec![(GaussianRational::from(1), u.phase.clone())]))
+        .collect::<Result<Vec<Expr>, _>>()?;
+    let clearing = Clearing::new(atoms, parameters, monomials.iter())?
+        .expect("the space has denominator atoms");
+    let images = monomials
+        .par_iter()
+        .map(|m| clearing.apply(m))
+        .collect::<Result<Vec<Expr>, EngineError>>()?;
+    let mut rows = MonomialIndex::new(vars);
+    let mut nrows = 0;
+    let columns: Vec<SparseVec<Rational>> = images
+        .iter()
+        .map(|e| real_rows(e, &[], &mut rows, &mut nrows))
+        .collect();
+    let mut span = Echelon::<Rational>::new(nrows);
+    let independent: Vec<bool> = columns
+        .iter()
+        .enumerate()
+        .map(|(i, col)| span.extend(i, col))
+        .collect();
+    Ok(phases
+        .into_iter()
+        .zip(independent)
+        .filter_map(|(u, kept)| kept.then_some(u))
+        .collect())
+}
+
 /// Appends `(j, x)` unless `x` is zero.
 fn push_nonzero<F: Field>(v: &mut SparseVec<F>, j: usize, x: F) {
     if !x.is_zero() {
@@ -987,6 +1161,14 @@ fn parameter_values(
 ) -> Vec<(Var, Rational)> {
     let vars = system.vars();
     let mut exprs = vec![system.hamiltonian().clone()];
+    // An atom's polynomial enters the bracket through its declared brackets.
+    exprs.extend(
+        system
+            .space()
+            .denominator_atoms()
+            .iter()
+            .map(|a| a.1.clone()),
+    );
     if let Some(c) = condition {
         exprs.extend(c.subs().iter().map(|s| s.1.clone()));
     }
@@ -1023,7 +1205,14 @@ fn fixed_problem(
         ),
         None => None,
     };
-    Problem::new(system, &options.space, &options.symbolic, h, condition)
+    Problem::new(
+        system,
+        &options.space,
+        &options.symbolic,
+        parameters,
+        h,
+        condition,
+    )
 }
 
 /// Substitutes parameter values.
@@ -1078,9 +1267,6 @@ fn primitive_vector(v: &SparseVec<Rational>) -> SparseVec<Rational> {
 /// # Ok::<(), brackets::EngineError>(())
 /// ```
 pub fn search(system: &System, options: &SearchOptions) -> Result<SearchResult, EngineError> {
-    system
-        .space()
-        .refuse_denominators("the search for integrals")?;
     // The search hands blocks of work to rayon's pool (images, blocks of equations, proofs):
     // it runs on a thread of the pool, which takes its share of each and, on a pool of one
     // thread, does it in place, where any other thread would wait for the pool's at each.
@@ -1100,6 +1286,18 @@ pub fn search(system: &System, options: &SearchOptions) -> Result<SearchResult, 
     }
     let vars = system.vars();
     check_parameters(vars, &options.symbolic, &options.fixed)?;
+    let atoms = system.space().denominator_atoms();
+    if !atoms.is_empty() && (options.new_only || !options.symbolic.is_empty()) {
+        let what = match options.new_only {
+            true => "which integrals are new (SearchOptions::new_only; --new-only)",
+            false => "parameters kept symbolic (SearchOptions::symbolic; --symbolic)",
+        };
+        return Err(EngineError::Invalid(format!(
+            "on a system with denominators the search finds a basis of the integrals at fixed \
+             parameter values, each lifted and proved for every value, but not yet {what}: \
+             search without it"
+        )));
+    }
     // The unknowns are the real coefficients of real functions, and the equations only the
     // coefficients of `e^{ik·θ}` with `k ≥ 0`: right when `{F, H}` is real, that is when `H`
     // and the condition's values are.
@@ -1138,37 +1336,34 @@ pub fn search(system: &System, options: &SearchOptions) -> Result<SearchResult, 
     // part of each monomial with a canonical `e^{ik·θ}`, numbered as they first appear. The
     // images are formed on the pool's threads, a block of unknowns at a time, and numbered in
     // the order of the unknowns.
+    // With denominator atoms the images are taken through one injective `Clearing`, whose
+    // powers are the highest among all the images: formed in one block.
+    let block = if atoms.is_empty() {
+        IMAGE_BLOCK
+    } else {
+        n.max(1)
+    };
     let mut rows: MonomialIndex<[Option<usize>; 2]> = MonomialIndex::new(&problem.vars);
     let mut nrows = 0;
     let mut columns: Vec<SparseVec<Rational>> = Vec::with_capacity(n);
-    for start in (0..n).step_by(IMAGE_BLOCK) {
-        let images: Vec<Result<Expr, EngineError>> = (start..n.min(start + IMAGE_BLOCK))
+    for start in (0..n).step_by(block) {
+        let images: Vec<Result<Expr, EngineError>> = (start..n.min(start + block))
             .into_par_iter()
             .map(|j| problem.image(&problem.expr(j, &Rational::one())?))
             .collect();
-        for image in images {
-            let image = image?;
-            let mut col = Vec::new();
-            for t in image.terms() {
-                if !canonical(problem.variables.angles.iter().map(|v| t.exponent(*v))) {
-                    continue;
-                }
-                let c = t.coeff();
-                let row = rows
-                    .get_or_insert_with_term(&t, || [None, None])
-                    .expect("an image has the problem's variables");
-                for (part, x) in [c.re, c.im].into_iter().enumerate() {
-                    if x.is_zero() {
-                        continue;
-                    }
-                    let r = *row[part].get_or_insert_with(|| {
-                        nrows += 1;
-                        nrows - 1
-                    });
-                    col.push((r, x));
-                }
-            }
-            columns.push(col);
+        let mut images = images.into_iter().collect::<Result<Vec<Expr>, _>>()?;
+        if let Some(clearing) = Clearing::new(atoms, &parameters, images.iter())? {
+            let cleared: Vec<Result<Expr, EngineError>> =
+                images.par_iter().map(|e| clearing.apply(e)).collect();
+            images = cleared.into_iter().collect::<Result<_, _>>()?;
+        }
+        for image in &images {
+            columns.push(real_rows(
+                image,
+                &problem.variables.angles,
+                &mut rows,
+                &mut nrows,
+            ));
         }
     }
     timings.equations = start.elapsed().as_secs_f64();
@@ -1232,7 +1427,7 @@ pub fn search(system: &System, options: &SearchOptions) -> Result<SearchResult, 
         .map(|v| {
             *v = primitive_vector(v);
             let fixed = problem.combination(v)?;
-            let proved_fixed = problem.flow(system, &fixed)?.is_zero();
+            let proved_fixed = problem.flow(system, &fixed)?.vanishes()?;
             let last = lead(v).expect("a kernel vector is not zero").0;
             let reference = problem.leading_exponents(last);
             let symbolic = match &lifter {
@@ -1371,7 +1566,7 @@ fn flow_vanishes(
         Some(c) => system.flow_when(f, c)?,
         None => system.flow(f)?,
     };
-    Ok(flow.is_zero())
+    Ok(flow.vanishes()?)
 }
 
 /// A real function scaled so that its coefficients in the basis `cos kθ, sin kθ` are coprime
@@ -2154,7 +2349,7 @@ mod tests {
     fn coordinates_are_those_of_the_real_and_imaginary_parts() {
         let rotor = systems::harmonic_rotor();
         let h = rotor.hamiltonian().clone();
-        let problem = Problem::new(&rotor, &SearchSpace::new(2, 1, 2), &[], h, None).unwrap();
+        let problem = Problem::new(&rotor, &SearchSpace::new(2, 1, 2), &[], &[], h, None).unwrap();
         let n = problem.unknowns.len();
         // f = Σ (a_j + i b_j) φ_j over every third unknown (the φ_j are real): Re f has the
         // coordinates a, Im f the coordinates b.
@@ -2194,7 +2389,7 @@ mod tests {
     fn grades_are_degree_then_order_and_form_a_filtration() {
         let rotor = systems::harmonic_rotor();
         let h = rotor.hamiltonian().clone();
-        let problem = Problem::new(&rotor, &SearchSpace::new(2, 2, 2), &[], h, None).unwrap();
+        let problem = Problem::new(&rotor, &SearchSpace::new(2, 2, 2), &[], &[], h, None).unwrap();
         let grading = Grading::new(&problem.variables, 8);
         let grade = |f: &Expr| {
             let n = grading.grade(f);
@@ -2247,7 +2442,7 @@ mod tests {
     fn a_stamp_keeps_the_parts_of_a_product_in_both_fields() {
         let rotor = systems::harmonic_rotor();
         let h = rotor.hamiltonian().clone();
-        let problem = Problem::new(&rotor, &SearchSpace::new(2, 1, 2), &[], h, None).unwrap();
+        let problem = Problem::new(&rotor, &SearchSpace::new(2, 1, 2), &[], &[], h, None).unwrap();
         // f = Σ (a_j + i b_j) φ_j/3 and i·f, whose parts are those of f again.
         let mut f = Expr::zero(&problem.vars);
         for j in (0..problem.unknowns.len()).step_by(5) {
