@@ -218,19 +218,21 @@ fn denominators_bracket_expand_and_rank_work_and_other_commands_refuse() {
 fn denominators_search_finds_integrals_that_are_functions_apart() {
     let f = scratch_text("denominators-search", "two.toml", TWO_BODY);
     let f = f.to_str().unwrap();
-    let found = |denominators: &str| {
-        let o = superint(&[
+    // The search of degree ≤ 2 in the momenta and in the positions.
+    let search = |more: &[&str]| {
+        let mut args = vec![
             "search",
             f,
             "--momenta-degree",
             "2",
             "--positions-degree",
             "2",
-            "--denominators-degree",
-            denominators,
-            "--format",
-            "json",
-        ]);
+        ];
+        args.extend(more);
+        superint(&args)
+    };
+    let found = |denominators: &str| {
+        let o = search(&["--denominators-degree", denominators, "--format", "json"]);
         assert_eq!(
             o.status.code(),
             Some(0),
@@ -253,14 +255,7 @@ fn denominators_search_finds_integrals_that_are_functions_apart() {
     assert!(unknowns < 6 * 6 * 6, "{unknowns}");
     // Higher powers of the denominators add monomials but no integral of this degree.
     assert_eq!(found("4").0, 6);
-    let o = superint(&[
-        "search",
-        f,
-        "--momenta-degree",
-        "2",
-        "--positions-degree",
-        "2",
-    ]);
+    let o = search(&[]);
     // The text as one line, whatever its wrapping.
     let out = String::from_utf8(o.stdout).unwrap();
     let out = out.split_whitespace().collect::<Vec<_>>().join(" ");
@@ -419,6 +414,28 @@ fn denominators_plot_keeps_the_calogero_integrals() {
         err.contains(
             "H is not defined at the starting point: it divides by (x − y), which is 0 there"
         ),
+        "{err}"
+    );
+}
+
+/// A denominator in the angles is refused by the search, which keeps its monomials apart from
+/// `cos k·θ` and `sin k·θ`: exit 2, with the denominator named.
+#[test]
+fn denominators_in_the_angles_are_refused_by_the_search() {
+    let f = scratch_text(
+        "denominators-angles",
+        "pendulum.toml",
+        "name = \"pendulum\"\n\
+         hamiltonian = \"p_theta^2/2 + 1/(2 + cos(theta))\"\n\
+         [phase_space]\n\
+         angles = [\"theta\"]\n\
+         denominators = [\"2 + cos(theta)\"]\n",
+    );
+    let o = superint(&["search", f.to_str().unwrap()]);
+    let err = String::from_utf8(o.stderr).unwrap();
+    assert_eq!(o.status.code(), Some(2), "{err}");
+    assert!(
+        err.contains("the search takes denominators free of the angles, and (2 + cos θ) has one"),
         "{err}"
     );
 }

@@ -544,6 +544,21 @@ struct Unknown {
     parameters_degree: i64,
 }
 
+impl Unknown {
+    /// Its degrees in the order of the unknowns, simpler first: momenta, Poisson variables,
+    /// trigonometric order, positions, denominators, parameters.
+    fn degrees(&self) -> [i64; 6] {
+        [
+            self.momenta_degree,
+            self.poisson_degree,
+            self.trig_degree,
+            self.positions_degree,
+            self.denominators_degree,
+            self.parameters_degree,
+        ]
+    }
+}
+
 /// Where a monomial `φ·e^{ik·θ}` of the space sits among the unknowns.
 #[derive(Clone, Copy, Debug)]
 enum Slot {
@@ -726,18 +741,8 @@ impl Problem {
         // and uses only earlier ones, so simpler unknowns come first.
         // A total order (no two unknowns are equal), so the parallel sort is deterministic.
         unknowns.par_sort_unstable_by(|a, b| {
-            let key = |u: &Unknown| {
-                (
-                    u.momenta_degree,
-                    u.poisson_degree,
-                    u.trig_degree,
-                    u.positions_degree,
-                    u.denominators_degree,
-                    u.parameters_degree,
-                )
-            };
-            key(a)
-                .cmp(&key(b))
+            a.degrees()
+                .cmp(&b.degrees())
                 .then_with(|| b.k.cmp(&a.k))
                 .then_with(|| a.phase.cmp(&b.phase))
                 .then_with(|| a.trig.cmp(&b.trig))
@@ -1036,17 +1041,11 @@ fn independent_as_functions(
             vars.variable(*v).unicode()
         )));
     }
+    // Without angles, in the order of the unknowns.
     phases.sort_by(|a, b| {
-        let key = |u: &Unknown| {
-            (
-                u.momenta_degree,
-                u.poisson_degree,
-                u.positions_degree,
-                u.denominators_degree,
-                u.parameters_degree,
-            )
-        };
-        key(a).cmp(&key(b)).then_with(|| a.phase.cmp(&b.phase))
+        a.degrees()
+            .cmp(&b.degrees())
+            .then_with(|| a.phase.cmp(&b.phase))
     });
     let monomials = phases
         .iter()
