@@ -192,9 +192,8 @@ fn denominators_bracket_expand_and_rank_work_and_other_commands_refuse() {
     let refused: [(&[&str], &str); 2] = [
         (
             &["search", f, "--new-only"],
-            "on a system with denominators the search finds a basis of the integrals at fixed \
-             parameter values, each lifted and proved for every value, but not yet which \
-             integrals are new",
+            "on a system with denominators the search finds a basis of the integrals, but not \
+             yet which of them are new",
         ),
         (
             &["bracket", f, "p_x", "H", "--when", "x = 1"],
@@ -436,6 +435,46 @@ fn denominators_in_the_angles_are_refused_by_the_search() {
     assert_eq!(o.status.code(), Some(2), "{err}");
     assert!(
         err.contains("the search takes denominators free of the angles, and (2 + cos θ) has one"),
+        "{err}"
+    );
+}
+
+/// With `g` kept symbolic the two-body search finds its integrals for every `g` and shows the
+/// generators over the polynomials in `g`: the multiples `g` and `g P` of `1` and `P` are
+/// not among them. A parameter that a denominator holds cannot be kept symbolic: refused.
+#[test]
+fn denominators_search_keeps_a_parameter_symbolic_when_no_denominator_holds_it() {
+    let f = scratch_text("denominators-symbolic", "two.toml", TWO_BODY);
+    let f = f.to_str().unwrap();
+    let o = superint(&[
+        "search",
+        f,
+        "--momenta-degree",
+        "2",
+        "--positions-degree",
+        "2",
+        "--symbolic",
+        "g",
+        "--parameters-degree",
+        "1",
+        "--format",
+        "json",
+    ]);
+    assert_eq!(o.status.code(), Some(0));
+    let v: serde_json::Value = serde_json::from_slice(&o.stdout).unwrap();
+    let search = &v["searches"][0];
+    assert_eq!(search["dimension"], 9);
+    assert_eq!(search["for_every_value"], 9);
+    assert_eq!(search["shown"].as_array().unwrap().len(), 7);
+    let shifted = TWO_BODY.replace("parameters = [\"g\"]", "parameters = [\"g\", \"a\"]");
+    let shifted = shifted.replace("\"x^2 + y^2\"", "\"x - a\"");
+    assert!(shifted.contains("x - a"), "{shifted}");
+    let f = scratch_text("denominators-symbolic", "shifted.toml", &shifted);
+    let o = superint(&["search", f.to_str().unwrap(), "--symbolic", "a"]);
+    let err = String::from_utf8(o.stderr).unwrap();
+    assert_eq!(o.status.code(), Some(2), "{err}");
+    assert!(
+        err.contains("the denominator (x − a) holds a, kept symbolic"),
         "{err}"
     );
 }

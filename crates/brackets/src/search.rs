@@ -31,8 +31,9 @@
 //! (`x/(x − y) − y/(x − y) = 1`): the unknowns are those independent of the simpler ones, and
 //! the equations and that choice are decided on images under one injective map onto
 //! polynomials, the denominators cleared (`crate::clearing`), so that no function equal to
-//! zero is reported and each integral has one set of coordinates. Which integrals are new
-//! (`new_only`) and parameters kept symbolic are not yet offered there.
+//! zero is reported and each integral has one set of coordinates. Parameters are kept
+//! symbolic when no denominator holds them; which integrals are new (`new_only`) is not yet
+//! offered there.
 //!
 //! ```
 //! use brackets::search::{search, SearchOptions, SearchSpace};
@@ -1286,15 +1287,28 @@ pub fn search(system: &System, options: &SearchOptions) -> Result<SearchResult, 
     let vars = system.vars();
     check_parameters(vars, &options.symbolic, &options.fixed)?;
     let atoms = system.space().denominator_atoms();
-    if !atoms.is_empty() && (options.new_only || !options.symbolic.is_empty()) {
-        let what = match options.new_only {
-            true => "which integrals are new (SearchOptions::new_only; --new-only)",
-            false => "parameters kept symbolic (SearchOptions::symbolic; --symbolic)",
-        };
+    if !atoms.is_empty() && options.new_only {
+        return Err(EngineError::Invalid(
+            "on a system with denominators the search finds a basis of the integrals, but not \
+             yet which of them are new (SearchOptions::new_only; --new-only): search without it"
+                .into(),
+        ));
+    }
+    // A denominator free of the parameters kept symbolic makes the choice of independent
+    // monomials the same for each multiple by a parameter monomial, which the parameter
+    // multiples of integrals need.
+    if let Some((v, p)) = atoms.iter().find_map(|(v, d)| {
+        options
+            .symbolic
+            .iter()
+            .find(|p| d.contains(**p))
+            .map(|p| (v, p))
+    }) {
         return Err(EngineError::Invalid(format!(
-            "on a system with denominators the search finds a basis of the integrals at fixed \
-             parameter values, each lifted and proved for every value, but not yet {what}: \
-             search without it"
+            "the denominator {} holds {}, kept symbolic: the search keeps symbolic only \
+             parameters that no denominator holds; fix it instead (--fix)",
+            vars.variable(*v).unicode(),
+            vars.variable(*p).unicode()
         )));
     }
     // The unknowns are the real coefficients of real functions, and the equations only the
