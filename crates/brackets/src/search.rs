@@ -78,7 +78,7 @@
 //! # Ok::<(), Box<dyn std::error::Error>>(())
 //! ```
 
-use rustc_hash::FxHashMap;
+use rustc_hash::{FxHashMap, FxHashSet};
 use std::time::Instant;
 
 use itertools::Itertools;
@@ -1022,11 +1022,15 @@ fn real_rows(
 
 /// With denominator atoms the monomials of the space are not independent functions
 /// (`x/(x − y) − y/(x − y) = 1`): the monomials `φ` (without angles) whose functions are
-/// independent of the simpler ones before them, in the order of [`Unknown`]'s degrees, decided
+/// independent of the simpler ones before them, in the order of [`Unknown::degrees`], decided
 /// exactly on their images under one [`Clearing`], which is injective. The space they span is
 /// the whole space's, and each of its functions has one set of coordinates in them. Each
 /// denominator must be free of the angles, so that the same monomials are independent times
-/// any `cos k·θ` or `sin k·θ`.
+/// any `cos k·θ` or `sin k·θ`. When every denominator is a polynomial in the coordinates (and
+/// parameters fixed for the linear algebra), clearing commutes with a factor in the momenta,
+/// the Poisson variables and the symbolic parameters, and the monomials of each such factor
+/// are compared among themselves only: the choice is made once, on the monomials in the
+/// coordinates and the denominators alone, in the same order.
 fn independent_as_functions(
     vars: &Vars,
     atoms: &[(Var, Expr)],
@@ -1042,13 +1046,45 @@ fn independent_as_functions(
             vars.variable(*v).unicode()
         )));
     }
+    let in_coordinates = atoms.iter().all(|(_, d)| {
+        vars.vars().filter(|&v| d.contains(v)).all(|v| {
+            matches!(
+                vars.variable(v).kind(),
+                VarKind::Coordinate | VarKind::Parameter
+            )
+        })
+    });
+    // The part of a monomial that the choice is made on.
+    let part = |u: &Unknown| -> Unknown {
+        if !in_coordinates {
+            return u.clone();
+        }
+        let mut phase = u.phase.clone();
+        for v in vars.vars() {
+            if !matches!(
+                vars.variable(v).kind(),
+                VarKind::Coordinate | VarKind::Denominator
+            ) {
+                phase[v.index()] = 0;
+            }
+        }
+        Unknown {
+            phase,
+            momenta_degree: 0,
+            poisson_degree: 0,
+            parameters_degree: 0,
+            ..u.clone()
+        }
+    };
+    let mut parts: Vec<Unknown> = phases.iter().map(part).collect();
     // Without angles, in the order of the unknowns.
-    phases.sort_by(|a, b| {
+    parts.sort_by(|a, b| {
         a.degrees()
             .cmp(&b.degrees())
             .then_with(|| a.phase.cmp(&b.phase))
     });
-    let monomials = phases
+    parts.dedup_by(|a, b| a.phase == b.phase);
+    let monomials = parts
         .iter()
         .map(|u| Expr::from_terms(vars, vec![(GaussianRational::from(1), u.phase.clone())]))
         .collect::<Result<Vec<Expr>, _>>()?;
@@ -1065,16 +1101,15 @@ fn independent_as_functions(
         .map(|e| real_rows(e, &[], &mut rows, &mut nrows))
         .collect();
     let mut span = Echelon::<Rational>::new(nrows);
-    let independent: Vec<bool> = columns
-        .iter()
-        .enumerate()
-        .map(|(i, col)| span.extend(i, col))
-        .collect();
-    Ok(phases
+    let kept: FxHashSet<Vec<i64>> = parts
         .into_iter()
-        .zip(independent)
-        .filter_map(|(u, kept)| kept.then_some(u))
-        .collect())
+        .zip(&columns)
+        .enumerate()
+        .filter(|(i, (_, col))| span.extend(*i, col))
+        .map(|(_, (u, _))| u.phase)
+        .collect();
+    phases.retain(|u| kept.contains(&part(u).phase));
+    Ok(phases)
 }
 
 /// Appends `(j, x)` unless `x` is zero.
