@@ -4,6 +4,7 @@
 //! under one injective linear map onto polynomials, [`Clearing`]. The closure's, the bracket
 //! table's and the search's solves take it.
 
+use rayon::prelude::*;
 use trigpoly::{Expr, GaussianRational, Rational, Var};
 
 use crate::search::fix_parameters;
@@ -63,6 +64,12 @@ impl Clearing {
         }
         let real = out.iter().all(|(_, d, _)| d.is_real());
         Ok(Some(Clearing { atoms: out, real }))
+    }
+
+    /// The images of `es`, formed on the pool's threads; the first error in their order.
+    pub(crate) fn apply_all(&self, es: &[Expr]) -> Result<Vec<Expr>, EngineError> {
+        let images: Vec<Result<Expr, EngineError>> = es.par_iter().map(|e| self.apply(e)).collect();
+        images.into_iter().collect()
     }
 
     /// The image of `e`: a polynomial with no atoms.

@@ -182,8 +182,7 @@ impl SearchSpace {
             }
         }
         if let Some(d) = vars
-            .vars()
-            .filter(|&v| vars.variable(v).kind() == VarKind::Denominator)
+            .denominators()
             .find(|&v| f.exponent_range(v).is_some_and(|(_, hi)| hi > 0))
         {
             why.push(format!(
@@ -225,11 +224,7 @@ impl SearchSpace {
 /// The largest total degree `Σ k_i` of a term's denominators `1/D_i^{k_i}` (the negative
 /// exponents of its denominator atoms).
 fn denominators_degree(f: &Expr) -> i64 {
-    let vars = f.vars();
-    let atoms: Vec<Var> = vars
-        .vars()
-        .filter(|&v| vars.variable(v).kind() == VarKind::Denominator)
-        .collect();
+    let atoms: Vec<Var> = f.vars().denominators().collect();
     f.terms()
         .map(|t| atoms.iter().map(|&v| (-t.exponent(v)).max(0)).sum::<i64>())
         .max()
@@ -1046,27 +1041,28 @@ fn independent_as_functions(
             vars.variable(*v).unicode()
         )));
     }
+    let kind = |v: Var| vars.variable(v).kind();
     let in_coordinates = atoms.iter().all(|(_, d)| {
-        vars.vars().filter(|&v| d.contains(v)).all(|v| {
-            matches!(
-                vars.variable(v).kind(),
-                VarKind::Coordinate | VarKind::Parameter
-            )
-        })
+        vars.vars()
+            .filter(|&v| d.contains(v))
+            .all(|v| matches!(kind(v), VarKind::Coordinate | VarKind::Parameter))
     });
-    // The part of a monomial that the choice is made on.
+    // The part of a monomial that the choice is made on: without the variables listed here.
+    let apart: Vec<usize> = match in_coordinates {
+        true => vars
+            .vars()
+            .filter(|&v| !matches!(kind(v), VarKind::Coordinate | VarKind::Denominator))
+            .map(|v| v.index())
+            .collect(),
+        false => Vec::new(),
+    };
     let part = |u: &Unknown| -> Unknown {
         if !in_coordinates {
             return u.clone();
         }
         let mut phase = u.phase.clone();
-        for v in vars.vars() {
-            if !matches!(
-                vars.variable(v).kind(),
-                VarKind::Coordinate | VarKind::Denominator
-            ) {
-                phase[v.index()] = 0;
-            }
+        for &i in &apart {
+            phase[i] = 0;
         }
         Unknown {
             phase,
@@ -1090,13 +1086,10 @@ fn independent_as_functions(
         .collect::<Result<Vec<Expr>, _>>()?;
     let clearing = Clearing::new(atoms, parameters, monomials.iter())?
         .expect("the space has denominator atoms");
-    let images = monomials
-        .par_iter()
-        .map(|m| clearing.apply(m))
-        .collect::<Result<Vec<Expr>, EngineError>>()?;
     let mut rows = MonomialIndex::new(vars);
     let mut nrows = 0;
-    let columns: Vec<SparseVec<Rational>> = images
+    let columns: Vec<SparseVec<Rational>> = clearing
+        .apply_all(&monomials)?
         .iter()
         .map(|e| real_rows(e, &[], &mut rows, &mut nrows))
         .collect();
@@ -1401,9 +1394,7 @@ pub fn search(system: &System, options: &SearchOptions) -> Result<SearchResult, 
             .collect();
         let mut images = images.into_iter().collect::<Result<Vec<Expr>, _>>()?;
         if let Some(clearing) = Clearing::new(atoms, &parameters, images.iter())? {
-            let cleared: Vec<Result<Expr, EngineError>> =
-                images.par_iter().map(|e| clearing.apply(e)).collect();
-            images = cleared.into_iter().collect::<Result<_, _>>()?;
+            images = clearing.apply_all(&images)?;
         }
         for image in &images {
             columns.push(real_rows(
