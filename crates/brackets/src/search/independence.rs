@@ -1,0 +1,102 @@
+//! With denominator atoms, the space's monomials are not independent functions
+//! (`x/(x − y) − y/(x − y) = 1`): the choice of those independent of the simpler ones.
+
+use rustc_hash::FxHashSet;
+
+use trigpoly::{Expr, GaussianRational, MonomialIndex, Rational, Var, VarKind, Vars};
+
+use crate::clearing::Clearing;
+use crate::error::EngineError;
+use crate::modular::{Echelon, SparseVec};
+
+use super::problem::{real_rows, Unknown};
+
+/// With denominator atoms the monomials of the space are not independent functions
+/// (`x/(x − y) − y/(x − y) = 1`): the monomials `φ` (without angles) whose functions are
+/// independent of the simpler ones before them, in the order of [`Unknown::degrees`], decided
+/// exactly on their images under one [`Clearing`], which is injective. The space they span is
+/// the whole space's, and each of its functions has one set of coordinates in them. Each
+/// denominator must be free of the angles, so that the same monomials are independent times
+/// any `cos k·θ` or `sin k·θ`. When every denominator is a polynomial in the coordinates (and
+/// parameters fixed for the linear algebra), clearing commutes with a factor in the momenta,
+/// the Poisson variables and the symbolic parameters, and the monomials of each such factor
+/// are compared among themselves only: the choice is made once, on the monomials in the
+/// coordinates and the denominators alone, in the same order.
+pub(super) fn independent_as_functions(
+    vars: &Vars,
+    atoms: &[(Var, Expr)],
+    parameters: &[(Var, Rational)],
+    mut phases: Vec<Unknown>,
+) -> Result<Vec<Unknown>, EngineError> {
+    if let Some((v, _)) = atoms
+        .iter()
+        .find(|(_, d)| vars.angles().any(|a| d.contains(a)))
+    {
+        return Err(EngineError::Invalid(format!(
+            "the search takes denominators free of the angles, and {} has one",
+            vars.variable(*v).unicode()
+        )));
+    }
+    let kind = |v: Var| vars.variable(v).kind();
+    let in_coordinates = atoms.iter().all(|(_, d)| {
+        vars.vars()
+            .filter(|&v| d.contains(v))
+            .all(|v| matches!(kind(v), VarKind::Coordinate | VarKind::Parameter))
+    });
+    // The part of a monomial that the choice is made on: without the variables listed here.
+    let apart: Vec<usize> = match in_coordinates {
+        true => vars
+            .vars()
+            .filter(|&v| !matches!(kind(v), VarKind::Coordinate | VarKind::Denominator))
+            .map(|v| v.index())
+            .collect(),
+        false => Vec::new(),
+    };
+    let part = |u: &Unknown| -> Unknown {
+        if !in_coordinates {
+            return u.clone();
+        }
+        let mut phase = u.phase.clone();
+        for &i in &apart {
+            phase[i] = 0;
+        }
+        Unknown {
+            phase,
+            momenta_degree: 0,
+            poisson_degree: 0,
+            parameters_degree: 0,
+            ..u.clone()
+        }
+    };
+    let mut parts: Vec<Unknown> = phases.iter().map(part).collect();
+    // Without angles, in the order of the unknowns.
+    parts.sort_by(|a, b| {
+        a.degrees()
+            .cmp(&b.degrees())
+            .then_with(|| a.phase.cmp(&b.phase))
+    });
+    parts.dedup_by(|a, b| a.phase == b.phase);
+    let monomials = parts
+        .iter()
+        .map(|u| Expr::from_terms(vars, vec![(GaussianRational::from(1), u.phase.clone())]))
+        .collect::<Result<Vec<Expr>, _>>()?;
+    let clearing = Clearing::new(atoms, parameters, monomials.iter())?
+        .expect("the space has denominator atoms");
+    let mut rows = MonomialIndex::new(vars);
+    let mut nrows = 0;
+    let columns: Vec<SparseVec<Rational>> = clearing
+        .apply_all(&monomials)?
+        .iter()
+        .map(|e| real_rows(e, &[], &mut rows, &mut nrows))
+        .collect();
+    let mut span = Echelon::<Rational>::new(nrows);
+    let kept: FxHashSet<Vec<i64>> = parts
+        .into_iter()
+        .zip(&columns)
+        .enumerate()
+        .filter(|(i, (_, col))| span.extend(*i, col))
+        .map(|(_, (u, _))| u.phase)
+        .collect();
+    phases.retain(|u| kept.contains(&part(u).phase));
+    Ok(phases)
+}

@@ -1,0 +1,383 @@
+//! Discovery: a basis of *all* integrals of a system in a finite space of functions, found by
+//! exact linear algebra, each basis element proved by the engine.
+//!
+//! The space ([`SearchSpace`]) is spanned by `x^a y^b · p_x^c p_y^d · M₁^m M₂^n · {1, cos kθ,
+//! sin kθ}`: coordinates of total degree `Σ|a| ≤ e` (negative exponents too when `laurent`),
+//! momenta of total degree `≤ d`, Poisson variables (whose brackets are declared, such as the
+//! `M₁, M₂, M₃` of so(3)*) of total degree `≤ P`, and trigonometric order `Σ|k| ≤ K` in the
+//! angles. An angle's momentum or a Poisson variable that the condition fixes is left out: on a
+//! resonance surface `p_θ = mIω/n` it is a constant, and every function of it is an integral
+//! ([`SpaceVariables`]). The images `{φ, H}` are the bracket's, declared brackets included: for
+//! each phase variable `v`, `∂φ/∂v` times `{v, H}` (after the condition), formed once.
+//!
+//! The unknowns are the real coefficients of that basis, so the equations `{F, H} = 0` (after the
+//! condition) are linear over `Q`: the real and imaginary parts of the coefficients of
+//! `e^{ik·θ}` with `k ≥ 0`, the others being their conjugates. Parameters are fixed to rational
+//! values for the linear algebra ([`SearchOptions::fixed`], 1 by default), or kept symbolic
+//! ([`SearchOptions::symbolic`]): then each basis function is also multiplied by the monomials
+//! of those parameters up to [`SearchSpace::parameters_degree`], the equations are the
+//! coefficients of every monomial in the variables *and* those parameters, and what is found
+//! holds for every value of them; [`SearchResult::module`] picks the integrals that generate
+//! the others over the polynomials in the parameters. The system splits
+//! into connected components (unknowns sharing an equation: for a quadratic Hamiltonian, one
+//! per degree and trigonometric order), each solved modulo a 62-bit prime, reconstructed and
+//! checked exactly ([`crate::modular::kernel`]). Every basis element is then proved by the
+//! engine at the fixed values, lifted back to symbolic parameters by homogeneity
+//! ([`crate::scaling`]) and proved again symbolically.
+//!
+//! On a system with denominator atoms (`1/(x − y)` exact, [`trigpoly::VarKind::Denominator`])
+//! the space also has the products `1/Π D_i^{k_i}` with `Σ k_i ≤`
+//! [`SearchSpace::denominators_degree`]. Its monomials are then not independent functions
+//! (`x/(x − y) − y/(x − y) = 1`): the unknowns are those independent of the simpler ones, and
+//! the equations and that choice are decided on images under one injective map onto
+//! polynomials, the denominators cleared (`crate::clearing`), so that no function equal to
+//! zero is reported and each integral has one set of coordinates. Parameters are kept
+//! symbolic when no denominator holds them; which integrals are new (`new_only`) is not yet
+//! offered there.
+//!
+//! ```
+//! use brackets::search::{search, SearchOptions, SearchSpace};
+//! use brackets::systems;
+//!
+//! // The harmonic rotor at p_θ = Iω: the integrals linear in the momenta, trig order ≤ 1.
+//! let rotor = systems::harmonic_rotor();
+//! let options = SearchOptions::new(SearchSpace::new(1, 1, 1)).when(rotor.resonance(1, 1)?);
+//! let found = search(&rotor, &options)?;
+//! // The constant, L = x p_y − y p_x, and four linear integrals: Re and Im of
+//! // (p_x + iMωx)e^{−iθ} and of (p_y + iMωy)e^{−iθ}.
+//! assert_eq!(found.basis.len(), 6);
+//! assert!(found.basis.iter().all(|f| f.symbolic.is_some()));
+//! # Ok::<(), brackets::EngineError>(())
+//! ```
+//!
+//! On a Lie–Poisson space the same search finds the Casimirs with the integrals: for the
+//! Euler top (so(3)*, `H = Σ M_i²/(2I_i)`) at generic moments, the quadratic integrals are
+//! spanned by `|M|²` and `H`.
+//!
+//! ```
+//! use brackets::search::{search, SearchOptions, SearchSpace};
+//! use brackets::{PhaseSpace, System};
+//! use trigpoly::{Expr, Rational, VarSet};
+//!
+//! let vars = VarSet::builder()
+//!     .poisson("M1").poisson("M2").poisson("M3")
+//!     .parameter("I1").parameter("I2").parameter("I3")
+//!     .build()?;
+//! let e = |s: &str| Expr::parse(&vars, s).unwrap();
+//! let space = PhaseSpace::new(&vars, &[])?
+//!     .with_brackets(&[("M1", "M2", e("M3")), ("M2", "M3", e("M1")), ("M3", "M1", e("M2"))])?;
+//! let top = System::new("Euler top", space, e("M1^2/(2*I1) + M2^2/(2*I2) + M3^2/(2*I3)"));
+//! // At I = (1, 2, 3): 1, then two quadratic integrals (|M|² and H, combined).
+//! let mut options = SearchOptions::new(SearchSpace::new(0, 0, 0).poisson_degree(2));
+//! for (i, name) in ["I1", "I2", "I3"].into_iter().enumerate() {
+//!     options = options.fix(top.var(name), Rational::from(i as i64 + 1));
+//! }
+//! let found = search(&top, &options)?;
+//! assert_eq!(found.dimensions_by_poisson_degree(), [1, 1, 3]);
+//! assert!(found.basis.iter().all(|f| f.proved_fixed));
+//! # Ok::<(), Box<dyn std::error::Error>>(())
+//! ```
+
+mod independence;
+mod new_only;
+mod options;
+mod parameters;
+mod problem;
+mod proof;
+mod result;
+#[cfg(test)]
+mod tests;
+
+pub use options::{SearchOptions, SearchSpace, DEFAULT_MAX_PRODUCTS};
+pub(crate) use parameters::check_parameters;
+pub use parameters::fix_parameters;
+pub(crate) use proof::is_phase_free;
+pub use proof::lift_and_prove;
+pub use result::{
+    parameter_text, Integral, NewIntegrals, ParameterModule, SearchResult, SearchTimings,
+    SpaceVariables,
+};
+
+use rustc_hash::FxHashMap;
+use std::time::Instant;
+
+use itertools::Itertools;
+use rayon::prelude::*;
+use trigpoly::{Expr, MonomialIndex, Rational, VarKind};
+
+use crate::clearing::Clearing;
+use crate::error::EngineError;
+use crate::modular::{self, SparseVec};
+use crate::scaling::Scaling;
+use crate::system::System;
+
+use new_only::new_integrals;
+use parameters::{fixed_problem, module_generators, parameter_multiples, parameter_values};
+use problem::{real_rows, Components, IMAGE_BLOCK};
+use proof::{flow_vanishes, lead, primitive_vector};
+
+/// Finds a basis of every integral of `system` in the space of `options`: each element of
+/// [`SearchResult::basis`] is an [`Integral`], its function [`Integral::expr`], proved.
+///
+/// ```
+/// use brackets::{search, systems, SearchOptions, SearchSpace};
+///
+/// // The harmonic rotor at the resonance p_θ = Iω: the integrals of degree ≤ 1 in the momenta
+/// // and in the positions, of trigonometric order ≤ 1, are 1, L and the four components of
+/// // the two linear integrals Z e^{−iθ} and W e^{−iθ} (docs/results.md, section 1.1).
+/// let rotor = systems::harmonic_rotor();
+/// let resonance = rotor.resonance(1, 1)?;
+/// let options = SearchOptions::new(SearchSpace::new(1, 1, 1)).when(resonance.clone());
+/// let found = search(&rotor, &options)?;
+/// assert_eq!(found.basis.len(), 6);
+/// for integral in &found.basis {
+///     assert!(rotor.flow_when(integral.expr(), &resonance)?.is_zero());
+/// }
+/// # Ok::<(), brackets::EngineError>(())
+/// ```
+pub fn search(system: &System, options: &SearchOptions) -> Result<SearchResult, EngineError> {
+    // The search hands blocks of work to rayon's pool (images, blocks of equations, proofs):
+    // it runs on a thread of the pool, which takes its share of each and, on a pool of one
+    // thread, does it in place, where any other thread would wait for the pool's at each.
+    if rayon::current_thread_index().is_none() {
+        return rayon::scope(|_| search(system, options));
+    }
+    let start = Instant::now();
+    let mut timings = SearchTimings::default();
+    let condition = options.condition.as_ref();
+    // A parameter named twice is kept symbolic once.
+    let options = &SearchOptions {
+        symbolic: options.symbolic.iter().copied().unique().collect(),
+        ..options.clone()
+    };
+    if let Some(c) = condition {
+        c.kept_by_flow(system)?;
+    }
+    let vars = system.vars();
+    check_parameters(vars, &options.symbolic, &options.fixed)?;
+    let atoms = system.space().denominator_atoms();
+    if !atoms.is_empty() && options.new_only {
+        return Err(EngineError::Invalid(
+            "on a system with denominators the search finds a basis of the integrals, but not \
+             yet which of them are new (SearchOptions::new_only; --new-only): search without it"
+                .into(),
+        ));
+    }
+    // A denominator free of the parameters kept symbolic makes the choice of independent
+    // monomials the same for each multiple by a parameter monomial, which the parameter
+    // multiples of integrals need.
+    if let Some((v, p)) = atoms.iter().find_map(|(v, d)| {
+        options
+            .symbolic
+            .iter()
+            .find(|p| d.contains(**p))
+            .map(|p| (v, p))
+    }) {
+        return Err(EngineError::Invalid(format!(
+            "the denominator {} holds {}, kept symbolic: the search keeps symbolic only \
+             parameters that no denominator holds; fix it instead (--fix)",
+            vars.variable(*v).unicode(),
+            vars.variable(*p).unicode()
+        )));
+    }
+    // The unknowns are the real coefficients of real functions, and the equations only the
+    // coefficients of `e^{ik·θ}` with `k ≥ 0`: right when `{F, H}` is real, that is when `H`
+    // and the condition's values are.
+    if !system.hamiltonian().is_real() {
+        return Err(EngineError::Invalid(
+            "the search finds the real integrals of a real Hamiltonian, and H is not real \
+             (it differs from its conjugate)"
+                .into(),
+        ));
+    }
+    if let Some(c) = &options.condition {
+        if let Some((v, _)) = c.subs().iter().find(|(_, value)| !value.is_real()) {
+            return Err(EngineError::Invalid(format!(
+                "the search needs a real condition, and the value of {} is not real",
+                vars.variable(*v).name()
+            )));
+        }
+    }
+    // A parameter the condition sets takes its value from the condition (after the bracket,
+    // like a resonance): fixing it first would search at another value.
+    if let Some(c) = &options.condition {
+        for (v, _) in c.subs() {
+            let name = vars.variable(*v).name();
+            if options.fixed.iter().any(|f| f.0 == *v) || options.symbolic.contains(v) {
+                return Err(EngineError::Invalid(format!(
+                    "{name} is set by the condition; it can be neither fixed nor kept symbolic"
+                )));
+            }
+        }
+    }
+    let parameters = parameter_values(system, condition, &options.fixed, &options.symbolic);
+    let problem = fixed_problem(system, options, &parameters)?;
+    let n = problem.unknowns.len();
+
+    // The images {φ_j, H} as real equations over Q: a row for the real and for the imaginary
+    // part of each monomial with a canonical `e^{ik·θ}`, numbered as they first appear. The
+    // images are formed on the pool's threads, a block of unknowns at a time, and numbered in
+    // the order of the unknowns.
+    // With denominator atoms the images are taken through one injective `Clearing`, whose
+    // powers are the highest among all the images: formed in one block.
+    let block = if atoms.is_empty() {
+        IMAGE_BLOCK
+    } else {
+        n.max(1)
+    };
+    let mut rows: MonomialIndex<[Option<usize>; 2]> = MonomialIndex::new(&problem.vars);
+    let mut nrows = 0;
+    let mut columns: Vec<SparseVec<Rational>> = Vec::with_capacity(n);
+    for start in (0..n).step_by(block) {
+        let images: Vec<Result<Expr, EngineError>> = (start..n.min(start + block))
+            .into_par_iter()
+            .map(|j| problem.image(&problem.expr(j, &Rational::one())?))
+            .collect();
+        let mut images = images.into_iter().collect::<Result<Vec<Expr>, _>>()?;
+        if let Some(clearing) = Clearing::new(atoms, &parameters, images.iter())? {
+            images = clearing.apply_all(&images)?;
+        }
+        for image in &images {
+            columns.push(real_rows(
+                image,
+                &problem.variables.angles,
+                &mut rows,
+                &mut nrows,
+            ));
+        }
+    }
+    timings.equations = start.elapsed().as_secs_f64();
+
+    // Connected components.
+    let t = Instant::now();
+    let mut uf = Components((0..n).collect());
+    let mut first_col: Vec<Option<usize>> = vec![None; nrows];
+    for (j, col) in columns.iter().enumerate() {
+        for (r, _) in col {
+            match first_col[*r] {
+                Some(f) => uf.union(f, j),
+                None => first_col[*r] = Some(j),
+            }
+        }
+    }
+    let mut groups: FxHashMap<usize, Vec<usize>> = FxHashMap::default();
+    for j in 0..n {
+        let r = uf.find(j);
+        groups.entry(r).or_default().push(j);
+    }
+    let mut groups: Vec<Vec<usize>> = groups.into_values().collect();
+    groups.sort();
+    let largest_component = groups.iter().map(Vec::len).max().unwrap_or(0);
+    // The blocks are independent: solved on the pool's threads, kept in the order of the blocks.
+    let kernels: Vec<Vec<SparseVec<Rational>>> = groups
+        .par_iter()
+        .map(|g| {
+            let mut local_row: FxHashMap<usize, usize> = FxHashMap::default();
+            let cols: Vec<SparseVec<Rational>> = g
+                .iter()
+                .map(|&j| {
+                    columns[j]
+                        .iter()
+                        .map(|(r, x)| {
+                            let len = local_row.len();
+                            (*local_row.entry(*r).or_insert(len), x.clone())
+                        })
+                        .collect()
+                })
+                .collect();
+            modular::kernel(&cols, local_row.len())
+                .into_iter()
+                .map(|v| v.into_iter().map(|(i, x)| (g[i], x)).collect())
+                .collect()
+        })
+        .collect();
+    let mut kernel: Vec<SparseVec<Rational>> = kernels.into_iter().flatten().collect();
+    // By leading (last) unknown, i.e. by the order of the unknowns.
+    kernel.sort_by_key(|v| lead(v).map_or(0, |l| l.0));
+    timings.solve = t.elapsed().as_secs_f64();
+
+    // Proofs: at the fixed values, then lifted and proved symbolically.
+    let t = Instant::now();
+    let scaling = Scaling::of_flow(system.space(), system.hamiltonian(), condition)?;
+    let lifter = scaling.lifter(&parameters);
+    // Each basis element is proved on its own, on the pool's threads; the first error in
+    // the order of the basis is the one reported.
+    let proved: Vec<Result<Integral, EngineError>> = kernel
+        .par_iter_mut()
+        .map(|v| {
+            *v = primitive_vector(v);
+            let fixed = problem.combination(v)?;
+            let proved_fixed = problem.flow(system, &fixed)?.vanishes()?;
+            let last = lead(v).expect("a kernel vector is not zero").0;
+            let reference = problem.leading_exponents(last);
+            let symbolic = match &lifter {
+                // Nothing was fixed: the integral found is the symbolic one.
+                _ if parameters.is_empty() => proved_fixed.then(|| fixed.clone()),
+                Some(l) => {
+                    lift_and_prove(system, condition, l, &scaling, &fixed, Some(&reference))?
+                }
+                None => None,
+            };
+            // What the weights cannot lift may hold as found, for every value: `p_θ`, or `L`
+            // of a potential whose parameter the lift cannot restore.
+            let symbolic = match symbolic {
+                None if proved_fixed && !parameters.is_empty() => {
+                    flow_vanishes(system, condition, &fixed)?.then(|| fixed.clone())
+                }
+                found => found,
+            };
+            let deg = |kinds: &[VarKind]| fixed.total_degree(kinds).unwrap_or(0);
+            Ok(Integral {
+                // Every momentum of the space (an angle's momentum fixed by the condition
+                // does not occur).
+                momenta_degree: deg(&[VarKind::Momentum]),
+                poisson_degree: deg(&[VarKind::Poisson]),
+                positions_degree: deg(&[VarKind::Coordinate]),
+                trig_degree: deg(&[VarKind::Angle]),
+                fixed,
+                proved_fixed,
+                symbolic,
+            })
+        })
+        .collect();
+    let basis = proved.into_iter().collect::<Result<Vec<_>, _>>()?;
+    timings.proofs = t.elapsed().as_secs_f64();
+
+    let multiples = parameter_multiples(&problem, &options.symbolic, &basis)?;
+    let t = Instant::now();
+    let new = if options.new_only {
+        Some(new_integrals(
+            system,
+            &problem,
+            options,
+            &parameters,
+            &kernel,
+            &basis,
+            &multiples,
+        )?)
+    } else {
+        None
+    };
+    timings.new_only = t.elapsed().as_secs_f64();
+    let module = (!options.symbolic.is_empty()).then(|| ParameterModule {
+        parameters: options.symbolic.clone(),
+        generators: module_generators(&problem, &kernel, &multiples),
+    });
+    timings.total = start.elapsed().as_secs_f64();
+    Ok(SearchResult {
+        space: options.space,
+        condition: condition.map(|c| c.text.clone()),
+        parameters,
+        liftable: lifter.is_some(),
+        vars: system.vars().clone(),
+        variables: problem.variables.clone(),
+        unknowns: n,
+        equations: nrows,
+        components: groups.len(),
+        largest_component,
+        basis,
+        new,
+        module,
+        timings,
+    })
+}

@@ -1,0 +1,232 @@
+//! The space searched and the options of a search.
+
+use trigpoly::{Expr, Rational, Var};
+
+use crate::claim::Condition;
+
+/// The finite space of functions searched.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct SearchSpace {
+    /// Total degree in the momenta ([`SpaceVariables::momenta`](super::SpaceVariables::momenta)).
+    pub momenta_degree: u32,
+    /// Total degree `Σ|a|` in the coordinates.
+    pub positions_degree: u32,
+    /// Trigonometric order `Σ|k|` in the angles.
+    pub trig_degree: u32,
+    /// Whether coordinates may carry negative exponents (Laurent potentials such as `β/x²`).
+    pub laurent: bool,
+    /// Total degree in the parameters kept symbolic ([`SearchOptions::symbolic`]).
+    pub parameters_degree: u32,
+    /// Total degree in the Poisson variables
+    /// ([`SpaceVariables::poisson`](super::SpaceVariables::poisson)), those whose brackets are
+    /// declared (0 unless set, [`SearchSpace::poisson_degree`]).
+    pub poisson_degree: u32,
+    /// On a system with denominator atoms, the total degree `Σ k_i` of the powers
+    /// `1/D_i^{k_i}` (0 unless set, [`SearchSpace::denominators_degree`]).
+    pub denominators_degree: u32,
+}
+
+impl SearchSpace {
+    /// Momenta degree `d`, positions degree `e`, trigonometric order `k`, no negative powers,
+    /// degree 0 in the Poisson variables ([`SearchSpace::poisson_degree`] sets another).
+    pub fn new(momenta_degree: u32, positions_degree: u32, trig_degree: u32) -> Self {
+        SearchSpace {
+            momenta_degree,
+            positions_degree,
+            trig_degree,
+            laurent: false,
+            parameters_degree: 0,
+            poisson_degree: 0,
+            denominators_degree: 0,
+        }
+    }
+
+    /// The same space with products of the denominators `1/D_i^{k_i}` of total degree
+    /// `Σ k_i ≤ d` (on a system that declares denominator atoms; Calogero's `g/(x − y)²`
+    /// has degree 2).
+    pub fn denominators_degree(mut self, d: u32) -> Self {
+        self.denominators_degree = d;
+        self
+    }
+
+    /// The same space with polynomials of total degree `≤ d` in the Poisson variables.
+    pub fn poisson_degree(mut self, d: u32) -> Self {
+        self.poisson_degree = d;
+        self
+    }
+
+    /// The same space with coefficients polynomial of total degree `≤ d` in the parameters
+    /// kept symbolic.
+    pub fn parameters_degree(mut self, d: u32) -> Self {
+        self.parameters_degree = d;
+        self
+    }
+
+    /// The same space with negative powers of the coordinates allowed.
+    pub fn laurent(mut self) -> Self {
+        self.laurent = true;
+        self
+    }
+
+    /// Why `f` lies outside the space, if it does, in words: its degree in the momenta, in the
+    /// coordinates, in the Poisson variables or in the angles is too high, or it has negative
+    /// powers the space does not take. A search for the integrals of a system whose Hamiltonian
+    /// lies outside finds neither `H` nor, often, anything else, so the report says why.
+    pub fn why_outside(&self, f: &Expr) -> Option<String> {
+        use trigpoly::VarKind::{Angle, Coordinate, Momentum, Poisson};
+        let vars = f.vars();
+        // The first variable of `kind` with a negative power in `f`, by name.
+        let negative = |kind| {
+            vars.vars()
+                .filter(|&v| vars.variable(v).kind() == kind)
+                .find(|&v| f.exponent_range(v).is_some_and(|(lo, _)| lo < 0))
+                .map(|v| vars.variable(v).unicode().to_string())
+        };
+        let mut why = Vec::new();
+        for kind in [Momentum, Poisson] {
+            if let Some(p) = negative(kind) {
+                why.push(format!("negative powers of {p}"));
+            }
+        }
+        if let Some(d) = vars
+            .denominators()
+            .find(|&v| f.exponent_range(v).is_some_and(|(_, hi)| hi > 0))
+        {
+            why.push(format!(
+                "a positive power of the denominator {}, which the space takes only as 1/D",
+                vars.variable(d).unicode()
+            ));
+        }
+        let over = denominators_degree(f);
+        if over > i64::from(self.denominators_degree) {
+            why.push(format!(
+                "degree {over} in the denominators, past the space's {} \
+                 (SearchSpace::denominators_degree; on the command line, --denominators-degree)",
+                self.denominators_degree
+            ));
+        }
+        if let (false, Some(x)) = (self.laurent, negative(Coordinate)) {
+            why.push(format!(
+                "negative powers of {x}, which a Laurent space (SearchSpace::laurent; on the \
+                 command line, --laurent) admits"
+            ));
+        }
+        for (what, kind, bound) in [
+            ("momenta", Momentum, self.momenta_degree),
+            ("coordinates", Coordinate, self.positions_degree),
+            ("Poisson variables", Poisson, self.poisson_degree),
+            ("angles (trigonometric order)", Angle, self.trig_degree),
+        ] {
+            let d = f.total_degree(&[kind]).unwrap_or(0);
+            if d > i64::from(bound) {
+                why.push(format!(
+                    "degree {d} in the {what}, past the space's {bound}"
+                ));
+            }
+        }
+        (!why.is_empty()).then(|| why.join("; "))
+    }
+}
+
+/// The largest total degree `Σ k_i` of a term's denominators `1/D_i^{k_i}` (the negative
+/// exponents of its denominator atoms).
+pub(super) fn denominators_degree(f: &Expr) -> i64 {
+    let atoms: Vec<Var> = f.vars().denominators().collect();
+    f.terms()
+        .map(|t| atoms.iter().map(|&v| (-t.exponent(v)).max(0)).sum::<i64>())
+        .max()
+        .unwrap_or(0)
+}
+
+/// What to search for and how.
+#[derive(Clone, Debug)]
+pub struct SearchOptions {
+    /// The space.
+    pub space: SearchSpace,
+    /// The condition (a resonance), applied after the bracket.
+    pub condition: Option<Condition>,
+    /// Values for parameters; every parameter of `H` or of the condition that is neither
+    /// listed here nor kept symbolic is fixed to 1.
+    pub fixed: Vec<(Var, Rational)>,
+    /// Parameters kept symbolic: the coefficients of the integrals are polynomials in them.
+    pub symbolic: Vec<Var>,
+    /// Known integrals (symbolic) for [`SearchOptions::new_only`]; the system's named
+    /// functions that are real integrals are always used.
+    pub known: Vec<(String, Expr)>,
+    /// Also find a complement of what sums of known integrals, constants and products of
+    /// integrals of lower grade give (and, with parameters kept symbolic, parameter multiples
+    /// of integrals): see [`NewIntegrals`](super::NewIntegrals).
+    pub new_only: bool,
+    /// Decide that complement by elimination over Q alone. By default it is decided modulo a
+    /// 62-bit prime, each dependency found there checked over Q (falling back to Q when one
+    /// fails): an integral reported generated is then generated, and one reported new is new
+    /// unless the prime divides a minor of the span of the known products, which this rules
+    /// out at some cost in time.
+    pub exact_complement: bool,
+    /// The most products of integrals [`SearchOptions::new_only`] forms before it stops with
+    /// an error ([`DEFAULT_MAX_PRODUCTS`] unless set).
+    pub max_products: usize,
+}
+
+/// The most products of integrals `--new-only` forms unless told otherwise: some seconds'
+/// work (the 1:1 resonance up to degree 12 forms some 165 000).
+pub const DEFAULT_MAX_PRODUCTS: usize = 1_000_000;
+
+impl SearchOptions {
+    /// Searches a space with parameters fixed to 1 and no condition.
+    pub fn new(space: SearchSpace) -> Self {
+        SearchOptions {
+            space,
+            condition: None,
+            fixed: Vec::new(),
+            symbolic: Vec::new(),
+            known: Vec::new(),
+            new_only: false,
+            exact_complement: false,
+            max_products: DEFAULT_MAX_PRODUCTS,
+        }
+    }
+
+    /// Under a condition.
+    pub fn when(mut self, condition: Condition) -> Self {
+        self.condition = Some(condition);
+        self
+    }
+
+    /// With a parameter fixed to a value.
+    pub fn fix(mut self, v: Var, value: Rational) -> Self {
+        self.fixed.retain(|f| f.0 != v);
+        self.fixed.push((v, value));
+        self
+    }
+
+    /// With a parameter kept symbolic (see [`SearchSpace::parameters_degree`]).
+    pub fn symbolic(mut self, v: Var) -> Self {
+        self.symbolic.push(v);
+        self
+    }
+
+    /// With the complement of the known integrals' products.
+    pub fn new_only(mut self) -> Self {
+        self.new_only = true;
+        self
+    }
+
+    /// With the complement decided over Q alone ([`SearchOptions::exact_complement`]).
+    pub fn exact_complement(mut self) -> Self {
+        self.exact_complement = true;
+        self
+    }
+
+    /// With at most `n` products of integrals for the complement.
+    pub fn max_products(mut self, n: usize) -> Self {
+        self.max_products = n;
+        self
+    }
+
+    /// With an extra known integral.
+    pub fn known(mut self, name: &str, f: Expr) -> Self {
+        self.known.push((name.to_string(), f));
+        self
+    }
+}

@@ -1,0 +1,175 @@
+//! Parameters: checked, fixed to values for the linear algebra, or kept symbolic (their
+//! multiples and the module they generate).
+
+use trigpoly::{Expr, GaussianRational, Rational, Var, VarKind, Vars};
+
+use crate::claim::Condition;
+use crate::error::EngineError;
+use crate::modular::{Echelon, SparseVec};
+use crate::system::System;
+
+use super::options::SearchOptions;
+use super::problem::Problem;
+use super::result::Integral;
+
+/// Refuses values fixed for what is no parameter, and parameters to keep symbolic that are no
+/// parameters or are also fixed to a value (a search's and a closure's `fixed`, `symbolic`).
+pub(crate) fn check_parameters(
+    vars: &Vars,
+    symbolic: &[Var],
+    fixed: &[(Var, Rational)],
+) -> Result<(), EngineError> {
+    if let Some((v, _)) = fixed
+        .iter()
+        .find(|(v, _)| vars.variable(*v).kind() != VarKind::Parameter)
+    {
+        return Err(EngineError::Invalid(format!(
+            "only parameters are given values for the linear algebra, and {} is not one (a \
+             condition sets a variable)",
+            vars.variable(*v).name()
+        )));
+    }
+    for &v in symbolic {
+        let name = vars.variable(v).name();
+        if vars.variable(v).kind() != VarKind::Parameter {
+            return Err(EngineError::Invalid(format!(
+                "only parameters can be kept symbolic, and {name} is not one"
+            )));
+        }
+        if fixed.iter().any(|f| f.0 == v) {
+            return Err(EngineError::Invalid(format!(
+                "{name} is both fixed to a value and kept symbolic"
+            )));
+        }
+    }
+    Ok(())
+}
+
+/// Every parameter of `h` or of the condition that is neither kept symbolic nor set by the
+/// condition, with its value (given, or 1).
+pub(super) fn parameter_values(
+    system: &System,
+    condition: Option<&Condition>,
+    given: &[(Var, Rational)],
+    symbolic: &[Var],
+) -> Vec<(Var, Rational)> {
+    let vars = system.vars();
+    let mut exprs = vec![system.hamiltonian().clone()];
+    // An atom's polynomial enters the bracket through its declared brackets.
+    exprs.extend(
+        system
+            .space()
+            .denominator_atoms()
+            .iter()
+            .map(|a| a.1.clone()),
+    );
+    if let Some(c) = condition {
+        exprs.extend(c.subs().iter().map(|s| s.1.clone()));
+    }
+    let mut out: Vec<(Var, Rational)> = Vec::new();
+    for v in vars.vars() {
+        let set_by_condition = condition.is_some_and(|c| c.subs().iter().any(|s| s.0 == v));
+        if vars.variable(v).kind() != VarKind::Parameter
+            || symbolic.contains(&v)
+            || set_by_condition
+        {
+            continue;
+        }
+        let value = given.iter().find(|g| g.0 == v).map(|g| g.1.clone());
+        if value.is_some() || exprs.iter().any(|e| e.contains(v)) {
+            out.push((v, value.unwrap_or_else(Rational::one)));
+        }
+    }
+    out
+}
+
+/// The search's problem with the parameters at `parameters`, in `H` and in the condition.
+pub(super) fn fixed_problem(
+    system: &System,
+    options: &SearchOptions,
+    parameters: &[(Var, Rational)],
+) -> Result<Problem, EngineError> {
+    let h = fix_parameters(system.hamiltonian(), parameters)?;
+    let condition = match &options.condition {
+        Some(c) => Some(
+            c.subs()
+                .iter()
+                .map(|(v, e)| Ok((*v, fix_parameters(e, parameters)?)))
+                .collect::<Result<Vec<_>, EngineError>>()?,
+        ),
+        None => None,
+    };
+    Problem::new(
+        system,
+        &options.space,
+        &options.symbolic,
+        parameters,
+        h,
+        condition,
+    )
+}
+
+/// Substitutes parameter values.
+pub fn fix_parameters(e: &Expr, values: &[(Var, Rational)]) -> Result<Expr, EngineError> {
+    let vars = e.vars();
+    let subs: Vec<(Var, Expr)> = values
+        .iter()
+        .map(|(v, x)| (*v, Expr::constant(vars, GaussianRational::from(x.clone()))))
+        .collect();
+    Ok(e.subst_many(&subs)?)
+}
+
+/// The multiples `a·I` that lie in the space, for `a` a symbolic parameter and `I` a basis
+/// integral: each with the index of `I` and its coordinates. Their span is every sum of
+/// parameter multiples of integrals in the space, since a product by a monomial of higher
+/// degree is a product by one parameter of an integral that lies in the space.
+pub(super) fn parameter_multiples(
+    problem: &Problem,
+    symbolic: &[Var],
+    basis: &[Integral],
+) -> Result<Vec<(usize, SparseVec<Rational>)>, EngineError> {
+    let mut out = Vec::new();
+    for (i, f) in basis.iter().enumerate() {
+        for &a in symbolic {
+            let product = f.fixed.checked_mul(&Expr::var(&problem.vars, a))?;
+            out.extend(problem.coordinates(&product).map(|v| (i, v)));
+        }
+    }
+    Ok(out)
+}
+
+/// The basis integrals that generate the space over the polynomials in the symbolic
+/// parameters: those outside the span of the parameter `multiples` and of the earlier
+/// generators.
+pub(super) fn module_generators(
+    problem: &Problem,
+    kernel: &[SparseVec<Rational>],
+    multiples: &[(usize, SparseVec<Rational>)],
+) -> Vec<usize> {
+    let mut span = Echelon::<Rational>::new(problem.unknowns.len());
+    for (id, (_, v)) in multiples.iter().enumerate() {
+        span.insert(id, v);
+    }
+    (0..kernel.len())
+        .filter(|&k| span.insert(multiples.len() + k, &kernel[k]).is_none())
+        .collect()
+}
+
+/// A function times the least monomial in the `symbolic` parameters that leaves none of them
+/// with a negative exponent (`G1 = p_x p_y/(2M) + …` becomes `M·G1`).
+pub(super) fn without_parameter_denominators(
+    f: &Expr,
+    symbolic: &[Var],
+) -> Result<Expr, EngineError> {
+    let vars = f.vars();
+    let mut exps = vec![0i64; vars.len()];
+    for &a in symbolic {
+        let lowest = f.terms().map(|t| t.exponent(a)).min().unwrap_or(0);
+        exps[a.index()] = (-lowest).max(0);
+    }
+    if exps.iter().all(|e| *e == 0) {
+        return Ok(f.clone());
+    }
+    let monomial = Expr::from_terms(vars, vec![(GaussianRational::from(1), exps)])?;
+    Ok(f.checked_mul(&monomial)?)
+}

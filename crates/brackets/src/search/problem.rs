@@ -1,0 +1,567 @@
+//! The linear problem: the space's unknowns, their images `{φ, H}` and the equations
+//! `{F, H} = 0` numbered into rows, split into independent blocks.
+
+use rayon::prelude::*;
+use trigpoly::{Expr, GaussianRational, MonomialIndex, Rational, Term, Var, VarKind, Vars};
+
+use crate::error::EngineError;
+use crate::modular::{Field, Fp, SparseVec};
+use crate::system::System;
+
+use super::independence::independent_as_functions;
+use super::options::SearchSpace;
+use super::parameters::fix_parameters;
+use super::result::SpaceVariables;
+
+/// How many images `{φ, H}` are formed at a time on the pool's threads before they are numbered
+/// into equations: enough to share among threads, few enough to keep little in memory.
+pub(super) const IMAGE_BLOCK: usize = 4096;
+
+/// How an unknown depends on the angles.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, PartialOrd, Ord)]
+pub(super) enum Trig {
+    One,
+    Cos,
+    Sin,
+}
+
+/// One real basis function `φ · trig(k·θ)`.
+#[derive(Clone, Debug)]
+pub(super) struct Unknown {
+    /// Exponents of the coordinates, momenta and Poisson variables and of the parameters kept
+    /// symbolic (angles zero), over all variables.
+    pub(super) phase: Vec<i64>,
+    /// `k` over the angles, canonical (first nonzero entry positive), zero for `One`.
+    pub(super) k: Vec<i64>,
+    pub(super) trig: Trig,
+    pub(super) momenta_degree: i64,
+    pub(super) poisson_degree: i64,
+    pub(super) positions_degree: i64,
+    /// `Σ k_i` of its denominators `1/D_i^{k_i}`.
+    pub(super) denominators_degree: i64,
+    pub(super) trig_degree: i64,
+    pub(super) parameters_degree: i64,
+}
+
+impl Unknown {
+    /// Its degrees in the order of the unknowns, simpler first: momenta, Poisson variables,
+    /// trigonometric order, positions, denominators, parameters.
+    pub(super) fn degrees(&self) -> [i64; 6] {
+        [
+            self.momenta_degree,
+            self.poisson_degree,
+            self.trig_degree,
+            self.positions_degree,
+            self.denominators_degree,
+            self.parameters_degree,
+        ]
+    }
+}
+
+/// Where a monomial `φ·e^{ik·θ}` of the space sits among the unknowns.
+#[derive(Clone, Copy, Debug)]
+pub(super) enum Slot {
+    /// `k = 0`: the unknown `φ`.
+    One(usize),
+    /// `k` canonical: the unknowns `φ cos k·θ` and `φ sin k·θ`.
+    Canonical { cos: usize, sin: usize },
+    /// `−k` for a canonical `k`: the same two unknowns, met from the conjugate side.
+    Conjugate { cos: usize, sin: usize },
+}
+
+/// The search problem, with the parameters that are not kept symbolic at fixed values.
+pub(super) struct Problem {
+    pub(super) vars: Vars,
+    /// The coordinates, momenta, Poisson variables and angles of the space.
+    pub(super) variables: SpaceVariables,
+    pub(super) unknowns: Vec<Unknown>,
+    /// Where each monomial `φ·e^{ik·θ}` of the space sits among the unknowns.
+    pub(super) slots: MonomialIndex<Slot>,
+    /// The fixed Hamiltonian and condition.
+    pub(super) h: Expr,
+    pub(super) condition: Option<Vec<(Var, Expr)>>,
+    /// `{φ, H} = Σ_v ∂φ/∂v · {v, H}`: for each phase variable `v` with `{v, H}` not zero after
+    /// the condition, `v`, that part of `{v, H}` and whether it enters negated: `∂H/∂p` for a
+    /// coordinate, `∂H/∂q` negated for a momentum, and the declared brackets' part
+    /// `Σ_u {v, u} ∂H/∂u` for a variable they involve ([`crate::phase::Gradient`]), to form
+    /// the images of the unknowns without differentiating `H` again each time.
+    pub(super) flow_parts: Vec<(Var, Expr, bool)>,
+}
+
+/// Exponent vectors `≥ 0` (or any sign) over `n` slots with `Σ|e| ≤ max`.
+pub(super) fn exponent_vectors(n: usize, max: u32, signed: bool) -> Vec<Vec<i64>> {
+    let mut out = vec![Vec::new()];
+    for _ in 0..n {
+        let mut next = Vec::new();
+        for v in &out {
+            let used: i64 = v.iter().map(|x: &i64| x.abs()).sum();
+            let left = max as i64 - used;
+            let lo = if signed { -left } else { 0 };
+            for e in lo..=left {
+                let mut w = v.clone();
+                w.push(e);
+                next.push(w);
+            }
+        }
+        out = next;
+    }
+    out
+}
+
+/// Whether the first nonzero entry is positive (or all are zero).
+pub(super) fn canonical(k: impl IntoIterator<Item = i64>) -> bool {
+    k.into_iter().find(|x| *x != 0).is_none_or(|x| x > 0)
+}
+
+impl Problem {
+    pub(super) fn new(
+        system: &System,
+        space: &SearchSpace,
+        symbolic: &[Var],
+        parameters: &[(Var, Rational)],
+        h: Expr,
+        cond: Option<Vec<(Var, Expr)>>,
+    ) -> Result<Self, EngineError> {
+        let vars = system.vars().clone();
+        let pairs = system.space().pairs();
+        let coords: Vec<Var> = pairs
+            .iter()
+            .filter(|p| vars.variable(p.q).kind() == VarKind::Coordinate)
+            .map(|p| p.q)
+            .collect();
+        // An angle's momentum that the condition fixes (`p_θ = mIω/n`) is a constant there:
+        // every function of it is an integral, so it is left out, and so is a Poisson variable
+        // that the condition fixes (the flow keeps it, or the condition is refused). Any other
+        // momentum counts.
+        let fixed = |v: Var| cond.iter().flatten().any(|(w, _)| *w == v);
+        let (mut momenta, mut left_out) = (Vec::new(), Vec::new());
+        for pair in pairs {
+            if vars.variable(pair.q).kind() == VarKind::Angle && fixed(pair.p) {
+                left_out.push(pair.p);
+            } else {
+                momenta.push(pair.p);
+            }
+        }
+        let mut poisson = Vec::new();
+        for &v in system.space().poisson_variables() {
+            match fixed(v) {
+                true => left_out.push(v),
+                false => poisson.push(v),
+            }
+        }
+        let angles: Vec<Var> = pairs
+            .iter()
+            .filter(|p| vars.variable(p.q).kind() == VarKind::Angle)
+            .map(|p| p.q)
+            .collect();
+        let positions = exponent_vectors(coords.len(), space.positions_degree, space.laurent);
+        let moms = exponent_vectors(momenta.len(), space.momenta_degree, false);
+        let lie = exponent_vectors(poisson.len(), space.poisson_degree, false);
+        let params = exponent_vectors(symbolic.len(), space.parameters_degree, false);
+        // The powers `k_i` of the denominators `1/D_i^{k_i}`, stored as the atoms' exponents
+        // `−k_i`.
+        let atoms = system.space().denominator_atoms();
+        let inverses = exponent_vectors(atoms.len(), space.denominators_degree, false);
+        let ks: Vec<Vec<i64>> = exponent_vectors(angles.len(), space.trig_degree, true)
+            .into_iter()
+            .filter(|k| canonical(k.iter().copied()))
+            .collect();
+        // Each angular vector gives cos and sin, except k = 0.
+        let trig_functions: usize = ks
+            .iter()
+            .map(|k| if k.iter().all(|x| *x == 0) { 1 } else { 2 })
+            .sum();
+        let count = positions
+            .len()
+            .saturating_mul(moms.len())
+            .saturating_mul(lie.len())
+            .saturating_mul(params.len())
+            .saturating_mul(inverses.len())
+            .saturating_mul(trig_functions);
+        let limit = vars.limits().max_terms;
+        if count > limit {
+            return Err(EngineError::Invalid(format!(
+                "the space has {count} unknowns, more than the term limit {limit}: search a \
+                 smaller space, or raise the limit (`Limits::max_terms`; on the command line, --max-terms)"
+            )));
+        }
+        // The monomials `φ` without angles, then (with denominators) those whose functions are
+        // independent of the simpler ones, then each times the trigonometric functions.
+        let mut phases = Vec::with_capacity(count / trig_functions.max(1));
+        for (a, c, m, s, d) in itertools::iproduct!(&positions, &moms, &lie, &params, &inverses) {
+            let mut phase = vec![0i64; vars.len()];
+            for (v, e) in coords
+                .iter()
+                .chain(&momenta)
+                .chain(&poisson)
+                .chain(symbolic)
+                .zip(a.iter().chain(c).chain(m).chain(s))
+            {
+                phase[v.index()] = *e;
+            }
+            for ((v, _), e) in atoms.iter().zip(d) {
+                phase[v.index()] = -e;
+            }
+            phases.push(Unknown {
+                phase,
+                k: vec![0; angles.len()],
+                trig: Trig::One,
+                momenta_degree: c.iter().sum(),
+                poisson_degree: m.iter().sum(),
+                positions_degree: a.iter().map(|x| x.abs()).sum(),
+                denominators_degree: d.iter().sum(),
+                trig_degree: 0,
+                parameters_degree: s.iter().sum(),
+            });
+        }
+        if !atoms.is_empty() {
+            phases = independent_as_functions(&vars, atoms, parameters, phases)?;
+        }
+        let mut unknowns = Vec::with_capacity(phases.len() * trig_functions);
+        for phi in phases {
+            for k in &ks {
+                let trig_degree: i64 = k.iter().map(|x| x.abs()).sum();
+                let trigs: &[Trig] = if trig_degree == 0 {
+                    &[Trig::One]
+                } else {
+                    &[Trig::Cos, Trig::Sin]
+                };
+                for &trig in trigs {
+                    unknowns.push(Unknown {
+                        k: k.clone(),
+                        trig,
+                        trig_degree,
+                        ..phi.clone()
+                    });
+                }
+            }
+        }
+        // The order decides which basis comes out: each kernel vector ends at its own unknown
+        // and uses only earlier ones, so simpler unknowns come first.
+        // A total order (no two unknowns are equal), so the parallel sort is deterministic.
+        unknowns.par_sort_unstable_by(|a, b| {
+            a.degrees()
+                .cmp(&b.degrees())
+                .then_with(|| b.k.cmp(&a.k))
+                .then_with(|| a.phase.cmp(&b.phase))
+                .then_with(|| a.trig.cmp(&b.trig))
+        });
+        let slots = Problem::slots(&vars, &angles, &unknowns)?;
+        let variables = SpaceVariables {
+            coordinates: coords,
+            momenta,
+            poisson,
+            angles,
+            left_out,
+        };
+        let mut problem = Problem {
+            vars,
+            variables,
+            unknowns,
+            slots,
+            h,
+            condition: cond,
+            flow_parts: Vec::new(),
+        };
+        let gradient = system.space().gradient(&problem.h)?;
+        let canonical = pairs.iter().zip(gradient.canonical());
+        let parts = canonical
+            .flat_map(|(pair, (dq, dp))| [(pair.q, dp, false), (pair.p, dq, true)])
+            .chain(gradient.declared().iter().map(|(v, x)| (*v, x, false)));
+        for (v, part, negated) in parts {
+            // The declared brackets of an atom hold its polynomial's parameters.
+            let part = problem.apply_condition(fix_parameters(part, parameters)?)?;
+            if !part.is_zero() {
+                problem.flow_parts.push((v, part, negated));
+            }
+        }
+        Ok(problem)
+    }
+
+    /// The slot of each monomial of the space: `φ` for each unknown of `k = 0`, and
+    /// `φ·e^{±ik·θ}` for each pair `φ cos k·θ`, `φ sin k·θ`.
+    fn slots(
+        vars: &Vars,
+        angles: &[Var],
+        unknowns: &[Unknown],
+    ) -> Result<MonomialIndex<Slot>, EngineError> {
+        let with_angles = |u: &Unknown, sign: i64| {
+            let mut e = u.phase.clone();
+            for (v, k) in angles.iter().zip(&u.k) {
+                e[v.index()] = sign * k;
+            }
+            e
+        };
+        let mut slots = MonomialIndex::new(vars);
+        for (j, u) in unknowns.iter().enumerate() {
+            match u.trig {
+                Trig::One => {
+                    slots.insert(&u.phase, Slot::One(j))?;
+                }
+                Trig::Cos => {}
+                Trig::Sin => {
+                    // The order of the unknowns ends with the trigonometric function: the
+                    // cosine of the same `φ` and `k` comes right before.
+                    let cos = j - 1;
+                    debug_assert!(
+                        unknowns[cos].trig == Trig::Cos
+                            && unknowns[cos].phase == u.phase
+                            && unknowns[cos].k == u.k
+                    );
+                    slots.insert(&with_angles(u, 1), Slot::Canonical { cos, sin: j })?;
+                    slots.insert(&with_angles(u, -1), Slot::Conjugate { cos, sin: j })?;
+                }
+            }
+        }
+        Ok(slots)
+    }
+
+    /// `{f, H}` after the condition for `f` free of the variables the condition fixes (the
+    /// unknowns): `Σ_v ∂f/∂v · {v, H}|_c` (`Σ ∂f/∂q · (∂H/∂p)|_c − ∂f/∂p · (∂H/∂q)|_c` for
+    /// canonical pairs), the condition being a ring homomorphism that leaves `f` alone.
+    pub(super) fn image(&self, f: &Expr) -> Result<Expr, EngineError> {
+        let products: Vec<(&Expr, Var, &Expr, bool)> = self
+            .flow_parts
+            .iter()
+            .map(|(v, part, negated)| (f, *v, part, *negated))
+            .collect();
+        if products.is_empty() {
+            return Ok(Expr::zero(&self.vars));
+        }
+        Ok(Expr::sum_of_derivative_products(&products)?)
+    }
+
+    /// The unknown as a function.
+    pub(super) fn expr(&self, j: usize, coeff: &Rational) -> Result<Expr, EngineError> {
+        let u = &self.unknowns[j];
+        let mut plus = u.phase.clone();
+        let mut minus = u.phase.clone();
+        for (v, k) in self.variables.angles.iter().zip(&u.k) {
+            plus[v.index()] += k;
+            minus[v.index()] -= k;
+        }
+        let half = coeff * &Rational::new(1, 2);
+        let terms = match u.trig {
+            Trig::One => vec![(GaussianRational::from(coeff.clone()), plus)],
+            Trig::Cos => vec![
+                (GaussianRational::from(half.clone()), plus),
+                (GaussianRational::from(half), minus),
+            ],
+            // sin = (z − z̄)/(2i): coefficients −i/2 at z, i/2 at z̄.
+            Trig::Sin => vec![
+                (GaussianRational::new(Rational::zero(), -&half), plus),
+                (GaussianRational::new(Rational::zero(), half), minus),
+            ],
+        };
+        Ok(Expr::from_terms(&self.vars, terms)?)
+    }
+
+    /// The exponents of the `e^{ik·θ}` term of unknown `j` (`k ≥ 0`).
+    pub(super) fn leading_exponents(&self, j: usize) -> Vec<i64> {
+        let u = &self.unknowns[j];
+        let mut e = u.phase.clone();
+        for (v, k) in self.variables.angles.iter().zip(&u.k) {
+            e[v.index()] += k;
+        }
+        e
+    }
+
+    /// `Σ v_j φ_j`.
+    pub(super) fn combination(&self, v: &SparseVec<Rational>) -> Result<Expr, EngineError> {
+        let mut terms = Vec::new();
+        for (j, x) in v {
+            let e = self.expr(*j, x)?;
+            terms.extend(e.terms().map(|t| (t.coeff(), t.exponents())));
+        }
+        Ok(Expr::from_terms(&self.vars, terms)?)
+    }
+
+    pub(super) fn apply_condition(&self, e: Expr) -> Result<Expr, EngineError> {
+        match &self.condition {
+            Some(subs) => Ok(e.subst_many(subs)?),
+            None => Ok(e),
+        }
+    }
+
+    /// `{f, H}` after the condition, at the fixed values.
+    pub(super) fn flow(&self, system: &System, f: &Expr) -> Result<Expr, EngineError> {
+        self.apply_condition(system.bracket(f, &self.h)?)
+    }
+
+    /// The integrals an integral `f` splits into: its `e^{ik·θ}` components `f_k e^{ik·θ}`,
+    /// one per `k`, when `H` does not depend on the angles (the flow then keeps `k`, so each
+    /// component is an integral); `f` itself when it does (the components of the energy of a
+    /// pendulum, `p²/2` and `e^{±iψ}/2`, are none).
+    pub(super) fn integral_components(&self, f: &Expr) -> Result<Vec<Expr>, EngineError> {
+        if self.variables.angles.iter().any(|&a| self.h.contains(a)) {
+            return Ok(vec![f.clone()]);
+        }
+        type Terms = Vec<(GaussianRational, Vec<i64>)>;
+        let mut groups: Vec<(Vec<i64>, Terms)> = Vec::new();
+        for t in f.terms() {
+            let e = t.exponents();
+            let k: Vec<i64> = self.variables.angles.iter().map(|v| e[v.index()]).collect();
+            match groups.iter_mut().find(|g| g.0 == k) {
+                Some(g) => g.1.push((t.coeff(), e)),
+                None => groups.push((k, vec![(t.coeff(), e)])),
+            }
+        }
+        groups
+            .into_iter()
+            .map(|(_, terms)| Ok(Expr::from_terms(&self.vars, terms)?))
+            .collect()
+    }
+
+    /// The coordinates of a real function in the basis, if it lies in the space.
+    pub(super) fn coordinates(&self, f: &Expr) -> Option<SparseVec<Rational>> {
+        let (re, im) = self.coordinates_of_parts(f)?;
+        im.is_empty().then_some(re)
+    }
+
+    /// The coordinates of the real and of the imaginary part of `f` in the basis, if they lie
+    /// in the space (every monomial of `f` is one of the space's), in one pass over the terms
+    /// of `f`.
+    pub(super) fn coordinates_of_parts(
+        &self,
+        f: &Expr,
+    ) -> Option<(SparseVec<Rational>, SparseVec<Rational>)> {
+        let [re, im] = self.parts_by_slot(f, |t| {
+            let c = t.coeff();
+            (c.re, c.im)
+        })?;
+        Some((sum_by_index(re), sum_by_index(im)))
+    }
+
+    /// [`Problem::coordinates_of_parts`] modulo p, with the content of `f` applied to each
+    /// coefficient of its primitive part (no rational product per term), as entries in any
+    /// order with an index possibly twice (an [`Echelon`](crate::modular::Echelon) adds them up
+    /// as they come): `None` when the content's denominator vanishes modulo p, `Some(None)`
+    /// outside the space.
+    pub(super) fn coordinates_of_parts_mod_p(
+        &self,
+        f: &Expr,
+    ) -> Option<Option<[SparseVec<Fp>; 2]>> {
+        let content = Fp::from_rational(f.content())?;
+        Some(self.parts_by_slot(f, |t| {
+            let c = t.primitive_coeff();
+            let part = |x| content.mul(&Fp::from_integer(x));
+            (part(&c.re), part(&c.im))
+        }))
+    }
+
+    /// The coordinates of the real and imaginary parts of `f` in a field `F`, given each
+    /// term's coefficient `(re, im)` in `F`, as entries in the order of the terms (an index
+    /// twice when `f` has both `e^{±ik·θ}` of it); `None` when a monomial of `f` is outside
+    /// the space. Where `f` has `a e^{ik·θ} + b e^{−ik·θ}` (times `φ`, `k` canonical), that is
+    /// `(a + b) cos k·θ + i(a − b) sin k·θ`: its real part has `Re a + Re b` on the cosine
+    /// and `Im b − Im a` on the sine, its imaginary part `Im a + Im b` and `Re a − Re b`.
+    fn parts_by_slot<F: Field>(
+        &self,
+        f: &Expr,
+        coeff: impl Fn(&Term<'_, GaussianRational>) -> (F, F),
+    ) -> Option<[SparseVec<F>; 2]> {
+        let (mut re, mut im) = (
+            Vec::with_capacity(2 * f.len()),
+            Vec::with_capacity(2 * f.len()),
+        );
+        let minus = |x: &F| F::zero().sub(x);
+        for t in f.terms() {
+            let slot = *self.slots.get_term(&t)?;
+            let (a, b) = coeff(&t);
+            let (cos, sin, conjugate) = match slot {
+                Slot::One(j) => {
+                    push_nonzero(&mut re, j, a);
+                    push_nonzero(&mut im, j, b);
+                    continue;
+                }
+                Slot::Canonical { cos, sin } => (cos, sin, false),
+                Slot::Conjugate { cos, sin } => (cos, sin, true),
+            };
+            // a (canonical side) or b (conjugate side): the signs above.
+            let (re_sin, im_sin) = if conjugate {
+                (b.clone(), minus(&a))
+            } else {
+                (minus(&b), a.clone())
+            };
+            push_nonzero(&mut re, cos, a);
+            push_nonzero(&mut re, sin, re_sin);
+            push_nonzero(&mut im, cos, b);
+            push_nonzero(&mut im, sin, im_sin);
+        }
+        Some([re, im])
+    }
+}
+
+/// The real equations of an image `{φ, H}` (or, for the denominators, of a function), as a
+/// column: a row for the real and for the imaginary part of each monomial with a canonical
+/// `e^{ik·θ}` (`k ≥ 0`), numbered as they first appear in `rows`. Right for real functions,
+/// whose other coefficients are the conjugates of these.
+pub(super) fn real_rows(
+    e: &Expr,
+    angles: &[Var],
+    rows: &mut MonomialIndex<[Option<usize>; 2]>,
+    nrows: &mut usize,
+) -> SparseVec<Rational> {
+    let mut col = Vec::new();
+    for t in e.terms() {
+        if !canonical(angles.iter().map(|v| t.exponent(*v))) {
+            continue;
+        }
+        let c = t.coeff();
+        let row = rows
+            .get_or_insert_with_term(&t, || [None, None])
+            .expect("the rows have the function's variables");
+        for (part, x) in [c.re, c.im].into_iter().enumerate() {
+            if x.is_zero() {
+                continue;
+            }
+            let r = *row[part].get_or_insert_with(|| {
+                *nrows += 1;
+                *nrows - 1
+            });
+            col.push((r, x));
+        }
+    }
+    col
+}
+
+/// Appends `(j, x)` unless `x` is zero.
+pub(super) fn push_nonzero<F: Field>(v: &mut SparseVec<F>, j: usize, x: F) {
+    if !x.is_zero() {
+        v.push((j, x));
+    }
+}
+
+/// The sparse vector of entries `(j, x)` in any order, those of one index added up, zeros
+/// dropped.
+pub(super) fn sum_by_index<F: Field>(mut v: SparseVec<F>) -> SparseVec<F> {
+    v.sort_unstable_by_key(|x| x.0);
+    v.dedup_by(|later, kept| {
+        let same = later.0 == kept.0;
+        if same {
+            kept.1 = kept.1.add(&later.1);
+        }
+        same
+    });
+    v.retain(|x| !x.1.is_zero());
+    v
+}
+
+/// Union–find.
+pub(super) struct Components(pub(super) Vec<usize>);
+
+impl Components {
+    pub(super) fn find(&mut self, mut a: usize) -> usize {
+        while self.0[a] != a {
+            self.0[a] = self.0[self.0[a]];
+            a = self.0[a];
+        }
+        a
+    }
+    pub(super) fn union(&mut self, a: usize, b: usize) {
+        let (ra, rb) = (self.find(a), self.find(b));
+        if ra != rb {
+            self.0[ra.max(rb)] = ra.min(rb);
+        }
+    }
+}

@@ -1,0 +1,212 @@
+//! What a search returns: the basis of integrals, which are new, the parameter module, timings.
+
+use trigpoly::{Expr, Rational, Style, Var, VarSet, Vars};
+
+use super::options::SearchSpace;
+
+/// One basis element of the integrals found.
+#[derive(Clone, Debug)]
+pub struct Integral {
+    /// The integral at the fixed parameter values, with coprime integer coefficients.
+    pub fixed: Expr,
+    /// Whether the engine found `{F, H} = 0` (after the condition) at the fixed values.
+    pub proved_fixed: bool,
+    /// The integral with its parameters, if lifting and the symbolic proof succeeded.
+    pub symbolic: Option<Expr>,
+    /// Degree in the momenta.
+    pub momenta_degree: i64,
+    /// Degree `Σ|a|` in the coordinates.
+    pub positions_degree: i64,
+    /// Degree in the Poisson variables.
+    pub poisson_degree: i64,
+    /// Trigonometric order.
+    pub trig_degree: i64,
+}
+
+impl Integral {
+    /// The integral as printed: symbolic if it was lifted, otherwise at the fixed values,
+    /// where alone it may hold; [`SearchResult::for_every_value`] says which.
+    pub fn expr(&self) -> &Expr {
+        self.symbolic.as_ref().unwrap_or(&self.fixed)
+    }
+}
+
+/// What `--new-only` found. Integrals are graded by their total degree in the coordinates and
+/// momenta, then by their trigonometric order (the largest such pair among a function's
+/// terms, compared in that order); an integral of grade `g` is generated when it is a sum of
+/// known integrals, constants, products of at least two integrals of grade below `g` and, with
+/// parameters kept symbolic, parameter multiples of integrals of grade `≤ g`. The grades form
+/// a filtration (a product's grade is at most the sum of its factors'), so where `cos(a − b)`
+/// and `p_b` are integrals, `cos 2(a − b) = 2cos²(a − b) − 1` and `p_b cos(a − b)` are
+/// generated; without angles the grade is the degree.
+#[derive(Clone, Debug)]
+pub struct NewIntegrals {
+    /// The known integrals used (named functions that are real integrals lying in the space).
+    pub known: Vec<String>,
+    /// The dimension of the span of the known integrals and of all products of known and found
+    /// integrals that lie in the space.
+    pub generated: usize,
+    /// Indices into the basis of a complement: the integrals that nothing known generates,
+    /// decided by increasing grade.
+    pub new: Vec<usize>,
+    /// How many products were formed.
+    pub products: usize,
+}
+
+/// With parameters kept symbolic, the integrals found form a module over the polynomials in
+/// them: `A·I` is an integral whenever `I` is.
+#[derive(Clone, Debug)]
+pub struct ParameterModule {
+    /// The parameters kept symbolic.
+    pub parameters: Vec<Var>,
+    /// Indices into the basis of generators: the basis integrals that are not sums of
+    /// parameter multiples `a·J` (`a` a parameter, `J` an integral of the space) and of
+    /// earlier generators. Every integral of the space is a combination of them with
+    /// polynomial coefficients.
+    pub generators: Vec<usize>,
+}
+
+/// Seconds spent in each stage (reported, never used to decide anything).
+#[derive(Clone, Debug, Default)]
+pub struct SearchTimings {
+    /// Building the unknowns and their images `{φ, H}`.
+    pub equations: f64,
+    /// The exact linear algebra.
+    pub solve: f64,
+    /// The engine's proofs at the fixed values, lifting and symbolic proofs.
+    pub proofs: f64,
+    /// The complement of known products.
+    pub new_only: f64,
+    /// Everything.
+    pub total: f64,
+}
+
+/// The result of a search.
+#[derive(Clone, Debug)]
+pub struct SearchResult {
+    /// The space searched.
+    pub space: SearchSpace,
+    /// The condition's text, if any.
+    pub condition: Option<String>,
+    /// The parameters as fixed for the linear algebra.
+    pub parameters: Vec<(Var, Rational)>,
+    /// Whether lifting back to symbolic parameters was possible at all (the weights determine
+    /// every parameter).
+    pub liftable: bool,
+    /// The variables (for printing the parameters).
+    pub vars: Vars,
+    /// The variables the space's functions are formed in.
+    pub variables: SpaceVariables,
+    /// Number of unknowns (real basis functions).
+    pub unknowns: usize,
+    /// Number of (nonzero) linear equations.
+    pub equations: usize,
+    /// Number of connected components of the linear system.
+    pub components: usize,
+    /// Unknowns in the largest component.
+    pub largest_component: usize,
+    /// A basis of all integrals in the space, by increasing degree in the momenta, then in the
+    /// Poisson variables.
+    pub basis: Vec<Integral>,
+    /// The complement of the known integrals' products, if asked for.
+    pub new: Option<NewIntegrals>,
+    /// With parameters kept symbolic, the generators over the polynomials in them.
+    pub module: Option<ParameterModule>,
+    /// Timings.
+    pub timings: SearchTimings,
+}
+
+impl SearchResult {
+    /// The number of basis integrals of momenta degree `≤ j` for each `j = 0, …, d`: the
+    /// dimensions of the spaces with smaller `d` (same coordinates and trigonometric order).
+    pub fn dimensions_by_momenta_degree(&self) -> Vec<usize> {
+        self.dimensions_by(self.space.momenta_degree, |f| f.momenta_degree)
+    }
+
+    /// The number of basis integrals of degree `≤ j` in the Poisson variables for each
+    /// `j = 0, …, P`: the dimensions of the spaces with smaller `P`.
+    pub fn dimensions_by_poisson_degree(&self) -> Vec<usize> {
+        self.dimensions_by(self.space.poisson_degree, |f| f.poisson_degree)
+    }
+
+    /// The number of basis integrals whose `degree` is `≤ j`, for each `j = 0, …, bound`.
+    fn dimensions_by(&self, bound: u32, degree: impl Fn(&Integral) -> i64) -> Vec<usize> {
+        (0..=i64::from(bound))
+            .map(|j| self.basis.iter().filter(|f| degree(f) <= j).count())
+            .collect()
+    }
+
+    /// `counts[j][k]`: basis integrals of momenta degree exactly `j` and trigonometric order
+    /// exactly `k`.
+    pub fn counts(&self) -> Vec<Vec<usize>> {
+        self.counts_by(self.space.momenta_degree, |f| f.momenta_degree)
+    }
+
+    /// `poisson_counts[j][k]`: basis integrals of degree exactly `j` in the Poisson variables
+    /// and trigonometric order exactly `k`.
+    pub fn poisson_counts(&self) -> Vec<Vec<usize>> {
+        self.counts_by(self.space.poisson_degree, |f| f.poisson_degree)
+    }
+
+    /// `c[j][k]`: basis integrals whose `degree` is `j` (`≤ bound`) and trigonometric order `k`.
+    fn counts_by(&self, bound: u32, degree: impl Fn(&Integral) -> i64) -> Vec<Vec<usize>> {
+        let k = self.space.trig_degree as usize;
+        let mut c = vec![vec![0; k + 1]; bound as usize + 1];
+        for f in &self.basis {
+            c[degree(f) as usize][f.trig_degree as usize] += 1;
+        }
+        c
+    }
+
+    /// The `i`-th basis integral as proved for every value of the parameters: lifted and
+    /// proved symbolically, or proved where no parameter was fixed. `None` when it holds at
+    /// the fixed values only (`x p_y − y p_x` of `p²/2 + (x² + a²y²)/2`, at `a = 1`).
+    pub fn for_every_value(&self, i: usize) -> Option<&Expr> {
+        let f = &self.basis[i];
+        match (&f.symbolic, f.proved_fixed && self.parameters.is_empty()) {
+            (Some(e), _) => Some(e),
+            (None, true) => Some(&f.fixed),
+            (None, false) => None,
+        }
+    }
+
+    /// Whether every basis element was proved symbolically.
+    pub fn all_symbolic(&self) -> bool {
+        self.basis.iter().all(|f| f.symbolic.is_some())
+    }
+}
+
+/// The variables of a search's space: monomials in the coordinates, in the momenta and in the
+/// Poisson variables, times `cos k·θ`, `sin k·θ` in the angles. Every momentum and Poisson
+/// variable of the phase space is among them but an angle's momentum or a Poisson variable that
+/// the condition fixes (`p_θ = mIω/n`, `M₃ = 1` where the flow keeps `M₃`), a constant there.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct SpaceVariables {
+    /// The coordinates (not the angles), whose total degree is the positions degree.
+    pub coordinates: Vec<Var>,
+    /// The momenta, whose total degree is the momenta degree.
+    pub momenta: Vec<Var>,
+    /// The Poisson variables, whose total degree is the Poisson degree.
+    pub poisson: Vec<Var>,
+    /// The angles, whose trigonometric order is bounded.
+    pub angles: Vec<Var>,
+    /// The angles' momenta and the Poisson variables that the condition fixes, left out.
+    pub left_out: Vec<Var>,
+}
+
+/// Fixed values of parameters as they read, `M = 1, ω = 1` (in `Style::Ascii`, with the ASCII
+/// names superint reads back: `M = 1, omega = 1`).
+pub fn parameter_text(vars: &VarSet, values: &[(Var, Rational)], style: Style) -> String {
+    values
+        .iter()
+        .map(|(v, x)| {
+            let variable = vars.variable(*v);
+            let name = match style {
+                Style::Ascii => variable.name(),
+                _ => variable.unicode(),
+            };
+            format!("{name} = {x}")
+        })
+        .collect::<Vec<_>>()
+        .join(", ")
+}
