@@ -640,10 +640,16 @@ pub fn search_report(
         ]
         .iter()
         .any(|vs| !vs.is_empty());
-        let variables = match (r.variables.poisson.is_empty(), canonical) {
-            (true, _) => "in the coordinates and momenta together",
-            (false, false) => "in the Poisson variables",
-            (false, true) => "in the coordinates, momenta and Poisson variables together",
+        // With denominator atoms their powers count with the coordinates' (`1/(x − y)`).
+        let denominator = r.vars.denominators().next();
+        let variables = match (r.variables.poisson.is_empty(), canonical, denominator) {
+            (true, _, Some(d)) => format!(
+                "in the coordinates, momenta and denominators together, `1/{}` of degree 1",
+                r.vars.variable(d).unicode()
+            ),
+            (true, _, None) => "in the coordinates and momenta together".into(),
+            (false, false, _) => "in the Poisson variables".into(),
+            (false, true, _) => "in the coordinates, momenta and Poisson variables together".into(),
         };
         let rule = if r.variables.angles.is_empty() {
             format!(

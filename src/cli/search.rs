@@ -96,8 +96,8 @@ pub struct SearchArgs {
     /// Show only the new integrals, those that nothing known generates. An integral is
     /// generated when it is a sum of the file's named integrals, --known ones, constants and
     /// products of integrals of lower grade (with --symbolic, parameter multiples too); a grade
-    /// is the degree in the coordinates, momenta and Poisson variables together, then the
-    /// trigonometric order
+    /// is the degree in the coordinates, momenta and Poisson variables together (the powers of
+    /// a denominator, 1/(x − y), count with the coordinates), then the trigonometric order
     /// (where cos θ and p are integrals, cos 2θ = 2cos²θ − 1 and p cos θ are generated). A
     /// product of integrals of the same grade is not counted: with three rotors, cos(a − c)
     /// is new beside cos(a − b) and cos(b − c), though it is a polynomial in them and their

@@ -18,7 +18,7 @@ const WRAP: usize = 96;
 /// Renders a report as text.
 pub fn render(report: &Report, options: &Options) -> String {
     let mut out = Vec::<String>::new();
-    out.push(plain(&report.title));
+    out.extend(wrap(&plain(&report.title), WRAP, ""));
     if !report.subtitle.is_empty() {
         out.extend(wrap(&report.subtitle, WRAP, ""));
     }
@@ -202,6 +202,11 @@ fn wrap_items(indent: &str, items: &[String], w: usize) -> Vec<String> {
     lines
 }
 
+/// The widest left side of a list of equations after which a right side too long for its line
+/// wraps; past it (a long expression given to `expand`) each side of such an equation takes
+/// lines of its own.
+const ALIGNED_LEFT_SIDE: usize = 40;
+
 /// The terms from which a list of equations is printed on the pool's threads.
 const PARALLEL_TERMS: usize = 10_000;
 
@@ -215,6 +220,11 @@ fn equations(out: &mut Vec<String>, eq: &Equations) {
         let line = format!("    {} = {}", pad(&l.lhs, lw), l.rhs);
         if width(&line) <= WRAP {
             vec![line]
+        } else if lw > ALIGNED_LEFT_SIDE {
+            // Too wide to wrap the right side after: each side on lines of its own.
+            let mut lines = wrap_sum(&format!("    {}", l.lhs), WRAP, "      ");
+            lines.extend(wrap_sum(&format!("      = {}", l.rhs), WRAP, "        "));
+            lines
         } else {
             wrap_sum(&line, WRAP, &indent)
         }

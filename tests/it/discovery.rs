@@ -232,6 +232,11 @@ const COMMANDS: &[(&str, &str)] = &[
          --denominators-degree 2",
     ),
     (
+        "calogero-new",
+        "superint search systems/calogero.toml --momenta-degree 4 --positions-degree 2 \
+         --denominators-degree 2 --new-only",
+    ),
+    (
         "sw1-algebra",
         "superint closure systems/smorodinsky-winternitz-i.toml H Hx X --define 'C={Hx, X}' \
          --degree 3 --symbolic alpha,beta,gamma --parameters-degree 3",
@@ -2238,4 +2243,49 @@ fn calogero_search_finds_wojciechowski_integrals() {
     let more = search(file.system(), &wider).expect("searches");
     assert!(more.unknowns > found.unknowns);
     assert_eq!(more.basis.len(), 10);
+}
+
+/// `--new-only` on the Calogero–Moser system: with `H` alone known, the new integrals of
+/// degree ≤ 3 in the momenta and ≤ 1 in the positions are four (the total momentum, the cubic
+/// and Wojciechowski's two), and the file's five generate everything there. At degree ≤ 4 in
+/// the momenta and ≤ 2 in the positions three more are new beside those five, and one of them
+/// is the Casimir of the sl(2) spanned by `H`, `D = Σ x p` and `Σ x²`: `2H Σx² − D²`, which is
+/// no polynomial in the five. Products of integrals are located through the cleared forms, so
+/// one written in other monomials of the space counts (`x·P/(x − y) − y·P/(x − y)` is `P`).
+#[test]
+fn calogero_new_integrals_include_the_sl2_casimir() {
+    let flat = normalize(&run("calogero-new"));
+    for line in [
+        "Dimension of the space of integrals: 23.",
+        "Known integrals in the space: H, P, I_3, K1, K2.",
+        "the generated ones span 20 of the 23 dimensions",
+        // The Casimir, Σ (x_i p_j − x_j p_i)² + …, in the basis's monomials.
+        "x² p_y² + x² p_z² − 2xy p_x p_y − 2xz p_x p_z + y² p_x² + y² p_z² − 2yz p_y p_z",
+        "4 claims: 4 proved, 0 refuted",
+    ] {
+        assert!(flat.contains(line), "{line}: {flat}");
+    }
+    let file = system_file("calogero.toml");
+    let h = file.parse_argument("H").expect("parses");
+    let bare = brackets::System::new("Calogero–Moser, H alone", file.system().space().clone(), h);
+    let new_ones = |system: &brackets::System, options: SearchOptions| {
+        let found = search(system, &options.new_only()).expect("searches");
+        let new = found.new.expect("asked for");
+        (new.known, new.new.len())
+    };
+    let small = || SearchOptions::new(SearchSpace::new(3, 1, 0).denominators_degree(2));
+    assert_eq!(new_ones(&bare, small()), (vec!["H".to_string()], 4));
+    assert_eq!(new_ones(file.system(), small()).1, 0);
+    let p_apart = file
+        .parse_argument("x*P/(x - y) - y*P/(x - y)")
+        .expect("parses");
+    let (known, new) = new_ones(&bare, small().known("P'", p_apart));
+    assert_eq!((known, new), (vec!["H".to_string(), "P'".to_string()], 3));
+    // The Casimir known, two are new.
+    let casimir = file
+        .parse_argument("2*H*(x^2 + y^2 + z^2) - (x*p_x + y*p_y + z*p_z)^2")
+        .expect("parses");
+    assert!(file.system().flow(&casimir).unwrap().vanishes().unwrap());
+    let large = SearchOptions::new(SearchSpace::new(4, 2, 0).denominators_degree(2));
+    assert_eq!(new_ones(file.system(), large.known("C", casimir)).1, 2);
 }

@@ -1232,6 +1232,25 @@ fn bracket_prints_the_normal_form() {
     assert!(on.contains("at p_θ = 2Iω/3"), "{on}");
 }
 
+/// A left side too wide to align on takes lines of its own, its right side below it after
+/// `=`: aligned after a left side of 160 characters, the right side was written one word a
+/// line at column 160. Here the sl(2) Casimir of the Calogero–Moser system, `2H Σx² − D²`,
+/// less its expansion, is zero.
+#[test]
+fn expand_writes_a_long_left_side_on_lines_of_its_own() {
+    let long = "2*H*(x^2 + y^2 + z^2) - (x*p_x + y*p_y + z*p_z)^2 - ((x*p_y - y*p_x)^2 \
+                + (x*p_z - z*p_x)^2 + (y*p_z - z*p_y)^2 \
+                + 2*g*(x^2 + y^2 + z^2)*(1/(x - y)^2 + 1/(x - z)^2 + 1/(y - z)^2))";
+    let f = "systems/calogero.toml";
+    let out = run(&["expand", f, long, "(x + y)^2", "--no-timings"], 0);
+    assert!(out.lines().all(|l| l.chars().count() <= 96), "{out}");
+    assert!(out.contains("1/(y − z)²))\n      = 0\n"), "{out}");
+    assert!(
+        out.contains("\n    (x + y)²\n      = x² + 2xy + y²\n"),
+        "{out}"
+    );
+}
+
 /// `expand` prints expressions in the normal form the claims are decided in: the Casimir
 /// relation C10 expands to zero, and so does not a wrong neighbour of it; a condition applies
 /// after the expansion.

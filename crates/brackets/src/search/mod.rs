@@ -32,8 +32,11 @@
 //! the equations and that choice are decided on images under one injective map onto
 //! polynomials, the denominators cleared (`crate::clearing`), so that no function equal to
 //! zero is reported and each integral has one set of coordinates. Parameters are kept
-//! symbolic when no denominator holds them; which integrals are new (`new_only`) is not yet
-//! offered there.
+//! symbolic when no denominator holds them. Which integrals are new (`new_only`) is decided
+//! the same way: a known integral or a product of integrals, which may be written in other
+//! monomials or in powers of `1/D` past the space's, lies in the space exactly when its
+//! cleared image is a combination of the basis integrals' (`locate`); the powers of `1/D`
+//! count with the coordinates in a grade, and bound only how many factors a product has.
 //!
 //! ```
 //! use brackets::search::{search, SearchOptions, SearchSpace};
@@ -79,6 +82,7 @@
 //! ```
 
 mod independence;
+mod locate;
 mod new_only;
 mod options;
 mod parameters;
@@ -156,13 +160,6 @@ pub fn search(system: &System, options: &SearchOptions) -> Result<SearchResult, 
     let vars = system.vars();
     check_parameters(vars, &options.symbolic, &options.fixed)?;
     let atoms = system.space().denominator_atoms();
-    if !atoms.is_empty() && options.new_only {
-        return Err(EngineError::Invalid(
-            "on a system with denominators the search finds a basis of the integrals, but not \
-             yet which of them are new (SearchOptions::new_only; --new-only): search without it"
-                .into(),
-        ));
-    }
     // A denominator free of the parameters kept symbolic makes the choice of independent
     // monomials the same for each multiple by a parameter monomial, which the parameter
     // multiples of integrals need.

@@ -3,12 +3,13 @@
 
 use rustc_hash::FxHashMap;
 
-use trigpoly::{Expr, GaussianRational, Rational, Style, Term, Var, VarKind};
+use trigpoly::{Expr, GaussianRational, Rational, Style, Term, Var, VarKind, Vars};
 
 use crate::error::EngineError;
 use crate::modular::{self, Echelon, Field, Fp, SparseVec};
 use crate::system::System;
 
+use super::locate::{ClearedBasis, Locator};
 use super::options::SearchOptions;
 use super::parameters::{fix_parameters, without_parameter_denominators};
 use super::problem::{Problem, Slot};
@@ -25,6 +26,14 @@ pub(super) fn new_integrals(
     multiples: &[(usize, SparseVec<Rational>)],
 ) -> Result<NewIntegrals, EngineError> {
     let (space, extra, symbolic) = (&options.space, &options.known, &options.symbolic);
+    // With denominator atoms a function of the space may be written in other monomials than
+    // the unknowns' (and a product's powers of `1/D` add up): it is located through the
+    // cleared images of the basis integrals instead.
+    let atoms = system.space().denominator_atoms();
+    let locator = match atoms.is_empty() {
+        true => Locator::Monomials(problem),
+        false => Locator::Cleared(ClearedBasis::new(problem, atoms, parameters, kernel)?),
+    };
     // Known integrals: named real functions that are integrals, restricted to the condition.
     let mut known_names = Vec::new();
     let mut known: Vec<(Expr, SparseVec<Rational>)> = Vec::new();
@@ -50,7 +59,7 @@ pub(super) fn new_integrals(
         }
         let fv = fix_parameters(&f, parameters)?;
         let flow = problem.flow(system, &fv)?;
-        if !flow.is_zero() {
+        if !flow.vanishes()? {
             if given {
                 return Err(not_an_integral(&name, &flow, options, parameters));
             }
@@ -58,27 +67,38 @@ pub(super) fn new_integrals(
         }
         let restricted = without_parameter_denominators(&problem.apply_condition(fv)?, symbolic)?;
         // A constant on phase space (`Ω = ω` at a resonance) is no integral worth naming.
-        if is_phase_free(&restricted) || known.iter().any(|k| k.0 == restricted) {
+        if is_phase_free(&restricted) {
             continue;
         }
-        if let Some(v) = problem.coordinates(&restricted) {
+        // A function given twice (in other monomials, with denominators) is named once.
+        let Some(v) = locator.coordinates(&restricted)? else {
+            continue;
+        };
+        // In the unknowns' monomials, so that its generators' sizes are its own.
+        let canonical = problem.combination(&v)?;
+        if !is_phase_free(&canonical) && !known.iter().any(|k| k.1 == v) {
             known_names.push(name);
-            known.push((restricted, v));
+            known.push((canonical, v));
         }
     }
     // The filtration by grade ([`Grading`]): an integral of grade g is generated when it lies
     // in the span of the known integrals, the constants, the products of at least two
     // integrals of grade < g (known or found) and the parameter multiples of integrals of
     // grade ≤ g.
-    let grading = Grading::new(&problem.variables, space.trig_degree);
+    let grading =
+        Grading::new(&problem.variables, space.trig_degree).with_denominators(&problem.vars);
     let sources = known
         .iter()
         .map(|k| &k.0)
         .chain(basis.iter().map(|b| &b.fixed));
     let gens = generators(problem, &grading, sources)?;
+    // With atoms the degrees in the coordinates and the denominators bound only how many
+    // factors a product has, as in a Laurent space: `x/(x − y) · y/(x − y)` may equal a
+    // function of the space written in fewer of them.
+    let laurent = space.laurent || !atoms.is_empty();
     let bounds = Size {
         momenta: space.momenta_degree.into(),
-        coordinates: space.positions_degree.into(),
+        coordinates: (space.positions_degree + space.denominators_degree).into(),
         poisson: space.poisson_degree.into(),
         angles_alone: space.trig_degree.into(),
     };
@@ -97,7 +117,7 @@ pub(super) fn new_integrals(
         }
         vectors.extend(multiples.iter().map(|(i, v)| (grades[*i] - 1, v.clone())));
         let limits = (kernel.len(), options.max_products);
-        span_of_products(problem, &gens, vectors, bounds, space.laurent, span, limits)
+        span_of_products(&locator, &gens, vectors, bounds, laurent, span, limits)
     };
     // By increasing grade g: the products of factors of grade < g join the span, then each
     // basis integral of grade g is new unless it lies in the span (of those and of the new
@@ -246,6 +266,13 @@ impl Grading {
         }
     }
 
+    /// With denominator atoms, their powers count in the degree too (`1/(x − y)` has degree
+    /// 1).
+    pub(super) fn with_denominators(mut self, vars: &Vars) -> Self {
+        self.degree_variables.extend(vars.denominators());
+        self
+    }
+
     /// The number of the grade of `f`, a function of the space (0 for a constant).
     pub(super) fn grade(&self, f: &Expr) -> i64 {
         let total = |t: &Term<'_, GaussianRational>, vars: &[Var]| -> i64 {
@@ -281,14 +308,15 @@ impl Size {
     };
 
     fn of(f: &Expr) -> Self {
-        let degree = |kind: VarKind| f.total_degree(&[kind]).unwrap_or(0);
+        let degree = |kinds: &[VarKind]| f.total_degree(kinds).unwrap_or(0);
         let (momenta, coordinates, poisson) = (
-            degree(VarKind::Momentum),
-            degree(VarKind::Coordinate),
-            degree(VarKind::Poisson),
+            degree(&[VarKind::Momentum]),
+            // The powers of the denominator atoms count with the coordinates.
+            degree(&[VarKind::Coordinate, VarKind::Denominator]),
+            degree(&[VarKind::Poisson]),
         );
         let angles_alone = match momenta == 0 && coordinates == 0 && poisson == 0 {
-            true => degree(VarKind::Angle),
+            true => degree(&[VarKind::Angle]),
             false => 0,
         };
         Size {
@@ -378,7 +406,7 @@ pub(super) type StampedVectors = Vec<(i64, SparseVec<Rational>)>;
 /// modulo p. The products stop once the span has `dimension`, that of the integrals, and
 /// fail past `max_products`.
 pub(super) fn span_of_products(
-    problem: &Problem,
+    locator: &Locator,
     gens: &[Generator],
     vectors: StampedVectors,
     bounds: Size,
@@ -387,7 +415,7 @@ pub(super) fn span_of_products(
     (dimension, max_products): (usize, usize),
 ) -> Result<Option<(StampedVectors, usize)>, EngineError> {
     let products = Spanning {
-        problem,
+        locator,
         bounds,
         laurent,
         dimension,
@@ -408,7 +436,7 @@ pub(super) fn span_of_products(
 /// so once the span has the dimension of the integrals, every integral is generated from that
 /// stamp on and no more products are formed.
 pub(super) struct Spanning<'a, 's> {
-    pub(super) problem: &'a Problem,
+    pub(super) locator: &'a Locator<'a>,
     pub(super) bounds: Size,
     pub(super) laurent: bool,
     /// The dimension of the space of integrals.
@@ -453,13 +481,13 @@ impl Spanning<'_, '_> {
                 let stamp = gens[lo].stamp;
                 let hi = lo + gens[lo..].iter().take_while(|g| g.stamp == stamp).count();
                 while let Some((at, v)) = vectors.next_if(|v| v.0 <= stamp) {
-                    self.add(|span| span.add(at, v))?;
+                    self.add(|span| Ok(span.add(at, v)))?;
                 }
                 self.round(&gens[..hi], lo, stamp)?;
                 lo = hi;
             }
             for (at, v) in vectors.by_ref() {
-                self.add(|span| span.add(at, v))?;
+                self.add(|span| Ok(span.add(at, v)))?;
             }
             Ok(())
         };
@@ -471,8 +499,11 @@ impl Spanning<'_, '_> {
     }
 
     /// Adds to the span; stops when a denominator vanishes modulo p or the span is full.
-    fn add(&mut self, add: impl FnOnce(&mut Stamped) -> Option<()>) -> Result<(), Stop> {
-        add(self.span).ok_or(Stop::NotModular)?;
+    fn add(
+        &mut self,
+        add: impl FnOnce(&mut Stamped) -> Result<Option<()>, EngineError>,
+    ) -> Result<(), Stop> {
+        add(self.span)?.ok_or(Stop::NotModular)?;
         match self.span.rank() >= self.dimension {
             true => Err(Stop::Spanned),
             false => Ok(()),
@@ -567,8 +598,8 @@ impl Round<'_> {
                 ))));
             }
             if i >= self.lo {
-                let (problem, stamp) = (spanning.problem, self.stamp);
-                spanning.add(|span| span.add_parts(problem, stamp, &p))?;
+                let (locator, stamp) = (spanning.locator, self.stamp);
+                spanning.add(|span| span.add_parts(locator, stamp, &p))?;
             }
             if self.extendable(spanning, i, sum) {
                 self.extend(spanning, (i, &p, sum), factors)?;
@@ -681,22 +712,30 @@ impl<'a> Stamped<'a> {
     /// Adds the coordinates of the real and imaginary parts of `p` under `stamp`, if they lie
     /// in the space; `None` when a denominator vanishes modulo p. Modulo p the coordinates are
     /// taken modulo p first, and over Q only for a part that is kept.
-    pub(super) fn add_parts(&mut self, problem: &Problem, stamp: i64, p: &Expr) -> Option<()> {
+    pub(super) fn add_parts(
+        &mut self,
+        locator: &Locator,
+        stamp: i64,
+        p: &Expr,
+    ) -> Result<Option<()>, EngineError> {
         let (e, leads) = match &mut self.basis {
             Independent::Modular(e, leads) => (e, *leads),
             Independent::Exact(_) => {
-                if let Some((re, im)) = problem.coordinates_of_parts(p) {
+                if let Some((re, im)) = locator.parts(p)? {
                     for v in [re, im] {
-                        if !v.is_empty() {
-                            self.add(stamp, v)?;
+                        if !v.is_empty() && self.add(stamp, v).is_none() {
+                            return Ok(None);
                         }
                     }
                 }
-                return Some(());
+                return Ok(Some(()));
             }
         };
-        let Some(parts) = problem.coordinates_of_parts_mod_p(p)? else {
-            return Some(());
+        let Some(parts) = locator.parts_mod_p(p)? else {
+            return Ok(None);
+        };
+        let Some(parts) = parts else {
+            return Ok(Some(()));
         };
         debug_assert!(self.kept.last().is_none_or(|k| k.0 <= stamp));
         let mut exact_parts = None;
@@ -705,12 +744,14 @@ impl<'a> Stamped<'a> {
             if v.is_empty() || !e.extend(self.kept.len(), &v) {
                 continue;
             }
-            let (re, im) = exact_parts
-                .get_or_insert_with(|| problem.coordinates_of_parts(p).expect("in the space"));
+            if exact_parts.is_none() {
+                exact_parts = Some(locator.parts(p)?.expect("in the space"));
+            }
+            let (re, im) = exact_parts.as_mut().expect("just formed");
             let v = std::mem::take(if part == 0 { re } else { im });
             self.kept.push((stamp, v));
         }
-        Some(())
+        Ok(Some(()))
     }
 
     /// The kept vectors with their stamps, by increasing stamp.

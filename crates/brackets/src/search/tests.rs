@@ -2,6 +2,7 @@
 
 use trigpoly::{GaussianRational, VarSet};
 
+use super::locate::Locator;
 use super::new_only::{generators, span_of_products, Grading, Leads, Size, Stamped};
 use super::problem::Problem;
 use super::*;
@@ -115,13 +116,14 @@ fn a_stamp_keeps_the_parts_of_a_product_in_both_fields() {
     }
     let i_f = f.scale(&GaussianRational::new(Rational::zero(), Rational::one()));
     let (re, im) = problem.coordinates_of_parts(&f).unwrap();
+    let locator = Locator::Monomials(&problem);
     for exact in [false, true] {
         let every = Leads::all(problem.unknowns.len());
         let mut span = Stamped::new(&every, exact);
-        assert_eq!(span.add_parts(&problem, 2, &f), Some(()));
-        assert_eq!(span.add_parts(&problem, 2, &i_f), Some(()));
+        assert_eq!(span.add_parts(&locator, 2, &f).unwrap(), Some(()));
+        assert_eq!(span.add_parts(&locator, 2, &i_f).unwrap(), Some(()));
         let outside = f.clone() + rotor.parse("x^2").unwrap();
-        assert_eq!(span.add_parts(&problem, 2, &outside), Some(()));
+        assert_eq!(span.add_parts(&locator, 2, &outside).unwrap(), Some(()));
         assert_eq!(span.into_vectors(), [(2, re.clone()), (2, im.clone())]);
     }
 }
@@ -235,11 +237,12 @@ fn products_stop_once_they_span_every_integral() {
     let dim = problem.unknowns.len();
     let leads = Leads::of(&kernel, dim);
     assert_eq!(leads.count, found.basis.len());
+    let locator = Locator::Monomials(&problem);
     for exact in [false, true] {
         let span = |dimension| {
             let span = Stamped::new(&leads, exact);
             let limits = (dimension, DEFAULT_MAX_PRODUCTS);
-            span_of_products(&problem, &gens, Vec::new(), bounds, false, span, limits)
+            span_of_products(&locator, &gens, Vec::new(), bounds, false, span, limits)
                 .unwrap()
                 .unwrap()
         };

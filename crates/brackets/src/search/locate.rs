@@ -1,0 +1,201 @@
+//! Where a function of the space sits among the unknowns, for `--new-only`: by its monomials,
+//! or, with denominator atoms (whose monomials are not independent functions), by its image
+//! under a [`Clearing`] written in the images of the basis integrals.
+
+use std::cell::RefCell;
+use std::rc::Rc;
+
+use rustc_hash::FxHashMap;
+use trigpoly::{Expr, MonomialIndex, Rational, Var};
+
+use crate::clearing::Clearing;
+use crate::error::EngineError;
+use crate::modular::{self, Echelon, Fp, SparseVec};
+
+use super::problem::{canonical, real_rows, sum_by_index, Problem};
+
+/// The coordinates of the real and of the imaginary part of a function.
+type Parts = (SparseVec<Rational>, SparseVec<Rational>);
+
+/// The coordinates of a function among the unknowns, if it lies in the space.
+pub(super) enum Locator<'a> {
+    /// By the monomials of the space, which are independent functions.
+    Monomials(&'a Problem),
+    /// With denominator atoms, through the cleared images of the basis integrals.
+    Cleared(ClearedBasis),
+}
+
+impl Locator<'_> {
+    /// The coordinates of a real function `f`, if it lies in the space.
+    pub(super) fn coordinates(&self, f: &Expr) -> Result<Option<SparseVec<Rational>>, EngineError> {
+        match self {
+            Locator::Monomials(problem) => Ok(problem.coordinates(f)),
+            Locator::Cleared(basis) => basis.coordinates(f),
+        }
+    }
+
+    /// The coordinates of the real and of the imaginary part of `p`, if both lie in the space.
+    pub(super) fn parts(&self, p: &Expr) -> Result<Option<Parts>, EngineError> {
+        match self {
+            Locator::Monomials(problem) => Ok(problem.coordinates_of_parts(p)),
+            Locator::Cleared(basis) => {
+                let (_, re, im) = p.conj_re_im();
+                let Some(re) = basis.coordinates(&re)? else {
+                    return Ok(None);
+                };
+                Ok(basis.coordinates(&im)?.map(|im| (re, im)))
+            }
+        }
+    }
+
+    /// [`Locator::parts`] modulo p: `None` when a denominator of the coordinates vanishes
+    /// modulo p, `Some(None)` outside the space.
+    pub(super) fn parts_mod_p(
+        &self,
+        p: &Expr,
+    ) -> Result<Option<Option<[SparseVec<Fp>; 2]>>, EngineError> {
+        match self {
+            Locator::Monomials(problem) => Ok(problem.coordinates_of_parts_mod_p(p)),
+            Locator::Cleared(_) => Ok(match self.parts(p)? {
+                None => Some(None),
+                Some((re, im)) => (|| Some(Some([modular::to_fp(&re)?, modular::to_fp(&im)?])))(),
+            }),
+        }
+    }
+}
+
+/// The basis integrals of a search with denominator atoms, for deciding whether a function
+/// (a known integral, a product of integrals) lies in the space and with which coordinates.
+/// The space's monomials are not independent functions, so a function written in other
+/// monomials of the space, or in monomials outside it (a product's powers of `1/D` add up),
+/// may still be one of its functions. Every function that is asked about is an integral, and
+/// the basis spans the integrals of the space: a function lies in the space exactly when it
+/// is a combination of the basis integrals, which is decided on the images under a
+/// [`Clearing`] (injective) whose powers cover both, exactly over Q. The images of the basis
+/// are formed once for each such power vector.
+pub(super) struct ClearedBasis {
+    atoms: Vec<(Var, Expr)>,
+    parameters: Vec<(Var, Rational)>,
+    angles: Vec<Var>,
+    /// The basis integrals as functions, and their coordinates among the unknowns.
+    integrals: Vec<Expr>,
+    coordinates: Vec<SparseVec<Rational>>,
+    /// The powers of `1/D_i` the basis integrals have.
+    powers: Vec<i64>,
+    /// The images of the basis integrals by the powers of the clearing.
+    images: RefCell<FxHashMap<Vec<i64>, Rc<ClearedImages>>>,
+}
+
+/// The basis integrals' images under one clearing: their real equations' rows and an echelon
+/// form of them, which expresses an image in them.
+struct ClearedImages {
+    clearing: Clearing,
+    rows: MonomialIndex<[Option<usize>; 2]>,
+    echelon: Echelon<Rational>,
+}
+
+impl ClearedBasis {
+    /// For the basis with coordinates `kernel` among the unknowns of `problem`, whose atoms
+    /// are `atoms` and whose parameters are fixed at `parameters`.
+    pub(super) fn new(
+        problem: &Problem,
+        atoms: &[(Var, Expr)],
+        parameters: &[(Var, Rational)],
+        kernel: &[SparseVec<Rational>],
+    ) -> Result<Self, EngineError> {
+        let integrals = kernel
+            .iter()
+            .map(|v| problem.combination(v))
+            .collect::<Result<Vec<Expr>, _>>()?;
+        let mut powers = vec![0; atoms.len()];
+        for f in &integrals {
+            raise_to(&mut powers, atoms, f);
+        }
+        Ok(ClearedBasis {
+            atoms: atoms.to_vec(),
+            parameters: parameters.to_vec(),
+            angles: problem.variables.angles.clone(),
+            integrals,
+            coordinates: kernel.to_vec(),
+            powers,
+            images: RefCell::default(),
+        })
+    }
+
+    /// The coordinates of a real function `f` among the unknowns, if it is a combination of
+    /// the basis integrals.
+    fn coordinates(&self, f: &Expr) -> Result<Option<SparseVec<Rational>>, EngineError> {
+        if f.is_zero() {
+            return Ok(Some(Vec::new()));
+        }
+        let mut powers = self.powers.clone();
+        raise_to(&mut powers, &self.atoms, f);
+        let images = self.images_for(powers, f)?;
+        let image = images.clearing.apply(f)?;
+        let mut v = Vec::new();
+        for t in image.terms() {
+            if !canonical(self.angles.iter().map(|a| t.exponent(*a))) {
+                continue;
+            }
+            let c = t.coeff();
+            for (part, x) in [c.re, c.im].into_iter().enumerate() {
+                if x.is_zero() {
+                    continue;
+                }
+                // A monomial that no basis image has: `f` is no combination of them.
+                match images.rows.get_term(&t).and_then(|row| row[part]) {
+                    Some(r) => v.push((r, x)),
+                    None => return Ok(None),
+                }
+            }
+        }
+        let Some(combination) = images.echelon.express(&v) else {
+            return Ok(None);
+        };
+        let mut out = Vec::new();
+        for (k, c) in &combination {
+            out.extend(self.coordinates[*k].iter().map(|(j, x)| (*j, x * c)));
+        }
+        Ok(Some(sum_by_index(out)))
+    }
+
+    /// The basis images under the clearing of `powers`, formed at the first call for them
+    /// (`f` is the function that asks, whose powers they cover).
+    fn images_for(&self, powers: Vec<i64>, f: &Expr) -> Result<Rc<ClearedImages>, EngineError> {
+        if let Some(images) = self.images.borrow().get(&powers) {
+            return Ok(Rc::clone(images));
+        }
+        let clearing = Clearing::new(
+            &self.atoms,
+            &self.parameters,
+            self.integrals.iter().chain([f]),
+        )?
+        .expect("a search with denominator atoms");
+        let mut rows = MonomialIndex::new(f.vars());
+        let mut nrows = 0;
+        let columns: Vec<SparseVec<Rational>> = clearing
+            .apply_all(&self.integrals)?
+            .iter()
+            .map(|e| real_rows(e, &self.angles, &mut rows, &mut nrows))
+            .collect();
+        let mut echelon = Echelon::new(nrows);
+        for (k, column) in columns.iter().enumerate() {
+            let independent = echelon.extend(k, column);
+            debug_assert!(independent, "the basis integrals are independent");
+        }
+        let images = Rc::new(ClearedImages {
+            clearing,
+            rows,
+            echelon,
+        });
+        self.images.borrow_mut().insert(powers, Rc::clone(&images));
+        Ok(images)
+    }
+}
+
+/// Raises each of `powers` to the power of `1/D_i` in `f`, if higher.
+fn raise_to(powers: &mut [i64], atoms: &[(Var, Expr)], f: &Expr) {
+    for ((v, _), n) in atoms.iter().zip(powers.iter_mut()) {
+        *n = (*n).max(-f.low_degree(*v).unwrap_or(0));
+    }
+}
