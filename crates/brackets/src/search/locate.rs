@@ -10,9 +10,9 @@ use trigpoly::{Expr, MonomialIndex, Rational, Var};
 
 use crate::clearing::Clearing;
 use crate::error::EngineError;
-use crate::modular::{self, Echelon, Fp, SparseVec};
+use crate::modular::{Echelon, SparseVec};
 
-use super::problem::{canonical, real_rows, sum_by_index, Problem};
+use super::problem::{real_entries, real_rows, sum_by_index, Problem};
 
 /// The coordinates of the real and of the imaginary part of a function.
 type Parts = (SparseVec<Rational>, SparseVec<Rational>);
@@ -45,21 +45,6 @@ impl Locator<'_> {
                 };
                 Ok(basis.coordinates(&im)?.map(|im| (re, im)))
             }
-        }
-    }
-
-    /// [`Locator::parts`] modulo p: `None` when a denominator of the coordinates vanishes
-    /// modulo p, `Some(None)` outside the space.
-    pub(super) fn parts_mod_p(
-        &self,
-        p: &Expr,
-    ) -> Result<Option<Option<[SparseVec<Fp>; 2]>>, EngineError> {
-        match self {
-            Locator::Monomials(problem) => Ok(problem.coordinates_of_parts_mod_p(p)),
-            Locator::Cleared(_) => Ok(match self.parts(p)? {
-                None => Some(None),
-                Some((re, im)) => (|| Some(Some([modular::to_fp(&re)?, modular::to_fp(&im)?])))(),
-            }),
         }
     }
 }
@@ -132,24 +117,11 @@ impl ClearedBasis {
         raise_to(&mut powers, &self.atoms, f);
         let images = self.images_for(powers, f)?;
         let image = images.clearing.apply(f)?;
-        let mut v = Vec::new();
-        for t in image.terms() {
-            if !canonical(self.angles.iter().map(|a| t.exponent(*a))) {
-                continue;
-            }
-            let c = t.coeff();
-            for (part, x) in [c.re, c.im].into_iter().enumerate() {
-                if x.is_zero() {
-                    continue;
-                }
-                // A monomial that no basis image has: `f` is no combination of them.
-                match images.rows.get_term(&t).and_then(|row| row[part]) {
-                    Some(r) => v.push((r, x)),
-                    None => return Ok(None),
-                }
-            }
-        }
-        let Some(combination) = images.echelon.express(&v) else {
+        // A monomial that no basis image has: `f` is no combination of them.
+        let entries = real_entries(&image, &self.angles, |t, part| {
+            images.rows.get_term(t).and_then(|row| row[part])
+        });
+        let Some(combination) = entries.and_then(|v| images.echelon.express(&v)) else {
             return Ok(None);
         };
         let mut out = Vec::new();

@@ -66,15 +66,12 @@ pub(super) fn new_integrals(
             continue;
         }
         let restricted = without_parameter_denominators(&problem.apply_condition(fv)?, symbolic)?;
-        // A constant on phase space (`Ω = ω` at a resonance) is no integral worth naming.
-        if is_phase_free(&restricted) {
-            continue;
-        }
-        // A function given twice (in other monomials, with denominators) is named once.
         let Some(v) = locator.coordinates(&restricted)? else {
             continue;
         };
-        // In the unknowns' monomials, so that its generators' sizes are its own.
+        // In the unknowns' monomials, so that its generators' sizes are its own. A constant on
+        // phase space (`Ω = ω` at a resonance) is no integral worth naming, and a function
+        // given twice (in other monomials, with denominators) is named once.
         let canonical = problem.combination(&v)?;
         if !is_phase_free(&canonical) && !known.iter().any(|k| k.1 == v) {
             known_names.push(name);
@@ -731,14 +728,26 @@ impl<'a> Stamped<'a> {
                 return Ok(Some(()));
             }
         };
-        let Some(parts) = locator.parts_mod_p(p)? else {
+        // By the monomials, modulo p first and over Q only for a part that is kept; through the
+        // cleared basis the coordinates come over Q, once.
+        let (parts, mut exact_parts) = match locator {
+            Locator::Monomials(problem) => (problem.coordinates_of_parts_mod_p(p), None),
+            Locator::Cleared(_) => match locator.parts(p)? {
+                None => (Some(None), None),
+                Some((re, im)) => {
+                    let fp = modular::to_fp(&re).zip(modular::to_fp(&im));
+                    (fp.map(|(a, b)| Some([a, b])), Some((re, im)))
+                }
+            },
+        };
+        // `None` when a denominator vanishes modulo p, `Some(None)` outside the space.
+        let Some(parts) = parts else {
             return Ok(None);
         };
         let Some(parts) = parts else {
             return Ok(Some(()));
         };
         debug_assert!(self.kept.last().is_none_or(|k| k.0 <= stamp));
-        let mut exact_parts = None;
         for (part, v) in parts.into_iter().enumerate() {
             let v = leads.restrict(v);
             if v.is_empty() || !e.extend(self.kept.len(), &v) {

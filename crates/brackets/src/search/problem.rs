@@ -502,27 +502,38 @@ pub(super) fn real_rows(
     rows: &mut MonomialIndex<[Option<usize>; 2]>,
     nrows: &mut usize,
 ) -> SparseVec<Rational> {
+    let numbered = real_entries(e, angles, |t, part| {
+        let row = rows
+            .get_or_insert_with_term(t, || [None, None])
+            .expect("the rows have the function's variables");
+        Some(*row[part].get_or_insert_with(|| {
+            *nrows += 1;
+            *nrows - 1
+        }))
+    });
+    numbered.expect("every row is numbered")
+}
+
+/// The entries of [`real_rows`], each at the row `row(term, part)` finds for it (the real
+/// part 0, the imaginary 1); `None` when it finds none.
+pub(super) fn real_entries(
+    e: &Expr,
+    angles: &[Var],
+    mut row: impl FnMut(&Term<'_, GaussianRational>, usize) -> Option<usize>,
+) -> Option<SparseVec<Rational>> {
     let mut col = Vec::new();
     for t in e.terms() {
         if !canonical(angles.iter().map(|v| t.exponent(*v))) {
             continue;
         }
         let c = t.coeff();
-        let row = rows
-            .get_or_insert_with_term(&t, || [None, None])
-            .expect("the rows have the function's variables");
         for (part, x) in [c.re, c.im].into_iter().enumerate() {
-            if x.is_zero() {
-                continue;
+            if !x.is_zero() {
+                col.push((row(&t, part)?, x));
             }
-            let r = *row[part].get_or_insert_with(|| {
-                *nrows += 1;
-                *nrows - 1
-            });
-            col.push((r, x));
         }
     }
-    col
+    Some(col)
 }
 
 /// Appends `(j, x)` unless `x` is zero.
