@@ -436,7 +436,7 @@ pub(crate) fn point(r: &RankResult, style: Style) -> Vec<String> {
                     Style::Unicode => format!("cos {0} = {c}, sin {0} = {s}", name(*v)),
                 }
             } else {
-                format!("{} = {}", name(*v), number(value))
+                format!("{} = {}", name(*v), trigpoly::render_number(value, style))
             }
         })
         .collect()

@@ -16,7 +16,7 @@ use trigpoly::{
 
 use super::claims::ClaimSpec;
 use super::error::{locate_bytes, ErrorKind, FileError};
-use super::model::{ExpectShape, FunctionModel, PoissonModel, ShapeModel, SystemModel};
+use super::model::{ExpectShape, FunctionModel, ShapeModel, StringTable, SystemModel};
 use super::scope::{first_bracket, mention};
 use super::text::{Source, Text};
 use super::{Family, LimitsOverride, LoadedSystem, DEFAULT_MAX_DEGREE, DEFAULT_MAX_TERMS};
@@ -633,7 +633,7 @@ impl<'a> Builder<'a> {
     fn poisson(
         &self,
         file: &LoadedSystem,
-        poisson: &Spanned<PoissonModel>,
+        poisson: &Spanned<StringTable>,
     ) -> Result<PhaseSpace, FileError> {
         let space = file.system.space();
         let vars = space.vars();
@@ -821,6 +821,55 @@ impl<'a> Builder<'a> {
         Ok(())
     }
 
+    /// The variables with the radicals of `[phase_space] radicals` added (`r = "x^2 + y^2"`),
+    /// each radicand read in the variables without radicals and written back in ASCII, and the
+    /// builder that declares them. Refused: a radicand that does not read, is constant, is not
+    /// real, and radicals that are not independent (a radicand, or a product of them, that is
+    /// a square), each at the text in the file.
+    fn radicals(
+        &self,
+        declared: &[(Spanned<String>, Spanned<String>)],
+        mut builder: VarSetBuilder,
+        vars: Vars,
+    ) -> Result<(VarSetBuilder, Vars), FileError> {
+        if declared.is_empty() {
+            return Ok((builder, vars));
+        }
+        for (name, radicand) in declared {
+            let text = self.text(radicand);
+            let value = Expr::parse(&vars, &text.value)
+                .map_err(|e| super::scope::expression_error(&self.source, &text, &e))?;
+            let refuse = |why: String| Err(self.error(ErrorKind::Expression, radicand.span(), why));
+            if value.is_constant() {
+                return refuse(format!(
+                    "the radicand of {} is the constant {value}: a radical stands for the root \
+                     of a function of the variables (write a constant root as a parameter)",
+                    name.get_ref()
+                ));
+            }
+            if value.conj() != value {
+                return refuse(format!("the radicand {value} is not real"));
+            }
+            if vars.angles().any(|a| value.contains(a)) {
+                return refuse(format!(
+                    "the radicand {value} has an angle in it: a radicand is a polynomial in the \
+                     coordinates, momenta and parameters"
+                ));
+            }
+            builder = builder.radical(name.get_ref(), &value.to_ascii());
+        }
+        let vars = builder
+            .clone()
+            .build()
+            .map_err(|e| self.error(ErrorKind::Name, declared[0].0.span(), e.to_string()))?;
+        Expr::check_radicals(&vars).map_err(|e| {
+            let first = declared.first().map(|(k, _)| k.span().start).unwrap_or(0);
+            let last = declared.last().map(|(_, v)| v.span().end).unwrap_or(0);
+            self.error(ErrorKind::Expression, first..last, e.to_string())
+        })?;
+        Ok((builder, vars))
+    }
+
     /// The variables with the denominator atoms of `[phase_space] denominators` added, one at
     /// a time, each read in the variables with the atoms before it. Refused: a text that does
     /// not read, zero, a single term (division by one is exact already), a polynomial that is
@@ -849,10 +898,16 @@ impl<'a> Builder<'a> {
             if value.conj() != value {
                 return refuse(format!("the denominator {value} is not real"));
             }
+            if vars.radicals().any(|r| value.contains(r)) {
+                return refuse(format!(
+                    "the denominator {value} has a radical in it: a denominator is a polynomial \
+                     in the coordinates, momenta and parameters"
+                ));
+            }
             if Expr::one(&vars).checked_div(&value).is_ok() {
                 return refuse(format!(
-                    "{value} is a product of the denominators declared before it (times a \
-                     term): division by it is exact already"
+                    "{value} is a product of the denominators declared before it and the \
+                     radicands (times a term): division by it is exact already"
                 ));
             }
             builder = builder.denominator(&value.to_ascii(), &value.to_string(), &value.to_latex());
@@ -885,6 +940,13 @@ impl<'a> Builder<'a> {
         }
         for p in &ps.parameters {
             self.declare(p.get_ref(), p.span(), "a parameter")?;
+        }
+        let radicals = ps
+            .radicals
+            .as_ref()
+            .map_or(&[][..], |r| &r.get_ref().entries);
+        for (name, _) in radicals {
+            self.declare(name.get_ref(), name.span(), "a radical")?;
         }
         let qs: Vec<&Spanned<String>> = ps.coordinates.iter().chain(&ps.angles).collect();
         for q in &qs {
@@ -945,6 +1007,7 @@ impl<'a> Builder<'a> {
             };
             self.error(ErrorKind::Name, at.unwrap_or(span.clone()), e.to_string())
         })?;
+        let (with_atoms, vars) = self.radicals(radicals, with_atoms, vars)?;
         let vars = self.denominators(&ps.denominators, with_atoms, vars)?;
         let pairs: Vec<(String, String)> = qs
             .iter()

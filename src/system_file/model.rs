@@ -48,7 +48,7 @@ pub(crate) struct SystemModel {
     pub hamiltonian: Spanned<String>,
     pub phase_space: Spanned<PhaseSpaceModel>,
     pub limits: Option<Spanned<LimitsModel>>,
-    pub poisson: Option<Spanned<PoissonModel>>,
+    pub poisson: Option<Spanned<StringTable>>,
     #[serde(default)]
     pub function: Vec<Spanned<FunctionModel>>,
     #[serde(default)]
@@ -72,33 +72,36 @@ pub(crate) struct PhaseSpaceModel {
     /// Polynomials that expressions may divide by (`"x - y"`), each a denominator atom.
     #[serde(default)]
     pub denominators: Vec<Spanned<String>>,
+    /// Radicals by name, each with its radicand (`r = "x^2 + y^2"`: `r = √(x² + y²)`).
+    pub radicals: Option<Spanned<StringTable>>,
 }
 
-/// The `[poisson]` table: `"{M1, M2}" = "M3"`, each key and value with its span, in the
-/// order of the file.
+/// A table of strings, each key and value with its span, in the order of the file: the
+/// `[poisson]` table (`"{M1, M2}" = "M3"`) and `[phase_space]`'s `radicals`
+/// (`{ r = "x^2 + y^2" }`).
 #[derive(Debug)]
-pub(crate) struct PoissonModel {
+pub(crate) struct StringTable {
     pub entries: Vec<(Spanned<String>, Spanned<String>)>,
 }
 
-impl<'de> Deserialize<'de> for PoissonModel {
+impl<'de> Deserialize<'de> for StringTable {
     fn deserialize<D: Deserializer<'de>>(d: D) -> Result<Self, D::Error> {
         struct V;
         impl<'de> Visitor<'de> for V {
-            type Value = PoissonModel;
+            type Value = StringTable;
             fn expecting(&self, f: &mut fmt::Formatter) -> fmt::Result {
-                f.write_str("a table of brackets such as \"{M1, M2}\" = \"M3\"")
+                f.write_str(
+                    "a table of strings, such as \"{M1, M2}\" = \"M3\" in [poisson] or \
+                     { r = \"x^2 + y^2\" } for radicals",
+                )
             }
-            fn visit_map<A: de::MapAccess<'de>>(
-                self,
-                mut map: A,
-            ) -> Result<PoissonModel, A::Error> {
+            fn visit_map<A: de::MapAccess<'de>>(self, mut map: A) -> Result<StringTable, A::Error> {
                 let mut entries = Vec::new();
                 while let Some(entry) = map.next_entry::<Spanned<String>, Spanned<String>>()? {
                     entries.push(entry);
                 }
                 entries.sort_by_key(|(k, _): &(Spanned<String>, Spanned<String>)| k.span().start);
-                Ok(PoissonModel { entries })
+                Ok(StringTable { entries })
             }
         }
         d.deserialize_map(V)

@@ -325,14 +325,27 @@ impl LoadedSystem {
                 point.push((*v, Expr::constant(self.system.vars(), q)));
             }
         }
-        let (v, _) = space.denominator_atoms().iter().find(|(v, d)| {
-            e.low_degree(*v).is_some_and(|low| low < 0)
-                && d.subst_many(&point).ok().is_some_and(|at| at.is_zero())
+        let at = |d: &Expr| d.subst_many(&point).ok().and_then(|at| at.as_constant());
+        if let Some((v, _)) = space.denominator_atoms().iter().find(|(v, d)| {
+            e.low_degree(*v).is_some_and(|low| low < 0) && at(d).is_some_and(|c| c.is_zero())
+        }) {
+            return Some(format!(
+                "{what} is not defined at the starting point: it divides by {}, which is 0 \
+                 there (--from)",
+                self.display(*v)
+            ));
+        }
+        // A radical is real where its radicand is not negative, and divides where it is not 0.
+        let (r, radicand, value) = space.radicals().iter().find_map(|(r, radicand)| {
+            let value = at(radicand)?;
+            let negative = value.re.is_negative();
+            let divides = value.is_zero() && e.low_degree(*r).is_some_and(|low| low < 0);
+            (e.contains(*r) && (negative || divides)).then_some((r, radicand, value))
         })?;
         Some(format!(
-            "{what} is not defined at the starting point: it divides by {}, which is 0 there \
-             (--from)",
-            self.display(*v)
+            "{what} is not defined at the starting point: {} = √({radicand}) is the root of {value} \
+             there (--from)",
+            self.display(*r)
         ))
     }
 

@@ -229,7 +229,7 @@ fn equations_at(
                 None => value,
             };
             // Over a common denominator, so that a value that is zero shows as 0.
-            let value = match Expr::has_denominator_atoms(value.vars()) {
+            let value = match Expr::has_relations(value.vars()) {
                 true => value
                     .over_common_denominator()
                     .map_err(|e| file.computation_error(&e.into()))?,

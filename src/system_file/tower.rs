@@ -357,6 +357,7 @@ pub fn family_tower_report_with_progress(
     file.system
         .space()
         .refuse_denominators("a family's tower")
+        .and_then(|()| file.system.space().refuse_radicals("a family's tower"))
         .map_err(|e| file.computation_error(&e))?;
     let start = Instant::now();
     // Parameters only: substituting them commutes with the bracket, so the lemma holds at

@@ -75,13 +75,34 @@ pub enum TrajectoryError {
 
 /// A function of the ring rounded for evaluation in floating point: its terms, each a
 /// complex coefficient and the powers of the phase variables it holds (for an angle `θ`,
-/// `k` stands for `e^{ikθ}`), and the polynomials of the denominator atoms it holds, whose
-/// values are computed first at each evaluation (an atom `v = (D)` to the power `k` is `D^k`).
+/// `k` stands for `e^{ikθ}`), and the denominator atoms and radicals it holds, whose values
+/// are computed first at each evaluation (an atom `v = (D)` to the power `k` is `D^k`, a
+/// radical `r = √R` to the power `k` is `√R^k`).
 #[derive(Clone, Debug)]
 pub struct Numeric {
     terms: Vec<NumericTerm>,
-    /// The rounded polynomials `D` of the atoms the terms hold, in the order `over` counts.
-    denominators: Vec<Numeric>,
+    /// The atoms and radicals the terms hold, rounded, in the order `over` counts.
+    stand_ins: Vec<StandIn>,
+}
+
+/// A variable that stands for a function of the phase variables, rounded: its value follows
+/// from the state's.
+#[derive(Clone, Debug)]
+pub enum StandIn {
+    /// A denominator atom `(D)`: the value of `D`.
+    Atom(Numeric),
+    /// A radical `√R`: the root of `R`'s value (not a number where `R < 0`).
+    Root(Numeric),
+}
+
+impl StandIn {
+    /// The value at `state`.
+    fn value(&self, state: &[f64]) -> f64 {
+        match self {
+            StandIn::Atom(d) => d.real(state),
+            StandIn::Root(radicand) => radicand.real(state).sqrt(),
+        }
+    }
 }
 
 #[derive(Clone, Debug)]
@@ -92,7 +113,7 @@ struct NumericTerm {
     powers: Vec<(usize, i32)>,
     /// `(variable index, k)` of the angles: `e^{ikθ}`.
     turns: Vec<(usize, i32)>,
-    /// `(index into denominators, exponent)` of the atoms.
+    /// `(index into stand_ins, exponent)` of the atoms and radicals.
     over: Vec<(usize, i32)>,
 }
 
@@ -103,12 +124,12 @@ impl Numeric {
         Numeric::with_atoms(e, phase, &[])
     }
 
-    /// Rounds `e`, which may hold the variables of `phase` and the denominator atoms of
-    /// `atoms` (each with its polynomial, rounded).
+    /// Rounds `e`, which may hold the variables of `phase` and the denominator atoms and
+    /// radicals of `atoms` (each with its polynomial, rounded).
     fn with_atoms(
         e: &Expr,
         phase: &[Var],
-        atoms: &[(Var, Numeric)],
+        atoms: &[(Var, StandIn)],
     ) -> Result<Numeric, TrajectoryError> {
         let vars = e.vars();
         let mut terms = Vec::with_capacity(e.len());
@@ -152,17 +173,14 @@ impl Numeric {
                 over,
             });
         }
-        let denominators = used.iter().map(|&i| atoms[i].1.clone()).collect();
-        Ok(Numeric {
-            terms,
-            denominators,
-        })
+        let stand_ins = used.iter().map(|&i| atoms[i].1.clone()).collect();
+        Ok(Numeric { terms, stand_ins })
     }
 
     /// The value at `state` (indexed by variable; an angle's entry is the angle itself), as
     /// `(re, im)`.
     pub fn eval(&self, state: &[f64]) -> (f64, f64) {
-        let atoms: Vec<f64> = self.denominators.iter().map(|d| d.real(state)).collect();
+        let atoms: Vec<f64> = self.stand_ins.iter().map(|d| d.value(state)).collect();
         let (mut re, mut im) = (0.0, 0.0);
         for t in &self.terms {
             let magnitude: f64 = t.powers.iter().map(|&(j, e)| state[j].powi(e)).product();
@@ -241,9 +259,9 @@ pub struct Flow {
     phase: Vec<Var>,
     /// `d/dt` of each, in the same order.
     rates: Vec<Numeric>,
-    /// The space's denominator atoms, each with its polynomial rounded: no state variables,
-    /// their values follow from the state's.
-    atoms: Vec<(Var, Numeric)>,
+    /// The space's denominator atoms and radicals, each with its polynomial rounded: no state
+    /// variables, their values follow from the state's.
+    atoms: Vec<(Var, StandIn)>,
     /// How many variables a state holds (every variable of the ring, parameters included).
     width: usize,
     /// How it steps.
@@ -277,7 +295,10 @@ impl Flow {
         let atoms = space
             .denominator_atoms()
             .iter()
-            .map(|(v, d)| Ok((*v, Numeric::new(&at(d)?, &phase)?)))
+            .map(|(v, d)| Ok((*v, StandIn::Atom(Numeric::new(&at(d)?, &phase)?))))
+            .chain(space.radicals().iter().map(|(r, radicand)| {
+                Ok((*r, StandIn::Root(Numeric::new(&at(radicand)?, &phase)?)))
+            }))
             .collect::<Result<Vec<_>, TrajectoryError>>()?;
         let rates = equations
             .iter()

@@ -237,6 +237,10 @@ const COMMANDS: &[(&str, &str)] = &[
          --denominators-degree 2 --new-only",
     ),
     (
+        "kepler3d-closure",
+        "superint closure systems/kepler-3d.toml H Lx Ly Lz Ax Ay Az --degree 3",
+    ),
+    (
         "sw1-algebra",
         "superint closure systems/smorodinsky-winternitz-i.toml H Hx X --define 'C={Hx, X}' \
          --degree 3 --symbolic alpha,beta,gamma --parameters-degree 3",
@@ -2152,6 +2156,27 @@ fn a_closure_past_its_monomial_limit_stops_before_computing() {
         err.contains("there are 126 monomials of degree ≤ 4"),
         "{err}"
     );
+}
+
+/// The Kepler problem in space with the radical `r`: the seven integrals close into so(4)
+/// with `H` central, and satisfy exactly the two relations of the reduced forms.
+#[test]
+fn kepler_in_space_closes_into_so4_with_two_relations() {
+    let out = expect(
+        "kepler3d-closure",
+        &[
+            "120 monomials (their span has dimension 111)",
+            "{L_x, L_y} = L_z [B1 proved]",
+            "{L_y, A_x} = −A_z [B6 proved]",
+            "{A_x, A_y} = −2 H L_z/M [B10 proved]",
+            "{A_y, A_z} = −2 H L_x/M [B12 proved]",
+            "The table closes",
+            "L_x A_x + L_y A_y + L_z A_z = 0 [R1 proved]",
+            "Mk² + 2 H L_x² + 2 H L_y² + 2 H L_z² = M A_x² + M A_y² + M A_z² [R2 proved]",
+            "14 claims: 14 proved, 0 refuted",
+        ],
+    );
+    assert!(!out.contains("[R3"), "{out}");
 }
 
 /// The Calogero–Moser system with its rational potential: five independent integrals (the

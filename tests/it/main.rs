@@ -116,6 +116,7 @@ mod denominators;
 mod discovery;
 mod library;
 mod poisson;
+mod radicals;
 mod system_files;
 
 /// The search space of degree 1 in the momenta and the positions and trigonometric order 1.

@@ -1,11 +1,12 @@
 //! Clearing denominators for linear algebra: with denominator atoms (`v` standing for a
 //! polynomial `D`, `v^{−k} = 1/D^k`) the monomials of a vector are not independent
 //! (`v · D = 1`), so linear algebra that compares coefficients runs on the vectors' images
-//! under one injective linear map onto polynomials, [`Clearing`]. The closure's, the bracket
-//! table's and the search's solves take it.
+//! under one injective linear map onto polynomials, [`Clearing`]; so with radicals
+//! (`r² = R`), whose images are reduced to each radical to the power 0 or 1. The closure's, the
+//! bracket table's and the search's solves take it.
 
 use rayon::prelude::*;
-use trigpoly::{Expr, GaussianRational, Rational, Var};
+use trigpoly::{Expr, GaussianRational, Rational, ReducedRadical, Var};
 
 use crate::search::fix_parameters;
 use crate::EngineError;
@@ -18,7 +19,14 @@ use crate::EngineError;
 /// the images one among the elements, exactly. The `D_i` are taken at the parameters' fixed
 /// values, where the vectors are (the closure's), or symbolic, with no values (a table's):
 /// multiplication by a parameter monomial commutes with the map either way.
+///
+/// With radicals `r = √R` the map first multiplies by `r^M`, `M` at least the highest power of
+/// `1/r` among the vectors, and reduces by `r² = R` ([`Expr::reduce_radicals`]): multiplication
+/// by `r^M ≠ 0` is injective, and the reduced images, each radical to the power 0 or 1, are
+/// zero exactly when the elements are.
 pub(crate) struct Clearing {
+    /// Each radical, its radicand at the fixed values, and its power `M`.
+    radicals: Vec<ReducedRadical<GaussianRational>>,
     /// Each atom, its polynomial at the fixed values, and its power `N`.
     atoms: Vec<(Var, Expr, i64)>,
     /// Whether every atom's polynomial is real, so that a real vector's image is real.
@@ -26,23 +34,33 @@ pub(crate) struct Clearing {
 }
 
 impl Clearing {
-    /// The map for `vectors` (every column and target), `None` without atoms. Refused: an
-    /// atom's polynomial that vanishes at the fixed values (`x − a` cannot, `a − b` at
-    /// `a = b = 1` does).
+    /// The map for `vectors` (every column and target), `None` without atoms or radicals.
+    /// Refused: an atom's polynomial that vanishes at the fixed values (`x − a` cannot, `a − b`
+    /// at `a = b = 1` does).
     pub(crate) fn new<'a>(
         atoms: &[(Var, Expr)],
+        radicals: &[(Var, Expr)],
         parameters: &[(Var, Rational)],
         vectors: impl Iterator<Item = &'a Expr>,
     ) -> Result<Option<Self>, EngineError> {
-        if atoms.is_empty() {
+        if atoms.is_empty() && radicals.is_empty() {
             return Ok(None);
         }
         let mut powers = vec![0i64; atoms.len()];
+        let mut radical_powers = vec![0i64; radicals.len()];
         for e in vectors {
             for ((v, _), n) in atoms.iter().zip(powers.iter_mut()) {
                 *n = (*n).max(-e.low_degree(*v).unwrap_or(0));
             }
+            for ((r, _), m) in radicals.iter().zip(radical_powers.iter_mut()) {
+                *m = (*m).max(-e.low_degree(*r).unwrap_or(0));
+            }
         }
+        let radicals = radicals
+            .iter()
+            .zip(radical_powers)
+            .map(|((r, radicand), m)| Ok((*r, fix_parameters(radicand, parameters)?, m)))
+            .collect::<Result<Vec<_>, EngineError>>()?;
         let mut out = Vec::with_capacity(atoms.len());
         for ((v, d), n) in atoms.iter().zip(powers) {
             let at = fix_parameters(d, parameters)?;
@@ -63,7 +81,11 @@ impl Clearing {
             out.push((*v, at, n));
         }
         let real = out.iter().all(|(_, d, _)| d.is_real());
-        Ok(Some(Clearing { atoms: out, real }))
+        Ok(Some(Clearing {
+            radicals,
+            atoms: out,
+            real,
+        }))
     }
 
     /// The images of `es`, formed on the pool's threads; the first error in their order.
@@ -72,9 +94,10 @@ impl Clearing {
         images.into_iter().collect()
     }
 
-    /// The image of `e`: a polynomial with no atoms.
+    /// The image of `e`: a polynomial with no atoms, each radical to the power 0 or 1.
     pub(crate) fn apply(&self, e: &Expr) -> Result<Expr, EngineError> {
         let vars = e.vars();
+        let e = &e.reduce_radicals(&self.radicals)?;
         let powers: Vec<(Var, i64)> = self
             .atoms
             .iter()

@@ -373,10 +373,15 @@ pub fn closure_of(
         .collect();
     let all = g_sym.len();
     let atoms = system.space().denominator_atoms();
+    let radicals = system.space().radicals();
     // Whether `e` has the parameter `v`, in its terms or through an atom's polynomial
-    // (`1/(x − a)`).
+    // (`1/(x − a)`) or a radicand (`√(x² + a)`).
     let mentions = |e: &Expr, v: Var| {
-        e.contains(v) || atoms.iter().any(|(w, d)| d.contains(v) && e.contains(*w))
+        e.contains(v)
+            || atoms
+                .iter()
+                .chain(radicals)
+                .any(|(w, d)| d.contains(v) && e.contains(*w))
     };
     // Parameters: those that occur, each given or 1; the symbolic ones stay.
     let mut parameters: Vec<(Var, Rational)> = Vec::new();
@@ -465,6 +470,7 @@ pub fn closure_of(
     // With denominator atoms, every vector is cleared first (none without).
     let clearing = Clearing::new(
         atoms,
+        radicals,
         &parameters,
         values.values().chain(fixed_targets.iter().map(|t| &t.1)),
     )?;
@@ -1051,13 +1057,14 @@ impl LiftContext<'_> {
     }
 }
 
-/// Whether `a = b` as elements: equal normal forms, or with denominator atoms a difference that
-/// vanishes once cleared (`v · D` and `1` are one element).
+/// Whether `a = b` as elements: equal normal forms, or with denominator atoms or radicals a
+/// difference that vanishes once cleared (`v · D` and `1` are one element, and so are `r²` and
+/// `R`).
 fn equal(a: &Expr, b: &Expr) -> Result<bool, EngineError> {
     if a == b {
         return Ok(true);
     }
-    if !Expr::has_denominator_atoms(a.vars()) {
+    if !Expr::has_relations(a.vars()) {
         return Ok(false);
     }
     Ok(a.checked_sub(b)?.vanishes()?)

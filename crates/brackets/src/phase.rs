@@ -9,8 +9,15 @@
 //! `∂(v^{−k})/∂z = −k v^{−k−1} ∂D/∂z`. These brackets are a Poisson bracket on the ring with
 //! `v` free (`v − D` is a Casimir of it), and the map `v ↦ D` respects it, so no Jacobi check
 //! is needed for them; results are decided zero by `Poly::vanishes`.
+//!
+//! A radical `r` (a variable standing for `√R`) enters the same way with the derivative of the
+//! root: `{r, z} = {R, z}/(2r)`, `{r, w} = {R, E}/(2r)` for an atom `w = (E)` and
+//! `{r, s} = {R, S}/(4rs)` for two radicals, so that `∂(r^k)/∂z = (k/2) r^{k−2} ∂R/∂z`. With
+//! `r` free these brackets are Poisson too: `r² − R` is a Casimir, and in the variables `z`
+//! and `c = r² − R` the bracket is the given one with `c` a Casimir, which the change of
+//! variables `r = √(c + R)` carries over.
 
-use trigpoly::{Expr, Var, VarKind, Vars};
+use trigpoly::{Expr, GaussianRational, Rational, Var, VarKind, Vars};
 
 use crate::error::{EngineError, JacobiViolation};
 
@@ -110,6 +117,8 @@ pub struct PhaseSpace {
     involved: Vec<Var>,
     /// The denominator atoms and the polynomials they stand for.
     atoms: Vec<(Var, Expr)>,
+    /// The radicals and their radicands.
+    radicals: Vec<(Var, Expr)>,
     /// How many of `declared` (the first ones) were given; the rest are the atoms'.
     given: usize,
 }
@@ -157,27 +166,34 @@ impl PhaseSpace {
             declared: Vec::new(),
             involved: Vec::new(),
             atoms: Expr::denominator_atoms(vars)?,
+            radicals: {
+                Expr::check_radicals(vars)?;
+                Expr::radicals(vars)?
+            },
             given: 0,
         };
         space.declare_atoms()?;
         Ok(space)
     }
 
-    /// Adds the brackets of the denominator atoms to the declared ones: `{v, z} = {D, z}` for
-    /// each phase variable `z`, and `{v, w} = {D, E}` for two atoms, each formed with the
-    /// brackets declared before them (the atoms' polynomials have no atoms).
+    /// Adds the brackets of the denominator atoms and radicals to the declared ones:
+    /// `{v, z} = {D, z}` for each phase variable `z`, and `{v, w} = {D, E}` for two atoms, each
+    /// formed with the brackets declared before them (the atoms' polynomials have no atoms),
+    /// and for a radical the same times the derivative of the root, `1/(2r)`.
     fn declare_atoms(&mut self) -> Result<(), EngineError> {
-        if self.atoms.is_empty() {
+        let stand_ins = self.stand_ins();
+        if stand_ins.is_empty() {
             return Ok(());
         }
         let mut extra = Vec::new();
-        for (k, (v, d)) in self.atoms.iter().enumerate() {
+        for (k, (v, d, rate)) in stand_ins.iter().enumerate() {
             for z in self.coordinates() {
                 let value = self.bracket(d, &Expr::var(&self.vars, z))?;
-                extra.push((*v, z, value));
+                extra.push((*v, z, value.checked_mul(rate)?));
             }
-            for (w, e) in &self.atoms[k + 1..] {
-                extra.push((*v, *w, self.bracket(d, e)?));
+            for (w, e, other) in &stand_ins[k + 1..] {
+                let value = self.bracket(d, e)?.checked_mul(rate)?;
+                extra.push((*v, *w, value.checked_mul(other)?));
             }
         }
         for (a, b, value) in extra {
@@ -189,14 +205,33 @@ impl PhaseSpace {
         Ok(())
     }
 
+    /// The variables that stand for functions of the others, each with that function and the
+    /// derivative of the variable by it: the denominator atoms (`v = D`, rate 1), then the
+    /// radicals (`r = √R`, rate `1/(2r)`).
+    fn stand_ins(&self) -> Vec<(Var, Expr, Expr)> {
+        let one = Expr::one(&self.vars);
+        let atoms = self.atoms.iter().map(|(v, d)| (*v, d.clone(), one.clone()));
+        let radicals = self.radicals.iter().map(|(r, radicand)| {
+            let rate = Expr::monomial(
+                &self.vars,
+                GaussianRational::from(Rational::new(1, 2)),
+                &[(*r, -1)],
+            )
+            .expect("the power −1 is within every limit");
+            (*r, radicand.clone(), rate)
+        });
+        atoms.chain(radicals).collect()
+    }
+
     /// The variables the declared brackets involve: the phase variables in their order, then
-    /// the atoms.
+    /// the atoms and the radicals.
     fn update_involved(&mut self) {
         let declared = &self.declared;
         self.involved = self
             .coordinates()
             .into_iter()
             .chain(self.atoms.iter().map(|(v, _)| *v))
+            .chain(self.radicals.iter().map(|(v, _)| *v))
             .filter(|&v| declared.iter().any(|d| d.a == v || d.b == v))
             .collect();
     }
@@ -204,6 +239,11 @@ impl PhaseSpace {
     /// The denominator atoms and the polynomials they stand for, in declaration order.
     pub fn denominator_atoms(&self) -> &[(Var, Expr)] {
         &self.atoms
+    }
+
+    /// The radicals and their radicands, in declaration order.
+    pub fn radicals(&self) -> &[(Var, Expr)] {
+        &self.radicals
     }
 
     /// Refuses `what` (a command's work) on a space with denominator atoms: its linear algebra
@@ -227,6 +267,28 @@ impl PhaseSpace {
              takes monomials as independent, and with 1/D they are not; check, bracket, \
              expand, table, rank, closure, search and plot work there, deciding zero by \
              clearing denominators",
+            names.join(", ")
+        )))
+    }
+
+    /// Refuses `what` (a command's work) on a space with radicals: like
+    /// [`Self::refuse_denominators`], for work whose linear algebra or evaluation would take
+    /// `r²` and `R` for different functions. Its callers: the towers and `search`; check,
+    /// bracket, expand, table, rank, closure and plot know the radicals.
+    pub fn refuse_radicals(&self, what: &str) -> Result<(), EngineError> {
+        if self.radicals.is_empty() {
+            return Ok(());
+        }
+        let names: Vec<String> = self
+            .radicals
+            .iter()
+            .map(|(r, radicand)| format!("{} = √({radicand})", self.vars.variable(*r).unicode()))
+            .collect();
+        Err(EngineError::Invalid(format!(
+            "{what} is not supported on a system with radicals ({}) yet: its linear algebra \
+             takes monomials as independent, and with r² = R they are not; check, bracket, \
+             expand, table, rank, closure and plot work there, deciding zero by reducing by \
+             r² = R",
             names.join(", ")
         )))
     }
@@ -387,20 +449,21 @@ impl PhaseSpace {
             .collect()
     }
 
-    /// `∂f/∂z` for a phase variable `z`, through the denominator atoms by the chain rule:
-    /// `∂f/∂z + Σ_v ∂f/∂v · ∂D_v/∂z` over the atoms `v = (D_v)` (an atom stands for its
-    /// polynomial, so `f`'s dependence on `z` is also through them); the partial derivative
-    /// alone on a space without atoms.
+    /// `∂f/∂z` for a phase variable `z`, through the denominator atoms and radicals by the
+    /// chain rule: `∂f/∂z + Σ_v ∂f/∂v · ∂D_v/∂z` over the atoms `v = (D_v)` (an atom stands
+    /// for its polynomial, so `f`'s dependence on `z` is also through them), and
+    /// `Σ_r ∂f/∂r · ∂R/∂z / (2r)` over the radicals `r = √R`; the partial derivative alone on a
+    /// space without either.
     pub fn derivative(&self, f: &Expr, z: Var) -> Result<Expr, EngineError> {
         let partial = f.derivative(z)?;
-        if self.atoms.is_empty() {
+        if self.atoms.is_empty() && self.radicals.is_empty() {
             return Ok(partial);
         }
-        let mut through = Vec::with_capacity(self.atoms.len());
-        for (v, d) in &self.atoms {
-            let (df, dd) = (f.derivative(*v)?, d.derivative(z)?);
+        let mut through = Vec::new();
+        for (v, d, rate) in self.stand_ins() {
+            let (df, dd) = (f.derivative(v)?, d.derivative(z)?);
             if !df.is_zero() && !dd.is_zero() {
-                through.push((df, dd));
+                through.push((df, dd.checked_mul(&rate)?));
             }
         }
         let one = Expr::one(&self.vars);
@@ -614,5 +677,42 @@ mod tests {
         let jacobi = &(&b(&f, &b(&g, &h)) + &b(&g, &b(&h, &f))) + &b(&h, &b(&f, &g));
         assert!(jacobi.vanishes().unwrap());
         assert!(space.refuse_denominators("a test").is_err());
+    }
+
+    /// A space built in code with the radical `r = √(x² + y²)` beside the atom `1/(x − y)`:
+    /// the derivative of the root, brackets of the radical with the atom, the Jacobi identity
+    /// of brackets that involve both, and dependent radicals refused.
+    #[test]
+    fn a_radicals_brackets_are_the_chain_rule_and_poisson() {
+        let builder = VarSet::builder()
+            .coordinate("x")
+            .coordinate("y")
+            .momentum("p_x")
+            .momentum("p_y")
+            .denominator("x - y", "x − y", "x - y");
+        let vars = builder.clone().radical("r", "x^2 + y^2").build().unwrap();
+        let space = PhaseSpace::new(&vars, &[("x", "p_x"), ("y", "p_y")]).unwrap();
+        assert_eq!(space.radicals().len(), 1);
+        let e = |s: &str| Expr::parse(&vars, s).unwrap();
+        let b = |f: &Expr, g: &Expr| space.bracket(f, g).unwrap();
+        assert_eq!(b(&e("r"), &e("p_x")), e("x/r"));
+        assert_eq!(b(&e("1/r"), &e("p_y")), e("-y/r^3"));
+        assert!((&b(&e("r^2"), &e("p_x")) - &e("2x")).vanishes().unwrap());
+        let x = vars.lookup("x").unwrap();
+        assert_eq!(space.derivative(&e("r"), x).unwrap(), e("x/r"));
+        let (f, g, h) = (
+            e("p_x^2/r + 1/(x - y)"),
+            e("x p_y r + y/(x - y)^2"),
+            e("p_x p_y/r/(x - y)"),
+        );
+        let jacobi = &(&b(&f, &b(&g, &h)) + &b(&g, &b(&h, &f))) + &b(&h, &b(&f, &g));
+        assert!(jacobi.vanishes().unwrap());
+        assert!(space.refuse_radicals("a test").is_err());
+        let twice = builder
+            .radical("r", "x^2 + y^2")
+            .radical("s", "9x^2 + 9y^2")
+            .build()
+            .unwrap();
+        assert!(PhaseSpace::new(&twice, &[("x", "p_x"), ("y", "p_y")]).is_err());
     }
 }

@@ -51,6 +51,9 @@ const FIRST_POINTS: usize = 4;
 const EARLY_POINTS: usize = 4;
 /// How many more it may try when a larger minor does not vanish identically.
 const FURTHER_POINTS: usize = 64;
+/// How many tuples of small integers a sample point of a space with radicals tries for the
+/// radicands' variables, to find one where every radicand is a rational square.
+const RADICAL_CANDIDATES: u64 = 20_000;
 /// Rational points of the unit circle used for angles.
 const CIRCLE: [(i64, i64, i64); 4] = [(3, 4, 5), (5, 12, 13), (8, 15, 17), (7, 24, 25)];
 /// Distinct primes: the `k`-th variable at the `s`-th of the first points is
@@ -164,7 +167,7 @@ fn sample_point(space: &PhaseSpace, index: usize) -> Result<Option<SamplePoint>,
     let mut values = Vec::new();
     for (k, v) in vars.vars().enumerate() {
         let kind = vars.variable(v).kind();
-        if kind == VarKind::Denominator {
+        if matches!(kind, VarKind::Denominator | VarKind::Radical) {
             continue;
         }
         if kind == VarKind::Angle {
@@ -191,9 +194,63 @@ fn sample_point(space: &PhaseSpace, index: usize) -> Result<Option<SamplePoint>,
         }
         values.push((v, point.value(v).expect("just set").clone()));
     }
+    let point = match space.radicals().is_empty() {
+        true => point,
+        false => match on_radicals(space, index, point, &mut values)? {
+            Some(point) => point,
+            None => return Ok(None),
+        },
+    };
     Ok(point
         .with_atoms(space.denominator_atoms())?
         .map(|point| (point, values)))
+}
+
+/// The sample point with the variables of the radicands moved to small nonzero integers where
+/// every radicand is the square of a rational, so that each radical has an exact value (the
+/// `index`-th such tuple of a fixed pseudo-random sequence, so that each sample point is
+/// another), and the radicals set; `values` follows. `None` when the sequence has no such
+/// tuple in its first [`RADICAL_CANDIDATES`].
+fn on_radicals(
+    space: &PhaseSpace,
+    index: usize,
+    point: Point,
+    values: &mut Vec<(Var, GaussianRational)>,
+) -> Result<Option<Point>, EngineError> {
+    let radicals = space.radicals();
+    let used: Vec<Var> = space
+        .vars()
+        .vars()
+        .filter(|&v| radicals.iter().any(|(_, r)| r.contains(v)))
+        .collect();
+    let mut found = 0;
+    for c in 0..RADICAL_CANDIDATES {
+        let mut candidate = point.clone();
+        for (k, &v) in used.iter().enumerate() {
+            let step = PRIMES[k % PRIMES.len()] as u64;
+            let t = ((c * step + 7 * k as u64 + c * c / 3) % 24) as i64 - 12;
+            candidate = candidate.with(v, Rational::from(if t >= 0 { t + 1 } else { t }));
+        }
+        let Some(candidate) = candidate.with_radicals(radicals)? else {
+            continue;
+        };
+        if found < index {
+            found += 1;
+            continue;
+        }
+        for (v, value) in values.iter_mut() {
+            if used.contains(v) {
+                *value = candidate.value(*v).expect("just set").clone();
+            }
+        }
+        values.extend(
+            radicals
+                .iter()
+                .map(|(r, _)| (*r, candidate.value(*r).expect("just set").clone())),
+        );
+        return Ok(Some(candidate));
+    }
+    Ok(None)
 }
 
 /// The rank of the Jacobian at a point, with a nonzero minor of that size there.

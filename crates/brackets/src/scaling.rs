@@ -81,13 +81,16 @@ impl Constraints {
     }
 }
 
-/// An atom weighs what every term of its polynomial does, so that `v ↦ D` keeps weights and
-/// a lift is homogeneous as an element, not only as written.
+/// An atom weighs what every term of its polynomial does, and a radical half of it, so that
+/// `v ↦ D` and `r² ↦ R` keep weights and a lift is homogeneous as an element, not only as
+/// written.
 fn atoms_weigh_their_polynomials(c: &mut Constraints, space: &PhaseSpace) {
     let n = space.vars().len();
-    for (v, d) in space.denominator_atoms() {
+    let atoms = space.denominator_atoms().iter().map(|a| (a, 1));
+    let radicals = space.radicals().iter().map(|r| (r, 2));
+    for ((v, d), times) in atoms.chain(radicals) {
         for t in d.terms() {
-            c.push(&minus(&t.exponents(), &unit(n, v.index(), 1)), 0);
+            c.push(&minus(&t.exponents(), &unit(n, v.index(), times)), 0);
         }
     }
 }
@@ -139,7 +142,10 @@ impl Scaling {
             }
         }
         // The declared brackets' part of the flow, the atoms' chain rule included.
-        if !space.declared_brackets().is_empty() || !space.denominator_atoms().is_empty() {
+        if !space.declared_brackets().is_empty()
+            || !space.denominator_atoms().is_empty()
+            || !space.radicals().is_empty()
+        {
             for (v, part) in space.gradient(h)?.declared() {
                 for t in cond(part.clone())?.terms() {
                     c.push(&minus(&t.exponents(), &unit(n, v.index(), 1)), -1);

@@ -240,19 +240,20 @@ pub fn express(
     let vars = target.vars().clone();
     let atoms = Expr::denominator_atoms(&vars)?;
     let vectors = std::iter::once(target).chain(basis.iter().map(|(_, f)| f));
-    let (cleared_target, cleared_basis) = match Clearing::new(&atoms, &[], vectors)? {
-        None => (
-            target.clone(),
-            basis.iter().map(|(_, f)| f.clone()).collect(),
-        ),
-        Some(clearing) => (
-            clearing.apply(target)?,
-            basis
-                .iter()
-                .map(|(_, f)| clearing.apply(f))
-                .collect::<Result<Vec<_>, _>>()?,
-        ),
-    };
+    let (cleared_target, cleared_basis) =
+        match Clearing::new(&atoms, &Expr::radicals(&vars)?, &[], vectors)? {
+            None => (
+                target.clone(),
+                basis.iter().map(|(_, f)| f.clone()).collect(),
+            ),
+            Some(clearing) => (
+                clearing.apply(target)?,
+                basis
+                    .iter()
+                    .map(|(_, f)| clearing.apply(f))
+                    .collect::<Result<Vec<_>, _>>()?,
+            ),
+        };
     let Some(coeffs) = solve_combination(&cleared_target, &cleared_basis)? else {
         return Ok(None);
     };

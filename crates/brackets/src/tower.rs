@@ -44,6 +44,7 @@ pub fn check_tower(
     progress: &mut dyn FnMut(usize, usize),
 ) -> Result<TowerReport, EngineError> {
     system.space().refuse_denominators("a tower")?;
+    system.space().refuse_radicals("a tower")?;
     let start = Instant::now();
     system.require_rotor("the tower {K_{m,n}, H} = i(mω − nΩ) K_{m,n}")?;
     let omega = system.parse("omega")?;
@@ -122,6 +123,7 @@ pub fn eigen_proof(system: &System, ladder: &str) -> Result<EigenProof, EngineEr
     system
         .space()
         .refuse_denominators("the all-m, n tower proof")?;
+    system.space().refuse_radicals("the all-m, n tower proof")?;
     system.require_rotor("the eigenfunction proof of the tower")?;
     let vars = system.vars();
     let theta = vars

@@ -57,7 +57,7 @@ pub use number::{
     Coefficient, ExactDivisor, GaussianAcc, GaussianInteger, GaussianRational, Integer, IntegerAcc,
     IntegerRing, IntegerView, ParseGaussianError, ParseRationalError, Rational,
 };
-pub use poly::{CosSinTerm, MonomialIndex, Point, Poly, Term, TrigMonomial};
+pub use poly::{CosSinTerm, MonomialIndex, Point, Poly, ReducedRadical, Term, TrigMonomial};
 pub use print::{render_number, superscript, Style};
 pub use syntax::{Excerpt, ParseError, Span};
 pub use varset::{

@@ -301,7 +301,7 @@ impl Names {
             .collect();
         let rank = |v: &crate::varset::Var| match vars.variable(*v).kind() {
             VarKind::Parameter => 0,
-            VarKind::Coordinate | VarKind::Poisson => 1,
+            VarKind::Coordinate | VarKind::Poisson | VarKind::Radical => 1,
             VarKind::Momentum => 2,
             VarKind::Angle => 3,
             VarKind::Denominator => 4,

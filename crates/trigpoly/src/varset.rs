@@ -27,11 +27,18 @@ pub enum VarKind {
     /// printer writes `g/(x − y)²`. Its brackets follow from `D`'s, and an element is zero
     /// exactly when clearing it of its denominators leaves zero (`Poly::vanishes`).
     Denominator,
+    /// A radical: a variable `r` standing for `√R`, the positive square root of a polynomial
+    /// `R` of the other variables (its radicand, `x² + y² + z²` for the distance to the
+    /// origin), so that `r² = R`. Its powers of any sign are terms (`k/r`, `x/r³`); its
+    /// brackets follow from `R`'s, `{r, z} = {R, z}/(2r)`, and an element is zero exactly when
+    /// reducing it by `r² = R` leaves zero (`Poly::vanishes`).
+    Radical,
 }
 
 impl VarKind {
     /// The kind in words, with its article, as messages name it: `a coordinate`, `a
-    /// momentum`, `a parameter`, `an angle`, `a Poisson variable`, `a denominator`.
+    /// momentum`, `a parameter`, `an angle`, `a Poisson variable`, `a denominator`, `a
+    /// radical`.
     pub fn described(self) -> &'static str {
         match self {
             VarKind::Coordinate => "a coordinate",
@@ -40,6 +47,7 @@ impl VarKind {
             VarKind::Angle => "an angle",
             VarKind::Poisson => "a Poisson variable",
             VarKind::Denominator => "a denominator",
+            VarKind::Radical => "a radical",
         }
     }
 }
@@ -82,6 +90,8 @@ pub struct Variable {
     /// Whether text sets the variable apart from its neighbours in a product, as a word, even
     /// when its name is one letter: the generators of an algebra (`−ω² L`, `4 G1`).
     word: bool,
+    /// For a radical, its radicand `R` in ASCII, as it parses back.
+    radicand: Option<String>,
 }
 
 impl Variable {
@@ -114,6 +124,10 @@ impl Variable {
     /// Whether text sets the variable apart in a product as a word ([`VarSetBuilder::word`]).
     pub fn is_word(&self) -> bool {
         self.word
+    }
+    /// For a radical ([`VarKind::Radical`]), its radicand in ASCII (`x^2 + y^2`).
+    pub fn radicand(&self) -> Option<&str> {
+        self.radicand.as_deref()
     }
     /// Whether [`VarSet::lookup`] finds the variable by `spelling`: its name, its unicode
     /// form, or that form with its Greek letters spelled out.
@@ -520,6 +534,12 @@ impl VarSet {
             .filter(|&v| self.variable(v).kind == VarKind::Denominator)
     }
 
+    /// The radicals ([`VarKind::Radical`]), in declaration order.
+    pub fn radicals(&self) -> impl Iterator<Item = Var> + '_ {
+        self.vars()
+            .filter(|&v| self.variable(v).kind == VarKind::Radical)
+    }
+
     pub(crate) fn layout(&self) -> &Layout {
         &self.layout
     }
@@ -628,6 +648,7 @@ impl VarSetBuilder {
             latex,
             kind,
             word: false,
+            radicand: None,
         });
         self
     }
@@ -663,7 +684,19 @@ impl VarSetBuilder {
             latex: format!("({latex})"),
             kind: VarKind::Denominator,
             word: false,
+            radicand: None,
         });
+        self
+    }
+    /// Declares a radical ([`VarKind::Radical`]) named `name`, standing for the positive square
+    /// root of the polynomial whose parseable ASCII form is `radicand` (`x^2 + y^2`), read in
+    /// the set's other variables ([`Poly::radicals`](crate::Poly::radicals) reads and checks
+    /// it).
+    pub fn radical(mut self, name: &str, radicand: &str) -> Self {
+        self = self.variable(name, VarKind::Radical);
+        if let Some(v) = self.vars.last_mut() {
+            v.radicand = Some(radicand.to_string());
+        }
         self
     }
     /// Shows the variable declared last as the name `display` would be shown (`A_x`, `A_{x}`

@@ -80,7 +80,7 @@ pub(super) fn independent_as_functions(
         .iter()
         .map(|u| Expr::from_terms(vars, vec![(GaussianRational::from(1), u.phase.clone())]))
         .collect::<Result<Vec<Expr>, _>>()?;
-    let clearing = Clearing::new(atoms, parameters, monomials.iter())?
+    let clearing = Clearing::new(atoms, &[], parameters, monomials.iter())?
         .expect("the space has denominator atoms");
     let mut rows = MonomialIndex::new(vars);
     let mut nrows = 0;

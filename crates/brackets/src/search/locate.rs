@@ -139,6 +139,7 @@ impl ClearedBasis {
         }
         let clearing = Clearing::new(
             &self.atoms,
+            &[],
             &self.parameters,
             self.integrals.iter().chain([f]),
         )?

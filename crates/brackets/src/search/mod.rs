@@ -159,6 +159,7 @@ pub fn search(system: &System, options: &SearchOptions) -> Result<SearchResult, 
     }
     let vars = system.vars();
     check_parameters(vars, &options.symbolic, &options.fixed)?;
+    system.space().refuse_radicals("a search")?;
     let atoms = system.space().denominator_atoms();
     // A denominator free of the parameters kept symbolic makes the choice of independent
     // monomials the same for each multiple by a parameter monomial, which the parameter
@@ -231,7 +232,7 @@ pub fn search(system: &System, options: &SearchOptions) -> Result<SearchResult, 
             .map(|j| problem.image(&problem.expr(j, &Rational::one())?))
             .collect();
         let mut images = images.into_iter().collect::<Result<Vec<Expr>, _>>()?;
-        if let Some(clearing) = Clearing::new(atoms, &parameters, images.iter())? {
+        if let Some(clearing) = Clearing::new(atoms, &[], &parameters, images.iter())? {
             images = clearing.apply_all(&images)?;
         }
         for image in &images {

@@ -278,6 +278,27 @@ impl Rational {
         })
     }
 
+    /// The rational square root, when `self` is the square of a rational (`9/4` → `3/2`, the
+    /// nonnegative one); `None` otherwise (`2`, `−1`).
+    ///
+    /// ```
+    /// use trigpoly::Rational;
+    /// assert_eq!(Rational::new(9, 4).sqrt(), Some(Rational::new(3, 2)));
+    /// assert_eq!(Rational::new(2, 1).sqrt(), None);
+    /// assert_eq!(Rational::new(-1, 1).sqrt(), None);
+    /// ```
+    pub fn sqrt(&self) -> Option<Rational> {
+        if self.is_negative() {
+            return None;
+        }
+        let root = |n: Integer| {
+            let n = n.to_bigint();
+            let r = n.sqrt();
+            (&r * &r == n).then(|| Integer::from_bigint(r))
+        };
+        Rational::from_fraction(&root(self.numer())?, &root(self.denom())?)
+    }
+
     /// Absolute value.
     pub fn abs(&self) -> Rational {
         if self.is_negative() {

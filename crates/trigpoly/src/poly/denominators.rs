@@ -7,6 +7,7 @@
 //! is the zero polynomial, atom after atom. Equal elements may have different terms (`v · D`
 //! and `1`), so every decision of zero on a set with atoms goes through [`Poly::vanishes`].
 
+use super::radicals::ReducedRadical;
 use super::Poly;
 use crate::error::AlgebraError;
 use crate::number::Coefficient;
@@ -42,6 +43,9 @@ impl<C: Coefficient> Poly<C> {
                 if atoms.iter().any(|&w| d.contains(w)) {
                     return Err(invalid("has a denominator of several terms".into()));
                 }
+                if vars.radicals().any(|w| d.contains(w)) {
+                    return Err(invalid("has a radical in it".into()));
+                }
                 Ok((v, d))
             })
             .collect()
@@ -69,14 +73,21 @@ impl<C: Coefficient> Poly<C> {
     }
 
     /// `1/d` when `d` is a nonzero constant times a monomial times a product of powers of the
-    /// atoms' polynomials (`(y − x)²` when `x − y` is an atom), written with the atoms; `None`
+    /// atoms' polynomials (`(y − x)²` when `x − y` is an atom) and of radicands, written with
+    /// the atoms and the radicals (`1/(x² + y²)` is `r^{−2}` when `r = √(x² + y²)`); `None`
     /// when it is not. The exponents are found from the spans `max − min` of each variable's
     /// exponent, which add in a product (Newton polytopes add); each candidate is checked by
     /// an exact product.
     pub(crate) fn inverse_by_atoms(d: &Self) -> Result<Option<Self>, AlgebraError> {
         let vars = d.vars.clone();
-        let atoms = Self::denominator_atoms(&vars)?;
-        if atoms.is_empty() || d.is_zero() || atoms.iter().any(|&(v, _)| d.contains(v)) {
+        // Each atom with the power of its variable that divides by its polynomial once: 1 for
+        // a denominator, 2 for a radical.
+        let atoms: Vec<(Var, Self, i64)> = Self::denominator_atoms(&vars)?
+            .into_iter()
+            .map(|(v, p)| (v, p, 1))
+            .chain(Self::radicals(&vars)?.into_iter().map(|(v, p)| (v, p, 2)))
+            .collect();
+        if atoms.is_empty() || d.is_zero() || atoms.iter().any(|(v, _, _)| d.contains(*v)) {
             return Ok(None);
         }
         let spans = |p: &Self| -> Vec<i64> {
@@ -85,13 +96,13 @@ impl<C: Coefficient> Poly<C> {
                 .collect()
         };
         let target = spans(d);
-        let atom_spans: Vec<Vec<i64>> = atoms.iter().map(|(_, a)| spans(a)).collect();
+        let atom_spans: Vec<Vec<i64>> = atoms.iter().map(|(_, a, _)| spans(a)).collect();
         let mut candidates = Vec::new();
         let mut ks = vec![0i64; atoms.len()];
         exponents(&atom_spans, 0, target, &mut ks, &mut candidates);
         for ks in candidates {
             let mut product = Self::one(&vars);
-            for ((_, a), &k) in atoms.iter().zip(&ks) {
+            for ((_, a, _), &k) in atoms.iter().zip(&ks) {
                 if k > 0 {
                     product = product.checked_mul(&a.checked_pow(k)?)?;
                 }
@@ -104,9 +115,10 @@ impl<C: Coefficient> Poly<C> {
                 continue;
             }
             let mut inverse = ratio.checked_pow(-1)?;
-            for ((v, _), &k) in atoms.iter().zip(&ks) {
+            for ((v, _, step), &k) in atoms.iter().zip(&ks) {
                 if k > 0 {
-                    inverse = inverse.checked_mul(&Self::var(&vars, *v).checked_pow(-k)?)?;
+                    let power = Self::var(&vars, *v).checked_pow(-k * step)?;
+                    inverse = inverse.checked_mul(&power)?;
                 }
             }
             return Ok(Some(inverse));
@@ -117,15 +129,21 @@ impl<C: Coefficient> Poly<C> {
     /// The element cleared of its denominators: `Π D^N · self` with every atom replaced by its
     /// polynomial, `N` the largest power of `1/D` in `self` (a polynomial free of atoms; zero
     /// exactly when `self` is zero, since `Q[vars][1/D]` embeds in the rational functions and
-    /// multiplying by `D^N ≠ 0` there is injective). Without atoms, `self`.
+    /// multiplying by `D^N ≠ 0` there is injective). With radicals, `self` is first reduced by
+    /// `r² = R` ([`Poly::reduce_radicals`]), which leaves each radical to the power 0 or 1.
+    /// Without atoms or radicals, `self`.
     pub fn cleared(&self) -> Result<Self, AlgebraError> {
         Ok(self.cleared_with_powers()?.0)
     }
 
     /// [`Poly::cleared`] and, for each atom with its polynomial `D`, the power `N` of `D` it
-    /// multiplied by.
-    fn cleared_with_powers(&self) -> Result<(Self, Vec<ClearedAtom<C>>), AlgebraError> {
-        let mut p = self.clone();
+    /// multiplied by, and for each radical with its radicand, the power of it.
+    #[allow(clippy::type_complexity)]
+    fn cleared_with_powers(
+        &self,
+    ) -> Result<(Self, Vec<ClearedAtom<C>>, Vec<ReducedRadical<C>>), AlgebraError> {
+        let radicals = self.radical_powers()?;
+        let mut p = self.reduce_radicals(&radicals)?;
         let mut powers = Vec::new();
         for (v, d) in Self::denominator_atoms(&self.vars)? {
             let n = -p.low_degree(v).unwrap_or(0).min(0);
@@ -135,17 +153,19 @@ impl<C: Coefficient> Poly<C> {
             p = p.subst(v, &d)?;
             powers.push((v, d, n));
         }
-        Ok((p, powers))
+        Ok((p, powers, radicals))
     }
 
     /// The element over a common denominator: its cleared numerator ([`Poly::cleared`]) times
     /// `Π v^{−N}`, `N` the power of each atom cleared, so that whether it is zero shows (the
-    /// numerator is a polynomial in normal form). The same element; without atoms, `self`.
+    /// numerator is a polynomial in normal form); with radicals, each to the power 0 or 1 in
+    /// the numerator, over the least power of it. The same element; without atoms or radicals,
+    /// `self`.
     pub fn over_common_denominator(&self) -> Result<Self, AlgebraError> {
-        if !Self::has_denominator_atoms(&self.vars) {
+        if !Self::has_relations(&self.vars) {
             return Ok(self.clone());
         }
-        let (mut out, mut powers) = self.cleared_with_powers()?;
+        let (mut out, mut powers, radicals) = self.cleared_with_powers()?;
         // The numerator loses each factor `D` it has (`(x² + y²)/(x² + y²)` is 1), as far as
         // exact division finds them.
         for (_, d, n) in &mut powers {
@@ -159,6 +179,7 @@ impl<C: Coefficient> Poly<C> {
                 }
             }
         }
+        out = Self::lowest_radical_powers(out, radicals)?;
         for (v, _, n) in powers {
             if n > 0 && !out.is_zero() {
                 out = out.checked_mul(&Self::var(&self.vars, v).checked_pow(-n)?)?;
@@ -177,7 +198,7 @@ impl<C: Coefficient> Poly<C> {
     /// lexicographic order of the exponents) and checked by multiplying back; `None` when it
     /// does not divide, or when the division runs past a bound of steps (a Laurent ring need
     /// not end it), which only leaves a fraction unreduced.
-    fn quotient_by(&self, d: &Self) -> Result<Option<Self>, AlgebraError> {
+    pub(super) fn quotient_by(&self, d: &Self) -> Result<Option<Self>, AlgebraError> {
         if self.root_rules_out(d)? {
             return Ok(None);
         }
@@ -238,8 +259,9 @@ impl<C: Coefficient> Poly<C> {
         Ok(!self.subst(v, &root)?.is_zero())
     }
 
-    /// The exact zero test of the ring with denominator atoms: whether the element cleared of
-    /// its denominators ([`Poly::cleared`]) is zero; [`Poly::is_zero`] on a set without atoms.
+    /// The exact zero test of the ring with denominator atoms and radicals: whether the element
+    /// cleared of its denominators and reduced by its radicals ([`Poly::cleared`]) is zero;
+    /// [`Poly::is_zero`] on a set without either.
     ///
     /// ```
     /// use trigpoly::{Expr, VarSet};
@@ -258,7 +280,7 @@ impl<C: Coefficient> Poly<C> {
         if self.is_zero() {
             return Ok(true);
         }
-        if !Self::has_denominator_atoms(&self.vars) {
+        if !Self::has_relations(&self.vars) {
             return Ok(false);
         }
         Ok(self.cleared()?.is_zero())

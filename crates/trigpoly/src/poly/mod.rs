@@ -18,6 +18,7 @@ mod kronecker;
 mod mul;
 mod pages;
 mod pow;
+mod radicals;
 mod subst;
 mod sum;
 mod sum_at;
@@ -32,6 +33,7 @@ use crate::number::{Coefficient, ExactDivisor, GaussianRational, Integer, Intege
 use crate::varset::{Layout, Var, VarKind, VarSet, Vars};
 
 pub use index::MonomialIndex;
+pub use radicals::ReducedRadical;
 pub use subst::Point;
 pub use trig::{CosSinTerm, TrigMonomial};
 

@@ -456,6 +456,47 @@ impl Point {
         Ok(Some(self))
     }
 
+    /// Sets each radical `r = √R` to the positive rational root of `R` at the point (its other
+    /// variables given); `None` when some `R` is not the square of a nonzero rational there,
+    /// where the radical has no exact rational value (the point `x = 3, y = 4` gives
+    /// `√(x² + y²)` the value 5, `x = y = 1` none). `radicals` are the set's radicals with their
+    /// radicands, as [`Poly::radicals`] gives them.
+    ///
+    /// ```
+    /// use trigpoly::{Expr, Point, Rational, VarSet};
+    /// let vars = VarSet::builder()
+    ///     .coordinate("x")
+    ///     .coordinate("y")
+    ///     .radical("r", "x^2 + y^2")
+    ///     .build()
+    ///     .unwrap();
+    /// let radicals = Expr::radicals(&vars).unwrap();
+    /// let (x, y) = (vars.lookup("x").unwrap(), vars.lookup("y").unwrap());
+    /// let at = |a: i64, b: i64| Point::new(&vars).with(x, a.into()).with(y, b.into());
+    /// let point = at(3, 4).with_radicals(&radicals).unwrap().unwrap();
+    /// let f = Expr::parse(&vars, "x/r^3").unwrap();
+    /// assert_eq!(f.eval(&point).unwrap(), Rational::new(3, 125).into());
+    /// assert!(at(1, 1).with_radicals(&radicals).unwrap().is_none());
+    /// ```
+    pub fn with_radicals<C: Coefficient>(
+        mut self,
+        radicals: &[(Var, Poly<C>)],
+    ) -> Result<Option<Point>, AlgebraError> {
+        for (r, radicand) in radicals {
+            let value = radicand.eval(&self)?;
+            let root = match value.is_real() && !value.is_zero() {
+                true => value.re.sqrt(),
+                false => None,
+            };
+            let Some(root) = root else {
+                return Ok(None);
+            };
+            let j = self.vars.checked_index(*r)?;
+            self.values[j] = Some(GaussianRational::from(root));
+        }
+        Ok(Some(self))
+    }
+
     /// The value given to `v` (for an angle, `e^{iθ} = cos θ + i sin θ`).
     ///
     /// # Panics

@@ -1,0 +1,364 @@
+//! Radicals ([`VarKind::Radical`]): a variable `r` declared with a radicand `R`, a polynomial
+//! in the other variables, stands for `√R`, so that the ring is `Q[vars][r, 1/r]` with
+//! `r² = R`. Here: the radicals' radicands ([`Poly::radicals`]), the check that they are
+//! independent ([`Poly::check_radicals`]: no product of radicands is a square, so that the
+//! products of distinct radicals are independent over the rational functions), and the
+//! reduction by `r² = R` that the exact zero test and the clearing of denominators begin with
+//! ([`Poly::reduce_radicals`]): `r^M · P` with `M` at least the highest power of `1/r` in `P`
+//! has no negative power of `r`, and `r^k ↦ R^{⌊k/2⌋} r^{k mod 2}` leaves each radical to the
+//! power 0 or 1. Multiplying by `r^M ≠ 0` is injective, and an element `Σ_s P_s Π r_i^{s_i}`
+//! with the `P_s` free of radicals is zero exactly when every `P_s` is, so the reduced element
+//! is the zero polynomial exactly when `P` is zero.
+
+use std::collections::BTreeMap;
+
+use super::Poly;
+use crate::error::AlgebraError;
+use crate::number::{Coefficient, Rational};
+use crate::varset::{Var, VarKind, Vars};
+use crate::Point;
+
+thread_local! {
+    /// Whether this thread is reading a radicand.
+    static READING: std::cell::Cell<bool> = const { std::cell::Cell::new(false) };
+}
+
+/// A radical, its radicand, and the power of the radical an element was multiplied by.
+pub type ReducedRadical<C> = (Var, Poly<C>, i64);
+
+/// The most radicals a set may declare: their independence is checked on every product of
+/// them, `2^n − 1` products.
+const MAX_RADICALS: usize = 8;
+/// How many points the independence check tries for each product of radicands before it
+/// takes the product for a square.
+const SQUARE_POINTS: i64 = 48;
+
+impl<C: Coefficient> Poly<C> {
+    /// The radicals of `vars` with their radicands, in declaration order (none for a set
+    /// without them). Refused: a radicand that does not read, is a constant, is not real, or
+    /// has a radical, a denominator atom or an angle in it (a radicand is a polynomial, or a
+    /// Laurent polynomial, in the coordinates, momenta and parameters).
+    pub fn radicals(vars: &Vars) -> Result<Vec<(Var, Self)>, AlgebraError> {
+        vars.radicals()
+            .map(|v| {
+                let variable = vars.variable(v);
+                let text = variable.radicand().unwrap_or_default();
+                let invalid = |why: &str| {
+                    AlgebraError::Invalid(format!(
+                        "the radicand {text} of {} {why}",
+                        variable.unicode()
+                    ))
+                };
+                // A radicand that divides by a polynomial would be read again by the division
+                // (`Poly::inverse_by_atoms` takes radicands): refused at the second reading.
+                if READING.with(|r| r.replace(true)) {
+                    return Err(invalid("divides by a polynomial"));
+                }
+                let r = Self::parse(vars, text);
+                READING.with(|r| r.set(false));
+                let r = r.map_err(|e| invalid(&format!("does not read: {e}")))?;
+                if r.is_constant() {
+                    return Err(invalid(
+                        "is a constant: a radical stands for the root of a function of the \
+                         variables",
+                    ));
+                }
+                let kind = |w: Var| vars.variable(w).kind();
+                if vars.vars().any(|w| {
+                    r.contains(w)
+                        && matches!(
+                            kind(w),
+                            VarKind::Radical | VarKind::Denominator | VarKind::Angle
+                        )
+                }) {
+                    return Err(invalid(
+                        "has a radical, a denominator or an angle in it: a radicand is a \
+                         polynomial in the coordinates, momenta and parameters",
+                    ));
+                }
+                if r.conj() != r {
+                    return Err(invalid("is not real"));
+                }
+                Ok((v, r))
+            })
+            .collect()
+    }
+
+    /// Whether the set declares radicals.
+    pub fn has_radicals(vars: &Vars) -> bool {
+        vars.radicals().next().is_some()
+    }
+
+    /// Whether the set declares denominator atoms or radicals: variables that stand for
+    /// functions of the others, so that equal elements may have different terms (`v · D` and
+    /// `1`, `r²` and `R`) and zero is decided by [`Poly::vanishes`], not by the terms.
+    pub fn has_relations(vars: &Vars) -> bool {
+        Self::has_denominator_atoms(vars) || Self::has_radicals(vars)
+    }
+
+    /// Checks that the radicals of `vars` are independent: that no product of their radicands
+    /// (one radicand alone included) is the square of a rational function, where the radicals'
+    /// products would satisfy relations that [`Poly::vanishes`] does not know (`√(x²)` is
+    /// `±x`). A product is shown not to be a square by a point of small integers where its
+    /// value is a nonzero rational that is not a rational square; one that is a square at
+    /// every point tried is refused as one.
+    ///
+    /// ```
+    /// use trigpoly::{Expr, VarSet};
+    /// let builder = VarSet::builder().coordinate("x").coordinate("y");
+    /// let vars = builder.clone().radical("r", "x^2 + y^2").build().unwrap();
+    /// assert!(Expr::check_radicals(&vars).is_ok());
+    /// let square = builder.radical("r", "x^2 + 2*x*y + y^2").build().unwrap();
+    /// assert!(Expr::check_radicals(&square).is_err());
+    /// ```
+    pub fn check_radicals(vars: &Vars) -> Result<(), AlgebraError> {
+        let radicals = Self::radicals(vars)?;
+        if radicals.len() > MAX_RADICALS {
+            return Err(AlgebraError::Invalid(format!(
+                "{} radicals are declared; at most {MAX_RADICALS} are supported",
+                radicals.len()
+            )));
+        }
+        let used: Vec<Var> = vars
+            .vars()
+            .filter(|&w| radicals.iter().any(|(_, r)| r.contains(w)))
+            .collect();
+        let points: Vec<Vec<Rational>> = (0..SQUARE_POINTS)
+            .filter_map(|s| {
+                let mut point = Point::new(vars);
+                for (k, &w) in used.iter().enumerate() {
+                    point = point.with(w, small_value(k as i64, s));
+                }
+                // A point where every radicand has a real, nonzero value.
+                radicals
+                    .iter()
+                    .map(|(_, r)| match r.eval(&point) {
+                        Ok(value) if value.is_real() && !value.re.is_zero() => Some(value.re),
+                        _ => None,
+                    })
+                    .collect()
+            })
+            .collect();
+        for subset in 1u32..1 << radicals.len() {
+            let chosen = |i: usize| subset & (1 << i) != 0;
+            let not_square = points.iter().any(|values| {
+                let product = values
+                    .iter()
+                    .enumerate()
+                    .filter(|&(i, _)| chosen(i))
+                    .fold(Rational::one(), |acc, (_, v)| &acc * v);
+                product.sqrt().is_none()
+            });
+            if !not_square {
+                let names: Vec<String> = radicals
+                    .iter()
+                    .enumerate()
+                    .filter(|&(i, _)| chosen(i))
+                    .map(|(_, (v, r))| format!("{} = √({r})", vars.variable(*v).unicode()))
+                    .collect();
+                let (what, so) = match names.len() {
+                    1 => (
+                        format!("the radicand of {} is a square", names[0]),
+                        "the radical is a rational function of the variables: write it as one",
+                    ),
+                    _ => (
+                        format!(
+                            "the product of the radicands of {} is a square",
+                            names.join(", ")
+                        ),
+                        "one radical is a rational function times the others: declare only \
+                         the others",
+                    ),
+                };
+                return Err(AlgebraError::Invalid(format!(
+                    "{what} (it is one at every point tried), so {so}"
+                )));
+            }
+        }
+        Ok(())
+    }
+
+    /// For each radical of the set, the power of it that clears `self` of its negative
+    /// powers (`max(0, −lowest exponent)`), with its radicand: what
+    /// [`Poly::reduce_radicals`] takes to reduce `self`.
+    pub fn radical_powers(&self) -> Result<Vec<ReducedRadical<C>>, AlgebraError> {
+        Ok(Self::radicals(&self.vars)?
+            .into_iter()
+            .map(|(v, r)| {
+                let m = -self.low_degree(v).unwrap_or(0).min(0);
+                (v, r, m)
+            })
+            .collect())
+    }
+
+    /// `Π r^M · self` reduced by `r² = R`, for each radical `(r, R, M)` in turn: every power
+    /// `r^k` (`k ≥ 0` once multiplied) becomes `R^{⌊k/2⌋} r^{k mod 2}`. Each `M` must be at
+    /// least the highest power of `1/r` in `self` ([`Poly::radical_powers`] gives the least);
+    /// a fixed `M` for many elements makes the map linear, and injective.
+    ///
+    /// ```
+    /// use trigpoly::{Expr, VarSet};
+    /// let vars = VarSet::builder()
+    ///     .coordinate("x")
+    ///     .coordinate("y")
+    ///     .radical("r", "x^2 + y^2")
+    ///     .build()
+    ///     .unwrap();
+    /// let e = |s: &str| Expr::parse(&vars, s).unwrap();
+    /// let f = e("x^2/r^3 + y^2/r^3 - 1/r");
+    /// let powers = f.radical_powers().unwrap();
+    /// assert_eq!(powers[0].2, 3);
+    /// assert!(f.reduce_radicals(&powers).unwrap().is_zero());
+    /// assert_eq!(e("r^3").reduce_radicals(&e("r^3").radical_powers().unwrap()).unwrap(),
+    ///     e("x^2*r + y^2*r"));
+    /// ```
+    pub fn reduce_radicals(&self, radicals: &[ReducedRadical<C>]) -> Result<Self, AlgebraError> {
+        let mut p = self.clone();
+        for (r, radicand, m) in radicals {
+            p = p.reduce_radical(*r, radicand, *m)?;
+        }
+        Ok(p)
+    }
+
+    /// [`Poly::reduce_radicals`] for one radical.
+    fn reduce_radical(&self, r: Var, radicand: &Self, m: i64) -> Result<Self, AlgebraError> {
+        let j = self.vars.checked_index(r)?;
+        if !self.contains(r) && m == 0 {
+            return Ok(self.clone());
+        }
+        // The terms by the power of R they take, each with r to the power 0 or 1.
+        let mut by_power: BTreeMap<i64, Vec<(C, Vec<i64>)>> = BTreeMap::new();
+        for t in self.terms() {
+            let mut e = t.exponents();
+            let k = e[j] + m;
+            if k < 0 {
+                return Err(AlgebraError::Invalid(format!(
+                    "r^{m} does not clear the power {} of the radical {}",
+                    e[j],
+                    self.vars.variable(r).unicode()
+                )));
+            }
+            e[j] = k % 2;
+            by_power.entry(k / 2).or_default().push((t.coeff(), e));
+        }
+        let mut out = Self::zero(&self.vars);
+        let (mut power, mut at) = (Self::one(&self.vars), 0);
+        for (q, terms) in by_power {
+            while at < q {
+                power = power.checked_mul(radicand)?;
+                at += 1;
+            }
+            let part = Self::from_terms(&self.vars, terms)?.checked_mul(&power)?;
+            out = out.checked_add(&part)?;
+        }
+        Ok(out)
+    }
+
+    /// The element `Π r^{−M} · p` written with the least powers of `1/r`: `p` is reduced (each
+    /// radical to the power 0 or 1, as [`Poly::reduce_radicals`] leaves it, and free of atoms),
+    /// and while `p = A + B r` with `R` dividing `A`, `(A + B r)/r^M = (B + (A/R) r)/r^{M−1}`.
+    /// The same element, with no factor `r` common to its numerator and denominator.
+    pub(super) fn lowest_radical_powers(
+        mut p: Self,
+        radicals: Vec<ReducedRadical<C>>,
+    ) -> Result<Self, AlgebraError> {
+        let vars = p.vars.clone();
+        for (r, radicand, mut m) in radicals {
+            let rv = Self::var(&vars, r);
+            while m > 0 {
+                let b = p.derivative(r)?;
+                let a = p.checked_sub(&b.checked_mul(&rv)?)?;
+                match a.quotient_by(&radicand)? {
+                    Some(a) => {
+                        p = b.checked_add(&a.checked_mul(&rv)?)?;
+                        m -= 1;
+                    }
+                    None => break,
+                }
+            }
+            if m > 0 && !p.is_zero() {
+                p = p.checked_mul(&rv.checked_pow(-m)?)?;
+            }
+        }
+        Ok(p)
+    }
+}
+
+/// The `k`-th variable's value at the `s`-th point of the independence check: small integers,
+/// positive and negative, that vary with both.
+fn small_value(k: i64, s: i64) -> Rational {
+    let v = (7 * k + 3) * (s + 1) + s * s;
+    Rational::new(v % 23 - 11, 1)
+}
+
+#[cfg(test)]
+mod tests {
+    use crate::{Expr, VarSet};
+
+    fn kepler() -> crate::Vars {
+        VarSet::builder()
+            .coordinate("x")
+            .coordinate("y")
+            .coordinate("z")
+            .parameter("k")
+            .radical("r", "x^2 + y^2 + z^2")
+            .build()
+            .unwrap()
+    }
+
+    #[test]
+    fn an_element_is_zero_exactly_when_it_reduces_to_zero() {
+        let vars = kepler();
+        let e = |s: &str| Expr::parse(&vars, s).unwrap();
+        assert!(e("r^2 - x^2 - y^2 - z^2").vanishes().unwrap());
+        assert!(e("x^2/r^3 + y^2/r^3 + z^2/r^3 - 1/r").vanishes().unwrap());
+        assert!(e("r^4 - (x^2 + y^2 + z^2)*r^2").vanishes().unwrap());
+        // r is not a polynomial: r − x, r² − x² are not zero.
+        assert!(!e("r - x").vanishes().unwrap());
+        assert!(!e("r^2 - x^2").vanishes().unwrap());
+        assert!(!e("x/r^3 - x/r").vanishes().unwrap());
+    }
+
+    #[test]
+    fn over_a_common_denominator_a_radical_keeps_its_least_powers() {
+        let vars = kepler();
+        let e = |s: &str| Expr::parse(&vars, s).unwrap();
+        let reduced = |s: &str| e(s).over_common_denominator().unwrap();
+        assert_eq!(reduced("x^2/r^3 + y^2/r^3 + z^2/r^3"), e("1/r"));
+        assert_eq!(reduced("-k*x/r^3"), e("-k*x/r^3"));
+        assert_eq!(reduced("r^2"), e("x^2 + y^2 + z^2"));
+        assert_eq!(reduced("(x^2 + y^2 + z^2)/r - r"), e("0"));
+        assert_eq!(reduced("x*r^3"), e("x*(x^2 + y^2 + z^2)*r"));
+    }
+
+    #[test]
+    fn dependent_radicals_are_refused() {
+        let build = |radicals: &[(&str, &str)]| {
+            let mut b = VarSet::builder().coordinate("x").coordinate("y");
+            for (name, radicand) in radicals {
+                b = b.radical(name, radicand);
+            }
+            b.build().unwrap()
+        };
+        let ok = build(&[("r", "(x - 1)^2 + y^2"), ("s", "(x + 1)^2 + y^2")]);
+        assert!(Expr::check_radicals(&ok).is_ok());
+        let square = build(&[("r", "4*x^2")]);
+        let err = Expr::check_radicals(&square).unwrap_err().to_string();
+        assert!(
+            err.contains("the radicand of r = √(4x²) is a square"),
+            "{err}"
+        );
+        // √(x² + y²) · √(4x² + 4y²) = 2(x² + y²).
+        let product = build(&[("r", "x^2 + y^2"), ("s", "4*x^2 + 4*y^2")]);
+        let err = Expr::check_radicals(&product).unwrap_err().to_string();
+        assert!(err.contains("the product of the radicands of r"), "{err}");
+        let constant = build(&[("r", "2")]);
+        assert!(Expr::check_radicals(&constant).is_err());
+        let inside = build(&[("r", "x^2 + y^2"), ("s", "r + x")]);
+        let err = Expr::check_radicals(&inside).unwrap_err().to_string();
+        assert!(err.contains("has a radical"), "{err}");
+        let fraction = build(&[("r", "1/(x + y)")]);
+        let err = Expr::check_radicals(&fraction).unwrap_err().to_string();
+        assert!(err.contains("divides by a polynomial"), "{err}");
+    }
+}

@@ -1,0 +1,319 @@
+//! Radicals: variables standing for square roots (`[phase_space] radicals`, `r = √(x² + y²)`),
+//! the chain rule of their brackets, the zero test by reducing `r² = R`, the Kepler problem in
+//! Cartesian coordinates (its Laplace–Runge–Lenz vector, so(4), maximal superintegrability),
+//! the rank at points where the radical is rational, the closure, a picture of the flow, bad
+//! declarations, and the commands that refuse such systems.
+
+use std::process::Command;
+
+use superint::prelude::*;
+use superint::system_file::{load, load_str, LimitsOverride, LoadedSystem};
+
+use crate::scratch_text;
+
+const PLANAR: &str = "name = \"planar Kepler\"\n\
+                      hamiltonian = \"(p_x^2 + p_y^2)/2 - k/r\"\n\
+                      [phase_space]\n\
+                      coordinates = [\"x\", \"y\"]\n\
+                      parameters = [\"k\"]\n\
+                      radicals = { r = \"x^2 + y^2\" }\n";
+
+fn planar() -> LoadedSystem {
+    load_str("planar.toml", PLANAR, &LimitsOverride::default()).expect("the file loads")
+}
+
+fn kepler() -> LoadedSystem {
+    let path = concat!(env!("CARGO_MANIFEST_DIR"), "/systems/kepler-3d.toml");
+    load(std::path::Path::new(path), &LimitsOverride::default()).expect("the file loads")
+}
+
+/// Whether `lhs = rhs` is proved, both read through the system.
+fn holds(file: &LoadedSystem, lhs: &str, rhs: &str) -> bool {
+    let claim = Claim::new("t", "t", file.parse(lhs).unwrap(), file.parse(rhs).unwrap());
+    claim.check().unwrap().outcome.is_proved()
+}
+
+fn superint(args: &[&str]) -> std::process::Output {
+    Command::new(env!("CARGO_BIN_EXE_superint"))
+        .args(args)
+        .output()
+        .expect("the superint binary runs")
+}
+
+#[test]
+fn radicals_chain_rule_gives_the_brackets() {
+    let file = planar();
+    assert!(holds(&file, "{r, p_x}", "x/r"));
+    assert!(holds(&file, "{r, p_y}", "y/r"));
+    assert!(holds(&file, "{r, x}", "0"));
+    assert!(holds(&file, "{p_x, 1/r}", "x/r^3"));
+    assert!(holds(&file, "{r^2, p_x}", "2*x"));
+    assert!(!holds(&file, "{r, p_x}", "x"));
+    assert!(!holds(&file, "{r, p_x}", "-x/r"));
+    // The force of −k/r, and the angular momentum is conserved; the linear one is not.
+    assert!(holds(&file, "{p_x, H}", "-k*x/r^3"));
+    assert!(holds(&file, "{x*p_y - y*p_x, H}", "0"));
+    assert!(!holds(&file, "{p_x, H}", "0"));
+}
+
+#[test]
+fn radicals_zero_is_decided_by_reducing() {
+    let file = planar();
+    assert!(holds(&file, "r^2", "x^2 + y^2"));
+    assert!(holds(&file, "x^2/r^3 + y^2/r^3", "1/r"));
+    assert!(holds(&file, "r^3", "(x^2 + y^2)*r"));
+    // Division by the radicand is by r².
+    assert!(holds(&file, "x/(x^2 + y^2)", "x/r^2"));
+    // r is no polynomial: neither x nor −x, and r² is not x².
+    assert!(!holds(&file, "r", "x"));
+    assert!(!holds(&file, "r^2", "x^2"));
+    let refuted = Claim::new(
+        "t",
+        "t",
+        file.parse("x^2/r^3 + y^2/r^3 + r").unwrap(),
+        file.parse("1/r").unwrap(),
+    )
+    .check()
+    .unwrap();
+    let Outcome::Refuted { residual } = refuted.outcome else {
+        panic!("x²/r³ + y²/r³ + r is not 1/r")
+    };
+    // The residual is reduced: r, not x²/r³ + y²/r³ − 1/r + r.
+    assert_eq!(residual.to_string(), "r");
+}
+
+#[test]
+fn radicals_kepler_claims_are_proved_and_the_wrong_signs_refuted() {
+    let file = kepler();
+    let report = superint::system_file::check_report([&file]).expect("checked");
+    assert!(report.all_as_expected());
+    let ids: Vec<(String, bool)> = report.claim_ids();
+    let expect = |id: &str, proved: bool| {
+        assert!(
+            ids.iter().any(|c| c.0 == id && c.1 == proved),
+            "{id} {proved}: {ids:?}"
+        );
+    };
+    for id in [
+        "radius",
+        "radial-velocity",
+        "angular-momentum",
+        "lrl",
+        "so3",
+        "vector",
+        "so4",
+        "orthogonal",
+        "length",
+        "rank",
+    ] {
+        expect(id, true);
+    }
+    for id in ["lrl-sign", "so4-sign", "rank-six"] {
+        expect(id, false);
+    }
+    // The Laplace–Runge–Lenz vector needs the potential's term with its sign, and its
+    // brackets close on −2HL/M, not 2HL/M.
+    assert!(holds(&file, "{Az, H}", "0"));
+    assert!(!holds(&file, "{Az + 2*k*z/r, H}", "0"));
+    assert!(holds(&file, "{Ay, Az}", "-2*H*Lx/M"));
+    assert!(!holds(&file, "{Ay, Az}", "-H*Lx/M"));
+}
+
+/// The rank of the Kepler integrals: the Jacobian through `r` by the chain rule, certified at a
+/// point of small integers where `x² + y² + z²` is a square, so that `r` is rational there.
+#[test]
+fn radicals_rank_is_certified_where_the_radical_is_rational() {
+    let file = kepler();
+    let exprs: Vec<Expr> = ["H", "Lx", "Ly", "Lz", "Ax", "Ay", "Az"]
+        .iter()
+        .map(|f| file.parse(f).unwrap())
+        .collect();
+    let cert = rank(file.system().space(), &exprs).unwrap();
+    assert_eq!(cert.rank, 5);
+    assert!(matches!(cert.upper, UpperBound::VanishingMinors { .. }));
+    let vars = file.system().vars();
+    let value = |name: &str| {
+        let v = vars.lookup(name).unwrap();
+        let value = &cert.point.iter().find(|(w, _)| *w == v).unwrap().1;
+        value.re.clone()
+    };
+    let (x, y, z, r) = (value("x"), value("y"), value("z"), value("r"));
+    assert_eq!(&r * &r, &(&x * &x + &y * &y) + &z * &z);
+    assert!(!r.is_negative());
+    // Without the chain rule through r, −k/r would not depend on x: H, L_z and A_x would
+    // still be independent, and x/r and y/r are not (their ratio is y/x).
+    let two: Vec<Expr> = ["x/r", "y/r", "x/y"]
+        .iter()
+        .map(|f| file.parse(f).unwrap())
+        .collect();
+    assert_eq!(rank(file.system().space(), &two).unwrap().rank, 2);
+}
+
+/// The closure of the seven integrals: so(4) with `{A_x, A_y} = −2 H L_z/M`, and at degree 3
+/// the two relations `A · L = 0` and `M|A|² = Mk² + 2H|L|²`.
+#[test]
+fn radicals_closure_finds_so4_and_the_relations() {
+    let f = concat!(env!("CARGO_MANIFEST_DIR"), "/systems/kepler-3d.toml");
+    let o = superint(&[
+        "closure",
+        f,
+        "H",
+        "Lx",
+        "Ly",
+        "Lz",
+        "Ax",
+        "Ay",
+        "Az",
+        "--degree",
+        "3",
+        "--no-timings",
+    ]);
+    let out = String::from_utf8(o.stdout).unwrap();
+    assert_eq!(o.status.code(), Some(0), "{out}");
+    assert!(out.contains("{A_x, A_y} = −2 H L_z/M"), "{out}");
+    assert!(out.contains("{L_y, A_x} = −A_z"), "{out}");
+    assert!(out.contains("L_x A_x + L_y A_y + L_z A_z = 0"), "{out}");
+    assert!(
+        out.contains("Mk² + 2 H L_x² + 2 H L_y² + 2 H L_z² = M A_x² + M A_y² + M A_z²"),
+        "{out}"
+    );
+    assert!(out.contains("The table closes"), "{out}");
+}
+
+/// Bracket, expand and table print the reduced forms; search and the towers refuse a system
+/// with radicals, exit 2, naming the radical.
+#[test]
+fn radicals_commands_print_reduced_forms_and_the_search_refuses() {
+    let f = scratch_text("radicals-cli", "planar.toml", PLANAR);
+    let f = f.to_str().unwrap();
+    let o = superint(&["bracket", f, "r", "p_x"]);
+    assert_eq!(o.status.code(), Some(0));
+    assert!(String::from_utf8(o.stdout)
+        .unwrap()
+        .contains("{r, p_x} = x/r"));
+    let o = superint(&["expand", f, "x^2/r^3 + y^2/r^3", "r^2"]);
+    let out = String::from_utf8(o.stdout).unwrap();
+    assert!(out.contains("x²/r³ + y²/r³ = 1/r"), "{out}");
+    assert!(out.contains("r²            = x² + y²"), "{out}");
+    let o = superint(&["search", f, "--momenta-degree", "2"]);
+    let err = String::from_utf8(o.stderr).unwrap();
+    assert_eq!(o.status.code(), Some(2), "{err}");
+    assert!(
+        err.contains("a search is not supported on a system with radicals (r = √(x² + y²))"),
+        "{err}"
+    );
+}
+
+#[test]
+fn radicals_bad_declarations_are_refused_at_their_place() {
+    let with = |radicals: &str| PLANAR.replace("{ r = \"x^2 + y^2\" }", radicals);
+    let cases = [
+        (
+            "{ r = \"x^2 + 2*x*y + y^2\" }",
+            "bad.toml:6:14: the radicand of r = √(x² + 2xy + y²) is a square",
+        ),
+        (
+            "{ r = \"4\" }",
+            "bad.toml:6:18: the radicand of r is the constant 4",
+        ),
+        ("{ r = \"x^2 + q\" }", "bad.toml:6:25: unknown name 'q'"),
+        (
+            "{ r = \"i*x + y\" }",
+            "bad.toml:6:18: the radicand ix + y is not real",
+        ),
+        (
+            "{ x = \"x^2 + y^2\" }",
+            "bad.toml:6:14: 'x' is already declared as a coordinate",
+        ),
+        (
+            "{ r = \"x^2 + y^2\", s = \"4*x^2 + 4*y^2\" }",
+            "bad.toml:6:14: the product of the radicands of r = √(x² + y²), s = √(4x² + 4y²) is \
+             a square",
+        ),
+        (
+            "{ r = \"1/(1 + x^2)\" }",
+            "bad.toml:6:21: cannot divide by x² + 1",
+        ),
+        ("[\"x^2 + y^2\"]", "bad.toml:6:12: invalid type: sequence"),
+    ];
+    for (radicals, expected) in cases {
+        let f = scratch_text("radicals-bad", "bad.toml", &with(radicals));
+        let dir = f.parent().unwrap();
+        let o = Command::new(env!("CARGO_BIN_EXE_superint"))
+            .current_dir(dir)
+            .args(["check", "bad.toml"])
+            .output()
+            .unwrap();
+        let err = String::from_utf8(o.stderr).unwrap();
+        assert_eq!(o.status.code(), Some(2), "{radicals}: {err}");
+        assert!(
+            err.starts_with(&format!("superint: error: {expected}")),
+            "{radicals}: expected {expected:?}, got {err}"
+        );
+    }
+    // A denominator with a radical in it.
+    let text = format!("{PLANAR}denominators = [\"r - x\"]\n");
+    let err = load_str("bad.toml", &text, &LimitsOverride::default())
+        .expect_err("refused")
+        .to_string();
+    assert!(
+        err.starts_with("bad.toml:7:17: the denominator −x + r has a radical in it"),
+        "{err}"
+    );
+}
+
+/// A picture of the Kepler flow: Hamilton's equations through `r`, evaluated as the root of
+/// its radicand; H, L_z and A_x stay put to rounding while the body moves, and a start at the
+/// origin, where `1/r` has no value, is refused.
+#[test]
+fn radicals_plot_keeps_the_kepler_integrals() {
+    let f = concat!(env!("CARGO_MANIFEST_DIR"), "/systems/kepler-3d.toml");
+    let svg = std::env::temp_dir().join(format!("superint-kepler-{}.svg", std::process::id()));
+    let plot = |from: &str| {
+        superint(&[
+            "plot",
+            f,
+            "x",
+            "Lz",
+            "Ax",
+            "Ay",
+            "--at",
+            "M = 1, k = 1",
+            "--from",
+            from,
+            "--time",
+            "10",
+            "--method",
+            "gauss",
+            "-o",
+            svg.to_str().unwrap(),
+            "--format",
+            "json",
+        ])
+    };
+    let o = plot("x = 1, y = 0, z = 0, p_x = 0, p_y = 4/5, p_z = 0");
+    let out = String::from_utf8(o.stdout).unwrap();
+    assert_eq!(
+        o.status.code(),
+        Some(0),
+        "{out}{}",
+        String::from_utf8_lossy(&o.stderr)
+    );
+    let doc: serde_json::Value = serde_json::from_str(&out).expect("JSON");
+    for f in doc["functions"].as_array().expect("functions") {
+        let label = f["function"].as_str().unwrap();
+        let change = f["largest_change"].as_f64().unwrap();
+        match label {
+            "x" => assert!(change > 1.0, "x moved by {change}"),
+            _ => assert!(change < 1e-6, "{label} changed by {change}"),
+        }
+    }
+    let _ = std::fs::remove_file(&svg);
+    let o = plot("x = 0, y = 0, z = 0, p_x = 1, p_y = 0, p_z = 0");
+    let err = String::from_utf8(o.stderr).unwrap();
+    assert_eq!(o.status.code(), Some(2), "{err}");
+    assert!(
+        err.contains("is not defined at the starting point: r = √(x² + y² + z²) is the root of 0"),
+        "{err}"
+    );
+}
