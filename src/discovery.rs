@@ -210,6 +210,9 @@ fn space_text(r: &SearchResult) -> String {
         degree.join(" + ")
     };
     let positions = exponents(&space.coordinates, true);
+    // Each radical `r` to a power of either sign, `r^j`.
+    let radical_vars: Vec<Var> = r.vars.radicals().collect();
+    let radicals = exponents(&radical_vars, true);
     let momenta = exponents(&space.momenta, false);
     let poisson = exponents(&space.poisson, false);
     // Each denominator atom `(x − y)` to a negative power, `1/(x − y)^r`.
@@ -257,6 +260,12 @@ fn space_text(r: &SearchResult) -> String {
         degrees.push(format!(
             "degree `{poisson} ≤ {}` in the Poisson variables",
             s.poisson_degree
+        ));
+    }
+    if !radicals.is_empty() {
+        degrees.push(format!(
+            "degree `{radicals} ≤ {}` in the radicals",
+            s.radicals_degree
         ));
     }
     if !denominators.is_empty() {
@@ -307,12 +316,26 @@ fn space_text(r: &SearchResult) -> String {
             ps.join(", ")
         ),
     };
-    // With denominators, a monomial equal as a function to a sum of simpler ones is left out.
-    let dependent = match atoms.is_empty() {
-        true => "",
-        false => {
-            " (with denominators the monomials are not independent, `x/(x − y) − y/(x − y) = 1`: \
-             each one equal as a function to a sum of simpler ones is left out)"
+    // With denominators or radicals, a monomial equal as a function to a sum of simpler ones
+    // is left out.
+    let dependent = match (atoms.is_empty(), radical_vars.as_slice()) {
+        (true, []) => String::new(),
+        (false, _) => " (with denominators the monomials are not independent, \
+                        `x/(x − y) − y/(x − y) = 1`: each one equal as a function to a sum of \
+                        simpler ones is left out)"
+            .to_string(),
+        (true, [radical, ..]) => {
+            let radical = name(radical);
+            let radicand = r
+                .vars
+                .variable(*radical_vars.first().expect("a radical"))
+                .radicand()
+                .and_then(|t| trigpoly::Expr::parse(&r.vars, t).ok())
+                .map_or_else(String::new, |e| e.to_string());
+            format!(
+                " (with radicals the monomials are not independent, `{radical}² = \
+                 {radicand}`: each one equal as a function to a sum of simpler ones is left out)"
+            )
         }
     };
     format!(
@@ -640,13 +663,22 @@ pub fn search_report(
         ]
         .iter()
         .any(|vs| !vs.is_empty());
-        // With denominator atoms their powers count with the coordinates' (`1/(x − y)`).
+        // With denominator atoms their powers count with the coordinates' (`1/(x − y)`), and so
+        // do a radical's, of either sign (`1/r`).
         let denominator = r.vars.denominators().next();
+        let radical = r.vars.radicals().next();
         let variables = match (r.variables.poisson.is_empty(), canonical, denominator) {
             (true, _, Some(d)) => format!(
                 "in the coordinates, momenta and denominators together, `1/{}` of degree 1",
                 r.vars.variable(d).unicode()
             ),
+            (true, _, None) if radical.is_some() => {
+                let name = r.vars.variable(radical.expect("a radical")).unicode();
+                format!(
+                    "in the coordinates, momenta and radicals together, `{name}` and `1/{name}` \
+                     of degree 1"
+                )
+            }
             (true, _, None) => "in the coordinates and momenta together".into(),
             (false, false, _) => "in the Poisson variables".into(),
             (false, true, _) => "in the coordinates, momenta and Poisson variables together".into(),

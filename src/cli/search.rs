@@ -81,6 +81,11 @@ pub struct SearchArgs {
     #[arg(long, value_name = "K", default_value_t = 2,
           value_parser = clap::value_parser!(u32).range(0..=12))]
     denominators_degree: u32,
+    /// On a system with radicals, the total degree of their powers, of either sign: 1 takes
+    /// r and 1/r, 2 also r², 1/r² and r/s.
+    #[arg(long, value_name = "J", default_value_t = 1,
+          value_parser = clap::value_parser!(u32).range(0..=12))]
+    radicals_degree: u32,
     /// Parameter values for the linear algebra, such as omega=1,M=2/3 (others are 1).
     #[arg(long, value_name = "VALUES")]
     fix: Option<String>,
@@ -97,7 +102,8 @@ pub struct SearchArgs {
     /// generated when it is a sum of the file's named integrals, --known ones, constants and
     /// products of integrals of lower grade (with --symbolic, parameter multiples too); a grade
     /// is the degree in the coordinates, momenta and Poisson variables together (the powers of
-    /// a denominator, 1/(x − y), count with the coordinates), then the trigonometric order
+    /// a denominator, 1/(x − y), and of a radical, r or 1/r, count with the coordinates), then
+    /// the trigonometric order
     /// (where cos θ and p are integrals, cos 2θ = 2cos²θ − 1 and p cos θ are generated). A
     /// product of integrals of the same grade is not counted: with three rotors, cos(a − c)
     /// is new beside cos(a − b) and cos(b − c), though it is a polynomial in them and their
@@ -269,7 +275,8 @@ fn search_and_print(job: &SearchJob) -> anyhow::Result<bool> {
     let subject = Subject::open(a.file.as_ref(), a.system.as_deref(), false, &a.limits)?;
     let mut space = SearchSpace::new(a.momenta_degree, a.positions_degree, a.trig_degree)
         .poisson_degree(a.poisson_degree)
-        .denominators_degree(a.denominators_degree);
+        .denominators_degree(a.denominators_degree)
+        .radicals_degree(a.radicals_degree);
     if a.laurent {
         space = space.laurent();
     }

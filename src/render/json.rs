@@ -47,7 +47,8 @@
 //!                "outcome" } ],
 //!   "searches": [ { "section", "space": { "momenta_degree", "positions_degree", "trig_degree",
 //!                   "laurent", "coordinates", "momenta", "angles", "left_out",
-//!                   "poisson_degree", "poisson_variables", "denominators_degree" },
+//!                   "poisson_degree", "poisson_variables", "denominators_degree",
+//!                   "radicals_degree" },
 //!                   "parameters", "unknowns", "equations", "blocks", "largest_block",
 //!                   "dimension", "by_momenta_degree": [int] (≤ j), "counts": [[int]]
 //!                   (momenta degree exactly j, order k), "by_poisson_degree": [int] (≤ j in
@@ -298,6 +299,7 @@ fn search(f: &SearchFacts, section: u32) -> Value {
             "poisson_degree": s.poisson_degree,
             "poisson_variables": f.poisson,
             "denominators_degree": s.denominators_degree,
+            "radicals_degree": s.radicals_degree,
         },
         "parameters": parameters(&f.parameters),
         "unknowns": f.unknowns,

@@ -1,8 +1,8 @@
 //! Radicals: variables standing for square roots (`[phase_space] radicals`, `r = √(x² + y²)`),
 //! the chain rule of their brackets, the zero test by reducing `r² = R`, the Kepler problem in
 //! Cartesian coordinates (its Laplace–Runge–Lenz vector, so(4), maximal superintegrability),
-//! the rank at points where the radical is rational, the closure, a picture of the flow, bad
-//! declarations, and the commands that refuse such systems.
+//! the rank at points where the radical is rational, the closure, the search that finds the
+//! Laplace–Runge–Lenz vector, a picture of the flow, and bad declarations.
 
 use std::process::Command;
 
@@ -180,10 +180,9 @@ fn radicals_closure_finds_so4_and_the_relations() {
     assert!(out.contains("The table closes"), "{out}");
 }
 
-/// Bracket, expand and table print the reduced forms; search and the towers refuse a system
-/// with radicals, exit 2, naming the radical.
+/// Bracket and expand print the reduced forms, over the least power of `r`.
 #[test]
-fn radicals_commands_print_reduced_forms_and_the_search_refuses() {
+fn radicals_commands_print_reduced_forms() {
     let f = scratch_text("radicals-cli", "planar.toml", PLANAR);
     let f = f.to_str().unwrap();
     let o = superint(&["bracket", f, "r", "p_x"]);
@@ -195,11 +194,85 @@ fn radicals_commands_print_reduced_forms_and_the_search_refuses() {
     let out = String::from_utf8(o.stdout).unwrap();
     assert!(out.contains("x²/r³ + y²/r³ = 1/r"), "{out}");
     assert!(out.contains("r²            = x² + y²"), "{out}");
-    let o = superint(&["search", f, "--momenta-degree", "2"]);
+}
+
+/// The search through a radical: from `H` alone it finds the angular momentum and the
+/// Laplace–Runge–Lenz vector of the Kepler problem in space as new integrals, the monomials
+/// equal as functions to simpler ones (`r² = x² + y² + z²`) left out of the unknowns; a
+/// radicand that holds a parameter kept symbolic is refused.
+#[test]
+fn radicals_search_finds_the_laplace_runge_lenz_vector() {
+    let bare = "name = \"Kepler, H alone\"\n\
+                hamiltonian = \"(p_x^2 + p_y^2 + p_z^2)/(2*M) - k/r\"\n\
+                [phase_space]\n\
+                coordinates = [\"x\", \"y\", \"z\"]\n\
+                parameters = [\"M\", \"k\"]\n\
+                radicals = { r = \"x^2 + y^2 + z^2\" }\n";
+    let f = scratch_text("radicals-search", "bare.toml", bare);
+    let f = f.to_str().unwrap();
+    let search = |more: &[&str]| {
+        let mut args = vec!["search", f, "--no-timings"];
+        args.extend(more);
+        let o = superint(&args);
+        let out = String::from_utf8(o.stdout).unwrap();
+        assert_eq!(
+            o.status.code(),
+            Some(0),
+            "{out}{}",
+            String::from_utf8_lossy(&o.stderr)
+        );
+        out
+    };
+    let json = |more: &[&str]| -> serde_json::Value {
+        let mut args = more.to_vec();
+        args.extend(["--format", "json"]);
+        serde_json::from_str(&search(&args)).expect("JSON")
+    };
+    let degree_2 = ["--momenta-degree", "2", "--positions-degree", "1"];
+    let v = json(&[&degree_2[..], &["--new-only"]].concat());
+    let found = &v["searches"][0];
+    assert_eq!(found["dimension"], 8, "{found}");
+    assert_eq!(found["for_every_value"], 8, "{found}");
+    assert_eq!(
+        found["new_only"]["known"],
+        serde_json::json!(["H"]),
+        "{found}"
+    );
+    assert_eq!(found["shown"].as_array().unwrap().len(), 6, "{found}");
+    let out = search(&[&degree_2[..], &["--new-only"]].concat());
+    let flat = out.split_whitespace().collect::<Vec<_>>().join(" ");
+    for integral in [
+        "x p_y − y p_x",
+        "x p_y² + x p_z² − y p_x p_y − z p_x p_z − Mkx/r",
+        "x p_x p_y − y p_x² − y p_z² + z p_y p_z + Mky/r",
+        "r and 1/r of degree 1",
+    ] {
+        assert!(flat.contains(integral), "{integral}: {out}");
+    }
+    // Without the radical's powers the vector is not in the space, and H is outside it.
+    let v = json(&[&degree_2[..], &["--radicals-degree", "0"]].concat());
+    assert_eq!(v["searches"][0]["dimension"], 4, "{v}");
+    // Of the 10 · 5 monomials of degree ≤ 2 in x, y, z times r^j, |j| ≤ 2, three equal sums
+    // of others and are left out, one for each of r² = x² + y² + z², x²/r + y²/r + z²/r = r
+    // and x²/r² + y²/r² + z²/r² = 1.
+    let v = json(&[
+        "--momenta-degree",
+        "0",
+        "--positions-degree",
+        "2",
+        "--radicals-degree",
+        "2",
+    ]);
+    assert_eq!(v["searches"][0]["unknowns"], 47, "{v}");
+    assert_eq!(v["searches"][0]["dimension"], 1, "{v}");
+    // A parameter inside a radicand cannot be kept symbolic.
+    let shifted = bare.replace("\"x^2 + y^2 + z^2\"", "\"x^2 + y^2 + z^2 + k\"");
+    let g = scratch_text("radicals-search", "shifted.toml", &shifted);
+    let o = superint(&["search", g.to_str().unwrap(), "--symbolic", "k"]);
     let err = String::from_utf8(o.stderr).unwrap();
     assert_eq!(o.status.code(), Some(2), "{err}");
     assert!(
-        err.contains("a search is not supported on a system with radicals (r = √(x² + y²))"),
+        err.contains("the radical r holds k, kept symbolic"),
         "{err}"
     );
 }

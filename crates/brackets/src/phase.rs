@@ -272,9 +272,9 @@ impl PhaseSpace {
     }
 
     /// Refuses `what` (a command's work) on a space with radicals: like
-    /// [`Self::refuse_denominators`], for work whose linear algebra or evaluation would take
-    /// `r²` and `R` for different functions. Its callers: the towers and `search`; check,
-    /// bracket, expand, table, rank, closure and plot know the radicals.
+    /// [`Self::refuse_denominators`], for work whose evaluation would take `r²` and `R` for
+    /// different functions. Its callers: the towers; check, bracket, expand, table, rank,
+    /// closure, search and plot know the radicals.
     pub fn refuse_radicals(&self, what: &str) -> Result<(), EngineError> {
         if self.radicals.is_empty() {
             return Ok(());
@@ -285,9 +285,9 @@ impl PhaseSpace {
             .map(|(r, radicand)| format!("{} = √({radicand})", self.vars.variable(*r).unicode()))
             .collect();
         Err(EngineError::Invalid(format!(
-            "{what} is not supported on a system with radicals ({}) yet: its linear algebra \
-             takes monomials as independent, and with r² = R they are not; check, bracket, \
-             expand, table, rank, closure and plot work there, deciding zero by reducing by \
+            "{what} is not supported on a system with radicals ({}): its evaluation takes \
+             monomials as independent, and with r² = R they are not; check, bracket, expand, \
+             table, rank, closure, search and plot work there, deciding zero by reducing by \
              r² = R",
             names.join(", ")
         )))
@@ -693,6 +693,7 @@ mod tests {
         let vars = builder.clone().radical("r", "x^2 + y^2").build().unwrap();
         let space = PhaseSpace::new(&vars, &[("x", "p_x"), ("y", "p_y")]).unwrap();
         assert_eq!(space.radicals().len(), 1);
+        assert_eq!(space.denominator_atoms().len(), 1);
         let e = |s: &str| Expr::parse(&vars, s).unwrap();
         let b = |f: &Expr, g: &Expr| space.bracket(f, g).unwrap();
         assert_eq!(b(&e("r"), &e("p_x")), e("x/r"));

@@ -1,5 +1,6 @@
-//! With denominator atoms, the space's monomials are not independent functions
-//! (`x/(x − y) − y/(x − y) = 1`): the choice of those independent of the simpler ones.
+//! With denominator atoms or radicals, the space's monomials are not independent functions
+//! (`x/(x − y) − y/(x − y) = 1`, `r²/r = r`... and `x²/r + y²/r = r` for `r = √(x² + y²)`):
+//! the choice of those independent of the simpler ones.
 
 use rustc_hash::FxHashSet;
 
@@ -11,20 +12,23 @@ use crate::modular::{Echelon, SparseVec};
 
 use super::problem::{real_rows, Unknown};
 
-/// With denominator atoms the monomials of the space are not independent functions
-/// (`x/(x − y) − y/(x − y) = 1`): the monomials `φ` (without angles) whose functions are
+/// With denominator atoms or radicals the monomials of the space are not independent functions
+/// (`x/(x − y) − y/(x − y) = 1`, `x²/r + y²/r = r`): the monomials `φ` (without angles) whose
+/// functions are
 /// independent of the simpler ones before them, in the order of [`Unknown::degrees`], decided
 /// exactly on their images under one [`Clearing`], which is injective. The space they span is
 /// the whole space's, and each of its functions has one set of coordinates in them. Each
-/// denominator must be free of the angles, so that the same monomials are independent times
-/// any `cos k·θ` or `sin k·θ`. When every denominator is a polynomial in the coordinates (and
-/// parameters fixed for the linear algebra), clearing commutes with a factor in the momenta,
+/// denominator must be free of the angles (a radicand is), so that the same monomials are
+/// independent times any `cos k·θ` or `sin k·θ`. When every denominator and radicand is a
+/// polynomial in the coordinates (and parameters fixed for the linear algebra), clearing and
+/// reducing commute with a factor in the momenta,
 /// the Poisson variables and the symbolic parameters, and the monomials of each such factor
 /// are compared among themselves only: the choice is made once, on the monomials in the
-/// coordinates and the denominators alone, in the same order.
+/// coordinates, the radicals and the denominators alone, in the same order.
 pub(super) fn independent_as_functions(
     vars: &Vars,
     atoms: &[(Var, Expr)],
+    radicals: &[(Var, Expr)],
     parameters: &[(Var, Rational)],
     mut phases: Vec<Unknown>,
 ) -> Result<Vec<Unknown>, EngineError> {
@@ -38,7 +42,7 @@ pub(super) fn independent_as_functions(
         )));
     }
     let kind = |v: Var| vars.variable(v).kind();
-    let in_coordinates = atoms.iter().all(|(_, d)| {
+    let in_coordinates = atoms.iter().chain(radicals).all(|(_, d)| {
         vars.vars()
             .filter(|&v| d.contains(v))
             .all(|v| matches!(kind(v), VarKind::Coordinate | VarKind::Parameter))
@@ -47,7 +51,12 @@ pub(super) fn independent_as_functions(
     let apart: Vec<usize> = match in_coordinates {
         true => vars
             .vars()
-            .filter(|&v| !matches!(kind(v), VarKind::Coordinate | VarKind::Denominator))
+            .filter(|&v| {
+                !matches!(
+                    kind(v),
+                    VarKind::Coordinate | VarKind::Denominator | VarKind::Radical
+                )
+            })
             .map(|v| v.index())
             .collect(),
         false => Vec::new(),
@@ -80,8 +89,8 @@ pub(super) fn independent_as_functions(
         .iter()
         .map(|u| Expr::from_terms(vars, vec![(GaussianRational::from(1), u.phase.clone())]))
         .collect::<Result<Vec<Expr>, _>>()?;
-    let clearing = Clearing::new(atoms, &[], parameters, monomials.iter())?
-        .expect("the space has denominator atoms");
+    let clearing = Clearing::new(atoms, radicals, parameters, monomials.iter())?
+        .expect("the space has denominator atoms or radicals");
     let mut rows = MonomialIndex::new(vars);
     let mut nrows = 0;
     let columns: Vec<SparseVec<Rational>> = clearing

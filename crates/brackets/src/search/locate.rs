@@ -1,6 +1,6 @@
 //! Where a function of the space sits among the unknowns, for `--new-only`: by its monomials,
-//! or, with denominator atoms (whose monomials are not independent functions), by its image
-//! under a [`Clearing`] written in the images of the basis integrals.
+//! or, with denominator atoms or radicals (whose monomials are not independent functions), by
+//! its image under a [`Clearing`] written in the images of the basis integrals.
 
 use std::cell::RefCell;
 use std::rc::Rc;
@@ -21,7 +21,7 @@ type Parts = (SparseVec<Rational>, SparseVec<Rational>);
 pub(super) enum Locator<'a> {
     /// By the monomials of the space, which are independent functions.
     Monomials(&'a Problem),
-    /// With denominator atoms, through the cleared images of the basis integrals.
+    /// With denominator atoms or radicals, through the cleared images of the basis integrals.
     Cleared(ClearedBasis),
 }
 
@@ -49,23 +49,25 @@ impl Locator<'_> {
     }
 }
 
-/// The basis integrals of a search with denominator atoms, for deciding whether a function
+/// The basis integrals of a search with denominator atoms or radicals, for deciding whether a
+/// function
 /// (a known integral, a product of integrals) lies in the space and with which coordinates.
 /// The space's monomials are not independent functions, so a function written in other
 /// monomials of the space, or in monomials outside it (a product's powers of `1/D` add up),
-/// may still be one of its functions. Every function that is asked about is an integral, and
+/// may still be one of its functions (so may `r · r`, which is `R`). Every function that is asked about is an integral, and
 /// the basis spans the integrals of the space: a function lies in the space exactly when it
 /// is a combination of the basis integrals, which is decided on the images under a
 /// [`Clearing`] (injective) whose powers cover both, exactly over Q. The images of the basis
 /// are formed once for each such power vector.
 pub(super) struct ClearedBasis {
     atoms: Vec<(Var, Expr)>,
+    radicals: Vec<(Var, Expr)>,
     parameters: Vec<(Var, Rational)>,
     angles: Vec<Var>,
     /// The basis integrals as functions, and their coordinates among the unknowns.
     integrals: Vec<Expr>,
     coordinates: Vec<SparseVec<Rational>>,
-    /// The powers of `1/D_i` the basis integrals have.
+    /// The powers of `1/D_i`, then of `1/r_i`, the basis integrals have.
     powers: Vec<i64>,
     /// The images of the basis integrals by the powers of the clearing.
     images: RefCell<FxHashMap<Vec<i64>, Rc<ClearedImages>>>,
@@ -81,10 +83,11 @@ struct ClearedImages {
 
 impl ClearedBasis {
     /// For the basis with coordinates `kernel` among the unknowns of `problem`, whose atoms
-    /// are `atoms` and whose parameters are fixed at `parameters`.
+    /// and radicals are `atoms` and `radicals` and whose parameters are fixed at `parameters`.
     pub(super) fn new(
         problem: &Problem,
         atoms: &[(Var, Expr)],
+        radicals: &[(Var, Expr)],
         parameters: &[(Var, Rational)],
         kernel: &[SparseVec<Rational>],
     ) -> Result<Self, EngineError> {
@@ -92,12 +95,13 @@ impl ClearedBasis {
             .iter()
             .map(|v| problem.combination(v))
             .collect::<Result<Vec<Expr>, _>>()?;
-        let mut powers = vec![0; atoms.len()];
+        let mut powers = vec![0; atoms.len() + radicals.len()];
         for f in &integrals {
-            raise_to(&mut powers, atoms, f);
+            raise_to(&mut powers, atoms.iter().chain(radicals), f);
         }
         Ok(ClearedBasis {
             atoms: atoms.to_vec(),
+            radicals: radicals.to_vec(),
             parameters: parameters.to_vec(),
             angles: problem.variables.angles.clone(),
             integrals,
@@ -114,7 +118,7 @@ impl ClearedBasis {
             return Ok(Some(Vec::new()));
         }
         let mut powers = self.powers.clone();
-        raise_to(&mut powers, &self.atoms, f);
+        raise_to(&mut powers, self.atoms.iter().chain(&self.radicals), f);
         let images = self.images_for(powers, f)?;
         let image = images.clearing.apply(f)?;
         // A monomial that no basis image has: `f` is no combination of them.
@@ -139,11 +143,11 @@ impl ClearedBasis {
         }
         let clearing = Clearing::new(
             &self.atoms,
-            &[],
+            &self.radicals,
             &self.parameters,
             self.integrals.iter().chain([f]),
         )?
-        .expect("a search with denominator atoms");
+        .expect("a search with denominator atoms or radicals");
         let mut rows = MonomialIndex::new(f.vars());
         let mut nrows = 0;
         let columns: Vec<SparseVec<Rational>> = clearing
@@ -166,9 +170,9 @@ impl ClearedBasis {
     }
 }
 
-/// Raises each of `powers` to the power of `1/D_i` in `f`, if higher.
-fn raise_to(powers: &mut [i64], atoms: &[(Var, Expr)], f: &Expr) {
-    for ((v, _), n) in atoms.iter().zip(powers.iter_mut()) {
+/// Raises each of `powers` to the power of `1/D_i` (or `1/r_i`) in `f`, if higher.
+fn raise_to<'a>(powers: &mut [i64], atoms: impl Iterator<Item = &'a (Var, Expr)>, f: &Expr) {
+    for ((v, _), n) in atoms.zip(powers.iter_mut()) {
         *n = (*n).max(-f.low_degree(*v).unwrap_or(0));
     }
 }

@@ -38,6 +38,12 @@
 //! cleared image is a combination of the basis integrals' (`locate`); the powers of `1/D`
 //! count with the coordinates in a grade, and bound only how many factors a product has.
 //!
+//! On a system with radicals (`r = √R`, [`trigpoly::VarKind::Radical`]) the space also has the
+//! products `Π r_i^{j_i}` of either sign with `Σ |j_i| ≤` [`SearchSpace::radicals_degree`]
+//! (`−k/r` and `x/r` of the Kepler problem), and the same holds with the images reduced by
+//! `r² = R` (`x²/r + y²/r = r` for `R = x² + y²`): the unknowns, the equations and what is new
+//! are decided on the reduced forms, and a radicand holding a parameter keeps it fixed.
+//!
 //! ```
 //! use brackets::search::{search, SearchOptions, SearchSpace};
 //! use brackets::systems;
@@ -159,12 +165,12 @@ pub fn search(system: &System, options: &SearchOptions) -> Result<SearchResult, 
     }
     let vars = system.vars();
     check_parameters(vars, &options.symbolic, &options.fixed)?;
-    system.space().refuse_radicals("a search")?;
     let atoms = system.space().denominator_atoms();
-    // A denominator free of the parameters kept symbolic makes the choice of independent
-    // monomials the same for each multiple by a parameter monomial, which the parameter
-    // multiples of integrals need.
-    if let Some((v, p)) = atoms.iter().find_map(|(v, d)| {
+    let radicals = system.space().radicals();
+    // A denominator or radicand free of the parameters kept symbolic makes the choice of
+    // independent monomials the same for each multiple by a parameter monomial, which the
+    // parameter multiples of integrals need.
+    if let Some((v, p)) = atoms.iter().chain(radicals).find_map(|(v, d)| {
         options
             .symbolic
             .iter()
@@ -172,8 +178,12 @@ pub fn search(system: &System, options: &SearchOptions) -> Result<SearchResult, 
             .map(|p| (v, p))
     }) {
         return Err(EngineError::Invalid(format!(
-            "the denominator {} holds {}, kept symbolic: the search keeps symbolic only \
-             parameters that no denominator holds; fix it instead (--fix)",
+            "the {} {} holds {}, kept symbolic: the search keeps symbolic only parameters \
+             that no denominator or radicand holds; fix it instead (--fix)",
+            match vars.variable(*v).kind() {
+                VarKind::Radical => "radical",
+                _ => "denominator",
+            },
             vars.variable(*v).unicode(),
             vars.variable(*p).unicode()
         )));
@@ -218,7 +228,7 @@ pub fn search(system: &System, options: &SearchOptions) -> Result<SearchResult, 
     // the order of the unknowns.
     // With denominator atoms the images are taken through one injective `Clearing`, whose
     // powers are the highest among all the images: formed in one block.
-    let block = if atoms.is_empty() {
+    let block = if atoms.is_empty() && radicals.is_empty() {
         IMAGE_BLOCK
     } else {
         n.max(1)
@@ -232,7 +242,7 @@ pub fn search(system: &System, options: &SearchOptions) -> Result<SearchResult, 
             .map(|j| problem.image(&problem.expr(j, &Rational::one())?))
             .collect();
         let mut images = images.into_iter().collect::<Result<Vec<Expr>, _>>()?;
-        if let Some(clearing) = Clearing::new(atoms, &[], &parameters, images.iter())? {
+        if let Some(clearing) = Clearing::new(atoms, radicals, &parameters, images.iter())? {
             images = clearing.apply_all(&images)?;
         }
         for image in &images {

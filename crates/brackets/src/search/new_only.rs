@@ -26,13 +26,19 @@ pub(super) fn new_integrals(
     multiples: &[(usize, SparseVec<Rational>)],
 ) -> Result<NewIntegrals, EngineError> {
     let (space, extra, symbolic) = (&options.space, &options.known, &options.symbolic);
-    // With denominator atoms a function of the space may be written in other monomials than
-    // the unknowns' (and a product's powers of `1/D` add up): it is located through the
-    // cleared images of the basis integrals instead.
-    let atoms = system.space().denominator_atoms();
-    let locator = match atoms.is_empty() {
-        true => Locator::Monomials(problem),
-        false => Locator::Cleared(ClearedBasis::new(problem, atoms, parameters, kernel)?),
+    // With denominator atoms or radicals a function of the space may be written in other
+    // monomials than the unknowns' (and a product's powers of `1/D` add up, `r · r = R`): it
+    // is located through the cleared images of the basis integrals instead.
+    let (atoms, radicals) = (
+        system.space().denominator_atoms(),
+        system.space().radicals(),
+    );
+    let related = !atoms.is_empty() || !radicals.is_empty();
+    let locator = match related {
+        false => Locator::Monomials(problem),
+        true => Locator::Cleared(ClearedBasis::new(
+            problem, atoms, radicals, parameters, kernel,
+        )?),
     };
     // Known integrals: named real functions that are integrals, restricted to the condition.
     let mut known_names = Vec::new();
@@ -82,20 +88,20 @@ pub(super) fn new_integrals(
     // in the span of the known integrals, the constants, the products of at least two
     // integrals of grade < g (known or found) and the parameter multiples of integrals of
     // grade ≤ g.
-    let grading =
-        Grading::new(&problem.variables, space.trig_degree).with_denominators(&problem.vars);
+    let grading = Grading::new(&problem.variables, space.trig_degree).with_stand_ins(&problem.vars);
     let sources = known
         .iter()
         .map(|k| &k.0)
         .chain(basis.iter().map(|b| &b.fixed));
     let gens = generators(problem, &grading, sources)?;
-    // With atoms the degrees in the coordinates and the denominators bound only how many
-    // factors a product has, as in a Laurent space: `x/(x − y) · y/(x − y)` may equal a
-    // function of the space written in fewer of them.
-    let laurent = space.laurent || !atoms.is_empty();
+    // With atoms or radicals the degrees in the coordinates, the denominators and the radicals
+    // bound only how many factors a product has, as in a Laurent space: `x/(x − y) · y/(x − y)`
+    // may equal a function of the space written in fewer of them.
+    let laurent = space.laurent || related;
     let bounds = Size {
         momenta: space.momenta_degree.into(),
-        coordinates: (space.positions_degree + space.denominators_degree).into(),
+        coordinates: (space.positions_degree + space.denominators_degree + space.radicals_degree)
+            .into(),
         poisson: space.poisson_degree.into(),
         angles_alone: space.trig_degree.into(),
     };
@@ -263,10 +269,11 @@ impl Grading {
         }
     }
 
-    /// With denominator atoms, their powers count in the degree too (`1/(x − y)` has degree
-    /// 1).
-    pub(super) fn with_denominators(mut self, vars: &Vars) -> Self {
+    /// With denominator atoms and radicals, their powers count in the degree too
+    /// (`1/(x − y)` and `1/r` have degree 1).
+    pub(super) fn with_stand_ins(mut self, vars: &Vars) -> Self {
         self.degree_variables.extend(vars.denominators());
+        self.degree_variables.extend(vars.radicals());
         self
     }
 
@@ -308,8 +315,8 @@ impl Size {
         let degree = |kinds: &[VarKind]| f.total_degree(kinds).unwrap_or(0);
         let (momenta, coordinates, poisson) = (
             degree(&[VarKind::Momentum]),
-            // The powers of the denominator atoms count with the coordinates.
-            degree(&[VarKind::Coordinate, VarKind::Denominator]),
+            // The powers of the denominator atoms and radicals count with the coordinates.
+            degree(&[VarKind::Coordinate, VarKind::Denominator, VarKind::Radical]),
             degree(&[VarKind::Poisson]),
         );
         let angles_alone = match momenta == 0 && coordinates == 0 && poisson == 0 {

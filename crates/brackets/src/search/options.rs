@@ -24,6 +24,9 @@ pub struct SearchSpace {
     /// On a system with denominator atoms, the total degree `Σ k_i` of the powers
     /// `1/D_i^{k_i}` (0 unless set, [`SearchSpace::denominators_degree`]).
     pub denominators_degree: u32,
+    /// On a system with radicals, the total degree `Σ |j_i|` of the powers `r_i^{j_i}`, of
+    /// either sign (0 unless set, [`SearchSpace::radicals_degree`]).
+    pub radicals_degree: u32,
 }
 
 impl SearchSpace {
@@ -38,7 +41,16 @@ impl SearchSpace {
             parameters_degree: 0,
             poisson_degree: 0,
             denominators_degree: 0,
+            radicals_degree: 0,
         }
+    }
+
+    /// The same space with products of powers of the radicals `r_i^{j_i}` of total degree
+    /// `Σ |j_i| ≤ d`, negative powers included (on a system that declares radicals; the
+    /// Kepler problem's `−k/r` and `x/r` have degree 1).
+    pub fn radicals_degree(mut self, d: u32) -> Self {
+        self.radicals_degree = d;
+        self
     }
 
     /// The same space with products of the denominators `1/D_i^{k_i}` of total degree
@@ -97,6 +109,14 @@ impl SearchSpace {
                 vars.variable(d).unicode()
             ));
         }
+        let roots = radicals_degree(f);
+        if roots > i64::from(self.radicals_degree) {
+            why.push(format!(
+                "degree {roots} in the radicals, past the space's {} \
+                 (SearchSpace::radicals_degree; on the command line, --radicals-degree)",
+                self.radicals_degree
+            ));
+        }
         let over = denominators_degree(f);
         if over > i64::from(self.denominators_degree) {
             why.push(format!(
@@ -126,6 +146,15 @@ impl SearchSpace {
         }
         (!why.is_empty()).then(|| why.join("; "))
     }
+}
+
+/// The largest total degree `Σ |j_i|` of a term's radicals `r_i^{j_i}`.
+pub(super) fn radicals_degree(f: &Expr) -> i64 {
+    let radicals: Vec<Var> = f.vars().radicals().collect();
+    f.terms()
+        .map(|t| radicals.iter().map(|&v| t.exponent(v).abs()).sum::<i64>())
+        .max()
+        .unwrap_or(0)
 }
 
 /// The largest total degree `Σ k_i` of a term's denominators `1/D_i^{k_i}` (the negative

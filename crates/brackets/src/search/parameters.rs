@@ -55,12 +55,13 @@ pub(super) fn parameter_values(
 ) -> Vec<(Var, Rational)> {
     let vars = system.vars();
     let mut exprs = vec![system.hamiltonian().clone()];
-    // An atom's polynomial enters the bracket through its declared brackets.
+    // An atom's polynomial and a radicand enter the bracket through their declared brackets.
+    let space = system.space();
     exprs.extend(
-        system
-            .space()
+        space
             .denominator_atoms()
             .iter()
+            .chain(space.radicals())
             .map(|a| a.1.clone()),
     );
     if let Some(c) = condition {

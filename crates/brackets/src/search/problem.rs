@@ -39,19 +39,22 @@ pub(super) struct Unknown {
     pub(super) positions_degree: i64,
     /// `Σ k_i` of its denominators `1/D_i^{k_i}`.
     pub(super) denominators_degree: i64,
+    /// `Σ |j_i|` of its radicals `r_i^{j_i}`.
+    pub(super) radicals_degree: i64,
     pub(super) trig_degree: i64,
     pub(super) parameters_degree: i64,
 }
 
 impl Unknown {
     /// Its degrees in the order of the unknowns, simpler first: momenta, Poisson variables,
-    /// trigonometric order, positions, denominators, parameters.
-    pub(super) fn degrees(&self) -> [i64; 6] {
+    /// trigonometric order, positions, radicals, denominators, parameters.
+    pub(super) fn degrees(&self) -> [i64; 7] {
         [
             self.momenta_degree,
             self.poisson_degree,
             self.trig_degree,
             self.positions_degree,
+            self.radicals_degree,
             self.denominators_degree,
             self.parameters_degree,
         ]
@@ -162,6 +165,9 @@ impl Problem {
         // `−k_i`.
         let atoms = system.space().denominator_atoms();
         let inverses = exponent_vectors(atoms.len(), space.denominators_degree, false);
+        // The powers `j_i` of the radicals, of either sign.
+        let radicals = system.space().radicals();
+        let roots = exponent_vectors(radicals.len(), space.radicals_degree, true);
         let ks: Vec<Vec<i64>> = exponent_vectors(angles.len(), space.trig_degree, true)
             .into_iter()
             .filter(|k| canonical(k.iter().copied()))
@@ -177,6 +183,7 @@ impl Problem {
             .saturating_mul(lie.len())
             .saturating_mul(params.len())
             .saturating_mul(inverses.len())
+            .saturating_mul(roots.len())
             .saturating_mul(trig_functions);
         let limit = vars.limits().max_terms;
         if count > limit {
@@ -188,7 +195,9 @@ impl Problem {
         // The monomials `φ` without angles, then (with denominators) those whose functions are
         // independent of the simpler ones, then each times the trigonometric functions.
         let mut phases = Vec::with_capacity(count / trig_functions.max(1));
-        for (a, c, m, s, d) in itertools::iproduct!(&positions, &moms, &lie, &params, &inverses) {
+        for (a, c, m, s, d, j) in
+            itertools::iproduct!(&positions, &moms, &lie, &params, &inverses, &roots)
+        {
             let mut phase = vec![0i64; vars.len()];
             for (v, e) in coords
                 .iter()
@@ -202,6 +211,9 @@ impl Problem {
             for ((v, _), e) in atoms.iter().zip(d) {
                 phase[v.index()] = -e;
             }
+            for ((v, _), e) in radicals.iter().zip(j) {
+                phase[v.index()] = *e;
+            }
             phases.push(Unknown {
                 phase,
                 k: vec![0; angles.len()],
@@ -210,12 +222,13 @@ impl Problem {
                 poisson_degree: m.iter().sum(),
                 positions_degree: a.iter().map(|x| x.abs()).sum(),
                 denominators_degree: d.iter().sum(),
+                radicals_degree: j.iter().map(|x| x.abs()).sum(),
                 trig_degree: 0,
                 parameters_degree: s.iter().sum(),
             });
         }
-        if !atoms.is_empty() {
-            phases = independent_as_functions(&vars, atoms, parameters, phases)?;
+        if !atoms.is_empty() || !radicals.is_empty() {
+            phases = independent_as_functions(&vars, atoms, radicals, parameters, phases)?;
         }
         let mut unknowns = Vec::with_capacity(phases.len() * trig_functions);
         for phi in phases {
