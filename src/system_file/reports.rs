@@ -36,6 +36,18 @@ impl LoadedSystem {
             caption: String::new(),
             lines: vec![Equation::new("H", self.system.hamiltonian().clone())],
         }));
+        // What each radical stands for, which H's terms do not show.
+        let vars = self.system.vars();
+        let radicals: Vec<String> = self
+            .system
+            .space()
+            .radicals()
+            .iter()
+            .map(|(r, radicand)| format!("`{} = √({radicand})`", vars.variable(*r).unicode()))
+            .collect();
+        if !radicals.is_empty() {
+            entries.push(Entry::Text(format!("with {}.", radicals.join(", "))));
+        }
         entries
     }
 
