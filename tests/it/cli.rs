@@ -10,13 +10,7 @@ use std::process::{Command, Output};
 use pretty_assertions::assert_eq;
 use serde_json::Value;
 
-/// Runs the binary with arguments.
-fn superint(args: &[&str]) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_superint"))
-        .args(args)
-        .output()
-        .expect("the superint binary runs")
-}
+use crate::superint;
 
 fn stdout(o: &Output) -> String {
     String::from_utf8(o.stdout.clone()).expect("stdout is UTF-8")

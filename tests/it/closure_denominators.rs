@@ -4,12 +4,10 @@
 //! by `(x − y) · 1/(x − y) = 1` found, a false one (the same numerator over another
 //! denominator) not reported, an atom of an angle, and the command line.
 
-use std::process::Command;
-
 use brackets::closure::{closure, Bracket, Closure, ClosureOptions};
 use superint::system_file::{load_str, LimitsOverride, LoadedSystem};
 
-use crate::{assert_proved, normalize, scratch_text};
+use crate::{assert_proved, normalize, scratch_text, superint};
 
 /// Calogero–Moser with three bodies, `g = a²` for the Lax matrix `L_ij = p_i δ_ij +
 /// ia/(x_i − x_j)`: `f1 = Σ x_i`, `f2 = Σ x_i p_i`, `f3 = Σ x_i p_i² + g Σ (x_i + x_j)/(x_i −
@@ -91,13 +89,6 @@ claim = "{K2, H} = 0"
 
 fn calogero() -> LoadedSystem {
     load_str("calogero.toml", CALOGERO, &LimitsOverride::default()).expect("the file loads")
-}
-
-fn superint(args: &[&str]) -> std::process::Output {
-    Command::new(env!("CARGO_BIN_EXE_superint"))
-        .args(args)
-        .output()
-        .expect("the superint binary runs")
 }
 
 /// Every bracket the closure writes as a polynomial in the generators, proved again as the

@@ -9,7 +9,7 @@ use std::process::Command;
 use superint::prelude::*;
 use superint::system_file::{load_str, LimitsOverride, LoadedSystem};
 
-use crate::scratch_text;
+use crate::{holds, scratch_text, superint};
 
 const TWO_BODY: &str = "name = \"Calogero two-body\"\n\
                         hamiltonian = \"(p_x^2 + p_y^2)/2 + g/(x - y)^2\"\n\
@@ -21,12 +21,6 @@ const TWO_BODY: &str = "name = \"Calogero two-body\"\n\
 
 fn two_body() -> LoadedSystem {
     load_str("two.toml", TWO_BODY, &LimitsOverride::default()).expect("the file loads")
-}
-
-/// Whether `lhs = rhs` is proved, both read through the system.
-fn holds(file: &LoadedSystem, lhs: &str, rhs: &str) -> bool {
-    let claim = Claim::new("t", "t", file.parse(lhs).unwrap(), file.parse(rhs).unwrap());
-    claim.check().unwrap().outcome.is_proved()
 }
 
 #[test]
@@ -95,13 +89,6 @@ fn denominators_calogero_claims_are_proved_and_the_wrong_coefficient_refuted() {
         "{p_x^3 + p_y^3 + p_z^3 + 2*g*((p_x + p_y)/(x - y)^2 + (p_x + p_z)/(x - z)^2 + (p_y + p_z)/(y - z)^2), H}",
         "0"
     ));
-}
-
-fn superint(args: &[&str]) -> std::process::Output {
-    Command::new(env!("CARGO_BIN_EXE_superint"))
-        .args(args)
-        .output()
-        .expect("the superint binary runs")
 }
 
 #[test]

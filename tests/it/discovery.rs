@@ -3,13 +3,11 @@
 //! finding the quoted output in what it prints. Every command also exits 0, which means that
 //! every integral, bracket and relation it reports was proved by the engine.
 
-use std::process::Command;
-
 use brackets::search::{search, SearchOptions, SearchSpace};
 use superint::system_file::{load, LimitsOverride};
 use trigpoly::{Expr, Rational};
 
-use crate::{normalize, DEGREE_ONE};
+use crate::{normalize, superint, DEGREE_ONE};
 
 /// Every command of `docs/results.md`, by name.
 const COMMANDS: &[(&str, &str)] = &[
@@ -287,15 +285,6 @@ fn system_file(name: &str) -> superint::system_file::LoadedSystem {
         .join("systems")
         .join(name);
     load(&path, &LimitsOverride::default()).expect("the file loads")
-}
-
-/// Runs the binary at the workspace root.
-fn superint(args: &[&str]) -> std::process::Output {
-    Command::new(env!("CARGO_BIN_EXE_superint"))
-        .args(args)
-        .current_dir(env!("CARGO_MANIFEST_DIR"))
-        .output()
-        .expect("the superint binary runs")
 }
 
 /// Runs the named command of the note (with `--no-timings`), expects exit 0, returns stdout.

@@ -90,6 +90,23 @@ pub fn assert_refuted(
     }
 }
 
+/// Runs the superint binary with `args` at the workspace root, and waits for it.
+pub fn superint(args: &[&str]) -> std::process::Output {
+    std::process::Command::new(env!("CARGO_BIN_EXE_superint"))
+        .args(args)
+        .current_dir(env!("CARGO_MANIFEST_DIR"))
+        .output()
+        .expect("the superint binary runs")
+}
+
+/// Whether the identity `lhs = rhs` of a system file is proved, both sides read through it.
+///
+/// **Panics if** a side does not parse: a test's text is fixed.
+pub fn holds(file: &superint::system_file::LoadedSystem, lhs: &str, rhs: &str) -> bool {
+    let claim = brackets::Claim::new("t", "t", file.parse(lhs).unwrap(), file.parse(rhs).unwrap());
+    claim.check().unwrap().outcome.is_proved()
+}
+
 /// Whitespace runs as one space, so that wrapped and padded lines compare.
 pub fn normalize(s: &str) -> String {
     s.split_whitespace().collect::<Vec<_>>().join(" ")

@@ -5,8 +5,6 @@
 //! bounded degree in the Poisson variables, whose dimensions are checked against the span of
 //! the known integrals' products, formed here.
 
-use std::process::{Command, Output};
-
 use brackets::linalg::Matrix;
 use brackets::search::{fix_parameters, search, SearchOptions, SearchResult, SearchSpace};
 use brackets::{EngineError, PhaseSpace, System};
@@ -15,21 +13,14 @@ use std::collections::HashMap;
 use superint::system_file::{load, LimitsOverride, LoadedSystem};
 use trigpoly::{Expr, Rational, VarSet};
 
+use crate::superint;
+
 /// A system file of `systems/`, loaded.
 fn system_file(name: &str) -> LoadedSystem {
     let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR"))
         .join("systems")
         .join(name);
     load(&path, &LimitsOverride::default()).expect("the file loads")
-}
-
-/// The binary at the workspace root.
-fn superint(args: &[&str]) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_superint"))
-        .args(args)
-        .current_dir(env!("CARGO_MANIFEST_DIR"))
-        .output()
-        .expect("the superint binary runs")
 }
 
 fn text(bytes: &[u8]) -> String {

@@ -9,7 +9,7 @@ use std::process::Command;
 use superint::prelude::*;
 use superint::system_file::{load, load_str, LimitsOverride, LoadedSystem};
 
-use crate::scratch_text;
+use crate::{holds, scratch_text, superint};
 
 const PLANAR: &str = "name = \"planar Kepler\"\n\
                       hamiltonian = \"(p_x^2 + p_y^2)/2 - k/r\"\n\
@@ -25,19 +25,6 @@ fn planar() -> LoadedSystem {
 fn kepler() -> LoadedSystem {
     let path = concat!(env!("CARGO_MANIFEST_DIR"), "/systems/kepler-3d.toml");
     load(std::path::Path::new(path), &LimitsOverride::default()).expect("the file loads")
-}
-
-/// Whether `lhs = rhs` is proved, both read through the system.
-fn holds(file: &LoadedSystem, lhs: &str, rhs: &str) -> bool {
-    let claim = Claim::new("t", "t", file.parse(lhs).unwrap(), file.parse(rhs).unwrap());
-    claim.check().unwrap().outcome.is_proved()
-}
-
-fn superint(args: &[&str]) -> std::process::Output {
-    Command::new(env!("CARGO_BIN_EXE_superint"))
-        .args(args)
-        .output()
-        .expect("the superint binary runs")
 }
 
 #[test]
@@ -252,6 +239,14 @@ fn radicals_search_finds_the_laplace_runge_lenz_vector() {
     // Without the radical's powers the vector is not in the space, and H is outside it.
     let v = json(&[&degree_2[..], &["--radicals-degree", "0"]].concat());
     assert_eq!(v["searches"][0]["dimension"], 4, "{v}");
+    let out = search(&[&degree_2[..], &["--radicals-degree", "0"]].concat());
+    assert!(
+        crate::normalize(&out).contains(
+            "H is not in this space (degree 1 in the radicals, past the space's 0 \
+             (SearchSpace::radicals_degree; on the command line, --radicals-degree))"
+        ),
+        "{out}"
+    );
     // Of the 10 · 5 monomials of degree ≤ 2 in x, y, z times r^j, |j| ≤ 2, three equal sums
     // of others and are left out, one for each of r² = x² + y² + z², x²/r + y²/r + z²/r = r
     // and x²/r² + y²/r² + z²/r² = 1.

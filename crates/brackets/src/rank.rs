@@ -109,8 +109,13 @@ pub fn rank(space: &PhaseSpace, functions: &[Expr]) -> Result<RankCertificate, E
     let mut cert = best.ok_or_else(|| {
         EngineError::Invalid(format!(
             "a denominator vanishes at each of the {} sample points, where the functions are \
-             not defined",
-            FIRST_POINTS + EARLY_POINTS
+             not defined{}",
+            FIRST_POINTS + EARLY_POINTS,
+            match space.radicals().is_empty() {
+                true => "",
+                false => ", or no point of small integers makes every radicand the square of \
+                          a rational, where the radicals have exact values",
+            }
         ))
     })?;
     // Upper bound: every minor bordering the nonzero one vanishes identically. The nonzero

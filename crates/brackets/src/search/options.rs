@@ -109,21 +109,29 @@ impl SearchSpace {
                 vars.variable(d).unicode()
             ));
         }
-        let roots = radicals_degree(f);
-        if roots > i64::from(self.radicals_degree) {
-            why.push(format!(
-                "degree {roots} in the radicals, past the space's {} \
-                 (SearchSpace::radicals_degree; on the command line, --radicals-degree)",
-                self.radicals_degree
-            ));
-        }
-        let over = denominators_degree(f);
-        if over > i64::from(self.denominators_degree) {
-            why.push(format!(
-                "degree {over} in the denominators, past the space's {} \
-                 (SearchSpace::denominators_degree; on the command line, --denominators-degree)",
-                self.denominators_degree
-            ));
+        // The degrees that a setting of their own bounds, named as the API and the command line
+        // name it.
+        for (what, d, bound, setting) in [
+            (
+                "radicals",
+                radicals_degree(f),
+                self.radicals_degree,
+                "radicals_degree",
+            ),
+            (
+                "denominators",
+                denominators_degree(f),
+                self.denominators_degree,
+                "denominators_degree",
+            ),
+        ] {
+            if d > i64::from(bound) {
+                why.push(format!(
+                    "degree {d} in the {what}, past the space's {bound} (SearchSpace::{setting}; \
+                     on the command line, --{})",
+                    setting.replace('_', "-")
+                ));
+            }
         }
         if let (false, Some(x)) = (self.laurent, negative(Coordinate)) {
             why.push(format!(

@@ -113,6 +113,9 @@ impl<C: Coefficient> Poly<C> {
     /// ```
     pub fn check_radicals(vars: &Vars) -> Result<(), AlgebraError> {
         let radicals = Self::radicals(vars)?;
+        if radicals.is_empty() {
+            return Ok(());
+        }
         if radicals.len() > MAX_RADICALS {
             return Err(AlgebraError::Invalid(format!(
                 "{} radicals are declared; at most {MAX_RADICALS} are supported",
