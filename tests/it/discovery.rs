@@ -243,6 +243,11 @@ const COMMANDS: &[(&str, &str)] = &[
         "superint search systems/kepler-3d.toml --momenta-degree 2 --positions-degree 1 --new-only",
     ),
     (
+        "gkc-search",
+        "superint search systems/generalized-kepler.toml --momenta-degree 2 --positions-degree 4 \
+         --laurent --symbolic k,b,c --parameters-degree 1 --new-only",
+    ),
+    (
         "sw1-algebra",
         "superint closure systems/smorodinsky-winternitz-i.toml H Hx X --define 'C={Hx, X}' \
          --degree 3 --symbolic alpha,beta,gamma --parameters-degree 3",
@@ -2170,6 +2175,47 @@ fn kepler_in_space_closes_into_so4_with_two_relations() {
         ],
     );
     assert!(!out.contains("[R3"), "{out}");
+}
+
+/// The generalized Kepler–Coulomb system: five integrals of degree 2 for every `k, b, c`, the
+/// file's; with `H` alone known, the four others are new, printed as the file names them.
+#[test]
+fn generalized_kepler_search_finds_four_integrals() {
+    expect(
+        "gkc-search",
+        &[
+            "14320 unknowns",
+            "Dimension of the space of integrals over Q (a parameter's multiple of an integral \
+             counts apart from it): 9.",
+            "Momenta degree exactly 2: 5.",
+            "Known integrals in the space: H, A_z, J_x, J_y, J_z.",
+            "None: the known integrals generate every integral in the space.",
+        ],
+    );
+    let file = std::fs::read_to_string(
+        std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("systems/generalized-kepler.toml"),
+    )
+    .expect("the file reads");
+    let bare = &file[..file.find("[[function]]").expect("functions")];
+    let path = crate::scratch_text("gkc", "bare.toml", bare);
+    let command = COMMANDS.iter().find(|c| c.0 == "gkc-search").unwrap().1;
+    let args = words(command);
+    let mut args: Vec<&str> = args[1..].iter().map(String::as_str).collect();
+    args[1] = path.to_str().unwrap();
+    args.push("--no-timings");
+    let out = superint(&args);
+    let text = normalize(&String::from_utf8(out.stdout).unwrap());
+    assert_eq!(out.status.code(), Some(0), "{text}");
+    for integral in [
+        "Known integrals in the space: H.",
+        "x p_x p_z + y p_y p_z − z p_x² − z p_y² + kz/r − 2cz/y² − 2bz/x²",
+        "y² p_z² − 2yz p_y p_z + z² p_y² + 2cz²/y²",
+        "x² p_z² − 2xz p_x p_z + z² p_x² + 2bz²/x²",
+        "x² p_y² − 2xy p_x p_y + y² p_x² + 2cx²/y² + 2by²/x²",
+    ] {
+        assert!(text.contains(integral), "{integral}: {text}");
+    }
+    assert_eq!(text.matches(" = 0 [I").count(), 4, "{text}");
 }
 
 /// The search through the radical finds the Laplace–Runge–Lenz vector among eight integrals,

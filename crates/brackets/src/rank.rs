@@ -113,7 +113,8 @@ pub fn rank(space: &PhaseSpace, functions: &[Expr]) -> Result<RankCertificate, E
             FIRST_POINTS + EARLY_POINTS,
             match space.radicals().is_empty() {
                 true => "",
-                false => ", or no point of small integers makes every radicand the square of \
+                false =>
+                    ", or no point of small integers makes every radicand the square of \
                           a rational, where the radicals have exact values",
             }
         ))
