@@ -94,6 +94,7 @@ const FUNCTIONS: &[(&str, &str)] = &[
     ("Im", r"\operatorname{Im}"),
     ("rank", r"\operatorname{rank}"),
     ("conj", r"\operatorname{conj}"),
+    ("sqrt", r"\operatorname{sqrt}"),
 ];
 
 /// Short words that are prose, not products of variables.

@@ -49,8 +49,20 @@ fn radicals_zero_is_decided_by_reducing() {
     assert!(holds(&file, "r^2", "x^2 + y^2"));
     assert!(holds(&file, "x^2/r^3 + y^2/r^3", "1/r"));
     assert!(holds(&file, "r^3", "(x^2 + y^2)*r"));
-    // Division by the radicand is by r².
+    // Division by the radicand is by r², and sqrt of it (times a rational square) is r.
     assert!(holds(&file, "x/(x^2 + y^2)", "x/r^2"));
+    assert!(holds(&file, "sqrt(x^2 + y^2)", "r"));
+    assert!(holds(&file, "k/sqrt(9*x^2 + 9*y^2)^3", "k/(27*r^3)"));
+    assert!(holds(&file, "sqrt(9/4)", "3/2"));
+    assert!(!holds(&file, "sqrt(4*x^2 + 4*y^2)", "r"));
+    for (root, message) in [
+        ("sqrt(2)", "sqrt(2) is not a rational number"),
+        ("sqrt(2*x^2 + 2*y^2)", "sqrt(2x² + 2y²) is no declared radical"),
+        ("sqrt(x^2 + 2*y^2)", "radicals = { r = \"x^2 + 2*y^2\" }"),
+    ] {
+        let err = file.parse(root).expect_err(root).to_string();
+        assert!(err.contains(message), "{root}: {err}");
+    }
     // r is no polynomial: neither x nor −x, and r² is not x².
     assert!(!holds(&file, "r", "x"));
     assert!(!holds(&file, "r^2", "x^2"));

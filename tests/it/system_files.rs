@@ -2229,7 +2229,8 @@ fn misspelled_names_point_to_the_known_ones() {
         ),
         (
             "sqrt(x^2 + y^2)",
-            "(polar coordinates, as in systems/kepler.toml)",
+            "sqrt(x² + y²) is no declared radical: declare it (radicals = { r = \"x^2 + y^2\" } \
+             in [phase_space], for a name r of yours), and sqrt of it reads as r",
         ),
     ] {
         let o = superint_in(root(), &["expand", f, expr]);

@@ -302,14 +302,10 @@ impl<C: Coefficient> Lower<'_, C> {
                     .checked_mul(&self.lower(&args[0])?)
                     .map_err(at(span));
             }
+            "sqrt" if args.len() == 1 => return self.sqrt(&args[0], span),
             _ => {
                 let hint = match (did_you_mean(name, &FUNCTIONS), name) {
                     (Some(k), _) => format!("; did you mean '{k}'?"),
-                    (None, "sqrt") => "; expressions are polynomials in the variables, in cos \
-                         and sin of angles and in negative powers of single terms: a potential \
-                         such as 1/sqrt(x^2 + y^2) needs coordinates that make it one (polar \
-                         coordinates, as in systems/kepler.toml)"
-                        .to_string(),
                     (None, "tan" | "log" | "ln" | "atan" | "arctan" | "abs") => "; expressions \
                          are polynomials in the variables, in cos and sin of angles and in \
                          negative powers of single terms"
@@ -361,6 +357,25 @@ impl<C: Coefficient> Lower<'_, C> {
                 .map(|p| p * &Rational::new(-1, 2))
                 .map_err(wrap),
         }
+    }
+
+    /// `sqrt(E)`: a declared radical `r` when `E` is its radicand times the square of a
+    /// positive rational (`sqrt(4*x^2 + 4*y^2)` is `2r` for `r = √(x² + y²)`), or the rational
+    /// root of a constant; any other root is refused with the declaration that makes it one.
+    fn sqrt(&self, arg: &Expr, span: Span) -> Result<Poly<C>, ParseError> {
+        let value = self.lower(arg)?;
+        if let Some(root) = Poly::root_by_radicals(&value).map_err(at(span))? {
+            return Ok(root);
+        }
+        let message = match value.as_constant() {
+            Some(c) => format!("sqrt({c}) is not a rational number: write the root as a parameter"),
+            None => format!(
+                "sqrt({value}) is no declared radical: declare it (radicals = {{ r = \"{}\" }} \
+                 in [phase_space], for a name r of yours), and sqrt of it reads as r",
+                value.to_ascii()
+            ),
+        };
+        Err(ParseError::new(span, message))
     }
 
     /// The multiples `n_j` in `cos(Σ n_j θ_j)`, `sin(Σ n_j θ_j)` or `exp(i Σ n_j θ_j)`: the

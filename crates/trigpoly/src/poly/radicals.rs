@@ -181,6 +181,41 @@ impl<C: Coefficient> Poly<C> {
         Ok(())
     }
 
+    /// The root of `e` by a declared radical: `c·r` when `e = c²·R` for a radical `r` with
+    /// radicand `R` and a positive rational `c`, or the positive rational root of a constant
+    /// that is a rational square; `None` otherwise (the root of `x²` is `|x|`, no polynomial).
+    pub(crate) fn root_by_radicals(e: &Self) -> Result<Option<Self>, AlgebraError> {
+        if let Some(c) = e.as_constant() {
+            let c = c.to_gaussian();
+            let root = match c.is_real() {
+                true => c.re.sqrt(),
+                false => None,
+            };
+            return Ok(root.map(|q| Self::constant(&e.vars, C::from_rational(q))));
+        }
+        for (r, radicand) in Self::radicals(&e.vars)? {
+            let (Some(lead_e), Some(lead_r)) = (e.terms().next(), radicand.terms().next()) else {
+                continue;
+            };
+            if lead_e.exponents() != lead_r.exponents() {
+                continue;
+            }
+            // A radicand is real: its leading coefficient is a nonzero rational.
+            let (ce, cr) = (lead_e.coeff().to_gaussian(), lead_r.coeff().to_gaussian());
+            if !ce.is_real() {
+                continue;
+            }
+            let q = &ce.re / &cr.re;
+            if radicand.scale_rational(&q) != *e {
+                continue;
+            }
+            if let Some(c) = q.sqrt() {
+                return Ok(Some(Self::var(&e.vars, r).scale_rational(&c)));
+            }
+        }
+        Ok(None)
+    }
+
     /// For each radical of the set, the power of it that clears `self` of its negative
     /// powers (`max(0, −lowest exponent)`), with its radicand: what
     /// [`Poly::reduce_radicals`] takes to reduce `self`.
