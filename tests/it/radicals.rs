@@ -57,7 +57,10 @@ fn radicals_zero_is_decided_by_reducing() {
     assert!(!holds(&file, "sqrt(4*x^2 + 4*y^2)", "r"));
     for (root, message) in [
         ("sqrt(2)", "sqrt(2) is not a rational number"),
-        ("sqrt(2*x^2 + 2*y^2)", "sqrt(2x² + 2y²) is no declared radical"),
+        (
+            "sqrt(2*x^2 + 2*y^2)",
+            "sqrt(2x² + 2y²) is no declared radical",
+        ),
         ("sqrt(x^2 + 2*y^2)", "radicals = { r = \"x^2 + 2*y^2\" }"),
     ] {
         let err = file.parse(root).expect_err(root).to_string();
