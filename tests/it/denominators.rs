@@ -470,3 +470,41 @@ fn denominators_search_keeps_a_parameter_symbolic_when_no_denominator_holds_it()
         "{err}"
     );
 }
+
+/// A parameter inside a denominator, fixed for the linear algebra: each integral found is
+/// proved at the fixed values with the denominator at them too (it was refuted, the zero test
+/// taking `x − a` with `a` symbolic while the integral had `a = 1`), then lifted and proved for
+/// every value.
+#[test]
+fn denominators_search_proves_at_the_fixed_value_of_a_parameter_inside_a_denominator() {
+    let text = "name = \"shifted\"\n\
+                hamiltonian = \"(p_x^2 + p_y^2)/2 + g/(x - a)^2\"\n\
+                [phase_space]\n\
+                coordinates = [\"x\", \"y\"]\n\
+                parameters = [\"g\", \"a\"]\n\
+                denominators = [\"x - a\"]\n";
+    let f = scratch_text("denominators-parameter", "shifted.toml", text);
+    let o = superint(&[
+        "search",
+        f.to_str().unwrap(),
+        "--momenta-degree",
+        "2",
+        "--positions-degree",
+        "1",
+        "--format",
+        "json",
+    ]);
+    assert_eq!(o.status.code(), Some(0));
+    let v: serde_json::Value = serde_json::from_slice(&o.stdout).unwrap();
+    assert_eq!(v["searches"][0]["dimension"], 5, "{v}");
+    assert_eq!(v["summary"]["refuted"], 0, "{v}");
+    assert_eq!(v["searches"][0]["for_every_value"], 5, "{v}");
+    let text = String::from_utf8(
+        superint(&["search", f.to_str().unwrap(), "--momenta-degree", "2"]).stdout,
+    )
+    .unwrap();
+    assert!(
+        crate::normalize(&text).contains("x p_x p_y − y p_x² − a p_x p_y − 2gy/(x − a)²"),
+        "{text}"
+    );
+}

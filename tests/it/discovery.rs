@@ -248,6 +248,11 @@ const COMMANDS: &[(&str, &str)] = &[
          --laurent --symbolic k,b,c --parameters-degree 1 --new-only",
     ),
     (
+        "two-centres-search",
+        "superint search systems/two-centres.toml --momenta-degree 2 --positions-degree 2 \
+         --radicals-degree 2 --fix a=1 --new-only",
+    ),
+    (
         "sw1-algebra",
         "superint closure systems/smorodinsky-winternitz-i.toml H Hx X --define 'C={Hx, X}' \
          --degree 3 --symbolic alpha,beta,gamma --parameters-degree 3",
@@ -2216,6 +2221,49 @@ fn generalized_kepler_search_finds_four_integrals() {
         assert!(text.contains(integral), "{integral}: {text}");
     }
     assert_eq!(text.matches(" = 0 [I").count(), 4, "{text}");
+}
+
+/// Two radicals: the file's H, L_x and Euler's G generate the five integrals; with H alone,
+/// L_x and G are new, G printed without r² or s².
+#[test]
+fn two_centres_search_finds_eulers_integral() {
+    expect(
+        "two-centres-search",
+        &[
+            "1130 unknowns",
+            "Dimension of the space of integrals: 5.",
+            "Known integrals in the space: H, L_x, G.",
+            "None: the known integrals generate every integral in the space.",
+            "1 claim: 1 proved, 0 refuted",
+        ],
+    );
+    let file = std::fs::read_to_string(
+        std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("systems/two-centres.toml"),
+    )
+    .expect("the file reads");
+    let bare = &file[..file.find("[[function]]").expect("functions")];
+    let path = crate::scratch_text("two-centres", "bare.toml", bare);
+    let command = COMMANDS
+        .iter()
+        .find(|c| c.0 == "two-centres-search")
+        .unwrap()
+        .1;
+    let args = words(command);
+    let mut args: Vec<&str> = args[1..].iter().map(String::as_str).collect();
+    args[1] = path.to_str().unwrap();
+    args.push("--no-timings");
+    let out = superint(&args);
+    let text = normalize(&String::from_utf8(out.stdout).unwrap());
+    assert_eq!(out.status.code(), Some(0), "{text}");
+    for piece in [
+        "Known integrals in the space: H.",
+        "y p_z − z p_y",
+        "x² p_y² + x² p_z² − 2xy p_x p_y − 2xz p_x p_z + y² p_x² + z² p_x² − p_y² − p_z² + 2x/s \
+         − 2x/r + 2/s + 2/r",
+    ] {
+        assert!(text.contains(piece), "{piece}: {text}");
+    }
+    assert!(!text.contains("REFUTED"), "{text}");
 }
 
 /// The search through the radical finds the Laplace–Runge–Lenz vector among eight integrals,

@@ -315,7 +315,7 @@ pub fn search(system: &System, options: &SearchOptions) -> Result<SearchResult, 
         .map(|v| {
             *v = primitive_vector(v);
             let fixed = problem.combination(v)?;
-            let proved_fixed = problem.flow(system, &fixed)?.vanishes()?;
+            let proved_fixed = problem.vanishes(system, &problem.flow(system, &fixed)?)?;
             let last = lead(v).expect("a kernel vector is not zero").0;
             let reference = problem.leading_exponents(last);
             let symbolic = match &lifter {

@@ -65,7 +65,7 @@ pub(super) fn new_integrals(
         }
         let fv = fix_parameters(&f, parameters)?;
         let flow = problem.flow(system, &fv)?;
-        if !flow.vanishes()? {
+        if !problem.vanishes(system, &flow)? {
             if given {
                 return Err(not_an_integral(&name, &flow, options, parameters));
             }

@@ -4,6 +4,7 @@
 use rayon::prelude::*;
 use trigpoly::{Expr, GaussianRational, MonomialIndex, Rational, Term, Var, VarKind, Vars};
 
+use crate::clearing::Clearing;
 use crate::error::EngineError;
 use crate::modular::{Field, Fp, SparseVec};
 use crate::system::System;
@@ -47,14 +48,17 @@ pub(super) struct Unknown {
 
 impl Unknown {
     /// Its degrees in the order of the unknowns, simpler first: momenta, Poisson variables,
-    /// trigonometric order, positions, radicals, denominators, parameters.
+    /// trigonometric order, radicals, positions, denominators, parameters. The radicals come
+    /// before the positions so that where a power of a radical equals a polynomial
+    /// (`x r² = x³ + xy² + xz²`), the polynomial's monomials are kept and the radical's left
+    /// out, and integrals print with the fewest radicals.
     pub(super) fn degrees(&self) -> [i64; 7] {
         [
             self.momenta_degree,
             self.poisson_degree,
             self.trig_degree,
-            self.positions_degree,
             self.radicals_degree,
+            self.positions_degree,
             self.denominators_degree,
             self.parameters_degree,
         ]
@@ -83,6 +87,8 @@ pub(super) struct Problem {
     /// The fixed Hamiltonian and condition.
     pub(super) h: Expr,
     pub(super) condition: Option<Vec<(Var, Expr)>>,
+    /// The parameters at fixed values, with them.
+    pub(super) parameters: Vec<(Var, Rational)>,
     /// `{φ, H} = Σ_v ∂φ/∂v · {v, H}`: for each phase variable `v` with `{v, H}` not zero after
     /// the condition, `v`, that part of `{v, H}` and whether it enters negated: `∂H/∂p` for a
     /// coordinate, `∂H/∂q` negated for a momentum, and the declared brackets' part
@@ -274,6 +280,7 @@ impl Problem {
             slots,
             h,
             condition: cond,
+            parameters: parameters.to_vec(),
             flow_parts: Vec::new(),
         };
         let gradient = system.space().gradient(&problem.h)?;
@@ -396,9 +403,29 @@ impl Problem {
         }
     }
 
-    /// `{f, H}` after the condition, at the fixed values.
+    /// `{f, H}` after the condition, at the fixed values (also those that the atoms' brackets
+    /// and the radicals' hold through their polynomials, `{(x − a), p_x}`).
     pub(super) fn flow(&self, system: &System, f: &Expr) -> Result<Expr, EngineError> {
-        self.apply_condition(system.bracket(f, &self.h)?)
+        let flow = fix_parameters(&system.bracket(f, &self.h)?, &self.parameters)?;
+        self.apply_condition(flow)
+    }
+
+    /// Whether `flow`, a function at the fixed values, is zero: decided with the atoms'
+    /// polynomials and the radicands at the fixed values too (through one [`Clearing`]), where
+    /// the ring's own zero test (`vanishes`) takes them with symbolic parameters, which would
+    /// leave a residual in the parameters an atom holds (`1/(x − a)` at `a = 1`).
+    pub(super) fn vanishes(&self, system: &System, flow: &Expr) -> Result<bool, EngineError> {
+        let space = system.space();
+        let clearing = Clearing::new(
+            space.denominator_atoms(),
+            space.radicals(),
+            &self.parameters,
+            std::iter::once(flow),
+        )?;
+        Ok(match clearing {
+            Some(clearing) => clearing.apply(flow)?.is_zero(),
+            None => flow.is_zero(),
+        })
     }
 
     /// The integrals an integral `f` splits into: its `e^{ik·θ}` components `f_k e^{ik·θ}`,

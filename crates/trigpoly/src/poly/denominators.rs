@@ -7,7 +7,6 @@
 //! is the zero polynomial, atom after atom. Equal elements may have different terms (`v · D`
 //! and `1`), so every decision of zero on a set with atoms goes through [`Poly::vanishes`].
 
-use super::radicals::ReducedRadical;
 use super::Poly;
 use crate::error::AlgebraError;
 use crate::number::Coefficient;
@@ -133,17 +132,14 @@ impl<C: Coefficient> Poly<C> {
     /// `r² = R` ([`Poly::reduce_radicals`]), which leaves each radical to the power 0 or 1.
     /// Without atoms or radicals, `self`.
     pub fn cleared(&self) -> Result<Self, AlgebraError> {
-        Ok(self.cleared_with_powers()?.0)
+        let reduced = self.reduce_radicals(&self.radical_powers()?)?;
+        Ok(reduced.cleared_of_atoms()?.0)
     }
 
-    /// [`Poly::cleared`] and, for each atom with its polynomial `D`, the power `N` of `D` it
-    /// multiplied by, and for each radical with its radicand, the power of it.
-    #[allow(clippy::type_complexity)]
-    fn cleared_with_powers(
-        &self,
-    ) -> Result<(Self, Vec<ClearedAtom<C>>, Vec<ReducedRadical<C>>), AlgebraError> {
-        let radicals = self.radical_powers()?;
-        let mut p = self.reduce_radicals(&radicals)?;
+    /// `self` cleared of its denominator atoms alone (its radicals left as they are), and for
+    /// each atom with its polynomial `D`, the power `N` of `D` it multiplied by.
+    fn cleared_of_atoms(&self) -> Result<(Self, Vec<ClearedAtom<C>>), AlgebraError> {
+        let mut p = self.clone();
         let mut powers = Vec::new();
         for (v, d) in Self::denominator_atoms(&self.vars)? {
             let n = -p.low_degree(v).unwrap_or(0).min(0);
@@ -153,19 +149,27 @@ impl<C: Coefficient> Poly<C> {
             p = p.subst(v, &d)?;
             powers.push((v, d, n));
         }
-        Ok((p, powers, radicals))
+        Ok((p, powers))
     }
 
-    /// The element over a common denominator: its cleared numerator ([`Poly::cleared`]) times
+    /// The element over a common denominator: its numerator cleared of the atoms times
     /// `Π v^{−N}`, `N` the power of each atom cleared, so that whether it is zero shows (the
-    /// numerator is a polynomial in normal form); with radicals, each to the power 0 or 1 in
-    /// the numerator, over the least power of it. The same element; without atoms or radicals,
-    /// `self`.
+    /// numerator is a polynomial in normal form); with radicals, first written with the least
+    /// powers of each ([`Poly::with_least_radical_powers`]), and 0 when it is zero. The same
+    /// element; without atoms or radicals, `self`.
     pub fn over_common_denominator(&self) -> Result<Self, AlgebraError> {
         if !Self::has_relations(&self.vars) {
             return Ok(self.clone());
         }
-        let (mut out, mut powers, radicals) = self.cleared_with_powers()?;
+        let reduced = match Self::has_radicals(&self.vars) {
+            true if self.vanishes()? => return Ok(Self::zero(&self.vars)),
+            true => self.with_least_radical_powers()?,
+            false => self.clone(),
+        };
+        if !Self::has_denominator_atoms(&self.vars) {
+            return Ok(reduced);
+        }
+        let (mut out, mut powers) = reduced.cleared_of_atoms()?;
         // The numerator loses each factor `D` it has (`(x² + y²)/(x² + y²)` is 1), as far as
         // exact division finds them.
         for (_, d, n) in &mut powers {
@@ -179,7 +183,6 @@ impl<C: Coefficient> Poly<C> {
                 }
             }
         }
-        out = Self::lowest_radical_powers(out, radicals)?;
         for (v, _, n) in powers {
             if n > 0 && !out.is_zero() {
                 out = out.checked_mul(&Self::var(&self.vars, v).checked_pow(-n)?)?;

@@ -292,33 +292,82 @@ impl<C: Coefficient> Poly<C> {
         Ok(out)
     }
 
-    /// The element `Π r^{−M} · p` written with the least powers of `1/r`: `p` is reduced (each
-    /// radical to the power 0 or 1, as [`Poly::reduce_radicals`] leaves it, and free of atoms),
-    /// and while `p = A + B r` with `R` dividing `A`, `(A + B r)/r^M = (B + (A/R) r)/r^{M−1}`.
-    /// The same element, with no factor `r` common to its numerator and denominator.
-    pub(super) fn lowest_radical_powers(
-        mut p: Self,
-        radicals: Vec<ReducedRadical<C>>,
-    ) -> Result<Self, AlgebraError> {
-        let vars = p.vars.clone();
-        for (r, radicand, mut m) in radicals {
-            let rv = Self::var(&vars, r);
-            while m > 0 {
-                let b = p.derivative(r)?;
-                let a = p.checked_sub(&b.checked_mul(&rv)?)?;
-                match a.quotient_by(&radicand)? {
-                    Some(a) => {
-                        p = b.checked_add(&a.checked_mul(&rv)?)?;
-                        m -= 1;
-                    }
-                    None => break,
-                }
+    /// The same element written with the least powers of its radicals, as results are shown:
+    /// for each radical `r` in turn, the terms with the same powers of the other radicals
+    /// (`s^{−3}`) are taken together, multiplied by the `r^M` that clears their `1/r`, reduced
+    /// by `r² = R` to `A + B r`, and while `R` divides `A`,
+    /// `(A + B r)/r^M = (B + (A/R) r)/r^{M−1}`; so `x²/r³ + y²/r³` is `1/r` for `R = x² + y²`,
+    /// `r³` is `x²r + y²r`, and `k/r³ + m/s³` stays as it is.
+    pub fn with_least_radical_powers(&self) -> Result<Self, AlgebraError> {
+        let vars = self.vars.clone();
+        let radicals = Self::radicals(&vars)?;
+        let mut p = self.clone();
+        for (k, (r, radicand)) in radicals.iter().enumerate() {
+            let others: Vec<usize> = radicals
+                .iter()
+                .enumerate()
+                .filter(|&(j, _)| j != k)
+                .map(|(_, (s, _))| s.index())
+                .collect();
+            let mut groups: BTreeMap<Vec<i64>, Vec<(C, Vec<i64>)>> = BTreeMap::new();
+            for t in p.terms() {
+                let e = t.exponents();
+                let key = others.iter().map(|&j| e[j]).collect();
+                groups.entry(key).or_default().push((t.coeff(), e));
             }
-            if m > 0 && !p.is_zero() {
-                p = p.checked_mul(&rv.checked_pow(-m)?)?;
+            let mut out = Self::zero(&vars);
+            for terms in groups.into_values() {
+                let group = Self::from_terms(&vars, terms)?;
+                out = out.checked_add(&group.least_powers_of(*r, radicand)?)?;
             }
+            p = out;
         }
         Ok(p)
+    }
+
+    /// [`Poly::with_least_radical_powers`] for one radical `r` with radicand `R`.
+    fn least_powers_of(&self, r: Var, radicand: &Self) -> Result<Self, AlgebraError> {
+        let mut m = -self.low_degree(r).unwrap_or(0).min(0);
+        let mut p = self.reduce_radical(r, radicand, m)?;
+        let rv = Self::var(&self.vars, r);
+        while m > 0 {
+            let b = p.derivative(r)?;
+            let a = p.checked_sub(&b.checked_mul(&rv)?)?;
+            match a.laurent_quotient_by(radicand)? {
+                Some(a) => {
+                    p = b.checked_add(&a.checked_mul(&rv)?)?;
+                    m -= 1;
+                }
+                None => break,
+            }
+        }
+        if m > 0 && !p.is_zero() {
+            p = p.checked_mul(&rv.checked_pow(-m)?)?;
+        }
+        Ok(p)
+    }
+
+    /// `self / d` when `d` divides `self` exactly, negative powers allowed in `self` (`c/x³` and
+    /// a radicand in `x`): the division runs on `self` times the monomial that clears them, a
+    /// unit, whose inverse then multiplies the quotient.
+    fn laurent_quotient_by(&self, d: &Self) -> Result<Option<Self>, AlgebraError> {
+        let unit: Vec<(Var, i64)> = self
+            .vars
+            .vars()
+            .filter_map(|v| {
+                self.low_degree(v)
+                    .filter(|&low| low < 0)
+                    .map(|low| (v, -low))
+            })
+            .collect();
+        if unit.is_empty() {
+            return self.quotient_by(d);
+        }
+        let unit = Self::monomial(&self.vars, C::one(), &unit)?;
+        let Some(q) = self.checked_mul(&unit)?.quotient_by(d)? else {
+            return Ok(None);
+        };
+        Ok(Some(q.checked_mul(&unit.checked_pow(-1)?)?))
     }
 }
 
@@ -367,6 +416,36 @@ mod tests {
         assert_eq!(reduced("r^2"), e("x^2 + y^2 + z^2"));
         assert_eq!(reduced("(x^2 + y^2 + z^2)/r - r"), e("0"));
         assert_eq!(reduced("x*r^3"), e("x*(x^2 + y^2 + z^2)*r"));
+        // A radicand divides a numerator with negative powers too.
+        assert_eq!(reduced("k*(x^2 + y^2 + z^2)/(x^3*r^2)"), e("k/x^3"));
+        assert_eq!(
+            reduced("k*x^2/(y*r^3) + k*(y^2 + z^2)/(y*r^3)"),
+            e("k/(y*r)")
+        );
+    }
+
+    /// With two radicals, each is written with its least powers among the terms that share
+    /// the other's: `k/r³ + m/s³` is not brought to one power of both.
+    #[test]
+    fn two_radicals_keep_their_own_powers() {
+        let vars = VarSet::builder()
+            .coordinate("x")
+            .coordinate("y")
+            .parameter("k")
+            .parameter("m")
+            .radical("r", "(x - 1)^2 + y^2")
+            .radical("s", "(x + 1)^2 + y^2")
+            .build()
+            .unwrap();
+        let e = |s: &str| Expr::parse(&vars, s).unwrap();
+        let reduced = |s: &str| e(s).over_common_denominator().unwrap();
+        assert_eq!(reduced("k/r^3 + m/s^3"), e("k/r^3 + m/s^3"));
+        assert_eq!(reduced("r^2/s - (x - 1)^2/s - y^2/s + m/s"), e("m/s"));
+        assert_eq!(reduced("r*s/r"), e("s"));
+        assert!(e("r^2*s^2 - ((x - 1)^2 + y^2)*((x + 1)^2 + y^2)")
+            .vanishes()
+            .unwrap());
+        assert!(!e("r*s - (x^2 + y^2 + 1)").vanishes().unwrap());
     }
 
     #[test]
