@@ -297,7 +297,9 @@ impl<C: Coefficient> Poly<C> {
     /// (`s^{−3}`) are taken together, multiplied by the `r^M` that clears their `1/r`, reduced
     /// by `r² = R` to `A + B r`, and while `R` divides `A`,
     /// `(A + B r)/r^M = (B + (A/R) r)/r^{M−1}`; so `x²/r³ + y²/r³` is `1/r` for `R = x² + y²`,
-    /// `r³` is `x²r + y²r`, and `k/r³ + m/s³` stays as it is.
+    /// `r³` is `x²r + y²r`, and `k/r³ + m/s³` stays as it is. A group whose terms are fewer
+    /// than that and have no power of `r` above 1 is kept as it is (`1/r + x/r³`): the form is
+    /// one of the element's, chosen to read short, not a normal form.
     pub fn with_least_radical_powers(&self) -> Result<Self, AlgebraError> {
         let vars = self.vars.clone();
         let radicals = Self::radicals(&vars)?;
@@ -343,6 +345,12 @@ impl<C: Coefficient> Poly<C> {
         }
         if m > 0 && !p.is_zero() {
             p = p.checked_mul(&rv.checked_pow(-m)?)?;
+        }
+        // The terms as they were when they are fewer and no power of `r` in them could be
+        // lowered (`1/r + x/r³`, not `x²/r³ + x/r³ + y²/r³ + z²/r³`).
+        let lowered = self.degree(r).is_none_or(|d| d <= 1);
+        if lowered && self.len() < p.len() {
+            return Ok(self.clone());
         }
         Ok(p)
     }
@@ -422,6 +430,8 @@ mod tests {
             reduced("k*x^2/(y*r^3) + k*(y^2 + z^2)/(y*r^3)"),
             e("k/(y*r)")
         );
+        // Shorter as written: kept.
+        assert_eq!(reduced("1/r + x/r^3"), e("1/r + x/r^3"));
     }
 
     /// With two radicals, each is written with its least powers among the terms that share
