@@ -3,6 +3,8 @@
 //! finding the quoted output in what it prints. Every command also exits 0, which means that
 //! every integral, bracket and relation it reports was proved by the engine.
 
+use std::path::Path;
+
 use brackets::search::{search, SearchOptions, SearchSpace};
 use superint::system_file::{load, LimitsOverride};
 use trigpoly::{Expr, Rational};
@@ -291,7 +293,7 @@ fn words(command: &str) -> Vec<String> {
 
 /// A system file of `systems/`, loaded.
 fn system_file(name: &str) -> superint::system_file::LoadedSystem {
-    let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR"))
+    let path = Path::new(env!("CARGO_MANIFEST_DIR"))
         .join("systems")
         .join(name);
     load(&path, &LimitsOverride::default()).expect("the file loads")
@@ -317,6 +319,29 @@ fn run(name: &str) -> String {
         String::from_utf8_lossy(&out.stderr)
     );
     stdout
+}
+
+/// Runs the named command on a copy of its system file cut before the first
+/// `[[function]]`, so that `H` is the only integral it knows; expects exit 0, returns stdout
+/// with its whitespace normalized.
+fn run_on_hamiltonian_alone(name: &str) -> String {
+    let command = COMMANDS
+        .iter()
+        .find(|c| c.0 == name)
+        .unwrap_or_else(|| panic!("no command {name}"))
+        .1;
+    let args = words(command);
+    let file = std::fs::read_to_string(Path::new(env!("CARGO_MANIFEST_DIR")).join(&args[2]))
+        .expect("the file reads");
+    let bare = &file[..file.find("[[function]]").expect("functions")];
+    let path = crate::scratch_text("hamiltonian-alone", &format!("{name}.toml"), bare);
+    let mut args: Vec<&str> = args[1..].iter().map(String::as_str).collect();
+    args[1] = path.to_str().expect("a path");
+    args.push("--no-timings");
+    let out = superint(&args);
+    let text = normalize(&String::from_utf8(out.stdout).expect("UTF-8"));
+    assert_eq!(out.status.code(), Some(0), "{text}");
+    text
 }
 
 /// Runs the named command and asserts that each expected piece of output appears.
@@ -1807,7 +1832,7 @@ fn two_rotors() -> String {
 
 /// The system file at `path`, loaded.
 fn loaded(path: &str) -> superint::system_file::LoadedSystem {
-    load(std::path::Path::new(path), &LimitsOverride::default()).expect("the file loads")
+    load(Path::new(path), &LimitsOverride::default()).expect("the file loads")
 }
 
 /// The `--new-only` search of `space`: the basis integrals, each with whether it is new.
@@ -2197,20 +2222,7 @@ fn generalized_kepler_search_finds_four_integrals() {
             "None: the known integrals generate every integral in the space.",
         ],
     );
-    let file = std::fs::read_to_string(
-        std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("systems/generalized-kepler.toml"),
-    )
-    .expect("the file reads");
-    let bare = &file[..file.find("[[function]]").expect("functions")];
-    let path = crate::scratch_text("gkc", "bare.toml", bare);
-    let command = COMMANDS.iter().find(|c| c.0 == "gkc-search").unwrap().1;
-    let args = words(command);
-    let mut args: Vec<&str> = args[1..].iter().map(String::as_str).collect();
-    args[1] = path.to_str().unwrap();
-    args.push("--no-timings");
-    let out = superint(&args);
-    let text = normalize(&String::from_utf8(out.stdout).unwrap());
-    assert_eq!(out.status.code(), Some(0), "{text}");
+    let text = run_on_hamiltonian_alone("gkc-search");
     for integral in [
         "Known integrals in the space: H.",
         "x p_x p_z + y p_y p_z − z p_x² − z p_y² + kz/r − 2cz/y² − 2bz/x²",
@@ -2237,24 +2249,7 @@ fn two_centres_search_finds_eulers_integral() {
             "1 claim: 1 proved, 0 refuted",
         ],
     );
-    let file = std::fs::read_to_string(
-        std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("systems/two-centres.toml"),
-    )
-    .expect("the file reads");
-    let bare = &file[..file.find("[[function]]").expect("functions")];
-    let path = crate::scratch_text("two-centres", "bare.toml", bare);
-    let command = COMMANDS
-        .iter()
-        .find(|c| c.0 == "two-centres-search")
-        .unwrap()
-        .1;
-    let args = words(command);
-    let mut args: Vec<&str> = args[1..].iter().map(String::as_str).collect();
-    args[1] = path.to_str().unwrap();
-    args.push("--no-timings");
-    let out = superint(&args);
-    let text = normalize(&String::from_utf8(out.stdout).unwrap());
-    assert_eq!(out.status.code(), Some(0), "{text}");
+    let text = run_on_hamiltonian_alone("two-centres-search");
     for piece in [
         "Known integrals in the space: H.",
         "y p_z − z p_y",
