@@ -99,9 +99,10 @@ impl<C: Coefficient> Poly<C> {
     /// Checks that the radicals of `vars` are independent: that no product of their radicands
     /// (one radicand alone included) is the square of a rational function, where the radicals'
     /// products would satisfy relations that [`Poly::vanishes`] does not know (`√(x²)` is
-    /// `±x`). A product is shown not to be a square by a point of small integers where its
-    /// value is a nonzero rational that is not a rational square; one that is a square at
-    /// every point tried is refused as one.
+    /// `±x`). Coefficients are in Q(i), where `−S²` is the square `(iS)²`, so a product is
+    /// shown not to be a square by a point of small integers where its value is a nonzero
+    /// rational whose absolute value is not a rational square; one that is a square up to sign
+    /// at every point tried is refused as one.
     ///
     /// ```
     /// use trigpoly::{Expr, VarSet};
@@ -150,7 +151,7 @@ impl<C: Coefficient> Poly<C> {
                     .enumerate()
                     .filter(|&(i, _)| chosen(i))
                     .fold(Rational::one(), |acc, (_, v)| &acc * v);
-                product.sqrt().is_none()
+                product.abs().sqrt().is_none()
             });
             if !not_square {
                 let names: Vec<String> = radicals
@@ -479,6 +480,10 @@ mod tests {
         let product = build(&[("r", "x^2 + y^2"), ("s", "4*x^2 + 4*y^2")]);
         let err = Expr::check_radicals(&product).unwrap_err().to_string();
         assert!(err.contains("the product of the radicands of r"), "{err}");
+        // Over Q(i), −(x + y)² is the square of i(x + y).
+        let imaginary = build(&[("r", "-x^2 - 2*x*y - y^2")]);
+        assert!(Expr::check_radicals(&imaginary).is_err());
+        assert!(Expr::check_radicals(&build(&[("r", "-x^2 - y^2")])).is_ok());
         let constant = build(&[("r", "2")]);
         assert!(Expr::check_radicals(&constant).is_err());
         let inside = build(&[("r", "x^2 + y^2"), ("s", "r + x")]);
