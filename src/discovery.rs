@@ -318,25 +318,20 @@ fn space_text(r: &SearchResult) -> String {
     };
     // With denominators or radicals, a monomial equal as a function to a sum of simpler ones
     // is left out.
-    let dependent = match (atoms.is_empty(), radical_vars.as_slice()) {
-        (true, []) => String::new(),
+    let first_radical = trigpoly::Expr::radicals(&r.vars)
+        .ok()
+        .and_then(|radicals| radicals.into_iter().next());
+    let dependent = match (atoms.is_empty(), first_radical) {
+        (true, None) => String::new(),
         (false, _) => " (with denominators the monomials are not independent, \
                         `x/(x − y) − y/(x − y) = 1`: each one equal as a function to a sum of \
                         simpler ones is left out)"
             .to_string(),
-        (true, [radical, ..]) => {
-            let radical = name(radical);
-            let radicand = r
-                .vars
-                .variable(*radical_vars.first().expect("a radical"))
-                .radicand()
-                .and_then(|t| trigpoly::Expr::parse(&r.vars, t).ok())
-                .map_or_else(String::new, |e| e.to_string());
-            format!(
-                " (with radicals the monomials are not independent, `{radical}² = \
-                 {radicand}`: each one equal as a function to a sum of simpler ones is left out)"
-            )
-        }
+        (true, Some((radical, radicand))) => format!(
+            " (with radicals the monomials are not independent, `{}² = {radicand}`: each one \
+             equal as a function to a sum of simpler ones is left out)",
+            name(&radical)
+        ),
     };
     format!(
         "The space: `{monomial}`{trig_factor}, with {}{symbolic}: {}{dependent}, {} over `Q`, in {} \
@@ -667,21 +662,26 @@ pub fn search_report(
         // do a radical's, of either sign (`1/r`).
         let denominator = r.vars.denominators().next();
         let radical = r.vars.radicals().next();
-        let variables = match (r.variables.poisson.is_empty(), canonical, denominator) {
-            (true, _, Some(d)) => format!(
+        let unicode = |v: Var| r.vars.variable(v).unicode();
+        let variables = match (
+            r.variables.poisson.is_empty(),
+            canonical,
+            denominator,
+            radical,
+        ) {
+            (true, _, Some(d), _) => format!(
                 "in the coordinates, momenta and denominators together, `1/{}` of degree 1",
-                r.vars.variable(d).unicode()
+                unicode(d)
             ),
-            (true, _, None) if radical.is_some() => {
-                let name = r.vars.variable(radical.expect("a radical")).unicode();
-                format!(
-                    "in the coordinates, momenta and radicals together, `{name}` and `1/{name}` \
-                     of degree 1"
-                )
+            (true, _, None, Some(radical)) => format!(
+                "in the coordinates, momenta and radicals together, `{0}` and `1/{0}` of degree 1",
+                unicode(radical)
+            ),
+            (true, _, None, None) => "in the coordinates and momenta together".into(),
+            (false, false, _, _) => "in the Poisson variables".into(),
+            (false, true, _, _) => {
+                "in the coordinates, momenta and Poisson variables together".into()
             }
-            (true, _, None) => "in the coordinates and momenta together".into(),
-            (false, false, _) => "in the Poisson variables".into(),
-            (false, true, _) => "in the coordinates, momenta and Poisson variables together".into(),
         };
         let rule = if r.variables.angles.is_empty() {
             format!(

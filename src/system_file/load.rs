@@ -839,22 +839,8 @@ impl<'a> Builder<'a> {
             let text = self.text(radicand);
             let value = Expr::parse(&vars, &text.value)
                 .map_err(|e| super::scope::expression_error(&self.source, &text, &e))?;
-            let refuse = |why: String| Err(self.error(ErrorKind::Expression, radicand.span(), why));
-            if value.is_constant() {
-                return refuse(format!(
-                    "the radicand of {} is the constant {value}: a radical stands for the root \
-                     of a function of the variables (write a constant root as a parameter)",
-                    name.get_ref()
-                ));
-            }
-            if value.conj() != value {
-                return refuse(format!("the radicand {value} is not real"));
-            }
-            if vars.angles().any(|a| value.contains(a)) {
-                return refuse(format!(
-                    "the radicand {value} has an angle in it: a radicand is a polynomial in the \
-                     coordinates, momenta and parameters"
-                ));
+            if let Some(why) = Expr::radicand_refusal(name.get_ref(), &value) {
+                return Err(self.error(ErrorKind::Expression, radicand.span(), why));
             }
             builder = builder.radical(name.get_ref(), &value.to_ascii());
         }

@@ -343,9 +343,9 @@ impl LoadedSystem {
             (e.contains(*r) && (negative || divides)).then_some((r, radicand, value))
         })?;
         Some(format!(
-            "{what} is not defined at the starting point: {} = √({radicand}) is the root of {value} \
-             there (--from)",
-            self.display(*r)
+            "{what} is not defined at the starting point: {} is the root of {value} there \
+             (--from)",
+            Expr::radical_definition(*r, radicand)
         ))
     }
 

@@ -37,13 +37,12 @@ impl LoadedSystem {
             lines: vec![Equation::new("H", self.system.hamiltonian().clone())],
         }));
         // What each radical stands for, which H's terms do not show.
-        let vars = self.system.vars();
         let radicals: Vec<String> = self
             .system
             .space()
             .radicals()
             .iter()
-            .map(|(r, radicand)| format!("`{} = √({radicand})`", vars.variable(*r).unicode()))
+            .map(|(r, radicand)| format!("`{}`", Expr::radical_definition(*r, radicand)))
             .collect();
         if !radicals.is_empty() {
             entries.push(Entry::Text(format!("with {}.", radicals.join(", "))));

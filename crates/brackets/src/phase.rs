@@ -181,7 +181,7 @@ impl PhaseSpace {
     /// formed with the brackets declared before them (the atoms' polynomials have no atoms),
     /// and for a radical the same times the derivative of the root, `1/(2r)`.
     fn declare_atoms(&mut self) -> Result<(), EngineError> {
-        let stand_ins = self.stand_ins();
+        let stand_ins: Vec<_> = self.stand_ins().collect();
         if stand_ins.is_empty() {
             return Ok(());
         }
@@ -189,11 +189,11 @@ impl PhaseSpace {
         for (k, (v, d, rate)) in stand_ins.iter().enumerate() {
             for z in self.coordinates() {
                 let value = self.bracket(d, &Expr::var(&self.vars, z))?;
-                extra.push((*v, z, value.checked_mul(rate)?));
+                extra.push((*v, z, times(value, rate.as_ref())?));
             }
             for (w, e, other) in &stand_ins[k + 1..] {
-                let value = self.bracket(d, e)?.checked_mul(rate)?;
-                extra.push((*v, *w, value.checked_mul(other)?));
+                let value = times(self.bracket(d, e)?, rate.as_ref())?;
+                extra.push((*v, *w, times(value, other.as_ref())?));
             }
         }
         for (a, b, value) in extra {
@@ -206,11 +206,10 @@ impl PhaseSpace {
     }
 
     /// The variables that stand for functions of the others, each with that function and the
-    /// derivative of the variable by it: the denominator atoms (`v = D`, rate 1), then the
-    /// radicals (`r = √R`, rate `1/(2r)`).
-    fn stand_ins(&self) -> Vec<(Var, Expr, Expr)> {
-        let one = Expr::one(&self.vars);
-        let atoms = self.atoms.iter().map(|(v, d)| (*v, d.clone(), one.clone()));
+    /// derivative of the variable by it where it is not 1: the denominator atoms (`v = D`),
+    /// then the radicals (`r = √R`, rate `1/(2r)`).
+    fn stand_ins(&self) -> impl Iterator<Item = (Var, &Expr, Option<Expr>)> + '_ {
+        let atoms = self.atoms.iter().map(|(v, d)| (*v, d, None));
         let radicals = self.radicals.iter().map(|(r, radicand)| {
             let rate = Expr::monomial(
                 &self.vars,
@@ -218,9 +217,9 @@ impl PhaseSpace {
                 &[(*r, -1)],
             )
             .expect("the power −1 is within every limit");
-            (*r, radicand.clone(), rate)
+            (*r, radicand, Some(rate))
         });
-        atoms.chain(radicals).collect()
+        atoms.chain(radicals)
     }
 
     /// The variables the declared brackets involve: the phase variables in their order, then
@@ -282,7 +281,7 @@ impl PhaseSpace {
         let names: Vec<String> = self
             .radicals
             .iter()
-            .map(|(r, radicand)| format!("{} = √({radicand})", self.vars.variable(*r).unicode()))
+            .map(|(r, radicand)| Expr::radical_definition(*r, radicand))
             .collect();
         Err(EngineError::Invalid(format!(
             "{what} is not supported on a system with radicals ({}): its evaluation takes \
@@ -463,7 +462,7 @@ impl PhaseSpace {
         for (v, d, rate) in self.stand_ins() {
             let (df, dd) = (f.derivative(v)?, d.derivative(z)?);
             if !df.is_zero() && !dd.is_zero() {
-                through.push((df, dd.checked_mul(&rate)?));
+                through.push((df, times(dd, rate.as_ref())?));
             }
         }
         let one = Expr::one(&self.vars);
@@ -639,6 +638,14 @@ impl PhaseSpace {
             }
         }
         Ok(out)
+    }
+}
+
+/// `e` times a stand-in's rate, or `e` itself where the rate is 1 (none).
+fn times(e: Expr, rate: Option<&Expr>) -> Result<Expr, EngineError> {
+    match rate {
+        Some(rate) => Ok(e.checked_mul(rate)?),
+        None => Ok(e),
     }
 }
 

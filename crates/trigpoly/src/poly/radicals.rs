@@ -57,31 +57,48 @@ impl<C: Coefficient> Poly<C> {
                 let r = Self::parse(vars, text);
                 READING.with(|r| r.set(false));
                 let r = r.map_err(|e| invalid(&format!("does not read: {e}")))?;
-                if r.is_constant() {
-                    return Err(invalid(
-                        "is a constant: a radical stands for the root of a function of the \
-                         variables",
-                    ));
+                match Self::radicand_refusal(variable.unicode(), &r) {
+                    Some(why) => Err(AlgebraError::Invalid(why)),
+                    None => Ok((v, r)),
                 }
-                let kind = |w: Var| vars.variable(w).kind();
-                if vars.vars().any(|w| {
-                    r.contains(w)
-                        && matches!(
-                            kind(w),
-                            VarKind::Radical | VarKind::Denominator | VarKind::Angle
-                        )
-                }) {
-                    return Err(invalid(
-                        "has a radical, a denominator or an angle in it: a radicand is a \
-                         polynomial in the coordinates, momenta and parameters",
-                    ));
-                }
-                if r.conj() != r {
-                    return Err(invalid("is not real"));
-                }
-                Ok((v, r))
             })
             .collect()
+    }
+
+    /// Why `radicand` cannot stand under the root of the radical shown as `name`, if it
+    /// cannot: it is a constant, it holds a radical, a denominator atom or an angle (a radicand
+    /// is a polynomial, or a Laurent polynomial, in the coordinates, momenta and parameters),
+    /// or it is not real.
+    pub fn radicand_refusal(name: &str, radicand: &Self) -> Option<String> {
+        let vars = &radicand.vars;
+        let kind = |w: Var| vars.variable(w).kind();
+        if radicand.is_constant() {
+            Some(format!(
+                "the radicand of {name} is the constant {radicand}: a radical stands for the root \
+                 of a function of the variables (write a constant root as a parameter)"
+            ))
+        } else if vars.vars().any(|w| {
+            radicand.contains(w)
+                && matches!(
+                    kind(w),
+                    VarKind::Radical | VarKind::Denominator | VarKind::Angle
+                )
+        }) {
+            Some(format!(
+                "the radicand {radicand} has a radical, a denominator or an angle in it: a \
+                 radicand is a polynomial in the coordinates, momenta and parameters"
+            ))
+        } else if radicand.conj() != *radicand {
+            Some(format!("the radicand {radicand} is not real"))
+        } else {
+            None
+        }
+    }
+
+    /// How the radical `r` with its radicand reads in messages and reports:
+    /// `r = √(x² + y² + z²)`.
+    pub fn radical_definition(r: Var, radicand: &Self) -> String {
+        format!("{} = √({radicand})", radicand.vars.variable(r).unicode())
     }
 
     /// Whether the set declares radicals.
@@ -158,7 +175,7 @@ impl<C: Coefficient> Poly<C> {
                     .iter()
                     .enumerate()
                     .filter(|&(i, _)| chosen(i))
-                    .map(|(_, (v, r))| format!("{} = √({r})", vars.variable(*v).unicode()))
+                    .map(|(_, (v, r))| Self::radical_definition(*v, r))
                     .collect();
                 let (what, so) = match names.len() {
                     1 => (
