@@ -713,6 +713,18 @@ pub fn search_report(
             counted(n.products, "product"),
         )));
     }
+    // With denominators, each integral written as a physicist writes it: its terms collected
+    // by momenta and parameters over common denominators, reduced (the linear algebra's
+    // monomials are not independent, and its combination of them can be long). The same
+    // element.
+    let written: Vec<Expr> = r
+        .basis
+        .iter()
+        .map(|f| match Expr::has_denominator_atoms(&r.vars) {
+            true => f.expr().over_common_denominators(),
+            false => Ok(f.expr().clone()),
+        })
+        .collect::<Result<_, _>>()?;
     if shown.is_empty() {
         entries.push(Entry::Text(
             "None: the known integrals generate every integral in the space.".into(),
@@ -726,7 +738,7 @@ pub fn search_report(
             },
             lines: shown
                 .iter()
-                .map(|&i| Equation::new(&label(i), r.basis[i].expr().clone()))
+                .map(|&i| Equation::new(&label(i), written[i].clone()))
                 .collect(),
         }));
     }
@@ -756,7 +768,7 @@ pub fn search_report(
             proof_note(f, fixed, symbolic.as_deref()),
         );
         c = c.at(held.at(f.symbolic.is_none() && !r.parameters.is_empty()));
-        let c = c.written(&format!("{{{}, H}} = 0", f.expr().render(Style::Ascii)));
+        let c = c.written(&format!("{{{}, H}} = 0", written[i].render(Style::Ascii)));
         entries.push(Entry::Claim(c));
     }
     let rest: Vec<&Integral> = (0..r.basis.len())

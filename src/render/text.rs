@@ -105,7 +105,8 @@ pub(crate) fn wrap(s: &str, w: usize, indent: &str) -> Vec<String> {
 /// spaces.
 pub(crate) fn wrap_sum(s: &str, w: usize, indent: &str) -> Vec<String> {
     let mut pieces: Vec<&str> = Vec::new();
-    sum_pieces(s, 0, w, &mut pieces);
+    // A piece is split when it would not fit a line after the indent.
+    sum_pieces(s, 0, w.saturating_sub(width(indent)), &mut pieces);
     let mut lines: Vec<String> = Vec::new();
     let mut line = String::new();
     for piece in pieces {

@@ -242,7 +242,7 @@ fn equations_at(
             // Over a common denominator, so that a value that is zero shows as 0.
             let value = match Expr::has_relations(value.vars()) {
                 true => value
-                    .over_common_denominator()
+                    .over_common_denominators()
                     .map_err(|e| file.computation_error(&e.into()))?,
                 false => value,
             };

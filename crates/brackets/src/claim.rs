@@ -399,7 +399,7 @@ impl Claim {
             Outcome::Proved
         } else {
             Outcome::Refuted {
-                residual: residual.over_common_denominator()?,
+                residual: residual.over_common_denominators()?,
             }
         };
         Ok(Verdict {

@@ -784,7 +784,7 @@ pub fn closure_of(
                 // Over its common denominator, as a table shows brackets (the same element;
                 // as it is without atoms).
                 None => Bracket::Outside {
-                    bracket: b_sym[&(a, b)].over_common_denominator()?,
+                    bracket: b_sym[&(a, b)].over_common_denominators()?,
                 },
             };
             let negated = match &entry {

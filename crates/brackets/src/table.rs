@@ -64,7 +64,7 @@ impl BracketTable {
         // shows as that one.
         let funcs: Vec<Expr> = names
             .iter()
-            .map(|n| Ok(system.get(n)?.over_common_denominator()?))
+            .map(|n| Ok(system.get(n)?.over_common_denominators()?))
             .collect::<Result<_, EngineError>>()?;
         let basis: Vec<(FunctionName, Expr)> = names
             .iter()
@@ -85,7 +85,7 @@ impl BracketTable {
                 // that a bracket equal to zero is 0 and reads as its numerator shows.
                 let br = system
                     .bracket(&funcs[a], &funcs[b])?
-                    .over_common_denominator()?;
+                    .over_common_denominators()?;
                 let entry = match express(&br, &basis)? {
                     Some(c) => Entry::Combination(c),
                     None => Entry::Expression(br),

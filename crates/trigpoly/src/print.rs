@@ -77,8 +77,8 @@ pub(crate) fn render_terms(vars: &VarSet, terms: &[CosSinTerm], style: Style) ->
     if terms.is_empty() {
         return "0".into();
     }
-    if let Some(fraction) = render_over_common_denominator(vars, terms, style) {
-        return fraction;
+    if let Some(fractions) = render_fractions(vars, terms, style) {
+        return fractions;
     }
     let names = Names::new(vars, terms, style);
     let mut out = String::new();
@@ -89,7 +89,7 @@ pub(crate) fn render_terms(vars: &VarSet, terms: &[CosSinTerm], style: Style) ->
         let group = &terms[k..end];
         if trig.is_one() || group.len() == 1 {
             for t in group {
-                write_term(&mut out, 0, &names, t, Some(&t.trig), style);
+                write_term(&mut out, 0, &names, t, Some(&t.trig), None, style);
             }
         } else {
             // `(inner) factor`, written in place: the inner sum can run to megabytes.
@@ -101,7 +101,7 @@ pub(crate) fn render_terms(vars: &VarSet, terms: &[CosSinTerm], style: Style) ->
             });
             let start = out.len();
             for t in group {
-                write_term(&mut out, start, &names, t, None, style);
+                write_term(&mut out, start, &names, t, None, None, style);
             }
             out.push_str(match style {
                 Style::Ascii => ")*",
@@ -115,59 +115,109 @@ pub(crate) fn render_terms(vars: &VarSet, terms: &[CosSinTerm], style: Style) ->
     out
 }
 
-/// A sum whose terms all divide by the same powers of denominator atoms (as an element over a
-/// common denominator does, [`Poly::over_common_denominator`]) written as one fraction:
-/// `(2g p_y² − 2g p_z²)/((x − y)³ (y − z)³)`, not the denominator once a term. `None` for
-/// anything else.
-fn render_over_common_denominator(
-    vars: &VarSet,
-    terms: &[CosSinTerm],
-    style: Style,
-) -> Option<String> {
+/// A sum with denominator atoms, with the terms that have the same denominator (the same
+/// powers of atoms, some negative, and the same negative powers of the other variables)
+/// written as one fraction: `3g(p_x + p_y)/(x − y)²`, `p_x(p_x − p_y)/(x − y)²`, the factors
+/// and the rational content they share in front; the other terms as they are, in order of
+/// first appearance. `None` when no two terms share a denominator (then nothing changes).
+fn render_fractions(vars: &VarSet, terms: &[CosSinTerm], style: Style) -> Option<String> {
     let atoms: Vec<usize> = vars.denominators().map(|v| v.index()).collect();
-    let powers = |t: &CosSinTerm| -> Vec<i64> { atoms.iter().map(|&j| t.exps[j]).collect() };
-    let common = powers(terms.first()?);
-    if terms.len() < 2
-        || common.iter().all(|&e| e >= 0)
-        || common.iter().any(|&e| e > 0)
-        || terms.iter().any(|t| powers(t) != common)
-    {
+    if atoms.is_empty() {
         return None;
     }
-    let numerator: Vec<CosSinTerm> = terms
-        .iter()
-        .map(|t| {
-            let mut t = t.clone();
-            for &j in &atoms {
-                t.exps[j] = 0;
-            }
-            t
+    let is_atom: Vec<bool> = vars
+        .vars()
+        .map(|v| vars.variable(v).kind() == VarKind::Denominator)
+        .collect();
+    let divides = |t: &CosSinTerm| atoms.iter().any(|&j| t.exps[j] < 0);
+    let denominator = |t: &CosSinTerm| -> Vec<i64> {
+        (t.exps.iter().zip(&is_atom))
+            .map(|(&e, &atom)| if atom || e < 0 { e } else { 0 })
+            .collect()
+    };
+    let mut groups: Vec<Vec<&CosSinTerm>> = Vec::new();
+    for t in terms {
+        let same = |g: &&mut Vec<&CosSinTerm>| {
+            divides(g[0]) && g[0].trig == t.trig && denominator(g[0]) == denominator(t)
+        };
+        match groups.iter_mut().find(same) {
+            Some(g) => g.push(t),
+            None => groups.push(vec![t]),
+        }
+    }
+    if groups.len() == terms.len() {
+        return None;
+    }
+    let names = Names::new(vars, terms, style);
+    let mut out = String::new();
+    for group in groups {
+        if let [t] = group[..] {
+            write_term(&mut out, 0, &names, t, Some(&t.trig), None, style);
+            continue;
+        }
+        let (outer, numerator) = fraction(&group, &is_atom);
+        let inner = render_terms(vars, &numerator, style);
+        let inner = Inner {
+            text: &inner,
+            terms: numerator.len(),
+        };
+        write_term(
+            &mut out,
+            0,
+            &names,
+            &outer,
+            Some(&outer.trig),
+            Some(inner),
+            style,
+        );
+    }
+    Some(out)
+}
+
+/// Terms with one denominator as `outer · (numerator)`: the outer term holds the
+/// denominator, the factors every term has (the least power of each variable among them)
+/// and the rational content (signed as the first term, so that the numerator starts
+/// positive); the numerator the rest.
+fn fraction(group: &[&CosSinTerm], is_atom: &[bool]) -> (CosSinTerm, Vec<CosSinTerm>) {
+    let first = group[0];
+    let n = first.exps.len();
+    // The power of each variable in front: its denominator's (the same in every term), or
+    // the least among the terms.
+    let front: Vec<i64> = (0..n)
+        .map(|j| match is_atom[j] || first.exps[j] < 0 {
+            true => first.exps[j],
+            false => group.iter().map(|t| t.exps[j]).min().unwrap_or(0),
         })
         .collect();
-    let mut exps = vec![0; vars.len()];
-    for (&j, &e) in atoms.iter().zip(&common) {
-        exps[j] = -e;
-    }
-    let denominator = CosSinTerm {
-        coeff: GaussianRational::from(1),
-        exps,
-        trig: TrigMonomial {
-            powers: vec![(0, 0); terms[0].trig.powers.len()],
-        },
-    };
-    let numerator = render_terms(vars, &numerator, style);
-    let factors = common.iter().filter(|&&e| e != 0).count();
-    let denominator = render_terms(vars, &[denominator], style);
-    Some(match style {
-        // A long numerator in `\left( … \right)`, where a display may break it between terms
-        // (a `\frac` is one box, which ran 2950 pt past the margin).
-        Style::Latex if terms.len() > 4 => {
-            format!(r"\left({numerator}\right) / \left({denominator}\right)")
+    let content = match group.iter().all(|t| t.coeff.im.is_zero()) {
+        true => {
+            let c = Rational::content_of(group.iter().map(|t| &t.coeff.re));
+            match first.coeff.re.is_negative() {
+                true => -&c,
+                false => c,
+            }
         }
-        Style::Latex => format!(r"\frac{{{numerator}}}{{{denominator}}}"),
-        _ if factors == 1 => format!("({numerator})/{denominator}"),
-        _ => format!("({numerator})/({denominator})"),
-    })
+        false => Rational::one(),
+    };
+    let numerator = group
+        .iter()
+        .map(|t| CosSinTerm {
+            coeff: match content.is_one() {
+                true => t.coeff.clone(),
+                false => GaussianRational::from(&t.coeff.re / &content),
+            },
+            exps: (0..n).map(|j| t.exps[j] - front[j]).collect(),
+            trig: TrigMonomial {
+                powers: vec![(0, 0); first.trig.powers.len()],
+            },
+        })
+        .collect();
+    let outer = CosSinTerm {
+        coeff: GaussianRational::from(content),
+        exps: front,
+        trig: first.trig.clone(),
+    };
+    (outer, numerator)
 }
 
 fn minus(style: Style) -> &'static str {
@@ -354,14 +404,23 @@ fn write_trig_factors(out: &mut String, product: &mut Product, names: &Names, tr
     }
 }
 
-/// Writes the term `coeff · Π v^e · trig` of a sum written from byte `start` of `out` on: its
-/// sign or the ` + ` before it, then its text, factor by factor, with no string of its own.
+/// A sum written inside a term, `α(x² + y²)/(…)`: its text and its number of terms.
+#[derive(Clone, Copy)]
+struct Inner<'a> {
+    text: &'a str,
+    terms: usize,
+}
+
+/// Writes the term `coeff · Π v^e · (inner) · trig` of a sum written from byte `start` of
+/// `out` on: its sign or the ` + ` before it, then its text, factor by factor, with no string
+/// of its own.
 fn write_term(
     out: &mut String,
     start: usize,
     names: &Names,
     term: &CosSinTerm,
     trig: Option<&TrigMonomial>,
+    inner: Option<Inner<'_>>,
     style: Style,
 ) {
     let (coeff, exps) = (&term.coeff, &term.exps);
@@ -369,7 +428,10 @@ fn write_term(
     push_sign(out, start, negative, style);
     let denominators =
         usize::from(!den_int.is_one()) + names.order.iter().filter(|&&j| exps[j] < 0).count();
-    if style == Style::Latex && denominators > 0 {
+    // A long sum over a denominator in `\left( … \right) / \left( … \right)`, where a display
+    // may break it between terms (a `\frac` is one box, which ran 2950 pt past the margin).
+    let frac = style == Style::Latex && denominators > 0 && inner.is_none_or(|i| i.terms <= 4);
+    if frac {
         out.push_str(r"\frac{");
     }
     let mut numerator = Product::new(style);
@@ -400,6 +462,17 @@ fn write_term(
         }
     };
     variables(out, &mut numerator, true);
+    if let Some(i) = inner {
+        // `α(x² + y²)`: the parenthesis sets the sum apart, so no space is needed before it
+        // (nor `*` in ASCII, which still parses); `\frac{x + y}{…}` needs none.
+        let alone = numerator.factors == 0 && trig.is_none_or(TrigMonomial::is_one);
+        numerator.next(out, false);
+        match style {
+            Style::Latex if frac && alone => out.push_str(i.text),
+            Style::Latex => write_display(out, format_args!(r"\left({}\right)", i.text)),
+            _ => write_display(out, format_args!("({})", i.text)),
+        }
+    }
     if let Some(t) = trig {
         write_trig_factors(out, &mut numerator, names, t);
     }
@@ -410,7 +483,8 @@ fn write_term(
         return;
     }
     match style {
-        Style::Latex => out.push_str("}{"),
+        Style::Latex if frac => out.push_str("}{"),
+        Style::Latex => out.push_str(r" / \left("),
         _ if denominators == 1 => out.push('/'),
         _ => out.push_str("/("),
     }
@@ -421,7 +495,8 @@ fn write_term(
     }
     variables(out, &mut denominator, false);
     match style {
-        Style::Latex => out.push('}'),
+        Style::Latex if frac => out.push('}'),
+        Style::Latex => out.push_str(r"\right)"),
         _ if denominators > 1 => out.push(')'),
         _ => {}
     }

@@ -7,10 +7,12 @@
 //! is the zero polynomial, atom after atom. Equal elements may have different terms (`v · D`
 //! and `1`), so every decision of zero on a set with atoms goes through [`Poly::vanishes`].
 
+use std::collections::BTreeMap;
+
 use super::Poly;
 use crate::error::AlgebraError;
 use crate::number::Coefficient;
-use crate::varset::{Var, Vars};
+use crate::varset::{Var, VarKind, Vars};
 
 /// How many products of powers of atoms a division tries before it gives up.
 const MAX_CANDIDATES: usize = 4096;
@@ -152,12 +154,38 @@ impl<C: Coefficient> Poly<C> {
         Ok((p, powers))
     }
 
-    /// The element over a common denominator: its numerator cleared of the atoms times
-    /// `Π v^{−N}`, `N` the power of each atom cleared, so that whether it is zero shows (the
-    /// numerator is a polynomial in normal form); with radicals, first written with the least
-    /// powers of each ([`Poly::with_least_radical_powers`]), and 0 when it is zero. The same
-    /// element; without atoms or radicals, `self`.
-    pub fn over_common_denominator(&self) -> Result<Self, AlgebraError> {
+    /// The element as a physicist writes it with denominators: its terms collected by their
+    /// factors free of the denominators (momenta, parameters, angles: every variable but the
+    /// coordinates, the atoms and what an atom's polynomial holds), and each such group over
+    /// its common denominator where that is shorter than the group as written: the numerator
+    /// cleared of the atoms and of negative powers, divided by each atom's polynomial as often
+    /// as exact division finds it, then written back over what is left
+    /// (`8α/(x + y)² − 8α/(x − y)²` is `−32αxy/((x − y)² (x + y)²)`; `β²/(x²y²)` stays). The
+    /// printer then writes a group with a numerator of several terms as one fraction
+    /// (`α(x² + y²)/((x − y)² (x + y)²)`). Since the factors a group is collected by are free
+    /// of what its fraction is in, the element is zero exactly when every group is, and a
+    /// group that is zero has no numerator: a zero shows as `0`. With radicals, first written
+    /// with the least powers of each ([`Poly::with_least_radical_powers`]), and 0 when it is
+    /// zero. The same element; without atoms or radicals, `self`.
+    ///
+    /// ```
+    /// use trigpoly::{Expr, VarSet};
+    /// let vars = VarSet::builder()
+    ///     .coordinate("x")
+    ///     .coordinate("y")
+    ///     .momentum("p_x")
+    ///     .denominator("x - y", "x − y", "x - y")
+    ///     .denominator("x + y", "x + y", "x + y")
+    ///     .build()
+    ///     .unwrap();
+    /// let e = |s: &str| Expr::parse(&vars, s).unwrap().over_common_denominators().unwrap();
+    /// assert_eq!(e("x/(x - y) - 1").to_string(), "y/(x − y)");
+    /// assert_eq!(e("p_x/(x + y) + p_x/(x - y) + 1").to_string(), "2x p_x/((x − y) (x + y)) + 1");
+    /// assert_eq!(e("1/(x - y)^2 + 1/(x + y)^2").to_string(), "2(x² + y²)/((x − y)² (x + y)²)");
+    /// // As written when that is shorter: over one denominator, three terms.
+    /// assert_eq!(e("x/(x - y)^2 + 1/(x + y)").to_string(), "x/(x − y)² + 1/(x + y)");
+    /// ```
+    pub fn over_common_denominators(&self) -> Result<Self, AlgebraError> {
         if !Self::has_relations(&self.vars) {
             return Ok(self.clone());
         }
@@ -169,26 +197,154 @@ impl<C: Coefficient> Poly<C> {
         if !Self::has_denominator_atoms(&self.vars) {
             return Ok(reduced);
         }
-        let (mut out, mut powers) = reduced.cleared_of_atoms()?;
-        // The numerator loses each factor `D` it has (`(x² + y²)/(x² + y²)` is 1), as far as
-        // exact division finds them.
+        let atoms = Self::denominator_atoms(&self.vars)?;
+        let inner: Vec<bool> = self
+            .vars
+            .vars()
+            .map(|v| {
+                matches!(
+                    self.vars.variable(v).kind(),
+                    VarKind::Coordinate | VarKind::Denominator
+                ) || atoms.iter().any(|(_, d)| d.contains(v))
+            })
+            .collect();
+        let mut groups: BTreeMap<Vec<i64>, Vec<(C, Vec<i64>)>> = BTreeMap::new();
+        for t in reduced.terms() {
+            let e = t.exponents();
+            let outer = e.iter().zip(&inner).map(|(&k, &i)| if i { 0 } else { k });
+            groups
+                .entry(outer.collect())
+                .or_default()
+                .push((t.coeff(), e));
+        }
+        let atoms: Vec<Var> = atoms.into_iter().map(|(v, _)| v).collect();
+        let mut out = Vec::with_capacity(reduced.len());
+        for group in groups.into_values() {
+            let shown = Self::group_shown(&self.vars, group, &atoms)?;
+            out.extend(shown.terms().map(|t| (t.coeff(), t.exponents())));
+        }
+        Self::from_terms(&self.vars, out)
+    }
+
+    /// The shortest of three ways to write a group of terms that differ only in the
+    /// variables of their denominators (the whole group over one denominator where that is
+    /// no longer than the others): the terms that divide by the
+    /// same powers of the atoms each over their common denominator, reduced, unless that is
+    /// longer than they are as written (the printer writes them as one fraction either way:
+    /// `98/(x (x − y)³) − 98/(y (x − y)³)` is `−98/(xy (x − y)²)`); then the terms that divide by
+    /// the same atoms, to any powers, likewise, where that is shorter
+    /// (`7x²/y² + 20y²/(x − y)² + 20y/(x − y)` is `7x²/y² + 20xy/(x − y)²`); or the whole group
+    /// over one (`4αy²/(x + y)² + 4αy²/(x − y)² − 4αy/(x + y) + 4αy/(x − y)` is
+    /// `16αx²y²/((x − y)² (x + y)²)`).
+    fn group_shown(
+        vars: &Vars,
+        group: Vec<(C, Vec<i64>)>,
+        atoms: &[Var],
+    ) -> Result<Self, AlgebraError> {
+        let as_written = Self::from_terms(vars, group.iter().cloned())?;
+        if !atoms.iter().any(|&v| as_written.contains(v)) {
+            return Ok(as_written);
+        }
+        let powers = |e: &[i64]| -> Vec<i64> { atoms.iter().map(|v| e[v.index()]).collect() };
+        let held = |e: &[i64]| -> Vec<i64> { powers(e).iter().map(|&k| k.signum()).collect() };
+        // A part over its denominator is reduced: chosen when it is no longer, or when a
+        // factor cancelled (`(x³ − y³)/(x − y)` is `x² + xy + y²`), so that no fraction the
+        // printer writes shares a factor with its denominator.
+        let depth = |p: &Self| p.denominator_depth(atoms);
+        let by_powers = Self::parts_shown(vars, &group, powers, |c, p| {
+            c.len() <= p.len() || depth(c) < depth(p)
+        })?;
+        let by_atoms = Self::parts_shown(vars, &group, held, |c, p| c.len() < p.len())?;
+        let whole = as_written.over_one_denominator()?;
+        let best = match by_atoms.len() < by_powers.len() {
+            true => by_atoms,
+            false => by_powers,
+        };
+        // One fraction where it is no longer, or divides by less: `−2g(x + y)/(x − y)²`, not
+        // `−4gy/(x − y)² − 2g/(x − y)`.
+        Ok(
+            match whole.len() <= best.len() || depth(&whole) < depth(&best) {
+                true => whole,
+                false => best,
+            },
+        )
+    }
+
+    /// The most a term of `self` divides by the atoms, counted with multiplicity: 3 for
+    /// `x/((x − y)² (x + y))`.
+    fn denominator_depth(&self, atoms: &[Var]) -> i64 {
+        self.terms()
+            .map(|t| atoms.iter().map(|&v| (-t.exponent(v)).max(0)).sum())
+            .max()
+            .unwrap_or(0)
+    }
+
+    /// `terms` split into parts by `key`, each part over its common denominator when `better`
+    /// says so of it (combined, as written), else as written; summed.
+    fn parts_shown(
+        vars: &Vars,
+        terms: &[(C, Vec<i64>)],
+        key: impl Fn(&[i64]) -> Vec<i64>,
+        better: impl Fn(&Self, &Self) -> bool,
+    ) -> Result<Self, AlgebraError> {
+        let mut parts: BTreeMap<Vec<i64>, Vec<(C, Vec<i64>)>> = BTreeMap::new();
+        for (c, e) in terms {
+            parts
+                .entry(key(e))
+                .or_default()
+                .push((c.clone(), e.clone()));
+        }
+        let mut out = Vec::with_capacity(terms.len());
+        for (k, part) in parts {
+            let part = Self::from_terms(vars, part)?;
+            let combined = match k.iter().any(|&p| p != 0) {
+                true => Some(part.over_one_denominator()?).filter(|c| better(c, &part)),
+                false => None,
+            };
+            let shown = combined.unwrap_or(part);
+            out.extend(shown.terms().map(|t| (t.coeff(), t.exponents())));
+        }
+        Self::from_terms(vars, out)
+    }
+
+    /// `self` over one common denominator: its numerator cleared of the atoms and of every
+    /// negative power (so that it is a polynomial), divided by each atom's polynomial as often
+    /// as exact division finds it (`(x² + y²)/(x² + y²)` is 1), times what is left of the
+    /// denominator: `Π v^{−N}` for the atoms and the negative powers, each as low as it goes.
+    fn over_one_denominator(&self) -> Result<Self, AlgebraError> {
+        let (mut numerator, mut powers) = self.cleared_of_atoms()?;
+        let negative: Vec<(Var, i64)> = self
+            .vars
+            .vars()
+            .filter_map(|v| {
+                let n = -numerator.low_degree(v).unwrap_or(0);
+                (n > 0).then_some((v, n))
+            })
+            .collect();
+        if !negative.is_empty() {
+            numerator = numerator.checked_mul(&Self::monomial(&self.vars, C::one(), &negative)?)?;
+        }
         for (_, d, n) in &mut powers {
-            while *n > 0 && out.len() <= MAX_REDUCED_TERMS {
-                match out.quotient_by(d)? {
+            while *n > 0 && numerator.len() <= MAX_REDUCED_TERMS {
+                match numerator.quotient_by(d)? {
                     Some(q) => {
-                        out = q;
+                        numerator = q;
                         *n -= 1;
                     }
                     None => break,
                 }
             }
         }
-        for (v, _, n) in powers {
-            if n > 0 && !out.is_zero() {
-                out = out.checked_mul(&Self::var(&self.vars, v).checked_pow(-n)?)?;
-            }
+        if numerator.is_zero() {
+            return Ok(numerator);
         }
-        Ok(out)
+        let denominator: Vec<(Var, i64)> = negative
+            .into_iter()
+            .chain(powers.into_iter().map(|(v, _, n)| (v, n)))
+            .filter(|&(_, n)| n > 0)
+            .map(|(v, n)| (v, -n))
+            .collect();
+        numerator.checked_mul(&Self::monomial(&self.vars, C::one(), &denominator)?)
     }
 
     /// One term of `self` as an element of its own.
@@ -277,7 +433,7 @@ impl<C: Coefficient> Poly<C> {
     /// let e = |s: &str| Expr::parse(&vars, s).unwrap();
     /// assert!(e("(x - y)/(x - y) - 1").vanishes().unwrap());
     /// assert!(!e("x/(x - y) - 1").vanishes().unwrap());
-    /// assert_eq!(e("x/(x - y) - 1").over_common_denominator().unwrap().to_string(), "y/(x − y)");
+    /// assert_eq!(e("x/(x - y) - 1").over_common_denominators().unwrap().to_string(), "y/(x − y)");
     /// ```
     pub fn vanishes(&self) -> Result<bool, AlgebraError> {
         if self.is_zero() {
@@ -362,7 +518,7 @@ mod tests {
     fn a_numerator_loses_exactly_the_factors_it_has() {
         let vars = three_points_two_atoms();
         let e = |s: &str| Expr::parse(&vars, s).unwrap();
-        let reduced = |s: &str| e(s).over_common_denominator().unwrap().to_string();
+        let reduced = |s: &str| e(s).over_common_denominators().unwrap().to_string();
         assert_eq!(reduced("x^3/(x - y) - y^3/(x - y)"), "x² + xy + y²");
         assert_eq!(
             reduced("(x - y)*(x - z)^2/((x - y)^3*(x - z))"),
@@ -410,20 +566,20 @@ mod tests {
         assert!(!g.vanishes().unwrap());
         assert_eq!(g.cleared().unwrap(), e("-y^2"));
         assert_eq!(
-            g.over_common_denominator().unwrap().to_string(),
+            g.over_common_denominators().unwrap().to_string(),
             "−y²/(x² + y²)"
         );
         // The numerator loses the factors it shares with the denominator, not others.
-        assert_eq!(f.over_common_denominator().unwrap().to_string(), "0");
+        assert_eq!(f.over_common_denominators().unwrap().to_string(), "0");
         let one = e("x^2/(x^2 + y^2) + y^2/(x^2 + y^2)");
-        assert_eq!(one.over_common_denominator().unwrap().to_string(), "1");
+        assert_eq!(one.over_common_denominators().unwrap().to_string(), "1");
         let h = e("(x^2 + y^2)^2*x/(x^2 + y^2)^3");
         assert_eq!(
-            h.over_common_denominator().unwrap().to_string(),
+            h.over_common_denominators().unwrap().to_string(),
             "x/(x² + y²)"
         );
         let k = e("x^3/(x^2 + y^2)");
-        assert_eq!(k.over_common_denominator().unwrap(), k);
+        assert_eq!(k.over_common_denominators().unwrap(), k);
     }
 
     /// A sum over one common denominator prints as one fraction, its numerator in

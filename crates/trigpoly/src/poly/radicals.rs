@@ -436,7 +436,7 @@ mod tests {
     fn over_a_common_denominator_a_radical_keeps_its_least_powers() {
         let vars = kepler();
         let e = |s: &str| Expr::parse(&vars, s).unwrap();
-        let reduced = |s: &str| e(s).over_common_denominator().unwrap();
+        let reduced = |s: &str| e(s).over_common_denominators().unwrap();
         assert_eq!(reduced("x^2/r^3 + y^2/r^3 + z^2/r^3"), e("1/r"));
         assert_eq!(reduced("-k*x/r^3"), e("-k*x/r^3"));
         assert_eq!(reduced("r^2"), e("x^2 + y^2 + z^2"));
@@ -466,7 +466,7 @@ mod tests {
             .build()
             .unwrap();
         let e = |s: &str| Expr::parse(&vars, s).unwrap();
-        let reduced = |s: &str| e(s).over_common_denominator().unwrap();
+        let reduced = |s: &str| e(s).over_common_denominators().unwrap();
         assert_eq!(reduced("k/r^3 + m/s^3"), e("k/r^3 + m/s^3"));
         assert_eq!(reduced("r^2/s - (x - 1)^2/s - y^2/s + m/s"), e("m/s"));
         assert_eq!(reduced("r*s/r"), e("s"));

@@ -1012,3 +1012,61 @@ proptest! {
         prop_assert_eq!(&f * &f, product_by_terms(&f, &f));
     }
 }
+
+/// The variables of a rational potential: two coordinates, a momentum, a parameter, and the
+/// denominators `x − y` and `x + y`.
+fn with_denominators() -> trigpoly::Vars {
+    trigpoly::VarSet::builder()
+        .coordinate("x")
+        .coordinate("y")
+        .momentum("p_x")
+        .parameter("a")
+        .denominator("x - y", "x − y", "x - y")
+        .denominator("x + y", "x + y", "x + y")
+        .build()
+        .expect("valid names")
+}
+
+/// Sums of terms `c x^i y^j p_x^k a^l/((x − y)^e (x + y)^f)` with Laurent powers of `y`: the
+/// partial fractions a search writes its integrals in.
+fn rational_potential_element() -> impl Strategy<Value = String> {
+    let term = (
+        -4i64..=4,
+        0i64..=2,
+        -2i64..=2,
+        0i64..=1,
+        0i64..=1,
+        0i64..=2,
+        0i64..=2,
+    );
+    proptest::collection::vec(term, 1..7).prop_map(|terms| {
+        let text: Vec<String> = terms
+            .into_iter()
+            .map(|(c, i, j, k, l, e, f)| {
+                format!("{c}*x^{i}*y^({j})*p_x^{k}*a^{l}/((x - y)^{e}*(x + y)^{f})")
+            })
+            .collect();
+        text.join(" + ")
+    })
+}
+
+proptest! {
+    #![proptest_config(Config { cases: 48, ..config() })]
+
+    /// A result shown over common denominators is the same element, its printed ASCII reads
+    /// back to it, and an element that is zero written another way shows as 0.
+    #[test]
+    fn over_common_denominators_is_the_same_element_and_reads_back(text in rational_potential_element()) {
+        let vars = with_denominators();
+        let p = Poly::<Rational>::parse(&vars, &text).expect("reads");
+        let shown = p.over_common_denominators().expect("shown");
+        prop_assert!(shown.checked_sub(&p).unwrap().vanishes().unwrap(), "{} is not {}", shown, p);
+        let back = Poly::<Rational>::parse(&vars, &shown.to_ascii()).expect("the ASCII reads back");
+        prop_assert!(back.checked_sub(&p).unwrap().vanishes().unwrap(), "{} read back as {}", shown.to_ascii(), back);
+        // (x − y)/(x − y) is 1 written another way.
+        let one = Poly::<Rational>::parse(&vars, "(x - y)/(x - y)").expect("reads");
+        let zero = p.checked_mul(&one).unwrap().checked_sub(&p).unwrap();
+        prop_assert!(!zero.is_zero() || p.is_zero());
+        prop_assert_eq!(zero.over_common_denominators().unwrap().to_string(), "0");
+    }
+}
