@@ -1,6 +1,7 @@
 //! Printing like the paper: unicode text (`p_x²/(2M) − ω² L`), LaTeX (`\frac{p_{x}^{2}}{2 M}`),
 //! and an ASCII form (`p_x^2/(2*M)`) that parses back to the same element.
 
+use std::collections::hash_map::{Entry, HashMap};
 use std::fmt;
 
 use crate::number::{Coefficient, GaussianRational, Magnitude, Rational};
@@ -136,13 +137,18 @@ fn render_fractions(vars: &VarSet, terms: &[CosSinTerm], style: Style) -> Option
             .collect()
     };
     let mut groups: Vec<Vec<&CosSinTerm>> = Vec::new();
+    let mut group_of: HashMap<(Vec<i64>, &TrigMonomial), usize> = HashMap::new();
     for t in terms {
-        let same = |g: &&mut Vec<&CosSinTerm>| {
-            divides(g[0]) && g[0].trig == t.trig && denominator(g[0]) == denominator(t)
-        };
-        match groups.iter_mut().find(same) {
-            Some(g) => g.push(t),
-            None => groups.push(vec![t]),
+        if !divides(t) {
+            groups.push(vec![t]);
+            continue;
+        }
+        match group_of.entry((denominator(t), &t.trig)) {
+            Entry::Occupied(g) => groups[*g.get()].push(t),
+            Entry::Vacant(v) => {
+                v.insert(groups.len());
+                groups.push(vec![t]);
+            }
         }
     }
     if groups.len() == terms.len() {
