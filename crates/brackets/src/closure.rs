@@ -445,10 +445,19 @@ pub fn closure_of(
                 .map(move |nu| b.iter().chain(nu).copied().collect())
         })
         .collect();
+    // Only the generators' monomials are expanded: a monomial of the symbolic parameters
+    // multiplies one as a shift of its exponents (`vectorize` below), so the 84 monomials of
+    // degree ≤ 6 in three parameters cost no product, and no copy, of their own.
+    let generators_part = |beta: &[u32]| -> Vec<u32> {
+        let mut g = beta.to_vec();
+        g[r..].fill(0);
+        g
+    };
     let mut values: HashMap<Vec<u32>, Expr> = HashMap::new();
     values.insert(vec![0; all], Expr::one(&vars));
-    let mut by_degree = monos.clone();
+    let mut by_degree: Vec<Vec<u32>> = monos.iter().map(|b| generators_part(b)).collect();
     by_degree.sort_by_key(|b| b.iter().sum::<u32>());
+    by_degree.dedup();
     for beta in &by_degree {
         if values.contains_key(beta) {
             continue;
@@ -480,10 +489,14 @@ pub fn closure_of(
     let angles: Vec<Var> = vars.angles().collect();
     // A row is a monomial's exponents and, last, 0 or 1 for the real or imaginary part.
     let mut rows: FxHashMap<Vec<i64>, usize> = FxHashMap::default();
-    let mut vectorize = |e: &Expr, times_i: bool| -> SparseVec<Rational> {
+    // `e` times `i` when `times_i`, times the parameters' monomial `shift` (variable, power).
+    let mut vectorize = |e: &Expr, times_i: bool, shift: &[(usize, i64)]| -> SparseVec<Rational> {
         let mut out = Vec::new();
         for t in e.terms() {
             let mut ex = t.exponents();
+            for &(j, k) in shift {
+                ex[j] += k;
+            }
             if conjugates_follow {
                 let k: Vec<i64> = angles.iter().map(|v| ex[v.index()]).collect();
                 if k.iter().find(|x| **x != 0).is_some_and(|x| *x < 0) {
@@ -518,24 +531,35 @@ pub fn closure_of(
     // Column j: (monomial index, times i).
     let mut col_ids: Vec<(usize, bool)> = Vec::new();
     let mut columns: Vec<SparseVec<Rational>> = Vec::new();
+    // Each generators' monomial cleared once (the clearing commutes with a parameter's
+    // monomial, which holds no atom).
+    let images: HashMap<Vec<u32>, Expr> = values
+        .into_iter()
+        .map(|(beta, e)| {
+            let image = clearing.as_ref().map(|c| c.apply(&e)).transpose()?;
+            Ok((beta, image.unwrap_or(e)))
+        })
+        .collect::<Result<_, EngineError>>()?;
     for (m, beta) in monos.iter().enumerate() {
-        let image = clearing
-            .as_ref()
-            .map(|c| c.apply(&values[beta]))
-            .transpose()?;
-        let e = image.as_ref().unwrap_or(&values[beta]);
+        let e = &images[&generators_part(beta)];
+        let shift: Vec<(usize, i64)> = symbolic
+            .iter()
+            .zip(&beta[r..])
+            .filter(|(_, &k)| k > 0)
+            .map(|(v, &k)| (v.index(), i64::from(k)))
+            .collect();
         for times_i in [false, true] {
             if times_i && !complex {
                 continue;
             }
             col_ids.push((m, times_i));
-            columns.push(vectorize(e, times_i));
+            columns.push(vectorize(e, times_i, &shift));
         }
     }
     let mut targets: HashMap<(usize, usize), SparseVec<Rational>> = HashMap::new();
     for (key, e) in &fixed_targets {
         let image = clearing.as_ref().map(|c| c.apply(e)).transpose()?;
-        targets.insert(*key, vectorize(image.as_ref().unwrap_or(e), false));
+        targets.insert(*key, vectorize(image.as_ref().unwrap_or(e), false, &[]));
     }
     let nrows = rows.len();
 
