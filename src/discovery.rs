@@ -717,12 +717,13 @@ pub fn search_report(
     // by momenta and parameters over common denominators, reduced (the linear algebra's
     // monomials are not independent, and its combination of them can be long). The same
     // element.
-    let written: Vec<Expr> = r
-        .basis
+    // Only with atoms: a radical's powers are shown as the search chose them (results.md §13).
+    let with_atoms = Expr::has_denominator_atoms(&r.vars);
+    let written: Vec<Expr> = shown
         .iter()
-        .map(|f| match Expr::has_denominator_atoms(&r.vars) {
-            true => f.expr().over_common_denominators(),
-            false => Ok(f.expr().clone()),
+        .map(|&i| match with_atoms {
+            true => r.basis[i].expr().over_common_denominators(),
+            false => Ok(r.basis[i].expr().clone()),
         })
         .collect::<Result<_, _>>()?;
     if shown.is_empty() {
@@ -738,7 +739,8 @@ pub fn search_report(
             },
             lines: shown
                 .iter()
-                .map(|&i| Equation::new(&label(i), written[i].clone()))
+                .zip(&written)
+                .map(|(&i, w)| Equation::new(&label(i), w.clone()))
                 .collect(),
         }));
     }
@@ -759,7 +761,7 @@ pub fn search_report(
             lines: complex_forms,
         }));
     }
-    for &i in &shown {
+    for (&i, w) in shown.iter().zip(&written) {
         let f = &r.basis[i];
         let mut c = ClaimResult::derived(
             &label(i),
@@ -768,7 +770,7 @@ pub fn search_report(
             proof_note(f, fixed, symbolic.as_deref()),
         );
         c = c.at(held.at(f.symbolic.is_none() && !r.parameters.is_empty()));
-        let c = c.written(&format!("{{{}, H}} = 0", written[i].render(Style::Ascii)));
+        let c = c.written(&format!("{{{}, H}} = 0", w.render(Style::Ascii)));
         entries.push(Entry::Claim(c));
     }
     let rest: Vec<&Integral> = (0..r.basis.len())

@@ -4,12 +4,10 @@
 //! denominators, a picture of the flow, bad declarations, and the commands that refuse such
 //! systems.
 
-use std::process::Command;
-
 use superint::prelude::*;
 use superint::system_file::{load_str, LimitsOverride, LoadedSystem};
 
-use crate::{holds, scratch_text, superint};
+use crate::{holds, scratch_text, superint, superint_in};
 
 const TWO_BODY: &str = "name = \"Calogero two-body\"\n\
                         hamiltonian = \"(p_x^2 + p_y^2)/2 + g/(x - y)^2\"\n\
@@ -126,11 +124,7 @@ fn denominators_bad_declarations_are_refused_at_their_place() {
         }
         let f = scratch_text("denominators-bad", "bad.toml", &text);
         let dir = f.parent().unwrap();
-        let o = Command::new(env!("CARGO_BIN_EXE_superint"))
-            .current_dir(dir)
-            .args(["check", "bad.toml"])
-            .output()
-            .unwrap();
+        let o = superint_in(dir, &["check", "bad.toml"]);
         let err = String::from_utf8(o.stderr).unwrap();
         assert_eq!(o.status.code(), Some(2), "{list}: {err}");
         assert!(

@@ -92,9 +92,15 @@ pub fn assert_refuted(
 
 /// Runs the superint binary with `args` at the workspace root, and waits for it.
 pub fn superint(args: &[&str]) -> std::process::Output {
+    superint_in(std::path::Path::new(env!("CARGO_MANIFEST_DIR")), args)
+}
+
+/// Runs the superint binary with `args` in `dir` (where a file named by a bare name, as a
+/// message then names it, is found), and waits for it.
+pub fn superint_in(dir: &std::path::Path, args: &[&str]) -> std::process::Output {
     std::process::Command::new(env!("CARGO_BIN_EXE_superint"))
         .args(args)
-        .current_dir(env!("CARGO_MANIFEST_DIR"))
+        .current_dir(dir)
         .output()
         .expect("the superint binary runs")
 }

@@ -4,12 +4,10 @@
 //! the rank at points where the radical is rational, the closure, the search that finds the
 //! Laplace–Runge–Lenz vector, a picture of the flow, and bad declarations.
 
-use std::process::Command;
-
 use superint::prelude::*;
 use superint::system_file::{load, load_str, LimitsOverride, LoadedSystem};
 
-use crate::{holds, scratch_text, superint};
+use crate::{holds, scratch_text, superint, superint_in};
 
 const PLANAR: &str = "name = \"planar Kepler\"\n\
                       hamiltonian = \"(p_x^2 + p_y^2)/2 - k/r\"\n\
@@ -322,11 +320,7 @@ fn radicals_bad_declarations_are_refused_at_their_place() {
     for (radicals, expected) in cases {
         let f = scratch_text("radicals-bad", "bad.toml", &with(radicals));
         let dir = f.parent().unwrap();
-        let o = Command::new(env!("CARGO_BIN_EXE_superint"))
-            .current_dir(dir)
-            .args(["check", "bad.toml"])
-            .output()
-            .unwrap();
+        let o = superint_in(dir, &["check", "bad.toml"]);
         let err = String::from_utf8(o.stderr).unwrap();
         assert_eq!(o.status.code(), Some(2), "{radicals}: {err}");
         assert!(

@@ -12,17 +12,10 @@ use std::process::{Command, Output};
 use pretty_assertions::assert_eq;
 use serde_json::Value;
 
+use crate::superint_in;
+
 fn root() -> &'static Path {
     Path::new(env!("CARGO_MANIFEST_DIR"))
-}
-
-/// Runs the binary in `dir` with arguments.
-fn superint_in(dir: &Path, args: &[&str]) -> Output {
-    Command::new(env!("CARGO_BIN_EXE_superint"))
-        .args(args)
-        .current_dir(dir)
-        .output()
-        .expect("the superint binary runs")
 }
 
 fn text(bytes: &[u8]) -> String {

@@ -156,11 +156,11 @@ impl<C: Coefficient> Poly<C> {
 
     /// The element as a physicist writes it with denominators: its terms collected by their
     /// factors free of the denominators (momenta, parameters, angles: every variable but the
-    /// coordinates, the atoms and what an atom's polynomial holds), and each such group over
-    /// its common denominator where that is shorter than the group as written: the numerator
-    /// cleared of the atoms and of negative powers, divided by each atom's polynomial as often
-    /// as exact division finds it, then written back over what is left
-    /// (`8α/(x + y)² − 8α/(x − y)²` is `−32αxy/((x − y)² (x + y)²)`; `β²/(x²y²)` stays). The
+    /// coordinates, the atoms and what an atom's polynomial holds), and each such group, or
+    /// parts of it, over a common denominator where that is no longer or divides by less
+    /// (`group_shown`): the numerator cleared of the atoms and of negative powers, divided by
+    /// each atom's polynomial as often as exact division finds it, then written back over what
+    /// is left (`8α/(x + y)² − 8α/(x − y)²` is `−32αxy/((x − y)² (x + y)²)`). The
     /// printer then writes a group with a numerator of several terms as one fraction
     /// (`α(x² + y²)/((x − y)² (x + y)²)`). Since the factors a group is collected by are free
     /// of what its fraction is in, the element is zero exactly when every group is, and a
@@ -208,18 +208,16 @@ impl<C: Coefficient> Poly<C> {
                 ) || atoms.iter().any(|(_, d)| d.contains(v))
             })
             .collect();
-        let mut groups: BTreeMap<Vec<i64>, Vec<(C, Vec<i64>)>> = BTreeMap::new();
-        for t in reduced.terms() {
-            let e = t.exponents();
-            let outer = e.iter().zip(&inner).map(|(&k, &i)| if i { 0 } else { k });
-            groups
-                .entry(outer.collect())
-                .or_default()
-                .push((t.coeff(), e));
-        }
+        let outer = |e: &[i64]| -> Vec<i64> {
+            e.iter()
+                .zip(&inner)
+                .map(|(&k, &i)| if i { 0 } else { k })
+                .collect()
+        };
+        let terms = reduced.terms().map(|t| (t.coeff(), t.exponents()));
         let atoms: Vec<Var> = atoms.into_iter().map(|(v, _)| v).collect();
         let mut out = Vec::with_capacity(reduced.len());
-        for group in groups.into_values() {
+        for group in split_terms(terms, outer).into_values() {
             let shown = Self::group_shown(&self.vars, group, &atoms)?;
             out.extend(shown.terms().map(|t| (t.coeff(), t.exponents())));
         }
@@ -245,17 +243,18 @@ impl<C: Coefficient> Poly<C> {
         if !atoms.iter().any(|&v| as_written.contains(v)) {
             return Ok(as_written);
         }
+        let whole = as_written.over_one_denominator()?;
+        let both = (&as_written, &whole);
         let powers = |e: &[i64]| -> Vec<i64> { atoms.iter().map(|v| e[v.index()]).collect() };
         let held = |e: &[i64]| -> Vec<i64> { powers(e).iter().map(|&k| k.signum()).collect() };
         // A part over its denominator is reduced: chosen when it is no longer, or when a
         // factor cancelled (`(x³ − y³)/(x − y)` is `x² + xy + y²`), so that no fraction the
         // printer writes shares a factor with its denominator.
         let depth = |p: &Self| p.denominator_depth(atoms);
-        let by_powers = Self::parts_shown(vars, &group, powers, |c, p| {
+        let by_powers = Self::parts_shown(vars, &group, powers, both, |c, p| {
             c.len() <= p.len() || depth(c) < depth(p)
         })?;
-        let by_atoms = Self::parts_shown(vars, &group, held, |c, p| c.len() < p.len())?;
-        let whole = as_written.over_one_denominator()?;
+        let by_atoms = Self::parts_shown(vars, &group, held, both, |c, p| c.len() < p.len())?;
         let best = match by_atoms.len() < by_powers.len() {
             true => by_atoms,
             false => by_powers,
@@ -280,19 +279,23 @@ impl<C: Coefficient> Poly<C> {
     }
 
     /// `terms` split into parts by `key`, each part over its common denominator when `better`
-    /// says so of it (combined, as written), else as written; summed.
+    /// says so of it (combined, as written), else as written; summed. `whole` is all the
+    /// terms as written and over one denominator, which a single part is.
     fn parts_shown(
         vars: &Vars,
         terms: &[(C, Vec<i64>)],
         key: impl Fn(&[i64]) -> Vec<i64>,
+        whole: (&Self, &Self),
         better: impl Fn(&Self, &Self) -> bool,
     ) -> Result<Self, AlgebraError> {
-        let mut parts: BTreeMap<Vec<i64>, Vec<(C, Vec<i64>)>> = BTreeMap::new();
-        for (c, e) in terms {
-            parts
-                .entry(key(e))
-                .or_default()
-                .push((c.clone(), e.clone()));
+        let parts = split_terms(terms.iter().cloned(), key);
+        if let [(k, _)] = parts.iter().collect::<Vec<_>>()[..] {
+            let (as_written, combined) = whole;
+            let holds_atoms = k.iter().any(|&p| p != 0);
+            return Ok(match holds_atoms && better(combined, as_written) {
+                true => combined.clone(),
+                false => as_written.clone(),
+            });
         }
         let mut out = Vec::with_capacity(terms.len());
         for (k, part) in parts {
@@ -444,6 +447,18 @@ impl<C: Coefficient> Poly<C> {
         }
         Ok(self.cleared()?.is_zero())
     }
+}
+
+/// Terms `(coefficient, exponents)` split by `key` of their exponents, in the key's order.
+fn split_terms<C>(
+    terms: impl IntoIterator<Item = (C, Vec<i64>)>,
+    key: impl Fn(&[i64]) -> Vec<i64>,
+) -> BTreeMap<Vec<i64>, Vec<(C, Vec<i64>)>> {
+    let mut parts: BTreeMap<Vec<i64>, Vec<(C, Vec<i64>)>> = BTreeMap::new();
+    for (c, e) in terms {
+        parts.entry(key(&e)).or_default().push((c, e));
+    }
+    parts
 }
 
 /// Every vector of exponents `ks[i..]` whose spans add up to `remaining` exactly, into `out`
