@@ -487,61 +487,23 @@ pub fn closure_of(
     // are left out; its image under the clearing is real too when every atom's polynomial is.
     let conjugates_follow = !complex && clearing.as_ref().is_none_or(|c| c.real);
     let angles: Vec<Var> = vars.angles().collect();
-    // A row is a monomial's exponents and, last, 0 or 1 for the real or imaginary part.
-    let mut rows: FxHashMap<Vec<i64>, usize> = FxHashMap::default();
-    // `e` times `i` when `times_i`, times the parameters' monomial `shift` (variable, power).
-    let mut vectorize = |e: &Expr, times_i: bool, shift: &[(usize, i64)]| -> SparseVec<Rational> {
-        let mut out = Vec::new();
-        for t in e.terms() {
-            let mut ex = t.exponents();
-            for &(j, k) in shift {
-                ex[j] += k;
-            }
-            if conjugates_follow {
-                let k: Vec<i64> = angles.iter().map(|v| ex[v.index()]).collect();
-                if k.iter().find(|x| **x != 0).is_some_and(|x| *x < 0) {
-                    continue;
-                }
-            }
-            let c = t.coeff();
-            let (re, im) = if times_i {
-                (-&c.im, c.re.clone())
-            } else {
-                (c.re.clone(), c.im.clone())
-            };
-            ex.push(0);
-            for (part, x) in [(0, re), (1, im)] {
-                if x.is_zero() {
-                    continue;
-                }
-                *ex.last_mut().expect("the part") = part;
-                let row = match rows.get(&ex) {
-                    Some(&row) => row,
-                    None => {
-                        let row = rows.len();
-                        rows.insert(ex.clone(), row);
-                        row
-                    }
-                };
-                out.push((row, x));
-            }
-        }
-        out
-    };
+    let table = |e: &Expr| TermTable::new(e, &angles, conjugates_follow);
+    let mut rows = Rows::default();
     // Column j: (monomial index, times i).
     let mut col_ids: Vec<(usize, bool)> = Vec::new();
     let mut columns: Vec<SparseVec<Rational>> = Vec::new();
     // Each generators' monomial cleared once (the clearing commutes with a parameter's
-    // monomial, which holds no atom).
-    let images: HashMap<Vec<u32>, Expr> = values
+    // monomial, which holds no atom), and its terms read once for all the parameters'
+    // monomials that shift it.
+    let images: HashMap<Vec<u32>, TermTable> = values
         .into_iter()
         .map(|(beta, e)| {
             let image = clearing.as_ref().map(|c| c.apply(&e)).transpose()?;
-            Ok((beta, image.unwrap_or(e)))
+            Ok((beta, table(image.as_ref().unwrap_or(&e))))
         })
         .collect::<Result<_, EngineError>>()?;
     for (m, beta) in monos.iter().enumerate() {
-        let e = &images[&generators_part(beta)];
+        let terms = &images[&generators_part(beta)];
         let shift: Vec<(usize, i64)> = symbolic
             .iter()
             .zip(&beta[r..])
@@ -553,13 +515,14 @@ pub fn closure_of(
                 continue;
             }
             col_ids.push((m, times_i));
-            columns.push(vectorize(e, times_i, &shift));
+            columns.push(rows.vectorize(terms, times_i, &shift));
         }
     }
     let mut targets: HashMap<(usize, usize), SparseVec<Rational>> = HashMap::new();
     for (key, e) in &fixed_targets {
         let image = clearing.as_ref().map(|c| c.apply(e)).transpose()?;
-        targets.insert(*key, vectorize(image.as_ref().unwrap_or(e), false, &[]));
+        let terms = table(image.as_ref().unwrap_or(e));
+        targets.insert(*key, rows.vectorize(&terms, false, &[]));
     }
     let nrows = rows.len();
 
@@ -841,6 +804,116 @@ pub fn closure_of(
     })
 }
 
+/// A polynomial's terms as the columns read them, read once: their exponents in one flat
+/// table, in variable order, and the real and imaginary parts of their coefficients. A real
+/// function's terms in `e^{−ikθ}` are left out when `conjugates_follow` (see `closure_of`).
+struct TermTable {
+    /// Exponents per term.
+    width: usize,
+    exponents: Vec<i64>,
+    parts: Vec<(Rational, Rational)>,
+}
+
+impl TermTable {
+    fn new(e: &Expr, angles: &[Var], conjugates_follow: bool) -> Self {
+        let width = e.vars().len();
+        let mut exponents = Vec::with_capacity(e.len() * width);
+        let mut parts = Vec::with_capacity(e.len());
+        for t in e.terms() {
+            let first_turn = angles.iter().map(|&v| t.exponent(v)).find(|&k| k != 0);
+            if conjugates_follow && first_turn.is_some_and(|k| k < 0) {
+                continue;
+            }
+            exponents.extend(t.exponents());
+            let c = t.coeff();
+            parts.push((c.re, c.im));
+        }
+        TermTable {
+            width,
+            exponents,
+            parts,
+        }
+    }
+}
+
+/// The rows of the closure's linear system, numbered as they are first met: a row is a
+/// monomial's exponents and, last, 0 or 1 for the real or imaginary part of its coefficient.
+/// A key of at most 16 entries, each in `i8`, the usual case, is packed into one `u128`,
+/// which hashes and compares in a few instructions (the rows of a closure with symbolic
+/// parameters number in the millions); any other goes by its entries.
+#[derive(Default)]
+struct Rows {
+    packed: FxHashMap<u128, usize>,
+    wide: FxHashMap<Vec<i64>, usize>,
+    /// The key being looked up, reused from term to term.
+    key: Vec<i64>,
+}
+
+impl Rows {
+    fn len(&self) -> usize {
+        self.packed.len() + self.wide.len()
+    }
+
+    /// The row of `self.key`, a new one if it has none.
+    fn row(&mut self) -> usize {
+        let next = self.len();
+        match pack(&self.key) {
+            Some(k) => *self.packed.entry(k).or_insert(next),
+            None => match self.wide.get(self.key.as_slice()) {
+                Some(&row) => row,
+                None => {
+                    self.wide.insert(self.key.clone(), next);
+                    next
+                }
+            },
+        }
+    }
+
+    /// The column of the terms `e`, times `i` when `times_i`, times the parameters' monomial
+    /// `shift` (variable index, power).
+    fn vectorize(
+        &mut self,
+        e: &TermTable,
+        times_i: bool,
+        shift: &[(usize, i64)],
+    ) -> SparseVec<Rational> {
+        let mut out = Vec::with_capacity(2 * e.parts.len());
+        for (ex, (re, im)) in e.exponents.chunks_exact(e.width).zip(&e.parts) {
+            self.key.clear();
+            self.key.extend_from_slice(ex);
+            for &(j, k) in shift {
+                self.key[j] += k;
+            }
+            self.key.push(0);
+            let (re, im) = if times_i {
+                (-im, re.clone())
+            } else {
+                (re.clone(), im.clone())
+            };
+            for (part, x) in [(0, re), (1, im)] {
+                if x.is_zero() {
+                    continue;
+                }
+                *self.key.last_mut().expect("the part") = part;
+                out.push((self.row(), x));
+            }
+        }
+        out
+    }
+}
+
+/// `key` packed into a `u128`, a byte an entry, when it has at most 16 entries, each in
+/// `i8`: distinct keys of one length give distinct values.
+fn pack(key: &[i64]) -> Option<u128> {
+    if key.len() > 16 {
+        return None;
+    }
+    key.iter().try_fold(0u128, |packed, &e| {
+        let byte = i8::try_from(e).ok()? as u8;
+        Some(packed << 8 | u128::from(byte))
+    })
+}
+
 /// Whether `Σ sol_j column_j = target` exactly.
 fn combination_equals(
     columns: &[SparseVec<Rational>],
@@ -1106,6 +1179,43 @@ fn normalize(e: Expr) -> Expr {
 mod tests {
     use super::*;
     use crate::systems;
+
+    /// A row's key packs into one `u128` exactly when it has at most 16 entries in `i8`, and
+    /// keys of one length that differ anywhere (sign, last entry, first) pack differently;
+    /// rows are numbered as first met, whichever way their keys go.
+    #[test]
+    fn row_keys_pack_only_when_they_fit_and_stay_distinct() {
+        let keys: Vec<Vec<i64>> = vec![
+            vec![0, 0, 0],
+            vec![0, 0, 1],
+            vec![1, 0, 0],
+            vec![-1, 0, 0],
+            vec![0, -1, 0],
+            vec![127, -128, 0],
+            vec![-128, 127, 0],
+        ];
+        let packed: Vec<u128> = keys.iter().map(|k| pack(k).expect("fits")).collect();
+        for (i, a) in packed.iter().enumerate() {
+            for b in &packed[i + 1..] {
+                assert_ne!(a, b);
+            }
+        }
+        assert_eq!(pack(&[128, 0]), None);
+        assert_eq!(pack(&[-129, 0]), None);
+        assert_eq!(pack(&[0; 17]), None);
+        assert!(pack(&[0; 16]).is_some());
+        let mut rows = Rows::default();
+        let mut row = |key: &[i64]| {
+            rows.key = key.to_vec();
+            rows.row()
+        };
+        assert_eq!(row(&[0, 0, 1]), 0);
+        assert_eq!(row(&[300, 0, 1]), 1);
+        assert_eq!(row(&[-1, 0, 1]), 2);
+        assert_eq!(row(&[300, 0, 1]), 1);
+        assert_eq!(row(&[0, 0, 1]), 0);
+        assert_eq!(rows.len(), 3);
+    }
 
     /// The count the limit is checked against is the number of exponent vectors the closure
     /// then builds, and saturates instead of overflowing.
