@@ -839,8 +839,9 @@ impl TermTable {
 /// The rows of the closure's linear system, numbered as they are first met: a row is a
 /// monomial's exponents and, last, 0 or 1 for the real or imaginary part of its coefficient.
 /// A key of at most 16 entries, each in `i8`, the usual case, is packed into one `u128`,
-/// which hashes and compares in a few instructions (the rows of a closure with symbolic
-/// parameters number in the millions); any other goes by its entries.
+/// which hashes and compares in a few instructions, where a vector's key is read through a
+/// pointer (with symbolic parameters, every column's every term is looked up); any other
+/// goes by its entries.
 #[derive(Default)]
 struct Rows {
     packed: FxHashMap<u128, usize>,
