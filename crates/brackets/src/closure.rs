@@ -820,11 +820,12 @@ impl TermTable {
         let mut exponents = Vec::with_capacity(e.len() * width);
         let mut parts = Vec::with_capacity(e.len());
         for t in e.terms() {
-            let first_turn = angles.iter().map(|&v| t.exponent(v)).find(|&k| k != 0);
+            let ex = t.exponents();
+            let first_turn = angles.iter().map(|v| ex[v.index()]).find(|&k| k != 0);
             if conjugates_follow && first_turn.is_some_and(|k| k < 0) {
                 continue;
             }
-            exponents.extend(t.exponents());
+            exponents.extend(ex);
             let c = t.coeff();
             parts.push((c.re, c.im));
         }

@@ -122,13 +122,11 @@ pub(crate) fn render_terms(vars: &VarSet, terms: &[CosSinTerm], style: Style) ->
 /// and the rational content they share in front; the other terms as they are, in order of
 /// first appearance. `None` when no two terms share a denominator (then nothing changes).
 fn render_fractions(vars: &VarSet, terms: &[CosSinTerm], style: Style) -> Option<String> {
+    vars.denominators().next()?;
     let is_atom: Vec<bool> = vars
         .vars()
         .map(|v| vars.variable(v).kind() == VarKind::Denominator)
         .collect();
-    if !is_atom.contains(&true) {
-        return None;
-    }
     let divides = |t: &CosSinTerm| t.exps.iter().zip(&is_atom).any(|(&e, &atom)| atom && e < 0);
     let denominator = |t: &CosSinTerm| -> Vec<i64> {
         (t.exps.iter().zip(&is_atom))

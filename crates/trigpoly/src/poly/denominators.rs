@@ -289,7 +289,7 @@ impl<C: Coefficient> Poly<C> {
         better: impl Fn(&Self, &Self) -> bool,
     ) -> Result<Self, AlgebraError> {
         let parts = split_terms(terms.iter().cloned(), key);
-        if let [(k, _)] = parts.iter().collect::<Vec<_>>()[..] {
+        if let (1, Some(k)) = (parts.len(), parts.keys().next()) {
             let (as_written, combined) = whole;
             let holds_atoms = k.iter().any(|&p| p != 0);
             return Ok(match holds_atoms && better(combined, as_written) {
