@@ -1,9 +1,11 @@
 //! Kronecker substitution: each monomial of a product's exponent box as one integer.
 //!
-//! The index of `x^e` is `Σ (e_j − lo_j)·stride_j` with the first variable most significant, so
-//! index order is the term order and `idx(a·b) = idx(a) + idx(b)` when each factor is indexed
-//! from its own lower corner. The dense and the heap products work on these indices: one word
-//! to add and compare instead of the packed exponent words.
+//! The index of `x^e` is `Σ (e_j − lo_j)/s_j·stride_j` with the first variable most
+//! significant, so index order is the term order and `idx(a·b) = idx(a) + idx(b)` when each
+//! factor is indexed from its own lower corner. `s_j` is the step both factors' exponents of
+//! variable `j` move by (FLINT's deflation): 2 for polynomials in `z²`, whose box then has
+//! half the cells. The dense and the heap products work on these indices: one word to add and
+//! compare instead of the packed exponent words.
 
 use crate::varset::Layout;
 
@@ -11,6 +13,8 @@ use crate::varset::Layout;
 pub(crate) struct Kronecker {
     /// Lower corner of the product's box.
     lo: Vec<i64>,
+    /// The step of each variable's exponents (at least 1): a digit counts steps.
+    steps: Vec<u64>,
     /// Extent of the box in each variable.
     ranges: Vec<u64>,
     /// `stride_j = Π_{k > j} ranges_k`.
@@ -20,12 +24,15 @@ pub(crate) struct Kronecker {
 }
 
 impl Kronecker {
-    /// The box of `a·b`, or `None` if its size does not fit comfortably in a `u64`.
-    pub(crate) fn new(a: &[(i64, i64)], b: &[(i64, i64)]) -> Option<Kronecker> {
+    /// The box of `a·b`, or `None` if its size does not fit comfortably in a `u64`, where each
+    /// variable's exponents in `a` and in `b` lie `steps` apart from their minimum
+    /// ([`shared_steps`]).
+    pub(crate) fn new(a: &[(i64, i64)], b: &[(i64, i64)], steps: &[u64]) -> Option<Kronecker> {
         let ranges: Vec<u64> = a
             .iter()
             .zip(b)
-            .map(|(ea, eb)| (ea.1 + eb.1 - ea.0 - eb.0 + 1) as u64)
+            .zip(steps)
+            .map(|((ea, eb), &s)| (ea.1 + eb.1 - ea.0 - eb.0) as u64 / s + 1)
             .collect();
         let size = ranges.iter().try_fold(1u64, |acc, &r| acc.checked_mul(r))?;
         if size > 1 << 62 {
@@ -38,6 +45,7 @@ impl Kronecker {
         let lo = a.iter().zip(b).map(|(ea, eb)| ea.0 + eb.0).collect();
         Some(Kronecker {
             lo,
+            steps: steps.to_vec(),
             ranges,
             strides,
             size,
@@ -58,7 +66,12 @@ impl Kronecker {
             .map(|mono| {
                 layout.unpack_into(mono, &mut e);
                 (0..n)
-                    .map(|j| (e[j] - own[j].0) as u64 * self.strides[j])
+                    .map(|j| {
+                        let (distance, step) = ((e[j] - own[j].0) as u64, self.steps[j]);
+                        // A division only where the variable has a step.
+                        let digit = if step == 1 { distance } else { distance / step };
+                        digit * self.strides[j]
+                    })
                     .sum()
             })
             .collect()
@@ -77,6 +90,7 @@ impl Kronecker {
                 let (word, shift) = layout.field(j);
                 Digit {
                     divisor: Divisor::new(self.ranges[j], small),
+                    step: self.steps[j],
                     word,
                     shift,
                 }
@@ -105,6 +119,16 @@ impl Kronecker {
             high: digits.collect(),
         }
     }
+}
+
+/// Per variable, the step a product's box can take (at least 1): the gcd of the factors'
+/// [`Poly::exponent_steps`](super::Poly::exponent_steps), over which both factors' exponents
+/// lie from their minimum.
+pub(crate) fn shared_steps(a: &[u64], b: &[u64]) -> Vec<u64> {
+    a.iter()
+        .zip(b)
+        .map(|(&sa, &sb)| num_integer::Integer::gcd(&sa, &sb).max(1))
+        .collect()
 }
 
 /// Bytes of the table of low digits in a [`Decoder`]: an L1 cache's worth.
@@ -145,6 +169,8 @@ impl Divisor {
 /// One variable's digit of a Kronecker index, and the field it is packed into.
 struct Digit {
     divisor: Divisor,
+    /// The exponent a unit of the digit stands for.
+    step: u64,
     word: usize,
     shift: u32,
 }
@@ -153,7 +179,7 @@ struct Digit {
 fn add_digits(digits: &[Digit], mut idx: u64, out: &mut [u64]) {
     for d in digits {
         let (q, r) = d.divisor.div_rem(idx);
-        out[d.word] = out[d.word].wrapping_add(r << d.shift);
+        out[d.word] = out[d.word].wrapping_add((r * d.step) << d.shift);
         idx = q;
     }
 }
@@ -196,21 +222,35 @@ impl Decoder {
     /// Appends the packed monomial of index `idx` to `out`.
     #[inline(always)]
     pub(crate) fn decode_onto(&self, cursor: &mut Cursor, idx: u64, out: &mut Vec<u64>) {
+        // One word (most products): a push, where the general path's iterators cost more than
+        // the addition.
+        if self.words == 1 {
+            out.push(self.decode_word(cursor, idx));
+            return;
+        }
+        let low = self.low_part(cursor, idx);
+        let at = low * self.words;
+        for (l, h) in self.table[at..at + self.words].iter().zip(&cursor.fields) {
+            out.push(l.wrapping_add(*h));
+        }
+    }
+
+    /// The packed monomial of index `idx` in a one-word layout.
+    #[inline(always)]
+    pub(crate) fn decode_word(&self, cursor: &mut Cursor, idx: u64) -> u64 {
+        debug_assert_eq!(self.words, 1);
+        let low = self.low_part(cursor, idx);
+        self.table[low].wrapping_add(cursor.fields[0])
+    }
+
+    /// The low part of `idx`, its row of the table, with the cursor moved to its high part.
+    #[inline(always)]
+    fn low_part(&self, cursor: &mut Cursor, idx: u64) -> usize {
         let (high, low) = self.split.div_rem(idx);
         if high != cursor.high {
             self.move_to(cursor, high);
         }
-        let low = low as usize;
-        // One word (most products): a push, where the general path's iterators cost more than
-        // the addition.
-        if self.words == 1 {
-            out.push(self.table[low].wrapping_add(cursor.fields[0]));
-        } else {
-            let at = low * self.words;
-            for (l, h) in self.table[at..at + self.words].iter().zip(&cursor.fields) {
-                out.push(l.wrapping_add(*h));
-            }
-        }
+        low as usize
     }
 
     /// Decodes the high part `high` into the cursor (once per `span` indices read in order).
@@ -229,10 +269,14 @@ mod tests {
 
     /// Every index of a box decodes to the monomial whose index it is, read in descending
     /// order (as the dense product reads) and in a scattered order, with tables of every size
-    /// from none to all the low digits, in a one-word and a three-word layout.
+    /// from none to all the low digits, in a one-word and a three-word layout, with every
+    /// step 1 and with steps of 2 and 3 (the box's monomials then lie that far apart).
     #[test]
     fn decoding_inverts_indexing() {
-        for (names, bits) in [(3, 16), (5, 32)] {
+        let cases = [(3, 16), (5, 32)]
+            .into_iter()
+            .flat_map(|case| [(case, false), (case, true)]);
+        for ((names, bits), stepped) in cases {
             let mut builder = VarSet::builder().exponent_bits(bits);
             for k in 0..names {
                 builder = builder.coordinate(&format!("v{k}"));
@@ -240,11 +284,18 @@ mod tests {
             let vars = builder.build().unwrap();
             let layout = vars.layout();
             let n = names;
-            // The factors' bounds: a negative corner, and one variable of extent 1 (no digit).
-            let mut a: Vec<(i64, i64)> = (0..n).map(|j| (-(j as i64), 2 + j as i64)).collect();
-            let mut b: Vec<(i64, i64)> = (0..n).map(|j| (1, 1 + (j as i64 % 3))).collect();
+            let steps: Vec<u64> = (0..n as u64)
+                .map(|j| if stepped { 1 + j % 3 } else { 1 })
+                .collect();
+            let s = |j: usize| steps[j] as i64;
+            // The factors' bounds, a whole number of steps wide: a negative corner, and one
+            // variable of extent 1 (no digit).
+            let mut a: Vec<(i64, i64)> = (0..n)
+                .map(|j| (-(j as i64), -(j as i64) + (2 + j as i64) * s(j)))
+                .collect();
+            let mut b: Vec<(i64, i64)> = (0..n).map(|j| (1, 1 + (j as i64 % 3) * s(j))).collect();
             (a[1], b[1]) = ((3, 3), (0, 0));
-            let kron = Kronecker::new(&a, &b).unwrap();
+            let kron = Kronecker::new(&a, &b, &steps).unwrap();
             let lo: Vec<i64> = a.iter().zip(&b).map(|(x, y)| x.0 + y.0).collect();
             let hi: Vec<i64> = a.iter().zip(&b).map(|(x, y)| x.1 + y.1).collect();
             let own: Vec<(i64, i64)> = lo.iter().map(|&l| (l, l)).collect();
@@ -259,7 +310,7 @@ mod tests {
                 let Some(j) = (0..n).rev().find(|&j| e[j] < hi[j]) else {
                     break;
                 };
-                e[j] += 1;
+                e[j] += s(j);
                 e[j + 1..].copy_from_slice(&lo[j + 1..]);
             }
             assert_eq!(expected.len() as u64, kron.size());

@@ -487,6 +487,39 @@ impl<C: Coefficient> Poly<C> {
         mul::check_sum_bounds(&self.vars, &self.bounds(), &other.bounds())
     }
 
+    /// Per variable, the gcd of every exponent's distance from `bounds`' minimum (0 when the
+    /// variable takes one value): the step of the lattice its exponents lie on, 2 for a
+    /// polynomial in `z²`. A product's Kronecker box shrinks by each step its factors share.
+    /// One pass over the packed words, which ends once every step is 1.
+    pub(crate) fn exponent_steps(&self, bounds: &[(i64, i64)]) -> Vec<u64> {
+        let layout = self.vars.layout();
+        let mut steps = vec![0u64; bounds.len()];
+        // Only the variables that take more than one value can have a step above 1.
+        let open: Vec<(usize, (usize, u32))> = (0..bounds.len())
+            .filter(|&j| bounds[j].0 < bounds[j].1)
+            .map(|j| (j, layout.field(j)))
+            .collect();
+        let mut above_one = open.len();
+        for m in self.exps.chunks_exact(self.words()) {
+            if above_one == 0 {
+                break;
+            }
+            for &(j, field) in &open {
+                let step = steps[j];
+                if step == 1 {
+                    continue;
+                }
+                let distance = (layout.read(m, field) - bounds[j].0) as u64;
+                let step = num_integer::Integer::gcd(&step, &distance);
+                if step == 1 {
+                    above_one -= 1;
+                }
+                steps[j] = step;
+            }
+        }
+        steps
+    }
+
     /// Per-variable `(min, max)` exponents (all zero for the zero polynomial).
     pub(crate) fn bounds(&self) -> Vec<(i64, i64)> {
         let layout = self.vars.layout();

@@ -10,7 +10,7 @@
 use super::dense::try_mul_dense;
 use super::gather;
 use super::hashed;
-use super::kronecker::Kronecker;
+use super::kronecker::{shared_steps, Kronecker};
 use super::{check_exponent, Poly};
 use crate::error::AlgebraError;
 use crate::number::{Coefficient, IntegerRing};
@@ -152,7 +152,8 @@ impl<C: Coefficient> Poly<C> {
         check_sum_bounds(&self.vars, &bs, &bb)?;
         let limit = self.vars.limits().max_terms;
         let layout = self.layout();
-        let (exps, coeffs) = match Kronecker::new(&bs, &bb) {
+        let steps = shared_steps(&small.exponent_steps(&bs), &big.exponent_steps(&bb));
+        let (exps, coeffs) = match Kronecker::new(&bs, &bb, &steps) {
             Some(kron) => match try_mul_dense(
                 &kron,
                 layout,

@@ -61,6 +61,33 @@ fn dense_products_split_over_threads_agree_with_one_thread() {
     assert!(product.terms().any(|t| !t.coeff().is_real()));
 }
 
+/// Factors whose exponents of a variable lie a step apart from their least (`x³`, `z²` and
+/// `t⁻²` in one, `x⁶`, `z²` and `t⁴` in the other) multiply in a box with the shared steps (3,
+/// 2, 2) taken out: indices count steps, and the decoder puts them back. The product is the
+/// product of the factors with every step 1 (`x`, `z`, `t⁻¹` ...), with `x³`, `z²` and `t²`
+/// put for `x`, `z` and `t` afterwards, and takes the value of `f(p)·g(p)` at a point, on one
+/// thread and on two, over Q and over Q(i).
+#[test]
+fn products_of_factors_in_powers_of_a_variable_take_the_steps_out_of_the_box() {
+    let pt = [("x", 2), ("y", -1), ("z", 1), ("t", -1)];
+    let stepped = [
+        "(1 + x^3 + 2*z^2 - 3*z^4*t^-2 + y)^6",
+        "(2 - x^6 + z^2*y + 5*t^4 + z^6)^6",
+    ];
+    let product: Q = checked_product(stepped[0], stepped[1], &pt);
+    let vars = coordinates(&["x", "y", "z", "t"]);
+    let unstepped: Q =
+        p(&vars, "(1 + x + 2*z - 3*z^2*t^-1 + y)^6") * p(&vars, "(2 - x^2 + z*y + 5*t^2 + z^3)^6");
+    let powers =
+        [("x", "x^3"), ("z", "z^2"), ("t", "t^2")].map(|(v, e)| (var(&vars, v), p(&vars, e)));
+    assert_eq!(unstepped.subst_many(&powers), Ok(product));
+    checked_product::<GaussianRational>(
+        "(1 + i*x^3 + 2*z^2 - 3*z^4*t^-2 + y)^6",
+        "(2 - x^6 + i*z^2*y + 5*t^4 + z^6)^6",
+        &pt,
+    );
+}
+
 /// A sparse product of 1365² ≈ 1.9M term pairs (a box of 67⁴ ≈ 20M cells): on two threads
 /// one adds into the accumulators while the other writes the terms, in batches. The product
 /// is the one computed on one thread, over Q and over Q(i).
