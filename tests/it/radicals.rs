@@ -60,6 +60,22 @@ fn radicals_zero_is_decided_by_reducing() {
             "sqrt(2x² + 2y²) is no declared radical",
         ),
         ("sqrt(x^2 + 2*y^2)", "radicals = { r = \"x^2 + 2*y^2\" }"),
+        // The root of a square is a polynomial up to its sign: no radical to declare.
+        (
+            "sqrt(x^2)",
+            "sqrt(x²) is |x|, whose sign superint does not choose: write x where it is not \
+             negative, and its negative where it is",
+        ),
+        (
+            "sqrt(-4*x^2 - 4*y^2 - 8*x*y)",
+            "sqrt(−4x² − 8xy − 4y²) is i·|2x + 2y|, whose sign superint does not choose: write \
+             i*(2*x + 2*y) where 2x + 2y is not negative, and its negative where it is",
+        ),
+        (
+            "sqrt(x^2/4 - x*y + y^2)",
+            "sqrt(x²/4 − xy + y²) is |x/2 − y|, whose sign superint does not choose: write \
+             x/2 - y where it is not negative",
+        ),
     ] {
         let err = file.parse(root).expect_err(root).to_string();
         assert!(err.contains(message), "{root}: {err}");
@@ -291,7 +307,9 @@ fn radicals_bad_declarations_are_refused_at_their_place() {
     let cases = [
         (
             "{ r = \"x^2 + 2*x*y + y^2\" }",
-            "bad.toml:6:14: the radicand of r = √(x² + 2xy + y²) is a square",
+            "bad.toml:6:14: the radicand of r = √(x² + 2xy + y²) is the square of x + y, so the \
+             radical is x + y up to its sign, which superint does not choose: write x + y where it \
+             is not negative, and its negative where it is",
         ),
         (
             "{ r = \"4\" }",

@@ -177,23 +177,32 @@ impl<C: Coefficient> Poly<C> {
                     .filter(|&(i, _)| chosen(i))
                     .map(|(_, (v, r))| Self::radical_definition(*v, r))
                     .collect();
-                let (what, so) = match names.len() {
-                    1 => (
-                        format!("the radicand of {} is a square", names[0]),
-                        "the radical is a rational function of the variables: write it as one",
+                let one = (names.len() == 1).then(|| {
+                    let i = subset.trailing_zeros() as usize;
+                    radicals[i].1.square_root()
+                });
+                let message = match one {
+                    // The radicand is the square of a polynomial: the root is known exactly.
+                    Some(Some(root)) => format!(
+                        "the radicand of {} is the square of {root}, so the radical is {root} \
+                         up to its sign, which superint does not choose: write {} where it is \
+                         not negative, and its negative where it is",
+                        names[0],
+                        root.to_ascii()
                     ),
-                    _ => (
-                        format!(
-                            "the product of the radicands of {} is a square",
-                            names.join(", ")
-                        ),
-                        "one radical is a rational function times the others: declare only \
-                         the others",
+                    Some(None) => format!(
+                        "the radicand of {} is a square (it is one at every point tried), so \
+                         the radical is a rational function of the variables: write it as one",
+                        names[0]
+                    ),
+                    _ => format!(
+                        "the product of the radicands of {} is a square (it is one at every \
+                         point tried), so one radical is a rational function times the others: \
+                         declare only the others",
+                        names.join(", ")
                     ),
                 };
-                return Err(AlgebraError::Invalid(format!(
-                    "{what} (it is one at every point tried), so {so}"
-                )));
+                return Err(AlgebraError::Invalid(message));
             }
         }
         Ok(())
@@ -232,6 +241,72 @@ impl<C: Coefficient> Poly<C> {
             }
         }
         Ok(None)
+    }
+
+    /// The polynomial `s` with a positive leading coefficient whose square is `self`, if
+    /// there is one (`x + y` for `x² + 2xy + y²`, `cos θ` for `cos² θ`): what `sqrt` of a
+    /// square is, up to its sign, which no polynomial chooses. The schoolbook root: the root
+    /// of the leading term, then each next term from the leading term of the remainder
+    /// divided by twice the root's leading term. Every term of `s` lies in the half of
+    /// `self`'s exponent box (the Newton polytope of `s²` is twice that of `s`), and the terms
+    /// come in descending order, so the walk ends; for a large polynomial that is no square it
+    /// stops early, after as many terms as `self` has and a few more (`None`, as it does when
+    /// an operation meets a limit: this serves messages, not normal forms).
+    pub(crate) fn square_root(&self) -> Option<Self> {
+        let vars = &self.vars;
+        let handles: Vec<Var> = vars.vars().collect();
+        let ranges: Vec<(i64, i64)> = handles
+            .iter()
+            .map(|&v| self.exponent_range(v).unwrap_or((0, 0)))
+            .collect();
+        // A monomial of `s`: each exponent in half of `self`'s range.
+        let half = |e: &[i64]| -> Option<Vec<(Var, i64)>> {
+            e.iter()
+                .zip(&ranges)
+                .zip(&handles)
+                .map(|((&x, &(lo, hi)), &v)| (2 * x >= lo && 2 * x <= hi).then_some((v, x)))
+                .collect()
+        };
+        let lead = self.terms().next()?;
+        let c = lead.coeff().to_gaussian();
+        let root_c = if c.is_real() {
+            c.re.sqrt()?
+        } else {
+            return None;
+        };
+        let lead_e = lead.exponents();
+        if lead_e.iter().any(|e| e % 2 != 0) {
+            return None;
+        }
+        let half_lead: Vec<i64> = lead_e.iter().map(|e| e / 2).collect();
+        let mut root =
+            Self::monomial(vars, C::from_rational(root_c.clone()), &half(&half_lead)?).ok()?;
+        let over_twice_lead = &Rational::one() / &(&Rational::from(2) * &root_c);
+        let mut rest = self.checked_sub(&root.checked_mul(&root).ok()?).ok()?;
+        for _ in 0..self.len() + 8 {
+            let Some(next) = rest.terms().next() else {
+                return Some(root);
+            };
+            let e: Vec<i64> = next
+                .exponents()
+                .iter()
+                .zip(&half_lead)
+                .map(|(a, b)| a - b)
+                .collect();
+            let term = Self::monomial(vars, next.coeff(), &half(&e)?)
+                .ok()?
+                .scale_rational(&over_twice_lead);
+            // (s + t)² = s² + t·(2s + t)
+            let twice_plus = root
+                .scale_rational(&Rational::from(2))
+                .checked_add(&term)
+                .ok()?;
+            rest = rest
+                .checked_sub(&term.checked_mul(&twice_plus).ok()?)
+                .ok()?;
+            root = root.checked_add(&term).ok()?;
+        }
+        None
     }
 
     /// For each radical of the set, the power of it that clears `self` of its negative
@@ -476,6 +551,56 @@ mod tests {
         assert!(!e("r*s - (x^2 + y^2 + 1)").vanishes().unwrap());
     }
 
+    /// The square root of a square is the polynomial with a positive leading coefficient whose
+    /// square it is, with rational and Gaussian coefficients, negative powers and angles; a
+    /// polynomial that is no square (an odd power, a coefficient that is no rational square, a
+    /// term too many, a negative leading coefficient) has none.
+    #[test]
+    fn square_roots_of_squares_and_of_nothing_else() {
+        let vars = VarSet::builder()
+            .coordinate("x")
+            .coordinate("y")
+            .momentum("p")
+            .angle("theta")
+            .parameter("k")
+            .build()
+            .unwrap();
+        let e = |s: &str| Expr::parse(&vars, s).unwrap();
+        for root in [
+            "x",
+            "x + y",
+            "2*x - 3*y + 1/2",
+            "x^3*y - k*p^2 + 7",
+            "x/y + y/x",
+            "k^-2 + p",
+            "cos(theta)",
+            "p*sin(theta) + x*cos(2*theta)",
+            "x + i*y",
+            "(1 + x + y + p)^4",
+        ] {
+            let s = e(root);
+            let square = s.checked_mul(&s).unwrap();
+            // The root whose leading coefficient is positive: `s` or `−s`.
+            let lead = s.terms().next().unwrap().coeff();
+            let expected = if lead.re.is_negative() { -&s } else { s };
+            assert_eq!(square.square_root(), Some(expected), "{root}");
+        }
+        for not_square in [
+            "x",
+            "x^3",
+            "2*x^2",
+            "x^2 + 1",
+            "x^2 + x",
+            "x^2 + 2*x*y",
+            "-x^2",
+            "x^2*y^2 + 1",
+            "cos(theta)^2 + 1",
+            "(1 + x + y + p)^4 + x",
+        ] {
+            assert_eq!(e(not_square).square_root(), None, "{not_square}");
+        }
+    }
+
     #[test]
     fn dependent_radicals_are_refused() {
         let build = |radicals: &[(&str, &str)]| {
@@ -490,7 +615,7 @@ mod tests {
         let square = build(&[("r", "4*x^2")]);
         let err = Expr::check_radicals(&square).unwrap_err().to_string();
         assert!(
-            err.contains("the radicand of r = √(4x²) is a square"),
+            err.contains("the radicand of r = √(4x²) is the square of 2x, so the radical is 2x"),
             "{err}"
         );
         // √(x² + y²) · √(4x² + 4y²) = 2(x² + y²).
@@ -499,7 +624,11 @@ mod tests {
         assert!(err.contains("the product of the radicands of r"), "{err}");
         // Over Q(i), −(x + y)² is the square of i(x + y).
         let imaginary = build(&[("r", "-x^2 - 2*x*y - y^2")]);
-        assert!(Expr::check_radicals(&imaginary).is_err());
+        let err = Expr::check_radicals(&imaginary).unwrap_err().to_string();
+        assert!(
+            err.contains("is a square (it is one at every point tried)"),
+            "{err}"
+        );
         assert!(Expr::check_radicals(&build(&[("r", "-x^2 - y^2")])).is_ok());
         let constant = build(&[("r", "2")]);
         assert!(Expr::check_radicals(&constant).is_err());
