@@ -249,9 +249,10 @@ impl<C: Coefficient> Poly<C> {
     /// of the leading term, then each next term from the leading term of the remainder
     /// divided by twice the root's leading term. Every term of `s` lies in the half of
     /// `self`'s exponent box (the Newton polytope of `s²` is twice that of `s`), and the terms
-    /// come in descending order, so the walk ends; for a large polynomial that is no square it
-    /// stops early, after as many terms as `self` has and a few more (`None`, as it does when
-    /// an operation meets a limit: this serves messages, not normal forms).
+    /// come in descending order, so the walk ends; it stops early, after as many terms as
+    /// `self` has and a few more, with `None`: also for the rare square whose root has more
+    /// terms than that, and when an operation meets a limit (this serves messages, not normal
+    /// forms).
     pub(crate) fn square_root(&self) -> Option<Self> {
         let vars = &self.vars;
         let handles: Vec<Var> = vars.vars().collect();
