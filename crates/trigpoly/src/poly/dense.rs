@@ -37,8 +37,8 @@ const PARTS_PER_THREAD: u64 = 4;
 const PIPELINE_WORK: u64 = 1 << 20;
 /// Terms handed from the accumulating thread to the building one at a time.
 const BATCH: usize = 1 << 16;
-/// Terms read back from the accumulators before they go to the sink together (24 KB of
-/// `i128` sums: they stay in the L1 cache until the sink writes them).
+/// Terms read back from the accumulators before the builder writes them together (24 KB of
+/// `i128` sums: they stay in the L1 cache until it writes them).
 const READ_BATCH: usize = 1 << 10;
 /// Batches on their way to the building thread before the accumulating one waits.
 const BATCHES_IN_FLIGHT: usize = 4;
@@ -268,7 +268,8 @@ impl<S: Copy + Send + Sync> Factors<S> {
             let spawned = std::thread::Builder::new().spawn_scoped(scope, move || {
                 let mut builder = Builder::<I>::new(decoder, bound);
                 for mut batch in batches {
-                    builder.take(&mut batch);
+                    builder.append(&batch);
+                    batch.clear();
                     // The accumulating side may have finished; then the batch is dropped.
                     let _ = emptied.send(batch);
                 }
@@ -317,7 +318,6 @@ impl<S: Copy + Send + Sync> Factors<S> {
         let chunk = acc.len() as u64;
         let zero = I::Wide::default();
         let mut touched = vec![0u64; if MARK { (chunk / 64) as usize } else { 0 }];
-        let mut found = Vec::with_capacity(READ_BATCH);
         // `next[i]`: the first partner of row `i` not yet multiplied.
         // Sparse: `waiting[c]` starts the list of the rows whose next product falls in chunk
         // `c` (counted from the top), linked through `then`. Dense: rows before `first` land
@@ -382,18 +382,11 @@ impl<S: Copy + Send + Sync> Factors<S> {
                     );
                 }
             }
-            // Read the accumulators back, highest index first, into `found`, which the sink
-            // writes out a batch at a time: a loop of its own for the monomials and one for
-            // the coefficients, where writing each term as it was read kept the vectors'
-            // lengths and ends on the stack between the reads (Pearce(12): 1.8 % of the
-            // instructions).
+            // Read the accumulators back, highest index first.
             let mut read = |off: usize| {
                 let slot = std::mem::take(&mut acc[off]);
                 if slot != zero {
-                    found.push((bottom + off as u64, slot));
-                    if found.len() == READ_BATCH {
-                        sink.take(&mut found);
-                    }
+                    sink.push(bottom + off as u64, slot);
                 }
             };
             if MARK {
@@ -408,7 +401,7 @@ impl<S: Copy + Send + Sync> Factors<S> {
             } else {
                 (0..(top - bottom) as usize).rev().for_each(read);
             }
-            sink.take(&mut found);
+            sink.end_chunk();
             current += 1;
             if sink.len() > max_terms {
                 return Err(AlgebraError::TooManyTerms { limit: max_terms });
@@ -419,22 +412,30 @@ impl<S: Copy + Send + Sync> Factors<S> {
     }
 }
 
-/// Where the terms of a product go as the accumulators are read back.
+/// Where the terms of a product go as the accumulators are read back. Both sinks collect
+/// the terms in batches: the builder writes each batch out in two loops of known length, the
+/// sender hands it to the building thread.
 trait Sink<I: IntegerRing> {
-    /// Takes the terms of `found` (Kronecker index and sum), descending and lower than every
-    /// term before them, and leaves it empty.
-    fn take(&mut self, found: &mut Vec<(u64, I::Wide)>);
+    /// The term with Kronecker index `k` and sum `w`, lower than every term before it.
+    fn push(&mut self, k: u64, w: I::Wide);
+    /// A chunk has been read back: [`Sink::len`] counts every term pushed so far.
+    fn end_chunk(&mut self);
     /// How many terms have come.
     fn len(&self) -> usize;
 }
 
 /// The terms of a product, written as they come: indices decoded to packed monomials,
 /// accumulators to coefficients.
-struct Builder<'d, I> {
+struct Builder<'d, I: IntegerRing> {
     decoder: &'d Decoder,
     cursor: Cursor,
     exps: Vec<u64>,
     coeffs: Vec<I>,
+    /// Terms pushed as a [`Sink`] and not yet written, at most [`READ_BATCH`] of them: the
+    /// monomials and the coefficients of a batch are written by a loop each, where writing
+    /// each term as it was read kept the vectors' lengths and ends on the stack between the
+    /// reads (Pearce(12): 1.8 % of the instructions).
+    found: Vec<(u64, I::Wide)>,
     /// The number of terms at which the vectors' next [`BACKED_TERMS`] pages' worth are
     /// backed before they are written (`pages.rs`), which saves most of a page fault's cost
     /// per page; `usize::MAX` (never) unless the product is large enough that the window past
@@ -464,6 +465,7 @@ impl<'d, I: IntegerRing> Builder<'d, I> {
             },
             exps,
             coeffs,
+            found: Vec::new(),
         }
     }
 
@@ -496,19 +498,35 @@ impl<'d, I: IntegerRing> Builder<'d, I> {
         }
     }
 
+    /// Writes the terms pushed as a [`Sink`] (their buffer kept for the next ones).
+    fn write_found(&mut self) {
+        let found = std::mem::take(&mut self.found);
+        self.append(&found);
+        self.found = found;
+        self.found.clear();
+    }
+
     fn finish(self) -> Product<I> {
+        debug_assert!(self.found.is_empty(), "every chunk's terms are written");
         (self.exps, self.coeffs)
     }
 }
 
 impl<I: IntegerRing> Sink<I> for Builder<'_, I> {
-    fn take(&mut self, found: &mut Vec<(u64, I::Wide)>) {
-        self.append(found);
-        found.clear();
+    #[inline(always)]
+    fn push(&mut self, k: u64, w: I::Wide) {
+        self.found.push((k, w));
+        if self.found.len() == READ_BATCH {
+            self.write_found();
+        }
+    }
+
+    fn end_chunk(&mut self) {
+        self.write_found();
     }
 
     fn len(&self) -> usize {
-        self.coeffs.len()
+        self.coeffs.len() + self.found.len()
     }
 }
 
@@ -536,13 +554,15 @@ impl<I: IntegerRing> Sender<I> {
 }
 
 impl<I: IntegerRing> Sink<I> for Sender<I> {
-    fn take(&mut self, found: &mut Vec<(u64, I::Wide)>) {
-        // A batch goes when the next terms would not fit it, so that it never grows.
-        if self.batch.len() + found.len() > BATCH {
+    #[inline(always)]
+    fn push(&mut self, k: u64, w: I::Wide) {
+        self.batch.push((k, w));
+        if self.batch.len() == BATCH {
             self.flush();
         }
-        self.batch.append(found);
     }
+
+    fn end_chunk(&mut self) {}
 
     fn len(&self) -> usize {
         self.sent + self.batch.len()
