@@ -4,7 +4,7 @@
 
 use crate::error::AlgebraError;
 use crate::number::{Coefficient, GaussianRational, Integer, Rational};
-use crate::poly::Poly;
+use crate::poly::{either_sign, Poly};
 use crate::syntax::{parse_expr, Expr, ExprKind, ParseError, Span};
 use crate::varset::{Var, VarKind, Vars};
 
@@ -367,28 +367,28 @@ impl<C: Coefficient> Lower<'_, C> {
         if let Some(root) = Poly::root_by_radicals(&value).map_err(at(span))? {
             return Ok(root);
         }
+        if let Some(c) = value.as_constant() {
+            let message =
+                format!("sqrt({c}) is not a rational number: write the root as a parameter");
+            return Err(ParseError::new(span, message));
+        }
         // A radical of a square, or of minus one, would be refused where it is declared: the
         // root is a polynomial, up to the sign that superint does not choose.
-        let root_of_square = || value.square_root().map(|root| (root, false));
         let root_of_negated = || (-&value).square_root().map(|root| (root, true));
-        let message = match (
-            value.as_constant(),
-            root_of_square().or_else(root_of_negated),
-        ) {
-            (Some(c), _) => {
-                format!("sqrt({c}) is not a rational number: write the root as a parameter")
-            }
-            (None, Some((root, false))) => format!(
-                "sqrt({value}) is |{root}|, whose sign superint does not choose: write {} \
-                 where it is not negative, and its negative where it is",
-                root.to_ascii()
+        let root_up_to_sign = value
+            .square_root()
+            .map(|root| (root, false))
+            .or_else(root_of_negated);
+        let message = match root_up_to_sign {
+            Some((root, false)) => format!(
+                "sqrt({value}) is |{root}|, whose sign superint does not choose: {}",
+                either_sign(&root.to_ascii(), "it")
             ),
-            (None, Some((root, true))) => format!(
-                "sqrt({value}) is i·|{root}|, whose sign superint does not choose: write \
-                 i*({}) where {root} is not negative, and its negative where it is",
-                root.to_ascii()
+            Some((root, true)) => format!(
+                "sqrt({value}) is i·|{root}|, whose sign superint does not choose: {}",
+                either_sign(&format!("i*({})", root.to_ascii()), &root.to_string())
             ),
-            (None, None) => format!(
+            None => format!(
                 "sqrt({value}) is no declared radical: declare it (radicals = {{ r = \"{}\" }} \
                  in [phase_space], for a name r of yours), and sqrt of it reads as r",
                 value.to_ascii()

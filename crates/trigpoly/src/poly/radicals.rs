@@ -185,10 +185,9 @@ impl<C: Coefficient> Poly<C> {
                     // The radicand is the square of a polynomial: the root is known exactly.
                     Some(Some(root)) => format!(
                         "the radicand of {} is the square of {root}, so the radical is {root} \
-                         up to its sign, which superint does not choose: write {} where it is \
-                         not negative, and its negative where it is",
+                         up to its sign, which superint does not choose: {}",
                         names[0],
-                        root.to_ascii()
+                        either_sign(&root.to_ascii(), "it")
                     ),
                     Some(None) => format!(
                         "the radicand of {} is a square (it is one at every point tried), so \
@@ -256,10 +255,7 @@ impl<C: Coefficient> Poly<C> {
     pub(crate) fn square_root(&self) -> Option<Self> {
         let vars = &self.vars;
         let handles: Vec<Var> = vars.vars().collect();
-        let ranges: Vec<(i64, i64)> = handles
-            .iter()
-            .map(|&v| self.exponent_range(v).unwrap_or((0, 0)))
-            .collect();
+        let ranges = self.bounds();
         // A monomial of `s`: each exponent in half of `self`'s range.
         let half = |e: &[i64]| -> Option<Vec<(Var, i64)>> {
             e.iter()
@@ -471,6 +467,13 @@ impl<C: Coefficient> Poly<C> {
         };
         Ok(Some(q.checked_mul(&unit.checked_pow(-1)?)?))
     }
+}
+
+/// How a message asks for the root of a square, whose sign superint does not choose:
+/// `write x + y where it is not negative, and its negative where it is`, for `written` the
+/// root as the user writes it and `subject` what its sign is the sign of.
+pub(crate) fn either_sign(written: &str, subject: &str) -> String {
+    format!("write {written} where {subject} is not negative, and its negative where it is")
 }
 
 /// The `k`-th variable's value at the `s`-th point of the independence check: small integers,
