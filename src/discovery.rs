@@ -717,13 +717,25 @@ pub fn search_report(
     // by momenta and parameters over common denominators, reduced (the linear algebra's
     // monomials are not independent, and its combination of them can be long). The same
     // element.
-    // Only with atoms: a radical's powers are shown as the search chose them (results.md §13).
+    // With radicals only, each integral as the search chose its monomials (results.md §13:
+    // no `r²` where a polynomial is, so the monomials show), unless it has fewer terms with
+    // the least powers of its radicals (`2β/(xr) − 2βr/(xy²)` is `−2βx/(y²r)`).
     let with_atoms = Expr::has_denominator_atoms(&r.vars);
+    let with_radicals = Expr::has_radicals(&r.vars);
     let written: Vec<Expr> = shown
         .iter()
-        .map(|&i| match with_atoms {
-            true => r.basis[i].expr().over_common_denominators(),
-            false => Ok(r.basis[i].expr().clone()),
+        .map(|&i| {
+            let e = r.basis[i].expr();
+            if with_atoms {
+                return e.over_common_denominators();
+            }
+            if with_radicals {
+                let least = e.with_least_radical_powers()?;
+                if least.len() < e.len() {
+                    return Ok(least);
+                }
+            }
+            Ok(e.clone())
         })
         .collect::<Result<_, _>>()?;
     if shown.is_empty() {

@@ -887,7 +887,8 @@ impl<'a> Builder<'a> {
             if vars.radicals().any(|r| value.contains(r)) {
                 return refuse(format!(
                     "the denominator {value} has a radical in it: a denominator is a polynomial \
-                     in the coordinates, momenta and parameters"
+                     in the coordinates, momenta and parameters; divide by {value} where it \
+                     stands instead, which superint does through its conjugates"
                 ));
             }
             if Expr::one(&vars).checked_div(&value).is_ok() {

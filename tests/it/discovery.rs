@@ -255,6 +255,17 @@ const COMMANDS: &[(&str, &str)] = &[
          --radicals-degree 2 --fix a=1 --new-only",
     ),
     (
+        "sw3-search",
+        "superint search systems/smorodinsky-winternitz-iii.toml --momenta-degree 2 \
+         --positions-degree 4 --laurent --symbolic M,alpha,beta,gamma --parameters-degree 2 \
+         --new-only",
+    ),
+    (
+        "sw3-closure",
+        "superint closure systems/smorodinsky-winternitz-iii.toml H X1 X2 R --degree 3 \
+         --symbolic M,alpha,beta,gamma --parameters-degree 7",
+    ),
+    (
         "ttw-search",
         "superint search systems/ttw-2.toml --momenta-degree 4 --positions-degree 4 --laurent \
          --denominators-degree 4 --fix omega=2 --symbolic alpha,beta --parameters-degree 2 \
@@ -2312,6 +2323,49 @@ fn two_centres_search_finds_eulers_integral() {
         assert!(text.contains(piece), "{piece}: {text}");
     }
     assert!(!text.contains("REFUTED"), "{text}");
+}
+
+/// Smorodinsky–Winternitz III, whose potential divides by `r + x` and `r − x`: the file's `H`,
+/// `X_1`, `X_2` generate every second-order integral for every value of the parameters; from
+/// `H` alone both come out new (`X_2` as the file writes it, `X_1` less the constant
+/// `2M(β + γ)`), through the divisions by the conjugates.
+#[test]
+fn sw3_search_finds_both_integrals_through_the_conjugates() {
+    expect(
+        "sw3-search",
+        &[
+            "9450 unknowns",
+            "Known integrals in the space: H, X_1, X_2.",
+            "None: the known integrals generate every integral in the space.",
+            "1 claim: 1 proved, 0 refuted",
+        ],
+    );
+    let text = run_on_hamiltonian_alone("sw3-search");
+    for piece in [
+        "Known integrals in the space: H.",
+        "x p_y² − y p_x p_y + Mαx/r + 2Mβx/y² + 2Mγx/y² + Mβ/r − Mγ/r − 2Mβr/y² + 2Mγr/y²",
+        "x² p_y² − 2xy p_x p_y + y² p_x² + 2Mβx²/y² + 2Mγx²/y² − 2Mβxr/y² + 2Mγxr/y²",
+        "3 claims: 3 proved, 0 refuted",
+    ] {
+        assert!(text.contains(piece), "{piece}: {text}");
+    }
+}
+
+/// The integrals of Smorodinsky–Winternitz III and their bracket `R` close into a quadratic
+/// algebra with a cubic Casimir relation, for every value of the parameters.
+#[test]
+fn sw3_closure_is_a_quadratic_algebra() {
+    expect(
+        "sw3-closure",
+        &[
+            "{X_1, R} = 4M²αβ − 4M²αγ − 4 X_1 X_2",
+            "{X_2, R} = −2M²α² + 8M²β H + 8M²γ H − 8M H X_1 + 2 X_2²",
+            "The table closes: every bracket is a polynomial of degree ≤ 3 in the generators.",
+            "8M³α²β + 8M³α²γ + 16M³βγ H + 8M²αγ X_2 + 16M²β H X_1 + 16M²γ H X_1 + 4 X_1 X_2² \
+             + R² = 8M³β² H + 8M³γ² H + 4M²α² X_1 + 8M²αβ X_2 + 8M H X_1²",
+            "4 claims: 4 proved, 0 refuted",
+        ],
+    );
 }
 
 /// The search through the radical finds the Laplace–Runge–Lenz vector among eight integrals,

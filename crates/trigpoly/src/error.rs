@@ -19,6 +19,18 @@ pub enum AlgebraError {
         /// ["x + 1"] in [phase_space]`, without the text of a long divisor.
         declare: String,
     },
+    /// Division by a sum with radicals in it whose norm, its product with its conjugates, is
+    /// not invertible: the divisor and its norm (up to sign) as shown, and the declaration
+    /// that would make the norm invertible.
+    #[error("cannot divide by {shown}: a divisor with radicals is divided through its conjugates (1/(A + B·r) = (A − B·r)/(A² − B²·R) for r = √R), which leaves a division by its norm, ±({norm}), and that is not a nonzero constant, a single term or a product of powers of declared denominators and radicands; {declare}")]
+    NormNotInvertible {
+        /// The divisor as shown.
+        shown: String,
+        /// Its norm as shown, with a positive leading coefficient.
+        norm: String,
+        /// What to declare for the norm, as [`AlgebraError::NotAMonomial`] says it.
+        declare: String,
+    },
     /// Division by a function of an angle that is not a single `e^{ikθ}` (it prints as one
     /// term, `cos²φ`, but is a sum of exponentials).
     #[error("cannot divide by {0}: cos and sin of an angle are sums of exponentials, which are not invertible here; only division by a nonzero constant, a single term in the other variables, or exp(i*k*angle) is exact")]

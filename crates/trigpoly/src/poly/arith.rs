@@ -69,8 +69,10 @@ impl<C: Coefficient> Poly<C> {
     }
 
     /// `self / d` where `d` is a nonzero constant or a single term, or (with denominator atoms
-    /// declared) such a term times a product of powers of the atoms' polynomials; anything
-    /// else is an error (the quotient would not be in the ring).
+    /// declared) such a term times a product of powers of the atoms' polynomials, or (with
+    /// radicals) a sum whose product with its conjugates is one of those
+    /// ([`Poly::inverse_by_conjugates`]); anything else is an error (the quotient would not be
+    /// in the ring).
     pub fn checked_div(&self, d: &Self) -> Result<Self, AlgebraError> {
         self.same_vars(d)?;
         if d.is_zero() {
@@ -78,6 +80,9 @@ impl<C: Coefficient> Poly<C> {
         }
         if !d.is_monomial() {
             if let Some(inverse) = Self::inverse_by_atoms(d)? {
+                return self.checked_mul(&inverse);
+            }
+            if let Some(inverse) = Self::inverse_by_conjugates(d)? {
                 return self.checked_mul(&inverse);
             }
             // `r² cos²φ` prints as one term: say why it is not one.

@@ -5,7 +5,7 @@ use crate::error::AlgebraError;
 use crate::number::{Coefficient, Integer, IntegerRing, Rational};
 
 impl<C: Coefficient> Poly<C> {
-    /// `self^e`. Negative `e` only for a single term (`Err(NegativePower)` otherwise); `0^e`
+    /// `self^e`. Negative `e` only for what [`Poly::checked_div`] divides by (`Err` otherwise); `0^e`
     /// with `e < 0` is `Err(DivisionByZero)`; `f^0 = 1` for every `f`, zero included.
     pub fn checked_pow(&self, e: i64) -> Result<Self, AlgebraError> {
         if e == 0 {
@@ -47,6 +47,9 @@ impl<C: Coefficient> Poly<C> {
         }
         if e < 0 {
             if let Some(inverse) = Self::inverse_by_atoms(self)? {
+                return inverse.checked_pow(-e);
+            }
+            if let Some(inverse) = Self::inverse_by_conjugates(self)? {
                 return inverse.checked_pow(-e);
             }
             return Err(AlgebraError::NegativePower(self.brief()));

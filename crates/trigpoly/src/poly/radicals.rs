@@ -382,6 +382,90 @@ impl<C: Coefficient> Poly<C> {
         Ok(out)
     }
 
+    /// `1/d` for a `d` with radicals in it, through its conjugates; `None` when `d` has no
+    /// radical. For each radical `r = √R` of `d` in turn, `d = r^k (A + B r)` with `A`, `B`
+    /// free of `r` (`k` the lowest power of `r` in `d`, the rest reduced by `r² = R`), and
+    /// `1/(A + B r) = (A − B r)/(A² − B² R)`, whose denominator has one radical less; when all
+    /// are gone the denominator, the norm of `d`, is inverted as [`Poly::checked_div`] inverts
+    /// a divisor without radicals: a constant times a single term times powers of declared
+    /// denominators and radicands. So `1/(r − x)` is `(r + x)/y²` for `r = √(x² + y²)`, and
+    /// `1/(r(r + x))`, the parabolic term of Smorodinsky–Winternitz III, is
+    /// `(r − x)/(r y²)`. A norm that is none of those is an error that names it.
+    ///
+    /// ```
+    /// use trigpoly::{Expr, VarSet};
+    /// let vars = VarSet::builder()
+    ///     .coordinate("x")
+    ///     .coordinate("y")
+    ///     .radical("r", "x^2 + y^2")
+    ///     .build()
+    ///     .unwrap();
+    /// let e = |s: &str| Expr::parse(&vars, s).unwrap();
+    /// assert_eq!(e("1/(r - x)"), e("(r + x)/y^2"));
+    /// assert!((&e("1/(r*(r + x))") * &e("r^2 + x*r") - e("1")).vanishes().unwrap());
+    /// let refused = Expr::parse(&vars, "1/(r - 1)").unwrap_err().to_string();
+    /// assert!(refused.contains("x^2 + y^2 - 1"), "{refused}");
+    /// ```
+    pub fn inverse_by_conjugates(d: &Self) -> Result<Option<Self>, AlgebraError> {
+        let radicals: Vec<(Var, Self)> = Self::radicals(&d.vars)?
+            .into_iter()
+            .filter(|(r, _)| d.contains(*r))
+            .collect();
+        if radicals.is_empty() {
+            return Ok(None);
+        }
+        let vars = &d.vars;
+        let (mut numerator, mut norm) = (Self::one(vars), d.clone());
+        for (r, radicand) in &radicals {
+            let Some(low) = norm.low_degree(*r) else {
+                // Gone with an earlier radical's conjugate.
+                continue;
+            };
+            let rv = Self::var(vars, *r);
+            // norm = r^low · (A + B r)
+            let reduced = norm.reduce_radical(*r, radicand, -low)?;
+            let b = reduced.derivative(*r)?;
+            let a = reduced.checked_sub(&b.checked_mul(&rv)?)?;
+            numerator = numerator.checked_mul(&rv.checked_pow(-low)?)?;
+            norm = match (a.is_zero(), b.is_zero()) {
+                (true, true) => return Err(AlgebraError::DivisionByZero),
+                (false, true) => a,
+                (true, false) => {
+                    numerator = numerator.checked_mul(&rv.checked_pow(-1)?)?;
+                    b
+                }
+                (false, false) => {
+                    numerator = numerator.checked_mul(&a.checked_sub(&b.checked_mul(&rv)?)?)?;
+                    a.checked_square()?
+                        .checked_sub(&b.checked_square()?.checked_mul(radicand)?)?
+                }
+            };
+        }
+        if norm.is_zero() {
+            return Err(AlgebraError::DivisionByZero);
+        }
+        let inverse = match norm.is_monomial() {
+            true => Some(norm.checked_pow(-1)?),
+            false => Self::inverse_by_atoms(&norm)?,
+        };
+        let Some(inverse) = inverse else {
+            // Shown with a positive leading coefficient, as a physicist declares it.
+            let negative = norm
+                .terms()
+                .next()
+                .is_some_and(|t| t.coeff().to_gaussian().re.is_negative());
+            if negative {
+                norm = -norm;
+            }
+            return Err(AlgebraError::NormNotInvertible {
+                shown: d.brief(),
+                norm: norm.brief(),
+                declare: norm.declaration(),
+            });
+        };
+        Ok(Some(numerator.checked_mul(&inverse)?))
+    }
+
     /// The same element written with the least powers of its radicals, as results are shown:
     /// for each radical `r` in turn, the terms with the same powers of the other radicals
     /// (`s^{−3}`) are taken together, multiplied by the `r^M` that clears their `1/r`, reduced
@@ -553,6 +637,57 @@ mod tests {
             .vanishes()
             .unwrap());
         assert!(!e("r*s - (x^2 + y^2 + 1)").vanishes().unwrap());
+    }
+
+    /// A divisor with radicals is inverted through its conjugates: the inverse is exact (its
+    /// product with the divisor is 1), written without the radicals in its denominator, over
+    /// one radical or two; a divisor that is zero once reduced is a division by zero, and one
+    /// whose norm is not invertible is refused with the norm to declare, after which it
+    /// divides.
+    #[test]
+    fn division_by_a_sum_with_radicals_goes_through_its_conjugates() {
+        let builder = VarSet::builder()
+            .coordinate("x")
+            .coordinate("y")
+            .parameter("k")
+            .radical("r", "x^2 + y^2")
+            .radical("s", "x^2 + y^2 + 1");
+        let vars = builder.clone().build().unwrap();
+        let e = |s: &str| Expr::parse(&vars, s).unwrap();
+        // (r − x)(r + x) = r² − x² = y².
+        assert_eq!(e("1/(r - x)"), e("(r + x)/y^2"));
+        assert_eq!(e("k/(r + x)"), e("k*(r - x)/y^2"));
+        assert_eq!(e("(r - x)^-2"), e("(r + x)^2/y^4"));
+        // (r + s)(s − r) = s² − r² = 1.
+        assert_eq!(e("1/(r + s)"), e("s - r"));
+        for divisor in [
+            "r - x",
+            "r*(r + x)",
+            "r + s",
+            "r + s + 1",
+            "k*r + k*x",
+            "x/r - 1",
+        ] {
+            let d = e(divisor);
+            let product = e(&format!("1/({divisor})")).checked_mul(&d).unwrap();
+            assert!((product - e("1")).vanishes().unwrap(), "{divisor}");
+        }
+        let err = |s: &str| Expr::parse(&vars, s).unwrap_err().to_string();
+        assert!(err("1/(r^2 - x^2 - y^2)").contains("division by zero"));
+        let refused = err("1/(r - 1)");
+        assert!(
+            refused.contains("cannot divide by r − 1")
+                && refused.contains("a division by its norm, ±(x² + y² − 1), and that is not")
+                && refused.contains("denominators = [\"x^2 + y^2 - 1\"]"),
+            "{refused}"
+        );
+        let declared = builder
+            .denominator("x^2 + y^2 - 1", "x² + y² − 1", "x^2 + y^2 - 1")
+            .build()
+            .unwrap();
+        let e = |s: &str| Expr::parse(&declared, s).unwrap();
+        let product = e("1/(r - 1)").checked_mul(&e("r - 1")).unwrap();
+        assert!((product - e("1")).vanishes().unwrap());
     }
 
     /// The square root of a square is the polynomial with a positive leading coefficient whose
