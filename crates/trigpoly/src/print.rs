@@ -44,11 +44,14 @@ impl<C: Coefficient> Poly<C> {
     /// polynomial of 24310 terms`), which a one-line message has no room for and an error no
     /// time to print (a refused division once printed a 270 MB divisor).
     pub(crate) fn brief(&self) -> String {
-        const TERMS: usize = 8;
-        const CHARS: usize = 80;
-        if self.len() <= TERMS {
+        self.brief_within(8, 80)
+    }
+
+    /// [`Poly::brief`] with room for at most `terms` terms and `chars` characters.
+    pub(crate) fn brief_within(&self, terms: usize, chars: usize) -> String {
+        if self.len() <= terms {
             let text = self.to_string();
-            if text.chars().count() <= CHARS {
+            if text.chars().count() <= chars {
                 return text;
             }
         }

@@ -55,8 +55,13 @@ impl<C: Coefficient> Poly<C> {
     /// What to declare to divide by `self`, as a refused division says: the polynomial in
     /// ASCII when it is short, its factors otherwise.
     pub(crate) fn declaration(&self) -> String {
-        let ascii = match self.len() <= 8 {
-            true => Some(self.to_ascii()).filter(|a| a.len() <= 80),
+        self.declaration_within(8, 80)
+    }
+
+    /// [`Poly::declaration`] with room for at most `terms` terms and `chars` characters.
+    pub(crate) fn declaration_within(&self, terms: usize, chars: usize) -> String {
+        let ascii = match self.len() <= terms {
+            true => Some(self.to_ascii()).filter(|a| a.len() <= chars),
             false => None,
         };
         match ascii {

@@ -29,6 +29,10 @@ pub type ReducedRadical<C> = (Var, Poly<C>, i64);
 /// The most radicals a set may declare: their independence is checked on every product of
 /// them, `2^n − 1` products.
 const MAX_RADICALS: usize = 8;
+/// The most terms, and characters, of a norm that a refused division writes out (a longer
+/// one by its size): the norm is what to declare, and the user has not seen it.
+const NORM_TERMS: usize = 64;
+const NORM_CHARS: usize = 1200;
 /// How many points the independence check tries for each product of radicands before it
 /// takes the product for a square.
 const SQUARE_POINTS: i64 = 48;
@@ -457,10 +461,11 @@ impl<C: Coefficient> Poly<C> {
             if negative {
                 norm = -norm;
             }
+            // The norm in full where a divisor is brief: the user has not seen it.
             return Err(AlgebraError::NormNotInvertible {
                 shown: d.brief(),
-                norm: norm.brief(),
-                declare: norm.declaration(),
+                norm: norm.brief_within(NORM_TERMS, NORM_CHARS),
+                declare: norm.declaration_within(NORM_TERMS, NORM_CHARS),
             });
         };
         Ok(Some(numerator.checked_mul(&inverse)?))

@@ -1070,3 +1070,58 @@ proptest! {
         prop_assert_eq!(zero.over_common_denominators().unwrap().to_string(), "0");
     }
 }
+
+/// A small polynomial in `x`, `y`, `k` as text: up to three terms with small coefficients.
+fn small_text() -> impl Strategy<Value = String> {
+    prop::collection::vec((-4i64..=4, 0u8..3, 0u8..3, 0u8..2), 1..4).prop_map(|terms| {
+        let text: Vec<String> = terms
+            .into_iter()
+            .map(|(c, i, j, l)| format!("({c})*x^{i}*y^{j}*k^{l}"))
+            .collect();
+        text.join(" + ")
+    })
+}
+
+proptest! {
+    #![proptest_config(Config { cases: 48, ..config() })]
+
+    /// Division by `r^e (A + B r)`, with `A`, `B` random nonzero polynomials free of
+    /// `r = √(x² + y² + k)`, goes through the conjugate: the quotient times the divisor is 1,
+    /// as an element, and where the norm `A² − B² R` is refused (no single term, say), it is
+    /// by name, and declaring it as a denominator makes the division go through.
+    #[test]
+    fn division_by_a_sum_with_a_radical_inverts_it(a in small_text(), b in small_text(), e in -1i64..=1) {
+        let base = || trigpoly::VarSet::builder()
+            .coordinate("x")
+            .coordinate("y")
+            .parameter("k")
+            .radical("r", "x^2 + y^2 + k");
+        let plain = base().build().unwrap();
+        let parse = |vars: &trigpoly::Vars, s: &str| Poly::<Rational>::parse(vars, s);
+        let (pa, pb) = (parse(&plain, &a).unwrap(), parse(&plain, &b).unwrap());
+        prop_assume!(!pa.is_zero() && !pb.is_zero());
+        let divisor = format!("r^({e})*(({a}) + ({b})*r)");
+        let quotient = format!("1/({divisor})");
+        let vars = match parse(&plain, &quotient) {
+            Ok(_) => plain.clone(),
+            Err(refused) => {
+                let refused = refused.to_string();
+                prop_assert!(refused.contains("a division by its norm"), "{refused}");
+                let radicand = parse(&plain, "x^2 + y^2 + k").unwrap();
+                let norm = pa.checked_mul(&pa).unwrap()
+                    .checked_sub(&pb.checked_mul(&pb).unwrap().checked_mul(&radicand).unwrap())
+                    .unwrap();
+                let ascii = norm.to_ascii();
+                prop_assert!(refused.contains(&(-&norm).to_ascii()) || refused.contains(&ascii), "{refused}");
+                base().denominator(&ascii, &ascii, &ascii).build().unwrap()
+            }
+        };
+        let d = parse(&vars, &divisor).unwrap();
+        let inverse = parse(&vars, &quotient).unwrap();
+        let product = d.checked_mul(&inverse).unwrap();
+        prop_assert!(
+            product.checked_sub(&Poly::one(&vars)).unwrap().vanishes().unwrap(),
+            "({divisor}) · {inverse} = {product}"
+        );
+    }
+}
