@@ -432,7 +432,13 @@ impl<C: Coefficient> Poly<C> {
             let a = reduced.checked_sub(&b.checked_mul(&rv)?)?;
             numerator = numerator.checked_mul(&rv.checked_pow(-low)?)?;
             norm = match (a.is_zero(), b.is_zero()) {
-                (true, true) => return Err(AlgebraError::DivisionByZero),
+                (true, true) => {
+                    return Err(AlgebraError::Invalid(format!(
+                        "division by zero: {} is 0, as {}",
+                        d.brief(),
+                        Self::radical_definition(*r, radicand)
+                    )))
+                }
                 (false, true) => a,
                 (true, false) => {
                     numerator = numerator.checked_mul(&rv.checked_pow(-1)?)?;
@@ -678,7 +684,11 @@ mod tests {
             assert!((product - e("1")).vanishes().unwrap(), "{divisor}");
         }
         let err = |s: &str| Expr::parse(&vars, s).unwrap_err().to_string();
-        assert!(err("1/(r^2 - x^2 - y^2)").contains("division by zero"));
+        assert_eq!(
+            err("1/(r^2 - x^2 - y^2)"),
+            "line 1, column 3: division by zero: −x² − y² + r² is 0, as r = √(x² + y²)\n  \
+             1/(r^2 - x^2 - y^2)\n    ^^^^^^^^^^^^^^^^^"
+        );
         let refused = err("1/(r - 1)");
         assert!(
             refused.contains("cannot divide by r − 1")
