@@ -181,17 +181,28 @@ impl<C: Coefficient> Poly<C> {
                     .filter(|&(i, _)| chosen(i))
                     .map(|(_, (v, r))| Self::radical_definition(*v, r))
                     .collect();
+                // One radicand that is a square, or minus one, of a polynomial: its root.
                 let one = (names.len() == 1).then(|| {
-                    let i = subset.trailing_zeros() as usize;
-                    radicals[i].1.square_root()
+                    let radicand = &radicals[subset.trailing_zeros() as usize].1;
+                    let negated = || (-radicand).square_root().map(|root| (root, true));
+                    radicand
+                        .square_root()
+                        .map(|root| (root, false))
+                        .or_else(negated)
                 });
                 let message = match one {
                     // The radicand is the square of a polynomial: the root is known exactly.
-                    Some(Some(root)) => format!(
+                    Some(Some((root, false))) => format!(
                         "the radicand of {} is the square of {root}, so the radical is {root} \
                          up to its sign, which superint does not choose: {}",
                         names[0],
                         either_sign(&root.to_ascii(), "it")
+                    ),
+                    Some(Some((root, true))) => format!(
+                        "the radicand of {} is minus the square of {root}, so the radical is \
+                         i({root}) up to its sign, which superint does not choose: {}",
+                        names[0],
+                        either_sign(&format!("i*({})", root.to_ascii()), &root.to_string())
                     ),
                     Some(None) => format!(
                         "the radicand of {} is a square (it is one at every point tried), so \
@@ -780,7 +791,11 @@ mod tests {
         let imaginary = build(&[("r", "-x^2 - 2*x*y - y^2")]);
         let err = Expr::check_radicals(&imaginary).unwrap_err().to_string();
         assert!(
-            err.contains("is a square (it is one at every point tried)"),
+            err.contains(
+                "the radicand of r = √(−x² − 2xy − y²) is minus the square of x + y, so the \
+                 radical is i(x + y) up to its sign, which superint does not choose: write \
+                 i*(x + y) where x + y is not negative, and its negative where it is"
+            ),
             "{err}"
         );
         assert!(Expr::check_radicals(&build(&[("r", "-x^2 - y^2")])).is_ok());
