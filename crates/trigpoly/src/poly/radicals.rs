@@ -29,9 +29,10 @@ pub type ReducedRadical<C> = (Var, Poly<C>, i64);
 /// The most radicals a set may declare: their independence is checked on every product of
 /// them, `2^n − 1` products.
 const MAX_RADICALS: usize = 8;
-/// The most terms, and characters, of a norm that a refused division writes out (a longer
-/// one by its size): the norm is what to declare, and the user has not seen it.
+/// The most terms of a norm that a refused division writes out (a longer one by its size):
+/// the norm is what to declare, and the user has not seen it.
 const NORM_TERMS: usize = 64;
+/// The most characters of a norm that a refused division writes out.
 const NORM_CHARS: usize = 1200;
 /// How many points the independence check tries for each product of radicands before it
 /// takes the product for a square.
