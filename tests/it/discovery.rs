@@ -261,6 +261,12 @@ const COMMANDS: &[(&str, &str)] = &[
          --new-only",
     ),
     (
+        "sw3-cubic",
+        "superint search systems/smorodinsky-winternitz-iii.toml --momenta-degree 3 \
+         --positions-degree 4 --laurent --symbolic M,alpha,beta,gamma --parameters-degree 2 \
+         --new-only",
+    ),
+    (
         "sw3-closure",
         "superint closure systems/smorodinsky-winternitz-iii.toml H X1 X2 R --degree 3 \
          --symbolic M,alpha,beta,gamma --parameters-degree 7",
@@ -2348,6 +2354,31 @@ fn sw3_search_finds_both_integrals_through_the_conjugates() {
         "3 claims: 3 proved, 0 refuted",
     ] {
         assert!(text.contains(piece), "{piece}: {text}");
+    }
+}
+
+/// Up to third order in the momenta, the file's `H`, `X_1`, `X_2` and `R = {X_1, X_2}`
+/// generate every integral, for every value of the parameters; from `H` alone the cubic one
+/// comes out new beside the two quadratic ones: `−R/2`, as the file's claim `R = −2 I` checks.
+#[test]
+fn sw3_search_finds_the_cubic_integral_from_h_alone() {
+    expect(
+        "sw3-cubic",
+        &[
+            "15750 unknowns",
+            "Known integrals in the space: H, X_1, X_2, R.",
+            "None: the known integrals generate every integral in the space.",
+        ],
+    );
+    let text = run_on_hamiltonian_alone("sw3-cubic");
+    for piece in [
+        "Known integrals in the space: H.",
+        "x² p_x p_y² − 2xy p_x² p_y + y² p_x³ + 2Mβx² p_x/y² + 2Mγx² p_x/y² − Mαxy p_y/r \
+         − Mβx p_x/r + Mγx p_x/r − 2Mβxr p_x/y² + 2Mγxr p_x/y² + Mαy² p_x/r − Mβy p_y/r \
+         + Mγy p_y/r + 2Mβ p_x + 2Mγ p_x",
+        "4 claims: 4 proved, 0 refuted",
+    ] {
+        assert!(text.contains(&crate::normalize(piece)), "{piece}: {text}");
     }
 }
 
