@@ -4,7 +4,7 @@
 
 use crate::error::AlgebraError;
 use crate::number::{Coefficient, GaussianRational, Integer, Rational};
-use crate::poly::{either_sign, Poly};
+use crate::poly::Poly;
 use crate::syntax::{parse_expr, Expr, ExprKind, ParseError, Span};
 use crate::varset::{Var, VarKind, Vars};
 
@@ -374,19 +374,14 @@ impl<C: Coefficient> Lower<'_, C> {
         }
         // A radical of a square, or of minus one, would be refused where it is declared: the
         // root is a polynomial, up to the sign that superint does not choose.
-        let root_of_negated = || (-&value).square_root().map(|root| (root, true));
-        let root_up_to_sign = value
-            .square_root()
-            .map(|root| (root, false))
-            .or_else(root_of_negated);
-        let message = match root_up_to_sign {
+        let message = match value.root_up_to_sign() {
             Some((root, false)) => format!(
                 "sqrt({value}) is |{root}|, whose sign superint does not choose: {}",
-                either_sign(&root.to_ascii(), "it")
+                root.sign_advice(false)
             ),
             Some((root, true)) => format!(
                 "sqrt({value}) is i·|{root}|, whose sign superint does not choose: {}",
-                either_sign(&format!("i*({})", root.to_ascii()), &root.to_string())
+                root.sign_advice(true)
             ),
             None => format!(
                 "sqrt({value}) is no declared radical: declare it (radicals = {{ r = \"{}\" }} \

@@ -79,10 +79,7 @@ impl<C: Coefficient> Poly<C> {
             return Err(AlgebraError::DivisionByZero);
         }
         if !d.is_monomial() {
-            if let Some(inverse) = Self::inverse_by_atoms(d)? {
-                return self.checked_mul(&inverse);
-            }
-            if let Some(inverse) = Self::inverse_by_conjugates(d)? {
+            if let Some(inverse) = Self::inverse_of_sum(d)? {
                 return self.checked_mul(&inverse);
             }
             // `r² cos²φ` prints as one term: say why it is not one.
@@ -96,6 +93,17 @@ impl<C: Coefficient> Poly<C> {
             });
         }
         self.checked_mul(&d.checked_pow(-1)?)
+    }
+
+    /// `1/d` for a `d` of several terms: through its conjugates when a radical is in it
+    /// ([`Poly::inverse_by_conjugates`]), else by the declared atoms and radicands
+    /// ([`Poly::inverse_by_atoms`]); `None` when neither applies. What [`Poly::checked_div`]
+    /// and negative powers divide by.
+    pub(crate) fn inverse_of_sum(d: &Self) -> Result<Option<Self>, AlgebraError> {
+        match d.has_radicals_in_it() {
+            true => Self::inverse_by_conjugates(d),
+            false => Self::inverse_by_atoms(d),
+        }
     }
 
     /// Whether every term has the same exponents in the variables other than the angles

@@ -33,7 +33,6 @@ use crate::number::{Coefficient, ExactDivisor, GaussianRational, Integer, Intege
 use crate::varset::{Layout, Var, VarKind, VarSet, Vars};
 
 pub use index::MonomialIndex;
-pub(crate) use radicals::either_sign;
 pub use radicals::ReducedRadical;
 pub use subst::Point;
 pub use trig::{CosSinTerm, TrigMonomial};

@@ -5,8 +5,9 @@ use crate::error::AlgebraError;
 use crate::number::{Coefficient, Integer, IntegerRing, Rational};
 
 impl<C: Coefficient> Poly<C> {
-    /// `self^e`. Negative `e` only for what [`Poly::checked_div`] divides by (`Err` otherwise); `0^e`
-    /// with `e < 0` is `Err(DivisionByZero)`; `f^0 = 1` for every `f`, zero included.
+    /// `self^e`. Negative `e` only for what [`Poly::checked_div`] divides by (`Err`
+    /// otherwise); `0^e` with `e < 0` is `Err(DivisionByZero)`; `f^0 = 1` for every `f`, zero
+    /// included.
     pub fn checked_pow(&self, e: i64) -> Result<Self, AlgebraError> {
         if e == 0 {
             return Ok(Self::one(&self.vars));
@@ -46,10 +47,7 @@ impl<C: Coefficient> Poly<C> {
             return Ok(self.monomial_pow(e));
         }
         if e < 0 {
-            if let Some(inverse) = Self::inverse_by_atoms(self)? {
-                return inverse.checked_pow(-e);
-            }
-            if let Some(inverse) = Self::inverse_by_conjugates(self)? {
+            if let Some(inverse) = Self::inverse_of_sum(self)? {
                 return inverse.checked_pow(-e);
             }
             return Err(AlgebraError::NegativePower(self.brief()));

@@ -111,6 +111,12 @@ impl<C: Coefficient> Poly<C> {
         vars.radicals().next().is_some()
     }
 
+    /// Whether a declared radical occurs in `self` (read from the variables, no radicand
+    /// parsed).
+    pub(crate) fn has_radicals_in_it(&self) -> bool {
+        self.vars.radicals().any(|r| self.contains(r))
+    }
+
     /// Whether the set declares denominator atoms or radicals: variables that stand for
     /// functions of the others, so that equal elements may have different terms (`v · D` and
     /// `1`, `r²` and `R`) and zero is decided by [`Poly::vanishes`], not by the terms.
@@ -184,12 +190,9 @@ impl<C: Coefficient> Poly<C> {
                     .collect();
                 // One radicand that is a square, or minus one, of a polynomial: its root.
                 let one = (names.len() == 1).then(|| {
-                    let radicand = &radicals[subset.trailing_zeros() as usize].1;
-                    let negated = || (-radicand).square_root().map(|root| (root, true));
-                    radicand
-                        .square_root()
-                        .map(|root| (root, false))
-                        .or_else(negated)
+                    radicals[subset.trailing_zeros() as usize]
+                        .1
+                        .root_up_to_sign()
                 });
                 let message = match one {
                     // The radicand is the square of a polynomial: the root is known exactly.
@@ -197,13 +200,13 @@ impl<C: Coefficient> Poly<C> {
                         "the radicand of {} is the square of {root}, so the radical is {root} \
                          up to its sign, which superint does not choose: {}",
                         names[0],
-                        either_sign(&root.to_ascii(), "it")
+                        root.sign_advice(false)
                     ),
                     Some(Some((root, true))) => format!(
                         "the radicand of {} is minus the square of {root}, so the radical is \
                          i({root}) up to its sign, which superint does not choose: {}",
                         names[0],
-                        either_sign(&format!("i*({})", root.to_ascii()), &root.to_string())
+                        root.sign_advice(true)
                     ),
                     Some(None) => format!(
                         "the radicand of {} is a square (it is one at every point tried), so \
@@ -256,6 +259,26 @@ impl<C: Coefficient> Poly<C> {
             }
         }
         Ok(None)
+    }
+
+    /// The root of `self` when it is the square of a polynomial, `(s, false)`, or minus one,
+    /// `(s, true)` (then the root is `i·s`), with `s` as [`Poly::square_root`] gives it: what
+    /// a radical of `self` would be, up to the sign that superint does not choose.
+    pub(crate) fn root_up_to_sign(&self) -> Option<(Self, bool)> {
+        let negated = || (-self).square_root().map(|root| (root, true));
+        self.square_root()
+            .map(|root| (root, false))
+            .or_else(negated)
+    }
+
+    /// How a message asks for the root `self` (times `i` when `imaginary`) of a square, whose
+    /// sign superint does not choose: `write x + y where it is not negative, and its negative
+    /// where it is`, or `write i*(x + y) where x + y is not negative, …`.
+    pub(crate) fn sign_advice(&self, imaginary: bool) -> String {
+        match imaginary {
+            false => either_sign(&self.to_ascii(), "it"),
+            true => either_sign(&format!("i*({})", self.to_ascii()), &self.to_string()),
+        }
     }
 
     /// The polynomial `s` with a positive leading coefficient whose square is `self`, if
@@ -423,13 +446,13 @@ impl<C: Coefficient> Poly<C> {
     /// assert!(refused.contains("x^2 + y^2 - 1"), "{refused}");
     /// ```
     pub fn inverse_by_conjugates(d: &Self) -> Result<Option<Self>, AlgebraError> {
+        if !d.has_radicals_in_it() {
+            return Ok(None);
+        }
         let radicals: Vec<(Var, Self)> = Self::radicals(&d.vars)?
             .into_iter()
             .filter(|(r, _)| d.contains(*r))
             .collect();
-        if radicals.is_empty() {
-            return Ok(None);
-        }
         let vars = &d.vars;
         let (mut numerator, mut norm) = (Self::one(vars), d.clone());
         for (r, radicand) in &radicals {
@@ -471,12 +494,9 @@ impl<C: Coefficient> Poly<C> {
             false => Self::inverse_by_atoms(&norm)?,
         };
         let Some(inverse) = inverse else {
-            // Shown with a positive leading coefficient, as a physicist declares it.
-            let negative = norm
-                .terms()
-                .next()
-                .is_some_and(|t| t.coeff().to_gaussian().re.is_negative());
-            if negative {
+            // Shown with a positive leading coefficient, as a physicist declares it (the
+            // primitive part's lead is positive: the content carries the sign).
+            if norm.content().is_negative() {
                 norm = -norm;
             }
             // The norm in full where a divisor is brief: the user has not seen it.
@@ -579,7 +599,7 @@ impl<C: Coefficient> Poly<C> {
 /// How a message asks for the root of a square, whose sign superint does not choose:
 /// `write x + y where it is not negative, and its negative where it is`, for `written` the
 /// root as the user writes it and `subject` what its sign is the sign of.
-pub(crate) fn either_sign(written: &str, subject: &str) -> String {
+fn either_sign(written: &str, subject: &str) -> String {
     format!("write {written} where {subject} is not negative, and its negative where it is")
 }
 
