@@ -215,7 +215,7 @@ fn radicals_commands_print_reduced_forms() {
 /// The search through a radical: from `H` alone it finds the angular momentum and the
 /// Laplace–Runge–Lenz vector of the Kepler problem in space as new integrals, the monomials
 /// equal as functions to simpler ones (`r² = x² + y² + z²`) left out of the unknowns; a
-/// radicand that holds a parameter kept symbolic is refused.
+/// radicand may hold a parameter kept symbolic.
 #[test]
 fn radicals_search_finds_the_laplace_runge_lenz_vector() {
     let bare = "name = \"Kepler, H alone\"\n\
@@ -289,16 +289,32 @@ fn radicals_search_finds_the_laplace_runge_lenz_vector() {
     ]);
     assert_eq!(v["searches"][0]["unknowns"], 47, "{v}");
     assert_eq!(v["searches"][0]["dimension"], 1, "{v}");
-    // A parameter inside a radicand cannot be kept symbolic.
+    // A parameter inside a radicand is kept symbolic too. With `r² = x² + y² + z² + k` the
+    // potential `−k/r` is still central, and the integrals of degree ≤ 2 are generated over the
+    // polynomials in k by 1, L_x, L_y, L_z, H and the six products L_i L_j: over Q, 1, L_i and
+    // L_i L_j times 1, k, k², and H times 1, k and k², where `k²H` holds `k³/r`, which is
+    // `k²r − k²(x² + y² + z²)/r` since k itself equals `r² − x² − y² − z²` there.
     let shifted = bare.replace("\"x^2 + y^2 + z^2\"", "\"x^2 + y^2 + z^2 + k\"");
     let g = scratch_text("radicals-search", "shifted.toml", &shifted);
-    let o = superint(&["search", g.to_str().unwrap(), "--symbolic", "k"]);
-    let err = String::from_utf8(o.stderr).unwrap();
-    assert_eq!(o.status.code(), Some(2), "{err}");
-    assert!(
-        err.contains("the radical r holds k, kept symbolic"),
-        "{err}"
+    let o = superint(&[
+        "search",
+        g.to_str().unwrap(),
+        "--symbolic",
+        "k",
+        "--format",
+        "json",
+    ]);
+    assert_eq!(
+        o.status.code(),
+        Some(0),
+        "{}",
+        String::from_utf8_lossy(&o.stderr)
     );
+    let v: serde_json::Value = serde_json::from_slice(&o.stdout).unwrap();
+    let search = &v["searches"][0];
+    assert_eq!(search["dimension"], 3 + 3 * 3 + 3 + 6 * 3, "{search}");
+    assert_eq!(search["for_every_value"], 33, "{search}");
+    assert_eq!(search["shown"].as_array().unwrap().len(), 11, "{search}");
 }
 
 #[test]

@@ -20,11 +20,11 @@ use super::problem::{real_rows, Unknown};
 /// the whole space's, and each of its functions has one set of coordinates in them. Each
 /// denominator must be free of the angles (a radicand is), so that the same monomials are
 /// independent times any `cos k·θ` or `sin k·θ`. When every denominator and radicand is a
-/// polynomial in the coordinates (and parameters fixed for the linear algebra), clearing and
-/// reducing commute with a factor in the momenta,
-/// the Poisson variables and the symbolic parameters, and the monomials of each such factor
-/// are compared among themselves only: the choice is made once, on the monomials in the
-/// coordinates, the radicals and the denominators alone, in the same order.
+/// polynomial in the coordinates and parameters, clearing and reducing commute with a factor
+/// in the momenta, the Poisson variables and the symbolic parameters that no denominator or
+/// radicand holds, and the monomials of each such factor are compared among themselves only:
+/// the choice is made once, on the monomials in the coordinates, the radicals, the
+/// denominators and the symbolic parameters they hold, in the same order.
 pub(super) fn independent_as_functions(
     vars: &Vars,
     atoms: &[(Var, Expr)],
@@ -47,6 +47,16 @@ pub(super) fn independent_as_functions(
             .filter(|&v| d.contains(v))
             .all(|v| matches!(kind(v), VarKind::Coordinate | VarKind::Parameter))
     });
+    // When a denominator or radicand holds a parameter kept symbolic, the parameters are
+    // compared with the coordinates (`a² = r² − x² + 2ax − y²` for `r = √((x − a)² + y²)`),
+    // all of them, since their degree is bounded together (`k·a³/r` may be past it where
+    // `k·a x²/r` is not); otherwise they only multiply, like the momenta.
+    let symbolic = |v: Var| kind(v) == VarKind::Parameter && parameters.iter().all(|p| p.0 != v);
+    let holds_parameters = atoms
+        .iter()
+        .chain(radicals)
+        .any(|(_, d)| vars.vars().any(|v| symbolic(v) && d.contains(v)));
+    let held = |v: Var| holds_parameters && kind(v) == VarKind::Parameter;
     // The part of a monomial that the choice is made on: without the variables listed here.
     let apart: Vec<usize> = match in_coordinates {
         true => vars
@@ -55,12 +65,17 @@ pub(super) fn independent_as_functions(
                 !matches!(
                     kind(v),
                     VarKind::Coordinate | VarKind::Denominator | VarKind::Radical
-                )
+                ) && !held(v)
             })
             .map(|v| v.index())
             .collect(),
         false => Vec::new(),
     };
+    let held: Vec<usize> = vars
+        .vars()
+        .filter(|&v| held(v))
+        .map(|v| v.index())
+        .collect();
     let part = |u: &Unknown| -> Unknown {
         if !in_coordinates {
             return u.clone();
@@ -70,10 +85,10 @@ pub(super) fn independent_as_functions(
             phase[i] = 0;
         }
         Unknown {
+            parameters_degree: held.iter().map(|&i| phase[i]).sum(),
             phase,
             momenta_degree: 0,
             poisson_degree: 0,
-            parameters_degree: 0,
             ..u.clone()
         }
     };

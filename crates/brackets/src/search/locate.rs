@@ -12,6 +12,7 @@ use crate::clearing::Clearing;
 use crate::error::EngineError;
 use crate::modular::{Echelon, SparseVec};
 
+use super::parameters::free_parameters;
 use super::problem::{real_entries, real_rows, sum_by_index, Problem};
 
 /// The coordinates of the real and of the imaginary part of a function.
@@ -22,7 +23,7 @@ pub(super) enum Locator<'a> {
     /// By the monomials of the space, which are independent functions.
     Monomials(&'a Problem),
     /// With denominator atoms or radicals, through the cleared images of the basis integrals.
-    Cleared(ClearedBasis),
+    Cleared(Box<ClearedBasis>),
 }
 
 impl Locator<'_> {
@@ -69,6 +70,11 @@ pub(super) struct ClearedBasis {
     coordinates: Vec<SparseVec<Rational>>,
     /// The powers of `1/D_i`, then of `1/r_i`, the basis integrals have.
     powers: Vec<i64>,
+    /// The parameters that no denominator or radicand holds, and the highest total degree in
+    /// them of a basis integral: the relations among the monomials leave that degree as it
+    /// is, so a function of higher degree is no combination of the basis, found without
+    /// clearing it (with parameters kept symbolic, most products of integrals are such).
+    free: (Vec<Var>, i64),
     /// The images of the basis integrals by the powers of the clearing.
     images: RefCell<FxHashMap<Vec<i64>, Rc<ClearedImages>>>,
 }
@@ -99,6 +105,12 @@ impl ClearedBasis {
         for f in &integrals {
             raise_to(&mut powers, atoms.iter().chain(radicals), f);
         }
+        let free = free_parameters(&problem.vars, atoms, radicals);
+        let free_degree = integrals
+            .iter()
+            .map(|f| degree_in(f, &free))
+            .max()
+            .unwrap_or(0);
         Ok(ClearedBasis {
             atoms: atoms.to_vec(),
             radicals: radicals.to_vec(),
@@ -107,6 +119,7 @@ impl ClearedBasis {
             integrals,
             coordinates: kernel.to_vec(),
             powers,
+            free: (free, free_degree),
             images: RefCell::default(),
         })
     }
@@ -116,6 +129,9 @@ impl ClearedBasis {
     fn coordinates(&self, f: &Expr) -> Result<Option<SparseVec<Rational>>, EngineError> {
         if f.is_zero() {
             return Ok(Some(Vec::new()));
+        }
+        if degree_in(f, &self.free.0) > self.free.1 {
+            return Ok(None);
         }
         let mut powers = self.powers.clone();
         raise_to(&mut powers, self.atoms.iter().chain(&self.radicals), f);
@@ -175,4 +191,12 @@ fn raise_to<'a>(powers: &mut [i64], atoms: impl Iterator<Item = &'a (Var, Expr)>
     for ((v, _), n) in atoms.zip(powers.iter_mut()) {
         *n = (*n).max(-f.low_degree(*v).unwrap_or(0));
     }
+}
+
+/// The total degree of `f` in `vars`.
+fn degree_in(f: &Expr, vars: &[Var]) -> i64 {
+    f.terms()
+        .map(|t| vars.iter().map(|&v| t.exponent(v)).sum::<i64>())
+        .max()
+        .unwrap_or(0)
 }

@@ -31,8 +31,9 @@
 //! (`x/(x − y) − y/(x − y) = 1`): the unknowns are those independent of the simpler ones, and
 //! the equations and that choice are decided on images under one injective map onto
 //! polynomials, the denominators cleared (`crate::clearing`), so that no function equal to
-//! zero is reported and each integral has one set of coordinates. Parameters are kept
-//! symbolic when no denominator holds them. Which integrals are new (`new_only`) is decided
+//! zero is reported and each integral has one set of coordinates. A parameter kept symbolic
+//! that a denominator holds is compared with the coordinates in that choice (the parameters
+//! then all are, their degree being bounded together). Which integrals are new (`new_only`) is decided
 //! the same way: a known integral or a product of integrals, which may be written in other
 //! monomials or in powers of `1/D` past the space's, lies in the space exactly when its
 //! cleared image is a combination of the basis integrals' (`locate`); the powers of `1/D`
@@ -42,7 +43,10 @@
 //! products `Π r_i^{j_i}` of either sign with `Σ |j_i| ≤` [`SearchSpace::radicals_degree`]
 //! (`−k/r` and `x/r` of the Kepler problem), and the same holds with the images reduced by
 //! `r² = R` (`x²/r + y²/r = r` for `R = x² + y²`): the unknowns, the equations and what is new
-//! are decided on the reduced forms, and a radicand holding a parameter keeps it fixed.
+//! are decided on the reduced forms, and so with a parameter kept symbolic in a radicand
+//! (`a² = r² − x² + 2ax − y²` for `R = (x − a)² + y²`). The parameter multiples `a·X` of
+//! integrals that lie in the space are the relations `a·Σ c_j I_j = Σ d_k I_k` among the
+//! basis integrals, found on the same images.
 //!
 //! ```
 //! use brackets::search::{search, SearchOptions, SearchSpace};
@@ -167,27 +171,6 @@ pub fn search(system: &System, options: &SearchOptions) -> Result<SearchResult, 
     check_parameters(vars, &options.symbolic, &options.fixed)?;
     let atoms = system.space().denominator_atoms();
     let radicals = system.space().radicals();
-    // A denominator or radicand free of the parameters kept symbolic makes the choice of
-    // independent monomials the same for each multiple by a parameter monomial, which the
-    // parameter multiples of integrals need.
-    if let Some((v, p)) = atoms.iter().chain(radicals).find_map(|(v, d)| {
-        options
-            .symbolic
-            .iter()
-            .find(|p| d.contains(**p))
-            .map(|p| (v, p))
-    }) {
-        return Err(EngineError::Invalid(format!(
-            "the {} {} holds {}, kept symbolic: the search keeps symbolic only parameters \
-             that no denominator or radicand holds; fix it instead (--fix)",
-            match vars.variable(*v).kind() {
-                VarKind::Radical => "radical",
-                _ => "denominator",
-            },
-            vars.variable(*v).unicode(),
-            vars.variable(*p).unicode()
-        )));
-    }
     // The unknowns are the real coefficients of real functions, and the equations only the
     // coefficients of `e^{ik·θ}` with `k ≥ 0`: right when `{F, H}` is real, that is when `H`
     // and the condition's values are.
@@ -351,7 +334,7 @@ pub fn search(system: &System, options: &SearchOptions) -> Result<SearchResult, 
     let basis = proved.into_iter().collect::<Result<Vec<_>, _>>()?;
     timings.proofs = t.elapsed().as_secs_f64();
 
-    let multiples = parameter_multiples(&problem, &options.symbolic, &basis)?;
+    let multiples = parameter_multiples(system, &problem, &options.symbolic, &kernel, &basis)?;
     let t = Instant::now();
     let new = if options.new_only {
         Some(new_integrals(

@@ -1,15 +1,16 @@
 //! Parameters: checked, fixed to values for the linear algebra, or kept symbolic (their
 //! multiples and the module they generate).
 
-use trigpoly::{Expr, GaussianRational, Rational, Var, VarKind, Vars};
+use trigpoly::{Expr, GaussianRational, MonomialIndex, Rational, Var, VarKind, Vars};
 
 use crate::claim::Condition;
+use crate::clearing::Clearing;
 use crate::error::EngineError;
-use crate::modular::{Echelon, SparseVec};
+use crate::modular::{self, Echelon, SparseVec};
 use crate::system::System;
 
 use super::options::SearchOptions;
-use super::problem::Problem;
+use super::problem::{real_rows, sum_by_index, Problem};
 use super::result::Integral;
 
 /// Refuses values fixed for what is no parameter, and parameters to keep symbolic that are no
@@ -120,20 +121,84 @@ pub fn fix_parameters(e: &Expr, values: &[(Var, Rational)]) -> Result<Expr, Engi
     Ok(e.subst_many(&subs)?)
 }
 
-/// The multiples `a·I` that lie in the space, for `a` a symbolic parameter and `I` a basis
-/// integral: each with the index of `I` and its coordinates. Their span is every sum of
-/// parameter multiples of integrals in the space, since a product by a monomial of higher
-/// degree is a product by one parameter of an integral that lies in the space.
+/// The parameters that no denominator atom or radicand holds: the relations among the
+/// monomials of a search's space do not hold them, so the degree in them is a grading of
+/// its functions.
+pub(super) fn free_parameters(
+    vars: &Vars,
+    atoms: &[(Var, Expr)],
+    radicals: &[(Var, Expr)],
+) -> Vec<Var> {
+    vars.vars()
+        .filter(|&v| {
+            vars.variable(v).kind() == VarKind::Parameter
+                && !atoms.iter().chain(radicals).any(|(_, d)| d.contains(v))
+        })
+        .collect()
+}
+
+/// A parameter multiple `a·X` of an integral `X` of the space that lies in the space.
+pub(super) struct Multiple {
+    /// The coordinates of `X` among the unknowns.
+    pub(super) of: SparseVec<Rational>,
+    /// The coordinates of `a·X`.
+    pub(super) multiple: SparseVec<Rational>,
+}
+
+/// The multiples `a·X` that lie in the space, for `a` a symbolic parameter and `X` an integral
+/// of the space: for each `a`, a basis of the relations `a·Σ c_j I_j = Σ d_k I_k` among the
+/// basis integrals `I_j` (with coordinates `kernel`), found as the kernel of their images
+/// (through one [`Clearing`] with denominator atoms or radicals, whose functions are not
+/// independent monomials). A combination may lie in the space where none of its terms does:
+/// `a·(G + 2a²H)` is of degree 3 in the parameters while `a·G` and `a³H` are of degree 4.
+/// Their span is every sum of parameter multiples of integrals in the space, since a product
+/// by a monomial of higher degree is a product by one parameter of an integral that lies in
+/// the space.
 pub(super) fn parameter_multiples(
+    system: &System,
     problem: &Problem,
     symbolic: &[Var],
+    kernel: &[SparseVec<Rational>],
     basis: &[Integral],
-) -> Result<Vec<(usize, SparseVec<Rational>)>, EngineError> {
+) -> Result<Vec<Multiple>, EngineError> {
+    let space = system.space();
+    let n = basis.len();
     let mut out = Vec::new();
-    for (i, f) in basis.iter().enumerate() {
-        for &a in symbolic {
-            let product = f.fixed.checked_mul(&Expr::var(&problem.vars, a))?;
-            out.extend(problem.coordinates(&product).map(|v| (i, v)));
+    for &a in symbolic {
+        let a_times = Expr::var(&problem.vars, a);
+        let mut functions = basis
+            .iter()
+            .map(|f| f.fixed.checked_mul(&a_times))
+            .collect::<Result<Vec<Expr>, _>>()?;
+        functions.extend(basis.iter().map(|f| f.fixed.clone()));
+        let clearing = Clearing::new(
+            space.denominator_atoms(),
+            space.radicals(),
+            &problem.parameters,
+            functions.iter(),
+        )?;
+        if let Some(clearing) = clearing {
+            functions = clearing.apply_all(&functions)?;
+        }
+        let mut rows = MonomialIndex::new(&problem.vars);
+        let mut nrows = 0;
+        let columns: Vec<SparseVec<Rational>> = functions
+            .iter()
+            .map(|f| real_rows(f, &problem.variables.angles, &mut rows, &mut nrows))
+            .collect();
+        // `Σ c_j a·I_j + Σ d_k I_k = 0`: `X = Σ c_j I_j` and `a·X = −Σ d_k I_k`.
+        for relation in modular::kernel(&columns, nrows) {
+            let (mut of, mut multiple) = (Vec::new(), Vec::new());
+            for (j, x) in &relation {
+                match j.checked_sub(n) {
+                    None => of.extend(kernel[*j].iter().map(|(i, y)| (*i, x * y))),
+                    Some(k) => multiple.extend(kernel[k].iter().map(|(i, y)| (*i, -(x * y)))),
+                }
+            }
+            out.push(Multiple {
+                of: sum_by_index(of),
+                multiple: sum_by_index(multiple),
+            });
         }
     }
     Ok(out)
@@ -145,11 +210,11 @@ pub(super) fn parameter_multiples(
 pub(super) fn module_generators(
     problem: &Problem,
     kernel: &[SparseVec<Rational>],
-    multiples: &[(usize, SparseVec<Rational>)],
+    multiples: &[Multiple],
 ) -> Vec<usize> {
     let mut span = Echelon::<Rational>::new(problem.unknowns.len());
-    for (id, (_, v)) in multiples.iter().enumerate() {
-        span.insert(id, v);
+    for (id, m) in multiples.iter().enumerate() {
+        span.insert(id, &m.multiple);
     }
     (0..kernel.len())
         .filter(|&k| span.insert(multiples.len() + k, &kernel[k]).is_none())

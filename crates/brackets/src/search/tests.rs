@@ -1,9 +1,12 @@
 //! Unit tests of the search's internals.
 
-use trigpoly::{GaussianRational, VarSet};
+use trigpoly::{GaussianRational, Var, VarSet};
 
 use super::locate::Locator;
-use super::new_only::{generators, span_of_products, Grading, Leads, Size, Stamped};
+use super::new_only::{
+    generators, span_of_products, without_parameter_multiples, Generator, Grading, Leads, Size,
+    Stamped,
+};
 use super::problem::Problem;
 use super::*;
 use crate::claim::Condition;
@@ -555,4 +558,53 @@ fn fixed_values_other_than_one_lift_the_same() {
         lifted.contains(&"p_x cos θ + Mωx sin θ".to_string()),
         "{lifted:?}"
     );
+}
+
+#[test]
+fn parameter_multiples_of_a_generator_are_left_out_of_the_products() {
+    let vars = VarSet::builder()
+        .coordinate("x")
+        .momentum("p_x")
+        .parameter("k")
+        .parameter("a")
+        .build()
+        .unwrap();
+    let (k, a) = (vars.lookup("k").unwrap(), vars.lookup("a").unwrap());
+    let gens = |exprs: &[&str]| -> Vec<Generator> {
+        exprs
+            .iter()
+            .map(|s| {
+                let expr = Expr::parse(&vars, s).unwrap();
+                Generator {
+                    size: Size::of(&expr),
+                    expr,
+                    stamp: 1,
+                }
+            })
+            .collect()
+    };
+    let kept = |exprs: &[&str], free: &[Var]| -> Vec<String> {
+        without_parameter_multiples(gens(exprs), free)
+            .iter()
+            .map(|g| g.expr.to_string())
+            .collect()
+    };
+    let all = [
+        "x*p_x",
+        "k*x*p_x",
+        "k^2*a*x*p_x",
+        "x*p_x + k",
+        "k*x*p_x + x",
+        "a*x*p_x",
+    ];
+    // Multiples by monomials in k and a, wherever they stand, are left out; `x p_x + k` and
+    // `k x p_x + x` are no multiples.
+    assert_eq!(kept(&all, &[k, a]), ["x p_x", "x p_x + k", "kx p_x + x"]);
+    // `a` held by a radicand or a denominator is no free parameter: `a x p_x` stays, and
+    // `k²a x p_x` is `k²` times it.
+    assert_eq!(
+        kept(&all, &[k]),
+        ["x p_x", "x p_x + k", "kx p_x + x", "ax p_x"]
+    );
+    assert_eq!(kept(&all, &[]).len(), all.len());
 }
