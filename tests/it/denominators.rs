@@ -7,7 +7,7 @@
 use superint::prelude::*;
 use superint::system_file::{load_str, LimitsOverride, LoadedSystem};
 
-use crate::{holds, scratch_text, superint, superint_in};
+use crate::{holds, scratch_text, superint, superint_in, superint_json};
 
 const TWO_BODY: &str = "name = \"Calogero two-body\"\n\
                         hamiltonian = \"(p_x^2 + p_y^2)/2 + g/(x - y)^2\"\n\
@@ -192,27 +192,17 @@ fn denominators_search_finds_integrals_that_are_functions_apart() {
     let f = scratch_text("denominators-search", "two.toml", TWO_BODY);
     let f = f.to_str().unwrap();
     // The search of degree ≤ 2 in the momenta and in the positions.
-    let search = |more: &[&str]| {
-        let mut args = vec![
-            "search",
-            f,
-            "--momenta-degree",
-            "2",
-            "--positions-degree",
-            "2",
-        ];
-        args.extend(more);
-        superint(&args)
-    };
+    let degree_2 = [
+        "search",
+        f,
+        "--momenta-degree",
+        "2",
+        "--positions-degree",
+        "2",
+    ];
+    let search = |more: &[&str]| superint(&[&degree_2[..], more].concat());
     let found = |denominators: &str| {
-        let o = search(&["--denominators-degree", denominators, "--format", "json"]);
-        assert_eq!(
-            o.status.code(),
-            Some(0),
-            "{}",
-            String::from_utf8_lossy(&o.stderr)
-        );
-        let v: serde_json::Value = serde_json::from_slice(&o.stdout).unwrap();
+        let v = superint_json(&[&degree_2[..], &["--denominators-degree", denominators]].concat());
         let search = v["searches"][0].clone();
         assert_eq!(search["for_every_value"], search["dimension"]);
         (
@@ -471,21 +461,7 @@ fn denominators_search_keeps_a_parameter_symbolic_in_and_out_of_a_denominator() 
     // divides by `x − a`, which `H` does not hold, so the integrals are the six generators
     // times 1, a and a², each proved for every a.
     let f = scratch_text("denominators-symbolic", "shifted.toml", &shifted);
-    let o = superint(&[
-        "search",
-        f.to_str().unwrap(),
-        "--symbolic",
-        "a",
-        "--format",
-        "json",
-    ]);
-    assert_eq!(
-        o.status.code(),
-        Some(0),
-        "{}",
-        String::from_utf8_lossy(&o.stderr)
-    );
-    let v: serde_json::Value = serde_json::from_slice(&o.stdout).unwrap();
+    let v = superint_json(&["search", f.to_str().unwrap(), "--symbolic", "a"]);
     let search = &v["searches"][0];
     assert_eq!(search["dimension"], 18, "{search}");
     assert_eq!(search["for_every_value"], 18, "{search}");

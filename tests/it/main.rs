@@ -95,6 +95,20 @@ pub fn superint(args: &[&str]) -> std::process::Output {
     superint_in(std::path::Path::new(env!("CARGO_MANIFEST_DIR")), args)
 }
 
+/// Runs the superint binary with `args` and `--format json`, which must succeed, and reads
+/// its output.
+pub fn superint_json(args: &[&str]) -> serde_json::Value {
+    let args = [args, &["--format", "json"]].concat();
+    let o = superint(&args);
+    assert_eq!(
+        o.status.code(),
+        Some(0),
+        "{}",
+        String::from_utf8_lossy(&o.stderr)
+    );
+    serde_json::from_slice(&o.stdout).expect("JSON")
+}
+
 /// Runs the superint binary with `args` in `dir` (where a file named by a bare name, as a
 /// message then names it, is found), and waits for it.
 pub fn superint_in(dir: &std::path::Path, args: &[&str]) -> std::process::Output {

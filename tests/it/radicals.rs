@@ -7,7 +7,7 @@
 use superint::prelude::*;
 use superint::system_file::{load, load_str, LimitsOverride, LoadedSystem};
 
-use crate::{holds, scratch_text, superint, superint_in};
+use crate::{holds, scratch_text, superint, superint_in, superint_json};
 
 const PLANAR: &str = "name = \"planar Kepler\"\n\
                       hamiltonian = \"(p_x^2 + p_y^2)/2 - k/r\"\n\
@@ -296,21 +296,7 @@ fn radicals_search_finds_the_laplace_runge_lenz_vector() {
     // `k²r − k²(x² + y² + z²)/r` since k itself equals `r² − x² − y² − z²` there.
     let shifted = bare.replace("\"x^2 + y^2 + z^2\"", "\"x^2 + y^2 + z^2 + k\"");
     let g = scratch_text("radicals-search", "shifted.toml", &shifted);
-    let o = superint(&[
-        "search",
-        g.to_str().unwrap(),
-        "--symbolic",
-        "k",
-        "--format",
-        "json",
-    ]);
-    assert_eq!(
-        o.status.code(),
-        Some(0),
-        "{}",
-        String::from_utf8_lossy(&o.stderr)
-    );
-    let v: serde_json::Value = serde_json::from_slice(&o.stdout).unwrap();
+    let v = superint_json(&["search", g.to_str().unwrap(), "--symbolic", "k"]);
     let search = &v["searches"][0];
     assert_eq!(search["dimension"], 3 + 3 * 3 + 3 + 6 * 3, "{search}");
     assert_eq!(search["for_every_value"], 33, "{search}");
