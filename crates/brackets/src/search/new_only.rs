@@ -96,7 +96,19 @@ pub(super) fn new_integrals(
         .map(|k| &k.0)
         .chain(basis.iter().map(|b| &b.fixed));
     let gens = generators(problem, &grading, sources)?;
-    let gens = without_parameter_multiples(gens, &free_parameters(&problem.vars, atoms, radicals));
+    let mut gens =
+        without_parameter_multiples(gens, &free_parameters(&problem.vars, atoms, radicals));
+    if related {
+        // A constant may be written in the space's monomials, where its grade is not 0 (`−a²`
+        // as `x² + 2ax + y² + z² − s²` for `s² = (x + a)² + y² + z²`, where the space has
+        // `a` but not `a²`): like the other constants it is no generator.
+        let constant: Vec<bool> = gens
+            .iter()
+            .map(|g| is_constant(system, problem, &g.expr))
+            .collect::<Result<_, _>>()?;
+        let mut constant = constant.into_iter();
+        gens.retain(|_| !constant.next().expect("one flag a generator"));
+    }
     // With atoms or radicals the degrees in the coordinates, the denominators and the radicals
     // bound only how many factors a product has, as in a Laurent space: `x/(x − y) · y/(x − y)`
     // may equal a function of the space written in fewer of them.
@@ -418,6 +430,26 @@ pub(super) fn generators<'a>(
         }
     }
     Ok(gens)
+}
+
+/// Whether `f`, a function at the fixed values, is a constant: free of the Poisson
+/// variables, and its derivative by every canonical variable, `{f, p}` and `−{f, q}` (through
+/// the radicals' and denominators' declared brackets), zero.
+fn is_constant(system: &System, problem: &Problem, f: &Expr) -> Result<bool, EngineError> {
+    let space = system.space();
+    if space.poisson_variables().iter().any(|&v| f.contains(v)) {
+        return Ok(false);
+    }
+    for pair in space.pairs() {
+        for v in [pair.q, pair.p] {
+            let derivative = system.bracket(f, &Expr::var(&problem.vars, v))?;
+            let derivative = fix_parameters(&derivative, &problem.parameters)?;
+            if !problem.vanishes(system, &derivative)? {
+                return Ok(false);
+            }
+        }
+    }
+    Ok(true)
 }
 
 /// The generators that are no multiple `μ·g` of another generator `g` by a monomial `μ ≠ 1`
