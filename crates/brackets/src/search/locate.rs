@@ -35,10 +35,12 @@ impl Locator<'_> {
         }
     }
 
-    /// The coordinates of the real and of the imaginary part of `p`, if both lie in the space.
+    /// The coordinates of the real and of the imaginary part of `p`, a product of integrals
+    /// each written in the unknowns' monomials, if both lie in the space.
     pub(super) fn parts(&self, p: &Expr) -> Result<Option<Parts>, EngineError> {
         match self {
             Locator::Monomials(problem) => Ok(problem.coordinates_of_parts(p)),
+            Locator::Cleared(basis) if basis.past_free_degree(p) => Ok(None),
             Locator::Cleared(basis) => {
                 let (_, re, im) = p.conj_re_im();
                 let Some(re) = basis.coordinates(&re)? else {
@@ -72,7 +74,7 @@ pub(super) struct ClearedBasis {
     powers: Vec<i64>,
     /// The parameters that no denominator or radicand holds, and the highest total degree in
     /// them of a basis integral: the relations among the monomials leave that degree as it
-    /// is, so a function of higher degree is no combination of the basis, found without
+    /// is, so a product of higher degree is no combination of the basis, found without
     /// clearing it (with parameters kept symbolic, most products of integrals are such).
     free: (Vec<Var>, i64),
     /// The images of the basis integrals by the powers of the clearing.
@@ -130,9 +132,6 @@ impl ClearedBasis {
         if f.is_zero() {
             return Ok(Some(Vec::new()));
         }
-        if degree_in(f, &self.free.0) > self.free.1 {
-            return Ok(None);
-        }
         let mut powers = self.powers.clone();
         raise_to(&mut powers, self.atoms.iter().chain(&self.radicals), f);
         let images = self.images_for(powers, f)?;
@@ -149,6 +148,15 @@ impl ClearedBasis {
             out.extend(self.coordinates[*k].iter().map(|(j, x)| (*j, x * c)));
         }
         Ok(Some(sum_by_index(out)))
+    }
+
+    /// Whether `p`, a product of integrals each written in the unknowns' monomials, has a
+    /// higher degree in the free parameters than any basis integral, and so is no
+    /// combination of them. Its terms of the highest degree are then the product of its
+    /// factors', each a nonzero function (the monomials are independent), so they are no
+    /// zero function written in other terms (as `k(s² − (x + a)² − y² − z²)` would be).
+    fn past_free_degree(&self, p: &Expr) -> bool {
+        degree_in(p, &self.free.0) > self.free.1
     }
 
     /// The basis images under the clearing of `powers`, formed at the first call for them
