@@ -35,9 +35,16 @@ pub enum AlgebraError {
     /// term, `cos²φ`, but is a sum of exponentials).
     #[error("cannot divide by {0}: cos and sin of an angle are sums of exponentials, which are not invertible here; only division by a nonzero constant, a single term in the other variables, or exp(i*k*angle) is exact")]
     NotAMonomialInAngles(String),
-    /// A negative power of a polynomial that is not a single term.
-    #[error("cannot raise {0} to a negative power: only single terms (monomials) are invertible")]
-    NegativePower(String),
+    /// A negative power of a polynomial that is neither a single term nor a product of powers
+    /// of declared denominators: the base as shown, and the declaration that would make it
+    /// invertible (as [`AlgebraError::NotAMonomial`] says it).
+    #[error("cannot raise {shown} to a negative power: only single terms (monomials) and products of powers of declared denominators are invertible; {declare}")]
+    NegativePower {
+        /// The base as shown.
+        shown: String,
+        /// What to declare.
+        declare: String,
+    },
     /// An exponent beyond the limit.
     #[error("the exponent of {var} would reach {exponent}, past the limit of {limit}")]
     ExponentTooLarge {

@@ -96,7 +96,9 @@ impl<C: Coefficient> Lower<'_, C> {
             ExprKind::Div(a, b) => {
                 let num = self.lower(a)?;
                 let den = self.lower(b)?;
-                num.checked_div(&den).map_err(at(b.span))
+                num.checked_div(&den)
+                    .map_err(|e| self.with_written_factors(e, b))
+                    .map_err(at(b.span))
             }
             ExprKind::Pow(a, b) => {
                 // `M(x + y)²` as printed: the power belongs to the parentheses, not to the
@@ -137,7 +139,9 @@ impl<C: Coefficient> Lower<'_, C> {
                 }
                 let base = self.lower(a)?;
                 let exp = self.integer_exponent(b)?;
-                base.checked_pow(exp).map_err(at(span))
+                base.checked_pow(exp)
+                    .map_err(|e| self.with_written_factors(e, a))
+                    .map_err(at(span))
             }
             ExprKind::Call(name, name_span, args) => self.call(name, *name_span, args, span),
             ExprKind::Bracket(f, g) => {
@@ -253,6 +257,79 @@ impl<C: Coefficient> Lower<'_, C> {
             }
         }
         Some((found, coefficient))
+    }
+
+    /// A refused division by `divisor` (or negative power of it) with the advice to declare
+    /// its factors as written, `x − y` for `(x − y)²` and `x + y`, `x − 2y` for
+    /// `(x + y)(x − 2y)³`, rather than the expanded polynomial, when it is a product or power
+    /// of polynomials that are not invertible themselves.
+    fn with_written_factors(&self, e: AlgebraError, divisor: &Expr) -> AlgebraError {
+        let mut factors = Vec::new();
+        if self.factors_to_declare(divisor, &mut factors).is_err() {
+            return e;
+        }
+        factors.dedup();
+        let whole = self.lower(divisor).map(|d| d.to_ascii()).ok();
+        if factors.is_empty() || (factors.len() == 1 && Some(&factors[0]) == whole.as_ref()) {
+            return e;
+        }
+        let declare = match factors.len() {
+            1 => format!(
+                "declare its factor as a denominator: denominators = [\"{}\"] in [phase_space]",
+                factors[0]
+            ),
+            _ => format!(
+                "declare its factors as denominators: denominators = [\"{}\"] in [phase_space]",
+                factors.join("\", \"")
+            ),
+        };
+        match e {
+            AlgebraError::NotAMonomial { shown, .. } => {
+                AlgebraError::NotAMonomial { shown, declare }
+            }
+            AlgebraError::NegativePower { shown, .. } => {
+                AlgebraError::NegativePower { shown, declare }
+            }
+            other => other,
+        }
+    }
+
+    /// The factors of `e` as written (through products, negations and positive powers) that
+    /// are polynomials of more than one term with no inverse, each as text to declare; `Err`
+    /// when one cannot be told (a factor that does not lower, or is refused for another
+    /// reason, or is too long to write out).
+    fn factors_to_declare(&self, e: &Expr, out: &mut Vec<String>) -> Result<(), ()> {
+        match &e.kind {
+            ExprKind::Mul(a, b) => {
+                self.factors_to_declare(a, out)?;
+                self.factors_to_declare(b, out)
+            }
+            ExprKind::Neg(a) => self.factors_to_declare(a, out),
+            ExprKind::Pow(a, b)
+                // `M(x + y)²` and `Mω²` lower by their own rules: those are taken whole.
+                if !matches!(a.kind, ExprKind::Name(_) | ExprKind::Call(..))
+                    && self.integer_exponent(b).is_ok_and(|n| n > 0) =>
+            {
+                self.factors_to_declare(a, out)
+            }
+            _ => {
+                let p: Poly<C> = self.lower(e).map_err(|_| ())?;
+                match Poly::one(self.vars).checked_div(&p) {
+                    Ok(_) => Ok(()),
+                    Err(AlgebraError::NotAMonomial { .. }) if p.len() <= 8 => {
+                        let text = p.to_ascii();
+                        if text.len() > 80 {
+                            return Err(());
+                        }
+                        if !out.contains(&text) {
+                            out.push(text);
+                        }
+                        Ok(())
+                    }
+                    Err(_) => Err(()),
+                }
+            }
+        }
     }
 
     fn integer_exponent(&self, e: &Expr) -> Result<i64, ParseError> {

@@ -50,7 +50,10 @@ impl<C: Coefficient> Poly<C> {
             if let Some(inverse) = Self::inverse_of_sum(self)? {
                 return inverse.checked_pow(-e);
             }
-            return Err(AlgebraError::NegativePower(self.brief()));
+            return Err(AlgebraError::NegativePower {
+                shown: self.brief(),
+                declare: self.declaration(),
+            });
         }
         if e == 1 {
             return Ok(self.clone());

@@ -73,11 +73,13 @@ impl<C: Coefficient> Poly<C> {
                 }
                 if let std::collections::hash_map::Entry::Vacant(slot) = powers.entry((*v, e)) {
                     let p = value_of(*v).checked_pow(e).map_err(|err| match err {
-                        AlgebraError::NegativePower(s) => AlgebraError::Invalid(format!(
-                            "cannot substitute {s} for {}: it appears with exponent {e}, and \
+                        AlgebraError::NegativePower { shown: s, .. } => {
+                            AlgebraError::Invalid(format!(
+                                "cannot substitute {s} for {}: it appears with exponent {e}, and \
                              only a single term can be raised to a negative power",
-                            self.vars.variable(*v).unicode()
-                        )),
+                                self.vars.variable(*v).unicode()
+                            ))
+                        }
                         other => other,
                     })?;
                     slot.insert(p);
@@ -118,7 +120,7 @@ impl<C: Coefficient> Poly<C> {
         for (e, (exps, coeffs)) in groups {
             let part = Self::from_sorted(&self.vars, self.content.clone(), exps, coeffs);
             let power = value.checked_pow(e).map_err(|err| match err {
-                AlgebraError::NegativePower(s) => AlgebraError::Invalid(format!(
+                AlgebraError::NegativePower { shown: s, .. } => AlgebraError::Invalid(format!(
                     "cannot substitute {s} for {}: it appears with exponent {e}, and only a \
                      single term can be raised to a negative power",
                     self.vars.variable(v).unicode()

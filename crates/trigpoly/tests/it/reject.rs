@@ -141,10 +141,33 @@ fn cases() -> Vec<Case> {
         case(
             Qi,
             "(x + y)^-1",
-            "cannot raise x + y to a negative power: only single terms (monomials) are invertible",
+            "cannot raise x + y to a negative power: only single terms (monomials) and products of powers of declared denominators are invertible; declare it (or its factors) as a denominator: denominators = [\"x + y\"] in [phase_space]",
             (1, 1),
             "line 1, column 1: cannot raise x + y to a negative power: only single terms (monomials) \
-             are invertible\n  (x + y)^-1\n  ^^^^^^^^^^",
+             and products of powers of declared denominators are invertible; declare it (or its \
+             factors) as a denominator: denominators = [\"x + y\"] in [phase_space]\n  \
+             (x + y)^-1\n  ^^^^^^^^^^",
+        ),
+        // A divisor written as a product of powers: its factors as written are to declare.
+        case(
+            Qi,
+            "1/((x - y)^2*(x + 2*y))",
+            "cannot divide by x³ − 3xy² + 2y³: only division by a nonzero constant, a single term (monomial) or a product of powers of declared denominators is exact here; declare its factors as denominators: denominators = [\"x - y\", \"x + 2*y\"] in [phase_space]",
+            (1, 3),
+            "line 1, column 3: cannot divide by x³ − 3xy² + 2y³: only division by a nonzero \
+             constant, a single term (monomial) or a product of powers of declared denominators \
+             is exact here; declare its factors as denominators: denominators = [\"x - y\", \
+             \"x + 2*y\"] in [phase_space]\n  1/((x - y)^2*(x + 2*y))\n    ^^^^^^^^^^^^^^^^^^^^^",
+        ),
+        case(
+            Qi,
+            "((x - y)^3)^-1",
+            "cannot raise x³ − 3x²y + 3xy² − y³ to a negative power: only single terms (monomials) and products of powers of declared denominators are invertible; declare its factor as a denominator: denominators = [\"x - y\"] in [phase_space]",
+            (1, 1),
+            "line 1, column 1: cannot raise x³ − 3x²y + 3xy² − y³ to a negative power: only single \
+             terms (monomials) and products of powers of declared denominators are invertible; \
+             declare its factor as a denominator: denominators = [\"x - y\"] in [phase_space]\n  \
+             ((x - y)^3)^-1\n  ^^^^^^^^^^^^^^",
         ),
         case(
             Qi,
@@ -397,17 +420,31 @@ fn a_long_line_renders_as_a_window_around_the_error() {
 #[test]
 fn a_long_divisor_is_named_by_its_size() {
     let vars = phase_space();
+    // Written as a power, its factor as written is what to declare.
     let long = Poly::<Rational>::parse(&vars, "x/(1 + x)^20").expect_err("not a monomial");
     assert_eq!(
         long.message,
         "cannot divide by a polynomial of 21 terms: only division by a nonzero constant, a \
+         single term (monomial) or a product of powers of declared denominators is exact here; \
+         declare its factor as a denominator: denominators = [\"x + 1\"] in [phase_space]"
+    );
+    let long = Poly::<Rational>::parse(
+        &vars,
+        "x/(1 + x + y^2 + y^3 + x*y + x^2*y + x^3 + y^4 + x^5)",
+    )
+    .expect_err("not a monomial");
+    assert_eq!(
+        long.message,
+        "cannot divide by a polynomial of 9 terms: only division by a nonzero constant, a \
          single term (monomial) or a product of powers of declared denominators is exact here; \
          declare its factors as denominators in [phase_space]"
     );
     let power = Poly::<Rational>::parse(&vars, "(1 + x + y)^(-1)").expect_err("not invertible");
     assert_eq!(
         power.message,
-        "cannot raise x + y + 1 to a negative power: only single terms (monomials) are invertible"
+        "cannot raise x + y + 1 to a negative power: only single terms (monomials) and products \
+         of powers of declared denominators are invertible; declare it (or its factors) as a \
+         denominator: denominators = [\"x + y + 1\"] in [phase_space]"
     );
 }
 
