@@ -97,7 +97,7 @@ impl<C: Coefficient> Lower<'_, C> {
                 let num = self.lower(a)?;
                 let den = self.lower(b)?;
                 num.checked_div(&den)
-                    .map_err(|e| self.with_written_factors(e, b))
+                    .map_err(|e| self.with_written_factors(e, b, &den))
                     .map_err(at(b.span))
             }
             ExprKind::Pow(a, b) => {
@@ -140,7 +140,7 @@ impl<C: Coefficient> Lower<'_, C> {
                 let base = self.lower(a)?;
                 let exp = self.integer_exponent(b)?;
                 base.checked_pow(exp)
-                    .map_err(|e| self.with_written_factors(e, a))
+                    .map_err(|e| self.with_written_factors(e, a, &base))
                     .map_err(at(span))
             }
             ExprKind::Call(name, name_span, args) => self.call(name, *name_span, args, span),
@@ -263,26 +263,20 @@ impl<C: Coefficient> Lower<'_, C> {
     /// its factors as written, `x − y` for `(x − y)²` and `x + y`, `x − 2y` for
     /// `(x + y)(x − 2y)³`, rather than the expanded polynomial, when it is a product or power
     /// of polynomials that are not invertible themselves.
-    fn with_written_factors(&self, e: AlgebraError, divisor: &Expr) -> AlgebraError {
+    fn with_written_factors(
+        &self,
+        e: AlgebraError,
+        divisor: &Expr,
+        value: &Poly<C>,
+    ) -> AlgebraError {
         let mut factors = Vec::new();
-        if self.factors_to_declare(divisor, &mut factors).is_err() {
+        if self.factors_to_declare(divisor, &mut factors).is_err()
+            || factors.is_empty()
+            || factors == [value.to_ascii()]
+        {
             return e;
         }
-        factors.dedup();
-        let whole = self.lower(divisor).map(|d| d.to_ascii()).ok();
-        if factors.is_empty() || (factors.len() == 1 && Some(&factors[0]) == whole.as_ref()) {
-            return e;
-        }
-        let declare = match factors.len() {
-            1 => format!(
-                "declare its factor as a denominator: denominators = [\"{}\"] in [phase_space]",
-                factors[0]
-            ),
-            _ => format!(
-                "declare its factors as denominators: denominators = [\"{}\"] in [phase_space]",
-                factors.join("\", \"")
-            ),
-        };
+        let declare = Poly::<C>::factors_declaration(&factors);
         match e {
             AlgebraError::NotAMonomial { shown, .. } => {
                 AlgebraError::NotAMonomial { shown, declare }
@@ -316,11 +310,8 @@ impl<C: Coefficient> Lower<'_, C> {
                 let p: Poly<C> = self.lower(e).map_err(|_| ())?;
                 match Poly::one(self.vars).checked_div(&p) {
                     Ok(_) => Ok(()),
-                    Err(AlgebraError::NotAMonomial { .. }) if p.len() <= 8 => {
-                        let text = p.to_ascii();
-                        if text.len() > 80 {
-                            return Err(());
-                        }
+                    Err(AlgebraError::NotAMonomial { .. }) => {
+                        let text = p.ascii_within(8, 80).ok_or(())?;
                         if !out.contains(&text) {
                             out.push(text);
                         }

@@ -4,13 +4,14 @@
 
 use rustc_hash::FxHashSet;
 
-use trigpoly::{Expr, GaussianRational, MonomialIndex, Rational, Var, VarKind, Vars};
+use trigpoly::{Expr, GaussianRational, Rational, Var, VarKind, Vars};
 
 use crate::clearing::Clearing;
 use crate::error::EngineError;
-use crate::modular::{Echelon, SparseVec};
+use crate::modular::Echelon;
 
-use super::problem::{real_rows, Unknown};
+use super::parameters::free_parameters;
+use super::problem::{real_columns, Unknown};
 
 /// With denominator atoms or radicals the monomials of the space are not independent functions
 /// (`x/(x − y) − y/(x − y) = 1`, `x²/r + y²/r = r`): the monomials `φ` (without angles) whose
@@ -51,11 +52,10 @@ pub(super) fn independent_as_functions(
     // compared with the coordinates (`a² = r² − x² + 2ax − y²` for `r = √((x − a)² + y²)`),
     // all of them, since their degree is bounded together (`k·a³/r` may be past it where
     // `k·a x²/r` is not); otherwise they only multiply, like the momenta.
-    let symbolic = |v: Var| kind(v) == VarKind::Parameter && parameters.iter().all(|p| p.0 != v);
-    let holds_parameters = atoms
-        .iter()
-        .chain(radicals)
-        .any(|(_, d)| vars.vars().any(|v| symbolic(v) && d.contains(v)));
+    let free = free_parameters(vars, atoms, radicals);
+    let holds_parameters = vars.vars().any(|v| {
+        kind(v) == VarKind::Parameter && !free.contains(&v) && parameters.iter().all(|p| p.0 != v)
+    });
     let held = |v: Var| holds_parameters && kind(v) == VarKind::Parameter;
     // The part of a monomial that the choice is made on: without the variables listed here.
     let apart: Vec<usize> = match in_coordinates {
@@ -106,13 +106,7 @@ pub(super) fn independent_as_functions(
         .collect::<Result<Vec<Expr>, _>>()?;
     let clearing = Clearing::new(atoms, radicals, parameters, monomials.iter())?
         .expect("the space has denominator atoms or radicals");
-    let mut rows = MonomialIndex::new(vars);
-    let mut nrows = 0;
-    let columns: Vec<SparseVec<Rational>> = clearing
-        .apply_all(&monomials)?
-        .iter()
-        .map(|e| real_rows(e, &[], &mut rows, &mut nrows))
-        .collect();
+    let (_, nrows, columns) = real_columns(&clearing.apply_all(&monomials)?, &[], vars);
     let mut span = Echelon::<Rational>::new(nrows);
     let kept: FxHashSet<Vec<i64>> = parts
         .into_iter()

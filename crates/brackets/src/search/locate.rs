@@ -6,14 +6,14 @@ use std::cell::RefCell;
 use std::rc::Rc;
 
 use rustc_hash::FxHashMap;
-use trigpoly::{Expr, MonomialIndex, Rational, Var};
+use trigpoly::{Expr, Rational, Var};
 
 use crate::clearing::Clearing;
 use crate::error::EngineError;
 use crate::modular::{Echelon, SparseVec};
 
 use super::parameters::free_parameters;
-use super::problem::{real_entries, real_rows, sum_by_index, Problem};
+use super::problem::{real_columns, real_entries, sum_by_index, Problem, RowIndex};
 
 /// The coordinates of the real and of the imaginary part of a function.
 type Parts = (SparseVec<Rational>, SparseVec<Rational>);
@@ -76,7 +76,8 @@ pub(super) struct ClearedBasis {
     /// them of a basis integral: the relations among the monomials leave that degree as it
     /// is, so a product of higher degree is no combination of the basis, found without
     /// clearing it (with parameters kept symbolic, most products of integrals are such).
-    free: (Vec<Var>, i64),
+    free: Vec<Var>,
+    free_degree: i64,
     /// The images of the basis integrals by the powers of the clearing.
     images: RefCell<FxHashMap<Vec<i64>, Rc<ClearedImages>>>,
 }
@@ -85,7 +86,7 @@ pub(super) struct ClearedBasis {
 /// form of them, which expresses an image in them.
 struct ClearedImages {
     clearing: Clearing,
-    rows: MonomialIndex<[Option<usize>; 2]>,
+    rows: RowIndex,
     echelon: Echelon<Rational>,
 }
 
@@ -121,7 +122,8 @@ impl ClearedBasis {
             integrals,
             coordinates: kernel.to_vec(),
             powers,
-            free: (free, free_degree),
+            free,
+            free_degree,
             images: RefCell::default(),
         })
     }
@@ -156,7 +158,7 @@ impl ClearedBasis {
     /// factors', each a nonzero function (the monomials are independent), so they are no
     /// zero function written in other terms (as `k(s² − (x + a)² − y² − z²)` would be).
     fn past_free_degree(&self, p: &Expr) -> bool {
-        degree_in(p, &self.free.0) > self.free.1
+        degree_in(p, &self.free) > self.free_degree
     }
 
     /// The basis images under the clearing of `powers`, formed at the first call for them
@@ -172,13 +174,8 @@ impl ClearedBasis {
             self.integrals.iter().chain([f]),
         )?
         .expect("a search with denominator atoms or radicals");
-        let mut rows = MonomialIndex::new(f.vars());
-        let mut nrows = 0;
-        let columns: Vec<SparseVec<Rational>> = clearing
-            .apply_all(&self.integrals)?
-            .iter()
-            .map(|e| real_rows(e, &self.angles, &mut rows, &mut nrows))
-            .collect();
+        let images = clearing.apply_all(&self.integrals)?;
+        let (rows, nrows, columns) = real_columns(&images, &self.angles, f.vars());
         let mut echelon = Echelon::new(nrows);
         for (k, column) in columns.iter().enumerate() {
             let independent = echelon.extend(k, column);

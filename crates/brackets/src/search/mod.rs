@@ -127,7 +127,7 @@ use crate::system::System;
 
 use new_only::new_integrals;
 use parameters::{fixed_problem, module_generators, parameter_multiples, parameter_values};
-use problem::{real_rows, Components, IMAGE_BLOCK};
+use problem::{real_rows, Components, RowIndex, IMAGE_BLOCK};
 use proof::{flow_vanishes, lead, primitive_vector};
 
 /// Finds a basis of every integral of `system` in the space of `options`: each element of
@@ -216,7 +216,7 @@ pub fn search(system: &System, options: &SearchOptions) -> Result<SearchResult, 
     } else {
         n.max(1)
     };
-    let mut rows: MonomialIndex<[Option<usize>; 2]> = MonomialIndex::new(&problem.vars);
+    let mut rows: RowIndex = MonomialIndex::new(&problem.vars);
     let mut nrows = 0;
     let mut columns: Vec<SparseVec<Rational>> = Vec::with_capacity(n);
     for start in (0..n).step_by(block) {

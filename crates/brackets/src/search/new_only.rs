@@ -95,20 +95,12 @@ pub(super) fn new_integrals(
         .iter()
         .map(|k| &k.0)
         .chain(basis.iter().map(|b| &b.fixed));
-    let gens = generators(problem, &grading, sources)?;
-    let mut gens =
-        without_parameter_multiples(gens, &free_parameters(&problem.vars, atoms, radicals));
-    if related {
-        // A constant may be written in the space's monomials, where its grade is not 0 (`−a²`
-        // as `x² + 2ax + y² + z² − s²` for `s² = (x + a)² + y² + z²`, where the space has
-        // `a` but not `a²`): like the other constants it is no generator.
-        let constant: Vec<bool> = gens
-            .iter()
-            .map(|g| is_constant(system, problem, &g.expr))
-            .collect::<Result<_, _>>()?;
-        let mut constant = constant.into_iter();
-        gens.retain(|_| !constant.next().expect("one flag a generator"));
-    }
+    let constant = |c: &Expr| match related {
+        true => is_constant(system, problem, c),
+        false => Ok(false),
+    };
+    let gens = generators(problem, &grading, sources, &constant)?;
+    let gens = without_parameter_multiples(gens, &free_parameters(&problem.vars, atoms, radicals));
     // With atoms or radicals the degrees in the coordinates, the denominators and the radicals
     // bound only how many factors a product has, as in a Laurent space: `x/(x − y) · y/(x − y)`
     // may equal a function of the space written in fewer of them.
@@ -402,11 +394,16 @@ pub(super) struct Generator {
     pub(super) stamp: i64,
 }
 
-/// The generators of the integrals `sources` (constants left out), each component once.
+/// The generators of the integrals `sources` (constants left out), each component once. A
+/// constant is of grade 0, or, where the space's monomials are related, a component that
+/// `constant` finds one: the space may write a constant in its monomials, where its grade is
+/// not 0 (`−a²` as `x² + 2ax + y² + z² − s²` for `s² = (x + a)² + y² + z²`, where the space
+/// has `a` but not `a²`).
 pub(super) fn generators<'a>(
     problem: &Problem,
     grading: &Grading,
     sources: impl IntoIterator<Item = &'a Expr>,
+    constant: &dyn Fn(&Expr) -> Result<bool, EngineError>,
 ) -> Result<Vec<Generator>, EngineError> {
     let mut gens: Vec<Generator> = Vec::new();
     for f in sources {
@@ -421,6 +418,7 @@ pub(super) fn generators<'a>(
             let c = c.scale(&lead.try_inv().expect("nonzero"));
             match gens.iter_mut().find(|g| g.expr == c) {
                 Some(g) => g.stamp = g.stamp.min(grade),
+                None if constant(&c)? => {}
                 None => gens.push(Generator {
                     size: Size::of(&c),
                     expr: c,

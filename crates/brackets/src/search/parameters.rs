@@ -1,7 +1,7 @@
 //! Parameters: checked, fixed to values for the linear algebra, or kept symbolic (their
 //! multiples and the module they generate).
 
-use trigpoly::{Expr, GaussianRational, MonomialIndex, Rational, Var, VarKind, Vars};
+use trigpoly::{Expr, GaussianRational, Rational, Var, VarKind, Vars};
 
 use crate::claim::Condition;
 use crate::clearing::Clearing;
@@ -10,7 +10,7 @@ use crate::modular::{self, Echelon, SparseVec};
 use crate::system::System;
 
 use super::options::SearchOptions;
-use super::problem::{real_rows, sum_by_index, Problem};
+use super::problem::{real_columns, sum_by_index, Problem};
 use super::result::Integral;
 
 /// Refuses values fixed for what is no parameter, and parameters to keep symbolic that are no
@@ -180,12 +180,8 @@ pub(super) fn parameter_multiples(
         if let Some(clearing) = clearing {
             functions = clearing.apply_all(&functions)?;
         }
-        let mut rows = MonomialIndex::new(&problem.vars);
-        let mut nrows = 0;
-        let columns: Vec<SparseVec<Rational>> = functions
-            .iter()
-            .map(|f| real_rows(f, &problem.variables.angles, &mut rows, &mut nrows))
-            .collect();
+        let (_, nrows, columns) =
+            real_columns(&functions, &problem.variables.angles, &problem.vars);
         // `Σ c_j a·I_j + Σ d_k I_k = 0`: `X = Σ c_j I_j` and `a·X = −Σ d_k I_k`.
         for relation in modular::kernel(&columns, nrows) {
             let (mut of, mut multiple) = (Vec::new(), Vec::new());

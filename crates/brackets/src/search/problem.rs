@@ -532,6 +532,10 @@ impl Problem {
     }
 }
 
+/// The rows of real equations by monomial: for each, the row of its real and of its
+/// imaginary part, numbered as they first appear.
+pub(super) type RowIndex = MonomialIndex<[Option<usize>; 2]>;
+
 /// The real equations of an image `{φ, H}` (or, for the denominators, of a function), as a
 /// column: a row for the real and for the imaginary part of each monomial with a canonical
 /// `e^{ik·θ}` (`k ≥ 0`), numbered as they first appear in `rows`. Right for real functions,
@@ -539,7 +543,7 @@ impl Problem {
 pub(super) fn real_rows(
     e: &Expr,
     angles: &[Var],
-    rows: &mut MonomialIndex<[Option<usize>; 2]>,
+    rows: &mut RowIndex,
     nrows: &mut usize,
 ) -> SparseVec<Rational> {
     let numbered = real_entries(e, angles, |t, part| {
@@ -552,6 +556,22 @@ pub(super) fn real_rows(
         }))
     });
     numbered.expect("every row is numbered")
+}
+
+/// The [`real_rows`] of each of `functions`, numbered in one index of rows: the rows, their
+/// number and the columns.
+pub(super) fn real_columns(
+    functions: &[Expr],
+    angles: &[Var],
+    vars: &Vars,
+) -> (RowIndex, usize, Vec<SparseVec<Rational>>) {
+    let mut rows = MonomialIndex::new(vars);
+    let mut nrows = 0;
+    let columns = functions
+        .iter()
+        .map(|e| real_rows(e, angles, &mut rows, &mut nrows))
+        .collect();
+    (rows, nrows, columns)
 }
 
 /// The entries of [`real_rows`], each at the row `row(term, part)` finds for it (the real

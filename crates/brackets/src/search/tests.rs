@@ -230,7 +230,8 @@ fn products_stop_once_they_span_every_integral() {
     // span before the last stamp's products: told that dimension, the walk stops there.
     let (found, problem, kernel) = found_at_one_to_one(SearchSpace::new(4, 4, 4));
     let grading = Grading::new(&problem.variables, 4);
-    let gens = generators(&problem, &grading, found.basis.iter().map(|b| &b.fixed)).unwrap();
+    let sources = found.basis.iter().map(|b| &b.fixed);
+    let gens = generators(&problem, &grading, sources, &|_| Ok(false)).unwrap();
     let bounds = Size {
         momenta: 4,
         coordinates: 4,

@@ -60,16 +60,36 @@ impl<C: Coefficient> Poly<C> {
 
     /// [`Poly::declaration`] with room for at most `terms` terms and `chars` characters.
     pub(crate) fn declaration_within(&self, terms: usize, chars: usize) -> String {
-        let ascii = match self.len() <= terms {
-            true => Some(self.to_ascii()).filter(|a| a.len() <= chars),
-            false => None,
-        };
-        match ascii {
+        match self.ascii_within(terms, chars) {
             Some(a) => format!(
-                "declare it (or its factors) as a denominator: denominators = [\"{a}\"] in \
-                 [phase_space]"
+                "declare it (or its factors) as a denominator: {}",
+                denominators_line(&[a])
             ),
             None => "declare its factors as denominators in [phase_space]".into(),
+        }
+    }
+
+    /// The polynomial in ASCII, as a declaration writes it, when it has at most `terms` terms
+    /// and `chars` characters.
+    pub(crate) fn ascii_within(&self, terms: usize, chars: usize) -> Option<String> {
+        match self.len() <= terms {
+            true => Some(self.to_ascii()).filter(|a| a.len() <= chars),
+            false => None,
+        }
+    }
+
+    /// What to declare to divide by a product of powers of `factors` (each in ASCII), as a
+    /// refused division says when the divisor is written as one.
+    pub(crate) fn factors_declaration(factors: &[String]) -> String {
+        match factors.len() {
+            1 => format!(
+                "declare its factor as a denominator: {}",
+                denominators_line(factors)
+            ),
+            _ => format!(
+                "declare its factors as denominators: {}",
+                denominators_line(factors)
+            ),
         }
     }
 
@@ -501,6 +521,14 @@ fn exponents(
         exponents(spans, i + 1, rest, ks, out);
     }
     ks[i] = 0;
+}
+
+/// `denominators = ["x - y", "x + y"] in [phase_space]`.
+fn denominators_line(texts: &[String]) -> String {
+    format!(
+        "denominators = [\"{}\"] in [phase_space]",
+        texts.join("\", \"")
+    )
 }
 
 #[cfg(test)]
