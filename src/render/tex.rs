@@ -386,6 +386,13 @@ fn translate(s: &str) -> String {
                         }
                         _ => out.push_str(r"\}"),
                     },
+                    // A fractional power as the echo writes it, `(x² + y²)^(3/2)`, is the
+                    // braced exponent `^{3/2}`.
+                    '^' if fraction_exponent(&toks[k + 1..]).is_some() => {
+                        let (exponent, taken) = fraction_exponent(&toks[k + 1..]).expect("tested");
+                        out.push_str(&format!("^{{{exponent}}}"));
+                        k += taken;
+                    }
                     '_' | '^' => {
                         let join = c == '_' && subscript_end == Some(out.len());
                         match join {
@@ -483,6 +490,32 @@ fn translate(s: &str) -> String {
         out.push_str(if group { "}" } else { "" });
     }
     out.trim_end().to_string()
+}
+
+/// A parenthesized fraction of integers, `(3/2)` or `(−1/2)`, at the start of `toks`: its
+/// LaTeX (`3/2`, `-1/2`) and how many tokens it takes.
+fn fraction_exponent(toks: &[Tok]) -> Option<(String, usize)> {
+    if toks.first() != Some(&Tok::Char('(', None)) {
+        return None;
+    }
+    let mut inner = String::new();
+    for (k, t) in toks.iter().enumerate().skip(1) {
+        match t {
+            Tok::Char(')', None) => {
+                let (sign, rest) = match inner.strip_prefix('-') {
+                    Some(rest) => ("-", rest),
+                    None => ("", inner.as_str()),
+                };
+                let (p, q) = rest.split_once('/')?;
+                let digits = |d: &str| !d.is_empty() && d.chars().all(|c| c.is_ascii_digit());
+                return (digits(p) && digits(q)).then(|| (format!("{sign}{p}/{q}"), k + 1));
+            }
+            Tok::Char('−' | '-', None) if inner.is_empty() => inner.push('-'),
+            Tok::Char(c, None) if c.is_ascii_digit() || *c == '/' => inner.push(*c),
+            _ => return None,
+        }
+    }
+    None
 }
 
 /// The LaTeX of what an unbraced script at the start of `toks` takes, and how many tokens: a
@@ -767,6 +800,11 @@ mod tests {
             ("K_a_{m,n} = K̄_{m,n}", r"K_{a;m,n} = \bar{K}_{m,n}"),
             ("K₁_1_2, x₁₂", "K_{1;1,2}, x_{12}"),
             ("50% & #1 $", r"50\% \& \#1 \$"),
+            // A half-integer power of a radicand, as the echo writes it.
+            (
+                "kx/(x² + y²)^(3/2) + (x² + y²)^(−1/2)",
+                "kx/(x^{2} + y^{2})^{3/2} + (x^{2} + y^{2})^{-1/2}",
+            ),
         ] {
             assert_eq!(math(u), t, "{u}");
             assert!(balanced(&math(u)), "{u}");

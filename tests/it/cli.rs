@@ -308,6 +308,12 @@ fn cli_latex_of_every_command_compiles() {
         vec!["table", "systems/gravity-rotor.toml", "Lp", "G1p", "G2p"],
         vec!["table", "systems/gravity-rotor.toml"],
         vec!["bracket", rotor, "K_1_2", "H"],
+        // A half-integer power of a radicand, echoed as written (`^(3/2)` was `^{(}3/2)`).
+        vec![
+            "expand",
+            "systems/kepler-3d.toml",
+            "k*x/(x^2 + y^2 + z^2)^(3/2) + (x^2 + y^2 + z^2)^(-1/2)",
+        ],
         [
             &["search", rotor, "--when", "p_theta = I*omega"][..],
             &crate::DEGREE_ONE,

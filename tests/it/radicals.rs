@@ -99,6 +99,45 @@ fn radicals_zero_is_decided_by_reducing() {
 }
 
 #[test]
+fn radicals_half_integer_powers_of_a_radicand_are_powers_of_its_radical() {
+    let file = planar();
+    // The force as physicists write it: R^(p/2) is r^p, for every odd p of either sign.
+    assert!(holds(&file, "{p_x, H}", "-k*x/(x^2 + y^2)^(3/2)"));
+    assert!(holds(&file, "(x^2 + y^2)^(1/2)", "r"));
+    assert!(holds(&file, "(x^2 + y^2)^(-1/2)", "1/r"));
+    assert!(holds(&file, "(x^2 + y^2)^(5/2)", "r^5"));
+    assert!(holds(&file, "(4*x^2 + 4*y^2)^(3/2)", "8*r^3"));
+    assert!(holds(&file, "(9/4)^(-3/2)", "8/27"));
+    // Integer and half-integer powers agree where both apply.
+    assert!(holds(&file, "(x^2 + y^2)^(4/2)", "(x^2 + y^2)^2"));
+    assert!(!holds(&file, "(x^2 + y^2)^(3/2)", "r^2"));
+    assert!(!holds(&file, "(x^2 + y^2)^(-3/2)", "r^3"));
+    for (power, message) in [
+        (
+            "(x^2 + 2*y^2)^(3/2)",
+            "sqrt(x² + 2y²) is no declared radical: declare it (radicals = { r = \"x^2 + 2*y^2\" } \
+             in [phase_space], for a name r of yours), and its power 3/2 reads as r^3",
+        ),
+        (
+            "x^(1/2)",
+            "sqrt(x) is no declared radical: declare it (radicals = { r = \"x\" } in \
+             [phase_space], for a name r of yours), and its power 1/2 reads as r",
+        ),
+        ("2^(3/2)", "sqrt(2) is not a rational number"),
+        ("(x^2 + 2*x*y + y^2)^(1/2)", "sqrt(x² + 2xy + y²) is |x + y|"),
+        (
+            "(x^2 + y^2)^(1/3)",
+            "exponents must be integers or halves of odd integers (a power of a declared \
+             radical, (x^2 + y^2)^(3/2) for r^3), found 1/3",
+        ),
+        ("(x^2 + y^2)^(2001/2)", "the exponent 2001/2 is past the limit of 1000"),
+    ] {
+        let err = file.parse(power).expect_err(power).to_string();
+        assert!(err.contains(message), "{power}: {err}");
+    }
+}
+
+#[test]
 fn radicals_kepler_claims_are_proved_and_the_wrong_signs_refuted() {
     let file = kepler();
     let report = superint::system_file::check_report([&file]).expect("checked");

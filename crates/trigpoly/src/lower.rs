@@ -62,6 +62,20 @@ impl<C: Coefficient> Poly<C> {
     }
 }
 
+/// An exponent as written: an integer, or `p/2` for an odd `p` (a power of a radical).
+#[derive(Clone, Copy)]
+enum Exponent {
+    Integer(i64),
+    Half(i64),
+}
+
+/// What takes a root: `sqrt(E)`, or the power `E^(p/2)`.
+#[derive(Clone, Copy)]
+enum RootOf {
+    Sqrt,
+    Power(i64),
+}
+
 struct Lower<'a, C: Coefficient> {
     vars: &'a Vars,
     ctx: &'a dyn Context<C>,
@@ -138,10 +152,17 @@ impl<C: Coefficient> Lower<'_, C> {
                     }
                 }
                 let base = self.lower(a)?;
-                let exp = self.integer_exponent(b)?;
-                base.checked_pow(exp)
-                    .map_err(|e| self.with_written_factors(e, a, &base))
-                    .map_err(at(span))
+                match self.exponent(b)? {
+                    Exponent::Integer(exp) => base
+                        .checked_pow(exp)
+                        .map_err(|e| self.with_written_factors(e, a, &base))
+                        .map_err(at(span)),
+                    // `R^(p/2)` is `√R^p`: `(x^2 + y^2)^(3/2)` is `r³` for `r = √(x² + y²)`.
+                    Exponent::Half(p) => self
+                        .root(&base, RootOf::Power(p), span)?
+                        .checked_pow(p)
+                        .map_err(at(span)),
+                }
             }
             ExprKind::Call(name, name_span, args) => self.call(name, *name_span, args, span),
             ExprKind::Bracket(f, g) => {
@@ -324,28 +345,54 @@ impl<C: Coefficient> Lower<'_, C> {
     }
 
     fn integer_exponent(&self, e: &Expr) -> Result<i64, ParseError> {
+        match self.exponent(e)? {
+            Exponent::Integer(n) => Ok(n),
+            Exponent::Half(p) => Err(ParseError::new(
+                e.span,
+                format!("exponents must be integers here, found {p}/2"),
+            )),
+        }
+    }
+
+    /// An exponent: an integer constant, or half an odd one (a power of a radical), within
+    /// the degree limit.
+    fn exponent(&self, e: &Expr) -> Result<Exponent, ParseError> {
         let p: Poly<C> = self.lower(e)?;
         let value = p
             .as_constant()
             .and_then(|c| Rational::from_gaussian(&c.to_gaussian()));
         let limit = self.vars.limits().max_degree;
-        match value {
-            Some(q) if q.is_integer() => match q.numer().to_i64() {
-                Some(n) if n.unsigned_abs() <= limit as u64 => Ok(n),
-                _ => Err(ParseError::new(
-                    e.span,
-                    format!("the exponent {q} is past the limit of {limit}"),
-                )),
-            },
-            Some(q) => Err(ParseError::new(
-                e.span,
-                format!(
-                    "exponents must be integers, found {q} (fractional powers are not polynomial)"
-                ),
-            )),
-            None => Err(ParseError::new(
+        let Some(q) = value else {
+            return Err(ParseError::new(
                 e.span,
                 "exponents must be integer constants",
+            ));
+        };
+        let twice = &q * &Rational::from(2);
+        let exponent = match (q.is_integer(), twice.is_integer()) {
+            (true, _) => q.numer().to_i64().map(Exponent::Integer),
+            (false, true) => twice.numer().to_i64().map(Exponent::Half),
+            (false, false) => {
+                return Err(ParseError::new(
+                    e.span,
+                    format!(
+                        "exponents must be integers or halves of odd integers (a power of a \
+                         declared radical, (x^2 + y^2)^(3/2) for r^3), found {q} (other \
+                         fractional powers are not polynomial)"
+                    ),
+                ))
+            }
+        };
+        // The limit bounds the power of the radical too (`p` of `p/2`).
+        match exponent {
+            Some(x @ (Exponent::Integer(n) | Exponent::Half(n)))
+                if n.unsigned_abs() <= u64::from(limit) =>
+            {
+                Ok(x)
+            }
+            _ => Err(ParseError::new(
+                e.span,
+                format!("the exponent {q} is past the limit of {limit}"),
             )),
         }
     }
@@ -431,8 +478,14 @@ impl<C: Coefficient> Lower<'_, C> {
     /// positive rational (`sqrt(4*x^2 + 4*y^2)` is `2r` for `r = √(x² + y²)`), or the rational
     /// root of a constant; any other root is refused with the declaration that makes it one.
     fn sqrt(&self, arg: &Expr, span: Span) -> Result<Poly<C>, ParseError> {
-        let value = self.lower(arg)?;
-        if let Some(root) = Poly::root_by_radicals(&value).map_err(at(span))? {
+        self.root(&self.lower(arg)?, RootOf::Sqrt, span)
+    }
+
+    /// The root of `value` that `sqrt(value)` or a half-integer power `value^(p/2)` takes (see
+    /// [`Lower::sqrt`]); a refusal names the declaration that makes it one, and what then
+    /// reads as a power of the radical.
+    fn root(&self, value: &Poly<C>, of: RootOf, span: Span) -> Result<Poly<C>, ParseError> {
+        if let Some(root) = Poly::root_by_radicals(value).map_err(at(span))? {
             return Ok(root);
         }
         if let Some(c) = value.as_constant() {
@@ -451,11 +504,18 @@ impl<C: Coefficient> Lower<'_, C> {
                 "sqrt({value}) is i·|{root}|, whose sign superint does not choose: {}",
                 root.sign_advice(true)
             ),
-            None => format!(
-                "sqrt({value}) is no declared radical: declare it (radicals = {{ r = \"{}\" }} \
-                 in [phase_space], for a name r of yours), and sqrt of it reads as r",
-                value.to_ascii()
-            ),
+            None => {
+                let reads = match of {
+                    RootOf::Sqrt => "sqrt of it reads as r".to_string(),
+                    RootOf::Power(1) => "its power 1/2 reads as r".to_string(),
+                    RootOf::Power(p) => format!("its power {p}/2 reads as r^{p}"),
+                };
+                format!(
+                    "sqrt({value}) is no declared radical: declare it (radicals = {{ r = \"{}\" }} \
+                     in [phase_space], for a name r of yours), and {reads}",
+                    value.to_ascii()
+                )
+            }
         };
         Err(ParseError::new(span, message))
     }
