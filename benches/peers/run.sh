@@ -6,11 +6,9 @@
 set -euo pipefail
 here="$(cd "$(dirname "$0")" && pwd)"
 root="$(cd "$here/../.." && pwd)"
-venv="$here/.venv"
-if [ ! -x "$venv/bin/python" ]; then
-  python3 -m venv "$venv"
-  "$venv/bin/pip" install --quiet "python-flint==0.9.0" "sympy==1.14.0"
-fi
+# shellcheck source=venv.sh
+source "$here/venv.sh"
+peers_python "flint=python-flint==0.9.0" "sympy=sympy==1.14.0"
 if ! command -v Singular >/dev/null 2>&1; then
   if [ "$(id -u)" = 0 ]; then
     apt-get update -qq && DEBIAN_FRONTEND=noninteractive apt-get install -y -qq singular >/dev/null
@@ -19,4 +17,4 @@ if ! command -v Singular >/dev/null 2>&1; then
   fi
 fi
 (cd "$root" && cargo build --release --quiet)
-PEERS_PYTHON="$venv/bin/python" exec "$venv/bin/python" "$here/compare.py" "$@"
+PEERS_PYTHON="$python" exec "$python" "$here/compare.py" "$@"

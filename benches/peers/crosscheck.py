@@ -1,0 +1,339 @@
+"""Cross-checks superint against SymPy on random expressions: an independent oracle for the engine.
+
+    python crosscheck.py [--cases 400] [--seed 1] [--superint PATH] [--verbose]
+
+For each case the script draws two random expressions F and G in one of four small systems (two
+radicals; declared denominators; two angles with complex exponentials; Poisson variables of
+e(3)* beside a canonical pair), picks an operation ({F, G}, F·G or F^k), and asks superint for
+the result (`bracket` or `expand`, JSON output). SymPy computes the same result from the
+definitions: the bracket as the sum over the canonical pairs and the declared brackets of
+derivatives, with each radical as `sqrt(R)`, `cos`, `sin` and `exp(i nθ)` as SymPy's own
+functions. Then three things must hold:
+
+1. **The printed result is right.** superint's ASCII form, read back by SymPy, equals SymPy's
+   result at exact points: rational points where every radicand is a square (so that every
+   radical is rational) and every declared denominator nonzero, and rational points on the unit
+   circle (cos θ = 3/5, sin θ = 4/5, ...) for the angles. Every value is an exact rational.
+2. **SymPy's result is a zero difference in superint.** `expand "(superint's input) − (SymPy's
+   result as text)"` prints `0`: SymPy's form (its own radicals, unexpanded denominators,
+   `cos(θ − φ)`) is read by superint and decided zero exactly.
+3. **A wrong result is refuted.** The same difference plus a small nonzero term is not `0`.
+
+A case that superint refuses with a message (exit code 2: dividing by a sum that is no declared
+denominator, say) is counted and skipped; any other exit code is a failure. The script prints a
+summary line and exits nonzero if any case failed. It needs only SymPy (`run.sh` installs it
+into `.venv`: `benches/peers/crosscheck.sh` does that and builds superint first).
+"""
+import argparse
+import json
+import os
+import random
+import re
+import subprocess
+import sys
+import tempfile
+from fractions import Fraction
+
+import sympy as sp
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+ROOT = os.path.dirname(os.path.dirname(HERE))
+
+# ---------------------------------------------------------------------------------------------
+# The systems: a file for superint, the same definitions for SymPy, random atoms, exact points.
+
+
+class System:
+    """One system: its file text, SymPy symbols, canonical pairs, declared brackets, atoms."""
+
+    def __init__(self, name, toml, symbols, pairs, declared, atoms, points, extra_locals=None):
+        self.name = name
+        self.toml = toml
+        self.locals = dict(symbols)
+        self.locals.update(extra_locals or {})
+        self.pairs = [(self.locals[q], self.locals[p]) for q, p in pairs]
+        self.declared = [(self.locals[a], self.locals[b], sp.sympify(v, locals=self.locals))
+                         for a, b, v in declared]
+        self.atoms = atoms
+        self.points = points
+        self.file = None
+
+    def read(self, text):
+        """An expression in superint's language (or SymPy's printing of one), read by SymPy."""
+        return sp.sympify(text.replace("^", "**"), locals=self.locals)
+
+    def bracket(self, f, g):
+        """{f, g}: the canonical pairs' Jacobians plus the declared brackets' part."""
+        out = sp.Integer(0)
+        for q, p in self.pairs:
+            out += sp.diff(f, q) * sp.diff(g, p) - sp.diff(f, p) * sp.diff(g, q)
+        for a, b, value in self.declared:
+            out += value * (sp.diff(f, a) * sp.diff(g, b) - sp.diff(f, b) * sp.diff(g, a))
+        return out
+
+
+def symbols(names):
+    return {n: sp.Symbol(n, real=True) for n in names.split()}
+
+
+def radicals_system():
+    s = symbols("x y z p_x p_y p_z k a")
+    x, y, z, a = s["x"], s["y"], s["z"], s["a"]
+    extra = {"r": sp.sqrt(x**2 + y**2 + z**2), "s": sp.sqrt((x - a)**2 + y**2 + z**2),
+             "sqrt": sp.sqrt}
+    # Integer points where both radicands are squares: both radicals are rational there.
+    points = []
+    for px in range(-6, 7):
+        for py in range(1, 7):
+            for pz in range(-6, 7):
+                for pa in (-4, -3, -2, -1, 1, 2, 3, 4):
+                    r2, s2 = px * px + py * py + pz * pz, (px - pa) ** 2 + py * py + pz * pz
+                    if is_square(r2) and is_square(s2):
+                        points.append({"x": px, "y": py, "z": pz, "a": pa})
+    atoms = ["x", "y", "z", "p_x", "p_y", "p_z", "k", "a", "r", "s", "1/r", "1/s", "r^-3",
+             "r^2", "s^3", "(x - y + 2*p_z)^2", "(r - z)", "sqrt(x^2 + y^2 + z^2)",
+             "sqrt(4*(x - a)^2 + 4*y^2 + 4*z^2)", "(r*s + x)", "1/(r*s)", "1/(r + z)",
+             "(x^2 + y^2 + z^2)^(-3/2)", "1/(x^2 + y^2)"]
+    return System(
+        "radicals",
+        """name = "two radicals and a denominator"
+hamiltonian = "(p_x^2 + p_y^2 + p_z^2)/2 - k/r - k/s"
+[phase_space]
+coordinates = ["x", "y", "z"]
+parameters = ["k", "a"]
+radicals = { r = "x^2 + y^2 + z^2", s = "(x - a)^2 + y^2 + z^2" }
+denominators = ["x^2 + y^2"]
+""",
+        s, [("x", "p_x"), ("y", "p_y"), ("z", "p_z")], [], atoms, points, extra)
+
+
+def denominators_system(rng):
+    s = symbols("x y z p_x p_y p_z g")
+    points = []
+    while len(points) < 40:
+        p = {"x": Fraction(rng.randint(-9, 9), rng.randint(1, 4)),
+             "y": Fraction(rng.randint(-9, 9), rng.randint(1, 5)),
+             "z": Fraction(rng.randint(-9, 9), 3)}
+        if p["x"] != p["y"] and p["y"] + 2 * p["z"] != 0 and p["x"] != 0 and p["y"] != 0:
+            points.append(p)
+    atoms = ["x", "y", "z", "p_x", "p_y", "p_z", "g", "1/(x - y)", "1/(y - x)^2",
+             "1/(x - y)^3", "1/(x^2 + z^2 + 1)", "(x^2 + z^2 + 1)^-2", "1/((x - y)*(y + 2*z))",
+             "(2*y + 4*z)^-2", "(x + p_y)^2", "1/x", "y^-2", "(x - y)^2"]
+    return System(
+        "denominators",
+        """name = "declared denominators"
+hamiltonian = "(p_x^2 + p_y^2 + p_z^2)/2 + g/(x - y)^2 + g/(x^2 + z^2 + 1)"
+[phase_space]
+coordinates = ["x", "y", "z"]
+parameters = ["g"]
+denominators = ["x - y", "x^2 + z^2 + 1", "y + 2*z"]
+""",
+        s, [("x", "p_x"), ("y", "p_y"), ("z", "p_z")], [], atoms, points)
+
+
+CIRCLE = [(Fraction(3, 5), Fraction(4, 5)), (Fraction(-5, 13), Fraction(12, 13)),
+          (Fraction(8, 17), Fraction(-15, 17)), (Fraction(7, 25), Fraction(-24, 25))]
+
+
+def angles_system(rng):
+    s = symbols("x y theta phi p_x p_y p_theta p_phi M omega")
+    extra = {"i": sp.I, "I": sp.I, "cos": sp.cos, "sin": sp.sin, "exp": sp.exp,
+             "conj": sp.conjugate, "re": sp.re, "im": sp.im}
+    points = []
+    for _ in range(40):
+        (c1, s1), (c2, s2) = rng.choice(CIRCLE), rng.choice(CIRCLE)
+        points.append({"x": Fraction(rng.randint(-5, 5), 2), "y": Fraction(rng.randint(-5, 5), 3),
+                       "angles": (c1, s1, c2, s2)})
+    atoms = ["x", "y", "p_x", "p_y", "p_theta", "p_phi", "M", "omega", "i", "1/M",
+             "cos(theta)", "cos(2*theta)", "sin(theta - phi)", "sin(theta + 2*phi)",
+             "exp(i*theta)", "exp(-2*i*phi)", "exp(i*(theta - phi))", "(x + i*y)^2",
+             "cos(phi)^2", "conj(x + i*p_y)", "re(exp(i*theta))"]
+    return System(
+        "angles",
+        """name = "two angles"
+hamiltonian = "(p_x^2 + p_y^2)/(2*M) + M*omega^2*(x^2 + y^2)/2 + p_theta^2/2 + p_phi^2/2"
+[phase_space]
+coordinates = ["x", "y"]
+angles = ["theta", "phi"]
+parameters = ["M", "omega"]
+""",
+        s, [("x", "p_x"), ("y", "p_y"), ("theta", "p_theta"), ("phi", "p_phi")], [], atoms,
+        points, extra)
+
+
+def poisson_system():
+    s = symbols("x p_x M1 M2 M3 g1 g2 g3 I1 I2")
+    declared = []
+    for i, j, k in ((1, 2, 3), (2, 3, 1), (3, 1, 2)):
+        declared += [(f"M{i}", f"M{j}", f"M{k}"), (f"M{i}", f"g{j}", f"g{k}"),
+                     (f"g{i}", f"M{j}", f"g{k}")]
+    brackets = "\n".join(f'"{{{a}, {b}}}" = "{v}"' for a, b, v in declared)
+    atoms = ["x", "p_x", "M1", "M2", "M3", "g1", "g2", "g3", "I1", "(M1 - g2)^2", "1/x", "1/I2",
+             "x*M3"]
+    return System(
+        "poisson",
+        f"""name = "e(3) beside a canonical pair"
+hamiltonian = "M1^2/(2*I1) + M2^2/(2*I2) + M3^2/2 + x*p_x"
+[phase_space]
+coordinates = ["x"]
+variables = ["M1", "M2", "M3", "g1", "g2", "g3"]
+parameters = ["I1", "I2"]
+[poisson]
+{brackets}
+""",
+        s, [("x", "p_x")], declared, atoms, [{} for _ in range(10)])
+
+
+def is_square(n):
+    return n >= 0 and int(round(n ** 0.5)) ** 2 == n
+
+
+# ---------------------------------------------------------------------------------------------
+# Random expressions and exact evaluation.
+
+
+def random_rational(rng):
+    n = rng.choice([1, 1, 1, 2, 3, 5, 7, 12, -1, -2, -3])
+    d = rng.choice([1, 1, 1, 2, 3, 4])
+    return str(n) if d == 1 else f"{n}/{d}"
+
+
+def random_expression(rng, system):
+    terms = []
+    for _ in range(rng.randint(1, 4)):
+        factors = [random_rational(rng)] + [rng.choice(system.atoms)
+                                            for _ in range(rng.randint(0, 3))]
+        terms.append("*".join(f"({f})" for f in factors))
+    return " + ".join(terms)
+
+
+def value_at(expr, system, point):
+    """`expr` at `point`, exactly: the point's coordinates, a value for every other symbol
+    fixed by its name and the point (so that two expressions get the same values), and the
+    angles at the point's rational points of the circle."""
+    seed = repr(sorted((k, str(v)) for k, v in point.items()))
+    angles = point.get("angles")
+    theta, phi = system.locals.get("theta"), system.locals.get("phi")
+    subs = {}
+    for sym in expr.free_symbols:
+        name = str(sym)
+        if name in point:
+            subs[sym] = sp.Rational(point[name].numerator, point[name].denominator) \
+                if isinstance(point[name], Fraction) else sp.Integer(point[name])
+        elif sym not in (theta, phi):
+            r = random.Random(seed + name)
+            subs[sym] = sp.Rational(r.randint(-7, 7) or 1, r.randint(1, 4))
+    e = expr.subs(subs)
+    if angles is not None and e.free_symbols:
+        c1, s1, c2, s2 = (sp.Rational(v.numerator, v.denominator) for v in angles)
+        e = sp.expand_trig(sp.expand(e.rewrite(sp.cos)))
+        e = e.subs({sp.cos(theta): c1, sp.sin(theta): s1, sp.cos(phi): c2, sp.sin(phi): s2})
+    # A number now; a symbol left over makes the comparison fail, as it should.
+    return sp.expand(e)
+
+
+def superint_text(expr):
+    """SymPy's printing of an expression, in superint's language."""
+    text = sp.sstr(expr, order="none")
+    return re.sub(r"\bI\b", "i", text.replace("**", "^"))
+
+
+# ---------------------------------------------------------------------------------------------
+
+
+def run_superint(binary, args):
+    r = subprocess.run([binary] + args + ["--format", "json", "--no-timings"],
+                       capture_output=True, text=True, timeout=120)
+    if r.returncode == 0:
+        doc = json.loads(r.stdout)
+        return "ok", doc["equations"][0]["lines"][0]["ascii"]
+    if r.returncode == 2 and "panicked" not in r.stderr:
+        return "refused", r.stderr.strip().splitlines()[0] if r.stderr.strip() else ""
+    return "crashed", f"exit code {r.returncode}: {r.stderr.strip()[:400]}"
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    ap.add_argument("--cases", type=int, default=400)
+    ap.add_argument("--seed", type=int, default=1)
+    ap.add_argument("--superint", default=os.environ.get(
+        "SUPERINT_BIN", os.path.join(ROOT, "target", "release", "superint")))
+    ap.add_argument("--verbose", action="store_true")
+    args = ap.parse_args()
+    rng = random.Random(args.seed)
+    systems = [radicals_system(), denominators_system(rng), angles_system(rng), poisson_system()]
+    tmp = tempfile.mkdtemp(prefix="superint-crosscheck-")
+    for system in systems:
+        system.file = os.path.join(tmp, f"{system.name}.toml")
+        with open(system.file, "w") as f:
+            f.write(system.toml)
+
+    counts = {"compared": 0, "refused": 0, "failed": 0}
+    by_system = {s.name: 0 for s in systems}
+
+    def fail(case, why):
+        counts["failed"] += 1
+        print(f"FAILED ({case}): {why}")
+
+    for n in range(args.cases):
+        system = rng.choice(systems)
+        f_text, g_text = random_expression(rng, system), random_expression(rng, system)
+        op = rng.choice(["bracket", "bracket", "product", "power"])
+        if op == "bracket":
+            given = f"{{{f_text}, {g_text}}}"
+            status, out = run_superint(args.superint, ["bracket", system.file, f_text, g_text])
+        elif op == "product":
+            given = f"({f_text})*({g_text})"
+            status, out = run_superint(args.superint, ["expand", system.file, given])
+        else:
+            given = f"({f_text})^{rng.randint(2, 3)}"
+            status, out = run_superint(args.superint, ["expand", system.file, given])
+        case = f"case {n}, {system.name}: {given}"
+        if status == "crashed":
+            fail(case, out)
+            continue
+        if status == "refused":
+            counts["refused"] += 1
+            if args.verbose:
+                print(f"refused ({case}): {out}")
+            continue
+        ours = system.read(out)
+        f, g = system.read(f_text), system.read(g_text)
+        if op == "bracket":
+            theirs = system.bracket(f, g)
+        else:
+            theirs = system.read(given)
+        # 1. superint's printed result equals SymPy's at exact points.
+        points = rng.sample(system.points, min(3, len(system.points)))
+        for point in points:
+            a, b = value_at(ours, system, point), value_at(theirs, system, point)
+            if a != b:
+                fail(case, f"superint printed {out}\n  at {point}: {a}, SymPy {b}")
+                break
+        else:
+            # 2. SymPy's result, as text, is a zero difference for superint; 3. a wrong one is
+            # refuted.
+            reference = superint_text(theirs)
+            difference = f"{given} - ({reference})"
+            status, zero = run_superint(args.superint, ["expand", system.file, difference])
+            if status != "ok" or zero != "0":
+                fail(case, f"{given} − (SymPy's {reference}) is {zero} ({status}), not 0")
+                continue
+            wrong = f"{difference} + {rng.choice(['1/7', '2', '-3/2'])}*({rng.choice(system.atoms)})"
+            status, residual = run_superint(args.superint, ["expand", system.file, wrong])
+            if status != "ok" or residual == "0":
+                fail(case, f"a wrong result was not refuted: {wrong} gave {residual} ({status})")
+                continue
+            counts["compared"] += 1
+            by_system[system.name] += 1
+            if args.verbose:
+                print(f"agreed ({case})")
+    systems_line = ", ".join(f"{k} {v}" for k, v in by_system.items())
+    print(f"crosscheck against SymPy {sp.__version__}: {args.cases} cases (seed {args.seed}): "
+          f"{counts['compared']} agreed ({systems_line}), {counts['refused']} refused with a "
+          f"message, {counts['failed']} failed")
+    sys.exit(1 if counts["failed"] else 0)
+
+
+if __name__ == "__main__":
+    main()
