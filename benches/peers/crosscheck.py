@@ -4,11 +4,12 @@
 
 For each case the script draws two random expressions F and G in one of four small systems (two
 radicals; declared denominators; two angles with complex exponentials; Poisson variables of
-e(3)* beside a canonical pair), picks an operation ({F, G}, F·G or F^k), and asks superint for
-the result (`bracket` or `expand`, JSON output). SymPy computes the same result from the
-definitions: the bracket as the sum over the canonical pairs and the declared brackets of
-derivatives, with each radical as `sqrt(R)`, `cos`, `sin` and `exp(i nθ)` as SymPy's own
-functions. Then three things must hold:
+e(3)* beside a canonical pair), picks an operation ({F, G}, {F, G} at a condition such as
+`p_θ = 2Mω/3` (`--when`, the path of the brackets at a resonance), F·G or F^k), and asks
+superint for the result (`bracket` or `expand`, JSON output). SymPy computes the same result
+from the definitions: the bracket as the sum over the canonical pairs and the declared brackets
+of derivatives, with each radical as `sqrt(R)`, `cos`, `sin` and `exp(i nθ)` as SymPy's own
+functions, then the condition substituted. Then three things must hold:
 
 1. **The printed result is right.** superint's ASCII form, read back by SymPy, equals SymPy's
    result at exact points: rational points where every radicand is a square (so that every
@@ -46,7 +47,8 @@ ROOT = os.path.dirname(os.path.dirname(HERE))
 class System:
     """One system: its file text, SymPy symbols, canonical pairs, declared brackets, atoms."""
 
-    def __init__(self, name, toml, symbols, pairs, declared, atoms, points, extra_locals=None):
+    def __init__(self, name, toml, symbols, pairs, declared, atoms, points, conditions,
+                 extra_locals=None):
         self.name = name
         self.toml = toml
         self.locals = dict(symbols)
@@ -56,6 +58,9 @@ class System:
                          for a, b, v in declared]
         self.atoms = atoms
         self.points = points
+        # Substitutions after a bracket (`--when`): a single term (the fused path of the
+        # brackets at a resonance) or a sum.
+        self.conditions = conditions
         self.file = None
 
     def read(self, text):
@@ -104,7 +109,8 @@ parameters = ["k", "a"]
 radicals = { r = "x^2 + y^2 + z^2", s = "(x - a)^2 + y^2 + z^2" }
 denominators = ["x^2 + y^2"]
 """,
-        s, [("x", "p_x"), ("y", "p_y"), ("z", "p_z")], [], atoms, points, extra)
+        s, [("x", "p_x"), ("y", "p_y"), ("z", "p_z")], [], atoms, points,
+        [("p_z", "2*k"), ("p_x", "-p_y/3"), ("k", "p_y + 1"), ("p_y", "k*p_z")], extra)
 
 
 def denominators_system(rng):
@@ -128,7 +134,8 @@ coordinates = ["x", "y", "z"]
 parameters = ["g"]
 denominators = ["x - y", "x^2 + z^2 + 1", "y + 2*z"]
 """,
-        s, [("x", "p_x"), ("y", "p_y"), ("z", "p_z")], [], atoms, points)
+        s, [("x", "p_x"), ("y", "p_y"), ("z", "p_z")], [], atoms, points,
+        [("p_z", "3*g"), ("g", "p_x*p_y"), ("p_x", "p_y - 2"), ("p_y", "-1/2")])
 
 
 CIRCLE = [(Fraction(3, 5), Fraction(4, 5)), (Fraction(-5, 13), Fraction(12, 13)),
@@ -158,7 +165,8 @@ angles = ["theta", "phi"]
 parameters = ["M", "omega"]
 """,
         s, [("x", "p_x"), ("y", "p_y"), ("theta", "p_theta"), ("phi", "p_phi")], [], atoms,
-        points, extra)
+        points, [("p_theta", "2*M*omega/3"), ("p_phi", "p_theta - omega"), ("M", "omega^2"),
+                 ("p_x", "i*p_y")], extra)
 
 
 def poisson_system():
@@ -181,7 +189,8 @@ parameters = ["I1", "I2"]
 [poisson]
 {brackets}
 """,
-        s, [("x", "p_x")], declared, atoms, [{} for _ in range(10)])
+        s, [("x", "p_x")], declared, atoms, [{} for _ in range(10)],
+        [("p_x", "I1*M3"), ("I2", "I1 + 1"), ("M3", "2"), ("g3", "M1 - g1")])
 
 
 def is_square(n):
@@ -278,10 +287,15 @@ def main():
     for n in range(args.cases):
         system = rng.choice(systems)
         f_text, g_text = random_expression(rng, system), random_expression(rng, system)
-        op = rng.choice(["bracket", "bracket", "product", "power"])
-        if op == "bracket":
+        op = rng.choice(["bracket", "bracket", "bracket at a condition", "product", "power"])
+        when = []
+        if op.startswith("bracket"):
             given = f"{{{f_text}, {g_text}}}"
-            status, out = run_superint(args.superint, ["bracket", system.file, f_text, g_text])
+            if op == "bracket at a condition":
+                variable, value = rng.choice(system.conditions)
+                when = ["--when", f"{variable} = {value}"]
+            status, out = run_superint(args.superint,
+                                       ["bracket", system.file, f_text, g_text] + when)
         elif op == "product":
             given = f"({f_text})*({g_text})"
             status, out = run_superint(args.superint, ["expand", system.file, given])
@@ -299,8 +313,11 @@ def main():
             continue
         ours = system.read(out)
         f, g = system.read(f_text), system.read(g_text)
-        if op == "bracket":
+        if op.startswith("bracket"):
             theirs = system.bracket(f, g)
+            if when:
+                variable, value = when[1].split(" = ")
+                theirs = theirs.subs(system.read(variable), system.read(value))
         else:
             theirs = system.read(given)
         # 1. superint's printed result equals SymPy's at exact points.
@@ -315,12 +332,19 @@ def main():
             # refuted.
             reference = superint_text(theirs)
             difference = f"{given} - ({reference})"
-            status, zero = run_superint(args.superint, ["expand", system.file, difference])
+            status, zero = run_superint(args.superint,
+                                        ["expand", system.file, difference] + when)
             if status != "ok" or zero != "0":
                 fail(case, f"{given} − (SymPy's {reference}) is {zero} ({status}), not 0")
                 continue
-            wrong = f"{difference} + {rng.choice(['1/7', '2', '-3/2'])}*({rng.choice(system.atoms)})"
-            status, residual = run_superint(args.superint, ["expand", system.file, wrong])
+            # A wrong term of the system's atoms, or a constant where the condition cannot
+            # be substituted into that atom (`1/I2` at `I2 = I1 + 1`).
+            for extra in (f"({rng.choice(system.atoms)})", "1"):
+                wrong = f"{difference} + {rng.choice(['1/7', '2', '-3/2'])}*{extra}"
+                status, residual = run_superint(args.superint,
+                                                ["expand", system.file, wrong] + when)
+                if status != "refused":
+                    break
             if status != "ok" or residual == "0":
                 fail(case, f"a wrong result was not refuted: {wrong} gave {residual} ({status})")
                 continue
