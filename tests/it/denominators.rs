@@ -160,6 +160,42 @@ fn denominators_undeclared_division_names_the_fix() {
     assert!(holds(&file, "{x - y, H}", "p_x - p_y"));
 }
 
+/// A condition whose value a result takes to a negative power: refused with the declaration
+/// that makes it invertible, which then works.
+#[test]
+fn denominators_a_condition_divides_by_its_value_once_declared() {
+    let text = TWO_BODY.replace("[\"g\"]", "[\"g\", \"k\"]");
+    let f = scratch_text("denominators-condition", "two.toml", &text);
+    let f = f.to_str().unwrap();
+    // A positive power takes any value.
+    let o = superint(&["bracket", f, "p_x", "H", "--when", "g = k + 1"]);
+    let out = String::from_utf8(o.stdout).unwrap();
+    assert!(out.contains("{p_x, H} = 2(k + 1)/(x − y)³"), "{out}");
+    let o = superint(&["expand", f, "x/g", "--when", "g = k + 1"]);
+    let err = String::from_utf8(o.stderr).unwrap();
+    assert_eq!(o.status.code(), Some(2), "{err}");
+    assert!(
+        err.contains(
+            "cannot substitute k + 1 for g: it appears with exponent -1, and only single terms \
+             (monomials) and products of powers of declared denominators are invertible; \
+             declare it (or its factors) as a denominator: denominators = [\"k + 1\"] in \
+             [phase_space]"
+        ),
+        "{err}"
+    );
+    let told = text.replace("\"x^2 + y^2\"]", "\"x^2 + y^2\", \"k + 1\"]");
+    let f = scratch_text("denominators-condition", "told.toml", &told);
+    let o = superint(&["expand", f.to_str().unwrap(), "x/g", "--when", "g = k + 1"]);
+    let out = String::from_utf8(o.stdout).unwrap();
+    assert_eq!(
+        o.status.code(),
+        Some(0),
+        "{}",
+        String::from_utf8_lossy(&o.stderr)
+    );
+    assert!(out.contains("x/g = x/(k + 1)"), "{out}");
+}
+
 #[test]
 fn denominators_bracket_expand_and_rank_work_and_a_condition_on_a_denominator_is_refused() {
     let f = scratch_text("denominators-cli", "two.toml", TWO_BODY);

@@ -72,16 +72,9 @@ impl<C: Coefficient> Poly<C> {
                     continue;
                 }
                 if let std::collections::hash_map::Entry::Vacant(slot) = powers.entry((*v, e)) {
-                    let p = value_of(*v).checked_pow(e).map_err(|err| match err {
-                        AlgebraError::NegativePower { shown: s, .. } => {
-                            AlgebraError::Invalid(format!(
-                                "cannot substitute {s} for {}: it appears with exponent {e}, and \
-                             only a single term can be raised to a negative power",
-                                self.vars.variable(*v).unicode()
-                            ))
-                        }
-                        other => other,
-                    })?;
+                    let p = value_of(*v)
+                        .checked_pow(e)
+                        .map_err(|err| self.uninvertible_value(err, *v, e))?;
                     slot.insert(p);
                 }
                 part = part.checked_mul(&powers[&(*v, e)])?;
@@ -89,6 +82,20 @@ impl<C: Coefficient> Poly<C> {
             result = result.checked_add(&part)?;
         }
         Ok(result)
+    }
+
+    /// The refusal of a substituted value that `self` takes to the negative power `e` of `v`
+    /// and that is not invertible: the value, and what to declare to make it so.
+    fn uninvertible_value(&self, err: AlgebraError, v: Var, e: i64) -> AlgebraError {
+        match err {
+            AlgebraError::NegativePower { shown, declare } => AlgebraError::Invalid(format!(
+                "cannot substitute {shown} for {}: it appears with exponent {e}, and only single \
+                 terms (monomials) and products of powers of declared denominators are \
+                 invertible; {declare}",
+                self.vars.variable(v).unicode()
+            )),
+            other => other,
+        }
     }
 
     /// `self` with `v ↦ value`: the terms are grouped by their exponent `e` of `v`, each group
@@ -119,14 +126,9 @@ impl<C: Coefficient> Poly<C> {
         let mut result = Self::zero(&self.vars);
         for (e, (exps, coeffs)) in groups {
             let part = Self::from_sorted(&self.vars, self.content.clone(), exps, coeffs);
-            let power = value.checked_pow(e).map_err(|err| match err {
-                AlgebraError::NegativePower { shown: s, .. } => AlgebraError::Invalid(format!(
-                    "cannot substitute {s} for {}: it appears with exponent {e}, and only a \
-                     single term can be raised to a negative power",
-                    self.vars.variable(v).unicode()
-                )),
-                other => other,
-            })?;
+            let power = value
+                .checked_pow(e)
+                .map_err(|err| self.uninvertible_value(err, v, e))?;
             result = result.checked_add(&part.checked_mul(&power)?)?;
         }
         Ok(result)
