@@ -81,6 +81,35 @@ struct Lower<'a, C: Coefficient> {
     ctx: &'a dyn Context<C>,
 }
 
+/// A product of factors as written, each to its power: `(x + y)(x − 2y)³`, `g(x − y)²`, `−2x`.
+fn written_product<C: Coefficient>(factors: &[(Poly<C>, i64)], negative: bool) -> String {
+    let mut text = String::from(if negative { "−" } else { "" });
+    for (p, n) in factors {
+        let mut factor = match p.len() > 1 {
+            true => format!("({p})"),
+            false => p.to_string(),
+        };
+        if *n > 1 {
+            factor.push_str(&crate::superscript(*n));
+        }
+        // Side by side as the paper writes them: `2M`, `g(x − y)²`; two names apart, `g x`.
+        let number_before_name = text.ends_with(|c: char| c.is_ascii_digit())
+            && !factor.starts_with(|c: char| c.is_ascii_digit());
+        let joined = text.is_empty()
+            || text == "−"
+            || text.ends_with(')')
+            || factor.starts_with('(')
+            || number_before_name;
+        if text.ends_with(')') && factor.starts_with(|c: char| c.is_ascii_digit()) {
+            text.push('·');
+        } else if !joined {
+            text.push(' ');
+        }
+        text.push_str(&factor);
+    }
+    text
+}
+
 fn at(span: Span) -> impl Fn(AlgebraError) -> ParseError {
     move |e| ParseError::new(span, e.to_string())
 }
@@ -280,10 +309,10 @@ impl<C: Coefficient> Lower<'_, C> {
         Some((found, coefficient))
     }
 
-    /// A refused division by `divisor` (or negative power of it) with the advice to declare
-    /// its factors as written, `x − y` for `(x − y)²` and `x + y`, `x − 2y` for
-    /// `(x + y)(x − 2y)³`, rather than the expanded polynomial, when it is a product or power
-    /// of polynomials that are not invertible themselves.
+    /// A refused division by `divisor` (or negative power of it) shown and advised by its
+    /// factors as written when it is a product or power of polynomials that are not all
+    /// invertible: `cannot divide by (x − y)²` and the advice to declare `x − y`, `(x + y)(x −
+    /// 2y)³` and `x + y`, `x − 2y`, rather than the expanded polynomial.
     fn with_written_factors(
         &self,
         e: AlgebraError,
@@ -291,57 +320,84 @@ impl<C: Coefficient> Lower<'_, C> {
         value: &Poly<C>,
     ) -> AlgebraError {
         let mut factors = Vec::new();
-        if self.factors_to_declare(divisor, &mut factors).is_err()
-            || factors.is_empty()
-            || factors == [value.to_ascii()]
+        let mut negative = false;
+        if self
+            .written_factors(divisor, 1, &mut factors, &mut negative)
+            .is_err()
         {
             return e;
         }
-        let declare = Poly::<C>::factors_declaration(&factors);
+        let mut to_declare: Vec<String> = Vec::new();
+        for (p, _) in &factors {
+            match Poly::one(self.vars).checked_div(p) {
+                Ok(_) => {}
+                Err(AlgebraError::NotAMonomial { .. }) => match p.ascii_within(8, 80) {
+                    Some(text) if !to_declare.contains(&text) => to_declare.push(text),
+                    Some(_) => {}
+                    None => return e,
+                },
+                Err(_) => return e,
+            }
+        }
+        if to_declare.is_empty() || to_declare == [value.to_ascii()] {
+            return e;
+        }
+        let declare = Poly::<C>::factors_declaration(&to_declare);
+        let written = written_product(&factors, negative);
+        let shown = |shown: String| match written.chars().count() <= 80 {
+            true => written.clone(),
+            false => shown,
+        };
         match e {
-            AlgebraError::NotAMonomial { shown, .. } => {
-                AlgebraError::NotAMonomial { shown, declare }
-            }
-            AlgebraError::NegativePower { shown, .. } => {
-                AlgebraError::NegativePower { shown, declare }
-            }
+            AlgebraError::NotAMonomial { shown: s, .. } => AlgebraError::NotAMonomial {
+                shown: shown(s),
+                declare,
+            },
+            AlgebraError::NegativePower { shown: s, .. } => AlgebraError::NegativePower {
+                shown: shown(s),
+                declare,
+            },
             other => other,
         }
     }
 
-    /// The factors of `e` as written (through products, negations and positive powers) that
-    /// are polynomials of more than one term with no inverse, each as text to declare; `Err`
-    /// when one cannot be told (a factor that does not lower, or is refused for another
-    /// reason, or is too long to write out).
-    fn factors_to_declare(&self, e: &Expr, out: &mut Vec<String>) -> Result<(), ()> {
+    /// The factors of `e` as written, through products, negations (which flip `negative`) and
+    /// positive integer powers, each lowered, with the power it is taken to times `power`;
+    /// `Err` when a factor does not lower.
+    fn written_factors(
+        &self,
+        e: &Expr,
+        power: i64,
+        out: &mut Vec<(Poly<C>, i64)>,
+        negative: &mut bool,
+    ) -> Result<(), ()> {
         match &e.kind {
             ExprKind::Mul(a, b) => {
-                self.factors_to_declare(a, out)?;
-                self.factors_to_declare(b, out)
+                self.written_factors(a, power, out, negative)?;
+                self.written_factors(b, power, out, negative)
             }
-            ExprKind::Neg(a) => self.factors_to_declare(a, out),
+            ExprKind::Neg(a) => {
+                *negative ^= power % 2 == 1;
+                self.written_factors(a, power, out, negative)
+            }
             ExprKind::Pow(a, b)
                 // `M(x + y)²` and `Mω²` lower by their own rules: those are taken whole.
-                if !matches!(a.kind, ExprKind::Name(_) | ExprKind::Call(..))
-                    && self.integer_exponent(b).is_ok_and(|n| n > 0) =>
+                if !matches!(a.kind, ExprKind::Name(_) | ExprKind::Call(..)) =>
             {
-                self.factors_to_declare(a, out)
-            }
-            _ => {
-                let p: Poly<C> = self.lower(e).map_err(|_| ())?;
-                match Poly::one(self.vars).checked_div(&p) {
-                    Ok(_) => Ok(()),
-                    Err(AlgebraError::NotAMonomial { .. }) => {
-                        let text = p.ascii_within(8, 80).ok_or(())?;
-                        if !out.contains(&text) {
-                            out.push(text);
-                        }
-                        Ok(())
+                match self.integer_exponent(b) {
+                    Ok(n) if n > 0 => {
+                        self.written_factors(a, power.saturating_mul(n), out, negative)
                     }
-                    Err(_) => Err(()),
+                    _ => self.written_leaf(e, power, out),
                 }
             }
+            _ => self.written_leaf(e, power, out),
         }
+    }
+
+    fn written_leaf(&self, e: &Expr, power: i64, out: &mut Vec<(Poly<C>, i64)>) -> Result<(), ()> {
+        out.push((self.lower(e).map_err(|_| ())?, power));
+        Ok(())
     }
 
     fn integer_exponent(&self, e: &Expr) -> Result<i64, ParseError> {

@@ -33,10 +33,16 @@ fn subst_of_a_coordinate_by_a_sum_expands_the_binomial() {
         f.subst(x, &shifted),
         Ok(p(&vars, "x^3 + 3*x^2*y + 3*x*y^2 + y^3 - M*x - M*y"))
     );
-    // A negative power of a sum is not a Laurent polynomial.
+    // A negative power of a sum is not a Laurent polynomial: refused with what to declare.
     let g: G = p(&vars, "1/x");
+    let refused = "cannot substitute x + y for x: it appears with exponent -1, and only single \
+                   terms (monomials) and products of powers of declared denominators are \
+                   invertible; declare it (or its factors) as a denominator: denominators = \
+                   [\"x + y\"] in [phase_space]";
     assert!(
-        matches!(g.subst(x, &shifted), Err(AlgebraError::Invalid(m)) if m.contains("only a single term"))
+        matches!(g.subst(x, &shifted), Err(AlgebraError::Invalid(m)) if m == refused),
+        "{:?}",
+        g.subst(x, &shifted)
     );
     // A monomial may replace a variable that has negative powers.
     assert_eq!(
