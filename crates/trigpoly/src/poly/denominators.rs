@@ -209,6 +209,12 @@ impl<C: Coefficient> Poly<C> {
     /// assert_eq!(e("1/(x - y)^2 + 1/(x + y)^2").to_string(), "2(x² + y²)/((x − y)² (x + y)²)");
     /// // As written when that is shorter: over one denominator, three terms.
     /// assert_eq!(e("x/(x - y)^2 + 1/(x + y)").to_string(), "x/(x − y)² + 1/(x + y)");
+    /// // Over each atom's own denominator where that is shorter, or as long with fewer
+    /// // fractions (the whole over one would be longer).
+    /// assert_eq!(
+    ///     e("x/(x - y)^2 + 1/(x - y) + x/(x + y)^2 - 1/(x + y)").to_string(),
+    ///     "(2x − y)/(x − y)² − y/(x + y)²"
+    /// );
     /// ```
     pub fn over_common_denominators(&self) -> Result<Self, AlgebraError> {
         if !Self::has_relations(&self.vars) {
@@ -255,8 +261,10 @@ impl<C: Coefficient> Poly<C> {
     /// same powers of the atoms each over their common denominator, reduced, unless that is
     /// longer than they are as written (the printer writes them as one fraction either way:
     /// `98/(x (x − y)³) − 98/(y (x − y)³)` is `−98/(xy (x − y)²)`); then the terms that divide by
-    /// the same atoms, to any powers, likewise, where that is shorter
-    /// (`7x²/y² + 20y²/(x − y)² + 20y/(x − y)` is `7x²/y² + 20xy/(x − y)²`); or the whole group
+    /// the same atoms, to any powers, likewise, where that is shorter, or as long and written
+    /// over fewer denominators (`7x²/y² + 20y²/(x − y)² + 20y/(x − y)` is `7x²/y² + 20xy/(x −
+    /// y)²`, Calogero's `−2g(x + 2z)/(y − z)² − 2g/(y − z)` is `−2g(x + y + z)/(y − z)²`); or
+    /// the whole group
     /// over one (`4αy²/(x + y)² + 4αy²/(x − y)² − 4αy/(x + y) + 4αy/(x − y)` is
     /// `16αx²y²/((x − y)² (x + y)²)`).
     fn group_shown(
@@ -279,8 +287,14 @@ impl<C: Coefficient> Poly<C> {
         let by_powers = Self::parts_shown(vars, &group, powers, both, |c, p| {
             c.len() <= p.len() || depth(c) < depth(p)
         })?;
-        let by_atoms = Self::parts_shown(vars, &group, held, both, |c, p| c.len() < p.len())?;
-        let best = match by_atoms.len() < by_powers.len() {
+        // Combined where shorter, or as long and written with fewer fractions:
+        // `−2g(x + y + z)/(y − z)²`, not `−2g(x + 2z)/(y − z)² − 2g/(y − z)`.
+        let fractions = |p: &Self| p.denominators_written(atoms);
+        let fewer = |a: &Self, b: &Self| {
+            a.len() < b.len() || (a.len() == b.len() && fractions(a) < fractions(b))
+        };
+        let by_atoms = Self::parts_shown(vars, &group, held, both, fewer)?;
+        let best = match fewer(&by_atoms, &by_powers) {
             true => by_atoms,
             false => by_powers,
         };
@@ -292,6 +306,16 @@ impl<C: Coefficient> Poly<C> {
                 false => best,
             },
         )
+    }
+
+    /// How many denominators `self` is written over: its distinct powers of the atoms among
+    /// its terms (2 for `x/(x − y)² + 1/(x − y)`, 1 for `(2x − y)/(x − y)²`).
+    fn denominators_written(&self, atoms: &[Var]) -> usize {
+        let powers: std::collections::BTreeSet<Vec<i64>> = self
+            .terms()
+            .map(|t| atoms.iter().map(|&v| t.exponent(v).min(0)).collect())
+            .collect();
+        powers.len()
     }
 
     /// The most a term of `self` divides by the atoms, counted with multiplicity: 3 for
