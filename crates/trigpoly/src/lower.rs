@@ -92,19 +92,16 @@ fn written_product<C: Coefficient>(factors: &[(Poly<C>, i64)], negative: bool) -
         if *n > 1 {
             factor.push_str(&crate::superscript(*n));
         }
-        // Side by side as the paper writes them: `2M`, `g(x − y)²`; two names apart, `g x`.
-        let number_before_name = text.ends_with(|c: char| c.is_ascii_digit())
-            && !factor.starts_with(|c: char| c.is_ascii_digit());
-        let joined = text.is_empty()
-            || text == "−"
-            || text.ends_with(')')
-            || factor.starts_with('(')
-            || number_before_name;
-        if text.ends_with(')') && factor.starts_with(|c: char| c.is_ascii_digit()) {
-            text.push('·');
-        } else if !joined {
-            text.push(' ');
-        }
+        // Side by side as the paper writes them: `2M`, `g(x − y)²`, `(x + y)(x − y)`; a
+        // number after parentheses with a dot, `(x − y)·2`; two names apart, `g x`.
+        let separator = match (text.chars().last(), factor.chars().next()) {
+            (None | Some('−'), _) => "",
+            (Some(')'), Some(c)) if c.is_ascii_digit() => "·",
+            (Some(')'), _) | (_, Some('(')) => "",
+            (Some(a), Some(b)) if a.is_ascii_digit() && !b.is_ascii_digit() => "",
+            _ => " ",
+        };
+        text.push_str(separator);
         text.push_str(&factor);
     }
     text
