@@ -9,7 +9,7 @@ e(3)* beside a canonical pair), picks an operation ({F, G}, {F, G} at a conditio
 superint for the result (`bracket` or `expand`, JSON output). SymPy computes the same result
 from the definitions: the bracket as the sum over the canonical pairs and the declared brackets
 of derivatives, with each radical as `sqrt(R)`, `cos`, `sin` and `exp(i nθ)` as SymPy's own
-functions, then the condition substituted. Then three things must hold:
+functions, then the condition substituted. Then four things must hold:
 
 1. **The printed result is right.** superint's ASCII form, read back by SymPy, equals SymPy's
    result at exact points: rational points where every radicand is a square (so that every
@@ -19,6 +19,9 @@ functions, then the condition substituted. Then three things must hold:
    result as text)"` prints `0`: SymPy's form (its own radicals, unexpanded denominators,
    `cos(θ − φ)`) is read by superint and decided zero exactly.
 3. **A wrong result is refuted.** The same difference plus a small nonzero term is not `0`.
+4. **As a user states it.** A system file with F and G as its functions and the claims
+   `{F, G} = (SymPy's result)` and the wrong one (`expect = "refuted"`, at the condition where
+   there is one): `superint check` finds every claim as expected.
 
 A case that superint refuses with a message (exit code 2: dividing by a sum that is no declared
 denominator, say) is counted and skipped; any other exit code is a failure. The script prints a
@@ -300,7 +303,8 @@ def main():
             given = f"({f_text})*({g_text})"
             status, out = run_superint(args.superint, ["expand", system.file, given])
         else:
-            given = f"({f_text})^{rng.randint(2, 3)}"
+            power = rng.randint(2, 3)
+            given = f"({f_text})^{power}"
             status, out = run_superint(args.superint, ["expand", system.file, given])
         case = f"case {n}, {system.name}: {given}"
         if status == "crashed":
@@ -347,6 +351,25 @@ def main():
                     break
             if status != "ok" or residual == "0":
                 fail(case, f"a wrong result was not refuted: {wrong} gave {residual} ({status})")
+                continue
+            # 4. The same as a user states it: F and G as functions of the file, the right
+            # claim proved and the wrong one refuted, as expected.
+            named = {"bracket": "{F, G}", "bracket at a condition": "{F, G}",
+                     "product": "F*G", "power": f"F^{power}" if op == "power" else ""}[op]
+            condition = f'when = "{when[1]}"\n' if when else ""
+            claims = (f'{system.toml}\n[[function]]\nname = "F"\nvalue = "{f_text}"\n'
+                      f'[[function]]\nname = "G"\nvalue = "{g_text}"\n'
+                      f'[[claim]]\nid = "right"\nclaim = "{named} = {reference}"\n{condition}'
+                      f'[[claim]]\nid = "wrong"\nclaim = "{named} = {reference} + '
+                      f'{wrong[len(difference) + 3:]}"\n{condition}expect = "refuted"\n')
+            claims_file = os.path.join(tmp, "claims.toml")
+            with open(claims_file, "w") as f_out:
+                f_out.write(claims)
+            r = subprocess.run([args.superint, "check", claims_file, "--no-timings"],
+                               capture_output=True, text=True, timeout=120)
+            if r.returncode != 0 or "all as expected" not in r.stdout:
+                fail(case, f"the claims were not as expected (exit code {r.returncode}):\n"
+                           f"{claims}\n{r.stdout[-800:]}{r.stderr[:800]}")
                 continue
             counts["compared"] += 1
             by_system[system.name] += 1
