@@ -6,7 +6,8 @@ For each case the script draws two random expressions F and G in one of four sma
 radicals; declared denominators; two angles with complex exponentials; Poisson variables of
 e(3)* beside a canonical pair), picks an operation ({F, G}, {F, G} at a condition such as
 `p_θ = 2Mω/3` (`--when`, the path of the brackets at a resonance), F·G or F^k), and asks
-superint for the result (`bracket` or `expand`, JSON output). SymPy computes the same result
+superint for the result (`bracket` or `expand`, JSON output; or the rank of two to four of
+them and their products, whose certificate SymPy checks: below). SymPy computes the same result
 from the definitions: the bracket as the sum over the canonical pairs and the declared brackets
 of derivatives, with each radical as `sqrt(R)`, `cos`, `sin` and `exp(i nθ)` as SymPy's own
 functions, then the condition substituted. Then four things must hold:
@@ -22,6 +23,10 @@ functions, then the condition substituted. Then four things must hold:
 4. **As a user states it.** A system file with F and G as its functions and the claims
    `{F, G} = (SymPy's result)` and the wrong one (`expect = "refuted"`, at the condition where
    there is one): `superint check` finds every claim as expected.
+
+A rank (`superint rank`) is right when the certificate's minor, recomputed by SymPy at the
+certificate's point, is the nonzero value it states, and SymPy's rank of the Jacobian there and
+at two other exact points is at most the rank (and at the certificate's point, equal to it).
 
 A case that superint refuses with a message (exit code 2: dividing by a sum that is no declared
 denominator, say) is counted and skipped; any other exit code is a failure. The script prints a
@@ -253,6 +258,62 @@ def superint_text(expr):
 # ---------------------------------------------------------------------------------------------
 
 
+def phase_variables(system):
+    """The variables the rank's Jacobian takes: the canonical pairs, then the Poisson ones."""
+    return [q for q, _ in system.pairs] + [p for _, p in system.pairs] + \
+        [a for a in system.locals.values()
+         if isinstance(a, sp.Symbol) and str(a) in {"M1", "M2", "M3", "g1", "g2", "g3"}]
+
+
+def sympy_rank(functions, system, point):
+    """The rank of the Jacobian of `functions` at `point`, by SymPy: at most the generic rank,
+    and equal to it at a point off a proper subvariety."""
+    variables = phase_variables(system)
+    jacobian = sp.Matrix([[value_at(sp.diff(f, v), system, point) for v in variables]
+                          for f in functions])
+    return jacobian.rank()
+
+
+def rank_case(binary, system, texts, rng):
+    """`superint rank` of the functions `texts`: its certificate's minor recomputed by SymPy at
+    its point (the lower bound), and SymPy's rank at that point and two random ones no larger
+    (the upper bound). Returns (status, message)."""
+    r = subprocess.run([binary, "rank", system.file] + texts + ["--format", "json",
+                                                                 "--no-timings"],
+                       capture_output=True, text=True, timeout=120)
+    if r.returncode == 2 and "panicked" not in r.stderr:
+        return "refused", r.stderr.strip().splitlines()[0] if r.stderr.strip() else ""
+    if r.returncode != 0:
+        return "crashed", f"exit code {r.returncode}: {r.stderr.strip()[:400]}"
+    found = json.loads(r.stdout)["ranks"][0]
+    functions = [system.read(t) for t in texts]
+    point = {}
+    angles = {}
+    for entry in found["point"]:
+        if "cos" in entry:
+            angles[entry["variable"]] = (Fraction(entry["cos"]), Fraction(entry["sin"]))
+        else:
+            point[entry["variable"]] = Fraction(entry["value"])
+    if angles:
+        point["angles"] = angles["theta"] + angles["phi"]
+    rank = found["rank"]
+    if rank > 0:
+        minor = found["minor"]
+        rows = [functions[found["functions"].index(row)] for row in minor["rows"]]
+        columns = [system.locals[c] for c in minor["columns"]]
+        matrix = sp.Matrix([[value_at(sp.diff(f, v), system, point) for v in columns]
+                            for f in rows])
+        value = matrix.det()
+        if value == 0 or value != sp.sympify(minor["value"], locals={"i": sp.I}):
+            return "failed", (f"rank {rank}: the minor {minor} is {value} at the point by "
+                              f"SymPy")
+    ranks = [sympy_rank(functions, system, p)
+             for p in [point] + rng.sample(system.points, min(2, len(system.points)))]
+    if max(ranks) != rank:
+        return "failed", f"superint's rank {rank}, SymPy's at three points {ranks}"
+    return "ok", f"rank {rank}"
+
+
 def run_superint(binary, args):
     r = subprocess.run([binary] + args + ["--format", "json", "--no-timings"],
                        capture_output=True, text=True, timeout=120)
@@ -290,7 +351,25 @@ def main():
     for n in range(args.cases):
         system = rng.choice(systems)
         f_text, g_text = random_expression(rng, system), random_expression(rng, system)
-        op = rng.choice(["bracket", "bracket", "bracket at a condition", "product", "power"])
+        op = rng.choice(["bracket", "bracket", "bracket at a condition", "product", "power",
+                         "rank"])
+        if op == "rank":
+            # Two to four functions, some of them functions of the others.
+            texts = [f_text, g_text] + rng.sample(
+                [f"({f_text})*({g_text})", f"({f_text})^2 - 3*({g_text})",
+                 random_expression(rng, system)], rng.randint(0, 2))
+            status, message = rank_case(args.superint, system, texts, rng)
+            case = f"case {n}, {system.name}: the rank of {texts}"
+            if status == "ok":
+                counts["compared"] += 1
+                by_system[system.name] += 1
+            elif status == "refused":
+                counts["refused"] += 1
+            else:
+                fail(case, message)
+            if args.verbose:
+                print(f"{status} ({case}): {message}")
+            continue
         when = []
         if op.startswith("bracket"):
             given = f"{{{f_text}, {g_text}}}"

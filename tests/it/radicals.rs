@@ -204,6 +204,48 @@ fn radicals_rank_is_certified_where_the_radical_is_rational() {
     assert_eq!(rank(file.system().space(), &two).unwrap().rank, 2);
 }
 
+/// Two radicands that small integers rarely make squares together, `x² + y² + z²` and `(x −
+/// a)² + y² + z²` (the sample points once took a sequence of 72 tuples, none of them such a
+/// point, and the rank was refused): the certificate's point makes both exact, and the rank
+/// sees that `s² = r² − 2ax + a²` ties `x`, `r`, `s` while `y` is free of them.
+#[test]
+fn radicals_rank_finds_a_point_where_two_radicands_are_squares() {
+    let text = "name = \"two radicals\"\n\
+                hamiltonian = \"(p_x^2 + p_y^2 + p_z^2)/2 - k/r - k/s\"\n\
+                [phase_space]\n\
+                coordinates = [\"x\", \"y\", \"z\"]\n\
+                parameters = [\"k\", \"a\"]\n\
+                radicals = { r = \"x^2 + y^2 + z^2\", s = \"(x - a)^2 + y^2 + z^2\" }\n";
+    let file = load_str("two.toml", text, &LimitsOverride::default()).expect("the file loads");
+    let parse = |fs: &[&str]| -> Vec<Expr> { fs.iter().map(|f| file.parse(f).unwrap()).collect() };
+    let tied = rank(file.system().space(), &parse(&["x", "r", "s"])).unwrap();
+    assert_eq!(tied.rank, 2);
+    assert!(matches!(tied.upper, UpperBound::VanishingMinors { .. }));
+    let vars = file.system().vars();
+    let value = |name: &str| {
+        let v = vars.lookup(name).unwrap();
+        tied.point
+            .iter()
+            .find(|(w, _)| *w == v)
+            .unwrap()
+            .1
+            .re
+            .clone()
+    };
+    let (x, y, z, a) = (value("x"), value("y"), value("z"), value("a"));
+    let (r, s) = (value("r"), value("s"));
+    assert_eq!(&r * &r, &(&x * &x + &y * &y) + &z * &z);
+    let shifted = &x - &a;
+    assert_eq!(&s * &s, &(&shifted * &shifted + &y * &y) + &z * &z);
+    assert!(!r.is_negative() && !s.is_negative());
+    assert_eq!(
+        rank(file.system().space(), &parse(&["x", "y", "r", "s"]))
+            .unwrap()
+            .rank,
+        3
+    );
+}
+
 /// The closure of the seven integrals: so(4) with `{A_x, A_y} = −2 H L_z/M`, and at degree 3
 /// the two relations `A · L = 0` and `M|A|² = Mk² + 2H|L|²`.
 #[test]

@@ -233,8 +233,7 @@ fn on_radicals(
     for c in 0..RADICAL_CANDIDATES {
         let mut candidate = point.clone();
         for (k, &v) in used.iter().enumerate() {
-            let step = PRIMES[k % PRIMES.len()] as u64;
-            let t = ((c * step + 7 * k as u64 + c * c / 3) % 24) as i64 - 12;
+            let t = candidate_value(c, k as u64);
             candidate = candidate.with(v, Rational::from(if t >= 0 { t + 1 } else { t }));
         }
         let Some(candidate) = candidate.with_radicals(radicals)? else {
@@ -257,6 +256,24 @@ fn on_radicals(
         return Ok(Some(candidate));
     }
     Ok(None)
+}
+
+/// The value in `−12..12` of the `k`-th variable of the radicands in the `c`-th candidate of
+/// [`on_radicals`]: first a short sequence that repeats after 72 candidates (the points every
+/// certificate so far was found at), then a mix of `c` and `k` (SplitMix64's), so that the
+/// candidates past those cover the whole box: with radicands `x² + y² + z²` and `(x − a)² +
+/// y² + z²`, the short sequence alone had no point where both are squares.
+fn candidate_value(c: u64, k: u64) -> i64 {
+    const CYCLE: u64 = 72;
+    if c < CYCLE {
+        let step = PRIMES[k as usize % PRIMES.len()] as u64;
+        return ((c * step + 7 * k + c * c / 3) % 24) as i64 - 12;
+    }
+    let mut z = (c << 8 | k).wrapping_add(0x9e37_79b9_7f4a_7c15);
+    z = (z ^ (z >> 30)).wrapping_mul(0xbf58_476d_1ce4_e5b9);
+    z = (z ^ (z >> 27)).wrapping_mul(0x94d0_49bb_1331_11eb);
+    z ^= z >> 31;
+    (z % 24) as i64 - 12
 }
 
 /// The rank of the Jacobian at a point, with a nonzero minor of that size there.
