@@ -387,8 +387,14 @@ pub fn rank_report(
         names.push(name);
         exprs.push(value);
     }
-    let written: Vec<&str> = functions.iter().map(AsRef::as_ref).collect();
-    let source = file.given("<expression>", &written.join(" "));
+    let written = functions
+        .iter()
+        .map(AsRef::as_ref)
+        .collect::<Vec<&str>>()
+        .join(" ");
+    let source = file.given("<expression>", &written);
+    // A refusal (no sample point where the functions are defined, say) is about all of them:
+    // the caret underlines the whole list.
     let mut rank = file.rank_result(
         &source,
         "rank",
@@ -396,7 +402,7 @@ pub fn rank_report(
         &exprs,
         expected.unwrap_or(0),
         Expect::Proved,
-        0..0,
+        0..written.len(),
         start,
     )?;
     if expected.is_none() {

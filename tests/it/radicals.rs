@@ -244,6 +244,23 @@ fn radicals_rank_finds_a_point_where_two_radicands_are_squares() {
             .rank,
         3
     );
+    // A radicand that no integer point makes a square, x² + 2: refused, about all the
+    // functions given.
+    let never = scratch_text(
+        "radicals-rank",
+        "never.toml",
+        &text.replace("x^2 + y^2 + z^2\"", "x^2 + 2\""),
+    );
+    let o = superint(&["rank", never.to_str().unwrap(), "x", "r", "s"]);
+    let err = String::from_utf8(o.stderr).unwrap();
+    assert_eq!(o.status.code(), Some(2), "{err}");
+    assert!(
+        err.contains(
+            "no point of small integers makes every radicand the square of a rational, where \
+             the radicals have exact values\n 1 | x r s\n   | ^^^^^"
+        ),
+        "{err}"
+    );
 }
 
 /// The closure of the seven integrals: so(4) with `{A_x, A_y} = −2 H L_z/M`, and at degree 3
