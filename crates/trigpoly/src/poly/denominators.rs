@@ -264,9 +264,8 @@ impl<C: Coefficient> Poly<C> {
     /// the same atoms, to any powers, likewise, where that is shorter, or as long and written
     /// over fewer denominators (`7x²/y² + 20y²/(x − y)² + 20y/(x − y)` is `7x²/y² + 20xy/(x −
     /// y)²`, Calogero's `−2g(x + 2z)/(y − z)² − 2g/(y − z)` is `−2g(x + y + z)/(y − z)²`); or
-    /// the whole group
-    /// over one (`4αy²/(x + y)² + 4αy²/(x − y)² − 4αy/(x + y) + 4αy/(x − y)` is
-    /// `16αx²y²/((x − y)² (x + y)²)`).
+    /// the whole group over one (`4αy²/(x + y)² + 4αy²/(x − y)² − 4αy/(x + y) + 4αy/(x − y)`
+    /// is `16αx²y²/((x − y)² (x + y)²)`).
     fn group_shown(
         vars: &Vars,
         group: Vec<(C, Vec<i64>)>,
