@@ -35,6 +35,7 @@ into `.venv`: `benches/peers/crosscheck.sh` does that and builds superint first)
 """
 import argparse
 import json
+import math
 import os
 import random
 import re
@@ -202,7 +203,7 @@ parameters = ["I1", "I2"]
 
 
 def is_square(n):
-    return n >= 0 and int(round(n ** 0.5)) ** 2 == n
+    return n >= 0 and math.isqrt(n) ** 2 == n
 
 
 # ---------------------------------------------------------------------------------------------
