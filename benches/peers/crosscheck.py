@@ -28,6 +28,11 @@ A rank (`superint rank`) is right when the certificate's minor, recomputed by Sy
 certificate's point, is the nonzero value it states, and SymPy's rank of the Jacobian there and
 at two other exact points is at most the rank (and at the certificate's point, equal to it).
 
+A search (`superint search`) of a random potential `V(x, y)` (generic, separable, an oscillator
+in resonance or rotationally invariant) is complete when the dimension it reports is SymPy's:
+the polynomials of degree at most m in the momenta and n in the positions, less the rank of
+the linear map that takes their coefficients to those of `{F, H}`.
+
 A case that superint refuses with a message (exit code 2: dividing by a sum that is no declared
 denominator, say) is counted and skipped; any other exit code is a failure. The script prints a
 summary line and exits nonzero if any case failed. It needs only SymPy (`run.sh` installs it
@@ -315,6 +320,72 @@ def rank_case(binary, system, texts, rng):
     return "ok", f"rank {rank}"
 
 
+def random_potential(rng):
+    """A polynomial potential in x, y: generic, separable, an oscillator in resonance, or
+    rotationally invariant (the last three with integrals beside H)."""
+    c = lambda: random_rational(rng)
+    kind = rng.choice(["generic", "separable", "resonant", "central"])
+    if kind == "generic":
+        terms = [f"({c()})*x^{a}*y^{b}" for a in range(4) for b in range(4 - a)
+                 if a + b >= 2 and rng.random() < 0.4]
+        return " + ".join(terms or ["x^2*y"])
+    if kind == "separable":
+        return f"({c()})*x^2 + ({c()})*x^{rng.randint(3, 4)} + ({c()})*y^{rng.randint(2, 4)}"
+    if kind == "resonant":
+        k = rng.randint(1, 3)
+        return f"({c()})*(x^2 + {k * k}*y^2)"
+    return f"({c()})*(x^2 + y^2) + ({c()})*(x^2 + y^2)^2"
+
+
+def sympy_search_dimension(h, momenta_degree, positions_degree):
+    """The dimension of the integrals of `h` among the polynomials of degree at most
+    `momenta_degree` in p_x, p_y and `positions_degree` in x, y: the unknown coefficients less
+    the rank of the linear map to the coefficients of {F, H}."""
+    x, y, px, py = sp.symbols("x y p_x p_y", real=True)
+    def monomials(a, b, degree):
+        return [a**i * b**j for i in range(degree + 1) for j in range(degree + 1 - i)]
+    space = [m * q for m in monomials(px, py, momenta_degree)
+             for q in monomials(x, y, positions_degree)]
+    unknowns = sp.symbols(f"c0:{len(space)}")
+    f = sum(u * m for u, m in zip(unknowns, space))
+    image = sp.expand(sp.diff(f, x) * sp.diff(h, px) - sp.diff(f, px) * sp.diff(h, x)
+                      + sp.diff(f, y) * sp.diff(h, py) - sp.diff(f, py) * sp.diff(h, y))
+    if image == 0:
+        return len(space)
+    rows = [[sp.diff(coefficient, u) for u in unknowns]
+            for coefficient in sp.Poly(image, x, y, px, py).coeffs()]
+    return len(space) - sp.Matrix(rows).rank()
+
+
+def search_case(binary, tmp, rng):
+    """`superint search` of a random potential: the dimension it reports, against SymPy's
+    nullspace of {F, H} = 0 over the same space. Returns (status, message)."""
+    potential = random_potential(rng)
+    momenta_degree, positions_degree = rng.randint(1, 3), rng.randint(0, 3)
+    text = (f'name = "random potential"\nhamiltonian = "(p_x^2 + p_y^2)/2 + {potential}"\n'
+            f'[phase_space]\ncoordinates = ["x", "y"]\n')
+    file = os.path.join(tmp, "potential.toml")
+    with open(file, "w") as out:
+        out.write(text)
+    r = subprocess.run([binary, "search", file, "--momenta-degree", str(momenta_degree),
+                        "--positions-degree", str(positions_degree), "--format", "json",
+                        "--no-timings"], capture_output=True, text=True, timeout=300)
+    if r.returncode == 2 and "panicked" not in r.stderr:
+        return "refused", r.stderr.strip().splitlines()[0] if r.stderr.strip() else ""
+    if r.returncode != 0:
+        return "crashed", f"exit code {r.returncode}: {r.stderr.strip()[:400]}"
+    found = json.loads(r.stdout)["searches"][0]["dimension"]
+    x, y, px, py = sp.symbols("x y p_x p_y", real=True)
+    h = sp.sympify(f"(p_x**2 + p_y**2)/2 + {potential.replace('^', '**')}",
+                   locals={"x": x, "y": y, "p_x": px, "p_y": py})
+    expected = sympy_search_dimension(h, momenta_degree, positions_degree)
+    if found != expected:
+        return "failed", (f"V = {potential}, momenta degree {momenta_degree}, positions degree "
+                          f"{positions_degree}: superint found {found} integrals, SymPy "
+                          f"{expected}")
+    return "ok", f"V = {potential}: {found} integrals"
+
+
 def run_superint(binary, args):
     r = subprocess.run([binary] + args + ["--format", "json", "--no-timings"],
                        capture_output=True, text=True, timeout=120)
@@ -342,7 +413,7 @@ def main():
         with open(system.file, "w") as f:
             f.write(system.toml)
 
-    counts = {"compared": 0, "refused": 0, "failed": 0}
+    counts = {"compared": 0, "refused": 0, "failed": 0, "searches": 0}
     by_system = {s.name: 0 for s in systems}
 
     def fail(case, why):
@@ -353,7 +424,20 @@ def main():
         system = rng.choice(systems)
         f_text, g_text = random_expression(rng, system), random_expression(rng, system)
         op = rng.choice(["bracket", "bracket", "bracket at a condition", "product", "power",
-                         "rank"])
+                         "rank", "search"])
+        if op == "search":
+            status, message = search_case(args.superint, tmp, rng)
+            case = f"case {n}: a search"
+            if status == "ok":
+                counts["compared"] += 1
+                counts["searches"] += 1
+            elif status == "refused":
+                counts["refused"] += 1
+            else:
+                fail(case, message)
+            if args.verbose:
+                print(f"{status} ({case}): {message}")
+            continue
         if op == "rank":
             # Two to four functions, some of them functions of the others.
             texts = [f_text, g_text] + rng.sample(
@@ -456,6 +540,7 @@ def main():
             if args.verbose:
                 print(f"agreed ({case})")
     systems_line = ", ".join(f"{k} {v}" for k, v in by_system.items())
+    systems_line += f", searches of random potentials {counts['searches']}"
     print(f"crosscheck against SymPy {sp.__version__}: {args.cases} cases (seed {args.seed}): "
           f"{counts['compared']} agreed ({systems_line}), {counts['refused']} refused with a "
           f"message, {counts['failed']} failed")
