@@ -207,7 +207,9 @@ fn radicals_rank_is_certified_where_the_radical_is_rational() {
 /// Two radicands that small integers rarely make squares together, `x² + y² + z²` and `(x −
 /// a)² + y² + z²` (the sample points once took a sequence of 72 tuples, none of them such a
 /// point, and the rank was refused): the certificate's point makes both exact, and the rank
-/// sees that `s² = r² − 2ax + a²` ties `x`, `r`, `s` while `y` is free of them.
+/// sees that `s² = r² − 2ax + a²` ties `x`, `r`, `s` while `y` is free of them. A radicand
+/// that only fractions make squares is taken at one; one that nothing makes a square is
+/// refused.
 #[test]
 fn radicals_rank_finds_a_point_where_two_radicands_are_squares() {
     let text = "name = \"two radicals\"\n\
@@ -244,20 +246,38 @@ fn radicals_rank_finds_a_point_where_two_radicands_are_squares() {
             .rank,
         3
     );
-    // A radicand that no integer point makes a square, x² + 2: refused, about all the
-    // functions given.
+    // A radicand that no integer makes a square, x² + 2, is one at x = 1/2 (9/4).
+    let half = scratch_text(
+        "radicals-rank",
+        "half.toml",
+        &text.replace("x^2 + y^2 + z^2\"", "x^2 + 2\""),
+    );
+    let o = superint(&["rank", half.to_str().unwrap(), "x", "y", "r"]);
+    let out = String::from_utf8(o.stdout).unwrap();
+    assert_eq!(
+        o.status.code(),
+        Some(0),
+        "{}",
+        String::from_utf8_lossy(&o.stderr)
+    );
+    assert!(
+        out.contains("rank ∂(x, y, r)/∂(x, y, z, p_x, p_y, p_z) = 2") && out.contains("r = 3/2"),
+        "{out}"
+    );
+    // One that no rational makes a square (3x² + 2 = y² has no rational solution, as 2 is no
+    // square modulo 3): refused, about all the functions given.
     let never = scratch_text(
         "radicals-rank",
         "never.toml",
-        &text.replace("x^2 + y^2 + z^2\"", "x^2 + 2\""),
+        &text.replace("x^2 + y^2 + z^2\"", "3*x^2 + 2\""),
     );
     let o = superint(&["rank", never.to_str().unwrap(), "x", "r", "s"]);
     let err = String::from_utf8(o.stderr).unwrap();
     assert_eq!(o.status.code(), Some(2), "{err}");
     assert!(
         err.contains(
-            "no point of small integers makes every radicand the square of a rational, where \
-             the radicals have exact values\n 1 | x r s\n   | ^^^^^"
+            "no point of small integers or fractions of them makes every radicand the square \
+             of a rational, where the radicals have exact values\n 1 | x r s\n   | ^^^^^"
         ),
         "{err}"
     );

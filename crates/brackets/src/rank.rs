@@ -114,8 +114,8 @@ pub fn rank(space: &PhaseSpace, functions: &[Expr]) -> Result<RankCertificate, E
             match space.radicals().is_empty() {
                 true => "",
                 false =>
-                    ", or no point of small integers makes every radicand the square of \
-                          a rational, where the radicals have exact values",
+                    ", or no point of small integers or fractions of them makes every \
+                          radicand the square of a rational, where the radicals have exact values",
             }
         ))
     })?;
@@ -233,8 +233,7 @@ fn on_radicals(
     for c in 0..RADICAL_CANDIDATES {
         let mut candidate = point.clone();
         for (k, &v) in used.iter().enumerate() {
-            let t = candidate_value(c, k as u64);
-            candidate = candidate.with(v, Rational::from(if t >= 0 { t + 1 } else { t }));
+            candidate = candidate.with(v, candidate_value(c, k as u64));
         }
         let Some(candidate) = candidate.with_radicals(radicals)? else {
             continue;
@@ -258,22 +257,31 @@ fn on_radicals(
     Ok(None)
 }
 
-/// The value in `−12..12` of the `k`-th variable of the radicands in the `c`-th candidate of
-/// [`on_radicals`]: first a short sequence that repeats after 72 candidates (the points every
-/// certificate so far was found at), then a mix of `c` and `k` (SplitMix64's), so that the
-/// candidates past those cover the whole box: with radicands `x² + y² + z²` and `(x − a)² +
-/// y² + z²`, the short sequence alone had no point where both are squares.
-fn candidate_value(c: u64, k: u64) -> i64 {
+/// The value of the `k`-th variable of the radicands in the `c`-th candidate of
+/// [`on_radicals`], a nonzero integer in `−12..=12` or, past the first 1 000 candidates, a
+/// nonzero fraction of such an integer by 2, 3 or 4: first a short sequence that repeats after
+/// 72 candidates (the points every certificate so far was found at), then a mix of `c` and `k`
+/// (SplitMix64's), so that the candidates past those cover the whole box. With radicands
+/// `x² + y² + z²` and `(x − a)² + y² + z²` the short sequence alone had no point where both
+/// are squares; `x² + 2` is the square of no integer, but is `9/4` at `x = 1/2`.
+fn candidate_value(c: u64, k: u64) -> Rational {
     const CYCLE: u64 = 72;
+    const INTEGERS: u64 = 1_000;
+    let nonzero = |t: i64| if t >= 0 { t + 1 } else { t };
     if c < CYCLE {
         let step = PRIMES[k as usize % PRIMES.len()] as u64;
-        return ((c * step + 7 * k + c * c / 3) % 24) as i64 - 12;
+        return Rational::from(nonzero(((c * step + 7 * k + c * c / 3) % 24) as i64 - 12));
     }
     let mut z = (c << 8 | k).wrapping_add(0x9e37_79b9_7f4a_7c15);
     z = (z ^ (z >> 30)).wrapping_mul(0xbf58_476d_1ce4_e5b9);
     z = (z ^ (z >> 27)).wrapping_mul(0x94d0_49bb_1331_11eb);
     z ^= z >> 31;
-    (z % 24) as i64 - 12
+    let numerator = nonzero((z % 24) as i64 - 12);
+    let denominator = match c < INTEGERS {
+        true => 1,
+        false => 1 + ((z >> 32) % 4) as i64,
+    };
+    Rational::new(numerator, denominator)
 }
 
 /// The rank of the Jacobian at a point, with a nonzero minor of that size there.
