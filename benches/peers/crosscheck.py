@@ -413,12 +413,25 @@ def main():
         with open(system.file, "w") as f:
             f.write(system.toml)
 
-    counts = {"compared": 0, "refused": 0, "failed": 0, "searches": 0}
-    by_system = {s.name: 0 for s in systems}
+    counts = {"compared": 0, "refused": 0, "failed": 0}
+    by_kind = {s.name: 0 for s in systems}
+    by_kind["searches"] = 0
 
     def fail(case, why):
         counts["failed"] += 1
         print(f"FAILED ({case}): {why}")
+
+    def tally(status, message, case, kind):
+        """Counts a rank's or a search's outcome, `kind` the system's name or `searches`."""
+        if status == "ok":
+            counts["compared"] += 1
+            by_kind[kind] += 1
+        elif status == "refused":
+            counts["refused"] += 1
+        else:
+            fail(case, message)
+        if args.verbose:
+            print(f"{status} ({case}): {message}")
 
     for n in range(args.cases):
         system = rng.choice(systems)
@@ -427,16 +440,7 @@ def main():
                          "rank", "search"])
         if op == "search":
             status, message = search_case(args.superint, tmp, rng)
-            case = f"case {n}: a search"
-            if status == "ok":
-                counts["compared"] += 1
-                counts["searches"] += 1
-            elif status == "refused":
-                counts["refused"] += 1
-            else:
-                fail(case, message)
-            if args.verbose:
-                print(f"{status} ({case}): {message}")
+            tally(status, message, f"case {n}: a search", "searches")
             continue
         if op == "rank":
             # Two to four functions, some of them functions of the others.
@@ -444,16 +448,7 @@ def main():
                 [f"({f_text})*({g_text})", f"({f_text})^2 - 3*({g_text})",
                  random_expression(rng, system)], rng.randint(0, 2))
             status, message = rank_case(args.superint, system, texts, rng)
-            case = f"case {n}, {system.name}: the rank of {texts}"
-            if status == "ok":
-                counts["compared"] += 1
-                by_system[system.name] += 1
-            elif status == "refused":
-                counts["refused"] += 1
-            else:
-                fail(case, message)
-            if args.verbose:
-                print(f"{status} ({case}): {message}")
+            tally(status, message, f"case {n}, {system.name}: the rank of {texts}", system.name)
             continue
         when = []
         if op.startswith("bracket"):
@@ -536,11 +531,11 @@ def main():
                            f"{claims}\n{r.stdout[-800:]}{r.stderr[:800]}")
                 continue
             counts["compared"] += 1
-            by_system[system.name] += 1
+            by_kind[system.name] += 1
             if args.verbose:
                 print(f"agreed ({case})")
-    systems_line = ", ".join(f"{k} {v}" for k, v in by_system.items())
-    systems_line += f", searches of random potentials {counts['searches']}"
+    systems_line = ", ".join(f"{k} {v}" if k != "searches" else f"searches of random "
+                             f"potentials {v}" for k, v in by_kind.items())
     print(f"crosscheck against SymPy {sp.__version__}: {args.cases} cases (seed {args.seed}): "
           f"{counts['compared']} agreed ({systems_line}), {counts['refused']} refused with a "
           f"message, {counts['failed']} failed")

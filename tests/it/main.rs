@@ -98,15 +98,29 @@ pub fn superint(args: &[&str]) -> std::process::Output {
 /// Runs the superint binary with `args` and `--format json`, which must succeed, and reads
 /// its output.
 pub fn superint_json(args: &[&str]) -> serde_json::Value {
-    let args = [args, &["--format", "json"]].concat();
-    let o = superint(&args);
+    serde_json::from_str(&superint_ok(&[args, &["--format", "json"]].concat())).expect("JSON")
+}
+
+/// Runs the superint binary with `args`, which must succeed (exit code 0), and returns what
+/// it printed.
+pub fn superint_ok(args: &[&str]) -> String {
+    let o = superint(args);
     assert_eq!(
         o.status.code(),
         Some(0),
-        "{}",
+        "{args:?}: {}",
         String::from_utf8_lossy(&o.stderr)
     );
-    serde_json::from_slice(&o.stdout).expect("JSON")
+    String::from_utf8(o.stdout).expect("UTF-8")
+}
+
+/// Runs the superint binary with `args`, which must be refused as bad input (exit code 2),
+/// and returns its message.
+pub fn superint_refused(args: &[&str]) -> String {
+    let o = superint(args);
+    let err = String::from_utf8(o.stderr).expect("UTF-8");
+    assert_eq!(o.status.code(), Some(2), "{args:?}: {err}");
+    err
 }
 
 /// Runs the superint binary with `args` in `dir` (where a file named by a bare name, as a

@@ -7,7 +7,9 @@
 use superint::prelude::*;
 use superint::system_file::{load, load_str, LimitsOverride, LoadedSystem};
 
-use crate::{holds, scratch_text, superint, superint_in, superint_json};
+use crate::{
+    holds, scratch_text, superint, superint_in, superint_json, superint_ok, superint_refused,
+};
 
 const PLANAR: &str = "name = \"planar Kepler\"\n\
                       hamiltonian = \"(p_x^2 + p_y^2)/2 - k/r\"\n\
@@ -252,14 +254,7 @@ fn radicals_rank_finds_a_point_where_two_radicands_are_squares() {
         "half.toml",
         &text.replace("x^2 + y^2 + z^2\"", "x^2 + 2\""),
     );
-    let o = superint(&["rank", half.to_str().unwrap(), "x", "y", "r"]);
-    let out = String::from_utf8(o.stdout).unwrap();
-    assert_eq!(
-        o.status.code(),
-        Some(0),
-        "{}",
-        String::from_utf8_lossy(&o.stderr)
-    );
+    let out = superint_ok(&["rank", half.to_str().unwrap(), "x", "y", "r"]);
     assert!(
         out.contains("rank ∂(x, y, r)/∂(x, y, z, p_x, p_y, p_z) = 2") && out.contains("r = 3/2"),
         "{out}"
@@ -271,9 +266,7 @@ fn radicals_rank_finds_a_point_where_two_radicands_are_squares() {
         "never.toml",
         &text.replace("x^2 + y^2 + z^2\"", "3*x^2 + 2\""),
     );
-    let o = superint(&["rank", never.to_str().unwrap(), "x", "r", "s"]);
-    let err = String::from_utf8(o.stderr).unwrap();
-    assert_eq!(o.status.code(), Some(2), "{err}");
+    let err = superint_refused(&["rank", never.to_str().unwrap(), "x", "r", "s"]);
     assert!(
         err.contains(
             "no point of small integers or fractions of them makes every radicand the square \
