@@ -10,7 +10,7 @@ use std::process::{Command, Output};
 use pretty_assertions::assert_eq;
 use serde_json::Value;
 
-use crate::superint;
+use crate::{superint, superint_exits};
 
 fn stdout(o: &Output) -> String {
     String::from_utf8(o.stdout.clone()).expect("stdout is UTF-8")
@@ -23,14 +23,7 @@ fn stderr(o: &Output) -> String {
 /// Runs the binary and expects exit code `code`; returns stdout.
 #[track_caller]
 fn run(args: &[&str], code: i32) -> String {
-    let o = superint(args);
-    assert_eq!(
-        o.status.code(),
-        Some(code),
-        "superint {args:?}\nstderr: {}",
-        stderr(&o)
-    );
-    stdout(&o)
+    stdout(&superint_exits(args, code))
 }
 
 fn snapshot_path(name: &str) -> PathBuf {

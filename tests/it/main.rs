@@ -101,26 +101,32 @@ pub fn superint_json(args: &[&str]) -> serde_json::Value {
     serde_json::from_str(&superint_ok(&[args, &["--format", "json"]].concat())).expect("JSON")
 }
 
-/// Runs the superint binary with `args`, which must succeed (exit code 0), and returns what
-/// it printed.
-pub fn superint_ok(args: &[&str]) -> String {
+/// Runs the superint binary with `args`, which must exit with `code` (its standard error
+/// shown when it does not), and returns what it wrote.
+#[track_caller]
+pub fn superint_exits(args: &[&str], code: i32) -> std::process::Output {
     let o = superint(args);
     assert_eq!(
         o.status.code(),
-        Some(0),
-        "{args:?}: {}",
+        Some(code),
+        "superint {args:?}\nstderr: {}",
         String::from_utf8_lossy(&o.stderr)
     );
-    String::from_utf8(o.stdout).expect("UTF-8")
+    o
+}
+
+/// Runs the superint binary with `args`, which must succeed (exit code 0), and returns what
+/// it printed.
+#[track_caller]
+pub fn superint_ok(args: &[&str]) -> String {
+    String::from_utf8(superint_exits(args, 0).stdout).expect("UTF-8")
 }
 
 /// Runs the superint binary with `args`, which must be refused as bad input (exit code 2),
 /// and returns its message.
+#[track_caller]
 pub fn superint_refused(args: &[&str]) -> String {
-    let o = superint(args);
-    let err = String::from_utf8(o.stderr).expect("UTF-8");
-    assert_eq!(o.status.code(), Some(2), "{args:?}: {err}");
-    err
+    String::from_utf8(superint_exits(args, 2).stderr).expect("UTF-8")
 }
 
 /// Runs the superint binary with `args` in `dir` (where a file named by a bare name, as a
