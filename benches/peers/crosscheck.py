@@ -51,6 +51,8 @@ from fractions import Fraction
 
 import sympy as sp
 
+from search_dimensions import integrals_dimension
+
 HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.dirname(os.path.dirname(HERE))
 
@@ -339,22 +341,16 @@ def random_potential(rng):
 
 def sympy_search_dimension(h, momenta_degree, positions_degree):
     """The dimension of the integrals of `h` among the polynomials of degree at most
-    `momenta_degree` in p_x, p_y and `positions_degree` in x, y: the unknown coefficients less
-    the rank of the linear map to the coefficients of {F, H}."""
+    `momenta_degree` in p_x, p_y and `positions_degree` in x, y, by SymPy alone."""
     x, y, px, py = sp.symbols("x y p_x p_y", real=True)
     def monomials(a, b, degree):
         return [a**i * b**j for i in range(degree + 1) for j in range(degree + 1 - i)]
     space = [m * q for m in monomials(px, py, momenta_degree)
              for q in monomials(x, y, positions_degree)]
-    unknowns = sp.symbols(f"c0:{len(space)}")
-    f = sum(u * m for u, m in zip(unknowns, space))
-    image = sp.expand(sp.diff(f, x) * sp.diff(h, px) - sp.diff(f, px) * sp.diff(h, x)
-                      + sp.diff(f, y) * sp.diff(h, py) - sp.diff(f, py) * sp.diff(h, y))
-    if image == 0:
-        return len(space)
-    rows = [[sp.diff(coefficient, u) for u in unknowns]
-            for coefficient in sp.Poly(image, x, y, px, py).coeffs()]
-    return len(space) - sp.Matrix(rows).rank()
+    def flow(f):
+        return (sp.diff(f, x) * sp.diff(h, px) - sp.diff(f, px) * sp.diff(h, x)
+                + sp.diff(f, y) * sp.diff(h, py) - sp.diff(f, py) * sp.diff(h, y))
+    return integrals_dimension(space, flow, [x, y, px, py])
 
 
 def search_case(binary, tmp, rng):

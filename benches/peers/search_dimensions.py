@@ -28,29 +28,41 @@ def antisymmetric(pairs):
     return table
 
 
+def integrals_dimension(space, flow, variables):
+    """The dimension of the combinations F of the functions `space` with flow(F) = {F, H} = 0:
+    how many they are, less the rank of the linear map from their coefficients to those of
+    flow(F), a polynomial in `variables`. Also used by crosscheck.py."""
+    unknowns = sp.symbols(f"a0:{len(space)}")
+    f = sum(a * m for a, m in zip(unknowns, space))
+    image = sp.Poly(sp.expand(flow(f)), *variables)
+    rows = [[sp.diff(c, a) for a in unknowns] for c in image.coeffs()]
+    return len(space) - sp.Matrix(rows).rank()
+
+
 def dimension(variables, table, h, degree):
     """The dimension of the integrals of degree <= degree."""
     monomials = [sp.Mul(*[v**e for v, e in zip(variables, exponents)])
                  for exponents in itertools.product(range(degree + 1), repeat=len(variables))
                  if sum(exponents) <= degree]
-    unknowns = sp.symbols(f"a0:{len(monomials)}")
-    f = sum(a * m for a, m in zip(unknowns, monomials))
-    image = sp.Poly(bracket(f, h, variables, table), *variables)
-    rows = [[sp.diff(c, a) for a in unknowns] for c in image.coeffs()]
-    return len(monomials) - sp.Matrix(rows).rank()
+    return integrals_dimension(monomials, lambda f: bracket(f, h, variables, table), variables)
 
 
-M1, M2, M3, g1, g2, g3 = sp.symbols("M1 M2 M3 gamma1 gamma2 gamma3")
-so3 = {(M1, M2): M3, (M2, M3): M1, (M3, M1): M2}
-e3 = dict(so3)
-e3.update({(M1, g2): g3, (M1, g3): -g2, (M2, g3): g1, (M2, g1): -g3,
-           (M3, g1): g2, (M3, g2): -g1})
+def main():
+    M1, M2, M3, g1, g2, g3 = sp.symbols("M1 M2 M3 gamma1 gamma2 gamma3")
+    so3 = {(M1, M2): M3, (M2, M3): M1, (M3, M1): M2}
+    e3 = dict(so3)
+    e3.update({(M1, g2): g3, (M1, g3): -g2, (M2, g3): g1, (M2, g1): -g3,
+               (M3, g1): g2, (M3, g2): -g1})
 
-euler = M1**2 / 2 + M2**2 / 4 + M3**2 / 6
-for d in (2, 3, 4):
-    print(f"Euler top, I = (1, 2, 3), degree <= {d}:",
-          dimension([M1, M2, M3], antisymmetric(so3), euler, d))
-for i3 in (sp.Rational(1, 2), sp.Rational(1, 3)):
-    heavy = (M1**2 + M2**2) / 2 + M3**2 / (2 * i3) - g1
-    print(f"heavy top, I3 = {i3}, c = 1, degree <= 4:",
-          dimension([M1, M2, M3, g1, g2, g3], antisymmetric(e3), heavy, 4), flush=True)
+    euler = M1**2 / 2 + M2**2 / 4 + M3**2 / 6
+    for d in (2, 3, 4):
+        print(f"Euler top, I = (1, 2, 3), degree <= {d}:",
+              dimension([M1, M2, M3], antisymmetric(so3), euler, d))
+    for i3 in (sp.Rational(1, 2), sp.Rational(1, 3)):
+        heavy = (M1**2 + M2**2) / 2 + M3**2 / (2 * i3) - g1
+        print(f"heavy top, I3 = {i3}, c = 1, degree <= 4:",
+              dimension([M1, M2, M3, g1, g2, g3], antisymmetric(e3), heavy, 4), flush=True)
+
+
+if __name__ == "__main__":
+    main()
