@@ -28,6 +28,13 @@ A rank (`superint rank`) is right when the certificate's minor, recomputed by Sy
 certificate's point, is the nonzero value it states, and SymPy's rank of the Jacobian there and
 at two other exact points is at most the rank (and at the certificate's point, equal to it).
 
+A closure (`superint closure`) of two to five random generators in the plane (quadratic forms
+mostly, or combinations of u(2)'s) is right when every bracket its table writes as a polynomial
+in the generators expands to the bracket SymPy computes, every bracket it marks `*` is outside
+the span of the monomials in the generators up to the degree (SymPy's rank), and the relations
+it prints vanish and, with their multiples up to the degree, span the nullspace of those
+monomials' expansions (SymPy's dimension).
+
 A search (`superint search`) of a random potential `V(x, y)` (generic, separable, an oscillator
 in resonance or rotationally invariant) is complete when the dimension it reports is SymPy's:
 the polynomials of degree at most m in the momenta and n in the positions, less the rank of
@@ -39,6 +46,7 @@ summary line and exits nonzero if any case failed. It needs only SymPy (`run.sh`
 into `.venv`: `benches/peers/crosscheck.sh` does that and builds superint first).
 """
 import argparse
+import itertools
 import json
 import math
 import os
@@ -382,6 +390,120 @@ def search_case(binary, tmp, rng):
     return "ok", f"V = {potential}: {found} integrals"
 
 
+CANONICAL = """name = "the plane"
+hamiltonian = "(p_x^2 + p_y^2)/2 + (x^2 + y^2)/2"
+[phase_space]
+coordinates = ["x", "y"]
+"""
+
+
+def random_generator(rng):
+    """A polynomial in x, y, p_x, p_y of one to three terms, mostly quadratic (quadratic forms
+    close under the bracket: sp(4)), sometimes with a linear, constant or cubic term."""
+    quadratic = [f"{a}*{b}" for i, a in enumerate(["x", "y", "p_x", "p_y"])
+                 for b in ["x", "y", "p_x", "p_y"][i:]]
+    others = ["x", "y", "p_x", "p_y", "1", "x^2*p_y", "p_x^3", "x*y*p_y"]
+    terms = [rng.choice(quadratic if rng.random() < 0.8 else others)
+             for _ in range(rng.randint(1, 3))]
+    return " + ".join(f"({random_rational(rng)})*{t}" for t in terms)
+
+
+def closure_case(binary, tmp, rng):
+    """`superint closure` of two to five random generators: every bracket its table writes as a
+    polynomial in them is that bracket (SymPy expands both), every bracket it marks `*` lies
+    outside the span of the monomials in them (SymPy's rank), every relation it prints vanishes,
+    and together they span every relation up to the degree (SymPy's nullspace). Returns
+    (status, message)."""
+    count, degree = rng.randint(2, 5), rng.randint(1, 3)
+    names = [f"G{k + 1}" for k in range(count)]
+    if rng.random() < 0.3:
+        # Combinations of u(2)'s quadratic forms: a Lie algebra (the table closes at degree 1)
+        # with a Casimir (a relation at degree 2).
+        u2 = ["x^2 + p_x^2", "y^2 + p_y^2", "x*y + p_x*p_y", "x*p_y - y*p_x"]
+        texts = [" + ".join(f"({random_rational(rng)})*({f})"
+                            for f in rng.sample(u2, rng.randint(1, 2))) for _ in names]
+    else:
+        texts = [random_generator(rng) for _ in names]
+    file = os.path.join(tmp, "plane.toml")
+    with open(file, "w") as out:
+        out.write(CANONICAL)
+    defines = [a for n, t in zip(names, texts) for a in ("--define", f"{n}={t}")]
+    r = subprocess.run([binary, "closure", file] + names + defines +
+                       ["--degree", str(degree), "--format", "json", "--no-timings"],
+                       capture_output=True, text=True, timeout=120)
+    if r.returncode == 2 and "panicked" not in r.stderr:
+        return "refused", r.stderr.strip().splitlines()[0] if r.stderr.strip() else ""
+    if r.returncode != 0:
+        return "crashed", f"exit code {r.returncode}: {r.stderr.strip()[:400]}"
+    doc = json.loads(r.stdout)
+    variables = sp.symbols("x y p_x p_y", real=True)
+    x, y, px, py = variables
+    phase = {"x": x, "y": y, "p_x": px, "p_y": py}
+    gens = sp.symbols(" ".join(names))
+    defined = [sp.sympify(t.replace("^", "**"), locals=phase) for t in texts]
+    by_name = dict(zip(gens, defined))
+    in_gens = lambda text: sp.sympify(text.replace("^", "**"), locals=dict(zip(names, gens)))
+    bracket = lambda f, g: sp.expand(sp.diff(f, x) * sp.diff(g, px) - sp.diff(f, px) *
+                                     sp.diff(g, x) + sp.diff(f, y) * sp.diff(g, py) -
+                                     sp.diff(f, py) * sp.diff(g, y))
+    # The monomials of degree <= d in the generators, expanded in the phase variables.
+    monomials = [sp.Mul(*[g**e for g, e in zip(gens, exps)])
+                 for total in range(degree + 1)
+                 for exps in itertools.product(range(total + 1), repeat=count)
+                 if sum(exps) == total]
+    expanded = [sp.expand(m.subs(by_name)) for m in monomials]
+    span = rank_of(expanded, variables)
+    case = f"generators {dict(zip(names, texts))}, degree {degree}"
+    found = doc["closures"][0]
+    # superint's columns are the monomials in the generators that are not constants (a
+    # constant enters as its value, and `G = c` as a relation of its own); their span is
+    # the same.
+    constants = [g for g, d in zip(gens, defined) if not d.free_symbols]
+    varying = sum(1 for m in monomials if not m.free_symbols & set(constants))
+    if (found["monomials"], found["rank"]) != (varying, span):
+        return "failed", (f"{case}: superint has {found['monomials']} monomials of rank "
+                          f"{found['rank']}, SymPy {varying} of rank {span}")
+    entries = doc["tables"][0]["entries"]
+    outside = 0
+    for i, j in itertools.product(range(count), repeat=2):
+        text = entries[i][j]["ascii"]
+        theirs = bracket(defined[i], defined[j])
+        if text == "*":
+            outside += 1
+            if rank_of(expanded + [theirs], variables) == span:
+                return "failed", (f"{case}: {{{names[i]}, {names[j]}}} is marked outside, but "
+                                  f"SymPy writes it in the monomials")
+        elif sp.expand(in_gens(text).subs(by_name) - theirs) != 0:
+            return "failed", f"{case}: {{{names[i]}, {names[j]}}} = {text} is wrong"
+    if found["closes"] != (outside == 0):
+        return "failed", f"{case}: 'closes' is {found['closes']} with {outside} outside"
+    # The relations: each vanishes and is no zero polynomial in the generators; their
+    # multiples within the degree span the nullspace of the monomials' expansions.
+    claims = {c["id"]: c["ascii"] for c in doc["claims"]}
+    multiples = []
+    for rid in found["relations"]:
+        relation = in_gens(claims[rid].removesuffix(" = 0"))
+        if relation == 0 or sp.expand(relation.subs(by_name)) != 0:
+            return "failed", f"{case}: the relation {claims[rid]} does not hold"
+        low = sp.Poly(relation, *gens).total_degree()
+        multiples += [sp.expand(m * relation) for m in monomials
+                      if sp.Poly(m, *gens).total_degree() + low <= degree]
+    kernel = len(monomials) - span
+    spanned = rank_of(multiples, gens) if multiples else 0
+    if spanned != kernel:
+        return "failed", (f"{case}: the relations printed and their multiples span "
+                          f"{spanned} of the {kernel} dimensions of relations")
+    return "ok", (f"{count} generators, degree {degree}: {outside} brackets outside, "
+                  f"relations of dimension {kernel}")
+
+
+def rank_of(polys, variables):
+    """The rank of the polynomials `polys` in `variables`, as vectors of coefficients."""
+    table = [sp.Poly(p, *variables).as_dict() for p in polys]
+    keys = sorted({k for t in table for k in t})
+    return sp.Matrix(len(polys), len(keys), lambda i, j: table[i].get(keys[j], 0)).rank()
+
+
 def run_superint(binary, args):
     r = subprocess.run([binary] + args + ["--format", "json", "--no-timings"],
                        capture_output=True, text=True, timeout=120)
@@ -412,6 +534,7 @@ def main():
     counts = {"compared": 0, "refused": 0, "failed": 0}
     by_kind = {s.name: 0 for s in systems}
     by_kind["searches"] = 0
+    by_kind["closures"] = 0
 
     def fail(case, why):
         counts["failed"] += 1
@@ -433,7 +556,11 @@ def main():
         system = rng.choice(systems)
         f_text, g_text = random_expression(rng, system), random_expression(rng, system)
         op = rng.choice(["bracket", "bracket", "bracket at a condition", "product", "power",
-                         "rank", "search"])
+                         "rank", "search", "closure"])
+        if op == "closure":
+            status, message = closure_case(args.superint, tmp, rng)
+            tally(status, message, f"case {n}: a closure", "closures")
+            continue
         if op == "search":
             status, message = search_case(args.superint, tmp, rng)
             tally(status, message, f"case {n}: a search", "searches")
@@ -530,8 +657,9 @@ def main():
             by_kind[system.name] += 1
             if args.verbose:
                 print(f"agreed ({case})")
-    systems_line = ", ".join(f"{k} {v}" if k != "searches" else f"searches of random "
-                             f"potentials {v}" for k, v in by_kind.items())
+    named = {"searches": "searches of random potentials", "closures": "closures of random "
+             "generators"}
+    systems_line = ", ".join(f"{named.get(k, k)} {v}" for k, v in by_kind.items())
     print(f"crosscheck against SymPy {sp.__version__}: {args.cases} cases (seed {args.seed}): "
           f"{counts['compared']} agreed ({systems_line}), {counts['refused']} refused with a "
           f"message, {counts['failed']} failed")
