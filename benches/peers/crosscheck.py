@@ -29,11 +29,13 @@ certificate's point, is the nonzero value it states, and SymPy's rank of the Jac
 at two other exact points is at most the rank (and at the certificate's point, equal to it).
 
 A closure (`superint closure`) of two to five random generators in the plane (quadratic forms
-mostly, or combinations of u(2)'s) is right when every bracket its table writes as a polynomial
+mostly, or combinations of u(2)'s; with parameters `a`, `b` in their coefficients, left at
+superint's values and lifted back, fixed by `--fix`, or kept `--symbolic`) is right when every bracket its table writes as a polynomial
 in the generators expands to the bracket SymPy computes, every bracket it marks `*` is outside
 the span of the monomials in the generators up to the degree (SymPy's rank), and the relations
 it prints vanish and, with their multiples up to the degree, span the nullspace of those
-monomials' expansions (SymPy's dimension).
+monomials' expansions (SymPy's dimension). What superint states for every value of the
+parameters must hold for every value; what it states at its values, there.
 
 A search (`superint search`) of a random potential `V(x, y)` (generic, separable, an oscillator
 in resonance or rotationally invariant) is complete when the dimension it reports is SymPy's:
@@ -390,111 +392,167 @@ def search_case(binary, tmp, rng):
     return "ok", f"V = {potential}: {found} integrals"
 
 
-CANONICAL = """name = "the plane"
-hamiltonian = "(p_x^2 + p_y^2)/2 + (x^2 + y^2)/2"
+PLANE = """name = "the plane"
+hamiltonian = "(p_x^2 + p_y^2)/2 + a*(x^2 + y^2)/2"
 [phase_space]
 coordinates = ["x", "y"]
+parameters = ["a", "b"]
 """
 
 
-def random_generator(rng):
+def random_generator(rng, parameters):
     """A polynomial in x, y, p_x, p_y of one to three terms, mostly quadratic (quadratic forms
-    close under the bracket: sp(4)), sometimes with a linear, constant or cubic term."""
+    close under the bracket: sp(4)), sometimes with a linear, constant or cubic term; with
+    `parameters`, some coefficients carry `a`, `b` or `a*b`."""
     quadratic = [f"{a}*{b}" for i, a in enumerate(["x", "y", "p_x", "p_y"])
                  for b in ["x", "y", "p_x", "p_y"][i:]]
     others = ["x", "y", "p_x", "p_y", "1", "x^2*p_y", "p_x^3", "x*y*p_y"]
     terms = [rng.choice(quadratic if rng.random() < 0.8 else others)
              for _ in range(rng.randint(1, 3))]
-    return " + ".join(f"({random_rational(rng)})*{t}" for t in terms)
+    return " + ".join(f"{random_coefficient(rng, parameters)}*{t}" for t in terms)
+
+
+def random_coefficient(rng, parameters):
+    """A rational, times a parameter monomial some of the time when `parameters`."""
+    factor = rng.choice(["", "", "*a", "*b", "*a*b"]) if parameters else ""
+    return f"({random_rational(rng)}{factor})"
 
 
 def closure_case(binary, tmp, rng):
-    """`superint closure` of two to five random generators: every bracket its table writes as a
-    polynomial in them is that bracket (SymPy expands both), every bracket it marks `*` lies
-    outside the span of the monomials in them (SymPy's rank), every relation it prints vanishes,
-    and together they span every relation up to the degree (SymPy's nullspace). Returns
-    (status, message)."""
+    """`superint closure` of two to five random generators, in the plane with parameters `a`,
+    `b` (left at superint's values and lifted back, fixed, or kept symbolic) or without: every
+    bracket its table writes as a polynomial in them is that bracket (SymPy expands both;
+    for all values of the parameters unless superint says it holds at its values only), every
+    bracket it marks `*` lies outside the span of the monomials in them (SymPy's rank), every
+    relation it prints vanishes, and together with their multiples they span every relation
+    up to the degree (SymPy's nullspace). Returns (status, message)."""
     count, degree = rng.randint(2, 5), rng.randint(1, 3)
     names = [f"G{k + 1}" for k in range(count)]
+    mode = rng.choice(["plain", "plain", "lifted", "fixed", "symbolic"])
+    parameters = mode != "plain"
     if rng.random() < 0.3:
         # Combinations of u(2)'s quadratic forms: a Lie algebra (the table closes at degree 1)
         # with a Casimir (a relation at degree 2).
         u2 = ["x^2 + p_x^2", "y^2 + p_y^2", "x*y + p_x*p_y", "x*p_y - y*p_x"]
-        texts = [" + ".join(f"({random_rational(rng)})*({f})"
+        texts = [" + ".join(f"{random_coefficient(rng, parameters)}*({f})"
                             for f in rng.sample(u2, rng.randint(1, 2))) for _ in names]
     else:
-        texts = [random_generator(rng) for _ in names]
+        texts = [random_generator(rng, parameters) for _ in names]
     file = os.path.join(tmp, "plane.toml")
     with open(file, "w") as out:
-        out.write(CANONICAL)
+        out.write(PLANE)
+    options = ["--degree", str(degree)]
+    if mode == "fixed":
+        options += ["--fix", f"a={rng.choice(['2', '-3', '1/2'])},b={rng.choice(['3', '-1/3'])}"]
+    elif mode == "symbolic":
+        degree = rng.randint(1, 2)
+        options = ["--degree", str(degree), "--symbolic", "a,b", "--parameters-degree",
+                   str(rng.randint(1, 2))]
     defines = [a for n, t in zip(names, texts) for a in ("--define", f"{n}={t}")]
-    r = subprocess.run([binary, "closure", file] + names + defines +
-                       ["--degree", str(degree), "--format", "json", "--no-timings"],
+    r = subprocess.run([binary, "closure", file] + names + defines + options +
+                       ["--format", "json", "--no-timings"],
                        capture_output=True, text=True, timeout=120)
     if r.returncode == 2 and "panicked" not in r.stderr:
         return "refused", r.stderr.strip().splitlines()[0] if r.stderr.strip() else ""
     if r.returncode != 0:
         return "crashed", f"exit code {r.returncode}: {r.stderr.strip()[:400]}"
-    doc = json.loads(r.stdout)
-    variables = sp.symbols("x y p_x p_y", real=True)
-    x, y, px, py = variables
-    phase = {"x": x, "y": y, "p_x": px, "p_y": py}
+    case = f"generators {dict(zip(names, texts))}, {' '.join(options)}"
+    failure = check_closure(json.loads(r.stdout), names, texts, degree)
+    if failure:
+        return "failed", f"{case}: {failure}"
+    return "ok", f"{case}: agreed"
+
+
+def check_closure(doc, names, texts, degree):
+    """What is wrong with superint's closure `doc` of the generators `names` = `texts` up to
+    `degree`, by SymPy, or None."""
+    phase = sp.symbols("x y p_x p_y", real=True)
+    a, b = sp.symbols("a b", real=True)
     gens = sp.symbols(" ".join(names))
-    defined = [sp.sympify(t.replace("^", "**"), locals=phase) for t in texts]
-    by_name = dict(zip(gens, defined))
-    in_gens = lambda text: sp.sympify(text.replace("^", "**"), locals=dict(zip(names, gens)))
-    bracket = lambda f, g: sp.expand(sp.diff(f, x) * sp.diff(g, px) - sp.diff(f, px) *
-                                     sp.diff(g, x) + sp.diff(f, y) * sp.diff(g, py) -
-                                     sp.diff(f, py) * sp.diff(g, y))
-    # The monomials of degree <= d in the generators, expanded in the phase variables.
-    monomials = [sp.Mul(*[g**e for g, e in zip(gens, exps)])
-                 for total in range(degree + 1)
-                 for exps in itertools.product(range(total + 1), repeat=count)
-                 if sum(exps) == total]
-    expanded = [sp.expand(m.subs(by_name)) for m in monomials]
-    span = rank_of(expanded, variables)
-    case = f"generators {dict(zip(names, texts))}, degree {degree}"
+    symbols = dict(zip(["x", "y", "p_x", "p_y", "a", "b"], list(phase) + [a, b]))
+    defined = [sp.sympify(t.replace("^", "**"), locals=symbols) for t in texts]
     found = doc["closures"][0]
-    # superint's columns are the monomials in the generators that are not constants (a
-    # constant enters as its value, and `G = c` as a relation of its own); their span is
-    # the same.
-    constants = [g for g, d in zip(gens, defined) if not d.free_symbols]
-    varying = sum(1 for m in monomials if not m.free_symbols & set(constants))
+    fixed = {symbols[f["parameter"]]: sp.Rational(f["value"])
+             for f in found["parameters"]["fixed"]}
+    symbolic = [symbols[n] for n in found["parameters"]["symbolic"]]
+    s_degree = found["parameters"]["symbolic_degree"] or 0
+    at_values = lambda e: sp.expand(e.subs(fixed))
+    in_gens = lambda text: sp.sympify(text.replace("^", "**"),
+                                      locals=dict(zip(names, gens), a=a, b=b))
+    generators = dict(zip(gens, defined))
+    expand = lambda e: sp.expand(e.subs(generators))
+    bracket = lambda f, g: sp.expand(sum(sp.diff(f, q) * sp.diff(g, p) - sp.diff(f, p) *
+                                         sp.diff(g, q) for q, p in (phase[:3:2], phase[1::2])))
+    gen_degree = lambda e: sp.Poly(e, *gens).total_degree()
+    par_degree = lambda e: sp.Poly(e, *symbolic).total_degree() if symbolic else 0
+
+    # The columns: monomials in the generators up to the degree, times monomials in the
+    # symbolic parameters up to theirs, expanded at superint's values of the others. Its
+    # columns leave out generators free of the phase variables, which enter as their values
+    # (and `G = c` as a relation of its own): the span is the same.
+    def monomials(variables, top):
+        return [sp.Mul(*[v**e for v, e in zip(variables, exps)])
+                for total in range(top + 1)
+                for exps in itertools.product(range(total + 1), repeat=len(variables))
+                if sum(exps) == total]
+    columns = [m * nu for m in monomials(gens, degree) for nu in monomials(symbolic, s_degree)]
+    expanded = [at_values(expand(c)) for c in columns]
+    space = list(phase) + symbolic
+    span = rank_of(expanded, space)
+    constants = {g for g, d in zip(gens, defined) if not d.free_symbols & set(phase)}
+    varying = sum(1 for c in columns if not c.free_symbols & constants)
     if (found["monomials"], found["rank"]) != (varying, span):
-        return "failed", (f"{case}: superint has {found['monomials']} monomials of rank "
-                          f"{found['rank']}, SymPy {varying} of rank {span}")
+        return (f"superint has {found['monomials']} monomials of rank {found['rank']}, SymPy "
+                f"{varying} of rank {span}")
+
+    # The table, and the claims (a claim with a condition holds at superint's values only).
+    claims = {c["id"]: c for c in doc["claims"]}
+    general = {}
+    for c in doc["claims"]:
+        if c["ascii"].startswith("{"):
+            general[c["ascii"].split(" = ")[0]] = c["condition_ascii"] is None
+    lifted_table = found["unlifted"] == 0
     entries = doc["tables"][0]["entries"]
     outside = 0
-    for i, j in itertools.product(range(count), repeat=2):
+    for i, j in itertools.product(range(len(names)), repeat=2):
         text = entries[i][j]["ascii"]
         theirs = bracket(defined[i], defined[j])
+        pair = f"{{{names[i]}, {names[j]}}}"
         if text == "*":
             outside += 1
-            if rank_of(expanded + [theirs], variables) == span:
-                return "failed", (f"{case}: {{{names[i]}, {names[j]}}} is marked outside, but "
-                                  f"SymPy writes it in the monomials")
-        elif sp.expand(in_gens(text).subs(by_name) - theirs) != 0:
-            return "failed", f"{case}: {{{names[i]}, {names[j]}}} = {text} is wrong"
+            if rank_of(expanded + [at_values(theirs)], space) == span:
+                return f"{pair} is marked outside, but SymPy writes it in the monomials"
+            continue
+        difference = expand(in_gens(text)) - theirs
+        if at_values(difference) != 0:
+            return f"{pair} = {text} is wrong at {fixed}"
+        if general.get(pair, lifted_table) and sp.expand(difference) != 0:
+            return f"{pair} = {text} is said for every value of the parameters, and is wrong"
     if found["closes"] != (outside == 0):
-        return "failed", f"{case}: 'closes' is {found['closes']} with {outside} outside"
-    # The relations: each vanishes and is no zero polynomial in the generators; their
-    # multiples within the degree span the nullspace of the monomials' expansions.
-    claims = {c["id"]: c["ascii"] for c in doc["claims"]}
+        return f"'closes' is {found['closes']} with {outside} brackets outside"
+
+    # The relations: each vanishes (for every value of the parameters, unless it has a
+    # condition) and is no zero polynomial; with their multiples that stay within the
+    # degrees, they span the nullspace of the columns' expansions.
     multiples = []
     for rid in found["relations"]:
-        relation = in_gens(claims[rid].removesuffix(" = 0"))
-        if relation == 0 or sp.expand(relation.subs(by_name)) != 0:
-            return "failed", f"{case}: the relation {claims[rid]} does not hold"
-        low = sp.Poly(relation, *gens).total_degree()
-        multiples += [sp.expand(m * relation) for m in monomials
-                      if sp.Poly(m, *gens).total_degree() + low <= degree]
-    kernel = len(monomials) - span
-    spanned = rank_of(multiples, gens) if multiples else 0
+        claim = claims[rid]
+        left, right = claim["ascii"].split(" = ")
+        relation = in_gens(left) - in_gens(right)
+        value = expand(relation)
+        if relation == 0 or at_values(value) != 0 or \
+                (claim["condition_ascii"] is None and sp.expand(value) != 0):
+            return f"the relation {claim['ascii']} does not hold"
+        relation = at_values(relation)
+        multiples += [sp.expand(m * nu * relation)
+                      for m in monomials(gens, degree - gen_degree(relation))
+                      for nu in monomials(symbolic, s_degree - par_degree(relation))]
+    kernel = len(columns) - span
+    spanned = rank_of(multiples, list(gens) + symbolic) if multiples else 0
     if spanned != kernel:
-        return "failed", (f"{case}: the relations printed and their multiples span "
-                          f"{spanned} of the {kernel} dimensions of relations")
-    return "ok", (f"{count} generators, degree {degree}: {outside} brackets outside, "
-                  f"relations of dimension {kernel}")
+        return (f"the relations printed and their multiples span {spanned} of the {kernel} "
+                f"dimensions of relations")
+    return None
 
 
 def rank_of(polys, variables):
