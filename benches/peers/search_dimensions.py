@@ -29,14 +29,20 @@ def antisymmetric(pairs):
 
 
 def integrals_dimension(space, flow, variables):
-    """The dimension of the combinations F of the functions `space` with flow(F) = {F, H} = 0:
-    how many they are, less the rank of the linear map from their coefficients to those of
-    flow(F), a polynomial in `variables`. Also used by crosscheck.py."""
-    unknowns = sp.symbols(f"a0:{len(space)}")
-    f = sum(a * m for a, m in zip(unknowns, space))
-    image = sp.Poly(sp.expand(flow(f)), *variables)
-    rows = [[sp.diff(c, a) for a in unknowns] for c in image.coeffs()]
-    return len(space) - sp.Matrix(rows).rank()
+    """The dimension of the combinations F of the functions `space` with real coefficients and
+    flow(F) = {F, H} = 0: how many they are, less the rank of the linear map from their
+    coefficients to those of flow(F), a polynomial in `variables` (its coefficients may be
+    Gaussian rationals: their real and imaginary parts are equations apart). The flow is
+    linear, so each function's image is a column. Also used by crosscheck.py."""
+    from sympy.polys.matrices import DomainMatrix
+    columns = [sp.Poly(sp.expand(flow(m)), *variables).as_dict() for m in space]
+    keys = sorted({k for c in columns for k in c})
+    rows = [[part(c.get(k, 0)) for c in columns] for k in keys for part in (sp.re, sp.im)]
+    rows = [row for row in rows if any(row)]
+    if not rows:
+        return len(space)
+    matrix = DomainMatrix.from_list_sympy(len(rows), len(space), rows).convert_to(sp.QQ)
+    return len(space) - matrix.rank()
 
 
 def dimension(variables, table, h, degree):
