@@ -28,6 +28,11 @@ A rank (`superint rank`) is right when the certificate's minor, recomputed by Sy
 certificate's point, is the nonzero value it states, and SymPy's rank of the Jacobian there and
 at two other exact points is at most the rank (and at the certificate's point, equal to it).
 
+A search (`superint search`) of a random potential `V(x, y)` (generic, separable, an oscillator
+in resonance or rotationally invariant) is complete when the dimension it reports is SymPy's:
+the polynomials of degree at most m in the momenta and n in the positions, less the rank of
+the linear map that takes their coefficients to those of `{F, H}`.
+
 A search of a random rotor (`H` with an angle θ, its potential coupling x, y and θ through
 `cos kθ`, `sin kθ`, or not at all) is complete when its count of unknowns and the dimension it
 reports are SymPy's, found with `E = e^{iθ}`: `{F, H}` is then a Laurent polynomial in `E`,
@@ -35,20 +40,17 @@ whose coefficients' real and imaginary parts are the equations.
 
 A closure (`superint closure`) of two to five random generators in the plane (quadratic forms
 mostly, or combinations of u(2)'s; with parameters `a`, `b` in their coefficients, left at
-superint's values and lifted back, fixed by `--fix`, or kept `--symbolic`) is right when every bracket its table writes as a polynomial
-in the generators expands to the bracket SymPy computes, every bracket it marks `*` is outside
-the span of the monomials in the generators up to the degree (SymPy's rank), and the relations
-it prints vanish and, with their multiples up to the degree, span the nullspace of those
-monomials' expansions (SymPy's dimension). What superint states for every value of the
-parameters must hold for every value; what it states at its values, there.
-
-A search (`superint search`) of a random potential `V(x, y)` (generic, separable, an oscillator
-in resonance or rotationally invariant) is complete when the dimension it reports is SymPy's:
-the polynomials of degree at most m in the momenta and n in the positions, less the rank of
-the linear map that takes their coefficients to those of `{F, H}`.
+superint's values and lifted back, fixed by `--fix`, or kept `--symbolic`) is right when every
+bracket its table writes as a polynomial in the generators expands to the bracket SymPy
+computes, every bracket it marks `*` is outside the span of the monomials in the generators up
+to the degree (SymPy's rank), and the relations it prints vanish and, with their multiples up
+to the degree, span the nullspace of those monomials' expansions (SymPy's dimension). What
+superint states for every value of the parameters must hold for every value; what it states at
+its values, there.
 
 A case that superint refuses with a message (exit code 2: dividing by a sum that is no declared
-denominator, say) is counted and skipped; any other exit code is a failure. The script prints a
+denominator, say) is counted and skipped, as is a result too long for SymPy's parser (Python's
+compiler nests a sum one level a term); any other exit code is a failure. The script prints a
 summary line and exits nonzero if any case failed. It needs only SymPy (`run.sh` installs it
 into `.venv`: `benches/peers/crosscheck.sh` does that and builds superint first).
 """
