@@ -38,6 +38,10 @@ A search of a random rotor (`H` with an angle θ, its potential coupling x, y an
 reports are SymPy's, found with `E = e^{iθ}`: `{F, H}` is then a Laurent polynomial in `E`,
 whose coefficients' real and imaginary parts are the equations.
 
+A search of a random top (a quadratic form in M on so(3)*, or on e(3)* with a linear and
+sometimes a quadratic term in γ) is complete when its dimension at a degree in the Poisson
+variables is the one `search_dimensions.py` finds for it.
+
 A closure (`superint closure`) of two to five random generators in the plane (quadratic forms
 mostly, or combinations of u(2)'s; with parameters `a`, `b` in their coefficients, left at
 superint's values and lifted back, fixed by `--fix`, or kept `--symbolic`) is right when every
@@ -68,7 +72,7 @@ from fractions import Fraction
 
 import sympy as sp
 
-from search_dimensions import integrals_dimension
+from search_dimensions import antisymmetric, dimension, integrals_dimension
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.dirname(os.path.dirname(HERE))
@@ -634,6 +638,54 @@ def angle_search_case(binary, tmp, rng):
     return "ok", f"H = {h}, degrees {degrees}: {found['dimension']} integrals"
 
 
+E3 = {("M1", "M2"): "M3", ("M2", "M3"): "M1", ("M3", "M1"): "M2",
+      ("M1", "g2"): "g3", ("M1", "g3"): "-g2", ("M2", "g3"): "g1", ("M2", "g1"): "-g3",
+      ("M3", "g1"): "g2", ("M3", "g2"): "-g1"}
+
+
+def top_search_case(binary, tmp, rng):
+    """`superint search` of a random top on so(3)* or e(3)* (a quadratic form in M, plus a
+    linear and sometimes a quadratic one in γ on e(3)*, some with symmetry): the dimension of its
+    polynomial integrals of degree at most d in the Poisson variables, against SymPy's
+    (`search_dimensions.dimension`). Returns (status, message)."""
+    e3 = rng.random() < 0.7
+    names = ["M1", "M2", "M3"] + (["g1", "g2", "g3"] if e3 else [])
+    pairs = {k: v for k, v in E3.items() if all(n in names for n in k)}
+    c = lambda: random_rational(rng)
+    inertia = [c() for _ in range(3)]
+    if rng.random() < 0.4:
+        inertia[1] = inertia[0]  # symmetric: M3 is an integral (with γ along the axis)
+    terms = [f"({i})*M{k + 1}^2" for k, i in enumerate(inertia)]
+    if rng.random() < 0.3:
+        terms.append(f"({c()})*M1*M2")
+    if e3:
+        terms.append(rng.choice([f"({c()})*g3", f"({c()})*g1", f"({c()})*g1 + ({c()})*g2"]))
+        if rng.random() < 0.3:
+            terms.append(f"({c()})*g3^2")
+    h = " + ".join(terms)
+    degree = rng.randint(1, 4 if not e3 else 3)
+    brackets = "\n".join(f'"{{{a}, {b}}}" = "{v}"' for (a, b), v in pairs.items())
+    file = os.path.join(tmp, "top.toml")
+    with open(file, "w") as out:
+        out.write(f'name = "random top"\nhamiltonian = "{h}"\n[phase_space]\n'
+                  f'variables = {json.dumps(names)}\n[poisson]\n{brackets}\n')
+    status, doc = run_json(binary, ["search", file, "--poisson-degree", str(degree)],
+                           timeout=300)
+    if status != "ok":
+        return status, doc
+    found = doc["searches"][0]["dimension"]
+    variables = sp.symbols(" ".join(names))
+    local = dict(zip(names, variables))
+    table = antisymmetric({(local[a], local[b]): sp.sympify(v, locals=local)
+                           for (a, b), v in pairs.items()})
+    expected = dimension(variables, table, sp.sympify(h.replace("^", "**"), locals=local),
+                         degree)
+    if found != expected:
+        return "failed", (f"H = {h} on {'e(3)*' if e3 else 'so(3)*'}, degree {degree}: "
+                          f"superint found {found} integrals, SymPy {expected}")
+    return "ok", f"H = {h}, degree {degree}: {found} integrals"
+
+
 def run_json(binary, args, timeout=120):
     """superint's JSON report for `args`: ("ok", the report), ("refused", its message) on exit
     code 2 without a panic, or ("crashed", what happened)."""
@@ -672,6 +724,7 @@ def main():
     by_kind = {s.name: 0 for s in systems}
     by_kind["searches"] = 0
     by_kind["angle searches"] = 0
+    by_kind["top searches"] = 0
     by_kind["closures"] = 0
 
     def fail(case, why):
@@ -694,7 +747,12 @@ def main():
         system = rng.choice(systems)
         f_text, g_text = random_expression(rng, system), random_expression(rng, system)
         op = rng.choice(["bracket", "bracket", "bracket at a condition", "product", "power",
-                         "rank", "search", "search with an angle", "closure"])
+                         "rank", "search", "search with an angle", "search of a top",
+                         "closure"])
+        if op == "search of a top":
+            status, message = top_search_case(args.superint, tmp, rng)
+            tally(status, message, f"case {n}: a search of a top", "top searches")
+            continue
         if op == "search with an angle":
             status, message = angle_search_case(args.superint, tmp, rng)
             tally(status, message, f"case {n}: a search with an angle", "angle searches")
@@ -807,7 +865,7 @@ def main():
             if args.verbose:
                 print(f"agreed ({case})")
     named = {"searches": "searches of random potentials", "angle searches": "searches of rotors",
-             "closures": "closures of random generators"}
+             "top searches": "searches of tops", "closures": "closures of random generators"}
     systems_line = ", ".join(f"{named.get(k, k)} {v}" for k, v in by_kind.items())
     print(f"crosscheck against SymPy {sp.__version__}: {args.cases} cases (seed {args.seed}): "
           f"{counts['compared']} agreed ({systems_line}), {counts['refused']} refused with a "
