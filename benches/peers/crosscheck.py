@@ -704,6 +704,16 @@ def run_superint(binary, args):
     return (status, doc["equations"][0]["lines"][0]["ascii"]) if status == "ok" else (status, doc)
 
 
+# The operations that draw their own system: each case's function and the name it is counted
+# under.
+ALONE = {
+    "search": (search_case, "searches of random potentials"),
+    "search with an angle": (angle_search_case, "searches of rotors"),
+    "search of a top": (top_search_case, "searches of tops"),
+    "closure": (closure_case, "closures of random generators"),
+}
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     ap.add_argument("--cases", type=int, default=400)
@@ -722,10 +732,7 @@ def main():
 
     counts = {"compared": 0, "refused": 0, "failed": 0, "too long for SymPy": 0}
     by_kind = {s.name: 0 for s in systems}
-    by_kind["searches"] = 0
-    by_kind["angle searches"] = 0
-    by_kind["top searches"] = 0
-    by_kind["closures"] = 0
+    by_kind.update((kind, 0) for _, kind in ALONE.values())
 
     def fail(case, why):
         counts["failed"] += 1
@@ -749,21 +756,10 @@ def main():
         op = rng.choice(["bracket", "bracket", "bracket at a condition", "product", "power",
                          "rank", "search", "search with an angle", "search of a top",
                          "closure"])
-        if op == "search of a top":
-            status, message = top_search_case(args.superint, tmp, rng)
-            tally(status, message, f"case {n}: a search of a top", "top searches")
-            continue
-        if op == "search with an angle":
-            status, message = angle_search_case(args.superint, tmp, rng)
-            tally(status, message, f"case {n}: a search with an angle", "angle searches")
-            continue
-        if op == "closure":
-            status, message = closure_case(args.superint, tmp, rng)
-            tally(status, message, f"case {n}: a closure", "closures")
-            continue
-        if op == "search":
-            status, message = search_case(args.superint, tmp, rng)
-            tally(status, message, f"case {n}: a search", "searches")
+        if op in ALONE:
+            run, kind = ALONE[op]
+            status, message = run(args.superint, tmp, rng)
+            tally(status, message, f"case {n}: a {op}", kind)
             continue
         if op == "rank":
             # Two to four functions, some of them functions of the others.
@@ -864,9 +860,7 @@ def main():
             by_kind[system.name] += 1
             if args.verbose:
                 print(f"agreed ({case})")
-    named = {"searches": "searches of random potentials", "angle searches": "searches of rotors",
-             "top searches": "searches of tops", "closures": "closures of random generators"}
-    systems_line = ", ".join(f"{named.get(k, k)} {v}" for k, v in by_kind.items())
+    systems_line = ", ".join(f"{k} {v}" for k, v in by_kind.items())
     print(f"crosscheck against SymPy {sp.__version__}: {args.cases} cases (seed {args.seed}): "
           f"{counts['compared']} agreed ({systems_line}), {counts['refused']} refused with a "
           f"message, {counts['too long for SymPy']} results too long for SymPy to read, "
