@@ -34,9 +34,10 @@ the polynomials of degree at most m in the momenta and n in the positions, less 
 the linear map that takes their coefficients to those of `{F, H}`.
 
 A search of a random rotor (`H` with an angle θ, its potential coupling x, y and θ through
-`cos kθ`, `sin kθ`, or not at all) is complete when its count of unknowns and the dimension it
-reports are SymPy's, found with `E = e^{iθ}`: `{F, H}` is then a Laurent polynomial in `E`,
-whose coefficients' real and imaginary parts are the equations.
+`cos kθ`, `sin kθ`, or not at all; or an oscillator at a value of p_θ, `--when`, as at the
+resonances) is complete when its count of unknowns and the dimension it reports are SymPy's,
+found with `E = e^{iθ}`: `{F, H}` is then a Laurent polynomial in `E`, whose coefficients' real
+and imaginary parts are the equations.
 
 A search of a random top (a quadratic form in M on so(3)*, or on e(3)* with a linear and
 sometimes a quadratic term in γ) is complete when its dimension at a degree in the Poisson
@@ -230,6 +231,14 @@ parameters = ["I1", "I2"]
         [("p_x", "I1*M3"), ("I2", "I1 + 1"), ("M3", "2"), ("g3", "M1 - g1")])
 
 
+def monomials(variables, degree):
+    """The monomials in `variables` of total degree at most `degree`, by degree."""
+    return [sp.Mul(*[v**k for v, k in zip(variables, exps)])
+            for total in range(degree + 1)
+            for exps in itertools.product(range(total + 1), repeat=len(variables))
+            if sum(exps) == total]
+
+
 def is_square(n):
     return n >= 0 and math.isqrt(n) ** 2 == n
 
@@ -360,10 +369,8 @@ def sympy_search_dimension(h, momenta_degree, positions_degree):
     """The dimension of the integrals of `h` among the polynomials of degree at most
     `momenta_degree` in p_x, p_y and `positions_degree` in x, y, by SymPy alone."""
     x, y, px, py = sp.symbols("x y p_x p_y", real=True)
-    def monomials(a, b, degree):
-        return [a**i * b**j for i in range(degree + 1) for j in range(degree + 1 - i)]
-    space = [m * q for m in monomials(px, py, momenta_degree)
-             for q in monomials(x, y, positions_degree)]
+    space = [m * q for m in monomials([px, py], momenta_degree)
+             for q in monomials([x, y], positions_degree)]
     def flow(f):
         return (sp.diff(f, x) * sp.diff(h, px) - sp.diff(f, px) * sp.diff(h, x)
                 + sp.diff(f, y) * sp.diff(h, py) - sp.diff(f, py) * sp.diff(h, y))
@@ -490,11 +497,6 @@ def check_closure(doc, names, texts, degree):
     # symbolic parameters up to theirs, expanded at superint's values of the others. Its
     # columns leave out generators free of the phase variables, which enter as their values
     # (and `G = c` as a relation of its own): the span is the same.
-    def monomials(variables, top):
-        return [sp.Mul(*[v**e for v, e in zip(variables, exps)])
-                for total in range(top + 1)
-                for exps in itertools.product(range(total + 1), repeat=len(variables))
-                if sum(exps) == total]
     columns = [m * nu for m in monomials(gens, degree) for nu in monomials(symbolic, s_degree)]
     expanded = [at_values(expand(c)) for c in columns]
     space = list(phase) + symbolic
@@ -580,12 +582,14 @@ def random_coupling(rng):
     return " + ".join(terms)
 
 
-def sympy_angle_search_dimension(h_text, momenta_degree, positions_degree, trig_degree):
+def sympy_angle_search_dimension(h_text, momenta_degree, positions_degree, trig_degree,
+                                 when=None):
     """The dimension of the integrals of `h_text` (in x, y, θ and their momenta) among the
     functions `p^a x^b cos kθ` and `p^a x^b sin kθ` of degree at most `momenta_degree` in
     the momenta, `positions_degree` in x, y and `k <= trig_degree`, by SymPy alone: with
     `E = e^{iθ}`, `{F, H}` is a Laurent polynomial in `E` whose coefficients, real and
-    imaginary parts apart, are linear equations over Q in the real unknowns."""
+    imaginary parts apart, are linear equations over Q in the real unknowns. With `when`, a
+    value of p_θ: the functions are free of p_θ, and `{F, H}` vanishes at that value."""
     x, y, px, py, pt, e = sp.symbols("x y p_x p_y p_theta E")
     theta = sp.Symbol("theta")
     trig = lambda expr: expr.rewrite(sp.exp).subs(sp.exp(sp.I * theta), e)
@@ -593,19 +597,16 @@ def sympy_angle_search_dimension(h_text, momenta_degree, positions_degree, trig_
                                   locals={"x": x, "y": y, "p_x": px, "p_y": py,
                                           "p_theta": pt, "theta": theta})))
     h = sp.expand(h.subs(sp.exp(-sp.I * theta), 1 / e).subs(sp.exp(sp.I * theta), e))
-    def monomials(variables, degree):
-        return [sp.Mul(*[v**k for v, k in zip(variables, exps)])
-                for total in range(degree + 1)
-                for exps in itertools.product(range(total + 1), repeat=len(variables))
-                if sum(exps) == total]
     waves = [sp.Integer(1)] + [w for k in range(1, trig_degree + 1)
                                for w in ((e**k + e**-k) / 2, (e**k - e**-k) / (2 * sp.I))]
-    space = [m * q * w for m in monomials([px, py, pt], momenta_degree)
+    momenta = [px, py] if when is not None else [px, py, pt]
+    space = [m * q * w for m in monomials(momenta, momenta_degree)
              for q in monomials([x, y], positions_degree) for w in waves]
     d_theta = lambda g: sp.I * e * sp.diff(g, e)
-    flow = lambda f: (sp.diff(f, x) * sp.diff(h, px) - sp.diff(f, px) * sp.diff(h, x)
-                      + sp.diff(f, y) * sp.diff(h, py) - sp.diff(f, py) * sp.diff(h, y)
-                      + d_theta(f) * sp.diff(h, pt) - sp.diff(f, pt) * d_theta(h))
+    bracket = lambda f: (sp.diff(f, x) * sp.diff(h, px) - sp.diff(f, px) * sp.diff(h, x)
+                         + sp.diff(f, y) * sp.diff(h, py) - sp.diff(f, py) * sp.diff(h, y)
+                         + d_theta(f) * sp.diff(h, pt) - sp.diff(f, pt) * d_theta(h))
+    flow = bracket if when is None else lambda f: bracket(f).subs(pt, sp.Rational(when))
     # Laurent in E: shifted to a polynomial.
     shift = trig_degree + 3
     return len(space), integrals_dimension(space, lambda f: flow(f) * e**shift,
@@ -617,6 +618,14 @@ def angle_search_case(binary, tmp, rng):
     it reports, against SymPy's count of the space and nullspace of {F, H} = 0 over it.
     Returns (status, message)."""
     potential, coupling = random_potential(rng), random_coupling(rng)
+    when = None
+    if rng.random() < 0.4:
+        # At a value of p_θ (`--when`, the path of the resonances): for the oscillator of
+        # frequency w, at p_θ = w·m/n the integrals Z^m e^{−inθ} appear.
+        w = rng.choice(["1", "2", "1/2"])
+        potential = f"({w})^2*(x^2 + y^2)/2"
+        coupling = rng.choice(["0", "0", "0", "0", coupling])  # else refused: p_θ moves
+        when = str(sp.Rational(w) * sp.Rational(rng.choice(["1", "2", "1/2", "3/2", "1/3"])))
     h = f"(p_x^2 + p_y^2 + p_theta^2)/2 + {potential} + {coupling}"
     degrees = rng.randint(1, 2), rng.randint(0, 2), rng.randint(0, 2)
     text = (f'name = "random rotor"\nhamiltonian = "{h}"\n'
@@ -626,16 +635,18 @@ def angle_search_case(binary, tmp, rng):
         out.write(text)
     status, doc = run_json(binary, ["search", file, "--momenta-degree", str(degrees[0]),
                                     "--positions-degree", str(degrees[1]), "--trig-degree",
-                                    str(degrees[2])], timeout=300)
+                                    str(degrees[2])] +
+                           (["--when", f"p_theta = {when}"] if when else []), timeout=300)
     if status != "ok":
         return status, doc
     found = doc["searches"][0]
-    expected = sympy_angle_search_dimension(h, *degrees)
+    expected = sympy_angle_search_dimension(h, *degrees, when)
+    at = f" at p_θ = {when}" if when else ""
     if (found["unknowns"], found["dimension"]) != expected:
-        return "failed", (f"H = {h}, degrees (momenta, positions, trig) {degrees}: superint "
+        return "failed", (f"H = {h}{at}, degrees (momenta, positions, trig) {degrees}: superint "
                           f"has {found['unknowns']} unknowns and {found['dimension']} "
                           f"integrals, SymPy {expected[0]} and {expected[1]}")
-    return "ok", f"H = {h}, degrees {degrees}: {found['dimension']} integrals"
+    return "ok", f"H = {h}{at}, degrees {degrees}: {found['dimension']} integrals"
 
 
 E3 = {("M1", "M2"): "M3", ("M2", "M3"): "M1", ("M3", "M1"): "M2",
