@@ -29,9 +29,10 @@ certificate's point, is the nonzero value it states, and SymPy's rank of the Jac
 at two other exact points is at most the rank (and at the certificate's point, equal to it).
 
 A search (`superint search`) of a random potential `V(x, y)` (generic, separable, an oscillator
-in resonance or rotationally invariant) is complete when the dimension it reports is SymPy's:
-the polynomials of degree at most m in the momenta and n in the positions, less the rank of
-the linear map that takes their coefficients to those of `{F, H}`.
+in resonance or rotationally invariant; or `a V₁ + b V₂` with `a`, `b` kept `--symbolic`) is
+complete when the dimension it reports is SymPy's: the polynomials of degree at most m in the
+momenta and n in the positions (times the monomials in `a`, `b` up to their degree), less the
+rank of the linear map that takes their coefficients to those of `{F, H}`.
 
 A search of a random rotor (`H` with an angle θ, its potential coupling x, y and θ through
 `cos kθ`, `sin kθ`, or not at all; or an oscillator at a value of p_θ, `--when`, as at the
@@ -348,11 +349,15 @@ def rank_case(binary, system, texts, rng):
     return "ok", f"rank {rank}"
 
 
-def random_potential(rng):
-    """A polynomial potential in x, y: generic, separable, an oscillator in resonance, or
-    rotationally invariant (the last three with integrals beside H)."""
+POTENTIALS = ["generic", "separable", "resonant", "central"]
+
+
+def random_potential(rng, kind=None):
+    """A polynomial potential in x, y of the kind given or drawn from `POTENTIALS`: generic,
+    separable, an oscillator in resonance, or rotationally invariant (the last three with
+    integrals beside H)."""
     c = lambda: random_rational(rng)
-    kind = rng.choice(["generic", "separable", "resonant", "central"])
+    kind = kind or rng.choice(POTENTIALS)
     if kind == "generic":
         terms = [f"({c()})*x^{a}*y^{b}" for a in range(4) for b in range(4 - a)
                  if a + b >= 2 and rng.random() < 0.4]
@@ -365,42 +370,58 @@ def random_potential(rng):
     return f"({c()})*(x^2 + y^2) + ({c()})*(x^2 + y^2)^2"
 
 
-def sympy_search_dimension(h, momenta_degree, positions_degree):
+def sympy_search_dimension(h, momenta_degree, positions_degree, symbolic=(), s_degree=0):
     """The dimension of the integrals of `h` among the polynomials of degree at most
-    `momenta_degree` in p_x, p_y and `positions_degree` in x, y, by SymPy alone."""
+    `momenta_degree` in p_x, p_y and `positions_degree` in x, y, by SymPy alone; with
+    `symbolic` parameters, their coefficients polynomials of degree at most `s_degree` in
+    them, and {F, H} zero for every value of them (a parameter's multiple counts apart)."""
     x, y, px, py = sp.symbols("x y p_x p_y", real=True)
-    space = [m * q for m in monomials([px, py], momenta_degree)
-             for q in monomials([x, y], positions_degree)]
+    space = [m * q * nu for m in monomials([px, py], momenta_degree)
+             for q in monomials([x, y], positions_degree)
+             for nu in monomials(list(symbolic), s_degree)]
     def flow(f):
         return (sp.diff(f, x) * sp.diff(h, px) - sp.diff(f, px) * sp.diff(h, x)
                 + sp.diff(f, y) * sp.diff(h, py) - sp.diff(f, py) * sp.diff(h, y))
-    return integrals_dimension(space, flow, [x, y, px, py])
+    return integrals_dimension(space, flow, [x, y, px, py] + list(symbolic))
 
 
 def search_case(binary, tmp, rng):
-    """`superint search` of a random potential: the dimension it reports, against SymPy's
-    nullspace of {F, H} = 0 over the same space. Returns (status, message)."""
+    """`superint search` of a random potential, some of the time with parameters `a`, `b`
+    in it kept symbolic: the dimension it reports, against SymPy's nullspace of {F, H} = 0
+    over the same space. Returns (status, message)."""
     potential = random_potential(rng)
     momenta_degree, positions_degree = rng.randint(1, 3), rng.randint(0, 3)
+    options, symbolic, s_degree = [], (), 0
+    if rng.random() < 0.3:
+        # a·V₁ + b·V₂ of one kind: integrals for every a and b (L for central ones, the
+        # energies of x and y for separable ones), their coefficients polynomials in them.
+        kind = rng.choice(POTENTIALS)
+        potential = f"a*({random_potential(rng, kind)}) + b*({random_potential(rng, kind)})"
+        momenta_degree, positions_degree = rng.randint(1, 2), rng.randint(0, 4)
+        s_degree = rng.randint(1, 2)
+        symbolic = sp.symbols("a b", real=True)
+        options = ["--symbolic", "a,b", "--parameters-degree", str(s_degree)]
     text = (f'name = "random potential"\nhamiltonian = "(p_x^2 + p_y^2)/2 + {potential}"\n'
-            f'[phase_space]\ncoordinates = ["x", "y"]\n')
+            f'[phase_space]\ncoordinates = ["x", "y"]\nparameters = ["a", "b"]\n')
     file = os.path.join(tmp, "potential.toml")
     with open(file, "w") as out:
         out.write(text)
     status, doc = run_json(binary, ["search", file, "--momenta-degree", str(momenta_degree),
-                                    "--positions-degree", str(positions_degree)], timeout=300)
+                                    "--positions-degree", str(positions_degree)] + options,
+                           timeout=300)
     if status != "ok":
         return status, doc
     found = doc["searches"][0]["dimension"]
     x, y, px, py = sp.symbols("x y p_x p_y", real=True)
+    a, b = sp.symbols("a b", real=True)
     h = sp.sympify(f"(p_x**2 + p_y**2)/2 + {potential.replace('^', '**')}",
-                   locals={"x": x, "y": y, "p_x": px, "p_y": py})
-    expected = sympy_search_dimension(h, momenta_degree, positions_degree)
+                   locals={"x": x, "y": y, "p_x": px, "p_y": py, "a": a, "b": b})
+    expected = sympy_search_dimension(h, momenta_degree, positions_degree, symbolic, s_degree)
     if found != expected:
         return "failed", (f"V = {potential}, momenta degree {momenta_degree}, positions degree "
-                          f"{positions_degree}: superint found {found} integrals, SymPy "
-                          f"{expected}")
-    return "ok", f"V = {potential}: {found} integrals"
+                          f"{positions_degree} {' '.join(options)}: superint found {found} "
+                          f"integrals, SymPy {expected}")
+    return "ok", f"V = {potential} {' '.join(options)}: {found} integrals"
 
 
 PLANE = """name = "the plane"
