@@ -29,10 +29,11 @@ certificate's point, is the nonzero value it states, and SymPy's rank of the Jac
 at two other exact points is at most the rank (and at the certificate's point, equal to it).
 
 A search (`superint search`) of a random potential `V(x, y)` (generic, separable, an oscillator
-in resonance or rotationally invariant; or `a V₁ + b V₂` with `a`, `b` kept `--symbolic`) is
-complete when the dimension it reports is SymPy's: the polynomials of degree at most m in the
-momenta and n in the positions (times the monomials in `a`, `b` up to their degree), less the
-rank of the linear map that takes their coefficients to those of `{F, H}`.
+in resonance or rotationally invariant; or `a V₁ + b V₂` with `a`, `b` kept `--symbolic`; or
+with negative powers, `--laurent`) is complete when its unknowns and dimension are SymPy's:
+the polynomials of degree at most m in the momenta and n in the positions (times the
+monomials in `a`, `b` up to their degree), less the rank of the linear map that takes their
+coefficients to those of `{F, H}`.
 
 A search of a random rotor (`H` with an angle θ, its potential coupling x, y and θ through
 `cos kθ`, `sin kθ`, or not at all; or an oscillator at a value of p_θ, `--when`, as at the
@@ -370,19 +371,28 @@ def random_potential(rng, kind=None):
     return f"({c()})*(x^2 + y^2) + ({c()})*(x^2 + y^2)^2"
 
 
-def sympy_search_dimension(h, momenta_degree, positions_degree, symbolic=(), s_degree=0):
+def sympy_search_dimension(h, momenta_degree, positions_degree, symbolic=(), s_degree=0,
+                           laurent=False):
     """The dimension of the integrals of `h` among the polynomials of degree at most
     `momenta_degree` in p_x, p_y and `positions_degree` in x, y, by SymPy alone; with
     `symbolic` parameters, their coefficients polynomials of degree at most `s_degree` in
-    them, and {F, H} zero for every value of them (a parameter's multiple counts apart)."""
+    them, and {F, H} zero for every value of them (a parameter's multiple counts apart); with
+    `laurent`, `x^c y^d` for any integers with `|c| + |d|` at most `positions_degree`."""
     x, y, px, py = sp.symbols("x y p_x p_y", real=True)
-    space = [m * q * nu for m in monomials([px, py], momenta_degree)
-             for q in monomials([x, y], positions_degree)
+    if laurent:
+        n = positions_degree
+        positions = [x**c * y**d for c in range(-n, n + 1) for d in range(-n, n + 1)
+                     if abs(c) + abs(d) <= n]
+    else:
+        positions = monomials([x, y], positions_degree)
+    space = [m * q * nu for m in monomials([px, py], momenta_degree) for q in positions
              for nu in monomials(list(symbolic), s_degree)]
+    # A Laurent polynomial times x^k y^k, with k past every negative power, is a polynomial.
+    k = positions_degree + 4 if laurent else 0
     def flow(f):
         return (sp.diff(f, x) * sp.diff(h, px) - sp.diff(f, px) * sp.diff(h, x)
-                + sp.diff(f, y) * sp.diff(h, py) - sp.diff(f, py) * sp.diff(h, y))
-    return integrals_dimension(space, flow, [x, y, px, py] + list(symbolic))
+                + sp.diff(f, y) * sp.diff(h, py) - sp.diff(f, py) * sp.diff(h, y)) * (x * y)**k
+    return len(space), integrals_dimension(space, flow, [x, y, px, py] + list(symbolic))
 
 
 def search_case(binary, tmp, rng):
@@ -391,8 +401,19 @@ def search_case(binary, tmp, rng):
     over the same space. Returns (status, message)."""
     potential = random_potential(rng)
     momenta_degree, positions_degree = rng.randint(1, 3), rng.randint(0, 3)
-    options, symbolic, s_degree = [], (), 0
-    if rng.random() < 0.3:
+    options, symbolic, s_degree, laurent = [], (), 0, False
+    draw = rng.random()
+    if draw < 0.2:
+        # Negative powers (`--laurent`): Smorodinsky–Winternitz I's β/x² + γ/y² beside an
+        # oscillator (separable: each coordinate's energy is an integral), or random terms.
+        laurent = True
+        c = lambda: random_rational(rng)
+        potential = rng.choice([f"({c()})*(x^2 + y^2) + ({c()})/x^2 + ({c()})/y^2",
+                                f"({c()})*x^2 + ({c()})*x^-2 + ({c()})*y^2",
+                                f"({c()})*x^-1*y + ({c()})*x^2*y^-2 + ({c()})*y^2"])
+        momenta_degree, positions_degree = rng.randint(1, 2), rng.choice([1, 2, 2])
+        options = ["--laurent"]
+    elif draw < 0.45:
         # a·V₁ + b·V₂ of one kind: integrals for every a and b (L for central ones, the
         # energies of x and y for separable ones), their coefficients polynomials in them.
         kind = rng.choice(POTENTIALS)
@@ -411,17 +432,20 @@ def search_case(binary, tmp, rng):
                            timeout=300)
     if status != "ok":
         return status, doc
-    found = doc["searches"][0]["dimension"]
+    found = doc["searches"][0]
+    found = (found["unknowns"], found["dimension"])
     x, y, px, py = sp.symbols("x y p_x p_y", real=True)
     a, b = sp.symbols("a b", real=True)
     h = sp.sympify(f"(p_x**2 + p_y**2)/2 + {potential.replace('^', '**')}",
                    locals={"x": x, "y": y, "p_x": px, "p_y": py, "a": a, "b": b})
-    expected = sympy_search_dimension(h, momenta_degree, positions_degree, symbolic, s_degree)
+    expected = sympy_search_dimension(h, momenta_degree, positions_degree, symbolic, s_degree,
+                                      laurent)
     if found != expected:
         return "failed", (f"V = {potential}, momenta degree {momenta_degree}, positions degree "
-                          f"{positions_degree} {' '.join(options)}: superint found {found} "
-                          f"integrals, SymPy {expected}")
-    return "ok", f"V = {potential} {' '.join(options)}: {found} integrals"
+                          f"{positions_degree} {' '.join(options)}: superint has {found[0]} "
+                          f"unknowns and {found[1]} integrals, SymPy {expected[0]} and "
+                          f"{expected[1]}")
+    return "ok", f"V = {potential} {' '.join(options)}: {found[1]} integrals"
 
 
 PLANE = """name = "the plane"
