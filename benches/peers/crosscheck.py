@@ -538,19 +538,20 @@ def check_closure(doc, names, texts, degree):
     gen_degree = lambda e: sp.Poly(e, *gens).total_degree()
     par_degree = lambda e: sp.Poly(e, *symbolic).total_degree() if symbolic else 0
 
-    # The columns: monomials in the generators up to the degree, times monomials in the
-    # symbolic parameters up to theirs, expanded at superint's values of the others. Its
-    # columns leave out generators free of the phase variables, which enter as their values
-    # (and `G = c` as a relation of its own): the span is the same.
-    columns = [m * nu for m in monomials(gens, degree) for nu in monomials(symbolic, s_degree)]
+    # The columns: monomials up to the degree in the generators that are not constants, times
+    # monomials in the symbolic parameters up to theirs, expanded at superint's values of the
+    # others. A generator free of the phase variables enters the brackets as its value, and
+    # `G = c` is a relation of its own.
+    constants = [g for g, d in zip(gens, defined) if not d.free_symbols & set(phase)]
+    varying = [g for g in gens if g not in constants]
+    columns = [m * nu for m in monomials(varying, degree)
+               for nu in monomials(symbolic, s_degree)]
     expanded = [at_values(expand(c)) for c in columns]
     space = list(phase) + symbolic
     span = rank_of(expanded, space)
-    constants = {g for g, d in zip(gens, defined) if not d.free_symbols & set(phase)}
-    varying = sum(1 for c in columns if not c.free_symbols & constants)
-    if (found["monomials"], found["rank"]) != (varying, span):
+    if (found["monomials"], found["rank"]) != (len(columns), span):
         return (f"superint has {found['monomials']} monomials of rank {found['rank']}, SymPy "
-                f"{varying} of rank {span}")
+                f"{len(columns)} of rank {span}")
 
     # The table, and the claims (a claim with a condition holds at superint's values only).
     claims = {c["id"]: c for c in doc["claims"]}
@@ -579,9 +580,10 @@ def check_closure(doc, names, texts, degree):
         return f"'closes' is {found['closes']} with {outside} brackets outside"
 
     # The relations: each vanishes (for every value of the parameters, unless it has a
-    # condition) and is no zero polynomial; with their multiples that stay within the
-    # degrees, they span the nullspace of the columns' expansions.
-    multiples = []
+    # condition) and is no zero polynomial. Those of the constants are one `G = c` each; the
+    # others, with their multiples that stay within the degrees, span the nullspace of the
+    # columns' expansions.
+    multiples, of_constants = [], 0
     for rid in found["relations"]:
         claim = claims[rid]
         left, right = claim["ascii"].split(" = ")
@@ -590,12 +592,17 @@ def check_closure(doc, names, texts, degree):
         if relation == 0 or at_values(value) != 0 or \
                 (claim["condition_ascii"] is None and sp.expand(value) != 0):
             return f"the relation {claim['ascii']} does not hold"
+        if relation.free_symbols & set(constants):
+            of_constants += 1
+            continue
         relation = at_values(relation)
         multiples += [sp.expand(m * nu * relation)
-                      for m in monomials(gens, degree - gen_degree(relation))
+                      for m in monomials(varying, degree - gen_degree(relation))
                       for nu in monomials(symbolic, s_degree - par_degree(relation))]
+    if of_constants != (len(constants) if degree >= 1 else 0):
+        return f"{of_constants} relations of the constants {constants}"
     kernel = len(columns) - span
-    spanned = rank_of(multiples, list(gens) + symbolic) if multiples else 0
+    spanned = rank_of(multiples, varying + symbolic) if multiples else 0
     if spanned != kernel:
         return (f"the relations printed and their multiples span {spanned} of the {kernel} "
                 f"dimensions of relations")
