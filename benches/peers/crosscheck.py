@@ -41,6 +41,10 @@ resonances) is complete when its count of unknowns and the dimension it reports 
 found with `E = e^{iθ}`: `{F, H}` is then a Laurent polynomial in `E`, whose coefficients' real
 and imaginary parts are the equations.
 
+A search of a random potential with the radical `r = √(x² + y²)` (`1/r`, `r`, `r²`, `x/r³`, `y/r`
+and an oscillator's `x²`) is complete when its unknowns (the space's functions `p^a x^c y^d r^j`
+that are independent as functions) and dimension are SymPy's, each function written `A + B r`.
+
 A search of a random top (a quadratic form in M on so(3)*, or on e(3)* with a linear and
 sometimes a quadratic term in γ) is complete when its dimension at a degree in the Poisson
 variables is the one `search_dimensions.py` finds for it.
@@ -448,6 +452,56 @@ def search_case(binary, tmp, rng):
     return "ok", f"V = {potential} {' '.join(options)}: {found[1]} integrals"
 
 
+def radical_search_case(binary, tmp, rng):
+    """`superint search` of a random central or near-central potential in the plane with the
+    radical `r = √(x² + y²)` (Kepler's `−k/r`, `r`, `r²`, a dipole `x/r³`, an oscillator): the
+    unknowns (the space's functions `p^a x^c y^d r^j` independent as functions) and the
+    dimension it reports, against SymPy's, which writes every function as `A + B r` with
+    polynomials `A`, `B` (times a power of `r` that clears the negative ones, `r²` reduced
+    to `x² + y²`). Returns (status, message)."""
+    c = lambda: random_rational(rng)
+    terms = rng.sample([f"({c()})/r", f"({c()})*r", f"({c()})*r^2", f"({c()})*x/r^3",
+                        f"({c()})*x^2", f"({c()})*y/r"], rng.randint(1, 2))
+    potential = " + ".join(terms)
+    degrees = rng.randint(1, 2), rng.randint(0, 2), rng.randint(1, 2)
+    text = (f'name = "random central potential"\n'
+            f'hamiltonian = "(p_x^2 + p_y^2)/2 + {potential}"\n'
+            f'[phase_space]\ncoordinates = ["x", "y"]\nradicals = {{ r = "x^2 + y^2" }}\n')
+    file = os.path.join(tmp, "central.toml")
+    with open(file, "w") as out:
+        out.write(text)
+    status, doc = run_json(binary, ["search", file, "--momenta-degree", str(degrees[0]),
+                                    "--positions-degree", str(degrees[1]),
+                                    "--radicals-degree", str(degrees[2])], timeout=300)
+    if status != "ok":
+        return status, doc
+    found = (doc["searches"][0]["unknowns"], doc["searches"][0]["dimension"])
+    x, y, px, py, r = sp.symbols("x y p_x p_y r", positive=True)
+    h = sp.sympify(f"(p_x**2 + p_y**2)/2 + {potential.replace('^', '**')}",
+                   locals={"x": x, "y": y, "p_x": px, "p_y": py, "r": r})
+    top = degrees[2] + 8  # past r^(−j−5): f's lowest power times a dipole force's
+    def canonical(f):
+        """`f·r^top` as `A + B r`: a polynomial of degree at most 1 in `r`."""
+        f = sp.expand(f * r**top)
+        return sp.rem(sp.Poly(f, r), sp.Poly(r**2 - x**2 - y**2, r)).as_expr()
+    d = lambda f, v: sp.diff(f, v) + sp.diff(f, r) * v / r  # r depends on x and y
+    flow = lambda f: canonical(d(f, x) * sp.diff(h, px) - sp.diff(f, px) * d(h, x)
+                               + d(f, y) * sp.diff(h, py) - sp.diff(f, py) * d(h, y))
+    space = [m * q * r**j for m in monomials([px, py], degrees[0])
+             for q in monomials([x, y], degrees[1])
+             for j in range(-degrees[2], degrees[2] + 1)]
+    variables = [x, y, px, py, r]
+    independent = rank_of([canonical(f) for f in space], variables)
+    # The combinations with {F, H} = 0, less those that are zero as functions.
+    dependent = len(space) - independent
+    expected = (independent, integrals_dimension(space, flow, variables) - dependent)
+    if found != expected:
+        return "failed", (f"V = {potential}, degrees (momenta, positions, radicals) {degrees}: "
+                          f"superint has {found[0]} unknowns and {found[1]} integrals, SymPy "
+                          f"{expected[0]} and {expected[1]}")
+    return "ok", f"V = {potential}, degrees {degrees}: {found[1]} integrals"
+
+
 PLANE = """name = "the plane"
 hamiltonian = "(p_x^2 + p_y^2)/2 + a*(x^2 + y^2)/2"
 [phase_space]
@@ -773,6 +827,7 @@ ALONE = {
     "search": (search_case, "searches of random potentials"),
     "search with an angle": (angle_search_case, "searches of rotors"),
     "search of a top": (top_search_case, "searches of tops"),
+    "search with a radical": (radical_search_case, "searches with a radical"),
     "closure": (closure_case, "closures of random generators"),
 }
 
@@ -818,7 +873,7 @@ def main():
         f_text, g_text = random_expression(rng, system), random_expression(rng, system)
         op = rng.choice(["bracket", "bracket", "bracket at a condition", "product", "power",
                          "rank", "search", "search with an angle", "search of a top",
-                         "closure"])
+                         "search with a radical", "closure"])
         if op in ALONE:
             run, kind = ALONE[op]
             status, message = run(args.superint, tmp, rng)
