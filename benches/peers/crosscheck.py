@@ -45,6 +45,9 @@ A search of a random potential with the radical `r = √(x² + y²)` (`1/r`, `r`
 and an oscillator's `x²`) is complete when its unknowns (the space's functions `p^a x^c y^d r^j`
 that are independent as functions) and dimension are SymPy's, each function written `A + B r`.
 
+A search of two particles on a line with the declared denominator `x − y` (`1/(x − y)²`,
+`1/(x − y)`, oscillators) is complete in the same way, each function times a power of `x − y`.
+
 A search of a random top (a quadratic form in M on so(3)*, or on e(3)* with a linear and
 sometimes a quadratic term in γ) is complete when its dimension at a degree in the Poisson
 variables is the one `search_dimensions.py` finds for it.
@@ -452,6 +455,55 @@ def search_case(binary, tmp, rng):
     return "ok", f"V = {potential} {' '.join(options)}: {found[1]} integrals"
 
 
+def functions_dimension(space, flow, canonical, variables):
+    """For functions `space` that may be dependent, each written as a polynomial in `variables`
+    by `canonical` (one form for equal functions), and `flow` giving that form of {F, H}: how
+    many are independent, and the dimension of the integrals in their span (the combinations
+    with {F, H} = 0, less those that are zero as functions)."""
+    independent = rank_of([canonical(f) for f in space], variables)
+    dependent = len(space) - independent
+    return independent, integrals_dimension(space, flow, variables) - dependent
+
+
+def denominator_search_case(binary, tmp, rng):
+    """`superint search` of two particles on a line with a declared denominator `x − y`
+    (Calogero's `g/(x − y)²`, a Coulomb `g/(x − y)`, with or without an oscillator): the
+    unknowns (the functions `p^a x^c y^d/(x − y)^k` independent as functions) and dimension it
+    reports, against SymPy's, which multiplies every function by a power of `x − y`. Returns
+    (status, message)."""
+    c = lambda: random_rational(rng)
+    potential = " + ".join(rng.sample([f"({c()})/(x - y)^2", f"({c()})/(x - y)",
+                                       f"({c()})*(x^2 + y^2)", f"({c()})*(x - y)^2"],
+                                      rng.randint(1, 2)))
+    degrees = rng.randint(1, 2), rng.randint(0, 2), rng.randint(1, 2)
+    text = (f'name = "two particles"\nhamiltonian = "(p_x^2 + p_y^2)/2 + {potential}"\n'
+            f'[phase_space]\ncoordinates = ["x", "y"]\ndenominators = ["x - y"]\n')
+    file = os.path.join(tmp, "particles.toml")
+    with open(file, "w") as out:
+        out.write(text)
+    status, doc = run_json(binary, ["search", file, "--momenta-degree", str(degrees[0]),
+                                    "--positions-degree", str(degrees[1]),
+                                    "--denominators-degree", str(degrees[2])], timeout=300)
+    if status != "ok":
+        return status, doc
+    found = (doc["searches"][0]["unknowns"], doc["searches"][0]["dimension"])
+    x, y, px, py = sp.symbols("x y p_x p_y")
+    h = sp.sympify(f"(p_x**2 + p_y**2)/2 + {potential.replace('^', '**')}",
+                   locals={"x": x, "y": y, "p_x": px, "p_y": py})
+    clear = (x - y)**(degrees[2] + 4)  # past the force's 1/(x − y)³ times f's lowest power
+    canonical = lambda f: sp.expand(sp.cancel(f * clear))
+    flow = lambda f: canonical(sp.diff(f, x) * sp.diff(h, px) - sp.diff(f, px) * sp.diff(h, x)
+                               + sp.diff(f, y) * sp.diff(h, py) - sp.diff(f, py) * sp.diff(h, y))
+    space = [m * q / (x - y)**k for m in monomials([px, py], degrees[0])
+             for q in monomials([x, y], degrees[1]) for k in range(degrees[2] + 1)]
+    expected = functions_dimension(space, flow, canonical, [x, y, px, py])
+    if found != expected:
+        return "failed", (f"V = {potential}, degrees (momenta, positions, denominators) "
+                          f"{degrees}: superint has {found[0]} unknowns and {found[1]} "
+                          f"integrals, SymPy {expected[0]} and {expected[1]}")
+    return "ok", f"V = {potential}, degrees {degrees}: {found[1]} integrals"
+
+
 def radical_search_case(binary, tmp, rng):
     """`superint search` of a random central or near-central potential in the plane with the
     radical `r = √(x² + y²)` (Kepler's `−k/r`, `r`, `r²`, a dipole `x/r³`, an oscillator): the
@@ -490,11 +542,7 @@ def radical_search_case(binary, tmp, rng):
     space = [m * q * r**j for m in monomials([px, py], degrees[0])
              for q in monomials([x, y], degrees[1])
              for j in range(-degrees[2], degrees[2] + 1)]
-    variables = [x, y, px, py, r]
-    independent = rank_of([canonical(f) for f in space], variables)
-    # The combinations with {F, H} = 0, less those that are zero as functions.
-    dependent = len(space) - independent
-    expected = (independent, integrals_dimension(space, flow, variables) - dependent)
+    expected = functions_dimension(space, flow, canonical, [x, y, px, py, r])
     if found != expected:
         return "failed", (f"V = {potential}, degrees (momenta, positions, radicals) {degrees}: "
                           f"superint has {found[0]} unknowns and {found[1]} integrals, SymPy "
@@ -828,6 +876,7 @@ ALONE = {
     "search with an angle": (angle_search_case, "searches of rotors"),
     "search of a top": (top_search_case, "searches of tops"),
     "search with a radical": (radical_search_case, "searches with a radical"),
+    "search with a denominator": (denominator_search_case, "searches with a denominator"),
     "closure": (closure_case, "closures of random generators"),
 }
 
@@ -873,7 +922,7 @@ def main():
         f_text, g_text = random_expression(rng, system), random_expression(rng, system)
         op = rng.choice(["bracket", "bracket", "bracket at a condition", "product", "power",
                          "rank", "search", "search with an angle", "search of a top",
-                         "search with a radical", "closure"])
+                         "search with a radical", "search with a denominator", "closure"])
         if op in ALONE:
             run, kind = ALONE[op]
             status, message = run(args.superint, tmp, rng)
