@@ -60,7 +60,9 @@ computes, every bracket it marks `*` is outside the span of the monomials in the
 to the degree (SymPy's rank), and the relations it prints vanish and, with their multiples up
 to the degree, span the nullspace of those monomials' expansions (SymPy's dimension). What
 superint states for every value of the parameters must hold for every value; what it states at
-its values, there.
+its values, there. Closures of the rotor's generators (quadratic forms, `p_θ`, the resonant
+`(p_x + i w x)^m e^{−inθ}`, its conjugate and real parts, `cos θ`) at the resonance
+`p_θ = w m/n` (`--when`) are checked the same way, every function written in `E = e^{iθ}`.
 
 A case that superint refuses with a message (exit code 2: dividing by a sum that is no declared
 denominator, say) is counted and skipped, as is a result too long for SymPy's parser (Python's
@@ -611,45 +613,130 @@ def closure_case(binary, tmp, rng):
     if status != "ok":
         return status, doc
     case = f"generators {dict(zip(names, texts))}, {' '.join(options)}"
-    failure = check_closure(doc, names, texts, degree)
+    failure = check_closure(doc, names, texts, degree, Plane())
     if failure:
         return "failed", f"{case}: {failure}"
     return "ok", f"{case}: agreed"
 
 
-def check_closure(doc, names, texts, degree):
+def rotor_closure_case(binary, tmp, rng):
+    """`superint closure` of two to four generators of the rotor coupled to an oscillator of
+    frequency w, at a resonance `p_θ = w·m/n` (`--when`): quadratic forms, `p_θ`, the
+    resonant `K = (p_x + i w x)^m e^{−inθ}`, its conjugate and real parts, `cos θ`; checked as
+    the plane's closures are (`check_closure`), on the surface. Returns (status, message)."""
+    w = rng.choice(["1", "2"])
+    m, n = rng.choice([(1, 1), (2, 1), (1, 2)])
+    value = sp.Rational(w) * m / n
+    pool = ["x*p_y - y*p_x", f"p_x^2 + {w}^2*x^2", f"p_y^2 + {w}^2*y^2",
+            f"p_x*p_y + {w}^2*x*y", "p_theta", f"(p_x + i*{w}*x)^{m}*exp(-{n}*i*theta)",
+            f"(p_x - i*{w}*x)^{m}*exp({n}*i*theta)", f"p_x*cos(theta) - {w}*x*sin(theta)",
+            f"p_y*sin(theta) + {w}*y*cos(theta)", "cos(theta)"]
+    count, degree = rng.randint(2, 4), rng.randint(1, 2)
+    names = [f"G{k + 1}" for k in range(count)]
+    texts = [f"({random_rational(rng)})*({t})" for t in rng.sample(pool, count)]
+    file = os.path.join(tmp, "rotor-closure.toml")
+    with open(file, "w") as out:
+        out.write(f'name = "the rotor"\n'
+                  f'hamiltonian = "(p_x^2 + p_y^2 + p_theta^2)/2 + ({w})^2*(x^2 + y^2)/2"\n'
+                  f'[phase_space]\ncoordinates = ["x", "y"]\nangles = ["theta"]\n')
+    defines = [a for name, t in zip(names, texts) for a in ("--define", f"{name}={t}")]
+    options = ["--degree", str(degree), "--when", f"p_theta = {value}"]
+    status, doc = run_json(binary, ["closure", file] + names + defines + options)
+    if status != "ok":
+        return status, doc
+    case = f"generators {dict(zip(names, texts))}, {' '.join(options)}"
+    failure = check_closure(doc, names, texts, degree, Rotor(value, 2 * degree + 6))
+    if failure:
+        return "failed", f"{case}: {failure}"
+    return "ok", f"{case}: agreed"
+
+
+class Plane:
+    """The closures' plane, x, y, p_x, p_y with parameters a, b: every expression a
+    polynomial, no condition."""
+
+    def __init__(self):
+        self.variables = list(sp.symbols("x y p_x p_y", real=True))
+        self.parameters = dict(zip("ab", sp.symbols("a b", real=True)))
+        self.locals = dict(zip(["x", "y", "p_x", "p_y"], self.variables), **self.parameters)
+        x, y, px, py = self.variables
+        self.pairs = [(x, px), (y, py)]
+
+    def read(self, text):
+        return sp.sympify(text.replace("^", "**"), locals=self.locals)
+
+    def bracket(self, f, g):
+        return sp.expand(sum(sp.diff(f, q) * sp.diff(g, p) - sp.diff(f, p) * sp.diff(g, q)
+                             for q, p in self.pairs))
+
+    def at(self, e):
+        """`e` on the condition's surface."""
+        return e
+
+    def poly(self, e):
+        """`e` as a polynomial in `variables` (one form for equal functions)."""
+        return sp.expand(e)
+
+
+class Rotor(Plane):
+    """The closures' rotor: the plane and an angle θ with its momentum, each function written
+    in `E = e^{iθ}` (a Laurent polynomial, times `E^shift` for a polynomial), at the
+    condition `p_θ = value`."""
+
+    def __init__(self, value, shift):
+        super().__init__()
+        self.theta, self.p_theta, self.e = sp.symbols("theta p_theta E")
+        self.variables += [self.p_theta, self.e]
+        self.locals.update(theta=self.theta, p_theta=self.p_theta, i=sp.I, exp=sp.exp,
+                           cos=sp.cos, sin=sp.sin)
+        self.value, self.shift = sp.Rational(value), shift
+
+    def read(self, text):
+        e = super().read(text).rewrite(sp.exp)
+        return sp.expand(e.subs(self.theta, -sp.I * sp.log(self.e)))
+
+    def bracket(self, f, g):
+        d_theta = lambda h: sp.I * self.e * sp.diff(h, self.e)
+        return sp.expand(super().bracket(f, g) + d_theta(f) * sp.diff(g, self.p_theta)
+                         - sp.diff(f, self.p_theta) * d_theta(g))
+
+    def at(self, e):
+        return sp.expand(e.subs(self.p_theta, self.value))
+
+    def poly(self, e):
+        return sp.expand(e * self.e**self.shift)
+
+
+def check_closure(doc, names, texts, degree, model):
     """What is wrong with superint's closure `doc` of the generators `names` = `texts` up to
-    `degree`, by SymPy, or None."""
-    phase = sp.symbols("x y p_x p_y", real=True)
-    a, b = sp.symbols("a b", real=True)
+    `degree`, in `model` (`Plane` or `Rotor`), by SymPy, or None."""
     gens = sp.symbols(" ".join(names))
-    symbols = dict(zip(["x", "y", "p_x", "p_y", "a", "b"], list(phase) + [a, b]))
-    defined = [sp.sympify(t.replace("^", "**"), locals=symbols) for t in texts]
+    defined = [model.read(t) for t in texts]
     found = doc["closures"][0]
-    fixed = {symbols[f["parameter"]]: sp.Rational(f["value"])
+    fixed = {model.parameters[f["parameter"]]: sp.Rational(f["value"])
              for f in found["parameters"]["fixed"]}
-    symbolic = [symbols[n] for n in found["parameters"]["symbolic"]]
+    symbolic = [model.parameters[n] for n in found["parameters"]["symbolic"]]
     s_degree = found["parameters"]["symbolic_degree"] or 0
-    at_values = lambda e: sp.expand(e.subs(fixed))
+    # On the surface, at superint's values of the parameters, as a polynomial.
+    at_values = lambda e: model.poly(model.at(sp.expand(e.subs(fixed))))
     in_gens = lambda text: sp.sympify(text.replace("^", "**"),
-                                      locals=dict(zip(names, gens), a=a, b=b))
-    generators = dict(zip(gens, defined))
-    expand = lambda e: sp.expand(e.subs(generators))
-    bracket = lambda f, g: sp.expand(sum(sp.diff(f, q) * sp.diff(g, p) - sp.diff(f, p) *
-                                         sp.diff(g, q) for q, p in (phase[:3:2], phase[1::2])))
+                                      locals=dict(zip(names, gens), i=sp.I, **model.parameters))
+    # The condition applies to the generators, and after each bracket of them.
+    on_surface = [model.at(d) for d in defined]
+    expand = lambda e: sp.expand(e.subs(dict(zip(gens, on_surface))))
     gen_degree = lambda e: sp.Poly(e, *gens).total_degree()
     par_degree = lambda e: sp.Poly(e, *symbolic).total_degree() if symbolic else 0
 
     # The columns: monomials up to the degree in the generators that are not constants, times
     # monomials in the symbolic parameters up to theirs, expanded at superint's values of the
-    # others. A generator free of the phase variables enters the brackets as its value, and
-    # `G = c` is a relation of its own.
-    constants = [g for g, d in zip(gens, defined) if not d.free_symbols & set(phase)]
+    # others. A generator that is constant on the surface enters as its value, and `G = c` is
+    # a relation of its own.
+    constants = [g for g, d in zip(gens, on_surface) if not d.free_symbols & set(model.variables)]
     varying = [g for g in gens if g not in constants]
     columns = [m * nu for m in monomials(varying, degree)
                for nu in monomials(symbolic, s_degree)]
     expanded = [at_values(expand(c)) for c in columns]
-    space = list(phase) + symbolic
+    space = model.variables + symbolic
     span = rank_of(expanded, space)
     if (found["monomials"], found["rank"]) != (len(columns), span):
         return (f"superint has {found['monomials']} monomials of rank {found['rank']}, SymPy "
@@ -666,7 +753,7 @@ def check_closure(doc, names, texts, degree):
     outside = 0
     for i, j in itertools.product(range(len(names)), repeat=2):
         text = entries[i][j]["ascii"]
-        theirs = bracket(defined[i], defined[j])
+        theirs = model.at(model.bracket(defined[i], defined[j]))
         pair = f"{{{names[i]}, {names[j]}}}"
         if text == "*":
             outside += 1
@@ -697,7 +784,7 @@ def check_closure(doc, names, texts, degree):
         if relation.free_symbols & set(constants):
             of_constants += 1
             continue
-        relation = at_values(relation)
+        relation = sp.expand(relation.subs(fixed))
         multiples += [sp.expand(m * nu * relation)
                       for m in monomials(varying, degree - gen_degree(relation))
                       for nu in monomials(symbolic, s_degree - par_degree(relation))]
@@ -878,6 +965,7 @@ ALONE = {
     "search with a radical": (radical_search_case, "searches with a radical"),
     "search with a denominator": (denominator_search_case, "searches with a denominator"),
     "closure": (closure_case, "closures of random generators"),
+    "closure at a resonance": (rotor_closure_case, "closures at a resonance"),
 }
 
 
@@ -922,7 +1010,8 @@ def main():
         f_text, g_text = random_expression(rng, system), random_expression(rng, system)
         op = rng.choice(["bracket", "bracket", "bracket at a condition", "product", "power",
                          "rank", "search", "search with an angle", "search of a top",
-                         "search with a radical", "search with a denominator", "closure"])
+                         "search with a radical", "search with a denominator", "closure",
+                         "closure at a resonance"])
         if op in ALONE:
             run, kind = ALONE[op]
             status, message = run(args.superint, tmp, rng)
