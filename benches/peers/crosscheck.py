@@ -762,7 +762,7 @@ def check_closure(doc, names, texts, degree, model):
             continue
         difference = expand(in_gens(text)) - theirs
         if at_values(difference) != 0:
-            return f"{pair} = {text} is wrong at {fixed}"
+            return f"{pair} = {text} is wrong" + (f" at {fixed}" if fixed else "")
         if general.get(pair, lifted_table) and sp.expand(difference) != 0:
             return f"{pair} = {text} is said for every value of the parameters, and is wrong"
     if found["closes"] != (outside == 0):
