@@ -380,6 +380,84 @@ def random_potential(rng, kind=None):
     return f"({c()})*(x^2 + y^2) + ({c()})*(x^2 + y^2)^2"
 
 
+class Plane:
+    """The plane, x, y, p_x, p_y with parameters a, b: every expression a polynomial, no
+    condition. With `Rotor`, the model of the functions a closure or a search is checked in."""
+
+    def __init__(self):
+        self.variables = list(sp.symbols("x y p_x p_y", real=True))
+        self.parameters = dict(zip("ab", sp.symbols("a b", real=True)))
+        self.locals = dict(zip(["x", "y", "p_x", "p_y"], self.variables), **self.parameters)
+        x, y, px, py = self.variables
+        self.pairs = [(x, px), (y, py)]
+
+    def read(self, text):
+        return sp.sympify(text.replace("^", "**"), locals=self.locals)
+
+    def bracket(self, f, g):
+        return sp.expand(sum(sp.diff(f, q) * sp.diff(g, p) - sp.diff(f, p) * sp.diff(g, q)
+                             for q, p in self.pairs))
+
+    def at(self, e):
+        """`e` on the condition's surface."""
+        return e
+
+    def poly(self, e):
+        """`e` as a polynomial in `variables` (one form for equal functions)."""
+        return sp.expand(e)
+
+
+class Rotor(Plane):
+    """The plane and an angle θ with its momentum, each function written in `E = e^{iθ}` (a
+    Laurent polynomial, times `E^shift` for a polynomial), at the condition `p_θ = value`."""
+
+    def __init__(self, value, shift):
+        """At `p_θ = value` (anywhere when None), polynomials times `E^shift`."""
+        super().__init__()
+        self.theta, self.p_theta, self.e = sp.symbols("theta p_theta E")
+        self.variables += [self.p_theta, self.e]
+        self.locals.update(theta=self.theta, p_theta=self.p_theta, i=sp.I, exp=sp.exp,
+                           cos=sp.cos, sin=sp.sin)
+        self.value = None if value is None else sp.Rational(value)
+        self.shift = shift
+
+    def read(self, text):
+        e = super().read(text).rewrite(sp.exp)
+        return sp.expand(e.subs(self.theta, -sp.I * sp.log(self.e)))
+
+    def bracket(self, f, g):
+        d_theta = lambda h: sp.I * self.e * sp.diff(h, self.e)
+        return sp.expand(super().bracket(f, g) + d_theta(f) * sp.diff(g, self.p_theta)
+                         - sp.diff(f, self.p_theta) * d_theta(g))
+
+    def at(self, e):
+        return e if self.value is None else sp.expand(e.subs(self.p_theta, self.value))
+
+    def poly(self, e):
+        return sp.expand(e * self.e**self.shift)
+
+
+def search_found(binary, tmp, text, options):
+    """`superint search` of the system file `text` with `options`: ("ok", (its unknowns, its
+    dimension)), or ("refused" or "crashed", why)."""
+    file = os.path.join(tmp, "search.toml")
+    with open(file, "w") as out:
+        out.write(text)
+    status, doc = run_json(binary, ["search", file] + options, timeout=300)
+    if status != "ok":
+        return status, doc
+    return "ok", (doc["searches"][0]["unknowns"], doc["searches"][0]["dimension"])
+
+
+def search_verdict(found, expected, case):
+    """("ok", …) when superint's (unknowns, dimension) `found` are SymPy's `expected`, else
+    ("failed", …), `case` saying what was searched."""
+    if found != expected:
+        return "failed", (f"{case}: superint has {found[0]} unknowns and {found[1]} integrals, "
+                          f"SymPy {expected[0]} and {expected[1]}")
+    return "ok", f"{case}: {found[1]} integrals"
+
+
 def sympy_search_dimension(h, momenta_degree, positions_degree, symbolic=(), s_degree=0,
                            laurent=False):
     """The dimension of the integrals of `h` among the polynomials of degree at most
@@ -433,28 +511,19 @@ def search_case(binary, tmp, rng):
         options = ["--symbolic", "a,b", "--parameters-degree", str(s_degree)]
     text = (f'name = "random potential"\nhamiltonian = "(p_x^2 + p_y^2)/2 + {potential}"\n'
             f'[phase_space]\ncoordinates = ["x", "y"]\nparameters = ["a", "b"]\n')
-    file = os.path.join(tmp, "potential.toml")
-    with open(file, "w") as out:
-        out.write(text)
-    status, doc = run_json(binary, ["search", file, "--momenta-degree", str(momenta_degree),
-                                    "--positions-degree", str(positions_degree)] + options,
-                           timeout=300)
+    status, found = search_found(binary, tmp, text, ["--momenta-degree", str(momenta_degree),
+                                                     "--positions-degree",
+                                                     str(positions_degree)] + options)
     if status != "ok":
-        return status, doc
-    found = doc["searches"][0]
-    found = (found["unknowns"], found["dimension"])
+        return status, found
     x, y, px, py = sp.symbols("x y p_x p_y", real=True)
     a, b = sp.symbols("a b", real=True)
     h = sp.sympify(f"(p_x**2 + p_y**2)/2 + {potential.replace('^', '**')}",
                    locals={"x": x, "y": y, "p_x": px, "p_y": py, "a": a, "b": b})
     expected = sympy_search_dimension(h, momenta_degree, positions_degree, symbolic, s_degree,
                                       laurent)
-    if found != expected:
-        return "failed", (f"V = {potential}, momenta degree {momenta_degree}, positions degree "
-                          f"{positions_degree} {' '.join(options)}: superint has {found[0]} "
-                          f"unknowns and {found[1]} integrals, SymPy {expected[0]} and "
-                          f"{expected[1]}")
-    return "ok", f"V = {potential} {' '.join(options)}: {found[1]} integrals"
+    return search_verdict(found, expected, f"V = {potential}, momenta degree {momenta_degree}, "
+                          f"positions degree {positions_degree} {' '.join(options)}")
 
 
 def functions_dimension(space, flow, canonical, variables):
@@ -480,15 +549,11 @@ def denominator_search_case(binary, tmp, rng):
     degrees = rng.randint(1, 2), rng.randint(0, 2), rng.randint(1, 2)
     text = (f'name = "two particles"\nhamiltonian = "(p_x^2 + p_y^2)/2 + {potential}"\n'
             f'[phase_space]\ncoordinates = ["x", "y"]\ndenominators = ["x - y"]\n')
-    file = os.path.join(tmp, "particles.toml")
-    with open(file, "w") as out:
-        out.write(text)
-    status, doc = run_json(binary, ["search", file, "--momenta-degree", str(degrees[0]),
-                                    "--positions-degree", str(degrees[1]),
-                                    "--denominators-degree", str(degrees[2])], timeout=300)
+    status, found = search_found(binary, tmp, text, ["--momenta-degree", str(degrees[0]),
+                                                     "--positions-degree", str(degrees[1]),
+                                                     "--denominators-degree", str(degrees[2])])
     if status != "ok":
-        return status, doc
-    found = (doc["searches"][0]["unknowns"], doc["searches"][0]["dimension"])
+        return status, found
     x, y, px, py = sp.symbols("x y p_x p_y")
     h = sp.sympify(f"(p_x**2 + p_y**2)/2 + {potential.replace('^', '**')}",
                    locals={"x": x, "y": y, "p_x": px, "p_y": py})
@@ -499,11 +564,8 @@ def denominator_search_case(binary, tmp, rng):
     space = [m * q / (x - y)**k for m in monomials([px, py], degrees[0])
              for q in monomials([x, y], degrees[1]) for k in range(degrees[2] + 1)]
     expected = functions_dimension(space, flow, canonical, [x, y, px, py])
-    if found != expected:
-        return "failed", (f"V = {potential}, degrees (momenta, positions, denominators) "
-                          f"{degrees}: superint has {found[0]} unknowns and {found[1]} "
-                          f"integrals, SymPy {expected[0]} and {expected[1]}")
-    return "ok", f"V = {potential}, degrees {degrees}: {found[1]} integrals"
+    return search_verdict(found, expected, f"V = {potential}, degrees (momenta, positions, "
+                          f"denominators) {degrees}")
 
 
 def radical_search_case(binary, tmp, rng):
@@ -521,15 +583,11 @@ def radical_search_case(binary, tmp, rng):
     text = (f'name = "random central potential"\n'
             f'hamiltonian = "(p_x^2 + p_y^2)/2 + {potential}"\n'
             f'[phase_space]\ncoordinates = ["x", "y"]\nradicals = {{ r = "x^2 + y^2" }}\n')
-    file = os.path.join(tmp, "central.toml")
-    with open(file, "w") as out:
-        out.write(text)
-    status, doc = run_json(binary, ["search", file, "--momenta-degree", str(degrees[0]),
-                                    "--positions-degree", str(degrees[1]),
-                                    "--radicals-degree", str(degrees[2])], timeout=300)
+    status, found = search_found(binary, tmp, text, ["--momenta-degree", str(degrees[0]),
+                                                     "--positions-degree", str(degrees[1]),
+                                                     "--radicals-degree", str(degrees[2])])
     if status != "ok":
-        return status, doc
-    found = (doc["searches"][0]["unknowns"], doc["searches"][0]["dimension"])
+        return status, found
     x, y, px, py, r = sp.symbols("x y p_x p_y r", positive=True)
     h = sp.sympify(f"(p_x**2 + p_y**2)/2 + {potential.replace('^', '**')}",
                    locals={"x": x, "y": y, "p_x": px, "p_y": py, "r": r})
@@ -545,11 +603,8 @@ def radical_search_case(binary, tmp, rng):
              for q in monomials([x, y], degrees[1])
              for j in range(-degrees[2], degrees[2] + 1)]
     expected = functions_dimension(space, flow, canonical, [x, y, px, py, r])
-    if found != expected:
-        return "failed", (f"V = {potential}, degrees (momenta, positions, radicals) {degrees}: "
-                          f"superint has {found[0]} unknowns and {found[1]} integrals, SymPy "
-                          f"{expected[0]} and {expected[1]}")
-    return "ok", f"V = {potential}, degrees {degrees}: {found[1]} integrals"
+    return search_verdict(found, expected, f"V = {potential}, degrees (momenta, positions, "
+                          f"radicals) {degrees}")
 
 
 PLANE = """name = "the plane"
@@ -649,62 +704,6 @@ def rotor_closure_case(binary, tmp, rng):
     if failure:
         return "failed", f"{case}: {failure}"
     return "ok", f"{case}: agreed"
-
-
-class Plane:
-    """The closures' plane, x, y, p_x, p_y with parameters a, b: every expression a
-    polynomial, no condition."""
-
-    def __init__(self):
-        self.variables = list(sp.symbols("x y p_x p_y", real=True))
-        self.parameters = dict(zip("ab", sp.symbols("a b", real=True)))
-        self.locals = dict(zip(["x", "y", "p_x", "p_y"], self.variables), **self.parameters)
-        x, y, px, py = self.variables
-        self.pairs = [(x, px), (y, py)]
-
-    def read(self, text):
-        return sp.sympify(text.replace("^", "**"), locals=self.locals)
-
-    def bracket(self, f, g):
-        return sp.expand(sum(sp.diff(f, q) * sp.diff(g, p) - sp.diff(f, p) * sp.diff(g, q)
-                             for q, p in self.pairs))
-
-    def at(self, e):
-        """`e` on the condition's surface."""
-        return e
-
-    def poly(self, e):
-        """`e` as a polynomial in `variables` (one form for equal functions)."""
-        return sp.expand(e)
-
-
-class Rotor(Plane):
-    """The closures' rotor: the plane and an angle θ with its momentum, each function written
-    in `E = e^{iθ}` (a Laurent polynomial, times `E^shift` for a polynomial), at the
-    condition `p_θ = value`."""
-
-    def __init__(self, value, shift):
-        super().__init__()
-        self.theta, self.p_theta, self.e = sp.symbols("theta p_theta E")
-        self.variables += [self.p_theta, self.e]
-        self.locals.update(theta=self.theta, p_theta=self.p_theta, i=sp.I, exp=sp.exp,
-                           cos=sp.cos, sin=sp.sin)
-        self.value, self.shift = sp.Rational(value), shift
-
-    def read(self, text):
-        e = super().read(text).rewrite(sp.exp)
-        return sp.expand(e.subs(self.theta, -sp.I * sp.log(self.e)))
-
-    def bracket(self, f, g):
-        d_theta = lambda h: sp.I * self.e * sp.diff(h, self.e)
-        return sp.expand(super().bracket(f, g) + d_theta(f) * sp.diff(g, self.p_theta)
-                         - sp.diff(f, self.p_theta) * d_theta(g))
-
-    def at(self, e):
-        return sp.expand(e.subs(self.p_theta, self.value))
-
-    def poly(self, e):
-        return sp.expand(e * self.e**self.shift)
 
 
 def check_closure(doc, names, texts, degree, model):
@@ -831,27 +830,16 @@ def sympy_angle_search_dimension(h_text, momenta_degree, positions_degree, trig_
     `E = e^{iθ}`, `{F, H}` is a Laurent polynomial in `E` whose coefficients, real and
     imaginary parts apart, are linear equations over Q in the real unknowns. With `when`, a
     value of p_θ: the functions are free of p_θ, and `{F, H}` vanishes at that value."""
-    x, y, px, py, pt, e = sp.symbols("x y p_x p_y p_theta E")
-    theta = sp.Symbol("theta")
-    trig = lambda expr: expr.rewrite(sp.exp).subs(sp.exp(sp.I * theta), e)
-    h = sp.expand(trig(sp.sympify(h_text.replace("^", "**"),
-                                  locals={"x": x, "y": y, "p_x": px, "p_y": py,
-                                          "p_theta": pt, "theta": theta})))
-    h = sp.expand(h.subs(sp.exp(-sp.I * theta), 1 / e).subs(sp.exp(sp.I * theta), e))
+    model = Rotor(when, trig_degree + 3)  # Laurent in E: shifted to a polynomial
+    x, y, px, py, pt, e = model.variables
+    h = model.read(h_text)
     waves = [sp.Integer(1)] + [w for k in range(1, trig_degree + 1)
                                for w in ((e**k + e**-k) / 2, (e**k - e**-k) / (2 * sp.I))]
     momenta = [px, py] if when is not None else [px, py, pt]
     space = [m * q * w for m in monomials(momenta, momenta_degree)
              for q in monomials([x, y], positions_degree) for w in waves]
-    d_theta = lambda g: sp.I * e * sp.diff(g, e)
-    bracket = lambda f: (sp.diff(f, x) * sp.diff(h, px) - sp.diff(f, px) * sp.diff(h, x)
-                         + sp.diff(f, y) * sp.diff(h, py) - sp.diff(f, py) * sp.diff(h, y)
-                         + d_theta(f) * sp.diff(h, pt) - sp.diff(f, pt) * d_theta(h))
-    flow = bracket if when is None else lambda f: bracket(f).subs(pt, sp.Rational(when))
-    # Laurent in E: shifted to a polynomial.
-    shift = trig_degree + 3
-    return len(space), integrals_dimension(space, lambda f: flow(f) * e**shift,
-                                           [x, y, px, py, pt, e])
+    flow = lambda f: model.poly(model.at(model.bracket(f, h)))
+    return len(space), integrals_dimension(space, flow, model.variables)
 
 
 def angle_search_case(binary, tmp, rng):
@@ -871,23 +859,15 @@ def angle_search_case(binary, tmp, rng):
     degrees = rng.randint(1, 2), rng.randint(0, 2), rng.randint(0, 2)
     text = (f'name = "random rotor"\nhamiltonian = "{h}"\n'
             f'[phase_space]\ncoordinates = ["x", "y"]\nangles = ["theta"]\n')
-    file = os.path.join(tmp, "rotor.toml")
-    with open(file, "w") as out:
-        out.write(text)
-    status, doc = run_json(binary, ["search", file, "--momenta-degree", str(degrees[0]),
-                                    "--positions-degree", str(degrees[1]), "--trig-degree",
-                                    str(degrees[2])] +
-                           (["--when", f"p_theta = {when}"] if when else []), timeout=300)
+    status, found = search_found(binary, tmp, text, [
+        "--momenta-degree", str(degrees[0]), "--positions-degree", str(degrees[1]),
+        "--trig-degree", str(degrees[2])] + (["--when", f"p_theta = {when}"] if when else []))
     if status != "ok":
-        return status, doc
-    found = doc["searches"][0]
+        return status, found
     expected = sympy_angle_search_dimension(h, *degrees, when)
     at = f" at p_θ = {when}" if when else ""
-    if (found["unknowns"], found["dimension"]) != expected:
-        return "failed", (f"H = {h}{at}, degrees (momenta, positions, trig) {degrees}: superint "
-                          f"has {found['unknowns']} unknowns and {found['dimension']} "
-                          f"integrals, SymPy {expected[0]} and {expected[1]}")
-    return "ok", f"H = {h}{at}, degrees {degrees}: {found['dimension']} integrals"
+    return search_verdict(found, expected, f"H = {h}{at}, degrees (momenta, positions, trig) "
+                          f"{degrees}")
 
 
 E3 = {("M1", "M2"): "M3", ("M2", "M3"): "M1", ("M3", "M1"): "M2",
@@ -917,25 +897,20 @@ def top_search_case(binary, tmp, rng):
     h = " + ".join(terms)
     degree = rng.randint(1, 4 if not e3 else 3)
     brackets = "\n".join(f'"{{{a}, {b}}}" = "{v}"' for (a, b), v in pairs.items())
-    file = os.path.join(tmp, "top.toml")
-    with open(file, "w") as out:
-        out.write(f'name = "random top"\nhamiltonian = "{h}"\n[phase_space]\n'
-                  f'variables = {json.dumps(names)}\n[poisson]\n{brackets}\n')
-    status, doc = run_json(binary, ["search", file, "--poisson-degree", str(degree)],
-                           timeout=300)
+    text = (f'name = "random top"\nhamiltonian = "{h}"\n[phase_space]\n'
+            f'variables = {json.dumps(names)}\n[poisson]\n{brackets}\n')
+    status, found = search_found(binary, tmp, text, ["--poisson-degree", str(degree)])
     if status != "ok":
-        return status, doc
-    found = doc["searches"][0]["dimension"]
+        return status, found
     variables = sp.symbols(" ".join(names))
     local = dict(zip(names, variables))
     table = antisymmetric({(local[a], local[b]): sp.sympify(v, locals=local)
                            for (a, b), v in pairs.items()})
-    expected = dimension(variables, table, sp.sympify(h.replace("^", "**"), locals=local),
-                         degree)
-    if found != expected:
-        return "failed", (f"H = {h} on {'e(3)*' if e3 else 'so(3)*'}, degree {degree}: "
-                          f"superint found {found} integrals, SymPy {expected}")
-    return "ok", f"H = {h}, degree {degree}: {found} integrals"
+    expected = (len(monomials(variables, degree)),
+                dimension(variables, table, sp.sympify(h.replace("^", "**"), locals=local),
+                          degree))
+    return search_verdict(found, expected, f"H = {h} on {'e(3)*' if e3 else 'so(3)*'}, "
+                          f"degree {degree}")
 
 
 def run_json(binary, args, timeout=120):
