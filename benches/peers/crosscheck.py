@@ -458,6 +458,20 @@ def search_verdict(found, expected, case):
     return "ok", f"{case}: {found[1]} integrals"
 
 
+def plane_search(binary, tmp, potential, declaration, options):
+    """`search_found` for `H = (p_x² + p_y²)/2 + potential` in the plane, the phase space
+    declaring `declaration` (parameters, denominators, radicals) too."""
+    text = (f'name = "a particle in the plane"\n'
+            f'hamiltonian = "(p_x^2 + p_y^2)/2 + {potential}"\n'
+            f'[phase_space]\ncoordinates = ["x", "y"]\n{declaration}\n')
+    return search_found(binary, tmp, text, options)
+
+
+def plane_hamiltonian(potential, symbols):
+    """`(p_x² + p_y²)/2 + potential` read by SymPy in `symbols` (x, y, p_x, p_y and others)."""
+    return sp.sympify(f"(p_x**2 + p_y**2)/2 + {potential.replace('^', '**')}", locals=symbols)
+
+
 def sympy_search_dimension(h, momenta_degree, positions_degree, symbolic=(), s_degree=0,
                            laurent=False):
     """The dimension of the integrals of `h` among the polynomials of degree at most
@@ -509,17 +523,12 @@ def search_case(binary, tmp, rng):
         s_degree = rng.randint(1, 2)
         symbolic = sp.symbols("a b", real=True)
         options = ["--symbolic", "a,b", "--parameters-degree", str(s_degree)]
-    text = (f'name = "random potential"\nhamiltonian = "(p_x^2 + p_y^2)/2 + {potential}"\n'
-            f'[phase_space]\ncoordinates = ["x", "y"]\nparameters = ["a", "b"]\n')
-    status, found = search_found(binary, tmp, text, ["--momenta-degree", str(momenta_degree),
-                                                     "--positions-degree",
-                                                     str(positions_degree)] + options)
+    status, found = plane_search(binary, tmp, potential, 'parameters = ["a", "b"]',
+                                 ["--momenta-degree", str(momenta_degree),
+                                  "--positions-degree", str(positions_degree)] + options)
     if status != "ok":
         return status, found
-    x, y, px, py = sp.symbols("x y p_x p_y", real=True)
-    a, b = sp.symbols("a b", real=True)
-    h = sp.sympify(f"(p_x**2 + p_y**2)/2 + {potential.replace('^', '**')}",
-                   locals={"x": x, "y": y, "p_x": px, "p_y": py, "a": a, "b": b})
+    h = plane_hamiltonian(potential, Plane().locals)
     expected = sympy_search_dimension(h, momenta_degree, positions_degree, symbolic, s_degree,
                                       laurent)
     return search_verdict(found, expected, f"V = {potential}, momenta degree {momenta_degree}, "
@@ -547,16 +556,13 @@ def denominator_search_case(binary, tmp, rng):
                                        f"({c()})*(x^2 + y^2)", f"({c()})*(x - y)^2"],
                                       rng.randint(1, 2)))
     degrees = rng.randint(1, 2), rng.randint(0, 2), rng.randint(1, 2)
-    text = (f'name = "two particles"\nhamiltonian = "(p_x^2 + p_y^2)/2 + {potential}"\n'
-            f'[phase_space]\ncoordinates = ["x", "y"]\ndenominators = ["x - y"]\n')
-    status, found = search_found(binary, tmp, text, ["--momenta-degree", str(degrees[0]),
-                                                     "--positions-degree", str(degrees[1]),
-                                                     "--denominators-degree", str(degrees[2])])
+    status, found = plane_search(binary, tmp, potential, 'denominators = ["x - y"]', [
+        "--momenta-degree", str(degrees[0]), "--positions-degree", str(degrees[1]),
+        "--denominators-degree", str(degrees[2])])
     if status != "ok":
         return status, found
     x, y, px, py = sp.symbols("x y p_x p_y")
-    h = sp.sympify(f"(p_x**2 + p_y**2)/2 + {potential.replace('^', '**')}",
-                   locals={"x": x, "y": y, "p_x": px, "p_y": py})
+    h = plane_hamiltonian(potential, {"x": x, "y": y, "p_x": px, "p_y": py})
     clear = (x - y)**(degrees[2] + 4)  # past the force's 1/(x − y)³ times f's lowest power
     canonical = lambda f: sp.expand(sp.cancel(f * clear))
     flow = lambda f: canonical(sp.diff(f, x) * sp.diff(h, px) - sp.diff(f, px) * sp.diff(h, x)
@@ -580,17 +586,13 @@ def radical_search_case(binary, tmp, rng):
                         f"({c()})*x^2", f"({c()})*y/r"], rng.randint(1, 2))
     potential = " + ".join(terms)
     degrees = rng.randint(1, 2), rng.randint(0, 2), rng.randint(1, 2)
-    text = (f'name = "random central potential"\n'
-            f'hamiltonian = "(p_x^2 + p_y^2)/2 + {potential}"\n'
-            f'[phase_space]\ncoordinates = ["x", "y"]\nradicals = {{ r = "x^2 + y^2" }}\n')
-    status, found = search_found(binary, tmp, text, ["--momenta-degree", str(degrees[0]),
-                                                     "--positions-degree", str(degrees[1]),
-                                                     "--radicals-degree", str(degrees[2])])
+    status, found = plane_search(binary, tmp, potential, 'radicals = { r = "x^2 + y^2" }', [
+        "--momenta-degree", str(degrees[0]), "--positions-degree", str(degrees[1]),
+        "--radicals-degree", str(degrees[2])])
     if status != "ok":
         return status, found
     x, y, px, py, r = sp.symbols("x y p_x p_y r", positive=True)
-    h = sp.sympify(f"(p_x**2 + p_y**2)/2 + {potential.replace('^', '**')}",
-                   locals={"x": x, "y": y, "p_x": px, "p_y": py, "r": r})
+    h = plane_hamiltonian(potential, {"x": x, "y": y, "p_x": px, "p_y": py, "r": r})
     top = degrees[2] + 8  # past r^(−j−5): f's lowest power times a dipole force's
     def canonical(f):
         """`f·r^top` as `A + B r`: a polynomial of degree at most 1 in `r`."""
