@@ -65,8 +65,8 @@ its values, there. Closures of the rotor's generators (quadratic forms, `p_θ`, 
 `p_θ = w m/n` (`--when`) are checked the same way, every function written in `E = e^{iθ}`.
 
 A case that superint refuses with a message (exit code 2: dividing by a sum that is no declared
-denominator, say) is counted and skipped, as is a result too long for SymPy's parser (Python's
-compiler nests a sum one level a term); any other exit code is a failure. The script prints a
+denominator, say) is counted and skipped, as is a result too long for SymPy's parser even term
+by term; any other exit code is a failure. The script prints a
 summary line and exits nonzero if any case failed. It needs only SymPy (`run.sh` installs it
 into `.venv`: `benches/peers/crosscheck.sh` does that and builds superint first).
 """
@@ -113,8 +113,10 @@ class System:
         self.file = None
 
     def read(self, text):
-        """An expression in superint's language (or SymPy's printing of one), read by SymPy."""
-        return sp.sympify(text.replace("^", "**"), locals=self.locals)
+        """An expression in superint's language (or SymPy's printing of one), read by SymPy: a
+        long sum term by term, since Python's compiler nests a sum one level a term."""
+        terms = top_level_terms(text) if len(text) > 10000 else [text]
+        return sp.Add(*[sp.sympify(t.replace("^", "**"), locals=self.locals) for t in terms])
 
     def bracket(self, f, g):
         """{f, g}: the canonical pairs' Jacobians plus the declared brackets' part."""
@@ -124,6 +126,18 @@ class System:
         for a, b, value in self.declared:
             out += value * (sp.diff(f, a) * sp.diff(g, b) - sp.diff(f, b) * sp.diff(g, a))
         return out
+
+
+def top_level_terms(text):
+    """`text` cut before each ` + ` and ` - ` outside parentheses: terms whose sum it is."""
+    terms, depth, start = [], 0, 0
+    for k, ch in enumerate(text):
+        depth += {"(": 1, ")": -1}.get(ch, 0)
+        if depth == 0 and text.startswith((" + ", " - "), k) and k > start:
+            terms.append(text[start:k])
+            start = k
+    terms.append(text[start:])
+    return terms
 
 
 def symbols(names):
