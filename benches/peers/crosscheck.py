@@ -472,13 +472,15 @@ def search_verdict(found, expected, case):
     return "ok", f"{case}: {found[1]} integrals"
 
 
-def plane_search(binary, tmp, potential, declaration, options):
+def plane_search(binary, tmp, potential, declaration, degrees, options):
     """`search_found` for `H = (p_x² + p_y²)/2 + potential` in the plane, the phase space
-    declaring `declaration` (parameters, denominators, radicals) too."""
+    declaring `declaration` (parameters, denominators, radicals) too, over the functions of
+    `degrees` (in the momenta, in the positions), with `options` besides."""
     text = (f'name = "a particle in the plane"\n'
             f'hamiltonian = "(p_x^2 + p_y^2)/2 + {potential}"\n'
             f'[phase_space]\ncoordinates = ["x", "y"]\n{declaration}\n')
-    return search_found(binary, tmp, text, options)
+    return search_found(binary, tmp, text, ["--momenta-degree", str(degrees[0]),
+                                            "--positions-degree", str(degrees[1])] + options)
 
 
 def plane_hamiltonian(potential, symbols):
@@ -514,6 +516,7 @@ def search_case(binary, tmp, rng):
     """`superint search` of a random potential, some of the time with parameters `a`, `b`
     in it kept symbolic: the dimension it reports, against SymPy's nullspace of {F, H} = 0
     over the same space. Returns (status, message)."""
+    plane = Plane()
     potential = random_potential(rng)
     momenta_degree, positions_degree = rng.randint(1, 3), rng.randint(0, 3)
     options, symbolic, s_degree, laurent = [], (), 0, False
@@ -535,14 +538,13 @@ def search_case(binary, tmp, rng):
         potential = f"a*({random_potential(rng, kind)}) + b*({random_potential(rng, kind)})"
         momenta_degree, positions_degree = rng.randint(1, 2), rng.randint(0, 4)
         s_degree = rng.randint(1, 2)
-        symbolic = sp.symbols("a b", real=True)
+        symbolic = tuple(plane.parameters.values())
         options = ["--symbolic", "a,b", "--parameters-degree", str(s_degree)]
     status, found = plane_search(binary, tmp, potential, 'parameters = ["a", "b"]',
-                                 ["--momenta-degree", str(momenta_degree),
-                                  "--positions-degree", str(positions_degree)] + options)
+                                 (momenta_degree, positions_degree), options)
     if status != "ok":
         return status, found
-    h = plane_hamiltonian(potential, Plane().locals)
+    h = plane_hamiltonian(potential, plane.locals)
     expected = sympy_search_dimension(h, momenta_degree, positions_degree, symbolic, s_degree,
                                       laurent)
     return search_verdict(found, expected, f"V = {potential}, momenta degree {momenta_degree}, "
@@ -570,9 +572,8 @@ def denominator_search_case(binary, tmp, rng):
                                        f"({c()})*(x^2 + y^2)", f"({c()})*(x - y)^2"],
                                       rng.randint(1, 2)))
     degrees = rng.randint(1, 2), rng.randint(0, 2), rng.randint(1, 2)
-    status, found = plane_search(binary, tmp, potential, 'denominators = ["x - y"]', [
-        "--momenta-degree", str(degrees[0]), "--positions-degree", str(degrees[1]),
-        "--denominators-degree", str(degrees[2])])
+    status, found = plane_search(binary, tmp, potential, 'denominators = ["x - y"]',
+                                 degrees[:2], ["--denominators-degree", str(degrees[2])])
     if status != "ok":
         return status, found
     x, y, px, py = sp.symbols("x y p_x p_y")
@@ -600,9 +601,8 @@ def radical_search_case(binary, tmp, rng):
                         f"({c()})*x^2", f"({c()})*y/r"], rng.randint(1, 2))
     potential = " + ".join(terms)
     degrees = rng.randint(1, 2), rng.randint(0, 2), rng.randint(1, 2)
-    status, found = plane_search(binary, tmp, potential, 'radicals = { r = "x^2 + y^2" }', [
-        "--momenta-degree", str(degrees[0]), "--positions-degree", str(degrees[1]),
-        "--radicals-degree", str(degrees[2])])
+    status, found = plane_search(binary, tmp, potential, 'radicals = { r = "x^2 + y^2" }',
+                                 degrees[:2], ["--radicals-degree", str(degrees[2])])
     if status != "ok":
         return status, found
     x, y, px, py, r = sp.symbols("x y p_x p_y r", positive=True)
