@@ -84,7 +84,8 @@ from fractions import Fraction
 
 import sympy as sp
 
-from search_dimensions import antisymmetric, dimension, integrals_dimension
+from search_dimensions import (antisymmetric, coefficient_vectors, dimension,
+                               integrals_dimension)
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.dirname(os.path.dirname(HERE))
@@ -814,10 +815,9 @@ def check_closure(doc, names, texts, degree, model):
 
 
 def rank_of(polys, variables):
-    """The rank of the polynomials `polys` in `variables`, as vectors of coefficients."""
-    table = [sp.Poly(p, *variables).as_dict() for p in polys]
-    keys = sorted({k for t in table for k in t})
-    return sp.Matrix(len(polys), len(keys), lambda i, j: table[i].get(keys[j], 0)).rank()
+    """The rank of the polynomials `polys` in `variables`, as vectors of coefficients (over
+    Q(i) when they have `i`)."""
+    return sp.Matrix(coefficient_vectors(polys, variables)).rank()
 
 
 def random_coupling(rng):

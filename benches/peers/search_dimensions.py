@@ -28,6 +28,14 @@ def antisymmetric(pairs):
     return table
 
 
+def coefficient_vectors(polys, variables):
+    """Each of the polynomials `polys` in `variables` as its coefficients on the monomials
+    that occur in any of them. Also used by crosscheck.py."""
+    table = [sp.Poly(sp.expand(p), *variables).as_dict() for p in polys]
+    keys = sorted({k for t in table for k in t})
+    return [[t.get(k, 0) for k in keys] for t in table]
+
+
 def integrals_dimension(space, flow, variables):
     """The dimension of the combinations F of the functions `space` with real coefficients and
     flow(F) = {F, H} = 0: how many they are, less the rank of the linear map from their
@@ -35,9 +43,9 @@ def integrals_dimension(space, flow, variables):
     Gaussian rationals: their real and imaginary parts are equations apart). The flow is
     linear, so each function's image is a column. Also used by crosscheck.py."""
     from sympy.polys.matrices import DomainMatrix
-    columns = [sp.Poly(sp.expand(flow(m)), *variables).as_dict() for m in space]
-    keys = sorted({k for c in columns for k in c})
-    rows = [[part(c.get(k, 0)) for c in columns] for k in keys for part in (sp.re, sp.im)]
+    columns = coefficient_vectors([flow(m) for m in space], variables)
+    width = len(columns[0]) if columns else 0
+    rows = [[part(c[k]) for c in columns] for k in range(width) for part in (sp.re, sp.im)]
     rows = [row for row in rows if any(row)]
     if not rows:
         return len(space)
