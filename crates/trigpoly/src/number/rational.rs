@@ -116,6 +116,14 @@ impl Rational {
         if n1 == 0 || n2 == 0 {
             return Rational::zero();
         }
+        // A factor of one (the content of most generators and of their products) leaves the
+        // other as it is, in lowest terms already.
+        if (n1, d1) == (1, 1) {
+            return Rational(Repr::Small { num: n2, den: d2 });
+        }
+        if (n2, d2) == (1, 1) {
+            return Rational(Repr::Small { num: n1, den: d1 });
+        }
         if n1 != i64::MIN && n2 != i64::MIN {
             // Each gcd divides a positive `i64`, so it is one too.
             let g1 = binary_gcd(n1.unsigned_abs(), d2 as u64) as i64;
