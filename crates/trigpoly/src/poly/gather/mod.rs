@@ -16,6 +16,8 @@
 //! Hamiltonian; [`Poly::real_coefficients`](super::Poly::real_coefficients)) gather in Z's
 //! words, one product per term pair where a Gaussian takes four, unless an angle brings `i`.
 
+use arrayvec::ArrayVec;
+
 mod map;
 mod pairs;
 mod table;
@@ -600,19 +602,18 @@ fn jacobians_of_width<K: Key, I: IntegerRing>(
     let has = |vars: &K, (word, shift): (usize, u32)| {
         (vars.as_ref()[word] >> shift) & layout.field_mask() != 0
     };
-    let mut active = [JacobianPair::default(); MAX_JACOBIAN_PAIRS];
-    let mut count = 0;
+    let mut active = ArrayVec::<JacobianPair, MAX_JACOBIAN_PAIRS>::new();
     for &(q, p) in pairs {
         let (fq, fp) = (layout.field(q.index()), layout.field(p.index()));
         if (has(&in_f, fq) && has(&in_g, fp)) || (has(&in_f, fp) && has(&in_g, fq)) {
-            active[count] = JacobianPair::new(vars, (q, fq), (p, fp));
-            count += 1;
+            active.push(JacobianPair::new(vars, (q, fq), (p, fp)));
         }
     }
+    let count = active.len();
     let per_monomial = f.1.len().min(g.1.len()) * count;
     let budget = WordGather::<K, I>::budget(ab_bits, per_monomial)?;
     let n = f.1.len() * g.1.len() * count;
-    let active = &active[..count];
+    let active = &active[..];
     // Real factors, and no angle to bring `i`: the sums are real.
     if I::COMPLEX && real && active.iter().all(|pair| pair.turns() == 0) {
         let (mut real_f, mut real_g) = (Smalls::new(), Smalls::new());
