@@ -4,9 +4,8 @@
 //! their fixed parts (docs/performance.md, forty-fourth session): these are the figures a
 //! representation of short polynomials must bring down. `cargo bench --bench operations`.
 //!
-//! Every result is dropped inside the timing, as in a workload (divan drops what a benchmark
-//! returns after the sample, so each returns nothing). For repeatable counts,
-//! `valgrind --tool=callgrind` on a loop of one operation.
+//! Every result is dropped inside the timing, as in a workload ([`time`]). For repeatable
+//! counts, `valgrind --tool=callgrind` on a loop of one operation.
 
 use brackets::{systems, System};
 use divan::{black_box, Bencher};
@@ -21,84 +20,79 @@ fn main() {
     divan::main();
 }
 
-/// The harmonic rotor and a function of it by name or expression.
-fn rotor() -> (System, impl Fn(&System, &str) -> Expr) {
-    let parse = |rotor: &System, src: &str| rotor.parse(src).expect("parses");
-    (systems::harmonic_rotor(), parse)
+/// A function of the harmonic rotor, by name or expression.
+fn parse(rotor: &System, src: &str) -> Expr {
+    rotor.parse(src).expect("parses")
+}
+
+/// Times `op` with the drop of its result: divan drops what a benchmark returns after the
+/// sample, so the benchmark itself returns nothing.
+fn time<T>(bencher: Bencher, op: impl Fn() -> T + Sync) {
+    bencher.bench(|| drop(black_box(op())));
 }
 
 #[divan::bench]
 fn clone_one_term(bencher: Bencher) {
-    let (rotor, parse) = rotor();
+    let rotor = systems::harmonic_rotor();
     let x = parse(&rotor, "x");
-    bencher.bench(|| drop(black_box(black_box(&x).clone())));
+    time(bencher, || black_box(&x).clone());
 }
 
 #[divan::bench]
 fn product_one_term(bencher: Bencher) {
-    let (rotor, parse) = rotor();
+    let rotor = systems::harmonic_rotor();
     let (x, y) = (parse(&rotor, "x"), parse(&rotor, "y"));
     assert_eq!(x.checked_mul(&y).expect("fits"), parse(&rotor, "x*y"));
-    bencher.bench(|| {
-        drop(black_box(
-            black_box(&x).checked_mul(black_box(&y)).expect("fits"),
-        ))
+    time(bencher, || {
+        black_box(&x).checked_mul(black_box(&y)).expect("fits")
     });
 }
 
 #[divan::bench]
 fn sum_one_term(bencher: Bencher) {
-    let (rotor, parse) = rotor();
+    let rotor = systems::harmonic_rotor();
     let (x, y) = (parse(&rotor, "x"), parse(&rotor, "y"));
-    bencher.bench(|| {
-        drop(black_box(
-            black_box(&x).checked_add(black_box(&y)).expect("fits"),
-        ))
+    time(bencher, || {
+        black_box(&x).checked_add(black_box(&y)).expect("fits")
     });
 }
 
 #[divan::bench]
 fn scale_one_term(bencher: Bencher) {
-    let (rotor, parse) = rotor();
+    let rotor = systems::harmonic_rotor();
     let x = parse(&rotor, "x");
     let four = GaussianRational::from(4);
-    bencher.bench(|| drop(black_box(black_box(&x).scale(black_box(&four)))));
+    time(bencher, || black_box(&x).scale(black_box(&four)));
 }
 
 #[divan::bench]
 fn bracket_one_term(bencher: Bencher) {
-    let (rotor, parse) = rotor();
+    let rotor = systems::harmonic_rotor();
     let (x, px) = (parse(&rotor, "x"), parse(&rotor, "p_x"));
     assert_eq!(rotor.bracket(&x, &px).expect("forms"), parse(&rotor, "1"));
-    bencher.bench(|| {
-        drop(black_box(
-            rotor.bracket(black_box(&x), black_box(&px)).expect("forms"),
-        ))
+    time(bencher, || {
+        rotor.bracket(black_box(&x), black_box(&px)).expect("forms")
     });
 }
 
 /// `{L, G1} = −G2`: 2 × 2 terms, 8 term pairs.
 #[divan::bench]
 fn bracket_of_generators(bencher: Bencher) {
-    let (rotor, parse) = rotor();
+    let rotor = systems::harmonic_rotor();
     let (l, g1) = (parse(&rotor, "L"), parse(&rotor, "G1"));
     assert_eq!(rotor.bracket(&l, &g1).expect("forms"), parse(&rotor, "-G2"));
-    bencher.bench(|| {
-        drop(black_box(
-            rotor.bracket(black_box(&l), black_box(&g1)).expect("forms"),
-        ))
+    time(bencher, || {
+        rotor.bracket(black_box(&l), black_box(&g1)).expect("forms")
     });
 }
 
 /// `G2²`: 4 × 4 terms, onto 10 (the squares of the four and their six cross products).
 #[divan::bench]
 fn square_of_a_generator(bencher: Bencher) {
-    let (rotor, parse) = rotor();
+    let rotor = systems::harmonic_rotor();
     let g2 = parse(&rotor, "G2");
     assert_eq!(g2.checked_mul(&g2).expect("fits").len(), 10);
-    bencher.bench(|| {
-        drop(black_box(
-            black_box(&g2).checked_mul(black_box(&g2)).expect("fits"),
-        ))
+    time(bencher, || {
+        black_box(&g2).checked_mul(black_box(&g2)).expect("fits")
     });
 }

@@ -55,9 +55,9 @@ pub(crate) fn fits(words: usize, pairs: usize) -> bool {
 pub(crate) type Monomial = [u64; WORDS];
 
 /// One pair of variables `(q, p)` of a sum of Jacobians, as [`jacobians`] reads it: the field
-/// (word, shift) of each and whether it is an angle. Six bytes, so that the kernel's table of
-/// the active pairs costs next to nothing to set up.
-#[derive(Clone, Copy, Default)]
+/// (word, shift) of each and whether it is an angle. Six bytes, so that the kernel's list of
+/// the active pairs costs next to nothing to build.
+#[derive(Clone, Copy)]
 struct JacobianPair {
     q: (u8, u8),
     p: (u8, u8),
@@ -609,11 +609,10 @@ fn jacobians_of_width<K: Key, I: IntegerRing>(
             active.push(JacobianPair::new(vars, (q, fq), (p, fp)));
         }
     }
-    let count = active.len();
-    let per_monomial = f.1.len().min(g.1.len()) * count;
+    let per_monomial = f.1.len().min(g.1.len()) * active.len();
     let budget = WordGather::<K, I>::budget(ab_bits, per_monomial)?;
-    let n = f.1.len() * g.1.len() * count;
-    let active = &active[..];
+    let n = f.1.len() * g.1.len() * active.len();
+    let active = active.as_slice();
     // Real factors, and no angle to bring `i`: the sums are real.
     if I::COMPLEX && real && active.iter().all(|pair| pair.turns() == 0) {
         let (mut real_f, mut real_g) = (Smalls::new(), Smalls::new());
