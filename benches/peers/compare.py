@@ -32,6 +32,8 @@ import time
 HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.dirname(os.path.dirname(HERE))
 SUPERINT = os.environ.get("SUPERINT_BIN", os.path.join(ROOT, "target", "release", "superint"))
+# How the binary was built, printed under each table (run.sh --pgo sets it).
+BUILD = os.environ.get("SUPERINT_BUILD", "cargo build --release")
 PYTHON = os.environ.get("PEERS_PYTHON", sys.executable)
 
 NAMES = {"tower": "W1 tower", "single": "W2 single", "fateman": "W3a Fateman",
@@ -184,6 +186,7 @@ def print_table(rows, memory, markdown, repeats):
     print(f"\nmedian of {repeats} runs per tool, tools alternating; ratio = single-threaded "
           "superint / peer (below 1: superint is faster); every run reported the identities as "
           "exact zeros.")
+    print(f"superint: {SUPERINT} ({BUILD})")
     if memory:
         print("peak memory (max RSS) of W1: " + ", ".join(
             f"{label.get(t, t)} {kib / 1024:.1f} MiB" for t, kib in memory.items()))
@@ -258,6 +261,7 @@ def print_goal_table(rows, markdown, repeats, max_cap):
           f"(< tool / CAP); at the full {GOAL_FACTOR}x cap that proves the goal (yes (bound)), "
           f"at the max cap it may not (open). Every finished run reported the identities as exact "
           f"zeros.")
+    print(f"superint: {SUPERINT} ({BUILD})")
 
 
 if __name__ == "__main__":

@@ -3,6 +3,7 @@
 # Singular from Debian's packages), builds superint, and runs the side-by-side comparison.
 #   benches/peers/run.sh [--quick] [--repeats N] [--markdown]
 #   benches/peers/run.sh --sympy-goal [--repeats N] [--max-cap SECONDS] [--markdown]   (SymPy at the goal sizes, capped at 300x superint)
+#   benches/peers/run.sh --pgo ...   (superint built profile-guided by scripts/pgo.sh, five minutes more)
 set -euo pipefail
 here="$(cd "$(dirname "$0")" && pwd)"
 root="$(cd "$here/../.." && pwd)"
@@ -16,5 +17,15 @@ if ! command -v Singular >/dev/null 2>&1; then
     sudo apt-get update -qq && sudo DEBIAN_FRONTEND=noninteractive apt-get install -y -qq singular >/dev/null
   fi
 fi
-(cd "$root" && cargo build --release --quiet)
-PEERS_PYTHON="$python" exec "$python" "$here/compare.py" "$@"
+pgo=no
+args=()
+for a in "$@"; do
+  if [ "$a" = --pgo ]; then pgo=yes; else args+=("$a"); fi
+done
+if [ "$pgo" = yes ]; then
+  SUPERINT_BIN="$("$root/scripts/pgo.sh" | tail -n 1)"
+  export SUPERINT_BIN SUPERINT_BUILD="profile-guided, scripts/pgo.sh"
+else
+  (cd "$root" && cargo build --release --quiet)
+fi
+PEERS_PYTHON="$python" exec "$python" "$here/compare.py" ${args[@]+"${args[@]}"}
