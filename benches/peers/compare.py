@@ -19,6 +19,9 @@ start-up (interpreter and import, measured once), so a stopped run had spent at 
 in the workload. A finished SymPy run is checked like the normal mode and gives the ratios
 superint / SymPy and python-flint / SymPy; a stopped run gives `> CAP s` and upper bounds on
 the ratios (< superint / CAP), which prove the goal when CAP is the full 300 x superint.
+
+The binary is `SUPERINT_BIN` (target/release/superint by default), and `SUPERINT_BUILD` says
+how it was built; both are printed under each table (run.sh --pgo sets them).
 """
 import argparse
 import os
