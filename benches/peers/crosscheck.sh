@@ -7,7 +7,7 @@
 set -euo pipefail
 here="$(cd "$(dirname "$0")" && pwd)"
 root="$(cd "$here/../.." && pwd)"
-# shellcheck source=venv.sh
+# shellcheck source-path=SCRIPTDIR source=venv.sh
 source "$here/venv.sh"
 peers_python "sympy=sympy==1.14.0"
 (cd "$root" && cargo build --release --quiet)

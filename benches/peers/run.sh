@@ -7,7 +7,7 @@
 set -euo pipefail
 here="$(cd "$(dirname "$0")" && pwd)"
 root="$(cd "$here/../.." && pwd)"
-# shellcheck source=venv.sh
+# shellcheck source-path=SCRIPTDIR source=venv.sh
 source "$here/venv.sh"
 peers_python "flint=python-flint==0.9.0" "sympy=sympy==1.14.0"
 if ! command -v Singular >/dev/null 2>&1; then

@@ -1,3 +1,4 @@
+# shellcheck shell=bash
 # Sourced by run.sh and crosscheck.sh: `peers_python MODULE=PACKAGE...` makes the local virtual
 # environment `.venv` (once), installs each pinned PACKAGE whose MODULE does not import, and
 # sets `python` to the environment's interpreter.
@@ -14,5 +15,6 @@ peers_python() {
       "$venv/bin/pip" install --quiet "${wanted#*=}"
     fi
   done
+  # shellcheck disable=SC2034 # read by the scripts that source this file
   python="$venv/bin/python"
 }
