@@ -2,12 +2,15 @@
 # A profile-guided build of the command-line program: target/pgo/release/superint.
 #   scripts/pgo.sh            # prints the binary's path as its last line
 #
-# Three steps, as rustc's book describes them (the profile-guided optimisation chapter):
+# Three steps, as rustc's book describes them (the profile-guided optimisation chapter), and a
+# check:
 #   1. build an instrumented binary (`-Cprofile-generate`) in target/pgo/generate;
 #   2. run it on the training work below, which writes raw profiles;
 #   3. merge them with the toolchain's own llvm-profdata (rustup's `llvm-tools`, installed here
 #      when missing: its profile format must be the compiler's LLVM's) and build again with
-#      `-Cprofile-use`, so that the compiler lays out and inlines the code by how often it ran.
+#      `-Cprofile-use`, so that the compiler lays out and inlines the code by how often it ran;
+#   4. the optimised binary must print what the instrumented one prints for the paper's claims
+#      and every system file, or the script fails.
 #
 # The training is the program's own work: the default job (the paper's claims), every system
 # file, a search and a closure, and each benchmark workload at a size far below the measured
@@ -41,11 +44,11 @@ build() { # target-dir, rustflag
     --config "target.$host.rustflags=[\"$2\"]"
 }
 
-echo "1/3 instrumented build" >&2
+echo "1/4 instrumented build" >&2
 build "$out/generate" "-Cprofile-generate=$raw"
 train="$out/generate/release/superint"
 
-echo "2/3 training" >&2
+echo "2/4 training" >&2
 "$train" >/dev/null
 "$train" check systems/*.toml >/dev/null
 "$train" search systems/harmonic-rotor.toml --when 'p_theta = I*omega' \
@@ -60,7 +63,19 @@ for threads in 1 2; do
   "$train" bench --threads "$threads" W4 100 >/dev/null
 done
 
-echo "3/3 optimised build" >&2
+echo "3/4 optimised build" >&2
 "$profdata" merge -o "$merged" "$raw"
 build "$out" "-Cprofile-use=$merged"
-echo "$out/release/superint"
+optimised="$out/release/superint"
+
+# The same sources: the optimised binary must print what the instrumented one prints.
+echo "4/4 the paper's claims and the system files, against the instrumented build" >&2
+same() {
+  if ! cmp -s <("$train" "$@" --no-timings) <("$optimised" "$@" --no-timings); then
+    echo "pgo.sh: the profile-guided build prints otherwise: superint $*" >&2
+    exit 1
+  fi
+}
+same
+same check systems/*.toml
+echo "$optimised"
