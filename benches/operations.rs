@@ -65,25 +65,29 @@ fn scale_one_term(bencher: Bencher) {
     time(bencher, || black_box(&x).scale(black_box(&four)));
 }
 
+/// Times `{f, g}` of the rotor, after checking that it is `expected`.
+fn time_bracket(bencher: Bencher, f: &str, g: &str, expected: &str) {
+    let rotor = systems::harmonic_rotor();
+    let (f, g) = (parse(&rotor, f), parse(&rotor, g));
+    assert_eq!(
+        rotor.bracket(&f, &g).expect("forms"),
+        parse(&rotor, expected)
+    );
+    time(bencher, || {
+        rotor.bracket(black_box(&f), black_box(&g)).expect("forms")
+    });
+}
+
+/// `{x, p_x} = 1`: one term pair.
 #[divan::bench]
 fn bracket_one_term(bencher: Bencher) {
-    let rotor = systems::harmonic_rotor();
-    let (x, px) = (parse(&rotor, "x"), parse(&rotor, "p_x"));
-    assert_eq!(rotor.bracket(&x, &px).expect("forms"), parse(&rotor, "1"));
-    time(bencher, || {
-        rotor.bracket(black_box(&x), black_box(&px)).expect("forms")
-    });
+    time_bracket(bencher, "x", "p_x", "1");
 }
 
 /// `{L, G1} = −G2`: 2 × 2 terms, 8 term pairs.
 #[divan::bench]
 fn bracket_of_generators(bencher: Bencher) {
-    let rotor = systems::harmonic_rotor();
-    let (l, g1) = (parse(&rotor, "L"), parse(&rotor, "G1"));
-    assert_eq!(rotor.bracket(&l, &g1).expect("forms"), parse(&rotor, "-G2"));
-    time(bencher, || {
-        rotor.bracket(black_box(&l), black_box(&g1)).expect("forms")
-    });
+    time_bracket(bencher, "L", "G1", "-G2");
 }
 
 /// `G2²`: 4 × 4 terms, onto 10 (the squares of the four and their six cross products).
