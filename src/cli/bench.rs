@@ -10,6 +10,7 @@ use superint::render::Format;
 use superint::workloads::Workload;
 
 use super::output::Output;
+use super::pinning;
 
 pub const EXAMPLES: &str = "\
 Examples:
@@ -18,7 +19,7 @@ Examples:
   superint bench fateman 20   the Fateman product f·(f + 1), f = (1 + x + y + z + t)^20
   superint bench pearce 12    the sparse Pearce product
   superint bench W4 1000      the su(2) table and the Casimir, 1000 times
-  superint bench W1 24 --threads 2   the pairs spread over two threads";
+  superint bench W1 24 --threads 2   the pairs spread over two threads, one to a processor";
 
 /// Arguments of `superint bench`.
 #[derive(Debug, Args)]
@@ -34,6 +35,11 @@ pub struct BenchArgs {
     #[arg(long, default_value_t = 1,
           value_parser = clap::value_parser!(u16).range(1..=super::MAX_THREADS))]
     threads: u16,
+    /// Leave the pool's threads where the kernel puts them. By default each of two or more
+    /// threads is pinned to a processor of its own (when the process may use that many), so
+    /// that the kernel cannot queue a woken thread behind the one that woke it.
+    #[arg(long)]
+    no_pin: bool,
 }
 
 impl BenchArgs {
@@ -60,10 +66,17 @@ pub fn run(job: &BenchJob) -> anyhow::Result<bool> {
         bail!("bench measures a time: --no-timings does not apply to it");
     }
     let workload = Workload::new(&args.workload, args.size)?;
-    let pool = pool(args.threads as usize)?;
+    let pin = !args.no_pin;
+    let pool = pool(args.threads as usize, pin)?;
     // The pool's threads start before the clock does, heaps included: their start is not
-    // the workload's.
-    pool.broadcast(|_| warm_heap());
+    // the workload's. Each tells whether it runs pinned.
+    let alone = pool.broadcast(|_| {
+        warm_heap();
+        pinning::allowed().len() == 1
+    });
+    // This thread may use every processor the process may: each pool thread that may use
+    // one only, of two or more, was pinned.
+    let pinned = args.threads > 1 && pinning::allowed().len() > 1 && alone.iter().all(|&a| a);
     // The clock runs on the pool's thread, from the workload's first step to its last: not
     // the hand-over of the job from this thread to the pool and back, which a program that
     // runs in its pool does not make.
@@ -80,6 +93,7 @@ pub fn run(job: &BenchJob) -> anyhow::Result<bool> {
             "schema": "superint-bench/1",
             "workload": workload.to_string(),
             "threads": args.threads,
+            "pinned": pinned,
             "zeros": outcome.zeros,
             "seconds": seconds,
             "terms": outcome.terms,
@@ -88,7 +102,11 @@ pub fn run(job: &BenchJob) -> anyhow::Result<bool> {
         return Ok(true);
     }
     println!("workload: {workload}");
-    println!("threads: {}", args.threads);
+    println!(
+        "threads: {}{}",
+        args.threads,
+        if pinned { ", pinned" } else { "" }
+    );
     println!("zeros: {}", outcome.zeros);
     println!("seconds: {seconds:.6}");
     println!("terms: {}", outcome.terms);
@@ -111,29 +129,63 @@ fn warm_heap() {
 /// started on a fresh pool thread, W4(1) took 0.24 ms instead of 0.08 (median of 41), most of
 /// it that thread's first allocations (page faults) and its wake-up. Such a pool holds the
 /// calling thread for the rest of the process; a calling thread that is already some pool's
-/// gets a thread of its own. More threads are all the pool's own: with the calling thread as
-/// one of two, W4(1000) took 1.37 ms instead of 0.89 ms (median of 31 alternating runs).
-fn pool(threads: usize) -> Result<rayon::ThreadPool, rayon::ThreadPoolBuildError> {
+/// gets a thread of its own. More threads are all the pool's own, and with `pin` each is
+/// pinned to one of the processors the process may use, if there are as many (`pinning.rs`):
+/// with the calling thread as one of two, W4(1000) took 1.37 ms instead of 0.89 ms (median of
+/// 31 alternating runs).
+fn pool(threads: usize, pin: bool) -> Result<rayon::ThreadPool, rayon::ThreadPoolBuildError> {
     let builder = || rayon::ThreadPoolBuilder::new().num_threads(threads);
     if threads == 1 {
         if let Ok(pool) = builder().use_current_thread().build() {
             return Ok(pool);
         }
     }
+    let cpus = pinning::allowed();
+    if pin && cpus.len() >= threads {
+        return builder()
+            .start_handler(move |i| {
+                // Unpinned if the kernel refuses; the bench reports which it was.
+                pinning::pin_to(cpus[i]);
+            })
+            .build();
+    }
     builder().build()
 }
 
 #[cfg(test)]
 mod tests {
-    use super::pool;
+    use super::{pinning, pool};
 
     #[test]
     fn one_thread_is_the_calling_one_once_and_then_a_thread_of_its_own() {
         let here = std::thread::current().id();
-        let first = pool(1).expect("a pool on this thread");
-        let second = pool(1).expect("a pool on a thread of its own");
+        let first = pool(1, true).expect("a pool on this thread");
+        let second = pool(1, true).expect("a pool on a thread of its own");
         assert_eq!(first.install(|| std::thread::current().id()), here);
         assert_ne!(second.install(|| std::thread::current().id()), here);
         assert_eq!(second.current_num_threads(), 1);
+    }
+
+    /// With two or more processors, a pinned pool of two runs each thread on a processor of
+    /// its own, the first two the process may use; unpinned, each may use them all.
+    #[test]
+    fn two_threads_are_pinned_one_to_a_processor() {
+        let cpus = pinning::allowed();
+        if cpus.len() < 2 {
+            // Nothing to pin to: the pool is built unpinned, which the next lines check.
+            let masks = pool(2, true)
+                .expect("a pool")
+                .broadcast(|_| pinning::allowed());
+            assert!(masks.iter().all(|m| *m == cpus));
+            return;
+        }
+        let masks = pool(2, true)
+            .expect("a pool")
+            .broadcast(|_| pinning::allowed());
+        assert_eq!(masks, vec![vec![cpus[0]], vec![cpus[1]]]);
+        let masks = pool(2, false)
+            .expect("a pool")
+            .broadcast(|_| pinning::allowed());
+        assert_eq!(masks, vec![cpus.clone(), cpus]);
     }
 }

@@ -15,6 +15,7 @@ mod limits;
 mod output;
 pub use output::{error_line, error_message};
 mod paper;
+mod pinning;
 mod plot;
 mod rank;
 mod search;

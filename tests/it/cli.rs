@@ -1234,6 +1234,27 @@ fn cli_bench_prints_json_and_refuses_what_it_cannot_honour() {
     assert_eq!(v["schema"], "superint-bench/1");
     assert_eq!((&v["zeros"], &v["terms"]), (&3.into(), &24.into()), "{v}");
     assert!(v["seconds"].is_number());
+    // One thread, or two left unpinned, run unpinned; two are pinned where the machine has
+    // two processors for them (the pool's own test checks the pins).
+    assert_eq!(v["pinned"], false);
+    let json =
+        |args: &[&str]| -> serde_json::Value { serde_json::from_str(&run(args, 0)).expect("JSON") };
+    let unpinned = json(&[
+        "bench",
+        "W4",
+        "3",
+        "--threads",
+        "2",
+        "--no-pin",
+        "--format",
+        "json",
+    ]);
+    assert_eq!(unpinned["pinned"], false);
+    let two = json(&["bench", "W4", "3", "--threads", "2", "--format", "json"]);
+    let processors = std::thread::available_parallelism().map_or(1, usize::from);
+    if processors >= 2 {
+        assert_eq!(two["pinned"], true, "{two}");
+    }
     for args in [
         &["bench", "W4", "3", "--format", "latex"][..],
         &["bench", "W4", "3", "--no-timings"],

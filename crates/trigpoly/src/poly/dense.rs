@@ -20,7 +20,7 @@ use rayon::prelude::*;
 use std::sync::mpsc;
 
 use super::kronecker::{Cursor, Decoder, Kronecker};
-use super::pages;
+use super::{pages, placement};
 use crate::error::AlgebraError;
 use crate::number::IntegerRing;
 use crate::varset::Layout;
@@ -255,6 +255,8 @@ impl<S: Copy + Send + Sync> Factors<S> {
         let (emptied, empties) = mpsc::channel::<Vec<(u64, I::Wide)>>();
         std::thread::scope(|scope| {
             let spawned = std::thread::Builder::new().spawn_scoped(scope, move || {
+                // Beside this thread, not on its processor if it is pinned to one.
+                placement::run_anywhere();
                 let mut builder = Builder::<I>::new(decoder, bound);
                 for mut batch in batches {
                     builder.append(&batch);

@@ -17,6 +17,7 @@ mod index;
 mod kronecker;
 mod mul;
 mod pages;
+mod placement;
 mod pow;
 mod radicals;
 mod subst;
