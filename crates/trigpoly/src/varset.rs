@@ -963,6 +963,11 @@ pub(crate) fn render_name(name: &str) -> (String, String) {
 /// ASCII, the Greek letters, `ħ`, `ℓ` and the subscript digits), if any: such a name would stop
 /// `pdflatex`.
 pub fn latex_unwritable(name: &str) -> Option<char> {
+    // An ASCII name writes ASCII: Greek letters spelled out become commands, and every other
+    // rule rewrites a character beyond ASCII.
+    if name.is_ascii() {
+        return None;
+    }
     let (_, latex) = render_name(name);
     latex.chars().find(|c| !c.is_ascii())
 }
@@ -1115,6 +1120,25 @@ mod tests {
         }
         assert_eq!(latex_unwritable("é"), Some('é'));
         assert_eq!(latex_unwritable("p_щ"), Some('щ'));
+        // `latex_unwritable` answers an ASCII name without rendering it: every rule writes
+        // such a name in ASCII, Greek letters spelled out included.
+        let spelled = GREEK.iter().map(|g| g.0.to_string());
+        let built = [
+            "x",
+            "G1",
+            "p_theta1",
+            "omega_x_2",
+            "theta12",
+            "Zbar",
+            "xy",
+            "a_b_c",
+        ];
+        for name in spelled.chain(built.map(String::from)) {
+            let (_, latex) = render_name(&name);
+            assert!(latex.is_ascii(), "{name}: {latex}");
+            let (_, latex) = render_name(&format!("{name}_{name}2"));
+            assert!(latex.is_ascii(), "{name}: {latex}");
+        }
         let err = VarSet::builder().coordinate("é").build().unwrap_err();
         assert!(err.to_string().contains("LaTeX has no letter 'é'"), "{err}");
         VarSet::builder()

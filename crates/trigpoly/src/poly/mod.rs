@@ -157,8 +157,20 @@ impl<C: Coefficient> Poly<C> {
     ///
     /// If `v` is a handle of another set ([`VarSet::owns`]).
     pub fn var(vars: &Vars, v: Var) -> Self {
-        vars.index_of(v);
-        Self::monomial(vars, C::one(), &[(v, 1)]).expect("exponent 1 is within every limit")
+        let j = vars.index_of(v);
+        let angle = vars.variable(v).kind() == VarKind::Angle;
+        if (angle && !C::HAS_I) || vars.limits().max_degree == 0 {
+            return Self::monomial(vars, C::one(), &[(v, 1)])
+                .expect("exponent 1 is within every limit");
+        }
+        // The monomial `v` packed directly, where `monomial` checks every variable's
+        // exponent and allocates twice more (a parsed expression makes one per name).
+        let layout = vars.layout();
+        let mut m = layout.one().to_vec();
+        let (word, shift) = layout.field(j);
+        m[word] += 1 << shift;
+        let (content, one) = C::one().split();
+        Self::assemble(vars, content, m, vec![one])
     }
 
     /// `c · Π v^e`, for any integer exponents within the limit.
@@ -860,5 +872,36 @@ mod tests {
             p.coeffs[n - 1],
             Integer::from_i128((1 << 70) + n as i128 - 1)
         );
+    }
+
+    /// `Poly::var` packs its monomial directly: it equals the monomial `v¹` that
+    /// [`Poly::monomial`] builds and checks, for every kind of variable, in both fields, and
+    /// with monomials of one word and of several (40 variables).
+    #[test]
+    fn var_is_the_monomial_of_exponent_one() {
+        let mut builder = VarSet::builder()
+            .coordinate("x")
+            .angle("theta")
+            .momentum("p_x")
+            .parameter("M");
+        for k in 0..36 {
+            builder = builder.coordinate(&format!("q{k}"));
+        }
+        let small = VarSet::builder()
+            .coordinate("x")
+            .angle("theta")
+            .parameter("M");
+        let (large, small) = (builder.build().unwrap(), small.build().unwrap());
+        assert!(large.layout().words > 1 && small.layout().words == 1);
+        for vars in [large, small] {
+            for v in vars.vars() {
+                let expected = Poly::<GaussianRational>::monomial(&vars, 1.into(), &[(v, 1)]);
+                assert!(Poly::<GaussianRational>::var(&vars, v) == expected.unwrap());
+                if vars.variable(v).kind() != VarKind::Angle {
+                    let expected = Poly::<Rational>::monomial(&vars, 1.into(), &[(v, 1)]);
+                    assert!(Poly::<Rational>::var(&vars, v) == expected.unwrap());
+                }
+            }
+        }
     }
 }
