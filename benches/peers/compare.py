@@ -187,7 +187,8 @@ def print_table(rows, memory, markdown, repeats):
         lines.append(cells)
     print_rows(head, lines, markdown)
     print(f"\nmedian of {repeats} runs per tool, tools alternating; ratio = single-threaded "
-          "superint / peer (below 1: superint is faster); every run reported the identities as "
+          "superint / peer (below 1: superint is faster); superint's 2-thread column is "
+          "`--threads 2`, pinned one to a processor; every run reported the identities as "
           "exact zeros.")
     print(f"superint: {SUPERINT} ({BUILD})")
     if memory:
@@ -256,7 +257,7 @@ def print_goal_table(rows, markdown, repeats, max_cap):
                       "< " + one_over(fl / cap), bound(si), bound(si2)]
         lines.append(cells)
     print_rows(head, lines, markdown)
-    print(f"\nsuperint (on one thread, and with `--threads 2`) and python-flint: median of "
+    print(f"\nsuperint (on one thread, and with `--threads 2`, pinned one to a processor) and python-flint: median of "
           f"{repeats} runs, alternating; "
           f"SymPy: one run, stopped at the cap = {GOAL_FACTOR} x superint's one-thread median (at most "
           f"{max_cap:g} s); ratio = tool / SymPy, goal superint / SymPy <= 1/{GOAL_FACTOR}. "
