@@ -1962,7 +1962,8 @@ fn the_term_limit_stops_every_function_with_an_error() {
 }
 
 /// A file without a `name` is named by its file name, without an article ("The claims of the
-/// t1" read oddly); a named system keeps its article.
+/// t1" read oddly), and so is a name with an article or possessive of its own ("of the my
+/// oscillator" did); any other name takes "the".
 #[test]
 fn a_system_named_by_its_file_takes_no_article() {
     let dir = scratch("unnamed");
@@ -1978,6 +1979,27 @@ fn a_system_named_by_its_file_takes_no_article() {
     );
     let out = run(&["check", "systems/kepler.toml"], 0);
     assert!(out.starts_with("The claims of the Kepler problem, checked exactly\n"));
+    for (name, title) in [
+        ("my oscillator", "The claims of my oscillator"),
+        ("The oscillator", "The claims of The oscillator"),
+        ("an oscillator", "The claims of an oscillator"),
+        (
+            "anisotropic oscillator",
+            "The claims of the anisotropic oscillator",
+        ),
+        ("mystery", "The claims of the mystery"),
+    ] {
+        let file = dir.join("named.toml");
+        let body = format!(
+            "name = \"{name}\"\nhamiltonian = \"p_x^2/2\"\n[phase_space]\ncoordinates = [\"x\"]\n"
+        );
+        std::fs::write(&file, body).expect("write");
+        let out = text(&superint_in(&dir, &["check", "named.toml"]).stdout);
+        assert!(
+            out.starts_with(&format!("{title}, checked exactly\n")),
+            "{out}"
+        );
+    }
 }
 
 /// What `expand` echoes of an expression reads back to the same normal form (a fuzzer of
