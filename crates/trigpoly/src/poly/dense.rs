@@ -256,7 +256,7 @@ impl<S: Copy + Send + Sync> Factors<S> {
         std::thread::scope(|scope| {
             let spawned = std::thread::Builder::new().spawn_scoped(scope, move || {
                 // Beside this thread, not on its processor if it is pinned to one.
-                placement::run_anywhere();
+                placement::run_beside_creator();
                 let mut builder = Builder::<I>::new(decoder, bound);
                 for mut batch in batches {
                     builder.append(&batch);
