@@ -257,8 +257,8 @@ def print_goal_table(rows, markdown, repeats, max_cap):
                       "< " + one_over(fl / cap), bound(si), bound(si2)]
         lines.append(cells)
     print_rows(head, lines, markdown)
-    print(f"\nsuperint (on one thread, and with `--threads 2`, pinned one to a processor) and python-flint: median of "
-          f"{repeats} runs, alternating; "
+    print(f"\nsuperint (on one thread, and with `--threads 2`, pinned one to a processor) and "
+          f"python-flint: median of {repeats} runs, alternating; "
           f"SymPy: one run, stopped at the cap = {GOAL_FACTOR} x superint's one-thread median (at most "
           f"{max_cap:g} s); ratio = tool / SymPy, goal superint / SymPy <= 1/{GOAL_FACTOR}. "
           f"`> CAP`: SymPy did not finish within the cap, so the ratios are upper bounds "

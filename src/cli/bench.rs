@@ -9,8 +9,9 @@ use clap::Args;
 use superint::render::Format;
 use superint::workloads::Workload;
 
+use trigpoly::placement;
+
 use super::output::Output;
-use super::pinning;
 
 pub const EXAMPLES: &str = "\
 Examples:
@@ -66,17 +67,16 @@ pub fn run(job: &BenchJob) -> anyhow::Result<bool> {
         bail!("bench measures a time: --no-timings does not apply to it");
     }
     let workload = Workload::new(&args.workload, args.size)?;
-    let pin = !args.no_pin;
-    let pool = pool(args.threads as usize, pin)?;
+    let pool = pool(args.threads as usize, !args.no_pin)?;
     // The pool's threads start before the clock does, heaps included: their start is not
     // the workload's. Each tells whether it runs pinned.
     let alone = pool.broadcast(|_| {
         warm_heap();
-        pinning::allowed().len() == 1
+        placement::allowed().len() == 1
     });
     // This thread may use every processor the process may: each pool thread that may use
     // one only, of two or more, was pinned.
-    let pinned = args.threads > 1 && pinning::allowed().len() > 1 && alone.iter().all(|&a| a);
+    let pinned = args.threads > 1 && placement::allowed().len() > 1 && alone.iter().all(|&a| a);
     // The clock runs on the pool's thread, from the workload's first step to its last: not
     // the hand-over of the job from this thread to the pool and back, which a program that
     // runs in its pool does not make.
@@ -129,10 +129,14 @@ fn warm_heap() {
 /// started on a fresh pool thread, W4(1) took 0.24 ms instead of 0.08 (median of 41), most of
 /// it that thread's first allocations (page faults) and its wake-up. Such a pool holds the
 /// calling thread for the rest of the process; a calling thread that is already some pool's
-/// gets a thread of its own. More threads are all the pool's own, and with `pin` each is
-/// pinned to one of the processors the process may use, if there are as many (`pinning.rs`):
-/// with the calling thread as one of two, W4(1000) took 1.37 ms instead of 0.89 ms (median of
-/// 31 alternating runs).
+/// gets a thread of its own. More threads are all the pool's own: with the calling thread as
+/// one of two, W4(1000) took 1.37 ms instead of 0.89 ms (median of 31 alternating runs).
+///
+/// With `pin`, each of two or more threads is pinned to a processor of its own, if the process
+/// may use as many. A rayon worker with nothing to do sleeps, and the kernel tends to wake a
+/// thread on the processor of the thread that wakes it: the second worker of W4(1000) on two
+/// threads was queued behind the first for the whole run in a third of the runs (1.2 ms
+/// against 0.7 ms, `docs/performance.md`, step 123). A pinned worker is woken on its own.
 fn pool(threads: usize, pin: bool) -> Result<rayon::ThreadPool, rayon::ThreadPoolBuildError> {
     let builder = || rayon::ThreadPoolBuilder::new().num_threads(threads);
     if threads == 1 {
@@ -140,12 +144,12 @@ fn pool(threads: usize, pin: bool) -> Result<rayon::ThreadPool, rayon::ThreadPoo
             return Ok(pool);
         }
     }
-    let cpus = pinning::allowed();
+    let cpus = placement::allowed();
     if pin && cpus.len() >= threads {
         return builder()
             .start_handler(move |i| {
                 // Unpinned if the kernel refuses; the bench reports which it was.
-                pinning::pin_to(cpus[i]);
+                placement::allow(&cpus[i..=i]);
             })
             .build();
     }
@@ -154,7 +158,8 @@ fn pool(threads: usize, pin: bool) -> Result<rayon::ThreadPool, rayon::ThreadPoo
 
 #[cfg(test)]
 mod tests {
-    use super::{pinning, pool};
+    use super::pool;
+    use trigpoly::placement;
 
     #[test]
     fn one_thread_is_the_calling_one_once_and_then_a_thread_of_its_own() {
@@ -170,22 +175,22 @@ mod tests {
     /// its own, the first two the process may use; unpinned, each may use them all.
     #[test]
     fn two_threads_are_pinned_one_to_a_processor() {
-        let cpus = pinning::allowed();
+        let cpus = placement::allowed();
         if cpus.len() < 2 {
             // Nothing to pin to: the pool is built unpinned, which the next lines check.
             let masks = pool(2, true)
                 .expect("a pool")
-                .broadcast(|_| pinning::allowed());
+                .broadcast(|_| placement::allowed());
             assert!(masks.iter().all(|m| *m == cpus));
             return;
         }
         let masks = pool(2, true)
             .expect("a pool")
-            .broadcast(|_| pinning::allowed());
+            .broadcast(|_| placement::allowed());
         assert_eq!(masks, vec![vec![cpus[0]], vec![cpus[1]]]);
         let masks = pool(2, false)
             .expect("a pool")
-            .broadcast(|_| pinning::allowed());
+            .broadcast(|_| placement::allowed());
         assert_eq!(masks, vec![cpus.clone(), cpus]);
     }
 }

@@ -15,7 +15,6 @@ mod limits;
 mod output;
 pub use output::{error_line, error_message};
 mod paper;
-mod pinning;
 mod plot;
 mod rank;
 mod search;

@@ -45,6 +45,7 @@
 mod error;
 mod lower;
 mod number;
+pub mod placement;
 mod poly;
 mod print;
 pub mod syntax;

@@ -20,9 +20,10 @@ use rayon::prelude::*;
 use std::sync::mpsc;
 
 use super::kronecker::{Cursor, Decoder, Kronecker};
-use super::{pages, placement};
+use super::pages;
 use crate::error::AlgebraError;
 use crate::number::IntegerRing;
+use crate::placement;
 use crate::varset::Layout;
 
 /// Bytes of accumulators per chunk: half the L2 cache of a typical core.

@@ -17,7 +17,6 @@ mod index;
 mod kronecker;
 mod mul;
 mod pages;
-mod placement;
 mod pow;
 mod radicals;
 mod subst;
