@@ -814,6 +814,13 @@ impl<C: Coefficient> Term<'_, C> {
     }
 }
 
+impl<'a, C: Coefficient> Term<'a, C> {
+    /// The monomial as packed words, which compare as the terms are ordered.
+    pub(crate) fn packed(&self) -> &'a [u64] {
+        self.poly.exp(self.k)
+    }
+}
+
 impl<C: Coefficient> PartialEq for Poly<C> {
     fn eq(&self, other: &Self) -> bool {
         self.content == other.content
