@@ -593,6 +593,23 @@ mod tests {
         );
     }
 
+    /// A term wider than a line breaks inside its long parentheses, one level down, but never
+    /// inside a short group such as `(x − y)⁴`, wherever the group stands.
+    #[test]
+    fn a_short_group_never_breaks() {
+        let groups = "(x − y)⁴ (aaaa + bbbb + cccc + dddd + eeee + ffff) (x + z)²";
+        let line = format!("r = {groups} + {groups}");
+        let lines = wrap_sum(&line, 24, "  ");
+        let text = lines.join("\n");
+        assert_eq!(text.matches("(x − y)⁴").count(), 2, "{text}");
+        assert_eq!(text.matches("(x + z)²").count(), 2, "{text}");
+        assert!(lines.len() > 4, "{text}");
+        assert_eq!(
+            text.split_whitespace().collect::<Vec<_>>(),
+            line.split_whitespace().collect::<Vec<_>>()
+        );
+    }
+
     #[test]
     fn numbers_read_like_the_paper() {
         let q = |re: (i64, i64), im: (i64, i64)| {
