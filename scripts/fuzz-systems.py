@@ -4,8 +4,8 @@
 Each case takes a file of systems/, changes one to three of its expressions (a value, a claim,
 the Hamiltonian; the TOML around them stays valid) by deleting a few characters, inserting a
 token (an operator, a bracket, a huge power, a division by zero, a family index, a radical, a
-large power of a sum) or copying a piece of another expression, and runs a command of superint
-on it. Every run must end with exit code 0 (proved), 1 (refuted) or 2 (an error, reported),
+large power of a sum), copying a piece of another expression, changing a digit or multiplying
+a side by a well-formed factor, and runs a command of superint on it. Every run must end with exit code 0 (proved), 1 (refuted) or 2 (an error, reported),
 never with a panic, and within the timeout: a hang is a failure too (it found a quadratic exact
 division and a quadratic line breaker, each minutes long on a result of 10^5 terms).
 
@@ -64,14 +64,26 @@ def mutate(rng, text):
         head, s, tail = EXPRESSION.match(lines[i]).groups()
         at = rng.randrange(len(s) + 1)
         op = rng.random()
-        if op < 0.3 and s:
+        digits = [k for k, c in enumerate(s) if c.isdigit()]
+        if op < 0.25 and s:
             s = s[:at] + s[at + rng.randint(1, 6):]
-        elif op < 0.8:
+        elif op < 0.6:
             s = s[:at] + rng.choice(TOKENS) + s[at:]
-        else:
+        elif op < 0.75:
             other = EXPRESSION.match(lines[rng.choice(places)]).group(2)
             start = rng.randrange(len(other) + 1)
             s = s[:at] + other[start:start + rng.randint(1, 20)] + s[at:]
+        elif op < 0.9 and digits:
+            # Another number where one stood: the text stays well formed.
+            k = rng.choice(digits)
+            s = s[:k] + str(rng.randrange(10)) + s[k + 1:]
+        else:
+            # A well-formed factor on one side: `lhs = rhs` stays a claim.
+            side = s.split("=")
+            j = rng.randrange(len(side))
+            factor = rng.choice(["(1 + x)", "(x - y)^2", "p_x", "2/3", "(1 + x + p_x)^4"])
+            side[j] = f"({side[j].strip()})*{factor}" if side[j].strip() else side[j]
+            s = " = ".join(x.strip() for x in side)
         lines[i] = head + s + tail
     return "\n".join(lines)
 
