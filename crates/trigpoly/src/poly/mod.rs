@@ -782,10 +782,15 @@ pub struct Term<'a, C: Coefficient> {
     k: usize,
 }
 
-impl<C: Coefficient> Term<'_, C> {
+impl<'a, C: Coefficient> Term<'a, C> {
     /// The coefficient.
     pub fn coeff(&self) -> C {
         C::from_parts(&self.poly.content, &self.poly.coeffs[self.k])
+    }
+
+    /// The monomial as packed words, which compare as the terms are ordered.
+    pub(crate) fn packed(&self) -> &'a [u64] {
+        self.poly.exp(self.k)
     }
 
     /// The term's coefficient in the primitive part: the coefficient is the polynomial's
@@ -811,13 +816,6 @@ impl<C: Coefficient> Term<'_, C> {
         (0..self.poly.vars.len())
             .map(|j| self.poly.layout().get(m, j))
             .collect()
-    }
-}
-
-impl<'a, C: Coefficient> Term<'a, C> {
-    /// The monomial as packed words, which compare as the terms are ordered.
-    pub(crate) fn packed(&self) -> &'a [u64] {
-        self.poly.exp(self.k)
     }
 }
 
