@@ -165,9 +165,8 @@ impl<C: Coefficient> Poly<C> {
         // The monomial `v` packed directly, where `monomial` checks every variable's
         // exponent and allocates twice more (a parsed expression makes one per name).
         let layout = vars.layout();
-        let mut m = layout.one().to_vec();
-        let (word, shift) = layout.field(j);
-        m[word] += 1 << shift;
+        let mut m = vec![0; layout.words];
+        layout.unit(j, 1, &mut m);
         let (content, one) = C::one().split();
         Self::assemble(vars, content, m, vec![one])
     }
