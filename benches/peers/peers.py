@@ -9,7 +9,10 @@ with s² = 1 − c² applied by hand; complex numbers as pairs of real polynomia
 removed by scaling H by the constant 2MI (which does not change whether a bracket vanishes).
 
 SymPy runs through its sparse polynomial ring (sympy.polys.rings), the fastest SymPy
-polynomial type we measured (faster than the Poly class, which wraps dense recursive DMP).
+polynomial type we measured (faster than the Poly class, which wraps dense recursive DMP), on
+the ground types that SYMPY_GROUND_TYPES selects (flint, gmpy or python; SymPy's own default
+takes python-flint when it is installed, as it is beside this script): SymPy prints them as
+`ground: G`, so that a caller can tell that the ones it asked for are the ones in use.
 """
 import sys
 import time
@@ -40,6 +43,7 @@ if BACKEND == "flint":
 
 elif BACKEND == "sympy":
     from sympy import QQ
+    from sympy.external.gmpy import GROUND_TYPES
     from sympy.polys.rings import ring
 
     def make_ring(names):
@@ -150,6 +154,8 @@ elif WORKLOAD in ("w4", "algebra"):
     zeros, terms = algebra(SIZE)
 else:
     sys.exit(f"unknown workload {WORKLOAD}")
+if BACKEND == "sympy":
+    print(f"ground: {GROUND_TYPES}")
 print(f"zeros: {zeros}")
 print(f"seconds: {time.perf_counter() - start:.6f}")
 print(f"terms: {terms}")
