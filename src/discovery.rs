@@ -21,7 +21,7 @@ use std::time::Instant;
 use brackets::closure::{closure_of, Bracket, Closure, ClosureOptions};
 use brackets::search::{parameter_text, search, Integral, SearchOptions, SearchResult};
 use brackets::{EngineError, NamedFunction, System};
-use trigpoly::{Expr, GaussianRational, Rational, Style, Var, VarKind, VarSet};
+use trigpoly::{Expr, GaussianRational, Limits, Rational, Style, Var, VarKind, VarSet};
 
 use crate::report::{
     counted, first_free, ClaimResult, ClosureFacts, Entry, Equation, Equations, Facts,
@@ -1148,12 +1148,16 @@ fn define_resonant(s: &mut System, z: &str, w: &str) -> Result<(), EngineError> 
 /// rotor and the rotor under gravity get, besides the paper's functions, the other circular
 /// ladder `W = w̄ + iMωū` (`{W, H} = iωW`, primed under gravity) and `Hp = F1 − F2`; with
 /// `resonant`, also `P_{mn} + iQ_{mn} = Z^m e^{−inθ}` and `R_{mn} + iS_{mn} = W^m e^{−inθ}`
-/// for `m, n ≤ 3` (named `P11`, `S23`, …).
-pub fn builtin_system(name: &str, resonant: bool) -> Result<Option<(String, System)>, EngineError> {
-    use brackets::systems;
+/// for `m, n ≤ 3` (named `P11`, `S23`, …). Its results are held to `limits`.
+pub fn builtin_system(
+    name: &str,
+    resonant: bool,
+    limits: Limits,
+) -> Result<Option<(String, System)>, EngineError> {
+    use brackets::systems::Rotor;
     let s = match name {
         "harmonic" => {
-            let mut s = systems::harmonic_rotor();
+            let mut s = Rotor::Harmonic.system(limits)?;
             s.define_parsed("W", "W", "p_x - i*p_y + i*M*omega*(x - i*y)")?;
             s.define_parsed("Hp", "Hp", "F1 - F2")?;
             if resonant {
@@ -1162,7 +1166,7 @@ pub fn builtin_system(name: &str, resonant: bool) -> Result<Option<(String, Syst
             ("harmonic rotor".to_string(), s)
         }
         "gravity" => {
-            let mut s = systems::gravity_rotor();
+            let mut s = Rotor::Gravity.system(limits)?;
             s.define_parsed("Wp", "W'", "p_x - i*p_y + i*M*omega*(x - i*yp)")?;
             s.define_parsed("Hp", "Hp", "F1 - F2")?;
             if resonant {
@@ -1172,14 +1176,14 @@ pub fn builtin_system(name: &str, resonant: bool) -> Result<Option<(String, Syst
         }
         "anisotropic-3-5" => (
             "anisotropic 3:5 rotor".into(),
-            systems::anisotropic_rotor(3, 5),
+            Rotor::Anisotropic(3, 5).system(limits)?,
         ),
         "anisotropic-1-2" => (
             "anisotropic 1:2 rotor".into(),
-            systems::anisotropic_rotor(1, 2),
+            Rotor::Anisotropic(1, 2).system(limits)?,
         ),
-        "planar-i" => ("rotor with V_I".into(), systems::planar_i_rotor()),
-        "planar-ii" => ("rotor with V_II".into(), systems::planar_ii_rotor()),
+        "planar-i" => ("rotor with V_I".into(), Rotor::PlanarI.system(limits)?),
+        "planar-ii" => ("rotor with V_II".into(), Rotor::PlanarII.system(limits)?),
         _ => return Ok(None),
     };
     Ok(Some(s))

@@ -166,7 +166,11 @@ impl Subject {
         limits: &LimitsArgs,
     ) -> anyhow::Result<Subject> {
         if let Some(name) = builtin {
-            return match builtin_system(name, resonant)? {
+            let limits = limits.settings().or_defaults();
+            let built = builtin_system(name, resonant, limits).with_context(|| {
+                format!("the built-in system {name} does not fit the limits given")
+            })?;
+            return match built {
                 Some((display, s)) => Ok(Subject::Builtin(display, Box::new(s))),
                 None => bail!(
                     "unknown system '{name}' (built-in: {})",

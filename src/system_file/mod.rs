@@ -86,6 +86,17 @@ pub struct LimitsOverride {
     pub max_degree: Option<u32>,
 }
 
+impl LimitsOverride {
+    /// The limits given, else a system file's defaults ([`DEFAULT_MAX_TERMS`],
+    /// [`DEFAULT_MAX_DEGREE`]): those of a built-in system on the command line.
+    pub fn or_defaults(&self) -> Limits {
+        Limits {
+            max_terms: self.max_terms.unwrap_or(DEFAULT_MAX_TERMS),
+            max_degree: self.max_degree.unwrap_or(DEFAULT_MAX_DEGREE),
+        }
+    }
+}
+
 /// A family of functions with two integer indices, such as `K_{m,n} = Z^m e^{−inθ}`: its
 /// instances are named `K_2_3` (or `K_{2,3}`) in expressions.
 #[derive(Clone, Debug)]

@@ -574,6 +574,56 @@ fn assert_bad_usage(args: &[&str], message: &str) {
     );
 }
 
+/// A built-in system (`--system`) is held to `--max-terms` and `--max-degree`, and by default
+/// to a system file's limits, as the help says: the limits were not passed to it, so that
+/// `--max-terms` did nothing there and a search of 2.4 M unknowns ran (the library's default
+/// is 20 M terms). Limits too small for the system's own functions are an error that says so.
+#[test]
+fn cli_a_builtin_system_keeps_the_limits_given() {
+    let degrees = |d: &'static str| {
+        [
+            "--momenta-degree",
+            d,
+            "--positions-degree",
+            d,
+            "--trig-degree",
+            d,
+        ]
+    };
+    let search = ["search", "--system", "harmonic"];
+    assert_bad_usage(
+        &[&search[..], &degrees("2"), &["--max-terms", "10"]].concat(),
+        "the space has 300 unknowns, more than the term limit 10",
+    );
+    assert_bad_usage(
+        &[&search[..], &degrees("14")].concat(),
+        "the space has 2366400 unknowns, more than the term limit 2000000",
+    );
+    assert_bad_usage(
+        &[&search[..], &["--max-terms", "4"]].concat(),
+        "the built-in system harmonic does not fit the limits given: line 1, column 1: the \
+         result would have more than 4 terms",
+    );
+    assert_bad_usage(
+        &[
+            "closure",
+            "--system",
+            "gravity",
+            "--max-degree",
+            "1",
+            "L",
+            "G1",
+        ],
+        "the built-in system gravity does not fit the limits given",
+    );
+    // Within the limits, the search runs as before.
+    let out = run(
+        &[&search[..], &degrees("2"), &["--max-terms", "300"]].concat(),
+        0,
+    );
+    assert!(out.contains("300 unknowns"), "{out}");
+}
+
 #[test]
 fn cli_search_complement_over_q_alone_prints_the_same() {
     let args = [

@@ -2,15 +2,22 @@
 //! rod `I = ML²/12`), the rotor under gravity, the anisotropic rotor; with their named functions
 //! and the resonant families `K_{m,n} = Z^m e^{−inθ}`.
 
-use trigpoly::{Expr, VarSet, Vars};
+use trigpoly::{Expr, Limits, VarSet, Vars};
 
 use crate::error::EngineError;
 use crate::phase::PhaseSpace;
 use crate::system::System;
 
-/// The variables of a rotor in the plane: `x, y, θ, p_x, p_y, p_θ` and the given parameters.
+/// The variables of a rotor in the plane: `x, y, θ, p_x, p_y, p_θ` and the given parameters,
+/// with the library's default limits.
 pub fn rotor_vars(parameters: &[&str]) -> Vars {
+    rotor_vars_with(parameters, Limits::default()).expect("the rotor's variables are well formed")
+}
+
+/// [`rotor_vars`] with `limits`.
+fn rotor_vars_with(parameters: &[&str], limits: Limits) -> Result<Vars, EngineError> {
     let mut b = VarSet::builder()
+        .limits(limits)
         .coordinate("x")
         .coordinate("y")
         .angle("theta")
@@ -20,21 +27,26 @@ pub fn rotor_vars(parameters: &[&str]) -> Vars {
     for p in parameters {
         b = b.parameter(p);
     }
-    b.build().expect("the rotor's variables are well formed")
+    Ok(b.build()?)
 }
 
-/// A system from source text. Panics on an error: built-in systems are fixed text.
-fn build(name: &str, params: &[&str], h: &str, functions: &[(&str, &str, &str)]) -> System {
-    let vars = rotor_vars(params);
-    let space = PhaseSpace::new(&vars, &[("x", "p_x"), ("y", "p_y"), ("theta", "p_theta")])
-        .expect("canonical pairs of the rotor");
-    let h = Expr::parse(&vars, h).unwrap_or_else(|e| panic!("{}", e.render(h)));
+/// A system from source text, with `limits`: an error only when a function passes them (the
+/// texts are fixed and well formed).
+fn build(
+    name: &str,
+    params: &[&str],
+    h: &str,
+    functions: &[(&str, &str, &str)],
+    limits: Limits,
+) -> Result<System, EngineError> {
+    let vars = rotor_vars_with(params, limits)?;
+    let space = PhaseSpace::new(&vars, &[("x", "p_x"), ("y", "p_y"), ("theta", "p_theta")])?;
+    let h = Expr::parse(&vars, h).map_err(|e| EngineError::parse(h, e))?;
     let mut s = System::new(name, space, h);
     for (n, display, src) in functions {
-        s.define_parsed(n, display, src)
-            .unwrap_or_else(|e| panic!("{n}: {e}"));
+        s.define_parsed(n, display, src)?;
     }
-    s
+    Ok(s)
 }
 
 /// `H = (p_x² + p_y²)/(2M) + V(x, y) + p_θ²/(2I)` for a polynomial potential given as text in
@@ -52,15 +64,89 @@ pub fn rotor(potential: &str, extra_parameters: &[&str]) -> Result<System, Engin
     Ok(s)
 }
 
+/// The paper's rotors, which the functions below build with the library's default limits, and
+/// [`Rotor::system`] with any (the command line's `--max-terms`, say).
+///
+/// ```
+/// use brackets::systems::Rotor;
+/// use trigpoly::Limits;
+///
+/// let rotor = Rotor::Harmonic.system(Limits { max_terms: 100, max_degree: 50 }).unwrap();
+/// assert_eq!(rotor.vars().limits().max_terms, 100);
+/// // H has five terms: a limit of four refuses the system, with the reason.
+/// let refused = Rotor::Harmonic.system(Limits { max_terms: 4, max_degree: 50 });
+/// assert!(refused.unwrap_err().to_string().contains("limit"));
+/// ```
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Rotor {
+    /// [`harmonic_rotor`].
+    Harmonic,
+    /// [`harmonic_rod`].
+    HarmonicRod,
+    /// [`gravity_rotor`].
+    Gravity,
+    /// [`anisotropic_rotor`] with `ω_x : ω_y = a : b`.
+    Anisotropic(u32, u32),
+    /// [`planar_i_rotor`].
+    PlanarI,
+    /// [`planar_ii_rotor`].
+    PlanarII,
+}
+
+impl Rotor {
+    /// The system, its results held to `limits`; an error when its own functions pass them.
+    pub fn system(self, limits: Limits) -> Result<System, EngineError> {
+        match self {
+            Rotor::Harmonic => build(
+                "harmonic rotor",
+                &["M", "omega", "I"],
+                "(p_x^2 + p_y^2)/(2*M) + M*omega^2*(x^2 + y^2)/2 + p_theta^2/(2*I)",
+                &HARMONIC_FUNCTIONS,
+                limits,
+            ),
+            Rotor::HarmonicRod => build(
+                "harmonic rod",
+                &["M", "omega", "L"],
+                "(p_x^2 + p_y^2)/(2*M) + M*omega^2*(x^2 + y^2)/2 + p_theta^2/(2*(M*L^2/12))",
+                &[],
+                limits,
+            ),
+            Rotor::Gravity => {
+                let mut functions: Vec<(&str, &str, &str)> = HARMONIC_FUNCTIONS.to_vec();
+                functions.extend_from_slice(&GRAVITY_FUNCTIONS);
+                build(
+                    "gravity rotor",
+                    &["M", "omega", "I", "g"],
+                    "(p_x^2 + p_y^2)/(2*M) + M*omega^2*(x^2 + y^2)/2 + p_theta^2/(2*I) + M*g*y",
+                    &functions,
+                    limits,
+                )
+            }
+            Rotor::Anisotropic(a, b) => anisotropic(a, b, limits),
+            Rotor::PlanarI => build(
+                "planar limit V_I with rotor",
+                &["M", "I", "alpha", "beta", "gamma"],
+                "(p_x^2 + p_y^2)/(2*M) + alpha*(x^2 + y^2) + beta/x^2 + gamma/y^2 + p_theta^2/(2*I)",
+                &PLANAR_I_FUNCTIONS,
+                limits,
+            ),
+            Rotor::PlanarII => build(
+                "planar limit V_II with rotor",
+                &["M", "I", "alpha", "beta", "gamma"],
+                "(p_x^2 + p_y^2)/(2*M) + alpha*(x^2 + 4*y^2) + beta/x^2 + gamma*y + p_theta^2/(2*I)",
+                &PLANAR_II_FUNCTIONS,
+                limits,
+            ),
+        }
+    }
+}
+
 /// The harmonic rotor `H = (p_x² + p_y²)/(2M) + Mω²(x² + y²)/2 + p_θ²/(2I)` with `F1, F2, L,
 /// G1, G2, Z, Z̄` and `Ω = p_θ/I`.
 pub fn harmonic_rotor() -> System {
-    build(
-        "harmonic rotor",
-        &["M", "omega", "I"],
-        "(p_x^2 + p_y^2)/(2*M) + M*omega^2*(x^2 + y^2)/2 + p_theta^2/(2*I)",
-        &HARMONIC_FUNCTIONS,
-    )
+    Rotor::Harmonic
+        .system(Limits::default())
+        .expect("the default limits hold a built-in system")
 }
 
 const HARMONIC_FUNCTIONS: [(&str, &str, &str); 8] = [
@@ -80,38 +166,40 @@ const HARMONIC_FUNCTIONS: [(&str, &str, &str); 8] = [
 
 /// The harmonic rod: the harmonic rotor with `I = ML²/12` (`L` the rod's length).
 pub fn harmonic_rod() -> System {
-    build(
-        "harmonic rod",
-        &["M", "omega", "L"],
-        "(p_x^2 + p_y^2)/(2*M) + M*omega^2*(x^2 + y^2)/2 + p_theta^2/(2*(M*L^2/12))",
-        &[],
-    )
+    Rotor::HarmonicRod
+        .system(Limits::default())
+        .expect("the default limits hold a built-in system")
 }
 
 /// The harmonic rotor under gravity, `H_g = H + Mgy`, with the unprimed functions of the
 /// harmonic rotor, `y' = y + g/ω²`, and the primed `L', G1', G2', Z', Z̄'`.
 pub fn gravity_rotor() -> System {
-    let mut functions: Vec<(&str, &str, &str)> = HARMONIC_FUNCTIONS.to_vec();
-    functions.extend_from_slice(&[
-        ("yp", "y'", "y + g/omega^2"),
-        ("Lp", "L'", "L - g/omega^2*p_x"),
-        ("G1p", "G1'", "G1 + M*g*x/2"),
-        ("G2p", "G2'", "G2 - M*g*y - M*g^2/(2*omega^2)"),
-        ("Zp", "Z'", "p_x + i*p_y + i*M*omega*(x + i*yp)"),
-        ("Zbarp", "Z̄'", "p_x - i*p_y - i*M*omega*(x - i*yp)"),
-    ]);
-    build(
-        "gravity rotor",
-        &["M", "omega", "I", "g"],
-        "(p_x^2 + p_y^2)/(2*M) + M*omega^2*(x^2 + y^2)/2 + p_theta^2/(2*I) + M*g*y",
-        &functions,
-    )
+    Rotor::Gravity
+        .system(Limits::default())
+        .expect("the default limits hold a built-in system")
 }
+
+/// The primed functions of the rotor under gravity, after the harmonic rotor's.
+const GRAVITY_FUNCTIONS: [(&str, &str, &str); 6] = [
+    ("yp", "y'", "y + g/omega^2"),
+    ("Lp", "L'", "L - g/omega^2*p_x"),
+    ("G1p", "G1'", "G1 + M*g*x/2"),
+    ("G2p", "G2'", "G2 - M*g*y - M*g^2/(2*omega^2)"),
+    ("Zp", "Z'", "p_x + i*p_y + i*M*omega*(x + i*yp)"),
+    ("Zbarp", "Z̄'", "p_x - i*p_y - i*M*omega*(x - i*yp)"),
+];
 
 /// The anisotropic rotor `V = M(ω_x² x² + ω_y² y²)/2` with `ω_x = a·ω`, `ω_y = b·ω`, and its
 /// ladder functions `A_x = p_x + iMω_x x`, `A_y = p_y + iMω_y y` (`{A, H} = iω_A A`), their
 /// conjugates, `H_x`, `H_y`, `F2` and `Ω`.
 pub fn anisotropic_rotor(a: u32, b: u32) -> System {
+    Rotor::Anisotropic(a, b)
+        .system(Limits::default())
+        .expect("the default limits hold a built-in system")
+}
+
+/// [`anisotropic_rotor`] with `limits`.
+fn anisotropic(a: u32, b: u32, limits: Limits) -> Result<System, EngineError> {
     let h =
         format!("(p_x^2 + p_y^2)/(2*M) + M*omega^2*({a}^2*x^2 + {b}^2*y^2)/2 + p_theta^2/(2*I)");
     let hx = format!("p_x^2/(2*M) + M*{a}^2*omega^2*x^2/2");
@@ -134,6 +222,7 @@ pub fn anisotropic_rotor(a: u32, b: u32) -> System {
             ("Aybar", "Ā_y", &aybar),
             ("Omega", "Ω", "p_theta/I"),
         ],
+        limits,
     )
 }
 
@@ -242,41 +331,39 @@ pub fn resonance_text(m: i64, n: i64) -> String {
 /// rotor, with the second-order integrals `H_x = p_x²/(2M) + αx² + β/x²`,
 /// `H_y = p_y²/(2M) + αy² + γ/y²`, `X = L² + 2M(βy²/x² + γx²/y²)`, and `L`, `F2`.
 pub fn planar_i_rotor() -> System {
-    build(
-        "planar limit V_I with rotor",
-        &["M", "I", "alpha", "beta", "gamma"],
-        "(p_x^2 + p_y^2)/(2*M) + alpha*(x^2 + y^2) + beta/x^2 + gamma/y^2 + p_theta^2/(2*I)",
-        &[
-            ("F2", "F2", "p_theta^2/(2*I)"),
-            ("L", "L", "x*p_y - y*p_x"),
-            ("Hx", "H_x", "p_x^2/(2*M) + alpha*x^2 + beta/x^2"),
-            ("Hy", "H_y", "p_y^2/(2*M) + alpha*y^2 + gamma/y^2"),
-            ("X", "X", "L^2 + 2*M*(beta*y^2/x^2 + gamma*x^2/y^2)"),
-        ],
-    )
+    Rotor::PlanarI
+        .system(Limits::default())
+        .expect("the default limits hold a built-in system")
 }
+
+const PLANAR_I_FUNCTIONS: [(&str, &str, &str); 5] = [
+    ("F2", "F2", "p_theta^2/(2*I)"),
+    ("L", "L", "x*p_y - y*p_x"),
+    ("Hx", "H_x", "p_x^2/(2*M) + alpha*x^2 + beta/x^2"),
+    ("Hy", "H_y", "p_y^2/(2*M) + alpha*y^2 + gamma/y^2"),
+    ("X", "X", "L^2 + 2*M*(beta*y^2/x^2 + gamma*x^2/y^2)"),
+];
 
 /// The planar limit `V_II = α(x² + 4y²) + β/x² + γy` (a Laurent potential) coupled to the
 /// rotor, with the second-order integrals `H_x = p_x²/(2M) + αx² + β/x²`,
 /// `H_y = p_y²/(2M) + 4αy² + γy`, `X = L p_x + M(2αx²y − 2βy/x² + γx²/2)`, and `L`, `F2`.
 pub fn planar_ii_rotor() -> System {
-    build(
-        "planar limit V_II with rotor",
-        &["M", "I", "alpha", "beta", "gamma"],
-        "(p_x^2 + p_y^2)/(2*M) + alpha*(x^2 + 4*y^2) + beta/x^2 + gamma*y + p_theta^2/(2*I)",
-        &[
-            ("F2", "F2", "p_theta^2/(2*I)"),
-            ("L", "L", "x*p_y - y*p_x"),
-            ("Hx", "H_x", "p_x^2/(2*M) + alpha*x^2 + beta/x^2"),
-            ("Hy", "H_y", "p_y^2/(2*M) + 4*alpha*y^2 + gamma*y"),
-            (
-                "X",
-                "X",
-                "L*p_x + M*(2*alpha*x^2*y - 2*beta*y/x^2 + gamma*x^2/2)",
-            ),
-        ],
-    )
+    Rotor::PlanarII
+        .system(Limits::default())
+        .expect("the default limits hold a built-in system")
 }
+
+const PLANAR_II_FUNCTIONS: [(&str, &str, &str); 5] = [
+    ("F2", "F2", "p_theta^2/(2*I)"),
+    ("L", "L", "x*p_y - y*p_x"),
+    ("Hx", "H_x", "p_x^2/(2*M) + alpha*x^2 + beta/x^2"),
+    ("Hy", "H_y", "p_y^2/(2*M) + 4*alpha*y^2 + gamma*y"),
+    (
+        "X",
+        "X",
+        "L*p_x + M*(2*alpha*x^2*y - 2*beta*y/x^2 + gamma*x^2/2)",
+    ),
+];
 
 #[cfg(test)]
 mod tests {
