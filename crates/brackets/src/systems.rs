@@ -149,6 +149,7 @@ pub fn harmonic_rotor() -> System {
         .expect("the default limits hold a built-in system")
 }
 
+/// The named functions of [`harmonic_rotor`] (and of [`gravity_rotor`], before its primed ones).
 const HARMONIC_FUNCTIONS: [(&str, &str, &str); 8] = [
     ("F1", "F1", "H"),
     ("F2", "F2", "p_theta^2/(2*I)"),
@@ -336,6 +337,7 @@ pub fn planar_i_rotor() -> System {
         .expect("the default limits hold a built-in system")
 }
 
+/// The named functions of [`planar_i_rotor`].
 const PLANAR_I_FUNCTIONS: [(&str, &str, &str); 5] = [
     ("F2", "F2", "p_theta^2/(2*I)"),
     ("L", "L", "x*p_y - y*p_x"),
@@ -353,6 +355,7 @@ pub fn planar_ii_rotor() -> System {
         .expect("the default limits hold a built-in system")
 }
 
+/// The named functions of [`planar_ii_rotor`].
 const PLANAR_II_FUNCTIONS: [(&str, &str, &str); 5] = [
     ("F2", "F2", "p_theta^2/(2*I)"),
     ("L", "L", "x*p_y - y*p_x"),
