@@ -748,9 +748,11 @@ enum Long {
 }
 
 /// A 256-bit two's complement integer `high·2¹²⁸ + low`: the sums of products of `i128`s in
-/// [`IntegerAcc`], and the sums of the hashed product for coefficients past a word.
+/// [`IntegerAcc`], the sums of the hashed product for coefficients past a word, and the broad
+/// accumulators of the dense product ([`IntegerRing::Broad`](super::IntegerRing::Broad)).
+/// Public only as that associated type is (the crate does not export it).
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
-pub(crate) struct Wide256 {
+pub struct Wide256 {
     low: u128,
     high: i128,
 }

@@ -72,6 +72,9 @@ pub trait IntegerRing:
     type Small: Copy + Default + Send + Sync;
     /// A wide accumulator for `Small` products (`i128` per component).
     type Wide: Copy + Default + PartialEq + Send + Sync;
+    /// A broader accumulator for `Small` products (256 bits per component), for sums that
+    /// could pass `Wide`'s.
+    type Broad: Copy + Default + PartialEq + Send + Sync;
     /// The value in machine words, if every component fits.
     fn to_small(&self) -> Option<Self::Small>;
     /// Bits of the largest component of a small value.
@@ -89,6 +92,10 @@ pub trait IntegerRing:
     fn small_to_wide(a: &Self::Small) -> Self::Wide;
     /// The value of a wide accumulator.
     fn from_wide(w: Self::Wide) -> Self;
+    /// `acc += a · b` in 256-bit arithmetic; the caller guarantees no overflow.
+    fn broad_add_mul(acc: &mut Self::Broad, a: &Self::Small, b: &Self::Small);
+    /// The value of a broad accumulator.
+    fn from_broad(w: Self::Broad) -> Self;
     /// `acc += w` in wide arithmetic; the caller guarantees no overflow.
     fn wide_add(acc: &mut Self::Wide, w: &Self::Wide);
     /// `k · w` in wide arithmetic; the caller guarantees no overflow.
@@ -123,6 +130,7 @@ impl IntegerRing for Integer {
     type Acc = IntegerAcc;
     type Small = i64;
     type Wide = i128;
+    type Broad = Wide256;
     const GAUSS_LEMMA: bool = true;
     const PRODUCTS_PER_COMPONENT: u32 = 1;
     const COMPLEX: bool = false;
@@ -165,6 +173,14 @@ impl IntegerRing for Integer {
     #[inline]
     fn from_wide(w: i128) -> Self {
         Integer::from_i128(w)
+    }
+    #[inline(always)]
+    fn broad_add_mul(acc: &mut Wide256, a: &i64, b: &i64) {
+        acc.add_mul(i128::from(*a), i128::from(*b));
+    }
+    #[inline]
+    fn from_broad(w: Wide256) -> Self {
+        w.to_integer()
     }
     #[inline(always)]
     fn wide_add(acc: &mut i128, w: &i128) {
@@ -256,6 +272,7 @@ impl IntegerRing for GaussianInteger {
     type Acc = GaussianAcc;
     type Small = (i64, i64);
     type Wide = (i128, i128);
+    type Broad = [Wide256; 2];
     const GAUSS_LEMMA: bool = false;
     const PRODUCTS_PER_COMPONENT: u32 = 2;
     const COMPLEX: bool = true;
@@ -304,6 +321,19 @@ impl IntegerRing for GaussianInteger {
     #[inline]
     fn from_wide(w: (i128, i128)) -> Self {
         GaussianInteger::new(Integer::from_i128(w.0), Integer::from_i128(w.1))
+    }
+    #[inline(always)]
+    fn broad_add_mul(acc: &mut [Wide256; 2], a: &(i64, i64), b: &(i64, i64)) {
+        let [ar, ai, br, bi] = [a.0, a.1, b.0, b.1].map(i128::from);
+        let [re, im] = acc;
+        re.add_mul(ar, br);
+        re.add_mul(-ai, bi);
+        im.add_mul(ar, bi);
+        im.add_mul(ai, br);
+    }
+    #[inline]
+    fn from_broad([re, im]: [Wide256; 2]) -> Self {
+        GaussianInteger::new(re.to_integer(), im.to_integer())
     }
     #[inline(always)]
     fn wide_add(acc: &mut (i128, i128), w: &(i128, i128)) {

@@ -5,7 +5,9 @@
 //! bitmap records the touched accumulators and only those are read, and each chunk visits only
 //! the rows with a product in it: every row waits in the list of the chunk of its next product
 //! (a bucket queue), where a scan would pass over every row in every chunk. Used when the box
-//! is not much larger than the work and every coefficient product fits the accumulators.
+//! is not much larger than the work and every coefficient fits a machine word. The accumulators
+//! are `i128` per component when every sum fits them, and 256 bits otherwise (`Broad`: FLINT's
+//! three-word sums do the same), where such a product went to the hashed method.
 //!
 //! When the caller's rayon pool has more than one thread, large products use a second core: on
 //! a dense box they split the index range into parts that rayon runs on the pool's threads; on
@@ -50,8 +52,54 @@ const BACKED_TERMS: usize = 1 << 15;
 /// Packed exponents and coefficients of a product, sorted descending.
 pub(crate) type Product<I> = (Vec<u64>, Vec<I>);
 
+/// What the accumulators of a dense product hold: exact sums of products of word-sized
+/// coefficients of `I`, in cells of `Cell`.
+trait Cells<I: IntegerRing> {
+    /// One accumulator.
+    type Cell: Copy + Default + PartialEq + Send + Sync;
+    /// The most bits of a sum's component that a cell holds.
+    const BITS: u32;
+    /// `cell += a·b`; the caller guarantees no overflow.
+    fn add_mul(cell: &mut Self::Cell, a: &I::Small, b: &I::Small);
+    /// The sum in a cell.
+    fn value(cell: Self::Cell) -> I;
+}
+
+/// Cells of `i128` per component ([`IntegerRing::Wide`]).
+struct Narrow;
+
+impl<I: IntegerRing> Cells<I> for Narrow {
+    type Cell = I::Wide;
+    const BITS: u32 = 126;
+    #[inline(always)]
+    fn add_mul(cell: &mut I::Wide, a: &I::Small, b: &I::Small) {
+        I::wide_add_mul(cell, a, b);
+    }
+    #[inline(always)]
+    fn value(cell: I::Wide) -> I {
+        I::from_wide(cell)
+    }
+}
+
+/// Cells of 256 bits per component ([`IntegerRing::Broad`]), for sums past `i128`: products
+/// of coefficients of up to 63 bits each, over any number of terms.
+struct Broad;
+
+impl<I: IntegerRing> Cells<I> for Broad {
+    type Cell = I::Broad;
+    const BITS: u32 = 254;
+    #[inline(always)]
+    fn add_mul(cell: &mut I::Broad, a: &I::Small, b: &I::Small) {
+        I::broad_add_mul(cell, a, b);
+    }
+    #[inline(always)]
+    fn value(cell: I::Broad) -> I {
+        I::from_broad(cell)
+    }
+}
+
 /// The product by the dense method, or `None` when the method does not apply (box too large
-/// for the work, or coefficients too large for the accumulators).
+/// for the work, or coefficients past machine words).
 pub(crate) fn try_mul_dense<I: IntegerRing>(
     kron: &Kronecker,
     layout: &Layout,
@@ -64,21 +112,46 @@ pub(crate) fn try_mul_dense<I: IntegerRing>(
     if kron.size() > work.saturating_mul(BOX_PER_PRODUCT) || kron.size() > 1 << 40 {
         return None;
     }
-    // Coefficients must fit machine words, and sums of products the accumulators.
+    // Coefficients must fit machine words; the sums of their products take the narrow cells
+    // when they fit them.
     let small_a: Vec<I::Small> = a.1.iter().map(|c| c.to_small()).collect::<Option<_>>()?;
     let small_b: Vec<I::Small> = b.1.iter().map(|c| c.to_small()).collect::<Option<_>>()?;
     let bits = |v: &[I::Small]| v.iter().map(I::small_bits).max().unwrap_or(0);
     let terms_bits = 64 - (n.min(m) as u64).leading_zeros();
-    if bits(&small_a) + bits(&small_b) + terms_bits + I::PRODUCTS_PER_COMPONENT > 126 {
-        return None;
+    let sum_bits = bits(&small_a) + bits(&small_b) + terms_bits + I::PRODUCTS_PER_COMPONENT;
+    let factors = (small_a, small_b);
+    if sum_bits <= <Narrow as Cells<I>>::BITS {
+        Some(mul_dense::<I, Narrow>(
+            kron, layout, a, b, factors, max_terms,
+        ))
+    } else if sum_bits <= <Broad as Cells<I>>::BITS {
+        Some(mul_dense::<I, Broad>(
+            kron, layout, a, b, factors, max_terms,
+        ))
+    } else {
+        None
     }
+}
+
+/// [`try_mul_dense`] in the cells `W`, which hold every sum; `small` are the coefficients of
+/// `a` and `b` as words.
+fn mul_dense<I: IntegerRing, W: Cells<I>>(
+    kron: &Kronecker,
+    layout: &Layout,
+    a: (&[u64], &[I], &[(i64, i64)]),
+    b: (&[u64], &[I], &[(i64, i64)]),
+    (small_a, small_b): (Vec<I::Small>, Vec<I::Small>),
+    max_terms: usize,
+) -> Result<Product<I>, AlgebraError> {
+    let (n, m) = (a.1.len(), b.1.len());
+    let work = (n as u64).saturating_mul(m as u64);
     let fa = kron.indices(layout, a.0, a.2);
     let gb = kron.indices(layout, b.0, b.2);
     // Index range of the product.
     let (lo, end) = (fa[n - 1] + gb[m - 1], fa[0] + gb[0] + 1);
     // A chunk spans a cache's worth of accumulators, a power of two of them (a chunk's number
     // is then a shift away, `Factors::accumulate`) and at least a word of the bitmap.
-    let cells = (CHUNK_BYTES / std::mem::size_of::<I::Wide>()) as u64;
+    let cells = (CHUNK_BYTES / std::mem::size_of::<W::Cell>()) as u64;
     let chunk = cells.min(end - lo).next_power_of_two().max(64);
     let factors = Factors {
         fa,
@@ -94,8 +167,8 @@ pub(crate) fn try_mul_dense<I: IntegerRing>(
     // (page faults included). A second thread writes them while this one adds, so that the
     // terms are written once, by one thread.
     if mark && threads >= 2 && work >= PIPELINE_WORK {
-        let mut acc = vec![I::Wide::default(); chunk as usize];
-        return Some(factors.pipelined::<I>(&mut acc, (lo, end), &decoder, max_terms));
+        let mut acc = vec![W::Cell::default(); chunk as usize];
+        return factors.pipelined::<I, W>(&mut acc, (lo, end), &decoder, max_terms);
     }
     // The index range cut into parts, highest first.
     let count = if work < PARALLEL_WORK || threads < 2 {
@@ -105,27 +178,23 @@ pub(crate) fn try_mul_dense<I: IntegerRing>(
     };
     let cut = |p: u64| lo + ((end - lo) as u128 * p as u128 / count as u128) as u64;
     let ranges: Vec<(u64, u64)> = (0..count).rev().map(|p| (cut(p), cut(p + 1))).collect();
-    let parts: Vec<Product<I>> = match ranges
+    let parts: Vec<Product<I>> = ranges
         .into_par_iter()
         .map_init(
-            || vec![I::Wide::default(); chunk as usize],
+            || vec![W::Cell::default(); chunk as usize],
             |acc, (lo, hi)| {
                 if mark {
-                    factors.range::<I, true>(acc, (lo, hi), &decoder, max_terms)
+                    factors.range::<I, W, true>(acc, (lo, hi), &decoder, max_terms)
                 } else {
-                    factors.range::<I, false>(acc, (lo, hi), &decoder, max_terms)
+                    factors.range::<I, W, false>(acc, (lo, hi), &decoder, max_terms)
                 }
             },
         )
-        .collect()
-    {
-        Ok(parts) => parts,
-        Err(e) => return Some(Err(e)),
-    };
+        .collect::<Result<_, _>>()?;
     // Each part kept to the term limit; the caller checks the total.
     let total: usize = parts.iter().map(|(_, c)| c.len()).sum();
     if parts.len() == 1 {
-        return parts.into_iter().next().map(Ok);
+        return Ok(parts.into_iter().next().expect("one part"));
     }
     let mut exps = Vec::with_capacity(total * layout.words);
     let mut coeffs = Vec::with_capacity(total);
@@ -133,7 +202,7 @@ pub(crate) fn try_mul_dense<I: IntegerRing>(
         exps.extend_from_slice(&e);
         coeffs.extend(c);
     }
-    Some(Ok((exps, coeffs)))
+    Ok((exps, coeffs))
 }
 
 /// The end of a list of rows.
@@ -151,11 +220,11 @@ impl<S: Copy + Send + Sync> Factors<S> {
     /// A row's products from its next partner down to `bottom`, added into the chunk's
     /// accumulators (offset from `bottom`, marked with `MARK`); moves the row on past them.
     #[inline(always)]
-    fn add_row<I: IntegerRing<Small = S>, const MARK: bool>(
+    fn add_row<I: IntegerRing<Small = S>, W: Cells<I>, const MARK: bool>(
         &self,
         (fi, ai, next): (u64, S, &mut usize),
         bottom: u64,
-        acc: &mut [I::Wide],
+        acc: &mut [W::Cell],
         touched: &mut [u64],
     ) {
         let j = *next;
@@ -180,7 +249,7 @@ impl<S: Copy + Send + Sync> Factors<S> {
             }
             let off = off as usize;
             run += 1;
-            I::wide_add_mul(&mut acc[off], &ai, c);
+            W::add_mul(&mut acc[off], &ai, c);
             if MARK {
                 let w = off >> 6;
                 if w != word {
@@ -222,16 +291,16 @@ impl<S: Copy + Send + Sync> Factors<S> {
 
     /// The terms of the product with indices in `[lo, hi)`, descending, as packed monomials,
     /// built on this thread.
-    fn range<I: IntegerRing<Small = S>, const MARK: bool>(
+    fn range<I: IntegerRing<Small = S>, W: Cells<I>, const MARK: bool>(
         &self,
-        acc: &mut [I::Wide],
+        acc: &mut [W::Cell],
         (lo, hi): (u64, u64),
         decoder: &Decoder,
         max_terms: usize,
     ) -> Result<Product<I>, AlgebraError> {
         let next = self.first_partners(hi);
-        let mut builder = Builder::<I>::new(decoder, self.bound(&next, (lo, hi), max_terms));
-        self.accumulate::<I, MARK>(acc, next, (lo, hi), max_terms, &mut builder)?;
+        let mut builder = Builder::<I, W>::new(decoder, self.bound(&next, (lo, hi), max_terms));
+        self.accumulate::<I, W, MARK>(acc, next, (lo, hi), max_terms, &mut builder)?;
         Ok(builder.finish())
     }
 
@@ -243,22 +312,22 @@ impl<S: Copy + Send + Sync> Factors<S> {
     /// reclaim the pages of the ended building thread on a free, so that those frees are
     /// local (`superint::allocator::configure`); without that, converting on this thread is
     /// as fast.
-    fn pipelined<I: IntegerRing<Small = S>>(
+    fn pipelined<I: IntegerRing<Small = S>, W: Cells<I>>(
         &self,
-        acc: &mut [I::Wide],
+        acc: &mut [W::Cell],
         (lo, hi): (u64, u64),
         decoder: &Decoder,
         max_terms: usize,
     ) -> Result<Product<I>, AlgebraError> {
         let next = self.first_partners(hi);
         let bound = self.bound(&next, (lo, hi), max_terms);
-        let (full, batches) = mpsc::sync_channel::<Vec<(u64, I::Wide)>>(BATCHES_IN_FLIGHT);
-        let (emptied, empties) = mpsc::channel::<Vec<(u64, I::Wide)>>();
+        let (full, batches) = mpsc::sync_channel::<Vec<(u64, W::Cell)>>(BATCHES_IN_FLIGHT);
+        let (emptied, empties) = mpsc::channel::<Vec<(u64, W::Cell)>>();
         std::thread::scope(|scope| {
             let spawned = std::thread::Builder::new().spawn_scoped(scope, move || {
                 // Beside this thread, not on its processor if it is pinned to one.
                 placement::run_beside_creator();
-                let mut builder = Builder::<I>::new(decoder, bound);
+                let mut builder = Builder::<I, W>::new(decoder, bound);
                 for mut batch in batches {
                     builder.append(&batch);
                     batch.clear();
@@ -269,7 +338,7 @@ impl<S: Copy + Send + Sync> Factors<S> {
             });
             let Ok(building) = spawned else {
                 // No thread to be had: the terms are built on this one.
-                return self.range::<I, true>(acc, (lo, hi), decoder, max_terms);
+                return self.range::<I, W, true>(acc, (lo, hi), decoder, max_terms);
             };
             let mut sender = Sender {
                 batch: Vec::with_capacity(BATCH),
@@ -277,7 +346,7 @@ impl<S: Copy + Send + Sync> Factors<S> {
                 full,
                 empties,
             };
-            let added = self.accumulate::<I, true>(acc, next, (lo, hi), max_terms, &mut sender);
+            let added = self.accumulate::<I, W, true>(acc, next, (lo, hi), max_terms, &mut sender);
             if added.is_ok() && !sender.batch.is_empty() {
                 sender.flush();
             }
@@ -296,19 +365,19 @@ impl<S: Copy + Send + Sync> Factors<S> {
     /// highest first. With `MARK`, a bitmap records the touched accumulators and only those
     /// are read back, and each chunk visits only the rows with a product in it; without, every
     /// accumulator of a chunk is read back.
-    fn accumulate<I: IntegerRing<Small = S>, const MARK: bool>(
+    fn accumulate<I: IntegerRing<Small = S>, W: Cells<I>, const MARK: bool>(
         &self,
-        acc: &mut [I::Wide],
+        acc: &mut [W::Cell],
         mut next: Vec<usize>,
         (lo, hi): (u64, u64),
         max_terms: usize,
-        sink: &mut impl Sink<I>,
+        sink: &mut impl Sink<W::Cell>,
     ) -> Result<(), AlgebraError> {
         let (fa, gb, ca) = (&self.fa, &self.gb, &self.ca);
         let (n, m) = (fa.len(), gb.len());
         let (g_max, g_min) = (gb[0], gb[m - 1]);
         let chunk = acc.len() as u64;
-        let zero = I::Wide::default();
+        let zero = W::Cell::default();
         let mut touched = vec![0u64; if MARK { (chunk / 64) as usize } else { 0 }];
         // `next[i]`: the first partner of row `i` not yet multiplied.
         // Sparse: `waiting[c]` starts the list of the rows whose next product falls in chunk
@@ -350,7 +419,7 @@ impl<S: Copy + Send + Sync> Factors<S> {
                 while row != NONE {
                     let i = row;
                     row = then[i];
-                    self.add_row::<I, MARK>(
+                    self.add_row::<I, W, MARK>(
                         (fa[i], ca[i], &mut next[i]),
                         bottom,
                         acc,
@@ -366,7 +435,7 @@ impl<S: Copy + Send + Sync> Factors<S> {
                     if fa[i] + g_max < bottom {
                         break;
                     }
-                    self.add_row::<I, MARK>(
+                    self.add_row::<I, W, MARK>(
                         (fa[i], ca[i], &mut next[i]),
                         bottom,
                         acc,
@@ -407,9 +476,9 @@ impl<S: Copy + Send + Sync> Factors<S> {
 /// Where the terms of a product go as the accumulators are read back. Both sinks collect
 /// the terms in batches: the builder writes each batch out in two loops of known length, the
 /// sender hands it to the building thread.
-trait Sink<I: IntegerRing> {
+trait Sink<C> {
     /// The term with Kronecker index `k` and sum `w`, lower than every term before it.
-    fn push(&mut self, k: u64, w: I::Wide);
+    fn push(&mut self, k: u64, w: C);
     /// A chunk has been read back: [`Sink::len`] counts every term pushed so far.
     fn end_chunk(&mut self);
     /// How many terms have come.
@@ -418,7 +487,7 @@ trait Sink<I: IntegerRing> {
 
 /// The terms of a product, written as they come: indices decoded to packed monomials,
 /// accumulators to coefficients.
-struct Builder<'d, I: IntegerRing> {
+struct Builder<'d, I: IntegerRing, W: Cells<I>> {
     decoder: &'d Decoder,
     cursor: Cursor,
     exps: Vec<u64>,
@@ -427,7 +496,7 @@ struct Builder<'d, I: IntegerRing> {
     /// monomials and the coefficients of a batch are written by a loop each, where writing
     /// each term as it was read kept the vectors' lengths and ends on the stack between the
     /// reads (Pearce(12): 1.8 % of the instructions).
-    found: Vec<(u64, I::Wide)>,
+    found: Vec<(u64, W::Cell)>,
     /// The number of terms at which the vectors' next [`BACKED_TERMS`] pages' worth are
     /// backed before they are written (`pages.rs`), which saves most of a page fault's cost
     /// per page; `usize::MAX` (never) unless the product is large enough that the window past
@@ -435,7 +504,7 @@ struct Builder<'d, I: IntegerRing> {
     back_at: usize,
 }
 
-impl<'d, I: IntegerRing> Builder<'d, I> {
+impl<'d, I: IntegerRing, W: Cells<I>> Builder<'d, I, W> {
     /// Room for `bound` terms. A part has at most one term per product and per index:
     /// reserving that much up front costs address space only (pages are backed when
     /// written), where growing by doubling would copy and fault in the terms about twice
@@ -463,7 +532,7 @@ impl<'d, I: IntegerRing> Builder<'d, I> {
 
     /// Appends the terms (Kronecker index and sum), descending and lower than every term so
     /// far, each window of [`BACKED_TERMS`] backed before it is written.
-    fn append(&mut self, mut terms: &[(u64, I::Wide)]) {
+    fn append(&mut self, mut terms: &[(u64, W::Cell)]) {
         while !terms.is_empty() {
             if self.coeffs.len() == self.back_at {
                 pages::back_spare(&mut self.exps, BACKED_TERMS * self.decoder.words());
@@ -477,15 +546,14 @@ impl<'d, I: IntegerRing> Builder<'d, I> {
             // A slice's map has a known length: each `extend` reserves once and writes
             // without a check per term.
             if decoder.words() == 1 {
-                let monomial = |&(k, _): &(u64, I::Wide)| decoder.decode_word(cursor, k);
+                let monomial = |&(k, _): &(u64, W::Cell)| decoder.decode_word(cursor, k);
                 self.exps.extend(now.iter().map(monomial));
             } else {
                 for &(k, _) in now {
                     decoder.decode_onto(cursor, k, &mut self.exps);
                 }
             }
-            self.coeffs
-                .extend(now.iter().map(|&(_, w)| I::from_wide(w)));
+            self.coeffs.extend(now.iter().map(|&(_, w)| W::value(w)));
             terms = later;
         }
     }
@@ -504,9 +572,9 @@ impl<'d, I: IntegerRing> Builder<'d, I> {
     }
 }
 
-impl<I: IntegerRing> Sink<I> for Builder<'_, I> {
+impl<I: IntegerRing, W: Cells<I>> Sink<W::Cell> for Builder<'_, I, W> {
     #[inline(always)]
-    fn push(&mut self, k: u64, w: I::Wide) {
+    fn push(&mut self, k: u64, w: W::Cell) {
         self.found.push((k, w));
         if self.found.len() == READ_BATCH {
             self.write_found();
@@ -524,14 +592,14 @@ impl<I: IntegerRing> Sink<I> for Builder<'_, I> {
 
 /// The accumulating side of a pipelined product: sums with their indices in batches, sent to
 /// the building thread, whose emptied batches come back for reuse.
-struct Sender<I: IntegerRing> {
-    batch: Vec<(u64, I::Wide)>,
+struct Sender<C> {
+    batch: Vec<(u64, C)>,
     sent: usize,
-    full: mpsc::SyncSender<Vec<(u64, I::Wide)>>,
-    empties: mpsc::Receiver<Vec<(u64, I::Wide)>>,
+    full: mpsc::SyncSender<Vec<(u64, C)>>,
+    empties: mpsc::Receiver<Vec<(u64, C)>>,
 }
 
-impl<I: IntegerRing> Sender<I> {
+impl<C> Sender<C> {
     /// Sends the batch, and takes an emptied one (or a new one) in its place.
     fn flush(&mut self) {
         let next = self
@@ -545,9 +613,9 @@ impl<I: IntegerRing> Sender<I> {
     }
 }
 
-impl<I: IntegerRing> Sink<I> for Sender<I> {
+impl<C> Sink<C> for Sender<C> {
     #[inline(always)]
-    fn push(&mut self, k: u64, w: I::Wide) {
+    fn push(&mut self, k: u64, w: C) {
         self.batch.push((k, w));
         if self.batch.len() == BATCH {
             self.flush();

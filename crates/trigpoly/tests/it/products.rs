@@ -108,6 +108,36 @@ fn sparse_products_written_by_a_second_thread_agree_with_one_thread() {
     );
 }
 
+/// Factors with coefficients of 60 and 61 bits: sums of their products could pass `i128`, so
+/// the dense kernel adds them in 256-bit accumulators (a product of 715² term pairs in a
+/// scanned box, and one of 1365² in a sparse box, written by a second thread on two), over Q
+/// and over Q(i). Each is the product on one thread and on two, and takes the value
+/// `f(p)·g(p)`.
+#[test]
+fn products_whose_sums_could_pass_i128_take_broad_accumulators() {
+    let pt = [("x", 2), ("y", -1), ("z", 1), ("t", -1)];
+    let product: Q = checked_product(
+        "(1 + 43*x + 41*y + 37*z + 31*t)^9",
+        "(1 - 31*x + 37*y - 41*z + 43*t)^9",
+        &pt,
+    );
+    // Some coefficient takes more than 64 bits.
+    assert!(product
+        .terms()
+        .any(|t| t.coeff().numer().to_i64().is_none()));
+    checked_product::<Rational>(
+        "(1 + 19*x^3 + 17*y + 13*z^3 + 11*t)^11",
+        "(1 + 11*x + 13*y^3 - 17*z + 19*t^3)^11",
+        &pt,
+    );
+    let product: G = checked_product(
+        "(1 + 43*i*x + 41*y + 37*z + 31*t)^9",
+        "(1 - 31*x + 37*i*y - 41*z + 43*t)^9",
+        &pt,
+    );
+    assert!(product.terms().any(|t| !t.coeff().is_real()));
+}
+
 /// Products too sparse for the dense accumulators (a box of 21·141·261·581 ≈ 449M cells for
 /// 286² ≈ 82k term pairs) whose term pairs meet on few monomials (1771 of them): the hashed
 /// product. A square equals the power by the multinomial walk, and a product the one on two
