@@ -747,12 +747,77 @@ enum Long {
     Big(BigInt),
 }
 
-/// A 256-bit two's complement integer `high·2¹²⁸ + low`: the sums of products of `i128`s in
-/// [`IntegerAcc`], the sums of the hashed product for coefficients past a word, and the broad
-/// accumulators of the dense product ([`IntegerRing::Broad`](super::IntegerRing::Broad)).
-/// Public only as that associated type is (the crate does not export it).
+/// A 192-bit two's complement integer in three words, least significant first: the broad
+/// accumulators of the dense product ([`IntegerRing::Broad`](super::IntegerRing::Broad)),
+/// which add products of coefficients of one or two words (FLINT's three-word sums). Public
+/// only as that associated type is (the crate does not export it).
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
-pub struct Wide256 {
+pub struct Wide192([u64; 3]);
+
+impl Wide192 {
+    /// The most bits of a value's magnitude that a sum may reach: it stays below `2¹⁹¹`.
+    pub(crate) const BITS: u32 = 190;
+
+    /// `self += x·y` modulo `2¹⁹²` (exact when the sum fits, which the caller guarantees).
+    #[inline(always)]
+    pub(crate) fn add_mul_words(&mut self, x: i64, y: i64) {
+        let p = i128::from(x) * i128::from(y);
+        self.add_at(0, p as u128, (p >> 127) as u64);
+    }
+
+    /// `self += x·y` modulo `2¹⁹²` for factors of two words, `x = x₁·2⁶⁴ + x₀` with `x₁`
+    /// signed and `x₀` not: `x₀y₀`, then `(x₁y₀ + x₀y₁)·2⁶⁴`, then the low word of `x₁y₁`
+    /// at `2¹²⁸` (its high word is past 192 bits).
+    #[inline(always)]
+    pub(crate) fn add_mul_double(&mut self, x: i128, y: i128) {
+        let (x1, x0) = ((x >> 64) as i64, x as u64);
+        let (y1, y0) = ((y >> 64) as i64, y as u64);
+        self.add_at(0, u128::from(x0) * u128::from(y0), 0);
+        self.add_at(1, (i128::from(x1) * i128::from(y0)) as u128, 0);
+        self.add_at(1, (i128::from(x0) * i128::from(y1)) as u128, 0);
+        self.0[2] = self.0[2].wrapping_add(x1.wrapping_mul(y1) as u64);
+    }
+
+    /// Adds the 128 bits `v` at word `at` (0 or 1), and `above` (all ones for a negative
+    /// `v` at 0, else 0) to the words past them, modulo `2¹⁹²`.
+    #[inline(always)]
+    fn add_at(&mut self, at: usize, v: u128, above: u64) {
+        let w = &mut self.0;
+        if at == 0 {
+            let (w0, c0) = w[0].overflowing_add(v as u64);
+            let (w1, c1) = w[1].overflowing_add((v >> 64) as u64);
+            let (w1, c2) = w1.overflowing_add(u64::from(c0));
+            w[0] = w0;
+            w[1] = w1;
+            w[2] = w[2]
+                .wrapping_add(above)
+                .wrapping_add(u64::from(c1) + u64::from(c2));
+        } else {
+            let (w1, c1) = w[1].overflowing_add(v as u64);
+            w[1] = w1;
+            w[2] = w[2]
+                .wrapping_add((v >> 64) as u64)
+                .wrapping_add(u64::from(c1));
+        }
+    }
+
+    /// The value.
+    pub(crate) fn to_integer(self) -> Integer {
+        let [w0, w1, w2] = self.0;
+        let low = (u128::from(w1) << 64 | u128::from(w0)) as i128;
+        if w2 == (low >> 127) as u64 {
+            Integer::from_i128(low)
+        } else {
+            let high = BigInt::from(w2 as i64) << 128;
+            Integer::from_bigint(high + BigInt::from(low as u128))
+        }
+    }
+}
+
+/// A 256-bit two's complement integer `high·2¹²⁸ + low`: the sums of products of `i128`s in
+/// [`IntegerAcc`], and the sums of the hashed product for coefficients past a word.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub(crate) struct Wide256 {
     low: u128,
     high: i128,
 }
@@ -951,7 +1016,7 @@ impl IntegerAcc {
 
 #[cfg(test)]
 mod tests {
-    use super::{Integer, IntegerAcc, IntegerView, Wide256};
+    use super::{Integer, IntegerAcc, IntegerView, Wide192, Wide256};
     use num_bigint::BigInt;
     use std::collections::HashSet;
 
@@ -1133,5 +1198,60 @@ mod tests {
         sum.add_mul(-i128::MAX, i128::MAX);
         sum.add_mul(-3, 1 << 100);
         assert_eq!(sum.to_integer(), Integer::from_i128(-3 << 100));
+    }
+
+    /// The 192-bit sum adds products of words and of two words (at most `2⁹³` in magnitude,
+    /// summing to less than `2⁹⁵`, so that every partial sum of their products stays below
+    /// `2¹⁹¹`), of both signs, exactly, and reads back sums on both sides of `i128` and of
+    /// zero.
+    #[test]
+    fn the_192_bit_sum_adds_products_of_words_and_of_two_words_exactly() {
+        let words: Vec<i64> = [
+            0,
+            1,
+            -1,
+            i64::MAX,
+            i64::MIN,
+            i64::MIN + 1,
+            1 << 62,
+            -(1 << 62),
+        ]
+        .into_iter()
+        .chain([0x1234_5678_9abc_def0, -0x7654_3210_fedc_ba98])
+        .collect();
+        let doubles: Vec<i128> = words
+            .iter()
+            .map(|&w| i128::from(w))
+            .chain([
+                1 << 64,
+                -(1 << 64),
+                (1 << 93) - 1,
+                -(1 << 93),
+                0x1234_5678_9abc_def0_1122,
+            ])
+            .collect();
+        let mut sum = Wide192::default();
+        let mut want = BigInt::from(0);
+        for &x in &words {
+            for &y in &words {
+                sum.add_mul_words(x, y);
+                want += BigInt::from(x) * BigInt::from(y);
+                assert_eq!(sum.to_integer().to_bigint(), want, "{x}·{y}");
+            }
+        }
+        for &x in &doubles {
+            for &y in &doubles {
+                sum.add_mul_double(x, y);
+                want += BigInt::from(x) * BigInt::from(y);
+                assert_eq!(sum.to_integer().to_bigint(), want, "{x}·{y}");
+            }
+        }
+        // Past i128 and back: 2¹⁸⁸ − 2¹⁸⁸ + x is x, read back as one word.
+        let mut sum = Wide192::default();
+        sum.add_mul_double(1 << 94, 1 << 94);
+        assert_eq!(sum.to_integer().to_bigint(), BigInt::from(1) << 188u32);
+        sum.add_mul_double(-(1 << 94), 1 << 94);
+        sum.add_mul_words(-7, 3);
+        assert_eq!(sum.to_integer(), Integer::from_i128(-21));
     }
 }

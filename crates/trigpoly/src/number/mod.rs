@@ -19,8 +19,8 @@ use gcd::gcd_u128;
 pub(crate) use gcd::binary_gcd;
 
 pub use gaussian::{GaussianAcc, GaussianInteger, GaussianRational, ParseGaussianError};
-pub(crate) use integer::Wide256;
 pub use integer::{ExactDivisor, Integer, IntegerAcc, IntegerView};
+pub(crate) use integer::{Wide192, Wide256};
 pub(crate) use rational::Magnitude;
 pub use rational::{ParseRationalError, Rational};
 
@@ -72,8 +72,8 @@ pub trait IntegerRing:
     type Small: Copy + Default + Send + Sync;
     /// A wide accumulator for `Small` products (`i128` per component).
     type Wide: Copy + Default + PartialEq + Send + Sync;
-    /// A broader accumulator for `Small` products (256 bits per component), for sums that
-    /// could pass `Wide`'s.
+    /// A broader accumulator (192 bits per component), for sums of products of `Small` or
+    /// `Double` values that could pass `Wide`'s.
     type Broad: Copy + Default + PartialEq + Send + Sync;
     /// The value in machine words, if every component fits.
     fn to_small(&self) -> Option<Self::Small>;
@@ -92,8 +92,17 @@ pub trait IntegerRing:
     fn small_to_wide(a: &Self::Small) -> Self::Wide;
     /// The value of a wide accumulator.
     fn from_wide(w: Self::Wide) -> Self;
-    /// `acc += a · b` in 256-bit arithmetic; the caller guarantees no overflow.
+    /// `acc += a · b` in 192-bit arithmetic; the caller guarantees no overflow.
     fn broad_add_mul(acc: &mut Self::Broad, a: &Self::Small, b: &Self::Small);
+    /// The value in two machine words per component (`i128`).
+    type Double: Copy + Default + Send + Sync;
+    /// The value in two words per component, if every component fits.
+    fn to_double(&self) -> Option<Self::Double>;
+    /// Bits of the largest component of a value in two words.
+    fn double_bits(s: &Self::Double) -> u32;
+    /// `acc += a · b` in 192-bit arithmetic for values in two words; the caller guarantees
+    /// no overflow.
+    fn double_add_mul(acc: &mut Self::Broad, a: &Self::Double, b: &Self::Double);
     /// The value of a broad accumulator.
     fn from_broad(w: Self::Broad) -> Self;
     /// `acc += w` in wide arithmetic; the caller guarantees no overflow.
@@ -130,7 +139,8 @@ impl IntegerRing for Integer {
     type Acc = IntegerAcc;
     type Small = i64;
     type Wide = i128;
-    type Broad = Wide256;
+    type Broad = Wide192;
+    type Double = i128;
     const GAUSS_LEMMA: bool = true;
     const PRODUCTS_PER_COMPONENT: u32 = 1;
     const COMPLEX: bool = false;
@@ -175,12 +185,23 @@ impl IntegerRing for Integer {
         Integer::from_i128(w)
     }
     #[inline(always)]
-    fn broad_add_mul(acc: &mut Wide256, a: &i64, b: &i64) {
-        acc.add_mul(i128::from(*a), i128::from(*b));
+    fn broad_add_mul(acc: &mut Wide192, a: &i64, b: &i64) {
+        acc.add_mul_words(*a, *b);
     }
     #[inline]
-    fn from_broad(w: Wide256) -> Self {
+    fn from_broad(w: Wide192) -> Self {
         w.to_integer()
+    }
+    #[inline]
+    fn to_double(&self) -> Option<i128> {
+        self.to_i128()
+    }
+    fn double_bits(s: &i128) -> u32 {
+        128 - s.unsigned_abs().leading_zeros()
+    }
+    #[inline(always)]
+    fn double_add_mul(acc: &mut Wide192, a: &i128, b: &i128) {
+        acc.add_mul_double(*a, *b);
     }
     #[inline(always)]
     fn wide_add(acc: &mut i128, w: &i128) {
@@ -272,7 +293,8 @@ impl IntegerRing for GaussianInteger {
     type Acc = GaussianAcc;
     type Small = (i64, i64);
     type Wide = (i128, i128);
-    type Broad = [Wide256; 2];
+    type Broad = [Wide192; 2];
+    type Double = (i128, i128);
     const GAUSS_LEMMA: bool = false;
     const PRODUCTS_PER_COMPONENT: u32 = 2;
     const COMPLEX: bool = true;
@@ -323,17 +345,34 @@ impl IntegerRing for GaussianInteger {
         GaussianInteger::new(Integer::from_i128(w.0), Integer::from_i128(w.1))
     }
     #[inline(always)]
-    fn broad_add_mul(acc: &mut [Wide256; 2], a: &(i64, i64), b: &(i64, i64)) {
-        let [ar, ai, br, bi] = [a.0, a.1, b.0, b.1].map(i128::from);
+    fn broad_add_mul(acc: &mut [Wide192; 2], a: &(i64, i64), b: &(i64, i64)) {
         let [re, im] = acc;
-        re.add_mul(ar, br);
-        re.add_mul(-ai, bi);
-        im.add_mul(ar, bi);
-        im.add_mul(ai, br);
+        re.add_mul_words(a.0, b.0);
+        // −(a.1·b.1), as a product that cannot overflow: a.1 may be i64::MIN.
+        re.add_mul_double(-i128::from(a.1), i128::from(b.1));
+        im.add_mul_words(a.0, b.1);
+        im.add_mul_words(a.1, b.0);
     }
     #[inline]
-    fn from_broad([re, im]: [Wide256; 2]) -> Self {
+    fn from_broad([re, im]: [Wide192; 2]) -> Self {
         GaussianInteger::new(re.to_integer(), im.to_integer())
+    }
+    #[inline]
+    fn to_double(&self) -> Option<(i128, i128)> {
+        // Above `i128::MIN`, so that `double_add_mul` may negate a component.
+        let part = |v: &Integer| v.to_i128().filter(|&v| v != i128::MIN);
+        Some((part(&self.re)?, part(&self.im)?))
+    }
+    fn double_bits(s: &(i128, i128)) -> u32 {
+        128 - (s.0.unsigned_abs() | s.1.unsigned_abs()).leading_zeros()
+    }
+    #[inline(always)]
+    fn double_add_mul(acc: &mut [Wide192; 2], a: &(i128, i128), b: &(i128, i128)) {
+        let [re, im] = acc;
+        re.add_mul_double(a.0, b.0);
+        re.add_mul_double(-a.1, b.1);
+        im.add_mul_double(a.0, b.1);
+        im.add_mul_double(a.1, b.0);
     }
     #[inline(always)]
     fn wide_add(acc: &mut (i128, i128), w: &(i128, i128)) {

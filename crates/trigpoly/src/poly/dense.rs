@@ -5,9 +5,11 @@
 //! bitmap records the touched accumulators and only those are read, and each chunk visits only
 //! the rows with a product in it: every row waits in the list of the chunk of its next product
 //! (a bucket queue), where a scan would pass over every row in every chunk. Used when the box
-//! is not much larger than the work and every coefficient fits a machine word. The accumulators
-//! are `i128` per component when every sum fits them, and 256 bits otherwise (`Broad`: FLINT's
-//! three-word sums do the same), where such a product went to the hashed method.
+//! is not much larger than the work and every coefficient fits two machine words per
+//! component (`Cells`): with coefficients of a word, the accumulators are `i128` per component
+//! when every sum fits them (`Narrow`) and 192 bits otherwise (`Broad`); with coefficients of
+//! two words, 192 bits (`Double`), when every sum fits them. Such products went to the hashed
+//! method before.
 //!
 //! When the caller's rayon pool has more than one thread, large products use a second core: on
 //! a dense box they split the index range into parts that rayon runs on the pool's threads; on
@@ -24,7 +26,7 @@ use std::sync::mpsc;
 use super::kronecker::{Cursor, Decoder, Kronecker};
 use super::pages;
 use crate::error::AlgebraError;
-use crate::number::IntegerRing;
+use crate::number::{IntegerRing, Wide192};
 use crate::placement;
 use crate::varset::Layout;
 
@@ -52,25 +54,40 @@ const BACKED_TERMS: usize = 1 << 15;
 /// Packed exponents and coefficients of a product, sorted descending.
 pub(crate) type Product<I> = (Vec<u64>, Vec<I>);
 
-/// What the accumulators of a dense product hold: exact sums of products of word-sized
-/// coefficients of `I`, in cells of `Cell`.
+/// What the accumulators of a dense product hold: exact sums of products of the factors'
+/// coefficients of `I`, taken as `Factor`s, in cells of `Cell`.
 trait Cells<I: IntegerRing> {
+    /// A coefficient of a factor, in machine words.
+    type Factor: Copy + Send + Sync;
     /// One accumulator.
     type Cell: Copy + Default + PartialEq + Send + Sync;
     /// The most bits of a sum's component that a cell holds.
     const BITS: u32;
+    /// The coefficient in words, if it fits them.
+    fn factor(c: &I) -> Option<Self::Factor>;
+    /// Bits of the largest component of a factor's coefficient.
+    fn bits(f: &Self::Factor) -> u32;
     /// `cell += a·b`; the caller guarantees no overflow.
-    fn add_mul(cell: &mut Self::Cell, a: &I::Small, b: &I::Small);
+    fn add_mul(cell: &mut Self::Cell, a: &Self::Factor, b: &Self::Factor);
     /// The sum in a cell.
     fn value(cell: Self::Cell) -> I;
 }
 
-/// Cells of `i128` per component ([`IntegerRing::Wide`]).
+/// Coefficients of a word per component, sums in `i128` ([`IntegerRing::Wide`]).
 struct Narrow;
 
 impl<I: IntegerRing> Cells<I> for Narrow {
+    type Factor = I::Small;
     type Cell = I::Wide;
     const BITS: u32 = 126;
+    #[inline(always)]
+    fn factor(c: &I) -> Option<I::Small> {
+        c.to_small()
+    }
+    #[inline(always)]
+    fn bits(f: &I::Small) -> u32 {
+        I::small_bits(f)
+    }
     #[inline(always)]
     fn add_mul(cell: &mut I::Wide, a: &I::Small, b: &I::Small) {
         I::wide_add_mul(cell, a, b);
@@ -81,13 +98,22 @@ impl<I: IntegerRing> Cells<I> for Narrow {
     }
 }
 
-/// Cells of 256 bits per component ([`IntegerRing::Broad`]), for sums past `i128`: products
-/// of coefficients of up to 63 bits each, over any number of terms.
+/// Coefficients of a word per component, sums in 192 bits ([`IntegerRing::Broad`]): sums
+/// that could pass `i128`.
 struct Broad;
 
 impl<I: IntegerRing> Cells<I> for Broad {
+    type Factor = I::Small;
     type Cell = I::Broad;
-    const BITS: u32 = 254;
+    const BITS: u32 = Wide192::BITS;
+    #[inline(always)]
+    fn factor(c: &I) -> Option<I::Small> {
+        c.to_small()
+    }
+    #[inline(always)]
+    fn bits(f: &I::Small) -> u32 {
+        I::small_bits(f)
+    }
     #[inline(always)]
     fn add_mul(cell: &mut I::Broad, a: &I::Small, b: &I::Small) {
         I::broad_add_mul(cell, a, b);
@@ -96,6 +122,47 @@ impl<I: IntegerRing> Cells<I> for Broad {
     fn value(cell: I::Broad) -> I {
         I::from_broad(cell)
     }
+}
+
+/// Coefficients of two words per component ([`IntegerRing::Double`]), sums in 192 bits.
+struct Double;
+
+impl<I: IntegerRing> Cells<I> for Double {
+    type Factor = I::Double;
+    type Cell = I::Broad;
+    const BITS: u32 = Wide192::BITS;
+    #[inline(always)]
+    fn factor(c: &I) -> Option<I::Double> {
+        c.to_double()
+    }
+    #[inline(always)]
+    fn bits(f: &I::Double) -> u32 {
+        I::double_bits(f)
+    }
+    #[inline(always)]
+    fn add_mul(cell: &mut I::Broad, a: &I::Double, b: &I::Double) {
+        I::double_add_mul(cell, a, b);
+    }
+    #[inline(always)]
+    fn value(cell: I::Broad) -> I {
+        I::from_broad(cell)
+    }
+}
+
+/// The coefficients of `a` and `b` as `W`'s factors and the most bits of a sum of their
+/// products, or `None` if one does not fit.
+#[allow(clippy::type_complexity)]
+fn factors_in<I: IntegerRing, W: Cells<I>>(
+    a: &[I],
+    b: &[I],
+) -> Option<(Vec<W::Factor>, Vec<W::Factor>, u32)> {
+    let words = |v: &[I]| v.iter().map(W::factor).collect::<Option<Vec<_>>>();
+    let (fa, fb) = (words(a)?, words(b)?);
+    let bits = |v: &[W::Factor]| v.iter().map(W::bits).max().unwrap_or(0);
+    // A sum has at most as many products as the shorter factor has terms.
+    let terms_bits = 64 - (a.len().min(b.len()) as u64).leading_zeros();
+    let sum_bits = bits(&fa) + bits(&fb) + terms_bits + I::PRODUCTS_PER_COMPONENT;
+    Some((fa, fb, sum_bits))
 }
 
 /// The product by the dense method, or `None` when the method does not apply (box too large
@@ -112,35 +179,36 @@ pub(crate) fn try_mul_dense<I: IntegerRing>(
     if kron.size() > work.saturating_mul(BOX_PER_PRODUCT) || kron.size() > 1 << 40 {
         return None;
     }
-    // Coefficients must fit machine words; the sums of their products take the narrow cells
-    // when they fit them.
-    let small_a: Vec<I::Small> = a.1.iter().map(|c| c.to_small()).collect::<Option<_>>()?;
-    let small_b: Vec<I::Small> = b.1.iter().map(|c| c.to_small()).collect::<Option<_>>()?;
-    let bits = |v: &[I::Small]| v.iter().map(I::small_bits).max().unwrap_or(0);
-    let terms_bits = 64 - (n.min(m) as u64).leading_zeros();
-    let sum_bits = bits(&small_a) + bits(&small_b) + terms_bits + I::PRODUCTS_PER_COMPONENT;
-    let factors = (small_a, small_b);
-    if sum_bits <= <Narrow as Cells<I>>::BITS {
-        Some(mul_dense::<I, Narrow>(
-            kron, layout, a, b, factors, max_terms,
-        ))
-    } else if sum_bits <= <Broad as Cells<I>>::BITS {
-        Some(mul_dense::<I, Broad>(
-            kron, layout, a, b, factors, max_terms,
-        ))
-    } else {
-        None
+    // Coefficients in a word each, summed in `i128` where the sums fit it and in 256 bits
+    // where they may not; else coefficients in two words, summed in 256 bits.
+    if let Some((fa, fb, sum_bits)) = factors_in::<I, Narrow>(a.1, b.1) {
+        return if sum_bits <= <Narrow as Cells<I>>::BITS {
+            Some(mul_dense::<I, Narrow>(
+                kron,
+                layout,
+                a,
+                b,
+                (fa, fb),
+                max_terms,
+            ))
+        } else {
+            (sum_bits <= <Broad as Cells<I>>::BITS)
+                .then(|| mul_dense::<I, Broad>(kron, layout, a, b, (fa, fb), max_terms))
+        };
     }
+    let (fa, fb, sum_bits) = factors_in::<I, Double>(a.1, b.1)?;
+    (sum_bits <= <Double as Cells<I>>::BITS)
+        .then(|| mul_dense::<I, Double>(kron, layout, a, b, (fa, fb), max_terms))
 }
 
-/// [`try_mul_dense`] in the cells `W`, which hold every sum; `small` are the coefficients of
-/// `a` and `b` as words.
+/// [`try_mul_dense`] in the cells `W`, which hold every sum; `words` are the coefficients of
+/// `a` and `b` as `W`'s factors.
 fn mul_dense<I: IntegerRing, W: Cells<I>>(
     kron: &Kronecker,
     layout: &Layout,
     a: (&[u64], &[I], &[(i64, i64)]),
     b: (&[u64], &[I], &[(i64, i64)]),
-    (small_a, small_b): (Vec<I::Small>, Vec<I::Small>),
+    (words_a, words_b): (Vec<W::Factor>, Vec<W::Factor>),
     max_terms: usize,
 ) -> Result<Product<I>, AlgebraError> {
     let (n, m) = (a.1.len(), b.1.len());
@@ -156,8 +224,8 @@ fn mul_dense<I: IntegerRing, W: Cells<I>>(
     let factors = Factors {
         fa,
         gb,
-        ca: small_a,
-        cb: small_b,
+        ca: words_a,
+        cb: words_b,
     };
     let decoder = kron.decoder(layout, work);
     // Marking costs a little per product, scanning a little per accumulator.
@@ -220,7 +288,7 @@ impl<S: Copy + Send + Sync> Factors<S> {
     /// A row's products from its next partner down to `bottom`, added into the chunk's
     /// accumulators (offset from `bottom`, marked with `MARK`); moves the row on past them.
     #[inline(always)]
-    fn add_row<I: IntegerRing<Small = S>, W: Cells<I>, const MARK: bool>(
+    fn add_row<I: IntegerRing, W: Cells<I, Factor = S>, const MARK: bool>(
         &self,
         (fi, ai, next): (u64, S, &mut usize),
         bottom: u64,
@@ -291,7 +359,7 @@ impl<S: Copy + Send + Sync> Factors<S> {
 
     /// The terms of the product with indices in `[lo, hi)`, descending, as packed monomials,
     /// built on this thread.
-    fn range<I: IntegerRing<Small = S>, W: Cells<I>, const MARK: bool>(
+    fn range<I: IntegerRing, W: Cells<I, Factor = S>, const MARK: bool>(
         &self,
         acc: &mut [W::Cell],
         (lo, hi): (u64, u64),
@@ -312,7 +380,7 @@ impl<S: Copy + Send + Sync> Factors<S> {
     /// reclaim the pages of the ended building thread on a free, so that those frees are
     /// local (`superint::allocator::configure`); without that, converting on this thread is
     /// as fast.
-    fn pipelined<I: IntegerRing<Small = S>, W: Cells<I>>(
+    fn pipelined<I: IntegerRing, W: Cells<I, Factor = S>>(
         &self,
         acc: &mut [W::Cell],
         (lo, hi): (u64, u64),
@@ -365,7 +433,7 @@ impl<S: Copy + Send + Sync> Factors<S> {
     /// highest first. With `MARK`, a bitmap records the touched accumulators and only those
     /// are read back, and each chunk visits only the rows with a product in it; without, every
     /// accumulator of a chunk is read back.
-    fn accumulate<I: IntegerRing<Small = S>, W: Cells<I>, const MARK: bool>(
+    fn accumulate<I: IntegerRing, W: Cells<I, Factor = S>, const MARK: bool>(
         &self,
         acc: &mut [W::Cell],
         mut next: Vec<usize>,

@@ -109,7 +109,7 @@ fn sparse_products_written_by_a_second_thread_agree_with_one_thread() {
 }
 
 /// Factors with coefficients of 60 and 61 bits: sums of their products could pass `i128`, so
-/// the dense kernel adds them in 256-bit accumulators (a product of 715² term pairs in a
+/// the dense kernel adds them in 192-bit accumulators (a product of 715² term pairs in a
 /// scanned box, and one of 1365² in a sparse box, written by a second thread on two), over Q
 /// and over Q(i). Each is the product on one thread and on two, and takes the value
 /// `f(p)·g(p)`.
@@ -133,6 +133,34 @@ fn products_whose_sums_could_pass_i128_take_broad_accumulators() {
     let product: G = checked_product(
         "(1 + 43*i*x + 41*y + 37*z + 31*t)^9",
         "(1 - 31*x + 37*i*y - 41*z + 43*t)^9",
+        &pt,
+    );
+    assert!(product.terms().any(|t| !t.coeff().is_real()));
+}
+
+/// Factors with coefficients of 84 and 71 bits, past a word: the dense kernel takes them in
+/// two words and adds their products in 192-bit accumulators, in a scanned box and in a
+/// sparse one written by a second thread, over Q and over Q(i).
+#[test]
+fn products_of_coefficients_past_a_word_take_two_words() {
+    let pt = [("x", 2), ("y", -1), ("z", 1), ("t", -1)];
+    let product: Q = checked_product(
+        "(1 + 233*x + 229*y + 227*z + 223*t)^9",
+        "(1 - 223*x + 227*y - 229*z + 233*t)^9",
+        &pt,
+    );
+    // Some coefficient takes more than 128 bits.
+    assert!(product
+        .terms()
+        .any(|t| t.coeff().numer().to_i128().is_none()));
+    checked_product::<Rational>(
+        "(1 + 37*x^3 + 31*y + 29*z^3 + 23*t)^11",
+        "(1 + 23*x + 29*y^3 - 31*z + 37*t^3)^11",
+        &pt,
+    );
+    let product: G = checked_product(
+        "(1 + 233*i*x + 229*y + 227*z + 223*t)^9",
+        "(1 - 223*x + 227*i*y - 229*z + 233*t)^9",
         &pt,
     );
     assert!(product.terms().any(|t| !t.coeff().is_real()));
