@@ -166,7 +166,7 @@ fn factors_in<I: IntegerRing, W: Cells<I>>(
 }
 
 /// The product by the dense method, or `None` when the method does not apply (box too large
-/// for the work, or coefficients past machine words).
+/// for the work, coefficients past two machine words, or sums past 192 bits).
 pub(crate) fn try_mul_dense<I: IntegerRing>(
     kron: &Kronecker,
     layout: &Layout,
@@ -179,8 +179,8 @@ pub(crate) fn try_mul_dense<I: IntegerRing>(
     if kron.size() > work.saturating_mul(BOX_PER_PRODUCT) || kron.size() > 1 << 40 {
         return None;
     }
-    // Coefficients in a word each, summed in `i128` where the sums fit it and in 256 bits
-    // where they may not; else coefficients in two words, summed in 256 bits.
+    // Coefficients in a word each, summed in `i128` where the sums fit it and in 192 bits
+    // where they may not; else coefficients in two words, summed in 192 bits.
     if let Some((fa, fb, sum_bits)) = factors_in::<I, Narrow>(a.1, b.1) {
         return if sum_bits <= <Narrow as Cells<I>>::BITS {
             Some(mul_dense::<I, Narrow>(
