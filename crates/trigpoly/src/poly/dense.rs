@@ -219,7 +219,9 @@ fn mul_dense<I: IntegerRing, W: Cells<I>>(
     let (lo, end) = (fa[n - 1] + gb[m - 1], fa[0] + gb[0] + 1);
     // A chunk spans a cache's worth of accumulators, a power of two of them (a chunk's number
     // is then a shift away, `Factors::accumulate`) and at least a word of the bitmap.
-    let cells = (CHUNK_BYTES / std::mem::size_of::<W::Cell>()) as u64;
+    // (The cells that fit, rounded down to a power of two: 24-byte cells would round up to
+    // half as many bytes again.)
+    let cells = 1u64 << (CHUNK_BYTES / std::mem::size_of::<W::Cell>()).ilog2();
     let chunk = cells.min(end - lo).next_power_of_two().max(64);
     let factors = Factors {
         fa,
