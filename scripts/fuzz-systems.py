@@ -5,9 +5,10 @@ Each case takes a file of systems/, changes one to three of its expressions (a v
 the Hamiltonian; the TOML around them stays valid) by deleting a few characters, inserting a
 token (an operator, a bracket, a huge power, a division by zero, a family index, a radical, a
 large power of a sum), copying a piece of another expression, changing a digit or multiplying
-a side by a well-formed factor, and runs a command of superint on it. Every run must end with exit code 0 (proved), 1 (refuted) or 2 (an error, reported),
-never with a panic, and within the timeout: a hang is a failure too (it found a quadratic exact
-division and a quadratic line breaker, each minutes long on a result of 10^5 terms).
+a side by a well-formed factor, and runs a command of superint on it. Every run must end with
+exit code 0 (proved), 1 (refuted) or 2 (an error, reported), never with a panic, and within
+the timeout: a hang is a failure too (it found a quadratic exact division and a quadratic line
+breaker, each minutes long on a result of 10^5 terms).
 
     scripts/fuzz-systems.py --cases 300 --seed 1              # check, in every output format
     scripts/fuzz-systems.py --cases 300 --seed 1 --commands table,search,expand,bracket,rank,closure

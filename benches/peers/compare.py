@@ -214,8 +214,8 @@ def print_table(rows, memory, markdown, repeats, sympy_tools):
         two = f"{med['superint2']:.4f}" if "superint2" in med else ""
         cells = [NAMES[workload], str(size), str(terms), f"{med['superint']:.4f}", two]
         for p in peers:
-            if p == "sympy" and fastest_sympy(med):
-                seconds, ground = fastest_sympy(med)
+            if p == "sympy" and (best := fastest_sympy(med)):
+                seconds, ground = best
                 cells += [f"{seconds:.4f} ({ground})", f"{med['superint'] / seconds:.3g}"]
             elif p in med:
                 cells += [f"{med[p]:.4f}", f"{med['superint'] / med[p]:.3g}"]
@@ -288,8 +288,8 @@ def print_goal_table(rows, args):
         si, si2, fl = med["superint"], med["superint2"], med["flint"]
         cells = [NAMES[workload], str(size), str(terms), f"{si:.4f}", f"{si2:.4f}", f"{fl:.4f}",
                  f"{cap:.1f}"]
-        if fastest_sympy(med):
-            sy, ground = fastest_sympy(med)
+        if best := fastest_sympy(med):
+            sy, ground = best
             cells += [f"{sy:.4f} ({ground})", one_over(si / sy), one_over(si2 / sy), one_over(fl / sy),
                       "yes" if sy >= GOAL_FACTOR * si else "no",
                       "yes" if sy >= GOAL_FACTOR * si2 else "no"]

@@ -19,7 +19,7 @@ use super::error::{locate_bytes, ErrorKind, FileError};
 use super::model::{ExpectShape, FunctionModel, ShapeModel, StringTable, SystemModel};
 use super::scope::{first_bracket, mention};
 use super::text::{Source, Text};
-use super::{Family, LimitsOverride, LoadedSystem, DEFAULT_MAX_DEGREE, DEFAULT_MAX_TERMS};
+use super::{Family, LimitsOverride, LoadedSystem};
 
 /// The largest degree limit a file or the command line may set (what a 16-bit exponent field
 /// holds; the packing widens its fields as the limit asks).
@@ -1177,20 +1177,17 @@ impl<'a> Builder<'a> {
                 ));
             }
         }
-        let max_terms = self
-            .limits
-            .max_terms
-            .or(terms.map(|t| usize::try_from(*t.get_ref()).unwrap_or(usize::MAX)))
-            .unwrap_or(DEFAULT_MAX_TERMS);
-        let max_degree = self
-            .limits
-            .max_degree
-            .or(degree.map(|d| *d.get_ref()))
-            .unwrap_or(DEFAULT_MAX_DEGREE)
-            .min(MAX_DEGREE_CEILING);
+        let given = LimitsOverride {
+            max_terms: self
+                .limits
+                .max_terms
+                .or(terms.map(|t| usize::try_from(*t.get_ref()).unwrap_or(usize::MAX))),
+            max_degree: self.limits.max_degree.or(degree.map(|d| *d.get_ref())),
+        };
+        let limits = given.or_defaults();
         Ok(Limits {
-            max_terms,
-            max_degree,
+            max_degree: limits.max_degree.min(MAX_DEGREE_CEILING),
+            ..limits
         })
     }
 }

@@ -762,7 +762,7 @@ impl Wide192 {
     #[inline(always)]
     pub(crate) fn add_mul_words(&mut self, x: i64, y: i64) {
         let p = i128::from(x) * i128::from(y);
-        self.add_at(0, p as u128, (p >> 127) as u64);
+        self.add_low(p as u128, (p >> 127) as u64);
     }
 
     /// `self += x·y` modulo `2¹⁹²` for factors of two words, `x = x₁·2⁶⁴ + x₀` with `x₁`
@@ -772,33 +772,37 @@ impl Wide192 {
     pub(crate) fn add_mul_double(&mut self, x: i128, y: i128) {
         let (x1, x0) = ((x >> 64) as i64, x as u64);
         let (y1, y0) = ((y >> 64) as i64, y as u64);
-        self.add_at(0, u128::from(x0) * u128::from(y0), 0);
-        self.add_at(1, (i128::from(x1) * i128::from(y0)) as u128, 0);
-        self.add_at(1, (i128::from(x0) * i128::from(y1)) as u128, 0);
+        self.add_low(u128::from(x0) * u128::from(y0), 0);
+        self.add_shifted((i128::from(x1) * i128::from(y0)) as u128);
+        self.add_shifted((i128::from(x0) * i128::from(y1)) as u128);
         self.0[2] = self.0[2].wrapping_add(x1.wrapping_mul(y1) as u64);
     }
 
-    /// Adds the 128 bits `v` at word `at` (0 or 1), and `above` (all ones for a negative
-    /// `v` at 0, else 0) to the words past them, modulo `2¹⁹²`.
+    /// Adds the 128 bits `v` to the two low words, and `above` (all ones to extend a
+    /// negative `v`, else 0) to the top one, modulo `2¹⁹²`.
     #[inline(always)]
-    fn add_at(&mut self, at: usize, v: u128, above: u64) {
+    fn add_low(&mut self, v: u128, above: u64) {
         let w = &mut self.0;
-        if at == 0 {
-            let (w0, c0) = w[0].overflowing_add(v as u64);
-            let (w1, c1) = w[1].overflowing_add((v >> 64) as u64);
-            let (w1, c2) = w1.overflowing_add(u64::from(c0));
-            w[0] = w0;
-            w[1] = w1;
-            w[2] = w[2]
-                .wrapping_add(above)
-                .wrapping_add(u64::from(c1) + u64::from(c2));
-        } else {
-            let (w1, c1) = w[1].overflowing_add(v as u64);
-            w[1] = w1;
-            w[2] = w[2]
-                .wrapping_add((v >> 64) as u64)
-                .wrapping_add(u64::from(c1));
-        }
+        let (w0, c0) = w[0].overflowing_add(v as u64);
+        let (w1, c1) = w[1].overflowing_add((v >> 64) as u64);
+        let (w1, c2) = w1.overflowing_add(u64::from(c0));
+        w[0] = w0;
+        w[1] = w1;
+        w[2] = w[2]
+            .wrapping_add(above)
+            .wrapping_add(u64::from(c1) + u64::from(c2));
+    }
+
+    /// Adds `v·2⁶⁴` modulo `2¹⁹²`: `v`'s two words to the two high ones (its sign past 192
+    /// bits does not count).
+    #[inline(always)]
+    fn add_shifted(&mut self, v: u128) {
+        let w = &mut self.0;
+        let (w1, c1) = w[1].overflowing_add(v as u64);
+        w[1] = w1;
+        w[2] = w[2]
+            .wrapping_add((v >> 64) as u64)
+            .wrapping_add(u64::from(c1));
     }
 
     /// The value.

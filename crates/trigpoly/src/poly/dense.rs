@@ -63,10 +63,6 @@ trait Cells<I: IntegerRing> {
     type Cell: Copy + Default + PartialEq + Send + Sync;
     /// The most bits of a sum's component that a cell holds.
     const BITS: u32;
-    /// The coefficient in words, if it fits them.
-    fn factor(c: &I) -> Option<Self::Factor>;
-    /// Bits of the largest component of a factor's coefficient.
-    fn bits(f: &Self::Factor) -> u32;
     /// `cell += a·b`; the caller guarantees no overflow.
     fn add_mul(cell: &mut Self::Cell, a: &Self::Factor, b: &Self::Factor);
     /// The sum in a cell.
@@ -80,14 +76,6 @@ impl<I: IntegerRing> Cells<I> for Narrow {
     type Factor = I::Small;
     type Cell = I::Wide;
     const BITS: u32 = 126;
-    #[inline(always)]
-    fn factor(c: &I) -> Option<I::Small> {
-        c.to_small()
-    }
-    #[inline(always)]
-    fn bits(f: &I::Small) -> u32 {
-        I::small_bits(f)
-    }
     #[inline(always)]
     fn add_mul(cell: &mut I::Wide, a: &I::Small, b: &I::Small) {
         I::wide_add_mul(cell, a, b);
@@ -107,14 +95,6 @@ impl<I: IntegerRing> Cells<I> for Broad {
     type Cell = I::Broad;
     const BITS: u32 = Wide192::BITS;
     #[inline(always)]
-    fn factor(c: &I) -> Option<I::Small> {
-        c.to_small()
-    }
-    #[inline(always)]
-    fn bits(f: &I::Small) -> u32 {
-        I::small_bits(f)
-    }
-    #[inline(always)]
     fn add_mul(cell: &mut I::Broad, a: &I::Small, b: &I::Small) {
         I::broad_add_mul(cell, a, b);
     }
@@ -132,14 +112,6 @@ impl<I: IntegerRing> Cells<I> for Double {
     type Cell = I::Broad;
     const BITS: u32 = Wide192::BITS;
     #[inline(always)]
-    fn factor(c: &I) -> Option<I::Double> {
-        c.to_double()
-    }
-    #[inline(always)]
-    fn bits(f: &I::Double) -> u32 {
-        I::double_bits(f)
-    }
-    #[inline(always)]
     fn add_mul(cell: &mut I::Broad, a: &I::Double, b: &I::Double) {
         I::double_add_mul(cell, a, b);
     }
@@ -149,16 +121,17 @@ impl<I: IntegerRing> Cells<I> for Double {
     }
 }
 
-/// The coefficients of `a` and `b` as `W`'s factors and the most bits of a sum of their
-/// products, or `None` if one does not fit.
-#[allow(clippy::type_complexity)]
-fn factors_in<I: IntegerRing, W: Cells<I>>(
-    a: &[I],
-    b: &[I],
-) -> Option<(Vec<W::Factor>, Vec<W::Factor>, u32)> {
-    let words = |v: &[I]| v.iter().map(W::factor).collect::<Option<Vec<_>>>();
+/// The coefficients of `a` and `b` in machine words (`word`, [`IntegerRing::to_small`] or
+/// [`IntegerRing::to_double`]) and the most bits of a sum of their products (`bits` of a
+/// coefficient), or `None` if one does not fit.
+fn in_words<I: IntegerRing, F>(
+    (a, b): (&[I], &[I]),
+    word: impl Fn(&I) -> Option<F>,
+    bits: impl Fn(&F) -> u32,
+) -> Option<(Vec<F>, Vec<F>, u32)> {
+    let words = |v: &[I]| v.iter().map(&word).collect::<Option<Vec<_>>>();
     let (fa, fb) = (words(a)?, words(b)?);
-    let bits = |v: &[W::Factor]| v.iter().map(W::bits).max().unwrap_or(0);
+    let bits = |v: &[F]| v.iter().map(&bits).max().unwrap_or(0);
     // A sum has at most as many products as the shorter factor has terms.
     let terms_bits = 64 - (a.len().min(b.len()) as u64).leading_zeros();
     let sum_bits = bits(&fa) + bits(&fb) + terms_bits + I::PRODUCTS_PER_COMPONENT;
@@ -181,7 +154,7 @@ pub(crate) fn try_mul_dense<I: IntegerRing>(
     }
     // Coefficients in a word each, summed in `i128` where the sums fit it and in 192 bits
     // where they may not; else coefficients in two words, summed in 192 bits.
-    if let Some((fa, fb, sum_bits)) = factors_in::<I, Narrow>(a.1, b.1) {
+    if let Some((fa, fb, sum_bits)) = in_words((a.1, b.1), I::to_small, I::small_bits) {
         return if sum_bits <= <Narrow as Cells<I>>::BITS {
             Some(mul_dense::<I, Narrow>(
                 kron,
@@ -196,7 +169,7 @@ pub(crate) fn try_mul_dense<I: IntegerRing>(
                 .then(|| mul_dense::<I, Broad>(kron, layout, a, b, (fa, fb), max_terms))
         };
     }
-    let (fa, fb, sum_bits) = factors_in::<I, Double>(a.1, b.1)?;
+    let (fa, fb, sum_bits) = in_words((a.1, b.1), I::to_double, I::double_bits)?;
     (sum_bits <= <Double as Cells<I>>::BITS)
         .then(|| mul_dense::<I, Double>(kron, layout, a, b, (fa, fb), max_terms))
 }
