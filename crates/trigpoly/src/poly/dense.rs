@@ -21,6 +21,7 @@
 
 use rayon::prelude::*;
 
+use std::sync::atomic::{AtomicUsize, Ordering};
 use std::sync::mpsc;
 
 use super::kronecker::{Cursor, Decoder, Kronecker};
@@ -203,6 +204,7 @@ fn mul_dense<I: IntegerRing, W: Cells<I>>(
         cb: words_b,
     };
     let decoder = kron.decoder(layout, work);
+    let budget = TermBudget::new(max_terms);
     // Marking costs a little per product, scanning a little per accumulator.
     let mark = kron.size() > work;
     let threads = rayon::current_num_threads() as u64;
@@ -211,7 +213,7 @@ fn mul_dense<I: IntegerRing, W: Cells<I>>(
     // terms are written once, by one thread.
     if mark && threads >= 2 && work >= PIPELINE_WORK {
         let mut acc = vec![W::Cell::default(); chunk as usize];
-        return factors.pipelined::<I, W>(&mut acc, (lo, end), &decoder, max_terms);
+        return factors.pipelined::<I, W>(&mut acc, (lo, end), &decoder, &budget);
     }
     // The index range cut into parts, highest first.
     let count = if work < PARALLEL_WORK || threads < 2 {
@@ -227,14 +229,14 @@ fn mul_dense<I: IntegerRing, W: Cells<I>>(
             || vec![W::Cell::default(); chunk as usize],
             |acc, (lo, hi)| {
                 if mark {
-                    factors.range::<I, W, true>(acc, (lo, hi), &decoder, max_terms)
+                    factors.range::<I, W, true>(acc, (lo, hi), &decoder, &budget)
                 } else {
-                    factors.range::<I, W, false>(acc, (lo, hi), &decoder, max_terms)
+                    factors.range::<I, W, false>(acc, (lo, hi), &decoder, &budget)
                 }
             },
         )
         .collect::<Result<_, _>>()?;
-    // Each part kept to the term limit; the caller checks the total.
+    // The parts together kept to the term limit.
     let total: usize = parts.iter().map(|(_, c)| c.len()).sum();
     if parts.len() == 1 {
         return Ok(parts.into_iter().next().expect("one part"));
@@ -246,6 +248,36 @@ fn mul_dense<I: IntegerRing, W: Cells<I>>(
         coeffs.extend(c);
     }
     Ok((exps, coeffs))
+}
+
+/// The term limit of a product, shared by its parts: each part counts the terms of every chunk
+/// it reads back, so that a product split over threads stops once its parts together pass the
+/// limit, not once one of them does.
+struct TermBudget {
+    limit: usize,
+    used: AtomicUsize,
+}
+
+impl TermBudget {
+    fn new(limit: usize) -> Self {
+        TermBudget {
+            limit,
+            used: AtomicUsize::new(0),
+        }
+    }
+
+    /// Counts `terms` more, or the error once the parts together hold more than the limit.
+    fn count(&self, terms: usize) -> Result<(), AlgebraError> {
+        let used = self
+            .used
+            .fetch_add(terms, Ordering::Relaxed)
+            .saturating_add(terms);
+        if used > self.limit {
+            Err(AlgebraError::TooManyTerms { limit: self.limit })
+        } else {
+            Ok(())
+        }
+    }
 }
 
 /// The end of a list of rows.
@@ -319,7 +351,7 @@ impl<S: Copy + Send + Sync> Factors<S> {
     }
 
     /// The most terms the product of the indices in `[lo, hi)` can have (one per product and
-    /// one per index), and at most one more than `max_terms`; `next` from
+    /// one per index), and at most one more than the term limit; `next` from
     /// [`Factors::first_partners`].
     fn bound(&self, next: &[usize], (lo, hi): (u64, u64), max_terms: usize) -> usize {
         let gb = &self.gb;
@@ -339,11 +371,11 @@ impl<S: Copy + Send + Sync> Factors<S> {
         acc: &mut [W::Cell],
         (lo, hi): (u64, u64),
         decoder: &Decoder,
-        max_terms: usize,
+        budget: &TermBudget,
     ) -> Result<Product<I>, AlgebraError> {
         let next = self.first_partners(hi);
-        let mut builder = Builder::<I, W>::new(decoder, self.bound(&next, (lo, hi), max_terms));
-        self.accumulate::<I, W, MARK>(acc, next, (lo, hi), max_terms, &mut builder)?;
+        let mut builder = Builder::<I, W>::new(decoder, self.bound(&next, (lo, hi), budget.limit));
+        self.accumulate::<I, W, MARK>(acc, next, (lo, hi), budget, &mut builder)?;
         Ok(builder.finish())
     }
 
@@ -360,10 +392,10 @@ impl<S: Copy + Send + Sync> Factors<S> {
         acc: &mut [W::Cell],
         (lo, hi): (u64, u64),
         decoder: &Decoder,
-        max_terms: usize,
+        budget: &TermBudget,
     ) -> Result<Product<I>, AlgebraError> {
         let next = self.first_partners(hi);
-        let bound = self.bound(&next, (lo, hi), max_terms);
+        let bound = self.bound(&next, (lo, hi), budget.limit);
         let (full, batches) = mpsc::sync_channel::<Vec<(u64, W::Cell)>>(BATCHES_IN_FLIGHT);
         let (emptied, empties) = mpsc::channel::<Vec<(u64, W::Cell)>>();
         std::thread::scope(|scope| {
@@ -381,7 +413,7 @@ impl<S: Copy + Send + Sync> Factors<S> {
             });
             let Ok(building) = spawned else {
                 // No thread to be had: the terms are built on this one.
-                return self.range::<I, W, true>(acc, (lo, hi), decoder, max_terms);
+                return self.range::<I, W, true>(acc, (lo, hi), decoder, budget);
             };
             let mut sender = Sender {
                 batch: Vec::with_capacity(BATCH),
@@ -389,7 +421,7 @@ impl<S: Copy + Send + Sync> Factors<S> {
                 full,
                 empties,
             };
-            let added = self.accumulate::<I, W, true>(acc, next, (lo, hi), max_terms, &mut sender);
+            let added = self.accumulate::<I, W, true>(acc, next, (lo, hi), budget, &mut sender);
             if added.is_ok() && !sender.batch.is_empty() {
                 sender.flush();
             }
@@ -413,7 +445,7 @@ impl<S: Copy + Send + Sync> Factors<S> {
         acc: &mut [W::Cell],
         mut next: Vec<usize>,
         (lo, hi): (u64, u64),
-        max_terms: usize,
+        budget: &TermBudget,
         sink: &mut impl Sink<W::Cell>,
     ) -> Result<(), AlgebraError> {
         let (fa, gb, ca) = (&self.fa, &self.gb, &self.ca);
@@ -455,6 +487,8 @@ impl<S: Copy + Send + Sync> Factors<S> {
         let mut first = fa.partition_point(|&fi| fi + g_min >= hi);
         let mut top = hi;
         let mut current = 0;
+        // The terms of this range counted in the budget so far.
+        let mut counted = 0;
         while top > lo {
             let bottom = top.saturating_sub(chunk).max(lo);
             if MARK {
@@ -507,9 +541,8 @@ impl<S: Copy + Send + Sync> Factors<S> {
             }
             sink.end_chunk();
             current += 1;
-            if sink.len() > max_terms {
-                return Err(AlgebraError::TooManyTerms { limit: max_terms });
-            }
+            budget.count(sink.len() - counted)?;
+            counted = sink.len();
             top = bottom;
         }
         Ok(())

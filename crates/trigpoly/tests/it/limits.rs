@@ -325,3 +325,57 @@ fn term_limit_refuses_a_power_in_general_position_up_front() {
     let g: Q = p(&vars, "1 + x + y + z + t + u + v + x*y");
     assert_eq!(g.checked_pow(2).map(|h| h.len()), Ok(35));
 }
+
+/// `f · g` on a pool of two threads, in variables `x, y, z, t, u` whose term limit is `limit`.
+fn product_with_limit(f: &str, g: &str, limit: usize) -> Result<usize, AlgebraError> {
+    let vars = VarSet::builder()
+        .coordinate("x")
+        .coordinate("y")
+        .coordinate("z")
+        .coordinate("t")
+        .coordinate("u")
+        .limits(Limits {
+            max_terms: limit,
+            ..Limits::default()
+        })
+        .build()
+        .unwrap();
+    let (f, g): (Q, Q) = (p(&vars, f), p(&vars, g));
+    rayon::ThreadPoolBuilder::new()
+        .num_threads(2)
+        .build()
+        .expect("a thread pool")
+        .install(|| f.checked_mul(&g))
+        .map(|h| h.len())
+}
+
+/// A large product on two threads is held to the limit by all its parts together: the dense
+/// product `(1 + x + y + z)^20 · ((1 + x + y + z)^20 + 1)`, whose box is split into parts,
+/// has C(43, 3) = 12341 terms; the sparse `(1 + x + y + 2z² + 3t³ + 5u⁵)^8 · (1 + u + t +
+/// 2z² + 3y³ + 5x⁵)^8`, whose terms a second thread writes as the first adds, has 591235.
+/// Each is refused one term below its size, and computed at it.
+#[test]
+fn term_limit_holds_a_product_split_over_threads_to_its_total() {
+    let f = "(1 + x + y + z)^20";
+    let dense = |limit| product_with_limit(f, &format!("{f} + 1"), limit);
+    assert_eq!(dense(12341), Ok(12341));
+    assert_eq!(
+        dense(12340),
+        Err(AlgebraError::TooManyTerms { limit: 12340 })
+    );
+    // Below the size of any one part.
+    assert_eq!(dense(1800), Err(AlgebraError::TooManyTerms { limit: 1800 }));
+    let sparse = |limit| {
+        product_with_limit(
+            "(1 + x + y + 2*z^2 + 3*t^3 + 5*u^5)^8",
+            "(1 + u + t + 2*z^2 + 3*y^3 + 5*x^5)^8",
+            limit,
+        )
+    };
+    let terms = sparse(1 << 20).expect("within the limit");
+    assert_eq!(sparse(terms), Ok(terms));
+    assert_eq!(
+        sparse(terms - 1),
+        Err(AlgebraError::TooManyTerms { limit: terms - 1 })
+    );
+}
