@@ -761,8 +761,13 @@ impl Wide192 {
     /// `self += x·y` modulo `2¹⁹²` (exact when the sum fits, which the caller guarantees).
     #[inline(always)]
     pub(crate) fn add_mul_words(&mut self, x: i64, y: i64) {
-        let p = i128::from(x) * i128::from(y);
-        self.add_low(p as u128, (p >> 127) as u64);
+        self.add(i128::from(x) * i128::from(y));
+    }
+
+    /// `self += v` modulo `2¹⁹²`.
+    #[inline(always)]
+    pub(crate) fn add(&mut self, v: i128) {
+        self.add_low(v as u128, (v >> 127) as u64);
     }
 
     /// `self += x·y` modulo `2¹⁹²` for factors of two words, `x = x₁·2⁶⁴ + x₀` with `x₁`

@@ -8,8 +8,10 @@
 //! is not much larger than the work and every coefficient fits two machine words per
 //! component (`Cells`): with coefficients of a word, the accumulators are `i128` per component
 //! when every sum fits them (`Narrow`) and 192 bits otherwise (`Broad`); with coefficients of
-//! two words, 192 bits (`Double`), when every sum fits them. Such products went to the hashed
-//! method before.
+//! two words, 192 bits (`Double`), when every sum fits them. Over Z\[i\], factors whose
+//! coefficients are each real or imaginary take one real product a term pair (`AxialNarrow`,
+//! `AxialBroad`, `AxialDouble`) where a Gaussian one takes four. Such products went to the
+//! hashed method before.
 //!
 //! When the caller's rayon pool has more than one thread, large products use a second core: on
 //! a dense box they split the index range into parts that rayon runs on the pool's threads; on
@@ -27,7 +29,7 @@ use std::sync::mpsc;
 use super::kronecker::{Cursor, Decoder, Kronecker};
 use super::pages;
 use crate::error::AlgebraError;
-use crate::number::{IntegerRing, Wide192};
+use crate::number::{Integer, IntegerRing, Wide192};
 use crate::placement;
 use crate::varset::Layout;
 
@@ -122,20 +124,90 @@ impl<I: IntegerRing> Cells<I> for Double {
     }
 }
 
+/// Over Z\[i\], coefficients that are each real or imaginary (`(v, false)` for `v`,
+/// `(v, true)` for `i·v`), in a word, summed in `i128` per component: `(i^e x)(i^f y) =
+/// i^(e+f) xy` is one real product, added to the real sum for `e = f` (negated when both are
+/// imaginary) and to the imaginary one otherwise, where a Gaussian product takes four.
+struct AxialNarrow;
+
+/// The component a product of axial values `x`, `y` adds to (0: real, 1: imaginary), and
+/// whether it is negated (`i·i = −1`).
+#[inline(always)]
+fn axial_target(x: bool, y: bool) -> (usize, bool) {
+    (usize::from(x ^ y), x & y)
+}
+
+impl<I: IntegerRing> Cells<I> for AxialNarrow {
+    type Factor = (i64, bool);
+    type Cell = [i128; 2];
+    const BITS: u32 = 126;
+    #[inline(always)]
+    fn add_mul(cell: &mut [i128; 2], a: &(i64, bool), b: &(i64, bool)) {
+        let (part, negated) = axial_target(a.1, b.1);
+        // A product of words fits `i128` negated too (`|xy| ≤ 2¹²⁶`).
+        let p = i128::from(a.0) * i128::from(b.0);
+        cell[part] += if negated { -p } else { p };
+    }
+    #[inline(always)]
+    fn value([re, im]: [i128; 2]) -> I {
+        I::from_parts(Integer::from_i128(re), Integer::from_i128(im))
+    }
+}
+
+/// Axial coefficients in a word, summed in 192 bits per component.
+struct AxialBroad;
+
+impl<I: IntegerRing> Cells<I> for AxialBroad {
+    type Factor = (i64, bool);
+    type Cell = [Wide192; 2];
+    const BITS: u32 = Wide192::BITS;
+    #[inline(always)]
+    fn add_mul(cell: &mut [Wide192; 2], a: &(i64, bool), b: &(i64, bool)) {
+        let (part, negated) = axial_target(a.1, b.1);
+        let p = i128::from(a.0) * i128::from(b.0);
+        cell[part].add(if negated { -p } else { p });
+    }
+    #[inline(always)]
+    fn value([re, im]: [Wide192; 2]) -> I {
+        I::from_parts(re.to_integer(), im.to_integer())
+    }
+}
+
+/// Axial coefficients in two words (above `i128::MIN`), summed in 192 bits per component.
+struct AxialDouble;
+
+impl<I: IntegerRing> Cells<I> for AxialDouble {
+    type Factor = (i128, bool);
+    type Cell = [Wide192; 2];
+    const BITS: u32 = Wide192::BITS;
+    #[inline(always)]
+    fn add_mul(cell: &mut [Wide192; 2], a: &(i128, bool), b: &(i128, bool)) {
+        let (part, negated) = axial_target(a.1, b.1);
+        let x = if negated { -a.0 } else { a.0 };
+        cell[part].add_mul_double(x, b.0);
+    }
+    #[inline(always)]
+    fn value([re, im]: [Wide192; 2]) -> I {
+        I::from_parts(re.to_integer(), im.to_integer())
+    }
+}
+
 /// The coefficients of `a` and `b` in machine words (`word`, [`IntegerRing::to_small`] or
-/// [`IntegerRing::to_double`]) and the most bits of a sum of their products (`bits` of a
-/// coefficient), or `None` if one does not fit.
+/// [`IntegerRing::to_double`], or an axial form) and the most bits of a sum of their products
+/// (`bits` of a coefficient, each component of a product the sum of `products_per_component`
+/// real ones), or `None` if one does not fit.
 fn in_words<I: IntegerRing, F>(
     (a, b): (&[I], &[I]),
     word: impl Fn(&I) -> Option<F>,
     bits: impl Fn(&F) -> u32,
+    products_per_component: u32,
 ) -> Option<(Vec<F>, Vec<F>, u32)> {
     let words = |v: &[I]| v.iter().map(&word).collect::<Option<Vec<_>>>();
     let (fa, fb) = (words(a)?, words(b)?);
     let bits = |v: &[F]| v.iter().map(&bits).max().unwrap_or(0);
     // A sum has at most as many products as the shorter factor has terms.
     let terms_bits = 64 - (a.len().min(b.len()) as u64).leading_zeros();
-    let sum_bits = bits(&fa) + bits(&fb) + terms_bits + I::PRODUCTS_PER_COMPONENT;
+    let sum_bits = bits(&fa) + bits(&fb) + terms_bits + products_per_component;
     Some((fa, fb, sum_bits))
 }
 
@@ -144,8 +216,8 @@ fn in_words<I: IntegerRing, F>(
 pub(crate) fn try_mul_dense<I: IntegerRing>(
     kron: &Kronecker,
     layout: &Layout,
-    a: (&[u64], &[I], &[(i64, i64)]),
-    b: (&[u64], &[I], &[(i64, i64)]),
+    a: Terms<'_, I>,
+    b: Terms<'_, I>,
     max_terms: usize,
 ) -> Option<Result<Product<I>, AlgebraError>> {
     let (n, m) = (a.1.len(), b.1.len());
@@ -153,26 +225,68 @@ pub(crate) fn try_mul_dense<I: IntegerRing>(
     if kron.size() > work.saturating_mul(BOX_PER_PRODUCT) || kron.size() > 1 << 40 {
         return None;
     }
-    // Coefficients in a word each, summed in `i128` where the sums fit it and in 192 bits
-    // where they may not; else coefficients in two words, summed in 192 bits.
-    if let Some((fa, fb, sum_bits)) = in_words((a.1, b.1), I::to_small, I::small_bits) {
-        return if sum_bits <= <Narrow as Cells<I>>::BITS {
-            Some(mul_dense::<I, Narrow>(
-                kron,
-                layout,
-                a,
-                b,
-                (fa, fb),
-                max_terms,
-            ))
+    // Over Z[i], coefficients that are each real or imaginary take one real product a pair
+    // where a Gaussian one takes four; each component of a product is one real product.
+    if I::COMPLEX {
+        let word = |c: &I| {
+            let (v, imaginary) = c.to_real_or_imaginary()?;
+            Some((i64::try_from(v).ok()?, imaginary))
+        };
+        let word_bits = |c: &(i64, bool)| 64 - c.0.unsigned_abs().leading_zeros();
+        // Above `i128::MIN`, so that a product of two imaginary values may negate a factor.
+        let double = |c: &I| c.to_real_or_imaginary().filter(|&(v, _)| v != i128::MIN);
+        let double_bits = |c: &(i128, bool)| 128 - c.0.unsigned_abs().leading_zeros();
+        let axial = in_cells::<I, AxialNarrow, AxialBroad, AxialDouble>(
+            (kron, layout, max_terms),
+            (a, b),
+            ((word, word_bits), (double, double_bits)),
+            1,
+        );
+        if axial.is_some() {
+            return axial;
+        }
+    }
+    in_cells::<I, Narrow, Broad, Double>(
+        (kron, layout, max_terms),
+        (a, b),
+        ((I::to_small, I::small_bits), (I::to_double, I::double_bits)),
+        I::PRODUCTS_PER_COMPONENT,
+    )
+}
+
+/// The terms of a factor: packed exponents, coefficients, and each variable's exponent bounds.
+type Terms<'a, I> = (&'a [u64], &'a [I], &'a [(i64, i64)]);
+
+/// The dense product in the narrowest cells that hold every sum: `N` (`i128` sums) or `B`
+/// (192 bits) for coefficients that each fit a word (`word`: a coefficient as `N`'s and `B`'s
+/// factor, and its bits), else `D` for coefficients in two words (`double`); `None` if no
+/// cell holds them.
+fn in_cells<I: IntegerRing, N, B, D>(
+    (kron, layout, max_terms): (&Kronecker, &Layout, usize),
+    (a, b): (Terms<'_, I>, Terms<'_, I>),
+    (word, double): (
+        (impl Fn(&I) -> Option<N::Factor>, impl Fn(&N::Factor) -> u32),
+        (impl Fn(&I) -> Option<D::Factor>, impl Fn(&D::Factor) -> u32),
+    ),
+    products_per_component: u32,
+) -> Option<Result<Product<I>, AlgebraError>>
+where
+    N: Cells<I>,
+    B: Cells<I, Factor = N::Factor>,
+    D: Cells<I>,
+{
+    let coefficients = (a.1, b.1);
+    if let Some((fa, fb, sum_bits)) = in_words(coefficients, word.0, word.1, products_per_component)
+    {
+        return if sum_bits <= N::BITS {
+            Some(mul_dense::<I, N>(kron, layout, a, b, (fa, fb), max_terms))
         } else {
-            (sum_bits <= <Broad as Cells<I>>::BITS)
-                .then(|| mul_dense::<I, Broad>(kron, layout, a, b, (fa, fb), max_terms))
+            (sum_bits <= B::BITS)
+                .then(|| mul_dense::<I, B>(kron, layout, a, b, (fa, fb), max_terms))
         };
     }
-    let (fa, fb, sum_bits) = in_words((a.1, b.1), I::to_double, I::double_bits)?;
-    (sum_bits <= <Double as Cells<I>>::BITS)
-        .then(|| mul_dense::<I, Double>(kron, layout, a, b, (fa, fb), max_terms))
+    let (fa, fb, sum_bits) = in_words(coefficients, double.0, double.1, products_per_component)?;
+    (sum_bits <= D::BITS).then(|| mul_dense::<I, D>(kron, layout, a, b, (fa, fb), max_terms))
 }
 
 /// [`try_mul_dense`] in the cells `W`, which hold every sum; `words` are the coefficients of
@@ -180,8 +294,8 @@ pub(crate) fn try_mul_dense<I: IntegerRing>(
 fn mul_dense<I: IntegerRing, W: Cells<I>>(
     kron: &Kronecker,
     layout: &Layout,
-    a: (&[u64], &[I], &[(i64, i64)]),
-    b: (&[u64], &[I], &[(i64, i64)]),
+    a: Terms<'_, I>,
+    b: Terms<'_, I>,
     (words_a, words_b): (Vec<W::Factor>, Vec<W::Factor>),
     max_terms: usize,
 ) -> Result<Product<I>, AlgebraError> {

@@ -52,13 +52,22 @@ fn dense_products_split_over_threads_agree_with_one_thread() {
         "(1 - x^3 + 3*y^3 + z + t)^9",
         &pt,
     );
-    // Over Q(i) on a sparse box: the accumulators hold both components.
-    let product: G = checked_product(
-        "(1 + i*x + y + 2*z^3 - t^3)^9",
-        "(1 - x^3 + 3*i*y^3 + z + t)^9",
-        &pt,
-    );
-    assert!(product.terms().any(|t| !t.coeff().is_real()));
+    // Over Q(i) on a sparse box: the accumulators hold both components. Every coefficient
+    // of these factors is real or imaginary (`i^k` times a real one), so each term pair is one
+    // real product (the axial cells); with coefficients such as `2 + i` it is a Gaussian one.
+    for (f, g) in [
+        (
+            "(1 + i*x + y + 2*z^3 - t^3)^9",
+            "(1 - x^3 + 3*i*y^3 + z + t)^9",
+        ),
+        (
+            "(1 + (2+i)*x + y + 2*z^3 - t^3)^9",
+            "(1 - x^3 + (3-i)*y^3 + z + t)^9",
+        ),
+    ] {
+        let product: G = checked_product(f, g, &pt);
+        assert!(product.terms().any(|t| !t.coeff().is_real()));
+    }
 }
 
 /// Factors whose exponents of a variable lie a step apart from their least (`x³`, `z²` and
@@ -130,12 +139,20 @@ fn products_whose_sums_could_pass_i128_take_broad_accumulators() {
         "(1 + 11*x + 13*y^3 - 17*z + 19*t^3)^11",
         &pt,
     );
-    let product: G = checked_product(
-        "(1 + 43*i*x + 41*y + 37*z + 31*t)^9",
-        "(1 - 31*x + 37*i*y - 41*z + 43*t)^9",
-        &pt,
-    );
-    assert!(product.terms().any(|t| !t.coeff().is_real()));
+    // Over Q(i), with coefficients each real or imaginary, and with general ones.
+    for (f, g) in [
+        (
+            "(1 + 43*i*x + 41*y + 37*z + 31*t)^9",
+            "(1 - 31*x + 37*i*y - 41*z + 43*t)^9",
+        ),
+        (
+            "(1 + (43+2*i)*x + 41*y + 37*z + 31*t)^9",
+            "(1 - 31*x + (37-3*i)*y - 41*z + 43*t)^9",
+        ),
+    ] {
+        let product: G = checked_product(f, g, &pt);
+        assert!(product.terms().any(|t| !t.coeff().is_real()));
+    }
 }
 
 /// Factors with coefficients of 84 and 71 bits, past a word: the dense kernel takes them in
@@ -158,12 +175,46 @@ fn products_of_coefficients_past_a_word_take_two_words() {
         "(1 + 23*x + 29*y^3 - 31*z + 37*t^3)^11",
         &pt,
     );
-    let product: G = checked_product(
-        "(1 + 233*i*x + 229*y + 227*z + 223*t)^9",
-        "(1 - 223*x + 227*i*y - 229*z + 233*t)^9",
-        &pt,
-    );
-    assert!(product.terms().any(|t| !t.coeff().is_real()));
+    for (f, g) in [
+        (
+            "(1 + 233*i*x + 229*y + 227*z + 223*t)^9",
+            "(1 - 223*x + 227*i*y - 229*z + 233*t)^9",
+        ),
+        (
+            "(1 + (233+i)*x + 229*y + 227*z + 223*t)^9",
+            "(1 - 223*x + (227-2*i)*y - 229*z + 233*t)^9",
+        ),
+    ] {
+        let product: G = checked_product(f, g, &pt);
+        assert!(product.terms().any(|t| !t.coeff().is_real()));
+    }
+}
+
+/// Over Q(i), factors whose coefficients are each real or imaginary, as those of a ladder
+/// function `A = p_x + iMωx·(…)` and of `Z^m e^{−inθ}` are, with both kinds in each factor
+/// and products of two imaginary coefficients (`i·i = −1`): sums that fit `i128`, sums that
+/// could pass it, and coefficients past a word. Each product is the one on two threads, takes
+/// the value `f(p)·g(p)`, and equals the product computed through a general Gaussian
+/// coefficient: `f·g = f·(g + (1 + i)·m) − (1 + i)·m·f` for a monomial `m`.
+#[test]
+fn products_of_real_or_imaginary_coefficients_take_one_real_product_a_pair() {
+    let pt = [("x", 2), ("y", -1), ("z", 1), ("t", -1)];
+    let vars = coordinates(&["x", "y", "z", "t"]);
+    let m: G = p(&vars, "(1+i)*x^20*y^20");
+    for k in [1, 43, 233] {
+        let (a, b, c, d) = (k, k + 2, k + 4, k + 6);
+        let f = format!("i*x*(1 + {a}*x + {b}*y + {c}*z + {d}*t)^9 + y^12 - 3*i*z^12");
+        let g = format!("(1 - {d}*x + {c}*y - {b}*z + {a}*t)^9 + 5*i*t^12 - 7*i*x^11");
+        let product: G = checked_product(&f, &g, &pt);
+        assert!(product.terms().any(|t| !t.coeff().is_real()));
+        let (f, g): (G, G) = (p(&vars, &f), p(&vars, &g));
+        let axial = |h: &G| {
+            h.terms()
+                .all(|t| t.coeff().is_real() || t.coeff().re.is_zero())
+        };
+        assert!(axial(&f) && axial(&g));
+        assert_eq!(f.clone() * (g + m.clone()) - m.clone() * f, product);
+    }
 }
 
 /// Products too sparse for the dense accumulators (a box of 21·141·261·581 ≈ 449M cells for
