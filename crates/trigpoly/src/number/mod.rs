@@ -22,6 +22,19 @@ pub use gaussian::{GaussianAcc, GaussianInteger, GaussianRational, ParseGaussian
 pub use integer::{ExactDivisor, Integer, IntegerAcc, IntegerView};
 pub(crate) use integer::{Wide192, Wide256};
 pub(crate) use rational::Magnitude;
+
+/// `(i^e x)·(i^f y) = i^(e+f)·xy` for values that are each real or imaginary (as
+/// [`IntegerRing::to_real_or_imaginary`] gives them: `(v, true)` for `i·v`): the component
+/// the product adds to (0: real, 1: imaginary) and `x` signed for it, negated when both are
+/// imaginary (`i·i = −1`). No branch: the kernels call it once a term pair.
+#[inline(always)]
+pub(crate) fn axial_product<T: std::ops::Neg<Output = T>>(
+    (x, x_imaginary): (T, bool),
+    y_imaginary: bool,
+) -> (usize, T) {
+    let part = usize::from(x_imaginary ^ y_imaginary);
+    (part, if x_imaginary & y_imaginary { -x } else { x })
+}
 pub use rational::{ParseRationalError, Rational};
 
 /// The integer ring under a coefficient field: `Integer` (Z) or `GaussianInteger` (Z\[i\]).

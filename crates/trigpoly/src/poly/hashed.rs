@@ -12,7 +12,7 @@ use rustc_hash::FxHashSet;
 
 use super::mul::PairProduct;
 use crate::error::AlgebraError;
-use crate::number::{IntegerRing, Wide256};
+use crate::number::{axial_product, IntegerRing, Wide256};
 
 /// The share of the term products [`plan`] samples, at most: one in 64 (whole rows of the
 /// longer factor, 2 to 32 of them, or 32 rows of a share of its columns).
@@ -259,8 +259,8 @@ pub(super) fn hashed_product<I: IntegerRing>(
     if let Some(parts) = parts.filter(|p| p.max_bits <= 126 && p.bits + fan_in(1) <= 254) {
         // (i^e x)(i^f y) = i^(e+f) xy: real for e = f, negated when both are imaginary.
         let add_mul = |sum: &mut [Wide256; 2], x: &(i128, bool), y: &(i128, bool)| {
-            let x_signed = if x.1 & y.1 { -x.0 } else { x.0 };
-            sum[usize::from(x.1 ^ y.1)].add_mul(x_signed, y.0);
+            let (part, x) = axial_product(*x, y.1);
+            sum[part].add_mul(x, y.0);
         };
         let finish = |[re, im]: [Wide256; 2]| I::from_parts(re.to_integer(), im.to_integer());
         return parts.product(pairs, lows, max_terms, add_mul, finish);
