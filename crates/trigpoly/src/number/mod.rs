@@ -22,6 +22,7 @@ pub use gaussian::{GaussianAcc, GaussianInteger, GaussianRational, ParseGaussian
 pub use integer::{ExactDivisor, Integer, IntegerAcc, IntegerView};
 pub(crate) use integer::{Wide192, Wide256};
 pub(crate) use rational::Magnitude;
+pub use rational::{ParseRationalError, Rational};
 
 /// `(i^e x)·(i^f y) = i^(e+f)·xy` for values that are each real or imaginary (as
 /// [`IntegerRing::to_real_or_imaginary`] gives them: `(v, true)` for `i·v`): the component
@@ -35,7 +36,6 @@ pub(crate) fn axial_product<T: std::ops::Neg<Output = T>>(
     let part = usize::from(x_imaginary ^ y_imaginary);
     (part, if x_imaginary & y_imaginary { -x } else { x })
 }
-pub use rational::{ParseRationalError, Rational};
 
 /// The integer ring under a coefficient field: `Integer` (Z) or `GaussianInteger` (Z\[i\]).
 pub trait IntegerRing:

@@ -178,9 +178,10 @@ impl<I: IntegerRing> Cells<I> for AxialDouble {
         let (part, x) = axial_product(*a, b.1);
         cell[part].add_mul_double(x, b.0);
     }
+    /// As [`AxialBroad`]'s: the same sums.
     #[inline(always)]
-    fn value([re, im]: [Wide192; 2]) -> I {
-        I::from_parts(re.to_integer(), im.to_integer())
+    fn value(cell: [Wide192; 2]) -> I {
+        <AxialBroad as Cells<I>>::value(cell)
     }
 }
 
