@@ -45,6 +45,7 @@
 mod error;
 mod lower;
 mod number;
+mod pages;
 pub mod placement;
 mod poly;
 mod print;

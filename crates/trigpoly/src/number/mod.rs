@@ -20,7 +20,7 @@ pub(crate) use gcd::binary_gcd;
 
 pub use gaussian::{GaussianAcc, GaussianInteger, GaussianRational, ParseGaussianError};
 pub use integer::{ExactDivisor, Integer, IntegerAcc, IntegerView};
-pub(crate) use integer::{Wide192, Wide256};
+pub(crate) use integer::{Release, Wide192, Wide256, WideSlab};
 pub(crate) use rational::Magnitude;
 pub use rational::{ParseRationalError, Rational};
 
@@ -75,6 +75,9 @@ pub trait IntegerRing:
     fn to_real_i64(&self) -> Option<i64>;
     /// Whether the value is real (always, in Z).
     fn is_real(&self) -> bool;
+    /// Drops the value through `release`, which gives back the slots of its components run
+    /// by run (`WideSlab`).
+    fn release_into(self, release: &mut Release);
     /// Whether the ring has elements off the real line (Z\[i\]). Its kernels then gather
     /// factors whose coefficients are all real in Z's words ([`IntegerRing::from_real_wide`]):
     /// a product of real words is one multiplication, where a Gaussian one takes four.
@@ -166,6 +169,10 @@ impl IntegerRing for Integer {
     }
     fn is_real(&self) -> bool {
         true
+    }
+    #[inline]
+    fn release_into(self, release: &mut Release) {
+        release.take(self);
     }
     #[inline]
     fn from_real_wide(w: i128) -> Self {
@@ -321,6 +328,11 @@ impl IntegerRing for GaussianInteger {
     }
     fn is_real(&self) -> bool {
         self.im.is_zero()
+    }
+    #[inline]
+    fn release_into(self, release: &mut Release) {
+        release.take(self.re);
+        release.take(self.im);
     }
     #[inline]
     fn from_real_wide(w: i128) -> Self {

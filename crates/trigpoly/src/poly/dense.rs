@@ -27,9 +27,9 @@ use std::sync::atomic::{AtomicUsize, Ordering};
 use std::sync::mpsc;
 
 use super::kronecker::{Cursor, Decoder, Kronecker};
-use super::pages;
 use crate::error::AlgebraError;
-use crate::number::{axial_product, Integer, IntegerRing, Wide192};
+use crate::number::{axial_product, Integer, IntegerRing, Wide192, WideSlab};
+use crate::pages;
 use crate::placement;
 use crate::varset::Layout;
 
@@ -53,6 +53,9 @@ const BATCHES_IN_FLIGHT: usize = 4;
 /// A product that may have this many terms has its vectors' pages backed ahead of its writes,
 /// this many terms at a time (256 KB of each vector for one-word monomials).
 const BACKED_TERMS: usize = 1 << 15;
+/// A product with room for this many terms or more takes its coefficients' values past a
+/// word from a [`WideSlab`], whose block (4 095 values) is small beside it.
+const SLAB_TERMS: usize = 1 << 16;
 
 /// Packed exponents and coefficients of a product, sorted descending.
 pub(crate) type Product<I> = (Vec<u64>, Vec<I>);
@@ -695,6 +698,8 @@ struct Builder<'d, I: IntegerRing, W: Cells<I>> {
     /// per page; `usize::MAX` (never) unless the product is large enough that the window past
     /// its last term, backed but unused, is small beside it.
     back_at: usize,
+    /// Where the coefficients' values past a word go, for a large product.
+    slab: Option<WideSlab>,
 }
 
 impl<'d, I: IntegerRing, W: Cells<I>> Builder<'d, I, W> {
@@ -717,6 +722,7 @@ impl<'d, I: IntegerRing, W: Cells<I>> Builder<'d, I, W> {
             } else {
                 usize::MAX
             },
+            slab: (coeffs.capacity() >= SLAB_TERMS).then(WideSlab::new),
             exps,
             coeffs,
             found: Vec::new(),
@@ -746,7 +752,11 @@ impl<'d, I: IntegerRing, W: Cells<I>> Builder<'d, I, W> {
                     decoder.decode_onto(cursor, k, &mut self.exps);
                 }
             }
-            self.coeffs.extend(now.iter().map(|&(_, w)| W::value(w)));
+            let (coeffs, values) = (&mut self.coeffs, now.iter().map(|&(_, w)| W::value(w)));
+            match &mut self.slab {
+                Some(slab) => slab.filling(|| coeffs.extend(values)),
+                None => coeffs.extend(values),
+            }
             terms = later;
         }
     }

@@ -117,6 +117,39 @@ fn sparse_products_written_by_a_second_thread_agree_with_one_thread() {
     );
 }
 
+/// A product of more than a million terms, a third of whose coefficients pass a word: the
+/// product builds those values in blocks of slots rather than a box each, on one thread and on
+/// the writing thread of two. Either product is the other and takes the value `f(p)·g(p)`;
+/// each is dropped, the one on a pool of two threads (its coefficients given back in parts,
+/// block by block), the other on one, after a product of the first's own terms (its clone,
+/// whose values are boxed) was formed and checked against it.
+#[test]
+fn a_large_products_values_past_a_word_are_built_in_blocks_and_given_back() {
+    let pt = [("x", 1), ("y", -1), ("z", 2), ("t", 1)];
+    let vars = coordinates(&["x", "y", "z", "t"]);
+    let (f, g): (Q, Q) = (
+        p(&vars, "(1 + 3*x + 5*y + 7*z^3 - 11*t^3)^15"),
+        p(&vars, "(1 - 13*x^3 + 3*y^3 + 5*z + 7*t)^15"),
+    );
+    let one = product_on(1, &f, &g);
+    assert!(one.len() > 1 << 20, "{} terms", one.len());
+    let wide = one.terms().filter(|t| t.coeff().numer().to_i64().is_none());
+    assert!(wide.count() > one.len() / 4);
+    let two = product_on(2, &f, &g);
+    assert_eq!(one, two);
+    let value = f.eval(&point(&vars, &pt)).unwrap() * g.eval(&point(&vars, &pt)).unwrap();
+    assert_eq!(two.eval(&point(&vars, &pt)), Ok(value.clone()));
+    rayon::ThreadPoolBuilder::new()
+        .num_threads(2)
+        .build()
+        .expect("a thread pool")
+        .install(move || drop(two));
+    let copy = one.clone();
+    assert_eq!(&copy - &one, Poly::zero(&vars));
+    drop(one);
+    assert_eq!(copy.eval(&point(&vars, &pt)), Ok(value));
+}
+
 /// Factors with coefficients of 60 and 61 bits: sums of their products could pass `i128`, so
 /// the dense kernel adds them in 192-bit accumulators (a product of 715² term pairs in a
 /// scanned box, and one of 1365² in a sparse box, written by a second thread on two), over Q

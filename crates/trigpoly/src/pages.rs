@@ -1,9 +1,10 @@
-//! Backing a vector's next pages before it writes them. A large product writes its terms once,
-//! into memory fresh from the system, and each page of it would fault on its first write
-//! (1.6–1.8 µs a page on the virtual machines measured); asking the kernel to back a window of
-//! pages at once (`madvise(MADV_POPULATE_WRITE)`, Linux 5.14 and later) does the same work in
-//! one system call. Elsewhere, or where the kernel refuses, nothing happens and the pages fault
-//! as before: this changes when memory is backed, never what it holds.
+//! Backing memory's pages before it is written: a vector's next pages, or a block fresh from
+//! the allocator. A large product writes its terms once, into memory fresh from the system,
+//! and each page of it would fault on its first write (1.6–1.8 µs a page on the virtual
+//! machines measured); asking the kernel to back a window of pages at once
+//! (`madvise(MADV_POPULATE_WRITE)`, Linux 5.14 and later) does the same work in one system
+//! call. Elsewhere, or where the kernel refuses, nothing happens and the pages fault as before:
+//! this changes when memory is backed, never what it holds.
 
 /// The size of a page, as the ranges backed are aligned (a larger page only backs more).
 const PAGE: usize = 4096;
@@ -18,21 +19,30 @@ pub(crate) fn back_spare<T>(v: &mut Vec<T>, n: usize) -> bool {
     last > first && back(first, last - first)
 }
 
-#[cfg(any(target_os = "linux", target_os = "android"))]
+/// Backs the pages wholly inside the `len` bytes from `start`, which the caller owns; whether
+/// the kernel did.
+pub(crate) fn back_block(start: *mut u8, len: usize) -> bool {
+    let start = start as usize;
+    let (first, last) = (start.div_ceil(PAGE) * PAGE, (start + len) / PAGE * PAGE);
+    last > first && back(first, last - first)
+}
+
+#[cfg(all(any(target_os = "linux", target_os = "android"), not(miri)))]
 fn back(first: usize, len: usize) -> bool {
     // SAFETY: the range lies inside an allocation this process owns (a vector's spare
-    // capacity), and MADV_POPULATE_WRITE only backs its pages as a write would, without
+    // capacity, or a block the caller allocated), and MADV_POPULATE_WRITE only backs its pages as a write would, without
     // writing: it changes no byte of memory, so no Rust value can observe it. A refusal (an
     // older kernel says EINVAL) leaves the pages to fault as before.
     unsafe { libc::madvise(first as *mut libc::c_void, len, libc::MADV_POPULATE_WRITE) == 0 }
 }
 
-#[cfg(not(any(target_os = "linux", target_os = "android")))]
+/// Elsewhere, and under Miri (which has no `madvise`), pages fault as they are written.
+#[cfg(not(all(any(target_os = "linux", target_os = "android"), not(miri))))]
 fn back(_first: usize, _len: usize) -> bool {
     false
 }
 
-#[cfg(all(test, any(target_os = "linux", target_os = "android")))]
+#[cfg(all(test, any(target_os = "linux", target_os = "android"), not(miri)))]
 mod tests {
     use super::{back_spare, PAGE};
 
