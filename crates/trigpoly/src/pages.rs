@@ -29,9 +29,9 @@ pub(crate) fn back_block(start: *mut u8, len: usize) -> bool {
 
 #[cfg(all(any(target_os = "linux", target_os = "android"), not(miri)))]
 fn back(first: usize, len: usize) -> bool {
-    // SAFETY: the range lies inside an allocation this process owns (a vector's spare
-    // capacity, or a block the caller allocated), and MADV_POPULATE_WRITE only backs its pages as a write would, without
-    // writing: it changes no byte of memory, so no Rust value can observe it. A refusal (an
+    // SAFETY: the range lies inside an allocation this process owns (a vector's spare capacity, or
+    // a block the caller allocated), and MADV_POPULATE_WRITE only backs its pages as a write would,
+    // without writing: it changes no byte of memory, so no Rust value can observe it. A refusal (an
     // older kernel says EINVAL) leaves the pages to fault as before.
     unsafe { libc::madvise(first as *mut libc::c_void, len, libc::MADV_POPULATE_WRITE) == 0 }
 }

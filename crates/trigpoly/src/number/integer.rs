@@ -2,13 +2,13 @@
 //!
 //! A value of 63 bits is held in the word itself, tagged by its low bit (as FLINT's `fmpz` holds
 //! its small values); any other value that fits an `i128` is boxed as `Wide` (one 16-byte
-//! allocation, where a `BigInt` takes two, or a slot of a block that a large product's
-//! builder takes for thousands of them, `WideSlab`), and only the rest as `Big`. The form is canonical,
-//! so equality and hashing follow the value. Each operation tries the machine path with exact
-//! overflow detection (`checked_*`, `i128` intermediates) and falls back to
-//! `num_bigint::BigInt`. The word and its tag live in the module `word` below, the one place
-//! with `unsafe` code; everything else reads an `Integer` through [`Integer::view`]. The unit
-//! tests at the end check the representation at every boundary, also under Miri:
+//! allocation, where a `BigInt` takes two, or a slot of a block that a large product's builder
+//! takes for thousands of them, `WideSlab`), and only the rest as `Big`. The form is canonical, so
+//! equality and hashing follow the value. Each operation tries the machine path with exact overflow
+//! detection (`checked_*`, `i128` intermediates) and falls back to `num_bigint::BigInt`. The word
+//! and its tag live in the module `word` below, the one place with `unsafe` code; everything else
+//! reads an `Integer` through [`Integer::view`]. The unit tests at the end check the representation
+//! at every boundary, also under Miri:
 //! `MIRIFLAGS=-Zmiri-strict-provenance cargo +nightly miri test -p trigpoly --lib number::integer`.
 
 use std::cmp::Ordering;
@@ -260,9 +260,10 @@ mod word {
 
     /// Slots for the values past a word of a large product's coefficients, 4 095 to a block
     /// of 64 KiB taken at once, where a box each cost an allocation and a free (Pearce(12):
-    /// 2.0 M of them, and 6–10 % of its time on one thread). A value in a slot is an [`Integer`] like any other; its
-    /// block is freed when the last of its values is dropped, so a value kept alive keeps
-    /// its block: only products large enough that a block is small beside them fill a slab.
+    /// 2.0 M of them, and 6–10 % of its time on one thread). A value in a slot is an
+    /// [`Integer`] like any other; its block is freed when the last of its values is dropped,
+    /// so a value kept alive keeps its block: only products large enough that a block is
+    /// small beside them fill a slab.
     /// [`Release`] gives back the counts of a polynomial's coefficients a block at a time.
     pub struct WideSlab {
         /// The block slots are taken from, if any.
