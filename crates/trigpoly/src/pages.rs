@@ -14,9 +14,7 @@ const PAGE: usize = 4096;
 pub(crate) fn back_spare<T>(v: &mut Vec<T>, n: usize) -> bool {
     let spare = v.spare_capacity_mut();
     let bytes = n.min(spare.len()) * std::mem::size_of::<T>();
-    let start = spare.as_mut_ptr() as usize;
-    let (first, last) = (start.div_ceil(PAGE) * PAGE, (start + bytes) / PAGE * PAGE);
-    last > first && back(first, last - first)
+    back_block(spare.as_mut_ptr().cast::<u8>(), bytes)
 }
 
 /// Backs the pages wholly inside the `len` bytes from `start`, which the caller owns; whether

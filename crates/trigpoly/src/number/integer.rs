@@ -188,19 +188,17 @@ mod word {
         }
     }
 
-    #[cfg(test)]
-    impl Integer {
-        /// Whether the value lies in a slot of a slab's block.
-        pub(super) fn in_slot(&self) -> bool {
-            self.word.addr().get() & (SMALL | BIG | SLOT) == SLOT
-        }
-    }
-
     /// The slots of a block, for the tests.
     #[cfg(test)]
     pub(super) const SLOTS_PER_BLOCK: usize = SLOTS;
 
     impl Integer {
+        /// Whether the value lies in a slot of a slab's block.
+        #[cfg(test)]
+        pub(super) fn in_slot(&self) -> bool {
+            self.word.addr().get() & (SMALL | BIG | SLOT) == SLOT
+        }
+
         /// The block of a value in a slot (tagged `SLOT`): its address with the low bits of
         /// the block cleared.
         #[inline(always)]
@@ -309,11 +307,9 @@ mod word {
         /// `v` in the next slot, as a tagged word.
         #[inline]
         fn place(&mut self, v: i128) -> NonNull<u8> {
-            if self.next > SLOTS {
-                self.refill();
-            }
-            let Some(block) = self.block else {
-                unreachable!("refill takes a block")
+            let block = match self.block {
+                Some(block) if self.next <= SLOTS => block,
+                _ => self.refill(),
             };
             // SAFETY: slot `next` (1 to SLOTS) lies in the block and has not been handed out;
             // the value written is owned by the `Integer` that gets the word.
@@ -327,7 +323,7 @@ mod word {
 
         /// Gives back the slots of the block not handed out, and takes a new block.
         #[cold]
-        fn refill(&mut self) {
+        fn refill(&mut self) -> NonNull<Header> {
             self.retire();
             let layout = block_layout();
             // SAFETY: the layout has a nonzero size.
@@ -345,6 +341,7 @@ mod word {
             };
             self.block = Some(header);
             self.next = 1;
+            header
         }
 
         /// Gives back the slots of the block not handed out, if there is a block.
@@ -372,8 +369,6 @@ mod word {
     pub struct Release {
         /// The block of the current run, if any.
         block: Option<NonNull<Header>>,
-        /// Its address (0 for none), as `take` compares it.
-        block_start: usize,
         /// The values of the current run.
         count: usize,
     }
@@ -393,11 +388,10 @@ mod word {
                 // In a box of its own.
                 return drop(i);
             }
-            let start = w & !(BLOCK_BYTES - 1);
-            if start != self.block_start {
+            let block = i.block();
+            if self.block != Some(block) {
                 self.flush();
-                self.block = Some(i.block());
-                self.block_start = start;
+                self.block = Some(block);
             }
             // Its count is given back with the run's.
             std::mem::forget(i);
@@ -406,7 +400,6 @@ mod word {
 
         /// Gives back the counts of the current run.
         fn flush(&mut self) {
-            self.block_start = 0;
             if let Some(block) = self.block.take() {
                 // SAFETY: the counts of the values taken from this block, whose `Integer`s
                 // were forgotten.

@@ -121,8 +121,8 @@ fn sparse_products_written_by_a_second_thread_agree_with_one_thread() {
 /// product builds those values in blocks of slots rather than a box each, on one thread and on
 /// the writing thread of two. Either product is the other and takes the value `f(p)·g(p)`;
 /// each is dropped, the one on a pool of two threads (its coefficients given back in parts,
-/// block by block), the other on one, after a product of the first's own terms (its clone,
-/// whose values are boxed) was formed and checked against it.
+/// block by block), the other on one, after its clone (whose values are boxed) was checked
+/// against it; the clone outlives it.
 #[test]
 fn a_large_products_values_past_a_word_are_built_in_blocks_and_given_back() {
     let pt = [("x", 1), ("y", -1), ("z", 2), ("t", 1)];
