@@ -117,6 +117,31 @@ fn sparse_products_written_by_a_second_thread_agree_with_one_thread() {
     );
 }
 
+/// `(P + Q)(P − Q)` in a sparse box (1 430² term pairs in 55⁴ ≈ 9.2M cells): the cross terms
+/// `PQ` meet in accumulators that the kernel marks and whose sums cancel, so the product is
+/// `P² − Q²`, with only the marked accumulators of nonzero sum read back, on one thread and on
+/// two. It is checked against the same product taken through the heap: each factor's terms
+/// put in a box far too sparse for the accumulators by a term `x⁶⁰⁰`, whose product is taken
+/// back off.
+#[test]
+fn a_sparse_products_cancelling_sums_leave_no_term() {
+    let vars = coordinates(&["x", "y", "z", "t"]);
+    let (p_, q_): (Q, Q) = (
+        p(&vars, "(1 + x + y + 2*z^3 - t^3)^9"),
+        p(&vars, "(1 - x^3 + 3*y^3 + z + t)^9"),
+    );
+    let (f, g) = (&p_ + &q_, &p_ - &q_);
+    let far: Q = p(&vars, "x^600");
+    let heap = &(&(&f + &far) * &g) - &(&far * &g);
+    for threads in [1, 2] {
+        let product = product_on(threads, &f, &g);
+        assert_eq!(product, heap);
+        assert_eq!(product, &(&p_ * &p_) - &(&q_ * &q_));
+        // Fewer terms than the products of the squares together: the cross terms are gone.
+        assert!(product.len() < (&p_ * &p_).len() + (&q_ * &q_).len());
+    }
+}
+
 /// A product of more than a million terms, a third of whose coefficients pass a word: the
 /// product builds those values in blocks of slots rather than a box each, on one thread and on
 /// the writing thread of two. Either product is the other and takes the value `f(p)·g(p)`;
