@@ -302,7 +302,8 @@ fn mul_dense<I: IntegerRing, W: Cells<I>>(
     // Index range of the product.
     let (lo, end) = (fa[n - 1] + gb[m - 1], fa[0] + gb[0] + 1);
     // A chunk spans a cache's worth of accumulators, a power of two of them (a chunk's number
-    // is then a shift away, `Factors::accumulate`) and at least a word of marks (eight).
+    // is then a shift away, `Factors::accumulate`), and at least 64, a whole number of the
+    // words of eight marks that the read-back tests at once.
     // (The cells that fit, rounded down to a power of two: 24-byte cells would round up to
     // half as many bytes again.)
     let cells = 1u64 << (CHUNK_BYTES / std::mem::size_of::<W::Cell>()).ilog2();
@@ -425,7 +426,8 @@ impl<S: Copy + Send + Sync> Factors<S> {
         // A byte per accumulator: one plain store a product. A bit each (a bitmap 8 times
         // smaller to scan) needed the word's read-modify-write, or, kept in a register for
         // the run, a test and a flush at every change of word: 6 more instructions a
-        // product, and Pearce(12) 4 % slower (step 133).
+        // product, and Pearce(12) 4 % slower (step 133). The marks cut to the accumulators'
+        // length, so that the offset tested against `width` needs no second bounds check.
         let touched = &mut touched[..if MARK { acc.len() } else { 0 }];
         let mut run = 0;
         for (g, c) in &self.partners[j..] {
