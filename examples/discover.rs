@@ -43,7 +43,7 @@ fn main() -> Result<(), EngineError> {
         algebra.relations.len()
     );
     println!("  {{P, Q}} = {}", algebra.render_bracket(2, 3));
-    let json = render(&report, Format::Json, &RenderOptions { timings: false });
+    let json = render(&report, Format::Json, &RenderOptions::reproducible());
     println!("  as JSON: {} bytes", json.len());
 
     // Five functionally independent integrals at the resonance (C17), certified: L, G1, G2

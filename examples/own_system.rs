@@ -53,7 +53,7 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
     let claims = check_report([&rotor])?;
     print!(
         "{}",
-        render(&claims, Format::Text, &RenderOptions { timings: false })
+        render(&claims, Format::Text, &RenderOptions::reproducible())
     );
 
     let tower = family_tower_report(&rotor, Some("R"), 3, None)?;
@@ -72,7 +72,7 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
     for fact in &proof.facts {
         println!("  {}: {}", fact.statement, fact.holds);
     }
-    let json = render(&tower, Format::Json, &RenderOptions { timings: false });
+    let json = render(&tower, Format::Json, &RenderOptions::reproducible());
     println!("as JSON: {} bytes", json.len());
     Ok(())
 }

@@ -277,8 +277,37 @@ pub struct ClaimResult {
     pub witness: Option<Expr>,
     /// For a claim proved or refuted by a derived check (a tower, a proof, a rank), what failed.
     pub note: Option<String>,
+    /// When the residual above is a part of a longer one ([`ClaimResult::excerpted`]): how
+    /// much of it is shown.
+    pub excerpt: Option<Excerpt>,
     /// Seconds spent checking it.
     pub seconds: f64,
+}
+
+/// How much of a long residual a claim shows: every term of its first `shown`
+/// monomials outside the angles ([`trigpoly::Poly::leading_part`]), of `monomials` in all.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Excerpt {
+    /// The monomials whose terms are shown.
+    pub shown: usize,
+    /// The monomials of the whole.
+    pub monomials: usize,
+    /// Whether an angle appears in the whole (else its monomials are its terms).
+    pub angles: bool,
+}
+
+impl Excerpt {
+    /// What the prose formats say under the part: `shown: the terms of its first 100 of
+    /// 254321 monomials outside the angles; --full-residuals shows all` (`its first 100 of
+    /// 254321 terms` without angles).
+    pub fn describe(&self) -> String {
+        let (shown, all) = (self.shown, self.monomials);
+        let part = match self.angles {
+            true => format!("the terms of its first {shown} of {all} monomials outside the angles"),
+            false => format!("its first {shown} of {all} terms"),
+        };
+        format!("shown: {part}; --full-residuals shows all")
+    }
 }
 
 impl ClaimResult {
@@ -296,6 +325,7 @@ impl ClaimResult {
             residual: None,
             witness: None,
             note,
+            excerpt: None,
             seconds: 0.0,
         }
     }
@@ -329,6 +359,32 @@ impl ClaimResult {
     pub fn meets_expectation(&self) -> bool {
         self.proved == (self.expect == Expect::Proved)
     }
+
+    /// The same result with a residual of more than `monomials` monomials outside the angles
+    /// cut to the terms of its first `monomials` ([`Excerpt`]): a residual of millions of
+    /// terms, which would print a gigabyte, shows its leading terms and its size.
+    pub fn excerpted(mut self, monomials: usize) -> Self {
+        if let Some(e) = self.residual.as_mut() {
+            if e.len() > monomials {
+                let (part, all) = e.leading_part(monomials);
+                if all > monomials {
+                    self.excerpt = Some(Excerpt {
+                        shown: monomials,
+                        monomials: all,
+                        angles: e.has_angles(),
+                    });
+                    *e = part;
+                }
+            }
+        }
+        self
+    }
+
+    /// Whether [`ClaimResult::excerpted`] may cut it: its residual has more than `monomials`
+    /// terms.
+    fn is_longer_than(&self, monomials: usize) -> bool {
+        self.residual.as_ref().is_some_and(|e| e.len() > monomials)
+    }
 }
 
 /// An identity's verdict as a report's claim: proved, or refuted with its residual.
@@ -350,6 +406,7 @@ impl From<brackets::Verdict> for ClaimResult {
             residual,
             witness: None,
             note: None,
+            excerpt: None,
             seconds: v.seconds,
         }
     }
@@ -541,6 +598,26 @@ pub fn counted(n: impl std::fmt::Display, noun: &str) -> String {
 }
 
 impl Report {
+    /// The report with every claim's residual of more than `monomials` monomials
+    /// outside the angles cut to the terms of its first `monomials`
+    /// ([`ClaimResult::excerpted`]); the report itself when none is that long.
+    pub fn excerpted(&self, monomials: usize) -> std::borrow::Cow<'_, Report> {
+        let long = |e: &Entry| matches!(e, Entry::Claim(c) if c.is_longer_than(monomials));
+        if !self.sections.iter().flat_map(|s| &s.entries).any(long) {
+            return std::borrow::Cow::Borrowed(self);
+        }
+        let mut report = self.clone();
+        for entry in report.sections.iter_mut().flat_map(|s| &mut s.entries) {
+            if let Entry::Claim(c) = entry {
+                if c.is_longer_than(monomials) {
+                    let whole = std::mem::replace(c, ClaimResult::derived("", "", true, None));
+                    *c = whole.excerpted(monomials);
+                }
+            }
+        }
+        std::borrow::Cow::Owned(report)
+    }
+
     /// A report of one section of checked claims, titled `title`, whose summary counts them:
     /// what a program that checks its own claims prints, in any format.
     ///
@@ -554,7 +631,7 @@ impl Report {
     /// ];
     /// let results = claims.iter().map(|c| c.check().map(ClaimResult::from));
     /// let report = Report::of_claims("My claims", results.collect::<Result<_, _>>()?);
-    /// let text = render(&report, Format::Text, &RenderOptions { timings: false });
+    /// let text = render(&report, Format::Text, &RenderOptions::reproducible());
     /// assert!(text.contains("[su2 proved]") && text.contains("[sign REFUTED]"));
     /// assert!(text.contains("residual lhs − rhs = −p_x²/M + p_y²/M − Mω²x² + Mω²y²"));
     /// assert!(text.ends_with("2 claims: 1 proved, 1 refuted (2 exact checks)\n"));

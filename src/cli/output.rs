@@ -1,9 +1,9 @@
-//! Options shared by every subcommand: `--format` and `--no-timings`.
+//! Options shared by every subcommand: `--format`, `--no-timings` and `--full-residuals`.
 
 use std::io::{self, Write};
 
 use clap::{Args, ValueEnum};
-use superint::render::{printable, Format, Options};
+use superint::render::{printable, Format, Options, SHOWN_MONOMIALS};
 
 /// `--format` values.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, ValueEnum)]
@@ -40,6 +40,10 @@ pub struct OutputArgs {
     /// Leave timings out, so that the output is the same on every run.
     #[arg(long, global = true)]
     no_timings: bool,
+    /// Print a refuted claim's residual whole, however long (by default one of more than 100
+    /// monomials shows the terms of its first 100 and how many it has).
+    #[arg(long, global = true)]
+    full_residuals: bool,
 }
 
 /// How to print, as plain data.
@@ -57,6 +61,7 @@ impl OutputArgs {
             format: self.format.into(),
             options: Options {
                 timings: !self.no_timings,
+                shown_monomials: (!self.full_residuals).then_some(SHOWN_MONOMIALS),
             },
         }
     }

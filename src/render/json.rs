@@ -25,7 +25,12 @@
 //!                 "outcome": "proved" | "refuted",
 //!                 "expect": "proved" | "refuted"   (what the claim is meant to do),
 //!                 "meets_expectation": bool,
-//!                 "residual": ascii | null   (lhs − rhs of a refuted identity),
+//!                 "residual": ascii | null   (lhs − rhs of a refuted identity, or when
+//!                          "residual_excerpt" is set the terms of its leading monomials),
+//!                 "residual_excerpt": { "shown_monomials", "monomials" } | null   (set
+//!                          when the residual had more monomials outside the angles than
+//!                          `Options::shown_monomials`: "residual" is then every term of its
+//!                          first "shown_monomials" of "monomials"),
 //!                 "witness": ascii | null    (the nonzero value of a proved nonvanishing),
 //!                 "note": string | null, "seconds": number | null } ],
 //!   "equations": [ { "section", "caption", "lines": [ { "lhs", "text", "ascii", "latex" } ] } ],
@@ -233,6 +238,10 @@ fn claim(c: &ClaimResult, section: u32, seconds: Value) -> Value {
         "expect": c.expect.name(),
         "meets_expectation": c.meets_expectation(),
         "residual": c.residual.as_ref().map(|r| r.render(Style::Ascii)),
+        "residual_excerpt": c.excerpt.map(|e| json!({
+            "shown_monomials": e.shown,
+            "monomials": e.monomials,
+        })),
         "witness": c.witness.as_ref().map(|w| w.render(Style::Ascii)),
         "note": c.note,
         "seconds": seconds,

@@ -243,6 +243,12 @@ fn claim_rows(c: &ClaimResult) -> Vec<String> {
     ));
     if let Some(r) = &c.residual {
         rows.extend(long_rows(r"\text{residual}", "=", r, CLAIM_ROW));
+        if let Some(e) = &c.excerpt {
+            rows.push(format!(
+                r"&\quad + \dots \quad \text{{({})}}",
+                text(&e.describe())
+            ));
+        }
     }
     if let (ClaimKind::Nonvanishing, Some(w)) = (c.kind, &c.witness) {
         if visual_width(&w.render(Style::Latex)) <= 3 * CLAIM_ROW {

@@ -82,6 +82,9 @@ fn claim(c: &ClaimResult) -> String {
     );
     if let Some(r) = &c.residual {
         line.push_str(&format!(", residual {}", code(&r.to_string())));
+        if let Some(e) = &c.excerpt {
+            line.push_str(&format!(" + … ({})", e.describe()));
+        }
     }
     if let (ClaimKind::Nonvanishing, Some(w)) = (c.kind, &c.witness) {
         line.push_str(&format!(" (it equals {})", code(&w.to_string())));

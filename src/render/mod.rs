@@ -83,16 +83,45 @@ pub struct UnknownFormat(pub String);
 pub struct Options {
     /// Whether to print timings (off makes the output byte-for-byte reproducible).
     pub timings: bool,
+    /// The most monomials (outside the angles) of a refuted claim's residual printed whole: a
+    /// longer one shows the terms of its first this many and says how many it has
+    /// ([`Report::excerpted`]); `None` prints every one.
+    pub shown_monomials: Option<usize>,
 }
+
+/// The monomials of a residual shown by default: a residual of a hundred terms reads in full,
+/// one of millions (a gigabyte of text) by its leading terms.
+pub const SHOWN_MONOMIALS: usize = 100;
 
 impl Default for Options {
     fn default() -> Self {
-        Options { timings: true }
+        Options {
+            timings: true,
+            shown_monomials: Some(SHOWN_MONOMIALS),
+        }
+    }
+}
+
+impl Options {
+    /// The defaults without timings: output that is the same on every run (`--no-timings`).
+    pub fn reproducible() -> Self {
+        Options {
+            timings: false,
+            ..Options::default()
+        }
     }
 }
 
 /// Renders a report; the result ends with a newline.
 pub fn render(report: &Report, format: Format, options: &Options) -> String {
+    let shortened;
+    let report = match options.shown_monomials {
+        Some(n) => {
+            shortened = report.excerpted(n);
+            &*shortened
+        }
+        None => report,
+    };
     match format {
         Format::Text => text::render(report, options),
         Format::Markdown => markdown::render(report, options),

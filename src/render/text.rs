@@ -273,11 +273,15 @@ fn verdict_line(out: &mut Vec<String>, c: &ClaimResult) {
         out.extend(lines);
     }
     if let Some(r) = &c.residual {
+        let more = if c.excerpt.is_some() { " + …" } else { "" };
         out.extend(wrap_sum(
-            &format!("      residual lhs − rhs = {r}"),
+            &format!("      residual lhs − rhs = {r}{more}"),
             WRAP,
             "        ",
         ));
+        if let Some(e) = &c.excerpt {
+            out.extend(wrap(&format!("      ({})", e.describe()), WRAP, "       "));
+        }
     }
     if let Some(n) = &c.note {
         out.push(format!("      {n}"));

@@ -660,6 +660,7 @@ impl LoadedSystem {
                     residual,
                     witness: None,
                     note: None,
+                    excerpt: None,
                     seconds: start.elapsed().as_secs_f64(),
                 })))
             }

@@ -323,11 +323,11 @@ fn a_clone_is_extended_alone() {
 fn reports_take_names_as_str() {
     let rotor = harmonic_rotor_file();
     let table = table_report(&rotor, &["L", "G1", "G2"]).unwrap();
-    let text = render(&table, Format::Text, &RenderOptions { timings: false });
+    let text = render(&table, Format::Text, &RenderOptions::reproducible());
     assert!(text.contains("−ω² L"), "{text}");
     let rank = rank_report(&rotor, &["F1", "F2", "G1", "G2", "P_1_1"], Some(5)).unwrap();
     assert!(rank.all_proved());
-    let json = render(&rank, Format::Json, &RenderOptions { timings: false });
+    let json = render(&rank, Format::Json, &RenderOptions::reproducible());
     assert!(json.contains("\"rank\": 5"), "{json}");
 }
 
@@ -593,7 +593,7 @@ fn names_added_in_code_print_apart() {
     let mut oscillator = LoadedSystem::of_system(System::new("oscillator", space, h));
     oscillator.add_function("kx", "kx", "k*x").unwrap();
     let report = expand_report(&oscillator, &["kx".to_string()], None).unwrap();
-    let text = render(&report, Format::Text, &RenderOptions { timings: false });
+    let text = render(&report, Format::Text, &RenderOptions::reproducible());
     assert!(text.contains("kx = k x"), "{text}");
 
     // A loaded file: its own functions print spaced; a new one is told to go in the file.

@@ -32,6 +32,48 @@ impl<C: Coefficient> Poly<C> {
         Ok(d.mul_i()? * &Rational::new(-1, 2))
     }
 
+    /// A part of the element short enough to print, for one too long to print whole: every
+    /// term of the first `k` of its monomials outside the angles, in the order of its terms
+    /// (lexicographic), and how many such monomials it has in all. The cos/sin normal form
+    /// combines only terms that share their monomial outside the angles, so each printed term
+    /// of the part is a printed term of the whole; without angles the part is the first `k`
+    /// terms.
+    ///
+    /// ```
+    /// use trigpoly::{Poly, GaussianRational, VarSet};
+    /// let vars = VarSet::builder().coordinate("x").angle("θ").build().unwrap();
+    /// let f = Poly::<GaussianRational>::parse(&vars, "x^3*cos(θ) + x^2 + x^2*sin(θ) + 5").unwrap();
+    /// // Its monomials outside θ: x³, x² and 1; the part keeps every term of the first two.
+    /// let (part, monomials) = f.leading_part(2);
+    /// assert_eq!(monomials, 3);
+    /// assert_eq!(part, Poly::parse(&vars, "x^3*cos(θ) + x^2 + x^2*sin(θ)").unwrap());
+    /// ```
+    pub fn leading_part(&self, k: usize) -> (Self, usize) {
+        let layout = self.layout();
+        let words = layout.words;
+        // The angles' fields cleared: a term's monomial outside the angles.
+        let mut keep = vec![u64::MAX; words];
+        for theta in self.vars.angles() {
+            let (w, shift) = layout.field(theta.index());
+            keep[w] &= !(layout.field_mask() << shift);
+        }
+        let outside =
+            |t: usize| -> Vec<u64> { self.exp(t).iter().zip(&keep).map(|(m, k)| m & k).collect() };
+        let mut numbers: FxHashMap<Vec<u64>, usize> = Default::default();
+        let mut exps = Vec::new();
+        let mut coeffs = Vec::new();
+        for t in 0..self.len() {
+            let next = numbers.len();
+            let number = *numbers.entry(outside(t)).or_insert(next);
+            if number < k {
+                exps.extend_from_slice(self.exp(t));
+                coeffs.push(self.coeffs[t].clone());
+            }
+        }
+        let part = Self::from_sorted(&self.vars, self.content.clone(), exps, coeffs);
+        (part, numbers.len())
+    }
+
     /// The terms in the normal form `c · m · Π cos^a θ sin^b θ` (`b ≤ 1`), grouped and ordered
     /// for printing as the paper does: by trigonometric monomial, then by degree in the momenta
     /// (highest first, so `(p_x − Mωy) cos θ`), then by the monomial in the other variables.

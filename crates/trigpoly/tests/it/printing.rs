@@ -630,3 +630,56 @@ fn high_trigonometric_powers_print_as_single_terms() {
     let g: G = p(&vars, "(cos(theta) + sin(phi))^7");
     assert_eq!(p::<GaussianRational>(&vars, &g.to_ascii()), g);
 }
+
+/// The leading part of an element (the terms of its first `k` monomials outside the angles)
+/// prints terms of the whole only: the cos/sin normal form combines the `e^{ikθ}` terms of one
+/// monomial outside the angles and no others, so each printed term of the part is a printed
+/// term of the whole, and the part of every monomial is the whole.
+#[test]
+fn leading_part_prints_terms_of_the_whole() {
+    let vars = VarSet::builder()
+        .coordinate("x")
+        .angle("a")
+        .coordinate("y")
+        .momentum("p_x")
+        .angle("b")
+        .build()
+        .unwrap();
+    let f: G = p(
+        &vars,
+        "(1 + x + y*cos(a) + p_x*sin(2*b) + cos(a - b) + i*x*sin(b))^5",
+    );
+    let whole = f.cos_sin_terms();
+    let mut outside: Vec<&Vec<i64>> = whole.iter().map(|t| &t.exps).collect();
+    outside.sort();
+    outside.dedup();
+    let mut parts = Vec::new();
+    for k in [
+        0,
+        1,
+        2,
+        5,
+        17,
+        outside.len() - 1,
+        outside.len(),
+        outside.len() + 3,
+    ] {
+        let (part, monomials) = f.leading_part(k);
+        assert_eq!(monomials, outside.len());
+        let terms = part.cos_sin_terms();
+        let mut shown: Vec<&Vec<i64>> = terms.iter().map(|t| &t.exps).collect();
+        shown.sort();
+        shown.dedup();
+        assert_eq!(shown.len(), k.min(monomials), "k = {k}");
+        for t in &terms {
+            assert!(whole.contains(t), "k = {k}: {t:?} is no term of the whole");
+        }
+        // Every term of a shown monomial is shown.
+        let of_shown = whole.iter().filter(|t| shown.contains(&&t.exps)).count();
+        assert_eq!(terms.len(), of_shown, "k = {k}");
+        parts.push(part);
+    }
+    assert!(parts[0].is_zero());
+    assert_eq!(parts[parts.len() - 2], f);
+    assert_eq!(parts[parts.len() - 1], f);
+}

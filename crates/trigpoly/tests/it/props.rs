@@ -319,11 +319,16 @@ fn gaussian_arithmetic_at_the_edge_of_the_machine_words() {
     }
 }
 
+/// 64 cases a property, or as many as `PROPTEST_CASES` asks for a deeper run.
 fn config() -> Config {
+    let base = Config::default();
     Config {
-        cases: 64,
+        cases: match std::env::var_os("PROPTEST_CASES") {
+            Some(_) => base.cases,
+            None => 64,
+        },
         failure_persistence: None,
-        ..Config::default()
+        ..base
     }
 }
 
