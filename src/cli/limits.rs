@@ -1,4 +1,4 @@
-//! `--max-terms` and `--max-degree`, shared by the subcommands that read a system file: they
+//! `--max-terms`, `--max-degree` and `--max-term-products`, shared by the subcommands that read a system file: they
 //! override the file's `[limits]`, which override the defaults.
 
 use clap::Args;
@@ -15,6 +15,10 @@ pub struct LimitsArgs {
     /// max_degree, else 1000).
     #[arg(long, value_name = "D", value_parser = clap::value_parser!(u32).range(1..=32767))]
     max_degree: Option<u32>,
+    /// Stop with an error before a product of polynomials that would form more than N term
+    /// products (default: the file's [limits] max_term_products, else 10000000000).
+    #[arg(long, value_name = "N", value_parser = clap::value_parser!(u64).range(1..))]
+    max_term_products: Option<u64>,
 }
 
 impl LimitsArgs {
@@ -25,11 +29,12 @@ impl LimitsArgs {
                 .max_terms
                 .map(|t| usize::try_from(t).unwrap_or(usize::MAX)),
             max_degree: self.max_degree,
+            max_term_products: self.max_term_products,
         }
     }
 
     /// Whether a limit was given.
     pub fn any(&self) -> bool {
-        self.max_terms.is_some() || self.max_degree.is_some()
+        self.max_terms.is_some() || self.max_degree.is_some() || self.max_term_products.is_some()
     }
 }

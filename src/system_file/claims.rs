@@ -12,7 +12,7 @@ use trigpoly::{AlgebraError, Expr, Span, Var, VarKind};
 
 use super::error::{ErrorKind, FileError};
 use super::model::{ClaimModel, When};
-use super::scope::{rewrite_braces, LIMIT_HINT};
+use super::scope::{limit_hint, rewrite_braces};
 use super::text::{array_strings, split_top_level, unbalanced_bracket, Source, Text};
 use super::LoadedSystem;
 use crate::report::{ClaimKind, ClaimResult, Expect, RankResult};
@@ -83,11 +83,16 @@ pub(crate) fn engine_error(source: &Source, span: Range<usize>, e: &EngineError)
     match e {
         EngineError::Algebra(
             a @ (AlgebraError::TooManyTerms { .. }
+            | AlgebraError::TooMuchWork { .. }
             | AlgebraError::ExponentTooLarge { .. }
             | AlgebraError::OrderTooLarge { .. }),
-        ) => source
-            .error(ErrorKind::Limit, span, a.to_string())
-            .with_hint(LIMIT_HINT),
+        ) => {
+            let message = a.to_string();
+            let hint = limit_hint(&message);
+            source
+                .error(ErrorKind::Limit, span, message)
+                .with_hint(hint)
+        }
         _ => source.error(ErrorKind::Engine, span, e.to_string()),
     }
 }

@@ -1159,12 +1159,13 @@ impl<'a> Builder<'a> {
         let file = model.limits.as_ref().map(|l| l.get_ref());
         let terms = file.and_then(|l| l.max_terms.as_ref());
         let degree = file.and_then(|l| l.max_degree.as_ref());
-        if let Some(t) = terms {
-            if *t.get_ref() == 0 {
+        let work = file.and_then(|l| l.max_term_products.as_ref());
+        for (name, given) in [("max_terms", terms), ("max_term_products", work)] {
+            if let Some(t) = given.filter(|t| *t.get_ref() == 0) {
                 return Err(self.error(
                     ErrorKind::Schema,
                     t.span(),
-                    "max_terms must be at least 1",
+                    format!("{name} must be at least 1"),
                 ));
             }
         }
@@ -1183,6 +1184,7 @@ impl<'a> Builder<'a> {
                 .max_terms
                 .or(terms.map(|t| usize::try_from(*t.get_ref()).unwrap_or(usize::MAX))),
             max_degree: self.limits.max_degree.or(degree.map(|d| *d.get_ref())),
+            max_term_products: self.limits.max_term_products.or(work.map(|w| *w.get_ref())),
         };
         let limits = given.or_defaults();
         Ok(Limits {

@@ -76,23 +76,29 @@ pub const DEFAULT_MAX_TERMS: usize = 2_000_000;
 /// (the library's default, [`Limits::DEFAULT_MAX_DEGREE`]).
 pub const DEFAULT_MAX_DEGREE: u32 = Limits::DEFAULT_MAX_DEGREE;
 
-/// Limits given on the command line (`--max-terms`, `--max-degree`): they override the file's
-/// `[limits]`, which override the defaults.
+/// Limits given on the command line (`--max-terms`, `--max-degree`, `--max-term-products`):
+/// they override the file's `[limits]`, which override the defaults.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 pub struct LimitsOverride {
     /// `--max-terms`.
     pub max_terms: Option<usize>,
     /// `--max-degree`.
     pub max_degree: Option<u32>,
+    /// `--max-term-products`.
+    pub max_term_products: Option<u64>,
 }
 
 impl LimitsOverride {
     /// The limits given, else a system file's defaults ([`DEFAULT_MAX_TERMS`],
-    /// [`DEFAULT_MAX_DEGREE`]): those of a built-in system on the command line.
+    /// [`DEFAULT_MAX_DEGREE`], [`Limits::DEFAULT_MAX_TERM_PRODUCTS`]): those of a built-in
+    /// system on the command line.
     pub fn or_defaults(&self) -> Limits {
         Limits {
             max_terms: self.max_terms.unwrap_or(DEFAULT_MAX_TERMS),
             max_degree: self.max_degree.unwrap_or(DEFAULT_MAX_DEGREE),
+            max_term_products: self
+                .max_term_products
+                .unwrap_or(Limits::DEFAULT_MAX_TERM_PRODUCTS),
         }
     }
 }

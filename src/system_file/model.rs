@@ -114,6 +114,7 @@ impl<'de> Deserialize<'de> for StringTable {
 pub(crate) struct LimitsModel {
     pub max_terms: Option<Spanned<u64>>,
     pub max_degree: Option<Spanned<u32>>,
+    pub max_term_products: Option<Spanned<u64>>,
 }
 
 /// `[[function]]`.

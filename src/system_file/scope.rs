@@ -205,10 +205,21 @@ fn is_limit_message(message: &str) -> bool {
     message.contains("(the term limit)") || message.contains("past the limit of")
 }
 
-/// The hint that goes with a limit error.
-pub(crate) const LIMIT_HINT: &str = "if the machine has the memory, raise the limit with \
-    max_terms or max_degree under [limits] in the file (on the command line, --max-terms N or \
-    --max-degree D; in a program, the LimitsOverride given to the loader)";
+/// The hint that goes with a limit error's `message`: the work limit's, or the size limits'.
+pub(crate) fn limit_hint(message: &str) -> &'static str {
+    match message.contains("(the work limit)") {
+        true => {
+            "if the machine has the time, raise the limit with max_term_products under [limits] \
+             in the file (on the command line, --max-term-products N; in a program, the \
+             LimitsOverride given to the loader)"
+        }
+        false => {
+            "if the machine has the memory, raise the limit with max_terms or max_degree under \
+             [limits] in the file (on the command line, --max-terms N or --max-degree D; in a \
+             program, the LimitsOverride given to the loader)"
+        }
+    }
+}
 
 /// The hint that goes with an unknown name: where each kind of name is declared.
 const UNKNOWN_NAME_HINT: &str = "a constant such as a mass is declared under [phase_space] \
@@ -224,8 +235,9 @@ const UNKNOWN_NAME_HINT_IN_CODE: &str = "a constant such as a mass is a paramete
 pub(crate) fn expression_error(source: &Source, text: &Text, e: &ParseError) -> FileError {
     let message = relocate_opener(source, text, e);
     if is_limit_message(&message) {
+        let hint = limit_hint(&message);
         text.error(source, ErrorKind::Limit, e.span, message)
-            .with_hint(LIMIT_HINT)
+            .with_hint(hint)
     } else if message.starts_with("unknown name") {
         let hint = match source.program {
             true => UNKNOWN_NAME_HINT_IN_CODE,

@@ -289,7 +289,7 @@ fn engine_errors_become_file_errors() {
         .unwrap();
         let small = LimitsOverride {
             max_terms: Some(50),
-            max_degree: None,
+            ..LimitsOverride::default()
         };
         load_system_text("harmonic-rotor.toml", &text, &small).unwrap()
     };

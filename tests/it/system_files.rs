@@ -264,6 +264,16 @@ id = "runaway"
 claim = "(x + y + p_x + p_y + M + omega)^400 = 0"
 "#;
 
+/// `HUGE` with a work limit of 1000 term products, and a claim whose product forms 35 · 35.
+fn work() -> Vec<u8> {
+    HUGE.replace("max_terms = 10000", "max_term_products = 1000")
+        .replace(
+            "(x + y + p_x + p_y + M + omega)^400",
+            "(1 + x + y + p_x)^4*(1 - x + y - p_y)^4",
+        )
+        .into_bytes()
+}
+
 /// `BASE` with `from` replaced by `to` (which must occur).
 fn base_with(from: &str, to: &str) -> Vec<u8> {
     assert!(BASE.contains(from), "{from:?}");
@@ -748,6 +758,26 @@ fn bad_inputs() -> Vec<(&'static str, Vec<u8>, &'static str, Vec<&'static str>)>
             HUGE.as_bytes().to_vec(),
             "bad.toml:14:10: the result would have more than 3000 terms (the term limit)",
             vec!["check", "bad.toml", "--max-terms", "3000"],
+        ),
+        (
+            "work limit from the file",
+            work(),
+            "bad.toml:14:10: the product of 35 terms by 35 would form 1225 term products, past \
+             the limit of 1000 (the work limit)",
+            check.clone(),
+        ),
+        (
+            "work limit from the command line",
+            work(),
+            "bad.toml:14:10: the product of 35 terms by 35 would form 1225 term products, past \
+             the limit of 600 (the work limit)",
+            vec!["check", "bad.toml", "--max-term-products", "600"],
+        ),
+        (
+            "a work limit of zero",
+            base_with("[[claim]]", "[limits]\nmax_term_products = 0\n\n[[claim]]"),
+            "bad.toml:13:21: max_term_products must be at least 1",
+            check.clone(),
         ),
         (
             "unknown name on the command line",

@@ -71,10 +71,11 @@ pub fn rotor(potential: &str, extra_parameters: &[&str]) -> Result<System, Engin
 /// use brackets::systems::Rotor;
 /// use trigpoly::Limits;
 ///
-/// let rotor = Rotor::Harmonic.system(Limits { max_terms: 100, max_degree: 50 }).unwrap();
+/// let limits = |max_terms| Limits { max_terms, max_degree: 50, ..Limits::default() };
+/// let rotor = Rotor::Harmonic.system(limits(100)).unwrap();
 /// assert_eq!(rotor.vars().limits().max_terms, 100);
 /// // H has five terms: a limit of four refuses the system, with the reason.
-/// let refused = Rotor::Harmonic.system(Limits { max_terms: 4, max_degree: 50 });
+/// let refused = Rotor::Harmonic.system(limits(4));
 /// assert!(refused.unwrap_err().to_string().contains("limit"));
 /// ```
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]

@@ -79,6 +79,21 @@ pub enum AlgebraError {
         /// The limit in force.
         limit: usize,
     },
+    /// A product that would form more term products than the work limit allows.
+    #[error(
+        "the product of {left} terms by {right} would form {products} term products, past the \
+         limit of {limit} (the work limit); raise the limit or simplify the input"
+    )]
+    TooMuchWork {
+        /// The terms of the two factors.
+        left: usize,
+        /// The terms of the other factor.
+        right: usize,
+        /// The term products it would form.
+        products: u128,
+        /// The limit in force.
+        limit: u64,
+    },
     /// An operation that needs `i` in a polynomial over Q.
     #[error("{0} needs Gaussian rational coefficients Q(i), but this polynomial is over Q")]
     NeedsGaussian(String),

@@ -176,13 +176,14 @@ pub fn juxtaposition_is_ambiguous<'a>(
         .any(|s| s.chars().nth(1).is_some() && s.chars().all(|c| letters.contains(&c)))
 }
 
-/// Limits that stop runaway expansions with a clear error instead of exhausting memory. They
-/// bound the size of each result, not the time it takes: a product is checked before it is
-/// formed where its size is known, and otherwise as it is formed, so a large power may run
-/// for a while before it stops.
+/// Limits that stop runaway expansions with a clear error instead of exhausting memory or
+/// running for hours. The size of each result is checked before it is formed where it is
+/// known, and otherwise as it is formed; the work of each product (its term products, `n·m`,
+/// or `n(n + 1)/2` for a square) before it starts, so that a power of a long polynomial whose
+/// result would pass the term limit stops at once rather than after hours of multiplying.
 ///
-/// The library's default is 20 000 000 terms and degree 1000 (system files and the command
-/// line default to 2 000 000 terms: `docs/system-files.md`).
+/// The library's default is 20 000 000 terms, degree 1000 and 10¹⁰ term products a product
+/// (system files and the command line default to 2 000 000 terms: `docs/system-files.md`).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct Limits {
     /// The most terms any single result may have.
@@ -190,12 +191,19 @@ pub struct Limits {
     /// The largest absolute exponent of any variable; for an angle, the largest trigonometric
     /// order `k` of `cos kθ`, `sin kθ` (the exponent of `e^{iθ}`, as it is stored).
     pub max_degree: u32,
+    /// The most term products one product of polynomials may form (some seconds to a minute
+    /// of work at the default).
+    pub max_term_products: u64,
 }
 
 impl Limits {
     /// The default degree limit, of the library and of system files: 12-bit exponent fields
     /// hold it, five variables to a word.
     pub const DEFAULT_MAX_DEGREE: u32 = 1000;
+    /// The default work limit, of the library and of system files: 10¹⁰ term products, some
+    /// seconds to a minute on one core (Fateman's `(1 + x + y + z + t)^30` times itself, 2·10⁹,
+    /// passes).
+    pub const DEFAULT_MAX_TERM_PRODUCTS: u64 = 10_000_000_000;
 }
 
 impl Default for Limits {
@@ -203,6 +211,7 @@ impl Default for Limits {
         Limits {
             max_terms: 20_000_000,
             max_degree: Limits::DEFAULT_MAX_DEGREE,
+            max_term_products: Limits::DEFAULT_MAX_TERM_PRODUCTS,
         }
     }
 }

@@ -451,6 +451,26 @@ impl<C: Coefficient> Poly<C> {
         }
     }
 
+    /// The work limit's check of a product of `a` by `b` before it is formed: `n·m` term
+    /// products, `n(n + 1)/2` for a square.
+    pub(crate) fn check_work(a: &Self, b: &Self) -> Result<(), AlgebraError> {
+        let (n, m) = (a.len() as u128, b.len() as u128);
+        let products = match std::ptr::eq(a, b) {
+            true => n * (n + 1) / 2,
+            false => n * m,
+        };
+        let limit = a.vars.limits().max_term_products;
+        if products > u128::from(limit) {
+            return Err(AlgebraError::TooMuchWork {
+                left: a.len(),
+                right: b.len(),
+                products,
+                limit,
+            });
+        }
+        Ok(())
+    }
+
     /// A power of two at least the largest `|e|` over every exponent of every term: one pass
     /// over the packed words, a few operations per word, no allocation. Enough to clear most
     /// exponent checks at once, since the limit is the same for every variable; a check it

@@ -141,6 +141,9 @@ impl<C: Coefficient> Poly<C> {
             Self::check_terms(&self.vars, terms.coeffs.len())?;
             return Ok(Self::from_gathered(&self.vars, content, terms));
         }
+        if small.len() > SMALL_SIDE {
+            Self::check_work(small, big)?;
+        }
         // Monomials wider than the heap's keys also shift and merge, whatever the lengths.
         if small.len() <= SMALL_SIDE || self.words() > MAX_KEY_WORDS {
             small.check_product_exponents(big)?;

@@ -18,9 +18,88 @@ fn small_vars() -> Vars {
         .limits(Limits {
             max_terms: 1000,
             max_degree: 10_000,
+            ..Limits::default()
         })
         .build()
         .unwrap()
+}
+
+/// `x, y, z, t` with a work limit of `products` term products a product.
+fn work_vars(products: u64) -> Vars {
+    VarSet::builder()
+        .coordinate("x")
+        .coordinate("y")
+        .coordinate("z")
+        .coordinate("t")
+        .limits(Limits {
+            max_term_products: products,
+            ..Limits::default()
+        })
+        .build()
+        .unwrap()
+}
+
+/// A product is refused before it starts when it would form more term products than the
+/// work limit: `n·m`, or `n(n + 1)/2` for a square; at the limit it is formed. A power of a
+/// long polynomial stops at its first product past the limit, where it used to multiply for
+/// a quarter of an hour before the term limit stopped it (found by the fuzzer, seed 1202:
+/// `Z̄^3` with a `Z̄` of 46 379 terms, 3.2·10¹⁰ term products).
+#[test]
+fn work_limit_refuses_a_product_before_it_starts() {
+    // (1 + x + y + z + t)^4 has C(8, 4) = 70 terms, (1 + x + y + z + t)^3 has 35.
+    let (f4, f3) = ("(1 + x + y + z + t)^4", "(1 + x + y + z + t)^3");
+    let at = |limit: u64| -> (Q, Q) { (p(&work_vars(limit), f4), p(&work_vars(limit), f3)) };
+    let (f, g) = at(70 * 35);
+    assert_eq!(f.checked_mul(&g).map(|h| h.len()), Ok(C(11, 4)));
+    let (f, g) = at(70 * 35 - 1);
+    assert_eq!(
+        f.checked_mul(&g).map(|h| h.len()),
+        Err(AlgebraError::TooMuchWork {
+            left: 35,
+            right: 70,
+            products: 70 * 35,
+            limit: 70 * 35 - 1,
+        })
+    );
+    // A square takes each pair of terms once: 70·71/2 = 2485.
+    let (f, _) = at(2485);
+    assert_eq!(f.checked_pow(2).map(|h| h.len()), Ok(C(12, 4)));
+    let (f, _) = at(2484);
+    let err = f.checked_pow(2).unwrap_err();
+    assert!(
+        matches!(err, AlgebraError::TooMuchWork { products: 2485, .. }),
+        "{err}"
+    );
+    assert_eq!(
+        err.to_string(),
+        "the product of 70 terms by 70 would form 2485 term products, past the limit of 2484 \
+         (the work limit); raise the limit or simplify the input"
+    );
+    // f^3 = f²·f: 495 · 70 = 34650 term products for its second product.
+    let (f, _) = at(34_650);
+    assert_eq!(f.checked_pow(3).map(|h| h.len()), Ok(C(16, 4)));
+    let (f, _) = at(34_649);
+    assert!(matches!(
+        f.checked_pow(3),
+        Err(AlgebraError::TooMuchWork {
+            products: 34_650,
+            ..
+        })
+    ));
+    // A short factor shifts and merges, linear work, whatever the limit.
+    let product = |limit| {
+        let vars = work_vars(limit);
+        let (f, short): (Q, Q) = (p(&vars, f4), p(&vars, "x + y - 2"));
+        f.checked_mul(&short).map(|h| h.to_string())
+    };
+    assert_eq!(product(1), product(u64::MAX));
+    assert!(product(1).is_ok());
+}
+
+/// The binomial coefficient `C(n, k)`: the terms of `(1 + x_1 + … + x_k)^(n − k)`.
+#[allow(non_snake_case)]
+fn C(n: usize, k: usize) -> usize {
+    (0..k).fold(1, |c, j| c * (n - j) / (j + 1))
 }
 
 /// `(1 + x + y + z)^30` has C(33, 3) = 5456 terms, past the limit of 1000.
