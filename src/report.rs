@@ -277,7 +277,7 @@ pub struct ClaimResult {
     pub witness: Option<Expr>,
     /// For a claim proved or refuted by a derived check (a tower, a proof, a rank), what failed.
     pub note: Option<String>,
-    /// When the residual above is a part of a longer one ([`ClaimResult::excerpted`]): how
+    /// When the residual above is a part of a longer one ([`ClaimResult::excerpt_residual`]): how
     /// much of it is shown.
     pub excerpt: Option<Excerpt>,
     /// Seconds spent checking it.
@@ -360,10 +360,10 @@ impl ClaimResult {
         self.proved == (self.expect == Expect::Proved)
     }
 
-    /// The same result with a residual of more than `monomials` monomials outside the angles
-    /// cut to the terms of its first `monomials` ([`Excerpt`]): a residual of millions of
-    /// terms, which would print a gigabyte, shows its leading terms and its size.
-    pub fn excerpted(mut self, monomials: usize) -> Self {
+    /// Cuts a residual of more than `monomials` monomials outside the angles to the terms of
+    /// its first `monomials` ([`Excerpt`]): a residual of millions of terms, which would print
+    /// a gigabyte, shows its leading terms and its size.
+    pub fn excerpt_residual(&mut self, monomials: usize) {
         if let Some(e) = self.residual.as_mut() {
             if e.len() > monomials {
                 let (part, all) = e.leading_part(monomials);
@@ -377,10 +377,9 @@ impl ClaimResult {
                 }
             }
         }
-        self
     }
 
-    /// Whether [`ClaimResult::excerpted`] may cut it: its residual has more than `monomials`
+    /// Whether [`ClaimResult::excerpt_residual`] may cut it: its residual has more than `monomials`
     /// terms.
     fn is_longer_than(&self, monomials: usize) -> bool {
         self.residual.as_ref().is_some_and(|e| e.len() > monomials)
@@ -600,7 +599,7 @@ pub fn counted(n: impl std::fmt::Display, noun: &str) -> String {
 impl Report {
     /// The report with every claim's residual of more than `monomials` monomials
     /// outside the angles cut to the terms of its first `monomials`
-    /// ([`ClaimResult::excerpted`]); the report itself when none is that long.
+    /// ([`ClaimResult::excerpt_residual`]); the report itself when none is that long.
     pub fn excerpted(&self, monomials: usize) -> std::borrow::Cow<'_, Report> {
         let long = |e: &Entry| matches!(e, Entry::Claim(c) if c.is_longer_than(monomials));
         if !self.sections.iter().flat_map(|s| &s.entries).any(long) {
@@ -609,10 +608,7 @@ impl Report {
         let mut report = self.clone();
         for entry in report.sections.iter_mut().flat_map(|s| &mut s.entries) {
             if let Entry::Claim(c) = entry {
-                if c.is_longer_than(monomials) {
-                    let whole = std::mem::replace(c, ClaimResult::derived("", "", true, None));
-                    *c = whole.excerpted(monomials);
-                }
+                c.excerpt_residual(monomials);
             }
         }
         std::borrow::Cow::Owned(report)
