@@ -364,18 +364,20 @@ impl ClaimResult {
     /// its first `monomials` ([`Excerpt`]): a residual of millions of terms, which would print
     /// a gigabyte, shows its leading terms and its size.
     pub fn excerpt_residual(&mut self, monomials: usize) {
-        if let Some(e) = self.residual.as_mut() {
-            if e.len() > monomials {
-                let (part, all) = e.leading_part(monomials);
-                if all > monomials {
-                    self.excerpt = Some(Excerpt {
-                        shown: monomials,
-                        monomials: all,
-                        angles: e.has_angles(),
-                    });
-                    *e = part;
-                }
-            }
+        if !self.is_longer_than(monomials) {
+            return;
+        }
+        let Some(e) = self.residual.as_mut() else {
+            return;
+        };
+        let (part, all) = e.leading_part(monomials);
+        if all > monomials {
+            self.excerpt = Some(Excerpt {
+                shown: monomials,
+                monomials: all,
+                angles: e.has_angles(),
+            });
+            *e = part;
         }
     }
 

@@ -1,5 +1,5 @@
-//! `--max-terms`, `--max-degree` and `--max-term-products`, shared by the subcommands that read a system file: they
-//! override the file's `[limits]`, which override the defaults.
+//! `--max-terms`, `--max-degree` and `--max-term-products`, shared by the subcommands that
+//! read a system file: they override the file's `[limits]`, which override the defaults.
 
 use clap::Args;
 use superint::system_file::LimitsOverride;

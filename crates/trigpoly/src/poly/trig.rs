@@ -50,9 +50,8 @@ impl<C: Coefficient> Poly<C> {
     /// ```
     pub fn leading_part(&self, k: usize) -> (Self, usize) {
         let layout = self.layout();
-        let words = layout.words;
         // The angles' fields cleared: a term's monomial outside the angles.
-        let mut keep = vec![u64::MAX; words];
+        let mut keep = vec![u64::MAX; layout.words];
         for theta in self.vars.angles() {
             let (w, shift) = layout.field(theta.index());
             keep[w] &= !(layout.field_mask() << shift);
