@@ -6,8 +6,10 @@
 //! strings in the paper's unicode notation (`{L, G1} = −G2`); a renderer turns both into its
 //! own notation. Timings are the only nondeterministic data and are kept apart (`seconds`).
 
+use std::collections::BTreeMap;
+
 use brackets::{BracketTable, RankCertificate, System};
-use trigpoly::{Expr, Var, Vars};
+use trigpoly::{Expr, Style, Var, Vars};
 
 /// A whole report: a title, sections, and what its closing line summarises.
 #[derive(Clone, Debug)]
@@ -284,8 +286,9 @@ pub struct ClaimResult {
     pub seconds: f64,
 }
 
-/// How much of a long residual a claim shows: every term of its first `shown`
-/// monomials outside the angles ([`trigpoly::Poly::leading_part`]), of `monomials` in all.
+/// How much of a long expression (a refuted claim's residual, a table's entry) is shown: every
+/// term of its first `shown` monomials outside the angles ([`trigpoly::Poly::leading_part`]),
+/// of `monomials` in all.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct Excerpt {
     /// The monomials whose terms are shown.
@@ -298,7 +301,7 @@ pub struct Excerpt {
 
 impl Excerpt {
     /// What the prose formats say under the part: `shown: the terms of its first 100 of
-    /// 254321 monomials outside the angles; --full-residuals shows all` (`its first 100 of
+    /// 254321 monomials outside the angles; --full-expressions shows all` (`its first 100 of
     /// 254321 terms` without angles).
     pub fn describe(&self) -> String {
         let (shown, all) = (self.shown, self.monomials);
@@ -306,7 +309,26 @@ impl Excerpt {
             true => format!("the terms of its first {shown} of {all} monomials outside the angles"),
             false => format!("its first {shown} of {all} terms"),
         };
-        format!("shown: {part}; --full-residuals shows all")
+        format!("shown: {part}; --full-expressions shows all")
+    }
+
+    /// Cuts `e` to the terms of its first `monomials` monomials outside the angles if it has
+    /// more; how much of it is then shown.
+    fn cut(e: &mut Expr, monomials: usize) -> Option<Excerpt> {
+        if e.len() <= monomials {
+            return None;
+        }
+        let (part, all) = e.leading_part(monomials);
+        if all <= monomials {
+            return None;
+        }
+        let excerpt = Excerpt {
+            shown: monomials,
+            monomials: all,
+            angles: e.has_angles(),
+        };
+        *e = part;
+        Some(excerpt)
     }
 }
 
@@ -364,20 +386,8 @@ impl ClaimResult {
     /// its first `monomials` ([`Excerpt`]): a residual of millions of terms, which would print
     /// a gigabyte, shows its leading terms and its size.
     pub fn excerpt_residual(&mut self, monomials: usize) {
-        if !self.is_longer_than(monomials) {
-            return;
-        }
-        let Some(e) = self.residual.as_mut() else {
-            return;
-        };
-        let (part, all) = e.leading_part(monomials);
-        if all > monomials {
-            self.excerpt = Some(Excerpt {
-                shown: monomials,
-                monomials: all,
-                angles: e.has_angles(),
-            });
-            *e = part;
+        if let Some(e) = self.residual.as_mut() {
+            self.excerpt = Excerpt::cut(e, monomials);
         }
     }
 
@@ -423,6 +433,9 @@ pub struct TableResult {
     pub placeholders: [String; 2],
     /// The table, as the engine computed it.
     pub table: BracketTable,
+    /// The entries cut to their leading part ([`TableResult::excerpt_entries`]), by row and
+    /// column: how much of each is shown.
+    pub excerpts: BTreeMap<(usize, usize), Excerpt>,
 }
 
 /// The names a table's caption may give a row and a column, the first pair free taken.
@@ -447,7 +460,49 @@ impl TableResult {
             caption: format!("`{{{a}, {b}}}` for {whose} (row `{a}`, column `{b}`)"),
             placeholders: [a.to_string(), b.to_string()],
             table,
+            excerpts: BTreeMap::new(),
         }
+    }
+
+    /// Cuts each entry of more than `monomials` monomials outside the angles to the terms of
+    /// its first `monomials` ([`Excerpt`]): a bracket of 10⁵ terms that is no combination of
+    /// the table's functions shows its leading terms and its size.
+    pub fn excerpt_entries(&mut self, monomials: usize) {
+        for (a, row) in self.table.entries.iter_mut().enumerate() {
+            for (b, entry) in row.iter_mut().enumerate() {
+                if let brackets::Entry::Expression(e) = entry {
+                    if let Some(excerpt) = Excerpt::cut(e, monomials) {
+                        self.excerpts.insert((a, b), excerpt);
+                    }
+                }
+            }
+        }
+    }
+
+    /// Whether [`TableResult::excerpt_entries`] may cut it: an entry has more than
+    /// `monomials` terms.
+    fn is_longer_than(&self, monomials: usize) -> bool {
+        let long = |e: &brackets::Entry| matches!(e, brackets::Entry::Expression(x) if x.len() > monomials);
+        self.table.entries.iter().flatten().any(long)
+    }
+
+    /// The entry in row `a`, column `b` in a notation, `+ …` (`+ \dots`) after one cut to
+    /// its leading part.
+    pub fn cell(&self, a: usize, b: usize, style: Style) -> String {
+        let text = self.table.entries[a][b].render(style);
+        match (self.excerpts.contains_key(&(a, b)), style) {
+            (false, _) => text,
+            (true, Style::Latex) => format!(r"{text} + \dots"),
+            (true, _) => format!("{text} + …"),
+        }
+    }
+
+    /// Every cell in a notation, row by row ([`TableResult::cell`]).
+    pub fn cells(&self, style: Style) -> Vec<Vec<String>> {
+        let n = self.table.entries.len();
+        (0..n)
+            .map(|a| (0..n).map(|b| self.cell(a, b, style)).collect())
+            .collect()
     }
 
     /// The caption without its note on rows and columns, for the table set as a list of its
@@ -599,18 +654,25 @@ pub fn counted(n: impl std::fmt::Display, noun: &str) -> String {
 }
 
 impl Report {
-    /// The report with every claim's residual of more than `monomials` monomials
-    /// outside the angles cut to the terms of its first `monomials`
-    /// ([`ClaimResult::excerpt_residual`]); the report itself when none is that long.
+    /// The report with every claim's residual and every table's entry of more than
+    /// `monomials` monomials outside the angles cut to the terms of its first `monomials`
+    /// ([`ClaimResult::excerpt_residual`], [`TableResult::excerpt_entries`]); the report
+    /// itself when none is that long.
     pub fn excerpted(&self, monomials: usize) -> std::borrow::Cow<'_, Report> {
-        let long = |e: &Entry| matches!(e, Entry::Claim(c) if c.is_longer_than(monomials));
+        let long = |e: &Entry| match e {
+            Entry::Claim(c) => c.is_longer_than(monomials),
+            Entry::Table(t) => t.is_longer_than(monomials),
+            _ => false,
+        };
         if !self.sections.iter().flat_map(|s| &s.entries).any(long) {
             return std::borrow::Cow::Borrowed(self);
         }
         let mut report = self.clone();
         for entry in report.sections.iter_mut().flat_map(|s| &mut s.entries) {
-            if let Entry::Claim(c) = entry {
-                c.excerpt_residual(monomials);
+            match entry {
+                Entry::Claim(c) => c.excerpt_residual(monomials),
+                Entry::Table(t) => t.excerpt_entries(monomials),
+                _ => {}
             }
         }
         std::borrow::Cow::Owned(report)

@@ -1,4 +1,4 @@
-//! Options shared by every subcommand: `--format`, `--no-timings` and `--full-residuals`.
+//! Options shared by every subcommand: `--format`, `--no-timings` and `--full-expressions`.
 
 use std::io::{self, Write};
 
@@ -40,10 +40,11 @@ pub struct OutputArgs {
     /// Leave timings out, so that the output is the same on every run.
     #[arg(long, global = true)]
     no_timings: bool,
-    /// Print a refuted claim's residual whole, however long (by default one of more than 100
-    /// monomials shows the terms of its first 100 and how many it has).
-    #[arg(long, global = true)]
-    full_residuals: bool,
+    /// Print a refuted claim's residual and a table's entry whole, however long (by default
+    /// one of more than 100 monomials shows the terms of its first 100 and how many it has;
+    /// also `--full-residuals`).
+    #[arg(long, global = true, alias = "full-residuals")]
+    full_expressions: bool,
 }
 
 /// How to print, as plain data.
@@ -61,7 +62,7 @@ impl OutputArgs {
             format: self.format.into(),
             options: Options {
                 timings: !self.no_timings,
-                shown_monomials: (!self.full_residuals).then_some(SHOWN_MONOMIALS),
+                shown_monomials: (!self.full_expressions).then_some(SHOWN_MONOMIALS),
             },
         }
     }

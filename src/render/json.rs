@@ -37,7 +37,11 @@
 //!   "tables": [ { "section", "caption" (plain text, as every title and caption: "{A, B} for
 //!                 the harmonic rotor (row A, column B)"), "functions": [ascii names],
 //!                 "display": [names],
-//!                 "entries": [[ { "text", "ascii", "latex" } ]] } ],
+//!                 "entries": [[ { "text", "ascii", "latex" } ]],
+//!                 "excerpts": [ { "row", "column", "shown_monomials", "monomials" } ]   (the
+//!                          entries of more monomials outside the angles than
+//!                          `Options::shown_monomials`: each is then every term of its first
+//!                          "shown_monomials" of "monomials") } ],
 //!   "towers": [ { "section", "id", "system", "ladder", "max", "checked",
 //!                 "failures": [[m, n]], "outcome", "seconds" } ],
 //!   "proofs": [ { "section", "title", "facts": [ { "statement", "holds" } ],
@@ -143,6 +147,12 @@ pub fn value(report: &Report, options: &Options) -> Value {
                         "ascii": e.render(Style::Ascii),
                         "latex": e.render(Style::Latex),
                     })).collect::<Vec<_>>()).collect::<Vec<_>>(),
+                    "excerpts": t.excerpts.iter().map(|((a, b), e)| json!({
+                        "row": a,
+                        "column": b,
+                        "shown_monomials": e.shown,
+                        "monomials": e.monomials,
+                    })).collect::<Vec<_>>(),
                 })),
                 Entry::Tower(t) => {
                     claims.push(claim(&t.claim));

@@ -251,7 +251,8 @@ fn claim_rows(c: &ClaimResult) -> Vec<String> {
         }
     }
     if let (ClaimKind::Nonvanishing, Some(w)) = (c.kind, &c.witness) {
-        if visual_width(&w.render(Style::Latex)) <= 3 * CLAIM_ROW {
+        // A term and the `+` before it are two columns wide at least (as the text's witness).
+        if w.len() <= 3 * CLAIM_ROW / 2 && visual_width(&w.render(Style::Latex)) <= 3 * CLAIM_ROW {
             rows.extend(long_rows("", r"\text{it equals}", w, CLAIM_ROW));
         } else {
             rows.push(format!(
@@ -304,11 +305,7 @@ const TABLE_ROW: usize = 70;
 
 fn table(out: &mut Vec<String>, t: &TableResult) {
     let table = &t.table;
-    let cells: Vec<Vec<String>> = table
-        .entries
-        .iter()
-        .map(|row| row.iter().map(|e| e.render(Style::Latex)).collect())
-        .collect();
+    let cells = t.cells(Style::Latex);
     let head: Vec<String> = table.display.iter().map(|d| math(d)).collect();
     let column = |k: usize| {
         let widest = cells.iter().map(|row| visual_width(&row[k])).max();
@@ -345,6 +342,9 @@ fn table_as_list(out: &mut Vec<String>, t: &TableResult, head: &[String], cells:
     for (a, b, cell) in brackets {
         let first = format!(r"\{{{}, {}\}} &= ", head[a], head[b]);
         rows.extend(broken_rows(&first, cell, ROW));
+        if let Some(e) = t.excerpts.get(&(a, b)) {
+            rows.push(format!(r"&\quad \text{{({})}}", text(&e.describe())));
+        }
     }
     if rows.is_empty() {
         out.push(r"\[1ex] every bracket is zero.".into());

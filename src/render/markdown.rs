@@ -4,7 +4,7 @@
 use trigpoly::Style;
 
 use super::text::{number, point, upper_bound};
-use super::{verdict, Options};
+use super::{verdict, Options, SHOWN_MONOMIALS};
 use crate::report::{
     counted, ClaimKind, ClaimResult, Entry, Equations, ProofResult, RankResult, Report,
     TableResult, TowerResult,
@@ -86,8 +86,17 @@ fn claim(c: &ClaimResult) -> String {
             line.push_str(&format!(" + … ({})", e.describe()));
         }
     }
-    if let (ClaimKind::Nonvanishing, Some(w)) = (c.kind, &c.witness) {
-        line.push_str(&format!(" (it equals {})", code(&w.to_string())));
+    match (c.kind, &c.witness) {
+        (ClaimKind::Nonvanishing, Some(w)) if w.len() <= SHOWN_MONOMIALS => {
+            line.push_str(&format!(" (it equals {})", code(&w.to_string())));
+        }
+        (ClaimKind::Nonvanishing, Some(w)) => {
+            line.push_str(&format!(
+                " (it is a nonzero sum of {})",
+                counted(w.len(), "term")
+            ));
+        }
+        _ => {}
     }
     if let Some(n) = &c.note {
         line.push_str(&format!(" ({n})"));
@@ -101,12 +110,18 @@ fn table(t: &TableResult) -> String {
     let head: Vec<String> = table.display.iter().map(|d| code(d)).collect();
     lines.push(format!("| {} | {} |", code("{·,·}"), head.join(" | ")));
     lines.push(format!("|---|{}", "---|".repeat(head.len())));
-    for (name, row) in table.display.iter().zip(&table.entries) {
-        let cells: Vec<String> = row
-            .iter()
-            .map(|e| code(&e.render(Style::Unicode)))
-            .collect();
+    for (name, row) in table.display.iter().zip(t.cells(Style::Unicode)) {
+        let cells: Vec<String> = row.iter().map(|c| code(c)).collect();
         lines.push(format!("| {} | {} |", code(name), cells.join(" | ")));
+    }
+    // What an entry cut to its leading part leaves out, once for each pair.
+    let cut = t.excerpts.iter().filter(|((a, b), _)| a < b);
+    for (k, ((a, b), e)) in cut.enumerate() {
+        if k == 0 {
+            lines.push(String::new());
+        }
+        let bracket = format!("{{{}, {}}}", table.display[*a], table.display[*b]);
+        lines.push(format!("- {}: {}", code(&bracket), e.describe()));
     }
     lines.join("\n")
 }

@@ -83,14 +83,14 @@ pub struct UnknownFormat(pub String);
 pub struct Options {
     /// Whether to print timings (off makes the output byte-for-byte reproducible).
     pub timings: bool,
-    /// The most monomials (outside the angles) of a refuted claim's residual printed whole: a
-    /// longer one shows the terms of its first this many and says how many it has
-    /// ([`Report::excerpted`]); `None` prints every one.
+    /// The most monomials (outside the angles) of a refuted claim's residual or a table's entry
+    /// printed whole: a longer one shows the terms of its first this many and says how many it
+    /// has ([`Report::excerpted`]); `None` prints every one.
     pub shown_monomials: Option<usize>,
 }
 
-/// The monomials of a residual shown by default: a residual of a hundred terms reads in full,
-/// one of millions (a gigabyte of text) by its leading terms.
+/// The monomials of a residual or a table's entry shown by default: one of a hundred terms
+/// reads in full, one of millions (a gigabyte of text) by its leading terms.
 pub const SHOWN_MONOMIALS: usize = 100;
 
 impl Default for Options {

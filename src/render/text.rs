@@ -291,8 +291,10 @@ fn verdict_line(out: &mut Vec<String>, c: &ClaimResult) {
 fn claim(out: &mut Vec<String>, c: &ClaimResult) {
     verdict_line(out, c);
     if let (ClaimKind::Nonvanishing, Some(w)) = (c.kind, &c.witness) {
-        let line = format!("      it equals {w}");
-        if width(&line) <= 3 * WRAP {
+        // A term and the ` + ` before it take four columns at least: a witness of more terms
+        // than that allows is not rendered to be measured.
+        let line = (w.len() <= 3 * WRAP / 4).then(|| format!("      it equals {w}"));
+        if let Some(line) = line.filter(|line| width(line) <= 3 * WRAP) {
             out.extend(wrap(&line, WRAP, "        "));
         } else {
             out.push(format!(
@@ -306,11 +308,7 @@ fn claim(out: &mut Vec<String>, c: &ClaimResult) {
 fn table(out: &mut Vec<String>, t: &TableResult) {
     let table = &t.table;
     let corner = "{·,·}".to_string();
-    let cells: Vec<Vec<String>> = table
-        .entries
-        .iter()
-        .map(|row| row.iter().map(|e| e.render(Style::Unicode)).collect())
-        .collect();
+    let cells = t.cells(Style::Unicode);
     let first = table
         .display
         .iter()
@@ -359,9 +357,20 @@ fn table_as_list(out: &mut Vec<String>, t: &TableResult, cells: &[Vec<String>]) 
     let brackets = table_list(cells);
     let caption = plain(&t.list_caption());
     let [a, b] = &t.placeholders;
-    let rows: Vec<String> = brackets
+    let rows: Vec<Vec<String>> = brackets
         .into_iter()
-        .map(|(a, b, cell)| format!("    {{{}, {}}} = {cell}", names[a], names[b]))
+        .map(|(a, b, cell)| {
+            let row = format!("    {{{}, {}}} = {cell}", names[a], names[b]);
+            let mut lines = wrap_sum(&row, WRAP, "        ");
+            if let Some(e) = t.excerpts.get(&(a, b)) {
+                lines.extend(wrap(
+                    &format!("        ({})", e.describe()),
+                    WRAP,
+                    "         ",
+                ));
+            }
+            lines
+        })
         .collect();
     match rows.is_empty() {
         true => out.push(format!("{caption}: every bracket is zero.")),
@@ -374,9 +383,7 @@ fn table_as_list(out: &mut Vec<String>, t: &TableResult, cells: &[Vec<String>]) 
                 WRAP,
                 "",
             ));
-            for row in rows {
-                out.extend(wrap_sum(&row, WRAP, "        "));
-            }
+            out.extend(rows.into_iter().flatten());
         }
     }
 }

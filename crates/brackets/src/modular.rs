@@ -1,7 +1,8 @@
 //! Exact linear algebra for discovery: which vectors of a sequence depend on earlier ones, and
 //! how. The same semi-echelon elimination runs over the prime field `F_p` (`p = 2⁶² − 57`,
 //! products in `u128`) for speed and over `Q` ([`Rational`]) when exactness must not depend on
-//! a reconstruction; [`reconstruct`] lifts a residue back to a small rational.
+//! a reconstruction (over `Q(i)`, [`GaussianRational`], for a bracket table's combinations);
+//! [`reconstruct`] lifts a residue back to a small rational.
 //!
 //! Nothing here is floating point, and nothing decided modulo `p` is trusted without an exact
 //! check by the caller: a vector independent modulo `p` is independent over `Q` (a relation over
@@ -27,7 +28,7 @@ use std::sync::{Mutex, PoisonError};
 use num_bigint::BigInt;
 use num_integer::Integer as _;
 use num_traits::ToPrimitive;
-use trigpoly::Rational;
+use trigpoly::{GaussianRational, Rational};
 
 /// The prime `2⁶² − 57`.
 pub const PRIME: u64 = (1 << 62) - 57;
@@ -194,6 +195,31 @@ impl Field for Rational {
     }
     fn inv(&self) -> Self {
         self.try_inv().expect("inverse of zero in Q")
+    }
+}
+
+/// Q(i), for solves whose coefficients are complex (a bracket table's combinations).
+impl Field for GaussianRational {
+    fn zero() -> Self {
+        GaussianRational::default()
+    }
+    fn one() -> Self {
+        GaussianRational::from(1)
+    }
+    fn is_zero(&self) -> bool {
+        GaussianRational::is_zero(self)
+    }
+    fn add(&self, other: &Self) -> Self {
+        self + other
+    }
+    fn sub(&self, other: &Self) -> Self {
+        self - other
+    }
+    fn mul(&self, other: &Self) -> Self {
+        self * other
+    }
+    fn inv(&self) -> Self {
+        self.try_inv().expect("inverse of zero in Q(i)")
     }
 }
 

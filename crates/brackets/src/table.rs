@@ -2,13 +2,13 @@
 //! of the listed functions with coefficients in the parameters where one exists (found by exact
 //! linear algebra, then checked), otherwise as an expression.
 
-use std::collections::{BTreeMap, BTreeSet};
+use std::collections::{BTreeSet, HashMap, HashSet};
 
 use trigpoly::{Expr, GaussianRational, Style, VarKind};
 
 use crate::clearing::Clearing;
 use crate::error::EngineError;
-use crate::linalg::Matrix;
+use crate::modular::{Echelon, SparseVec};
 use crate::system::System;
 
 /// One entry of a table.
@@ -302,14 +302,28 @@ fn solve_combination(target: &Expr, basis: &[Expr]) -> Result<Option<Vec<Expr>>,
     // The target's parameter parts by phase-space part: a term of `F_k` meets the target's
     // terms of its own phase-space monomial by one lookup, where a scan of all of them for
     // each of its terms took minutes for functions of 10⁵ terms.
-    let mut target_params: BTreeMap<Vec<i64>, Vec<Vec<i64>>> = BTreeMap::new();
+    let mut target_params: HashMap<Vec<i64>, Vec<Vec<i64>>> = HashMap::new();
     for t in target.terms() {
         let (phase, param) = split(&t.exponents());
         target_params.entry(phase).or_default().push(param);
     }
-    // Candidate columns ν·F_k.
+    let useful = useful_functions(basis, &target_params, split);
+    // A phase-space monomial of the target that none of them has is in no combination: a
+    // bracket of 10⁵ terms that is none is known so before any column is formed.
+    let met: HashSet<&Vec<i64>> = useful
+        .iter()
+        .flat_map(|&k| basis[k].terms())
+        .filter_map(|u| target_params.get_key_value(&split(&u.exponents()).0))
+        .map(|(phase, _)| phase)
+        .collect();
+    if met.len() < target_params.len() {
+        return Ok(None);
+    }
+    // Candidate columns ν·F_k: the parameter monomials ν that carry a term of `F_k` onto one
+    // of the target.
     let mut columns: Vec<(usize, Vec<i64>, Expr)> = Vec::new();
-    for (k, f) in basis.iter().enumerate() {
+    for k in useful {
+        let f = &basis[k];
         let mut nus: BTreeSet<Vec<i64>> = BTreeSet::new();
         for u in f.terms() {
             let (uphase, uparam) = split(&u.exponents());
@@ -323,48 +337,132 @@ fn solve_combination(target: &Expr, basis: &[Expr]) -> Result<Option<Vec<Expr>>,
             columns.push((k, nu, f.checked_mul(&m)?));
         }
     }
-    if columns.is_empty() {
+    // Rows: the monomials of the columns, numbered as they come. A monomial of the target that
+    // no column has leaves no combination; otherwise the columns go into a sparse echelon
+    // form, in order (a column that depends on earlier ones has coefficient 0), and the
+    // target is reduced by it. A dense matrix of every monomial by every column took minutes
+    // and gigabytes for brackets of 10⁵ terms.
+    let mut rows: HashMap<Vec<i64>, usize> = HashMap::new();
+    let vectors: Vec<SparseVec<GaussianRational>> = columns
+        .iter()
+        .map(|(_, _, col)| {
+            col.terms()
+                .map(|t| {
+                    let n = rows.len();
+                    (*rows.entry(t.exponents()).or_insert(n), t.coeff())
+                })
+                .collect()
+        })
+        .collect();
+    let Some(target) = target
+        .terms()
+        .map(|t| rows.get(&t.exponents()).map(|&r| (r, t.coeff())))
+        .collect::<Option<SparseVec<_>>>()
+    else {
         return Ok(None);
+    };
+    let mut echelon = Echelon::new(rows.len());
+    for (j, v) in vectors.iter().enumerate() {
+        echelon.insert(j, v);
     }
-    // Rows: every monomial that appears.
-    let mut rows: BTreeMap<Vec<i64>, usize> = BTreeMap::new();
-    for e in target.terms().map(|t| t.exponents()).chain(
-        columns
-            .iter()
-            .flat_map(|c| c.2.terms().map(|t| t.exponents()).collect::<Vec<_>>()),
-    ) {
-        let n = rows.len();
-        rows.entry(e).or_insert(n);
-    }
-    let mut a = Matrix::zeros(rows.len(), columns.len());
-    for (j, (_, _, col)) in columns.iter().enumerate() {
-        for t in col.terms() {
-            a.set(rows[&t.exponents()], j, t.coeff());
-        }
-    }
-    let mut b = vec![GaussianRational::default(); rows.len()];
-    for t in target.terms() {
-        b[rows[&t.exponents()]] = t.coeff();
-    }
-    let Some(x) = a.solve(&b) else {
+    let Some(x) = echelon.express(&target) else {
         return Ok(None);
     };
     let mut coeffs: Vec<Expr> = vec![Expr::zero(&vars); basis.len()];
-    for ((k, nu, _), xj) in columns.iter().zip(&x) {
-        if xj.is_zero() {
-            continue;
-        }
+    for (j, xj) in x {
+        let (k, nu, _) = &columns[j];
         let powers: Vec<_> = vars.vars().zip(nu.iter().copied()).collect();
-        coeffs[*k] = coeffs[*k].checked_add(&Expr::monomial(&vars, xj.clone(), &powers)?)?;
+        coeffs[*k] = coeffs[*k].checked_add(&Expr::monomial(&vars, xj, &powers)?)?;
     }
     Ok(Some(coeffs))
 }
 
+/// The functions `F_k` that may carry a nonzero coefficient in `Σ c_k F_k = target`: one with
+/// a phase-space monomial that neither the target nor any other such function has cannot (its
+/// coefficient, a nonzero Laurent polynomial in the parameters, would leave that monomial's
+/// term), and leaving it out may do the same to another. A table of small functions and one
+/// of 10⁵ terms formed and reduced that one's columns for each bracket it is no part of.
+fn useful_functions(
+    basis: &[Expr],
+    target: &HashMap<Vec<i64>, Vec<Vec<i64>>>,
+    split: impl Fn(&[i64]) -> (Vec<i64>, Vec<i64>),
+) -> Vec<usize> {
+    // Each function's phase-space monomials outside the target, once each.
+    let outside: Vec<HashSet<Vec<i64>>> = basis
+        .iter()
+        .map(|f| {
+            f.terms()
+                .map(|u| split(&u.exponents()).0)
+                .filter(|phase| !target.contains_key(phase))
+                .collect()
+        })
+        .collect();
+    let mut holders: HashMap<&Vec<i64>, usize> = HashMap::new();
+    for phase in outside.iter().flatten() {
+        *holders.entry(phase).or_default() += 1;
+    }
+    let mut useful = vec![true; basis.len()];
+    loop {
+        let lone = |k: usize| outside[k].iter().any(|phase| holders[phase] == 1);
+        let dropped: Vec<usize> = (0..basis.len()).filter(|&k| useful[k] && lone(k)).collect();
+        if dropped.is_empty() {
+            break;
+        }
+        for k in dropped {
+            useful[k] = false;
+            for phase in &outside[k] {
+                *holders.get_mut(phase).expect("counted") -= 1;
+            }
+        }
+    }
+    (0..basis.len()).filter(|&k| useful[k]).collect()
+}
+
 #[cfg(test)]
 mod tests {
-    use super::{latex_name, BracketTable};
+    use super::{express, latex_name, BracketTable, FunctionName};
     use crate::systems::harmonic_rotor;
-    use trigpoly::Style;
+    use trigpoly::{Expr, Style};
+
+    /// `express` with the rotor's functions written out, as `(name, value)`.
+    fn express_in(target: &str, functions: &[(&str, &str)]) -> Option<Vec<(String, Expr)>> {
+        let rotor = harmonic_rotor();
+        let basis: Vec<(FunctionName, Expr)> = functions
+            .iter()
+            .map(|(name, value)| {
+                let name = FunctionName {
+                    name: name.to_string(),
+                    display: name.to_string(),
+                };
+                (name, rotor.parse(value).expect("a value"))
+            })
+            .collect();
+        let target = rotor.parse(target).expect("a target");
+        let found = express(&target, &basis).expect("no limit is met");
+        found.map(|c| c.into_iter().map(|(c, name)| (name.name, c)).collect())
+    }
+
+    /// A function with a monomial that neither the target nor another function has takes no
+    /// part (and is left out before its columns are formed); two that share one can, when
+    /// it cancels between them; parameters may stand in the coefficients.
+    #[test]
+    fn combinations_use_the_functions_that_can_take_part() {
+        let rotor = harmonic_rotor();
+        let c = |s: &str| rotor.parse(s).expect("a coefficient");
+        let functions = [("F", "x + y"), ("G", "p_x - y"), ("B", "(1 + y + p_y)^6")];
+        // y cancels between F and G; B has monomials of its own.
+        assert_eq!(
+            express_in("M*x + M*p_x", &functions),
+            Some(vec![("F".into(), c("M")), ("G".into(), c("M"))])
+        );
+        assert_eq!(
+            express_in("2*(1 + y + p_y)^6 - omega*(x + y)", &functions),
+            Some(vec![("F".into(), c("-omega")), ("B".into(), c("2"))])
+        );
+        // No combination: x alone needs F without its y, and G's p_x is not in the target.
+        assert_eq!(express_in("x", &functions), None);
+        assert_eq!(express_in("x + p_y^7", &functions), None);
+    }
 
     /// A combination whose coefficient has a denominator writes it last, so that the cell
     /// reads back: `{X, H} = D/M` was printed `1/M D`, which the parser refuses as ambiguous.
