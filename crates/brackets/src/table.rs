@@ -4,7 +4,7 @@
 
 use std::collections::{BTreeSet, HashMap, HashSet};
 
-use trigpoly::{Expr, GaussianRational, Style, VarKind};
+use trigpoly::{AlgebraError, Expr, GaussianRational, Style, VarKind};
 
 use crate::clearing::Clearing;
 use crate::error::EngineError;
@@ -254,9 +254,27 @@ pub fn express(
                     .collect::<Result<Vec<_>, _>>()?,
             ),
         };
-    let Some(coeffs) = solve_combination(&cleared_target, &cleared_basis)? else {
+    let every = vec![true; basis.len()];
+    let Some(mut found) = solve_combination(&cleared_target, &cleared_basis, &every)? else {
         return Ok(None);
     };
+    // Of dependent functions (`K`, `Re K`, `Im K`), a combination of fewer: each function of
+    // the combination left out in turn while one without it, of no more functions, exists,
+    // so that `{H_x, Re K}` reads `6ω Im K`, not `−6iω K + 6iω Re K`.
+    if !found.unique {
+        let mut allowed = every;
+        for k in 0..basis.len() {
+            if found.coeffs[k].is_zero() || found.support() == 1 {
+                continue;
+            }
+            allowed[k] = false;
+            match solve_combination(&cleared_target, &cleared_basis, &allowed)? {
+                Some(other) if other.support() <= found.support() => found = other,
+                _ => allowed[k] = true,
+            }
+        }
+    }
+    let coeffs = found.coeffs;
     // Check the combination exactly.
     let mut sum = Expr::zero(&vars);
     for (c, (_, f)) in coeffs.iter().zip(basis) {
@@ -277,10 +295,29 @@ pub fn express(
     ))
 }
 
-/// Coefficients `c_k`, each a polynomial in the parameters, with `Σ c_k f_k = target` as
-/// polynomials whose monomials are independent (no denominator atoms), found by an exact
-/// linear solve; `None` when the ansatz holds none.
-fn solve_combination(target: &Expr, basis: &[Expr]) -> Result<Option<Vec<Expr>>, EngineError> {
+/// A solution of `Σ c_k f_k = target`.
+struct Combination {
+    /// `c_k`, each a polynomial in the parameters.
+    coeffs: Vec<Expr>,
+    /// Whether it is the only one in the ansatz (its columns independent).
+    unique: bool,
+}
+
+impl Combination {
+    /// How many functions it takes.
+    fn support(&self) -> usize {
+        self.coeffs.iter().filter(|c| !c.is_zero()).count()
+    }
+}
+
+/// Coefficients `c_k`, each a polynomial in the parameters and zero where `allowed` is false,
+/// with `Σ c_k f_k = target` as polynomials whose monomials are independent (no denominator
+/// atoms), found by an exact linear solve; `None` when the ansatz holds none.
+fn solve_combination(
+    target: &Expr,
+    basis: &[Expr],
+    allowed: &[bool],
+) -> Result<Option<Combination>, EngineError> {
     let vars = target.vars().clone();
     let is_param: Vec<bool> = vars
         .vars()
@@ -307,7 +344,7 @@ fn solve_combination(target: &Expr, basis: &[Expr]) -> Result<Option<Vec<Expr>>,
         let (phase, param) = split(&t.exponents());
         target_params.entry(phase).or_default().push(param);
     }
-    let useful = useful_functions(basis, &target_params, split);
+    let useful = useful_functions(basis, allowed, &target_params, split);
     // A phase-space monomial of the target that none of them has is in no combination: a
     // bracket of 10⁵ terms that is none is known so before any column is formed.
     let met: HashSet<&Vec<i64>> = useful
@@ -321,16 +358,33 @@ fn solve_combination(target: &Expr, basis: &[Expr]) -> Result<Option<Vec<Expr>>,
     }
     // Candidate columns ν·F_k: the parameter monomials ν that carry a term of `F_k` onto one
     // of the target.
-    let mut columns: Vec<(usize, Vec<i64>, Expr)> = Vec::new();
-    for k in useful {
-        let f = &basis[k];
-        let mut nus: BTreeSet<Vec<i64>> = BTreeSet::new();
-        for u in f.terms() {
-            let (uphase, uparam) = split(&u.exponents());
-            for tparam in target_params.get(&uphase).into_iter().flatten() {
-                nus.insert(tparam.iter().zip(&uparam).map(|(a, b)| a - b).collect());
+    let nus: Vec<(usize, BTreeSet<Vec<i64>>)> = useful
+        .into_iter()
+        .map(|k| {
+            let mut nus = BTreeSet::new();
+            for u in basis[k].terms() {
+                let (uphase, uparam) = split(&u.exponents());
+                for tparam in target_params.get(&uphase).into_iter().flatten() {
+                    nus.insert(tparam.iter().zip(&uparam).map(|(a, b)| a - b).collect());
+                }
             }
-        }
+            (k, nus)
+        })
+        .collect();
+    // The columns are held at once, and reduced: together they are held to the term limit,
+    // as one result is (a bracket of 10⁶ terms and a function of 7·10⁵ that it spans took
+    // 24 columns of 1.7·10⁷ terms, and 9 s, to be found no combination).
+    let limit = vars.limits().max_terms;
+    let held: usize = nus
+        .iter()
+        .map(|(k, n)| n.len().saturating_mul(basis[*k].len()))
+        .sum();
+    if held > limit {
+        return Err(AlgebraError::TooManyTerms { limit }.into());
+    }
+    let mut columns: Vec<(usize, Vec<i64>, Expr)> = Vec::new();
+    for (k, nus) in nus {
+        let f = &basis[k];
         for nu in nus {
             let powers: Vec<_> = vars.vars().zip(nu.iter().copied()).collect();
             let m = Expr::monomial(&vars, GaussianRational::from(1), &powers)?;
@@ -362,8 +416,9 @@ fn solve_combination(target: &Expr, basis: &[Expr]) -> Result<Option<Vec<Expr>>,
         return Ok(None);
     };
     let mut echelon = Echelon::new(rows.len());
+    let mut unique = true;
     for (j, v) in vectors.iter().enumerate() {
-        echelon.insert(j, v);
+        unique &= echelon.insert(j, v).is_none();
     }
     let Some(x) = echelon.express(&target) else {
         return Ok(None);
@@ -374,34 +429,39 @@ fn solve_combination(target: &Expr, basis: &[Expr]) -> Result<Option<Vec<Expr>>,
         let powers: Vec<_> = vars.vars().zip(nu.iter().copied()).collect();
         coeffs[*k] = coeffs[*k].checked_add(&Expr::monomial(&vars, xj, &powers)?)?;
     }
-    Ok(Some(coeffs))
+    Ok(Some(Combination { coeffs, unique }))
 }
 
-/// The functions `F_k` that may carry a nonzero coefficient in `Σ c_k F_k = target`: one with
-/// a phase-space monomial that neither the target nor any other such function has cannot (its
-/// coefficient, a nonzero Laurent polynomial in the parameters, would leave that monomial's
-/// term), and leaving it out may do the same to another. A table of small functions and one
-/// of 10⁵ terms formed and reduced that one's columns for each bracket it is no part of.
+/// The functions `F_k` of those `allowed` that may carry a nonzero coefficient in
+/// `Σ c_k F_k = target`: one with a phase-space monomial that neither the target nor any other
+/// such function has cannot (its coefficient, a nonzero Laurent polynomial in the parameters,
+/// would leave that monomial's term), and leaving it out may do the same to another. A table
+/// of small functions and one of 10⁵ terms formed and reduced that one's columns for each
+/// bracket it is no part of.
 fn useful_functions(
     basis: &[Expr],
+    allowed: &[bool],
     target: &HashMap<Vec<i64>, Vec<Vec<i64>>>,
     split: impl Fn(&[i64]) -> (Vec<i64>, Vec<i64>),
 ) -> Vec<usize> {
-    // Each function's phase-space monomials outside the target, once each.
+    // Each allowed function's phase-space monomials outside the target, once each.
     let outside: Vec<HashSet<Vec<i64>>> = basis
         .iter()
-        .map(|f| {
-            f.terms()
+        .zip(allowed)
+        .map(|(f, &allowed)| match allowed {
+            false => HashSet::new(),
+            true => f
+                .terms()
                 .map(|u| split(&u.exponents()).0)
                 .filter(|phase| !target.contains_key(phase))
-                .collect()
+                .collect(),
         })
         .collect();
     let mut holders: HashMap<&Vec<i64>, usize> = HashMap::new();
     for phase in outside.iter().flatten() {
         *holders.entry(phase).or_default() += 1;
     }
-    let mut useful = vec![true; basis.len()];
+    let mut useful = allowed.to_vec();
     loop {
         let lone = |k: usize| outside[k].iter().any(|phase| holders[phase] == 1);
         let dropped: Vec<usize> = (0..basis.len()).filter(|&k| useful[k] && lone(k)).collect();
@@ -462,6 +522,29 @@ mod tests {
         // No combination: x alone needs F without its y, and G's p_x is not in the target.
         assert_eq!(express_in("x", &functions), None);
         assert_eq!(express_in("x + p_y^7", &functions), None);
+    }
+
+    /// Of functions that depend on one another (`Z = Re Z + i Im Z`), a combination of as few
+    /// as leaving each out in turn gives: `p_x` is `Im Z`, not `−i Z + i Re Z`, which the
+    /// first solve finds.
+    #[test]
+    fn combinations_take_the_fewest_of_dependent_functions() {
+        let rotor = harmonic_rotor();
+        let c = |s: &str| rotor.parse(s).expect("a coefficient");
+        let functions = [("Z", "x + i*p_x"), ("ReZ", "x"), ("ImZ", "p_x")];
+        assert_eq!(
+            express_in("omega*p_x", &functions),
+            Some(vec![("ImZ".into(), c("omega"))])
+        );
+        assert_eq!(
+            express_in("2*x + 2*i*p_x", &functions),
+            Some(vec![("Z".into(), c("2"))])
+        );
+        // Of two as few, the one without the earlier function (left out first).
+        assert_eq!(
+            express_in("x + 2*i*p_x", &functions),
+            Some(vec![("ReZ".into(), c("1")), ("ImZ".into(), c("2*i"))])
+        );
     }
 
     /// A combination whose coefficient has a denominator writes it last, so that the cell
