@@ -5,10 +5,10 @@
 use trigpoly::Style;
 
 use super::tex::{markup, math, relation, sentence, text};
-use super::text::{number, point, upper_bound};
+use super::text::{number, point, upper_bound, wrap};
 use super::{table_list, verdict, Options};
 use crate::report::{
-    counted, ClaimKind, ClaimResult, Entry, Equations, ProofResult, RankResult, Report,
+    counted, ClaimKind, ClaimResult, Entry, Equations, Excerpt, ProofResult, RankResult, Report,
     SummaryKind, TableResult, TowerResult,
 };
 
@@ -86,6 +86,9 @@ const ROW: usize = 55;
 const LONG_LHS: usize = 25;
 /// How wide the formula of a claim's row may be (the verdict takes the rest of the line).
 const CLAIM_ROW: usize = 30;
+
+/// The characters of prose in a row of an aligned display: what a cut expression leaves out.
+const EXCERPT_ROW: usize = 50;
 
 /// A rough width of LaTeX math as printed: characters that are not markup.
 fn visual_width(s: &str) -> usize {
@@ -244,10 +247,8 @@ fn claim_rows(c: &ClaimResult) -> Vec<String> {
     if let Some(r) = &c.residual {
         rows.extend(long_rows(r"\text{residual}", "=", r, CLAIM_ROW));
         if let Some(e) = &c.excerpt {
-            rows.push(format!(
-                r"&\quad + \dots \quad \text{{({})}}",
-                text(&e.describe())
-            ));
+            rows.push(r"&\quad + \dots".into());
+            rows.extend(excerpt_rows(e));
         }
     }
     if let (ClaimKind::Nonvanishing, Some(w)) = (c.kind, &c.witness) {
@@ -265,6 +266,15 @@ fn claim_rows(c: &ClaimResult) -> Vec<String> {
         rows.push(format!(r"&\text{{{}}}", text(n)));
     }
     rows
+}
+
+/// What an expression cut to its leading part leaves out, in rows of prose that fit the page
+/// (one row of it was set 259 pt wider than the page).
+fn excerpt_rows(e: &Excerpt) -> Vec<String> {
+    wrap(&format!("({})", e.describe()), EXCERPT_ROW, "")
+        .iter()
+        .map(|line| format!(r"&\quad \text{{{}}}", text(line)))
+        .collect()
 }
 
 fn entry(out: &mut Vec<String>, e: &Entry) {
@@ -343,7 +353,7 @@ fn table_as_list(out: &mut Vec<String>, t: &TableResult, head: &[String], cells:
         let first = format!(r"\{{{}, {}\}} &= ", head[a], head[b]);
         rows.extend(broken_rows(&first, cell, ROW));
         if let Some(e) = t.excerpts.get(&(a, b)) {
-            rows.push(format!(r"&\quad \text{{({})}}", text(&e.describe())));
+            rows.extend(excerpt_rows(e));
         }
     }
     if rows.is_empty() {

@@ -1779,6 +1779,15 @@ fn cli_long_residual_shows_its_leading_terms() {
         "{text}"
     );
     assert_eq!(text.matches(" + …").count(), 2, "{text}");
+    // In LaTeX, what is left out is said in rows of prose that fit the page (one row of it
+    // was set 259 pt wider).
+    let latex = stdout(&superint_exits(
+        &["check", file, "--no-timings", "--format", "latex"],
+        1,
+    ));
+    assert_eq!(latex.matches(r"&\quad + \dots").count(), 2, "{latex}");
+    assert!(latex.contains("its first 100 of 1001 terms"), "{latex}");
+    compile_within(&latex, 1.0);
     let json = |extra: &[&str]| -> Value {
         let args = [&["check", file, "--format", "json"], extra].concat();
         serde_json::from_str(&stdout(&superint_exits(&args, 1))).expect("JSON")
@@ -1886,6 +1895,7 @@ fn cli_long_table_entry_shows_its_leading_terms() {
     ));
     assert!(latex.contains(r"+ \dots"), "{latex}");
     assert!(latex.contains("its first 100 of 364 terms"), "{latex}");
+    compile_within(&latex, 1.0);
     // JSON: the entries are the leading parts, which parse back, and say so.
     let json = |extra: &[&str]| -> Value {
         let args = [&["table", file, "--format", "json"], extra].concat();
