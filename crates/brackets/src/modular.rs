@@ -174,54 +174,39 @@ impl Field for Fp {
     }
 }
 
-impl Field for Rational {
-    fn zero() -> Self {
-        Rational::zero()
-    }
-    fn one() -> Self {
-        Rational::one()
-    }
-    fn is_zero(&self) -> bool {
-        Rational::is_zero(self)
-    }
-    fn add(&self, other: &Self) -> Self {
-        self + other
-    }
-    fn sub(&self, other: &Self) -> Self {
-        self - other
-    }
-    fn mul(&self, other: &Self) -> Self {
-        self * other
-    }
-    fn inv(&self) -> Self {
-        self.try_inv().expect("inverse of zero in Q")
-    }
+/// `Field` for an exact number type of `trigpoly` by its own operators: `Q` ([`Rational`]) and
+/// `Q(i)` ([`GaussianRational`], for solves whose coefficients are complex, a bracket table's
+/// combinations).
+macro_rules! exact_field {
+    ($t:ty, $one:expr, $name:literal) => {
+        impl Field for $t {
+            fn zero() -> Self {
+                <$t>::default()
+            }
+            fn one() -> Self {
+                $one
+            }
+            fn is_zero(&self) -> bool {
+                <$t>::is_zero(self)
+            }
+            fn add(&self, other: &Self) -> Self {
+                self + other
+            }
+            fn sub(&self, other: &Self) -> Self {
+                self - other
+            }
+            fn mul(&self, other: &Self) -> Self {
+                self * other
+            }
+            fn inv(&self) -> Self {
+                self.try_inv().expect(concat!("inverse of zero in ", $name))
+            }
+        }
+    };
 }
 
-/// Q(i), for solves whose coefficients are complex (a bracket table's combinations).
-impl Field for GaussianRational {
-    fn zero() -> Self {
-        GaussianRational::default()
-    }
-    fn one() -> Self {
-        GaussianRational::from(1)
-    }
-    fn is_zero(&self) -> bool {
-        GaussianRational::is_zero(self)
-    }
-    fn add(&self, other: &Self) -> Self {
-        self + other
-    }
-    fn sub(&self, other: &Self) -> Self {
-        self - other
-    }
-    fn mul(&self, other: &Self) -> Self {
-        self * other
-    }
-    fn inv(&self) -> Self {
-        self.try_inv().expect("inverse of zero in Q(i)")
-    }
-}
+exact_field!(Rational, Rational::one(), "Q");
+exact_field!(GaussianRational, GaussianRational::from(1), "Q(i)");
 
 /// The rational `r/s` with `|r|, s ≤ √(p/2)` and `r ≡ a·s (mod p)`, if there is one (it is then
 /// unique): Wang's rational reconstruction by the extended Euclidean algorithm.
