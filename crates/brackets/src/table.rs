@@ -360,16 +360,7 @@ fn solve_combination(
     // of the target.
     let nus: Vec<(usize, BTreeSet<Vec<i64>>)> = useful
         .into_iter()
-        .map(|k| {
-            let mut nus = BTreeSet::new();
-            for u in basis[k].terms() {
-                let (uphase, uparam) = split(&u.exponents());
-                for tparam in target_params.get(&uphase).into_iter().flatten() {
-                    nus.insert(tparam.iter().zip(&uparam).map(|(a, b)| a - b).collect());
-                }
-            }
-            (k, nus)
-        })
+        .map(|k| (k, shifts_onto(&basis[k], &target_params, split)))
         .collect();
     // The columns are held at once, and reduced: together they are held to the term limit,
     // as one result is (a bracket of 10⁶ terms and a function of 7·10⁵ that it spans took
@@ -430,6 +421,23 @@ fn solve_combination(
         coeffs[*k] = coeffs[*k].checked_add(&Expr::monomial(&vars, xj, &powers)?)?;
     }
     Ok(Some(Combination { coeffs, unique }))
+}
+
+/// The parameter monomials `ν` (as exponents) that carry a term of `f` onto a term of the
+/// target, whose parameter parts are given by phase-space part.
+fn shifts_onto(
+    f: &Expr,
+    target: &HashMap<Vec<i64>, Vec<Vec<i64>>>,
+    split: impl Fn(&[i64]) -> (Vec<i64>, Vec<i64>),
+) -> BTreeSet<Vec<i64>> {
+    let mut nus = BTreeSet::new();
+    for u in f.terms() {
+        let (uphase, uparam) = split(&u.exponents());
+        for tparam in target.get(&uphase).into_iter().flatten() {
+            nus.insert(tparam.iter().zip(&uparam).map(|(a, b)| a - b).collect());
+        }
+    }
+    nus
 }
 
 /// The functions `F_k` of those `allowed` that may carry a nonzero coefficient in
