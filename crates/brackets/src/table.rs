@@ -490,6 +490,7 @@ fn useful_functions(
 mod tests {
     use super::{express, latex_name, BracketTable, FunctionName};
     use crate::systems::harmonic_rotor;
+    use proptest::prelude::*;
     use trigpoly::{Expr, Style};
 
     /// `express` with the rotor's functions written out, as `(name, value)`.
@@ -530,6 +531,77 @@ mod tests {
         // No combination: x alone needs F without its y, and G's p_x is not in the target.
         assert_eq!(express_in("x", &functions), None);
         assert_eq!(express_in("x + p_y^7", &functions), None);
+    }
+
+    /// A term `c x^a y^b p_x^c p_y^d M^e ω^f` as text, with small exponents (those of the
+    /// parameters Laurent).
+    fn term() -> impl Strategy<Value = String> {
+        (
+            prop_oneof![-3i64..0, 1i64..4],
+            proptest::collection::vec(0i64..3, 4),
+            proptest::collection::vec(-1i64..2, 2),
+        )
+            .prop_map(|(c, phase, params)| {
+                let names = ["x", "y", "p_x", "p_y", "M", "omega"];
+                let factors: Vec<String> = names
+                    .iter()
+                    .zip(phase.iter().chain(&params))
+                    .map(|(n, e)| format!("{n}^({e})"))
+                    .collect();
+                format!("({c})*{}", factors.join("*"))
+            })
+    }
+
+    /// A function of one to four terms, as text.
+    fn function() -> impl Strategy<Value = String> {
+        proptest::collection::vec(term(), 1..5).prop_map(|t| t.join(" + "))
+    }
+
+    /// A coefficient: zero, or one term `c M^e ω^f` as text.
+    fn coefficient() -> impl Strategy<Value = String> {
+        prop_oneof![
+            1 => Just("0".to_string()),
+            3 => (prop_oneof![-3i64..0, 1i64..4], -1i64..2, -1i64..2)
+                .prop_map(|(c, e, f)| format!("({c})*M^({e})*omega^({f})")),
+        ]
+    }
+
+    proptest! {
+        #![proptest_config(ProptestConfig::with_cases(300))]
+
+        /// `Σ c_k F_k` with coefficients `c_k` of one term in the parameters (or zero), and no
+        /// term of any `F_k` cancelled, is found as a combination that sums to it exactly.
+        #[test]
+        fn a_combination_without_cancellation_is_found(
+            functions in proptest::collection::vec(function(), 3),
+            coefficients in proptest::collection::vec(coefficient(), 3),
+        ) {
+            let rotor = harmonic_rotor();
+            let parse = |s: &str| rotor.parse(s).expect("well formed");
+            let text: Vec<String> = functions
+                .iter()
+                .zip(&coefficients)
+                .map(|(f, c)| format!("({c})*({f})"))
+                .collect();
+            let target = parse(&text.join(" + "));
+            let terms: usize = functions
+                .iter()
+                .zip(&coefficients)
+                .filter(|(_, c)| *c != "0")
+                .map(|(f, _)| parse(f).len())
+                .sum();
+            prop_assume!(!target.is_zero() && target.len() == terms);
+            let names = ["F", "G", "B"];
+            let named: Vec<(&str, &str)> =
+                names.iter().zip(&functions).map(|(n, f)| (*n, f.as_str())).collect();
+            let found = express_in(&text.join(" + "), &named).expect("a combination");
+            let mut sum = parse("0");
+            for (name, c) in &found {
+                let k = names.iter().position(|n| n == name).expect("a name");
+                sum = sum.checked_add(&c.checked_mul(&parse(&functions[k])).unwrap()).unwrap();
+            }
+            prop_assert_eq!(sum, target);
+        }
     }
 
     /// Of functions that depend on one another (`Z = Re Z + i Im Z`), a combination of as few
