@@ -119,6 +119,8 @@ def main():
     rng = random.Random(args.seed)
     seeds = sorted((ROOT / "systems").glob("*.toml"))
     texts = [p.read_text() for p in seeds]
+    if os.path.exists(args.keep) and not os.path.isdir(args.keep):
+        parser.error(f"--keep {args.keep}: a file is there, not a directory")
     os.makedirs(args.keep, exist_ok=True)
     case = os.path.join(args.keep, "case.toml")
     codes, failures = Counter(), 0
