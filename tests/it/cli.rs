@@ -1897,10 +1897,7 @@ fn cli_long_table_entry_shows_its_leading_terms() {
     assert!(latex.contains("its first 100 of 364 terms"), "{latex}");
     compile_within(&latex, 1.0);
     // JSON: the entries are the leading parts, which parse back, and say so.
-    let json = |extra: &[&str]| -> Value {
-        let args = [&["table", file, "--format", "json"], extra].concat();
-        serde_json::from_str(&stdout(&superint_exits(&args, 0))).expect("JSON")
-    };
+    let json = |extra: &[&str]| crate::superint_json(&[&["table", file], extra].concat());
     let system = superint::system_file::load(
         Path::new(file),
         &superint::system_file::LimitsOverride::default(),
