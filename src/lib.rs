@@ -78,7 +78,8 @@ pub mod prelude {
     };
     pub use crate::render::{render, Format, Options as RenderOptions};
     pub use crate::report::{
-        ClaimResult, Expect, ProofResult, RankResult, Report, TableResult, TowerResult,
+        ClaimOutcome, ClaimResult, Expect, ProofResult, RankResult, Report, TableResult,
+        TowerResult,
     };
     pub use crate::system_file::{
         bracket_report, check_report, expand_report, family_tower_report,

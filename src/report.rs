@@ -251,6 +251,29 @@ pub enum ClaimKind {
     Nonvanishing,
 }
 
+/// What a check of a claim found. Ordered so that the outcome of several checks of one claim
+/// is the greatest: one refuted check refutes it, else one undecided leaves it undecided.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord)]
+pub enum ClaimOutcome {
+    /// `lhs − rhs` is exactly zero (or, for a nonvanishing claim, is not).
+    Proved,
+    /// The check stopped at a limit: neither proved nor refuted.
+    Undecided,
+    /// Not proved: the residual says why.
+    Refuted,
+}
+
+impl ClaimOutcome {
+    /// `proved`, `undecided` or `refuted`, as JSON gives it.
+    pub fn name(self) -> &'static str {
+        match self {
+            ClaimOutcome::Proved => "proved",
+            ClaimOutcome::Undecided => "undecided",
+            ClaimOutcome::Refuted => "refuted",
+        }
+    }
+}
+
 /// A claim of the paper, checked.
 #[derive(Clone, Debug)]
 pub struct ClaimResult {
@@ -279,6 +302,9 @@ pub struct ClaimResult {
     pub witness: Option<Expr>,
     /// For a claim proved or refuted by a derived check (a tower, a proof, a rank), what failed.
     pub note: Option<String>,
+    /// For a claim whose check stopped at a limit (of terms, of term products, of degree), the
+    /// limit's message: the claim is neither proved nor refuted ([`ClaimResult::undecided`]).
+    pub undecided: Option<String>,
     /// When the residual above is a part of a longer one ([`ClaimResult::excerpt_residual`]): how
     /// much of it is shown.
     pub excerpt: Option<Excerpt>,
@@ -347,8 +373,18 @@ impl ClaimResult {
             residual: None,
             witness: None,
             note,
+            undecided: None,
             excerpt: None,
             seconds: 0.0,
+        }
+    }
+
+    /// A claim whose check stopped at a limit, with the limit's message: neither proved nor
+    /// refuted, and so not as expected, whatever it was expected to be.
+    pub fn undecided(id: &str, statement: &str, message: &str) -> Self {
+        ClaimResult {
+            undecided: Some(message.to_string()),
+            ..ClaimResult::derived(id, statement, false, None)
         }
     }
 
@@ -379,7 +415,21 @@ impl ClaimResult {
     /// Whether the outcome is the expected one: proved when expected proved, refuted when
     /// expected refuted.
     pub fn meets_expectation(&self) -> bool {
-        self.proved == (self.expect == Expect::Proved)
+        self.undecided.is_none() && self.proved == (self.expect == Expect::Proved)
+    }
+
+    /// Whether it was refuted: checked, and not proved.
+    pub fn refuted(&self) -> bool {
+        !self.proved && self.undecided.is_none()
+    }
+
+    /// Proved, refuted, or undecided (stopped at a limit).
+    pub fn outcome(&self) -> ClaimOutcome {
+        match (self.proved, &self.undecided) {
+            (_, Some(_)) => ClaimOutcome::Undecided,
+            (true, None) => ClaimOutcome::Proved,
+            (false, None) => ClaimOutcome::Refuted,
+        }
     }
 
     /// Cuts a residual of more than `monomials` monomials outside the angles to the terms of
@@ -417,6 +467,7 @@ impl From<brackets::Verdict> for ClaimResult {
             residual,
             witness: None,
             note: None,
+            undecided: None,
             excerpt: None,
             seconds: v.seconds,
         }
@@ -752,19 +803,28 @@ impl Report {
     /// proved. The paper's ids (`C12`) gather checks across the report; the ids of a check of
     /// system files are their files' own, so the same id in two files is two claims.
     pub fn claim_ids(&self) -> Vec<(String, bool)> {
+        self.claim_outcomes()
+            .into_iter()
+            .map(|(id, outcome)| (id, outcome == ClaimOutcome::Proved))
+            .collect()
+    }
+
+    /// The claim ids in order of first appearance, as [`Report::claim_ids`], each with the
+    /// outcome of its checks: refuted when one was, else undecided when one was, else proved.
+    pub fn claim_outcomes(&self) -> Vec<(String, ClaimOutcome)> {
         let per_file = matches!(self.summary, SummaryKind::Check { .. });
-        let mut out: Vec<(u32, String, bool)> = Vec::new();
+        let mut out: Vec<(u32, String, ClaimOutcome)> = Vec::new();
         for (section, c) in self.claims_by_section() {
             let section = if per_file { section } else { 0 };
             match out
                 .iter_mut()
                 .find(|(s, id, _)| *s == section && *id == c.id)
             {
-                Some((_, _, ok)) => *ok &= c.proved,
-                None => out.push((section, c.id.clone(), c.proved)),
+                Some((_, _, outcome)) => *outcome = (*outcome).max(c.outcome()),
+                None => out.push((section, c.id.clone(), c.outcome())),
             }
         }
-        out.into_iter().map(|(_, id, ok)| (id, ok)).collect()
+        out.into_iter().map(|(_, id, o)| (id, o)).collect()
     }
 
     /// Whether every check was proved.
@@ -867,9 +927,13 @@ impl Report {
             };
             let files = counted(files, "file");
             let count = counted(claims.len(), "claim");
+            let refuted = claims.iter().filter(|(_, c)| c.refuted()).count();
+            let undecided = match claims.len() - proved - refuted {
+                0 => String::new(),
+                n => format!(", {n} undecided"),
+            };
             return format!(
-                "{count} in {files}: {proved} proved, {} refuted; {verdict}{}",
-                claims.len() - proved,
+                "{count} in {files}: {proved} proved, {refuted} refuted{undecided}; {verdict}{}",
                 if timings {
                     format!(" ({:.2} s)", self.seconds)
                 } else {

@@ -54,9 +54,10 @@ impl CheckArgs {
 }
 
 /// Loads every file, checks every claim and prints the report; whether every claim met its
-/// expectation. A file that does not load, or whose check stops (a limit), does not stop the
-/// others: its error goes to stderr (and into the JSON report's `errors`), the others are
-/// checked and printed, and the run ends with an error (exit 2).
+/// expectation. A claim whose check stops at a limit is reported undecided, and the file's
+/// other claims are checked; a file that does not load, or whose check fails otherwise, does
+/// not stop the others. Each such error goes to stderr (and into the JSON report's `errors`),
+/// and the run ends with an error (exit 2).
 pub fn run(job: &CheckJob) -> anyhow::Result<bool> {
     let files = job
         .files
@@ -84,14 +85,33 @@ pub fn run(job: &CheckJob) -> anyhow::Result<bool> {
         format => render(&report, format, &job.output.options),
     };
     emit(&text)?;
-    match errors.len() {
-        0 => Ok(report.all_as_expected()),
-        n => bail!(
-            "{n} of {} not checked (the {} above)",
-            counted(job.files.len(), "file"),
-            if n == 1 { "error" } else { "errors" }
-        ),
+    if errors.is_empty() {
+        return Ok(report.all_as_expected());
     }
+    let undecided = report
+        .claims()
+        .iter()
+        .filter(|c| c.undecided.is_some())
+        .count();
+    let unchecked = errors.len() - undecided;
+    let mut what = Vec::new();
+    if unchecked > 0 {
+        what.push(format!(
+            "{unchecked} of {} not checked",
+            counted(job.files.len(), "file")
+        ));
+    }
+    if undecided > 0 {
+        what.push(format!(
+            "{} undecided, stopped at a limit",
+            counted(undecided, "claim")
+        ));
+    }
+    bail!(
+        "{} (the {} above)",
+        what.join(", "),
+        if errors.len() == 1 { "error" } else { "errors" }
+    )
 }
 
 /// A file's error as the JSON report's `errors` give it.

@@ -5,6 +5,7 @@
 //!   "schema": "superint-report/1",
 //!   "title": string, "subtitle": string,
 //!   "summary": { "claims": int (distinct ids, a file's own in a check), "proved": int, "refuted": int,
+//!                "undecided": int (claims whose check stopped at a limit, none refuted),
 //!                "checks": int, "all_proved": bool,
 //!                "as_expected": int (checks that met their expectation),
 //!                "all_as_expected": bool, "seconds": number | null },
@@ -22,7 +23,9 @@
 //!                          back: `p_theta = I*omega`, with the fixed parameter values a
 //!                          result holds at; null where "ascii" is null),
 //!                 "kind": "identity" | "nonvanishing",
-//!                 "outcome": "proved" | "refuted",
+//!                 "outcome": "proved" | "refuted" | "undecided"   (undecided: its check
+//!                          stopped at a limit, which "undecided" gives, and the report's
+//!                          "errors" with its place),
 //!                 "expect": "proved" | "refuted"   (what the claim is meant to do),
 //!                 "meets_expectation": bool,
 //!                 "residual": ascii | null   (lhs − rhs of a refuted identity, or when
@@ -32,7 +35,9 @@
 //!                          `Options::shown_monomials`: "residual" is then every term of its
 //!                          first "shown_monomials" of "monomials"),
 //!                 "witness": ascii | null    (the nonzero value of a proved nonvanishing),
-//!                 "note": string | null, "seconds": number | null } ],
+//!                 "note": string | null,
+//!                 "undecided": string | null   (the limit's message),
+//!                 "seconds": number | null } ],
 //!   "equations": [ { "section", "caption", "lines": [ { "lhs", "text", "ascii", "latex" } ] } ],
 //!   "tables": [ { "section", "caption" (plain text, as every title and caption: "{A, B} for
 //!                 the harmonic rotor (row A, column B)"), "functions": [ascii names],
@@ -83,8 +88,8 @@ use trigpoly::{Expr, Style, VarKind};
 
 use super::{plain, Options};
 use crate::report::{
-    ClaimKind, ClaimResult, ClosureFacts, Entry, Facts, ParameterFacts, RankResult, Report,
-    SearchFacts,
+    ClaimKind, ClaimOutcome, ClaimResult, ClosureFacts, Entry, Facts, ParameterFacts, RankResult,
+    Report, SearchFacts,
 };
 use brackets::UpperBound;
 
@@ -194,16 +199,17 @@ pub fn value(report: &Report, options: &Options) -> Value {
             }
         }
     }
-    let ids = report.claim_ids();
-    let proved = ids.iter().filter(|(_, ok)| *ok).count();
+    let ids = report.claim_outcomes();
+    let counted = |o: ClaimOutcome| ids.iter().filter(|(_, outcome)| *outcome == o).count();
     json!({
         "schema": SCHEMA,
         "title": plain(&report.title),
         "subtitle": plain(&report.subtitle),
         "summary": {
             "claims": ids.len(),
-            "proved": proved,
-            "refuted": ids.len() - proved,
+            "proved": counted(ClaimOutcome::Proved),
+            "refuted": counted(ClaimOutcome::Refuted),
+            "undecided": counted(ClaimOutcome::Undecided),
             "checks": claims.len(),
             "all_proved": report.all_proved(),
             "as_expected": report.claims().iter().filter(|c| c.meets_expectation()).count(),
@@ -244,7 +250,7 @@ fn claim(c: &ClaimResult, section: u32, seconds: Value) -> Value {
             ClaimKind::Identity => "identity",
             ClaimKind::Nonvanishing => "nonvanishing",
         },
-        "outcome": if c.proved { "proved" } else { "refuted" },
+        "outcome": c.outcome().name(),
         "expect": c.expect.name(),
         "meets_expectation": c.meets_expectation(),
         "residual": c.residual.as_ref().map(|r| r.render(Style::Ascii)),
@@ -254,6 +260,7 @@ fn claim(c: &ClaimResult, section: u32, seconds: Value) -> Value {
         })),
         "witness": c.witness.as_ref().map(|w| w.render(Style::Ascii)),
         "note": c.note,
+        "undecided": c.undecided,
         "seconds": seconds,
     })
 }
@@ -286,7 +293,7 @@ fn rank(r: &RankResult, section: u32) -> Value {
             UpperBound::Size => json!({"kind": "size", "minors": null}),
             UpperBound::VanishingMinors { count } => json!({"kind": "vanishing_minors", "minors": count}),
         },
-        "outcome": if r.claim.proved { "proved" } else { "refuted" },
+        "outcome": r.claim.outcome().name(),
     })
 }
 

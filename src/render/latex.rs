@@ -6,7 +6,7 @@ use trigpoly::Style;
 
 use super::tex::{markup, math, relation, sentence, text};
 use super::text::{number, point, upper_bound, wrap};
-use super::{table_list, verdict, Options};
+use super::{stopped, table_list, verdict, Options};
 use crate::report::{
     counted, ClaimKind, ClaimResult, Entry, Equations, Excerpt, ProofResult, RankResult, Report,
     SummaryKind, TableResult, TowerResult,
@@ -87,8 +87,9 @@ const LONG_LHS: usize = 25;
 /// How wide the formula of a claim's row may be (the verdict takes the rest of the line).
 const CLAIM_ROW: usize = 30;
 
-/// The characters of prose in a row of an aligned display: what a cut expression leaves out.
-const EXCERPT_ROW: usize = 50;
+/// The characters of prose in a row of an aligned display: what a cut expression leaves out,
+/// the limit that stopped a check.
+const PROSE_ROW: usize = 50;
 
 /// A rough width of LaTeX math as printed: characters that are not markup.
 fn visual_width(s: &str) -> usize {
@@ -265,13 +266,21 @@ fn claim_rows(c: &ClaimResult) -> Vec<String> {
     if let Some(n) = &c.note {
         rows.push(format!(r"&\text{{{}}}", text(n)));
     }
+    if let Some(u) = &c.undecided {
+        rows.extend(prose_rows(&stopped(u)));
+    }
     rows
 }
 
 /// What an expression cut to its leading part leaves out, in rows of prose that fit the page
 /// (one row of it was set 259 pt wider than the page).
 fn excerpt_rows(e: &Excerpt) -> Vec<String> {
-    wrap(&format!("({})", e.describe()), EXCERPT_ROW, "")
+    prose_rows(&format!("({})", e.describe()))
+}
+
+/// A sentence under a claim or table, in rows of prose that fit the page.
+fn prose_rows(sentence: &str) -> Vec<String> {
+    wrap(sentence, PROSE_ROW, "")
         .iter()
         .map(|line| format!(r"&\quad \text{{{}}}", text(line)))
         .collect()

@@ -4,7 +4,7 @@
 use trigpoly::Style;
 
 use super::text::{number, point, upper_bound};
-use super::{verdict, Options, SHOWN_MONOMIALS};
+use super::{stopped, verdict, Options, SHOWN_MONOMIALS};
 use crate::report::{
     counted, ClaimKind, ClaimResult, Entry, Equations, ProofResult, RankResult, Report,
     TableResult, TowerResult,
@@ -100,6 +100,9 @@ fn claim(c: &ClaimResult) -> String {
     }
     if let Some(n) = &c.note {
         line.push_str(&format!(" ({n})"));
+    }
+    if let Some(u) = &c.undecided {
+        line.push_str(&format!(" ({})", stopped(u)));
     }
     line
 }

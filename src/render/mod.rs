@@ -191,14 +191,24 @@ pub(crate) fn pad(s: &str, w: usize) -> String {
 }
 
 /// The verdict on a claim, as its tag reads: `proved`, `REFUTED`, and for a claim expected to
-/// be refuted `refuted, as expected` or `PROVED, expected refuted`.
+/// be refuted `refuted, as expected` or `PROVED, expected refuted`; `UNDECIDED` for a claim whose
+/// check stopped at a limit.
 pub(crate) fn verdict(c: &ClaimResult) -> &'static str {
+    if c.undecided.is_some() {
+        return "UNDECIDED";
+    }
     match (c.proved, c.expect) {
         (true, Expect::Proved) => "proved",
         (false, Expect::Proved) => "REFUTED",
         (false, Expect::Refuted) => "refuted, as expected",
         (true, Expect::Refuted) => "PROVED, expected refuted",
     }
+}
+
+/// What an undecided claim's report says under it: `stopped at a limit: the result would have
+/// more than 1000 terms (the term limit)`.
+pub(crate) fn stopped(message: &str) -> String {
+    format!("stopped at a limit: {message}")
 }
 
 /// `p_θ = Iω` → ` at p_θ = Iω`; nothing without a condition.

@@ -4,7 +4,7 @@ use brackets::UpperBound;
 use rayon::prelude::*;
 use trigpoly::{GaussianRational, Style, VarKind};
 
-use super::{condition_suffix, pad, plain, table_list, verdict, width, Options};
+use super::{condition_suffix, pad, plain, stopped, table_list, verdict, width, Options};
 use crate::report::{
     counted, ClaimKind, ClaimResult, Entry, Equation, Equations, ProofResult, RankResult, Report,
     TableResult, TowerResult,
@@ -285,6 +285,9 @@ fn verdict_line(out: &mut Vec<String>, c: &ClaimResult) {
     }
     if let Some(n) = &c.note {
         out.push(format!("      {n}"));
+    }
+    if let Some(u) = &c.undecided {
+        out.extend(wrap(&format!("      {}", stopped(u)), WRAP, "        "));
     }
 }
 

@@ -631,6 +631,16 @@ pub(crate) fn parse_assignments(
     Ok(assignments)
 }
 
+impl ClaimSpec {
+    /// The claim reported undecided: its check stopped at a limit, whose message is given.
+    pub(crate) fn undecided(&self, message: &str) -> ClaimResult {
+        ClaimResult::undecided(&self.id, &self.statement, message)
+            .written(&self.written)
+            .at(self.condition.as_ref().map(Condition::forms))
+            .expecting(self.expect)
+    }
+}
+
 impl LoadedSystem {
     /// Computes a claim: parses its sides (expanding brackets and families), applies the
     /// condition, and proves or refutes it; timed.
@@ -665,6 +675,7 @@ impl LoadedSystem {
                     residual,
                     witness: None,
                     note: None,
+                    undecided: None,
                     excerpt: None,
                     seconds: start.elapsed().as_secs_f64(),
                 })))

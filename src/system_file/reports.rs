@@ -89,7 +89,7 @@ impl LoadedSystem {
 
 /// Checks every claim of every file: one section per file (its source, its Hamiltonian, its
 /// claims proved or refuted, ranks with their certificates). The first error, of any file,
-/// is the answer; [`check_each`] goes on past it.
+/// is the answer, a limit that a claim reaches included; [`check_each`] goes on past it.
 ///
 /// It takes a slice or vector of loaded systems, or references to them: `check_report([&file])`.
 pub fn check_report<'a>(
@@ -98,35 +98,76 @@ pub fn check_report<'a>(
     let start = Instant::now();
     let sections = files
         .into_iter()
-        .map(LoadedSystem::checked_section)
+        .map(|f| f.checked_section(None))
         .collect::<Result<Vec<_>, _>>()?;
     Ok(checked_files(sections, start))
 }
 
-/// Checks every claim of every file that loaded, as [`check_report`] does, and goes on past a
-/// file that did not load or whose check failed (a limit, say): the report holds the files
-/// checked, and the errors of the others come beside it, in order, for the caller to show.
+/// Checks every claim of every file that loaded, as [`check_report`] does, and goes on past
+/// what stops a check: a claim that reaches a limit (of terms, of term products, of degree) is
+/// reported undecided ([`ClaimResult::undecided`](crate::report::ClaimResult::undecided)) and
+/// the file's other claims are checked; a file that did not load, or whose check failed
+/// otherwise, is left out of the report. The errors, each limit's and each such file's, come
+/// beside the report, in order, for the caller to show.
+///
+/// ```
+/// use superint::report::ClaimOutcome;
+/// use superint::system_file::{check_each, load_str, ErrorKind, LimitsOverride};
+///
+/// let text = r#"
+/// name = "a free particle"
+/// hamiltonian = "p_x^2/2"
+/// [phase_space]
+/// coordinates = ["x"]
+/// [[claim]]
+/// id = "long"
+/// claim = "{x, (1 + x + p_x)^40} = 0"
+/// [[claim]]
+/// id = "momentum"
+/// claim = "{p_x, H} = 0"
+/// "#;
+/// let limits = LimitsOverride { max_terms: Some(100), ..LimitsOverride::default() };
+/// let (report, errors) = check_each(vec![load_str("free.toml", text, &limits)]);
+/// assert_eq!(report.claim_outcomes(), [
+///     ("long".to_string(), ClaimOutcome::Undecided),
+///     ("momentum".to_string(), ClaimOutcome::Proved),
+/// ]);
+/// assert_eq!((errors.len(), errors[0].kind, errors[0].line_col()), (1, ErrorKind::Limit, Some((8, 14))));
+/// ```
 pub fn check_each(files: Vec<Result<LoadedSystem, FileError>>) -> (Report, Vec<FileError>) {
     let start = Instant::now();
     let mut sections = Vec::new();
     let mut errors = Vec::new();
     for file in files {
-        match file.and_then(|f| f.checked_section()) {
+        let mut limits = Vec::new();
+        match file.and_then(|f| f.checked_section(Some(&mut limits))) {
             Ok(section) => sections.push(section),
             Err(e) => errors.push(e),
         }
+        errors.append(&mut limits);
     }
     (checked_files(sections, start), errors)
 }
 
 impl LoadedSystem {
-    /// The section of the file's claims, checked.
-    fn checked_section(&self) -> Result<(Section, String), FileError> {
+    /// The section of the file's claims, checked. With `undecided`, a claim whose check
+    /// reaches a limit is reported undecided and its error goes there; without, that error
+    /// is the answer.
+    fn checked_section(
+        &self,
+        mut undecided: Option<&mut Vec<FileError>>,
+    ) -> Result<(Section, String), FileError> {
         let mut entries = self.preamble();
         for claim in &self.claims {
-            entries.push(match self.check_claim(claim)? {
-                CheckedClaim::Identity(c) => Entry::Claim(*c),
-                CheckedClaim::Rank(r) => Entry::Rank(*r),
+            entries.push(match (self.check_claim(claim), undecided.as_deref_mut()) {
+                (Ok(CheckedClaim::Identity(c)), _) => Entry::Claim(*c),
+                (Ok(CheckedClaim::Rank(r)), _) => Entry::Rank(*r),
+                (Err(e), Some(errors)) if e.kind == ErrorKind::Limit => {
+                    let result = claim.undecided(&e.message);
+                    errors.push(e);
+                    Entry::Claim(result)
+                }
+                (Err(e), _) => return Err(e),
             });
         }
         let section = Section {

@@ -208,7 +208,7 @@ fn pdflatex_available() -> bool {
 
 /// Compiles with `pdflatex` when it is installed (CI installs it), and fails on an error or on
 /// a line set wider than the page by more than `slack_pt` points.
-fn compile_within(doc: &str, slack_pt: f64) {
+pub(crate) fn compile_within(doc: &str, slack_pt: f64) {
     if !pdflatex_available() {
         return;
     }

@@ -960,7 +960,14 @@ fn bad_inputs_get_file_line_column_and_exit_2() {
         let o = superint_in(&dir, &args);
         let stderr = text(&o.stderr);
         assert_eq!(o.status.code(), Some(2), "{name}: {stderr}");
-        assert!(text(&o.stdout).is_empty(), "{name} printed to stdout");
+        // A claim past a limit is reported undecided, beside the file's other claims; any
+        // other bad input prints nothing.
+        let stdout = text(&o.stdout);
+        let undecided = args[0] == "check" && expected.contains("limit");
+        match undecided {
+            true => assert!(stdout.contains("UNDECIDED]"), "{name}: {stdout}"),
+            false => assert!(stdout.is_empty(), "{name} printed to stdout"),
+        }
         assert!(!stderr.contains("panicked"), "{name}: {stderr}");
         if !stderr.starts_with(&format!("superint: error: {expected}")) {
             wrong.push(format!("{name}: expected {expected:?}, got\n{stderr}"));
@@ -2142,10 +2149,15 @@ fn check_goes_on_past_a_bad_file() {
         stdout.contains("Kepler problem (systems/kepler.toml)"),
         "{stdout}"
     );
+    // The claim past the limit is undecided; the file's section is reported.
     assert!(
-        stdout.ends_with("10 claims in 1 file: 7 proved, 3 refuted; all as expected\n"),
+        stdout.ends_with(
+            "11 claims in 2 files: 7 proved, 3 refuted, 1 undecided; 1 NOT as expected: \
+             #1 (section 2)\n"
+        ),
         "{stdout}"
     );
+    assert!(stdout.contains("[#1 UNDECIDED]"), "{stdout}");
     assert!(
         stderr.contains("bad.toml:2:22: '/2m' is ambiguous"),
         "{stderr}"
@@ -2155,7 +2167,10 @@ fn check_goes_on_past_a_bad_file() {
         "{stderr}"
     );
     assert!(
-        stderr.ends_with("superint: error: 2 of 3 files not checked (the errors above)\n"),
+        stderr.ends_with(
+            "superint: error: 1 of 3 files not checked, 1 claim undecided, stopped at a limit \
+             (the errors above)\n"
+        ),
         "{stderr}"
     );
     let o = superint_in(
@@ -2192,6 +2207,137 @@ fn check_goes_on_past_a_bad_file() {
     // Only bad files: nothing on stdout, the last error is the run's.
     let o = superint_in(root(), &["check", bad]);
     assert_eq!((o.status.code(), o.stdout.is_empty()), (Some(2), true));
+}
+
+/// A claim whose check reaches a limit is reported undecided, in every format, and the
+/// file's other claims are still checked: proved, refuted, and a rank. The run ends with the
+/// limit's error (exit 2), which says where the claim is. With the limit raised, the same
+/// claim is decided (refuted: the bracket is not zero), so the limit alone left it open.
+#[test]
+fn check_reports_a_claim_past_a_limit_undecided() {
+    let dir = scratch("claim-past-a-limit");
+    let file = dir.join("limit.toml");
+    std::fs::write(
+        &file,
+        "name = \"limit test\"\n\
+         hamiltonian = \"(p_x^2 + p_y^2)/2 + omega^2*(x^2 + y^2)/2\"\n\
+         [phase_space]\ncoordinates = [\"x\", \"y\"]\nparameters = [\"omega\"]\n\
+         [[function]]\nname = \"L\"\nvalue = \"x*p_y - y*p_x\"\n\
+         [[claim]]\nid = \"big\"\nclaim = \"{L, (1 + x + y + p_x + p_y)^20} = 0\"\n\
+         [[claim]]\nid = \"su2\"\nclaim = \"{L, H} = 0\"\n\
+         [[claim]]\nid = \"false\"\nclaim = \"{x, H} = 0\"\nexpect = \"refuted\"\n\
+         [[claim]]\nid = \"rank\"\nclaim = \"rank(H, L) = 2\"\n",
+    )
+    .expect("write limit.toml");
+    let file = file.to_str().expect("a path");
+    let check = |extra: &[&str]| {
+        let args = [
+            &["check", file, "--no-timings", "--max-terms", "1000"],
+            extra,
+        ]
+        .concat();
+        superint_in(root(), &args)
+    };
+    let o = check(&[]);
+    let (stdout, stderr) = (text(&o.stdout), text(&o.stderr));
+    assert_eq!(o.status.code(), Some(2), "{stderr}");
+    for said in [
+        "[big UNDECIDED]",
+        "      stopped at a limit: the result would have more than 1000 terms (the term limit)",
+        "[su2 proved]",
+        "[false refuted, as expected]",
+        "[rank proved]",
+        "4 claims in 1 file: 2 proved, 1 refuted, 1 undecided; 1 NOT as expected: big\n",
+    ] {
+        assert!(stdout.contains(said), "{said}\n{stdout}");
+    }
+    assert!(
+        stderr.starts_with(&format!(
+            "superint: error: {file}:11:14: the result would have more than 1000 terms"
+        )),
+        "{stderr}"
+    );
+    assert!(
+        stderr.ends_with(
+            "superint: error: 1 claim undecided, stopped at a limit (the error above)\n"
+        ),
+        "{stderr}"
+    );
+    // JSON: the outcome, the limit's message, the summary's count and the error's place.
+    let o = check(&["--format", "json"]);
+    assert_eq!(o.status.code(), Some(2));
+    let v: Value = serde_json::from_slice(&o.stdout).expect("one JSON document");
+    let outcomes: Vec<(&str, &str)> = (v["claims"].as_array().expect("claims").iter())
+        .map(|c| (c["id"].as_str().unwrap(), c["outcome"].as_str().unwrap()))
+        .collect();
+    assert_eq!(
+        outcomes,
+        [
+            ("big", "undecided"),
+            ("su2", "proved"),
+            ("false", "refuted"),
+            ("rank", "proved")
+        ]
+    );
+    let big = &v["claims"][0];
+    assert_eq!(big["meets_expectation"], false);
+    assert!(
+        (big["undecided"].as_str().unwrap()).starts_with("the result would have more than 1000"),
+        "{big}"
+    );
+    assert_eq!(v["claims"][1]["undecided"], Value::Null);
+    let summary = &v["summary"];
+    assert_eq!(
+        (
+            &summary["proved"],
+            &summary["refuted"],
+            &summary["undecided"]
+        ),
+        (&Value::from(2), &Value::from(1), &Value::from(1))
+    );
+    let error = &v["errors"][0];
+    assert_eq!(
+        (&error["line"], &error["column"], &error["kind"]),
+        (&Value::from(11), &Value::from(14), &Value::from("limit"))
+    );
+    // Markdown and LaTeX give the verdict and the limit too.
+    for format in ["markdown", "latex"] {
+        let o = check(&["--format", format]);
+        let out = text(&o.stdout);
+        assert_eq!(o.status.code(), Some(2), "{format}");
+        assert!(out.contains("big UNDECIDED"), "{out}");
+        assert!(
+            out.contains("stopped at a limit: the result would have"),
+            "{out}"
+        );
+        if format == "latex" {
+            crate::cli::compile_within(&out, 1.0);
+        }
+    }
+    // Raised, the limit leaves the claim decided: refuted, since {L, ·} of that power is not
+    // zero, and so not as expected (exit 1).
+    let o = superint_in(root(), &["check", file, "--no-timings"]);
+    let stdout = text(&o.stdout);
+    assert_eq!(o.status.code(), Some(1), "{}", text(&o.stderr));
+    assert!(stdout.contains("[big REFUTED]"), "{stdout}");
+    assert!(!stdout.contains("UNDECIDED"), "{stdout}");
+}
+
+/// `check_report`, the library's strict check, answers with the first limit a claim reaches.
+#[test]
+fn check_report_answers_with_a_claims_limit() {
+    let text = "name = \"free\"\nhamiltonian = \"p_x^2/2\"\n[phase_space]\ncoordinates = [\"x\"]\n\
+                [[claim]]\nclaim = \"{p_x, H} = 0\"\n[[claim]]\nclaim = \"(x + p_x)^20 = 0\"\n";
+    let limits = superint::system_file::LimitsOverride {
+        max_terms: Some(10),
+        ..Default::default()
+    };
+    let file = superint::system_file::load_str("free.toml", text, &limits).expect("loads");
+    let err = superint::system_file::check_report([&file]).expect_err("a limit");
+    assert_eq!(
+        (err.kind, err.line_col()),
+        (superint::system_file::ErrorKind::Limit, Some((8, 10)))
+    );
 }
 
 /// `table` takes a family instance written with braces, as every other command does.
