@@ -255,8 +255,24 @@ pub fn express(
             ),
         };
     let every = vec![true; basis.len()];
-    let Some(mut found) = solve_combination(&cleared_target, &cleared_basis, &every)? else {
-        return Ok(None);
+    let solve = |allowed: &[bool], reach| {
+        solve_combination(&cleared_target, &cleared_basis, allowed, reach)
+    };
+    // A combination whose columns cancel outside the bracket is taken when it reads better
+    // than the bracket: fewer functions than the bracket has terms (`{F1, L} = Mgx`, not
+    // `−2 G1 + 2 G1'`), each with a polynomial coefficient (when functions differ by a
+    // coordinate times a parameter, `G1' = G1 + Mgx/2`, most brackets are combinations with
+    // that parameter in a denominator).
+    // It takes two functions at least, which the bracket must outnumber in terms.
+    let (mut found, reach) = match solve(&every, Reach::Target)? {
+        Ok(found) => (found, Reach::Target),
+        Err(Miss::Ansatz) if target.len() > 2 => match solve(&every, Reach::Outside)? {
+            Ok(found) if found.support() < target.len() && found.is_polynomial() => {
+                (found, Reach::Outside)
+            }
+            _ => return Ok(None),
+        },
+        Err(_) => return Ok(None),
     };
     // Of dependent functions (`K`, `Re K`, `Im K`), a combination of fewer: each function of
     // the combination left out in turn while one without it, of no more functions, exists,
@@ -268,8 +284,13 @@ pub fn express(
                 continue;
             }
             allowed[k] = false;
-            match solve_combination(&cleared_target, &cleared_basis, &allowed)? {
-                Some(other) if other.support() <= found.support() => found = other,
+            match solve(&allowed, reach)? {
+                Ok(other)
+                    if other.support() <= found.support()
+                        && (reach == Reach::Target || other.is_polynomial()) =>
+                {
+                    found = other
+                }
                 _ => allowed[k] = true,
             }
         }
@@ -308,16 +329,42 @@ impl Combination {
     fn support(&self) -> usize {
         self.coeffs.iter().filter(|c| !c.is_zero()).count()
     }
+
+    /// Whether every coefficient is a polynomial in the parameters: no negative exponent.
+    fn is_polynomial(&self) -> bool {
+        (self.coeffs.iter().flat_map(|c| c.terms())).all(|t| t.exponents().iter().all(|&e| e >= 0))
+    }
+}
+
+/// Why a solve found no combination.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+enum Miss {
+    /// A phase-space monomial of the target is in no function that can take part: no column
+    /// of any reach meets it.
+    Unmet,
+    /// The columns of the reach asked for span no combination.
+    Ansatz,
+}
+
+/// Which columns `ν·F_k` a solve takes.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+enum Reach {
+    /// Those with a term on a term of the target: enough unless the columns' terms must cancel
+    /// outside the target.
+    Target,
+    /// Those too that cancel another column's terms outside the target ([`cancel_outside`]).
+    Outside,
 }
 
 /// Coefficients `c_k`, each a polynomial in the parameters and zero where `allowed` is false,
 /// with `Σ c_k f_k = target` as polynomials whose monomials are independent (no denominator
-/// atoms), found by an exact linear solve; `None` when the ansatz holds none.
+/// atoms), found by an exact linear solve; else why there is none.
 fn solve_combination(
     target: &Expr,
     basis: &[Expr],
     allowed: &[bool],
-) -> Result<Option<Combination>, EngineError> {
+    reach: Reach,
+) -> Result<Result<Combination, Miss>, EngineError> {
     let vars = target.vars().clone();
     let is_param: Vec<bool> = vars
         .vars()
@@ -354,11 +401,11 @@ fn solve_combination(
         .map(|(phase, _)| phase)
         .collect();
     if met.len() < target_params.len() {
-        return Ok(None);
+        return Ok(Err(Miss::Unmet));
     }
     // Candidate columns ν·F_k: the parameter monomials ν that carry a term of `F_k` onto one
     // of the target.
-    let nus: Vec<(usize, BTreeSet<Vec<i64>>)> = useful
+    let mut nus: Vec<(usize, BTreeSet<Vec<i64>>)> = useful
         .into_iter()
         .map(|k| (k, shifts_onto(&basis[k], &target_params, split)))
         .collect();
@@ -372,6 +419,12 @@ fn solve_combination(
         .sum();
     if held > limit {
         return Err(AlgebraError::TooManyTerms { limit }.into());
+    }
+    if reach == Reach::Outside
+        && !cancel_outside(basis, &mut nus, &target_params, split, limit - held)
+    {
+        // No column beyond the target's: the solve would be the one already made.
+        return Ok(Err(Miss::Ansatz));
     }
     let mut columns: Vec<(usize, Vec<i64>, Expr)> = Vec::new();
     for (k, nus) in nus {
@@ -404,7 +457,7 @@ fn solve_combination(
         .map(|t| rows.get(&t.exponents()).map(|&r| (r, t.coeff())))
         .collect::<Option<SparseVec<_>>>()
     else {
-        return Ok(None);
+        return Ok(Err(Miss::Ansatz));
     };
     let mut echelon = Echelon::new(rows.len());
     let mut unique = true;
@@ -412,7 +465,7 @@ fn solve_combination(
         unique &= echelon.insert(j, v).is_none();
     }
     let Some(x) = echelon.express(&target) else {
-        return Ok(None);
+        return Ok(Err(Miss::Ansatz));
     };
     let mut coeffs: Vec<Expr> = vec![Expr::zero(&vars); basis.len()];
     for (j, xj) in x {
@@ -420,7 +473,7 @@ fn solve_combination(
         let powers: Vec<_> = vars.vars().zip(nu.iter().copied()).collect();
         coeffs[*k] = coeffs[*k].checked_add(&Expr::monomial(&vars, xj, &powers)?)?;
     }
-    Ok(Some(Combination { coeffs, unique }))
+    Ok(Ok(Combination { coeffs, unique }))
 }
 
 /// The parameter monomials `ν` (as exponents) that carry a term of `f` onto a term of the
@@ -438,6 +491,71 @@ fn shifts_onto(
         }
     }
     nus
+}
+
+/// Adds the shifts that let the columns' terms outside the target cancel, and says whether it
+/// added any: a term of `ν·F_k` at a phase-space monomial the target lacks is met by each
+/// other function with a term there, under the shift that carries that term onto it
+/// (`M y = M F2 − M F1` for `F1 = x`, `F2 = x + y`: `F1` meets no term of `M y`, but `M F2`'s
+/// `M x`). The shifts found are followed in turn, as many rounds as there are functions, while
+/// the new columns stay within `budget` terms.
+fn cancel_outside(
+    basis: &[Expr],
+    nus: &mut [(usize, BTreeSet<Vec<i64>>)],
+    target: &HashMap<Vec<i64>, Vec<Vec<i64>>>,
+    split: impl Fn(&[i64]) -> (Vec<i64>, Vec<i64>),
+    mut budget: usize,
+) -> bool {
+    // Each function's terms outside the target, and by phase-space monomial who has them.
+    let outside: Vec<Vec<(Vec<i64>, Vec<i64>)>> = nus
+        .iter()
+        .map(|(k, _)| {
+            basis[*k]
+                .terms()
+                .map(|u| split(&u.exponents()))
+                .filter(|(phase, _)| !target.contains_key(phase))
+                .collect()
+        })
+        .collect();
+    let mut holders: HashMap<&Vec<i64>, Vec<(usize, &Vec<i64>)>> = HashMap::new();
+    for (at, terms) in outside.iter().enumerate() {
+        for (phase, param) in terms {
+            holders.entry(phase).or_default().push((at, param));
+        }
+    }
+    let mut new: Vec<(usize, Vec<i64>)> = nus
+        .iter()
+        .enumerate()
+        .flat_map(|(at, (_, n))| n.iter().map(move |nu| (at, nu.clone())))
+        .collect();
+    let mut added = false;
+    for _ in 0..nus.len() {
+        let mut next = Vec::new();
+        for (at, nu) in &new {
+            for (phase, param) in &outside[*at] {
+                let carried: Vec<i64> = nu.iter().zip(param).map(|(a, b)| a + b).collect();
+                for &(other, q) in holders.get(phase).into_iter().flatten() {
+                    let shift: Vec<i64> = carried.iter().zip(q).map(|(a, b)| a - b).collect();
+                    if other == *at || nus[other].1.contains(&shift) {
+                        continue;
+                    }
+                    let size = basis[nus[other].0].len();
+                    if size > budget {
+                        return added;
+                    }
+                    budget -= size;
+                    nus[other].1.insert(shift.clone());
+                    next.push((other, shift));
+                    added = true;
+                }
+            }
+        }
+        if next.is_empty() {
+            break;
+        }
+        new = next;
+    }
+    added
 }
 
 /// The functions `F_k` of those `allowed` that may carry a nonzero coefficient in
@@ -624,6 +742,37 @@ mod tests {
         assert_eq!(
             express_in("x + 2*i*p_x", &functions),
             Some(vec![("ReZ".into(), c("1")), ("ImZ".into(), c("2*i"))])
+        );
+    }
+
+    /// A combination whose columns cancel outside the bracket, each function's terms there met
+    /// by the other's (`F1` has no term of the bracket at all), is found and taken when it is
+    /// shorter than the bracket and its coefficients are polynomials; otherwise the bracket
+    /// stays as it is.
+    #[test]
+    fn combinations_may_cancel_outside_the_bracket() {
+        let rotor = harmonic_rotor();
+        let c = |s: &str| rotor.parse(s).expect("a coefficient");
+        let functions = [
+            ("F1", "x^2 + y^2 + x*y"),
+            ("F2", "x^2 + y^2 + x*y + p_x + p_y + x*p_y"),
+        ];
+        assert_eq!(
+            express_in("M*(p_x + p_y + x*p_y)", &functions),
+            Some(vec![("F1".into(), c("-M")), ("F2".into(), c("M"))])
+        );
+        // One term is shorter than two functions: `M y`, not `M F2 − M F1`.
+        let short = [("F1", "x"), ("F2", "x + y")];
+        assert_eq!(express_in("M*y", &short), None);
+        // A parameter in a denominator: `(F2 − F1)/M`, which the bracket reads better than.
+        let laurent = [
+            ("F1", "x^2 + y^2 + x*y"),
+            ("F2", "x^2 + y^2 + x*y + M*(p_x + p_y + x*p_y)"),
+        ];
+        assert_eq!(express_in("p_x + p_y + x*p_y", &laurent), None);
+        assert_eq!(
+            express_in("M^2*(p_x + p_y + x*p_y)", &laurent),
+            Some(vec![("F1".into(), c("-M")), ("F2".into(), c("M"))])
         );
     }
 
