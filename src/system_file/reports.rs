@@ -159,11 +159,15 @@ impl LoadedSystem {
     ) -> Result<(Section, String), FileError> {
         let mut entries = self.preamble();
         for claim in &self.claims {
+            let start = Instant::now();
             entries.push(match (self.check_claim(claim), undecided.as_deref_mut()) {
                 (Ok(CheckedClaim::Identity(c)), _) => Entry::Claim(*c),
                 (Ok(CheckedClaim::Rank(r)), _) => Entry::Rank(*r),
                 (Err(e), Some(errors)) if e.kind == ErrorKind::Limit => {
-                    let result = claim.undecided(&e.message);
+                    // The time it ran before it stopped.
+                    let result = claim
+                        .undecided(&e.message)
+                        .timed(start.elapsed().as_secs_f64());
                     errors.push(e);
                     Entry::Claim(result)
                 }
