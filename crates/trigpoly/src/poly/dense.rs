@@ -13,6 +13,9 @@
 //! `AxialBroad`, `AxialDouble`) where a Gaussian one takes four. Such products went to the
 //! hashed method before.
 //!
+//! A square forms each pair of terms once: the row of term `i` takes the partners after it,
+//! with its coefficient doubled, and the diagonal's `a_i²` is added to its chunk apart.
+//!
 //! When the caller's rayon pool has more than one thread, large products use a second core: on
 //! a dense box they split the index range into parts that rayon runs on the pool's threads; on
 //! a sparse box, where writing the terms (and backing their pages) costs as much as the
@@ -212,18 +215,30 @@ fn in_words<I: IntegerRing, F>(
 
 /// The product by the dense method, or `None` when the method does not apply (box too large
 /// for the work, coefficients past two machine words, or sums past 192 bits).
+///
+/// A square (`square`: `a` and `b` are one polynomial) forms each pair of terms once: row `i`
+/// takes its partners `j > i` with the coefficient `2 a_i`, and the diagonal's `a_i²` is added
+/// to its chunk apart.
 pub(crate) fn try_mul_dense<I: IntegerRing>(
     kron: &Kronecker,
     layout: &Layout,
     a: Terms<'_, I>,
     b: Terms<'_, I>,
     max_terms: usize,
+    square: bool,
 ) -> Option<Result<Product<I>, AlgebraError>> {
     let (n, m) = (a.1.len(), b.1.len());
     let work = (n as u64).saturating_mul(m as u64);
     if kron.size() > work.saturating_mul(BOX_PER_PRODUCT) || kron.size() > 1 << 40 {
         return None;
     }
+    let doubled: Vec<I>;
+    let a = if square {
+        doubled = a.1.iter().map(|c| c.add(c)).collect();
+        (a.0, &doubled[..], a.2)
+    } else {
+        a
+    };
     // Over Z[i], coefficients that are each real or imaginary take one real product a pair
     // where a Gaussian one takes four; each component of a product is one real product.
     if I::COMPLEX {
@@ -236,7 +251,7 @@ pub(crate) fn try_mul_dense<I: IntegerRing>(
         let double = |c: &I| c.to_real_or_imaginary().filter(|&(v, _)| v != i128::MIN);
         let double_bits = |c: &(i128, bool)| 128 - c.0.unsigned_abs().leading_zeros();
         let axial = in_cells::<I, AxialNarrow, AxialBroad, AxialDouble>(
-            (kron, layout, max_terms),
+            (kron, layout, max_terms, square),
             (a, b),
             ((word, word_bits), (double, double_bits)),
             1,
@@ -246,7 +261,7 @@ pub(crate) fn try_mul_dense<I: IntegerRing>(
         }
     }
     in_cells::<I, Narrow, Broad, Double>(
-        (kron, layout, max_terms),
+        (kron, layout, max_terms, square),
         (a, b),
         ((I::to_small, I::small_bits), (I::to_double, I::double_bits)),
         I::PRODUCTS_PER_COMPONENT,
@@ -261,7 +276,7 @@ type Terms<'a, I> = (&'a [u64], &'a [I], &'a [(i64, i64)]);
 /// factor, and its bits), else `D` for coefficients in two words (`double`); `None` if no
 /// cell holds them.
 fn in_cells<I: IntegerRing, N, B, D>(
-    (kron, layout, max_terms): (&Kronecker, &Layout, usize),
+    (kron, layout, max_terms, square): (&Kronecker, &Layout, usize, bool),
     (a, b): (Terms<'_, I>, Terms<'_, I>),
     (word, double): (
         (impl Fn(&I) -> Option<N::Factor>, impl Fn(&N::Factor) -> u32),
@@ -278,25 +293,33 @@ where
     if let Some((fa, fb, sum_bits)) = in_words(coefficients, word.0, word.1, products_per_component)
     {
         return if sum_bits <= N::BITS {
-            Some(mul_dense::<I, N>(kron, layout, a, b, (fa, fb), max_terms))
+            Some(mul_dense::<I, N>(
+                kron,
+                layout,
+                a,
+                b,
+                (fa, fb),
+                (max_terms, square),
+            ))
         } else {
             (sum_bits <= B::BITS)
-                .then(|| mul_dense::<I, B>(kron, layout, a, b, (fa, fb), max_terms))
+                .then(|| mul_dense::<I, B>(kron, layout, a, b, (fa, fb), (max_terms, square)))
         };
     }
     let (fa, fb, sum_bits) = in_words(coefficients, double.0, double.1, products_per_component)?;
-    (sum_bits <= D::BITS).then(|| mul_dense::<I, D>(kron, layout, a, b, (fa, fb), max_terms))
+    (sum_bits <= D::BITS)
+        .then(|| mul_dense::<I, D>(kron, layout, a, b, (fa, fb), (max_terms, square)))
 }
 
 /// [`try_mul_dense`] in the cells `W`, which hold every sum; `words` are the coefficients of
-/// `a` and `b` as `W`'s factors.
+/// `a` and `b` as `W`'s factors (of a square, `a`'s doubled).
 fn mul_dense<I: IntegerRing, W: Cells<I>>(
     kron: &Kronecker,
     layout: &Layout,
     a: Terms<'_, I>,
     b: Terms<'_, I>,
     (words_a, words_b): (Vec<W::Factor>, Vec<W::Factor>),
-    max_terms: usize,
+    (max_terms, square): (usize, bool),
 ) -> Result<Product<I>, AlgebraError> {
     let (n, m) = (a.1.len(), b.1.len());
     let work = (n as u64).saturating_mul(m as u64);
@@ -315,6 +338,7 @@ fn mul_dense<I: IntegerRing, W: Cells<I>>(
         fa,
         ca: words_a,
         partners: gb.into_iter().zip(words_b).collect(),
+        square,
     };
     let decoder = kron.decoder(layout, work);
     let budget = TermBudget::new(max_terms);
@@ -416,6 +440,10 @@ struct Factors<S> {
     fa: Vec<u64>,
     ca: Vec<S>,
     partners: Vec<(u64, S)>,
+    /// Whether the factors are one polynomial, `ca` its coefficients doubled: row `i` takes
+    /// the partners after its own term, and the diagonal (each partner by itself) is added
+    /// apart.
+    square: bool,
 }
 
 impl<S: Copy + Send + Sync> Factors<S> {
@@ -464,10 +492,25 @@ impl<S: Copy + Send + Sync> Factors<S> {
     /// descending index order, as the chunks are).
     fn first_partners(&self, hi: u64) -> Vec<usize> {
         let partners = &self.partners;
+        let after = |i: usize| if self.square { i + 1 } else { 0 };
         self.fa
             .iter()
-            .map(|&fi| partners.partition_point(|&(g, _)| fi + g >= hi))
+            .enumerate()
+            .map(|(i, &fi)| {
+                partners
+                    .partition_point(|&(g, _)| fi + g >= hi)
+                    .max(after(i))
+            })
             .collect()
+    }
+
+    /// Of a square, the first row whose diagonal product `2 f_i` lies below `hi`; the rows'
+    /// number (none) otherwise.
+    fn first_diagonal(&self, hi: u64) -> usize {
+        match self.square {
+            true => self.fa.partition_point(|&fi| 2 * fi >= hi),
+            false => self.fa.len(),
+        }
     }
 
     /// The most terms the product of the indices in `[lo, hi)` can have (one per product and
@@ -479,8 +522,15 @@ impl<S: Copy + Send + Sync> Factors<S> {
             .fa
             .iter()
             .zip(next)
-            .map(|(&fi, &j)| partners.partition_point(|&(g, _)| fi + g >= lo) - j)
+            .map(|(&fi, &j)| {
+                partners
+                    .partition_point(|&(g, _)| fi + g >= lo)
+                    .saturating_sub(j)
+            })
             .sum();
+        // A square's diagonal products in the range.
+        let diagonal = self.first_diagonal(lo) - self.first_diagonal(hi);
+        let products = products + diagonal;
         (products as u64).min(hi - lo).min(max_terms as u64 + 1) as usize
     }
 
@@ -609,6 +659,8 @@ impl<S: Copy + Send + Sync> Factors<S> {
             }
         }
         let mut first = fa.partition_point(|&fi| fi + g_min >= hi);
+        // A square's next diagonal product, `2 f_d`, to be added in its chunk.
+        let mut diagonal = self.first_diagonal(hi);
         let mut top = hi;
         let mut current = 0;
         // The terms of this range counted in the budget so far.
@@ -649,6 +701,18 @@ impl<S: Copy + Send + Sync> Factors<S> {
                 }
                 true
             };
+            // A square's diagonal products in this chunk: the partners by themselves.
+            let mut reached = reached;
+            while diagonal < n && 2 * fa[diagonal] >= bottom {
+                let (g, c) = &partners[diagonal];
+                let off = (2 * g - bottom) as usize;
+                W::add_mul(&mut acc[off], c, c);
+                if MARK {
+                    touched[off] = 1;
+                }
+                reached = true;
+                diagonal += 1;
+            }
             // Read the accumulators back, highest index first.
             let mut read = |off: usize| {
                 let slot = std::mem::take(&mut acc[off]);

@@ -163,6 +163,7 @@ impl<C: Coefficient> Poly<C> {
                 (&small.exps, &small.coeffs, &bs),
                 (&big.exps, &big.coeffs, &bb),
                 limit,
+                std::ptr::eq(small, big),
             ) {
                 Some(result) => result?,
                 None => {

@@ -70,6 +70,44 @@ fn dense_products_split_over_threads_agree_with_one_thread() {
     }
 }
 
+/// A square through the dense kernel forms each pair of terms once (the row of term `i` takes
+/// the terms after it with `2 a_i`, the diagonal `a_i²` apart) and is the product of the
+/// polynomial by a copy of itself, which forms every pair: on a scanned box (split into parts
+/// on two threads), a marked one (pipelined on two threads when large), over Q(i) with axial
+/// and Gaussian cells, and with a coefficient whose double passes a word (two-word cells).
+#[test]
+fn squares_through_the_dense_kernel_form_each_pair_once() {
+    let vars = coordinates(&["x", "y", "z", "t"]);
+    let pt = point(&vars, &[("x", 2), ("y", -1), ("z", 1), ("t", -3)]);
+    fn check<C: Coefficient>(f: &Poly<C>, pt: &Point) {
+        let copy = f + &Poly::zero(f.vars());
+        assert!(!std::ptr::eq(f, &copy));
+        for threads in [1, 2] {
+            let square = product_on(threads, f, f);
+            assert_eq!(square, product_on(threads, f, &copy), "{threads} threads");
+            let value = f.eval(pt).unwrap();
+            assert_eq!(square.eval(pt), Ok(&value * &value));
+        }
+    }
+    for f in [
+        // 715 terms, 715² pairs in a box of 19⁴ cells: scanned.
+        "(1 + x + y + z + t)^9",
+        // The same in a box of 55⁴ cells: marked; 1820 terms: pipelined on two threads.
+        "(1 + x + y + 2*z^3 - t^3)^9",
+        "(1 + x + y + 2*z^3 - t^3)^12",
+        // 2⁶² + 1, whose double passes an `i64`.
+        "(1 + x + y + z + t)^9 + 4611686018427387905*x^9*y^9",
+    ] {
+        check::<Rational>(&p(&vars, f), &pt);
+    }
+    for f in [
+        "(1 + i*x + y + 2*z^3 - t^3)^9",
+        "(1 + (2+i)*x + y + 2*z^3 - t^3)^9",
+    ] {
+        check::<GaussianRational>(&p(&vars, f), &pt);
+    }
+}
+
 /// Factors whose exponents of a variable lie a step apart from their least (`x³`, `z²` and
 /// `t⁻²` in one, `x⁶`, `z²` and `t⁴` in the other) multiply in a box with the shared steps (3,
 /// 2, 2) taken out: indices count steps, and the decoder puts them back. The product is the
