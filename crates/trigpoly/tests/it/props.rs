@@ -423,6 +423,10 @@ proptest! {
         prop_assert_eq!(&h * &k, product_by_terms(&h, &k));
         let (fr, gr) = (f.re().unwrap().to_rational().expect("real"), g.re().unwrap().to_rational().expect("real"));
         prop_assert_eq!(&fr * &gr, product_by_terms(&fr, &gr));
+        // Squares, whose kernels form each pair of terms once.
+        prop_assert_eq!(&f * &f, product_by_terms(&f, &f));
+        prop_assert_eq!(&fr * &fr, product_by_terms(&fr, &fr));
+        prop_assert_eq!(&u * &u, product_by_terms(&u, &u));
     }
 
     #[test]
