@@ -393,7 +393,8 @@ fn mul_dense<I: IntegerRing, W: Cells<I>>(
 /// every chunk its partners' span overlaps, and every accumulator is read back: a square of
 /// 92 755 terms whose box (6.0·10⁹ cells) was smaller than its work (8.6·10⁹ term pairs) made
 /// 6.7·10¹⁰ visits of rows to 1.5 M chunks, mostly to add nothing, and read back 6·10⁹
-/// accumulators for 2.1 M terms: 100 s, where marked it takes 42 s.
+/// accumulators for 2.1 M terms: 100 s, where marked it took 42 s (20 s since a square forms
+/// each pair once).
 fn marks(cells: u64, work: u64, (rows, span): (u64, u64), chunk: u64) -> bool {
     let visits = rows.saturating_mul(span / chunk + 1);
     cells > work || visits > work / PRODUCTS_PER_VISIT
