@@ -548,6 +548,35 @@ impl TableResult {
         }
     }
 
+    /// The entries above the diagonal that a limit stopped (`?`), by row and column, each
+    /// with the limit's message.
+    pub fn undecided(&self) -> Vec<(usize, usize, &str)> {
+        let entries = &self.table.entries;
+        (0..entries.len())
+            .flat_map(|a| (a + 1..entries.len()).map(move |b| (a, b)))
+            .filter_map(|(a, b)| match &entries[a][b] {
+                brackets::Entry::Undecided(message) => Some((a, b, message.as_str())),
+                _ => None,
+            })
+            .collect()
+    }
+
+    /// What the prose formats say under a table for an undecided entry, in unicode names:
+    /// `{A, B} = ?: stopped at a limit: …`.
+    pub fn undecided_notes(&self) -> Vec<String> {
+        let names = &self.table.display;
+        (self.undecided().into_iter())
+            .map(|(a, b, message)| {
+                format!(
+                    "{{{}, {}}} = ?: {}",
+                    names[a],
+                    names[b],
+                    crate::render::stopped(message)
+                )
+            })
+            .collect()
+    }
+
     /// Every cell in a notation, row by row ([`TableResult::cell`]).
     pub fn cells(&self, style: Style) -> Vec<Vec<String>> {
         let n = self.table.entries.len();
@@ -694,6 +723,15 @@ pub struct RankResult {
     pub claim: ClaimResult,
 }
 
+/// `1 entry`, `3 entries`: a count of a table's entries, whose plural [`counted`] does not
+/// spell.
+pub fn entries(n: usize) -> String {
+    match n {
+        1 => "1 entry".to_string(),
+        n => format!("{n} entries"),
+    }
+}
+
 /// A count and its noun, singular for one: `1 claim`, `2 claims`, `0 claims`. Every count the
 /// reports and the command line print in words goes through it.
 pub fn counted(n: impl std::fmt::Display, noun: &str) -> String {
@@ -837,6 +875,14 @@ impl Report {
         self.claims().iter().all(|c| c.meets_expectation())
     }
 
+    /// Every bracket table of the report, in order.
+    pub fn tables(&self) -> impl Iterator<Item = &TableResult> {
+        (self.sections.iter().flat_map(|s| &s.entries)).filter_map(|e| match e {
+            Entry::Table(t) => Some(t),
+            _ => None,
+        })
+    }
+
     /// The first tower of the report, if any.
     pub fn tower(&self) -> Option<&TowerResult> {
         self.sections
@@ -898,10 +944,18 @@ impl Report {
             );
         }
         if self.summary == SummaryKind::Computed {
+            // A table's entries that a limit stopped are no part of what was computed.
+            let what = match self.tables().map(|t| t.undecided().len()).sum::<usize>() {
+                0 => "computed exactly".to_string(),
+                n => format!(
+                    "computed exactly, but for {} stopped at a limit",
+                    entries(n)
+                ),
+            };
             return if timings {
-                format!("computed exactly ({:.2} s)", self.seconds)
+                format!("{what} ({:.2} s)", self.seconds)
             } else {
-                "computed exactly".to_string()
+                what
             };
         }
         if let SummaryKind::Check { files } = self.summary {

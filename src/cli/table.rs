@@ -3,8 +3,10 @@
 use std::path::PathBuf;
 
 use super::input::load_system;
+use anyhow::bail;
 use clap::Args;
 use superint::render::render;
+use superint::report::entries;
 use superint::system_file::{table_report, LimitsOverride};
 
 use super::limits::LimitsArgs;
@@ -57,5 +59,22 @@ pub fn run(job: &TableJob) -> anyhow::Result<bool> {
     let file = load_system(&job.file, &job.limits)?;
     let report = table_report(&file, &job.names)?;
     emit(&render(&report, job.output.format, &job.output.options))?;
+    // Entries a limit stopped are `?` in the table, and the run ends with an error.
+    let undecided: Vec<String> = report
+        .tables()
+        .flat_map(|t| {
+            let names = &t.table.display;
+            (t.undecided().into_iter())
+                .map(move |(a, b, message)| format!("{{{}, {}}}: {message}", names[a], names[b]))
+        })
+        .collect();
+    if let Some(first) = undecided.first() {
+        bail!(
+            "{}: {} of the table undecided (shown as ?), stopped at a limit, the first {first} \
+             (--max-terms N, --max-term-products N, --max-degree D)",
+            job.file.display(),
+            entries(undecided.len())
+        );
+    }
     Ok(true)
 }

@@ -46,7 +46,10 @@
 //!                 "excerpts": [ { "row", "column", "shown_monomials", "monomials" } ]   (the
 //!                          entries of more monomials outside the angles than
 //!                          `Options::shown_monomials`: each is then every term of its first
-//!                          "shown_monomials" of "monomials") } ],
+//!                          "shown_monomials" of "monomials"),
+//!                 "undecided": [ { "row", "column", "message" } ]   (the entries above the
+//!                          diagonal, and so their transposes, that a limit stopped: shown
+//!                          as "?", the limit's message here) } ],
 //!   "towers": [ { "section", "id", "system", "ladder", "max", "checked",
 //!                 "failures": [[m, n]], "outcome", "seconds" } ],
 //!   "proofs": [ { "section", "title", "facts": [ { "statement", "holds" } ],
@@ -157,6 +160,11 @@ pub fn value(report: &Report, options: &Options) -> Value {
                         "column": b,
                         "shown_monomials": e.shown,
                         "monomials": e.monomials,
+                    })).collect::<Vec<_>>(),
+                    "undecided": t.undecided().into_iter().map(|(a, b, message)| json!({
+                        "row": a,
+                        "column": b,
+                        "message": message,
                     })).collect::<Vec<_>>(),
                 })),
                 Entry::Tower(t) => {

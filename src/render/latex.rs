@@ -323,6 +323,20 @@ fn equations(out: &mut Vec<String>, eq: &Equations) {
 const TABLE_ROW: usize = 70;
 
 fn table(out: &mut Vec<String>, t: &TableResult) {
+    table_body(out, t);
+    let names = &t.table.display;
+    for (a, b, message) in t.undecided() {
+        out.push(format!(
+            r"\noindent $\{{{}, {}\}} = ?$: {}\par",
+            math(&names[a]),
+            math(&names[b]),
+            text(&stopped(message))
+        ));
+    }
+}
+
+/// The table as an array, or as a list when it is too wide for the page.
+fn table_body(out: &mut Vec<String>, t: &TableResult) {
     let table = &t.table;
     let cells = t.cells(Style::Latex);
     let head: Vec<String> = table.display.iter().map(|d| math(d)).collect();

@@ -117,14 +117,21 @@ fn table(t: &TableResult) -> String {
         let cells: Vec<String> = row.iter().map(|c| code(c)).collect();
         lines.push(format!("| {} | {} |", code(name), cells.join(" | ")));
     }
-    // What an entry cut to its leading part leaves out, once for each pair.
+    // What an entry cut to its leading part leaves out, once for each pair, and why an entry
+    // is `?`.
+    let bracket =
+        |a: usize, b: usize| code(&format!("{{{}, {}}}", table.display[a], table.display[b]));
     let cut = t.excerpts.iter().filter(|((a, b), _)| a < b);
-    for (k, ((a, b), e)) in cut.enumerate() {
-        if k == 0 {
-            lines.push(String::new());
-        }
-        let bracket = format!("{{{}, {}}}", table.display[*a], table.display[*b]);
-        lines.push(format!("- {}: {}", code(&bracket), e.describe()));
+    let mut notes: Vec<String> = cut
+        .map(|((a, b), e)| format!("- {}: {}", bracket(*a, *b), e.describe()))
+        .collect();
+    notes.extend(
+        (t.undecided().into_iter())
+            .map(|(a, b, message)| format!("- {} = ?: {}", bracket(a, b), stopped(message))),
+    );
+    if !notes.is_empty() {
+        lines.push(String::new());
+        lines.extend(notes);
     }
     lines.join("\n")
 }

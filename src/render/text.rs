@@ -309,6 +309,14 @@ fn claim(out: &mut Vec<String>, c: &ClaimResult) {
 }
 
 fn table(out: &mut Vec<String>, t: &TableResult) {
+    table_body(out, t);
+    for note in t.undecided_notes() {
+        out.extend(wrap(&format!("    {note}"), WRAP, "      "));
+    }
+}
+
+/// The table as a grid, or as a list when it is too wide.
+fn table_body(out: &mut Vec<String>, t: &TableResult) {
     let table = &t.table;
     let corner = "{·,·}".to_string();
     let cells = t.cells(Style::Unicode);

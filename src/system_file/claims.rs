@@ -80,20 +80,15 @@ impl CheckedClaim {
 
 /// An engine error at a place of the file: limits are limit errors, with the hint.
 pub(crate) fn engine_error(source: &Source, span: Range<usize>, e: &EngineError) -> FileError {
-    match e {
-        EngineError::Algebra(
-            a @ (AlgebraError::TooManyTerms { .. }
-            | AlgebraError::TooMuchWork { .. }
-            | AlgebraError::ExponentTooLarge { .. }
-            | AlgebraError::OrderTooLarge { .. }),
-        ) => {
-            let message = a.to_string();
+    let message = e.to_string();
+    match e.is_limit() {
+        true => {
             let hint = limit_hint(&message);
             source
                 .error(ErrorKind::Limit, span, message)
                 .with_hint(hint)
         }
-        _ => source.error(ErrorKind::Engine, span, e.to_string()),
+        false => source.error(ErrorKind::Engine, span, message),
     }
 }
 

@@ -320,7 +320,9 @@ impl LoadedSystem {
 }
 
 /// The bracket table of named functions (or family instances such as `K_1_1`) of the file;
-/// all its functions but `H` when `names` is empty.
+/// all its functions but `H` when `names` is empty. An entry that reaches a limit is `?`
+/// ([`TableResult::undecided`](crate::report::TableResult::undecided) lists them, with the
+/// limits' messages), and the others are computed.
 pub fn table_report(file: &LoadedSystem, names: &[impl AsRef<str>]) -> Result<Report, FileError> {
     let start = Instant::now();
     let defined: Vec<String> = file

@@ -1830,6 +1830,8 @@ fn cli_long_residual_shows_its_leading_terms() {
 /// The columns a table's combination is sought in are held at once, and together within the
 /// term limit: a bracket of 10⁶ terms spanning a function of 7·10⁵ took 24 columns of
 /// 1.7·10⁷ terms, 46 s, before the limit stopped the table (found by the fuzzer, seed 1205).
+/// The entry past the limit is `?`, the limit said under the table in every format, and the
+/// run exits 2.
 #[test]
 fn cli_table_columns_are_held_to_the_term_limit() {
     // {F, D} = Σ (a − b)·(terms x^a p_x^b of F): the 11 monomials of F, each with the
@@ -1848,11 +1850,65 @@ fn cli_table_columns_are_held_to_the_term_limit() {
     let out = superint_exits(&["table", file, "--no-timings", "--max-terms", "65"], 2);
     let err = String::from_utf8_lossy(&out.stderr);
     assert!(
-        err.contains("the result would have more than 65 terms (the term limit)"),
+        err.contains(
+            "1 entry of the table undecided (shown as ?), stopped at a limit, the first {F, D}: \
+             the result would have more than 65 terms (the term limit)"
+        ),
         "{err}"
+    );
+    // The entry is `?`, with the limit under the table; the others are computed.
+    let text = stdout(&out);
+    for said in [
+        "    F     │ 0   ?",
+        "    D     │ ?   0",
+        "    {F, D} = ?: stopped at a limit: the result would have more than 65 terms",
+        "computed exactly, but for 1 entry stopped at a limit",
+    ] {
+        assert!(text.contains(said), "{said}\n{text}");
+    }
+    let undecided = |format: &str| {
+        let args = [
+            "table",
+            file,
+            "--no-timings",
+            "--max-terms",
+            "65",
+            "--format",
+            format,
+        ];
+        stdout(&superint_exits(&args, 2))
+    };
+    let markdown = undecided("markdown");
+    assert!(
+        markdown.contains("- `{F, D}` = ?: stopped at a limit: the result would have"),
+        "{markdown}"
+    );
+    let latex = undecided("latex");
+    assert!(
+        latex.contains(r"\noindent $\{F, D\} = ?$: stopped at a limit"),
+        "{latex}"
+    );
+    compile_within(&latex, 1.0);
+    let json: Value = serde_json::from_str(&undecided("json")).expect("JSON");
+    let table = &json["tables"][0];
+    assert_eq!(table["entries"][0][1]["ascii"], "?");
+    assert_eq!(
+        (
+            &table["undecided"][0]["row"],
+            &table["undecided"][0]["column"]
+        ),
+        (&Value::from(0), &Value::from(1))
+    );
+    assert!(
+        (table["undecided"][0]["message"]
+            .as_str()
+            .expect("a message"))
+        .starts_with("the result would have more than 65 terms"),
+        "{table}"
     );
     let out = superint_exits(&["table", file, "--no-timings", "--max-terms", "66"], 0);
     assert!(stdout(&out).contains("{F, D} = "), "{}", stdout(&out));
+    assert!(!stdout(&out).contains('?'), "{}", stdout(&out));
 }
 
 /// A table's entry of more than a hundred monomials that is no combination of the listed

@@ -2490,8 +2490,9 @@ fn an_echo_does_not_spell_a_function_before_parentheses() {
     assert_eq!(expand(&echo).1, value);
 }
 
-/// A table that a limit stops names the file and the brackets it computed: it said
+/// A table that a limit stops names the file and the bracket it computed: it said
 /// `<command line>: the exponent of x would reach 1999` for `table FILE` with no names given.
+/// The entry is `?` in the table printed.
 #[test]
 fn a_table_past_a_limit_names_the_file_and_the_brackets() {
     let file = crate::scratch_text(
@@ -2507,8 +2508,11 @@ fn a_table_past_a_limit_names_the_file_and_the_brackets() {
     let stderr = String::from_utf8_lossy(&out.stderr);
     assert!(
         stderr.contains(&format!(
-            "superint: error: {path}: the brackets of A, B: the exponent of x would reach 1999"
+            "superint: error: {path}: 1 entry of the table undecided (shown as ?), stopped at a \
+             limit, the first {{A, B}}: the exponent of x would reach 1999"
         )),
         "{stderr}"
     );
+    let stdout = String::from_utf8_lossy(&out.stdout);
+    assert!(stdout.contains("    A     │ 0   ?"), "{stdout}");
 }

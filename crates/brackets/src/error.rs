@@ -72,6 +72,20 @@ impl From<ParseError> for EngineError {
 }
 
 impl EngineError {
+    /// Whether a limit stopped the computation (of terms, of term products, of degree, of an
+    /// angle's order): the input may be right, and a larger limit may decide it.
+    pub fn is_limit(&self) -> bool {
+        matches!(
+            self,
+            EngineError::Algebra(
+                AlgebraError::TooManyTerms { .. }
+                    | AlgebraError::TooMuchWork { .. }
+                    | AlgebraError::ExponentTooLarge { .. }
+                    | AlgebraError::OrderTooLarge { .. }
+            )
+        )
+    }
+
     /// A parse error rendered against its source.
     pub fn parse(source: &str, error: ParseError) -> Self {
         EngineError::Parse {

@@ -21,6 +21,9 @@ pub enum Entry {
     /// Outside what the table writes (a closure's bracket that is no polynomial of the degree
     /// in the generators): shown as `*`, the bracket given apart.
     Outside,
+    /// Not computed: the bracket, or its combination's solve, reached a limit, whose message
+    /// it keeps. Shown as `?`.
+    Undecided(String),
 }
 
 /// A function of a table by name: the system's name, which reads back (`G1p`), and the name
@@ -57,7 +60,9 @@ pub struct BracketTable {
 }
 
 impl BracketTable {
-    /// Computes the table for named functions of `system`.
+    /// Computes the table for named functions of `system`. An entry whose bracket or
+    /// combination reaches a limit is [`Entry::Undecided`], and the others are computed; any
+    /// other error is the answer.
     pub fn compute(system: &System, names: &[&str]) -> Result<Self, EngineError> {
         // Each over its common denominator, as the brackets will be, so that a bracket that
         // is one of them written another way (`x/(x − y)² − y/(x − y)²` for `1/(x − y)`)
@@ -78,17 +83,24 @@ impl BracketTable {
         // it are zero and those below are the negated entries above.
         let n = funcs.len();
         let mut entries: Vec<Vec<Entry>> = (0..n).map(|_| Vec::with_capacity(n)).collect();
+        // An entry that reaches a limit is undecided, and the others are computed.
+        let entry = |a: usize, b: usize| -> Result<Entry, EngineError> {
+            // Over a common denominator (with denominator atoms; as it is otherwise), so that
+            // a bracket equal to zero is 0 and reads as its numerator shows.
+            let br = system
+                .bracket(&funcs[a], &funcs[b])?
+                .over_common_denominators()?;
+            Ok(match express(&br, &basis)? {
+                Some(c) => Entry::Combination(c),
+                None => Entry::Expression(br),
+            })
+        };
         for a in 0..n {
             entries[a].push(Entry::Combination(Vec::new()));
             for b in a + 1..n {
-                // Over a common denominator (with denominator atoms; as it is otherwise), so
-                // that a bracket equal to zero is 0 and reads as its numerator shows.
-                let br = system
-                    .bracket(&funcs[a], &funcs[b])?
-                    .over_common_denominators()?;
-                let entry = match express(&br, &basis)? {
-                    Some(c) => Entry::Combination(c),
-                    None => Entry::Expression(br),
+                let entry = match entry(a, b) {
+                    Err(e) if e.is_limit() => Entry::Undecided(e.to_string()),
+                    found => found?,
                 };
                 entries[b].push(entry.negated());
                 entries[a].push(entry);
@@ -111,6 +123,7 @@ impl Entry {
             }
             Entry::Expression(e) => Entry::Expression(-e),
             Entry::Outside => Entry::Outside,
+            Entry::Undecided(message) => Entry::Undecided(message.clone()),
         }
     }
 
@@ -119,6 +132,7 @@ impl Entry {
         match self {
             Entry::Expression(e) => e.render(style),
             Entry::Outside => "*".into(),
+            Entry::Undecided(_) => "?".into(),
             Entry::Combination(terms) if terms.is_empty() => "0".into(),
             Entry::Combination(terms) => {
                 let mut out = String::new();
