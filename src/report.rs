@@ -418,11 +418,6 @@ impl ClaimResult {
         self.undecided.is_none() && self.proved == (self.expect == Expect::Proved)
     }
 
-    /// Whether it was refuted: checked, and not proved.
-    pub fn refuted(&self) -> bool {
-        !self.proved && self.undecided.is_none()
-    }
-
     /// Proved, refuted, or undecided (stopped at a limit).
     pub fn outcome(&self) -> ClaimOutcome {
         match (self.proved, &self.undecided) {
@@ -557,22 +552,6 @@ impl TableResult {
             .filter_map(|(a, b)| match &entries[a][b] {
                 brackets::Entry::Undecided(message) => Some((a, b, message.as_str())),
                 _ => None,
-            })
-            .collect()
-    }
-
-    /// What the prose formats say under a table for an undecided entry, in unicode names:
-    /// `{A, B} = ?: stopped at a limit: …`.
-    pub fn undecided_notes(&self) -> Vec<String> {
-        let names = &self.table.display;
-        (self.undecided().into_iter())
-            .map(|(a, b, message)| {
-                format!(
-                    "{{{}, {}}} = ?: {}",
-                    names[a],
-                    names[b],
-                    crate::render::stopped(message)
-                )
             })
             .collect()
     }
@@ -723,22 +702,25 @@ pub struct RankResult {
     pub claim: ClaimResult,
 }
 
-/// `1 entry`, `3 entries`: a count of a table's entries, whose plural [`counted`] does not
-/// spell.
-pub fn entries(n: usize) -> String {
-    match n {
-        1 => "1 entry".to_string(),
-        n => format!("{n} entries"),
-    }
-}
-
-/// A count and its noun, singular for one: `1 claim`, `2 claims`, `0 claims`. Every count the
-/// reports and the command line print in words goes through it.
+/// A count and its noun, singular for one: `1 claim`, `2 claims`, `0 claims`, `3 entries` (a
+/// consonant's `y` becomes `ies`). Every count the reports and the command line print in
+/// words goes through it.
+///
+/// ```
+/// use superint::report::counted;
+///
+/// assert_eq!(counted(1, "entry"), "1 entry");
+/// assert_eq!([counted(3, "entry"), counted(2, "key"), counted(0, "claim")], ["3 entries", "2 keys", "0 claims"]);
+/// ```
 pub fn counted(n: impl std::fmt::Display, noun: &str) -> String {
     let n = n.to_string();
-    match n.as_str() {
-        "1" => format!("1 {noun}"),
-        _ => format!("{n} {noun}s"),
+    let stem = noun
+        .strip_suffix('y')
+        .filter(|s| !s.ends_with(['a', 'e', 'o', 'u']));
+    match (n.as_str(), stem) {
+        ("1", _) => format!("1 {noun}"),
+        (_, Some(stem)) => format!("{n} {stem}ies"),
+        (_, None) => format!("{n} {noun}s"),
     }
 }
 
@@ -949,7 +931,7 @@ impl Report {
                 0 => "computed exactly".to_string(),
                 n => format!(
                     "computed exactly, but for {} stopped at a limit",
-                    entries(n)
+                    counted(n, "entry")
                 ),
             };
             return if timings {
@@ -981,7 +963,9 @@ impl Report {
             };
             let files = counted(files, "file");
             let count = counted(claims.len(), "claim");
-            let refuted = claims.iter().filter(|(_, c)| c.refuted()).count();
+            let refuted = (claims.iter())
+                .filter(|(_, c)| c.outcome() == ClaimOutcome::Refuted)
+                .count();
             let undecided = match claims.len() - proved - refuted {
                 0 => String::new(),
                 n => format!(", {n} undecided"),

@@ -310,8 +310,16 @@ fn claim(out: &mut Vec<String>, c: &ClaimResult) {
 
 fn table(out: &mut Vec<String>, t: &TableResult) {
     table_body(out, t);
-    for note in t.undecided_notes() {
-        out.extend(wrap(&format!("    {note}"), WRAP, "      "));
+    // Why an entry is `?`.
+    let names = &t.table.display;
+    for (a, b, message) in t.undecided() {
+        let note = format!(
+            "    {{{}, {}}} = ?: {}",
+            names[a],
+            names[b],
+            stopped(message)
+        );
+        out.extend(wrap(&note, WRAP, "      "));
     }
 }
 

@@ -28,7 +28,7 @@ use std::sync::{Mutex, PoisonError};
 use num_bigint::BigInt;
 use num_integer::Integer as _;
 use num_traits::ToPrimitive;
-use trigpoly::{GaussianRational, Rational};
+use trigpoly::{Coefficient, GaussianRational, Rational};
 
 /// The prime `2⁶² − 57`.
 pub const PRIME: u64 = (1 << 62) - 57;
@@ -174,20 +174,20 @@ impl Field for Fp {
     }
 }
 
-/// `Field` for an exact number type of `trigpoly` by its own operators: `Q` ([`Rational`]) and
-/// `Q(i)` ([`GaussianRational`], for solves whose coefficients are complex, a bracket table's
-/// combinations).
+/// `Field` for a coefficient field of `trigpoly` ([`Coefficient`]: its zero, one and name) by
+/// its own operators: `Q` ([`Rational`]) and `Q(i)` ([`GaussianRational`], for solves whose
+/// coefficients are complex, a bracket table's combinations).
 macro_rules! exact_field {
-    ($t:ty, $one:expr, $name:literal) => {
+    ($t:ty) => {
         impl Field for $t {
             fn zero() -> Self {
-                <$t>::default()
+                <$t as Coefficient>::zero()
             }
             fn one() -> Self {
-                $one
+                <$t as Coefficient>::one()
             }
             fn is_zero(&self) -> bool {
-                <$t>::is_zero(self)
+                <$t as Coefficient>::is_zero(self)
             }
             fn add(&self, other: &Self) -> Self {
                 self + other
@@ -199,14 +199,15 @@ macro_rules! exact_field {
                 self * other
             }
             fn inv(&self) -> Self {
-                self.try_inv().expect(concat!("inverse of zero in ", $name))
+                (self.try_inv())
+                    .unwrap_or_else(|| panic!("inverse of zero in {}", <$t as Coefficient>::NAME))
             }
         }
     };
 }
 
-exact_field!(Rational, Rational::one(), "Q");
-exact_field!(GaussianRational, GaussianRational::from(1), "Q(i)");
+exact_field!(Rational);
+exact_field!(GaussianRational);
 
 /// The rational `r/s` with `|r|, s ≤ √(p/2)` and `r ≡ a·s (mod p)`, if there is one (it is then
 /// unique): Wang's rational reconstruction by the extended Euclidean algorithm.

@@ -276,14 +276,15 @@ pub fn express(
     // than the bracket: fewer functions than the bracket has terms (`{F1, L} = Mgx`, not
     // `−2 G1 + 2 G1'`), each with a polynomial coefficient (when functions differ by a
     // coordinate times a parameter, `G1' = G1 + Mgx/2`, most brackets are combinations with
-    // that parameter in a denominator).
-    // It takes two functions at least, which the bracket must outnumber in terms.
+    // that parameter in a denominator). It takes two functions at least, which the bracket
+    // must outnumber in terms.
+    let reads_better = |c: &Combination, reach| {
+        reach == Reach::Target || (c.support() < target.len() && c.is_polynomial())
+    };
     let (mut found, reach) = match solve(&every, Reach::Target)? {
         Ok(found) => (found, Reach::Target),
         Err(Miss::Ansatz) if target.len() > 2 => match solve(&every, Reach::Outside)? {
-            Ok(found) if found.support() < target.len() && found.is_polynomial() => {
-                (found, Reach::Outside)
-            }
+            Ok(found) if reads_better(&found, Reach::Outside) => (found, Reach::Outside),
             _ => return Ok(None),
         },
         Err(_) => return Ok(None),
@@ -299,10 +300,7 @@ pub fn express(
             }
             allowed[k] = false;
             match solve(&allowed, reach)? {
-                Ok(other)
-                    if other.support() <= found.support()
-                        && (reach == Reach::Target || other.is_polynomial()) =>
-                {
+                Ok(other) if other.support() <= found.support() && reads_better(&other, reach) => {
                     found = other
                 }
                 _ => allowed[k] = true,
@@ -523,13 +521,7 @@ fn cancel_outside(
     // Each function's terms outside the target, and by phase-space monomial who has them.
     let outside: Vec<Vec<(Vec<i64>, Vec<i64>)>> = nus
         .iter()
-        .map(|(k, _)| {
-            basis[*k]
-                .terms()
-                .map(|u| split(&u.exponents()))
-                .filter(|(phase, _)| !target.contains_key(phase))
-                .collect()
-        })
+        .map(|(k, _)| terms_outside(&basis[*k], target, &split).collect())
         .collect();
     let mut holders: HashMap<&Vec<i64>, Vec<(usize, &Vec<i64>)>> = HashMap::new();
     for (at, terms) in outside.iter().enumerate() {
@@ -572,6 +564,18 @@ fn cancel_outside(
     added
 }
 
+/// The terms of `f` whose phase-space monomial the target lacks, each split into its
+/// phase-space and parameter exponents.
+fn terms_outside<'a>(
+    f: &'a Expr,
+    target: &'a HashMap<Vec<i64>, Vec<Vec<i64>>>,
+    split: &'a impl Fn(&[i64]) -> (Vec<i64>, Vec<i64>),
+) -> impl Iterator<Item = (Vec<i64>, Vec<i64>)> + 'a {
+    f.terms()
+        .map(|u| split(&u.exponents()))
+        .filter(|(phase, _)| !target.contains_key(phase))
+}
+
 /// The functions `F_k` of those `allowed` that may carry a nonzero coefficient in
 /// `Σ c_k F_k = target`: one with a phase-space monomial that neither the target nor any other
 /// such function has cannot (its coefficient, a nonzero Laurent polynomial in the parameters,
@@ -590,10 +594,8 @@ fn useful_functions(
         .zip(allowed)
         .map(|(f, &allowed)| match allowed {
             false => HashSet::new(),
-            true => f
-                .terms()
-                .map(|u| split(&u.exponents()).0)
-                .filter(|phase| !target.contains_key(phase))
+            true => terms_outside(f, target, &split)
+                .map(|(phase, _)| phase)
                 .collect(),
         })
         .collect();

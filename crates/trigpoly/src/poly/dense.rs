@@ -670,7 +670,7 @@ impl<S: Copy + Send + Sync> Factors<S> {
             let bottom = top.saturating_sub(chunk).max(lo);
             // Whether a row has products in this chunk. A sparse box has many chunks that no
             // product reaches (Pearce(12): 13 045 of 19 257), whose marks need no scan.
-            let reached = if MARK {
+            let mut reached = if MARK {
                 let mut row = std::mem::replace(&mut waiting[current], NONE);
                 let reached = row != NONE;
                 while row != NONE {
@@ -703,7 +703,6 @@ impl<S: Copy + Send + Sync> Factors<S> {
                 true
             };
             // A square's diagonal products in this chunk: the partners by themselves.
-            let mut reached = reached;
             while diagonal < n && 2 * fa[diagonal] >= bottom {
                 let (g, c) = &partners[diagonal];
                 let off = (2 * g - bottom) as usize;
