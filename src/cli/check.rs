@@ -122,6 +122,7 @@ fn error_value(e: &FileError) -> serde_json::Value {
         "line": location.map(|l| l.line),
         "column": location.map(|l| l.column),
         "kind": e.kind.name(),
+        "claim": e.claim,
         "message": e.message,
         "hint": e.hint,
     })

@@ -29,9 +29,16 @@ pub fn render(report: &Report, options: &Options) -> String {
     out.push(r"\end{center}".into());
     for s in &report.sections {
         out.push(String::new());
-        // A title may end with a file's path, which breaks after its slashes.
-        let title = markup(&s.title).replace('/', r"/\allowbreak{}");
-        out.push(format!(r"\section*{{{}\quad {title}}}", s.number));
+        // A title may end with a file's path, which breaks after its slashes and underscores;
+        // ragged right, so that a break that leaves a short line is taken rather than a path
+        // set past the margin.
+        let title = markup(&s.title)
+            .replace('/', r"/\allowbreak{}")
+            .replace(r"\_", r"\_\allowbreak{}");
+        out.push(format!(
+            r"\section*{{\raggedright {}\quad {title}}}",
+            s.number
+        ));
         let mut rows: Vec<String> = Vec::new();
         for e in s.shown_entries() {
             if let Entry::Claim(c) = e {

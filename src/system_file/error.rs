@@ -101,6 +101,9 @@ pub struct FileError {
     pub message: String,
     /// What to do about it.
     pub hint: Option<String>,
+    /// The id of the claim whose check this is, for a claim that stopped at a limit (its
+    /// location is the claim's text in the file).
+    pub claim: Option<String>,
 }
 
 impl FileError {
@@ -112,6 +115,7 @@ impl FileError {
             location: None,
             message: message.into(),
             hint: None,
+            claim: None,
         }
     }
 
@@ -134,6 +138,13 @@ impl FileError {
     #[must_use]
     pub fn with_hint(mut self, hint: impl Into<String>) -> Self {
         self.hint = Some(hint.into());
+        self
+    }
+
+    /// The same error, as that of the claim `id`'s check.
+    #[must_use]
+    pub fn of_claim(mut self, id: impl Into<String>) -> Self {
+        self.claim = Some(id.into());
         self
     }
 

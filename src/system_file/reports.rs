@@ -168,7 +168,7 @@ impl LoadedSystem {
                     let result = claim
                         .undecided(&e.message)
                         .timed(start.elapsed().as_secs_f64());
-                    errors.push(e);
+                    errors.push(e.of_claim(&result.id));
                     Entry::Claim(result)
                 }
                 (Err(e), _) => return Err(e),

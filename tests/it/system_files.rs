@@ -2195,6 +2195,12 @@ fn check_goes_on_past_a_bad_file() {
             &serde_json::json!("expression")
         )
     );
+    // An error of the file itself belongs to no claim.
+    assert_eq!(
+        error.get("claim"),
+        Some(&serde_json::Value::Null),
+        "{error}"
+    );
     // Each claim as the file writes it, which reads back there.
     let claim = &v["claims"][0];
     assert_eq!(
@@ -2297,8 +2303,18 @@ fn check_reports_a_claim_past_a_limit_undecided() {
     );
     let error = &v["errors"][0];
     assert_eq!(
-        (&error["line"], &error["column"], &error["kind"]),
-        (&Value::from(11), &Value::from(14), &Value::from("limit"))
+        (
+            &error["line"],
+            &error["column"],
+            &error["kind"],
+            &error["claim"]
+        ),
+        (
+            &Value::from(11),
+            &Value::from(14),
+            &Value::from("limit"),
+            &Value::from("big")
+        )
     );
     // Markdown and LaTeX give the verdict and the limit too.
     for format in ["markdown", "latex"] {
@@ -2321,6 +2337,32 @@ fn check_reports_a_claim_past_a_limit_undecided() {
     assert_eq!(o.status.code(), Some(1), "{}", text(&o.stderr));
     assert!(stdout.contains("[big REFUTED]"), "{stdout}");
     assert!(!stdout.contains("UNDECIDED"), "{stdout}");
+}
+
+/// A LaTeX report's section heading holds the file's path, which fits the page wherever the
+/// file lies: the heading breaks after a path's slashes and underscores, and is set ragged
+/// right (justified, a break after `tmp/` left the line too loose, and TeX set the path 23 pt
+/// past the margin instead).
+#[test]
+fn latex_headings_fit_the_page_at_any_path() {
+    let claim = "name = \"limit test\"\nhamiltonian = \"p_x^2/2 + x^2/2\"\n\
+                 [phase_space]\ncoordinates = [\"x\"]\n\
+                 [[claim]]\nid = \"free\"\nclaim = \"{x, H} = p_x\"\n";
+    for dir in [
+        "system_files/claim-past-a-limit",
+        "a_directory_whose_name_is_longer_than_the_line_of_a_section_heading_can_hold_at_all",
+    ] {
+        let file = crate::scratch_text(dir, "limit.toml", claim);
+        let file = file.to_str().expect("a path");
+        let o = superint_in(
+            root(),
+            &["check", file, "--no-timings", "--format", "latex"],
+        );
+        let out = text(&o.stdout);
+        assert_eq!(o.status.code(), Some(0), "{}", text(&o.stderr));
+        assert!(out.contains(r"\section*{"), "{out}");
+        crate::cli::compile_within(&out, 1.0);
+    }
 }
 
 /// `check_report`, the library's strict check, answers with the first limit a claim reaches.
