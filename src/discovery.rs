@@ -24,8 +24,8 @@ use brackets::{EngineError, NamedFunction, System};
 use trigpoly::{Expr, GaussianRational, Limits, Rational, Style, Var, VarKind, VarSet};
 
 use crate::report::{
-    counted, first_free, ClaimResult, ClosureFacts, Entry, Equation, Equations, Facts,
-    ParameterFacts, Report, SearchFacts, Section, SummaryKind, TableResult,
+    counted, first_free, with_article, ClaimResult, ClosureFacts, Entry, Equation, Equations,
+    Facts, ParameterFacts, Report, SearchFacts, Section, SummaryKind, TableResult,
 };
 
 /// `F = Re(A e^{−ik·θ})` for an integral of one trigonometric order `k > 0` in one angle:
@@ -825,7 +825,7 @@ pub fn search_report(
     let when = cond.map(|c| format!(" at `{c}`")).unwrap_or_default();
     Ok((
         Report {
-            title: format!("Integrals of the {name}{when}"),
+            title: format!("Integrals of {}{when}", with_article(name)),
             subtitle: String::new(),
             sections,
             summary: SummaryKind::Claims,
@@ -1108,7 +1108,7 @@ pub fn closure_report(
     });
     Ok((
         Report {
-            title: format!("Closure of {gens} for the {name}{when}"),
+            title: format!("Closure of {gens} for {}{when}", with_article(name)),
             subtitle: String::new(),
             sections,
             summary: SummaryKind::Claims,

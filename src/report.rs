@@ -724,6 +724,27 @@ pub fn counted(n: impl std::fmt::Display, noun: &str) -> String {
     }
 }
 
+/// A system's name as a title says it after `of` or `for`: `the harmonic rotor`, but the name
+/// alone when it starts with an article or a possessive of its own (`my oscillator`, not `the
+/// my oscillator`).
+///
+/// ```
+/// use superint::report::with_article;
+///
+/// assert_eq!(with_article("harmonic rotor"), "the harmonic rotor");
+/// assert_eq!([with_article("My oscillator"), with_article("the Kepler problem")], ["My oscillator", "the Kepler problem"]);
+/// ```
+pub fn with_article(name: &str) -> String {
+    const DETERMINERS: [&str; 11] = [
+        "the", "a", "an", "this", "that", "my", "our", "your", "his", "her", "their",
+    ];
+    let first = name.split_whitespace().next().unwrap_or("");
+    match DETERMINERS.iter().any(|d| first.eq_ignore_ascii_case(d)) {
+        true => name.to_string(),
+        false => format!("the {name}"),
+    }
+}
+
 impl Report {
     /// The report with every claim's residual and every table's entry of more than
     /// `monomials` monomials outside the angles cut to the terms of its first `monomials`

@@ -413,18 +413,12 @@ impl LoadedSystem {
     /// The system's name as a title says it: `the harmonic rotor`; the file's name alone when
     /// the file gives none (`The claims of t1`, not `of the t1`), and the name alone when it
     /// starts with an article or a possessive of its own (`of my oscillator`, not `of the my
-    /// oscillator`).
-    pub(crate) fn the_name(&self) -> String {
-        const DETERMINERS: [&str; 11] = [
-            "the", "a", "an", "this", "that", "my", "our", "your", "his", "her", "their",
-        ];
+    /// oscillator`: [`crate::report::with_article`]).
+    pub fn the_name(&self) -> String {
         let stem = std::path::Path::new(&self.source.origin).file_stem();
-        let named_by_file = stem.is_some_and(|s| s.to_string_lossy() == self.name.as_str());
-        let first = self.name.split_whitespace().next().unwrap_or("");
-        let determined = DETERMINERS.iter().any(|d| first.eq_ignore_ascii_case(d));
-        match named_by_file || determined {
+        match stem.is_some_and(|s| s.to_string_lossy() == self.name.as_str()) {
             true => self.name.clone(),
-            false => format!("the {}", self.name),
+            false => crate::report::with_article(&self.name),
         }
     }
 

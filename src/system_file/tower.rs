@@ -479,8 +479,8 @@ pub fn family_tower_report_with_progress(
     let at_values = when.map_or_else(String::new, |c| format!(" at `{}`", c.text));
     let entries = vec![
         Entry::Text(format!(
-            "The family `{kmn} = {value}` of the {}, with `{{{kmn}, H}} = {eigen} {kmn}`.",
-            file.name
+            "The family `{kmn} = {value}` of {}, with `{{{kmn}, H}} = {eigen} {kmn}`.",
+            file.the_name()
         )),
         Entry::Tower(tower),
         proof,

@@ -1167,6 +1167,22 @@ fn scratch_system(name: &str, h: &str, angles: &str) -> String {
     file.to_str().expect("a UTF-8 path").to_string()
 }
 
+/// The titles of `search` and `closure` say a system's name as `check` does: `of the
+/// harmonic rotor`, but `of my pendulum` (it said `of the my pendulum`).
+#[test]
+fn search_and_closure_titles_keep_a_names_own_article() {
+    let file = scratch_system("my pendulum", "p_t^2/2 - cos(t)", "t");
+    for (args, title) in [
+        (vec!["search", &file, "--trig-degree", "1"], "Integrals of my pendulum\n"),
+        (vec!["closure", &file, "H"], "Closure of H for my pendulum\n"),
+    ] {
+        let out = superint(&args);
+        let text = String::from_utf8(out.stdout).expect("UTF-8");
+        assert_eq!(out.status.code(), Some(0), "{args:?}");
+        assert!(text.starts_with(title), "{text}");
+    }
+}
+
 /// The search finds the real integrals of a real Hamiltonian: a complex one is refused (the
 /// pendulum `p_t²/2 − e^{it}` gave `p_t² − 4 cos t` as an integral, which the proof refuted).
 #[test]
