@@ -1173,8 +1173,14 @@ fn scratch_system(name: &str, h: &str, angles: &str) -> String {
 fn search_and_closure_titles_keep_a_names_own_article() {
     let file = scratch_system("my pendulum", "p_t^2/2 - cos(t)", "t");
     for (args, title) in [
-        (vec!["search", &file, "--trig-degree", "1"], "Integrals of my pendulum\n"),
-        (vec!["closure", &file, "H"], "Closure of H for my pendulum\n"),
+        (
+            vec!["search", &file, "--trig-degree", "1"],
+            "Integrals of my pendulum\n",
+        ),
+        (
+            vec!["closure", &file, "H"],
+            "Closure of H for my pendulum\n",
+        ),
     ] {
         let out = superint(&args);
         let text = String::from_utf8(out.stdout).expect("UTF-8");
