@@ -1,0 +1,298 @@
+//! The report of `superint closure` ([`closure_report`]): the brackets of the generated algebra
+//! in its generators, the relations among them, each proved.
+
+use std::time::Instant;
+
+use brackets::closure::{closure_of, Bracket, Closure, ClosureOptions};
+use brackets::{EngineError, NamedFunction, System};
+use trigpoly::{Expr, GaussianRational, Style};
+
+use crate::report::{
+    counted, with_article, ClaimResult, ClosureFacts, Entry, Equation, Equations, Facts, Report,
+    Section, SummaryKind, TableResult,
+};
+
+use super::{agreeing, parameter_facts, HeldAt};
+
+/// A relation `R = 0` as `positive terms = negated negative terms`, in the paper's notation:
+/// `P11² + Q11² = 2MωL + 2M F1 − Mω²I`.
+pub fn relation_text(poly: &Expr) -> String {
+    let vars = poly.vars();
+    let mut left = Vec::new();
+    let mut right = Vec::new();
+    for t in poly.terms() {
+        let c = t.coeff();
+        if !c.is_real() {
+            return format!("{} = 0", poly.render(Style::Unicode));
+        }
+        let e = t.exponents();
+        if c.re.is_negative() {
+            right.push((-&c, e));
+        } else {
+            left.push((c, e));
+        }
+    }
+    let side = |terms: Vec<(GaussianRational, Vec<i64>)>| -> String {
+        if terms.is_empty() {
+            return "0".into();
+        }
+        Expr::from_terms(vars, terms)
+            .map(|e| e.render(Style::Unicode))
+            .unwrap_or_else(|_| "?".into())
+    };
+    format!("{} = {}", side(left), side(right))
+}
+
+/// The report of a closure: the structure table, what lies outside, every bracket and relation
+/// proved. The generators need not be functions of the system (an instance `P_{1,1}`, a
+/// bracket); with names the system defines, [`brackets::closure()`] gives the [`Closure`] alone.
+///
+/// ```
+/// use superint::brackets::{systems, ClosureOptions, NamedFunction};
+/// use superint::discovery::closure_report;
+///
+/// // su(2): L, G1, G2 close on themselves, {G1, G2} = −ω² L, with the Casimir of degree 2.
+/// let rotor = systems::harmonic_rotor();
+/// let generators: Vec<NamedFunction> = ["L", "G1", "G2"]
+///     .iter()
+///     .map(|&n| Ok(NamedFunction::new(n, n, rotor.get(n)?.clone())))
+///     .collect::<Result<_, superint::brackets::EngineError>>()?;
+/// let (report, algebra) = closure_report("harmonic rotor", &rotor, &generators, &ClosureOptions::new(2))?;
+/// assert!(algebra.closes() && report.all_proved());
+/// assert_eq!(algebra.render_bracket(1, 2), "−ω² L");
+/// # Ok::<(), superint::brackets::EngineError>(())
+/// ```
+pub fn closure_report(
+    name: &str,
+    system: &System,
+    generators: &[NamedFunction],
+    options: &ClosureOptions,
+) -> Result<(Report, Closure), EngineError> {
+    let start = Instant::now();
+    let c = closure_of(system, generators, options)?;
+    let cond = c.condition.clone();
+    let held = HeldAt::new(options.condition.as_ref(), system.vars(), &c.parameters);
+    let fixed = held.fixed();
+    // A result that could not be lifted back to the parameters holds at the fixed values only,
+    // and says so in its condition.
+    let unlifted = |symbolic: bool| !symbolic && !c.parameters.is_empty();
+    let note = |symbolic: bool| {
+        unlifted(symbolic).then(|| "not lifted back to the parameters (no symbolic lift)".into())
+    };
+    let condition = |symbolic: bool| held.at(unlifted(symbolic));
+    let results: Vec<bool> = c
+        .brackets
+        .iter()
+        .enumerate()
+        .flat_map(|(a, row)| row.iter().skip(a + 1))
+        .filter_map(|b| match b {
+            Bracket::Polynomial { symbolic, .. } => Some(*symbolic),
+            Bracket::Outside { .. } => None,
+        })
+        .chain(c.relations.iter().map(|r| r.symbolic))
+        .collect();
+    let stuck = results.iter().filter(|&&s| unlifted(s)).count();
+    let gens: Vec<String> = c.display.iter().map(|g| format!("`{g}`")).collect();
+    let gens = gens.join(", ");
+    let lift = match (c.parameters.is_empty(), stuck) {
+        (true, _) => String::new(),
+        (false, 0) => format!(
+            " at `{fixed}`, the coefficients then lifted back to the parameters by homogeneity"
+        ),
+        (false, k) => format!(
+            " at `{fixed}`, the coefficients then lifted back to the parameters by homogeneity \
+             where the weights allow: {k} of the {} brackets and relations could not be lifted, \
+             and {} at `{fixed}` only (so does the table)",
+            results.len(),
+            agreeing(k, "holds", "hold")
+        ),
+    };
+    let mut entries = vec![Entry::Text(format!(
+        "Every bracket `{{G_a, G_b}}` of the generators {gens} written as a polynomial of \
+         degree `≤ {}` in them, by exact linear algebra on the {} (their span has dimension \
+         {}){lift}; each expansion checked by the engine.",
+        c.degree,
+        counted(c.monomials, "monomial"),
+        c.rank,
+    ))];
+    if !options.symbolic.is_empty() {
+        let names: Vec<&str> = options
+            .symbolic
+            .iter()
+            .map(|v| system.vars().variable(*v).unicode())
+            .collect();
+        entries.push(Entry::Text(format!(
+            "Parameters kept symbolic: `{}`. The coefficients are polynomials of degree `≤ {}` \
+             in them, found from the symbolic expansions, so what is found holds for every \
+             value of them.",
+            names.join(", "),
+            options.parameters_degree
+        )));
+    }
+    let when = cond
+        .clone()
+        .map(|c| format!(" at `{c}`"))
+        .unwrap_or_default();
+    let table_at = match (stuck, &cond) {
+        (0, _) => when.clone(),
+        (_, Some(c)) => format!(" at `{c}`, `{fixed}`"),
+        (_, None) => format!(" at `{fixed}`"),
+    };
+    entries.push(Entry::Table(TableResult::new(
+        c.table(),
+        system,
+        &format!("the {name}{table_at}"),
+    )));
+    let outside = c.outside();
+    if outside.is_empty() {
+        entries.push(Entry::Text(format!(
+            "The table closes: every bracket is a polynomial of degree `≤ {}` in the generators.",
+            c.degree
+        )));
+    } else {
+        // A generator that is no integral has brackets with no reason to close among
+        // integrals; what search finds closes a table of integrals.
+        let mut moving = Vec::new();
+        for (
+            g,
+            NamedFunction {
+                display, expr: e, ..
+            },
+        ) in generators.iter().enumerate()
+        {
+            if !outside.iter().any(|&(a, b)| a == g || b == g) {
+                continue;
+            }
+            let flow = match &options.condition {
+                Some(cond) => system.flow_when(e, cond)?,
+                None => system.flow(e)?,
+            };
+            if !flow.vanishes()? {
+                moving.push(format!("`{display}`"));
+            }
+        }
+        let advice = match moving.len() {
+            0 => {
+                "A higher `--degree`, or what `superint search` finds added to the generators, may \
+                 close the table."
+                    .to_string()
+            }
+            1 => format!(
+                "{} is no integral (its bracket with `H` is not zero{when}), so its brackets \
+                 need not close among the others.",
+                moving[0]
+            ),
+            _ => format!(
+                "{} are no integrals (their brackets with `H` are not zero{when}), so their \
+                 brackets need not close among the others.",
+                moving.join(", ")
+            ),
+        };
+        entries.push(Entry::Text(format!(
+            "The brackets marked `*` are no polynomials of degree `≤ {}` in the generators; \
+             here they are. {advice}",
+            c.degree
+        )));
+        entries.push(Entry::Equations(Equations {
+            caption: String::new(),
+            lines: outside
+                .iter()
+                .map(|&(a, b)| {
+                    let Bracket::Outside { bracket } = &c.brackets[a][b] else {
+                        unreachable!("outside() lists the brackets outside")
+                    };
+                    let lhs = format!("{{{}, {}}}", c.display[a], c.display[b]);
+                    Equation::new(&lhs, bracket.clone())
+                })
+                .collect(),
+        }));
+    }
+    let r = c.names.len();
+    let mut shown = 0;
+    for a in 0..r {
+        for b in a + 1..r {
+            if let Bracket::Polynomial { poly, symbolic } = &c.brackets[a][b] {
+                if poly.is_zero() {
+                    continue;
+                }
+                shown += 1;
+                let mut claim = ClaimResult::derived(
+                    &format!("B{shown}"),
+                    &format!(
+                        "{{{}, {}}} = {}",
+                        c.display[a],
+                        c.display[b],
+                        poly.render(Style::Unicode)
+                    ),
+                    true,
+                    note(*symbolic),
+                );
+                claim = claim.at(condition(*symbolic));
+                let ascii = poly.render(Style::Ascii);
+                let claim = claim.written(&format!("{{{}, {}}} = {ascii}", c.names[a], c.names[b]));
+                entries.push(Entry::Claim(claim));
+            }
+        }
+    }
+    let symbolic = &options.symbolic[..];
+    entries.push(Entry::Data(Facts::Closure(ClosureFacts {
+        generators: c.names.clone(),
+        degree: c.degree,
+        monomials: c.monomials,
+        rank: c.rank,
+        parameters: parameter_facts(
+            system.vars(),
+            &c.parameters,
+            (!symbolic.is_empty()).then_some((symbolic, options.parameters_degree)),
+            &cond,
+        ),
+        outside: outside
+            .iter()
+            .map(|&(a, b)| (c.names[a].clone(), c.names[b].clone()))
+            .collect(),
+        unlifted: stuck,
+        brackets: (1..=shown).map(|k| format!("B{k}")).collect(),
+        relations: (1..=c.relations.len()).map(|k| format!("R{k}")).collect(),
+    })));
+    let mut sections = vec![Section {
+        number: 1,
+        title: "Structure".into(),
+        file: None,
+        entries,
+    }];
+    let mut entries = vec![Entry::Text(format!(
+        "The polynomial relations among the generators up to degree {}, each minimal (not a \
+         combination of multiples of lower ones), each checked by expanding it.",
+        c.degree
+    ))];
+    if c.relations.is_empty() {
+        entries.push(Entry::Text("None.".into()));
+    }
+    for (k, rel) in c.relations.iter().enumerate() {
+        let mut claim = ClaimResult::derived(
+            &format!("R{}", k + 1),
+            &relation_text(&rel.poly),
+            true,
+            note(rel.symbolic),
+        );
+        claim = claim.at(condition(rel.symbolic));
+        let claim = claim.written(&format!("{} = 0", rel.poly.render(Style::Ascii)));
+        entries.push(Entry::Claim(claim));
+    }
+    sections.push(Section {
+        number: 2,
+        title: "Relations".into(),
+        file: None,
+        entries,
+    });
+    Ok((
+        Report {
+            title: format!("Closure of {gens} for {}{when}", with_article(name)),
+            subtitle: String::new(),
+            sections,
+            summary: SummaryKind::Claims,
+            seconds: start.elapsed().as_secs_f64(),
+        },
+        c,
+    ))
+}

@@ -1,0 +1,153 @@
+//! The inputs of the discovery commands: the built-in systems by name ([`builtin_system`]),
+//! and conditions, symbolic parameters and fixed values as the command line gives them.
+
+use brackets::{EngineError, System};
+use trigpoly::{Expr, Limits, Rational, Style, Var};
+
+/// The built-in systems `superint search --system NAME` knows, for use without a system file.
+pub const BUILTIN_SYSTEMS: [&str; 6] = [
+    "harmonic",
+    "gravity",
+    "anisotropic-3-5",
+    "anisotropic-1-2",
+    "planar-i",
+    "planar-ii",
+];
+
+/// Defines `P{m}{n}, Q{m}{n}` (from the ladder `z`) and `R{m}{n}, S{m}{n}` (from `w`) for
+/// `1 ≤ m, n ≤ 3`: the real and imaginary parts of `z^m e^{−inθ}` and `w^m e^{−inθ}`.
+fn define_resonant(s: &mut System, z: &str, w: &str) -> Result<(), EngineError> {
+    for m in 1..=3 {
+        for n in 1..=3 {
+            let k = s.resonant(z, m, n)?;
+            s.define(&format!("P{m}{n}"), &format!("P{m}{n}"), k.p);
+            s.define(&format!("Q{m}{n}"), &format!("Q{m}{n}"), k.q);
+            let k = s.resonant(w, m, n)?;
+            s.define(&format!("R{m}{n}"), &format!("R{m}{n}"), k.p);
+            s.define(&format!("S{m}{n}"), &format!("S{m}{n}"), k.q);
+        }
+    }
+    Ok(())
+}
+
+/// A built-in system by name (see [`BUILTIN_SYSTEMS`]), with its display name. The harmonic
+/// rotor and the rotor under gravity get, besides the paper's functions, the other circular
+/// ladder `W = w̄ + iMωū` (`{W, H} = iωW`, primed under gravity) and `Hp = F1 − F2`; with
+/// `resonant`, also `P_{mn} + iQ_{mn} = Z^m e^{−inθ}` and `R_{mn} + iS_{mn} = W^m e^{−inθ}`
+/// for `m, n ≤ 3` (named `P11`, `S23`, …). Its results are held to `limits`.
+pub fn builtin_system(
+    name: &str,
+    resonant: bool,
+    limits: Limits,
+) -> Result<Option<(String, System)>, EngineError> {
+    use brackets::systems::Rotor;
+    let s = match name {
+        "harmonic" => {
+            let mut s = Rotor::Harmonic.system(limits)?;
+            s.define_parsed("W", "W", "p_x - i*p_y + i*M*omega*(x - i*y)")?;
+            s.define_parsed("Hp", "Hp", "F1 - F2")?;
+            if resonant {
+                define_resonant(&mut s, "Z", "W")?;
+            }
+            ("harmonic rotor".to_string(), s)
+        }
+        "gravity" => {
+            let mut s = Rotor::Gravity.system(limits)?;
+            s.define_parsed("Wp", "W'", "p_x - i*p_y + i*M*omega*(x - i*yp)")?;
+            s.define_parsed("Hp", "Hp", "F1 - F2")?;
+            if resonant {
+                define_resonant(&mut s, "Zp", "Wp")?;
+            }
+            ("rotor under gravity".to_string(), s)
+        }
+        "anisotropic-3-5" => (
+            "anisotropic 3:5 rotor".into(),
+            Rotor::Anisotropic(3, 5).system(limits)?,
+        ),
+        "anisotropic-1-2" => (
+            "anisotropic 1:2 rotor".into(),
+            Rotor::Anisotropic(1, 2).system(limits)?,
+        ),
+        "planar-i" => ("rotor with V_I".into(), Rotor::PlanarI.system(limits)?),
+        "planar-ii" => ("rotor with V_II".into(), Rotor::PlanarII.system(limits)?),
+        _ => return Ok(None),
+    };
+    Ok(Some(s))
+}
+
+/// Reads a condition `var = value[, var = value]` (such as `p_theta = 2*I*omega/3`), values
+/// parsed by `parse`.
+pub fn parse_condition(
+    system: &System,
+    text: &str,
+    parse: &dyn Fn(&str) -> Result<Expr, String>,
+) -> Result<brackets::Condition, String> {
+    let vars = system.vars();
+    let mut subs = Vec::new();
+    let mut shown = Vec::new();
+    for piece in text.split(',') {
+        let Some((lhs, rhs)) = piece.split_once('=') else {
+            return Err(format!(
+                "'{piece}': a condition reads `variable = value`, such as 'p_theta = 2*I*omega/3'"
+            ));
+        };
+        let lhs = lhs.trim();
+        let Some(v) = vars.lookup(lhs) else {
+            return Err(format!("'{lhs}' is not a variable of the system"));
+        };
+        let value = parse(rhs.trim())?;
+        shown.push(format!(
+            "{} = {}",
+            vars.variable(v).unicode(),
+            value.render(Style::Unicode)
+        ));
+        subs.push((v, value));
+    }
+    brackets::Condition::all(&shown.join(", "), subs).map_err(|e| e.to_string())
+}
+
+/// The parameter called `name`.
+fn parameter(system: &System, name: &str) -> Result<Var, String> {
+    let vars = system.vars();
+    vars.lookup(name)
+        .filter(|v| vars.variable(*v).kind() == trigpoly::VarKind::Parameter)
+        .ok_or_else(|| format!("'{name}' is not a parameter of the system"))
+}
+
+/// Parameters named in `A,B` (kept symbolic by a search).
+pub fn parse_symbolic(system: &System, text: &str) -> Result<Vec<Var>, String> {
+    text.split(',')
+        .map(str::trim)
+        .filter(|p| !p.is_empty())
+        .map(|name| parameter(system, name))
+        .collect()
+}
+
+/// Reads parameter values `omega=1,M=2/3`.
+pub fn parse_fixed(system: &System, text: &str) -> Result<Vec<(Var, Rational)>, String> {
+    let mut out = Vec::new();
+    for piece in text.split(',').filter(|p| !p.trim().is_empty()) {
+        let Some((name, value)) = piece.split_once('=') else {
+            return Err(format!(
+                "'{piece}': give a value as NAME=VALUE, such as omega=1"
+            ));
+        };
+        let name = name.trim();
+        let v = parameter(system, name)?;
+        if out.iter().any(|(w, _)| *w == v) {
+            return Err(format!("'{name}' is given two values"));
+        }
+        let q: Rational = value
+            .trim()
+            .parse()
+            .map_err(|_| format!("'{}' is not a rational number", value.trim()))?;
+        if q.is_zero() {
+            return Err(format!(
+                "{name} = 0: parameters are fixed to nonzero values (a value the lift back can \
+                 divide by); to study the system at {name} = 0, set it with --when '{name} = 0'"
+            ));
+        }
+        out.push((v, q));
+    }
+    Ok(out)
+}
