@@ -8,7 +8,7 @@ use trigpoly::Expr;
 
 use super::claims::ClaimSpec;
 use super::error::{ErrorKind, FileError};
-use super::load::{check_display, index_refusal, BadName, PrintedNames, Refusal};
+use super::names::{check_display, index_refusal, BadName, PrintedNames, Refusal};
 use super::text::{Source, Text};
 use super::{Family, LoadedSystem};
 use crate::report::Expect;

@@ -43,6 +43,7 @@ mod code;
 mod error;
 mod load;
 mod model;
+mod names;
 mod plot;
 mod pretty;
 mod reports;
@@ -52,9 +53,8 @@ mod tower;
 
 pub use claims::{CheckedClaim, ClaimForm, ClaimSpec};
 pub use error::{ErrorKind, FileError, Location};
-pub use load::{
-    load, load_bytes, load_str, reserved, unwritable_letter, BadName, PrintedNames, Refusal,
-};
+pub use load::{load, load_bytes, load_str};
+pub use names::{reserved, unwritable_letter, BadName, PrintedNames, Refusal};
 pub use plot::{Against, PlotFunctions, PlotInput, StartValue};
 pub use reports::{
     bracket_report, check_each, check_report, expand_report, rank_report, table_report,
