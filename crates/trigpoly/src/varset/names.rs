@@ -1,0 +1,281 @@
+//! How a variable's name is written: the reserved names, identifiers, the text and LaTeX forms
+//! of a name (Greek letters spelled out or written, subscripts, bars), and the letters LaTeX
+//! output cannot write.
+
+use crate::print::write_display;
+
+/// Names that expressions give a meaning of their own: `i` and the functions (a variable
+/// named `re` made `re(x + i p)` the real part, and `re*(x + i p)` a product).
+pub const RESERVED: &[&str] = &["i", "cos", "sin", "exp", "conj", "re", "im"];
+
+/// A display name as text and as LaTeX, when it is an identifier, possibly with a bar (a
+/// combining macron) and primes: `A_x` → (`A_x`, `A_{x}`), `G1'` → (`G1'`, `G_{1}'`), `Z̄` →
+/// (`Z̄`, `\bar{Z}`), `omega` → (`ω`, `\omega`). Anything else has no such forms.
+pub fn display_forms(display: &str) -> Option<(String, String)> {
+    let spelled: String = display
+        .chars()
+        .flat_map(|c| match unbarred(c) {
+            Some(base) => [base, '\u{304}'].into_iter().take(2),
+            None => [c, c].into_iter().take(1),
+        })
+        .collect();
+    let marked = spelled.trim_end_matches('\'');
+    let primes = &spelled[marked.len()..];
+    let (base, bar) = match marked.strip_suffix('\u{304}') {
+        Some(base) => (base, true),
+        None => (marked, false),
+    };
+    // A bar may also end a piece before a subscript, `Z̄_x`, which [`Piece::of`] writes.
+    let bars_end_pieces = base.split('_').all(|p| {
+        !p.trim_end_matches('\u{304}').contains('\u{304}') && p.matches('\u{304}').count() <= 1
+    });
+    if !bars_end_pieces || !is_identifier(&base.replace('\u{304}', "")) {
+        return None;
+    }
+    let (unicode, latex) = render_name(base);
+    Some(match bar {
+        true => (
+            format!("{unicode}\u{304}{primes}"),
+            format!("\\bar{{{latex}}}{primes}"),
+        ),
+        false => (format!("{unicode}{primes}"), format!("{latex}{primes}")),
+    })
+}
+
+/// The letter under a precomposed bar, `Ā` → `A`, which a display name may have as `A` and a
+/// combining macron (U+0304).
+pub fn unbarred(c: char) -> Option<char> {
+    const BARRED: &str = "ĀāĒēĪīŌōŪūȲȳ";
+    let k = BARRED.chars().position(|b| b == c)?;
+    "AaEeIiOoUuYy".chars().nth(k)
+}
+
+/// Whether `s` can name a variable or a function: letters, digits and `_`, not starting with
+/// a digit.
+pub fn is_identifier(s: &str) -> bool {
+    let mut chars = s.chars();
+    matches!(chars.next(), Some(c) if c.is_alphabetic() || c == '_')
+        && chars.all(|c| c.is_alphanumeric() || c == '_')
+}
+
+pub(super) const GREEK: &[(&str, &str, &str)] = &[
+    ("alpha", "α", r"\alpha"),
+    ("beta", "β", r"\beta"),
+    ("gamma", "γ", r"\gamma"),
+    ("delta", "δ", r"\delta"),
+    ("epsilon", "ε", r"\epsilon"),
+    ("zeta", "ζ", r"\zeta"),
+    ("eta", "η", r"\eta"),
+    ("theta", "θ", r"\theta"),
+    ("iota", "ι", r"\iota"),
+    ("kappa", "κ", r"\kappa"),
+    ("lambda", "λ", r"\lambda"),
+    ("mu", "μ", r"\mu"),
+    ("nu", "ν", r"\nu"),
+    ("xi", "ξ", r"\xi"),
+    ("rho", "ρ", r"\rho"),
+    ("sigma", "σ", r"\sigma"),
+    ("tau", "τ", r"\tau"),
+    ("phi", "φ", r"\varphi"),
+    ("chi", "χ", r"\chi"),
+    ("psi", "ψ", r"\psi"),
+    ("omega", "ω", r"\omega"),
+    ("pi", "π", r"\pi"),
+    ("upsilon", "υ", r"\upsilon"),
+    ("omicron", "ο", "o"),
+    ("vartheta", "ϑ", r"\vartheta"),
+    ("varrho", "ϱ", r"\varrho"),
+    ("varsigma", "ς", r"\varsigma"),
+    ("varpi", "ϖ", r"\varpi"),
+    ("Gamma", "Γ", r"\Gamma"),
+    ("Delta", "Δ", r"\Delta"),
+    ("Theta", "Θ", r"\Theta"),
+    ("Lambda", "Λ", r"\Lambda"),
+    ("Phi", "Φ", r"\Phi"),
+    ("Psi", "Ψ", r"\Psi"),
+    ("Omega", "Ω", r"\Omega"),
+    ("Xi", "Ξ", r"\Xi"),
+    ("Pi", "Π", r"\Pi"),
+    ("Sigma", "Σ", r"\Sigma"),
+    ("Upsilon", "Υ", r"\Upsilon"),
+];
+
+/// A unicode name with its Greek letters spelled out, piece by piece between underscores and
+/// before trailing digits: `p_θ` → `p_theta`, `ω1` → `omega1`, `Ω_x` → `Omega_x`; `None` for an
+/// ASCII name, which has none.
+pub(super) fn spell_out(unicode: &str) -> Option<String> {
+    if unicode.is_ascii() {
+        return None;
+    }
+    let piece = |p: &str| -> String {
+        let letters = p.trim_end_matches(|c: char| c.is_ascii_digit());
+        match GREEK.iter().find(|(_, uni, _)| *uni == letters) {
+            Some((ascii, _, _)) => format!("{ascii}{}", &p[letters.len()..]),
+            None => p.to_string(),
+        }
+    };
+    Some(unicode.split('_').map(piece).collect::<Vec<_>>().join("_"))
+}
+
+/// `omega_x` → (`ω_x`, `\omega_{x}`); `p_theta` → (`p_θ`, `p_{\theta}`); `G1` → (`G1`, `G_{1}`);
+/// `q₁` → (`q₁`, `q_{1}`); `ħ` → (`ħ`, `{\hbar}`). The LaTeX is ASCII unless the name has a letter
+/// of no LaTeX command here ([`latex_unwritable`]).
+pub(super) fn render_name(name: &str) -> (String, String) {
+    match name.split_once('_') {
+        Some((head, tail)) if !head.is_empty() && !tail.is_empty() => {
+            let head = Piece::of(head);
+            let subs: Vec<Piece> = tail.split('_').map(Piece::of).collect();
+            let unicode: Vec<&str> = subs.iter().map(|s| s.unicode.as_str()).collect();
+            let latex: Vec<&str> = subs.iter().map(|s| s.body.as_str()).collect();
+            (
+                format!("{}_{}", head.unicode, unicode.join("_")),
+                format!("{}_{{{}}}", head.latex(), latex.join(",")),
+            )
+        }
+        _ => {
+            // Trailing digits become a subscript in LaTeX: G1 → G_{1}.
+            let split = name.trim_end_matches(|c: char| c.is_ascii_digit());
+            if !split.is_empty() && split.len() < name.len() {
+                let piece = Piece::of(split);
+                let digits = &name[split.len()..];
+                return (
+                    format!("{}{digits}", piece.unicode),
+                    format!("{}_{{{digits}}}", piece.latex()),
+                );
+            }
+            let piece = Piece::of(name);
+            (piece.unicode.clone(), piece.latex())
+        }
+    }
+}
+
+/// The first character of `name` that its LaTeX form cannot write in ASCII (a letter beyond
+/// ASCII, the Greek letters, `ħ`, `ℓ` and the subscript digits), if any: such a name would stop
+/// `pdflatex`.
+pub fn latex_unwritable(name: &str) -> Option<char> {
+    // An ASCII name writes ASCII: Greek letters spelled out become commands, and every other
+    // rule rewrites a character beyond ASCII.
+    if name.is_ascii() {
+        return None;
+    }
+    let (_, latex) = render_name(name);
+    latex.chars().find(|c| !c.is_ascii())
+}
+
+/// The letters a name may have, in words, for messages.
+pub const LATEX_LETTERS: &str =
+    "a name's letters are ASCII, Greek (alpha or α), ħ, ℓ and the subscript digits ₀–₉";
+
+/// Letters beyond ASCII and Greek with a LaTeX command of their own.
+const LETTERS: &[(char, &str)] = &[('ħ', r"{\hbar}"), ('ℓ', r"{\ell}")];
+
+/// The subscript digits `₀`–`₉`.
+const SUBSCRIPT_DIGITS: &str = "₀₁₂₃₄₅₆₇₈₉";
+
+/// The ASCII digit a subscript digit writes (`₁` → `1`).
+fn subscript_digit(c: char) -> Option<char> {
+    let k = SUBSCRIPT_DIGITS.chars().position(|d| d == c)?;
+    char::from_digit(k as u32, 10)
+}
+
+/// A piece's LaTeX letter by letter, for a word no rule above writes whole: each Greek letter,
+/// `ħ` and `ℓ` as its command in braces (`ωx` → `{\omega}x`), a run of subscript digits as a
+/// subscript (`x₁y` → `x_{1}y`; as digits after `_` or at the start, where there is nothing to
+/// hang a subscript on: `x_₁` → `x_{1}`), anything else as it is, which
+/// [`latex_unwritable`] then names.
+fn letter_by_letter(p: &str) -> String {
+    let mut body = String::new();
+    let mut digits = String::new();
+    let mut chars = p.chars().peekable();
+    while let Some(c) = chars.next() {
+        if let Some(digit) = subscript_digit(c) {
+            digits.push(digit);
+            if chars.peek().is_some_and(|n| SUBSCRIPT_DIGITS.contains(*n)) {
+                continue;
+            }
+            match body.is_empty() || body.ends_with('_') {
+                true => body.push_str(&digits),
+                false => write_display(&mut body, format_args!("_{{{digits}}}")),
+            }
+            digits.clear();
+            continue;
+        }
+        let greek = GREEK.iter().find(|g| g.1.chars().eq([c])).map(|g| g.2);
+        match greek.or_else(|| LETTERS.iter().find(|l| l.0 == c).map(|l| l.1)) {
+            Some(tex) if tex.starts_with('\\') => {
+                write_display(&mut body, format_args!("{{{tex}}}"))
+            }
+            Some(tex) => body.push_str(tex),
+            None => body.push(c),
+        }
+    }
+    body
+}
+
+/// One piece of a name between underscores, as text and as LaTeX.
+struct Piece {
+    unicode: String,
+    /// The LaTeX, without `\mathrm` (a subscript sets a word upright as it is).
+    body: String,
+    /// Whether the LaTeX is a word of several letters, upright in `\mathrm` outside a subscript.
+    word: bool,
+}
+
+impl Piece {
+    fn of(p: &str) -> Piece {
+        for (ascii, uni, tex) in GREEK {
+            if p == *ascii || p == *uni {
+                return Piece::symbol(uni, tex);
+            }
+        }
+        // Subscript digits: `q₁` → `q_{1}`.
+        let letters = p.trim_end_matches(|c| SUBSCRIPT_DIGITS.contains(c));
+        if !letters.is_empty() && letters.len() < p.len() {
+            let digits: String = p[letters.len()..]
+                .chars()
+                .filter_map(subscript_digit)
+                .collect();
+            let base = Piece::of(letters);
+            return Piece {
+                unicode: p.to_string(),
+                body: format!("{}_{{{digits}}}", base.latex()),
+                word: false,
+            };
+        }
+        // A Greek letter with digits after it: `theta1` → `θ1`, `\theta 1`.
+        let letters = p.trim_end_matches(|c: char| c.is_ascii_digit());
+        if letters.len() < p.len() {
+            if let Some((_, uni, tex)) = GREEK.iter().find(|g| letters == g.0 || letters == g.1) {
+                let digits = &p[letters.len()..];
+                return Piece::symbol(&format!("{uni}{digits}"), &format!("{tex} {digits}"));
+            }
+        }
+        // A bar over the piece: `Z̄` → `\bar{Z}` (display names only: no variable's name has one).
+        if let Some(base) = p.strip_suffix('\u{304}').filter(|b| !b.is_empty()) {
+            let base = Piece::of(base);
+            return Piece::symbol(p, &format!("\\bar{{{}}}", base.latex()));
+        }
+        Piece {
+            unicode: p.to_string(),
+            body: letter_by_letter(p),
+            word: p.chars().count() > 1,
+        }
+    }
+
+    fn symbol(unicode: &str, tex: &str) -> Piece {
+        Piece {
+            unicode: unicode.to_string(),
+            body: tex.to_string(),
+            word: false,
+        }
+    }
+
+    /// The LaTeX outside a subscript.
+    fn latex(&self) -> String {
+        if self.word {
+            format!(r"\mathrm{{{}}}", self.body)
+        } else {
+            self.body.clone()
+        }
+    }
+}
