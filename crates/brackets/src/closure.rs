@@ -411,35 +411,7 @@ pub fn closure_of(
         .map(|a| a < r && is_phase_free(&g_sym[a]))
         .collect();
     let varying = constant[..r].iter().filter(|c| !**c).count();
-    let count = monomial_count(varying, options.degree)
-        .saturating_mul(monomial_count(symbolic.len(), options.parameters_degree));
-    if count > options.max_monomials as u128 {
-        let with_parameters = match symbolic.len() {
-            0 => String::new(),
-            n => format!(
-                " (times those of degree ≤ {} in the {n} symbolic parameter{})",
-                options.parameters_degree,
-                if n == 1 { "" } else { "s" }
-            ),
-        };
-        let count = if count == u128::MAX {
-            "more than 2^128".to_string()
-        } else {
-            count.to_string()
-        };
-        return Err(EngineError::Invalid(format!(
-            "there are {count} monomials of degree ≤ {} in the {}{with_parameters}, \
-             more than the limit {}: lower the degree, or raise the limit \
-             (`ClosureOptions::max_monomials`; on the command line, --max-monomials)",
-            options.degree,
-            if varying == 1 {
-                "generator".to_string()
-            } else {
-                format!("{varying} generators")
-            },
-            options.max_monomials
-        )));
-    }
+    check_monomial_count(varying, symbolic.len(), options)?;
     let parameter_monomials = monomials(symbolic.len(), options.parameters_degree);
     let monos: Vec<Vec<u32>> = monomials(r, options.degree)
         .into_iter()
@@ -537,86 +509,16 @@ pub fn closure_of(
     // Q is a space over Q(i), of half its dimension, which is the monomials' span.
     let rank = (columns.len() - kernel.len()) / if complex { 2 } else { 1 };
     // Brackets: each target in the span of the columns.
-    let mut echelon = Echelon::<Fp>::new(nrows);
-    let mut exact: Option<Echelon<Rational>> = None;
-    let mut fp_ok = true;
-    for (j, c) in columns.iter().enumerate() {
-        match modular::to_fp(c) {
-            Some(v) => {
-                echelon.insert(j, &v);
-            }
-            None => fp_ok = false,
-        }
-    }
-    let mut solutions: HashMap<(usize, usize), Option<SparseVec<Rational>>> = HashMap::new();
-    for (&key, target) in &targets {
-        let mut found = None;
-        let mut decided = false;
-        if fp_ok {
-            if let Some(tf) = modular::to_fp(target) {
-                match echelon.express(&tf) {
-                    None => decided = true, // independent modulo p: certainly outside
-                    Some(dep) => {
-                        if let Some(sol) = modular::reconstruct_vec(&dep) {
-                            if combination_equals(&columns, nrows, &sol, target) {
-                                found = Some(sol);
-                                decided = true;
-                            }
-                        }
-                    }
-                }
-            }
-        }
-        if !decided {
-            let e = exact.get_or_insert_with(|| {
-                let mut e = Echelon::<Rational>::new(nrows);
-                for (j, c) in columns.iter().enumerate() {
-                    e.insert(j, c);
-                }
-                e
-            });
-            found = e.express(target);
-        }
-        solutions.insert(key, found);
-    }
+    let solutions = express_targets(&columns, nrows, &targets);
     timings.solve = t.elapsed().as_secs_f64();
 
     // The ring for printing: the parameters and one symbol per generator.
     let t = Instant::now();
-    let mut builder = VarSet::builder();
-    for v in vars.vars() {
-        if vars.variable(v).kind() == VarKind::Parameter {
-            builder = builder.parameter(vars.variable(v).name());
-        }
-    }
-    let mut shown = builder.clone();
-    for NamedFunction { name, display, .. } in generators {
-        if vars
-            .lookup(name)
-            .is_some_and(|v| vars.variable(v).kind() == VarKind::Parameter)
-        {
-            return Err(EngineError::Invalid(format!(
-                "the generator '{name}' has the name of a parameter"
-            )));
-        }
-        builder = builder.coordinate(name).word();
-        shown = shown.coordinate(name).shown_as(display).word();
-    }
-    // Each generator printed as its display name (`A_x` for `Ax`), unless two would then
-    // print alike.
-    let ring = shown
-        .build()
-        .or_else(|_| builder.build())
-        .map_err(|e| EngineError::Invalid(format!("cannot name the generators: {e}")))?;
-    let symbols: Vec<Var> = generators
-        .iter()
-        .map(|g| ring.lookup(&g.name).expect("declared"))
-        .collect();
-    let param_in_ring: HashMap<Var, Var> = vars
-        .vars()
-        .filter(|v| vars.variable(*v).kind() == VarKind::Parameter)
-        .map(|v| (v, ring.lookup(vars.variable(v).name()).expect("declared")))
-        .collect();
+    let PrintingRing {
+        ring,
+        symbols,
+        param_in_ring,
+    } = printing_ring(&vars, generators)?;
     // The symbolic parameters' symbols are the ring's parameters.
     let symbols: Vec<Var> = symbols
         .into_iter()
@@ -668,7 +570,198 @@ pub fn closure_of(
         exact: parameters.is_empty(),
     };
 
-    // Minimal relations, by degree.
+    let relations = minimal_relations(
+        &mut lift_ctx,
+        &kernel,
+        (r, columns.len()),
+        complex,
+        &constant,
+        options.degree,
+    )?;
+
+    // The structure table.
+    let brackets = structure_table(r, &solutions, &b_sym, &mut lift_ctx)?;
+    timings.proofs = t.elapsed().as_secs_f64();
+    timings.total = start.elapsed().as_secs_f64();
+    Ok(Closure {
+        names: generators.iter().map(|g| g.name.clone()).collect(),
+        display: generators.iter().map(|g| g.display.clone()).collect(),
+        ring,
+        symbols: symbols[..r].to_vec(),
+        degree: options.degree,
+        condition: condition.map(|c| c.text.clone()),
+        parameters,
+        liftable: lifter.is_some() && gen_weights.is_some(),
+        brackets,
+        relations,
+        monomials: monos.len(),
+        rank,
+        timings,
+    })
+}
+
+/// Refuses, before any is expanded, a closure whose monomials (of degree `≤ options.degree`
+/// in the `varying` generators, times those of the `symbolic` parameters) would pass
+/// `options.max_monomials`.
+fn check_monomial_count(
+    varying: usize,
+    symbolic: usize,
+    options: &ClosureOptions,
+) -> Result<(), EngineError> {
+    let count = monomial_count(varying, options.degree)
+        .saturating_mul(monomial_count(symbolic, options.parameters_degree));
+    if count <= options.max_monomials as u128 {
+        return Ok(());
+    }
+    let with_parameters = match symbolic {
+        0 => String::new(),
+        n => format!(
+            " (times those of degree ≤ {} in the {n} symbolic parameter{})",
+            options.parameters_degree,
+            if n == 1 { "" } else { "s" }
+        ),
+    };
+    let count = if count == u128::MAX {
+        "more than 2^128".to_string()
+    } else {
+        count.to_string()
+    };
+    Err(EngineError::Invalid(format!(
+        "there are {count} monomials of degree ≤ {} in the {}{with_parameters}, \
+         more than the limit {}: lower the degree, or raise the limit \
+         (`ClosureOptions::max_monomials`; on the command line, --max-monomials)",
+        options.degree,
+        if varying == 1 {
+            "generator".to_string()
+        } else {
+            format!("{varying} generators")
+        },
+        options.max_monomials
+    )))
+}
+
+/// Each target (a bracket `{G_a, G_b}` at the fixed values) as a combination of the columns,
+/// or `None` when it is outside their span: modulo a prime first (independent there, it is
+/// certainly outside; a solution there is reconstructed and checked exactly), and over Q
+/// where that does not decide.
+fn express_targets(
+    columns: &[SparseVec<Rational>],
+    nrows: usize,
+    targets: &HashMap<(usize, usize), SparseVec<Rational>>,
+) -> HashMap<(usize, usize), Option<SparseVec<Rational>>> {
+    let mut echelon = Echelon::<Fp>::new(nrows);
+    let mut exact: Option<Echelon<Rational>> = None;
+    let mut fp_ok = true;
+    for (j, c) in columns.iter().enumerate() {
+        match modular::to_fp(c) {
+            Some(v) => {
+                echelon.insert(j, &v);
+            }
+            None => fp_ok = false,
+        }
+    }
+    let mut solutions = HashMap::new();
+    for (&key, target) in targets {
+        let mut found = None;
+        let mut decided = false;
+        if fp_ok {
+            if let Some(tf) = modular::to_fp(target) {
+                match echelon.express(&tf) {
+                    None => decided = true, // independent modulo p: certainly outside
+                    Some(dep) => {
+                        if let Some(sol) = modular::reconstruct_vec(&dep) {
+                            if combination_equals(columns, nrows, &sol, target) {
+                                found = Some(sol);
+                                decided = true;
+                            }
+                        }
+                    }
+                }
+            }
+        }
+        if !decided {
+            let e = exact.get_or_insert_with(|| {
+                let mut e = Echelon::<Rational>::new(nrows);
+                for (j, c) in columns.iter().enumerate() {
+                    e.insert(j, c);
+                }
+                e
+            });
+            found = e.express(target);
+        }
+        solutions.insert(key, found);
+    }
+    solutions
+}
+
+/// The ring a closure is printed in, and the symbols of the generators and parameters there.
+struct PrintingRing {
+    /// The system's parameters and one symbol per generator.
+    ring: Vars,
+    /// Each generator's symbol.
+    symbols: Vec<Var>,
+    /// Each parameter of the system's variables, as a symbol of the ring.
+    param_in_ring: HashMap<Var, Var>,
+}
+
+/// The ring a closure is printed in: the system's parameters and one symbol per generator,
+/// shown by its display name (`A_x` for `Ax`) unless two would then print alike.
+fn printing_ring(vars: &Vars, generators: &[NamedFunction]) -> Result<PrintingRing, EngineError> {
+    let mut builder = VarSet::builder();
+    for v in vars.vars() {
+        if vars.variable(v).kind() == VarKind::Parameter {
+            builder = builder.parameter(vars.variable(v).name());
+        }
+    }
+    let mut shown = builder.clone();
+    for NamedFunction { name, display, .. } in generators {
+        if vars
+            .lookup(name)
+            .is_some_and(|v| vars.variable(v).kind() == VarKind::Parameter)
+        {
+            return Err(EngineError::Invalid(format!(
+                "the generator '{name}' has the name of a parameter"
+            )));
+        }
+        builder = builder.coordinate(name).word();
+        shown = shown.coordinate(name).shown_as(display).word();
+    }
+    let ring = shown
+        .build()
+        .or_else(|_| builder.build())
+        .map_err(|e| EngineError::Invalid(format!("cannot name the generators: {e}")))?;
+    let symbols: Vec<Var> = generators
+        .iter()
+        .map(|g| ring.lookup(&g.name).expect("declared"))
+        .collect();
+    let param_in_ring: HashMap<Var, Var> = vars
+        .vars()
+        .filter(|v| vars.variable(*v).kind() == VarKind::Parameter)
+        .map(|v| (v, ring.lookup(vars.variable(v).name()).expect("declared")))
+        .collect();
+    Ok(PrintingRing {
+        ring,
+        symbols,
+        param_in_ring,
+    })
+}
+
+/// The minimal relations among the generators, by degree: `G − c = 0` for a generator
+/// constant on the condition's surface (when `degree ≥ 1`), then each kernel vector (a
+/// relation at the fixed values) that is not a combination of multiples of those before it,
+/// lifted and proved. `(generators, columns)`: how many generators (the symbolic parameters
+/// apart) and columns there are.
+fn minimal_relations(
+    lift_ctx: &mut LiftContext<'_>,
+    kernel: &[SparseVec<Rational>],
+    (r, columns): (usize, usize),
+    complex: bool,
+    constant: &[bool],
+    degree: u32,
+) -> Result<Vec<Relation>, EngineError> {
+    let (monos, col_ids, g_sym) = (lift_ctx.monos, lift_ctx.col_ids, lift_ctx.g_sym);
+    let (ring, symbols) = (lift_ctx.ring.clone(), lift_ctx.symbols.clone());
+    let all = g_sym.len();
     let degree_of = |v: &SparseVec<Rational>| -> u32 {
         v.iter()
             .map(|(j, _)| monos[col_ids[*j].0].iter().sum::<u32>())
@@ -682,12 +775,12 @@ pub fn closure_of(
         .enumerate()
         .map(|(j, (m, i))| ((monos[*m].clone(), *i), j))
         .collect();
-    let mut ideal = Echelon::<Fp>::new(columns.len());
+    let mut ideal = Echelon::<Fp>::new(columns);
     let mut ideal_id = 0;
     let mut accepted: Vec<(SparseVec<Rational>, u32, u32)> = Vec::new(); // (relation, degree, multiples added up to)
     let mut relations = Vec::new();
     for (a, g) in g_sym.iter().enumerate() {
-        if constant[a] && options.degree >= 1 {
+        if constant[a] && degree >= 1 {
             let value = lift_ctx.to_ring(g)?;
             let symbol = Expr::monomial(&ring, GaussianRational::from(1), &[(symbols[a], 1)])?;
             relations.push(Relation {
@@ -712,7 +805,7 @@ pub fn closure_of(
                         if times_i && !complex {
                             continue;
                         }
-                        if let Some(v) = shift(r0, gamma, times_i, &col_ids, &monos, &col_of) {
+                        if let Some(v) = shift(r0, gamma, times_i, col_ids, monos, &col_of) {
                             if let Some(vf) = modular::to_fp(&v) {
                                 ideal.insert(ideal_id, &vf);
                                 ideal_id += 1;
@@ -733,7 +826,7 @@ pub fn closure_of(
         if complex {
             // Over Q(i), i·R is the same relation.
             let zero = vec![0; all];
-            if let Some(v) = shift(rel, &zero, true, &col_ids, &monos, &col_of) {
+            if let Some(v) = shift(rel, &zero, true, col_ids, monos, &col_of) {
                 if let Some(vf) = modular::to_fp(&v) {
                     ideal.insert(ideal_id, &vf);
                     ideal_id += 1;
@@ -755,7 +848,18 @@ pub fn closure_of(
         });
     }
 
-    // The structure table.
+    Ok(relations)
+}
+
+/// The structure table: `{G_a, G_b}` as a polynomial in the generators, lifted and proved, or
+/// outside their span over its common denominator; antisymmetric, zero on the diagonal.
+fn structure_table(
+    r: usize,
+    solutions: &HashMap<(usize, usize), Option<SparseVec<Rational>>>,
+    b_sym: &HashMap<(usize, usize), Expr>,
+    lift_ctx: &mut LiftContext<'_>,
+) -> Result<Vec<Vec<Bracket>>, EngineError> {
+    let ring = lift_ctx.ring.clone();
     let mut brackets = vec![
         vec![
             Bracket::Polynomial {
@@ -790,23 +894,7 @@ pub fn closure_of(
             brackets[b][a] = negated;
         }
     }
-    timings.proofs = t.elapsed().as_secs_f64();
-    timings.total = start.elapsed().as_secs_f64();
-    Ok(Closure {
-        names: generators.iter().map(|g| g.name.clone()).collect(),
-        display: generators.iter().map(|g| g.display.clone()).collect(),
-        ring,
-        symbols: symbols[..r].to_vec(),
-        degree: options.degree,
-        condition: condition.map(|c| c.text.clone()),
-        parameters,
-        liftable: lifter.is_some() && gen_weights.is_some(),
-        brackets,
-        relations,
-        monomials: monos.len(),
-        rank,
-        timings,
-    })
+    Ok(brackets)
 }
 
 #[cfg(test)]
