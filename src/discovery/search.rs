@@ -3,9 +3,9 @@
 
 use std::time::Instant;
 
-use brackets::search::{search, Integral, SearchOptions, SearchResult};
+use brackets::search::{search, Integral, NewIntegrals, SearchOptions, SearchResult};
 use brackets::{EngineError, System};
-use trigpoly::{Expr, GaussianRational, Rational, Style, Var, VarKind};
+use trigpoly::{Expr, GaussianRational, Rational, Style, Var, VarKind, Vars};
 
 use crate::report::{
     counted, first_free, with_article, ClaimResult, Entry, Equation, Equations, Facts, Report,
@@ -387,64 +387,7 @@ pub fn search_report(
     let for_every_value = (0..r.basis.len())
         .filter(|&i| r.for_every_value(i).is_some())
         .count();
-    if !r.parameters.is_empty() {
-        let lift = if r.liftable && r.all_symbolic() {
-            "then each basis element was lifted back to symbolic parameters by homogeneity and \
-             proved symbolically"
-                .to_string()
-        } else if r.liftable {
-            "then lifted back to symbolic parameters by homogeneity where possible".to_string()
-        } else {
-            match for_every_value {
-                0 => "the weights do not determine every parameter, so nothing is lifted, and \
-                      the basis is proved at these values only"
-                    .to_string(),
-                k => format!(
-                    "the weights do not determine every parameter, so nothing is lifted; {k} of \
-                     the {} {} as found for every value (proved symbolically), the others at \
-                     these values only",
-                    counted(r.basis.len(), "basis element"),
-                    agreeing(k, "holds", "hold")
-                ),
-            }
-        };
-        entries.push(Entry::Text(format!(
-            "Parameters fixed for the linear algebra: `{fixed}`; {lift}."
-        )));
-        if !(r.liftable && r.all_symbolic()) {
-            let names: Vec<&str> = r
-                .parameters
-                .iter()
-                .map(|(v, _)| vars.variable(*v).name())
-                .collect();
-            // Distinct primes, none the value a parameter has now (`--fix a=2,b=3` was told
-            // to compare with `--fix a=2,b=3`).
-            let mut primes = [2, 3, 5, 7, 11, 13, 17, 19, 23, 29, 31, 37, 41, 43, 47]
-                .into_iter()
-                .cycle();
-            let others: Vec<String> = r
-                .parameters
-                .iter()
-                .zip(&names)
-                .map(|((_, now), n)| {
-                    let p = primes
-                        .by_ref()
-                        .find(|&p| *now != Rational::from(p))
-                        .expect("the primes cycle");
-                    format!("{n}={p}")
-                })
-                .collect();
-            entries.push(Entry::Text(format!(
-                "What is not lifted holds at these values, where the system may have more \
-                 symmetry than in general (special values, equal or in a rational ratio, can add \
-                 integrals): for every \
-                 value, keep them symbolic (`--symbolic {}`), or compare with other values \
-                 (`--fix {}`).",
-                names.join(","),
-                others.join(",")
-            )));
-        }
-    }
+    entries.extend(parameter_notes(&r, vars, fixed, for_every_value));
     if let Some(names) = &symbolic {
         entries.push(Entry::Text(format!(
             "Parameters kept symbolic: `{names}`. The equations are the coefficients of every \
@@ -545,73 +488,7 @@ pub fn search_report(
         )));
     }
     if let Some(n) = &r.new {
-        let known = if n.known.is_empty() {
-            "no named function".to_string()
-        } else {
-            format!("`{}`", n.known.join(", "))
-        };
-        // Without angles the grade is the degree.
-        let canonical = [
-            &r.variables.coordinates,
-            &r.variables.momenta,
-            &r.variables.angles,
-        ]
-        .iter()
-        .any(|vs| !vs.is_empty());
-        // With denominator atoms their powers count with the coordinates' (`1/(x − y)`), and so
-        // do a radical's, of either sign (`1/r`).
-        let denominator = r.vars.denominators().next();
-        let radical = r.vars.radicals().next();
-        let unicode = |v: Var| r.vars.variable(v).unicode();
-        let variables = match (
-            r.variables.poisson.is_empty(),
-            canonical,
-            denominator,
-            radical,
-        ) {
-            (true, _, Some(d), _) => format!(
-                "in the coordinates, momenta and denominators together, `1/{}` of degree 1",
-                unicode(d)
-            ),
-            (true, _, None, Some(radical)) => format!(
-                "in the coordinates, momenta and radicals together, `{0}` and `1/{0}` of degree 1",
-                unicode(radical)
-            ),
-            (true, _, None, None) => "in the coordinates and momenta together".into(),
-            (false, false, _, _) => "in the Poisson variables".into(),
-            (false, true, _, _) => {
-                "in the coordinates, momenta and Poisson variables together".into()
-            }
-        };
-        let rule = if r.variables.angles.is_empty() {
-            format!(
-                "An integral of degree `N` ({variables}) is generated when it is a sum of known \
-                 integrals, constants and products of integrals of degree `< N`"
-            )
-        } else {
-            format!(
-                "An integral of grade `(N, k)` (its degree `N` {variables}, then its \
-                 trigonometric order `k`: the largest such pair among its terms, compared in \
-                 that order) is generated when it is a sum of known integrals, constants and \
-                 products of integrals of grade below `(N, k)`"
-            )
-        };
-        let span = if n.generated == r.basis.len() {
-            format!(
-                "the generated ones span the whole space ({}).",
-                counted(r.basis.len(), "dimension")
-            )
-        } else {
-            format!(
-                "the generated ones span {} of the {}, and a complement, the new integrals, is:",
-                n.generated,
-                counted(r.basis.len(), "dimension")
-            )
-        };
-        entries.push(Entry::Text(format!(
-            "Known integrals in the space: {known}. {rule} ({} formed); {span}",
-            counted(n.products, "product"),
-        )));
+        entries.push(Entry::Text(new_integrals_text(&r, n)));
     }
     // With denominators, each integral written as a physicist writes it: its terms collected
     // by momenta and parameters over common denominators, reduced (the linear algebra's
@@ -620,24 +497,7 @@ pub fn search_report(
     // With radicals only, each integral as the search chose its monomials (results.md §13:
     // no `r²` where a polynomial is, so the monomials show), unless it has fewer terms with
     // the least powers of its radicals (`2β/(xr) − 2βr/(xy²)` is `−2βx/(y²r)`).
-    let with_atoms = Expr::has_denominator_atoms(&r.vars);
-    let with_radicals = Expr::has_radicals(&r.vars);
-    let written: Vec<Expr> = shown
-        .iter()
-        .map(|&i| {
-            let e = r.basis[i].expr();
-            if with_atoms {
-                return e.over_common_denominators();
-            }
-            if with_radicals {
-                let least = e.with_least_radical_powers()?;
-                if least.len() < e.len() {
-                    return Ok(least);
-                }
-            }
-            Ok(e.clone())
-        })
-        .collect::<Result<_, _>>()?;
+    let written = written_forms(&r, &shown)?;
     if shown.is_empty() {
         entries.push(Entry::Text(
             "None: the known integrals generate every integral in the space.".into(),
@@ -733,4 +593,171 @@ pub fn search_report(
         },
         r,
     ))
+}
+
+/// What the report says of the parameters the linear algebra fixed (none: nothing): their
+/// values, whether and how the basis was lifted back to symbolic parameters, and, for what is
+/// not lifted, how to see it for every value.
+fn parameter_notes(
+    r: &SearchResult,
+    vars: &Vars,
+    fixed: &str,
+    for_every_value: usize,
+) -> Vec<Entry> {
+    let mut notes = Vec::new();
+    if r.parameters.is_empty() {
+        return notes;
+    }
+    let lift = if r.liftable && r.all_symbolic() {
+        "then each basis element was lifted back to symbolic parameters by homogeneity and \
+         proved symbolically"
+            .to_string()
+    } else if r.liftable {
+        "then lifted back to symbolic parameters by homogeneity where possible".to_string()
+    } else {
+        match for_every_value {
+            0 => "the weights do not determine every parameter, so nothing is lifted, and \
+                  the basis is proved at these values only"
+                .to_string(),
+            k => format!(
+                "the weights do not determine every parameter, so nothing is lifted; {k} of \
+                 the {} {} as found for every value (proved symbolically), the others at \
+                 these values only",
+                counted(r.basis.len(), "basis element"),
+                agreeing(k, "holds", "hold")
+            ),
+        }
+    };
+    notes.push(Entry::Text(format!(
+        "Parameters fixed for the linear algebra: `{fixed}`; {lift}."
+    )));
+    if !(r.liftable && r.all_symbolic()) {
+        let names: Vec<&str> = r
+            .parameters
+            .iter()
+            .map(|(v, _)| vars.variable(*v).name())
+            .collect();
+        // Distinct primes, none the value a parameter has now (`--fix a=2,b=3` was told
+        // to compare with `--fix a=2,b=3`).
+        let mut primes = [2, 3, 5, 7, 11, 13, 17, 19, 23, 29, 31, 37, 41, 43, 47]
+            .into_iter()
+            .cycle();
+        let others: Vec<String> = r
+            .parameters
+            .iter()
+            .zip(&names)
+            .map(|((_, now), n)| {
+                let p = primes
+                    .by_ref()
+                    .find(|&p| *now != Rational::from(p))
+                    .expect("the primes cycle");
+                format!("{n}={p}")
+            })
+            .collect();
+        notes.push(Entry::Text(format!(
+            "What is not lifted holds at these values, where the system may have more \
+             symmetry than in general (special values, equal or in a rational ratio, can add \
+             integrals): for every \
+             value, keep them symbolic (`--symbolic {}`), or compare with other values \
+             (`--fix {}`).",
+            names.join(","),
+            others.join(",")
+        )));
+    }
+    notes
+}
+
+/// How the new integrals were told from the generated ones: the known integrals, the rule by
+/// degree (or grade, with angles), and how much of the space the generated ones span.
+fn new_integrals_text(r: &SearchResult, n: &NewIntegrals) -> String {
+    let known = if n.known.is_empty() {
+        "no named function".to_string()
+    } else {
+        format!("`{}`", n.known.join(", "))
+    };
+    // Without angles the grade is the degree.
+    let canonical = [
+        &r.variables.coordinates,
+        &r.variables.momenta,
+        &r.variables.angles,
+    ]
+    .iter()
+    .any(|vs| !vs.is_empty());
+    // With denominator atoms their powers count with the coordinates' (`1/(x − y)`), and so
+    // do a radical's, of either sign (`1/r`).
+    let denominator = r.vars.denominators().next();
+    let radical = r.vars.radicals().next();
+    let unicode = |v: Var| r.vars.variable(v).unicode();
+    let variables = match (
+        r.variables.poisson.is_empty(),
+        canonical,
+        denominator,
+        radical,
+    ) {
+        (true, _, Some(d), _) => format!(
+            "in the coordinates, momenta and denominators together, `1/{}` of degree 1",
+            unicode(d)
+        ),
+        (true, _, None, Some(radical)) => format!(
+            "in the coordinates, momenta and radicals together, `{0}` and `1/{0}` of degree 1",
+            unicode(radical)
+        ),
+        (true, _, None, None) => "in the coordinates and momenta together".into(),
+        (false, false, _, _) => "in the Poisson variables".into(),
+        (false, true, _, _) => "in the coordinates, momenta and Poisson variables together".into(),
+    };
+    let rule = if r.variables.angles.is_empty() {
+        format!(
+            "An integral of degree `N` ({variables}) is generated when it is a sum of known \
+             integrals, constants and products of integrals of degree `< N`"
+        )
+    } else {
+        format!(
+            "An integral of grade `(N, k)` (its degree `N` {variables}, then its \
+             trigonometric order `k`: the largest such pair among its terms, compared in \
+             that order) is generated when it is a sum of known integrals, constants and \
+             products of integrals of grade below `(N, k)`"
+        )
+    };
+    let span = if n.generated == r.basis.len() {
+        format!(
+            "the generated ones span the whole space ({}).",
+            counted(r.basis.len(), "dimension")
+        )
+    } else {
+        format!(
+            "the generated ones span {} of the {}, and a complement, the new integrals, is:",
+            n.generated,
+            counted(r.basis.len(), "dimension")
+        )
+    };
+    format!(
+        "Known integrals in the space: {known}. {rule} ({} formed); {span}",
+        counted(n.products, "product"),
+    )
+}
+
+/// The shown integrals as the report writes them: over common denominators with denominator
+/// atoms; with radicals only, with the least powers of the radicals when that has fewer terms;
+/// else as found.
+fn written_forms(r: &SearchResult, shown: &[usize]) -> Result<Vec<Expr>, EngineError> {
+    let with_atoms = Expr::has_denominator_atoms(&r.vars);
+    let with_radicals = Expr::has_radicals(&r.vars);
+    shown
+        .iter()
+        .map(|&i| {
+            let e = r.basis[i].expr();
+            if with_atoms {
+                return e.over_common_denominators();
+            }
+            if with_radicals {
+                let least = e.with_least_radical_powers()?;
+                if least.len() < e.len() {
+                    return Ok(least);
+                }
+            }
+            Ok(e.clone())
+        })
+        .collect::<Result<_, _>>()
+        .map_err(EngineError::from)
 }
