@@ -141,7 +141,7 @@ pub fn closure_report(
     entries.push(Entry::Table(TableResult::new(
         c.table(),
         system,
-        &format!("the {name}{table_at}"),
+        &format!("{}{table_at}", with_article(name)),
     )));
     let outside = c.outside();
     if outside.is_empty() {
@@ -150,62 +150,7 @@ pub fn closure_report(
             c.degree
         )));
     } else {
-        // A generator that is no integral has brackets with no reason to close among
-        // integrals; what search finds closes a table of integrals.
-        let mut moving = Vec::new();
-        for (
-            g,
-            NamedFunction {
-                display, expr: e, ..
-            },
-        ) in generators.iter().enumerate()
-        {
-            if !outside.iter().any(|&(a, b)| a == g || b == g) {
-                continue;
-            }
-            let flow = match &options.condition {
-                Some(cond) => system.flow_when(e, cond)?,
-                None => system.flow(e)?,
-            };
-            if !flow.vanishes()? {
-                moving.push(format!("`{display}`"));
-            }
-        }
-        let advice = match moving.len() {
-            0 => {
-                "A higher `--degree`, or what `superint search` finds added to the generators, may \
-                 close the table."
-                    .to_string()
-            }
-            1 => format!(
-                "{} is no integral (its bracket with `H` is not zero{when}), so its brackets \
-                 need not close among the others.",
-                moving[0]
-            ),
-            _ => format!(
-                "{} are no integrals (their brackets with `H` are not zero{when}), so their \
-                 brackets need not close among the others.",
-                moving.join(", ")
-            ),
-        };
-        entries.push(Entry::Text(format!(
-            "The brackets marked `*` are no polynomials of degree `≤ {}` in the generators; \
-             here they are. {advice}",
-            c.degree
-        )));
-        entries.push(Entry::Equations(Equations {
-            caption: String::new(),
-            lines: outside
-                .iter()
-                .map(|&(a, b)| {
-                    let Bracket::Outside { bracket } = &c.brackets[a][b] else {
-                        unreachable!("outside() lists the brackets outside")
-                    };
-                    let lhs = format!("{{{}, {}}}", c.display[a], c.display[b]);
-                    Equation::new(&lhs, bracket.clone())
-                })
-                .collect(),
-        }));
+        entries.extend(outside_entries(system, generators, options, &c, &when)?);
     }
     let r = c.names.len();
     let mut shown = 0;
@@ -295,4 +240,73 @@ pub fn closure_report(
         },
         c,
     ))
+}
+
+/// The brackets outside the generators' polynomials of the closure's degree, each written
+/// out, with advice: which generators are no integrals (their brackets need not close), or
+/// how the table might close.
+fn outside_entries(
+    system: &System,
+    generators: &[NamedFunction],
+    options: &ClosureOptions,
+    c: &Closure,
+    when: &str,
+) -> Result<Vec<Entry>, EngineError> {
+    let outside = c.outside();
+    let mut entries = Vec::new();
+    // A generator that is no integral has brackets with no reason to close among
+    // integrals; what search finds closes a table of integrals.
+    let mut moving = Vec::new();
+    for (
+        g,
+        NamedFunction {
+            display, expr: e, ..
+        },
+    ) in generators.iter().enumerate()
+    {
+        if !outside.iter().any(|&(a, b)| a == g || b == g) {
+            continue;
+        }
+        let flow = match &options.condition {
+            Some(cond) => system.flow_when(e, cond)?,
+            None => system.flow(e)?,
+        };
+        if !flow.vanishes()? {
+            moving.push(format!("`{display}`"));
+        }
+    }
+    let advice = match moving.len() {
+        0 => "A higher `--degree`, or what `superint search` finds added to the generators, may \
+             close the table."
+            .to_string(),
+        1 => format!(
+            "{} is no integral (its bracket with `H` is not zero{when}), so its brackets \
+             need not close among the others.",
+            moving[0]
+        ),
+        _ => format!(
+            "{} are no integrals (their brackets with `H` are not zero{when}), so their \
+             brackets need not close among the others.",
+            moving.join(", ")
+        ),
+    };
+    entries.push(Entry::Text(format!(
+        "The brackets marked `*` are no polynomials of degree `≤ {}` in the generators; \
+         here they are. {advice}",
+        c.degree
+    )));
+    entries.push(Entry::Equations(Equations {
+        caption: String::new(),
+        lines: outside
+            .iter()
+            .map(|&(a, b)| {
+                let Bracket::Outside { bracket } = &c.brackets[a][b] else {
+                    unreachable!("outside() lists the brackets outside")
+                };
+                let lhs = format!("{{{}, {}}}", c.display[a], c.display[b]);
+                Equation::new(&lhs, bracket.clone())
+            })
+            .collect(),
+    }));
+    Ok(entries)
 }

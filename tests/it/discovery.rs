@@ -1167,25 +1167,29 @@ fn scratch_system(name: &str, h: &str, angles: &str) -> String {
     file.to_str().expect("a UTF-8 path").to_string()
 }
 
-/// The titles of `search` and `closure` say a system's name as `check` does: `of the
-/// harmonic rotor`, but `of my pendulum` (it said `of the my pendulum`).
+/// The titles of `search` and `closure`, and the closure's table, say a system's name as
+/// `check` does: `of the harmonic rotor`, but `of my pendulum` (they said `of the my
+/// pendulum`).
 #[test]
 fn search_and_closure_titles_keep_a_names_own_article() {
     let file = scratch_system("my pendulum", "p_t^2/2 - cos(t)", "t");
-    for (args, title) in [
+    for (args, title, table) in [
         (
             vec!["search", &file, "--trig-degree", "1"],
             "Integrals of my pendulum\n",
+            None,
         ),
         (
             vec!["closure", &file, "H"],
             "Closure of H for my pendulum\n",
+            Some("{A, B} for my pendulum (row A, column B)\n"),
         ),
     ] {
         let out = superint(&args);
         let text = String::from_utf8(out.stdout).expect("UTF-8");
         assert_eq!(out.status.code(), Some(0), "{args:?}");
         assert!(text.starts_with(title), "{text}");
+        assert!(table.is_none_or(|t| text.contains(t)), "{text}");
     }
 }
 
