@@ -8,8 +8,8 @@ use super::tex::{markup, math, relation, sentence, text};
 use super::text::{number, point, upper_bound, wrap};
 use super::{stopped, table_list, verdict, Options};
 use crate::report::{
-    counted, ClaimKind, ClaimResult, Entry, Equations, Excerpt, ProofResult, RankResult, Report,
-    SummaryKind, TableResult, TowerResult,
+    counted, with_article, ClaimKind, ClaimResult, Entry, Equations, Excerpt, ProofResult,
+    RankResult, Report, SummaryKind, TableResult, TowerResult,
 };
 
 /// Renders a report as a LaTeX document.
@@ -396,9 +396,9 @@ fn tower(out: &mut Vec<String>, t: &TowerResult) {
     let mut rows = claim_rows(&t.claim);
     flush(out, &mut rows);
     out.push(format!(
-        r"\noindent {} expanded for the {} (ladder ${}$), {}.",
+        r"\noindent {} expanded for {} (ladder ${}$), {}.",
         counted(t.checked, "bracket"),
-        text(&t.system),
+        text(&with_article(&t.system)),
         math(&t.ladder),
         text(&t.verdict())
     ));

@@ -6,8 +6,8 @@ use trigpoly::Style;
 use super::text::{number, point, upper_bound};
 use super::{stopped, verdict, Options, SHOWN_MONOMIALS};
 use crate::report::{
-    counted, ClaimKind, ClaimResult, Entry, Equations, ProofResult, RankResult, Report,
-    TableResult, TowerResult,
+    counted, with_article, ClaimKind, ClaimResult, Entry, Equations, ProofResult, RankResult,
+    Report, TableResult, TowerResult,
 };
 
 /// Renders a report as Markdown.
@@ -138,10 +138,10 @@ fn table(t: &TableResult) -> String {
 
 fn tower(t: &TowerResult) -> String {
     format!(
-        "{}: {} expanded for the {} (ladder {}), {}",
+        "{}: {} expanded for {} (ladder {}), {}",
         claim(&t.claim),
         counted(t.checked, "bracket"),
-        t.system,
+        with_article(&t.system),
         code(&t.ladder),
         t.verdict()
     )

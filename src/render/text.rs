@@ -6,8 +6,8 @@ use trigpoly::{GaussianRational, Style, VarKind};
 
 use super::{condition_suffix, pad, plain, stopped, table_list, verdict, width, Options};
 use crate::report::{
-    counted, ClaimKind, ClaimResult, Entry, Equation, Equations, ProofResult, RankResult, Report,
-    TableResult, TowerResult,
+    counted, with_article, ClaimKind, ClaimResult, Entry, Equation, Equations, ProofResult,
+    RankResult, Report, TableResult, TowerResult,
 };
 
 /// The column where claim verdicts start.
@@ -410,9 +410,9 @@ fn table_as_list(out: &mut Vec<String>, t: &TableResult, cells: &[Vec<String>]) 
 fn tower(out: &mut Vec<String>, t: &TowerResult) {
     verdict_line(out, &t.claim);
     out.push(format!(
-        "      {} expanded for the {} (ladder {}), {}",
+        "      {} expanded for {} (ladder {}), {}",
         counted(t.checked, "bracket"),
-        t.system,
+        with_article(&t.system),
         t.ladder,
         t.verdict()
     ));
