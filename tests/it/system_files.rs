@@ -1047,6 +1047,40 @@ fn tower_proof_facts_parenthesize_a_sum() {
     assert!(out.contains("{p_x − ix, H} = (−i) (p_x − ix)"), "{out}");
 }
 
+/// A tower says its system's name as the titles do: `for my oscillator`, in every format (it
+/// said `for the my oscillator`), and the harmonic rotor's `for the harmonic rotor`.
+#[test]
+fn tower_lines_keep_a_names_own_article() {
+    let dir = scratch("tower-article");
+    let file = "name = \"my oscillator\"\nhamiltonian = \"p_x^2/2 + x^2/2\"\n\
+                [phase_space]\ncoordinates = [\"x\"]\n\
+                [[family]]\nname = \"K\"\nvalue = \"(p_x + i*x)^m*(p_x - i*x)^n\"\n\
+                eigenvalue = \"i*(m - n)\"\n";
+    std::fs::write(dir.join("mine.toml"), file).expect("write");
+    for (format, said) in [
+        ("text", "expanded for my oscillator (ladder"),
+        ("markdown", "expanded for my oscillator (ladder"),
+        ("latex", r"expanded for my oscillator (ladder"),
+    ] {
+        let args = [
+            "tower",
+            "--system",
+            "mine.toml",
+            "--max",
+            "2",
+            "--format",
+            format,
+        ];
+        let o = superint_in(&dir, &args);
+        assert_eq!(o.status.code(), Some(0), "{}", text(&o.stderr));
+        let out = text(&o.stdout);
+        assert!(out.contains(said), "{format}: {out}");
+        assert!(out.contains("of my oscillator"), "{format}: {out}");
+    }
+    let out = run(&["tower", "--max", "1", "--no-timings"], 0);
+    assert!(out.contains("expanded for the harmonic rotor"), "{out}");
+}
+
 /// Rank 0 has no minor to show: its certificate is the vanishing gradients alone (it read
 /// "the minor ∂()/∂() = 1 ≠ 0").
 #[test]
