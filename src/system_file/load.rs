@@ -709,31 +709,46 @@ impl<'a> Builder<'a> {
             file.system = System::new(&name, space, Expr::zero(&vars));
         }
 
-        // H may use the variables only.
-        let h_text = self.text(&model.hamiltonian);
-        let h = {
-            let scope = file.scope(0);
-            let tree = scope.tree(&self.source, &h_text)?;
-            if let Some(at) = mention(&tree, "H") {
-                return Err(h_text.error(
-                    &self.source,
-                    ErrorKind::Expression,
-                    at,
-                    "the Hamiltonian cannot use H itself",
-                ));
-            }
-            scope.lower(&self.source, &h_text, &tree).map_err(|e| {
-                later_function(e, &model.function, |name| {
-                    format!(
-                        "{name} is a function, and the Hamiltonian is read before the \
-                         functions: it uses only variables and parameters, so write {name}'s \
-                         value out"
-                    )
-                })
-            })?
-        };
+        let h = self.hamiltonian(&file, &model)?;
         file.system.define("H", "H", h);
 
+        self.functions(&mut file, &model)?;
+        self.families(&mut file, &model)?;
+        for (k, c) in model.claim.iter().enumerate() {
+            let spec = ClaimSpec::parse(&file, k, c)?;
+            file.claims.push(spec);
+        }
+        Ok(file)
+    }
+
+    /// The Hamiltonian, read in the variables and parameters alone (it cannot use `H`, nor a
+    /// function, which is read after it).
+    fn hamiltonian(&self, file: &LoadedSystem, model: &SystemModel) -> Result<Expr, FileError> {
+        let h_text = self.text(&model.hamiltonian);
+        let scope = file.scope(0);
+        let tree = scope.tree(&self.source, &h_text)?;
+        if let Some(at) = mention(&tree, "H") {
+            return Err(h_text.error(
+                &self.source,
+                ErrorKind::Expression,
+                at,
+                "the Hamiltonian cannot use H itself",
+            ));
+        }
+        scope.lower(&self.source, &h_text, &tree).map_err(|e| {
+            later_function(e, &model.function, |name| {
+                format!(
+                    "{name} is a function, and the Hamiltonian is read before the \
+                     functions: it uses only variables and parameters, so write {name}'s \
+                     value out"
+                )
+            })
+        })
+    }
+
+    /// The file's functions, in order: each read with the functions before it, its name
+    /// declared and its display checked against every name shown so far.
+    fn functions(&mut self, file: &mut LoadedSystem, model: &SystemModel) -> Result<(), FileError> {
         for (k, f) in model.function.iter().enumerate() {
             let f = f.get_ref();
             self.declare(f.name.get_ref(), f.name.span(), "a function")?;
@@ -757,7 +772,12 @@ impl<'a> Builder<'a> {
             self.check_shown_apart(&whose, display, span)?;
             file.system.define(f.name.get_ref(), display, value);
         }
+        Ok(())
+    }
 
+    /// The file's families: their indices and displays checked, each value and eigenvalue
+    /// tried on the instance `(1, 1)`.
+    fn families(&mut self, file: &mut LoadedSystem, model: &SystemModel) -> Result<(), FileError> {
         for spanned in &model.family {
             let f = spanned.get_ref();
             self.declare(f.name.get_ref(), f.name.span(), "a family")?;
@@ -823,12 +843,7 @@ impl<'a> Builder<'a> {
                 file.eigenvalue_at(k, 1, 1)?;
             }
         }
-
-        for (k, c) in model.claim.iter().enumerate() {
-            let spec = ClaimSpec::parse(&file, k, c)?;
-            file.claims.push(spec);
-        }
-        Ok(file)
+        Ok(())
     }
 
     /// The limits: the command line's, else the file's, else the defaults.
