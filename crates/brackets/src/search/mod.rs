@@ -117,7 +117,7 @@ use std::time::Instant;
 
 use itertools::Itertools;
 use rayon::prelude::*;
-use trigpoly::{Expr, MonomialIndex, Rational, VarKind};
+use trigpoly::{Expr, MonomialIndex, Rational, Var, VarKind};
 
 use crate::clearing::Clearing;
 use crate::error::EngineError;
@@ -127,7 +127,7 @@ use crate::system::System;
 
 use new_only::new_integrals;
 use parameters::{fixed_problem, module_generators, parameter_multiples, parameter_values};
-use problem::{real_rows, Components, RowIndex, IMAGE_BLOCK};
+use problem::{real_rows, Components, Problem, RowIndex, IMAGE_BLOCK};
 use proof::{flow_vanishes, lead, primitive_vector};
 
 /// Finds a basis of every integral of `system` in the space of `options`: each element of
@@ -171,120 +171,22 @@ pub fn search(system: &System, options: &SearchOptions) -> Result<SearchResult, 
     check_parameters(vars, &options.symbolic, &options.fixed)?;
     let atoms = system.space().denominator_atoms();
     let radicals = system.space().radicals();
-    // The unknowns are the real coefficients of real functions, and the equations only the
-    // coefficients of `e^{ik·θ}` with `k ≥ 0`: right when `{F, H}` is real, that is when `H`
-    // and the condition's values are.
-    if !system.hamiltonian().is_real() {
-        return Err(EngineError::Invalid(
-            "the search finds the real integrals of a real Hamiltonian, and H is not real \
-             (it differs from its conjugate)"
-                .into(),
-        ));
-    }
-    if let Some(c) = &options.condition {
-        if let Some((v, _)) = c.subs().iter().find(|(_, value)| !value.is_real()) {
-            return Err(EngineError::Invalid(format!(
-                "the search needs a real condition, and the value of {} is not real",
-                vars.variable(*v).name()
-            )));
-        }
-    }
-    // A parameter the condition sets takes its value from the condition (after the bracket,
-    // like a resonance): fixing it first would search at another value.
-    if let Some(c) = &options.condition {
-        for (v, _) in c.subs() {
-            let name = vars.variable(*v).name();
-            if options.fixed.iter().any(|f| f.0 == *v) || options.symbolic.contains(v) {
-                return Err(EngineError::Invalid(format!(
-                    "{name} is set by the condition; it can be neither fixed nor kept symbolic"
-                )));
-            }
-        }
-    }
+    refuse_unreal(system, options)?;
     let parameters = parameter_values(system, condition, &options.fixed, &options.symbolic);
     let problem = fixed_problem(system, options, &parameters)?;
     let n = problem.unknowns.len();
 
-    // The images {φ_j, H} as real equations over Q: a row for the real and for the imaginary
-    // part of each monomial with a canonical `e^{ik·θ}`, numbered as they first appear. The
-    // images are formed on the pool's threads, a block of unknowns at a time, and numbered in
-    // the order of the unknowns.
-    // With denominator atoms the images are taken through one injective `Clearing`, whose
-    // powers are the highest among all the images: formed in one block.
-    let block = if atoms.is_empty() && radicals.is_empty() {
-        IMAGE_BLOCK
-    } else {
-        n.max(1)
-    };
-    let mut rows: RowIndex = MonomialIndex::new(&problem.vars);
-    let mut nrows = 0;
-    let mut columns: Vec<SparseVec<Rational>> = Vec::with_capacity(n);
-    for start in (0..n).step_by(block) {
-        let images: Vec<Result<Expr, EngineError>> = (start..n.min(start + block))
-            .into_par_iter()
-            .map(|j| problem.image(&problem.expr(j, &Rational::one())?))
-            .collect();
-        let mut images = images.into_iter().collect::<Result<Vec<Expr>, _>>()?;
-        if let Some(clearing) = Clearing::new(atoms, radicals, &parameters, images.iter())? {
-            images = clearing.apply_all(&images)?;
-        }
-        for image in &images {
-            columns.push(real_rows(
-                image,
-                &problem.variables.angles,
-                &mut rows,
-                &mut nrows,
-            ));
-        }
-    }
+    // The images {φ_j, H} as real equations over Q, one column an unknown.
+    let (columns, nrows) = equations(&problem, atoms, radicals, &parameters)?;
     timings.equations = start.elapsed().as_secs_f64();
 
-    // Connected components.
+    // The kernel, block by block.
     let t = Instant::now();
-    let mut uf = Components((0..n).collect());
-    let mut first_col: Vec<Option<usize>> = vec![None; nrows];
-    for (j, col) in columns.iter().enumerate() {
-        for (r, _) in col {
-            match first_col[*r] {
-                Some(f) => uf.union(f, j),
-                None => first_col[*r] = Some(j),
-            }
-        }
-    }
-    let mut groups: FxHashMap<usize, Vec<usize>> = FxHashMap::default();
-    for j in 0..n {
-        let r = uf.find(j);
-        groups.entry(r).or_default().push(j);
-    }
-    let mut groups: Vec<Vec<usize>> = groups.into_values().collect();
-    groups.sort();
-    let largest_component = groups.iter().map(Vec::len).max().unwrap_or(0);
-    // The blocks are independent: solved on the pool's threads, kept in the order of the blocks.
-    let kernels: Vec<Vec<SparseVec<Rational>>> = groups
-        .par_iter()
-        .map(|g| {
-            let mut local_row: FxHashMap<usize, usize> = FxHashMap::default();
-            let cols: Vec<SparseVec<Rational>> = g
-                .iter()
-                .map(|&j| {
-                    columns[j]
-                        .iter()
-                        .map(|(r, x)| {
-                            let len = local_row.len();
-                            (*local_row.entry(*r).or_insert(len), x.clone())
-                        })
-                        .collect()
-                })
-                .collect();
-            modular::kernel(&cols, local_row.len())
-                .into_iter()
-                .map(|v| v.into_iter().map(|(i, x)| (g[i], x)).collect())
-                .collect()
-        })
-        .collect();
-    let mut kernel: Vec<SparseVec<Rational>> = kernels.into_iter().flatten().collect();
-    // By leading (last) unknown, i.e. by the order of the unknowns.
-    kernel.sort_by_key(|v| lead(v).map_or(0, |l| l.0));
+    let Kernel {
+        mut kernel,
+        components,
+        largest_component,
+    } = kernel_by_blocks(&columns, nrows);
     timings.solve = t.elapsed().as_secs_f64();
 
     // Proofs: at the fixed values, then lifted and proved symbolically.
@@ -364,11 +266,156 @@ pub fn search(system: &System, options: &SearchOptions) -> Result<SearchResult, 
         variables: problem.variables.clone(),
         unknowns: n,
         equations: nrows,
-        components: groups.len(),
+        components,
         largest_component,
         basis,
         new,
         module,
         timings,
     })
+}
+
+/// Refuses what the search cannot answer: a Hamiltonian that is not real, a condition whose
+/// values are not, and a parameter the condition sets that is also fixed or kept symbolic.
+fn refuse_unreal(system: &System, options: &SearchOptions) -> Result<(), EngineError> {
+    let vars = system.vars();
+    // The unknowns are the real coefficients of real functions, and the equations only the
+    // coefficients of `e^{ik·θ}` with `k ≥ 0`: right when `{F, H}` is real, that is when `H`
+    // and the condition's values are.
+    if !system.hamiltonian().is_real() {
+        return Err(EngineError::Invalid(
+            "the search finds the real integrals of a real Hamiltonian, and H is not real \
+             (it differs from its conjugate)"
+                .into(),
+        ));
+    }
+    if let Some(c) = &options.condition {
+        if let Some((v, _)) = c.subs().iter().find(|(_, value)| !value.is_real()) {
+            return Err(EngineError::Invalid(format!(
+                "the search needs a real condition, and the value of {} is not real",
+                vars.variable(*v).name()
+            )));
+        }
+    }
+    // A parameter the condition sets takes its value from the condition (after the bracket,
+    // like a resonance): fixing it first would search at another value.
+    if let Some(c) = &options.condition {
+        for (v, _) in c.subs() {
+            let name = vars.variable(*v).name();
+            if options.fixed.iter().any(|f| f.0 == *v) || options.symbolic.contains(v) {
+                return Err(EngineError::Invalid(format!(
+                    "{name} is set by the condition; it can be neither fixed nor kept symbolic"
+                )));
+            }
+        }
+    }
+    Ok(())
+}
+
+/// The images `{φ_j, H}` of the unknowns as real equations over Q, one column each: a row for
+/// the real and for the imaginary part of each monomial with a canonical `e^{ik·θ}`, numbered
+/// as they first appear; and how many rows there are. The images are formed on the pool's
+/// threads, a block of unknowns at a time, and numbered in the order of the unknowns. With
+/// denominator atoms or radicals they are taken through one injective `Clearing`, whose powers
+/// are the highest among all the images: formed in one block.
+fn equations(
+    problem: &Problem,
+    atoms: &[(Var, Expr)],
+    radicals: &[(Var, Expr)],
+    parameters: &[(Var, Rational)],
+) -> Result<(Vec<SparseVec<Rational>>, usize), EngineError> {
+    let n = problem.unknowns.len();
+    let block = if atoms.is_empty() && radicals.is_empty() {
+        IMAGE_BLOCK
+    } else {
+        n.max(1)
+    };
+    let mut rows: RowIndex = MonomialIndex::new(&problem.vars);
+    let mut nrows = 0;
+    let mut columns: Vec<SparseVec<Rational>> = Vec::with_capacity(n);
+    for start in (0..n).step_by(block) {
+        let images: Vec<Result<Expr, EngineError>> = (start..n.min(start + block))
+            .into_par_iter()
+            .map(|j| problem.image(&problem.expr(j, &Rational::one())?))
+            .collect();
+        let mut images = images.into_iter().collect::<Result<Vec<Expr>, _>>()?;
+        if let Some(clearing) = Clearing::new(atoms, radicals, parameters, images.iter())? {
+            images = clearing.apply_all(&images)?;
+        }
+        for image in &images {
+            columns.push(real_rows(
+                image,
+                &problem.variables.angles,
+                &mut rows,
+                &mut nrows,
+            ));
+        }
+    }
+    Ok((columns, nrows))
+}
+
+/// The kernel of the equations, found block by block.
+struct Kernel {
+    /// Its basis, by leading (last) unknown.
+    kernel: Vec<SparseVec<Rational>>,
+    /// How many independent blocks the unknowns fall into.
+    components: usize,
+    /// The unknowns of the largest block.
+    largest_component: usize,
+}
+
+/// The kernel of the columns: the unknowns that share no equation fall into independent
+/// blocks (connected components), solved on the pool's threads and kept in the order of the
+/// blocks; the basis sorted by leading (last) unknown, i.e. in the order of the unknowns.
+fn kernel_by_blocks(columns: &[SparseVec<Rational>], nrows: usize) -> Kernel {
+    let n = columns.len();
+    let mut uf = Components((0..n).collect());
+    let mut first_col: Vec<Option<usize>> = vec![None; nrows];
+    for (j, col) in columns.iter().enumerate() {
+        for (r, _) in col {
+            match first_col[*r] {
+                Some(f) => uf.union(f, j),
+                None => first_col[*r] = Some(j),
+            }
+        }
+    }
+    let mut groups: FxHashMap<usize, Vec<usize>> = FxHashMap::default();
+    for j in 0..n {
+        let r = uf.find(j);
+        groups.entry(r).or_default().push(j);
+    }
+    let mut groups: Vec<Vec<usize>> = groups.into_values().collect();
+    groups.sort();
+    let largest_component = groups.iter().map(Vec::len).max().unwrap_or(0);
+    // The blocks are independent: solved on the pool's threads, kept in the order of the blocks.
+    let kernels: Vec<Vec<SparseVec<Rational>>> = groups
+        .par_iter()
+        .map(|g| {
+            let mut local_row: FxHashMap<usize, usize> = FxHashMap::default();
+            let cols: Vec<SparseVec<Rational>> = g
+                .iter()
+                .map(|&j| {
+                    columns[j]
+                        .iter()
+                        .map(|(r, x)| {
+                            let len = local_row.len();
+                            (*local_row.entry(*r).or_insert(len), x.clone())
+                        })
+                        .collect()
+                })
+                .collect();
+            modular::kernel(&cols, local_row.len())
+                .into_iter()
+                .map(|v| v.into_iter().map(|(i, x)| (g[i], x)).collect())
+                .collect()
+        })
+        .collect();
+    let mut kernel: Vec<SparseVec<Rational>> = kernels.into_iter().flatten().collect();
+    // By leading (last) unknown, i.e. by the order of the unknowns.
+    kernel.sort_by_key(|v| lead(v).map_or(0, |l| l.0));
+    Kernel {
+        kernel,
+        components: groups.len(),
+        largest_component,
+    }
 }
