@@ -27,7 +27,7 @@ pub(super) fn new_integrals(
     basis: &[Integral],
     multiples: &[Multiple],
 ) -> Result<NewIntegrals, EngineError> {
-    let (space, extra, symbolic) = (&options.space, &options.known, &options.symbolic);
+    let space = &options.space;
     // With denominator atoms or radicals a function of the space may be written in other
     // monomials than the unknowns' (and a product's powers of `1/D` add up, `r · r = R`): it
     // is located through the cleared images of the basis integrals instead.
@@ -43,49 +43,10 @@ pub(super) fn new_integrals(
         )?)),
     };
     // Known integrals: named real functions that are integrals, restricted to the condition.
-    let mut known_names = Vec::new();
-    let mut known: Vec<(Expr, SparseVec<Rational>)> = Vec::new();
-    let named = system
-        .functions()
-        .iter()
-        .map(|f| (f.display.clone(), f.expr.clone()));
-    // The system's functions that are no real integrals are left out; a known integral given
-    // as one that is not is an error, not a silence.
-    let named = named.map(|(name, f)| (name, f, false));
-    let given = extra
-        .iter()
-        .map(|(name, f)| (name.clone(), f.clone(), true));
-    for (name, f, given) in named.chain(given) {
-        if !f.is_real() {
-            if given {
-                return Err(EngineError::Invalid(format!(
-                    "the known integral {name} is not real: give its real and imaginary parts, \
-                     re({name}) and im({name})"
-                )));
-            }
-            continue;
-        }
-        let fv = fix_parameters(&f, parameters)?;
-        let flow = problem.flow(system, &fv)?;
-        if !problem.vanishes(system, &flow)? {
-            if given {
-                return Err(not_an_integral(&name, &flow, options, parameters));
-            }
-            continue;
-        }
-        let restricted = without_parameter_denominators(&problem.apply_condition(fv)?, symbolic)?;
-        let Some(v) = locator.coordinates(&restricted)? else {
-            continue;
-        };
-        // In the unknowns' monomials, so that its generators' sizes are its own. A constant on
-        // phase space (`Ω = ω` at a resonance) is no integral worth naming, and a function
-        // given twice (in other monomials, with denominators) is named once.
-        let canonical = problem.combination(&v)?;
-        if !is_phase_free(&canonical) && !known.iter().any(|k| k.1 == v) {
-            known_names.push(name);
-            known.push((canonical, v));
-        }
-    }
+    let KnownIntegrals {
+        names: known_names,
+        integrals: known,
+    } = known_integrals(system, problem, options, parameters, &locator)?;
     // The filtration by grade ([`Grading`]): an integral of grade g is generated when it lies
     // in the span of the known integrals, the constants, the products of at least two
     // integrals of grade < g (known or found) and the parameter multiples of integrals of
@@ -223,6 +184,75 @@ pub(super) fn new_integrals(
         generated: basis.len() - new.len(),
         new,
         products,
+    })
+}
+
+/// The known integrals of a search for new ones.
+struct KnownIntegrals {
+    /// Each one's name (its display name, for a function of the system).
+    names: Vec<String>,
+    /// Each one in the unknowns' monomials, and its coordinates in the space.
+    integrals: Vec<(Expr, SparseVec<Rational>)>,
+}
+
+/// The known integrals, named: the system's named functions that are real integrals (the
+/// others left out) and those given in `options.known` (an error when one is not real or no
+/// integral), each restricted to the condition and located in the space; a constant on phase
+/// space, or a function met twice, is left out.
+fn known_integrals(
+    system: &System,
+    problem: &Problem,
+    options: &SearchOptions,
+    parameters: &[(Var, Rational)],
+    locator: &Locator<'_>,
+) -> Result<KnownIntegrals, EngineError> {
+    let (extra, symbolic) = (&options.known, &options.symbolic);
+    let mut known_names = Vec::new();
+    let mut known: Vec<(Expr, SparseVec<Rational>)> = Vec::new();
+    let named = system
+        .functions()
+        .iter()
+        .map(|f| (f.display.clone(), f.expr.clone()));
+    // The system's functions that are no real integrals are left out; a known integral given
+    // as one that is not is an error, not a silence.
+    let named = named.map(|(name, f)| (name, f, false));
+    let given = extra
+        .iter()
+        .map(|(name, f)| (name.clone(), f.clone(), true));
+    for (name, f, given) in named.chain(given) {
+        if !f.is_real() {
+            if given {
+                return Err(EngineError::Invalid(format!(
+                    "the known integral {name} is not real: give its real and imaginary parts, \
+                     re({name}) and im({name})"
+                )));
+            }
+            continue;
+        }
+        let fv = fix_parameters(&f, parameters)?;
+        let flow = problem.flow(system, &fv)?;
+        if !problem.vanishes(system, &flow)? {
+            if given {
+                return Err(not_an_integral(&name, &flow, options, parameters));
+            }
+            continue;
+        }
+        let restricted = without_parameter_denominators(&problem.apply_condition(fv)?, symbolic)?;
+        let Some(v) = locator.coordinates(&restricted)? else {
+            continue;
+        };
+        // In the unknowns' monomials, so that its generators' sizes are its own. A constant on
+        // phase space (`Ω = ω` at a resonance) is no integral worth naming, and a function
+        // given twice (in other monomials, with denominators) is named once.
+        let canonical = problem.combination(&v)?;
+        if !is_phase_free(&canonical) && !known.iter().any(|k| k.1 == v) {
+            known_names.push(name);
+            known.push((canonical, v));
+        }
+    }
+    Ok(KnownIntegrals {
+        names: known_names,
+        integrals: known,
     })
 }
 
