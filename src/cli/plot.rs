@@ -365,24 +365,7 @@ pub fn run(job: &PlotJob) -> anyhow::Result<bool> {
         None => Style::Lines,
     };
     let reduced = against.as_ref().is_some_and(Axis::reduced);
-    let drawn: Vec<Curve> = orbits
-        .iter()
-        .flat_map(|o| {
-            o.rows[1..].iter().map(|c| {
-                let points = o.axis.iter().copied().zip(c.values.iter().copied());
-                match (reduced, style) {
-                    (false, _) => Curve::new(c.label.clone(), points.collect()),
-                    (true, Style::Lines) => {
-                        Curve::with_angle_x(c.label.clone(), &points.collect::<Vec<_>>())
-                    }
-                    (true, Style::Dots) => Curve::new(
-                        c.label.clone(),
-                        points.map(|(x, y)| (reduce_angle(x), y)).collect(),
-                    ),
-                }
-            })
-        })
-        .collect();
+    let drawn = curves(&orbits, reduced, style);
     let axis_label = against.as_ref().map_or("t", Axis::label);
     let svg = chart::svg(&title, axis_label, &drawn, style)?;
     let to_stdout = args.output.as_os_str() == "-";
@@ -415,6 +398,36 @@ pub fn run(job: &PlotJob) -> anyhow::Result<bool> {
     } else {
         emit(&table)?;
     }
+    warn_of_drift(&orbits, args)?;
+    Ok(true)
+}
+
+/// The curves drawn: each function but `H` along each orbit, against the horizontal axis; an
+/// angle on that axis reduced mod 2π (a line broken where it wraps, or dots moved into range).
+fn curves(orbits: &[Orbit], reduced: bool, style: Style) -> Vec<Curve> {
+    orbits
+        .iter()
+        .flat_map(|o| {
+            o.rows[1..].iter().map(|c| {
+                let points = o.axis.iter().copied().zip(c.values.iter().copied());
+                match (reduced, style) {
+                    (false, _) => Curve::new(c.label.clone(), points.collect()),
+                    (true, Style::Lines) => {
+                        Curve::with_angle_x(c.label.clone(), &points.collect::<Vec<_>>())
+                    }
+                    (true, Style::Dots) => Curve::new(
+                        c.label.clone(),
+                        points.map(|(x, y)| (reduce_angle(x), y)).collect(),
+                    ),
+                }
+            })
+        })
+        .collect()
+}
+
+/// Warns on stderr of each orbit along which `H` moved by more than
+/// [`ENERGY_DRIFT_WARNING`] of its size: the integration is not accurate at these steps.
+fn warn_of_drift(orbits: &[Orbit], args: &PlotArgs) -> anyhow::Result<()> {
     for (k, orbit) in orbits.iter().enumerate() {
         let drift = energy_drift(&orbit.rows[0]);
         if drift > ENERGY_DRIFT_WARNING {
@@ -434,7 +447,7 @@ pub fn run(job: &PlotJob) -> anyhow::Result<bool> {
             ))?;
         }
     }
-    Ok(true)
+    Ok(())
 }
 
 /// Refuses outputs that would overwrite one another or the system file: `--data -` (a file
