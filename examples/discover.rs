@@ -19,6 +19,8 @@ fn main() -> Result<(), EngineError> {
         found.unknowns,
         report.all_proved()
     );
+    // The example checks what it prints: CI runs it.
+    assert!(report.all_proved() && found.basis.len() == 14);
     for integral in found.basis.iter().take(3) {
         println!("  {}", integral.expr());
     }
@@ -43,6 +45,7 @@ fn main() -> Result<(), EngineError> {
         algebra.relations.len()
     );
     println!("  {{P, Q}} = {}", algebra.render_bracket(2, 3));
+    assert!(algebra.closes() && report.all_proved());
     let json = render(&report, Format::Json, &RenderOptions::reproducible());
     println!("  as JSON: {} bytes", json.len());
 
@@ -58,5 +61,6 @@ fn main() -> Result<(), EngineError> {
         "rank(F1, F2, G1, G2, P_{{1,1}}) = {}: a nonzero minor {} at an exact point",
         certificate.rank, certificate.minor_value
     );
+    assert_eq!(certificate.rank, 5);
     Ok(())
 }

@@ -41,7 +41,10 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
             kepler.parse(lhs)?,
             kepler.parse(rhs)?,
         );
-        println!("{}", claim.check()?);
+        let verdict = claim.check()?;
+        println!("{verdict}");
+        // The example checks what it prints (CI runs it): only the turned sign is refuted.
+        assert_eq!(verdict.outcome.is_proved(), id != "wrong-sign", "{id}");
     }
 
     // Every integral of degree ≤ 2 in the momenta, ≤ 1 in x, y and ≤ 1 in r (1/r, x/r, …):
@@ -53,6 +56,7 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
         found.basis.len(),
         found.unknowns
     );
+    assert_eq!(found.basis.len(), 5);
     for integral in &found.basis {
         println!("  {}", integral.expr());
     }

@@ -35,7 +35,10 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
         rotor.parse("{A, H}")?,
         rotor.parse("i*k*A")?,
     );
-    println!("{}", ladder.check()?);
+    let verdict = ladder.check()?;
+    println!("{verdict}");
+    // The example checks what it prints: CI runs it.
+    assert!(verdict.outcome.is_proved());
 
     // Families, claims and the tower live on a LoadedSystem, which a system in code becomes.
     let mut rotor = LoadedSystem::of_system(rotor);
@@ -51,6 +54,7 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
         .add_claim("off", "{R_{2,1}, H} = 0", Some("p_phi = J*k"))?
         .expect = Expect::Refuted;
     let claims = check_report([&rotor])?;
+    assert!(claims.all_as_expected());
     print!(
         "{}",
         render(&claims, Format::Text, &RenderOptions::reproducible())
@@ -72,6 +76,7 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
     for fact in &proof.facts {
         println!("  {}: {}", fact.statement, fact.holds);
     }
+    assert!(checked.failures.is_empty() && proof.holds());
     let json = render(&tower, Format::Json, &RenderOptions::reproducible());
     println!("as JSON: {} bytes", json.len());
     Ok(())

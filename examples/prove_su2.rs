@@ -13,6 +13,8 @@ fn main() -> Result<(), EngineError> {
     ] {
         let claim = Claim::new("C09", statement, rotor.parse(lhs)?, rotor.parse(rhs)?);
         let verdict = claim.check()?;
+        // The example checks what it prints: CI runs it.
+        assert!(verdict.outcome.is_proved(), "{statement}");
         let outcome = match verdict.outcome {
             Outcome::Proved => "proved".to_string(),
             Outcome::Refuted { residual } => format!("refuted, residual {residual}"),

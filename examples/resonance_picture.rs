@@ -19,10 +19,10 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
         Expr::zero(rotor.vars()),
     )
     .when(rotor.resonance(1, 1)?);
-    println!(
-        "{{K_{{1,1}}, H}} = 0 at p_θ = Iω: {:?}",
-        at_resonance.check()?.outcome
-    );
+    let verdict = at_resonance.check()?;
+    println!("{{K_{{1,1}}, H}} = 0 at p_θ = Iω: {:?}", verdict.outcome);
+    // The example checks the exact claim it prints (CI runs it); the picture decides nothing.
+    assert!(verdict.outcome.is_proved());
 
     // The same functions with M = ω = I = 1, rounded for the integrator.
     let one = GaussianRational::from(1);

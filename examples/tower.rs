@@ -27,6 +27,8 @@ fn main() -> Result<(), EngineError> {
         );
     }
     println!("  lemma: {}", proof.lemma);
+    // The example checks what it prints: CI runs it.
+    assert!(tower.failures.is_empty() && proof.holds());
     println!("  so: {}", proof.conclusion);
     Ok(())
 }
