@@ -314,130 +314,11 @@ impl<'a> Builder<'a> {
     ) -> Result<PhaseSpace, FileError> {
         let space = file.system.space();
         let vars = space.vars();
-        let phase: Vec<&str> = space
-            .coordinates()
-            .into_iter()
-            .map(|v| vars.variable(v).name())
-            .collect();
         let mut entries: Vec<(Var, Var, Expr, Range<usize>)> = Vec::new();
         for (key, value) in &poisson.get_ref().entries {
             let span = key.span();
-            let names = key
-                .get_ref()
-                .trim()
-                .strip_prefix('{')
-                .and_then(|k| k.strip_suffix('}'))
-                .map(|k| k.split(',').map(str::trim).collect::<Vec<_>>())
-                .filter(|names| names.len() == 2 && names.iter().all(|n| !n.is_empty()));
-            let Some(names) = names else {
-                return Err(self.error(
-                    ErrorKind::Schema,
-                    span,
-                    format!(
-                        "a key of [poisson] is a bracket of two variables, such as \
-                         \"{{M1, M2}}\", not \"{}\"",
-                        key.get_ref()
-                    ),
-                ));
-            };
-            let mut pair = Vec::new();
-            for name in names {
-                let Some(v) = vars.lookup(name) else {
-                    return Err(self.error(
-                        ErrorKind::Name,
-                        span.clone(),
-                        format!(
-                            "unknown name '{name}' in a bracket of [poisson] (the phase \
-                             variables: {})",
-                            phase.join(", ")
-                        ),
-                    ));
-                };
-                if !space.is_phase_variable(v) {
-                    return Err(self.error(
-                        ErrorKind::Name,
-                        span.clone(),
-                        format!(
-                            "'{name}' is {}, not a variable of the phase space, so every \
-                             bracket with it is 0; declare it under variables to give it \
-                             brackets",
-                            vars.variable(v).kind().described()
-                        ),
-                    ));
-                }
-                pair.push(v);
-            }
-            let (a, b) = (pair[0], pair[1]);
-            let [ua, ub] = [a, b].map(|v| vars.variable(v).unicode());
-            if a == b {
-                return Err(self.error(
-                    ErrorKind::Name,
-                    span,
-                    format!(
-                        "{{{ua}, {ua}}} is 0: a variable's bracket with itself is not declared"
-                    ),
-                ));
-            }
-            let poisson_vars = space.poisson_variables();
-            if !poisson_vars.contains(&a) && !poisson_vars.contains(&b) {
-                return Err(self.error(
-                    ErrorKind::Name,
-                    span,
-                    format!(
-                        "{{{ua}, {ub}}} is a bracket of canonical variables, already fixed by \
-                         their pairs ({{q, p_q}} = 1, every other 0): [poisson] gives the \
-                         brackets of the Poisson variables (under variables)"
-                    ),
-                ));
-            }
-            if let Some((.., first)) = entries
-                .iter()
-                .find(|e| (e.0, e.1) == (a, b) || (e.0, e.1) == (b, a))
-            {
-                let line = super::error::locate(&self.source.text, first.clone()).line;
-                return Err(self.error(
-                    ErrorKind::Name,
-                    span,
-                    format!(
-                        "{{{ua}, {ub}}} is given twice: line {line} gives it already (a \
-                         bracket in one order gives the other, {{{ub}, {ua}}} = −{{{ua}, {ub}}})"
-                    ),
-                ));
-            }
-            let text = self.text(value);
-            let scope = file.scope(0);
-            let tree = scope.tree(&self.source, &text)?;
-            let refused = mention(&tree, "H")
-                .map(|at| {
-                    (
-                        at,
-                        "a declared bracket cannot use H: write it in the variables",
-                    )
-                })
-                .or_else(|| {
-                    first_bracket(&tree).map(|at| {
-                        (
-                            at,
-                            "a declared bracket's value cannot be a bracket: it is what \
-                             defines them; write it in the variables",
-                        )
-                    })
-                });
-            if let Some((at, message)) = refused {
-                return Err(text.error(&self.source, ErrorKind::Expression, at, message));
-            }
-            let expr = scope.lower(&self.source, &text, &tree)?;
-            if expr.conj() != expr {
-                return Err(text.error(
-                    &self.source,
-                    ErrorKind::Expression,
-                    tree.span,
-                    format!(
-                        "{{{ua}, {ub}}} = {expr} is not real: the bracket of two real \
-                         variables is real"
-                    ),
-                ));
-            }
+            let (a, b) = self.declared_pair(key, space, &entries)?;
+            let expr = self.declared_value(file, value, (a, b))?;
             entries.push((a, b, expr, span));
         }
         let named: Vec<(&str, &str, Expr)> = entries
@@ -465,6 +346,152 @@ impl<'a> Builder<'a> {
                 e.to_string(),
             )
         })
+    }
+
+    /// The two variables of a key of `[poisson]` (`{M1, M2}`), refused when the key is no
+    /// bracket of two variables, names no phase variable, pairs a variable with itself or
+    /// two canonical variables, or repeats an entry of `entries`.
+    fn declared_pair(
+        &self,
+        key: &Spanned<String>,
+        space: &PhaseSpace,
+        entries: &[(Var, Var, Expr, Range<usize>)],
+    ) -> Result<(Var, Var), FileError> {
+        let vars = space.vars();
+        let phase: Vec<&str> = space
+            .coordinates()
+            .into_iter()
+            .map(|v| vars.variable(v).name())
+            .collect();
+        let span = key.span();
+        let names = key
+            .get_ref()
+            .trim()
+            .strip_prefix('{')
+            .and_then(|k| k.strip_suffix('}'))
+            .map(|k| k.split(',').map(str::trim).collect::<Vec<_>>())
+            .filter(|names| names.len() == 2 && names.iter().all(|n| !n.is_empty()));
+        let Some(names) = names else {
+            return Err(self.error(
+                ErrorKind::Schema,
+                span,
+                format!(
+                    "a key of [poisson] is a bracket of two variables, such as \
+                 \"{{M1, M2}}\", not \"{}\"",
+                    key.get_ref()
+                ),
+            ));
+        };
+        let mut pair = Vec::new();
+        for name in names {
+            let Some(v) = vars.lookup(name) else {
+                return Err(self.error(
+                    ErrorKind::Name,
+                    span.clone(),
+                    format!(
+                        "unknown name '{name}' in a bracket of [poisson] (the phase \
+                     variables: {})",
+                        phase.join(", ")
+                    ),
+                ));
+            };
+            if !space.is_phase_variable(v) {
+                return Err(self.error(
+                    ErrorKind::Name,
+                    span.clone(),
+                    format!(
+                        "'{name}' is {}, not a variable of the phase space, so every \
+                     bracket with it is 0; declare it under variables to give it \
+                     brackets",
+                        vars.variable(v).kind().described()
+                    ),
+                ));
+            }
+            pair.push(v);
+        }
+        let (a, b) = (pair[0], pair[1]);
+        let [ua, ub] = [a, b].map(|v| vars.variable(v).unicode());
+        if a == b {
+            return Err(self.error(
+                ErrorKind::Name,
+                span,
+                format!("{{{ua}, {ua}}} is 0: a variable's bracket with itself is not declared"),
+            ));
+        }
+        let poisson_vars = space.poisson_variables();
+        if !poisson_vars.contains(&a) && !poisson_vars.contains(&b) {
+            return Err(self.error(
+                ErrorKind::Name,
+                span,
+                format!(
+                    "{{{ua}, {ub}}} is a bracket of canonical variables, already fixed by \
+                 their pairs ({{q, p_q}} = 1, every other 0): [poisson] gives the \
+                 brackets of the Poisson variables (under variables)"
+                ),
+            ));
+        }
+        if let Some((.., first)) = entries
+            .iter()
+            .find(|e| (e.0, e.1) == (a, b) || (e.0, e.1) == (b, a))
+        {
+            let line = super::error::locate(&self.source.text, first.clone()).line;
+            return Err(self.error(
+                ErrorKind::Name,
+                span,
+                format!(
+                    "{{{ua}, {ub}}} is given twice: line {line} gives it already (a \
+                 bracket in one order gives the other, {{{ub}, {ua}}} = −{{{ua}, {ub}}})"
+                ),
+            ));
+        }
+        Ok((a, b))
+    }
+
+    /// The value of a declared bracket `{a, b}`: an expression in the variables (no `H`, no
+    /// bracket, which it defines), real.
+    fn declared_value(
+        &self,
+        file: &LoadedSystem,
+        value: &Spanned<String>,
+        (a, b): (Var, Var),
+    ) -> Result<Expr, FileError> {
+        let vars = file.system.space().vars();
+        let [ua, ub] = [a, b].map(|v| vars.variable(v).unicode());
+        let text = self.text(value);
+        let scope = file.scope(0);
+        let tree = scope.tree(&self.source, &text)?;
+        let refused = mention(&tree, "H")
+            .map(|at| {
+                (
+                    at,
+                    "a declared bracket cannot use H: write it in the variables",
+                )
+            })
+            .or_else(|| {
+                first_bracket(&tree).map(|at| {
+                    (
+                        at,
+                        "a declared bracket's value cannot be a bracket: it is what \
+                     defines them; write it in the variables",
+                    )
+                })
+            });
+        if let Some((at, message)) = refused {
+            return Err(text.error(&self.source, ErrorKind::Expression, at, message));
+        }
+        let expr = scope.lower(&self.source, &text, &tree)?;
+        if expr.conj() != expr {
+            return Err(text.error(
+                &self.source,
+                ErrorKind::Expression,
+                tree.span,
+                format!(
+                    "{{{ua}, {ub}}} = {expr} is not real: the bracket of two real \
+                 variables is real"
+                ),
+            ));
+        }
+        Ok(expr)
     }
 
     fn text(&self, s: &Spanned<String>) -> Text {
