@@ -276,10 +276,10 @@ pub fn sentence(s: &str) -> String {
     out.join(" ")
 }
 
-fn translate(s: &str) -> String {
-    let toks = tokenize(s);
-    // Classify words: prose or mathematics.
-    // Words inside a script (`e^{−inθ}`) are never prose.
+/// Which tokens are words of prose, set as text, and not mathematics: a word between spaces
+/// or punctuation that reads as prose, outside any script (`e^{−inθ}`), and a lone `a` before
+/// such a word (the article).
+fn prose_words(toks: &[Tok]) -> Vec<bool> {
     let mut prose = vec![false; toks.len()];
     let mut scripts: Vec<bool> = Vec::new();
     for (k, t) in toks.iter().enumerate() {
@@ -319,6 +319,12 @@ fn translate(s: &str) -> String {
             prose[k] = true;
         }
     }
+    prose
+}
+
+fn translate(s: &str) -> String {
+    let toks = tokenize(s);
+    let prose = prose_words(&toks);
     let mut out = String::new();
     // Each open brace: whether it is a script's group (not an escaped brace), and whether a
     // subscript's.
