@@ -749,7 +749,7 @@ fn printing_ring(vars: &Vars, generators: &[NamedFunction]) -> Result<PrintingRi
 /// The minimal relations among the generators, by degree: `G − c = 0` for a generator
 /// constant on the condition's surface (when `degree ≥ 1`), then each kernel vector (a
 /// relation at the fixed values) that is not a combination of multiples of those before it,
-/// lifted and proved. `(generators, columns)`: how many generators (the symbolic parameters
+/// lifted and proved. `(r, columns)`: how many generators (the symbolic parameters
 /// apart) and columns there are.
 fn minimal_relations(
     lift_ctx: &mut LiftContext<'_>,
