@@ -1,0 +1,472 @@
+//! The results a report's entries hold, one type a kind: a checked claim (`ClaimResult`, with
+//! its outcome and, for a long residual, an `Excerpt`), a bracket table (`TableResult`), a
+//! proof for all `m, n` (`ProofResult`), a tower checked by expansion (`TowerResult`) and a
+//! rank certificate (`RankResult`).
+
+use std::collections::BTreeMap;
+
+use brackets::{BracketTable, RankCertificate, System};
+use trigpoly::{Expr, Style, Var, Vars};
+
+use super::Expect;
+
+/// Whether a claim asserts an identity or that something does not vanish.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum ClaimKind {
+    /// `lhs = rhs` (under the condition): proved when `lhs − rhs` is exactly zero.
+    Identity,
+    /// `lhs ≠ rhs` (under the condition): proved when `lhs − rhs` is not zero; the nonzero
+    /// difference is the witness.
+    Nonvanishing,
+}
+
+/// What a check of a claim found. Ordered so that the outcome of several checks of one claim
+/// is the greatest: one refuted check refutes it, else one undecided leaves it undecided.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord)]
+pub enum ClaimOutcome {
+    /// `lhs − rhs` is exactly zero (or, for a nonvanishing claim, is not).
+    Proved,
+    /// The check stopped at a limit: neither proved nor refuted.
+    Undecided,
+    /// Not proved: the residual says why.
+    Refuted,
+}
+
+impl ClaimOutcome {
+    /// `proved`, `undecided` or `refuted`, as JSON gives it.
+    pub fn name(self) -> &'static str {
+        match self {
+            ClaimOutcome::Proved => "proved",
+            ClaimOutcome::Undecided => "undecided",
+            ClaimOutcome::Refuted => "refuted",
+        }
+    }
+}
+
+/// A claim of the paper, checked.
+#[derive(Clone, Debug)]
+pub struct ClaimResult {
+    /// The claim's id (`C09`).
+    pub id: String,
+    /// How the claim reads, in the paper's unicode notation (`{L, G1} = −G2`).
+    pub statement: String,
+    /// The claim as text that `superint` reads back in its system file: as the file writes
+    /// it, or a found bracket or relation in the file's names (`{L, Ax} = Ay`); `None` for
+    /// the paper's claims and for those a tower or a proof decides.
+    pub written: Option<String>,
+    /// Where it is claimed to hold (`p_θ = Iω`), if it is conditional.
+    pub condition: Option<String>,
+    /// The condition as text that superint reads back (`p_theta = I*omega`), where the claim
+    /// has such a text ([`ClaimResult::written`]).
+    pub condition_ascii: Option<String>,
+    /// Identity or nonvanishing.
+    pub kind: ClaimKind,
+    /// Whether the claim was proved.
+    pub proved: bool,
+    /// What the claim is expected to do (proved, unless it is marked as deliberately false).
+    pub expect: Expect,
+    /// For a refuted identity, the nonzero residual `lhs − rhs` in normal form.
+    pub residual: Option<Expr>,
+    /// For a proved nonvanishing claim, the nonzero value that proves it.
+    pub witness: Option<Expr>,
+    /// For a claim proved or refuted by a derived check (a tower, a proof, a rank), what failed.
+    pub note: Option<String>,
+    /// For a claim whose check stopped at a limit (of terms, of term products, of degree), the
+    /// limit's message: the claim is neither proved nor refuted ([`ClaimResult::undecided`]).
+    pub undecided: Option<String>,
+    /// When the residual above is a part of a longer one ([`ClaimResult::excerpt_residual`]): how
+    /// much of it is shown.
+    pub excerpt: Option<Excerpt>,
+    /// Seconds spent checking it.
+    pub seconds: f64,
+}
+
+/// How much of a long expression (a refuted claim's residual, a table's entry) is shown: every
+/// term of its first `shown` monomials outside the angles ([`trigpoly::Poly::leading_part`]),
+/// of `monomials` in all.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Excerpt {
+    /// The monomials whose terms are shown.
+    pub shown: usize,
+    /// The monomials of the whole.
+    pub monomials: usize,
+    /// Whether an angle appears in the whole (else its monomials are its terms).
+    pub angles: bool,
+}
+
+impl Excerpt {
+    /// What the prose formats say under the part: `shown: the terms of its first 100 of
+    /// 254321 monomials outside the angles; --full-expressions shows all` (`its first 100 of
+    /// 254321 terms` without angles).
+    pub fn describe(&self) -> String {
+        let (shown, all) = (self.shown, self.monomials);
+        let part = match self.angles {
+            true => format!("the terms of its first {shown} of {all} monomials outside the angles"),
+            false => format!("its first {shown} of {all} terms"),
+        };
+        format!("shown: {part}; --full-expressions shows all")
+    }
+
+    /// Cuts `e` to the terms of its first `monomials` monomials outside the angles if it has
+    /// more; how much of it is then shown.
+    fn cut(e: &mut Expr, monomials: usize) -> Option<Excerpt> {
+        if e.len() <= monomials {
+            return None;
+        }
+        let (part, all) = e.leading_part(monomials);
+        if all <= monomials {
+            return None;
+        }
+        let excerpt = Excerpt {
+            shown: monomials,
+            monomials: all,
+            angles: e.has_angles(),
+        };
+        *e = part;
+        Some(excerpt)
+    }
+}
+
+impl ClaimResult {
+    /// A claim decided by a derived check (tower, proof, rank) rather than one residual.
+    pub fn derived(id: &str, statement: &str, proved: bool, note: Option<String>) -> Self {
+        ClaimResult {
+            id: id.to_string(),
+            statement: statement.to_string(),
+            written: None,
+            condition: None,
+            condition_ascii: None,
+            kind: ClaimKind::Identity,
+            proved,
+            expect: Expect::Proved,
+            residual: None,
+            witness: None,
+            note,
+            undecided: None,
+            excerpt: None,
+            seconds: 0.0,
+        }
+    }
+
+    /// A claim whose check stopped at a limit, with the limit's message: neither proved nor
+    /// refuted, and so not as expected, whatever it was expected to be.
+    pub fn undecided(id: &str, statement: &str, message: &str) -> Self {
+        ClaimResult {
+            undecided: Some(message.to_string()),
+            ..ClaimResult::derived(id, statement, false, None)
+        }
+    }
+
+    /// The same result with a timing.
+    pub fn timed(mut self, seconds: f64) -> Self {
+        self.seconds = seconds;
+        self
+    }
+
+    /// The same result with its text as a system file writes it.
+    pub fn written(mut self, text: &str) -> Self {
+        self.written = Some(text.to_string());
+        self
+    }
+
+    /// The same result under a condition, as printed and as superint reads it back.
+    pub fn at(mut self, condition: Option<(String, String)>) -> Self {
+        (self.condition, self.condition_ascii) = condition.unzip();
+        self
+    }
+
+    /// The same result with an expectation.
+    pub fn expecting(mut self, expect: Expect) -> Self {
+        self.expect = expect;
+        self
+    }
+
+    /// Whether the outcome is the expected one: proved when expected proved, refuted when
+    /// expected refuted.
+    pub fn meets_expectation(&self) -> bool {
+        self.undecided.is_none() && self.proved == (self.expect == Expect::Proved)
+    }
+
+    /// Proved, refuted, or undecided (stopped at a limit).
+    pub fn outcome(&self) -> ClaimOutcome {
+        match (self.proved, &self.undecided) {
+            (_, Some(_)) => ClaimOutcome::Undecided,
+            (true, None) => ClaimOutcome::Proved,
+            (false, None) => ClaimOutcome::Refuted,
+        }
+    }
+
+    /// Cuts a residual of more than `monomials` monomials outside the angles to the terms of
+    /// its first `monomials` ([`Excerpt`]): a residual of millions of terms, which would print
+    /// a gigabyte, shows its leading terms and its size.
+    pub fn excerpt_residual(&mut self, monomials: usize) {
+        if let Some(e) = self.residual.as_mut() {
+            self.excerpt = Excerpt::cut(e, monomials);
+        }
+    }
+
+    /// Whether [`ClaimResult::excerpt_residual`] may cut it: its residual has more than `monomials`
+    /// terms.
+    pub(super) fn is_longer_than(&self, monomials: usize) -> bool {
+        self.residual.as_ref().is_some_and(|e| e.len() > monomials)
+    }
+}
+
+/// An identity's verdict as a report's claim: proved, or refuted with its residual.
+impl From<brackets::Verdict> for ClaimResult {
+    fn from(v: brackets::Verdict) -> Self {
+        let residual = match v.outcome {
+            brackets::Outcome::Proved => None,
+            brackets::Outcome::Refuted { residual } => Some(residual),
+        };
+        ClaimResult {
+            id: v.id,
+            statement: v.statement,
+            written: None,
+            condition: v.condition,
+            condition_ascii: None,
+            kind: ClaimKind::Identity,
+            proved: residual.is_none(),
+            expect: Expect::Proved,
+            residual,
+            witness: None,
+            note: None,
+            undecided: None,
+            excerpt: None,
+            seconds: v.seconds,
+        }
+    }
+}
+
+/// A bracket table of named functions of a system.
+#[derive(Clone, Debug)]
+pub struct TableResult {
+    /// What the table shows: `` `{A, B}` for the harmonic rotor (row `A`, column `B`) ``.
+    pub caption: String,
+    /// The names the caption gives a row and a column (`A`, `B`), which name nothing of the
+    /// system or the table.
+    pub placeholders: [String; 2],
+    /// The table, as the engine computed it.
+    pub table: BracketTable,
+    /// The entries cut to their leading part ([`TableResult::excerpt_entries`]), by row and
+    /// column: how much of each is shown.
+    pub excerpts: BTreeMap<(usize, usize), Excerpt>,
+}
+
+/// The names a table's caption may give a row and a column, the first pair free taken.
+const PLACEHOLDERS: [[&str; 2]; 4] = [["A", "B"], ["F", "G"], ["U", "V"], ["Φ", "Ψ"]];
+
+impl TableResult {
+    /// `table`, a table of brackets in `system`, captioned `` `{A, B}` for {whose} (row `A`,
+    /// column `B`) ``, the placeholders the first pair that names no variable or function of
+    /// the system nor a function of the table (the Hénon–Heiles family has parameters `A`,
+    /// `B`: its tables say `{F, G}`).
+    pub fn new(table: BracketTable, system: &System, whose: &str) -> Self {
+        let names: Vec<&str> = table
+            .names
+            .iter()
+            .chain(&table.display)
+            .map(String::as_str)
+            .collect();
+        let [a, b] = first_free(system, &names, &PLACEHOLDERS, |pair| {
+            pair.iter().map(|p| p.to_string()).collect()
+        });
+        TableResult {
+            caption: format!("`{{{a}, {b}}}` for {whose} (row `{a}`, column `{b}`)"),
+            placeholders: [a.to_string(), b.to_string()],
+            table,
+            excerpts: BTreeMap::new(),
+        }
+    }
+
+    /// Cuts each entry of more than `monomials` monomials outside the angles to the terms of
+    /// its first `monomials` ([`Excerpt`]): a bracket of 10⁵ terms that is no combination of
+    /// the table's functions shows its leading terms and its size.
+    pub fn excerpt_entries(&mut self, monomials: usize) {
+        for (a, row) in self.table.entries.iter_mut().enumerate() {
+            for (b, entry) in row.iter_mut().enumerate() {
+                if let brackets::Entry::Expression(e) = entry {
+                    if let Some(excerpt) = Excerpt::cut(e, monomials) {
+                        self.excerpts.insert((a, b), excerpt);
+                    }
+                }
+            }
+        }
+    }
+
+    /// Whether [`TableResult::excerpt_entries`] may cut it: an entry has more than
+    /// `monomials` terms.
+    pub(super) fn is_longer_than(&self, monomials: usize) -> bool {
+        let long = |e: &brackets::Entry| matches!(e, brackets::Entry::Expression(x) if x.len() > monomials);
+        self.table.entries.iter().flatten().any(long)
+    }
+
+    /// The entry in row `a`, column `b` in a notation, `+ …` (`+ \dots`) after one cut to
+    /// its leading part.
+    pub fn cell(&self, a: usize, b: usize, style: Style) -> String {
+        let text = self.table.entries[a][b].render(style);
+        match (self.excerpts.contains_key(&(a, b)), style) {
+            (false, _) => text,
+            (true, Style::Latex) => format!(r"{text} + \dots"),
+            (true, _) => format!("{text} + …"),
+        }
+    }
+
+    /// The entries above the diagonal that a limit stopped (`?`), by row and column, each
+    /// with the limit's message.
+    pub fn undecided(&self) -> Vec<(usize, usize, &str)> {
+        let entries = &self.table.entries;
+        (0..entries.len())
+            .flat_map(|a| (a + 1..entries.len()).map(move |b| (a, b)))
+            .filter_map(|(a, b)| match &entries[a][b] {
+                brackets::Entry::Undecided(message) => Some((a, b, message.as_str())),
+                _ => None,
+            })
+            .collect()
+    }
+
+    /// Every cell in a notation, row by row ([`TableResult::cell`]).
+    pub fn cells(&self, style: Style) -> Vec<Vec<String>> {
+        let n = self.table.entries.len();
+        (0..n)
+            .map(|a| (0..n).map(|b| self.cell(a, b, style)).collect())
+            .collect()
+    }
+
+    /// The caption without its note on rows and columns, for the table set as a list of its
+    /// brackets: `` `{A, B}` for the harmonic rotor ``.
+    pub fn list_caption(&self) -> String {
+        let [a, b] = &self.placeholders;
+        let note = format!(" (row `{a}`, column `{b}`)");
+        self.caption.replace(&note, "")
+    }
+}
+
+/// The first of `candidates` none of whose `labels` the system has as a variable or a function
+/// (by name or display name), nor are among `taken`; the last when every one is: the names
+/// of a report's labels and placeholders.
+pub(crate) fn first_free<T: Copy>(
+    system: &System,
+    taken: &[&str],
+    candidates: &[T],
+    labels: impl Fn(T) -> Vec<String>,
+) -> T {
+    let has = |name: &str| {
+        taken.contains(&name) || system.lookup(name).is_some() || system.get(name).is_ok()
+    };
+    candidates
+        .iter()
+        .copied()
+        .find(|&c| !labels(c).iter().any(|l| has(l)))
+        .unwrap_or(candidates[candidates.len() - 1])
+}
+
+/// One computed base fact of a proof.
+#[derive(Clone, Debug)]
+pub struct Fact {
+    /// How the fact reads (`{Z, H} = iω Z`).
+    pub statement: String,
+    /// Whether the engine found it to hold exactly.
+    pub holds: bool,
+    /// For a bracket that does not hold, its value as the engine computed it.
+    pub found: Option<Expr>,
+}
+
+/// A proof for all `m, n` by the eigenfunction lemma.
+#[derive(Clone, Debug)]
+pub struct ProofResult {
+    /// What is proved, in one line.
+    pub title: String,
+    /// The base facts, each computed by the engine.
+    pub facts: Vec<Fact>,
+    /// The lemma applied (prose with mathematics, as the engine states it).
+    pub lemma: String,
+    /// Whether the derivation property was checked on the base functions.
+    pub leibniz_check: bool,
+    /// The conclusion (prose with mathematics, as the engine states it).
+    pub conclusion: String,
+    /// The claims the proof settles.
+    pub claims: Vec<ClaimResult>,
+}
+
+impl ProofResult {
+    /// Whether every step holds.
+    pub fn holds(&self) -> bool {
+        self.facts.iter().all(|f| f.holds) && self.leibniz_check
+    }
+
+    /// The proof's last line, as a label and prose: `Therefore` and the conclusion when every
+    /// step holds, otherwise `Not proved` and why the conclusion does not follow.
+    pub fn closing(&self) -> (&'static str, String) {
+        if self.holds() {
+            ("Therefore", self.conclusion.clone())
+        } else {
+            (
+                "Not proved",
+                format!(
+                    "a step above fails, so the lemma does not give {}",
+                    self.conclusion
+                ),
+            )
+        }
+    }
+}
+
+/// `{K_{m,n}, H} = i(mω − nΩ) K_{m,n}` checked by expansion for `1 ≤ m, n ≤ max`.
+#[derive(Clone, Debug)]
+pub struct TowerResult {
+    /// The system's name.
+    pub system: String,
+    /// The ladder function's display name (`Z`, `Z'`).
+    pub ladder: String,
+    /// The bound.
+    pub max: i64,
+    /// How many brackets were expanded.
+    pub checked: usize,
+    /// The `(m, n)` where the identity failed.
+    pub failures: Vec<(i64, i64)>,
+    /// The claim it settles.
+    pub claim: ClaimResult,
+}
+
+impl TowerResult {
+    /// How the expansions went: `all hold`, `1 fails: [(2, 3)]`, `2 fail: …`.
+    pub fn verdict(&self) -> String {
+        match self.failures.len() {
+            0 => "all hold".to_string(),
+            1 => format!("1 fails: {:?}", self.failures),
+            n => format!("{n} fail: {:?}", self.failures),
+        }
+    }
+}
+
+impl RankResult {
+    /// The names of the functions of the certificate's nonzero minor (its rows).
+    pub fn minor_functions(&self) -> Vec<&str> {
+        let rows = &self.certificate.minor_rows;
+        rows.iter().map(|&i| self.functions[i].as_str()).collect()
+    }
+
+    /// The coordinates of the certificate's nonzero minor (its columns).
+    pub fn minor_coordinates(&self) -> Vec<&trigpoly::Variable> {
+        let cols = &self.certificate.minor_cols;
+        cols.iter().map(|&v| self.vars.variable(v)).collect()
+    }
+}
+
+/// A certified rank of a Jacobian `∂(F_1, …, F_k)/∂(q, p)`.
+#[derive(Clone, Debug)]
+pub struct RankResult {
+    /// The functions' names, in the paper's notation.
+    pub functions: Vec<String>,
+    /// The variables of the system (for printing the point and the coordinates).
+    pub vars: Vars,
+    /// The phase-space coordinates, in the Jacobian's column order.
+    pub coordinates: Vec<Var>,
+    /// The rank the paper states.
+    pub expected: usize,
+    /// The engine's certificate.
+    pub certificate: RankCertificate,
+    /// The claim it settles.
+    pub claim: ClaimResult,
+}
