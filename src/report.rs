@@ -509,7 +509,10 @@ impl Report {
         }
         if let SummaryKind::Check { files } = self.summary {
             let claims = self.claims_by_section();
-            let proved = claims.iter().filter(|(_, c)| c.proved).count();
+            let outcomes =
+                |o: ClaimOutcome| claims.iter().filter(|(_, c)| c.outcome() == o).count();
+            let proved = outcomes(ClaimOutcome::Proved);
+            let refuted = outcomes(ClaimOutcome::Refuted);
             // With several files, an id says where it is: `main (section 2)`.
             let unexpected: Vec<String> = claims
                 .iter()
@@ -530,10 +533,7 @@ impl Report {
             };
             let files = counted(files, "file");
             let count = counted(claims.len(), "claim");
-            let refuted = (claims.iter())
-                .filter(|(_, c)| c.outcome() == ClaimOutcome::Refuted)
-                .count();
-            let undecided = match claims.len() - proved - refuted {
+            let undecided = match outcomes(ClaimOutcome::Undecided) {
                 0 => String::new(),
                 n => format!(", {n} undecided"),
             };

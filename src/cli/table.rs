@@ -60,18 +60,20 @@ pub fn run(job: &TableJob) -> anyhow::Result<bool> {
     let report = table_report(&file, &job.names)?;
     emit(&render(&report, job.output.format, &job.output.options))?;
     // Entries a limit stopped are `?` in the table, and the run ends with an error.
-    let undecided: usize = report.tables().map(|t| t.undecided().len()).sum();
-    let first = report.tables().find_map(|t| {
-        let names = &t.table.display;
-        (t.undecided().first())
-            .map(|(a, b, message)| format!("{{{}, {}}}: {message}", names[*a], names[*b]))
-    });
-    if let Some(first) = first {
+    let undecided: Vec<String> = report
+        .tables()
+        .flat_map(|t| {
+            let names = &t.table.display;
+            (t.undecided().into_iter())
+                .map(move |(a, b, message)| format!("{{{}, {}}}: {message}", names[a], names[b]))
+        })
+        .collect();
+    if let Some(first) = undecided.first() {
         bail!(
             "{}: {} of the table undecided (shown as ?), stopped at a limit, the first {first} \
              (--max-terms N, --max-term-products N, --max-degree D)",
             job.file.display(),
-            counted(undecided, "entry")
+            counted(undecided.len(), "entry")
         );
     }
     Ok(true)
