@@ -899,46 +899,8 @@ fn structure_table(
 
 #[cfg(test)]
 mod tests {
-    use super::columns::pack;
     use super::*;
     use crate::systems;
-
-    /// A row's key packs into one `u128` exactly when it has at most 16 entries in `i8`, and
-    /// keys of one length that differ anywhere (sign, last entry, first) pack differently;
-    /// rows are numbered as first met, whichever way their keys go.
-    #[test]
-    fn row_keys_pack_only_when_they_fit_and_stay_distinct() {
-        let keys: Vec<Vec<i64>> = vec![
-            vec![0, 0, 0],
-            vec![0, 0, 1],
-            vec![1, 0, 0],
-            vec![-1, 0, 0],
-            vec![0, -1, 0],
-            vec![127, -128, 0],
-            vec![-128, 127, 0],
-        ];
-        let packed: Vec<u128> = keys.iter().map(|k| pack(k).expect("fits")).collect();
-        for (i, a) in packed.iter().enumerate() {
-            for b in &packed[i + 1..] {
-                assert_ne!(a, b);
-            }
-        }
-        assert_eq!(pack(&[128, 0]), None);
-        assert_eq!(pack(&[-129, 0]), None);
-        assert_eq!(pack(&[0; 17]), None);
-        assert!(pack(&[0; 16]).is_some());
-        let mut rows = Rows::default();
-        let mut row = |key: &[i64]| {
-            rows.key = key.to_vec();
-            rows.row()
-        };
-        assert_eq!(row(&[0, 0, 1]), 0);
-        assert_eq!(row(&[300, 0, 1]), 1);
-        assert_eq!(row(&[-1, 0, 1]), 2);
-        assert_eq!(row(&[300, 0, 1]), 1);
-        assert_eq!(row(&[0, 0, 1]), 0);
-        assert_eq!(rows.len(), 3);
-    }
 
     /// The count the limit is checked against is the number of exponent vectors the closure
     /// then builds, and saturates instead of overflowing.

@@ -14,9 +14,9 @@ use crate::modular::SparseVec;
 /// function's terms in `e^{−ikθ}` are left out when `conjugates_follow` (see `closure_of`).
 pub(super) struct TermTable {
     /// Exponents per term.
-    pub(super) width: usize,
-    pub(super) exponents: Vec<i64>,
-    pub(super) parts: Vec<(Rational, Rational)>,
+    width: usize,
+    exponents: Vec<i64>,
+    parts: Vec<(Rational, Rational)>,
 }
 
 impl TermTable {
@@ -50,10 +50,10 @@ impl TermTable {
 /// goes by its entries.
 #[derive(Default)]
 pub(super) struct Rows {
-    pub(super) packed: FxHashMap<u128, usize>,
-    pub(super) wide: FxHashMap<Vec<i64>, usize>,
+    packed: FxHashMap<u128, usize>,
+    wide: FxHashMap<Vec<i64>, usize>,
     /// The key being looked up, reused from term to term.
-    pub(super) key: Vec<i64>,
+    key: Vec<i64>,
 }
 
 impl Rows {
@@ -62,7 +62,7 @@ impl Rows {
     }
 
     /// The row of `self.key`, a new one if it has none.
-    pub(super) fn row(&mut self) -> usize {
+    fn row(&mut self) -> usize {
         let next = self.len();
         match pack(&self.key) {
             Some(k) => *self.packed.entry(k).or_insert(next),
@@ -111,7 +111,7 @@ impl Rows {
 
 /// `key` packed into a `u128`, a byte an entry, when it has at most 16 entries, each in
 /// `i8`: distinct keys of one length give distinct values.
-pub(super) fn pack(key: &[i64]) -> Option<u128> {
+fn pack(key: &[i64]) -> Option<u128> {
     if key.len() > 16 {
         return None;
     }
@@ -166,4 +166,46 @@ pub(super) fn shift(
     let mut v: SparseVec<Rational> = out.into_iter().filter(|(_, x)| !x.is_zero()).collect();
     v.sort_by_key(|x| x.0);
     Some(v)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// A row's key packs into one `u128` exactly when it has at most 16 entries in `i8`, and
+    /// keys of one length that differ anywhere (sign, last entry, first) pack differently;
+    /// rows are numbered as first met, whichever way their keys go.
+    #[test]
+    fn row_keys_pack_only_when_they_fit_and_stay_distinct() {
+        let keys: Vec<Vec<i64>> = vec![
+            vec![0, 0, 0],
+            vec![0, 0, 1],
+            vec![1, 0, 0],
+            vec![-1, 0, 0],
+            vec![0, -1, 0],
+            vec![127, -128, 0],
+            vec![-128, 127, 0],
+        ];
+        let packed: Vec<u128> = keys.iter().map(|k| pack(k).expect("fits")).collect();
+        for (i, a) in packed.iter().enumerate() {
+            for b in &packed[i + 1..] {
+                assert_ne!(a, b);
+            }
+        }
+        assert_eq!(pack(&[128, 0]), None);
+        assert_eq!(pack(&[-129, 0]), None);
+        assert_eq!(pack(&[0; 17]), None);
+        assert!(pack(&[0; 16]).is_some());
+        let mut rows = Rows::default();
+        let mut row = |key: &[i64]| {
+            rows.key = key.to_vec();
+            rows.row()
+        };
+        assert_eq!(row(&[0, 0, 1]), 0);
+        assert_eq!(row(&[300, 0, 1]), 1);
+        assert_eq!(row(&[-1, 0, 1]), 2);
+        assert_eq!(row(&[300, 0, 1]), 1);
+        assert_eq!(row(&[0, 0, 1]), 0);
+        assert_eq!(rows.len(), 3);
+    }
 }

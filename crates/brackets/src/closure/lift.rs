@@ -48,7 +48,7 @@ impl LiftContext<'_> {
     }
 
     /// The symbolic value of a monomial in the generators.
-    pub(super) fn sym_value(&mut self, beta: &[u32]) -> Result<Expr, EngineError> {
+    fn sym_value(&mut self, beta: &[u32]) -> Result<Expr, EngineError> {
         if let Some(v) = self.sym_values.get(beta) {
             return Ok(v.clone());
         }
@@ -63,7 +63,7 @@ impl LiftContext<'_> {
     }
 
     /// The coefficients of a solution over columns, combined per monomial (`re + i·im`).
-    pub(super) fn per_monomial(&self, sol: &SparseVec<Rational>) -> Vec<(usize, GaussianRational)> {
+    fn per_monomial(&self, sol: &SparseVec<Rational>) -> Vec<(usize, GaussianRational)> {
         let mut out: Vec<(usize, GaussianRational)> = Vec::new();
         for (j, x) in sol {
             let (m, imag) = self.col_ids[*j];
@@ -80,7 +80,7 @@ impl LiftContext<'_> {
         out
     }
 
-    pub(super) fn weight_of(&self, beta: &[u32]) -> Option<Vec<Rational>> {
+    fn weight_of(&self, beta: &[u32]) -> Option<Vec<Rational>> {
         let gw = self.gen_weights?;
         let mut w = vec![Rational::zero(); self.scaling.dimension()];
         for (g, e) in gw.iter().zip(beta) {
@@ -93,7 +93,7 @@ impl LiftContext<'_> {
 
     /// Terms `(coefficient, parameter exponents ν, monomial)` lifted to the weight `target`;
     /// `None` if not possible.
-    pub(super) fn lift_terms(
+    fn lift_terms(
         &self,
         terms: &[(usize, GaussianRational)],
         target: &[Rational],
@@ -119,7 +119,7 @@ impl LiftContext<'_> {
     }
 
     /// `Σ c ν G^β` in the ring.
-    pub(super) fn ring_poly(&self, terms: &[LiftedTerm]) -> Result<Expr, EngineError> {
+    fn ring_poly(&self, terms: &[LiftedTerm]) -> Result<Expr, EngineError> {
         let mut acc = Expr::zero(&self.ring);
         for (c, nu, m) in terms {
             let mut powers: Vec<(Var, i64)> = nu
@@ -138,7 +138,7 @@ impl LiftContext<'_> {
     }
 
     /// `Σ c ν G^β` expanded in phase space.
-    pub(super) fn expand(&mut self, terms: &[LiftedTerm]) -> Result<Expr, EngineError> {
+    fn expand(&mut self, terms: &[LiftedTerm]) -> Result<Expr, EngineError> {
         let mut acc = Expr::zero(&self.vars);
         for (c, nu, m) in terms {
             let monomial = Expr::monomial(&self.vars, c.clone(), nu)?;
