@@ -58,7 +58,7 @@ pub fn is_identifier(s: &str) -> bool {
         && chars.all(|c| c.is_alphanumeric() || c == '_')
 }
 
-pub(super) const GREEK: &[(&str, &str, &str)] = &[
+const GREEK: &[(&str, &str, &str)] = &[
     ("alpha", "α", r"\alpha"),
     ("beta", "β", r"\beta"),
     ("gamma", "γ", r"\gamma"),
@@ -277,5 +277,132 @@ impl Piece {
         } else {
             self.body.clone()
         }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::VarSet;
+
+    /// `i` and the functions cannot name a variable: a parameter `re` made `re(x + i p_x)` the
+    /// real part and `re*(x + i p_x)` a product.
+    #[test]
+    fn names_beyond_ascii_have_latex_forms() {
+        assert_eq!(render_name("q₁"), ("q₁".into(), "q_{1}".into()));
+        assert_eq!(render_name("p_q₁"), ("p_q₁".into(), "p_{q_{1}}".into()));
+        assert_eq!(render_name("ħ"), ("ħ".into(), r"{\hbar}".into()));
+        assert_eq!(render_name("ℓ2"), ("ℓ2".into(), r"{\ell}_{2}".into()));
+        assert_eq!(render_name("ω₂"), ("ω₂".into(), r"\omega_{2}".into()));
+        assert_eq!(
+            render_name("xy₁₀"),
+            ("xy₁₀".into(), r"\mathrm{xy}_{10}".into())
+        );
+        for name in ["q₁", "p_q₁", "ħ", "ℓ", "θ_ħ"] {
+            assert_eq!(latex_unwritable(name), None, "{name}");
+        }
+        assert_eq!(latex_unwritable("é"), Some('é'));
+        assert_eq!(latex_unwritable("p_щ"), Some('щ'));
+        // `latex_unwritable` answers an ASCII name without rendering it: every rule writes
+        // such a name in ASCII, Greek letters spelled out included.
+        let spelled = GREEK.iter().map(|g| g.0.to_string());
+        let built = [
+            "x",
+            "G1",
+            "p_theta1",
+            "omega_x_2",
+            "theta12",
+            "Zbar",
+            "xy",
+            "a_b_c",
+        ];
+        for name in spelled.chain(built.map(String::from)) {
+            let (_, latex) = render_name(&name);
+            assert!(latex.is_ascii(), "{name}: {latex}");
+            let (_, latex) = render_name(&format!("{name}_{name}2"));
+            assert!(latex.is_ascii(), "{name}: {latex}");
+        }
+        let err = VarSet::builder().coordinate("é").build().unwrap_err();
+        assert!(err.to_string().contains("LaTeX has no letter 'é'"), "{err}");
+        VarSet::builder()
+            .coordinate("q₁")
+            .parameter("ħ")
+            .build()
+            .expect("names LaTeX can write");
+    }
+
+    /// Greek letters, `ħ` and `ℓ` inside a word are written letter by letter, so that only a
+    /// letter LaTeX has no command for is refused, and named (`θé` blamed 'θ', and `ωx` was
+    /// refused although `omegax` is not); subscript digits inside a word are a subscript.
+    #[test]
+    fn letters_inside_a_word_are_written_one_by_one() {
+        for (name, latex) in [
+            ("ωx", r"\mathrm{{\omega}x}"),
+            ("αβ", r"\mathrm{{\alpha}{\beta}}"),
+            ("Ωa", r"\mathrm{{\Omega}a}"),
+            ("aħℓ", r"\mathrm{a{\hbar}{\ell}}"),
+            ("p_ωx", r"p_{{\omega}x}"),
+            ("x₁y", r"\mathrm{x_{1}y}"),
+            ("x₁₂y₃z", r"\mathrm{x_{12}y_{3}z}"),
+            ("x_₁", r"x_{1}"),
+            ("x_₁y", r"x_{1y}"),
+        ] {
+            assert_eq!(render_name(name), (name.into(), latex.into()), "{name}");
+            assert_eq!(latex_unwritable(name), None, "{name}");
+        }
+        assert_eq!(latex_unwritable("θé"), Some('é'));
+        assert_eq!(latex_unwritable("ωщx"), Some('щ'));
+        for name in ["ωx", "αβ", "Ωa", "x₁y", "x_₁"] {
+            VarSet::builder().coordinate(name).build().expect(name);
+        }
+        let err = VarSet::builder().coordinate("θé").build().unwrap_err();
+        assert!(err.to_string().contains("LaTeX has no letter 'é'"), "{err}");
+    }
+
+    /// A bar over a display name's head, before its subscript, is LaTeX's `\bar` over the head
+    /// (`Z̄_x` has no other LaTeX, and was written as it is); a bar elsewhere in a piece has none.
+    #[test]
+    fn a_bar_ends_a_piece_of_a_display_name() {
+        for (display, latex) in [
+            ("Z̄", r"\bar{Z}"),
+            ("Z̄_x", r"\bar{Z}_{x}"),
+            ("Z_x̄", r"\bar{Z_{x}}"),
+            ("A\u{304}_x_y'", r"\bar{A}_{x,y}'"),
+            ("ω₁\u{304}", r"\bar{\omega_{1}}"),
+            ("Ā_x", r"\bar{A}_{x}"),
+            ("ē_x", r"\bar{e}_{x}"),
+        ] {
+            assert_eq!(
+                display_forms(display).map(|f| f.1),
+                Some(latex.into()),
+                "{display}"
+            );
+        }
+        for display in [
+            "\u{304}",
+            "Z̄x_y",
+            "ω\u{304}₁",
+            "a_\u{304}x",
+            "Z\u{304}\u{304}_x",
+        ] {
+            assert_eq!(display_forms(display), None, "{display}");
+        }
+    }
+
+    #[test]
+    fn names_render_like_the_paper() {
+        assert_eq!(render_name("p_x"), ("p_x".into(), "p_{x}".into()));
+        assert_eq!(render_name("p_theta"), ("p_θ".into(), r"p_{\theta}".into()));
+        assert_eq!(render_name("omega"), ("ω".into(), r"\omega".into()));
+        assert_eq!(render_name("G1"), ("G1".into(), "G_{1}".into()));
+        assert_eq!(render_name("M"), ("M".into(), "M".into()));
+        assert_eq!(
+            render_name("p_theta1"),
+            ("p_θ1".into(), r"p_{\theta 1}".into())
+        );
+        assert_eq!(
+            render_name("theta12"),
+            ("θ12".into(), r"\theta_{12}".into())
+        );
     }
 }
