@@ -12,7 +12,7 @@ fn main() -> Result<(), EngineError> {
 
     // Every integral of degree ≤ 2 in the momenta and positions, with cos θ, sin θ.
     let options = SearchOptions::new(SearchSpace::new(2, 2, 1)).when(resonance.clone());
-    let (report, found) = search_report("harmonic rotor", &rotor, &options)?;
+    let (report, found) = search_report("the harmonic rotor", &rotor, &options)?;
     println!(
         "search: {} integrals in a space of {} unknowns, all proved: {}",
         found.basis.len(),
@@ -34,7 +34,7 @@ fn main() -> Result<(), EngineError> {
         NamedFunction::new("Q", "Q", p.q),
     ];
     let (report, algebra) = closure_report(
-        "harmonic rotor",
+        "the harmonic rotor",
         &rotor,
         &generators,
         &ClosureOptions::new(2).when(resonance),

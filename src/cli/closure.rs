@@ -160,7 +160,7 @@ pub fn run(job: &ClosureJob) -> anyhow::Result<bool> {
             parse_symbolic(subject.system(), names).map_err(|e| anyhow!("--symbolic: {e}"))?;
         options.parameters_degree = a.parameters_degree;
     }
-    let (report, _) = closure_report(subject.name(), subject.system(), &generators, &options)
+    let (report, _) = closure_report(&subject.the_name(), subject.system(), &generators, &options)
         .context("computing the closure")?;
     let report = subject.tag(report);
     emit(&render(&report, job.output.format, &job.output.options))?;

@@ -13,7 +13,7 @@ use superint::discovery::{
     builtin_system, parse_condition, parse_fixed, parse_symbolic, search_report,
 };
 use superint::render::render;
-use superint::report::Report;
+use superint::report::{with_article, Report};
 use superint::system_file::{split_top_level, what_is, BadName, LoadedSystem};
 use trigpoly::Expr;
 
@@ -200,10 +200,12 @@ impl Subject {
         }
     }
 
-    pub fn name(&self) -> &str {
+    /// The system's name as a title says it: `the harmonic rotor`, or `t1` for a file that
+    /// names none (its own stem).
+    pub fn the_name(&self) -> String {
         match self {
-            Subject::File(f) => f.name(),
-            Subject::Builtin(n, _) => n,
+            Subject::File(f) => f.the_name(),
+            Subject::Builtin(n, _) => with_article(n),
         }
     }
 
@@ -307,7 +309,7 @@ fn search_and_print(job: &SearchJob) -> anyhow::Result<bool> {
             options.known.push((k.to_string(), e));
         }
     }
-    let (report, _) = search_report(subject.name(), subject.system(), &options)
+    let (report, _) = search_report(&subject.the_name(), subject.system(), &options)
         .context("searching for integrals")?;
     let report = subject.tag(report);
     emit(&render(&report, job.output.format, &job.output.options))?;

@@ -8,8 +8,8 @@ use brackets::{EngineError, NamedFunction, System};
 use trigpoly::{Expr, GaussianRational, Style};
 
 use crate::report::{
-    counted, with_article, ClaimResult, ClosureFacts, Entry, Equation, Equations, Facts, Report,
-    Section, SummaryKind, TableResult,
+    counted, ClaimResult, ClosureFacts, Entry, Equation, Equations, Facts, Report, Section,
+    SummaryKind, TableResult,
 };
 
 use super::{agreeing, parameter_facts, HeldAt};
@@ -46,6 +46,7 @@ pub fn relation_text(poly: &Expr) -> String {
 /// The report of a closure: the structure table, what lies outside, every bracket and relation
 /// proved. The generators need not be functions of the system (an instance `P_{1,1}`, a
 /// bracket); with names the system defines, [`brackets::closure()`] gives the [`Closure`] alone.
+/// `name` is the system as a title names it: `the harmonic rotor` ([`super::search_report`]).
 ///
 /// ```
 /// use superint::brackets::{systems, ClosureOptions, NamedFunction};
@@ -57,7 +58,8 @@ pub fn relation_text(poly: &Expr) -> String {
 ///     .iter()
 ///     .map(|&n| Ok(NamedFunction::new(n, n, rotor.get(n)?.clone())))
 ///     .collect::<Result<_, superint::brackets::EngineError>>()?;
-/// let (report, algebra) = closure_report("harmonic rotor", &rotor, &generators, &ClosureOptions::new(2))?;
+/// let options = ClosureOptions::new(2);
+/// let (report, algebra) = closure_report("the harmonic rotor", &rotor, &generators, &options)?;
 /// assert!(algebra.closes() && report.all_proved());
 /// assert_eq!(algebra.render_bracket(1, 2), "−ω² L");
 /// # Ok::<(), superint::brackets::EngineError>(())
@@ -141,7 +143,7 @@ pub fn closure_report(
     entries.push(Entry::Table(TableResult::new(
         c.table(),
         system,
-        &format!("{}{table_at}", with_article(name)),
+        &format!("{}{table_at}", name),
     )));
     let outside = c.outside();
     if outside.is_empty() {
@@ -232,7 +234,7 @@ pub fn closure_report(
     });
     Ok((
         Report {
-            title: format!("Closure of {gens} for {}{when}", with_article(name)),
+            title: format!("Closure of {gens} for {}{when}", name),
             subtitle: String::new(),
             sections,
             summary: SummaryKind::Claims,

@@ -10,7 +10,7 @@
 //!
 //! let rotor = systems::harmonic_rotor();
 //! let options = SearchOptions::new(SearchSpace::new(1, 1, 1)).when(rotor.resonance(1, 1)?);
-//! let (report, found) = search_report("harmonic rotor", &rotor, &options)?;
+//! let (report, found) = search_report("the harmonic rotor", &rotor, &options)?;
 //! assert_eq!(found.basis.len(), 6);
 //! assert!(report.all_proved());
 //! # Ok::<(), superint::brackets::EngineError>(())

@@ -8,8 +8,8 @@ use brackets::{EngineError, System};
 use trigpoly::{Expr, GaussianRational, Rational, Style, Var, VarKind, Vars};
 
 use crate::report::{
-    counted, first_free, with_article, ClaimResult, Entry, Equation, Equations, Facts, Report,
-    SearchFacts, Section, SummaryKind,
+    counted, first_free, ClaimResult, Entry, Equation, Equations, Facts, Report, SearchFacts,
+    Section, SummaryKind,
 };
 
 use super::{agreeing, parameter_facts, parameter_names, proved_for_every, HeldAt};
@@ -349,7 +349,9 @@ fn proof_note(f: &Integral, fixed: &str, symbolic: Option<&str>) -> Option<Strin
 
 /// The report of [`search`]: the space, the dimensions by degree, a basis (or, with
 /// `new_only`, a complement of what known integrals generate) written like the paper, and
-/// every basis element proved.
+/// every basis element proved. `name` is the system as a title names it, its article
+/// included where it takes one: `the harmonic rotor`, `my oscillator`
+/// ([`crate::report::with_article`] adds one), `t1`.
 pub fn search_report(
     name: &str,
     system: &System,
@@ -585,7 +587,7 @@ pub fn search_report(
     let when = cond.map(|c| format!(" at `{c}`")).unwrap_or_default();
     Ok((
         Report {
-            title: format!("Integrals of {}{when}", with_article(name)),
+            title: format!("Integrals of {}{when}", name),
             subtitle: String::new(),
             sections,
             summary: SummaryKind::Claims,

@@ -414,7 +414,7 @@ impl LoadedSystem {
     /// the file gives none (`The claims of t1`, not `of the t1`), and the name alone when it
     /// starts with an article or a possessive of its own (`of my oscillator`, not `of the my
     /// oscillator`: [`crate::report::with_article`]).
-    pub(crate) fn the_name(&self) -> String {
+    pub fn the_name(&self) -> String {
         let stem = std::path::Path::new(&self.source.origin).file_stem();
         match stem.is_some_and(|s| s.to_string_lossy() == self.name.as_str()) {
             true => self.name.clone(),

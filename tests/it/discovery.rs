@@ -1168,28 +1168,44 @@ fn scratch_system(name: &str, h: &str, angles: &str) -> String {
 }
 
 /// The titles of `search` and `closure`, and the closure's table, say a system's name as
-/// `check` does: `of the harmonic rotor`, but `of my pendulum` (they said `of the my
-/// pendulum`).
+/// `check` does: `of the pendulum`, but `of my pendulum` (they said `of the my pendulum`), and
+/// a file that names no system by its stem alone, `of t1` (they said `of the t1`).
 #[test]
 fn search_and_closure_titles_keep_a_names_own_article() {
-    let file = scratch_system("my pendulum", "p_t^2/2 - cos(t)", "t");
-    for (args, title, table) in [
+    let pendulum = "hamiltonian = \"p_t^2/2 - cos(t)\"\n[phase_space]\nangles = [\"t\"]\n";
+    let file = |stem: &str, text: &str| {
+        let path = crate::scratch_text("discovery", &format!("{stem}.toml"), text);
+        path.to_str().expect("a UTF-8 path").to_string()
+    };
+    for (file, name) in [
         (
-            vec!["search", &file, "--trig-degree", "1"],
-            "Integrals of my pendulum\n",
-            None,
+            scratch_system("my pendulum", "p_t^2/2 - cos(t)", "t"),
+            "my pendulum",
         ),
         (
-            vec!["closure", &file, "H"],
-            "Closure of H for my pendulum\n",
-            Some("{A, B} for my pendulum (row A, column B)\n"),
+            file("p1", &format!("name = \"pendulum\"\n{pendulum}")),
+            "the pendulum",
         ),
+        (file("t1", pendulum), "t1"),
     ] {
-        let out = superint(&args);
-        let text = String::from_utf8(out.stdout).expect("UTF-8");
-        assert_eq!(out.status.code(), Some(0), "{args:?}");
-        assert!(text.starts_with(title), "{text}");
-        assert!(table.is_none_or(|t| text.contains(t)), "{text}");
+        for (args, title, table) in [
+            (
+                vec!["search", &file, "--trig-degree", "1"],
+                format!("Integrals of {name}\n"),
+                None,
+            ),
+            (
+                vec!["closure", &file, "H"],
+                format!("Closure of H for {name}\n"),
+                Some(format!("{{A, B}} for {name} (row A, column B)\n")),
+            ),
+        ] {
+            let out = superint(&args);
+            let text = String::from_utf8(out.stdout).expect("UTF-8");
+            assert_eq!(out.status.code(), Some(0), "{args:?}");
+            assert!(text.starts_with(&title), "{text}");
+            assert!(table.is_none_or(|t| text.contains(&t)), "{text}");
+        }
     }
 }
 
@@ -1253,7 +1269,7 @@ value = "b*x*p_x + a*y*p_y"
         "{out}"
     );
     assert!(
-        out.contains("{A, B} for the unliftable at a = 1, b = 1 (row A, column B)\n"),
+        out.contains("{A, B} for unliftable at a = 1, b = 1 (row A, column B)\n"),
         "{out}"
     );
     assert!(out.contains("  {U, V} = 4 W at a = 1, b = 1 "), "{out}");
