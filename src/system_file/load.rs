@@ -13,6 +13,7 @@ use trigpoly::{AlgebraError, Expr, Limits, Var, VarSet, VarSetBuilder, Vars};
 
 use super::claims::ClaimSpec;
 use super::error::{locate_bytes, ErrorKind, FileError};
+use super::keys::unknown_key_hint;
 use super::model::{ExpectShape, FunctionModel, ShapeModel, StringTable, SystemModel};
 use super::names::{check_display, index_refusal, BadName, PrintedNames};
 use super::scope::{first_bracket, mention};
@@ -210,7 +211,12 @@ fn toml_error(source: &Source, e: &toml::de::Error) -> FileError {
     } else {
         message
     };
-    source.error(kind, span, message)
+    let hint = unknown_key_hint(&message);
+    let error = source.error(kind, span, message);
+    match hint {
+        Some(hint) => error.with_hint(hint),
+        None => error,
+    }
 }
 
 /// The key of the date at `span` in the TOML document `text`, and whether it is an element of

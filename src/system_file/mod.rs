@@ -41,6 +41,7 @@
 mod claims;
 mod code;
 mod error;
+mod keys;
 mod load;
 mod model;
 mod names;

@@ -479,6 +479,32 @@ fn bad_inputs() -> Vec<(&'static str, Vec<u8>, &'static str, Vec<&'static str>)>
             check.clone(),
         ),
         (
+            "the Hamiltonian below a table's header",
+            BASE.replacen("hamiltonian = \"p_x^2/(2*M) + M*omega^2*x^2/2\"\n", "", 1)
+                .replacen(
+                    "parameters = [\"M\", \"omega\"]\n",
+                    "parameters = [\"M\", \"omega\"]\nhamiltonian = \"p_x^2/(2*M)\"\n",
+                    1,
+                )
+                .into_bytes(),
+            "bad.toml:6:1: unknown field `hamiltonian`, expected one of `coordinates`, `angles`, \
+             `parameters`, `variables`, `denominators`, `radicals`\n 6 | hamiltonian = \
+             \"p_x^2/(2*M)\"\n   | ^^^^^^^^^^^\nhint: `hamiltonian` is a key of the file itself: \
+             write it above the first [table] header",
+            check.clone(),
+        ),
+        (
+            "a claim in two sides",
+            base_with(
+                "claim = \"{A, H} = i*omega*A\"",
+                "lhs = \"{A, H}\"\nrhs = \"i*omega*A\"",
+            ),
+            "bad.toml:14:1: unknown field `lhs`, expected one of `id`, `claim`, `when`, \
+             `expect`\n 14 | lhs = \"{A, H}\"\n    | ^^^\nhint: a claim is one equation in one \
+             string: claim = \"{L, H} = 0\"",
+            check.clone(),
+        ),
+        (
             "missing hamiltonian",
             base_with("hamiltonian = \"p_x^2/(2*M) + M*omega^2*x^2/2\"\n", ""),
             "bad.toml:1:1: missing field `hamiltonian`",

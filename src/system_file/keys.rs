@@ -1,0 +1,165 @@
+//! Where a key of a system file belongs: the hint under an `unknown field` error, for a key
+//! written in the wrong table (`radicals` at the top, `hamiltonian` below `[phase_space]`'s
+//! header, which TOML reads as part of that table) or misspelt (`hamiltonain`).
+
+/// The keys of the file itself, and of each table, with how a hint names their place.
+const HOMES: [(&str, &[&str]); 6] = [
+    (
+        "the file itself: write it above the first [table] header, since every key below a \
+         header belongs to that table",
+        &["name", "source", "description", "hamiltonian"],
+    ),
+    (
+        "[phase_space]: write it below that header",
+        &[
+            "coordinates",
+            "angles",
+            "parameters",
+            "variables",
+            "denominators",
+            "radicals",
+        ],
+    ),
+    (
+        "[limits]: write it below that header",
+        &["max_terms", "max_degree", "max_term_products"],
+    ),
+    ("each [[function]] and [[family]]", &["value", "display"]),
+    ("each [[family]]", &["indices", "eigenvalue"]),
+    ("each [[claim]]", &["id", "when", "expect"]),
+];
+
+/// Words a claim might be written with, where a claim is one equation in one string.
+const CLAIM_SIDES: [&str; 6] = ["lhs", "rhs", "left", "right", "equation", "identity"];
+
+/// The hint for serde's message `unknown field `key`, expected one of `a`, `b`, …`: the table
+/// the key belongs to, when it is a key of another one; else the expected key it is one or
+/// two letters from. `None` when the message is not of that form, or no hint fits.
+pub(super) fn unknown_key_hint(message: &str) -> Option<String> {
+    let rest = message.strip_prefix("unknown field ")?;
+    let mut quoted = rest.split('`').skip(1).step_by(2);
+    let key = quoted.next()?;
+    let expected: Vec<&str> = quoted.collect();
+    let in_claim = expected.contains(&"claim") && expected.contains(&"expect");
+    if in_claim && CLAIM_SIDES.contains(&key.to_lowercase().as_str()) {
+        return Some(
+            "a claim is one equation in one string: claim = \"{L, H} = 0\" (see \
+             docs/system-files.md)"
+                .into(),
+        );
+    }
+    if in_claim && key == "name" {
+        return Some("a claim is named by its `id`".into());
+    }
+    if let Some((home, _)) = HOMES.iter().find(|(_, keys)| keys.contains(&key)) {
+        return Some(format!("`{key}` is a key of {home}"));
+    }
+    let nearest = expected
+        .iter()
+        .map(|&e| (distance(key, e), e))
+        .filter(|&(d, e)| d <= 2 && 2 * d < e.chars().count())
+        .min_by_key(|&(d, _)| d)?;
+    Some(format!("did you mean `{}`?", nearest.1))
+}
+
+/// The edit distance between `a` and `b`: insertions, deletions, substitutions and swaps of
+/// two neighbours, one each (`hamiltonain` is one from `hamiltonian`).
+fn distance(a: &str, b: &str) -> usize {
+    let (a, b): (Vec<char>, Vec<char>) = (a.chars().collect(), b.chars().collect());
+    // rows[i][j]: the distance between a's first i letters and b's first j
+    let mut rows = vec![vec![0usize; b.len() + 1]; a.len() + 1];
+    for (i, row) in rows.iter_mut().enumerate() {
+        row[0] = i;
+    }
+    for j in 0..=b.len() {
+        rows[0][j] = j;
+    }
+    for i in 1..=a.len() {
+        for j in 1..=b.len() {
+            let change = usize::from(a[i - 1] != b[j - 1]);
+            let mut d = (rows[i - 1][j] + 1)
+                .min(rows[i][j - 1] + 1)
+                .min(rows[i - 1][j - 1] + change);
+            if i > 1 && j > 1 && a[i - 1] == b[j - 2] && a[i - 2] == b[j - 1] {
+                d = d.min(rows[i - 2][j - 2] + 1);
+            }
+            rows[i][j] = d;
+        }
+    }
+    rows[a.len()][b.len()]
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    const TOP: &str = "unknown field `{}`, expected one of `name`, `source`, `description`, \
+                       `hamiltonian`, `phase_space`, `limits`, `poisson`, `function`, `family`, \
+                       `claim`";
+    const PHASE: &str = "unknown field `{}`, expected one of `coordinates`, `angles`, \
+                         `parameters`, `variables`, `denominators`, `radicals`";
+    const CLAIM: &str = "unknown field `{}`, expected one of `id`, `claim`, `when`, `expect`";
+
+    fn hint(form: &str, key: &str) -> Option<String> {
+        unknown_key_hint(&form.replace("{}", key))
+    }
+
+    #[test]
+    fn a_key_of_another_table_is_sent_there() {
+        let radicals = hint(TOP, "radicals").expect("a hint");
+        assert!(radicals.starts_with("`radicals` is a key of [phase_space]"));
+        let h = hint(PHASE, "hamiltonian").expect("a hint");
+        assert!(h.contains("above the first [table] header"), "{h}");
+        assert!(hint(TOP, "max_terms").expect("a hint").contains("[limits]"));
+        assert!(hint(PHASE, "eigenvalue")
+            .expect("a hint")
+            .contains("[[family]]"));
+    }
+
+    #[test]
+    fn a_claim_written_in_two_sides_is_shown_its_one_string() {
+        for side in ["lhs", "rhs", "LHS", "equation"] {
+            let h = hint(CLAIM, side).expect("a hint");
+            assert!(
+                h.starts_with("a claim is one equation in one string"),
+                "{h}"
+            );
+        }
+        assert_eq!(
+            hint(CLAIM, "name").as_deref(),
+            Some("a claim is named by its `id`")
+        );
+        // Outside a claim, `lhs` is only an unknown key.
+        assert_eq!(hint(TOP, "lhs"), None);
+    }
+
+    #[test]
+    fn a_misspelt_key_is_matched_to_the_nearest_expected_one() {
+        assert_eq!(
+            hint(TOP, "hamiltonain").as_deref(),
+            Some("did you mean `hamiltonian`?")
+        );
+        assert_eq!(
+            hint(PHASE, "coordinate").as_deref(),
+            Some("did you mean `coordinates`?")
+        );
+        assert_eq!(
+            hint(PHASE, "paramters").as_deref(),
+            Some("did you mean `parameters`?")
+        );
+        // Too far from every expected key, or too short to say.
+        assert_eq!(hint(PHASE, "momenta"), None);
+        assert_eq!(hint(CLAIM, "ix"), None);
+        assert_eq!(hint(CLAIM, "x"), None);
+        assert_eq!(unknown_key_hint("missing field `hamiltonian`"), None);
+    }
+
+    #[test]
+    fn the_distance_counts_each_edit_once() {
+        assert_eq!(distance("", "abc"), 3);
+        assert_eq!(distance("abc", "abc"), 0);
+        assert_eq!(distance("abc", "acb"), 1);
+        assert_eq!(distance("kitten", "sitting"), 3);
+        assert_eq!(distance("ω", "w"), 1);
+    }
+}
