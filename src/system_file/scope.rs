@@ -231,6 +231,26 @@ const UNKNOWN_NAME_HINT_IN_CODE: &str = "a constant such as a mass is a paramete
     system's VarSet, a named function is added with LoadedSystem::add_function, a family with \
     LoadedSystem::add_family (used as K_2_3)";
 
+/// The hint for `unknown name 'p_1' (known: q1, p_q1, …)`, a momentum written in a name of
+/// its own: each momentum is named after its coordinate, `p_q1`. `None` when the unknown
+/// name is neither `p_…` nor `p` and digits (`phi` may be anything), or the system has no
+/// momenta.
+fn momentum_hint(message: &str) -> Option<String> {
+    let name = message.strip_prefix("unknown name '")?.split('\'').next()?;
+    let known = message.rsplit_once("(known: ")?.1.strip_suffix(')')?;
+    let momenta: Vec<&str> = known.split(", ").filter(|k| k.starts_with("p_")).collect();
+    let numbered = name
+        .strip_prefix('p')
+        .is_some_and(|n| !n.is_empty() && n.bytes().all(|b| b.is_ascii_digit()));
+    if !(name.starts_with("p_") || numbered) || momenta.is_empty() {
+        return None;
+    }
+    Some(format!(
+        "the momentum of a coordinate or an angle `q` is named `p_q`: here {}",
+        momenta.join(", ")
+    ))
+}
+
 /// An expression error at a span of a text, classified as a limit error when it is one.
 pub(crate) fn expression_error(source: &Source, text: &Text, e: &ParseError) -> FileError {
     let message = relocate_opener(source, text, e);
@@ -239,9 +259,10 @@ pub(crate) fn expression_error(source: &Source, text: &Text, e: &ParseError) -> 
         text.error(source, ErrorKind::Limit, e.span, message)
             .with_hint(hint)
     } else if message.starts_with("unknown name") {
-        let hint = match source.program {
-            true => UNKNOWN_NAME_HINT_IN_CODE,
-            false => UNKNOWN_NAME_HINT,
+        let hint = match (momentum_hint(&message), source.program) {
+            (Some(hint), _) => hint,
+            (None, true) => UNKNOWN_NAME_HINT_IN_CODE.into(),
+            (None, false) => UNKNOWN_NAME_HINT.into(),
         };
         text.error(source, ErrorKind::Expression, e.span, message)
             .with_hint(hint)
@@ -590,5 +611,23 @@ mod tests {
         assert_eq!(r, "{K_2_3   , H} + L_{1,1}");
         assert_eq!(r.len(), s.len());
         assert_eq!(instance_of(&[fam], "K_2_3"), Some((0, 2, 3)));
+    }
+
+    #[test]
+    fn a_momentum_in_a_name_of_its_own_is_shown_the_momenta() {
+        let known = "(known: q1, q2, p_q1, p_q2, H)";
+        let hint = |name: &str| momentum_hint(&format!("unknown name '{name}' {known}"));
+        let shown = "the momentum of a coordinate or an angle `q` is named `p_q`: here p_q1, p_q2";
+        for name in ["p_1", "p_x", "p1", "p12"] {
+            assert_eq!(hint(name).as_deref(), Some(shown), "{name}");
+        }
+        for name in ["phi", "p", "P_1", "q3", "pq1x2"] {
+            assert_eq!(hint(name), None, "{name}");
+        }
+        // No momenta to show.
+        assert_eq!(momentum_hint("unknown name 'p_1' (known: omega, H)"), None);
+        // Its own message's form with a suggestion before the known names.
+        let meant = "unknown name 'p_1'; did you mean 'p_q1'? (known: q1, p_q1)";
+        assert!(momentum_hint(meant).is_some_and(|h| h.ends_with("here p_q1")));
     }
 }

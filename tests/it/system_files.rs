@@ -494,6 +494,12 @@ fn bad_inputs() -> Vec<(&'static str, Vec<u8>, &'static str, Vec<&'static str>)>
             check.clone(),
         ),
         (
+            "a momentum in a name of its own",
+            base_with("value = \"p_x + i", "value = \"p_1 + i"),
+            "bad.toml:10:10: unknown name 'p_1'",
+            check.clone(),
+        ),
+        (
             "a claim in two sides",
             base_with(
                 "claim = \"{A, H} = i*omega*A\"",
