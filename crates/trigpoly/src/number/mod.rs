@@ -20,7 +20,7 @@ pub(crate) use gcd::binary_gcd;
 
 pub use gaussian::{GaussianAcc, GaussianInteger, GaussianRational, ParseGaussianError};
 pub use integer::{ExactDivisor, Integer, IntegerAcc, IntegerView};
-pub(crate) use integer::{Release, Wide192, Wide256, WideSlab};
+pub(crate) use integer::{Release, SlotCounts, Wide192, Wide256, WideSlab};
 pub(crate) use rational::Magnitude;
 pub use rational::{ParseRationalError, Rational};
 
@@ -174,6 +174,7 @@ impl IntegerRing for Integer {
     fn release_into(self, release: &mut Release) {
         release.take(self);
     }
+
     #[inline]
     fn from_real_wide(w: i128) -> Self {
         Integer::from_i128(w)
@@ -334,6 +335,7 @@ impl IntegerRing for GaussianInteger {
         release.take(self.re);
         release.take(self.im);
     }
+
     #[inline]
     fn from_real_wide(w: i128) -> Self {
         GaussianInteger::new(Integer::from_i128(w), Integer::ZERO)

@@ -29,9 +29,10 @@ use rayon::prelude::*;
 use std::sync::atomic::{AtomicUsize, Ordering};
 use std::sync::mpsc;
 
+use super::coeffs::Coeffs;
 use super::kronecker::{Cursor, Decoder, Kronecker};
 use crate::error::AlgebraError;
-use crate::number::{axial_product, Integer, IntegerRing, Wide192, WideSlab};
+use crate::number::{axial_product, Integer, IntegerRing, SlotCounts, Wide192, WideSlab};
 use crate::pages;
 use crate::placement;
 use crate::varset::Layout;
@@ -64,7 +65,7 @@ const BACKED_TERMS: usize = 1 << 15;
 const SLAB_TERMS: usize = 1 << 16;
 
 /// Packed exponents and coefficients of a product, sorted descending.
-pub(crate) type Product<I> = (Vec<u64>, Vec<I>);
+pub(crate) type Product<I> = (Vec<u64>, Coeffs<I>);
 
 /// What the accumulators of a dense product hold: exact sums of products of the factors'
 /// coefficients of `I`, taken as `Factor`s, in cells of `Cell`.
@@ -380,10 +381,22 @@ fn mul_dense<I: IntegerRing, W: Cells<I>>(
     }
     let mut exps = Vec::with_capacity(total * layout.words);
     let mut coeffs = Vec::with_capacity(total);
+    // The parts' notes of their slots, if every part noted them.
+    let mut slots = Some(SlotCounts::default());
     for (e, c) in parts {
         exps.extend_from_slice(&e);
-        coeffs.extend(c);
+        let (values, noted) = c.into_noted();
+        coeffs.extend(values);
+        slots = slots.zip(noted).map(|(mut all, part)| {
+            all.append(part);
+            all
+        });
     }
+    let coeffs = match slots {
+        // SAFETY: each part's note is of exactly its values, all moved here, none dropped.
+        Some(slots) => unsafe { Coeffs::counted(coeffs, slots) },
+        None => Coeffs::new(coeffs),
+    };
     Ok((exps, coeffs))
 }
 
@@ -775,7 +788,8 @@ struct Builder<'d, I: IntegerRing, W: Cells<I>> {
     /// per page; `usize::MAX` (never) unless the product is large enough that the window past
     /// its last term, backed but unused, is small beside it.
     back_at: usize,
-    /// Where the coefficients' values past a word go, for a large product.
+    /// Where the coefficients' values past a word go, for a large product; its counts
+    /// ([`SlotCounts`]) go with the product, which is then dropped a block at a time.
     slab: Option<WideSlab>,
 }
 
@@ -848,7 +862,14 @@ impl<'d, I: IntegerRing, W: Cells<I>> Builder<'d, I, W> {
 
     fn finish(self) -> Product<I> {
         debug_assert!(self.found.is_empty(), "every chunk's terms are written");
-        (self.exps, self.coeffs)
+        let coeffs = match self.slab {
+            // SAFETY: the slab was filled only around the writes of `coeffs` (`append`), on
+            // this thread, and the values made there went into `coeffs` or were dropped; so
+            // its counts are those of `coeffs`' values, which nothing has changed since.
+            Some(slab) => unsafe { Coeffs::counted(self.coeffs, slab.into_counts()) },
+            None => Coeffs::new(self.coeffs),
+        };
+        (self.exps, coeffs)
     }
 }
 

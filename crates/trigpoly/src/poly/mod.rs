@@ -8,6 +8,7 @@
 
 mod arith;
 mod calculus;
+mod coeffs;
 mod complex;
 mod denominators;
 mod dense;
@@ -28,10 +29,9 @@ use std::hash::{Hash, Hasher};
 use std::sync::atomic::{AtomicU8, Ordering};
 
 use crate::error::AlgebraError;
-use crate::number::{
-    Coefficient, ExactDivisor, GaussianRational, Integer, IntegerRing, Rational, Release,
-};
+use crate::number::{Coefficient, ExactDivisor, GaussianRational, Integer, IntegerRing, Rational};
 use crate::varset::{Layout, Var, VarKind, VarSet, Vars};
+use coeffs::Coeffs;
 
 pub use index::MonomialIndex;
 pub use radicals::ReducedRadical;
@@ -60,7 +60,7 @@ pub struct Poly<C: Coefficient> {
     vars: Vars,
     content: Rational,
     exps: Vec<u64>,
-    coeffs: Vec<C::Int>,
+    coeffs: Coeffs<C::Int>,
     /// The bit length `b` of [`Poly::exponent_bound`] `= 2^b`, computed when first asked
     /// for: a polynomial that enters many products (a generator, a Hamiltonian's gradient)
     /// has its exponents read once.
@@ -99,64 +99,15 @@ impl Clone for Cached {
     }
 }
 
-/// Polynomials of at least this many terms drop their coefficients on the threads of the
-/// caller's rayon pool.
-const PARALLEL_DROP_TERMS: usize = 1 << 20;
-
-/// A polynomial of this many terms or more drops its coefficients through a [`Release`]:
-/// those of a large product may lie in a [`WideSlab`](crate::number::WideSlab)'s blocks. A
-/// shorter one drops them one by one, as most polynomials of a bracket or a tower are short
-/// and have no value in a slot (W2(30) ran 0.8 % more instructions with `1 << 12`); a value
-/// in a slot dropped alone gives its count back alone.
-const RELEASED_TERMS: usize = 1 << 14;
-
-/// Dropping a coefficient reads it and frees it if boxed: for a product of millions of terms
-/// (Pearce(12): 5.8 M coefficients, 2.0 M of them past a word) that is several milliseconds
-/// on one thread, which the pool's other threads share when the drop happens inside a pool
-/// of more than one. (Handing the pages back to the system, the rest of such a drop, stays
-/// serial.) The values in a slab's slots are given back a block at a time (`Release`).
+/// A long polynomial's coefficients are dropped by [`Coeffs::release`] (in parallel, through
+/// a block's counts at a time, or with no pass over them); a short one's one by one, as most
+/// polynomials of a bracket or a tower are short and have no value in a slot.
 impl<C: Coefficient> Drop for Poly<C> {
     #[inline]
     fn drop(&mut self) {
-        if self.coeffs.len() >= RELEASED_TERMS {
-            self.release_coefficients();
-        }
-    }
-}
-
-impl<C: Coefficient> Poly<C> {
-    /// Drops the coefficients of a long polynomial (see its `Drop`), out of line: a short
-    /// one, most of those an identity makes, drops its vectors as they are.
-    #[inline(never)]
-    fn release_coefficients(&mut self) {
-        use std::mem::take;
-        let coeffs = take(&mut self.coeffs);
-        if coeffs.len() >= PARALLEL_DROP_TERMS
-            && rayon::current_thread_index().is_some()
-            && rayon::current_num_threads() > 1
-        {
-            use rayon::prelude::*;
-            let exps = take(&mut self.exps);
-            // Returning a large block's pages to the system takes time too: the monomials'
-            // block goes back on one thread while the coefficients are dropped on all.
-            rayon::join(
-                || drop(exps),
-                || {
-                    coeffs
-                        .into_par_iter()
-                        .with_min_len(PARALLEL_DROP_TERMS / 4)
-                        .fold(Release::default, |mut release, c| {
-                            c.release_into(&mut release);
-                            release
-                        })
-                        .for_each(drop)
-                },
-            );
-        } else {
-            let mut release = Release::default();
-            for c in coeffs {
-                c.release_into(&mut release);
-            }
+        if self.coeffs.len() >= coeffs::RELEASED_TERMS {
+            let exps = std::mem::take(&mut self.exps);
+            std::mem::take(&mut self.coeffs).release(exps);
         }
     }
 }
@@ -690,14 +641,14 @@ impl<C: Coefficient> Poly<C> {
         vars: &Vars,
         content: Rational,
         exps: Vec<u64>,
-        coeffs: Vec<C::Int>,
+        coeffs: Coeffs<C::Int>,
     ) -> Self {
         debug_assert!(C::Int::GAUSS_LEMMA);
         if coeffs.is_empty() {
             return Self::zero(vars);
         }
         debug_assert!(coeffs[0].leading_sign() > 0);
-        Self::assemble(vars, content, exps, coeffs)
+        Self::assemble_coeffs(vars, content, exps, coeffs)
     }
 
     /// The polynomial with these parts, as they are: the caller keeps the invariant.
@@ -706,6 +657,16 @@ impl<C: Coefficient> Poly<C> {
         content: Rational,
         exps: Vec<u64>,
         coeffs: Vec<C::Int>,
+    ) -> Self {
+        Self::assemble_coeffs(vars, content, exps, Coeffs::new(coeffs))
+    }
+
+    /// [`Poly::assemble`] with coefficients that may carry their builder's note.
+    pub(crate) fn assemble_coeffs(
+        vars: &Vars,
+        content: Rational,
+        exps: Vec<u64>,
+        coeffs: Coeffs<C::Int>,
     ) -> Self {
         Poly {
             vars: vars.clone(),
@@ -722,7 +683,7 @@ impl<C: Coefficient> Poly<C> {
     pub(crate) fn into_terms(mut self) -> (Vec<u64>, Vec<C::Int>) {
         (
             std::mem::take(&mut self.exps),
-            std::mem::take(&mut self.coeffs),
+            std::mem::take(&mut self.coeffs).into_vec(),
         )
     }
 
@@ -905,7 +866,7 @@ mod tests {
     #[test]
     fn large_polynomials_drop_on_the_pool() {
         let vars = VarSet::builder().coordinate("x").build().unwrap();
-        let n = PARALLEL_DROP_TERMS + 3;
+        let n = coeffs::PARALLEL_DROP_TERMS + 3;
         let exps: Vec<u64> = (0..n as u64).rev().collect();
         let coeffs: Vec<Integer> = (0..n as i128)
             .map(|k| Integer::from_i128((1 << 70) + k))
@@ -926,6 +887,36 @@ mod tests {
             p.coeffs[n - 1],
             Integer::from_i128((1 << 70) + n as i128 - 1)
         );
+    }
+
+    /// A large dense product whose coefficients pass a word keeps its builder's counts of
+    /// their slots, on one thread and on two (parts, or a writing thread), and drops by them;
+    /// its copy and its negation, whose values are new, do not.
+    #[test]
+    fn a_large_products_coefficients_keep_their_slabs_counts() {
+        let vars = VarSet::builder()
+            .coordinate("x")
+            .coordinate("y")
+            .coordinate("z")
+            .coordinate("t")
+            .build()
+            .unwrap();
+        let f = Poly::<Rational>::parse(&vars, "(1 + 3*x + 5*y + 7*z^3 - 11*t^3)^11").unwrap();
+        let g = Poly::<Rational>::parse(&vars, "(1 - 13*x^3 + 3*y^3 + 5*z + 7*t)^11").unwrap();
+        for threads in [1, 2] {
+            let pool = rayon::ThreadPoolBuilder::new()
+                .num_threads(threads)
+                .build()
+                .unwrap();
+            let p = pool.install(|| f.checked_mul(&g).unwrap());
+            assert!(p.len() >= 1 << 16, "{} terms", p.len());
+            assert!(p.coeffs.iter().any(|c| c.to_i64().is_none()));
+            assert!(p.coeffs.has_counts(), "on {threads} threads");
+            let (copy, negated) = (p.clone(), -&p);
+            assert!(!copy.coeffs.has_counts() && !negated.coeffs.has_counts());
+            assert!(copy == p && negated.checked_add(&p).unwrap().is_zero());
+            pool.install(|| drop(p));
+        }
     }
 
     /// `Poly::var` packs its monomial directly: it equals the monomial `v¹` that

@@ -7,6 +7,7 @@
 //! produces the terms in order, one machine-integer accumulator at a time, with a working set
 //! of one heap entry per term of the shorter factor.
 
+use super::coeffs::Coeffs;
 use super::dense::try_mul_dense;
 use super::gather;
 use super::hashed;
@@ -127,7 +128,7 @@ impl<C: Coefficient> Poly<C> {
             return Ok(if c.is_one() {
                 Self::assemble(&self.vars, content, exps, coeffs)
             } else {
-                Self::product(&self.vars, content, exps, coeffs)
+                Self::product(&self.vars, content, exps, Coeffs::new(coeffs))
             });
         }
         if gather::fits(self.words(), small.len().saturating_mul(big.len())) {
@@ -180,7 +181,7 @@ impl<C: Coefficient> Poly<C> {
                         None => heap_product(a, b, |x, y| x + y, limit)?,
                     };
                     let exps = pair_monomials(layout, &small.exps, &big.exps, &pairs);
-                    (exps, coeffs)
+                    (exps, Coeffs::new(coeffs))
                 }
             },
             None => dispatch_words!(
@@ -191,7 +192,8 @@ impl<C: Coefficient> Poly<C> {
                 (&small.exps, &small.coeffs),
                 (&big.exps, &big.coeffs),
                 limit
-            )?,
+            )
+            .map(|(exps, coeffs)| (exps, Coeffs::new(coeffs)))?,
         };
         Self::check_terms(&self.vars, coeffs.len())?;
         Ok(Self::product(&self.vars, content, exps, coeffs))
@@ -222,12 +224,12 @@ impl<C: Coefficient> Poly<C> {
         vars: &crate::varset::Vars,
         content: crate::number::Rational,
         exps: Vec<u64>,
-        coeffs: Vec<C::Int>,
+        coeffs: Coeffs<C::Int>,
     ) -> Self {
         if C::Int::GAUSS_LEMMA {
             Self::from_sorted_primitive(vars, content, exps, coeffs)
         } else {
-            Self::from_sorted(vars, content, exps, coeffs)
+            Self::from_sorted(vars, content, exps, coeffs.into_vec())
         }
     }
 
@@ -241,7 +243,7 @@ impl<C: Coefficient> Poly<C> {
             Layout::push_translated(&mut exps, a, &by);
         }
         let coeffs = if c.is_one() {
-            self.coeffs.clone()
+            self.coeffs.to_vec()
         } else {
             self.coeffs.iter().map(|x| x.mul(c)).collect()
         };
@@ -282,7 +284,7 @@ fn shift_and_merge<C: Coefficient>(
         })
         .collect();
     let (exps, coeffs) = merge_tree(parts).into_terms();
-    Poly::product(&big.vars, content, exps, coeffs)
+    Poly::product(&big.vars, content, exps, Coeffs::new(coeffs))
 }
 
 /// Merges sorted raw term lists (content ignored) pairwise, like the levels of a tree, so each

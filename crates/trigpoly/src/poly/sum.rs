@@ -342,7 +342,10 @@ impl<C: Coefficient> Poly<C> {
             .map(|(q, mut s)| {
                 let scale = (&q / &d).numer();
                 if !scale.is_one() {
-                    s.coeffs.iter_mut().for_each(|c| *c = c.scale(&scale));
+                    s.coeffs
+                        .make_mut()
+                        .iter_mut()
+                        .for_each(|c| *c = c.scale(&scale));
                 }
                 s
             })
