@@ -20,8 +20,8 @@ pub(super) const RELEASED_TERMS: usize = 1 << 14;
 
 /// The coefficients of a polynomial's terms, read as a vector (`Deref`), changed only through
 /// [`Coeffs::make_mut`] or taken out with [`Coeffs::into_vec`]. Each of those forgets the
-/// [`SlotCounts`] a large product's builder noted, which are good only while the vector holds
-/// the values noted.
+/// [`SlotCounts`] a large product's builder took from its slab, which are good only while the
+/// vector holds the values they count.
 pub(crate) struct Coeffs<I: IntegerRing> {
     values: Vec<I>,
     /// Only for a vector of [`RELEASED_TERMS`] values or more, which the polynomial's drop
@@ -58,7 +58,7 @@ impl<I: IntegerRing> Coeffs<I> {
         self.slots.is_some()
     }
 
-    /// The vector, to change: the note of its slots is forgotten.
+    /// The vector, to change: its counts are forgotten.
     pub(crate) fn make_mut(&mut self) -> &mut Vec<I> {
         drop(self.slots.take());
         &mut self.values
@@ -70,9 +70,9 @@ impl<I: IntegerRing> Coeffs<I> {
         std::mem::take(&mut self.values)
     }
 
-    /// The vector taken out, with the note of its slots if it has one (to be given to
+    /// The vector taken out, with its counts if it has them (to be given to
     /// [`Coeffs::counted`] with these values and others).
-    pub(crate) fn into_noted(mut self) -> (Vec<I>, Option<SlotCounts>) {
+    pub(crate) fn into_counted(mut self) -> (Vec<I>, Option<SlotCounts>) {
         let slots = self.slots.take().map(|b| *b);
         (std::mem::take(&mut self.values), slots)
     }
@@ -134,7 +134,7 @@ impl<I: IntegerRing> Deref for Coeffs<I> {
     }
 }
 
-/// A copy has no note: a value in a slot is copied into a box of its own.
+/// A copy has no counts: a value in a slot is copied into a box of its own.
 impl<I: IntegerRing> Clone for Coeffs<I> {
     fn clone(&self) -> Self {
         Coeffs::new(self.values.clone())
@@ -196,8 +196,8 @@ mod tests {
         drop(changed);
         drop(last);
 
-        let (values, slots) = counted(n).into_noted();
-        let (more, more_slots) = counted(n).into_noted();
+        let (values, slots) = counted(n).into_counted();
+        let (more, more_slots) = counted(n).into_counted();
         let mut all = slots.expect("counted");
         all.append(more_slots.expect("counted"));
         let mut both = values;

@@ -381,19 +381,20 @@ fn mul_dense<I: IntegerRing, W: Cells<I>>(
     }
     let mut exps = Vec::with_capacity(total * layout.words);
     let mut coeffs = Vec::with_capacity(total);
-    // The parts' notes of their slots, if every part noted them.
+    // The parts' counts of their slab's blocks, if every part has them.
     let mut slots = Some(SlotCounts::default());
     for (e, c) in parts {
         exps.extend_from_slice(&e);
-        let (values, noted) = c.into_noted();
+        let (values, counts) = c.into_counted();
         coeffs.extend(values);
-        slots = slots.zip(noted).map(|(mut all, part)| {
+        slots = slots.zip(counts).map(|(mut all, part)| {
             all.append(part);
             all
         });
     }
     let coeffs = match slots {
-        // SAFETY: each part's note is of exactly its values, all moved here, none dropped.
+        // SAFETY: each part's counts are exactly those of its values, all moved here, none
+        // dropped.
         Some(slots) => unsafe { Coeffs::counted(coeffs, slots) },
         None => Coeffs::new(coeffs),
     };
