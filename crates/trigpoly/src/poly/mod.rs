@@ -99,7 +99,7 @@ impl Clone for Cached {
     }
 }
 
-/// A long polynomial's coefficients are dropped by [`Coeffs::release`] (in parallel, through
+/// A long polynomial's coefficients are dropped by `Coeffs::release` (in parallel, through
 /// a block's counts at a time, or with no pass over them); a short one's one by one, as most
 /// polynomials of a bracket or a tower are short and have no value in a slot.
 impl<C: Coefficient> Drop for Poly<C> {
