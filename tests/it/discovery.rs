@@ -292,6 +292,16 @@ const COMMANDS: &[(&str, &str)] = &[
         "superint closure systems/smorodinsky-winternitz-i.toml H Hx X --define 'C={Hx, X}' \
          --degree 3 --symbolic alpha,beta,gamma --parameters-degree 3",
     ),
+    (
+        "toda-search",
+        "superint search systems/toda-lattice.toml --momenta-degree 3 --positions-degree 0 \
+         --trig-degree 0 --poisson-degree 1 --new-only",
+    ),
+    (
+        "toda-search-4",
+        "superint search systems/toda-lattice.toml --momenta-degree 4 --positions-degree 0 \
+         --trig-degree 0 --poisson-degree 2 --new-only",
+    ),
 ];
 
 /// The words of a command line, single quotes grouping.
@@ -2675,4 +2685,40 @@ fn calogero_new_integrals_include_the_sl2_casimir() {
     assert!(file.system().flow(&casimir).unwrap().vanishes().unwrap());
     let large = SearchOptions::new(SearchSpace::new(4, 2, 0).denominators_degree(2));
     assert_eq!(new_ones(file.system(), large.known("C", casimir)).1, 2);
+}
+
+/// The open Toda lattice, its exponentials `e^{q1 − q2}`, `e^{q2 − q3}` named Poisson
+/// variables: up to third order in the momenta and first in them, the file's `H`, `P` and `I3`
+/// generate every integral; from `H` alone the total momentum and the cubic integral come out
+/// new, the cubic as the file writes it. Up to fourth order and second in the exponentials,
+/// `H`, `P`, `I3` still generate all 11 dimensions.
+#[test]
+fn toda_search_finds_the_cubic_integral_from_h_alone() {
+    expect(
+        "toda-search",
+        &[
+            "60 unknowns",
+            "Dimension of the space of integrals: 7.",
+            "Known integrals in the space: H, P, I₃.",
+            "None: the known integrals generate every integral in the space.",
+        ],
+    );
+    let text = run_on_hamiltonian_alone("toda-search");
+    for piece in [
+        "Known integrals in the space: H.",
+        "I2 = p_q1 + p_q2 + p_q3",
+        "I5 = p_q1 p_q2 p_q3 − a2 p_q1 − a1 p_q3",
+        "3 claims: 3 proved, 0 refuted",
+    ] {
+        assert!(text.contains(piece), "{piece}: {text}");
+    }
+    expect(
+        "toda-search-4",
+        &[
+            "210 unknowns",
+            "Dimension of the space of integrals: 11.",
+            "the generated ones span the whole space (11 dimensions)",
+            "None: the known integrals generate every integral in the space.",
+        ],
+    );
 }
