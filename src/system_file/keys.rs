@@ -51,6 +51,9 @@ pub(super) fn unknown_key_hint(message: &str) -> Option<String> {
     if in_claim && key == "name" {
         return Some("a claim is named by its `id`".into());
     }
+    if expected.contains(&"value") && key == "id" {
+        return Some("a function or a family is named by its `name`".into());
+    }
     if let Some((home, _)) = HOMES.iter().find(|(_, keys)| keys.contains(&key)) {
         return Some(format!("`{key}` is a key of {home}"));
     }
@@ -126,6 +129,11 @@ mod tests {
         assert_eq!(
             hint(CLAIM, "name").as_deref(),
             Some("a claim is named by its `id`")
+        );
+        let function = "unknown field `id`, expected one of `name`, `value`, `display`";
+        assert_eq!(
+            unknown_key_hint(function).as_deref(),
+            Some("a function or a family is named by its `name`")
         );
         // Outside a claim, `lhs` is only an unknown key.
         assert_eq!(hint(TOP, "lhs"), None);

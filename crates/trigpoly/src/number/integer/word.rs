@@ -333,9 +333,7 @@ impl WideSlab {
             }
         }
     }
-}
 
-impl WideSlab {
     /// The counts of its blocks that the values it placed hold, once it is filled: the
     /// values alive in each block, which are those of the vector it was filled for.
     ///
