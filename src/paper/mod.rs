@@ -307,6 +307,7 @@ impl Item {
                     .then(|| format!("fails for (m, n) in {:?}", t.failures));
                 vec![Entry::Tower(TowerResult {
                     system: system.name().to_string(),
+                    the_system: crate::report::with_article(system.name()),
                     ladder: system.display_name(ladder).to_string(),
                     max: t.max,
                     checked: t.checked,

@@ -8,8 +8,8 @@ use super::tex::{markup, math, relation, sentence, text};
 use super::text::{number, point, upper_bound, wrap};
 use super::{stopped, table_list, verdict, Options};
 use crate::report::{
-    counted, with_article, ClaimKind, ClaimResult, Entry, Equations, Excerpt, ProofResult,
-    RankResult, Report, SummaryKind, TableResult, TowerResult,
+    counted, ClaimKind, ClaimResult, Entry, Equations, Excerpt, ProofResult, RankResult, Report,
+    SummaryKind, TableResult, TowerResult,
 };
 
 /// Renders a report as a LaTeX document.
@@ -398,7 +398,7 @@ fn tower(out: &mut Vec<String>, t: &TowerResult) {
     out.push(format!(
         r"\noindent {} expanded for {} (ladder ${}$), {}.",
         counted(t.checked, "bracket"),
-        text(&with_article(&t.system)),
+        text(&t.the_system),
         math(&t.ladder),
         text(&t.verdict())
     ));

@@ -6,8 +6,8 @@ use trigpoly::Style;
 use super::text::{number, point, upper_bound};
 use super::{stopped, verdict, Options, SHOWN_MONOMIALS};
 use crate::report::{
-    counted, with_article, ClaimKind, ClaimResult, Entry, Equations, ProofResult, RankResult,
-    Report, TableResult, TowerResult,
+    counted, ClaimKind, ClaimResult, Entry, Equations, ProofResult, RankResult, Report,
+    TableResult, TowerResult,
 };
 
 /// Renders a report as Markdown.
@@ -141,7 +141,7 @@ fn tower(t: &TowerResult) -> String {
         "{}: {} expanded for {} (ladder {}), {}",
         claim(&t.claim),
         counted(t.checked, "bracket"),
-        with_article(&t.system),
+        t.the_system,
         code(&t.ladder),
         t.verdict()
     )

@@ -6,8 +6,8 @@ use trigpoly::{GaussianRational, Style, VarKind};
 
 use super::{condition_suffix, pad, plain, stopped, table_list, verdict, width, Options};
 use crate::report::{
-    counted, with_article, ClaimKind, ClaimResult, Entry, Equation, Equations, ProofResult,
-    RankResult, Report, TableResult, TowerResult,
+    counted, ClaimKind, ClaimResult, Entry, Equation, Equations, ProofResult, RankResult, Report,
+    TableResult, TowerResult,
 };
 
 /// The column where claim verdicts start.
@@ -412,7 +412,7 @@ fn tower(out: &mut Vec<String>, t: &TowerResult) {
     out.push(format!(
         "      {} expanded for {} (ladder {}), {}",
         counted(t.checked, "bracket"),
-        with_article(&t.system),
+        t.the_system,
         t.ladder,
         t.verdict()
     ));

@@ -415,8 +415,11 @@ impl ProofResult {
 /// `{K_{m,n}, H} = i(mω − nΩ) K_{m,n}` checked by expansion for `1 ≤ m, n ≤ max`.
 #[derive(Clone, Debug)]
 pub struct TowerResult {
-    /// The system's name.
+    /// The system's name (JSON's `"system"`).
     pub system: String,
+    /// The system as a title names it (`the harmonic rotor`; `t1` for a file that names
+    /// none), as the tower's line says it.
+    pub the_system: String,
     /// The ladder function's display name (`Z`, `Z'`).
     pub ladder: String,
     /// The bound.

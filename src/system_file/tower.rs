@@ -457,6 +457,7 @@ pub fn family_tower_report_with_progress(
     let tower_id = format!("{}-tower", f.name);
     let tower = TowerResult {
         system: file.name.clone(),
+        the_system: file.the_name(),
         ladder: format!("{kmn} = {value}"),
         max,
         checked: done,

@@ -1080,7 +1080,8 @@ fn tower_proof_facts_parenthesize_a_sum() {
 }
 
 /// A tower says its system's name as the titles do: `for my oscillator`, in every format (it
-/// said `for the my oscillator`), and the harmonic rotor's `for the harmonic rotor`.
+/// said `for the my oscillator`), the harmonic rotor's `for the harmonic rotor`, and a file
+/// that names no system by its stem.
 #[test]
 fn tower_lines_keep_a_names_own_article() {
     let dir = scratch("tower-article");
@@ -1111,6 +1112,14 @@ fn tower_lines_keep_a_names_own_article() {
     }
     let out = run(&["tower", "--max", "1", "--no-timings"], 0);
     assert!(out.contains("expanded for the harmonic rotor"), "{out}");
+    // A file that names no system is its stem, in the title and the line alike (the line
+    // said `for the t1`).
+    let unnamed = file.replacen("name = \"my oscillator\"\n", "", 1);
+    std::fs::write(dir.join("t1.toml"), unnamed).expect("write");
+    let o = superint_in(&dir, &["tower", "--system", "t1.toml", "--max", "2"]);
+    let out = text(&o.stdout);
+    assert!(out.contains("expanded for t1 (ladder"), "{out}");
+    assert!(out.contains("{K_{m,n}, H} for t1"), "{out}");
 }
 
 /// Rank 0 has no minor to show: its certificate is the vanishing gradients alone (it read
