@@ -30,6 +30,9 @@
 //!                 "meets_expectation": bool,
 //!                 "residual": ascii | null   (lhs − rhs of a refuted identity, or when
 //!                          "residual_excerpt" is set the terms of its leading monomials),
+//!                 "residual_in_functions": ascii | null   (the residual as a polynomial
+//!                          of degree ≤ 2 in H and the system's named functions, proved for
+//!                          every value of the parameters, where it is one: "-4*H*L/M"),
 //!                 "residual_excerpt": { "shown_monomials", "monomials" } | null   (set
 //!                          when the residual had more monomials outside the angles than
 //!                          `Options::shown_monomials`: "residual" is then every term of its
@@ -262,6 +265,7 @@ fn claim(c: &ClaimResult, section: u32, seconds: Value) -> Value {
         "expect": c.expect.name(),
         "meets_expectation": c.meets_expectation(),
         "residual": c.residual.as_ref().map(|r| r.render(Style::Ascii)),
+        "residual_in_functions": c.residual_in_functions.as_ref().map(|r| r.render(Style::Ascii)),
         "residual_excerpt": c.excerpt.map(|e| json!({
             "shown_monomials": e.shown,
             "monomials": e.monomials,

@@ -258,6 +258,9 @@ fn claim_rows(c: &ClaimResult) -> Vec<String> {
             rows.push(r"&\quad + \dots".into());
             rows.extend(excerpt_rows(e));
         }
+        if let Some(f) = &c.residual_in_functions {
+            rows.extend(long_rows("", "=", f, CLAIM_ROW));
+        }
     }
     if let (ClaimKind::Nonvanishing, Some(w)) = (c.kind, &c.witness) {
         // A term and the `+` before it are two columns wide at least (as the text's witness).

@@ -85,6 +85,9 @@ fn claim(c: &ClaimResult) -> String {
         if let Some(e) = &c.excerpt {
             line.push_str(&format!(" + … ({})", e.describe()));
         }
+        if let Some(f) = &c.residual_in_functions {
+            line.push_str(&format!(" = {}", code(&f.to_string())));
+        }
     }
     match (c.kind, &c.witness) {
         (ClaimKind::Nonvanishing, Some(w)) if w.len() <= SHOWN_MONOMIALS => {

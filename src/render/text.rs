@@ -282,6 +282,15 @@ fn verdict_line(out: &mut Vec<String>, c: &ClaimResult) {
         if let Some(e) = &c.excerpt {
             out.extend(wrap(&format!("      ({})", e.describe()), WRAP, "       "));
         }
+        if let Some(f) = &c.residual_in_functions {
+            // Under the residual's `=`, as a derivation continues.
+            let indent = " ".repeat(width("      residual lhs − rhs "));
+            out.extend(wrap_sum(
+                &format!("{indent}= {f}"),
+                WRAP,
+                &format!("{indent}  "),
+            ));
+        }
     }
     if let Some(n) = &c.note {
         out.push(format!("      {n}"));

@@ -67,6 +67,10 @@ pub struct ClaimResult {
     pub expect: Expect,
     /// For a refuted identity, the nonzero residual `lhs − rhs` in normal form.
     pub residual: Option<Expr>,
+    /// The residual as a polynomial in `H` and the system's named functions, proved for every
+    /// value of the parameters, where it is one (`−4 H L/M`): what the claim missed, in the
+    /// system's own terms. Its variables are the parameters and one symbol per function.
+    pub residual_in_functions: Option<Expr>,
     /// For a proved nonvanishing claim, the nonzero value that proves it.
     pub witness: Option<Expr>,
     /// For a claim proved or refuted by a derived check (a tower, a proof, a rank), what failed.
@@ -140,6 +144,7 @@ impl ClaimResult {
             proved,
             expect: Expect::Proved,
             residual: None,
+            residual_in_functions: None,
             witness: None,
             note,
             undecided: None,
@@ -229,6 +234,7 @@ impl From<brackets::Verdict> for ClaimResult {
             proved: residual.is_none(),
             expect: Expect::Proved,
             residual,
+            residual_in_functions: None,
             witness: None,
             note: None,
             undecided: None,

@@ -5,7 +5,8 @@
 use std::ops::Range;
 use std::time::Instant;
 
-use brackets::{rank, Claim, Condition, EngineError, Outcome};
+use brackets::closure::{expressed_in, ClosureOptions};
+use brackets::{rank, Claim, Condition, EngineError, NamedFunction, Outcome};
 use toml::Spanned;
 use trigpoly::syntax::ExprKind;
 use trigpoly::{AlgebraError, Expr, Span, Var, VarKind};
@@ -626,6 +627,13 @@ pub(crate) fn parse_assignments(
     Ok(assignments)
 }
 
+/// The degree of the polynomials in `H` and the named functions that a refuted identity's
+/// residual is sought among ([`LoadedSystem::residual_in_functions`]).
+const RESIDUAL_DEGREE: u32 = 2;
+
+/// The most monomials that search may expand: degree 2 in up to 20 functions.
+const RESIDUAL_MONOMIALS: usize = 231;
+
 impl ClaimSpec {
     /// The claim reported undecided: its check stopped at a limit, whose message is given.
     pub(crate) fn undecided(&self, message: &str) -> ClaimResult {
@@ -656,6 +664,9 @@ impl LoadedSystem {
                     Outcome::Proved => (true, None),
                     Outcome::Refuted { residual } => (false, Some(residual)),
                 };
+                let residual_in_functions = residual
+                    .as_ref()
+                    .and_then(|r| self.residual_in_functions(r, spec.condition.as_ref()));
                 let (condition, condition_ascii) =
                     spec.condition.as_ref().map(Condition::forms).unzip();
                 Ok(CheckedClaim::Identity(Box::new(ClaimResult {
@@ -668,6 +679,7 @@ impl LoadedSystem {
                     proved,
                     expect: spec.expect,
                     residual,
+                    residual_in_functions,
                     witness: None,
                     note: None,
                     undecided: None,
@@ -711,6 +723,39 @@ impl LoadedSystem {
                 Ok(CheckedClaim::Rank(Box::new(rank)))
             }
         }
+    }
+
+    /// A refuted identity's residual as a polynomial of degree `≤ 2` in `H` and the named
+    /// functions, proved for every value of the parameters, when it is one with a function in
+    /// it: `−4 H L/M` for `{A_x, A_y} = 2 H L/M`, whose sign is turned. It only helps to read
+    /// the residual: when there is none, or the search stops at its limit or on a condition
+    /// it cannot apply, nothing is added and the claim is refuted all the same.
+    fn residual_in_functions(
+        &self,
+        residual: &Expr,
+        condition: Option<&Condition>,
+    ) -> Option<Expr> {
+        let system = &self.system;
+        let functions = system.functions();
+        // `H` unless a function is it (the rotor's `F1`): two equal generators would leave
+        // the choice between them to the linear algebra.
+        let h = system.hamiltonian();
+        let mut generators = Vec::with_capacity(functions.len() + 1);
+        if functions.iter().all(|f| f.name != "H" && f.expr != *h) {
+            generators.push(NamedFunction::new("H", "H", h.clone()));
+        }
+        generators.extend(functions.iter().cloned());
+        let mut options = ClosureOptions::new(RESIDUAL_DEGREE);
+        options.max_monomials = RESIDUAL_MONOMIALS;
+        if let Some(c) = condition {
+            options = options.when(c.clone());
+        }
+        let found = expressed_in(system, &generators, residual, &options).ok()??;
+        let ring = &found.ring;
+        let has_function = ring
+            .vars()
+            .any(|v| ring.variable(v).kind() != VarKind::Parameter && found.poly.contains(v));
+        (found.symbolic && has_function).then_some(found.poly)
     }
 
     /// The certified rank of functions as a report entry; `expected` is the claimed rank.

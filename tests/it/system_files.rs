@@ -2633,3 +2633,85 @@ fn a_table_past_a_limit_names_the_file_and_the_brackets() {
     let stdout = String::from_utf8_lossy(&out.stdout);
     assert!(stdout.contains("    A     │ 0   ?"), "{stdout}");
 }
+
+/// A refuted identity's residual is also written in `H` and the file's functions where it is
+/// a polynomial of degree ≤ 2 in them for every value of the parameters, and only there: not
+/// when it is a constant, nor when it is no such polynomial. The wrong sign of Pauli's
+/// `{A_x, A_y} = −2 H L/M` leaves `−4 H L/M`.
+#[test]
+fn a_refuted_residual_is_written_in_the_files_functions() {
+    let dir = scratch("residual-in-functions");
+    std::fs::write(
+        dir.join("planar.toml"),
+        r#"name = "planar oscillator"
+hamiltonian = "(p_x^2 + p_y^2)/(2*M) + M*omega^2*(x^2 + y^2)/2"
+
+[phase_space]
+coordinates = ["x", "y"]
+parameters = ["M", "omega"]
+
+[[function]]
+name = "L"
+value = "x*p_y - y*p_x"
+
+[[function]]
+name = "Hx"
+display = "H_x"
+value = "p_x^2/(2*M) + M*omega^2*x^2/2"
+
+[[claim]]
+id = "times-h"
+claim = "{L, H} = 3*M*H*L - Hx^2"
+expect = "refuted"
+
+[[claim]]
+id = "at-omega"
+claim = "{L, H} = omega*Hx"
+when = "omega = 2"
+expect = "refuted"
+
+[[claim]]
+id = "constant"
+claim = "{L, H} = 1/M"
+expect = "refuted"
+
+[[claim]]
+id = "outside"
+claim = "{L, Hx} = 2*H"
+expect = "refuted"
+"#,
+    )
+    .expect("write the file");
+    let o = superint_in(&dir, &["check", "planar.toml", "--format", "json"]);
+    assert_eq!(o.status.code(), Some(0), "{}", text(&o.stderr));
+    let v: Value = serde_json::from_str(&text(&o.stdout)).expect("JSON");
+    let found: Vec<(String, Value)> = v["claims"]
+        .as_array()
+        .expect("claims")
+        .iter()
+        .map(|c| {
+            (
+                c["id"].as_str().unwrap().into(),
+                c["residual_in_functions"].clone(),
+            )
+        })
+        .collect();
+    // {L, H} = 0; {L, H_x} = p_x p_y/M + Mω²xy, which is no polynomial in H, L and H_x.
+    assert_eq!(
+        found,
+        vec![
+            ("times-h".into(), Value::from("-3*M*H*L + Hx^2")),
+            ("at-omega".into(), Value::from("-2*Hx")),
+            ("constant".into(), Value::Null),
+            ("outside".into(), Value::Null),
+        ]
+    );
+    let kepler = run(&["check", "systems/kepler.toml"], 0);
+    assert!(
+        kepler.contains(
+            "      residual lhs − rhs = −2 p_r² p_φ/M² − 2 p_φ³/(M²r²) + 4k p_φ/(Mr)\n\
+             \x20                        = −4 H L/M\n"
+        ),
+        "{kepler}"
+    );
+}

@@ -37,19 +37,19 @@ use std::time::Instant;
 use trigpoly::{Expr, GaussianRational, Rational, Style, Var, VarKind, VarSet, Vars};
 
 use crate::claim::Condition;
-use crate::clearing::Clearing;
 use crate::error::EngineError;
 use crate::modular::{self, Echelon, Fp, SparseVec};
-use crate::scaling::Scaling;
-use crate::search::{check_parameters, fix_parameters, is_phase_free};
+use crate::scaling::{Lifter, Scaling};
 use crate::system::{NamedFunction, System};
 use crate::table::{BracketTable, Entry};
 
 mod columns;
 mod lift;
+mod span;
 
-use columns::{combination_equals, shift, Rows, TermTable};
+use columns::{combination_equals, shift};
 use lift::LiftContext;
+use span::Span;
 
 /// What to compute.
 #[derive(Clone, Debug)]
@@ -325,279 +325,253 @@ pub fn closure_of(
 ) -> Result<Closure, EngineError> {
     let start = Instant::now();
     let mut timings = ClosureTimings::default();
-    let twice = (1..generators.len())
-        .find(|&k| generators[..k].iter().any(|h| h.name == generators[k].name))
-        .map(|k| &generators[k]);
-    if let Some(g) = twice {
-        return Err(EngineError::Invalid(format!(
-            "{} is named twice among the generators",
-            g.name
-        )));
-    }
-    let vars = system.vars().clone();
     let r = generators.len();
     let condition = options.condition.as_ref();
-    if let Some(c) = condition {
-        c.kept_by_flow(system)?;
-    }
-    let restrict = |e: Expr| -> Result<Expr, EngineError> {
-        match condition {
-            Some(c) => c.apply(&e),
-            None => Ok(e),
-        }
-    };
-    // Symbolic generators and brackets, after the condition.
-    let g_sym: Vec<Expr> = generators
+    let g_sym = span::restricted_generators(system, generators, condition)?;
+    // The brackets `{G_a, G_b}`, `a < b`, after the condition: the targets.
+    let pairs: Vec<(usize, usize)> = (0..r)
+        .flat_map(|a| (a + 1..r).map(move |b| (a, b)))
+        .collect();
+    let b_sym: Vec<Expr> = pairs
         .iter()
-        .map(|g| restrict(g.expr.clone()))
+        .map(|&(a, b)| {
+            let bracket = system.bracket(&generators[a].expr, &generators[b].expr)?;
+            span::restrict(condition, bracket)
+        })
         .collect::<Result<_, _>>()?;
-    let mut b_sym: HashMap<(usize, usize), Expr> = HashMap::new();
-    for a in 0..r {
-        for b in a + 1..r {
-            let br = system.bracket(&generators[a].expr, &generators[b].expr)?;
-            b_sym.insert((a, b), restrict(br)?);
-        }
-    }
-    // Parameters kept symbolic enter as generators of their own, `p`, each of degree at
-    // most `parameters_degree` in the monomials: a coefficient `c(p)` of `G^β` is the
-    // combination of the monomials `p^ν G^β`.
-    let symbolic = &options.symbolic;
-    check_parameters(&vars, symbolic, &options.fixed)?;
-    if let Some(&v) = symbolic
-        .iter()
-        .find(|&&v| condition.is_some_and(|c| c.subs().iter().any(|(w, _)| *w == v)))
-    {
-        return Err(EngineError::Invalid(format!(
-            "{} is set by the condition; it cannot be kept symbolic",
-            vars.variable(v).name()
-        )));
-    }
-    let g_sym: Vec<Expr> = g_sym
-        .into_iter()
-        .chain(symbolic.iter().map(|&v| Expr::var(&vars, v)))
-        .collect();
-    let all = g_sym.len();
-    let atoms = system.space().denominator_atoms();
-    let radicals = system.space().radicals();
-    // Whether `e` has the parameter `v`, in its terms or through an atom's polynomial
-    // (`1/(x − a)`) or a radicand (`√(x² + a)`).
-    let mentions = |e: &Expr, v: Var| {
-        e.contains(v)
-            || atoms
-                .iter()
-                .chain(radicals)
-                .any(|(w, d)| d.contains(v) && e.contains(*w))
-    };
-    // Parameters: those that occur, each given or 1; the symbolic ones stay.
-    let mut parameters: Vec<(Var, Rational)> = Vec::new();
-    for v in vars.vars() {
-        if vars.variable(v).kind() != VarKind::Parameter || symbolic.contains(&v) {
-            continue;
-        }
-        let given = options.fixed.iter().find(|f| f.0 == v).map(|f| f.1.clone());
-        let occurs = g_sym.iter().chain(b_sym.values()).any(|e| mentions(e, v));
-        if given.is_some() || occurs {
-            parameters.push((v, given.unwrap_or_else(Rational::one)));
-        }
-    }
-    let fix = |e: &Expr| fix_parameters(e, &parameters);
-    let g: Vec<Expr> = g_sym.iter().map(fix).collect::<Result<_, _>>()?;
-    let complex = g.iter().any(|e| !e.is_real());
-
-    // Monomials at the fixed values.
-    // Generators that are constant on the condition's surface (`F2 = Iω²/2` at `p_θ = Iω`)
-    // enter the polynomials as their values: relations `G − c = 0` of their own.
-    let constant: Vec<bool> = (0..all)
-        .map(|a| a < r && is_phase_free(&g_sym[a]))
-        .collect();
-    let varying = constant[..r].iter().filter(|c| !**c).count();
-    check_monomial_count(varying, symbolic.len(), options)?;
-    let parameter_monomials = monomials(symbolic.len(), options.parameters_degree);
-    let monos: Vec<Vec<u32>> = monomials(r, options.degree)
-        .into_iter()
-        .filter(|b| b.iter().zip(&constant).all(|(e, c)| *e == 0 || !c))
-        .flat_map(|b| {
-            parameter_monomials
-                .iter()
-                .map(move |nu| b.iter().chain(nu).copied().collect())
-        })
-        .collect();
-    // Only the generators' monomials are expanded: a monomial of the symbolic parameters
-    // multiplies one as a shift of its exponents (`vectorize` below), so the 84 monomials of
-    // degree ≤ 6 in three parameters cost no product, and no copy, of their own.
-    let generators_part = |beta: &[u32]| -> Vec<u32> {
-        let mut g = beta.to_vec();
-        g[r..].fill(0);
-        g
-    };
-    let mut values: HashMap<Vec<u32>, Expr> = HashMap::new();
-    values.insert(vec![0; all], Expr::one(&vars));
-    let mut by_degree: Vec<Vec<u32>> = monos.iter().map(|b| generators_part(b)).collect();
-    by_degree.sort_by_key(|b| b.iter().sum::<u32>());
-    by_degree.dedup();
-    for beta in &by_degree {
-        if values.contains_key(beta) {
-            continue;
-        }
-        let a = beta.iter().position(|e| *e > 0).expect("nonconstant");
-        let mut lower = beta.clone();
-        lower[a] -= 1;
-        let v = values[&lower].checked_mul(&g[a])?;
-        values.insert(beta.clone(), v);
-    }
-    timings.monomials = start.elapsed().as_secs_f64();
-
-    // Columns: each monomial (and i times it, for complex generators), as real vectors.
-    let t = Instant::now();
-    let fixed_targets: Vec<((usize, usize), Expr)> = b_sym
-        .iter()
-        .map(|(&key, e)| Ok((key, fix(e)?)))
-        .collect::<Result<_, EngineError>>()?;
-    // With denominator atoms, every vector is cleared first (none without).
-    let clearing = Clearing::new(
-        atoms,
-        radicals,
-        &parameters,
-        values.values().chain(fixed_targets.iter().map(|t| &t.1)),
-    )?;
-    // A real function's terms in `e^{−ikθ}` are the conjugates of those in `e^{ikθ}`, so they
-    // are left out; its image under the clearing is real too when every atom's polynomial is.
-    let conjugates_follow = !complex && clearing.as_ref().is_none_or(|c| c.real);
-    let angles: Vec<Var> = vars.angles().collect();
-    let table = |e: &Expr| TermTable::new(e, &angles, conjugates_follow);
-    let mut rows = Rows::default();
-    // Column j: (monomial index, times i).
-    let mut col_ids: Vec<(usize, bool)> = Vec::new();
-    let mut columns: Vec<SparseVec<Rational>> = Vec::new();
-    // Each generators' monomial cleared once (the clearing commutes with a parameter's
-    // monomial, which holds no atom), and its terms read once for all the parameters'
-    // monomials that shift it.
-    let images: HashMap<Vec<u32>, TermTable> = values
-        .into_iter()
-        .map(|(beta, e)| {
-            let image = clearing.as_ref().map(|c| c.apply(&e)).transpose()?;
-            Ok((beta, table(image.as_ref().unwrap_or(&e))))
-        })
-        .collect::<Result<_, EngineError>>()?;
-    for (m, beta) in monos.iter().enumerate() {
-        let terms = &images[&generators_part(beta)];
-        let shift: Vec<(usize, i64)> = symbolic
-            .iter()
-            .zip(&beta[r..])
-            .filter(|(_, &k)| k > 0)
-            .map(|(v, &k)| (v.index(), i64::from(k)))
-            .collect();
-        for times_i in [false, true] {
-            if times_i && !complex {
-                continue;
-            }
-            col_ids.push((m, times_i));
-            columns.push(rows.vectorize(terms, times_i, &shift));
-        }
-    }
-    let mut targets: HashMap<(usize, usize), SparseVec<Rational>> = HashMap::new();
-    for (key, e) in &fixed_targets {
-        let image = clearing.as_ref().map(|c| c.apply(e)).transpose()?;
-        let terms = table(image.as_ref().unwrap_or(e));
-        targets.insert(*key, rows.vectorize(&terms, false, &[]));
-    }
-    let nrows = rows.len();
+    let span = Span::new(system, g_sym, &b_sym, options)?;
+    timings.monomials = (span.expanded - start).as_secs_f64();
 
     // Relations: the kernel, in column order (exact).
-    let kernel = modular::kernel(&columns, nrows);
+    let kernel = modular::kernel(&span.columns, span.nrows);
     // With complex generators the columns are each monomial and i times it: their span over
     // Q is a space over Q(i), of half its dimension, which is the monomials' span.
-    let rank = (columns.len() - kernel.len()) / if complex { 2 } else { 1 };
+    let rank = (span.columns.len() - kernel.len()) / if span.complex { 2 } else { 1 };
     // Brackets: each target in the span of the columns.
-    let solutions = express_targets(&columns, nrows, &targets);
-    timings.solve = t.elapsed().as_secs_f64();
+    let solutions = express_targets(&span.columns, span.nrows, &span.targets);
+    timings.solve = span.expanded.elapsed().as_secs_f64();
 
-    // The ring for printing: the parameters and one symbol per generator.
     let t = Instant::now();
-    let PrintingRing {
-        ring,
-        symbols,
-        param_in_ring,
-    } = printing_ring(&vars, generators)?;
-    // The symbolic parameters' symbols are the ring's parameters.
-    let symbols: Vec<Var> = symbols
-        .into_iter()
-        .chain(symbolic.iter().map(|v| param_in_ring[v]))
-        .collect();
-
-    // Lifting.
-    let scaling = Scaling::of_functions(
-        system.space(),
-        &generators
-            .iter()
-            .map(|g| g.expr.clone())
-            .collect::<Vec<_>>(),
-        condition,
-    )?;
-    // The parameters that the lift must restore: those of the generators that are not
-    // constant on the surface and of the brackets (a surface constant such as `F2 = Iω²/2` is
-    // a relation of its own, kept symbolic).
-    let lifted_parameters: Vec<(Var, Rational)> = parameters
-        .iter()
-        .filter(|(v, _)| {
-            g_sym
-                .iter()
-                .zip(&constant)
-                .filter(|(_, c)| !**c)
-                .map(|(e, _)| e)
-                .chain(b_sym.values())
-                .any(|e| mentions(e, *v))
-        })
-        .cloned()
-        .collect();
-    let lifter = scaling.lifter(&lifted_parameters);
-    let gen_weights: Option<Vec<Vec<Rational>>> = g_sym
-        .iter()
-        .map(|e| scaling.homogeneous_weight(e))
-        .collect();
-    let mut lift_ctx = LiftContext {
-        vars: vars.clone(),
-        ring: ring.clone(),
-        symbols: symbols.clone(),
-        param_in_ring,
-        monos: &monos,
-        col_ids: &col_ids,
-        g_sym: &g_sym,
-        sym_values: HashMap::new(),
-        lifter: lifter.as_ref(),
-        scaling: &scaling,
-        gen_weights: gen_weights.as_deref(),
-        exact: parameters.is_empty(),
-    };
-
+    let scaling = scaling_of(system, generators, condition)?;
+    let lifting = Lifting::new(system, generators, &span, &b_sym, options, scaling)?;
+    let mut lift_ctx = lifting.context(system, &span)?;
     let relations = minimal_relations(
         &mut lift_ctx,
         &kernel,
-        (r, columns.len()),
-        complex,
-        &constant,
+        (r, span.columns.len()),
+        span.complex,
+        &span.constant,
         options.degree,
     )?;
-
-    // The structure table.
-    let brackets = structure_table(r, &solutions, &b_sym, &mut lift_ctx)?;
+    let brackets = structure_table(r, &pairs, &solutions, &b_sym, &mut lift_ctx)?;
     timings.proofs = t.elapsed().as_secs_f64();
     timings.total = start.elapsed().as_secs_f64();
     Ok(Closure {
         names: generators.iter().map(|g| g.name.clone()).collect(),
         display: generators.iter().map(|g| g.display.clone()).collect(),
-        ring,
-        symbols: symbols[..r].to_vec(),
+        ring: lifting.printing.ring.clone(),
+        symbols: lifting.printing.symbols[..r].to_vec(),
         degree: options.degree,
         condition: condition.map(|c| c.text.clone()),
-        parameters,
-        liftable: lifter.is_some() && gen_weights.is_some(),
+        liftable: lifting.liftable(),
+        parameters: span.parameters,
         brackets,
         relations,
-        monomials: monos.len(),
+        monomials: span.monos.len(),
         rank,
         timings,
     })
+}
+
+/// What lifting a result from the fixed values back to symbolic parameters needs: the
+/// printing ring, and the system's scaling with its lifter and the generators' weights.
+struct Lifting {
+    /// The ring the results are written in (with the symbolic parameters' symbols after the
+    /// generators').
+    printing: PrintingRing,
+    /// The system's scaling symmetries, restricted to the generators and the condition.
+    scaling: Scaling,
+    /// The lifter of the parameters the results must restore, if the weights determine
+    /// them.
+    lifter: Option<Lifter>,
+    /// Each of the span's generators' weights, if each is homogeneous.
+    gen_weights: Option<Vec<Vec<Rational>>>,
+}
+
+impl Lifting {
+    /// The lifting of results about `targets` in the span of `generators`, under the
+    /// weights of [`scaling_of`].
+    fn new(
+        system: &System,
+        generators: &[NamedFunction],
+        span: &Span,
+        targets: &[Expr],
+        options: &ClosureOptions,
+        scaling: Scaling,
+    ) -> Result<Lifting, EngineError> {
+        let vars = system.vars();
+        let mut printing = printing_ring(vars, generators)?;
+        // The symbolic parameters' symbols are the ring's parameters.
+        printing
+            .symbols
+            .extend(options.symbolic.iter().map(|v| printing.param_in_ring[v]));
+        // The parameters that the lift must restore: those of the generators that are not
+        // constant on the surface and of the targets (a surface constant such as
+        // `F2 = Iω²/2` is a relation of its own, kept symbolic).
+        let varying = span
+            .g_sym
+            .iter()
+            .zip(&span.constant)
+            .filter(|(_, c)| !**c)
+            .map(|(e, _)| e);
+        let lifted_parameters: Vec<(Var, Rational)> = span
+            .parameters
+            .iter()
+            .filter(|(v, _)| {
+                varying
+                    .clone()
+                    .chain(targets)
+                    .any(|e| Span::mentions(system, e, *v))
+            })
+            .cloned()
+            .collect();
+        let lifter = scaling.lifter(&lifted_parameters);
+        let gen_weights = span
+            .g_sym
+            .iter()
+            .map(|e| scaling.homogeneous_weight(e))
+            .collect();
+        Ok(Lifting {
+            printing,
+            scaling,
+            lifter,
+            gen_weights,
+        })
+    }
+
+    /// Whether the weights determine every parameter, so that results can be lifted.
+    fn liftable(&self) -> bool {
+        self.lifter.is_some() && self.gen_weights.is_some()
+    }
+
+    /// The context that lifts and proves the span's results.
+    fn context<'a>(
+        &'a self,
+        system: &System,
+        span: &'a Span,
+    ) -> Result<LiftContext<'a>, EngineError> {
+        Ok(LiftContext {
+            vars: system.vars().clone(),
+            ring: self.printing.ring.clone(),
+            symbols: self.printing.symbols.clone(),
+            param_in_ring: self.printing.param_in_ring.clone(),
+            monos: &span.monos,
+            col_ids: &span.col_ids,
+            g_sym: &span.g_sym,
+            sym_values: HashMap::new(),
+            lifter: self.lifter.as_ref(),
+            scaling: &self.scaling,
+            gen_weights: self.gen_weights.as_deref(),
+            exact: span.parameters.is_empty(),
+        })
+    }
+}
+
+/// An expression written as a polynomial in named functions ([`expressed_in`]).
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct Expressed {
+    /// The polynomial, in [`Expressed::ring`]: the parameters and one symbol per function.
+    pub poly: Expr,
+    /// Whether it was proved with symbolic parameters (else only at the fixed values).
+    pub symbolic: bool,
+    /// The ring of the polynomial.
+    pub ring: Vars,
+}
+
+/// `target` as a polynomial of degree `≤ options.degree` in the `generators`, found and
+/// proved as a closure's brackets are (after `options.condition`), or `None` when there is
+/// none. The polynomial is one of several when the generators have relations of that degree.
+/// A target that is not homogeneous under the system's scalings (a claim off by a factor of
+/// a parameter) is written part by part, each homogeneous part lifted on its own.
+///
+/// ```
+/// use brackets::closure::{expressed_in, ClosureOptions};
+/// use brackets::{systems, NamedFunction};
+///
+/// // {G1, G2} = −ω² L, found from the bracket's expansion alone.
+/// let rotor = systems::harmonic_rotor();
+/// let generators: Vec<NamedFunction> = ["F1", "L", "G1"]
+///     .iter()
+///     .map(|n| NamedFunction::new(n, n, rotor.get(n).unwrap().clone()))
+///     .collect();
+/// let bracket = rotor.bracket(rotor.get("G1")?, rotor.get("G2")?)?;
+/// let found = expressed_in(&rotor, &generators, &bracket, &ClosureOptions::new(2))?;
+/// let found = found.expect("a polynomial in the generators");
+/// assert!(found.symbolic);
+/// assert_eq!(found.poly.to_string(), "−ω² L");
+/// # Ok::<(), brackets::EngineError>(())
+/// ```
+pub fn expressed_in(
+    system: &System,
+    generators: &[NamedFunction],
+    target: &Expr,
+    options: &ClosureOptions,
+) -> Result<Option<Expressed>, EngineError> {
+    let condition = options.condition.as_ref();
+    let g_sym = span::restricted_generators(system, generators, condition)?;
+    let target = span::restrict(condition, target.clone())?;
+    let scaling = scaling_of(system, generators, condition)?;
+    let parts = homogeneous_parts(&scaling, &target)?;
+    let span = Span::new(system, g_sym, &parts, options)?;
+    let Some(solutions) = express_targets(&span.columns, span.nrows, &span.targets)
+        .into_iter()
+        .collect::<Option<Vec<_>>>()
+    else {
+        return Ok(None);
+    };
+    let lifting = Lifting::new(system, generators, &span, &parts, options, scaling)?;
+    let mut lift_ctx = lifting.context(system, &span)?;
+    let mut poly = Expr::zero(&lifting.printing.ring);
+    let mut symbolic = true;
+    for (solution, part) in solutions.iter().zip(&parts) {
+        let (p, proved) = lift_ctx.bracket(solution, part)?;
+        poly = poly.checked_add(&p)?;
+        symbolic &= proved;
+    }
+    Ok(Some(Expressed {
+        poly,
+        symbolic,
+        ring: lifting.printing.ring.clone(),
+    }))
+}
+
+/// The weights under which the bracket, the condition and every generator are homogeneous.
+fn scaling_of(
+    system: &System,
+    generators: &[NamedFunction],
+    condition: Option<&Condition>,
+) -> Result<Scaling, EngineError> {
+    let exprs: Vec<Expr> = generators.iter().map(|g| g.expr.clone()).collect();
+    Scaling::of_functions(system.space(), &exprs, condition)
+}
+
+/// `e` split into its homogeneous parts under `scaling`, in the order of their first terms.
+fn homogeneous_parts(scaling: &Scaling, e: &Expr) -> Result<Vec<Expr>, EngineError> {
+    /// A weight, and the terms `(coefficient, exponents)` of that weight.
+    type Part = (Vec<Rational>, Vec<(GaussianRational, Vec<i64>)>);
+    let mut parts: Vec<Part> = Vec::new();
+    for t in e.terms() {
+        let exps = t.exponents();
+        let weight = scaling.weight(&exps);
+        match parts.iter_mut().find(|p| p.0 == weight) {
+            Some(part) => part.1.push((t.coeff(), exps)),
+            None => parts.push((weight, vec![(t.coeff(), exps)])),
+        }
+    }
+    parts
+        .into_iter()
+        .map(|(_, terms)| Ok(Expr::from_terms(e.vars(), terms)?))
+        .collect()
 }
 
 /// Refuses, before any is expanded, a closure whose monomials (of degree `≤ options.degree`
@@ -647,8 +621,8 @@ fn check_monomial_count(
 fn express_targets(
     columns: &[SparseVec<Rational>],
     nrows: usize,
-    targets: &HashMap<(usize, usize), SparseVec<Rational>>,
-) -> HashMap<(usize, usize), Option<SparseVec<Rational>>> {
+    targets: &[SparseVec<Rational>],
+) -> Vec<Option<SparseVec<Rational>>> {
     let mut echelon = Echelon::<Fp>::new(nrows);
     let mut exact: Option<Echelon<Rational>> = None;
     let mut fp_ok = true;
@@ -660,8 +634,8 @@ fn express_targets(
             None => fp_ok = false,
         }
     }
-    let mut solutions = HashMap::new();
-    for (&key, target) in targets {
+    let mut solutions = Vec::with_capacity(targets.len());
+    for target in targets {
         let mut found = None;
         let mut decided = false;
         if fp_ok {
@@ -689,7 +663,7 @@ fn express_targets(
             });
             found = e.express(target);
         }
-        solutions.insert(key, found);
+        solutions.push(found);
     }
     solutions
 }
@@ -853,10 +827,12 @@ fn minimal_relations(
 
 /// The structure table: `{G_a, G_b}` as a polynomial in the generators, lifted and proved, or
 /// outside their span over its common denominator; antisymmetric, zero on the diagonal.
+/// `solutions[k]` and `b_sym[k]` are the solution and the bracket of `pairs[k]`.
 fn structure_table(
     r: usize,
-    solutions: &HashMap<(usize, usize), Option<SparseVec<Rational>>>,
-    b_sym: &HashMap<(usize, usize), Expr>,
+    pairs: &[(usize, usize)],
+    solutions: &[Option<SparseVec<Rational>>],
+    b_sym: &[Expr],
     lift_ctx: &mut LiftContext<'_>,
 ) -> Result<Vec<Vec<Bracket>>, EngineError> {
     let ring = lift_ctx.ring.clone();
@@ -870,29 +846,27 @@ fn structure_table(
         ];
         r
     ];
-    for a in 0..r {
-        for b in a + 1..r {
-            let entry = match &solutions[&(a, b)] {
-                Some(sol) => {
-                    let (poly, symbolic) = lift_ctx.bracket(sol, &b_sym[&(a, b)])?;
-                    Bracket::Polynomial { poly, symbolic }
-                }
-                // Over its common denominator, as a table shows brackets (the same element;
-                // as it is without atoms).
-                None => Bracket::Outside {
-                    bracket: b_sym[&(a, b)].over_common_denominators()?,
-                },
-            };
-            let negated = match &entry {
-                Bracket::Polynomial { poly, symbolic } => Bracket::Polynomial {
-                    poly: -poly,
-                    symbolic: *symbolic,
-                },
-                Bracket::Outside { bracket } => Bracket::Outside { bracket: -bracket },
-            };
-            brackets[a][b] = entry;
-            brackets[b][a] = negated;
-        }
+    for ((&(a, b), solution), bracket) in pairs.iter().zip(solutions).zip(b_sym) {
+        let entry = match solution {
+            Some(sol) => {
+                let (poly, symbolic) = lift_ctx.bracket(sol, bracket)?;
+                Bracket::Polynomial { poly, symbolic }
+            }
+            // Over its common denominator, as a table shows brackets (the same element; as
+            // it is without atoms).
+            None => Bracket::Outside {
+                bracket: bracket.over_common_denominators()?,
+            },
+        };
+        let negated = match &entry {
+            Bracket::Polynomial { poly, symbolic } => Bracket::Polynomial {
+                poly: -poly,
+                symbolic: *symbolic,
+            },
+            Bracket::Outside { bracket } => Bracket::Outside { bracket: -bracket },
+        };
+        brackets[a][b] = entry;
+        brackets[b][a] = negated;
     }
     Ok(brackets)
 }
@@ -938,6 +912,32 @@ mod tests {
         // The 21 monomials of degree ≤ 2 in five generators span 20 dimensions over Q(i)
         // (it read 40, the dimension over Q of the monomials and i times them).
         assert_eq!((c.monomials, c.rank), (21, 20));
+    }
+
+    /// A target outside the generators' polynomials is `None`; one that is not homogeneous
+    /// (off by a factor of a parameter) is written part by part, each part lifted and
+    /// proved.
+    #[test]
+    fn a_target_is_expressed_part_by_part_or_not_at_all() {
+        let rotor = systems::harmonic_rotor();
+        let generators: Vec<NamedFunction> = ["F1", "L", "G1"]
+            .iter()
+            .map(|n| NamedFunction::new(n, n, rotor.get(n).unwrap().clone()))
+            .collect();
+        let options = ClosureOptions::new(2);
+        let g2 = rotor.get("G2").unwrap();
+        assert_eq!(
+            expressed_in(&rotor, &generators, g2, &options).unwrap(),
+            None
+        );
+        // {G1, G2} + M L = −ω² L + M L: two weights.
+        let bracket = rotor.bracket(rotor.get("G1").unwrap(), g2).unwrap();
+        let target = bracket.checked_add(&rotor.parse("M*L").unwrap()).unwrap();
+        let found = expressed_in(&rotor, &generators, &target, &options)
+            .unwrap()
+            .expect("a polynomial in the generators");
+        assert!(found.symbolic);
+        assert_eq!(found.poly.to_string(), "M L − ω² L");
     }
 
     /// A generator named twice is refused in those words (the ring of generators said

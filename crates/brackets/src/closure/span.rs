@@ -1,0 +1,268 @@
+//! The linear algebra a closure stands on (`Span`): the generators after the condition, their
+//! monomials of degree `≤ D` expanded at fixed parameter values and written as columns, and
+//! the targets (the brackets `{G_a, G_b}`, or any expression to be written in the generators)
+//! as vectors over the same rows.
+
+use std::collections::HashMap;
+use std::time::Instant;
+
+use trigpoly::{Expr, Rational, Var, VarKind, Vars};
+
+use super::columns::{Rows, TermTable};
+use super::{check_monomial_count, monomials, ClosureOptions};
+use crate::claim::Condition;
+use crate::clearing::Clearing;
+use crate::error::EngineError;
+use crate::modular::SparseVec;
+use crate::search::{check_parameters, fix_parameters, is_phase_free};
+use crate::system::{NamedFunction, System};
+
+/// An expression after the condition, if there is one.
+pub(super) fn restrict(condition: Option<&Condition>, e: Expr) -> Result<Expr, EngineError> {
+    match condition {
+        Some(c) => c.apply(&e),
+        None => Ok(e),
+    }
+}
+
+/// The generators after the condition, once their names are checked to differ and the
+/// condition to be kept by the flow.
+pub(super) fn restricted_generators(
+    system: &System,
+    generators: &[NamedFunction],
+    condition: Option<&Condition>,
+) -> Result<Vec<Expr>, EngineError> {
+    let twice = (1..generators.len())
+        .find(|&k| generators[..k].iter().any(|h| h.name == generators[k].name))
+        .map(|k| &generators[k]);
+    if let Some(g) = twice {
+        return Err(EngineError::Invalid(format!(
+            "{} is named twice among the generators",
+            g.name
+        )));
+    }
+    if let Some(c) = condition {
+        c.kept_by_flow(system)?;
+    }
+    generators
+        .iter()
+        .map(|g| restrict(condition, g.expr.clone()))
+        .collect()
+}
+
+/// The generators' monomials as columns and the targets as vectors, at fixed parameters.
+pub(super) struct Span {
+    /// The generators after the condition, then one per symbolic parameter (the parameter
+    /// itself).
+    pub(super) g_sym: Vec<Expr>,
+    /// Whether each of `g_sym` is constant on the condition's surface (`F2 = Iω²/2` at
+    /// `p_θ = Iω`): it enters the polynomials as its value, a relation `G − c = 0` of its own.
+    pub(super) constant: Vec<bool>,
+    /// The fixed parameters and their values: those of the generators and targets, each as
+    /// given or 1.
+    pub(super) parameters: Vec<(Var, Rational)>,
+    /// Whether some generator is complex at the fixed values: then each monomial has a
+    /// column of its own and one for `i` times it.
+    pub(super) complex: bool,
+    /// The exponent vectors `β` (generators, then symbolic parameters) of the monomials.
+    pub(super) monos: Vec<Vec<u32>>,
+    /// Column `j`: its monomial's index in `monos`, and whether it is `i` times it.
+    pub(super) col_ids: Vec<(usize, bool)>,
+    /// The columns.
+    pub(super) columns: Vec<SparseVec<Rational>>,
+    /// The targets at the fixed values, in their given order.
+    pub(super) targets: Vec<SparseVec<Rational>>,
+    /// How many rows (terms) the vectors have.
+    pub(super) nrows: usize,
+    /// When the monomials had been expanded (before the columns were written).
+    pub(super) expanded: Instant,
+}
+
+impl Span {
+    /// The span of the monomials of degree `≤ options.degree` in `g_sym` (the generators
+    /// after the condition), and the `targets` (after the condition) over the same rows.
+    pub(super) fn new(
+        system: &System,
+        g_sym: Vec<Expr>,
+        targets: &[Expr],
+        options: &ClosureOptions,
+    ) -> Result<Span, EngineError> {
+        let vars = system.vars();
+        let r = g_sym.len();
+        let symbolic = &options.symbolic;
+        // Parameters kept symbolic enter as generators of their own, `p`, each of degree at
+        // most `parameters_degree` in the monomials: a coefficient `c(p)` of `G^β` is the
+        // combination of the monomials `p^ν G^β`.
+        check_parameters(vars, symbolic, &options.fixed)?;
+        let condition = options.condition.as_ref();
+        if let Some(&v) = symbolic
+            .iter()
+            .find(|&&v| condition.is_some_and(|c| c.subs().iter().any(|(w, _)| *w == v)))
+        {
+            return Err(EngineError::Invalid(format!(
+                "{} is set by the condition; it cannot be kept symbolic",
+                vars.variable(v).name()
+            )));
+        }
+        let g_sym: Vec<Expr> = g_sym
+            .into_iter()
+            .chain(symbolic.iter().map(|&v| Expr::var(vars, v)))
+            .collect();
+        let parameters = fixed_parameters(system, options, g_sym.iter().chain(targets));
+        let fix = |e: &Expr| fix_parameters(e, &parameters);
+        let g: Vec<Expr> = g_sym.iter().map(fix).collect::<Result<_, _>>()?;
+        let complex = g.iter().any(|e| !e.is_real());
+
+        let constant: Vec<bool> = (0..g_sym.len())
+            .map(|a| a < r && is_phase_free(&g_sym[a]))
+            .collect();
+        let varying = constant[..r].iter().filter(|c| !**c).count();
+        check_monomial_count(varying, symbolic.len(), options)?;
+        let parameter_monomials = monomials(symbolic.len(), options.parameters_degree);
+        let monos: Vec<Vec<u32>> = monomials(r, options.degree)
+            .into_iter()
+            .filter(|b| b.iter().zip(&constant).all(|(e, c)| *e == 0 || !c))
+            .flat_map(|b| {
+                parameter_monomials
+                    .iter()
+                    .map(move |nu| b.iter().chain(nu).copied().collect())
+            })
+            .collect();
+        let values = expand_monomials(vars, &g, &monos, r)?;
+        let expanded = Instant::now();
+
+        let fixed_targets: Vec<Expr> = targets.iter().map(fix).collect::<Result<_, _>>()?;
+        // With denominator atoms, every vector is cleared first (none without).
+        let space = system.space();
+        let clearing = Clearing::new(
+            space.denominator_atoms(),
+            space.radicals(),
+            &parameters,
+            values.values().chain(&fixed_targets),
+        )?;
+        // A real function's terms in `e^{−ikθ}` are the conjugates of those in `e^{ikθ}`, so
+        // they are left out; its image under the clearing is real too when every atom's
+        // polynomial is.
+        let conjugates_follow = !complex && clearing.as_ref().is_none_or(|c| c.real);
+        let angles: Vec<Var> = vars.angles().collect();
+        let table = |e: &Expr| -> Result<TermTable, EngineError> {
+            let image = clearing.as_ref().map(|c| c.apply(e)).transpose()?;
+            Ok(TermTable::new(
+                image.as_ref().unwrap_or(e),
+                &angles,
+                conjugates_follow,
+            ))
+        };
+        // Each generators' monomial cleared once (the clearing commutes with a parameter's
+        // monomial, which holds no atom), and its terms read once for all the parameters'
+        // monomials that shift it.
+        let images: HashMap<Vec<u32>, TermTable> = values
+            .iter()
+            .map(|(beta, e)| Ok((beta.clone(), table(e)?)))
+            .collect::<Result<_, EngineError>>()?;
+        let mut rows = Rows::default();
+        let mut col_ids: Vec<(usize, bool)> = Vec::new();
+        let mut columns: Vec<SparseVec<Rational>> = Vec::new();
+        for (m, beta) in monos.iter().enumerate() {
+            let terms = &images[&generators_part(beta, r)];
+            let shift: Vec<(usize, i64)> = symbolic
+                .iter()
+                .zip(&beta[r..])
+                .filter(|(_, &k)| k > 0)
+                .map(|(v, &k)| (v.index(), i64::from(k)))
+                .collect();
+            for times_i in [false, true] {
+                if times_i && !complex {
+                    continue;
+                }
+                col_ids.push((m, times_i));
+                columns.push(rows.vectorize(terms, times_i, &shift));
+            }
+        }
+        let targets = fixed_targets
+            .iter()
+            .map(|e| Ok(rows.vectorize(&table(e)?, false, &[])))
+            .collect::<Result<_, EngineError>>()?;
+        Ok(Span {
+            g_sym,
+            constant,
+            parameters,
+            complex,
+            monos,
+            col_ids,
+            columns,
+            targets,
+            nrows: rows.len(),
+            expanded,
+        })
+    }
+
+    /// Whether `e` has the parameter `v`, in its terms or through an atom's polynomial
+    /// (`1/(x − a)`) or a radicand (`√(x² + a)`).
+    pub(super) fn mentions(system: &System, e: &Expr, v: Var) -> bool {
+        let space = system.space();
+        e.contains(v)
+            || space
+                .denominator_atoms()
+                .iter()
+                .chain(space.radicals())
+                .any(|(w, d)| d.contains(v) && e.contains(*w))
+    }
+}
+
+/// The parameters fixed for the linear algebra: each that occurs in `exprs` or is given a
+/// value, at that value or 1; the symbolic ones stay.
+fn fixed_parameters<'a>(
+    system: &System,
+    options: &ClosureOptions,
+    exprs: impl Iterator<Item = &'a Expr> + Clone,
+) -> Vec<(Var, Rational)> {
+    let vars = system.vars();
+    let mut parameters = Vec::new();
+    for v in vars.vars() {
+        if vars.variable(v).kind() != VarKind::Parameter || options.symbolic.contains(&v) {
+            continue;
+        }
+        let given = options.fixed.iter().find(|f| f.0 == v).map(|f| f.1.clone());
+        if given.is_some() || exprs.clone().any(|e| Span::mentions(system, e, v)) {
+            parameters.push((v, given.unwrap_or_else(Rational::one)));
+        }
+    }
+    parameters
+}
+
+/// The generators' part of a monomial `p^ν G^β`: `β` with the symbolic parameters' exponents
+/// set to zero. Only that part is expanded: a monomial of the symbolic parameters multiplies
+/// it as a shift of its exponents, so the 84 monomials of degree ≤ 6 in three parameters cost
+/// no product, and no copy, of their own.
+fn generators_part(beta: &[u32], r: usize) -> Vec<u32> {
+    let mut g = beta.to_vec();
+    g[r..].fill(0);
+    g
+}
+
+/// The generators' parts of `monos` expanded at the fixed values `g`, each from one of lower
+/// degree times a generator, and the constant monomial.
+fn expand_monomials(
+    vars: &Vars,
+    g: &[Expr],
+    monos: &[Vec<u32>],
+    r: usize,
+) -> Result<HashMap<Vec<u32>, Expr>, EngineError> {
+    let mut values: HashMap<Vec<u32>, Expr> = HashMap::new();
+    values.insert(vec![0; g.len()], Expr::one(vars));
+    let mut by_degree: Vec<Vec<u32>> = monos.iter().map(|b| generators_part(b, r)).collect();
+    by_degree.sort_by_key(|b| b.iter().sum::<u32>());
+    by_degree.dedup();
+    for beta in &by_degree {
+        if values.contains_key(beta) {
+            continue;
+        }
+        let a = beta.iter().position(|e| *e > 0).expect("nonconstant");
+        let mut lower = beta.clone();
+        lower[a] -= 1;
+        let v = values[&lower].checked_mul(&g[a])?;
+        values.insert(beta.clone(), v);
+    }
+    Ok(values)
+}
