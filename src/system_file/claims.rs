@@ -634,6 +634,10 @@ const RESIDUAL_DEGREE: u32 = 2;
 /// The most monomials that search may expand: degree 2 in up to 20 functions.
 const RESIDUAL_MONOMIALS: usize = 231;
 
+/// The most terms of a residual that is sought so: a longer one (a tower's, of a million
+/// terms) is read as it is, not written into rows for the linear algebra.
+const RESIDUAL_TERMS: usize = 5_000;
+
 impl ClaimSpec {
     /// The claim reported undecided: its check stopped at a limit, whose message is given.
     pub(crate) fn undecided(&self, message: &str) -> ClaimResult {
@@ -729,12 +733,16 @@ impl LoadedSystem {
     /// functions, proved for every value of the parameters, when it is one with a function in
     /// it: `−4 H L/M` for `{A_x, A_y} = 2 H L/M`, whose sign is turned. It only helps to read
     /// the residual: when there is none, or the search stops at its limit or on a condition
-    /// it cannot apply, nothing is added and the claim is refuted all the same.
+    /// it cannot apply, or the residual has more than [`RESIDUAL_TERMS`] terms, nothing is
+    /// added and the claim is refuted all the same.
     fn residual_in_functions(
         &self,
         residual: &Expr,
         condition: Option<&Condition>,
     ) -> Option<Expr> {
+        if residual.len() > RESIDUAL_TERMS {
+            return None;
+        }
         let system = &self.system;
         let functions = system.functions();
         // `H` unless a function is it (the rotor's `F1`): two equal generators would leave
