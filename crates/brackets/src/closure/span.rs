@@ -132,19 +132,45 @@ impl Span {
         let expanded = Instant::now();
 
         let fixed_targets: Vec<Expr> = targets.iter().map(fix).collect::<Result<_, _>>()?;
+        let mut span = Span {
+            g_sym,
+            constant,
+            parameters,
+            complex,
+            monos,
+            col_ids: Vec::new(),
+            columns: Vec::new(),
+            targets: Vec::new(),
+            nrows: 0,
+            expanded,
+        };
+        span.write_vectors(system, &values, &fixed_targets, symbolic)?;
+        Ok(span)
+    }
+
+    /// Writes the columns, each monomial `p^ν G^β` from the value of `G^β` (in `values`,
+    /// at the fixed parameters) shifted by `p^ν`, and the `targets` (at the fixed
+    /// parameters) as vectors over the same rows.
+    fn write_vectors(
+        &mut self,
+        system: &System,
+        values: &HashMap<Vec<u32>, Expr>,
+        targets: &[Expr],
+        symbolic: &[Var],
+    ) -> Result<(), EngineError> {
         // With denominator atoms, every vector is cleared first (none without).
         let space = system.space();
         let clearing = Clearing::new(
             space.denominator_atoms(),
             space.radicals(),
-            &parameters,
-            values.values().chain(&fixed_targets),
+            &self.parameters,
+            values.values().chain(targets),
         )?;
         // A real function's terms in `e^{−ikθ}` are the conjugates of those in `e^{ikθ}`, so
         // they are left out; its image under the clearing is real too when every atom's
         // polynomial is.
-        let conjugates_follow = !complex && clearing.as_ref().is_none_or(|c| c.real);
-        let angles: Vec<Var> = vars.angles().collect();
+        let conjugates_follow = !self.complex && clearing.as_ref().is_none_or(|c| c.real);
+        let angles: Vec<Var> = system.vars().angles().collect();
         let table = |e: &Expr| -> Result<TermTable, EngineError> {
             let image = clearing.as_ref().map(|c| c.apply(e)).transpose()?;
             Ok(TermTable::new(
@@ -156,15 +182,14 @@ impl Span {
         // Each generators' monomial cleared once (the clearing commutes with a parameter's
         // monomial, which holds no atom), and its terms read once for all the parameters'
         // monomials that shift it.
-        let images: HashMap<Vec<u32>, TermTable> = values
+        let images: HashMap<&[u32], TermTable> = values
             .iter()
-            .map(|(beta, e)| Ok((beta.clone(), table(e)?)))
+            .map(|(beta, e)| Ok((beta.as_slice(), table(e)?)))
             .collect::<Result<_, EngineError>>()?;
+        let r = self.g_sym.len() - symbolic.len();
         let mut rows = Rows::default();
-        let mut col_ids: Vec<(usize, bool)> = Vec::new();
-        let mut columns: Vec<SparseVec<Rational>> = Vec::new();
-        for (m, beta) in monos.iter().enumerate() {
-            let terms = &images[&generators_part(beta, r)];
+        for (m, beta) in self.monos.iter().enumerate() {
+            let terms = &images[generators_part(beta, r).as_slice()];
             let shift: Vec<(usize, i64)> = symbolic
                 .iter()
                 .zip(&beta[r..])
@@ -172,29 +197,19 @@ impl Span {
                 .map(|(v, &k)| (v.index(), i64::from(k)))
                 .collect();
             for times_i in [false, true] {
-                if times_i && !complex {
+                if times_i && !self.complex {
                     continue;
                 }
-                col_ids.push((m, times_i));
-                columns.push(rows.vectorize(terms, times_i, &shift));
+                self.col_ids.push((m, times_i));
+                self.columns.push(rows.vectorize(terms, times_i, &shift));
             }
         }
-        let targets = fixed_targets
+        self.targets = targets
             .iter()
             .map(|e| Ok(rows.vectorize(&table(e)?, false, &[])))
             .collect::<Result<_, EngineError>>()?;
-        Ok(Span {
-            g_sym,
-            constant,
-            parameters,
-            complex,
-            monos,
-            col_ids,
-            columns,
-            targets,
-            nrows: rows.len(),
-            expanded,
-        })
+        self.nrows = rows.len();
+        Ok(())
     }
 
     /// Whether `e` has the parameter `v`, in its terms or through an atom's polynomial
