@@ -1,6 +1,7 @@
 //! The discovery tools from code, on the harmonic rotor at the resonance `Ω = ω`: every
-//! integral of a finite space (a search), the algebra some of them generate (a closure), a
-//! certified rank, each as a structured result and as a report rendered to text or JSON.
+//! integral of a finite space (a search), the algebra some of them generate (a closure), one
+//! function written in others, a certified rank, each as a structured result and as a report
+//! rendered to text or JSON.
 //!
 //! Run with `cargo run --release --example discover`.
 
@@ -27,6 +28,9 @@ fn main() -> Result<(), EngineError> {
 
     // The algebra of F2, L, P_{1,1}, Q_{1,1} at the resonance, up to degree 2.
     let p = rotor.resonant("Z", 1, 1)?;
+    let square =
+        p.p.checked_mul(&p.p)?
+            .checked_add(&p.q.checked_mul(&p.q)?)?;
     let generators = [
         NamedFunction::new("F2", "F2", rotor.get("F2")?.clone()),
         NamedFunction::new("L", "L", rotor.get("L")?.clone()),
@@ -48,6 +52,17 @@ fn main() -> Result<(), EngineError> {
     assert!(algebra.closes() && report.all_proved());
     let json = render(&report, Format::Json, &RenderOptions::reproducible());
     println!("  as JSON: {} bytes", json.len());
+
+    // One function written in others, found and proved as a closure's brackets are:
+    // P² + Q² = |Z|², a polynomial of degree 1 in F1, F2 and L.
+    let known: Vec<NamedFunction> = ["F1", "F2", "L"]
+        .iter()
+        .map(|name| Ok(NamedFunction::new(name, name, rotor.get(name)?.clone())))
+        .collect::<Result<_, EngineError>>()?;
+    let written = expressed_in(&rotor, &known, &square, &ClosureOptions::new(1))?
+        .expect("P² + Q² is a polynomial in F1, F2 and L");
+    println!("  P² + Q² = {}", written.poly);
+    assert!(written.symbolic && written.poly.to_string() == "2Mω L + 2M F1 − 2M F2");
 
     // Five functionally independent integrals at the resonance (C17), certified: L, G1, G2
     // and F1 − F2 are tied by the Casimir, P_{1,1} is new.

@@ -36,7 +36,9 @@ pub mod table;
 pub mod tower;
 
 pub use claim::{Claim, Condition, Outcome, Verdict};
-pub use closure::{closure, Bracket as ClosureBracket, Closure, ClosureOptions, Relation};
+pub use closure::{
+    closure, expressed_in, Bracket as ClosureBracket, Closure, ClosureOptions, Expressed, Relation,
+};
 pub use error::{EngineError, JacobiViolation};
 pub use phase::{CanonicalPair, DeclaredBracket, Gradient, PhaseSpace};
 pub use rank::{rank, RankCertificate, UpperBound};
