@@ -229,13 +229,18 @@ pub struct Equations {
     pub lines: Vec<Equation>,
 }
 
-/// One displayed equation `lhs = rhs`.
+/// One displayed equation `lhs = rhs`, and the right side again in named functions where
+/// that is known (`= −2 H L/M`).
 #[derive(Clone, Debug)]
 pub struct Equation {
     /// The left side in the paper's unicode notation (`ṗ_x`, `H`, `P_{1,1}`).
     pub lhs: String,
     /// The right side.
     pub rhs: Expr,
+    /// The right side as a polynomial in `H` and a system's named functions, proved for
+    /// every value of the parameters
+    /// ([`LoadedSystem::written_in_functions`](crate::system_file::LoadedSystem::written_in_functions)).
+    pub in_functions: Option<Expr>,
 }
 
 impl Equation {
@@ -244,7 +249,14 @@ impl Equation {
         Equation {
             lhs: lhs.to_string(),
             rhs,
+            in_functions: None,
         }
+    }
+
+    /// With the right side written in named functions as well.
+    pub fn in_functions(mut self, written: Option<Expr>) -> Self {
+        self.in_functions = written;
+        self
     }
 }
 

@@ -41,7 +41,10 @@
 //!                 "note": string | null,
 //!                 "undecided": string | null   (the limit's message),
 //!                 "seconds": number | null } ],
-//!   "equations": [ { "section", "caption", "lines": [ { "lhs", "text", "ascii", "latex" } ] } ],
+//!   "equations": [ { "section", "caption", "lines": [ { "lhs", "text", "ascii", "latex",
+//!                 "in_functions": { "text", "ascii", "latex" } | null   (the right side as a
+//!                          polynomial of degree ≤ 2 in H and the named functions, proved, where
+//!                          `bracket` finds it one) } ] } ],
 //!   "tables": [ { "section", "caption" (plain text, as every title and caption: "{A, B} for
 //!                 the harmonic rotor (row A, column B)"), "functions": [ascii names],
 //!                 "display": [names],
@@ -143,7 +146,9 @@ pub fn value(report: &Report, options: &Options) -> Value {
                     "caption": plain(&eq.caption),
                     "lines": eq.lines.iter().map(|l| {
                         let mut v = expr(&l.rhs);
-                        v.as_object_mut().expect("an object").insert("lhs".into(), json!(l.lhs));
+                        let line = v.as_object_mut().expect("an object");
+                        line.insert("lhs".into(), json!(l.lhs));
+                        line.insert("in_functions".into(), l.in_functions.as_ref().map_or(Value::Null, expr));
                         v
                     }).collect::<Vec<_>>(),
                 })),

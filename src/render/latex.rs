@@ -323,7 +323,13 @@ fn equations(out: &mut Vec<String>, eq: &Equations) {
     let mut rows: Vec<String> = eq
         .lines
         .iter()
-        .flat_map(|l| long_rows(&math(&l.lhs), "=", &l.rhs, ROW))
+        .flat_map(|l| {
+            let mut rows = long_rows(&math(&l.lhs), "=", &l.rhs, ROW);
+            if let Some(f) = &l.in_functions {
+                rows.extend(long_rows("", "=", f, ROW));
+            }
+            rows
+        })
         .collect();
     flush(out, &mut rows);
 }

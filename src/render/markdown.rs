@@ -64,7 +64,11 @@ fn equations(eq: &Equations) -> String {
         lines.push(String::new());
     }
     for l in &eq.lines {
-        lines.push(format!("- {}", code(&format!("{} = {}", l.lhs, l.rhs))));
+        let mut line = format!("- {}", code(&format!("{} = {}", l.lhs, l.rhs)));
+        if let Some(f) = &l.in_functions {
+            line.push_str(&format!(" = {}", code(&f.to_string())));
+        }
+        lines.push(line);
     }
     lines.join("\n")
 }

@@ -231,16 +231,22 @@ fn equations(out: &mut Vec<String>, eq: &Equations) {
     let indent = " ".repeat(4 + lw + 3);
     let print = |l: &Equation| {
         let line = format!("    {} = {}", pad(&l.lhs, lw), l.rhs);
-        if width(&line) <= WRAP {
-            vec![line]
+        // Where the right side's `=` stands, for the same value in named functions below it.
+        let (mut lines, equals) = if width(&line) <= WRAP {
+            (vec![line], 4 + lw + 1)
         } else if lw > ALIGNED_LEFT_SIDE {
             // Too wide to wrap the right side after: each side on lines of its own.
             let mut lines = wrap_sum(&format!("    {}", l.lhs), WRAP, "      ");
             lines.extend(wrap_sum(&format!("      = {}", l.rhs), WRAP, "        "));
-            lines
+            (lines, 6)
         } else {
-            wrap_sum(&line, WRAP, &indent)
+            (wrap_sum(&line, WRAP, &indent), 4 + lw + 1)
+        };
+        if let Some(f) = &l.in_functions {
+            let at = " ".repeat(equals);
+            lines.extend(wrap_sum(&format!("{at}= {f}"), WRAP, &format!("{at}  ")));
         }
+        lines
     };
     // A long list (a search's thousands of integrals) is printed on the pool's threads; a
     // short one where it is, without starting them.

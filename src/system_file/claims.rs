@@ -5,8 +5,7 @@
 use std::ops::Range;
 use std::time::Instant;
 
-use brackets::closure::{expressed_in, ClosureOptions};
-use brackets::{rank, Claim, Condition, EngineError, NamedFunction, Outcome};
+use brackets::{rank, Claim, Condition, EngineError, Outcome};
 use toml::Spanned;
 use trigpoly::syntax::ExprKind;
 use trigpoly::{AlgebraError, Expr, Span, Var, VarKind};
@@ -627,17 +626,6 @@ pub(crate) fn parse_assignments(
     Ok(assignments)
 }
 
-/// The degree of the polynomials in `H` and the named functions that a refuted identity's
-/// residual is sought among ([`LoadedSystem::residual_in_functions`]).
-const RESIDUAL_DEGREE: u32 = 2;
-
-/// The most monomials that search may expand: degree 2 in up to 20 functions.
-const RESIDUAL_MONOMIALS: usize = 231;
-
-/// The most terms of a residual that is sought so: a longer one (a tower's, of a million
-/// terms) is read as it is, not written into rows for the linear algebra.
-const RESIDUAL_TERMS: usize = 5_000;
-
 impl ClaimSpec {
     /// The claim reported undecided: its check stopped at a limit, whose message is given.
     pub(crate) fn undecided(&self, message: &str) -> ClaimResult {
@@ -670,7 +658,7 @@ impl LoadedSystem {
                 };
                 let residual_in_functions = residual
                     .as_ref()
-                    .and_then(|r| self.residual_in_functions(r, spec.condition.as_ref()));
+                    .and_then(|r| self.written_in_functions(r, spec.condition.as_ref()));
                 let (condition, condition_ascii) =
                     spec.condition.as_ref().map(Condition::forms).unzip();
                 Ok(CheckedClaim::Identity(Box::new(ClaimResult {
@@ -727,43 +715,6 @@ impl LoadedSystem {
                 Ok(CheckedClaim::Rank(Box::new(rank)))
             }
         }
-    }
-
-    /// A refuted identity's residual as a polynomial of degree `≤ 2` in `H` and the named
-    /// functions, proved for every value of the parameters, when it is one with a function in
-    /// it: `−4 H L/M` for `{A_x, A_y} = 2 H L/M`, whose sign is turned. It only helps to read
-    /// the residual: when there is none, or the search stops at its limit or on a condition
-    /// it cannot apply, or the residual has more than [`RESIDUAL_TERMS`] terms, nothing is
-    /// added and the claim is refuted all the same.
-    fn residual_in_functions(
-        &self,
-        residual: &Expr,
-        condition: Option<&Condition>,
-    ) -> Option<Expr> {
-        if residual.len() > RESIDUAL_TERMS {
-            return None;
-        }
-        let system = &self.system;
-        let functions = system.functions();
-        // `H` unless a function is it (the rotor's `F1`): two equal generators would leave
-        // the choice between them to the linear algebra.
-        let h = system.hamiltonian();
-        let mut generators = Vec::with_capacity(functions.len() + 1);
-        if functions.iter().all(|f| f.name != "H" && f.expr != *h) {
-            generators.push(NamedFunction::new("H", "H", h.clone()));
-        }
-        generators.extend(functions.iter().cloned());
-        let mut options = ClosureOptions::new(RESIDUAL_DEGREE);
-        options.max_monomials = RESIDUAL_MONOMIALS;
-        if let Some(c) = condition {
-            options = options.when(c.clone());
-        }
-        let found = expressed_in(system, &generators, residual, &options).ok()??;
-        let ring = &found.ring;
-        let has_function = ring
-            .vars()
-            .any(|v| ring.variable(v).kind() != VarKind::Parameter && found.poly.contains(v));
-        (found.symbolic && has_function).then_some(found.poly)
     }
 
     /// The certified rank of functions as a report entry; `expected` is the claimed rank.

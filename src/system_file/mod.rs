@@ -51,6 +51,7 @@ mod reports;
 mod scope;
 mod text;
 mod tower;
+mod written;
 
 pub use claims::{CheckedClaim, ClaimForm, ClaimSpec};
 pub use error::{ErrorKind, FileError, Location};

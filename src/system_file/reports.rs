@@ -227,7 +227,13 @@ pub fn bracket_report(
         .bracket(&fe, &ge)
         .map_err(|e| file.computation_error(&e))?;
     let lhs = format!("{{{fname}, {gname}}}");
-    let entry = equations_at(file, condition.as_ref(), vec![(lhs.clone(), value)])?;
+    let mut entry = equations_at(file, condition.as_ref(), vec![(lhs.clone(), value)])?;
+    // The bracket in the file's functions too, where it is a polynomial in them.
+    if let Entry::Equations(Equations { lines, .. }) = &mut entry {
+        for line in lines {
+            line.in_functions = file.written_in_functions(&line.rhs, condition.as_ref());
+        }
+    }
     Ok(file.one_entry(
         format!("`{lhs}` for {}", file.the_name()),
         entry,

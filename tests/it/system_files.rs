@@ -2715,3 +2715,45 @@ expect = "refuted"
         "{kepler}"
     );
 }
+
+/// `bracket` writes the bracket in `H` and the file's functions too, where it is a polynomial
+/// of degree ≤ 2 in them (Pauli's `{A_x, A_y} = −2 H L/M`), under the `=` of the expansion, in
+/// every format; where it is none, or zero, nothing is added.
+#[test]
+fn bracket_writes_the_bracket_in_the_files_functions() {
+    let text = run(&["bracket", "systems/kepler.toml", "Ax", "Ay"], 0);
+    assert!(
+        text.contains(
+            "    {A_x, A_y} = −p_r² p_φ/M² − p_φ³/(M²r²) + 2k p_φ/(Mr)\n\
+             \x20              = −2 H L/M\n"
+        ),
+        "{text}"
+    );
+    let json = |f: &str, g: &str| -> Value {
+        let out = run(
+            &["bracket", "systems/kepler.toml", f, g, "--format", "json"],
+            0,
+        );
+        let v: Value = serde_json::from_str(&out).expect("JSON");
+        v["equations"][0]["lines"][0]["in_functions"].clone()
+    };
+    assert_eq!(json("Ax", "Ay")["ascii"], "-2*H*L/M");
+    assert_eq!(json("Ax", "Ay")["latex"], r"-\frac{2 H L}{M}");
+    // {L, A_x} = A_y; {A_x, H} = 0; {r, p_r} = 1 has no function in it; {cos φ, A_x} is none.
+    assert_eq!(json("L", "Ax")["ascii"], "Ay");
+    assert_eq!(json("Ax", "H"), Value::Null);
+    assert_eq!(json("r", "p_r"), Value::Null);
+    assert_eq!(json("cos(phi)", "Ax"), Value::Null);
+    let markdown = run(
+        &[
+            "bracket",
+            "systems/kepler.toml",
+            "Ax",
+            "Ay",
+            "--format",
+            "markdown",
+        ],
+        0,
+    );
+    assert!(markdown.contains("` = `−2 H L/M`"), "{markdown}");
+}

@@ -1,0 +1,80 @@
+//! An expression written as a polynomial in `H` and the file's named functions, where it is
+//! one ([`LoadedSystem::written_in_functions`]): what `check` adds under a refuted claim's
+//! residual (`= −4 H L/M`) and `bracket` under a bracket.
+
+use brackets::closure::{expressed_in, ClosureOptions};
+use brackets::{Condition, NamedFunction};
+use trigpoly::{Expr, VarKind};
+
+use super::LoadedSystem;
+
+/// The degree of the polynomials in `H` and the named functions that an expression is sought
+/// among.
+const DEGREE: u32 = 2;
+
+/// The most monomials that search may expand: degree 2 in up to 20 functions.
+const MAX_MONOMIALS: usize = 231;
+
+/// The most terms of an expression that is sought so: a longer one (a tower's residual, of a
+/// million terms) is read as it is, not written into rows for the linear algebra.
+const MAX_TERMS: usize = 5_000;
+
+/// The most term products that expanding the monomials may take (`Σ |G_a| + Σ |G_a|·|G_b|`):
+/// a file whose functions are long (`P_{40,40}`, 1 681 terms, as a function) is not
+/// searched, where its squares alone would take millions.
+const MAX_TERM_PRODUCTS: usize = 200_000;
+
+impl LoadedSystem {
+    /// `e` (after `condition`) as a polynomial of degree `≤ 2` in `H` and the named
+    /// functions, proved for every value of the parameters, when it is one with a function
+    /// in it: `−4 H L/M` for the residual of `{A_x, A_y} = 2 H L/M`, whose sign is turned.
+    /// Its variables are the parameters and one symbol per function, printed by its display
+    /// name. It only helps to read `e`: when there is none, or the search stops at its limit
+    /// or on a condition it cannot apply, or `e` has more than 5 000 terms, or the functions'
+    /// monomials would take more than 200 000 term products, it is `None`.
+    ///
+    /// ```
+    /// use superint::system_file::{load, LimitsOverride};
+    ///
+    /// let kepler = load("systems/kepler.toml".as_ref(), &LimitsOverride::default())?;
+    /// let bracket = kepler.parse("{Ax, Ay}")?;
+    /// let written = kepler.written_in_functions(&bracket, None).expect("a polynomial");
+    /// assert_eq!(written.to_string(), "−2 H L/M");
+    /// # Ok::<(), superint::system_file::FileError>(())
+    /// ```
+    pub fn written_in_functions(&self, e: &Expr, condition: Option<&Condition>) -> Option<Expr> {
+        if e.len() > MAX_TERMS {
+            return None;
+        }
+        let system = &self.system;
+        let functions = system.functions();
+        // `H` unless a function is it (the rotor's `F1`): two equal generators would leave
+        // the choice between them to the linear algebra.
+        let h = system.hamiltonian();
+        let mut generators = Vec::with_capacity(functions.len() + 1);
+        if functions.iter().all(|f| f.name != "H" && f.expr != *h) {
+            generators.push(NamedFunction::new("H", "H", h.clone()));
+        }
+        generators.extend(functions.iter().cloned());
+        let lengths: Vec<usize> = generators.iter().map(|g| g.expr.len()).collect();
+        let products = lengths.iter().sum::<usize>()
+            + (0..lengths.len())
+                .flat_map(|a| lengths[a..].iter().map(move |b| (a, b)))
+                .map(|(a, b)| lengths[a] * b)
+                .sum::<usize>();
+        if products > MAX_TERM_PRODUCTS {
+            return None;
+        }
+        let mut options = ClosureOptions::new(DEGREE);
+        options.max_monomials = MAX_MONOMIALS;
+        if let Some(c) = condition {
+            options = options.when(c.clone());
+        }
+        let found = expressed_in(system, &generators, e, &options).ok()??;
+        let ring = &found.ring;
+        let has_function = ring
+            .vars()
+            .any(|v| ring.variable(v).kind() != VarKind::Parameter && found.poly.contains(v));
+        (found.symbolic && has_function).then_some(found.poly)
+    }
+}
