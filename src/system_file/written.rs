@@ -78,3 +78,32 @@ impl LoadedSystem {
         (found.symbolic && has_function).then_some(found.poly)
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use crate::system_file::{load_str, LimitsOverride};
+
+    /// A file with `L` and `B = (1 + x + y + p_x + p_y)^k`.
+    fn with_power(k: u32) -> crate::system_file::LoadedSystem {
+        let text = format!(
+            "hamiltonian = \"(p_x^2 + p_y^2)/2 + (x^2 + y^2)/2\"\n\
+             [phase_space]\ncoordinates = [\"x\", \"y\"]\n\
+             [[function]]\nname = \"B\"\nvalue = \"(1 + x + y + p_x + p_y)^{k}\"\n\
+             [[function]]\nname = \"L\"\nvalue = \"x*p_y - y*p_x\"\n"
+        );
+        load_str("power.toml", &text, &LimitsOverride::default()).expect("the file loads")
+    }
+
+    /// `2L + B` is written in the functions while they are short, and not sought once the
+    /// squares of the functions would take more than the products allowed (`B` of 10 626
+    /// terms at `k = 20`).
+    #[test]
+    fn long_functions_are_not_searched() {
+        for (k, written) in [(2, Some("B + 2 L")), (20, None)] {
+            let file = with_power(k);
+            let e = file.parse("2*L + B").unwrap();
+            let found = file.written_in_functions(&e, None).map(|w| w.to_string());
+            assert_eq!(found.as_deref(), written, "k = {k}");
+        }
+    }
+}
