@@ -359,232 +359,16 @@ pub fn search_report(
 ) -> Result<(Report, SearchResult), EngineError> {
     let start = Instant::now();
     let r = search(system, options)?;
-    let vars = system.vars();
-    let cond = r.condition.clone();
-    let held = HeldAt::new(options.condition.as_ref(), vars, &r.parameters);
-    let fixed = held.fixed();
-    let symbolic = r
-        .module
-        .as_ref()
-        .map(|m| parameter_names(vars, &m.parameters));
-    let mut entries = vec![
-        Entry::Equations(Equations {
-            caption: String::new(),
-            lines: vec![Equation::new("H", system.hamiltonian().clone())],
-        }),
-        Entry::Text(space_text(&r)),
+    let shared = Shared::new(system, options, &r);
+    let sections = vec![
+        shared.search_section(system, options, &r)?,
+        shared.basis_section(&r)?,
     ];
-    let h = match &options.condition {
-        Some(c) => c.apply(system.hamiltonian())?,
-        None => system.hamiltonian().clone(),
-    };
-    if let Some(why) = options.space.why_outside(&h) {
-        entries.push(Entry::Text(format!(
-            "Note: H is not in this space ({why}), so H is not among the integrals found, nor \
-             is any that needs its terms."
-        )));
-    } else if let Some(note) = power_past_parameters_degree(&h, options) {
-        entries.push(Entry::Text(note));
-    }
-    let for_every_value = (0..r.basis.len())
-        .filter(|&i| r.for_every_value(i).is_some())
-        .count();
-    entries.extend(parameter_notes(&r, vars, fixed, for_every_value));
-    if let Some(names) = &symbolic {
-        entries.push(Entry::Text(format!(
-            "Parameters kept symbolic: `{names}`. The equations are the coefficients of every \
-             monomial in the variables and these parameters, so what is found holds for every \
-             value of them."
-        )));
-    }
-    let dims = r.dimensions_by_momenta_degree();
-    let poisson_dims = r.dimensions_by_poisson_degree();
-    let over = match &symbolic {
-        // With symbolic parameters the space is over Q, and `M·I` counts apart from `I`.
-        Some(_) => " over Q (a parameter's multiple of an integral counts apart from it)",
-        None => "",
-    };
-    // By degree in the momenta, unless the space has Poisson variables and no momenta; and in
-    // the Poisson variables when it has them.
-    let poisson = !r.variables.poisson.is_empty();
-    let by_momenta = !poisson || !r.variables.momenta.is_empty();
-    let counts = r.counts();
-    let poisson_counts = r.poisson_counts();
-    let angles = vars.angles().next().is_some();
-    let mut by_degree = String::new();
-    let mut exactly = Vec::new();
-    if by_momenta {
-        by_degree += &dimensions_text("in the momenta", &dims);
-        exactly.extend(degree_counts(&counts, angles, |j| {
-            format!("Momenta degree exactly {j}")
-        }));
-    }
-    if poisson {
-        by_degree += &dimensions_text("in the Poisson variables", &poisson_dims);
-        exactly.extend(degree_counts(&poisson_counts, angles, |j| {
-            format!("Degree exactly {j} in the Poisson variables")
-        }));
-    }
-    entries.push(Entry::Text(format!(
-        "Dimension of the space of integrals{over}: {}.{by_degree}",
-        r.basis.len(),
-    )));
-    entries.extend(exactly.into_iter().map(Entry::Text));
-    // The labels of the integrals, `I1, I2, …`, and of their complex forms, `A1, …`, in
-    // letters the system does not use for names of its own.
-    let letter = label_letter(system, &["I", "J", "Φ"], r.basis.len());
-    let complex = label_letter(system, &["A", "B", "Ψ"], r.basis.len());
-    let name_of = |v: &Var| vars.variable(*v).name().to_string();
-    let names_of = |vs: &[Var]| vs.iter().map(name_of).collect::<Vec<_>>();
-    let label = |i: usize| format!("{letter}{}", i + 1);
-    let shown = shown_integrals(&r);
-    entries.push(Entry::Data(Facts::Search(Box::new(SearchFacts {
-        space: r.space,
-        coordinates: names_of(&r.variables.coordinates),
-        momenta: names_of(&r.variables.momenta),
-        poisson: names_of(&r.variables.poisson),
-        angles: names_of(&r.variables.angles),
-        left_out: names_of(&r.variables.left_out),
-        parameters: parameter_facts(
-            vars,
-            &r.parameters,
-            r.module
-                .as_ref()
-                .map(|m| (&m.parameters[..], r.space.parameters_degree)),
-            &cond,
-        ),
-        unknowns: r.unknowns,
-        equations: r.equations,
-        blocks: r.components,
-        largest_block: r.largest_component,
-        dimension: r.basis.len(),
-        by_momenta_degree: dims,
-        counts,
-        by_poisson_degree: poisson_dims,
-        poisson_counts,
-        for_every_value,
-        shown: shown.iter().map(|&i| label(i)).collect(),
-        new_only: r.new.clone(),
-    }))));
-    let mut sections = vec![Section {
-        number: 1,
-        title: "Search".into(),
-        file: None,
-        entries,
-    }];
-
-    // The basis (or the new part; with symbolic parameters, its generators), proved.
-    let mut entries = Vec::new();
-    if let (Some(m), Some(names)) = (&r.module, &symbolic) {
-        let shown_text = if r.new.is_some() {
-            "Below, parameter multiples of integrals count as generated."
-        } else {
-            "Shown: the generators."
-        };
-        entries.push(Entry::Text(format!(
-            "Over the polynomials in `{names}`, {} of the {} {} all of them: each of the \
-             others is a sum of parameter multiples of integrals. {shown_text}",
-            m.generators.len(),
-            counted(r.basis.len(), "basis integral"),
-            agreeing(m.generators.len(), "generates", "generate"),
-        )));
-    }
-    if let Some(n) = &r.new {
-        entries.push(Entry::Text(new_integrals_text(&r, n)));
-    }
-    // With denominators, each integral written as a physicist writes it: its terms collected
-    // by momenta and parameters over common denominators, reduced (the linear algebra's
-    // monomials are not independent, and its combination of them can be long). The same
-    // element.
-    // With radicals only, each integral as the search chose its monomials (results.md §13:
-    // no `r²` where a polynomial is, so the monomials show), unless it has fewer terms with
-    // the least powers of its radicals (`2β/(xr) − 2βr/(xy²)` is `−2βx/(y²r)`).
-    let written = written_forms(&r, &shown)?;
-    if shown.is_empty() {
-        entries.push(Entry::Text(
-            "None: the known integrals generate every integral in the space.".into(),
-        ));
-    } else {
-        entries.push(Entry::Equations(Equations {
-            caption: match (&r.new, &symbolic) {
-                (Some(_), _) => "New integrals".into(),
-                (None, Some(names)) => format!("Generators over the polynomials in {names}"),
-                (None, None) => "A basis of the integrals".into(),
-            },
-            lines: shown
-                .iter()
-                .zip(&written)
-                .map(|(&i, w)| Equation::new(&label(i), w.clone()))
-                .collect(),
-        }));
-    }
-    let k = order_letter(&r.vars);
-    let complex_forms: Vec<Equation> = shown
-        .iter()
-        .filter_map(|&i| {
-            complex_form(r.basis[i].expr())
-                .map(|(a, order)| Equation::new(&format!("{complex}{} ({k} = {order})", i + 1), a))
-        })
-        .collect();
-    if let (false, [theta]) = (complex_forms.is_empty(), r.variables.angles.as_slice()) {
-        let theta = r.vars.variable(*theta).unicode();
-        entries.push(Entry::Equations(Equations {
-            caption: format!(
-                "Those of trigonometric order {k} > 0 as {letter} = Re({complex} e^{{−i{k}{theta}}})"
-            ),
-            lines: complex_forms,
-        }));
-    }
-    for (&i, w) in shown.iter().zip(&written) {
-        let f = &r.basis[i];
-        let mut c = ClaimResult::derived(
-            &label(i),
-            &format!("{{{}, H}} = 0", label(i)),
-            f.proved_fixed,
-            proof_note(f, fixed, symbolic.as_deref()),
-        );
-        c = c.at(held.at(f.symbolic.is_none() && !r.parameters.is_empty()));
-        let c = c.written(&format!("{{{}, H}} = 0", w.render(Style::Ascii)));
-        entries.push(Entry::Claim(c));
-    }
-    let rest: Vec<&Integral> = (0..r.basis.len())
-        .filter(|i| !shown.contains(i))
-        .map(|i| &r.basis[i])
-        .collect();
-    if !rest.is_empty() {
-        let proved = rest.iter().all(|f| f.proved_fixed);
-        let lifted = rest.iter().filter(|f| f.symbolic.is_some()).count();
-        let note = match &symbolic {
-            // Nothing fixed: every proof was symbolic.
-            _ if r.parameters.is_empty() => None,
-            // Every one lifted back to the fixed parameters too: proved for every value.
-            Some(_) if lifted == rest.len() => None,
-            Some(names) => Some(proved_for_every(names, fixed)),
-            None => Some(format!("{lifted} of them lifted and proved symbolically")),
-        };
-        let mut c = ClaimResult::derived(
-            "basis",
-            &format!(
-                "{{{letter}, H}} = 0 for the other {}",
-                counted(rest.len(), "basis element")
-            ),
-            proved,
-            note,
-        );
-        c.condition = cond.clone();
-        entries.push(Entry::Claim(c));
-    }
-    sections.push(Section {
-        number: 2,
-        title: if r.new.is_some() {
-            "New integrals".into()
-        } else {
-            "Basis".into()
-        },
-        file: None,
-        entries,
-    });
-    let when = cond.map(|c| format!(" at `{c}`")).unwrap_or_default();
+    let when = r
+        .condition
+        .as_ref()
+        .map(|c| format!(" at `{c}`"))
+        .unwrap_or_default();
     Ok((
         Report {
             title: format!("Integrals of {}{when}", name),
@@ -595,6 +379,290 @@ pub fn search_report(
         },
         r,
     ))
+}
+
+/// What the two sections of a search's report share: where the integrals hold, the names of
+/// the parameters kept symbolic, the letters of the integrals' labels and which integrals
+/// are shown.
+struct Shared {
+    /// Where the integrals hold: the condition and the fixed parameters' values.
+    held: HeldAt,
+    /// The parameters kept symbolic, named (`M, ω`), if any.
+    symbolic: Option<String>,
+    /// The letter of the integrals' labels, `I1, I2, …`, one the system does not use.
+    letter: &'static str,
+    /// The letter of their complex forms, `A1, …`.
+    complex: &'static str,
+    /// The integrals shown (all, the new ones, or the generators), by index in the basis.
+    shown: Vec<usize>,
+}
+
+impl Shared {
+    fn new(system: &System, options: &SearchOptions, r: &SearchResult) -> Self {
+        let vars = system.vars();
+        Shared {
+            held: HeldAt::new(options.condition.as_ref(), vars, &r.parameters),
+            symbolic: r
+                .module
+                .as_ref()
+                .map(|m| parameter_names(vars, &m.parameters)),
+            letter: label_letter(system, &["I", "J", "Φ"], r.basis.len()),
+            complex: label_letter(system, &["A", "B", "Ψ"], r.basis.len()),
+            shown: shown_integrals(r),
+        }
+    }
+
+    /// The label of basis integral `i`: `I3`.
+    fn label(&self, i: usize) -> String {
+        format!("{}{}", self.letter, i + 1)
+    }
+
+    /// Section 1: `H`, the space searched, notes on `H` and the parameters, the dimensions of
+    /// the integrals by degree, and the facts for JSON.
+    fn search_section(
+        &self,
+        system: &System,
+        options: &SearchOptions,
+        r: &SearchResult,
+    ) -> Result<Section, EngineError> {
+        let vars = system.vars();
+        let mut entries = vec![
+            Entry::Equations(Equations {
+                caption: String::new(),
+                lines: vec![Equation::new("H", system.hamiltonian().clone())],
+            }),
+            Entry::Text(space_text(r)),
+        ];
+        let h = match &options.condition {
+            Some(c) => c.apply(system.hamiltonian())?,
+            None => system.hamiltonian().clone(),
+        };
+        if let Some(why) = options.space.why_outside(&h) {
+            entries.push(Entry::Text(format!(
+                "Note: H is not in this space ({why}), so H is not among the integrals found, \
+                 nor is any that needs its terms."
+            )));
+        } else if let Some(note) = power_past_parameters_degree(&h, options) {
+            entries.push(Entry::Text(note));
+        }
+        let for_every_value = (0..r.basis.len())
+            .filter(|&i| r.for_every_value(i).is_some())
+            .count();
+        entries.extend(parameter_notes(r, vars, self.held.fixed(), for_every_value));
+        if let Some(names) = &self.symbolic {
+            entries.push(Entry::Text(format!(
+                "Parameters kept symbolic: `{names}`. The equations are the coefficients of \
+                 every monomial in the variables and these parameters, so what is found holds \
+                 for every value of them."
+            )));
+        }
+        let dims = r.dimensions_by_momenta_degree();
+        let poisson_dims = r.dimensions_by_poisson_degree();
+        let over = match &self.symbolic {
+            // With symbolic parameters the space is over Q, and `M·I` counts apart from `I`.
+            Some(_) => " over Q (a parameter's multiple of an integral counts apart from it)",
+            None => "",
+        };
+        // By degree in the momenta, unless the space has Poisson variables and no momenta;
+        // and in the Poisson variables when it has them.
+        let poisson = !r.variables.poisson.is_empty();
+        let by_momenta = !poisson || !r.variables.momenta.is_empty();
+        let counts = r.counts();
+        let poisson_counts = r.poisson_counts();
+        let angles = vars.angles().next().is_some();
+        let mut by_degree = String::new();
+        let mut exactly = Vec::new();
+        if by_momenta {
+            by_degree += &dimensions_text("in the momenta", &dims);
+            exactly.extend(degree_counts(&counts, angles, |j| {
+                format!("Momenta degree exactly {j}")
+            }));
+        }
+        if poisson {
+            by_degree += &dimensions_text("in the Poisson variables", &poisson_dims);
+            exactly.extend(degree_counts(&poisson_counts, angles, |j| {
+                format!("Degree exactly {j} in the Poisson variables")
+            }));
+        }
+        entries.push(Entry::Text(format!(
+            "Dimension of the space of integrals{over}: {}.{by_degree}",
+            r.basis.len(),
+        )));
+        entries.extend(exactly.into_iter().map(Entry::Text));
+        let name_of = |v: &Var| vars.variable(*v).name().to_string();
+        let names_of = |vs: &[Var]| vs.iter().map(name_of).collect::<Vec<_>>();
+        entries.push(Entry::Data(Facts::Search(Box::new(SearchFacts {
+            space: r.space,
+            coordinates: names_of(&r.variables.coordinates),
+            momenta: names_of(&r.variables.momenta),
+            poisson: names_of(&r.variables.poisson),
+            angles: names_of(&r.variables.angles),
+            left_out: names_of(&r.variables.left_out),
+            parameters: parameter_facts(
+                vars,
+                &r.parameters,
+                r.module
+                    .as_ref()
+                    .map(|m| (&m.parameters[..], r.space.parameters_degree)),
+                &r.condition,
+            ),
+            unknowns: r.unknowns,
+            equations: r.equations,
+            blocks: r.components,
+            largest_block: r.largest_component,
+            dimension: r.basis.len(),
+            by_momenta_degree: dims,
+            counts,
+            by_poisson_degree: poisson_dims,
+            poisson_counts,
+            for_every_value,
+            shown: self.shown.iter().map(|&i| self.label(i)).collect(),
+            new_only: r.new.clone(),
+        }))));
+        Ok(Section {
+            number: 1,
+            title: "Search".into(),
+            file: None,
+            entries,
+        })
+    }
+
+    /// Section 2: the basis (or the new part; with symbolic parameters, its generators) as
+    /// written, their complex forms, and a proof of each, with one for the rest.
+    fn basis_section(&self, r: &SearchResult) -> Result<Section, EngineError> {
+        let mut entries = Vec::new();
+        if let (Some(m), Some(names)) = (&r.module, &self.symbolic) {
+            let shown_text = if r.new.is_some() {
+                "Below, parameter multiples of integrals count as generated."
+            } else {
+                "Shown: the generators."
+            };
+            entries.push(Entry::Text(format!(
+                "Over the polynomials in `{names}`, {} of the {} {} all of them: each of the \
+                 others is a sum of parameter multiples of integrals. {shown_text}",
+                m.generators.len(),
+                counted(r.basis.len(), "basis integral"),
+                agreeing(m.generators.len(), "generates", "generate"),
+            )));
+        }
+        if let Some(n) = &r.new {
+            entries.push(Entry::Text(new_integrals_text(r, n)));
+        }
+        // With denominators, each integral written as a physicist writes it: its terms
+        // collected by momenta and parameters over common denominators, reduced (the linear
+        // algebra's monomials are not independent, and its combination of them can be long).
+        // The same element.
+        // With radicals only, each integral as the search chose its monomials (results.md
+        // §13: no `r²` where a polynomial is, so the monomials show), unless it has fewer
+        // terms with the least powers of its radicals (`2β/(xr) − 2βr/(xy²)` is
+        // `−2βx/(y²r)`).
+        let written = written_forms(r, &self.shown)?;
+        if self.shown.is_empty() {
+            entries.push(Entry::Text(
+                "None: the known integrals generate every integral in the space.".into(),
+            ));
+        } else {
+            entries.push(Entry::Equations(Equations {
+                caption: match (&r.new, &self.symbolic) {
+                    (Some(_), _) => "New integrals".into(),
+                    (None, Some(names)) => format!("Generators over the polynomials in {names}"),
+                    (None, None) => "A basis of the integrals".into(),
+                },
+                lines: self
+                    .shown
+                    .iter()
+                    .zip(&written)
+                    .map(|(&i, w)| Equation::new(&self.label(i), w.clone()))
+                    .collect(),
+            }));
+        }
+        entries.extend(self.complex_forms(r));
+        for (&i, w) in self.shown.iter().zip(&written) {
+            let f = &r.basis[i];
+            let label = self.label(i);
+            let c = ClaimResult::derived(
+                &label,
+                &format!("{{{label}, H}} = 0"),
+                f.proved_fixed,
+                proof_note(f, self.held.fixed(), self.symbolic.as_deref()),
+            )
+            .at(self
+                .held
+                .at(f.symbolic.is_none() && !r.parameters.is_empty()))
+            .written(&format!("{{{}, H}} = 0", w.render(Style::Ascii)));
+            entries.push(Entry::Claim(c));
+        }
+        entries.extend(self.rest_proved(r));
+        Ok(Section {
+            number: 2,
+            title: if r.new.is_some() {
+                "New integrals".into()
+            } else {
+                "Basis".into()
+            },
+            file: None,
+            entries,
+        })
+    }
+
+    /// The shown integrals of trigonometric order `k > 0` as `I = Re(A e^{−ikθ})`, when the
+    /// system has one angle and some has such a form.
+    fn complex_forms(&self, r: &SearchResult) -> Option<Entry> {
+        let k = order_letter(&r.vars);
+        let lines: Vec<Equation> = self
+            .shown
+            .iter()
+            .filter_map(|&i| {
+                complex_form(r.basis[i].expr()).map(|(a, order)| {
+                    Equation::new(&format!("{}{} ({k} = {order})", self.complex, i + 1), a)
+                })
+            })
+            .collect();
+        let ([theta], false) = (r.variables.angles.as_slice(), lines.is_empty()) else {
+            return None;
+        };
+        let theta = r.vars.variable(*theta).unicode();
+        Some(Entry::Equations(Equations {
+            caption: format!(
+                "Those of trigonometric order {k} > 0 as {} = Re({} e^{{−i{k}{theta}}})",
+                self.letter, self.complex
+            ),
+            lines,
+        }))
+    }
+
+    /// One claim for the basis integrals not shown: all proved.
+    fn rest_proved(&self, r: &SearchResult) -> Option<Entry> {
+        let rest: Vec<&Integral> = (0..r.basis.len())
+            .filter(|i| !self.shown.contains(i))
+            .map(|i| &r.basis[i])
+            .collect();
+        if rest.is_empty() {
+            return None;
+        }
+        let proved = rest.iter().all(|f| f.proved_fixed);
+        let lifted = rest.iter().filter(|f| f.symbolic.is_some()).count();
+        let note = match &self.symbolic {
+            // Nothing fixed: every proof was symbolic.
+            _ if r.parameters.is_empty() => None,
+            // Every one lifted back to the fixed parameters too: proved for every value.
+            Some(_) if lifted == rest.len() => None,
+            Some(names) => Some(proved_for_every(names, self.held.fixed())),
+            None => Some(format!("{lifted} of them lifted and proved symbolically")),
+        };
+        let mut c = ClaimResult::derived(
+            "basis",
+            &format!(
+                "{{{}, H}} = 0 for the other {}",
+                self.letter,
+                counted(rest.len(), "basis element")
+            ),
+            proved,
+            note,
+        );
+        c.condition = r.condition.clone();
+        Some(Entry::Claim(c))
+    }
 }
 
 /// What the report says of the parameters the linear algebra fixed (none: nothing): their
