@@ -73,15 +73,11 @@ pub fn closure_report(
     let start = Instant::now();
     let c = closure_of(system, generators, options)?;
     let cond = c.condition.clone();
-    let held = HeldAt::new(options.condition.as_ref(), system.vars(), &c.parameters);
-    let fixed = held.fixed();
-    // A result that could not be lifted back to the parameters holds at the fixed values only,
-    // and says so in its condition.
-    let unlifted = |symbolic: bool| !symbolic && !c.parameters.is_empty();
-    let note = |symbolic: bool| {
-        unlifted(symbolic).then(|| "not lifted back to the parameters (no symbolic lift)".into())
+    let holding = Holding {
+        held: HeldAt::new(options.condition.as_ref(), system.vars(), &c.parameters),
+        fixed: !c.parameters.is_empty(),
     };
-    let condition = |symbolic: bool| held.at(unlifted(symbolic));
+    let fixed = holding.held.fixed();
     let results: Vec<bool> = c
         .brackets
         .iter()
@@ -93,7 +89,7 @@ pub fn closure_report(
         })
         .chain(c.relations.iter().map(|r| r.symbolic))
         .collect();
-    let stuck = results.iter().filter(|&&s| unlifted(s)).count();
+    let stuck = results.iter().filter(|&&s| holding.unlifted(s)).count();
     let gens: Vec<String> = c.display.iter().map(|g| format!("`{g}`")).collect();
     let gens = gens.join(", ");
     let lift = match (c.parameters.is_empty(), stuck) {
@@ -117,20 +113,7 @@ pub fn closure_report(
         counted(c.monomials, "monomial"),
         c.rank,
     ))];
-    if !options.symbolic.is_empty() {
-        let names: Vec<&str> = options
-            .symbolic
-            .iter()
-            .map(|v| system.vars().variable(*v).unicode())
-            .collect();
-        entries.push(Entry::Text(format!(
-            "Parameters kept symbolic: `{}`. The coefficients are polynomials of degree `≤ {}` \
-             in them, found from the symbolic expansions, so what is found holds for every \
-             value of them.",
-            names.join(", "),
-            options.parameters_degree
-        )));
-    }
+    entries.extend(symbolic_text(system, options));
     let when = cond
         .clone()
         .map(|c| format!(" at `{c}`"))
@@ -154,33 +137,9 @@ pub fn closure_report(
     } else {
         entries.extend(outside_entries(system, generators, options, &c, &when)?);
     }
-    let r = c.names.len();
-    let mut shown = 0;
-    for a in 0..r {
-        for b in a + 1..r {
-            if let Bracket::Polynomial { poly, symbolic } = &c.brackets[a][b] {
-                if poly.is_zero() {
-                    continue;
-                }
-                shown += 1;
-                let mut claim = ClaimResult::derived(
-                    &format!("B{shown}"),
-                    &format!(
-                        "{{{}, {}}} = {}",
-                        c.display[a],
-                        c.display[b],
-                        poly.render(Style::Unicode)
-                    ),
-                    true,
-                    note(*symbolic),
-                );
-                claim = claim.at(condition(*symbolic));
-                let ascii = poly.render(Style::Ascii);
-                let claim = claim.written(&format!("{{{}, {}}} = {ascii}", c.names[a], c.names[b]));
-                entries.push(Entry::Claim(claim));
-            }
-        }
-    }
+    let brackets = bracket_claims(&c, &holding);
+    let shown = brackets.len();
+    entries.extend(brackets);
     let symbolic = &options.symbolic[..];
     entries.push(Entry::Data(Facts::Closure(ClosureFacts {
         generators: c.names.clone(),
@@ -201,37 +160,15 @@ pub fn closure_report(
         brackets: (1..=shown).map(|k| format!("B{k}")).collect(),
         relations: (1..=c.relations.len()).map(|k| format!("R{k}")).collect(),
     })));
-    let mut sections = vec![Section {
-        number: 1,
-        title: "Structure".into(),
-        file: None,
-        entries,
-    }];
-    let mut entries = vec![Entry::Text(format!(
-        "The polynomial relations among the generators up to degree {}, each minimal (not a \
-         combination of multiples of lower ones), each checked by expanding it.",
-        c.degree
-    ))];
-    if c.relations.is_empty() {
-        entries.push(Entry::Text("None.".into()));
-    }
-    for (k, rel) in c.relations.iter().enumerate() {
-        let mut claim = ClaimResult::derived(
-            &format!("R{}", k + 1),
-            &relation_text(&rel.poly),
-            true,
-            note(rel.symbolic),
-        );
-        claim = claim.at(condition(rel.symbolic));
-        let claim = claim.written(&format!("{} = 0", rel.poly.render(Style::Ascii)));
-        entries.push(Entry::Claim(claim));
-    }
-    sections.push(Section {
-        number: 2,
-        title: "Relations".into(),
-        file: None,
-        entries,
-    });
+    let sections = vec![
+        Section {
+            number: 1,
+            title: "Structure".into(),
+            file: None,
+            entries,
+        },
+        relations_section(&c, &holding),
+    ];
     Ok((
         Report {
             title: format!("Closure of {gens} for {}{when}", name),
@@ -242,6 +179,113 @@ pub fn closure_report(
         },
         c,
     ))
+}
+
+/// Where a result of the closure holds: on the condition, and at the fixed parameters' values
+/// too when it could not be lifted back to the parameters.
+struct Holding {
+    /// The condition and the fixed parameters' values.
+    held: HeldAt,
+    /// Whether some parameter was fixed for the linear algebra.
+    fixed: bool,
+}
+
+impl Holding {
+    /// Whether a result proved symbolically or not holds at the fixed values only.
+    fn unlifted(&self, symbolic: bool) -> bool {
+        !symbolic && self.fixed
+    }
+
+    /// The claim of a result the closure found and proved (`B1`, `R2`): where it holds, and a
+    /// note when that is at the fixed values only.
+    fn claim(&self, id: &str, statement: &str, ascii: &str, symbolic: bool) -> ClaimResult {
+        let unlifted = self.unlifted(symbolic);
+        let note =
+            unlifted.then(|| "not lifted back to the parameters (no symbolic lift)".to_string());
+        ClaimResult::derived(id, statement, true, note)
+            .at(self.held.at(unlifted))
+            .written(ascii)
+    }
+}
+
+/// What keeping parameters symbolic means for the closure, when some are.
+fn symbolic_text(system: &System, options: &ClosureOptions) -> Option<Entry> {
+    if options.symbolic.is_empty() {
+        return None;
+    }
+    let names: Vec<&str> = options
+        .symbolic
+        .iter()
+        .map(|v| system.vars().variable(*v).unicode())
+        .collect();
+    Some(Entry::Text(format!(
+        "Parameters kept symbolic: `{}`. The coefficients are polynomials of degree `≤ {}` \
+         in them, found from the symbolic expansions, so what is found holds for every value \
+         of them.",
+        names.join(", "),
+        options.parameters_degree
+    )))
+}
+
+/// A claim `B1, B2, …` for each nonzero bracket of the table that is a polynomial in the
+/// generators.
+fn bracket_claims(c: &Closure, holding: &Holding) -> Vec<Entry> {
+    let r = c.names.len();
+    let mut claims = Vec::new();
+    for a in 0..r {
+        for b in a + 1..r {
+            let Bracket::Polynomial { poly, symbolic } = &c.brackets[a][b] else {
+                continue;
+            };
+            if poly.is_zero() {
+                continue;
+            }
+            let statement = format!(
+                "{{{}, {}}} = {}",
+                c.display[a],
+                c.display[b],
+                poly.render(Style::Unicode)
+            );
+            let ascii = format!(
+                "{{{}, {}}} = {}",
+                c.names[a],
+                c.names[b],
+                poly.render(Style::Ascii)
+            );
+            let id = format!("B{}", claims.len() + 1);
+            claims.push(Entry::Claim(
+                holding.claim(&id, &statement, &ascii, *symbolic),
+            ));
+        }
+    }
+    claims
+}
+
+/// Section 2: the minimal relations among the generators, each a claim `R1, R2, …`.
+fn relations_section(c: &Closure, holding: &Holding) -> Section {
+    let mut entries = vec![Entry::Text(format!(
+        "The polynomial relations among the generators up to degree {}, each minimal (not a \
+         combination of multiples of lower ones), each checked by expanding it.",
+        c.degree
+    ))];
+    if c.relations.is_empty() {
+        entries.push(Entry::Text("None.".into()));
+    }
+    for (k, rel) in c.relations.iter().enumerate() {
+        let ascii = format!("{} = 0", rel.poly.render(Style::Ascii));
+        entries.push(Entry::Claim(holding.claim(
+            &format!("R{}", k + 1),
+            &relation_text(&rel.poly),
+            &ascii,
+            rel.symbolic,
+        )));
+    }
+    Section {
+        number: 2,
+        title: "Relations".into(),
+        file: None,
+        entries,
+    }
 }
 
 /// The brackets outside the generators' polynomials of the closure's degree, each written
