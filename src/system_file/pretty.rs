@@ -116,210 +116,225 @@ impl LoadedSystem {
     fn print(&self, tree: &Tree, spaced: bool) -> Printed {
         match &tree.kind {
             ExprKind::Integer(n) => Printed::atom(n.to_string()),
+            ExprKind::Name(n) => self.print_name(n),
+            ExprKind::Neg(a) => self.print_neg(a, spaced),
+            ExprKind::Add(a, b) => self.print_sum(a, "+", b, spaced),
+            ExprKind::Sub(a, b) => self.print_sum(a, "−", b, spaced),
+            ExprKind::Mul(a, b) => self.print_product(a, b, spaced),
+            ExprKind::Div(a, b) => self.print_quotient(a, b, spaced),
+            ExprKind::Pow(a, b) => self.print_power(a, b, spaced),
+            ExprKind::Call(f, _, args) => self.print_call(f, args, spaced),
+            ExprKind::Bracket(a, b) => self.print_bracket(a, b, spaced),
+        }
+    }
+
+    /// A name: a function's is a word in a product.
+    fn print_name(&self, n: &str) -> Printed {
+        let mut p = Printed::atom(self.display_name(n));
+        // A function (`L`, `H`, `K_{1,1}`) is a word in a product, `−ω² L`, as the
+        // paper sets its generators apart; variables run together, `Mω²x`, and so
+        // does a function named by one Greek letter, a frequency `Ω` as `ω` is.
+        let greek_letter = {
+            let mut chars = p.text.chars();
+            chars.next().is_some_and(|c| !c.is_ascii()) && chars.next().is_none()
+        };
+        let function = self.system.get(n).is_ok()
+            || instance_of(&self.families, n).is_some()
+            || self.families.iter().any(|f| f.name == *n);
+        if function && !greek_letter {
+            p.first_long = true;
+            p.last_long = true;
+        }
+        p
+    }
+
+    /// `−a`.
+    fn print_neg(&self, a: &Tree, spaced: bool) -> Printed {
+        let a = self.print(a, spaced).wrapped(QUOTIENT);
+        // `−1/x` is a quotient: as a left factor it takes parentheses like `1/x`.
+        let prec = if a.prec == QUOTIENT { QUOTIENT } else { NEG };
+        Printed {
+            text: format!("−{}", a.text),
+            prec,
+            first_long: false,
+            last_long: a.last_long,
+        }
+    }
+
+    /// `a + b` or `a − b`.
+    fn print_sum(&self, a: &Tree, op: &str, b: &Tree, spaced: bool) -> Printed {
+        let a = self.print(a, spaced);
+        let b = self.print(b, spaced).wrapped(QUOTIENT);
+        let b = if b.prec == NEG { b.wrapped(ATOM) } else { b };
+        Printed {
+            text: format!("{} {op} {}", a.text, b.text),
+            prec: SUM,
+            first_long: a.first_long,
+            last_long: b.last_long,
+        }
+    }
+
+    /// `a b`: run together, spaced, or with a dot between numbers.
+    fn print_product(&self, a: &Tree, b: &Tree, spaced: bool) -> Printed {
+        let a = self.print(a, spaced).wrapped(PRODUCT);
+        let b = self.print(b, spaced);
+        // A right factor that begins with a minus sign (`−x y`, a product whose first
+        // factor is negated) takes parentheses: `2(−xy)`, not `2−xy`.
+        let b = if b.prec < PRODUCT || b.prec == NEG || b.text.starts_with('−') {
+            b.wrapped(ATOM)
+        } else {
+            b
+        };
+        let number_left = a.text.ends_with(|c: char| c.is_ascii_digit());
+        let digit_right = b.text.starts_with(|c: char| c.is_ascii_digit());
+        // Letters before parentheses that spell a function, `i·m·(x)`, would read as
+        // its call `im(x)`: the left factor takes parentheses, `(im)(x)`.
+        let run = a.text.len()
+            - a.text
+                .trim_end_matches(|c: char| c.is_alphanumeric() || c == '_')
+                .len();
+        let call = b.text.starts_with('(')
+            && trigpoly::FUNCTIONS
+                .iter()
+                .chain(&["Re", "Im"])
+                .any(|f| a.text[a.text.len() - run..] == **f);
+        let a = if call { a.wrapped(ATOM) } else { a };
+        let sep = if digit_right {
+            "·"
+        } else if number_left && !a.text.contains(|c: char| c.is_alphabetic()) && !b.first_long {
+            ""
+        } else if spaced || a.last_long || b.first_long {
+            " "
+        } else {
+            ""
+        };
+        Printed {
+            text: format!("{}{sep}{}", a.text, b.text),
+            prec: PRODUCT,
+            first_long: a.first_long,
+            last_long: b.last_long,
+        }
+    }
+
+    /// `a/b`.
+    fn print_quotient(&self, a: &Tree, b: &Tree, spaced: bool) -> Printed {
+        let a = self.print(a, spaced).wrapped(QUOTIENT);
+        let b = self.print(b, spaced).wrapped(POWER);
+        Printed {
+            text: format!("{}/{}", a.text, b.text),
+            prec: QUOTIENT,
+            first_long: a.first_long,
+            last_long: false,
+        }
+    }
+
+    /// `a^b`: a superscript exponent where it is an integer, `cos²θ` on a function of an angle.
+    fn print_power(&self, a: &Tree, b: &Tree, spaced: bool) -> Printed {
+        // Names run together are a product, which a power in parentheses takes whole
+        // (`(xy)²`) and one without takes at its last name (`xy²` is x·y²): the tree
+        // keeps the parentheses in the name's span.
+        let run_together = match &a.kind {
             ExprKind::Name(n) => {
-                let mut p = Printed::atom(self.display_name(n));
-                // A function (`L`, `H`, `K_{1,1}`) is a word in a product, `−ω² L`, as the
-                // paper sets its generators apart; variables run together, `Mω²x`, and so
-                // does a function named by one Greek letter, a frequency `Ω` as `ω` is.
-                let greek_letter = {
-                    let mut chars = p.text.chars();
-                    chars.next().is_some_and(|c| !c.is_ascii()) && chars.next().is_none()
-                };
-                let function = self.system.get(n).is_ok()
-                    || instance_of(&self.families, n).is_some()
-                    || self.families.iter().any(|f| f.name == *n);
-                if function && !greek_letter {
-                    p.first_long = true;
-                    p.last_long = true;
-                }
-                p
+                a.in_parentheses() && n.chars().count() > 1 && !self.is_declared_name(n)
             }
-            ExprKind::Neg(a) => {
-                let a = self.print(a, spaced).wrapped(QUOTIENT);
-                // `−1/x` is a quotient: as a left factor it takes parentheses like `1/x`.
-                let prec = if a.prec == QUOTIENT { QUOTIENT } else { NEG };
-                Printed {
-                    text: format!("−{}", a.text),
-                    prec,
-                    first_long: false,
-                    last_long: a.last_long,
-                }
-            }
-            ExprKind::Add(a, b) | ExprKind::Sub(a, b) => {
-                let op = if matches!(tree.kind, ExprKind::Add(..)) {
-                    "+"
-                } else {
-                    "−"
-                };
-                let a = self.print(a, spaced);
-                let b = self.print(b, spaced).wrapped(QUOTIENT);
-                let b = if b.prec == NEG { b.wrapped(ATOM) } else { b };
-                Printed {
-                    text: format!("{} {op} {}", a.text, b.text),
-                    prec: SUM,
-                    first_long: a.first_long,
-                    last_long: b.last_long,
-                }
-            }
-            ExprKind::Mul(a, b) => {
-                let a = self.print(a, spaced).wrapped(PRODUCT);
-                let b = self.print(b, spaced);
-                // A right factor that begins with a minus sign (`−x y`, a product whose first
-                // factor is negated) takes parentheses: `2(−xy)`, not `2−xy`.
-                let b = if b.prec < PRODUCT || b.prec == NEG || b.text.starts_with('−') {
-                    b.wrapped(ATOM)
-                } else {
-                    b
-                };
-                let number_left = a.text.ends_with(|c: char| c.is_ascii_digit());
-                let digit_right = b.text.starts_with(|c: char| c.is_ascii_digit());
-                // Letters before parentheses that spell a function, `i·m·(x)`, would read as
-                // its call `im(x)`: the left factor takes parentheses, `(im)(x)`.
-                let run = a.text.len()
-                    - a.text
-                        .trim_end_matches(|c: char| c.is_alphanumeric() || c == '_')
-                        .len();
-                let call = b.text.starts_with('(')
-                    && trigpoly::FUNCTIONS
-                        .iter()
-                        .chain(&["Re", "Im"])
-                        .any(|f| a.text[a.text.len() - run..] == **f);
-                let a = if call { a.wrapped(ATOM) } else { a };
-                let sep = if digit_right {
-                    "·"
-                } else if number_left
-                    && !a.text.contains(|c: char| c.is_alphabetic())
-                    && !b.first_long
-                {
-                    ""
-                } else if spaced || a.last_long || b.first_long {
-                    " "
-                } else {
-                    ""
-                };
-                Printed {
-                    text: format!("{}{sep}{}", a.text, b.text),
-                    prec: PRODUCT,
-                    first_long: a.first_long,
-                    last_long: b.last_long,
-                }
-            }
-            ExprKind::Div(a, b) => {
-                let a = self.print(a, spaced).wrapped(QUOTIENT);
-                let b = self.print(b, spaced).wrapped(POWER);
-                Printed {
-                    text: format!("{}/{}", a.text, b.text),
-                    prec: QUOTIENT,
-                    first_long: a.first_long,
-                    last_long: false,
-                }
-            }
-            ExprKind::Pow(a, b) => {
-                // Names run together are a product, which a power in parentheses takes whole
-                // (`(xy)²`) and one without takes at its last name (`xy²` is x·y²): the tree
-                // keeps the parentheses in the name's span.
-                let run_together = match &a.kind {
-                    ExprKind::Name(n) => {
-                        a.in_parentheses() && n.chars().count() > 1 && !self.is_declared_name(n)
-                    }
-                    _ => false,
-                };
-                // A name before parentheses with a power after them, `M(x + y)²`, is read with
-                // the power on the parentheses: printed as it was written, it reads back so.
-                let power_on_parentheses = match &a.kind {
-                    ExprKind::Call(f, _, args) => {
-                        !a.in_parentheses()
-                            && args.len() == 1
-                            && !trigpoly::FUNCTIONS.contains(&f.as_str())
-                    }
-                    _ => false,
-                };
-                let base = self.print(a, spaced);
-                let base = if run_together {
-                    base.wrapped(ATOM + 1)
-                } else if power_on_parentheses {
-                    base
-                } else {
-                    base.wrapped(ATOM)
-                };
-                let small = |n: &num_bigint::BigInt| i64::try_from(n.clone()).ok();
-                let exponent = match &b.kind {
-                    ExprKind::Integer(n) => small(n).map(superscript),
-                    ExprKind::Neg(inner) => match &inner.kind {
-                        ExprKind::Integer(n) => small(n).map(|k| superscript(-k)),
-                        _ => None,
-                    },
-                    _ => None,
-                };
-                // `cos²θ`: the exponent on the function of a bare angle, as the paper writes it.
-                let trig_of_angle = match &a.kind {
-                    ExprKind::Call(f, _, args) if f == "cos" || f == "sin" => match &args[..] {
-                        [arg] if matches!(arg.kind, ExprKind::Name(_)) => base.text.split_once(' '),
-                        _ => None,
-                    },
-                    _ => None,
-                };
-                // Any other power of it takes the angle in parentheses: `cos θ⁻¹` and
-                // `cos θ^(3²)` would read as ambiguous.
-                let base_text = match trig_of_angle {
-                    Some((f, angle)) => format!("{f}({angle})"),
-                    None => base.text.clone(),
-                };
-                let text = match (exponent, trig_of_angle) {
-                    (Some(e), Some((f, angle))) if !e.starts_with('⁻') => {
-                        format!("{f}{e}{angle}")
-                    }
-                    (Some(e), _) => format!("{base_text}{e}"),
-                    (None, _) => {
-                        format!("{base_text}^{}", self.print(b, spaced).wrapped(ATOM).text)
-                    }
-                };
-                Printed {
-                    text,
-                    prec: POWER,
-                    first_long: base.first_long,
-                    last_long: base.last_long,
-                }
-            }
+            _ => false,
+        };
+        // A name before parentheses with a power after them, `M(x + y)²`, is read with
+        // the power on the parentheses: printed as it was written, it reads back so.
+        let power_on_parentheses = match &a.kind {
             ExprKind::Call(f, _, args) => {
-                // `cos θ` of a bare angle, as the paper (and the normal form) writes it.
-                if let ([arg], "cos" | "sin") = (&args[..], f.as_str()) {
-                    if let ExprKind::Name(angle) = &arg.kind {
-                        let mut p = Printed::atom(format!("{f} {}", self.display_name(angle)));
-                        p.first_long = true;
-                        p.last_long = true;
-                        return p;
-                    }
-                }
-                let args: Vec<String> = args.iter().map(|a| self.print(a, spaced).text).collect();
-                // The paper's (and LaTeX's) real and imaginary parts are `Re` and `Im` (`re`
-                // and `im` where the system declares `Re` or `Im` itself); any other name
-                // before parentheses multiplies them (`K_{1,1}(x)`).
-                let (name, function) = match f.as_str() {
-                    "re" if !self.is_declared_name("Re") => ("Re".to_string(), true),
-                    "im" if !self.is_declared_name("Im") => ("Im".to_string(), true),
-                    other if trigpoly::FUNCTIONS.contains(&other) => (f.clone(), true),
-                    other => (self.display_name(other), false),
-                };
-                let mut p = Printed::atom(format!("{name}({})", args.join(", ")));
-                p.first_long = true;
-                p.last_long = true;
-                if !function {
-                    // A product: a power after it takes parentheses, `(p_x(x + y))²`.
-                    p.prec = PRODUCT;
-                }
-                p
+                !a.in_parentheses() && args.len() == 1 && !trigpoly::FUNCTIONS.contains(&f.as_str())
             }
-            ExprKind::Bracket(a, b) => {
-                let mut p = Printed::atom(format!(
-                    "{{{}, {}}}",
-                    self.print(a, spaced).text,
-                    self.print(b, spaced).text
-                ));
+            _ => false,
+        };
+        let base = self.print(a, spaced);
+        let base = if run_together {
+            base.wrapped(ATOM + 1)
+        } else if power_on_parentheses {
+            base
+        } else {
+            base.wrapped(ATOM)
+        };
+        let small = |n: &num_bigint::BigInt| i64::try_from(n.clone()).ok();
+        let exponent = match &b.kind {
+            ExprKind::Integer(n) => small(n).map(superscript),
+            ExprKind::Neg(inner) => match &inner.kind {
+                ExprKind::Integer(n) => small(n).map(|k| superscript(-k)),
+                _ => None,
+            },
+            _ => None,
+        };
+        // `cos²θ`: the exponent on the function of a bare angle, as the paper writes it.
+        let trig_of_angle = match &a.kind {
+            ExprKind::Call(f, _, args) if f == "cos" || f == "sin" => match &args[..] {
+                [arg] if matches!(arg.kind, ExprKind::Name(_)) => base.text.split_once(' '),
+                _ => None,
+            },
+            _ => None,
+        };
+        // Any other power of it takes the angle in parentheses: `cos θ⁻¹` and
+        // `cos θ^(3²)` would read as ambiguous.
+        let base_text = match trig_of_angle {
+            Some((f, angle)) => format!("{f}({angle})"),
+            None => base.text.clone(),
+        };
+        let text = match (exponent, trig_of_angle) {
+            (Some(e), Some((f, angle))) if !e.starts_with('⁻') => {
+                format!("{f}{e}{angle}")
+            }
+            (Some(e), _) => format!("{base_text}{e}"),
+            (None, _) => {
+                format!("{base_text}^{}", self.print(b, spaced).wrapped(ATOM).text)
+            }
+        };
+        Printed {
+            text,
+            prec: POWER,
+            first_long: base.first_long,
+            last_long: base.last_long,
+        }
+    }
+
+    /// `f(args)`: `cos θ` of a bare angle, `Re` and `Im`, or a name that multiplies its parentheses.
+    fn print_call(&self, f: &str, args: &[Tree], spaced: bool) -> Printed {
+        // `cos θ` of a bare angle, as the paper (and the normal form) writes it.
+        if let ([arg], "cos" | "sin") = (args, f) {
+            if let ExprKind::Name(angle) = &arg.kind {
+                let mut p = Printed::atom(format!("{f} {}", self.display_name(angle)));
                 p.first_long = true;
                 p.last_long = true;
-                p
+                return p;
             }
         }
+        let args: Vec<String> = args.iter().map(|a| self.print(a, spaced).text).collect();
+        // The paper's (and LaTeX's) real and imaginary parts are `Re` and `Im` (`re`
+        // and `im` where the system declares `Re` or `Im` itself); any other name
+        // before parentheses multiplies them (`K_{1,1}(x)`).
+        let (name, function) = match f {
+            "re" if !self.is_declared_name("Re") => ("Re".to_string(), true),
+            "im" if !self.is_declared_name("Im") => ("Im".to_string(), true),
+            other if trigpoly::FUNCTIONS.contains(&other) => (f.to_string(), true),
+            other => (self.display_name(other), false),
+        };
+        let mut p = Printed::atom(format!("{name}({})", args.join(", ")));
+        p.first_long = true;
+        p.last_long = true;
+        if !function {
+            // A product: a power after it takes parentheses, `(p_x(x + y))²`.
+            p.prec = PRODUCT;
+        }
+        p
+    }
+
+    /// `{a, b}`.
+    fn print_bracket(&self, a: &Tree, b: &Tree, spaced: bool) -> Printed {
+        let mut p = Printed::atom(format!(
+            "{{{}, {}}}",
+            self.print(a, spaced).text,
+            self.print(b, spaced).text
+        ));
+        p.first_long = true;
+        p.last_long = true;
+        p
     }
 }
