@@ -360,70 +360,8 @@ pub fn family_tower_report_with_progress(
         .and_then(|()| file.system.space().refuse_radicals("a family's tower"))
         .map_err(|e| file.computation_error(&e))?;
     let start = Instant::now();
-    // Parameters only: substituting them commutes with the bracket, so the lemma holds at
-    // their values as it does everywhere.
-    if let Some((v, kind)) = when.and_then(|c| c.phase_variable()) {
-        let option = match file.caller {
-            Caller::CommandLine => "--when: ",
-            Caller::Program => "",
-        };
-        return Err(FileError::new(
-            ErrorKind::Condition,
-            &file.given("<condition>", "").origin,
-            format!(
-                "{option}a tower's condition may set parameters only, to numbers or other \
-                 parameters, and it holds {v}, {kind}: the tower's brackets are identities on \
-                 the whole phase space"
-            ),
-        ));
-    }
-    let names: Vec<&str> = file.families.iter().map(|f| f.name.as_str()).collect();
-    let k = match family {
-        Some(name) => file.family(name).ok_or_else(|| {
-            FileError::new(
-                ErrorKind::Family,
-                &file.source.origin,
-                format!(
-                    "no family named '{name}' (the {} {})",
-                    match file.source.program {
-                        true => "system has",
-                        false => "file declares",
-                    },
-                    if names.is_empty() {
-                        "none".to_string()
-                    } else {
-                        names.join(", ")
-                    }
-                ),
-            )
-        })?,
-        None => file
-            .families
-            .iter()
-            .position(|f| f.eigenvalue.is_some())
-            .ok_or_else(|| match file.source.program {
-                true => FileError::new(
-                    ErrorKind::Family,
-                    &file.source.origin,
-                    "the system has no family with an eigenvalue, so there is no tower to check",
-                )
-                .with_hint(
-                    "add one with LoadedSystem::add_family, such as add_family(\"K\", \"K\", \
-                     [\"m\", \"n\"], \"Z^m*exp(-i*n*theta)\", \
-                     Some(\"i*(m*omega - n*p_theta/I)\"))",
-                ),
-                false => FileError::new(
-                    ErrorKind::Family,
-                    &file.source.origin,
-                    "the file declares no [[family]] with an eigenvalue, so there is no tower to \
-                     check",
-                )
-                .with_hint(
-                    "declare one, such as name = \"K\", value = \"Z^m*exp(-i*n*theta)\", \
-                     eigenvalue = \"i*(m*omega - n*p_theta/I)\" (see docs/system-files.md)",
-                ),
-            })?,
-    };
+    refuse_phase_condition(file, when)?;
+    let k = tower_family(file, family)?;
     let f = &file.families[k];
     // Fails with a located message when the family has no eigenvalue.
     file.eigenvalue_at(k, 1, 1)?;
@@ -433,26 +371,8 @@ pub fn family_tower_report_with_progress(
     let eigen = file.pretty_factor(&eigen_tree);
     let [m, n] = &f.indices;
     let kmn = format!("{}_{{{m},{n}}}", f.display);
-    let at = |e: &brackets::EngineError| engine_error(&f.source, f.span.clone(), e);
     let tower_start = Instant::now();
-    let total = (max * max) as usize;
-    let mut failures = Vec::new();
-    let mut done = 0;
-    for a in 1..=max {
-        for b in 1..=max {
-            let value = file.compute_instance(k, a, b)?;
-            let lambda = file.eigenvalue_at(k, a, b)?;
-            let lhs = file.system.flow(&value).map_err(|e| at(&e))?;
-            let lhs = settled(when, lhs).map_err(|e| at(&e))?;
-            let rhs = lambda.checked_mul(&value).map_err(|e| at(&e.into()))?;
-            let rhs = settled(when, rhs).map_err(|e| at(&e))?;
-            if lhs != rhs {
-                failures.push((a, b));
-            }
-            done += 1;
-            progress(done, total);
-        }
-    }
+    let (failures, done) = tower_failures(file, k, max, when, progress)?;
     let note = (!failures.is_empty()).then(|| format!("fails for ({m}, {n}) in {failures:?}"));
     let tower_id = format!("{}-tower", f.name);
     let tower = TowerResult {
@@ -498,6 +418,112 @@ pub fn family_tower_report_with_progress(
         summary: SummaryKind::Check { files: 1 },
         seconds: start.elapsed().as_secs_f64(),
     })
+}
+
+/// Refuses a tower's condition that sets a variable of phase space: the tower's brackets are
+/// identities on the whole phase space, so a condition may set parameters only (substituting
+/// them commutes with the bracket, so the lemma holds at their values as it does everywhere).
+fn refuse_phase_condition(file: &LoadedSystem, when: Option<&Condition>) -> Result<(), FileError> {
+    if let Some((v, kind)) = when.and_then(|c| c.phase_variable()) {
+        let option = match file.caller {
+            Caller::CommandLine => "--when: ",
+            Caller::Program => "",
+        };
+        return Err(FileError::new(
+            ErrorKind::Condition,
+            &file.given("<condition>", "").origin,
+            format!(
+                "{option}a tower's condition may set parameters only, to numbers or other \
+                 parameters, and it holds {v}, {kind}: the tower's brackets are identities on \
+                 the whole phase space"
+            ),
+        ));
+    }
+    Ok(())
+}
+
+/// The index of the family whose tower is checked: the one named, or the first with an
+/// eigenvalue.
+fn tower_family(file: &LoadedSystem, family: Option<&str>) -> Result<usize, FileError> {
+    let names: Vec<&str> = file.families.iter().map(|f| f.name.as_str()).collect();
+    Ok(match family {
+        Some(name) => file.family(name).ok_or_else(|| {
+            FileError::new(
+                ErrorKind::Family,
+                &file.source.origin,
+                format!(
+                    "no family named '{name}' (the {} {})",
+                    match file.source.program {
+                        true => "system has",
+                        false => "file declares",
+                    },
+                    if names.is_empty() {
+                        "none".to_string()
+                    } else {
+                        names.join(", ")
+                    }
+                ),
+            )
+        })?,
+        None => file
+            .families
+            .iter()
+            .position(|f| f.eigenvalue.is_some())
+            .ok_or_else(|| match file.source.program {
+                true => FileError::new(
+                    ErrorKind::Family,
+                    &file.source.origin,
+                    "the system has no family with an eigenvalue, so there is no tower to check",
+                )
+                .with_hint(
+                    "add one with LoadedSystem::add_family, such as add_family(\"K\", \"K\", \
+                     [\"m\", \"n\"], \"Z^m*exp(-i*n*theta)\", \
+                     Some(\"i*(m*omega - n*p_theta/I)\"))",
+                ),
+                false => FileError::new(
+                    ErrorKind::Family,
+                    &file.source.origin,
+                    "the file declares no [[family]] with an eigenvalue, so there is no tower to \
+                     check",
+                )
+                .with_hint(
+                    "declare one, such as name = \"K\", value = \"Z^m*exp(-i*n*theta)\", \
+                     eigenvalue = \"i*(m*omega - n*p_theta/I)\" (see docs/system-files.md)",
+                ),
+            })?,
+    })
+}
+
+/// The pairs `(a, b)`, `1 ≤ a, b ≤ max`, for which `{K_{a,b}, H} = λ_{a,b} K_{a,b}` fails
+/// (after `when`), and how many were checked, each reported to `progress`.
+fn tower_failures(
+    file: &LoadedSystem,
+    k: usize,
+    max: i64,
+    when: Option<&Condition>,
+    progress: &mut dyn FnMut(usize, usize),
+) -> Result<(Vec<(i64, i64)>, usize), FileError> {
+    let f = &file.families[k];
+    let at = |e: &brackets::EngineError| engine_error(&f.source, f.span.clone(), e);
+    let total = (max * max) as usize;
+    let mut failures = Vec::new();
+    let mut done = 0;
+    for a in 1..=max {
+        for b in 1..=max {
+            let value = file.compute_instance(k, a, b)?;
+            let lambda = file.eigenvalue_at(k, a, b)?;
+            let lhs = file.system.flow(&value).map_err(|e| at(&e))?;
+            let lhs = settled(when, lhs).map_err(|e| at(&e))?;
+            let rhs = lambda.checked_mul(&value).map_err(|e| at(&e.into()))?;
+            let rhs = settled(when, rhs).map_err(|e| at(&e))?;
+            if lhs != rhs {
+                failures.push((a, b));
+            }
+            done += 1;
+            progress(done, total);
+        }
+    }
+    Ok((failures, done))
 }
 
 /// `e` under the condition, if any ([`Condition::apply_where_defined`]).
