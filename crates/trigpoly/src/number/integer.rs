@@ -147,10 +147,17 @@ impl Integer {
     /// Builds from an `i128`, staying small when it fits.
     #[inline]
     pub fn from_i128(v: i128) -> Integer {
+        Integer::from_i128_with(v, &mut Integer::wide)
+    }
+
+    /// [`Integer::from_i128`] with a value past the word made by `place` (which must hold it
+    /// as [`Integer::wide`] does: [`WideSlab::place_integer`] of a slab the caller holds).
+    #[inline(always)]
+    pub(crate) fn from_i128_with(v: i128, place: &mut impl FnMut(i128) -> Integer) -> Integer {
         if (Integer::SMALL_MIN as i128..=Integer::SMALL_MAX as i128).contains(&v) {
             Integer::small_unchecked(v as i64)
         } else {
-            Integer::wide(v)
+            place(v)
         }
     }
 
@@ -1074,6 +1081,35 @@ mod tests {
         unsafe { counts.release(values) };
         let none = SlotCounts::default();
         assert!(none.can_release());
+    }
+
+    /// A value placed straight in a slab its caller holds (`place_integer`, as a dense
+    /// product's builder places its sums) is the one `from_i128` makes while the slab fills:
+    /// in a slot, equal, hashed alike, and counted with the others when the counts are
+    /// taken; a small value never reaches the slab. Under Miri, a slot given out twice or a
+    /// count lost shows.
+    #[test]
+    fn a_value_placed_in_a_held_slab_is_one_made_while_it_fills() {
+        use std::hash::{BuildHasher, RandomState};
+        let v = (1i128 << 62) + 12_345;
+        let mut slab = WideSlab::new();
+        let filled = slab.filling(|| Integer::from_i128(-v));
+        let mut place = |x| slab.place_integer(x);
+        let placed = Integer::from_i128_with(v, &mut place);
+        let small = Integer::from_i128_with(5, &mut place);
+        let again = Integer::from_i128_with(-v, &mut place);
+        assert!(placed.in_slot() && filled.in_slot() && again.in_slot() && !small.in_slot());
+        assert_eq!(placed.view(), IntegerView::Wide(v));
+        assert_eq!(small, Integer::from(5));
+        assert_eq!(&placed + &filled, Integer::ZERO);
+        let hasher = RandomState::new();
+        assert_eq!(hasher.hash_one(&again), hasher.hash_one(&filled));
+        let values = vec![filled, placed, small, again];
+        // SAFETY: the slab was filled and placed in for `values` alone, on this thread.
+        let counts = unsafe { slab.into_counts() };
+        assert_eq!(counts.counted(), (1, 3));
+        // SAFETY: the counts are those of `values`, unchanged since.
+        unsafe { counts.release(values) };
     }
 
     /// The constants are the small values they name, and the negation of the word's least

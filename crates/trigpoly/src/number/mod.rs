@@ -108,6 +108,9 @@ pub trait IntegerRing:
     fn small_to_wide(a: &Self::Small) -> Self::Wide;
     /// The value of a wide accumulator.
     fn from_wide(w: Self::Wide) -> Self;
+    /// [`IntegerRing::from_wide`] with each component past a word made by `place`, which
+    /// must return it as [`Integer::from_i128`] would (in a slab's slot, say).
+    fn from_wide_with(w: Self::Wide, place: &mut impl FnMut(i128) -> Integer) -> Self;
     /// `acc += a · b` in 192-bit arithmetic; the caller guarantees no overflow.
     fn broad_add_mul(acc: &mut Self::Broad, a: &Self::Small, b: &Self::Small);
     /// The value in two machine words per component (`i128`).
@@ -204,6 +207,10 @@ impl IntegerRing for Integer {
     #[inline]
     fn from_wide(w: i128) -> Self {
         Integer::from_i128(w)
+    }
+    #[inline(always)]
+    fn from_wide_with(w: i128, place: &mut impl FnMut(i128) -> Integer) -> Self {
+        Integer::from_i128_with(w, place)
     }
     #[inline(always)]
     fn broad_add_mul(acc: &mut Wide192, a: &i64, b: &i64) {
@@ -370,6 +377,13 @@ impl IntegerRing for GaussianInteger {
     #[inline]
     fn from_wide(w: (i128, i128)) -> Self {
         GaussianInteger::new(Integer::from_i128(w.0), Integer::from_i128(w.1))
+    }
+    #[inline(always)]
+    fn from_wide_with(w: (i128, i128), place: &mut impl FnMut(i128) -> Integer) -> Self {
+        GaussianInteger::new(
+            Integer::from_i128_with(w.0, place),
+            Integer::from_i128_with(w.1, place),
+        )
     }
     #[inline(always)]
     fn broad_add_mul(acc: &mut [Wide192; 2], a: &(i64, i64), b: &(i64, i64)) {

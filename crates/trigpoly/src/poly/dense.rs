@@ -80,6 +80,15 @@ trait Cells<I: IntegerRing> {
     fn add_mul(cell: &mut Self::Cell, a: &Self::Factor, b: &Self::Factor);
     /// The sum in a cell.
     fn value(cell: Self::Cell) -> I;
+    /// The sums of `cells` appended to `coeffs` as coefficients, those past a word in the
+    /// slots of `slab` when there is one.
+    fn extend(coeffs: &mut Vec<I>, cells: &[(u64, Self::Cell)], slab: Option<&mut WideSlab>) {
+        let values = cells.iter().map(|&(_, w)| Self::value(w));
+        match slab {
+            Some(slab) => slab.filling(|| coeffs.extend(values)),
+            None => coeffs.extend(values),
+        }
+    }
 }
 
 /// Coefficients of a word per component, sums in `i128` ([`IntegerRing::Wide`]).
@@ -96,6 +105,17 @@ impl<I: IntegerRing> Cells<I> for Narrow {
     #[inline(always)]
     fn value(cell: I::Wide) -> I {
         I::from_wide(cell)
+    }
+    /// Each value past a word placed straight in the slab this builder holds, with no
+    /// thread-local lookup or call per value (step 146).
+    fn extend(coeffs: &mut Vec<I>, cells: &[(u64, I::Wide)], slab: Option<&mut WideSlab>) {
+        match slab {
+            Some(slab) => {
+                let mut place = |v| slab.place_integer(v);
+                coeffs.extend(cells.iter().map(|&(_, w)| I::from_wide_with(w, &mut place)));
+            }
+            None => coeffs.extend(cells.iter().map(|&(_, w)| I::from_wide(w))),
+        }
     }
 }
 
@@ -859,11 +879,7 @@ impl<'d, I: IntegerRing, W: Cells<I>> Builder<'d, I, W> {
                     decoder.decode_onto(cursor, k, &mut self.exps);
                 }
             }
-            let (coeffs, values) = (&mut self.coeffs, now.iter().map(|&(_, w)| W::value(w)));
-            match &mut self.slab {
-                Some(slab) => slab.filling(|| coeffs.extend(values)),
-                None => coeffs.extend(values),
-            }
+            W::extend(&mut self.coeffs, now, self.slab.as_mut());
             terms = later;
         }
     }

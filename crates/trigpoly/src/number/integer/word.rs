@@ -281,6 +281,19 @@ impl WideSlab {
         f()
     }
 
+    /// `v`, which must lie outside the word's range, in the next slot: what
+    /// [`Integer::wide`] does while this slab [fills](WideSlab::filling), for a caller that
+    /// holds the slab, with no thread-local lookup and no call.
+    #[inline(always)]
+    pub fn place_integer(&mut self, v: i128) -> Integer {
+        debug_assert!(i64::try_from(v)
+            .map_or(true, |s| !(Integer::SMALL_MIN..=Integer::SMALL_MAX)
+                .contains(&s)));
+        Integer {
+            word: self.place(v),
+        }
+    }
+
     /// `v` in the next slot, as a tagged word.
     #[inline]
     fn place(&mut self, v: i128) -> NonNull<u8> {
