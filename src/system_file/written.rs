@@ -19,9 +19,9 @@ const MAX_MONOMIALS: usize = 231;
 /// million terms) is read as it is, not written into rows for the linear algebra.
 const MAX_TERMS: usize = 5_000;
 
-/// The most term products that expanding the monomials may take (`Σ |G_a| + Σ |G_a|·|G_b|`):
-/// a file whose functions are long (`P_{40,40}`, 1 681 terms, as a function) is not
-/// searched, where its squares alone would take millions.
+/// The most term products that expanding the monomials may take (`Σ |G_a| + Σ |G_a|·|G_b|`
+/// over `a ≤ b`): a file with a function of thousands of terms is not searched, where its
+/// square alone would take millions.
 const MAX_TERM_PRODUCTS: usize = 200_000;
 
 impl LoadedSystem {
@@ -57,11 +57,9 @@ impl LoadedSystem {
         }
         generators.extend(functions.iter().cloned());
         let lengths: Vec<usize> = generators.iter().map(|g| g.expr.len()).collect();
-        let products = lengths.iter().sum::<usize>()
-            + (0..lengths.len())
-                .flat_map(|a| lengths[a..].iter().map(move |b| (a, b)))
-                .map(|(a, b)| lengths[a] * b)
-                .sum::<usize>();
+        let products: usize = (0..lengths.len())
+            .map(|a| lengths[a] * (1 + lengths[a..].iter().sum::<usize>()))
+            .sum();
         if products > MAX_TERM_PRODUCTS {
             return None;
         }
