@@ -31,7 +31,7 @@
 //!                 "residual": ascii | null   (lhs − rhs of a refuted identity, or when
 //!                          "residual_excerpt" is set the terms of its leading monomials),
 //!                 "residual_in_functions": ascii | null   (the residual as a polynomial
-//!                          of degree ≤ 2 in H and the system's named functions, proved for
+//!                          of degree ≤ 3 in H and the system's named functions, proved for
 //!                          every value of the parameters, where it is one: "-4*H*L/M"),
 //!                 "residual_excerpt": { "shown_monomials", "monomials" } | null   (set
 //!                          when the residual had more monomials outside the angles than
@@ -43,7 +43,7 @@
 //!                 "seconds": number | null } ],
 //!   "equations": [ { "section", "caption", "lines": [ { "lhs", "text", "ascii", "latex",
 //!                 "in_functions": { "text", "ascii", "latex" } | null   (the right side as a
-//!                          polynomial of degree ≤ 2 in H and the named functions, proved, where
+//!                          polynomial of degree ≤ 3 in H and the named functions, proved, where
 //!                          `bracket` finds it one) } ] } ],
 //!   "tables": [ { "section", "caption" (plain text, as every title and caption: "{A, B} for
 //!                 the harmonic rotor (row A, column B)"), "functions": [ascii names],

@@ -8,30 +8,54 @@ use trigpoly::{Expr, VarKind};
 
 use super::LoadedSystem;
 
-/// The degree of the polynomials in `H` and the named functions that an expression is sought
-/// among.
-const DEGREE: u32 = 2;
+/// The degrees of the polynomials in `H` and the named functions that an expression is sought
+/// among, highest first: the first whose monomials the limits below allow.
+const DEGREES: [u32; 2] = [3, 2];
 
-/// The most monomials that search may expand: degree 2 in up to 20 functions.
-const MAX_MONOMIALS: usize = 231;
+/// The most monomials the search may expand: degree 3 in up to 9 functions, degree 2 in up
+/// to 20.
+const MAX_MONOMIALS: u128 = 231;
 
 /// The most terms of an expression that is sought so: a longer one (a tower's residual, of a
 /// million terms) is read as it is, not written into rows for the linear algebra.
 const MAX_TERMS: usize = 5_000;
 
-/// The most term products that expanding the monomials may take (`Σ |G_a| + Σ |G_a|·|G_b|`
-/// over `a ≤ b`): a file with a function of thousands of terms is not searched, where its
-/// square alone would take millions.
-const MAX_TERM_PRODUCTS: usize = 200_000;
+/// The most term products that expanding the monomials may take (the sum over the monomials
+/// of the products of their functions' lengths): a file with a function of thousands of
+/// terms is not searched, where its square alone would take millions.
+const MAX_TERM_PRODUCTS: u128 = 200_000;
+
+/// The highest of [`DEGREES`] whose monomials in functions of `lengths` terms stay within
+/// [`MAX_MONOMIALS`] and [`MAX_TERM_PRODUCTS`], if one does.
+fn searchable_degree(lengths: &[usize]) -> Option<u32> {
+    let top = DEGREES[0] as usize;
+    // h[d]: the sum over the monomials of degree d of the products of their functions'
+    // lengths (the complete homogeneous polynomials in the lengths), and n[d] the number of
+    // those monomials (the same with every length 1).
+    let (mut h, mut n) = (vec![0u128; top + 1], vec![0u128; top + 1]);
+    (h[0], n[0]) = (1, 1);
+    for &l in lengths {
+        for d in 1..=top {
+            h[d] = h[d].saturating_add((l as u128).saturating_mul(h[d - 1]));
+            n[d] += n[d - 1];
+        }
+    }
+    DEGREES.into_iter().find(|&degree| {
+        let d = degree as usize;
+        n[..=d].iter().sum::<u128>() <= MAX_MONOMIALS
+            && h[1..=d].iter().fold(0u128, |a, &b| a.saturating_add(b)) <= MAX_TERM_PRODUCTS
+    })
+}
 
 impl LoadedSystem {
-    /// `e` (after `condition`) as a polynomial of degree `≤ 2` in `H` and the named
-    /// functions, proved for every value of the parameters, when it is one with a function
-    /// in it: `−4 H L/M` for the residual of `{A_x, A_y} = 2 H L/M`, whose sign is turned.
-    /// Its variables are the parameters and one symbol per function, printed by its display
-    /// name. It only helps to read `e`: when there is none, or the search stops at its limit
-    /// or on a condition it cannot apply, or `e` has more than 5 000 terms, or the functions'
-    /// monomials would take more than 200 000 term products, it is `None`.
+    /// `e` (after `condition`) as a polynomial of degree `≤ 3` in `H` and the named
+    /// functions (`≤ 2` where they are more than 9 with `H`, or long), proved for every value
+    /// of the parameters, when it is one with a function in it: `−4 H L/M` for the residual of
+    /// `{A_x, A_y} = 2 H L/M`, whose sign is turned. Its variables are the parameters and one
+    /// symbol per function, printed by its display name. It only helps to read `e`: when
+    /// there is none, or the search stops at its limit or on a condition it cannot apply, or
+    /// `e` has more than 5 000 terms, or the functions' monomials of degree 2 would take more
+    /// than 231 monomials or 200 000 term products, it is `None`.
     ///
     /// ```
     /// use superint::system_file::{load, LimitsOverride};
@@ -57,14 +81,8 @@ impl LoadedSystem {
         }
         generators.extend(functions.iter().cloned());
         let lengths: Vec<usize> = generators.iter().map(|g| g.expr.len()).collect();
-        let products: usize = (0..lengths.len())
-            .map(|a| lengths[a] * (1 + lengths[a..].iter().sum::<usize>()))
-            .sum();
-        if products > MAX_TERM_PRODUCTS {
-            return None;
-        }
-        let mut options = ClosureOptions::new(DEGREE);
-        options.max_monomials = MAX_MONOMIALS;
+        let mut options = ClosureOptions::new(searchable_degree(&lengths)?);
+        options.max_monomials = MAX_MONOMIALS as usize;
         if let Some(c) = condition {
             options = options.when(c.clone());
         }
@@ -80,6 +98,19 @@ impl LoadedSystem {
 #[cfg(test)]
 mod tests {
     use crate::system_file::{load_str, LimitsOverride};
+
+    /// Degree 3 for up to 9 short functions, 2 for more or for longer ones, none where even
+    /// the squares would pass the term products allowed.
+    #[test]
+    fn the_degree_searched_follows_the_functions() {
+        use super::searchable_degree;
+        assert_eq!(searchable_degree(&[4, 2, 4, 2]), Some(3));
+        assert_eq!(searchable_degree(&[5; 9]), Some(3));
+        assert_eq!(searchable_degree(&[5; 10]), Some(2));
+        assert_eq!(searchable_degree(&[4, 2, 60]), Some(2));
+        assert_eq!(searchable_degree(&[4, 2, 10_626]), None);
+        assert_eq!(searchable_degree(&[usize::MAX, 3]), None);
+    }
 
     /// A file with `L` and `B = (1 + x + y + p_x + p_y)^k`.
     fn with_power(k: u32) -> crate::system_file::LoadedSystem {

@@ -2635,9 +2635,10 @@ fn a_table_past_a_limit_names_the_file_and_the_brackets() {
 }
 
 /// A refuted identity's residual is also written in `H` and the file's functions where it is
-/// a polynomial of degree ≤ 2 in them for every value of the parameters, and only there: not
+/// a polynomial of degree ≤ 3 in them for every value of the parameters, and only there: not
 /// when it is a constant, nor when it is no such polynomial. The wrong sign of Pauli's
-/// `{A_x, A_y} = −2 H L/M` leaves `−4 H L/M`.
+/// `{A_x, A_y} = −2 H L/M` leaves `−4 H L/M`; `{L, H_x}² = 4 H_x H_y − ω² L²` times `H`
+/// without its last term leaves `−ω² H L²`, of degree 3.
 #[test]
 fn a_refuted_residual_is_written_in_the_files_functions() {
     let dir = scratch("residual-in-functions");
@@ -2668,6 +2669,11 @@ expect = "refuted"
 id = "at-omega"
 claim = "{L, H} = omega*Hx"
 when = "omega = 2"
+expect = "refuted"
+
+[[claim]]
+id = "cubic"
+claim = "{L, Hx}^2*H = 4*Hx*(H - Hx)*H"
 expect = "refuted"
 
 [[claim]]
@@ -2702,6 +2708,7 @@ expect = "refuted"
         vec![
             ("times-h".into(), Value::from("-3*M*H*L + Hx^2")),
             ("at-omega".into(), Value::from("-2*Hx")),
+            ("cubic".into(), Value::from("-omega^2*H*L^2")),
             ("constant".into(), Value::Null),
             ("outside".into(), Value::Null),
         ]
