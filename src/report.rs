@@ -252,12 +252,6 @@ impl Equation {
             in_functions: None,
         }
     }
-
-    /// With the right side written in named functions as well.
-    pub fn in_functions(mut self, written: Option<Expr>) -> Self {
-        self.in_functions = written;
-        self
-    }
 }
 
 /// A count and its noun, singular for one: `1 claim`, `2 claims`, `0 claims`, `3 entries` (a

@@ -227,16 +227,14 @@ pub fn bracket_report(
         .bracket(&fe, &ge)
         .map_err(|e| file.computation_error(&e))?;
     let lhs = format!("{{{fname}, {gname}}}");
-    let mut entry = equations_at(file, condition.as_ref(), vec![(lhs.clone(), value)])?;
+    let mut equations = equations_at(file, condition.as_ref(), vec![(lhs.clone(), value)])?;
     // The bracket in the file's functions too, where it is a polynomial in them.
-    if let Entry::Equations(Equations { lines, .. }) = &mut entry {
-        for line in lines {
-            line.in_functions = file.written_in_functions(&line.rhs, condition.as_ref());
-        }
+    for line in &mut equations.lines {
+        line.in_functions = file.written_in_functions(&line.rhs, condition.as_ref());
     }
     Ok(file.one_entry(
         format!("`{lhs}` for {}", file.the_name()),
-        entry,
+        Entry::Equations(equations),
         SummaryKind::Computed,
         start,
     ))
@@ -270,8 +268,13 @@ pub fn expand_report(
             .join(", "),
         file.the_name()
     );
-    let entry = equations_at(file, condition.as_ref(), lines)?;
-    Ok(file.one_entry(title, entry, SummaryKind::Computed, start))
+    let equations = equations_at(file, condition.as_ref(), lines)?;
+    Ok(file.one_entry(
+        title,
+        Entry::Equations(equations),
+        SummaryKind::Computed,
+        start,
+    ))
 }
 
 /// Displayed equations `lhs = value`, each value under the report's condition if there is
@@ -280,7 +283,7 @@ fn equations_at(
     file: &LoadedSystem,
     condition: Option<&Condition>,
     lines: Vec<(String, Expr)>,
-) -> Result<Entry, FileError> {
+) -> Result<Equations, FileError> {
     let lines = lines
         .into_iter()
         .map(|(lhs, value)| {
@@ -300,10 +303,10 @@ fn equations_at(
             Ok(Equation::new(&lhs, value))
         })
         .collect::<Result<_, FileError>>()?;
-    Ok(Entry::Equations(Equations {
+    Ok(Equations {
         caption: condition.map_or_else(String::new, |c| format!("at {}", c.text)),
         lines,
-    }))
+    })
 }
 
 /// A condition given to a report (`--when` on the command line), if any.

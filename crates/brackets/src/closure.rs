@@ -354,7 +354,7 @@ pub fn closure_of(
     let t = Instant::now();
     let scaling = scaling_of(system, generators, condition)?;
     let lifting = Lifting::new(system, generators, &span, &b_sym, options, scaling)?;
-    let mut lift_ctx = lifting.context(system, &span)?;
+    let mut lift_ctx = lifting.context(system, &span);
     let relations = minimal_relations(
         &mut lift_ctx,
         &kernel,
@@ -431,7 +431,7 @@ impl Lifting {
                 varying
                     .clone()
                     .chain(targets)
-                    .any(|e| Span::mentions(system, e, *v))
+                    .any(|e| span::mentions(system, e, *v))
             })
             .cloned()
             .collect();
@@ -455,12 +455,8 @@ impl Lifting {
     }
 
     /// The context that lifts and proves the span's results.
-    fn context<'a>(
-        &'a self,
-        system: &System,
-        span: &'a Span,
-    ) -> Result<LiftContext<'a>, EngineError> {
-        Ok(LiftContext {
+    fn context<'a>(&'a self, system: &System, span: &'a Span) -> LiftContext<'a> {
+        LiftContext {
             vars: system.vars().clone(),
             ring: self.printing.ring.clone(),
             symbols: self.printing.symbols.clone(),
@@ -473,7 +469,7 @@ impl Lifting {
             scaling: &self.scaling,
             gen_weights: self.gen_weights.as_deref(),
             exact: span.parameters.is_empty(),
-        })
+        }
     }
 }
 
@@ -530,7 +526,7 @@ pub fn expressed_in(
         return Ok(None);
     };
     let lifting = Lifting::new(system, generators, &span, &parts, options, scaling)?;
-    let mut lift_ctx = lifting.context(system, &span)?;
+    let mut lift_ctx = lifting.context(system, &span);
     let mut poly = Expr::zero(&lifting.printing.ring);
     let mut symbolic = true;
     for (solution, part) in solutions.iter().zip(&parts) {

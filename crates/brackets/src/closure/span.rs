@@ -211,18 +211,18 @@ impl Span {
         self.nrows = rows.len();
         Ok(())
     }
+}
 
-    /// Whether `e` has the parameter `v`, in its terms or through an atom's polynomial
-    /// (`1/(x − a)`) or a radicand (`√(x² + a)`).
-    pub(super) fn mentions(system: &System, e: &Expr, v: Var) -> bool {
-        let space = system.space();
-        e.contains(v)
-            || space
-                .denominator_atoms()
-                .iter()
-                .chain(space.radicals())
-                .any(|(w, d)| d.contains(v) && e.contains(*w))
-    }
+/// Whether `e` has the parameter `v`, in its terms or through an atom's polynomial
+/// (`1/(x − a)`) or a radicand (`√(x² + a)`) of `system`.
+pub(super) fn mentions(system: &System, e: &Expr, v: Var) -> bool {
+    let space = system.space();
+    e.contains(v)
+        || space
+            .denominator_atoms()
+            .iter()
+            .chain(space.radicals())
+            .any(|(w, d)| d.contains(v) && e.contains(*w))
 }
 
 /// The parameters fixed for the linear algebra: each that occurs in `exprs` or is given a
@@ -239,7 +239,7 @@ fn fixed_parameters<'a>(
             continue;
         }
         let given = options.fixed.iter().find(|f| f.0 == v).map(|f| f.1.clone());
-        if given.is_some() || exprs.clone().any(|e| Span::mentions(system, e, v)) {
+        if given.is_some() || exprs.clone().any(|e| mentions(system, e, v)) {
             parameters.push((v, given.unwrap_or_else(Rational::one)));
         }
     }

@@ -107,7 +107,10 @@ pub trait IntegerRing:
     /// A small value as a wide one.
     fn small_to_wide(a: &Self::Small) -> Self::Wide;
     /// The value of a wide accumulator.
-    fn from_wide(w: Self::Wide) -> Self;
+    #[inline]
+    fn from_wide(w: Self::Wide) -> Self {
+        Self::from_wide_with(w, &mut Integer::from_i128)
+    }
     /// [`IntegerRing::from_wide`] with each component past a word made by `place`, which
     /// must return it as [`Integer::from_i128`] would (in a slab's slot, say).
     fn from_wide_with(w: Self::Wide, place: &mut impl FnMut(i128) -> Integer) -> Self;
@@ -203,10 +206,6 @@ impl IntegerRing for Integer {
     #[inline(always)]
     fn small_to_wide(a: &i64) -> i128 {
         *a as i128
-    }
-    #[inline]
-    fn from_wide(w: i128) -> Self {
-        Integer::from_i128(w)
     }
     #[inline(always)]
     fn from_wide_with(w: i128, place: &mut impl FnMut(i128) -> Integer) -> Self {
@@ -373,10 +372,6 @@ impl IntegerRing for GaussianInteger {
         let (ar, ai, br, bi) = (a.0 as i128, a.1 as i128, b.0 as i128, b.1 as i128);
         acc.0 += ar * br - ai * bi;
         acc.1 += ar * bi + ai * br;
-    }
-    #[inline]
-    fn from_wide(w: (i128, i128)) -> Self {
-        GaussianInteger::new(Integer::from_i128(w.0), Integer::from_i128(w.1))
     }
     #[inline(always)]
     fn from_wide_with(w: (i128, i128), place: &mut impl FnMut(i128) -> Integer) -> Self {

@@ -895,9 +895,10 @@ impl<'d, I: IntegerRing, W: Cells<I>> Builder<'d, I, W> {
     fn finish(self) -> Product<I> {
         debug_assert!(self.found.is_empty(), "every chunk's terms are written");
         let coeffs = match self.slab {
-            // SAFETY: the slab was filled only around the writes of `coeffs` (`append`), on
-            // this thread, and the values made there went into `coeffs` or were dropped; so
-            // its counts are those of `coeffs`' values, which nothing has changed since.
+            // SAFETY: the slab was filled or placed in only by the writes of `coeffs`
+            // (`append`, through `Cells::extend`), on this thread, and the values made there
+            // went into `coeffs` or were dropped; so its counts are those of `coeffs`' values,
+            // which nothing has changed since.
             Some(slab) => unsafe { Coeffs::counted(self.coeffs, slab.into_counts()) },
             None => Coeffs::new(self.coeffs),
         };

@@ -353,8 +353,9 @@ impl WideSlab {
     /// # Safety
     ///
     /// Every value it placed and that is still alive is in one vector, whose values these
-    /// counts then describe ([`SlotCounts::release`]): the slab was filled for that vector
-    /// alone (`filling` around its writes, no value made kept elsewhere), on this thread.
+    /// counts then describe ([`SlotCounts::release`]): the slab was filled or placed in for
+    /// that vector alone (`filling` around its writes or `place_integer` for them, no value
+    /// made kept elsewhere), on this thread.
     pub unsafe fn into_counts(mut self) -> SlotCounts {
         self.retire();
         let mut counts = SlotCounts {
