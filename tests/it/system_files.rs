@@ -2723,6 +2723,49 @@ expect = "refuted"
     );
 }
 
+/// Where the functions have relations, a residual has several polynomials in them; the one
+/// with the fewest monomials is written. Kepler's `A_x² + A_y² = k² + 2 H L²/M` would
+/// otherwise turn the missing `/M`'s `2 H L²/M − 2 H L²` into `M k² − M A_x² − …`, and the
+/// 3-5 rotor's off-resonance residual `ω Im K` into `−iω K + iω Re K`; a bracket likewise.
+#[test]
+fn a_residual_is_written_with_the_fewest_monomials_the_relations_allow() {
+    let dir = scratch("fewest-monomials");
+    let kepler = std::fs::read_to_string("systems/kepler.toml").expect("read");
+    let functions = &kepler[..kepler.find("[[claim]]").expect("claims")];
+    std::fs::write(
+        dir.join("kepler.toml"),
+        format!(
+            "{functions}[[claim]]\nclaim = \"Ax^2 + Ay^2 = k^2 + 2*H*L^2\"\nexpect = \"refuted\"\n"
+        ),
+    )
+    .expect("write the file");
+    let o = superint_in(&dir, &["check", "kepler.toml", "--format", "json"]);
+    assert_eq!(o.status.code(), Some(0), "{}", text(&o.stderr));
+    let v: Value = serde_json::from_str(&text(&o.stdout)).expect("JSON");
+    assert_eq!(
+        v["claims"][0]["residual_in_functions"],
+        "-2*H*L^2 + 2*H*L^2/M"
+    );
+    let rotor = run(&["check", "systems/anisotropic-3-5-rotor.toml"], 0);
+    assert!(
+        rotor.contains(
+            "        + (−ω p_x² p_y + 9M²ω³x² p_y − 30M²ω³xy p_x) sin θ\n\
+             \x20                        = ω ImK\n"
+        ),
+        "{rotor}"
+    );
+    let bracket = run(
+        &[
+            "bracket",
+            "systems/anisotropic-3-5-rotor.toml",
+            "Ax",
+            "H*F2",
+        ],
+        0,
+    );
+    assert!(bracket.contains("= 3iω F2 A_x\n"), "{bracket}");
+}
+
 /// `bracket` writes the bracket in `H` and the file's functions too, where it is a polynomial
 /// of degree ≤ 2 in them (Pauli's `{A_x, A_y} = −2 H L/M`), under the `=` of the expansion, in
 /// every format; where it is none, or zero, nothing is added.

@@ -44,10 +44,12 @@ use crate::system::{NamedFunction, System};
 use crate::table::{BracketTable, Entry};
 
 mod columns;
+mod fewest;
 mod lift;
 mod span;
 
 use columns::{combination_equals, shift};
+use fewest::Relations;
 use lift::LiftContext;
 use span::Span;
 
@@ -486,7 +488,8 @@ pub struct Expressed {
 
 /// `target` as a polynomial of degree `≤ options.degree` in the `generators`, found and
 /// proved as a closure's brackets are (after `options.condition`), or `None` when there is
-/// none. The polynomial is one of several when the generators have relations of that degree.
+/// none. The polynomial is one of several when the generators have relations of that degree;
+/// the one with the fewest monomials that a greedy walk over the relations finds is given.
 /// A target that is not homogeneous under the system's scalings (a claim off by a factor of
 /// a parameter) is written part by part, each homogeneous part lifted on its own.
 ///
@@ -525,12 +528,23 @@ pub fn expressed_in(
     else {
         return Ok(None);
     };
+    // Where the generators have relations, the shortest of the solutions reads best.
+    let relations = Relations::new(&span.columns, span.nrows);
     let lifting = Lifting::new(system, generators, &span, &parts, options, scaling)?;
     let mut lift_ctx = lifting.context(system, &span);
     let mut poly = Expr::zero(&lifting.printing.ring);
     let mut symbolic = true;
-    for (solution, part) in solutions.iter().zip(&parts) {
-        let (p, proved) = lift_ctx.bracket(solution, part)?;
+    for ((solution, target), part) in solutions.into_iter().zip(&span.targets).zip(&parts) {
+        let shortest = match &relations {
+            Some(r) => r.fewest_columns(&span.columns, span.nrows, solution.clone(), target),
+            None => solution.clone(),
+        };
+        let (mut p, mut proved) = lift_ctx.bracket(&shortest, part)?;
+        // A shorter solution that does not lift (it holds at the fixed values only) gives
+        // way to the echelon's.
+        if !proved && shortest != solution {
+            (p, proved) = lift_ctx.bracket(&solution, part)?;
+        }
         poly = poly.checked_add(&p)?;
         symbolic &= proved;
     }

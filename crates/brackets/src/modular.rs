@@ -554,15 +554,25 @@ fn kernel_modular(
     columns: &[SparseVec<Rational>],
     rows: usize,
 ) -> Option<Vec<SparseVec<Rational>>> {
+    kernel_mod_p(columns, rows)?
+        .iter()
+        .map(reconstruct_vec)
+        .collect()
+}
+
+/// The kernel modulo `p`, unchecked: one vector per column that depends on the earlier
+/// ones, `e_j − Σ c_i e_i`, in column order, each sorted by index; `None` if a column has a
+/// denominator divisible by `p`. For a search whose every result is checked exactly.
+pub fn kernel_mod_p(columns: &[SparseVec<Rational>], rows: usize) -> Option<Vec<SparseVec<Fp>>> {
     let mut e = Echelon::<Fp>::new(rows);
     let mut out = Vec::new();
     for (j, c) in columns.iter().enumerate() {
-        if let Some(dep) = e.insert(j, &to_fp(c)?) {
-            let mut v = reconstruct_vec(&dep)?;
+        if let Some(mut v) = e.insert(j, &to_fp(c)?) {
             for x in v.iter_mut() {
-                x.1 = -&x.1;
+                x.1 = Fp::zero().sub(&x.1);
             }
-            v.push((j, Rational::one()));
+            // Every identifier in the combination is below `j`.
+            v.push((j, Fp::one()));
             out.push(v);
         }
     }

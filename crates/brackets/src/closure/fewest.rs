@@ -1,0 +1,187 @@
+//! A combination of columns that uses as few of them as the columns' relations allow.
+//!
+//! Where the generators have relations, an expression in them is one of several: Kepler's
+//! `A_x² + A_y² = k² + 2 H L²/M` lets `2 H L²/M` also read `A_x² + A_y² − k²`. The
+//! echelon's solution uses its pivot columns, the lowest-degree monomials first, and so picks
+//! the longer form. [`fewest_columns`] subtracts multiples of the kernel's vectors (the
+//! relations at the fixed values) while each takes a column off, and keeps the result only
+//! if it is checked exactly to give the same target.
+
+use trigpoly::Rational;
+
+use super::columns::combination_equals;
+use crate::modular::{self, Field, Fp, SparseVec};
+
+/// The relations among the columns modulo `p` ([`modular::kernel_mod_p`]), found once for
+/// every target of a span.
+pub(super) struct Relations {
+    kernel: Vec<SparseVec<Fp>>,
+}
+
+impl Relations {
+    /// The relations among `columns`, of `rows` rows; `None` when they cannot be found
+    /// modulo `p` (a denominator divisible by it), which leaves every solution as it is.
+    pub(super) fn new(columns: &[SparseVec<Rational>], rows: usize) -> Option<Self> {
+        Some(Relations {
+            kernel: modular::kernel_mod_p(columns, rows)?,
+        })
+    }
+
+    /// `solution` (a combination of `columns` equal to `target`) with as few columns as a
+    /// greedy walk over the relations finds, checked exactly; the solution as given when
+    /// no relation shortens it or the shorter one is not confirmed.
+    pub(super) fn fewest_columns(
+        &self,
+        columns: &[SparseVec<Rational>],
+        rows: usize,
+        solution: SparseVec<Rational>,
+        target: &SparseVec<Rational>,
+    ) -> SparseVec<Rational> {
+        if self.kernel.is_empty() || solution.len() < 2 {
+            return solution;
+        }
+        let Some(x) = modular::to_fp(&solution) else {
+            return solution;
+        };
+        let shorter = shortest_by(x, &self.kernel);
+        if shorter.len() >= solution.len() {
+            return solution;
+        }
+        match modular::reconstruct_vec(&shorter) {
+            Some(found) if combination_equals(columns, rows, &found, target) => found,
+            _ => solution,
+        }
+    }
+}
+
+/// `x` less multiples of the `kernel`'s vectors, one at a time, each the one that leaves the
+/// fewest entries, while that is fewer than before.
+fn shortest_by<F: Field>(mut x: SparseVec<F>, kernel: &[SparseVec<F>]) -> SparseVec<F> {
+    loop {
+        let mut best: Option<SparseVec<F>> = None;
+        for k in kernel {
+            for (j, kj) in k {
+                let Some(xj) = entry(&x, *j) else {
+                    continue;
+                };
+                // x − (x_j/k_j)·k has no entry at j.
+                let candidate = minus_multiple(&x, &xj.mul(&kj.inv()), k);
+                if candidate.len() < best.as_ref().map_or(x.len(), Vec::len) {
+                    best = Some(candidate);
+                }
+            }
+        }
+        match best {
+            Some(shorter) => x = shorter,
+            None => return x,
+        }
+    }
+}
+
+/// The entry of `x` at index `j`, if it has one.
+fn entry<F: Field>(x: &SparseVec<F>, j: usize) -> Option<&F> {
+    x.binary_search_by_key(&j, |(i, _)| *i)
+        .ok()
+        .map(|at| &x[at].1)
+}
+
+/// `x − a·k`, both sorted by index, without zero entries.
+fn minus_multiple<F: Field>(x: &SparseVec<F>, a: &F, k: &SparseVec<F>) -> SparseVec<F> {
+    let mut out = Vec::with_capacity(x.len() + k.len());
+    let (mut xs, mut ks) = (x.iter().peekable(), k.iter().peekable());
+    loop {
+        let (i, value) = match (xs.peek(), ks.peek()) {
+            (None, None) => return out,
+            (Some((i, xi)), None) => {
+                xs.next();
+                (*i, xi.clone())
+            }
+            (None, Some((i, ki))) => {
+                ks.next();
+                (*i, F::zero().sub(&a.mul(ki)))
+            }
+            (Some((i, xi)), Some((l, kl))) => match i.cmp(l) {
+                std::cmp::Ordering::Less => {
+                    xs.next();
+                    (*i, xi.clone())
+                }
+                std::cmp::Ordering::Greater => {
+                    ks.next();
+                    (*l, F::zero().sub(&a.mul(kl)))
+                }
+                std::cmp::Ordering::Equal => {
+                    xs.next();
+                    ks.next();
+                    (*i, xi.sub(&a.mul(kl)))
+                }
+            },
+        };
+        if !value.is_zero() {
+            out.push((i, value));
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::{minus_multiple, shortest_by, Relations};
+    use crate::modular::{Fp, SparseVec};
+    use trigpoly::Rational;
+
+    fn fp(entries: &[(usize, i64)]) -> SparseVec<Fp> {
+        entries.iter().map(|&(i, x)| (i, Fp::from_i64(x))).collect()
+    }
+
+    fn q(entries: &[(usize, i64)]) -> SparseVec<Rational> {
+        entries
+            .iter()
+            .map(|&(i, x)| (i, Rational::from(x)))
+            .collect()
+    }
+
+    #[test]
+    fn a_multiple_is_subtracted_entry_by_entry_and_zeros_dropped() {
+        let x = fp(&[(0, 1), (2, 4), (5, 3)]);
+        let k = fp(&[(1, 1), (2, 2), (6, -1)]);
+        // x − 2k
+        assert_eq!(
+            minus_multiple(&x, &Fp::from_i64(2), &k),
+            fp(&[(0, 1), (1, -2), (5, 3), (6, 2)])
+        );
+    }
+
+    #[test]
+    fn a_relation_that_covers_the_solution_leaves_one_column() {
+        // Columns 0, 1, 2 and 3 with the relation c0 + c1 − c2 − 2·c3 = 0 (Kepler's
+        // k² + A_x² ... shape): 5·(c0 + c1 − c2) is 10·c3.
+        let kernel = vec![fp(&[(0, 1), (1, 1), (2, -1), (3, -2)])];
+        let x = fp(&[(0, 5), (1, 5), (2, -5)]);
+        assert_eq!(shortest_by(x, &kernel), fp(&[(3, 10)]));
+        // A solution the relation cannot shorten is kept.
+        let y = fp(&[(0, 1), (2, 1)]);
+        assert_eq!(shortest_by(y.clone(), &kernel), y);
+    }
+
+    #[test]
+    fn the_shorter_solution_is_checked_against_the_columns() {
+        // Rows 0 and 1: c0 = (1, 0), c1 = (0, 1), c2 = (1, 1), so c0 + c1 − c2 = 0.
+        let columns = vec![q(&[(0, 1)]), q(&[(1, 1)]), q(&[(0, 1), (1, 1)])];
+        let relations = Relations::new(&columns, 2).expect("modulo p");
+        let target = q(&[(0, 3), (1, 3)]);
+        let long = q(&[(0, 3), (1, 3)]);
+        assert_eq!(
+            relations.fewest_columns(&columns, 2, long, &target),
+            q(&[(2, 3)])
+        );
+        // A relation that is wrong (not one of the columns') is never used: the result is
+        // checked, and the solution kept.
+        let wrong = Relations {
+            kernel: vec![fp(&[(0, 1), (1, 1), (2, -2)])],
+        };
+        let long = q(&[(0, 3), (1, 3)]);
+        assert_eq!(
+            wrong.fewest_columns(&columns, 2, long.clone(), &target),
+            long
+        );
+    }
+}
