@@ -125,7 +125,9 @@ fn minus_multiple<F: Field>(x: &SparseVec<F>, a: &F, k: &SparseVec<F>) -> Sparse
 #[cfg(test)]
 mod tests {
     use super::{minus_multiple, shortest_by, Relations};
+    use crate::closure::columns::combination_equals;
     use crate::modular::{Fp, SparseVec};
+    use proptest::prelude::*;
     use trigpoly::Rational;
 
     fn fp(entries: &[(usize, i64)]) -> SparseVec<Fp> {
@@ -183,5 +185,53 @@ mod tests {
             wrong.fewest_columns(&columns, 2, long.clone(), &target),
             long
         );
+    }
+
+    /// Columns over a few rows from small integers, so that some depend on others.
+    fn columns() -> impl Strategy<Value = Vec<SparseVec<Rational>>> {
+        let column = proptest::collection::vec(-2i64..3, 4).prop_map(|entries| {
+            entries
+                .into_iter()
+                .enumerate()
+                .filter(|(_, x)| *x != 0)
+                .map(|(i, x)| (i, Rational::from(x)))
+                .collect::<SparseVec<Rational>>()
+        });
+        proptest::collection::vec(column, 2..9)
+    }
+
+    proptest! {
+        #![proptest_config(ProptestConfig::with_cases(300))]
+
+        /// Whatever the columns' relations, the solution given back is one: it sums to the
+        /// target exactly, and it has no more columns than the one given.
+        #[test]
+        fn the_fewest_columns_still_make_the_target(
+            columns in columns(),
+            weights in proptest::collection::vec(-3i64..4, 8),
+        ) {
+            let solution: SparseVec<Rational> = weights
+                .iter()
+                .take(columns.len())
+                .enumerate()
+                .filter(|(_, w)| **w != 0)
+                .map(|(j, w)| (j, Rational::from(*w)))
+                .collect();
+            let mut target = vec![Rational::from(0); 4];
+            for (j, w) in &solution {
+                for (i, a) in &columns[*j] {
+                    target[*i] += w * a;
+                }
+            }
+            let target: SparseVec<Rational> = target
+                .into_iter()
+                .enumerate()
+                .filter(|(_, x)| *x != Rational::from(0))
+                .collect();
+            let relations = Relations::new(&columns, 4).expect("small integers");
+            let fewest = relations.fewest_columns(&columns, 4, solution.clone(), &target);
+            prop_assert!(combination_equals(&columns, 4, &fewest, &target));
+            prop_assert!(fewest.len() <= solution.len());
+        }
     }
 }
