@@ -10,10 +10,10 @@ use anyhow::{bail, Context};
 use clap::{Args, ValueEnum};
 use superint::render::{printable, Format};
 use superint::report::counted;
-use superint::system_file::{Against, LimitsOverride, PlotFunctions};
+use superint::system_file::{Against, LimitsOverride, PlotFunctions, PlotInput, StartValue};
 use superint::trajectory::chart::{self, reduce_angle, Curve, Style};
-use superint::trajectory::{short, Flow, Method, Numeric};
-use trigpoly::VarKind;
+use superint::trajectory::{short, Flow, Method, Numeric, Trajectory};
+use trigpoly::{Expr, Var, VarKind, Vars};
 
 use super::input::load_system;
 use super::limits::LimitsArgs;
@@ -253,77 +253,111 @@ pub fn run(job: &PlotJob) -> anyhow::Result<bool> {
     let flow = Flow::at(file.system().space(), &input.hamiltonian, &input.values)
         .context("Hamilton's equations at these values")?
         .with_method(args.method.method());
-    let function = |label: &str, f: &trigpoly::Expr| -> anyhow::Result<Function> {
-        let numeric = flow.numeric(f).with_context(|| label.to_string())?;
-        Ok(Function {
-            label: label.to_string(),
-            numeric,
-        })
+    let plotted = Plotted::new(&flow, &input, args)?;
+    let integration = Integration {
+        flow: &flow,
+        plotted: &plotted,
+        args,
+        vars: file.system().vars(),
+        several: input.starts.len() > 1,
     };
-    let mut rows = vec![function("H", &input.hamiltonian)?];
-    for (label, f) in &input.curves {
-        rows.push(function(label, f)?);
-    }
-    let against = match &input.against {
-        None => None,
-        Some(Against::Function(l, _)) if args.unreduced => {
-            bail!("--unreduced is for an angle on the horizontal axis, and {l} is a function")
+    let orbits = input
+        .starts
+        .iter()
+        .enumerate()
+        .map(|(k, point)| integration.orbit(k, point))
+        .collect::<anyhow::Result<Vec<Orbit>>>()?;
+    let title = match input.parameters.as_str() {
+        "" => file.name().to_string(),
+        p => format!("{} at {p}", file.name()),
+    };
+    write_chart(args, &title, &plotted, &orbits)?;
+    write_data(args, &plotted, &orbits)?;
+    print_table(job, &title, &plotted, &orbits)?;
+    warn_of_drift(&orbits, args)?;
+    Ok(true)
+}
+
+/// What is evaluated along every orbit: the rows, `H` first and then each curve, the
+/// horizontal axis when it is not the time, and the section's function.
+struct Plotted {
+    rows: Vec<Function>,
+    against: Option<Axis>,
+    section: Option<Function>,
+}
+
+impl Plotted {
+    /// The functions of `input`, ready to evaluate along `flow`; an error for `--unreduced`
+    /// with a function, not an angle, on the horizontal axis.
+    fn new(flow: &Flow, input: &PlotInput, args: &PlotArgs) -> anyhow::Result<Self> {
+        let function = |label: &str, f: &Expr| -> anyhow::Result<Function> {
+            let numeric = flow.numeric(f).with_context(|| label.to_string())?;
+            Ok(Function {
+                label: label.to_string(),
+                numeric,
+            })
+        };
+        let mut rows = vec![function("H", &input.hamiltonian)?];
+        for (label, f) in &input.curves {
+            rows.push(function(label, f)?);
         }
-        Some(Against::Function(l, f)) => Some(Axis::Function(function(l, f)?)),
-        Some(Against::Angle(label, v)) => Some(Axis::Angle {
-            label: match args.unreduced {
-                false => format!("{label} (mod 2π)"),
-                true => format!("{label} (not reduced mod 2π)"),
-            },
-            index: v.index(),
-            reduced: !args.unreduced,
-        }),
-    };
-    let section = input
-        .section
-        .as_ref()
-        .map(|(l, f)| function(l, f))
-        .transpose()?;
-    let several = input.starts.len() > 1;
-    let mut orbits = Vec::new();
-    for (k, point) in input.starts.iter().enumerate() {
+        let against = match &input.against {
+            None => None,
+            Some(Against::Function(l, _)) if args.unreduced => {
+                bail!("--unreduced is for an angle on the horizontal axis, and {l} is a function")
+            }
+            Some(Against::Function(l, f)) => Some(Axis::Function(function(l, f)?)),
+            Some(Against::Angle(label, v)) => Some(Axis::Angle {
+                label: match args.unreduced {
+                    false => format!("{label} (mod 2π)"),
+                    true => format!("{label} (not reduced mod 2π)"),
+                },
+                index: v.index(),
+                reduced: !args.unreduced,
+            }),
+        };
+        let section = input
+            .section
+            .as_ref()
+            .map(|(l, f)| function(l, f))
+            .transpose()?;
+        Ok(Plotted {
+            rows,
+            against,
+            section,
+        })
+    }
+
+    /// How the points are drawn: as dots at a Poincaré section, else as lines.
+    fn style(&self) -> Style {
+        match self.section {
+            Some(_) => Style::Dots,
+            None => Style::Lines,
+        }
+    }
+}
+
+/// What following the flow from each starting point takes, to make its [`Orbit`].
+struct Integration<'a> {
+    flow: &'a Flow,
+    plotted: &'a Plotted,
+    args: &'a PlotArgs,
+    vars: &'a Vars,
+    /// Whether there are several starting points, whose orbits are then numbered.
+    several: bool,
+}
+
+impl Integration<'_> {
+    /// The orbit from `point`, the starting point `k` (counted from 0), with every value it
+    /// draws or tables.
+    fn orbit(&self, k: usize, point: &[(Var, StartValue)]) -> anyhow::Result<Orbit> {
         // `[2]` after each label when there are several starting points.
-        let mark = if several {
+        let mark = if self.several {
             format!(" [{}]", k + 1)
         } else {
             String::new()
         };
-        let mut start = vec![0.0; file.system().vars().len()];
-        for (v, value) in point {
-            let angle = file.system().vars().variable(*v).kind() == VarKind::Angle;
-            start[v.index()] = value.to_f64(angle).with_context(|| {
-                let name = file.system().vars().variable(*v).unicode();
-                format!("the starting value of {name}{mark}")
-            })?;
-        }
-        let (steps, samples) = (args.steps as usize, args.samples as usize);
-        let orbit = || match several {
-            true => format!("the orbit from starting point {}", k + 1),
-            false => "the orbit".to_string(),
-        };
-        let path = match &section {
-            None => flow.integrate(&start, args.time, steps, samples),
-            Some(f) => flow.section(&start, args.time, steps, &f.numeric, samples),
-        }
-        .with_context(orbit)?;
-        if path.times.is_empty() {
-            let label = section.as_ref().map_or("", |f| f.label.as_str());
-            bail!(
-                "{label} does not cross zero upward from t = 0 to {}{}: no point of the section \
-                 (a longer --time, or another section)",
-                short(args.time),
-                if several {
-                    format!(" from the starting point {}", k + 1)
-                } else {
-                    String::new()
-                }
-            );
-        }
+        let path = self.path(k, &self.start(point, &mark)?)?;
         // Every value drawn or tabled is finite: a function that overflows along the orbit
         // (a high power) is named with the time.
         let values = |f: &Function| -> anyhow::Result<Vec<f64>> {
@@ -334,17 +368,19 @@ pub fn run(job: &PlotJob) -> anyhow::Result<bool> {
                     "{}{mark} is not a finite floating-point number at t = {} of {}",
                     f.label,
                     short(path.times[i]),
-                    orbit()
+                    self.orbit_name(k)
                 ),
             }
         };
-        orbits.push(Orbit {
-            axis: match &against {
+        Ok(Orbit {
+            axis: match &self.plotted.against {
                 Some(Axis::Function(f)) => values(f)?,
                 Some(Axis::Angle { index, .. }) => path.values(|s| s[*index]),
                 None => path.times.clone(),
             },
-            rows: rows
+            rows: self
+                .plotted
+                .rows
                 .iter()
                 .map(|f| {
                     Ok(Series {
@@ -354,52 +390,130 @@ pub fn run(job: &PlotJob) -> anyhow::Result<bool> {
                 })
                 .collect::<anyhow::Result<_>>()?,
             times: path.times,
-        });
+        })
     }
-    let title = match input.parameters.as_str() {
-        "" => file.name().to_string(),
-        p => format!("{} at {p}", file.name()),
-    };
-    let style = match section {
-        Some(_) => Style::Dots,
-        None => Style::Lines,
-    };
-    let reduced = against.as_ref().is_some_and(Axis::reduced);
-    let drawn = curves(&orbits, reduced, style);
-    let axis_label = against.as_ref().map_or("t", Axis::label);
-    let svg = chart::svg(&title, axis_label, &drawn, style)?;
-    let to_stdout = args.output.as_os_str() == "-";
-    if to_stdout {
+
+    /// The state at `t = 0` from the starting point `point`, whose labels take `mark`.
+    fn start(&self, point: &[(Var, StartValue)], mark: &str) -> anyhow::Result<Vec<f64>> {
+        let mut start = vec![0.0; self.vars.len()];
+        for (v, value) in point {
+            let angle = self.vars.variable(*v).kind() == VarKind::Angle;
+            start[v.index()] = value.to_f64(angle).with_context(|| {
+                let name = self.vars.variable(*v).unicode();
+                format!("the starting value of {name}{mark}")
+            })?;
+        }
+        Ok(start)
+    }
+
+    /// The states kept along the orbit from `start`, the starting point `k`: at the samples,
+    /// or where the section crosses zero upward, an error when it never does.
+    fn path(&self, k: usize, start: &[f64]) -> anyhow::Result<Trajectory> {
+        let args = self.args;
+        let (steps, samples) = (args.steps as usize, args.samples as usize);
+        let path = match &self.plotted.section {
+            None => self.flow.integrate(start, args.time, steps, samples),
+            Some(f) => self
+                .flow
+                .section(start, args.time, steps, &f.numeric, samples),
+        }
+        .with_context(|| self.orbit_name(k))?;
+        if path.times.is_empty() {
+            let label = self
+                .plotted
+                .section
+                .as_ref()
+                .map_or("", |f| f.label.as_str());
+            bail!(
+                "{label} does not cross zero upward from t = 0 to {}{}: no point of the section \
+                 (a longer --time, or another section)",
+                short(args.time),
+                if self.several {
+                    format!(" from the starting point {}", k + 1)
+                } else {
+                    String::new()
+                }
+            );
+        }
+        Ok(path)
+    }
+
+    /// The orbit from the starting point `k` (counted from 0) as messages name it.
+    fn orbit_name(&self, k: usize) -> String {
+        match self.several {
+            true => format!("the orbit from starting point {}", k + 1),
+            false => "the orbit".to_string(),
+        }
+    }
+}
+
+/// Whether `-o -` sends the chart to standard output (and the table to standard error).
+fn chart_to_stdout(args: &PlotArgs) -> bool {
+    args.output.as_os_str() == "-"
+}
+
+/// Draws the chart of `orbits` and writes it to `-o`'s file or to standard output.
+fn write_chart(
+    args: &PlotArgs,
+    title: &str,
+    plotted: &Plotted,
+    orbits: &[Orbit],
+) -> anyhow::Result<()> {
+    let style = plotted.style();
+    let against = plotted.against.as_ref();
+    let reduced = against.is_some_and(Axis::reduced);
+    let drawn = curves(orbits, reduced, style);
+    let axis_label = against.map_or("t", Axis::label);
+    let svg = chart::svg(title, axis_label, &drawn, style)?;
+    if chart_to_stdout(args) {
         emit(&svg)?;
     } else {
         std::fs::write(&args.output, printable(&svg).as_bytes())
             .with_context(|| format!("cannot write {}", args.output.display()))?;
     }
-    if let Some(data) = &args.data {
-        let columns: Vec<&str> = against
-            .iter()
-            .map(Axis::label)
-            .chain(rows[1..].iter().map(|f| f.label.as_str()))
-            .collect();
-        std::fs::write(
-            data,
-            printable(&csv(&columns, against.as_ref(), &orbits)).as_bytes(),
-        )
-        .with_context(|| format!("cannot write {}", data.display()))?;
-    }
-    let section = section.as_ref().map(|f| f.label.as_str());
-    let table = match job.output.format {
-        Format::Json => json(&title, args, &orbits, section),
-        Format::Markdown => markdown(&title, &method(args, &orbits, section), &orbits),
-        _ => text(&title, &method(args, &orbits, section), &orbits),
+    Ok(())
+}
+
+/// Writes the sampled values as CSV to `--data`'s file, when it is given.
+fn write_data(args: &PlotArgs, plotted: &Plotted, orbits: &[Orbit]) -> anyhow::Result<()> {
+    let Some(data) = &args.data else {
+        return Ok(());
     };
-    if to_stdout {
+    let columns: Vec<&str> = plotted
+        .against
+        .iter()
+        .map(Axis::label)
+        .chain(plotted.rows[1..].iter().map(|f| f.label.as_str()))
+        .collect();
+    std::fs::write(
+        data,
+        printable(&csv(&columns, plotted.against.as_ref(), orbits)).as_bytes(),
+    )
+    .with_context(|| format!("cannot write {}", data.display()))?;
+    Ok(())
+}
+
+/// Prints the table of `orbits` in the job's format: to standard output, or to standard
+/// error when the chart goes there.
+fn print_table(
+    job: &PlotJob,
+    title: &str,
+    plotted: &Plotted,
+    orbits: &[Orbit],
+) -> anyhow::Result<()> {
+    let args = &job.args;
+    let section = plotted.section.as_ref().map(|f| f.label.as_str());
+    let table = match job.output.format {
+        Format::Json => json(title, args, orbits, section),
+        Format::Markdown => markdown(title, &method(args, orbits, section), orbits),
+        _ => text(title, &method(args, orbits, section), orbits),
+    };
+    if chart_to_stdout(args) {
         emit_to_stderr(&table)?;
     } else {
         emit(&table)?;
     }
-    warn_of_drift(&orbits, args)?;
-    Ok(true)
+    Ok(())
 }
 
 /// The curves drawn: each function but `H` along each orbit, against the horizontal axis; an

@@ -3,7 +3,7 @@
 
 use std::time::Instant;
 
-use brackets::search::{search, Integral, NewIntegrals, SearchOptions, SearchResult};
+use brackets::search::{search, Integral, NewIntegrals, SearchOptions, SearchResult, SearchSpace};
 use brackets::{EngineError, System};
 use trigpoly::{Expr, GaussianRational, Rational, Style, Var, VarKind, Vars};
 
@@ -134,111 +134,176 @@ fn order_letter(vars: &trigpoly::Vars) -> &'static str {
         .unwrap_or("κ")
 }
 
+/// The sentence that describes a search's space: its general monomial and the bounds on its
+/// degrees, the size of the linear problem, and what the space leaves out.
 fn space_text(r: &SearchResult) -> String {
     let k = order_letter(&r.vars);
-    let s = &r.space;
-    let space = &r.variables;
-    let name = |v: &Var| r.vars.variable(*v).unicode().to_string();
-    // One exponent letter per coordinate and momentum, in order (`x^a y^b p_x^c p_y^d`),
-    // none the name of a variable or the trigonometric order's letter.
-    let taken = |c: &char| {
-        let mut buf = [0; 4];
-        r.vars.lookup(c.encode_utf8(&mut buf)).is_some()
-    };
-    let mut letters = "abcdefghjlmnqrsuvw"
-        .chars()
-        .filter(|c| !taken(c) && c.to_string() != k);
-    let mut monomial = Vec::new();
-    let mut exponents = |vars: &[Var], absolute: bool| -> String {
-        let degree: Vec<String> = vars
+    let exponents = SpaceExponents::of(r, k);
+    let mut degrees = exponents.degrees(&r.space);
+    let (trig_factor, trig_degree) = trigonometric_factor(r, k);
+    degrees.extend(trig_degree);
+    format!(
+        "The space: `{}`{trig_factor}, with {}{}: {}{}, {} over `Q`, in {} (the largest has \
+         {}).{}",
+        exponents.monomial(),
+        degrees.join(", "),
+        symbolic_coefficients_text(r),
+        counted(r.unknowns, "unknown"),
+        dependent_monomials_text(r),
+        counted(r.equations, "linear equation"),
+        counted(r.components, "independent block"),
+        counted(r.largest_component, "unknown"),
+        left_out_text(r),
+    )
+}
+
+/// The general monomial of a search's space, with one exponent letter for each of its
+/// variables (`x^a y^b p_x^c p_y^d`), and the sums of those letters that its degrees bound.
+struct SpaceExponents {
+    /// The powers of the coordinates, radicals, momenta and Poisson variables, `x^a`.
+    numerator: Vec<String>,
+    /// The powers of the denominator atoms, `(x − y)^r`.
+    denominator: Vec<String>,
+    /// `|a| + |b|` over the coordinates, whose powers may be negative in a Laurent space.
+    positions: String,
+    /// Over the radicals, whose powers are of either sign.
+    radicals: String,
+    momenta: String,
+    poisson: String,
+    denominators: String,
+}
+
+impl SpaceExponents {
+    /// The exponents of `r`'s space, with letters that name no variable and differ from the
+    /// trigonometric order's letter `k`.
+    fn of(r: &SearchResult, k: &str) -> Self {
+        let space = &r.variables;
+        let name = |v: &Var| r.vars.variable(*v).unicode().to_string();
+        // One exponent letter per coordinate and momentum, in order (`x^a y^b p_x^c p_y^d`),
+        // none the name of a variable or the trigonometric order's letter.
+        let taken = |c: &char| {
+            let mut buf = [0; 4];
+            r.vars.lookup(c.encode_utf8(&mut buf)).is_some()
+        };
+        let mut letters = "abcdefghjlmnqrsuvw"
+            .chars()
+            .filter(|c| !taken(c) && c.to_string() != k);
+        let mut numerator = Vec::new();
+        let mut exponents = |vars: &[Var], absolute: bool| -> String {
+            let degree: Vec<String> = vars
+                .iter()
+                .zip(&mut letters)
+                .map(|(v, letter)| {
+                    numerator.push(format!("{}^{letter}", name(v)));
+                    if absolute {
+                        format!("|{letter}|")
+                    } else {
+                        letter.to_string()
+                    }
+                })
+                .collect();
+            degree.join(" + ")
+        };
+        let positions = exponents(&space.coordinates, true);
+        // Each radical `r` to a power of either sign, `r^j`.
+        let radical_vars: Vec<Var> = r.vars.radicals().collect();
+        let radicals = exponents(&radical_vars, true);
+        let momenta = exponents(&space.momenta, false);
+        let poisson = exponents(&space.poisson, false);
+        // Each denominator atom `(x − y)` to a negative power, `1/(x − y)^r`.
+        let atoms: Vec<Var> = r.vars.denominators().collect();
+        let mut denominator = Vec::new();
+        let denominators: Vec<String> = atoms
             .iter()
             .zip(&mut letters)
             .map(|(v, letter)| {
-                monomial.push(format!("{}^{letter}", name(v)));
-                if absolute {
-                    format!("|{letter}|")
-                } else {
-                    letter.to_string()
-                }
+                denominator.push(format!("{}^{letter}", name(v)));
+                letter.to_string()
             })
             .collect();
-        degree.join(" + ")
-    };
-    let positions = exponents(&space.coordinates, true);
-    // Each radical `r` to a power of either sign, `r^j`.
-    let radical_vars: Vec<Var> = r.vars.radicals().collect();
-    let radicals = exponents(&radical_vars, true);
-    let momenta = exponents(&space.momenta, false);
-    let poisson = exponents(&space.poisson, false);
-    // Each denominator atom `(x − y)` to a negative power, `1/(x − y)^r`.
-    let atoms: Vec<Var> = r.vars.denominators().collect();
-    let mut over = Vec::new();
-    let denominators: Vec<String> = atoms
-        .iter()
-        .zip(&mut letters)
-        .map(|(v, letter)| {
-            over.push(format!("{}^{letter}", name(v)));
-            letter.to_string()
-        })
-        .collect();
-    let denominators = denominators.join(" + ");
-    let monomial = match (monomial.is_empty(), over.is_empty()) {
-        (true, true) => "1".to_string(),
-        (true, false) => format!("1/({})", over.join(" ")),
-        (false, true) => monomial.join(" "),
-        (false, false) => format!("{}/({})", monomial.join(" "), over.join(" ")),
-    };
-    let laurent = if s.laurent {
-        " (negative powers of the coordinates allowed)"
-    } else {
-        ""
-    };
-    let symbolic = match &r.module {
-        Some(m) => format!(
-            ", coefficients polynomials of degree `≤ {}` in `{}`",
-            s.parameters_degree,
-            parameter_names(&r.vars, &m.parameters)
-        ),
-        None => String::new(),
-    };
-    let mut degrees = Vec::new();
-    if !momenta.is_empty() {
-        degrees.push(format!("momenta degree `{momenta} ≤ {}`", s.momenta_degree));
+        SpaceExponents {
+            numerator,
+            denominator,
+            positions,
+            radicals,
+            momenta,
+            poisson,
+            denominators: denominators.join(" + "),
+        }
     }
-    if !positions.is_empty() {
-        degrees.push(format!(
-            "positions degree `{positions} ≤ {}`{laurent}",
-            s.positions_degree
-        ));
+
+    /// The general monomial, `x^a y^b/((x − y)^r)`, or `1` in a space of no such variables.
+    fn monomial(&self) -> String {
+        let (numerator, denominator) = (&self.numerator, &self.denominator);
+        match (numerator.is_empty(), denominator.is_empty()) {
+            (true, true) => "1".to_string(),
+            (true, false) => format!("1/({})", denominator.join(" ")),
+            (false, true) => numerator.join(" "),
+            (false, false) => format!("{}/({})", numerator.join(" "), denominator.join(" ")),
+        }
     }
-    if !poisson.is_empty() {
-        degrees.push(format!(
-            "degree `{poisson} ≤ {}` in the Poisson variables",
-            s.poisson_degree
-        ));
+
+    /// The bound on each degree of the space `s` but the trigonometric order, for the kinds
+    /// of variables it has.
+    fn degrees(&self, s: &SearchSpace) -> Vec<String> {
+        let laurent = if s.laurent {
+            " (negative powers of the coordinates allowed)"
+        } else {
+            ""
+        };
+        let mut degrees = Vec::new();
+        if !self.momenta.is_empty() {
+            degrees.push(format!(
+                "momenta degree `{} ≤ {}`",
+                self.momenta, s.momenta_degree
+            ));
+        }
+        if !self.positions.is_empty() {
+            degrees.push(format!(
+                "positions degree `{} ≤ {}`{laurent}",
+                self.positions, s.positions_degree
+            ));
+        }
+        if !self.poisson.is_empty() {
+            degrees.push(format!(
+                "degree `{} ≤ {}` in the Poisson variables",
+                self.poisson, s.poisson_degree
+            ));
+        }
+        if !self.radicals.is_empty() {
+            degrees.push(format!(
+                "degree `{} ≤ {}` in the radicals",
+                self.radicals, s.radicals_degree
+            ));
+        }
+        if !self.denominators.is_empty() {
+            degrees.push(format!(
+                "degree `{} ≤ {}` in the denominators",
+                self.denominators, s.denominators_degree
+            ));
+        }
+        degrees
     }
-    if !radicals.is_empty() {
-        degrees.push(format!(
-            "degree `{radicals} ≤ {}` in the radicals",
-            s.radicals_degree
-        ));
-    }
-    if !denominators.is_empty() {
-        degrees.push(format!(
-            "degree `{denominators} ≤ {}` in the denominators",
-            s.denominators_degree
-        ));
-    }
+}
+
+/// The trigonometric functions that multiply the monomial (`` times `1, cos kθ, sin kθ` ``),
+/// with the bound on their order, written with the order's letter `k`; nothing in a space
+/// without angles or of order 0.
+fn trigonometric_factor(r: &SearchResult, k: &str) -> (String, Option<String>) {
+    let s = &r.space;
+    let name = |v: &Var| r.vars.variable(*v).unicode().to_string();
     let angles = match s.trig_degree {
         0 => &[][..],
-        _ => space.angles.as_slice(),
+        _ => r.variables.angles.as_slice(),
     };
-    let trig_factor = match angles {
-        [] => String::new(),
+    match angles {
+        [] => (String::new(), None),
         [theta] => {
             let theta = name(theta);
-            degrees.push(format!("trigonometric order `{k} ≤ {}`", s.trig_degree));
-            format!(" times `1, cos {k}{theta}, sin {k}{theta}`")
+            (
+                format!(" times `1, cos {k}{theta}, sin {k}{theta}`"),
+                Some(format!("trigonometric order `{k} ≤ {}`", s.trig_degree)),
+            )
         }
         angles => {
             let sum = |f: &dyn Fn(usize, &Var) -> String| {
@@ -250,17 +315,57 @@ fn space_text(r: &SearchResult) -> String {
             };
             let phase = sum(&|j, v| format!("{k}_{j} {}", name(v))).join(" + ");
             let order = sum(&|j, _| format!("|{k}_{j}|")).join(" + ");
-            degrees.push(format!("trigonometric order `{order} ≤ {}`", s.trig_degree));
-            format!(" times `1, cos({phase}), sin({phase})`")
+            (
+                format!(" times `1, cos({phase}), sin({phase})`"),
+                Some(format!("trigonometric order `{order} ≤ {}`", s.trig_degree)),
+            )
         }
-    };
-    // An angle's momentum that the condition fixes is left out of the space.
-    let left_out: Vec<String> = space
+    }
+}
+
+/// With parameters kept symbolic, what the coefficients are: polynomials in them of a bounded
+/// degree.
+fn symbolic_coefficients_text(r: &SearchResult) -> String {
+    match &r.module {
+        Some(m) => format!(
+            ", coefficients polynomials of degree `≤ {}` in `{}`",
+            r.space.parameters_degree,
+            parameter_names(&r.vars, &m.parameters)
+        ),
+        None => String::new(),
+    }
+}
+
+/// With denominators or radicals, the note that a monomial equal as a function to a sum of
+/// simpler ones is left out.
+fn dependent_monomials_text(r: &SearchResult) -> String {
+    let first_radical = trigpoly::Expr::radicals(&r.vars)
+        .ok()
+        .and_then(|radicals| radicals.into_iter().next());
+    match (r.vars.denominators().next().is_none(), first_radical) {
+        (true, None) => String::new(),
+        (false, _) => " (with denominators the monomials are not independent, \
+                        `x/(x − y) − y/(x − y) = 1`: each one equal as a function to a sum of \
+                        simpler ones is left out)"
+            .to_string(),
+        (true, Some((radical, radicand))) => format!(
+            " (with radicals the monomials are not independent, `{}² = {radicand}`: each one \
+             equal as a function to a sum of simpler ones is left out)",
+            r.vars.variable(radical).unicode()
+        ),
+    }
+}
+
+/// The sentence that an angle's momentum that the condition fixes is left out of the space
+/// (so is a Poisson variable it fixes), or nothing.
+fn left_out_text(r: &SearchResult) -> String {
+    let left_out: Vec<String> = r
+        .variables
         .left_out
         .iter()
-        .map(|p| format!("`{}`", name(p)))
+        .map(|p| format!("`{}`", r.vars.variable(*p).unicode()))
         .collect();
-    let left_out = match left_out.as_slice() {
+    match left_out.as_slice() {
         [] => String::new(),
         [p] => format!(
             " {p} is left out: the condition fixes it, and every function of it is an integral."
@@ -270,33 +375,7 @@ fn space_text(r: &SearchResult) -> String {
              integral.",
             ps.join(", ")
         ),
-    };
-    // With denominators or radicals, a monomial equal as a function to a sum of simpler ones
-    // is left out.
-    let first_radical = trigpoly::Expr::radicals(&r.vars)
-        .ok()
-        .and_then(|radicals| radicals.into_iter().next());
-    let dependent = match (atoms.is_empty(), first_radical) {
-        (true, None) => String::new(),
-        (false, _) => " (with denominators the monomials are not independent, \
-                        `x/(x − y) − y/(x − y) = 1`: each one equal as a function to a sum of \
-                        simpler ones is left out)"
-            .to_string(),
-        (true, Some((radical, radicand))) => format!(
-            " (with radicals the monomials are not independent, `{}² = {radicand}`: each one \
-             equal as a function to a sum of simpler ones is left out)",
-            name(&radical)
-        ),
-    };
-    format!(
-        "The space: `{monomial}`{trig_factor}, with {}{symbolic}: {}{dependent}, {} over `Q`, in {} \
-         (the largest has {}).{left_out}",
-        degrees.join(", "),
-        counted(r.unknowns, "unknown"),
-        counted(r.equations, "linear equation"),
-        counted(r.components, "independent block"),
-        counted(r.largest_component, "unknown")
-    )
+    }
 }
 
 /// ` By degree in the momenta: ≤ 0: 1, ≤ 1: 6.`, `dims[j]` integrals of degree `≤ j` (`what`:

@@ -322,180 +322,258 @@ fn prose_words(toks: &[Tok]) -> Vec<bool> {
     prose
 }
 
+/// Translates a formula in the paper's unicode notation into LaTeX math, token by token.
 fn translate(s: &str) -> String {
     let toks = tokenize(s);
     let prose = prose_words(&toks);
-    let mut out = String::new();
-    // Each open brace: whether it is a script's group (not an escaped brace), and whether a
-    // subscript's.
-    let mut braces: Vec<(bool, bool)> = Vec::new();
-    // Where the last subscript group ended in `out`: a second subscript right after it, the
-    // indices of a family named `K₁` or `K_a` (`K₁_{1,2}`), joins it after a semicolon,
-    // `K_{1;1,2}`, as LaTeX refuses a double subscript.
-    let mut subscript_end = None;
-    let mut joining = false;
-    let mut k = 0;
-    while k < toks.len() {
-        match &toks[k] {
-            Tok::Space => {
-                let before = k > 0 && prose[k - 1];
-                let after = prose.get(k + 1) == Some(&true);
-                if before || after {
-                    if out.ends_with(' ') {
-                        out.pop();
-                    }
-                    out.push_str(r"\ ");
-                } else if !out.ends_with(' ') {
-                    out.push(' ');
+    Translation::new(&toks, &prose).run()
+}
+
+/// A formula being translated: its tokens and which of them are prose, the LaTeX written so
+/// far, and what its braces and subscripts left open.
+struct Translation<'a> {
+    toks: &'a [Tok],
+    prose: &'a [bool],
+    /// The token at hand.
+    k: usize,
+    out: String,
+    /// Each open brace: whether it is a script's group (not an escaped brace), and whether a
+    /// subscript's.
+    braces: Vec<(bool, bool)>,
+    /// Where the last subscript group ended in `out`: a second subscript right after it, the
+    /// indices of a family named `K₁` or `K_a` (`K₁_{1,2}`), joins it after a semicolon,
+    /// `K_{1;1,2}`, as LaTeX refuses a double subscript.
+    subscript_end: Option<usize>,
+    /// Whether the next brace opens the group of a second subscript that joins the last one.
+    joining: bool,
+}
+
+impl<'a> Translation<'a> {
+    fn new(toks: &'a [Tok], prose: &'a [bool]) -> Self {
+        Translation {
+            toks,
+            prose,
+            k: 0,
+            out: String::new(),
+            braces: Vec::new(),
+            subscript_end: None,
+            joining: false,
+        }
+    }
+
+    /// The LaTeX of the whole formula, with every brace closed.
+    fn run(mut self) -> String {
+        let toks = self.toks;
+        while self.k < toks.len() {
+            match &toks[self.k] {
+                Tok::Space => self.space(),
+                Tok::Word(w, _) if self.prose[self.k] => self.prose_run(w),
+                Tok::Word(w, d) => self.word(w, d),
+                Tok::Char(c, _)
+                    if SUPERSCRIPTS.contains(*c) || *c == '⁻' || SUBSCRIPTS.contains(*c) =>
+                {
+                    // The run of digits ends at the token after it, where the next one starts.
+                    self.script_digits(*c);
+                    continue;
+                }
+                Tok::Char(c, accent) => self.character(*c, *accent),
+            }
+            self.k += 1;
+        }
+        // Close anything left open so the output always balances.
+        while let Some((group, _)) = self.braces.pop() {
+            self.out.push_str(if group { "}" } else { "" });
+        }
+        self.out.trim_end().to_string()
+    }
+
+    /// A run of spaces: one space, or `\ ` beside prose, whose spaces math mode would drop.
+    fn space(&mut self) {
+        let before = self.k > 0 && self.prose[self.k - 1];
+        let after = self.prose.get(self.k + 1) == Some(&true);
+        if before || after {
+            if self.out.ends_with(' ') {
+                self.out.pop();
+            }
+            self.out.push_str(r"\ ");
+        } else if !self.out.ends_with(' ') {
+            self.out.push(' ');
+        }
+    }
+
+    /// A run of prose words from `first`, the one at hand, merged into one `\text{…}`.
+    fn prose_run(&mut self, first: &str) {
+        let toks = self.toks;
+        let mut words = vec![first.to_string()];
+        while toks.get(self.k + 1) == Some(&Tok::Space) && self.prose.get(self.k + 2) == Some(&true)
+        {
+            if let Tok::Word(w2, _) = &toks[self.k + 2] {
+                words.push(w2.clone());
+            }
+            self.k += 2;
+        }
+        self.out.push_str(&format!(r"\text{{{}}}", words.join(" ")));
+    }
+
+    /// A word of mathematics: a function's command or a name, with its `digits` as its
+    /// subscript (`G1` is `G_{1}`).
+    fn word(&mut self, w: &str, digits: &str) {
+        match FUNCTIONS.iter().find(|f| f.0 == w) {
+            Some(f) => push_cmd(&mut self.out, f.1),
+            None => self.out.push_str(w),
+        }
+        if !digits.is_empty() {
+            self.out.push_str(&format!("_{{{digits}}}"));
+            self.subscript_end = Some(self.out.len());
+        }
+    }
+
+    /// One character, with the `accent` over it, other than a script digit: a brace, a script
+    /// sign, a letter of a name or a symbol.
+    fn character(&mut self, c: char, accent: Option<&'static str>) {
+        match c {
+            '{' => self.open_brace(),
+            '}' => self.close_brace(),
+            // A fractional power as the echo writes it, `(x² + y²)^(3/2)`, is the braced
+            // exponent `^{3/2}`.
+            '^' if let Some((exponent, taken)) = fraction_exponent(&self.toks[self.k + 1..]) => {
+                self.out.push_str(&format!("^{{{exponent}}}"));
+                self.k += taken;
+            }
+            '_' | '^' => self.script(c),
+            _ if greek(c).is_some() || c == 'ħ' || c == 'ℓ' => {
+                self.letter_with_digits(c, accent)
+            }
+            _ => push_char(&mut self.out, c, accent),
+        }
+    }
+
+    /// An opening brace: the group of a script, or of a second subscript that joins the last
+    /// one, else an escaped brace.
+    fn open_brace(&mut self) {
+        if self.joining {
+            self.braces.push((true, true));
+            self.joining = false;
+            return;
+        }
+        let group = self.out.ends_with('_') || self.out.ends_with('^');
+        self.braces.push((group, self.out.ends_with('_')));
+        self.out.push_str(if group { "{" } else { r"\{" });
+    }
+
+    /// A closing brace: the end of a script's group, else an escaped brace.
+    fn close_brace(&mut self) {
+        match self.braces.pop() {
+            Some((true, subscript)) => {
+                self.out.push('}');
+                if subscript {
+                    self.subscript_end = Some(self.out.len());
                 }
             }
-            Tok::Word(w, d) if prose[k] => {
-                // Merge a run of prose words into one \text{…}.
-                let mut words = vec![w.clone()];
-                let _ = d;
-                while toks.get(k + 1) == Some(&Tok::Space) && prose.get(k + 2) == Some(&true) {
-                    if let Tok::Word(w2, _) = &toks[k + 2] {
-                        words.push(w2.clone());
-                    }
-                    k += 2;
-                }
-                out.push_str(&format!(r"\text{{{}}}", words.join(" ")));
+            _ => self.out.push_str(r"\}"),
+        }
+    }
+
+    /// The script sign `c`, `_` or `^`, and the unbraced script after it, braced; a subscript
+    /// right after another joins it.
+    fn script(&mut self, c: char) {
+        let join = c == '_' && self.subscript_end == Some(self.out.len());
+        match join {
+            true => {
+                self.out.pop();
+                self.out.push(';');
             }
-            Tok::Word(w, d) => {
-                match FUNCTIONS.iter().find(|f| f.0 == w) {
-                    Some(f) => push_cmd(&mut out, f.1),
-                    None => out.push_str(w),
-                }
-                if !d.is_empty() {
-                    out.push_str(&format!("_{{{d}}}"));
-                    subscript_end = Some(out.len());
-                }
+            false => self.out.push(c),
+        }
+        let pieces = self.script_pieces(c);
+        match (join, pieces.is_empty()) {
+            (false, true) => {}
+            (false, false) => self.out.push_str(&format!("{{{pieces}}}")),
+            (true, false) => self.out.push_str(&format!("{pieces}}}")),
+            (true, true) if self.toks.get(self.k + 1) == Some(&Tok::Char('{', None)) => {
+                self.joining = true;
             }
-            Tok::Char(c, accent) => {
-                let c = *c;
-                match c {
-                    '{' if joining => {
-                        braces.push((true, true));
-                        joining = false;
-                    }
-                    '{' => {
-                        let group = out.ends_with('_') || out.ends_with('^');
-                        braces.push((group, out.ends_with('_')));
-                        out.push_str(if group { "{" } else { r"\{" });
-                    }
-                    '}' => match braces.pop() {
-                        Some((true, subscript)) => {
-                            out.push('}');
-                            if subscript {
-                                subscript_end = Some(out.len());
-                            }
-                        }
-                        _ => out.push_str(r"\}"),
-                    },
-                    // A fractional power as the echo writes it, `(x² + y²)^(3/2)`, is the
-                    // braced exponent `^{3/2}`.
-                    '^' if fraction_exponent(&toks[k + 1..]).is_some() => {
-                        let (exponent, taken) = fraction_exponent(&toks[k + 1..]).expect("tested");
-                        out.push_str(&format!("^{{{exponent}}}"));
-                        k += taken;
-                    }
-                    '_' | '^' => {
-                        let join = c == '_' && subscript_end == Some(out.len());
-                        match join {
-                            true => {
-                                out.pop();
-                                out.push(';');
-                            }
-                            false => out.push(c),
-                        }
-                        // `p_x`, `a_ij`, `A^m`: an unbraced script takes a run of letters; a
-                        // name with more scripts, `p_x_0` or `P_1_1`, takes them as one
-                        // subscript, `p_{x,0}` (LaTeX refuses a double subscript).
-                        let mut pieces = Vec::new();
-                        while let Some((piece, taken)) = script_piece(&toks[k + 1..]) {
-                            pieces.push(piece);
-                            k += taken;
-                            if c != '_' || toks.get(k + 1) != Some(&Tok::Char('_', None)) {
-                                break;
-                            }
-                            if script_piece(&toks[k + 2..]).is_none() {
-                                break;
-                            }
-                            k += 1;
-                        }
-                        let pieces = pieces.join(",");
-                        match (join, pieces.is_empty()) {
-                            (false, true) => {}
-                            (false, false) => out.push_str(&format!("{{{pieces}}}")),
-                            (true, false) => out.push_str(&format!("{pieces}}}")),
-                            (true, true) if toks.get(k + 1) == Some(&Tok::Char('{', None)) => {
-                                joining = true;
-                            }
-                            (true, true) => out.push('}'),
-                        }
-                        if c == '_' && !pieces.is_empty() {
-                            subscript_end = Some(out.len());
-                        }
-                    }
-                    _ if SUPERSCRIPTS.contains(c) || c == '⁻' || SUBSCRIPTS.contains(c) => {
-                        let sup = !SUBSCRIPTS.contains(c);
-                        let mut run = String::new();
-                        while let Some(Tok::Char(c2, None)) = toks.get(k) {
-                            let digit = if sup {
-                                SUPERSCRIPTS.chars().position(|d| d == *c2)
-                            } else {
-                                SUBSCRIPTS.chars().position(|d| d == *c2)
-                            };
-                            match (digit, *c2 == '⁻' && sup) {
-                                (Some(d), _) => run.push_str(&d.to_string()),
-                                (None, true) => run.push('-'),
-                                _ => break,
-                            }
-                            k += 1;
-                        }
-                        match sup || subscript_end != Some(out.len()) {
-                            true => {
-                                out.push_str(&format!("{}{{{run}}}", if sup { '^' } else { '_' }))
-                            }
-                            false => {
-                                out.pop();
-                                out.push_str(&format!(";{run}}}"));
-                            }
-                        }
-                        if !sup {
-                            subscript_end = Some(out.len());
-                        }
-                        continue;
-                    }
-                    // A Greek letter, `ħ` or `ℓ` with digits after it is a name, `γ1`,
-                    // whose digits are its subscript as a word's are (`\gamma_{1}`, as the
-                    // variable prints; `\gamma 1` read as γ times 1).
-                    _ if greek(c).is_some() || c == 'ħ' || c == 'ℓ' => {
-                        push_char(&mut out, c, *accent);
-                        let mut digits = String::new();
-                        while let Some(Tok::Char(d, None)) = toks.get(k + 1) {
-                            if !d.is_ascii_digit() {
-                                break;
-                            }
-                            digits.push(*d);
-                            k += 1;
-                        }
-                        if !digits.is_empty() {
-                            out.push_str(&format!("_{{{digits}}}"));
-                            subscript_end = Some(out.len());
-                        }
-                    }
-                    _ => push_char(&mut out, c, *accent),
-                }
+            (true, true) => self.out.push('}'),
+        }
+        if c == '_' && !pieces.is_empty() {
+            self.subscript_end = Some(self.out.len());
+        }
+    }
+
+    /// The LaTeX of the unbraced script after the sign `c`, its pieces separated by commas.
+    /// `p_x`, `a_ij`, `A^m`: an unbraced script takes a run of letters; a name with more
+    /// scripts, `p_x_0` or `P_1_1`, takes them as one subscript, `p_{x,0}` (LaTeX refuses a
+    /// double subscript).
+    fn script_pieces(&mut self, c: char) -> String {
+        let toks = self.toks;
+        let mut pieces = Vec::new();
+        while let Some((piece, taken)) = script_piece(&toks[self.k + 1..]) {
+            pieces.push(piece);
+            self.k += taken;
+            if c != '_' || toks.get(self.k + 1) != Some(&Tok::Char('_', None)) {
+                break;
+            }
+            if script_piece(&toks[self.k + 2..]).is_none() {
+                break;
+            }
+            self.k += 1;
+        }
+        pieces.join(",")
+    }
+
+    /// A run of superscript digits (and `⁻`), `x⁻²`, or of subscript digits, `q₁`, that starts
+    /// with `c` at the token at hand, up to the token after it; a subscript right after
+    /// another joins it.
+    fn script_digits(&mut self, c: char) {
+        let toks = self.toks;
+        let sup = !SUBSCRIPTS.contains(c);
+        let mut run = String::new();
+        while let Some(Tok::Char(c2, None)) = toks.get(self.k) {
+            let digit = if sup {
+                SUPERSCRIPTS.chars().position(|d| d == *c2)
+            } else {
+                SUBSCRIPTS.chars().position(|d| d == *c2)
+            };
+            match (digit, *c2 == '⁻' && sup) {
+                (Some(d), _) => run.push_str(&d.to_string()),
+                (None, true) => run.push('-'),
+                _ => break,
+            }
+            self.k += 1;
+        }
+        match sup || self.subscript_end != Some(self.out.len()) {
+            true => self
+                .out
+                .push_str(&format!("{}{{{run}}}", if sup { '^' } else { '_' })),
+            false => {
+                self.out.pop();
+                self.out.push_str(&format!(";{run}}}"));
             }
         }
-        k += 1;
+        if !sup {
+            self.subscript_end = Some(self.out.len());
+        }
     }
-    // Close anything left open so the output always balances.
-    while let Some((group, _)) = braces.pop() {
-        out.push_str(if group { "}" } else { "" });
+
+    /// A Greek letter, `ħ` or `ℓ`, `c`: with digits after it, it is a name, `γ1`, whose digits
+    /// are its subscript as a word's are (`\gamma_{1}`, as the variable prints; `\gamma 1`
+    /// read as γ times 1).
+    fn letter_with_digits(&mut self, c: char, accent: Option<&'static str>) {
+        let toks = self.toks;
+        push_char(&mut self.out, c, accent);
+        let mut digits = String::new();
+        while let Some(Tok::Char(d, None)) = toks.get(self.k + 1) {
+            if !d.is_ascii_digit() {
+                break;
+            }
+            digits.push(*d);
+            self.k += 1;
+        }
+        if !digits.is_empty() {
+            self.out.push_str(&format!("_{{{digits}}}"));
+            self.subscript_end = Some(self.out.len());
+        }
     }
-    out.trim_end().to_string()
 }
 
 /// A parenthesized fraction of integers, `(3/2)` or `(−1/2)`, at the start of `toks`: its

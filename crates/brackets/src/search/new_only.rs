@@ -10,7 +10,7 @@ use crate::modular::{self, Echelon, Field, Fp, SparseVec};
 use crate::system::System;
 
 use super::locate::{ClearedBasis, Locator};
-use super::options::SearchOptions;
+use super::options::{SearchOptions, SearchSpace};
 use super::parameters::{
     fix_parameters, free_parameters, without_parameter_denominators, Multiple,
 };
@@ -18,6 +18,9 @@ use super::problem::{Problem, Slot};
 use super::proof::{is_phase_free, lead};
 use super::result::{parameter_text, Integral, NewIntegrals, SpaceVariables};
 
+/// Which integrals of `basis` (with coordinates `kernel`) are new: those that no known
+/// integral, constant, product of integrals of lower grade or parameter multiple (`multiples`)
+/// generates, decided modulo p unless `options.exact_complement`, and over Q where that fails.
 pub(super) fn new_integrals(
     system: &System,
     problem: &Problem,
@@ -28,20 +31,8 @@ pub(super) fn new_integrals(
     multiples: &[Multiple],
 ) -> Result<NewIntegrals, EngineError> {
     let space = &options.space;
-    // With denominator atoms or radicals a function of the space may be written in other
-    // monomials than the unknowns' (and a product's powers of `1/D` add up, `r · r = R`): it
-    // is located through the cleared images of the basis integrals instead.
-    let (atoms, radicals) = (
-        system.space().denominator_atoms(),
-        system.space().radicals(),
-    );
-    let related = !atoms.is_empty() || !radicals.is_empty();
-    let locator = match related {
-        false => Locator::Monomials(problem),
-        true => Locator::Cleared(Box::new(ClearedBasis::new(
-            problem, atoms, radicals, parameters, kernel,
-        )?)),
-    };
+    let related = has_related_monomials(system);
+    let locator = locator(system, problem, parameters, kernel)?;
     // Known integrals: named real functions that are integrals, restricted to the condition.
     let KnownIntegrals {
         names: known_names,
@@ -52,74 +43,218 @@ pub(super) fn new_integrals(
     // integrals of grade < g (known or found) and the parameter multiples of integrals of
     // grade ≤ g.
     let grading = Grading::new(&problem.variables, space.trig_degree).with_stand_ins(&problem.vars);
+    let gens = known_and_basis_generators(system, problem, &grading, &known, basis)?;
+    let grades: Vec<i64> = basis.iter().map(|b| grading.grade(&b.fixed)).collect();
+    let complement = Complement {
+        locator: &locator,
+        problem,
+        kernel,
+        known: &known,
+        multiples,
+        multiple_grades: multiple_grades(problem, &grading, multiples)?,
+        gens,
+        bounds: Size::bounds(space),
+        // With atoms or radicals the degrees in the coordinates, the denominators and the
+        // radicals bound only how many factors a product has, as in a Laurent space:
+        // `x/(x − y) · y/(x − y)` may equal a function of the space written in fewer of them.
+        laurent: space.laurent || related,
+        leads: Leads::of(kernel, problem.unknowns.len()),
+        order: by_grade(&grades),
+        grades,
+        max_products: options.max_products,
+    };
+    let (new, products) = complement.new_and_products(options.exact_complement)?;
+    Ok(NewIntegrals {
+        known: known_names,
+        generated: basis.len() - new.len(),
+        new,
+        products,
+    })
+}
+
+/// Whether the space's monomials are related as functions: with denominator atoms or
+/// radicals a function of the space may be written in other monomials than the unknowns' (and
+/// a product's powers of `1/D` add up, `r · r = R`).
+fn has_related_monomials(system: &System) -> bool {
+    !system.space().denominator_atoms().is_empty() || !system.space().radicals().is_empty()
+}
+
+/// How functions are located in the space: by their monomials, or, where the monomials are
+/// related ([`has_related_monomials`]), through the cleared images of the basis integrals.
+fn locator<'a>(
+    system: &System,
+    problem: &'a Problem,
+    parameters: &[(Var, Rational)],
+    kernel: &[SparseVec<Rational>],
+) -> Result<Locator<'a>, EngineError> {
+    let (atoms, radicals) = (
+        system.space().denominator_atoms(),
+        system.space().radicals(),
+    );
+    Ok(match has_related_monomials(system) {
+        false => Locator::Monomials(problem),
+        true => Locator::Cleared(Box::new(ClearedBasis::new(
+            problem, atoms, radicals, parameters, kernel,
+        )?)),
+    })
+}
+
+/// The generators of the known integrals and of the basis integrals, but those that are
+/// multiples of others by the parameters that nothing holds ([`without_parameter_multiples`]).
+fn known_and_basis_generators(
+    system: &System,
+    problem: &Problem,
+    grading: &Grading,
+    known: &[(Expr, SparseVec<Rational>)],
+    basis: &[Integral],
+) -> Result<Vec<Generator>, EngineError> {
     let sources = known
         .iter()
         .map(|k| &k.0)
         .chain(basis.iter().map(|b| &b.fixed));
+    let related = has_related_monomials(system);
     let constant = |c: &Expr| match related {
         true => is_constant(system, problem, c),
         false => Ok(false),
     };
-    let gens = generators(problem, &grading, sources, &constant)?;
-    let gens = without_parameter_multiples(gens, &free_parameters(&problem.vars, atoms, radicals));
-    // With atoms or radicals the degrees in the coordinates, the denominators and the radicals
-    // bound only how many factors a product has, as in a Laurent space: `x/(x − y) · y/(x − y)`
-    // may equal a function of the space written in fewer of them.
-    let laurent = space.laurent || related;
-    let bounds = Size {
-        momenta: space.momenta_degree.into(),
-        coordinates: (space.positions_degree + space.denominators_degree + space.radicals_degree)
-            .into(),
-        poisson: space.poisson_degree.into(),
-        angles_alone: space.trig_degree.into(),
-    };
-    let grades: Vec<i64> = basis.iter().map(|b| grading.grade(&b.fixed)).collect();
-    // `a·X` is generated by `X`, from `X`'s grade, or its own where that is lower: with a
-    // parameter in a radicand or a denominator, the space writes `a·X` in other monomials
-    // (`a³/s = a s − a(x² + y² + z²)/s − 2a²x/s` for `s = √((x + a)² + y² + z²)`).
-    let multiple_grades = multiples
+    let gens = generators(problem, grading, sources, &constant)?;
+    let (atoms, radicals) = (
+        system.space().denominator_atoms(),
+        system.space().radicals(),
+    );
+    Ok(without_parameter_multiples(
+        gens,
+        &free_parameters(&problem.vars, atoms, radicals),
+    ))
+}
+
+/// The grade from which each parameter multiple `a·X` is generated: `a·X` is generated by
+/// `X`, from `X`'s grade, or its own where that is lower: with a parameter in a radicand or a
+/// denominator, the space writes `a·X` in other monomials (`a³/s = a s − a(x² + y² + z²)/s −
+/// 2a²x/s` for `s = √((x + a)² + y² + z²)`).
+fn multiple_grades(
+    problem: &Problem,
+    grading: &Grading,
+    multiples: &[Multiple],
+) -> Result<Vec<i64>, EngineError> {
+    multiples
         .iter()
         .map(|m| {
             let grade =
                 |v| -> Result<i64, EngineError> { Ok(grading.grade(&problem.combination(v)?)) };
             Ok(grade(&m.of)?.min(grade(&m.multiple)?))
         })
-        .collect::<Result<Vec<i64>, EngineError>>()?;
-    let dim = problem.unknowns.len();
-    let leads = Leads::of(kernel, dim);
-    let generated = |exact: bool| {
-        let span = Stamped::new(&leads, exact);
-        // The known integrals and the constants, then the products; with parameters kept
-        // symbolic, `a·I` is generated by `I`: it joins the span before the basis integrals of
-        // `I`'s grade. `None` when a denominator vanishes modulo p.
-        let mut vectors: Vec<(i64, SparseVec<Rational>)> =
-            known.iter().map(|k| (-1, k.1.clone())).collect();
+        .collect()
+}
+
+/// The indices of the basis integrals by increasing grade (`grades`), in their order within
+/// a grade.
+fn by_grade(grades: &[i64]) -> Vec<usize> {
+    let mut order: Vec<usize> = (0..grades.len()).collect();
+    order.sort_by_key(|&k| (grades[k], k));
+    order
+}
+
+/// What decides which basis integrals are new: the basis, graded, and what the span of the
+/// generated integrals is formed from.
+struct Complement<'a> {
+    locator: &'a Locator<'a>,
+    problem: &'a Problem,
+    /// The basis integrals' coordinates among the unknowns.
+    kernel: &'a [SparseVec<Rational>],
+    /// The known integrals, in the unknowns' monomials and by their coordinates.
+    known: &'a [(Expr, SparseVec<Rational>)],
+    /// The parameter multiples `a·X` that lie in the space, and the grade from which each is
+    /// generated.
+    multiples: &'a [Multiple],
+    multiple_grades: Vec<i64>,
+    /// The generators whose products join the span.
+    gens: Vec<Generator>,
+    /// The most that a product may take of the space.
+    bounds: Size,
+    /// Whether the coordinates' degree leaves a product's size unbounded.
+    laurent: bool,
+    /// The leads of the kernel, the coordinates on which the span is formed modulo p.
+    leads: Leads,
+    /// Each basis integral's grade, and the basis integrals by increasing grade.
+    grades: Vec<i64>,
+    order: Vec<usize>,
+    /// The most products to form.
+    max_products: usize,
+}
+
+impl Complement<'_> {
+    /// The new integrals and how many products were formed: modulo p first (unless
+    /// `exact_complement` asks for Q alone); over Q when a denominator vanishes modulo p or a
+    /// dependency found modulo p does not hold over Q.
+    fn new_and_products(&self, exact_complement: bool) -> Result<(Vec<usize>, usize), EngineError> {
+        let modular = match exact_complement {
+            false => self.span(false)?,
+            true => None,
+        };
+        Ok(
+            match modular.and_then(|(span, n)| Some((self.decide(false, &span)?, n))) {
+                Some(found) => found,
+                None => {
+                    let (span, n) = self.span(true)?.expect("the span over Q always forms");
+                    (
+                        self.decide(true, &span)
+                            .expect("exact elimination always decides"),
+                        n,
+                    )
+                }
+            },
+        )
+    }
+
+    /// The span of what is generated, modulo p or over Q (`exact`), by stamp, and how many
+    /// products were formed; `None` when a denominator vanishes modulo p.
+    fn span(&self, exact: bool) -> Result<Option<(StampedVectors, usize)>, EngineError> {
+        let span = Stamped::new(&self.leads, exact);
+        let limits = (self.kernel.len(), self.max_products);
+        span_of_products(
+            self.locator,
+            &self.gens,
+            self.vectors(),
+            self.bounds,
+            self.laurent,
+            span,
+            limits,
+        )
+    }
+
+    /// The vectors that join the span besides the products: the known integrals and the
+    /// constants; with parameters kept symbolic, `a·I` is generated by `I`: it joins the span
+    /// before the basis integrals of `I`'s grade.
+    fn vectors(&self) -> StampedVectors {
+        let problem = self.problem;
+        let mut vectors: StampedVectors = self.known.iter().map(|k| (-1, k.1.clone())).collect();
         if let Some(&Slot::One(j)) = problem.slots.get(&vec![0; problem.vars.len()]) {
             vectors.push((-1, vec![(j, Rational::one())]));
         }
         vectors.extend(
-            multiple_grades
+            self.multiple_grades
                 .iter()
-                .zip(multiples)
+                .zip(self.multiples)
                 .map(|(g, m)| (g - 1, m.multiple.clone())),
         );
-        let limits = (kernel.len(), options.max_products);
-        span_of_products(&locator, &gens, vectors, bounds, laurent, span, limits)
-    };
-    // By increasing grade g: the products of factors of grade < g join the span, then each
-    // basis integral of grade g is new unless it lies in the span (of those and of the new
-    // ones so far).
-    let mut order: Vec<usize> = (0..basis.len()).collect();
-    order.sort_by_key(|&k| (grades[k], k));
-    let decide = |exact: bool, spanning: &[(i64, SparseVec<Rational>)]| -> Option<Vec<usize>> {
+        vectors
+    }
+
+    /// The basis integrals that are new, by increasing grade g: the span's vectors of stamps
+    /// below g join the elimination, then each basis integral of grade g is new unless it lies
+    /// in the span (of those and of the new ones so far). Modulo p unless `exact`; `None` when
+    /// a denominator vanishes modulo p or a dependency found there does not hold over Q.
+    fn decide(&self, exact: bool, spanning: &[(i64, SparseVec<Rational>)]) -> Option<Vec<usize>> {
+        let leads = &self.leads;
         let mut fp = Echelon::<Fp>::new(leads.count);
-        let mut q = Echelon::<Rational>::new(dim);
+        let mut q = Echelon::<Rational>::new(self.problem.unknowns.len());
         // Vectors by identifier, for checking dependencies exactly.
         let mut inserted: Vec<&SparseVec<Rational>> = Vec::new();
         let mut next_span = 0;
         let mut new = Vec::new();
-        for &k in &order {
-            while next_span < spanning.len() && spanning[next_span].0 < grades[k] {
+        for &k in &self.order {
+            while next_span < spanning.len() && spanning[next_span].0 < self.grades[k] {
                 let v = &spanning[next_span].1;
                 if exact {
                     q.extend(inserted.len(), v);
@@ -129,7 +264,7 @@ pub(super) fn new_integrals(
                 inserted.push(v);
                 next_span += 1;
             }
-            let v = &kernel[k];
+            let v = &self.kernel[k];
             let id = inserted.len();
             inserted.push(v);
             if exact {
@@ -140,21 +275,8 @@ pub(super) fn new_integrals(
             }
             match fp.insert(id, &leads.restrict(modular::to_fp(v)?)) {
                 None => new.push(k),
-                Some(dep) => {
-                    // A dependency is checked over Q. Independence modulo p is independence
-                    // over Q unless p divides a minor of the span (its rank then drops
-                    // modulo p): `exact_complement` rules that out.
-                    let coeffs = modular::reconstruct_vec(&dep)?;
-                    let mut acc: FxHashMap<usize, Rational> = FxHashMap::default();
-                    for (id, c) in &coeffs {
-                        for (i, x) in inserted[*id] {
-                            *acc.entry(*i).or_insert_with(Rational::zero) += c * x;
-                        }
-                    }
-                    for (i, x) in v {
-                        *acc.entry(*i).or_insert_with(Rational::zero) -= x;
-                    }
-                    if acc.values().any(|x| !x.is_zero()) {
+                Some(dependency) => {
+                    if !dependency_holds(&dependency, &inserted, v)? {
                         return None;
                     }
                 }
@@ -162,29 +284,29 @@ pub(super) fn new_integrals(
         }
         new.sort_unstable();
         Some(new)
-    };
-    // Modulo p first (unless asked for Q alone); over Q when a denominator vanishes modulo p
-    // or a dependency found modulo p does not hold over Q.
-    let modular = match options.exact_complement {
-        false => generated(false)?,
-        true => None,
-    };
-    let (new, products) = match modular.and_then(|(span, n)| Some((decide(false, &span)?, n))) {
-        Some(found) => found,
-        None => {
-            let (span, n) = generated(true)?.expect("the span over Q always forms");
-            (
-                decide(true, &span).expect("exact elimination always decides"),
-                n,
-            )
+    }
+}
+
+/// Whether `dependency`, found modulo p, writes `v` in the `inserted` vectors over Q too;
+/// `None` when its coefficients have no rational reconstruction. Independence modulo p is
+/// independence over Q unless p divides a minor of the span (its rank then drops modulo p):
+/// `exact_complement` rules that out.
+fn dependency_holds(
+    dependency: &SparseVec<Fp>,
+    inserted: &[&SparseVec<Rational>],
+    v: &SparseVec<Rational>,
+) -> Option<bool> {
+    let coeffs = modular::reconstruct_vec(dependency)?;
+    let mut acc: FxHashMap<usize, Rational> = FxHashMap::default();
+    for (id, c) in &coeffs {
+        for (i, x) in inserted[*id] {
+            *acc.entry(*i).or_insert_with(Rational::zero) += c * x;
         }
-    };
-    Ok(NewIntegrals {
-        known: known_names,
-        generated: basis.len() - new.len(),
-        new,
-        products,
-    })
+    }
+    for (i, x) in v {
+        *acc.entry(*i).or_insert_with(Rational::zero) -= x;
+    }
+    Some(acc.values().all(|x| x.is_zero()))
 }
 
 /// The known integrals of a search for new ones.
@@ -363,6 +485,21 @@ impl Size {
         poisson: i64::MAX,
         angles_alone: i64::MAX,
     };
+
+    /// The most that a product may take of `space`: its degrees in the momenta, the
+    /// coordinates (with the powers of the denominators and radicals) and the Poisson
+    /// variables, and its trigonometric order.
+    fn bounds(space: &SearchSpace) -> Size {
+        Size {
+            momenta: space.momenta_degree.into(),
+            coordinates: (space.positions_degree
+                + space.denominators_degree
+                + space.radicals_degree)
+                .into(),
+            poisson: space.poisson_degree.into(),
+            angles_alone: space.trig_degree.into(),
+        }
+    }
 
     pub(super) fn of(f: &Expr) -> Self {
         let degree = |kinds: &[VarKind]| f.total_degree(kinds).unwrap_or(0);

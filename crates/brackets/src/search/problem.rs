@@ -122,123 +122,196 @@ pub(super) fn canonical(k: impl IntoIterator<Item = i64>) -> bool {
     k.into_iter().find(|x| *x != 0).is_none_or(|x| x > 0)
 }
 
-impl Problem {
-    pub(super) fn new(
-        system: &System,
+/// The variables of the space: the coordinates and the angles, and the momenta and Poisson
+/// variables but those that the condition fixes, which are left out.
+fn space_variables(system: &System, condition: Option<&[(Var, Expr)]>) -> SpaceVariables {
+    let vars = system.vars();
+    let pairs = system.space().pairs();
+    let variables_of_kind = |kind: VarKind| -> Vec<Var> {
+        pairs
+            .iter()
+            .filter(|p| vars.variable(p.q).kind() == kind)
+            .map(|p| p.q)
+            .collect()
+    };
+    // An angle's momentum that the condition fixes (`p_θ = mIω/n`) is a constant there:
+    // every function of it is an integral, so it is left out, and so is a Poisson variable
+    // that the condition fixes (the flow keeps it, or the condition is refused). Any other
+    // momentum counts.
+    let fixed = |v: Var| condition.into_iter().flatten().any(|(w, _)| *w == v);
+    let (mut momenta, mut left_out) = (Vec::new(), Vec::new());
+    for pair in pairs {
+        if vars.variable(pair.q).kind() == VarKind::Angle && fixed(pair.p) {
+            left_out.push(pair.p);
+        } else {
+            momenta.push(pair.p);
+        }
+    }
+    let mut poisson = Vec::new();
+    for &v in system.space().poisson_variables() {
+        match fixed(v) {
+            true => left_out.push(v),
+            false => poisson.push(v),
+        }
+    }
+    SpaceVariables {
+        coordinates: variables_of_kind(VarKind::Coordinate),
+        momenta,
+        poisson,
+        angles: variables_of_kind(VarKind::Angle),
+        left_out,
+    }
+}
+
+/// The exponent vectors that a space allows for each kind of variable, with the variables they
+/// belong to: the pieces from which its unknowns are put together.
+struct Exponents<'a> {
+    vars: &'a Vars,
+    variables: &'a SpaceVariables,
+    /// The parameters kept symbolic.
+    symbolic: &'a [Var],
+    /// The denominator atoms `D_i`, with their polynomials.
+    atoms: &'a [(Var, Expr)],
+    /// The radicals `r_i`, with their radicands.
+    radicals: &'a [(Var, Expr)],
+    /// Over the coordinates: `Σ|a| ≤` the positions degree, of either sign in a Laurent space.
+    positions: Vec<Vec<i64>>,
+    momenta: Vec<Vec<i64>>,
+    poisson: Vec<Vec<i64>>,
+    parameters: Vec<Vec<i64>>,
+    /// The powers `k_i` of the denominators `1/D_i^{k_i}`, which a monomial holds as the
+    /// atoms' exponents `−k_i`.
+    denominator_powers: Vec<Vec<i64>>,
+    /// The powers `j_i` of the radicals, of either sign.
+    radical_powers: Vec<Vec<i64>>,
+    /// The angular vectors `k`, canonical.
+    angular: Vec<Vec<i64>>,
+}
+
+impl<'a> Exponents<'a> {
+    /// The exponent vectors of `space` over `variables` and the parameters kept `symbolic`.
+    fn new(
+        system: &'a System,
         space: &SearchSpace,
-        symbolic: &[Var],
-        parameters: &[(Var, Rational)],
-        h: Expr,
-        cond: Option<Vec<(Var, Expr)>>,
-    ) -> Result<Self, EngineError> {
-        let vars = system.vars().clone();
-        let pairs = system.space().pairs();
-        let coords: Vec<Var> = pairs
-            .iter()
-            .filter(|p| vars.variable(p.q).kind() == VarKind::Coordinate)
-            .map(|p| p.q)
-            .collect();
-        // An angle's momentum that the condition fixes (`p_θ = mIω/n`) is a constant there:
-        // every function of it is an integral, so it is left out, and so is a Poisson variable
-        // that the condition fixes (the flow keeps it, or the condition is refused). Any other
-        // momentum counts.
-        let fixed = |v: Var| cond.iter().flatten().any(|(w, _)| *w == v);
-        let (mut momenta, mut left_out) = (Vec::new(), Vec::new());
-        for pair in pairs {
-            if vars.variable(pair.q).kind() == VarKind::Angle && fixed(pair.p) {
-                left_out.push(pair.p);
-            } else {
-                momenta.push(pair.p);
-            }
+        variables: &'a SpaceVariables,
+        symbolic: &'a [Var],
+    ) -> Self {
+        let (atoms, radicals) = (
+            system.space().denominator_atoms(),
+            system.space().radicals(),
+        );
+        let vectors = |vars: &[Var], degree: u32| exponent_vectors(vars.len(), degree, false);
+        Exponents {
+            vars: system.vars(),
+            variables,
+            symbolic,
+            atoms,
+            radicals,
+            positions: exponent_vectors(
+                variables.coordinates.len(),
+                space.positions_degree,
+                space.laurent,
+            ),
+            momenta: vectors(&variables.momenta, space.momenta_degree),
+            poisson: vectors(&variables.poisson, space.poisson_degree),
+            parameters: vectors(symbolic, space.parameters_degree),
+            denominator_powers: exponent_vectors(atoms.len(), space.denominators_degree, false),
+            radical_powers: exponent_vectors(radicals.len(), space.radicals_degree, true),
+            angular: exponent_vectors(variables.angles.len(), space.trig_degree, true)
+                .into_iter()
+                .filter(|k| canonical(k.iter().copied()))
+                .collect(),
         }
-        let mut poisson = Vec::new();
-        for &v in system.space().poisson_variables() {
-            match fixed(v) {
-                true => left_out.push(v),
-                false => poisson.push(v),
-            }
-        }
-        let angles: Vec<Var> = pairs
-            .iter()
-            .filter(|p| vars.variable(p.q).kind() == VarKind::Angle)
-            .map(|p| p.q)
-            .collect();
-        let positions = exponent_vectors(coords.len(), space.positions_degree, space.laurent);
-        let moms = exponent_vectors(momenta.len(), space.momenta_degree, false);
-        let lie = exponent_vectors(poisson.len(), space.poisson_degree, false);
-        let params = exponent_vectors(symbolic.len(), space.parameters_degree, false);
-        // The powers `k_i` of the denominators `1/D_i^{k_i}`, stored as the atoms' exponents
-        // `−k_i`.
-        let atoms = system.space().denominator_atoms();
-        let inverses = exponent_vectors(atoms.len(), space.denominators_degree, false);
-        // The powers `j_i` of the radicals, of either sign.
-        let radicals = system.space().radicals();
-        let roots = exponent_vectors(radicals.len(), space.radicals_degree, true);
-        let ks: Vec<Vec<i64>> = exponent_vectors(angles.len(), space.trig_degree, true)
-            .into_iter()
-            .filter(|k| canonical(k.iter().copied()))
-            .collect();
-        // Each angular vector gives cos and sin, except k = 0.
-        let trig_functions: usize = ks
+    }
+
+    /// How many trigonometric functions each monomial `φ` is multiplied by: each angular
+    /// vector gives cos and sin, except k = 0.
+    fn trig_functions(&self) -> usize {
+        self.angular
             .iter()
             .map(|k| if k.iter().all(|x| *x == 0) { 1 } else { 2 })
-            .sum();
-        let count = positions
+            .sum()
+    }
+
+    /// How many unknowns the space has; an error past the term limit, before any is formed.
+    fn count(&self) -> Result<usize, EngineError> {
+        let count = self
+            .positions
             .len()
-            .saturating_mul(moms.len())
-            .saturating_mul(lie.len())
-            .saturating_mul(params.len())
-            .saturating_mul(inverses.len())
-            .saturating_mul(roots.len())
-            .saturating_mul(trig_functions);
-        let limit = vars.limits().max_terms;
+            .saturating_mul(self.momenta.len())
+            .saturating_mul(self.poisson.len())
+            .saturating_mul(self.parameters.len())
+            .saturating_mul(self.denominator_powers.len())
+            .saturating_mul(self.radical_powers.len())
+            .saturating_mul(self.trig_functions());
+        let limit = self.vars.limits().max_terms;
         if count > limit {
             return Err(EngineError::Invalid(format!(
                 "the space has {count} unknowns, more than the term limit {limit}: search a \
                  smaller space, or raise the limit (`Limits::max_terms`; on the command line, --max-terms)"
             )));
         }
-        // The monomials `φ` without angles, then (with denominators) those whose functions are
-        // independent of the simpler ones, then each times the trigonometric functions.
-        let mut phases = Vec::with_capacity(count / trig_functions.max(1));
-        for (a, c, m, s, d, j) in
-            itertools::iproduct!(&positions, &moms, &lie, &params, &inverses, &roots)
-        {
-            let mut phase = vec![0i64; vars.len()];
-            for (v, e) in coords
+        Ok(count)
+    }
+
+    /// The monomials `φ` without angles, one for each choice of an exponent vector of each
+    /// kind, among `count` unknowns.
+    fn phases(&self, count: usize) -> Vec<Unknown> {
+        let variables = self.variables;
+        let mut phases = Vec::with_capacity(count / self.trig_functions().max(1));
+        let choices = itertools::iproduct!(
+            &self.positions,
+            &self.momenta,
+            &self.poisson,
+            &self.parameters,
+            &self.denominator_powers,
+            &self.radical_powers
+        );
+        for (positions, momenta, poisson, parameters, denominators, radicals) in choices {
+            let mut phase = vec![0i64; self.vars.len()];
+            for (v, e) in variables
+                .coordinates
                 .iter()
-                .chain(&momenta)
-                .chain(&poisson)
-                .chain(symbolic)
-                .zip(a.iter().chain(c).chain(m).chain(s))
+                .chain(&variables.momenta)
+                .chain(&variables.poisson)
+                .chain(self.symbolic)
+                .zip(
+                    positions
+                        .iter()
+                        .chain(momenta)
+                        .chain(poisson)
+                        .chain(parameters),
+                )
             {
                 phase[v.index()] = *e;
             }
-            for ((v, _), e) in atoms.iter().zip(d) {
+            for ((v, _), e) in self.atoms.iter().zip(denominators) {
                 phase[v.index()] = -e;
             }
-            for ((v, _), e) in radicals.iter().zip(j) {
+            for ((v, _), e) in self.radicals.iter().zip(radicals) {
                 phase[v.index()] = *e;
             }
             phases.push(Unknown {
                 phase,
-                k: vec![0; angles.len()],
+                k: vec![0; variables.angles.len()],
                 trig: Trig::One,
-                momenta_degree: c.iter().sum(),
-                poisson_degree: m.iter().sum(),
-                positions_degree: a.iter().map(|x| x.abs()).sum(),
-                denominators_degree: d.iter().sum(),
-                radicals_degree: j.iter().map(|x| x.abs()).sum(),
+                momenta_degree: momenta.iter().sum(),
+                poisson_degree: poisson.iter().sum(),
+                positions_degree: positions.iter().map(|x| x.abs()).sum(),
+                denominators_degree: denominators.iter().sum(),
+                radicals_degree: radicals.iter().map(|x| x.abs()).sum(),
                 trig_degree: 0,
-                parameters_degree: s.iter().sum(),
+                parameters_degree: parameters.iter().sum(),
             });
         }
-        if !atoms.is_empty() || !radicals.is_empty() {
-            phases = independent_as_functions(&vars, atoms, radicals, parameters, phases)?;
-        }
-        let mut unknowns = Vec::with_capacity(phases.len() * trig_functions);
+        phases
+    }
+
+    /// Each monomial `φ` of `phases` times each trigonometric function: the unknowns.
+    fn unknowns(&self, phases: Vec<Unknown>) -> Vec<Unknown> {
+        let mut unknowns = Vec::with_capacity(phases.len() * self.trig_functions());
         for phi in phases {
-            for k in &ks {
+            for k in &self.angular {
                 let trig_degree: i64 = k.iter().map(|x| x.abs()).sum();
                 let trigs: &[Trig] = if trig_degree == 0 {
                     &[Trig::One]
@@ -255,24 +328,47 @@ impl Problem {
                 }
             }
         }
-        // The order decides which basis comes out: each kernel vector ends at its own unknown
-        // and uses only earlier ones, so simpler unknowns come first.
-        // A total order (no two unknowns are equal), so the parallel sort is deterministic.
-        unknowns.par_sort_unstable_by(|a, b| {
-            a.degrees()
-                .cmp(&b.degrees())
-                .then_with(|| b.k.cmp(&a.k))
-                .then_with(|| a.phase.cmp(&b.phase))
-                .then_with(|| a.trig.cmp(&b.trig))
-        });
-        let slots = Problem::slots(&vars, &angles, &unknowns)?;
-        let variables = SpaceVariables {
-            coordinates: coords,
-            momenta,
-            poisson,
-            angles,
-            left_out,
-        };
+        unknowns
+    }
+}
+
+/// Sorts the unknowns simpler first. The order decides which basis comes out: each kernel
+/// vector ends at its own unknown and uses only earlier ones, so simpler unknowns come first.
+/// A total order (no two unknowns are equal), so the parallel sort is deterministic.
+fn sort_simpler_first(unknowns: &mut [Unknown]) {
+    unknowns.par_sort_unstable_by(|a, b| {
+        a.degrees()
+            .cmp(&b.degrees())
+            .then_with(|| b.k.cmp(&a.k))
+            .then_with(|| a.phase.cmp(&b.phase))
+            .then_with(|| a.trig.cmp(&b.trig))
+    });
+}
+
+impl Problem {
+    /// The search of `space` for the integrals of `h` under the condition `cond`, with the
+    /// parameters `symbolic` kept symbolic and the others at the values `parameters`.
+    pub(super) fn new(
+        system: &System,
+        space: &SearchSpace,
+        symbolic: &[Var],
+        parameters: &[(Var, Rational)],
+        h: Expr,
+        cond: Option<Vec<(Var, Expr)>>,
+    ) -> Result<Self, EngineError> {
+        let vars = system.vars().clone();
+        let variables = space_variables(system, cond.as_deref());
+        let exponents = Exponents::new(system, space, &variables, symbolic);
+        // The monomials `φ` without angles, then (with denominators) those whose functions are
+        // independent of the simpler ones, then each times the trigonometric functions.
+        let mut phases = exponents.phases(exponents.count()?);
+        let (atoms, radicals) = (exponents.atoms, exponents.radicals);
+        if !atoms.is_empty() || !radicals.is_empty() {
+            phases = independent_as_functions(&vars, atoms, radicals, parameters, phases)?;
+        }
+        let mut unknowns = exponents.unknowns(phases);
+        sort_simpler_first(&mut unknowns);
+        let slots = Problem::slots(&vars, &variables.angles, &unknowns)?;
         let mut problem = Problem {
             vars,
             variables,
@@ -283,19 +379,28 @@ impl Problem {
             parameters: parameters.to_vec(),
             flow_parts: Vec::new(),
         };
-        let gradient = system.space().gradient(&problem.h)?;
-        let canonical = pairs.iter().zip(gradient.canonical());
+        problem.flow_parts = problem.nonzero_flow_parts(system)?;
+        Ok(problem)
+    }
+
+    /// The parts of `{v, H}` after the condition and at the fixed values that are not zero,
+    /// for [`Problem::flow_parts`]: `∂H/∂p` for each coordinate, `∂H/∂q` negated for each
+    /// momentum, and the declared brackets' part for each variable they involve.
+    fn nonzero_flow_parts(&self, system: &System) -> Result<Vec<(Var, Expr, bool)>, EngineError> {
+        let gradient = system.space().gradient(&self.h)?;
+        let canonical = system.space().pairs().iter().zip(gradient.canonical());
         let parts = canonical
             .flat_map(|(pair, (dq, dp))| [(pair.q, dp, false), (pair.p, dq, true)])
             .chain(gradient.declared().iter().map(|(v, x)| (*v, x, false)));
+        let mut flow_parts = Vec::new();
         for (v, part, negated) in parts {
             // The declared brackets of an atom hold its polynomial's parameters.
-            let part = problem.apply_condition(fix_parameters(part, parameters)?)?;
+            let part = self.apply_condition(fix_parameters(part, &self.parameters)?)?;
             if !part.is_zero() {
-                problem.flow_parts.push((v, part, negated));
+                flow_parts.push((v, part, negated));
             }
         }
-        Ok(problem)
+        Ok(flow_parts)
     }
 
     /// The slot of each monomial of the space: `φ` for each unknown of `k = 0`, and
