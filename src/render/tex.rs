@@ -200,6 +200,16 @@ fn char_math(c: char) -> Option<String> {
     if let Some((_, accent, base)) = ACCENTED.iter().find(|a| a.0 == c) {
         return Some(format!(r"\{accent}{{{base}}}"));
     }
+    // A script digit on its own: one with an accent over it, which no run of digits takes.
+    if let Some(d) = SUPERSCRIPTS.chars().position(|s| s == c) {
+        return Some(format!("{{}}^{{{d}}}"));
+    }
+    if let Some(d) = SUBSCRIPTS.chars().position(|s| s == c) {
+        return Some(format!("{{}}_{{{d}}}"));
+    }
+    if c == '⁻' {
+        return Some("{}^{-}".into());
+    }
     if c.is_ascii() && !c.is_ascii_control() {
         return Some(c.to_string());
     }
@@ -369,7 +379,9 @@ impl<'a> Translation<'a> {
                 Tok::Space => self.space(),
                 Tok::Word(w, _) if self.prose[self.k] => self.prose_run(w),
                 Tok::Word(w, d) => self.word(w, d),
-                Tok::Char(c, _)
+                // A script digit with an accent over it (`²̄`) is a symbol of its own: the
+                // run of digits takes plain ones only, and would not move past it.
+                Tok::Char(c, None)
                     if SUPERSCRIPTS.contains(*c) || *c == '⁻' || SUBSCRIPTS.contains(*c) =>
                 {
                     // The run of digits ends at the token after it, where the next one starts.
@@ -836,6 +848,16 @@ mod tests {
             prev = if prev == '\\' { ' ' } else { c };
         }
         depth == 0
+    }
+
+    /// A script digit with an accent over it is a symbol of its own, and the translation
+    /// moves past it: the run of digits, which takes plain ones only, looped on it for ever.
+    #[test]
+    fn an_accented_script_digit_is_translated_and_passed() {
+        assert_eq!(math("x²̄ + 1"), r"x\bar{{}^{2}} + 1");
+        assert_eq!(math("x₁̇²"), r"x\dot{{}_{1}}^{2}");
+        assert_eq!(math("a⁻̂¹"), r"a\hat{{}^{-}}^{1}");
+        assert!(balanced(&math("{x²̄, ₃̃}⁻̄")));
     }
 
     #[test]
