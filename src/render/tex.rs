@@ -466,6 +466,8 @@ impl<'a> Translation<'a> {
         if self.joining {
             self.braces.push((true, true));
             self.joining = false;
+            // The subscript stays open until this group closes: nothing joins it before.
+            self.subscript_end = None;
             return;
         }
         let group = self.out.ends_with('_') || self.out.ends_with('^');
@@ -666,7 +668,8 @@ fn script_piece(toks: &[Tok]) -> Option<(String, usize)> {
             let taken = digits.len();
             Some((digits, taken))
         }
-        Tok::Char(c, acc) if !matches!(c, '{' | '_' | '^') => {
+        // A closing brace ends a group; it is no script (`x_}` was `x_{}}`, unbalanced).
+        Tok::Char(c, acc) if !matches!(c, '{' | '}' | '_' | '^') => {
             let mut out = String::new();
             push_char(&mut out, *c, *acc);
             Some((out, 1))
@@ -938,8 +941,33 @@ mod tests {
 
     #[test]
     fn unbalanced_input_still_balances() {
-        for s in ["{x", "x}", "e^{x", "{{", "}}"] {
+        for s in ["{x", "x}", "e^{x", "{{", "}}", "_}", "x^}", "₁_{_"] {
             assert!(balanced(&math(s)), "{s} → {}", math(s));
+        }
+    }
+
+    /// Characters of the paper's notation, with the combining accents and the script digits
+    /// that ended a translation's loops before (an accent over `²`).
+    const NOTATION: &[char] = &[
+        'x', 'p', 'G', '1', '2', ' ', '_', '^', '{', '}', '(', ')', '/', '\'', 'ω', 'θ', 'ħ', 'ℓ',
+        '²', '⁻', '¹', '₁', '₂', '\u{304}', '\u{307}', '\u{302}', '−', '=', ',', 'Z', '\\', 'a',
+        'c', 'o', 's', 'e', 'i', 'n',
+    ];
+
+    proptest::proptest! {
+        #![proptest_config(proptest::prelude::ProptestConfig::with_cases(2000))]
+
+        /// Any string of the notation translates, in a time linear in its length, to LaTeX
+        /// whose braces balance.
+        #[test]
+        fn any_formula_translates_to_balanced_latex(
+            picks in proptest::collection::vec(0..NOTATION.len(), 0..24)
+        ) {
+            let s: String = picks.iter().map(|&k| NOTATION[k]).collect();
+            let latex = math(&s);
+            proptest::prop_assert!(balanced(&latex), "{s:?} → {latex}");
+            let prose = sentence(&s);
+            proptest::prop_assert_eq!(prose.matches('$').count() % 2, 0, "{:?} → {}", s, prose);
         }
     }
 
