@@ -401,6 +401,11 @@ impl<'a> Translation<'a> {
 
     /// A run of spaces: one space, or `\ ` beside prose, whose spaces math mode would drop.
     fn space(&mut self) {
+        // A space at the end is dropped: trimmed, `\ ` would leave a backslash that escapes
+        // whatever follows the formula (its closing `$`).
+        if self.k + 1 >= self.toks.len() {
+            return;
+        }
         let before = self.k > 0 && self.prose[self.k - 1];
         let after = self.prose.get(self.k + 1) == Some(&true);
         if before || after {
@@ -939,11 +944,35 @@ mod tests {
         );
     }
 
+    /// A formula that ends in a space after prose (a description's `` `H = p²/2 for all ` ``)
+    /// ends its math: the space's `\ `, trimmed, left a backslash that escaped the `$`.
+    #[test]
+    fn a_trailing_space_after_prose_leaves_no_backslash() {
+        assert_eq!(math("x for all "), r"x\ \text{for all}");
+        assert_eq!(
+            markup("a free particle, `H = p_x^2/2 for all ` of them"),
+            r"a free particle, $H = p_{x}^{2}/2\ \text{for all}$ of them"
+        );
+    }
+
     #[test]
     fn unbalanced_input_still_balances() {
         for s in ["{x", "x}", "e^{x", "{{", "}}", "_}", "x^}", "₁_{_"] {
             assert!(balanced(&math(s)), "{s} → {}", math(s));
         }
+    }
+
+    /// The `$` signs of `s` that are not escaped (`\$`).
+    fn unescaped_dollars(s: &str) -> usize {
+        let mut prev = ' ';
+        let mut count = 0;
+        for c in s.chars() {
+            if c == '$' && prev != '\\' {
+                count += 1;
+            }
+            prev = if prev == '\\' { ' ' } else { c };
+        }
+        count
     }
 
     /// Characters of the paper's notation, with the combining accents and the script digits
@@ -968,6 +997,10 @@ mod tests {
             proptest::prop_assert!(balanced(&latex), "{s:?} → {latex}");
             let prose = sentence(&s);
             proptest::prop_assert_eq!(prose.matches('$').count() % 2, 0, "{:?} → {}", s, prose);
+            // Prose with formulas between backticks, as descriptions are written.
+            let marked = markup(&format!("a `{s}` and {s}"));
+            proptest::prop_assert!(balanced(&marked), "{s:?} → {marked}");
+            proptest::prop_assert_eq!(unescaped_dollars(&marked) % 2, 0, "{:?} → {}", s, marked);
         }
     }
 
