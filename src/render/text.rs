@@ -669,4 +669,34 @@ mod tests {
             assert_eq!(number(&value), text);
         }
     }
+
+    /// Pieces of a printed expression: terms, signs, parentheses, braces and spaces.
+    const PIECES: &[&str] = &[
+        "x²", "p_y", "2M", "ω", "(", ")", "{", "}", " + ", " − ", " ", "/", "cos θ", "·", "x p_y⁴",
+        "= ",
+    ];
+
+    proptest::proptest! {
+        #![proptest_config(proptest::prelude::ProptestConfig::with_cases(1000))]
+
+        /// Wrapping keeps every word in order and breaks only at spaces, and a line is wider
+        /// than the width only when it holds one word after its indent.
+        #[test]
+        fn a_wrapped_sum_keeps_its_words_and_its_width(
+            picks in proptest::collection::vec(0..PIECES.len(), 0..60),
+            w in 4usize..50,
+        ) {
+            let s: String = picks.iter().map(|&k| PIECES[k]).collect();
+            let lines = wrap_sum(&s, w, "  ");
+            let words = |t: &str| t.split(' ').filter(|x| !x.is_empty()).map(str::to_string).collect::<Vec<_>>();
+            let wrapped: Vec<String> = lines.iter().flat_map(|l| words(l)).collect();
+            proptest::prop_assert_eq!(&wrapped, &words(&s), "{:?} at {}: {:?}", s, w, lines);
+            for l in &lines {
+                proptest::prop_assert!(
+                    crate::render::width(l) <= w || words(l).len() <= 1,
+                    "{:?} at {}: {:?}", s, w, lines
+                );
+            }
+        }
+    }
 }
