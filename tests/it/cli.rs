@@ -235,6 +235,49 @@ pub(crate) fn compile_within(doc: &str, slack_pt: f64) {
     }
 }
 
+/// A description's formulas, between backticks, compile whatever characters they hold: 60
+/// formulas of up to 30 characters of the notation (script signs and digits, accents, braces,
+/// primes, TeX's special characters), drawn by a fixed linear congruential generator. Before,
+/// 13 of 140 such formulas made pdflatex fail (a double superscript, a script sign at the end,
+/// `$$`, a backslash that escaped the closing `$`).
+#[test]
+fn a_description_of_any_characters_compiles() {
+    let alphabet: Vec<char> = "xpG12 _^{}()/'ωθħℓ²⁻¹₁₂\u{304}\u{307}−=,Zacosein$%&~#|<>"
+        .chars()
+        .collect();
+    let mut state: u64 = 0x5eed;
+    let mut next = |n: usize| {
+        state = state
+            .wrapping_mul(6364136223846793005)
+            .wrapping_add(1442695040888963407);
+        (state >> 33) as usize % n
+    };
+    let mut description = String::new();
+    for _ in 0..60 {
+        let length = 1 + next(30);
+        let formula: String = (0..length)
+            .map(|_| alphabet[next(alphabet.len())])
+            .collect();
+        description.push_str(&format!("and `{formula}` then {formula} "));
+    }
+    let file = crate::scratch_text(
+        "latex-descriptions",
+        "random.toml",
+        &format!(
+            "name = \"random formulas\"\nhamiltonian = \"p_x^2/2\"\n\
+             description = \"{description}\"\n[phase_space]\ncoordinates = [\"x\"]\n\
+             [[claim]]\nclaim = \"{{x, H}} = p_x\"\n"
+        ),
+    );
+    let doc = run(
+        &["check", &file.display().to_string(), "--format", "latex"],
+        0,
+    );
+    assert_balanced_latex(&doc);
+    // Random formulas may run past the line; only errors count.
+    compile_within(&doc, f64::INFINITY);
+}
+
 /// A system whose names LaTeX writes only with care: see [`cli_latex_of_every_command_compiles`].
 const LATEX_NAMES: &str = r#"name = "LaTeX names"
 hamiltonian = "(p_a + p_b)^2/2 + p_ω₁₂^2/2 + ω₁₂^2/2 + p_ℓ₁*ħ₁ + p_θ₁₂*θ₁₂ + ωx*x₁y"
