@@ -369,6 +369,10 @@ struct Scripts {
     end: usize,
     sub: bool,
     sup: bool,
+    /// Whether the last thing written is a prime, a superscript that one written right
+    /// after it (`G1'²`) joins; a prime before another script, or a space, is a superscript
+    /// of its own.
+    primed: bool,
 }
 
 impl<'a> Translation<'a> {
@@ -456,6 +460,7 @@ impl<'a> Translation<'a> {
         if !digits.is_empty() {
             self.out.push_str(&format!("_{{{digits}}}"));
             self.subscript_end = Some(self.out.len());
+            self.close_script(false, (false, false));
         }
     }
 
@@ -474,15 +479,24 @@ impl<'a> Translation<'a> {
                 self.k += taken;
             }
             '_' | '^' => self.script(c),
-            // A prime is a superscript to TeX: after one it starts from an empty base.
+            // A prime is a superscript to TeX: after one it starts from an empty base, and a
+            // subscript after it counts the base's (`x_a'_b` is a double subscript). A
+            // superscript right after it joins it (`G1'²`).
             '\'' if accent.is_none() => {
-                if self
-                    .scripts
-                    .is_some_and(|s| s.end == self.out.len() && s.sup)
-                {
+                let mut base = self.scripts.filter(|&s| self.ends_at(s));
+                // Primes in a row are one superscript (`x''`).
+                let in_a_row = base.is_some_and(|s| s.primed && s.end == self.out.len());
+                if base.is_some_and(|s| s.sup || (s.primed && !in_a_row)) {
                     self.out.push_str("{}");
+                    base = None;
                 }
                 self.out.push('\'');
+                self.scripts = Some(Scripts {
+                    end: self.out.len(),
+                    sub: base.is_some_and(|s| s.sub),
+                    sup: false,
+                    primed: true,
+                });
             }
             _ if greek(c).is_some() || c == 'ħ' || c == 'ℓ' => {
                 self.letter_with_digits(c, accent)
@@ -577,17 +591,24 @@ impl<'a> Translation<'a> {
     /// `(sub, sup)`, or, when it has one of this kind, `{}` written to start an empty base.
     fn open_script(&mut self, sup: bool) -> (bool, bool) {
         match self.scripts {
-            // TeX reads no space in math: `x^{1} ^{2}` is a double script too.
-            Some(s) if s.end == self.out.trim_end_matches(' ').len() => {
-                if (sup && s.sup) || (!sup && s.sub) {
+            Some(s) if self.ends_at(s) => {
+                let joins_prime = s.primed && sup && s.end == self.out.len();
+                let has_sup = s.sup || (s.primed && !joins_prime);
+                if (sup && has_sup) || (!sup && s.sub) {
                     self.out.push_str("{}");
                     (false, false)
                 } else {
-                    (s.sub, s.sup)
+                    (s.sub, has_sup)
                 }
             }
             _ => (false, false),
         }
+    }
+
+    /// Whether `out` ends where the `scripts` do, but for spaces: TeX reads none in math, so
+    /// `x^{1} ^{2}` is a double script too.
+    fn ends_at(&self, scripts: Scripts) -> bool {
+        scripts.end == self.out.trim_end_matches(' ').len()
     }
 
     /// After a script (a superscript when `sup`) on a base that had the scripts `base`.
@@ -596,6 +617,7 @@ impl<'a> Translation<'a> {
             end: self.out.len(),
             sub: sub_before || !sup,
             sup: sup_before || sup,
+            primed: false,
         });
     }
 
@@ -676,6 +698,7 @@ impl<'a> Translation<'a> {
         if !digits.is_empty() {
             self.out.push_str(&format!("_{{{digits}}}"));
             self.subscript_end = Some(self.out.len());
+            self.close_script(false, (false, false));
         }
     }
 }
@@ -1056,6 +1079,12 @@ mod tests {
         assert_eq!(math("G¹ ^ℓ"), r"G^{1} {}^{\ell }");
         assert_eq!(math("x²₁_a¹"), "x^{2}_{1;a}{}^{1}");
         assert_eq!(math("x⁻'"), "x^{-}{}'");
+        assert_eq!(math("x^a '"), "x^{a} {}'");
+        assert_eq!(math("x_a'_b"), "x_{a}'{}_{b}");
+        assert_eq!(math("s2^ω_c"), r"s_{2}^{\omega }{}_{c}");
+        assert_eq!(math("G'₁¹"), "G'_{1}{}^{1}");
+        assert_eq!(math("Z²' ²"), "Z^{2}{}' {}^{2}");
+        assert_eq!(math("x'' + x'_1"), "x'' + x'_{1}");
         assert_eq!(math("ħ_"), r"\hbar _{}");
         assert_eq!(math("x = y^"), "x = y^{}");
         assert_eq!(markup("a ` ` b"), "a  b");
