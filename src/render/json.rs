@@ -97,8 +97,8 @@ use trigpoly::{Expr, Style, VarKind};
 
 use super::{plain, Options};
 use crate::report::{
-    ClaimKind, ClaimOutcome, ClaimResult, ClosureFacts, Entry, Facts, ParameterFacts, RankResult,
-    Report, SearchFacts,
+    ClaimKind, ClaimOutcome, ClaimResult, ClosureFacts, Entry, Equations, Facts, ParameterFacts,
+    ProofResult, RankResult, Report, SearchFacts, TableResult, TowerResult,
 };
 use brackets::UpperBound;
 
@@ -119,132 +119,208 @@ pub fn pretty(value: &Value) -> String {
 
 /// The report as a JSON value.
 pub fn value(report: &Report, options: &Options) -> Value {
-    let seconds = |s: f64| {
-        if options.timings {
+    let mut lists = Lists::new(options.timings);
+    for s in &report.sections {
+        for e in &s.entries {
+            lists.add(e, s.number);
+        }
+    }
+    lists.document(report)
+}
+
+/// The document's lists of claims, equations, tables, towers, proofs, ranks, searches and
+/// closures, filled entry by entry in the order of the report.
+struct Lists {
+    /// Whether times are given: without them (`--no-timings`) every `seconds` is `null`, so
+    /// that the output is the same on every run.
+    timings: bool,
+    claims: Vec<Value>,
+    equations: Vec<Value>,
+    tables: Vec<Value>,
+    towers: Vec<Value>,
+    proofs: Vec<Value>,
+    ranks: Vec<Value>,
+    searches: Vec<Value>,
+    closures: Vec<Value>,
+}
+
+impl Lists {
+    /// Empty lists, with times given or not.
+    fn new(timings: bool) -> Self {
+        Lists {
+            timings,
+            claims: Vec::new(),
+            equations: Vec::new(),
+            tables: Vec::new(),
+            towers: Vec::new(),
+            proofs: Vec::new(),
+            ranks: Vec::new(),
+            searches: Vec::new(),
+            closures: Vec::new(),
+        }
+    }
+
+    /// A time in seconds, or `null` without timings.
+    fn seconds(&self, s: f64) -> Value {
+        if self.timings {
             json!(s)
         } else {
             Value::Null
         }
-    };
-    let outcome = |ok: bool| if ok { "proved" } else { "refuted" };
-    let mut claims = Vec::new();
-    let mut equations = Vec::new();
-    let mut tables = Vec::new();
-    let mut towers = Vec::new();
-    let mut proofs = Vec::new();
-    let mut ranks = Vec::new();
-    let mut searches = Vec::new();
-    let mut closures = Vec::new();
-    for s in &report.sections {
-        let sec = s.number;
-        let claim = |c: &ClaimResult| claim(c, sec, seconds(c.seconds));
-        for e in &s.entries {
-            match e {
-                Entry::Heading(_) | Entry::Text(_) => {}
-                Entry::Equations(eq) => equations.push(json!({
-                    "section": sec,
-                    "caption": plain(&eq.caption),
-                    "lines": eq.lines.iter().map(|l| {
-                        let mut v = expr(&l.rhs);
-                        let line = v.as_object_mut().expect("an object");
-                        line.insert("lhs".into(), json!(l.lhs));
-                        line.insert("in_functions".into(), l.in_functions.as_ref().map_or(Value::Null, expr));
-                        v
-                    }).collect::<Vec<_>>(),
-                })),
-                Entry::Claim(c) => claims.push(claim(c)),
-                Entry::Table(t) => tables.push(json!({
-                    "section": sec,
-                    "caption": plain(&t.caption),
-                    "functions": t.table.names,
-                    "display": t.table.display,
-                    "entries": t.table.entries.iter().map(|row| row.iter().map(|e| json!({
-                        "text": e.render(Style::Unicode),
-                        "ascii": e.render(Style::Ascii),
-                        "latex": e.render(Style::Latex),
-                    })).collect::<Vec<_>>()).collect::<Vec<_>>(),
-                    "excerpts": t.excerpts.iter().map(|((a, b), e)| json!({
-                        "row": a,
-                        "column": b,
-                        "shown_monomials": e.shown,
-                        "monomials": e.monomials,
-                    })).collect::<Vec<_>>(),
-                    "undecided": t.undecided().into_iter().map(|(a, b, message)| json!({
-                        "row": a,
-                        "column": b,
-                        "message": message,
-                    })).collect::<Vec<_>>(),
-                })),
-                Entry::Tower(t) => {
-                    claims.push(claim(&t.claim));
-                    towers.push(json!({
-                        "section": sec,
-                        "id": t.claim.id,
-                        "system": t.system,
-                        "ladder": t.ladder,
-                        "max": t.max,
-                        "checked": t.checked,
-                        "failures": t.failures.iter().map(|&(m, n)| json!([m, n])).collect::<Vec<_>>(),
-                        "outcome": outcome(t.claim.proved),
-                        "seconds": seconds(t.claim.seconds),
-                    }));
-                }
-                Entry::Proof(p) => {
-                    claims.extend(p.claims.iter().map(claim));
-                    proofs.push(json!({
-                        "section": sec,
-                        "title": p.title,
-                        "facts": p.facts.iter().map(|f| json!({
-                            "statement": f.statement,
-                            "holds": f.holds,
-                            "found": f.found.as_ref().map(|e| e.render(Style::Ascii)),
-                        })).collect::<Vec<_>>(),
-                        "leibniz_check": p.leibniz_check,
-                        "lemma": p.lemma,
-                        "conclusion": p.conclusion,
-                        "claims": p.claims.iter().map(|c| c.id.clone()).collect::<Vec<_>>(),
-                        "outcome": outcome(p.holds()),
-                    }));
-                }
-                Entry::Rank(r) => {
-                    claims.push(claim(&r.claim));
-                    ranks.push(rank(r, sec));
-                }
-                Entry::Data(Facts::Search(f)) => searches.push(search(f, sec)),
-                Entry::Data(Facts::Closure(f)) => closures.push(closure(f, sec)),
+    }
+
+    /// A claim of section `section`, with its time.
+    fn claim(&self, c: &ClaimResult, section: u32) -> Value {
+        claim(c, section, self.seconds(c.seconds))
+    }
+
+    /// Adds an entry of section `section` to its list; a tower, a proof and a rank add their
+    /// claims to the claims' list too, before themselves.
+    fn add(&mut self, entry: &Entry, section: u32) {
+        match entry {
+            Entry::Heading(_) | Entry::Text(_) => {}
+            Entry::Equations(eq) => self.equations.push(equations(eq, section)),
+            Entry::Claim(c) => self.claims.push(self.claim(c, section)),
+            Entry::Table(t) => self.tables.push(table(t, section)),
+            Entry::Tower(t) => {
+                self.claims.push(self.claim(&t.claim, section));
+                self.towers
+                    .push(tower(t, section, self.seconds(t.claim.seconds)));
             }
+            Entry::Proof(p) => {
+                let claims: Vec<Value> = p.claims.iter().map(|c| self.claim(c, section)).collect();
+                self.claims.extend(claims);
+                self.proofs.push(proof(p, section));
+            }
+            Entry::Rank(r) => {
+                self.claims.push(self.claim(&r.claim, section));
+                self.ranks.push(rank(r, section));
+            }
+            Entry::Data(Facts::Search(f)) => self.searches.push(search(f, section)),
+            Entry::Data(Facts::Closure(f)) => self.closures.push(closure(f, section)),
         }
     }
-    let ids = report.claim_outcomes();
-    let counted = |o: ClaimOutcome| ids.iter().filter(|(_, outcome)| *outcome == o).count();
+
+    /// The whole document: the schema, the titles, the summary of the claims and the
+    /// sections, then the lists.
+    fn document(self, report: &Report) -> Value {
+        let ids = report.claim_outcomes();
+        let counted = |o: ClaimOutcome| ids.iter().filter(|(_, outcome)| *outcome == o).count();
+        json!({
+            "schema": SCHEMA,
+            "title": plain(&report.title),
+            "subtitle": plain(&report.subtitle),
+            "summary": {
+                "claims": ids.len(),
+                "proved": counted(ClaimOutcome::Proved),
+                "refuted": counted(ClaimOutcome::Refuted),
+                "undecided": counted(ClaimOutcome::Undecided),
+                "checks": self.claims.len(),
+                "all_proved": report.all_proved(),
+                "as_expected": report.claims().iter().filter(|c| c.meets_expectation()).count(),
+                "all_as_expected": report.all_as_expected(),
+                "seconds": self.seconds(report.seconds),
+            },
+            "sections": report.sections.iter().map(|s| json!({
+                "number": s.number,
+                "title": plain(&s.title),
+                "file": s.file,
+            })).collect::<Vec<_>>(),
+            "claims": self.claims,
+            "equations": self.equations,
+            "tables": self.tables,
+            "towers": self.towers,
+            "proofs": self.proofs,
+            "ranks": self.ranks,
+            "searches": self.searches,
+            "closures": self.closures,
+        })
+    }
+}
+
+/// An outcome in words: `proved` or `refuted`.
+fn outcome(ok: bool) -> &'static str {
+    if ok {
+        "proved"
+    } else {
+        "refuted"
+    }
+}
+
+/// Displayed equations, each line's right side in the three notations with its left side and,
+/// where it has one, its form in the functions.
+fn equations(eq: &Equations, section: u32) -> Value {
     json!({
-        "schema": SCHEMA,
-        "title": plain(&report.title),
-        "subtitle": plain(&report.subtitle),
-        "summary": {
-            "claims": ids.len(),
-            "proved": counted(ClaimOutcome::Proved),
-            "refuted": counted(ClaimOutcome::Refuted),
-            "undecided": counted(ClaimOutcome::Undecided),
-            "checks": claims.len(),
-            "all_proved": report.all_proved(),
-            "as_expected": report.claims().iter().filter(|c| c.meets_expectation()).count(),
-            "all_as_expected": report.all_as_expected(),
-            "seconds": seconds(report.seconds),
-        },
-        "sections": report.sections.iter().map(|s| json!({
-            "number": s.number,
-            "title": plain(&s.title),
-            "file": s.file,
+        "section": section,
+        "caption": plain(&eq.caption),
+        "lines": eq.lines.iter().map(|l| {
+            let mut v = expr(&l.rhs);
+            let line = v.as_object_mut().expect("an object");
+            line.insert("lhs".into(), json!(l.lhs));
+            line.insert("in_functions".into(), l.in_functions.as_ref().map_or(Value::Null, expr));
+            v
+        }).collect::<Vec<_>>(),
+    })
+}
+
+/// A table of brackets: each entry in the three notations, the entries cut short
+/// (`excerpts`) and those a limit stopped (`undecided`).
+fn table(t: &TableResult, section: u32) -> Value {
+    json!({
+        "section": section,
+        "caption": plain(&t.caption),
+        "functions": t.table.names,
+        "display": t.table.display,
+        "entries": t.table.entries.iter().map(|row| row.iter().map(|e| json!({
+            "text": e.render(Style::Unicode),
+            "ascii": e.render(Style::Ascii),
+            "latex": e.render(Style::Latex),
+        })).collect::<Vec<_>>()).collect::<Vec<_>>(),
+        "excerpts": t.excerpts.iter().map(|((a, b), e)| json!({
+            "row": a,
+            "column": b,
+            "shown_monomials": e.shown,
+            "monomials": e.monomials,
         })).collect::<Vec<_>>(),
-        "claims": claims,
-        "equations": equations,
-        "tables": tables,
-        "towers": towers,
-        "proofs": proofs,
-        "ranks": ranks,
-        "searches": searches,
-        "closures": closures,
+        "undecided": t.undecided().into_iter().map(|(a, b, message)| json!({
+            "row": a,
+            "column": b,
+            "message": message,
+        })).collect::<Vec<_>>(),
+    })
+}
+
+/// A tower of brackets checked by expansion, with its time.
+fn tower(t: &TowerResult, section: u32, seconds: Value) -> Value {
+    json!({
+        "section": section,
+        "id": t.claim.id,
+        "system": t.system,
+        "ladder": t.ladder,
+        "max": t.max,
+        "checked": t.checked,
+        "failures": t.failures.iter().map(|&(m, n)| json!([m, n])).collect::<Vec<_>>(),
+        "outcome": outcome(t.claim.proved),
+        "seconds": seconds,
+    })
+}
+
+/// A proof for all `m, n`: its facts, lemma and conclusion, and the ids of the claims it
+/// decides.
+fn proof(p: &ProofResult, section: u32) -> Value {
+    json!({
+        "section": section,
+        "title": p.title,
+        "facts": p.facts.iter().map(|f| json!({
+            "statement": f.statement,
+            "holds": f.holds,
+            "found": f.found.as_ref().map(|e| e.render(Style::Ascii)),
+        })).collect::<Vec<_>>(),
+        "leibniz_check": p.leibniz_check,
+        "lemma": p.lemma,
+        "conclusion": p.conclusion,
+        "claims": p.claims.iter().map(|c| c.id.clone()).collect::<Vec<_>>(),
+        "outcome": outcome(p.holds()),
     })
 }
 

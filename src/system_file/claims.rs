@@ -7,7 +7,7 @@ use std::time::Instant;
 
 use brackets::{rank, Claim, Condition, EngineError, Outcome};
 use toml::Spanned;
-use trigpoly::syntax::ExprKind;
+use trigpoly::syntax::{Expr as Tree, ExprKind};
 use trigpoly::{AlgebraError, Expr, Span, Var, VarKind};
 
 use super::error::{ErrorKind, FileError};
@@ -185,87 +185,12 @@ impl ClaimSpec {
         span: Range<usize>,
     ) -> Result<ClaimSpec, FileError> {
         let scope = file.scope(file.families.len());
-        let parts = split_top_level(&text.value, '=');
-        let usage = "a claim reads `lhs = rhs`, such as \"{L, G1} = -G2\", or \
-                     `rank(F, G, ...) = r`";
-        if let (1, Some((at, message))) = (parts.len(), unbalanced_bracket(&text.value)) {
-            return Err(text.error(source, ErrorKind::Claim, Span::new(at, at + 1), message));
-        }
-        if parts.len() == 1 {
-            return Err(text.error(
-                source,
-                ErrorKind::Claim,
-                Span::new(0, text.value.len()),
-                format!("{usage}; there is no '=' here"),
-            ));
-        }
-        if parts.len() > 2 {
-            let at = parts[2].start - 1;
-            return Err(text.error(
-                source,
-                ErrorKind::Claim,
-                Span::new(at, at + 1),
-                format!("{usage}, with one '='; put conditions in `when`"),
-            ));
-        }
-        let lhs = text.slice(parts[0].clone());
-        let rhs = text.slice(parts[1].clone());
-        for side in [&lhs, &rhs] {
-            if side.value.trim().is_empty() {
-                return Err(side.error(
-                    source,
-                    ErrorKind::Claim,
-                    Span::new(0, side.value.len()),
-                    format!("{usage}; one side is empty"),
-                ));
-            }
-        }
+        let (lhs, rhs) = claim_sides(source, &text)?;
         let lhs_tree = scope.tree(source, &lhs)?;
         let rhs_tree = scope.tree(source, &rhs)?;
         let (form, statement) = match &lhs_tree.kind {
             ExprKind::Call(f, _, args) if f == "rank" => {
-                let expected = match &rhs_tree.kind {
-                    ExprKind::Integer(n) => usize::try_from(n.clone()).ok(),
-                    _ => None,
-                };
-                let Some(expected) = expected else {
-                    let why = match &rhs_tree.kind {
-                        ExprKind::Integer(_) => {
-                            "the right side of a rank claim is a whole number no larger than the \
-                             number of coordinates and momenta"
-                        }
-                        _ => "the right side of a rank claim is a whole number, such as 5",
-                    };
-                    return Err(rhs.error(source, ErrorKind::Claim, rhs_tree.span, why));
-                };
-                // Family instances written K_{1,1} are K_1_1 in the rewritten text, at the
-                // same places.
-                let rewritten = lhs.rewritten(rewrite_braces(&lhs.value, &file.families, &[]));
-                let functions: Vec<(String, Text)> = args
-                    .iter()
-                    .map(|a| (file.pretty(a), rewritten.slice(a.span.start..a.span.end)))
-                    .collect();
-                let vars = file.system.vars();
-                let coordinates: Vec<&str> = file
-                    .system
-                    .space()
-                    .coordinates()
-                    .iter()
-                    .map(|&v| vars.variable(v).unicode())
-                    .collect();
-                let names: Vec<&str> = functions.iter().map(|f| f.0.as_str()).collect();
-                let statement = format!(
-                    "rank ∂({})/∂({}) = {expected}",
-                    names.join(", "),
-                    coordinates.join(", ")
-                );
-                (
-                    ClaimForm::Rank {
-                        functions,
-                        expected,
-                    },
-                    statement,
-                )
+                rank_form(file, source, &lhs, args, &rhs, &rhs_tree)?
             }
             _ => {
                 let statement = format!("{} = {}", file.pretty(&lhs_tree), file.pretty(&rhs_tree));
@@ -275,23 +200,7 @@ impl ClaimSpec {
         let condition = match when {
             None => None,
             Some((pieces, when_span)) => {
-                let condition = parse_condition(file, source, &pieces)?;
-                // A parameter set to a function of phase space (k = p_x) would change the
-                // Jacobian, not only evaluate it: its value, too, must be free of them.
-                if let (ClaimForm::Rank { .. }, Some((v, kind))) =
-                    (&form, condition.phase_variable())
-                {
-                    return Err(source.error(
-                        ErrorKind::Condition,
-                        when_span,
-                        format!(
-                            "a rank claim's condition may set parameters only, to numbers or \
-                             other parameters, and it holds {v}, {kind}: the rank is that of \
-                             the Jacobian on the whole phase space"
-                        ),
-                    ));
-                }
-                Some(condition)
+                Some(claim_condition(file, source, &pieces, when_span, &form)?)
             }
         };
         Ok(ClaimSpec {
@@ -305,6 +214,135 @@ impl ClaimSpec {
             source: source.clone(),
         })
     }
+}
+
+/// The two sides of a claim's text, `lhs = rhs`, each refusal at its place: a bracket that is
+/// not closed or closes nothing, no `=` or more than one, an empty side.
+fn claim_sides(source: &Source, text: &Text) -> Result<(Text, Text), FileError> {
+    let parts = split_top_level(&text.value, '=');
+    let usage = "a claim reads `lhs = rhs`, such as \"{L, G1} = -G2\", or \
+                 `rank(F, G, ...) = r`";
+    if let (1, Some((at, message))) = (parts.len(), unbalanced_bracket(&text.value)) {
+        return Err(text.error(source, ErrorKind::Claim, Span::new(at, at + 1), message));
+    }
+    if parts.len() == 1 {
+        return Err(text.error(
+            source,
+            ErrorKind::Claim,
+            Span::new(0, text.value.len()),
+            format!("{usage}; there is no '=' here"),
+        ));
+    }
+    if parts.len() > 2 {
+        let at = parts[2].start - 1;
+        return Err(text.error(
+            source,
+            ErrorKind::Claim,
+            Span::new(at, at + 1),
+            format!("{usage}, with one '='; put conditions in `when`"),
+        ));
+    }
+    let lhs = text.slice(parts[0].clone());
+    let rhs = text.slice(parts[1].clone());
+    for side in [&lhs, &rhs] {
+        if side.value.trim().is_empty() {
+            return Err(side.error(
+                source,
+                ErrorKind::Claim,
+                Span::new(0, side.value.len()),
+                format!("{usage}; one side is empty"),
+            ));
+        }
+    }
+    Ok((lhs, rhs))
+}
+
+/// A rank claim `rank(F, G, …) = r` (`lhs` the call, `args` its arguments): its form, each
+/// function as printed with its text, and its statement in the paper's notation,
+/// `rank ∂(F, G)/∂(x, p_x) = r`.
+fn rank_form(
+    file: &LoadedSystem,
+    source: &Source,
+    lhs: &Text,
+    args: &[Tree],
+    rhs: &Text,
+    rhs_tree: &Tree,
+) -> Result<(ClaimForm, String), FileError> {
+    let expected = claimed_rank(source, rhs, rhs_tree)?;
+    // Family instances written K_{1,1} are K_1_1 in the rewritten text, at the
+    // same places.
+    let rewritten = lhs.rewritten(rewrite_braces(&lhs.value, &file.families, &[]));
+    let functions: Vec<(String, Text)> = args
+        .iter()
+        .map(|a| (file.pretty(a), rewritten.slice(a.span.start..a.span.end)))
+        .collect();
+    let vars = file.system.vars();
+    let coordinates: Vec<&str> = file
+        .system
+        .space()
+        .coordinates()
+        .iter()
+        .map(|&v| vars.variable(v).unicode())
+        .collect();
+    let names: Vec<&str> = functions.iter().map(|f| f.0.as_str()).collect();
+    let statement = format!(
+        "rank ∂({})/∂({}) = {expected}",
+        names.join(", "),
+        coordinates.join(", ")
+    );
+    Ok((
+        ClaimForm::Rank {
+            functions,
+            expected,
+        },
+        statement,
+    ))
+}
+
+/// The rank that a rank claim's right side states: a whole number, refused when it is none
+/// or too large to be one.
+fn claimed_rank(source: &Source, rhs: &Text, rhs_tree: &Tree) -> Result<usize, FileError> {
+    let expected = match &rhs_tree.kind {
+        ExprKind::Integer(n) => usize::try_from(n.clone()).ok(),
+        _ => None,
+    };
+    let Some(expected) = expected else {
+        let why = match &rhs_tree.kind {
+            ExprKind::Integer(_) => {
+                "the right side of a rank claim is a whole number no larger than the \
+                 number of coordinates and momenta"
+            }
+            _ => "the right side of a rank claim is a whole number, such as 5",
+        };
+        return Err(rhs.error(source, ErrorKind::Claim, rhs_tree.span, why));
+    };
+    Ok(expected)
+}
+
+/// The condition of a claim of the given form, read from the pieces of its `when`, which is
+/// written at `when_span`.
+fn claim_condition(
+    file: &LoadedSystem,
+    source: &Source,
+    pieces: &[Text],
+    when_span: Range<usize>,
+    form: &ClaimForm,
+) -> Result<Condition, FileError> {
+    let condition = parse_condition(file, source, pieces)?;
+    // A parameter set to a function of phase space (k = p_x) would change the
+    // Jacobian, not only evaluate it: its value, too, must be free of them.
+    if let (ClaimForm::Rank { .. }, Some((v, kind))) = (form, condition.phase_variable()) {
+        return Err(source.error(
+            ErrorKind::Condition,
+            when_span,
+            format!(
+                "a rank claim's condition may set parameters only, to numbers or \
+                 other parameters, and it holds {v}, {kind}: the rank is that of \
+                 the Jacobian on the whole phase space"
+            ),
+        ));
+    }
+    Ok(condition)
 }
 
 /// The pieces of `when`: `var = value` texts separated by commas, or an array of them.
@@ -520,101 +558,17 @@ pub(crate) fn parse_assignments(
     form: &AssignmentForm<'_>,
     admit: impl Fn(trigpoly::Var) -> Option<String>,
 ) -> Result<Vec<Assignment>, FileError> {
-    let usage = form.usage;
-    let scope = file.scope(file.families.len());
-    let vars = file.system.vars();
+    let reader = AssignmentReader {
+        file,
+        source,
+        form,
+        scope: file.scope(file.families.len()),
+    };
     let mut assignments: Vec<Assignment> = Vec::new();
     for piece in pieces {
-        let parts = split_top_level(&piece.value, '=');
-        if parts.len() != 2 {
-            let span = match parts.get(2) {
-                Some(p) => Span::new(p.start - 1, p.start),
-                None => Span::new(0, piece.value.len()),
-            };
-            return Err(piece.error(source, ErrorKind::Condition, span, usage));
-        }
-        let lhs = piece.slice(parts[0].clone());
-        let rhs = piece.slice(parts[1].clone());
-        if lhs.value.trim().is_empty() || rhs.value.trim().is_empty() {
-            return Err(piece.error(
-                source,
-                ErrorKind::Condition,
-                Span::new(0, piece.value.len()),
-                format!("{usage}; one side is empty"),
-            ));
-        }
-        let lhs_tree = scope.tree(source, &lhs)?;
-        let var = match &lhs_tree.kind {
-            ExprKind::Name(n) => vars.lookup(n),
-            _ => None,
-        };
-        let Some(var) = var else {
-            return Err(lhs.error(
-                source,
-                ErrorKind::Condition,
-                lhs_tree.span,
-                format!(
-                    "the left side of {} is one declared variable ({}), found '{}'",
-                    form.what,
-                    form.kinds,
-                    lhs.value.trim()
-                ),
-            ));
-        };
-        if let Some(why) = admit(var) {
-            return Err(lhs.error(source, ErrorKind::Condition, lhs_tree.span, why));
-        }
-        if assignments.iter().any(|a| a.var == var) {
-            return Err(lhs.error(
-                source,
-                ErrorKind::Condition,
-                lhs_tree.span,
-                format!("'{}' is fixed twice", lhs.value.trim()),
-            ));
-        }
-        let name = vars.variable(var).unicode();
-        // A number alone, where the form takes it: a decimal, or `3*pi/4` when the file has
-        // no variable named so (`q` with `pi_times`).
-        let pi = form.pi && vars.lookup("pi").is_none();
-        let decimal = form.decimals.then(|| decimal_number(rhs.value.trim()));
-        let pi_times = || pi.then(|| pi_multiple(&rhs.value)).flatten();
-        let number = match decimal.flatten() {
-            Some(q) => Some((q, false)),
-            None => pi_times().map(|q| (q, true)),
-        };
-        let pi_times = number.as_ref().is_some_and(|n| n.1);
-        let (value, shown) = match number {
-            Some((q, _)) => (
-                Expr::constant(vars, q.into()),
-                format!("{name} = {}", rhs.value.trim()),
-            ),
-            None => {
-                let hint = |mut e: FileError| {
-                    if form.decimals && e.message.starts_with("decimal numbers") {
-                        e.hint = Some(
-                            "a value alone may be a decimal number (x = 0.5); in an expression, \
-                             write fractions (x = 2/3 + 1/2)"
-                                .into(),
-                        );
-                    }
-                    if pi
-                        && ["unknown name 'pi'", "unknown name 'π'"]
-                            .iter()
-                            .any(|m| e.message.starts_with(m))
-                    {
-                        e.hint = Some(
-                            "a value may be a multiple of π alone (theta = 3*pi/4, phi = -pi/2), \
-                             not a part of an expression"
-                                .into(),
-                        );
-                    }
-                    e
-                };
-                let rhs_tree = scope.tree(source, &rhs).map_err(hint)?;
-                let value = scope.lower(source, &rhs, &rhs_tree).map_err(hint)?;
-                (value, format!("{name} = {}", file.pretty(&rhs_tree)))
-            }
-        };
+        let (lhs, rhs) = reader.sides(piece)?;
+        let var = reader.variable(&lhs, &admit, &assignments)?;
+        let (value, shown, pi_times) = reader.value(var, &rhs)?;
         assignments.push(Assignment {
             var,
             value,
@@ -624,6 +578,141 @@ pub(crate) fn parse_assignments(
         });
     }
     Ok(assignments)
+}
+
+/// What reading the `var = value` of a list takes: the file, the source of the texts, how
+/// the list reads, and the scope its values are read in.
+struct AssignmentReader<'a> {
+    file: &'a LoadedSystem,
+    source: &'a Source,
+    form: &'a AssignmentForm<'a>,
+    scope: super::scope::Scope<'a>,
+}
+
+impl AssignmentReader<'_> {
+    /// The two sides of one `var = value`, refused when it has no `=` or more than one, or an
+    /// empty side.
+    fn sides(&self, piece: &Text) -> Result<(Text, Text), FileError> {
+        let usage = self.form.usage;
+        let parts = split_top_level(&piece.value, '=');
+        if parts.len() != 2 {
+            let span = match parts.get(2) {
+                Some(p) => Span::new(p.start - 1, p.start),
+                None => Span::new(0, piece.value.len()),
+            };
+            return Err(piece.error(self.source, ErrorKind::Condition, span, usage));
+        }
+        let lhs = piece.slice(parts[0].clone());
+        let rhs = piece.slice(parts[1].clone());
+        if lhs.value.trim().is_empty() || rhs.value.trim().is_empty() {
+            return Err(piece.error(
+                self.source,
+                ErrorKind::Condition,
+                Span::new(0, piece.value.len()),
+                format!("{usage}; one side is empty"),
+            ));
+        }
+        Ok((lhs, rhs))
+    }
+
+    /// The variable a left side names: one declared variable, which `admit` does not refuse
+    /// and none of `assignments` sets already.
+    fn variable(
+        &self,
+        lhs: &Text,
+        admit: impl Fn(trigpoly::Var) -> Option<String>,
+        assignments: &[Assignment],
+    ) -> Result<trigpoly::Var, FileError> {
+        let lhs_tree = self.scope.tree(self.source, lhs)?;
+        let var = match &lhs_tree.kind {
+            ExprKind::Name(n) => self.file.system.vars().lookup(n),
+            _ => None,
+        };
+        let refuse = |message: String| {
+            Err(lhs.error(self.source, ErrorKind::Condition, lhs_tree.span, message))
+        };
+        let Some(var) = var else {
+            return refuse(format!(
+                "the left side of {} is one declared variable ({}), found '{}'",
+                self.form.what,
+                self.form.kinds,
+                lhs.value.trim()
+            ));
+        };
+        if let Some(why) = admit(var) {
+            return refuse(why);
+        }
+        if assignments.iter().any(|a| a.var == var) {
+            return refuse(format!("'{}' is fixed twice", lhs.value.trim()));
+        }
+        Ok(var)
+    }
+
+    /// The value a right side gives `var`, how the assignment reads (`p_θ = 2Iω/3`), and
+    /// whether the value is a multiple of π written alone ([`Assignment::pi_times`]).
+    fn value(&self, var: trigpoly::Var, rhs: &Text) -> Result<(Expr, String, bool), FileError> {
+        let vars = self.file.system.vars();
+        let name = vars.variable(var).unicode();
+        let number = self.number(rhs);
+        let pi_times = number.as_ref().is_some_and(|n| n.1);
+        let (value, shown) = match number {
+            Some((q, _)) => (
+                Expr::constant(vars, q.into()),
+                format!("{name} = {}", rhs.value.trim()),
+            ),
+            None => {
+                let hint = |e| self.hinted(e);
+                let rhs_tree = self.scope.tree(self.source, rhs).map_err(hint)?;
+                let value = self
+                    .scope
+                    .lower(self.source, rhs, &rhs_tree)
+                    .map_err(hint)?;
+                (value, format!("{name} = {}", self.file.pretty(&rhs_tree)))
+            }
+        };
+        Ok((value, shown, pi_times))
+    }
+
+    /// A right side that is a number alone, where the form takes it: a decimal, or `3*pi/4`
+    /// when the file has no variable named so (`q` with `pi_times`).
+    fn number(&self, rhs: &Text) -> Option<(trigpoly::Rational, bool)> {
+        let decimal = self.form.decimals.then(|| decimal_number(rhs.value.trim()));
+        let pi_times = || self.takes_pi().then(|| pi_multiple(&rhs.value)).flatten();
+        match decimal.flatten() {
+            Some(q) => Some((q, false)),
+            None => pi_times().map(|q| (q, true)),
+        }
+    }
+
+    /// Whether a value may be a multiple of π alone: the form takes one, and the file has no
+    /// variable named `pi`, which the value would name instead.
+    fn takes_pi(&self) -> bool {
+        self.form.pi && self.file.system.vars().lookup("pi").is_none()
+    }
+
+    /// An error in a right side read as an expression, with the hint that a number the form
+    /// takes alone (a decimal, a multiple of π) is not a part of an expression.
+    fn hinted(&self, mut e: FileError) -> FileError {
+        if self.form.decimals && e.message.starts_with("decimal numbers") {
+            e.hint = Some(
+                "a value alone may be a decimal number (x = 0.5); in an expression, \
+                 write fractions (x = 2/3 + 1/2)"
+                    .into(),
+            );
+        }
+        if self.takes_pi()
+            && ["unknown name 'pi'", "unknown name 'π'"]
+                .iter()
+                .any(|m| e.message.starts_with(m))
+        {
+            e.hint = Some(
+                "a value may be a multiple of π alone (theta = 3*pi/4, phi = -pi/2), \
+                 not a part of an expression"
+                    .into(),
+            );
+        }
+        e
+    }
 }
 
 impl ClaimSpec {

@@ -14,7 +14,9 @@ use trigpoly::{AlgebraError, Expr, Limits, Var, VarSet, VarSetBuilder, Vars};
 use super::claims::ClaimSpec;
 use super::error::{locate_bytes, ErrorKind, FileError};
 use super::keys::unknown_key_hint;
-use super::model::{ExpectShape, FunctionModel, ShapeModel, StringTable, SystemModel};
+use super::model::{
+    ExpectShape, FunctionModel, PhaseSpaceModel, ShapeModel, StringTable, SystemModel,
+};
 use super::names::{check_display, index_refusal, BadName, PrintedNames};
 use super::scope::{first_bracket, mention};
 use super::text::{Source, Text};
@@ -616,38 +618,67 @@ impl<'a> Builder<'a> {
         Ok(vars)
     }
 
+    /// Builds the system in the order the file is read: the names of `[phase_space]`, the
+    /// limits, the variables and the phase space with its declared brackets, then the
+    /// Hamiltonian, the functions, the families and the claims, each of which may use only
+    /// what comes before it.
     fn build(mut self, model: SystemModel) -> Result<LoadedSystem, FileError> {
-        let ps = model.phase_space.get_ref();
+        self.declare_variables(&model.phase_space)?;
+        let limits = self.limits(&model)?;
+        let vars = self.variables(&model, limits)?;
+        let space = self.phase_space(&model.phase_space, &vars)?;
+        self.shown = PrintedNames::of_variables(&vars);
+        let mut file = self.unfilled(&model, space, &vars, limits);
+        if let Some(poisson) = &model.poisson {
+            let space = self.poisson(&file, poisson)?;
+            file.system = System::new(&file.name, space, Expr::zero(&vars));
+        }
+        let h = self.hamiltonian(&file, &model)?;
+        file.system.define("H", "H", h);
+        self.functions(&mut file, &model)?;
+        self.families(&mut file, &model)?;
+        claims(&mut file, &model)?;
+        Ok(file)
+    }
+
+    /// Declares every name of `[phase_space]`, kind by kind (coordinates, angles, Poisson
+    /// variables, parameters, radicals), then each coordinate's and angle's momentum, so that
+    /// a name given twice is refused at its second place. A phase space without a coordinate,
+    /// an angle or a Poisson variable is refused first.
+    fn declare_variables(
+        &mut self,
+        phase_space: &Spanned<PhaseSpaceModel>,
+    ) -> Result<(), FileError> {
+        let ps = phase_space.get_ref();
         if ps.coordinates.is_empty() && ps.angles.is_empty() && ps.variables.is_empty() {
             return Err(self.error(
                 ErrorKind::Schema,
-                model.phase_space.span(),
+                phase_space.span(),
                 "[phase_space] declares no coordinates, angles or variables: a phase space \
                  needs at least one canonical pair or Poisson variable",
             ));
         }
-        for c in &ps.coordinates {
-            self.declare(c.get_ref(), c.span(), "a coordinate")?;
+        for (names, what) in [
+            (&ps.coordinates, "a coordinate"),
+            (&ps.angles, "an angle"),
+            (&ps.variables, "a Poisson variable"),
+            (&ps.parameters, "a parameter"),
+        ] {
+            for name in names {
+                self.declare(name.get_ref(), name.span(), what)?;
+            }
         }
-        for a in &ps.angles {
-            self.declare(a.get_ref(), a.span(), "an angle")?;
-        }
-        for v in &ps.variables {
-            self.declare(v.get_ref(), v.span(), "a Poisson variable")?;
-        }
-        for p in &ps.parameters {
-            self.declare(p.get_ref(), p.span(), "a parameter")?;
-        }
-        let radicals = ps
-            .radicals
-            .as_ref()
-            .map_or(&[][..], |r| &r.get_ref().entries);
-        for (name, _) in radicals {
+        for (name, _) in declared_radicals(ps) {
             self.declare(name.get_ref(), name.span(), "a radical")?;
         }
-        let qs: Vec<&Spanned<String>> = ps.coordinates.iter().chain(&ps.angles).collect();
-        for q in &qs {
-            let p = format!("p_{}", q.get_ref());
+        self.declare_momenta(ps)
+    }
+
+    /// Declares the momentum `p_q` of each coordinate and angle `q`, refused at `q` when that
+    /// name is already declared (a parameter `p_x` beside a coordinate `x`).
+    fn declare_momenta(&mut self, ps: &PhaseSpaceModel) -> Result<(), FileError> {
+        for q in canonical_coordinates(ps) {
+            let p = momentum(q);
             if let Some((other, _)) = self.names.get(&p) {
                 return Err(self.error(
                     ErrorKind::Name,
@@ -660,32 +691,14 @@ impl<'a> Builder<'a> {
             }
             self.names.insert(p, ("a momentum", q.span()));
         }
-        let limits = self.limits(&model)?;
-        let mut builder = VarSet::builder().limits(limits);
-        for c in &ps.coordinates {
-            builder = builder.coordinate(c.get_ref());
-        }
-        for a in &ps.angles {
-            builder = builder.angle(a.get_ref());
-        }
-        for q in &qs {
-            builder = builder.momentum(&format!("p_{}", q.get_ref()));
-        }
-        for v in &ps.variables {
-            builder = builder.poisson(v.get_ref());
-        }
-        for p in &ps.parameters {
-            builder = builder.parameter(p.get_ref());
-        }
-        // The functions' names, which the printer must not spell with variables (`Mx`).
-        builder = builder.also_named(model.function.iter().flat_map(|f| {
-            let f = f.get_ref();
-            [Some(&f.name), f.display.as_ref()]
-                .into_iter()
-                .flatten()
-                .map(|n| n.get_ref().as_str())
-        }));
-        let span = model.phase_space.span();
+        Ok(())
+    }
+
+    /// The variables of `[phase_space]` held to `limits`, with the radicals and then the
+    /// denominator atoms added.
+    fn variables(&self, model: &SystemModel, limits: Limits) -> Result<Vars, FileError> {
+        let ps = model.phase_space.get_ref();
+        let builder = variables_builder(ps, &model.function, limits);
         let with_atoms = builder.clone();
         let vars = builder.build().map_err(|e| {
             // Two names that one spelling finds (`omega` and `ω`), or that LaTeX prints
@@ -702,56 +715,68 @@ impl<'a> Builder<'a> {
                     .map(|n| n.span()),
                 _ => None,
             };
-            self.error(ErrorKind::Name, at.unwrap_or(span.clone()), e.to_string())
+            self.error(
+                ErrorKind::Name,
+                at.unwrap_or(model.phase_space.span()),
+                e.to_string(),
+            )
         })?;
-        let (with_atoms, vars) = self.radicals(radicals, with_atoms, vars)?;
-        let vars = self.denominators(&ps.denominators, with_atoms, vars)?;
-        let pairs: Vec<(String, String)> = qs
+        let (with_atoms, vars) = self.radicals(declared_radicals(ps), with_atoms, vars)?;
+        self.denominators(&ps.denominators, with_atoms, vars)
+    }
+
+    /// The phase space of `vars`: each coordinate and angle paired with its momentum.
+    fn phase_space(
+        &self,
+        phase_space: &Spanned<PhaseSpaceModel>,
+        vars: &Vars,
+    ) -> Result<PhaseSpace, FileError> {
+        let pairs: Vec<(String, String)> = canonical_coordinates(phase_space.get_ref())
             .iter()
-            .map(|q| (q.get_ref().clone(), format!("p_{}", q.get_ref())))
+            .map(|q| (q.get_ref().clone(), momentum(q)))
             .collect();
         let pairs: Vec<(&str, &str)> = pairs
             .iter()
             .map(|(q, p)| (q.as_str(), p.as_str()))
             .collect();
-        let space = PhaseSpace::new(&vars, &pairs)
-            .map_err(|e| self.error(ErrorKind::Name, span.clone(), e.to_string()))?;
-        self.shown = PrintedNames::of_variables(&vars);
-        let name = match &model.name {
-            Some(n) => n.get_ref().clone(),
-            None => Path::new(&self.source.origin).file_stem().map_or_else(
-                || "system".to_string(),
-                |s| s.to_string_lossy().into_owned(),
-            ),
-        };
-        let mut file = LoadedSystem {
+        PhaseSpace::new(vars, &pairs)
+            .map_err(|e| self.error(ErrorKind::Name, phase_space.span(), e.to_string()))
+    }
+
+    /// The system as its phase space alone declares it, before its declared brackets,
+    /// Hamiltonian (zero until it is read), functions, families and claims.
+    fn unfilled(
+        &self,
+        model: &SystemModel,
+        space: PhaseSpace,
+        vars: &Vars,
+        limits: Limits,
+    ) -> LoadedSystem {
+        let name = self.system_name(model);
+        LoadedSystem {
             source: self.source.clone(),
             name: name.clone(),
             citation: model.source.as_ref().map(|s| s.get_ref().clone()),
             description: model.description.as_ref().map(|s| s.get_ref().clone()),
-            system: System::new(&name, space, Expr::zero(&vars)),
+            system: System::new(&name, space, Expr::zero(vars)),
             families: Vec::new(),
             claims: Vec::new(),
             limits,
             caller: super::Caller::Program,
             cache: Mutex::new(HashMap::new()),
-        };
-
-        if let Some(poisson) = &model.poisson {
-            let space = self.poisson(&file, poisson)?;
-            file.system = System::new(&name, space, Expr::zero(&vars));
         }
+    }
 
-        let h = self.hamiltonian(&file, &model)?;
-        file.system.define("H", "H", h);
-
-        self.functions(&mut file, &model)?;
-        self.families(&mut file, &model)?;
-        for (k, c) in model.claim.iter().enumerate() {
-            let spec = ClaimSpec::parse(&file, k, c)?;
-            file.claims.push(spec);
+    /// The system's name: the file's `name`, else the file's name without its extension
+    /// (`kepler` for `systems/kepler.toml`), else `system`.
+    fn system_name(&self, model: &SystemModel) -> String {
+        match &model.name {
+            Some(n) => n.get_ref().clone(),
+            None => Path::new(&self.source.origin).file_stem().map_or_else(
+                || "system".to_string(),
+                |s| s.to_string_lossy().into_owned(),
+            ),
         }
-        Ok(file)
     }
 
     /// The Hamiltonian, read in the variables and parameters alone (it cannot use `H`, nor a
@@ -935,4 +960,64 @@ fn later_function(
         Some(name) => e.with_hint(hint(&name)),
         None => e,
     }
+}
+
+/// Reads the file's claims, in order, each with every function and family of the file.
+fn claims(file: &mut LoadedSystem, model: &SystemModel) -> Result<(), FileError> {
+    for (k, c) in model.claim.iter().enumerate() {
+        let spec = ClaimSpec::parse(file, k, c)?;
+        file.claims.push(spec);
+    }
+    Ok(())
+}
+
+/// The coordinates and angles of `[phase_space]`, in that order: the variables that have a
+/// momentum.
+fn canonical_coordinates(ps: &PhaseSpaceModel) -> Vec<&Spanned<String>> {
+    ps.coordinates.iter().chain(&ps.angles).collect()
+}
+
+/// The momentum of a coordinate or angle `q`: `p_q`.
+fn momentum(q: &Spanned<String>) -> String {
+    format!("p_{}", q.get_ref())
+}
+
+/// The radicals of `[phase_space]`, each name with its radicand; none when it has none.
+fn declared_radicals(ps: &PhaseSpaceModel) -> &[(Spanned<String>, Spanned<String>)] {
+    ps.radicals
+        .as_ref()
+        .map_or(&[][..], |r| &r.get_ref().entries)
+}
+
+/// The builder of the variables of `[phase_space]`, in the order of a `VarSet` (coordinates,
+/// angles, their momenta, Poisson variables, parameters), held to `limits`.
+fn variables_builder(
+    ps: &PhaseSpaceModel,
+    functions: &[Spanned<FunctionModel>],
+    limits: Limits,
+) -> VarSetBuilder {
+    let mut builder = VarSet::builder().limits(limits);
+    for c in &ps.coordinates {
+        builder = builder.coordinate(c.get_ref());
+    }
+    for a in &ps.angles {
+        builder = builder.angle(a.get_ref());
+    }
+    for q in canonical_coordinates(ps) {
+        builder = builder.momentum(&momentum(q));
+    }
+    for v in &ps.variables {
+        builder = builder.poisson(v.get_ref());
+    }
+    for p in &ps.parameters {
+        builder = builder.parameter(p.get_ref());
+    }
+    // The functions' names, which the printer must not spell with variables (`Mx`).
+    builder.also_named(functions.iter().flat_map(|f| {
+        let f = f.get_ref();
+        [Some(&f.name), f.display.as_ref()]
+            .into_iter()
+            .flatten()
+            .map(|n| n.get_ref().as_str())
+    }))
 }

@@ -4,7 +4,7 @@
 
 use std::collections::{BTreeSet, HashMap, HashSet};
 
-use trigpoly::{AlgebraError, Expr, GaussianRational, Style, VarKind};
+use trigpoly::{AlgebraError, Expr, GaussianRational, Style, VarKind, Vars};
 
 use crate::clearing::Clearing;
 use crate::error::EngineError;
@@ -382,49 +382,104 @@ fn solve_combination(
         .vars()
         .map(|v| vars.variable(v).kind() == VarKind::Parameter)
         .collect();
-    let split = |e: &[i64]| -> (Vec<i64>, Vec<i64>) {
-        let phase = e
-            .iter()
-            .zip(&is_param)
-            .map(|(&x, &p)| if p { 0 } else { x })
-            .collect();
-        let param = e
-            .iter()
-            .zip(&is_param)
-            .map(|(&x, &p)| if p { x } else { 0 })
-            .collect();
-        (phase, param)
+    let split = |e: &[i64]| split_exponents(e, &is_param);
+    let target_params = parameter_parts(target, split);
+    let useful = useful_functions(basis, allowed, &target_params, split);
+    // A phase-space monomial of the target that none of them has is in no combination: a
+    // bracket of 10⁵ terms that is none is known so before any column is formed.
+    if !meets_every_monomial(basis, &useful, &target_params, split) {
+        return Ok(Err(Miss::Unmet));
+    }
+    let limit = vars.limits().max_terms;
+    let Some(nus) = column_shifts(basis, useful, &target_params, split, reach, limit)? else {
+        return Ok(Err(Miss::Ansatz));
     };
-    // The target's parameter parts by phase-space part: a term of `F_k` meets the target's
-    // terms of its own phase-space monomial by one lookup, where a scan of all of them for
-    // each of its terms took minutes for functions of 10⁵ terms.
+    let columns = columns(&vars, basis, nus)?;
+    let Some((x, unique)) = solve_columns(target, &columns) else {
+        return Ok(Err(Miss::Ansatz));
+    };
+    let mut coeffs: Vec<Expr> = vec![Expr::zero(&vars); basis.len()];
+    for (j, xj) in x {
+        let Column {
+            function: k, nu, ..
+        } = &columns[j];
+        let powers: Vec<_> = vars.vars().zip(nu.iter().copied()).collect();
+        coeffs[*k] = coeffs[*k].checked_add(&Expr::monomial(&vars, xj, &powers)?)?;
+    }
+    Ok(Ok(Combination { coeffs, unique }))
+}
+
+/// Exponents split into their phase-space part and their parameter part, each zero where
+/// `is_param` says the other is.
+fn split_exponents(e: &[i64], is_param: &[bool]) -> (Vec<i64>, Vec<i64>) {
+    let phase = e
+        .iter()
+        .zip(is_param)
+        .map(|(&x, &p)| if p { 0 } else { x })
+        .collect();
+    let param = e
+        .iter()
+        .zip(is_param)
+        .map(|(&x, &p)| if p { x } else { 0 })
+        .collect();
+    (phase, param)
+}
+
+/// The target's parameter parts by phase-space part: a term of `F_k` meets the target's
+/// terms of its own phase-space monomial by one lookup, where a scan of all of them for each
+/// of its terms took minutes for functions of 10⁵ terms.
+fn parameter_parts(
+    target: &Expr,
+    split: impl Fn(&[i64]) -> (Vec<i64>, Vec<i64>),
+) -> HashMap<Vec<i64>, Vec<Vec<i64>>> {
     let mut target_params: HashMap<Vec<i64>, Vec<Vec<i64>>> = HashMap::new();
     for t in target.terms() {
         let (phase, param) = split(&t.exponents());
         target_params.entry(phase).or_default().push(param);
     }
-    let useful = useful_functions(basis, allowed, &target_params, split);
-    // A phase-space monomial of the target that none of them has is in no combination: a
-    // bracket of 10⁵ terms that is none is known so before any column is formed.
+    target_params
+}
+
+/// Whether every phase-space monomial of the target is in one of the `useful` functions.
+fn meets_every_monomial(
+    basis: &[Expr],
+    useful: &[usize],
+    target: &HashMap<Vec<i64>, Vec<Vec<i64>>>,
+    split: impl Fn(&[i64]) -> (Vec<i64>, Vec<i64>),
+) -> bool {
     let met: HashSet<&Vec<i64>> = useful
         .iter()
         .flat_map(|&k| basis[k].terms())
-        .filter_map(|u| target_params.get_key_value(&split(&u.exponents()).0))
+        .filter_map(|u| target.get_key_value(&split(&u.exponents()).0))
         .map(|(phase, _)| phase)
         .collect();
-    if met.len() < target_params.len() {
-        return Ok(Err(Miss::Unmet));
-    }
-    // Candidate columns ν·F_k: the parameter monomials ν that carry a term of `F_k` onto one
-    // of the target.
-    let mut nus: Vec<(usize, BTreeSet<Vec<i64>>)> = useful
+    met.len() >= target.len()
+}
+
+/// The shifts `ν` of the columns `ν·F_k`: each function's place `k` in the basis, with the
+/// parameter monomials `ν` (as exponents) it is multiplied by.
+type Shifts = Vec<(usize, BTreeSet<Vec<i64>>)>;
+
+/// The shifts `ν` of the candidate columns `ν·F_k` of the `useful` functions, by function:
+/// those that carry a term of `F_k` onto one of the target, and with [`Reach::Outside`] those
+/// too that cancel other columns' terms outside it ([`cancel_outside`]). `None` when the
+/// reach is `Outside` and adds no column; an error when the columns would hold more than
+/// `limit` terms.
+fn column_shifts(
+    basis: &[Expr],
+    useful: Vec<usize>,
+    target: &HashMap<Vec<i64>, Vec<Vec<i64>>>,
+    split: impl Fn(&[i64]) -> (Vec<i64>, Vec<i64>) + Copy,
+    reach: Reach,
+    limit: usize,
+) -> Result<Option<Shifts>, EngineError> {
+    let mut nus: Shifts = useful
         .into_iter()
-        .map(|k| (k, shifts_onto(&basis[k], &target_params, split)))
+        .map(|k| (k, shifts_onto(&basis[k], target, split)))
         .collect();
     // The columns are held at once, and reduced: together they are held to the term limit,
     // as one result is (a bracket of 10⁶ terms and a function of 7·10⁵ that it spans took
     // 24 columns of 1.7·10⁷ terms, and 9 s, to be found no combination).
-    let limit = vars.limits().max_terms;
     let held: usize = nus
         .iter()
         .map(|(k, n)| n.len().saturating_mul(basis[*k].len()))
@@ -432,31 +487,57 @@ fn solve_combination(
     if held > limit {
         return Err(AlgebraError::TooManyTerms { limit }.into());
     }
-    if reach == Reach::Outside
-        && !cancel_outside(basis, &mut nus, &target_params, split, limit - held)
-    {
+    if reach == Reach::Outside && !cancel_outside(basis, &mut nus, target, split, limit - held) {
         // No column beyond the target's: the solve would be the one already made.
-        return Ok(Err(Miss::Ansatz));
+        return Ok(None);
     }
-    let mut columns: Vec<(usize, Vec<i64>, Expr)> = Vec::new();
+    Ok(Some(nus))
+}
+
+/// A column `ν·F_k` of the solve.
+struct Column {
+    /// `k`, the function's place in the basis.
+    function: usize,
+    /// `ν`, the parameter monomial's exponents.
+    nu: Vec<i64>,
+    /// `ν·F_k`.
+    product: Expr,
+}
+
+/// The columns `ν·F_k`, function by function, each for its shifts `ν` in order.
+fn columns(vars: &Vars, basis: &[Expr], nus: Shifts) -> Result<Vec<Column>, EngineError> {
+    let mut columns: Vec<Column> = Vec::new();
     for (k, nus) in nus {
         let f = &basis[k];
         for nu in nus {
             let powers: Vec<_> = vars.vars().zip(nu.iter().copied()).collect();
-            let m = Expr::monomial(&vars, GaussianRational::from(1), &powers)?;
-            columns.push((k, nu, f.checked_mul(&m)?));
+            let m = Expr::monomial(vars, GaussianRational::from(1), &powers)?;
+            columns.push(Column {
+                function: k,
+                nu,
+                product: f.checked_mul(&m)?,
+            });
         }
     }
-    // Rows: the monomials of the columns, numbered as they come. A monomial of the target that
-    // no column has leaves no combination; otherwise the columns go into a sparse echelon
-    // form, in order (a column that depends on earlier ones has coefficient 0), and the
-    // target is reduced by it. A dense matrix of every monomial by every column took minutes
-    // and gigabytes for brackets of 10⁵ terms.
+    Ok(columns)
+}
+
+/// The coefficient of each column in a combination equal to the target, by column, and
+/// whether it is the only one (the columns independent); `None` when there is none.
+///
+/// Rows: the monomials of the columns, numbered as they come. A monomial of the target that
+/// no column has leaves no combination; otherwise the columns go into a sparse echelon form,
+/// in order (a column that depends on earlier ones has coefficient 0), and the target is
+/// reduced by it. A dense matrix of every monomial by every column took minutes and gigabytes
+/// for brackets of 10⁵ terms.
+fn solve_columns(target: &Expr, columns: &[Column]) -> Option<(SparseVec<GaussianRational>, bool)> {
     let mut rows: HashMap<Vec<i64>, usize> = HashMap::new();
     let vectors: Vec<SparseVec<GaussianRational>> = columns
         .iter()
-        .map(|(_, _, col)| {
-            col.terms()
+        .map(|column| {
+            column
+                .product
+                .terms()
                 .map(|t| {
                     let n = rows.len();
                     (*rows.entry(t.exponents()).or_insert(n), t.coeff())
@@ -464,28 +545,16 @@ fn solve_combination(
                 .collect()
         })
         .collect();
-    let Some(target) = target
+    let target = target
         .terms()
         .map(|t| rows.get(&t.exponents()).map(|&r| (r, t.coeff())))
-        .collect::<Option<SparseVec<_>>>()
-    else {
-        return Ok(Err(Miss::Ansatz));
-    };
+        .collect::<Option<SparseVec<_>>>()?;
     let mut echelon = Echelon::new(rows.len());
     let mut unique = true;
     for (j, v) in vectors.iter().enumerate() {
         unique &= echelon.insert(j, v).is_none();
     }
-    let Some(x) = echelon.express(&target) else {
-        return Ok(Err(Miss::Ansatz));
-    };
-    let mut coeffs: Vec<Expr> = vec![Expr::zero(&vars); basis.len()];
-    for (j, xj) in x {
-        let (k, nu, _) = &columns[j];
-        let powers: Vec<_> = vars.vars().zip(nu.iter().copied()).collect();
-        coeffs[*k] = coeffs[*k].checked_add(&Expr::monomial(&vars, xj, &powers)?)?;
-    }
-    Ok(Ok(Combination { coeffs, unique }))
+    Some((echelon.express(&target)?, unique))
 }
 
 /// The parameter monomials `ν` (as exponents) that carry a term of `f` onto a term of the

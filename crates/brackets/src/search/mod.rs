@@ -119,10 +119,11 @@ use itertools::Itertools;
 use rayon::prelude::*;
 use trigpoly::{Expr, MonomialIndex, Rational, Var, VarKind};
 
+use crate::claim::Condition;
 use crate::clearing::Clearing;
 use crate::error::EngineError;
 use crate::modular::{self, SparseVec};
-use crate::scaling::Scaling;
+use crate::scaling::{Lifter, Scaling};
 use crate::system::System;
 
 use new_only::new_integrals;
@@ -164,76 +165,21 @@ pub fn search(system: &System, options: &SearchOptions) -> Result<SearchResult, 
         symbolic: options.symbolic.iter().copied().unique().collect(),
         ..options.clone()
     };
-    if let Some(c) = condition {
-        c.kept_by_flow(system)?;
-    }
-    let vars = system.vars();
-    check_parameters(vars, &options.symbolic, &options.fixed)?;
-    let atoms = system.space().denominator_atoms();
-    let radicals = system.space().radicals();
-    refuse_unreal(system, options)?;
-    let parameters = parameter_values(system, condition, &options.fixed, &options.symbolic);
-    let problem = fixed_problem(system, options, &parameters)?;
-    let n = problem.unknowns.len();
+    let (parameters, problem) = fixed_search_problem(system, options)?;
 
-    // The images {φ_j, H} as real equations over Q, one column an unknown.
-    let (columns, nrows) = equations(&problem, atoms, radicals, &parameters)?;
-    timings.equations = start.elapsed().as_secs_f64();
-
-    // The kernel, block by block.
-    let t = Instant::now();
+    // The images {φ_j, H} as real equations over Q, and their kernel, block by block.
+    let (solved, nrows) = solve(system, &problem, &parameters, start, &mut timings)?;
     let Kernel {
         mut kernel,
         components,
         largest_component,
-    } = kernel_by_blocks(&columns, nrows);
-    timings.solve = t.elapsed().as_secs_f64();
+    } = solved;
 
     // Proofs: at the fixed values, then lifted and proved symbolically.
     let t = Instant::now();
-    let scaling = Scaling::of_flow(system.space(), system.hamiltonian(), condition)?;
-    let lifter = scaling.lifter(&parameters);
-    // Each basis element is proved on its own, on the pool's threads; the first error in
-    // the order of the basis is the one reported.
-    let proved: Vec<Result<Integral, EngineError>> = kernel
-        .par_iter_mut()
-        .map(|v| {
-            *v = primitive_vector(v);
-            let fixed = problem.combination(v)?;
-            let proved_fixed = problem.vanishes(system, &problem.flow(system, &fixed)?)?;
-            let last = lead(v).expect("a kernel vector is not zero").0;
-            let reference = problem.leading_exponents(last);
-            let symbolic = match &lifter {
-                // Nothing was fixed: the integral found is the symbolic one.
-                _ if parameters.is_empty() => proved_fixed.then(|| fixed.clone()),
-                Some(l) => {
-                    lift_and_prove(system, condition, l, &scaling, &fixed, Some(&reference))?
-                }
-                None => None,
-            };
-            // What the weights cannot lift may hold as found, for every value: `p_θ`, or `L`
-            // of a potential whose parameter the lift cannot restore.
-            let symbolic = match symbolic {
-                None if proved_fixed && !parameters.is_empty() => {
-                    flow_vanishes(system, condition, &fixed)?.then(|| fixed.clone())
-                }
-                found => found,
-            };
-            let deg = |kinds: &[VarKind]| fixed.total_degree(kinds).unwrap_or(0);
-            Ok(Integral {
-                // Every momentum of the space (an angle's momentum fixed by the condition
-                // does not occur).
-                momenta_degree: deg(&[VarKind::Momentum]),
-                poisson_degree: deg(&[VarKind::Poisson]),
-                positions_degree: deg(&[VarKind::Coordinate]),
-                trig_degree: deg(&[VarKind::Angle]),
-                fixed,
-                proved_fixed,
-                symbolic,
-            })
-        })
-        .collect();
-    let basis = proved.into_iter().collect::<Result<Vec<_>, _>>()?;
+    let prover = Prover::new(system, condition, &problem, &parameters)?;
+    let basis = prover.prove_all(&mut kernel)?;
+    let liftable = prover.lifter.is_some();
     timings.proofs = t.elapsed().as_secs_f64();
 
     let multiples = parameter_multiples(system, &problem, &options.symbolic, &kernel, &basis)?;
@@ -261,10 +207,10 @@ pub fn search(system: &System, options: &SearchOptions) -> Result<SearchResult, 
         space: options.space,
         condition: condition.map(|c| c.text.clone()),
         parameters,
-        liftable: lifter.is_some(),
+        liftable,
         vars: system.vars().clone(),
         variables: problem.variables.clone(),
-        unknowns: n,
+        unknowns: problem.unknowns.len(),
         equations: nrows,
         components,
         largest_component,
@@ -273,6 +219,136 @@ pub fn search(system: &System, options: &SearchOptions) -> Result<SearchResult, 
         module,
         timings,
     })
+}
+
+/// The parameters' values for the linear algebra and the linear problem at those values,
+/// once what the search cannot answer is refused: a condition that the flow leaves, fixed or
+/// symbolic parameters that are no parameters of the system, and what [`refuse_unreal`]
+/// refuses.
+fn fixed_search_problem(
+    system: &System,
+    options: &SearchOptions,
+) -> Result<(Vec<(Var, Rational)>, Problem), EngineError> {
+    let condition = options.condition.as_ref();
+    if let Some(c) = condition {
+        c.kept_by_flow(system)?;
+    }
+    check_parameters(system.vars(), &options.symbolic, &options.fixed)?;
+    refuse_unreal(system, options)?;
+    let parameters = parameter_values(system, condition, &options.fixed, &options.symbolic);
+    let problem = fixed_problem(system, options, &parameters)?;
+    Ok((parameters, problem))
+}
+
+/// The kernel of the problem's equations and how many equations there are: the images
+/// `{φ_j, H}` as real equations over Q, one column an unknown, then their kernel, block by
+/// block. The time from `start` to the equations, and the time of the kernel, go to
+/// `timings`.
+fn solve(
+    system: &System,
+    problem: &Problem,
+    parameters: &[(Var, Rational)],
+    start: Instant,
+    timings: &mut SearchTimings,
+) -> Result<(Kernel, usize), EngineError> {
+    let space = system.space();
+    let (atoms, radicals) = (space.denominator_atoms(), space.radicals());
+    let (columns, nrows) = equations(problem, atoms, radicals, parameters)?;
+    timings.equations = start.elapsed().as_secs_f64();
+    let t = Instant::now();
+    let kernel = kernel_by_blocks(&columns, nrows);
+    timings.solve = t.elapsed().as_secs_f64();
+    Ok((kernel, nrows))
+}
+
+/// What proving the kernel's vectors takes: the system, the condition, the problem and the
+/// parameters' fixed values, and the lift back to symbolic parameters where there is one.
+struct Prover<'a> {
+    system: &'a System,
+    condition: Option<&'a Condition>,
+    problem: &'a Problem,
+    parameters: &'a [(Var, Rational)],
+    /// The weights under which the flow is homogeneous, by which the lift restores the
+    /// parameters.
+    scaling: Scaling,
+    /// The lift from the fixed values; `None` where the weights do not determine every fixed
+    /// parameter's exponent, or one is fixed to 0.
+    lifter: Option<Lifter>,
+}
+
+impl<'a> Prover<'a> {
+    /// The prover of a search's basis at the fixed values `parameters`, with the lift that
+    /// the flow's homogeneity gives.
+    fn new(
+        system: &'a System,
+        condition: Option<&'a Condition>,
+        problem: &'a Problem,
+        parameters: &'a [(Var, Rational)],
+    ) -> Result<Self, EngineError> {
+        let scaling = Scaling::of_flow(system.space(), system.hamiltonian(), condition)?;
+        let lifter = scaling.lifter(parameters);
+        Ok(Prover {
+            system,
+            condition,
+            problem,
+            parameters,
+            scaling,
+            lifter,
+        })
+    }
+
+    /// The integral of each kernel vector, which is made primitive in place, proved.
+    fn prove_all(&self, kernel: &mut [SparseVec<Rational>]) -> Result<Vec<Integral>, EngineError> {
+        // Each basis element is proved on its own, on the pool's threads; the first error in
+        // the order of the basis is the one reported.
+        let proved: Vec<Result<Integral, EngineError>> =
+            kernel.par_iter_mut().map(|v| self.prove(v)).collect();
+        proved.into_iter().collect()
+    }
+
+    /// The integral of one kernel vector `v`, made primitive: proved at the fixed values, then
+    /// lifted to symbolic parameters and proved again where it can be.
+    fn prove(&self, v: &mut SparseVec<Rational>) -> Result<Integral, EngineError> {
+        let (system, condition, problem) = (self.system, self.condition, self.problem);
+        *v = primitive_vector(v);
+        let fixed = problem.combination(v)?;
+        let proved_fixed = problem.vanishes(system, &problem.flow(system, &fixed)?)?;
+        let last = lead(v).expect("a kernel vector is not zero").0;
+        let reference = problem.leading_exponents(last);
+        let symbolic = match &self.lifter {
+            // Nothing was fixed: the integral found is the symbolic one.
+            _ if self.parameters.is_empty() => proved_fixed.then(|| fixed.clone()),
+            Some(l) => lift_and_prove(
+                system,
+                condition,
+                l,
+                &self.scaling,
+                &fixed,
+                Some(&reference),
+            )?,
+            None => None,
+        };
+        // What the weights cannot lift may hold as found, for every value: `p_θ`, or `L`
+        // of a potential whose parameter the lift cannot restore.
+        let symbolic = match symbolic {
+            None if proved_fixed && !self.parameters.is_empty() => {
+                flow_vanishes(system, condition, &fixed)?.then(|| fixed.clone())
+            }
+            found => found,
+        };
+        let deg = |kinds: &[VarKind]| fixed.total_degree(kinds).unwrap_or(0);
+        Ok(Integral {
+            // Every momentum of the space (an angle's momentum fixed by the condition
+            // does not occur).
+            momenta_degree: deg(&[VarKind::Momentum]),
+            poisson_degree: deg(&[VarKind::Poisson]),
+            positions_degree: deg(&[VarKind::Coordinate]),
+            trig_degree: deg(&[VarKind::Angle]),
+            fixed,
+            proved_fixed,
+            symbolic,
+        })
+    }
 }
 
 /// Refuses what the search cannot answer: a Hamiltonian that is not real, a condition whose
