@@ -276,20 +276,8 @@ fn rank_form(
         .iter()
         .map(|a| (file.pretty(a), rewritten.slice(a.span.start..a.span.end)))
         .collect();
-    let vars = file.system.vars();
-    let coordinates: Vec<&str> = file
-        .system
-        .space()
-        .coordinates()
-        .iter()
-        .map(|&v| vars.variable(v).unicode())
-        .collect();
     let names: Vec<&str> = functions.iter().map(|f| f.0.as_str()).collect();
-    let statement = format!(
-        "rank ∂({})/∂({}) = {expected}",
-        names.join(", "),
-        coordinates.join(", ")
-    );
+    let statement = file.rank_statement(&names, expected);
     Ok((
         ClaimForm::Rank {
             functions,
@@ -806,6 +794,25 @@ impl LoadedSystem {
         }
     }
 
+    /// A rank claim in the paper's notation, `rank ∂(F, G)/∂(x, p_x) = r`, of the functions
+    /// `names`.
+    fn rank_statement(&self, names: &[impl AsRef<str>], expected: usize) -> String {
+        let vars = self.system.vars();
+        let coordinates: Vec<&str> = self
+            .system
+            .space()
+            .coordinates()
+            .iter()
+            .map(|&v| vars.variable(v).unicode())
+            .collect();
+        let names: Vec<&str> = names.iter().map(AsRef::as_ref).collect();
+        format!(
+            "rank ∂({})/∂({}) = {expected}",
+            names.join(", "),
+            coordinates.join(", ")
+        )
+    }
+
     /// The certified rank of functions as a report entry; `expected` is the claimed rank.
     #[allow(clippy::too_many_arguments)]
     pub(crate) fn rank_result(
@@ -825,19 +832,7 @@ impl LoadedSystem {
         let cert = rank(self.system.space(), exprs).map_err(|e| engine_error(source, span, &e))?;
         let proved = cert.rank == expected;
         let note = (!proved).then(|| format!("the rank is {}", cert.rank));
-        let vars = self.system.vars();
-        let coordinates: Vec<&str> = self
-            .system
-            .space()
-            .coordinates()
-            .iter()
-            .map(|&v| vars.variable(v).unicode())
-            .collect();
-        let statement = format!(
-            "rank ∂({})/∂({}) = {expected}",
-            names.join(", "),
-            coordinates.join(", ")
-        );
+        let statement = self.rank_statement(&names, expected);
         Ok(RankResult {
             functions: names,
             vars: self.system.vars().clone(),
