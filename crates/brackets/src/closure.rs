@@ -528,8 +528,13 @@ pub fn expressed_in(
     else {
         return Ok(None);
     };
-    // Where the generators have relations, the shortest of the solutions reads best.
-    let relations = Relations::new(&span.columns, span.nrows);
+    // Where the generators have relations, the shortest of the solutions reads best (one
+    // of a single column is as short as any).
+    let relations = solutions
+        .iter()
+        .any(|s| s.len() > 1)
+        .then(|| Relations::new(&span.columns, span.nrows))
+        .flatten();
     let lifting = Lifting::new(system, generators, &span, &parts, options, scaling)?;
     let mut lift_ctx = lifting.context(system, &span);
     let mut poly = Expr::zero(&lifting.printing.ring);
