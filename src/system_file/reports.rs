@@ -8,7 +8,7 @@ use std::time::Instant;
 use brackets::{BracketTable, Condition, System};
 use trigpoly::Expr;
 
-use super::claims::{engine_error, parse_condition, CheckedClaim};
+use super::claims::{engine_error, parse_condition, CheckedClaim, RankClaim};
 use super::error::{ErrorKind, FileError};
 use super::scope::{instance_of, rewrite_braces};
 use super::text::Text;
@@ -476,18 +476,16 @@ pub fn rank_report(
         .collect::<Vec<&str>>()
         .join(" ");
     let source = file.given("<expression>", &written);
-    // A refusal (no sample point where the functions are defined, say) is about all of them:
-    // the caret underlines the whole list.
-    let mut rank = file.rank_result(
-        &source,
-        "rank",
-        names.clone(),
-        &exprs,
-        expected.unwrap_or(0),
-        Expect::Proved,
-        0..written.len(),
+    let claim = RankClaim {
+        source: &source,
+        id: "rank",
+        expect: Expect::Proved,
+        // A refusal (no sample point where the functions are defined, say) is about all of
+        // them: the caret underlines the whole list.
+        span: 0..written.len(),
         start,
-    )?;
+    };
+    let mut rank = file.rank_result(claim, names.clone(), &exprs, expected.unwrap_or(0))?;
     if expected.is_none() {
         // No claim: the rank is what was found.
         rank.expected = rank.certificate.rank;
