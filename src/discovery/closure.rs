@@ -72,12 +72,45 @@ pub fn closure_report(
 ) -> Result<(Report, Closure), EngineError> {
     let start = Instant::now();
     let c = closure_of(system, generators, options)?;
-    let cond = c.condition.clone();
     let holding = Holding {
         held: HeldAt::new(options.condition.as_ref(), system.vars(), &c.parameters),
         fixed: !c.parameters.is_empty(),
     };
-    let fixed = holding.held.fixed();
+    let (results, stuck) = unlifted_count(&c, &holding);
+    let gens: Vec<String> = c.display.iter().map(|g| format!("`{g}`")).collect();
+    let gens = gens.join(", ");
+    let when = c
+        .condition
+        .clone()
+        .map(|c| format!(" at `{c}`"))
+        .unwrap_or_default();
+    let structure = Structure {
+        name,
+        system,
+        generators,
+        options,
+        c: &c,
+        holding: &holding,
+        when: &when,
+        results,
+        stuck,
+    };
+    let sections = vec![structure.section(&gens)?, relations_section(&c, &holding)];
+    Ok((
+        Report {
+            title: format!("Closure of {gens} for {}{when}", name),
+            subtitle: String::new(),
+            sections,
+            summary: SummaryKind::Claims,
+            seconds: start.elapsed().as_secs_f64(),
+        },
+        c,
+    ))
+}
+
+/// How many brackets (off the table's diagonal, polynomials in the generators) and relations
+/// the closure found, and how many of them hold at the fixed values only.
+fn unlifted_count(c: &Closure, holding: &Holding) -> (usize, usize) {
     let results: Vec<bool> = c
         .brackets
         .iter()
@@ -90,95 +123,132 @@ pub fn closure_report(
         .chain(c.relations.iter().map(|r| r.symbolic))
         .collect();
     let stuck = results.iter().filter(|&&s| holding.unlifted(s)).count();
-    let gens: Vec<String> = c.display.iter().map(|g| format!("`{g}`")).collect();
-    let gens = gens.join(", ");
-    let lift = match (c.parameters.is_empty(), stuck) {
-        (true, _) => String::new(),
-        (false, 0) => format!(
-            " at `{fixed}`, the coefficients then lifted back to the parameters by homogeneity"
-        ),
-        (false, k) => format!(
-            " at `{fixed}`, the coefficients then lifted back to the parameters by homogeneity \
-             where the weights allow: {k} of the {} brackets and relations could not be lifted, \
-             and {} at `{fixed}` only (so does the table)",
-            results.len(),
-            agreeing(k, "holds", "hold")
-        ),
-    };
-    let mut entries = vec![Entry::Text(format!(
-        "Every bracket `{{G_a, G_b}}` of the generators {gens} written as a polynomial of \
-         degree `≤ {}` in them, by exact linear algebra on the {} (their span has dimension \
-         {}){lift}; each expansion checked by the engine.",
-        c.degree,
-        counted(c.monomials, "monomial"),
-        c.rank,
-    ))];
-    entries.extend(symbolic_text(system, options));
-    let when = cond
-        .clone()
-        .map(|c| format!(" at `{c}`"))
-        .unwrap_or_default();
-    let table_at = match (stuck, &cond) {
-        (0, _) => when.clone(),
-        (_, Some(c)) => format!(" at `{c}`, `{fixed}`"),
-        (_, None) => format!(" at `{fixed}`"),
-    };
-    entries.push(Entry::Table(TableResult::new(
-        c.table(),
-        system,
-        &format!("{}{table_at}", name),
-    )));
-    let outside = c.outside();
-    if outside.is_empty() {
-        entries.push(Entry::Text(format!(
-            "The table closes: every bracket is a polynomial of degree `≤ {}` in the generators.",
-            c.degree
-        )));
-    } else {
-        entries.extend(outside_entries(system, generators, options, &c, &when)?);
-    }
-    let brackets = bracket_claims(&c, &holding);
-    let shown = brackets.len();
-    entries.extend(brackets);
-    let symbolic = &options.symbolic[..];
-    entries.push(Entry::Data(Facts::Closure(ClosureFacts {
-        generators: c.names.clone(),
-        degree: c.degree,
-        monomials: c.monomials,
-        rank: c.rank,
-        parameters: parameter_facts(
-            system.vars(),
-            &c.parameters,
-            (!symbolic.is_empty()).then_some((symbolic, options.parameters_degree)),
-            &cond,
-        ),
-        outside: outside
-            .iter()
-            .map(|&(a, b)| (c.names[a].clone(), c.names[b].clone()))
-            .collect(),
-        unlifted: stuck,
-        brackets: (1..=shown).map(|k| format!("B{k}")).collect(),
-        relations: (1..=c.relations.len()).map(|k| format!("R{k}")).collect(),
-    })));
-    let sections = vec![
-        Section {
+    (results.len(), stuck)
+}
+
+/// What section 1 of a closure's report is written from: the closure, the system and options
+/// it was computed with, and where its results hold.
+struct Structure<'a> {
+    /// The system as a title names it: `the harmonic rotor`.
+    name: &'a str,
+    system: &'a System,
+    generators: &'a [NamedFunction],
+    options: &'a ClosureOptions,
+    c: &'a Closure,
+    holding: &'a Holding,
+    /// The condition as a title says it, `` at `p_θ = Iω` ``, or nothing.
+    when: &'a str,
+    /// The number of brackets and relations found.
+    results: usize,
+    /// How many of them hold at the fixed values only.
+    stuck: usize,
+}
+
+impl Structure<'_> {
+    /// Section 1: how the brackets were found, the structure table, what lies outside it,
+    /// each bracket proved, and the facts for JSON. `gens` names the generators.
+    fn section(&self, gens: &str) -> Result<Section, EngineError> {
+        let mut entries = vec![self.method_text(gens)];
+        entries.extend(symbolic_text(self.system, self.options));
+        entries.push(self.table());
+        let outside = self.c.outside();
+        if outside.is_empty() {
+            entries.push(Entry::Text(format!(
+                "The table closes: every bracket is a polynomial of degree `≤ {}` in the \
+                 generators.",
+                self.c.degree
+            )));
+        } else {
+            entries.extend(outside_entries(
+                self.system,
+                self.generators,
+                self.options,
+                self.c,
+                self.when,
+            )?);
+        }
+        let brackets = bracket_claims(self.c, self.holding);
+        let shown = brackets.len();
+        entries.extend(brackets);
+        entries.push(self.facts(&outside, shown));
+        Ok(Section {
             number: 1,
             title: "Structure".into(),
             file: None,
             entries,
-        },
-        relations_section(&c, &holding),
-    ];
-    Ok((
-        Report {
-            title: format!("Closure of {gens} for {}{when}", name),
-            subtitle: String::new(),
-            sections,
-            summary: SummaryKind::Claims,
-            seconds: start.elapsed().as_secs_f64(),
-        },
-        c,
-    ))
+        })
+    }
+
+    /// How the brackets were written in the generators: the degree, the monomials and their
+    /// span, and whether the coefficients found at fixed values were lifted back to the
+    /// parameters.
+    fn method_text(&self, gens: &str) -> Entry {
+        let c = self.c;
+        let fixed = self.holding.held.fixed();
+        let lift = match (c.parameters.is_empty(), self.stuck) {
+            (true, _) => String::new(),
+            (false, 0) => format!(
+                " at `{fixed}`, the coefficients then lifted back to the parameters by homogeneity"
+            ),
+            (false, k) => format!(
+                " at `{fixed}`, the coefficients then lifted back to the parameters by homogeneity \
+                 where the weights allow: {k} of the {} brackets and relations could not be \
+                 lifted, and {} at `{fixed}` only (so does the table)",
+                self.results,
+                agreeing(k, "holds", "hold")
+            ),
+        };
+        Entry::Text(format!(
+            "Every bracket `{{G_a, G_b}}` of the generators {gens} written as a polynomial of \
+             degree `≤ {}` in them, by exact linear algebra on the {} (their span has dimension \
+             {}){lift}; each expansion checked by the engine.",
+            c.degree,
+            counted(c.monomials, "monomial"),
+            c.rank,
+        ))
+    }
+
+    /// The structure table, titled with where it holds: at the fixed values too when some
+    /// result could not be lifted.
+    fn table(&self) -> Entry {
+        let fixed = self.holding.held.fixed();
+        let table_at = match (self.stuck, &self.c.condition) {
+            (0, _) => self.when.to_string(),
+            (_, Some(c)) => format!(" at `{c}`, `{fixed}`"),
+            (_, None) => format!(" at `{fixed}`"),
+        };
+        Entry::Table(TableResult::new(
+            self.c.table(),
+            self.system,
+            &format!("{}{table_at}", self.name),
+        ))
+    }
+
+    /// The closure's facts for JSON: the generators, the linear algebra, the parameters, the
+    /// brackets outside, and the labels of the `shown` bracket claims and of the relations.
+    fn facts(&self, outside: &[(usize, usize)], shown: usize) -> Entry {
+        let (c, options) = (self.c, self.options);
+        let symbolic = &options.symbolic[..];
+        Entry::Data(Facts::Closure(ClosureFacts {
+            generators: c.names.clone(),
+            degree: c.degree,
+            monomials: c.monomials,
+            rank: c.rank,
+            parameters: parameter_facts(
+                self.system.vars(),
+                &c.parameters,
+                (!symbolic.is_empty()).then_some((symbolic, options.parameters_degree)),
+                &c.condition,
+            ),
+            outside: outside
+                .iter()
+                .map(|&(a, b)| (c.names[a].clone(), c.names[b].clone()))
+                .collect(),
+            unlifted: self.stuck,
+            brackets: (1..=shown).map(|k| format!("B{k}")).collect(),
+            relations: (1..=c.relations.len()).map(|k| format!("R{k}")).collect(),
+        }))
+    }
 }
 
 /// Where a result of the closure holds: on the condition, and at the fixed parameters' values

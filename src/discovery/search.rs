@@ -426,6 +426,25 @@ fn proof_note(f: &Integral, fixed: &str, symbolic: Option<&str>) -> Option<Strin
     }
 }
 
+/// A note on `H` (under the search's condition) when the space cannot hold it, or when its
+/// powers need a larger degree in the parameters kept symbolic than the space's.
+fn hamiltonian_note(
+    system: &System,
+    options: &SearchOptions,
+) -> Result<Option<Entry>, EngineError> {
+    let h = match &options.condition {
+        Some(c) => c.apply(system.hamiltonian())?,
+        None => system.hamiltonian().clone(),
+    };
+    if let Some(why) = options.space.why_outside(&h) {
+        return Ok(Some(Entry::Text(format!(
+            "Note: H is not in this space ({why}), so H is not among the integrals found, \
+             nor is any that needs its terms."
+        ))));
+    }
+    Ok(power_past_parameters_degree(&h, options).map(Entry::Text))
+}
+
 /// The report of [`search`]: the space, the dimensions by degree, a basis (or, with
 /// `new_only`, a complement of what known integrals generate) written like the paper, and
 /// every basis element proved. `name` is the system as a title names it, its article
@@ -512,31 +531,35 @@ impl Shared {
             }),
             Entry::Text(space_text(r)),
         ];
-        let h = match &options.condition {
-            Some(c) => c.apply(system.hamiltonian())?,
-            None => system.hamiltonian().clone(),
-        };
-        if let Some(why) = options.space.why_outside(&h) {
-            entries.push(Entry::Text(format!(
-                "Note: H is not in this space ({why}), so H is not among the integrals found, \
-                 nor is any that needs its terms."
-            )));
-        } else if let Some(note) = power_past_parameters_degree(&h, options) {
-            entries.push(Entry::Text(note));
-        }
+        entries.extend(hamiltonian_note(system, options)?);
         let for_every_value = (0..r.basis.len())
             .filter(|&i| r.for_every_value(i).is_some())
             .count();
         entries.extend(parameter_notes(r, vars, self.held.fixed(), for_every_value));
-        if let Some(names) = &self.symbolic {
-            entries.push(Entry::Text(format!(
-                "Parameters kept symbolic: `{names}`. The equations are the coefficients of \
-                 every monomial in the variables and these parameters, so what is found holds \
-                 for every value of them."
-            )));
-        }
-        let dims = r.dimensions_by_momenta_degree();
-        let poisson_dims = r.dimensions_by_poisson_degree();
+        entries.extend(self.symbolic_note());
+        entries.extend(self.dimensions(r, vars));
+        entries.push(self.search_facts(r, vars, for_every_value));
+        Ok(Section {
+            number: 1,
+            title: "Search".into(),
+            file: None,
+            entries,
+        })
+    }
+
+    /// What keeping parameters symbolic means for the equations, when some are.
+    fn symbolic_note(&self) -> Option<Entry> {
+        let names = self.symbolic.as_ref()?;
+        Some(Entry::Text(format!(
+            "Parameters kept symbolic: `{names}`. The equations are the coefficients of \
+             every monomial in the variables and these parameters, so what is found holds \
+             for every value of them."
+        )))
+    }
+
+    /// The dimension of the space of integrals, by degree in the momenta and in the Poisson
+    /// variables, and the lines counting the integrals of each exact degree.
+    fn dimensions(&self, r: &SearchResult, vars: &Vars) -> Vec<Entry> {
         let over = match &self.symbolic {
             // With symbolic parameters the space is over Q, and `M·I` counts apart from `I`.
             Some(_) => " over Q (a parameter's multiple of an integral counts apart from it)",
@@ -546,31 +569,38 @@ impl Shared {
         // and in the Poisson variables when it has them.
         let poisson = !r.variables.poisson.is_empty();
         let by_momenta = !poisson || !r.variables.momenta.is_empty();
-        let counts = r.counts();
-        let poisson_counts = r.poisson_counts();
         let angles = vars.angles().next().is_some();
         let mut by_degree = String::new();
         let mut exactly = Vec::new();
         if by_momenta {
-            by_degree += &dimensions_text("in the momenta", &dims);
-            exactly.extend(degree_counts(&counts, angles, |j| {
+            by_degree += &dimensions_text("in the momenta", &r.dimensions_by_momenta_degree());
+            exactly.extend(degree_counts(&r.counts(), angles, |j| {
                 format!("Momenta degree exactly {j}")
             }));
         }
         if poisson {
-            by_degree += &dimensions_text("in the Poisson variables", &poisson_dims);
-            exactly.extend(degree_counts(&poisson_counts, angles, |j| {
+            by_degree += &dimensions_text(
+                "in the Poisson variables",
+                &r.dimensions_by_poisson_degree(),
+            );
+            exactly.extend(degree_counts(&r.poisson_counts(), angles, |j| {
                 format!("Degree exactly {j} in the Poisson variables")
             }));
         }
-        entries.push(Entry::Text(format!(
+        let mut entries = vec![Entry::Text(format!(
             "Dimension of the space of integrals{over}: {}.{by_degree}",
             r.basis.len(),
-        )));
+        ))];
         entries.extend(exactly.into_iter().map(Entry::Text));
+        entries
+    }
+
+    /// The search's facts for JSON: the space, its variables by kind, the parameters, the
+    /// size of the linear algebra, the dimensions and counts, and the integrals shown.
+    fn search_facts(&self, r: &SearchResult, vars: &Vars, for_every_value: usize) -> Entry {
         let name_of = |v: &Var| vars.variable(*v).name().to_string();
         let names_of = |vs: &[Var]| vs.iter().map(name_of).collect::<Vec<_>>();
-        entries.push(Entry::Data(Facts::Search(Box::new(SearchFacts {
+        Entry::Data(Facts::Search(Box::new(SearchFacts {
             space: r.space,
             coordinates: names_of(&r.variables.coordinates),
             momenta: names_of(&r.variables.momenta),
@@ -590,40 +620,21 @@ impl Shared {
             blocks: r.components,
             largest_block: r.largest_component,
             dimension: r.basis.len(),
-            by_momenta_degree: dims,
-            counts,
-            by_poisson_degree: poisson_dims,
-            poisson_counts,
+            by_momenta_degree: r.dimensions_by_momenta_degree(),
+            counts: r.counts(),
+            by_poisson_degree: r.dimensions_by_poisson_degree(),
+            poisson_counts: r.poisson_counts(),
             for_every_value,
             shown: self.shown.iter().map(|&i| self.label(i)).collect(),
             new_only: r.new.clone(),
-        }))));
-        Ok(Section {
-            number: 1,
-            title: "Search".into(),
-            file: None,
-            entries,
-        })
+        })))
     }
 
     /// Section 2: the basis (or the new part; with symbolic parameters, its generators) as
     /// written, their complex forms, and a proof of each, with one for the rest.
     fn basis_section(&self, r: &SearchResult) -> Result<Section, EngineError> {
         let mut entries = Vec::new();
-        if let (Some(m), Some(names)) = (&r.module, &self.symbolic) {
-            let shown_text = if r.new.is_some() {
-                "Below, parameter multiples of integrals count as generated."
-            } else {
-                "Shown: the generators."
-            };
-            entries.push(Entry::Text(format!(
-                "Over the polynomials in `{names}`, {} of the {} {} all of them: each of the \
-                 others is a sum of parameter multiples of integrals. {shown_text}",
-                m.generators.len(),
-                counted(r.basis.len(), "basis integral"),
-                agreeing(m.generators.len(), "generates", "generate"),
-            )));
-        }
+        entries.extend(self.generators_note(r));
         if let Some(n) = &r.new {
             entries.push(Entry::Text(new_integrals_text(r, n)));
         }
@@ -636,41 +647,9 @@ impl Shared {
         // terms with the least powers of its radicals (`2β/(xr) − 2βr/(xy²)` is
         // `−2βx/(y²r)`).
         let written = written_forms(r, &self.shown)?;
-        if self.shown.is_empty() {
-            entries.push(Entry::Text(
-                "None: the known integrals generate every integral in the space.".into(),
-            ));
-        } else {
-            entries.push(Entry::Equations(Equations {
-                caption: match (&r.new, &self.symbolic) {
-                    (Some(_), _) => "New integrals".into(),
-                    (None, Some(names)) => format!("Generators over the polynomials in {names}"),
-                    (None, None) => "A basis of the integrals".into(),
-                },
-                lines: self
-                    .shown
-                    .iter()
-                    .zip(&written)
-                    .map(|(&i, w)| Equation::new(&self.label(i), w.clone()))
-                    .collect(),
-            }));
-        }
+        entries.push(self.shown_equations(r, &written));
         entries.extend(self.complex_forms(r));
-        for (&i, w) in self.shown.iter().zip(&written) {
-            let f = &r.basis[i];
-            let label = self.label(i);
-            let c = ClaimResult::derived(
-                &label,
-                &format!("{{{label}, H}} = 0"),
-                f.proved_fixed,
-                proof_note(f, self.held.fixed(), self.symbolic.as_deref()),
-            )
-            .at(self
-                .held
-                .at(f.symbolic.is_none() && !r.parameters.is_empty()))
-            .written(&format!("{{{}, H}} = 0", w.render(Style::Ascii)));
-            entries.push(Entry::Claim(c));
-        }
+        entries.extend(self.integral_claims(r, &written));
         entries.extend(self.rest_proved(r));
         Ok(Section {
             number: 2,
@@ -682,6 +661,72 @@ impl Shared {
             file: None,
             entries,
         })
+    }
+
+    /// With parameters kept symbolic, how many of the basis integrals generate all of them
+    /// over the polynomials in the parameters, and what is shown below.
+    fn generators_note(&self, r: &SearchResult) -> Option<Entry> {
+        let (Some(m), Some(names)) = (&r.module, &self.symbolic) else {
+            return None;
+        };
+        let shown_text = if r.new.is_some() {
+            "Below, parameter multiples of integrals count as generated."
+        } else {
+            "Shown: the generators."
+        };
+        Some(Entry::Text(format!(
+            "Over the polynomials in `{names}`, {} of the {} {} all of them: each of the \
+             others is a sum of parameter multiples of integrals. {shown_text}",
+            m.generators.len(),
+            counted(r.basis.len(), "basis integral"),
+            agreeing(m.generators.len(), "generates", "generate"),
+        )))
+    }
+
+    /// The shown integrals as `written`, labelled, or that there are none to show.
+    fn shown_equations(&self, r: &SearchResult, written: &[Expr]) -> Entry {
+        if self.shown.is_empty() {
+            return Entry::Text(
+                "None: the known integrals generate every integral in the space.".into(),
+            );
+        }
+        Entry::Equations(Equations {
+            caption: match (&r.new, &self.symbolic) {
+                (Some(_), _) => "New integrals".into(),
+                (None, Some(names)) => format!("Generators over the polynomials in {names}"),
+                (None, None) => "A basis of the integrals".into(),
+            },
+            lines: self
+                .shown
+                .iter()
+                .zip(written)
+                .map(|(&i, w)| Equation::new(&self.label(i), w.clone()))
+                .collect(),
+        })
+    }
+
+    /// A claim `{I3, H} = 0` for each shown integral, with where it holds and what its proof
+    /// covers.
+    fn integral_claims(&self, r: &SearchResult, written: &[Expr]) -> Vec<Entry> {
+        self.shown
+            .iter()
+            .zip(written)
+            .map(|(&i, w)| {
+                let f = &r.basis[i];
+                let label = self.label(i);
+                let c = ClaimResult::derived(
+                    &label,
+                    &format!("{{{label}, H}} = 0"),
+                    f.proved_fixed,
+                    proof_note(f, self.held.fixed(), self.symbolic.as_deref()),
+                )
+                .at(self
+                    .held
+                    .at(f.symbolic.is_none() && !r.parameters.is_empty()))
+                .written(&format!("{{{}, H}} = 0", w.render(Style::Ascii)));
+                Entry::Claim(c)
+            })
+            .collect()
     }
 
     /// The shown integrals of trigonometric order `k > 0` as `I = Re(A e^{−ikθ})`, when the

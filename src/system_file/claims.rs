@@ -17,6 +17,21 @@ use super::text::{array_strings, split_top_level, unbalanced_bracket, Source, Te
 use super::LoadedSystem;
 use crate::report::{ClaimKind, ClaimResult, Expect, RankResult};
 
+/// The claim a certified rank answers ([`LoadedSystem::rank_result`]): a file's rank claim,
+/// or the command line's `superint rank`, whose errors point at the functions it lists.
+pub(crate) struct RankClaim<'a> {
+    /// The text the claim is read from, where its errors are located.
+    pub(crate) source: &'a Source,
+    /// The claim's id: the file's (`C12`), or `rank`.
+    pub(crate) id: &'a str,
+    /// Whether the claim is meant to be proved or deliberately refuted.
+    pub(crate) expect: Expect,
+    /// Where the claim is in `source`: what a refusal underlines.
+    pub(crate) span: Range<usize>,
+    /// When its check began, for the time it took.
+    pub(crate) start: Instant,
+}
+
 /// What a claim says.
 #[derive(Clone, Debug)]
 pub enum ClaimForm {
@@ -149,6 +164,17 @@ impl From<AlgebraError> for FileError {
 }
 
 impl ClaimSpec {
+    /// The claim's identity as its certified rank answers it, its check begun at `start`.
+    fn rank_claim(&self, start: Instant) -> RankClaim<'_> {
+        RankClaim {
+            source: &self.source,
+            id: &self.id,
+            expect: self.expect,
+            span: self.span.clone(),
+            start,
+        }
+    }
+
     /// Reads the `k`-th claim of a file.
     pub(crate) fn parse(
         file: &LoadedSystem,
@@ -773,14 +799,10 @@ impl LoadedSystem {
                         .map_err(|e| at(&e))?;
                 }
                 let mut rank = self.rank_result(
-                    &spec.source,
-                    &spec.id,
+                    spec.rank_claim(start),
                     functions.iter().map(|f| f.0.clone()).collect(),
                     &exprs,
                     *expected,
-                    spec.expect,
-                    spec.span.clone(),
-                    start,
                 )?;
                 rank.claim.written = Some(spec.written.clone());
                 if let Some(c) = &spec.condition {
@@ -813,19 +835,22 @@ impl LoadedSystem {
         )
     }
 
-    /// The certified rank of functions as a report entry; `expected` is the claimed rank.
-    #[allow(clippy::too_many_arguments)]
+    /// The certified rank of functions as a report entry, answering `claim`; `expected` is the
+    /// claimed rank.
     pub(crate) fn rank_result(
         &self,
-        source: &Source,
-        id: &str,
+        claim: RankClaim<'_>,
         names: Vec<String>,
         exprs: &[Expr],
         expected: usize,
-        expect: Expect,
-        span: Range<usize>,
-        start: Instant,
     ) -> Result<RankResult, FileError> {
+        let RankClaim {
+            source,
+            id,
+            expect,
+            span,
+            start,
+        } = claim;
         if exprs.is_empty() {
             return Err(source.error(ErrorKind::Claim, span, "a rank needs at least one function"));
         }

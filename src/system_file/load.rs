@@ -261,6 +261,16 @@ fn in_words(expected: &str) -> &str {
     }
 }
 
+/// The two names of a key of `[poisson]` written `{M1, M2}`, trimmed, or `None` when the
+/// key is no bracket of two nonempty names.
+fn bracket_names(key: &str) -> Option<Vec<&str>> {
+    key.trim()
+        .strip_prefix('{')
+        .and_then(|k| k.strip_suffix('}'))
+        .map(|k| k.split(',').map(str::trim).collect::<Vec<_>>())
+        .filter(|names| names.len() == 2 && names.iter().all(|n| !n.is_empty()))
+}
+
 struct Builder<'a> {
     source: Source,
     limits: &'a LimitsOverride,
@@ -365,21 +375,8 @@ impl<'a> Builder<'a> {
         space: &PhaseSpace,
         entries: &[(Var, Var, Expr, Range<usize>)],
     ) -> Result<(Var, Var), FileError> {
-        let vars = space.vars();
-        let phase: Vec<&str> = space
-            .coordinates()
-            .into_iter()
-            .map(|v| vars.variable(v).name())
-            .collect();
         let span = key.span();
-        let names = key
-            .get_ref()
-            .trim()
-            .strip_prefix('{')
-            .and_then(|k| k.strip_suffix('}'))
-            .map(|k| k.split(',').map(str::trim).collect::<Vec<_>>())
-            .filter(|names| names.len() == 2 && names.iter().all(|n| !n.is_empty()));
-        let Some(names) = names else {
+        let Some(names) = bracket_names(key.get_ref()) else {
             return Err(self.error(
                 ErrorKind::Schema,
                 span,
@@ -390,34 +387,63 @@ impl<'a> Builder<'a> {
                 ),
             ));
         };
-        let mut pair = Vec::new();
-        for name in names {
-            let Some(v) = vars.lookup(name) else {
-                return Err(self.error(
-                    ErrorKind::Name,
-                    span.clone(),
-                    format!(
-                        "unknown name '{name}' in a bracket of [poisson] (the phase \
-                     variables: {})",
-                        phase.join(", ")
-                    ),
-                ));
-            };
-            if !space.is_phase_variable(v) {
-                return Err(self.error(
-                    ErrorKind::Name,
-                    span.clone(),
-                    format!(
-                        "'{name}' is {}, not a variable of the phase space, so every \
-                     bracket with it is 0; declare it under variables to give it \
-                     brackets",
-                        vars.variable(v).kind().described()
-                    ),
-                ));
-            }
-            pair.push(v);
+        let a = self.declared_variable(names[0], space, &span)?;
+        let b = self.declared_variable(names[1], space, &span)?;
+        self.check_new_pair((a, b), space, span, entries)?;
+        Ok((a, b))
+    }
+
+    /// The phase variable `name` in a key of `[poisson]` at `span`, refused when it is
+    /// unknown or no variable of the phase space (a parameter has no brackets to declare).
+    fn declared_variable(
+        &self,
+        name: &str,
+        space: &PhaseSpace,
+        span: &Range<usize>,
+    ) -> Result<Var, FileError> {
+        let vars = space.vars();
+        let Some(v) = vars.lookup(name) else {
+            let phase: Vec<&str> = space
+                .coordinates()
+                .into_iter()
+                .map(|v| vars.variable(v).name())
+                .collect();
+            return Err(self.error(
+                ErrorKind::Name,
+                span.clone(),
+                format!(
+                    "unknown name '{name}' in a bracket of [poisson] (the phase \
+                 variables: {})",
+                    phase.join(", ")
+                ),
+            ));
+        };
+        if !space.is_phase_variable(v) {
+            return Err(self.error(
+                ErrorKind::Name,
+                span.clone(),
+                format!(
+                    "'{name}' is {}, not a variable of the phase space, so every \
+                 bracket with it is 0; declare it under variables to give it \
+                 brackets",
+                    vars.variable(v).kind().described()
+                ),
+            ));
         }
-        let (a, b) = (pair[0], pair[1]);
+        Ok(v)
+    }
+
+    /// Refuses a declared bracket `{a, b}` at `span` that is a variable's with itself, one of
+    /// two canonical variables (fixed by their pairs), or one `entries` already give in either
+    /// order.
+    fn check_new_pair(
+        &self,
+        (a, b): (Var, Var),
+        space: &PhaseSpace,
+        span: Range<usize>,
+        entries: &[(Var, Var, Expr, Range<usize>)],
+    ) -> Result<(), FileError> {
+        let vars = space.vars();
         let [ua, ub] = [a, b].map(|v| vars.variable(v).unicode());
         if a == b {
             return Err(self.error(
@@ -452,7 +478,7 @@ impl<'a> Builder<'a> {
                 ),
             ));
         }
-        Ok((a, b))
+        Ok(())
     }
 
     /// The value of a declared bracket `{a, b}`: an expression in the variables (no `H`, no

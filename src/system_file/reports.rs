@@ -8,7 +8,7 @@ use std::time::Instant;
 use brackets::{BracketTable, Condition, System};
 use trigpoly::Expr;
 
-use super::claims::{engine_error, parse_condition, CheckedClaim};
+use super::claims::{engine_error, parse_condition, CheckedClaim, RankClaim};
 use super::error::{ErrorKind, FileError};
 use super::scope::{instance_of, rewrite_braces};
 use super::text::Text;
@@ -341,9 +341,35 @@ pub fn table_report(file: &LoadedSystem, names: &[impl AsRef<str>]) -> Result<Re
         .skip(1)
         .map(|f| f.name.clone())
         .collect();
+    let names = tabulated_names(file, names, &defined)?;
+    let system = with_instances(file, &names, &defined)?;
+    let refs: Vec<&str> = names.iter().map(String::as_str).collect();
+    // What fails is a bracket of the file's functions, not the names given.
+    let table = BracketTable::compute(&system, &refs).map_err(|e| {
+        let mut err = file.computation_error(&e);
+        err.origin.clone_from(&file.source.origin);
+        err.message = format!("the brackets of {}: {}", refs.join(", "), err.message);
+        err
+    })?;
+    let entry = Entry::Table(TableResult::new(table, &system, &file.the_name()));
+    Ok(file.one_entry(
+        format!("Bracket table of {}", file.the_name()),
+        entry,
+        SummaryKind::Computed,
+        start,
+    ))
+}
+
+/// The names a table tabulates: those given, or the file's functions but `H` (`defined`)
+/// when none are; refused when that leaves none.
+fn tabulated_names(
+    file: &LoadedSystem,
+    names: &[impl AsRef<str>],
+    defined: &[String],
+) -> Result<Vec<String>, FileError> {
     // An instance may be written `K_{2,3}` as well as `K_2_3`.
     let names: Vec<String> = if names.is_empty() {
-        defined.clone()
+        defined.to_vec()
     } else {
         let braces = |n: &str| rewrite_braces(n, &file.families, &[]).trim().to_string();
         names.iter().map(|n| braces(n.as_ref())).collect()
@@ -366,36 +392,26 @@ pub fn table_report(file: &LoadedSystem, names: &[impl AsRef<str>]) -> Result<Re
             message,
         ));
     }
+    Ok(names)
+}
+
+/// The file's system with the family instances among `names` (`K_2_3`) defined as functions
+/// of it; a name that is neither a function nor an instance is refused with the names known
+/// (`defined`: the file's functions but `H`).
+fn with_instances(
+    file: &LoadedSystem,
+    names: &[String],
+    defined: &[String],
+) -> Result<System, FileError> {
     // Every name is looked up before any family instance is expanded.
     let mut instances = Vec::new();
-    for name in &names {
+    for name in names {
         if file.system.get(name).is_ok() {
             continue;
         }
         match instance_of(&file.families, name) {
             Some(instance) => instances.push((name, instance)),
-            None => {
-                let mut known = vec!["H".to_string()];
-                known.extend(defined.iter().cloned());
-                known.extend(
-                    file.families
-                        .iter()
-                        .map(|f| format!("{}_{}_{}", f.name, f.indices[0], f.indices[1])),
-                );
-                // The file by its path on the command line; a program's system by its name.
-                let of = match file.caller {
-                    Caller::CommandLine => file.source.origin.clone(),
-                    Caller::Program => file.the_name(),
-                };
-                return Err(FileError::new(
-                    ErrorKind::Expression,
-                    &file.given("<expression>", "").origin,
-                    format!(
-                        "'{name}' is not a function of {of} (known: {})",
-                        known.join(", ")
-                    ),
-                ));
-            }
+            None => return Err(not_a_function(file, name, defined)),
         }
     }
     let mut system: System = file.system.clone();
@@ -407,21 +423,32 @@ pub fn table_report(file: &LoadedSystem, names: &[impl AsRef<str>]) -> Result<Re
         let display = format!("{}_{{{m},{n}}}", file.families[k].display);
         system.define(name, &display, value);
     }
-    let refs: Vec<&str> = names.iter().map(String::as_str).collect();
-    // What fails is a bracket of the file's functions, not the names given.
-    let table = BracketTable::compute(&system, &refs).map_err(|e| {
-        let mut err = file.computation_error(&e);
-        err.origin.clone_from(&file.source.origin);
-        err.message = format!("the brackets of {}: {}", refs.join(", "), err.message);
-        err
-    })?;
-    let entry = Entry::Table(TableResult::new(table, &system, &file.the_name()));
-    Ok(file.one_entry(
-        format!("Bracket table of {}", file.the_name()),
-        entry,
-        SummaryKind::Computed,
-        start,
-    ))
+    Ok(system)
+}
+
+/// The refusal of a name given to a table that is no function of the file, listing `H`, the
+/// functions `defined` and the families' instances.
+fn not_a_function(file: &LoadedSystem, name: &str, defined: &[String]) -> FileError {
+    let mut known = vec!["H".to_string()];
+    known.extend(defined.iter().cloned());
+    known.extend(
+        file.families
+            .iter()
+            .map(|f| format!("{}_{}_{}", f.name, f.indices[0], f.indices[1])),
+    );
+    // The file by its path on the command line; a program's system by its name.
+    let of = match file.caller {
+        Caller::CommandLine => file.source.origin.clone(),
+        Caller::Program => file.the_name(),
+    };
+    FileError::new(
+        ErrorKind::Expression,
+        &file.given("<expression>", "").origin,
+        format!(
+            "'{name}' is not a function of {of} (known: {})",
+            known.join(", ")
+        ),
+    )
 }
 
 /// The certified rank of the Jacobian of expressions of the file by its phase-space
@@ -449,18 +476,16 @@ pub fn rank_report(
         .collect::<Vec<&str>>()
         .join(" ");
     let source = file.given("<expression>", &written);
-    // A refusal (no sample point where the functions are defined, say) is about all of them:
-    // the caret underlines the whole list.
-    let mut rank = file.rank_result(
-        &source,
-        "rank",
-        names.clone(),
-        &exprs,
-        expected.unwrap_or(0),
-        Expect::Proved,
-        0..written.len(),
+    let claim = RankClaim {
+        source: &source,
+        id: "rank",
+        expect: Expect::Proved,
+        // A refusal (no sample point where the functions are defined, say) is about all of
+        // them: the caret underlines the whole list.
+        span: 0..written.len(),
         start,
-    )?;
+    };
+    let mut rank = file.rank_result(claim, names.clone(), &exprs, expected.unwrap_or(0))?;
     if expected.is_none() {
         // No claim: the rank is what was found.
         rank.expected = rank.certificate.rank;

@@ -226,7 +226,7 @@ impl LoadedSystem {
         let source = &family.source;
         let scope = Scope::of_family(self, k);
         let tree = scope.tree(source, &family.value)?;
-        let [a, b] = match powers(&tree, &family.indices) {
+        let factors = match powers(&tree, &family.indices) {
             Ok(p) => p,
             Err(why) => {
                 return Ok(Entry::Text(format!(
@@ -237,11 +237,53 @@ impl LoadedSystem {
             }
         };
         let start = Instant::now();
-        let at = |e: &brackets::EngineError| engine_error(source, family.span.clone(), e);
+        let (mut facts, bases) = self.base_facts(k, &scope, &factors, when)?;
+        let eigen_tree = scope.tree(source, family.eigenvalue.as_ref().expect("checked"))?;
+        let [m, n] = &family.indices;
+        let shown = self.pretty(&eigen_tree);
+        let Some(d) = degree(&eigen_tree, &family.indices).filter(|&d| d <= MAX_EIGENVALUE_DEGREE)
+        else {
+            return Ok(Entry::Text(format!(
+                "No proof for all {m}, {n}: λ({m}, {n}) = {shown} is not a polynomial in {m}, {n} \
+                 of degree at most {MAX_EIGENVALUE_DEGREE} as written, so it cannot be compared \
+                 with {m}λ(1, 0) + {n}λ(0, 1) everywhere; the bounded check above is what holds."
+            )));
+        };
+        facts.push(self.eigenvalue_is_linear(k, d.max(1), &shown, when)?);
+        let leibniz_check = self.derivation_holds(k, &bases)?;
+        let holds = facts.iter().all(|f| f.holds) && leibniz_check;
+        let note = (!holds).then(|| "a base fact or the derivation check fails".to_string());
+        Ok(Entry::Proof(ProofResult {
+            title: format!(
+                "for all {m}, {n} ≥ 0, from the factors of {}_{{{m},{n}}}",
+                family.display
+            ),
+            facts,
+            lemma: eigenfunction_lemma(m, n),
+            leibniz_check,
+            conclusion: statement.to_string(),
+            claims: vec![ClaimResult::derived(id, statement, holds, note)
+                .at(when.map(Condition::forms))
+                .timed(start.elapsed().as_secs_f64())],
+        }))
+    }
+
+    /// The facts `{A, H} = λ(1, 0) A` and `{B, H} = λ(0, 1) B` of family `k`, whose value is
+    /// the product of `factors` `A^m`, `B^n`, each checked under `when`; and the bases `A`, `B`.
+    fn base_facts(
+        &self,
+        k: usize,
+        scope: &Scope<'_>,
+        factors: &[Tree; 2],
+        when: Option<&Condition>,
+    ) -> Result<(Vec<Fact>, Vec<Expr>), FileError> {
+        let family = &self.families[k];
+        let source = &family.source;
+        let at = |e: &EngineError| engine_error(source, family.span.clone(), e);
         let h = self.system.hamiltonian();
         let mut facts = Vec::new();
         let mut bases = Vec::new();
-        for (j, factor) in [a, b].iter().enumerate() {
+        for (j, factor) in factors.iter().enumerate() {
             let unit = if j == 0 { [1, 0] } else { [0, 1] };
             let base_tree = substitute(factor, &family.indices, unit, &self.families[..k]);
             let base = scope.lower(source, &family.value, &base_tree)?;
@@ -264,18 +306,15 @@ impl LoadedSystem {
             });
             bases.push(base);
         }
-        let eigen_tree = scope.tree(source, family.eigenvalue.as_ref().expect("checked"))?;
-        let [m, n] = &family.indices;
-        let shown = self.pretty(&eigen_tree);
-        let Some(d) = degree(&eigen_tree, &family.indices).filter(|&d| d <= MAX_EIGENVALUE_DEGREE)
-        else {
-            return Ok(Entry::Text(format!(
-                "No proof for all {m}, {n}: λ({m}, {n}) = {shown} is not a polynomial in {m}, {n} \
-                 of degree at most {MAX_EIGENVALUE_DEGREE} as written, so it cannot be compared \
-                 with {m}λ(1, 0) + {n}λ(0, 1) everywhere; the bounded check above is what holds."
-            )));
-        };
-        facts.push(self.eigenvalue_is_linear(k, d.max(1), &shown, when)?);
+        Ok((facts, bases))
+    }
+
+    /// Whether the bracket with `H` is a derivation on the two `bases` of family `k`, checked
+    /// on them: `{AB, H} = A{B, H} + B{A, H}`.
+    fn derivation_holds(&self, k: usize, bases: &[Expr]) -> Result<bool, FileError> {
+        let family = &self.families[k];
+        let at = |e: &EngineError| engine_error(&family.source, family.span.clone(), e);
+        let h = self.system.hamiltonian();
         // {AB, H} = A{B, H} + B{A, H}
         let e = |r: Result<Expr, trigpoly::AlgebraError>| r.map_err(|e| at(&e.into()));
         let ab = e(bases[0].checked_mul(&bases[1]))?;
@@ -283,27 +322,18 @@ impl LoadedSystem {
         let fa = self.system.bracket(&bases[0], h).map_err(|e| at(&e))?;
         let fb = self.system.bracket(&bases[1], h).map_err(|e| at(&e))?;
         let rhs = e(e(bases[0].checked_mul(&fb))?.checked_add(&e(bases[1].checked_mul(&fa))?))?;
-        let leibniz_check = lhs == rhs;
-        let holds = facts.iter().all(|f| f.holds) && leibniz_check;
-        let note = (!holds).then(|| "a base fact or the derivation check fails".to_string());
-        Ok(Entry::Proof(ProofResult {
-            title: format!(
-                "for all {m}, {n} ≥ 0, from the factors of {}_{{{m},{n}}}",
-                family.display
-            ),
-            facts,
-            lemma: format!(
-                "the bracket is a derivation in each argument, so {{A, H}} = λ_A A and \
-                 {{B, H}} = λ_B B give {{A^{m} B^{n}, H}} = ({m}λ_A + {n}λ_B) A^{m} B^{n} for all \
-                 {m}, {n} ≥ 0, and {m}λ_A + {n}λ_B = {m}λ(1, 0) + {n}λ(0, 1) = λ({m}, {n})"
-            ),
-            leibniz_check,
-            conclusion: statement.to_string(),
-            claims: vec![ClaimResult::derived(id, statement, holds, note)
-                .at(when.map(Condition::forms))
-                .timed(start.elapsed().as_secs_f64())],
-        }))
+        Ok(lhs == rhs)
     }
+}
+
+/// The eigenfunction lemma in the indices `m`, `n`: from the bases' eigenvalues to every
+/// `A^m B^n`'s, which is the proof's step from its facts to all `m, n`.
+fn eigenfunction_lemma(m: &str, n: &str) -> String {
+    format!(
+        "the bracket is a derivation in each argument, so {{A, H}} = λ_A A and \
+         {{B, H}} = λ_B B give {{A^{m} B^{n}, H}} = ({m}λ_A + {n}λ_B) A^{m} B^{n} for all \
+         {m}, {n} ≥ 0, and {m}λ_A + {n}λ_B = {m}λ(1, 0) + {n}λ(0, 1) = λ({m}, {n})"
+    )
 }
 
 /// The tower job on a system file: the family `family` (or the first with an eigenvalue),
