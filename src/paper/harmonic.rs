@@ -48,6 +48,9 @@ pub(crate) fn with_resonant(
     Ok(system)
 }
 
+/// Section 3, subsection by subsection: the rod and its equations of motion (C04–C06), the
+/// constants of motion and su(2) (C07–C10), the ladder functions and resonant integrals
+/// (C11–C16), and functional independence (C17).
 pub(crate) fn section(options: &PaperOptions) -> Result<Section, EngineError> {
     let mut pairs = RESONANCES.to_vec();
     pairs.push((2, 3));
@@ -62,7 +65,16 @@ pub(crate) fn section(options: &PaperOptions) -> Result<Section, EngineError> {
          three degrees of freedom, two translational and one rotational.",
     );
     s.hamilton();
+    equations_of_motion(&mut s)?;
+    constants_of_motion(&mut s)?;
+    resonant_integrals(&mut s, options)?;
+    functional_independence(&mut s)?;
+    Ok(s.finish())
+}
 
+/// C04–C06: the rod's moment of inertia in `H`, the equations of motion as brackets with
+/// `H`, and the closed-form solution.
+fn equations_of_motion(s: &mut SectionBuilder) -> Result<(), EngineError> {
     s.heading("The rod and the equations of motion");
     let rod = systems::harmonic_rod();
     let lhs = rod.hamiltonian().clone();
@@ -93,8 +105,11 @@ pub(crate) fn section(options: &PaperOptions) -> Result<Section, EngineError> {
             ClaimKind::Identity,
         );
     }
-    solution(&mut s)?;
+    solution(s)
+}
 
+/// C07–C10: the constants of motion, their brackets, the su(2) table and its Casimir.
+fn constants_of_motion(s: &mut SectionBuilder) -> Result<(), EngineError> {
     s.heading("Constants of motion");
     s.show(
         "",
@@ -123,14 +138,20 @@ pub(crate) fn section(options: &PaperOptions) -> Result<Section, EngineError> {
         )?;
     }
     s.table("the harmonic rotor", &["F1", "F2", "L", "G1", "G2"]);
-    su2(&mut s, "")?;
+    su2(s, "")?;
     s.identity(
         "C10",
         "4 G1² + G2² + ω² L² = (F1 − F2)²",
         "4*G1^2 + G2^2 + omega^2*L^2",
         "(F1 - F2)^2",
     )?;
+    Ok(())
+}
 
+/// C11–C16: the ladder functions, the tower `{K_{m,n}, F1}` by expansion up to the options'
+/// size and for all `m, n` by a proof, `P_{m,n}` and `Q_{m,n}`, and their conservation on
+/// the resonance.
+fn resonant_integrals(s: &mut SectionBuilder, options: &PaperOptions) -> Result<(), EngineError> {
     s.heading("Ladder functions and resonant integrals");
     s.show("", &[("Z", "Z"), ("Z̄", "Zbar"), ("Ω", "Omega")])?;
     s.identity("C11", "{Z, F1} = iω Z", "{Z, F1}", "i*omega*Z")?;
@@ -191,9 +212,12 @@ pub(crate) fn section(options: &PaperOptions) -> Result<Section, EngineError> {
         "Q11",
         "(p_y + M*omega*x)*cos(theta) + (-p_x + M*omega*y)*sin(theta)",
     )?;
-    real_parts(&mut s, "", "")?;
-    resonance(&mut s, "C16", "", "")?;
+    real_parts(s, "", "")?;
+    resonance(s, "C16", "", "")
+}
 
+/// C17: five functionally independent integrals, and no more among them.
+fn functional_independence(s: &mut SectionBuilder) -> Result<(), EngineError> {
     s.heading("Functional independence");
     s.rank(
         "C17",
@@ -227,7 +251,7 @@ pub(crate) fn section(options: &PaperOptions) -> Result<Section, EngineError> {
         "Five functionally independent integrals for three degrees of freedom: the harmonic \
          rotor is maximally superintegrable on the resonance `Ω/ω = m/n`.",
     );
-    Ok(s.finish())
+    Ok(())
 }
 
 /// C06: the closed-form solution, with `φ = ωt` as an angle and `t` a parameter.
