@@ -301,88 +301,108 @@ impl Item {
                 system,
                 ladder,
                 max,
-            } => {
-                let t = check_tower(system, ladder, *max, progress)?;
-                let note = (!t.failures.is_empty())
-                    .then(|| format!("fails for (m, n) in {:?}", t.failures));
-                vec![Entry::Tower(TowerResult {
-                    system: system.name().to_string(),
-                    the_system: crate::report::with_article(system.name()),
-                    ladder: system.display_name(ladder).to_string(),
-                    max: t.max,
-                    checked: t.checked,
-                    failures: t.failures.clone(),
-                    claim: ClaimResult::derived(id, statement, t.failures.is_empty(), note)
-                        .timed(t.seconds),
-                })]
-            }
+            } => vec![tower_entry(
+                (id, statement),
+                system,
+                ladder,
+                *max,
+                progress,
+            )?],
             Item::Proof {
                 title,
                 settles,
                 system,
                 ladder,
-            } => {
-                let start = Instant::now();
-                let p = eigen_proof(system, ladder)?;
-                let seconds = start.elapsed().as_secs_f64();
-                let holds = p.holds();
-                let note = (!holds).then(|| "a base fact or the derivation check fails".into());
-                vec![Entry::Proof(ProofResult {
-                    title: title.clone(),
-                    facts: p
-                        .facts
-                        .iter()
-                        .map(|f| Fact {
-                            statement: f.statement.clone(),
-                            holds: f.holds,
-                            found: None,
-                        })
-                        .collect(),
-                    lemma: p.lemma.clone(),
-                    leibniz_check: p.leibniz_check,
-                    conclusion: p.conclusion.clone(),
-                    claims: settles
-                        .iter()
-                        .map(|(id, st)| {
-                            ClaimResult::derived(id, st, holds, note.clone()).timed(seconds)
-                        })
-                        .collect(),
-                })]
-            }
+            } => vec![proof_entry(title, settles, system, ladder)?],
             Item::Rank {
                 id,
                 system,
                 functions,
                 expected,
-            } => {
-                let start = Instant::now();
-                let exprs: Vec<Expr> = functions.iter().map(|f| f.1.clone()).collect();
-                let cert = rank(system.space(), &exprs)?;
-                let names: Vec<String> = functions.iter().map(|f| f.0.clone()).collect();
-                let coordinates = system.space().coordinates();
-                let coords: Vec<&str> = coordinates
-                    .iter()
-                    .map(|&v| system.vars().variable(v).unicode())
-                    .collect();
-                let statement = format!(
-                    "rank ∂({})/∂({}) = {expected}",
-                    names.join(", "),
-                    coords.join(", ")
-                );
-                let proved = cert.rank == *expected;
-                let note = (!proved).then(|| format!("the rank is {}", cert.rank));
-                vec![Entry::Rank(RankResult {
-                    functions: names,
-                    vars: system.vars().clone(),
-                    coordinates,
-                    expected: *expected,
-                    claim: ClaimResult::derived(id, &statement, proved, note)
-                        .timed(start.elapsed().as_secs_f64()),
-                    certificate: cert,
-                })]
-            }
+            } => vec![rank_entry(id, system, functions, *expected)?],
         })
     }
+}
+
+/// The tower `{K_{m,n}, H}` of `ladder` checked by expansion up to `max`, as the claim
+/// `(id, statement)`.
+fn tower_entry(
+    (id, statement): (&str, &str),
+    system: &System,
+    ladder: &str,
+    max: i64,
+    progress: &mut dyn FnMut(usize, usize),
+) -> Result<Entry, EngineError> {
+    let t = check_tower(system, ladder, max, progress)?;
+    let note = (!t.failures.is_empty()).then(|| format!("fails for (m, n) in {:?}", t.failures));
+    Ok(Entry::Tower(TowerResult {
+        system: system.name().to_string(),
+        the_system: crate::report::with_article(system.name()),
+        ladder: system.display_name(ladder).to_string(),
+        max: t.max,
+        checked: t.checked,
+        failures: t.failures.clone(),
+        claim: ClaimResult::derived(id, statement, t.failures.is_empty(), note).timed(t.seconds),
+    }))
+}
+
+/// The eigenfunction proof for all `m, n` from `ladder`, settling each claim of `settles`.
+fn proof_entry(
+    title: &str,
+    settles: &[(String, String)],
+    system: &System,
+    ladder: &str,
+) -> Result<Entry, EngineError> {
+    let start = Instant::now();
+    let p = eigen_proof(system, ladder)?;
+    let seconds = start.elapsed().as_secs_f64();
+    let holds = p.holds();
+    let note = (!holds).then(|| "a base fact or the derivation check fails".into());
+    Ok(Entry::Proof(ProofResult {
+        title: title.to_string(),
+        facts: p
+            .facts
+            .iter()
+            .map(|f| Fact {
+                statement: f.statement.clone(),
+                holds: f.holds,
+                found: None,
+            })
+            .collect(),
+        lemma: p.lemma.clone(),
+        leibniz_check: p.leibniz_check,
+        conclusion: p.conclusion.clone(),
+        claims: settles
+            .iter()
+            .map(|(id, st)| ClaimResult::derived(id, st, holds, note.clone()).timed(seconds))
+            .collect(),
+    }))
+}
+
+/// The certified rank of the named `functions`, answering the claim that it is `expected`.
+fn rank_entry(
+    id: &str,
+    system: &System,
+    functions: &[(String, Expr)],
+    expected: usize,
+) -> Result<Entry, EngineError> {
+    let start = Instant::now();
+    let exprs: Vec<Expr> = functions.iter().map(|f| f.1.clone()).collect();
+    let cert = rank(system.space(), &exprs)?;
+    let names: Vec<String> = functions.iter().map(|f| f.0.clone()).collect();
+    let coordinates = system.space().coordinates();
+    let statement = RankResult::statement(&names, system.vars(), &coordinates, expected);
+    let proved = cert.rank == expected;
+    let note = (!proved).then(|| format!("the rank is {}", cert.rank));
+    Ok(Entry::Rank(RankResult {
+        functions: names,
+        vars: system.vars().clone(),
+        coordinates,
+        expected,
+        claim: ClaimResult::derived(id, &statement, proved, note)
+            .timed(start.elapsed().as_secs_f64()),
+        certificate: cert,
+    }))
 }
 
 impl PaperClaim {

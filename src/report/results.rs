@@ -450,6 +450,26 @@ impl TowerResult {
 }
 
 impl RankResult {
+    /// The claim a rank answers in the paper's notation, `rank ∂(F, G)/∂(x, p_x) = r`: the
+    /// functions by `names`, the Jacobian's columns the `coordinates` of `vars`.
+    pub fn statement(
+        names: &[impl AsRef<str>],
+        vars: &Vars,
+        coordinates: &[Var],
+        expected: usize,
+    ) -> String {
+        let names: Vec<&str> = names.iter().map(AsRef::as_ref).collect();
+        let coordinates: Vec<&str> = coordinates
+            .iter()
+            .map(|&v| vars.variable(v).unicode())
+            .collect();
+        format!(
+            "rank ∂({})/∂({}) = {expected}",
+            names.join(", "),
+            coordinates.join(", ")
+        )
+    }
+
     /// The names of the functions of the certificate's nonzero minor (its rows).
     pub fn minor_functions(&self) -> Vec<&str> {
         let rows = &self.certificate.minor_rows;

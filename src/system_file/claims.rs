@@ -819,20 +819,8 @@ impl LoadedSystem {
     /// A rank claim in the paper's notation, `rank ∂(F, G)/∂(x, p_x) = r`, of the functions
     /// `names`.
     fn rank_statement(&self, names: &[impl AsRef<str>], expected: usize) -> String {
-        let vars = self.system.vars();
-        let coordinates: Vec<&str> = self
-            .system
-            .space()
-            .coordinates()
-            .iter()
-            .map(|&v| vars.variable(v).unicode())
-            .collect();
-        let names: Vec<&str> = names.iter().map(AsRef::as_ref).collect();
-        format!(
-            "rank ∂({})/∂({}) = {expected}",
-            names.join(", "),
-            coordinates.join(", ")
-        )
+        let coordinates = self.system.space().coordinates();
+        RankResult::statement(names, self.system.vars(), &coordinates, expected)
     }
 
     /// The certified rank of functions as a report entry, answering `claim`; `expected` is the
