@@ -390,19 +390,9 @@ fn rank_entry(
     let exprs: Vec<Expr> = functions.iter().map(|f| f.1.clone()).collect();
     let cert = rank(system.space(), &exprs)?;
     let names: Vec<String> = functions.iter().map(|f| f.0.clone()).collect();
-    let coordinates = system.space().coordinates();
-    let statement = RankResult::statement(&names, system.vars(), &coordinates, expected);
-    let proved = cert.rank == expected;
-    let note = (!proved).then(|| format!("the rank is {}", cert.rank));
-    Ok(Entry::Rank(RankResult {
-        functions: names,
-        vars: system.vars().clone(),
-        coordinates,
-        expected,
-        claim: ClaimResult::derived(id, &statement, proved, note)
-            .timed(start.elapsed().as_secs_f64()),
-        certificate: cert,
-    }))
+    let mut result = RankResult::new(id, system, names, expected, cert);
+    result.claim = result.claim.timed(start.elapsed().as_secs_f64());
+    Ok(Entry::Rank(result))
 }
 
 impl PaperClaim {

@@ -450,6 +450,30 @@ impl TowerResult {
 }
 
 impl RankResult {
+    /// The certified rank of the functions `names` of `system`, answering the claim `id` that
+    /// it is `expected` (untimed, expected proved: the caller says otherwise).
+    pub fn new(
+        id: &str,
+        system: &System,
+        names: Vec<String>,
+        expected: usize,
+        certificate: RankCertificate,
+    ) -> Self {
+        let vars = system.vars().clone();
+        let coordinates = system.space().coordinates();
+        let statement = Self::statement(&names, &vars, &coordinates, expected);
+        let proved = certificate.rank == expected;
+        let note = (!proved).then(|| format!("the rank is {}", certificate.rank));
+        RankResult {
+            functions: names,
+            vars,
+            coordinates,
+            expected,
+            claim: ClaimResult::derived(id, &statement, proved, note),
+            certificate,
+        }
+    }
+
     /// The claim a rank answers in the paper's notation, `rank ∂(F, G)/∂(x, p_x) = r`: the
     /// functions by `names`, the Jacobian's columns the `coordinates` of `vars`.
     pub fn statement(

@@ -303,7 +303,8 @@ fn rank_form(
         .map(|a| (file.pretty(a), rewritten.slice(a.span.start..a.span.end)))
         .collect();
     let names: Vec<&str> = functions.iter().map(|f| f.0.as_str()).collect();
-    let statement = file.rank_statement(&names, expected);
+    let coordinates = file.system.space().coordinates();
+    let statement = RankResult::statement(&names, file.system.vars(), &coordinates, expected);
     Ok((
         ClaimForm::Rank {
             functions,
@@ -816,13 +817,6 @@ impl LoadedSystem {
         }
     }
 
-    /// A rank claim in the paper's notation, `rank ∂(F, G)/∂(x, p_x) = r`, of the functions
-    /// `names`.
-    fn rank_statement(&self, names: &[impl AsRef<str>], expected: usize) -> String {
-        let coordinates = self.system.space().coordinates();
-        RankResult::statement(names, self.system.vars(), &coordinates, expected)
-    }
-
     /// The certified rank of functions as a report entry, answering `claim`; `expected` is the
     /// claimed rank.
     pub(crate) fn rank_result(
@@ -843,19 +837,12 @@ impl LoadedSystem {
             return Err(source.error(ErrorKind::Claim, span, "a rank needs at least one function"));
         }
         let cert = rank(self.system.space(), exprs).map_err(|e| engine_error(source, span, &e))?;
-        let proved = cert.rank == expected;
-        let note = (!proved).then(|| format!("the rank is {}", cert.rank));
-        let statement = self.rank_statement(&names, expected);
-        Ok(RankResult {
-            functions: names,
-            vars: self.system.vars().clone(),
-            coordinates: self.system.space().coordinates(),
-            expected,
-            claim: ClaimResult::derived(id, &statement, proved, note)
-                .expecting(expect)
-                .timed(start.elapsed().as_secs_f64()),
-            certificate: cert,
-        })
+        let mut result = RankResult::new(id, &self.system, names, expected, cert);
+        result.claim = result
+            .claim
+            .expecting(expect)
+            .timed(start.elapsed().as_secs_f64());
+        Ok(result)
     }
 }
 

@@ -540,16 +540,16 @@ pub fn expressed_in(
     let mut poly = Expr::zero(&lifting.printing.ring);
     let mut symbolic = true;
     for ((solution, target), part) in solutions.into_iter().zip(&span.targets).zip(&parts) {
-        let shortest = match &relations {
-            Some(r) => r.fewest_columns(&span.columns, span.nrows, solution.clone(), target),
-            None => solution.clone(),
-        };
-        let (mut p, mut proved) = lift_ctx.bracket(&shortest, part)?;
+        let shorter = relations
+            .as_ref()
+            .and_then(|r| r.shorter(&span.columns, span.nrows, &solution, target));
         // A shorter solution that does not lift (it holds at the fixed values only) gives
         // way to the echelon's.
-        if !proved && shortest != solution {
-            (p, proved) = lift_ctx.bracket(&solution, part)?;
-        }
+        let lifted = shorter.map(|s| lift_ctx.bracket(&s, part)).transpose()?;
+        let (p, proved) = match lifted {
+            Some((p, true)) => (p, true),
+            _ => lift_ctx.bracket(&solution, part)?,
+        };
         poly = poly.checked_add(&p)?;
         symbolic &= proved;
     }

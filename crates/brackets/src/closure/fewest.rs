@@ -3,7 +3,7 @@
 //! Where the generators have relations, an expression in them is one of several: Kepler's
 //! `A_x² + A_y² = k² + 2 H L²/M` lets `2 H L²/M` also read `A_x² + A_y² − k²`. The
 //! echelon's solution uses its pivot columns, the lowest-degree monomials first, and so picks
-//! the longer form. [`fewest_columns`] subtracts multiples of the kernel's vectors (the
+//! the longer form. [`Relations::shorter`] subtracts multiples of the kernel's vectors (the
 //! relations at the fixed values) while each takes a column off, and keeps the result only
 //! if it is checked exactly to give the same target.
 
@@ -27,30 +27,25 @@ impl Relations {
         })
     }
 
-    /// `solution` (a combination of `columns` equal to `target`) with as few columns as a
-    /// greedy walk over the relations finds, checked exactly; the solution as given when
+    /// A combination of `columns` equal to `target` with fewer columns than `solution` (one
+    /// such), as few as a greedy walk over the relations finds, checked exactly; `None` when
     /// no relation shortens it or the shorter one is not confirmed.
-    pub(super) fn fewest_columns(
+    pub(super) fn shorter(
         &self,
         columns: &[SparseVec<Rational>],
         rows: usize,
-        solution: SparseVec<Rational>,
+        solution: &SparseVec<Rational>,
         target: &SparseVec<Rational>,
-    ) -> SparseVec<Rational> {
+    ) -> Option<SparseVec<Rational>> {
         if self.kernel.is_empty() || solution.len() < 2 {
-            return solution;
+            return None;
         }
-        let Some(x) = modular::to_fp(&solution) else {
-            return solution;
-        };
-        let shorter = shortest_by(x, &self.kernel);
+        let shorter = shortest_by(modular::to_fp(solution)?, &self.kernel);
         if shorter.len() >= solution.len() {
-            return solution;
+            return None;
         }
-        match modular::reconstruct_vec(&shorter) {
-            Some(found) if combination_equals(columns, rows, &found, target) => found,
-            _ => solution,
-        }
+        modular::reconstruct_vec(&shorter)
+            .filter(|found| combination_equals(columns, rows, found, target))
     }
 }
 
@@ -172,8 +167,8 @@ mod tests {
         let target = q(&[(0, 3), (1, 3)]);
         let long = q(&[(0, 3), (1, 3)]);
         assert_eq!(
-            relations.fewest_columns(&columns, 2, long, &target),
-            q(&[(2, 3)])
+            relations.shorter(&columns, 2, &long, &target),
+            Some(q(&[(2, 3)]))
         );
         // A relation that is wrong (not one of the columns') is never used: the result is
         // checked, and the solution kept.
@@ -181,10 +176,7 @@ mod tests {
             kernel: vec![fp(&[(0, 1), (1, 1), (2, -2)])],
         };
         let long = q(&[(0, 3), (1, 3)]);
-        assert_eq!(
-            wrong.fewest_columns(&columns, 2, long.clone(), &target),
-            long
-        );
+        assert_eq!(wrong.shorter(&columns, 2, &long, &target), None);
     }
 
     /// Columns over a few rows from small integers, so that some depend on others.
@@ -229,9 +221,10 @@ mod tests {
                 .filter(|(_, x)| *x != Rational::from(0))
                 .collect();
             let relations = Relations::new(&columns, 4).expect("small integers");
-            let fewest = relations.fewest_columns(&columns, 4, solution.clone(), &target);
-            prop_assert!(combination_equals(&columns, 4, &fewest, &target));
-            prop_assert!(fewest.len() <= solution.len());
+            if let Some(fewer) = relations.shorter(&columns, 4, &solution, &target) {
+                prop_assert!(combination_equals(&columns, 4, &fewer, &target));
+                prop_assert!(fewer.len() < solution.len());
+            }
         }
     }
 }
