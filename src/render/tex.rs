@@ -347,9 +347,11 @@ struct Translation<'a> {
     /// The token at hand.
     k: usize,
     out: String,
-    /// Each open brace: whether it is a script's group (not an escaped brace), and whether a
-    /// subscript's.
-    braces: Vec<(bool, bool)>,
+    /// Each open brace, in order.
+    braces: Vec<Brace>,
+    /// The scripts the base had before the script sign whose group the next brace opens,
+    /// `(sub, sup)`.
+    group_base: (bool, bool),
     /// Where the last subscript group ended in `out`: a second subscript right after it, the
     /// indices of a family named `K₁` or `K_a` (`K₁_{1,2}`), joins it after a semicolon,
     /// `K_{1;1,2}`, as LaTeX refuses a double subscript.
@@ -361,6 +363,16 @@ struct Translation<'a> {
     /// (`x²^1`, `x^a_b^c`) starts from an empty base, `x^{2}{}^{1}`, as LaTeX refuses a
     /// double script.
     scripts: Option<Scripts>,
+}
+
+/// An open brace: a script's group (not an escaped brace), and then whether a subscript's and
+/// the scripts its base had before it, `(sub, sup)`, which the group adds to when it closes
+/// (`x^{a}_{b}^{c}` has a double superscript).
+#[derive(Clone, Copy)]
+struct Brace {
+    group: bool,
+    subscript: bool,
+    base: (bool, bool),
 }
 
 /// The scripts on one base, as [`Translation::scripts`] keeps them.
@@ -383,6 +395,7 @@ impl<'a> Translation<'a> {
             k: 0,
             out: String::new(),
             braces: Vec::new(),
+            group_base: (false, false),
             subscript_end: None,
             joining: false,
             scripts: None,
@@ -411,8 +424,8 @@ impl<'a> Translation<'a> {
             self.k += 1;
         }
         // Close anything left open so the output always balances.
-        while let Some((group, _)) = self.braces.pop() {
-            self.out.push_str(if group { "}" } else { "" });
+        while let Some(brace) = self.braces.pop() {
+            self.out.push_str(if brace.group { "}" } else { "" });
         }
         self.out.trim_end().to_string()
     }
@@ -509,28 +522,38 @@ impl<'a> Translation<'a> {
     /// one, else an escaped brace.
     fn open_brace(&mut self) {
         if self.joining {
-            self.braces.push((true, true));
+            self.braces.push(Brace {
+                group: true,
+                subscript: true,
+                base: self.group_base,
+            });
             self.joining = false;
             // The subscript stays open until this group closes: nothing joins it before.
             self.subscript_end = None;
             return;
         }
         let group = self.out.ends_with('_') || self.out.ends_with('^');
-        self.braces.push((group, self.out.ends_with('_')));
+        self.braces.push(Brace {
+            group,
+            subscript: self.out.ends_with('_'),
+            base: std::mem::take(&mut self.group_base),
+        });
         self.out.push_str(if group { "{" } else { r"\{" });
     }
 
     /// A closing brace: the end of a script's group, else an escaped brace.
     fn close_brace(&mut self) {
         match self.braces.pop() {
-            Some((true, subscript)) => {
+            Some(Brace {
+                group: true,
+                subscript,
+                base,
+            }) => {
                 self.out.push('}');
                 if subscript {
                     self.subscript_end = Some(self.out.len());
                 }
-                // What the base had before this group is not kept: `x^{a}^{b}` is caught,
-                // `x^{a}_{b}^{c}` is not.
-                self.close_script(!subscript, (false, false));
+                self.close_script(!subscript, base);
             }
             _ => self.out.push_str(r"\}"),
         }
@@ -556,13 +579,21 @@ impl<'a> Translation<'a> {
         let pieces = self.script_pieces(c);
         let group_follows = self.toks.get(self.k + 1) == Some(&Tok::Char('{', None));
         match (join, pieces.is_empty()) {
-            // A group follows, which the brace opens; a sign with nothing after it takes an
-            // empty script (LaTeX refuses `x^` at the end of a formula).
-            (false, true) if group_follows => {}
+            // A group follows, which the brace opens, and which adds to the base's scripts
+            // when it closes; a sign with nothing after it takes an empty script (LaTeX
+            // refuses `x^` at the end of a formula).
+            (false, true) if group_follows => {
+                self.group_base = base.unwrap_or_default();
+            }
             (false, true) => self.out.push_str("{}"),
             (false, false) => self.out.push_str(&format!("{{{pieces}}}")),
             (true, false) => self.out.push_str(&format!("{pieces}}}")),
             (true, true) if group_follows => {
+                // The group continues the subscript it joins, on the same base.
+                self.group_base = self
+                    .scripts
+                    .filter(|s| s.end == end_before)
+                    .map_or((true, false), |s| (s.sub, s.sup));
                 self.joining = true;
             }
             (true, true) => self.out.push('}'),
@@ -1088,6 +1119,11 @@ mod tests {
         assert_eq!(math("ħ_"), r"\hbar _{}");
         assert_eq!(math("x = y^"), "x = y^{}");
         assert_eq!(markup("a ` ` b"), "a  b");
+        // A group adds to the scripts its base had before it.
+        assert_eq!(math("x^{a}_{b}^{c}"), "x^{a}_{b}{}^{c}");
+        assert_eq!(math("x_{a}^{b}_{c}"), "x_{a}^{b}{}_{c}");
+        assert_eq!(math("x^{a}_b_{c}^{d}"), "x^{a}_{b;c}{}^{d}");
+        assert_eq!(math("x_{a}^{b} y^{c}"), "x_{a}^{b} y^{c}");
         // What the paper writes is as it was.
         assert_eq!(math("G1'²"), "G_{1}'^{2}");
         assert_eq!(math("K₁_{1,2}"), "K_{1;1,2}");
