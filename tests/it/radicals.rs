@@ -434,6 +434,11 @@ fn radicals_bad_declarations_are_refused_at_their_place() {
             "bad.toml:6:18: the radicand ix + y is not real",
         ),
         (
+            "{ r = \"-x^2 - y^2 - 1\" }",
+            "bad.toml:6:18: the radicand −x² − y² − 1 is nowhere positive (each term is a \
+             negative number times even powers), so r = √(−x² − y² − 1) is real nowhere",
+        ),
+        (
             "{ x = \"x^2 + y^2\" }",
             "bad.toml:6:14: 'x' is already declared as a coordinate",
         ),

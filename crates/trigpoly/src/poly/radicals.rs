@@ -73,7 +73,8 @@ impl<C: Coefficient> Poly<C> {
     /// Why `radicand` cannot stand under the root of the radical shown as `name`, if it
     /// cannot: it is a constant, it holds a radical, a denominator atom or an angle (a radicand
     /// is a polynomial, or a Laurent polynomial, in the coordinates, momenta and parameters),
-    /// or it is not real.
+    /// it is not real, or it is nowhere positive, every term a negative number times even
+    /// powers (`−x² − y² − 1`), so that its root is real nowhere.
     pub fn radicand_refusal(name: &str, radicand: &Self) -> Option<String> {
         let vars = &radicand.vars;
         let kind = |w: Var| vars.variable(w).kind();
@@ -95,9 +96,25 @@ impl<C: Coefficient> Poly<C> {
             ))
         } else if radicand.conj() != *radicand {
             Some(format!("the radicand {radicand} is not real"))
+        } else if radicand.is_nowhere_positive() {
+            Some(format!(
+                "the radicand {radicand} is nowhere positive (each term is a negative number \
+                 times even powers), so {name} = √({radicand}) is real nowhere: a radical stands \
+                 for the positive root of its radicand where that is positive"
+            ))
         } else {
             None
         }
+    }
+
+    /// Whether every term is a negative real number times even powers of the variables, so
+    /// that the polynomial is at most 0 at every real point where it is defined (`−x² − y² −
+    /// 1`): a sufficient condition, not a decision.
+    fn is_nowhere_positive(&self) -> bool {
+        self.terms().all(|t| {
+            let c = t.coeff().to_gaussian();
+            c.is_real() && c.re.is_negative() && t.exponents().iter().all(|e| e % 2 == 0)
+        })
     }
 
     /// How the radical `r` with its radicand reads in messages and reports:
@@ -819,7 +836,12 @@ mod tests {
             ),
             "{err}"
         );
-        assert!(Expr::check_radicals(&build(&[("r", "-x^2 - y^2")])).is_ok());
+        // Not a square over Q(i), but nowhere positive: real nowhere. One that changes sign
+        // is real where it is positive.
+        let negative = build(&[("r", "-x^2 - y^2")]);
+        let err = Expr::check_radicals(&negative).unwrap_err().to_string();
+        assert!(err.contains("is nowhere positive"), "{err}");
+        assert!(Expr::check_radicals(&build(&[("r", "y^2 - x^2")])).is_ok());
         let constant = build(&[("r", "2")]);
         assert!(Expr::check_radicals(&constant).is_err());
         let inside = build(&[("r", "x^2 + y^2"), ("s", "r + x")]);
