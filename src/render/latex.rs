@@ -5,7 +5,7 @@
 use trigpoly::Style;
 
 use super::tex::{markup, math, relation, sentence, text};
-use super::text::{number, point, upper_bound, wrap};
+use super::text::{point, upper_bound, wrap};
 use super::{stopped, table_list, verdict, Options};
 use crate::report::{
     counted, ClaimKind, ClaimResult, Entry, Equations, Excerpt, ProofResult, RankResult, Report,
@@ -474,7 +474,7 @@ fn rank(out: &mut Vec<String>, r: &RankResult) {
             c.rank,
             fns.join(", "),
             cols.join(", "),
-            number(&c.minor_value).replace('*', " "),
+            trigpoly::render_number(&c.minor_value, Style::Latex),
             at.join(", ")
         ));
     }

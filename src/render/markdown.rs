@@ -3,7 +3,7 @@
 
 use trigpoly::Style;
 
-use super::text::{number, point, upper_bound};
+use super::text::{point, upper_bound};
 use super::{stopped, verdict, Options, SHOWN_MONOMIALS};
 use crate::report::{
     counted, ClaimKind, ClaimResult, Entry, Equations, ProofResult, RankResult, Report,
@@ -200,7 +200,7 @@ fn rank(r: &RankResult) -> String {
             "  - ≥ {}: the minor {} = {} ≠ 0 at {}",
             c.rank,
             code(&format!("∂({})/∂({})", rows.join(", "), cols.join(", "))),
-            code(&number(&c.minor_value)),
+            code(&trigpoly::render_number(&c.minor_value, Style::Unicode)),
             point.join(", ")
         ),
         format!("  - ≤ {}: {}", c.rank, upper_bound(r)),

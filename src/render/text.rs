@@ -487,9 +487,10 @@ pub(crate) fn point(r: &RankResult, style: Style) -> Vec<String> {
         .iter()
         .map(|(v, value)| {
             if r.vars.variable(*v).kind() == VarKind::Angle {
-                let (c, s) = (&value.re, &value.im);
+                let [c, s] = [&value.re, &value.im]
+                    .map(|q| trigpoly::render_number(&GaussianRational::from(q.clone()), style));
                 match style {
-                    Style::Latex => format!(r"\cos{0} = {c}, \sin{0} = {s}", name(*v)),
+                    Style::Latex => format!(r"\cos {0} = {c}, \sin {0} = {s}", name(*v)),
                     Style::Ascii => format!("cos({0}) = {c}, sin({0}) = {s}", name(*v)),
                     Style::Unicode => format!("cos {0} = {c}, sin {0} = {s}", name(*v)),
                 }
@@ -498,11 +499,6 @@ pub(crate) fn point(r: &RankResult, style: Style) -> Vec<String> {
             }
         })
         .collect()
-}
-
-/// A number of Q(i) as text.
-pub(crate) fn number(q: &GaussianRational) -> String {
-    trigpoly::render_number(q, Style::Ascii)
 }
 
 /// `there is 1 function`, `there are 2 functions`.
@@ -554,7 +550,7 @@ fn rank(out: &mut Vec<String>, r: &RankResult) {
             c.rank,
             rows.join(", "),
             cols.join(", "),
-            number(&c.minor_value).replace('-', "−"),
+            trigpoly::render_number(&c.minor_value, Style::Unicode),
         ),
         WRAP,
         "        ",
@@ -659,14 +655,14 @@ mod tests {
         };
         for (value, text) in [
             (q((0, 1), (11, 1)), "11i"),
-            (q((0, 1), (-11, 7)), "-11i/7"),
+            (q((0, 1), (-11, 7)), "−11i/7"),
             (q((0, 1), (1, 1)), "i"),
-            (q((0, 1), (-1, 1)), "-i"),
-            (q((3, 2), (-1, 1)), "3/2 - i"),
-            (q((-5, 1), (2, 3)), "-5 + 2i/3"),
+            (q((0, 1), (-1, 1)), "−i"),
+            (q((3, 2), (-1, 1)), "3/2 − i"),
+            (q((-5, 1), (2, 3)), "−5 + 2i/3"),
             (q((7, 4), (0, 1)), "7/4"),
         ] {
-            assert_eq!(number(&value), text);
+            assert_eq!(trigpoly::render_number(&value, Style::Unicode), text);
         }
     }
 

@@ -413,6 +413,8 @@ fn cli_latex_of_every_command_compiles() {
         ],
         &["bracket", names, "cos(a)", "p_a"],
         &["table", names, "L", "A", "K₁_1_2"],
+        // A rank certificate's point at the angles (`\cosa = 3/5` was undefined).
+        &["rank", names, "A", "L"],
         &[&["search", names][..], &crate::DEGREE_ONE].concat(),
         // The proof's linearity line: its prose breaks between words (it ran 296 pt wide).
         &["tower", "--system", names, "--family", "K₁", "--max", "2"],
