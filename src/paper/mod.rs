@@ -356,19 +356,20 @@ fn proof_entry(
     let start = Instant::now();
     let p = eigen_proof(system, ladder)?;
     let seconds = start.elapsed().as_secs_f64();
-    let holds = p.holds();
-    let note = (!holds).then(|| "a base fact or the derivation check fails".into());
+    let facts: Vec<Fact> = p
+        .facts
+        .iter()
+        .map(|f| Fact {
+            statement: f.statement.clone(),
+            holds: f.holds,
+            found: None,
+        })
+        .collect();
+    let note = ProofResult::failed_steps(&facts, p.leibniz_check);
+    let holds = note.is_none();
     Ok(Entry::Proof(ProofResult {
         title: title.to_string(),
-        facts: p
-            .facts
-            .iter()
-            .map(|f| Fact {
-                statement: f.statement.clone(),
-                holds: f.holds,
-                found: None,
-            })
-            .collect(),
+        facts,
         lemma: p.lemma.clone(),
         leibniz_check: p.leibniz_check,
         conclusion: p.conclusion.clone(),

@@ -401,6 +401,25 @@ impl ProofResult {
         self.facts.iter().all(|f| f.holds) && self.leibniz_check
     }
 
+    /// Which steps of a proof with `facts` and the derivation check fail, as the claims it
+    /// settles say so (`step 3 fails`, `steps 1 and 4 fail`), numbered as the proof prints
+    /// them (the facts, then the derivation check); `None` when every step holds.
+    pub fn failed_steps(facts: &[Fact], leibniz_check: bool) -> Option<String> {
+        let steps: Vec<String> = facts
+            .iter()
+            .map(|f| f.holds)
+            .chain([leibniz_check])
+            .enumerate()
+            .filter(|(_, holds)| !holds)
+            .map(|(k, _)| (k + 1).to_string())
+            .collect();
+        match steps.as_slice() {
+            [] => None,
+            [one] => Some(format!("step {one} fails")),
+            [rest @ .., last] => Some(format!("steps {} and {last} fail", rest.join(", "))),
+        }
+    }
+
     /// The proof's last line, as a label and prose: `Therefore` and the conclusion when every
     /// step holds, otherwise `Not proved` and why the conclusion does not follow.
     pub fn closing(&self) -> (&'static str, String) {
@@ -522,4 +541,30 @@ pub struct RankResult {
     pub certificate: RankCertificate,
     /// The claim it settles.
     pub claim: ClaimResult,
+}
+
+#[cfg(test)]
+mod tests {
+    use super::{Fact, ProofResult};
+
+    /// The steps that fail are named as the proof numbers them: the facts, then the
+    /// derivation check.
+    #[test]
+    fn failed_steps_are_named_by_their_numbers() {
+        let facts = |holds: &[bool]| -> Vec<Fact> {
+            holds
+                .iter()
+                .map(|&holds| Fact {
+                    statement: String::new(),
+                    holds,
+                    found: None,
+                })
+                .collect()
+        };
+        let failed = |holds: &[bool], leibniz| ProofResult::failed_steps(&facts(holds), leibniz);
+        assert_eq!(failed(&[true, true, true], true), None);
+        assert_eq!(failed(&[true, true, false], true).unwrap(), "step 3 fails");
+        assert_eq!(failed(&[false, true, true], false).unwrap(), "steps 1 and 4 fail");
+        assert_eq!(failed(&[false, false, true], false).unwrap(), "steps 1, 2 and 4 fail");
+    }
 }

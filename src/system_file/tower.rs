@@ -251,8 +251,8 @@ impl LoadedSystem {
         };
         facts.push(self.eigenvalue_is_linear(k, d.max(1), &shown, when)?);
         let leibniz_check = self.derivation_holds(k, &bases)?;
-        let holds = facts.iter().all(|f| f.holds) && leibniz_check;
-        let note = (!holds).then(|| "a base fact or the derivation check fails".to_string());
+        let note = ProofResult::failed_steps(&facts, leibniz_check);
+        let holds = note.is_none();
         Ok(Entry::Proof(ProofResult {
             title: format!(
                 "for all {m}, {n} ≥ 0, from the factors of {}_{{{m},{n}}}",

@@ -4,7 +4,7 @@
 
 use brackets::closure::{expressed_in, ClosureOptions};
 use brackets::{Condition, NamedFunction};
-use trigpoly::{Expr, VarKind};
+use trigpoly::{Expr, Rational, VarKind};
 
 use super::LoadedSystem;
 
@@ -86,14 +86,74 @@ impl LoadedSystem {
         if let Some(c) = condition {
             options = options.when(c.clone());
         }
-        let found = expressed_in(system, &generators, e, &options).ok()??;
-        let ring = &found.ring;
-        let has_function = ring
-            .vars()
-            .any(|v| ring.variable(v).kind() != VarKind::Parameter && found.poly.contains(v));
-        (found.symbolic && has_function).then_some(found.poly)
+        let search = |options: &ClosureOptions| match expressed_in(system, &generators, e, options)
+        {
+            Ok(None) => Search::Nothing,
+            Ok(Some(found)) if found.symbolic => {
+                let ring = &found.ring;
+                let has_function = ring.vars().any(|v| {
+                    ring.variable(v).kind() != VarKind::Parameter && found.poly.contains(v)
+                });
+                match has_function {
+                    true => Search::Written(found.poly),
+                    false => Search::Nothing,
+                }
+            }
+            Ok(Some(_)) | Err(_) => Search::AtTheseValues,
+        };
+        match search(&options) {
+            Search::Written(poly) => Some(poly),
+            Search::Nothing => None,
+            // The parameters are fixed to 1 for the linear algebra, and that is a special
+            // point (the Euler top's `H = C/2` at `I1 = I2 = I3 = 1`, a declared `a1 − a2`
+            // zero there): the search is made again at values that are not.
+            Search::AtTheseValues => {
+                let generic = system
+                    .vars()
+                    .vars()
+                    .filter(|&v| system.vars().variable(v).kind() == VarKind::Parameter)
+                    .zip(GENERIC_VALUES)
+                    .fold(options.clone(), |o, (v, (n, d))| {
+                        o.fix(v, Rational::new(n, d))
+                    });
+                match search(&generic) {
+                    Search::Written(poly) => Some(poly),
+                    _ => None,
+                }
+            }
+        }
     }
 }
+
+/// What one search of [`LoadedSystem::written_in_functions`] at fixed parameter values found.
+enum Search {
+    /// A polynomial in the functions, proved for every value of the parameters.
+    Written(Expr),
+    /// No polynomial in the functions: none at these values, so none for every value (one
+    /// for every value holds at these values too, where no denominator vanishes).
+    Nothing,
+    /// A polynomial that holds at these values only, or a denominator zero there.
+    AtTheseValues,
+}
+
+/// Values of the parameters, in the order of their declaration, for the second search of
+/// [`LoadedSystem::written_in_functions`]: primes over 1, 2 and 3, so that no small relation
+/// (equal values, one the sum of two others) holds among them. Parameters past the list keep
+/// the value 1.
+const GENERIC_VALUES: [(i64, i64); 12] = [
+    (7, 1),
+    (11, 2),
+    (13, 3),
+    (17, 1),
+    (19, 2),
+    (23, 3),
+    (29, 1),
+    (31, 2),
+    (37, 3),
+    (41, 1),
+    (43, 2),
+    (47, 3),
+];
 
 #[cfg(test)]
 mod tests {

@@ -1758,7 +1758,8 @@ fn tower_of_a_file_family_with_its_proof() {
 /// The all-`m, n` proof decides `λ(m, n) = mλ(1, 0) + nλ(0, 1)` from the eigenvalue's values on
 /// a grid as large as its degree, not from how it is written: `iω(m − n)^1 + mn − mn` is
 /// proved (it was refuted as "not affine"), a term `m(m − 1)(m − 2)(m − 3)` that the bounded
-/// check to 3 cannot see is refuted at `(4, 0)`, and `1^n` gives no proof, not a refutation.
+/// check to 3 cannot see is refuted at `(4, 0)`, its verdict naming that step, and `1^n` gives
+/// no proof, not a refutation.
 #[test]
 fn tower_decides_the_eigenvalue_by_its_values() {
     let dir = scratch("tower-eigenvalue");
@@ -1798,6 +1799,8 @@ fn tower_decides_the_eigenvalue_by_its_values() {
     assert!(out.contains("[W-all REFUTED]"), "{out}");
     let words = crate::normalize(&out);
     assert!(words.contains("they differ at (m, n) = (4, 0)"), "{out}");
+    // The verdict names the step that fails (it said "a base fact or the derivation check").
+    assert!(out.contains("[W-all REFUTED]\n      step 3 fails\n"), "{out}");
     let out = tower("i*omega*(m - n)*1^n", 0);
     assert!(out.contains("No proof for all m, n"), "{out}");
     assert!(!out.contains("W-all"), "{out}");
@@ -2806,4 +2809,51 @@ fn bracket_writes_the_bracket_in_the_files_functions() {
         0,
     );
     assert!(markdown.contains("` = `−2 H L/M`"), "{markdown}");
+}
+
+/// A residual is written in the functions where the parameters at 1, the values the linear
+/// algebra takes first, are a special point: the Euler top with symbolic moments has `H = C/2`
+/// at `I1 = I2 = I3 = 1`, where `C²` was found as `4 H²`, which holds there only, and no line
+/// was written; the search is made again at values that are not special, and a combination
+/// found there is proved by expanding it as it stands (the moments, of one weight, leave
+/// homogeneity nothing to lift by). A declared denominator zero at 1 (`a1 − a2`) likewise.
+#[test]
+fn a_residual_is_written_in_the_functions_where_the_parameters_at_one_are_special() {
+    let dir = scratch("special-parameters");
+    std::fs::write(
+        dir.join("top.toml"),
+        "hamiltonian = \"M1^2/(2*I1) + M2^2/(2*I2) + M3^2/(2*I3)\"\n\
+         [phase_space]\nvariables = [\"M1\", \"M2\", \"M3\"]\nparameters = [\"I1\", \"I2\", \"I3\"]\n\
+         [poisson]\n\"{M1, M2}\" = \"M3\"\n\"{M2, M3}\" = \"M1\"\n\"{M3, M1}\" = \"M2\"\n\
+         [[function]]\nname = \"C\"\nvalue = \"M1^2 + M2^2 + M3^2\"\n\
+         [[claim]]\nclaim = \"C^2 = 0\"\nexpect = \"refuted\"\n\
+         [[claim]]\nclaim = \"C + H = 0\"\nexpect = \"refuted\"\n",
+    )
+    .expect("write the file");
+    std::fs::write(
+        dir.join("split.toml"),
+        "hamiltonian = \"p_x^2/2 + p_y^2/2 + x^2/(a1 - a2)\"\n\
+         [phase_space]\ncoordinates = [\"x\", \"y\"]\nparameters = [\"a1\", \"a2\"]\n\
+         denominators = [\"a1 - a2\"]\n\
+         [[function]]\nname = \"Hx\"\nvalue = \"p_x^2/2 + x^2/(a1 - a2)\"\n\
+         [[claim]]\nclaim = \"{Hx, H} + Hx^2 = 0\"\nexpect = \"refuted\"\n",
+    )
+    .expect("write the file");
+    let written = |file: &str| {
+        let o = superint_in(&dir, &["check", file, "--format", "json"]);
+        assert_eq!(o.status.code(), Some(0), "{}", text(&o.stderr));
+        let v: Value = serde_json::from_str(&text(&o.stdout)).expect("JSON");
+        let claims = v["claims"].as_array().expect("claims").clone();
+        claims
+            .iter()
+            .map(|c| {
+                c["residual_in_functions"]
+                    .as_str()
+                    .unwrap_or("")
+                    .to_string()
+            })
+            .collect::<Vec<_>>()
+    };
+    assert_eq!(written("top.toml"), ["C^2", "H + C"]);
+    assert_eq!(written("split.toml"), ["Hx^2"]);
 }

@@ -174,7 +174,9 @@ impl LiftContext<'_> {
                 }
             }
         }
-        Ok((normalize(self.ring_poly(&fixed_terms)?), false))
+        // Found at the fixed values, it may hold for every value as it stands.
+        let proved = self.expand(&fixed_terms)?.vanishes()?;
+        Ok((normalize(self.ring_poly(&fixed_terms)?), proved))
     }
 
     /// A bracket's expression, lifted and proved if possible.
@@ -201,7 +203,10 @@ impl LiftContext<'_> {
                 }
             }
         }
-        Ok((self.ring_poly(&fixed_terms)?, false))
+        // Found at the fixed values, it may hold for every value as it stands (`C²` where
+        // parameters of one weight leave homogeneity nothing to lift by).
+        let proved = equal(&self.expand(&fixed_terms)?, target)?;
+        Ok((self.ring_poly(&fixed_terms)?, proved))
     }
 }
 
