@@ -475,83 +475,71 @@ impl Report {
     /// tower job `tower: 64 brackets {K_{m,n}, H} = … checked for 1 ≤ m, n ≤ 8, all hold (0.04 s)`.
     /// `timings` adds the seconds.
     pub fn summary_line(&self, timings: bool) -> String {
+        match (self.summary, self.tower()) {
+            (SummaryKind::Tower, Some(t)) => tower_summary(t, timings),
+            (SummaryKind::Computed, _) => self.computed_summary(timings),
+            (SummaryKind::Check { files }, _) => self.check_summary(files, timings),
+            _ => self.claims_summary(timings),
+        }
+    }
+
+    /// The closing line of a computation: `computed exactly (0.01 s)`.
+    fn computed_summary(&self, timings: bool) -> String {
+        // A table's entries that a limit stopped are no part of what was computed.
+        let what = match self.tables().map(|t| t.undecided().len()).sum::<usize>() {
+            0 => "computed exactly".to_string(),
+            n => format!(
+                "computed exactly, but for {} stopped at a limit",
+                counted(n, "entry")
+            ),
+        };
+        format!("{what}{}", seconds_in_parentheses(self.seconds, timings))
+    }
+
+    /// The closing line of a check of `files` system files:
+    /// `12 claims in 2 files: 10 proved, 2 refuted; all as expected`.
+    fn check_summary(&self, files: usize, timings: bool) -> String {
+        let claims = self.claims_by_section();
+        let outcomes = |o: ClaimOutcome| claims.iter().filter(|(_, c)| c.outcome() == o).count();
+        let proved = outcomes(ClaimOutcome::Proved);
+        let refuted = outcomes(ClaimOutcome::Refuted);
+        // With several files, an id says where it is: `main (section 2)`.
+        let unexpected: Vec<String> = claims
+            .iter()
+            .filter(|(_, c)| !c.meets_expectation())
+            .map(|(s, c)| match files {
+                1 => c.id.clone(),
+                _ => format!("{} (section {s})", c.id),
+            })
+            .collect();
+        let verdict = if unexpected.is_empty() {
+            "all as expected".to_string()
+        } else {
+            format!(
+                "{} NOT as expected: {}",
+                unexpected.len(),
+                unexpected.join(", ")
+            )
+        };
+        let files = counted(files, "file");
+        let count = counted(claims.len(), "claim");
+        let undecided = match outcomes(ClaimOutcome::Undecided) {
+            0 => String::new(),
+            n => format!(", {n} undecided"),
+        };
+        format!(
+            "{count} in {files}: {proved} proved, {refuted} refuted{undecided}; {verdict}{}",
+            seconds_in_parentheses(self.seconds, timings)
+        )
+    }
+
+    /// The closing line of the claims: `26 claims: 26 proved, 0 refuted (93 exact checks)`.
+    fn claims_summary(&self, timings: bool) -> String {
         let time = if timings {
             format!(", {:.2} s", self.seconds)
         } else {
             String::new()
         };
-        if let (SummaryKind::Tower, Some(t)) = (self.summary, self.tower()) {
-            let verdict = if t.failures.is_empty() {
-                "all hold".to_string()
-            } else {
-                format!("{} FAIL", t.failures.len())
-            };
-            let time = if timings {
-                format!(" ({:.2} s)", t.claim.seconds)
-            } else {
-                String::new()
-            };
-            return format!(
-                "tower: {} {{K_{{m,n}}, H}} = i(mω − nΩ) K_{{m,n}} checked for \
-                 1 ≤ m, n ≤ {}, {verdict}{time}",
-                counted(t.checked, "bracket"),
-                t.max
-            );
-        }
-        if self.summary == SummaryKind::Computed {
-            // A table's entries that a limit stopped are no part of what was computed.
-            let what = match self.tables().map(|t| t.undecided().len()).sum::<usize>() {
-                0 => "computed exactly".to_string(),
-                n => format!(
-                    "computed exactly, but for {} stopped at a limit",
-                    counted(n, "entry")
-                ),
-            };
-            return if timings {
-                format!("{what} ({:.2} s)", self.seconds)
-            } else {
-                what
-            };
-        }
-        if let SummaryKind::Check { files } = self.summary {
-            let claims = self.claims_by_section();
-            let outcomes =
-                |o: ClaimOutcome| claims.iter().filter(|(_, c)| c.outcome() == o).count();
-            let proved = outcomes(ClaimOutcome::Proved);
-            let refuted = outcomes(ClaimOutcome::Refuted);
-            // With several files, an id says where it is: `main (section 2)`.
-            let unexpected: Vec<String> = claims
-                .iter()
-                .filter(|(_, c)| !c.meets_expectation())
-                .map(|(s, c)| match files {
-                    1 => c.id.clone(),
-                    _ => format!("{} (section {s})", c.id),
-                })
-                .collect();
-            let verdict = if unexpected.is_empty() {
-                "all as expected".to_string()
-            } else {
-                format!(
-                    "{} NOT as expected: {}",
-                    unexpected.len(),
-                    unexpected.join(", ")
-                )
-            };
-            let files = counted(files, "file");
-            let count = counted(claims.len(), "claim");
-            let undecided = match outcomes(ClaimOutcome::Undecided) {
-                0 => String::new(),
-                n => format!(", {n} undecided"),
-            };
-            return format!(
-                "{count} in {files}: {proved} proved, {refuted} refuted{undecided}; {verdict}{}",
-                if timings {
-                    format!(" ({:.2} s)", self.seconds)
-                } else {
-                    String::new()
-                }
-            );
-        }
         let ids = self.claim_ids();
         let proved = ids.iter().filter(|(_, ok)| *ok).count();
         let checks = self.claims().len();
@@ -561,5 +549,31 @@ impl Report {
             ids.len() - proved,
             counted(checks, "exact check"),
         )
+    }
+}
+
+/// The closing line of a tower job:
+/// `tower: 64 brackets {K_{m,n}, H} = … checked for 1 ≤ m, n ≤ 8, all hold`.
+fn tower_summary(t: &TowerResult, timings: bool) -> String {
+    let verdict = if t.failures.is_empty() {
+        "all hold".to_string()
+    } else {
+        format!("{} FAIL", t.failures.len())
+    };
+    format!(
+        "tower: {} {{K_{{m,n}}, H}} = i(mω − nΩ) K_{{m,n}} checked for \
+         1 ≤ m, n ≤ {}, {verdict}{}",
+        counted(t.checked, "bracket"),
+        t.max,
+        seconds_in_parentheses(t.claim.seconds, timings)
+    )
+}
+
+/// ` (0.41 s)` when `timings`, else nothing: the seconds a closing line ends with.
+fn seconds_in_parentheses(seconds: f64, timings: bool) -> String {
+    if timings {
+        format!(" ({seconds:.2} s)")
+    } else {
+        String::new()
     }
 }

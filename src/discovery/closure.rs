@@ -369,7 +369,26 @@ fn outside_entries(
     when: &str,
 ) -> Result<Vec<Entry>, EngineError> {
     let outside = c.outside();
-    let mut entries = Vec::new();
+    let moving = moving_generators(system, generators, options, &outside)?;
+    let advice = closing_advice(&moving, when);
+    Ok(vec![
+        Entry::Text(format!(
+            "The brackets marked `*` are no polynomials of degree `≤ {}` in the generators; \
+             here they are. {advice}",
+            c.degree
+        )),
+        outside_equations(c, &outside),
+    ])
+}
+
+/// The generators in a bracket `outside` the table that are no integrals (their flow does
+/// not vanish, under the condition if any), each as `` `display` ``.
+fn moving_generators(
+    system: &System,
+    generators: &[NamedFunction],
+    options: &ClosureOptions,
+    outside: &[(usize, usize)],
+) -> Result<Vec<String>, EngineError> {
     // A generator that is no integral has brackets with no reason to close among
     // integrals; what search finds closes a table of integrals.
     let mut moving = Vec::new();
@@ -391,7 +410,14 @@ fn outside_entries(
             moving.push(format!("`{display}`"));
         }
     }
-    let advice = match moving.len() {
+    Ok(moving)
+}
+
+/// The advice after the brackets outside the table: that the `moving` generators, no
+/// integrals, need not close among the others, or, when every generator is an integral, how
+/// the table might close.
+fn closing_advice(moving: &[String], when: &str) -> String {
+    match moving.len() {
         0 => "A higher `--degree`, or what `superint search` finds added to the generators, may \
              close the table."
             .to_string(),
@@ -405,13 +431,12 @@ fn outside_entries(
              brackets need not close among the others.",
             moving.join(", ")
         ),
-    };
-    entries.push(Entry::Text(format!(
-        "The brackets marked `*` are no polynomials of degree `≤ {}` in the generators; \
-         here they are. {advice}",
-        c.degree
-    )));
-    entries.push(Entry::Equations(Equations {
+    }
+}
+
+/// The brackets `outside` the table, each written out: `{A, B} = …`.
+fn outside_equations(c: &Closure, outside: &[(usize, usize)]) -> Entry {
+    Entry::Equations(Equations {
         caption: String::new(),
         lines: outside
             .iter()
@@ -423,6 +448,5 @@ fn outside_entries(
                 Equation::new(&lhs, bracket.clone())
             })
             .collect(),
-    }));
-    Ok(entries)
+    })
 }

@@ -802,7 +802,20 @@ fn parameter_notes(
     if r.parameters.is_empty() {
         return notes;
     }
-    let lift = if r.liftable && r.all_symbolic() {
+    let lift = how_lifted(r, for_every_value);
+    notes.push(Entry::Text(format!(
+        "Parameters fixed for the linear algebra: `{fixed}`; {lift}."
+    )));
+    if !(r.liftable && r.all_symbolic()) {
+        notes.push(Entry::Text(unlifted_note(r, vars)));
+    }
+    notes
+}
+
+/// Whether and how the basis found at the fixed parameters was lifted back to symbolic ones;
+/// `for_every_value` basis elements hold as found for every value when nothing is lifted.
+fn how_lifted(r: &SearchResult, for_every_value: usize) -> String {
+    if r.liftable && r.all_symbolic() {
         "then each basis element was lifted back to symbolic parameters by homogeneity and \
          proved symbolically"
             .to_string()
@@ -821,44 +834,45 @@ fn parameter_notes(
                 agreeing(k, "holds", "hold")
             ),
         }
-    };
-    notes.push(Entry::Text(format!(
-        "Parameters fixed for the linear algebra: `{fixed}`; {lift}."
-    )));
-    if !(r.liftable && r.all_symbolic()) {
-        let names: Vec<&str> = r
-            .parameters
-            .iter()
-            .map(|(v, _)| vars.variable(*v).name())
-            .collect();
-        // Distinct primes, none the value a parameter has now (`--fix a=2,b=3` was told
-        // to compare with `--fix a=2,b=3`).
-        let mut primes = [2, 3, 5, 7, 11, 13, 17, 19, 23, 29, 31, 37, 41, 43, 47]
-            .into_iter()
-            .cycle();
-        let others: Vec<String> = r
-            .parameters
-            .iter()
-            .zip(&names)
-            .map(|((_, now), n)| {
-                let p = primes
-                    .by_ref()
-                    .find(|&p| *now != Rational::from(p))
-                    .expect("the primes cycle");
-                format!("{n}={p}")
-            })
-            .collect();
-        notes.push(Entry::Text(format!(
-            "What is not lifted holds at these values, where the system may have more \
-             symmetry than in general (special values, equal or in a rational ratio, can add \
-             integrals): for every \
-             value, keep them symbolic (`--symbolic {}`), or compare with other values \
-             (`--fix {}`).",
-            names.join(","),
-            others.join(",")
-        )));
     }
-    notes
+}
+
+/// For what is not lifted: that it holds at the fixed values, and how to see it for every
+/// value (`--symbolic`) or at others (`--fix`).
+fn unlifted_note(r: &SearchResult, vars: &Vars) -> String {
+    let names: Vec<&str> = r
+        .parameters
+        .iter()
+        .map(|(v, _)| vars.variable(*v).name())
+        .collect();
+    format!(
+        "What is not lifted holds at these values, where the system may have more \
+         symmetry than in general (special values, equal or in a rational ratio, can add \
+         integrals): for every \
+         value, keep them symbolic (`--symbolic {}`), or compare with other values \
+         (`--fix {}`).",
+        names.join(","),
+        other_values(&r.parameters, &names).join(",")
+    )
+}
+
+/// `name=p` for each fixed parameter, at distinct primes, none the value a parameter has now
+/// (`--fix a=2,b=3` was told to compare with `--fix a=2,b=3`).
+fn other_values(parameters: &[(Var, Rational)], names: &[&str]) -> Vec<String> {
+    let mut primes = [2, 3, 5, 7, 11, 13, 17, 19, 23, 29, 31, 37, 41, 43, 47]
+        .into_iter()
+        .cycle();
+    parameters
+        .iter()
+        .zip(names)
+        .map(|((_, now), n)| {
+            let p = primes
+                .by_ref()
+                .find(|&p| *now != Rational::from(p))
+                .expect("the primes cycle");
+            format!("{n}={p}")
+        })
+        .collect()
 }
 
 /// How the new integrals were told from the generated ones: the known integrals, the rule by
@@ -869,6 +883,17 @@ fn new_integrals_text(r: &SearchResult, n: &NewIntegrals) -> String {
     } else {
         format!("`{}`", n.known.join(", "))
     };
+    format!(
+        "Known integrals in the space: {known}. {} ({} formed); {}",
+        generation_rule(r),
+        counted(n.products, "product"),
+        generated_span(r, n),
+    )
+}
+
+/// The variables an integral's degree is taken in: `in the coordinates and momenta
+/// together`, or with the denominators, the radicals, the Poisson variables.
+fn degree_variables(r: &SearchResult) -> String {
     // Without angles the grade is the degree.
     let canonical = [
         &r.variables.coordinates,
@@ -882,7 +907,7 @@ fn new_integrals_text(r: &SearchResult, n: &NewIntegrals) -> String {
     let denominator = r.vars.denominators().next();
     let radical = r.vars.radicals().next();
     let unicode = |v: Var| r.vars.variable(v).unicode();
-    let variables = match (
+    match (
         r.variables.poisson.is_empty(),
         canonical,
         denominator,
@@ -899,8 +924,13 @@ fn new_integrals_text(r: &SearchResult, n: &NewIntegrals) -> String {
         (true, _, None, None) => "in the coordinates and momenta together".into(),
         (false, false, _, _) => "in the Poisson variables".into(),
         (false, true, _, _) => "in the coordinates, momenta and Poisson variables together".into(),
-    };
-    let rule = if r.variables.angles.is_empty() {
+    }
+}
+
+/// When an integral counts as generated: by degree, or by grade with angles.
+fn generation_rule(r: &SearchResult) -> String {
+    let variables = degree_variables(r);
+    if r.variables.angles.is_empty() {
         format!(
             "An integral of degree `N` ({variables}) is generated when it is a sum of known \
              integrals, constants and products of integrals of degree `< N`"
@@ -912,8 +942,12 @@ fn new_integrals_text(r: &SearchResult, n: &NewIntegrals) -> String {
              that order) is generated when it is a sum of known integrals, constants and \
              products of integrals of grade below `(N, k)`"
         )
-    };
-    let span = if n.generated == r.basis.len() {
+    }
+}
+
+/// How much of the space the generated integrals span, and whether new ones follow.
+fn generated_span(r: &SearchResult, n: &NewIntegrals) -> String {
+    if n.generated == r.basis.len() {
         format!(
             "the generated ones span the whole space ({}).",
             counted(r.basis.len(), "dimension")
@@ -924,11 +958,7 @@ fn new_integrals_text(r: &SearchResult, n: &NewIntegrals) -> String {
             n.generated,
             counted(r.basis.len(), "dimension")
         )
-    };
-    format!(
-        "Known integrals in the space: {known}. {rule} ({} formed); {span}",
-        counted(n.products, "product"),
-    )
+    }
 }
 
 /// The shown integrals as the report writes them: over common denominators with denominator

@@ -114,16 +114,34 @@ fn check_shape(source: &Source, text: &str) -> Result<(), FileError> {
     let Ok(shape) = toml::from_str::<ShapeModel>(text) else {
         return Ok(());
     };
-    let wrong_at = |span: Range<usize>, value: &toml::Value, key: &str, wanted: &str| {
-        source.error(
-            ErrorKind::Schema,
-            span,
-            format!("{key} is {wanted}, not {}", toml_kind(value)),
-        )
-    };
-    let wrong = |v: &Spanned<toml::Value>, key: &str, wanted: &str| {
-        wrong_at(v.span(), v.get_ref(), key, wanted)
-    };
+    check_strings(source, &shape)?;
+    check_tables(source, &shape)?;
+    check_arrays_of_tables(source, &shape)?;
+    check_expects(source, text)
+}
+
+/// The error for `value` at `span`, the value of `key`, which should be `wanted`.
+fn wrong_at(
+    source: &Source,
+    span: Range<usize>,
+    value: &toml::Value,
+    key: &str,
+    wanted: &str,
+) -> FileError {
+    source.error(
+        ErrorKind::Schema,
+        span,
+        format!("{key} is {wanted}, not {}", toml_kind(value)),
+    )
+}
+
+/// The error for `v`, the value of `key`, which should be `wanted`.
+fn wrong(source: &Source, v: &Spanned<toml::Value>, key: &str, wanted: &str) -> FileError {
+    wrong_at(source, v.span(), v.get_ref(), key, wanted)
+}
+
+/// Refuses a text key (`name`, `source`, `description`, `hamiltonian`) that is no string.
+fn check_strings(source: &Source, shape: &ShapeModel) -> Result<(), FileError> {
     for (key, value) in [
         ("name", &shape.name),
         ("source", &shape.source),
@@ -131,19 +149,32 @@ fn check_shape(source: &Source, text: &str) -> Result<(), FileError> {
         ("hamiltonian", &shape.hamiltonian),
     ] {
         if let Some(v) = value.as_ref().filter(|v| !v.get_ref().is_str()) {
-            return Err(wrong(v, key, "a string in quotes"));
+            return Err(wrong(source, v, key, "a string in quotes"));
         }
     }
+    Ok(())
+}
+
+/// Refuses a `[phase_space]`, `[limits]` or `[poisson]` that is no table.
+fn check_tables(source: &Source, shape: &ShapeModel) -> Result<(), FileError> {
     for (key, value) in [
         ("[phase_space]", &shape.phase_space),
         ("[limits]", &shape.limits),
         ("[poisson]", &shape.poisson),
     ] {
         if let Some(v) = value.as_ref().filter(|v| !v.get_ref().is_table()) {
-            return Err(wrong(v, key, "a table, written with one pair of brackets")
-                .with_hint(format!("write {key} on a line of its own, then its keys")));
+            return Err(
+                wrong(source, v, key, "a table, written with one pair of brackets")
+                    .with_hint(format!("write {key} on a line of its own, then its keys")),
+            );
         }
     }
+    Ok(())
+}
+
+/// Refuses a `[[function]]`, `[[family]]` or `[[claim]]` that is no array, or holds an item
+/// that is no table.
+fn check_arrays_of_tables(source: &Source, shape: &ShapeModel) -> Result<(), FileError> {
     for (key, value) in [
         ("[[function]]", &shape.function),
         ("[[family]]", &shape.family),
@@ -153,6 +184,7 @@ fn check_shape(source: &Source, text: &str) -> Result<(), FileError> {
         let Some(list) = value else { continue };
         let Some(items) = list.get_ref().as_array() else {
             return Err(wrong(
+                source,
                 list,
                 key,
                 "an array of tables, each written with two pairs of brackets",
@@ -161,14 +193,20 @@ fn check_shape(source: &Source, text: &str) -> Result<(), FileError> {
         };
         if let Some(item) = items.iter().find(|v| !v.is_table()) {
             return Err(
-                wrong_at(list.span(), item, &format!("each {key}"), "a table").with_hint(hint),
+                wrong_at(source, list.span(), item, &format!("each {key}"), "a table")
+                    .with_hint(hint),
             );
         }
     }
+    Ok(())
+}
+
+/// Refuses a claim's `expect` that is no string.
+fn check_expects(source: &Source, text: &str) -> Result<(), FileError> {
     if let Ok(claims) = toml::from_str::<ExpectShape>(text) {
         let expects = claims.claim.iter().filter_map(|c| c.expect.as_ref());
         if let Some(v) = expects.into_iter().find(|v| !v.get_ref().is_str()) {
-            return Err(wrong(v, "expect", "\"proved\" or \"refuted\""));
+            return Err(wrong(source, v, "expect", "\"proved\" or \"refuted\""));
         }
     }
     Ok(())

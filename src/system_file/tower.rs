@@ -384,70 +384,143 @@ pub fn family_tower_report_with_progress(
     when: Option<&Condition>,
     progress: &mut dyn FnMut(usize, usize),
 ) -> Result<Report, FileError> {
+    refuse_atoms(file)?;
+    let start = Instant::now();
+    refuse_phase_condition(file, when)?;
+    let k = tower_family(file, family)?;
+    let shown = ShownFamily::of(file, k)?;
+    let tower_start = Instant::now();
+    let failures = tower_failures(file, k, max, when, progress)?;
+    let tower = shown.tower(file, max, when, failures, tower_start);
+    let [m, n] = &shown.indices;
+    let proof = file.family_proof(
+        k,
+        &format!("{}-all", shown.name),
+        &format!("{} for all {m}, {n} ≥ 0", shown.identity()),
+        when,
+    )?;
+    let entries = vec![shown.introduction(file), Entry::Tower(tower), proof];
+    Ok(shown.report(file, max, when, entries, start))
+}
+
+/// Refuses a system with denominator atoms or radicals, which a family's tower does not take.
+fn refuse_atoms(file: &LoadedSystem) -> Result<(), FileError> {
     file.system
         .space()
         .refuse_denominators("a family's tower")
         .and_then(|()| file.system.space().refuse_radicals("a family's tower"))
-        .map_err(|e| file.computation_error(&e))?;
-    let start = Instant::now();
-    refuse_phase_condition(file, when)?;
-    let k = tower_family(file, family)?;
-    let f = &file.families[k];
-    // Fails with a located message when the family has no eigenvalue.
-    file.eigenvalue_at(k, 1, 1)?;
-    let scope = Scope::of_family(file, k);
-    let value = file.pretty(&scope.tree(&f.source, &f.value)?);
-    let eigen_tree = scope.tree(&f.source, f.eigenvalue.as_ref().expect("checked"))?;
-    let eigen = file.pretty_factor(&eigen_tree);
-    let [m, n] = &f.indices;
-    let kmn = format!("{}_{{{m},{n}}}", f.display);
-    let tower_start = Instant::now();
-    let failures = tower_failures(file, k, max, when, progress)?;
-    let note = (!failures.is_empty()).then(|| format!("fails for ({m}, {n}) in {failures:?}"));
-    let tower_id = format!("{}-tower", f.name);
-    let tower = TowerResult {
-        system: file.name.clone(),
-        the_system: file.the_name(),
-        ladder: format!("{kmn} = {value}"),
-        max,
-        checked: (max * max) as usize,
-        claim: ClaimResult::derived(
-            &tower_id,
-            &format!("{{{kmn}, H}} = {eigen} {kmn} for 1 ≤ {m}, {n} ≤ {max}"),
-            failures.is_empty(),
-            note,
-        )
-        .at(when.map(Condition::forms))
-        .timed(tower_start.elapsed().as_secs_f64()),
-        failures,
-    };
-    let proof = file.family_proof(
-        k,
-        &format!("{}-all", f.name),
-        &format!("{{{kmn}, H}} = {eigen} {kmn} for all {m}, {n} ≥ 0"),
-        when,
-    )?;
-    let at_values = when.map_or_else(String::new, |c| format!(" at `{}`", c.text));
-    let entries = vec![
+        .map_err(|e| file.computation_error(&e))
+}
+
+/// A family as the tower's report writes it, in the file's names: `K_{m,n}`, its value and
+/// its eigenvalue.
+struct ShownFamily {
+    /// The family's name, which the claims' ids start with.
+    name: String,
+    /// The names of its indices, `m` and `n`.
+    indices: [String; 2],
+    /// `K_{m,n}`, in the family's display name.
+    kmn: String,
+    /// Its value.
+    value: String,
+    /// Its eigenvalue, as a factor (parenthesized when a sum).
+    eigen: String,
+}
+
+impl ShownFamily {
+    /// Family `k` of `file`, as the report writes it.
+    fn of(file: &LoadedSystem, k: usize) -> Result<Self, FileError> {
+        let f = &file.families[k];
+        // Fails with a located message when the family has no eigenvalue.
+        file.eigenvalue_at(k, 1, 1)?;
+        let scope = Scope::of_family(file, k);
+        let value = file.pretty(&scope.tree(&f.source, &f.value)?);
+        let eigen_tree = scope.tree(&f.source, f.eigenvalue.as_ref().expect("checked"))?;
+        let [m, n] = &f.indices;
+        Ok(ShownFamily {
+            name: f.name.clone(),
+            indices: f.indices.clone(),
+            kmn: format!("{}_{{{m},{n}}}", f.display),
+            value,
+            eigen: file.pretty_factor(&eigen_tree),
+        })
+    }
+
+    /// The identity the tower checks: `{K_{m,n}, H} = λ K_{m,n}`.
+    fn identity(&self) -> String {
+        let (kmn, eigen) = (&self.kmn, &self.eigen);
+        format!("{{{kmn}, H}} = {eigen} {kmn}")
+    }
+
+    /// The report's first line: the family, its value, and the identity.
+    fn introduction(&self, file: &LoadedSystem) -> Entry {
         Entry::Text(format!(
-            "The family `{kmn} = {value}` of {}, with `{{{kmn}, H}} = {eigen} {kmn}`.",
-            file.the_name()
-        )),
-        Entry::Tower(tower),
-        proof,
-    ];
-    Ok(Report {
-        title: format!("The tower of `{kmn}`, `1 ≤ {m}, {n} ≤ {max}`{at_values}"),
-        subtitle: file.source.origin.clone(),
-        sections: vec![Section {
-            number: 1,
-            title: format!("`{{{kmn}, H}}` for {}", file.the_name()),
-            file: Some(file.source.origin.clone()),
-            entries,
-        }],
-        summary: SummaryKind::Check { files: 1 },
-        seconds: start.elapsed().as_secs_f64(),
-    })
+            "The family `{} = {}` of {}, with `{}`.",
+            self.kmn,
+            self.value,
+            file.the_name(),
+            self.identity()
+        ))
+    }
+
+    /// The report of the tower of `1 ≤ m, n ≤ max` (at `when`'s values), with its `entries`,
+    /// timed from `start`.
+    fn report(
+        &self,
+        file: &LoadedSystem,
+        max: i64,
+        when: Option<&Condition>,
+        entries: Vec<Entry>,
+        start: Instant,
+    ) -> Report {
+        let [m, n] = &self.indices;
+        let at_values = when.map_or_else(String::new, |c| format!(" at `{}`", c.text));
+        Report {
+            title: format!(
+                "The tower of `{}`, `1 ≤ {m}, {n} ≤ {max}`{at_values}",
+                self.kmn
+            ),
+            subtitle: file.source.origin.clone(),
+            sections: vec![Section {
+                number: 1,
+                title: format!("`{{{}, H}}` for {}", self.kmn, file.the_name()),
+                file: Some(file.source.origin.clone()),
+                entries,
+            }],
+            summary: SummaryKind::Check { files: 1 },
+            seconds: start.elapsed().as_secs_f64(),
+        }
+    }
+
+    /// The tower's result, its claim settled by the `failures` among `1 ≤ m, n ≤ max` and
+    /// timed from `tower_start`.
+    fn tower(
+        &self,
+        file: &LoadedSystem,
+        max: i64,
+        when: Option<&Condition>,
+        failures: Vec<(i64, i64)>,
+        tower_start: Instant,
+    ) -> TowerResult {
+        let [m, n] = &self.indices;
+        let note = (!failures.is_empty()).then(|| format!("fails for ({m}, {n}) in {failures:?}"));
+        TowerResult {
+            system: file.name.clone(),
+            the_system: file.the_name(),
+            ladder: format!("{} = {}", self.kmn, self.value),
+            max,
+            checked: (max * max) as usize,
+            claim: ClaimResult::derived(
+                &format!("{}-tower", self.name),
+                &format!("{} for 1 ≤ {m}, {n} ≤ {max}", self.identity()),
+                failures.is_empty(),
+                note,
+            )
+            .at(when.map(Condition::forms))
+            .timed(tower_start.elapsed().as_secs_f64()),
+            failures,
+        }
+    }
 }
 
 /// Refuses a tower's condition that sets a variable of phase space: the tower's brackets are

@@ -33,6 +33,20 @@ pub(super) fn independent_as_functions(
     parameters: &[(Var, Rational)],
     mut phases: Vec<Unknown>,
 ) -> Result<Vec<Unknown>, EngineError> {
+    check_denominators_free_of_angles(vars, atoms)?;
+    let part = ChoicePart::new(vars, atoms, radicals, parameters);
+    let parts: Vec<Unknown> = phases.iter().map(|u| part.of(u)).collect();
+    let kept = independent_parts(vars, atoms, radicals, parameters, parts)?;
+    phases.retain(|u| kept.contains(&part.of(u).phase));
+    Ok(phases)
+}
+
+/// Refuses a denominator that holds an angle: the monomials independent without angles must
+/// stay so times any `cos k·θ` or `sin k·θ`.
+fn check_denominators_free_of_angles(
+    vars: &Vars,
+    atoms: &[(Var, Expr)],
+) -> Result<(), EngineError> {
     if let Some((v, _)) = atoms
         .iter()
         .find(|(_, d)| vars.angles().any(|a| d.contains(a)))
@@ -42,57 +56,105 @@ pub(super) fn independent_as_functions(
             vars.variable(*v).unicode()
         )));
     }
-    let kind = |v: Var| vars.variable(v).kind();
-    let in_coordinates = atoms.iter().chain(radicals).all(|(_, d)| {
-        vars.vars()
-            .filter(|&v| d.contains(v))
-            .all(|v| matches!(kind(v), VarKind::Coordinate | VarKind::Parameter))
-    });
-    // When a denominator or radicand holds a parameter kept symbolic, the parameters are
-    // compared with the coordinates (`a² = r² − x² + 2ax − y²` for `r = √((x − a)² + y²)`),
-    // all of them, since their degree is bounded together (`k·a³/r` may be past it where
-    // `k·a x²/r` is not); otherwise they only multiply, like the momenta.
-    let free = free_parameters(vars, atoms, radicals);
-    let holds_parameters = vars.vars().any(|v| {
-        kind(v) == VarKind::Parameter && !free.contains(&v) && parameters.iter().all(|p| p.0 != v)
-    });
-    let held = |v: Var| holds_parameters && kind(v) == VarKind::Parameter;
-    // The part of a monomial that the choice is made on: without the variables listed here.
-    let apart: Vec<usize> = match in_coordinates {
-        true => vars
+    Ok(())
+}
+
+/// The part of a monomial that the choice is made on: when every denominator and radicand
+/// is a polynomial in the coordinates and parameters, the monomial without the variables
+/// that only multiply (all but the coordinates, the denominators and the radicals, and the
+/// parameters too unless a denominator or radicand holds a symbolic one); otherwise the
+/// whole monomial.
+struct ChoicePart {
+    /// Whether every denominator and radicand is a polynomial in the coordinates and
+    /// parameters.
+    in_coordinates: bool,
+    /// The indices of the variables left out of the part.
+    apart: Vec<usize>,
+    /// The indices of the symbolic parameters compared with the coordinates, whose degree is
+    /// the part's parameters degree.
+    held: Vec<usize>,
+}
+
+impl ChoicePart {
+    /// The part for the monomials over `vars`, with these denominator atoms and radicals and
+    /// the parameters fixed at `parameters`.
+    fn new(
+        vars: &Vars,
+        atoms: &[(Var, Expr)],
+        radicals: &[(Var, Expr)],
+        parameters: &[(Var, Rational)],
+    ) -> Self {
+        let kind = |v: Var| vars.variable(v).kind();
+        let in_coordinates = atoms.iter().chain(radicals).all(|(_, d)| {
+            vars.vars()
+                .filter(|&v| d.contains(v))
+                .all(|v| matches!(kind(v), VarKind::Coordinate | VarKind::Parameter))
+        });
+        // When a denominator or radicand holds a parameter kept symbolic, the parameters are
+        // compared with the coordinates (`a² = r² − x² + 2ax − y²` for `r = √((x − a)² + y²)`),
+        // all of them, since their degree is bounded together (`k·a³/r` may be past it where
+        // `k·a x²/r` is not); otherwise they only multiply, like the momenta.
+        let free = free_parameters(vars, atoms, radicals);
+        let holds_parameters = vars.vars().any(|v| {
+            kind(v) == VarKind::Parameter
+                && !free.contains(&v)
+                && parameters.iter().all(|p| p.0 != v)
+        });
+        let held = |v: Var| holds_parameters && kind(v) == VarKind::Parameter;
+        let apart: Vec<usize> = match in_coordinates {
+            true => vars
+                .vars()
+                .filter(|&v| {
+                    !matches!(
+                        kind(v),
+                        VarKind::Coordinate | VarKind::Denominator | VarKind::Radical
+                    ) && !held(v)
+                })
+                .map(|v| v.index())
+                .collect(),
+            false => Vec::new(),
+        };
+        let held: Vec<usize> = vars
             .vars()
-            .filter(|&v| {
-                !matches!(
-                    kind(v),
-                    VarKind::Coordinate | VarKind::Denominator | VarKind::Radical
-                ) && !held(v)
-            })
+            .filter(|&v| held(v))
             .map(|v| v.index())
-            .collect(),
-        false => Vec::new(),
-    };
-    let held: Vec<usize> = vars
-        .vars()
-        .filter(|&v| held(v))
-        .map(|v| v.index())
-        .collect();
-    let part = |u: &Unknown| -> Unknown {
-        if !in_coordinates {
+            .collect();
+        ChoicePart {
+            in_coordinates,
+            apart,
+            held,
+        }
+    }
+
+    /// The part of `u` the choice is made on.
+    fn of(&self, u: &Unknown) -> Unknown {
+        if !self.in_coordinates {
             return u.clone();
         }
         let mut phase = u.phase.clone();
-        for &i in &apart {
+        for &i in &self.apart {
             phase[i] = 0;
         }
         Unknown {
-            parameters_degree: held.iter().map(|&i| phase[i]).sum(),
+            parameters_degree: self.held.iter().map(|&i| phase[i]).sum(),
             phase,
             momenta_degree: 0,
             poisson_degree: 0,
             ..u.clone()
         }
-    };
-    let mut parts: Vec<Unknown> = phases.iter().map(part).collect();
+    }
+}
+
+/// The monomials of `parts` (without angles) independent as functions of the simpler ones
+/// before them, in the order of [`Unknown::degrees`]: decided exactly on their images under
+/// one [`Clearing`].
+fn independent_parts(
+    vars: &Vars,
+    atoms: &[(Var, Expr)],
+    radicals: &[(Var, Expr)],
+    parameters: &[(Var, Rational)],
+    mut parts: Vec<Unknown>,
+) -> Result<FxHashSet<Vec<i64>>, EngineError> {
     // Without angles, in the order of the unknowns.
     parts.sort_by(|a, b| {
         a.degrees()
@@ -108,13 +170,11 @@ pub(super) fn independent_as_functions(
         .expect("the space has denominator atoms or radicals");
     let (_, nrows, columns) = real_columns(&clearing.apply_all(&monomials)?, &[], vars);
     let mut span = Echelon::<Rational>::new(nrows);
-    let kept: FxHashSet<Vec<i64>> = parts
+    Ok(parts
         .into_iter()
         .zip(&columns)
         .enumerate()
         .filter(|(i, (_, col))| span.extend(*i, col))
         .map(|(_, (u, _))| u.phase)
-        .collect();
-    phases.retain(|u| kept.contains(&part(u).phase));
-    Ok(phases)
+        .collect())
 }
