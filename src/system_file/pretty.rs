@@ -116,7 +116,18 @@ impl LoadedSystem {
     fn print(&self, tree: &Tree, spaced: bool) -> Printed {
         match &tree.kind {
             ExprKind::Integer(n) => Printed::atom(n.to_string()),
-            ExprKind::Name(n) => self.print_name(n),
+            ExprKind::Name(n) => match self.run_together(tree, n, None) {
+                Some(product) => self.print(&product, spaced),
+                None => self.print_name(n),
+            },
+            ExprKind::Pow(a, b)
+                if let (ExprKind::Name(n), false) = (&a.kind, a.in_parentheses()) =>
+            {
+                match self.run_together(tree, n, Some(b)) {
+                    Some(product) => self.print(&product, spaced),
+                    None => self.print_power(a, b, spaced),
+                }
+            }
             ExprKind::Neg(a) => self.print_neg(a, spaced),
             ExprKind::Add(a, b) => self.print_sum(a, "+", b, spaced),
             ExprKind::Sub(a, b) => self.print_sum(a, "−", b, spaced),
@@ -126,6 +137,30 @@ impl LoadedSystem {
             ExprKind::Call(f, _, args) => self.print_call(f, args, spaced),
             ExprKind::Bracket(a, b) => self.print_bracket(a, b, spaced),
         }
+    }
+
+    /// A name `n` that is not declared, at `tree`, as the product of the declared names it
+    /// reads as, run together (`Lx` is `L·x`, printed `L x` as the product is, so that a
+    /// misspelt `L_x` shows how it was read), with the `power` on it taken by the last one
+    /// (`Mω²` is `M·ω²`); `None` for a declared name.
+    fn run_together(&self, tree: &Tree, n: &str, power: Option<&Tree>) -> Option<Tree> {
+        if self.is_declared_name(n) {
+            return None;
+        }
+        let pieces = trigpoly::split_names(n, &|s: &str| self.is_declared_name(s))?;
+        let at = |kind: ExprKind| Tree::new(kind, tree.span);
+        let count = pieces.len();
+        pieces
+            .into_iter()
+            .enumerate()
+            .map(|(k, piece)| match power {
+                Some(e) if k + 1 == count => at(ExprKind::Pow(
+                    Box::new(at(ExprKind::Name(piece))),
+                    Box::new(e.clone()),
+                )),
+                _ => at(ExprKind::Name(piece)),
+            })
+            .reduce(|a, b| at(ExprKind::Mul(Box::new(a), Box::new(b))))
     }
 
     /// A name: a function's is a word in a product.

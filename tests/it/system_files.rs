@@ -1800,7 +1800,10 @@ fn tower_decides_the_eigenvalue_by_its_values() {
     let words = crate::normalize(&out);
     assert!(words.contains("they differ at (m, n) = (4, 0)"), "{out}");
     // The verdict names the step that fails (it said "a base fact or the derivation check").
-    assert!(out.contains("[W-all REFUTED]\n      step 3 fails\n"), "{out}");
+    assert!(
+        out.contains("[W-all REFUTED]\n      step 3 fails\n"),
+        "{out}"
+    );
     let out = tower("i*omega*(m - n)*1^n", 0);
     assert!(out.contains("No proof for all m, n"), "{out}");
     assert!(!out.contains("W-all"), "{out}");
@@ -2856,4 +2859,30 @@ fn a_residual_is_written_in_the_functions_where_the_parameters_at_one_are_specia
     };
     assert_eq!(written("top.toml"), ["C^2", "H + C"]);
     assert_eq!(written("split.toml"), ["Hx^2"]);
+}
+
+/// Names run together that are not declared read as the product of the declared names they
+/// split into, and the claim's echo shows that product: `{Lx, H}`, a misspelt `L_x` beside a
+/// declared `L`, echoes as `{L x, H}` (it echoed `{Lx, H}`, so that the reading could not be
+/// seen), while variables run together stay together, a power on the last of them (`Mω²x`) or,
+/// in parentheses, on all (`(Mω)²`).
+#[test]
+fn names_run_together_echo_as_the_product_they_read_as() {
+    let dir = scratch("run-together");
+    std::fs::write(
+        dir.join("osc.toml"),
+        "hamiltonian = \"(p_x^2 + p_y^2)/(2*M) + M*omega^2*(x^2 + y^2)/2\"\n\
+         [phase_space]\ncoordinates = [\"x\", \"y\"]\nparameters = [\"M\", \"omega\"]\n\
+         [[function]]\nname = \"L\"\nvalue = \"x*p_y - y*p_x\"\n\
+         [[claim]]\nclaim = \"{Lx, H} = 1\"\nexpect = \"refuted\"\n\
+         [[claim]]\nclaim = \"{p_x, H} = -Momega^2x\"\n\
+         [[claim]]\nclaim = \"(Momega)^2 = M^2*omega^2\"\n",
+    )
+    .expect("write the file");
+    let o = superint_in(&dir, &["check", "osc.toml", "--no-timings"]);
+    let out = text(&o.stdout);
+    assert_eq!(o.status.code(), Some(0), "{out}");
+    assert!(out.contains("  {L x, H} = 1 "), "{out}");
+    assert!(out.contains("  {p_x, H} = −Mω²x "), "{out}");
+    assert!(out.contains("  (Mω)² = M²ω² "), "{out}");
 }

@@ -281,7 +281,7 @@ impl<C: Coefficient> Lower<'_, C> {
     /// Splits a name that is not declared into declared names (`Mω` → `M`, `ω`), longest
     /// prefix first; `None` if no split exists.
     fn split_name(&self, name: &str) -> Option<Vec<String>> {
-        split_into(name, &|s: &str| self.is_declared(s))
+        split_names(name, &|s: &str| self.is_declared(s))
     }
 
     /// Splits a name in an angle's argument into `i` and angles (`iθ`, as the echo writes
@@ -293,7 +293,7 @@ impl<C: Coefficient> Lower<'_, C> {
                 .lookup(s)
                 .filter(|&v| self.vars.variable(v).kind() == VarKind::Angle)
         };
-        let pieces = split_into(name, &|s: &str| s == "i" || angle(s).is_some())?;
+        let pieces = split_names(name, &|s: &str| s == "i" || angle(s).is_some())?;
         let mut coefficient = GaussianRational::from(1);
         let mut found = None;
         for piece in &pieces {
@@ -754,9 +754,10 @@ pub const FUNCTIONS: [&str; 6] = ["cos", "sin", "exp", "conj", "re", "im"];
 const LONGEST_PIECE: usize = 256;
 
 /// Splits `name` into names that `known` takes (`Mω` → `M`, `ω`), longest prefix first, at
-/// least two of them; `None` if no split exists. Each piece is at most [`LONGEST_PIECE`]
+/// least two of them; `None` if no split exists. This is how an expression reads names run
+/// together that are not declared (`Lx` is `L·x`). Each piece is at most 256
 /// bytes; whether the rest from each place splits is decided once, from the end.
-fn split_into(name: &str, known: &dyn Fn(&str) -> bool) -> Option<Vec<String>> {
+pub fn split_names(name: &str, known: &dyn Fn(&str) -> bool) -> Option<Vec<String>> {
     if name.chars().count() < 2 {
         return None;
     }
