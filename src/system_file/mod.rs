@@ -48,6 +48,7 @@ mod names;
 mod plot;
 mod pretty;
 mod reports;
+mod roots_of_unity;
 mod scope;
 mod text;
 mod tower;

@@ -8,6 +8,7 @@ use trigpoly::{Expr, GaussianRational, Rational, Span, Var, VarKind};
 
 use super::claims::{parse_assignments, Assignment, AssignmentForm};
 use super::error::{ErrorKind, FileError};
+use super::roots_of_unity::RootsOfUnity;
 use super::text::{Source, Text};
 use super::{Argument, LoadedSystem, COMMAND_LINE};
 
@@ -307,9 +308,11 @@ impl LoadedSystem {
     }
 
     /// Why `e` has no value at the starting point `start`, if it has none: it divides by a
-    /// declared denominator that is zero there (decided exactly where every variable of the
-    /// denominator starts at an exact number; at a multiple of π the flow says so when it
-    /// leaves the finite numbers).
+    /// declared denominator that is zero there, decided exactly where every variable of the
+    /// denominator starts at an exact number: a rational for a coordinate or momentum, and for
+    /// an angle 0 or a rational multiple of π (`φ = π/6`, where `cos 3φ` is 0), whose `e^{iφ}`
+    /// is a root of unity. An angle at another number (`φ = 1`) has no exact value, and its
+    /// denominators are left to the integration.
     fn divides_by_zero_at(
         &self,
         what: &str,
@@ -318,17 +321,32 @@ impl LoadedSystem {
         values: &Values,
     ) -> Option<String> {
         let space = self.system.space();
+        let vars = self.system.vars();
         let mut point = values.clone();
+        // Each angle at `qπ` (q mod 2): `e^{iφ} = e^{2πi·q/2}`.
+        let mut turns: Vec<(Var, Rational)> = Vec::new();
         for (v, value) in start {
-            if let StartValue::Exact(q) = value {
-                let q = GaussianRational::from(q.clone());
-                point.push((*v, Expr::constant(self.system.vars(), q)));
+            match (value, vars.variable(*v).kind() == VarKind::Angle) {
+                (StartValue::Exact(q), false) => {
+                    let q = GaussianRational::from(q.clone());
+                    point.push((*v, Expr::constant(vars, q)));
+                }
+                (StartValue::Exact(q), true) if q.is_zero() => turns.push((*v, Rational::zero())),
+                (StartValue::PiTimes(q), true) => turns.push((*v, q / &Rational::from(2))),
+                _ => {}
             }
         }
+        let on_circle = RootsOfUnity::new(vars, &turns);
         let at = |d: &Expr| d.subst_many(&point).ok().and_then(|at| at.as_constant());
-        if let Some((v, _)) = space.denominator_atoms().iter().find(|(v, d)| {
-            e.low_degree(*v).is_some_and(|low| low < 0) && at(d).is_some_and(|c| c.is_zero())
-        }) {
+        let vanishes = |d: &Expr| match &on_circle {
+            None => at(d).map(|c| c.is_zero()),
+            Some(roots) => roots.vanishes(&d.subst_many(&point).ok()?),
+        };
+        if let Some((v, _)) = space
+            .denominator_atoms()
+            .iter()
+            .find(|(v, d)| e.low_degree(*v).is_some_and(|low| low < 0) && vanishes(d) == Some(true))
+        {
             return Some(format!(
                 "{what} is not defined at the starting point: it divides by {}, which is 0 \
                  there (--from)",

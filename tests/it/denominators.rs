@@ -442,6 +442,56 @@ fn denominators_plot_keeps_the_calogero_integrals() {
     );
 }
 
+/// A start on a singular line of a denominator in an angle is refused, decided exactly where the
+/// angle is 0 or a rational multiple of π (`e^{iφ}` a root of unity): the TTW system's
+/// `sin 3φ` at `φ = 0` and `π/3`, `cos 3φ` at `π/6` and `7π/6` (these integrated into numbers
+/// of 10³² before, with exit 0); a start at `φ = 1`, which has no exact value, is drawn (it was
+/// refused: 1 stood for `e^{iφ}`, that is `φ = 0`).
+#[test]
+fn a_start_where_a_denominator_in_an_angle_is_zero_is_refused() {
+    let f = scratch_text(
+        "denominators-angle-start",
+        "ttw.toml",
+        "hamiltonian = \"p_r^2 + p_phi^2/r^2 + r^2 + 1/(r^2*cos(3*phi)^2) + 1/(r^2*sin(3*phi)^2)\"\n\
+         [phase_space]\ncoordinates = [\"r\"]\nangles = [\"phi\"]\n\
+         denominators = [\"cos(3*phi)\", \"sin(3*phi)\"]\n",
+    );
+    let svg = std::env::temp_dir().join(format!("superint-ttw-{}.svg", std::process::id()));
+    let plot = |phi: &str| {
+        superint(&[
+            "plot",
+            f.to_str().unwrap(),
+            "H",
+            "--from",
+            &format!("r = 1, phi = {phi}, p_r = 0, p_phi = 1"),
+            "--time",
+            "1/10",
+            "-o",
+            svg.to_str().unwrap(),
+        ])
+    };
+    let (sin, cos) = ("(−sin φ + 4 cos²φ sin φ)", "(−3 cos φ + 4 cos³φ)");
+    for (phi, zero) in [("0", sin), ("pi/3", sin), ("pi/6", cos), ("7*pi/6", cos)] {
+        let o = plot(phi);
+        let err = String::from_utf8(o.stderr).unwrap();
+        assert_eq!(o.status.code(), Some(2), "{phi}: {err}");
+        let refusal = format!(
+            "H is not defined at the starting point: it divides by {zero}, which is 0 there"
+        );
+        assert!(err.contains(&refusal), "{phi}: {err}");
+    }
+    for phi in ["1", "pi/4"] {
+        let o = plot(phi);
+        assert_eq!(
+            o.status.code(),
+            Some(0),
+            "{phi}: {}",
+            String::from_utf8_lossy(&o.stderr)
+        );
+    }
+    let _ = std::fs::remove_file(&svg);
+}
+
 /// A denominator in the angles is refused by the search, which keeps its monomials apart from
 /// `cos k·θ` and `sin k·θ`: exit 2, with the denominator named.
 #[test]
