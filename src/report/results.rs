@@ -564,7 +564,13 @@ mod tests {
         let failed = |holds: &[bool], leibniz| ProofResult::failed_steps(&facts(holds), leibniz);
         assert_eq!(failed(&[true, true, true], true), None);
         assert_eq!(failed(&[true, true, false], true).unwrap(), "step 3 fails");
-        assert_eq!(failed(&[false, true, true], false).unwrap(), "steps 1 and 4 fail");
-        assert_eq!(failed(&[false, false, true], false).unwrap(), "steps 1, 2 and 4 fail");
+        assert_eq!(
+            failed(&[false, true, true], false).unwrap(),
+            "steps 1 and 4 fail"
+        );
+        assert_eq!(
+            failed(&[false, false, true], false).unwrap(),
+            "steps 1, 2 and 4 fail"
+        );
     }
 }
