@@ -395,10 +395,22 @@ pub(crate) fn parse_condition(
 ) -> Result<Condition, FileError> {
     let usage = "a condition reads `variable = value`, such as \"p_theta = 2*I*omega/3\"";
     let vars = file.system.vars();
+    let atoms = file.system.space().denominator_atoms();
     let admit = |v: trigpoly::Var| {
-        (vars.variable(v).kind() == VarKind::Angle).then(|| {
-            "a condition cannot fix an angle: functions depend on it through cos, sin, exp".into()
-        })
+        if vars.variable(v).kind() == VarKind::Angle {
+            return Some(
+                "a condition cannot fix an angle: functions depend on it through cos, sin, exp"
+                    .into(),
+            );
+        }
+        // The atom `1/(x − y)` would keep standing for `1/(x − y)`, not its value there.
+        let (atom, _) = atoms.iter().find(|(_, d)| d.contains(v))?;
+        Some(format!(
+            "the condition sets {}, which the denominator {} involves: a condition on a \
+             denominator's variables is not supported",
+            vars.variable(v).unicode(),
+            vars.variable(*atom).unicode()
+        ))
     };
     let form = AssignmentForm {
         what: "a condition",

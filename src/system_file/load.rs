@@ -24,7 +24,7 @@ use super::{Family, LimitsOverride, LoadedSystem};
 
 /// The largest degree limit a file or the command line may set (what a 16-bit exponent field
 /// holds; the packing widens its fields as the limit asks).
-const MAX_DEGREE_CEILING: u32 = 32_767;
+pub(super) const MAX_DEGREE_CEILING: u32 = 32_767;
 
 /// Reads and loads a system file. Every problem is a [`FileError`] naming the file, line and
 /// column.
@@ -289,11 +289,11 @@ fn date_at(text: &str, span: &Range<usize>) -> Option<(String, bool)> {
 }
 
 /// What serde expected, in the words of a system file's messages: `a string` is `a string in
-/// quotes`, an unsigned integer `a whole number`, a sequence `an array`.
+/// quotes`, an integer `a whole number`, a sequence `an array`.
 fn in_words(expected: &str) -> &str {
     match expected {
         "a string" => "a string in quotes",
-        "u8" | "u16" | "u32" | "u64" | "usize" => "a whole number",
+        "u8" | "u16" | "u32" | "u64" | "usize" | "i64" => "a whole number",
         "a sequence" => "an array",
         other => other,
     }
@@ -975,7 +975,7 @@ impl<'a> Builder<'a> {
         let degree = file.and_then(|l| l.max_degree.as_ref());
         let work = file.and_then(|l| l.max_term_products.as_ref());
         for (name, given) in [("max_terms", terms), ("max_term_products", work)] {
-            if let Some(t) = given.filter(|t| *t.get_ref() == 0) {
+            if let Some(t) = given.filter(|t| *t.get_ref() < 1) {
                 return Err(self.error(
                     ErrorKind::Schema,
                     t.span(),
@@ -983,22 +983,26 @@ impl<'a> Builder<'a> {
                 ));
             }
         }
-        if let Some(d) = degree {
-            if *d.get_ref() == 0 || *d.get_ref() > MAX_DEGREE_CEILING {
-                return Err(self.error(
-                    ErrorKind::Schema,
-                    d.span(),
-                    format!("max_degree must be between 1 and {MAX_DEGREE_CEILING}"),
-                ));
-            }
+        let ceiling = i64::from(MAX_DEGREE_CEILING);
+        if let Some(d) = degree.filter(|d| !(1..=ceiling).contains(d.get_ref())) {
+            return Err(self.error(
+                ErrorKind::Schema,
+                d.span(),
+                format!("max_degree must be between 1 and {MAX_DEGREE_CEILING}"),
+            ));
         }
+        // Each is positive now, and max_degree at most the ceiling.
+        let positive = |t: &Spanned<i64>| u64::try_from(*t.get_ref()).unwrap_or(u64::MAX);
         let given = LimitsOverride {
             max_terms: self
                 .limits
                 .max_terms
-                .or(terms.map(|t| usize::try_from(*t.get_ref()).unwrap_or(usize::MAX))),
-            max_degree: self.limits.max_degree.or(degree.map(|d| *d.get_ref())),
-            max_term_products: self.limits.max_term_products.or(work.map(|w| *w.get_ref())),
+                .or(terms.map(|t| usize::try_from(positive(t)).unwrap_or(usize::MAX))),
+            max_degree: self
+                .limits
+                .max_degree
+                .or(degree.map(|d| positive(d) as u32)),
+            max_term_products: self.limits.max_term_products.or(work.map(positive)),
         };
         let limits = given.or_defaults();
         Ok(Limits {

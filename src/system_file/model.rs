@@ -112,9 +112,10 @@ impl<'de> Deserialize<'de> for StringTable {
 #[derive(Debug, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub(crate) struct LimitsModel {
-    pub max_terms: Option<Spanned<u64>>,
-    pub max_degree: Option<Spanned<u32>>,
-    pub max_term_products: Option<Spanned<u64>>,
+    // Signed, as TOML's integers are, so that a negative limit gets the loader's message.
+    pub max_terms: Option<Spanned<i64>>,
+    pub max_degree: Option<Spanned<i64>>,
+    pub max_term_products: Option<Spanned<i64>>,
 }
 
 /// `[[function]]`.

@@ -205,8 +205,13 @@ fn is_limit_message(message: &str) -> bool {
     message.contains("(the term limit)") || message.contains("past the limit of")
 }
 
-/// The hint that goes with a limit error's `message`: the work limit's, or the size limits'.
+/// The hint that goes with a limit error's `message`: the work limit's, or the size limits',
+/// or, for an exponent past the most that `max_degree` may be, that no limit reaches it.
 pub(crate) fn limit_hint(message: &str) -> &'static str {
+    if exponent_past_every_limit(message) {
+        return "no limit reaches this exponent: max_degree is at most 32767; write the \
+                expression without so large a power";
+    }
     match message.contains("(the work limit)") {
         true => {
             "if the machine has the time, raise the limit with max_term_products under [limits] \
@@ -219,6 +224,24 @@ pub(crate) fn limit_hint(message: &str) -> &'static str {
              program, the LimitsOverride given to the loader)"
         }
     }
+}
+
+/// Whether `message` is `the exponent N is past the limit of …` with `|N|` above the most that
+/// `max_degree` may be set to.
+fn exponent_past_every_limit(message: &str) -> bool {
+    let Some((_, rest)) = message.split_once("the exponent ") else {
+        return false;
+    };
+    let Some((exponent, _)) = rest.split_once(" is past the limit") else {
+        return false;
+    };
+    // Digits too many for an i128 are past it too.
+    let digits = exponent.trim_start_matches(['-', '−']);
+    !digits.is_empty()
+        && digits.chars().all(|c| c.is_ascii_digit())
+        && digits
+            .parse::<i128>()
+            .map_or(true, |n| n > i128::from(super::load::MAX_DEGREE_CEILING))
 }
 
 /// The hint that goes with an unknown name: where each kind of name is declared.
@@ -594,6 +617,28 @@ pub(crate) fn mention(tree: &Tree, name: &str) -> Option<Span> {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// An exponent past the most `max_degree` may be set to gets no advice to raise it, and
+    /// the hint names that most.
+    #[test]
+    fn an_exponent_past_every_limit_is_not_advised_to_raise_one() {
+        let raise = limit_hint("the exponent 5000 is past the limit of 1000");
+        assert!(raise.contains("raise the limit with max_terms or max_degree"));
+        for exponent in ["32768", "99999999999999999999", "-9223372036854775808"] {
+            let hint = limit_hint(&format!(
+                "the exponent {exponent} is past the limit of 1000"
+            ));
+            assert!(
+                hint.starts_with("no limit reaches this exponent"),
+                "{exponent}"
+            );
+            assert!(hint.contains(&super::super::load::MAX_DEGREE_CEILING.to_string()));
+        }
+        assert_eq!(
+            limit_hint("the exponent 32767 is past the limit of 1000"),
+            raise
+        );
+    }
 
     #[test]
     fn braces_of_family_instances_are_rewritten_in_place() {

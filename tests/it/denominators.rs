@@ -212,7 +212,8 @@ fn denominators_bracket_expand_and_rank_work_and_a_condition_on_a_denominator_is
     );
     let refused: [(&[&str], &str); 1] = [(
         &["bracket", f, "p_x", "H", "--when", "x = 1"],
-        "the condition sets x, which the denominator (x − y) involves",
+        // At the variable, not at its value.
+        "<command line>:1:1: the condition sets x, which the denominator (x − y) involves",
     )];
     for (args, message) in refused {
         let o = superint(args);

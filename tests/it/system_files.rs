@@ -812,6 +812,18 @@ fn bad_inputs() -> Vec<(&'static str, Vec<u8>, &'static str, Vec<&'static str>)>
             check.clone(),
         ),
         (
+            "a negative term limit (it was serde's `expected u64`)",
+            base_with("[[claim]]", "[limits]\nmax_terms = -5\n\n[[claim]]"),
+            "bad.toml:13:13: max_terms must be at least 1",
+            check.clone(),
+        ),
+        (
+            "a negative degree limit",
+            base_with("[[claim]]", "[limits]\nmax_degree = -5\n\n[[claim]]"),
+            "bad.toml:13:14: max_degree must be between 1 and 32767",
+            check.clone(),
+        ),
+        (
             "unknown name on the command line",
             BASE.as_bytes().to_vec(),
             "<command line>:1:5: unknown name 'B'",
