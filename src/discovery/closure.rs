@@ -108,6 +108,31 @@ pub fn closure_report(
     ))
 }
 
+/// Which symbols of the table and its equations stand for which generators, where a display
+/// name cannot be a symbol (`Re K`, with a space) and the generator's name stands for it:
+/// `Kr stands for Re K and Ki for Im K`; `None` where every symbol is its display name.
+fn symbols_text(c: &Closure) -> Option<Entry> {
+    let renamed: Vec<(String, &String)> = c
+        .symbols
+        .iter()
+        .zip(&c.display)
+        .map(|(&v, display)| (c.ring.variable(v).unicode().to_string(), display))
+        .filter(|(symbol, display)| symbol != *display)
+        .collect();
+    let [(first, first_display), rest @ ..] = renamed.as_slice() else {
+        return None;
+    };
+    let mut said = format!("`{first}` stands for `{first_display}`");
+    for (k, (symbol, display)) in rest.iter().enumerate() {
+        let sep = if k + 1 == rest.len() { " and" } else { "," };
+        said.push_str(&format!("{sep} `{symbol}` for `{display}`"));
+    }
+    Some(Entry::Text(format!(
+        "In the table and its equations, {said}: their display names cannot be written as \
+         symbols."
+    )))
+}
+
 /// How many brackets (off the table's diagonal, polynomials in the generators) and relations
 /// the closure found, and how many of them hold at the fixed values only.
 fn unlifted_count(c: &Closure, holding: &Holding) -> (usize, usize) {
@@ -150,6 +175,7 @@ impl Structure<'_> {
     fn section(&self, gens: &str) -> Result<Section, EngineError> {
         let mut entries = vec![self.method_text(gens)];
         entries.extend(symbolic_text(self.system, self.options));
+        entries.extend(symbols_text(self.c));
         entries.push(self.table());
         let outside = self.c.outside();
         if outside.is_empty() {

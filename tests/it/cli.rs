@@ -2045,3 +2045,35 @@ fn cli_long_table_entry_shows_its_leading_terms() {
     ));
     assert!(!text.contains("shown:") && !text.contains('…'), "{text}");
 }
+
+/// A closure's table and equations write a generator by its name where its display name
+/// cannot be a symbol (`Re A`, with a space), and say which stands for which: the entries read
+/// `ImA` under the header `Im A`, which nothing explained.
+#[test]
+fn closure_says_which_symbol_stands_for_a_display_name() {
+    let out = run(
+        &[
+            "closure",
+            "systems/anisotropic-3-5-rotor.toml",
+            "Hx",
+            "Hy",
+            "ReA",
+            "ImA",
+            "--no-timings",
+        ],
+        0,
+    );
+    let words = crate::normalize(&out);
+    assert!(
+        words.contains(
+            "In the table and its equations, ReA stands for Re A and ImA for Im A: their \
+             display names cannot be written as symbols."
+        ),
+        "{out}"
+    );
+    let plain = run(
+        &["closure", "systems/harmonic-rotor.toml", "L", "G1", "G2"],
+        0,
+    );
+    assert!(!plain.contains("stands for"), "{plain}");
+}
