@@ -673,7 +673,11 @@ impl<'a> Builder<'a> {
                      radicands (times a term): division by it is exact already"
                 ));
             }
-            builder = builder.denominator(&value.to_ascii(), &value.to_string(), &value.to_latex());
+            // A harmonic shows as written (`cos(3φ)`, not `−3 cos φ + 4 cos³φ`).
+            let (unicode, latex) = value
+                .as_harmonic()
+                .unwrap_or_else(|| (value.to_string(), value.to_latex()));
+            builder = builder.denominator(&value.to_ascii(), &unicode, &latex);
             vars = builder
                 .clone()
                 .build()

@@ -447,7 +447,7 @@ fn denominators_plot_keeps_the_calogero_integrals() {
 /// angle is 0 or a rational multiple of π (`e^{iφ}` a root of unity): the TTW system's
 /// `sin 3φ` at `φ = 0` and `π/3`, `cos 3φ` at `π/6` and `7π/6` (these integrated into numbers
 /// of 10³² before, with exit 0); a start at `φ = 1`, which has no exact value, is drawn (it was
-/// refused: 1 stood for `e^{iφ}`, that is `φ = 0`).
+/// refused: 1 stood for `e^{iφ}`, that is `φ = 0`). The denominators show as written.
 #[test]
 fn a_start_where_a_denominator_in_an_angle_is_zero_is_refused() {
     let f = scratch_text(
@@ -471,7 +471,14 @@ fn a_start_where_a_denominator_in_an_angle_is_zero_is_refused() {
             svg.to_str().unwrap(),
         ])
     };
-    let (sin, cos) = ("(−sin φ + 4 cos²φ sin φ)", "(−3 cos φ + 4 cos³φ)");
+    // A harmonic denominator shows as written, not as its normal form `−3 cos φ + 4 cos³φ`.
+    let o = superint(&["check", f.to_str().unwrap()]);
+    let out = String::from_utf8(o.stdout).unwrap();
+    assert!(
+        out.contains("H = p_r² + p_φ²/r² + r² + 1/(r² (sin(3φ))²) + 1/(r² (cos(3φ))²)"),
+        "{out}"
+    );
+    let (sin, cos) = ("(sin(3φ))", "(cos(3φ))");
     for (phi, zero) in [("0", sin), ("pi/3", sin), ("pi/6", cos), ("7*pi/6", cos)] {
         let o = plot(phi);
         let err = String::from_utf8(o.stderr).unwrap();

@@ -9,6 +9,7 @@ use crate::error::AlgebraError;
 use crate::number::{
     Coefficient, GaussianAcc, GaussianInteger, GaussianRational, Integer, IntegerRing, Rational,
 };
+use crate::print::Style;
 use crate::varset::{Var, VarKind, VarSet, Vars};
 
 impl<C: Coefficient> Poly<C> {
@@ -71,6 +72,99 @@ impl<C: Coefficient> Poly<C> {
         }
         let part = Self::from_sorted(&self.vars, self.content.clone(), exps, coeffs);
         (part, numbers.len())
+    }
+
+    /// The element as the paper writes a harmonic, `r cos(m·θ)` or `r sin(m·θ)` for a rational
+    /// `r ≠ 0` and integers `m` over the angles, when it is one: `(unicode, latex)`, such as
+    /// `cos(3φ)` and `\cos(3\varphi)` for `cos(3*phi)`, `sin(q1 − q2)`, or `cos φ` (one angle
+    /// without parentheses, as the printer writes it). `None` for anything else, whose
+    /// normal form (`−3 cos φ + 4 cos³φ`) is how it prints. A declared denominator shows so.
+    ///
+    /// ```
+    /// use trigpoly::{Expr, VarSet};
+    /// let vars = VarSet::builder().angle("phi").angle("q").build().unwrap();
+    /// let shown = |s: &str| Expr::parse(&vars, s).unwrap().as_harmonic().map(|h| h.0);
+    /// assert_eq!(shown("cos(3*phi)").as_deref(), Some("cos(3φ)"));
+    /// assert_eq!(shown("-2*sin(phi - 2*q)").as_deref(), Some("−2 sin(φ − 2q)"));
+    /// assert_eq!(shown("cos(phi)^2"), None);
+    /// ```
+    pub fn as_harmonic(&self) -> Option<(String, String)> {
+        let terms: Vec<_> = self.terms().collect();
+        let [a, b] = terms.as_slice() else {
+            return None;
+        };
+        let angles: Vec<Var> = self.vars.angles().collect();
+        // Every variable outside the angles absent, and the two exponents opposite.
+        let outside = self
+            .vars
+            .vars()
+            .filter(|v| !angles.contains(v))
+            .any(|v| a.exponent(v) != 0 || b.exponent(v) != 0);
+        let m: Vec<i64> = angles.iter().map(|&v| a.exponent(v)).collect();
+        if outside
+            || m.iter().all(|&k| k == 0)
+            || angles.iter().any(|&v| b.exponent(v) != -a.exponent(v))
+        {
+            return None;
+        }
+        // `m` with its first nonzero component positive, and the coefficients of `e^{im·θ}`
+        // and of `e^{−im·θ}`.
+        let positive = m.iter().find(|&&k| k != 0).is_some_and(|&k| k > 0);
+        let (ca, cb) = (a.coeff().to_gaussian(), b.coeff().to_gaussian());
+        let (m, plus, minus) = match positive {
+            true => (m, ca, cb),
+            false => (m.iter().map(|k| -k).collect(), cb, ca),
+        };
+        // r cos = (r/2)(e^{i·} + e^{−i·}); r sin = (r/2i)(e^{i·} − e^{−i·}).
+        let (function, r) = if plus == minus && plus.is_real() {
+            ("cos", &plus.re * &Rational::from(2))
+        } else if plus.re.is_zero() && minus.re.is_zero() && plus.im == -&minus.im {
+            ("sin", &minus.im * &Rational::from(2))
+        } else {
+            return None;
+        };
+        let argument = |style: Style| {
+            let name = |v: Var| match style {
+                Style::Latex => self.vars.variable(v).latex().to_string(),
+                _ => self.vars.variable(v).unicode().to_string(),
+            };
+            let mut out = String::new();
+            for (&v, &k) in angles.iter().zip(&m).filter(|(_, &k)| k != 0) {
+                let sign = match (out.is_empty(), k < 0, style) {
+                    (true, false, _) => "",
+                    (true, true, Style::Latex) => "-",
+                    (true, true, _) => "−",
+                    (false, false, _) => " + ",
+                    (false, true, Style::Latex) => " - ",
+                    (false, true, _) => " − ",
+                };
+                let times = match k.abs() {
+                    1 => String::new(),
+                    n => n.to_string(),
+                };
+                out.push_str(&format!("{sign}{times}{}", name(v)));
+            }
+            out
+        };
+        // `cos θ` as the printer writes it; a multiple or a sum in parentheses, `cos(3φ)`, as
+        // it reads back (`cos 3φ` does not).
+        let one_angle = m.iter().map(|k| k.abs()).sum::<i64>() == 1;
+        let write = |style: Style| {
+            let arg = argument(style);
+            let call = match (style, one_angle) {
+                (Style::Latex, true) => format!("\\{function} {arg}"),
+                (Style::Latex, false) => format!("\\{function}({arg})"),
+                (_, true) => format!("{function} {arg}"),
+                (_, false) => format!("{function}({arg})"),
+            };
+            let factor = crate::print::render_number(&GaussianRational::from(r.clone()), style);
+            match factor.as_str() {
+                "1" => call,
+                "-1" | "−1" => format!("{}{call}", if style == Style::Latex { "-" } else { "−" }),
+                _ => format!("{factor} {call}"),
+            }
+        };
+        Some((write(Style::Unicode), write(Style::Latex)))
     }
 
     /// The terms in the normal form `c · m · Π cos^a θ sin^b θ` (`b ≤ 1`), grouped and ordered
@@ -363,4 +457,42 @@ pub struct CosSinTerm {
     pub exps: Vec<i64>,
     /// The trigonometric part.
     pub trig: TrigMonomial,
+}
+
+#[cfg(test)]
+mod tests {
+    use crate::{Expr, VarSet};
+
+    /// A harmonic is written with its multiple of the angles made positive (`sin(−3φ)` is
+    /// `−sin(3φ)`), its rational factor before it, a sum of angles in parentheses; anything else
+    /// is none.
+    #[test]
+    fn harmonics_are_written_as_the_paper_writes_them() {
+        let vars = VarSet::builder()
+            .coordinate("x")
+            .angle("φ")
+            .angle("q1")
+            .angle("q2")
+            .build()
+            .unwrap();
+        let shown = |s: &str| Expr::parse(&vars, s).unwrap().as_harmonic();
+        let pair = |u: &str, l: &str| Some((u.to_string(), l.to_string()));
+        assert_eq!(shown("sin(-3*φ)"), pair("−sin(3φ)", r"-\sin(3\varphi)"));
+        assert_eq!(shown("sin(-φ)"), pair("−sin φ", r"-\sin \varphi"));
+        assert_eq!(shown("2*cos(φ)"), pair("2 cos φ", r"2 \cos \varphi"));
+        assert_eq!(
+            shown("cos(q1 - q2)/2"),
+            pair("1/2 cos(q1 − q2)", r"\frac{1}{2} \cos(q_{1} - q_{2})")
+        );
+        for other in [
+            "cos(φ) + sin(φ)",
+            "cos(φ) + 1",
+            "x*cos(φ)",
+            "cos(φ)^2",
+            "3",
+            "i*cos(φ)",
+        ] {
+            assert_eq!(shown(other), None, "{other}");
+        }
+    }
 }
