@@ -106,7 +106,8 @@ pub(crate) fn wrap(s: &str, w: usize, indent: &str) -> Vec<String> {
 pub(crate) fn wrap_sum(s: &str, w: usize, indent: &str) -> Vec<String> {
     let mut pieces: Vec<&str> = Vec::new();
     // A piece is split when it would not fit a line after the indent.
-    sum_pieces(s, 0, w.saturating_sub(width(indent)), &mut pieces);
+    let whole = Piece { text: s, depth: 0 };
+    sum_pieces(whole, 0, w.saturating_sub(width(indent)), &mut pieces);
     let mut lines: Vec<String> = Vec::new();
     let mut line = String::new();
     for piece in pieces {
@@ -133,10 +134,18 @@ pub(crate) fn wrap_sum(s: &str, w: usize, indent: &str) -> Vec<String> {
 /// How wide a group in parentheses, its parentheses included, may be and still never break.
 const WHOLE_GROUP: usize = 18;
 
-/// The pieces of `s` between the signs of its sums at parenthesis depth `level` (each piece
-/// after the first starts with its sign), into `out`; a piece wider than `w` is split again one
-/// level deeper, down to the third.
-fn sum_pieces<'a>(s: &'a str, level: i32, w: usize, out: &mut Vec<&'a str>) {
+/// A part of a line of mathematics, and the depth of brackets at its start in the line.
+#[derive(Clone, Copy)]
+struct Piece<'a> {
+    text: &'a str,
+    depth: i32,
+}
+
+/// The pieces of `piece` between the signs of its sums at bracket depth `level` in the line
+/// (each piece after the first starts with its sign), into `out`; a piece wider than `w` is
+/// split again one level deeper, down to the third.
+fn sum_pieces<'a>(piece: Piece<'a>, level: i32, w: usize, out: &mut Vec<&'a str>) {
+    let s = piece.text;
     // A short group in parentheses, a factor such as `(x − y)⁴`, never breaks. Its bytes
     // strictly inside are marked by a count that rises after its `(` and falls at its `)`: one
     // pass over the text, where asking every group at every sign took 13 s to print a
@@ -165,8 +174,8 @@ fn sum_pieces<'a>(s: &'a str, level: i32, w: usize, out: &mut Vec<&'a str>) {
             groups > 0
         })
         .collect();
-    let mut pieces: Vec<&str> = Vec::new();
-    let (mut depth, mut start) = (0i32, 0);
+    let mut pieces: Vec<Piece> = Vec::new();
+    let (mut depth, mut start, mut start_depth) = (piece.depth, 0, piece.depth);
     for (k, c) in s.char_indices() {
         match c {
             '(' | '{' | '[' => depth += 1,
@@ -178,17 +187,23 @@ fn sum_pieces<'a>(s: &'a str, level: i32, w: usize, out: &mut Vec<&'a str>) {
                     && s[..k].ends_with(' ')
                     && s[k + c.len_utf8()..].starts_with(' ') =>
             {
-                pieces.push(&s[start..k - 1]);
-                start = k;
+                pieces.push(Piece {
+                    text: &s[start..k - 1],
+                    depth: start_depth,
+                });
+                (start, start_depth) = (k, depth);
             }
             _ => {}
         }
     }
-    pieces.push(&s[start..]);
+    pieces.push(Piece {
+        text: &s[start..],
+        depth: start_depth,
+    });
     for piece in pieces {
-        match width(piece) > w && level < 2 {
+        match width(piece.text) > w && level < 2 {
             true => sum_pieces(piece, level + 1, w, out),
-            false => out.push(piece),
+            false => out.push(piece.text),
         }
     }
 }
@@ -628,6 +643,23 @@ mod tests {
                 .collect::<Vec<_>>()
                 .join(" "),
             "x = a b c d e f + g"
+        );
+    }
+
+    /// A piece after a sign inside brackets keeps the depth it starts at, so its own sums
+    /// break one level down: the Sutherland claim `{I_3 − g(… + … + …), H}` broke inside
+    /// `sin(q2 − q3)`, its sum inside `g(…)` counted one level too shallow.
+    #[test]
+    fn a_sum_inside_brackets_breaks_between_its_terms() {
+        let line = "  {I_3 − g((p_q1 + p_q2)/sin(q1 − q2)² + (p_q1 + p_q3)/sin(q1 − q3)² \
+                    + (p_q2 + p_q3)/sin(q2 − q3)²), H} = 0";
+        let lines = wrap_sum(line, 80, "      ");
+        assert_eq!(
+            lines,
+            [
+                "  {I_3 − g((p_q1 + p_q2)/sin(q1 − q2)² + (p_q1 + p_q3)/sin(q1 − q3)²",
+                "      + (p_q2 + p_q3)/sin(q2 − q3)²), H} = 0",
+            ]
         );
     }
 
