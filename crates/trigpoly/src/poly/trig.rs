@@ -123,48 +123,15 @@ impl<C: Coefficient> Poly<C> {
         } else {
             return None;
         };
-        let argument = |style: Style| {
-            let name = |v: Var| match style {
-                Style::Latex => self.vars.variable(v).latex().to_string(),
-                _ => self.vars.variable(v).unicode().to_string(),
-            };
-            let mut out = String::new();
-            for (&v, &k) in angles.iter().zip(&m).filter(|(_, &k)| k != 0) {
-                let sign = match (out.is_empty(), k < 0, style) {
-                    (true, false, _) => "",
-                    (true, true, Style::Latex) => "-",
-                    (true, true, _) => "−",
-                    (false, false, _) => " + ",
-                    (false, true, Style::Latex) => " - ",
-                    (false, true, _) => " − ",
-                };
-                let times = match k.abs() {
-                    1 => String::new(),
-                    n => n.to_string(),
-                };
-                out.push_str(&format!("{sign}{times}{}", name(v)));
-            }
-            out
+        let harmonic = Harmonic {
+            function,
+            r,
+            multiples: angles.into_iter().zip(m).filter(|&(_, k)| k != 0).collect(),
         };
-        // `cos θ` as the printer writes it; a multiple or a sum in parentheses, `cos(3φ)`, as
-        // it reads back (`cos 3φ` does not).
-        let one_angle = m.iter().map(|k| k.abs()).sum::<i64>() == 1;
-        let write = |style: Style| {
-            let arg = argument(style);
-            let call = match (style, one_angle) {
-                (Style::Latex, true) => format!("\\{function} {arg}"),
-                (Style::Latex, false) => format!("\\{function}({arg})"),
-                (_, true) => format!("{function} {arg}"),
-                (_, false) => format!("{function}({arg})"),
-            };
-            let factor = crate::print::render_number(&GaussianRational::from(r.clone()), style);
-            match factor.as_str() {
-                "1" => call,
-                "-1" | "−1" => format!("{}{call}", if style == Style::Latex { "-" } else { "−" }),
-                _ => format!("{factor} {call}"),
-            }
-        };
-        Some((write(Style::Unicode), write(Style::Latex)))
+        Some((
+            harmonic.write(&self.vars, Style::Unicode),
+            harmonic.write(&self.vars, Style::Latex),
+        ))
     }
 
     /// The terms in the normal form `c · m · Π cos^a θ sin^b θ` (`b ≤ 1`), grouped and ordered
@@ -457,6 +424,58 @@ pub struct CosSinTerm {
     pub exps: Vec<i64>,
     /// The trigonometric part.
     pub trig: TrigMonomial,
+}
+
+/// `r cos(m·θ)` or `r sin(m·θ)`, as [`Poly::as_harmonic`] found it.
+struct Harmonic {
+    /// `cos` or `sin`.
+    function: &'static str,
+    /// The rational factor.
+    r: Rational,
+    /// The angles with their nonzero multiples, the first positive.
+    multiples: Vec<(Var, i64)>,
+}
+
+impl Harmonic {
+    /// `cos θ` as the printer writes it; a multiple or a sum in parentheses, `cos(3φ)`, as it
+    /// reads back (`cos 3φ` does not); the factor before it, `−2 sin(φ − 2q)`.
+    fn write(&self, vars: &VarSet, style: Style) -> String {
+        let latex = style == Style::Latex;
+        let minus = if latex { "-" } else { "−" };
+        let mut argument = String::new();
+        for &(v, k) in &self.multiples {
+            let sign = match (argument.is_empty(), k < 0) {
+                (true, false) => String::new(),
+                (true, true) => minus.to_string(),
+                (false, false) => " + ".to_string(),
+                (false, true) => format!(" {minus} "),
+            };
+            let times = match k.abs() {
+                1 => String::new(),
+                n => n.to_string(),
+            };
+            let name = match latex {
+                true => vars.variable(v).latex(),
+                false => vars.variable(v).unicode(),
+            };
+            argument.push_str(&format!("{sign}{times}{name}"));
+        }
+        let one_angle = matches!(self.multiples.as_slice(), [(_, 1)]);
+        let function = match latex {
+            true => format!("\\{}", self.function),
+            false => self.function.to_string(),
+        };
+        let call = match one_angle {
+            true => format!("{function} {argument}"),
+            false => format!("{function}({argument})"),
+        };
+        let factor = crate::print::render_number(&GaussianRational::from(self.r.clone()), style);
+        match factor.as_str() {
+            "1" => call,
+            "-1" | "−1" => format!("{minus}{call}"),
+            _ => format!("{factor} {call}"),
+        }
+    }
 }
 
 #[cfg(test)]
