@@ -349,15 +349,13 @@ struct Translation<'a> {
     out: String,
     /// Each open brace, in order.
     braces: Vec<Brace>,
-    /// The scripts the base had before the script sign whose group the next brace opens,
-    /// `(sub, sup)`.
-    group_base: (bool, bool),
+    /// The script group the next brace opens, when a script sign with nothing after it
+    /// came last.
+    next_group: Option<NextGroup>,
     /// Where the last subscript group ended in `out`: a second subscript right after it, the
     /// indices of a family named `K₁` or `K_a` (`K₁_{1,2}`), joins it after a semicolon,
     /// `K_{1;1,2}`, as LaTeX refuses a double subscript.
     subscript_end: Option<usize>,
-    /// Whether the next brace opens the group of a second subscript that joins the last one.
-    joining: bool,
     /// The scripts of the base the last script group ended on: where in `out` it ended, and
     /// whether the base has a subscript and a superscript. A second script of a kind it has
     /// (`x²^1`, `x^a_b^c`) starts from an empty base, `x^{2}{}^{1}`, as LaTeX refuses a
@@ -372,6 +370,14 @@ struct Translation<'a> {
 struct Brace {
     group: bool,
     subscript: bool,
+    base: (bool, bool),
+}
+
+/// The script group that a brace right after a script sign opens: whether it is a second
+/// subscript that joins the last one, and the scripts its base had before it, `(sub, sup)`.
+#[derive(Clone, Copy)]
+struct NextGroup {
+    joins: bool,
     base: (bool, bool),
 }
 
@@ -395,9 +401,8 @@ impl<'a> Translation<'a> {
             k: 0,
             out: String::new(),
             braces: Vec::new(),
-            group_base: (false, false),
+            next_group: None,
             subscript_end: None,
-            joining: false,
             scripts: None,
         }
     }
@@ -521,13 +526,13 @@ impl<'a> Translation<'a> {
     /// An opening brace: the group of a script, or of a second subscript that joins the last
     /// one, else an escaped brace.
     fn open_brace(&mut self) {
-        if self.joining {
+        let next = self.next_group.take();
+        if let Some(NextGroup { joins: true, base }) = next {
             self.braces.push(Brace {
                 group: true,
                 subscript: true,
-                base: self.group_base,
+                base,
             });
-            self.joining = false;
             // The subscript stays open until this group closes: nothing joins it before.
             self.subscript_end = None;
             return;
@@ -536,7 +541,7 @@ impl<'a> Translation<'a> {
         self.braces.push(Brace {
             group,
             subscript: self.out.ends_with('_'),
-            base: std::mem::take(&mut self.group_base),
+            base: next.map_or((false, false), |g| g.base),
         });
         self.out.push_str(if group { "{" } else { r"\{" });
     }
@@ -583,18 +588,21 @@ impl<'a> Translation<'a> {
             // when it closes; a sign with nothing after it takes an empty script (LaTeX
             // refuses `x^` at the end of a formula).
             (false, true) if group_follows => {
-                self.group_base = base.unwrap_or_default();
+                self.next_group = Some(NextGroup {
+                    joins: false,
+                    base: base.unwrap_or_default(),
+                });
             }
             (false, true) => self.out.push_str("{}"),
             (false, false) => self.out.push_str(&format!("{{{pieces}}}")),
             (true, false) => self.out.push_str(&format!("{pieces}}}")),
             (true, true) if group_follows => {
                 // The group continues the subscript it joins, on the same base.
-                self.group_base = self
+                let base = self
                     .scripts
                     .filter(|s| s.end == end_before)
                     .map_or((true, false), |s| (s.sub, s.sup));
-                self.joining = true;
+                self.next_group = Some(NextGroup { joins: true, base });
             }
             (true, true) => self.out.push('}'),
         }
