@@ -110,15 +110,22 @@ fn remainder(mut p: Vec<Rational>, divisor: &[i64]) -> Vec<Rational> {
     p
 }
 
-/// The cyclotomic polynomial `Φ_n`, its integer coefficients low degree first: `x^n − 1`
-/// divided by `Φ_d` for every proper divisor `d` of `n`.
+/// The cyclotomic polynomial `Φ_n`, its integer coefficients low degree first: for each
+/// divisor `d` of `n` in turn, `x^d − 1` divided by the `Φ_e` of the divisors `e` of `d` found
+/// before it, each found once.
 fn cyclotomic(n: u64) -> Vec<i64> {
-    let mut p = vec![0i64; n as usize + 1];
-    (p[0], p[n as usize]) = (-1, 1);
-    for d in (1..n).filter(|&d| n.is_multiple_of(d)) {
-        p = exact_quotient(&p, &cyclotomic(d));
+    let mut found: Vec<(u64, Vec<i64>)> = Vec::new();
+    for d in (1..=n).filter(|&d| n.is_multiple_of(d)) {
+        let mut p = vec![0i64; d as usize + 1];
+        (p[0], p[d as usize]) = (-1, 1);
+        for (e, phi) in &found {
+            if d.is_multiple_of(*e) {
+                p = exact_quotient(&p, phi);
+            }
+        }
+        found.push((d, p));
     }
-    p
+    found.pop().expect("n divides itself").1
 }
 
 /// `p / q` for a monic `q` that divides `p` (integer coefficients, low degree first).
