@@ -403,14 +403,8 @@ pub(crate) fn parse_condition(
                     .into(),
             );
         }
-        // The atom `1/(x − y)` would keep standing for `1/(x − y)`, not its value there.
-        let (atom, _) = atoms.iter().find(|(_, d)| d.contains(v))?;
-        Some(format!(
-            "the condition sets {}, which the denominator {} involves: a condition on a \
-             denominator's variables is not supported",
-            vars.variable(v).unicode(),
-            vars.variable(*atom).unicode()
-        ))
+        // Refused at the variable, before the condition is made.
+        Condition::sets_a_denominator(atoms, v)
     };
     let form = AssignmentForm {
         what: "a condition",

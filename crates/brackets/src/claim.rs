@@ -170,18 +170,30 @@ impl Condition {
         let Some((_, first)) = self.subs.first() else {
             return Ok(());
         };
-        for (atom, d) in Expr::denominator_atoms(first.vars())? {
-            if let Some((v, _)) = self.subs.iter().find(|(v, _)| d.contains(*v)) {
-                let vars = first.vars();
-                return Err(EngineError::Invalid(format!(
-                    "the condition sets {}, which the denominator {} involves: a condition on \
-                     a denominator's variables is not supported",
-                    vars.variable(*v).unicode(),
-                    vars.variable(atom).unicode()
-                )));
-            }
+        let atoms = Expr::denominator_atoms(first.vars())?;
+        // The first atom that a variable set involves, and the first such variable.
+        let refusal = (0..atoms.len()).find_map(|k| {
+            self.subs
+                .iter()
+                .find_map(|(v, _)| Condition::sets_a_denominator(&atoms[k..=k], *v))
+        });
+        match refusal {
+            Some(why) => Err(EngineError::Invalid(why)),
+            None => Ok(()),
         }
-        Ok(())
+    }
+
+    /// Why a condition may not set `v`, if it may not: the polynomial of one of the
+    /// denominator `atoms` involves it (see [`Condition::keeps_denominators`]).
+    pub fn sets_a_denominator(atoms: &[(Var, Expr)], v: Var) -> Option<String> {
+        let (atom, d) = atoms.iter().find(|(_, d)| d.contains(v))?;
+        let vars = d.vars();
+        Some(format!(
+            "the condition sets {}, which the denominator {} involves: a condition on a \
+             denominator's variables is not supported",
+            vars.variable(v).unicode(),
+            vars.variable(*atom).unicode()
+        ))
     }
 
     /// Refuses the condition where the flow of `system`'s Hamiltonian leaves the surface it
