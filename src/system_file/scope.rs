@@ -14,6 +14,7 @@ use trigpoly::syntax::{parse_expr, Expr as Tree, ExprKind, ParseError};
 use trigpoly::{Context, Expr, GaussianRational, Span, VarKind};
 
 use super::error::{ErrorKind, FileError};
+use super::load::MAX_DEGREE_CEILING;
 use super::text::{Source, Text};
 use super::LoadedSystem;
 
@@ -207,12 +208,14 @@ fn is_limit_message(message: &str) -> bool {
 
 /// The hint that goes with a limit error's `message`: the work limit's, or the size limits',
 /// or, for an exponent past the most that `max_degree` may be, that no limit reaches it.
-pub(crate) fn limit_hint(message: &str) -> &'static str {
+pub(crate) fn limit_hint(message: &str) -> String {
     if exponent_past_every_limit(message) {
-        return "no limit reaches this exponent: max_degree is at most 32767; write the \
-                expression without so large a power";
+        return format!(
+            "no limit reaches this exponent: max_degree is at most {MAX_DEGREE_CEILING}; write \
+             the expression without so large a power"
+        );
     }
-    match message.contains("(the work limit)") {
+    let hint = match message.contains("(the work limit)") {
         true => {
             "if the machine has the time, raise the limit with max_term_products under [limits] \
              in the file (on the command line, --max-term-products N; in a program, the \
@@ -223,7 +226,8 @@ pub(crate) fn limit_hint(message: &str) -> &'static str {
              [limits] in the file (on the command line, --max-terms N or --max-degree D; in a \
              program, the LimitsOverride given to the loader)"
         }
-    }
+    };
+    hint.to_string()
 }
 
 /// Whether `message` is `the exponent N is past the limit of …` with `|N|` above the most that
@@ -241,7 +245,7 @@ fn exponent_past_every_limit(message: &str) -> bool {
         && digits.chars().all(|c| c.is_ascii_digit())
         && digits
             .parse::<i128>()
-            .map_or(true, |n| n > i128::from(super::load::MAX_DEGREE_CEILING))
+            .map_or(true, |n| n > i128::from(MAX_DEGREE_CEILING))
 }
 
 /// The hint that goes with an unknown name: where each kind of name is declared.
@@ -632,7 +636,7 @@ mod tests {
                 hint.starts_with("no limit reaches this exponent"),
                 "{exponent}"
             );
-            assert!(hint.contains(&super::super::load::MAX_DEGREE_CEILING.to_string()));
+            assert!(hint.contains(&MAX_DEGREE_CEILING.to_string()));
         }
         assert_eq!(
             limit_hint("the exponent 32767 is past the limit of 1000"),
