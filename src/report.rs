@@ -276,6 +276,23 @@ pub fn counted(n: impl std::fmt::Display, noun: &str) -> String {
     }
 }
 
+/// Items as prose lists them: `a`, `a and b`, `a, b and c`.
+///
+/// ```
+/// use superint::report::listed;
+///
+/// let items = |s: &[&str]| s.iter().map(|i| i.to_string()).collect::<Vec<_>>();
+/// assert_eq!(listed(&items(&["1", "4"])), "1 and 4");
+/// assert_eq!(listed(&items(&["1", "2", "4"])), "1, 2 and 4");
+/// ```
+pub fn listed(items: &[String]) -> String {
+    match items {
+        [] => String::new(),
+        [one] => one.clone(),
+        [rest @ .., last] => format!("{} and {last}", rest.join(", ")),
+    }
+}
+
 /// A system's name as a title says it after `of` or `for`: `the harmonic rotor`, but the name
 /// alone when it starts with an article or a possessive of its own (`my oscillator`, not `the
 /// my oscillator`).

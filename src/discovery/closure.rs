@@ -8,7 +8,7 @@ use brackets::{EngineError, NamedFunction, System};
 use trigpoly::{Expr, GaussianRational, Style};
 
 use crate::report::{
-    counted, ClaimResult, ClosureFacts, Entry, Equation, Equations, Facts, Report, Section,
+    counted, listed, ClaimResult, ClosureFacts, Entry, Equation, Equations, Facts, Report, Section,
     SummaryKind, TableResult,
 };
 
@@ -112,25 +112,25 @@ pub fn closure_report(
 /// name cannot be a symbol (`Re K`, with a space) and the generator's name stands for it:
 /// `Kr stands for Re K and Ki for Im K`; `None` where every symbol is its display name.
 fn symbols_text(c: &Closure) -> Option<Entry> {
-    let renamed: Vec<(String, &String)> = c
+    let renamed: Vec<String> = c
         .symbols
         .iter()
         .zip(&c.display)
-        .map(|(&v, display)| (c.ring.variable(v).unicode().to_string(), display))
-        .filter(|(symbol, display)| symbol != *display)
+        .map(|(&v, display)| (c.ring.variable(v).unicode(), display))
+        .filter(|(symbol, display)| symbol != display)
+        .enumerate()
+        .map(|(k, (symbol, display))| match k {
+            0 => format!("`{symbol}` stands for `{display}`"),
+            _ => format!("`{symbol}` for `{display}`"),
+        })
         .collect();
-    let [(first, first_display), rest @ ..] = renamed.as_slice() else {
-        return None;
-    };
-    let mut said = format!("`{first}` stands for `{first_display}`");
-    for (k, (symbol, display)) in rest.iter().enumerate() {
-        let sep = if k + 1 == rest.len() { " and" } else { "," };
-        said.push_str(&format!("{sep} `{symbol}` for `{display}`"));
-    }
-    Some(Entry::Text(format!(
-        "In the table and its equations, {said}: their display names cannot be written as \
-         symbols."
-    )))
+    (!renamed.is_empty()).then(|| {
+        Entry::Text(format!(
+            "In the table and its equations, {}: their display names cannot be written as \
+             symbols.",
+            listed(&renamed)
+        ))
+    })
 }
 
 /// How many brackets (off the table's diagonal, polynomials in the generators) and relations

@@ -413,10 +413,10 @@ impl ProofResult {
             .filter(|(_, holds)| !holds)
             .map(|(k, _)| (k + 1).to_string())
             .collect();
-        match steps.as_slice() {
-            [] => None,
-            [one] => Some(format!("step {one} fails")),
-            [rest @ .., last] => Some(format!("steps {} and {last} fail", rest.join(", "))),
+        match steps.len() {
+            0 => None,
+            1 => Some(format!("step {} fails", steps[0])),
+            _ => Some(format!("steps {} fail", super::listed(&steps))),
         }
     }
 
