@@ -755,7 +755,7 @@ const LONGEST_PIECE: usize = 256;
 
 /// Splits `name` into names that `known` takes (`Mω` → `M`, `ω`), longest prefix first, at
 /// least two of them; `None` if no split exists. This is how an expression reads names run
-/// together that are not declared (`Lx` is `L·x`). Each piece is at most 256
+/// together that are not declared (`Lx` is `L·x`). Each piece is at most `LONGEST_PIECE`
 /// bytes; whether the rest from each place splits is decided once, from the end.
 pub fn split_names(name: &str, known: &dyn Fn(&str) -> bool) -> Option<Vec<String>> {
     if name.chars().count() < 2 {
