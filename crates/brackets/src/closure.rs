@@ -832,17 +832,14 @@ impl<'a> ColumnMonomials<'a> {
 
     /// The largest total degree of the monomials of `v`'s columns.
     fn degree(&self, v: &SparseVec<Rational>) -> u32 {
-        v.iter()
-            .map(|(j, _)| self.monos[self.col_ids[*j].0].iter().sum::<u32>())
-            .max()
-            .unwrap_or(0)
+        self.degree_in_generators(v, usize::MAX)
     }
 
     /// `v`'s degree in the first `r` variables, the generators (the symbolic parameters
     /// apart).
     fn degree_in_generators(&self, v: &SparseVec<Rational>, r: usize) -> u32 {
         v.iter()
-            .map(|(j, _)| self.monos[self.col_ids[*j].0][..r].iter().sum::<u32>())
+            .map(|(j, _)| self.monos[self.col_ids[*j].0].iter().take(r).sum::<u32>())
             .max()
             .unwrap_or(0)
     }
