@@ -86,7 +86,8 @@ pub struct SearchArgs {
     #[arg(long, value_name = "J", default_value_t = 1,
           value_parser = clap::value_parser!(u32).range(0..=12))]
     radicals_degree: u32,
-    /// Parameter values for the linear algebra, such as omega=1,M=2/3 (others are 1).
+    /// Parameter values for the linear algebra, such as omega=1,M=2/3 (others are 1, or other
+    /// values where 1 makes a declared denominator zero).
     #[arg(long, value_name = "VALUES")]
     fix: Option<String>,
     /// Parameters kept symbolic, such as A,B: the coefficients of the integrals are then

@@ -12,7 +12,7 @@ use crate::report::{
     SummaryKind, TableResult,
 };
 
-use super::{agreeing, parameter_facts, HeldAt};
+use super::{agreeing, off_one_note, parameter_facts, parameter_names, HeldAt};
 
 /// A relation `R = 0` as `positive terms = negated negative terms`, in the paper's notation:
 /// `P11² + Q11² = 2MωL + 2M F1 − Mω²I`.
@@ -211,13 +211,15 @@ impl Structure<'_> {
     fn method_text(&self, gens: &str) -> Entry {
         let c = self.c;
         let fixed = self.holding.held.fixed();
+        let off_one = off_one_note(self.system.vars(), c.denominator_zero_at_one);
         let lift = match (c.parameters.is_empty(), self.stuck) {
             (true, _) => String::new(),
             (false, 0) => format!(
-                " at `{fixed}`, the coefficients then lifted back to the parameters by homogeneity"
+                " at `{fixed}`{off_one}, the coefficients then lifted back to the parameters by \
+                 homogeneity"
             ),
             (false, k) => format!(
-                " at `{fixed}`, the coefficients then lifted back to the parameters by homogeneity \
+                " at `{fixed}`{off_one}, the coefficients then lifted back to the parameters by homogeneity \
                  where the weights allow: {k} of the {} brackets and relations could not be \
                  lifted, and {} at `{fixed}` only (so does the table)",
                 self.results,
@@ -396,11 +398,21 @@ fn outside_entries(
 ) -> Result<Vec<Entry>, EngineError> {
     let outside = c.outside();
     let moving = moving_generators(system, generators, options, &outside)?;
-    let advice = closing_advice(&moving, when);
+    let symbolic = !options.symbolic.is_empty();
+    let advice = closing_advice(&moving, when, symbolic);
+    // With parameters kept symbolic, the coefficients' degree in them bounds the search too.
+    let coefficients = match symbolic {
+        true => format!(
+            " with coefficients of degree `≤ {}` in {}",
+            options.parameters_degree,
+            parameter_names(system.vars(), &options.symbolic)
+        ),
+        false => String::new(),
+    };
     Ok(vec![
         Entry::Text(format!(
-            "The brackets marked `*` are no polynomials of degree `≤ {}` in the generators; \
-             here they are. {advice}",
+            "The brackets marked `*` are no polynomials of degree `≤ {}` in the \
+             generators{coefficients}; here they are. {advice}",
             c.degree
         )),
         outside_equations(c, &outside),
@@ -441,9 +453,12 @@ fn moving_generators(
 
 /// The advice after the brackets outside the table: that the `moving` generators, no
 /// integrals, need not close among the others, or, when every generator is an integral, how
-/// the table might close.
-fn closing_advice(moving: &[String], when: &str) -> String {
+/// the table might close (with parameters kept `symbolic`, by their degree too).
+fn closing_advice(moving: &[String], when: &str, symbolic: bool) -> String {
     match moving.len() {
+        0 if symbolic => "A higher `--degree` or `--parameters-degree`, or what `superint \
+                          search` finds added to the generators, may close the table."
+            .to_string(),
         0 => "A higher `--degree`, or what `superint search` finds added to the generators, may \
              close the table."
             .to_string(),

@@ -78,6 +78,18 @@ fn proved_for_every(names: &str, fixed: &str) -> String {
     format!("proved for every {names}, at {fixed}")
 }
 
+/// Why the fixed values are not all 1, the default, when 1 makes the declared denominator
+/// `atom` zero: ` (not 1, where the denominator (a − b) is zero)`; else nothing.
+fn off_one_note(vars: &VarSet, atom: Option<Var>) -> String {
+    match atom {
+        Some(v) => format!(
+            " (not 1, where the denominator `{}` is zero)",
+            vars.variable(v).unicode()
+        ),
+        None => String::new(),
+    }
+}
+
 /// Where the results of a search or a closure hold, as printed and as superint reads it back:
 /// under the condition, and also at the fixed parameter values for a result not lifted back
 /// to the parameters.

@@ -12,7 +12,7 @@ use crate::report::{
     Section, SummaryKind,
 };
 
-use super::{agreeing, parameter_facts, parameter_names, proved_for_every, HeldAt};
+use super::{agreeing, off_one_note, parameter_facts, parameter_names, proved_for_every, HeldAt};
 
 /// `F = Re(A e^{−ik·θ})` for an integral of one trigonometric order `k > 0` in one angle:
 /// `(A, k)`, `A` twice the coefficient of `e^{−ikθ}`.
@@ -803,8 +803,9 @@ fn parameter_notes(
         return notes;
     }
     let lift = how_lifted(r, for_every_value);
+    let off_one = off_one_note(vars, r.denominator_zero_at_one);
     notes.push(Entry::Text(format!(
-        "Parameters fixed for the linear algebra: `{fixed}`; {lift}."
+        "Parameters fixed for the linear algebra: `{fixed}`{off_one}; {lift}."
     )));
     if !(r.liftable && r.all_symbolic()) {
         notes.push(Entry::Text(unlifted_note(r, vars)));

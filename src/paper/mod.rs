@@ -363,6 +363,7 @@ fn proof_entry(
             statement: f.statement.clone(),
             holds: f.holds,
             found: None,
+            found_statement: None,
         })
         .collect();
     let note = ProofResult::failed_steps(&facts, p.leibniz_check);

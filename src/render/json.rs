@@ -315,6 +315,7 @@ fn proof(p: &ProofResult, section: u32) -> Value {
             "statement": f.statement,
             "holds": f.holds,
             "found": f.found.as_ref().map(|e| e.render(Style::Ascii)),
+            "found_statement": f.found_statement,
         })).collect::<Vec<_>>(),
         "leibniz_check": p.leibniz_check,
         "lemma": p.lemma,

@@ -419,8 +419,12 @@ fn proof(out: &mut Vec<String>, p: &ProofResult) {
     out.push(r"\begin{enumerate}".into());
     let mark = |ok: bool| if ok { "holds" } else { "FAILS" };
     for f in &p.facts {
+        let so = match &f.found_statement {
+            Some(st) => format!(", so ${}$", math(st)),
+            None => String::new(),
+        };
         let found = match &f.found {
-            Some(e) => format!(": the bracket is ${}$", e.render(Style::Latex)),
+            Some(e) => format!(": the bracket is ${}${so}", e.render(Style::Latex)),
             None => String::new(),
         };
         // A formula, and after a colon the prose that says why (the eigenvalue's linearity),

@@ -158,8 +158,12 @@ fn proof(p: &ProofResult) -> String {
     let mut lines = vec![format!("**Proof** {}:", p.title), String::new()];
     let mark = |ok: bool| if ok { "holds" } else { "FAILS" };
     for (k, f) in p.facts.iter().enumerate() {
+        let so = match &f.found_statement {
+            Some(st) => format!(", so {}", code(st)),
+            None => String::new(),
+        };
         let found = match &f.found {
-            Some(e) => format!(": the bracket is {}", code(&e.to_string())),
+            Some(e) => format!(": the bracket is {}{so}", code(&e.to_string())),
             None => String::new(),
         };
         lines.push(format!(

@@ -471,12 +471,18 @@ fn proof(out: &mut Vec<String>, p: &ProofResult) {
             // A long fact wraps, its mark after its last line.
             out.extend(wrap(&format!("{head}: {}", mark(*ok)), WRAP, "       "));
         }
-        if let Some(found) = p.facts.get(k).and_then(|f| f.found.as_ref()) {
-            out.extend(wrap(
-                &format!("       the bracket is {found}"),
-                WRAP,
-                "       ",
-            ));
+        if let Some(fact) = p.facts.get(k) {
+            if let Some(found) = &fact.found {
+                let so = match &fact.found_statement {
+                    Some(st) => format!(", so {st}"),
+                    None => String::new(),
+                };
+                out.extend(wrap(
+                    &format!("       the bracket is {found}{so}"),
+                    WRAP,
+                    "       ",
+                ));
+            }
         }
     }
     out.extend(wrap(&format!("    Lemma: {}.", p.lemma), WRAP, "      "));

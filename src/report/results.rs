@@ -376,6 +376,9 @@ pub struct Fact {
     pub holds: bool,
     /// For a bracket that does not hold, its value as the engine computed it.
     pub found: Option<Expr>,
+    /// For a bracket that does not hold but is another multiple of its base, the fact it
+    /// makes, read as the statement is (`{b̄, H} = (−3iω) b̄`).
+    pub found_statement: Option<String>,
 }
 
 /// A proof for all `m, n` by the eigenfunction lemma.
@@ -558,6 +561,7 @@ mod tests {
                     statement: String::new(),
                     holds,
                     found: None,
+                    found_statement: None,
                 })
                 .collect()
         };

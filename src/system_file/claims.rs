@@ -14,6 +14,7 @@ use super::error::{ErrorKind, FileError};
 use super::model::{ClaimModel, When};
 use super::scope::{limit_hint, rewrite_braces};
 use super::text::{array_strings, split_top_level, unbalanced_bracket, Source, Text};
+use super::written::Reach;
 use super::LoadedSystem;
 use crate::report::{ClaimKind, ClaimResult, Expect, RankResult};
 
@@ -396,6 +397,7 @@ pub(crate) fn parse_condition(
     let usage = "a condition reads `variable = value`, such as \"p_theta = 2*I*omega/3\"";
     let vars = file.system.vars();
     let atoms = file.system.space().denominator_atoms();
+    let radicals = file.system.space().radicals();
     let admit = |v: trigpoly::Var| {
         if vars.variable(v).kind() == VarKind::Angle {
             return Some(
@@ -404,7 +406,7 @@ pub(crate) fn parse_condition(
             );
         }
         // Refused at the variable, before the condition is made.
-        Condition::sets_a_denominator(atoms, v)
+        Condition::sets_a_denominator(atoms, v).or_else(|| Condition::sets_a_radicand(radicals, v))
     };
     let form = AssignmentForm {
         what: "a condition",
@@ -419,6 +421,21 @@ pub(crate) fn parse_condition(
         .map(|a| a.shown.as_str())
         .collect::<Vec<_>>()
         .join(", ");
+    // The phase space and the parameters are real: a value that is not sets no point of them
+    // (at `p_x = ix`, `p_x² + x² = 0` would be proved, of no real point).
+    if let Some(a) = assignments.iter().find(|a| !a.value.is_real()) {
+        return Err(a.rhs.error(
+            source,
+            ErrorKind::Condition,
+            a.rhs.trimmed_span(),
+            format!(
+                "the condition sets {} to {}, which is not real: the variables and parameters \
+                 take real values",
+                vars.variable(a.var).unicode(),
+                a.value
+            ),
+        ));
+    }
     let subs = assignments
         .iter()
         .map(|a| (a.var, a.value.clone()))
@@ -766,9 +783,15 @@ impl LoadedSystem {
                     Outcome::Proved => (true, None),
                     Outcome::Refuted { residual } => (false, Some(residual)),
                 };
+                // A claim with no bracket (or braced family instance) has as residual its
+                // sides' difference, which the fullest search only restates.
+                let reach = match lhs.value.contains('{') || rhs.value.contains('{') {
+                    true => Reach::WithSymbolicParameters,
+                    false => Reach::AtValues,
+                };
                 let residual_in_functions = residual
                     .as_ref()
-                    .and_then(|r| self.written_in_functions(r, spec.condition.as_ref()));
+                    .and_then(|r| self.written_in(r, spec.condition.as_ref(), reach));
                 let (condition, condition_ascii) =
                     spec.condition.as_ref().map(Condition::forms).unzip();
                 Ok(CheckedClaim::Identity(Box::new(ClaimResult {

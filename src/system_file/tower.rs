@@ -211,6 +211,7 @@ impl LoadedSystem {
             statement,
             holds: differs.is_none(),
             found: None,
+            found_statement: None,
         })
     }
 
@@ -299,10 +300,17 @@ impl LoadedSystem {
             let base_tree = drop_ones(&base_tree);
             // A sum is parenthesized as the factor it is: `(i) (p_x + ix)`.
             let (name, factor) = (self.pretty(&base_tree), self.pretty_factor(&base_tree));
+            // Where the bracket is another multiple of the base, the eigenvalue it has.
+            let found_statement = match holds {
+                true => None,
+                false => multiple_of(&flow, &base, when)
+                    .map(|mu| format!("{{{name}, H}} = ({mu}) {factor}")),
+            };
             facts.push(Fact {
                 statement: format!("{{{name}, H}} = ({lambda}) {factor}"),
                 holds,
                 found: (!holds).then_some(flow),
+                found_statement,
             });
             bases.push(base);
         }
@@ -630,6 +638,22 @@ fn tower_failures(
 }
 
 /// `e` under the condition, if any ([`Condition::apply_where_defined`]).
+/// The single term `μ` with `flow = μ·base` (under `when`), if there is one: the eigenvalue
+/// a base function has where it is not the one stated (`−i p_θ/I`, say). `μ` is the ratio of
+/// the leading terms (a monomial order keeps the leading term of a product by a monomial),
+/// then checked exactly.
+fn multiple_of(flow: &Expr, base: &Expr, when: Option<&Condition>) -> Option<Expr> {
+    let vars = flow.vars();
+    let lead = |e: &Expr| {
+        let term = e.terms().next()?;
+        let powers: Vec<_> = vars.vars().map(|v| (v, term.exponent(v))).collect();
+        Expr::monomial(vars, term.coeff(), &powers).ok()
+    };
+    let mu = lead(flow)?.checked_div(&lead(base)?).ok()?;
+    let scaled = settled(when, mu.checked_mul(base).ok()?).ok()?;
+    (scaled == *flow).then_some(mu)
+}
+
 fn settled(when: Option<&Condition>, e: Expr) -> Result<Expr, EngineError> {
     match when {
         None => Ok(e),

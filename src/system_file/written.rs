@@ -3,6 +3,7 @@
 //! residual (`= −4 H L/M`) and `bracket` under a bracket.
 
 use brackets::closure::{expressed_in, ClosureOptions};
+use brackets::search::GENERIC_VALUES;
 use brackets::{Condition, NamedFunction};
 use trigpoly::{Expr, Rational, VarKind};
 
@@ -15,6 +16,14 @@ const DEGREES: [u32; 2] = [3, 2];
 /// The most monomials the search may expand: degree 3 in up to 9 functions, degree 2 in up
 /// to 20.
 const MAX_MONOMIALS: u128 = 231;
+
+/// The degree in the parameters of the coefficients of the last search, which keeps them
+/// symbolic.
+const PARAMETERS_DEGREE: u32 = 2;
+
+/// The most monomials, products of the functions' and the parameters' monomials, that the
+/// last search may take.
+const MAX_SYMBOLIC_MONOMIALS: u128 = 2_000;
 
 /// The most terms of an expression that is sought so: a longer one (a tower's residual, of a
 /// million terms) is read as it is, not written into rows for the linear algebra.
@@ -67,6 +76,17 @@ impl LoadedSystem {
     /// # Ok::<(), superint::system_file::FileError>(())
     /// ```
     pub fn written_in_functions(&self, e: &Expr, condition: Option<&Condition>) -> Option<Expr> {
+        self.written_in(e, condition, Reach::WithSymbolicParameters)
+    }
+
+    /// [`LoadedSystem::written_in_functions`], with the last search (the parameters kept
+    /// symbolic) only when `reach` allows it.
+    pub(crate) fn written_in(
+        &self,
+        e: &Expr,
+        condition: Option<&Condition>,
+        reach: Reach,
+    ) -> Option<Expr> {
         if e.len() > MAX_TERMS {
             return None;
         }
@@ -104,9 +124,10 @@ impl LoadedSystem {
         match search(&options) {
             Search::Written(poly) => Some(poly),
             Search::Nothing => None,
-            // The parameters are fixed to 1 for the linear algebra, and that is a special
-            // point (the Euler top's `H = C/2` at `I1 = I2 = I3 = 1`, a declared `a1 − a2`
-            // zero there): the search is made again at values that are not.
+            // The parameters are fixed to 1 for the linear algebra (or moved off a declared
+            // denominator that 1 makes zero), and that is a special point (the Euler top's
+            // `H = C/2` at `I1 = I2 = I3 = 1`): the search is made again at values that are
+            // not.
             Search::AtTheseValues => {
                 let generic = system
                     .vars()
@@ -118,11 +139,53 @@ impl LoadedSystem {
                     });
                 match search(&generic) {
                     Search::Written(poly) => Some(poly),
-                    _ => None,
+                    Search::Nothing => None,
+                    // A combination that holds at these values too, but that homogeneity
+                    // cannot lift (`(a − b) F` for `axy − bxy`, `a` and `b` of one weight):
+                    // sought once more with the parameters of `e` kept symbolic.
+                    Search::AtTheseValues if reach == Reach::AtValues => None,
+                    Search::AtTheseValues => {
+                        // The other parameters stay at the generic values.
+                        let mut fixed = generic.fixed.clone();
+                        fixed.retain(|(v, _)| !e.contains(*v));
+                        let symbolic = system
+                            .vars()
+                            .vars()
+                            .filter(|&v| {
+                                system.vars().variable(v).kind() == VarKind::Parameter
+                                    && e.contains(v)
+                            })
+                            .fold(
+                                ClosureOptions {
+                                    fixed,
+                                    max_monomials: MAX_SYMBOLIC_MONOMIALS as usize,
+                                    ..generic.clone()
+                                },
+                                |o, v| o.symbolic(v, PARAMETERS_DEGREE),
+                            );
+                        match symbolic.symbolic.is_empty() {
+                            true => None,
+                            false => match search(&symbolic) {
+                                Search::Written(poly) => Some(poly),
+                                _ => None,
+                            },
+                        }
+                    }
                 }
             }
         }
     }
+}
+
+/// How far [`LoadedSystem::written_in`] searches.
+#[derive(Clone, Copy, PartialEq, Eq)]
+pub(crate) enum Reach {
+    /// At fixed values of the parameters (1, then generic values) only: for the residual of
+    /// a claim with no bracket, `lhs − rhs` of functions, which a search with the parameters
+    /// kept symbolic finds as the claim itself, restated.
+    AtValues,
+    /// Then with the parameters of the expression kept symbolic.
+    WithSymbolicParameters,
 }
 
 /// What one search of [`LoadedSystem::written_in_functions`] at fixed parameter values found.
@@ -135,25 +198,6 @@ enum Search {
     /// A polynomial that holds at these values only, or a denominator zero there.
     AtTheseValues,
 }
-
-/// Values of the parameters, in the order of their declaration, for the second search of
-/// [`LoadedSystem::written_in_functions`]: primes over 1, 2 and 3, so that no small relation
-/// (equal values, one the sum of two others) holds among them. Parameters past the list keep
-/// the value 1.
-const GENERIC_VALUES: [(i64, i64); 12] = [
-    (7, 1),
-    (11, 2),
-    (13, 3),
-    (17, 1),
-    (19, 2),
-    (23, 3),
-    (29, 1),
-    (31, 2),
-    (37, 3),
-    (41, 1),
-    (43, 2),
-    (47, 3),
-];
 
 #[cfg(test)]
 mod tests {

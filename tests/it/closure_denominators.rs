@@ -269,3 +269,53 @@ fn closure_denominators_command_line() {
         "{err}"
     );
 }
+
+/// A declared denominator that the default values, 1, make zero (`a − b` at `a = b = 1`):
+/// the closure and the search take other values for its parameters, and say why; values
+/// given that make it zero are still refused.
+#[test]
+fn closure_denominators_zero_at_one_moves_the_values() {
+    let text = "name = \"two frequencies\"\n\
+                hamiltonian = \"(p_x^2 + p_y^2)/2 + a*x^2/2 + b*y^2/2\"\n\
+                [phase_space]\n\
+                coordinates = [\"x\", \"y\"]\n\
+                parameters = [\"a\", \"b\"]\n\
+                denominators = [\"a - b\"]\n\
+                [[function]]\nname = \"T\"\nvalue = \"(p_x^2/2 + a*x^2/2)/(a - b)\"\n\
+                [[function]]\nname = \"X\"\nvalue = \"p_y^2/2 + b*y^2/2\"\n";
+    let f = scratch_text("closure-denominators-one", "two.toml", text);
+    let f = f.to_str().unwrap();
+    let run = |args: &[&str]| {
+        let o = superint(args);
+        let (out, err) = (String::from_utf8(o.stdout).unwrap(), o.stderr);
+        assert_eq!(
+            o.status.code(),
+            Some(0),
+            "{args:?}: {}",
+            String::from_utf8_lossy(&err)
+        );
+        normalize(&out)
+    };
+    let out = run(&["closure", f, "T", "X", "H", "--no-timings"]);
+    assert!(
+        out.contains("at a = 7, b = 11/2 (not 1, where the denominator (a − b) is zero)"),
+        "{out}"
+    );
+    // (a − b) T + X = H, at a − b = 3/2.
+    assert!(out.contains("3 T + 2 X = 2 H at a = 7, b = 11/2"), "{out}");
+    let out = run(&["search", f, "--no-timings"]);
+    assert!(
+        out.contains(
+            "Parameters fixed for the linear algebra: a = 7, b = 11/2 (not 1, where the \
+             denominator (a − b) is zero)"
+        ),
+        "{out}"
+    );
+    let o = superint(&["closure", f, "T", "X", "--fix", "a=2,b=2"]);
+    let err = String::from_utf8(o.stderr).unwrap();
+    assert_eq!(o.status.code(), Some(2), "{err}");
+    assert!(
+        err.contains("the denominator (a − b) is zero at a = 2, b = 2"),
+        "{err}"
+    );
+}

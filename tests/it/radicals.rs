@@ -530,3 +530,61 @@ fn radicals_plot_keeps_the_kepler_integrals() {
         "{err}"
     );
 }
+
+/// A condition that sets a variable of a radicand is refused, at the variable, by every
+/// command: the radical would keep its radicand, so `r² = x² + y² + z²` at `z = 0` would
+/// refute `r² = x² + y²`, and a rank at `a = 0` of `t = √(x² + ay²)` would be certified at
+/// a point of another `a`. A condition on other variables stays.
+#[test]
+fn a_condition_on_a_radicands_variable_is_refused() {
+    let text = "name = \"radicand\"\n\
+                hamiltonian = \"(p_x^2 + p_y^2)/2 - k/t\"\n\
+                [phase_space]\n\
+                coordinates = [\"x\", \"y\"]\n\
+                parameters = [\"k\", \"a\"]\n\
+                radicals = { t = \"x^2 + a*y^2\" }\n";
+    let claim = "[[claim]]\nclaim = \"rank(t, x) = 2\"\nwhen = \"a = 0\"\n";
+    let f = scratch_text(
+        "radicals-condition",
+        "claim.toml",
+        &format!("{text}{claim}"),
+    );
+    let o = superint_in(f.parent().unwrap(), &["check", "claim.toml"]);
+    let err = String::from_utf8(o.stderr).unwrap();
+    assert_eq!(o.status.code(), Some(2), "{err}");
+    assert!(
+        err.starts_with(
+            "superint: error: claim.toml:9:9: the condition sets a, which the radicand of t = \
+             √(x² + ay²) involves: a condition on a radicand's variables is not supported"
+        ),
+        "{err}"
+    );
+    let f = scratch_text("radicals-condition", "plain.toml", text);
+    let f = f.to_str().unwrap();
+    let commands: [&[&str]; 4] = [
+        &["expand", f, "t^2", "--when", "a = 1"],
+        &["bracket", f, "t", "p_y", "--when", "y = 0"],
+        &["search", f, "--when", "a = 1"],
+        &["closure", f, "H", "--define", "T=t^2", "--when", "a = 0"],
+    ];
+    for args in commands {
+        let o = superint(args);
+        let err = String::from_utf8(o.stderr).unwrap();
+        assert_eq!(o.status.code(), Some(2), "{args:?}: {err}");
+        assert!(
+            err.contains("<command line>:1:1: the condition sets ")
+                && err.contains("which the radicand of t = √(x² + ay²) involves"),
+            "{args:?}: {err}"
+        );
+    }
+    // The library refuses the condition when it is made.
+    let file = load_str("plain.toml", text, &LimitsOverride::default()).expect("the file loads");
+    let vars = file.system().vars();
+    let zero = Expr::constant(vars, GaussianRational::from(0));
+    let err = Condition::all("x = 0", vec![(file.system().var("x"), zero)])
+        .expect_err("x is in the radicand");
+    assert!(err.to_string().starts_with("the condition sets x"), "{err}");
+    // A parameter outside the radicand may be set.
+    let out = superint_ok(&["expand", f, "k/t", "--when", "k = 2"]);
+    assert!(out.contains("k/t = 2/t"), "{out}");
+}

@@ -652,6 +652,15 @@ fn bad_inputs() -> Vec<(&'static str, Vec<u8>, &'static str, Vec<&'static str>)>
             check.clone(),
         ),
         (
+            "condition with a value that is not real",
+            base_with(
+                "claim = \"{A, H}",
+                "when = \"M = 1, p_x = i*x\"\nclaim = \"{A, H}",
+            ),
+            "bad.toml:14:22: the condition sets p_x to ix, which is not real",
+            check.clone(),
+        ),
+        (
             "claim without =",
             base_with("{A, H} = i*omega*A", "{A, H}"),
             "bad.toml:14:10: a claim reads `lhs = rhs`",
@@ -2489,7 +2498,8 @@ fn table_takes_family_instances_in_braces() {
 }
 
 /// A base fact of a tower's proof that fails shows what the bracket is, so that the mistake
-/// (here a sign: `{Ā, H} = −iω₁Ā`) can be read off.
+/// (here a sign: `{Ā, H} = −iω₁Ā`) can be read off, and, where it is another multiple of the
+/// base, the eigenvalue it has.
 #[test]
 fn a_failed_base_fact_shows_the_bracket() {
     let dir = scratch("failed-fact");
@@ -2518,7 +2528,7 @@ fn a_failed_base_fact_shows_the_bracket() {
     assert!(
         out.contains(
             "    1. computed: {conj(A), H} = (i w1) conj(A)                    FAILS\n       \
-             the bracket is −i w1 p_x − w1² x\n"
+             the bracket is −i w1 p_x − w1² x, so {conj(A), H} = (−i w1) conj(A)\n"
         ),
         "{out}"
     );
@@ -2536,7 +2546,27 @@ fn a_failed_base_fact_shows_the_bracket() {
     );
     let v: serde_json::Value = serde_json::from_slice(&o.stdout).expect("JSON");
     assert_eq!(v["proofs"][0]["facts"][0]["found"], "-i*w1*p_x - w1^2*x");
+    assert_eq!(
+        v["proofs"][0]["facts"][0]["found_statement"],
+        "{conj(A), H} = (−i w1) conj(A)"
+    );
     assert_eq!(v["proofs"][0]["facts"][1]["found"], serde_json::Value::Null);
+    assert_eq!(
+        v["proofs"][0]["facts"][1]["found_statement"],
+        serde_json::Value::Null
+    );
+    // A bracket that is no multiple of its base shows no eigenvalue.
+    let not_a_ladder = std::fs::read_to_string(dir.join("sign.toml"))
+        .unwrap()
+        .replace("p_x + i*w1*x", "p_x + i*w1*x + y");
+    std::fs::write(dir.join("not.toml"), not_a_ladder).expect("write not.toml");
+    let o = superint_in(&dir, &["tower", "--system", "not.toml", "--max", "1"]);
+    let out = text(&o.stdout);
+    assert_eq!(o.status.code(), Some(1), "{out}");
+    assert!(
+        out.contains("the bracket is ") && !out.contains(", so {conj(A), H}"),
+        "{out}"
+    );
 }
 
 /// A name or function misspelled only in case or underscores is pointed to the known one.
@@ -2831,7 +2861,9 @@ fn bracket_writes_the_bracket_in_the_files_functions() {
 /// at `I1 = I2 = I3 = 1`, where `C²` was found as `4 H²`, which holds there only, and no line
 /// was written; the search is made again at values that are not special, and a combination
 /// found there is proved by expanding it as it stands (the moments, of one weight, leave
-/// homogeneity nothing to lift by). A declared denominator zero at 1 (`a1 − a2`) likewise.
+/// homogeneity nothing to lift by). A declared denominator zero at 1 (`a1 − a2`) likewise;
+/// and where the combination found at other values does not lift, it is sought with the
+/// residual's parameters kept symbolic.
 #[test]
 fn a_residual_is_written_in_the_functions_where_the_parameters_at_one_are_special() {
     let dir = scratch("special-parameters");
@@ -2869,8 +2901,20 @@ fn a_residual_is_written_in_the_functions_where_the_parameters_at_one_are_specia
             })
             .collect::<Vec<_>>()
     };
+    std::fs::write(
+        dir.join("weights.toml"),
+        "hamiltonian = \"(p_x^2 + p_y^2)/2 + a*x^2/2 + b*y^2/2\"\n\
+         [phase_space]\ncoordinates = [\"x\", \"y\"]\nparameters = [\"a\", \"b\"]\n\
+         [[function]]\nname = \"L\"\nvalue = \"x*p_y - y*p_x\"\n\
+         [[function]]\nname = \"F\"\nvalue = \"x*y\"\n\
+         [[claim]]\nclaim = \"{L, H} = 0\"\nexpect = \"refuted\"\n",
+    )
+    .expect("write the file");
     assert_eq!(written("top.toml"), ["C^2", "H + C"]);
     assert_eq!(written("split.toml"), ["Hx^2"]);
+    // `{L, H} = (a − b) xy`: zero at a = b = 1, and at other values a multiple of F that
+    // homogeneity cannot lift (a and b have one weight), found with a and b kept symbolic.
+    assert_eq!(written("weights.toml"), ["a*F - b*F"]);
 }
 
 /// Names run together that are not declared read as the product of the declared names they

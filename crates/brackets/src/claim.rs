@@ -163,20 +163,31 @@ impl Condition {
         Ok(e.subst_many(&self.subs)?)
     }
 
-    /// Refuses a condition that sets a variable a denominator atom's polynomial involves: the
-    /// atom `1/(x − y)` would keep standing for `1/(x − y)`, not its value at the condition
-    /// (which may be `1/0`).
+    /// Refuses a condition that sets a variable a denominator atom's polynomial or a radicand
+    /// involves: the atom `1/(x − y)` would keep standing for `1/(x − y)`, not its value at
+    /// the condition (which may be `1/0`), and the radical `r = √(x² + y² + z²)` would keep
+    /// `r² = x² + y² + z²` at `z = 0`.
     pub fn keeps_denominators(&self) -> Result<(), EngineError> {
         let Some((_, first)) = self.subs.first() else {
             return Ok(());
         };
         let atoms = Expr::denominator_atoms(first.vars())?;
-        // The first atom that a variable set involves, and the first such variable.
-        let refusal = (0..atoms.len()).find_map(|k| {
-            self.subs
-                .iter()
-                .find_map(|(v, _)| Condition::sets_a_denominator(&atoms[k..=k], *v))
-        });
+        let radicals = Expr::radicals(first.vars())?;
+        // The first atom (then radical) that a variable set involves, and the first such
+        // variable.
+        let refusal = (0..atoms.len())
+            .find_map(|k| {
+                self.subs
+                    .iter()
+                    .find_map(|(v, _)| Condition::sets_a_denominator(&atoms[k..=k], *v))
+            })
+            .or_else(|| {
+                (0..radicals.len()).find_map(|k| {
+                    self.subs
+                        .iter()
+                        .find_map(|(v, _)| Condition::sets_a_radicand(&radicals[k..=k], *v))
+                })
+            });
         match refusal {
             Some(why) => Err(EngineError::Invalid(why)),
             None => Ok(()),
@@ -193,6 +204,20 @@ impl Condition {
              denominator's variables is not supported",
             vars.variable(v).unicode(),
             vars.variable(*atom).unicode()
+        ))
+    }
+
+    /// Why a condition may not set `v`, if it may not: the radicand of one of the `radicals`
+    /// involves it (see [`Condition::keeps_denominators`]).
+    pub fn sets_a_radicand(radicals: &[(Var, Expr)], v: Var) -> Option<String> {
+        let (radical, radicand) = radicals.iter().find(|(_, r)| r.contains(v))?;
+        let vars = radicand.vars();
+        Some(format!(
+            "the condition sets {}, which the radicand of {} = √({radicand}) involves: a \
+             condition on a radicand's variables is not supported (declare the radical with \
+             the value in its radicand instead)",
+            vars.variable(v).unicode(),
+            vars.variable(*radical).unicode(),
         ))
     }
 

@@ -175,6 +175,10 @@ pub struct Closure {
     pub condition: Option<String>,
     /// The parameter values used for the linear algebra.
     pub parameters: Vec<(Var, Rational)>,
+    /// The declared denominator that is zero when the parameters are 1, their default: those
+    /// in it that were not given values took
+    /// [`GENERIC_VALUES`](crate::search::GENERIC_VALUES) instead.
+    pub denominator_zero_at_one: Option<Var>,
     /// Whether the weights determine every parameter (so that results can be lifted).
     pub liftable: bool,
     /// `brackets[a][b] = {G_a, G_b}`.
@@ -377,6 +381,7 @@ pub fn closure_of(
         condition: condition.map(|c| c.text.clone()),
         liftable: lifting.liftable(),
         parameters: span.parameters,
+        denominator_zero_at_one: span.denominator_zero_at_one,
         brackets,
         relations,
         monomials: span.monos.len(),
@@ -1185,12 +1190,33 @@ mod tests {
         assert_eq!(c.relations[0].poly.to_string(), "a W − X + 1");
     }
 
-    /// An atom whose polynomial vanishes at the fixed values has no value there: refused,
-    /// with the values to change; other values work.
+    /// An atom whose polynomial vanishes at the given values has no value there: refused,
+    /// with the values to change; other values work. When it vanishes at the default values,
+    /// 1, the parameters in it take generic values instead.
     #[test]
     fn an_atom_zero_at_the_fixed_values_is_refused() {
         let system = with_atoms(&[("T", "x/(a - b)"), ("X", "x")]);
-        let err = closure(&system, &["T", "X"], &ClosureOptions::new(1)).unwrap_err();
+        let (a, b) = (system.var("a"), system.var("b"));
+        let c = closure(&system, &["T", "X"], &ClosureOptions::new(1)).unwrap();
+        let generic = |(n, d): (i64, i64)| Rational::new(n, d);
+        let (va, vb) = (
+            generic(crate::search::GENERIC_VALUES[0]),
+            generic(crate::search::GENERIC_VALUES[1]),
+        );
+        assert_eq!((&va, &vb), (&Rational::from(7), &Rational::new(11, 2)));
+        assert_eq!(c.parameters, [(a, va), (b, vb)]);
+        let atom = c
+            .denominator_zero_at_one
+            .expect("a − b is zero at a = b = 1");
+        assert_eq!(system.vars().variable(atom).unicode(), "(a − b)");
+        // (a − b) T = X, at these values: (7 − 11/2) T = X.
+        assert_eq!(c.relations.len(), 1);
+        assert_eq!(c.relations[0].poly.to_string(), "3 T − 2 X");
+        assert!(!c.relations[0].symbolic);
+        let options = ClosureOptions::new(1)
+            .fix(a, Rational::one())
+            .fix(b, Rational::one());
+        let err = closure(&system, &["T", "X"], &options).unwrap_err();
         assert_eq!(
             err.to_string(),
             "the denominator (a − b) is zero at a = 1, b = 1, the values the linear algebra \

@@ -3,7 +3,7 @@
 
 use std::collections::HashMap;
 
-use trigpoly::{Expr, GaussianRational, Rational, Var, Vars};
+use trigpoly::{Expr, GaussianRational, Rational, Var, VarKind, Vars};
 
 use crate::error::EngineError;
 use crate::modular::SparseVec;
@@ -159,7 +159,7 @@ impl LiftContext<'_> {
             .map(|(m, c)| (c.clone(), Vec::new(), *m))
             .collect();
         if self.exact {
-            return Ok((normalize(self.ring_poly(&fixed_terms)?), true));
+            return Ok((normalize(self.ring_poly(&fixed_terms)?)?, true));
         }
         // Reference: the leading (last) monomial.
         let lead = terms
@@ -170,13 +170,13 @@ impl LiftContext<'_> {
         if let Some(target) = self.weight_of(&self.monos[lead]) {
             if let Some(lifted) = self.lift_terms(&terms, &target)? {
                 if self.expand(&lifted)?.vanishes()? {
-                    return Ok((normalize(self.ring_poly(&lifted)?), true));
+                    return Ok((normalize(self.ring_poly(&lifted)?)?, true));
                 }
             }
         }
         // Found at the fixed values, it may hold for every value as it stands.
         let proved = self.expand(&fixed_terms)?.vanishes()?;
-        Ok((normalize(self.ring_poly(&fixed_terms)?), proved))
+        Ok((normalize(self.ring_poly(&fixed_terms)?)?, proved))
     }
 
     /// A bracket's expression, lifted and proved if possible.
@@ -223,10 +223,63 @@ fn equal(a: &Expr, b: &Expr) -> Result<bool, EngineError> {
     Ok(a.checked_sub(b)?.vanishes()?)
 }
 
-/// A relation scaled to coprime integer coefficients with a positive leading one.
-fn normalize(e: Expr) -> Expr {
-    match e.content().try_inv() {
+/// A relation scaled to coprime integer coefficients with a positive leading one, and, for
+/// each parameter, by the power of it that leaves its least exponent 0 where that leaves it
+/// in fewer terms: `c² + Q = R`, not `1 + Q/c² = R/c²`, and `A + B = 0`, not `kA + kB = 0`,
+/// but `M²g⁴/ω⁴ + 4Mg² H/ω² + 4H² = 4ω² L² + …` as it is (a relation is one up to a nonzero
+/// factor).
+fn normalize(e: Expr) -> Result<Expr, EngineError> {
+    let ring = e.vars();
+    let shift: Vec<(Var, i64)> = ring
+        .vars()
+        .filter(|&v| ring.variable(v).kind() == VarKind::Parameter)
+        .filter_map(|v| {
+            let low = e.low_degree(v).filter(|&low| low != 0)?;
+            let holding = |exponent: i64| e.terms().filter(|t| t.exponent(v) != exponent).count();
+            (holding(low) < holding(0)).then_some((v, -low))
+        })
+        .collect();
+    let e = match shift.is_empty() {
+        true => e,
+        false => e.checked_mul(&Expr::monomial(ring, GaussianRational::from(1), &shift)?)?,
+    };
+    Ok(match e.content().try_inv() {
         Some(inv) => e.scale_rational(&inv),
         None => e,
+    })
+}
+
+#[cfg(test)]
+mod tests {
+    use trigpoly::{Expr, VarSet};
+
+    use super::normalize;
+
+    fn normalized(text: &str) -> String {
+        let ring = VarSet::builder()
+            .coordinate("Q")
+            .coordinate("R")
+            .coordinate("H")
+            .coordinate("L")
+            .parameter("c")
+            .parameter("k")
+            .parameter("w")
+            .build()
+            .expect("valid names");
+        let e = Expr::parse(&ring, text).expect("reads");
+        normalize(e).expect("normalizes").to_string()
+    }
+
+    /// A parameter's power comes off where that leaves it in fewer terms, and stays where it
+    /// would put it in more; the content comes off too.
+    #[test]
+    fn a_relation_keeps_a_parameter_in_the_fewest_terms() {
+        assert_eq!(normalized("1 + Q/c^2 - R/c^2"), "Q − R + c²");
+        assert_eq!(normalized("2*k*Q - 4*k*R"), "Q − 2R");
+        assert_eq!(
+            normalized("k^2/w^4 + 4*k*H/w^2 + 4*H^2 - 4*w^2*L^2"),
+            "4H² + 4kH/w² − 4w²L² + k²/w⁴"
+        );
+        assert_eq!(normalized("c*Q + c*R + H/c"), "c²Q + c²R + H");
     }
 }

@@ -14,7 +14,7 @@ use crate::claim::Condition;
 use crate::clearing::Clearing;
 use crate::error::EngineError;
 use crate::modular::SparseVec;
-use crate::search::{check_parameters, fix_parameters, is_phase_free};
+use crate::search::{check_parameters, fix_parameters, is_phase_free, off_vanishing_denominators};
 use crate::system::{NamedFunction, System};
 
 /// An expression after the condition, if there is one.
@@ -61,6 +61,9 @@ pub(super) struct Span {
     /// The fixed parameters and their values: those of the generators and targets, each as
     /// given or 1.
     pub(super) parameters: Vec<(Var, Rational)>,
+    /// The declared denominator that is zero at the default values, 1, which moved the
+    /// parameters in it ([`off_vanishing_denominators`]).
+    pub(super) denominator_zero_at_one: Option<Var>,
     /// Whether some generator is complex at the fixed values: then each monomial has a
     /// column of its own and one for `i` times it.
     pub(super) complex: bool,
@@ -108,7 +111,14 @@ impl Span {
             .into_iter()
             .chain(symbolic.iter().map(|&v| Expr::var(vars, v)))
             .collect();
-        let parameters = fixed_parameters(system, options, g_sym.iter().chain(targets));
+        let mut parameters = fixed_parameters(system, options, g_sym.iter().chain(targets));
+        let space = system.space();
+        let used_atoms = space
+            .denominator_atoms()
+            .iter()
+            .filter(|(atom, _)| g_sym.iter().chain(targets).any(|e| e.contains(*atom)));
+        let denominator_zero_at_one =
+            off_vanishing_denominators(vars, &mut parameters, &options.fixed, used_atoms);
         let fix = |e: &Expr| fix_parameters(e, &parameters);
         let g: Vec<Expr> = g_sym.iter().map(fix).collect::<Result<_, _>>()?;
         let complex = g.iter().any(|e| !e.is_real());
@@ -136,6 +146,7 @@ impl Span {
             g_sym,
             constant,
             parameters,
+            denominator_zero_at_one,
             complex,
             monos,
             col_ids: Vec::new(),

@@ -103,8 +103,8 @@ mod result;
 mod tests;
 
 pub use options::{SearchOptions, SearchSpace, DEFAULT_MAX_PRODUCTS};
-pub(crate) use parameters::check_parameters;
-pub use parameters::fix_parameters;
+pub(crate) use parameters::{check_parameters, off_vanishing_denominators};
+pub use parameters::{fix_parameters, GENERIC_VALUES};
 pub(crate) use proof::is_phase_free;
 pub use proof::lift_and_prove;
 pub use result::{
@@ -165,7 +165,11 @@ pub fn search(system: &System, options: &SearchOptions) -> Result<SearchResult, 
         symbolic: options.symbolic.iter().copied().unique().collect(),
         ..options.clone()
     };
-    let (parameters, problem) = fixed_search_problem(system, options)?;
+    let FixedSearch {
+        parameters,
+        denominator_zero_at_one,
+        problem,
+    } = fixed_search_problem(system, options)?;
 
     // The images {φ_j, H} as real equations over Q, and their kernel, block by block.
     let (solved, nrows) = solve(system, &problem, &parameters, start, &mut timings)?;
@@ -207,6 +211,7 @@ pub fn search(system: &System, options: &SearchOptions) -> Result<SearchResult, 
         space: options.space,
         condition: condition.map(|c| c.text.clone()),
         parameters,
+        denominator_zero_at_one,
         liftable,
         vars: system.vars().clone(),
         variables: problem.variables.clone(),
@@ -221,6 +226,15 @@ pub fn search(system: &System, options: &SearchOptions) -> Result<SearchResult, 
     })
 }
 
+/// The search at fixed parameter values: the values, why they are not 1 if they are not, and
+/// the linear problem at them.
+struct FixedSearch {
+    parameters: Vec<(Var, Rational)>,
+    /// The declared denominator that 1 makes zero, which moved its parameters off 1.
+    denominator_zero_at_one: Option<Var>,
+    problem: Problem,
+}
+
 /// The parameters' values for the linear algebra and the linear problem at those values,
 /// once what the search cannot answer is refused: a condition that the flow leaves, fixed or
 /// symbolic parameters that are no parameters of the system, and what [`refuse_unreal`]
@@ -228,16 +242,26 @@ pub fn search(system: &System, options: &SearchOptions) -> Result<SearchResult, 
 fn fixed_search_problem(
     system: &System,
     options: &SearchOptions,
-) -> Result<(Vec<(Var, Rational)>, Problem), EngineError> {
+) -> Result<FixedSearch, EngineError> {
     let condition = options.condition.as_ref();
     if let Some(c) = condition {
         c.kept_by_flow(system)?;
     }
     check_parameters(system.vars(), &options.symbolic, &options.fixed)?;
     refuse_unreal(system, options)?;
-    let parameters = parameter_values(system, condition, &options.fixed, &options.symbolic);
+    let mut parameters = parameter_values(system, condition, &options.fixed, &options.symbolic);
+    let zero_at_one = off_vanishing_denominators(
+        system.vars(),
+        &mut parameters,
+        &options.fixed,
+        system.space().denominator_atoms().iter(),
+    );
     let problem = fixed_problem(system, options, &parameters)?;
-    Ok((parameters, problem))
+    Ok(FixedSearch {
+        parameters,
+        denominator_zero_at_one: zero_at_one,
+        problem,
+    })
 }
 
 /// The kernel of the problem's equations and how many equations there are: the images

@@ -85,6 +85,60 @@ pub(super) fn parameter_values(
     out
 }
 
+/// Values of the parameters, in the order of their declaration, that the linear algebra takes
+/// instead of 1 where 1 is a special point (a declared denominator zero there, for the search
+/// and the closure, and the second search for a function written in others, superint's
+/// `written_in_functions`): primes over 1, 2 and 3, so that no small
+/// relation (equal values, one the sum of two others) holds among them. Parameters past the
+/// list keep the value 1.
+pub const GENERIC_VALUES: [(i64, i64); 12] = [
+    (7, 1),
+    (11, 2),
+    (13, 3),
+    (17, 1),
+    (19, 2),
+    (23, 3),
+    (29, 1),
+    (31, 2),
+    (37, 3),
+    (41, 1),
+    (43, 2),
+    (47, 3),
+];
+
+/// Moves the parameters that took the value 1 by default (those not in `given`) off a
+/// declared denominator that 1 makes zero: `a − b` has no value at `a = b = 1`, where the
+/// linear algebra would refuse it. Each such parameter of each of the `atoms` that is zero at
+/// `values` takes its [`GENERIC_VALUES`] entry. Returns the first atom that was zero, for the
+/// report; `None` when none was, or when none that was has a parameter to move (the clearing
+/// then refuses it, naming the values).
+pub(crate) fn off_vanishing_denominators<'a>(
+    vars: &Vars,
+    values: &mut [(Var, Rational)],
+    given: &[(Var, Rational)],
+    atoms: impl Iterator<Item = &'a (Var, Expr)>,
+) -> Option<Var> {
+    let vanishing: Vec<&(Var, Expr)> = atoms
+        .filter(|(_, d)| fix_parameters(d, values).is_ok_and(|at| at.is_zero()))
+        .collect();
+    let mut moved = None;
+    for (atom, d) in vanishing {
+        for (v, value) in values.iter_mut() {
+            if d.contains(*v) && !given.iter().any(|g| g.0 == *v) {
+                let index = vars
+                    .vars()
+                    .filter(|&w| vars.variable(w).kind() == VarKind::Parameter)
+                    .position(|p| p == *v);
+                if let Some(&(n, m)) = index.and_then(|k| GENERIC_VALUES.get(k)) {
+                    *value = Rational::new(n, m);
+                    moved.get_or_insert(*atom);
+                }
+            }
+        }
+    }
+    moved
+}
+
 /// The search's problem with the parameters at `parameters`, in `H` and in the condition.
 pub(super) fn fixed_problem(
     system: &System,

@@ -90,6 +90,10 @@ pub struct SearchResult {
     pub condition: Option<String>,
     /// The parameters as fixed for the linear algebra.
     pub parameters: Vec<(Var, Rational)>,
+    /// The declared denominator that is zero when the parameters are 1, their default: those
+    /// in it that were not given values took [`GENERIC_VALUES`](super::GENERIC_VALUES)
+    /// instead.
+    pub denominator_zero_at_one: Option<Var>,
     /// Whether lifting back to symbolic parameters was possible at all (the weights determine
     /// every parameter).
     pub liftable: bool,
