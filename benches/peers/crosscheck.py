@@ -230,7 +230,7 @@ parameters = ["M", "omega"]
 """,
         s, [("x", "p_x"), ("y", "p_y"), ("theta", "p_theta"), ("phi", "p_phi")], [], atoms,
         points, [("p_theta", "2*M*omega/3"), ("p_phi", "p_theta - omega"), ("M", "omega^2"),
-                 ("p_x", "i*p_y")], extra)
+                 ("p_x", "-p_y")], extra)
 
 
 def poisson_system():
