@@ -637,7 +637,6 @@ fn tower_failures(
     Ok(failures)
 }
 
-/// `e` under the condition, if any ([`Condition::apply_where_defined`]).
 /// The single term `μ` with `flow = μ·base` (under `when`), if there is one: the eigenvalue
 /// a base function has where it is not the one stated (`−i p_θ/I`, say). `μ` is the ratio of
 /// the leading terms (a monomial order keeps the leading term of a product by a monomial),
@@ -654,6 +653,7 @@ fn multiple_of(flow: &Expr, base: &Expr, when: Option<&Condition>) -> Option<Exp
     (scaled == *flow).then_some(mu)
 }
 
+/// `e` under the condition, if any ([`Condition::apply_where_defined`]).
 fn settled(when: Option<&Condition>, e: Expr) -> Result<Expr, EngineError> {
     match when {
         None => Ok(e),
