@@ -421,29 +421,14 @@ pub(crate) fn parse_condition(
         .map(|a| a.shown.as_str())
         .collect::<Vec<_>>()
         .join(", ");
-    // The phase space and the parameters are real: a value that is not sets no point of them
-    // (at `p_x = ix`, `p_x² + x² = 0` would be proved, of no real point).
-    if let Some(a) = assignments.iter().find(|a| !a.value.is_real()) {
-        return Err(a.rhs.error(
-            source,
-            ErrorKind::Condition,
-            a.rhs.trimmed_span(),
-            format!(
-                "the condition sets {} to {}, which is not real: the variables and parameters \
-                 take real values",
-                vars.variable(a.var).unicode(),
-                a.value
-            ),
-        ));
-    }
     let subs = assignments
         .iter()
         .map(|a| (a.var, a.value.clone()))
         .collect();
     Condition::all(&text, subs).map_err(|e| {
-        // A circular condition is shown at the value of the variable it is about.
+        // A refused condition is shown at the value of the variable it is about.
         let at = match &e {
-            EngineError::CircularCondition { var, .. } => {
+            EngineError::RefusedCondition { var, .. } => {
                 assignments.iter().find(|a| a.var == *var)
             }
             _ => None,

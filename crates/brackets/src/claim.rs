@@ -41,6 +41,20 @@ fn not_on_the_circle(v: Var, value: &Expr) -> Option<String> {
     })
 }
 
+/// Why setting `v` to `value` sets no point of phase space, when `v` is no angle: its
+/// variables and parameters are real, so a value that is not sets none (at `p_x = ix`,
+/// `p_x² + x² = 0` was proved, of no real point).
+fn not_real(v: Var, value: &Expr) -> Option<String> {
+    let vars = value.vars();
+    (vars.variable(v).kind() != VarKind::Angle && !value.is_real()).then(|| {
+        format!(
+            "the condition sets {} to {value}, which is not real: the variables and parameters \
+             take real values",
+            vars.variable(v).unicode()
+        )
+    })
+}
+
 impl Condition {
     /// `v = value`, where `value` does not mention `v` (a value read from input goes through
     /// [`Condition::all`], which says so when it does).
@@ -50,7 +64,8 @@ impl Condition {
     /// If `value` mentions `v`: the condition would be an equation, not a substitution; and
     /// if `v` is an angle and `value` a constant of modulus other than 1: functions depend on
     /// an angle through `e^{iθ}`, so the value set is that of `e^{iθ}` (1 for `θ = 0`, `i` for
-    /// `θ = π/2`), never 0. [`Condition::all`] refuses both with an error.
+    /// `θ = π/2`), never 0; and if `v` is no angle and `value` is not real: the variables and
+    /// parameters take real values. [`Condition::all`] refuses all three with an error.
     pub fn new(text: &str, v: Var, value: Expr) -> Self {
         assert!(
             !value.contains(v),
@@ -62,6 +77,11 @@ impl Condition {
             "a condition sets e^{{iθ}} off the unit circle ({text}); Condition::all refuses it \
              with an error"
         );
+        assert!(
+            not_real(v, &value).is_none(),
+            "a condition sets a real variable to a value that is not real ({text}); \
+             Condition::all refuses it with an error"
+        );
         Condition {
             text: text.to_string(),
             subs: vec![(v, value)],
@@ -72,17 +92,20 @@ impl Condition {
     /// variables set by the others (`p_θ = Iω, ω = 1/2`): the values are substituted into one
     /// another until none mentions a variable the condition sets. A variable set in terms of
     /// itself, directly (`x = 2x`) or through the others (`x = y, y = x`), is refused: such a
-    /// condition is an equation, not a substitution.
+    /// condition is an equation, not a substitution. So is a value that is not real (for an
+    /// angle, one off the unit circle), and a variable that a denominator or a radicand
+    /// involves ([`Condition::keeps_denominators`]). Every refusal is an
+    /// [`EngineError::RefusedCondition`] naming the variable.
     pub fn all(text: &str, subs: Vec<(Var, Expr)>) -> Result<Self, EngineError> {
         let mut subs = subs;
-        if let Some(why) = subs.iter().find_map(|(v, e)| not_on_the_circle(*v, e)) {
-            return Err(EngineError::Invalid(why));
+        for (v, value) in &subs {
+            if let Some(why) = not_on_the_circle(*v, value).or_else(|| not_real(*v, value)) {
+                return Err(refused(*v, why));
+            }
         }
         if let Some(k) = (1..subs.len()).find(|&k| subs[..k].iter().any(|s| s.0 == subs[k].0)) {
             let name = subs[k].1.vars().variable(subs[k].0).unicode().to_string();
-            return Err(EngineError::Invalid(format!(
-                "the condition sets {name} twice"
-            )));
+            return Err(refused(subs[k].0, format!("the condition sets {name} twice")));
         }
         Condition {
             text: text.to_string(),
@@ -177,19 +200,19 @@ impl Condition {
         // variable.
         let refusal = (0..atoms.len())
             .find_map(|k| {
-                self.subs
-                    .iter()
-                    .find_map(|(v, _)| Condition::sets_a_denominator(&atoms[k..=k], *v))
+                self.subs.iter().find_map(|(v, _)| {
+                    Condition::sets_a_denominator(&atoms[k..=k], *v).map(|why| (*v, why))
+                })
             })
             .or_else(|| {
                 (0..radicals.len()).find_map(|k| {
-                    self.subs
-                        .iter()
-                        .find_map(|(v, _)| Condition::sets_a_radicand(&radicals[k..=k], *v))
+                    self.subs.iter().find_map(|(v, _)| {
+                        Condition::sets_a_radicand(&radicals[k..=k], *v).map(|why| (*v, why))
+                    })
                 })
             });
         match refusal {
-            Some(why) => Err(EngineError::Invalid(why)),
+            Some((v, why)) => Err(refused(v, why)),
             None => Ok(()),
         }
     }
@@ -295,13 +318,18 @@ impl Condition {
 fn circular(v: Var, subs: &[(Var, Expr)]) -> EngineError {
     let vars = subs[0].1.vars();
     let name = vars.variable(v).unicode().to_string();
-    EngineError::CircularCondition {
-        var: v,
-        message: format!(
+    refused(
+        v,
+        format!(
             "the condition sets {name} in terms of itself (directly or through the other \
              variables it sets): a condition is a substitution, so give {name} a value free of them"
         ),
-    }
+    )
+}
+
+/// A condition refused for what it does to `v`.
+fn refused(v: Var, message: String) -> EngineError {
+    EngineError::RefusedCondition { var: v, message }
 }
 
 /// An identity to check: `lhs = rhs`, under an optional condition.

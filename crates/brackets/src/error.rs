@@ -24,9 +24,11 @@ pub enum EngineError {
     /// A name that the system does not define.
     #[error("unknown function '{0}'")]
     UnknownName(String),
-    /// A condition that sets a variable in terms of itself (`x = y, y = x`).
+    /// A condition refused for what it does to one variable: sets it in terms of itself
+    /// (`x = y, y = x`) or twice, to a value that is not real (or, for an angle, off the unit
+    /// circle), or where a denominator or a radicand involves it.
     #[error("{message}")]
-    CircularCondition {
+    RefusedCondition {
         /// The variable.
         var: trigpoly::Var,
         /// What is wrong, in words.

@@ -324,4 +324,35 @@ mod tests {
         let unit = rotor.parse("3/5 + 4*i/5").unwrap();
         assert!(crate::Condition::all("", vec![(theta, unit)]).is_ok());
     }
+
+    /// Phase space and the parameters are real, so a value that is not sets no point of them
+    /// (at `p_x = ix`, `p_x² + x² = 0` was proved): `Condition::all` refuses it, naming the
+    /// variable, whether the value is written so or only resolves so through another
+    /// assignment; `new` panics. A real value with `i` in it is kept.
+    #[test]
+    fn a_condition_sets_a_real_variable_to_a_real_value_only() {
+        let rotor = harmonic_rotor();
+        let (p_x, omega) = (rotor.var("p_x"), rotor.var("omega"));
+        let e = |s: &str| rotor.parse(s).unwrap();
+        let err = crate::Condition::all("p_x = ix", vec![(p_x, e("i*x"))]).unwrap_err();
+        assert_eq!(
+            err,
+            EngineError::RefusedCondition {
+                var: p_x,
+                message: "the condition sets p_x to ix, which is not real: the variables and \
+                          parameters take real values"
+                    .into()
+            }
+        );
+        let through = vec![(p_x, e("omega*x")), (omega, e("2*i"))];
+        let err = crate::Condition::all("", through).unwrap_err();
+        assert!(
+            matches!(err, EngineError::RefusedCondition { var, .. } if var == omega),
+            "{err}"
+        );
+        let real = crate::Condition::all("", vec![(p_x, e("i*(x - i*y) - i*x"))]).unwrap();
+        assert_eq!(real.apply(&e("p_x^2")).unwrap(), e("y^2"));
+        let set = std::panic::catch_unwind(|| crate::Condition::new("p_x = ix", p_x, e("i*x")));
+        assert!(set.is_err());
+    }
 }
