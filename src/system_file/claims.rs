@@ -428,9 +428,7 @@ pub(crate) fn parse_condition(
     Condition::all(&text, subs).map_err(|e| {
         // A refused condition is shown at the value of the variable it is about.
         let at = match &e {
-            EngineError::RefusedCondition { var, .. } => {
-                assignments.iter().find(|a| a.var == *var)
-            }
+            EngineError::RefusedCondition { var, .. } => assignments.iter().find(|a| a.var == *var),
             _ => None,
         };
         let rhs = &at.unwrap_or(&assignments[0]).rhs;

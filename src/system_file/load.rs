@@ -389,11 +389,9 @@ impl<'a> Builder<'a> {
             .collect();
         space.clone().with_brackets(&named).map_err(|e| {
             let at = match &e {
-                EngineError::Jacobi(violation) => entries
-                    .iter()
-                    .rev()
-                    .find(|(a, b, ..)| violation.triple.contains(a) && violation.triple.contains(b))
-                    .map(|e| e.3.clone()),
+                EngineError::Jacobi(violation) => {
+                    entries.get(violation.bracket).map(|e| e.3.clone())
+                }
                 _ => None,
             };
             self.error(
@@ -591,6 +589,36 @@ impl<'a> Builder<'a> {
                 ErrorKind::Name,
                 span,
                 format!("'{name}' is already declared as {other} on line {line}"),
+            ));
+        }
+        // A name that is an instance of a family (`K_2_0` beside `K`) would stand for two
+        // things, and `K_{2,0}` would read as the name: refused in either order.
+        let instance = match what {
+            FAMILY => self
+                .names
+                .iter()
+                .find(|(other, _)| instance_head(other) == Some(name)),
+            _ => instance_head(name)
+                .and_then(|head| self.names.get_key_value(head))
+                .filter(|(_, (kind, _))| *kind == FAMILY),
+        };
+        if let Some((other, (kind, at))) = instance {
+            let line = super::error::locate(&self.source.text, at.clone()).line;
+            let (instance, family) = match what {
+                FAMILY => (other.as_str(), name),
+                _ => (name, other.as_str()),
+            };
+            let (m, n) = instance[family.len() + 1..]
+                .split_once('_')
+                .expect("an instance has two indices");
+            return Err(self.error(
+                ErrorKind::Name,
+                span,
+                format!(
+                    "'{name}' cannot be {what} of this file, which declares {kind} '{other}' on \
+                     line {line}: '{instance}' is the instance {family}_{{{m},{n}}} of the \
+                     family {family}; give one of them another name"
+                ),
             ));
         }
         self.names.insert(name.to_string(), (what, span));
@@ -906,7 +934,7 @@ impl<'a> Builder<'a> {
     fn families(&mut self, file: &mut LoadedSystem, model: &SystemModel) -> Result<(), FileError> {
         for spanned in &model.family {
             let f = spanned.get_ref();
-            self.declare(f.name.get_ref(), f.name.span(), "a family")?;
+            self.declare(f.name.get_ref(), f.name.span(), FAMILY)?;
             let indices = match &f.indices {
                 None => ["m".to_string(), "n".to_string()],
                 Some(list) => {
@@ -1092,4 +1120,15 @@ fn variables_builder(
             .flatten()
             .map(|n| n.get_ref().as_str())
     }))
+}
+
+/// How [`Builder::declare`] calls a family.
+const FAMILY: &str = "a family";
+
+/// The family name an instance name would have, `K` of `K_2_0` (two indices of digits).
+fn instance_head(name: &str) -> Option<&str> {
+    let mut parts = name.rsplitn(3, '_');
+    let digits = |s: &str| !s.is_empty() && s.bytes().all(|b| b.is_ascii_digit());
+    let (n, m, head) = (parts.next()?, parts.next()?, parts.next()?);
+    (digits(m) && digits(n) && !head.is_empty()).then_some(head)
 }

@@ -253,7 +253,12 @@ impl LoadedSystem {
 
     /// `a/b`.
     fn print_quotient(&self, a: &Tree, b: &Tree, spaced: bool) -> Printed {
-        let a = self.print(a, spaced).wrapped(QUOTIENT);
+        // `(x sin θ)/2`, not `x sin θ/2`, which reads as the sine of `θ/2`.
+        let at_least = match ends_in_bare_trig(a) {
+            true => ATOM + 1,
+            false => QUOTIENT,
+        };
+        let a = self.print(a, spaced).wrapped(at_least);
         let b = self.print(b, spaced).wrapped(POWER);
         Printed {
             text: format!("{}/{}", a.text, b.text),
@@ -371,5 +376,23 @@ impl LoadedSystem {
         p.first_long = true;
         p.last_long = true;
         p
+    }
+}
+
+/// Whether `tree` is printed ending in `cos θ` or `sin θ` of a bare angle (`x cos θ`,
+/// `cos²θ`), which a `/` after it would seem to divide the angle of.
+fn ends_in_bare_trig(tree: &Tree) -> bool {
+    match &tree.kind {
+        ExprKind::Call(f, _, args) => {
+            matches!(f.as_str(), "cos" | "sin")
+                && matches!(&args[..], [arg] if matches!(arg.kind, ExprKind::Name(_)))
+        }
+        ExprKind::Pow(a, b) => {
+            matches!(b.kind, ExprKind::Integer(_))
+                && matches!(a.kind, ExprKind::Call(..))
+                && ends_in_bare_trig(a)
+        }
+        ExprKind::Mul(_, b) | ExprKind::Neg(b) => ends_in_bare_trig(b),
+        _ => false,
     }
 }

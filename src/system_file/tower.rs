@@ -97,6 +97,14 @@ fn degree(tree: &Tree, indices: &[String; 2]) -> Option<u32> {
             ExprKind::Integer(k) => degree(a, indices)?.checked_mul(u32::try_from(k).ok()?),
             _ => None,
         },
+        // A name before parentheses multiplies them: `i(mω − nΩ)` has the degree of its sum.
+        ExprKind::Call(f, _, args)
+            if args.len() == 1
+                && !indices.contains(f)
+                && !trigpoly::FUNCTIONS.contains(&f.as_str()) =>
+        {
+            degree(&args[0], indices)
+        }
         ExprKind::Pow(..) | ExprKind::Call(..) | ExprKind::Bracket(..) => free(tree).then_some(0),
     }
 }
@@ -164,12 +172,16 @@ impl LoadedSystem {
     /// polynomial of total degree at most `d` in the indices: so is the difference, which is
     /// then zero when it vanishes on the grid `0 ≤ m, n ≤ d` (a polynomial of degree at most
     /// `d` in each variable is determined by its values there), so the grid decides it exactly.
+    /// Where a base is zero (`zero`, after the condition) so is every instance with a power
+    /// of it, which holds whatever `λ` is there: only `m = 0` (or `n = 0`) is compared, on
+    /// the grid's line, which decides it as well.
     fn eigenvalue_is_linear(
         &self,
         k: usize,
         d: u32,
         shown: &str,
         when: Option<&Condition>,
+        zero: [bool; 2],
     ) -> Result<Fact, FileError> {
         let [m, n] = &self.families[k].indices;
         let family = &self.families[k];
@@ -183,8 +195,10 @@ impl LoadedSystem {
         let (la, lb) = (eigenvalue(1, 0)?, eigenvalue(0, 1)?);
         let top = i64::from(d);
         let mut differs = None;
-        'grid: for i in 0..=top {
-            for j in 0..=top {
+        // The indices of a zero base stay 0: the instances there are not zero.
+        let (top_m, top_n) = (if zero[0] { 0 } else { top }, if zero[1] { 0 } else { top });
+        'grid: for i in 0..=top_m {
+            for j in 0..=top_n {
                 let linear = la
                     .scale(&i.into())
                     .checked_add(&lb.scale(&j.into()))
@@ -195,12 +209,28 @@ impl LoadedSystem {
                 }
             }
         }
-        let points = (top + 1) * (top + 1);
+        let points = (top_m + 1) * (top_n + 1);
+        let kmn = format!("{}_{{{m},{n}}}", family.display);
+        let (range, only) = match zero {
+            [false, false] => (format!("0 ≤ {m}, {n} ≤ {d}"), String::new()),
+            [true, false] => (
+                format!("{m} = 0, 0 ≤ {n} ≤ {d}"),
+                format!(" where {kmn} is not 0 (the first base is 0, so {kmn} is 0 for {m} ≥ 1)"),
+            ),
+            [false, true] => (
+                format!("0 ≤ {m} ≤ {d}, {n} = 0"),
+                format!(" where {kmn} is not 0 (the second base is 0, so {kmn} is 0 for {n} ≥ 1)"),
+            ),
+            [true, true] => (
+                format!("{m} = {n} = 0"),
+                format!(" where {kmn} is not 0 (both bases are 0, so {kmn} is 0 but at (0, 0))"),
+            ),
+        };
         let statement = match differs {
             None => format!(
-                "λ({m}, {n}) = {shown} equals {m}λ(1, 0) + {n}λ(0, 1): both are polynomials of \
-                 degree at most {d} in {m}, {n}, and they agree at the {points} points \
-                 0 ≤ {m}, {n} ≤ {d}"
+                "λ({m}, {n}) = {shown} equals {m}λ(1, 0) + {n}λ(0, 1){only}: both are \
+                 polynomials of degree at most {d} in {m}, {n}, and they agree at the {points} \
+                 points {range}"
             ),
             Some((i, j)) => format!(
                 "λ({m}, {n}) = {shown} equals {m}λ(1, 0) + {n}λ(0, 1): they differ at \
@@ -250,7 +280,12 @@ impl LoadedSystem {
                  with {m}λ(1, 0) + {n}λ(0, 1) everywhere; the bounded check above is what holds."
             )));
         };
-        facts.push(self.eigenvalue_is_linear(k, d.max(1), &shown, when)?);
+        let at = |e: &EngineError| engine_error(source, family.span.clone(), e);
+        let mut zero = [false; 2];
+        for (z, base) in zero.iter_mut().zip(&bases) {
+            *z = settled(when, base.clone()).map_err(|e| at(&e))?.is_zero();
+        }
+        facts.push(self.eigenvalue_is_linear(k, d.max(1), &shown, when, zero)?);
         let leibniz_check = self.derivation_holds(k, &bases)?;
         let note = ProofResult::failed_steps(&facts, leibniz_check);
         let holds = note.is_none();

@@ -2942,3 +2942,123 @@ fn names_run_together_echo_as_the_product_they_read_as() {
     assert!(out.contains("  {p_x, H} = −Mω²x "), "{out}");
     assert!(out.contains("  (Mω)² = M²ω² "), "{out}");
 }
+
+/// A tower whose base is zero at the condition: `(ωZ)^m e^{−inθ}` at `ω = 0` is 0 for every
+/// `m ≥ 1`, so `{K, H} = λK` holds there for any `λ`, and the eigenvalue's `m(m − 1)M`, which
+/// is no multiple of `m`, refutes nothing: the comparison is made on the line `m = 0`, where
+/// `λ(0, n) = −inΩ` is `nλ(0, 1)`, and the identity is proved for all `m, n`. With `ω` free
+/// the same eigenvalue is wrong at `(2, 0)` and the proof refutes it. An eigenvalue written
+/// `i(mω − nΩ)`, a name before parentheses, is a polynomial of degree 1 in the indices.
+#[test]
+fn a_tower_with_a_zero_base_is_proved_where_its_instances_are_zero() {
+    let dir = scratch("zero-base");
+    let rotor = "name = \"rotor\"\n\
+         hamiltonian = \"(p_x^2 + p_y^2)/(2*M) + M*omega^2*(x^2 + y^2)/2 + p_theta^2/(2*I)\"\n\
+         [phase_space]\ncoordinates = [\"x\", \"y\"]\nangles = [\"theta\"]\n\
+         parameters = [\"M\", \"omega\", \"I\"]\n\
+         [[function]]\nname = \"Z\"\nvalue = \"p_x + i*p_y + i*M*omega*(x + i*y)\"\n\
+         [[function]]\nname = \"Omega\"\ndisplay = \"Ω\"\nvalue = \"p_theta/I\"\n";
+    std::fs::write(
+        dir.join("zero.toml"),
+        format!(
+            "{rotor}[[family]]\nname = \"K\"\nvalue = \"(omega*Z)^m*exp(-i*n*theta)\"\n\
+             eigenvalue = \"i*(m*omega - n*Omega) + m*(m - 1)*M\"\n"
+        ),
+    )
+    .expect("write zero.toml");
+    let tower = |when: &[&str]| {
+        let mut args = vec![
+            "tower",
+            "--system",
+            "zero.toml",
+            "--max",
+            "2",
+            "--no-timings",
+        ];
+        args.extend_from_slice(when);
+        superint_in(&dir, &args)
+    };
+    let o = tower(&["--when", "omega = 0"]);
+    let out = text(&o.stdout);
+    assert_eq!(o.status.code(), Some(0), "{out}");
+    assert!(out.contains("[K-all proved]"), "{out}");
+    let words = out.split_whitespace().collect::<Vec<_>>().join(" ");
+    assert!(
+        words.contains(
+            "equals mλ(1, 0) + nλ(0, 1) where K_{m,n} is not 0 (the first base is 0, so K_{m,n} \
+             is 0 for m ≥ 1): both are polynomials of degree at most 2 in m, n, and they agree \
+             at the 3 points m = 0, 0 ≤ n ≤ 2: holds"
+        ),
+        "{out}"
+    );
+    let o = tower(&[]);
+    let out = text(&o.stdout);
+    assert_eq!(o.status.code(), Some(1), "{out}");
+    let words = out.split_whitespace().collect::<Vec<_>>().join(" ");
+    assert!(
+        words.contains("they differ at (m, n) = (2, 0): FAILS"),
+        "{out}"
+    );
+    assert!(out.contains("[K-all REFUTED]"), "{out}");
+    std::fs::write(
+        dir.join("written.toml"),
+        format!(
+            "{rotor}[[family]]\nname = \"K\"\nvalue = \"Z^m*exp(-i*n*theta)\"\n\
+             eigenvalue = \"i(m*omega - n*Omega)\"\n"
+        ),
+    )
+    .expect("write written.toml");
+    let o = superint_in(
+        &dir,
+        &[
+            "tower",
+            "--system",
+            "written.toml",
+            "--max",
+            "2",
+            "--no-timings",
+        ],
+    );
+    let out = text(&o.stdout);
+    assert_eq!(o.status.code(), Some(0), "{out}");
+    assert!(out.contains("[K-all proved]"), "{out}");
+}
+
+/// A name of the file written as an instance of one of its families (`K_2_0` beside `K`)
+/// would make `K_{2,0}` stand for two things (it read as the function, so that the true
+/// `K_{2,0} = x²` was refuted): refused with line and column, at the family, which is read
+/// after the functions and parameters.
+#[test]
+fn a_name_written_as_a_family_instance_is_refused() {
+    let dir = scratch("instance-name");
+    let head = "hamiltonian = \"p_x^2/2 + p_theta^2/2\"\n\
+         [phase_space]\ncoordinates = [\"x\"]\nangles = [\"theta\"]\n";
+    let family = "[[family]]\nname = \"K\"\nvalue = \"x^m*exp(i*n*theta)\"\n";
+    let function = "[[function]]\nname = \"K_2_0\"\nvalue = \"p_x\"\n";
+    std::fs::write(dir.join("f.toml"), format!("{head}{family}{function}")).expect("write");
+    let o = superint_in(&dir, &["check", "f.toml"]);
+    assert_eq!(o.status.code(), Some(2));
+    assert_eq!(
+        text(&o.stderr).lines().next().unwrap_or_default(),
+        "superint: error: f.toml:6:8: 'K' cannot be a family of this file, which declares a \
+         function 'K_2_0' on line 9: 'K_2_0' is the instance K_{2,0} of the family K; give one \
+         of them another name"
+    );
+    let parameter = head.replace("angles", "parameters = [\"K_1_1\"]\nangles");
+    std::fs::write(dir.join("p.toml"), format!("{parameter}{family}")).expect("write");
+    let o = superint_in(&dir, &["check", "p.toml"]);
+    assert_eq!(o.status.code(), Some(2));
+    assert!(
+        text(&o.stderr).contains(
+            "'K' cannot be a family of this file, which declares a \
+             parameter 'K_1_1' on line 4"
+        ),
+        "{}",
+        text(&o.stderr)
+    );
+    // Not an instance: `K_2` (one index), `K_a_b`, and the family's own name elsewhere.
+    let fine = "[[function]]\nname = \"K_2\"\nvalue = \"p_x\"\n[[function]]\nname = \"K_a_b\"\nvalue = \"x\"\n";
+    std::fs::write(dir.join("ok.toml"), format!("{head}{family}{fine}")).expect("write");
+    let o = superint_in(&dir, &["check", "ok.toml"]);
+    assert_eq!(o.status.code(), Some(0), "{}", text(&o.stderr));
+}

@@ -105,7 +105,10 @@ impl Condition {
         }
         if let Some(k) = (1..subs.len()).find(|&k| subs[..k].iter().any(|s| s.0 == subs[k].0)) {
             let name = subs[k].1.vars().variable(subs[k].0).unicode().to_string();
-            return Err(refused(subs[k].0, format!("the condition sets {name} twice")));
+            return Err(refused(
+                subs[k].0,
+                format!("the condition sets {name} twice"),
+            ));
         }
         Condition {
             text: text.to_string(),

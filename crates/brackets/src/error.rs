@@ -52,6 +52,10 @@ pub struct JacobiViolation {
     pub residual: trigpoly::Expr,
     /// The identity and its residual, in words.
     pub message: String,
+    /// The place, in the list given to [`PhaseSpace::with_brackets`](crate::PhaseSpace::with_brackets),
+    /// of the first bracket with which, added to those before it, the identity of the
+    /// triple fails: where a file shows the violation.
+    pub bracket: usize,
 }
 
 /// A parse error, so that `?` works on a parse in a function that returns an `EngineError`:

@@ -304,7 +304,9 @@ impl PhaseSpace {
         let vars = self.vars.clone();
         self.declared.clear();
         let mut given: Vec<(Var, Var)> = Vec::new();
-        for (a, b, value) in brackets {
+        // The place in `brackets` of each declared bracket (those of value 0 are not kept).
+        let mut places = Vec::new();
+        for (place, (a, b, value)) in brackets.iter().enumerate() {
             let find = |n: &str| {
                 vars.lookup(n).ok_or_else(|| {
                     EngineError::Invalid(format!("unknown variable '{n}' in a declared bracket"))
@@ -365,51 +367,80 @@ impl PhaseSpace {
                     b: vb,
                     value: value.clone(),
                 });
+                places.push(place);
             }
         }
         self.given = self.declared.len();
         self.update_involved();
-        self.check_jacobi()?;
+        // The atoms and radicals first: a declared value with `r = √(x² + y²)` in it brings
+        // `{p_x, r} = −x/r` into the identity, which a check without their brackets missed.
         self.declare_atoms()?;
-        Ok(self)
+        match self.check_jacobi() {
+            Err(EngineError::Jacobi(mut violation)) => {
+                violation.bracket = places[self.first_breaking(violation.triple)?];
+                Err(EngineError::Jacobi(violation))
+            }
+            checked => checked.map(|()| self),
+        }
+    }
+
+    /// The first of the given brackets with which, added to those before it, the Jacobi
+    /// identity of `triple` fails: where a file shows the violation (the place of a wrong
+    /// value, or of one whose partners are missing). The identity fails with all of them.
+    fn first_breaking(&self, triple: [Var; 3]) -> Result<usize, EngineError> {
+        for k in 1..self.given {
+            let mut first = self.clone();
+            first.declared.truncate(k);
+            first.given = k;
+            first.update_involved();
+            first.declare_atoms()?;
+            if !first.jacobiator(triple)?.vanishes()? {
+                return Ok(k - 1);
+            }
+        }
+        Ok(self.given - 1)
+    }
+
+    /// `{a, {b, c}} + {b, {c, a}} + {c, {a, b}}`.
+    fn jacobiator(&self, [a, b, c]: [Var; 3]) -> Result<Expr, EngineError> {
+        let one = |v: Var| Expr::var(&self.vars, v);
+        let (fa, fb, fc) = (one(a), one(b), one(c));
+        Ok(&(&self.bracket(&fa, &self.bracket(&fb, &fc)?)?
+            + &self.bracket(&fb, &self.bracket(&fc, &fa)?)?)
+            + &self.bracket(&fc, &self.bracket(&fa, &fb)?)?)
     }
 
     /// Checks `{a, {b, c}} + {b, {c, a}} + {c, {a, b}} = 0` for every triple of distinct phase
     /// variables with a Poisson variable among them (a triple of canonical variables has
     /// constant brackets, so it holds); with it on the coordinates, the bracket is Poisson.
     fn check_jacobi(&self) -> Result<(), EngineError> {
-        if self.declared.is_empty() {
+        if self.given == 0 {
             return Ok(());
         }
         let coords = self.coordinates();
-        let one = |v: Var| Expr::var(&self.vars, v);
         let n = coords.len();
         for i in 0..n {
             for j in i + 1..n {
                 for k in j + 1..n {
-                    let [a, b, c] = [coords[i], coords[j], coords[k]];
-                    if ![a, b, c].iter().any(|v| self.poisson.contains(v)) {
+                    let triple = [coords[i], coords[j], coords[k]];
+                    if !triple.iter().any(|v| self.poisson.contains(v)) {
                         continue;
                     }
-                    let (fa, fb, fc) = (one(a), one(b), one(c));
-                    let residual = &(&self.bracket(&fa, &self.bracket(&fb, &fc)?)?
-                        + &self.bracket(&fb, &self.bracket(&fc, &fa)?)?)
-                        + &self.bracket(&fc, &self.bracket(&fa, &fb)?)?;
-                    if !residual.is_zero() {
-                        return Err(EngineError::Jacobi(Box::new(JacobiViolation {
-                            triple: [a, b, c],
-                            message: {
-                                let [ua, ub, uc] =
-                                    [a, b, c].map(|v| self.vars.variable(v).unicode());
-                                format!(
-                                    "the declared brackets break the Jacobi identity: \
-                                     {{{ua}, {{{ub}, {uc}}}}} + {{{ub}, {{{uc}, {ua}}}}} + \
-                                     {{{uc}, {{{ua}, {ub}}}}} = {residual}, not 0"
-                                )
-                            },
-                            residual,
-                        })));
+                    let residual = self.jacobiator(triple)?;
+                    if residual.vanishes()? {
+                        continue;
                     }
+                    let [ua, ub, uc] = triple.map(|v| self.vars.variable(v).unicode());
+                    return Err(EngineError::Jacobi(Box::new(JacobiViolation {
+                        triple,
+                        message: format!(
+                            "the declared brackets break the Jacobi identity: \
+                             {{{ua}, {{{ub}, {uc}}}}} + {{{ub}, {{{uc}, {ua}}}}} + \
+                             {{{uc}, {{{ua}, {ub}}}}} = {residual}, not 0"
+                        ),
+                        residual,
+                        bracket: 0,
+                    })));
                 }
             }
         }
@@ -722,5 +753,67 @@ mod tests {
             .build()
             .unwrap();
         assert!(PhaseSpace::new(&twice, &[("x", "p_x"), ("y", "p_y")]).is_err());
+    }
+
+    /// A declared bracket whose value holds a radical: `{u, x} = r` for `r = √(x² + y²)`
+    /// breaks the Jacobi identity through `{p_x, r} = x/r`, and is refused with that
+    /// residual (the check ran before the radical had brackets, so `r` was a constant in it,
+    /// and the space was accepted); `{u, y} = r` with `r = √(u² + 1)`, a function of `u`
+    /// alone, holds and is kept.
+    #[test]
+    fn the_jacobi_identity_counts_the_brackets_of_a_radical_in_a_declared_value() {
+        let builder = VarSet::builder()
+            .coordinate("x")
+            .coordinate("y")
+            .momentum("p_x")
+            .momentum("p_y")
+            .poisson("u");
+        let pairs = [("x", "p_x"), ("y", "p_y")];
+        let vars = builder.clone().radical("r", "x^2 + y^2").build().unwrap();
+        let r = Expr::parse(&vars, "r").unwrap();
+        let refused = PhaseSpace::new(&vars, &pairs)
+            .unwrap()
+            .with_brackets(&[("u", "x", r)]);
+        let Err(crate::EngineError::Jacobi(violation)) = refused else {
+            panic!("{{u, x}} = r breaks the Jacobi identity");
+        };
+        assert_eq!(violation.residual, Expr::parse(&vars, "-x/r").unwrap());
+        let vars = builder.radical("r", "u^2 + 1").build().unwrap();
+        let r = Expr::parse(&vars, "r").unwrap();
+        let kept = PhaseSpace::new(&vars, &pairs)
+            .unwrap()
+            .with_brackets(&[("u", "y", r)]);
+        assert!(kept.is_ok());
+    }
+
+    /// The Jacobi identity of so(3) and `{M₁, x} = 1` fails for `(x, M₂, M₃)`, through
+    /// `{x, {M₂, M₃}} = {x, M₁}`: the bracket to blame is the last, `{M₁, x}`, with which the
+    /// identity first fails as the brackets are added in turn, not `{M₂, M₃}`, the one the
+    /// triple's variables share (the brackets of value 0 count in the places too).
+    #[test]
+    fn a_jacobi_violation_names_the_bracket_that_breaks_it() {
+        let vars = VarSet::builder()
+            .coordinate("x")
+            .momentum("p_x")
+            .poisson("M1")
+            .poisson("M2")
+            .poisson("M3")
+            .build()
+            .unwrap();
+        let e = |s: &str| Expr::parse(&vars, s).unwrap();
+        let brackets = [
+            ("M1", "M2", e("M3")),
+            ("M2", "M3", e("M1")),
+            ("M3", "M1", e("M2")),
+            ("M2", "x", e("0")),
+            ("M1", "x", e("1")),
+        ];
+        let space = PhaseSpace::new(&vars, &[("x", "p_x")]).unwrap();
+        let Err(crate::EngineError::Jacobi(violation)) = space.clone().with_brackets(&brackets)
+        else {
+            panic!("{{M1, x}} = 1 breaks the Jacobi identity");
+        };
+        assert_eq!(violation.bracket, 4);
+        assert!(space.with_brackets(&brackets[..4]).is_ok());
     }
 }

@@ -440,6 +440,14 @@ fn write_term(
     if frac {
         out.push_str(r"\frac{");
     }
+    // `(p_x sin φ)/(Mω)`, not `p_x sin φ/(Mω)`, which reads as the sine of `φ/(Mω)`: text
+    // sets a numerator that ends in a bare `cos θ` or `sin θ` apart from its denominator.
+    let enclosed = style == Style::Unicode
+        && denominators > 0
+        && trig.is_some_and(|t| !TrigMonomial::is_one(t));
+    if enclosed {
+        out.push('(');
+    }
     let mut numerator = Product::new(style);
     if let Some(c) = complex {
         numerator.next(out, true);
@@ -484,6 +492,9 @@ fn write_term(
     }
     if numerator.factors == 0 {
         out.push('1');
+    }
+    if enclosed {
+        out.push(')');
     }
     if denominators == 0 {
         return;

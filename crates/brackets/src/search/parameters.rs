@@ -46,8 +46,8 @@ pub(crate) fn check_parameters(
     Ok(())
 }
 
-/// Every parameter of `h` or of the condition that is neither kept symbolic nor set by the
-/// condition, with its value (given, or 1).
+/// Every parameter of `h`, of a declared bracket, denominator or radical, or of the condition
+/// that is neither kept symbolic nor set by the condition, with its value (given, or 1).
 pub(super) fn parameter_values(
     system: &System,
     condition: Option<&Condition>,
@@ -56,14 +56,17 @@ pub(super) fn parameter_values(
 ) -> Vec<(Var, Rational)> {
     let vars = system.vars();
     let mut exprs = vec![system.hamiltonian().clone()];
-    // An atom's polynomial and a radicand enter the bracket through their declared brackets.
+    // An atom's polynomial and a radicand enter the bracket through their declared brackets,
+    // and a declared bracket's value through every bracket (`{M1, M2} = kM3` makes the
+    // Casimir `M1² + M2² + kM3²`, an integral whose coefficients hold `k`).
     let space = system.space();
     exprs.extend(
         space
             .denominator_atoms()
             .iter()
             .chain(space.radicals())
-            .map(|a| a.1.clone()),
+            .map(|a| a.1.clone())
+            .chain(space.declared_brackets().iter().map(|b| b.value.clone())),
     );
     if let Some(c) = condition {
         exprs.extend(c.subs().iter().map(|s| s.1.clone()));

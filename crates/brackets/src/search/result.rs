@@ -1,6 +1,10 @@
 //! What a search returns: the basis of integrals, which are new, the parameter module, timings.
 
-use trigpoly::{Expr, Rational, Style, Var, VarSet, Vars};
+use std::collections::HashMap;
+
+use trigpoly::{Expr, Rational, Style, Var, VarKind, VarSet, Vars};
+
+use crate::modular::{self, SparseVec};
 
 use super::options::SearchSpace;
 
@@ -127,10 +131,17 @@ impl SearchResult {
         self.dimensions_by(self.space.momenta_degree, |f| f.momenta_degree)
     }
 
-    /// The number of basis integrals of degree `≤ j` in the Poisson variables for each
-    /// `j = 0, …, P`: the dimensions of the spaces with smaller `P`.
+    /// The dimension of the integrals of degree `≤ j` in the Poisson variables for each
+    /// `j = 0, …, P`: the dimensions of the spaces with smaller `P`. The basis is ordered by
+    /// the momenta first, so where the space has momenta too its elements need not be of
+    /// the lowest Poisson degree they could be (the Toda lattice's `P²` enters as `P² + …`
+    /// of Poisson degree 1): each dimension is found by exact linear algebra, as the
+    /// combinations of the basis with no term of higher Poisson degree.
     pub fn dimensions_by_poisson_degree(&self) -> Vec<usize> {
-        self.dimensions_by(self.space.poisson_degree, |f| f.poisson_degree)
+        let grades = self.term_grades();
+        (0..=i64::from(self.space.poisson_degree))
+            .map(|j| combinations_within(&grades, |&(poisson, _)| poisson <= j))
+            .collect()
     }
 
     /// The number of basis integrals whose `degree` is `≤ j`, for each `j = 0, …, bound`.
@@ -146,10 +157,65 @@ impl SearchResult {
         self.counts_by(self.space.momenta_degree, |f| f.momenta_degree)
     }
 
-    /// `poisson_counts[j][k]`: basis integrals of degree exactly `j` in the Poisson variables
-    /// and trigonometric order exactly `k`.
+    /// `poisson_counts[j][k]`: integrals of degree exactly `j` in the Poisson variables and,
+    /// among their terms of that degree, trigonometric order exactly `k`: in a basis ordered
+    /// by those two (the dimensions of the combinations of the basis whose terms are below
+    /// `(j, k)` in that order, differenced, by exact linear algebra as in
+    /// [`SearchResult::dimensions_by_poisson_degree`]).
     pub fn poisson_counts(&self) -> Vec<Vec<usize>> {
-        self.counts_by(self.space.poisson_degree, |f| f.poisson_degree)
+        let grades = self.term_grades();
+        let (p, t) = (
+            i64::from(self.space.poisson_degree),
+            i64::from(self.space.trig_degree),
+        );
+        let mut below = 0;
+        (0..=p)
+            .map(|j| {
+                (0..=t)
+                    .map(|k| {
+                        let within = combinations_within(&grades, |&g| g <= (j, k));
+                        let exactly = within - below;
+                        below = within;
+                        exactly
+                    })
+                    .collect()
+            })
+            .collect()
+    }
+
+    /// Each basis integral (at the fixed values) as its terms' coordinates over `Q`, each
+    /// coordinate with the grade of its term: `(degree in the Poisson variables,
+    /// trigonometric order)`. A term's real and imaginary parts are two coordinates.
+    fn term_grades(&self) -> Vec<Vec<(Grade, usize, Rational)>> {
+        let vars = &self.vars;
+        let of_kind = |kind: VarKind| -> Vec<usize> {
+            vars.vars()
+                .filter(|&v| vars.variable(v).kind() == kind)
+                .map(Var::index)
+                .collect()
+        };
+        let (poisson, angles) = (of_kind(VarKind::Poisson), of_kind(VarKind::Angle));
+        let degree = |e: &[i64], of: &[usize]| of.iter().map(|&j| e[j].abs()).sum::<i64>();
+        let mut rows: HashMap<Vec<i64>, usize> = HashMap::new();
+        self.basis
+            .iter()
+            .map(|f| {
+                let mut coordinates = Vec::new();
+                for term in f.fixed.terms() {
+                    let e = term.exponents();
+                    let grade = (degree(&e, &poisson), degree(&e, &angles));
+                    let next = rows.len();
+                    let row = 2 * *rows.entry(e).or_insert(next);
+                    let c = term.coeff();
+                    for (part, value) in [(0, c.re), (1, c.im)] {
+                        if !value.is_zero() {
+                            coordinates.push((grade, row + part, value));
+                        }
+                    }
+                }
+                coordinates
+            })
+            .collect()
     }
 
     /// `c[j][k]`: basis integrals whose `degree` is `j` (`≤ bound`) and trigonometric order `k`.
@@ -213,4 +279,35 @@ pub fn parameter_text(vars: &VarSet, values: &[(Var, Rational)], style: Style) -
         })
         .collect::<Vec<_>>()
         .join(", ")
+}
+
+/// A term's `(degree in the Poisson variables, trigonometric order)`, compared in that order.
+type Grade = (i64, i64);
+
+/// The dimension of the combinations of the basis integrals, given by [`SearchResult::term_grades`],
+/// whose every term has a grade that `keep` keeps: the kernel of their other coordinates,
+/// exactly ([`modular::kernel`]).
+fn combinations_within(
+    grades: &[Vec<(Grade, usize, Rational)>],
+    keep: impl Fn(&Grade) -> bool,
+) -> usize {
+    let columns: Vec<SparseVec<Rational>> = grades
+        .iter()
+        .map(|coordinates| {
+            let mut column: SparseVec<Rational> = coordinates
+                .iter()
+                .filter(|(grade, ..)| !keep(grade))
+                .map(|(_, row, value)| (*row, value.clone()))
+                .collect();
+            column.sort_by_key(|&(row, _)| row);
+            column
+        })
+        .collect();
+    let rows = grades
+        .iter()
+        .flatten()
+        .map(|&(_, row, _)| row + 1)
+        .max()
+        .unwrap_or(0);
+    modular::kernel(&columns, rows).len()
 }

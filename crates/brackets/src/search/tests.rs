@@ -609,3 +609,85 @@ fn parameter_multiples_of_a_generator_are_left_out_of_the_products() {
     );
     assert_eq!(kept(&all, &[]).len(), all.len());
 }
+
+/// The open Toda lattice with `a1 = e^{q1 − q2}`, `a2 = e^{q2 − q3}` as Poisson variables:
+/// its integrals of degree `≤ 3` in the momenta and `≤ 1` in `a1, a2` are seven, and the
+/// four of Poisson degree 0 are `1, P, P², P³` (`P` the total momentum). The basis is
+/// ordered by the momenta first, so that its `P²` entered as `P² + …` of Poisson degree 1
+/// and its count of degree 0 was 2: the counts are dimensions, by exact linear algebra.
+#[test]
+fn the_counts_by_poisson_degree_are_dimensions_where_the_space_has_momenta() {
+    let vars = VarSet::builder()
+        .coordinate("q1")
+        .momentum("p_q1")
+        .coordinate("q2")
+        .momentum("p_q2")
+        .coordinate("q3")
+        .momentum("p_q3")
+        .poisson("a1")
+        .poisson("a2")
+        .build()
+        .unwrap();
+    let e = |t: &str| Expr::parse(&vars, t).unwrap();
+    let space = crate::PhaseSpace::new(&vars, &[("q1", "p_q1"), ("q2", "p_q2"), ("q3", "p_q3")])
+        .unwrap()
+        .with_brackets(&[
+            ("a1", "p_q1", e("a1")),
+            ("a1", "p_q2", e("-a1")),
+            ("a2", "p_q2", e("a2")),
+            ("a2", "p_q3", e("-a2")),
+        ])
+        .unwrap();
+    let toda = System::new("Toda", space, e("(p_q1^2 + p_q2^2 + p_q3^2)/2 + a1 + a2"));
+    let found = search(
+        &toda,
+        &SearchOptions::new(SearchSpace::new(3, 0, 0).poisson_degree(1)),
+    )
+    .unwrap();
+    assert_eq!(found.basis.len(), 7);
+    assert_eq!(found.dimensions_by_momenta_degree(), [1, 2, 4, 7]);
+    assert_eq!(found.dimensions_by_poisson_degree(), [4, 7]);
+    assert_eq!(found.poisson_counts(), [[4], [3]]);
+}
+
+/// so(3) with `{M1, M2} = kM3`, a Poisson bracket for every `k`, whose Casimir
+/// `M1² + M2² + kM3²` is an integral of every `H`: `k` appears in no function of the search
+/// but in a declared bracket, and is fixed for the linear algebra (it was neither fixed nor
+/// kept symbolic, so that the integrals whose coefficients hold `k` were left out of a space
+/// of dimension 2 instead of 3); kept symbolic, the Casimir is found for every `k`.
+#[test]
+fn a_parameter_of_a_declared_bracket_is_fixed_for_the_search() {
+    let vars = VarSet::builder()
+        .poisson("M1")
+        .poisson("M2")
+        .poisson("M3")
+        .parameter("k")
+        .build()
+        .unwrap();
+    let e = |t: &str| Expr::parse(&vars, t).unwrap();
+    let space = crate::PhaseSpace::new(&vars, &[])
+        .unwrap()
+        .with_brackets(&[
+            ("M1", "M2", e("k*M3")),
+            ("M2", "M3", e("M1")),
+            ("M3", "M1", e("M2")),
+        ])
+        .unwrap();
+    let top = System::new("top", space, e("M1^2/2 + M2^2 + 3*M3^2/2"));
+    let k = top.var("k");
+    let options = SearchOptions::new(SearchSpace::new(0, 0, 0).poisson_degree(2));
+    let found = search(&top, &options).unwrap();
+    assert_eq!(found.parameters, [(k, Rational::one())]);
+    assert_eq!(found.dimensions_by_poisson_degree(), [1, 1, 3]);
+    let space = SearchSpace::new(0, 0, 0)
+        .poisson_degree(2)
+        .parameters_degree(1);
+    let found = search(&top, &SearchOptions::new(space).symbolic(k)).unwrap();
+    // The basis, in echelon form, has `2H = M1² + 2M2² + 3M3²` and the Casimir less it.
+    let casimir = e("M1^2 + M2^2 + k*M3^2");
+    let basis: Vec<&Expr> = found.basis.iter().map(Integral::expr).collect();
+    let sum_of_two = basis
+        .iter()
+        .any(|f| basis.iter().any(|g| (*f + *g) == casimir));
+    assert!(sum_of_two, "{basis:?}");
+}
