@@ -953,10 +953,22 @@ impl<'a> Builder<'a> {
                 }
             };
             let index_span = f.indices.as_ref().map_or(f.name.span(), |l| l.span());
+            // Another spelling of a variable (`ω` beside `omega`) is taken too: the index
+            // would print as the variable does (`K_{ω,n}`, `ωω`).
+            let vars = file.system.vars().clone();
             let taken = |idx: &str| {
                 self.names
                     .get(idx)
                     .map(|(other, _)| format!("declared as {other}"))
+                    .or_else(|| {
+                        let v = vars.variable(vars.lookup(idx)?);
+                        let described = v.kind().described();
+                        let kind = described.split_once(' ').map_or(described, |(_, k)| k);
+                        Some(format!(
+                            "a name of the {kind} '{}' (either spelling names it)",
+                            v.name()
+                        ))
+                    })
             };
             if let Some((k, kind, message)) = index_refusal([&indices[0], &indices[1]], taken) {
                 // An unwritable letter is shown at its index; the rest at the list.

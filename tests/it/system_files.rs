@@ -3062,3 +3062,46 @@ fn a_name_written_as_a_family_instance_is_refused() {
     let o = superint_in(&dir, &["check", "ok.toml"]);
     assert_eq!(o.status.code(), Some(0), "{}", text(&o.stderr));
 }
+
+/// A family's index that is another spelling of a variable (`ω` beside the parameter
+/// `omega`, `theta` beside the angle `θ`) would print as the variable does (`K_{ω,n}`,
+/// `i(ωω − nΩ)`): refused at the indices, as a name declared in the file is.
+#[test]
+fn an_index_spelled_as_a_variable_is_refused() {
+    let dir = scratch("index-spelling");
+    let file = |angle: &str, index: &str| {
+        format!(
+            "hamiltonian = \"p_x^2/2 + omega^2*x^2/2\"\n\
+             [phase_space]\ncoordinates = [\"x\"]\nangles = [\"{angle}\"]\n\
+             parameters = [\"omega\"]\n\
+             [[family]]\nname = \"K\"\nindices = [\"{index}\", \"n\"]\n\
+             value = \"x^{index}*exp(i*n*{angle})\"\n"
+        )
+    };
+    let refused = [
+        (
+            "theta",
+            "ω",
+            "the index 'ω' is already a name of the parameter 'omega'",
+        ),
+        (
+            "θ",
+            "theta",
+            "the index 'theta' is already a name of the angle 'θ'",
+        ),
+    ];
+    for (k, (angle, index, message)) in refused.into_iter().enumerate() {
+        let name = format!("f{k}.toml");
+        std::fs::write(dir.join(&name), file(angle, index)).expect("write");
+        let o = superint_in(&dir, &["check", &name]);
+        assert_eq!(o.status.code(), Some(2));
+        let err = text(&o.stderr);
+        assert!(
+            err.starts_with(&format!("superint: error: {name}:8:11: {message}")),
+            "{err}"
+        );
+    }
+    std::fs::write(dir.join("ok.toml"), file("theta", "m")).expect("write");
+    let o = superint_in(&dir, &["expand", "ok.toml", "K_2_1"]);
+    assert_eq!(o.status.code(), Some(0), "{}", text(&o.stderr));
+}

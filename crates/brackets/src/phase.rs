@@ -298,8 +298,9 @@ impl PhaseSpace {
     /// variable that is not a phase variable, a pair of two canonical variables (their bracket
     /// is fixed), a value that is not real, and brackets that break the Jacobi identity
     /// `{a, {b, c}} + {b, {c, a}} + {c, {a, b}} = 0`, checked exactly for every triple of
-    /// phase variables that has a Poisson variable ([`EngineError::Jacobi`], with the triple
-    /// and the residual).
+    /// phase variables that has a Poisson variable, the brackets of the denominator atoms and
+    /// radicals included ([`EngineError::Jacobi`], with the triple, the residual and the
+    /// given bracket with which the triple's identity first fails).
     pub fn with_brackets(mut self, brackets: &[(&str, &str, Expr)]) -> Result<Self, EngineError> {
         let vars = self.vars.clone();
         self.declared.clear();
