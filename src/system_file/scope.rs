@@ -211,8 +211,8 @@ fn is_limit_message(message: &str) -> bool {
 pub(crate) fn limit_hint(message: &str) -> String {
     if exponent_past_every_limit(message) {
         return format!(
-            "no limit reaches this exponent: max_degree is at most {MAX_DEGREE_CEILING}; write \
-             the expression without so large a power"
+            "no limit reaches this exponent or order: max_degree is at most \
+             {MAX_DEGREE_CEILING}; write the expression without so large a power or multiple"
         );
     }
     let hint = match message.contains("(the work limit)") {
@@ -230,13 +230,20 @@ pub(crate) fn limit_hint(message: &str) -> String {
     hint.to_string()
 }
 
-/// Whether `message` is `the exponent N is past the limit of …` with `|N|` above the most that
-/// `max_degree` may be set to.
+/// Whether `message` is a limit error for a number with `|N|` above the most that
+/// `max_degree` may be set to: `the exponent N is past the limit of …`, `the exponent of x
+/// would reach N`, `the multiple N of θ is past …`, `the trigonometric order in θ would
+/// reach N`.
 fn exponent_past_every_limit(message: &str) -> bool {
-    let Some((_, rest)) = message.split_once("the exponent ") else {
-        return false;
+    let number = |before: &str, after: &str| {
+        let (_, rest) = message.split_once(before)?;
+        Some(rest.split_once(after)?.0)
     };
-    let Some((exponent, _)) = rest.split_once(" is past the limit") else {
+    let Some(exponent) = number("the exponent ", " is past the limit")
+        .or_else(|| number(" would reach ", " ("))
+        .or_else(|| number(" would reach ", ","))
+        .or_else(|| number("the multiple ", " of "))
+    else {
         return false;
     };
     // Digits too many for an i128 are past it too.
@@ -642,6 +649,33 @@ mod tests {
             limit_hint("the exponent 32767 is past the limit of 1000"),
             raise
         );
+        // The other forms of the limit errors, each past every limit or not.
+        for (message, past) in [
+            (
+                "the exponent of x would reach 40000, past the limit of 32767",
+                true,
+            ),
+            (
+                "the exponent of x would reach 2000, past the limit of 1000",
+                false,
+            ),
+            ("the multiple -32768 of θ is past the limit of 1000", true),
+            ("the multiple 2000 of θ is past the limit of 1000", false),
+            (
+                "the trigonometric order in θ would reach 32768 (terms in cos 32768θ, sin \
+                 32768θ), past the limit of 32767",
+                true,
+            ),
+            (
+                "the trigonometric order in θ would reach 8000 (terms in cos 8000θ, sin 8000θ), \
+                 past the limit of 7999",
+                false,
+            ),
+        ] {
+            let hint = limit_hint(message);
+            assert_eq!(hint.starts_with("no limit reaches"), past, "{message}");
+            assert_eq!(hint == raise, !past, "{message}");
+        }
     }
 
     #[test]

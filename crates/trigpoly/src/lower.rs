@@ -316,6 +316,15 @@ impl<C: Coefficient> Lower<'_, C> {
         divisor: &Expr,
         value: &Poly<C>,
     ) -> AlgebraError {
+        // Only these two are rewritten: another error (a limit, say) is given as it is, before
+        // any factor is tried (`cos(16384θ)²` past the order limit took a minute to show its
+        // factor in powers of `cos θ` for a message that did not use it).
+        if !matches!(
+            e,
+            AlgebraError::NotAMonomial { .. } | AlgebraError::NegativePower { .. }
+        ) {
+            return e;
+        }
         let mut factors = Vec::new();
         let mut negative = false;
         if self
