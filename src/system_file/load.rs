@@ -18,7 +18,7 @@ use super::model::{
     ExpectShape, FunctionModel, PhaseSpaceModel, ShapeModel, StringTable, SystemModel,
 };
 use super::names::{check_display, index_refusal, BadName, PrintedNames};
-use super::scope::{first_bracket, mention};
+use super::scope::{first_bracket, instance_parts, mention};
 use super::text::{Source, Text};
 use super::{Family, LimitsOverride, LoadedSystem};
 
@@ -593,24 +593,25 @@ impl<'a> Builder<'a> {
         }
         // A name that is an instance of a family (`K_2_0` beside `K`) would stand for two
         // things, and `K_{2,0}` would read as the name: refused in either order.
+        fn head(name: &str) -> Option<&str> {
+            instance_parts(name).map(|(head, ..)| head)
+        }
         let instance = match what {
             FAMILY => self
                 .names
                 .iter()
-                .find(|(other, _)| instance_head(other) == Some(name)),
-            _ => instance_head(name)
-                .and_then(|head| self.names.get_key_value(head))
+                .find(|(other, _)| head(other) == Some(name)),
+            _ => head(name)
+                .and_then(|family| self.names.get_key_value(family))
                 .filter(|(_, (kind, _))| *kind == FAMILY),
         };
         if let Some((other, (kind, at))) = instance {
             let line = super::error::locate(&self.source.text, at.clone()).line;
-            let (instance, family) = match what {
-                FAMILY => (other.as_str(), name),
-                _ => (name, other.as_str()),
+            let instance = match what {
+                FAMILY => other.as_str(),
+                _ => name,
             };
-            let (m, n) = instance[family.len() + 1..]
-                .split_once('_')
-                .expect("an instance has two indices");
+            let (family, m, n) = instance_parts(instance).expect("found as an instance");
             return Err(self.error(
                 ErrorKind::Name,
                 span,
@@ -1136,11 +1137,3 @@ fn variables_builder(
 
 /// How [`Builder::declare`] calls a family.
 const FAMILY: &str = "a family";
-
-/// The family name an instance name would have, `K` of `K_2_0` (two indices of digits).
-fn instance_head(name: &str) -> Option<&str> {
-    let mut parts = name.rsplitn(3, '_');
-    let digits = |s: &str| !s.is_empty() && s.bytes().all(|b| b.is_ascii_digit());
-    let (n, m, head) = (parts.next()?, parts.next()?, parts.next()?);
-    (digits(m) && digits(n) && !head.is_empty()).then_some(head)
-}

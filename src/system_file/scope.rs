@@ -30,17 +30,19 @@ pub(crate) struct Scope<'a> {
 
 /// `K_2_3` → (family `K`, 2, 3) among `families`.
 pub(crate) fn instance_of(families: &[super::Family], name: &str) -> Option<(usize, i64, i64)> {
-    let mut parts = name.rsplitn(3, '_');
-    let n = parts.next()?;
-    let m = parts.next()?;
-    let head = parts.next()?;
-    let index = |s: &str| {
-        (!s.is_empty() && s.len() <= 9 && s.bytes().all(|b| b.is_ascii_digit()))
-            .then(|| s.parse::<i64>().ok())
-            .flatten()
-    };
+    let (head, m, n) = instance_parts(name)?;
+    let index = |s: &str| (s.len() <= 9).then(|| s.parse::<i64>().ok()).flatten();
     let k = families.iter().position(|f| f.name == head)?;
     Some((k, index(m)?, index(n)?))
+}
+
+/// The parts of a name written as an instance of a family, whatever families there are:
+/// `K_2_3` → (`K`, `2`, `3`), two indices of digits after a name.
+pub(crate) fn instance_parts(name: &str) -> Option<(&str, &str, &str)> {
+    let mut parts = name.rsplitn(3, '_');
+    let (n, m, head) = (parts.next()?, parts.next()?, parts.next()?);
+    let digits = |s: &str| !s.is_empty() && s.bytes().all(|b| b.is_ascii_digit());
+    (digits(m) && digits(n) && !head.is_empty()).then_some((head, m, n))
 }
 
 /// The family whose instances a malformed name was meant to be: `P_1`, `P_` (of `P_-1_2`)
