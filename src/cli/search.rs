@@ -15,7 +15,7 @@ use superint::discovery::{
 use superint::render::render;
 use superint::report::{with_article, Report};
 use superint::system_file::{split_top_level, what_is, BadName, LoadedSystem};
-use trigpoly::Expr;
+use trigpoly::{Expr, VarKind};
 
 use super::limits::LimitsArgs;
 use super::output::{emit, Output};
@@ -56,36 +56,38 @@ pub struct SearchArgs {
     /// The condition applied after the bracket, such as 'p_theta = m*I*omega/n'.
     #[arg(long, value_name = "CONDITION")]
     when: Option<String>,
-    /// Total degree in the momenta (an angle's momentum that --when fixes is left out).
-    #[arg(long, value_name = "D", default_value_t = 2,
+    /// Total degree in the momenta (an angle's momentum that --when fixes is left out)
+    /// [default: 2]. A degree above 0 is refused on a system without such variables.
+    #[arg(long, value_name = "D",
           value_parser = clap::value_parser!(u32).range(0..=20))]
-    momenta_degree: u32,
-    /// Total degree in the coordinates, not the angles (sum of absolute exponents).
-    #[arg(long, value_name = "E", default_value_t = 2,
+    momenta_degree: Option<u32>,
+    /// Total degree in the coordinates, not the angles (sum of absolute exponents)
+    /// [default: 2].
+    #[arg(long, value_name = "E",
           value_parser = clap::value_parser!(u32).range(0..=20))]
-    positions_degree: u32,
-    /// Trigonometric order in the angles.
-    #[arg(long, value_name = "K", default_value_t = 2,
+    positions_degree: Option<u32>,
+    /// Trigonometric order in the angles [default: 2].
+    #[arg(long, value_name = "K",
           value_parser = clap::value_parser!(u32).range(0..=20))]
-    trig_degree: u32,
+    trig_degree: Option<u32>,
     /// Total degree in the Poisson variables, those whose brackets [poisson] declares (M1,
-    /// gamma1; one that --when fixes is left out).
-    #[arg(long, value_name = "P", default_value_t = 2,
+    /// gamma1; one that --when fixes is left out) [default: 2].
+    #[arg(long, value_name = "P",
           value_parser = clap::value_parser!(u32).range(0..=20))]
-    poisson_degree: u32,
+    poisson_degree: Option<u32>,
     /// Allow negative powers of the coordinates (Laurent potentials such as β/x²).
     #[arg(long)]
     laurent: bool,
     /// On a system with denominators, the total degree of their powers: 2 takes 1/(x − y)²
-    /// and 1/((x − y)(x − z)).
-    #[arg(long, value_name = "K", default_value_t = 2,
+    /// and 1/((x − y)(x − z)) [default: 2].
+    #[arg(long, value_name = "K",
           value_parser = clap::value_parser!(u32).range(0..=12))]
-    denominators_degree: u32,
+    denominators_degree: Option<u32>,
     /// On a system with radicals, the total degree of their powers, of either sign: 1 takes
-    /// r and 1/r, 2 also r², 1/r² and r/s.
-    #[arg(long, value_name = "J", default_value_t = 1,
+    /// r and 1/r, 2 also r², 1/r² and r/s [default: 1].
+    #[arg(long, value_name = "J",
           value_parser = clap::value_parser!(u32).range(0..=12))]
-    radicals_degree: u32,
+    radicals_degree: Option<u32>,
     /// Parameter values for the linear algebra, such as omega=1,M=2/3 (others are 1, or other
     /// values where 1 makes a declared denominator zero).
     #[arg(long, value_name = "VALUES")]
@@ -134,6 +136,67 @@ pub struct SearchArgs {
     threads: Option<u16>,
     #[command(flatten)]
     limits: LimitsArgs,
+}
+
+impl SearchArgs {
+    /// Refuses a degree option given for a kind of variable the system does not have
+    /// (`--poisson-degree` on the Kepler problem), which would bound nothing: the search
+    /// would run as if it were not given.
+    fn refuse_degrees_without_variables(&self, subject: &Subject) -> anyhow::Result<()> {
+        let system = subject.system();
+        let vars = system.vars();
+        let pairs = system.space().pairs();
+        let angles = pairs
+            .iter()
+            .filter(|p| vars.variable(p.q).kind() == VarKind::Angle)
+            .count();
+        let options: [(&str, bool, &str); 7] = [
+            (
+                "--momenta-degree",
+                self.momenta_degree.is_some_and(|d| d > 0) && pairs.is_empty(),
+                "no canonical momenta",
+            ),
+            (
+                "--positions-degree",
+                self.positions_degree.is_some_and(|d| d > 0) && pairs.len() == angles,
+                "no coordinates other than angles",
+            ),
+            (
+                "--laurent",
+                self.laurent && pairs.len() == angles,
+                "no coordinates other than angles",
+            ),
+            (
+                "--trig-degree",
+                self.trig_degree.is_some_and(|d| d > 0) && angles == 0,
+                "no angles",
+            ),
+            (
+                "--poisson-degree",
+                self.poisson_degree.is_some_and(|d| d > 0)
+                    && system.space().poisson_variables().is_empty(),
+                "no Poisson variables (a file declares their brackets in [poisson])",
+            ),
+            (
+                "--denominators-degree",
+                self.denominators_degree.is_some_and(|d| d > 0)
+                    && vars.denominators().next().is_none(),
+                "no denominators",
+            ),
+            (
+                "--radicals-degree",
+                self.radicals_degree.is_some_and(|d| d > 0) && vars.radicals().next().is_none(),
+                "no radicals",
+            ),
+        ];
+        match options.iter().find(|(_, refused, _)| *refused) {
+            Some((option, _, lacks)) => bail!(
+                "{option}: {} has {lacks}, so it would bound nothing; leave it out",
+                subject.the_name()
+            ),
+            None => Ok(()),
+        }
+    }
 }
 
 /// The search job, as plain data.
@@ -280,10 +343,15 @@ pub fn run(job: &SearchJob) -> anyhow::Result<bool> {
 fn search_and_print(job: &SearchJob) -> anyhow::Result<bool> {
     let a = &job.args;
     let subject = Subject::open(a.file.as_ref(), a.system.as_deref(), false, &a.limits)?;
-    let mut space = SearchSpace::new(a.momenta_degree, a.positions_degree, a.trig_degree)
-        .poisson_degree(a.poisson_degree)
-        .denominators_degree(a.denominators_degree)
-        .radicals_degree(a.radicals_degree);
+    a.refuse_degrees_without_variables(&subject)?;
+    let mut space = SearchSpace::new(
+        a.momenta_degree.unwrap_or(2),
+        a.positions_degree.unwrap_or(2),
+        a.trig_degree.unwrap_or(2),
+    )
+    .poisson_degree(a.poisson_degree.unwrap_or(2))
+    .denominators_degree(a.denominators_degree.unwrap_or(2))
+    .radicals_degree(a.radicals_degree.unwrap_or(1));
     if a.laurent {
         space = space.laurent();
     }

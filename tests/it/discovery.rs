@@ -1423,13 +1423,16 @@ fn a_condition_the_flow_leaves_is_refused() {
         "p_theta^2/2 + p_phi^2/2 + cos(theta - phi)",
         "theta, phi",
     );
-    let out = superint(
-        &[
-            &["search", &coupled, "--when", "p_theta = 1"],
-            &DEGREE_ONE[..],
-        ]
-        .concat(),
-    );
+    let out = superint(&[
+        "search",
+        &coupled,
+        "--when",
+        "p_theta = 1",
+        "--momenta-degree",
+        "1",
+        "--trig-degree",
+        "1",
+    ]);
     let stderr = String::from_utf8_lossy(&out.stderr);
     assert_eq!(out.status.code(), Some(2), "{stderr}");
     assert!(
@@ -2722,5 +2725,43 @@ fn toda_search_finds_the_cubic_integral_from_h_alone() {
             "the generated ones span the whole space (11 dimensions)",
             "None: the known integrals generate every integral in the space.",
         ],
+    );
+}
+
+/// A degree above 0 for a kind of variable the system lacks would bound nothing, and the
+/// search would run as if it were not given: it is refused, naming what the system lacks. A
+/// degree 0 says the same as the space already does, and is accepted.
+#[test]
+fn a_degree_for_variables_the_system_lacks_is_refused() {
+    let refused = [
+        (
+            vec!["systems/kepler.toml", "--poisson-degree", "4"],
+            "--poisson-degree: the Kepler problem has no Poisson variables",
+        ),
+        (
+            vec!["systems/euler-top.toml", "--trig-degree", "1"],
+            "--trig-degree: the Euler top has no angles",
+        ),
+        (
+            vec!["systems/euler-top.toml", "--momenta-degree", "3"],
+            "--momenta-degree: the Euler top has no canonical momenta",
+        ),
+        (
+            vec!["systems/kepler.toml", "--radicals-degree", "2"],
+            "--radicals-degree: the Kepler problem has no radicals",
+        ),
+    ];
+    for (args, message) in refused {
+        let out = superint(&[&["search"], &args[..]].concat());
+        let stderr = String::from_utf8_lossy(&out.stderr);
+        assert_eq!(out.status.code(), Some(2), "{args:?}: {stderr}");
+        assert!(stderr.contains(message), "{args:?}: {stderr}");
+    }
+    let out = superint(&["search", "systems/euler-top.toml", "--trig-degree", "0"]);
+    assert_eq!(
+        out.status.code(),
+        Some(0),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
     );
 }
