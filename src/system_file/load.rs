@@ -696,6 +696,14 @@ impl<'a> Builder<'a> {
                      stands instead, which superint does through its conjugates"
                 ));
             }
+            if let Some(atom) = vars.denominators().find(|&a| value.contains(a)) {
+                return refuse(format!(
+                    "the denominator {value} divides by {}, declared before it: a denominator \
+                     is a polynomial in the coordinates, momenta and parameters; declare its \
+                     numerator instead",
+                    vars.variable(atom).unicode()
+                ));
+            }
             if Expr::one(&vars).checked_div(&value).is_ok() {
                 return refuse(format!(
                     "{value} is a product of the denominators declared before it and the \

@@ -114,6 +114,11 @@ fn denominators_bad_declarations_are_refused_at_their_place() {
             "[\"x - y\", \"(y - x)^2\"]",
             "bad.toml:6:26: x² − 2xy + y² is a product of the denominators declared before it",
         ),
+        (
+            "",
+            "[\"x - y\", \"x + 1/(x - y)\"]",
+            "bad.toml:6:26: the denominator x + 1/(x − y) divides by (x − y), declared before it",
+        ),
         ("", "[\"x - q\"]", "bad.toml:6:22: unknown name 'q'"),
         (
             "",

@@ -21,6 +21,12 @@ const MAX_CANDIDATES: usize = 4096;
 /// the quotient and of the divisor: a tenth of a second for 10⁵ terms).
 const MAX_REDUCED_TERMS: usize = 200_000;
 
+thread_local! {
+    /// Whether this thread is reading the definitions of denominator atoms
+    /// ([`Poly::denominator_atoms`]), which may not divide by a sum themselves.
+    static READING_ATOMS: std::cell::Cell<bool> = const { std::cell::Cell::new(false) };
+}
+
 /// An atom, the polynomial it stands for, and the power of that polynomial an element was
 /// multiplied by to clear it.
 type ClearedAtom<C> = (Var, Poly<C>, i64);
@@ -30,6 +36,13 @@ impl<C: Coefficient> Poly<C> {
     /// order (none for a set without them). Refused: a definition that does not read, or reads
     /// as zero, a single term or an expression with atoms (its clearing would be wrong).
     pub fn denominator_atoms(vars: &Vars) -> Result<Vec<(Var, Self)>, AlgebraError> {
+        // A definition that divides by a sum (`x + 1/(x − y)`) would be read through the
+        // atoms again while they are being read: refused here, at the second entry.
+        if READING_ATOMS.get() {
+            return Err(AlgebraError::Invalid(
+                "divides by a sum of terms, which a denominator's definition may not".into(),
+            ));
+        }
         let atoms: Vec<Var> = vars.denominators().collect();
         atoms
             .iter()
@@ -37,8 +50,10 @@ impl<C: Coefficient> Poly<C> {
                 let text = vars.variable(v).name();
                 let invalid =
                     |why: String| AlgebraError::Invalid(format!("the denominator {text} {why}"));
-                let d =
-                    Self::parse(vars, text).map_err(|e| invalid(format!("does not read: {e}")))?;
+                READING_ATOMS.set(true);
+                let parsed = Self::parse(vars, text);
+                READING_ATOMS.set(false);
+                let d = parsed.map_err(|e| invalid(format!("does not read: {e}")))?;
                 if d.is_zero() || d.is_monomial() {
                     return Err(invalid("is zero or a single term, not a sum".into()));
                 }
@@ -675,6 +690,27 @@ mod tests {
             .unwrap();
         let err = Expr::denominator_atoms(&vars).unwrap_err().to_string();
         assert!(err.contains("(2*x) is zero or a single term"), "{err}");
+    }
+
+    /// A definition that divides by a sum would be read through the atoms while they are
+    /// being read (it overflowed the stack): refused, and so is every division by a sum
+    /// on the set, which needs the atoms.
+    #[test]
+    fn a_denominator_that_divides_by_a_sum_is_refused() {
+        let vars = VarSet::builder()
+            .coordinate("x")
+            .coordinate("y")
+            .denominator("x - y", "x − y", "x - y")
+            .denominator("x + 1/(x - y)", "x + 1/(x − y)", "x + 1/(x - y)")
+            .build()
+            .unwrap();
+        let err = Expr::denominator_atoms(&vars).unwrap_err().to_string();
+        assert!(
+            err.contains("(x + 1/(x - y)) does not read")
+                && err.contains("divides by a sum of terms"),
+            "{err}"
+        );
+        assert!(Expr::parse(&vars, "1/(x - y)").is_err());
     }
 
     #[test]
