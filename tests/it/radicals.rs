@@ -588,3 +588,27 @@ fn a_condition_on_a_radicands_variable_is_refused() {
     let out = superint_ok(&["expand", f, "k/t", "--when", "k = 2"]);
     assert!(out.contains("k/t = 2/t"), "{out}");
 }
+
+/// A radical stands for a function of the coordinates: a condition that sets it alone
+/// (`r = 1`) contradicts `r² = x² + y²`, and refuted the true `r² = x² + y²` there. It is
+/// refused, in a file's claim at its place and on the command line.
+#[test]
+fn a_condition_on_a_radical_is_refused() {
+    let claim = format!("{PLANAR}[[claim]]\nclaim = \"r^2 = x^2 + y^2\"\nwhen = \"r = 1\"\n");
+    let file = scratch_text("radicals-condition", "on-r.toml", &claim);
+    let err = superint_refused(&["check", file.to_str().expect("a path")]);
+    assert!(
+        err.contains(
+            "on-r.toml:9:13: the condition sets r, which is a radical, a function of \
+                      the other variables"
+        ),
+        "{err}"
+    );
+    let planar = scratch_text("radicals-condition", "planar.toml", PLANAR);
+    let planar = planar.to_str().expect("a path");
+    let err = superint_refused(&["bracket", planar, "r", "H", "--when", "r = 2"]);
+    assert!(
+        err.contains("the condition sets r, which is a radical"),
+        "{err}"
+    );
+}

@@ -44,6 +44,23 @@ fn not_on_the_circle(v: Var, value: &Expr) -> Option<String> {
 /// Why setting `v` to `value` sets no point of phase space, when `v` is no angle: its
 /// variables and parameters are real, so a value that is not sets none (at `p_x = ix`,
 /// `p_x² + x² = 0` was proved, of no real point).
+/// Why a condition may not set `v` at all: it is a radical or a denominator atom, which stands
+/// for a polynomial of the other variables (`r = √(x² + y² + z²)`), so that setting it alone
+/// would contradict its definition (`r = 1` beside `r² = x² + y² + z²`).
+fn not_a_variable(v: Var, value: &Expr) -> Option<String> {
+    let vars = value.vars();
+    let what = match vars.variable(v).kind() {
+        VarKind::Radical => "a radical",
+        VarKind::Denominator => "a denominator",
+        _ => return None,
+    };
+    Some(format!(
+        "the condition sets {}, which is {what}, a function of the other variables: a \
+         condition sets coordinates, momenta, angles or parameters; set those it is made of",
+        vars.variable(v).unicode()
+    ))
+}
+
 fn not_real(v: Var, value: &Expr) -> Option<String> {
     let vars = value.vars();
     (vars.variable(v).kind() != VarKind::Angle && !value.is_real()).then(|| {
@@ -65,7 +82,8 @@ impl Condition {
     /// if `v` is an angle and `value` a constant of modulus other than 1: functions depend on
     /// an angle through `e^{iθ}`, so the value set is that of `e^{iθ}` (1 for `θ = 0`, `i` for
     /// `θ = π/2`), never 0; and if `v` is no angle and `value` is not real: the variables and
-    /// parameters take real values. [`Condition::all`] refuses all three with an error.
+    /// parameters take real values; and if `v` is a radical or a denominator, which stand for
+    /// functions of the other variables. [`Condition::all`] refuses each with an error.
     pub fn new(text: &str, v: Var, value: Expr) -> Self {
         assert!(
             !value.contains(v),
@@ -75,6 +93,11 @@ impl Condition {
         assert!(
             not_on_the_circle(v, &value).is_none(),
             "a condition sets e^{{iθ}} off the unit circle ({text}); Condition::all refuses it \
+             with an error"
+        );
+        assert!(
+            not_a_variable(v, &value).is_none(),
+            "a condition sets a radical or a denominator ({text}); Condition::all refuses it \
              with an error"
         );
         assert!(
@@ -93,13 +116,16 @@ impl Condition {
     /// another until none mentions a variable the condition sets. A variable set in terms of
     /// itself, directly (`x = 2x`) or through the others (`x = y, y = x`), is refused: such a
     /// condition is an equation, not a substitution. So is a value that is not real (for an
-    /// angle, one off the unit circle), and a variable that a denominator or a radicand
-    /// involves ([`Condition::keeps_denominators`]). Every refusal is an
+    /// angle, one off the unit circle), a radical or a denominator set as if it were a
+    /// variable, and a variable that a denominator or a radicand involves ([`Condition::keeps_denominators`]). Every refusal is an
     /// [`EngineError::RefusedCondition`] naming the variable.
     pub fn all(text: &str, subs: Vec<(Var, Expr)>) -> Result<Self, EngineError> {
         let mut subs = subs;
         for (v, value) in &subs {
-            if let Some(why) = not_on_the_circle(*v, value).or_else(|| not_real(*v, value)) {
+            if let Some(why) = not_a_variable(*v, value)
+                .or_else(|| not_on_the_circle(*v, value))
+                .or_else(|| not_real(*v, value))
+            {
                 return Err(refused(*v, why));
             }
         }
