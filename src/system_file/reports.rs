@@ -300,6 +300,9 @@ fn equations_at(
                     .map_err(|e| file.computation_error(&e.into()))?,
                 false => value,
             };
+            value
+                .check_printable()
+                .map_err(|e| file.computation_error(&e.into()))?;
             Ok(Equation::new(&lhs, value))
         })
         .collect::<Result<_, FileError>>()?;

@@ -2077,3 +2077,20 @@ fn closure_says_which_symbol_stands_for_a_display_name() {
     );
     assert!(!plain.contains("stands for"), "{plain}");
 }
+
+/// An expansion whose normal form in `cos θ, sin θ` would print past the term limit stops at
+/// once with the limit's message (`K_{60,60}` printed 2.4 million terms, 240 MB, in nine
+/// seconds, past `--max-terms 40000`), and prints below it.
+#[test]
+fn an_expansion_that_would_print_past_the_term_limit_is_refused() {
+    let file = "systems/harmonic-rotor.toml";
+    let err = crate::superint_refused(&["expand", file, "K_{60,60}", "--max-terms", "40000"]);
+    assert!(
+        err.contains(
+            "<command line>: printed in cos and sin, the result could have up to 2422371 terms"
+        ) && err.contains("past the limit of 40000 (the term limit)"),
+        "{err}"
+    );
+    let out = run(&["expand", file, "K_{2,2}", "--max-terms", "40"], 0);
+    assert!(out.contains("K_{2,2} ="), "{out}");
+}

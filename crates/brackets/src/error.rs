@@ -85,6 +85,7 @@ impl EngineError {
             self,
             EngineError::Algebra(
                 AlgebraError::TooManyTerms { .. }
+                    | AlgebraError::TooManyPrintedTerms { .. }
                     | AlgebraError::TooMuchWork { .. }
                     | AlgebraError::ExponentTooLarge { .. }
                     | AlgebraError::OrderTooLarge { .. }

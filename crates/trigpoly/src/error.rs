@@ -79,6 +79,19 @@ pub enum AlgebraError {
         /// The limit in force.
         limit: usize,
     },
+    /// An element whose normal form in `cos θ, sin θ` could print more terms than the limit
+    /// allows (each `e^{ikθ}` prints as up to `|k| + 1` of them).
+    #[error(
+        "printed in cos and sin, the result could have up to {terms} terms (e^(ikθ) takes up \
+         to k + 1), past the limit of {limit} (the term limit); raise the limit or print less \
+         of it"
+    )]
+    TooManyPrintedTerms {
+        /// The bound on the printed terms.
+        terms: u64,
+        /// The limit in force.
+        limit: usize,
+    },
     /// A product that would form more term products than the work limit allows.
     #[error(
         "the product of {left} terms by {right} would form {products} term products, past the \

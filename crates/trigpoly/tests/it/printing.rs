@@ -683,3 +683,48 @@ fn leading_part_prints_terms_of_the_whole() {
     assert_eq!(parts[parts.len() - 2], f);
     assert_eq!(parts[parts.len() - 1], f);
 }
+
+/// The bound on the printed terms is never below their number, is exact for a multiple of
+/// `e^{ikθ}` (`k + 1` terms), and `check_printable` refuses past the term limit.
+#[test]
+fn the_printed_terms_are_bounded_before_they_are_formed() {
+    let vars = VarSet::builder()
+        .coordinate("x")
+        .angle("a")
+        .coordinate("y")
+        .momentum("p_x")
+        .angle("b")
+        .build()
+        .unwrap();
+    for text in [
+        "x*exp(7*i*a)",
+        "cos(a)^2",
+        "(x + y*cos(a) + p_x*sin(2*b) + cos(a - b))^4",
+        "(1 + x + y*cos(a) + p_x*sin(2*b) + cos(a - b) + i*x*sin(b))^5",
+        "x + y",
+    ] {
+        let f: G = p(&vars, text);
+        let printed = f.cos_sin_terms().len() as u64;
+        assert!(f.printed_terms_bound() >= printed, "{text}");
+    }
+    assert_eq!(
+        p::<GaussianRational>(&vars, "x*exp(7*i*a)").printed_terms_bound(),
+        8
+    );
+    let limited = VarSet::builder()
+        .coordinate("x")
+        .angle("a")
+        .limits(trigpoly::Limits {
+            max_terms: 40,
+            ..Default::default()
+        })
+        .build()
+        .unwrap();
+    let wide: G = p(&limited, "(1 + x)^4*exp(9*i*a)");
+    assert_eq!(wide.len(), 5);
+    let err = wide.check_printable().unwrap_err().to_string();
+    assert!(err.contains("up to 50 terms"), "{err}");
+    assert!(p::<GaussianRational>(&limited, "(1 + x)^4*exp(6*i*a)")
+        .check_printable()
+        .is_ok());
+}
