@@ -584,11 +584,20 @@ impl<'a> Builder<'a> {
             return Err(self.error(ErrorKind::Name, span, bad.declaring(name, what)));
         }
         if let Some((other, at)) = self.names.get(name) {
-            let line = super::error::locate(&self.source.text, at.clone()).line;
+            // The second in the file is refused, though the kinds are declared in turn (the
+            // functions before the families).
+            let ((first, first_at), (second, second_at)) = match at.start > span.start {
+                true => ((what, &span), (*other, at)),
+                false => ((*other, at), (what, &span)),
+            };
+            let line = super::error::locate(&self.source.text, first_at.clone()).line;
             return Err(self.error(
                 ErrorKind::Name,
-                span,
-                format!("'{name}' is already declared as {other} on line {line}"),
+                second_at.clone(),
+                format!(
+                    "'{name}' is already declared as {first} on line {line}, so it cannot be \
+                     {second} too"
+                ),
             ));
         }
         // A name that is an instance of a family (`K_2_0` beside `K`) would stand for two
@@ -606,19 +615,25 @@ impl<'a> Builder<'a> {
                 .filter(|(_, (kind, _))| *kind == FAMILY),
         };
         if let Some((other, (kind, at))) = instance {
-            let line = super::error::locate(&self.source.text, at.clone()).line;
             let instance = match what {
                 FAMILY => other.as_str(),
                 _ => name,
             };
             let (family, m, n) = instance_parts(instance).expect("found as an instance");
+            // Said at the second of the two in the file.
+            let ((first, first_kind, first_at), (second, second_kind, second_at)) =
+                match at.start > span.start {
+                    true => ((name, what, &span), (other.as_str(), *kind, at)),
+                    false => ((other.as_str(), *kind, at), (name, what, &span)),
+                };
+            let line = super::error::locate(&self.source.text, first_at.clone()).line;
             return Err(self.error(
                 ErrorKind::Name,
-                span,
+                second_at.clone(),
                 format!(
-                    "'{name}' cannot be {what} of this file, which declares {kind} '{other}' on \
-                     line {line}: '{instance}' is the instance {family}_{{{m},{n}}} of the \
-                     family {family}; give one of them another name"
+                    "'{second}' cannot be {second_kind} of this file, which declares \
+                     {first_kind} '{first}' on line {line}: '{instance}' is the instance \
+                     {family}_{{{m},{n}}} of the family {family}; give one of them another name"
                 ),
             ));
         }

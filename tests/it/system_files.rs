@@ -3040,9 +3040,20 @@ fn a_name_written_as_a_family_instance_is_refused() {
     assert_eq!(o.status.code(), Some(2));
     assert_eq!(
         text(&o.stderr).lines().next().unwrap_or_default(),
-        "superint: error: f.toml:6:8: 'K' cannot be a family of this file, which declares a \
-         function 'K_2_0' on line 9: 'K_2_0' is the instance K_{2,0} of the family K; give one \
-         of them another name"
+        "superint: error: f.toml:9:8: 'K_2_0' cannot be a function of this file, which \
+         declares a family 'K' on line 6: 'K_2_0' is the instance K_{2,0} of the family K; give \
+         one of them another name"
+    );
+    // The second in the file is refused, though the functions are declared before the
+    // families: a function named as a family below it.
+    let same = "[[function]]\nname = \"K\"\nvalue = \"p_x\"\n";
+    std::fs::write(dir.join("s.toml"), format!("{head}{family}{same}")).expect("write");
+    let o = superint_in(&dir, &["check", "s.toml"]);
+    assert_eq!(o.status.code(), Some(2));
+    assert_eq!(
+        text(&o.stderr).lines().next().unwrap_or_default(),
+        "superint: error: s.toml:9:8: 'K' is already declared as a family on line 6, so it \
+         cannot be a function too"
     );
     let parameter = head.replace("angles", "parameters = [\"K_1_1\"]\nangles");
     std::fs::write(dir.join("p.toml"), format!("{parameter}{family}")).expect("write");
