@@ -422,7 +422,11 @@ fn with_instances(
         if system.get(name).is_ok() {
             continue; // named twice
         }
-        let value = file.family_instance(k, m, n)?;
+        // An error is said at the name as given (`K_{900,900}` past the term limit).
+        let given = file.given("<name>", name);
+        let value = file
+            .scope(file.families.len())
+            .expand(k, m, n, &given, 0..name.len())?;
         let display = format!("{}_{{{m},{n}}}", file.families[k].display);
         system.define(name, &display, value);
     }

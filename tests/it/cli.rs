@@ -2094,3 +2094,19 @@ fn an_expansion_that_would_print_past_the_term_limit_is_refused() {
     let out = run(&["expand", file, "K_{2,2}", "--max-terms", "40"], 0);
     assert!(out.contains("K_{2,2} ="), "{out}");
 }
+
+/// A family instance that `table` cannot expand is an error of the command line that names
+/// it, with the family's place in the hint, as `bracket` says it (it was placed at the
+/// family's value in the file).
+#[test]
+fn a_table_instance_past_a_limit_is_an_error_of_the_command_line() {
+    let file = "systems/harmonic-rotor.toml";
+    for command in ["table", "bracket"] {
+        let err = crate::superint_refused(&[command, file, "K_{30,30}", "L", "--max-terms", "100"]);
+        assert!(
+            err.starts_with("superint: error: <command line>:1:1: cannot expand K_{30,30}: the result would have more than 100 terms")
+                && err.contains("hint: the family's value is at systems/harmonic-rotor.toml:58:10"),
+            "{command}: {err}"
+        );
+    }
+}
