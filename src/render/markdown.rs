@@ -12,12 +12,12 @@ use crate::report::{
 
 /// Renders a report as Markdown.
 pub fn render(report: &Report, options: &Options) -> String {
-    let mut blocks: Vec<String> = vec![format!("# {}", report.title)];
+    let mut blocks: Vec<String> = vec![format!("# {}", prose(&report.title))];
     if !report.subtitle.is_empty() {
-        blocks.push(format!("*{}*", report.subtitle));
+        blocks.push(format!("*{}*", prose(&report.subtitle)));
     }
     for s in &report.sections {
-        blocks.push(format!("## {}. {}", s.number, s.title));
+        blocks.push(format!("## {}. {}", s.number, prose(&s.title)));
         let mut list: Vec<String> = Vec::new();
         for e in s.shown_entries() {
             if let Entry::Claim(c) = e {
@@ -43,10 +43,30 @@ fn code(s: &str) -> String {
     format!("`{s}`")
 }
 
+/// Prose for Markdown: `<`, `>` and `&` outside code spans written as entities, so that a
+/// name such as `<stdin>` is not read as an HTML tag and dropped.
+fn prose(s: &str) -> String {
+    let mut out = String::with_capacity(s.len());
+    let mut in_code = false;
+    for c in s.chars() {
+        match (c, in_code) {
+            ('`', _) => {
+                in_code = !in_code;
+                out.push(c);
+            }
+            ('<', false) => out.push_str("&lt;"),
+            ('>', false) => out.push_str("&gt;"),
+            ('&', false) => out.push_str("&amp;"),
+            _ => out.push(c),
+        }
+    }
+    out
+}
+
 fn entry(e: &Entry) -> String {
     match e {
-        Entry::Heading(h) => format!("### {h}"),
-        Entry::Text(t) => t.clone(),
+        Entry::Heading(h) => format!("### {}", prose(h)),
+        Entry::Text(t) => prose(t),
         Entry::Equations(eq) => equations(eq),
         Entry::Claim(c) => claim(c),
         Entry::Table(t) => table(t),

@@ -2110,3 +2110,22 @@ fn a_table_instance_past_a_limit_is_an_error_of_the_command_line() {
         );
     }
 }
+
+/// Markdown headings and prose write `<`, `>` and `&` as entities outside code spans: a file
+/// read from standard input is `<stdin>`, which a Markdown viewer took for an HTML tag and
+/// dropped (`## 1. Kepler problem ()`).
+#[test]
+fn markdown_prose_escapes_what_reads_as_html() {
+    let text = std::fs::read("systems/kepler.toml").expect("the file");
+    let mut child = Command::new(env!("CARGO_BIN_EXE_superint"))
+        .args(["check", "-", "--format", "markdown"])
+        .stdin(std::process::Stdio::piped())
+        .stdout(std::process::Stdio::piped())
+        .spawn()
+        .expect("superint runs");
+    std::io::Write::write_all(&mut child.stdin.take().expect("stdin"), &text).expect("write");
+    let out = child.wait_with_output().expect("superint ends");
+    let md = stdout(&out);
+    assert!(md.contains("## 1. Kepler problem (&lt;stdin&gt;)"), "{md}");
+    assert!(md.contains("`−k/r`"), "{md}");
+}
