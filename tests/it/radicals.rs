@@ -436,7 +436,13 @@ fn radicals_bad_declarations_are_refused_at_their_place() {
         (
             "{ r = \"-x^2 - y^2 - 1\" }",
             "bad.toml:6:18: the radicand −x² − y² − 1 is nowhere positive (each term is a \
-             negative number times even powers), so r = √(−x² − y² − 1) is real nowhere",
+             negative number times even powers), so r is real nowhere",
+        ),
+        (
+            // A long square: said by its size, its root not sought (`^500` took minutes).
+            "{ r = \"(x^2 + y^2 + 1)^40\" }",
+            "bad.toml:6:14: the radicand of r = √(a polynomial of 861 terms) is a square (it is \
+             one at every point tried)",
         ),
         (
             "{ x = \"x^2 + y^2\" }",
