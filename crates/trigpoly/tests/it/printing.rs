@@ -631,20 +631,25 @@ fn high_trigonometric_powers_print_as_single_terms() {
     assert_eq!(p::<GaussianRational>(&vars, &g.to_ascii()), g);
 }
 
-/// The leading part of an element (the terms of its first `k` monomials outside the angles)
-/// prints terms of the whole only: the cos/sin normal form combines the `e^{ikθ}` terms of one
-/// monomial outside the angles and no others, so each printed term of the part is a printed
-/// term of the whole, and the part of every monomial is the whole.
-#[test]
-fn leading_part_prints_terms_of_the_whole() {
-    let vars = VarSet::builder()
+/// Coordinates and a momentum between two angles, `x, a, y, p_x, b`.
+fn two_angles() -> Vars {
+    VarSet::builder()
         .coordinate("x")
         .angle("a")
         .coordinate("y")
         .momentum("p_x")
         .angle("b")
         .build()
-        .unwrap();
+        .unwrap()
+}
+
+/// The leading part of an element (the terms of its first `k` monomials outside the angles)
+/// prints terms of the whole only: the cos/sin normal form combines the `e^{ikθ}` terms of one
+/// monomial outside the angles and no others, so each printed term of the part is a printed
+/// term of the whole, and the part of every monomial is the whole.
+#[test]
+fn leading_part_prints_terms_of_the_whole() {
+    let vars = two_angles();
     let f: G = p(
         &vars,
         "(1 + x + y*cos(a) + p_x*sin(2*b) + cos(a - b) + i*x*sin(b))^5",
@@ -688,14 +693,7 @@ fn leading_part_prints_terms_of_the_whole() {
 /// `e^{ikθ}` (`k + 1` terms), and `check_printable` refuses past the term limit.
 #[test]
 fn the_printed_terms_are_bounded_before_they_are_formed() {
-    let vars = VarSet::builder()
-        .coordinate("x")
-        .angle("a")
-        .coordinate("y")
-        .momentum("p_x")
-        .angle("b")
-        .build()
-        .unwrap();
+    let vars = two_angles();
     for text in [
         "x*exp(7*i*a)",
         "cos(a)^2",
