@@ -62,6 +62,9 @@ fn invisible(c: char) -> bool {
 pub enum BadName {
     /// Not letters, digits and `_` starting with a letter or `_`.
     Malformed,
+    /// Ending in `_` or holding `__` (`a_`, `_`, `a__b`): each `_` starts a subscript, so that
+    /// such a name has an empty one, which LaTeX writes as `x_{}` (printed as `x`) or not at all.
+    EmptySubscript,
     /// A letter LaTeX output could not write, and why ([`unwritable_letter`]).
     Unwritable(String),
     /// A reserved name, and why ([`reserved`]).
@@ -73,6 +76,8 @@ impl BadName {
     pub fn of(name: &str) -> Option<BadName> {
         if !is_identifier(name) {
             Some(BadName::Malformed)
+        } else if name.ends_with('_') || name.contains("__") {
+            Some(BadName::EmptySubscript)
         } else if let Some(why) = latex_unwritable(name).and_then(unwritable_letter) {
             Some(BadName::Unwritable(why))
         } else {
@@ -81,10 +86,12 @@ impl BadName {
     }
 
     /// The message for declaring `name` as `what` (`a function`): `'2Q' cannot name a
-    /// function: a name is …`; a reserved name's reason says it alone.
+    /// function: a name is …`, `'a_' cannot be a name: …`; a reserved name's reason says it
+    /// alone.
     pub fn declaring(&self, name: &str, what: &str) -> String {
         match self {
             BadName::Reserved(why) => why.clone(),
+            BadName::EmptySubscript => format!("'{name}' cannot be a name: {}", self.why()),
             _ => format!("'{name}' cannot name {what}: {}", self.why()),
         }
     }
@@ -96,6 +103,7 @@ impl BadName {
             BadName::Malformed => {
                 "a name is letters, digits and '_', starting with a letter or '_'"
             }
+            BadName::EmptySubscript => "a name cannot end in '_' or hold '__'",
             BadName::Unwritable(why) | BadName::Reserved(why) => why,
         }
     }

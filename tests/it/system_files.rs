@@ -454,6 +454,44 @@ fn bad_inputs() -> Vec<(&'static str, Vec<u8>, &'static str, Vec<&'static str>)>
             "bad.toml:14:17: 'щ' cannot name an index: LaTeX has no letter 'щ'",
             check.clone(),
         ),
+        // Each `_` starts a subscript: a name ending in one, or with two in a row, has an empty
+        // subscript, which LaTeX wrote as `x_{,} H` or `\mathrm{a_}` (every kind of name).
+        (
+            "coordinate ending in '_'",
+            base_with("coordinates = [\"x\"]", "coordinates = [\"x\", \"x_\"]"),
+            "bad.toml:5:21: 'x_' cannot be a name: a name cannot end in '_' or hold '__'",
+            check.clone(),
+        ),
+        (
+            "parameter named '_'",
+            base_with("parameters = [\"M\", ", "parameters = [\"M\", \"_\", "),
+            "bad.toml:6:20: '_' cannot be a name: a name cannot end in '_' or hold '__'",
+            check.clone(),
+        ),
+        (
+            "function with '__'",
+            base_with("name = \"A\"", "name = \"a__b\""),
+            "bad.toml:9:8: 'a__b' cannot be a name: a name cannot end in '_' or hold '__'",
+            check.clone(),
+        ),
+        (
+            "family ending in '_'",
+            base_with(
+                "[[claim]]",
+                "[[family]]\nname = \"K_\"\nvalue = \"A^m*x^n\"\n\n[[claim]]",
+            ),
+            "bad.toml:13:8: 'K_' cannot be a name: a name cannot end in '_' or hold '__'",
+            check.clone(),
+        ),
+        (
+            "radical ending in '_'",
+            base_with(
+                "parameters = [\"M\", \"omega\"]",
+                "parameters = [\"M\", \"omega\"]\nradicals = { r_ = \"x^2 + 1\" }",
+            ),
+            "bad.toml:7:14: 'r_' cannot be a name: a name cannot end in '_' or hold '__'",
+            check.clone(),
+        ),
         (
             "bracket with a parameter",
             base_with("{A, H}", "{A, omega}"),
