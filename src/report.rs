@@ -8,6 +8,7 @@
 //! nondeterministic data and are kept apart (`seconds`). This file holds the report's shape,
 //! `report/results.rs` each kind of result it holds.
 
+use crate::render::tex::Names;
 use trigpoly::Expr;
 
 mod results;
@@ -85,6 +86,9 @@ pub struct Section {
     pub file: Option<String>,
     /// The entries, in order.
     pub entries: Vec<Entry>,
+    /// The names of the section's system, as its expressions write them in LaTeX, for its
+    /// statements, headers and titles (none for the paper's own texts).
+    pub names: Names,
 }
 
 impl Section {
@@ -368,6 +372,7 @@ impl Report {
                 title: title.to_string(),
                 file: None,
                 entries: claims.into_iter().map(Entry::Claim).collect(),
+                names: Names::default(),
             }],
             summary: SummaryKind::Claims,
             seconds,

@@ -1,6 +1,7 @@
 //! The report of `superint closure` ([`closure_report`]): the brackets of the generated algebra
 //! in its generators, the relations among them, each proved.
 
+use crate::render::tex::Names;
 use std::time::Instant;
 
 use brackets::closure::{closure_of, Bracket, Closure, ClosureOptions};
@@ -95,7 +96,11 @@ pub fn closure_report(
         results,
         stuck,
     };
-    let sections = vec![structure.section(&gens)?, relations_section(&c, &holding)];
+    let names = Names::of_system(system);
+    let sections = vec![
+        structure.section(&gens)?,
+        relations_section(&c, &holding, names),
+    ];
     Ok((
         Report {
             title: format!("Closure of {gens} for {}{when}", name),
@@ -202,6 +207,7 @@ impl Structure<'_> {
             title: "Structure".into(),
             file: None,
             entries,
+            names: Names::of_system(self.system),
         })
     }
 
@@ -360,7 +366,7 @@ fn bracket_claims(c: &Closure, holding: &Holding) -> Vec<Entry> {
 }
 
 /// Section 2: the minimal relations among the generators, each a claim `R1, R2, …`.
-fn relations_section(c: &Closure, holding: &Holding) -> Section {
+fn relations_section(c: &Closure, holding: &Holding, names: Names) -> Section {
     let mut entries = vec![Entry::Text(format!(
         "The polynomial relations among the generators up to degree {}, each minimal (not a \
          combination of multiples of lower ones), each checked by expanding it.",
@@ -383,6 +389,7 @@ fn relations_section(c: &Closure, holding: &Holding) -> Section {
         title: "Relations".into(),
         file: None,
         entries,
+        names,
     }
 }
 

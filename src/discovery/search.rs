@@ -1,6 +1,7 @@
 //! The report of `superint search` ([`search_report`]): the space searched, the dimensions by
 //! degree, a basis written like the paper (or the new integrals beyond known ones), each proved.
 
+use crate::render::tex::Names;
 use std::time::Instant;
 
 use brackets::search::{search, Integral, NewIntegrals, SearchOptions, SearchResult, SearchSpace};
@@ -493,6 +494,8 @@ struct Shared {
     complex: &'static str,
     /// The integrals shown (all, the new ones, or the generators), by index in the basis.
     shown: Vec<usize>,
+    /// The system's names in LaTeX.
+    names: Names,
 }
 
 impl Shared {
@@ -507,6 +510,7 @@ impl Shared {
             letter: label_letter(system, &["I", "J", "Φ"], r.basis.len()),
             complex: label_letter(system, &["A", "B", "Ψ"], r.basis.len()),
             shown: shown_integrals(r),
+            names: Names::of_system(system),
         }
     }
 
@@ -544,6 +548,7 @@ impl Shared {
             title: "Search".into(),
             file: None,
             entries,
+            names: self.names.clone(),
         })
     }
 
@@ -660,6 +665,7 @@ impl Shared {
             },
             file: None,
             entries,
+            names: self.names.clone(),
         })
     }
 

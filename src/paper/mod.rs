@@ -21,6 +21,7 @@ mod gravity;
 mod harmonic;
 mod planar;
 
+use crate::render::tex::Names;
 use std::sync::Arc;
 use std::time::Instant;
 
@@ -183,6 +184,7 @@ impl Paper {
                         .into_iter()
                         .flatten()
                         .collect(),
+                    names: Names::default(),
                 })
             })
             .collect::<Result<Vec<_>, EngineError>>()?;
@@ -265,6 +267,7 @@ pub fn tower_report_with_progress(
             title: format!("`{{{k}_{{m,n}}, H}}` for the {}", system.name()),
             file: None,
             entries,
+            names: Names::of_system(&system),
         }],
         summary: SummaryKind::Tower,
         seconds: start.elapsed().as_secs_f64(),

@@ -4,7 +4,7 @@
 
 use trigpoly::Style;
 
-use super::tex::{markup, math, relation, sentence, text};
+use super::tex::{markup, markup_with, math, math_with, relation, sentence, text, Names};
 use super::text::{point, upper_bound, wrap};
 use super::{stopped, table_list, verdict, Options};
 use crate::report::{
@@ -32,7 +32,7 @@ pub fn render(report: &Report, options: &Options) -> String {
         // A title may end with a file's path, which breaks after its slashes and underscores;
         // ragged right, so that a break that leaves a short line is taken rather than a path
         // set past the margin.
-        let title = markup(&s.title)
+        let title = markup_with(&s.title, &s.names)
             .replace('/', r"/\allowbreak{}")
             .replace(r"\_", r"\_\allowbreak{}");
         out.push(format!(
@@ -42,11 +42,11 @@ pub fn render(report: &Report, options: &Options) -> String {
         let mut rows: Vec<String> = Vec::new();
         for e in s.shown_entries() {
             if let Entry::Claim(c) = e {
-                rows.extend(claim_rows(c));
+                rows.extend(claim_rows(c, &s.names));
                 continue;
             }
             flush(&mut out, &mut rows);
-            entry(&mut out, e);
+            entry(&mut out, e, &s.names);
         }
         flush(&mut out, &mut rows);
     }
@@ -79,7 +79,8 @@ fn flush(out: &mut Vec<String>, rows: &mut Vec<String>) {
 }
 
 /// `lhs &= rhs`: a statement split at its relation for alignment.
-fn aligned(statement: &str) -> String {
+fn aligned(statement: &str, names: &Names) -> String {
+    let math = |s: &str| math_with(s, names);
     match relation(statement) {
         Some(k) => format!("{} &{}", math(&statement[..k]), math(&statement[k..])),
         None => format!("& {}", math(statement)),
@@ -222,7 +223,8 @@ fn broken_rows(first: &str, rhs: &str, max: usize) -> Vec<String> {
         .collect()
 }
 
-fn claim_rows(c: &ClaimResult) -> Vec<String> {
+fn claim_rows(c: &ClaimResult, names: &Names) -> Vec<String> {
+    let math = |s: &str| math_with(s, names);
     let cond = match &c.condition {
         Some(cond) => format!(r"\quad\text{{at }} {}", math(cond)),
         None => String::new(),
@@ -244,7 +246,7 @@ fn claim_rows(c: &ClaimResult) -> Vec<String> {
             let room = ROW.saturating_sub(visual_width(&lhs)).max(ROW / 2);
             broken_rows(&format!("{lhs} &"), &math(&c.statement[k..]), room)
         }
-        None => vec![aligned(&c.statement)],
+        None => vec![aligned(&c.statement, names)],
     };
     let last = rows.last_mut().expect("a row");
     last.push_str(&format!(
@@ -296,27 +298,27 @@ fn prose_rows(sentence: &str) -> Vec<String> {
         .collect()
 }
 
-fn entry(out: &mut Vec<String>, e: &Entry) {
+fn entry(out: &mut Vec<String>, e: &Entry, names: &Names) {
     match e {
-        Entry::Heading(h) => out.push(format!(r"\subsection*{{{}}}", markup(h))),
+        Entry::Heading(h) => out.push(format!(r"\subsection*{{{}}}", markup_with(h, names))),
         Entry::Text(t) => {
-            out.push(markup(t));
+            out.push(markup_with(t, names));
             out.push(String::new());
         }
-        Entry::Equations(eq) => equations(out, eq),
+        Entry::Equations(eq) => equations(out, eq, names),
         Entry::Claim(c) => {
-            let mut rows = claim_rows(c);
+            let mut rows = claim_rows(c, names);
             flush(out, &mut rows);
         }
-        Entry::Table(t) => table(out, t),
-        Entry::Proof(p) => proof(out, p),
-        Entry::Tower(t) => tower(out, t),
-        Entry::Rank(r) => rank(out, r),
+        Entry::Table(t) => table(out, t, names),
+        Entry::Proof(p) => proof(out, p, names),
+        Entry::Tower(t) => tower(out, t, names),
+        Entry::Rank(r) => rank(out, r, names),
         Entry::Data(_) => {}
     }
 }
 
-fn equations(out: &mut Vec<String>, eq: &Equations) {
+fn equations(out: &mut Vec<String>, eq: &Equations, names: &Names) {
     if !eq.caption.is_empty() {
         out.push(format!(r"\noindent {}:", text(&eq.caption)));
     }
@@ -324,7 +326,7 @@ fn equations(out: &mut Vec<String>, eq: &Equations) {
         .lines
         .iter()
         .flat_map(|l| {
-            let mut rows = long_rows(&math(&l.lhs), "=", &l.rhs, ROW);
+            let mut rows = long_rows(&math_with(&l.lhs, names), "=", &l.rhs, ROW);
             if let Some(f) = &l.in_functions {
                 rows.extend(long_rows("", "=", f, ROW));
             }
@@ -338,24 +340,24 @@ fn equations(out: &mut Vec<String>, eq: &Equations) {
 /// list of its brackets: about the width of the page.
 const TABLE_ROW: usize = 70;
 
-fn table(out: &mut Vec<String>, t: &TableResult) {
-    table_body(out, t);
-    let names = &t.table.display;
+fn table(out: &mut Vec<String>, t: &TableResult, names: &Names) {
+    table_body(out, t, names);
+    let display = &t.table.display;
     for (a, b, message) in t.undecided() {
         out.push(format!(
             r"\noindent $\{{{}, {}\}} = ?$: {}\par",
-            math(&names[a]),
-            math(&names[b]),
+            math_with(&display[a], names),
+            math_with(&display[b], names),
             text(&stopped(message))
         ));
     }
 }
 
 /// The table as an array, or as a list when it is too wide for the page.
-fn table_body(out: &mut Vec<String>, t: &TableResult) {
+fn table_body(out: &mut Vec<String>, t: &TableResult, names: &Names) {
     let table = &t.table;
     let cells = t.cells(Style::Latex);
-    let head: Vec<String> = table.display.iter().map(|d| math(d)).collect();
+    let head: Vec<String> = table.display.iter().map(|d| math_with(d, names)).collect();
     let column = |k: usize| {
         let widest = cells.iter().map(|row| visual_width(&row[k])).max();
         widest.unwrap_or(0).max(visual_width(&head[k])) + 2
@@ -365,7 +367,7 @@ fn table_body(out: &mut Vec<String>, t: &TableResult) {
         return table_as_list(out, t, &head, &cells);
     }
     out.push(r"\begin{center}".into());
-    out.push(format!(r"{}\\[1ex]", markup(&t.caption)));
+    out.push(format!(r"{}\\[1ex]", markup_with(&t.caption, names)));
     out.push(r"$\begin{array}{c|".to_string() + &"c".repeat(table.display.len()) + "}");
     out.push(format!(r"\{{\cdot,\cdot\}} & {} \\", head.join(" & ")));
     out.push(r"\hline".into());
@@ -401,8 +403,8 @@ fn table_as_list(out: &mut Vec<String>, t: &TableResult, head: &[String], cells:
     flush(out, &mut rows);
 }
 
-fn tower(out: &mut Vec<String>, t: &TowerResult) {
-    let mut rows = claim_rows(&t.claim);
+fn tower(out: &mut Vec<String>, t: &TowerResult, names: &Names) {
+    let mut rows = claim_rows(&t.claim, names);
     flush(out, &mut rows);
     out.push(format!(
         r"\noindent {} expanded for {} (ladder ${}$), {}.",
@@ -414,7 +416,8 @@ fn tower(out: &mut Vec<String>, t: &TowerResult) {
     out.push(String::new());
 }
 
-fn proof(out: &mut Vec<String>, p: &ProofResult) {
+fn proof(out: &mut Vec<String>, p: &ProofResult, names: &Names) {
+    let math = |s: &str| math_with(s, names);
     out.push(format!(r"\paragraph{{Proof}} {}:", sentence(&p.title)));
     out.push(r"\begin{enumerate}".into());
     let mark = |ok: bool| if ok { "holds" } else { "FAILS" };
@@ -448,18 +451,18 @@ fn proof(out: &mut Vec<String>, p: &ProofResult) {
     out.push(String::new());
     let (label, closing) = p.closing();
     out.push(format!(r"\emph{{{label}:}} {}.", sentence(&closing)));
-    let mut rows: Vec<String> = p.claims.iter().flat_map(claim_rows).collect();
+    let mut rows: Vec<String> = p.claims.iter().flat_map(|c| claim_rows(c, names)).collect();
     flush(out, &mut rows);
 }
 
-fn rank(out: &mut Vec<String>, r: &RankResult) {
-    let mut rows = claim_rows(&r.claim);
+fn rank(out: &mut Vec<String>, r: &RankResult, names: &Names) {
+    let mut rows = claim_rows(&r.claim, names);
     flush(out, &mut rows);
     let c = &r.certificate;
     let fns: Vec<String> = r
         .minor_functions()
         .iter()
-        .map(|f| format!("${}$", math(f)))
+        .map(|f| format!("${}$", math_with(f, names)))
         .collect();
     let cols: Vec<String> = r
         .minor_coordinates()

@@ -138,16 +138,128 @@ enum Tok {
     Space,
     /// One character (with the accent over it, if any).
     Char(char, Option<&'static str>),
+    /// A name the system declares, in its LaTeX ([`Names`]).
+    Name(String),
 }
 
-fn tokenize(s: &str) -> Vec<Tok> {
+/// A system's names and their LaTeX as the expression printer writes them (a variable's
+/// [`trigpoly::Variable::latex`], a function's [`brackets::table::latex_name`] of its display
+/// name), so that a statement, a table's header or a title writes a name as its expressions
+/// do: `alpha1` is `\alpha_{1}` (it was `alpha_{1}`, a·l·p·h·a), `ωx` is `\mathrm{{\omega}x}`
+/// (it was `\omega x`, ω·x), `Lambda3x` is `\mathrm{Lambda3x}`. A run of letters that the names
+/// spell whole is read as those names, longest first; any other is translated as before.
+#[derive(Clone, Debug, Default)]
+pub struct Names {
+    /// Each name as written (unicode, display or ASCII) and its LaTeX.
+    forms: Vec<(String, String)>,
+}
+
+impl Names {
+    /// The names of `system`: its variables (but its denominators, which are polynomials) by
+    /// their unicode and ASCII names, its functions by their display and ASCII names.
+    pub fn of_system(system: &brackets::System) -> Names {
+        let vars = system.vars();
+        let mut forms = Vec::new();
+        for v in vars.vars() {
+            let var = vars.variable(v);
+            if var.kind() == trigpoly::VarKind::Denominator {
+                continue;
+            }
+            for written in [var.unicode(), var.name()] {
+                forms.push((written.to_string(), var.latex().to_string()));
+            }
+        }
+        for f in system.functions() {
+            let latex = brackets::table::latex_name(&f.display);
+            forms.push((f.display.clone(), latex.clone()));
+            forms.push((f.name.clone(), latex));
+        }
+        forms.sort();
+        forms.dedup_by(|a, b| a.0 == b.0);
+        Names { forms }
+    }
+
+    /// The LaTeX of each name that `run` spells, in order, when the names spell it whole: the
+    /// fewest names, so the longest.
+    fn spell(&self, run: &str) -> Option<Vec<&str>> {
+        if self.forms.is_empty() {
+            return None;
+        }
+        // best[k]: the fewest names that spell run[k..], and the first of them.
+        let mut best: Vec<Option<(usize, usize)>> = vec![None; run.len() + 1];
+        best[run.len()] = Some((0, usize::MAX));
+        for k in (0..run.len()).rev().filter(|&k| run.is_char_boundary(k)) {
+            for (f, (written, _)) in self.forms.iter().enumerate() {
+                let end = k + written.len();
+                if !written.is_empty() && run[k..].starts_with(written.as_str()) {
+                    if let Some((n, _)) = best[end] {
+                        if best[k].is_none_or(|(m, _)| n + 1 < m) {
+                            best[k] = Some((n + 1, f));
+                        }
+                    }
+                }
+            }
+        }
+        let mut out = Vec::new();
+        let mut k = 0;
+        while k < run.len() {
+            let (_, f) = best[k]?;
+            let (written, latex) = &self.forms[f];
+            out.push(latex.as_str());
+            k += written.len();
+        }
+        Some(out)
+    }
+}
+
+/// Whether `c` can be in a name: a letter, a digit, `_`, a prime, a combining mark (a bar).
+fn in_name(c: char) -> bool {
+    c.is_alphabetic()
+        || c.is_ascii_digit()
+        || SUBSCRIPTS.contains(c)
+        || matches!(c, '_' | '\'')
+        || is_combining(c)
+}
+
+/// The names that the run of name characters starting at `chars[i]` spells whole, after
+/// the digits it starts with (a number's: `2ωx`), and where the run ends; `None` for a run
+/// that is a function's (`cos`), prose (`solves`, `at`) unless it is one name, or that the names
+/// do not spell.
+fn spelled<'n>(chars: &[char], i: usize, names: &'n Names) -> Option<(usize, Vec<&'n str>, usize)> {
+    let end = (i..chars.len())
+        .find(|&j| !in_name(chars[j]))
+        .unwrap_or(chars.len());
+    let digits = chars[i..end]
+        .iter()
+        .take_while(|c| c.is_ascii_digit())
+        .count();
+    if i + digits == end {
+        return None;
+    }
+    let run: String = chars[i + digits..end].iter().collect();
+    let spelled = names.spell(&run)?;
+    let function = FUNCTIONS.iter().any(|f| f.0 == run) || matches!(run.as_str(), "re" | "im");
+    let prose = is_prose_word(&run) || run == "a";
+    ((!function && !prose) || spelled.len() == 1).then_some((digits, spelled, end))
+}
+
+fn tokenize(s: &str, names: &Names) -> Vec<Tok> {
     let chars: Vec<char> = s.chars().collect();
     let mut out = Vec::new();
     let mut i = 0;
     let accent_at = |j: usize| chars.get(j).copied().and_then(accent_of);
     while i < chars.len() {
         let c = chars[i];
-        if c == ' ' {
+        let run_starts = i == 0 || !in_name(chars[i - 1]);
+        if let Some((digits, spelled, end)) = spelled(&chars, i, names).filter(|_| run_starts) {
+            out.extend(chars[i..i + digits].iter().map(|&d| Tok::Char(d, None)));
+            out.extend(
+                spelled
+                    .into_iter()
+                    .map(|latex| Tok::Name(latex.to_string())),
+            );
+            i = end;
+        } else if c == ' ' {
             while i < chars.len() && chars[i] == ' ' {
                 i += 1;
             }
@@ -225,7 +337,12 @@ fn char_math(c: char) -> Option<String> {
 /// assert_eq!(math("K̄_{m,n} for all m"), r"\bar{K}_{m,n}\ \text{for all}\ m");
 /// ```
 pub fn math(s: &str) -> String {
-    translate(s)
+    translate(s, &Names::default())
+}
+
+/// [`math`] with the names of a system written as its expressions write them ([`Names`]).
+pub fn math_with(s: &str, names: &Names) -> String {
+    translate(s, names)
 }
 
 /// A sentence that mixes prose and formulas, in text mode: runs of prose words stay text,
@@ -333,8 +450,8 @@ fn prose_words(toks: &[Tok]) -> Vec<bool> {
 }
 
 /// Translates a formula in the paper's unicode notation into LaTeX math, token by token.
-fn translate(s: &str) -> String {
-    let toks = tokenize(s);
+fn translate(s: &str, names: &Names) -> String {
+    let toks = tokenize(s, names);
     let prose = prose_words(&toks);
     Translation::new(&toks, &prose).run()
 }
@@ -425,6 +542,7 @@ impl<'a> Translation<'a> {
                     continue;
                 }
                 Tok::Char(c, accent) => self.character(*c, *accent),
+                Tok::Name(latex) => self.name(latex),
             }
             self.k += 1;
         }
@@ -482,15 +600,46 @@ impl<'a> Translation<'a> {
         }
     }
 
+    /// A declared name's LaTeX: a base whose scripts are its own (`G_{1}'`, a subscript and a
+    /// prime), and after a control word a space, so that a letter after it cannot extend it.
+    fn name(&mut self, latex: &str) {
+        self.out.push_str(latex);
+        let end = self.out.len();
+        let tail = latex.rsplit('\\').next().unwrap_or("");
+        if latex.contains('\\') && !tail.is_empty() && tail.chars().all(|c| c.is_ascii_alphabetic())
+        {
+            self.out.push(' ');
+        }
+        let mut depth = 0i32;
+        let mut sub = false;
+        for c in latex.chars() {
+            match c {
+                '{' => depth += 1,
+                '}' => depth -= 1,
+                '_' if depth == 0 => sub = true,
+                _ => {}
+            }
+        }
+        self.subscript_end = None;
+        self.scripts = Some(Scripts {
+            end,
+            sub,
+            sup: false,
+            primed: latex.ends_with('\''),
+        });
+    }
+
     /// One character, with the `accent` over it, other than a script digit: a brace, a script
     /// sign, a letter of a name or a symbol.
     fn character(&mut self, c: char, accent: Option<&'static str>) {
         match c {
             '{' => self.open_brace(),
             '}' => self.close_brace(),
-            // A fractional power as the echo writes it, `(x² + y²)^(3/2)`, is the braced
-            // exponent `^{3/2}`.
-            '^' if let Some((exponent, taken)) = fraction_exponent(&self.toks[self.k + 1..]) => {
+            // An exponent of more than one piece is braced whole: a parenthesized group as
+            // the echo writes it, `(x² + y²)^(3/2)` and `x^(1 + 1)`, without its parentheses,
+            // a signed one, `x^-1`, and a power, `x^2^3` (`x^{(}1 + 1)`, `x^{-}1` and
+            // `x^{2}{}^{3}` took only the first character).
+            '^' if let Some((exponent, taken)) = self.exponent(self.k + 1) => {
                 let base = self.open_script(true);
                 self.out.push_str(&format!("^{{{exponent}}}"));
                 self.close_script(true, base);
@@ -720,6 +869,67 @@ impl<'a> Translation<'a> {
         }
     }
 
+    /// The LaTeX of an exponent of more than one piece at the token `at`, after a `^`, and how
+    /// many tokens it takes: a group in parentheses (translated on its own, without them), a
+    /// sign before an exponent, or a piece with a power after it (`2^3`, a power being right
+    /// associative); `None` for a single piece, which [`Self::script`] takes as before.
+    fn exponent(&self, at: usize) -> Option<(String, usize)> {
+        let (first, taken) = self.exponent_piece(at)?;
+        let after = at + taken;
+        let power = match self.toks.get(after) {
+            Some(Tok::Char('^', None)) => self.exponent_piece(after + 1),
+            _ => None,
+        };
+        match power {
+            Some(_) => {
+                let (power, more) = self
+                    .exponent(after + 1)
+                    .or_else(|| script_piece(&self.toks[after + 1..]))?;
+                Some((format!("{first}^{{{power}}}"), taken + 1 + more))
+            }
+            None if matches!(self.toks.get(at), Some(Tok::Char('(' | '-' | '−', None))) => {
+                Some((first, taken))
+            }
+            None => None,
+        }
+    }
+
+    /// One piece of an exponent at the token `at`: a group in parentheses, a signed piece, or
+    /// what an unbraced script takes ([`script_piece`]).
+    fn exponent_piece(&self, at: usize) -> Option<(String, usize)> {
+        let toks = self.toks;
+        match toks.get(at)? {
+            Tok::Char('(', None) => {
+                let mut depth = 0usize;
+                for (k, t) in toks.iter().enumerate().skip(at) {
+                    match t {
+                        Tok::Char('(', None) => depth += 1,
+                        Tok::Char(')', None) if depth == 1 => {
+                            let inner = Translation::new(&toks[at + 1..k], &self.prose[at + 1..k]);
+                            return Some((inner.run(), k + 1 - at));
+                        }
+                        Tok::Char(')', None) => depth -= 1,
+                        _ => {}
+                    }
+                }
+                None
+            }
+            Tok::Char('-' | '−', None) => {
+                let (piece, taken) = self.exponent_piece(at + 1)?;
+                Some((format!("-{piece}"), taken + 1))
+            }
+            // A name or a number; a script digit or a prime is a script of its own, which
+            // a power after it would double (`x^²^a`).
+            Tok::Word(..) => script_piece(&toks[at..]),
+            Tok::Char(c, None)
+                if c.is_ascii_digit() || greek(*c).is_some() || matches!(c, 'ħ' | 'ℓ') =>
+            {
+                script_piece(&toks[at..]).map(|(p, k)| (p.trim_end().to_string(), k))
+            }
+            _ => None,
+        }
+    }
+
     /// A Greek letter, `ħ` or `ℓ`, `c`: with digits after it, it is a name, `γ1`, whose digits
     /// are its subscript as a word's are (`\gamma_{1}`, as the variable prints; `\gamma 1`
     /// read as γ times 1).
@@ -740,32 +950,6 @@ impl<'a> Translation<'a> {
             self.close_script(false, (false, false));
         }
     }
-}
-
-/// A parenthesized fraction of integers, `(3/2)` or `(−1/2)`, at the start of `toks`: its
-/// LaTeX (`3/2`, `-1/2`) and how many tokens it takes.
-fn fraction_exponent(toks: &[Tok]) -> Option<(String, usize)> {
-    if toks.first() != Some(&Tok::Char('(', None)) {
-        return None;
-    }
-    let mut inner = String::new();
-    for (k, t) in toks.iter().enumerate().skip(1) {
-        match t {
-            Tok::Char(')', None) => {
-                let (sign, rest) = match inner.strip_prefix('-') {
-                    Some(rest) => ("-", rest),
-                    None => ("", inner.as_str()),
-                };
-                let (p, q) = rest.split_once('/')?;
-                let digits = |d: &str| !d.is_empty() && d.chars().all(|c| c.is_ascii_digit());
-                return (digits(p) && digits(q)).then(|| (format!("{sign}{p}/{q}"), k + 1));
-            }
-            Tok::Char('−' | '-', None) if inner.is_empty() => inner.push('-'),
-            Tok::Char(c, None) if c.is_ascii_digit() || *c == '/' => inner.push(*c),
-            _ => return None,
-        }
-    }
-    None
 }
 
 /// The LaTeX of what an unbraced script at the start of `toks` takes, and how many tokens: a
@@ -804,6 +988,10 @@ fn script_piece(toks: &[Tok]) -> Option<(String, usize)> {
             out = format!("{}_{{{digits}}}", out.trim_end());
             k += digits.len();
         }
+        // One name: a Latin word and a Greek letter after it, or a Greek letter and a word,
+        // are names run together (`p_θt` is `p_θ t`, which was `p_{\theta t}`); a name that
+        // mixes them is one where the system declares it ([`Names`]).
+        break;
     }
     if k > 0 {
         return Some((out, k));
@@ -933,19 +1121,29 @@ pub fn text(s: &str) -> String {
     out
 }
 
-/// Prose with formulas between backticks: the formulas become inline math.
+/// Prose with formulas between backticks: the formulas become inline math, and a command line
+/// between backticks (an option, `--symbolic I1,I2`, or `superint …`) typewriter text, as the
+/// user types it.
 ///
 /// ```
 /// use superint::render::tex::markup;
 /// assert_eq!(markup("adds `p_θ²/(2I)` to H"), r"adds $p_{\theta }^{2}/(2I)$ to H");
+/// assert_eq!(markup("keep (`--fix I1=2`)"), r"keep (\texttt{-{}-fix I1=2})");
 /// ```
 pub fn markup(s: &str) -> String {
+    markup_with(s, &Names::default())
+}
+
+/// [`markup`] with the names of a system written as its expressions write them ([`Names`]).
+pub fn markup_with(s: &str, names: &Names) -> String {
     s.split('`')
         .enumerate()
         .map(|(k, part)| {
-            if k % 2 == 1 {
+            if k % 2 == 1 && is_command_line(part) {
+                format!(r"\texttt{{{}}}", text(part))
+            } else if k % 2 == 1 {
                 // An empty formula is no `$$`, which TeX reads as display math.
-                match math(part) {
+                match math_with(part, names) {
                     m if m.is_empty() => String::new(),
                     m => format!("${m}$"),
                 }
@@ -954,6 +1152,13 @@ pub fn markup(s: &str) -> String {
             }
         })
         .collect()
+}
+
+/// Whether a span between backticks is a command line, not a formula: an option (`--degree`,
+/// `--symbolic I1,I2`) or a command (`superint search`). In math mode `--` would be two minus
+/// signs, the space would be lost and `I1` would read `I_{1}`, a name no one can type.
+fn is_command_line(span: &str) -> bool {
+    span.starts_with("--") || span.starts_with("superint ")
 }
 
 /// Where a statement's relation is: the byte offset of the first `=` or `≠` outside brackets
@@ -1053,7 +1258,9 @@ mod tests {
                 "p_ℓ₁ + p_ħ₁ + p_θ₁₂",
                 r"p_{\ell_{1}} + p_{\hbar_{1}} + p_{\theta_{12}}",
             ),
-            ("p_ωx + p_xω", r"p_{\omega x} + p_{x\omega }"),
+            // Names run together in a script are a product; a name that mixes Latin and
+            // Greek letters is one where the system declares it (`Names`).
+            ("p_ωx + p_xω", r"p_{\omega }x + p_{x}\omega"),
             // Digits after a Greek letter are its subscript, as after a word (`G1`).
             (
                 "{γ1, H} = M2 γ3 − 2c ω12",
@@ -1074,6 +1281,73 @@ mod tests {
             assert_eq!(math(u), t, "{u}");
             assert!(balanced(&math(u)), "{u}");
             assert!(math(u).is_ascii(), "{u}");
+        }
+    }
+
+    /// The paper's C06: `p_θt` is the product `p_θ t` (it was `p_{\theta t}`, a momentum of
+    /// `θt`).
+    #[test]
+    fn names_run_together_after_a_subscript_are_a_product() {
+        assert_eq!(
+            math("θ(t) = θ₀ + p_θt/I"),
+            r"\theta (t) = \theta _{0} + p_{\theta }t/I"
+        );
+        assert_eq!(math("p_θ₁t + p_xω"), r"p_{\theta_{1}}t + p_{x}\omega");
+        // A Latin word in a subscript is one name, as before (`a_ij`).
+        assert_eq!(math("p_xt"), "p_{xt}");
+    }
+
+    /// An exponent of more than one piece is braced whole: a group in parentheses, a signed
+    /// one and a power (`x^{(}1 + 1)`, `x^{-}1` and `x^{2}{}^{3}` took only their first
+    /// character).
+    #[test]
+    fn an_exponent_of_several_pieces_is_braced_whole() {
+        for (u, t) in [
+            ("x^(1 + 1)", "x^{1 + 1}"),
+            ("x^(2³) = x⁸", "x^{2^{3}} = x^{8}"),
+            ("x^2^3", "x^{2^{3}}"),
+            ("x^-1 + r^−3", "x^{-1} + r^{-3}"),
+            ("e^(iθ)", r"e^{i\theta}"),
+            ("x^(n+1)y", "x^{n+1}y"),
+            ("x^-(a+b)", "x^{-a+b}"),
+            ("x^a^-b^(c)", "x^{a^{-b^{c}}}"),
+            ("(x² + y²)^(−1/2)", "(x^{2} + y^{2})^{-1/2}"),
+            ("x^(1 + 1", "x^{(}1 + 1"),
+        ] {
+            assert_eq!(math(u), t, "{u}");
+        }
+    }
+
+    /// A system's names are written as its expressions write them, a run of letters that
+    /// they spell whole as those names; prose, a function's name and any other run as before.
+    #[test]
+    fn declared_names_are_written_as_expressions_write_them() {
+        let names = Names {
+            forms: [
+                ("alpha1", r"\alpha_{1}"),
+                ("ωx", r"\mathrm{{\omega}x}"),
+                ("p_ωx", r"p_{{\omega}x}"),
+                ("ω", r"\omega"),
+                ("x", "x"),
+                ("s", "s"),
+                ("G1'", "G_{1}'"),
+            ]
+            .iter()
+            .map(|(a, b)| (a.to_string(), b.to_string()))
+            .collect(),
+        };
+        for (u, t) in [
+            (
+                "{alpha1, ωx} = 2ωx ω x",
+                r"\{\alpha_{1}, \mathrm{{\omega}x}\} = 2\mathrm{{\omega}x} \omega x",
+            ),
+            ("p_ωx ωx²", r"p_{{\omega}x} \mathrm{{\omega}x}^{2}"),
+            ("ωxx", r"\mathrm{{\omega}x}x"),
+            ("G1'² + s x", "G_{1}'^{2} + s x"),
+            ("x is ss", r"x\ \text{is}\ ss"),
+            ("cos ω", r"\cos \omega"),
+        ] {
+            assert_eq!(math_with(u, &names), t, "{u}");
         }
     }
 

@@ -3,6 +3,7 @@
 //! normal form ([`expand_report`]), a bracket table ([`table_report`]) and a certified rank
 //! ([`rank_report`]).
 
+use crate::render::tex::Names;
 use std::time::Instant;
 
 use brackets::{BracketTable, Condition, System};
@@ -70,6 +71,7 @@ impl LoadedSystem {
                 title: self.section_title(),
                 file: Some(self.source.origin.clone()),
                 entries: vec![entry],
+                names: Names::of_system(&self.system),
             }],
             summary,
             seconds: start.elapsed().as_secs_f64(),
@@ -179,6 +181,7 @@ impl LoadedSystem {
             title: self.section_title(),
             file: Some(self.source.origin.clone()),
             entries,
+            names: Names::of_system(&self.system),
         };
         Ok((section, self.the_name()))
     }

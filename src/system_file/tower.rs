@@ -9,6 +9,7 @@
 //! The lemma then gives
 //! `{A^m B^n, H} = (mλ(1, 0) + nλ(0, 1)) A^m B^n = λ(m, n) A^m B^n`.
 
+use crate::render::tex::Names;
 use std::time::Instant;
 
 use trigpoly::syntax::{Expr as Tree, ExprKind};
@@ -529,6 +530,7 @@ impl ShownFamily {
                 title: format!("`{{{}, H}}` for {}", self.kmn, file.the_name()),
                 file: Some(file.source.origin.clone()),
                 entries,
+                names: Names::of_system(&file.system),
             }],
             summary: SummaryKind::Check { files: 1 },
             seconds: start.elapsed().as_secs_f64(),

@@ -291,6 +291,84 @@ fn a_description_of_any_characters_compiles() {
     compile_within(&doc, f64::INFINITY);
 }
 
+/// Names in the statements, headers and titles of LaTeX output are written as the expression
+/// printer writes them (`alpha1` was `alpha_{1}` in a statement and `\alpha_{1}` in its
+/// bracket's value; the coordinate `ωx` was `\omega x`, ω·x), an exponent of more than one
+/// piece is braced whole (`x^(1 + 1)` was `x^{(}1 + 1)`), names run together in the paper's
+/// C06 are a product (`p_θt` was `p_{\theta t}`), and a command line is typewriter text
+/// (`$--symbolic I_{1},I_{2},I_{3}$` read −−symbolicI₁,I₂,I₃).
+#[test]
+fn latex_writes_names_exponents_and_command_lines_as_they_read() {
+    let file = crate::scratch_text(
+        "latex-names",
+        "names.toml",
+        "name = \"names\"\ndescription = \"formulas `x^-1`, `x^(n+1)`, `e^(iθ)`, `x^2^3`\"\n\
+         hamiltonian = \"p_x^2/2 + omega^2*x^2/2\"\n\
+         [phase_space]\ncoordinates = [\"x\", \"ωx\"]\nparameters = [\"omega\", \"ln\"]\n\
+         [[function]]\nname = \"alpha1\"\nvalue = \"x\"\n\
+         [[function]]\nname = \"beta\"\nvalue = \"p_x^2\"\n\
+         [[function]]\nname = \"Lambda3x\"\nvalue = \"x^3\"\n\
+         [[claim]]\nclaim = \"{alpha1, H} = p_x\"\n\
+         [[claim]]\nclaim = \"{beta, Lambda3x} = -6*x^2*p_x\"\n\
+         [[claim]]\nclaim = \"{ωx, p_ωx} = 1\"\n\
+         [[claim]]\nclaim = \"ln*x^(1+1)*x^2^3 = ln*x^10\"\n",
+    );
+    let file = file.to_str().expect("a path");
+    let check = run(&["check", file, "--format", "latex", "--no-timings"], 0);
+    for expected in [
+        r"\{\alpha_{1}, H\} &= p_{x}",
+        r"\{\beta , \mathrm{Lambda3x}\} &= -6x^{2} p_{x}",
+        r"\{\mathrm{{\omega}x}, p_{{\omega}x}\} &= 1",
+        r"\mathrm{ln} x^{1 + 1}x^{2^{3}} &= \mathrm{ln} x^{10}",
+        r"formulas $x^{-1}$, $x^{n+1}$, $e^{i\theta}$, $x^{2^{3}}$",
+    ] {
+        assert!(check.contains(expected), "{expected} in\n{check}");
+    }
+    let table = run(
+        &[
+            "table",
+            file,
+            "alpha1",
+            "Lambda3x",
+            "--format",
+            "latex",
+            "--no-timings",
+        ],
+        0,
+    );
+    assert!(
+        table.contains(r"\{\cdot,\cdot\} & \alpha_{1} & \mathrm{Lambda3x} \\"),
+        "{table}"
+    );
+    let paper = run(&["--format", "latex", "--no-timings"], 0);
+    assert!(
+        paper.contains(r"\theta (t) &= \theta _{0} + p_{\theta }t/I"),
+        "{paper}"
+    );
+    let search = run(
+        &[
+            "search",
+            "systems/euler-top.toml",
+            "--format",
+            "latex",
+            "--no-timings",
+        ],
+        0,
+    );
+    assert!(
+        search.contains(r"(\texttt{-{}-symbolic I1,I2,I3})"),
+        "{search}"
+    );
+    assert!(
+        search.contains(r"(\texttt{-{}-fix I1=2,I2=3,I3=5})"),
+        "{search}"
+    );
+    for doc in [&check, &table, &search] {
+        assert_balanced_latex(doc);
+        compile_within(doc, 60.0);
+    }
+}
+
 /// A system whose names LaTeX writes only with care: see [`cli_latex_of_every_command_compiles`].
 const LATEX_NAMES: &str = r#"name = "LaTeX names"
 hamiltonian = "(p_a + p_b)^2/2 + p_ω₁₂^2/2 + ω₁₂^2/2 + p_ℓ₁*ħ₁ + p_θ₁₂*θ₁₂ + ωx*x₁y"
