@@ -22,7 +22,7 @@ Examples:
       --when 'p_theta = I*omega' --degree 2
   superint closure --system harmonic F1 F2 L G1 G2 P11 Q11 R11 S11 \\
       --when 'p_theta = I*omega' --degree 2
-  superint closure --system harmonic Hp L G1 G2 --define 'Hx=p_x^2/(2*M) + M*omega^2*x^2/2'
+  superint closure --system harmonic Hp L G1 G2 Ex --define 'Ex=p_x^2/(2*M) + M*omega^2*x^2/2'
   superint closure systems/smorodinsky-winternitz-i.toml H Hx X --define 'C={Hx, X}' \\
       --degree 3 --symbolic M,alpha,beta,gamma --parameters-degree 2
   superint closure systems/calogero.toml P H I3 K1 --degree 2

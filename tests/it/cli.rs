@@ -2207,3 +2207,28 @@ fn markdown_prose_escapes_what_reads_as_html() {
     assert!(md.contains("## 1. Kepler problem (&lt;stdin&gt;)"), "{md}");
     assert!(md.contains("`−k/r`"), "{md}");
 }
+
+/// The example of `--define` in `closure --help` runs (its `Hx` read as `H·x` and was
+/// refused), and finds the relation of the defined generator.
+#[test]
+fn the_closure_help_example_of_define_runs() {
+    let help = run(&["closure", "--help"], 0);
+    let example = "--system harmonic Hp L G1 G2 Ex --define 'Ex=p_x^2/(2*M) + M*omega^2*x^2/2'";
+    assert!(help.contains(example), "{help}");
+    let out = run(
+        &[
+            "closure",
+            "--system",
+            "harmonic",
+            "Hp",
+            "L",
+            "G1",
+            "G2",
+            "Ex",
+            "--define",
+            "Ex=p_x^2/(2*M) + M*omega^2*x^2/2",
+        ],
+        0,
+    );
+    assert!(out.contains("Hp + G2 = 2 Ex"), "{out}");
+}
