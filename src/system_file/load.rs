@@ -318,6 +318,22 @@ struct Builder<'a> {
     shown: PrintedNames,
 }
 
+/// What a name was declared as, and where.
+type Declaration<'r, T> = (T, &'r Range<usize>);
+
+/// The two declarations of a clashing name, `declared` before and `current`, in the order of
+/// the file: the second there is the one refused, though the kinds are declared in turn (the
+/// functions before the families).
+fn in_file_order<'r, T>(
+    declared: Declaration<'r, T>,
+    current: Declaration<'r, T>,
+) -> (Declaration<'r, T>, Declaration<'r, T>) {
+    match declared.1.start > current.1.start {
+        true => (current, declared),
+        false => (declared, current),
+    }
+}
+
 impl<'a> Builder<'a> {
     /// Refuses a display name that would not show as written: empty, beginning or ending with
     /// a space, with a character that is markup in Markdown or LaTeX (`a^b^c` stopped pdflatex,
@@ -584,12 +600,8 @@ impl<'a> Builder<'a> {
             return Err(self.error(ErrorKind::Name, span, bad.declaring(name, what)));
         }
         if let Some((other, at)) = self.names.get(name) {
-            // The second in the file is refused, though the kinds are declared in turn (the
-            // functions before the families).
-            let ((first, first_at), (second, second_at)) = match at.start > span.start {
-                true => ((what, &span), (*other, at)),
-                false => ((*other, at), (what, &span)),
-            };
+            let ((first, first_at), (second, second_at)) =
+                in_file_order((*other, at), (what, &span));
             let line = super::error::locate(&self.source.text, first_at.clone()).line;
             return Err(self.error(
                 ErrorKind::Name,
@@ -620,12 +632,8 @@ impl<'a> Builder<'a> {
                 _ => name,
             };
             let (family, m, n) = instance_parts(instance).expect("found as an instance");
-            // Said at the second of the two in the file.
-            let ((first, first_kind, first_at), (second, second_kind, second_at)) =
-                match at.start > span.start {
-                    true => ((name, what, &span), (other.as_str(), *kind, at)),
-                    false => ((other.as_str(), *kind, at), (name, what, &span)),
-                };
+            let (((first, first_kind), first_at), ((second, second_kind), second_at)) =
+                in_file_order(((other.as_str(), *kind), at), ((name, what), &span));
             let line = super::error::locate(&self.source.text, first_at.clone()).line;
             return Err(self.error(
                 ErrorKind::Name,

@@ -41,9 +41,6 @@ fn not_on_the_circle(v: Var, value: &Expr) -> Option<String> {
     })
 }
 
-/// Why setting `v` to `value` sets no point of phase space, when `v` is no angle: its
-/// variables and parameters are real, so a value that is not sets none (at `p_x = ix`,
-/// `p_x² + x² = 0` was proved, of no real point).
 /// Why a condition may not set `v` at all: it is a radical or a denominator atom, which stands
 /// for a polynomial of the other variables (`r = √(x² + y² + z²)`), so that setting it alone
 /// would contradict its definition (`r = 1` beside `r² = x² + y² + z²`).
@@ -61,6 +58,9 @@ fn not_a_variable(v: Var, value: &Expr) -> Option<String> {
     ))
 }
 
+/// Why setting `v` to `value` sets no point of phase space, when `v` is no angle: its
+/// variables and parameters are real, so a value that is not sets none (at `p_x = ix`,
+/// `p_x² + x² = 0` was proved, of no real point).
 fn not_real(v: Var, value: &Expr) -> Option<String> {
     let vars = value.vars();
     (vars.variable(v).kind() != VarKind::Angle && !value.is_real()).then(|| {
@@ -117,7 +117,8 @@ impl Condition {
     /// itself, directly (`x = 2x`) or through the others (`x = y, y = x`), is refused: such a
     /// condition is an equation, not a substitution. So is a value that is not real (for an
     /// angle, one off the unit circle), a radical or a denominator set as if it were a
-    /// variable, and a variable that a denominator or a radicand involves ([`Condition::keeps_denominators`]). Every refusal is an
+    /// variable, and a variable that a denominator or a radicand involves
+    /// ([`Condition::keeps_denominators`]). Every refusal is an
     /// [`EngineError::RefusedCondition`] naming the variable.
     pub fn all(text: &str, subs: Vec<(Var, Expr)>) -> Result<Self, EngineError> {
         let mut subs = subs;

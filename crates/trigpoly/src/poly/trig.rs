@@ -50,13 +50,7 @@ impl<C: Coefficient> Poly<C> {
     /// assert_eq!(part, Poly::parse(&vars, "x^3*cos(θ) + x^2 + x^2*sin(θ)").unwrap());
     /// ```
     pub fn leading_part(&self, k: usize) -> (Self, usize) {
-        let layout = self.layout();
-        // The angles' fields cleared: a term's monomial outside the angles.
-        let mut keep = vec![u64::MAX; layout.words];
-        for theta in self.vars.angles() {
-            let (w, shift) = layout.field(theta.index());
-            keep[w] &= !(layout.field_mask() << shift);
-        }
+        let keep = self.outside_angles();
         let outside =
             |t: usize| -> Vec<u64> { self.exp(t).iter().zip(&keep).map(|(m, k)| m & k).collect() };
         let mut numbers: FxHashMap<Vec<u64>, usize> = Default::default();
@@ -74,6 +68,18 @@ impl<C: Coefficient> Poly<C> {
         (part, numbers.len())
     }
 
+    /// The mask of a packed monomial with the angles' fields cleared: `m & mask`, word by
+    /// word, is a term's monomial outside the angles.
+    fn outside_angles(&self) -> Vec<u64> {
+        let layout = self.layout();
+        let mut keep = vec![u64::MAX; layout.words];
+        for theta in self.vars.angles() {
+            let (w, shift) = layout.field(theta.index());
+            keep[w] &= !(layout.field_mask() << shift);
+        }
+        keep
+    }
+
     /// A bound on the number of terms of the normal form [`Poly::cos_sin_terms`], found
     /// without forming it: over the terms that share a monomial outside the angles, the
     /// smaller of `Σ Π (|k| + 1)` (each `e^{ikθ}` expands to `|k| + 1` terms `cos^j θ sin^b θ`)
@@ -84,11 +90,7 @@ impl<C: Coefficient> Poly<C> {
             return self.len() as u64;
         }
         let layout = self.layout();
-        let mut keep = vec![u64::MAX; layout.words];
-        for &j in &angles {
-            let (w, shift) = layout.field(j);
-            keep[w] &= !(layout.field_mask() << shift);
-        }
+        let keep = self.outside_angles();
         // Per monomial outside the angles: the sum of the expansions, the largest multiples.
         let mut groups: FxHashMap<Vec<u64>, (u64, Vec<u64>)> = Default::default();
         for t in 0..self.len() {
