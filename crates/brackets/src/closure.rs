@@ -48,7 +48,7 @@ mod fewest;
 mod lift;
 mod span;
 
-use columns::{combination_equals, shift};
+use columns::shift;
 use fewest::Relations;
 use lift::LiftContext;
 use span::Span;
@@ -664,7 +664,7 @@ fn express_targets(
                     None => decided = true, // independent modulo p: certainly outside
                     Some(dep) => {
                         if let Some(sol) = modular::reconstruct_vec(&dep) {
-                            if combination_equals(columns, nrows, &sol, target) {
+                            if modular::combination_equals(columns, nrows, &sol, target) {
                                 found = Some(sol);
                                 decided = true;
                             }

@@ -259,8 +259,9 @@ fn isqrt(n: u64) -> u64 {
 /// A sparse vector: `(index, value)` with distinct indices and no zero values.
 pub type SparseVec<F> = Vec<(usize, F)>;
 
-/// One basis vector of the semi-echelon form: its pivot (first nonzero index, value 1), the
-/// vector, and the vector as a combination of the inserted vectors (by id).
+/// One basis vector of the semi-echelon form: its pivot (a nonzero index, value 1: the first,
+/// or the one [`Echelon::insert_by`] chose), the vector, and the vector as a combination of
+/// the inserted vectors (by id).
 #[derive(Clone, Debug)]
 struct Row<F> {
     pivot: usize,
@@ -471,10 +472,27 @@ impl<F: Field> Echelon<F> {
     /// independent of the earlier vectors (the basis grows), otherwise the coefficients `c_j`,
     /// by earlier identifiers, with `v = Σ c_j v_j`.
     pub fn insert(&mut self, id: usize, v: &SparseVec<F>) -> Option<SparseVec<F>> {
+        self.insert_by(id, v, |_| 0)
+    }
+
+    /// [`Echelon::insert`], with the pivot of a new basis row chosen by `choose` among the
+    /// residue's entries (by increasing index; it returns a position in that list). Any choice
+    /// gives the same dependencies, since they are the unique relations with the earlier
+    /// independent vectors; the choice changes only the work: a pivot that later vectors
+    /// seldom hold is a row they seldom subtract.
+    pub fn insert_by(
+        &mut self,
+        id: usize,
+        v: &SparseVec<F>,
+        choose: impl FnOnce(&SparseVec<F>) -> usize,
+    ) -> Option<SparseVec<F>> {
         let (residue, combo) = self.reduce(v, true);
-        let Some((pivot, lead)) = residue.first() else {
+        if residue.is_empty() {
             return Some(combo);
-        };
+        }
+        let (pivot, lead) = &residue[choose(&residue)];
+        // Row r holds no pivot of an earlier row (it was reduced by them), whichever of its
+        // entries becomes its own, which is all that `reduce_then` relies on.
         // residue = v − Σ c_k row_k, in terms of inserted vectors: e_id − combo, scaled so that
         // the pivot is 1.
         let (pivot, inv) = (*pivot, lead.inv());
@@ -543,7 +561,8 @@ pub fn reconstruct_vec(v: &SparseVec<Fp>) -> Option<SparseVec<Rational>> {
 /// elimination is redone over `Q`. The result is exact either way.
 pub fn kernel(columns: &[SparseVec<Rational>], rows: usize) -> Vec<SparseVec<Rational>> {
     if let Some(k) = kernel_modular(columns, rows) {
-        if k.iter().all(|v| in_kernel(columns, rows, v)) {
+        let mut sum = Accumulator::new();
+        if k.iter().all(|v| sums_to(&mut sum, columns, v, &[])) {
             return k;
         }
     }
@@ -565,9 +584,11 @@ fn kernel_modular(
 /// denominator divisible by `p`. For a search whose every result is checked exactly.
 pub fn kernel_mod_p(columns: &[SparseVec<Rational>], rows: usize) -> Option<Vec<SparseVec<Fp>>> {
     let mut e = Echelon::<Fp>::new(rows);
+    let mut later = LaterColumns::new(columns, rows);
     let mut out = Vec::new();
     for (j, c) in columns.iter().enumerate() {
-        if let Some(mut v) = e.insert(j, &to_fp(c)?) {
+        later.pass(c);
+        if let Some(mut v) = e.insert_by(j, &to_fp(c)?, |residue| later.pivot(residue)) {
             for x in v.iter_mut() {
                 x.1 = Fp::zero().sub(&x.1);
             }
@@ -582,9 +603,11 @@ pub fn kernel_mod_p(columns: &[SparseVec<Rational>], rows: usize) -> Option<Vec<
 /// The same kernel, by exact elimination over `Q`.
 pub fn kernel_exact(columns: &[SparseVec<Rational>], rows: usize) -> Vec<SparseVec<Rational>> {
     let mut e = Echelon::<Rational>::new(rows);
+    let mut later = LaterColumns::new(columns, rows);
     let mut out = Vec::new();
     for (j, c) in columns.iter().enumerate() {
-        if let Some(mut v) = e.insert(j, c) {
+        later.pass(c);
+        if let Some(mut v) = e.insert_by(j, c, |residue| later.pivot(residue)) {
             for x in v.iter_mut() {
                 x.1 = -&x.1;
             }
@@ -595,15 +618,73 @@ pub fn kernel_exact(columns: &[SparseVec<Rational>], rows: usize) -> Vec<SparseV
     out
 }
 
-/// Whether `Σ v_j · column_j = 0` exactly.
-pub fn in_kernel(columns: &[SparseVec<Rational>], rows: usize, v: &SparseVec<Rational>) -> bool {
-    let mut acc = vec![Rational::zero(); rows];
-    for (j, x) in v {
-        for (i, a) in &columns[*j] {
-            acc[*i] += x * a;
+/// How many of the columns not yet inserted hold each row: the kernels pivot each new basis
+/// row on the entry that the fewest later columns hold (the first of those), so that later
+/// columns meet few pivots and subtract few rows. Taking the first entry instead made a
+/// search's eliminations subtract far more (Markowitz's rule, on one side).
+struct LaterColumns(Vec<u32>);
+
+impl LaterColumns {
+    fn new<F>(columns: &[SparseVec<F>], rows: usize) -> Self {
+        let mut count = vec![0u32; rows];
+        for (i, _) in columns.iter().flatten() {
+            count[*i] += 1;
+        }
+        LaterColumns(count)
+    }
+
+    /// The column about to be inserted is no longer a later one.
+    fn pass<F>(&mut self, column: &SparseVec<F>) {
+        for (i, _) in column {
+            self.0[*i] -= 1;
         }
     }
-    acc.iter().all(Rational::is_zero)
+
+    /// The position in `residue` of its entry that the fewest later columns hold.
+    fn pivot<F>(&self, residue: &SparseVec<F>) -> usize {
+        (0..residue.len())
+            .min_by_key(|&k| self.0[residue[k].0])
+            .unwrap_or(0)
+    }
+}
+
+/// Whether `Σ v_j · column_j = 0` exactly (the columns' rows below `rows`).
+pub fn in_kernel(columns: &[SparseVec<Rational>], rows: usize, v: &SparseVec<Rational>) -> bool {
+    combination_equals(columns, rows, v, &[])
+}
+
+/// Whether `Σ v_j · column_j = target` exactly (the columns' rows below `rows`).
+pub fn combination_equals(
+    columns: &[SparseVec<Rational>],
+    rows: usize,
+    v: &SparseVec<Rational>,
+    target: &[(usize, Rational)],
+) -> bool {
+    debug_assert!(v
+        .iter()
+        .all(|(j, _)| columns[*j].iter().all(|(i, _)| *i < rows)));
+    sums_to(&mut Accumulator::new(), columns, v, target)
+}
+
+/// Whether `Σ v_j · column_j = target` exactly, summed in `sum`, which is zero again after.
+/// Only the rows the columns touch are read: a search checks each of its kernel vectors
+/// against tens of thousands of equations, and a dense sum of them all for each vector was
+/// most of its time.
+fn sums_to(
+    sum: &mut Accumulator<Rational>,
+    columns: &[SparseVec<Rational>],
+    v: &SparseVec<Rational>,
+    target: &[(usize, Rational)],
+) -> bool {
+    for (j, x) in v {
+        for (i, a) in &columns[*j] {
+            sum.add(*i, &(x * a));
+        }
+    }
+    for (i, x) in target {
+        sum.add(*i, &-x);
+    }
+    sum.clear()
 }
 
 #[cfg(test)]
@@ -830,6 +911,66 @@ mod tests {
         assert_eq!(Fp::from_rational(&big("1", &p_squared)), None);
     }
 
+    /// The kernels pivot each new row on the entry fewest later columns hold: their vectors
+    /// are those of the first-entry pivots, over F_p and over Q, and any pivot gives the same
+    /// dependencies, on columns that are often combinations of earlier ones.
+    #[test]
+    fn the_kernels_do_not_depend_on_the_pivots() {
+        let mut x = 0x6A09_E667_F3BC_C909u64;
+        let mut next = move || {
+            x ^= x << 13;
+            x ^= x >> 7;
+            x ^= x << 17;
+            x
+        };
+        let rows = 30;
+        let mut columns: Vec<SparseVec<Rational>> = Vec::new();
+        for j in 0..60 {
+            let mut dense = vec![Rational::zero(); rows];
+            if j % 3 == 2 {
+                for _ in 0..2 {
+                    let (k, c) = (next() as usize % j, Rational::from(next() as i64 % 7 - 3));
+                    for (i, a) in &columns[k] {
+                        dense[*i] += &c * a;
+                    }
+                }
+            } else {
+                for _ in 0..3 {
+                    dense[next() as usize % rows] += Rational::from(next() as i64 % 9 + 1);
+                }
+            }
+            let column = dense.into_iter().enumerate().filter(|(_, a)| !a.is_zero());
+            columns.push(column.collect());
+        }
+        // By the first entry, as `insert` pivots.
+        let by_first = |columns: &[SparseVec<Rational>]| {
+            let mut e = Echelon::<Rational>::new(rows);
+            let mut out = Vec::new();
+            for (j, c) in columns.iter().enumerate() {
+                if let Some(mut v) = e.insert(j, c) {
+                    v.iter_mut().for_each(|x| x.1 = -&x.1);
+                    v.push((j, Rational::one()));
+                    out.push(v);
+                }
+            }
+            out
+        };
+        let expected = by_first(&columns);
+        assert!(expected.len() >= 20, "{} dependent columns", expected.len());
+        assert_eq!(kernel_exact(&columns, rows), expected);
+        let modular = kernel_mod_p(&columns, rows).expect("no denominator p");
+        let expected_fp: Vec<SparseVec<Fp>> = expected.iter().filter_map(to_fp).collect();
+        assert_eq!(modular, expected_fp);
+        // The last entry as the pivot: the same dependencies.
+        let mut e = Echelon::<Rational>::new(rows);
+        let mut first = Echelon::<Rational>::new(rows);
+        for (j, c) in columns.iter().enumerate() {
+            let dependency = e.insert_by(j, c, |residue| residue.len() - 1);
+            assert_eq!(dependency, first.insert(j, c), "column {j}");
+        }
+        assert_ne!(e.pivots(), first.pivots());
+    }
+
     #[test]
     fn kernel_is_exact() {
         // Columns (1, 2, 3), (2, 4, 6), (1, 0, 1), (3, 4, 7): kernel spanned by
@@ -853,5 +994,13 @@ mod tests {
             assert!(in_kernel(&cols, 3, v));
         }
         assert_eq!(kernel_exact(&cols, 3).len(), 2);
+        // Column 0 minus column 2 is (0, 2, 2): its entry 0 cancels.
+        let r = |x: i64| Rational::from(x);
+        let diff = vec![(0, r(1)), (2, r(-1))];
+        assert!(!in_kernel(&cols, 3, &diff));
+        let target = vec![(1, r(2)), (2, r(2))];
+        assert!(combination_equals(&cols, 3, &diff, &target));
+        assert!(!combination_equals(&cols, 3, &diff, &target[..1]));
+        assert!(combination_equals(&cols, 3, &vec![], &[]));
     }
 }

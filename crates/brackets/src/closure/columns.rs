@@ -121,25 +121,6 @@ fn pack(key: &[i64]) -> Option<u128> {
     })
 }
 
-/// Whether `Σ sol_j column_j = target` exactly.
-pub(super) fn combination_equals(
-    columns: &[SparseVec<Rational>],
-    rows: usize,
-    sol: &SparseVec<Rational>,
-    target: &SparseVec<Rational>,
-) -> bool {
-    let mut acc = vec![Rational::zero(); rows];
-    for (j, x) in sol {
-        for (i, a) in &columns[*j] {
-            acc[*i] += x * a;
-        }
-    }
-    for (i, x) in target {
-        acc[*i] -= x;
-    }
-    acc.iter().all(Rational::is_zero)
-}
-
 /// A relation (over columns) multiplied by the monomial `gamma` (and by `i`), if every
 /// product is still a column.
 pub(super) fn shift(

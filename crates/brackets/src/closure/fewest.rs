@@ -9,8 +9,7 @@
 
 use trigpoly::Rational;
 
-use super::columns::combination_equals;
-use crate::modular::{self, Field, Fp, SparseVec};
+use crate::modular::{self, combination_equals, Field, Fp, SparseVec};
 
 /// The relations among the columns modulo `p` ([`modular::kernel_mod_p`]), found once for
 /// every target of a span.
@@ -120,7 +119,7 @@ fn minus_multiple<F: Field>(x: &SparseVec<F>, a: &F, k: &SparseVec<F>) -> Sparse
 #[cfg(test)]
 mod tests {
     use super::{minus_multiple, shortest_by, Relations};
-    use crate::closure::columns::combination_equals;
+    use crate::modular::combination_equals;
     use crate::modular::{Fp, SparseVec};
     use proptest::prelude::*;
     use trigpoly::Rational;
