@@ -39,34 +39,10 @@ impl<C: Coefficient> Poly<C> {
             let value = &subs.iter().find(|s| s.0 == v).expect("a target").1;
             return self.subst_one(v, value);
         }
-        // Group the terms by their exponents of the substituted variables.
-        let layout = self.layout();
-        let w = self.words();
-        let mut groups: HashMap<Vec<i64>, Terms<C>> = HashMap::new();
-        let mut order: Vec<Vec<i64>> = Vec::new();
-        for k in 0..self.len() {
-            let m = self.exp(k);
-            let key: Vec<i64> = targets.iter().map(|v| layout.get(m, v.index())).collect();
-            let mut exps: Vec<i64> = (0..self.vars.len()).map(|j| layout.get(m, j)).collect();
-            for v in &targets {
-                exps[v.index()] = 0;
-            }
-            let mut packed = vec![0u64; w];
-            layout.pack(&exps, &mut packed);
-            let entry = groups.entry(key.clone()).or_insert_with(|| {
-                order.push(key);
-                (Vec::new(), Vec::new())
-            });
-            entry.0.extend_from_slice(&packed);
-            entry.1.push(self.coeffs[k].clone());
-        }
         let value_of = |v: Var| &subs.iter().find(|s| s.0 == v).expect("a target").1;
         let mut powers: HashMap<(Var, i64), Self> = HashMap::new();
-        let mut result = Self::zero(&self.vars);
-        for key in order {
-            let (exps, coeffs) = groups.remove(&key).expect("grouped");
-            // Removing the same variables from every term of a group keeps their order.
-            let mut part = Self::from_sorted(&self.vars, self.content.clone(), exps, coeffs);
+        let mut products = Vec::new();
+        for (key, mut part) in self.coefficients_in(&targets) {
             for (v, &e) in targets.iter().zip(&key) {
                 if e == 0 {
                     continue;
@@ -79,9 +55,65 @@ impl<C: Coefficient> Poly<C> {
                 }
                 part = part.checked_mul(&powers[&(*v, e)])?;
             }
-            result = result.checked_add(&part)?;
+            products.push(part);
         }
-        Ok(result)
+        Self::sum_all(&self.vars, products)
+    }
+
+    /// `self` as `Σ_k c_k · Π v_i^{k_i}` in the variables `vs`: each exponent vector `k` of
+    /// theirs that occurs (in the order of the terms where each first occurs) with its
+    /// coefficient `c_k`, free of them. Collecting with respect to `vs`, as substituting them
+    /// needs: `x²y + 3x² + y` in `x` is `(2, y + 3)`, `(0, y)`.
+    pub fn coefficients_in(&self, vs: &[Var]) -> Vec<(Vec<i64>, Self)> {
+        let layout = self.layout();
+        let w = self.words();
+        let mut groups: HashMap<Vec<i64>, Terms<C>> = HashMap::new();
+        let mut order: Vec<Vec<i64>> = Vec::new();
+        let mut exps = vec![0i64; self.vars.len()];
+        for k in 0..self.len() {
+            let m = self.exp(k);
+            let key: Vec<i64> = vs.iter().map(|v| layout.get(m, v.index())).collect();
+            for (j, e) in exps.iter_mut().enumerate() {
+                *e = layout.get(m, j);
+            }
+            for v in vs {
+                exps[v.index()] = 0;
+            }
+            let mut packed = vec![0u64; w];
+            layout.pack(&exps, &mut packed);
+            let entry = groups.entry(key.clone()).or_insert_with(|| {
+                order.push(key);
+                (Vec::new(), Vec::new())
+            });
+            entry.0.extend_from_slice(&packed);
+            entry.1.push(self.coeffs[k].clone());
+        }
+        order
+            .into_iter()
+            .map(|key| {
+                let (exps, coeffs) = groups.remove(&key).expect("grouped");
+                // Removing the same variables from every term of a group keeps their order.
+                let part = Self::from_sorted(&self.vars, self.content.clone(), exps, coeffs);
+                (key, part)
+            })
+            .collect()
+    }
+
+    /// The sum of `parts` (all in `vars`; zero when there are none), added pairwise like the
+    /// levels of a tree, so that each term is merged `log₂ n` times, not once per part after it.
+    pub fn sum_all(vars: &Vars, mut parts: Vec<Self>) -> Result<Self, AlgebraError> {
+        while parts.len() > 1 {
+            let mut next = Vec::with_capacity(parts.len().div_ceil(2));
+            let mut it = parts.into_iter();
+            while let Some(a) = it.next() {
+                next.push(match it.next() {
+                    Some(b) => a.checked_add(&b)?,
+                    None => a,
+                });
+            }
+            parts = next;
+        }
+        Ok(parts.pop().unwrap_or_else(|| Self::zero(vars)))
     }
 
     /// The refusal of a substituted value that `self` takes to the negative power `e` of `v`

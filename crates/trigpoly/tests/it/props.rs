@@ -775,6 +775,31 @@ proptest! {
         prop_assert_eq!(s(&(&f * &g)), s(&f) * s(&g));
     }
 
+    /// Collecting in `x` and `θ` gives coefficients free of them, whose terms times their
+    /// powers add up to the polynomial again, each exponent once; `sum_all` of any parts is
+    /// their sum one after another.
+    #[test]
+    fn coefficients_in_reassemble_the_polynomial(f in gpoly(9), g in gpoly(6), h in gpoly(6)) {
+        let vars = phase_space();
+        let (x, theta) = (var(&vars, "x"), var(&vars, "theta"));
+        let parts = f.coefficients_in(&[x, theta]);
+        let mut keys: Vec<&Vec<i64>> = parts.iter().map(|(k, _)| k).collect();
+        keys.sort();
+        keys.dedup();
+        prop_assert_eq!(keys.len(), parts.len());
+        let mut back = G::zero(&vars);
+        for (k, c) in &parts {
+            prop_assert!(!c.is_zero() && !c.contains(x) && !c.contains(theta));
+            let power = G::monomial(&vars, GaussianRational::from(1), &[(x, k[0]), (theta, k[1])])
+                .expect("within the limits");
+            back += c * &power;
+        }
+        prop_assert_eq!(back, f.clone());
+        let sum = G::sum_all(&vars, vec![f.clone(), g.clone(), h.clone()]).expect("small");
+        prop_assert_eq!(sum, &(&f + &g) + &h);
+        prop_assert_eq!(G::sum_all(&vars, vec![]).expect("empty"), G::zero(&vars));
+    }
+
     #[test]
     fn print_parse_roundtrip_ascii(f in gpoly(9), a in qpoly(9)) {
         let vars = phase_space();
