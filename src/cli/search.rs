@@ -42,6 +42,13 @@ the output lists the integrals that generate all the others over those polynomia
 Built-in systems (--system): harmonic, gravity, anisotropic-3-5, anisotropic-1-2,
 planar-i, planar-ii.";
 
+/// The degree of the space in each kind of variable when its option is not given, as the
+/// options' help says (`[default: 2]`; a test compares): the options are `Option`s, so that
+/// a degree given for variables the system lacks can be refused.
+const DEFAULT_DEGREE: u32 = 2;
+/// The degree in the radicals when `--radicals-degree` is not given.
+const DEFAULT_RADICALS_DEGREE: u32 = 1;
+
 /// Arguments of `superint search`.
 #[derive(Debug, Args)]
 pub struct SearchArgs {
@@ -345,13 +352,13 @@ fn search_and_print(job: &SearchJob) -> anyhow::Result<bool> {
     let subject = Subject::open(a.file.as_ref(), a.system.as_deref(), false, &a.limits)?;
     a.refuse_degrees_without_variables(&subject)?;
     let mut space = SearchSpace::new(
-        a.momenta_degree.unwrap_or(2),
-        a.positions_degree.unwrap_or(2),
-        a.trig_degree.unwrap_or(2),
+        a.momenta_degree.unwrap_or(DEFAULT_DEGREE),
+        a.positions_degree.unwrap_or(DEFAULT_DEGREE),
+        a.trig_degree.unwrap_or(DEFAULT_DEGREE),
     )
-    .poisson_degree(a.poisson_degree.unwrap_or(2))
-    .denominators_degree(a.denominators_degree.unwrap_or(2))
-    .radicals_degree(a.radicals_degree.unwrap_or(1));
+    .poisson_degree(a.poisson_degree.unwrap_or(DEFAULT_DEGREE))
+    .denominators_degree(a.denominators_degree.unwrap_or(DEFAULT_DEGREE))
+    .radicals_degree(a.radicals_degree.unwrap_or(DEFAULT_RADICALS_DEGREE));
     if a.laurent {
         space = space.laurent();
     }
@@ -383,4 +390,46 @@ fn search_and_print(job: &SearchJob) -> anyhow::Result<bool> {
     let report = subject.tag(report);
     emit(&render(&report, job.output.format, &job.output.options))?;
     Ok(report.all_proved())
+}
+
+#[cfg(test)]
+mod tests {
+    use clap::{CommandFactory, Parser};
+
+    use super::*;
+
+    #[derive(Parser)]
+    struct Command {
+        #[command(flatten)]
+        args: SearchArgs,
+    }
+
+    /// The defaults the help states are the ones the search takes.
+    #[test]
+    fn the_degrees_help_states_are_the_defaults() {
+        let command = Command::command();
+        let stated = |id: &str| {
+            let arg = command
+                .get_arguments()
+                .find(|a| a.get_id() == id)
+                .expect(id);
+            arg.get_help().expect("a help text").to_string()
+        };
+        for id in [
+            "momenta_degree",
+            "positions_degree",
+            "trig_degree",
+            "poisson_degree",
+            "denominators_degree",
+        ] {
+            let help = stated(id);
+            assert!(
+                help.contains(&format!("[default: {DEFAULT_DEGREE}]")),
+                "{id}: {help}"
+            );
+        }
+        let help = stated("radicals_degree");
+        let default = format!("[default: {DEFAULT_RADICALS_DEGREE}]");
+        assert!(help.contains(&default), "{help}");
+    }
 }
