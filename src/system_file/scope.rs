@@ -235,8 +235,11 @@ pub(crate) fn limit_hint(message: &str) -> String {
 /// Whether `message` is a limit error for a number with `|N|` above the most that
 /// `max_degree` may be set to: `the exponent N is past the limit of …`, `the exponent of x
 /// would reach N`, `the multiple N of θ is past …`, `the trigonometric order in θ would
-/// reach N`.
+/// reach N`; and `the multiple of θ, of B bits, is past …`, a multiple too long to write.
 fn exponent_past_every_limit(message: &str) -> bool {
+    if message.contains(" bits, is past the limit of ") {
+        return true;
+    }
     let number = |before: &str, after: &str| {
         let (_, rest) = message.split_once(before)?;
         Some(rest.split_once(after)?.0)
@@ -663,6 +666,10 @@ mod tests {
             ),
             ("the multiple -32768 of θ is past the limit of 1000", true),
             ("the multiple 2000 of θ is past the limit of 1000", false),
+            (
+                "the multiple of θ, of 1000001 bits, is past the limit of 1000",
+                true,
+            ),
             (
                 "the trigonometric order in θ would reach 32768 (terms in cos 32768θ, sin \
                  32768θ), past the limit of 32767",

@@ -623,16 +623,23 @@ impl<C: Coefficient> Lower<'_, C> {
         let limit = self.vars.limits().max_degree;
         form.iter()
             .map(|(v, c)| {
-                // Only integers and i enter the form: its coefficients are Gaussian integers.
+                // Only integers, i and their nonnegative powers enter the form: its
+                // coefficients are Gaussian integers.
                 let n = multiple(c).numer();
+                let angle = self.vars.variable(*v).unicode();
                 match n.to_i64() {
                     Some(k) if k.unsigned_abs() <= limit as u64 => Ok((*v, k)),
-                    _ => Err(ParseError::new(
+                    // A multiple written as a power may be long: its size, not its digits.
+                    _ if n.bits() > 256 => Err(ParseError::new(
                         arg.span,
                         format!(
-                            "the multiple {n} of {} is past the limit of {limit}",
-                            self.vars.variable(*v).unicode()
+                            "the multiple of {angle}, of {} bits, is past the limit of {limit}",
+                            n.bits()
                         ),
+                    )),
+                    _ => Err(ParseError::new(
+                        arg.span,
+                        format!("the multiple {n} of {angle} is past the limit of {limit}"),
                     )),
                 }
             })
@@ -658,7 +665,8 @@ impl<C: Coefficient> Lower<'_, C> {
     }
 
     /// Reads `e` as a linear form over the angles with Gaussian-integer coefficients: integers,
-    /// `i` and angles combined by `+`, `−` and products in which one side is a constant. What
+    /// `i` and angles combined by `+`, `−`, products in which one side is a constant, and
+    /// nonnegative integer powers of constants. What
     /// does not fit is refused by `bad` at its span.
     fn linear_form(
         &self,
@@ -724,6 +732,26 @@ impl<C: Coefficient> Lower<'_, C> {
                 }
             }
             ExprKind::Mul(a, b) => self.product_form(a, b, bad)?,
+            // A constant written as a power, `2^3` in `cos(2^3*θ)`: a Gaussian integer to a
+            // nonnegative integer exponent within the degree limit, so that the form's
+            // coefficients stay Gaussian integers; its size is bounded as any power's.
+            ExprKind::Pow(a, b) => {
+                let Constant(base) = self.linear_form(a, bad)? else {
+                    return Err(bad(e.span));
+                };
+                let exp = match self.exponent(b)? {
+                    Exponent::Integer(n) if n >= 0 => n,
+                    _ => return Err(bad(e.span)),
+                };
+                let power = Poly::constant(self.vars, base)
+                    .checked_pow(exp)
+                    .map_err(at(e.span))?;
+                Constant(
+                    power
+                        .as_constant()
+                        .expect("a power of a constant is a constant"),
+                )
+            }
             // `i(θ − φ)`: a name before parentheses multiplies them, as the echo writes it.
             ExprKind::Call(name, name_span, args) if args.len() == 1 && !self.is_function(name) => {
                 let factor = Expr::new(ExprKind::Name(name.clone()), *name_span);

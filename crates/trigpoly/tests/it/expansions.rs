@@ -370,6 +370,36 @@ fn angle_arguments_are_integer_combinations_however_written() {
     );
 }
 
+/// A multiple of an angle may be an integer constant written as an expression: powers of
+/// integers (and of `i`) to nonnegative integer exponents, sums, products and negations, in
+/// parentheses or not, on either side of the angle. Each has the normal form of the multiple
+/// written out.
+#[test]
+fn angle_multiples_written_as_integer_constants() {
+    let vars = phase_space();
+    let cases = [
+        ("cos(2^3*theta)", "cos(8*theta)"),
+        ("cos(theta*2^3)", "cos(8*theta)"),
+        ("cos(theta*3)", "cos(3*theta)"),
+        ("cos(-2^3*theta)", "cos(8*theta)"),
+        ("sin((-2)^3*theta)", "sin(-8*theta)"),
+        ("sin((1+2)*theta - phi)", "sin(3*theta - phi)"),
+        ("sin((1+2)^2*(theta - 2^0*phi))", "sin(9*theta - 9*phi)"),
+        ("cos((2^11 - 2040)*theta)", "cos(8*theta)"),
+        ("exp(i*2^2*theta)", "exp(4*i*theta)"),
+        ("exp(i^3*theta)", "exp(-i*theta)"),
+        ("exp((1 + i)^2*phi)", "exp(2*i*phi)"),
+        ("cos(2^(3 - 1)*theta)", "cos(4*theta)"),
+    ];
+    for (written, expanded) in cases {
+        identity!(vars, written => expanded);
+    }
+    assert_ne!(
+        p::<GaussianRational>(&vars, "cos(2^3*theta)"),
+        p::<GaussianRational>(&vars, "cos(6*theta)")
+    );
+}
+
 /// The Fateman product for n = 6: `f·(f + 1) = f² + f` with `f = (1 + x + y + z + t)^6`, so
 /// the coefficient of `x^a y^b z^c t^d` is `12!/(e! a! b! c! d!) + 6!/(e'! a! b! c! d!)`.
 #[test]

@@ -290,6 +290,49 @@ fn cases() -> Vec<Case> {
             "line 1, column 5: sin takes an integer combination of angles, such as sin(2*theta - phi)\n  \
              sin(1/2*theta)\n      ^^^",
         ),
+        // A power in a multiple: of an integer to a negative exponent (not an integer), of
+        // an angle, past the degree limit, and one whose value is past it.
+        case(
+            Qi,
+            "cos(2^(-1)*theta)",
+            "cos takes an integer combination of angles, such as cos(2*theta - phi)",
+            (1, 5),
+            "line 1, column 5: cos takes an integer combination of angles, such as cos(2*theta - phi)\n  \
+             cos(2^(-1)*theta)\n      ^^^^^^",
+        ),
+        case(
+            Qi,
+            "cos(theta^2)",
+            "cos takes an integer combination of angles, such as cos(2*theta - phi)",
+            (1, 5),
+            "line 1, column 5: cos takes an integer combination of angles, such as cos(2*theta - phi)\n  \
+             cos(theta^2)\n      ^^^^^^^",
+        ),
+        case(
+            Qi,
+            "exp(i*2^2000*theta)",
+            "the exponent 2000 is past the limit of 1000",
+            (1, 9),
+            "line 1, column 9: the exponent 2000 is past the limit of 1000\n  \
+             exp(i*2^2000*theta)\n          ^^^^",
+        ),
+        case(
+            Qi,
+            "cos(10^30*theta)",
+            "the multiple 1000000000000000000000000000000 of θ is past the limit of 1000",
+            (1, 5),
+            "line 1, column 5: the multiple 1000000000000000000000000000000 of θ is past the \
+             limit of 1000\n  cos(10^30*theta)\n      ^^^^^^^^^^^",
+        ),
+        // A multiple too long to write is said by its size.
+        case(
+            Qi,
+            "sin(phi - (2^1000)^1000*theta)",
+            "the multiple of θ, of 1000001 bits, is past the limit of 1000",
+            (1, 5),
+            "line 1, column 5: the multiple of θ, of 1000001 bits, is past the limit of 1000\n  \
+             sin(phi - (2^1000)^1000*theta)\n      ^^^^^^^^^^^^^^^^^^^^^^^^^",
+        ),
         // A product of angles, at the second.
         case(
             Qi,
