@@ -15,7 +15,7 @@ use super::claims::ClaimSpec;
 use super::error::{locate_bytes, ErrorKind, FileError};
 use super::keys::unknown_key_hint;
 use super::model::{
-    ExpectShape, FunctionModel, PhaseSpaceModel, ShapeModel, StringTable, SystemModel,
+    ExpectShape, FamilyModel, FunctionModel, PhaseSpaceModel, ShapeModel, StringTable, SystemModel,
 };
 use super::names::{check_display, index_refusal, BadName, PrintedNames};
 use super::scope::{first_bracket, instance_parts, mention};
@@ -922,11 +922,17 @@ impl<'a> Builder<'a> {
             ));
         }
         scope.lower(&self.source, &h_text, &tree).map_err(|e| {
-            later_function(e, &model.function, |name| {
+            let e = later_function(e, &model.function, |name| {
                 format!(
                     "{name} is a function, and the Hamiltonian is read before the \
                      functions: it uses only variables and parameters, so write {name}'s \
                      value out"
+                )
+            });
+            later_family(e, &model.family, |family, name| {
+                format!(
+                    "{family} is a family, and the Hamiltonian is read before the families: \
+                     it uses only variables and parameters, so write {name}'s value out"
                 )
             })
         })
@@ -942,10 +948,16 @@ impl<'a> Builder<'a> {
                 .scope(0)
                 .parse(&self.source, &self.text(&f.value))
                 .map_err(|e| {
-                    later_function(e, &model.function[k + 1..], |name| {
+                    let e = later_function(e, &model.function[k + 1..], |name| {
                         format!(
                             "{name} is declared further down, and a function uses only the \
                              functions declared before it: move this one below {name}"
+                        )
+                    });
+                    later_family(e, &model.family, |family, name| {
+                        format!(
+                            "{family} is a family, and the functions are read before the \
+                             families: a function uses none, so write {name}'s value out"
                         )
                     })
                 })?;
@@ -964,7 +976,7 @@ impl<'a> Builder<'a> {
     /// The file's families: their indices and displays checked, each value and eigenvalue
     /// tried on the instance `(1, 1)`.
     fn families(&mut self, file: &mut LoadedSystem, model: &SystemModel) -> Result<(), FileError> {
-        for spanned in &model.family {
+        for (position, spanned) in model.family.iter().enumerate() {
             let f = spanned.get_ref();
             self.declare(f.name.get_ref(), f.name.span(), FAMILY)?;
             let indices = match &f.indices {
@@ -1036,9 +1048,20 @@ impl<'a> Builder<'a> {
             });
             // Check the value and the eigenvalue on the instance (1, 1).
             let k = file.families.len() - 1;
-            file.scope(k + 1).expand(k, 1, 1, &self.source, 0..0)?;
+            let later = |e| {
+                later_family(e, &model.family[position + 1..], |family, _| {
+                    format!(
+                        "{family} is declared further down, and a family uses only the families \
+                         declared before it: move this one ({}) below {family}",
+                        f.name.get_ref()
+                    )
+                })
+            };
+            file.scope(k + 1)
+                .expand(k, 1, 1, &self.source, 0..0)
+                .map_err(later)?;
             if file.families[k].eigenvalue.is_some() {
-                file.eigenvalue_at(k, 1, 1)?;
+                file.eigenvalue_at(k, 1, 1).map_err(later)?;
             }
         }
         Ok(())
@@ -1103,6 +1126,34 @@ fn later_function(
     match name.filter(|n| later.iter().any(|f| f.get_ref().name.get_ref() == n)) {
         Some(name) => e.with_hint(hint(&name)),
         None => e,
+    }
+}
+
+/// An unknown name written as an instance of one of the families `later` (read after the
+/// text at fault: `K_2_3`, `K_m_n`, `K_` of `K_{m,n}` for a family `K`) gets the hint
+/// `hint(family, name)`.
+fn later_family(
+    e: FileError,
+    later: &[Spanned<FamilyModel>],
+    hint: impl Fn(&str, &str) -> String,
+) -> FileError {
+    let name = e
+        .message
+        .strip_prefix("unknown name '")
+        .and_then(|rest| rest.split('\'').next())
+        .map(str::to_string);
+    let family = name.as_deref().and_then(|n| {
+        later.iter().map(|f| f.get_ref().name.get_ref()).find(|f| {
+            n.strip_prefix(f.as_str())
+                .is_some_and(|rest| rest.starts_with('_'))
+        })
+    });
+    match (family, &name) {
+        (Some(family), Some(name)) => {
+            let hint = hint(family, name);
+            e.with_hint(hint)
+        }
+        _ => e,
     }
 }
 

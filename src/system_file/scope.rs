@@ -25,6 +25,8 @@ pub(crate) struct Scope<'a> {
     families: usize,
     /// In a family's value or eigenvalue, its index names, which braces may hold (`K_{m,n}`).
     indices: &'a [String],
+    /// In a family's value or eigenvalue, that family, whose instances it cannot use.
+    owner: Option<usize>,
     made: RefCell<HashMap<String, Expr>>,
 }
 
@@ -52,6 +54,29 @@ fn meant_family<'f>(families: &'f [super::Family], name: &str) -> Option<&'f sup
         name.strip_prefix(f.name.as_str())
             .is_some_and(|rest| rest.starts_with('_'))
     })
+}
+
+/// Whether `name` is written as an instance of `family` in a text of its own, well formed or
+/// not: `K_2_3`, `K_m_n`, `K_1`, `K_1_2_3` and `K_` (of `K_{…}`) for `K` with indices `m, n`;
+/// not `K_b_1_2`, which may be another family's.
+fn names_own_instance(family: &super::Family, name: &str) -> bool {
+    name.strip_prefix(family.name.as_str())
+        .and_then(|rest| rest.strip_prefix('_'))
+        .is_some_and(|rest| {
+            rest.split('_').all(|piece| {
+                piece.bytes().all(|b| b.is_ascii_digit())
+                    || family.indices.iter().any(|i| i == piece)
+            })
+        })
+}
+
+/// Why a family's text cannot use the family itself, as `written` does.
+fn uses_itself_message(family: &super::Family, written: &str) -> String {
+    format!(
+        "the family {f} uses itself here ('{written}'): a family cannot be defined by its own \
+         instances; write it in the variables, the functions and the families declared before it",
+        f = family.name
+    )
 }
 
 /// What an instance of a family must look like, for a name or braces that are not one.
@@ -367,15 +392,18 @@ impl<'a> Scope<'a> {
             file,
             families,
             indices: &[],
+            owner: None,
             made: RefCell::new(HashMap::new()),
         }
     }
 
     /// The scope of family `k`'s value and eigenvalue: the families before it, and its index
-    /// names, also inside braces (`K_{m,n}` for `K_m_n`).
+    /// names, also inside braces (`K_{m,n}` for `K_m_n`); an instance of the family itself is
+    /// refused as such.
     pub(crate) fn of_family(file: &'a LoadedSystem, k: usize) -> Self {
         Scope {
             indices: &file.families[k].indices,
+            owner: Some(k),
             ..Scope::new(file, k)
         }
     }
@@ -389,6 +417,15 @@ impl<'a> Scope<'a> {
     /// Parses a text into a tree (family instances written `K_{2,3}` are accepted).
     pub(crate) fn tree(&self, source: &Source, text: &Text) -> Result<Tree, FileError> {
         let families = &self.file.families[..self.families];
+        // `K_{m,n}` in the text of `K` itself, well formed or not.
+        if let Some(owner) = self.owner {
+            let family = std::slice::from_ref(&self.file.families[owner]);
+            if let Some(b) = braced_instances(&text.value, family, self.indices).next() {
+                let span = Span::new(b.span.start, b.span.end);
+                let message = uses_itself_message(&family[0], &text.value[b.span]);
+                return Err(text.error(source, ErrorKind::Family, span, message));
+            }
+        }
         // `P_{1}` does not parse, and `P_{m,2}` would be an unknown `P_`: the braces are the news.
         if let Some((span, message)) = malformed_braces(&text.value, families, self.indices) {
             return Err(text.error(source, ErrorKind::Family, span, message));
@@ -464,7 +501,8 @@ impl<'a> Scope<'a> {
     }
 
     /// Expands `name` (at `span`) if it is an instance of a family this scope sees, for the
-    /// lowering to find; refuses a family declared later and a malformed instance. Any other
+    /// lowering to find; refuses the family whose text this is, a family declared later and a
+    /// malformed instance. Any other
     /// name is left to the lowering.
     fn make_instance(
         &self,
@@ -475,6 +513,16 @@ impl<'a> Scope<'a> {
     ) -> Result<(), FileError> {
         if self.file.declares(name) {
             return Ok(());
+        }
+        if let Some(family) = self.owner.map(|k| &self.file.families[k]) {
+            if names_own_instance(family, name) {
+                return Err(text.error(
+                    source,
+                    ErrorKind::Family,
+                    span,
+                    uses_itself_message(family, name),
+                ));
+            }
         }
         if let Some((k, m, n)) = instance_of(&self.file.families, name) {
             if k >= self.families {
@@ -492,7 +540,14 @@ impl<'a> Scope<'a> {
             }
             let e = self.expand(k, m, n, source, text.source_span(span))?;
             self.made.borrow_mut().insert(name.to_string(), e);
-        } else if let Some(family) = meant_family(&self.file.families, name) {
+        } else if let Some(family) = meant_family(&self.file.families, name)
+            // In a family's own text, what is no instance of it (`K_b_1_2` in `K`'s) is left
+            // to the lowering: it may be one of a family declared later.
+            .filter(|f| {
+                self.owner
+                    .is_none_or(|k| f.name != self.file.families[k].name)
+            })
+        {
             return Err(text.error(
                 source,
                 ErrorKind::Family,

@@ -773,6 +773,26 @@ fn bad_inputs() -> Vec<(&'static str, Vec<u8>, &'static str, Vec<&'static str>)>
             check.clone(),
         ),
         (
+            "family using itself",
+            base_with(
+                "[[claim]]",
+                "[[family]]\nname = \"K\"\nvalue = \"A^m*K_m_n\"\n\n[[claim]]",
+            ),
+            "bad.toml:14:14: the family K uses itself here ('K_m_n'): a family cannot be \
+             defined by its own instances",
+            check.clone(),
+        ),
+        (
+            "family using itself at indices",
+            base_with(
+                "[[claim]]",
+                "[[family]]\nname = \"K\"\nvalue = \"K_1_2*A^m\"\n\n[[claim]]",
+            ),
+            "bad.toml:14:10: the family K uses itself here ('K_1_2'): a family cannot be \
+             defined by its own instances",
+            check.clone(),
+        ),
+        (
             "condition that divides by zero",
             base_with(
                 "claim = \"{A, H} = i*omega*A\"",
@@ -2661,6 +2681,113 @@ fn a_function_used_too_early_is_explained() {
         assert!(stderr.contains("unknown name"), "{stderr}");
         assert!(stderr.ends_with(hint), "{stderr}");
     }
+}
+
+/// A family whose value or eigenvalue uses the family itself is refused at that use, however
+/// the instance is written; one that uses a family declared after it, or a function that uses
+/// a family, is told so in the hint (it said the family took two indices, or to declare it).
+#[test]
+fn a_family_used_by_itself_or_too_early_is_explained() {
+    let dir = scratch("family-too-early");
+    let head = "name = \"t\"\nhamiltonian = \"p_x^2/2 + x^2/2\"\n[phase_space]\n\
+                coordinates = [\"x\"]\n";
+    let itself = |written: &str| {
+        format!(
+            "the family K uses itself here ('{written}'): a family cannot be defined by its own \
+             instances; write it in the variables, the functions and the families declared \
+             before it\n"
+        )
+    };
+    let later = "hint: J is declared further down, and a family uses only the families declared \
+                 before it: move this one (K) below J\n";
+    for (body, place, message, hint) in [
+        (
+            "[[family]]\nname = \"K\"\nvalue = \"K_m_n*x\"\n".to_string(),
+            "7:10",
+            itself("K_m_n"),
+            None,
+        ),
+        (
+            "[[family]]\nname = \"K\"\nvalue = \"x + K_1_2\"\n".to_string(),
+            "7:14",
+            itself("K_1_2"),
+            None,
+        ),
+        (
+            "[[family]]\nname = \"K\"\nindices = [\"a\", \"b\"]\nvalue = \"K_{a, b}\"\n"
+                .to_string(),
+            "8:10",
+            itself("K_{a, b}"),
+            None,
+        ),
+        (
+            "[[family]]\nname = \"K\"\nvalue = \"x^m\"\neigenvalue = \"m*K_m\"\n".to_string(),
+            "8:17",
+            itself("K_m"),
+            None,
+        ),
+        (
+            "[[family]]\nname = \"K\"\nvalue = \"J_m_n*x\"\n\
+             [[family]]\nname = \"J\"\nvalue = \"x^m*p_x^n\"\n"
+                .to_string(),
+            "7:10",
+            "unknown name 'J_m_n' (known: x, p_x, H)\n".to_string(),
+            Some(later),
+        ),
+        (
+            "[[family]]\nname = \"K\"\nvalue = \"x*J_1_2\"\n\
+             [[family]]\nname = \"J\"\nvalue = \"x^m*p_x^n\"\n"
+                .to_string(),
+            "7:12",
+            "unknown name 'J_1_2' (known: x, p_x, H)\n".to_string(),
+            Some(later),
+        ),
+        (
+            "[[function]]\nname = \"F\"\nvalue = \"K_1_2*x\"\n\
+             [[family]]\nname = \"K\"\nvalue = \"x^m*p_x^n\"\n"
+                .to_string(),
+            "7:10",
+            "unknown name 'K_1_2' (known: x, p_x, H)\n".to_string(),
+            Some(
+                "hint: K is a family, and the functions are read before the families: a \
+                 function uses none, so write K_1_2's value out\n",
+            ),
+        ),
+    ] {
+        std::fs::write(dir.join("k.toml"), format!("{head}{body}")).expect("write k.toml");
+        let o = superint_in(&dir, &["check", "k.toml"]);
+        let stderr = text(&o.stderr);
+        assert_eq!(o.status.code(), Some(2), "{stderr}");
+        assert!(
+            stderr.starts_with(&format!("superint: error: k.toml:{place}: {message}")),
+            "{body}: {stderr}"
+        );
+        match hint {
+            Some(hint) => assert!(stderr.ends_with(hint), "{body}: {stderr}"),
+            None => assert!(!stderr.contains("hint:"), "{body}: {stderr}"),
+        }
+    }
+    // The Hamiltonian is read before the families too.
+    let h = head.replace("x^2/2\"", "K_1_1\"");
+    let family = "[[family]]\nname = \"K\"\nvalue = \"x^m*p_x^n\"\n";
+    std::fs::write(dir.join("h.toml"), format!("{h}{family}")).expect("write h.toml");
+    let o = superint_in(&dir, &["check", "h.toml"]);
+    let stderr = text(&o.stderr);
+    assert_eq!(o.status.code(), Some(2), "{stderr}");
+    assert!(
+        stderr.starts_with("superint: error: h.toml:2:26: unknown name 'K_1_1'")
+            && stderr.ends_with(
+                "hint: K is a family, and the Hamiltonian is read before the families: it uses \
+                 only variables and parameters, so write K_1_1's value out\n"
+            ),
+        "{stderr}"
+    );
+    // A family may use the families declared before it, with the same head (`K` in `K_b`).
+    let fine = "[[family]]\nname = \"K\"\nvalue = \"x^m*p_x^n\"\n\
+                [[family]]\nname = \"K_b\"\nvalue = \"K_m_n + K_{n,m}\"\n";
+    std::fs::write(dir.join("ok.toml"), format!("{head}{fine}")).expect("write ok.toml");
+    let o = superint_in(&dir, &["check", "ok.toml"]);
+    assert_eq!(o.status.code(), Some(0), "{}", text(&o.stderr));
 }
 
 /// Letters before parentheses that spell a function (`i·m` before `(−m)` as `im(−m)`, the
