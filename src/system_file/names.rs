@@ -60,10 +60,11 @@ fn invisible(c: char) -> bool {
 /// own words (`'2Q' cannot name a function: …`, `--define '2Q': …`).
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub enum BadName {
-    /// Not letters, digits and `_` starting with a letter or `_`.
+    /// Not letters, digits and `_` starting with a letter (or `_`, [`BadName::EmptySubscript`]).
     Malformed,
-    /// Ending in `_` or holding `__` (`a_`, `_`, `a__b`): each `_` starts a subscript, so that
-    /// such a name has an empty one, which LaTeX writes as `x_{}` (printed as `x`) or not at all.
+    /// Beginning or ending in `_` or holding `__` (`_a`, `a_`, `_`, `a__b`): each `_` starts a
+    /// subscript, so that such a name has an empty one or one of nothing, which LaTeX writes
+    /// as `x_{}` (printed as `x`), `\mathrm{_a}` (a lone subscript `a`) or not at all.
     EmptySubscript,
     /// A letter LaTeX output could not write, and why ([`unwritable_letter`]).
     Unwritable(String),
@@ -76,7 +77,7 @@ impl BadName {
     pub fn of(name: &str) -> Option<BadName> {
         if !is_identifier(name) {
             Some(BadName::Malformed)
-        } else if name.ends_with('_') || name.contains("__") {
+        } else if name.starts_with('_') || name.ends_with('_') || name.contains("__") {
             Some(BadName::EmptySubscript)
         } else if let Some(why) = latex_unwritable(name).and_then(unwritable_letter) {
             Some(BadName::Unwritable(why))
@@ -100,10 +101,8 @@ impl BadName {
     /// reserved for the Hamiltonian`.
     pub fn why(&self) -> &str {
         match self {
-            BadName::Malformed => {
-                "a name is letters, digits and '_', starting with a letter or '_'"
-            }
-            BadName::EmptySubscript => "a name cannot end in '_' or hold '__'",
+            BadName::Malformed => "a name is letters, digits and '_', starting with a letter",
+            BadName::EmptySubscript => "a name cannot begin or end in '_' or hold '__'",
             BadName::Unwritable(why) | BadName::Reserved(why) => why,
         }
     }

@@ -1591,7 +1591,12 @@ fn closure_refuses_a_generator_named_twice_or_a_name_the_system_has() {
         (
             harmonic,
             vec!["L", "--define", "2Q=p_x"],
-            "--define '2Q': a name is letters, digits and '_', starting with a letter or '_'",
+            "--define '2Q': a name is letters, digits and '_', starting with a letter",
+        ),
+        (
+            harmonic,
+            vec!["L", "--define", "_Q=p_x"],
+            "--define _Q: a name cannot begin or end in '_' or hold '__'; choose another name",
         ),
         (
             builtin,

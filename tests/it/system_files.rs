@@ -459,19 +459,39 @@ fn bad_inputs() -> Vec<(&'static str, Vec<u8>, &'static str, Vec<&'static str>)>
         (
             "coordinate ending in '_'",
             base_with("coordinates = [\"x\"]", "coordinates = [\"x\", \"x_\"]"),
-            "bad.toml:5:21: 'x_' cannot be a name: a name cannot end in '_' or hold '__'",
+            "bad.toml:5:21: 'x_' cannot be a name: a name cannot begin or end in '_' or hold '__'",
             check.clone(),
         ),
         (
             "parameter named '_'",
             base_with("parameters = [\"M\", ", "parameters = [\"M\", \"_\", "),
-            "bad.toml:6:20: '_' cannot be a name: a name cannot end in '_' or hold '__'",
+            "bad.toml:6:20: '_' cannot be a name: a name cannot begin or end in '_' or hold '__'",
+            check.clone(),
+        ),
+        // A '_' at the start is a subscript of nothing: `_a` was written `\mathrm{_a}`, a lone
+        // subscript, and `_q`'s momentum `p__q` as `p_{,q}`.
+        (
+            "coordinate beginning with '_'",
+            base_with("coordinates = [\"x\"]", "coordinates = [\"x\", \"_q\"]"),
+            "bad.toml:5:21: '_q' cannot be a name: a name cannot begin or end in '_' or hold '__'",
+            check.clone(),
+        ),
+        (
+            "parameter beginning with '_'",
+            base_with("parameters = [\"M\", ", "parameters = [\"M\", \"_a\", "),
+            "bad.toml:6:20: '_a' cannot be a name: a name cannot begin or end in '_' or hold '__'",
+            check.clone(),
+        ),
+        (
+            "function beginning with '_'",
+            base_with("name = \"A\"", "name = \"_A\""),
+            "bad.toml:9:8: '_A' cannot be a name: a name cannot begin or end in '_' or hold '__'",
             check.clone(),
         ),
         (
             "function with '__'",
             base_with("name = \"A\"", "name = \"a__b\""),
-            "bad.toml:9:8: 'a__b' cannot be a name: a name cannot end in '_' or hold '__'",
+            "bad.toml:9:8: 'a__b' cannot be a name: a name cannot begin or end in '_' or hold '__'",
             check.clone(),
         ),
         (
@@ -480,7 +500,7 @@ fn bad_inputs() -> Vec<(&'static str, Vec<u8>, &'static str, Vec<&'static str>)>
                 "[[claim]]",
                 "[[family]]\nname = \"K_\"\nvalue = \"A^m*x^n\"\n\n[[claim]]",
             ),
-            "bad.toml:13:8: 'K_' cannot be a name: a name cannot end in '_' or hold '__'",
+            "bad.toml:13:8: 'K_' cannot be a name: a name cannot begin or end in '_' or hold '__'",
             check.clone(),
         ),
         (
@@ -489,7 +509,7 @@ fn bad_inputs() -> Vec<(&'static str, Vec<u8>, &'static str, Vec<&'static str>)>
                 "parameters = [\"M\", \"omega\"]",
                 "parameters = [\"M\", \"omega\"]\nradicals = { r_ = \"x^2 + 1\" }",
             ),
-            "bad.toml:7:14: 'r_' cannot be a name: a name cannot end in '_' or hold '__'",
+            "bad.toml:7:14: 'r_' cannot be a name: a name cannot begin or end in '_' or hold '__'",
             check.clone(),
         ),
         (
