@@ -572,8 +572,9 @@ impl<'a> Builder<'a> {
                 ErrorKind::Expression,
                 tree.span,
                 format!(
-                    "{{{ua}, {ub}}} = {expr} is not real: the bracket of two real \
-                 variables is real"
+                    "{{{ua}, {ub}}} = {} is not real: the bracket of two real variables is \
+                     real",
+                    expr.brief_excerpt()
                 ),
             ));
         }

@@ -195,6 +195,75 @@ fn library_api_refuses_what_is_not_a_poisson_structure() {
     }
 }
 
+/// Long declared brackets that break the Jacobi identity: the message names the triple and
+/// the entry, and shows the residual in part with its size (in full it was 1.2 MB); the
+/// violation keeps the whole residual. A long value that is not real is shown so too.
+#[test]
+fn a_long_jacobi_violation_is_said_in_part() {
+    let file = "name = \"j\"\nhamiltonian = \"M1^2 + M2^2 + M3^2\"\n[phase_space]\n\
+                variables = [\"M1\", \"M2\", \"M3\"]\n[poisson]\n\
+                \"{M1, M2}\" = \"(M1 + 2*M2 + 3*M3 + 1)^25\"\n\
+                \"{M2, M3}\" = \"(M1 - M2 + 5*M3 + 2)^25\"\n\"{M3, M1}\" = \"M2\"\n";
+    let path = crate::scratch_text("long-jacobi", "j.toml", file);
+    let o = superint(&["check", path.to_str().expect("a UTF-8 path")]);
+    assert_eq!(o.status.code(), Some(2));
+    let stderr = text(&o.stderr);
+    assert!(stderr.len() < 600, "{} bytes: {stderr}", stderr.len());
+    let first = stderr.lines().next().unwrap_or_default();
+    assert!(
+        first.contains(
+            "j.toml:7:1: the declared brackets break the Jacobi identity: {M1, {M2, M3}} + \
+             {M2, {M3, M1}} + {M3, {M1, M2}} = −75 M1⁴⁹ "
+        ) && first.ends_with(" + … (a polynomial of 22099 terms), not 0"),
+        "{stderr}"
+    );
+    // A long value that is not real, refused as the file is read.
+    let unreal = file.replace("\"M2\"\n", "\"i*(M1 + M2 + M3 + 1)^25\"\n");
+    let path = crate::scratch_text("long-jacobi", "u.toml", &unreal);
+    let o = superint(&["check", path.to_str().expect("a UTF-8 path")]);
+    assert_eq!(o.status.code(), Some(2));
+    let stderr = text(&o.stderr);
+    assert!(
+        stderr.len() < 600
+            && stderr.contains(
+                "u.toml:8:15: {M3, M1} = i M1²⁵ + 25i M1²⁴ M2 + 25i M1²⁴ M3 + 25i M1²⁴ + 300i M1²³ \
+                 M2² + 600i M1²³ M2 M3 + … (a polynomial of 3276 terms) is not real"
+            ),
+        "{stderr}"
+    );
+    // The library's violation: the whole residual, the message in part.
+    let vars = VarSet::builder()
+        .poisson("M1")
+        .poisson("M2")
+        .poisson("M3")
+        .build()
+        .unwrap();
+    let e = |s: &str| Expr::parse(&vars, s).unwrap();
+    let brackets = [
+        ("M1", "M2", e("(M1 + 2*M2 + 3*M3 + 1)^25")),
+        ("M2", "M3", e("(M1 - M2 + 5*M3 + 2)^25")),
+        ("M3", "M1", e("M2")),
+    ];
+    let space = PhaseSpace::new(&vars, &[]).unwrap();
+    let Err(EngineError::Jacobi(violation)) = space.clone().with_brackets(&brackets) else {
+        panic!("Jacobi is broken");
+    };
+    assert_eq!(violation.residual.len(), 22099);
+    assert_eq!(violation.bracket, 1);
+    assert!(violation.message.len() < 400, "{}", violation.message);
+    let unreal = [("M1", "M2", e("i*(M1 + M2 + M3 + 1)^25"))];
+    let message = space.with_brackets(&unreal).unwrap_err().to_string();
+    assert!(
+        message.starts_with("{M1, M2} = ")
+            && message.ends_with(
+                " + … (a polynomial of 3276 terms) is not real: the bracket of two real \
+                 variables is real"
+            )
+            && message.len() < 300,
+        "{message}"
+    );
+}
+
 #[test]
 fn euler_top_hamilton_equations_and_plot() {
     let top = system_file("euler-top.toml");

@@ -352,14 +352,16 @@ impl PhaseSpace {
             }
             if !value.is_free_of(VarKind::Denominator) {
                 return Err(EngineError::Invalid(format!(
-                    "{{{ua}, {ub}}} = {value} has a denominator: a declared bracket is a \
-                     polynomial"
+                    "{{{ua}, {ub}}} = {} has a denominator: a declared bracket is a \
+                     polynomial",
+                    value.brief_excerpt()
                 )));
             }
             if value.conj() != *value {
                 return Err(EngineError::Invalid(format!(
-                    "{{{ua}, {ub}}} = {value} is not real: the bracket of two real variables \
-                     is real"
+                    "{{{ua}, {ub}}} = {} is not real: the bracket of two real variables is \
+                     real",
+                    value.brief_excerpt()
                 )));
             }
             if !value.is_zero() {
@@ -432,12 +434,15 @@ impl PhaseSpace {
                         continue;
                     }
                     let [ua, ub, uc] = triple.map(|v| self.vars.variable(v).unicode());
+                    // A long residual in part, with its size: in full it was a message of
+                    // 1.2 MB (its terms stay in `residual`).
+                    let shown = residual.brief_excerpt();
                     return Err(EngineError::Jacobi(Box::new(JacobiViolation {
                         triple,
                         message: format!(
                             "the declared brackets break the Jacobi identity: \
                              {{{ua}, {{{ub}, {uc}}}}} + {{{ub}, {{{uc}, {ua}}}}} + \
-                             {{{uc}, {{{ua}, {ub}}}}} = {residual}, not 0"
+                             {{{uc}, {{{ua}, {ub}}}}} = {shown}, not 0"
                         ),
                         residual,
                         bracket: 0,

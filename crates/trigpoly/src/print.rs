@@ -58,6 +58,30 @@ impl<C: Coefficient> Poly<C> {
         format!("a polynomial of {} terms", self.len())
     }
 
+    /// The element's text for a message that should show a part of a long one: in full
+    /// when [`Poly::brief`] would show it whole, else the terms of its first monomials outside
+    /// the angles ([`Poly::leading_part`], each a printed term of the whole) that fit in as
+    /// many characters, then `+ …` and its size (`−75 M1⁴⁹ − 1800 M1⁴⁸ M2 + … (a polynomial
+    /// of 1326 terms)`); its size alone when not even its first terms fit.
+    pub fn brief_excerpt(&self) -> String {
+        const TERMS: usize = 8;
+        const CHARS: usize = 80;
+        if self.len() <= TERMS {
+            let text = self.to_string();
+            if text.chars().count() <= CHARS {
+                return text;
+            }
+        }
+        let size = format!("a polynomial of {} terms", self.len());
+        (1..=TERMS)
+            .rev()
+            .map(|k| self.leading_part(k).0)
+            .filter(|part| part.len() < self.len())
+            .map(|part| part.to_string())
+            .find(|text| text.chars().count() <= CHARS)
+            .map_or(size.clone(), |text| format!("{text} + … ({size})"))
+    }
+
     /// LaTeX math (no surrounding `$`).
     pub fn to_latex(&self) -> String {
         self.render(Style::Latex)

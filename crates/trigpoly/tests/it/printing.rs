@@ -689,6 +689,35 @@ fn leading_part_prints_terms_of_the_whole() {
     assert_eq!(parts[parts.len() - 1], f);
 }
 
+/// A message's text of an element: in full when short; else its first terms, each a printed
+/// term of the whole, within 80 characters, then `+ …` and its number of terms; its size alone
+/// when not even one monomial's terms fit.
+#[test]
+fn brief_excerpt_shows_a_long_element_in_part_with_its_size() {
+    let vars = phase_space();
+    let short: G = p(&vars, "x^2 - 3*y + 1");
+    assert_eq!(short.brief_excerpt(), "x² − 3y + 1");
+    let long: G = p(&vars, "(x + 2*y + 3*p_x + 1)^25");
+    let text = long.brief_excerpt();
+    let size = format!(" + … (a polynomial of {} terms)", long.len());
+    let Some(shown) = text.strip_suffix(&size) else {
+        panic!("{text}")
+    };
+    assert!(shown.chars().count() <= 80, "{text}");
+    assert!(shown.contains("x²⁵ + 50x²⁴y"), "{text}");
+    // What is shown is a leading part of the whole, term for term.
+    let part = (1..=8)
+        .map(|k| long.leading_part(k).0)
+        .find(|part| part.to_string() == shown);
+    assert!(part.is_some(), "{text}");
+    // One monomial's terms past 80 characters: the size alone.
+    let wide: G = p(&vars, "x*(cos(theta)^30 + sin(phi)^30)");
+    assert_eq!(
+        wide.brief_excerpt(),
+        format!("a polynomial of {} terms", wide.len())
+    );
+}
+
 /// The bound on the printed terms is never below their number, is exact for a multiple of
 /// `e^{ikθ}` (`k + 1` terms), and `check_printable` refuses past the term limit.
 #[test]
