@@ -59,7 +59,7 @@ impl<C: Coefficient> Poly<C> {
     }
 
     /// The element's text for a message that should show a part of a long one: in full
-    /// when [`Poly::brief`] would show it whole, else the terms of its first monomials outside
+    /// when `brief` would show it whole, else the terms of its first monomials outside
     /// the angles ([`Poly::leading_part`], each a printed term of the whole) that fit in as
     /// many characters, then `+ …` and its size (`−75 M1⁴⁹ − 1800 M1⁴⁸ M2 + … (a polynomial
     /// of 1326 terms)`); its size alone when not even its first terms fit.
