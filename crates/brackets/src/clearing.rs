@@ -130,26 +130,20 @@ impl Clearing {
     /// `Π D_i^{k_i}` over the atoms, formed the first time it is asked for (the powers are not
     /// negative: the image was multiplied by `Π v_i^{N_i}` first).
     fn product(&self, k: &[i64]) -> Result<Arc<Expr>, EngineError> {
-        let known = |products: &Mutex<FxHashMap<Vec<i64>, Arc<Expr>>>| {
-            let map = products.lock().unwrap_or_else(PoisonError::into_inner);
-            map.get(k).cloned()
-        };
-        if let Some(p) = known(&self.products) {
-            return Ok(p);
+        let products = || self.products.lock().unwrap_or_else(PoisonError::into_inner);
+        if let Some(p) = products().get(k) {
+            return Ok(p.clone());
         }
         // Formed outside the lock (two threads may both form it; either is kept).
-        let mut p: Option<Expr> = None;
+        let vars = self.atoms[0].1.vars();
+        let mut p = Expr::one(vars);
         for ((_, d, _), &e) in self.atoms.iter().zip(k) {
             if e != 0 {
-                let power = d.checked_pow(e)?;
-                p = Some(match p {
-                    Some(p) => p.checked_mul(&power)?,
-                    None => power,
-                });
+                p = p.checked_mul(&d.checked_pow(e)?)?;
             }
         }
-        let p = Arc::new(p.unwrap_or_else(|| Expr::one(self.atoms[0].1.vars())));
-        let mut map = self.products.lock().unwrap_or_else(PoisonError::into_inner);
+        let mut map = products();
+        let p = Arc::new(p);
         Ok(map.entry(k.to_vec()).or_insert(p).clone())
     }
 }

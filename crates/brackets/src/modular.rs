@@ -691,6 +691,16 @@ fn sums_to(
 mod tests {
     use super::*;
 
+    /// A xorshift generator from `seed`: the tests' repeatable pseudo-random words.
+    fn xorshift(mut x: u64) -> impl FnMut() -> u64 {
+        move || {
+            x ^= x << 13;
+            x ^= x >> 7;
+            x ^= x << 17;
+            x
+        }
+    }
+
     fn is_prime(n: u64) -> bool {
         // Deterministic Miller–Rabin for 64-bit integers.
         if n < 2 {
@@ -739,13 +749,7 @@ mod tests {
     /// between calls, also from two threads at once.
     #[test]
     fn dependencies_add_up_and_the_span_is_the_inserted_vectors() {
-        let mut x = 0x2545_F491_4F6C_DD1Du64;
-        let mut next = move || {
-            x ^= x << 13;
-            x ^= x >> 7;
-            x ^= x << 17;
-            x
-        };
+        let mut next = xorshift(0x2545_F491_4F6C_DD1Du64);
         let dim = 40;
         let mut e = Echelon::<Fp>::new(dim);
         let mut inserted: Vec<SparseVec<Fp>> = Vec::new();
@@ -810,13 +814,8 @@ mod tests {
     fn products_reduce_like_the_remainder() {
         let mut values: Vec<u64> = vec![0, 1, 2, 56, 57, 58, 1 << 31, 1 << 61, (1 << 62) - 1];
         values.extend((1..=64).map(|k| PRIME - k));
-        let mut x = 0x9E37_79B9_7F4A_7C15u64;
-        for _ in 0..200 {
-            x ^= x << 13;
-            x ^= x >> 7;
-            x ^= x << 17;
-            values.push(x % PRIME);
-        }
+        let mut next = xorshift(0x9E37_79B9_7F4A_7C15);
+        values.extend((0..200).map(|_| next() % PRIME));
         for &a in &values {
             for &b in &values {
                 let (a, b) = (a % PRIME, b % PRIME);
@@ -838,11 +837,9 @@ mod tests {
             PRIME - 2,
             PRIME - 1,
         ]);
-        let mut x = 0xD1B5_4A32_D192_ED03u64;
+        let mut next = xorshift(0xD1B5_4A32_D192_ED03);
         for _ in 0..200 {
-            x ^= x << 13;
-            x ^= x >> 7;
-            x ^= x << 17;
+            let x = next();
             values.extend([x % PRIME, x % (1 << 32)]);
         }
         for a in values.into_iter().filter(|a| a % PRIME != 0) {
@@ -916,13 +913,7 @@ mod tests {
     /// dependencies, on columns that are often combinations of earlier ones.
     #[test]
     fn the_kernels_do_not_depend_on_the_pivots() {
-        let mut x = 0x6A09_E667_F3BC_C909u64;
-        let mut next = move || {
-            x ^= x << 13;
-            x ^= x >> 7;
-            x ^= x << 17;
-            x
-        };
+        let mut next = xorshift(0x6A09_E667_F3BC_C909u64);
         let rows = 30;
         let mut columns: Vec<SparseVec<Rational>> = Vec::new();
         for j in 0..60 {
