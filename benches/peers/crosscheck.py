@@ -1,6 +1,6 @@
 """Cross-checks superint against SymPy on random expressions: an independent oracle for the engine.
 
-    python crosscheck.py [--cases 400] [--seed 1] [--superint PATH] [--verbose]
+    python crosscheck.py [--cases 400] [--seed 1] [--jobs N] [--superint PATH] [--verbose]
 
 For each case the script draws two random expressions F and G in one of four small systems (two
 radicals; declared denominators; two angles with complex exponentials; Poisson variables of
@@ -71,9 +71,11 @@ summary line and exits nonzero if any case failed. It needs only SymPy (`run.sh`
 into `.venv`: `benches/peers/crosscheck.sh` does that and builds superint first).
 """
 import argparse
+import functools
 import itertools
 import json
 import math
+import multiprocessing
 import os
 import random
 import re
@@ -960,15 +962,145 @@ ALONE = {
 }
 
 
+class Outcome:
+    """What one case came to: its count ("compared", "refused", "too long for SymPy" or
+    "failed"), the kind it is counted under when compared, and the lines it prints."""
+
+    def __init__(self):
+        self.count, self.kind, self.lines = None, None, []
+
+    def end(self, count, kind=None, line=None):
+        self.count, self.kind = count, kind
+        if line is not None:
+            self.lines.append(line)
+        return self
+
+
+def run_case(n, seed, superint, systems, tmp, verbose):
+    """Case `n`: its own random generator (from the seed and `n`, so that a case is the same
+    whatever the number of jobs) and its own directory for the files it writes."""
+    rng = random.Random(f"{seed}:{n}")
+    case_dir = os.path.join(tmp, f"case-{n}")
+    os.mkdir(case_dir)
+    outcome = Outcome()
+
+    def fail(case, why):
+        return outcome.end("failed", line=f"FAILED ({case}): {why}")
+
+    def tally(status, message, case, kind):
+        """A rank's or a search's outcome, `kind` the system's name or `searches`."""
+        line = f"{status} ({case}): {message}" if verbose else None
+        if status == "ok":
+            return outcome.end("compared", kind, line)
+        if status == "refused":
+            return outcome.end("refused", line=line)
+        return fail(case, message)
+
+    system = rng.choice(systems)
+    f_text, g_text = random_expression(rng, system), random_expression(rng, system)
+    op = rng.choice(["bracket", "bracket", "bracket at a condition", "product", "power",
+                     "rank", "search", "search with an angle", "search of a top",
+                     "search with a radical", "search with a denominator", "closure",
+                     "closure at a resonance"])
+    if op in ALONE:
+        run, kind = ALONE[op]
+        status, message = run(superint, case_dir, rng)
+        return tally(status, message, f"case {n}: a {op}", kind)
+    if op == "rank":
+        # Two to four functions, some of them functions of the others.
+        texts = [f_text, g_text] + rng.sample(
+            [f"({f_text})*({g_text})", f"({f_text})^2 - 3*({g_text})",
+             random_expression(rng, system)], rng.randint(0, 2))
+        status, message = rank_case(superint, system, texts, rng)
+        return tally(status, message, f"case {n}, {system.name}: the rank of {texts}",
+                     system.name)
+    when = []
+    if op.startswith("bracket"):
+        given = f"{{{f_text}, {g_text}}}"
+        if op == "bracket at a condition":
+            variable, value = rng.choice(system.conditions)
+            when = ["--when", f"{variable} = {value}"]
+        status, out = run_superint(superint, ["bracket", system.file, f_text, g_text] + when)
+    elif op == "product":
+        given = f"({f_text})*({g_text})"
+        status, out = run_superint(superint, ["expand", system.file, given])
+    else:
+        power = rng.randint(2, 3)
+        given = f"({f_text})^{power}"
+        status, out = run_superint(superint, ["expand", system.file, given])
+    case = f"case {n}, {system.name}: {given}"
+    if status == "crashed":
+        return fail(case, out)
+    if status == "refused":
+        return outcome.end("refused", line=f"refused ({case}): {out}" if verbose else None)
+    try:
+        ours = system.read(out)
+    except RecursionError:
+        # Python's compiler nests a long sum one level a term: SymPy cannot read it.
+        return outcome.end("too long for SymPy", line=(
+            f"too long for SymPy ({case}): {len(out)} characters" if verbose else None))
+    f, g = system.read(f_text), system.read(g_text)
+    if op.startswith("bracket"):
+        theirs = system.bracket(f, g)
+        if when:
+            variable, value = when[1].split(" = ")
+            theirs = theirs.subs(system.read(variable), system.read(value))
+    else:
+        theirs = system.read(given)
+    # 1. superint's printed result equals SymPy's at exact points.
+    points = rng.sample(system.points, min(3, len(system.points)))
+    for point in points:
+        a, b = value_at(ours, system, point), value_at(theirs, system, point)
+        if a != b:
+            return fail(case, f"superint printed {out}\n  at {point}: {a}, SymPy {b}")
+    # 2. SymPy's result, as text, is a zero difference for superint; 3. a wrong one is
+    # refuted.
+    reference = superint_text(theirs)
+    difference = f"{given} - ({reference})"
+    status, zero = run_superint(superint, ["expand", system.file, difference] + when)
+    if status != "ok" or zero != "0":
+        return fail(case, f"{given} − (SymPy's {reference}) is {zero} ({status}), not 0")
+    # A wrong term of the system's atoms, or a constant where the condition cannot be
+    # substituted into that atom (`1/I2` at `I2 = I1 + 1`).
+    for extra in (f"({rng.choice(system.atoms)})", "1"):
+        wrong = f"{difference} + {rng.choice(['1/7', '2', '-3/2'])}*{extra}"
+        status, residual = run_superint(superint, ["expand", system.file, wrong] + when)
+        if status != "refused":
+            break
+    if status != "ok" or residual == "0":
+        return fail(case, f"a wrong result was not refuted: {wrong} gave {residual} ({status})")
+    # 4. The same as a user states it: F and G as functions of the file, the right claim
+    # proved and the wrong one refuted, as expected.
+    named = {"bracket": "{F, G}", "bracket at a condition": "{F, G}",
+             "product": "F*G", "power": f"F^{power}" if op == "power" else ""}[op]
+    condition = f'when = "{when[1]}"\n' if when else ""
+    claims = (f'{system.toml}\n[[function]]\nname = "F"\nvalue = "{f_text}"\n'
+              f'[[function]]\nname = "G"\nvalue = "{g_text}"\n'
+              f'[[claim]]\nid = "right"\nclaim = "{named} = {reference}"\n{condition}'
+              f'[[claim]]\nid = "wrong"\nclaim = "{named} = {reference} + '
+              f'{wrong[len(difference) + 3:]}"\n{condition}expect = "refuted"\n')
+    claims_file = os.path.join(case_dir, "claims.toml")
+    with open(claims_file, "w") as f_out:
+        f_out.write(claims)
+    r = subprocess.run([superint, "check", claims_file, "--no-timings"],
+                       capture_output=True, text=True, timeout=120)
+    if r.returncode != 0 or "all as expected" not in r.stdout:
+        return fail(case, f"the claims were not as expected (exit code {r.returncode}):\n"
+                          f"{claims}\n{r.stdout[-800:]}{r.stderr[:800]}")
+    return outcome.end("compared", system.name, f"agreed ({case})" if verbose else None)
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     ap.add_argument("--cases", type=int, default=400)
     ap.add_argument("--seed", type=int, default=1)
     ap.add_argument("--superint", default=os.environ.get(
         "SUPERINT_BIN", os.path.join(ROOT, "target", "release", "superint")))
+    ap.add_argument("--jobs", type=int, default=os.cpu_count() or 1,
+                    help="cases run at once, each in its own process (default: the cores)")
     ap.add_argument("--verbose", action="store_true")
     args = ap.parse_args()
-    rng = random.Random(args.seed)
+    rng = random.Random(args.seed)  # the systems; each case has its own
     systems = [radicals_system(), denominators_system(rng), angles_system(rng), poisson_system()]
     tmp = tempfile.mkdtemp(prefix="superint-crosscheck-")
     for system in systems:
@@ -980,133 +1112,17 @@ def main():
     by_kind = {s.name: 0 for s in systems}
     by_kind.update((kind, 0) for _, kind in ALONE.values())
 
-    def fail(case, why):
-        counts["failed"] += 1
-        print(f"FAILED ({case}): {why}")
-
-    def tally(status, message, case, kind):
-        """Counts a rank's or a search's outcome, `kind` the system's name or `searches`."""
-        if status == "ok":
-            counts["compared"] += 1
-            by_kind[kind] += 1
-        elif status == "refused":
-            counts["refused"] += 1
-        else:
-            fail(case, message)
-        if args.verbose:
-            print(f"{status} ({case}): {message}")
-
-    for n in range(args.cases):
-        system = rng.choice(systems)
-        f_text, g_text = random_expression(rng, system), random_expression(rng, system)
-        op = rng.choice(["bracket", "bracket", "bracket at a condition", "product", "power",
-                         "rank", "search", "search with an angle", "search of a top",
-                         "search with a radical", "search with a denominator", "closure",
-                         "closure at a resonance"])
-        if op in ALONE:
-            run, kind = ALONE[op]
-            status, message = run(args.superint, tmp, rng)
-            tally(status, message, f"case {n}: a {op}", kind)
-            continue
-        if op == "rank":
-            # Two to four functions, some of them functions of the others.
-            texts = [f_text, g_text] + rng.sample(
-                [f"({f_text})*({g_text})", f"({f_text})^2 - 3*({g_text})",
-                 random_expression(rng, system)], rng.randint(0, 2))
-            status, message = rank_case(args.superint, system, texts, rng)
-            tally(status, message, f"case {n}, {system.name}: the rank of {texts}", system.name)
-            continue
-        when = []
-        if op.startswith("bracket"):
-            given = f"{{{f_text}, {g_text}}}"
-            if op == "bracket at a condition":
-                variable, value = rng.choice(system.conditions)
-                when = ["--when", f"{variable} = {value}"]
-            status, out = run_superint(args.superint,
-                                       ["bracket", system.file, f_text, g_text] + when)
-        elif op == "product":
-            given = f"({f_text})*({g_text})"
-            status, out = run_superint(args.superint, ["expand", system.file, given])
-        else:
-            power = rng.randint(2, 3)
-            given = f"({f_text})^{power}"
-            status, out = run_superint(args.superint, ["expand", system.file, given])
-        case = f"case {n}, {system.name}: {given}"
-        if status == "crashed":
-            fail(case, out)
-            continue
-        if status == "refused":
-            counts["refused"] += 1
-            if args.verbose:
-                print(f"refused ({case}): {out}")
-            continue
-        try:
-            ours = system.read(out)
-        except RecursionError:
-            # Python's compiler nests a long sum one level a term: SymPy cannot read it.
-            counts["too long for SymPy"] += 1
-            if args.verbose:
-                print(f"too long for SymPy ({case}): {len(out)} characters")
-            continue
-        f, g = system.read(f_text), system.read(g_text)
-        if op.startswith("bracket"):
-            theirs = system.bracket(f, g)
-            if when:
-                variable, value = when[1].split(" = ")
-                theirs = theirs.subs(system.read(variable), system.read(value))
-        else:
-            theirs = system.read(given)
-        # 1. superint's printed result equals SymPy's at exact points.
-        points = rng.sample(system.points, min(3, len(system.points)))
-        for point in points:
-            a, b = value_at(ours, system, point), value_at(theirs, system, point)
-            if a != b:
-                fail(case, f"superint printed {out}\n  at {point}: {a}, SymPy {b}")
-                break
-        else:
-            # 2. SymPy's result, as text, is a zero difference for superint; 3. a wrong one is
-            # refuted.
-            reference = superint_text(theirs)
-            difference = f"{given} - ({reference})"
-            status, zero = run_superint(args.superint,
-                                        ["expand", system.file, difference] + when)
-            if status != "ok" or zero != "0":
-                fail(case, f"{given} − (SymPy's {reference}) is {zero} ({status}), not 0")
-                continue
-            # A wrong term of the system's atoms, or a constant where the condition cannot
-            # be substituted into that atom (`1/I2` at `I2 = I1 + 1`).
-            for extra in (f"({rng.choice(system.atoms)})", "1"):
-                wrong = f"{difference} + {rng.choice(['1/7', '2', '-3/2'])}*{extra}"
-                status, residual = run_superint(args.superint,
-                                                ["expand", system.file, wrong] + when)
-                if status != "refused":
-                    break
-            if status != "ok" or residual == "0":
-                fail(case, f"a wrong result was not refuted: {wrong} gave {residual} ({status})")
-                continue
-            # 4. The same as a user states it: F and G as functions of the file, the right
-            # claim proved and the wrong one refuted, as expected.
-            named = {"bracket": "{F, G}", "bracket at a condition": "{F, G}",
-                     "product": "F*G", "power": f"F^{power}" if op == "power" else ""}[op]
-            condition = f'when = "{when[1]}"\n' if when else ""
-            claims = (f'{system.toml}\n[[function]]\nname = "F"\nvalue = "{f_text}"\n'
-                      f'[[function]]\nname = "G"\nvalue = "{g_text}"\n'
-                      f'[[claim]]\nid = "right"\nclaim = "{named} = {reference}"\n{condition}'
-                      f'[[claim]]\nid = "wrong"\nclaim = "{named} = {reference} + '
-                      f'{wrong[len(difference) + 3:]}"\n{condition}expect = "refuted"\n')
-            claims_file = os.path.join(tmp, "claims.toml")
-            with open(claims_file, "w") as f_out:
-                f_out.write(claims)
-            r = subprocess.run([args.superint, "check", claims_file, "--no-timings"],
-                               capture_output=True, text=True, timeout=120)
-            if r.returncode != 0 or "all as expected" not in r.stdout:
-                fail(case, f"the claims were not as expected (exit code {r.returncode}):\n"
-                           f"{claims}\n{r.stdout[-800:]}{r.stderr[:800]}")
-                continue
-            counts["compared"] += 1
-            by_kind[system.name] += 1
-            if args.verbose:
-                print(f"agreed ({case})")
+    # Forked workers inherit the systems; each case draws from its own generator, so the
+    # cases and the summary are the same for any number of jobs, printed in case order.
+    work = functools.partial(run_case, seed=args.seed, superint=args.superint,
+                             systems=systems, tmp=tmp, verbose=args.verbose)
+    with multiprocessing.get_context("fork").Pool(args.jobs) as pool:
+        for outcome in pool.imap(work, range(args.cases)):
+            counts[outcome.count] += 1
+            if outcome.count == "compared":
+                by_kind[outcome.kind] += 1
+            for line in outcome.lines:
+                print(line, flush=True)
     systems_line = ", ".join(f"{k} {v}" for k, v in by_kind.items())
     print(f"crosscheck against SymPy {sp.__version__}: {args.cases} cases (seed {args.seed}): "
           f"{counts['compared']} agreed ({systems_line}), {counts['refused']} refused with a "
