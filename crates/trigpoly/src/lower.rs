@@ -452,6 +452,14 @@ impl<C: Coefficient> Lower<'_, C> {
             {
                 Ok(x)
             }
+            // An exponent written as a power may be long: its size, not its digits.
+            _ if q.numer().bits() > 256 => Err(ParseError::new(
+                e.span,
+                format!(
+                    "the exponent, of {} bits, is past the limit of {limit}",
+                    q.numer().bits()
+                ),
+            )),
             _ => Err(ParseError::new(
                 e.span,
                 format!("the exponent {q} is past the limit of {limit}"),
@@ -665,9 +673,9 @@ impl<C: Coefficient> Lower<'_, C> {
     }
 
     /// Reads `e` as a linear form over the angles with Gaussian-integer coefficients: integers,
-    /// `i` and angles combined by `+`, `−`, products in which one side is a constant, and
-    /// nonnegative integer powers of constants. What
-    /// does not fit is refused by `bad` at its span.
+    /// `i` and angles combined by `+`, `−`, products and quotients in which one side is a
+    /// constant (the constants' quotients and integer powers may be fractions, the angles'
+    /// multiples not). What does not fit is refused by `bad` at its span.
     fn linear_form(
         &self,
         e: &Expr,
@@ -731,17 +739,26 @@ impl<C: Coefficient> Lower<'_, C> {
                     (Constant(_), Angles(_)) => return Err(bad(a.span)),
                 }
             }
-            ExprKind::Mul(a, b) => self.product_form(a, b, bad)?,
-            // A constant written as a power, `2^3` in `cos(2^3*θ)`: a Gaussian integer to a
-            // nonnegative integer exponent within the degree limit, so that the form's
-            // coefficients stay Gaussian integers; its size is bounded as any power's.
+            ExprKind::Mul(a, b) => integral(self.product_form(a, b, bad)?, e, bad)?,
+            // A quotient by a constant, `4/2` in `cos(4/2*θ)` or `(4*θ)/2`; the multiples it
+            // leaves must be integers (`θ/2` is refused, even inside `2*(θ/2)`).
+            ExprKind::Div(a, b) => {
+                let Constant(divisor) = self.linear_form(b, bad)? else {
+                    return Err(bad(b.span));
+                };
+                let inverse = divisor
+                    .try_inv()
+                    .ok_or_else(|| ParseError::new(b.span, "division by zero"))?;
+                integral(self.linear_form(a, bad)?.scale(&inverse), e, bad)?
+            }
+            // A constant written as a power, `2^3` in `cos(2^3*θ)`: a constant to an integer
+            // exponent within the degree limit; its size is bounded as any power's.
             ExprKind::Pow(a, b) => {
                 let Constant(base) = self.linear_form(a, bad)? else {
                     return Err(bad(e.span));
                 };
-                let exp = match self.exponent(b)? {
-                    Exponent::Integer(n) if n >= 0 => n,
-                    _ => return Err(bad(e.span)),
+                let Exponent::Integer(exp) = self.exponent(b)? else {
+                    return Err(bad(e.span));
                 };
                 let power = Poly::constant(self.vars, base)
                     .checked_pow(exp)
@@ -755,7 +772,7 @@ impl<C: Coefficient> Lower<'_, C> {
             // `i(θ − φ)`: a name before parentheses multiplies them, as the echo writes it.
             ExprKind::Call(name, name_span, args) if args.len() == 1 && !self.is_function(name) => {
                 let factor = Expr::new(ExprKind::Name(name.clone()), *name_span);
-                self.product_form(&factor, &args[0], bad)?
+                integral(self.product_form(&factor, &args[0], bad)?, e, bad)?
             }
             _ => return Err(bad(e.span)),
         };
@@ -763,8 +780,27 @@ impl<C: Coefficient> Lower<'_, C> {
     }
 }
 
+/// `form`, the linear form of the product or quotient `e`, when its multiples of the angles
+/// are Gaussian integers (its constants may be any); else refused by `bad` at `e`: `θ/2`.
+fn integral(
+    form: LinearForm,
+    e: &Expr,
+    bad: &dyn Fn(Span) -> ParseError,
+) -> Result<LinearForm, ParseError> {
+    match &form {
+        LinearForm::Angles(multiples)
+            if !multiples
+                .iter()
+                .all(|(_, c)| c.re.is_integer() && c.im.is_integer()) =>
+        {
+            Err(bad(e.span))
+        }
+        _ => Ok(form),
+    }
+}
+
 /// An argument of `cos`, `sin` or `exp` read as a linear form: a constant, or `Σ c_j θ_j` over
-/// the angles (each angle once).
+/// the angles (each angle once) with Gaussian-integer multiples.
 enum LinearForm {
     Constant(GaussianRational),
     Angles(Vec<(Var, GaussianRational)>),

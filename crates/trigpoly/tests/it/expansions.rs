@@ -371,9 +371,9 @@ fn angle_arguments_are_integer_combinations_however_written() {
 }
 
 /// A multiple of an angle may be an integer constant written as an expression: powers of
-/// integers (and of `i`) to nonnegative integer exponents, sums, products and negations, in
-/// parentheses or not, on either side of the angle. Each has the normal form of the multiple
-/// written out.
+/// integers (and of `i`) to integer exponents, sums, products, quotients and negations, in
+/// parentheses or not, on either side of the angle, so long as the angles' multiples come out
+/// integers. Each has the normal form of the multiple written out.
 #[test]
 fn angle_multiples_written_as_integer_constants() {
     let vars = phase_space();
@@ -390,6 +390,12 @@ fn angle_multiples_written_as_integer_constants() {
         ("exp(i^3*theta)", "exp(-i*theta)"),
         ("exp((1 + i)^2*phi)", "exp(2*i*phi)"),
         ("cos(2^(3 - 1)*theta)", "cos(4*theta)"),
+        ("cos(4/2*theta)", "cos(2*theta)"),
+        ("cos((4*theta)/2 - phi)", "cos(2*theta - phi)"),
+        ("sin(theta*6/3)", "sin(2*theta)"),
+        ("sin(2^(-1)*4*theta)", "sin(2*theta)"),
+        ("exp(i*(1/2 + 1/2)*phi)", "exp(i*phi)"),
+        ("exp((1 + i)^2/2*theta)", "exp(i*theta)"),
     ];
     for (written, expanded) in cases {
         identity!(vars, written => expanded);

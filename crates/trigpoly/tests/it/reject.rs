@@ -288,7 +288,24 @@ fn cases() -> Vec<Case> {
             "sin takes an integer combination of angles, such as sin(2*theta - phi)",
             (1, 5),
             "line 1, column 5: sin takes an integer combination of angles, such as sin(2*theta - phi)\n  \
-             sin(1/2*theta)\n      ^^^",
+             sin(1/2*theta)\n      ^^^^^^^^^",
+        ),
+        // A quotient in a multiple: by zero, and of an angle that the product after it
+        // would make whole again (each quotient must leave integer multiples).
+        case(
+            Qi,
+            "cos(theta/(2 - 2))",
+            "division by zero",
+            (1, 11),
+            "line 1, column 11: division by zero\n  cos(theta/(2 - 2))\n            ^^^^^^^",
+        ),
+        case(
+            Qi,
+            "cos(2*(theta/2))",
+            "cos takes an integer combination of angles, such as cos(2*theta - phi)",
+            (1, 7),
+            "line 1, column 7: cos takes an integer combination of angles, such as cos(2*theta - phi)\n  \
+             cos(2*(theta/2))\n        ^^^^^^^^^",
         ),
         // A power in a multiple: of an integer to a negative exponent (not an integer), of
         // an angle, past the degree limit, and one whose value is past it.
@@ -298,7 +315,7 @@ fn cases() -> Vec<Case> {
             "cos takes an integer combination of angles, such as cos(2*theta - phi)",
             (1, 5),
             "line 1, column 5: cos takes an integer combination of angles, such as cos(2*theta - phi)\n  \
-             cos(2^(-1)*theta)\n      ^^^^^^",
+             cos(2^(-1)*theta)\n      ^^^^^^^^^^^^",
         ),
         case(
             Qi,
@@ -323,6 +340,15 @@ fn cases() -> Vec<Case> {
             (1, 5),
             "line 1, column 5: the multiple 1000000000000000000000000000000 of θ is past the \
              limit of 1000\n  cos(10^30*theta)\n      ^^^^^^^^^^^",
+        ),
+        // An exponent too long to write, likewise.
+        case(
+            Qi,
+            "x^(2^1000)",
+            "the exponent, of 1001 bits, is past the limit of 1000",
+            (1, 3),
+            "line 1, column 3: the exponent, of 1001 bits, is past the limit of 1000\n  \
+             x^(2^1000)\n    ^^^^^^^^",
         ),
         // A multiple too long to write is said by its size.
         case(
