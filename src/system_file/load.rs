@@ -701,28 +701,30 @@ impl<'a> Builder<'a> {
             let value = Expr::parse(&vars, &text.value)
                 .map_err(|e| super::scope::expression_error(&self.source, &text, &e))?;
             let refuse = |why: String| Err(self.error(ErrorKind::Expression, d.span(), why));
+            // A long denominator is shown by its first terms and its size.
+            let shown = value.brief_excerpt();
             if value.is_zero() {
                 return refuse("a denominator cannot be 0".into());
             }
             if value.is_monomial() {
                 return refuse(format!(
-                    "{value} is a single term: division by it is exact already, so declare \
+                    "{shown} is a single term: division by it is exact already, so declare \
                      only sums (such as \"x - y\") as denominators"
                 ));
             }
             if value.conj() != value {
-                return refuse(format!("the denominator {value} is not real"));
+                return refuse(format!("the denominator {shown} is not real"));
             }
             if vars.radicals().any(|r| value.contains(r)) {
                 return refuse(format!(
-                    "the denominator {value} has a radical in it: a denominator is a polynomial \
-                     in the coordinates, momenta and parameters; divide by {value} where it \
+                    "the denominator {shown} has a radical in it: a denominator is a polynomial \
+                     in the coordinates, momenta and parameters; divide by {shown} where it \
                      stands instead, which superint does through its conjugates"
                 ));
             }
             if let Some(atom) = vars.denominators().find(|&a| value.contains(a)) {
                 return refuse(format!(
-                    "the denominator {value} divides by {}, declared before it: a denominator \
+                    "the denominator {shown} divides by {}, declared before it: a denominator \
                      is a polynomial in the coordinates, momenta and parameters; declare its \
                      numerator instead",
                     vars.variable(atom).unicode()
@@ -730,7 +732,7 @@ impl<'a> Builder<'a> {
             }
             if Expr::one(&vars).checked_div(&value).is_ok() {
                 return refuse(format!(
-                    "{value} is a product of the denominators declared before it and the \
+                    "{shown} is a product of the denominators declared before it and the \
                      radicands (times a term): division by it is exact already"
                 ));
             }

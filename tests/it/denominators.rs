@@ -125,6 +125,13 @@ fn denominators_bad_declarations_are_refused_at_their_place() {
             "[\"i*x + y\"]",
             "bad.toml:6:17: the denominator ix + y is not real",
         ),
+        // A long one is shown by its first terms and its size.
+        (
+            "",
+            "[\"i*(x + y + 1)^20\"]",
+            "bad.toml:6:17: the denominator ix²⁰ + 20ix¹⁹y + 20ix¹⁹ + 190ix¹⁸y² + 380ix¹⁸y + \
+             190ix¹⁸ + 1140ix¹⁷y³ + … (a polynomial of 231 terms) is not real\n",
+        ),
     ];
     for (h, list, expected) in cases {
         let mut text = with(list);
