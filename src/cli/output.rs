@@ -34,7 +34,7 @@ impl From<FormatArg> for Format {
 /// The output arguments, accepted before or after the subcommand.
 #[derive(Debug, Args)]
 pub struct OutputArgs {
-    /// Output format.
+    /// Output format (`plot` prints text, markdown or JSON, and `bench` text or JSON).
     #[arg(long, value_enum, default_value_t = FormatArg::Text, global = true)]
     format: FormatArg,
     /// Leave timings out, so that the output is the same on every run.

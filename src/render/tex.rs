@@ -335,6 +335,7 @@ fn char_math(c: char) -> Option<String> {
 /// assert_eq!(math("{L, G1} = −G2"), r"\{L, G_{1}\} = -G_{2}");
 /// assert_eq!(math("ṗ_θ = 0"), r"\dot{p}_{\theta } = 0");
 /// assert_eq!(math("K̄_{m,n} for all m"), r"\bar{K}_{m,n}\ \text{for all}\ m");
+/// assert_eq!(math("x中"), r"x\mbox{\texttt{U+4E2D}}");
 /// ```
 pub fn math(s: &str) -> String {
     translate(s, &Names::default())
@@ -1074,8 +1075,14 @@ fn text_letter(c: char) -> Option<String> {
     })
 }
 
+/// A character that LaTeX cannot set from ASCII, written by its code point as typewriter
+/// text, which pdflatex sets in any mode: `中` → `\mbox{\texttt{U+4E2D}}`.
+fn code_point(c: char) -> String {
+    format!(r"\mbox{{\texttt{{U+{:04X}}}}}", u32::from(c))
+}
+
 fn push_char(out: &mut String, c: char, accent: Option<&'static str>) {
-    let body = char_math(c).unwrap_or_else(|| "?".into());
+    let body = char_math(c).unwrap_or_else(|| code_point(c));
     match accent {
         Some(a) => out.push_str(&format!(r"\{a}{{{body}}}")),
         None => push_cmd(out, &body),

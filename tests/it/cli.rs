@@ -237,13 +237,13 @@ pub(crate) fn compile_within(doc: &str, slack_pt: f64) {
 
 /// A description's formulas, between backticks, compile whatever characters they hold: 60
 /// formulas of up to 30 characters of the notation (script signs and digits, accents, braces,
-/// primes, TeX's special characters), and 160 of up to 8 scripts, groups and names, drawn by a
-/// fixed linear congruential generator. Before,
-/// 13 of 140 such formulas made pdflatex fail (a double superscript, a script sign at the end,
-/// `$$`, a backslash that escaped the closing `$`).
+/// primes, TeX's special characters, and two that LaTeX has no letter for, written by their
+/// code points), and 160 of up to 8 scripts, groups and names, drawn by a fixed linear
+/// congruential generator. Before, 13 of 140 such formulas made pdflatex fail (a double
+/// superscript, a script sign at the end, `$$`, a backslash that escaped the closing `$`).
 #[test]
 fn a_description_of_any_characters_compiles() {
-    let alphabet: Vec<char> = "xpG12 _^{}()/'ωθħℓ²⁻¹₁₂\u{304}\u{307}−=,Zacosein$%&~#|<>"
+    let alphabet: Vec<char> = "xpG12 _^{}()/'ωθħℓ²⁻¹₁₂\u{304}\u{307}−=,Zacosein$%&~#|<>中🙂"
         .chars()
         .collect();
     let mut state: u64 = 0x5eed;
@@ -840,6 +840,11 @@ fn cli_bench_prints_seconds_and_terms_last() {
     assert_eq!(terms(&one), terms(&two));
     assert!(one.contains("zeros: 18"), "{one}");
     run(&["bench", "W9", "3"], 2);
+    // The formats it does not print are refused, as its help says.
+    let latex = superint(&["bench", "W1", "3", "--format", "latex"]);
+    assert_eq!(latex.status.code(), Some(2));
+    assert!(stderr(&latex).contains("bench prints text or json, not latex"));
+    assert!(run(&["bench", "--help"], 0).contains("and `bench` text or JSON"));
 }
 
 /// The harmonic rotor at `M = ω = I = 1` from `(x, y) = (1, 0)` with momentum `(0, 1/2)`:
