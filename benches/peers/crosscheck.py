@@ -773,7 +773,10 @@ def check_closure(doc, names, texts, degree, model):
         text = entries[i][j]["ascii"]
         theirs = model.at(model.bracket(defined[i], defined[j]))
         pair = f"{{{names[i]}, {names[j]}}}"
-        if text == "*":
+        if text is None:  # `*`: no expression, so one of the brackets said to be outside
+            if [names[i], names[j]] not in found["outside"] and \
+                    [names[j], names[i]] not in found["outside"]:
+                return f"{pair} has no expression in the table, and is not said to be outside"
             outside += 1
             if rank_of(expanded + [at_values(theirs)], space) == span:
                 return f"{pair} is marked outside, but SymPy writes it in the monomials"

@@ -48,7 +48,8 @@
 //!   "tables": [ { "section", "caption" (plain text, as every title and caption: "{A, B} for
 //!                 the harmonic rotor (row A, column B)"), "functions": [ascii names],
 //!                 "display": [names],
-//!                 "entries": [[ { "text", "ascii", "latex" } ]],
+//!                 "entries": [[ { "text", "ascii", "latex" } ]]   ("ascii" null where the
+//!                          entry is no expression: `*`, outside a closure's table, or `?`),
 //!                 "excerpts": [ { "row", "column", "shown_monomials", "monomials" } ]   (the
 //!                          entries of more monomials outside the angles than
 //!                          `Options::shown_monomials`: each is then every term of its first
@@ -100,7 +101,7 @@ use crate::report::{
     ClaimKind, ClaimOutcome, ClaimResult, ClosureFacts, Entry, Equations, Facts, ParameterFacts,
     ProofResult, RankResult, Report, SearchFacts, TableResult, TowerResult,
 };
-use brackets::UpperBound;
+use brackets::{Entry as TableEntry, UpperBound};
 
 /// The schema's name and version.
 pub const SCHEMA: &str = "superint-report/1";
@@ -273,7 +274,11 @@ fn table(t: &TableResult, section: u32) -> Value {
         "display": t.table.display,
         "entries": t.table.entries.iter().map(|row| row.iter().map(|e| json!({
             "text": e.render(Style::Unicode),
-            "ascii": e.render(Style::Ascii),
+            // Only an expression reads back: not `*` (outside) or `?` (undecided).
+            "ascii": match e {
+                TableEntry::Outside | TableEntry::Undecided(_) => Value::Null,
+                _ => e.render(Style::Ascii).into(),
+            },
             "latex": e.render(Style::Latex),
         })).collect::<Vec<_>>()).collect::<Vec<_>>(),
         "excerpts": t.excerpts.iter().map(|((a, b), e)| json!({

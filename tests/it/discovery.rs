@@ -1843,6 +1843,13 @@ fn closure_json_says_what_closes_and_what_does_not() {
     assert_eq!(c["generators"], serde_json::json!(["H", "Hx", "L"]));
     assert_eq!(c["closes"], false);
     assert_eq!(c["outside"], serde_json::json!([["H", "L"], ["Hx", "L"]]));
+    // Those entries, `*` in the table, have no ASCII form to read back; the rest have one.
+    let entries = &v["tables"][0]["entries"];
+    for (a, b) in [(0, 2), (2, 0), (1, 2), (2, 1)] {
+        assert_eq!(entries[a][b]["text"], "*");
+        assert_eq!(entries[a][b]["ascii"], serde_json::Value::Null);
+    }
+    assert_eq!(entries[0][1]["ascii"], "0");
     let (v, _) = json_and_text(&[
         "closure",
         "systems/smorodinsky-winternitz-i.toml",
