@@ -698,6 +698,8 @@ pub(super) fn real_entries(
             }
         }
     }
+    // A search holds every column at once: no room to spare in them.
+    col.shrink_to_fit();
     Some(col)
 }
 
