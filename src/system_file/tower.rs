@@ -554,7 +554,8 @@ impl ShownFamily {
             the_system: file.the_name(),
             ladder: format!("{} = {}", self.kmn, self.value),
             max,
-            checked: (max * max) as usize,
+            // `1 ≤ m, n ≤ max` holds no pair when `max < 1`.
+            checked: pairs(max),
             claim: ClaimResult::derived(
                 &format!("{}-tower", self.name),
                 &format!("{} for 1 ≤ {m}, {n} ≤ {max}", self.identity()),
@@ -642,6 +643,12 @@ fn tower_family(file: &LoadedSystem, family: Option<&str>) -> Result<usize, File
     })
 }
 
+/// How many pairs `(a, b)` have `1 ≤ a, b ≤ max`: `max²`, and none when `max < 1`.
+fn pairs(max: i64) -> usize {
+    let side = usize::try_from(max.max(0)).unwrap_or(usize::MAX);
+    side.saturating_mul(side)
+}
+
 /// The pairs `(a, b)`, `1 ≤ a, b ≤ max`, for which `{K_{a,b}, H} = λ_{a,b} K_{a,b}` fails
 /// (after `when`), each pair reported to `progress` as it is checked.
 fn tower_failures(
@@ -653,7 +660,7 @@ fn tower_failures(
 ) -> Result<Vec<(i64, i64)>, FileError> {
     let f = &file.families[k];
     let at = |e: &brackets::EngineError| engine_error(&f.source, f.span.clone(), e);
-    let total = (max * max) as usize;
+    let total = pairs(max);
     let mut failures = Vec::new();
     let mut done = 0;
     for a in 1..=max {

@@ -89,6 +89,25 @@ fn family_tower_in_own_names() {
     assert!(!wrong.all_proved());
 }
 
+/// A tower of bound `N < 1` checks no bracket (`1 ≤ a, b ≤ N` holds no pair), and says so:
+/// `N = −3` reported nine brackets checked, none of which was.
+#[test]
+fn a_tower_below_one_checks_nothing() {
+    let rotor = own_rotor_with_tower();
+    for max in [0, -3] {
+        let mut calls = 0;
+        let report =
+            family_tower_report_with_progress(&rotor, Some("R"), max, None, &mut |_, _| calls += 1)
+                .unwrap();
+        let tower = report.tower().unwrap();
+        assert_eq!(
+            (tower.checked, tower.failures.len(), calls),
+            (0, 0, 0),
+            "{max}"
+        );
+    }
+}
+
 /// The tower at a resonance: `{R_{1,1}, H} = 0` at `p_φ = Jk`, a claim added in code and
 /// proved; `{R_{2,1}, H} = 0` there is refuted, as it says it expects, with the residual
 /// `{R_{2,1}, H} = ik R_{2,1}` at `Ω = k`.
