@@ -43,13 +43,35 @@ impl Matrix {
     }
 
     /// Entry `(r, c)`.
+    ///
+    /// # Panics
+    ///
+    /// If `r` or `c` is out of range (a column past the last would read the next row's
+    /// entry).
     pub fn get(&self, r: usize, c: usize) -> &Q {
-        &self.data[r * self.cols + c]
+        &self.data[self.index(r, c)]
     }
 
     /// Sets entry `(r, c)`.
+    ///
+    /// # Panics
+    ///
+    /// If `r` or `c` is out of range, as [`Matrix::get`].
     pub fn set(&mut self, r: usize, c: usize, v: Q) {
-        self.data[r * self.cols + c] = v;
+        let k = self.index(r, c);
+        self.data[k] = v;
+    }
+
+    /// Where entry `(r, c)` is stored.
+    #[track_caller]
+    fn index(&self, r: usize, c: usize) -> usize {
+        assert!(
+            r < self.rows && c < self.cols,
+            "entry ({r}, {c}) of a {} × {} matrix",
+            self.rows,
+            self.cols
+        );
+        r * self.cols + c
     }
 
     /// Gauss–Jordan elimination (exact).
@@ -108,9 +130,19 @@ impl Matrix {
     }
 
     /// One solution of `self · x = b` (free unknowns set to zero), or `None` if inconsistent.
+    ///
+    /// # Panics
+    ///
+    /// If `b` does not have one entry per row.
     pub fn solve(&self, b: &[Q]) -> Option<Vec<Q>> {
+        assert_eq!(
+            b.len(),
+            self.rows,
+            "the right-hand side of a system of {} equations",
+            self.rows
+        );
         let mut aug = Matrix::zeros(self.rows, self.cols + 1);
-        for (i, bi) in b.iter().enumerate().take(self.rows) {
+        for (i, bi) in b.iter().enumerate() {
             for j in 0..self.cols {
                 aug.set(i, j, self.get(i, j).clone());
             }
@@ -128,6 +160,10 @@ impl Matrix {
     }
 
     /// The determinant of a square matrix.
+    ///
+    /// # Panics
+    ///
+    /// If the matrix is not square.
     pub fn determinant(&self) -> Q {
         assert_eq!(self.rows, self.cols, "determinant of a non-square matrix");
         let mut m = self.clone();
@@ -185,5 +221,25 @@ mod tests {
             assert_eq!(lhs, [q(6), q(12), q(2)][i]);
         }
         assert!(m.solve(&[q(1), q(1), q(1)]).is_none());
+    }
+
+    /// An entry out of range is refused: `(0, 3)` of a 3 × 3 matrix read `(1, 0)`.
+    #[test]
+    #[should_panic(expected = "entry (0, 3) of a 3 × 3 matrix")]
+    fn entry_past_the_last_column() {
+        let mut m = Matrix::zeros(3, 3);
+        m.set(1, 0, q(5));
+        m.get(0, 3);
+    }
+
+    /// A right-hand side shorter than the rows is refused: the missing rows' equations were
+    /// dropped, and `x = 1, y = 0` "solved" `x = 1, x = 2`.
+    #[test]
+    #[should_panic(expected = "the right-hand side of a system of 2 equations")]
+    fn solve_takes_one_value_per_row() {
+        let mut m = Matrix::zeros(2, 2);
+        m.set(0, 0, q(1));
+        m.set(1, 0, q(1));
+        m.solve(&[q(1)]);
     }
 }
