@@ -1093,6 +1093,16 @@ impl<'a> Builder<'a> {
                 format!("max_degree must be between 1 and {MAX_DEGREE_CEILING}"),
             ));
         }
+        if self.limits.max_degree == Some(0) {
+            return Err(FileError::new(
+                ErrorKind::Schema,
+                &self.source.origin,
+                format!(
+                    "the LimitsOverride given to the loader sets max_degree to 0; it must be \
+                     between 1 and {MAX_DEGREE_CEILING}"
+                ),
+            ));
+        }
         // Each is positive now, and max_degree at most the ceiling.
         let positive = |t: &Spanned<i64>| u64::try_from(*t.get_ref()).unwrap_or(u64::MAX);
         let given = LimitsOverride {

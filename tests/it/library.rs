@@ -323,6 +323,24 @@ fn engine_errors_become_file_errors() {
     assert_eq!(err.kind.to_string(), "engine");
 }
 
+/// A degree limit of 0 given to the loader is refused as such (a file's `max_degree = 0`
+/// is): reading the Hamiltonian under it panicked.
+#[test]
+fn a_degree_limit_of_zero_is_refused_by_the_loader() {
+    let text = std::fs::read_to_string(concat!(
+        env!("CARGO_MANIFEST_DIR"),
+        "/systems/harmonic-rotor.toml"
+    ))
+    .unwrap();
+    let zero = LimitsOverride {
+        max_degree: Some(0),
+        ..LimitsOverride::default()
+    };
+    let err = load_system_text("harmonic-rotor.toml", &text, &zero).unwrap_err();
+    assert!(err.message.contains("max_degree to 0"), "{err}");
+    assert_eq!((err.kind, err.location), (ErrorKind::Schema, None));
+}
+
 /// A clone is a system of its own: a function added to it is not in the original.
 #[test]
 fn a_clone_is_extended_alone() {

@@ -195,7 +195,8 @@ pub struct Limits {
     /// The most terms any single result may have.
     pub max_terms: usize,
     /// The largest absolute exponent of any variable; for an angle, the largest trigonometric
-    /// order `k` of `cos kθ`, `sin kθ` (the exponent of `e^{iθ}`, as it is stored).
+    /// order `k` of `cos kθ`, `sin kθ` (the exponent of `e^{iθ}`, as it is stored). At least
+    /// 1: [`VarSetBuilder::build`] refuses 0.
     pub max_degree: u32,
     /// The most term products one product of polynomials may form (some seconds to a minute
     /// of work at the default).
@@ -760,8 +761,16 @@ impl VarSetBuilder {
         self
     }
 
-    /// Checks names and builds the set.
+    /// Checks names and limits and builds the set: a degree limit of 0 is refused, as it
+    /// would leave no variable writable, not even `x` itself.
     pub fn build(self) -> Result<Vars, AlgebraError> {
+        if self.limits.max_degree == 0 {
+            return Err(AlgebraError::Invalid(
+                "the degree limit (max_degree) must be at least 1: at 0 no variable could be \
+                 written, not even x itself"
+                    .into(),
+            ));
+        }
         if let Some(bits) = self.bits.filter(|b| !FIELD_BITS.contains(b)) {
             return Err(AlgebraError::Invalid(format!(
                 "exponent bits must be one of {FIELD_BITS:?}, not {bits}"

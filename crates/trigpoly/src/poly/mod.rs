@@ -140,7 +140,7 @@ impl<C: Coefficient> Poly<C> {
     pub fn var(vars: &Vars, v: Var) -> Self {
         let j = vars.index_of(v);
         let angle = vars.variable(v).kind() == VarKind::Angle;
-        if (angle && !C::HAS_I) || vars.limits().max_degree == 0 {
+        if angle && !C::HAS_I {
             return Self::monomial(vars, C::one(), &[(v, 1)])
                 .expect("exponent 1 is within every limit");
         }

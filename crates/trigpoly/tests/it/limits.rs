@@ -297,6 +297,34 @@ fn exponent_fields_follow_the_degree_limit() {
     );
 }
 
+/// A degree limit of 0 is refused where the set is built: under it even `x` was past the
+/// limit, and reading `x` panicked.
+#[test]
+fn a_degree_limit_of_zero_is_refused() {
+    let zero = Limits {
+        max_degree: 0,
+        ..Limits::default()
+    };
+    let refused = Err(AlgebraError::Invalid(
+        "the degree limit (max_degree) must be at least 1: at 0 no variable could be written, \
+         not even x itself"
+            .into(),
+    ));
+    let built = VarSet::builder().coordinate("x").limits(zero).build();
+    assert_eq!(built.map(|v| v.len()), refused);
+    let x = coordinates(&["x"]);
+    assert_eq!(x.with_limits(zero).map(|v| v.len()), refused);
+    let one = x
+        .with_limits(Limits {
+            max_degree: 1,
+            ..Limits::default()
+        })
+        .unwrap();
+    assert_eq!(Poly::<Rational>::parse(&one, "x").unwrap().to_string(), "x");
+    let err = Poly::<Rational>::parse(&one, "x^2").unwrap_err();
+    assert!(err.to_string().contains("past the limit of 1"), "{err}");
+}
+
 /// Twelve-bit fields leave four bits over at the bottom of each word: the last variable's
 /// field sits above them, and its exponents are as exact and as checked as the first's.
 #[test]
