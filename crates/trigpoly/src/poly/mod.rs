@@ -136,14 +136,19 @@ impl<C: Coefficient> Poly<C> {
     ///
     /// # Panics
     ///
-    /// If `v` is a handle of another set ([`VarSet::owns`]).
+    /// If `v` is a handle of another set ([`VarSet::owns`]), or an angle in a polynomial over
+    /// Q, which has no `e^{iθ}` ([`Poly::monomial`] returns [`AlgebraError::NeedsGaussian`]
+    /// there).
     pub fn var(vars: &Vars, v: Var) -> Self {
         let j = vars.index_of(v);
         let angle = vars.variable(v).kind() == VarKind::Angle;
-        if angle && !C::HAS_I {
-            return Self::monomial(vars, C::one(), &[(v, 1)])
-                .expect("exponent 1 is within every limit");
-        }
+        assert!(
+            !angle || C::HAS_I,
+            "the angle {} is e^{{i{}}}, which a polynomial over Q has no coefficients for: \
+             take it over Q(i)",
+            vars.variable(v).name(),
+            vars.variable(v).unicode()
+        );
         // The monomial `v` packed directly, where `monomial` checks every variable's
         // exponent and allocates twice more (a parsed expression makes one per name).
         let layout = vars.layout();

@@ -476,6 +476,18 @@ fn rejected_over_q_accepted_over_gaussian_rationals() {
     }
 }
 
+/// An angle over Q has no polynomial: `Poly::monomial` says so, and `Poly::var`, which
+/// returns no error, panics saying so (it said "exponent 1 is within every limit").
+#[test]
+#[should_panic(expected = "the angle theta is e^{iθ}, which a polynomial over Q has no")]
+fn an_angle_is_no_variable_over_q() {
+    let vars = phase_space();
+    let theta = vars.lookup("theta").unwrap();
+    assert!(Poly::<Rational>::monomial(&vars, Rational::one(), &[(theta, 1)]).is_err());
+    assert!(!Poly::<GaussianRational>::var(&vars, theta).is_real());
+    Poly::<Rational>::var(&vars, theta);
+}
+
 /// A long line (a generated expression) is rendered as a window of 40 characters either side
 /// of the caret, cut with `…`, with the caret under the offending character.
 #[test]
