@@ -53,7 +53,7 @@ pub enum SummaryKind {
 
 /// What a claim is expected to do: a system file marks deliberately false claims
 /// `expect = "refuted"`; the paper's claims are all expected to be proved.
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, serde::Deserialize)]
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash, serde::Deserialize)]
 #[serde(rename_all = "lowercase")]
 pub enum Expect {
     /// The claim should be proved.

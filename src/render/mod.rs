@@ -17,7 +17,7 @@ use std::str::FromStr;
 use crate::report::{ClaimResult, Expect, Report};
 
 /// An output format.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Default)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, Default)]
 pub enum Format {
     /// Unicode text that reads like the paper: `{L, G1} = −G2   [C09 proved]`.
     #[default]

@@ -13,7 +13,7 @@ use std::ops::Range;
 use trigpoly::{Excerpt, Span};
 
 /// What kind of problem a [`FileError`] reports.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 pub enum ErrorKind {
     /// The file could not be read.
     Io,

@@ -341,6 +341,57 @@ fn a_degree_limit_of_zero_is_refused_by_the_loader() {
     assert_eq!((err.kind, err.location), (ErrorKind::Schema, None));
 }
 
+/// The value types a program compares can key a map or a set too: formats, styles,
+/// expectations, error kinds, outcomes (with their residuals), conditions and function names.
+#[test]
+fn value_types_are_hashable() {
+    use std::collections::HashSet;
+    fn distinct<T: std::hash::Hash + Eq>(values: impl IntoIterator<Item = T>) -> usize {
+        values.into_iter().collect::<HashSet<T>>().len()
+    }
+    assert_eq!(distinct(Format::ALL.into_iter().chain([Format::Json])), 4);
+    assert_eq!(
+        distinct([Style::Unicode, Style::Latex, Style::Ascii, Style::Latex]),
+        3
+    );
+    assert_eq!(
+        distinct([Expect::Proved, Expect::Refuted, Expect::default()]),
+        2
+    );
+    assert_eq!(
+        distinct([ErrorKind::Name, ErrorKind::Schema, ErrorKind::Name]),
+        2
+    );
+    let rotor = systems::harmonic_rotor();
+    let outcome = |lhs: &str, rhs: &str| {
+        let claim = Claim::new(
+            "c",
+            "",
+            rotor.parse(lhs).unwrap(),
+            rotor.parse(rhs).unwrap(),
+        );
+        claim.check().unwrap().outcome
+    };
+    let outcomes = [
+        outcome("{L, G1}", "-G2"),
+        outcome("{L, G2}", "4*G1"),
+        outcome("{L, G1}", "G2"),
+        outcome("{L, G1}", "G2"),
+        outcome("{L, G1}", "0"),
+    ];
+    assert_eq!(distinct(outcomes), 3);
+    let resonances = [(1, 1), (2, 1), (1, 1)].map(|(m, n)| rotor.resonance(m, n).unwrap());
+    assert_eq!(distinct(resonances), 2);
+    let name = |name: &str, display: &str| FunctionName {
+        name: name.into(),
+        display: display.into(),
+    };
+    assert_eq!(
+        distinct([name("G1p", "G1'"), name("G1p", "G1'"), name("G1", "G1")]),
+        2
+    );
+}
+
 /// A clone is a system of its own: a function added to it is not in the original.
 #[test]
 fn a_clone_is_extended_alone() {

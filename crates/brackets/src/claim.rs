@@ -14,7 +14,7 @@ use crate::system::System;
 ///
 /// Its values are resolved: none mentions a variable the condition sets, so that one
 /// simultaneous substitution applies it (`p_θ = Iω, ω = 1/2` substitutes `p_θ → I/2, ω → 1/2`).
-#[derive(Clone, Debug, PartialEq, Eq)]
+#[derive(Clone, Debug, PartialEq, Eq, Hash)]
 pub struct Condition {
     /// How the condition reads (`p_θ = 2Iω`).
     pub text: String,
@@ -378,7 +378,7 @@ pub struct Claim {
 }
 
 /// What checking a claim found.
-#[derive(Clone, Debug, PartialEq, Eq)]
+#[derive(Clone, Debug, PartialEq, Eq, Hash)]
 pub enum Outcome {
     /// `lhs − rhs` is exactly zero (after the condition).
     Proved,

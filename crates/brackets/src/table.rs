@@ -28,7 +28,7 @@ pub enum Entry {
 
 /// A function of a table by name: the system's name, which reads back (`G1p`), and the name
 /// it is shown by (`G1'`).
-#[derive(Clone, Debug, PartialEq, Eq)]
+#[derive(Clone, Debug, PartialEq, Eq, Hash)]
 pub struct FunctionName {
     /// The name the system defines it by.
     pub name: String,

@@ -9,7 +9,7 @@ use crate::poly::{CosSinTerm, Poly, TrigMonomial};
 use crate::varset::{VarKind, VarSet};
 
 /// An output notation.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 pub enum Style {
     /// Unicode text: `p_x²/(2M)`, `−ω² L`, `cos θ`.
     Unicode,
