@@ -1,7 +1,7 @@
 //! Parameters: checked, fixed to values for the linear algebra, or kept symbolic (their
 //! multiples and the module they generate).
 
-use trigpoly::{Expr, GaussianRational, Rational, Var, VarKind, Vars};
+use trigpoly::{AlgebraError, Expr, GaussianRational, Rational, Var, VarKind, Vars};
 
 use crate::claim::Condition;
 use crate::clearing::Clearing;
@@ -20,6 +20,11 @@ pub(crate) fn check_parameters(
     symbolic: &[Var],
     fixed: &[(Var, Rational)],
 ) -> Result<(), EngineError> {
+    // A handle of another set would name whatever variable stands at its index here.
+    let mut given = fixed.iter().map(|f| f.0).chain(symbolic.iter().copied());
+    if given.any(|v| !vars.owns(v)) {
+        return Err(AlgebraError::VarSetMismatch.into());
+    }
     if let Some((v, _)) = fixed
         .iter()
         .find(|(v, _)| vars.variable(*v).kind() != VarKind::Parameter)

@@ -1,6 +1,6 @@
 //! Unit tests of the search's internals.
 
-use trigpoly::{GaussianRational, Var, VarSet};
+use trigpoly::{AlgebraError, GaussianRational, Var, VarSet};
 
 use super::locate::Locator;
 use super::new_only::{
@@ -402,6 +402,26 @@ fn a_parameter_is_either_fixed_or_symbolic() {
         err.contains("only parameters are given values for the linear algebra, and x is not one"),
         "{err}"
     );
+}
+
+/// A parameter of another system, fixed or kept symbolic, is refused: its handle named
+/// whatever variable stood at its index here, and the search panicked.
+#[test]
+fn a_parameter_of_another_system_is_refused() {
+    let rotor = systems::harmonic_rotor();
+    let other = systems::gravity_rotor();
+    let foreign = other.var("g");
+    let space = SearchSpace::new(1, 1, 0);
+    for options in [
+        SearchOptions::new(space).fix(foreign, Rational::from(2)),
+        SearchOptions::new(space).symbolic(foreign),
+    ] {
+        let err = search(&rotor, &options).unwrap_err();
+        assert!(
+            matches!(err, EngineError::Algebra(AlgebraError::VarSetMismatch)),
+            "{err}"
+        );
+    }
 }
 
 #[test]
