@@ -34,7 +34,7 @@
 use std::collections::HashMap;
 use std::time::Instant;
 
-use trigpoly::{Expr, GaussianRational, Rational, Style, Var, VarKind, VarSet, Vars};
+use trigpoly::{AlgebraError, Expr, GaussianRational, Rational, Style, Var, VarKind, VarSet, Vars};
 
 use crate::claim::Condition;
 use crate::error::EngineError;
@@ -523,6 +523,9 @@ pub fn expressed_in(
 ) -> Result<Option<Expressed>, EngineError> {
     let condition = options.condition.as_ref();
     let g_sym = span::restricted_generators(system, generators, condition)?;
+    if target.vars() != system.vars() {
+        return Err(AlgebraError::VarSetMismatch.into());
+    }
     let target = span::restrict(condition, target.clone())?;
     let scaling = scaling_of(system, generators, condition)?;
     let parts = homogeneous_parts(&scaling, &target)?;
@@ -1083,6 +1086,31 @@ mod tests {
         let rotor = systems::harmonic_rotor();
         let err = closure(&rotor, &["L", "G1", "L"], &ClosureOptions::new(2)).unwrap_err();
         assert_eq!(err.to_string(), "L is named twice among the generators");
+    }
+
+    /// A generator or a target read in another variable set is refused, in a closure and in
+    /// `expressed_in` (each panicked on the first variable of the system it looked up).
+    #[test]
+    fn functions_of_another_variable_set_are_refused() {
+        let rotor = systems::harmonic_rotor();
+        let vars = VarSet::builder().coordinate("q").build().unwrap();
+        let q = Expr::parse(&vars, "q").unwrap();
+        let l = NamedFunction::new("L", "L", rotor.get("L").unwrap().clone());
+        let foreign = [l.clone(), NamedFunction::new("Q", "Q", q.clone())];
+        let options = ClosureOptions::new(1);
+        let err = closure_of(&rotor, &foreign, &options).unwrap_err();
+        assert_eq!(
+            err.to_string(),
+            "the generator Q is not a function of the system's variables (it was read in \
+             another variable set)"
+        );
+        let err = expressed_in(&rotor, &foreign, &q, &options).unwrap_err();
+        assert!(err.to_string().contains("the generator Q"), "{err}");
+        let err = expressed_in(&rotor, &[l], &q, &options).unwrap_err();
+        assert!(
+            matches!(err, EngineError::Algebra(AlgebraError::VarSetMismatch)),
+            "{err}"
+        );
     }
 
     /// With every parameter symbolic, the linear algebra runs on the symbolic expansions and

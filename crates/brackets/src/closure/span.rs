@@ -41,6 +41,13 @@ pub(super) fn restricted_generators(
             g.name
         )));
     }
+    if let Some(g) = generators.iter().find(|g| g.expr.vars() != system.vars()) {
+        return Err(EngineError::Invalid(format!(
+            "the generator {} is not a function of the system's variables (it was read in \
+             another variable set)",
+            g.name
+        )));
+    }
     if let Some(c) = condition {
         c.kept_by_flow(system)?;
     }
