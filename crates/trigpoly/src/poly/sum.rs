@@ -13,7 +13,7 @@ use super::sum_at::MAX_PRODUCTS;
 use super::Poly;
 use crate::error::AlgebraError;
 use crate::number::{Coefficient, IntegerRing, Rational};
-use crate::varset::{Layout, Var};
+use crate::varset::{Layout, Var, VarSet};
 
 /// Sorted term lists with their rational contents, waiting to be summed.
 type Streams<C> = Vec<(Rational, Poly<C>)>;
@@ -83,6 +83,7 @@ impl<C: Coefficient> Poly<C> {
         for &(f, v, g, negate) in terms {
             f.same_vars(g)?;
             first.same_vars(f)?;
+            vars.checked_index(v)?;
             if f.is_zero() || g.is_zero() {
                 continue;
             }
@@ -127,6 +128,7 @@ impl<C: Coefficient> Poly<C> {
         pairs: &[(Var, Var)],
     ) -> Result<Self, AlgebraError> {
         f.same_vars(g)?;
+        check_pairs(&f.vars, pairs)?;
         if f.is_zero() || g.is_zero() || pairs.is_empty() {
             return Ok(Self::zero(&f.vars));
         }
@@ -191,6 +193,7 @@ impl<C: Coefficient> Poly<C> {
                 gradient.len()
             )));
         }
+        check_pairs(&f.vars, pairs)?;
         let mut terms = Vec::with_capacity(2 * pairs.len());
         for (&(q, p), (gq, gp)) in pairs.iter().zip(gradient) {
             terms.push((f, q, gp, false));
@@ -355,4 +358,14 @@ impl<C: Coefficient> Poly<C> {
         let (exps, coeffs) = total.into_terms();
         Ok(Self::drop_zeros_and_normalize(vars, d, exps, coeffs))
     }
+}
+
+/// Refuses a pair that holds a handle of another variable set, which would name whatever
+/// variable stands at its index in `vars` (or none).
+fn check_pairs(vars: &VarSet, pairs: &[(Var, Var)]) -> Result<(), AlgebraError> {
+    for &(q, p) in pairs {
+        vars.checked_index(q)?;
+        vars.checked_index(p)?;
+    }
+    Ok(())
 }

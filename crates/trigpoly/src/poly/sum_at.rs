@@ -51,12 +51,14 @@ impl<C: Coefficient> Poly<C> {
         subs: &[(Var, Self)],
     ) -> Result<Self, AlgebraError> {
         let first = Self::first_factor(terms.first().map(|t| t.0))?;
-        for &(f, _, g, _) in terms {
+        for &(f, v, g, _) in terms {
             f.same_vars(g)?;
             first.same_vars(f)?;
+            first.vars.checked_index(v)?;
         }
-        for (_, value) in subs {
+        for (v, value) in subs {
             first.same_vars(value)?;
+            first.vars.checked_index(*v)?;
         }
         let sources: Vec<Source<'_, C>> = terms
             .iter()

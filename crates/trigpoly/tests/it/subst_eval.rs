@@ -126,7 +126,8 @@ fn degrees_and_ranges_of_laurent_and_trigonometric_polynomials() {
 /// declares others, an operation that returns a `Result` says `VarSetMismatch`, and one that
 /// cannot panics with a message, where the handle's index alone named whatever variable stood
 /// at that place (`ab`, the seventh here, is past the end of `{q}`; `y`, the second of
-/// `phase_space`, is `y` of `{x, y}` by index too, and still refused). A set with the same
+/// `phase_space`, is `y` of `{x, y}` by index too, and still refused; so are the bracket's
+/// kernels' pairs and values). A set with the same
 /// variables and other limits takes the handles.
 #[test]
 fn variable_handles_of_another_set_are_refused() {
@@ -148,6 +149,23 @@ fn variable_handles_of_another_set_are_refused() {
     );
     assert_eq!(
         x.eval(&Point::new(&small).with(y_big, Rational::one())),
+        Err(AlgebraError::VarSetMismatch)
+    );
+    // The bracket's kernels, given pairs or derivatives in another set's handles (they
+    // panicked on an index past the end, or took `y` of `big` for `y` of `small`).
+    let g: G = Poly::parse(&small, "x^2 + y").unwrap();
+    let pairs = [(var(&big, "x"), var(&big, "p_x"))];
+    assert_eq!(
+        G::sum_of_jacobians(&x, &g, &pairs),
+        Err(AlgebraError::VarSetMismatch)
+    );
+    assert_eq!(
+        G::sum_of_derivative_products(&[(&g, y_big, &x, false)]),
+        Err(AlgebraError::VarSetMismatch)
+    );
+    let x_small = var(&small, "x");
+    assert_eq!(
+        G::sum_of_derivative_products_at(&[(&g, x_small, &x, false)], &[(y_big, x.clone())]),
         Err(AlgebraError::VarSetMismatch)
     );
     let panics = |f: &dyn Fn()| {
