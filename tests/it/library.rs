@@ -392,6 +392,40 @@ fn value_types_are_hashable() {
     );
 }
 
+/// A condition belongs to one system: values and a variable of two variable sets, or a
+/// condition used with another system's functions (in a claim, a flow, a search, a
+/// closure), are refused as a mismatch of sets, where each panicked on a handle.
+#[test]
+fn a_condition_of_another_system_is_refused() {
+    fn mismatch<T>(result: Result<T, EngineError>) -> bool {
+        matches!(
+            result,
+            Err(EngineError::Algebra(AlgebraError::VarSetMismatch))
+        )
+    }
+    let rotor = systems::harmonic_rotor();
+    let gravity = systems::gravity_rotor();
+    let g = gravity.var("g");
+    assert!(mismatch(Condition::all(
+        "g = 1",
+        vec![(g, Expr::one(rotor.vars()))]
+    )));
+    let x = rotor.var("x");
+    assert!(mismatch(Condition::all(
+        "x = g",
+        vec![(x, gravity.parse("g").unwrap())]
+    )));
+    let at_g = Condition::all("g = 1", vec![(g, Expr::one(gravity.vars()))]).unwrap();
+    let x = rotor.parse("x").unwrap();
+    let claim = Claim::new("c", "x = x", x.clone(), x.clone()).when(at_g.clone());
+    assert!(mismatch(claim.check()));
+    assert!(mismatch(rotor.flow_when(&x, &at_g)));
+    let options = SearchOptions::new(SearchSpace::new(1, 1, 0)).when(at_g.clone());
+    assert!(mismatch(search(&rotor, &options)));
+    let options = ClosureOptions::new(1).when(at_g);
+    assert!(mismatch(closure(&rotor, &["L"], &options)));
+}
+
 /// A clone is a system of its own: a function added to it is not in the original.
 #[test]
 fn a_clone_is_extended_alone() {

@@ -4,7 +4,7 @@
 use std::borrow::Cow;
 use std::time::Instant;
 
-use trigpoly::{Expr, Rational, Style, Var, VarKind};
+use trigpoly::{AlgebraError, Expr, Rational, Style, Var, VarKind, Vars};
 
 use crate::error::EngineError;
 use crate::system::System;
@@ -83,7 +83,8 @@ impl Condition {
     /// an angle through `e^{iθ}`, so the value set is that of `e^{iθ}` (1 for `θ = 0`, `i` for
     /// `θ = π/2`), never 0; and if `v` is no angle and `value` is not real: the variables and
     /// parameters take real values; and if `v` is a radical or a denominator, which stand for
-    /// functions of the other variables. [`Condition::all`] refuses each with an error.
+    /// functions of the other variables; and if `v` is not a handle of `value`'s set.
+    /// [`Condition::all`] refuses each with an error.
     pub fn new(text: &str, v: Var, value: Expr) -> Self {
         assert!(
             !value.contains(v),
@@ -119,9 +120,18 @@ impl Condition {
     /// angle, one off the unit circle), a radical or a denominator set as if it were a
     /// variable, and a variable that a denominator or a radicand involves
     /// ([`Condition::keeps_denominators`]). Every refusal is an
-    /// [`EngineError::RefusedCondition`] naming the variable.
+    /// [`EngineError::RefusedCondition`] naming the variable, but that of values in different
+    /// variable sets, or of a variable that is not a handle of theirs, which is
+    /// [`AlgebraError::VarSetMismatch`]; so is the use of a condition with functions of another
+    /// set (a claim's, a search's).
     pub fn all(text: &str, subs: Vec<(Var, Expr)>) -> Result<Self, EngineError> {
         let mut subs = subs;
+        if let Some((_, first)) = subs.first() {
+            let vars = first.vars();
+            if subs.iter().any(|(v, e)| !vars.owns(*v) || e.vars() != vars) {
+                return Err(AlgebraError::VarSetMismatch.into());
+            }
+        }
         for (v, value) in &subs {
             if let Some(why) = not_a_variable(*v, value)
                 .or_else(|| not_on_the_circle(*v, value))
@@ -212,6 +222,7 @@ impl Condition {
 
     /// Applies the substitution.
     pub fn apply(&self, e: &Expr) -> Result<Expr, EngineError> {
+        self.within(e.vars())?;
         self.keeps_denominators()?;
         Ok(e.subst_many(&self.subs)?)
     }
@@ -282,6 +293,7 @@ impl Condition {
     /// are constants, always kept.
     pub fn kept_by_flow(&self, system: &System) -> Result<(), EngineError> {
         let vars = system.vars();
+        self.within(vars)?;
         for (v, value) in &self.subs {
             if vars.variable(*v).kind() == VarKind::Parameter {
                 continue;
@@ -331,6 +343,9 @@ impl Condition {
     /// substitution (`p_x/M = p_x/M` at `M = 0`). `what` names the sides in the message (`the
     /// claim`).
     pub fn defined_on(&self, sides: &[&Expr], what: &str) -> Result<(), EngineError> {
+        for side in sides {
+            self.within(side.vars())?;
+        }
         for (v, value) in &self.subs {
             let divides = |e: &&Expr| e.exponent_range(*v).is_some_and(|(lo, _)| lo < 0);
             if value.is_zero() && sides.iter().any(divides) {
@@ -341,6 +356,17 @@ impl Condition {
             }
         }
         Ok(())
+    }
+}
+
+impl Condition {
+    /// Refuses `vars` unless the condition was read in them: a condition of another system
+    /// names its variables by handles that are not `vars`'s.
+    fn within(&self, vars: &Vars) -> Result<(), EngineError> {
+        match self.subs.iter().all(|(_, value)| value.vars() == vars) {
+            true => Ok(()),
+            false => Err(AlgebraError::VarSetMismatch.into()),
+        }
     }
 }
 
