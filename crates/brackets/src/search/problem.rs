@@ -117,6 +117,42 @@ pub(super) fn exponent_vectors(n: usize, max: u32, signed: bool) -> Vec<Vec<i64>
     out
 }
 
+/// How many vectors [`exponent_vectors`] makes, without making them (a space of momenta degree
+/// 1000 made 10⁸ of them before its count was refused), saturating at `u128::MAX`:
+/// `C(n + max, n)`, and with signs `Σ_k 2^k C(n, k) C(max, k)` (`k` entries nonzero).
+pub(super) fn exponent_vectors_count(n: usize, max: u32, signed: bool) -> u128 {
+    let (n, max) = (n as u128, u128::from(max));
+    if !signed {
+        return binomial(n + max, n);
+    }
+    (0..=n.min(max)).fold(0, |sum: u128, k| {
+        let ways = binomial(n, k).saturating_mul(binomial(max, k));
+        let signs = 1u128.checked_shl(k as u32).unwrap_or(u128::MAX);
+        sum.saturating_add(ways.saturating_mul(signs))
+    })
+}
+
+/// `C(a, b)`, saturating at `u128::MAX`.
+fn binomial(a: u128, b: u128) -> u128 {
+    let b = b.min(a - b);
+    // Each partial product `C(a − b + i, i)` is an integer.
+    (1..=b)
+        .try_fold(1u128, |acc, i| Some(acc.checked_mul(a - b + i)? / i))
+        .unwrap_or(u128::MAX)
+}
+
+/// Refuses a space of `count` unknowns past the term limit of `vars`.
+fn too_many_unknowns(vars: &Vars, count: usize) -> Result<(), EngineError> {
+    let limit = vars.limits().max_terms;
+    if count > limit {
+        return Err(EngineError::Invalid(format!(
+            "the space has {count} unknowns, more than the term limit {limit}: search a \
+             smaller space, or raise the limit (`Limits::max_terms`; on the command line, --max-terms)"
+        )));
+    }
+    Ok(())
+}
+
 /// Whether the first nonzero entry is positive (or all are zero).
 pub(super) fn canonical(k: impl IntoIterator<Item = i64>) -> bool {
     k.into_iter().find(|x| *x != 0).is_none_or(|x| x > 0)
@@ -189,19 +225,45 @@ struct Exponents<'a> {
 }
 
 impl<'a> Exponents<'a> {
-    /// The exponent vectors of `space` over `variables` and the parameters kept `symbolic`.
+    /// The exponent vectors of `space` over `variables` and the parameters kept `symbolic`;
+    /// an error past the term limit, before any is formed.
     fn new(
         system: &'a System,
         space: &SearchSpace,
         variables: &'a SpaceVariables,
         symbolic: &'a [Var],
-    ) -> Self {
+    ) -> Result<Self, EngineError> {
+        let phase = system.space();
+        // The angular vectors are kept one of each ±k, each giving cos and sin (k = 0 one
+        // function): as many functions as vectors of either sign.
+        let count = [
+            (
+                variables.coordinates.len(),
+                space.positions_degree,
+                space.laurent,
+            ),
+            (variables.momenta.len(), space.momenta_degree, false),
+            (variables.poisson.len(), space.poisson_degree, false),
+            (symbolic.len(), space.parameters_degree, false),
+            (
+                phase.denominator_atoms().len(),
+                space.denominators_degree,
+                false,
+            ),
+            (phase.radicals().len(), space.radicals_degree, true),
+            (variables.angles.len(), space.trig_degree, true),
+        ]
+        .into_iter()
+        .fold(1u128, |product, (n, degree, signed)| {
+            product.saturating_mul(exponent_vectors_count(n, degree, signed))
+        });
+        too_many_unknowns(system.vars(), usize::try_from(count).unwrap_or(usize::MAX))?;
         let (atoms, radicals) = (
             system.space().denominator_atoms(),
             system.space().radicals(),
         );
         let vectors = |vars: &[Var], degree: u32| exponent_vectors(vars.len(), degree, false);
-        Exponents {
+        Ok(Exponents {
             vars: system.vars(),
             variables,
             symbolic,
@@ -221,7 +283,7 @@ impl<'a> Exponents<'a> {
                 .into_iter()
                 .filter(|k| canonical(k.iter().copied()))
                 .collect(),
-        }
+        })
     }
 
     /// How many trigonometric functions each monomial `φ` is multiplied by: each angular
@@ -244,13 +306,7 @@ impl<'a> Exponents<'a> {
             .saturating_mul(self.denominator_powers.len())
             .saturating_mul(self.radical_powers.len())
             .saturating_mul(self.trig_functions());
-        let limit = self.vars.limits().max_terms;
-        if count > limit {
-            return Err(EngineError::Invalid(format!(
-                "the space has {count} unknowns, more than the term limit {limit}: search a \
-                 smaller space, or raise the limit (`Limits::max_terms`; on the command line, --max-terms)"
-            )));
-        }
+        too_many_unknowns(self.vars, count)?;
         Ok(count)
     }
 
@@ -358,7 +414,7 @@ impl Problem {
     ) -> Result<Self, EngineError> {
         let vars = system.vars().clone();
         let variables = space_variables(system, cond.as_deref());
-        let exponents = Exponents::new(system, space, &variables, symbolic);
+        let exponents = Exponents::new(system, space, &variables, symbolic)?;
         // The monomials `φ` without angles, then (with denominators) those whose functions are
         // independent of the simpler ones, then each times the trigonometric functions.
         let mut phases = exponents.phases(exponents.count()?);

@@ -7,7 +7,7 @@ use super::new_only::{
     generators, span_of_products, without_parameter_multiples, Generator, Grading, Leads, Size,
     Stamped,
 };
-use super::problem::Problem;
+use super::problem::{canonical, exponent_vectors, exponent_vectors_count, Problem};
 use super::*;
 use crate::claim::Condition;
 use crate::modular::{Echelon, Field, Fp};
@@ -402,6 +402,51 @@ fn a_parameter_is_either_fixed_or_symbolic() {
         err.contains("only parameters are given values for the linear algebra, and x is not one"),
         "{err}"
     );
+}
+
+/// The count of a kind's exponent vectors, made without them, is the number made; with
+/// signs, it is also the number of trigonometric functions of the canonical angular vectors
+/// (cos and sin of each, 1 for k = 0).
+#[test]
+fn exponent_vectors_are_counted_without_making_them() {
+    for n in 0..4 {
+        for max in 0..6 {
+            for signed in [false, true] {
+                let made = exponent_vectors(n, max, signed);
+                let count = exponent_vectors_count(n, max, signed);
+                assert_eq!(made.len() as u128, count, "{n} {max} {signed}");
+                if signed {
+                    let functions: u128 = made
+                        .iter()
+                        .filter(|k| canonical(k.iter().copied()))
+                        .map(|k| if k.iter().all(|x| *x == 0) { 1 } else { 2 })
+                        .sum();
+                    assert_eq!(functions, count, "{n} {max}");
+                }
+            }
+        }
+    }
+    assert_eq!(
+        exponent_vectors_count(3, u32::MAX, false),
+        13_204_693_761_600_761_637_210_423_296
+    );
+    assert_eq!(exponent_vectors_count(200, u32::MAX, true), u128::MAX);
+}
+
+/// A space past the term limit in one kind of variable alone is refused at once: momenta
+/// degree 1000 made its 10⁸ exponent vectors first (minutes, gigabytes), and u32::MAX never
+/// ended.
+#[test]
+fn a_space_too_large_in_one_kind_is_refused_before_it_is_made() {
+    let rotor = systems::harmonic_rotor();
+    for degree in [1000, u32::MAX] {
+        let options = SearchOptions::new(SearchSpace::new(degree, 1, 1));
+        let err = search(&rotor, &options).unwrap_err().to_string();
+        assert!(
+            err.contains("unknowns, more than the term limit 20000000"),
+            "{err}"
+        );
+    }
 }
 
 /// A parameter of another system, fixed or kept symbolic, is refused: its handle named
