@@ -1455,6 +1455,46 @@ fn a_condition_the_flow_leaves_is_refused() {
     assert_eq!(out.status.code(), Some(0));
 }
 
+/// A condition that sets to 0 a parameter that the Hamiltonian (for `search`) or a generator
+/// (for `closure`) divides by is refused by saying which and by what: it said only `division
+/// by zero`, without the name or the function.
+#[test]
+fn a_condition_that_makes_a_divisor_zero_says_which() {
+    let cases = [
+        (
+            vec!["search", "systems/harmonic-rotor.toml", "--when", "M = 0"],
+            "superint: error: searching for integrals: the condition sets M = 0, but the \
+             Hamiltonian divides by M\n",
+        ),
+        (
+            vec![
+                "closure",
+                "systems/harmonic-rotor.toml",
+                "L",
+                "G1",
+                "--when",
+                "M = 0",
+            ],
+            "superint: error: computing the closure: the condition sets M = 0, but the \
+             generator G1 divides by M\n",
+        ),
+    ];
+    for (args, message) in cases {
+        let out = superint(&args);
+        assert_eq!(out.status.code(), Some(2), "{args:?}");
+        assert_eq!(String::from_utf8_lossy(&out.stderr), message, "{args:?}");
+    }
+    // A generator free of 1/M is defined there: the closure of L alone goes on.
+    let out = superint(&[
+        "closure",
+        "systems/harmonic-rotor.toml",
+        "L",
+        "--when",
+        "M = 0",
+    ]);
+    assert_eq!(out.status.code(), Some(0));
+}
+
 /// A search whose basis holds only at the fixed values says how to see the general case: the
 /// Garnier system at `a = b = 1` is isotropic and has `x p_y − y p_x`, which it loses for
 /// `a ≠ b`.

@@ -53,7 +53,10 @@ pub(super) fn restricted_generators(
     }
     generators
         .iter()
-        .map(|g| restrict(condition, g.expr.clone()))
+        .map(|g| match condition {
+            Some(c) => c.apply_where_defined(&g.expr, &format!("the generator {}", g.name)),
+            None => Ok(g.expr.clone()),
+        })
         .collect()
 }
 

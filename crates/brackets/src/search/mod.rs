@@ -247,6 +247,7 @@ fn fixed_search_problem(
     let condition = options.condition.as_ref();
     if let Some(c) = condition {
         c.kept_by_flow(system)?;
+        c.defined_on(&[system.hamiltonian()], "the Hamiltonian")?;
     }
     check_parameters(system.vars(), &options.symbolic, &options.fixed)?;
     refuse_unreal(system, options)?;
