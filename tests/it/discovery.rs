@@ -1540,6 +1540,34 @@ fn an_unlifted_search_says_how_to_see_every_value() {
     );
 }
 
+/// A parameter that the condition sets is neither fixed nor kept symbolic by `closure`, as by
+/// `search`: `--fix beta=3` beside `--when 'beta = 1'` was taken, and the report said the
+/// linear algebra ran at `β = 3`, a value the generators no longer have.
+#[test]
+fn closure_refuses_to_fix_a_parameter_the_condition_sets() {
+    for option in ["--fix", "--symbolic"] {
+        let value = if option == "--fix" { "beta=3" } else { "beta" };
+        let args = [
+            "closure",
+            "systems/smorodinsky-winternitz-i.toml",
+            "H",
+            "Hx",
+            "--when",
+            "beta = 1",
+            option,
+            value,
+        ];
+        let out = superint(&args);
+        assert_eq!(out.status.code(), Some(2), "{args:?}");
+        assert_eq!(
+            String::from_utf8_lossy(&out.stderr),
+            "superint: error: computing the closure: beta is set by the condition; it can be \
+             neither fixed nor kept symbolic\n",
+            "{args:?}"
+        );
+    }
+}
+
 /// A generator named twice, or a definition given twice, is a mistake on the command line; so
 /// is a defined name that is reserved or that the system has, or that would print as one of
 /// its names does, refused before anything is read or computed (its value may be wrong too)

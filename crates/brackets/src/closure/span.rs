@@ -108,12 +108,15 @@ impl Span {
         // combination of the monomials `p^ν G^β`.
         check_parameters(vars, symbolic, &options.fixed)?;
         let condition = options.condition.as_ref();
-        if let Some(&v) = symbolic
-            .iter()
-            .find(|&&v| condition.is_some_and(|c| c.subs().iter().any(|(w, _)| *w == v)))
+        // A parameter the condition sets has its value there: fixed to another for the linear
+        // algebra, the report would name that one, as search refuses too.
+        let set = |v: Var| condition.is_some_and(|c| c.subs().iter().any(|(w, _)| *w == v));
+        if let Some(v) = (symbolic.iter().copied())
+            .chain(options.fixed.iter().map(|f| f.0))
+            .find(|&v| set(v))
         {
             return Err(EngineError::Invalid(format!(
-                "{} is set by the condition; it cannot be kept symbolic",
+                "{} is set by the condition; it can be neither fixed nor kept symbolic",
                 vars.variable(v).name()
             )));
         }
