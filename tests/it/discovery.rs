@@ -1455,6 +1455,46 @@ fn a_condition_the_flow_leaves_is_refused() {
     assert_eq!(out.status.code(), Some(0));
 }
 
+/// A parameter set to a function of phase space is a surface like a variable's, refused where
+/// the flow leaves it: at `a = p_x` the linear potential `p_x²/2 + ax` was searched, and
+/// `p_x + x`, whose bracket `p_x − a` vanishes there, was reported an integral (and `H`, which
+/// is one, was missed). A parameter set to a function the flow keeps (`ω = p_θ/I`) is kept.
+#[test]
+fn a_parameter_set_to_a_function_the_flow_changes_is_refused() {
+    let file = crate::scratch_text(
+        "discovery",
+        "linear-potential.toml",
+        "hamiltonian = \"p_x^2/2 + a*x\"\n[phase_space]\ncoordinates = [\"x\"]\n\
+         parameters = [\"a\"]\n",
+    );
+    let file = file.to_str().expect("a UTF-8 path");
+    for command in ["search", "closure"] {
+        let mut args = vec![command, file, "--when", "a = p_x"];
+        if command == "closure" {
+            args.push("H");
+        }
+        let out = superint(&args);
+        let stderr = String::from_utf8_lossy(&out.stderr);
+        assert_eq!(out.status.code(), Some(2), "{args:?}: {stderr}");
+        assert!(
+            stderr.contains(
+                "the flow leaves the surface a = p_x: there {a − (p_x), H} = p_x, not 0, so what \
+                 is conserved on it is no integral; a condition may set parameters to \
+                 constants, and variables the flow keeps"
+            ),
+            "{args:?}: {stderr}"
+        );
+    }
+    let out = superint(&[
+        "closure",
+        "systems/harmonic-rotor.toml",
+        "L",
+        "--when",
+        "omega = p_theta/I",
+    ]);
+    assert_eq!(out.status.code(), Some(0));
+}
+
 /// A condition that sets to 0 a parameter that the Hamiltonian (for `search`) or a generator
 /// (for `closure`) divides by is refused by saying which and by what: it said only `division
 /// by zero`, without the name or the function.

@@ -289,22 +289,23 @@ impl Condition {
     /// describes: for a variable `v` set to `value`, `{v − value, H}` must vanish there, as
     /// `{p_θ, H} = 0` does at a resonance `p_θ = mIω/n`. A function whose bracket with `H`
     /// vanishes only on a surface that the flow leaves (`y = 0` where `ẏ = p_y`) is no
-    /// integral, so a search or a closure under such a condition would mislabel it. Parameters
-    /// are constants, always kept.
+    /// integral, so a search or a closure under such a condition would mislabel it. A parameter
+    /// set to a constant is kept; one set to a function of phase space (`a = p_x`) is a
+    /// surface like any other, which the flow leaves unless `{value, H}` vanishes there.
     pub fn kept_by_flow(&self, system: &System) -> Result<(), EngineError> {
         let vars = system.vars();
         self.within(vars)?;
         for (v, value) in &self.subs {
-            if vars.variable(*v).kind() == VarKind::Parameter {
+            let moves = vars
+                .vars()
+                .any(|w| vars.variable(w).kind() != VarKind::Parameter && value.contains(w));
+            if vars.variable(*v).kind() == VarKind::Parameter && !moves {
                 continue;
             }
             let level = Expr::var(vars, *v).checked_sub(value)?;
             let rate = system.flow_when(&level, self)?;
             if !rate.vanishes()? {
                 let name = vars.variable(*v).unicode();
-                let moves = vars
-                    .vars()
-                    .any(|w| vars.variable(w).kind() != VarKind::Parameter && value.contains(w));
                 // An angle enters as e^{iθ}, whose bracket is the one computed.
                 let name = match vars.variable(*v).kind() {
                     VarKind::Angle => format!("e^{{i{name}}}"),
@@ -322,8 +323,8 @@ impl Condition {
                 };
                 return Err(EngineError::Invalid(format!(
                     "the flow leaves the surface {}: there {{{level}, H}} = {rate}, not 0, so \
-                     what is conserved on it is no integral; a condition may set parameters, \
-                     and variables the flow keeps ({kept})",
+                     what is conserved on it is no integral; a condition may set parameters to \
+                     constants, and variables the flow keeps ({kept})",
                     self.text
                 )));
             }
