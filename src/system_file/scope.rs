@@ -431,7 +431,46 @@ impl<'a> Scope<'a> {
             return Err(text.error(source, ErrorKind::Family, span, message));
         }
         let rewritten = rewrite_braces(&text.value, families, self.indices);
-        parse_expr(&rewritten).map_err(|e| expression_error(source, text, &e))
+        parse_expr(&rewritten).map_err(|e| self.display_error(source, text, &e))
+    }
+
+    /// The error for `e`, or, where it falls on a function's display name written in the text
+    /// (`Z̄`, `A_x`, `G1'`, as the reports print it), one that names the function to write.
+    fn display_error(&self, source: &Source, text: &Text, e: &ParseError) -> FileError {
+        let misread = ["unexpected character", "unknown name"];
+        if !misread.iter().any(|m| e.message.starts_with(m)) {
+            return expression_error(source, text, e);
+        }
+        let shown = self.file.system.functions().iter().find_map(|f| {
+            if f.display == f.name || f.display.is_empty() {
+                return None;
+            }
+            // The whole of a word (a coefficient may come before it): `Re A` and `2Re A`, not
+            // the start of `Re Ax`.
+            let word = |c: Option<char>| c.is_some_and(|c| c.is_alphanumeric() || c == '_');
+            let letter = |c: Option<char>| c.is_some_and(|c| c.is_alphabetic() || c == '_');
+            let value = &text.value;
+            let at = (value.match_indices(f.display.as_str()).map(|(k, _)| k)).find(|&k| {
+                let end = k + f.display.len();
+                k <= e.span.start
+                    && e.span.start < end
+                    && !letter(value[..k].chars().next_back())
+                    && !word(value[end..].chars().next())
+            })?;
+            Some((Span::new(at, at + f.display.len()), f))
+        });
+        match shown {
+            Some((span, f)) => text.error(
+                source,
+                ErrorKind::Expression,
+                span,
+                format!(
+                    "'{}' is how the function {} is printed; an expression names it {}",
+                    f.display, f.name, f.name
+                ),
+            ),
+            None => expression_error(source, text, e),
+        }
     }
 
     /// Lowers a tree whose spans are in `text`.
@@ -443,7 +482,7 @@ impl<'a> Scope<'a> {
     ) -> Result<Expr, FileError> {
         let prepared = self.prepare(source, text, tree)?;
         Expr::from_expr(self.file.system.vars(), &prepared, self)
-            .map_err(|e| expression_error(source, text, &e))
+            .map_err(|e| self.display_error(source, text, &e))
     }
 
     /// Expands family instances, checks brackets.

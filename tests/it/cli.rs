@@ -692,6 +692,33 @@ fn cli_bad_usage_exits_2_with_a_message() {
     }
 }
 
+/// A function's display name typed in an expression, as the reports print it (`Z̄`, `Re A`), is
+/// said to be one, with the name to write: it was `unexpected character '\u{304}'` and `unknown
+/// name 'Re'`. A word that only begins like one (`Re Ax`) keeps its own message.
+#[test]
+fn cli_a_display_name_in_an_expression_names_the_function() {
+    let rotor = "systems/harmonic-rotor.toml";
+    let a35 = "systems/anisotropic-3-5-rotor.toml";
+    for (args, message) in [
+        (
+            vec!["bracket", rotor, "Z̄", "Z"],
+            "superint: error: <command line>:1:1: 'Z̄' is how the function Zbar is printed; an \
+             expression names it Zbar\n 1 | Z̄\n   | ^^\n",
+        ),
+        (
+            vec!["expand", a35, "--", "x/(2Re A)"],
+            "superint: error: <command line>:1:5: 'Re A' is how the function ReA is printed; an \
+             expression names it ReA\n 1 | x/(2Re A)\n   |     ^^^^\n",
+        ),
+    ] {
+        let o = superint(&args);
+        assert_eq!(o.status.code(), Some(2), "{args:?}");
+        assert_eq!(stderr(&o), message, "{args:?}");
+    }
+    let o = superint(&["expand", a35, "Re Ax"]);
+    assert!(stderr(&o).contains("unknown name 'Re'"), "{}", stderr(&o));
+}
+
 /// Runs the binary and expects exit code 2, nothing on stdout and `message` on stderr.
 #[track_caller]
 fn assert_bad_usage(args: &[&str], message: &str) {
