@@ -142,9 +142,19 @@ pub fn parse_fixed(system: &System, text: &str) -> Result<Vec<(Var, Rational)>, 
             .parse()
             .map_err(|_| format!("'{}' is not a rational number", value.trim()))?;
         if q.is_zero() {
+            let space = system.space();
+            // --when cannot set a parameter that a radicand or a denominator holds either.
+            let instead = match brackets::Condition::sets_a_radicand(space.radicals(), v)
+                .or_else(|| brackets::Condition::sets_a_denominator(space.denominator_atoms(), v))
+            {
+                Some(why) => format!("--when '{name} = 0' cannot set it either: {why}"),
+                None => {
+                    format!("to study the system at {name} = 0, set it with --when '{name} = 0'")
+                }
+            };
             return Err(format!(
                 "{name} = 0: parameters are fixed to nonzero values (a value the lift back can \
-                 divide by); to study the system at {name} = 0, set it with --when '{name} = 0'"
+                 divide by); {instead}"
             ));
         }
         out.push((v, q));

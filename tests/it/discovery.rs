@@ -988,6 +988,22 @@ fn bad_search_arguments_exit_2_with_a_message() {
     }
 }
 
+/// `--fix a=0` is refused with the way to study `a = 0` instead, which for a parameter that a
+/// radicand holds is no condition either: it suggested `--when 'a = 0'`, which is refused.
+#[test]
+fn fixing_a_radicands_parameter_at_zero_suggests_no_condition() {
+    let out = superint(&["search", "systems/two-centres.toml", "--fix", "a=0"]);
+    assert_eq!(out.status.code(), Some(2));
+    assert_eq!(
+        String::from_utf8_lossy(&out.stderr),
+        "superint: error: --fix: a = 0: parameters are fixed to nonzero values (a value the \
+         lift back can divide by); --when 'a = 0' cannot set it either: the condition sets a, \
+         which the radicand of r = √(x² − 2ax + y² + z² + a²) involves: a condition on a \
+         radicand's variables is not supported (declare the radical with the value in its \
+         radicand instead)\n"
+    );
+}
+
 /// A parameter set by the condition takes the condition's value: `--when 'C = 2'` finds what
 /// `--fix C=2` finds (it was fixed to 1 first, and the search ran at `C = 1`).
 #[test]
