@@ -1004,6 +1004,31 @@ fn fixing_a_radicands_parameter_at_zero_suggests_no_condition() {
     );
 }
 
+/// A negative fixed value prints its sign as the conditions do, `M = −1` in text and markdown
+/// (it was `M = -1` beside `at ω = −1`), and stays ASCII in JSON, which is read back.
+#[test]
+fn a_negative_fixed_value_prints_as_a_condition_does() {
+    let args = [
+        "search",
+        "systems/harmonic-rotor.toml",
+        "--fix",
+        "M=-1,omega=-2/3",
+        "--momenta-degree",
+        "1",
+        "--positions-degree",
+        "1",
+        "--trig-degree",
+        "0",
+    ];
+    let (json, text) = json_and_text(&args);
+    assert!(
+        normalize(&text)
+            .contains("Parameters fixed for the linear algebra: M = −1, ω = −2/3, I = 1;"),
+        "{text}"
+    );
+    assert_eq!(json["searches"][0]["parameters"]["fixed"][0]["value"], "-1");
+}
+
 /// A parameter set by the condition takes the condition's value: `--when 'C = 2'` finds what
 /// `--fix C=2` finds (it was fixed to 1 first, and the search ran at `C = 1`).
 #[test]

@@ -271,11 +271,12 @@ pub fn parameter_text(vars: &VarSet, values: &[(Var, Rational)], style: Style) -
         .iter()
         .map(|(v, x)| {
             let variable = vars.variable(*v);
-            let name = match style {
-                Style::Ascii => variable.name(),
-                _ => variable.unicode(),
+            // A negative value's sign as the printed conditions write it (`ω = −1`).
+            let (name, value) = match style {
+                Style::Ascii => (variable.name(), x.to_string()),
+                _ => (variable.unicode(), x.to_string().replacen('-', "−", 1)),
             };
-            format!("{name} = {x}")
+            format!("{name} = {value}")
         })
         .collect::<Vec<_>>()
         .join(", ")
