@@ -260,7 +260,8 @@ fn radicals_rank_finds_a_point_where_two_radicands_are_squares() {
         "{out}"
     );
     // One that no rational makes a square (3x² + 2 = y² has no rational solution, as 2 is no
-    // square modulo 3): refused, about all the functions given.
+    // square modulo 3): refused, about all the functions given, with the radicands, and
+    // without the denominators the file does not have (it said that one might vanish).
     let never = scratch_text(
         "radicals-rank",
         "never.toml",
@@ -269,8 +270,10 @@ fn radicals_rank_finds_a_point_where_two_radicands_are_squares() {
     let err = superint_refused(&["rank", never.to_str().unwrap(), "x", "r", "s"]);
     assert!(
         err.contains(
-            "no point of small integers or fractions of them makes every radicand the square \
-             of a rational, where the radicals have exact values\n 1 | x r s\n   | ^^^^^"
+            "superint: error: <command line>:1:1: no point of small integers or fractions of \
+             them makes every radicand (r = √(3x² + 2), s = √(x² − 2ax + y² + z² + a²)) the \
+             square of a rational, where the radicals have exact values: the rank is certified \
+             at exact points, and there is none\n 1 | x r s\n   | ^^^^^"
         ),
         "{err}"
     );

@@ -107,17 +107,35 @@ pub fn rank(space: &PhaseSpace, functions: &[Expr]) -> Result<RankCertificate, E
         }
     }
     let mut cert = best.ok_or_else(|| {
-        EngineError::Invalid(format!(
+        let vanishes = format!(
             "a denominator vanishes at each of the {} sample points, where the functions are \
-             not defined{}",
+             not defined",
             FIRST_POINTS + EARLY_POINTS,
-            match space.radicals().is_empty() {
-                true => "",
-                false =>
-                    ", or no point of small integers or fractions of them makes every \
-                          radicand the square of a rational, where the radicals have exact values",
-            }
-        ))
+        );
+        let radicands = space
+            .radicals()
+            .iter()
+            .map(|(r, radicand)| format!("{} = √({radicand})", space.vars().variable(*r).unicode()))
+            .collect::<Vec<_>>()
+            .join(", ");
+        let no_square = format!(
+            "no point of small integers or fractions of them makes every radicand ({radicands}) \
+             the square of a rational, where the radicals have exact values"
+        );
+        // Said of what the system has: a system without denominators has no point for its
+        // radicands alone (`3x² + 2` is the square of no rational).
+        EngineError::Invalid(
+            match (
+                space.denominator_atoms().is_empty(),
+                space.radicals().is_empty(),
+            ) {
+                (_, true) => vanishes,
+                (true, false) => {
+                    format!("{no_square}: the rank is certified at exact points, and there is none")
+                }
+                (false, false) => format!("{vanishes}, or {no_square}"),
+            },
+        )
     })?;
     // Upper bound: every minor bordering the nonzero one vanishes identically. The nonzero
     // minor is a nonzero polynomial, so over the field of rational functions its rows are
