@@ -76,14 +76,18 @@ pub(crate) fn wrap(s: &str, w: usize, indent: &str) -> Vec<String> {
     // The line's width, counted as it grows (a long expression has millions of words).
     let mut line_width = width(lead);
     let mut empty = true;
+    // Whether the line holds only a sign, which stays with the term after it (`+ 1000…0x`, a
+    // term wider than a line, was a `+` on a line of its own).
+    let mut sign_only = false;
     for word in s.split(' ').filter(|w| !w.is_empty()) {
         let word_width = width(word);
-        if !empty && line_width + 1 + word_width > w {
+        if !empty && !sign_only && line_width + 1 + word_width > w {
             lines.push(std::mem::take(&mut line));
             line.push_str(indent);
             line_width = width(indent);
             empty = true;
         }
+        let sign = empty && matches!(word, "+" | "−" | "-");
         if !empty {
             line.push(' ');
             line_width += 1;
@@ -91,6 +95,7 @@ pub(crate) fn wrap(s: &str, w: usize, indent: &str) -> Vec<String> {
         line.push_str(word);
         line_width += word_width;
         empty = false;
+        sign_only = sign;
     }
     if !empty {
         lines.push(line);
@@ -652,6 +657,23 @@ mod tests {
         );
     }
 
+    /// A term wider than a line stays with its sign: `+ 1000…0x` was a `+` on a line of its
+    /// own, the term under it (`expand` of `x² + 10¹²⁰x + y`).
+    #[test]
+    fn a_term_wider_than_a_line_keeps_its_sign() {
+        let big = format!("1{}x", "0".repeat(60));
+        let line = format!("    f = x² + {big} + y");
+        let lines = wrap_sum(&line, 40, "        ");
+        assert_eq!(
+            lines,
+            [
+                "    f = x²".to_string(),
+                format!("        + {big}"),
+                "        + y".to_string(),
+            ]
+        );
+    }
+
     /// A piece after a sign inside brackets keeps the depth it starts at, so its own sums
     /// break one level down: the Sutherland claim `{I_3 − g(… + … + …), H}` broke inside
     /// `sin(q2 − q3)`, its sum inside `g(…)` counted one level too shallow.
@@ -714,7 +736,7 @@ mod tests {
         #![proptest_config(proptest::prelude::ProptestConfig::with_cases(1000))]
 
         /// Wrapping keeps every word in order and breaks only at spaces, and a line is wider
-        /// than the width only when it holds one word after its indent.
+        /// than the width only when it holds one word after its indent, or a sign and one.
         #[test]
         fn a_wrapped_sum_keeps_its_words_and_its_width(
             picks in proptest::collection::vec(0..PIECES.len(), 0..60),
@@ -726,8 +748,9 @@ mod tests {
             let wrapped: Vec<String> = lines.iter().flat_map(|l| words(l)).collect();
             proptest::prop_assert_eq!(&wrapped, &words(&s), "{:?} at {}: {:?}", s, w, lines);
             for l in &lines {
+                let signed = |ws: &[String]| ws.len() == 2 && ["+", "−"].contains(&ws[0].as_str());
                 proptest::prop_assert!(
-                    crate::render::width(l) <= w || words(l).len() <= 1,
+                    crate::render::width(l) <= w || words(l).len() <= 1 || signed(&words(l)),
                     "{:?} at {}: {:?}", s, w, lines
                 );
             }
