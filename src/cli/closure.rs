@@ -130,9 +130,30 @@ pub fn run(job: &ClosureJob) -> anyhow::Result<bool> {
         printed
             .admit(&format!("the generator {name}"), name, name)
             .map_err(|why| anyhow!("--define {name}: {why}; choose another name"))?;
-        let e = subject
-            .parse(value.trim())
-            .map_err(|e| anyhow!("--define {name}: {e}"))?;
+        let e = subject.parse(value.trim()).map_err(|e| {
+            // A name that --define gives is no name of the system: say so, not how to declare
+            // one in the file.
+            let given = a
+                .define
+                .iter()
+                .filter_map(|d| d.split_once('='))
+                .find(|(n, _)| {
+                    e.to_string()
+                        .contains(&format!("unknown name '{}'", n.trim()))
+                });
+            match given {
+                Some((n, _)) if n.trim() == name => {
+                    anyhow!("--define {name}: its value uses {name}, the name it defines")
+                }
+                Some((n, v)) => anyhow!(
+                    "--define {name}: {} is given by --define, whose values use only the \
+                     system's names: write its value, ({}), in its place",
+                    n.trim(),
+                    v.trim()
+                ),
+                None => anyhow!("--define {name}: {e}"),
+            }
+        })?;
         defined.push((name.to_string(), e));
     }
     let mut all: Vec<&str> = names.iter().map(String::as_str).collect();

@@ -1621,6 +1621,36 @@ fn an_unlifted_search_says_how_to_see_every_value() {
     );
 }
 
+/// A `--define` whose value uses another defined name, or its own, says so: it was refused as
+/// an unknown name with the hint to declare a `[[function]]` in the file.
+#[test]
+fn closure_says_a_definition_cannot_use_another() {
+    for (defines, message) in [
+        (
+            ["Y=L", "X=Y^2"],
+            "superint: error: --define X: Y is given by --define, whose values use only the \
+             system's names: write its value, (L), in its place\n",
+        ),
+        (
+            ["X={X, L}", "Y=L"],
+            "superint: error: --define X: its value uses X, the name it defines\n",
+        ),
+    ] {
+        let args = [
+            "closure",
+            "systems/harmonic-rotor.toml",
+            "L",
+            "--define",
+            defines[0],
+            "--define",
+            defines[1],
+        ];
+        let out = superint(&args);
+        assert_eq!(out.status.code(), Some(2), "{args:?}");
+        assert_eq!(String::from_utf8_lossy(&out.stderr), message, "{args:?}");
+    }
+}
+
 /// A parameter that the condition sets is neither fixed nor kept symbolic by `closure`, as by
 /// `search`: `--fix beta=3` beside `--when 'beta = 1'` was taken, and the report said the
 /// linear algebra ran at `β = 3`, a value the generators no longer have.
