@@ -65,9 +65,10 @@ fn not_real(v: Var, value: &Expr) -> Option<String> {
     let vars = value.vars();
     (vars.variable(v).kind() != VarKind::Angle && !value.is_real()).then(|| {
         format!(
-            "the condition sets {} to {value}, which is not real: the variables and parameters \
+            "the condition sets {} to {}, which is not real: the variables and parameters \
              take real values",
-            vars.variable(v).unicode()
+            vars.variable(v).unicode(),
+            value.brief_excerpt()
         )
     })
 }
@@ -311,10 +312,13 @@ impl Condition {
                     VarKind::Angle => format!("e^{{i{name}}}"),
                     _ => name.to_string(),
                 };
+                // A long value or rate by its first terms and its size (a value of 5456 terms
+                // made a message of 0.7 MB).
                 let level = match moves {
-                    true => format!("{name} − ({value})"),
+                    true => format!("{name} − ({})", value.brief_excerpt()),
                     false => name,
                 };
+                let rate = rate.brief_excerpt();
                 // The rotor's resonance is the example where the system has an angle to
                 // resonate with; elsewhere the rule is said as it is.
                 let kept = match vars.angles().next() {
