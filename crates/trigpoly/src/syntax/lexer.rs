@@ -162,6 +162,8 @@ impl<'a> Lexer<'a> {
                         "; write a fraction such as 1/2"
                     }
                     '⁄' => "; write '/'",
+                    // As superint prints a radical's definition, `r = √(x² + y²)`.
+                    '√' => "; write a square root as sqrt(…)",
                     '‐'..='―' => "; a dash is no minus sign: write '-' or '−'",
                     '=' => {
                         "; an expression has no '=' (a claim has one, a condition one per variable)"
