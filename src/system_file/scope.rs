@@ -587,11 +587,20 @@ impl<'a> Scope<'a> {
                     .is_none_or(|k| f.name != self.file.families[k].name)
             })
         {
+            // Braces rewritten to a name (`K_{1,99999999999}` read as `K_1_99999999999`) are
+            // shown as written, over their whole width.
+            let families = &self.file.families[..self.families];
+            let braced = braced_instances(&text.value, families, self.indices)
+                .find(|b| b.span.start == span.start);
+            let (span, written) = match braced {
+                Some(b) => (Span::new(b.span.start, b.span.end), &text.value[b.span]),
+                None => (span, name),
+            };
             return Err(text.error(
                 source,
                 ErrorKind::Family,
                 span,
-                malformed_instance_message(family, name),
+                malformed_instance_message(family, written),
             ));
         }
         Ok(())

@@ -974,6 +974,17 @@ fn bad_inputs() -> Vec<(&'static str, Vec<u8>, &'static str, Vec<&'static str>)>
             vec!["expand", "bad.toml", "K_{-1,2}"],
         ),
         (
+            // Shown as written, over its whole width: it was 'K_1_9999999999', two characters
+            // short, as the braces were read.
+            "family instance with an index of ten digits in braces",
+            base_with(
+                "[[claim]]",
+                "[[family]]\nname = \"K\"\nvalue = \"A^m*x^n\"\n\n[[claim]]",
+            ),
+            "<command line>:1:5: 'K_{1,9999999999}' is not an instance of the family K_m_n",
+            vec!["expand", "bad.toml", "x + K_{1,9999999999}"],
+        ),
+        (
             "family instance with unclosed braces",
             base_with(
                 "[[claim]]",
