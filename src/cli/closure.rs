@@ -166,6 +166,27 @@ pub fn run(job: &ClosureJob) -> anyhow::Result<bool> {
         bail!("give the generators: names of functions of the system, or --define NAME=EXPR");
     }
     for name in all {
+        // An expression given as a generator has no name of its own for the table and the
+        // relations: `2*L` was named `2_L`, which no relation can hold, and `L*G1` and `L+G1`
+        // were both `L_G1`.
+        let name_like = name.chars().next().is_some_and(char::is_alphabetic)
+            && name
+                .chars()
+                .all(|c| c.is_alphanumeric() || "_{}, ".contains(c) || c == '\u{304}');
+        if !name_like && !defined.iter().any(|d| d.0 == name) {
+            // A name the system does not have, for the example.
+            let free = ["G", "X", "Y", "W", "Gen"]
+                .into_iter()
+                .find(|n| {
+                    subject.check_new_name(n, "--define").is_ok()
+                        && printed.admit("the generator", n, n).is_ok()
+                })
+                .unwrap_or("Gen");
+            bail!(
+                "'{name}' is an expression, not the name of a function: name it with --define \
+                 (--define '{free}={name}', then {free} among the generators)"
+            );
+        }
         let e = match defined.iter().find(|d| d.0 == name) {
             Some(d) => d.1.clone(),
             None => subject.parse(name).map_err(|e| anyhow!("{name}: {e}"))?,

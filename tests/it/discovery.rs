@@ -1645,6 +1645,41 @@ fn an_unlifted_search_says_how_to_see_every_value() {
     );
 }
 
+/// A generator written as an expression is sent to `--define`, with a name the system does not
+/// have: `2*L` failed as "2_L" cannot name a variable, and `L*G1` beside `L+G1` as `L_G1` named
+/// twice, names the user never wrote.
+#[test]
+fn closure_sends_an_expression_generator_to_define() {
+    for (file, generator, message) in [
+        (
+            "systems/harmonic-rotor.toml",
+            "2*L",
+            "superint: error: '2*L' is an expression, not the name of a function: name it with \
+             --define (--define 'G=2*L', then G among the generators)\n",
+        ),
+        (
+            "systems/two-centres.toml",
+            "L+G",
+            "superint: error: 'L+G' is an expression, not the name of a function: name it with \
+             --define (--define 'X=L+G', then X among the generators)\n",
+        ),
+    ] {
+        let args = ["closure", file, generator, "H"];
+        let out = superint(&args);
+        assert_eq!(out.status.code(), Some(2), "{args:?}");
+        assert_eq!(String::from_utf8_lossy(&out.stderr), message, "{args:?}");
+    }
+    // Names with braces, Greek letters and subscripts are names.
+    let out = superint(&[
+        "closure",
+        "systems/harmonic-rotor.toml",
+        "K_{1,1}",
+        "p_θ",
+        "Ω",
+    ]);
+    assert_eq!(out.status.code(), Some(0));
+}
+
 /// A `--define` whose value uses another defined name, or its own, says so: it was refused as
 /// an unknown name with the hint to declare a `[[function]]` in the file.
 #[test]
