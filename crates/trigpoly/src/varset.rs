@@ -445,7 +445,11 @@ impl VarSet {
     /// Whether `v` is a handle of this set: found in it, or in a set that declares the same
     /// variables.
     pub fn owns(&self, v: Var) -> bool {
-        v.declaration == self.declaration && v.index() < self.vars.len()
+        // A declaration's number is given to one list of variables (`Vars::intern`), and a
+        // handle is made only by a set of that list ([`VarSet::var_at`]), so its index is in
+        // range: the check every canonical bracket makes of its pairs is one comparison each.
+        debug_assert!(v.declaration != self.declaration || v.index() < self.vars.len());
+        v.declaration == self.declaration
     }
 
     /// The index of `v`, a handle of this set.
