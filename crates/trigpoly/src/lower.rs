@@ -605,8 +605,11 @@ impl<C: Coefficient> Lower<'_, C> {
             };
             ParseError::new(span, message)
         };
-        let LinearForm::Angles(form) = self.linear_form(arg, &bad)? else {
-            return Err(bad(arg.span));
+        let form = match self.linear_form(arg, &bad)? {
+            LinearForm::Angles(form) => form,
+            // The angle 0, a combination with no angle: `cos(0) = 1`, `sin(0) = 0`.
+            LinearForm::Constant(c) if c.is_zero() => Vec::new(),
+            LinearForm::Constant(_) => return Err(bad(arg.span)),
         };
         let real = form.iter().all(|(_, c)| c.im.is_zero());
         let imaginary = form.iter().all(|(_, c)| c.re.is_zero());

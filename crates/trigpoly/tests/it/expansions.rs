@@ -396,6 +396,10 @@ fn angle_multiples_written_as_integer_constants() {
         ("sin(2^(-1)*4*theta)", "sin(2*theta)"),
         ("exp(i*(1/2 + 1/2)*phi)", "exp(i*phi)"),
         ("exp((1 + i)^2/2*theta)", "exp(i*theta)"),
+        ("cos(0)", "1"),
+        ("sin(2 - 2)", "0"),
+        ("exp(i*0)", "1"),
+        ("cos(theta - theta + 0)", "1"),
     ];
     for (written, expanded) in cases {
         identity!(vars, written => expanded);

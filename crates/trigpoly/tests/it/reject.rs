@@ -404,6 +404,15 @@ fn cases() -> Vec<Case> {
             "line 1, column 13: cos takes an integer combination of angles, such as cos(2*theta - phi)\n  \
              cos(theta + 1)\n              ^",
         ),
+        // A constant angle other than 0 (`cos(0)` is 1).
+        case(
+            Qi,
+            "sin(2/3)",
+            "sin takes an integer combination of angles, such as sin(2*theta - phi)",
+            (1, 5),
+            "line 1, column 5: sin takes an integer combination of angles, such as sin(2*theta - phi)\n  \
+             sin(2/3)\n      ^^^",
+        ),
         // A combination without i, and one that is partly real and partly imaginary.
         case(
             Qi,
