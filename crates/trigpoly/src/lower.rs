@@ -248,7 +248,11 @@ impl<C: Coefficient> Lower<'_, C> {
         };
         Err(ParseError::new(
             span,
-            format!("unknown name '{name}'{meant} (known: {})", known.join(", ")),
+            format!(
+                "unknown name {}{meant} (known: {})",
+                quoted_name(name),
+                known.join(", ")
+            ),
         ))
     }
 
@@ -799,6 +803,20 @@ fn integral(
             Err(bad(e.span))
         }
         _ => Ok(form),
+    }
+}
+
+/// A name as a message quotes it: whole, or when it is long (a name typed by mistake may be a
+/// whole line: 100 KB echoed) its first characters and its length, `'aaaa…', 300 characters
+/// long`.
+fn quoted_name(name: &str) -> String {
+    const SHOWN: usize = 40;
+    match name.chars().count() {
+        n if n <= 2 * SHOWN => format!("'{name}'"),
+        n => format!(
+            "'{}…', {n} characters long",
+            name.chars().take(SHOWN).collect::<String>()
+        ),
     }
 }
 

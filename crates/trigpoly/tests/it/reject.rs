@@ -570,4 +570,13 @@ fn long_runs_of_names_split_or_are_refused() {
     let err = Poly::<Rational>::parse(&vars, &format!("{}q", "xy".repeat(5_000)))
         .expect_err("q is not declared");
     assert!(err.message.starts_with("unknown name"), "{}", err.message);
+    // Quoted by its first characters and its length, not echoed whole (10 001 characters).
+    assert!(
+        err.message.starts_with(&format!(
+            "unknown name '{}…', 10001 characters long (known: ",
+            "xy".repeat(20)
+        )) && err.message.len() < 200,
+        "{}",
+        err.message
+    );
 }
