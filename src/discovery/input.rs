@@ -142,11 +142,8 @@ pub fn parse_fixed(system: &System, text: &str) -> Result<Vec<(Var, Rational)>, 
             .parse()
             .map_err(|_| format!("'{}' is not a rational number", value.trim()))?;
         if q.is_zero() {
-            let space = system.space();
             // --when cannot set a parameter that a radicand or a denominator holds either.
-            let instead = match brackets::Condition::sets_a_radicand(space.radicals(), v)
-                .or_else(|| brackets::Condition::sets_a_denominator(space.denominator_atoms(), v))
-            {
+            let instead = match brackets::Condition::cannot_set(system.space(), v) {
                 Some(why) => format!("--when '{name} = 0' cannot set it either: {why}"),
                 None => {
                     format!("to study the system at {name} = 0, set it with --when '{name} = 0'")

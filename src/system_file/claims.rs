@@ -396,8 +396,6 @@ pub(crate) fn parse_condition(
 ) -> Result<Condition, FileError> {
     let usage = "a condition reads `variable = value`, such as \"p_theta = 2*I*omega/3\"";
     let vars = file.system.vars();
-    let atoms = file.system.space().denominator_atoms();
-    let radicals = file.system.space().radicals();
     let admit = |v: trigpoly::Var| {
         if vars.variable(v).kind() == VarKind::Angle {
             return Some(
@@ -406,7 +404,7 @@ pub(crate) fn parse_condition(
             );
         }
         // Refused at the variable, before the condition is made.
-        Condition::sets_a_denominator(atoms, v).or_else(|| Condition::sets_a_radicand(radicals, v))
+        Condition::cannot_set(file.system.space(), v)
     };
     let form = AssignmentForm {
         what: "a condition",

@@ -7,6 +7,7 @@ use std::time::Instant;
 use trigpoly::{AlgebraError, Expr, Rational, Style, Var, VarKind, Vars};
 
 use crate::error::EngineError;
+use crate::phase::PhaseSpace;
 use crate::system::System;
 
 /// A condition on phase space, applied after the bracket is formed: a substitution such as the
@@ -259,6 +260,14 @@ impl Condition {
         }
     }
 
+    /// Why a condition may not set `v` in `space`, if it may not: a denominator's polynomial
+    /// ([`Condition::sets_a_denominator`]) or a radicand ([`Condition::sets_a_radicand`])
+    /// involves it.
+    pub fn cannot_set(space: &PhaseSpace, v: Var) -> Option<String> {
+        Condition::sets_a_denominator(space.denominator_atoms(), v)
+            .or_else(|| Condition::sets_a_radicand(space.radicals(), v))
+    }
+
     /// Why a condition may not set `v`, if it may not: the polynomial of one of the
     /// denominator `atoms` involves it (see [`Condition::keeps_denominators`]).
     pub fn sets_a_denominator(atoms: &[(Var, Expr)], v: Var) -> Option<String> {
@@ -362,9 +371,7 @@ impl Condition {
         }
         Ok(())
     }
-}
 
-impl Condition {
     /// Refuses `vars` unless the condition was read in them: a condition of another system
     /// names its variables by handles that are not `vars`'s.
     fn within(&self, vars: &Vars) -> Result<(), EngineError> {
