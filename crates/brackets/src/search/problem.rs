@@ -222,6 +222,9 @@ struct Exponents<'a> {
     radical_powers: Vec<Vec<i64>>,
     /// The angular vectors `k`, canonical.
     angular: Vec<Vec<i64>>,
+    /// How many unknowns the space has, counted before the vectors were made and held to the
+    /// term limit.
+    count: usize,
 }
 
 impl<'a> Exponents<'a> {
@@ -257,7 +260,8 @@ impl<'a> Exponents<'a> {
         .fold(1u128, |product, (n, degree, signed)| {
             product.saturating_mul(exponent_vectors_count(n, degree, signed))
         });
-        too_many_unknowns(system.vars(), usize::try_from(count).unwrap_or(usize::MAX))?;
+        let count = usize::try_from(count).unwrap_or(usize::MAX);
+        too_many_unknowns(system.vars(), count)?;
         let (atoms, radicals) = (
             system.space().denominator_atoms(),
             system.space().radicals(),
@@ -283,6 +287,7 @@ impl<'a> Exponents<'a> {
                 .into_iter()
                 .filter(|k| canonical(k.iter().copied()))
                 .collect(),
+            count,
         })
     }
 
@@ -293,21 +298,6 @@ impl<'a> Exponents<'a> {
             .iter()
             .map(|k| if k.iter().all(|x| *x == 0) { 1 } else { 2 })
             .sum()
-    }
-
-    /// How many unknowns the space has; an error past the term limit, before any is formed.
-    fn count(&self) -> Result<usize, EngineError> {
-        let count = self
-            .positions
-            .len()
-            .saturating_mul(self.momenta.len())
-            .saturating_mul(self.poisson.len())
-            .saturating_mul(self.parameters.len())
-            .saturating_mul(self.denominator_powers.len())
-            .saturating_mul(self.radical_powers.len())
-            .saturating_mul(self.trig_functions());
-        too_many_unknowns(self.vars, count)?;
-        Ok(count)
     }
 
     /// The monomials `φ` without angles, one for each choice of an exponent vector of each
@@ -417,7 +407,7 @@ impl Problem {
         let exponents = Exponents::new(system, space, &variables, symbolic)?;
         // The monomials `φ` without angles, then (with denominators) those whose functions are
         // independent of the simpler ones, then each times the trigonometric functions.
-        let mut phases = exponents.phases(exponents.count()?);
+        let mut phases = exponents.phases(exponents.count);
         let (atoms, radicals) = (exponents.atoms, exponents.radicals);
         if !atoms.is_empty() || !radicals.is_empty() {
             phases = independent_as_functions(&vars, atoms, radicals, parameters, phases)?;
