@@ -301,10 +301,10 @@ impl<'a> Exponents<'a> {
     }
 
     /// The monomials `φ` without angles, one for each choice of an exponent vector of each
-    /// kind, among `count` unknowns.
-    fn phases(&self, count: usize) -> Vec<Unknown> {
+    /// kind.
+    fn phases(&self) -> Vec<Unknown> {
         let variables = self.variables;
-        let mut phases = Vec::with_capacity(count / self.trig_functions().max(1));
+        let mut phases = Vec::with_capacity(self.count / self.trig_functions().max(1));
         let choices = itertools::iproduct!(
             &self.positions,
             &self.momenta,
@@ -407,7 +407,7 @@ impl Problem {
         let exponents = Exponents::new(system, space, &variables, symbolic)?;
         // The monomials `φ` without angles, then (with denominators) those whose functions are
         // independent of the simpler ones, then each times the trigonometric functions.
-        let mut phases = exponents.phases(exponents.count);
+        let mut phases = exponents.phases();
         let (atoms, radicals) = (exponents.atoms, exponents.radicals);
         if !atoms.is_empty() || !radicals.is_empty() {
             phases = independent_as_functions(&vars, atoms, radicals, parameters, phases)?;
