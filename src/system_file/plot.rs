@@ -419,6 +419,14 @@ impl LoadedSystem {
 
     /// `what`, the function `e`, at the parameters' `values`.
     fn at_values(&self, what: &str, e: &Expr, values: &Values) -> Result<Expr, FileError> {
+        if let Some(v) = brackets::Condition::sets_a_divisor_to_zero(values, e) {
+            let name = self.display(v);
+            return Err(FileError::new(
+                ErrorKind::Condition,
+                COMMAND_LINE,
+                format!("--at sets {name} = 0, but {what} divides by {name}"),
+            ));
+        }
         e.subst_many(values).map_err(|err| {
             let mut error = self.computation_error(&EngineError::from(err));
             error.message = format!("{what} at the values of --at: {}", error.message);

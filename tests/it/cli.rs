@@ -1106,9 +1106,25 @@ fn cli_plot_bad_arguments_exit_2_with_a_message() {
             "the left side of a value of --from is one declared variable (a coordinate, an angle \
              or a momentum), found 'H'",
         ),
+        // A parameter set to 0 that H, a curve or a starting value divides by is named, as
+        // --when's condition names it; it was 'H at the values of --at: division by zero'.
         (
             vec!["L", "--at", "M = 0, omega = 1, I = 1", "--from", full],
-            "H at the values of --at: division by zero",
+            "<command line>: --at sets M = 0, but H divides by M",
+        ),
+        (
+            vec![
+                "L",
+                "--at",
+                "M = 0, omega = 1, I = 1",
+                "--from",
+                &full.replace("x = 1", "x = 1/M"),
+            ],
+            "<command line>: --at sets M = 0, but the starting value of x divides by M",
+        ),
+        (
+            vec!["L/omega", "--at", "M = 1, omega = 0, I = 1", "--from", full],
+            "<command line>: --at sets ω = 0, but 'L/omega' divides by ω",
         ),
         (
             vec![

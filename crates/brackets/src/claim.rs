@@ -360,16 +360,28 @@ impl Condition {
         for side in sides {
             self.within(side.vars())?;
         }
-        for (v, value) in &self.subs {
-            let divides = |e: &&Expr| e.exponent_range(*v).is_some_and(|(lo, _)| lo < 0);
-            if value.is_zero() && sides.iter().any(divides) {
-                let name = value.vars().variable(*v).unicode().to_string();
-                return Err(EngineError::Invalid(format!(
-                    "the condition sets {name} = 0, but {what} divides by {name}"
-                )));
-            }
+        let divisor = sides.iter().find_map(|side| {
+            Condition::sets_a_divisor_to_zero(&self.subs, side)
+                .map(|v| side.vars().variable(v).unicode().to_string())
+        });
+        match divisor {
+            Some(name) => Err(EngineError::Invalid(format!(
+                "the condition sets {name} = 0, but {what} divides by {name}"
+            ))),
+            None => Ok(()),
         }
-        Ok(())
+    }
+
+    /// The first variable that `values` sets to zero and `e` divides by (holds to a negative
+    /// power), if any: there `e` has no value (`p_x²/(2M)` at `M = 0`). The one check of a
+    /// condition ([`Condition::defined_on`]) and of the values a plot gives its parameters.
+    pub fn sets_a_divisor_to_zero(values: &[(Var, Expr)], e: &Expr) -> Option<Var> {
+        values
+            .iter()
+            .find(|(v, value)| {
+                value.is_zero() && e.exponent_range(*v).is_some_and(|(lo, _)| lo < 0)
+            })
+            .map(|(v, _)| *v)
     }
 
     /// Refuses `vars` unless the condition was read in them: a condition of another system
