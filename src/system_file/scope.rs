@@ -33,9 +33,46 @@ pub(crate) struct Scope<'a> {
 /// `K_2_3` → (family `K`, 2, 3) among `families`.
 pub(crate) fn instance_of(families: &[super::Family], name: &str) -> Option<(usize, i64, i64)> {
     let (head, m, n) = instance_parts(name)?;
-    let index = |s: &str| (s.len() <= 9).then(|| s.parse::<i64>().ok()).flatten();
     let k = families.iter().position(|f| f.name == head)?;
-    Some((k, index(m)?, index(n)?))
+    Some((k, index_value(m)?, index_value(n)?))
+}
+
+/// The most digits an index of a family instance has, leading zeros aside (`K_007_1` is
+/// `K_7_1`).
+const INDEX_DIGITS: usize = 9;
+
+/// An index of a family instance written in `digits`, if it has at most [`INDEX_DIGITS`]
+/// digits once its leading zeros are left out.
+fn index_value(digits: &str) -> Option<i64> {
+    let significant = digits.trim_start_matches('0');
+    match significant.is_empty() {
+        true => (!digits.is_empty()).then_some(0),
+        false => (significant.len() <= INDEX_DIGITS)
+            .then(|| significant.parse().ok())
+            .flatten(),
+    }
+}
+
+/// Why `name` (`K_99999999999_1`, braces rewritten) is not an instance of `family`, if it is
+/// because an index is too large: `written` is how it reads.
+fn oversized_index_message(family: &super::Family, name: &str, written: &str) -> Option<String> {
+    let (head, m, n) = instance_parts(name)?;
+    let too_long = |i: &str| i.trim_start_matches('0').len() > INDEX_DIGITS;
+    let which = match (too_long(m), too_long(n)) {
+        (false, false) => return None,
+        (true, false) => "its first index is",
+        (false, true) => "its second index is",
+        (true, true) => "both its indices are",
+    };
+    (head == family.name).then(|| {
+        format!(
+            "'{written}' is not an instance of the family {f}_{i}_{j}: {which} too large (an index has \
+             at most {INDEX_DIGITS} digits, leading zeros aside: 999999999 at most)",
+            f = family.name,
+            i = family.indices[0],
+            j = family.indices[1],
+        )
+    })
 }
 
 /// The parts of a name written as an instance of a family, whatever families there are:
@@ -596,12 +633,9 @@ impl<'a> Scope<'a> {
                 Some(b) => (Span::new(b.span.start, b.span.end), &text.value[b.span]),
                 None => (span, name),
             };
-            return Err(text.error(
-                source,
-                ErrorKind::Family,
-                span,
-                malformed_instance_message(family, written),
-            ));
+            let message = oversized_index_message(family, name, written)
+                .unwrap_or_else(|| malformed_instance_message(family, written));
+            return Err(text.error(source, ErrorKind::Family, span, message));
         }
         Ok(())
     }

@@ -719,6 +719,25 @@ fn cli_a_display_name_in_an_expression_names_the_function() {
     assert!(stderr(&o).contains("unknown name 'Re'"), "{}", stderr(&o));
 }
 
+/// A family's index may be written with leading zeros, which do not count toward its nine
+/// digits: `K_{0000000000001,1}` is `K_{1,1}` (it was refused as an index too long).
+#[test]
+fn cli_leading_zeros_of_a_family_index_are_not_digits_of_it() {
+    let rotor = "systems/harmonic-rotor.toml";
+    let plain = run(&["expand", rotor, "K_1_1", "--no-timings"], 0);
+    for written in [
+        "K_{0000000000001,1}",
+        "K_0000000000001_00000000001",
+        "K_01_1",
+    ] {
+        assert_eq!(
+            run(&["expand", rotor, written, "--no-timings"], 0),
+            plain,
+            "{written}"
+        );
+    }
+}
+
 /// Runs the binary and expects exit code 2, nothing on stdout and `message` on stderr.
 #[track_caller]
 fn assert_bad_usage(args: &[&str], message: &str) {

@@ -981,8 +981,20 @@ fn bad_inputs() -> Vec<(&'static str, Vec<u8>, &'static str, Vec<&'static str>)>
                 "[[claim]]",
                 "[[family]]\nname = \"K\"\nvalue = \"A^m*x^n\"\n\n[[claim]]",
             ),
-            "<command line>:1:5: 'K_{1,9999999999}' is not an instance of the family K_m_n",
+            "<command line>:1:5: 'K_{1,9999999999}' is not an instance of the family K_m_n: its \
+             second index is too large (an index has at most 9 digits, leading zeros aside: \
+             999999999 at most)\n 1 | x + K_{1,9999999999}\n   |     ^^^^^^^^^^^^^^^^",
             vec!["expand", "bad.toml", "x + K_{1,9999999999}"],
+        ),
+        (
+            "family instance with an index of eleven digits",
+            base_with(
+                "[[claim]]",
+                "[[family]]\nname = \"K\"\nvalue = \"A^m*x^n\"\n\n[[claim]]",
+            ),
+            "<command line>:1:1: 'K_99999999999_1' is not an instance of the family K_m_n: its \
+             first index is too large (an index has at most 9 digits",
+            vec!["expand", "bad.toml", "K_99999999999_1"],
         ),
         (
             "family instance with unclosed braces",
