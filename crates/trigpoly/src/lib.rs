@@ -53,7 +53,7 @@ pub mod syntax;
 mod varset;
 
 pub use error::AlgebraError;
-pub use lower::{split_names, FUNCTIONS};
+pub use lower::{quoted_name, split_names, FUNCTIONS};
 pub use lower::{Context, NoContext};
 pub use number::{
     Coefficient, ExactDivisor, GaussianAcc, GaussianInteger, GaussianRational, Integer, IntegerAcc,

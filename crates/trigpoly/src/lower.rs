@@ -809,7 +809,7 @@ fn integral(
 /// A name as a message quotes it: whole, or when it is long (a name typed by mistake may be a
 /// whole line: 100 KB echoed) its first characters and its length, `'aaaa…', 300 characters
 /// long`.
-fn quoted_name(name: &str) -> String {
+pub fn quoted_name(name: &str) -> String {
     const SHOWN: usize = 40;
     match name.chars().count() {
         n if n <= 2 * SHOWN => format!("'{name}'"),
