@@ -165,6 +165,21 @@ pub fn run(job: &ClosureJob) -> anyhow::Result<bool> {
     if all.is_empty() {
         bail!("give the generators: names of functions of the system, or --define NAME=EXPR");
     }
+    match &subject {
+        Subject::File(file) => file.refuse_repeated(&all, "the closure")?,
+        // A built-in system has no families: a name is one function however it is spelt
+        // (`P_{1,1}` is `P_1_1`).
+        Subject::Builtin(..) => {
+            let twice = (1..all.len())
+                .find(|&k| all[..k].iter().any(|n| identifier(n) == identifier(all[k])));
+            if let Some(k) = twice {
+                bail!(
+                    "{} is given twice: the closure takes each function once",
+                    trigpoly::quoted_name(all[k].trim())
+                );
+            }
+        }
+    }
     for name in all {
         // An expression given as a generator has no name of its own for the table and the
         // relations: `2*L` was named `2_L`, which no relation can hold, and `L*G1` and `L+G1`

@@ -334,6 +334,44 @@ impl LoadedSystem {
     }
 }
 
+impl LoadedSystem {
+    /// Refuses a function given twice among `names`: the same name (`L G1 L`), or one family
+    /// instance written two ways (`K_1_1 K_{01,1}`). A table would show it twice, a rank count
+    /// it twice and a closure find the relation `L = L`; `what` names the job in the message
+    /// (`a table`). The error is at the second, as given.
+    pub fn refuse_repeated(&self, names: &[impl AsRef<str>], what: &str) -> Result<(), FileError> {
+        let key = |name: &str| {
+            let braced = rewrite_braces(name, &self.families, &[]);
+            match instance_of(&self.families, braced.trim()) {
+                Some((k, m, n)) => format!("{}_{{{m},{n}}}", self.families[k].name),
+                None => name.split_whitespace().collect(),
+            }
+        };
+        let names: Vec<&str> = names.iter().map(AsRef::as_ref).collect();
+        let keys: Vec<String> = names.iter().map(|n| key(n)).collect();
+        let Some((second, first)) =
+            (1..keys.len()).find_map(|k| (0..k).find(|&j| keys[j] == keys[k]).map(|j| (k, j)))
+        else {
+            return Ok(());
+        };
+        let (given, before) = (names[second].trim(), names[first].trim());
+        let message = match given == before {
+            true => format!(
+                "{} is given twice: {what} takes each function once",
+                trigpoly::quoted_name(given)
+            ),
+            false => format!(
+                "{} is {}, given before: {what} takes each function once",
+                trigpoly::quoted_name(given),
+                trigpoly::quoted_name(before)
+            ),
+        };
+        let source = self.given("<expression>", names[second]);
+        let text = Text::whole(&source);
+        Err(text.error(&source, ErrorKind::Expression, text.trimmed_span(), message))
+    }
+}
+
 /// The bracket table of named functions (or family instances such as `K_1_1`) of the file;
 /// all its functions but `H` when `names` is empty. An entry that reaches a limit is `?`
 /// ([`TableResult::undecided`](crate::report::TableResult::undecided) lists them, with the
@@ -348,6 +386,7 @@ pub fn table_report(file: &LoadedSystem, names: &[impl AsRef<str>]) -> Result<Re
         .map(|f| f.name.clone())
         .collect();
     let names = tabulated_names(file, names, &defined)?;
+    file.refuse_repeated(&names, "a table")?;
     let system = with_instances(file, &names, &defined)?;
     let refs: Vec<&str> = names.iter().map(String::as_str).collect();
     // What fails is a bracket of the file's functions, not the names given.
@@ -473,6 +512,7 @@ pub fn rank_report(
         .iter()
         .map(|f| file.argument(f.as_ref()))
         .collect::<Result<Vec<_>, _>>()?;
+    file.refuse_repeated(functions, "a rank")?;
     let mut names = Vec::new();
     let mut exprs = Vec::new();
     for arg in &parsed {

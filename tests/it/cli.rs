@@ -738,6 +738,48 @@ fn cli_leading_zeros_of_a_family_index_are_not_digits_of_it() {
     }
 }
 
+/// A function given twice to a table, a rank or a closure is refused at its second mention,
+/// however it is spelt (`K_{01,1}` is `K_1_1`): a table showed its row twice, a rank counted
+/// it twice, and a closure of `K_1_1 K_01_1` found the relation `K_1_1 = K_01_1`. A bracket
+/// `{L, L}` is a bracket like another (0).
+#[test]
+fn cli_a_function_given_twice_is_refused_where_it_repeats() {
+    let rotor = "systems/harmonic-rotor.toml";
+    for (args, message) in [
+        (
+            vec!["table", rotor, "L", "G1", "L"],
+            "superint: error: <command line>:1:1: 'L' is given twice: a table takes each \
+             function once\n 1 | L\n   | ^\n",
+        ),
+        (
+            vec!["rank", rotor, "F2 + L", "G1", "F2+L"],
+            "superint: error: <command line>:1:1: 'F2+L' is 'F2 + L', given before: a rank \
+             takes each function once\n 1 | F2+L\n   | ^^^^\n",
+        ),
+        (
+            vec!["closure", rotor, "L", "G1", "L"],
+            "superint: error: <command line>:1:1: 'L' is given twice: the closure takes each \
+             function once\n 1 | L\n   | ^\n",
+        ),
+        (
+            vec!["closure", rotor, "L", "K_1_1", "K_{01,1}"],
+            "superint: error: <command line>:1:1: 'K_{01,1}' is 'K_1_1', given before: the \
+             closure takes each function once\n 1 | K_{01,1}\n   | ^^^^^^^^\n",
+        ),
+        (
+            vec!["closure", "--system", "harmonic", "L", "G1", "L"],
+            "superint: error: 'L' is given twice: the closure takes each function once\n",
+        ),
+    ] {
+        let o = superint(&args);
+        assert_eq!(o.status.code(), Some(2), "{args:?}");
+        assert!(stdout(&o).is_empty(), "{args:?}");
+        assert_eq!(stderr(&o), message, "{args:?}");
+    }
+    let out = run(&["bracket", rotor, "L", "L", "--no-timings"], 0);
+    assert!(out.contains("{L, L} = 0"), "{out}");
+}
+
 /// Runs the binary and expects exit code 2, nothing on stdout and `message` on stderr.
 #[track_caller]
 fn assert_bad_usage(args: &[&str], message: &str) {

@@ -1744,7 +1744,7 @@ fn closure_refuses_a_generator_named_twice_or_a_name_the_system_has() {
         (
             harmonic,
             vec!["L", "L"],
-            "computing the closure: L is named twice among the generators",
+            "<command line>:1:1: 'L' is given twice: the closure takes each function once",
         ),
         (
             harmonic,
