@@ -85,7 +85,23 @@ pub fn parse_condition(
     let vars = system.vars();
     let mut subs = Vec::new();
     let mut shown = Vec::new();
-    for piece in text.split(',') {
+    let pieces: Vec<&str> = text.split(',').collect();
+    for (k, piece) in pieces.iter().enumerate() {
+        // A comma with nothing after it (`M = 1,`) or before it (`, M = 1`), by its column.
+        if piece.trim().is_empty() && pieces.len() > 1 {
+            let (side, before) = match k {
+                0 => ("before", 0),
+                _ => ("after", k - 1),
+            };
+            let comma: usize = pieces[..=before]
+                .iter()
+                .map(|p| p.chars().count() + 1)
+                .sum();
+            return Err(format!(
+                "a condition is missing {side} the comma at column {comma}: a condition reads \
+                 `variable = value`, such as 'p_theta = 2*I*omega/3'"
+            ));
+        }
         let Some((lhs, rhs)) = piece.split_once('=') else {
             return Err(format!(
                 "'{piece}': a condition reads `variable = value`, such as 'p_theta = 2*I*omega/3'"

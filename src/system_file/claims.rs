@@ -584,7 +584,20 @@ pub(crate) fn parse_assignments(
         scope: file.scope(file.families.len()),
     };
     let mut assignments: Vec<Assignment> = Vec::new();
-    for piece in pieces {
+    for (k, piece) in pieces.iter().enumerate() {
+        // A comma with nothing after it (`M = 1,`), or before it (`, M = 1`): the caret goes
+        // under the comma.
+        if piece.value.trim().is_empty() && pieces.len() > 1 {
+            let (comma, side) = match k {
+                0 => (piece.separator(true), "before"),
+                _ => (piece.separator(false), "after"),
+            };
+            return Err(source.error(
+                ErrorKind::Condition,
+                comma,
+                format!("{} is missing {side} this comma: {}", form.what, form.usage),
+            ));
+        }
         let (lhs, rhs) = reader.sides(piece)?;
         let var = reader.variable(&lhs, &admit, &assignments)?;
         let (value, shown, pi_times) = reader.value(var, &rhs)?;

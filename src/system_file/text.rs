@@ -153,6 +153,17 @@ impl Text {
         }
     }
 
+    /// The span in the source of the one-byte separator just before the value (the comma
+    /// before a piece of a list; `after`: just after it), or of the whole value where the value
+    /// is not found in its source as written.
+    pub(crate) fn separator(&self, after: bool) -> Range<usize> {
+        match (self.offset, after) {
+            (Some(o), false) if o > 0 => o - 1..o,
+            (Some(o), true) => o + self.value.len()..o + self.value.len() + 1,
+            _ => self.whole_span(),
+        }
+    }
+
     /// The span in the source of the whole value.
     pub fn whole_span(&self) -> Range<usize> {
         self.source_span(Span::new(0, self.value.len()))

@@ -780,6 +780,68 @@ fn cli_a_function_given_twice_is_refused_where_it_repeats() {
     assert!(out.contains("{L, L} = 0"), "{out}");
 }
 
+/// A comma with no assignment after it (or before it) is said to be one, the caret under the
+/// comma: the caret stood past the end of the text, under nothing, with only the form of a
+/// condition as the message.
+#[test]
+fn cli_a_comma_with_no_assignment_after_it_is_underlined() {
+    let rotor = "systems/harmonic-rotor.toml";
+    let full = "x = 1, y = 0, theta = 0, p_x = 0, p_y = 1/2, p_theta = 1";
+    let plot = |at: &str, from: &str| {
+        let (at, from) = (at.to_string(), from.to_string());
+        let args = [
+            "plot", rotor, "L", "--at", &at, "--from", &from, "--time", "1",
+        ];
+        let mut args: Vec<String> = args.iter().map(|a| a.to_string()).collect();
+        args.extend(["-o".into(), "-".into()]);
+        args
+    };
+    for (args, message) in [
+        (
+            ["expand", rotor, "H", "--when", "M = 1,"]
+                .map(String::from)
+                .to_vec(),
+            "superint: error: <command line>:1:6: a condition is missing after this comma: a \
+             condition reads `variable = value`, such as \"p_theta = 2*I*omega/3\"\n 1 | M = \
+             1,\n   |      ^\n",
+        ),
+        (
+            ["bracket", rotor, "L", "H", "--when", ", M = 1"]
+                .map(String::from)
+                .to_vec(),
+            "superint: error: <command line>:1:1: a condition is missing before this comma: a \
+             condition reads `variable = value`, such as \"p_theta = 2*I*omega/3\"\n 1 | , M \
+             = 1\n   | ^\n",
+        ),
+        (
+            plot("M = 1, omega = 1, I = 1, ", full),
+            "superint: error: <command line>:1:24: a value of --at is missing after this comma: \
+             --at reads `parameter = number, …`, such as \"M = 1, omega = 3/2\"\n 1 | M = 1, \
+             omega = 1, I = 1, \n   |                        ^\n",
+        ),
+        (
+            [
+                "closure",
+                "--system",
+                "harmonic",
+                "L",
+                "G1",
+                "--when",
+                "M = 1,,omega = 2",
+            ]
+            .map(String::from)
+            .to_vec(),
+            "superint: error: --when: a condition is missing after the comma at column 6: a \
+             condition reads `variable = value`, such as 'p_theta = 2*I*omega/3'\n",
+        ),
+    ] {
+        let args: Vec<&str> = args.iter().map(String::as_str).collect();
+        let o = superint(&args);
+        assert_eq!(o.status.code(), Some(2), "{args:?}");
+        assert_eq!(stderr(&o), message, "{args:?}");
+    }
+}
+
 /// Runs the binary and expects exit code 2, nothing on stdout and `message` on stderr.
 #[track_caller]
 fn assert_bad_usage(args: &[&str], message: &str) {
