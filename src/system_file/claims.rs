@@ -424,16 +424,21 @@ pub(crate) fn parse_condition(
         .map(|a| (a.var, a.value.clone()))
         .collect();
     Condition::all(&text, subs).map_err(|e| {
-        // A refused condition is shown at the value of the variable it is about.
+        // A refused condition is shown at the value of the variable it is about, or at the
+        // variable where it may not be set at all (a radical, `r = 1`, or a denominator).
         let at = match &e {
             EngineError::RefusedCondition { var, .. } => assignments.iter().find(|a| a.var == *var),
             _ => None,
         };
-        let rhs = &at.unwrap_or(&assignments[0]).rhs;
-        rhs.error(
+        let a = at.unwrap_or(&assignments[0]);
+        let side = match vars.variable(a.var).kind() {
+            VarKind::Radical | VarKind::Denominator if at.is_some() => &a.lhs,
+            _ => &a.rhs,
+        };
+        side.error(
             source,
             ErrorKind::Condition,
-            rhs.trimmed_span(),
+            side.trimmed_span(),
             e.to_string(),
         )
     })
@@ -561,6 +566,8 @@ pub(crate) struct Assignment {
     pub value: Expr,
     /// `p_θ = 2Iω/3`.
     pub shown: String,
+    /// The left side.
+    pub lhs: Text,
     /// The right side.
     pub rhs: Text,
     /// Whether the value is `value·π` ([`AssignmentForm::pi`]).
@@ -605,6 +612,7 @@ pub(crate) fn parse_assignments(
             var,
             value,
             shown,
+            lhs,
             rhs,
             pi_times,
         });

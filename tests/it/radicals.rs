@@ -600,7 +600,8 @@ fn a_condition_on_a_radicands_variable_is_refused() {
 
 /// A radical stands for a function of the coordinates: a condition that sets it alone
 /// (`r = 1`) contradicts `r² = x² + y²`, and refuted the true `r² = x² + y²` there. It is
-/// refused, in a file's claim at its place and on the command line.
+/// refused, in a file's claim at its place and on the command line, the caret under the
+/// radical (it stood under the value).
 #[test]
 fn a_condition_on_a_radical_is_refused() {
     let claim = format!("{PLANAR}[[claim]]\nclaim = \"r^2 = x^2 + y^2\"\nwhen = \"r = 1\"\n");
@@ -608,16 +609,20 @@ fn a_condition_on_a_radical_is_refused() {
     let err = superint_refused(&["check", file.to_str().expect("a path")]);
     assert!(
         err.contains(
-            "on-r.toml:9:13: the condition sets r, which is a radical, a function of \
+            "on-r.toml:9:9: the condition sets r, which is a radical, a function of \
                       the other variables"
         ),
         "{err}"
     );
     let planar = scratch_text("radicals-condition", "planar.toml", PLANAR);
     let planar = planar.to_str().expect("a path");
-    let err = superint_refused(&["bracket", planar, "r", "H", "--when", "r = 2"]);
+    let err = superint_refused(&["bracket", planar, "r", "H", "--when", "k = 1, r = 2"]);
     assert!(
-        err.contains("the condition sets r, which is a radical"),
+        err.contains(
+            "<command line>:1:8: the condition sets r, which is a radical, a function of the \
+             other variables: a condition sets coordinates, momenta, angles or parameters; set \
+             those it is made of\n 1 | k = 1, r = 2\n   |        ^\n"
+        ),
         "{err}"
     );
 }
