@@ -29,6 +29,9 @@ pub(crate) struct RankClaim<'a> {
     pub(crate) expect: Expect,
     /// Where the claim is in `source`: what a refusal underlines.
     pub(crate) span: Range<usize>,
+    /// Where each function is in `source`: what a refusal of one of them (a limit its
+    /// derivatives reach) underlines.
+    pub(crate) functions: Vec<Range<usize>>,
     /// When its check began, for the time it took.
     pub(crate) start: Instant,
 }
@@ -167,11 +170,18 @@ impl From<AlgebraError> for FileError {
 impl ClaimSpec {
     /// The claim's identity as its certified rank answers it, its check begun at `start`.
     fn rank_claim(&self, start: Instant) -> RankClaim<'_> {
+        let functions = match &self.form {
+            ClaimForm::Rank { functions, .. } => {
+                functions.iter().map(|(_, t)| t.whole_span()).collect()
+            }
+            ClaimForm::Identity { .. } => Vec::new(),
+        };
         RankClaim {
             source: &self.source,
             id: &self.id,
             expect: self.expect,
             span: self.span.clone(),
+            functions,
             start,
         }
     }
@@ -862,12 +872,24 @@ impl LoadedSystem {
             id,
             expect,
             span,
+            functions,
             start,
         } = claim;
         if exprs.is_empty() {
             return Err(source.error(ErrorKind::Claim, span, "a rank needs at least one function"));
         }
-        let cert = rank(self.system.space(), exprs).map_err(|e| engine_error(source, span, &e))?;
+        let space = self.system.space();
+        let cert = rank(space, exprs).map_err(|e| {
+            // An error of one function's derivatives (a limit) is shown at that function; one
+            // of them all (no sample point where they are defined) at the whole claim.
+            let coordinates = space.coordinates();
+            let at = exprs
+                .iter()
+                .position(|f| coordinates.iter().any(|&c| space.derivative(f, c).is_err()))
+                .and_then(|k| functions.get(k).cloned())
+                .unwrap_or(span);
+            engine_error(source, at, &e)
+        })?;
         let mut result = RankResult::new(id, &self.system, names, expected, cert);
         result.claim = result
             .claim

@@ -525,14 +525,24 @@ pub fn rank_report(
         .map(AsRef::as_ref)
         .collect::<Vec<&str>>()
         .join(" ");
+    // Each function's place in the list, its spaces aside.
+    let mut spans = Vec::new();
+    let mut offset = 0;
+    for f in functions {
+        let f = f.as_ref();
+        let lead = f.len() - f.trim_start().len();
+        spans.push(offset + lead..offset + f.trim_end().len());
+        offset += f.len() + 1;
+    }
     let source = file.given("<expression>", &written);
     let claim = RankClaim {
         source: &source,
         id: "rank",
         expect: Expect::Proved,
         // A refusal (no sample point where the functions are defined, say) is about all of
-        // them: the caret underlines the whole list.
+        // them: the caret underlines the whole list; one of a function's derivatives, that one.
         span: 0..written.len(),
+        functions: spans,
         start,
     };
     let mut rank = file.rank_result(claim, names.clone(), &exprs, expected.unwrap_or(0))?;

@@ -842,6 +842,36 @@ fn cli_a_comma_with_no_assignment_after_it_is_underlined() {
     }
 }
 
+/// A rank refused for one function (a limit its derivatives reach) underlines that function,
+/// on the command line and in a file's claim: the caret underlined the whole list.
+#[test]
+fn cli_a_rank_refused_for_one_function_underlines_it() {
+    let o = superint(&["rank", "systems/calogero.toml", "x", "1/(x-y)^1000", "y"]);
+    assert_eq!(o.status.code(), Some(2));
+    assert!(
+        stderr(&o).starts_with(
+            "superint: error: <command line>:1:3: the exponent of (x − y) would reach -1001, past \
+             the limit of 1000\n 1 | x 1/(x-y)^1000 y\n   |   ^^^^^^^^^^^^\n"
+        ),
+        "{}",
+        stderr(&o)
+    );
+    let file = scratch_file("rank-one-function.toml");
+    let text = "hamiltonian = \"p_x^2/2\"\n[phase_space]\ncoordinates = [\"x\", \"y\"]\n\
+                denominators = [\"x - y\"]\n[[claim]]\nclaim = \"rank(x, 1/(x-y)^1000) = 2\"\n";
+    std::fs::write(&file, text).expect("write the file");
+    let o = superint(&["check", file.to_str().expect("a path")]);
+    assert_eq!(o.status.code(), Some(2));
+    let caret = format!("   | {}{}\n", " ".repeat(17), "^".repeat(12));
+    let message = "rank-one-function.toml:6:18: the exponent of (x − y) would reach -1001, past \
+                   the limit of 1000\n 6 | claim = \"rank(x, 1/(x-y)^1000) = 2\"\n";
+    assert!(
+        stderr(&o).contains(&format!("{message}{caret}")),
+        "{}",
+        stderr(&o)
+    );
+}
+
 /// Runs the binary and expects exit code 2, nothing on stdout and `message` on stderr.
 #[track_caller]
 fn assert_bad_usage(args: &[&str], message: &str) {
