@@ -93,6 +93,9 @@ impl ClosureArgs {
     }
 }
 
+/// The most characters a name given by --define has.
+const MAX_DEFINED_NAME: usize = 80;
+
 /// `P_{1,1}` → `P_1_1`: a name the generators' ring accepts.
 fn identifier(name: &str) -> String {
     let mut out = String::new();
@@ -121,8 +124,16 @@ pub fn run(job: &ClosureJob) -> anyhow::Result<bool> {
     for d in &a.define {
         let (name, value) = d
             .split_once('=')
-            .ok_or_else(|| anyhow!("--define '{d}': give NAME=EXPR"))?;
+            .ok_or_else(|| anyhow!("--define {}: give NAME=EXPR", trigpoly::quoted_name(d)))?;
         let name = name.trim();
+        // A name is echoed in every message and printed in the report: one past 80
+        // characters is a mistake (a whole expression before its `=`).
+        if name.chars().count() > MAX_DEFINED_NAME {
+            bail!(
+                "--define {}: a name has at most {MAX_DEFINED_NAME} characters",
+                trigpoly::quoted_name(name)
+            );
+        }
         subject.check_new_name(name, "--define")?;
         if defined.iter().any(|(n, _)| n == name) {
             bail!("--define gives {name} twice");
@@ -197,14 +208,22 @@ pub fn run(job: &ClosureJob) -> anyhow::Result<bool> {
                         && printed.admit("the generator", n, n).is_ok()
                 })
                 .unwrap_or("Gen");
+            // A long expression is shown by its start, and left out of the example.
+            let example = match name.chars().count() > 80 {
+                true => "…",
+                false => name,
+            };
             bail!(
-                "'{name}' is an expression, not the name of a function: name it with --define \
-                 (--define '{free}={name}', then {free} among the generators)"
+                "{} is an expression, not the name of a function: name it with --define \
+                 (--define '{free}={example}', then {free} among the generators)",
+                trigpoly::quoted_name(name)
             );
         }
         let e = match defined.iter().find(|d| d.0 == name) {
             Some(d) => d.1.clone(),
-            None => subject.parse(name).map_err(|e| anyhow!("{name}: {e}"))?,
+            None => subject
+                .parse(name)
+                .map_err(|e| anyhow!("{}: {e}", trigpoly::quoted_name(name)))?,
         };
         let display = subject.system().display_name(name).to_string();
         generators.push(NamedFunction::new(&identifier(name), &display, e));

@@ -244,7 +244,8 @@ impl Subject {
             return match built {
                 Some((display, s)) => Ok(Subject::Builtin(display, Box::new(s))),
                 None => bail!(
-                    "unknown system '{name}' (built-in: {})",
+                    "unknown system {} (built-in: {})",
+                    trigpoly::quoted_name(name),
                     superint::discovery::BUILTIN_SYSTEMS.join(", ")
                 ),
             };
@@ -286,7 +287,11 @@ impl Subject {
     /// names, as a claim about the system's own), each said as such.
     pub fn check_new_name(&self, name: &str, option: &str) -> anyhow::Result<()> {
         match BadName::of(name) {
-            Some(BadName::Malformed) => bail!("{option} '{name}': {}", BadName::Malformed.why()),
+            Some(BadName::Malformed) => bail!(
+                "{option} {}: {}",
+                trigpoly::quoted_name(name),
+                BadName::Malformed.why()
+            ),
             Some(bad) => bail!("{option} {name}: {}; choose another name", bad.why()),
             None => {}
         }

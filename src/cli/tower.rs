@@ -44,7 +44,8 @@ fn system_arg(s: &str) -> Result<SystemArg, String> {
         "" => Err("expected harmonic, gravity or a system file".into()),
         // A bare word that names no file is a misspelt built-in system, not a missing file.
         word if !word.contains(['/', '.']) && !std::path::Path::new(word).exists() => Err(format!(
-            "no built-in system '{word}' (harmonic, gravity), and no file of that name"
+            "no built-in system {} (harmonic, gravity), and no file of that name",
+            trigpoly::quoted_name(word)
         )),
         path => Ok(SystemArg::File(PathBuf::from(path))),
     }

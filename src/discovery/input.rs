@@ -104,12 +104,16 @@ pub fn parse_condition(
         }
         let Some((lhs, rhs)) = piece.split_once('=') else {
             return Err(format!(
-                "'{piece}': a condition reads `variable = value`, such as 'p_theta = 2*I*omega/3'"
+                "{}: a condition reads `variable = value`, such as 'p_theta = 2*I*omega/3'",
+                trigpoly::quoted_name(piece.trim())
             ));
         };
         let lhs = lhs.trim();
         let Some(v) = vars.lookup(lhs) else {
-            return Err(format!("'{lhs}' is not a variable of the system"));
+            return Err(format!(
+                "{} is not a variable of the system",
+                trigpoly::quoted_name(lhs)
+            ));
         };
         let value = parse(rhs.trim())?;
         shown.push(format!(
@@ -127,7 +131,12 @@ fn parameter(system: &System, name: &str) -> Result<Var, String> {
     let vars = system.vars();
     vars.lookup(name)
         .filter(|v| vars.variable(*v).kind() == trigpoly::VarKind::Parameter)
-        .ok_or_else(|| format!("'{name}' is not a parameter of the system"))
+        .ok_or_else(|| {
+            format!(
+                "{} is not a parameter of the system",
+                trigpoly::quoted_name(name)
+            )
+        })
 }
 
 /// Parameters named in `A,B` (kept symbolic by a search).
@@ -145,18 +154,24 @@ pub fn parse_fixed(system: &System, text: &str) -> Result<Vec<(Var, Rational)>, 
     for piece in text.split(',').filter(|p| !p.trim().is_empty()) {
         let Some((name, value)) = piece.split_once('=') else {
             return Err(format!(
-                "'{piece}': give a value as NAME=VALUE, such as omega=1"
+                "{}: give a value as NAME=VALUE, such as omega=1",
+                trigpoly::quoted_name(piece.trim())
             ));
         };
         let name = name.trim();
         let v = parameter(system, name)?;
         if out.iter().any(|(w, _)| *w == v) {
-            return Err(format!("'{name}' is given two values"));
+            return Err(format!(
+                "{} is given two values",
+                trigpoly::quoted_name(name)
+            ));
         }
-        let q: Rational = value
-            .trim()
-            .parse()
-            .map_err(|_| format!("'{}' is not a rational number", value.trim()))?;
+        let q: Rational = value.trim().parse().map_err(|_| {
+            format!(
+                "{} is not a rational number",
+                trigpoly::quoted_name(value.trim())
+            )
+        })?;
         if q.is_zero() {
             // --when cannot set a parameter that a radicand or a denominator holds either.
             let instead = match brackets::Condition::cannot_set(system.space(), v) {

@@ -683,17 +683,20 @@ impl AssignmentReader<'_> {
         };
         let Some(var) = var else {
             return refuse(format!(
-                "the left side of {} is one declared variable ({}), found '{}'",
+                "the left side of {} is one declared variable ({}), found {}",
                 self.form.what,
                 self.form.kinds,
-                lhs.value.trim()
+                trigpoly::quoted_name(lhs.value.trim())
             ));
         };
         if let Some(why) = admit(var) {
             return refuse(why);
         }
         if assignments.iter().any(|a| a.var == var) {
-            return refuse(format!("'{}' is fixed twice", lhs.value.trim()));
+            return refuse(format!(
+                "{} is fixed twice",
+                trigpoly::quoted_name(lhs.value.trim())
+            ));
         }
         Ok(var)
     }

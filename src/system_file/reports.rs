@@ -494,7 +494,8 @@ fn not_a_function(file: &LoadedSystem, name: &str, defined: &[String]) -> FileEr
         ErrorKind::Expression,
         &file.given("<expression>", "").origin,
         format!(
-            "'{name}' is not a function of {of} (known: {})",
+            "{} is not a function of {of} (known: {})",
+            trigpoly::quoted_name(name),
             known.join(", ")
         ),
     )

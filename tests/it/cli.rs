@@ -872,6 +872,77 @@ fn cli_a_rank_refused_for_one_function_underlines_it() {
     );
 }
 
+/// A name the command line echoes is quoted as the lowering quotes an unknown name, whole or,
+/// past 80 characters, by its first 40 and its length: a name typed by mistake was echoed
+/// whole (300 characters here, or a whole file pasted). `--define` refuses a name past 80
+/// characters, which every message and the report would print.
+#[test]
+fn cli_echoed_names_are_quoted_and_shortened_alike() {
+    let long = "a".repeat(300);
+    let quoted = format!("'{}…', 300 characters long", "a".repeat(40));
+    let rotor = "systems/harmonic-rotor.toml";
+    let define = format!("{long}=x");
+    let fix = format!("{long}=1");
+    for (args, message) in [
+        (
+            vec!["table", rotor, &long],
+            format!("{quoted} is not a function of systems/harmonic-rotor.toml"),
+        ),
+        (
+            vec!["closure", rotor, "L", "--define", &define],
+            format!("--define {quoted}: a name has at most 80 characters"),
+        ),
+        (
+            vec!["closure", rotor, "L", "--fix", &fix],
+            format!("--fix: {quoted} is not a parameter of the system"),
+        ),
+        (
+            vec!["closure", rotor, "L", "--symbolic", &long],
+            format!("--symbolic: {quoted} is not a parameter of the system"),
+        ),
+        (
+            vec!["closure", "--system", &long, "L"],
+            format!("unknown system {quoted} (built-in: harmonic"),
+        ),
+        (
+            vec!["closure", "--system", "harmonic", "L", "--when", &fix],
+            format!("--when: {quoted} is not a variable of the system"),
+        ),
+        (
+            vec!["expand", rotor, "x", "--when", &fix],
+            format!(
+                "one declared variable (a coordinate, a momentum or a parameter), found {quoted}"
+            ),
+        ),
+        (
+            vec!["closure", rotor, "L", &long],
+            format!("superint: error: {quoted}: <command line>:1:1: unknown name {quoted}"),
+        ),
+    ] {
+        let o = superint(&args);
+        assert_eq!(o.status.code(), Some(2), "{message}");
+        let err = stderr(&o);
+        assert!(err.contains(&message), "{err}");
+        assert!(!err.contains(&"a".repeat(81)), "{err}");
+    }
+    // A name of 80 characters is still one.
+    let eighty = "b".repeat(80);
+    let out = run(
+        &[
+            "closure",
+            rotor,
+            "L",
+            &eighty,
+            "--define",
+            &format!("{eighty}=x"),
+            "--degree",
+            "1",
+        ],
+        0,
+    );
+    assert!(out.contains(&eighty), "{out}");
+}
+
 /// Runs the binary and expects exit code 2, nothing on stdout and `message` on stderr.
 #[track_caller]
 fn assert_bad_usage(args: &[&str], message: &str) {
