@@ -525,13 +525,26 @@ impl Report {
         let outcomes = |o: ClaimOutcome| claims.iter().filter(|(_, c)| c.outcome() == o).count();
         let proved = outcomes(ClaimOutcome::Proved);
         let refuted = outcomes(ClaimOutcome::Refuted);
-        // With several files, an id says where it is: `main (section 2)`.
+        // With several files, an id says where it is: `main (section 2)`; an id that several
+        // claims of a section share, which of them: `A ({x, H} = p_x + 1)`, or
+        // `A ({x, H} = p_x + 1; section 2)`.
+        let shared =
+            |s: u32, id: &str| claims.iter().filter(|(t, c)| *t == s && c.id == id).count() > 1;
         let unexpected: Vec<String> = claims
             .iter()
             .filter(|(_, c)| !c.meets_expectation())
-            .map(|(s, c)| match files {
-                1 => c.id.clone(),
-                _ => format!("{} (section {s})", c.id),
+            .map(|(s, c)| {
+                let mut notes = Vec::new();
+                if shared(*s, &c.id) {
+                    notes.push(brief_statement(&c.statement));
+                }
+                if files > 1 {
+                    notes.push(format!("section {s}"));
+                }
+                match notes.is_empty() {
+                    true => c.id.clone(),
+                    false => format!("{} ({})", c.id, notes.join("; ")),
+                }
             })
             .collect();
         let verdict = if unexpected.is_empty() {
@@ -589,6 +602,15 @@ fn tower_summary(t: &TowerResult, timings: bool) -> String {
         t.max,
         seconds_in_parentheses(t.claim.seconds, timings)
     )
+}
+
+/// A claim's statement as a closing line names it: whole, or past 60 characters its first 50
+/// and an ellipsis.
+fn brief_statement(statement: &str) -> String {
+    match statement.chars().count() > 60 {
+        true => format!("{}…", statement.chars().take(50).collect::<String>()),
+        false => statement.to_string(),
+    }
 }
 
 /// ` (0.41 s)` when `timings`, else nothing: the seconds a closing line ends with.

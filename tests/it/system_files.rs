@@ -1940,6 +1940,36 @@ fn every_new_help_shows_an_example() {
     }
 }
 
+/// An id that several claims of a file share names the claim that did not meet its
+/// expectation with its statement: the summary said `2 NOT as expected: ladder, ladder`, of no
+/// help to tell them apart. An id of one claim is named alone.
+#[test]
+fn a_shared_id_is_named_with_its_statement() {
+    let dir = scratch("shared-id");
+    let file = format!(
+        "{BASE}\n[[claim]]\nid = \"ladder\"\nclaim = \"{{A, H}} = -i*omega*A\"\n\n[[claim]]\n\
+         id = \"ladder\"\nclaim = \"{{conj(A), H}} = i*omega*conj(A)\"\n\n[[claim]]\n\
+         id = \"alone\"\nclaim = \"{{A, H}} = 0\"\n"
+    );
+    std::fs::write(dir.join("shared.toml"), file).expect("write");
+    let o = superint_in(&dir, &["check", "shared.toml", "--no-timings"]);
+    assert_eq!(o.status.code(), Some(1), "{}", text(&o.stderr));
+    let out = text(&o.stdout);
+    assert!(
+        out.ends_with(
+            "4 claims in 1 file: 1 proved, 3 refuted; 3 NOT as expected: ladder ({A, H} = −iω \
+             A), ladder ({conj(A), H} = iω conj(A)), alone\n"
+        ),
+        "{out}"
+    );
+    let o = superint_in(
+        &dir,
+        &["check", "shared.toml", "shared.toml", "--no-timings"],
+    );
+    let out = text(&o.stdout);
+    assert!(out.contains("ladder ({A, H} = −iω A; section 2)"), "{out}");
+}
+
 /// Ids are a file's own: the same id in two files is two claims, in the text's summary and in
 /// the JSON's (which counted one, refuted, and lost the proved one), and the claim that did
 /// not meet its expectation is named with its section.
