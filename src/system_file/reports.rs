@@ -252,6 +252,23 @@ pub fn expand_report(
     when: Option<&str>,
 ) -> Result<Report, FileError> {
     let start = Instant::now();
+    if expressions.is_empty() {
+        // A report of nothing had a title of no names and no line.
+        let message = match file.caller {
+            Caller::CommandLine => {
+                "nothing to expand: give the expressions, such as: superint expand FILE H"
+            }
+            Caller::Program => {
+                "nothing to expand: give the expressions in the call, such as \
+                 expand_report(&system, &[\"H\".to_string()], None)"
+            }
+        };
+        return Err(FileError::new(
+            ErrorKind::Expression,
+            &file.given("<expression>", "").origin,
+            message,
+        ));
+    }
     let arguments = expressions
         .iter()
         .map(|e| file.argument(e))

@@ -674,6 +674,10 @@ fn cli_bad_usage_exits_2_with_a_message() {
             "invalid value '65535' for '--threads <N>': 65535 is not in 1..=256",
         ),
         (&["paper", "--bogus"][..], "unexpected argument '--bogus'"),
+        (
+            &["expand", "systems/harmonic-rotor.toml"][..],
+            "the following required arguments were not provided:\n  <EXPRS>...",
+        ),
     ] {
         assert_bad_usage(args, message);
     }

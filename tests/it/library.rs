@@ -584,6 +584,13 @@ fn report_errors_name_the_program_not_the_command_line() {
     assert!(cli_words(&err).starts_with("<condition>:1:11: unknown name 'w'"));
     let err = rank_report(&rotor, &["A", "Omega", "B"], None).unwrap_err();
     assert!(cli_words(&err).starts_with("<expression>:1:1: unknown name 'B'"));
+    // Nothing to expand is refused, as a table of nothing is: it was a report of no line.
+    let err = expand_report(&rotor, &[], None).unwrap_err();
+    assert_eq!(
+        cli_words(&err),
+        "<expression>: nothing to expand: give the expressions in the call, such as \
+         expand_report(&system, &[\"H\".to_string()], None)"
+    );
     let err = table_report(&rotor, &["A", "B"]).unwrap_err();
     assert_eq!(
         cli_words(&err),
