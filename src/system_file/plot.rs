@@ -342,14 +342,22 @@ impl LoadedSystem {
             None => at(d).map(|c| c.is_zero()),
             Some(roots) => roots.vanishes(&d.subst_many(&point).ok()?),
         };
-        if let Some((v, _)) = space
+        // Where the parameters' values alone decide it (a denominator `a − b` at `a = b`), the
+        // fault is theirs, not the starting point's.
+        let by_parameters =
+            |d: &Expr| !values.is_empty() && d.subst_many(values).is_ok_and(|at| at.is_constant());
+        let place = |d: &Expr| match by_parameters(d) {
+            true => ("at the values of --at", "--at"),
+            false => ("at the starting point", "--from"),
+        };
+        if let Some((v, d)) = space
             .denominator_atoms()
             .iter()
             .find(|(v, d)| e.low_degree(*v).is_some_and(|low| low < 0) && vanishes(d) == Some(true))
         {
+            let (at, option) = place(d);
             return Some(format!(
-                "{what} is not defined at the starting point: it divides by {}, which is 0 \
-                 there (--from)",
+                "{what} is not defined {at}: it divides by {}, which is 0 there ({option})",
                 self.display(*v)
             ));
         }
@@ -360,9 +368,9 @@ impl LoadedSystem {
             let divides = value.is_zero() && e.low_degree(*r).is_some_and(|low| low < 0);
             (e.contains(*r) && (negative || divides)).then_some((r, radicand, value))
         })?;
+        let (at, option) = place(radicand);
         Some(format!(
-            "{what} is not defined at the starting point: {} is the root of {value} there \
-             (--from)",
+            "{what} is not defined {at}: {} is the root of {value} there ({option})",
             Expr::radical_definition(*r, radicand)
         ))
     }

@@ -1444,6 +1444,63 @@ fn cli_plot_bad_arguments_exit_2_with_a_message() {
     );
 }
 
+/// A denominator or a radicand that the parameters' values alone make 0 or negative is the
+/// fault of --at, not of the starting point: `--at 'a = 2, b = 2'` with a denominator `a − b`
+/// was said to be undefined 'at the starting point (--from)'.
+#[test]
+fn cli_plot_blames_at_for_what_the_parameters_decide() {
+    let out = scratch_file("blame.svg");
+    let out = out.to_str().unwrap();
+    let system = |name: &str, text: &str| {
+        let path = scratch_file(name);
+        std::fs::write(&path, text).expect("write the file");
+        path
+    };
+    let header = "hamiltonian = \"p_x^2/2 + x^2*D\"\n[phase_space]\ncoordinates = [\"x\"]\n\
+                  parameters = [\"a\", \"b\"]\n";
+    let denominator = system(
+        "blame-denominator.toml",
+        &format!("{header}denominators = [\"a - b\"]\n").replace("x^2*D", "x^2/(a - b)"),
+    );
+    let radical = system(
+        "blame-radical.toml",
+        &format!("{header}radicals = {{ r = \"a - b - 1\" }}\n").replace("x^2*D", "x^2*r"),
+    );
+    let on_x = system(
+        "blame-from.toml",
+        &format!("{header}denominators = [\"x - a\"]\n").replace("x^2*D", "1/(x - a)"),
+    );
+    for (file, message) in [
+        (
+            &denominator,
+            "<command line>: H is not defined at the values of --at: it divides by (a − b), \
+             which is 0 there (--at)",
+        ),
+        (
+            &radical,
+            "<command line>: H is not defined at the values of --at: r = √(a − b − 1) is the \
+             root of -1 there (--at)",
+        ),
+        (
+            &on_x,
+            "<command line>: H is not defined at the starting point: it divides by (x − a), \
+             which is 0 there (--from)",
+        ),
+    ] {
+        let file = file.to_str().unwrap();
+        let args = [
+            "plot",
+            file,
+            "x",
+            "--at",
+            "a = 2, b = 2",
+            "--from",
+            "x = 2, p_x = 0",
+        ];
+        assert_bad_usage(&[&args[..], &["--time", "1", "-o", out]].concat(), message);
+    }
+}
+
 /// A Poincaré section of the oscillator's ellipse at `x = 0` (upward): every crossing is at
 /// `y = −1/2`, `p_y = 0`, once a period `2π`; one that is never crossed is an error.
 #[test]
