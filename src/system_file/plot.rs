@@ -250,6 +250,16 @@ impl LoadedSystem {
                 self.display(a.var)
             );
             let what = format!("the starting value of {}", self.display(a.var));
+            // Shown where it is written in --from.
+            if let Some(v) = brackets::Condition::sets_a_divisor_to_zero(values, &a.value) {
+                let name = self.display(v);
+                return Err(a.rhs.error(
+                    &source,
+                    ErrorKind::Condition,
+                    a.rhs.trimmed_span(),
+                    format!("--at sets {name} = 0, but {what} divides by {name}"),
+                ));
+            }
             let value = number(
                 &self.at_values(&what, &a.value, values)?,
                 &a.rhs,

@@ -1348,7 +1348,8 @@ fn cli_plot_bad_arguments_exit_2_with_a_message() {
                 "--from",
                 &full.replace("x = 1", "x = 1/M"),
             ],
-            "<command line>: --at sets M = 0, but the starting value of x divides by M",
+            "<command line>:1:5: --at sets M = 0, but the starting value of x divides by M\n \
+             1 | x = 1/M, y = 0,",
         ),
         (
             vec!["L/omega", "--at", "M = 1, omega = 0, I = 1", "--from", full],
