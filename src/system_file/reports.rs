@@ -402,8 +402,9 @@ pub fn table_report(file: &LoadedSystem, names: &[impl AsRef<str>]) -> Result<Re
         .skip(1)
         .map(|f| f.name.clone())
         .collect();
+    // As given, braces and all (`K_{1,1}` beside `K_1_1`).
+    file.refuse_repeated(names, "a table")?;
     let names = tabulated_names(file, names, &defined)?;
-    file.refuse_repeated(&names, "a table")?;
     let system = with_instances(file, &names, &defined)?;
     let refs: Vec<&str> = names.iter().map(String::as_str).collect();
     // What fails is a bracket of the file's functions, not the names given.

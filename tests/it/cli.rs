@@ -756,6 +756,11 @@ fn cli_a_function_given_twice_is_refused_where_it_repeats() {
              function once\n 1 | L\n   | ^\n",
         ),
         (
+            vec!["table", rotor, "K_1_1", "L", "K_{1,1}"],
+            "superint: error: <command line>:1:1: 'K_{1,1}' is 'K_1_1', given before: a table \
+             takes each function once\n 1 | K_{1,1}\n   | ^^^^^^^\n",
+        ),
+        (
             vec!["rank", rotor, "F2 + L", "G1", "F2+L"],
             "superint: error: <command line>:1:1: 'F2+L' is 'F2 + L', given before: a rank \
              takes each function once\n 1 | F2+L\n   | ^^^^\n",
