@@ -224,6 +224,59 @@ fn ring_axioms_hold_for_trigonometric_polynomials_over_gaussian_rationals() {
     ring_axioms(&elements);
 }
 
+/// `z^e` by repeated squaring is `z·z·…·z` (`e` factors, of `z⁻¹` for `e < 0`), for exponents
+/// around the bits' edges (0, 1, 2, 7, 8, 13) and negative ones; `0^e` with `e < 0` is `None`.
+fn powers_are_repeated_products<T: Ring>(
+    elements: &[T],
+    pow: impl Fn(&T, i64) -> Option<T>,
+    inv: impl Fn(&T) -> Option<T>,
+) {
+    for z in elements {
+        for e in [0i64, 1, 2, 3, 7, 8, 13, -1, -2, -7] {
+            let factor = if e < 0 { inv(z) } else { Some(z.clone()) };
+            let Some(factor) = factor else {
+                assert_eq!(pow(z, e), None, "{z:?}^{e} of zero");
+                continue;
+            };
+            let product = (0..e.unsigned_abs()).fold(z.one_like(), |acc, _| acc.mul(&factor));
+            assert_eq!(pow(z, e), Some(product), "{z:?}^{e}");
+        }
+    }
+}
+
+#[test]
+fn powers_are_repeated_products_in_q() {
+    powers_are_repeated_products(
+        &[
+            Rational::zero(),
+            Rational::one(),
+            -Rational::one(),
+            q("-7/12"),
+            Rational::from(i64::MAX),
+            Rational::new(1, i64::MIN + 1),
+        ],
+        Rational::pow,
+        Rational::try_inv,
+    );
+}
+
+#[test]
+fn powers_are_repeated_products_in_gaussian_rationals() {
+    powers_are_repeated_products(
+        &[
+            z("0"),
+            z("1"),
+            GaussianRational::i(),
+            z("1 + i"),
+            z("3/5 + 4/5*i"),
+            z("1/2 - 1/3*i"),
+            gauss(i64::MAX, i64::MIN),
+        ],
+        GaussianRational::pow,
+        GaussianRational::try_inv,
+    );
+}
+
 /// The gcd at the edges of `Integer`'s tiers: a zero beside a long value, `i128::MIN` (whose
 /// absolute value, the gcd of it with 0, is past `i128`), and a short factor of a long value.
 #[test]
