@@ -109,6 +109,12 @@ impl GaussianAcc {
 /// assert_eq!((&z * &z.conj()).to_string(), "1");
 /// assert_eq!(z.try_inv().unwrap(), z.conj());
 /// ```
+///
+/// # Panics
+///
+/// Division by zero with `/` or `/=` panics ("division by zero"); [`GaussianRational::try_inv`]
+/// is the checked inverse, and [`GaussianRational::pow`] of zero to a negative power returns
+/// `None`.
 #[derive(Clone, PartialEq, Eq, Hash, Default)]
 pub struct GaussianRational {
     /// Real part.

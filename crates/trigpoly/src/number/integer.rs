@@ -245,9 +245,11 @@ impl Integer {
         (self.div_exact(&g) * other).abs()
     }
 
-    /// Exact division.
+    /// Exact division: the result is only meaningful when `d` divides `self`.
     ///
-    /// Panics if `d` is zero; the result is only meaningful when `d` divides `self`.
+    /// # Panics
+    ///
+    /// Panics if `d` is zero.
     pub fn div_exact(&self, d: &Integer) -> Integer {
         match (self.small(), d.small()) {
             // Values of 63 bits: the quotient cannot overflow (a zero divisor panics).
@@ -259,7 +261,11 @@ impl Integer {
         }
     }
 
-    /// Whether `d` divides `self` (`d` nonzero).
+    /// Whether `d` divides `self`.
+    ///
+    /// # Panics
+    ///
+    /// Panics if `d` is zero.
     pub fn is_divisible_by(&self, d: &Integer) -> bool {
         match (self.small(), d.small()) {
             (Some(a), Some(b)) => a % b == 0,
@@ -271,7 +277,8 @@ impl Integer {
         }
     }
 
-    /// `self^e`.
+    /// `self^e`. Its cost is that of the result's `e` times the bits of `self`: a `u32`
+    /// exponent on a base past one bit can ask for gigabytes.
     pub fn pow(&self, e: u32) -> Integer {
         if let Some(v) = self.small() {
             if let Some(p) = v.checked_pow(e) {
@@ -326,6 +333,8 @@ enum DivisorKind {
 
 impl ExactDivisor {
     /// Prepares `d`, which must not be zero.
+    ///
+    /// A zero `d` is not refused here: [`ExactDivisor::divide`] then panics.
     pub fn new(d: &Integer) -> ExactDivisor {
         let kind = match d.to_i64() {
             Some(-1) => DivisorKind::MinusOne,
@@ -349,6 +358,10 @@ impl ExactDivisor {
     }
 
     /// `a / d`, for `a` a multiple of `d` (the quotient is wrong otherwise).
+    ///
+    /// # Panics
+    ///
+    /// Panics if the divisor was prepared from zero.
     #[inline]
     pub fn divide(&self, a: &Integer) -> Integer {
         match (a.small(), self.kind) {

@@ -25,6 +25,11 @@ use super::Integer;
 /// assert_eq!((a + b).to_string(), "1");
 /// assert_eq!(Rational::new(-6, 8).to_string(), "-3/4");
 /// ```
+///
+/// # Panics
+///
+/// Division by zero with `/` or `/=` panics ("division by zero"); [`Rational::try_inv`] is
+/// the checked inverse, and [`Rational::pow`] of zero to a negative power returns `None`.
 #[derive(Clone, PartialEq, Eq, Hash)]
 pub struct Rational(Repr);
 
@@ -198,7 +203,12 @@ impl Rational {
         }
     }
 
-    /// `num/den`, reduced. Panics if `den == 0`.
+    /// `num/den`, reduced.
+    ///
+    /// # Panics
+    ///
+    /// Panics if `den == 0` ("denominator is zero"); [`Rational::from_fraction`] returns
+    /// `None` there instead.
     pub fn new(num: i64, den: i64) -> Rational {
         assert!(den != 0, "denominator is zero");
         Rational::from_i128(num as i128, den as i128)
@@ -317,6 +327,11 @@ impl Rational {
     }
 
     /// `self^e` for any integer `e`; `None` for `0^e` with `e < 0`.
+    ///
+    /// By repeated squaring: about `2·log₂|e|` products, the last of them on numbers of about
+    /// `|e|` times the bits of `self`'s. The cost grows with the size of the result, not with
+    /// the number of products: `2^(2^40)` has 2^40 bits (128 GiB) and does not end in any
+    /// useful time, though it takes 41 squarings.
     pub fn pow(&self, e: i64) -> Option<Rational> {
         let mut base = if e < 0 { self.try_inv()? } else { self.clone() };
         let mut k = e.unsigned_abs();
