@@ -7,8 +7,7 @@ use std::ops::Range;
 
 use brackets::System;
 use trigpoly::{
-    display_forms, is_identifier, latex_unwritable, unbarred, Span, VarSet, Vars, LATEX_LETTERS,
-    RESERVED,
+    display_forms, is_identifier, latex_unwritable, unbarred, Span, VarSet, Vars, RESERVED,
 };
 
 use super::error::{ErrorKind, FileError};
@@ -17,13 +16,11 @@ use super::LoadedSystem;
 
 /// Why a letter cannot be in a name or a display name, when LaTeX output could not write it
 /// ([`latex_unwritable`]): `LaTeX has no letter 'é' (…)`; a character other than a letter (a
-/// mark over a letter, a sign, one that prints nothing) is said by its code point.
+/// mark over a letter, a sign, one that prints nothing) is said by its code point. The words
+/// are [`trigpoly::BadName::Unwritable`]'s.
 pub fn unwritable_letter(c: char) -> Option<String> {
     latex_unwritable(c.encode_utf8(&mut [0; 4]))?;
-    Some(match c.is_alphabetic() {
-        true => format!("LaTeX has no letter '{c}' ({LATEX_LETTERS})"),
-        false => format!("LaTeX has no letter U+{:04X} ({LATEX_LETTERS})", c as u32),
-    })
+    Some(trigpoly::BadName::Unwritable(c).to_string())
 }
 
 /// Whether `c` shows nothing, or moves or turns the text around it: a control character
@@ -56,33 +53,29 @@ fn invisible(c: char) -> bool {
         )
 }
 
-/// Why a name cannot name anything new, whatever the system has: each caller says it in its
-/// own words (`'2Q' cannot name a function: …`, `--define '2Q': …`).
+/// Why a name cannot name anything new in a system file, whatever the system has: each caller
+/// says it in its own words (`'2Q' cannot name a function: …`, `--define '2Q': …`).
+///
+/// The rule is the variable sets' one ([`trigpoly::BadName`]: an identifier, no empty
+/// subscript, letters LaTeX can write, not `i` or a function), which the file format widens
+/// by the names it gives a meaning of its own ([`reserved`]: `H`, `rank`).
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub enum BadName {
-    /// Not letters, digits and `_` starting with a letter (or `_`, [`BadName::EmptySubscript`]).
-    Malformed,
-    /// Beginning or ending in `_` or holding `__` (`_a`, `a_`, `_`, `a__b`): each `_` starts a
-    /// subscript, so that such a name has an empty one or one of nothing, which LaTeX writes
-    /// as `x_{}` (printed as `x`), `\mathrm{_a}` (a lone subscript `a`) or not at all.
-    EmptySubscript,
-    /// A letter LaTeX output could not write, and why ([`unwritable_letter`]).
-    Unwritable(String),
-    /// A reserved name, and why ([`reserved`]).
+    /// A name no variable set takes, and why ([`trigpoly::BadName`]).
+    Unnamed(trigpoly::BadName),
+    /// A name the file format reserves, and why ([`reserved`]): `i` and the functions, which
+    /// [`trigpoly::BadName::Reserved`] refuses too, said with the file's own `rank` and `H`.
     Reserved(String),
 }
 
 impl BadName {
-    /// The first reason `name` is refused, if any: malformed, unwritable, reserved.
+    /// The first reason `name` is refused, if any: malformed, an empty subscript, unwritable,
+    /// reserved.
     pub fn of(name: &str) -> Option<BadName> {
-        if !is_identifier(name) {
-            Some(BadName::Malformed)
-        } else if name.starts_with('_') || name.ends_with('_') || name.contains("__") {
-            Some(BadName::EmptySubscript)
-        } else if let Some(why) = latex_unwritable(name).and_then(unwritable_letter) {
-            Some(BadName::Unwritable(why))
-        } else {
-            reserved(name).map(BadName::Reserved)
+        match trigpoly::BadName::of(name) {
+            // The file's words for i and the functions, which list its own reserved names.
+            Some(trigpoly::BadName::Reserved) | None => reserved(name).map(BadName::Reserved),
+            Some(bad) => Some(BadName::Unnamed(bad)),
         }
     }
 
@@ -92,18 +85,19 @@ impl BadName {
     pub fn declaring(&self, name: &str, what: &str) -> String {
         match self {
             BadName::Reserved(why) => why.clone(),
-            BadName::EmptySubscript => format!("'{name}' cannot be a name: {}", self.why()),
-            _ => format!("'{name}' cannot name {what}: {}", self.why()),
+            BadName::Unnamed(trigpoly::BadName::EmptySubscript) => {
+                format!("'{name}' cannot be a name: {}", self.why())
+            }
+            BadName::Unnamed(_) => format!("'{name}' cannot name {what}: {}", self.why()),
         }
     }
 
     /// The reason in words: `a name is letters, …`, `LaTeX has no letter 'é' (…)`, `'H' is
     /// reserved for the Hamiltonian`.
-    pub fn why(&self) -> &str {
+    pub fn why(&self) -> String {
         match self {
-            BadName::Malformed => "a name is letters, digits and '_', starting with a letter",
-            BadName::EmptySubscript => "a name cannot begin or end in '_' or hold '__'",
-            BadName::Unwritable(why) | BadName::Reserved(why) => why,
+            BadName::Unnamed(bad) => bad.to_string(),
+            BadName::Reserved(why) => why.clone(),
         }
     }
 }

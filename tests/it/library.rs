@@ -203,6 +203,58 @@ fn a_refused_family_leaves_no_trace() {
     );
 }
 
+/// One rule for names: a name a variable set refuses ([`trigpoly::BadName`]) is refused by the
+/// file loader, for a parameter of a file and for a function added in code, with the same
+/// reason; the loader refuses `H` and `rank` besides, which a variable set takes.
+#[test]
+fn the_loaders_names_are_the_variable_sets_and_h_and_rank() {
+    let file = |parameter: &str| {
+        let text = format!(
+            "name = \"oscillator\"\nhamiltonian = \"p_x^2/2 + x^2/2\"\n[phase_space]\n\
+             coordinates = [\"x\"]\nparameters = [{parameter:?}]\n"
+        );
+        load_system_text("oscillator.toml", &text, &LimitsOverride::default())
+    };
+    file("k").expect("a good name loads");
+    let mut rotor = harmonic_rotor_file();
+    for name in ["2Q", "a b", "a_", "_a", "a__b", "θé", "x²"] {
+        let why = trigpoly::BadName::of(name).expect(name).to_string();
+        let vars = VarSet::builder().coordinate(name).build().map(|_| ());
+        assert_eq!(
+            vars.unwrap_err().to_string(),
+            format!("{name:?} cannot name a variable: {why}"),
+            "{name:?}"
+        );
+        let loaded = file(name).map(|_| ()).unwrap_err().message;
+        let added = rotor.add_function(name, "F", "x").unwrap_err().message;
+        let (as_parameter, as_function) = match name.contains('_') {
+            true => [0; 2]
+                .map(|_| format!("'{name}' cannot be a name: {why}"))
+                .into(),
+            false => (
+                format!("'{name}' cannot name a parameter: {why}"),
+                format!("'{name}' cannot name a function: {why}"),
+            ),
+        };
+        assert_eq!((loaded, added), (as_parameter, as_function), "{name:?}");
+    }
+    for (name, why) in [
+        (
+            "cos",
+            "'cos' is reserved (i, cos, sin, exp, conj, re, im, rank)",
+        ),
+        (
+            "rank",
+            "'rank' is reserved (i, cos, sin, exp, conj, re, im, rank)",
+        ),
+        ("H", "'H' is reserved for the Hamiltonian"),
+    ] {
+        assert_eq!(file(name).map(|_| ()).unwrap_err().message, why);
+        let taken = VarSet::builder().coordinate(name).build().map(|_| ());
+        assert_eq!(taken.is_ok(), name != "cos", "{name}");
+    }
+}
+
 /// A name the system already has, in any spelling, a reserved one, or a malformed index is
 /// refused with what it is.
 #[test]

@@ -9,7 +9,7 @@ use crate::error::AlgebraError;
 mod names;
 
 pub use names::{
-    display_forms, is_identifier, latex_unwritable, unbarred, LATEX_LETTERS, RESERVED,
+    display_forms, is_identifier, latex_unwritable, unbarred, BadName, LATEX_LETTERS, RESERVED,
 };
 use names::{render_name, spell_out};
 
@@ -790,15 +790,9 @@ impl VarSetBuilder {
                 }
                 continue;
             }
-            if !is_identifier(&v.name) || RESERVED.contains(&v.name.as_str()) {
+            if let Some(bad) = BadName::of(&v.name) {
                 return Err(AlgebraError::Invalid(format!(
-                    "{:?} cannot name a variable (reserved or not an identifier)",
-                    v.name
-                )));
-            }
-            if let Some(c) = latex_unwritable(&v.name) {
-                return Err(AlgebraError::Invalid(format!(
-                    "{:?} cannot name a variable: LaTeX has no letter {c:?} ({LATEX_LETTERS})",
+                    "{:?} cannot name a variable: {bad}",
                     v.name
                 )));
             }
@@ -858,9 +852,62 @@ mod tests {
     fn function_names_are_reserved() {
         for name in ["i", "cos", "sin", "exp", "conj", "re", "im"] {
             let err = VarSet::builder().coordinate("x").parameter(name).build();
-            assert!(err.is_err(), "{name}");
+            assert_eq!(
+                err.map(|_| ()),
+                Err(AlgebraError::Invalid(format!(
+                    "{name:?} cannot name a variable: i, cos, sin, exp, conj, re and im are \
+                     reserved"
+                ))),
+                "{name}"
+            );
         }
         assert!(VarSet::builder().parameter("real").build().is_ok());
+    }
+
+    /// The builder refuses a name by [`BadName`], the rule superint's file loader applies too,
+    /// each with its reason: not an identifier, an empty subscript (`a_`, which LaTeX wrote as
+    /// `\mathrm{a_}`, was taken here and refused by the loader), a letter LaTeX cannot write.
+    #[test]
+    fn a_bad_name_is_refused_with_its_reason() {
+        for (name, why) in [
+            (
+                "2Q",
+                "a name is letters, digits and '_', starting with a letter",
+            ),
+            (
+                "p x",
+                "a name is letters, digits and '_', starting with a letter",
+            ),
+            (
+                "",
+                "a name is letters, digits and '_', starting with a letter",
+            ),
+            ("a_", "a name cannot begin or end in '_' or hold '__'"),
+            ("_a", "a name cannot begin or end in '_' or hold '__'"),
+            ("a__b", "a name cannot begin or end in '_' or hold '__'"),
+            (
+                "θé",
+                "LaTeX has no letter 'é' (a name's letters are ASCII, Greek (alpha or α), ħ, ℓ \
+                 and the subscript digits ₀–₉)",
+            ),
+            (
+                "x²",
+                "LaTeX has no letter U+00B2 (a name's letters are ASCII, Greek (alpha or α), ħ, \
+                 ℓ and the subscript digits ₀–₉)",
+            ),
+        ] {
+            assert_eq!(
+                VarSet::builder().coordinate(name).build().map(|_| ()),
+                Err(AlgebraError::Invalid(format!(
+                    "{name:?} cannot name a variable: {why}"
+                ))),
+                "{name:?}"
+            );
+        }
+        for name in ["a_b", "p_theta", "x₁", "ħ", "H", "rank"] {
+            assert_eq!(BadName::of(name), None, "{name}");
+            VarSet::builder().coordinate(name).build().expect(name);
+        }
     }
 
     #[test]

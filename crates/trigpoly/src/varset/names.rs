@@ -2,6 +2,8 @@
 //! of a name (Greek letters spelled out or written, subscripts, bars), and the letters LaTeX
 //! output cannot write.
 
+use std::fmt;
+
 use crate::print::write_display;
 
 /// Names that expressions give a meaning of their own: `i` and the functions (a variable
@@ -56,6 +58,84 @@ pub fn is_identifier(s: &str) -> bool {
     let mut chars = s.chars();
     matches!(chars.next(), Some(c) if c.is_alphabetic() || c == '_')
         && chars.all(|c| c.is_alphanumeric() || c == '_')
+}
+
+/// Why a name cannot name a variable of any set: the one rule that
+/// [`VarSetBuilder::build`](crate::VarSetBuilder::build) applies, and that a program reading
+/// names (superint's system-file loader) applies before its own refusals. Its `Display` is the
+/// reason in words.
+///
+/// ```
+/// use trigpoly::BadName;
+/// assert_eq!(BadName::of("p_x"), None);
+/// assert_eq!(BadName::of("2Q"), Some(BadName::Malformed));
+/// assert_eq!(BadName::of("a__b"), Some(BadName::EmptySubscript));
+/// assert_eq!(BadName::of("é"), Some(BadName::Unwritable('é')));
+/// assert_eq!(BadName::of("cos"), Some(BadName::Reserved));
+/// assert_eq!(
+///     BadName::of("cos").unwrap().to_string(),
+///     "i, cos, sin, exp, conj, re and im are reserved"
+/// );
+/// ```
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+pub enum BadName {
+    /// Not letters, digits and `_` starting with a letter (or `_`, [`BadName::EmptySubscript`]):
+    /// [`is_identifier`] fails.
+    Malformed,
+    /// Beginning or ending in `_` or holding `__` (`_a`, `a_`, `_`, `a__b`): each `_` starts a
+    /// subscript, so that such a name has an empty one or one of nothing, which LaTeX writes
+    /// as `x_{}` (printed as `x`), `\mathrm{_a}` (a lone subscript `a`) or not at all.
+    EmptySubscript,
+    /// A character LaTeX output could not write ([`latex_unwritable`]): such a name would stop
+    /// `pdflatex`.
+    Unwritable(char),
+    /// One of [`RESERVED`], which expressions give a meaning of their own.
+    Reserved,
+}
+
+impl BadName {
+    /// The first reason `name` is refused, if any: malformed, an empty subscript, a letter
+    /// LaTeX cannot write, reserved.
+    pub fn of(name: &str) -> Option<BadName> {
+        if !is_identifier(name) {
+            Some(BadName::Malformed)
+        } else if name.starts_with('_') || name.ends_with('_') || name.contains("__") {
+            Some(BadName::EmptySubscript)
+        } else if let Some(c) = latex_unwritable(name) {
+            Some(BadName::Unwritable(c))
+        } else if RESERVED.contains(&name) {
+            Some(BadName::Reserved)
+        } else {
+            None
+        }
+    }
+}
+
+impl fmt::Display for BadName {
+    /// The reason: `a name is letters, …`, `LaTeX has no letter 'é' (…)`; a character other
+    /// than a letter (a mark over a letter, a sign, one that prints nothing) is said by its
+    /// code point.
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            BadName::Malformed => {
+                f.write_str("a name is letters, digits and '_', starting with a letter")
+            }
+            BadName::EmptySubscript => {
+                f.write_str("a name cannot begin or end in '_' or hold '__'")
+            }
+            BadName::Unwritable(c) if c.is_alphabetic() => {
+                write!(f, "LaTeX has no letter '{c}' ({LATEX_LETTERS})")
+            }
+            BadName::Unwritable(c) => {
+                write!(
+                    f,
+                    "LaTeX has no letter U+{:04X} ({LATEX_LETTERS})",
+                    *c as u32
+                )
+            }
+            BadName::Reserved => f.write_str("i, cos, sin, exp, conj, re and im are reserved"),
+        }
+    }
 }
 
 const GREEK: &[(&str, &str, &str)] = &[
