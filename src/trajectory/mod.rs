@@ -179,6 +179,11 @@ impl Numeric {
 
     /// The value at `state` (indexed by variable; an angle's entry is the angle itself), as
     /// `(re, im)`.
+    ///
+    /// # Panics
+    ///
+    /// Panics if `state` has no entry for a variable the function holds (a state shorter
+    /// than its variable set).
     pub fn eval(&self, state: &[f64]) -> (f64, f64) {
         let atoms: Vec<f64> = self.stand_ins.iter().map(|d| d.value(state)).collect();
         let (mut re, mut im) = (0.0, 0.0);
@@ -199,6 +204,10 @@ impl Numeric {
     }
 
     /// The real part of the value at `state`.
+    ///
+    /// # Panics
+    ///
+    /// As [`Numeric::eval`]: if `state` has no entry for a variable the function holds.
     pub fn real(&self, state: &[f64]) -> f64 {
         self.eval(state).0
     }
@@ -341,6 +350,11 @@ impl Flow {
     /// keeps the state at `t = 0` and `samples` more (`steps` if there are fewer steps), at
     /// steps as evenly spaced as the steps allow (equally when `samples` divides `steps`), the
     /// last step included.
+    ///
+    /// # Panics
+    ///
+    /// Panics if `start` does not hold one value for each variable of the space, or if
+    /// `steps` or `samples` is 0.
     pub fn integrate(
         &self,
         start: &[f64],
@@ -370,6 +384,11 @@ impl Flow {
     /// section. Each crossing is found within its step on the cubic that matches the states
     /// and velocities at both ends (Hermite's, accurate to the order of the method), by
     /// regula falsi on `section` along it.
+    ///
+    /// # Panics
+    ///
+    /// Panics if `start` does not hold one value for each variable of the space, or if
+    /// `steps` is 0.
     pub fn section(
         &self,
         start: &[f64],

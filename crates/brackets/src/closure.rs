@@ -195,6 +195,10 @@ pub struct Closure {
 
 impl Closure {
     /// The bracket `{G_a, G_b}` as text: `−ω² L`, `0`, or the expression itself.
+    ///
+    /// # Panics
+    ///
+    /// Panics if `a` or `b` is not the index of a generator (`names.len()` or more).
     pub fn render_bracket(&self, a: usize, b: usize) -> String {
         match &self.brackets[a][b] {
             Bracket::Polynomial { poly, .. } => poly.render(Style::Unicode),
