@@ -518,7 +518,10 @@ impl<C: Coefficient> Poly<C> {
 
     /// The exact zero test of the ring with denominator atoms and radicals: whether the element
     /// cleared of its denominators and reduced by its radicals ([`Poly::cleared`]) is zero;
-    /// [`Poly::is_zero`] on a set without either.
+    /// [`Poly::is_zero`] on a set without either. Where [`Poly::is_zero`] asks whether there
+    /// are no terms, this asks whether the value is zero once `(D)·(D)⁻¹ = 1` and `r² = R`
+    /// are used: `r² − x² − 1` for `r = √(x² + 1)` has terms and vanishes. It can fail where
+    /// `is_zero` cannot: clearing multiplies, and may pass the term limit.
     ///
     /// ```
     /// use trigpoly::{Expr, VarSet};

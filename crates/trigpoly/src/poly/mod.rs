@@ -244,7 +244,21 @@ impl<C: Coefficient> Poly<C> {
         self.coeffs.is_empty()
     }
 
-    /// Whether this is the zero polynomial: the exact zero test.
+    /// Whether this is the zero polynomial (no terms): the exact zero test of a set without
+    /// denominator atoms or radicals.
+    ///
+    /// With them, terms are not unique (`(x − y)·(x − y)⁻¹ = 1`, `r² = R` for a radical
+    /// `r = √R`), and an element can be zero without being the zero polynomial: decide such
+    /// an element with [`Poly::vanishes`], which clears the denominators and reduces the
+    /// radicals first. `is_zero` is then only a sufficient test.
+    ///
+    /// ```
+    /// use trigpoly::{Expr, VarSet};
+    /// let vars = VarSet::builder().coordinate("x").radical("r", "x^2 + 1").build().unwrap();
+    /// let e = Expr::parse(&vars, "r^2 - x^2 - 1").unwrap();
+    /// assert!(!e.is_zero());
+    /// assert!(e.vanishes().unwrap());
+    /// ```
     pub fn is_zero(&self) -> bool {
         self.coeffs.is_empty()
     }
