@@ -2,6 +2,7 @@
 //! rational points, with angles evaluated only at rational points of the unit circle.
 
 use std::collections::HashMap;
+use std::fmt;
 
 use super::Poly;
 use crate::error::AlgebraError;
@@ -401,8 +402,12 @@ impl<'a> ScaledValue<'a> {
 ///     .with_angle(theta, Rational::new(3, 5), Rational::new(4, 5))
 ///     .unwrap();
 /// assert!(point.value(x).is_some());
+/// assert_eq!(point.to_string(), "x = 1/2, cos θ = 3/5, sin θ = 4/5");
 /// ```
-#[derive(Clone, Debug)]
+///
+/// Two points are equal when they give the same values to the variables of the same set (and
+/// are both valid, or invalid for the same reason).
+#[derive(Clone, Debug, PartialEq, Eq)]
 pub struct Point {
     vars: Vars,
     values: Vec<Option<GaussianRational>>,
@@ -535,10 +540,54 @@ impl Point {
 
     /// The value given to `v` (for an angle, `e^{iθ} = cos θ + i sin θ`).
     ///
+    /// ```
+    /// use trigpoly::{Point, VarSet};
+    /// let vars = VarSet::builder().coordinate("x").coordinate("y").build().unwrap();
+    /// let x = vars.lookup("x").unwrap();
+    /// assert_eq!(Point::new(&vars).with(x, 2.into()).to_string(), "x = 2");
+    /// ```
+    ///
     /// # Panics
     ///
     /// If `v` is a handle of another set ([`VarSet::owns`](crate::VarSet::owns)).
     pub fn value(&self, v: Var) -> Option<&GaussianRational> {
         self.values[self.vars.index_of(v)].as_ref()
+    }
+}
+
+impl fmt::Display for Point {
+    /// The values given, in the set's order and Unicode names: `x = 1/2, cos θ = 3/5,
+    /// sin θ = 4/5` (an angle by its cosine and sine); a variable without a value is left out,
+    /// and a point with none is `no values`.
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        let number = |q: &Rational| {
+            crate::print::render_number(&GaussianRational::from(q.clone()), crate::Style::Unicode)
+        };
+        let mut first = true;
+        for (v, value) in self.vars.vars().zip(&self.values) {
+            let Some(value) = value else { continue };
+            if !std::mem::take(&mut first) {
+                f.write_str(", ")?;
+            }
+            let variable = self.vars.variable(v);
+            let name = variable.unicode();
+            match variable.kind() {
+                VarKind::Angle => write!(
+                    f,
+                    "cos {name} = {}, sin {name} = {}",
+                    number(&value.re),
+                    number(&value.im)
+                )?,
+                _ => write!(
+                    f,
+                    "{name} = {}",
+                    crate::print::render_number(value, crate::Style::Unicode)
+                )?,
+            }
+        }
+        if first {
+            f.write_str("no values")?;
+        }
+        Ok(())
     }
 }

@@ -210,3 +210,36 @@ fn a_real_value_for_an_angle_must_be_on_the_unit_circle() {
         Err(AlgebraError::NotOnUnitCircle("θ".into()))
     );
 }
+
+/// A point prints the values it gives, in the set's order and Unicode names, an angle by its
+/// cosine and sine; two points are equal when they give the same values.
+#[test]
+fn a_point_prints_its_values_and_equals_a_point_of_the_same_values() {
+    let vars = phase_space();
+    let (x, theta, omega) = (var(&vars, "x"), var(&vars, "theta"), var(&vars, "omega"));
+    let point = || {
+        Point::new(&vars)
+            .with(omega, Rational::new(-3, 2))
+            .with_angle(theta, Rational::new(-3, 5), Rational::new(4, 5))
+            .unwrap()
+            .with(x, Rational::new(1, 2))
+    };
+    assert_eq!(
+        point().to_string(),
+        "x = 1/2, cos θ = −3/5, sin θ = 4/5, ω = −3/2"
+    );
+    assert_eq!(Point::new(&vars).to_string(), "no values");
+    let phi = var(&vars, "phi");
+    assert_eq!(
+        Point::new(&vars).with(phi, -Rational::one()).to_string(),
+        "cos φ = −1, sin φ = 0"
+    );
+    assert_eq!(point(), point());
+    assert_ne!(point(), point().with(x, Rational::new(1, 3)));
+    assert_ne!(point(), Point::new(&vars));
+    // An angle at 2, off the unit circle, is kept with the error the evaluation reports.
+    assert_ne!(
+        Point::new(&vars).with(theta, Rational::one()),
+        Point::new(&vars).with(theta, Rational::from(2))
+    );
+}
