@@ -51,9 +51,20 @@ pub trait Field: Clone + PartialEq + Debug {
     fn inv(&self) -> Self;
 }
 
-/// An element of `F_p`, `p =` [`PRIME`].
+/// An element of `F_p`, `p =` [`PRIME`]. It prints as its residue in `[0, p)`.
+///
+/// ```
+/// use brackets::modular::{Fp, PRIME};
+/// assert_eq!(Fp::from_i64(-1).to_string(), (PRIME - 1).to_string());
+/// ```
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, Default)]
 pub struct Fp(u64);
+
+impl std::fmt::Display for Fp {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        write!(f, "{}", self.0)
+    }
+}
 
 impl Fp {
     /// `a mod p`.
@@ -878,6 +889,17 @@ mod tests {
         assert_eq!(inverse_mod(PRIME - 1, PRIME), PRIME - 1);
         let (f, g) = (4_660_046_610_375_530_309u64, 7_540_113_804_746_346_429u64);
         assert_eq!((inverse_mod(f, g) as u128 * f as u128) % g as u128, 1);
+    }
+
+    #[test]
+    fn a_residue_prints_as_its_value_below_p() {
+        assert_eq!(Fp::new(0).to_string(), "0");
+        assert_eq!(Fp::new(PRIME + 7).to_string(), "7");
+        assert_eq!(Fp::from_i64(-1).to_string(), "4611686018427387846");
+        assert_eq!(
+            Fp::from_rational(&Rational::new(1, 2)).unwrap().to_string(),
+            "2305843009213693924"
+        );
     }
 
     #[test]

@@ -28,6 +28,26 @@ pub enum UpperBound {
     },
 }
 
+impl std::fmt::Display for UpperBound {
+    /// The reason in words, as a sentence's clause: `the rank is at most the number of
+    /// functions or of coordinates`, `the 4 minors bordering the nonzero one vanish
+    /// identically`.
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        match self {
+            UpperBound::Size => {
+                f.write_str("the rank is at most the number of functions or of coordinates")
+            }
+            UpperBound::VanishingMinors { count: 1 } => {
+                f.write_str("the one minor bordering the nonzero one vanishes identically")
+            }
+            UpperBound::VanishingMinors { count } => write!(
+                f,
+                "the {count} minors bordering the nonzero one vanish identically"
+            ),
+        }
+    }
+}
+
 /// A certified rank.
 #[derive(Clone, Debug)]
 pub struct RankCertificate {
@@ -465,6 +485,22 @@ impl<'a> Minors<'a> {
 mod tests {
     use super::*;
     use crate::systems::harmonic_rotor;
+
+    #[test]
+    fn an_upper_bound_prints_its_reason() {
+        assert_eq!(
+            UpperBound::Size.to_string(),
+            "the rank is at most the number of functions or of coordinates"
+        );
+        assert_eq!(
+            UpperBound::VanishingMinors { count: 1 }.to_string(),
+            "the one minor bordering the nonzero one vanishes identically"
+        );
+        assert_eq!(
+            UpperBound::VanishingMinors { count: 9 }.to_string(),
+            "the 9 minors bordering the nonzero one vanish identically"
+        );
+    }
 
     fn rank_of(functions: &[&str]) -> RankCertificate {
         let rotor = harmonic_rotor();

@@ -58,6 +58,19 @@ impl VarKind {
     }
 }
 
+impl fmt::Display for VarKind {
+    /// The kind in words, without its article ([`VarKind::described`] has it): `coordinate`,
+    /// `Poisson variable`.
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        let described = self.described();
+        f.write_str(
+            described
+                .split_once(' ')
+                .map_or(described, |(_, kind)| kind),
+        )
+    }
+}
+
 /// A variable handle: its index in its `VarSet`, and which variables that set declares (sets
 /// that declare the same variables, whatever their limits, share handles). A handle used with a
 /// set that declares other variables is refused ([`VarSet::owns`]), where its index alone would
@@ -847,6 +860,23 @@ impl fmt::Display for VarSet {
 mod tests {
     use super::*;
     use crate::{GaussianRational, Poly};
+
+    #[test]
+    fn a_kind_prints_as_messages_name_it_without_its_article() {
+        let kinds = [
+            (VarKind::Coordinate, "coordinate"),
+            (VarKind::Momentum, "momentum"),
+            (VarKind::Parameter, "parameter"),
+            (VarKind::Angle, "angle"),
+            (VarKind::Poisson, "Poisson variable"),
+            (VarKind::Denominator, "denominator"),
+            (VarKind::Radical, "radical"),
+        ];
+        for (kind, text) in kinds {
+            assert_eq!(kind.to_string(), text);
+            assert!(kind.described().ends_with(&format!(" {text}")), "{kind:?}");
+        }
+    }
 
     #[test]
     fn function_names_are_reserved() {
