@@ -74,6 +74,13 @@ fn not_real(v: Var, value: &Expr) -> Option<String> {
     })
 }
 
+impl std::fmt::Display for Condition {
+    /// The condition as it reads (its `text`: `p_θ = 2Iω`).
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.write_str(&self.text)
+    }
+}
+
 impl Condition {
     /// `v = value`, where `value` does not mention `v` (a value read from input goes through
     /// [`Condition::all`], which says so when it does).

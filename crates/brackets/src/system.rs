@@ -286,6 +286,16 @@ mod tests {
         assert!(err.to_string().contains("(at bytes 3..3)"), "{err}");
     }
 
+    /// A condition prints as it reads.
+    #[test]
+    fn a_condition_prints_its_text() {
+        let rotor = harmonic_rotor();
+        let value = rotor.parse("2*I*omega").unwrap();
+        let condition = crate::Condition::new("p_θ = 2Iω", rotor.var("p_theta"), value);
+        assert_eq!(condition.to_string(), "p_θ = 2Iω");
+        assert_eq!(condition.to_string(), condition.text);
+    }
+
     /// A condition whose value mentions its variable is an equation, refused in every build
     /// (a `debug_assert` let it through in release).
     #[test]

@@ -48,6 +48,14 @@ impl FunctionName {
     }
 }
 
+impl std::fmt::Display for FunctionName {
+    /// The name it is shown by, in Unicode (`G1'`): [`FunctionName::render`] in
+    /// [`Style::Unicode`].
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.write_str(&self.render(Style::Unicode))
+    }
+}
+
 /// The table `{A, B}` for a list of named functions of a system.
 #[derive(Clone, Debug)]
 pub struct BracketTable {
@@ -695,6 +703,16 @@ mod tests {
     use crate::systems::harmonic_rotor;
     use proptest::prelude::*;
     use trigpoly::{Expr, Style};
+
+    #[test]
+    fn a_function_name_prints_as_it_is_shown() {
+        let name = FunctionName {
+            name: "G1p".into(),
+            display: "G1'".into(),
+        };
+        assert_eq!(name.to_string(), "G1'");
+        assert_eq!(name.render(Style::Ascii), "G1p");
+    }
 
     /// `express` with the rotor's functions written out, as `(name, value)`.
     fn express_in(target: &str, functions: &[(&str, &str)]) -> Option<Vec<(String, Expr)>> {
