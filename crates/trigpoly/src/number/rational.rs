@@ -331,7 +331,8 @@ impl Rational {
     /// By repeated squaring: about `2·log₂|e|` products, the last of them on numbers of about
     /// `|e|` times the bits of `self`'s. The cost grows with the size of the result, not with
     /// the number of products: `2^(2^40)` has 2^40 bits (128 GiB) and does not end in any
-    /// useful time, though it takes 41 squarings.
+    /// useful time, though it takes 41 squarings. [`Rational::checked_pow`] refuses a result
+    /// past a size before any product.
     pub fn pow(&self, e: i64) -> Option<Rational> {
         let mut base = if e < 0 { self.try_inv()? } else { self.clone() };
         let mut k = e.unsigned_abs();
@@ -346,6 +347,36 @@ impl Rational {
             }
         }
         Some(acc)
+    }
+
+    /// `self^e` when its numerator and denominator have at most `max_bits` bits each; `None`
+    /// past that, and for `0^e` with `e < 0`. The size is bounded before any product: a base
+    /// `n/d` gives `|n|^|e|` of at least `|e|·(bits(n) − 1) + 1` bits, so an exponent that
+    /// would make [`Rational::pow`] run for hours (`2^(2^40)`) is refused at once, and one that
+    /// passes does at most about `2·max_bits` bits of work a side. `±1` to any power is `±1`.
+    ///
+    /// ```
+    /// use trigpoly::Rational;
+    /// let two = Rational::from(2);
+    /// assert_eq!(two.checked_pow(10, 64), Some(Rational::from(1024)));
+    /// assert_eq!(two.checked_pow(-63, 64), two.pow(-63));
+    /// assert_eq!(two.checked_pow(64, 64), None); // 2^64 has 65 bits
+    /// assert_eq!(two.checked_pow(1 << 40, 1 << 20), None);
+    /// assert_eq!((-Rational::one()).checked_pow(i64::MAX, 1), Some(-Rational::one()));
+    /// assert_eq!(Rational::zero().checked_pow(-1, 64), None);
+    /// ```
+    pub fn checked_pow(&self, e: i64, max_bits: u64) -> Option<Rational> {
+        let k = u128::from(e.unsigned_abs());
+        // The fewest bits `|part|^k` can have: `2^(b−1) ≤ |part|`, so `2^(k(b−1)) ≤ |part|^k`.
+        let surely_past = |part: Integer| {
+            let b = u128::from(part.bits());
+            b >= 2 && k * (b - 1) + 1 > u128::from(max_bits)
+        };
+        if surely_past(self.numer()) || surely_past(self.denom()) {
+            return None;
+        }
+        let p = self.pow(e)?;
+        (p.numer().bits() <= max_bits && p.denom().bits() <= max_bits).then_some(p)
     }
 
     /// `gcd(a, b)` in the sense of contents: `gcd(numerators)/lcm(denominators)`, positive, so

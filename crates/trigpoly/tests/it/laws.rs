@@ -260,6 +260,39 @@ fn powers_are_repeated_products_in_q() {
     );
 }
 
+/// `checked_pow` is `pow` where the result's numerator and denominator fit the bit limit,
+/// and `None` past it, at each limit around the result's size; an exponent whose result
+/// could not be held (`2^(2^62)`) is refused at once.
+#[test]
+fn checked_powers_are_powers_within_the_bit_limit() {
+    for base in [
+        q("3/4"),
+        q("-7/2"),
+        q("1/1000"),
+        Rational::from(i64::MIN),
+        -Rational::one(),
+    ] {
+        for e in [0i64, 1, 2, 5, 13, -1, -6] {
+            let power = base.pow(e).expect("nonzero base");
+            let bits = power.numer().bits().max(power.denom().bits());
+            for max_bits in [1, bits.saturating_sub(1), bits, bits + 1, 10_000] {
+                let within = bits <= max_bits;
+                assert_eq!(
+                    base.checked_pow(e, max_bits),
+                    within.then(|| power.clone()),
+                    "{base:?}^{e} within {max_bits} bits"
+                );
+            }
+        }
+    }
+    assert_eq!(Rational::from(2).checked_pow(1 << 62, 1 << 40), None);
+    assert_eq!(q("1/2").checked_pow(-(1 << 62), 1 << 20), None);
+    assert_eq!(
+        Rational::zero().checked_pow(1 << 62, 1),
+        Some(Rational::zero())
+    );
+}
+
 #[test]
 fn powers_are_repeated_products_in_gaussian_rationals() {
     powers_are_repeated_products(
