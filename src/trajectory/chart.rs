@@ -30,13 +30,22 @@ impl Curve {
     /// A curve whose `x` is an angle, drawn reduced to `[−π, π)`: where the angle crosses an
     /// odd multiple of π between two points, the piece ends at the edge (at `π` going up,
     /// `−π` going down), at the `y` interpolated linearly there, and the next begins at the
-    /// other edge with the same `y`.
+    /// other edge with the same `y`. Between two points more than [`MAX_WRAPS`] turns apart
+    /// (or at an `x` that is not finite) the samples show no line, and the curve is only
+    /// broken there: drawn turn by turn, an angle that runs 10¹² radians between two samples
+    /// made 10¹¹ pieces and did not end.
     pub fn with_angle_x(label: impl Into<String>, points: &[(f64, f64)]) -> Self {
         use std::f64::consts::PI;
         let mut curve = Curve::new(label, Vec::with_capacity(points.len()));
         for (k, &(x, y)) in points.iter().enumerate() {
             if let Some(&(x0, y0)) = k.checked_sub(1).map(|j| &points[j]) {
                 let (b0, b1) = (branch(x0), branch(x));
+                let turns = (b1 - b0).abs();
+                if turns.is_nan() || turns > MAX_WRAPS {
+                    curve.breaks.push(curve.points.len());
+                    curve.points.push((reduce_angle(x), y));
+                    continue;
+                }
                 let up = b1 > b0;
                 let mut b = b0;
                 while b != b1 {
@@ -66,6 +75,10 @@ impl Curve {
         starts.zip(ends).map(|(a, b)| &self.points[a..b])
     }
 }
+
+/// The most turns [`Curve::with_angle_x`] draws between two points, each as a piece from edge
+/// to edge.
+pub const MAX_WRAPS: f64 = 64.0;
 
 /// The number of the branch `[(2b − 1)π, (2b + 1)π)` that holds the angle `x`.
 fn branch(x: f64) -> f64 {
@@ -379,6 +392,22 @@ mod tests {
         // Within (−π, π) nothing is broken.
         let inside = Curve::with_angle_x("p_θ", &[(-1.0, 0.0), (1.0, 1.0), (-0.5, 2.0)]);
         assert_eq!((inside.points.len(), inside.breaks.len()), (3, 0));
+    }
+
+    /// Points many turns apart, or an angle that is not finite, break the curve once, where
+    /// drawing each turn took 10¹¹ pieces (and an infinite angle never ended); 64 turns are
+    /// still drawn.
+    #[test]
+    fn an_angle_too_fast_for_its_samples_breaks_the_curve() {
+        let far = Curve::with_angle_x("p_θ", &[(0.0, 0.0), (1e12, 1.0), (1e12 + 0.5, 2.0)]);
+        assert_eq!((far.points.len(), far.breaks.clone()), (3, vec![1]));
+        assert_eq!(far.points[0], (0.0, 0.0));
+        assert_eq!(far.points[1].1, 1.0);
+        let endless = Curve::with_angle_x("p_θ", &[(0.0, 0.0), (f64::INFINITY, 1.0), (0.0, 2.0)]);
+        assert_eq!(endless.breaks, vec![1, 2]);
+        let turns = 2.0 * std::f64::consts::PI * MAX_WRAPS;
+        let drawn = Curve::with_angle_x("p_θ", &[(0.0, 0.0), (turns, 1.0)]);
+        assert_eq!(drawn.breaks.len(), MAX_WRAPS as usize);
     }
 
     #[test]
