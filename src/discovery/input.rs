@@ -75,6 +75,27 @@ pub fn builtin_system(
     Ok(Some(s))
 }
 
+/// Where the `k`th of `pieces` (a list split at its commas) is blank beside a comma, that
+/// `what` is missing after the comma (`M = 1,`) or before it (`, M = 1`), by the comma's
+/// column: `a condition is missing after the comma at column 6`. A list of one blank piece
+/// has no comma to blame, and is left to the caller.
+fn missing_beside_comma(pieces: &[&str], k: usize, what: &str) -> Option<String> {
+    if !pieces[k].trim().is_empty() || pieces.len() < 2 {
+        return None;
+    }
+    let (side, before) = match k {
+        0 => ("before", 0),
+        _ => ("after", k - 1),
+    };
+    let comma: usize = pieces[..=before]
+        .iter()
+        .map(|p| p.chars().count() + 1)
+        .sum();
+    Some(format!(
+        "{what} is missing {side} the comma at column {comma}"
+    ))
+}
+
 /// Reads a condition `var = value[, var = value]` (such as `p_theta = 2*I*omega/3`), values
 /// parsed by `parse`.
 pub fn parse_condition(
@@ -87,19 +108,10 @@ pub fn parse_condition(
     let mut shown = Vec::new();
     let pieces: Vec<&str> = text.split(',').collect();
     for (k, piece) in pieces.iter().enumerate() {
-        // A comma with nothing after it (`M = 1,`) or before it (`, M = 1`), by its column.
-        if piece.trim().is_empty() && pieces.len() > 1 {
-            let (side, before) = match k {
-                0 => ("before", 0),
-                _ => ("after", k - 1),
-            };
-            let comma: usize = pieces[..=before]
-                .iter()
-                .map(|p| p.chars().count() + 1)
-                .sum();
+        if let Some(missing) = missing_beside_comma(&pieces, k, "a condition") {
             return Err(format!(
-                "a condition is missing {side} the comma at column {comma}: a condition reads \
-                 `variable = value`, such as 'p_theta = 2*I*omega/3'"
+                "{missing}: a condition reads `variable = value`, such as \
+                 'p_theta = 2*I*omega/3'"
             ));
         }
         let Some((lhs, rhs)) = piece.split_once('=') else {
@@ -148,10 +160,20 @@ pub fn parse_symbolic(system: &System, text: &str) -> Result<Vec<Var>, String> {
         .collect()
 }
 
-/// Reads parameter values `omega=1,M=2/3`.
+/// Reads parameter values `omega=1,M=2/3`; a blank text fixes none, and a comma with no value
+/// after it or before it is refused, by its column, as [`parse_condition`] refuses one.
 pub fn parse_fixed(system: &System, text: &str) -> Result<Vec<(Var, Rational)>, String> {
     let mut out = Vec::new();
-    for piece in text.split(',').filter(|p| !p.trim().is_empty()) {
+    let pieces: Vec<&str> = text.split(',').collect();
+    for (k, piece) in pieces.iter().enumerate() {
+        if let Some(missing) = missing_beside_comma(&pieces, k, "a value") {
+            return Err(format!(
+                "{missing}: give a value as NAME=VALUE, such as omega=1"
+            ));
+        }
+        if piece.trim().is_empty() {
+            continue;
+        }
         let Some((name, value)) = piece.split_once('=') else {
             return Err(format!(
                 "{}: give a value as NAME=VALUE, such as omega=1",

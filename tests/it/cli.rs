@@ -952,6 +952,39 @@ fn cli_echoed_names_are_quoted_and_shortened_alike() {
     assert!(out.contains(&eighty), "{out}");
 }
 
+/// A comma with no value after it (or before it) in --fix is refused by its column, as one in
+/// --when is: --fix 'M=1,' was read as 'M=1', where --when 'M = 1,' is refused.
+#[test]
+fn cli_a_comma_with_no_value_beside_it_is_refused_by_fix() {
+    let rotor = "systems/harmonic-rotor.toml";
+    for (fix, message) in [
+        (
+            "M=1,",
+            "superint: error: --fix: a value is missing after the comma at column 4: give a \
+             value as NAME=VALUE, such as omega=1\n",
+        ),
+        (
+            "M=1, ,omega=2",
+            "superint: error: --fix: a value is missing after the comma at column 4: give a \
+             value as NAME=VALUE, such as omega=1\n",
+        ),
+        (
+            " ,M=1",
+            "superint: error: --fix: a value is missing before the comma at column 2: give a \
+             value as NAME=VALUE, such as omega=1\n",
+        ),
+    ] {
+        for args in [
+            vec!["closure", rotor, "L", "--fix", fix],
+            vec!["search", "--system", "harmonic", "--fix", fix],
+        ] {
+            let o = superint(&args);
+            assert_eq!(o.status.code(), Some(2), "{args:?}");
+            assert_eq!(stderr(&o), message, "{args:?}");
+        }
+    }
+}
+
 /// Runs the binary and expects exit code 2, nothing on stdout and `message` on stderr.
 #[track_caller]
 fn assert_bad_usage(args: &[&str], message: &str) {
