@@ -28,6 +28,36 @@ use clap::{Parser, Subcommand};
 
 use output::OutputArgs;
 
+/// A value parser from a function, whose refusal names the value as every message names a
+/// name the command line echoes ([`trigpoly::quoted_name`]: whole, or past 80 characters its
+/// first 40 and its length), where clap's echoed it whole.
+#[derive(Clone)]
+struct Quoting<T>(fn(&str) -> Result<T, String>);
+
+impl<T: Clone + Send + Sync + 'static> clap::builder::TypedValueParser for Quoting<T> {
+    type Value = T;
+
+    fn parse_ref(
+        &self,
+        cmd: &clap::Command,
+        arg: Option<&clap::Arg>,
+        value: &std::ffi::OsStr,
+    ) -> Result<T, clap::Error> {
+        let Some(text) = value.to_str() else {
+            return Err(clap::Error::new(clap::error::ErrorKind::InvalidUtf8).with_cmd(cmd));
+        };
+        (self.0)(text).map_err(|why| {
+            let arg = arg.map_or_else(|| "...".to_string(), |a| a.to_string());
+            // As clap words a refused value, with its pointer to the help.
+            let message = format!(
+                "invalid value {} for '{arg}': {why}\n\nFor more information, try '--help'.\n",
+                trigpoly::quoted_name(text)
+            );
+            clap::Error::raw(clap::error::ErrorKind::ValueValidation, message).with_cmd(cmd)
+        })
+    }
+}
+
 /// Every claim was proved.
 pub const EXIT_PROVED: u8 = 0;
 /// A claim was refuted.

@@ -61,7 +61,7 @@ pub struct TowerArgs {
     /// The system: harmonic, gravity, or a system file that declares a [[family]] with an
     /// eigenvalue (- reads it from standard input).
     #[arg(long, value_name = "harmonic|gravity|FILE", default_value = "harmonic",
-          value_parser = system_arg)]
+          value_parser = super::Quoting(system_arg))]
     system: SystemArg,
     /// With a system file: the family (default: the first with an eigenvalue).
     #[arg(long, value_name = "NAME")]

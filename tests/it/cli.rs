@@ -914,6 +914,14 @@ fn cli_echoed_names_are_quoted_and_shortened_alike() {
             format!("unknown system {quoted} (built-in: harmonic"),
         ),
         (
+            vec!["tower", "--system", &long],
+            format!(
+                "error: invalid value {quoted} for '--system \
+                 <harmonic|gravity|FILE>': no built-in system {quoted} (harmonic, gravity), and \
+                 no file of that name\n\nFor more information, try '--help'.\n"
+            ),
+        ),
+        (
             vec!["closure", "--system", "harmonic", "L", "--when", &fix],
             format!("--when: {quoted} is not a variable of the system"),
         ),
