@@ -64,7 +64,7 @@ pub struct PlotArgs {
     #[arg(long, value_name = "POINT", required = true)]
     from: Vec<String>,
     /// How long to follow the motion.
-    #[arg(long, value_name = "T", value_parser = positive_time)]
+    #[arg(long, value_name = "T", value_parser = super::Quoting(positive_time))]
     time: f64,
     /// Steps of the integrator over the whole time.
     #[arg(long, value_name = "N", default_value_t = 10_000,
@@ -143,7 +143,8 @@ fn positive_time(s: &str) -> Result<f64, String> {
     };
     match t {
         t if t.is_finite() && t > 0.0 => Ok(t),
-        _ => Err(format!("{s} is not a positive number of time units")),
+        // Quoting names the value.
+        _ => Err("not a positive number of time units".to_string()),
     }
 }
 
