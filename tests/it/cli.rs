@@ -1009,6 +1009,34 @@ fn cli_a_comma_with_no_value_beside_it_is_refused_by_fix() {
     }
 }
 
+/// An expression of spaces alone has the caret past them, where its input ends, as an empty
+/// one has it where it ends: the caret stood at column 1, under the first space.
+#[test]
+fn cli_an_expression_of_spaces_is_underlined_where_it_ends() {
+    let rotor = "systems/harmonic-rotor.toml";
+    for (args, message) in [
+        (
+            vec!["expand", rotor, ""],
+            "superint: error: <command line>:1:1: expected an expression, found end of input\n \
+             1 | \n   | ^\n",
+        ),
+        (
+            vec!["expand", rotor, "   "],
+            "superint: error: <command line>:1:4: expected an expression, found end of input\n \
+             1 |    \n   |    ^\n",
+        ),
+        (
+            vec!["rank", rotor, "L", "  "],
+            "superint: error: <command line>:1:3: expected an expression, found end of input\n \
+             1 |   \n   |   ^\n",
+        ),
+    ] {
+        let o = superint(&args);
+        assert_eq!(o.status.code(), Some(2), "{args:?}");
+        assert_eq!(stderr(&o), message, "{args:?}");
+    }
+}
+
 /// Runs the binary and expects exit code 2, nothing on stdout and `message` on stderr.
 #[track_caller]
 fn assert_bad_usage(args: &[&str], message: &str) {

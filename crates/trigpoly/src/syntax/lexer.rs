@@ -91,12 +91,16 @@ impl<'a> Lexer<'a> {
 
     /// The next token, or `Tok::Eof` once the input is exhausted. The span of `Eof` is empty and
     /// placed just after the last non-whitespace character, so that errors there point at the
-    /// end of the last line of the expression rather than at trailing blank lines.
+    /// end of the last line of the expression rather than at trailing blank lines; in a text
+    /// of blanks alone, at the end of its first line (`"   "`: column 4, past the spaces).
     pub(crate) fn next_token(&mut self) -> Result<Token, ParseError> {
         self.eat_while(|c| c.is_whitespace() || c == '\u{feff}');
         let start = self.pos;
         let Some(c) = self.peek() else {
-            let end = self.src.trim_end().len();
+            let end = match self.src.trim_end().len() {
+                0 => self.src.find(['\n', '\r']).unwrap_or(self.src.len()),
+                end => end,
+            };
             return Ok(Token {
                 tok: Tok::Eof,
                 span: Span::new(end, end),

@@ -221,7 +221,8 @@ mod tests {
     #[rustfmt::skip]
     const REJECTED: &[(&str, (usize, usize), &str)] = &[
         ("", (1, 1), "expected an expression, found end of input"),
-        (" \n ", (1, 1), "expected an expression, found end of input"),
+        ("   ", (1, 4), "expected an expression, found end of input"),
+        (" \n ", (1, 2), "expected an expression, found end of input"),
         ("x^", (1, 3), "expected an expression after '^', found end of input"),
         ("1 +", (1, 4), "expected an expression after '+', found end of input"),
         ("x**", (1, 4), "expected an expression after '**', found end of input"),
