@@ -654,13 +654,16 @@ impl AssignmentReader<'_> {
         }
         let lhs = piece.slice(parts[0].clone());
         let rhs = piece.slice(parts[1].clone());
-        if lhs.value.trim().is_empty() || rhs.value.trim().is_empty() {
-            return Err(piece.error(
-                self.source,
-                ErrorKind::Condition,
-                Span::new(0, piece.value.len()),
-                format!("{usage}; one side is empty"),
-            ));
+        // The empty side is underlined, as in a claim.
+        for side in [&lhs, &rhs] {
+            if side.value.trim().is_empty() {
+                return Err(side.error(
+                    self.source,
+                    ErrorKind::Condition,
+                    Span::new(0, side.value.len()),
+                    format!("{usage}; one side is empty"),
+                ));
+            }
         }
         Ok((lhs, rhs))
     }

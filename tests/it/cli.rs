@@ -1037,6 +1037,30 @@ fn cli_an_expression_of_spaces_is_underlined_where_it_ends() {
     }
 }
 
+/// A condition with an empty side (`M =   `) has the caret under that side, as a claim has:
+/// it underlined the whole condition.
+#[test]
+fn cli_a_condition_with_an_empty_side_underlines_that_side() {
+    let rotor = "systems/harmonic-rotor.toml";
+    for (when, message) in [
+        (
+            "M =   ",
+            "superint: error: <command line>:1:4: a condition reads `variable = value`, such as \
+             \"p_theta = 2*I*omega/3\"; one side is empty\n 1 | M =   \n   |    ^^^\n",
+        ),
+        (
+            "M = 1, omega =",
+            "superint: error: <command line>:1:15: a condition reads `variable = value`, such as \
+             \"p_theta = 2*I*omega/3\"; one side is empty\n 1 | M = 1, omega =\n   |        \
+             \x20      ^\n",
+        ),
+    ] {
+        let o = superint(&["expand", rotor, "H", "--when", when]);
+        assert_eq!(o.status.code(), Some(2), "{when}");
+        assert_eq!(stderr(&o), message, "{when}");
+    }
+}
+
 /// Runs the binary and expects exit code 2, nothing on stdout and `message` on stderr.
 #[track_caller]
 fn assert_bad_usage(args: &[&str], message: &str) {
