@@ -601,7 +601,8 @@ fn tower_family(file: &LoadedSystem, family: Option<&str>) -> Result<usize, File
                 ErrorKind::Family,
                 &file.source.origin,
                 format!(
-                    "no family named '{name}' (the {} {})",
+                    "no family named {} (the {} {})",
+                    trigpoly::quoted_name(name),
                     match file.source.program {
                         true => "system has",
                         false => "file declares",

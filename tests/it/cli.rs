@@ -1061,6 +1061,47 @@ fn cli_a_condition_with_an_empty_side_underlines_that_side() {
     }
 }
 
+/// A name a message echoes in quotes, given on the command line or taken from a system file
+/// (a generator that names a parameter, a family tower --family looks for), is quoted by
+/// trigpoly::quoted_name as the command line's own are, where it was echoed whole.
+#[test]
+fn cli_names_from_a_file_are_quoted_and_shortened_alike() {
+    let long = "a".repeat(300);
+    let quoted = format!("'{}…', 300 characters long", "a".repeat(40));
+    let text = format!(
+        "name = \"long\"\nhamiltonian = \"p_x^2/2 + {long}*x\"\n[phase_space]\n\
+         coordinates = [\"x\"]\nparameters = [\"{long}\"]\n"
+    );
+    let file = crate::scratch_text("long-names", "long.toml", &text);
+    let file = file.to_str().expect("UTF-8");
+    for (args, message) in [
+        (
+            vec!["closure", file, "x", &long],
+            format!(
+                "superint: error: computing the closure: the generator {quoted} has the name of \
+                 a parameter\n"
+            ),
+        ),
+        (
+            vec![
+                "tower",
+                "--system",
+                "systems/harmonic-rotor.toml",
+                "--family",
+                &long,
+            ],
+            format!(
+                "superint: error: systems/harmonic-rotor.toml: no family named {quoted} (the \
+                 file declares K, Kbar, P, Q)\n"
+            ),
+        ),
+    ] {
+        let o = superint(&args);
+        assert_eq!(o.status.code(), Some(2), "{message}");
+        assert_eq!(stderr(&o), message);
+    }
+}
+
 /// Runs the binary and expects exit code 2, nothing on stdout and `message` on stderr.
 #[track_caller]
 fn assert_bad_usage(args: &[&str], message: &str) {

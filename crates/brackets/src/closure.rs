@@ -721,7 +721,8 @@ fn printing_ring(vars: &Vars, generators: &[NamedFunction]) -> Result<PrintingRi
             .is_some_and(|v| vars.variable(v).kind() == VarKind::Parameter)
         {
             return Err(EngineError::Invalid(format!(
-                "the generator '{name}' has the name of a parameter"
+                "the generator {} has the name of a parameter",
+                trigpoly::quoted_name(name)
             )));
         }
         builder = builder.coordinate(name).word();
