@@ -115,11 +115,22 @@ pub fn parse_condition(
             ));
         }
         let Some((lhs, rhs)) = piece.split_once('=') else {
+            // A blank condition is said to be empty, not echoed as ''.
+            let what = match piece.trim() {
+                "" => "the condition is empty".to_string(),
+                piece => trigpoly::quoted_name(piece),
+            };
             return Err(format!(
-                "{}: a condition reads `variable = value`, such as 'p_theta = 2*I*omega/3'",
-                trigpoly::quoted_name(piece.trim())
+                "{what}: a condition reads `variable = value`, such as 'p_theta = 2*I*omega/3'"
             ));
         };
+        if lhs.trim().is_empty() || rhs.trim().is_empty() {
+            return Err(format!(
+                "{}: a condition reads `variable = value`, such as 'p_theta = 2*I*omega/3'; one \
+                 side is empty",
+                trigpoly::quoted_name(piece.trim())
+            ));
+        }
         let lhs = lhs.trim();
         let Some(v) = vars.lookup(lhs) else {
             return Err(format!(

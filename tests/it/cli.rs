@@ -1102,6 +1102,24 @@ fn cli_names_from_a_file_are_quoted_and_shortened_alike() {
     }
 }
 
+/// A built-in system's --when of blanks alone is said to be empty, where it was echoed as
+/// '', and one with an empty side is said to have one, as a file's is, where the value's
+/// parser reported an end of input at line 1, column 1 of nothing shown.
+#[test]
+fn cli_a_builtin_systems_blank_condition_is_said_to_be_empty() {
+    let usage = "a condition reads `variable = value`, such as 'p_theta = 2*I*omega/3'";
+    for (when, message) in [
+        ("", format!("the condition is empty: {usage}")),
+        ("   ", format!("the condition is empty: {usage}")),
+        ("M = ", format!("'M =': {usage}; one side is empty")),
+        ("M = 1,  = 2", format!("'= 2': {usage}; one side is empty")),
+    ] {
+        let o = superint(&["closure", "--system", "harmonic", "L", "--when", when]);
+        assert_eq!(o.status.code(), Some(2), "{when:?}");
+        assert_eq!(stderr(&o), format!("superint: error: --when: {message}\n"));
+    }
+}
+
 /// Runs the binary and expects exit code 2, nothing on stdout and `message` on stderr.
 #[track_caller]
 fn assert_bad_usage(args: &[&str], message: &str) {
