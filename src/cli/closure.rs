@@ -176,6 +176,11 @@ pub fn run(job: &ClosureJob) -> anyhow::Result<bool> {
     if all.is_empty() {
         bail!("give the generators: names of functions of the system, or --define NAME=EXPR");
     }
+    if let Subject::File(file) = &subject {
+        file.refuse_blank(&all)?;
+    } else if all.iter().any(|n| n.trim().is_empty()) {
+        bail!("a generator is blank: give the name of a function of the system");
+    }
     match &subject {
         Subject::File(file) => file.refuse_repeated(&all, "the closure")?,
         // A built-in system has no families: a name is one function however it is spelt

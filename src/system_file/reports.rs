@@ -352,6 +352,26 @@ impl LoadedSystem {
 }
 
 impl LoadedSystem {
+    /// Refuses a blank name among `names` (`'   '`) as a blank expression is refused: at its
+    /// end of input, past the blanks on its first line, where it was taken for a name `''`.
+    pub fn refuse_blank(&self, names: &[impl AsRef<str>]) -> Result<(), FileError> {
+        match names
+            .iter()
+            .map(AsRef::as_ref)
+            .find(|n| n.trim().is_empty())
+        {
+            Some(blank) => {
+                let end = blank.find(['\n', '\r']).unwrap_or(blank.len());
+                Err(self.given("<name>", blank).error(
+                    ErrorKind::Expression,
+                    end..end,
+                    "expected the name of a function, found end of input",
+                ))
+            }
+            None => Ok(()),
+        }
+    }
+
     /// Refuses a function given twice among `names`: the same name (`L G1 L`), or one family
     /// instance written two ways (`K_1_1 K_{01,1}`). A table would show it twice, a rank count
     /// it twice and a closure find the relation `L = L`; `what` names the job in the message
@@ -402,6 +422,7 @@ pub fn table_report(file: &LoadedSystem, names: &[impl AsRef<str>]) -> Result<Re
         .skip(1)
         .map(|f| f.name.clone())
         .collect();
+    file.refuse_blank(names)?;
     // As given, braces and all (`K_{1,1}` beside `K_1_1`).
     file.refuse_repeated(names, "a table")?;
     let names = tabulated_names(file, names, &defined)?;

@@ -1120,6 +1120,35 @@ fn cli_a_builtin_systems_blank_condition_is_said_to_be_empty() {
     }
 }
 
+/// A blank function name given to a table or a closure is refused as a blank expression is,
+/// at its end of input: a table said '' is not a function, and a closure that '   ' is an
+/// expression, to be named with --define.
+#[test]
+fn cli_a_blank_function_name_is_refused_where_it_ends() {
+    let rotor = "systems/harmonic-rotor.toml";
+    let end = |column: usize, text: &str| {
+        format!(
+            "superint: error: <command line>:1:{column}: expected the name of a function, found \
+             end of input\n 1 | {text}\n   | {}^\n",
+            " ".repeat(column - 1)
+        )
+    };
+    for (args, message) in [
+        (vec!["table", rotor, "L", "   ", "   "], end(4, "   ")),
+        (vec!["table", rotor, ""], end(1, "")),
+        (vec!["closure", rotor, "L", "  "], end(3, "  ")),
+        (
+            vec!["closure", "--system", "harmonic", "L", "  "],
+            "superint: error: a generator is blank: give the name of a function of the system\n"
+                .to_string(),
+        ),
+    ] {
+        let o = superint(&args);
+        assert_eq!(o.status.code(), Some(2), "{args:?}");
+        assert_eq!(stderr(&o), message, "{args:?}");
+    }
+}
+
 /// Runs the binary and expects exit code 2, nothing on stdout and `message` on stderr.
 #[track_caller]
 fn assert_bad_usage(args: &[&str], message: &str) {
