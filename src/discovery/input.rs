@@ -162,13 +162,22 @@ fn parameter(system: &System, name: &str) -> Result<Var, String> {
         })
 }
 
-/// Parameters named in `A,B` (kept symbolic by a search).
+/// Parameters named in `A,B` (kept symbolic by a search); a blank text names none, and a
+/// comma with no name after it or before it is refused, by its column, as in [`parse_fixed`].
 pub fn parse_symbolic(system: &System, text: &str) -> Result<Vec<Var>, String> {
-    text.split(',')
-        .map(str::trim)
-        .filter(|p| !p.is_empty())
-        .map(|name| parameter(system, name))
-        .collect()
+    let pieces: Vec<&str> = text.split(',').collect();
+    let mut out = Vec::new();
+    for (k, piece) in pieces.iter().enumerate() {
+        if let Some(missing) = missing_beside_comma(&pieces, k, "a parameter") {
+            return Err(format!(
+                "{missing}: name parameters as A,B, such as M,omega"
+            ));
+        }
+        if !piece.trim().is_empty() {
+            out.push(parameter(system, piece.trim())?);
+        }
+    }
+    Ok(out)
 }
 
 /// Reads parameter values `omega=1,M=2/3`; a blank text fixes none, and a comma with no value

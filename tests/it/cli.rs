@@ -1149,6 +1149,26 @@ fn cli_a_blank_function_name_is_refused_where_it_ends() {
     }
 }
 
+/// A comma with no parameter after it (or before it) in --symbolic is refused by its column,
+/// as one in --fix and --when is: --symbolic 'M,' was read as 'M'.
+#[test]
+fn cli_a_comma_with_no_parameter_beside_it_is_refused_by_symbolic() {
+    let rotor = "systems/harmonic-rotor.toml";
+    for (symbolic, side, column) in [
+        ("M,", "after", 2),
+        ("M,,omega", "after", 2),
+        (",M", "before", 1),
+    ] {
+        let o = superint(&["closure", rotor, "L", "--symbolic", symbolic]);
+        assert_eq!(o.status.code(), Some(2), "{symbolic}");
+        let message = format!(
+            "superint: error: --symbolic: a parameter is missing {side} the comma at column \
+             {column}: name parameters as A,B, such as M,omega\n"
+        );
+        assert_eq!(stderr(&o), message, "{symbolic}");
+    }
+}
+
 /// Runs the binary and expects exit code 2, nothing on stdout and `message` on stderr.
 #[track_caller]
 fn assert_bad_usage(args: &[&str], message: &str) {
