@@ -379,6 +379,19 @@ fn search_and_print(job: &SearchJob) -> anyhow::Result<bool> {
     if let Some(known) = &a.known {
         // Commas inside braces belong to an instance (`P_{1,1}`).
         let pieces = split_top_level(known, ',');
+        // A comma with no expression after it or before it, by its column, as in --fix.
+        let blank = |k: &usize| known[pieces[*k].clone()].trim().is_empty();
+        if let Some(k) = (0..pieces.len()).filter(|_| pieces.len() > 1).find(blank) {
+            let (side, comma) = match k {
+                0 => ("before", pieces[0].end),
+                _ => ("after", pieces[k].start - 1),
+            };
+            let column = known[..comma].chars().count() + 1;
+            bail!(
+                "--known: an expression is missing {side} the comma at column {column}: \
+                 expressions or family instances separated by commas, such as L,P_1_1"
+            );
+        }
         for k in pieces
             .into_iter()
             .map(|r| known[r].trim())

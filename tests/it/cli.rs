@@ -1169,6 +1169,26 @@ fn cli_a_comma_with_no_parameter_beside_it_is_refused_by_symbolic() {
     }
 }
 
+/// A comma with no expression after it (or before it) in --known is refused by its column,
+/// as one in --fix is; a comma inside an instance's braces is the instance's.
+#[test]
+fn cli_a_comma_with_no_expression_beside_it_is_refused_by_known() {
+    let rotor = "systems/harmonic-rotor.toml";
+    for (known, side, column) in [
+        ("L,", "after", 2),
+        ("K_{1,1}, ,L", "after", 8),
+        (",L", "before", 1),
+    ] {
+        let o = superint(&["search", rotor, "--new-only", "--known", known]);
+        assert_eq!(o.status.code(), Some(2), "{known}");
+        let message = format!(
+            "superint: error: --known: an expression is missing {side} the comma at column \
+             {column}: expressions or family instances separated by commas, such as L,P_1_1\n"
+        );
+        assert_eq!(stderr(&o), message, "{known}");
+    }
+}
+
 /// Runs the binary and expects exit code 2, nothing on stdout and `message` on stderr.
 #[track_caller]
 fn assert_bad_usage(args: &[&str], message: &str) {
