@@ -892,6 +892,7 @@ fn cli_echoed_names_are_quoted_and_shortened_alike() {
     let rotor = "systems/harmonic-rotor.toml";
     let define = format!("{long}=x");
     let fix = format!("{long}=1");
+    let (angle, function) = (format!("cos({long})"), format!("{long}(x)"));
     for (args, message) in [
         (
             vec!["table", rotor, &long],
@@ -946,6 +947,14 @@ fn cli_echoed_names_are_quoted_and_shortened_alike() {
             format!(
                 "one declared variable (a coordinate, a momentum or a parameter), found {quoted}"
             ),
+        ),
+        (
+            vec!["expand", rotor, &angle],
+            format!("<command line>:1:5: unknown angle {quoted}\n"),
+        ),
+        (
+            vec!["expand", rotor, &function],
+            format!("<command line>:1:1: unknown function {quoted} (known: cos, sin"),
         ),
         (
             vec!["closure", rotor, "L", &long],

@@ -504,7 +504,8 @@ impl<C: Coefficient> Lower<'_, C> {
                 return Err(ParseError::new(
                     name_span,
                     format!(
-                        "unknown function '{name}' (known: {}){hint}",
+                        "unknown function {} (known: {}){hint}",
+                        quoted_name(name),
                         FUNCTIONS.join(", ")
                     ),
                 ));
@@ -715,7 +716,10 @@ impl<C: Coefficient> Lower<'_, C> {
                 None => match self.split_angle_name(n) {
                     Some((Some(v), c)) => Angles(vec![(v, c)]),
                     Some((None, c)) => Constant(c),
-                    None => return Err(ParseError::new(e.span, format!("unknown angle '{n}'"))),
+                    None => {
+                        let message = format!("unknown angle {}", quoted_name(n));
+                        return Err(ParseError::new(e.span, message));
+                    }
                 },
             },
             ExprKind::Neg(a) => self.linear_form(a, bad)?.scale(&GaussianRational::from(-1)),
