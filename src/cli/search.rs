@@ -287,7 +287,9 @@ impl Subject {
     /// names, as a claim about the system's own), each said as such.
     pub fn check_new_name(&self, name: &str, option: &str) -> anyhow::Result<()> {
         match BadName::of(name) {
-            Some(bad @ BadName::Unnamed(trigpoly::BadName::Malformed)) => {
+            Some(
+                bad @ BadName::Unnamed(trigpoly::BadName::Malformed | trigpoly::BadName::TooLong),
+            ) => {
                 bail!("{option} {}: {}", trigpoly::quoted_name(name), bad.why())
             }
             Some(bad) => bail!("{option} {name}: {}; choose another name", bad.why()),

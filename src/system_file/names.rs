@@ -7,7 +7,8 @@ use std::ops::Range;
 
 use brackets::System;
 use trigpoly::{
-    display_forms, is_identifier, latex_unwritable, unbarred, Span, VarSet, Vars, RESERVED,
+    display_forms, is_identifier, latex_unwritable, quoted_name, unbarred, Span, VarSet, Vars,
+    RESERVED,
 };
 
 use super::error::{ErrorKind, FileError};
@@ -80,15 +81,17 @@ impl BadName {
     }
 
     /// The message for declaring `name` as `what` (`a function`): `'2Q' cannot name a
-    /// function: a name is …`, `'a_' cannot be a name: …`; a reserved name's reason says it
-    /// alone.
+    /// function: a name is …`, `'a_' cannot be a name: …` (a long name by its start and its
+    /// length, [`quoted_name`]); a reserved name's reason says it alone.
     pub fn declaring(&self, name: &str, what: &str) -> String {
         match self {
             BadName::Reserved(why) => why.clone(),
             BadName::Unnamed(trigpoly::BadName::EmptySubscript) => {
-                format!("'{name}' cannot be a name: {}", self.why())
+                format!("{} cannot be a name: {}", quoted_name(name), self.why())
             }
-            BadName::Unnamed(_) => format!("'{name}' cannot name {what}: {}", self.why()),
+            BadName::Unnamed(_) => {
+                format!("{} cannot name {what}: {}", quoted_name(name), self.why())
+            }
         }
     }
 

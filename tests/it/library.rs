@@ -238,6 +238,26 @@ fn the_loaders_names_are_the_variable_sets_and_h_and_rank() {
         };
         assert_eq!((loaded, added), (as_parameter, as_function), "{name:?}");
     }
+    // A name past 80 characters (a line pasted where a name belongs) is refused, and shown by
+    // its start and its length; one of 80 is taken.
+    let long = "a".repeat(81);
+    let why = "a name has at most 80 characters";
+    let vars = VarSet::builder().coordinate(&long).build().map(|_| ());
+    let start = "a".repeat(40);
+    assert_eq!(
+        vars.unwrap_err().to_string(),
+        format!("{start:?}…, 81 characters long, cannot name a variable: {why}")
+    );
+    let quoted = format!("'{start}…', 81 characters long");
+    assert_eq!(
+        file(&long).map(|_| ()).unwrap_err().message,
+        format!("{quoted} cannot name a parameter: {why}")
+    );
+    assert_eq!(
+        rotor.add_function(&long, "F", "x").unwrap_err().message,
+        format!("{quoted} cannot name a function: {why}")
+    );
+    file(&"a".repeat(80)).expect("a name of 80 characters loads");
     for (name, why) in [
         (
             "cos",

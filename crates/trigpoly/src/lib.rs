@@ -65,7 +65,7 @@ pub use syntax::{Excerpt, ParseError, Span};
 pub use varset::{
     display_forms, is_identifier, juxtaposition_is_ambiguous, latex_unwritable, unbarred, BadName,
     Limits, Var, VarKind, VarSet, VarSetBuilder, Variable, Vars, FIELD_BITS, LATEX_LETTERS,
-    RESERVED,
+    MAX_NAME_CHARS, RESERVED,
 };
 
 /// Polynomials over Q(i): the type of phase-space functions (angles need `i`).

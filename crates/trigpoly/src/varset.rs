@@ -9,7 +9,8 @@ use crate::error::AlgebraError;
 mod names;
 
 pub use names::{
-    display_forms, is_identifier, latex_unwritable, unbarred, BadName, LATEX_LETTERS, RESERVED,
+    display_forms, is_identifier, latex_unwritable, unbarred, BadName, LATEX_LETTERS,
+    MAX_NAME_CHARS, RESERVED,
 };
 use names::{render_name, spell_out};
 
@@ -804,9 +805,17 @@ impl VarSetBuilder {
                 continue;
             }
             if let Some(bad) = BadName::of(&v.name) {
+                // A long name is shown by its start and its length.
+                let shown = match bad {
+                    BadName::TooLong => format!(
+                        "{:?}…, {} characters long,",
+                        v.name.chars().take(40).collect::<String>(),
+                        v.name.chars().count()
+                    ),
+                    _ => format!("{:?}", v.name),
+                };
                 return Err(AlgebraError::Invalid(format!(
-                    "{:?} cannot name a variable: {bad}",
-                    v.name
+                    "{shown} cannot name a variable: {bad}"
                 )));
             }
             for w in &self.vars[..k] {
@@ -934,7 +943,16 @@ mod tests {
                 "{name:?}"
             );
         }
-        for name in ["a_b", "p_theta", "x₁", "ħ", "H", "rank"] {
+        let long = "a".repeat(81);
+        assert_eq!(
+            VarSet::builder().parameter(&long).build().map(|_| ()),
+            Err(AlgebraError::Invalid(format!(
+                "{:?}…, 81 characters long, cannot name a variable: a name has at most 80 \
+                 characters",
+                "a".repeat(40)
+            )))
+        );
+        for name in ["a_b", "p_theta", "x₁", "ħ", "H", "rank", &"a".repeat(80)] {
             assert_eq!(BadName::of(name), None, "{name}");
             VarSet::builder().coordinate(name).build().expect(name);
         }

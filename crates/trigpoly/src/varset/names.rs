@@ -60,6 +60,9 @@ pub fn is_identifier(s: &str) -> bool {
         && chars.all(|c| c.is_alphanumeric() || c == '_')
 }
 
+/// The most characters a name has ([`BadName::TooLong`]).
+pub const MAX_NAME_CHARS: usize = 80;
+
 /// Why a name cannot name a variable of any set: the one rule that
 /// [`VarSetBuilder::build`](crate::VarSetBuilder::build) applies, and that a program reading
 /// names (superint's system-file loader) applies before its own refusals. Its `Display` is the
@@ -69,6 +72,7 @@ pub fn is_identifier(s: &str) -> bool {
 /// use trigpoly::BadName;
 /// assert_eq!(BadName::of("p_x"), None);
 /// assert_eq!(BadName::of("2Q"), Some(BadName::Malformed));
+/// assert_eq!(BadName::of(&"a".repeat(81)), Some(BadName::TooLong));
 /// assert_eq!(BadName::of("a__b"), Some(BadName::EmptySubscript));
 /// assert_eq!(BadName::of("é"), Some(BadName::Unwritable('é')));
 /// assert_eq!(BadName::of("cos"), Some(BadName::Reserved));
@@ -82,6 +86,9 @@ pub enum BadName {
     /// Not letters, digits and `_` starting with a letter (or `_`, [`BadName::EmptySubscript`]):
     /// [`is_identifier`] fails.
     Malformed,
+    /// Longer than [`MAX_NAME_CHARS`]: every message and report prints a name, and one past
+    /// it is a mistake (a line pasted where a name belongs).
+    TooLong,
     /// Beginning or ending in `_` or holding `__` (`_a`, `a_`, `_`, `a__b`): each `_` starts a
     /// subscript, so that such a name has an empty one or one of nothing, which LaTeX writes
     /// as `x_{}` (printed as `x`), `\mathrm{_a}` (a lone subscript `a`) or not at all.
@@ -94,11 +101,13 @@ pub enum BadName {
 }
 
 impl BadName {
-    /// The first reason `name` is refused, if any: malformed, an empty subscript, a letter
-    /// LaTeX cannot write, reserved.
+    /// The first reason `name` is refused, if any: malformed, too long, an empty subscript, a
+    /// letter LaTeX cannot write, reserved.
     pub fn of(name: &str) -> Option<BadName> {
         if !is_identifier(name) {
             Some(BadName::Malformed)
+        } else if name.chars().count() > MAX_NAME_CHARS {
+            Some(BadName::TooLong)
         } else if name.starts_with('_') || name.ends_with('_') || name.contains("__") {
             Some(BadName::EmptySubscript)
         } else if let Some(c) = latex_unwritable(name) {
@@ -120,6 +129,7 @@ impl fmt::Display for BadName {
             BadName::Malformed => {
                 f.write_str("a name is letters, digits and '_', starting with a letter")
             }
+            BadName::TooLong => write!(f, "a name has at most {MAX_NAME_CHARS} characters"),
             BadName::EmptySubscript => {
                 f.write_str("a name cannot begin or end in '_' or hold '__'")
             }
