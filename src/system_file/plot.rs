@@ -212,7 +212,21 @@ impl LoadedSystem {
             let why = "the value of a parameter is a real number, such as 3/2";
             let value = number(&a.value, &a.rhs, &source, why)?;
             let value = Expr::constant(self.system.vars(), GaussianRational::from(value));
-            values.push((a.var, value));
+            // H's divisor set to 0 is shown where --at writes it (a curve's or a starting
+            // value's, found later, by the values alone).
+            let pair = [(a.var, value)];
+            let hamiltonian = self.system.hamiltonian();
+            if brackets::Condition::sets_a_divisor_to_zero(&pair, hamiltonian).is_some() {
+                let name = self.display(a.var);
+                return Err(a.rhs.error(
+                    &source,
+                    ErrorKind::Condition,
+                    a.rhs.trimmed_span(),
+                    format!("--at sets {name} = 0, but H divides by {name}"),
+                ));
+            }
+            let [pair] = pair;
+            values.push(pair);
             shown.push(a.shown);
         }
         Ok((values, shown.join(", ")))

@@ -1586,21 +1586,23 @@ fn cli_plot_bad_arguments_exit_2_with_a_message() {
              or a momentum), found 'H'",
         ),
         // A parameter set to 0 that H, a curve or a starting value divides by is named, as
-        // --when's condition names it; it was 'H at the values of --at: division by zero'.
+        // --when's condition names it; it was 'H at the values of --at: division by zero'. H's
+        // divisor is underlined in --at, a starting value's in --from.
         (
             vec!["L", "--at", "M = 0, omega = 1, I = 1", "--from", full],
-            "<command line>: --at sets M = 0, but H divides by M",
+            "<command line>:1:5: --at sets M = 0, but H divides by M\n 1 | M = 0, omega = 1, \
+             I = 1\n   |     ^\n",
         ),
         (
             vec![
                 "L",
                 "--at",
-                "M = 0, omega = 1, I = 1",
+                "M = 1, omega = 0, I = 1",
                 "--from",
-                &full.replace("x = 1", "x = 1/M"),
+                &full.replace("x = 1", "x = 1/omega"),
             ],
-            "<command line>:1:5: --at sets M = 0, but the starting value of x divides by M\n \
-             1 | x = 1/M, y = 0,",
+            "<command line>:1:5: --at sets ω = 0, but the starting value of x divides by ω\n \
+             1 | x = 1/omega, y = 0,",
         ),
         (
             vec!["L/omega", "--at", "M = 1, omega = 0, I = 1", "--from", full],
