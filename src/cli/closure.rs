@@ -165,16 +165,17 @@ pub fn run(job: &ClosureJob) -> anyhow::Result<bool> {
     if all.is_empty() {
         bail!("give the generators: names of functions of the system, or --define NAME=EXPR");
     }
-    if let Subject::File(file) = &subject {
-        file.refuse_blank(&all)?;
-    } else if all.iter().any(|n| n.trim().is_empty()) {
-        bail!("a generator is blank: give the name of a function of the system");
-    }
     match &subject {
-        Subject::File(file) => file.refuse_repeated(&all, "the closure")?,
+        Subject::File(file) => {
+            file.refuse_blank(&all)?;
+            file.refuse_repeated(&all, "the closure")?;
+        }
         // A built-in system has no families: a name is one function however it is spelt
         // (`P_{1,1}` is `P_1_1`).
         Subject::Builtin(..) => {
+            if all.iter().any(|n| n.trim().is_empty()) {
+                bail!("a generator is blank: give the name of a function of the system");
+            }
             let twice = (1..all.len())
                 .find(|&k| all[..k].iter().any(|n| identifier(n) == identifier(all[k])));
             if let Some(k) = twice {
@@ -203,7 +204,7 @@ pub fn run(job: &ClosureJob) -> anyhow::Result<bool> {
                 })
                 .unwrap_or("Gen");
             // A long expression is shown by its start, and left out of the example.
-            let example = match name.chars().count() > 80 {
+            let example = match name.chars().count() > trigpoly::MAX_NAME_CHARS {
                 true => "…",
                 false => name,
             };

@@ -10,11 +10,11 @@ use brackets::search::{SearchOptions, SearchSpace, DEFAULT_MAX_PRODUCTS};
 use brackets::System;
 use clap::Args;
 use superint::discovery::{
-    builtin_system, parse_condition, parse_fixed, parse_symbolic, search_report,
+    builtin_system, parse_condition, parse_fixed, parse_known, parse_symbolic, search_report,
 };
 use superint::render::render;
 use superint::report::{with_article, Report};
-use superint::system_file::{split_top_level, what_is, BadName, LoadedSystem};
+use superint::system_file::{what_is, BadName, LoadedSystem};
 use trigpoly::{Expr, VarKind};
 
 use super::limits::LimitsArgs;
@@ -379,26 +379,7 @@ fn search_and_print(job: &SearchJob) -> anyhow::Result<bool> {
     options.exact_complement = a.exact_complement;
     options.max_products = usize::try_from(a.max_products).unwrap_or(usize::MAX);
     if let Some(known) = &a.known {
-        // Commas inside braces belong to an instance (`P_{1,1}`).
-        let pieces = split_top_level(known, ',');
-        // A comma with no expression after it or before it, by its column, as in --fix.
-        let blank = |k: &usize| known[pieces[*k].clone()].trim().is_empty();
-        if let Some(k) = (0..pieces.len()).filter(|_| pieces.len() > 1).find(blank) {
-            let (side, comma) = match k {
-                0 => ("before", pieces[0].end),
-                _ => ("after", pieces[k].start - 1),
-            };
-            let column = known[..comma].chars().count() + 1;
-            bail!(
-                "--known: an expression is missing {side} the comma at column {column}: \
-                 expressions or family instances separated by commas, such as L,P_1_1"
-            );
-        }
-        for k in pieces
-            .into_iter()
-            .map(|r| known[r].trim())
-            .filter(|k| !k.is_empty())
-        {
+        for k in parse_known(known).map_err(|e| anyhow!("--known: {e}"))? {
             let e = subject.parse(k).map_err(|e| anyhow!("--known: {e}"))?;
             options.known.push((k.to_string(), e));
         }

@@ -180,6 +180,29 @@ pub fn parse_symbolic(system: &System, text: &str) -> Result<Vec<Var>, String> {
     Ok(out)
 }
 
+/// The expressions of `--known` (`L,P_{1,1}`): split at the commas outside braces (a comma
+/// inside belongs to an instance), trimmed; a blank text gives none, and a comma with no
+/// expression after it or before it is refused, by its column, as in [`parse_fixed`].
+pub fn parse_known(text: &str) -> Result<Vec<&str>, String> {
+    let pieces: Vec<&str> = crate::system_file::split_top_level(text, ',')
+        .into_iter()
+        .map(|r| &text[r])
+        .collect();
+    for k in 0..pieces.len() {
+        if let Some(missing) = missing_beside_comma(&pieces, k, "an expression") {
+            return Err(format!(
+                "{missing}: expressions or family instances separated by commas, such as \
+                 L,P_1_1"
+            ));
+        }
+    }
+    Ok(pieces
+        .into_iter()
+        .map(str::trim)
+        .filter(|k| !k.is_empty())
+        .collect())
+}
+
 /// Reads parameter values `omega=1,M=2/3`; a blank text fixes none, and a comma with no value
 /// after it or before it is refused, by its column, as [`parse_condition`] refuses one.
 pub fn parse_fixed(system: &System, text: &str) -> Result<Vec<(Var, Rational)>, String> {

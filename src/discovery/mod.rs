@@ -25,7 +25,9 @@ mod input;
 mod search;
 
 pub use closure::{closure_report, relation_text};
-pub use input::{builtin_system, parse_condition, parse_fixed, parse_symbolic, BUILTIN_SYSTEMS};
+pub use input::{
+    builtin_system, parse_condition, parse_fixed, parse_known, parse_symbolic, BUILTIN_SYSTEMS,
+};
 pub use search::{complex_form, search_report};
 
 use brackets::search::parameter_text;

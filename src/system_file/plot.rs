@@ -212,21 +212,14 @@ impl LoadedSystem {
             let why = "the value of a parameter is a real number, such as 3/2";
             let value = number(&a.value, &a.rhs, &source, why)?;
             let value = Expr::constant(self.system.vars(), GaussianRational::from(value));
+            values.push((a.var, value));
             // H's divisor set to 0 is shown where --at writes it (a curve's or a starting
             // value's, found later, by the values alone).
-            let pair = [(a.var, value)];
-            let hamiltonian = self.system.hamiltonian();
-            if brackets::Condition::sets_a_divisor_to_zero(&pair, hamiltonian).is_some() {
-                let name = self.display(a.var);
-                return Err(a.rhs.error(
-                    &source,
-                    ErrorKind::Condition,
-                    a.rhs.trimmed_span(),
-                    format!("--at sets {name} = 0, but H divides by {name}"),
-                ));
+            let this = &values[values.len() - 1..];
+            if let Some(why) = self.divisor_set_to_zero("H", self.system.hamiltonian(), this) {
+                let span = a.rhs.trimmed_span();
+                return Err(a.rhs.error(&source, ErrorKind::Condition, span, why));
             }
-            let [pair] = pair;
-            values.push(pair);
             shown.push(a.shown);
         }
         Ok((values, shown.join(", ")))
@@ -265,14 +258,9 @@ impl LoadedSystem {
             );
             let what = format!("the starting value of {}", self.display(a.var));
             // Shown where it is written in --from.
-            if let Some(v) = brackets::Condition::sets_a_divisor_to_zero(values, &a.value) {
-                let name = self.display(v);
-                return Err(a.rhs.error(
-                    &source,
-                    ErrorKind::Condition,
-                    a.rhs.trimmed_span(),
-                    format!("--at sets {name} = 0, but {what} divides by {name}"),
-                ));
+            if let Some(why) = self.divisor_set_to_zero(&what, &a.value, values) {
+                let span = a.rhs.trimmed_span();
+                return Err(a.rhs.error(&source, ErrorKind::Condition, span, why));
             }
             let value = number(
                 &self.at_values(&what, &a.value, values)?,
@@ -449,15 +437,19 @@ impl LoadedSystem {
         Ok((source, assignments))
     }
 
+    /// Why `what`, the function `e`, has no value at the parameters' `values`, if it has
+    /// none: they set a parameter it divides by to 0 ([`brackets::Condition::sets_a_divisor_to_zero`]).
+    fn divisor_set_to_zero(&self, what: &str, e: &Expr, values: &[(Var, Expr)]) -> Option<String> {
+        brackets::Condition::sets_a_divisor_to_zero(values, e).map(|v| {
+            let name = self.display(v);
+            format!("--at sets {name} = 0, but {what} divides by {name}")
+        })
+    }
+
     /// `what`, the function `e`, at the parameters' `values`.
     fn at_values(&self, what: &str, e: &Expr, values: &Values) -> Result<Expr, FileError> {
-        if let Some(v) = brackets::Condition::sets_a_divisor_to_zero(values, e) {
-            let name = self.display(v);
-            return Err(FileError::new(
-                ErrorKind::Condition,
-                COMMAND_LINE,
-                format!("--at sets {name} = 0, but {what} divides by {name}"),
-            ));
+        if let Some(why) = self.divisor_set_to_zero(what, e, values) {
+            return Err(FileError::new(ErrorKind::Condition, COMMAND_LINE, why));
         }
         e.subst_many(values).map_err(|err| {
             let mut error = self.computation_error(&EngineError::from(err));

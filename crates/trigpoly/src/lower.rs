@@ -6,7 +6,7 @@ use crate::error::AlgebraError;
 use crate::number::{Coefficient, GaussianRational, Integer, Rational};
 use crate::poly::Poly;
 use crate::syntax::{parse_expr, Expr, ExprKind, ParseError, Span};
-use crate::varset::{Var, VarKind, Vars};
+use crate::varset::{long_name, Var, VarKind, Vars};
 
 /// What names and brackets mean beyond the variables: named functions defined elsewhere (a
 /// system file's `H`, `L`) and the Poisson bracket `{f, g}` of a phase space.
@@ -814,13 +814,9 @@ fn integral(
 /// whole line: 100 KB echoed) its first characters and its length, `'aaaa…', 300 characters
 /// long`.
 pub fn quoted_name(name: &str) -> String {
-    const SHOWN: usize = 40;
-    match name.chars().count() {
-        n if n <= 2 * SHOWN => format!("'{name}'"),
-        n => format!(
-            "'{}…', {n} characters long",
-            name.chars().take(SHOWN).collect::<String>()
-        ),
+    match long_name(name) {
+        None => format!("'{name}'"),
+        Some((start, n)) => format!("'{start}…', {n} characters long"),
     }
 }
 

@@ -8,6 +8,7 @@ use crate::error::AlgebraError;
 
 mod names;
 
+pub(crate) use names::long_name;
 pub use names::{
     display_forms, is_identifier, latex_unwritable, unbarred, BadName, LATEX_LETTERS,
     MAX_NAME_CHARS, RESERVED,
@@ -806,12 +807,10 @@ impl VarSetBuilder {
             }
             if let Some(bad) = BadName::of(&v.name) {
                 // A long name is shown by its start and its length.
-                let shown = match bad {
-                    BadName::TooLong => format!(
-                        "{:?}…, {} characters long,",
-                        v.name.chars().take(40).collect::<String>(),
-                        v.name.chars().count()
-                    ),
+                let shown = match (bad, long_name(&v.name)) {
+                    (BadName::TooLong, Some((start, n))) => {
+                        format!("{start:?}…, {n} characters long,")
+                    }
                     _ => format!("{:?}", v.name),
                 };
                 return Err(AlgebraError::Invalid(format!(

@@ -63,6 +63,13 @@ pub fn is_identifier(s: &str) -> bool {
 /// The most characters a name has ([`BadName::TooLong`]).
 pub const MAX_NAME_CHARS: usize = 80;
 
+/// A name past [`MAX_NAME_CHARS`] as a message shows it: its first half as many characters,
+/// and its length; `None` for a name within the limit, which is shown whole.
+pub(crate) fn long_name(name: &str) -> Option<(String, usize)> {
+    let n = name.chars().count();
+    (n > MAX_NAME_CHARS).then(|| (name.chars().take(MAX_NAME_CHARS / 2).collect(), n))
+}
+
 /// Why a name cannot name a variable of any set: the one rule that
 /// [`VarSetBuilder::build`](crate::VarSetBuilder::build) applies, and that a program reading
 /// names (superint's system-file loader) applies before its own refusals. Its `Display` is the
