@@ -4,7 +4,7 @@ use std::fmt;
 use std::ops::{Add, AddAssign, Div, DivAssign, Mul, MulAssign, Neg, Sub, SubAssign};
 use std::str::FromStr;
 
-use super::rational::forward_binop;
+use super::rational::{fold_traits, forward_binop};
 use super::{Integer, IntegerAcc, Rational};
 
 /// A Gaussian integer `re + i·im`.
@@ -332,6 +332,12 @@ forward_binop!(GaussianRational, Div, div, DivAssign, div_assign, |a, b| {
     <&GaussianRational as Mul<&GaussianRational>>::mul(a, &inv)
 });
 
+fold_traits!(
+    GaussianRational,
+    GaussianRational::from(Rational::zero()),
+    GaussianRational::from(Rational::one())
+);
+
 impl Neg for &GaussianRational {
     type Output = GaussianRational;
     fn neg(self) -> GaussianRational {
@@ -352,6 +358,59 @@ impl Neg for GaussianRational {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// `Sum` and `Product` over values and references are the folds of `+` and `·` from 0
+    /// and 1, for Q and Q(i), past a machine word too; an empty sum is 0 and an empty product
+    /// is 1.
+    #[test]
+    fn sums_and_products_of_iterators_are_the_folds() {
+        let q: Vec<Rational> = [(1, 2), (-3, 4), (5, 6), (i64::MAX, 7), (7, i64::MAX)]
+            .iter()
+            .map(|&(n, d)| Rational::new(n, d))
+            .collect();
+        let sum = q.iter().fold(Rational::zero(), |acc, x| &acc + x);
+        let product = q.iter().fold(Rational::one(), |acc, x| &acc * x);
+        assert_eq!(q.iter().sum::<Rational>(), sum);
+        assert_eq!(q.clone().into_iter().sum::<Rational>(), sum);
+        assert_eq!(q.iter().product::<Rational>(), product);
+        assert_eq!(q.clone().into_iter().product::<Rational>(), product);
+        // 1/2 · (−3/4) · 5/6 · (2⁶³ − 1)/7 · 7/(2⁶³ − 1) = −5/16, through big integers.
+        assert_eq!(product, Rational::new(-5, 16));
+        assert_eq!(
+            std::iter::empty::<Rational>().sum::<Rational>(),
+            Rational::zero()
+        );
+        assert_eq!(
+            std::iter::empty::<&Rational>().product::<Rational>(),
+            Rational::one()
+        );
+
+        let z: Vec<GaussianRational> = q
+            .iter()
+            .zip(q.iter().rev())
+            .map(|(re, im)| GaussianRational::new(re.clone(), im.clone()))
+            .collect();
+        let zero = GaussianRational::from(Rational::zero());
+        let one = GaussianRational::from(Rational::one());
+        let sum = z.iter().fold(zero.clone(), |acc, x| &acc + x);
+        let product = z.iter().fold(one.clone(), |acc, x| &acc * x);
+        assert_eq!(z.iter().sum::<GaussianRational>(), sum);
+        assert_eq!(z.clone().into_iter().sum::<GaussianRational>(), sum);
+        assert_eq!(z.iter().product::<GaussianRational>(), product);
+        assert_eq!(z.into_iter().product::<GaussianRational>(), product);
+        // (1 + i)(1 − i) = 2
+        let w = GaussianRational::new(Rational::one(), Rational::one());
+        let conj: GaussianRational = [w.clone(), w.conj()].iter().product();
+        assert_eq!(conj, GaussianRational::from(Rational::from(2)));
+        assert_eq!(
+            std::iter::empty::<GaussianRational>().sum::<GaussianRational>(),
+            zero
+        );
+        assert_eq!(
+            std::iter::empty::<&GaussianRational>().product::<GaussianRational>(),
+            one
+        );
+    }
 
     /// What `Display` writes reads back, and so does any constant expression (`i*2` and
     /// `1 + i/2` were refused); a name, a non-constant or a malformed form is an error.

@@ -609,6 +609,36 @@ macro_rules! forward_binop {
 }
 pub(crate) use forward_binop;
 
+/// `Sum` and `Product` of an iterator of values or of references, as `num-rational`'s
+/// `Ratio` has them: `0` for an empty sum, `1` for an empty product.
+macro_rules! fold_traits {
+    ($Ty:ident, $zero:expr, $one:expr) => {
+        impl std::iter::Sum for $Ty {
+            fn sum<I: Iterator<Item = $Ty>>(iter: I) -> $Ty {
+                iter.fold($zero, |acc, x| acc + x)
+            }
+        }
+        impl<'a> std::iter::Sum<&'a $Ty> for $Ty {
+            fn sum<I: Iterator<Item = &'a $Ty>>(iter: I) -> $Ty {
+                iter.fold($zero, |acc, x| acc + x)
+            }
+        }
+        impl std::iter::Product for $Ty {
+            fn product<I: Iterator<Item = $Ty>>(iter: I) -> $Ty {
+                iter.fold($one, |acc, x| acc * x)
+            }
+        }
+        impl<'a> std::iter::Product<&'a $Ty> for $Ty {
+            fn product<I: Iterator<Item = &'a $Ty>>(iter: I) -> $Ty {
+                iter.fold($one, |acc, x| acc * x)
+            }
+        }
+    };
+}
+pub(crate) use fold_traits;
+
+fold_traits!(Rational, Rational::zero(), Rational::one());
+
 /// Arithmetic of big rationals in lowest terms, with gcds that take a short side to a word
 /// first ([`gcd_bigint`]). `num-rational`'s own operators reduce with `num-integer`'s binary
 /// gcd, whose cost is quadratic in the long side even when the other is 1 (an integer's
