@@ -87,6 +87,16 @@ pub(crate) fn long_name(name: &str) -> Option<(String, usize)> {
 ///     BadName::of("cos").unwrap().to_string(),
 ///     "i, cos, sin, exp, conj, re and im are reserved"
 /// );
+/// // It is an error, so that `?` takes it into a program's own.
+/// fn check(name: &str) -> Result<(), Box<dyn std::error::Error + Send + Sync>> {
+///     BadName::of(name).map_or(Ok(()), Err)?;
+///     Ok(())
+/// }
+/// assert!(check("p_x").is_ok());
+/// assert_eq!(
+///     check("a__b").unwrap_err().to_string(),
+///     "a name cannot begin or end in '_' or hold '__'"
+/// );
 /// ```
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 pub enum BadName {
@@ -154,6 +164,10 @@ impl fmt::Display for BadName {
         }
     }
 }
+
+/// The reason as an error, with no source: a program that checks names of its own may return
+/// it with `?`.
+impl std::error::Error for BadName {}
 
 const GREEK: &[(&str, &str, &str)] = &[
     ("alpha", "α", r"\alpha"),
