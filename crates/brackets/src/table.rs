@@ -11,7 +11,20 @@ use crate::error::EngineError;
 use crate::modular::{Echelon, SparseVec};
 use crate::system::System;
 
-/// One entry of a table.
+/// One entry of a table. Its `Display` is [`Entry::render`] in [`Style::Unicode`].
+///
+/// ```
+/// use brackets::{systems, BracketTable, Entry};
+///
+/// let rotor = systems::harmonic_rotor();
+/// let table = BracketTable::compute(&rotor, &["L", "G1", "G2"])?;
+/// // {G1, G2} = −ω² L, {G2, L} = −4 G1, and a bracket with itself is 0.
+/// assert_eq!(table.entries[1][2].to_string(), "−ω² L");
+/// assert_eq!(table.entries[2][0].to_string(), "−4 G1");
+/// assert_eq!(table.entries[0][0].to_string(), "0");
+/// assert!(matches!(&table.entries[1][2], Entry::Combination(terms) if terms.len() == 1));
+/// # Ok::<(), brackets::EngineError>(())
+/// ```
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub enum Entry {
     /// `Σ c_k F_k` with coefficients in the parameters (empty for zero), checked exactly.
@@ -24,6 +37,14 @@ pub enum Entry {
     /// Not computed: the bracket, or its combination's solve, reached a limit, whose message
     /// it keeps. Shown as `?`.
     Undecided(String),
+}
+
+impl std::fmt::Display for Entry {
+    /// The entry in Unicode (`−ω² L`, `4 G1`, `0`, `*` outside, `?` undecided):
+    /// [`Entry::render`] in [`Style::Unicode`].
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.write_str(&self.render(Style::Unicode))
+    }
 }
 
 /// A function of a table by name: the system's name, which reads back (`G1p`), and the name
