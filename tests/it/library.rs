@@ -498,6 +498,33 @@ fn a_condition_of_another_system_is_refused() {
     assert!(mismatch(closure(&rotor, &["L"], &options)));
 }
 
+/// The closure of generators that are not functions of the system, named by the program
+/// (`closure_of`, in the prelude beside `closure` of the system's names): at the resonance
+/// `Ω = ω`, `F2`, `P_{1,1}` and `Q_{1,1}` close, in the same brackets and relations as
+/// `closure` finds once the system names them.
+#[test]
+fn a_closure_of_functions_the_system_does_not_name() {
+    let rotor = systems::harmonic_rotor();
+    let resonance = rotor.resonance(1, 1).unwrap();
+    let z = rotor.resonant("Z", 1, 1).unwrap();
+    let generators = [
+        NamedFunction::new("F2", "F2", rotor.get("F2").unwrap().clone()),
+        NamedFunction::new("P", "P", z.p.clone()),
+        NamedFunction::new("Q", "Q", z.q.clone()),
+    ];
+    let options = ClosureOptions::new(2).when(resonance);
+    let of = closure_of(&rotor, &generators, &options).unwrap();
+    assert!(of.closes());
+    let mut named = rotor.clone();
+    named.define("P", "P", z.p);
+    named.define("Q", "Q", z.q);
+    let by_name = closure(&named, &["F2", "P", "Q"], &options).unwrap();
+    for (a, b) in [(0, 1), (0, 2), (1, 2)] {
+        assert_eq!(of.render_bracket(a, b), by_name.render_bracket(a, b));
+    }
+    assert_eq!(of.relations, by_name.relations);
+}
+
 /// A clone is a system of its own: a function added to it is not in the original.
 #[test]
 fn a_clone_is_extended_alone() {

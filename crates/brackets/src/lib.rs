@@ -37,7 +37,8 @@ pub mod tower;
 
 pub use claim::{Claim, Condition, Outcome, Verdict};
 pub use closure::{
-    closure, expressed_in, Bracket as ClosureBracket, Closure, ClosureOptions, Expressed, Relation,
+    closure, closure_of, expressed_in, Bracket as ClosureBracket, Closure, ClosureOptions,
+    Expressed, Relation,
 };
 pub use error::{EngineError, JacobiViolation};
 pub use phase::{CanonicalPair, DeclaredBracket, Gradient, PhaseSpace};
