@@ -248,7 +248,7 @@ pub fn bracket_report(
 /// is expanded, so that a mistake in the last one is found before a long expansion.
 pub fn expand_report(
     file: &LoadedSystem,
-    expressions: &[String],
+    expressions: &[impl AsRef<str>],
     when: Option<&str>,
 ) -> Result<Report, FileError> {
     let start = Instant::now();
@@ -271,7 +271,7 @@ pub fn expand_report(
     }
     let arguments = expressions
         .iter()
-        .map(|e| file.argument(e))
+        .map(|e| file.argument(e.as_ref()))
         .collect::<Result<Vec<_>, _>>()?;
     let condition = command_condition(file, when)?;
     let lines = arguments

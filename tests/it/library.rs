@@ -538,8 +538,9 @@ fn a_clone_is_extended_alone() {
     assert_eq!(copy.parse("K_2_2").unwrap(), rotor.parse("K_2_2").unwrap());
 }
 
-/// The reports take names as `&str`: the su(2) table `{G1, G2} = −ω² L`, and the rank 5 of
-/// `F1, F2, G1, G2, P_{1,1}` (C17) as a claim.
+/// The reports take names as `&str`: the su(2) table `{G1, G2} = −ω² L`, the rank 5 of
+/// `F1, F2, G1, G2, P_{1,1}` (C17) as a claim, and an expansion of the Casimir (where
+/// `expand_report` took `&[String]` alone).
 #[test]
 fn reports_take_names_as_str() {
     let rotor = harmonic_rotor_file();
@@ -550,6 +551,13 @@ fn reports_take_names_as_str() {
     assert!(rank.all_proved());
     let json = render(&rank, Format::Json, &RenderOptions::reproducible());
     assert!(json.contains("\"rank\": 5"), "{json}");
+    let expand = expand_report(&rotor, &["4*G1^2 + G2^2 + omega^2*L^2 - (F1 - F2)^2"], None);
+    let text = render(
+        &expand.unwrap(),
+        Format::Text,
+        &RenderOptions::reproducible(),
+    );
+    assert!(text.contains("(F1 − F2)² = 0"), "{text}");
 }
 
 /// A program's own error type takes the engine's errors by `?` through `FileError`: a slip in
