@@ -65,7 +65,15 @@ impl<C: Coefficient> Poly<C> {
     /// theirs that occurs (in the order of the terms where each first occurs) with its
     /// coefficient `c_k`, free of them. Collecting with respect to `vs`, as substituting them
     /// needs: `x²y + 3x² + y` in `x` is `(2, y + 3)`, `(0, y)`.
+    ///
+    /// # Panics
+    ///
+    /// If a variable is a handle of another set ([`VarSet::owns`](crate::VarSet::owns)), as
+    /// [`Poly::coeff`] and [`Poly::degree`] do: such a handle would name whatever variable
+    /// stands at its index here.
+    #[track_caller]
     pub fn coefficients_in(&self, vs: &[Var]) -> Vec<(Vec<i64>, Self)> {
+        let indices: Vec<usize> = vs.iter().map(|&v| self.vars.index_of(v)).collect();
         let layout = self.layout();
         let w = self.words();
         let mut groups: HashMap<Vec<i64>, Terms<C>> = HashMap::new();
@@ -73,12 +81,12 @@ impl<C: Coefficient> Poly<C> {
         let mut exps = vec![0i64; self.vars.len()];
         for k in 0..self.len() {
             let m = self.exp(k);
-            let key: Vec<i64> = vs.iter().map(|v| layout.get(m, v.index())).collect();
+            let key: Vec<i64> = indices.iter().map(|&j| layout.get(m, j)).collect();
             for (j, e) in exps.iter_mut().enumerate() {
                 *e = layout.get(m, j);
             }
-            for v in vs {
-                exps[v.index()] = 0;
+            for &j in &indices {
+                exps[j] = 0;
             }
             let mut packed = vec![0u64; w];
             layout.pack(&exps, &mut packed);

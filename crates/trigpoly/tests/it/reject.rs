@@ -497,6 +497,24 @@ fn an_angle_is_no_variable_over_q() {
     Poly::<Rational>::var(&vars, theta);
 }
 
+/// `coefficients_in` of a handle of another set panics saying so, as `coeff` and `degree` do,
+/// where it collected in whatever variable stood at the handle's index here: `y` of `{y}`
+/// gave `x²p + 3x² + p` in `x`, `(2, p + 3)` and `(0, p)`.
+#[test]
+#[should_panic(expected = "a variable handle of another variable set was used")]
+fn coefficients_in_a_variable_of_another_set_panic() {
+    let vars = trigpoly::VarSet::builder()
+        .coordinate("x")
+        .momentum("p")
+        .build()
+        .unwrap();
+    let other = trigpoly::VarSet::builder().coordinate("y").build().unwrap();
+    let f = Poly::<Rational>::parse(&vars, "x^2*p + 3*x^2 + p").unwrap();
+    let x = vars.lookup("x").unwrap();
+    assert_eq!(f.coefficients_in(&[x]).len(), 2);
+    f.coefficients_in(&[other.lookup("y").unwrap()]);
+}
+
 /// A long line (a generated expression) is rendered as a window of 40 characters either side
 /// of the caret, cut with `…`, with the caret under the offending character.
 #[test]
