@@ -525,6 +525,32 @@ fn a_closure_of_functions_the_system_does_not_name() {
     assert_eq!(of.relations, by_name.relations);
 }
 
+/// A search's integrals and a rank's certificate compare with `==`: the same search twice
+/// finds equal bases, one of a larger space holds the smaller's integrals and more, and the
+/// rank of the same functions twice has equal certificates (`F1, F2, G1, G2, L`: rank 4,
+/// the Casimir ties them), of fewer functions another.
+#[test]
+fn integrals_and_rank_certificates_compare() {
+    let rotor = systems::harmonic_rotor();
+    let resonance = rotor.resonance(1, 1).unwrap();
+    let found = |degree| {
+        let space = SearchSpace::new(degree, degree, 1);
+        search(&rotor, &SearchOptions::new(space).when(resonance.clone()))
+            .unwrap()
+            .basis
+    };
+    let (small, again, large) = (found(1), found(1), found(2));
+    assert_eq!(small, again);
+    assert_eq!(small.len(), 6);
+    assert!(large.len() > small.len());
+    assert_ne!(small, large);
+    let certify = |names: &[&str]| rotor.rank(names).unwrap();
+    let five = ["F1", "F2", "G1", "G2", "L"];
+    assert_eq!(certify(&five).rank, 4);
+    assert_eq!(certify(&five), certify(&five));
+    assert_ne!(certify(&five), certify(&five[..2]));
+}
+
 /// A clone is a system of its own: a function added to it is not in the original.
 #[test]
 fn a_clone_is_extended_alone() {

@@ -48,8 +48,10 @@ impl std::fmt::Display for UpperBound {
     }
 }
 
-/// A certified rank.
-#[derive(Clone, Debug)]
+/// A certified rank. Two are equal when they certify the same rank by the same minor at the
+/// same point, with the same upper bound: the rank of the same functions twice gives equal
+/// certificates.
+#[derive(Clone, Debug, PartialEq, Eq)]
 pub struct RankCertificate {
     /// The rank.
     pub rank: usize,

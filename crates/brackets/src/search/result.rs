@@ -8,8 +8,10 @@ use crate::modular::{self, SparseVec};
 
 use super::options::SearchSpace;
 
-/// One basis element of the integrals found.
-#[derive(Clone, Debug)]
+/// One basis element of the integrals found. Two are equal when they are the same function
+/// with the same degrees and the same proofs: a search is deterministic, so the same search
+/// twice finds equal bases.
+#[derive(Clone, Debug, PartialEq, Eq)]
 pub struct Integral {
     /// The integral at the fixed parameter values, with coprime integer coefficients.
     pub fixed: Expr,
