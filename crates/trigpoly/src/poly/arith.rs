@@ -229,6 +229,52 @@ impl<C: Coefficient> Mul<&Rational> for Poly<C> {
     }
 }
 
+/// `q · f` for a rational `q`, copying `f`'s terms once with a new content
+/// ([`Poly::scale_rational`]).
+impl<C: Coefficient> Mul<&Rational> for &Poly<C> {
+    type Output = Poly<C>;
+    fn mul(self, q: &Rational) -> Poly<C> {
+        if q.is_zero() || self.is_zero() {
+            return Poly::zero(&self.vars);
+        }
+        self.with_content(&self.content * q)
+    }
+}
+
+/// `q · f`, taking both.
+impl<C: Coefficient> Mul<Rational> for Poly<C> {
+    type Output = Poly<C>;
+    fn mul(self, q: Rational) -> Poly<C> {
+        self * &q
+    }
+}
+
+/// `q · f`, taking `q`.
+impl<C: Coefficient> Mul<Rational> for &Poly<C> {
+    type Output = Poly<C>;
+    fn mul(self, q: Rational) -> Poly<C> {
+        self * &q
+    }
+}
+
+/// `f ← q · f`, with no copy of `f`'s terms.
+impl<C: Coefficient> MulAssign<&Rational> for Poly<C> {
+    fn mul_assign(&mut self, q: &Rational) {
+        if q.is_zero() || self.is_zero() {
+            *self = Poly::zero(&self.vars);
+        } else {
+            self.content = &self.content * q;
+        }
+    }
+}
+
+/// `f ← q · f`, with no copy of `f`'s terms.
+impl<C: Coefficient> MulAssign<Rational> for Poly<C> {
+    fn mul_assign(&mut self, q: Rational) {
+        *self *= &q;
+    }
+}
+
 impl<C: Coefficient> Neg for &Poly<C> {
     type Output = Poly<C>;
     fn neg(self) -> Poly<C> {

@@ -382,3 +382,36 @@ fn scaling_by_a_constant_of_any_shape_keeps_the_normal_form() {
         assert_eq!(G::constant(&vars, c.clone()), parts(&one), "c = {c}");
     }
 }
+
+/// `f · q` for a rational `q` is the product by the constant `q`, whichever of `f` and `q` is
+/// borrowed, and so is `f *= q`: `&f * &q` and `f * q` were refused (only `f * &q` took a
+/// rational), and zero on either side gives zero.
+#[test]
+fn a_rational_multiple_takes_values_and_references() {
+    let vars = phase_space();
+    let f: G = p(&vars, "x*p_x - 3*y^2/2 + cos(theta)");
+    for q in [
+        Rational::new(3, 5),
+        Rational::new(-7, 2),
+        Rational::zero(),
+        Rational::new(i64::MAX, 3),
+    ] {
+        let product = &f * &G::constant(&vars, q.clone().into());
+        assert_eq!(&f * &q, product, "{q}");
+        assert_eq!(&f * q.clone(), product, "{q}");
+        assert_eq!(f.clone() * q.clone(), product, "{q}");
+        assert_eq!(f.clone() * &q, product, "{q}");
+        assert_eq!(f.scale_rational(&q), product, "{q}");
+        let mut g = f.clone();
+        g *= &q;
+        assert_eq!(g, product, "{q}");
+        let mut g = f.clone();
+        g *= q.clone();
+        assert_eq!(g, product, "{q}");
+    }
+    let zero = G::zero(&vars);
+    assert_eq!(&zero * &Rational::new(2, 3), zero);
+    let mut z = zero.clone();
+    z *= Rational::new(2, 3);
+    assert_eq!(z, zero);
+}
