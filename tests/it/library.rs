@@ -108,6 +108,28 @@ fn a_tower_below_one_checks_nothing() {
     }
 }
 
+/// The engine's tower of the paper's rotor reports `max²` brackets to `progress` and none
+/// below 1; of a bound past 3·10⁹ it stops at its first bracket's error (an unknown ladder),
+/// where `max * max` overflowed first (a panic in a debug build).
+#[test]
+fn the_engines_tower_counts_its_pairs_without_overflow() {
+    let rotor = systems::harmonic_rotor();
+    let mut totals = Vec::new();
+    let tower = check_tower(&rotor, "Z", 2, &mut |done, total| {
+        totals.push((done, total))
+    })
+    .unwrap();
+    assert_eq!((tower.checked, tower.failures.len()), (4, 0));
+    assert_eq!(totals, [(1, 4), (2, 4), (3, 4), (4, 4)]);
+    let mut calls = 0;
+    let none = check_tower(&rotor, "Z", -3, &mut |_, _| calls += 1).unwrap();
+    assert_eq!((none.checked, calls), (0, 0));
+    for max in [i64::MAX, 1 << 32] {
+        let err = check_tower(&rotor, "W", max, &mut |_, _| {}).unwrap_err();
+        assert_eq!(err, EngineError::UnknownName("W".into()), "{max}");
+    }
+}
+
 /// The tower at a resonance: `{R_{1,1}, H} = 0` at `p_φ = Jk`, a claim added in code and
 /// proved; `{R_{2,1}, H} = 0` there is refuted, as it says it expects, with the residual
 /// `{R_{2,1}, H} = ik R_{2,1}` at `Ω = k`.

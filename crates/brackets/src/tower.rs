@@ -49,7 +49,10 @@ pub fn check_tower(
     system.require_rotor("the tower {K_{m,n}, H} = i(mω − nΩ) K_{m,n}")?;
     let omega = system.parse("omega")?;
     let big_omega = system.parse("p_theta/I")?;
-    let total = (max * max) as usize;
+    // `max²` pairs, none below 1, saturated: `max * max` overflowed (a panic in a debug
+    // build, before the first bracket could report an unknown ladder) past 3·10⁹.
+    let side = usize::try_from(max.max(0)).unwrap_or(usize::MAX);
+    let total = side.saturating_mul(side);
     let mut failures = Vec::new();
     let mut done = 0;
     for m in 1..=max {
