@@ -130,6 +130,28 @@ fn the_engines_tower_counts_its_pairs_without_overflow() {
     }
 }
 
+/// `K_{m,n} = Z^m e^{−inθ}` for any `n`: `n = −2` gives `Z e^{2iθ}`, and `n = i64::MIN`, whose
+/// negation overflowed (a panic in a debug build), is refused by the limit on an angle's
+/// order, as `n = i64::MAX` is.
+#[test]
+fn a_resonant_function_of_any_order_is_formed_or_refused() {
+    let rotor = systems::harmonic_rotor();
+    let k = rotor.resonant("Z", 1, -2).unwrap().k;
+    assert_eq!(k, rotor.parse("Z*exp(2*i*theta)").unwrap());
+    for n in [i64::MIN, i64::MAX] {
+        let err = rotor.resonant("Z", 1, n).map(|_| ()).unwrap_err();
+        assert!(
+            matches!(
+                &err,
+                EngineError::Algebra(AlgebraError::OrderTooLarge { order, .. })
+                    if *order == n.unsigned_abs()
+            ),
+            "{n}: {err:?}"
+        );
+        assert!(err.is_limit());
+    }
+}
+
 /// The tower at a resonance: `{R_{1,1}, H} = 0` at `p_φ = Jk`, a claim added in code and
 /// proved; `{R_{2,1}, H} = 0` there is refuted, as it says it expects, with the residual
 /// `{R_{2,1}, H} = ik R_{2,1}` at `Ω = k`.

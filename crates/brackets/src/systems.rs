@@ -275,9 +275,11 @@ impl System {
             .angles()
             .next()
             .ok_or_else(|| EngineError::Invalid("the system has no angle".into()))?;
+        // e^{−inθ} as the conjugate of e^{inθ}: `−n` overflows for n = i64::MIN, which the
+        // order's limit refuses as it refuses any order past it.
         let k = z
             .checked_pow(m)?
-            .checked_mul(&Expr::exp_i(self.vars(), theta, -n)?)?;
+            .checked_mul(&Expr::exp_i(self.vars(), theta, n)?.conj())?;
         // P = (K + K̄)/2, Q = (K − K̄)/(2i): both from one pass over K and K̄.
         let (kbar, p, q) = k.conj_re_im();
         Ok(Resonant { k, kbar, p, q })
