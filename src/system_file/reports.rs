@@ -245,7 +245,8 @@ pub fn bracket_report(
 
 /// Expressions of the file's system in normal form, each optionally under a condition such
 /// as `p_theta = I*omega`: what `superint expand` prints. Every expression is read before any
-/// is expanded, so that a mistake in the last one is found before a long expansion.
+/// is expanded, so that a mistake in the last one is found before a long expansion; none at
+/// all is refused, as a rank of no functions is.
 pub fn expand_report(
     file: &LoadedSystem,
     expressions: &[impl AsRef<str>],
@@ -260,7 +261,7 @@ pub fn expand_report(
             }
             Caller::Program => {
                 "nothing to expand: give the expressions in the call, such as \
-                 expand_report(&system, &[\"H\".to_string()], None)"
+                 expand_report(&system, &[\"H\"], None)"
             }
         };
         return Err(FileError::new(

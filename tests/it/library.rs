@@ -628,6 +628,9 @@ fn reports_take_names_as_str() {
         &RenderOptions::reproducible(),
     );
     assert!(text.contains("(F1 − F2)² = 0"), "{text}");
+    // A rank of no function is refused (nothing to expand: `report_errors_name_the_program_not_the_command_line`).
+    let none = rank_report(&rotor, &[] as &[&str], None).unwrap_err();
+    assert_eq!(none.message, "a rank needs at least one function");
 }
 
 /// A program's own error type takes the engine's errors by `?` through `FileError`: a slip in
@@ -762,11 +765,11 @@ fn report_errors_name_the_program_not_the_command_line() {
     let err = rank_report(&rotor, &["A", "Omega", "B"], None).unwrap_err();
     assert!(cli_words(&err).starts_with("<expression>:1:1: unknown name 'B'"));
     // Nothing to expand is refused, as a table of nothing is: it was a report of no line.
-    let err = expand_report(&rotor, &[], None).unwrap_err();
+    let err = expand_report(&rotor, &[] as &[&str], None).unwrap_err();
     assert_eq!(
         cli_words(&err),
         "<expression>: nothing to expand: give the expressions in the call, such as \
-         expand_report(&system, &[\"H\".to_string()], None)"
+         expand_report(&system, &[\"H\"], None)"
     );
     let err = table_report(&rotor, &["A", "B"]).unwrap_err();
     assert_eq!(
