@@ -595,6 +595,27 @@ fn integrals_and_rank_certificates_compare() {
     assert_ne!(certify(&five), certify(&five[..2]));
 }
 
+/// A bracket table computed by the engine prints as the grid a report prints, row for row
+/// (the report indents it and captions it): the su(2) table, and one of `Z` and `Z̄`, whose
+/// mark over the letter takes no column.
+#[test]
+fn a_bracket_table_prints_as_the_reports_grid() {
+    let file = harmonic_rotor_file();
+    for names in [&["F1", "L", "G1", "G2"][..], &["Z", "Zbar", "L"]] {
+        let table = BracketTable::compute(file.system(), names).unwrap();
+        let report = table_report(&file, names).unwrap();
+        let text = render(&report, Format::Text, &RenderOptions::reproducible());
+        let grid = table.to_string();
+        assert_eq!(grid.lines().count(), names.len() + 2);
+        for line in grid.lines() {
+            assert!(
+                text.lines().any(|l| l == format!("    {line}")),
+                "{line:?} not in\n{text}"
+            );
+        }
+    }
+}
+
 /// A clone is a system of its own: a function added to it is not in the original.
 #[test]
 fn a_clone_is_extended_alone() {

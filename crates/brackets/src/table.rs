@@ -143,6 +143,76 @@ impl BracketTable {
     }
 }
 
+/// The table as a grid in Unicode, row `A` and column `B` holding `{A, B}`, each column as
+/// wide as its longest entry (a mark over a letter, `Z̄`, takes no column of its own); a long
+/// entry makes a long line. superint's reports print a table so too, and as a list where it
+/// is wider than a line.
+///
+/// ```
+/// use brackets::{systems, BracketTable};
+///
+/// let rotor = systems::harmonic_rotor();
+/// let table = BracketTable::compute(&rotor, &["L", "G1", "G2"])?;
+/// assert_eq!(
+///     table.to_string(),
+///     "\
+/// {·,·} │ L       G1     G2
+/// ──────┼─────────────────────
+/// L     │ 0       −G2    4 G1
+/// G1    │ G2      0      −ω² L
+/// G2    │ −4 G1   ω² L   0
+/// "
+/// );
+/// # Ok::<(), brackets::EngineError>(())
+/// ```
+impl std::fmt::Display for BracketTable {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        // Terminal columns: characters but the combining marks drawn over the one before.
+        let width = |s: &str| {
+            s.chars()
+                .filter(|c| !('\u{300}'..='\u{36f}').contains(c))
+                .count()
+        };
+        let pad = |s: &str, w: usize| format!("{s}{}", " ".repeat(w.saturating_sub(width(s))));
+        let corner = "{·,·}";
+        let cells: Vec<Vec<String>> = self
+            .entries
+            .iter()
+            .map(|row| row.iter().map(Entry::to_string).collect())
+            .collect();
+        let first = self
+            .display
+            .iter()
+            .map(|d| width(d))
+            .chain([width(corner)])
+            .max()
+            .unwrap_or(0);
+        let widths: Vec<usize> = (0..self.display.len())
+            .map(|j| {
+                cells
+                    .iter()
+                    .map(|row| width(&row[j]))
+                    .chain([width(&self.display[j])])
+                    .max()
+                    .unwrap_or(0)
+            })
+            .collect();
+        let row = |head: &str, items: &[String]| {
+            let body: Vec<String> = items.iter().zip(&widths).map(|(c, &w)| pad(c, w)).collect();
+            format!("{} │ {}", pad(head, first), body.join("   "))
+                .trim_end()
+                .to_string()
+        };
+        writeln!(f, "{}", row(corner, &self.display))?;
+        let rule = widths.iter().sum::<usize>() + 3 * widths.len().saturating_sub(1) + 1;
+        writeln!(f, "{}┼{}", "─".repeat(first + 1), "─".repeat(rule))?;
+        for (name, items) in self.display.iter().zip(&cells) {
+            writeln!(f, "{}", row(name, items))?;
+        }
+        Ok(())
+    }
+}
+
 impl Entry {
     /// `−entry`: the entry of the transposed bracket.
     fn negated(&self) -> Entry {
