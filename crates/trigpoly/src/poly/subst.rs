@@ -453,7 +453,31 @@ impl Point {
         self
     }
 
-    /// Sets an angle by its cosine and sine, which must satisfy `cos² + sin² = 1`.
+    /// Sets an angle by its cosine and sine, which must satisfy `cos² + sin² = 1`. A variable
+    /// that is no angle is refused as such (it was refused as a point off the unit circle),
+    /// and a handle of another set as a mismatch of sets.
+    ///
+    /// ```
+    /// use trigpoly::{AlgebraError, Expr, Point, Rational, VarSet};
+    ///
+    /// let vars = VarSet::builder().coordinate("x").angle("theta").build()?;
+    /// let (x, theta) = (vars.lookup("x").unwrap(), vars.lookup("theta").unwrap());
+    /// // x cos θ + sin 2θ at x = 2, (cos θ, sin θ) = (3/5, 4/5): 6/5 + 2·(4/5)(3/5) = 54/25.
+    /// let f = Expr::parse(&vars, "x*cos(theta) + sin(2*theta)")?;
+    /// let point = Point::new(&vars)
+    ///     .with(x, Rational::from(2))
+    ///     .with_angle(theta, Rational::new(3, 5), Rational::new(4, 5))?;
+    /// assert_eq!(f.eval(&point)?.to_string(), "54/25");
+    /// // Off the circle, and not an angle.
+    /// let off = Point::new(&vars).with_angle(theta, Rational::one(), Rational::one());
+    /// assert_eq!(off, Err(AlgebraError::NotOnUnitCircle("θ".into())));
+    /// let coordinate = Point::new(&vars).with_angle(x, Rational::new(3, 5), Rational::new(4, 5));
+    /// assert_eq!(
+    ///     coordinate.unwrap_err().to_string(),
+    ///     "Point::with_angle sets an angle, and x is a coordinate"
+    /// );
+    /// # Ok::<(), Box<dyn std::error::Error>>(())
+    /// ```
     pub fn with_angle(
         mut self,
         v: Var,
@@ -461,8 +485,15 @@ impl Point {
         sin: Rational,
     ) -> Result<Point, AlgebraError> {
         let j = self.vars.checked_index(v)?;
-        let name = self.vars.variable(v).unicode().to_string();
-        if self.vars.variable(v).kind() != VarKind::Angle || !(&cos * &cos + &sin * &sin).is_one() {
+        let variable = self.vars.variable(v);
+        let name = variable.unicode().to_string();
+        if variable.kind() != VarKind::Angle {
+            return Err(AlgebraError::Invalid(format!(
+                "Point::with_angle sets an angle, and {name} is {}",
+                variable.kind().described()
+            )));
+        }
+        if !(&cos * &cos + &sin * &sin).is_one() {
             return Err(AlgebraError::NotOnUnitCircle(name));
         }
         self.values[j] = Some(GaussianRational::new(cos, sin));
