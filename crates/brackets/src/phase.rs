@@ -301,6 +301,35 @@ impl PhaseSpace {
     /// phase variables that has a Poisson variable, the brackets of the denominator atoms and
     /// radicals included ([`EngineError::Jacobi`], with the triple, the residual and the
     /// given bracket with which the triple's identity first fails).
+    ///
+    /// ```
+    /// use brackets::{EngineError, PhaseSpace};
+    /// use trigpoly::{Expr, VarSet};
+    ///
+    /// // so(3)*, the Euler top's space: {M1, M2} = M3 and cyclically, no canonical pairs.
+    /// let vars = VarSet::builder().poisson("M1").poisson("M2").poisson("M3").build()?;
+    /// let m = |s: &str| Expr::parse(&vars, s);
+    /// let so3 = PhaseSpace::new(&vars, &[])?.with_brackets(&[
+    ///     ("M1", "M2", m("M3")?),
+    ///     ("M2", "M3", m("M1")?),
+    ///     ("M3", "M1", m("M2")?),
+    /// ])?;
+    /// // |M|² is a Casimir: its bracket with every function is 0.
+    /// let casimir = m("M1^2 + M2^2 + M3^2")?;
+    /// assert!(so3.bracket(&casimir, &m("M1*M2 + M3^3")?)?.is_zero());
+    /// assert_eq!(so3.bracket(&m("M1")?, &m("M2^2")?)?.to_string(), "2 M2 M3");
+    /// // {M3, M1} = M3 with the others breaks the Jacobi identity for (M1, M2, M3).
+    /// let broken = PhaseSpace::new(&vars, &[])?.with_brackets(&[
+    ///     ("M1", "M2", m("M3")?),
+    ///     ("M2", "M3", m("M1")?),
+    ///     ("M3", "M1", m("M3")?),
+    /// ]);
+    /// let Err(EngineError::Jacobi(violation)) = broken else {
+    ///     panic!("the Jacobi identity fails");
+    /// };
+    /// assert_eq!(violation.bracket, 2);
+    /// # Ok::<(), Box<dyn std::error::Error>>(())
+    /// ```
     pub fn with_brackets(mut self, brackets: &[(&str, &str, Expr)]) -> Result<Self, EngineError> {
         let vars = self.vars.clone();
         self.declared.clear();
