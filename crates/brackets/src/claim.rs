@@ -133,6 +133,30 @@ impl Condition {
     /// variable sets, or of a variable that is not a handle of theirs, which is
     /// [`AlgebraError::VarSetMismatch`]; so is the use of a condition with functions of another
     /// set (a claim's, a search's).
+    ///
+    /// ```
+    /// use brackets::{systems, Claim, Condition, EngineError};
+    ///
+    /// let rotor = systems::harmonic_rotor();
+    /// let (p_theta, omega) = (rotor.var("p_theta"), rotor.var("omega"));
+    /// // p_θ = Iω, ω = 1/2: the first value is resolved to I/2.
+    /// let at = Condition::all(
+    ///     "p_θ = Iω, ω = 1/2",
+    ///     vec![(p_theta, rotor.parse("I*omega")?), (omega, rotor.parse("1/2")?)],
+    /// )?;
+    /// assert_eq!(at.subs()[0].1.to_string(), "I/2");
+    /// // There Ω = p_θ/I is ω = 1/2, and the claim holds there only.
+    /// let (lhs, rhs) = (rotor.parse("p_theta/I")?, rotor.parse("omega")?);
+    /// let claim = Claim::new("Ω", "p_θ/I = ω", lhs, rhs);
+    /// assert!(!claim.check()?.outcome.is_proved());
+    /// assert!(claim.when(at).check()?.outcome.is_proved());
+    /// // x = y, y = x is an equation, not a substitution.
+    /// let (x, y) = (rotor.var("x"), rotor.var("y"));
+    /// let swap = vec![(x, rotor.parse("y")?), (y, rotor.parse("x")?)];
+    /// let circular = Condition::all("x = y, y = x", swap);
+    /// assert!(matches!(circular, Err(EngineError::RefusedCondition { .. })));
+    /// # Ok::<(), EngineError>(())
+    /// ```
     pub fn all(text: &str, subs: Vec<(Var, Expr)>) -> Result<Self, EngineError> {
         let mut subs = subs;
         if let Some((_, first)) = subs.first() {
