@@ -458,7 +458,8 @@ fn a_degree_limit_of_zero_is_refused_by_the_loader() {
 }
 
 /// The value types a program compares can key a map or a set too: formats, styles,
-/// expectations, error kinds, outcomes (with their residuals), conditions and function names.
+/// expectations, error kinds, outcomes (with their residuals), conditions, function names,
+/// claims and resonant functions.
 #[test]
 fn value_types_are_hashable() {
     use std::collections::HashSet;
@@ -506,6 +507,26 @@ fn value_types_are_hashable() {
         distinct([name("G1p", "G1'"), name("G1p", "G1'"), name("G1", "G1")]),
         2
     );
+    // Claims (the same sides under another condition differ) and resonant functions.
+    let claim = |lhs: &str| {
+        Claim::new(
+            "c",
+            lhs,
+            rotor.parse(lhs).unwrap(),
+            rotor.parse("0").unwrap(),
+        )
+    };
+    let at = rotor.resonance(1, 1).unwrap();
+    let claims = [
+        claim("{Z*exp(-i*theta), H}"),
+        claim("{Z*exp(-i*theta), H}"),
+        claim("{Z*exp(-i*theta), H}").when(at.clone()),
+        claim("{Z*exp(-i*theta), H}").when(at),
+        claim("{L, H}"),
+    ];
+    assert_eq!(distinct(claims), 3);
+    let resonant = [(1, 1), (2, 1), (1, 1)].map(|(m, n)| rotor.resonant("Z", m, n).unwrap());
+    assert_eq!(distinct(resonant), 2);
 }
 
 /// A condition belongs to one system: values and a variable of two variable sets, or a

@@ -443,8 +443,9 @@ fn refused(v: Var, message: String) -> EngineError {
     EngineError::RefusedCondition { var: v, message }
 }
 
-/// An identity to check: `lhs = rhs`, under an optional condition.
-#[derive(Clone, Debug)]
+/// An identity to check: `lhs = rhs`, under an optional condition. Two are equal when their
+/// ids, statements, sides and conditions are.
+#[derive(Clone, Debug, PartialEq, Eq, Hash)]
 pub struct Claim {
     /// An identifier such as `C09`.
     pub id: String,

@@ -230,7 +230,7 @@ fn anisotropic(a: u32, b: u32, limits: Limits) -> Result<System, EngineError> {
 
 /// The resonant functions built from a ladder function `Z` (with `{Z, H} = iωZ`) and the angle:
 /// `K = Z^m e^{−inθ}`, `K̄ = Z̄^m e^{inθ}`, `P = (K + K̄)/2`, `Q = (K − K̄)/(2i)`.
-#[derive(Clone, Debug)]
+#[derive(Clone, Debug, PartialEq, Eq, Hash)]
 pub struct Resonant {
     /// `K_{m,n}`.
     pub k: Expr,
