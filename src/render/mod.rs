@@ -85,7 +85,8 @@ pub struct Options {
     pub timings: bool,
     /// The most monomials (outside the angles) of a refuted claim's residual or a table's entry
     /// printed whole: a longer one shows the terms of its first this many and says how many it
-    /// has ([`Report::excerpted`]); `None` prints every one.
+    /// has ([`Report::excerpted`]); `None` prints every one, and `Some(0)` is taken as
+    /// `Some(1)`.
     pub shown_monomials: Option<usize>,
 }
 

@@ -112,8 +112,10 @@ impl Excerpt {
     }
 
     /// Cuts `e` to the terms of its first `monomials` monomials outside the angles if it has
-    /// more; how much of it is then shown.
+    /// more; how much of it is then shown. At least one is shown: a residual cut to none
+    /// printed as `0 + …`, which reads as nearly zero.
     fn cut(e: &mut Expr, monomials: usize) -> Option<Excerpt> {
+        let monomials = monomials.max(1);
         if e.len() <= monomials {
             return None;
         }

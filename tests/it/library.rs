@@ -637,6 +637,27 @@ fn a_bracket_table_prints_as_the_reports_grid() {
     }
 }
 
+/// A residual cut to its leading part shows at least one monomial: with `shown_monomials`
+/// `Some(0)`, `{G1, G2} = L` refuted printed `residual lhs − rhs = 0 + …`, which reads as
+/// nearly zero; it shows its first term as `Some(1)` does.
+#[test]
+fn an_excerpt_shows_at_least_one_monomial() {
+    let mut rotor = LoadedSystem::of_system(systems::harmonic_rotor());
+    rotor.add_claim("w", "{G1, G2} = L", None).unwrap().expect = Expect::Refuted;
+    let report = check_report([&rotor]).unwrap();
+    let shown = |n| {
+        let options = RenderOptions {
+            timings: false,
+            shown_monomials: Some(n),
+        };
+        render(&report, Format::Text, &options)
+    };
+    let none = shown(0);
+    assert!(!none.contains("= 0 + …"), "{none}");
+    assert!(none.contains("its first 1 of 4 terms"), "{none}");
+    assert_eq!(none, shown(1));
+}
+
 /// A clone is a system of its own: a function added to it is not in the original.
 #[test]
 fn a_clone_is_extended_alone() {
