@@ -4,9 +4,9 @@
 use crate::render::tex::Names;
 use std::time::Instant;
 
-use brackets::closure::{closure_of, Bracket, Closure, ClosureOptions};
+use brackets::closure::{closure_of, relation_text, Bracket, Closure, ClosureOptions};
 use brackets::{EngineError, NamedFunction, System};
-use trigpoly::{Expr, GaussianRational, Style};
+use trigpoly::Style;
 
 use crate::report::{
     counted, listed, ClaimResult, ClosureFacts, Entry, Equation, Equations, Facts, Report, Section,
@@ -14,35 +14,6 @@ use crate::report::{
 };
 
 use super::{agreeing, off_one_note, parameter_facts, parameter_names, HeldAt};
-
-/// A relation `R = 0` as `positive terms = negated negative terms`, in the paper's notation:
-/// `P11² + Q11² = 2MωL + 2M F1 − Mω²I`.
-pub fn relation_text(poly: &Expr) -> String {
-    let vars = poly.vars();
-    let mut left = Vec::new();
-    let mut right = Vec::new();
-    for t in poly.terms() {
-        let c = t.coeff();
-        if !c.is_real() {
-            return format!("{} = 0", poly.render(Style::Unicode));
-        }
-        let e = t.exponents();
-        if c.re.is_negative() {
-            right.push((-&c, e));
-        } else {
-            left.push((c, e));
-        }
-    }
-    let side = |terms: Vec<(GaussianRational, Vec<i64>)>| -> String {
-        if terms.is_empty() {
-            return "0".into();
-        }
-        Expr::from_terms(vars, terms)
-            .map(|e| e.render(Style::Unicode))
-            .unwrap_or_else(|_| "?".into())
-    };
-    format!("{} = {}", side(left), side(right))
-}
 
 /// The report of a closure: the structure table, what lies outside, every bracket and relation
 /// proved. The generators need not be functions of the system (an instance `P_{1,1}`, a

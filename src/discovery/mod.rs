@@ -24,7 +24,8 @@ mod closure;
 mod input;
 mod search;
 
-pub use closure::{closure_report, relation_text};
+pub use brackets::closure::relation_text;
+pub use closure::closure_report;
 pub use input::{
     builtin_system, parse_condition, parse_fixed, parse_known, parse_symbolic, BUILTIN_SYSTEMS,
 };

@@ -134,7 +134,52 @@ pub enum Bracket {
     },
 }
 
-/// A polynomial relation among the generators.
+/// A relation `R = 0` as `positive terms = negated negative terms`, in the paper's notation:
+/// `P11² + Q11² = 2MωL + 2M F1 − Mω²I`; one with a coefficient that is not real as
+/// `R = 0`.
+pub fn relation_text(poly: &Expr) -> String {
+    let vars = poly.vars();
+    let mut left = Vec::new();
+    let mut right = Vec::new();
+    for t in poly.terms() {
+        let c = t.coeff();
+        if !c.is_real() {
+            return format!("{} = 0", poly.render(Style::Unicode));
+        }
+        let e = t.exponents();
+        if c.re.is_negative() {
+            right.push((-&c, e));
+        } else {
+            left.push((c, e));
+        }
+    }
+    let side = |terms: Vec<(GaussianRational, Vec<i64>)>| -> String {
+        if terms.is_empty() {
+            return "0".into();
+        }
+        Expr::from_terms(vars, terms)
+            .map(|e| e.render(Style::Unicode))
+            .unwrap_or_else(|_| "?".into())
+    };
+    format!("{} = {}", side(left), side(right))
+}
+
+/// A polynomial relation among the generators. Its `Display` is [`relation_text`], the
+/// positive terms on the left.
+///
+/// ```
+/// use brackets::{closure, systems, ClosureOptions};
+///
+/// // The Casimir of su(2) (C10): 4 G1² + G2² + ω² L² = (F1 − F2)².
+/// let rotor = systems::harmonic_rotor();
+/// let c = closure(&rotor, &["F1", "F2", "L", "G1", "G2"], &ClosureOptions::new(2))?;
+/// assert_eq!(c.relations.len(), 1);
+/// assert_eq!(
+///     c.relations[0].to_string(),
+///     "ω² L² + 2 F1 F2 + 4 G1² + G2² = F1² + F2²"
+/// );
+/// # Ok::<(), brackets::EngineError>(())
+/// ```
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub struct Relation {
     /// `R(G) = 0`, a polynomial in [`Closure::ring`].
@@ -143,6 +188,12 @@ pub struct Relation {
     pub degree: u32,
     /// Whether it was proved with symbolic parameters (else only at the fixed values).
     pub symbolic: bool,
+}
+
+impl std::fmt::Display for Relation {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.write_str(&relation_text(&self.poly))
+    }
 }
 
 /// Seconds spent (reported, never used to decide anything).
