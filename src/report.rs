@@ -73,6 +73,20 @@ impl Expect {
     }
 }
 
+/// Its [`Expect::name`], as a file writes it (`expect = "refuted"`).
+///
+/// ```
+/// use superint::report::Expect;
+///
+/// assert_eq!(Expect::Refuted.to_string(), "refuted");
+/// assert_eq!(format!("expected {}", Expect::default()), "expected proved");
+/// ```
+impl std::fmt::Display for Expect {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.write_str(self.name())
+    }
+}
+
 /// A numbered section of a report: of the paper (2 to 5), or one a file checked, a search, a
 /// closure (1, 2, …).
 #[derive(Clone, Debug)]
