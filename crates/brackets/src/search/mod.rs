@@ -151,6 +151,34 @@ use proof::{flow_vanishes, lead, primitive_vector};
 /// }
 /// # Ok::<(), brackets::EngineError>(())
 /// ```
+///
+/// The linear algebra is done with every parameter of `H` (and of the condition) fixed, to 1
+/// unless [`SearchOptions::fix`] gives another value or [`SearchOptions::symbolic`] keeps it;
+/// each integral found is then lifted back to the parameters where it can be. One that holds
+/// at the fixed values alone is proved there only: [`SearchResult::for_every_value`] is `None`
+/// for it, and a symmetry of those values (all equal) may bring many.
+///
+/// ```
+/// use brackets::{search, PhaseSpace, SearchOptions, SearchSpace, System};
+/// use trigpoly::{Expr, Rational, VarSet};
+///
+/// // p²/2 + (x² + a²y²)/2: at a = 1 (the default) the oscillator is isotropic, and its
+/// // angular momentum x p_y − y p_x is an integral there alone; at a = 2 it is none.
+/// let vars = VarSet::builder()
+///     .coordinate("x").coordinate("y").momentum("p_x").momentum("p_y").parameter("a")
+///     .build()?;
+/// let space = PhaseSpace::new(&vars, &[("x", "p_x"), ("y", "p_y")])?;
+/// let h = Expr::parse(&vars, "(p_x^2 + p_y^2)/2 + (x^2 + a^2*y^2)/2")?;
+/// let oscillator = System::new("oscillator", space, h);
+/// let at_one = search(&oscillator, &SearchOptions::new(SearchSpace::new(2, 2, 0)))?;
+/// assert_eq!(at_one.basis.len(), 6);
+/// assert_eq!(at_one.basis[1].expr().to_string(), "x p_y − y p_x");
+/// assert_eq!(at_one.for_every_value(1), None);
+/// let a = vars.lookup("a").unwrap();
+/// let options = SearchOptions::new(SearchSpace::new(2, 2, 0)).fix(a, Rational::from(2));
+/// assert_eq!(search(&oscillator, &options)?.basis.len(), 3);
+/// # Ok::<(), Box<dyn std::error::Error>>(())
+/// ```
 pub fn search(system: &System, options: &SearchOptions) -> Result<SearchResult, EngineError> {
     // The search hands blocks of work to rayon's pool (images, blocks of equations, proofs):
     // it runs on a thread of the pool, which takes its share of each and, on a pool of one
