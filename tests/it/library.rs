@@ -635,6 +635,16 @@ fn a_bracket_table_prints_as_the_reports_grid() {
             );
         }
     }
+    // A table a program builds by hand, its fields out of step, prints what it has.
+    let uneven = BracketTable {
+        names: vec!["A".into(), "B".into()],
+        display: vec!["A".into(), "B".into()],
+        entries: vec![vec![TableEntry::Outside]],
+    };
+    assert_eq!(
+        uneven.to_string(),
+        "{·,·} │ A   B\n──────┼──────\nA     │ *\n"
+    );
 }
 
 /// A residual cut to its leading part shows at least one monomial: with `shown_monomials`

@@ -191,7 +191,7 @@ impl std::fmt::Display for BracketTable {
             .map(|j| {
                 cells
                     .iter()
-                    .map(|row| width(&row[j]))
+                    .filter_map(|row| row.get(j).map(|c| width(c)))
                     .chain([width(&self.display[j])])
                     .max()
                     .unwrap_or(0)
