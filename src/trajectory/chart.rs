@@ -102,7 +102,7 @@ pub enum Style {
 }
 
 /// The chart could not be drawn.
-#[derive(Debug, thiserror::Error)]
+#[derive(Clone, Debug, PartialEq, Eq, thiserror::Error)]
 #[error("the chart could not be drawn: {0}")]
 pub struct ChartError(String);
 

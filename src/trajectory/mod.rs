@@ -36,8 +36,9 @@ use brackets::{EngineError, PhaseSpace};
 use num_traits::ToPrimitive;
 use trigpoly::{Expr, Rational, Var, VarKind};
 
-/// Why a trajectory could not be computed.
-#[derive(Debug, thiserror::Error)]
+/// Why a trajectory could not be computed. Errors compare (`assert_eq!` in a program's tests),
+/// as the engine's do.
+#[derive(Clone, Debug, PartialEq, thiserror::Error)]
 pub enum TrajectoryError {
     /// The engine refused (a limit, say) while forming Hamilton's equations.
     #[error(transparent)]
@@ -886,6 +887,10 @@ mod tests {
             Flow::new(rotor.space(), &h),
             Err(TrajectoryError::NotReal)
         ));
+        // The error compares and clones, as the engine's do.
+        let err = Flow::new(rotor.space(), &h).map(|_| ()).unwrap_err();
+        assert_eq!(err.clone(), TrajectoryError::NotReal);
+        assert_ne!(err, TrajectoryError::Unbound("M".into()));
     }
 
     #[test]
