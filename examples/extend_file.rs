@@ -8,7 +8,7 @@ use superint::prelude::*;
 
 fn main() -> Result<(), FileError> {
     let path = concat!(env!("CARGO_MANIFEST_DIR"), "/systems/harmonic-rotor.toml");
-    let mut rotor = load_system_file(path.as_ref(), &LimitsOverride::default())?;
+    let mut rotor = load_system_file(path, &LimitsOverride::default())?;
     let report = check_report([&rotor])?;
     println!(
         "{}: {} claims, all as expected: {}",

@@ -490,7 +490,7 @@ impl Report {
     /// ```
     /// use superint::system_file::{family_tower_report, load, LimitsOverride};
     ///
-    /// let rotor = load("systems/harmonic-rotor.toml".as_ref(), &LimitsOverride::default())?;
+    /// let rotor = load("systems/harmonic-rotor.toml", &LimitsOverride::default())?;
     /// let report = family_tower_report(&rotor, Some("K"), 2, None)?;
     /// let proof = report.proof().expect("K_{m,n} = Z^m e^{−inθ} is a product of powers");
     /// assert!(proof.holds());

@@ -121,7 +121,7 @@ pub(crate) fn engine_error(source: &Source, span: Range<usize>, e: &EngineError)
 /// use superint::prelude::*;
 ///
 /// fn rank_of_rotor(names: &[&str]) -> Result<usize, FileError> {
-///     let rotor = load_system_file("systems/harmonic-rotor.toml".as_ref(), &LimitsOverride::default())?;
+///     let rotor = load_system_file("systems/harmonic-rotor.toml", &LimitsOverride::default())?;
 ///     Ok(rotor.system().rank(names)?.rank)
 /// }
 /// assert_eq!(rank_of_rotor(&["F1", "F2", "L"]).unwrap(), 3);

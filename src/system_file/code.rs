@@ -21,7 +21,7 @@ impl LoadedSystem {
     /// ```
     /// use superint::system_file::{load, LimitsOverride};
     ///
-    /// let rotor = load("systems/harmonic-rotor.toml".as_ref(), &LimitsOverride::default())?;
+    /// let rotor = load("systems/harmonic-rotor.toml", &LimitsOverride::default())?;
     /// // K_{1,1} = Z e^{−iθ}, and P_{1,1} its real part.
     /// let k = rotor.parse("K_{1,1}")?;
     /// assert_eq!(rotor.parse("(K_1_1 + Kbar_1_1)/2")?, rotor.parse("P_1_1")?);
@@ -45,7 +45,7 @@ impl LoadedSystem {
     /// ```
     /// use superint::system_file::{load, ErrorKind, LimitsOverride};
     ///
-    /// let mut rotor = load("systems/harmonic-rotor.toml".as_ref(), &LimitsOverride::default())?;
+    /// let mut rotor = load("systems/harmonic-rotor.toml", &LimitsOverride::default())?;
     /// rotor.add_function("Casimir", "C", "4*G1^2 + G2^2 + omega^2*L^2")?;
     /// assert_eq!(rotor.parse("Casimir")?, rotor.parse("(F1 - F2)^2")?);
     /// let err = rotor.add_function("L", "L", "x").unwrap_err();
@@ -158,7 +158,7 @@ impl LoadedSystem {
     /// ```
     /// use superint::prelude::*;
     ///
-    /// let mut rotor = load_system_file("systems/harmonic-rotor.toml".as_ref(), &LimitsOverride::default())?;
+    /// let mut rotor = load_system_file("systems/harmonic-rotor.toml", &LimitsOverride::default())?;
     /// rotor.add_claim("mine", "{K_2_1, H} = 0", Some("p_theta = 2*I*omega"))?;
     /// rotor.add_claim("off", "{K_2_1, H} = 0", Some("p_theta = I*omega"))?.expect = Expect::Refuted;
     /// let report = check_report([&rotor])?;

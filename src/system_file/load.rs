@@ -26,9 +26,10 @@ use super::{Family, LimitsOverride, LoadedSystem};
 /// holds; the packing widens its fields as the limit asks).
 pub(super) const MAX_DEGREE_CEILING: u32 = 32_767;
 
-/// Reads and loads a system file. Every problem is a [`FileError`] naming the file, line and
-/// column.
-pub fn load(path: &Path, limits: &LimitsOverride) -> Result<LoadedSystem, FileError> {
+/// Reads and loads a system file (any path, as [`std::fs::read`] takes it: a `&str`, a
+/// `PathBuf`, ...). Every problem is a [`FileError`] naming the file, line and column.
+pub fn load(path: impl AsRef<Path>, limits: &LimitsOverride) -> Result<LoadedSystem, FileError> {
+    let path = path.as_ref();
     let origin = path.display().to_string();
     let bytes = std::fs::read(path).map_err(|e| {
         FileError::new(ErrorKind::Io, &origin, format!("cannot read the file: {e}"))

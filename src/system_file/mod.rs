@@ -179,7 +179,7 @@ pub struct LoadedSystem {
 /// ```
 /// use superint::system_file::{bracket_report, load, Caller, LimitsOverride};
 ///
-/// let rotor = load("systems/harmonic-rotor.toml".as_ref(), &LimitsOverride::default())?;
+/// let rotor = load("systems/harmonic-rotor.toml", &LimitsOverride::default())?;
 /// let err = bracket_report(&rotor, "L", "G3", None).unwrap_err();
 /// assert!(err.to_string().starts_with("<expression>:1:1: unknown name 'G3'"));
 /// let rotor = rotor.with_caller(Caller::CommandLine);

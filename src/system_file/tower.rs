@@ -390,7 +390,7 @@ fn eigenfunction_lemma(m: &str, n: &str) -> String {
 /// ```
 /// use superint::system_file::{family_tower_report, load, LimitsOverride};
 ///
-/// let rotor = load("systems/gravity-rotor.toml".as_ref(), &LimitsOverride::default())?;
+/// let rotor = load("systems/gravity-rotor.toml", &LimitsOverride::default())?;
 /// let report = family_tower_report(&rotor, None, 3, None)?;
 /// let tower = report.tower().expect("a tower");
 /// assert_eq!((tower.checked, tower.failures.len()), (9, 0));
@@ -412,7 +412,7 @@ pub fn family_tower_report(
 /// ```
 /// use superint::system_file::{family_tower_report_with_progress, load, LimitsOverride};
 ///
-/// let rotor = load("systems/harmonic-rotor.toml".as_ref(), &LimitsOverride::default())?;
+/// let rotor = load("systems/harmonic-rotor.toml", &LimitsOverride::default())?;
 /// let mut seen = Vec::new();
 /// let report = family_tower_report_with_progress(&rotor, Some("K"), 2, None, &mut |done, total| {
 ///     seen.push((done, total))

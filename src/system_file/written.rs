@@ -69,7 +69,7 @@ impl LoadedSystem {
     /// ```
     /// use superint::system_file::{load, LimitsOverride};
     ///
-    /// let kepler = load("systems/kepler.toml".as_ref(), &LimitsOverride::default())?;
+    /// let kepler = load("systems/kepler.toml", &LimitsOverride::default())?;
     /// let bracket = kepler.parse("{Ax, Ay}")?;
     /// let written = kepler.written_in_functions(&bracket, None).expect("a polynomial");
     /// assert_eq!(written.to_string(), "−2 H L/M");

@@ -49,7 +49,7 @@ fn own_rotor_with_tower() -> LoadedSystem {
 
 fn harmonic_rotor_file() -> LoadedSystem {
     let path = concat!(env!("CARGO_MANIFEST_DIR"), "/systems/harmonic-rotor.toml");
-    load_system_file(path.as_ref(), &LimitsOverride::default()).unwrap()
+    load_system_file(path, &LimitsOverride::default()).unwrap()
 }
 
 /// `{R_{a,b}, H} = i(ak − bΩ) R_{a,b}` for `R_{a,b} = A^a e^{−ibφ}`, a family added in code to
