@@ -302,6 +302,15 @@ const COMMANDS: &[(&str, &str)] = &[
         "superint search systems/toda-lattice.toml --momenta-degree 4 --positions-degree 0 \
          --trig-degree 0 --poisson-degree 2 --new-only",
     ),
+    (
+        "fl-search",
+        "superint search systems/fokas-lagerstrom-1-3.toml --momenta-degree 3 \
+         --positions-degree 3 --trig-degree 0 --new-only",
+    ),
+    (
+        "fl-closure",
+        "superint closure systems/fokas-lagerstrom-1-3.toml H Hx S C --degree 4",
+    ),
 ];
 
 /// The words of a command line, single quotes grouping.
@@ -2968,6 +2977,43 @@ fn toda_search_finds_the_cubic_integral_from_h_alone() {
             "Dimension of the space of integrals: 11.",
             "the generated ones span the whole space (11 dimensions)",
             "None: the known integrals generate every integral in the space.",
+        ],
+    );
+}
+
+/// The 1 : 3 oscillator of Fokas and Lagerstrom: up to third order in the momenta the file's
+/// `H`, `H_x` and `S` generate every integral, and from `H` alone the search finds the other
+/// separated energy and the cubic integral, as the file writes it (`3(x p_y − y p_x) p_x² −
+/// …`, expanded). With the quartic `C` they close into a cubic algebra, tied by one relation
+/// of degree 4.
+#[test]
+fn fokas_lagerstrom_cubic_integral_and_its_cubic_algebra() {
+    expect(
+        "fl-search",
+        &[
+            "100 unknowns",
+            "Dimension of the space of integrals: 4.",
+            "Known integrals in the space: H, H_x, S.",
+            "None: the known integrals generate every integral in the space.",
+        ],
+    );
+    let text = run_on_hamiltonian_alone("fl-search");
+    for piece in [
+        "Known integrals in the space: H.",
+        "I2 = p_y² + 9M²ω²y²",
+        "I4 = 3x p_x² p_y − 3y p_x³ − M²ω²x³ p_y + 9M²ω²x²y p_x",
+        "3 claims: 3 proved, 0 refuted",
+    ] {
+        assert!(text.contains(piece), "{piece}: {text}");
+    }
+    expect(
+        "fl-closure",
+        &[
+            "The table closes",
+            "{H_x, S} = −3 C/M [B1 proved]",
+            "{H_x, C} = 3Mω² S [B2 proved]",
+            "{S, C} = 72M³ H H_x² − 96M³ H_x³ [B3 proved]",
+            "16 H H_x³ = 16 H_x⁴ + ω² S²/M² + C²/M⁴ [R1 proved]",
         ],
     );
 }
