@@ -17,6 +17,7 @@ Examples:
   superint table systems/harmonic-rotor.toml F1 F2 L G1 G2    the su(2) table of section 3
   superint table systems/harmonic-rotor.toml                  every function of the file
   superint table systems/harmonic-rotor.toml L G1 G2 --format markdown
+  superint table systems/euler-top.toml M1 M2 M3              so(3), of the Poisson variables
 
 Each entry is written as a combination of the listed functions with coefficients in the
 parameters where one exists, otherwise as an expression.";
@@ -27,7 +28,8 @@ pub struct TableArgs {
     /// A system file (TOML, see docs/system-files.md), or - for standard input.
     #[arg(value_name = "FILE")]
     file: PathBuf,
-    /// Named functions or family instances (K_1_1); every function of the file but H if none.
+    /// Named functions, family instances (K_1_1) or phase variables (p_x); every function of
+    /// the file but H if none.
     #[arg(value_name = "NAMES")]
     names: Vec<String>,
     #[command(flatten)]

@@ -7,7 +7,7 @@ use crate::render::tex::Names;
 use std::time::Instant;
 
 use brackets::{BracketTable, Condition, System};
-use trigpoly::Expr;
+use trigpoly::{Expr, VarKind};
 
 use super::claims::{engine_error, parse_condition, CheckedClaim, RankClaim};
 use super::error::{ErrorKind, FileError};
@@ -410,7 +410,8 @@ impl LoadedSystem {
     }
 }
 
-/// The bracket table of named functions (or family instances such as `K_1_1`) of the file;
+/// The bracket table of named functions (or family instances such as `K_1_1`, or phase
+/// variables such as `p_x`) of the file;
 /// all its functions but `H` when `names` is empty. An entry that reaches a limit is `?`
 /// ([`TableResult::undecided`](crate::report::TableResult::undecided) lists them, with the
 /// limits' messages), and the others are computed.
@@ -480,9 +481,10 @@ fn tabulated_names(
     Ok(names)
 }
 
-/// The file's system with the family instances among `names` (`K_2_3`) defined as functions
-/// of it; a name that is neither a function nor an instance is refused with the names known
-/// (`defined`: the file's functions but `H`).
+/// The file's system with the family instances among `names` (`K_2_3`) and its phase
+/// variables (`p_x`, `M1`: the Euclidean algebra's `p_x, p_y, L` with no `[[function]]` for
+/// each momentum) defined as functions of it; a name that is none of them is refused with the
+/// names known (`defined`: the file's functions but `H`).
 fn with_instances(
     file: &LoadedSystem,
     names: &[String],
@@ -490,16 +492,30 @@ fn with_instances(
 ) -> Result<System, FileError> {
     // Every name is looked up before any family instance is expanded.
     let mut instances = Vec::new();
+    let mut variables = Vec::new();
     for name in names {
         if file.system.get(name).is_ok() {
             continue;
         }
-        match instance_of(&file.families, name) {
-            Some(instance) => instances.push((name, instance)),
-            None => return Err(not_a_function(file, name, defined)),
+        if let Some(instance) = instance_of(&file.families, name) {
+            instances.push((name, instance));
+            continue;
+        }
+        let vars = file.system.vars();
+        match vars.lookup(name).map(|v| (v, vars.variable(v).kind())) {
+            Some((
+                v,
+                VarKind::Coordinate | VarKind::Momentum | VarKind::Poisson | VarKind::Radical,
+            )) => variables.push((name, v)),
+            _ => return Err(not_a_function(file, name, defined)),
         }
     }
     let mut system: System = file.system.clone();
+    for (name, v) in variables {
+        let value = file.value(&file.argument(name)?)?;
+        let display = system.vars().variable(v).unicode().to_string();
+        system.define(name, &display, value);
+    }
     for (name, (k, m, n)) in instances {
         if system.get(name).is_ok() {
             continue; // named twice
@@ -516,7 +532,8 @@ fn with_instances(
 }
 
 /// The refusal of a name given to a table that is no function of the file, listing `H`, the
-/// functions `defined` and the families' instances.
+/// functions `defined`, the families' instances and the phase variables (an angle and a
+/// parameter are said to be what they are).
 fn not_a_function(file: &LoadedSystem, name: &str, defined: &[String]) -> FileError {
     let mut known = vec!["H".to_string()];
     known.extend(defined.iter().cloned());
@@ -530,14 +547,32 @@ fn not_a_function(file: &LoadedSystem, name: &str, defined: &[String]) -> FileEr
         Caller::CommandLine => file.source.origin.clone(),
         Caller::Program => file.the_name(),
     };
+    let vars = file.system.vars();
+    known.extend(
+        vars.vars()
+            .filter(|&v| {
+                matches!(
+                    vars.variable(v).kind(),
+                    VarKind::Coordinate | VarKind::Momentum | VarKind::Poisson | VarKind::Radical
+                )
+            })
+            .map(|v| vars.variable(v).name().to_string()),
+    );
+    let quoted = trigpoly::quoted_name(name);
+    let what = match vars.lookup(name).map(|v| vars.variable(v).kind()) {
+        Some(VarKind::Angle) => format!(
+            "{quoted} is an angle, not a function of {of}: a [[function]] can name its cosine \
+             or sine (value = \"cos({name})\")"
+        ),
+        Some(VarKind::Parameter) => {
+            format!("{quoted} is a parameter, not a function of {of}: every bracket with it is 0")
+        }
+        _ => format!("{quoted} is not a function of {of}"),
+    };
     FileError::new(
         ErrorKind::Expression,
         &file.given("<expression>", "").origin,
-        format!(
-            "{} is not a function of {of} (known: {})",
-            trigpoly::quoted_name(name),
-            known.join(", ")
-        ),
+        format!("{what} (known: {})", known.join(", ")),
     )
 }
 

@@ -742,6 +742,65 @@ fn cli_leading_zeros_of_a_family_index_are_not_digits_of_it() {
     }
 }
 
+/// A table takes the phase variables as `closure` does: the Euclidean algebra e(2) of a free
+/// particle is `table FILE p_x p_y L` with no `[[function]]` for the momenta, and so(3) is the
+/// Euler top's `M1 M2 M3`. Both were refused as "not a function"; an angle and a parameter
+/// still are, each said to be what it is.
+#[test]
+fn cli_table_takes_phase_variables() {
+    let free = crate::scratch_text(
+        "table-variables",
+        "free.toml",
+        "hamiltonian = \"(p_x^2 + p_y^2)/(2*m)\"\n[phase_space]\ncoordinates = [\"x\", \"y\"]\n\
+         angles = [\"theta\"]\nparameters = [\"m\"]\n[[function]]\nname = \"L\"\n\
+         value = \"x*p_y - y*p_x\"\n",
+    );
+    let free = free.to_str().expect("a path");
+    let out = run(&["table", free, "p_x", "p_y", "L", "--no-timings"], 0);
+    assert!(out.contains("    p_x   │ 0     0      −p_y\n"), "{out}");
+    assert!(out.contains("    L     │ p_y   −p_x   0\n"), "{out}");
+    let out = run(&["table", free, "p_theta", "x", "--no-timings"], 0);
+    assert!(out.contains("    p_θ   │ 0     0\n"), "{out}");
+    let top = run(
+        &[
+            "table",
+            "systems/euler-top.toml",
+            "M1",
+            "M2",
+            "M3",
+            "--no-timings",
+        ],
+        0,
+    );
+    assert!(top.contains("    M1    │ 0     M3    −M2\n"), "{top}");
+    for (name, message) in [
+        (
+            "theta",
+            "'theta' is an angle, not a function of FILE: a [[function]] can name its cosine \
+             or sine (value = \"cos(theta)\") (known: H, L, x, y, p_x, p_y, p_theta)",
+        ),
+        (
+            "m",
+            "'m' is a parameter, not a function of FILE: every bracket with it is 0 (known: H, \
+             L, x, y, p_x, p_y, p_theta)",
+        ),
+        (
+            "z",
+            "'z' is not a function of FILE (known: H, L, x, y, p_x, p_y, p_theta)",
+        ),
+    ] {
+        let o = superint(&["table", free, "L", name]);
+        assert_eq!(o.status.code(), Some(2), "{name}");
+        assert_eq!(
+            stderr(&o),
+            format!(
+                "superint: error: <command line>: {}\n",
+                message.replace("FILE", free)
+            )
+        );
+    }
+}
+
 /// A function given twice to a table, a rank or a closure is refused at its second mention,
 /// however it is spelt (`K_{01,1}` is `K_1_1`): a table showed its row twice, a rank counted
 /// it twice, and a closure of `K_1_1 K_01_1` found the relation `K_1_1 = K_01_1`. A bracket

@@ -847,7 +847,8 @@ fn report_errors_name_the_program_not_the_command_line() {
     let err = table_report(&rotor, &["A", "B"]).unwrap_err();
     assert_eq!(
         cli_words(&err),
-        "<expression>: 'B' is not a function of the own rotor (known: H, A, Omega)"
+        "<expression>: 'B' is not a function of the own rotor (known: H, A, Omega, x, y, p_x, p_y, \
+         p_phi)"
     );
     let vars = VarSet::builder()
         .coordinate("q")
