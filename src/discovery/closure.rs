@@ -434,8 +434,12 @@ fn moving_generators(
 /// the table might close (with parameters kept `symbolic`, by their degree too).
 fn closing_advice(moving: &[String], when: &str, symbolic: bool) -> String {
     match moving.len() {
+        // No degree gives a coefficient that divides by a symbolic parameter (`−3C/M`).
         0 if symbolic => "A higher `--degree` or `--parameters-degree`, or what `superint \
-                          search` finds added to the generators, may close the table."
+                          search` finds added to the generators, may close the table; a \
+                          coefficient that divides by a parameter (`1/M`) is no polynomial in \
+                          it at any degree: leave that parameter out of `--symbolic`, and it is \
+                          fixed and lifted back by homogeneity."
             .to_string(),
         0 => "A higher `--degree`, or what `superint search` finds added to the generators, may \
              close the table."

@@ -3018,6 +3018,44 @@ fn fokas_lagerstrom_cubic_integral_and_its_cubic_algebra() {
     );
 }
 
+/// With `M` kept symbolic, `{H_x, S} = −3C/M` has a coefficient that no `--parameters-degree`
+/// makes a polynomial in `M`: the advice under the table says so and what to do (it named only
+/// higher degrees), and with `M` left out of `--symbolic` (fixed, then lifted) the table closes.
+#[test]
+fn a_closure_with_a_symbolic_divisor_says_to_leave_it_out() {
+    let file = "systems/fokas-lagerstrom-1-3.toml";
+    let args = [
+        "closure",
+        file,
+        "H",
+        "Hx",
+        "S",
+        "C",
+        "--degree",
+        "3",
+        "--parameters-degree",
+        "6",
+        "--no-timings",
+        "--symbolic",
+    ];
+    let both = superint(&[&args[..], &["M,omega"]].concat());
+    assert_eq!(both.status.code(), Some(0));
+    let text = normalize(&String::from_utf8(both.stdout).expect("UTF-8"));
+    assert!(
+        text.contains(
+            "a coefficient that divides by a parameter (1/M) is no polynomial in it at any \
+             degree: leave that parameter out of --symbolic, and it is fixed and lifted back by \
+             homogeneity."
+        ),
+        "{text}"
+    );
+    let omega = superint(&[&args[..], &["omega"]].concat());
+    assert_eq!(omega.status.code(), Some(0));
+    let text = normalize(&String::from_utf8(omega.stdout).expect("UTF-8"));
+    assert!(text.contains("The table closes"), "{text}");
+    assert!(text.contains("{H_x, S} = −3 C/M [B1 proved]"), "{text}");
+}
+
 /// A degree above 0 for a kind of variable the system lacks would bound nothing, and the
 /// search would run as if it were not given: it is refused, naming what the system lacks. A
 /// degree 0 says the same as the space already does, and is accepted.
