@@ -333,10 +333,12 @@ fn claimed_rank(source: &Source, rhs: &Text, rhs_tree: &Tree) -> Result<usize, F
         _ => None,
     };
     let Some(expected) = expected else {
+        // A rank above the dimension but within a `usize` (`= 9` for two coordinates) is a
+        // claim like another, refuted; only a number no `usize` holds is refused here.
         let why = match &rhs_tree.kind {
             ExprKind::Integer(_) => {
-                "the right side of a rank claim is a whole number no larger than the \
-                 number of coordinates and momenta"
+                "the right side of a rank claim is a whole number, and this one is too large \
+                 to be a rank (at most the number of functions, and of phase variables)"
             }
             _ => "the right side of a rank claim is a whole number, such as 5",
         };

@@ -756,7 +756,8 @@ fn bad_inputs() -> Vec<(&'static str, Vec<u8>, &'static str, Vec<&'static str>)>
         (
             "rank claim with a rank past any dimension",
             base_with("{A, H} = i*omega*A", "rank(A, H) = 99999999999999999999999"),
-            "bad.toml:14:23: the right side of a rank claim is a whole number no larger than",
+            "bad.toml:14:23: the right side of a rank claim is a whole number, and this one is \
+             too large to be a rank",
             check.clone(),
         ),
         (
