@@ -33,7 +33,8 @@ pub struct BenchArgs {
     /// Threads for the workloads that have independent parts (W1 pairs, W2 brackets, the index
     /// range of a large dense product in W3, W4 repetitions); 1 runs everything on the calling
     /// thread.
-    #[arg(long, default_value_t = 1,
+    #[arg(long, allow_negative_numbers = true,
+          default_value_t = 1,
           value_parser = clap::value_parser!(u16).range(1..=super::MAX_THREADS))]
     threads: u16,
     /// Leave the pool's threads where the kernel puts them. By default each of two or more

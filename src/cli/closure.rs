@@ -46,7 +46,8 @@ pub struct ClosureArgs {
     #[arg(long, value_name = "NAME")]
     system: Option<String>,
     /// The largest degree of the polynomials in the generators.
-    #[arg(long, value_name = "D", default_value_t = 2,
+    #[arg(long, allow_negative_numbers = true,
+          value_name = "D", default_value_t = 2,
           value_parser = clap::value_parser!(u32).range(0..=64))]
     degree: u32,
     /// The condition applied to the generators and after each bracket, such as
@@ -63,13 +64,15 @@ pub struct ClosureArgs {
     #[arg(long, value_name = "PARAMS")]
     symbolic: Option<String>,
     /// Total degree of the coefficients in the parameters kept symbolic.
-    #[arg(long, value_name = "S", default_value_t = 2, requires = "symbolic",
+    #[arg(long, allow_negative_numbers = true,
+          value_name = "S", default_value_t = 2, requires = "symbolic",
           value_parser = clap::value_parser!(u32).range(0..=64))]
     parameters_degree: u32,
     /// Stop with an error before computing when the monomials in the generators (and the
     /// symbolic parameters) would be more than N: each is expanded and is a column of the
     /// linear system.
-    #[arg(long, value_name = "N", default_value_t = ClosureOptions::DEFAULT_MAX_MONOMIALS as u64,
+    #[arg(long, allow_negative_numbers = true,
+          value_name = "N", default_value_t = ClosureOptions::DEFAULT_MAX_MONOMIALS as u64,
           value_parser = clap::value_parser!(u64).range(1..))]
     max_monomials: u64,
     /// A generator given by its expression, NAME=EXPR (repeatable), NAME a name the system

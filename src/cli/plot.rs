@@ -64,14 +64,17 @@ pub struct PlotArgs {
     #[arg(long, value_name = "POINT", required = true)]
     from: Vec<String>,
     /// How long to follow the motion.
-    #[arg(long, value_name = "T", value_parser = super::Quoting(positive_time))]
+    #[arg(long, allow_negative_numbers = true,
+          value_name = "T", value_parser = super::Quoting(positive_time))]
     time: f64,
     /// Steps of the integrator over the whole time.
-    #[arg(long, value_name = "N", default_value_t = 10_000,
+    #[arg(long, allow_negative_numbers = true,
+          value_name = "N", default_value_t = 10_000,
           value_parser = clap::value_parser!(u64).range(1..=10_000_000))]
     steps: u64,
     /// Points drawn for each curve (at most the steps).
-    #[arg(long, value_name = "N", default_value_t = 1_000,
+    #[arg(long, allow_negative_numbers = true,
+          value_name = "N", default_value_t = 1_000,
           value_parser = clap::value_parser!(u64).range(1..=100_000))]
     samples: u64,
     /// Draw the curves against this real function instead of the time (`y --against x`

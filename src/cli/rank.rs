@@ -30,7 +30,7 @@ pub struct RankArgs {
     #[arg(value_name = "NAMES", required = true)]
     functions: Vec<String>,
     /// Claim that the rank is R: exit status 1 if it is not.
-    #[arg(long, value_name = "R")]
+    #[arg(long, allow_negative_numbers = true, value_name = "R")]
     expect: Option<usize>,
     #[command(flatten)]
     limits: LimitsArgs,

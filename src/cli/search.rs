@@ -65,21 +65,25 @@ pub struct SearchArgs {
     when: Option<String>,
     /// Total degree in the momenta (an angle's momentum that --when fixes is left out)
     /// [default: 2]. A degree above 0 is refused on a system without such variables.
-    #[arg(long, value_name = "D",
+    #[arg(long, allow_negative_numbers = true,
+          value_name = "D",
           value_parser = clap::value_parser!(u32).range(0..=20))]
     momenta_degree: Option<u32>,
     /// Total degree in the coordinates, not the angles (sum of absolute exponents)
     /// [default: 2].
-    #[arg(long, value_name = "E",
+    #[arg(long, allow_negative_numbers = true,
+          value_name = "E",
           value_parser = clap::value_parser!(u32).range(0..=20))]
     positions_degree: Option<u32>,
     /// Trigonometric order in the angles [default: 2].
-    #[arg(long, value_name = "K",
+    #[arg(long, allow_negative_numbers = true,
+          value_name = "K",
           value_parser = clap::value_parser!(u32).range(0..=20))]
     trig_degree: Option<u32>,
     /// Total degree in the Poisson variables, those whose brackets [poisson] declares (M1,
     /// gamma1; one that --when fixes is left out) [default: 2].
-    #[arg(long, value_name = "P",
+    #[arg(long, allow_negative_numbers = true,
+          value_name = "P",
           value_parser = clap::value_parser!(u32).range(0..=20))]
     poisson_degree: Option<u32>,
     /// Allow negative powers of the coordinates (Laurent potentials such as β/x²).
@@ -87,12 +91,14 @@ pub struct SearchArgs {
     laurent: bool,
     /// On a system with denominators, the total degree of their powers: 2 takes 1/(x − y)²
     /// and 1/((x − y)(x − z)) [default: 2].
-    #[arg(long, value_name = "K",
+    #[arg(long, allow_negative_numbers = true,
+          value_name = "K",
           value_parser = clap::value_parser!(u32).range(0..=12))]
     denominators_degree: Option<u32>,
     /// On a system with radicals, the total degree of their powers, of either sign: 1 takes
     /// r and 1/r, 2 also r², 1/r² and r/s [default: 1].
-    #[arg(long, value_name = "J",
+    #[arg(long, allow_negative_numbers = true,
+          value_name = "J",
           value_parser = clap::value_parser!(u32).range(0..=12))]
     radicals_degree: Option<u32>,
     /// Parameter values for the linear algebra, such as omega=1,M=2/3 (others are 1, or other
@@ -105,7 +111,8 @@ pub struct SearchArgs {
     #[arg(long, value_name = "PARAMS")]
     symbolic: Option<String>,
     /// Total degree in the parameters kept symbolic.
-    #[arg(long, value_name = "S", default_value_t = 2, requires = "symbolic",
+    #[arg(long, allow_negative_numbers = true,
+          value_name = "S", default_value_t = 2, requires = "symbolic",
           value_parser = clap::value_parser!(u32).range(0..=12))]
     parameters_degree: u32,
     /// Show only the new integrals, those that nothing known generates. An integral is
@@ -127,7 +134,8 @@ pub struct SearchArgs {
     #[arg(long, requires = "new_only")]
     exact_complement: bool,
     /// With --new-only, stop with an error past N products of integrals.
-    #[arg(long, value_name = "N", requires = "new_only",
+    #[arg(long, allow_negative_numbers = true,
+          value_name = "N", requires = "new_only",
           default_value_t = DEFAULT_MAX_PRODUCTS as u64,
           value_parser = clap::value_parser!(u64).range(1..))]
     max_products: u64,
@@ -138,7 +146,8 @@ pub struct SearchArgs {
     known: Option<String>,
     /// Threads for forming the equations, solving them, proving the integrals and printing
     /// them (default: one per core, or RAYON_NUM_THREADS). The output is the same for any.
-    #[arg(long, value_name = "N",
+    #[arg(long, allow_negative_numbers = true,
+          value_name = "N",
           value_parser = clap::value_parser!(u16).range(1..=super::MAX_THREADS))]
     threads: Option<u16>,
     #[command(flatten)]

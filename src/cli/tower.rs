@@ -55,7 +55,8 @@ fn system_arg(s: &str) -> Result<SystemArg, String> {
 #[derive(Debug, Args)]
 pub struct TowerArgs {
     /// Check every 1 ≤ m, n ≤ N.
-    #[arg(long, value_name = "N", default_value_t = 8,
+    #[arg(long, allow_negative_numbers = true,
+          value_name = "N", default_value_t = 8,
           value_parser = clap::value_parser!(i64).range(1..=64))]
     max: i64,
     /// The system: harmonic, gravity, or a system file that declares a [[family]] with an

@@ -742,6 +742,56 @@ fn cli_leading_zeros_of_a_family_index_are_not_digits_of_it() {
     }
 }
 
+/// A negative number given to a numeric option is refused by the option's own check, not as an
+/// unexpected argument with clap's tip to write `-- -5`, which would make it a positional
+/// argument and fail again.
+#[test]
+fn cli_a_negative_number_for_an_option_gets_its_range() {
+    let fl = "systems/fokas-lagerstrom-1-3.toml";
+    let start = "x = 1, y = 0, p_x = 0, p_y = 1";
+    for (args, message) in [
+        (
+            vec![
+                "plot",
+                fl,
+                "S",
+                "--at",
+                "M = 1, omega = 1",
+                "--from",
+                start,
+                "--time",
+                "-5",
+            ],
+            "invalid value '-5' for '--time <T>': not a positive number of time units",
+        ),
+        (
+            vec!["search", fl, "--momenta-degree", "-1"],
+            "invalid value '-1' for '--momenta-degree <D>': -1 is not in 0..=20",
+        ),
+        (
+            vec!["tower", "--system", fl, "--max", "-3"],
+            "invalid value '-3' for '--max <N>': -3 is not in 1..=64",
+        ),
+        (
+            vec!["closure", fl, "H", "--degree", "-2"],
+            "invalid value '-2' for '--degree <D>': -2 is not in 0..=64",
+        ),
+        (
+            vec!["rank", fl, "H", "--expect", "-1"],
+            "invalid value '-1' for '--expect <R>'",
+        ),
+        (
+            vec!["check", fl, "--max-degree", "-4"],
+            "invalid value '-4' for '--max-degree <D>': -4 is not in 1..=32767",
+        ),
+    ] {
+        let o = superint_exits(&args, 2);
+        let err = stderr(&o);
+        assert!(err.contains(message), "{args:?}: {err}");
+        assert!(!err.contains("tip:"), "{args:?}: {err}");
+    }
+}
+
 /// A table takes the phase variables as `closure` does: the Euclidean algebra e(2) of a free
 /// particle is `table FILE p_x p_y L` with no `[[function]]` for the momenta, and so(3) is the
 /// Euler top's `M1 M2 M3`. Both were refused as "not a function"; an angle and a parameter
