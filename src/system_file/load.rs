@@ -247,10 +247,10 @@ fn toml_error(source: &Source, e: &toml::de::Error) -> FileError {
             Some((key, true)) => {
                 format!("each of {key} is {}, not a date", in_words(wanted))
             }
-            None => message,
+            None => serde_words(&message),
         }
     } else {
-        message
+        serde_words(&message)
     };
     let hint = unknown_key_hint(&message);
     let error = source.error(kind, span, message);
@@ -287,6 +287,27 @@ fn date_at(text: &str, span: &Range<usize>) -> Option<(String, bool)> {
         .get_ref()
         .iter()
         .find_map(|(k, v)| find(k.get_ref(), v, span, false))
+}
+
+/// A mistyped value's message in a system file's words: serde's `invalid type: string "100",
+/// expected i64` (a `[limits]` value) as `expected a whole number`, `a sequence` as `an array`,
+/// and a number too large for 64 bits (`integer `1e20` as i128`) as too large; any other
+/// message as it is.
+fn serde_words(message: &str) -> String {
+    let Some((found, wanted)) = message
+        .strip_prefix("invalid type: ")
+        .and_then(|m| m.rsplit_once(", expected "))
+    else {
+        return message.to_string();
+    };
+    match found.strip_suffix(" as i128") {
+        Some(number) => format!(
+            "the number {} is too large (at most {})",
+            number.trim_start_matches("integer ").trim_matches('`'),
+            i64::MAX
+        ),
+        None => format!("invalid type: {found}, expected {}", in_words(wanted)),
+    }
 }
 
 /// What serde expected, in the words of a system file's messages: `a string` is `a string in

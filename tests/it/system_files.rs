@@ -583,7 +583,7 @@ fn bad_inputs() -> Vec<(&'static str, Vec<u8>, &'static str, Vec<&'static str>)>
         (
             "mistyped field",
             base_with("coordinates = [\"x\"]", "coordinates = \"x\""),
-            "bad.toml:5:15: invalid type: string \"x\", expected a sequence",
+            "bad.toml:5:15: invalid type: string \"x\", expected an array",
             check.clone(),
         ),
         (
@@ -906,6 +906,22 @@ fn bad_inputs() -> Vec<(&'static str, Vec<u8>, &'static str, Vec<&'static str>)>
             check.clone(),
         ),
         (
+            "a term limit in quotes (it was serde's `expected i64`)",
+            base_with("[[claim]]", "[limits]\nmax_terms = \"100\"\n\n[[claim]]"),
+            "bad.toml:13:13: invalid type: string \"100\", expected a whole number",
+            check.clone(),
+        ),
+        (
+            "a term limit past 64 bits (it was serde's `as i128, expected i64`)",
+            base_with(
+                "[[claim]]",
+                "[limits]\nmax_terms = 99999999999999999999\n\n[[claim]]",
+            ),
+            "bad.toml:13:13: the number 99999999999999999999 is too large (at most \
+             9223372036854775807)",
+            check.clone(),
+        ),
+        (
             "a negative degree limit",
             base_with("[[claim]]", "[limits]\nmax_degree = -5\n\n[[claim]]"),
             "bad.toml:13:14: max_degree must be between 1 and 32767",
@@ -1068,7 +1084,7 @@ fn bad_inputs() -> Vec<(&'static str, Vec<u8>, &'static str, Vec<&'static str>)>
         (
             "a declared bracket that is not a string",
             top_with("\"{M3, M1}\" = 2"),
-            "bad.toml:12:14: invalid type: integer `2`, expected a string",
+            "bad.toml:12:14: invalid type: integer `2`, expected a string in quotes",
             check.clone(),
         ),
         (
