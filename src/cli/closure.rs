@@ -54,8 +54,9 @@ pub struct ClosureArgs {
     /// 'p_theta = I*omega'.
     #[arg(long, value_name = "CONDITION")]
     when: Option<String>,
-    /// Parameter values for the linear algebra, such as omega=1,M=2/3 (others are 1, or other
-    /// values where 1 makes a declared denominator zero).
+    /// Parameter values for the linear algebra, such as omega=1,M=2/3 or M=0.5 (a decimal is
+    /// the fraction it writes; others are 1, or other values where 1 makes a declared
+    /// denominator zero).
     #[arg(long, value_name = "VALUES")]
     fix: Option<String>,
     /// Parameters kept symbolic, such as alpha,beta: the coefficients are then polynomials in

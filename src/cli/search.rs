@@ -101,8 +101,9 @@ pub struct SearchArgs {
           value_name = "J",
           value_parser = clap::value_parser!(u32).range(0..=12))]
     radicals_degree: Option<u32>,
-    /// Parameter values for the linear algebra, such as omega=1,M=2/3 (others are 1, or other
-    /// values where 1 makes a declared denominator zero).
+    /// Parameter values for the linear algebra, such as omega=1,M=2/3 or M=0.5 (a decimal is
+    /// the fraction it writes; others are 1, or other values where 1 makes a declared
+    /// denominator zero).
     #[arg(long, value_name = "VALUES")]
     fix: Option<String>,
     /// Parameters kept symbolic, such as A,B: the coefficients of the integrals are then

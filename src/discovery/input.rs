@@ -231,12 +231,17 @@ pub fn parse_fixed(system: &System, text: &str) -> Result<Vec<(Var, Rational)>, 
                 trigpoly::quoted_name(name)
             ));
         }
-        let q: Rational = value.trim().parse().map_err(|_| {
-            format!(
-                "{} is not a rational number",
-                trigpoly::quoted_name(value.trim())
-            )
-        })?;
+        // A decimal is the fraction it writes, as in plot's --at (`0.5` is `1/2`).
+        let value = value.trim();
+        let q: Rational = match value.parse() {
+            Ok(q) => q,
+            Err(_) => crate::system_file::decimal_number(value).ok_or_else(|| {
+                format!(
+                    "{} is not a number: write a fraction such as 2/3, or a decimal such as 1.5",
+                    trigpoly::quoted_name(value)
+                )
+            })?,
+        };
         if q.is_zero() {
             // --when cannot set a parameter that a radicand or a denominator holds either.
             let instead = match brackets::Condition::cannot_set(system.space(), v) {

@@ -39,6 +39,7 @@
 //! `FILE:LINE:COLUMN: message` with the source line and a caret ([`FileError`]).
 
 mod claims;
+pub(crate) use claims::decimal_number;
 mod code;
 mod error;
 mod keys;

@@ -943,6 +943,34 @@ fn known_integrals_may_be_instances_with_braces() {
     );
 }
 
+/// `--fix` reads a decimal as the fraction it writes, as plot's `--at` does: `M=0.5` was
+/// refused as "'0.5' is not a rational number", which it is.
+#[test]
+fn a_fixed_value_may_be_a_decimal() {
+    let search = |fix: &str| {
+        let args = [
+            "search",
+            "systems/fokas-lagerstrom-1-3.toml",
+            "--momenta-degree",
+            "3",
+            "--positions-degree",
+            "3",
+            "--fix",
+            fix,
+            "--no-timings",
+        ];
+        let o = superint(&args);
+        assert_eq!(o.status.code(), Some(0), "{fix}");
+        String::from_utf8(o.stdout).expect("UTF-8")
+    };
+    let decimal = search("M=0.5,omega=2.5e0");
+    assert!(
+        normalize(&decimal).contains("Parameters fixed for the linear algebra: M = 1/2, ω = 5/2"),
+        "{decimal}"
+    );
+    assert_eq!(decimal, search("M=1/2,omega=5/2"));
+}
+
 #[test]
 fn bad_search_arguments_exit_2_with_a_message() {
     for (args, message) in [
@@ -959,7 +987,10 @@ fn bad_search_arguments_exit_2_with_a_message() {
             "--fix: C = 0: parameters are fixed to nonzero values (a value the lift back can \
              divide by); to study the system at C = 0, set it with --when 'C = 0'",
         ),
-        ("--fix C=two", "--fix: 'two' is not a rational number"),
+        (
+            "--fix C=two",
+            "--fix: 'two' is not a number: write a fraction such as 2/3, or a decimal such as 1.5",
+        ),
         ("--fix A=2,B=1,A=3", "--fix: 'A' is given two values"),
         (
             "--when C=2 --fix C=3",
