@@ -136,9 +136,14 @@ impl LoadedSystem {
             if value.is_real() {
                 real_curves.push((label, value));
             } else {
+                // Labelled as `re(K_1_1)` given as a curve prints, `Re(K_{1,1})`.
+                let part = |f: &str| match self.argument(&format!("{f}({src})")) {
+                    Ok(arg) => self.pretty(&arg.tree),
+                    Err(_) => format!("{f}({label})"),
+                };
                 let (_, re, im) = value.conj_re_im();
-                real_curves.push((format!("re({label})"), re));
-                real_curves.push((format!("im({label})"), im));
+                real_curves.push((part("re"), re));
+                real_curves.push((part("im"), im));
             }
         }
         let real = |option: &str, src: Option<&str>| match src {

@@ -1564,6 +1564,26 @@ fn cli_plot_shows_k_still_at_resonance_and_turning_off_it() {
     }
 }
 
+/// A complex curve is drawn as its real and imaginary parts, labelled as `re(…)` and `im(…)`
+/// given as curves print (`Re(K_{1,1})`): they were `re(K_{1,1})`, so that one table could
+/// show `re(K_{1,1})` beside `Re(K_{1,1})` for the same function.
+#[test]
+fn cli_plot_labels_the_parts_of_a_complex_curve_as_re_and_im_print() {
+    let svg = scratch_file("parts.svg");
+    let rest = [
+        "K_1_1",
+        "--time",
+        "1",
+        "-o",
+        svg.to_str().unwrap(),
+        "--format",
+        "json",
+    ];
+    let table = changes(&run_plot("I*omega", &rest, 0));
+    let labels: Vec<&str> = table.iter().map(|(l, _)| l.as_str()).collect();
+    assert_eq!(labels, ["H", "Re(K_{1,1})", "Im(K_{1,1})"]);
+}
+
 /// `y` against `x` is the orbit, the ellipse `x² + 4y² = 1`; the CSV holds every sample.
 #[test]
 fn cli_plot_draws_the_orbit_and_writes_its_samples() {
