@@ -20,7 +20,8 @@ Examples:
   superint table systems/euler-top.toml M1 M2 M3              so(3), of the Poisson variables
 
 Each entry is written as a combination of the listed functions with coefficients in the
-parameters where one exists, otherwise as an expression.";
+parameters where one exists, otherwise as an expression; one that is a polynomial in H and the
+file's functions ({S, C} = 72M³ H H_x² − 96M³ H_x³) is written so below the table too.";
 
 /// Arguments of `superint table`.
 #[derive(Debug, Args)]

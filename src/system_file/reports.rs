@@ -411,8 +411,8 @@ impl LoadedSystem {
 }
 
 /// The bracket table of named functions (or family instances such as `K_1_1`, or phase
-/// variables such as `p_x`) of the file;
-/// all its functions but `H` when `names` is empty. An entry that reaches a limit is `?`
+/// variables such as `p_x`) of the file, with its entries that are polynomials in `H` and the
+/// file's functions written so below it; all its functions but `H` when `names` is empty. An entry that reaches a limit is `?`
 /// ([`TableResult::undecided`](crate::report::TableResult::undecided) lists them, with the
 /// limits' messages), and the others are computed.
 pub fn table_report(file: &LoadedSystem, names: &[impl AsRef<str>]) -> Result<Report, FileError> {
@@ -437,13 +437,67 @@ pub fn table_report(file: &LoadedSystem, names: &[impl AsRef<str>]) -> Result<Re
         err.message = format!("the brackets of {}: {}", refs.join(", "), err.message);
         err
     })?;
+    let written = written_in_functions(file, &table);
     let entry = Entry::Table(TableResult::new(table, &system, &file.the_name()));
-    Ok(file.one_entry(
+    let mut report = file.one_entry(
         format!("Bracket table of {}", file.the_name()),
         entry,
         SummaryKind::Computed,
         start,
-    ))
+    );
+    if !written.is_empty() {
+        let entries = &mut report.sections[0].entries;
+        entries.push(Entry::Text(
+            "The brackets that are no combination of the listed functions, as polynomials in \
+             `H` and the file's functions (each proved for every value of the parameters):"
+                .to_string(),
+        ));
+        entries.push(Entry::Equations(Equations {
+            caption: String::new(),
+            lines: written,
+        }));
+    }
+    report.seconds = start.elapsed().as_secs_f64();
+    Ok(report)
+}
+
+/// The entries of `table` above its diagonal that are no combination of its functions but a
+/// polynomial in `H` and the file's functions, as `bracket` writes one (`{S, C} = 72M³ H H_x²
+/// − 96M³ H_x³` for the Fokas–Lagerstrom integrals), each `{A, B} = polynomial`. A polynomial
+/// of degree 1 in the table's own functions is left out: the table chose the bracket over that
+/// combination (`{F1, L} = Mgx`, not `−2 G1 + 2 G1'`).
+fn written_in_functions(file: &LoadedSystem, table: &BracketTable) -> Vec<Equation> {
+    let mut lines = Vec::new();
+    for (a, row) in table.entries.iter().enumerate() {
+        for (b, entry) in row.iter().enumerate().skip(a + 1) {
+            let brackets::Entry::Expression(e) = entry else {
+                continue;
+            };
+            let Some(p) = file.written_in_functions(e, None) else {
+                continue;
+            };
+            let ring = p.vars();
+            let functions: Vec<(trigpoly::Var, &str)> = ring
+                .vars()
+                .filter(|&v| ring.variable(v).kind() != VarKind::Parameter)
+                .map(|v| (v, ring.variable(v).name()))
+                .collect();
+            let linear = p.terms().all(|t| {
+                let exponents = t.exponents();
+                let degree: i64 = functions.iter().map(|(v, _)| exponents[v.index()]).sum();
+                degree <= 1
+            });
+            let listed = functions
+                .iter()
+                .filter(|(v, _)| p.contains(*v))
+                .all(|(_, name)| table.names.iter().any(|n| n == name));
+            if !(linear && listed) {
+                let lhs = format!("{{{}, {}}}", table.display[a], table.display[b]);
+                lines.push(Equation::new(&lhs, p));
+            }
+        }
+    }
+    lines
 }
 
 /// The names a table tabulates: those given, or the file's functions but `H` (`defined`)

@@ -742,6 +742,38 @@ fn cli_leading_zeros_of_a_family_index_are_not_digits_of_it() {
     }
 }
 
+/// A table's entry that is no combination of the listed functions but a polynomial in `H`
+/// and the file's functions is written so below the table, as `bracket` writes it: the cubic
+/// algebra of the Fokas–Lagerstrom integrals showed `{S, C}` only as ten monomials. One of
+/// degree 1 in the listed functions is not (the table chose the bracket over it), and the
+/// gravity rotor's table, all such, has no such lines.
+#[test]
+fn cli_table_writes_an_entry_in_the_functions_where_it_can() {
+    let fl = "systems/fokas-lagerstrom-1-3.toml";
+    let out = run(&["table", fl, "H", "Hx", "S", "C", "--no-timings"], 0);
+    assert!(
+        out.contains("\n    {S, C} = 72M³ H H_x² − 96M³ H_x³\n"),
+        "{out}"
+    );
+    let below = out
+        .split("as polynomials in H")
+        .nth(1)
+        .expect("lines below the table");
+    assert!(!below.contains("{H_x,"), "{below}");
+    let v: Value =
+        serde_json::from_str(&run(&["table", fl, "S", "C", "--format", "json"], 0)).expect("JSON");
+    let line = &v["equations"][0]["lines"][0];
+    assert_eq!(line["lhs"], "{S, C}");
+    assert_eq!(line["ascii"], "72*M^3*H*Hx^2 - 96*M^3*Hx^3");
+    let tex = run(&["table", fl, "S", "C", "--format", "latex"], 0);
+    assert!(
+        tex.contains(r"\{S, C\} &= 72 M^{3} H H_{x}^{2} - 96 M^{3} H_{x}^{3}"),
+        "{tex}"
+    );
+    let gravity = run(&["table", "systems/gravity-rotor.toml", "--no-timings"], 0);
+    assert!(!gravity.contains("as polynomials in H"), "{gravity}");
+}
+
 /// A negative number given to a numeric option is refused by the option's own check, not as an
 /// unexpected argument with clap's tip to write `-- -5`, which would make it a positional
 /// argument and fail again.
