@@ -26,6 +26,7 @@ Examples:
   superint closure systems/smorodinsky-winternitz-i.toml H Hx X --define 'C={Hx, X}' \\
       --degree 3 --symbolic M,alpha,beta,gamma --parameters-degree 2
   superint closure systems/calogero.toml P H I3 K1 --degree 2
+  superint closure systems/fokas-lagerstrom-1-3.toml H Hx S C --degree 4   a cubic algebra
 
 Each bracket is written as a polynomial of degree ≤ D in the generators where one exists
 (coefficients Laurent monomials in the parameters), and every minimal polynomial relation of

@@ -2958,6 +2958,17 @@ fn markdown_prose_escapes_what_reads_as_html() {
     assert!(md.contains("`−k/r`"), "{md}");
 }
 
+/// The closure help's example of a cubic algebra runs as shown, and finds it.
+#[test]
+fn the_closure_help_example_of_a_cubic_algebra_runs() {
+    let help = run(&["closure", "--help"], 0);
+    let example = "superint closure systems/fokas-lagerstrom-1-3.toml H Hx S C --degree 4";
+    assert!(help.contains(example), "{help}");
+    let args: Vec<&str> = example.split(' ').skip(1).collect();
+    let out = run(&args, 0);
+    assert!(out.contains("{S, C} = 72M³ H H_x² − 96M³ H_x³"), "{out}");
+}
+
 /// The example of `--define` in `closure --help` runs (its `Hx` read as `H·x` and was
 /// refused), and finds the relation of the defined generator.
 #[test]
