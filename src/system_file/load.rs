@@ -1082,9 +1082,24 @@ impl<'a> Builder<'a> {
                     )
                 })
             };
-            file.scope(k + 1)
-                .expand(k, 1, 1, &self.source, 0..0)
-                .map_err(later)?;
+            if let Err(e) = file.scope(k + 1).expand(k, 1, 1, &self.source, 0..0) {
+                // A value that fails at (1, 1) but not at (2, 2) (`(x + y)^(m - 2)`, a negative
+                // power there, `x^(m/2)`, a root) fails for its indices: say which.
+                let at_two = file.scope(k + 1).expand(k, 2, 2, &self.source, 0..0);
+                let e = match (&e.hint, at_two) {
+                    (None, Ok(_)) => {
+                        let [m, n] = &file.families[k].indices;
+                        e.with_hint(format!(
+                            "this is the instance {}_{{1,1}} ({m} = 1, {n} = 1), which is \
+                             computed when the file is loaded: a family's value must hold for \
+                             every {m}, {n} ≥ 0",
+                            file.families[k].display
+                        ))
+                    }
+                    _ => e,
+                };
+                return Err(later(e));
+            }
             if file.families[k].eigenvalue.is_some() {
                 file.eigenvalue_at(k, 1, 1).map_err(later)?;
             }

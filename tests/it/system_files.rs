@@ -794,6 +794,16 @@ fn bad_inputs() -> Vec<(&'static str, Vec<u8>, &'static str, Vec<&'static str>)>
             check.clone(),
         ),
         (
+            "family whose value fails at its instance (1, 1) only (the hint says it is that \
+             instance, which the loader computes)",
+            base_with(
+                "[[claim]]",
+                "[[family]]\nname = \"K\"\nvalue = \"(x + A)^(m - 2)*A^n\"\n\n[[claim]]",
+            ),
+            "bad.toml:14:10: cannot raise ",
+            check.clone(),
+        ),
+        (
             "family using itself",
             base_with(
                 "[[claim]]",
