@@ -74,8 +74,19 @@ impl<C: Coefficient> Poly<C> {
         self.declaration_within(8, 80)
     }
 
-    /// [`Poly::declaration`] with room for at most `terms` terms and `chars` characters.
+    /// [`Poly::declaration`] with room for at most `terms` terms and `chars` characters. A
+    /// divisor that is not real (`p_x + iMωx`) cannot be declared (a denominator is real):
+    /// `1/D = conj(D)/(D conj(D))` names the real product to declare instead.
     pub(crate) fn declaration_within(&self, terms: usize, chars: usize) -> String {
+        if !self.is_real() {
+            let norm = self.checked_mul(&self.conj()).ok();
+            let advice = "it is not real, so it cannot be declared (a denominator is real): \
+                          write 1/D as conj(D)/(D conj(D)) and declare the real D conj(D)";
+            return match norm.and_then(|n| n.ascii_within(terms, chars)) {
+                Some(a) => format!("{advice}: {}", denominators_line(&[a])),
+                None => format!("{advice}, or its factors, in [phase_space]"),
+            };
+        }
         match self.ascii_within(terms, chars) {
             Some(a) => format!(
                 "declare it (or its factors) as a denominator: {}",

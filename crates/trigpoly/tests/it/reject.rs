@@ -58,6 +58,22 @@ fn cases() -> Vec<Case> {
              declare it (or its factors) as a denominator: denominators = [\"x + 1\"] in \
              [phase_space]\n  x/(1+x)\n    ^^^^^",
         ),
+        // A divisor that is not real cannot be declared: the message names its real norm.
+        case(
+            Qi,
+            "x/(p_x + i*x)",
+            "cannot divide by p_x + ix: only division by a nonzero constant, a single term \
+             (monomial) or a product of powers of declared denominators is exact here; it is not \
+             real, so it cannot be declared (a denominator is real): write 1/D as \
+             conj(D)/(D conj(D)) and declare the real D conj(D): denominators = \
+             [\"p_x^2 + x^2\"] in [phase_space]",
+            (1, 3),
+            "line 1, column 3: cannot divide by p_x + ix: only division by a nonzero constant, a \
+             single term (monomial) or a product of powers of declared denominators is exact \
+             here; it is not real, so it cannot be declared (a denominator is real): write 1/D \
+             as conj(D)/(D conj(D)) and declare the real D conj(D): denominators = \
+             [\"p_x^2 + x^2\"] in [phase_space]\n  x/(p_x + i*x)\n    ^^^^^^^^^^^",
+        ),
         case(
             Q,
             "2^(1/3)",
