@@ -84,7 +84,7 @@ pub mod prelude {
     pub use crate::system_file::{
         bracket_report, check_report, expand_report, family_tower_report,
         family_tower_report_with_progress, load as load_system_file, load_str as load_system_text,
-        rank_report, table_report, Caller, CheckedClaim, ClaimSpec, ErrorKind, Family, FileError,
-        LimitsOverride, LoadedSystem, Location,
+        rank_report, rank_report_when, table_report, Caller, CheckedClaim, ClaimSpec, ErrorKind,
+        Family, FileError, LimitsOverride, LoadedSystem, Location,
     };
 }

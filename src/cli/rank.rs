@@ -5,7 +5,7 @@ use std::path::PathBuf;
 use super::input::load_system;
 use clap::Args;
 use superint::render::render;
-use superint::system_file::{rank_report, LimitsOverride};
+use superint::system_file::{rank_report_when, LimitsOverride};
 
 use super::limits::LimitsArgs;
 use super::output::{emit, Output};
@@ -15,6 +15,7 @@ Examples:
   superint rank systems/harmonic-rotor.toml F1 F2 G1 G2 P_1_1          rank 5 (claim C17)
   superint rank systems/harmonic-rotor.toml F1 F2 G1 G2 L --expect 4
   superint rank systems/harmonic-rotor.toml F1 'F2 + L' --format json
+  superint rank systems/henon-heiles.toml H K --when 'A = 1, B = 1, C = 2'
 
 The rank of ∂(F_1, …, F_k)/∂(q, p) over the rational functions: at least r by an r × r minor
 that is nonzero at an exact rational point, at most r by the (r+1) × (r+1) minors that border it
@@ -32,6 +33,10 @@ pub struct RankArgs {
     /// Claim that the rank is R: exit status 1 if it is not.
     #[arg(long, allow_negative_numbers = true, value_name = "R")]
     expect: Option<usize>,
+    /// Values of parameters, such as 'a = 1' (as a rank claim's `when`; a condition on phase
+    /// space is refused: the rank is that of the Jacobian on the whole phase space).
+    #[arg(long, value_name = "CONDITION")]
+    when: Option<String>,
     #[command(flatten)]
     limits: LimitsArgs,
 }
@@ -42,6 +47,7 @@ pub struct RankJob {
     pub file: PathBuf,
     pub functions: Vec<String>,
     pub expect: Option<usize>,
+    pub when: Option<String>,
     pub limits: LimitsOverride,
     pub output: Output,
 }
@@ -52,6 +58,7 @@ impl RankArgs {
             file: self.file,
             functions: self.functions,
             expect: self.expect,
+            when: self.when,
             limits: self.limits.settings(),
             output,
         }
@@ -61,7 +68,7 @@ impl RankArgs {
 /// Certifies the rank and prints it; whether it is the expected one (if one was given).
 pub fn run(job: &RankJob) -> anyhow::Result<bool> {
     let file = load_system(&job.file, &job.limits)?;
-    let report = rank_report(&file, &job.functions, job.expect)?;
+    let report = rank_report_when(&file, &job.functions, job.expect, job.when.as_deref())?;
     emit(&render(&report, job.output.format, &job.output.options))?;
     Ok(report.all_as_expected())
 }

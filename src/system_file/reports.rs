@@ -637,18 +637,52 @@ pub fn rank_report(
     functions: &[impl AsRef<str>],
     expected: Option<usize>,
 ) -> Result<Report, FileError> {
+    rank_report_when(file, functions, expected, None)
+}
+
+/// [`rank_report`] at values of parameters, as a rank claim's `when` sets them (`a = 1`): a
+/// condition on phase space is refused, since the rank is that of the Jacobian on the whole
+/// phase space.
+pub fn rank_report_when(
+    file: &LoadedSystem,
+    functions: &[impl AsRef<str>],
+    expected: Option<usize>,
+    when: Option<&str>,
+) -> Result<Report, FileError> {
     let start = Instant::now();
     let parsed = functions
         .iter()
         .map(|f| file.argument(f.as_ref()))
         .collect::<Result<Vec<_>, _>>()?;
     file.refuse_repeated(functions, "a rank")?;
+    let condition = command_condition(file, when)?;
+    if let (Some(text), Some((v, kind))) =
+        (when, condition.as_ref().and_then(|c| c.phase_variable()))
+    {
+        let source = file.given("<condition>", text);
+        let whole = Text::whole(&source);
+        return Err(whole.error(
+            &source,
+            ErrorKind::Condition,
+            whole.trimmed_span(),
+            format!(
+                "a rank's condition may set parameters only, to numbers or other parameters, \
+                 and it holds {v}, {kind}: the rank is that of the Jacobian on the whole phase \
+                 space"
+            ),
+        ));
+    }
     let mut names = Vec::new();
     let mut exprs = Vec::new();
     for arg in &parsed {
         let (name, value) = file.expand(arg)?;
         names.push(name);
-        exprs.push(value);
+        exprs.push(match &condition {
+            Some(c) => c
+                .apply_where_defined(&value, "a function")
+                .map_err(|e| file.computation_error(&e))?,
+            None => value,
+        });
     }
     let written = functions
         .iter()
@@ -681,6 +715,12 @@ pub fn rank_report(
         rank.expected = rank.certificate.rank;
         rank.claim.proved = true;
         rank.claim.note = None;
+    }
+    if let Some(c) = &condition {
+        // The parameters it sets have their values there, not the point's.
+        let set = |v: &trigpoly::Var| c.subs().iter().any(|(w, _)| w == v);
+        rank.certificate.point.retain(|(v, _)| !set(v));
+        rank.claim = rank.claim.at(Some(c.forms()));
     }
     let vars = file.system.vars();
     let coordinates: Vec<&str> = rank

@@ -774,6 +774,49 @@ fn cli_table_writes_an_entry_in_the_functions_where_it_can() {
     assert!(!gravity.contains("as polynomials in H"), "{gravity}");
 }
 
+/// `rank --when` sets parameters as a rank claim's `when` does: the two energies of the planar
+/// oscillator are dependent at `a = 1` only. A condition on phase space is refused. `rank` had
+/// no `--when`, though a file's rank claim takes one.
+#[test]
+fn cli_rank_takes_a_condition_on_parameters() {
+    let file = crate::scratch_text(
+        "rank-when",
+        "oscillator.toml",
+        "hamiltonian = \"(p_x^2 + p_y^2)/2 + (x^2 + a*y^2)/2\"\n[phase_space]\n\
+         coordinates = [\"x\", \"y\"]\nparameters = [\"a\"]\n",
+    );
+    let file = file.to_str().expect("a path");
+    let both = "(p_x^2 + x^2 + p_y^2 + y^2)/2";
+    let at = |when: &str, code: i32| {
+        let args = [
+            "rank",
+            file,
+            "H",
+            both,
+            "--when",
+            when,
+            "--expect",
+            "1",
+            "--no-timings",
+        ];
+        let o = superint_exits(&args, code);
+        (stdout(&o), stderr(&o))
+    };
+    let (isotropic, _) = at("a = 1", 0);
+    assert!(isotropic.contains("= 1 at a = 1"), "{isotropic}");
+    assert!(
+        !isotropic.contains(", a = "),
+        "the point leaves a out: {isotropic}"
+    );
+    let (anisotropic, _) = at("a = 4", 1);
+    assert!(anisotropic.contains("the rank is 2"), "{anisotropic}");
+    let (_, refused) = at("x = 1", 2);
+    assert!(
+        refused.contains("a rank's condition may set parameters only"),
+        "{refused}"
+    );
+}
+
 /// A negative number given to a numeric option is refused by the option's own check, not as an
 /// unexpected argument with clap's tip to write `-- -5`, which would make it a positional
 /// argument and fail again.
