@@ -75,7 +75,7 @@ pub struct ClosureArgs {
     /// linear system.
     #[arg(long, allow_negative_numbers = true,
           value_name = "N", default_value_t = ClosureOptions::DEFAULT_MAX_MONOMIALS as u64,
-          value_parser = clap::value_parser!(u64).range(1..))]
+          value_parser = super::Quoting(super::at_least_one))]
     max_monomials: u64,
     /// A generator given by its expression, NAME=EXPR (repeatable), NAME a name the system
     /// does not have.

@@ -10,7 +10,7 @@ pub struct LimitsArgs {
     /// Stop with an error when any result would have more terms than N (default: the file's
     /// [limits] max_terms, else 2000000).
     #[arg(long, allow_negative_numbers = true,
-          value_name = "N", value_parser = clap::value_parser!(u64).range(1..))]
+          value_name = "N", value_parser = super::Quoting(super::at_least_one))]
     max_terms: Option<u64>,
     /// Stop with an error when any exponent would exceed D (default: the file's [limits]
     /// max_degree, else 1000).
@@ -20,7 +20,7 @@ pub struct LimitsArgs {
     /// Stop with an error before a product of polynomials that would form more than N term
     /// products (default: the file's [limits] max_term_products, else 10000000000).
     #[arg(long, allow_negative_numbers = true,
-          value_name = "N", value_parser = clap::value_parser!(u64).range(1..))]
+          value_name = "N", value_parser = super::Quoting(super::at_least_one))]
     max_term_products: Option<u64>,
 }
 

@@ -58,6 +58,30 @@ impl<T: Clone + Send + Sync + 'static> clap::builder::TypedValueParser for Quoti
     }
 }
 
+/// A count or a limit (`--max-terms`): a whole number of at least 1. `u64`'s own parser said
+/// "invalid digit found in string" of `-5`.
+fn at_least_one(s: &str) -> Result<u64, String> {
+    match whole(s, "at least 1")? {
+        0 => Err("0, where the least is 1".to_string()),
+        n => Ok(n),
+    }
+}
+
+/// A rank (`rank --expect`): a whole number.
+fn a_rank(s: &str) -> Result<usize, String> {
+    usize::try_from(whole(s, "a rank")?).map_err(|_| "too large to be a rank".to_string())
+}
+
+/// A whole number, or why not, in words (`what` it should be).
+fn whole(s: &str, what: &str) -> Result<u64, String> {
+    let t = s.trim();
+    t.parse::<u64>().map_err(|_| match t.parse::<i128>() {
+        Ok(n) if n < 0 => format!("a negative number, where a whole number ({what}) is expected"),
+        Ok(_) => "too large".to_string(),
+        Err(_) => format!("not a whole number ({what})"),
+    })
+}
+
 /// Every claim was proved.
 pub const EXIT_PROVED: u8 = 0;
 /// A claim was refuted.

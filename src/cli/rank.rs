@@ -31,7 +31,8 @@ pub struct RankArgs {
     #[arg(value_name = "NAMES", required = true)]
     functions: Vec<String>,
     /// Claim that the rank is R: exit status 1 if it is not.
-    #[arg(long, allow_negative_numbers = true, value_name = "R")]
+    #[arg(long, allow_negative_numbers = true, value_name = "R",
+          value_parser = super::Quoting(super::a_rank))]
     expect: Option<usize>,
     /// Values of parameters, such as 'a = 1' (as a rank claim's `when`; a condition on phase
     /// space is refused: the rank is that of the Jacobian on the whole phase space).

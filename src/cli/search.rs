@@ -138,7 +138,7 @@ pub struct SearchArgs {
     #[arg(long, allow_negative_numbers = true,
           value_name = "N", requires = "new_only",
           default_value_t = DEFAULT_MAX_PRODUCTS as u64,
-          value_parser = clap::value_parser!(u64).range(1..))]
+          value_parser = super::Quoting(super::at_least_one))]
     max_products: u64,
     /// More known integrals for --new-only: expressions or family instances (P_1_1),
     /// separated by commas. Each must be a real integral (under --when); one that is not is

@@ -819,7 +819,8 @@ fn cli_rank_takes_a_condition_on_parameters() {
 
 /// A negative number given to a numeric option is refused by the option's own check, not as an
 /// unexpected argument with clap's tip to write `-- -5`, which would make it a positional
-/// argument and fail again.
+/// argument and fail again; a count or a limit says in words what it takes, where `u64`'s
+/// parser said "invalid digit found in string".
 #[test]
 fn cli_a_negative_number_for_an_option_gets_its_range() {
     let fl = "systems/fokas-lagerstrom-1-3.toml";
@@ -853,7 +854,21 @@ fn cli_a_negative_number_for_an_option_gets_its_range() {
         ),
         (
             vec!["rank", fl, "H", "--expect", "-1"],
-            "invalid value '-1' for '--expect <R>'",
+            "invalid value '-1' for '--expect <R>': a negative number, where a whole number (a \
+             rank) is expected",
+        ),
+        (
+            vec!["check", fl, "--max-terms", "-5"],
+            "invalid value '-5' for '--max-terms <N>': a negative number, where a whole number \
+             (at least 1) is expected",
+        ),
+        (
+            vec!["closure", fl, "H", "--max-monomials", "0"],
+            "invalid value '0' for '--max-monomials <N>': 0, where the least is 1",
+        ),
+        (
+            vec!["check", fl, "--max-term-products", "1.5"],
+            "invalid value '1.5' for '--max-term-products <N>': not a whole number (at least 1)",
         ),
         (
             vec!["check", fl, "--max-degree", "-4"],
