@@ -412,7 +412,8 @@ impl LoadedSystem {
 
 /// The bracket table of named functions (or family instances such as `K_1_1`, or phase
 /// variables such as `p_x`) of the file, with its entries that are polynomials in `H` and the
-/// file's functions written so below it; all its functions but `H` when `names` is empty. An entry that reaches a limit is `?`
+/// file's functions written so below it; all its functions but `H` when `names` is empty. An
+/// entry that reaches a limit is `?`
 /// ([`TableResult::undecided`](crate::report::TableResult::undecided) lists them, with the
 /// limits' messages), and the others are computed.
 pub fn table_report(file: &LoadedSystem, names: &[impl AsRef<str>]) -> Result<Report, FileError> {
