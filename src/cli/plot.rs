@@ -91,7 +91,7 @@ pub struct PlotArgs {
     #[arg(long, value_name = "S", requires = "against")]
     section: Option<String>,
     /// Where to write the SVG chart; '-' writes it to standard output, and the table to
-    /// standard error.
+    /// standard error. A name of another image format (.png, .pdf, ...) is refused.
     #[arg(short, long, value_name = "FILE.svg")]
     output: PathBuf,
     /// How to step: the classical Runge–Kutta method, or the two-stage Gauss–Legendre method
@@ -597,6 +597,15 @@ fn check_outputs(args: &PlotArgs) -> anyhow::Result<()> {
             );
         }
     }
+    if let Some(format) = other_image_format(&args.output) {
+        bail!(
+            "-o {}: plot writes SVG, which a .{format} file would hold under another format's \
+             name; name it {} (rsvg-convert or inkscape turn an SVG into {})",
+            args.output.display(),
+            args.output.with_extension("svg").display(),
+            format.to_ascii_uppercase(),
+        );
+    }
     let outputs = std::iter::once(&args.output).chain(args.data.as_ref());
     if let Some(o) = outputs
         .filter(|o| o.as_os_str() != "-")
@@ -608,6 +617,17 @@ fn check_outputs(args: &PlotArgs) -> anyhow::Result<()> {
         );
     }
     Ok(())
+}
+
+/// The extension of `path` when it names an image or document format other than SVG
+/// (`p.png`), where the chart, always SVG, would be written under a name that says otherwise.
+/// Any other name (`p.svg`, `chart`, `p.xml`) is taken as given.
+fn other_image_format(path: &std::path::Path) -> Option<String> {
+    const OTHERS: [&str; 11] = [
+        "png", "jpg", "jpeg", "gif", "webp", "bmp", "tif", "tiff", "pdf", "eps", "ps",
+    ];
+    let extension = path.extension()?.to_str()?.to_ascii_lowercase();
+    OTHERS.contains(&extension.as_str()).then_some(extension)
 }
 
 /// The largest relative move of H along an orbit past which `plot` warns: H is conserved, so

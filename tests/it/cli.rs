@@ -1880,6 +1880,31 @@ fn cli_plot_bad_arguments_exit_2_with_a_message() {
         all.extend(["-o", out]);
         assert_bad_usage(&all, message);
     }
+    // A chart named as another format is refused: SVG was written into `orbit.png` silently.
+    let png = scratch_file("orbit.PNG");
+    let _ = std::fs::remove_file(&png);
+    let png = png.to_str().unwrap();
+    assert_bad_usage(
+        &[
+            "plot",
+            "systems/harmonic-rotor.toml",
+            "L",
+            "--at",
+            at,
+            "--from",
+            full,
+            "--time",
+            "1",
+            "-o",
+            png,
+        ],
+        &format!(
+            "-o {png}: plot writes SVG, which a .png file would hold under another format's \
+             name; name it {} (rsvg-convert or inkscape turn an SVG into PNG)",
+            png.replace("orbit.PNG", "orbit.svg")
+        ),
+    );
+    assert!(!std::path::Path::new(png).exists());
     // A start where H or a curve divides by zero is said as such; the flow ran off at once and
     // floating point said it 'left the finite numbers near t = 0.001'.
     let on_axis = "x = 0, y = 1, theta = 0, p_x = 0, p_y = 1/2, p_theta = 1";
