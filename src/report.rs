@@ -9,6 +9,7 @@
 //! `report/results.rs` each kind of result it holds.
 
 use crate::render::tex::Names;
+use crate::system_file::Caller;
 use trigpoly::Expr;
 
 mod results;
@@ -32,6 +33,9 @@ pub struct Report {
     pub summary: SummaryKind,
     /// Seconds spent computing the whole report.
     pub seconds: f64,
+    /// Who the report was built for: its advice names the command line's options, or the
+    /// library's for a program ([`Caller::Program`], the default).
+    pub caller: Caller,
 }
 
 /// What the closing summary line of a report counts.
@@ -335,8 +339,8 @@ pub fn with_article(name: &str) -> String {
 impl Report {
     /// The report with every claim's residual and every table's entry of more than
     /// `monomials` monomials outside the angles cut to the terms of its first `monomials`
-    /// ([`ClaimResult::excerpt_residual`], [`TableResult::excerpt_entries`]); the report
-    /// itself when none is that long.
+    /// ([`ClaimResult::excerpt_residual`], [`TableResult::excerpt_entries`]), each
+    /// [`Excerpt`] for the report's caller; the report itself when none is that long.
     pub fn excerpted(&self, monomials: usize) -> std::borrow::Cow<'_, Report> {
         let long = |e: &Entry| match e {
             Entry::Claim(c) => c.is_longer_than(monomials),
@@ -347,10 +351,17 @@ impl Report {
             return std::borrow::Cow::Borrowed(self);
         }
         let mut report = self.clone();
+        let caller = report.caller;
         for entry in report.sections.iter_mut().flat_map(|s| &mut s.entries) {
             match entry {
-                Entry::Claim(c) => c.excerpt_residual(monomials),
-                Entry::Table(t) => t.excerpt_entries(monomials),
+                Entry::Claim(c) => {
+                    c.excerpt_residual(monomials);
+                    c.excerpt.iter_mut().for_each(|e| e.caller = caller);
+                }
+                Entry::Table(t) => {
+                    t.excerpt_entries(monomials);
+                    t.excerpts.values_mut().for_each(|e| e.caller = caller);
+                }
                 _ => {}
             }
         }
@@ -390,7 +401,17 @@ impl Report {
             }],
             summary: SummaryKind::Claims,
             seconds,
+            caller: Caller::Program,
         }
+    }
+
+    /// The same report, built for `caller`: the command line renders the reports of the
+    /// paper `with_caller(Caller::CommandLine)`, so that a long residual's note names
+    /// `--full-expressions`. What a report already says is not rewritten.
+    #[must_use]
+    pub fn with_caller(mut self, caller: Caller) -> Report {
+        self.caller = caller;
+        self
     }
 
     /// The same report with every section that names no file about `file`: what a command

@@ -4,6 +4,7 @@ use anyhow::Context;
 use clap::Args;
 use superint::paper::{Paper, PaperOptions};
 use superint::render::render;
+use superint::system_file::Caller;
 
 use super::output::{emit, Output};
 
@@ -51,7 +52,8 @@ impl PaperArgs {
 /// Checks the paper and prints it; whether every claim was proved.
 pub fn run(job: &PaperJob) -> anyhow::Result<bool> {
     let paper = Paper::build(&job.options).context("building the paper's catalogue")?;
-    let report = paper.check().context("checking the paper's claims")?;
+    let report =
+        (paper.check().context("checking the paper's claims")?).with_caller(Caller::CommandLine);
     emit(&render(&report, job.output.format, &job.output.options))?;
     Ok(report.all_proved())
 }

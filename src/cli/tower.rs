@@ -11,7 +11,7 @@ use clap::Args;
 use indicatif::{ProgressBar, ProgressStyle};
 use superint::paper::{tower_report_with_progress, TowerSystem};
 use superint::render::render;
-use superint::system_file::{family_tower_report_with_progress, LimitsOverride};
+use superint::system_file::{family_tower_report_with_progress, Caller, LimitsOverride};
 
 use super::limits::LimitsArgs;
 use super::output::{emit, Output};
@@ -132,6 +132,7 @@ pub fn run(job: &TowerJob) -> anyhow::Result<bool> {
             }
             tower_report_with_progress(*system, job.max, &mut progress)
                 .context("checking the tower")?
+                .with_caller(Caller::CommandLine)
         }
         SystemArg::File(path) => {
             let file = load_system(path, &job.limits.unwrap_or_default())?;

@@ -79,6 +79,7 @@ pub fn closure_report(
             sections,
             summary: SummaryKind::Claims,
             seconds: start.elapsed().as_secs_f64(),
+            caller: crate::system_file::Caller::Program,
         },
         c,
     ))

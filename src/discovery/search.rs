@@ -475,6 +475,7 @@ pub fn search_report(
             sections,
             summary: SummaryKind::Claims,
             seconds: start.elapsed().as_secs_f64(),
+            caller: crate::system_file::Caller::Program,
         },
         r,
     ))

@@ -22,6 +22,7 @@ mod harmonic;
 mod planar;
 
 use crate::render::tex::Names;
+use crate::system_file::Caller;
 use std::sync::Arc;
 use std::time::Instant;
 
@@ -194,6 +195,7 @@ impl Paper {
             sections,
             summary: SummaryKind::Claims,
             seconds: start.elapsed().as_secs_f64(),
+            caller: Caller::Program,
         })
     }
 }
@@ -271,6 +273,7 @@ pub fn tower_report_with_progress(
         }],
         summary: SummaryKind::Tower,
         seconds: start.elapsed().as_secs_f64(),
+        caller: Caller::Program,
     })
 }
 

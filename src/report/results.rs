@@ -9,6 +9,7 @@ use brackets::{BracketTable, RankCertificate, System};
 use trigpoly::{Expr, Style, Var, Vars};
 
 use super::Expect;
+use crate::system_file::Caller;
 
 /// Whether a claim asserts an identity or that something does not vanish.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -96,19 +97,27 @@ pub struct Excerpt {
     pub monomials: usize,
     /// Whether an angle appears in the whole (else its monomials are its terms).
     pub angles: bool,
+    /// Who the report was built for ([`Report::caller`](super::Report::caller)), whose way
+    /// to show all [`Excerpt::describe`] names.
+    pub caller: Caller,
 }
 
 impl Excerpt {
     /// What the prose formats say under the part: `shown: the terms of its first 100 of
     /// 254321 monomials outside the angles; --full-expressions shows all` (`its first 100 of
-    /// 254321 terms` without angles).
+    /// 254321 terms` without angles; for a program, `RenderOptions::shown_monomials = None`
+    /// shows all).
     pub fn describe(&self) -> String {
         let (shown, all) = (self.shown, self.monomials);
         let part = match self.angles {
             true => format!("the terms of its first {shown} of {all} monomials outside the angles"),
             false => format!("its first {shown} of {all} terms"),
         };
-        format!("shown: {part}; --full-expressions shows all")
+        let all = self.caller.names(
+            "--full-expressions",
+            "RenderOptions::shown_monomials = None",
+        );
+        format!("shown: {part}; {all} shows all")
     }
 
     /// Cuts `e` to the terms of its first `monomials` monomials outside the angles if it has
@@ -127,6 +136,7 @@ impl Excerpt {
             shown: monomials,
             monomials: all,
             angles: e.has_angles(),
+            caller: Caller::Program,
         };
         *e = part;
         Some(excerpt)

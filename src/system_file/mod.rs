@@ -175,8 +175,10 @@ pub struct LoadedSystem {
 
 /// Who gives the texts that the reports of a [`LoadedSystem`] read (the expressions of
 /// [`bracket_report`], [`expand_report`] and [`rank_report`], the names of [`table_report`],
-/// a condition, [`LoadedSystem::parse_argument`]), which their messages name. A loaded or built
-/// system's caller is [`Caller::Program`]; [`LoadedSystem::with_caller`] chooses another.
+/// a condition, [`LoadedSystem::parse_argument`]), which their messages name, and whom a
+/// report is built for ([`Report::caller`](crate::report::Report::caller)), whose options its
+/// advice names. A loaded or built system's caller is [`Caller::Program`];
+/// [`LoadedSystem::with_caller`] chooses another.
 ///
 /// ```
 /// use superint::system_file::{bracket_report, load, Caller, LimitsOverride};
@@ -198,6 +200,17 @@ pub enum Caller {
     /// The command line (`superint bracket`, `table`, ...): every text given is
     /// `<command line>`, and messages name the command's options (`--when`).
     CommandLine,
+}
+
+impl Caller {
+    /// What a report's advice names for this caller: the command line's `flag`, or the
+    /// library's `library` (a field or method, `ClosureOptions::degree`) for a program.
+    pub(crate) fn names<'a>(self, flag: &'a str, library: &'a str) -> &'a str {
+        match self {
+            Caller::CommandLine => flag,
+            Caller::Program => library,
+        }
+    }
 }
 
 /// What `name` already names in `system` or among `families`, in words with its article:

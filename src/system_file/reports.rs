@@ -75,6 +75,7 @@ impl LoadedSystem {
             }],
             summary,
             seconds: start.elapsed().as_secs_f64(),
+            caller: self.caller,
         }
     }
 }
@@ -98,11 +99,13 @@ pub fn check_report<'a>(
     files: impl IntoIterator<Item = &'a LoadedSystem>,
 ) -> Result<Report, FileError> {
     let start = Instant::now();
+    let mut callers = Vec::new();
     let sections = files
         .into_iter()
+        .inspect(|f| callers.push(f.caller))
         .map(|f| f.checked_section(None))
         .collect::<Result<Vec<_>, _>>()?;
-    Ok(checked_files(sections, start))
+    Ok(checked_files(sections, &callers, start))
 }
 
 /// Checks every claim of every file that loaded, as [`check_report`] does, and goes on past
@@ -140,15 +143,17 @@ pub fn check_each(files: Vec<Result<LoadedSystem, FileError>>) -> (Report, Vec<F
     let start = Instant::now();
     let mut sections = Vec::new();
     let mut errors = Vec::new();
+    let mut callers = Vec::new();
     for file in files {
         let mut limits = Vec::new();
+        callers.extend(file.as_ref().map(|f| f.caller));
         match file.and_then(|f| f.checked_section(Some(&mut limits))) {
             Ok(section) => sections.push(section),
             Err(e) => errors.push(e),
         }
         errors.append(&mut limits);
     }
-    (checked_files(sections, start), errors)
+    (checked_files(sections, &callers, start), errors)
 }
 
 impl LoadedSystem {
@@ -187,8 +192,13 @@ impl LoadedSystem {
     }
 }
 
-/// The report of checked files' sections, each with its system's name, numbered in order.
-fn checked_files(sections: Vec<(Section, String)>, start: Instant) -> Report {
+/// The report of checked files' sections, each with its system's name, numbered in order;
+/// built for the files' caller when they share one ([`Caller::Program`] else).
+fn checked_files(sections: Vec<(Section, String)>, callers: &[Caller], start: Instant) -> Report {
+    let caller = match callers {
+        [first, rest @ ..] if rest.iter().all(|c| c == first) => *first,
+        _ => Caller::Program,
+    };
     let title = match sections.as_slice() {
         [(_, name)] => format!("The claims of {name}, checked exactly"),
         _ => format!(
@@ -208,6 +218,7 @@ fn checked_files(sections: Vec<(Section, String)>, start: Instant) -> Report {
         sections,
         summary: SummaryKind::Check { files },
         seconds: start.elapsed().as_secs_f64(),
+        caller,
     }
 }
 

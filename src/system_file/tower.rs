@@ -534,6 +534,7 @@ impl ShownFamily {
             }],
             summary: SummaryKind::Check { files: 1 },
             seconds: start.elapsed().as_secs_f64(),
+            caller: file.caller,
         }
     }
 

@@ -1036,3 +1036,58 @@ fn a_files_families_print_apart() {
         )
     );
 }
+
+/// A residual cut short in a program's report says how a program shows it all
+/// (`RenderOptions::shown_monomials = None`), not the command line's `--full-expressions`; a
+/// report built for the command line names the flag, as `superint check` prints.
+#[test]
+fn a_programs_long_residual_names_the_render_option() {
+    use superint::system_file::{check_report, load_str};
+
+    let text = "name = \"long residuals\"\nhamiltonian = \"p_x^2/2\"\n\
+                [phase_space]\ncoordinates = [\"x\"]\n\
+                [[function]]\nname = \"F\"\nvalue = \"(1 + x + p_x)^3\"\n\
+                [[claim]]\nid = \"long\"\nclaim = \"(1 + x + p_x)^3 = 0\"\n";
+    let file = load_str("long.toml", text, &LimitsOverride::default()).unwrap();
+    let options = RenderOptions {
+        timings: false,
+        shown_monomials: Some(2),
+    };
+    let program = "shown: its first 2 of 10 terms; RenderOptions::shown_monomials = None shows all";
+    let flag = "shown: its first 2 of 10 terms; --full-expressions shows all";
+    let report = check_report([&file]).unwrap();
+    assert_eq!(report.caller, Caller::Program);
+    for format in [Format::Text, Format::Markdown] {
+        let out = render(&report, format, &options);
+        let out = out.split_whitespace().collect::<Vec<_>>().join(" ");
+        assert!(out.contains(program), "{format}: {out}");
+        assert!(!out.contains("--full-expressions"), "{format}: {out}");
+    }
+    let latex = render(&report, Format::Latex, &options);
+    assert!(
+        latex.contains(r"RenderOptions::shown\_monomials = None"),
+        "{latex}"
+    );
+    assert!(!latex.contains("full-expressions"), "{latex}");
+    // A program's own claims, and a table's entry, alike.
+    let claim = Claim::new(
+        "long",
+        "(1 + x + p_x)^3 = 0",
+        file.parse("(1 + x + p_x)^3").unwrap(),
+        file.parse("0").unwrap(),
+    );
+    let own = Report::of_claims("My claims", vec![claim.check().unwrap().into()]);
+    assert!(render(&own, Format::Text, &options).contains(program));
+    let table = table_report(&file, &["x", "F"]).unwrap();
+    let table = render(&table, Format::Markdown, &options);
+    assert!(
+        table.contains("RenderOptions::shown_monomials = None shows all"),
+        "{table}"
+    );
+    // Built for the command line, or marked so after, a report names the flag.
+    let cli = check_report([&file.clone().with_caller(Caller::CommandLine)]).unwrap();
+    assert_eq!(cli.caller, Caller::CommandLine);
+    assert!(render(&cli, Format::Text, &options).contains(flag));
+    let own = own.with_caller(Caller::CommandLine);
+    assert!(render(&own, Format::Text, &options).contains(flag));
+}
