@@ -7,9 +7,9 @@ use anyhow::{anyhow, bail, Context};
 use brackets::closure::ClosureOptions;
 use brackets::NamedFunction;
 use clap::Args;
-use superint::discovery::{closure_report, parse_symbolic};
+use superint::discovery::{closure_report_for, parse_symbolic};
 use superint::render::render;
-use superint::system_file::PrintedNames;
+use superint::system_file::{Caller, PrintedNames};
 
 use super::limits::LimitsArgs;
 use super::output::{emit, Output};
@@ -237,8 +237,14 @@ pub fn run(job: &ClosureJob) -> anyhow::Result<bool> {
             parse_symbolic(subject.system(), names).map_err(|e| anyhow!("--symbolic: {e}"))?;
         options.parameters_degree = a.parameters_degree;
     }
-    let (report, _) = closure_report(&subject.the_name(), subject.system(), &generators, &options)
-        .context("computing the closure")?;
+    let (report, _) = closure_report_for(
+        &subject.the_name(),
+        subject.system(),
+        &generators,
+        &options,
+        Caller::CommandLine,
+    )
+    .context("computing the closure")?;
     let report = subject.tag(report);
     emit(&render(&report, job.output.format, &job.output.options))?;
     Ok(report.all_proved())

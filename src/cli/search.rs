@@ -10,11 +10,11 @@ use brackets::search::{SearchOptions, SearchSpace, DEFAULT_MAX_PRODUCTS};
 use brackets::System;
 use clap::Args;
 use superint::discovery::{
-    builtin_system, parse_condition, parse_fixed, parse_known, parse_symbolic, search_report,
+    builtin_system, parse_condition, parse_fixed, parse_known, parse_symbolic, search_report_for,
 };
 use superint::render::render;
 use superint::report::{with_article, Report};
-use superint::system_file::{what_is, BadName, LoadedSystem};
+use superint::system_file::{what_is, BadName, Caller, LoadedSystem};
 use trigpoly::{Expr, VarKind};
 
 use super::limits::LimitsArgs;
@@ -394,8 +394,13 @@ fn search_and_print(job: &SearchJob) -> anyhow::Result<bool> {
             options.known.push((k.to_string(), e));
         }
     }
-    let (report, _) = search_report(&subject.the_name(), subject.system(), &options)
-        .context("searching for integrals")?;
+    let (report, _) = search_report_for(
+        &subject.the_name(),
+        subject.system(),
+        &options,
+        Caller::CommandLine,
+    )
+    .context("searching for integrals")?;
     let report = subject.tag(report);
     emit(&render(&report, job.output.format, &job.output.options))?;
     Ok(report.all_proved())

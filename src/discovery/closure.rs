@@ -13,12 +13,16 @@ use crate::report::{
     SummaryKind, TableResult,
 };
 
+use crate::system_file::Caller;
+
 use super::{agreeing, off_one_note, parameter_facts, parameter_names, HeldAt};
 
 /// The report of a closure: the structure table, what lies outside, every bracket and relation
 /// proved. The generators need not be functions of the system (an instance `P_{1,1}`, a
 /// bracket); with names the system defines, [`brackets::closure()`] gives the [`Closure`] alone.
 /// `name` is the system as a title names it: `the harmonic rotor` ([`super::search_report`]).
+/// Its advice names the library's options (`ClosureOptions::degree`); [`closure_report_for`]
+/// chooses the caller.
 ///
 /// ```
 /// use superint::brackets::{systems, ClosureOptions, NamedFunction};
@@ -41,6 +45,18 @@ pub fn closure_report(
     system: &System,
     generators: &[NamedFunction],
     options: &ClosureOptions,
+) -> Result<(Report, Closure), EngineError> {
+    closure_report_for(name, system, generators, options, Caller::Program)
+}
+
+/// [`closure_report`] built for `caller`: its advice names the command line's options
+/// (`--degree`) for [`Caller::CommandLine`], as `superint closure` prints it.
+pub fn closure_report_for(
+    name: &str,
+    system: &System,
+    generators: &[NamedFunction],
+    options: &ClosureOptions,
+    caller: Caller,
 ) -> Result<(Report, Closure), EngineError> {
     let start = Instant::now();
     let c = closure_of(system, generators, options)?;
@@ -66,6 +82,7 @@ pub fn closure_report(
         when: &when,
         results,
         stuck,
+        caller,
     };
     let names = Names::of_system(system);
     let sections = vec![
@@ -79,7 +96,7 @@ pub fn closure_report(
             sections,
             summary: SummaryKind::Claims,
             seconds: start.elapsed().as_secs_f64(),
-            caller: crate::system_file::Caller::Program,
+            caller,
         },
         c,
     ))
@@ -144,6 +161,8 @@ struct Structure<'a> {
     results: usize,
     /// How many of them hold at the fixed values only.
     stuck: usize,
+    /// Who the report is for, whose options its advice names.
+    caller: Caller,
 }
 
 impl Structure<'_> {
@@ -168,6 +187,7 @@ impl Structure<'_> {
                 self.options,
                 self.c,
                 self.when,
+                self.caller,
             )?);
         }
         let brackets = bracket_claims(self.c, self.holding);
@@ -374,11 +394,12 @@ fn outside_entries(
     options: &ClosureOptions,
     c: &Closure,
     when: &str,
+    caller: Caller,
 ) -> Result<Vec<Entry>, EngineError> {
     let outside = c.outside();
     let moving = moving_generators(system, generators, options, &outside)?;
     let symbolic = !options.symbolic.is_empty();
-    let advice = closing_advice(&moving, when, symbolic);
+    let advice = closing_advice(&moving, when, symbolic, caller);
     // With parameters kept symbolic, the coefficients' degree in them bounds the search too.
     let coefficients = match symbolic {
         true => format!(
@@ -432,19 +453,25 @@ fn moving_generators(
 
 /// The advice after the brackets outside the table: that the `moving` generators, no
 /// integrals, need not close among the others, or, when every generator is an integral, how
-/// the table might close (with parameters kept `symbolic`, by their degree too).
-fn closing_advice(moving: &[String], when: &str, symbolic: bool) -> String {
+/// the table might close (with parameters kept `symbolic`, by their degree too), in the
+/// options of `caller`.
+fn closing_advice(moving: &[String], when: &str, symbolic: bool, caller: Caller) -> String {
+    let degree = caller.names("--degree", "ClosureOptions::degree");
+    let search = caller.names("superint search", "discovery::search_report");
     match moving.len() {
         // No degree gives a coefficient that divides by a symbolic parameter (`−3C/M`).
-        0 if symbolic => "A higher `--degree` or `--parameters-degree`, or what `superint \
-                          search` finds added to the generators, may close the table; a \
-                          coefficient that divides by a parameter (`1/M`) is no polynomial in \
-                          it at any degree: leave that parameter out of `--symbolic`, and it is \
-                          fixed and lifted back by homogeneity."
-            .to_string(),
-        0 => "A higher `--degree`, or what `superint search` finds added to the generators, may \
-             close the table."
-            .to_string(),
+        0 if symbolic => format!(
+            "A higher `{degree}` or `{}`, or what `{search}` finds added to the generators, may \
+             close the table; a coefficient that divides by a parameter (`1/M`) is no \
+             polynomial in it at any degree: leave that parameter out of `{}`, and it is fixed \
+             and lifted back by homogeneity.",
+            caller.names("--parameters-degree", "ClosureOptions::parameters_degree"),
+            caller.names("--symbolic", "ClosureOptions::symbolic"),
+        ),
+        0 => format!(
+            "A higher `{degree}`, or what `{search}` finds added to the generators, may close \
+             the table."
+        ),
         1 => format!(
             "{} is no integral (its bracket with `H` is not zero{when}), so its brackets \
              need not close among the others.",

@@ -13,6 +13,8 @@ use crate::report::{
     Section, SummaryKind,
 };
 
+use crate::system_file::Caller;
+
 use super::{agreeing, off_one_note, parameter_facts, parameter_names, proved_for_every, HeldAt};
 
 /// `F = Re(A e^{−ik·θ})` for an integral of one trigonometric order `k > 0` in one angle:
@@ -56,8 +58,13 @@ fn label_letter<'a>(system: &System, candidates: &[&'a str], count: usize) -> &'
 /// holds in the phase-space variables needs a degree in them past the space's: the integrals
 /// of that degree in the momenta (or, without momenta in `H`, in the Poisson variables) may
 /// then need a larger `--parameters-degree` (an oscillator with symbolic frequencies showed no
-/// quartic integral at degree 2, since `H²` has degree 4 in them).
-fn power_past_parameters_degree(h: &Expr, options: &SearchOptions) -> Option<String> {
+/// quartic integral at degree 2, since `H²` has degree 4 in them), or for a program a larger
+/// `SearchSpace::parameters_degree`.
+fn power_past_parameters_degree(
+    h: &Expr,
+    options: &SearchOptions,
+    caller: Caller,
+) -> Option<String> {
     if options.symbolic.is_empty() {
         return None;
     }
@@ -85,10 +92,11 @@ fn power_past_parameters_degree(h: &Expr, options: &SearchOptions) -> Option<Str
     let space = &options.space;
     let bound = i64::from(space.parameters_degree);
     let names = parameter_names(vars, &options.symbolic);
+    let option = caller.names("--parameters-degree", "SearchSpace::parameters_degree");
     if s > bound {
         return Some(format!(
             "Note: H has degree {s} in `{names}`, past the space's `{bound}` \
-             (`--parameters-degree`), so H is not among the integrals found, nor is any that \
+             (`{option}`), so H is not among the integrals found, nor is any that \
              needs its terms."
         ));
     }
@@ -109,7 +117,7 @@ fn power_past_parameters_degree(h: &Expr, options: &SearchOptions) -> Option<Str
     };
     Some(format!(
         "Note: `H{power}` lies in the space but for its degree {} in `{names}`, past the space's \
-         `{bound}` (`--parameters-degree`): integrals of degree {degree} may need a larger one.",
+         `{bound}` (`{option}`): integrals of degree {degree} may need a larger one.",
         k * s,
     ))
 }
@@ -432,6 +440,7 @@ fn proof_note(f: &Integral, fixed: &str, symbolic: Option<&str>) -> Option<Strin
 fn hamiltonian_note(
     system: &System,
     options: &SearchOptions,
+    caller: Caller,
 ) -> Result<Option<Entry>, EngineError> {
     let h = match &options.condition {
         Some(c) => c.apply(system.hamiltonian())?,
@@ -443,22 +452,47 @@ fn hamiltonian_note(
              nor is any that needs its terms."
         ))));
     }
-    Ok(power_past_parameters_degree(&h, options).map(Entry::Text))
+    Ok(power_past_parameters_degree(&h, options, caller).map(Entry::Text))
 }
 
 /// The report of [`search`]: the space, the dimensions by degree, a basis (or, with
 /// `new_only`, a complement of what known integrals generate) written like the paper, and
 /// every basis element proved. `name` is the system as a title names it, its article
 /// included where it takes one: `the harmonic rotor`, `my oscillator`
-/// ([`crate::report::with_article`] adds one), `t1`.
+/// ([`crate::report::with_article`] adds one), `t1`. Its advice names the library's options
+/// (`SearchOptions::symbolic`); [`search_report_for`] chooses the caller.
 pub fn search_report(
     name: &str,
     system: &System,
     options: &SearchOptions,
 ) -> Result<(Report, SearchResult), EngineError> {
+    search_report_for(name, system, options, Caller::Program)
+}
+
+/// [`search_report`] built for `caller`: its advice names the command line's options
+/// (`--symbolic`) for [`Caller::CommandLine`], as `superint search` prints it.
+///
+/// ```
+/// use superint::brackets::search::{SearchOptions, SearchSpace};
+/// use superint::brackets::systems;
+/// use superint::discovery::search_report_for;
+/// use superint::system_file::Caller;
+///
+/// let rotor = systems::harmonic_rotor();
+/// let options = SearchOptions::new(SearchSpace::new(1, 1, 1));
+/// let (report, _) = search_report_for("the harmonic rotor", &rotor, &options, Caller::CommandLine)?;
+/// assert_eq!(report.caller, Caller::CommandLine);
+/// # Ok::<(), superint::brackets::EngineError>(())
+/// ```
+pub fn search_report_for(
+    name: &str,
+    system: &System,
+    options: &SearchOptions,
+    caller: Caller,
+) -> Result<(Report, SearchResult), EngineError> {
     let start = Instant::now();
     let r = search(system, options)?;
-    let shared = Shared::new(system, options, &r);
+    let shared = Shared::new(system, options, &r, caller);
     let sections = vec![
         shared.search_section(system, options, &r)?,
         shared.basis_section(&r)?,
@@ -475,7 +509,7 @@ pub fn search_report(
             sections,
             summary: SummaryKind::Claims,
             seconds: start.elapsed().as_secs_f64(),
-            caller: crate::system_file::Caller::Program,
+            caller,
         },
         r,
     ))
@@ -497,10 +531,12 @@ struct Shared {
     shown: Vec<usize>,
     /// The system's names in LaTeX.
     names: Names,
+    /// Who the report is for, whose options its advice names.
+    caller: Caller,
 }
 
 impl Shared {
-    fn new(system: &System, options: &SearchOptions, r: &SearchResult) -> Self {
+    fn new(system: &System, options: &SearchOptions, r: &SearchResult, caller: Caller) -> Self {
         let vars = system.vars();
         Shared {
             held: HeldAt::new(options.condition.as_ref(), vars, &r.parameters),
@@ -512,6 +548,7 @@ impl Shared {
             complex: label_letter(system, &["A", "B", "Ψ"], r.basis.len()),
             shown: shown_integrals(r),
             names: Names::of_system(system),
+            caller,
         }
     }
 
@@ -536,11 +573,17 @@ impl Shared {
             }),
             Entry::Text(space_text(r)),
         ];
-        entries.extend(hamiltonian_note(system, options)?);
+        entries.extend(hamiltonian_note(system, options, self.caller)?);
         let for_every_value = (0..r.basis.len())
             .filter(|&i| r.for_every_value(i).is_some())
             .count();
-        entries.extend(parameter_notes(r, vars, self.held.fixed(), for_every_value));
+        entries.extend(parameter_notes(
+            r,
+            vars,
+            self.held.fixed(),
+            for_every_value,
+            self.caller,
+        ));
         entries.extend(self.symbolic_note());
         entries.extend(self.dimensions(r, vars));
         entries.push(self.search_facts(r, vars, for_every_value));
@@ -804,6 +847,7 @@ fn parameter_notes(
     vars: &Vars,
     fixed: &str,
     for_every_value: usize,
+    caller: Caller,
 ) -> Vec<Entry> {
     let mut notes = Vec::new();
     if r.parameters.is_empty() {
@@ -815,7 +859,7 @@ fn parameter_notes(
         "Parameters fixed for the linear algebra: `{fixed}`{off_one}; {lift}."
     )));
     if !(r.liftable && r.all_symbolic()) {
-        notes.push(Entry::Text(unlifted_note(r, vars)));
+        notes.push(Entry::Text(unlifted_note(r, vars, caller)));
     }
     notes
 }
@@ -846,21 +890,31 @@ fn how_lifted(r: &SearchResult, for_every_value: usize) -> String {
 }
 
 /// For what is not lifted: that it holds at the fixed values, and how to see it for every
-/// value (`--symbolic`) or at others (`--fix`).
-fn unlifted_note(r: &SearchResult, vars: &Vars) -> String {
+/// value (`--symbolic`, `SearchOptions::symbolic`) or at others (`--fix`,
+/// `SearchOptions::fixed`).
+fn unlifted_note(r: &SearchResult, vars: &Vars, caller: Caller) -> String {
     let names: Vec<&str> = r
         .parameters
         .iter()
         .map(|(v, _)| vars.variable(*v).name())
         .collect();
+    let others = other_values(&r.parameters, &names);
+    let how = match caller {
+        Caller::CommandLine => format!(
+            "keep them symbolic (`--symbolic {}`), or compare with other values (`--fix {}`)",
+            names.join(","),
+            others.join(",")
+        ),
+        Caller::Program => format!(
+            "keep them symbolic (`SearchOptions::symbolic`), or compare with other values \
+             (`SearchOptions::fixed`, such as {})",
+            others.join(", ").replace('=', " = ")
+        ),
+    };
     format!(
         "What is not lifted holds at these values, where the system may have more \
          symmetry than in general (special values, equal or in a rational ratio, can add \
-         integrals): for every \
-         value, keep them symbolic (`--symbolic {}`), or compare with other values \
-         (`--fix {}`).",
-        names.join(","),
-        other_values(&r.parameters, &names).join(",")
+         integrals): for every value, {how}."
     )
 }
 

@@ -1129,13 +1129,14 @@ pub fn text(s: &str) -> String {
 }
 
 /// Prose with formulas between backticks: the formulas become inline math, and a command line
-/// between backticks (an option, `--symbolic I1,I2`, or `superint …`) typewriter text, as the
-/// user types it.
+/// between backticks (an option, `--symbolic I1,I2`, or `superint …`) or the library's name of
+/// an option (`SearchOptions::fixed`) typewriter text, as the user types it.
 ///
 /// ```
 /// use superint::render::tex::markup;
 /// assert_eq!(markup("adds `p_θ²/(2I)` to H"), r"adds $p_{\theta }^{2}/(2I)$ to H");
 /// assert_eq!(markup("keep (`--fix I1=2`)"), r"keep (\texttt{-{}-fix I1=2})");
+/// assert_eq!(markup("(`SearchOptions::fixed`)"), r"(\texttt{SearchOptions::fixed})");
 /// ```
 pub fn markup(s: &str) -> String {
     markup_with(s, &Names::default())
@@ -1161,11 +1162,12 @@ pub fn markup_with(s: &str, names: &Names) -> String {
         .collect()
 }
 
-/// Whether a span between backticks is a command line, not a formula: an option (`--degree`,
-/// `--symbolic I1,I2`) or a command (`superint search`). In math mode `--` would be two minus
-/// signs, the space would be lost and `I1` would read `I_{1}`, a name no one can type.
+/// Whether a span between backticks is a command line or code, not a formula: an option
+/// (`--degree`, `--symbolic I1,I2`), a command (`superint search`) or a path of the library
+/// (`ClosureOptions::degree`). In math mode `--` would be two minus signs, the space would be
+/// lost and `I1` would read `I_{1}`, a name no one can type.
 fn is_command_line(span: &str) -> bool {
-    span.starts_with("--") || span.starts_with("superint ")
+    span.starts_with("--") || span.starts_with("superint ") || span.contains("::")
 }
 
 /// Where a statement's relation is: the byte offset of the first `=` or `≠` outside brackets

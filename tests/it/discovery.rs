@@ -3124,3 +3124,153 @@ fn a_degree_for_variables_the_system_lacks_is_refused() {
         String::from_utf8_lossy(&out.stderr)
     );
 }
+
+/// Renders a report as text without timings, its whitespace normalized.
+fn text_of(report: &superint::report::Report) -> String {
+    let options = superint::render::Options::reproducible();
+    normalize(&superint::render::render(
+        report,
+        superint::render::Format::Text,
+        &options,
+    ))
+}
+
+/// Whether `text` names an option of the command line (`--fix`) or a command
+/// (`superint search`).
+fn names_a_flag(text: &str) -> bool {
+    text.contains("--") || text.contains("superint ")
+}
+
+/// A program's search report advises the library's options (`SearchOptions::symbolic`,
+/// `SearchSpace::parameters_degree`), which it can set, not the command line's flags, which it
+/// has none of; built for the command line, it names the flags, as `superint search` prints.
+#[test]
+fn a_programs_search_report_names_the_librarys_options() {
+    use superint::discovery::{parse_symbolic, search_report, search_report_for};
+    use superint::system_file::{load_str, Caller};
+
+    // The Garnier system at a = b = 1 has x p_y − y p_x, which it loses for a ≠ b.
+    let garnier = load_str(
+        "garnier.toml",
+        "name = \"Garnier\"\nhamiltonian = \"(p_x^2 + p_y^2)/2 + (x^2 + y^2)^2 + a*x^2 + b*y^2\"\n\
+         [phase_space]\ncoordinates = [\"x\", \"y\"]\nparameters = [\"a\", \"b\"]\n",
+        &LimitsOverride::default(),
+    )
+    .expect("the file loads");
+    let options = SearchOptions::new(SearchSpace::new(2, 4, 0));
+    let (report, _) = search_report("Garnier", garnier.system(), &options).expect("searches");
+    let text = text_of(&report);
+    assert!(
+        text.contains(
+            "keep them symbolic (SearchOptions::symbolic), or compare with other values \
+             (SearchOptions::fixed, such as a = 2, b = 3)."
+        ),
+        "{text}"
+    );
+    assert!(!names_a_flag(&text), "{text}");
+    let latex = superint::render::render(
+        &report,
+        superint::render::Format::Latex,
+        &superint::render::Options::reproducible(),
+    );
+    assert!(
+        latex.contains(r"(\texttt{SearchOptions::symbolic})"),
+        "{latex}"
+    );
+    let (cli, _) = search_report_for("Garnier", garnier.system(), &options, Caller::CommandLine)
+        .expect("searches");
+    assert_eq!(cli.caller, Caller::CommandLine);
+    assert!(
+        text_of(&cli).contains(
+            "keep them symbolic (--symbolic a,b), or compare with other values (--fix a=2,b=3)"
+        ),
+        "{}",
+        text_of(&cli)
+    );
+
+    // H has degree 2 in a, b, past a space of degree 1 in them.
+    let oscillator = load_str(
+        "oscillator.toml",
+        "name = \"oscillator\"\nhamiltonian = \"(p_x^2 + p_y^2)/2 + (a^2*x^2 + b^2*y^2)/2\"\n\
+         [phase_space]\ncoordinates = [\"x\", \"y\"]\nparameters = [\"a\", \"b\"]\n",
+        &LimitsOverride::default(),
+    )
+    .expect("the file loads");
+    let system = oscillator.system();
+    let mut options = SearchOptions::new(SearchSpace::new(2, 2, 0).parameters_degree(1));
+    options.symbolic = parse_symbolic(system, "a,b").expect("parameters");
+    let (report, _) = search_report("the oscillator", system, &options).expect("searches");
+    let text = text_of(&report);
+    assert!(
+        text.contains(
+            "Note: H has degree 2 in a, b, past the space's 1 (SearchSpace::parameters_degree)"
+        ),
+        "{text}"
+    );
+    assert!(!names_a_flag(&text), "{text}");
+}
+
+/// A program's closure report that does not close advises `ClosureOptions::degree` (with
+/// parameters kept symbolic, `ClosureOptions::parameters_degree` and `ClosureOptions::symbolic`
+/// too) and `search_report`, not `--degree` and `superint search`.
+#[test]
+fn a_programs_closure_report_names_the_librarys_options() {
+    use brackets::closure::ClosureOptions;
+    use brackets::NamedFunction;
+    use superint::discovery::{closure_report, closure_report_for, parse_symbolic};
+    use superint::system_file::Caller;
+
+    // {L, G1} = −G2 is no polynomial of degree 1 in L and G1, both integrals.
+    let rotor = brackets::systems::harmonic_rotor();
+    let generators: Vec<NamedFunction> = ["L", "G1"]
+        .iter()
+        .map(|&n| NamedFunction::new(n, n, rotor.get(n).expect("defined").clone()))
+        .collect();
+    let options = ClosureOptions::new(1);
+    let (report, algebra) =
+        closure_report("the harmonic rotor", &rotor, &generators, &options).expect("computes");
+    assert!(!algebra.closes());
+    let text = text_of(&report);
+    assert!(
+        text.contains(
+            "A higher ClosureOptions::degree, or what discovery::search_report finds added to \
+             the generators, may close the table."
+        ),
+        "{text}"
+    );
+    assert!(!names_a_flag(&text), "{text}");
+    let (cli, _) = closure_report_for(
+        "the harmonic rotor",
+        &rotor,
+        &generators,
+        &options,
+        Caller::CommandLine,
+    )
+    .expect("computes");
+    assert!(
+        text_of(&cli).contains(
+            "A higher --degree, or what superint search finds added to the generators, may \
+             close the table."
+        ),
+        "{}",
+        text_of(&cli)
+    );
+
+    let mut options = ClosureOptions::new(1);
+    options.symbolic = parse_symbolic(&rotor, "omega").expect("a parameter");
+    let (report, _) =
+        closure_report("the harmonic rotor", &rotor, &generators, &options).expect("computes");
+    let text = text_of(&report);
+    assert!(
+        text.contains(
+            "A higher ClosureOptions::degree or ClosureOptions::parameters_degree, or what \
+             discovery::search_report finds added to the generators, may close the table;"
+        ),
+        "{text}"
+    );
+    assert!(
+        text.contains("leave that parameter out of ClosureOptions::symbolic, and it is fixed"),
+        "{text}"
+    );
+    assert!(!names_a_flag(&text), "{text}");
+}
