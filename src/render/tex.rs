@@ -294,12 +294,35 @@ fn is_prose_word(w: &str) -> bool {
     (lower && w.len() >= 3 && !FUNCTIONS.iter().any(|f| f.0 == w)) || STOPWORDS.contains(&w)
 }
 
-/// Appends a control word, followed by a space so that a letter after it cannot extend it.
+/// What ends a control word while a formula is translated: a space where a letter or a digit
+/// follows, which it would extend (`\omega t`), else nothing (`\omega^{2}`, `p_{\theta}`,
+/// `(M\omega)`, as the expression printer writes them; it was `\omega ^{2}`). [`resolve`] decides
+/// once the formula is written. A private-use character, which no input reaches `out` as: a
+/// character without a translation is written by its code point.
+const SEPARATOR: char = '\u{e000}';
+
+/// Appends a control word, followed by a [`SEPARATOR`] so that a letter after it cannot extend
+/// it.
 fn push_cmd(out: &mut String, cmd: &str) {
     out.push_str(cmd);
     if cmd.starts_with('\\') && cmd[1..].chars().all(|c| c.is_ascii_alphabetic()) {
-        out.push(' ');
+        out.push(SEPARATOR);
     }
+}
+
+/// Each [`SEPARATOR`] of a translated formula as a space where a letter or a digit follows it,
+/// else dropped.
+fn resolve(s: &str) -> String {
+    let mut out = String::with_capacity(s.len());
+    let mut chars = s.chars().peekable();
+    while let Some(c) = chars.next() {
+        match c {
+            SEPARATOR if chars.peek().is_some_and(char::is_ascii_alphanumeric) => out.push(' '),
+            SEPARATOR => {}
+            _ => out.push(c),
+        }
+    }
+    out
 }
 
 fn char_math(c: char) -> Option<String> {
@@ -333,7 +356,7 @@ fn char_math(c: char) -> Option<String> {
 /// ```
 /// use superint::render::tex::math;
 /// assert_eq!(math("{L, G1} = −G2"), r"\{L, G_{1}\} = -G_{2}");
-/// assert_eq!(math("ṗ_θ = 0"), r"\dot{p}_{\theta } = 0");
+/// assert_eq!(math("ṗ_θ = 0"), r"\dot{p}_{\theta} = 0");
 /// assert_eq!(math("K̄_{m,n} for all m"), r"\bar{K}_{m,n}\ \text{for all}\ m");
 /// assert_eq!(math("x中"), r"x\mbox{\texttt{U+4E2D}}");
 /// ```
@@ -353,7 +376,7 @@ pub fn math_with(s: &str, names: &Names) -> String {
 /// use superint::render::tex::sentence;
 /// assert_eq!(
 ///     sentence("so {A, H} = λ_A A for all m, n ≥ 0"),
-///     r"so $\{A, H\} = \lambda _{A} A$ for all $m, n \ge 0$"
+///     r"so $\{A, H\} = \lambda_{A} A$ for all $m, n \ge 0$"
 /// );
 /// ```
 pub fn sentence(s: &str) -> String {
@@ -551,7 +574,7 @@ impl<'a> Translation<'a> {
         while let Some(brace) = self.braces.pop() {
             self.out.push_str(if brace.group { "}" } else { "" });
         }
-        self.out.trim_end().to_string()
+        resolve(&self.out).trim_end().to_string()
     }
 
     /// A run of spaces: one space, or `\ ` beside prose, whose spaces math mode would drop.
@@ -563,6 +586,19 @@ impl<'a> Translation<'a> {
         }
         let before = self.k > 0 && self.prose[self.k - 1];
         let after = self.prose.get(self.k + 1) == Some(&true);
+        // `cos θ` is `\cos\theta`, as the expression printer writes it (`\cos a` keeps its
+        // space, which the separator after `\cos` writes).
+        let function = self.k > 0
+            && matches!(&self.toks[self.k - 1], Tok::Word(w, d)
+                if d.is_empty() && FUNCTIONS.iter().any(|f| f.0 == w && !f.1.ends_with('}')));
+        let letter = match &self.toks[self.k + 1] {
+            Tok::Char(c, None) => greek(*c).is_some() || matches!(c, 'ħ' | 'ℓ'),
+            Tok::Name(latex) => latex.starts_with('\\'),
+            _ => false,
+        };
+        if function && letter && !after {
+            return;
+        }
         if before || after {
             if self.out.ends_with(' ') {
                 self.out.pop();
@@ -609,7 +645,7 @@ impl<'a> Translation<'a> {
         let tail = latex.rsplit('\\').next().unwrap_or("");
         if latex.contains('\\') && !tail.is_empty() && tail.chars().all(|c| c.is_ascii_alphabetic())
         {
-            self.out.push(' ');
+            self.out.push(SEPARATOR);
         }
         let mut depth = 0i32;
         let mut sub = false;
@@ -797,7 +833,7 @@ impl<'a> Translation<'a> {
     /// Whether `out` ends where the `scripts` do, but for spaces: TeX reads none in math, so
     /// `x^{1} ^{2}` is a double script too.
     fn ends_at(&self, scripts: Scripts) -> bool {
-        scripts.end == self.out.trim_end_matches(' ').len()
+        scripts.end == self.out.trim_end_matches([' ', SEPARATOR]).len()
     }
 
     /// After a script (a superscript when `sup`) on a base that had the scripts `base`.
@@ -1134,7 +1170,7 @@ pub fn text(s: &str) -> String {
 ///
 /// ```
 /// use superint::render::tex::markup;
-/// assert_eq!(markup("adds `p_θ²/(2I)` to H"), r"adds $p_{\theta }^{2}/(2I)$ to H");
+/// assert_eq!(markup("adds `p_θ²/(2I)` to H"), r"adds $p_{\theta}^{2}/(2I)$ to H");
 /// assert_eq!(markup("keep (`--fix I1=2`)"), r"keep (\texttt{-{}-fix I1=2})");
 /// assert_eq!(markup("(`SearchOptions::fixed`)"), r"(\texttt{SearchOptions::fixed})");
 /// ```
@@ -1239,41 +1275,41 @@ mod tests {
             ("{L, G1} = −G2", r"\{L, G_{1}\} = -G_{2}"),
             (
                 "4G1² + G2² + ω²L² = (F1 − F2)²",
-                r"4G_{1}^{2} + G_{2}^{2} + \omega ^{2}L^{2} = (F_{1} - F_{2})^{2}",
+                r"4G_{1}^{2} + G_{2}^{2} + \omega^{2}L^{2} = (F_{1} - F_{2})^{2}",
             ),
             ("ẋ = p_x/M", r"\dot{x} = p_{x}/M"),
-            ("θ̇ = p_θ/I", r"\dot{\theta} = p_{\theta }/I"),
-            ("{Z̄, F1} = −iωZ̄", r"\{\bar{Z}, F_{1}\} = -i\omega \bar{Z}"),
-            ("e^{−inθ}", r"e^{-in\theta }"),
+            ("θ̇ = p_θ/I", r"\dot{\theta} = p_{\theta}/I"),
+            ("{Z̄, F1} = −iωZ̄", r"\{\bar{Z}, F_{1}\} = -i\omega\bar{Z}"),
+            ("e^{−inθ}", r"e^{-in\theta}"),
             ("G1'", "G_{1}'"),
             ("a_ij", "a_{ij}"),
-            ("(p_x_0/M) cos φ", r"(p_{x,0}/M) \cos \varphi"),
+            ("(p_x_0/M) cos φ", r"(p_{x,0}/M) \cos\varphi"),
             ("P_1_1, Q_12_3", "P_{1,1}, Q_{12,3}"),
             ("x_0^2", "x_{0}^{2}"),
             ("x₀", "x_{0}"),
             ("p_q₁ + p_q₁₂", "p_{q_{1}} + p_{q_{12}}"),
             ("ħ q", r"\hbar q"),
-            ("ω⁻¹²", r"\omega ^{-12}"),
-            ("e^{−inθ} for all", r"e^{-in\theta }\ \text{for all}"),
-            ("exp(−inθ)", r"\exp (-in\theta )"),
+            ("ω⁻¹²", r"\omega^{-12}"),
+            ("e^{−inθ} for all", r"e^{-in\theta}\ \text{for all}"),
+            ("exp(−inθ)", r"\exp(-in\theta)"),
             (
                 "Re(A_x⁵Ā_y³)",
                 r"\operatorname{Re}(A_{x}^{5}\bar{A}_{y}^{3})",
             ),
-            ("cos θ", r"\cos \theta"),
+            ("cos θ", r"\cos\theta"),
             // A Greek letter, ħ or ℓ in a script takes its subscript digits, as a word does.
-            ("{ω₁₂, p_ω₁₂} = 1", r"\{\omega _{12}, p_{\omega_{12}}\} = 1"),
+            ("{ω₁₂, p_ω₁₂} = 1", r"\{\omega_{12}, p_{\omega_{12}}\} = 1"),
             (
                 "p_ℓ₁ + p_ħ₁ + p_θ₁₂",
                 r"p_{\ell_{1}} + p_{\hbar_{1}} + p_{\theta_{12}}",
             ),
             // Names run together in a script are a product; a name that mixes Latin and
             // Greek letters is one where the system declares it (`Names`).
-            ("p_ωx + p_xω", r"p_{\omega }x + p_{x}\omega"),
+            ("p_ωx + p_xω", r"p_{\omega}x + p_{x}\omega"),
             // Digits after a Greek letter are its subscript, as after a word (`G1`).
             (
                 "{γ1, H} = M2 γ3 − 2c ω12",
-                r"\{\gamma _{1}, H\} = M_{2} \gamma _{3} - 2c \omega _{12}",
+                r"\{\gamma_{1}, H\} = M_{2} \gamma_{3} - 2c \omega_{12}",
             ),
             ("x_₁ + x_₁₂y", "x_{1} + x_{12y}"),
             // A family named with a subscript of its own: its indices join it after `;`.
@@ -1293,13 +1329,33 @@ mod tests {
         }
     }
 
+    /// A control word takes a space only where a letter or a digit follows it, which would
+    /// extend it: a statement writes `M\omega^{2}` and `\cos^{2}\theta` as the expressions do
+    /// (it wrote `M\omega ^{2}`, `\cos ^{2}\theta`, `p_{\theta }` and `(M\omega )`).
+    #[test]
+    fn a_control_word_is_spaced_only_before_a_letter() {
+        for (u, t) in [
+            ("Mω²(x² + y²)/2", r"M\omega^{2}(x^{2} + y^{2})/2"),
+            ("cos²θ + sin θ", r"\cos^{2}\theta + \sin\theta"),
+            ("p_θ/(Mω)", r"p_{\theta}/(M\omega)"),
+            (
+                "cos ωt + ω x + ω + 1",
+                r"\cos\omega t + \omega x + \omega + 1",
+            ),
+            ("cos a + ħ2", r"\cos a + \hbar_{2}"),
+            ("ω is α", r"\omega\ \text{is}\ \alpha"),
+        ] {
+            assert_eq!(math(u), t, "{u}");
+        }
+    }
+
     /// The paper's C06: `p_θt` is the product `p_θ t` (it was `p_{\theta t}`, a momentum of
     /// `θt`).
     #[test]
     fn names_run_together_after_a_subscript_are_a_product() {
         assert_eq!(
             math("θ(t) = θ₀ + p_θt/I"),
-            r"\theta (t) = \theta _{0} + p_{\theta }t/I"
+            r"\theta(t) = \theta_{0} + p_{\theta}t/I"
         );
         assert_eq!(math("p_θ₁t + p_xω"), r"p_{\theta_{1}}t + p_{x}\omega");
         // A Latin word in a subscript is one name, as before (`a_ij`).
@@ -1354,7 +1410,7 @@ mod tests {
             ("ωxx", r"\mathrm{{\omega}x}x"),
             ("G1'² + s x", "G_{1}'^{2} + s x"),
             ("x is ss", r"x\ \text{is}\ ss"),
-            ("cos ω", r"\cos \omega"),
+            ("cos ω", r"\cos\omega"),
         ] {
             assert_eq!(math_with(u, &names), t, "{u}");
         }
@@ -1398,16 +1454,16 @@ mod tests {
     fn a_formula_latex_would_refuse_is_written_so_that_it_compiles() {
         assert_eq!(math("x²^1"), "x^{2}{}^{1}");
         assert_eq!(math("x^a_b²"), "x^{a}_{b}{}^{2}");
-        assert_eq!(math("G¹ ^ℓ"), r"G^{1} {}^{\ell }");
+        assert_eq!(math("G¹ ^ℓ"), r"G^{1} {}^{\ell}");
         assert_eq!(math("x²₁_a¹"), "x^{2}_{1;a}{}^{1}");
         assert_eq!(math("x⁻'"), "x^{-}{}'");
         assert_eq!(math("x^a '"), "x^{a} {}'");
         assert_eq!(math("x_a'_b"), "x_{a}'{}_{b}");
-        assert_eq!(math("s2^ω_c"), r"s_{2}^{\omega }{}_{c}");
+        assert_eq!(math("s2^ω_c"), r"s_{2}^{\omega}{}_{c}");
         assert_eq!(math("G'₁¹"), "G'_{1}{}^{1}");
         assert_eq!(math("Z²' ²"), "Z^{2}{}' {}^{2}");
         assert_eq!(math("x'' + x'_1"), "x'' + x'_{1}");
-        assert_eq!(math("ħ_"), r"\hbar _{}");
+        assert_eq!(math("ħ_"), r"\hbar_{}");
         assert_eq!(math("x = y^"), "x = y^{}");
         assert_eq!(markup("a ` ` b"), "a  b");
         // A group adds to the scripts its base had before it.
@@ -1418,7 +1474,7 @@ mod tests {
         // What the paper writes is as it was.
         assert_eq!(math("G1'²"), "G_{1}'^{2}");
         assert_eq!(math("K₁_{1,2}"), "K_{1;1,2}");
-        assert_eq!(math("p_θ²"), r"p_{\theta }^{2}");
+        assert_eq!(math("p_θ²"), r"p_{\theta}^{2}");
     }
 
     #[test]

@@ -317,7 +317,7 @@ fn latex_writes_names_exponents_and_command_lines_as_they_read() {
     let check = run(&["check", file, "--format", "latex", "--no-timings"], 0);
     for expected in [
         r"\{\alpha_{1}, H\} &= p_{x}",
-        r"\{\beta , \mathrm{Lambda3x}\} &= -6x^{2} p_{x}",
+        r"\{\beta, \mathrm{Lambda3x}\} &= -6x^{2} p_{x}",
         r"\{\mathrm{{\omega}x}, p_{{\omega}x}\} &= 1",
         r"\mathrm{ln} x^{1 + 1}x^{2^{3}} &= \mathrm{ln} x^{10}",
         r"formulas $x^{-1}$, $x^{n+1}$, $e^{i\theta}$, $x^{2^{3}}$",
@@ -342,7 +342,7 @@ fn latex_writes_names_exponents_and_command_lines_as_they_read() {
     );
     let paper = run(&["--format", "latex", "--no-timings"], 0);
     assert!(
-        paper.contains(r"\theta (t) &= \theta _{0} + p_{\theta }t/I"),
+        paper.contains(r"\theta(t) &= \theta_{0} + p_{\theta}t/I"),
         "{paper}"
     );
     let search = run(
