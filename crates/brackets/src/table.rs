@@ -244,14 +244,24 @@ impl Entry {
                     };
                     let mul = if style == Style::Ascii { "*" } else { " " };
                     // A term's denominator goes last, `D/M` and `3ω² D/2`: `1/M D` is read back
-                    // as ambiguous, and writes a division before a factor.
+                    // as ambiguous, and writes a division before a factor. In LaTeX the name
+                    // joins the numerator, `\frac{3 D}{M}`, as the expression printer writes
+                    // the same bracket in the functions (it was `\frac{3}{M} D`).
                     let fraction = match style {
                         Style::Latex => None,
                         _ => body.rsplit_once('/').filter(|_| c.len() == 1),
                     };
+                    let latex_fraction = match style {
+                        Style::Latex if c.len() == 1 => split_frac(&body),
+                        _ => None,
+                    };
                     let term = match (body.as_str(), fraction) {
                         ("1", _) => name,
                         _ if c.len() > 1 => format!("({body}){mul}{name}"),
+                        _ if let Some((num, den)) = latex_fraction => match num {
+                            "1" => format!(r"\frac{{{name}}}{{{den}}}"),
+                            _ => format!(r"\frac{{{num} {name}}}{{{den}}}"),
+                        },
                         (_, Some(("1", den))) => format!("{name}/{den}"),
                         (_, Some((num, den))) => format!("{num}{mul}{name}/{den}"),
                         _ => format!("{body}{mul}{name}"),
@@ -268,6 +278,40 @@ impl Entry {
             }
         }
     }
+}
+
+/// The numerator and the denominator of LaTeX that is one fraction whole, `\frac{3}{2 M}`.
+fn split_frac(latex: &str) -> Option<(&str, &str)> {
+    let rest = latex.strip_prefix(r"\frac{")?;
+    // The brace that closes the numerator, the rest being `{denominator}`.
+    let mut depth = 1usize;
+    let mut escaped = false;
+    for (k, c) in rest.char_indices() {
+        match c {
+            _ if escaped => escaped = false,
+            '\\' => escaped = true,
+            '{' => depth += 1,
+            '}' if depth > 1 => depth -= 1,
+            '}' => {
+                let denominator = rest[k + 1..].strip_prefix('{')?.strip_suffix('}')?;
+                // The denominator is one group: its braces balance inside.
+                let mut d = 0i32;
+                for c in denominator.chars() {
+                    d += match c {
+                        '{' => 1,
+                        '}' => -1,
+                        _ => 0,
+                    };
+                    if d < 0 {
+                        return None;
+                    }
+                }
+                return (d == 0).then_some((&rest[..k], denominator));
+            }
+            _ => {}
+        }
+    }
+    None
 }
 
 /// `G1'` → `G_{1}'`, `Z̄` → `\bar{Z}`, `L` → `L`, `P'_{1,1}` → `P'_{1,1}`: the name as
@@ -987,7 +1031,10 @@ mod tests {
         assert_eq!(cell(1, 0, Style::Unicode), "−D/M");
         assert_eq!(cell(3, 1, Style::Unicode), "3ω² D/M");
         assert_eq!(cell(3, 1, Style::Ascii), "3*omega^2*D/M");
-        assert_eq!(cell(0, 1, Style::Latex), r"\frac{1}{M} D");
+        assert_eq!(cell(0, 1, Style::Latex), r"\frac{D}{M}");
+        // The name joins the numerator, as the printer writes the bracket in the functions.
+        assert_eq!(cell(1, 0, Style::Latex), r"-\frac{D}{M}");
+        assert_eq!(cell(3, 1, Style::Latex), r"\frac{3 \omega^{2} D}{M}");
         // Each reads back as the bracket it stands for.
         for (a, b) in [(0, 1), (1, 0), (3, 1)] {
             let bracket = rotor
