@@ -245,7 +245,8 @@ pub struct ClosureFacts {
 /// Displayed equations.
 #[derive(Clone, Debug)]
 pub struct Equations {
-    /// What the equations are (`Hamilton's equations`), possibly empty.
+    /// What the equations are (`Hamilton's equations`), possibly empty: prose, formulas
+    /// between backticks (`` at `p_θ = Iω` ``).
     pub caption: String,
     /// The lines.
     pub lines: Vec<Equation>,

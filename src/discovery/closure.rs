@@ -403,7 +403,7 @@ fn outside_entries(
     // With parameters kept symbolic, the coefficients' degree in them bounds the search too.
     let coefficients = match symbolic {
         true => format!(
-            " with coefficients of degree `≤ {}` in {}",
+            " with coefficients of degree `≤ {}` in `{}`",
             options.parameters_degree,
             parameter_names(system.vars(), &options.symbolic)
         ),

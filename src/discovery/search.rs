@@ -611,7 +611,7 @@ impl Shared {
     fn dimensions(&self, r: &SearchResult, vars: &Vars) -> Vec<Entry> {
         let over = match &self.symbolic {
             // With symbolic parameters the space is over Q, and `M·I` counts apart from `I`.
-            Some(_) => " over Q (a parameter's multiple of an integral counts apart from it)",
+            Some(_) => " over `Q` (a parameter's multiple of an integral counts apart from it)",
             None => "",
         };
         // By degree in the momenta, unless the space has Poisson variables and no momenta;
@@ -743,7 +743,7 @@ impl Shared {
         Entry::Equations(Equations {
             caption: match (&r.new, &self.symbolic) {
                 (Some(_), _) => "New integrals".into(),
-                (None, Some(names)) => format!("Generators over the polynomials in {names}"),
+                (None, Some(names)) => format!("Generators over the polynomials in `{names}`"),
                 (None, None) => "A basis of the integrals".into(),
             },
             lines: self
@@ -798,7 +798,7 @@ impl Shared {
         let theta = r.vars.variable(*theta).unicode();
         Some(Entry::Equations(Equations {
             caption: format!(
-                "Those of trigonometric order {k} > 0 as {} = Re({} e^{{−i{k}{theta}}})",
+                "Those of trigonometric order `{k} > 0` as `{} = Re({} e^{{−i{k}{theta}}})`",
                 self.letter, self.complex
             ),
             lines,

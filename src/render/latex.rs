@@ -320,7 +320,7 @@ fn entry(out: &mut Vec<String>, e: &Entry, names: &Names) {
 
 fn equations(out: &mut Vec<String>, eq: &Equations, names: &Names) {
     if !eq.caption.is_empty() {
-        out.push(format!(r"\noindent {}:", text(&eq.caption)));
+        out.push(format!(r"\noindent {}:", markup_with(&eq.caption, names)));
     }
     let mut rows: Vec<String> = eq
         .lines

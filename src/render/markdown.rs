@@ -80,7 +80,7 @@ fn entry(e: &Entry) -> String {
 fn equations(eq: &Equations) -> String {
     let mut lines = Vec::new();
     if !eq.caption.is_empty() {
-        lines.push(format!("{}:", eq.caption));
+        lines.push(format!("{}:", prose(&eq.caption)));
         lines.push(String::new());
     }
     for l in &eq.lines {

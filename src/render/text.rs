@@ -245,7 +245,7 @@ const PARALLEL_TERMS: usize = 10_000;
 
 fn equations(out: &mut Vec<String>, eq: &Equations) {
     if !eq.caption.is_empty() {
-        out.push(format!("{}:", eq.caption));
+        out.push(format!("{}:", plain(&eq.caption)));
     }
     let lw = eq.lines.iter().map(|l| width(&l.lhs)).max().unwrap_or(0);
     let indent = " ".repeat(4 + lw + 3);

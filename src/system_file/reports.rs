@@ -339,7 +339,7 @@ fn equations_at(
         })
         .collect::<Result<_, FileError>>()?;
     Ok(Equations {
-        caption: condition.map_or_else(String::new, |c| format!("at {}", c.text)),
+        caption: condition.map_or_else(String::new, |c| format!("at `{}`", c.text)),
         lines,
     })
 }

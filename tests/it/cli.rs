@@ -369,6 +369,71 @@ fn latex_writes_names_exponents_and_command_lines_as_they_read() {
     }
 }
 
+/// A caption and a sentence that hold formulas set them as formulas: a condition's caption
+/// (`at p\_$\theta$ = I$\omega$` was text with the Greek letters alone in math), a search's
+/// complex form (`e\^{}\{$-$ik$\theta$\}`), the parameters a closure keeps symbolic (`in M,
+/// $\alpha$`), each a code span in Markdown and the text as it was.
+#[test]
+fn captions_and_prose_set_their_formulas_as_formulas() {
+    let when = ["--when", "p_theta = I*omega", "--no-timings"];
+    let expand = |format: &str| {
+        let mut args = vec![
+            "expand",
+            "systems/harmonic-rotor.toml",
+            "G1",
+            "--format",
+            format,
+        ];
+        args.extend(when);
+        run(&args, 0)
+    };
+    assert!(expand("latex").contains(r"\noindent at $p_{\theta} = I\omega$:"));
+    assert!(expand("markdown").contains("\nat `p_θ = Iω`:\n"));
+    assert!(expand("text").contains("\nat p_θ = Iω:\n"));
+    let search = run(
+        &[
+            "search",
+            "--system",
+            "harmonic",
+            "--when",
+            "p_theta = 2*I*omega",
+            "--format",
+            "latex",
+            "--no-timings",
+        ],
+        0,
+    );
+    assert!(
+        search.contains(
+            r"Those of trigonometric order $k > 0$ as $I = \operatorname{Re}(A e^{-ik\theta})$:"
+        ),
+        "{search}"
+    );
+    let closure = run(
+        &[
+            "closure",
+            "systems/smorodinsky-winternitz-i.toml",
+            "H",
+            "Hx",
+            "X",
+            "--define",
+            "C={Hx, X}",
+            "--degree",
+            "3",
+            "--symbolic",
+            "M,alpha,beta,gamma",
+            "--format",
+            "latex",
+            "--no-timings",
+        ],
+        0,
+    );
+    assert!(
+        closure.contains(r"of degree $\le 2$ in $M, \alpha, \beta, \gamma$; here they are"),
+        "{closure}"
+    );
+}
+
 /// A system whose names LaTeX writes only with care: see [`cli_latex_of_every_command_compiles`].
 const LATEX_NAMES: &str = r#"name = "LaTeX names"
 hamiltonian = "(p_a + p_b)^2/2 + p_ω₁₂^2/2 + ω₁₂^2/2 + p_ℓ₁*ħ₁ + p_θ₁₂*θ₁₂ + ωx*x₁y"

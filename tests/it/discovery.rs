@@ -1681,6 +1681,13 @@ fn an_unlifted_search_says_how_to_see_every_value() {
         ),
         "{general}"
     );
+    // Q is a formula here as in the space's sentence (`over $Q$`), not text beside it.
+    let latex = search(&["--symbolic", "a,b", "--format", "latex"]);
+    assert!(latex.contains("linear equations over $Q$"), "{latex}");
+    assert!(
+        latex.contains("integrals over $Q$ (a parameter's multiple"),
+        "{latex}"
+    );
 }
 
 /// A generator written as an expression is sent to `--define`, with a name the system does not
