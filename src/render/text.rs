@@ -515,10 +515,16 @@ pub(crate) fn point(r: &RankResult, style: Style) -> Vec<String> {
             if r.vars.variable(*v).kind() == VarKind::Angle {
                 let [c, s] = [&value.re, &value.im]
                     .map(|q| trigpoly::render_number(&GaussianRational::from(q.clone()), style));
+                // `\cos\theta`, as the expression printer writes it; `\cos a`.
+                let name = name(*v);
+                let gap = match name.starts_with(|c: char| c.is_ascii_alphanumeric()) {
+                    true => " ",
+                    false => "",
+                };
                 match style {
-                    Style::Latex => format!(r"\cos {0} = {c}, \sin {0} = {s}", name(*v)),
-                    Style::Ascii => format!("cos({0}) = {c}, sin({0}) = {s}", name(*v)),
-                    Style::Unicode => format!("cos {0} = {c}, sin {0} = {s}", name(*v)),
+                    Style::Latex => format!(r"\cos{gap}{name} = {c}, \sin{gap}{name} = {s}"),
+                    Style::Ascii => format!("cos({name}) = {c}, sin({name}) = {s}"),
+                    Style::Unicode => format!("cos {name} = {c}, sin {name} = {s}"),
                 }
             } else {
                 format!("{} = {}", name(*v), trigpoly::render_number(value, style))

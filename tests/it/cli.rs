@@ -434,6 +434,29 @@ fn captions_and_prose_set_their_formulas_as_formulas() {
     );
 }
 
+/// A rank certificate's point writes an angle's cosine and sine as the expressions do,
+/// `\cos\varphi` (it was `\cos \varphi`).
+#[test]
+fn a_rank_point_writes_cos_as_expressions_do() {
+    let rank = run(
+        &[
+            "rank",
+            "systems/kepler.toml",
+            "H",
+            "L",
+            "Ax",
+            "--format",
+            "latex",
+            "--no-timings",
+        ],
+        0,
+    );
+    assert!(
+        rank.contains(r"$\cos\varphi = \frac{5}{13}, \sin\varphi = \frac{12}{13}$"),
+        "{rank}"
+    );
+}
+
 /// A system whose names LaTeX writes only with care: see [`cli_latex_of_every_command_compiles`].
 const LATEX_NAMES: &str = r#"name = "LaTeX names"
 hamiltonian = "(p_a + p_b)^2/2 + p_ω₁₂^2/2 + ω₁₂^2/2 + p_ℓ₁*ħ₁ + p_θ₁₂*θ₁₂ + ωx*x₁y"
