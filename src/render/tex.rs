@@ -683,6 +683,14 @@ impl<'a> Translation<'a> {
                 self.k += taken;
             }
             '_' | '^' => self.script(c),
+            // A root of a group in parentheses, as the echo writes a radicand, is `\sqrt{…}`
+            // (it was `\surd (x^{2} + y^{2})`); a lone `√` stays `\surd`.
+            '√' if let Some((radicand, taken)) =
+                self.group(self.k + 1).filter(|_| accent.is_none()) =>
+            {
+                self.out.push_str(&format!(r"\sqrt{{{radicand}}}"));
+                self.k += taken;
+            }
             // A prime is a superscript to TeX: after one it starts from an empty base, and a
             // subscript after it counts the base's (`x_a'_b` is a double subscript). A
             // superscript right after it joins it (`G1'²`).
@@ -931,26 +939,34 @@ impl<'a> Translation<'a> {
         }
     }
 
+    /// A group in parentheses that opens at the token `at`, translated on its own without
+    /// them, and how many tokens it takes; `None` where none opens or it does not close.
+    fn group(&self, at: usize) -> Option<(String, usize)> {
+        let toks = self.toks;
+        if toks.get(at) != Some(&Tok::Char('(', None)) {
+            return None;
+        }
+        let mut depth = 0usize;
+        for (k, t) in toks.iter().enumerate().skip(at) {
+            match t {
+                Tok::Char('(', None) => depth += 1,
+                Tok::Char(')', None) if depth == 1 => {
+                    let inner = Translation::new(&toks[at + 1..k], &self.prose[at + 1..k]);
+                    return Some((inner.run(), k + 1 - at));
+                }
+                Tok::Char(')', None) => depth -= 1,
+                _ => {}
+            }
+        }
+        None
+    }
+
     /// One piece of an exponent at the token `at`: a group in parentheses, a signed piece, or
     /// what an unbraced script takes ([`script_piece`]).
     fn exponent_piece(&self, at: usize) -> Option<(String, usize)> {
         let toks = self.toks;
         match toks.get(at)? {
-            Tok::Char('(', None) => {
-                let mut depth = 0usize;
-                for (k, t) in toks.iter().enumerate().skip(at) {
-                    match t {
-                        Tok::Char('(', None) => depth += 1,
-                        Tok::Char(')', None) if depth == 1 => {
-                            let inner = Translation::new(&toks[at + 1..k], &self.prose[at + 1..k]);
-                            return Some((inner.run(), k + 1 - at));
-                        }
-                        Tok::Char(')', None) => depth -= 1,
-                        _ => {}
-                    }
-                }
-                None
-            }
+            Tok::Char('(', None) => self.group(at),
             Tok::Char('-' | '−', None) => {
                 let (piece, taken) = self.exponent_piece(at + 1)?;
                 Some((format!("-{piece}"), taken + 1))
@@ -1349,6 +1365,16 @@ mod tests {
         }
     }
 
+    /// A root of a group in parentheses, as the echo writes a radicand (`r = √(x² + y²)`), is
+    /// `\sqrt{…}`; it was `\surd (x^{2} + y^{2})`, a sign before parentheses.
+    #[test]
+    fn a_root_of_a_group_is_sqrt() {
+        assert_eq!(math("r = √(x² + y²)"), r"r = \sqrt{x^{2} + y^{2}}");
+        assert_eq!(math("√((x − a)² + y²)/2"), r"\sqrt{(x - a)^{2} + y^{2}}/2");
+        assert_eq!(math("√2 + √(x"), r"\surd 2 + \surd(x");
+        assert!(balanced(&math("√(√(x)")));
+    }
+
     /// The paper's C06: `p_θt` is the product `p_θ t` (it was `p_{\theta t}`, a momentum of
     /// `θt`).
     #[test]
@@ -1502,7 +1528,7 @@ mod tests {
     const NOTATION: &[char] = &[
         'x', 'p', 'G', '1', '2', ' ', '_', '^', '{', '}', '(', ')', '/', '\'', 'ω', 'θ', 'ħ', 'ℓ',
         '²', '⁻', '¹', '₁', '₂', '\u{304}', '\u{307}', '\u{302}', '−', '=', ',', 'Z', '\\', 'a',
-        'c', 'o', 's', 'e', 'i', 'n',
+        'c', 'o', 's', 'e', 'i', 'n', '√',
     ];
 
     proptest::proptest! {
