@@ -389,9 +389,17 @@ pub fn sentence(s: &str) -> String {
     let is_number = |w: &str| !w.is_empty() && w.chars().all(|c| c.is_ascii_digit() || c == '.');
     let mut out: Vec<String> = Vec::new();
     let mut run: Vec<&str> = Vec::new();
+    // The punctuation that ends a formula's run is the sentence's, after the `$`: `for all
+    // $m, n \ge 0$, from` (it was `$m, n \ge 0,$`).
     let flush = |run: &mut Vec<&str>, out: &mut Vec<String>| {
         if !run.is_empty() {
-            out.push(format!("${}$", math(&run.join(" "))));
+            let joined = run.join(" ");
+            let formula = joined.trim_end_matches([',', '.', ';', ':']);
+            let stop = &joined[formula.len()..];
+            match formula.is_empty() {
+                true => out.push(text(&joined)),
+                false => out.push(format!("${}${}", math(formula), text(stop))),
+            }
             run.clear();
         }
     };
@@ -1254,6 +1262,21 @@ mod tests {
             "all as expected ($0.00$ s)"
         );
         assert_eq!(sentence("so (x + y)² = z"), "so $(x + y)^{2} = z$");
+    }
+
+    /// The punctuation after a formula is the sentence's, outside the math: `$m, n \ge 0$,`
+    /// (it was `$m, n \ge 0,$` and `$m, n \ge 0 (K = Z^{m}):$`).
+    #[test]
+    fn sentence_punctuation_after_a_formula_is_text() {
+        assert_eq!(
+            sentence("for all m, n ≥ 0, from the ladder Z:"),
+            r"for all $m, n \ge 0$, from the ladder $Z$:"
+        );
+        assert_eq!(
+            sentence("for all m ≥ 0 (K = Z^m): conserved"),
+            r"for all $m \ge 0 (K = Z^{m})$: conserved"
+        );
+        assert_eq!(sentence("is x², so"), r"is $x^{2}$, so");
     }
 
     fn balanced(s: &str) -> bool {
