@@ -488,7 +488,7 @@ fn rank(out: &mut Vec<String>, r: &RankResult, names: &Names) {
     out.push(format!(
         r"\item $\le {}$: {}",
         c.rank,
-        text(&upper_bound(r))
+        markup(&upper_bound(r))
     ));
     out.push(r"\end{itemize}".into());
 }

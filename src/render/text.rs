@@ -539,7 +539,8 @@ fn there_are(n: usize, noun: &str) -> String {
     format!("there {verb} {}", counted(n, noun))
 }
 
-/// Why the rank is at most the certified one, in words.
+/// Why the rank is at most the certified one, in words, the size of a minor between backticks
+/// (a formula: `$4 \times 4$` in LaTeX, which set `4 $\times$ 4`).
 pub(crate) fn upper_bound(r: &RankResult) -> String {
     let k = r.certificate.rank;
     match &r.certificate.upper {
@@ -549,17 +550,17 @@ pub(crate) fn upper_bound(r: &RankResult) -> String {
         UpperBound::Size => there_are(r.coordinates.len(), "coordinate"),
         // With no minor above, the bordering minors are every entry of the Jacobian.
         UpperBound::VanishingMinors { count } if k == 0 => format!(
-            "every 1 × 1 minor ({}) vanishes identically",
+            "every `1 × 1` minor ({}) vanishes identically",
             counted(*count, "minor")
         ),
         // Kronecker's bordered-minor theorem: the minors one larger that contain the nonzero
         // one all vanish, so every minor one larger does.
         UpperBound::VanishingMinors { count: 1 } => format!(
-            "every {0} × {0} minor vanishes identically, as the one bordering the minor above does",
+            "every `{0} × {0}` minor vanishes identically, as the one bordering the minor above does",
             k + 1
         ),
         UpperBound::VanishingMinors { count } => format!(
-            "every {0} × {0} minor vanishes identically, as the {1} bordering the minor above do",
+            "every `{0} × {0}` minor vanishes identically, as the {1} bordering the minor above do",
             k + 1,
             count
         ),
@@ -573,7 +574,7 @@ fn rank(out: &mut Vec<String>, r: &RankResult) {
     let cols: Vec<&str> = r.minor_coordinates().iter().map(|v| v.unicode()).collect();
     if c.rank == 0 {
         // Every function has a zero gradient: no minor to show.
-        out.push(format!("      ≤ 0: {}", upper_bound(r)));
+        out.push(format!("      ≤ 0: {}", plain(&upper_bound(r))));
         return;
     }
     out.extend(wrap(
@@ -589,7 +590,7 @@ fn rank(out: &mut Vec<String>, r: &RankResult) {
     ));
     out.extend(wrap_items("        ", &point(r, Style::Unicode), WRAP));
     out.extend(wrap(
-        &format!("      ≤ {}: {}", c.rank, upper_bound(r)),
+        &format!("      ≤ {}: {}", c.rank, plain(&upper_bound(r))),
         WRAP,
         "        ",
     ));

@@ -457,6 +457,29 @@ fn a_rank_point_writes_cos_as_expressions_do() {
     );
 }
 
+/// The size of the minors that bound a rank is a formula: `$4 \times 4$` in LaTeX (it was
+/// `4 $\times$ 4`), a code span in Markdown, and the text as it was.
+#[test]
+fn a_rank_bounds_minors_of_a_size_written_as_a_formula() {
+    let rank = |format: &str| {
+        let args = [
+            "rank",
+            "systems/kepler.toml",
+            "H",
+            "L",
+            "Ax",
+            "Ay",
+            "--format",
+            format,
+        ];
+        run(&args, 0)
+    };
+    let bound = "minor vanishes identically, as the one bordering the minor above does";
+    assert!(rank("latex").contains(&format!(r"every $4 \times 4$ {bound}")));
+    assert!(rank("markdown").contains(&format!("every `4 × 4` {bound}")));
+    assert!(rank("text").contains(&format!("every 4 × 4 {bound}")));
+}
+
 /// A system whose names LaTeX writes only with care: see [`cli_latex_of_every_command_compiles`].
 const LATEX_NAMES: &str = r#"name = "LaTeX names"
 hamiltonian = "(p_a + p_b)^2/2 + p_ω₁₂^2/2 + ω₁₂^2/2 + p_ℓ₁*ħ₁ + p_θ₁₂*θ₁₂ + ωx*x₁y"
