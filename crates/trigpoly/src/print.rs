@@ -534,13 +534,43 @@ fn write_term(
         denominator.next(out, false);
         write_display(out, format_args!("{den_int}"));
     }
-    variables(out, &mut denominator, false);
+    // A denominator that is one atom to the first power needs no parentheses of its own in
+    // LaTeX, where the fraction sets it apart: `\frac{1}{x - y}` (it was `\frac{1}{(x - y)}`).
+    let mut below = names.order.iter().filter(|&&j| exps[j] < 0);
+    let lone = match (below.next(), below.next()) {
+        (Some(&j), None) if style == Style::Latex && den_int.is_one() && exps[j] == -1 => {
+            unparenthesized(&names.names[j])
+        }
+        _ => None,
+    };
+    match lone {
+        Some(bare) => out.push_str(bare),
+        None => variables(out, &mut denominator, false),
+    }
     match style {
         Style::Latex if frac => out.push('}'),
         Style::Latex => out.push_str(r"\right)"),
         _ if denominators > 1 => out.push(')'),
         _ => {}
     }
+}
+
+/// `name` without the parentheses that enclose it whole, `(x - y)` → `x - y`; `None` for a
+/// name that they do not (`(a)(b)`, `x`).
+fn unparenthesized(name: &str) -> Option<&str> {
+    let inner = name.strip_prefix('(')?.strip_suffix(')')?;
+    let mut depth = 0i32;
+    for c in inner.chars() {
+        depth += match c {
+            '(' => 1,
+            ')' => -1,
+            _ => 0,
+        };
+        if depth < 0 {
+            return None;
+        }
+    }
+    (depth == 0).then_some(inner)
 }
 
 /// `(negative, |numerator|, denominator, general complex text)` of a coefficient, the two

@@ -776,6 +776,13 @@ mod tests {
             r"\left(x y + x + y + z + 1\right) / \left((x - y) (x - z)^{3}\right)"
         );
         assert_eq!(e(&g.to_ascii()), g);
+        // One atom to the first power is set apart by the fraction alone: `\frac{1}{x - y}`
+        // (it was `\frac{1}{(x - y)}`); a power or a product keeps its parentheses.
+        assert_eq!(e("1/(x - y)").to_latex(), r"\frac{1}{x - y}");
+        assert_eq!(e("x/(x - y)").to_latex(), r"\frac{x}{x - y}");
+        assert_eq!(e("2*x/(x - y)").to_latex(), r"\frac{2 x}{x - y}");
+        assert_eq!(e("1/(2*(x - y))").to_latex(), r"\frac{1}{2 (x - y)}");
+        assert_eq!(e("1/(x*(x - y))").to_latex(), r"\frac{1}{x (x - y)}");
         // Terms over different denominators print term by term.
         assert_eq!(
             e("1/(x - y) + 1/(x - z)").to_string(),
