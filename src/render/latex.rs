@@ -417,7 +417,12 @@ fn tower(out: &mut Vec<String>, t: &TowerResult, names: &Names) {
 }
 
 fn proof(out: &mut Vec<String>, p: &ProofResult, names: &Names) {
-    let math = |s: &str| math_with(s, names);
+    // Two spaces set a formula's parenthetical apart, `e^{−iθ}  (Ω = p_θ/I)`: a `\quad`, where
+    // one space read as a product, `e^{-i\theta} (\Omega = p_{\theta}/I)`.
+    let math = |s: &str| {
+        let parts: Vec<String> = s.split("  ").map(|part| math_with(part, names)).collect();
+        parts.join(r"\quad ")
+    };
     out.push(format!(r"\paragraph{{Proof}} {}:", sentence(&p.title)));
     out.push(r"\begin{enumerate}".into());
     let mark = |ok: bool| if ok { "holds" } else { "FAILS" };

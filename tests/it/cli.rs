@@ -480,6 +480,31 @@ fn a_rank_bounds_minors_of_a_size_written_as_a_formula() {
     assert!(rank("text").contains(&format!("every 4 × 4 {bound}")));
 }
 
+/// A proof's fact sets its parenthetical apart by a `\quad`, as the text does by two spaces
+/// (`-i\Omega e^{-i\theta} (\Omega = p_{\theta}/I)` read as a product); a sentence's
+/// punctuation follows its formula (`$1 \le m, n \le 2,$` was inside it).
+#[test]
+fn a_proofs_parenthetical_and_punctuation_read_as_text_does() {
+    let tower = run(
+        &["tower", "--max", "2", "--format", "latex", "--no-timings"],
+        0,
+    );
+    assert!(
+        tower.contains(
+            r"$\{e^{-i\theta}, H\} = -i\Omega e^{-i\theta}\quad (\Omega = p_{\theta}/I)$"
+        ),
+        "{tower}"
+    );
+    assert!(
+        tower.contains(r"for all $m, n \ge 0$, from the ladder function $Z$:"),
+        "{tower}"
+    );
+    assert!(
+        tower.contains(r"checked for $1 \le m, n \le 2$, all hold"),
+        "{tower}"
+    );
+}
+
 /// A system whose names LaTeX writes only with care: see [`cli_latex_of_every_command_compiles`].
 const LATEX_NAMES: &str = r#"name = "LaTeX names"
 hamiltonian = "(p_a + p_b)^2/2 + p_ω₁₂^2/2 + ω₁₂^2/2 + p_ℓ₁*ħ₁ + p_θ₁₂*θ₁₂ + ωx*x₁y"
