@@ -420,7 +420,18 @@ pub fn sentence(s: &str) -> String {
         } else if (open.is_empty() && !close.contains(')'))
             || !(is_prose(core) || unit || is_number(core))
         {
-            // Parentheses around formulas stay in the formula: `(x + y)²`.
+            // Parentheses around formulas stay in the formula: `(x + y)²`, `= (a + b) c`. A
+            // group that opens after a formula's last term, not after a sign, is a
+            // parenthetical, a formula of its own: `$m \ge 0$ $(K = Z^{m})$`, where
+            // `$m \ge 0 (K = Z^{m})$` read as the product `0 (K = …)`.
+            let after_term = run.last().is_some_and(|last: &&str| {
+                !last.ends_with([
+                    '=', '+', '−', '-', '×', '·', '/', '≤', '≥', '<', '>', '≠', '(',
+                ])
+            });
+            if !open.is_empty() && after_term {
+                flush(&mut run, &mut out);
+            }
             run.push(chunk);
         } else {
             flush(&mut run, &mut out);
@@ -1274,9 +1285,14 @@ mod tests {
         );
         assert_eq!(
             sentence("for all m ≥ 0 (K = Z^m): conserved"),
-            r"for all $m \ge 0 (K = Z^{m})$: conserved"
+            r"for all $m \ge 0$ $(K = Z^{m})$: conserved"
         );
         assert_eq!(sentence("is x², so"), r"is $x^{2}$, so");
+        // A group after a sign stays in its formula.
+        assert_eq!(
+            sentence("so {A^m, H} = (mλ + n) A^m for all"),
+            r"so $\{A^{m}, H\} = (m\lambda + n) A^{m}$ for all"
+        );
     }
 
     fn balanced(s: &str) -> bool {

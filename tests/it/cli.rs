@@ -503,6 +503,11 @@ fn a_proofs_parenthetical_and_punctuation_read_as_text_does() {
         tower.contains(r"checked for $1 \le m, n \le 2$, all hold"),
         "{tower}"
     );
+    // The closing's parenthetical is a formula of its own, not a product with `0`.
+    assert!(
+        tower.contains(r"for all $m, n \ge 0$ $(K_{m,n} = Z^{m} e^{-in\theta})$: conserved"),
+        "{tower}"
+    );
 }
 
 /// A system whose names LaTeX writes only with care: see [`cli_latex_of_every_command_compiles`].
