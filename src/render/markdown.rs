@@ -3,11 +3,12 @@
 
 use trigpoly::Style;
 
+use super::tex::Piece;
 use super::text::{point, upper_bound};
 use super::{stopped, verdict, Options, SHOWN_MONOMIALS};
 use crate::report::{
     counted, ClaimKind, ClaimResult, Entry, Equations, ProofResult, RankResult, Report,
-    TableResult, TowerResult,
+    SummaryKind, TableResult, TowerResult,
 };
 
 /// Renders a report as Markdown.
@@ -33,7 +34,13 @@ pub fn render(report: &Report, options: &Options) -> String {
             blocks.push(list.join("\n"));
         }
     }
-    blocks.push(format!("**{}**", report.summary_line(options.timings)));
+    // A check's summary is words, numbers and ids, as in LaTeX; another's formulas are code.
+    let summary = report.summary_line(options.timings);
+    let summary = match report.summary {
+        SummaryKind::Check { .. } => prose(&summary),
+        _ => sentence(&summary),
+    };
+    blocks.push(format!("**{summary}**"));
     let mut out = blocks.join("\n\n");
     out.push('\n');
     out
@@ -41,6 +48,28 @@ pub fn render(report: &Report, options: &Options) -> String {
 
 fn code(s: &str) -> String {
     format!("`{s}`")
+}
+
+/// A sentence that mixes prose and formulas (a proof's title, lemma and closing), each
+/// formula a code span, as LaTeX sets it in math ([`super::tex::sentence`]): `for all
+/// `m, n ≥ 0`, from the ladder function `Z`` (the formulas were bare prose).
+fn sentence(s: &str) -> String {
+    let words: Vec<String> = super::tex::sentence_words(s)
+        .iter()
+        .map(|word| {
+            word.iter()
+                .map(|piece| match piece {
+                    Piece::Prose(p) => prose(p),
+                    // A number alone reads as prose: `12 claims`, not a code span.
+                    Piece::Formula(f) if f.chars().all(|c| c.is_ascii_digit() || c == '.') => {
+                        prose(f)
+                    }
+                    Piece::Formula(f) => code(f),
+                })
+                .collect()
+        })
+        .collect();
+    words.join(" ")
 }
 
 /// Prose for Markdown: `<`, `>` and `&` outside code spans written as entities, so that a
@@ -175,7 +204,7 @@ fn tower(t: &TowerResult) -> String {
 }
 
 fn proof(p: &ProofResult) -> String {
-    let mut lines = vec![format!("**Proof** {}:", p.title), String::new()];
+    let mut lines = vec![format!("**Proof** {}:", sentence(&p.title)), String::new()];
     let mark = |ok: bool| if ok { "holds" } else { "FAILS" };
     for (k, f) in p.facts.iter().enumerate() {
         let so = match &f.found_statement {
@@ -200,10 +229,10 @@ fn proof(p: &ProofResult) -> String {
         mark(p.leibniz_check)
     ));
     lines.push(String::new());
-    lines.push(format!("*Lemma:* {}.", p.lemma));
+    lines.push(format!("*Lemma:* {}.", sentence(&p.lemma)));
     lines.push(String::new());
     let (label, closing) = p.closing();
-    lines.push(format!("*{label}:* {closing}."));
+    lines.push(format!("*{label}:* {}.", sentence(&closing)));
     lines.push(String::new());
     lines.extend(p.claims.iter().map(claim));
     lines.join("\n")

@@ -380,6 +380,31 @@ pub fn math_with(s: &str, names: &Names) -> String {
 /// );
 /// ```
 pub fn sentence(s: &str) -> String {
+    let words: Vec<String> = sentence_words(s)
+        .iter()
+        .map(|word| {
+            word.iter()
+                .map(|piece| match piece {
+                    Piece::Prose(p) => text(p),
+                    Piece::Formula(f) => format!("${}$", math(f)),
+                })
+                .collect()
+        })
+        .collect();
+    words.join(" ")
+}
+
+/// A piece of a sentence ([`sentence_words`]): prose, or a formula in the paper's notation.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub(crate) enum Piece {
+    Prose(String),
+    Formula(String),
+}
+
+/// A sentence that mixes prose and formulas as its words, set apart by spaces, each the
+/// pieces it is written in: runs of prose words are prose, runs of anything else formulas
+/// (what [`sentence`] sets in LaTeX, and Markdown in code spans).
+pub(crate) fn sentence_words(s: &str) -> Vec<Vec<Piece>> {
     let is_prose = |chunk: &str| {
         let w = chunk.trim_end_matches([',', '.', ';', ':']);
         !w.is_empty()
@@ -387,18 +412,23 @@ pub fn sentence(s: &str) -> String {
             && w.chars().all(|c| c.is_ascii_alphabetic())
     };
     let is_number = |w: &str| !w.is_empty() && w.chars().all(|c| c.is_ascii_digit() || c == '.');
-    let mut out: Vec<String> = Vec::new();
+    let mut out: Vec<Vec<Piece>> = Vec::new();
     let mut run: Vec<&str> = Vec::new();
     // The punctuation that ends a formula's run is the sentence's, after the `$`: `for all
     // $m, n \ge 0$, from` (it was `$m, n \ge 0,$`).
-    let flush = |run: &mut Vec<&str>, out: &mut Vec<String>| {
+    let flush = |run: &mut Vec<&str>, out: &mut Vec<Vec<Piece>>| {
         if !run.is_empty() {
             let joined = run.join(" ");
             let formula = joined.trim_end_matches([',', '.', ';', ':']);
             let stop = &joined[formula.len()..];
             match formula.is_empty() {
-                true => out.push(text(&joined)),
-                false => out.push(format!("${}${}", math(formula), text(stop))),
+                true => out.push(vec![Piece::Prose(joined.clone())]),
+                false => out.push(
+                    [Piece::Formula(formula.to_string())]
+                        .into_iter()
+                        .chain((!stop.is_empty()).then(|| Piece::Prose(stop.to_string())))
+                        .collect(),
+                ),
             }
             run.clear();
         }
@@ -416,7 +446,7 @@ pub fn sentence(s: &str) -> String {
         after_number = is_number(core);
         if is_prose(chunk) || (unit && open.is_empty()) {
             flush(&mut run, &mut out);
-            out.push(text(chunk));
+            out.push(vec![Piece::Prose(chunk.to_string())]);
         } else if (open.is_empty() && !close.contains(')'))
             || !(is_prose(core) || unit || is_number(core))
         {
@@ -436,14 +466,23 @@ pub fn sentence(s: &str) -> String {
         } else {
             flush(&mut run, &mut out);
             let core = match is_prose(core) || unit {
-                true => text(core),
-                false => format!("${}$", math(core)),
+                true => Piece::Prose(core.to_string()),
+                false => Piece::Formula(core.to_string()),
             };
-            out.push(format!("{open}{core}{close}"));
+            let word = [
+                Piece::Prose(open.to_string()),
+                core,
+                Piece::Prose(close.to_string()),
+            ];
+            out.push(
+                word.into_iter()
+                    .filter(|p| *p != Piece::Prose(String::new()))
+                    .collect(),
+            );
         }
     }
     flush(&mut run, &mut out);
-    out.join(" ")
+    out
 }
 
 /// Which tokens are words of prose, set as text, and not mathematics: a word between spaces

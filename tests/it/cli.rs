@@ -510,6 +510,34 @@ fn a_proofs_parenthetical_and_punctuation_read_as_text_does() {
     );
 }
 
+/// Markdown sets a proof's formulas as code spans, as LaTeX sets them in math (they were bare
+/// prose: `for all m, n ≥ 0, from the ladder function Z`), a number alone as prose.
+#[test]
+fn markdown_proofs_mark_their_formulas() {
+    let tower = run(
+        &[
+            "tower",
+            "--max",
+            "2",
+            "--format",
+            "markdown",
+            "--no-timings",
+        ],
+        0,
+    );
+    for expected in [
+        "**Proof** for all `m, n ≥ 0`, from the ladder function `Z`:",
+        "so `{A, H} = λ_A A` and `{B, H} = λ_B B` give",
+        "for all `m, n ≥ 0` `(K_{m,n} = Z^m e^{−inθ})`: conserved exactly when `Ω/ω = m/n`.",
+        "**tower: 4 brackets `{K_{m,n}, H} = i(mω − nΩ) K_{m,n}` checked for `1 ≤ m, n ≤ 2`, \
+         all hold**",
+    ] {
+        assert!(tower.contains(expected), "{expected} in\n{tower}");
+    }
+    let text = run(&["tower", "--max", "2", "--no-timings"], 0);
+    assert!(text.contains("from the ladder function Z:"), "{text}");
+}
+
 /// A system whose names LaTeX writes only with care: see [`cli_latex_of_every_command_compiles`].
 const LATEX_NAMES: &str = r#"name = "LaTeX names"
 hamiltonian = "(p_a + p_b)^2/2 + p_ω₁₂^2/2 + ω₁₂^2/2 + p_ℓ₁*ħ₁ + p_θ₁₂*θ₁₂ + ωx*x₁y"
