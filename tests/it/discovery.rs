@@ -311,6 +311,17 @@ const COMMANDS: &[(&str, &str)] = &[
         "fl-closure",
         "superint closure systems/fokas-lagerstrom-1-3.toml H Hx S C --degree 4",
     ),
+    (
+        "caged-search",
+        "superint search systems/caged-oscillator-1-2.toml --momenta-degree 5 \
+         --positions-degree 7 --laurent --symbolic omega,alpha,beta --parameters-degree 4 \
+         --new-only",
+    ),
+    (
+        "caged-closure",
+        "superint closure systems/caged-oscillator-1-2.toml H Hx K Q --degree 4 \
+         --symbolic omega,alpha,beta --parameters-degree 7",
+    ),
 ];
 
 /// The words of a command line, single quotes grouping.
@@ -3052,6 +3063,89 @@ fn fokas_lagerstrom_cubic_integral_and_its_cubic_algebra() {
             "{H_x, C} = 3Mω² S [B2 proved]",
             "{S, C} = 72M³ H H_x² − 96M³ H_x³ [B3 proved]",
             "16 H H_x³ = 16 H_x⁴ + ω² S²/M² + C²/M⁴ [R1 proved]",
+        ],
+    );
+}
+
+/// The caged anisotropic oscillator 1:2 of Evans and Verrier, loaded and checked: every claim
+/// of the file holds for every `ω, α, β` (the ladders, the quartic `K` and the quintic `Q`, the
+/// algebra and its relation, the limits `β = 0` and `α = β = 0`, the ranks), and each of its
+/// eight false neighbours is refuted: the `V_II` integral `X` with the barrier on `y`, `K` with
+/// its `β` halved, the integrals of the ratios 1:1 and 1:3, the ladder without its barrier, a
+/// sign in `{K, Q}`, `|B|²` with `16ω²β` for `32ω²β`, and rank 4.
+#[test]
+fn caged_oscillator_claims_are_proved_and_its_false_neighbours_refuted() {
+    let file = system_file("caged-oscillator-1-2.toml");
+    let report = superint::system_file::check_report([&file]).expect("checked");
+    assert!(report.all_as_expected());
+    let proved = |id: &str| (id.to_string(), true);
+    let refuted = |id: &str| (id.to_string(), false);
+    assert_eq!(
+        report.claim_ids(),
+        [
+            proved("ladders"),
+            proved("separable"),
+            proved("quartic"),
+            proved("quintic"),
+            proved("real-part"),
+            proved("modulus"),
+            proved("algebra"),
+            proved("relation"),
+            proved("rank"),
+            proved("limit-v-ii"),
+            proved("limit-oscillator"),
+            refuted("false-v-ii-integral"),
+            refuted("false-coefficient"),
+            refuted("false-1-1-ratio"),
+            refuted("false-1-3-ratio"),
+            refuted("false-uncaged-ladder"),
+            refuted("false-algebra"),
+            refuted("false-modulus"),
+            refuted("false-rank"),
+        ]
+    );
+}
+
+/// The caged oscillator 1:2: up to fifth order in the momenta, for every `ω, α, β`, the file's
+/// `H`, `H_x`, `K` and `Q` generate every integral, and there is none of third order beyond
+/// products; from `H` alone the search finds the other separated energy, the quartic `K` and
+/// the quintic `Q`, as the file writes them (expanded). They close into a polynomial algebra,
+/// for every value of the parameters, tied by one relation of degree 4.
+#[test]
+fn caged_oscillator_quartic_and_quintic_integrals_and_their_polynomial_algebra() {
+    expect(
+        "caged-search",
+        &[
+            "83055 unknowns",
+            "(a parameter's multiple of an integral counts apart from it): 60.",
+            "≤ 2: 55, ≤ 3: 55, ≤ 4: 59, ≤ 5: 60.",
+            "Known integrals in the space: H, H_x, K, Q.",
+            "None: the known integrals generate every integral in the space.",
+        ],
+    );
+    let text = run_on_hamiltonian_alone("caged-search");
+    for piece in [
+        "Known integrals in the space: H.",
+        "I36 = p_y² + 4ω²y² + 2β/y²",
+        "I59 = x² p_x² p_y² − 2xy p_x³ p_y + y² p_x⁴ + 2ω²x³y p_x p_y − 2ω²x²y² p_x² \
+         + 2βx² p_x²/y² − 4αy p_x p_y/x + 4αy² p_x²/x² + ω⁴x⁴y² − 4ω²αy² + 4α²y²/x⁴",
+        "I60 = x p_x³ p_y² − y p_x⁴ p_y − ω²x³ p_x p_y² + 6ω²x²y p_x² p_y − 4ω²xy² p_x³ \
+         + 2βx p_x³/y² + 2α p_x p_y²/x − 4αy p_x² p_y/x² − ω⁴x⁴y p_y + 4ω⁴x³y² p_x \
+         − 2ω²βx³ p_x/y² + 4ω²αy p_y − 8ω²αy² p_x/x + 4αβ p_x/(xy²) − 4α²y p_y/x⁴",
+        "4 claims: 4 proved, 0 refuted",
+    ] {
+        assert!(text.contains(&normalize(piece)), "{piece}: {text}");
+    }
+    assert_eq!(text.matches(" = 0 [I").count(), 3, "{text}");
+    expect(
+        "caged-closure",
+        &[
+            "The table closes",
+            "{H_x, K} = −2 Q [B1 proved]",
+            "{H_x, Q} = 16ω²α H − 16ω²α H_x + 8ω² K − 8 H H_x² + 8 H_x³ [B2 proved]",
+            "{K, Q} = 256ω²αβ H_x + 16ω²α K − 128β H_x³ + 16 H H_x K − 24 H_x² K [B3 proved]",
+            "128ω⁴α²β + 16ω²α H K + 4ω² K² + 32β H_x⁴ + 8 H_x³ K + Q² = 128ω²αβ H_x² \
+             + 16ω²α H_x K + 8 H H_x² K [R1 proved]",
         ],
     );
 }
