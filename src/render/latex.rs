@@ -382,10 +382,16 @@ fn table_body(out: &mut Vec<String>, t: &TableResult, names: &Names) {
 /// zero (the others follow by antisymmetry), each broken over lines as a long equation is.
 fn table_as_list(out: &mut Vec<String>, t: &TableResult, head: &[String], cells: &[Vec<String>]) {
     let brackets = table_list(cells);
+    let caption = markup(&t.list_caption());
+    if brackets.is_empty() {
+        // As the text says it; `\[1ex]` here opened a display that nothing closed.
+        out.push(format!(r"\noindent {caption}: every bracket is zero."));
+        out.push(String::new());
+        return;
+    }
     let [a, b] = &t.placeholders;
     out.push(format!(
-        r"\noindent {}, the brackets that are not zero, ${}$ before ${}$:",
-        markup(&t.list_caption()),
+        r"\noindent {caption}, the brackets that are not zero, ${}$ before ${}$:",
         math(a),
         math(b)
     ));
@@ -396,9 +402,6 @@ fn table_as_list(out: &mut Vec<String>, t: &TableResult, head: &[String], cells:
         if let Some(e) = t.excerpts.get(&(a, b)) {
             rows.extend(excerpt_rows(e));
         }
-    }
-    if rows.is_empty() {
-        out.push(r"\[1ex] every bracket is zero.".into());
     }
     flush(out, &mut rows);
 }

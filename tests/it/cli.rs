@@ -681,6 +681,35 @@ fn cli_latex_of_every_command_compiles() {
     }
 }
 
+/// A table too wide for the page whose brackets all vanish says so in a sentence, as the text
+/// does: it wrote `\[1ex] every bracket is zero.`, which opened a display that nothing closed,
+/// and pdflatex stopped at `Missing $ inserted`. The ladder functions `K_{m,n} = Z^m e^{−inθ}`
+/// commute with one another and with `Z`.
+#[test]
+fn latex_wide_table_of_zero_brackets_is_a_sentence() {
+    let mut args = vec!["table", "systems/harmonic-rotor.toml", "Z"];
+    args.extend([
+        "K_1_1", "K_1_2", "K_2_1", "K_2_2", "K_1_3", "K_3_1", "K_3_3", "K_2_3", "K_3_2", "K_4_1",
+        "K_4_2", "K_4_3", "K_4_4",
+    ]);
+    let text = run(&[&args[..], &["--no-timings"]].concat(), 0);
+    assert!(
+        text.contains("{A, B} for the harmonic rotor: every bracket is zero."),
+        "{text}"
+    );
+    let doc = run(
+        &[&args[..], &["--format", "latex", "--no-timings"]].concat(),
+        0,
+    );
+    assert!(
+        doc.contains(r"\noindent $\{A, B\}$ for the harmonic rotor: every bracket is zero."),
+        "{doc}"
+    );
+    assert!(!doc.contains(r"\["), "{doc}");
+    assert_balanced_latex(&doc);
+    compile_within(&doc, 1.0);
+}
+
 /// A claim whose left side is long takes rows of its own, so that it does not set the
 /// alignment column of its section: that pushed every row beside it, residuals included, 120 pt
 /// past the margin.
