@@ -710,6 +710,22 @@ fn latex_wide_table_of_zero_brackets_is_a_sentence() {
     compile_within(&doc, 1.0);
 }
 
+/// A nonvanishing claim's value follows `it equals` as the right side of a relation: the words
+/// ran into the value's parenthesis (`it equals(2ωp_x p_y`) and made its leading minus a binary
+/// one (`it equals − ωp_y`).
+#[test]
+fn latex_it_equals_is_a_relation() {
+    let paper = run(&["--format", "latex", "--no-timings"], 0);
+    for expected in [
+        r" &\mathrel{\text{it equals}} \left(\omega p_{y} + M \omega^{2} x\right) \cos\theta",
+        r" &\mathrel{\text{it equals}} \bigl(2 \omega p_{x} p_{y} + 2 M \omega^{2} x p_{x}",
+        r" &\mathrel{\text{it equals}} -\omega p_{y} - M \omega^{2} x + \bigl(",
+    ] {
+        assert!(paper.contains(expected), "{expected} in\n{paper}");
+    }
+    assert!(!paper.contains(r"\text{it equals} "), "{paper}");
+}
+
 /// A claim whose left side is long takes rows of its own, so that it does not set the
 /// alignment column of its section: that pushed every row beside it, residuals included, 120 pt
 /// past the margin.
