@@ -53,10 +53,12 @@ pub fn render(report: &Report, options: &Options) -> String {
     out.push(String::new());
     // A check's summary is words, numbers and the ids of claims, which are names, not
     // mathematics (`wrong_sign`, `lrl-sign`): it is set as text.
+    // Another's formulas and numbers are math, set bold as its words are (`\boldmath`): in
+    // `\textbf{$27$ claims: $27$ proved}` the digits were light among bold words.
     let summary = report.summary_line(options.timings);
     let summary = match report.summary {
         SummaryKind::Check { .. } => text(&summary),
-        _ => sentence(&summary),
+        _ => format!(r"\boldmath {}", sentence(&summary)),
     };
     out.push(format!(r"\bigskip\noindent\textbf{{{summary}}}"));
     out.push(r"\end{document}".into());

@@ -726,6 +726,45 @@ fn latex_it_equals_is_a_relation() {
     assert!(!paper.contains(r"\text{it equals} "), "{paper}");
 }
 
+/// A closing line whose numbers and formulas are math sets them bold, as its words are
+/// (`\textbf{$27$ claims: $27$ proved}` had light digits among bold words); a check's, which is
+/// text, is as it was.
+#[test]
+fn latex_summary_sets_its_math_bold() {
+    let tower = run(
+        &["tower", "--max", "2", "--format", "latex", "--no-timings"],
+        0,
+    );
+    assert!(
+        tower.contains(
+            r"\bigskip\noindent\textbf{\boldmath tower: $4$ brackets $\{K_{m,n}, H\} = i(m\omega - n\Omega) K_{m,n}$ checked for $1 \le m, n \le 2$, all hold}"
+        ),
+        "{tower}"
+    );
+    let paper = run(&["--format", "latex", "--no-timings"], 0);
+    assert!(
+        paper.contains(r"\bigskip\noindent\textbf{\boldmath $"),
+        "{paper}"
+    );
+    let check = run(
+        &[
+            "check",
+            "systems/kepler.toml",
+            "--format",
+            "latex",
+            "--no-timings",
+        ],
+        0,
+    );
+    assert!(
+        check.contains(
+            r"\bigskip\noindent\textbf{10 claims in 1 file: 7 proved, 3 refuted; all as expected}"
+        ),
+        "{check}"
+    );
+    compile_within(&tower, 1.0);
+}
+
 /// A claim whose left side is long takes rows of its own, so that it does not set the
 /// alignment column of its section: that pushed every row beside it, residuals included, 120 pt
 /// past the margin.
