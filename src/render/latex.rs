@@ -330,7 +330,7 @@ fn equations(out: &mut Vec<String>, eq: &Equations, names: &Names) {
         .lines
         .iter()
         .flat_map(|l| {
-            let mut rows = long_rows(&math_with(&l.lhs, names), "=", &l.rhs, ROW);
+            let mut rows = long_rows(&labelled(&l.lhs, names), "=", &l.rhs, ROW);
             if let Some(f) = &l.in_functions {
                 rows.extend(long_rows("", "=", f, ROW));
             }
@@ -338,6 +338,31 @@ fn equations(out: &mut Vec<String>, eq: &Equations, names: &Names) {
         })
         .collect();
     flush(out, &mut rows);
+}
+
+/// An equation's left side, with a closing parenthetical that says what holds, a search's
+/// `A3 (k = 1)`, set apart by a `\quad`: `A_{3} (k = 1)` read as `A_3` times `(k = 1)`.
+fn labelled(lhs: &str, names: &Names) -> String {
+    let label = lhs.strip_suffix(')').and_then(|head| {
+        let mut depth = 0;
+        for (k, c) in head.char_indices().rev() {
+            match c {
+                ')' => depth += 1,
+                '(' if depth > 0 => depth -= 1,
+                '(' => return Some(k),
+                _ => {}
+            }
+        }
+        None
+    });
+    match label {
+        Some(k) if lhs[..k].ends_with(' ') && lhs[k..].contains(" = ") => format!(
+            r"{}\quad {}",
+            math_with(lhs[..k].trim_end(), names),
+            math_with(&lhs[k..], names)
+        ),
+        _ => math_with(lhs, names),
+    }
 }
 
 /// How wide a table may be, in the characters [`visual_width`] counts, before it is set as a

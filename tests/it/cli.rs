@@ -765,6 +765,33 @@ fn latex_summary_sets_its_math_bold() {
     compile_within(&tower, 1.0);
 }
 
+/// A search's complex form labels its left side with its order, `A3 (k = 1)`, set apart by a
+/// `\quad`: `A_{3} (k = 1)` read as `A_3` times `(k = 1)`.
+#[test]
+fn latex_labels_an_equation_apart_from_its_name() {
+    let search = run(
+        &[
+            &[
+                "search",
+                "systems/harmonic-rotor.toml",
+                "--when",
+                "p_theta = I*omega",
+                "--format",
+                "latex",
+                "--no-timings",
+            ][..],
+            &crate::DEGREE_ONE,
+        ]
+        .concat(),
+        0,
+    );
+    assert!(
+        search.contains(r"A_{3}\quad (k = 1) &= p_{y} + i M \omega y \\"),
+        "{search}"
+    );
+    compile_within(&search, 1.0);
+}
+
 /// A claim whose left side is long takes rows of its own, so that it does not set the
 /// alignment column of its section: that pushed every row beside it, residuals included, 120 pt
 /// past the margin.
