@@ -232,20 +232,24 @@ fn claim_rows(c: &ClaimResult, names: &Names) -> Vec<String> {
         None => String::new(),
     };
     // A long statement breaks at its sums' signs, the verdict after its last line (moved
-    // below it by amsmath when the line has no room).
+    // below it by amsmath when the line has no room). The condition follows the last piece
+    // of the right side, which leaves it room (`{Y, Z} = … + 128 at ω = 1, α = 1, β = 1` of a
+    // closure ran 63 pt past the margin).
+    let after = visual_width(&cond);
     let mut rows: Vec<String> = match relation(&c.statement) {
         // A long left side takes rows of its own, right of the alignment column, and the
         // relation starts the next: as the column of the rows' `&`, it would push every other
         // row of the section, residuals included, past the margin.
         Some(k) if visual_width(&math(&c.statement[..k])) > LONG_LHS => {
+            let room = (ROW - LONG_LHS).saturating_sub(after).max(ROW / 4);
             let mut rows = broken_rows("&", &math(&c.statement[..k]), ROW - LONG_LHS);
-            rows.extend(broken_rows("&", &math(&c.statement[k..]), ROW - LONG_LHS));
+            rows.extend(broken_rows("&", &math(&c.statement[k..]), room));
             rows
         }
         Some(k) => {
             let lhs = math(&c.statement[..k]);
-            // The right side takes what the left leaves of the row.
-            let room = ROW.saturating_sub(visual_width(&lhs)).max(ROW / 2);
+            // The right side takes what the left and the condition leave of the row.
+            let room = ROW.saturating_sub(visual_width(&lhs) + after).max(ROW / 2);
             broken_rows(&format!("{lhs} &"), &math(&c.statement[k..]), room)
         }
         None => vec![aligned(&c.statement, names)],

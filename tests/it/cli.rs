@@ -792,6 +792,38 @@ fn latex_labels_an_equation_apart_from_its_name() {
     compile_within(&search, 1.0);
 }
 
+/// A claim's condition follows the last row of its right side, which leaves it room: a
+/// closure's `{Y, Z} = −32 H² Y − … + 128 at ω = 1, α = 1, β = 1` was one row, 63 pt past the
+/// margin.
+#[test]
+fn latex_claim_leaves_room_for_its_condition() {
+    let doc = run(
+        &[
+            "closure",
+            "systems/ttw-2.toml",
+            "H",
+            "X",
+            "Y",
+            "Z",
+            "--define",
+            "Z={X, Y}",
+            "--degree",
+            "3",
+            "--format",
+            "latex",
+            "--no-timings",
+        ],
+        0,
+    );
+    let expected = concat!(
+        r"\{Y, Z\} &= -32 H^{2} Y - 192 H^{2} + 256 X Y + 512 X + 32 Y^{2} - 128 Y \\",
+        "\n",
+        r"&\quad + 128\quad\text{at } \omega = 1, \alpha = 1, \beta = 1 \tag*{[B3 proved]}",
+    );
+    assert!(doc.contains(expected), "{doc}");
+    compile_within(&doc, 1.0);
+}
+
 /// A claim whose left side is long takes rows of its own, so that it does not set the
 /// alignment column of its section: that pushed every row beside it, residuals included, 120 pt
 /// past the margin.
