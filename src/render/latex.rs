@@ -330,18 +330,30 @@ fn equations(out: &mut Vec<String>, eq: &Equations, names: &Names) {
     if !eq.caption.is_empty() {
         out.push(format!(r"\noindent {}:", markup_with(&eq.caption, names)));
     }
+    // The right sides start where the widest left side ends, and take what it leaves of the
+    // row: each took the whole row, and `(1 + x + y)^2 (1/r^3 + x/s^3) = …` ran 55 pt past
+    // the margin.
+    let lhs: Vec<String> = eq.lines.iter().map(|l| labelled(&l.lhs, names)).collect();
+    let room = rhs_room(lhs.iter().map(|l| visual_width(l)).max());
     let mut rows: Vec<String> = eq
         .lines
         .iter()
-        .flat_map(|l| {
-            let mut rows = long_rows(&labelled(&l.lhs, names), "=", &l.rhs, ROW);
+        .zip(&lhs)
+        .flat_map(|(l, lhs)| {
+            let mut rows = long_rows(lhs, "=", &l.rhs, room);
             if let Some(f) = &l.in_functions {
-                rows.extend(long_rows("", "=", f, ROW));
+                rows.extend(long_rows("", "=", f, room));
             }
             rows
         })
         .collect();
     flush(out, &mut rows);
+}
+
+/// What a row of [`ROW`] leaves to a right side after a left side `lhs` wide (at least half
+/// of it, where a left side is wide).
+fn rhs_room(lhs: Option<usize>) -> usize {
+    ROW.saturating_sub(lhs.unwrap_or(0)).max(ROW / 2)
 }
 
 /// An equation's left side, with a closing parenthetical that says what holds, a search's
@@ -428,10 +440,15 @@ fn table_as_list(out: &mut Vec<String>, t: &TableResult, head: &[String], cells:
         math(a),
         math(b)
     ));
+    // As an equation's, each right side takes what the widest bracket leaves of the row.
+    let bracket = |a: usize, b: usize| format!(r"\{{{}, {}\}}", head[a], head[b]);
+    let widest = brackets
+        .iter()
+        .map(|&(a, b, _)| visual_width(&bracket(a, b)));
+    let room = rhs_room(widest.max());
     let mut rows = Vec::new();
     for (a, b, cell) in brackets {
-        let first = format!(r"\{{{}, {}\}} &= ", head[a], head[b]);
-        rows.extend(broken_rows(&first, cell, ROW));
+        rows.extend(broken_rows(&format!("{} &= ", bracket(a, b)), cell, room));
         if let Some(e) = t.excerpts.get(&(a, b)) {
             rows.extend(excerpt_rows(e));
         }

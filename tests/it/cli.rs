@@ -824,6 +824,42 @@ fn latex_claim_leaves_room_for_its_condition() {
     compile_within(&doc, 1.0);
 }
 
+/// The right sides of equations and of a wide table's list start where the widest left side
+/// ends, and are broken to what it leaves of the row: each took the whole row, and an expanded
+/// product ran 55 pt past the margin, a bracket of Fokas–Lagerstrom's table 18 pt.
+#[test]
+fn latex_right_sides_take_what_the_left_sides_leave() {
+    let expand = run(
+        &[
+            "expand",
+            "systems/two-centres.toml",
+            "(1 + x + y)^2*(1/r^3 + x/s^3)",
+            "G",
+            "--format",
+            "latex",
+            "--no-timings",
+        ],
+        0,
+    );
+    let table = run(
+        &[
+            "table",
+            "systems/fokas-lagerstrom-1-3.toml",
+            "--format",
+            "latex",
+            "--no-timings",
+        ],
+        0,
+    );
+    assert!(
+        table.contains(r"\{S, C\} &= -3 p_{x}^{6} + 9 p_{x}^{4} p_{y}^{2} - 9 M^{2} \omega^{2} x^{2} p_{x}^{4} + 18 M^{2} \omega^{2} x^{2} p_{x}^{2} p_{y}^{2} \\"),
+        "{table}"
+    );
+    for doc in [&expand, &table] {
+        compile_within(doc, 1.0);
+    }
+}
+
 /// A claim whose left side is long takes rows of its own, so that it does not set the
 /// alignment column of its section: that pushed every row beside it, residuals included, 120 pt
 /// past the margin.
