@@ -1209,7 +1209,12 @@ fn push_char(out: &mut String, c: char, accent: Option<&'static str>) {
 /// ```
 pub fn text(s: &str) -> String {
     let mut out = String::new();
+    let mut previous: Option<char> = None;
     for c in s.chars() {
+        // A straight double quote opens a quotation at the start, after a space or an opening
+        // bracket, and closes one elsewhere (`"Title"` was set ''Title'').
+        let opens = previous.is_none_or(|p| p.is_whitespace() || matches!(p, '(' | '[' | '{'));
+        previous = Some(c);
         match c {
             '{' => out.push_str(r"\{"),
             '}' => out.push_str(r"\}"),
@@ -1224,6 +1229,7 @@ pub fn text(s: &str) -> String {
             '<' => out.push_str(r"\textless{}"),
             '>' => out.push_str(r"\textgreater{}"),
             '|' => out.push_str(r"\textbar{}"),
+            '"' if opens => out.push_str("``"),
             '"' => out.push_str("''"),
             '’' => out.push('\''),
             '—' => out.push_str("---"),
@@ -1528,6 +1534,17 @@ mod tests {
             r#"\"{U}ber, Fri\v{c}, Uhl\'{\i}\v{r}"#
         );
         assert_eq!(text("Straße ½"), r"Stra\ss{}e \ensuremath{\tfrac{1}{2}}");
+    }
+
+    /// A citation's straight double quotes open and close its quotation: both were `''`, so
+    /// that `"Über das …"` was set with a closing quote before `Über`.
+    #[test]
+    fn straight_double_quotes_open_and_close() {
+        assert_eq!(
+            text(r#"W. Pauli, "Über das Wasserstoffspektrum", Z. Phys."#),
+            r#"W. Pauli, ``\"{U}ber das Wasserstoffspektrum'', Z. Phys."#
+        );
+        assert_eq!(text(r#""a" ("b") x""#), "``a'' (``b'') x''");
     }
 
     #[test]
