@@ -283,8 +283,10 @@ fn claim_rows(c: &ClaimResult, names: &Names) -> Vec<String> {
             ));
         }
     }
+    // A note may name parameters and values, `proved for every A, B, at C = 2`: its formulas
+    // are math, as a sentence's (they were upright text).
     if let Some(n) = &c.note {
-        rows.push(format!(r"&\text{{{}}}", text(n)));
+        rows.push(format!(r"&\text{{{}}}", sentence(n)));
     }
     if let Some(u) = &c.undecided {
         rows.extend(prose_rows(&stopped(u)));

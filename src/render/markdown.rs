@@ -154,8 +154,10 @@ fn claim(c: &ClaimResult) -> String {
         }
         _ => {}
     }
+    // A note's formulas are code, as LaTeX sets them in math: `proved for every `A, B`, at
+    // `C = 2``.
     if let Some(n) = &c.note {
-        line.push_str(&format!(" ({n})"));
+        line.push_str(&format!(" ({})", sentence(n)));
     }
     if let Some(u) = &c.undecided {
         line.push_str(&format!(" ({})", stopped(u)));

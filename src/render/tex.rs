@@ -433,8 +433,17 @@ pub(crate) fn sentence_words(s: &str) -> Vec<Vec<Piece>> {
             run.clear();
         }
     };
+    let chunks: Vec<&str> = s.split(' ').filter(|c| !c.is_empty()).collect();
+    // A function's name that a prose word follows is prose itself: `the rank is 3`, where
+    // `rank ∂(F, G)/∂(x, y)` is mathematics.
+    let prose_at = |k: usize| {
+        let chunk = chunks[k];
+        is_prose(chunk)
+            || (FUNCTIONS.iter().any(|f| f.0 == chunk)
+                && chunks.get(k + 1).is_some_and(|next| is_prose(next)))
+    };
     let mut after_number = false;
-    for chunk in s.split(' ').filter(|c| !c.is_empty()) {
+    for (k, &chunk) in chunks.iter().enumerate() {
         // A parenthesis that opens before a word or a number, or closes after one, stays
         // text: `(3 exact checks, 0.01 s)` is `($3$ exact checks, $0.01$ s)`, and `s` after a
         // number is the unit.
@@ -444,7 +453,7 @@ pub(crate) fn sentence_words(s: &str) -> Vec<Vec<Piece>> {
         let close = &inner[core.len()..];
         let unit = after_number && core == "s";
         after_number = is_number(core);
-        if is_prose(chunk) || (unit && open.is_empty()) {
+        if prose_at(k) || (unit && open.is_empty()) {
             flush(&mut run, &mut out);
             out.push(vec![Piece::Prose(chunk.to_string())]);
         } else if (open.is_empty() && !close.contains(')'))
@@ -1318,6 +1327,25 @@ mod tests {
             "all as expected ($0.00$ s)"
         );
         assert_eq!(sentence("so (x + y)² = z"), "so $(x + y)^{2} = z$");
+    }
+
+    /// A claim's note sets its formulas in math (`proved for every A, B, at C = 2` was all
+    /// text); a function's name before a prose word is prose, and `rank ∂(F)/∂(x)` math.
+    #[test]
+    fn sentence_of_a_note_sets_its_formulas_and_keeps_its_words() {
+        assert_eq!(
+            sentence("proved for every A, B, at C = 2"),
+            "proved for every $A, B$, at $C = 2$"
+        );
+        assert_eq!(sentence("the rank is 3"), "the rank is $3$");
+        assert_eq!(
+            sentence("so rank ∂(F)/∂(x) = 1"),
+            r"so $\operatorname{rank} \partial(F)/\partial(x) = 1$"
+        );
+        assert_eq!(
+            sentence("not lifted back to the parameters (no symbolic lift)"),
+            "not lifted back to the parameters (no symbolic lift)"
+        );
     }
 
     /// The punctuation after a formula is the sentence's, outside the math: `$m, n \ge 0$,`

@@ -860,6 +860,50 @@ fn latex_right_sides_take_what_the_left_sides_leave() {
     }
 }
 
+/// A claim's note sets its formulas as formulas, in LaTeX and in Markdown: a search's
+/// `proved for every A, B, at C = 2` was upright text in LaTeX and bare prose in Markdown.
+#[test]
+fn notes_set_their_formulas_as_formulas() {
+    let search = |format: &str| {
+        run(
+            &[
+                "search",
+                "systems/henon-heiles.toml",
+                "--momenta-degree",
+                "2",
+                "--positions-degree",
+                "4",
+                "--trig-degree",
+                "0",
+                "--fix",
+                "C=2",
+                "--symbolic",
+                "A,B",
+                "--format",
+                format,
+                "--no-timings",
+            ],
+            0,
+        )
+    };
+    let latex = search("latex");
+    assert!(
+        latex.contains(r"&\text{proved for every $A, B$, at $C = 2$}"),
+        "{latex}"
+    );
+    let markdown = search("markdown");
+    assert!(
+        markdown.contains("— **basis proved** (proved for every `A, B`, at `C = 2`)"),
+        "{markdown}"
+    );
+    let text = search("text");
+    assert!(
+        text.contains("      proved for every A, B, at C = 2\n"),
+        "{text}"
+    );
+    compile_within(&latex, 60.0);
+}
+
 /// A claim whose left side is long takes rows of its own, so that it does not set the
 /// alignment column of its section: that pushed every row beside it, residuals included, 120 pt
 /// past the margin.
