@@ -509,8 +509,12 @@ fn proof(out: &mut Vec<String>, p: &ProofResult, names: &Names) {
     out.push(r"\end{enumerate}".into());
     out.push(format!(r"\emph{{Lemma:}} {}.", sentence(&p.lemma)));
     out.push(String::new());
+    // Flush left, as the lemma is, which follows the list: it was indented under it.
     let (label, closing) = p.closing();
-    out.push(format!(r"\emph{{{label}:}} {}.", sentence(&closing)));
+    out.push(format!(
+        r"\noindent\emph{{{label}:}} {}.",
+        sentence(&closing)
+    ));
     let mut rows: Vec<String> = p.claims.iter().flat_map(|c| claim_rows(c, names)).collect();
     flush(out, &mut rows);
 }

@@ -904,6 +904,23 @@ fn notes_set_their_formulas_as_formulas() {
     compile_within(&latex, 60.0);
 }
 
+/// A proof's closing paragraph is flush left, as its lemma is (it was indented below it).
+#[test]
+fn latex_proof_closing_is_flush_left() {
+    let tower = run(
+        &["tower", "--max", "1", "--format", "latex", "--no-timings"],
+        0,
+    );
+    assert!(
+        tower.contains("\n\\noindent\\emph{Therefore:} $\\{K_{m,n}, H\\} = "),
+        "{tower}"
+    );
+    assert!(
+        tower.contains("\\end{enumerate}\n\\emph{Lemma:} "),
+        "{tower}"
+    );
+}
+
 /// A claim whose left side is long takes rows of its own, so that it does not set the
 /// alignment column of its section: that pushed every row beside it, residuals included, 120 pt
 /// past the margin.
