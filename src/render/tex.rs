@@ -433,6 +433,12 @@ pub(crate) fn sentence_words(s: &str) -> Vec<Vec<Piece>> {
             run.clear();
         }
     };
+    // Whether the formula being gathered has a parenthesis open, which a number closes as
+    // part of it: `mλ(1, 0) + nλ(0, 1)` was `$m\lambda(1$, $0$) $+ n\lambda(0$, $1$)`.
+    let opened = |run: &[&str]| {
+        let depth = |c: char| run.iter().map(|w| w.matches(c).count()).sum::<usize>();
+        depth('(') > depth(')')
+    };
     let chunks: Vec<&str> = s.split(' ').filter(|c| !c.is_empty()).collect();
     // A function's name that a prose word follows is prose itself: `the rank is 3`, where
     // `rank ∂(F, G)/∂(x, y)` is mathematics.
@@ -458,6 +464,7 @@ pub(crate) fn sentence_words(s: &str) -> Vec<Vec<Piece>> {
             out.push(vec![Piece::Prose(chunk.to_string())]);
         } else if (open.is_empty() && !close.contains(')'))
             || !(is_prose(core) || unit || is_number(core))
+            || opened(&run)
         {
             // Parentheses around formulas stay in the formula: `(x + y)²`, `= (a + b) c`. A
             // group that opens after a formula's last term, not after a sign, is a
@@ -1345,6 +1352,21 @@ mod tests {
         assert_eq!(
             sentence("not lifted back to the parameters (no symbolic lift)"),
             "not lifted back to the parameters (no symbolic lift)"
+        );
+    }
+
+    /// A number that closes a parenthesis the formula opened is part of the formula: a
+    /// tower's lemma `… = mλ(1, 0) + nλ(0, 1) = λ(m, n).` was cut into
+    /// `$m\lambda(1$, $0$) $+ n\lambda(0$, $1$) $= \lambda(m, n)$`.
+    #[test]
+    fn sentence_keeps_a_parenthesis_the_formula_opened() {
+        assert_eq!(
+            sentence("and mλ_A + nλ_B = mλ(1, 0) + nλ(0, 1) = λ(m, n)."),
+            r"and $m\lambda_{A} + n\lambda_{B} = m\lambda(1, 0) + n\lambda(0, 1) = \lambda(m, n)$."
+        );
+        assert_eq!(
+            sentence("all hold (3 exact checks, 0.01 s)"),
+            "all hold ($3$ exact checks, $0.01$ s)"
         );
     }
 

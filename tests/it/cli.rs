@@ -921,6 +921,40 @@ fn latex_proof_closing_is_flush_left() {
     );
 }
 
+/// A family's tower proof closes its lemma with `mλ_A + nλ_B = mλ(1, 0) + nλ(0, 1) =
+/// λ(m, n)`, one formula: the numbers that close its parentheses cut it into pieces, in LaTeX
+/// (`$m\lambda(1$, $0$) $+ n\lambda(0$, $1$)`) and in Markdown's code spans alike.
+#[test]
+fn a_towers_lemma_keeps_its_formula_whole() {
+    let tower = |format: &str| {
+        let args = [
+            "tower",
+            "--system",
+            "systems/harmonic-rotor.toml",
+            "--family",
+            "K",
+            "--max",
+            "1",
+            "--format",
+            format,
+            "--no-timings",
+        ];
+        run(&args, 0)
+    };
+    let latex = tower("latex");
+    assert!(
+        latex.contains(
+            r"and $m\lambda_{A} + n\lambda_{B} = m\lambda(1, 0) + n\lambda(0, 1) = \lambda(m, n)$."
+        ),
+        "{latex}"
+    );
+    let markdown = tower("markdown");
+    assert!(
+        markdown.contains("and `mλ_A + nλ_B = mλ(1, 0) + nλ(0, 1) = λ(m, n)`."),
+        "{markdown}"
+    );
+}
+
 /// A claim whose left side is long takes rows of its own, so that it does not set the
 /// alignment column of its section: that pushed every row beside it, residuals included, 120 pt
 /// past the margin.
