@@ -220,7 +220,7 @@ fn proof(p: &ProofResult) -> String {
         lines.push(format!(
             "{}. computed: {} — {}{found}",
             k + 1,
-            code(&f.statement),
+            fact(&f.statement),
             mark(f.holds)
         ));
     }
@@ -238,6 +238,27 @@ fn proof(p: &ProofResult) -> String {
     lines.push(String::new());
     lines.extend(p.claims.iter().map(claim));
     lines.join("\n")
+}
+
+/// A proof's fact as LaTeX sets it: its formula a code span, a parenthetical after two
+/// spaces one of its own (`` `{e^{−iθ}, H} = −iΩ e^{−iθ}` (`Ω = p_θ/I`) ``: in one span the
+/// spaces collapse, and it read as a product), and after a colon the prose that says why as a
+/// sentence (`both are polynomials of degree at most 1 in m, n` was code).
+fn fact(statement: &str) -> String {
+    let (formula, why) = match statement.split_once(": ") {
+        Some((formula, why)) => (formula, format!(": {}", sentence(why))),
+        None => (statement, String::new()),
+    };
+    let parts: Vec<String> = formula
+        .split("  ")
+        .map(
+            |part| match part.strip_prefix('(').and_then(|p| p.strip_suffix(')')) {
+                Some(inner) => format!("({})", code(inner)),
+                None => code(part),
+            },
+        )
+        .collect();
+    format!("{}{why}", parts.join(" "))
 }
 
 fn rank(r: &RankResult) -> String {

@@ -531,11 +531,38 @@ fn markdown_proofs_mark_their_formulas() {
         "for all `m, n ≥ 0` `(K_{m,n} = Z^m e^{−inθ})`: conserved exactly when `Ω/ω = m/n`.",
         "**tower: 4 brackets `{K_{m,n}, H} = i(mω − nΩ) K_{m,n}` checked for `1 ≤ m, n ≤ 2`, \
          all hold**",
+        // A fact's parenthetical is a code span of its own, as LaTeX sets it apart.
+        "2. computed: `{e^{−iθ}, H} = −iΩ e^{−iθ}` (`Ω = p_θ/I`) — holds",
     ] {
         assert!(tower.contains(expected), "{expected} in\n{tower}");
     }
     let text = run(&["tower", "--max", "2", "--no-timings"], 0);
     assert!(text.contains("from the ladder function Z:"), "{text}");
+    // A fact's reason, after its colon, is prose with its formulas marked, as in LaTeX: it
+    // was part of the fact's code span.
+    let family = run(
+        &[
+            "tower",
+            "--system",
+            "systems/harmonic-rotor.toml",
+            "--family",
+            "K",
+            "--max",
+            "1",
+            "--format",
+            "markdown",
+            "--no-timings",
+        ],
+        0,
+    );
+    assert!(
+        family.contains(
+            "3. computed: `λ(m, n) = i(mω − nΩ) equals mλ(1, 0) + nλ(0, 1)`: both are \
+             polynomials of degree at most 1 in `m, n`, and they agree at the 4 points \
+             `0 ≤ m, n ≤ 1` — holds"
+        ),
+        "{family}"
+    );
 }
 
 /// A system whose names LaTeX writes only with care: see [`cli_latex_of_every_command_compiles`].
