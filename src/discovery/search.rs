@@ -448,7 +448,7 @@ fn hamiltonian_note(
     };
     if let Some(why) = options.space.why_outside(&h) {
         return Ok(Some(Entry::Text(format!(
-            "Note: H is not in this space ({why}), so H is not among the integrals found, \
+            "Note: `H` is not in this space ({why}), so `H` is not among the integrals found, \
              nor is any that needs its terms."
         ))));
     }

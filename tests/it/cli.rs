@@ -982,6 +982,51 @@ fn a_towers_lemma_keeps_its_formula_whole() {
     );
 }
 
+/// A search's note that `H` lies outside the space marks its formulas and settings, as the
+/// notes beside it do: `H`, `r` and `SearchSpace::laurent` were upright prose in LaTeX and
+/// bare in Markdown. The text reads as it did.
+#[test]
+fn a_search_note_on_h_marks_its_formulas() {
+    let search = |format: &str| {
+        let args = [
+            "search",
+            "systems/kepler.toml",
+            "--momenta-degree",
+            "2",
+            "--positions-degree",
+            "2",
+            "--format",
+            format,
+            "--no-timings",
+        ];
+        run(&args, 0)
+    };
+    let latex = search("latex");
+    assert!(
+        latex.contains(
+            r"Note: $H$ is not in this space (negative powers of $r$, which a Laurent space (\texttt{SearchSpace::laurent}; on the command line, \texttt{-{}-laurent}) admits), so $H$ is not"
+        ),
+        "{latex}"
+    );
+    let markdown = search("markdown");
+    assert!(
+        markdown.contains(
+            "Note: `H` is not in this space (negative powers of `r`, which a Laurent space \
+             (`SearchSpace::laurent`; on the command line, `--laurent`) admits), so `H` is not"
+        ),
+        "{markdown}"
+    );
+    let text = crate::normalize(&search("text"));
+    assert!(
+        text.contains(
+            "Note: H is not in this space (negative powers of r, which a Laurent space \
+             (SearchSpace::laurent; on the command line, --laurent) admits), so H is not"
+        ),
+        "{text}"
+    );
+    compile_within(&latex, 1.0);
+}
+
 /// A claim whose left side is long takes rows of its own, so that it does not set the
 /// alignment column of its section: that pushed every row beside it, residuals included, 120 pt
 /// past the margin.

@@ -83,7 +83,9 @@ impl SearchSpace {
     /// Why `f` lies outside the space, if it does, in words: its degree in the momenta, in the
     /// coordinates, in the Poisson variables or in the angles is too high, or it has negative
     /// powers the space does not take. A search for the integrals of a system whose Hamiltonian
-    /// lies outside finds neither `H` nor, often, anything else, so the report says why.
+    /// lies outside finds neither `H` nor, often, anything else, so the report says why. Its
+    /// names and settings are between backticks, as a report's prose marks its formulas
+    /// (``negative powers of `x` ``).
     pub fn why_outside(&self, f: &Expr) -> Option<String> {
         use trigpoly::VarKind::{Angle, Coordinate, Momentum, Poisson};
         let vars = f.vars();
@@ -97,7 +99,7 @@ impl SearchSpace {
         let mut why = Vec::new();
         for kind in [Momentum, Poisson] {
             if let Some(p) = negative(kind) {
-                why.push(format!("negative powers of {p}"));
+                why.push(format!("negative powers of `{p}`"));
             }
         }
         if let Some(d) = vars
@@ -105,7 +107,7 @@ impl SearchSpace {
             .find(|&v| f.exponent_range(v).is_some_and(|(_, hi)| hi > 0))
         {
             why.push(format!(
-                "a positive power of the denominator {}, which the space takes only as 1/D",
+                "a positive power of the denominator `{}`, which the space takes only as `1/D`",
                 vars.variable(d).unicode()
             ));
         }
@@ -127,16 +129,16 @@ impl SearchSpace {
         ] {
             if d > i64::from(bound) {
                 why.push(format!(
-                    "degree {d} in the {what}, past the space's {bound} (SearchSpace::{setting}; \
-                     on the command line, --{})",
+                    "degree {d} in the {what}, past the space's {bound} (`SearchSpace::{setting}`; \
+                     on the command line, `--{}`)",
                     setting.replace('_', "-")
                 ));
             }
         }
         if let (false, Some(x)) = (self.laurent, negative(Coordinate)) {
             why.push(format!(
-                "negative powers of {x}, which a Laurent space (SearchSpace::laurent; on the \
-                 command line, --laurent) admits"
+                "negative powers of `{x}`, which a Laurent space (`SearchSpace::laurent`; on the \
+                 command line, `--laurent`) admits"
             ));
         }
         for (what, kind, bound) in [
