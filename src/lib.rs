@@ -59,9 +59,9 @@ pub struct SystemFilesDoctests;
 /// Everything a user of the library needs: `use superint::prelude::*;`.
 pub mod prelude {
     pub use brackets::{
-        check_tower, closure, closure_of, eigen_proof, expressed_in, rank, search, systems,
-        BracketTable, CanonicalPair, Claim, Closure, ClosureBracket, ClosureOptions, Condition,
-        EigenProof, EngineError, Entry as TableEntry, Expressed, FunctionName, Integral,
+        check_tower, closure, closure_of, eigen_proof, eigen_proof_of, expressed_in, rank, search,
+        systems, BracketTable, CanonicalPair, Claim, Closure, ClosureBracket, ClosureOptions,
+        Condition, EigenProof, EngineError, Entry as TableEntry, Expressed, FunctionName, Integral,
         NamedFunction, Outcome, PhaseSpace, RankCertificate, Relation, SearchOptions, SearchResult,
         SearchSpace, System, TowerReport, UpperBound, Verdict,
     };

@@ -76,6 +76,7 @@ pub(crate) fn section(options: &PaperOptions) -> Result<Section, EngineError> {
         )],
         system: sys,
         ladder: "Zp".into(),
+        family: "K'".into(),
     });
     resonance(&mut s, "C24", "'", "p")?;
 

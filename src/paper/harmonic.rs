@@ -185,6 +185,7 @@ fn resonant_integrals(s: &mut SectionBuilder, options: &PaperOptions) -> Result<
         ],
         system: sys,
         ladder: "Z".into(),
+        family: "K".into(),
     });
     for (m, n) in [(1, 1), (2, 3), (3, 2)] {
         s.identity(

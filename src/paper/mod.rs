@@ -27,7 +27,7 @@ use std::sync::Arc;
 use std::time::Instant;
 
 use brackets::{
-    check_tower, eigen_proof, rank, BracketTable, Claim, Condition, EngineError, System,
+    check_tower, eigen_proof_of, rank, BracketTable, Claim, Condition, EngineError, System,
 };
 use trigpoly::Expr;
 
@@ -127,6 +127,8 @@ pub enum Item {
         system: Arc<System>,
         /// The ladder function's name.
         ladder: String,
+        /// The family's display name, as the conclusion names it (`K`, `K'`).
+        family: String,
     },
     /// The rank of the Jacobian of some functions.
     Rank {
@@ -252,6 +254,7 @@ pub fn tower_report_with_progress(
         )],
         system: system.clone(),
         ladder: ladder.into(),
+        family: k.into(),
     };
     let text = Item::Text(format!(
         "The {}: `{k}_{{m,n}} = {z}^m e^{{−inθ}}` with `Ω = p_θ/I`.",
@@ -319,7 +322,8 @@ impl Item {
                 settles,
                 system,
                 ladder,
-            } => vec![proof_entry(title, settles, system, ladder)?],
+                family,
+            } => vec![proof_entry(title, settles, system, ladder, family)?],
             Item::Rank {
                 id,
                 system,
@@ -352,15 +356,17 @@ fn tower_entry(
     }))
 }
 
-/// The eigenfunction proof for all `m, n` from `ladder`, settling each claim of `settles`.
+/// The eigenfunction proof for all `m, n` of `family` from `ladder`, settling each claim of
+/// `settles`.
 fn proof_entry(
     title: &str,
     settles: &[(String, String)],
     system: &System,
     ladder: &str,
+    family: &str,
 ) -> Result<Entry, EngineError> {
     let start = Instant::now();
-    let p = eigen_proof(system, ladder)?;
+    let p = eigen_proof_of(system, ladder, family)?;
     let seconds = start.elapsed().as_secs_f64();
     let facts: Vec<Fact> = p
         .facts

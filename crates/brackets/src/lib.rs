@@ -46,4 +46,4 @@ pub use rank::{rank, RankCertificate, UpperBound};
 pub use search::{search, Integral, SearchOptions, SearchResult, SearchSpace, SpaceVariables};
 pub use system::{NamedFunction, System};
 pub use table::{BracketTable, Entry, FunctionName};
-pub use tower::{check_tower, eigen_proof, EigenProof, TowerReport};
+pub use tower::{check_tower, eigen_proof, eigen_proof_of, EigenProof, TowerReport};

@@ -123,6 +123,27 @@ impl EigenProof {
 /// # Ok::<(), brackets::EngineError>(())
 /// ```
 pub fn eigen_proof(system: &System, ladder: &str) -> Result<EigenProof, EngineError> {
+    eigen_proof_of(system, ladder, "K")
+}
+
+/// [`eigen_proof`] of a family named `family` (its display name, `K'` for the rotor under
+/// gravity, whose `K'_{m,n} = Z'^m e^{−inθ}`), as its conclusion names it and its conjugate
+/// (`K̄'_{m,n}`).
+///
+/// ```
+/// use brackets::{eigen_proof_of, systems};
+///
+/// let proof = eigen_proof_of(&systems::gravity_rotor(), "Zp", "K'")?;
+/// assert!(proof.holds());
+/// assert!(proof.conclusion.starts_with("{K'_{m,n}, H} = i(mω − nΩ) K'_{m,n} and {K̄'_{m,n}, H}"));
+/// assert!(proof.conclusion.contains("(K'_{m,n} = Z'^m e^{−inθ})"));
+/// # Ok::<(), brackets::EngineError>(())
+/// ```
+pub fn eigen_proof_of(
+    system: &System,
+    ladder: &str,
+    family: &str,
+) -> Result<EigenProof, EngineError> {
     system
         .space()
         .refuse_denominators("the all-m, n tower proof")?;
@@ -177,13 +198,20 @@ pub fn eigen_proof(system: &System, ladder: &str) -> Result<EigenProof, EngineEr
         .map(|f| f.statement.as_str())
         .chain((!leibniz_check).then_some("the derivation property"))
         .collect();
+    // The conjugate family's name: a macron over the name's first letter (`K̄'`).
+    let mut letters = family.chars();
+    let family_bar: String = letters
+        .next()
+        .map(|first| format!("{first}\u{304}{}", letters.as_str()))
+        .unwrap_or_default();
+    let (k, kbar) = (format!("{family}_{{m,n}}"), format!("{family_bar}_{{m,n}}"));
     let conclusion = match failed.is_empty() {
         true => format!(
-            "{{K_{{m,n}}, H}} = i(mω − nΩ) K_{{m,n}} and {{K̄_{{m,n}}, H}} = −i(mω − nΩ) K̄_{{m,n}} \
-             for all m, n ≥ 0 (K_{{m,n}} = {name}^m e^{{−inθ}}): conserved exactly when Ω/ω = m/n"
+            "{{{k}, H}} = i(mω − nΩ) {k} and {{{kbar}, H}} = −i(mω − nΩ) {kbar} \
+             for all m, n ≥ 0 ({k} = {name}^m e^{{−inθ}}): conserved exactly when Ω/ω = m/n"
         ),
         false => format!(
-            "nothing for all m, n: the lemma needs what fails here ({}), so K_{{m,n}} = \
+            "nothing for all m, n: the lemma needs what fails here ({}), so {k} = \
              {name}^m e^{{−inθ}} is not proved conserved",
             failed.join("; ")
         ),

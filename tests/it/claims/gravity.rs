@@ -1,6 +1,6 @@
 //! Section 4: the harmonic rotor in a vertical plane, `H_g = H + Mgy`, `y' = y + g/ω²`.
 
-use brackets::{check_tower, eigen_proof, systems, UpperBound};
+use brackets::{check_tower, eigen_proof, eigen_proof_of, systems, UpperBound};
 
 use super::{assert_rank, define_family, rendered_table, table};
 
@@ -110,6 +110,13 @@ fn c24_shifted_resonant_integrals() {
     let report = check_tower(&sys, "Zp", 4, &mut |_, _| {}).unwrap();
     assert_eq!((report.checked, report.failures), (16, vec![]));
     assert!(eigen_proof(&sys, "Zp").unwrap().holds());
+    // The proof's conclusion names the shifted family K', not the harmonic rotor's K.
+    let named = eigen_proof_of(&sys, "Zp", "K'").unwrap().conclusion;
+    assert!(
+        named.starts_with("{K'_{m,n}, H} = i(mω − nΩ) K'_{m,n} and {K̄'_{m,n}, H}"),
+        "{named}"
+    );
+    assert!(named.contains("(K'_{m,n} = Z'^m e^{−inθ})"), "{named}");
     // False neighbours: the unshifted Z is no ladder under gravity, nor are its P, Q conserved.
     identity!(sys, "{Z, F1} = i*omega*Z" => refuted "-i*M*g");
     assert!(!eigen_proof(&sys, "Z").unwrap().holds());
