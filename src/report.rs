@@ -631,9 +631,9 @@ fn tower_summary(t: &TowerResult, timings: bool) -> String {
     } else {
         format!("{} FAIL", t.failures.len())
     };
+    let k = &t.family;
     format!(
-        "tower: {} {{K_{{m,n}}, H}} = i(mω − nΩ) K_{{m,n}} checked for \
-         1 ≤ m, n ≤ {}, {verdict}{}",
+        "tower: {} {{{k}, H}} = i(mω − nΩ) {k} checked for 1 ≤ m, n ≤ {}, {verdict}{}",
         counted(t.checked, "bracket"),
         t.max,
         seconds_in_parentheses(t.claim.seconds, timings)

@@ -66,6 +66,7 @@ pub(crate) fn section(options: &PaperOptions) -> Result<Section, EngineError> {
         ),
         system: sys.clone(),
         ladder: "Zp".into(),
+        family: "K'".into(),
         max: options.tower_max,
     });
     s.item(Item::Proof {

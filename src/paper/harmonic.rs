@@ -169,6 +169,7 @@ fn resonant_integrals(s: &mut SectionBuilder, options: &PaperOptions) -> Result<
         ),
         system: sys.clone(),
         ladder: "Z".into(),
+        family: "K".into(),
         max: options.tower_max,
     });
     s.item(Item::Proof {

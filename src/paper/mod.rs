@@ -114,6 +114,8 @@ pub enum Item {
         system: Arc<System>,
         /// The ladder function's name.
         ladder: String,
+        /// The family's display name (`K`, `K'`).
+        family: String,
         /// The bound.
         max: i64,
     },
@@ -244,6 +246,7 @@ pub fn tower_report_with_progress(
         statement: format!("{{{k}_{{m,n}}, F1}} = i(mω − nΩ){k}_{{m,n}} for 1 ≤ m, n ≤ {max}"),
         system: system.clone(),
         ladder: ladder.into(),
+        family: k.into(),
         max,
     };
     let proof = Item::Proof {
@@ -309,11 +312,12 @@ impl Item {
                 statement,
                 system,
                 ladder,
+                family,
                 max,
             } => vec![tower_entry(
                 (id, statement),
                 system,
-                ladder,
+                (ladder, family),
                 *max,
                 progress,
             )?],
@@ -334,12 +338,12 @@ impl Item {
     }
 }
 
-/// The tower `{K_{m,n}, H}` of `ladder` checked by expansion up to `max`, as the claim
-/// `(id, statement)`.
+/// The tower `{K_{m,n}, H}` of the family `K` of `ladder` checked by expansion up to `max`,
+/// as the claim `(id, statement)`.
 fn tower_entry(
     (id, statement): (&str, &str),
     system: &System,
-    ladder: &str,
+    (ladder, family): (&str, &str),
     max: i64,
     progress: &mut dyn FnMut(usize, usize),
 ) -> Result<Entry, EngineError> {
@@ -349,6 +353,7 @@ fn tower_entry(
         system: system.name().to_string(),
         the_system: crate::report::with_article(system.name()),
         ladder: system.display_name(ladder).to_string(),
+        family: format!("{family}_{{m,n}}"),
         max: t.max,
         checked: t.checked,
         failures: t.failures.clone(),

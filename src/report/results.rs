@@ -462,6 +462,9 @@ pub struct TowerResult {
     pub the_system: String,
     /// The ladder function's display name (`Z`, `Z'`).
     pub ladder: String,
+    /// The family with its indices (`K_{m,n}`, `K'_{m,n}`), as the tower's closing line
+    /// names it.
+    pub family: String,
     /// The bound.
     pub max: i64,
     /// How many brackets were expanded.

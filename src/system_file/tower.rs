@@ -554,6 +554,7 @@ impl ShownFamily {
             system: file.name.clone(),
             the_system: file.the_name(),
             ladder: format!("{} = {}", self.kmn, self.value),
+            family: self.kmn.clone(),
             max,
             // `1 ≤ m, n ≤ max` holds no pair when `max < 1`.
             checked: pairs(max),

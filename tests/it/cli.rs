@@ -1113,6 +1113,16 @@ fn cli_tower_gravity_and_formats() {
         0,
     );
     assert!(out.contains("[C24 proved]"));
+    // The shifted family K' is named as such in the proof's conclusion and the closing line
+    // (both said K_{m,n}, the harmonic rotor's family).
+    assert!(
+        out.contains("(K'_{m,n} = Z'^m e^{−inθ}): conserved exactly when Ω/ω = m/n"),
+        "{out}"
+    );
+    assert_eq!(
+        out.lines().last(),
+        Some("tower: 4 brackets {K'_{m,n}, H} = i(mω − nΩ) K'_{m,n} checked for 1 ≤ m, n ≤ 2, all hold")
+    );
     let v: Value = serde_json::from_str(&run(
         &["tower", "--max", "2", "--format", "json", "--no-timings"],
         0,
