@@ -92,6 +92,26 @@ fn prose(s: &str) -> String {
     out
 }
 
+/// A name of the user's (a claim's id) as Markdown shows it literally: the punctuation that
+/// Markdown reads as markup escaped by a backslash, so that the id `__x__` is not emphasis
+/// inside the bold verdict, and `<`, `>`, `&` as [`prose`] writes them.
+fn literal(s: &str) -> String {
+    let mut out = String::with_capacity(s.len());
+    for c in s.chars() {
+        match c {
+            '\\' | '`' | '*' | '_' | '[' | ']' | '|' | '~' | '#' => {
+                out.push('\\');
+                out.push(c);
+            }
+            '<' => out.push_str("&lt;"),
+            '>' => out.push_str("&gt;"),
+            '&' => out.push_str("&amp;"),
+            _ => out.push(c),
+        }
+    }
+    out
+}
+
 fn entry(e: &Entry) -> String {
     match e {
         Entry::Heading(h) => format!("### {}", prose(h)),
@@ -130,7 +150,7 @@ fn claim(c: &ClaimResult) -> String {
     let mut line = format!(
         "- {}{cond} — **{} {}**",
         code(&c.statement),
-        c.id,
+        literal(&c.id),
         verdict(c)
     );
     if let Some(r) = &c.residual {

@@ -3566,6 +3566,39 @@ fn markdown_prose_escapes_what_reads_as_html() {
     assert!(md.contains("`−k/r`"), "{md}");
 }
 
+/// A claim's id is shown literally in Markdown: `__x__` and `a*b*c` were emphasis inside the
+/// bold verdict (`**__x__ proved**`), their underscores and stars lost; an id of letters and
+/// digits reads as it did.
+#[test]
+fn markdown_shows_claim_ids_literally() {
+    let file = scratch_file("ids.toml");
+    std::fs::write(
+        &file,
+        "hamiltonian = \"(p_x^2 + p_y^2)/2\"\n\
+         [phase_space]\ncoordinates = [\"x\", \"y\"]\n\
+         [[claim]]\nid = \"__x__\"\nclaim = \"{p_x, H} = 0\"\n\
+         [[claim]]\nid = \"a*b*c\"\nclaim = \"{p_y, H} = 0\"\n\
+         [[claim]]\nid = \"C09\"\nclaim = \"{x*p_y - y*p_x, H} = 0\"\n",
+    )
+    .expect("write the file");
+    let md = run(
+        &[
+            "check",
+            file.to_str().expect("a path"),
+            "--format",
+            "markdown",
+        ],
+        0,
+    );
+    for shown in [
+        r"**\_\_x\_\_ proved**",
+        r"**a\*b\*c proved**",
+        "**C09 proved**",
+    ] {
+        assert!(md.contains(shown), "{shown}: {md}");
+    }
+}
+
 /// The closure help's example of a cubic algebra runs as shown, and finds it.
 #[test]
 fn the_closure_help_example_of_a_cubic_algebra_runs() {
