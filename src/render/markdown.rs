@@ -3,7 +3,7 @@
 
 use trigpoly::Style;
 
-use super::tex::Piece;
+use super::tex::{set_sentence, Piece};
 use super::text::{point, upper_bound};
 use super::{stopped, verdict, Options, SHOWN_MONOMIALS};
 use crate::report::{
@@ -54,22 +54,12 @@ fn code(s: &str) -> String {
 /// formula a code span, as LaTeX sets it in math ([`super::tex::sentence`]): `for all
 /// `m, n ≥ 0`, from the ladder function `Z`` (the formulas were bare prose).
 fn sentence(s: &str) -> String {
-    let words: Vec<String> = super::tex::sentence_words(s)
-        .iter()
-        .map(|word| {
-            word.iter()
-                .map(|piece| match piece {
-                    Piece::Prose(p) => prose(p),
-                    // A number alone reads as prose: `12 claims`, not a code span.
-                    Piece::Formula(f) if f.chars().all(|c| c.is_ascii_digit() || c == '.') => {
-                        prose(f)
-                    }
-                    Piece::Formula(f) => code(f),
-                })
-                .collect()
-        })
-        .collect();
-    words.join(" ")
+    set_sentence(s, |piece| match piece {
+        Piece::Prose(p) => prose(p),
+        // A number alone reads as prose: `12 claims`, not a code span.
+        Piece::Formula(f) if f.chars().all(|c| c.is_ascii_digit() || c == '.') => prose(f),
+        Piece::Formula(f) => code(f),
+    })
 }
 
 /// Prose for Markdown: `<`, `>` and `&` outside code spans written as entities, so that a
@@ -78,18 +68,26 @@ fn prose(s: &str) -> String {
     let mut out = String::with_capacity(s.len());
     let mut in_code = false;
     for c in s.chars() {
-        match (c, in_code) {
-            ('`', _) => {
+        match (c, in_code, entity(c)) {
+            ('`', _, _) => {
                 in_code = !in_code;
                 out.push(c);
             }
-            ('<', false) => out.push_str("&lt;"),
-            ('>', false) => out.push_str("&gt;"),
-            ('&', false) => out.push_str("&amp;"),
+            (_, false, Some(e)) => out.push_str(e),
             _ => out.push(c),
         }
     }
     out
+}
+
+/// The entity Markdown prose writes `c` as, where `c` would read as HTML: `<`, `>`, `&`.
+fn entity(c: char) -> Option<&'static str> {
+    match c {
+        '<' => Some("&lt;"),
+        '>' => Some("&gt;"),
+        '&' => Some("&amp;"),
+        _ => None,
+    }
 }
 
 /// A name of the user's (a claim's id) as Markdown shows it literally: the punctuation that
@@ -98,14 +96,12 @@ fn prose(s: &str) -> String {
 fn literal(s: &str) -> String {
     let mut out = String::with_capacity(s.len());
     for c in s.chars() {
-        match c {
-            '\\' | '`' | '*' | '_' | '[' | ']' | '|' | '~' | '#' => {
+        match (c, entity(c)) {
+            ('\\' | '`' | '*' | '_' | '[' | ']' | '|' | '~' | '#', _) => {
                 out.push('\\');
                 out.push(c);
             }
-            '<' => out.push_str("&lt;"),
-            '>' => out.push_str("&gt;"),
-            '&' => out.push_str("&amp;"),
+            (_, Some(e)) => out.push_str(e),
             _ => out.push(c),
         }
     }

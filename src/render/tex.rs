@@ -380,16 +380,18 @@ pub fn math_with(s: &str, names: &Names) -> String {
 /// );
 /// ```
 pub fn sentence(s: &str) -> String {
+    set_sentence(s, |piece| match piece {
+        Piece::Prose(p) => text(p),
+        Piece::Formula(f) => format!("${}$", math(f)),
+    })
+}
+
+/// A sentence of prose and formulas with each of its pieces ([`sentence_words`]) set by
+/// `set`, its words apart by spaces: [`sentence`] in LaTeX, and Markdown's with code spans.
+pub(crate) fn set_sentence(s: &str, set: impl Fn(&Piece) -> String) -> String {
     let words: Vec<String> = sentence_words(s)
         .iter()
-        .map(|word| {
-            word.iter()
-                .map(|piece| match piece {
-                    Piece::Prose(p) => text(p),
-                    Piece::Formula(f) => format!("${}$", math(f)),
-                })
-                .collect()
-        })
+        .map(|word| word.iter().map(&set).collect())
         .collect();
     words.join(" ")
 }
@@ -404,7 +406,7 @@ pub(crate) enum Piece {
 /// A sentence that mixes prose and formulas as its words, set apart by spaces, each the
 /// pieces it is written in: runs of prose words are prose, runs of anything else formulas
 /// (what [`sentence`] sets in LaTeX, and Markdown in code spans).
-pub(crate) fn sentence_words(s: &str) -> Vec<Vec<Piece>> {
+fn sentence_words(s: &str) -> Vec<Vec<Piece>> {
     let is_prose = |chunk: &str| {
         let w = chunk.trim_end_matches([',', '.', ';', ':']);
         !w.is_empty()

@@ -494,11 +494,11 @@ fn written_in_functions(file: &LoadedSystem, table: &BracketTable) -> Vec<Equati
                 .filter(|&v| ring.variable(v).kind() != VarKind::Parameter)
                 .map(|v| (v, ring.variable(v).name()))
                 .collect();
-            let linear = p.terms().all(|t| {
-                let exponents = t.exponents();
-                let degree: i64 = functions.iter().map(|(v, _)| exponents[v.index()]).sum();
-                degree <= 1
-            });
+            let kinds: Vec<VarKind> = functions
+                .iter()
+                .map(|&(v, _)| ring.variable(v).kind())
+                .collect();
+            let linear = p.total_degree(&kinds).unwrap_or(0) <= 1;
             let listed = functions
                 .iter()
                 .filter(|(v, _)| p.contains(*v))

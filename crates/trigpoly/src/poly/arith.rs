@@ -221,10 +221,7 @@ fn monomial<C: Coefficient>(p: &Poly<C>, k: usize, w: usize) -> &[u64] {
 impl<C: Coefficient> Mul<&Rational> for Poly<C> {
     type Output = Poly<C>;
     fn mul(mut self, q: &Rational) -> Poly<C> {
-        if q.is_zero() || self.is_zero() {
-            return Poly::zero(&self.vars);
-        }
-        self.content = &self.content * q;
+        self *= q;
         self
     }
 }
