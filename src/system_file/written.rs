@@ -5,7 +5,7 @@
 use brackets::closure::{expressed_in, ClosureOptions};
 use brackets::search::GENERIC_VALUES;
 use brackets::{Condition, NamedFunction};
-use trigpoly::{Expr, Rational, VarKind};
+use trigpoly::{Expr, Rational, Var, VarKind};
 
 use super::LoadedSystem;
 
@@ -17,13 +17,10 @@ const DEGREES: [u32; 2] = [3, 2];
 /// to 20.
 const MAX_MONOMIALS: u128 = 231;
 
-/// The degree in the parameters of the coefficients of the last search, which keeps them
-/// symbolic.
-const PARAMETERS_DEGREE: u32 = 2;
-
-/// The most monomials, products of the functions' and the parameters' monomials, that the
-/// last search may take.
-const MAX_SYMBOLIC_MONOMIALS: u128 = 2_000;
+/// The searches with the parameters kept symbolic, tried in turn: the degree of the
+/// coefficients in the parameters, and the most monomials (products of the functions' and the
+/// parameters' monomials) the search may take.
+const SYMBOLIC_SEARCHES: [(u32, usize); 2] = [(2, 2_000), (4, 10_000)];
 
 /// The most terms of an expression that is sought so: a longer one (a tower's residual, of a
 /// million terms) is read as it is, not written into rows for the linear algebra.
@@ -148,28 +145,36 @@ impl LoadedSystem {
                         // The other parameters stay at the generic values.
                         let mut fixed = generic.fixed.clone();
                         fixed.retain(|(v, _)| !e.contains(*v));
-                        let symbolic = system
+                        let kept: Vec<Var> = system
                             .vars()
                             .vars()
                             .filter(|&v| {
                                 system.vars().variable(v).kind() == VarKind::Parameter
                                     && e.contains(v)
                             })
-                            .fold(
-                                ClosureOptions {
-                                    fixed,
-                                    max_monomials: MAX_SYMBOLIC_MONOMIALS as usize,
-                                    ..generic.clone()
-                                },
-                                |o, v| o.symbolic(v, PARAMETERS_DEGREE),
-                            );
-                        match symbolic.symbolic.is_empty() {
-                            true => None,
-                            false => match search(&symbolic) {
-                                Search::Written(poly) => Some(poly),
-                                _ => None,
-                            },
+                            .collect();
+                        if kept.is_empty() {
+                            return None;
                         }
+                        // Low degree first, which the monomial limit refuses the least:
+                        // most brackets need no more (`{K, Q} = 256ω²αβ H_x + …` of the
+                        // caged oscillator needs degree 4).
+                        SYMBOLIC_SEARCHES
+                            .into_iter()
+                            .find_map(|(degree, max_monomials)| {
+                                let symbolic = kept.iter().fold(
+                                    ClosureOptions {
+                                        fixed: fixed.clone(),
+                                        max_monomials,
+                                        ..generic.clone()
+                                    },
+                                    |o, &v| o.symbolic(v, degree),
+                                );
+                                match search(&symbolic) {
+                                    Search::Written(poly) => Some(poly),
+                                    _ => None,
+                                }
+                            })
                     }
                 }
             }

@@ -3037,6 +3037,37 @@ expect = "refuted"
     );
 }
 
+/// A bracket or a residual whose coefficients are of degree 4 in the parameters is written in
+/// the functions too, where α and β of one weight keep the fit at fixed values from lifting:
+/// the caged oscillator's `{K, Q}` (its algebra's claim), the residual of a false `{K, Q}`
+/// (`512ω²αβ H_x`, twice the sign-turned term), and that of `{W_{3,1}, H} = 0`
+/// (`2iω A³B̄ = 2iω A (C + 4iω Q)`). At degree 2 in the parameters, all three were long
+/// polynomials in the phase variables.
+#[test]
+fn coefficients_of_degree_four_in_the_parameters_are_written() {
+    let file = "systems/caged-oscillator-1-2.toml";
+    let bracket = run(&["bracket", file, "K", "Q"], 0);
+    assert!(
+        bracket.contains("= 256ω²αβ H_x + 16ω²α K − 128β H_x³ + 16 H H_x K − 24 H_x² K\n"),
+        "{bracket}"
+    );
+    let v: Value =
+        serde_json::from_str(&run(&["check", file, "--format", "json"], 0)).expect("JSON");
+    let written: Vec<(&str, &str)> = v["claims"]
+        .as_array()
+        .expect("claims")
+        .iter()
+        .filter_map(|c| Some((c["id"].as_str()?, c["residual_in_functions"].as_str()?)))
+        .collect();
+    assert_eq!(
+        written,
+        vec![
+            ("false-1-3-ratio", "-8*omega^2*A*Q + 2*i*omega*A*C"),
+            ("false-algebra", "512*omega^2*alpha*beta*Hx"),
+        ]
+    );
+}
+
 /// Where the functions have relations, a residual has several polynomials in them; the one
 /// with the fewest monomials is written. Kepler's `A_x² + A_y² = k² + 2 H L²/M` would
 /// otherwise turn the missing `/M`'s `2 H L²/M − 2 H L²` into `M k² − M A_x² − …`, and the

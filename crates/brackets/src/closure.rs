@@ -400,7 +400,7 @@ pub fn closure_of(
             span::restrict(condition, bracket)
         })
         .collect::<Result<_, _>>()?;
-    let span = Span::new(system, g_sym, &b_sym, options)?;
+    let span = Span::new(system, g_sym, &b_sym, options, None)?;
     timings.monomials = (span.expanded - start).as_secs_f64();
 
     // Relations: the kernel, in column order (exact).
@@ -584,7 +584,7 @@ pub fn expressed_in(
     let target = span::restrict(condition, target.clone())?;
     let scaling = scaling_of(system, generators, condition)?;
     let parts = homogeneous_parts(&scaling, &target)?;
-    let span = Span::new(system, g_sym, &parts, options)?;
+    let span = Span::new(system, g_sym, &parts, options, Some(&scaling))?;
     let Some(solutions) = express_targets(&span.columns, span.nrows, &span.targets)
         .into_iter()
         .collect::<Option<Vec<_>>>()
@@ -1133,6 +1133,50 @@ mod tests {
             .expect("a polynomial in the generators");
         assert!(found.symbolic);
         assert_eq!(found.poly.to_string(), "M L − ω² L");
+    }
+
+    /// With symbolic parameters, a target is sought among the monomials of its own weight
+    /// only (the weights under which the fixed parameters weigh zero): `{G1, G2} = −ω² L`
+    /// of the rotor with `M, ω` symbolic to degree 4 takes a fraction of the columns, and
+    /// is found as before; with `M` fixed (weighing zero), the weights left still grade.
+    #[test]
+    fn a_target_is_sought_among_the_monomials_of_its_weight() {
+        let rotor = systems::harmonic_rotor();
+        let generators: Vec<NamedFunction> = ["F1", "F2", "L", "G1"]
+            .iter()
+            .map(|n| NamedFunction::new(n, n, rotor.get(n).unwrap().clone()))
+            .collect();
+        let target = rotor
+            .bracket(rotor.get("G1").unwrap(), rotor.get("G2").unwrap())
+            .unwrap();
+        let columns = |options: &ClosureOptions, graded: bool| {
+            let g_sym = span::restricted_generators(&rotor, &generators, None).unwrap();
+            let scaling = scaling_of(&rotor, &generators, None).unwrap();
+            let parts = homogeneous_parts(&scaling, &target).unwrap();
+            let span = Span::new(&rotor, g_sym, &parts, options, graded.then_some(&scaling));
+            span.unwrap().monos.len()
+        };
+        let symbolic = ClosureOptions::new(2)
+            .symbolic(rotor.var("M"), 4)
+            .symbolic(rotor.var("omega"), 4);
+        let all = columns(&symbolic, false);
+        let graded = columns(&symbolic, true);
+        assert_eq!(all, 15 * 15);
+        assert!(graded * 10 < all, "{graded} of {all}");
+        let m_fixed = ClosureOptions::new(2).symbolic(rotor.var("omega"), 4);
+        let graded_m_fixed = columns(&m_fixed, true);
+        assert!(
+            graded_m_fixed * 5 < 15 * 5,
+            "{graded_m_fixed} of {}",
+            15 * 5
+        );
+        for options in [symbolic, m_fixed] {
+            let found = expressed_in(&rotor, &generators, &target, &options)
+                .unwrap()
+                .expect("a polynomial in the generators");
+            assert!(found.symbolic);
+            assert_eq!(found.poly.to_string(), "−ω² L");
+        }
     }
 
     /// A generator named twice is refused in those words (the ring of generators said

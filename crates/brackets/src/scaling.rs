@@ -234,6 +234,38 @@ impl Scaling {
         it.all(|w| w == first).then_some(first)
     }
 
+    /// The weights of this basis under which every one of `vars` weighs zero: those that
+    /// still grade a computation made with these variables fixed to values.
+    pub fn with_zero_weights(&self, vars: &[Var]) -> Scaling {
+        let columns: Vec<SparseVec<Rational>> = self
+            .basis
+            .iter()
+            .map(|w| {
+                vars.iter()
+                    .enumerate()
+                    .filter(|(_, v)| !w[v.index()].is_zero())
+                    .map(|(row, v)| (row, w[v.index()].clone()))
+                    .collect()
+            })
+            .collect();
+        let basis = kernel(&columns, vars.len())
+            .into_iter()
+            .map(|combination| {
+                let mut w = vec![Rational::zero(); self.vars.len()];
+                for (i, c) in combination {
+                    for (x, b) in w.iter_mut().zip(&self.basis[i]) {
+                        *x += &(c.clone() * b);
+                    }
+                }
+                w
+            })
+            .collect();
+        Scaling {
+            vars: self.vars.clone(),
+            basis,
+        }
+    }
+
     /// A lifter for the given fixed parameter values, if the weights determine every one of
     /// those parameters' exponents (the parameter part of the weights has full column rank).
     /// Parameters given a value of zero cannot be lifted.
