@@ -322,6 +322,21 @@ const COMMANDS: &[(&str, &str)] = &[
         "superint closure systems/caged-oscillator-1-2.toml H Hx K Q --degree 4 \
          --symbolic omega,alpha,beta --parameters-degree 7",
     ),
+    (
+        "higgs-search",
+        "superint search systems/higgs-oscillator.toml --momenta-degree 2 --positions-degree 4 \
+         --symbolic lambda,omega --parameters-degree 2 --new-only",
+    ),
+    (
+        "higgs-closure",
+        "superint closure systems/higgs-oscillator.toml H L K T12 --degree 4 \
+         --symbolic lambda,omega --parameters-degree 2",
+    ),
+    (
+        "higgs-closure-tensor",
+        "superint closure systems/higgs-oscillator.toml H L T11 T12 T22 --degree 2 \
+         --symbolic lambda,omega --parameters-degree 2",
+    ),
 ];
 
 /// The words of a command line, single quotes grouping.
@@ -3146,6 +3161,124 @@ fn caged_oscillator_quartic_and_quintic_integrals_and_their_polynomial_algebra()
             "{K, Q} = 256ω²αβ H_x + 16ω²α K − 128β H_x³ + 16 H H_x K − 24 H_x² K [B3 proved]",
             "128ω⁴α²β + 16ω²α H K + 4ω² K² + 32β H_x⁴ + 8 H_x³ K + Q² = 128ω²αβ H_x² \
              + 16ω²α H_x K + 8 H H_x² K [R1 proved]",
+        ],
+    );
+}
+
+/// The Higgs oscillator, the isotropic oscillator on the sphere of curvature `λ` in gnomonic
+/// coordinates, loaded and checked: every claim of the file holds for every `λ, ω` (its
+/// Hamiltonian is Higgs's `(π² + λL²)/2 + ω²r²/2`, the rotations `{π_x, π_y} = λL`, `L` and the
+/// Higgs tensor conserved, the tensor's quadratic algebra and the cubic Higgs algebra with its
+/// Casimir, the ranks, the plane at `λ = 0`), and each of its eight false neighbours is refuted:
+/// the flat Fradkin component, the tensor under the Hamiltonian without its factor `1 + λr²`,
+/// `π` with its sign turned, the cubic term's sign, the term `2λHL` halved, the flat
+/// `{T11, T12}`, the Casimir without its `λ` terms, and rank 4.
+#[test]
+fn higgs_oscillator_claims_are_proved_and_its_false_neighbours_refuted() {
+    let file = system_file("higgs-oscillator.toml");
+    let report = superint::system_file::check_report([&file]).expect("checked");
+    assert!(report.all_as_expected());
+    let proved = |id: &str| (id.to_string(), true);
+    let refuted = |id: &str| (id.to_string(), false);
+    assert_eq!(
+        report.claim_ids(),
+        [
+            proved("higgs-form"),
+            proved("rotations"),
+            proved("angular"),
+            proved("tensor"),
+            proved("found"),
+            proved("trace"),
+            proved("algebra"),
+            proved("higgs-algebra"),
+            proved("relation"),
+            proved("rank"),
+            proved("limit-plane"),
+            refuted("false-fradkin"),
+            refuted("false-conformal-factor"),
+            refuted("false-momentum-sign"),
+            refuted("false-cubic-sign"),
+            refuted("false-cubic-coefficient"),
+            refuted("false-flat-algebra"),
+            refuted("false-relation"),
+            refuted("false-rank"),
+        ]
+    );
+    // The factor 1 + λr² is the sphere's: without it the tensor is conserved only at λ = 0.
+    let parse = |s: &str| file.parse_argument(s).expect("parses");
+    let flat_metric = brackets::System::new(
+        "the Higgs oscillator without 1 + λr²",
+        file.system().space().clone(),
+        parse("(p_x^2 + p_y^2 + lambda*(x*p_x + y*p_y)^2)/2 + omega^2*(x^2 + y^2)/2"),
+    );
+    for t in ["T11", "T12", "T22"] {
+        assert!(file.system().flow(&parse(t)).unwrap().is_zero(), "{t}");
+        assert!(!flat_metric.flow(&parse(t)).unwrap().is_zero(), "{t}");
+    }
+}
+
+/// The Higgs oscillator: up to second order in the momenta and fourth in the positions, for
+/// every `λ, ω`, the file's `H`, `L` and the Higgs tensor generate every integral; from `H`
+/// alone the search finds `L` and the tensor's components `T22` and `T12`, which read back as
+/// the file's functions. With `K = (T11 − T22)/2` they close into the cubic Higgs algebra,
+/// `{K, T12} = 2ω²L + 2λHL − λ²L³`, tied by one relation of degree 4, the Casimir
+/// `K² + T12² = (H − λL²/2)² − ω²L²`; in the tensor's components the brackets are quadratic,
+/// with `T11 + T22 = 2H − λL²` and `T11 T22 − T12² = ω²L²` among the relations.
+#[test]
+fn higgs_oscillator_tensor_found_from_h_alone_and_its_cubic_higgs_algebra() {
+    expect(
+        "higgs-search",
+        &[
+            "540 unknowns",
+            "(a parameter's multiple of an integral counts apart from it): 21.",
+            "≤ 0: 6, ≤ 1: 12, ≤ 2: 21.",
+            "Known integrals in the space: H, L, T_11, T_12, T_22, K.",
+            "None: the known integrals generate every integral in the space.",
+        ],
+    );
+    let text = run_on_hamiltonian_alone("higgs-search");
+    let t22 = "λ²x²y² p_x² + 2λ²xy³ p_x p_y + 2λxy p_x p_y + λ²y⁴ p_y² + 2λy² p_y² + p_y² + ω²y²";
+    let t12 = "λ²x³y p_x² + 2λ²x²y² p_x p_y + λx² p_x p_y + λ²xy³ p_y² + λxy p_x² + λxy p_y² \
+               + λy² p_x p_y + p_x p_y + ω²xy";
+    for piece in [
+        "Known integrals in the space: H.".to_string(),
+        "I7 = x p_y − y p_x".to_string(),
+        format!("I19 = {t22}"),
+        format!("I20 = {t12}"),
+        "4 claims: 4 proved, 0 refuted".to_string(),
+    ] {
+        assert!(text.contains(&normalize(&piece)), "{piece}: {text}");
+    }
+    assert_eq!(text.matches(" = 0 [I").count(), 3, "{text}");
+    // The integrals found, read back as printed, are the file's T22 and T12.
+    let file = system_file("higgs-oscillator.toml");
+    let parse = |s: &str| file.parse_argument(s).expect("parses");
+    assert_eq!(parse(t22), parse("T22"));
+    assert_eq!(parse(t12), parse("T12"));
+    assert_eq!(parse("T11"), parse("2*H - lambda*L^2 - T22"));
+    expect(
+        "higgs-closure",
+        &[
+            "The table closes",
+            "{L, K} = 2 T_12 [B1 proved]",
+            "{L, T_12} = −2 K [B2 proved]",
+            "{K, T_12} = −λ² L³ + 2λ H L + 2ω² L [B3 proved]",
+            "λ² L⁴ + 4 H² = 4λ H L² + 4ω² L² + 4 K² + 4 T_12² [R1 proved]",
+            "4 claims: 4 proved, 0 refuted",
+        ],
+    );
+    expect(
+        "higgs-closure-tensor",
+        &[
+            "The table closes",
+            "{L, T_11} = 2 T_12 [B1 proved]",
+            "{L, T_12} = −T_11 + T_22 [B2 proved]",
+            "{L, T_22} = −2 T_12 [B3 proved]",
+            "{T_11, T_12} = 2λ L T_11 + 2ω² L [B4 proved]",
+            "{T_11, T_22} = 4λ L T_12 [B5 proved]",
+            "{T_12, T_22} = 2λ L T_22 + 2ω² L [B6 proved]",
+            "λ L² + T_11 + T_22 = 2 H [R1 proved]",
+            "ω² L² + T_12² = T_11 T_22 [R3 proved]",
         ],
     );
 }
