@@ -566,32 +566,42 @@ impl Report {
         // `A ({x, H} = p_x + 1; section 2)`.
         let shared =
             |s: u32, id: &str| claims.iter().filter(|(t, c)| *t == s && c.id == id).count() > 1;
+        let named = |(s, c): &(u32, &ClaimResult)| {
+            let mut notes = Vec::new();
+            if shared(*s, &c.id) {
+                notes.push(brief_statement(&c.statement));
+            }
+            if files > 1 {
+                notes.push(format!("section {s}"));
+            }
+            match notes.is_empty() {
+                true => c.id.clone(),
+                false => format!("{} ({})", c.id, notes.join("; ")),
+            }
+        };
+        // A claim a limit stopped is neither as expected nor against it: it is named apart.
         let unexpected: Vec<String> = claims
             .iter()
-            .filter(|(_, c)| !c.meets_expectation())
-            .map(|(s, c)| {
-                let mut notes = Vec::new();
-                if shared(*s, &c.id) {
-                    notes.push(brief_statement(&c.statement));
-                }
-                if files > 1 {
-                    notes.push(format!("section {s}"));
-                }
-                match notes.is_empty() {
-                    true => c.id.clone(),
-                    false => format!("{} ({})", c.id, notes.join("; ")),
-                }
-            })
+            .filter(|(_, c)| c.undecided.is_none() && !c.meets_expectation())
+            .map(named)
             .collect();
-        let verdict = if unexpected.is_empty() {
-            "all as expected".to_string()
-        } else {
-            format!(
+        let stopped: Vec<String> = claims
+            .iter()
+            .filter(|(_, c)| c.undecided.is_some())
+            .map(named)
+            .collect();
+        let mut verdict = match (unexpected.is_empty(), stopped.is_empty()) {
+            (true, true) => "all as expected".to_string(),
+            (true, false) => "the decided ones as expected".to_string(),
+            (false, _) => format!(
                 "{} NOT as expected: {}",
                 unexpected.len(),
                 unexpected.join(", ")
-            )
+            ),
         };
+        if !stopped.is_empty() {
+            verdict.push_str(&format!("; undecided: {}", stopped.join(", ")));
+        }
         let files = counted(files, "file");
         let count = counted(claims.len(), "claim");
         let undecided = match outcomes(ClaimOutcome::Undecided) {

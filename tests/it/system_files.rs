@@ -2413,8 +2413,8 @@ fn check_goes_on_past_a_bad_file() {
     // The claim past the limit is undecided; the file's section is reported.
     assert!(
         stdout.ends_with(
-            "11 claims in 2 files: 7 proved, 3 refuted, 1 undecided; 1 NOT as expected: \
-             #1 (section 2)\n"
+            "11 claims in 2 files: 7 proved, 3 refuted, 1 undecided; the decided ones as \
+             expected; undecided: #1 (section 2)\n"
         ),
         "{stdout}"
     );
@@ -2514,7 +2514,8 @@ fn check_reports_a_claim_past_a_limit_undecided() {
         "[su2 proved]",
         "[false refuted, as expected]",
         "[rank proved]",
-        "4 claims in 1 file: 2 proved, 1 refuted, 1 undecided; 1 NOT as expected: big\n",
+        "4 claims in 1 file: 2 proved, 1 refuted, 1 undecided; the decided ones as expected; \
+         undecided: big\n",
     ] {
         assert!(stdout.contains(said), "{said}\n{stdout}");
     }
@@ -2598,6 +2599,37 @@ fn check_reports_a_claim_past_a_limit_undecided() {
     assert_eq!(o.status.code(), Some(1), "{}", text(&o.stderr));
     assert!(stdout.contains("[big REFUTED]"), "{stdout}");
     assert!(!stdout.contains("UNDECIDED"), "{stdout}");
+}
+
+/// The summary names a claim a limit stopped apart from one that is decided against its
+/// expectation: the first may hold, the second is wrong as written.
+#[test]
+fn the_summary_names_undecided_claims_apart_from_unexpected_ones() {
+    let dir = scratch("undecided-and-unexpected");
+    let file = dir.join("both.toml");
+    std::fs::write(
+        &file,
+        "hamiltonian = \"(p_x^2 + p_y^2)/2 + (x^2 + y^2)/2\"\n\
+         [phase_space]\ncoordinates = [\"x\", \"y\"]\n\
+         [[claim]]\nid = \"big\"\nclaim = \"{x*p_y - y*p_x, (1 + x + y + p_x + p_y)^20} = 0\"\n\
+         [[claim]]\nid = \"wrong\"\nclaim = \"{x, H} = 0\"\n\
+         [[claim]]\nid = \"right\"\nclaim = \"{x*p_y - y*p_x, H} = 0\"\n",
+    )
+    .expect("write both.toml");
+    let file = file.to_str().expect("a path");
+    let o = superint_in(
+        root(),
+        &["check", file, "--no-timings", "--max-terms", "1000"],
+    );
+    assert_eq!(o.status.code(), Some(2), "{}", text(&o.stderr));
+    let stdout = text(&o.stdout);
+    assert!(
+        stdout.ends_with(
+            "3 claims in 1 file: 1 proved, 1 refuted, 1 undecided; 1 NOT as expected: wrong; \
+             undecided: big\n"
+        ),
+        "{stdout}"
+    );
 }
 
 /// A LaTeX report's section heading holds the file's path, which fits the page wherever the
