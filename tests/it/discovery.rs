@@ -2323,6 +2323,162 @@ fn functions_of_the_angles_alone_generate_by_their_trigonometric_order() {
     }
 }
 
+/// The oscillator `(p_x² + p_y²)/2 + ω²(x² + y²)/2 + gy` about its shifted centre
+/// `y' = y + g/ω²`, with `H_y = p_y²/2 + ω²y'²/2` named: with `ω, g` kept symbolic it is known
+/// through `ω²H_y = ω²p_y²/2 + ω⁴y²/2 + ω²gy + g²/2`, of degree 4 in them.
+const SHIFTED_OSCILLATOR: &str = "name = \"shifted oscillator\"\n\
+    hamiltonian = \"(p_x^2 + p_y^2)/2 + omega^2*(x^2 + y^2)/2 + g*y\"\n\
+    [phase_space]\ncoordinates = [\"x\", \"y\"]\nparameters = [\"omega\", \"g\"]\n\
+    [[function]]\nname = \"Hy\"\nvalue = \"p_y^2/2 + omega^2*(y + g/omega^2)^2/2\"\n";
+
+/// The `--new-only` search of the shifted oscillator at momenta and positions `≤ 2` with
+/// `ω, g` symbolic of degree `≤ parameters_degree`, over Q alone if `exact`: the basis
+/// integrals, each with whether it is new.
+fn shifted_oscillator_new(
+    file: &superint::system_file::LoadedSystem,
+    parameters_degree: u32,
+    exact: bool,
+) -> Vec<(Expr, bool)> {
+    let var = |name: &str| file.system().vars().lookup(name).expect("a parameter");
+    let space = SearchSpace::new(2, 2, 0).parameters_degree(parameters_degree);
+    let mut options = SearchOptions::new(space)
+        .symbolic(var("omega"))
+        .symbolic(var("g"))
+        .new_only();
+    if exact {
+        options = options.exact_complement();
+    }
+    let found = search(file.system(), &options).expect("searches");
+    let new = found.new.expect("--new-only").new;
+    (found.basis.iter().enumerate())
+        .map(|(i, f)| (f.expr().clone(), new.contains(&i)))
+        .collect()
+}
+
+/// With parameters kept symbolic, an integral whose multiple by a monomial in them is
+/// generated is not new: `p_y² + ω²y² + 2gy = 2H_y − g²/ω²` and
+/// `ω²L² − 2gLp_x − g²x² = ((ω²L − gp_x)² − g²(p_x² + ω²x²))/ω²` (`L = x p_y − y p_x`), whose
+/// multiples by `ω²` are sums of known integrals, constants, products and their parameter
+/// multiples, were reported new beside `ω²L − gp_x` and `p_x p_y + ω²xy + gx` (4 of 45, where
+/// over the rational functions in `ω, g` the quadratic integrals `H_x`, `H_y`, `L'`, `G'`
+/// hold two beyond `H` and `H_y`). Those two stay new. At parameters degree 2 `ω²H_y` lies
+/// outside the space, which knows `H` alone, and the four are new there.
+#[test]
+fn integrals_generated_once_divided_by_a_parameter_are_not_new() {
+    let path = crate::scratch_text("discovery", "shifted-oscillator.toml", SHIFTED_OSCILLATOR);
+    let path = path.to_str().expect("a UTF-8 path");
+    let file = loaded(path);
+    let divided = [
+        "p_y^2 + omega^2*y^2 + 2*g*y",
+        "omega^2*x^2*p_y^2 - 2*omega^2*x*y*p_x*p_y - 2*g*x*p_x*p_y + omega^2*y^2*p_x^2 \
+         + 2*g*y*p_x^2 - g^2*x^2",
+    ];
+    let genuinely_new = [
+        "omega^2*x*p_y - omega^2*y*p_x - g*p_x",
+        "p_x*p_y + omega^2*x*y + g*x",
+    ];
+    for exact in [false, true] {
+        let found = shifted_oscillator_new(&file, 4, exact);
+        assert_eq!(found.len(), 45);
+        for f in divided {
+            assert!(!is_new(&file, &found, f), "{f} is generated");
+        }
+        for f in genuinely_new {
+            assert!(is_new(&file, &found, f), "{f} is new");
+        }
+        assert_eq!(found.iter().filter(|f| f.1).count(), 2);
+        // Where the multiple `ω²H_y` lies outside the space nothing is divided.
+        let found = shifted_oscillator_new(&file, 2, exact);
+        assert_eq!(found.len(), 11);
+        for f in divided.iter().chain(&genuinely_new) {
+            assert!(
+                is_new(&file, &found, f),
+                "{f} is new at parameters degree 2"
+            );
+        }
+        assert_eq!(found.iter().filter(|f| f.1).count(), 4);
+    }
+    // The command says so, and why.
+    for exact in [false, true] {
+        let mut args = vec![
+            "search",
+            path,
+            "--momenta-degree",
+            "2",
+            "--positions-degree",
+            "2",
+            "--trig-degree",
+            "0",
+            "--symbolic",
+            "omega,g",
+            "--parameters-degree",
+            "4",
+            "--new-only",
+        ];
+        if exact {
+            args.push("--exact-complement");
+        }
+        let (v, text) = json_and_text(&args);
+        for expected in [
+            "Below, parameter multiples of integrals count as generated, and so does an \
+             integral whose multiple by a monomial in ω, g lies in the space and is generated \
+             by the rule below and this one: K/ω is not new where K is generated.",
+            "Known integrals in the space: H, Hy.",
+            "the generated ones span 43 of the 45 dimensions",
+            "New integrals: I16 = ω²x p_y − ω²y p_x − g p_x I23 = p_x p_y + ω²xy + gx \
+             {I16, H} = 0",
+        ] {
+            assert!(text.contains(expected), "{text}");
+        }
+        assert_eq!(v["searches"][0]["shown"], serde_json::json!(["I16", "I23"]));
+    }
+}
+
+/// The rotor under gravity with `ω, g` symbolic (docs/results.md, "Symbolic parameters"): at
+/// parameters degree 4 the known `G2' = G2 − Mgy − Mg²/(2ω²)` enters as `ω²G2'`, and
+/// `p_y² + M²ω²y² + 2M²gy = M(H − F2 − G2') − M²g²/(2ω²)` and the quartic
+/// `((ω²L')² − g²(p_x² + M²ω²x²))/ω²` are generated, which were reported new; at degree 2,
+/// without `ω²G2'`, both stay new.
+#[test]
+fn gravity_rotor_integrals_divided_by_omega_squared_are_generated() {
+    let search = |degree: &str| {
+        json_and_text(&[
+            "search",
+            "systems/gravity-rotor.toml",
+            "--momenta-degree",
+            "2",
+            "--positions-degree",
+            "2",
+            "--trig-degree",
+            "0",
+            "--symbolic",
+            "omega,g",
+            "--parameters-degree",
+            degree,
+            "--new-only",
+        ])
+    };
+    let (v, text) = search("4");
+    for expected in [
+        "Known integrals in the space: H, F2, Ω, L', G1', G2'.",
+        "the generated ones span the whole space (81 dimensions).",
+        "None: the known integrals generate every integral in the space.",
+    ] {
+        assert!(text.contains(expected), "{text}");
+    }
+    assert_eq!(v["searches"][0]["shown"], serde_json::json!([]));
+    let (v, text) = search("2");
+    for expected in [
+        "Known integrals in the space: H, F2, Ω, L', G1'.",
+        "the generated ones span 22 of the 24 dimensions",
+        "New integrals: I15 = p_y² + M²ω²y² + 2M²gy I24 = ω²x² p_y² − 2ω²xy p_x p_y − \
+         2gx p_x p_y + ω²y² p_x² + 2gy p_x² − M²g²x²",
+    ] {
+        assert!(text.contains(expected), "{text}");
+    }
+    assert_eq!(v["searches"][0]["shown"], serde_json::json!(["I15", "I24"]));
+}
+
 /// Products of integrals count only when each factor's grade is below the integral's: `p_b`
 /// and `cos(a − b)` are products of integrals, but of higher grades, and stay new. Stamping a
 /// product by its least factor, or by its own grade, would call them generated.

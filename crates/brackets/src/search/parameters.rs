@@ -201,6 +201,8 @@ pub(super) fn free_parameters(
 
 /// A parameter multiple `a·X` of an integral `X` of the space that lies in the space.
 pub(super) struct Multiple {
+    /// The parameter `a`.
+    pub(super) by: Var,
     /// The coordinates of `X` among the unknowns.
     pub(super) of: SparseVec<Rational>,
     /// The coordinates of `a·X`.
@@ -254,6 +256,7 @@ pub(super) fn parameter_multiples(
                 }
             }
             out.push(Multiple {
+                by: a,
                 of: sum_by_index(of),
                 multiple: sum_by_index(multiple),
             });

@@ -41,10 +41,13 @@ impl Integral {
 /// momenta, then by their trigonometric order (the largest such pair among a function's
 /// terms, compared in that order); an integral of grade `g` is generated when it is a sum of
 /// known integrals, constants, products of at least two integrals of grade below `g` and, with
-/// parameters kept symbolic, parameter multiples of integrals of grade `≤ g`. The grades form
-/// a filtration (a product's grade is at most the sum of its factors'), so where `cos(a − b)`
-/// and `p_b` are integrals, `cos 2(a − b) = 2cos²(a − b) − 1` and `p_b cos(a − b)` are
-/// generated; without angles the grade is the degree.
+/// parameters kept symbolic, parameter multiples of integrals of grade `≤ g`, and the integrals
+/// of the smallest space that holds the known integrals, the constants, the products and the
+/// new integrals of grade below `g`, and holds `X` and `a·X` when it holds either (`a` a
+/// parameter kept symbolic, `a·X` in the space): `F = K/ω²` is generated where `K = ω²F` is.
+/// The grades form a filtration (a product's grade is at most the sum of its factors'), so
+/// where `cos(a − b)` and `p_b` are integrals, `cos 2(a − b) = 2cos²(a − b) − 1` and
+/// `p_b cos(a − b)` are generated; without angles the grade is the degree.
 #[derive(Clone, Debug)]
 pub struct NewIntegrals {
     /// The known integrals used (named functions that are real integrals lying in the space).
