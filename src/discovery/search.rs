@@ -719,7 +719,8 @@ impl Shared {
         let (Some(m), Some(names)) = (&r.module, &self.symbolic) else {
             return None;
         };
-        // An integral that a monomial multiple of is generated is too: `K/ω²` where `K` is.
+        // An integral is generated too where a monomial multiple of it is: `K/ω²` where `K`
+        // is (the example names the first parameter).
         let first = names.split(", ").next().unwrap_or(names);
         let shown_text = if r.new.is_some() {
             format!(
