@@ -658,8 +658,9 @@ def closure_case(binary, tmp, rng):
     bracket its table writes as a polynomial in them is that bracket (SymPy expands both;
     for all values of the parameters unless superint says it holds at its values only), every
     bracket it marks `*` lies outside the span of the monomials in them (SymPy's rank), every
-    relation it prints vanishes, and together with their multiples they span every relation
-    up to the degree (SymPy's nullspace). Returns (status, message)."""
+    relation it prints vanishes, and with their multiples (by polynomials in the generators
+    within the degree, and in the symbolic parameters of degree at most theirs) they generate
+    every relation up to the degrees (SymPy's nullspace). Returns (status, message)."""
     count, degree = rng.randint(2, 5), rng.randint(1, 3)
     names = [f"G{k + 1}" for k in range(count)]
     mode = rng.choice(["plain", "plain", "lifted", "fixed", "symbolic"])
@@ -791,8 +792,10 @@ def check_closure(doc, names, texts, degree, model):
 
     # The relations: each vanishes (for every value of the parameters, unless it has a
     # condition) and is no zero polynomial. Those of the constants are one `G = c` each; the
-    # others, with their multiples that stay within the degrees, span the nullspace of the
-    # columns' expansions.
+    # others, with their multiples by monomials in the generators that stay within the degree
+    # and in the symbolic parameters up to their degree (a product may pass it: `λ·R` and
+    # `ω²·R'` may add up to a relation within it), span the nullspace of the columns'
+    # expansions.
     multiples, of_constants = [], 0
     for rid in found["relations"]:
         claim = claims[rid]
@@ -808,13 +811,19 @@ def check_closure(doc, names, texts, degree, model):
         relation = sp.expand(relation.subs(fixed))
         multiples += [sp.expand(m * nu * relation)
                       for m in monomials(varying, degree - gen_degree(relation))
-                      for nu in monomials(symbolic, s_degree - par_degree(relation))]
+                      for nu in monomials(symbolic, s_degree)]
     if of_constants != (len(constants) if degree >= 1 else 0):
         return f"{of_constants} relations of the constants {constants}"
     kernel = len(columns) - span
-    spanned = rank_of(multiples, varying + symbolic) if multiples else 0
-    if spanned != kernel:
-        return (f"the relations printed and their multiples span {spanned} of the {kernel} "
+    # The nullspace as polynomials in the generators and the symbolic parameters.
+    null = sp.Matrix(coefficient_vectors(expanded, space)).T.nullspace() if kernel else []
+    relations = [sp.expand(sum(c * m for c, m in zip(v, columns))) for v in null]
+    if len(relations) != kernel:
+        return f"SymPy finds {len(relations)} dimensions of relations, not {kernel}"
+    variables = varying + symbolic
+    spanned = rank_of(multiples, variables) if multiples else 0
+    if relations and rank_of(multiples + relations, variables) != spanned:
+        return (f"the relations printed and their multiples do not generate the {kernel} "
                 f"dimensions of relations")
     return None
 

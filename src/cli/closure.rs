@@ -30,7 +30,8 @@ Examples:
 
 Each bracket is written as a polynomial of degree ≤ D in the generators where one exists
 (coefficients Laurent monomials in the parameters), and every minimal polynomial relation of
-degree ≤ D is listed; each is checked by expanding it. On a system with denominators every
+degree ≤ D is listed (none a combination of those before it times polynomials in the
+generators and, with --symbolic, in the parameters); each is checked by expanding it. On a system with denominators every
 vector is multiplied by one common power of each and cleared of them first, so that the
 monomials the linear algebra compares are independent.";
 

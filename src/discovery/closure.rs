@@ -87,7 +87,7 @@ pub fn closure_report_for(
     let names = Names::of_system(system);
     let sections = vec![
         structure.section(&gens)?,
-        relations_section(&c, &holding, names),
+        relations_section(&c, &holding, names, !options.symbolic.is_empty()),
     ];
     Ok((
         Report {
@@ -357,12 +357,20 @@ fn bracket_claims(c: &Closure, holding: &Holding) -> Vec<Entry> {
     claims
 }
 
-/// Section 2: the minimal relations among the generators, each a claim `R1, R2, …`.
-fn relations_section(c: &Closure, holding: &Holding, names: Names) -> Section {
+/// Section 2: the minimal relations among the generators, each a claim `R1, R2, …`: none a
+/// combination of those above it (of lower degree, or of its degree and simpler) times
+/// polynomials in the generators and, when some are kept `symbolic`, in the parameters.
+fn relations_section(c: &Closure, holding: &Holding, names: Names, symbolic: bool) -> Section {
     let mut entries = vec![Entry::Text(format!(
         "The polynomial relations among the generators up to degree {}, each minimal (not a \
-         combination of multiples of lower ones), each checked by expanding it.",
-        c.degree
+         combination of those above it times polynomials in the generators{}), each checked \
+         by expanding it.",
+        c.degree,
+        if symbolic {
+            " and in the symbolic parameters"
+        } else {
+            ""
+        }
     ))];
     if c.relations.is_empty() {
         entries.push(Entry::Text("None.".into()));

@@ -223,7 +223,9 @@ fn closure_denominators_command_line() {
         flat.contains("The table closes: every bracket is a polynomial of degree ≤ 3"),
         "{out}"
     );
-    assert!(flat.contains("multiples of lower ones), each checked by expanding it. None."));
+    assert!(
+        flat.contains("times polynomials in the generators), each checked by expanding it. None.")
+    );
     assert!(flat.contains("1 claim: 1 proved, 0 refuted"), "{out}");
 
     // Under a condition on g (no denominator's variable) the same bracket, at g = 3.

@@ -5,8 +5,9 @@
 
 use std::path::Path;
 
+use brackets::closure::{closure, ClosureOptions};
 use brackets::search::{search, SearchOptions, SearchSpace};
-use superint::system_file::{load, LimitsOverride};
+use superint::system_file::{load, load_str, LimitsOverride};
 use trigpoly::{Expr, Rational};
 
 use crate::{normalize, superint, superint_refused, DEGREE_ONE};
@@ -3379,7 +3380,7 @@ fn higgs_oscillator_claims_are_proved_and_its_false_neighbours_refuted() {
 /// the file's functions. With `K = (T11 − T22)/2` they close into the cubic Higgs algebra,
 /// `{K, T12} = 2ω²L + 2λHL − λ²L³`, tied by one relation of degree 4, the Casimir
 /// `K² + T12² = (H − λL²/2)² − ω²L²`; in the tensor's components the brackets are quadratic,
-/// with `T11 + T22 = 2H − λL²` and `T11 T22 − T12² = ω²L²` among the relations.
+/// with `T11 + T22 = 2H − λL²` and `T11 T22 − T12² = ω²L²` its two relations.
 #[test]
 fn higgs_oscillator_tensor_found_from_h_alone_and_its_cubic_higgs_algebra() {
     expect(
@@ -3434,9 +3435,92 @@ fn higgs_oscillator_tensor_found_from_h_alone_and_its_cubic_higgs_algebra() {
             "{T_11, T_22} = 4λ L T_12 [B5 proved]",
             "{T_12, T_22} = 2λ L T_22 + 2ω² L [B6 proved]",
             "λ L² + T_11 + T_22 = 2 H [R1 proved]",
-            "ω² L² + T_12² = T_11 T_22 [R3 proved]",
+            "ω² L² + T_12² = T_11 T_22 [R2 proved]",
+            "8 claims: 8 proved, 0 refuted",
         ],
     );
+}
+
+/// The Higgs tensor's relations of degree 2 are two, the trace `T11 + T22 = 2H − λL²` and the
+/// determinant `T11 T22 − T12² = ω²L²`: their combination
+/// `λ T11 T22 + ω² T11 + ω² T22 = λ T12² + 2ω² H` (λ times the determinant's, ω² times the
+/// trace's) is found too, and is no longer listed as a relation of its own, as it was while the
+/// relations were minimal over Q with a parameter's multiple counting apart.
+#[test]
+fn higgs_tensor_relations_are_minimal_over_the_polynomials_in_the_parameters() {
+    let file = system_file("higgs-oscillator.toml");
+    let system = file.system();
+    let vars = system.vars();
+    let (lambda, omega) = (
+        vars.lookup("lambda").unwrap(),
+        vars.lookup("omega").unwrap(),
+    );
+    let options = ClosureOptions::new(2)
+        .symbolic(lambda, 2)
+        .symbolic(omega, 2);
+    let c = closure(system, &["H", "L", "T11", "T12", "T22"], &options).expect("computed");
+    assert!(c.closes() && c.all_symbolic());
+    let read = |s: &str| Expr::parse(&c.ring, s).expect("parses");
+    let trace = read("T11 + T22 - 2*H + lambda*L^2");
+    let determinant = read("T11*T22 - T12^2 - omega^2*L^2");
+    let listed: Vec<&Expr> = c.relations.iter().map(|r| &r.poly).collect();
+    assert_eq!(listed.len(), 2, "{:?}", c.relations);
+    for (r, e) in listed.iter().zip([&trace, &determinant]) {
+        assert!(**r == *e || **r == -e, "{r} is not ±({e})");
+    }
+    assert!(c.relations.iter().all(|r| r.degree == 2 && r.symbolic));
+    // The relation left out is the combination, an identity of the ring.
+    let combination =
+        read("lambda*T11*T22 + omega^2*T11 + omega^2*T22 - lambda*T12^2 - 2*omega^2*H");
+    let generated = read("lambda")
+        .checked_mul(&determinant)
+        .unwrap()
+        .checked_add(&read("omega^2").checked_mul(&trace).unwrap())
+        .unwrap();
+    assert_eq!(combination, generated);
+    // Each listed relation holds in phase space, read back in the file's functions.
+    for relation in [
+        "T11 + T22 - 2*H + lambda*L^2",
+        "T11*T22 - T12^2 - omega^2*L^2",
+    ] {
+        assert!(
+            file.parse_argument(relation).expect("parses").is_zero(),
+            "{relation}"
+        );
+    }
+}
+
+/// A relation of the same degree that no parameter multiple of another gives is still listed:
+/// with `P = a x` and `Q = a y + a² x`, `P = aU` and `Q = aV + aP` (the second with no
+/// multiple of the first: it has `Q` and `V`), both of degree 1, and nothing else up to degree
+/// 2 in the generators and 2 in `a` (`a²U`, `aU²`, … are multiples of the first). The
+/// kernel's vector for the second is `Q = aV + a²U`, which differs from the one listed by `a`
+/// times the first: the simpler, of lower parameters, is listed.
+#[test]
+fn an_independent_relation_of_the_same_degree_is_still_listed() {
+    let text = "name = \"independent\"\n\
+                hamiltonian = \"(p_x^2 + p_y^2)/2\"\n\
+                [phase_space]\ncoordinates = [\"x\", \"y\"]\nparameters = [\"a\"]\n\
+                [[function]]\nname = \"U\"\nvalue = \"x\"\n\
+                [[function]]\nname = \"V\"\nvalue = \"y\"\n\
+                [[function]]\nname = \"P\"\nvalue = \"a*x\"\n\
+                [[function]]\nname = \"Q\"\nvalue = \"a*y + a^2*x\"\n";
+    let file = load_str("independent.toml", text, &LimitsOverride::default()).expect("loads");
+    let system = file.system();
+    let a = system.vars().lookup("a").unwrap();
+    let options = ClosureOptions::new(2).symbolic(a, 2);
+    let c = closure(system, &["U", "V", "P", "Q"], &options).expect("computed");
+    let listed: Vec<String> = c.relations.iter().map(|r| r.poly.to_string()).collect();
+    assert_eq!(listed.len(), 2, "{listed:?}");
+    let read = |s: &str| Expr::parse(&c.ring, s).expect("parses");
+    for (r, e) in c
+        .relations
+        .iter()
+        .zip([read("P - a*U"), read("Q - a*V - a*P")])
+    {
+        assert!(r.poly == e || r.poly == -&e, "{} is not ±({e})", r.poly);
+        assert!(r.degree == 1 && r.symbolic);
+    }
 }
 
 /// With `M` kept symbolic, `{H_x, S} = −3C/M` has a coefficient that no `--parameters-degree`

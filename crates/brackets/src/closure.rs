@@ -4,7 +4,8 @@
 //! polynomial `Σ c_β G^β` of degree `≤ D` in the generators when one exists, and the polynomial
 //! relations among the generators up to degree `D` (syzygies, such as the Casimir
 //! `4 G1² + G2² + ω² L² = (F1 − F2)²`) are found, each relation minimal: not a combination of
-//! multiples of lower ones. Both are exact linear algebra over `Q` on the monomials `G^β`
+//! the relations before it times polynomials in the generators and in the symbolic parameters
+//! (`closure/minimal.rs`). Both are exact linear algebra over `Q` on the monomials `G^β`
 //! expanded at fixed parameter values (modulo a 62-bit prime, reconstructed, checked exactly);
 //! coefficients are then lifted to Laurent monomials in the parameters by homogeneity
 //! ([`crate::scaling`]) and every bracket and relation is checked by expanding it symbolically.
@@ -46,9 +47,9 @@ use crate::table::{BracketTable, Entry};
 mod columns;
 mod fewest;
 mod lift;
+mod minimal;
 mod span;
 
-use columns::shift;
 use fewest::Relations;
 use lift::LiftContext;
 use span::Span;
@@ -234,7 +235,10 @@ pub struct Closure {
     pub liftable: bool,
     /// `brackets[a][b] = {G_a, G_b}`.
     pub brackets: Vec<Vec<Bracket>>,
-    /// The minimal relations, by degree.
+    /// The minimal relations, by degree and simplest first: none is a combination of those
+    /// before it times polynomials in the generators and the symbolic parameters (within the
+    /// degrees: `m R` of degree `≤ D` in the generators, the parameters' coefficients of
+    /// degree `≤ S`).
     pub relations: Vec<Relation>,
     /// How many monomials of degree `≤ D` there are.
     pub monomials: usize,
@@ -416,14 +420,13 @@ pub fn closure_of(
     let scaling = scaling_of(system, generators, condition)?;
     let lifting = Lifting::new(system, generators, &span, &b_sym, options, scaling)?;
     let mut lift_ctx = lifting.context(system, &span);
-    let relations = minimal_relations(
-        &mut lift_ctx,
-        &kernel,
-        (r, span.columns.len()),
-        span.complex,
-        &span.constant,
-        options.degree,
-    )?;
+    let bounds = minimal::Bounds {
+        generators: r,
+        degree: options.degree,
+        parameters_degree: options.parameters_degree,
+    };
+    let relations =
+        minimal::minimal_relations(&mut lift_ctx, &kernel, bounds, span.complex, &span.constant)?;
     let brackets = structure_table(r, &pairs, &solutions, &b_sym, &mut lift_ctx)?;
     timings.proofs = t.elapsed().as_secs_f64();
     timings.total = start.elapsed().as_secs_f64();
@@ -797,227 +800,6 @@ fn printing_ring(vars: &Vars, generators: &[NamedFunction]) -> Result<PrintingRi
         symbols,
         param_in_ring,
     })
-}
-
-/// The minimal relations among the generators, by degree: `G − c = 0` for a generator
-/// constant on the condition's surface (when `degree ≥ 1`), then each kernel vector (a
-/// relation at the fixed values) that is not a combination of multiples of those before it,
-/// lifted and proved. `(r, columns)`: how many generators (the symbolic parameters
-/// apart) and columns there are.
-fn minimal_relations(
-    lift_ctx: &mut LiftContext<'_>,
-    kernel: &[SparseVec<Rational>],
-    (r, columns): (usize, usize),
-    complex: bool,
-    constant: &[bool],
-    degree: u32,
-) -> Result<Vec<Relation>, EngineError> {
-    let mut relations = if degree >= 1 {
-        constant_generator_relations(lift_ctx, constant)?
-    } else {
-        Vec::new()
-    };
-    let mut ideal = RelationIdeal::new(ColumnMonomials::new(lift_ctx, complex), columns);
-    let mut order: Vec<usize> = (0..kernel.len()).collect();
-    order.sort_by_key(|&k| ideal.columns.degree(&kernel[k]));
-    for k in order {
-        let rel = &kernel[k];
-        if !ideal.insert_if_minimal(rel) {
-            continue;
-        }
-        let (poly, symbolic) = lift_ctx.relation(rel)?;
-        relations.push(Relation {
-            poly,
-            degree: ideal.columns.degree_in_generators(rel, r),
-            symbolic,
-        });
-    }
-
-    Ok(relations)
-}
-
-/// `G − c = 0` for each generator `G` constant on the condition's surface (`c` a function of
-/// the parameters), in the generators' order.
-fn constant_generator_relations(
-    lift_ctx: &LiftContext<'_>,
-    constant: &[bool],
-) -> Result<Vec<Relation>, EngineError> {
-    let mut relations = Vec::new();
-    for (a, g) in lift_ctx.g_sym.iter().enumerate() {
-        if constant[a] {
-            let value = lift_ctx.to_ring(g)?;
-            let symbol = Expr::monomial(
-                &lift_ctx.ring,
-                GaussianRational::from(1),
-                &[(lift_ctx.symbols[a], 1)],
-            )?;
-            relations.push(Relation {
-                poly: symbol.checked_sub(&value)?,
-                degree: 1,
-                symbolic: true,
-            });
-        }
-    }
-    Ok(relations)
-}
-
-/// The columns of the closure's linear algebra as monomials in the generators and symbolic
-/// parameters: the degrees of a vector over them, and its multiples by a monomial.
-struct ColumnMonomials<'a> {
-    /// The exponents of each monomial, in the generators and then the symbolic parameters.
-    monos: &'a [Vec<u32>],
-    /// Each column's monomial, and whether the column is that monomial times `i`.
-    col_ids: &'a [(usize, bool)],
-    /// The column of each `(exponents, times i)`.
-    col_of: HashMap<(Vec<u32>, bool), usize>,
-    /// How many generators and symbolic parameters there are.
-    all: usize,
-    /// Whether the generators are complex: the columns are each monomial and `i` times it.
-    complex: bool,
-}
-
-impl<'a> ColumnMonomials<'a> {
-    /// The columns of `lift_ctx`.
-    fn new(lift_ctx: &LiftContext<'a>, complex: bool) -> Self {
-        let (monos, col_ids) = (lift_ctx.monos, lift_ctx.col_ids);
-        let col_of = col_ids
-            .iter()
-            .enumerate()
-            .map(|(j, (m, i))| ((monos[*m].clone(), *i), j))
-            .collect();
-        ColumnMonomials {
-            monos,
-            col_ids,
-            col_of,
-            all: lift_ctx.g_sym.len(),
-            complex,
-        }
-    }
-
-    /// The largest total degree of the monomials of `v`'s columns.
-    fn degree(&self, v: &SparseVec<Rational>) -> u32 {
-        self.degree_in_generators(v, usize::MAX)
-    }
-
-    /// `v`'s degree in the first `r` variables, the generators (the symbolic parameters
-    /// apart).
-    fn degree_in_generators(&self, v: &SparseVec<Rational>, r: usize) -> u32 {
-        v.iter()
-            .map(|(j, _)| self.monos[self.col_ids[*j].0].iter().take(r).sum::<u32>())
-            .max()
-            .unwrap_or(0)
-    }
-
-    /// `rel` times each monomial of total degree `d`, and times `i` too when the generators
-    /// are complex, where every product is still a column.
-    fn multiples(&self, rel: &SparseVec<Rational>, d: u32) -> Vec<SparseVec<Rational>> {
-        let mut out = Vec::new();
-        for gamma in monomials(self.all, d)
-            .iter()
-            .filter(|m| m.iter().sum::<u32>() == d)
-        {
-            for times_i in [false, true] {
-                if times_i && !self.complex {
-                    continue;
-                }
-                out.extend(self.shift(rel, gamma, times_i));
-            }
-        }
-        out
-    }
-
-    /// `rel` times the monomial `gamma` (and times `i`), if every product is still a column.
-    fn shift(
-        &self,
-        rel: &SparseVec<Rational>,
-        gamma: &[u32],
-        times_i: bool,
-    ) -> Option<SparseVec<Rational>> {
-        shift(rel, gamma, times_i, self.col_ids, self.monos, &self.col_of)
-    }
-}
-
-/// Vectors modulo a prime in an echelon basis, under identifiers in the order inserted.
-struct NumberedEchelon {
-    echelon: Echelon<Fp>,
-    /// The identifier of the next vector inserted.
-    next_id: usize,
-}
-
-impl NumberedEchelon {
-    /// Inserts `v` modulo the prime; nothing when a denominator is divisible by it.
-    fn insert(&mut self, v: &SparseVec<Rational>) {
-        if let Some(vf) = modular::to_fp(v) {
-            self.insert_fp(&vf);
-        }
-    }
-
-    /// Inserts `v`, already modulo the prime.
-    fn insert_fp(&mut self, v: &SparseVec<Fp>) {
-        self.echelon.insert(self.next_id, v);
-        self.next_id += 1;
-    }
-}
-
-/// The span, modulo a prime, of the minimal relations found so far and of their multiples by
-/// monomials in the generators (and by `i` over `Q(i)`): a relation in it is a combination of
-/// multiples of those before it, not minimal.
-struct RelationIdeal<'a> {
-    columns: ColumnMonomials<'a>,
-    span: NumberedEchelon,
-    /// Each minimal relation, its degree, and the degree of the monomials up to which its
-    /// multiples are in `span`.
-    accepted: Vec<(SparseVec<Rational>, u32, u32)>,
-}
-
-impl<'a> RelationIdeal<'a> {
-    /// The empty span in `dim` dimensions (one per column).
-    fn new(columns: ColumnMonomials<'a>, dim: usize) -> Self {
-        RelationIdeal {
-            columns,
-            span: NumberedEchelon {
-                echelon: Echelon::new(dim),
-                next_id: 0,
-            },
-            accepted: Vec::new(),
-        }
-    }
-
-    /// Whether `rel` (the relations taken by degree) is minimal: not a combination of the
-    /// multiples, up to its degree, of the minimal relations before it. A minimal relation
-    /// joins the span.
-    fn insert_if_minimal(&mut self, rel: &SparseVec<Rational>) -> bool {
-        let d = self.columns.degree(rel);
-        self.add_multiples_up_to(d);
-        let Some(rf) = modular::to_fp(rel) else {
-            return false;
-        };
-        if self.span.echelon.contains(&rf) {
-            return false;
-        }
-        self.span.insert_fp(&rf);
-        if self.columns.complex {
-            // Over Q(i), i·R is the same relation.
-            let zero = vec![0; self.columns.all];
-            if let Some(v) = self.columns.shift(rel, &zero, true) {
-                self.span.insert(&v);
-            }
-        }
-        self.accepted.push((rel.clone(), d, 0));
-        true
-    }
-
-    /// Adds to the span the multiples of the minimal relations by monomials, up to degree `d`.
-    fn add_multiples_up_to(&mut self, d: u32) {
-        for (r0, d0, added) in self.accepted.iter_mut() {
-            while *d0 + *added < d {
-                *added += 1;
-                for v in self.columns.multiples(r0, *added) {
-                    self.span.insert(&v);
-                }
-            }
-        }
-    }
 }
 
 /// The structure table: `{G_a, G_b}` as a polynomial in the generators, lifted and proved, or

@@ -420,6 +420,15 @@ impl<F: Field> Echelon<F> {
         }
     }
 
+    /// Takes vectors with indices below `dim` from now on (a basis over indices numbered as
+    /// they are met); a smaller `dim` changes nothing.
+    pub fn grow(&mut self, dim: usize) {
+        if dim > self.dim {
+            self.dim = dim;
+            self.pivot_row.resize(dim, None);
+        }
+    }
+
     /// The number of independent vectors inserted.
     pub fn rank(&self) -> usize {
         self.rows.len()
@@ -542,6 +551,12 @@ impl<F: Field> Echelon<F> {
     pub fn express(&self, v: &SparseVec<F>) -> Option<SparseVec<F>> {
         let (residue, combo) = self.reduce(v, true);
         residue.is_empty().then_some(combo)
+    }
+
+    /// `v` reduced by the basis: `v` less the combination of basis rows that leaves no
+    /// entry on a pivot (by increasing index; empty when `v` lies in the span).
+    pub fn residue(&self, v: &SparseVec<F>) -> SparseVec<F> {
+        self.reduce(v, false).0
     }
 
     /// Whether `v` lies in the span of the inserted vectors.
@@ -835,6 +850,25 @@ mod tests {
 
     /// The product's reduction without a division agrees with the remainder, for residues at
     /// both ends of the field and between (the largest product, `(p − 1)²`, included).
+    /// A basis grown to take larger indices keeps its rows; the residue of a vector has no
+    /// entry on a pivot and differs from it by a vector of the span.
+    #[test]
+    fn a_grown_basis_reduces_to_residues_off_its_pivots() {
+        let q = |n: i64| Rational::from(n);
+        let mut e = Echelon::<Rational>::new(2);
+        assert!(e.insert(0, &vec![(0, q(1)), (1, q(-1))]).is_none());
+        e.grow(4);
+        e.grow(3);
+        assert!(e.insert_by(1, &vec![(1, q(2)), (3, q(1))], |_| 1).is_none());
+        assert_eq!(e.pivots(), [0, 3]);
+        let v = vec![(0, q(3)), (2, q(5)), (3, q(1))];
+        let residue = e.residue(&v);
+        assert!(residue.iter().all(|(i, _)| !e.is_pivot(*i)), "{residue:?}");
+        // v − residue = 3 (e0 − e1) + (2 e1 + e3).
+        assert_eq!(residue, vec![(1, q(1)), (2, q(5))]);
+        assert!(e.residue(&vec![(0, q(2)), (1, q(-2))]).is_empty());
+    }
+
     #[test]
     fn products_reduce_like_the_remainder() {
         let mut values: Vec<u64> = vec![0, 1, 2, 56, 57, 58, 1 << 31, 1 << 61, (1 << 62) - 1];

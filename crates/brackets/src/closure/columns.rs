@@ -3,7 +3,6 @@
 //! a found combination equals its target.
 
 use rustc_hash::FxHashMap;
-use std::collections::HashMap;
 
 use trigpoly::{Expr, Rational, Var};
 
@@ -119,34 +118,6 @@ fn pack(key: &[i64]) -> Option<u128> {
         let byte = i8::try_from(e).ok()? as u8;
         Some(packed << 8 | u128::from(byte))
     })
-}
-
-/// A relation (over columns) multiplied by the monomial `gamma` (and by `i`), if every
-/// product is still a column.
-pub(super) fn shift(
-    rel: &SparseVec<Rational>,
-    gamma: &[u32],
-    times_i: bool,
-    col_ids: &[(usize, bool)],
-    monos: &[Vec<u32>],
-    col_of: &HashMap<(Vec<u32>, bool), usize>,
-) -> Option<SparseVec<Rational>> {
-    let mut out: HashMap<usize, Rational> = HashMap::new();
-    for (j, x) in rel {
-        let (m, imag) = col_ids[*j];
-        let beta: Vec<u32> = monos[m].iter().zip(gamma).map(|(a, b)| a + b).collect();
-        // i · (i m) = −m.
-        let (imag, x) = match (times_i, imag) {
-            (false, i) => (i, x.clone()),
-            (true, false) => (true, x.clone()),
-            (true, true) => (false, -x),
-        };
-        let c = *col_of.get(&(beta, imag))?;
-        *out.entry(c).or_insert_with(Rational::zero) += &x;
-    }
-    let mut v: SparseVec<Rational> = out.into_iter().filter(|(_, x)| !x.is_zero()).collect();
-    v.sort_by_key(|x| x.0);
-    Some(v)
 }
 
 #[cfg(test)]
