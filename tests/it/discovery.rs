@@ -3239,6 +3239,21 @@ fn fokas_lagerstrom_cubic_integral_and_its_cubic_algebra() {
     );
 }
 
+/// Checks every claim of `file`, each as expected, and the claims' ids in the file's order:
+/// `proved` ones first, then the `refuted` false neighbours.
+fn assert_claims_as_expected(
+    file: &superint::system_file::LoadedSystem,
+    proved: &[&str],
+    refuted: &[&str],
+) {
+    let report = superint::system_file::check_report([file]).expect("checked");
+    assert!(report.all_as_expected());
+    let expected: Vec<(String, bool)> = (proved.iter().map(|id| (id.to_string(), true)))
+        .chain(refuted.iter().map(|id| (id.to_string(), false)))
+        .collect();
+    assert_eq!(report.claim_ids(), expected);
+}
+
 /// The caged anisotropic oscillator 1:2 of Evans and Verrier, loaded and checked: every claim
 /// of the file holds for every `ω, α, β` (the ladders, the quartic `K` and the quintic `Q`, the
 /// algebra and its relation, the limits `β = 0` and `α = β = 0`, the ranks), and each of its
@@ -3248,33 +3263,31 @@ fn fokas_lagerstrom_cubic_integral_and_its_cubic_algebra() {
 #[test]
 fn caged_oscillator_claims_are_proved_and_its_false_neighbours_refuted() {
     let file = system_file("caged-oscillator-1-2.toml");
-    let report = superint::system_file::check_report([&file]).expect("checked");
-    assert!(report.all_as_expected());
-    let proved = |id: &str| (id.to_string(), true);
-    let refuted = |id: &str| (id.to_string(), false);
-    assert_eq!(
-        report.claim_ids(),
-        [
-            proved("ladders"),
-            proved("separable"),
-            proved("quartic"),
-            proved("quintic"),
-            proved("real-part"),
-            proved("modulus"),
-            proved("algebra"),
-            proved("relation"),
-            proved("rank"),
-            proved("limit-v-ii"),
-            proved("limit-oscillator"),
-            refuted("false-v-ii-integral"),
-            refuted("false-coefficient"),
-            refuted("false-1-1-ratio"),
-            refuted("false-1-3-ratio"),
-            refuted("false-uncaged-ladder"),
-            refuted("false-algebra"),
-            refuted("false-modulus"),
-            refuted("false-rank"),
-        ]
+    assert_claims_as_expected(
+        &file,
+        &[
+            "ladders",
+            "separable",
+            "quartic",
+            "quintic",
+            "real-part",
+            "modulus",
+            "algebra",
+            "relation",
+            "rank",
+            "limit-v-ii",
+            "limit-oscillator",
+        ],
+        &[
+            "false-v-ii-integral",
+            "false-coefficient",
+            "false-1-1-ratio",
+            "false-1-3-ratio",
+            "false-uncaged-ladder",
+            "false-algebra",
+            "false-modulus",
+            "false-rank",
+        ],
     );
 }
 
@@ -3333,33 +3346,31 @@ fn caged_oscillator_quartic_and_quintic_integrals_and_their_polynomial_algebra()
 #[test]
 fn higgs_oscillator_claims_are_proved_and_its_false_neighbours_refuted() {
     let file = system_file("higgs-oscillator.toml");
-    let report = superint::system_file::check_report([&file]).expect("checked");
-    assert!(report.all_as_expected());
-    let proved = |id: &str| (id.to_string(), true);
-    let refuted = |id: &str| (id.to_string(), false);
-    assert_eq!(
-        report.claim_ids(),
-        [
-            proved("higgs-form"),
-            proved("rotations"),
-            proved("angular"),
-            proved("tensor"),
-            proved("found"),
-            proved("trace"),
-            proved("algebra"),
-            proved("higgs-algebra"),
-            proved("relation"),
-            proved("rank"),
-            proved("limit-plane"),
-            refuted("false-fradkin"),
-            refuted("false-conformal-factor"),
-            refuted("false-momentum-sign"),
-            refuted("false-cubic-sign"),
-            refuted("false-cubic-coefficient"),
-            refuted("false-flat-algebra"),
-            refuted("false-relation"),
-            refuted("false-rank"),
-        ]
+    assert_claims_as_expected(
+        &file,
+        &[
+            "higgs-form",
+            "rotations",
+            "angular",
+            "tensor",
+            "found",
+            "trace",
+            "algebra",
+            "higgs-algebra",
+            "relation",
+            "rank",
+            "limit-plane",
+        ],
+        &[
+            "false-fradkin",
+            "false-conformal-factor",
+            "false-momentum-sign",
+            "false-cubic-sign",
+            "false-cubic-coefficient",
+            "false-flat-algebra",
+            "false-relation",
+            "false-rank",
+        ],
     );
     // The factor 1 + λr² is the sphere's: without it the tensor is conserved only at λ = 0.
     let parse = |s: &str| file.parse_argument(s).expect("parses");

@@ -848,8 +848,6 @@ mod tests {
         assert_eq!(small.express(&vec![(0, Fp(7))]), Some(vec![(0, Fp(7))]));
     }
 
-    /// The product's reduction without a division agrees with the remainder, for residues at
-    /// both ends of the field and between (the largest product, `(p − 1)²`, included).
     /// A basis grown to take larger indices keeps its rows; the residue of a vector has no
     /// entry on a pivot and differs from it by a vector of the span.
     #[test]
@@ -869,6 +867,8 @@ mod tests {
         assert!(e.residue(&vec![(0, q(2)), (1, q(-2))]).is_empty());
     }
 
+    /// The product's reduction without a division agrees with the remainder, for residues at
+    /// both ends of the field and between (the largest product, `(p − 1)²`, included).
     #[test]
     fn products_reduce_like_the_remainder() {
         let mut values: Vec<u64> = vec![0, 1, 2, 56, 57, 58, 1 << 31, 1 << 61, (1 << 62) - 1];

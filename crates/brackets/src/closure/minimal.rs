@@ -282,16 +282,7 @@ impl<'a> RelationIdeal<'a> {
 
     /// Whether `Σ c_id · multiples[id] = v` exactly.
     fn combination_equals(&self, c: &SparseVec<Rational>, v: &SparseVec<Rational>) -> bool {
-        let mut sum: HashMap<usize, Rational> = HashMap::new();
-        for (id, x) in c {
-            for (i, a) in &self.multiples[*id] {
-                *sum.entry(*i).or_insert_with(Rational::zero) += &(x * a);
-            }
-        }
-        for (i, x) in v {
-            *sum.entry(*i).or_insert_with(Rational::zero) -= x;
-        }
-        sum.values().all(|x| x.is_zero())
+        modular::combination_equals(&self.multiples, self.index.len(), c, v)
     }
 
     /// Adds to the span the multiples of the relations listed since the last test.

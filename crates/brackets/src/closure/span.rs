@@ -253,13 +253,14 @@ impl Span {
 struct TargetWeights {
     /// The weight of each of `g_sym` (generators, then symbolic parameters).
     generators: Vec<Vec<Rational>>,
-    /// The weights of the targets' terms, each once.
+    /// The weights of the targets (each homogeneous, a part of one), each once.
     targets: Vec<Vec<Rational>>,
 }
 
 impl TargetWeights {
-    /// The grading of `g_sym` and `targets` under `scaling` with the `fixed` parameters
-    /// weighing zero, if every one of them is homogeneous under it and some weight is left.
+    /// The grading of `g_sym` and `targets` (homogeneous parts) under `scaling` with the
+    /// `fixed` parameters weighing zero, if every one of them is homogeneous under it and some
+    /// weight is left.
     fn new(scaling: &Scaling, fixed: &[Var], g_sym: &[Expr], targets: &[Expr]) -> Option<Self> {
         let scaling = scaling.with_zero_weights(fixed);
         if scaling.dimension() == 0 {
@@ -271,11 +272,9 @@ impl TargetWeights {
             .collect::<Option<Vec<_>>>()?;
         let mut weights: Vec<Vec<Rational>> = Vec::new();
         for t in targets {
-            for term in t.terms() {
-                let w = scaling.weight(&term.exponents());
-                if !weights.contains(&w) {
-                    weights.push(w);
-                }
+            let w = scaling.homogeneous_weight(t)?;
+            if !weights.contains(&w) {
+                weights.push(w);
             }
         }
         Some(TargetWeights {
