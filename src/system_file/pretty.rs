@@ -8,13 +8,16 @@ use trigpoly::syntax::{Expr as Tree, ExprKind};
 use super::scope::instance_of;
 use super::LoadedSystem;
 
-/// A printed subexpression: its text, how tightly it binds, and whether its first and last
-/// atoms are names longer than one character (which products separate by a space).
+/// A printed subexpression: its text, how tightly it binds, whether its first and last atoms
+/// are names longer than one character (which products separate by a space), and where a name
+/// of several words that ends it starts (`Re K` in `6ω Re K`), which takes parentheses when a
+/// factor, a power or a denominator follows it.
 struct Printed {
     text: String,
     prec: u8,
     first_long: bool,
     last_long: bool,
+    trailing_words: Option<usize>,
 }
 
 const SUM: u8 = 1;
@@ -39,7 +42,18 @@ impl Printed {
             prec: ATOM,
             first_long: long,
             last_long: long,
+            trailing_words: None,
         }
+    }
+
+    /// The text with its trailing name of several words in parentheses, if it has one:
+    /// `6ω (Re K)`, before a factor, a power or a denominator.
+    fn words_closed(mut self) -> Self {
+        if let Some(at) = self.trailing_words.take() {
+            self.text.insert(at, '(');
+            self.text.push(')');
+        }
+        self
     }
 
     fn wrapped(self, min: u8) -> Self {
@@ -51,6 +65,7 @@ impl Printed {
                 prec: ATOM,
                 first_long: false,
                 last_long: false,
+                trailing_words: None,
             }
         }
     }
@@ -180,6 +195,9 @@ impl LoadedSystem {
             p.first_long = true;
             p.last_long = true;
         }
+        if p.text.contains(' ') {
+            p.trailing_words = Some(0);
+        }
         p
     }
 
@@ -193,6 +211,7 @@ impl LoadedSystem {
             prec,
             first_long: false,
             last_long: a.last_long,
+            trailing_words: a.trailing_words.map(|at| at + '−'.len_utf8()),
         }
     }
 
@@ -206,13 +225,22 @@ impl LoadedSystem {
             prec: SUM,
             first_long: a.first_long,
             last_long: b.last_long,
+            trailing_words: None,
         }
     }
 
     /// `a b`: run together, spaced, or with a dot between numbers.
     fn print_product(&self, a: &Tree, b: &Tree, spaced: bool) -> Printed {
-        let a = self.print(a, spaced).wrapped(PRODUCT);
+        let a = self.print(a, spaced);
+        // `(Re K) (Im K)`: beside a name of several words in parentheses, another takes them
+        // too.
+        let words_before = a.trailing_words.is_some();
+        let a = a.words_closed().wrapped(PRODUCT);
         let b = self.print(b, spaced);
+        let b = match words_before && b.trailing_words == Some(0) {
+            true => b.words_closed(),
+            false => b,
+        };
         // A right factor that begins with a minus sign (`−x y`, a product whose first
         // factor is negated) takes parentheses: `2(−xy)`, not `2−xy`.
         let b = if b.prec < PRODUCT || b.prec == NEG || b.text.starts_with('−') {
@@ -244,6 +272,7 @@ impl LoadedSystem {
             ""
         };
         Printed {
+            trailing_words: b.trailing_words.map(|at| at + a.text.len() + sep.len()),
             text: format!("{}{sep}{}", a.text, b.text),
             prec: PRODUCT,
             first_long: a.first_long,
@@ -258,13 +287,15 @@ impl LoadedSystem {
             true => ATOM + 1,
             false => QUOTIENT,
         };
-        let a = self.print(a, spaced).wrapped(at_least);
-        let b = self.print(b, spaced).wrapped(POWER);
+        // `(Re K)/2` and `x/(Re K)`, not `Re K/2`, which reads as the real part of `K/2`.
+        let a = self.print(a, spaced).words_closed().wrapped(at_least);
+        let b = self.print(b, spaced).words_closed().wrapped(POWER);
         Printed {
             text: format!("{}/{}", a.text, b.text),
             prec: QUOTIENT,
             first_long: a.first_long,
             last_long: false,
+            trailing_words: None,
         }
     }
 
@@ -287,7 +318,12 @@ impl LoadedSystem {
             }
             _ => false,
         };
+        // `(Re K)²`, not `Re K²`, the real part of `K²`.
         let base = self.print(a, spaced);
+        let base = match base.trailing_words {
+            Some(0) => base.words_closed(),
+            _ => base,
+        };
         let base = if run_together {
             base.wrapped(ATOM + 1)
         } else if power_on_parentheses {
@@ -332,6 +368,7 @@ impl LoadedSystem {
             prec: POWER,
             first_long: base.first_long,
             last_long: base.last_long,
+            trailing_words: None,
         }
     }
 
@@ -354,7 +391,11 @@ impl LoadedSystem {
             "re" if !self.is_declared_name("Re") => ("Re".to_string(), true),
             "im" if !self.is_declared_name("Im") => ("Im".to_string(), true),
             other if trigpoly::FUNCTIONS.contains(&other) => (f.to_string(), true),
-            other => (self.display_name(other), false),
+            // `(Re K)(x + y)`: a name of several words multiplies in parentheses.
+            other => match self.display_name(other) {
+                shown if shown.contains(' ') => (format!("({shown})"), false),
+                shown => (shown, false),
+            },
         };
         let mut p = Printed::atom(format!("{name}({})", args.join(", ")));
         p.first_long = true;

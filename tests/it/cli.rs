@@ -3482,11 +3482,13 @@ fn cli_long_table_entry_shows_its_leading_terms() {
     assert!(!text.contains("shown:") && !text.contains('…'), "{text}");
 }
 
-/// A closure's table and equations write a generator by its name where its display name
-/// cannot be a symbol (`Re A`, with a space), and say which stands for which: the entries read
-/// `ImA` under the header `Im A`, which nothing explained.
+/// A closure's table and equations write a generator by its display name of several words
+/// (`Re A`), in parentheses where a power or a factor follows it: `(Re A)² + (Im A)²`, not
+/// `Re A² + Im A²`, which reads as the real part of `A²`, nor the names `ReA`, `ImA`. A display
+/// name that cannot be a symbol (`x(t)`) is written by the generator's name, and the output says
+/// which stands for which.
 #[test]
-fn closure_says_which_symbol_stands_for_a_display_name() {
+fn closure_writes_display_names_of_several_words_in_parentheses_before_a_power() {
     let out = run(
         &[
             "closure",
@@ -3495,23 +3497,93 @@ fn closure_says_which_symbol_stands_for_a_display_name() {
             "Hy",
             "ReA",
             "ImA",
+            "--degree",
+            "8",
             "--no-timings",
         ],
         0,
     );
-    let words = crate::normalize(&out);
+    assert!(out.contains("{H_x, Re A} = 15ω Im A "), "{out}");
+    assert!(
+        out.contains("256M⁸ H_x⁵ H_y³ = (Re A)² + (Im A)² "),
+        "{out}"
+    );
+    assert!(!out.contains("stands for") && !out.contains("ReA"), "{out}");
+    let solution = run(
+        &[
+            "closure",
+            "systems/harmonic-rotor-solution.toml",
+            "X",
+            "Y",
+            "--no-timings",
+        ],
+        0,
+    );
+    let words = crate::normalize(&solution);
     assert!(
         words.contains(
-            "In the table and its equations, ReA stands for Re A and ImA for Im A: their \
-             display names cannot be written as symbols."
+            "In the table and its equations, X stands for x(t) and Y for y(t): their display \
+             names cannot be written as symbols."
         ),
-        "{out}"
+        "{solution}"
     );
     let plain = run(
         &["closure", "systems/harmonic-rotor.toml", "L", "G1", "G2"],
         0,
     );
     assert!(!plain.contains("stands for"), "{plain}");
+}
+
+/// A name of several words (`Re K`) is set in parentheses where a power, a factor or a
+/// denominator follows it, in the statement as the user wrote it and in the bracket written in
+/// the functions; at the end of a term it is bare (`6ω Im K`).
+#[test]
+fn display_names_of_several_words_take_parentheses_only_where_they_would_read_otherwise() {
+    let out = run(
+        &[
+            "expand",
+            "systems/anisotropic-3-5-rotor.toml",
+            "ReK^2*Hx",
+            "ReK/2",
+            "omega*ImK",
+            "ReK*ImK*x",
+            "--no-timings",
+        ],
+        0,
+    );
+    let first = out.lines().next().expect("a title");
+    assert!(
+        first.starts_with("(Re K)² H_x, (Re K)/2, ω Im K, (Re K) (Im K) x in normal form"),
+        "{out}"
+    );
+    let bracket = run(
+        &[
+            "bracket",
+            "systems/anisotropic-3-5-rotor.toml",
+            "Hx",
+            "ReK*ImK",
+            "--no-timings",
+        ],
+        0,
+    );
+    assert!(
+        bracket.contains("= −6ω K² + 12iω (Re K) (Im K)\n"),
+        "{bracket}"
+    );
+    let table = run(
+        &[
+            "table",
+            "systems/anisotropic-3-5-rotor.toml",
+            "Hx",
+            "ReK",
+            "ImK",
+            "Omega",
+            "--no-timings",
+        ],
+        0,
+    );
+    assert!(table.contains("{H_x, Re K} = 6ω Im K\n"), "{table}");
+    assert!(table.contains("{Re K, Ω} = (Im K)/I\n"), "{table}");
 }
 
 /// An expansion whose normal form in `cos θ, sin θ` would print past the term limit stops at

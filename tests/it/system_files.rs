@@ -3127,7 +3127,7 @@ fn a_residual_is_written_with_the_fewest_monomials_the_relations_allow() {
     assert!(
         rotor.contains(
             "        + (−ω p_x² p_y + 9M²ω³x² p_y − 30M²ω³xy p_x) sin θ\n\
-             \x20                        = ω ImK\n"
+             \x20                        = ω Im K\n"
         ),
         "{rotor}"
     );

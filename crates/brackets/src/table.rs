@@ -236,6 +236,7 @@ impl Entry {
             Entry::Combination(terms) => {
                 let mut out = String::new();
                 for (k, (c, name)) in terms.iter().enumerate() {
+                    let several_words = style != Style::Ascii && name.display.contains(' ');
                     let name = name.render(style);
                     let text = c.render(style);
                     let (neg, body) = match text.strip_prefix(['−', '-']) {
@@ -250,6 +251,12 @@ impl Entry {
                     let fraction = match style {
                         Style::Latex => None,
                         _ => body.rsplit_once('/').filter(|_| c.len() == 1),
+                    };
+                    // A name of several words over a denominator is set in parentheses, as the
+                    // expression printer sets it: `Re K/M` would read as the real part of `K/M`.
+                    let name = match several_words && fraction.is_some() {
+                        true => format!("({name})"),
+                        false => name,
                     };
                     let latex_fraction = match style {
                         Style::Latex if c.len() == 1 => split_frac(&body),

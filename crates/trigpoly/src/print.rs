@@ -355,6 +355,10 @@ struct Names {
     names: Vec<String>,
     /// Whether text sets each variable apart as a word, by index ([`crate::VarSetBuilder::word`]).
     words: Vec<bool>,
+    /// Whether each variable's name is several words (`Re K`), by index: with a power or a
+    /// factor after it, it is set in parentheses, `(Re K)² H_x`, where `Re K² H_x` would read
+    /// as `Re(K²) H_x`.
+    several_words: Vec<bool>,
     /// The variables as the paper orders a term's factors: parameters, then coordinates,
     /// then momenta (then angles), each kind in declaration order.
     order: Vec<usize>,
@@ -391,6 +395,16 @@ impl Names {
         Names {
             names,
             words: vars.vars().map(|v| vars.variable(v).is_word()).collect(),
+            several_words: vars
+                .vars()
+                .map(|v| {
+                    // A denominator atom's name is enclosed already, `(x − y)`.
+                    let unicode = vars.variable(v).unicode();
+                    style != Style::Ascii
+                        && unicode.contains(' ')
+                        && unparenthesized(unicode).is_none()
+                })
+                .collect(),
             order: order.iter().map(|v| v.index()).collect(),
             angles: vars.angles().map(|v| v.index()).collect(),
             all_wide: style == Style::Unicode
@@ -472,6 +486,19 @@ fn write_term(
     if enclosed {
         out.push('(');
     }
+    // A name of several words that has a power, or a factor or a denominator after it, is set
+    // in parentheses, and so is every other in the term: `(Re K)² H_x`, `(Re K) (Im K)`,
+    // `(Re K)/M`, but `6ω Im K` and `\frac{\operatorname{Re} K}{M}`.
+    let last_factor = names.order.iter().rev().find(|&&j| exps[j] > 0);
+    let words_in_parentheses = names.order.iter().any(|&j| {
+        names.several_words[j]
+            && exps[j] != 0
+            && (exps[j] != 1
+                || Some(&j) != last_factor
+                || inner.is_some()
+                || trig.is_some_and(|t| !TrigMonomial::is_one(t))
+                || (denominators > 0 && !frac))
+    });
     let mut numerator = Product::new(style);
     if let Some(c) = complex {
         numerator.next(out, true);
@@ -496,7 +523,11 @@ fn write_term(
             let wide = names.all_wide
                 || (style == Style::Unicode && (names.words[j] || name.chars().count() > 1));
             product.next(out, wide);
-            write_power(out, name, exps[j].abs(), style);
+            if names.several_words[j] && words_in_parentheses {
+                write_power(out, &format!("({name})"), exps[j].abs(), style);
+            } else {
+                write_power(out, name, exps[j].abs(), style);
+            }
         }
     };
     variables(out, &mut numerator, true);

@@ -44,6 +44,26 @@ pub fn display_forms(display: &str) -> Option<(String, String)> {
     })
 }
 
+/// A display name of several words, each one [`display_forms`] writes or `Re`/`Im`, one space
+/// between them, as text and as LaTeX: `Re K` → (`Re K`, `\operatorname{Re} K`), `H x` →
+/// (`H x`, `H x`). Text sets such a name in parentheses where it is a factor or has a power
+/// (`(Re K)² H_x`); anything else has no such forms.
+pub fn words_display_forms(display: &str) -> Option<(String, String)> {
+    if !display.contains(' ') {
+        return None;
+    }
+    let (mut unicode, mut latex) = (Vec::new(), Vec::new());
+    for word in display.split(' ') {
+        let (text, tex) = match word {
+            "Re" | "Im" => (word.to_string(), format!("\\operatorname{{{word}}}")),
+            _ => display_forms(word)?,
+        };
+        unicode.push(text);
+        latex.push(tex);
+    }
+    Some((unicode.join(" "), latex.join(" ")))
+}
+
 /// The letter under a precomposed bar, `Ā` → `A`, which a display name may have as `A` and a
 /// combining macron (U+0304).
 pub fn unbarred(c: char) -> Option<char> {

@@ -146,6 +146,53 @@ fn generators_declared_as_words_are_set_apart() {
     prints(&vars, "2*M*x", ["2Mx", "2 M x", "2*M*x"]);
 }
 
+/// A variable shown by a name of several words (`Re K`, as a closure's generator is) is set in
+/// parentheses where a power, a factor or a denominator follows it, and in every other place of
+/// that term: `Re K² H_x` would read as the real part of `K²`. At the end of a term it is bare.
+#[test]
+fn names_of_several_words_take_parentheses_where_they_would_read_otherwise() {
+    let vars = VarSet::builder()
+        .parameter("omega")
+        .coordinate("ReK")
+        .shown_as("Re K")
+        .word()
+        .coordinate("ImK")
+        .shown_as("Im K")
+        .word()
+        .coordinate("Hx")
+        .shown_as("H_x")
+        .word()
+        .build()
+        .unwrap();
+    prints(
+        &vars,
+        "6*omega*ImK - ReK",
+        [
+            "6ω Im K − Re K",
+            r"6 \omega \operatorname{Im} K - \operatorname{Re} K",
+            "6*omega*ImK - ReK",
+        ],
+    );
+    prints(
+        &vars,
+        "ReK^2*Hx + ReK*ImK",
+        [
+            "(Re K)² H_x + (Re K) (Im K)",
+            r"(\operatorname{Re} K)^{2} H_{x} + (\operatorname{Re} K) (\operatorname{Im} K)",
+            "ReK^2*Hx + ReK*ImK",
+        ],
+    );
+    prints(
+        &vars,
+        "ImK/omega",
+        [
+            "(Im K)/ω",
+            r"\frac{\operatorname{Im} K}{\omega}",
+            "ImK/omega",
+        ],
+    );
+}
+
 #[test]
 fn angular_momentum_prints_in_declaration_order() {
     let vars = plane();
