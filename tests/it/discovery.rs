@@ -338,6 +338,16 @@ const COMMANDS: &[(&str, &str)] = &[
         "superint closure systems/higgs-oscillator.toml H L T11 T12 T22 --degree 2 \
          --symbolic lambda,omega --parameters-degree 2",
     ),
+    (
+        "stark-search",
+        "superint search systems/stark.toml --momenta-degree 2 --positions-degree 2 \
+         --symbolic M,k,F --parameters-degree 2 --new-only",
+    ),
+    (
+        "stark-search-4",
+        "superint search systems/stark.toml --momenta-degree 4 --positions-degree 4 \
+         --radicals-degree 2 --new-only",
+    ),
 ];
 
 /// The words of a command line, single quotes grouping.
@@ -3499,6 +3509,101 @@ fn higgs_tensor_relations_are_minimal_over_the_polynomials_in_the_parameters() {
             "{relation}"
         );
     }
+}
+
+/// The Stark problem, the Kepler problem in space in a uniform field `F` along `z`, loaded and
+/// checked: every claim of the file holds for every `M, k, F` (the torque on `L_x`, `L_y`, `L_z`
+/// conserved, the rate `F(x p_x + y p_y)/M` of `A_z` and of the correction, Redmond's
+/// `B_z = A_z − F(x² + y²)/2` conserved and in involution with `L_z`, the Kepler problem at
+/// `F = 0`, rank 3), and each of its five false neighbours is refuted: `A_z` conserved, the
+/// correction with its sign turned, doubled, or over `x² + y² + z²`, and `L_x` conserved.
+#[test]
+fn stark_problem_claims_are_proved_and_its_false_neighbours_refuted() {
+    let file = system_file("stark.toml");
+    assert_claims_as_expected(
+        &file,
+        &[
+            "torque",
+            "axial",
+            "field-rate",
+            "correction-rate",
+            "redmond",
+            "found",
+            "involution",
+            "kepler-limit",
+            "rank",
+        ],
+        &[
+            "false-lrl",
+            "false-field-sign",
+            "false-field-coefficient",
+            "false-field-radius",
+            "false-transverse",
+        ],
+    );
+    // The correction's coefficient 1/2 is the only one: {A_z − cF(x² + y²), H} is
+    // (1 − 2c) F(x p_x + y p_y)/M.
+    let parse = |s: &str| file.parse_argument(s).expect("parses");
+    for (c, factor) in [
+        ("0", "1"),
+        ("1/4", "1/2"),
+        ("1/2", "0"),
+        ("1", "-1"),
+        ("-1/2", "2"),
+    ] {
+        let corrected = format!("Az - ({c})*F*(x^2 + y^2)");
+        let rate = format!("({factor})*F*(x*p_x + y*p_y)/M");
+        assert!(
+            parse(&format!("{{{corrected}, H}} - {rate}"))
+                .vanishes()
+                .unwrap(),
+            "c = {c}"
+        );
+        // With the radical, zero is decided by reducing r² (`vanishes`), not term by term.
+        let conserved = file.system().flow(&parse(&corrected)).unwrap();
+        let conserved = conserved.vanishes().unwrap();
+        assert_eq!(conserved, c == "1/2", "c = {c}");
+    }
+}
+
+/// The Stark problem: up to second order in the momenta and the positions, for every `M, k, F`,
+/// the file's `H`, `L_z` and `B_z` generate every integral; from `H` alone the search finds `L_z`
+/// and Redmond's integral, `−2M B_z` as the file writes it. Up to fourth order in the momenta
+/// and the positions and second in `r`, nothing is new either: the field leaves no integral of
+/// the Kepler problem's other four, and the system is integrable, not superintegrable, as far
+/// as that space sees.
+#[test]
+fn stark_search_finds_the_field_corrected_runge_lenz_component_from_h_alone() {
+    expect(
+        "stark-search",
+        &[
+            "2900 unknowns",
+            "(a parameter's multiple of an integral counts apart from it): 32.",
+            "≤ 0: 10, ≤ 1: 20, ≤ 2: 32.",
+            "Known integrals in the space: H, L_z, B_z.",
+            "None: the known integrals generate every integral in the space.",
+        ],
+    );
+    let text = run_on_hamiltonian_alone("stark-search");
+    for piece in [
+        "Known integrals in the space: H.",
+        "I11 = x p_y − y p_x",
+        "I22 = 2x p_x p_z + 2y p_y p_z − 2z p_x² − 2z p_y² + MFx² + MFy² + 2Mkz/r",
+        "3 claims: 3 proved, 0 refuted",
+    ] {
+        assert!(text.contains(&normalize(piece)), "{piece}: {text}");
+    }
+    assert_eq!(text.matches(" = 0 [I").count(), 2, "{text}");
+    expect(
+        "stark-search-4",
+        &[
+            "5075 unknowns",
+            "Dimension of the space of integrals: 14. By degree in the momenta: ≤ 0: 1, ≤ 1: 2, \
+             ≤ 2: 5, ≤ 3: 8, ≤ 4: 14.",
+            "Known integrals in the space: H, L_z, B_z.",
+            "None: the known integrals generate every integral in the space.",
+        ],
+    );
 }
 
 /// A relation of the same degree that no parameter multiple of another gives is still listed:
