@@ -688,6 +688,21 @@ impl<'a> Builder<'a> {
         }
         for (name, radicand) in declared {
             let text = self.text(radicand);
+            // `r = "sqrt(x^2 + y^2)"` declares the root where the radicand is wanted.
+            let root = text.value.trim().strip_prefix("sqrt(");
+            if let Some(inner) = root.and_then(|t| t.strip_suffix(')')) {
+                if let Ok(under) = Expr::parse(&vars, inner) {
+                    let name = name.get_ref();
+                    return Err(self.error(
+                        ErrorKind::Expression,
+                        radicand.span(),
+                        format!(
+                            "a radicand is what stands under the root, without sqrt: write \
+                             {name} = \"{inner}\", which declares {name} = √({under})"
+                        ),
+                    ));
+                }
+            }
             let value = Expr::parse(&vars, &text.value)
                 .map_err(|e| super::scope::expression_error(&self.source, &text, &e))?;
             if let Some(why) = Expr::radicand_refusal(name.get_ref(), &value) {

@@ -352,6 +352,27 @@ fn momentum_hint(message: &str) -> Option<String> {
     ))
 }
 
+/// The hint for `unknown name 'r'` in a system of two or more momenta: `r` (`rho`, `r1`, `r_12`)
+/// is almost always a distance, which a file declares as a radical by name, with its
+/// radicand; the hint says so before the usual one. `None` for other names, or with fewer
+/// than two momenta (a distance in one coordinate is no square root).
+fn distance_hint(message: &str) -> Option<String> {
+    let name = message.strip_prefix("unknown name '")?.split('\'').next()?;
+    let known = message.rsplit_once("(known: ")?.1.strip_suffix(')')?;
+    let momenta = known.split(", ").filter(|k| k.starts_with("p_")).count();
+    let numbered = |rest: &str| !rest.is_empty() && rest.bytes().all(|b| b.is_ascii_digit());
+    let distance = matches!(name, "r" | "rho" | "ρ")
+        || name.strip_prefix('r').is_some_and(numbered)
+        || name.strip_prefix("r_").is_some_and(numbered);
+    if !distance || momenta < 2 {
+        return None;
+    }
+    Some(format!(
+        "a distance such as {name} = √(x² + y²) is declared by name under [phase_space] with its \
+         radicand, radicals = {{ {name} = \"x^2 + y^2\" }}, after which -k/{name} is exact; {UNKNOWN_NAME_HINT}"
+    ))
+}
+
 /// An expression error at a span of a text, classified as a limit error when it is one.
 pub(crate) fn expression_error(source: &Source, text: &Text, e: &ParseError) -> FileError {
     let message = relocate_opener(source, text, e);
@@ -363,7 +384,7 @@ pub(crate) fn expression_error(source: &Source, text: &Text, e: &ParseError) -> 
         let hint = match (momentum_hint(&message), source.program) {
             (Some(hint), _) => hint,
             (None, true) => UNKNOWN_NAME_HINT_IN_CODE.into(),
-            (None, false) => UNKNOWN_NAME_HINT.into(),
+            (None, false) => distance_hint(&message).unwrap_or_else(|| UNKNOWN_NAME_HINT.into()),
         };
         text.error(source, ErrorKind::Expression, e.span, message)
             .with_hint(hint)

@@ -2787,6 +2787,83 @@ fn misspelled_names_point_to_the_known_ones() {
     }
 }
 
+/// A physicist's first try at the Kepler problem in space writes `-k/r` without declaring the
+/// distance: the hint says how to declare it as a radical (for `r`, `rho`, `r1`, `r_12` in a
+/// system of two momenta or more), where it said only where parameters, functions and families
+/// go. With one coordinate, where a distance is no square root, and for another name, the
+/// usual hint stays.
+#[test]
+fn an_undeclared_distance_is_pointed_to_radicals() {
+    let dir = scratch("undeclared-distance");
+    let space = "coordinates = [\"x\", \"y\", \"z\"]";
+    let line = "coordinates = [\"x\"]";
+    let file = |coordinates: &str, name: &str| {
+        let kinetic = match coordinates == line {
+            true => "p_x^2/2",
+            false => "(p_x^2 + p_y^2 + p_z^2)/2",
+        };
+        format!(
+            "hamiltonian = \"{kinetic} - k/{name}\"\n[phase_space]\n{coordinates}\n\
+             parameters = [\"k\"]\n"
+        )
+    };
+    for (coordinates, name, radical_hint) in [
+        (space, "r", true),
+        (space, "rho", true),
+        (space, "r_12", true),
+        (space, "s", false),
+        (line, "r", false),
+    ] {
+        std::fs::write(dir.join("kepler.toml"), file(coordinates, name)).expect("write");
+        let o = superint_in(&dir, &["check", "kepler.toml"]);
+        let stderr = text(&o.stderr);
+        assert_eq!(o.status.code(), Some(2), "{stderr}");
+        assert!(!stderr.contains("panicked"), "{stderr}");
+        assert!(
+            stderr.starts_with("superint: error: kepler.toml:1:")
+                && stderr.contains(&format!("unknown name '{name}'")),
+            "{stderr}"
+        );
+        let declare =
+            format!("radicals = {{ {name} = \"x^2 + y^2\" }}, after which -k/{name} is exact");
+        assert_eq!(stderr.contains(&declare), radical_hint, "{name}: {stderr}");
+        // The usual hint follows either way.
+        assert!(
+            stderr.contains("a constant such as a mass is declared under [phase_space] parameters"),
+            "{stderr}"
+        );
+    }
+}
+
+/// A radical declared with its root, `r = "sqrt(x^2 + y^2 + z^2)"`, where the radicand alone
+/// is wanted, is refused at its place with what to write, not with `sqrt(…) is no declared
+/// radical: declare it`, which read as if the declaration being written were missing.
+#[test]
+fn a_radicand_written_as_a_root_is_refused_with_the_radicand_to_write() {
+    let dir = scratch("radicand-as-root");
+    let file = "hamiltonian = \"(p_x^2 + p_y^2 + p_z^2)/2 - k/r\"\n[phase_space]\n\
+                coordinates = [\"x\", \"y\", \"z\"]\nparameters = [\"k\"]\n\
+                radicals = { r = \"sqrt(x^2 + y^2 + z^2)\" }\n";
+    std::fs::write(dir.join("kepler.toml"), file).expect("write");
+    let o = superint_in(&dir, &["check", "kepler.toml"]);
+    let stderr = text(&o.stderr);
+    assert_eq!(o.status.code(), Some(2), "{stderr}");
+    assert!(
+        stderr.starts_with(
+            "superint: error: kepler.toml:5:18: a radicand is what stands under the root, \
+             without sqrt: write r = \"x^2 + y^2 + z^2\", which declares r = √(x² + y² + z²)"
+        ),
+        "{stderr}"
+    );
+    // Written as the radicand, the file loads.
+    let fixed = file.replace("\"sqrt(x^2 + y^2 + z^2)\"", "\"x^2 + y^2 + z^2\"");
+    std::fs::write(dir.join("kepler.toml"), fixed).expect("write");
+    assert_eq!(
+        superint_in(&dir, &["check", "kepler.toml"]).status.code(),
+        Some(0)
+    );
+}
+
 /// A function used before it is declared, or by the Hamiltonian, is named in the hint.
 #[test]
 fn a_function_used_too_early_is_explained() {
