@@ -2864,6 +2864,27 @@ fn a_radicand_written_as_a_root_is_refused_with_the_radicand_to_write() {
     );
 }
 
+/// A decimal in an expression is refused (it is no exact number) with the fraction it writes,
+/// which can be copied in: `0.5 is 1/2`, `.25 is 1/4`, `2. is 2`; it said only "such as 3/2".
+#[test]
+fn a_decimal_is_refused_with_the_fraction_it_writes() {
+    for (expr, place, fraction) in [
+        ("x + 0.5*F*z", "1:5", "0.5 is 1/2"),
+        ("x + .25", "1:5", ".25 is 1/4"),
+        ("x + 2.", "1:5", "2. is 2"),
+        ("1.125*k", "1:1", "1.125 is 9/8"),
+    ] {
+        let o = superint_in(root(), &["expand", "systems/stark.toml", "--", expr]);
+        let stderr = text(&o.stderr);
+        assert_eq!(o.status.code(), Some(2), "{stderr}");
+        let message = format!(
+            "superint: error: <command line>:{place}: decimal numbers are not exact; write a \
+             fraction: {fraction}\n"
+        );
+        assert!(stderr.starts_with(&message), "{expr}: {stderr}");
+    }
+}
+
 /// A function used before it is declared, or by the Hamiltonian, is named in the hint.
 #[test]
 fn a_function_used_too_early_is_explained() {

@@ -210,12 +210,43 @@ impl<'a> Lexer<'a> {
         Some(ParseError::new(Span::new(start, self.pos), message))
     }
 
-    /// Error for a decimal number starting at `start`; consumes its remaining digits.
+    /// Error for a decimal number starting at `start`; consumes its remaining digits. The
+    /// message names the fraction the decimal writes (`0.5 is 1/2`), as `plot` and `--fix`
+    /// read it, so that it can be copied in.
     fn decimal_error(&mut self, start: usize) -> ParseError {
         self.eat_while(|c| c.is_ascii_digit());
-        ParseError::new(
-            Span::new(start, self.pos),
-            "decimal numbers are not exact; write a fraction such as 3/2",
-        )
+        let written = &self.src[start..self.pos];
+        let message = match decimal_fraction(written) {
+            Some(fraction) => {
+                format!("decimal numbers are not exact; write a fraction: {written} is {fraction}")
+            }
+            None => "decimal numbers are not exact; write a fraction such as 3/2".to_string(),
+        };
+        ParseError::new(Span::new(start, self.pos), message)
     }
+}
+
+/// The fraction in lowest terms that a decimal `1.5`, `.25` or `2.` writes (`3/2`, `1/4`,
+/// `2`); `None` when it has too many digits for a machine integer.
+fn decimal_fraction(written: &str) -> Option<String> {
+    let (whole, fractional) = written.split_once('.')?;
+    if whole.len() + fractional.len() > 36 {
+        return None;
+    }
+    let digits = format!("{whole}{fractional}");
+    let numerator: u128 = if digits.is_empty() {
+        0
+    } else {
+        digits.parse().ok()?
+    };
+    let denominator = 10u128.checked_pow(u32::try_from(fractional.len()).ok()?)?;
+    let (mut a, mut b) = (numerator, denominator);
+    while b != 0 {
+        (a, b) = (b, a % b);
+    }
+    let (n, d) = (numerator / a, denominator / a);
+    Some(match d {
+        1 => n.to_string(),
+        _ => format!("{n}/{d}"),
+    })
 }

@@ -152,9 +152,9 @@ fn cases() -> Vec<Case> {
         case(
             Q,
             "1.5",
-            "decimal numbers are not exact; write a fraction such as 3/2",
+            "decimal numbers are not exact; write a fraction: 1.5 is 3/2",
             (1, 1),
-            "line 1, column 1: decimal numbers are not exact; write a fraction such as 3/2\n  1.5\n  ^^^",
+            "line 1, column 1: decimal numbers are not exact; write a fraction: 1.5 is 3/2\n  1.5\n  ^^^",
         ),
         case(
             Q,
