@@ -3639,6 +3639,45 @@ fn an_independent_relation_of_the_same_degree_is_still_listed() {
     }
 }
 
+/// A generator with the prime `2⁶² − 57` in a denominator, `X = L/p`, has its relations'
+/// span formed over Q (`L = pX` has no value modulo p), grown by the multiples of each
+/// relation listed before the next is tested: at degree 3 the three listed are `L = pX` and
+/// the Higgs tensor's two written in `X`, and none of their multiples (a span over Q formed
+/// once and not grown lists them too).
+#[test]
+fn a_closure_over_the_primes_denominator_lists_only_minimal_relations() {
+    let o = superint(&[
+        "closure",
+        "systems/higgs-oscillator.toml",
+        "X",
+        "H",
+        "L",
+        "T11",
+        "T12",
+        "T22",
+        "--define",
+        "X=L/4611686018427387847",
+        "--degree",
+        "3",
+        "--symbolic",
+        "lambda,omega",
+        "--parameters-degree",
+        "2",
+        "--no-timings",
+    ]);
+    assert_eq!(o.status.code(), Some(0));
+    let text = normalize(&String::from_utf8(o.stdout).expect("UTF-8"));
+    let p2 = "21267647932558653440728706863763295409";
+    for piece in [
+        "4611686018427387847 X = L [R1 proved]".to_string(),
+        format!("{p2}λ X² + T_11 + T_22 = 2 H [R2 proved]"),
+        format!("{p2}ω² X² + T_12² = T_11 T_22 [R3 proved]"),
+    ] {
+        assert!(text.contains(&piece), "{piece}: {text}");
+    }
+    assert!(!text.contains("[R4"), "{text}");
+}
+
 /// With `M` kept symbolic, `{H_x, S} = −3C/M` has a coefficient that no `--parameters-degree`
 /// makes a polynomial in `M`: the advice under the table says so and what to do (it named only
 /// higher degrees), and with `M` left out of `--symbolic` (fixed, then lifted) the table closes.

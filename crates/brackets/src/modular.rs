@@ -595,6 +595,21 @@ pub fn reconstruct_vec(v: &SparseVec<Fp>) -> Option<SparseVec<Rational>> {
         .collect()
 }
 
+/// The sparse vector of entries `(j, x)` in any order, those of one index added up, zeros
+/// dropped.
+pub(crate) fn sum_by_index<F: Field>(mut v: SparseVec<F>) -> SparseVec<F> {
+    v.sort_unstable_by_key(|x| x.0);
+    v.dedup_by(|later, kept| {
+        let same = later.0 == kept.0;
+        if same {
+            kept.1 = kept.1.add(&later.1);
+        }
+        same
+    });
+    v.retain(|x| !x.1.is_zero());
+    v
+}
+
 /// The kernel of a matrix given by its columns (sparse, rows below `rows`): one kernel vector
 /// per column that depends on the earlier ones, `e_j − Σ c_i e_i`, in column order. Computed
 /// modulo `p`, reconstructed, and checked exactly against every column; if the check fails the

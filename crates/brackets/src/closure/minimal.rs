@@ -135,6 +135,11 @@ struct RelationIdeal<'a> {
     /// Their span modulo the prime; `None` once a multiple has a denominator the prime
     /// divides, and the span is formed over `Q` instead.
     modular: Option<Echelon<Fp>>,
+    /// Their span over `Q`, where the prime does not decide, grown with the later multiples
+    /// when next needed.
+    exact: Echelon<Rational>,
+    /// How many of the multiples `exact` holds.
+    exact_joined: usize,
     /// The relations listed whose multiples are not yet in the span (they are added before
     /// the next relation is tested).
     pending: Vec<SparseVec<Rational>>,
@@ -157,6 +162,8 @@ impl<'a> RelationIdeal<'a> {
             keys: Vec::new(),
             multiples: Vec::new(),
             modular: Some(Echelon::new(0)),
+            exact: Echelon::new(0),
+            exact_joined: 0,
             pending: Vec::new(),
         }
     }
@@ -241,15 +248,11 @@ impl<'a> RelationIdeal<'a> {
         if over_columns.is_empty() || self.simplicity(&over_columns) >= self.simplicity(rel) {
             return None;
         }
-        let mut difference: HashMap<usize, Rational> = v.iter().cloned().collect();
-        for (i, x) in &residue {
-            *difference.entry(*i).or_insert_with(Rational::zero) -= x;
-        }
-        let mut difference: SparseVec<Rational> = difference
-            .into_iter()
-            .filter(|(_, x)| !x.is_zero())
-            .collect();
-        difference.sort_by_key(|e| e.0);
+        let difference = modular::sum_by_index(
+            (v.iter().cloned())
+                .chain(residue.iter().map(|(i, x)| (*i, -x)))
+                .collect(),
+        );
         let combination = echelon.express(&modular::to_fp(&difference)?)?;
         let combination = modular::reconstruct_vec(&combination)?;
         self.combination_equals(&combination, &difference)
@@ -273,11 +276,12 @@ impl<'a> RelationIdeal<'a> {
                 }
             }
         }
-        let mut exact = Echelon::<Rational>::new(dim);
-        for (id, m) in self.multiples.iter().enumerate() {
-            exact.insert(id, m);
+        self.exact.grow(dim);
+        for (id, m) in self.multiples.iter().enumerate().skip(self.exact_joined) {
+            self.exact.insert(id, m);
         }
-        exact.contains(v)
+        self.exact_joined = self.multiples.len();
+        self.exact.contains(v)
     }
 
     /// Whether `Σ c_id · multiples[id] = v` exactly.

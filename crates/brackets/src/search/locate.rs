@@ -10,10 +10,10 @@ use trigpoly::{Expr, Rational, Var};
 
 use crate::clearing::Clearing;
 use crate::error::EngineError;
-use crate::modular::{Echelon, SparseVec};
+use crate::modular::{sum_by_index, Echelon, SparseVec};
 
 use super::parameters::free_parameters;
-use super::problem::{real_columns, real_entries, sum_by_index, Problem, RowIndex};
+use super::problem::{real_columns, real_entries, Problem, RowIndex};
 
 /// The coordinates of the real and of the imaginary part of a function.
 type Parts = (SparseVec<Rational>, SparseVec<Rational>);

@@ -6,7 +6,7 @@ use rustc_hash::FxHashMap;
 use trigpoly::{Expr, GaussianRational, Rational, Style, Term, Var, VarKind, Vars};
 
 use crate::error::EngineError;
-use crate::modular::{self, Echelon, Field, Fp, SparseVec};
+use crate::modular::{self, sum_by_index, Echelon, Field, Fp, SparseVec};
 use crate::system::System;
 
 use super::locate::{ClearedBasis, Locator};
@@ -14,7 +14,7 @@ use super::options::{SearchOptions, SearchSpace};
 use super::parameters::{
     fix_parameters, free_parameters, without_parameter_denominators, Multiple,
 };
-use super::problem::{sum_by_index, Problem, Slot};
+use super::problem::{Problem, Slot};
 use super::proof::{is_phase_free, lead};
 use super::result::{parameter_text, Integral, NewIntegrals, SpaceVariables};
 
@@ -390,6 +390,9 @@ struct Divided<'a> {
     span: Echelon<Rational>,
     /// A basis of the span, in the order its vectors joined.
     vectors: Vec<SparseVec<Rational>>,
+    /// For each parameter's pairs, dividing and multiplying, how many vectors the span had
+    /// when that kernel was last taken: the same kernel again brings in nothing new.
+    taken_at: Vec<[Option<usize>; 2]>,
 }
 
 /// The pairs `X`, `a·X` of the parameter multiples by one parameter `a`, side by side.
@@ -416,6 +419,7 @@ impl<'a> Divided<'a> {
             }
         }
         Divided {
+            taken_at: vec![[None; 2]; pairs.len()],
             pairs,
             rows,
             span: Echelon::new(rows),
@@ -435,12 +439,17 @@ impl<'a> Divided<'a> {
     /// Adds, until none is new, each `X` whose multiple `a·X` the span holds and each `a·X`
     /// (in the space) of an `X` it holds: a combination `Σ λ_m from_m` of one side of the
     /// pairs that lies in the span (a kernel vector of those and the span's basis, exact)
-    /// brings in `Σ λ_m to_m` of the other.
+    /// brings in `Σ λ_m to_m` of the other. A kernel is taken again only once the span has
+    /// grown.
     fn close(&mut self) {
         loop {
             let mut grew = false;
             for p in 0..self.pairs.len() {
-                for divide in [true, false] {
+                for (side, divide) in [true, false].into_iter().enumerate() {
+                    if self.taken_at[p][side] == Some(self.vectors.len()) {
+                        continue;
+                    }
+                    self.taken_at[p][side] = Some(self.vectors.len());
                     let Pairs { of, multiple, .. } = &self.pairs[p];
                     let (from, to) = match divide {
                         true => (multiple, of),

@@ -6,11 +6,11 @@ use trigpoly::{AlgebraError, Expr, GaussianRational, Rational, Var, VarKind, Var
 use crate::claim::Condition;
 use crate::clearing::Clearing;
 use crate::error::EngineError;
-use crate::modular::{self, Echelon, SparseVec};
+use crate::modular::{self, sum_by_index, Echelon, SparseVec};
 use crate::system::System;
 
 use super::options::SearchOptions;
-use super::problem::{real_columns, sum_by_index, Problem};
+use super::problem::{real_columns, Problem};
 use super::result::Integral;
 
 /// Refuses values fixed for what is no parameter, and parameters to keep symbolic that are no

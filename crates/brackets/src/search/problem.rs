@@ -6,7 +6,7 @@ use trigpoly::{Expr, GaussianRational, MonomialIndex, Rational, Term, Var, VarKi
 
 use crate::clearing::Clearing;
 use crate::error::EngineError;
-use crate::modular::{Field, Fp, SparseVec};
+use crate::modular::{sum_by_index, Field, Fp, SparseVec};
 use crate::system::System;
 
 use super::independence::independent_as_functions;
@@ -754,21 +754,6 @@ pub(super) fn push_nonzero<F: Field>(v: &mut SparseVec<F>, j: usize, x: F) {
     if !x.is_zero() {
         v.push((j, x));
     }
-}
-
-/// The sparse vector of entries `(j, x)` in any order, those of one index added up, zeros
-/// dropped.
-pub(super) fn sum_by_index<F: Field>(mut v: SparseVec<F>) -> SparseVec<F> {
-    v.sort_unstable_by_key(|x| x.0);
-    v.dedup_by(|later, kept| {
-        let same = later.0 == kept.0;
-        if same {
-            kept.1 = kept.1.add(&later.1);
-        }
-        same
-    });
-    v.retain(|x| !x.1.is_zero());
-    v
 }
 
 /// Union–find.
