@@ -196,12 +196,41 @@ impl System {
         self.space.bracket(f, g)
     }
 
-    /// `df/dt = {f, H}`, with the gradient of `H` computed once per system.
+    /// `df/dt = {f, H}`, with the gradient of `H` computed once per system. Whether it is
+    /// zero is [`Expr::vanishes`] (or [`System::conserves`]), not [`Expr::is_zero`]: with
+    /// radicals or denominator atoms a zero can have terms (`r² − x² − y²`).
     pub fn flow(&self, f: &Expr) -> Result<Expr, EngineError> {
         match &self.dh {
             Some(dh) => self.space.bracket_with_gradient(f, dh),
             None => self.space.bracket(f, self.hamiltonian()),
         }
+    }
+
+    /// Whether `f` is an integral of the motion, `{f, H} = 0`, by the exact zero test of the
+    /// ring ([`Expr::vanishes`]): the flow cleared of its denominator atoms and reduced by
+    /// `r² = R` for each radical, where a bare [`Expr::is_zero`] on [`System::flow`] would miss
+    /// a zero that has terms.
+    ///
+    /// ```
+    /// use brackets::{PhaseSpace, System};
+    /// use trigpoly::{Expr, VarSet};
+    ///
+    /// // The Kepler problem in the plane, with r = √(x² + y²).
+    /// let vars = VarSet::builder()
+    ///     .coordinate("x").coordinate("y").momentum("p_x").momentum("p_y")
+    ///     .parameter("k").radical("r", "x^2 + y^2")
+    ///     .build()?;
+    /// let space = PhaseSpace::new(&vars, &[("x", "p_x"), ("y", "p_y")])?;
+    /// let h = Expr::parse(&vars, "(p_x^2 + p_y^2)/2 - k/r")?;
+    /// let kepler = System::new("Kepler", space, h);
+    /// let runge_lenz = Expr::parse(&vars, "p_y*(x*p_y - y*p_x) - k*x/r")?;
+    /// assert!(!kepler.flow(&runge_lenz)?.is_zero()); // terms that cancel only by r² = x² + y²
+    /// assert!(kepler.conserves(&runge_lenz)?);
+    /// assert!(!kepler.conserves(&Expr::parse(&vars, "x*p_y")?)?);
+    /// # Ok::<(), Box<dyn std::error::Error>>(())
+    /// ```
+    pub fn conserves(&self, f: &Expr) -> Result<bool, EngineError> {
+        Ok(self.flow(f)?.vanishes()?)
     }
 
     /// `{f, H}` under a condition (a resonance `p_θ = mIω/n`, say): the flow with the
