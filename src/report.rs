@@ -614,8 +614,13 @@ impl Report {
         )
     }
 
-    /// The closing line of the claims: `26 claims: 26 proved, 0 refuted (93 exact checks)`.
+    /// The closing line of the claims: `26 claims: 26 proved, 0 refuted (93 exact checks)`;
+    /// that of a computation where there are none (a closure of commuting generators, whose
+    /// zero brackets and lack of relations make no claim), rather than `0 claims: 0 proved`.
     fn claims_summary(&self, timings: bool) -> String {
+        if self.claims().is_empty() {
+            return self.computed_summary(timings);
+        }
         let time = if timings {
             format!(", {:.2} s", self.seconds)
         } else {

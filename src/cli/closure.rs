@@ -3,7 +3,7 @@
 
 use std::path::PathBuf;
 
-use anyhow::{anyhow, bail, Context};
+use anyhow::{anyhow, bail};
 use brackets::closure::ClosureOptions;
 use brackets::NamedFunction;
 use clap::Args;
@@ -245,7 +245,16 @@ pub fn run(job: &ClosureJob) -> anyhow::Result<bool> {
         &options,
         Caller::CommandLine,
     )
-    .context("computing the closure")?;
+    .map_err(|e| match e.is_limit() {
+        // Which product passed it is the engine's own business; what the user can change is
+        // the limit or the degree.
+        true => anyhow!(
+            "computing the closure: {e}; raise the limit with --max-terms N, --max-degree D or \
+             --max-term-products N, or lower --degree (the products of the generators up to it \
+             are formed)"
+        ),
+        false => anyhow::Error::new(e).context("computing the closure"),
+    })?;
     let report = subject.tag(report);
     emit(&render(&report, job.output.format, &job.output.options))?;
     Ok(report.all_proved())

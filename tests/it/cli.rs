@@ -3706,3 +3706,67 @@ fn the_closure_help_example_of_define_runs() {
     );
     assert!(out.contains("Hp + G2 = 2 Ex"), "{out}");
 }
+
+/// A closure of generators in involution has no bracket to write and, here, no relation: its
+/// closing line says the table was computed exactly, not `0 claims: 0 proved, 0 refuted (0
+/// exact checks)`, which read as if nothing had been checked.
+#[test]
+fn a_closure_without_claims_closes_with_what_was_computed() {
+    let out = run(
+        &[
+            "closure",
+            "systems/stark.toml",
+            "H",
+            "Lz",
+            "Bz",
+            "--no-timings",
+        ],
+        0,
+    );
+    assert!(out.contains("    B_z   │ 0   0     0\n"), "{out}");
+    assert!(out.ends_with("\ncomputed exactly\n"), "{out}");
+    assert!(!out.contains("0 claims"), "{out}");
+}
+
+/// A closure that passes a limit while forming the products of its generators stops with exit
+/// code 2 and says how to go on: raise the limit, or lower the degree.
+#[test]
+fn a_closure_at_a_limit_says_how_to_go_on() {
+    let o = superint_exits(
+        &[
+            "closure",
+            "systems/stark.toml",
+            "H",
+            "Lz",
+            "X",
+            "--define",
+            "X=p_y^300",
+            "--degree",
+            "4",
+        ],
+        2,
+    );
+    assert_eq!(
+        stderr(&o),
+        "superint: error: computing the closure: the exponent of p_y would reach 1200, past \
+         the limit of 1000; raise the limit with --max-terms N, --max-degree D or \
+         --max-term-products N, or lower --degree (the products of the generators up to it \
+         are formed)\n"
+    );
+    run(
+        &[
+            "closure",
+            "systems/stark.toml",
+            "H",
+            "Lz",
+            "X",
+            "--define",
+            "X=p_y^300",
+            "--degree",
+            "4",
+            "--max-degree",
+            "1200",
+        ],
+        0,
+    );
+}
