@@ -337,9 +337,7 @@ const UNKNOWN_NAME_HINT_IN_CODE: &str = "a constant such as a mass is a paramete
 /// name is neither `p_…` nor `p` and digits (`phi` may be anything), or the system has no
 /// momenta.
 fn momentum_hint(message: &str) -> Option<String> {
-    let name = message.strip_prefix("unknown name '")?.split('\'').next()?;
-    let known = message.rsplit_once("(known: ")?.1.strip_suffix(')')?;
-    let momenta: Vec<&str> = known.split(", ").filter(|k| k.starts_with("p_")).collect();
+    let (name, momenta) = unknown_name_and_momenta(message)?;
     let numbered = name
         .strip_prefix('p')
         .is_some_and(|n| !n.is_empty() && n.bytes().all(|b| b.is_ascii_digit()));
@@ -357,20 +355,45 @@ fn momentum_hint(message: &str) -> Option<String> {
 /// radicand; the hint says so before the usual one. `None` for other names, or with fewer
 /// than two momenta (a distance in one coordinate is no square root).
 fn distance_hint(message: &str) -> Option<String> {
-    let name = message.strip_prefix("unknown name '")?.split('\'').next()?;
-    let known = message.rsplit_once("(known: ")?.1.strip_suffix(')')?;
-    let momenta = known.split(", ").filter(|k| k.starts_with("p_")).count();
+    let (name, momenta) = unknown_name_and_momenta(message)?;
     let numbered = |rest: &str| !rest.is_empty() && rest.bytes().all(|b| b.is_ascii_digit());
     let distance = matches!(name, "r" | "rho" | "ρ")
         || name.strip_prefix('r').is_some_and(numbered)
         || name.strip_prefix("r_").is_some_and(numbered);
-    if !distance || momenta < 2 {
+    if !distance || momenta.len() < 2 {
         return None;
     }
     Some(format!(
         "a distance such as {name} = √(x² + y²) is declared by name under [phase_space] with its \
-         radicand, radicals = {{ {name} = \"x^2 + y^2\" }}, after which -k/{name} is exact; {UNKNOWN_NAME_HINT}"
+         radicand, radicals = {{ {name} = \"x^2 + y^2\" }}, after which -k/{name} is exact; \
+         {UNKNOWN_NAME_HINT}"
     ))
+}
+
+/// The hint for `unknown name 'p'` in a system with momenta: a bare `p` is almost always the
+/// momentum, whose components are named after their coordinates (`|p|²` is `p_x^2 + p_y^2`).
+/// `None` for other names, or without momenta.
+fn bare_momentum_hint(message: &str) -> Option<String> {
+    let (name, momenta) = unknown_name_and_momenta(message)?;
+    if name != "p" || momenta.is_empty() {
+        return None;
+    }
+    let squares: Vec<String> = momenta.iter().map(|m| format!("{m}^2")).collect();
+    Some(format!(
+        "the momenta are named after their coordinates, here {} (|p|² is {}); \
+         {UNKNOWN_NAME_HINT}",
+        momenta.join(", "),
+        squares.join(" + ")
+    ))
+}
+
+/// The unknown name of `unknown name 'p_1' (known: q1, p_q1, …)` and the momenta among the
+/// known names (`p_…`).
+fn unknown_name_and_momenta(message: &str) -> Option<(&str, Vec<&str>)> {
+    let name = message.strip_prefix("unknown name '")?.split('\'').next()?;
+    let known = message.rsplit_once("(known: ")?.1.strip_suffix(')')?;
+    let momenta = known.split(", ").filter(|k| k.starts_with("p_")).collect();
+    Some((name, momenta))
 }
 
 /// An expression error at a span of a text, classified as a limit error when it is one.
@@ -384,7 +407,9 @@ pub(crate) fn expression_error(source: &Source, text: &Text, e: &ParseError) -> 
         let hint = match (momentum_hint(&message), source.program) {
             (Some(hint), _) => hint,
             (None, true) => UNKNOWN_NAME_HINT_IN_CODE.into(),
-            (None, false) => distance_hint(&message).unwrap_or_else(|| UNKNOWN_NAME_HINT.into()),
+            (None, false) => distance_hint(&message)
+                .or_else(|| bare_momentum_hint(&message))
+                .unwrap_or_else(|| UNKNOWN_NAME_HINT.into()),
         };
         text.error(source, ErrorKind::Expression, e.span, message)
             .with_hint(hint)
@@ -876,6 +901,22 @@ mod tests {
         }
         // No momenta to show.
         assert_eq!(momentum_hint("unknown name 'p_1' (known: omega, H)"), None);
+        // A bare `p` is shown the momenta and the square of the momentum.
+        assert!(
+            bare_momentum_hint(&format!("unknown name 'p' {known}")).is_some_and(|h| h
+                .starts_with(
+                    "the momenta are named after their coordinates, here p_q1, p_q2 (|p|² is \
+                 p_q1^2 + p_q2^2); a constant"
+                ))
+        );
+        assert_eq!(
+            bare_momentum_hint("unknown name 'p' (known: omega, H)"),
+            None
+        );
+        assert_eq!(
+            bare_momentum_hint(&format!("unknown name 'q' {known}")),
+            None
+        );
         // Its own message's form with a suggestion before the known names.
         let meant = "unknown name 'p_1'; did you mean 'p_q1'? (known: q1, p_q1)";
         assert!(momentum_hint(meant).is_some_and(|h| h.ends_with("here p_q1")));
