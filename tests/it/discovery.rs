@@ -2717,7 +2717,7 @@ fn closure_past_degree_six_finds_the_3_5_oscillator_relation() {
         "The table closes: every bracket is a polynomial of degree ≤ 8 in the generators.",
         "{Re A, Im A} = 5760M⁸ω H_x⁵ H_y² − 9600M⁸ω H_x⁴ H_y³ [B5 proved]",
         // The relation cleared of 1/M⁸, which it has in two of its three terms.
-        "256M⁸ H_x⁵ H_y³ = ReA² + ImA² [R1 proved]",
+        "256M⁸ H_x⁵ H_y³ = (Re A)² + (Im A)² [R1 proved]",
         "6 claims: 6 proved, 0 refuted",
     ] {
         assert!(text.contains(line), "{line} not in {text}");
