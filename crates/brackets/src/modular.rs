@@ -20,6 +20,7 @@
 //! assert_eq!(e.rank(), 2);
 //! ```
 
+use std::borrow::Borrow;
 use std::cmp::Reverse;
 use std::collections::BinaryHeap;
 use std::fmt::Debug;
@@ -708,16 +709,17 @@ pub fn in_kernel(columns: &[SparseVec<Rational>], rows: usize, v: &SparseVec<Rat
     combination_equals(columns, rows, v, &[])
 }
 
-/// Whether `Σ v_j · column_j = target` exactly (the columns' rows below `rows`).
-pub fn combination_equals(
-    columns: &[SparseVec<Rational>],
+/// Whether `Σ v_j · column_j = target` exactly (the columns' rows below `rows`); the columns
+/// held or borrowed.
+pub fn combination_equals<C: Borrow<SparseVec<Rational>>>(
+    columns: &[C],
     rows: usize,
     v: &SparseVec<Rational>,
     target: &[(usize, Rational)],
 ) -> bool {
     debug_assert!(v
         .iter()
-        .all(|(j, _)| columns[*j].iter().all(|(i, _)| *i < rows)));
+        .all(|(j, _)| columns[*j].borrow().iter().all(|(i, _)| *i < rows)));
     sums_to(&mut Accumulator::new(), columns, v, target)
 }
 
@@ -725,14 +727,14 @@ pub fn combination_equals(
 /// Only the rows the columns touch are read: a search checks each of its kernel vectors
 /// against tens of thousands of equations, and a dense sum of them all for each vector was
 /// most of its time.
-fn sums_to(
+fn sums_to<C: Borrow<SparseVec<Rational>>>(
     sum: &mut Accumulator<Rational>,
-    columns: &[SparseVec<Rational>],
+    columns: &[C],
     v: &SparseVec<Rational>,
     target: &[(usize, Rational)],
 ) -> bool {
     for (j, x) in v {
-        for (i, a) in &columns[*j] {
+        for (i, a) in columns[*j].borrow() {
             sum.add(*i, &(x * a));
         }
     }

@@ -1,8 +1,6 @@
 //! Which integrals are new (`SearchOptions::new_only`): the basis modulo the span of products
 //! of known and lower integrals, graded by size.
 
-use rustc_hash::FxHashMap;
-
 use trigpoly::{Expr, GaussianRational, Rational, Style, Term, Var, VarKind, Vars};
 
 use crate::error::EngineError;
@@ -494,16 +492,14 @@ fn dependency_holds(
     v: &SparseVec<Rational>,
 ) -> Option<bool> {
     let coeffs = modular::reconstruct_vec(dependency)?;
-    let mut acc: FxHashMap<usize, Rational> = FxHashMap::default();
-    for (id, c) in &coeffs {
-        for (i, x) in inserted[*id] {
-            *acc.entry(*i).or_insert_with(Rational::zero) += c * x;
-        }
-    }
-    for (i, x) in v {
-        *acc.entry(*i).or_insert_with(Rational::zero) -= x;
-    }
-    Some(acc.values().all(|x| x.is_zero()))
+    let rows = inserted
+        .iter()
+        .flat_map(|column| column.last())
+        .chain(v.last())
+        .map(|(i, _)| i + 1)
+        .max()
+        .unwrap_or(0);
+    Some(modular::combination_equals(inserted, rows, &coeffs, v))
 }
 
 /// The known integrals of a search for new ones.
