@@ -3732,20 +3732,18 @@ fn a_closure_without_claims_closes_with_what_was_computed() {
 /// code 2 and says how to go on: raise the limit, or lower the degree.
 #[test]
 fn a_closure_at_a_limit_says_how_to_go_on() {
-    let o = superint_exits(
-        &[
-            "closure",
-            "systems/stark.toml",
-            "H",
-            "Lz",
-            "X",
-            "--define",
-            "X=p_y^300",
-            "--degree",
-            "4",
-        ],
-        2,
-    );
+    let closure = [
+        "closure",
+        "systems/stark.toml",
+        "H",
+        "Lz",
+        "X",
+        "--define",
+        "X=p_y^300",
+        "--degree",
+        "4",
+    ];
+    let o = superint_exits(&closure, 2);
     assert_eq!(
         stderr(&o),
         "superint: error: computing the closure: the exponent of p_y would reach 1200, past \
@@ -3753,20 +3751,5 @@ fn a_closure_at_a_limit_says_how_to_go_on() {
          --max-term-products N, or lower --degree (the products of the generators up to it \
          are formed)\n"
     );
-    run(
-        &[
-            "closure",
-            "systems/stark.toml",
-            "H",
-            "Lz",
-            "X",
-            "--define",
-            "X=p_y^300",
-            "--degree",
-            "4",
-            "--max-degree",
-            "1200",
-        ],
-        0,
-    );
+    run(&[&closure[..], &["--max-degree", "1200"]].concat(), 0);
 }
