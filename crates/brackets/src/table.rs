@@ -322,13 +322,15 @@ fn split_frac(latex: &str) -> Option<(&str, &str)> {
 }
 
 /// `G1'` → `G_{1}'`, `Z̄` → `\bar{Z}`, `L` → `L`, `P'_{1,1}` → `P'_{1,1}`: the name as
-/// [`trigpoly::display_forms`] writes it in LaTeX (word by word in a name of several words,
-/// `Re ω` → `\mathrm{Re} \omega`), before any subscript of its own (a family instance's
-/// indices), which joins a subscript the name ends with after `;` (`K₁_{1,2}` → `K_{1;1,2}`:
-/// LaTeX refuses a double subscript).
+/// [`trigpoly::display_forms`] writes it in LaTeX (a name of words as
+/// [`trigpoly::words_display_forms`] does, `Re ω` → `\operatorname{Re} \omega`, as a variable
+/// shown by it prints; any other word by word), before any subscript of its own (a family
+/// instance's indices), which joins a subscript the name ends with after `;` (`K₁_{1,2}` →
+/// `K_{1;1,2}`: LaTeX refuses a double subscript).
 pub fn latex_name(name: &str) -> String {
     let (head, subscript) = name.split_at(name.find("_{").unwrap_or(name.len()));
-    let head = match trigpoly::display_forms(head) {
+    let forms = trigpoly::display_forms(head).or_else(|| trigpoly::words_display_forms(head));
+    let head = match forms {
         Some((_, latex)) => latex,
         None => words_in_latex(head),
     };
@@ -1069,7 +1071,8 @@ mod tests {
             ("Z̄'", r"\bar{Z}'"),
             ("P_{1,1}", "P_{1,1}"),
             ("K̄'_{2,3}", r"\bar{K}'_{2,3}"),
-            ("Re K", r"\mathrm{Re} K"),
+            ("Re K", r"\operatorname{Re} K"),
+            ("Re ω", r"\operatorname{Re} \omega"),
             ("Z̄_x", r"\bar{Z}_{x}"),
             ("ω (x)", r"\omega (x)"),
             ("K₁_{1,2}", "K_{1;1,2}"),
