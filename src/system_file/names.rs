@@ -7,8 +7,8 @@ use std::ops::Range;
 
 use brackets::System;
 use trigpoly::{
-    display_forms, is_identifier, latex_unwritable, quoted_name, unbarred, Span, VarSet, Vars,
-    RESERVED,
+    display_forms, is_identifier, latex_unwritable, quoted_name, unbarred, words_display_forms,
+    Span, VarSet, Vars, RESERVED,
 };
 
 use super::error::{ErrorKind, FileError};
@@ -291,7 +291,7 @@ impl PrintedNames {
 
     /// Takes the forms of `display`, `whose` they are, declared on `line` if it has one, unless
     /// a name already prints so: then why (`the function B would show as A, as the function A
-    /// on line 9 does`). A display without such forms (refused elsewhere) is taken as it is.
+    /// on line 9 does`).
     pub(super) fn admit_display(
         &mut self,
         whose: &str,
@@ -312,13 +312,16 @@ impl PrintedNames {
         line: Option<usize>,
         indices: &str,
     ) -> Result<(), String> {
-        let Some((text, latex)) = display_forms(display) else {
-            return Ok(());
+        // A display of several words (`Re K`) has forms too; one of neither (`x(t)`) is
+        // compared as it is written, in text.
+        let (text, latex) = match display_forms(display).or_else(|| words_display_forms(display)) {
+            Some((text, latex)) => (text, Some(latex)),
+            None => (display.to_string(), None),
         };
-        let forms = [
-            (Notation::Text, format!("{text}{indices}")),
-            (Notation::Latex, format!("{latex}{indices}")),
-        ];
+        let mut forms = vec![(Notation::Text, format!("{text}{indices}"))];
+        if let Some(latex) = &latex {
+            forms.push((Notation::Latex, format!("{latex}{indices}")));
+        }
         for key in &forms {
             if let Some((other, at)) = self.forms.get(key) {
                 let place = at.map(|l| format!(" on line {l}")).unwrap_or_default();
@@ -326,9 +329,10 @@ impl PrintedNames {
                     ((Notation::Text, form), true) => format!("show as {form}"),
                     ((Notation::Latex, form), true) => format!("print as {form} in LaTeX"),
                     ((Notation::Text, form), false) => format!("show its instances as {form}"),
-                    ((Notation::Latex, _), false) => {
-                        format!("print its instances in LaTeX as {latex} with their indices")
-                    }
+                    ((Notation::Latex, form), false) => format!(
+                        "print its instances in LaTeX as {} with their indices",
+                        form.strip_suffix(indices).unwrap_or(form)
+                    ),
                 };
                 return Err(format!("{whose} would {how}, as {other}{place} does"));
             }

@@ -981,6 +981,27 @@ fn bad_inputs() -> Vec<(&'static str, Vec<u8>, &'static str, Vec<&'static str>)>
             "bad.toml:14:11: the function B would show as A, as the function A on line 9 does",
             check.clone(),
         ),
+        // Names of several words, and displays that are no name (`x(t)`), are compared too.
+        (
+            "two functions shown alike in words",
+            base_with(
+                "[[claim]]",
+                "[[function]]\nname = \"B\"\ndisplay = \"Re A\"\nvalue = \"x\"\n\n[[function]]\n\
+                 name = \"C\"\ndisplay = \"Re A\"\nvalue = \"p_x\"\n\n[[claim]]",
+            ),
+            "bad.toml:19:11: the function C would show as Re A, as the function B on line 14 does",
+            check.clone(),
+        ),
+        (
+            "two functions shown alike as no name",
+            base_with(
+                "[[claim]]",
+                "[[function]]\nname = \"B\"\ndisplay = \"x(t)\"\nvalue = \"x\"\n\n[[function]]\n\
+                 name = \"C\"\ndisplay = \"x(t)\"\nvalue = \"p_x\"\n\n[[claim]]",
+            ),
+            "bad.toml:19:11: the function C would show as x(t), as the function B on line 14 does",
+            check.clone(),
+        ),
         (
             "family instance with one index",
             base_with(
