@@ -7,8 +7,8 @@ use std::ops::Range;
 
 use brackets::System;
 use trigpoly::{
-    display_forms, is_identifier, latex_unwritable, quoted_name, unbarred, words_display_forms,
-    Span, VarSet, Vars, RESERVED,
+    display_forms, is_identifier, latex_unwritable, quoted_name, shown_forms, unbarred, Span,
+    VarSet, Vars, RESERVED,
 };
 
 use super::error::{ErrorKind, FileError};
@@ -314,7 +314,7 @@ impl PrintedNames {
     ) -> Result<(), String> {
         // A display of several words (`Re K`) has forms too; one of neither (`x(t)`) is
         // compared as it is written, in text.
-        let (text, latex) = match display_forms(display).or_else(|| words_display_forms(display)) {
+        let (text, latex) = match shown_forms(display) {
             Some((text, latex)) => (text, Some(latex)),
             None => (display.to_string(), None),
         };

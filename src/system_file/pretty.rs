@@ -195,7 +195,7 @@ impl LoadedSystem {
             p.first_long = true;
             p.last_long = true;
         }
-        if p.text.contains(' ') {
+        if trigpoly::has_several_words(&p.text) {
             p.trailing_words = Some(0);
         }
         p
@@ -393,7 +393,7 @@ impl LoadedSystem {
             other if trigpoly::FUNCTIONS.contains(&other) => (f.to_string(), true),
             // `(Re K)(x + y)`: a name of several words multiplies in parentheses.
             other => match self.display_name(other) {
-                shown if shown.contains(' ') => (format!("({shown})"), false),
+                shown if trigpoly::has_several_words(&shown) => (format!("({shown})"), false),
                 shown => (shown, false),
             },
         };

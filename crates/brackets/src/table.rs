@@ -236,7 +236,8 @@ impl Entry {
             Entry::Combination(terms) => {
                 let mut out = String::new();
                 for (k, (c, name)) in terms.iter().enumerate() {
-                    let several_words = style != Style::Ascii && name.display.contains(' ');
+                    let several_words =
+                        style != Style::Ascii && trigpoly::has_several_words(&name.display);
                     let name = name.render(style);
                     let text = c.render(style);
                     let (neg, body) = match text.strip_prefix(['−', '-']) {
@@ -322,15 +323,13 @@ fn split_frac(latex: &str) -> Option<(&str, &str)> {
 }
 
 /// `G1'` → `G_{1}'`, `Z̄` → `\bar{Z}`, `L` → `L`, `P'_{1,1}` → `P'_{1,1}`: the name as
-/// [`trigpoly::display_forms`] writes it in LaTeX (a name of words as
-/// [`trigpoly::words_display_forms`] does, `Re ω` → `\operatorname{Re} \omega`, as a variable
-/// shown by it prints; any other word by word), before any subscript of its own (a family
+/// [`trigpoly::shown_forms`] writes it in LaTeX (`Re ω` → `\operatorname{Re} \omega`, as a
+/// variable shown by it prints; any other word by word), before any subscript of its own (a family
 /// instance's indices), which joins a subscript the name ends with after `;` (`K₁_{1,2}` →
 /// `K_{1;1,2}`: LaTeX refuses a double subscript).
 pub fn latex_name(name: &str) -> String {
     let (head, subscript) = name.split_at(name.find("_{").unwrap_or(name.len()));
-    let forms = trigpoly::display_forms(head).or_else(|| trigpoly::words_display_forms(head));
-    let head = match forms {
+    let head = match trigpoly::shown_forms(head) {
         Some((_, latex)) => latex,
         None => words_in_latex(head),
     };

@@ -63,8 +63,8 @@ pub use poly::{CosSinTerm, MonomialIndex, Point, Poly, ReducedRadical, Term, Tri
 pub use print::{render_number, superscript, Style};
 pub use syntax::{Excerpt, ParseError, Span};
 pub use varset::{
-    display_forms, is_identifier, juxtaposition_is_ambiguous, latex_unwritable, unbarred,
-    words_display_forms, BadName, Limits, Var, VarKind, VarSet, VarSetBuilder, Variable, Vars,
+    display_forms, has_several_words, is_identifier, juxtaposition_is_ambiguous, latex_unwritable,
+    shown_forms, unbarred, BadName, Limits, Var, VarKind, VarSet, VarSetBuilder, Variable, Vars,
     FIELD_BITS, LATEX_LETTERS, MAX_NAME_CHARS, RESERVED,
 };
 

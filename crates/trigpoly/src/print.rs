@@ -6,7 +6,7 @@ use std::fmt;
 
 use crate::number::{Coefficient, GaussianRational, Magnitude, Rational};
 use crate::poly::{CosSinTerm, Poly, TrigMonomial};
-use crate::varset::{VarKind, VarSet};
+use crate::varset::{has_several_words, unparenthesized, VarKind, VarSet};
 
 /// An output notation.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
@@ -397,13 +397,7 @@ impl Names {
             words: vars.vars().map(|v| vars.variable(v).is_word()).collect(),
             several_words: vars
                 .vars()
-                .map(|v| {
-                    // A denominator atom's name is enclosed already, `(x − y)`.
-                    let unicode = vars.variable(v).unicode();
-                    style != Style::Ascii
-                        && unicode.contains(' ')
-                        && unparenthesized(unicode).is_none()
-                })
+                .map(|v| style != Style::Ascii && has_several_words(vars.variable(v).unicode()))
                 .collect(),
             order: order.iter().map(|v| v.index()).collect(),
             angles: vars.angles().map(|v| v.index()).collect(),
@@ -584,24 +578,6 @@ fn write_term(
         _ if denominators > 1 => out.push(')'),
         _ => {}
     }
-}
-
-/// `name` without the parentheses that enclose it whole, `(x - y)` → `x - y`; `None` for a
-/// name that they do not (`(a)(b)`, `x`).
-fn unparenthesized(name: &str) -> Option<&str> {
-    let inner = name.strip_prefix('(')?.strip_suffix(')')?;
-    let mut depth = 0i32;
-    for c in inner.chars() {
-        depth += match c {
-            '(' => 1,
-            ')' => -1,
-            _ => 0,
-        };
-        if depth < 0 {
-            return None;
-        }
-    }
-    (depth == 0).then_some(inner)
 }
 
 /// `(negative, |numerator|, denominator, general complex text)` of a coefficient, the two

@@ -8,11 +8,11 @@ use crate::error::AlgebraError;
 
 mod names;
 
-pub(crate) use names::long_name;
 pub use names::{
-    display_forms, is_identifier, latex_unwritable, unbarred, words_display_forms, BadName,
-    LATEX_LETTERS, MAX_NAME_CHARS, RESERVED,
+    display_forms, has_several_words, is_identifier, latex_unwritable, shown_forms, unbarred,
+    BadName, LATEX_LETTERS, MAX_NAME_CHARS, RESERVED,
 };
+pub(crate) use names::{long_name, unparenthesized};
 use names::{render_name, spell_out};
 
 /// What a variable is in a phase space; only `Angle` changes the algebra.
@@ -736,13 +736,12 @@ impl VarSetBuilder {
     }
     /// Shows the variable declared last as the name `display` would be shown (`A_x`, `A_{x}`
     /// in LaTeX, for a variable named `Ax`), when `display` is an identifier, possibly with a
-    /// bar (a combining macron, `Z̄`) and primes (`G1'`, `G_{1}'`), or words of those (`Re K`,
-    /// set in parentheses as a factor: [`words_display_forms`]); otherwise, or with nothing
+    /// bar (a combining macron, `Z̄`) and primes (`G1'`, `G_{1}'`), or words of those (`Re K`:
+    /// [`shown_forms`]); otherwise, or with nothing
     /// declared, changes nothing. Its ASCII form stays its name, which reads back.
     /// [`VarSetBuilder::build`] refuses two variables shown alike.
     pub fn shown_as(mut self, display: &str) -> Self {
-        let forms = display_forms(display).or_else(|| words_display_forms(display));
-        if let (Some(v), Some((unicode, latex))) = (self.vars.last_mut(), forms) {
+        if let (Some(v), Some((unicode, latex))) = (self.vars.last_mut(), shown_forms(display)) {
             (v.unicode, v.latex) = (unicode, latex);
             v.spelled_out = spell_out(&v.unicode);
         }

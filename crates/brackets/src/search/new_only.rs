@@ -337,7 +337,8 @@ impl Complement<'_> {
     fn decide(&self, exact: bool, spanning: &[(i64, SparseVec<Rational>)]) -> Option<Vec<usize>> {
         let leads = &self.leads;
         let mut fp = Echelon::<Fp>::new(leads.count);
-        let mut q = Echelon::<Rational>::new(self.problem.unknowns.len());
+        let rows = self.problem.unknowns.len();
+        let mut q = Echelon::<Rational>::new(rows);
         // Vectors by identifier, for checking dependencies exactly.
         let mut inserted: Vec<&SparseVec<Rational>> = Vec::new();
         let mut next_span = 0;
@@ -365,7 +366,7 @@ impl Complement<'_> {
             match fp.insert(id, &leads.restrict(modular::to_fp(v)?)) {
                 None => new.push(k),
                 Some(dependency) => {
-                    if !dependency_holds(&dependency, &inserted, v)? {
+                    if !dependency_holds(&dependency, &inserted, rows, v)? {
                         return None;
                     }
                 }
@@ -482,23 +483,17 @@ impl<'a> Divided<'a> {
     }
 }
 
-/// Whether `dependency`, found modulo p, writes `v` in the `inserted` vectors over Q too;
-/// `None` when its coefficients have no rational reconstruction. Independence modulo p is
-/// independence over Q unless p divides a minor of the span (its rank then drops modulo p):
-/// `exact_complement` rules that out.
+/// Whether `dependency`, found modulo p, writes `v` in the `inserted` vectors (of `rows` rows)
+/// over Q too; `None` when its coefficients have no rational reconstruction. Independence
+/// modulo p is independence over Q unless p divides a minor of the span (its rank then drops
+/// modulo p): `exact_complement` rules that out.
 fn dependency_holds(
     dependency: &SparseVec<Fp>,
     inserted: &[&SparseVec<Rational>],
+    rows: usize,
     v: &SparseVec<Rational>,
 ) -> Option<bool> {
     let coeffs = modular::reconstruct_vec(dependency)?;
-    let rows = inserted
-        .iter()
-        .flat_map(|column| column.last())
-        .chain(v.last())
-        .map(|(i, _)| i + 1)
-        .max()
-        .unwrap_or(0);
     Some(modular::combination_equals(inserted, rows, &coeffs, v))
 }
 

@@ -44,13 +44,14 @@ pub fn display_forms(display: &str) -> Option<(String, String)> {
     })
 }
 
-/// A display name of several words, each one [`display_forms`] writes or `Re`/`Im`, one space
-/// between them, as text and as LaTeX: `Re K` → (`Re K`, `\operatorname{Re} K`), `H x` →
-/// (`H x`, `H x`). Text sets such a name in parentheses where it is a factor or has a power
-/// (`(Re K)² H_x`); anything else has no such forms.
-pub fn words_display_forms(display: &str) -> Option<(String, String)> {
+/// How a display name shows, as text and as LaTeX: an identifier's forms ([`display_forms`]),
+/// or those of a name of several such words or `Re`/`Im`, one space between them: `Re K` →
+/// (`Re K`, `\operatorname{Re} K`), `H x` → (`H x`, `H x`). Printing sets a name of several
+/// words in parentheses where something follows it ([`has_several_words`]); anything else
+/// (`x(t)`) has no such forms.
+pub fn shown_forms(display: &str) -> Option<(String, String)> {
     if !display.contains(' ') {
-        return None;
+        return display_forms(display);
     }
     let (mut unicode, mut latex) = (Vec::new(), Vec::new());
     for word in display.split(' ') {
@@ -62,6 +63,31 @@ pub fn words_display_forms(display: &str) -> Option<(String, String)> {
         latex.push(tex);
     }
     Some((unicode.join(" "), latex.join(" ")))
+}
+
+/// Whether a printed name is of several words (`Re K`, `H x`, `ω (x)`), which a power, a
+/// factor or a denominator after it would seem to reach into (`Re K²`): printing sets it in
+/// parentheses there. A name enclosed whole, a denominator atom's `(x − y)`, is not.
+pub fn has_several_words(name: &str) -> bool {
+    name.contains(' ') && unparenthesized(name).is_none()
+}
+
+/// `name` without the parentheses that enclose it whole, `(x - y)` → `x - y`; `None` for a
+/// name that they do not (`(a)(b)`, `x`).
+pub(crate) fn unparenthesized(name: &str) -> Option<&str> {
+    let inner = name.strip_prefix('(')?.strip_suffix(')')?;
+    let mut depth = 0i32;
+    for c in inner.chars() {
+        depth += match c {
+            '(' => 1,
+            ')' => -1,
+            _ => 0,
+        };
+        if depth < 0 {
+            return None;
+        }
+    }
+    (depth == 0).then_some(inner)
 }
 
 /// The letter under a precomposed bar, `Ā` → `A`, which a display name may have as `A` and a
