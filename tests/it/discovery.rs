@@ -2411,21 +2411,7 @@ fn integrals_generated_once_divided_by_a_parameter_are_not_new() {
     }
     // The command says so, and why.
     for exact in [false, true] {
-        let mut args = vec![
-            "search",
-            path,
-            "--momenta-degree",
-            "2",
-            "--positions-degree",
-            "2",
-            "--trig-degree",
-            "0",
-            "--symbolic",
-            "omega,g",
-            "--parameters-degree",
-            "4",
-            "--new-only",
-        ];
+        let mut args = quadratic_new_only_in_omega_and_g(path, "4");
         if exact {
             args.push("--exact-complement");
         }
@@ -2445,6 +2431,29 @@ fn integrals_generated_once_divided_by_a_parameter_are_not_new() {
     }
 }
 
+/// The command line of `search --new-only` on `path` for integrals quadratic in the momenta and
+/// the positions, without angles, with `ω, g` symbolic to `parameters_degree`.
+fn quadratic_new_only_in_omega_and_g<'a>(
+    path: &'a str,
+    parameters_degree: &'a str,
+) -> Vec<&'a str> {
+    vec![
+        "search",
+        path,
+        "--momenta-degree",
+        "2",
+        "--positions-degree",
+        "2",
+        "--trig-degree",
+        "0",
+        "--symbolic",
+        "omega,g",
+        "--parameters-degree",
+        parameters_degree,
+        "--new-only",
+    ]
+}
+
 /// The rotor under gravity with `ω, g` symbolic (docs/results.md, "Symbolic parameters"): at
 /// parameters degree 4 the known `G2' = G2 − Mgy − Mg²/(2ω²)` enters as `ω²G2'`, and
 /// `p_y² + M²ω²y² + 2M²gy = M(H − F2 − G2') − M²g²/(2ω²)` and the quartic
@@ -2453,21 +2462,10 @@ fn integrals_generated_once_divided_by_a_parameter_are_not_new() {
 #[test]
 fn gravity_rotor_integrals_divided_by_omega_squared_are_generated() {
     let search = |degree: &str| {
-        json_and_text(&[
-            "search",
+        json_and_text(&quadratic_new_only_in_omega_and_g(
             "systems/gravity-rotor.toml",
-            "--momenta-degree",
-            "2",
-            "--positions-degree",
-            "2",
-            "--trig-degree",
-            "0",
-            "--symbolic",
-            "omega,g",
-            "--parameters-degree",
             degree,
-            "--new-only",
-        ])
+        ))
     };
     let (v, text) = search("4");
     for expected in [
