@@ -10,7 +10,7 @@
 
 use crate::render::tex::Names;
 use crate::system_file::Caller;
-use trigpoly::Expr;
+use trigpoly::{Expr, Factored};
 
 mod results;
 
@@ -264,6 +264,10 @@ pub struct Equation {
     /// every value of the parameters
     /// ([`LoadedSystem::written_in_functions`](crate::system_file::LoadedSystem::written_in_functions)).
     pub in_functions: Option<Expr>,
+    /// The right side as the factor its terms share times what is left, `F(x p_x + y p_y)/M`
+    /// ([`Expr::factored`]), where `bracket` or `expand` shows it: for a result with no form in
+    /// the named functions.
+    pub factored: Option<Factored>,
 }
 
 impl Equation {
@@ -273,8 +277,28 @@ impl Equation {
             lhs: lhs.to_string(),
             rhs,
             in_functions: None,
+            factored: None,
         }
     }
+}
+
+/// The most terms of what is left after the common factor that a factored form shows
+/// ([`shown_factored`]): it restates a short result, which it makes read like the paper
+/// (`2F(x p_x + y p_y)/M`); after a long one, it would repeat lines of terms.
+const FACTORED_TERMS: usize = 8;
+
+/// `e` as the factor its terms share times what is left ([`Expr::factored`]), where that
+/// is at most [`FACTORED_TERMS`] terms: the form `bracket`, `expand` and a refuted claim's
+/// residual show under the expanded one.
+pub(crate) fn shown_factored(e: &Expr) -> Option<Factored> {
+    // A sum in cos θ and sin θ has about twice as many terms in e^{±iθ}.
+    if e.len() > 2 * FACTORED_TERMS {
+        return None;
+    }
+    // Where the printer already writes it so (the terms over one denominator atom), it is
+    // not repeated.
+    e.factored()
+        .filter(|f| f.terms() <= FACTORED_TERMS && f.to_string() != e.to_string())
 }
 
 /// A count and its noun, singular for one: `1 claim`, `2 claims`, `0 claims`, `3 entries` (a

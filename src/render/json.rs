@@ -33,6 +33,9 @@
 //!                 "residual_in_functions": ascii | null   (the residual as a polynomial
 //!                          of degree ≤ 3 in H and the system's named functions, proved for
 //!                          every value of the parameters, where it is one: "-4*H*L/M"),
+//!                 "residual_factored": ascii | null   (the residual printed whole as the
+//!                          factor its terms share times the rest, where it has no form in the
+//!                          functions and its terms share a factor: "2*F*(x*p_x + y*p_y)/M"),
 //!                 "residual_excerpt": { "shown_monomials", "monomials" } | null   (set
 //!                          when the residual had more monomials outside the angles than
 //!                          `Options::shown_monomials`: "residual" is then every term of its
@@ -44,7 +47,10 @@
 //!   "equations": [ { "section", "caption", "lines": [ { "lhs", "text", "ascii", "latex",
 //!                 "in_functions": { "text", "ascii", "latex" } | null   (the right side as a
 //!                          polynomial of degree ≤ 3 in H and the named functions, proved, where
-//!                          `bracket` finds it one) } ] } ],
+//!                          `bracket` finds it one),
+//!                 "factored": { "text", "ascii", "latex" } | null   (the right side as the
+//!                          factor its terms share times the rest, where `bracket` or `expand`
+//!                          finds one: "F*(x*p_x + y*p_y)/M") } ] } ],
 //!   "tables": [ { "section", "caption" (plain text, as every title and caption: "{A, B} for
 //!                 the harmonic rotor (row A, column B)"), "functions": [ascii names],
 //!                 "display": [names],
@@ -94,7 +100,7 @@
 //! reproducible byte for byte.
 
 use serde_json::{json, Value};
-use trigpoly::{Expr, Style, VarKind};
+use trigpoly::{Expr, Factored, Style, VarKind};
 
 use super::{plain, Options};
 use crate::report::{
@@ -259,6 +265,7 @@ fn equations(eq: &Equations, section: u32) -> Value {
             let line = v.as_object_mut().expect("an object");
             line.insert("lhs".into(), json!(l.lhs));
             line.insert("in_functions".into(), l.in_functions.as_ref().map_or(Value::Null, expr));
+            line.insert("factored".into(), l.factored.as_ref().map_or(Value::Null, factored));
             v
         }).collect::<Vec<_>>(),
     })
@@ -331,6 +338,12 @@ fn proof(p: &ProofResult, section: u32) -> Value {
 }
 
 /// An expression in the three notations (its cos/sin normal form computed once).
+/// A factored form in the three notations.
+fn factored(f: &Factored) -> Value {
+    let [text, ascii, latex] = [Style::Unicode, Style::Ascii, Style::Latex].map(|s| f.render(s));
+    json!({ "text": text, "ascii": ascii, "latex": latex })
+}
+
 fn expr(e: &Expr) -> Value {
     let [text, ascii, latex] = e.render_each([Style::Unicode, Style::Ascii, Style::Latex]);
     json!({ "text": text, "ascii": ascii, "latex": latex })
@@ -353,6 +366,7 @@ fn claim(c: &ClaimResult, section: u32, seconds: Value) -> Value {
         "meets_expectation": c.meets_expectation(),
         "residual": c.residual.as_ref().map(|r| r.render(Style::Ascii)),
         "residual_in_functions": c.residual_in_functions.as_ref().map(|r| r.render(Style::Ascii)),
+        "residual_factored": c.residual_factored().map(|r| r.render(Style::Ascii)),
         "residual_excerpt": c.excerpt.map(|e| json!({
             "shown_monomials": e.shown,
             "monomials": e.monomials,

@@ -269,6 +269,9 @@ fn claim_rows(c: &ClaimResult, names: &Names) -> Vec<String> {
         if let Some(f) = &c.residual_in_functions {
             rows.extend(long_rows("", "=", f, CLAIM_ROW));
         }
+        if let Some(f) = c.residual_factored() {
+            rows.extend(broken_rows("&= ", &f.render(Style::Latex), CLAIM_ROW));
+        }
     }
     if let (ClaimKind::Nonvanishing, Some(w)) = (c.kind, &c.witness) {
         // A term and the `+` before it are two columns wide at least (as the text's witness).
@@ -345,6 +348,9 @@ fn equations(out: &mut Vec<String>, eq: &Equations, names: &Names) {
             let mut rows = long_rows(lhs, "=", &l.rhs, room);
             if let Some(f) = &l.in_functions {
                 rows.extend(long_rows("", "=", f, room));
+            }
+            if let Some(f) = &l.factored {
+                rows.extend(broken_rows("&= ", &f.render(Style::Latex), room));
             }
             rows
         })

@@ -133,6 +133,9 @@ fn equations(eq: &Equations) -> String {
         if let Some(f) = &l.in_functions {
             line.push_str(&format!(" = {}", code(&f.to_string())));
         }
+        if let Some(f) = &l.factored {
+            line.push_str(&format!(" = {}", code(&f.to_string())));
+        }
         lines.push(line);
     }
     lines.join("\n")
@@ -155,6 +158,9 @@ fn claim(c: &ClaimResult) -> String {
             line.push_str(&format!(" + … ({})", e.describe()));
         }
         if let Some(f) = &c.residual_in_functions {
+            line.push_str(&format!(" = {}", code(&f.to_string())));
+        }
+        if let Some(f) = c.residual_factored() {
             line.push_str(&format!(" = {}", code(&f.to_string())));
         }
     }

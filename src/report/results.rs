@@ -6,7 +6,7 @@
 use std::collections::BTreeMap;
 
 use brackets::{BracketTable, RankCertificate, System};
-use trigpoly::{Expr, Style, Var, Vars};
+use trigpoly::{Expr, Factored, Style, Var, Vars};
 
 use super::Expect;
 use crate::system_file::Caller;
@@ -219,6 +219,16 @@ impl ClaimResult {
     pub fn excerpt_residual(&mut self, monomials: usize) {
         if let Some(e) = self.residual.as_mut() {
             self.excerpt = Excerpt::cut(e, monomials);
+        }
+    }
+
+    /// The residual as the factor its terms share times what is left (`2F(x p_x + y p_y)/M`,
+    /// [`Expr::factored`](trigpoly::Poly::factored)), where it is printed whole, has no form
+    /// in the system's functions, and what is left is short.
+    pub fn residual_factored(&self) -> Option<Factored> {
+        match (&self.excerpt, &self.residual_in_functions) {
+            (None, None) => super::shown_factored(self.residual.as_ref()?),
+            _ => None,
         }
     }
 

@@ -15,7 +15,7 @@ use super::scope::{instance_of, rewrite_braces};
 use super::text::Text;
 use super::{Argument, Caller, LoadedSystem};
 use crate::report::{
-    Entry, Equation, Equations, Expect, Report, Section, SummaryKind, TableResult,
+    shown_factored, Entry, Equation, Equations, Expect, Report, Section, SummaryKind, TableResult,
 };
 
 impl LoadedSystem {
@@ -243,8 +243,12 @@ pub fn bracket_report(
     let lhs = format!("{{{fname}, {gname}}}");
     let mut equations = equations_at(file, condition.as_ref(), vec![(lhs.clone(), value)])?;
     // The bracket in the file's functions too, where it is a polynomial in them.
+    // Else as its terms' common factor times the rest, where they share one.
     for line in &mut equations.lines {
         line.in_functions = file.written_in_functions(&line.rhs, condition.as_ref());
+        if line.in_functions.is_none() {
+            line.factored = shown_factored(&line.rhs);
+        }
     }
     Ok(file.one_entry(
         format!("`{lhs}` for {}", file.the_name()),
@@ -300,7 +304,11 @@ pub fn expand_report(
             .join(", "),
         file.the_name()
     );
-    let equations = equations_at(file, condition.as_ref(), lines)?;
+    let mut equations = equations_at(file, condition.as_ref(), lines)?;
+    // Each as its terms' common factor times the rest, where they share one.
+    for line in &mut equations.lines {
+        line.factored = shown_factored(&line.rhs);
+    }
     Ok(file.one_entry(
         title,
         Entry::Equations(equations),

@@ -10,7 +10,7 @@ use std::process::{Command, Output};
 use pretty_assertions::assert_eq;
 use serde_json::Value;
 
-use crate::{superint, superint_exits};
+use crate::{superint, superint_exits, superint_json};
 
 fn stdout(o: &Output) -> String {
     String::from_utf8(o.stdout.clone()).expect("stdout is UTF-8")
@@ -3752,4 +3752,90 @@ fn a_closure_at_a_limit_says_how_to_go_on() {
          are formed)\n"
     );
     run(&[&closure[..], &["--max-degree", "1200"]].concat(), 0);
+}
+
+/// A bracket, an expansion and a refuted claim's residual whose terms share a factor are
+/// also written as that factor times the rest, as the paper writes them
+/// (`{A_z, H} = F(x p_x + y p_y)/M`), in every format; a result in the named functions
+/// (`2iω Z²`) or with no shared factor (a Hamiltonian) is not.
+#[test]
+fn results_whose_terms_share_a_factor_are_also_written_factored() {
+    let out = run(
+        &["bracket", "systems/stark.toml", "Az", "H", "--no-timings"],
+        0,
+    );
+    assert!(
+        out.contains("    {A_z, H} = Fx p_x/M + Fy p_y/M\n             = F(x p_x + y p_y)/M\n"),
+        "{out}"
+    );
+    let json = superint_json(&["bracket", "systems/stark.toml", "Az", "H"]);
+    let line = &json["equations"][0]["lines"][0];
+    assert_eq!(line["factored"]["ascii"], "F*(x*p_x + y*p_y)/M", "{json}");
+    assert_eq!(
+        line["factored"]["latex"], r"\frac{F \left(x p_{x} + y p_{y}\right)}{M}",
+        "{json}"
+    );
+    let latex = run(
+        &[
+            "bracket",
+            "systems/stark.toml",
+            "Az",
+            "H",
+            "--format",
+            "latex",
+        ],
+        0,
+    );
+    assert!(
+        latex.contains(r"&= \frac{F \left(x p_{x} + y p_{y}\right)}{M}"),
+        "{latex}"
+    );
+    let markdown = run(
+        &["bracket", "systems/stark.toml", "Az", "H", "--format", "md"],
+        0,
+    );
+    assert!(markdown.contains(" = `F(x p_x + y p_y)/M`"), "{markdown}");
+
+    // In the named functions, it is not factored as well.
+    let z2 = run(
+        &[
+            "bracket",
+            "systems/harmonic-rotor.toml",
+            "Z^2",
+            "H",
+            "--no-timings",
+        ],
+        0,
+    );
+    assert!(z2.contains("= 2iω Z²\n"), "{z2}");
+    assert!(!z2.contains("= 2ω("), "{z2}");
+    // A Hamiltonian's terms share no factor that leaves a polynomial.
+    let h = run(&["expand", "systems/stark.toml", "H", "--no-timings"], 0);
+    assert_eq!(h.matches(" = ").count(), 1, "{h}");
+
+    let check = run(&["check", "systems/stark.toml", "--no-timings"], 0);
+    assert!(
+        check.contains(
+            "      residual lhs − rhs = 2Fx p_x/M + 2Fy p_y/M\n\
+             \x20                        = 2F(x p_x + y p_y)/M\n"
+        ),
+        "{check}"
+    );
+    // A single term is not restated.
+    assert!(
+        check.contains("      residual lhs − rhs = −Fz p_z/M\n  {L_x, H} = 0"),
+        "{check}"
+    );
+    let json = superint_json(&["check", "systems/stark.toml"]);
+    let claims = json["claims"].as_array().expect("claims");
+    let sign = claims
+        .iter()
+        .find(|c| c["id"] == "false-field-sign")
+        .expect("the claim");
+    assert_eq!(sign["residual_factored"], "2*F*(x*p_x + y*p_y)/M", "{sign}");
+    let radius = claims
+        .iter()
+        .find(|c| c["id"] == "false-field-radius")
+        .expect("the claim");
+    assert_eq!(radius["residual_factored"], Value::Null, "{radius}");
 }

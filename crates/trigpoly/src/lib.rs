@@ -60,7 +60,7 @@ pub use number::{
     IntegerRing, IntegerView, ParseGaussianError, ParseRationalError, Rational,
 };
 pub use poly::{CosSinTerm, MonomialIndex, Point, Poly, ReducedRadical, Term, TrigMonomial};
-pub use print::{render_number, superscript, Style};
+pub use print::{render_number, superscript, Factored, Style};
 pub use syntax::{Excerpt, ParseError, Span};
 pub use varset::{
     display_forms, has_several_words, is_identifier, juxtaposition_is_ambiguous, latex_unwritable,

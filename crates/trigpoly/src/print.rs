@@ -8,6 +8,10 @@ use crate::number::{Coefficient, GaussianRational, Magnitude, Rational};
 use crate::poly::{CosSinTerm, Poly, TrigMonomial};
 use crate::varset::{has_several_words, unparenthesized, VarKind, VarSet};
 
+mod factored;
+
+pub use factored::Factored;
+
 /// An output notation.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 pub enum Style {

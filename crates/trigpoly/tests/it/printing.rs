@@ -802,3 +802,96 @@ fn the_printed_terms_are_bounded_before_they_are_formed() {
         .check_printable()
         .is_ok());
 }
+
+/// Asserts the factored form of `src` in unicode, LaTeX and ASCII, and that both the unicode
+/// and the ASCII forms parse back to the element.
+fn factors_as(vars: &Vars, src: &str, [unicode, latex, ascii]: [&str; 3]) {
+    let f: G = p(vars, src);
+    let factored = f
+        .factored()
+        .unwrap_or_else(|| panic!("{src} has a common factor"));
+    assert_eq!(
+        [
+            factored.to_string(),
+            factored.render(Style::Latex),
+            factored.render(Style::Ascii)
+        ],
+        [unicode.to_string(), latex.to_string(), ascii.to_string()],
+        "{src}"
+    );
+    for text in [unicode, ascii] {
+        assert_eq!(p::<GaussianRational>(vars, text), f, "{text:?} parses back");
+    }
+}
+
+/// The factor a sum's terms share comes out in front of it (its content signed as the first
+/// term, the least power of each variable on one side of the bar), the denominators after.
+#[test]
+fn a_sum_prints_as_the_factor_its_terms_share_times_the_rest() {
+    let vars = plane();
+    factors_as(
+        &vars,
+        "omega*x*p_x/M + omega*y*p_y/M",
+        [
+            "ω(x p_x + y p_y)/M",
+            r"\frac{\omega \left(x p_{x} + y p_{y}\right)}{M}",
+            "omega*(x*p_x + y*p_y)/M",
+        ],
+    );
+    factors_as(
+        &vars,
+        "-2*x - 4*y",
+        ["−2(x + 2y)", r"-2 \left(x + 2 y\right)", "-2*(x + 2*y)"],
+    );
+    // Over a common denominator, where the terms have different powers below the bar.
+    factors_as(
+        &vars,
+        "omega^2*p_y/(x^2*y^3) + omega^2*p_x/(x^3*y^2)",
+        [
+            "ω²(x p_y + y p_x)/(x³y³)",
+            r"\frac{\omega^{2} \left(x p_{y} + y p_{x}\right)}{x^{3} y^{3}}",
+            "omega^2*(x*p_y + y*p_x)/(x^3*y^3)",
+        ],
+    );
+    // The angles stay inside; a purely imaginary coefficient keeps its `i` there.
+    factors_as(
+        &vars,
+        "x*cos(theta)/3 + y*sin(theta)/3",
+        [
+            "(x cos θ + y sin θ)/3",
+            r"\frac{x \cos\theta + y \sin\theta}{3}",
+            "(x*cos(theta) + y*sin(theta))/3",
+        ],
+    );
+    factors_as(
+        &vars,
+        "6*i*omega*p_x^2 - 4*omega*M*x*p_y",
+        [
+            "2ω(3i p_x² − 2Mx p_y)",
+            r"2 \omega \left(3 i p_{x}^{2} - 2 M x p_{y}\right)",
+            "2*omega*(3*i*p_x^2 - 2*M*x*p_y)",
+        ],
+    );
+}
+
+/// A sum has no factored form where its terms share only `±1`, where a variable stands on
+/// both sides of the bar (a Hamiltonian's `p_x²/(2M) + Mω²x²/2`), or where it has one term.
+#[test]
+fn a_sum_whose_terms_share_no_factor_has_no_factored_form() {
+    let vars = plane();
+    for src in [
+        "x + y",
+        "-x - y",
+        "p_x^2/(2*M) + M*omega^2*x^2/2",
+        "x/M + y/M^2 + 1",
+        "3*M*x*p_y",
+        "0",
+    ] {
+        let f: G = p(&vars, src);
+        assert!(
+            f.factored().is_none(),
+            "{src}: {:?}",
+            f.factored().map(|f| f.to_string())
+        );
+    }
+}

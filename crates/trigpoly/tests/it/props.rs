@@ -6,7 +6,7 @@ use num_rational::BigRational;
 use proptest::prelude::*;
 use proptest::test_runner::Config;
 use trigpoly::{
-    ExactDivisor, GaussianRational, Integer, IntegerAcc, IntegerView, Point, Poly, Rational,
+    ExactDivisor, GaussianRational, Integer, IntegerAcc, IntegerView, Point, Poly, Rational, Style,
     VarKind,
 };
 
@@ -812,6 +812,30 @@ proptest! {
         match Q::parse(&vars, &text) {
             Ok(back) => prop_assert_eq!(back, a, "{}", text),
             Err(e) => prop_assert!(false, "{}", e.render(&text)),
+        }
+    }
+
+    /// A sum times a factor (a rational and powers of `x` and `M`, either sign) reads back
+    /// from its factored form, in ASCII and in unicode text, to the same element, every term
+    /// of it inside the parentheses.
+    #[test]
+    fn factored_forms_parse_back(
+        f in gpoly(9),
+        c in rational(),
+        powers in proptest::collection::vec(-3i64..=3, 2),
+    ) {
+        let vars = phase_space();
+        let factor = G::parse(&vars, &format!("({c})*x^({})*M^({})", powers[0], powers[1]))
+            .expect("a monomial");
+        let g = &f * &factor;
+        if let Some(factored) = g.factored() {
+            prop_assert!(factored.terms() == g.cos_sin_terms().len());
+            for text in [factored.render(Style::Ascii), factored.to_string()] {
+                match G::parse(&vars, &text) {
+                    Ok(back) => prop_assert_eq!(&back, &g, "{}", text),
+                    Err(e) => prop_assert!(false, "{}", e.render(&text)),
+                }
+            }
         }
     }
 
