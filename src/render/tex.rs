@@ -345,6 +345,15 @@ fn char_math(c: char) -> Option<String> {
     if c == '⁻' {
         return Some("{}^{-}".into());
     }
+    // Script signs, as in the frequencies `ω₊`, `ω₋` (they were written by their code points).
+    if let Some(s) = match c {
+        '⁺' => Some("{}^{+}"),
+        '₊' => Some("{}_{+}"),
+        '₋' => Some("{}_{-}"),
+        _ => None,
+    } {
+        return Some(s.into());
+    }
     if c.is_ascii() && !c.is_ascii_control() {
         return Some(c.to_string());
     }
@@ -1615,6 +1624,19 @@ mod tests {
         assert_eq!(
             markup("a free particle, `H = p_x^2/2 for all ` of them"),
             r"a free particle, $H = p_{x}^{2}/2\ \text{for all}$ of them"
+        );
+    }
+
+    /// A script plus or minus, as in the normal-mode frequencies `ω₊`, `ω₋` of
+    /// `systems/fock-darwin.toml`'s description, is a script sign (it was written by its code
+    /// point, `\omega\mbox{\texttt{U+208A}}`).
+    #[test]
+    fn script_signs_are_scripts() {
+        assert_eq!(math("ω₊ − ω₋"), r"\omega{}_{+} - \omega{}_{-}");
+        assert_eq!(math("e⁺"), "e{}^{+}");
+        assert_eq!(
+            markup("frequencies `a = ω₊`, `b = ω₋`"),
+            r"frequencies $a = \omega{}_{+}$, $b = \omega{}_{-}$"
         );
     }
 
