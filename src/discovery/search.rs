@@ -69,19 +69,42 @@ fn power_past_parameters_degree(
         return None;
     }
     let vars = h.vars();
+    // `H` with negative powers of the symbolic parameters (`p²/(2M)`) is known to the search
+    // through its least multiple without them (`M H`), whose degree is what the space must
+    // hold: it counted `|−1|` for `1/M`, so that `p²/(2M) + Ma²x²/8` read as of degree 3 where
+    // `M H` has 4, and at degree 3 nothing said that `H` was left out.
+    let lowest: Vec<(Var, i64)> = options
+        .symbolic
+        .iter()
+        .map(|&v| {
+            (
+                v,
+                h.terms().map(|t| t.exponent(v)).min().unwrap_or(0).min(0),
+            )
+        })
+        .collect();
     // The total degree in the symbolic parameters (`total_degree` counts by kind, and the
     // fixed parameters are parameters too).
     let s = h
         .terms()
         .map(|t| {
-            options
-                .symbolic
+            lowest
                 .iter()
-                .map(|&v| t.exponent(v).abs())
+                .map(|&(v, lo)| t.exponent(v) - lo)
                 .sum::<i64>()
         })
         .max()
         .unwrap_or(0);
+    let mut multiplier = vec![0i64; vars.len()];
+    for &(v, lo) in &lowest {
+        multiplier[v.index()] = -lo;
+    }
+    let multiple = match multiplier.iter().all(|e| *e == 0) {
+        true => None,
+        false => Expr::from_terms(vars, vec![(GaussianRational::from(1), multiplier)])
+            .ok()
+            .map(|m| m.render(Style::Unicode)),
+    };
     let degree = |kind| h.total_degree(&[kind]).unwrap_or(0);
     let (momenta, positions, poisson, trig) = (
         degree(VarKind::Momentum),
@@ -93,9 +116,16 @@ fn power_past_parameters_degree(
     let bound = i64::from(space.parameters_degree);
     let names = parameter_names(vars, &options.symbolic);
     let option = caller.names("--parameters-degree", "SearchSpace::parameters_degree");
+    let (subject, power_of) = match &multiple {
+        None => ("H".to_string(), "H".to_string()),
+        Some(m) => (
+            format!("`{m} H` (H without its negative powers of `{names}`)"),
+            format!("({m} H)"),
+        ),
+    };
     if s > bound {
         return Some(format!(
-            "Note: H has degree {s} in `{names}`, past the space's `{bound}` \
+            "Note: {subject} has degree {s} in `{names}`, past the space's `{bound}` \
              (`{option}`), so H is not among the integrals found, nor is any that \
              needs its terms."
         ));
@@ -116,7 +146,7 @@ fn power_past_parameters_degree(
         _ => format!("{} in the momenta", k * momenta),
     };
     Some(format!(
-        "Note: `H{power}` lies in the space but for its degree {} in `{names}`, past the space's \
+        "Note: `{power_of}{power}` lies in the space but for its degree {} in `{names}`, past the space's \
          `{bound}` (`{option}`): integrals of degree {degree} may need a larger one.",
         k * s,
     ))

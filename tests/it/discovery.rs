@@ -3901,3 +3901,60 @@ fn a_programs_closure_report_names_the_librarys_options() {
     );
     assert!(!names_a_flag(&text), "{text}");
 }
+
+/// A Hamiltonian with negative powers of a symbolic parameter (`p²/(2M)`) is known to a search
+/// through its least multiple without them (`M H`), and the note on `H` counts that multiple's
+/// degree: at `a = 2b` the Fock–Darwin `M H` has degree 4 in `M, b`, so at
+/// `--parameters-degree 3` `H` is left out, which nothing said (the note counted `|−1|` for
+/// `1/M`, degree 3), and at 4 it is in; its square, of degree 8, is named at 4.
+#[test]
+fn a_search_counts_the_degree_of_h_without_its_negative_powers_of_the_parameters() {
+    let search = |momenta: &str, degree: &str| {
+        let out = superint(&[
+            "search",
+            "systems/fock-darwin.toml",
+            "--when",
+            "a = 2*b",
+            "--momenta-degree",
+            momenta,
+            "--positions-degree",
+            momenta,
+            "--trig-degree",
+            "0",
+            "--symbolic",
+            "M,b",
+            "--parameters-degree",
+            degree,
+            "--new-only",
+            "--no-timings",
+        ]);
+        assert_eq!(out.status.code(), Some(0));
+        normalize(&String::from_utf8(out.stdout).expect("UTF-8"))
+    };
+    let three = search("3", "3");
+    assert!(
+        three.contains(
+            "Note: M H (H without its negative powers of M, b) has degree 4 in M, b, past the \
+             space's 3 (--parameters-degree), so H is not among the integrals found"
+        ),
+        "{three}"
+    );
+    assert!(
+        three.contains("Known integrals in the space: L."),
+        "{three}"
+    );
+    let four = search("3", "4");
+    assert!(!four.contains("Note:"), "{four}");
+    assert!(
+        four.contains("Known integrals in the space: H, L."),
+        "{four}"
+    );
+    let square = search("4", "4");
+    assert!(
+        square.contains(
+            "Note: (M H)² lies in the space but for its degree 8 in M, b, past the space's 4 \
+             (--parameters-degree): integrals of degree 4 in the momenta may need a larger one."
+        ),
+        "{square}"
+    );
+}
