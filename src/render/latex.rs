@@ -39,16 +39,25 @@ pub fn render(report: &Report, options: &Options) -> String {
             r"\section*{{\raggedright {}\quad {title}}}",
             s.number
         ));
-        let mut rows: Vec<String> = Vec::new();
+        // Consecutive claims share one alignment, whose column is their widest left side.
+        let mut run: Vec<&ClaimResult> = Vec::new();
+        let claims = |out: &mut Vec<String>, run: &mut Vec<&ClaimResult>| {
+            let column = claims_column(run.iter().copied(), &s.names);
+            let mut rows: Vec<String> = run
+                .drain(..)
+                .flat_map(|c| claim_rows(c, &s.names, column))
+                .collect();
+            flush(out, &mut rows);
+        };
         for e in s.shown_entries() {
             if let Entry::Claim(c) = e {
-                rows.extend(claim_rows(c, &s.names));
+                run.push(c);
                 continue;
             }
-            flush(&mut out, &mut rows);
+            claims(&mut out, &mut run);
             entry(&mut out, e, &s.names);
         }
-        flush(&mut out, &mut rows);
+        claims(&mut out, &mut run);
     }
     out.push(String::new());
     // A check's summary is words, numbers and the ids of claims, which are names, not
@@ -225,7 +234,23 @@ fn broken_rows(first: &str, rhs: &str, max: usize) -> Vec<String> {
         .collect()
 }
 
-fn claim_rows(c: &ClaimResult, names: &Names) -> Vec<String> {
+/// The alignment column of claims set in one `align*`: the widest of their left sides that
+/// set it (one wider than [`LONG_LHS`] takes rows of its own).
+fn claims_column<'a>(claims: impl IntoIterator<Item = &'a ClaimResult>, names: &Names) -> usize {
+    claims
+        .into_iter()
+        .filter_map(|c| {
+            let k = relation(&c.statement)?;
+            let width = visual_width(&math_with(&c.statement[..k], names));
+            (width <= LONG_LHS).then_some(width)
+        })
+        .max()
+        .unwrap_or(0)
+}
+
+/// The rows of a claim, its right side broken to what the alignment `column` (the widest left
+/// side of the claims set with it, [`claims_column`]) and its condition leave of the row.
+fn claim_rows(c: &ClaimResult, names: &Names, column: usize) -> Vec<String> {
     let math = |s: &str| math_with(s, names);
     let cond = match &c.condition {
         Some(cond) => format!(r"\quad\text{{at }} {}", math(cond)),
@@ -248,8 +273,13 @@ fn claim_rows(c: &ClaimResult, names: &Names) -> Vec<String> {
         }
         Some(k) => {
             let lhs = math(&c.statement[..k]);
-            // The right side takes what the left and the condition leave of the row.
-            let room = ROW.saturating_sub(visual_width(&lhs) + after).max(ROW / 2);
+            // The right side takes what the alignment column and the condition leave of the
+            // row: the column is the widest left side of the claims set together, and a short
+            // left side beside a wide one (`8 P_{1,2}` under `{p_x p_y + M²a²xy, H}`) left its
+            // right side 71 pt past the margin.
+            let room = ROW
+                .saturating_sub(visual_width(&lhs).max(column) + after)
+                .max(ROW / 2);
             broken_rows(&format!("{lhs} &"), &math(&c.statement[k..]), room)
         }
         None => vec![aligned(&c.statement, names)],
@@ -320,7 +350,7 @@ fn entry(out: &mut Vec<String>, e: &Entry, names: &Names) {
         }
         Entry::Equations(eq) => equations(out, eq, names),
         Entry::Claim(c) => {
-            let mut rows = claim_rows(c, names);
+            let mut rows = claim_rows(c, names, 0);
             flush(out, &mut rows);
         }
         Entry::Table(t) => table(out, t, names),
@@ -465,7 +495,7 @@ fn table_as_list(out: &mut Vec<String>, t: &TableResult, head: &[String], cells:
 }
 
 fn tower(out: &mut Vec<String>, t: &TowerResult, names: &Names) {
-    let mut rows = claim_rows(&t.claim, names);
+    let mut rows = claim_rows(&t.claim, names, 0);
     flush(out, &mut rows);
     out.push(format!(
         r"\noindent {} expanded for {} (ladder ${}$), {}.",
@@ -521,12 +551,17 @@ fn proof(out: &mut Vec<String>, p: &ProofResult, names: &Names) {
         r"\noindent\emph{{{label}:}} {}.",
         sentence(&closing)
     ));
-    let mut rows: Vec<String> = p.claims.iter().flat_map(|c| claim_rows(c, names)).collect();
+    let column = claims_column(&p.claims, names);
+    let mut rows: Vec<String> = p
+        .claims
+        .iter()
+        .flat_map(|c| claim_rows(c, names, column))
+        .collect();
     flush(out, &mut rows);
 }
 
 fn rank(out: &mut Vec<String>, r: &RankResult, names: &Names) {
-    let mut rows = claim_rows(&r.claim, names);
+    let mut rows = claim_rows(&r.claim, names, 0);
     flush(out, &mut rows);
     let c = &r.certificate;
     let fns: Vec<String> = r

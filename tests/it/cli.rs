@@ -3839,3 +3839,37 @@ fn results_whose_terms_share_a_factor_are_also_written_factored() {
         .expect("the claim");
     assert_eq!(radius["residual_factored"], Value::Null, "{radius}");
 }
+
+/// Claims set in one alignment share its column, the widest of their left sides: a claim with
+/// a short left side breaks its right side to what that column leaves of the row, not its own
+/// left side (the Fock–Darwin file's `8 P_{1,2} = 8 p_x³ − …` under
+/// `{p_x p_y + M²a²xy, H} = 0` was set 71 pt past the margin).
+#[test]
+fn a_short_left_side_beside_a_wide_one_breaks_to_the_alignment_column() {
+    let file = crate::scratch_text(
+        "latex",
+        "column.toml",
+        "name = \"column\"\n\
+         hamiltonian = \"(p_x^2 + p_y^2)/2 + (x^2 + y^2)/2\"\n\
+         [phase_space]\ncoordinates = [\"x\", \"y\"]\n\
+         [[function]]\nname = \"S\"\n\
+         value = \"x^3 + y^3 + p_x^3 + p_y^3 + x^2*y + x*y^2 + p_x^2*p_y + p_x*p_y^2 \
+         + x*p_x^2 + y*p_y^2 + x^2*p_y + y^2*p_x\"\n\
+         [[claim]]\nclaim = \"{p_x*p_y + x*y + p_x^2 + x^2, H} = 0\"\n\
+         [[claim]]\nclaim = \"S = x^3 + y^3 + p_x^3 + p_y^3 + x^2*y + x*y^2 + p_x^2*p_y \
+         + p_x*p_y^2 + x*p_x^2 + y*p_y^2 + x^2*p_y + y^2*p_x\"\n\
+         [[claim]]\nclaim = \"{x, H} = 0\"\nexpect = \"refuted\"\n",
+    );
+    let doc = run(
+        &[
+            "check",
+            file.to_str().expect("a UTF-8 path"),
+            "--format",
+            "latex",
+            "--no-timings",
+        ],
+        0,
+    );
+    assert!(doc.contains(r"S &= x^{3}"), "{doc}");
+    compile_within(&doc, 1.0);
+}
