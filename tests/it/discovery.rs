@@ -348,6 +348,50 @@ const COMMANDS: &[(&str, &str)] = &[
         "superint search systems/stark.toml --momenta-degree 4 --positions-degree 4 \
          --radicals-degree 2 --new-only",
     ),
+    (
+        "fd-search",
+        "superint search systems/fock-darwin.toml --when 'a = 2*b' --momenta-degree 3 \
+         --positions-degree 3 --trig-degree 0 --symbolic M,b --parameters-degree 6 --new-only",
+    ),
+    (
+        "fd-search-known",
+        "superint search systems/fock-darwin.toml --when 'a = 2*b' --momenta-degree 3 \
+         --positions-degree 3 --trig-degree 0 --symbolic M,b --parameters-degree 6 --new-only \
+         --known P_1_2,Q_1_2",
+    ),
+    (
+        "fd-search-4",
+        "superint search systems/fock-darwin.toml --when 'a = 2*b' --momenta-degree 4 \
+         --positions-degree 4 --trig-degree 0 --symbolic M,b --parameters-degree 8 --new-only",
+    ),
+    (
+        "fd-search-1-3",
+        "superint search systems/fock-darwin.toml --when 'a = 3*b' --momenta-degree 4 \
+         --positions-degree 4 --trig-degree 0 --symbolic M,b --parameters-degree 8 --new-only",
+    ),
+    (
+        "fd-search-generic",
+        "superint search systems/fock-darwin.toml --momenta-degree 4 --positions-degree 4 \
+         --trig-degree 0 --symbolic M,a,b --parameters-degree 8 --new-only",
+    ),
+    (
+        "fd-search-landau",
+        "superint search systems/fock-darwin.toml --when 'b = 0' --momenta-degree 2 \
+         --positions-degree 2 --trig-degree 0 --symbolic M,a --parameters-degree 4 --new-only",
+    ),
+    (
+        "fd-closure",
+        "superint closure systems/fock-darwin.toml H L P_1_2 Q_1_2 --when 'a = 2*b' --degree 3 \
+         --symbolic M,b --parameters-degree 6",
+    ),
+    (
+        "fd-closure-landau",
+        "superint closure systems/fock-darwin.toml H L P_0_1 Q_0_1 --when 'b = 0' --degree 2",
+    ),
+    (
+        "fd-closure-isotropic",
+        "superint closure systems/fock-darwin.toml H L P_1_1 Q_1_1 --when 'b = a' --degree 2",
+    ),
 ];
 
 /// The words of a command line, single quotes grouping.
@@ -3900,6 +3944,223 @@ fn a_programs_closure_report_names_the_librarys_options() {
         "{text}"
     );
     assert!(!names_a_flag(&text), "{text}");
+}
+
+/// The Fock–Darwin system, the planar oscillator in a uniform magnetic field with the
+/// normal-mode frequencies `a = ω₊`, `b = ω₋`, loaded and checked: every claim of the file holds
+/// (the textbook form with `ω_c = a − b`, `ω₀² = ab`, the ladders `{Z, H} = ibZ`,
+/// `{W, H} = iaW`, their Heisenberg brackets, `H` and `L` in `|Z|²` and `|W|²`, the tower and
+/// the rotation of `K_{m,n} = W^m Z̄^n`, the resonances 1:2 and 1:3, the integrals the search
+/// finds, the cubic algebra at 1:2 and its relation, the Landau and isotropic limits, the
+/// ranks), and each of its seven false neighbours is refuted.
+#[test]
+fn fock_darwin_claims_are_proved_and_its_false_neighbours_refuted() {
+    let file = system_file("fock-darwin.toml");
+    assert_claims_as_expected(
+        &file,
+        &[
+            "textbook",
+            "ladders",
+            "heisenberg",
+            "modes",
+            "angular",
+            "tower",
+            "rotation",
+            "resonance",
+            "found",
+            "algebra",
+            "relation",
+            "landau",
+            "isotropic",
+            "rank",
+        ],
+        &[
+            "false-eigenvalue-sign",
+            "false-eigenvalues-swapped",
+            "false-off-resonance",
+            "false-resonance",
+            "false-landau",
+            "false-confinement",
+            "false-relation",
+        ],
+    );
+    // {P_{m,n}, H} = −(ma − nb) Q_{m,n}, with Q_{m,n} ≠ 0: P_{m,n} is conserved exactly on the
+    // resonance ma = nb, and at a = 2b exactly when m = 2n... that is, for (1, 2) and (2, 4).
+    let parse = |s: &str| file.parse_argument(s).expect("parses");
+    let system = file.system();
+    let vars = system.vars();
+    let at_1_2 = brackets::Condition::new("a = 2b", vars.lookup("a").unwrap(), parse("2*b"));
+    for m in 0..=2 {
+        for n in 0..=4 {
+            if m + n == 0 {
+                continue;
+            }
+            let flow = system.flow(&parse(&format!("P_{m}_{n}"))).unwrap();
+            let rate = parse(&format!("-({m}*a - {n}*b)*Q_{m}_{n}"));
+            assert_eq!(flow, rate, "P_{m}_{n}");
+            assert!(!parse(&format!("Q_{m}_{n}")).is_zero(), "Q_{m}_{n}");
+            let resonant = at_1_2.apply(&flow).unwrap().is_zero();
+            assert_eq!(resonant, 2 * m == n, "P_{m}_{n} at a = 2b");
+        }
+    }
+}
+
+/// The tower of the Fock–Darwin system: `{K_{m,n}, H} = i(ma − nb) K_{m,n}` expanded for
+/// `1 ≤ m, n ≤ 6` and proved for all `m, n ≥ 0` from the ladders `W` and `Z̄`, for every `a, b`
+/// and at the resonance `a = 2b`.
+#[test]
+fn fock_darwin_tower_is_proved_for_all_m_and_n() {
+    for when in [None, Some("a = 2*b")] {
+        let mut args = vec![
+            "tower",
+            "--system",
+            "systems/fock-darwin.toml",
+            "--max",
+            "6",
+            "--no-timings",
+        ];
+        if let Some(w) = when {
+            args.extend(["--when", w]);
+        }
+        let out = superint(&args);
+        let text = normalize(&String::from_utf8(out.stdout).expect("UTF-8"));
+        assert_eq!(out.status.code(), Some(0), "{text}");
+        for piece in [
+            "36 brackets expanded for the Fock–Darwin system (ladder K_{m,n} = W^m Z̄^n), all hold",
+            "1. computed: {W, H} = (ia) W holds",
+            "2. computed: {Z̄, H} = (−ib) Z̄ holds",
+            "Therefore: {K_{m,n}, H} = i(ma − nb) K_{m,n} for all m, n ≥ 0.",
+            "2 claims in 1 file: 2 proved, 0 refuted; all as expected",
+        ] {
+            assert!(text.contains(piece), "{when:?}: {piece}: {text}");
+        }
+    }
+}
+
+/// The Fock–Darwin system at the resonance `a = 2b`: up to third order, for every `M, b`, the
+/// search finds two integrals that `H`, `L` and their products do not generate, the cubic
+/// `8 P_{1,2}` and `−8 Q_{1,2}`, the parts of `W Z̄²` (the file's families, which it does not
+/// know); with them known nothing is new, nor up to fourth order. At `a = 3b` the new ones are
+/// quartic (`−Q_{1,3}/4` among them), at `b = 0` (the Landau problem) linear, the guiding
+/// centre `2 Re Z` and `2 Im Z`, and for every `a, b` there is none beyond `H` and `L`.
+#[test]
+fn fock_darwin_search_finds_the_resonant_integrals() {
+    let i91 = "24 p_x² p_y − 8 p_y³ + 12Mbx p_x² − 12Mbx p_y² − 24Mby p_x p_y + 18M²b²x² p_y \
+               + 36M²b²xy p_x − 18M²b²y² p_y + 27M³b³x³ − 81M³b³xy²";
+    let i92 = "8 p_x³ − 24 p_x p_y² − 24Mbx p_x p_y − 12Mby p_x² + 12Mby p_y² + 18M²b²x² p_x \
+               − 36M²b²xy p_y − 18M²b²y² p_x − 81M³b³x²y + 27M³b³y³";
+    let text = normalize(&expect(
+        "fd-search",
+        &[
+            "2800 unknowns",
+            "(a parameter's multiple of an integral counts apart from it): 126.",
+            "≤ 0: 28, ≤ 1: 56, ≤ 2: 90, ≤ 3: 126.",
+            "Known integrals in the space: H, L.",
+            "the generated ones span 124 of the 126 dimensions",
+            &format!("I91 = {i91}"),
+            &format!("I92 = {i92}"),
+            "3 claims: 3 proved, 0 refuted",
+        ],
+    ));
+    assert_eq!(text.matches(" = 0 at a = 2b [I").count(), 2, "{text}");
+    // From H alone, the same two.
+    let alone = run_on_hamiltonian_alone("fd-search");
+    assert!(
+        alone.contains("Known integrals in the space: H."),
+        "{alone}"
+    );
+    assert!(alone.contains(&normalize(&format!("= {i91}"))), "{alone}");
+    assert!(alone.contains(&normalize(&format!("= {i92}"))), "{alone}");
+    // Read back, they are 8 P_{1,2} and −8 Q_{1,2} at a = 2b.
+    let file = system_file("fock-darwin.toml");
+    let parse = |s: &str| file.parse_argument(s).expect("parses");
+    let vars = file.system().vars();
+    let at_1_2 = brackets::Condition::new("a = 2b", vars.lookup("a").unwrap(), parse("2*b"));
+    let at = |s: &str| at_1_2.apply(&parse(s)).unwrap();
+    assert_eq!(parse(i92), at("8*P_1_2"));
+    assert_eq!(parse(i91), at("-8*Q_1_2"));
+    expect(
+        "fd-search-known",
+        &[
+            "Known integrals in the space: H, L, P_1_2, Q_1_2.",
+            "None: the known integrals generate every integral in the space.",
+        ],
+    );
+    let four = normalize(&expect(
+        "fd-search-4",
+        &[
+            "10125 unknowns",
+            "(a parameter's multiple of an integral counts apart from it): 295.",
+            "the generated ones span 293 of the 295 dimensions",
+            &format!("I151 = {i91}"),
+            &format!("I152 = {i92}"),
+        ],
+    ));
+    assert_eq!(four.matches(" = 0 at a = 2b [I").count(), 2, "{four}");
+    let q13 = "p_x³ p_y − p_x p_y³ + Mbx p_x³ − 3Mbx p_x p_y² − 3Mby p_x² p_y + Mby p_y³ \
+               + 4M³b³x³ p_x − 12M³b³x²y p_y − 12M³b³xy² p_x + 4M³b³y³ p_y − 16M⁴b⁴x³y \
+               + 16M⁴b⁴xy³";
+    let third = normalize(&expect(
+        "fd-search-1-3",
+        &[
+            "(a parameter's multiple of an integral counts apart from it): 273.",
+            "the generated ones span 271 of the 273 dimensions",
+            &format!("I212 = {q13}"),
+        ],
+    ));
+    assert_eq!(third.matches(" = 0 at a = 3b [I").count(), 2, "{third}");
+    let at_1_3 = brackets::Condition::new("a = 3b", vars.lookup("a").unwrap(), parse("3*b"));
+    assert_eq!(parse(q13), at_1_3.apply(&parse("-Q_1_3/4")).unwrap());
+    expect(
+        "fd-search-generic",
+        &[
+            "37125 unknowns",
+            "(a parameter's multiple of an integral counts apart from it): 931.",
+            "Known integrals in the space: H, L.",
+            "None: the known integrals generate every integral in the space.",
+        ],
+    );
+    let landau = normalize(&expect(
+        "fd-search-landau",
+        &["I16 = 2 p_y + Max", "I17 = 2 p_x − May"],
+    ));
+    assert_eq!(landau.matches(" = 0 at b = 0 [I").count(), 2, "{landau}");
+}
+
+/// The Fock–Darwin system's algebras: at `a = 2b`, for every `M, b`, `H`, `L`, `P_{1,2}`,
+/// `Q_{1,2}` close into a cubic algebra, `{P, Q} = 36M³b(H² − 4b²L²)`, tied by
+/// `P² + Q² = 8M³(H − bL)(H + 2bL)²`; at `b = 0` the guiding centre's Heisenberg pair, with
+/// `P² + Q² = 2M(H + aL)`; at `b = a` su(2) with `L`, and its Casimir.
+#[test]
+fn fock_darwin_closes_into_a_cubic_algebra_at_1_2() {
+    expect(
+        "fd-closure",
+        &[
+            "The table closes",
+            "{L, P_1_2} = −3 Q_1_2 at a = 2b [B1 proved]",
+            "{L, Q_1_2} = 3 P_1_2 at a = 2b [B2 proved]",
+            "{P_1_2, Q_1_2} = −144M³b³ L² + 36M³b H² at a = 2b [B3 proved]",
+            "32M³b³ L³ + P_1_2² + Q_1_2² = 24M³b H² L + 8M³ H³ at a = 2b [R1 proved]",
+            "4 claims: 4 proved, 0 refuted",
+        ],
+    );
+    expect(
+        "fd-closure-landau",
+        &[
+            "The table closes",
+            "{P_0_1, Q_0_1} = Ma at b = 0 [B3 proved]",
+            "2Ma L + 2M H = P_0_1² + Q_0_1² at b = 0 [R1 proved]",
+        ],
+    );
+    expect(
+        "fd-closure-isotropic",
+        &[
+            "The table closes",
+            "{L, P_1_1} = −2 Q_1_1 at b = a [B1 proved]",
+            "{P_1_1, Q_1_1} = −8M²a² L at b = a [B3 proved]",
+            "4M²a² L² + P_1_1² + Q_1_1² = 4M² H² at b = a [R1 proved]",
+        ],
+    );
 }
 
 /// A Hamiltonian with negative powers of a symbolic parameter (`p²/(2M)`) is known to a search
