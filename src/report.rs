@@ -540,7 +540,7 @@ impl Report {
     /// let report = family_tower_report(&rotor, Some("K"), 2, None)?;
     /// let proof = report.proof().expect("K_{m,n} = Z^m e^{−inθ} is a product of powers");
     /// assert!(proof.holds());
-    /// assert_eq!(proof.facts[0].statement, "{Z, H} = (iω) Z");
+    /// assert_eq!(proof.facts[0].statement, "{Z, H} = iω Z");
     /// # Ok::<(), superint::system_file::FileError>(())
     /// ```
     pub fn proof(&self) -> Option<&ProofResult> {

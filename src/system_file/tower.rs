@@ -334,16 +334,16 @@ impl LoadedSystem {
                 .map_err(|e| at(&e.into()))?
                 .is_zero();
             let base_tree = drop_ones(&base_tree);
-            // A sum is parenthesized as the factor it is: `(i) (p_x + ix)`.
+            // A sum is parenthesized as the factor it is: `i (p_x + ix)`.
             let (name, factor) = (self.pretty(&base_tree), self.pretty_factor(&base_tree));
             // Where the bracket is another multiple of the base, the eigenvalue it has.
             let found_statement = match holds {
                 true => None,
                 false => multiple_of(&flow, &base, when)
-                    .map(|mu| format!("{{{name}, H}} = ({mu}) {factor}")),
+                    .map(|mu| format!("{{{name}, H}} = {}", times(&mu, &factor))),
             };
             facts.push(Fact {
-                statement: format!("{{{name}, H}} = ({lambda}) {factor}"),
+                statement: format!("{{{name}, H}} = {}", times(&lambda, &factor)),
                 holds,
                 found: (!holds).then_some(flow),
                 found_statement,
@@ -705,5 +705,18 @@ fn settled(when: Option<&Condition>, e: Expr) -> Result<Expr, EngineError> {
     match when {
         None => Ok(e),
         Some(c) => c.apply_where_defined(&e, "the tower"),
+    }
+}
+
+/// `λ A` as a proof states it, as the paper writes it: the eigenvalue bare where it is one
+/// term over no denominator (`iω Z`, `−2iω conj(b)`, `−W` for `−1`), else in parentheses
+/// (`(−i p_θ/I) exp(−iθ)`, `(a − b) W`).
+fn times(lambda: &Expr, factor: &str) -> String {
+    let text = lambda.to_string();
+    match text.as_str() {
+        "1" => factor.to_string(),
+        "−1" => format!("−{factor}"),
+        _ if lambda.len() == 1 && !text.contains('/') => format!("{text} {factor}"),
+        _ => format!("({text}) {factor}"),
     }
 }

@@ -4027,8 +4027,8 @@ fn fock_darwin_tower_is_proved_for_all_m_and_n() {
         assert_eq!(out.status.code(), Some(0), "{text}");
         for piece in [
             "36 brackets expanded for the Fock–Darwin system (ladder K_{m,n} = W^m Z̄^n), all hold",
-            "1. computed: {W, H} = (ia) W holds",
-            "2. computed: {Z̄, H} = (−ib) Z̄ holds",
+            "1. computed: {W, H} = ia W holds",
+            "2. computed: {Z̄, H} = −ib Z̄ holds",
             "Therefore: {K_{m,n}, H} = i(ma − nb) K_{m,n} for all m, n ≥ 0.",
             "2 claims in 1 file: 2 proved, 0 refuted; all as expected",
         ] {

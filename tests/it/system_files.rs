@@ -1233,8 +1233,8 @@ fn rank_claims_under_a_parameter_condition() {
     assert_eq!(isotropic["rank"], 1);
 }
 
-/// A proof's computed fact parenthesizes a base function that is a sum: `(i) p_x + ix` read as
-/// `i p_x + ix`, where the bracket is `i(p_x + ix)`.
+/// A proof's computed fact parenthesizes a base function that is a sum: `i p_x + ix` would
+/// read as a sum of two terms, where the bracket is `i(p_x + ix)`.
 #[test]
 fn tower_proof_facts_parenthesize_a_sum() {
     let dir = scratch("tower-sum");
@@ -1245,8 +1245,8 @@ fn tower_proof_facts_parenthesize_a_sum() {
     let o = superint_in(&dir, &["tower", "--system", "sum.toml", "--max", "2"]);
     assert_eq!(o.status.code(), Some(0), "{}", text(&o.stderr));
     let out = text(&o.stdout);
-    assert!(out.contains("{p_x + ix, H} = (i) (p_x + ix)"), "{out}");
-    assert!(out.contains("{p_x − ix, H} = (−i) (p_x − ix)"), "{out}");
+    assert!(out.contains("{p_x + ix, H} = i (p_x + ix)"), "{out}");
+    assert!(out.contains("{p_x − ix, H} = −i (p_x − ix)"), "{out}");
 }
 
 /// A tower says its system's name as the titles do: `for my oscillator`, in every format (it
@@ -1867,7 +1867,8 @@ fn tower_of_a_file_family_with_its_proof() {
     );
     assert!(out.contains("[Kp-tower proved]"), "{out}");
     assert!(out.contains("[Kp-all proved]"), "{out}");
-    assert!(out.contains("computed: {Z', H} = (iω) Z'"), "{out}");
+    // The eigenvalue bare, as the paper writes it, where it is one term.
+    assert!(out.contains("computed: {Z', H} = iω Z'"), "{out}");
     let out = run(
         &[
             "tower",
@@ -1881,7 +1882,7 @@ fn tower_of_a_file_family_with_its_proof() {
     );
     assert!(out.contains("[W-all proved]"), "{out}");
     assert!(
-        out.contains("computed: {conj(b), H} = (−2iω) conj(b)"),
+        out.contains("computed: {conj(b), H} = −2iω conj(b)"),
         "{out}"
     );
     assert!(out.contains("    Therefore: {W_{m,n}, H} = "), "{out}");
@@ -2739,8 +2740,8 @@ fn a_failed_base_fact_shows_the_bracket() {
     let out = text(&o.stdout);
     assert!(
         out.contains(
-            "    1. computed: {conj(A), H} = (i w1) conj(A)                    FAILS\n       \
-             the bracket is −i w1 p_x − w1² x, so {conj(A), H} = (−i w1) conj(A)\n"
+            "    1. computed: {conj(A), H} = i w1 conj(A)                      FAILS\n       \
+             the bracket is −i w1 p_x − w1² x, so {conj(A), H} = −i w1 conj(A)\n"
         ),
         "{out}"
     );
@@ -2760,7 +2761,7 @@ fn a_failed_base_fact_shows_the_bracket() {
     assert_eq!(v["proofs"][0]["facts"][0]["found"], "-i*w1*p_x - w1^2*x");
     assert_eq!(
         v["proofs"][0]["facts"][0]["found_statement"],
-        "{conj(A), H} = (−i w1) conj(A)"
+        "{conj(A), H} = −i w1 conj(A)"
     );
     assert_eq!(v["proofs"][0]["facts"][1]["found"], serde_json::Value::Null);
     assert_eq!(
