@@ -596,10 +596,24 @@ impl Shared {
         r: &SearchResult,
     ) -> Result<Section, EngineError> {
         let vars = system.vars();
+        // Under a condition on the parameters alone (`a = 2b`), H as the search takes it, as
+        // the title's `at a = 2b` says; one that fixes a momentum (`p_θ = Iω`) is applied to
+        // the brackets, so H is shown whole.
+        let h = system.hamiltonian();
+        let h = match &options.condition {
+            Some(c)
+                if c.subs()
+                    .iter()
+                    .all(|(v, _)| vars.variable(*v).kind() == VarKind::Parameter) =>
+            {
+                c.apply(h)?
+            }
+            _ => h.clone(),
+        };
         let mut entries = vec![
             Entry::Equations(Equations {
                 caption: String::new(),
-                lines: vec![Equation::new("H", system.hamiltonian().clone())],
+                lines: vec![Equation::new("H", h)],
             }),
             Entry::Text(space_text(r)),
         ];
@@ -843,7 +857,8 @@ impl Shared {
         }))
     }
 
-    /// One claim for the basis integrals not shown: all proved.
+    /// One claim for the basis integrals not shown: all proved (`for the other 4 basis
+    /// elements` after some are shown, `for the 4 basis elements` where none is).
     fn rest_proved(&self, r: &SearchResult) -> Option<Entry> {
         let rest: Vec<&Integral> = (0..r.basis.len())
             .filter(|i| !self.shown.contains(i))
@@ -862,10 +877,14 @@ impl Shared {
             Some(names) => Some(proved_for_every(names, self.held.fixed())),
             None => Some(format!("{lifted} of them lifted and proved symbolically")),
         };
+        let other = match self.shown.is_empty() {
+            true => "",
+            false => "other ",
+        };
         let mut c = ClaimResult::derived(
             "basis",
             &format!(
-                "{{{}, H}} = 0 for the other {}",
+                "{{{}, H}} = 0 for the {other}{}",
                 self.letter,
                 counted(rest.len(), "basis element")
             ),

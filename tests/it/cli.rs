@@ -3112,7 +3112,7 @@ fn cli_counts_of_one_are_singular() {
         "1 unknown, 0 linear equations over `Q`, in 1 independent block (the largest has 1 \
          unknown).",
         "(0 products formed); the generated ones span the whole space (1 dimension).",
-        "`{I, H} = 0 for the other 1 basis element`",
+        "`{I, H} = 0 for the 1 basis element`",
     ] {
         assert!(zero.contains(said), "{said}\n{zero}");
     }
@@ -3872,4 +3872,56 @@ fn a_short_left_side_beside_a_wide_one_breaks_to_the_alignment_column() {
     );
     assert!(doc.contains(r"S &= x^{3}"), "{doc}");
     compile_within(&doc, 1.0);
+}
+
+/// A search at a condition on the parameters shows H as it searches it, the condition applied
+/// (the title says `at a = 2b`, and H had kept its `a`); one at a momentum's value shows H
+/// whole, since the condition is applied to the brackets. Where no integral is listed, the
+/// closing claim is for "the" basis elements, not "the other" ones.
+#[test]
+fn a_search_at_a_condition_shows_h_as_it_searches_it() {
+    let out = run(
+        &[
+            "search",
+            "systems/fock-darwin.toml",
+            "--momenta-degree",
+            "2",
+            "--positions-degree",
+            "2",
+            "--when",
+            "a = 2*b",
+            "--new-only",
+            "--no-timings",
+        ],
+        0,
+    );
+    assert!(
+        out.contains("    H = p_x²/(2M) + p_y²/(2M) − bx p_y/2 + by p_x/2 + 9Mb²x²/8 + 9Mb²y²/8\n"),
+        "{out}"
+    );
+    assert!(
+        out.contains("{I, H} = 0 for the 4 basis elements at a = 2b"),
+        "{out}"
+    );
+    assert!(!out.contains("the other"), "{out}");
+    let rotor = run(
+        &[
+            "search",
+            "systems/harmonic-rotor.toml",
+            "--momenta-degree",
+            "1",
+            "--positions-degree",
+            "1",
+            "--trig-degree",
+            "1",
+            "--when",
+            "p_theta = I*omega",
+            "--no-timings",
+        ],
+        0,
+    );
+    assert!(
+        rotor.contains("    H = p_x²/(2M) + p_y²/(2M) + p_θ²/(2I) + Mω²x²/2 + Mω²y²/2\n"),
+        "{rotor}"
+    );
 }
