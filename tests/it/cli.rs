@@ -3904,22 +3904,9 @@ fn a_search_at_a_condition_shows_h_as_it_searches_it() {
         "{out}"
     );
     assert!(!out.contains("the other"), "{out}");
-    let rotor = run(
-        &[
-            "search",
-            "systems/harmonic-rotor.toml",
-            "--momenta-degree",
-            "1",
-            "--positions-degree",
-            "1",
-            "--trig-degree",
-            "1",
-            "--when",
-            "p_theta = I*omega",
-            "--no-timings",
-        ],
-        0,
-    );
+    let search = ["search", "systems/harmonic-rotor.toml"];
+    let at = ["--when", "p_theta = I*omega", "--no-timings"];
+    let rotor = run(&[&search[..], &crate::DEGREE_ONE, &at].concat(), 0);
     assert!(
         rotor.contains("    H = p_x²/(2M) + p_y²/(2M) + p_θ²/(2I) + Mω²x²/2 + Mω²y²/2\n"),
         "{rotor}"
