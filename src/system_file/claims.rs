@@ -792,8 +792,10 @@ impl LoadedSystem {
         let at = |e: &EngineError| engine_error(&spec.source, spec.span.clone(), e);
         match &spec.form {
             ClaimForm::Identity { lhs, rhs } => {
-                let l = scope.parse(&spec.source, lhs)?;
-                let r = scope.parse(&spec.source, rhs)?;
+                let l_tree = scope.tree(&spec.source, lhs)?;
+                let r_tree = scope.tree(&spec.source, rhs)?;
+                let l = scope.lower(&spec.source, lhs, &l_tree)?;
+                let r = scope.lower(&spec.source, rhs, &r_tree)?;
                 let mut claim = Claim::new(&spec.id, &spec.statement, l, r);
                 if let Some(c) = &spec.condition {
                     claim = claim.when(c.clone());
@@ -809,9 +811,11 @@ impl LoadedSystem {
                     true => Reach::WithSymbolicParameters,
                     false => Reach::AtValues,
                 };
+                // In the family instances at the indices the claim mentions too.
+                let indices = self.mentioned_indices([&l_tree, &r_tree]);
                 let residual_in_functions = residual
                     .as_ref()
-                    .and_then(|r| self.written_in(r, spec.condition.as_ref(), reach));
+                    .and_then(|r| self.written_in(r, spec.condition.as_ref(), reach, &indices));
                 let (condition, condition_ascii) =
                     spec.condition.as_ref().map(Condition::forms).unzip();
                 Ok(CheckedClaim::Identity(Box::new(ClaimResult {

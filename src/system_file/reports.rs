@@ -242,10 +242,13 @@ pub fn bracket_report(
         .map_err(|e| file.computation_error(&e))?;
     let lhs = format!("{{{fname}, {gname}}}");
     let mut equations = equations_at(file, condition.as_ref(), vec![(lhs.clone(), value)])?;
-    // The bracket in the file's functions too, where it is a polynomial in them.
-    // Else as its terms' common factor times the rest, where they share one.
+    // The bracket in the file's functions too (and the family instances at the indices the
+    // arguments mention), where it is a polynomial in them. Else as its terms' common factor
+    // times the rest, where they share one.
+    let indices = file.mentioned_indices([&f.tree, &g.tree]);
     for line in &mut equations.lines {
-        line.in_functions = file.written_in_functions(&line.rhs, condition.as_ref());
+        line.in_functions =
+            file.written_in_functions_and_instances(&line.rhs, condition.as_ref(), &indices);
         if line.in_functions.is_none() {
             line.factored = shown_factored(&line.rhs);
         }

@@ -1,17 +1,32 @@
 //! An expression written as a polynomial in `H` and the file's named functions, where it is
 //! one ([`LoadedSystem::written_in_functions`]): what `check` adds under a refuted claim's
-//! residual (`= −4 H L/M`) and `bracket` under a bracket.
+//! residual (`= −4 H L/M`) and `bracket` under a bracket. Where the bracket's arguments or
+//! the claim mention family instances, the instances of every family at their indices are
+//! functions too ([`LoadedSystem::written_in_functions_and_instances`]): `{L, P_{1,2}} =
+//! −3 Q_{1,2}` of the Fock–Darwin file.
 
 use brackets::closure::{expressed_in, ClosureOptions};
 use brackets::search::GENERIC_VALUES;
 use brackets::{Condition, NamedFunction};
+use trigpoly::syntax::{Expr as Tree, ExprKind};
 use trigpoly::{Expr, Rational, Var, VarKind};
 
+use super::scope::instance_of;
 use super::LoadedSystem;
 
 /// The degrees of the polynomials in `H` and the named functions that an expression is sought
-/// among, highest first: the first whose monomials the limits below allow.
-const DEGREES: [u32; 2] = [3, 2];
+/// among, highest first: the first whose monomials the limits below allow. Degree 1 is tried
+/// only with family instances among the functions ([`LOWEST_WITH_INSTANCES`]).
+const DEGREES: [u32; 3] = [3, 2, 1];
+
+/// The lowest of [`DEGREES`] searched in the file's functions alone: a combination of them
+/// is no news where their products cannot be sought.
+const LOWEST: u32 = 2;
+
+/// The lowest of [`DEGREES`] searched with family instances among the functions: an
+/// instance's multiple, `{L, P_{5,5}} = −10 Q_{5,5}`, where its square would take more than
+/// the term products allowed.
+const LOWEST_WITH_INSTANCES: u32 = 1;
 
 /// The most monomials the search may expand: degree 3 in up to 9 functions, degree 2 in up
 /// to 20.
@@ -31,9 +46,9 @@ const MAX_TERMS: usize = 5_000;
 /// terms is not searched, where its square alone would take millions.
 const MAX_TERM_PRODUCTS: u128 = 200_000;
 
-/// The highest of [`DEGREES`] whose monomials in functions of `lengths` terms stay within
-/// [`MAX_MONOMIALS`] and [`MAX_TERM_PRODUCTS`], if one does.
-fn searchable_degree(lengths: &[usize]) -> Option<u32> {
+/// The highest of [`DEGREES`] down to `lowest` whose monomials in functions of `lengths`
+/// terms stay within [`MAX_MONOMIALS`] and [`MAX_TERM_PRODUCTS`], if one does.
+fn searchable_degree(lengths: &[usize], lowest: u32) -> Option<u32> {
     let top = DEGREES[0] as usize;
     // h[d]: the sum over the monomials of degree d of the products of their functions'
     // lengths (the complete homogeneous polynomials in the lengths), and n[d] the number of
@@ -46,11 +61,14 @@ fn searchable_degree(lengths: &[usize]) -> Option<u32> {
             n[d] += n[d - 1];
         }
     }
-    DEGREES.into_iter().find(|&degree| {
-        let d = degree as usize;
-        n[..=d].iter().sum::<u128>() <= MAX_MONOMIALS
-            && h[1..=d].iter().fold(0u128, |a, &b| a.saturating_add(b)) <= MAX_TERM_PRODUCTS
-    })
+    DEGREES
+        .into_iter()
+        .filter(|&d| d >= lowest)
+        .find(|&degree| {
+            let d = degree as usize;
+            n[..=d].iter().sum::<u128>() <= MAX_MONOMIALS
+                && h[1..=d].iter().fold(0u128, |a, &b| a.saturating_add(b)) <= MAX_TERM_PRODUCTS
+        })
 }
 
 impl LoadedSystem {
@@ -73,38 +91,171 @@ impl LoadedSystem {
     /// # Ok::<(), superint::system_file::FileError>(())
     /// ```
     pub fn written_in_functions(&self, e: &Expr, condition: Option<&Condition>) -> Option<Expr> {
-        self.written_in(e, condition, Reach::WithSymbolicParameters)
+        self.written_in(e, condition, Reach::WithSymbolicParameters, &[])
     }
 
-    /// [`LoadedSystem::written_in_functions`], with the last search (the parameters kept
-    /// symbolic) only when `reach` allows it.
-    pub(crate) fn written_in(
+    /// [`LoadedSystem::written_in_functions`] with the instances of every family at each
+    /// pair of `indices` among the functions, each a symbol printed as the instance is
+    /// (`Q_{1,2}`, `Q_1_2` in ASCII, which reads back): what `bracket` writes where its
+    /// arguments mention instances (and `check` where a claim does). An instance that
+    /// cannot be expanded (past a limit), is zero or equals a function is left out. The
+    /// instances may lower the degree searched (more than 9 functions, or long ones), to 1
+    /// where their squares would pass the term products allowed (`{L, P_{5,5}} = −10 Q_{5,5}`);
+    /// where nothing is found with them, the file's functions alone are then searched as
+    /// without them.
+    ///
+    /// ```
+    /// use superint::system_file::{load, LimitsOverride};
+    ///
+    /// let fd = load("systems/fock-darwin.toml", &LimitsOverride::default())?;
+    /// let bracket = fd.parse("{L, P_1_2}")?;
+    /// let written = fd.written_in_functions_and_instances(&bracket, None, &[(1, 2)]);
+    /// assert_eq!(written.expect("a polynomial").to_string(), "−3 Q_{1,2}");
+    /// # Ok::<(), superint::system_file::FileError>(())
+    /// ```
+    pub fn written_in_functions_and_instances(
         &self,
         e: &Expr,
         condition: Option<&Condition>,
-        reach: Reach,
+        indices: &[(i64, i64)],
     ) -> Option<Expr> {
-        if e.len() > MAX_TERMS {
-            return None;
+        self.written_in(e, condition, Reach::WithSymbolicParameters, indices)
+    }
+
+    /// The index pairs of the family instances that `trees` name (`P_1_2` → `(1, 2)`, braces
+    /// already rewritten), each once, in order of first mention.
+    pub(crate) fn mentioned_indices<'t>(
+        &self,
+        trees: impl IntoIterator<Item = &'t Tree>,
+    ) -> Vec<(i64, i64)> {
+        fn walk(families: &[super::Family], tree: &Tree, out: &mut Vec<(i64, i64)>) {
+            let mut name = |n: &str| {
+                if let Some((_, m, n)) = instance_of(families, n) {
+                    if !out.contains(&(m, n)) {
+                        out.push((m, n));
+                    }
+                }
+            };
+            match &tree.kind {
+                ExprKind::Integer(_) => {}
+                ExprKind::Name(n) => name(n),
+                // A name before parentheses multiplies them (`K_1_1(x)`).
+                ExprKind::Call(f, _, args) => {
+                    name(f);
+                    args.iter().for_each(|a| walk(families, a, out));
+                }
+                ExprKind::Neg(a) => walk(families, a, out),
+                ExprKind::Add(a, b)
+                | ExprKind::Sub(a, b)
+                | ExprKind::Mul(a, b)
+                | ExprKind::Div(a, b)
+                | ExprKind::Pow(a, b)
+                | ExprKind::Bracket(a, b) => {
+                    walk(families, a, out);
+                    walk(families, b, out);
+                }
+            }
         }
-        let system = &self.system;
-        let functions = system.functions();
-        // `H` unless a function is it (the rotor's `F1`): two equal generators would leave
-        // the choice between them to the linear algebra.
-        let h = system.hamiltonian();
+        let mut out = Vec::new();
+        for tree in trees {
+            walk(&self.families, tree, &mut out);
+        }
+        out
+    }
+
+    /// `H` unless a function is it (the rotor's `F1`), and the file's functions: two equal
+    /// generators would leave the choice between them to the linear algebra.
+    fn generators(&self) -> Vec<NamedFunction> {
+        let functions = self.system.functions();
+        let h = self.system.hamiltonian();
         let mut generators = Vec::with_capacity(functions.len() + 1);
         if functions.iter().all(|f| f.name != "H" && f.expr != *h) {
             generators.push(NamedFunction::new("H", "H", h.clone()));
         }
         generators.extend(functions.iter().cloned());
-        let lengths: Vec<usize> = generators.iter().map(|g| g.expr.len()).collect();
-        let mut options = ClosureOptions::new(searchable_degree(&lengths)?);
+        generators
+    }
+
+    /// The instances of every family at each pair of `indices`, named as an expression names
+    /// them (`Q_1_2`) and shown as printed (`Q_{1,2}`), but those that cannot be expanded, are
+    /// zero or equal one of `generators` or an instance before them.
+    fn instances_at(
+        &self,
+        indices: &[(i64, i64)],
+        generators: &[NamedFunction],
+    ) -> Vec<NamedFunction> {
+        let mut instances: Vec<NamedFunction> = Vec::new();
+        for &(m, n) in indices {
+            for (k, family) in self.families.iter().enumerate() {
+                let Ok(value) = self.family_instance(k, m, n) else {
+                    continue;
+                };
+                let known = generators.iter().chain(&instances).any(|g| g.expr == value);
+                if value.is_zero() || known {
+                    continue;
+                }
+                let name = format!("{}_{m}_{n}", family.name);
+                let display = format!("{}_{{{m},{n}}}", family.display);
+                instances.push(NamedFunction::new(&name, &display, value));
+            }
+        }
+        instances
+    }
+
+    /// [`LoadedSystem::written_in_functions`] among the functions and the instances at
+    /// `indices`, with the last search (the parameters kept symbolic) only when `reach`
+    /// allows it.
+    pub(crate) fn written_in(
+        &self,
+        e: &Expr,
+        condition: Option<&Condition>,
+        reach: Reach,
+        indices: &[(i64, i64)],
+    ) -> Option<Expr> {
+        if e.len() > MAX_TERMS {
+            return None;
+        }
+        let functions = self.generators();
+        let instances = self.instances_at(indices, &functions);
+        let degree = |g: &[NamedFunction], lowest| {
+            let lengths: Vec<usize> = g.iter().map(|g| g.expr.len()).collect();
+            searchable_degree(&lengths, lowest)
+        };
+        let alone = degree(&functions, LOWEST);
+        let in_functions =
+            |d: Option<u32>| d.and_then(|d| self.written_among(e, condition, reach, &functions, d));
+        if instances.is_empty() {
+            return in_functions(alone);
+        }
+        let mut generators = functions.clone();
+        generators.extend(instances);
+        let with = degree(&generators, LOWEST_WITH_INSTANCES);
+        let found = with.and_then(|d| self.written_among(e, condition, reach, &generators, d));
+        // With the instances the degree may be lower (more functions, or longer ones): what
+        // the functions alone give at their own degree is sought then.
+        match found {
+            None if with != alone => in_functions(alone),
+            found => found,
+        }
+    }
+
+    /// `e` written as a polynomial of degree `≤ degree` in the `generators`, as
+    /// [`LoadedSystem::written_in`] searches.
+    fn written_among(
+        &self,
+        e: &Expr,
+        condition: Option<&Condition>,
+        reach: Reach,
+        generators: &[NamedFunction],
+        degree: u32,
+    ) -> Option<Expr> {
+        let system = &self.system;
+        let mut options = ClosureOptions::new(degree);
         options.max_monomials = MAX_MONOMIALS as usize;
         if let Some(c) = condition {
             options = options.when(c.clone());
         }
-        let search = |options: &ClosureOptions| match expressed_in(system, &generators, e, options)
-        {
+        let search = |options: &ClosureOptions| match expressed_in(system, generators, e, options) {
             Ok(None) => Search::Nothing,
             Ok(Some(found)) if found.symbolic => {
                 let ring = &found.ring;
@@ -212,13 +363,18 @@ mod tests {
     /// the squares would pass the term products allowed.
     #[test]
     fn the_degree_searched_follows_the_functions() {
-        use super::searchable_degree;
-        assert_eq!(searchable_degree(&[4, 2, 4, 2]), Some(3));
-        assert_eq!(searchable_degree(&[5; 9]), Some(3));
-        assert_eq!(searchable_degree(&[5; 10]), Some(2));
-        assert_eq!(searchable_degree(&[4, 2, 60]), Some(2));
-        assert_eq!(searchable_degree(&[4, 2, 10_626]), None);
-        assert_eq!(searchable_degree(&[usize::MAX, 3]), None);
+        use super::{searchable_degree, LOWEST, LOWEST_WITH_INSTANCES};
+        assert_eq!(searchable_degree(&[4, 2, 4, 2], LOWEST), Some(3));
+        assert_eq!(searchable_degree(&[5; 9], LOWEST), Some(3));
+        assert_eq!(searchable_degree(&[5; 10], LOWEST), Some(2));
+        assert_eq!(searchable_degree(&[4, 2, 60], LOWEST), Some(2));
+        assert_eq!(searchable_degree(&[4, 2, 10_626], LOWEST), None);
+        assert_eq!(searchable_degree(&[usize::MAX, 3], LOWEST), None);
+        // With instances, their multiples where their squares are too long.
+        let instances = LOWEST_WITH_INSTANCES;
+        assert_eq!(searchable_degree(&[4, 2, 10_626], instances), Some(1));
+        assert_eq!(searchable_degree(&[5; 10], instances), Some(2));
+        assert_eq!(searchable_degree(&[usize::MAX, 3], instances), None);
     }
 
     /// A file with `L` and `B = (1 + x + y + p_x + p_y)^k`.

@@ -3192,9 +3192,10 @@ expect = "refuted"
 /// A bracket or a residual whose coefficients are of degree 4 in the parameters is written in
 /// the functions too, where α and β of one weight keep the fit at fixed values from lifting:
 /// the caged oscillator's `{K, Q}` (its algebra's claim), the residual of a false `{K, Q}`
-/// (`512ω²αβ H_x`, twice the sign-turned term), and that of `{W_{3,1}, H} = 0`
-/// (`2iω A³B̄ = 2iω A (C + 4iω Q)`). At degree 2 in the parameters, all three were long
-/// polynomials in the phase variables.
+/// (`512ω²αβ H_x`, twice the sign-turned term), and that of `{W_{3,1}, H} = 0` (`2iω
+/// W_{3,1}`, the instance the claim mentions, where in the functions alone it is `2iω A³B̄ =
+/// 2iω A (C + 4iω Q)`). At degree 2 in the parameters, all three were long polynomials in the
+/// phase variables.
 #[test]
 fn coefficients_of_degree_four_in_the_parameters_are_written() {
     let file = "systems/caged-oscillator-1-2.toml";
@@ -3214,7 +3215,7 @@ fn coefficients_of_degree_four_in_the_parameters_are_written() {
     assert_eq!(
         written,
         vec![
-            ("false-1-3-ratio", "-8*omega^2*A*Q + 2*i*omega*A*C"),
+            ("false-1-3-ratio", "2*i*omega*W_3_1"),
             ("false-algebra", "512*omega^2*alpha*beta*Hx"),
         ]
     );
@@ -3303,6 +3304,91 @@ fn bracket_writes_the_bracket_in_the_files_functions() {
         0,
     );
     assert!(markdown.contains("` = `−2 H L/M`"), "{markdown}");
+}
+
+/// Where `bracket`'s arguments mention family instances, the instances of every family at
+/// their indices are functions too, printed as instances in every format and in ASCII that
+/// reads back: the Fock–Darwin `{L, P_{1,2}} = −3 Q_{1,2}` (in `Z`, `W` alone, `−3i Z² W̄/2 +
+/// 3i Z̄² W/2`), the rotor's `{P_{2,3}, H}` off resonance, `{L, K̄_{1,2}} = i K̄_{1,2}` with
+/// its display's bar, and `{L, P_{5,5}} = −10 Q_{5,5}`, an instance too long for its square to
+/// be sought, as a multiple. A bracket that is no polynomial in them gets nothing (`{xy,
+/// P_{1,2}}`), and one in the functions alone is still written so (`{Z, P_{1,2}}`).
+#[test]
+fn bracket_writes_the_bracket_in_the_family_instances_it_mentions() {
+    let fd = "systems/fock-darwin.toml";
+    let text = run(&["bracket", fd, "L", "P_1_2"], 0);
+    assert!(
+        text.contains("− 9M³b³xy²/8\n                 = −3 Q_{1,2}\n"),
+        "{text}"
+    );
+    let json = |file: &str, f: &str, g: &str| -> Value {
+        let out = run(&["bracket", file, f, g, "--format", "json"], 0);
+        let v: Value = serde_json::from_str(&out).expect("JSON");
+        v["equations"][0]["lines"][0].clone()
+    };
+    let line = json(fd, "L", "P_{1,2}");
+    let written = &line["in_functions"];
+    assert_eq!(written["text"], "−3 Q_{1,2}");
+    assert_eq!(written["latex"], "-3 Q_{1,2}");
+    assert_eq!(written["ascii"], "-3*Q_1_2");
+    // The ASCII reads back in the file, to the bracket's normal form.
+    let ascii = written["ascii"].as_str().expect("ASCII");
+    let out = run(&["expand", fd, "--format", "json", "--", ascii], 0);
+    let v: Value = serde_json::from_str(&out).expect("JSON");
+    assert_eq!(v["equations"][0]["lines"][0]["ascii"], line["ascii"]);
+    let rotor = "systems/harmonic-rotor.toml";
+    let written = |file: &str, f: &str, g: &str| json(file, f, g)["in_functions"].clone();
+    assert_eq!(
+        written(rotor, "P_2_3", "H")["text"],
+        "−2ω Q_{2,3} + 3 Ω Q_{2,3}"
+    );
+    let bar = written(rotor, "L", "Kbar_1_2");
+    assert_eq!(bar["text"], "i K̄_{1,2}");
+    assert_eq!(bar["latex"], r"i \bar{K}_{1,2}");
+    assert_eq!(bar["ascii"], "i*Kbar_1_2");
+    assert_eq!(written(fd, "L", "P_5_5")["ascii"], "-10*Q_5_5");
+    assert_eq!(written(fd, "x*y", "P_1_2"), Value::Null);
+    assert_eq!(written(fd, "Z", "P_1_2")["text"], "2iMa Z̄ W + 2iMb Z̄ W");
+}
+
+/// A refuted claim that mentions family instances has its residual written in the instances
+/// of every family at their indices too, where it is a polynomial in them and the functions:
+/// the Fock–Darwin `P_{1,2}` conserved off the resonance (`(2b − a) Q_{1,2}`) or at the other
+/// one, `b = 2a` (`3a Q_{1,2}`, which was `3ia Z² W̄/2 − 3ia Z̄² W/2`); each reads back, under
+/// the claim's condition, to the residual. A residual that is none is written as before.
+#[test]
+fn a_refuted_residual_is_written_in_the_instances_the_claim_mentions() {
+    let fd = "systems/fock-darwin.toml";
+    let v: Value = serde_json::from_str(&run(&["check", fd, "--format", "json"], 0)).expect("JSON");
+    let claims = v["claims"].as_array().expect("claims");
+    let claim = |id: &str| {
+        claims
+            .iter()
+            .find(|c| c["id"] == id)
+            .unwrap_or_else(|| panic!("{id}"))
+            .clone()
+    };
+    for (id, written) in [
+        ("false-off-resonance", "-a*Q_1_2 + 2*b*Q_1_2"),
+        ("false-resonance", "3*a*Q_1_2"),
+    ] {
+        let c = claim(id);
+        assert_eq!(c["residual_in_functions"], written, "{c}");
+        let difference = format!(
+            "({}) - ({written})",
+            c["residual"].as_str().expect("residual")
+        );
+        let mut args = vec!["expand", fd, "--format", "json", difference.as_str()];
+        if let Some(when) = c["condition_ascii"].as_str() {
+            args.extend(["--when", when]);
+        }
+        let out: Value = serde_json::from_str(&run(&args, 0)).expect("JSON");
+        assert_eq!(out["equations"][0]["lines"][0]["ascii"], "0", "{id}");
+    }
+    // W conserved at b = 0 is ia W, in the functions, as before.
+    assert_eq!(claim("false-landau")["residual_in_functions"], "i*a*W");
+    let text = run(&["check", fd], 0);
+    assert!(text.contains("= 3a Q_{1,2}\n"), "{text}");
 }
 
 /// A residual is written in the functions where the parameters at 1, the values the linear

@@ -333,16 +333,11 @@ pub fn latex_name(name: &str) -> String {
         Some((_, latex)) => latex,
         None => words_in_latex(head),
     };
-    let Some(indices) = subscript.strip_prefix("_{") else {
-        return head;
-    };
-    let bare = head.trim_end_matches('\'');
-    let primes = &head[bare.len()..];
-    match own_subscript(bare) {
-        Some(own) => format!(
-            "{}{own};{indices}{primes}",
-            &bare[..bare.len() - own.len() - 1]
-        ),
+    match subscript
+        .strip_prefix("_{")
+        .and_then(|s| s.strip_suffix('}'))
+    {
+        Some(indices) => trigpoly::with_indices(&head, indices),
         None => format!("{head}{subscript}"),
     }
 }
@@ -365,25 +360,6 @@ fn words_in_latex(name: &str) -> String {
         rest = after;
     }
     out
-}
-
-/// The subscript a name's LaTeX ends with, open: `K_{1}` → `_{1` (`None` for `\bar{K}`).
-fn own_subscript(latex: &str) -> Option<&str> {
-    let body = latex.strip_suffix('}')?;
-    let mut depth = 0;
-    for (k, c) in body.char_indices().rev() {
-        match c {
-            '}' => depth += 1,
-            '{' if depth > 0 => depth -= 1,
-            '{' => {
-                return latex[..k]
-                    .ends_with('_')
-                    .then(|| &latex[k - 1..latex.len() - 1])
-            }
-            _ => {}
-        }
-    }
-    None
 }
 
 /// Writes `target` as `Σ c_k F_k` with `c_k` Laurent polynomials in the parameters, if possible.

@@ -10,7 +10,7 @@ mod names;
 
 pub use names::{
     display_forms, has_several_words, is_identifier, latex_unwritable, shown_forms, unbarred,
-    BadName, LATEX_LETTERS, MAX_NAME_CHARS, RESERVED,
+    with_indices, BadName, LATEX_LETTERS, MAX_NAME_CHARS, RESERVED,
 };
 pub(crate) use names::{long_name, unparenthesized};
 use names::{render_name, spell_out};

@@ -47,9 +47,18 @@ pub fn display_forms(display: &str) -> Option<(String, String)> {
 /// How a display name shows, as text and as LaTeX: an identifier's forms ([`display_forms`]),
 /// or those of a name of several such words or `Re`/`Im`, one space between them: `Re K` →
 /// (`Re K`, `\operatorname{Re} K`), `H x` → (`H x`, `H x`). Printing sets a name of several
-/// words in parentheses where something follows it ([`has_several_words`]); anything else
-/// (`x(t)`) has no such forms.
+/// words in parentheses where something follows it ([`has_several_words`]). Either may end
+/// with a family instance's indices in braces, which join a subscript of its own in LaTeX
+/// ([`with_indices`]): `K̄_{1,2}` → (`K̄_{1,2}`, `\bar{K}_{1,2}`), `K1_{1,2}` → (`K1_{1,2}`,
+/// `K_{1;1,2}`). Anything else (`x(t)`) has no such forms.
 pub fn shown_forms(display: &str) -> Option<(String, String)> {
+    if let Some((head, indices)) = instance_indices(display) {
+        let (text, latex) = shown_forms(head)?;
+        return Some((
+            format!("{text}_{{{indices}}}"),
+            with_indices(&latex, indices),
+        ));
+    }
     if !display.contains(' ') {
         return display_forms(display);
     }
@@ -63,6 +72,49 @@ pub fn shown_forms(display: &str) -> Option<(String, String)> {
         latex.push(tex);
     }
     Some((unicode.join(" "), latex.join(" ")))
+}
+
+/// A display name that ends with a family instance's two indices in braces, split there:
+/// `K̄_{1,2}` → (`K̄`, `1,2`), `K_{m,n}` → (`K`, `m,n`); `None` for any other (`K_{1}`).
+fn instance_indices(display: &str) -> Option<(&str, &str)> {
+    let (head, inner) = display.strip_suffix('}')?.rsplit_once("_{")?;
+    let (m, n) = inner.split_once(',')?;
+    let index = |s: &str| !s.is_empty() && s.chars().all(|c| c.is_ascii_alphanumeric());
+    (!head.is_empty() && index(m) && index(n)).then_some((head, inner))
+}
+
+/// The LaTeX of a name followed by a family instance's `indices` (`1,2`): as a subscript
+/// after it, `\bar{K}_{1,2}`, `P'_{1,2}`, or after `;` in the subscript it ends with, primes
+/// aside (`K_{1}` → `K_{1;1,2}`, `K_{1}'` → `K_{1;1,2}'`: LaTeX refuses a double subscript).
+pub fn with_indices(latex: &str, indices: &str) -> String {
+    let bare = latex.trim_end_matches('\'');
+    let primes = &latex[bare.len()..];
+    match own_subscript(bare) {
+        Some(own) => format!(
+            "{}{own};{indices}}}{primes}",
+            &bare[..bare.len() - own.len() - 1]
+        ),
+        None => format!("{latex}_{{{indices}}}"),
+    }
+}
+
+/// The subscript a name's LaTeX ends with, open: `K_{1}` → `_{1` (`None` for `\bar{K}`).
+fn own_subscript(latex: &str) -> Option<&str> {
+    let body = latex.strip_suffix('}')?;
+    let mut depth = 0;
+    for (k, c) in body.char_indices().rev() {
+        match c {
+            '}' => depth += 1,
+            '{' if depth > 0 => depth -= 1,
+            '{' => {
+                return latex[..k]
+                    .ends_with('_')
+                    .then(|| &latex[k - 1..latex.len() - 1])
+            }
+            _ => {}
+        }
+    }
+    None
 }
 
 /// Whether a printed name is of several words (`Re K`, `H x`, `ω (x)`), which a power, a
@@ -561,5 +613,28 @@ mod tests {
             render_name("theta12"),
             ("θ12".into(), r"\theta_{12}".into())
         );
+    }
+
+    /// A family instance's display, its indices in braces after a display name, shows as
+    /// written in text and with the indices as a subscript in LaTeX, joined to one the name
+    /// ends with; braces of anything else have no forms.
+    #[test]
+    fn an_instance_shows_its_indices() {
+        for (display, text, latex) in [
+            ("Q_{1,2}", "Q_{1,2}", "Q_{1,2}"),
+            ("K̄_{10,3}", "K̄_{10,3}", r"\bar{K}_{10,3}"),
+            ("G1'_{1,2}", "G1'_{1,2}", "G_{1;1,2}'"),
+            ("A_x_{m,n}", "A_x_{m,n}", "A_{x;m,n}"),
+            ("Re K_{1,1}", "Re K_{1,1}", r"\operatorname{Re} K_{1,1}"),
+        ] {
+            assert_eq!(
+                shown_forms(display),
+                Some((text.into(), latex.into())),
+                "{display}"
+            );
+        }
+        for display in ["Q_{1}", "Q_{1,2,3}", "_{1,2}", "Q_{1, 2}", "x(t)_{1,2}"] {
+            assert_eq!(shown_forms(display), None, "{display}");
+        }
     }
 }
