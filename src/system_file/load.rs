@@ -9,7 +9,7 @@ use std::sync::Mutex;
 
 use brackets::{EngineError, PhaseSpace, System};
 use toml::Spanned;
-use trigpoly::{AlgebraError, Expr, Limits, Var, VarSet, VarSetBuilder, Vars};
+use trigpoly::{AlgebraError, Expr, Limits, Var, VarKind, VarSet, VarSetBuilder, Vars};
 
 use super::claims::ClaimSpec;
 use super::error::{locate_bytes, ErrorKind, FileError};
@@ -795,7 +795,6 @@ impl<'a> Builder<'a> {
         let limits = self.limits(&model)?;
         let vars = self.variables(&model, limits)?;
         let space = self.phase_space(&model.phase_space, &vars)?;
-        self.shown = PrintedNames::of_variables(&vars);
         let mut file = self.unfilled(&model, space, &vars, limits);
         if let Some(poisson) = &model.poisson {
             let space = self.poisson(&file, poisson)?;
@@ -864,11 +863,32 @@ impl<'a> Builder<'a> {
 
     /// The variables of `[phase_space]` held to `limits`, with the radicals and then the
     /// denominator atoms added.
-    fn variables(&self, model: &SystemModel, limits: Limits) -> Result<Vars, FileError> {
+    fn variables(&mut self, model: &SystemModel, limits: Limits) -> Result<Vars, FileError> {
         let ps = model.phase_space.get_ref();
-        let builder = variables_builder(ps, &model.function, limits);
-        let with_atoms = builder.clone();
-        let vars = builder.build().map_err(|e| {
+        let plain = variables_builder(ps, &model.function, limits, &[]);
+        let vars = self.built(model, plain.clone())?;
+        let shown = self.variable_displays(model, &vars)?;
+        let (with_atoms, vars) = match shown.is_empty() {
+            true => (plain, vars),
+            false => {
+                let builder = variables_builder(ps, &model.function, limits, &shown);
+                let vars = self.built(model, builder.clone())?;
+                (builder, vars)
+            }
+        };
+        let (with_atoms, vars) = self.radicals(declared_radicals(ps), with_atoms, vars)?;
+        let vars = self.denominators(&ps.denominators, with_atoms, vars)?;
+        // The names shown by a display, at its line: a function shown alike is refused there.
+        let lines: HashMap<String, usize> =
+            shown.iter().map(|s| (s.name.clone(), s.line)).collect();
+        self.shown = PrintedNames::of_variables_at(&vars, &lines, &[]);
+        Ok(vars)
+    }
+
+    /// The variables of `builder`, a name refused at its place in `[phase_space]`.
+    fn built(&self, model: &SystemModel, builder: VarSetBuilder) -> Result<Vars, FileError> {
+        let ps = model.phase_space.get_ref();
+        builder.build().map_err(|e| {
             // Two names that one spelling finds (`omega` and `ω`), or that LaTeX prints
             // alike (`x1` and `x₁`): shown at the second.
             let at = match &e {
@@ -888,9 +908,139 @@ impl<'a> Builder<'a> {
                 at.unwrap_or(model.phase_space.span()),
                 e.to_string(),
             )
-        })?;
-        let (with_atoms, vars) = self.radicals(declared_radicals(ps), with_atoms, vars)?;
-        self.denominators(&ps.denominators, with_atoms, vars)
+        })
+    }
+
+    /// The display names of `[phase_space] display` (`{ a = "ω₊" }`), each checked against
+    /// `vars`, the variables as their names print: its key a coordinate, an angle, a Poisson
+    /// variable or a parameter; its value a display name of one word (`ω₊`, `A_x`, `Z̄`,
+    /// `G1'`) that prints apart from every other variable, and is no other's name. A
+    /// coordinate's or angle's momentum is shown with it (`p_ω₊`).
+    fn variable_displays(
+        &self,
+        model: &SystemModel,
+        vars: &VarSet,
+    ) -> Result<Vec<ShownVariable>, FileError> {
+        let ps = model.phase_space.get_ref();
+        let Some(table) = &ps.display else {
+            return Ok(Vec::new());
+        };
+        let entries = &table.get_ref().entries;
+        let displayed: Vec<String> = entries
+            .iter()
+            .flat_map(|(k, _)| [k.get_ref().clone(), format!("p_{}", k.get_ref())])
+            .collect();
+        let mut printed = PrintedNames::of_variables_at(vars, &HashMap::new(), &displayed);
+        let mut shown = Vec::new();
+        for (key, value) in entries {
+            let var = vars.lookup(key.get_ref()).filter(|&v| {
+                matches!(
+                    vars.variable(v).kind(),
+                    VarKind::Coordinate | VarKind::Angle | VarKind::Poisson | VarKind::Parameter
+                )
+            });
+            let Some(var) = var else {
+                let why = self.undisplayable(model, key.get_ref());
+                return Err(self.error(ErrorKind::Name, key.span(), why));
+            };
+            // The declared name, where the key may be its other spelling (`omega` for `ω`).
+            let name = &vars.variable(var).name().to_string();
+            self.check_display(value)?;
+            let display = value.get_ref();
+            let refuse = |why: String| Err(self.error(ErrorKind::Name, value.span(), why));
+            if trigpoly::has_several_words(display) {
+                return refuse(format!(
+                    "a variable's display is one name (ω₊, A_x, Z̄): '{display}' is several \
+                     words, which beside a factor would read as a product of its own \
+                     (2 {display})"
+                ));
+            }
+            let Some((text, latex)) = trigpoly::shown_forms(display) else {
+                return refuse(format!(
+                    "a variable's display is a name, with primes, a bar or subscripts (ω₊, \
+                     A_x, Z̄, G1'), which reads as one factor of a product: '{display}' is not"
+                ));
+            };
+            let kind = vars.variable(var).kind();
+            let whose = PrintedNames::whose_variable(kind, name);
+            let line = super::error::locate(&self.source.text, value.span()).line;
+            let alike = |why: String| refuse(format!("{why}: give it another display"));
+            if let Err(why) = printed.admit_variable(&whose, &text, &latex, line) {
+                return alike(why);
+            }
+            // A display that another variable's name spells would read back as that one.
+            for spelling in [display.as_str(), text.as_str()] {
+                if let Some(other) = vars.lookup(spelling).filter(|&o| o != var) {
+                    let other = vars.variable(other);
+                    return alike(format!(
+                        "{whose} would show as {text}, which names {}",
+                        PrintedNames::whose_variable(other.kind(), other.name())
+                    ));
+                }
+            }
+            shown.push(ShownVariable {
+                name: name.clone(),
+                text: text.clone(),
+                latex: latex.clone(),
+                line,
+            });
+            if matches!(kind, VarKind::Coordinate | VarKind::Angle) {
+                let momentum = format!("p_{name}");
+                let (text, latex) = (format!("p_{text}"), format!("p_{{{latex}}}"));
+                let whose = PrintedNames::whose_variable(VarKind::Momentum, &momentum);
+                if let Err(why) = printed.admit_variable(&whose, &text, &latex, line) {
+                    return alike(why);
+                }
+                shown.push(ShownVariable {
+                    name: momentum,
+                    text,
+                    latex,
+                    line,
+                });
+            }
+        }
+        Ok(shown)
+    }
+
+    /// Why `name`, a key of `[phase_space] display`, has no display there: a momentum is
+    /// shown with its coordinate, a function or a family by its own `display`, a radical or a
+    /// name not declared has none.
+    fn undisplayable(&self, model: &SystemModel, name: &str) -> String {
+        let ps = model.phase_space.get_ref();
+        let what = "[phase_space] display shows a coordinate, an angle, a Poisson variable or a \
+                    parameter";
+        let coordinate = name.strip_prefix("p_").and_then(|q| {
+            canonical_coordinates(ps)
+                .into_iter()
+                .find(|c| c.get_ref() == q)
+        });
+        if let Some(q) = coordinate {
+            let q = q.get_ref();
+            return format!(
+                "'{name}' is the momentum of {q}, which shows as {q} does ({what}; with \
+                 {q} = \"ξ\", {name} shows as p_ξ)"
+            );
+        }
+        if model
+            .function
+            .iter()
+            .any(|f| f.get_ref().name.get_ref() == name)
+        {
+            return format!(
+                "'{name}' is a function: give it a display in its [[function]] ({what})"
+            );
+        }
+        if model
+            .family
+            .iter()
+            .any(|f| f.get_ref().name.get_ref() == name)
+        {
+            return format!("'{name}' is a family: give it a display in its [[family]] ({what})");
+        }
+        if let Some((kind, _)) = self.names.get(name) {
+            return format!("'{name}' is {kind}, which has no display ({what})");
+        }
+        format!("'{name}' is not declared ({what} declared above it)")
     }
 
     /// The phase space of `vars`: each coordinate and angle paired with its momentum.
@@ -1254,22 +1404,29 @@ fn variables_builder(
     ps: &PhaseSpaceModel,
     functions: &[Spanned<FunctionModel>],
     limits: Limits,
+    shown: &[ShownVariable],
 ) -> VarSetBuilder {
+    // Each variable printed as its display shows it, if it has one.
+    let show = |builder: VarSetBuilder, name: &str| match shown.iter().find(|s| s.name == name) {
+        Some(s) => builder.printed_as(&s.text, &s.latex),
+        None => builder,
+    };
     let mut builder = VarSet::builder().limits(limits);
     for c in &ps.coordinates {
-        builder = builder.coordinate(c.get_ref());
+        builder = show(builder.coordinate(c.get_ref()), c.get_ref());
     }
     for a in &ps.angles {
-        builder = builder.angle(a.get_ref());
+        builder = show(builder.angle(a.get_ref()), a.get_ref());
     }
     for q in canonical_coordinates(ps) {
-        builder = builder.momentum(&momentum(q));
+        let p = momentum(q);
+        builder = show(builder.momentum(&p), &p);
     }
     for v in &ps.variables {
-        builder = builder.poisson(v.get_ref());
+        builder = show(builder.poisson(v.get_ref()), v.get_ref());
     }
     for p in &ps.parameters {
-        builder = builder.parameter(p.get_ref());
+        builder = show(builder.parameter(p.get_ref()), p.get_ref());
     }
     // The functions' names, which the printer must not spell with variables (`Mx`).
     builder.also_named(functions.iter().flat_map(|f| {
@@ -1279,6 +1436,15 @@ fn variables_builder(
             .flatten()
             .map(|n| n.get_ref().as_str())
     }))
+}
+
+/// A variable shown by `[phase_space] display`, or the momentum of one: its name, its forms
+/// in text and in LaTeX, and the line of its display.
+struct ShownVariable {
+    name: String,
+    text: String,
+    latex: String,
+    line: usize,
 }
 
 /// How [`Builder::declare`] calls a family.

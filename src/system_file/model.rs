@@ -74,11 +74,14 @@ pub(crate) struct PhaseSpaceModel {
     pub denominators: Vec<Spanned<String>>,
     /// Radicals by name, each with its radicand (`r = "x^2 + y^2"`: `r = √(x² + y²)`).
     pub radicals: Option<Spanned<StringTable>>,
+    /// Display names by declared name (`{ a = "ω₊" }`): how a coordinate, an angle, a
+    /// Poisson variable or a parameter prints, its input keeping the name.
+    pub display: Option<Spanned<StringTable>>,
 }
 
 /// A table of strings, each key and value with its span, in the order of the file: the
 /// `[poisson]` table (`"{M1, M2}" = "M3"`) and `[phase_space]`'s `radicals`
-/// (`{ r = "x^2 + y^2" }`).
+/// (`{ r = "x^2 + y^2" }`) and `display` (`{ a = "ω₊" }`).
 #[derive(Debug)]
 pub(crate) struct StringTable {
     pub entries: Vec<(Spanned<String>, Spanned<String>)>,

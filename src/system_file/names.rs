@@ -217,19 +217,55 @@ pub struct PrintedNames {
 impl PrintedNames {
     /// The forms of the variables of `vars`.
     pub(super) fn of_variables(vars: &VarSet) -> Self {
+        PrintedNames::of_variables_at(vars, &HashMap::new(), &[])
+    }
+
+    /// The forms of the variables of `vars` but those named in `except`, each of those of
+    /// `lines` (by name) given on that line of a file (its display, `[phase_space] display`).
+    pub(super) fn of_variables_at(
+        vars: &VarSet,
+        lines: &HashMap<String, usize>,
+        except: &[String],
+    ) -> Self {
         let mut printed = PrintedNames::default();
         for v in vars.vars() {
             let v = vars.variable(v);
-            // `a coordinate` → `the coordinate x1`.
-            let kind = v.kind().described().split_once(' ').map_or("", |k| k.1);
-            let whose = format!("the {kind} {}", v.name());
+            if except.iter().any(|e| e == v.name()) {
+                continue;
+            }
+            let whose = PrintedNames::whose_variable(v.kind(), v.name());
+            let line = lines.get(v.name()).copied();
             for form in [(Notation::Text, v.unicode()), (Notation::Latex, v.latex())] {
                 printed
                     .forms
-                    .insert((form.0, form.1.to_string()), (whose.clone(), None));
+                    .insert((form.0, form.1.to_string()), (whose.clone(), line));
             }
         }
         printed
+    }
+
+    /// Whose a variable is in messages: `the coordinate x1`, `the parameter a`.
+    pub(super) fn whose_variable(kind: trigpoly::VarKind, name: &str) -> String {
+        // `a coordinate` → `the coordinate x1`.
+        let kind = kind.described().split_once(' ').map_or("", |k| k.1);
+        format!("the {kind} {name}")
+    }
+
+    /// Takes a variable's forms, `text` and `latex` (a display's, `[phase_space] display`),
+    /// `whose` they are, given on `line`, unless a name already prints so: then why (`the
+    /// parameter b would show as ω, as the parameter omega does`).
+    pub(super) fn admit_variable(
+        &mut self,
+        whose: &str,
+        text: &str,
+        latex: &str,
+        line: usize,
+    ) -> Result<(), String> {
+        let forms = [
+            (Notation::Text, text.to_string()),
+            (Notation::Latex, latex.to_string()),
+        ];
+        self.admit_keys(whose, forms.to_vec(), Some(line), "")
     }
 
     /// How the variables and the named functions of `system` print.
@@ -322,6 +358,18 @@ impl PrintedNames {
         if let Some(latex) = &latex {
             forms.push((Notation::Latex, format!("{latex}{indices}")));
         }
+        self.admit_keys(whose, forms, line, indices)
+    }
+
+    /// Takes `forms` (with `indices` after them for a family's), `whose` they are, declared
+    /// on `line` if it has one, unless a name already has one of them: then why, in words.
+    fn admit_keys(
+        &mut self,
+        whose: &str,
+        forms: Vec<(Notation, String)>,
+        line: Option<usize>,
+        indices: &str,
+    ) -> Result<(), String> {
         for key in &forms {
             if let Some((other, at)) = self.forms.get(key) {
                 let place = at.map(|l| format!(" on line {l}")).unwrap_or_default();

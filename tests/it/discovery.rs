@@ -4027,9 +4027,11 @@ fn fock_darwin_tower_is_proved_for_all_m_and_n() {
         assert_eq!(out.status.code(), Some(0), "{text}");
         for piece in [
             "36 brackets expanded for the Fock–Darwin system (ladder K_{m,n} = W^m Z̄^n), all hold",
-            "1. computed: {W, H} = ia W holds",
-            "2. computed: {Z̄, H} = −ib Z̄ holds",
-            "Therefore: {K_{m,n}, H} = i(ma − nb) K_{m,n} for all m, n ≥ 0.",
+            "1. computed: {W, H} = i ω₊ W holds",
+            "2. computed: {Z̄, H} = −i ω₋ Z̄ holds",
+            "Therefore: {K_{m,n}, H} = i(m ω₊ − n ω₋) K_{m,n} for all m, n ≥ 0.",
+            // The file's display: `a` and `b` print as the normal-mode frequencies.
+            "λ(m, n) = i(m ω₊ − n ω₋) equals mλ(1, 0) + nλ(0, 1)",
             "2 claims in 1 file: 2 proved, 0 refuted; all as expected",
         ] {
             assert!(text.contains(piece), "{when:?}: {piece}: {text}");
@@ -4045,10 +4047,19 @@ fn fock_darwin_tower_is_proved_for_all_m_and_n() {
 /// centre `2 Re Z` and `2 Im Z`, and for every `a, b` there is none beyond `H` and `L`.
 #[test]
 fn fock_darwin_search_finds_the_resonant_integrals() {
-    let i91 = "24 p_x² p_y − 8 p_y³ + 12Mbx p_x² − 12Mbx p_y² − 24Mby p_x p_y + 18M²b²x² p_y \
-               + 36M²b²xy p_x − 18M²b²y² p_y + 27M³b³x³ − 81M³b³xy²";
-    let i92 = "8 p_x³ − 24 p_x p_y² − 24Mbx p_x p_y − 12Mby p_x² + 12Mby p_y² + 18M²b²x² p_x \
-               − 36M²b²xy p_y − 18M²b²y² p_x − 81M³b³x²y + 27M³b³y³";
+    // As printed, `b` shown as ω₋ (`[phase_space] display`), and as it reads back.
+    let i91 = "24 p_x² p_y − 8 p_y³ + 12M ω₋ x p_x² − 12M ω₋ x p_y² − 24M ω₋ y p_x p_y \
+               + 18M² ω₋² x² p_y + 36M² ω₋² xy p_x − 18M² ω₋² y² p_y + 27M³ ω₋³ x³ \
+               − 81M³ ω₋³ xy²";
+    let i91_ascii = "24*p_x^2*p_y - 8*p_y^3 + 12*M*b*x*p_x^2 - 12*M*b*x*p_y^2 \
+                     - 24*M*b*y*p_x*p_y + 18*M^2*b^2*x^2*p_y + 36*M^2*b^2*x*y*p_x \
+                     - 18*M^2*b^2*y^2*p_y + 27*M^3*b^3*x^3 - 81*M^3*b^3*x*y^2";
+    let i92 = "8 p_x³ − 24 p_x p_y² − 24M ω₋ x p_x p_y − 12M ω₋ y p_x² + 12M ω₋ y p_y² \
+               + 18M² ω₋² x² p_x − 36M² ω₋² xy p_y − 18M² ω₋² y² p_x − 81M³ ω₋³ x²y \
+               + 27M³ ω₋³ y³";
+    let i92_ascii = "8*p_x^3 - 24*p_x*p_y^2 - 24*M*b*x*p_x*p_y - 12*M*b*y*p_x^2 \
+                     + 12*M*b*y*p_y^2 + 18*M^2*b^2*x^2*p_x - 36*M^2*b^2*x*y*p_y \
+                     - 18*M^2*b^2*y^2*p_x - 81*M^3*b^3*x^2*y + 27*M^3*b^3*y^3";
     let text = normalize(&expect(
         "fd-search",
         &[
@@ -4062,7 +4073,7 @@ fn fock_darwin_search_finds_the_resonant_integrals() {
             "3 claims: 3 proved, 0 refuted",
         ],
     ));
-    assert_eq!(text.matches(" = 0 at a = 2b [I").count(), 2, "{text}");
+    assert_eq!(text.matches(" = 0 at ω₊ = 2 ω₋ [I").count(), 2, "{text}");
     // From H alone, the same two.
     let alone = run_on_hamiltonian_alone("fd-search");
     assert!(
@@ -4077,8 +4088,8 @@ fn fock_darwin_search_finds_the_resonant_integrals() {
     let vars = file.system().vars();
     let at_1_2 = brackets::Condition::new("a = 2b", vars.lookup("a").unwrap(), parse("2*b"));
     let at = |s: &str| at_1_2.apply(&parse(s)).unwrap();
-    assert_eq!(parse(i92), at("8*P_1_2"));
-    assert_eq!(parse(i91), at("-8*Q_1_2"));
+    assert_eq!(parse(i92_ascii), at("8*P_1_2"));
+    assert_eq!(parse(i91_ascii), at("-8*Q_1_2"));
     expect(
         "fd-search-known",
         &[
@@ -4096,10 +4107,14 @@ fn fock_darwin_search_finds_the_resonant_integrals() {
             &format!("I152 = {i92}"),
         ],
     ));
-    assert_eq!(four.matches(" = 0 at a = 2b [I").count(), 2, "{four}");
-    let q13 = "p_x³ p_y − p_x p_y³ + Mbx p_x³ − 3Mbx p_x p_y² − 3Mby p_x² p_y + Mby p_y³ \
-               + 4M³b³x³ p_x − 12M³b³x²y p_y − 12M³b³xy² p_x + 4M³b³y³ p_y − 16M⁴b⁴x³y \
-               + 16M⁴b⁴xy³";
+    assert_eq!(four.matches(" = 0 at ω₊ = 2 ω₋ [I").count(), 2, "{four}");
+    let q13 = "p_x³ p_y − p_x p_y³ + M ω₋ x p_x³ − 3M ω₋ x p_x p_y² − 3M ω₋ y p_x² p_y \
+               + M ω₋ y p_y³ + 4M³ ω₋³ x³ p_x − 12M³ ω₋³ x²y p_y − 12M³ ω₋³ xy² p_x \
+               + 4M³ ω₋³ y³ p_y − 16M⁴ ω₋⁴ x³y + 16M⁴ ω₋⁴ xy³";
+    let q13_ascii = "p_x^3*p_y - p_x*p_y^3 + M*b*x*p_x^3 - 3*M*b*x*p_x*p_y^2 \
+                     - 3*M*b*y*p_x^2*p_y + M*b*y*p_y^3 + 4*M^3*b^3*x^3*p_x \
+                     - 12*M^3*b^3*x^2*y*p_y - 12*M^3*b^3*x*y^2*p_x + 4*M^3*b^3*y^3*p_y \
+                     - 16*M^4*b^4*x^3*y + 16*M^4*b^4*x*y^3";
     let third = normalize(&expect(
         "fd-search-1-3",
         &[
@@ -4108,9 +4123,9 @@ fn fock_darwin_search_finds_the_resonant_integrals() {
             &format!("I212 = {q13}"),
         ],
     ));
-    assert_eq!(third.matches(" = 0 at a = 3b [I").count(), 2, "{third}");
+    assert_eq!(third.matches(" = 0 at ω₊ = 3 ω₋ [I").count(), 2, "{third}");
     let at_1_3 = brackets::Condition::new("a = 3b", vars.lookup("a").unwrap(), parse("3*b"));
-    assert_eq!(parse(q13), at_1_3.apply(&parse("-Q_1_3/4")).unwrap());
+    assert_eq!(parse(q13_ascii), at_1_3.apply(&parse("-Q_1_3/4")).unwrap());
     expect(
         "fd-search-generic",
         &[
@@ -4122,9 +4137,9 @@ fn fock_darwin_search_finds_the_resonant_integrals() {
     );
     let landau = normalize(&expect(
         "fd-search-landau",
-        &["I16 = 2 p_y + Max", "I17 = 2 p_x − May"],
+        &["I16 = 2 p_y + M ω₊ x", "I17 = 2 p_x − M ω₊ y"],
     ));
-    assert_eq!(landau.matches(" = 0 at b = 0 [I").count(), 2, "{landau}");
+    assert_eq!(landau.matches(" = 0 at ω₋ = 0 [I").count(), 2, "{landau}");
 }
 
 /// The Fock–Darwin system's algebras: at `a = 2b`, for every `M, b`, `H`, `L`, `P_{1,2}`,
@@ -4137,10 +4152,10 @@ fn fock_darwin_closes_into_a_cubic_algebra_at_1_2() {
         "fd-closure",
         &[
             "The table closes",
-            "{L, P_1_2} = −3 Q_1_2 at a = 2b [B1 proved]",
-            "{L, Q_1_2} = 3 P_1_2 at a = 2b [B2 proved]",
-            "{P_1_2, Q_1_2} = −144M³b³ L² + 36M³b H² at a = 2b [B3 proved]",
-            "32M³b³ L³ + P_1_2² + Q_1_2² = 24M³b H² L + 8M³ H³ at a = 2b [R1 proved]",
+            "{L, P_1_2} = −3 Q_1_2 at ω₊ = 2 ω₋ [B1 proved]",
+            "{L, Q_1_2} = 3 P_1_2 at ω₊ = 2 ω₋ [B2 proved]",
+            "{P_1_2, Q_1_2} = −144M³ ω₋³ L² + 36M³ ω₋ H² at ω₊ = 2 ω₋ [B3 proved]",
+            "32M³ ω₋³ L³ + P_1_2² + Q_1_2² = 24M³ ω₋ H² L + 8M³ H³ at ω₊ = 2 ω₋ [R1 proved]",
             "4 claims: 4 proved, 0 refuted",
         ],
     );
@@ -4148,17 +4163,17 @@ fn fock_darwin_closes_into_a_cubic_algebra_at_1_2() {
         "fd-closure-landau",
         &[
             "The table closes",
-            "{P_0_1, Q_0_1} = Ma at b = 0 [B3 proved]",
-            "2Ma L + 2M H = P_0_1² + Q_0_1² at b = 0 [R1 proved]",
+            "{P_0_1, Q_0_1} = M ω₊ at ω₋ = 0 [B3 proved]",
+            "2M ω₊ L + 2M H = P_0_1² + Q_0_1² at ω₋ = 0 [R1 proved]",
         ],
     );
     expect(
         "fd-closure-isotropic",
         &[
             "The table closes",
-            "{L, P_1_1} = −2 Q_1_1 at b = a [B1 proved]",
-            "{P_1_1, Q_1_1} = −8M²a² L at b = a [B3 proved]",
-            "4M²a² L² + P_1_1² + Q_1_1² = 4M² H² at b = a [R1 proved]",
+            "{L, P_1_1} = −2 Q_1_1 at ω₋ = ω₊ [B1 proved]",
+            "{P_1_1, Q_1_1} = −8M² ω₊² L at ω₋ = ω₊ [B3 proved]",
+            "4M² ω₊² L² + P_1_1² + Q_1_1² = 4M² H² at ω₋ = ω₊ [R1 proved]",
         ],
     );
 }

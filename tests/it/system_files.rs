@@ -546,7 +546,7 @@ fn bad_inputs() -> Vec<(&'static str, Vec<u8>, &'static str, Vec<&'static str>)>
                 )
                 .into_bytes(),
             "bad.toml:6:1: unknown field `hamiltonian`, expected one of `coordinates`, `angles`, \
-             `parameters`, `variables`, `denominators`, `radicals`\n 6 | hamiltonian = \
+             `parameters`, `variables`, `denominators`, `radicals`, `display`\n 6 | hamiltonian = \
              \"p_x^2/(2*M)\"\n   | ^^^^^^^^^^^\nhint: `hamiltonian` is a key of the file itself: \
              write it above the first [table] header",
             check.clone(),
@@ -1000,6 +1000,68 @@ fn bad_inputs() -> Vec<(&'static str, Vec<u8>, &'static str, Vec<&'static str>)>
                  name = \"C\"\ndisplay = \"x(t)\"\nvalue = \"p_x\"\n\n[[claim]]",
             ),
             "bad.toml:19:11: the function C would show as x(t), as the function B on line 14 does",
+            check.clone(),
+        ),
+        // `[phase_space] display` (`{ a = "ω₊" }`): a variable's display name, refused at its
+        // key or its value.
+        (
+            "display of an undeclared name",
+            base_with("parameters = [\"M\", \"omega\"]", "parameters = [\"M\", \"omega\"]\ndisplay = { c = \"γ\" }"),
+            "bad.toml:7:13: 'c' is not declared ([phase_space] display shows a coordinate, an angle, a Poisson variable or a parameter declared above it)",
+            check.clone(),
+        ),
+        (
+            "display of a momentum",
+            base_with("parameters = [\"M\", \"omega\"]", "parameters = [\"M\", \"omega\"]\ndisplay = { p_x = \"π\" }"),
+            "bad.toml:7:13: 'p_x' is the momentum of x, which shows as x does ([phase_space] display shows a coordinate, an angle, a Poisson variable or a parameter; with x = \"ξ\", p_x shows as p_ξ)",
+            check.clone(),
+        ),
+        (
+            "display of a function",
+            base_with("parameters = [\"M\", \"omega\"]", "parameters = [\"M\", \"omega\"]\ndisplay = { A = \"α\" }"),
+            "bad.toml:7:13: 'A' is a function: give it a display in its [[function]] ([phase_space] display shows a coordinate, an angle, a Poisson variable or a parameter)",
+            check.clone(),
+        ),
+        (
+            "display of a parameter empty",
+            base_with("parameters = [\"M\", \"omega\"]", "parameters = [\"M\", \"omega\"]\ndisplay = { omega = \"\" }"),
+            "bad.toml:7:21: a display name is letters, digits, primes (G1'), a bar (Z̄), subscripts (A_x), spaces and parentheses: this one is empty (leave display out to show the name)",
+            check.clone(),
+        ),
+        (
+            "display of a parameter in two words",
+            base_with("parameters = [\"M\", \"omega\"]", "parameters = [\"M\", \"omega\"]\ndisplay = { omega = \"w t\" }"),
+            "bad.toml:7:21: a variable's display is one name (ω₊, A_x, Z̄): 'w t' is several words, which beside a factor would read as a product of its own (2 w t)",
+            check.clone(),
+        ),
+        (
+            "display of a parameter that is no name",
+            base_with("parameters = [\"M\", \"omega\"]", "parameters = [\"M\", \"omega\"]\ndisplay = { omega = \"w(t)\" }"),
+            "bad.toml:7:21: a variable's display is a name, with primes, a bar or subscripts (ω₊, A_x, Z̄, G1'), which reads as one factor of a product: 'w(t)' is not",
+            check.clone(),
+        ),
+        (
+            "display of a parameter shown as another parameter",
+            base_with("parameters = [\"M\", \"omega\"]", "parameters = [\"M\", \"omega\"]\ndisplay = { omega = \"M\" }"),
+            "bad.toml:7:21: the parameter omega would show as M, as the parameter M does: give it another display",
+            check.clone(),
+        ),
+        (
+            "display of a parameter printed as another is in LaTeX",
+            base_with("parameters = [\"M\", \"omega\"]", "parameters = [\"M\", \"omega\"]\ndisplay = { M = \"x_1\", omega = \"x₁\" }"),
+            "bad.toml:7:32: the parameter omega would print as x_{1} in LaTeX, as the parameter M on line 7 does: give it another display",
+            check.clone(),
+        ),
+        (
+            "display of a parameter that names another",
+            base_with("parameters = [\"M\", \"omega\"]", "parameters = [\"M\", \"omega\"]\ndisplay = { M = \"omega\", omega = \"Ω\" }"),
+            "bad.toml:7:17: the parameter M would show as ω, which names the parameter omega: give it another display",
+            check.clone(),
+        ),
+        (
+            "display of a parameter shown as a function",
+            base_with("parameters = [\"M\", \"omega\"]", "parameters = [\"M\", \"omega\"]\ndisplay = { omega = \"A\" }"),
+            "bad.toml:10:8: the function A would show as A, as the parameter omega on line 7 does: rename one, or give it another display",
             check.clone(),
         ),
         (
@@ -3650,4 +3712,72 @@ fn an_index_spelled_as_a_variable_is_refused() {
     std::fs::write(dir.join("ok.toml"), file("theta", "m")).expect("write");
     let o = superint_in(&dir, &["expand", "ok.toml", "K_2_1"]);
     assert_eq!(o.status.code(), Some(0), "{}", text(&o.stderr));
+}
+
+/// An oscillator whose frequency `a` and coordinate `x` are shown as `ω₊` and `ξ`
+/// (`[phase_space] display`), with one claim refuted for its residual.
+const SHOWN: &str = r#"name = "shown"
+hamiltonian = "p_x^2/(2*M) + M*a^2*x^2/2"
+
+[phase_space]
+coordinates = ["x"]
+parameters = ["M", "a"]
+display = { a = "ω₊", x = "ξ" }
+
+[[function]]
+name = "A"
+value = "p_x + i*M*a*x"
+
+[[claim]]
+id = "ladder"
+claim = "{A, H} = i*a*p_x - M*a^2*x"
+
+[[claim]]
+id = "false-ladder"
+claim = "{A, H} = 0"
+expect = "refuted"
+"#;
+
+/// A display of `[phase_space]` prints wherever the name would: text (`ω₊`, the momentum
+/// `p_ξ`), LaTeX (`\omega_{+}`, `p_{\xi}`), JSON's `statement`; the input and JSON's `ascii`
+/// and `residual` keep the declared names, and the residual reads back in the file.
+#[test]
+fn a_variable_display_prints_in_every_output_and_its_ascii_reads_back() {
+    let dir = scratch("variable-display");
+    std::fs::write(dir.join("shown.toml"), SHOWN).expect("write");
+    let o = superint_in(&dir, &["check", "shown.toml", "--no-timings"]);
+    let out = text(&o.stdout);
+    assert_eq!(o.status.code(), Some(0), "{out}{}", text(&o.stderr));
+    for piece in [
+        "{A, H} = i ω₊ p_ξ − M ω₊² ξ",
+        "M ω₊² ξ²/2",
+        "residual lhs − rhs = i ω₊ p_ξ − M ω₊² ξ",
+        "{A, H} = 0",
+    ] {
+        assert!(out.contains(piece), "{piece}: {out}");
+    }
+    assert!(!out.contains("p_x") && !out.contains("ω₊ = a"), "{out}");
+    let o = superint_in(&dir, &["check", "shown.toml", "--format", "latex"]);
+    let latex = text(&o.stdout);
+    assert!(latex.contains(r"\omega_{+}"), "{latex}");
+    assert!(latex.contains(r"p_{\xi}"), "{latex}");
+    assert!(!latex.contains('ω') && !latex.contains('₊'), "{latex}");
+    let o = superint_in(&dir, &["check", "shown.toml", "--format", "json"]);
+    let v: Value = serde_json::from_slice(&o.stdout).expect("JSON");
+    let claims = v["claims"].as_array().expect("claims");
+    assert_eq!(claims[0]["statement"], "{A, H} = i ω₊ p_ξ − M ω₊² ξ");
+    assert_eq!(claims[0]["ascii"], "{A, H} = i*a*p_x - M*a^2*x");
+    let residual = claims[1]["residual"].as_str().expect("a residual");
+    assert!(
+        residual.contains("a") && !residual.contains('ω'),
+        "{residual}"
+    );
+    // The residual, in the file's names, reads back: {A, H} equals it.
+    let again =
+        format!("{SHOWN}\n[[claim]]\nid = \"residual\"\nclaim = \"{{A, H}} = {residual}\"\n");
+    std::fs::write(dir.join("again.toml"), again).expect("write");
+    let o = superint_in(&dir, &["check", "again.toml", "--no-timings"]);
+    let out = text(&o.stdout);
+    assert_eq!(o.status.code(), Some(0), "{out}{}", text(&o.stderr));
+    assert!(out.contains("[residual proved]"), "{out}");
 }

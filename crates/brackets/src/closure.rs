@@ -764,8 +764,12 @@ struct PrintingRing {
 fn printing_ring(vars: &Vars, generators: &[NamedFunction]) -> Result<PrintingRing, EngineError> {
     let mut builder = VarSet::builder();
     for v in vars.vars() {
-        if vars.variable(v).kind() == VarKind::Parameter {
-            builder = builder.parameter(vars.variable(v).name());
+        let p = vars.variable(v);
+        if p.kind() == VarKind::Parameter {
+            // Printed as the system prints it (a file's display, `ω₊` for `a`).
+            builder = builder
+                .parameter(p.name())
+                .printed_as(p.unicode(), p.latex());
         }
     }
     let mut shown = builder.clone();

@@ -107,6 +107,9 @@ pub struct Variable {
     /// The unicode form with its Greek letters spelled out (`p_theta` for `p_θ`), when it has
     /// any: a third spelling that [`VarSet::lookup`] takes.
     spelled_out: Option<String>,
+    /// The name in ASCII ([`Variable::ascii`]), which a display ([`VarSetBuilder::shown_as`])
+    /// leaves as it is: a fourth spelling that [`VarSet::lookup`] takes.
+    ascii: String,
     kind: VarKind,
     /// Whether text sets the variable apart from its neighbours in a product, as a word, even
     /// when its name is one letter: the generators of an algebra (`−ω² L`, `4 G1`).
@@ -125,10 +128,7 @@ impl Variable {
     /// (`theta`, `p_theta`), which reads back. A name with other letters outside ASCII has no
     /// such form and is its own.
     pub fn ascii(&self) -> &str {
-        match self.spelled_out.as_deref() {
-            Some(spelled) if !self.name.is_ascii() && spelled.is_ascii() => spelled,
-            _ => &self.name,
-        }
+        &self.ascii
     }
     /// The name as printed in text (`p_θ`, `ω`).
     pub fn unicode(&self) -> &str {
@@ -156,6 +156,7 @@ impl Variable {
         self.name == spelling
             || self.unicode == spelling
             || self.spelled_out.as_deref() == Some(spelling)
+            || self.ascii == spelling
     }
     /// Every spelling [`VarSet::lookup`] finds the variable by: its name, its unicode form,
     /// and that form with its Greek letters spelled out.
@@ -164,6 +165,7 @@ impl Variable {
             Some(self.name.as_str()),
             Some(self.unicode.as_str()),
             self.spelled_out.as_deref(),
+            Some(self.ascii.as_str()),
         ]
         .into_iter()
         .flatten()
@@ -676,9 +678,17 @@ impl VarSetBuilder {
     /// Declares a variable of the given kind.
     pub fn variable(mut self, name: &str, kind: VarKind) -> Self {
         let (unicode, latex) = render_name(name);
+        let spelled_out = spell_out(&unicode);
+        // A name declared in Greek letters (`θ`, `p_θ`) is written in ASCII spelled out
+        // (`theta`, `p_theta`), which reads back; one with other letters beyond ASCII is its own.
+        let ascii = match &spelled_out {
+            Some(spelled) if !name.is_ascii() && spelled.is_ascii() => spelled.clone(),
+            _ => name.to_string(),
+        };
         self.vars.push(Variable {
             name: name.to_string(),
-            spelled_out: spell_out(&unicode),
+            spelled_out,
+            ascii,
             unicode,
             latex,
             kind,
@@ -715,6 +725,7 @@ impl VarSetBuilder {
         self.vars.push(Variable {
             name: format!("({ascii})"),
             spelled_out: None,
+            ascii: format!("({ascii})"),
             unicode: format!("({unicode})"),
             latex: format!("({latex})"),
             kind: VarKind::Denominator,
@@ -740,9 +751,20 @@ impl VarSetBuilder {
     /// [`shown_forms`]); otherwise, or with nothing
     /// declared, changes nothing. Its ASCII form stays its name, which reads back.
     /// [`VarSetBuilder::build`] refuses two variables shown alike.
-    pub fn shown_as(mut self, display: &str) -> Self {
-        if let (Some(v), Some((unicode, latex))) = (self.vars.last_mut(), shown_forms(display)) {
-            (v.unicode, v.latex) = (unicode, latex);
+    pub fn shown_as(self, display: &str) -> Self {
+        match shown_forms(display) {
+            Some((unicode, latex)) => self.printed_as(&unicode, &latex),
+            None => self,
+        }
+    }
+    /// Prints the variable declared last as `unicode` in text and `latex` in LaTeX, as
+    /// [`VarSetBuilder::shown_as`] does with the forms of a display name, where the caller has
+    /// made them (a momentum `p_ω₊` of a coordinate shown as `ω₊`, `p_{\omega_{+}}`); with
+    /// nothing declared, changes nothing. Its ASCII form stays its name, which reads back, and
+    /// [`VarSet::lookup`] finds it by `unicode` too.
+    pub fn printed_as(mut self, unicode: &str, latex: &str) -> Self {
+        if let Some(v) = self.vars.last_mut() {
+            (v.unicode, v.latex) = (unicode.to_string(), latex.to_string());
             v.spelled_out = spell_out(&v.unicode);
         }
         self

@@ -31,7 +31,16 @@ pub fn display_forms(display: &str) -> Option<(String, String)> {
     let bars_end_pieces = base.split('_').all(|p| {
         !p.trim_end_matches('\u{304}').contains('\u{304}') && p.matches('\u{304}').count() <= 1
     });
-    if !bars_end_pieces || !is_identifier(&base.replace('\u{304}', "")) {
+    // A subscript sign stands after what it is written under (`ω₊`, `ω₋`), as a subscript
+    // digit does.
+    let unsigned: String = base
+        .chars()
+        .filter(|&c| c != '\u{304}' && !SUBSCRIPT_SIGNS.contains(c))
+        .collect();
+    let signs_follow = base
+        .split('_')
+        .all(|p| !p.starts_with(|c| SUBSCRIPT_SIGNS.contains(c)));
+    if !bars_end_pieces || !signs_follow || !is_identifier(&unsigned) {
         return None;
     }
     let (unicode, latex) = render_name(base);
@@ -381,10 +390,25 @@ const LETTERS: &[(char, &str)] = &[('ħ', r"{\hbar}"), ('ℓ', r"{\ell}")];
 /// The subscript digits `₀`–`₉`.
 const SUBSCRIPT_DIGITS: &str = "₀₁₂₃₄₅₆₇₈₉";
 
-/// The ASCII digit a subscript digit writes (`₁` → `1`).
+/// The subscript signs `₊`, `₋`, which a display name may have (`ω₊`, `ω₋`, the normal-mode
+/// frequencies), written under what stands before them as a subscript digit is; no variable's
+/// name has one.
+const SUBSCRIPT_SIGNS: &str = "₊₋";
+
+/// The ASCII a subscript digit or sign writes (`₁` → `1`, `₊` → `+`).
 fn subscript_digit(c: char) -> Option<char> {
+    match c {
+        '₊' => return Some('+'),
+        '₋' => return Some('-'),
+        _ => {}
+    }
     let k = SUBSCRIPT_DIGITS.chars().position(|d| d == c)?;
     char::from_digit(k as u32, 10)
+}
+
+/// Whether `c` is a subscript digit or sign.
+fn is_subscript(c: char) -> bool {
+    subscript_digit(c).is_some()
 }
 
 /// A piece's LaTeX letter by letter, for a word no rule above writes whole: each Greek letter,
@@ -399,7 +423,7 @@ fn letter_by_letter(p: &str) -> String {
     while let Some(c) = chars.next() {
         if let Some(digit) = subscript_digit(c) {
             digits.push(digit);
-            if chars.peek().is_some_and(|n| SUBSCRIPT_DIGITS.contains(*n)) {
+            if chars.peek().is_some_and(|&n| is_subscript(n)) {
                 continue;
             }
             match body.is_empty() || body.ends_with('_') {
@@ -437,8 +461,8 @@ impl Piece {
                 return Piece::symbol(uni, tex);
             }
         }
-        // Subscript digits: `q₁` → `q_{1}`.
-        let letters = p.trim_end_matches(|c| SUBSCRIPT_DIGITS.contains(c));
+        // Subscript digits and signs: `q₁` → `q_{1}`, `ω₊` → `\omega_{+}`.
+        let letters = p.trim_end_matches(is_subscript);
         if !letters.is_empty() && letters.len() < p.len() {
             let digits: String = p[letters.len()..]
                 .chars()
@@ -596,6 +620,30 @@ mod tests {
         ] {
             assert_eq!(display_forms(display), None, "{display}");
         }
+    }
+
+    /// The subscript signs of a display name (`ω₊`, `ω₋`, the normal-mode frequencies) are
+    /// LaTeX subscripts, as subscript digits are; a sign with nothing before it is no display,
+    /// and no name has one.
+    #[test]
+    fn a_display_name_may_have_subscript_signs() {
+        for (display, latex) in [
+            ("ω₊", r"\omega_{+}"),
+            ("ω₋", r"\omega_{-}"),
+            ("a₊", "a_{+}"),
+            ("k_x₋", "k_{x_{-}}"),
+        ] {
+            assert_eq!(
+                display_forms(display),
+                Some((display.into(), latex.into())),
+                "{display}"
+            );
+        }
+        for display in ["₊", "a_₊", "₋a", "Z̄₊"] {
+            assert_eq!(display_forms(display), None, "{display}");
+        }
+        assert_eq!(latex_unwritable("ω₊"), None);
+        assert_eq!(BadName::of("ω₊"), Some(BadName::Malformed));
     }
 
     #[test]
