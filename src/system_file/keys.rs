@@ -18,6 +18,7 @@ const HOMES: [(&str, &[&str]); 6] = [
             "variables",
             "denominators",
             "radicals",
+            "display",
         ],
     ),
     (
@@ -54,7 +55,9 @@ pub(super) fn unknown_key_hint(message: &str) -> Option<String> {
     if expected.contains(&"value") && key == "id" {
         return Some("a function or a family is named by its `name`".into());
     }
-    if let Some((home, _)) = HOMES.iter().find(|(_, keys)| keys.contains(&key)) {
+    // `display` is a key of [phase_space] and of each [[function]] and [[family]]: a
+    // misplaced one is sent to the functions' (the last home that has it).
+    if let Some((home, _)) = HOMES.iter().rev().find(|(_, keys)| keys.contains(&key)) {
         return Some(format!("`{key}` is a key of {home}"));
     }
     let nearest = expected
