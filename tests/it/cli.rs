@@ -3896,11 +3896,13 @@ fn a_search_at_a_condition_shows_h_as_it_searches_it() {
         0,
     );
     assert!(
-        out.contains("    H = p_x²/(2M) + p_y²/(2M) − bx p_y/2 + by p_x/2 + 9Mb²x²/8 + 9Mb²y²/8\n"),
+        out.contains(
+            "    H = p_x²/(2M) + p_y²/(2M) − ω₋ x p_y/2 + ω₋ y p_x/2 + 9M ω₋² x²/8 + 9M ω₋² y²/8\n"
+        ),
         "{out}"
     );
     assert!(
-        out.contains("{I, H} = 0 for the 4 basis elements at a = 2b"),
+        out.contains("{I, H} = 0 for the 4 basis elements at ω₊ = 2 ω₋"),
         "{out}"
     );
     assert!(!out.contains("the other"), "{out}");

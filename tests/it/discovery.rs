@@ -4210,7 +4210,7 @@ fn a_search_counts_the_degree_of_h_without_its_negative_powers_of_the_parameters
     let three = search("3", "3");
     assert!(
         three.contains(
-            "Note: M H (H without its negative powers of M, b) has degree 4 in M, b, past the \
+            "Note: M H (H without its negative powers of M, ω₋) has degree 4 in M, ω₋, past the \
              space's 3 (--parameters-degree), so H is not among the integrals found"
         ),
         "{three}"
@@ -4228,7 +4228,7 @@ fn a_search_counts_the_degree_of_h_without_its_negative_powers_of_the_parameters
     let square = search("4", "4");
     assert!(
         square.contains(
-            "Note: (M H)² lies in the space but for its degree 8 in M, b, past the space's 4 \
+            "Note: (M H)² lies in the space but for its degree 8 in M, ω₋, past the space's 4 \
              (--parameters-degree): integrals of degree 4 in the momenta may need a larger one."
         ),
         "{square}"
