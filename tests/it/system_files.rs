@@ -3380,7 +3380,7 @@ fn bracket_writes_the_bracket_in_the_family_instances_it_mentions() {
     let fd = "systems/fock-darwin.toml";
     let text = run(&["bracket", fd, "L", "P_1_2"], 0);
     assert!(
-        text.contains("− 9M³b³xy²/8\n                 = −3 Q_{1,2}\n"),
+        text.contains("− 9M³ ω₋³ xy²/8\n                 = −3 Q_{1,2}\n"),
         "{text}"
     );
     let json = |file: &str, f: &str, g: &str| -> Value {
@@ -3410,13 +3410,13 @@ fn bracket_writes_the_bracket_in_the_family_instances_it_mentions() {
     assert_eq!(bar["ascii"], "i*Kbar_1_2");
     assert_eq!(written(fd, "L", "P_5_5")["ascii"], "-10*Q_5_5");
     assert_eq!(written(fd, "x*y", "P_1_2"), Value::Null);
-    assert_eq!(written(fd, "Z", "P_1_2")["text"], "2iMa Z̄ W + 2iMb Z̄ W");
+    assert_eq!(written(fd, "Z", "P_1_2")["text"], "2iM ω₊ Z̄ W + 2iM ω₋ Z̄ W");
 }
 
 /// A refuted claim that mentions family instances has its residual written in the instances
 /// of every family at their indices too, where it is a polynomial in them and the functions:
-/// the Fock–Darwin `P_{1,2}` conserved off the resonance (`(2b − a) Q_{1,2}`) or at the other
-/// one, `b = 2a` (`3a Q_{1,2}`, which was `3ia Z² W̄/2 − 3ia Z̄² W/2`); each reads back, under
+/// the Fock–Darwin `P_{1,2}` conserved off the resonance (`(2 ω₋ − ω₊) Q_{1,2}`) or at the other
+/// one, `ω₋ = 2 ω₊` (`3 ω₊ Q_{1,2}`, which was `3i ω₊ Z² W̄/2 − …`); each reads back, under
 /// the claim's condition, to the residual. A residual that is none is written as before.
 #[test]
 fn a_refuted_residual_is_written_in_the_instances_the_claim_mentions() {
@@ -3450,7 +3450,7 @@ fn a_refuted_residual_is_written_in_the_instances_the_claim_mentions() {
     // W conserved at b = 0 is ia W, in the functions, as before.
     assert_eq!(claim("false-landau")["residual_in_functions"], "i*a*W");
     let text = run(&["check", fd], 0);
-    assert!(text.contains("= 3a Q_{1,2}\n"), "{text}");
+    assert!(text.contains("= 3 ω₊ Q_{1,2}\n"), "{text}");
 }
 
 /// A residual is written in the functions where the parameters at 1, the values the linear
