@@ -8,7 +8,7 @@
 use brackets::closure::{expressed_in, ClosureOptions};
 use brackets::search::GENERIC_VALUES;
 use brackets::{Condition, NamedFunction};
-use trigpoly::syntax::{Expr as Tree, ExprKind};
+use trigpoly::syntax::Expr as Tree;
 use trigpoly::{Expr, Rational, Var, VarKind};
 
 use super::scope::instance_of;
@@ -128,37 +128,14 @@ impl LoadedSystem {
         &self,
         trees: impl IntoIterator<Item = &'t Tree>,
     ) -> Vec<(i64, i64)> {
-        fn walk(families: &[super::Family], tree: &Tree, out: &mut Vec<(i64, i64)>) {
-            let mut name = |n: &str| {
-                if let Some((_, m, n)) = instance_of(families, n) {
-                    if !out.contains(&(m, n)) {
-                        out.push((m, n));
-                    }
-                }
-            };
-            match &tree.kind {
-                ExprKind::Integer(_) => {}
-                ExprKind::Name(n) => name(n),
-                // A name before parentheses multiplies them (`K_1_1(x)`).
-                ExprKind::Call(f, _, args) => {
-                    name(f);
-                    args.iter().for_each(|a| walk(families, a, out));
-                }
-                ExprKind::Neg(a) => walk(families, a, out),
-                ExprKind::Add(a, b)
-                | ExprKind::Sub(a, b)
-                | ExprKind::Mul(a, b)
-                | ExprKind::Div(a, b)
-                | ExprKind::Pow(a, b)
-                | ExprKind::Bracket(a, b) => {
-                    walk(families, a, out);
-                    walk(families, b, out);
+        let mut out = Vec::new();
+        // A name before parentheses multiplies them (`K_1_1(x)`): the called names too.
+        for (name, _) in trees.into_iter().flat_map(|t| t.names_with_calls(true)) {
+            if let Some((_, m, n)) = instance_of(&self.families, name) {
+                if !out.contains(&(m, n)) {
+                    out.push((m, n));
                 }
             }
-        }
-        let mut out = Vec::new();
-        for tree in trees {
-            walk(&self.families, tree, &mut out);
         }
         out
     }

@@ -58,25 +58,37 @@ impl Expr {
     /// The names the expression uses, with their spans, in source order (a call's arguments'
     /// names, not the function's).
     pub fn names(&self) -> Vec<(&str, Span)> {
-        fn walk<'e>(e: &'e Expr, out: &mut Vec<(&'e str, Span)>) {
+        self.names_with_calls(false)
+    }
+
+    /// The names the expression uses, with their spans, in source order, and the names it
+    /// calls too when `calls` (`K_1_1` of `K_1_1(x)`, where a name before parentheses may
+    /// multiply them).
+    pub fn names_with_calls(&self, calls: bool) -> Vec<(&str, Span)> {
+        fn walk<'e>(e: &'e Expr, calls: bool, out: &mut Vec<(&'e str, Span)>) {
             match &e.kind {
                 ExprKind::Integer(_) => {}
                 ExprKind::Name(n) => out.push((n, e.span)),
-                ExprKind::Neg(a) => walk(a, out),
+                ExprKind::Neg(a) => walk(a, calls, out),
                 ExprKind::Add(a, b)
                 | ExprKind::Sub(a, b)
                 | ExprKind::Mul(a, b)
                 | ExprKind::Div(a, b)
                 | ExprKind::Pow(a, b)
                 | ExprKind::Bracket(a, b) => {
-                    walk(a, out);
-                    walk(b, out);
+                    walk(a, calls, out);
+                    walk(b, calls, out);
                 }
-                ExprKind::Call(_, _, args) => args.iter().for_each(|a| walk(a, out)),
+                ExprKind::Call(f, span, args) => {
+                    if calls {
+                        out.push((f, *span));
+                    }
+                    args.iter().for_each(|a| walk(a, calls, out));
+                }
             }
         }
         let mut out = Vec::new();
-        walk(self, &mut out);
+        walk(self, calls, &mut out);
         out
     }
 }
