@@ -10,7 +10,7 @@
 
 use crate::render::tex::Names;
 use crate::system_file::Caller;
-use trigpoly::{Expr, Factored};
+use trigpoly::{Expr, Factored, Style};
 
 mod results;
 
@@ -279,6 +279,26 @@ impl Equation {
             in_functions: None,
             factored: None,
         }
+    }
+
+    /// The right side restated below it in the notation of `style`: in the named functions,
+    /// or else as its common factor times the rest (the two are never both set).
+    pub fn restated(&self, style: Style) -> Option<String> {
+        restated(self.in_functions.as_ref(), self.factored.as_ref(), style)
+    }
+}
+
+/// `in_functions` in the notation of `style`, or else `factored`: how an equation's right side
+/// or a residual is restated below it.
+pub(crate) fn restated(
+    in_functions: Option<&Expr>,
+    factored: Option<&Factored>,
+    style: Style,
+) -> Option<String> {
+    match (in_functions, factored) {
+        (Some(e), _) => Some(e.render(style)),
+        (None, Some(f)) => Some(f.render(style)),
+        (None, None) => None,
     }
 }
 

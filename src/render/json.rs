@@ -337,13 +337,13 @@ fn proof(p: &ProofResult, section: u32) -> Value {
     })
 }
 
-/// An expression in the three notations (its cos/sin normal form computed once).
 /// A factored form in the three notations.
 fn factored(f: &Factored) -> Value {
     let [text, ascii, latex] = [Style::Unicode, Style::Ascii, Style::Latex].map(|s| f.render(s));
     json!({ "text": text, "ascii": ascii, "latex": latex })
 }
 
+/// An expression in the three notations (its cos/sin normal form computed once).
 fn expr(e: &Expr) -> Value {
     let [text, ascii, latex] = e.render_each([Style::Unicode, Style::Ascii, Style::Latex]);
     json!({ "text": text, "ascii": ascii, "latex": latex })

@@ -296,11 +296,8 @@ fn claim_rows(c: &ClaimResult, names: &Names, column: usize) -> Vec<String> {
             rows.push(r"&\quad + \dots".into());
             rows.extend(excerpt_rows(e));
         }
-        if let Some(f) = &c.residual_in_functions {
-            rows.extend(long_rows("", "=", f, CLAIM_ROW));
-        }
-        if let Some(f) = c.residual_factored() {
-            rows.extend(broken_rows("&= ", &f.render(Style::Latex), CLAIM_ROW));
+        if let Some(f) = c.residual_restated(Style::Latex) {
+            rows.extend(broken_rows(" &= ", &f, CLAIM_ROW));
         }
     }
     if let (ClaimKind::Nonvanishing, Some(w)) = (c.kind, &c.witness) {
@@ -376,11 +373,8 @@ fn equations(out: &mut Vec<String>, eq: &Equations, names: &Names) {
         .zip(&lhs)
         .flat_map(|(l, lhs)| {
             let mut rows = long_rows(lhs, "=", &l.rhs, room);
-            if let Some(f) = &l.in_functions {
-                rows.extend(long_rows("", "=", f, room));
-            }
-            if let Some(f) = &l.factored {
-                rows.extend(broken_rows("&= ", &f.render(Style::Latex), room));
+            if let Some(f) = l.restated(Style::Latex) {
+                rows.extend(broken_rows(" &= ", &f, room));
             }
             rows
         })

@@ -130,11 +130,8 @@ fn equations(eq: &Equations) -> String {
     }
     for l in &eq.lines {
         let mut line = format!("- {}", code(&format!("{} = {}", l.lhs, l.rhs)));
-        if let Some(f) = &l.in_functions {
-            line.push_str(&format!(" = {}", code(&f.to_string())));
-        }
-        if let Some(f) = &l.factored {
-            line.push_str(&format!(" = {}", code(&f.to_string())));
+        if let Some(f) = l.restated(Style::Unicode) {
+            line.push_str(&format!(" = {}", code(&f)));
         }
         lines.push(line);
     }
@@ -157,11 +154,8 @@ fn claim(c: &ClaimResult) -> String {
         if let Some(e) = &c.excerpt {
             line.push_str(&format!(" + … ({})", e.describe()));
         }
-        if let Some(f) = &c.residual_in_functions {
-            line.push_str(&format!(" = {}", code(&f.to_string())));
-        }
-        if let Some(f) = c.residual_factored() {
-            line.push_str(&format!(" = {}", code(&f.to_string())));
+        if let Some(f) = c.residual_restated(Style::Unicode) {
+            line.push_str(&format!(" = {}", code(&f)));
         }
     }
     match (c.kind, &c.witness) {

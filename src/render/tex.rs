@@ -342,11 +342,10 @@ fn char_math(c: char) -> Option<String> {
     if let Some(d) = SUBSCRIPTS.chars().position(|s| s == c) {
         return Some(format!("{{}}_{{{d}}}"));
     }
-    if c == '⁻' {
-        return Some("{}^{-}".into());
-    }
-    // Script signs, as in the frequencies `ω₊`, `ω₋` (they were written by their code points).
+    // Script signs, as in `x⁻¹` and the frequencies `ω₊`, `ω₋` (`₊`, `₋`, `⁺` were written by
+    // their code points).
     if let Some(s) = match c {
+        '⁻' => Some("{}^{-}"),
         '⁺' => Some("{}^{+}"),
         '₊' => Some("{}_{+}"),
         '₋' => Some("{}_{-}"),

@@ -262,11 +262,8 @@ fn equations(out: &mut Vec<String>, eq: &Equations) {
         } else {
             (wrap_sum(&line, WRAP, &indent), 4 + lw + 1)
         };
-        let at = " ".repeat(equals);
-        if let Some(f) = &l.in_functions {
-            lines.extend(wrap_sum(&format!("{at}= {f}"), WRAP, &format!("{at}  ")));
-        }
-        if let Some(f) = &l.factored {
+        if let Some(f) = l.restated(Style::Unicode) {
+            let at = " ".repeat(equals);
             lines.extend(wrap_sum(&format!("{at}= {f}"), WRAP, &format!("{at}  ")));
         }
         lines
@@ -311,16 +308,9 @@ fn verdict_line(out: &mut Vec<String>, c: &ClaimResult) {
         if let Some(e) = &c.excerpt {
             out.extend(wrap(&format!("      ({})", e.describe()), WRAP, "       "));
         }
-        // Under the residual's `=`, as a derivation continues.
-        let indent = " ".repeat(width("      residual lhs − rhs "));
-        if let Some(f) = &c.residual_in_functions {
-            out.extend(wrap_sum(
-                &format!("{indent}= {f}"),
-                WRAP,
-                &format!("{indent}  "),
-            ));
-        }
-        if let Some(f) = c.residual_factored() {
+        if let Some(f) = c.residual_restated(Style::Unicode) {
+            // Under the residual's `=`, as a derivation continues.
+            let indent = " ".repeat(width("      residual lhs − rhs "));
             out.extend(wrap_sum(
                 &format!("{indent}= {f}"),
                 WRAP,

@@ -232,6 +232,16 @@ impl ClaimResult {
         }
     }
 
+    /// The residual restated below it in the notation of `style`: in the system's functions,
+    /// or else factored ([`ClaimResult::residual_factored`]).
+    pub fn residual_restated(&self, style: Style) -> Option<String> {
+        super::restated(
+            self.residual_in_functions.as_ref(),
+            self.residual_factored().as_ref(),
+            style,
+        )
+    }
+
     /// Whether [`ClaimResult::excerpt_residual`] may cut it: its residual has more than `monomials`
     /// terms.
     pub(super) fn is_longer_than(&self, monomials: usize) -> bool {
