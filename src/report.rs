@@ -296,9 +296,25 @@ pub(crate) fn restated(
     style: Style,
 ) -> Option<String> {
     match (in_functions, factored) {
-        (Some(e), _) => Some(e.render(style)),
+        (Some(e), _) => Some(written_in_functions(e, style)),
         (None, Some(f)) => Some(f.render(style)),
         (None, None) => None,
+    }
+}
+
+/// A polynomial in named functions in the notation of `style`, as the paper writes one: with
+/// the factor its terms share in front of the parentheses and the functions in it after them,
+/// `−(2ω − 3Ω) Q_{2,3}` for `−2ω Q_{2,3} + 3Ω Q_{2,3}`, where the factor has a function or a
+/// parameter in it and what is left is short ([`Factored::render_functions_last`]); else term
+/// by term (a number alone in front, `8(32ω²αβ H_x + …)`, says little about an algebra).
+pub(crate) fn written_in_functions(e: &Expr, style: Style) -> String {
+    let factored = (e.len() <= 2 * FACTORED_TERMS)
+        .then(|| e.factored())
+        .flatten()
+        .filter(|f| f.terms() <= FACTORED_TERMS && !f.is_numeric());
+    match factored {
+        Some(f) => f.render_functions_last(style),
+        None => e.render(style),
     }
 }
 

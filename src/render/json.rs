@@ -32,7 +32,9 @@
 //!                          "residual_excerpt" is set the terms of its leading monomials),
 //!                 "residual_in_functions": ascii | null   (the residual as a polynomial
 //!                          of degree ≤ 3 in H and the system's named functions, proved for
-//!                          every value of the parameters, where it is one: "-4*H*L/M"),
+//!                          every value of the parameters, where it is one: "-4*H*L/M", with
+//!                          the factor its terms share as the text writes it:
+//!                          "-(2*omega - 3*Omega)*Q_2_3"),
 //!                 "residual_factored": ascii | null   (the residual printed whole as the
 //!                          factor its terms share times the rest, where it has no form in the
 //!                          functions and its terms share a factor: "2*F*(x*p_x + y*p_y)/M"),
@@ -47,7 +49,8 @@
 //!   "equations": [ { "section", "caption", "lines": [ { "lhs", "text", "ascii", "latex",
 //!                 "in_functions": { "text", "ascii", "latex" } | null   (the right side as a
 //!                          polynomial of degree ≤ 3 in H and the named functions, proved, where
-//!                          `bracket` finds it one),
+//!                          `bracket` finds it one, as the text writes it:
+//!                          "-(2*omega - 3*Omega)*Q_2_3"),
 //!                 "factored": { "text", "ascii", "latex" } | null   (the right side as the
 //!                          factor its terms share times the rest, where `bracket` or `expand`
 //!                          finds one: "F*(x*p_x + y*p_y)/M") } ] } ],
@@ -104,8 +107,8 @@ use trigpoly::{Expr, Factored, Style, VarKind};
 
 use super::{plain, Options};
 use crate::report::{
-    ClaimKind, ClaimOutcome, ClaimResult, ClosureFacts, Entry, Equations, Facts, ParameterFacts,
-    ProofResult, RankResult, Report, SearchFacts, TableResult, TowerResult,
+    written_in_functions, ClaimKind, ClaimOutcome, ClaimResult, ClosureFacts, Entry, Equations,
+    Facts, ParameterFacts, ProofResult, RankResult, Report, SearchFacts, TableResult, TowerResult,
 };
 use brackets::{Entry as TableEntry, UpperBound};
 
@@ -264,7 +267,7 @@ fn equations(eq: &Equations, section: u32) -> Value {
             let mut v = expr(&l.rhs);
             let line = v.as_object_mut().expect("an object");
             line.insert("lhs".into(), json!(l.lhs));
-            line.insert("in_functions".into(), l.in_functions.as_ref().map_or(Value::Null, expr));
+            line.insert("in_functions".into(), l.in_functions.as_ref().map_or(Value::Null, in_functions));
             line.insert("factored".into(), l.factored.as_ref().map_or(Value::Null, factored));
             v
         }).collect::<Vec<_>>(),
@@ -349,6 +352,14 @@ fn expr(e: &Expr) -> Value {
     json!({ "text": text, "ascii": ascii, "latex": latex })
 }
 
+/// A polynomial in named functions as the text shows it, with the factor its terms share:
+/// `-(2*omega - 3*Omega)*Q_2_3` ([`written_in_functions`]).
+fn in_functions(e: &Expr) -> Value {
+    let [text, ascii, latex] =
+        [Style::Unicode, Style::Ascii, Style::Latex].map(|s| written_in_functions(e, s));
+    json!({ "text": text, "ascii": ascii, "latex": latex })
+}
+
 fn claim(c: &ClaimResult, section: u32, seconds: Value) -> Value {
     json!({
         "id": c.id,
@@ -365,7 +376,7 @@ fn claim(c: &ClaimResult, section: u32, seconds: Value) -> Value {
         "expect": c.expect.name(),
         "meets_expectation": c.meets_expectation(),
         "residual": c.residual.as_ref().map(|r| r.render(Style::Ascii)),
-        "residual_in_functions": c.residual_in_functions.as_ref().map(|r| r.render(Style::Ascii)),
+        "residual_in_functions": c.residual_in_functions.as_ref().map(|r| written_in_functions(r, Style::Ascii)),
         "residual_factored": c.residual_factored().map(|r| r.render(Style::Ascii)),
         "residual_excerpt": c.excerpt.map(|e| json!({
             "shown_monomials": e.shown,

@@ -3567,7 +3567,7 @@ fn display_names_of_several_words_take_parentheses_only_where_they_would_read_ot
         0,
     );
     assert!(
-        bracket.contains("= −6ω K² + 12iω (Re K) (Im K)\n"),
+        bracket.contains("= −6ω(K² − 2i (Re K) (Im K))\n"),
         "{bracket}"
     );
     let table = run(

@@ -3400,9 +3400,18 @@ fn bracket_writes_the_bracket_in_the_family_instances_it_mentions() {
     assert_eq!(v["equations"][0]["lines"][0]["ascii"], line["ascii"]);
     let rotor = "systems/harmonic-rotor.toml";
     let written = |file: &str, f: &str, g: &str| json(file, f, g)["in_functions"].clone();
+    // Off the resonance, the instance's coefficient collected as the paper writes it
+    // (`{P_{2,3}, F1} = −(2ω − 3Ω) Q_{2,3}`), in a form that reads back.
+    let off = written(rotor, "P_2_3", "H");
+    assert_eq!(off["text"], "−(2ω − 3 Ω) Q_{2,3}");
+    assert_eq!(off["latex"], r"-\left(2 \omega - 3 \Omega\right) Q_{2,3}");
+    assert_eq!(off["ascii"], "-(2*omega - 3*Omega)*Q_2_3");
+    let ascii = off["ascii"].as_str().expect("ASCII");
+    let out = run(&["expand", rotor, "--format", "json", "--", ascii], 0);
+    let v: Value = serde_json::from_str(&out).expect("JSON");
     assert_eq!(
-        written(rotor, "P_2_3", "H")["text"],
-        "−2ω Q_{2,3} + 3 Ω Q_{2,3}"
+        v["equations"][0]["lines"][0]["ascii"],
+        json(rotor, "P_2_3", "H")["ascii"]
     );
     let bar = written(rotor, "L", "Kbar_1_2");
     assert_eq!(bar["text"], "i K̄_{1,2}");
@@ -3410,12 +3419,12 @@ fn bracket_writes_the_bracket_in_the_family_instances_it_mentions() {
     assert_eq!(bar["ascii"], "i*Kbar_1_2");
     assert_eq!(written(fd, "L", "P_5_5")["ascii"], "-10*Q_5_5");
     assert_eq!(written(fd, "x*y", "P_1_2"), Value::Null);
-    assert_eq!(written(fd, "Z", "P_1_2")["text"], "2iM ω₊ Z̄ W + 2iM ω₋ Z̄ W");
+    assert_eq!(written(fd, "Z", "P_1_2")["text"], "2iM(ω₊ + ω₋) Z̄ W");
 }
 
 /// A refuted claim that mentions family instances has its residual written in the instances
 /// of every family at their indices too, where it is a polynomial in them and the functions:
-/// the Fock–Darwin `P_{1,2}` conserved off the resonance (`(2 ω₋ − ω₊) Q_{1,2}`) or at the other
+/// the Fock–Darwin `P_{1,2}` conserved off the resonance (`−(ω₊ − 2 ω₋) Q_{1,2}`) or at the other
 /// one, `ω₋ = 2 ω₊` (`3 ω₊ Q_{1,2}`, which was `3i ω₊ Z² W̄/2 − …`); each reads back, under
 /// the claim's condition, to the residual. A residual that is none is written as before.
 #[test]
@@ -3431,7 +3440,7 @@ fn a_refuted_residual_is_written_in_the_instances_the_claim_mentions() {
             .clone()
     };
     for (id, written) in [
-        ("false-off-resonance", "-a*Q_1_2 + 2*b*Q_1_2"),
+        ("false-off-resonance", "-(a - 2*b)*Q_1_2"),
         ("false-resonance", "3*a*Q_1_2"),
     ] {
         let c = claim(id);
@@ -3511,7 +3520,7 @@ fn a_residual_is_written_in_the_functions_where_the_parameters_at_one_are_specia
     assert_eq!(written("split.toml"), ["Hx^2"]);
     // `{L, H} = (a − b) xy`: zero at a = b = 1, and at other values a multiple of F that
     // homogeneity cannot lift (a and b have one weight), found with a and b kept symbolic.
-    assert_eq!(written("weights.toml"), ["a*F - b*F"]);
+    assert_eq!(written("weights.toml"), ["(a - b)*F"]);
 }
 
 /// Names run together that are not declared read as the product of the declared names they

@@ -5,14 +5,17 @@
 //! it on the same side of the fraction bar: the power they share above it, their common
 //! denominator below it (`β²(x p_y + y p_x)/(x³y³)`). What is left has coprime integer
 //! coefficients (Gaussian integers over Q(i)) and no denominator; a sum whose rest would have
-//! one (`p_x²/(2M) + Mω²x²/2`, with `M` on both sides) has no such form.
+//! one (`p_x²/(2M) + Mω²x²/2`, with `M` on both sides) has no such form. A sum of imaginary
+//! terms has `i` in its factor (`2i(x + 3y)`). A polynomial in named functions writes the
+//! functions of its factor after the parentheses, `−(2ω − 3Ω) Q_{2,3}`
+//! ([`Factored::render_functions_last`]).
 
 use std::fmt;
 
 use super::{render_terms, write_term, Inner, Names, Style};
 use crate::number::{Coefficient, GaussianRational, Rational};
 use crate::poly::{CosSinTerm, Poly, TrigMonomial};
-use crate::varset::Vars;
+use crate::varset::{VarKind, Vars};
 
 /// A sum as `factor · (rest)`, found by [`Poly::factored`].
 ///
@@ -63,13 +66,18 @@ impl Factored {
             false => first.coeff.re.is_negative(),
         };
         let content = if leads_negative { -&content } else { content };
+        // `i(ω₊ − ω₋) W`: a sum of imaginary terms has `i` in its factor.
+        let imaginary = terms.iter().all(|t| t.coeff.re.is_zero());
         if content.abs().is_one() && powers.iter().all(|&e| e == 0) {
             return None;
         }
         let rest = terms
             .iter()
             .map(|t| CosSinTerm {
-                coeff: GaussianRational::new(&t.coeff.re / &content, &t.coeff.im / &content),
+                coeff: match imaginary {
+                    true => GaussianRational::from(&t.coeff.im / &content),
+                    false => GaussianRational::new(&t.coeff.re / &content, &t.coeff.im / &content),
+                },
                 exps: t.exps.iter().zip(&powers).map(|(e, p)| e - p).collect(),
                 trig: t.trig.clone(),
             })
@@ -78,7 +86,10 @@ impl Factored {
             return None;
         }
         let factor = CosSinTerm {
-            coeff: GaussianRational::from(content),
+            coeff: match imaginary {
+                true => GaussianRational::new(Rational::zero(), content),
+                false => GaussianRational::from(content),
+            },
             exps: powers,
             trig: TrigMonomial {
                 powers: vec![(0, 0); first.trig.powers.len()],
@@ -96,6 +107,11 @@ impl Factored {
         self.rest.len()
     }
 
+    /// Whether the factor is a number alone, `8(…)`, with no variable in it.
+    pub fn is_numeric(&self) -> bool {
+        self.factor.exps.iter().all(|&e| e == 0)
+    }
+
     /// The factored form in the notation of `style`: `F(x p_x + y p_y)/M`,
     /// `\frac{F \left(x p_{x} + y p_{y}\right)}{M}`, `F*(x*p_x + y*p_y)/M`.
     pub fn render(&self, style: Style) -> String {
@@ -111,6 +127,78 @@ impl Factored {
             terms: self.rest.len(),
         };
         write_term(&mut out, 0, &names, &self.factor, None, Some(inner), style);
+        out
+    }
+
+    /// The factored form of a polynomial in named functions (the functions its coordinates,
+    /// the parameters its coefficients), as the paper writes one: the factor's functions after
+    /// the parentheses, its number and parameters before them, `−(2ω − 3Ω) Q_{2,3}`,
+    /// `2(ω + Ω) H/M`. Where the factor has no function, the same as [`Factored::render`]:
+    /// `2ω(H + L)`, `(H + 2L)/M`.
+    ///
+    /// ```
+    /// use trigpoly::{Poly, Rational, Style, VarSet};
+    /// let vars = VarSet::builder()
+    ///     .parameter("omega").parameter("M")
+    ///     .coordinate("Q").word().coordinate("H").word()
+    ///     .build().unwrap();
+    /// let e = Poly::<Rational>::parse(&vars, "-omega*Q + 2*M*Q").unwrap();
+    /// let factored = e.factored().unwrap();
+    /// assert_eq!(factored.render_functions_last(Style::Unicode), "−(ω − 2M) Q");
+    /// assert_eq!(factored.render_functions_last(Style::Ascii), "-(omega - 2*M)*Q");
+    /// let e = Poly::<Rational>::parse(&vars, "omega*H/(3*M) + omega*Q/M").unwrap();
+    /// assert_eq!(e.factored().unwrap().render_functions_last(Style::Unicode), "ω(3 Q + H)/(3M)");
+    /// ```
+    pub fn render_functions_last(&self, style: Style) -> String {
+        let is_parameter: Vec<bool> = (self.vars.vars())
+            .map(|v| self.vars.variable(v).kind() == VarKind::Parameter)
+            .collect();
+        let factor = &self.factor;
+        let has_function = (factor.exps.iter().zip(&is_parameter)).any(|(&e, &p)| e > 0 && !p);
+        if !has_function {
+            return self.render(style);
+        }
+        // `−2ω`: the sign, the numerator and the parameters above the bar, before the
+        // parentheses; `Q_{2,3}/(3M)`: the functions and every denominator after them.
+        let (re, im) = (&factor.coeff.re, &factor.coeff.im);
+        let content = if re.is_zero() { im } else { re };
+        let numerator = Rational::from(content.numer());
+        let front = CosSinTerm {
+            coeff: match re.is_zero() {
+                true => GaussianRational::new(Rational::zero(), numerator),
+                false => GaussianRational::from(numerator),
+            },
+            exps: (factor.exps.iter().zip(&is_parameter))
+                .map(|(&e, &p)| if p && e > 0 { e } else { 0 })
+                .collect(),
+            trig: factor.trig.clone(),
+        };
+        let back = CosSinTerm {
+            coeff: GaussianRational::from(&Rational::one() / &Rational::from(content.denom())),
+            exps: (factor.exps.iter().zip(&is_parameter))
+                .map(|(&e, &p)| if p && e > 0 { 0 } else { e })
+                .collect(),
+            trig: factor.trig.clone(),
+        };
+        let rest = render_terms(&self.vars, &self.rest, style);
+        let every: Vec<CosSinTerm> = [&front, &back]
+            .into_iter()
+            .chain(&self.rest)
+            .cloned()
+            .collect();
+        let names = Names::new(&self.vars, &every, style);
+        let mut out = String::new();
+        let inner = Inner {
+            text: &rest,
+            terms: self.rest.len(),
+        };
+        write_term(&mut out, 0, &names, &front, None, Some(inner), style);
+        out.push_str(match style {
+            Style::Ascii => "*",
+            _ => " ",
+        });
+        let start = out.len();
+        write_term(&mut out, start, &names, &back, None, None, style);
         out
     }
 }

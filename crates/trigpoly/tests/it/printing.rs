@@ -874,6 +874,93 @@ fn a_sum_prints_as_the_factor_its_terms_share_times_the_rest() {
     );
 }
 
+/// A sum of imaginary terms has `i` in its factor: `2i(x + 3y)`, `i(ω − Ω)`.
+#[test]
+fn an_imaginary_sum_has_i_in_its_factor() {
+    let vars = plane();
+    factors_as(
+        &vars,
+        "2*i*x + 6*i*y",
+        ["2i(x + 3y)", r"2 i \left(x + 3 y\right)", "2*i*(x + 3*y)"],
+    );
+    factors_as(
+        &vars,
+        "-i*omega*p_x/M + i*omega*p_y/M",
+        [
+            "−iω(p_x − p_y)/M",
+            r"-\frac{i \omega \left(p_{x} - p_{y}\right)}{M}",
+            "-i*omega*(p_x - p_y)/M",
+        ],
+    );
+}
+
+/// A polynomial in named functions (coordinates that are words, the parameters its
+/// coefficients) writes the functions it shares after the parentheses, as the paper does:
+/// `−(2ω − 3Ω) Q`, `iM(ω + Ω) Z̄ W/2`; a factor of parameters alone stays in front.
+#[test]
+fn a_polynomial_in_functions_writes_their_common_factor_last() {
+    let vars = VarSet::builder()
+        .parameter("omega")
+        .parameter("M")
+        .coordinate("Q")
+        .word()
+        .coordinate("Omega")
+        .shown_as("Ω")
+        .word()
+        .coordinate("H")
+        .word()
+        .coordinate("L")
+        .word()
+        .build()
+        .unwrap();
+    let cases = [
+        (
+            "-2*omega*Q + 3*Omega*Q",
+            [
+                "−(2ω − 3 Ω) Q",
+                r"-\left(2 \omega - 3 \Omega\right) Q",
+                "-(2*omega - 3*Omega)*Q",
+            ],
+        ),
+        (
+            "i*M*omega*Q*L/2 + i*M*Omega*Q*L/2",
+            [
+                "iM(ω + Ω) Q L/2",
+                r"i M \left(\omega + \Omega\right) \frac{Q L}{2}",
+                "i*M*(omega + Omega)*Q*L/2",
+            ],
+        ),
+        (
+            "72*M^3*H*L^2 - 96*M^3*L^3",
+            [
+                "24M³(3 H − 4 L) L²",
+                r"24 M^{3} \left(3 H - 4 L\right) L^{2}",
+                "24*M^3*(3*H - 4*L)*L^2",
+            ],
+        ),
+        (
+            "2*omega*H + 2*omega*L",
+            [
+                "2ω(H + L)",
+                r"2 \omega \left(H + L\right)",
+                "2*omega*(H + L)",
+            ],
+        ),
+    ];
+    for (src, expected) in cases {
+        let f: G = p(&vars, src);
+        let factored = f.factored().expect("a common factor");
+        let shown =
+            [Style::Unicode, Style::Latex, Style::Ascii].map(|s| factored.render_functions_last(s));
+        assert_eq!(shown, expected, "{src}");
+        assert_eq!(
+            p::<GaussianRational>(&vars, expected[2]),
+            f,
+            "{src}: the ASCII parses back"
+        );
+    }
+}
+
 /// A sum has no factored form where its terms share only `±1`, where a variable stands on
 /// both sides of the bar (a Hamiltonian's `p_x²/(2M) + Mω²x²/2`), or where it has one term.
 #[test]
@@ -884,6 +971,7 @@ fn a_sum_whose_terms_share_no_factor_has_no_factored_form() {
         "-x - y",
         "p_x^2/(2*M) + M*omega^2*x^2/2",
         "x/M + y/M^2 + 1",
+        "i*x - i*y",
         "3*M*x*p_y",
         "0",
     ] {
