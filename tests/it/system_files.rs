@@ -3748,7 +3748,7 @@ expect = "refuted"
 "#;
 
 /// A display of `[phase_space]` prints wherever the name would: text (`ω₊`, the momentum
-/// `p_ξ`), LaTeX (`\omega_{+}`, `p_{\xi}`), JSON's `statement`; the input and JSON's `ascii`
+/// `p_ξ`, spaced as its own letters ask), LaTeX (`\omega_{+}`, `p_{\xi}`), JSON's `statement`; the input and JSON's `ascii`
 /// and `residual` keep the declared names, and the residual reads back in the file.
 #[test]
 fn a_variable_display_prints_in_every_output_and_its_ascii_reads_back() {
@@ -3759,7 +3759,9 @@ fn a_variable_display_prints_in_every_output_and_its_ascii_reads_back() {
     assert_eq!(o.status.code(), Some(0), "{out}{}", text(&o.stderr));
     for piece in [
         "{A, H} = i ω₊ p_ξ − M ω₊² ξ",
-        "M ω₊² ξ²/2",
+        // `2M`, not `2 M`: the text writes `ξ`, never the `x` that beside `i` would spell
+        // `xi`, one of ξ's input spellings.
+        "H = p_ξ²/(2M) + M ω₊² ξ²/2",
         "residual lhs − rhs = i ω₊ p_ξ − M ω₊² ξ",
         "{A, H} = 0",
     ] {

@@ -405,11 +405,13 @@ impl Names {
                 .collect(),
             order: order.iter().map(|v| v.index()).collect(),
             angles: vars.angles().map(|v| v.index()).collect(),
+            // What text writes is each variable's unicode form (`ξ` for a coordinate `x`
+            // shown so): its other spellings (`x`, `xi`) never stand side by side in it.
             all_wide: style == Style::Unicode
                 && vars.juxtaposition_is_ambiguous(
                     vars.vars()
                         .filter(|v| terms.iter().any(|t| t.exps[v.index()] != 0))
-                        .flat_map(|v| vars.variable(v).spellings()),
+                        .map(|v| vars.variable(v).unicode()),
                 ),
         }
     }
