@@ -3,11 +3,14 @@
 //! residual (`= −4 H L/M`) and `bracket` under a bracket. Where the bracket's arguments or
 //! the claim mention family instances, the instances of every family at their indices are
 //! functions too ([`LoadedSystem::written_in_functions_and_instances`]): `{L, P_{1,2}} =
-//! −3 Q_{1,2}` of the Fock–Darwin file.
+//! −3 Q_{1,2}` of the Fock–Darwin file. Under each integral a search of a file shows, the
+//! instances that are integrals at its condition and no larger than it
+//! ([`LoadedSystem::integrals_in_functions_and_instances`]): `I91 = −8 Q_{1,2}`.
 
 use brackets::closure::{expressed_in, ClosureOptions};
 use brackets::search::GENERIC_VALUES;
 use brackets::{Condition, NamedFunction};
+use rayon::prelude::*;
 use trigpoly::syntax::Expr as Tree;
 use trigpoly::{Expr, Rational, Var, VarKind};
 
@@ -36,6 +39,22 @@ const MAX_MONOMIALS: u128 = 231;
 /// coefficients in the parameters, and the most monomials (products of the functions' and the
 /// parameters' monomials) the search may take.
 const SYMBOLIC_SEARCHES: [(u32, usize); 2] = [(2, 2_000), (4, 10_000)];
+
+/// The largest index sum `m + n` of the family instances tried for a search's integrals
+/// ([`LoadedSystem::integrals_in_functions_and_instances`]).
+const MAX_INDEX_SUM: i64 = 8;
+
+/// The most family instances expanded (and their brackets with `H` formed) for a search's
+/// integrals, all of them together.
+const MAX_INSTANCES_TRIED: usize = 60;
+
+/// The most integrals a search's report restates, each by a linear algebra of its own (a few
+/// milliseconds): one that shows more (the basis of a large space, of hundreds or thousands)
+/// restates none.
+const MAX_INTEGRALS: usize = 32;
+
+/// The most family instances among the functions for one of a search's integrals.
+const MAX_INSTANCES_PER_INTEGRAL: usize = 8;
 
 /// The most terms of an expression that is sought so: a longer one (a tower's residual, of a
 /// million terms) is read as it is, not written into rows for the linear algebra.
@@ -122,6 +141,120 @@ impl LoadedSystem {
         self.written_in(e, condition, Reach::WithSymbolicParameters, indices)
     }
 
+    /// Each of `integrals`, integrals of `H` (at `condition`) as `superint search` finds
+    /// them, as a polynomial in `H`, the file's functions and the instances of its families
+    /// that may take part in it, where it is one: `I91 = −8 Q_{1,2}` for the Fock–Darwin
+    /// search at `a = 2b`. The instances are those at indices `m, n ≥ 0` that are integrals
+    /// themselves at `condition` (their bracket with `H` vanishes there) and of no larger
+    /// degree than the integral in the coordinates, the momenta, the Poisson variables and
+    /// the trigonometric order, each kind on its own: a product `Q_{1,2} L` may take part,
+    /// a larger instance may not. Every index of a family adds at least one to the degree or
+    /// the order of its instances (powers of ladder functions times `e^{−inθ}`, as in every
+    /// family of `systems/`), so `m + n` goes up to the largest integral's degree and order
+    /// together (at most 8), and at most 60 instances are expanded for all the integrals; an
+    /// integral is sought among its first 8 (lowest `m + n` first) and the functions, as
+    /// [`LoadedSystem::written_in_functions_and_instances`] seeks an expression, and alone
+    /// among the functions where the instances lowered the degree and found nothing. `None`
+    /// where there is none, or an integral has more than 5 000 terms, and for every one of
+    /// more than 32 integrals (a basis of hundreds, each integral a linear algebra of its
+    /// own: a search's report that shows so many restates none). Each form found is
+    /// proved for every value of the parameters, so that it expands back to the integral.
+    ///
+    /// ```
+    /// use superint::system_file::{load, LimitsOverride};
+    ///
+    /// let fd = load("systems/fock-darwin.toml", &LimitsOverride::default())?;
+    /// let when = fd.condition("a = 2*b")?;
+    /// let found = fd.parse("8*P_1_2")?;
+    /// let written = fd.integrals_in_functions_and_instances(&[found], Some(&when));
+    /// assert_eq!(written[0].as_ref().expect("a polynomial").to_string(), "8 P_{1,2}");
+    /// # Ok::<(), superint::system_file::FileError>(())
+    /// ```
+    pub fn integrals_in_functions_and_instances(
+        &self,
+        integrals: &[Expr],
+        condition: Option<&Condition>,
+    ) -> Vec<Option<Expr>> {
+        if integrals.len() > MAX_INTEGRALS {
+            return vec![None; integrals.len()];
+        }
+        let functions = self.generators();
+        // The largest degree and order together, which bounds `m + n`.
+        let largest = integrals
+            .iter()
+            .map(|e| degrees(e).iter().sum::<i64>())
+            .max()
+            .unwrap_or(0);
+        let pool = self.integral_instances(condition, largest.min(MAX_INDEX_SUM), &functions);
+        integrals
+            .par_iter()
+            .map(|e| {
+                if e.len() > MAX_TERMS {
+                    return None;
+                }
+                let bound = degrees(e);
+                let instances = pool
+                    .iter()
+                    .filter(|(_, d)| d.iter().zip(&bound).all(|(d, b)| d <= b))
+                    .take(MAX_INSTANCES_PER_INTEGRAL)
+                    .map(|(f, _)| f.clone())
+                    .collect();
+                let reach = Reach::WithSymbolicParameters;
+                self.written_with(e, condition, reach, functions.clone(), instances)
+            })
+            .collect()
+    }
+
+    /// The instances of the families at `m, n ≥ 0`, `m + n ≤ max_sum` (lowest sum first, at
+    /// most [`MAX_INSTANCES_TRIED`] expanded) that are integrals at `condition`, with their
+    /// [`degrees`] there: those that cannot be expanded, equal one of `generators` or an
+    /// instance before them, or are no function of the phase space there, are left out.
+    fn integral_instances(
+        &self,
+        condition: Option<&Condition>,
+        max_sum: i64,
+        generators: &[NamedFunction],
+    ) -> Vec<(NamedFunction, [i64; 4])> {
+        let h = self.system.hamiltonian();
+        let at = |e: Expr| match condition {
+            Some(c) => c.apply(&e).ok(),
+            None => Some(e),
+        };
+        let mut found: Vec<(NamedFunction, [i64; 4])> = Vec::new();
+        let pairs = (0..=max_sum).flat_map(|sum| (0..=sum).map(move |m| (m, sum - m)));
+        let instances = pairs.flat_map(|(m, n)| (0..self.families.len()).map(move |k| (k, m, n)));
+        for (k, m, n) in instances.take(MAX_INSTANCES_TRIED) {
+            let Ok(value) = self.family_instance(k, m, n) else {
+                continue;
+            };
+            let known = generators
+                .iter()
+                .chain(found.iter().map(|(f, _)| f))
+                .any(|g| g.expr == value);
+            if known {
+                continue;
+            }
+            let Some(there) = at(value.clone()) else {
+                continue;
+            };
+            let d = degrees(&there);
+            // Zero, a constant or a function of the parameters alone there.
+            if d.iter().all(|&d| d == 0) {
+                continue;
+            }
+            // `{K, H} = 0` at the condition, decided exactly.
+            let flow = self.system.bracket(&value, h).ok().and_then(at);
+            if !flow.is_some_and(|f| f.vanishes().unwrap_or(false)) {
+                continue;
+            }
+            let family = &self.families[k];
+            let name = format!("{}_{m}_{n}", family.name);
+            let display = format!("{}_{{{m},{n}}}", family.display);
+            found.push((NamedFunction::new(&name, &display, value), d));
+        }
+        found
+    }
+
     /// The index pairs of the family instances that `trees` name (`P_1_2` → `(1, 2)`, braces
     /// already rewritten), each once, in order of first mention.
     pub(crate) fn mentioned_indices<'t>(
@@ -194,6 +327,20 @@ impl LoadedSystem {
         }
         let functions = self.generators();
         let instances = self.instances_at(indices, &functions);
+        self.written_with(e, condition, reach, functions, instances)
+    }
+
+    /// [`LoadedSystem::written_in`] among `functions` (`H` and the file's) and `instances`:
+    /// with the instances first, then, where that found nothing at a lower degree, the
+    /// functions alone.
+    fn written_with(
+        &self,
+        e: &Expr,
+        condition: Option<&Condition>,
+        reach: Reach,
+        functions: Vec<NamedFunction>,
+        instances: Vec<NamedFunction>,
+    ) -> Option<Expr> {
         let degree = |g: &[NamedFunction], lowest| {
             let lengths: Vec<usize> = g.iter().map(|g| g.expr.len()).collect();
             searchable_degree(&lengths, lowest)
@@ -310,6 +457,19 @@ impl LoadedSystem {
     }
 }
 
+/// The degrees of `e` in the coordinates, the momenta and the Poisson variables, and its
+/// trigonometric order: what an instance must not pass to take part in writing an integral
+/// ([`LoadedSystem::integrals_in_functions_and_instances`]).
+fn degrees(e: &Expr) -> [i64; 4] {
+    [
+        VarKind::Coordinate,
+        VarKind::Momentum,
+        VarKind::Poisson,
+        VarKind::Angle,
+    ]
+    .map(|kind| e.total_degree(&[kind]).unwrap_or(0))
+}
+
 /// How far [`LoadedSystem::written_in`] searches.
 #[derive(Clone, Copy, PartialEq, Eq)]
 pub(crate) enum Reach {
@@ -334,7 +494,7 @@ enum Search {
 
 #[cfg(test)]
 mod tests {
-    use crate::system_file::{load_str, LimitsOverride};
+    use crate::system_file::{load, load_str, LimitsOverride};
 
     /// Degree 3 for up to 9 short functions, 2 for more or for longer ones, none where even
     /// the squares would pass the term products allowed.
@@ -352,6 +512,35 @@ mod tests {
         assert_eq!(searchable_degree(&[4, 2, 10_626], instances), Some(1));
         assert_eq!(searchable_degree(&[5; 10], instances), Some(2));
         assert_eq!(searchable_degree(&[usize::MAX, 3], instances), None);
+    }
+
+    /// The instances that may restate the Fock–Darwin integrals at `a = 2b`, up to
+    /// `m + n = 3`, are the integrals there: the parts of `K_{1,2}`, not `K_{1,1}` nor
+    /// `K_{0,0} = 1`; for every `a, b`, none. An integral that is no polynomial in the
+    /// functions and those instances (the rotor's `Re(a_y e^{−iθ})` at 1:1, `W e^{−iθ}` with
+    /// `Z e^{−iθ}`) has no form.
+    #[test]
+    fn the_instances_tried_are_integrals_at_the_condition() {
+        let fd = load("systems/fock-darwin.toml", &LimitsOverride::default()).unwrap();
+        let when = fd.condition("a = 2*b").unwrap();
+        let generators = fd.generators();
+        let pool = fd.integral_instances(Some(&when), 3, &generators);
+        let names: Vec<&str> = pool.iter().map(|(f, _)| f.name.as_str()).collect();
+        assert_eq!(names, ["K_1_2", "P_1_2", "Q_1_2"]);
+        assert_eq!(pool[1].1, [3, 3, 0, 0], "degrees of P_{{1,2}}");
+        assert!(fd.integral_instances(None, 3, &generators).is_empty());
+        let rotor = load("systems/harmonic-rotor.toml", &LimitsOverride::default()).unwrap();
+        let resonance = rotor.condition("p_theta = I*omega").unwrap();
+        let mode = rotor
+            .parse("p_y*cos(theta) + M*omega*y*sin(theta)")
+            .unwrap();
+        let paper = rotor.parse("2*P_1_1").unwrap();
+        let written = rotor.integrals_in_functions_and_instances(&[mode, paper], Some(&resonance));
+        let written: Vec<Option<String>> = written
+            .iter()
+            .map(|w| w.as_ref().map(|w| w.to_string()))
+            .collect();
+        assert_eq!(written, [None, Some("2 P_{1,1}".to_string())]);
     }
 
     /// A file with `L` and `B = (1 + x + y + p_x + p_y)^k`.
