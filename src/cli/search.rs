@@ -10,7 +10,8 @@ use brackets::search::{SearchOptions, SearchSpace, DEFAULT_MAX_PRODUCTS};
 use brackets::System;
 use clap::Args;
 use superint::discovery::{
-    builtin_system, parse_condition, parse_fixed, parse_known, parse_symbolic, search_report_for,
+    builtin_system, file_search_report, parse_condition, parse_fixed, parse_known, parse_symbolic,
+    search_report_for,
 };
 use superint::render::render;
 use superint::report::{with_article, Report};
@@ -397,12 +398,13 @@ fn search_and_print(job: &SearchJob) -> anyhow::Result<bool> {
             options.known.push((k.to_string(), e));
         }
     }
-    let (report, _) = search_report_for(
-        &subject.the_name(),
-        subject.system(),
-        &options,
-        Caller::CommandLine,
-    )
+    // A file's integrals are restated in its functions and family instances too.
+    let (report, _) = match &subject {
+        Subject::File(file) => file_search_report(file, &options, Caller::CommandLine),
+        Subject::Builtin(name, system) => {
+            search_report_for(&with_article(name), system, &options, Caller::CommandLine)
+        }
+    }
     .context("searching for integrals")?;
     let report = subject.tag(report);
     emit(&render(&report, job.output.format, &job.output.options))?;

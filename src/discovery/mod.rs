@@ -29,7 +29,7 @@ pub use closure::{closure_report, closure_report_for};
 pub use input::{
     builtin_system, parse_condition, parse_fixed, parse_known, parse_symbolic, BUILTIN_SYSTEMS,
 };
-pub use search::{complex_form, search_report, search_report_for};
+pub use search::{complex_form, file_search_report, search_report, search_report_for};
 
 use brackets::search::parameter_text;
 use trigpoly::{Rational, Style, Var, VarSet};

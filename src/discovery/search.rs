@@ -13,7 +13,7 @@ use crate::report::{
     Section, SummaryKind,
 };
 
-use crate::system_file::Caller;
+use crate::system_file::{Caller, LoadedSystem};
 
 use super::{agreeing, off_one_note, parameter_facts, parameter_names, proved_for_every, HeldAt};
 
@@ -520,12 +520,66 @@ pub fn search_report_for(
     options: &SearchOptions,
     caller: Caller,
 ) -> Result<(Report, SearchResult), EngineError> {
+    search_report_with(name, system, options, caller, None)
+}
+
+/// [`search_report_for`] of a system file's system, with each integral it shows restated
+/// below it as a polynomial in `H`, the file's functions and the instances of its families
+/// that are integrals too, where it is one
+/// ([`LoadedSystem::integrals_in_functions_and_instances`]): what `superint search FILE`
+/// prints, `I91 = −8 Q_{1,2}` for the Fock–Darwin search at `a = 2b`.
+///
+/// ```
+/// use superint::brackets::search::{SearchOptions, SearchSpace};
+/// use superint::discovery::file_search_report;
+/// use superint::render::{render, Format, Options};
+/// use superint::system_file::{load, Caller, LimitsOverride};
+///
+/// let fd = load("systems/fock-darwin.toml", &LimitsOverride::default())?;
+/// let mut options = SearchOptions::new(SearchSpace::new(3, 3, 0).parameters_degree(6));
+/// options.condition = Some(fd.condition("a = 2*b")?);
+/// options.symbolic = ["M", "b"].map(|p| fd.system().vars().lookup(p).unwrap()).to_vec();
+/// options.new_only = true;
+/// let (report, _) = file_search_report(&fd, &options, Caller::Program)?;
+/// let text = render(&report, Format::Text, &Options::reproducible());
+/// assert!(text.contains("= −8 Q_{1,2}") && text.contains("= 8 P_{1,2}"));
+/// # Ok::<(), Box<dyn std::error::Error>>(())
+/// ```
+pub fn file_search_report(
+    file: &LoadedSystem,
+    options: &SearchOptions,
+    caller: Caller,
+) -> Result<(Report, SearchResult), EngineError> {
+    let condition = options.condition.as_ref();
+    let restate =
+        |integrals: &[Expr]| file.integrals_in_functions_and_instances(integrals, condition);
+    search_report_with(
+        &file.the_name(),
+        file.system(),
+        options,
+        caller,
+        Some(&restate),
+    )
+}
+
+/// How a search's shown integrals are restated below them: each as a polynomial in named
+/// functions, where it is one.
+type Restate<'a> = dyn Fn(&[Expr]) -> Vec<Option<Expr>> + 'a;
+
+/// [`search_report_for`], with the shown integrals restated by `restate` where one is given.
+fn search_report_with(
+    name: &str,
+    system: &System,
+    options: &SearchOptions,
+    caller: Caller,
+    restate: Option<&Restate<'_>>,
+) -> Result<(Report, SearchResult), EngineError> {
     let start = Instant::now();
     let r = search(system, options)?;
     let shared = Shared::new(system, options, &r, caller);
     let sections = vec![
         shared.search_section(system, options, &r)?,
-        shared.basis_section(&r)?,
+        shared.basis_section(&r, restate)?,
     ];
     let when = r
         .condition
@@ -725,7 +779,11 @@ impl Shared {
 
     /// Section 2: the basis (or the new part; with symbolic parameters, its generators) as
     /// written, their complex forms, and a proof of each, with one for the rest.
-    fn basis_section(&self, r: &SearchResult) -> Result<Section, EngineError> {
+    fn basis_section(
+        &self,
+        r: &SearchResult,
+        restate: Option<&Restate<'_>>,
+    ) -> Result<Section, EngineError> {
         let mut entries = Vec::new();
         entries.extend(self.generators_note(r));
         if let Some(n) = &r.new {
@@ -740,7 +798,10 @@ impl Shared {
         // terms with the least powers of its radicals (`2β/(xr) − 2βr/(xy²)` is
         // `−2βx/(y²r)`).
         let written = written_forms(r, &self.shown)?;
-        entries.push(self.shown_equations(r, &written));
+        // Each in the file's functions and family instances too, where it is a polynomial
+        // in them.
+        let restated = restate.map(|f| f(&written)).unwrap_or_default();
+        entries.push(self.shown_equations(r, &written, &restated));
         entries.extend(self.complex_forms(r));
         entries.extend(self.integral_claims(r, &written));
         entries.extend(self.rest_proved(r));
@@ -785,8 +846,14 @@ impl Shared {
         )))
     }
 
-    /// The shown integrals as `written`, labelled, or that there are none to show.
-    fn shown_equations(&self, r: &SearchResult, written: &[Expr]) -> Entry {
+    /// The shown integrals as `written`, labelled, each with its form in named functions
+    /// from `restated` where it has one, or that there are none to show.
+    fn shown_equations(
+        &self,
+        r: &SearchResult,
+        written: &[Expr],
+        restated: &[Option<Expr>],
+    ) -> Entry {
         if self.shown.is_empty() {
             return Entry::Text(
                 "None: the known integrals generate every integral in the space.".into(),
@@ -802,7 +869,11 @@ impl Shared {
                 .shown
                 .iter()
                 .zip(written)
-                .map(|(&i, w)| Equation::new(&self.label(i), w.clone()))
+                .enumerate()
+                .map(|(k, (&i, w))| Equation {
+                    in_functions: restated.get(k).cloned().flatten(),
+                    ..Equation::new(&self.label(i), w.clone())
+                })
                 .collect(),
         })
     }

@@ -2524,8 +2524,11 @@ fn gravity_rotor_integrals_divided_by_omega_squared_are_generated() {
     for expected in [
         "Known integrals in the space: H, F2, Ω, L', G1'.",
         "the generated ones span 22 of the 24 dimensions",
-        "New integrals: I15 = p_y² + M²ω²y² + 2M²gy I24 = ω²x² p_y² − 2ω²xy p_x p_y − \
-         2gx p_x p_y + ω²y² p_x² + 2gy p_x² − M²g²x²",
+        // Each restated in the file's functions, those that are no integrals among them.
+        "New integrals: I15 = p_y² + M²ω²y² + 2M²gy \
+         = Mω L' + 2M H − 2M F2 − M G2' − Z' Z̄'/2 \
+         I24 = ω²x² p_y² − 2ω²xy p_x p_y − 2gx p_x p_y + ω²y² p_x² + 2gy p_x² − M²g²x² \
+         = −ω² L² + 2ω² L L' − 4 G1² + 8 G1 G1' − 4 G1'²",
     ] {
         assert!(text.contains(expected), "{text}");
     }
@@ -4068,8 +4071,9 @@ fn fock_darwin_search_finds_the_resonant_integrals() {
             "≤ 0: 28, ≤ 1: 56, ≤ 2: 90, ≤ 3: 126.",
             "Known integrals in the space: H, L.",
             "the generated ones span 124 of the 126 dimensions",
-            &format!("I91 = {i91}"),
-            &format!("I92 = {i92}"),
+            // Each restated in the file's family instances, below it.
+            &format!("I91 = {i91} = −8 Q_{{1,2}}"),
+            &format!("I92 = {i92} = 8 P_{{1,2}}"),
             "3 claims: 3 proved, 0 refuted",
         ],
     ));
@@ -4120,7 +4124,7 @@ fn fock_darwin_search_finds_the_resonant_integrals() {
         &[
             "(a parameter's multiple of an integral counts apart from it): 273.",
             "the generated ones span 271 of the 273 dimensions",
-            &format!("I212 = {q13}"),
+            &format!("I212 = {q13} = −Q_{{1,3}}/4"),
         ],
     ));
     assert_eq!(third.matches(" = 0 at ω₊ = 3 ω₋ [I").count(), 2, "{third}");
@@ -4137,9 +4141,97 @@ fn fock_darwin_search_finds_the_resonant_integrals() {
     );
     let landau = normalize(&expect(
         "fd-search-landau",
-        &["I16 = 2 p_y + M ω₊ x", "I17 = 2 p_x − M ω₊ y"],
+        &[
+            "I16 = 2 p_y + M ω₊ x = −2 Q_{0,1}",
+            "I17 = 2 p_x − M ω₊ y = 2 P_{0,1}",
+        ],
     ));
     assert_eq!(landau.matches(" = 0 at ω₋ = 0 [I").count(), 2, "{landau}");
+}
+
+/// The arguments of the named command, with `extra` after them.
+fn arguments(name: &str, extra: &[&str]) -> Vec<String> {
+    let command = COMMANDS
+        .iter()
+        .find(|c| c.0 == name)
+        .unwrap_or_else(|| panic!("no command {name}"))
+        .1;
+    let mut args = words(command);
+    args.remove(0);
+    args.extend(extra.iter().map(|a| a.to_string()));
+    args
+}
+
+/// A search of a system file writes each integral it shows in the file's functions and the
+/// instances of its families that are integrals at its condition, where it is a polynomial in
+/// them, in every format: the Fock–Darwin integrals at `a = 2b` are `−8 Q_{1,2}` and
+/// `8 P_{1,2}` (what docs/results.md §21 once noted by hand), and each form read back and
+/// expanded at the condition is the integral. The harmonic rotor's new integrals at 1:1, the
+/// second circular mode `W e^{−iθ}`, are no polynomial in its functions and its family
+/// `Z^m e^{−inθ}`, and none is printed.
+#[test]
+fn search_restates_its_integrals_in_functions_and_family_instances() {
+    let run_as = |name: &str, format: &str| {
+        let args = arguments(name, &["--no-timings", "--format", format]);
+        let args: Vec<&str> = args.iter().map(String::as_str).collect();
+        let out = superint(&args);
+        assert_eq!(out.status.code(), Some(0));
+        String::from_utf8(out.stdout).expect("UTF-8")
+    };
+    let markdown = run_as("fd-search", "markdown");
+    for form in ["` = `−8 Q_{1,2}`\n", "` = `8 P_{1,2}`\n"] {
+        assert_eq!(markdown.matches(form).count(), 1, "{form}: {markdown}");
+    }
+    let latex = run_as("fd-search", "latex");
+    for form in ["&= -8 Q_{1,2}", "&= 8 P_{1,2}"] {
+        assert_eq!(latex.matches(form).count(), 1, "{form}: {latex}");
+    }
+    // In JSON, the lines' `in_functions`, as `bracket` gives them; read back, each expands at
+    // the condition to the integral.
+    let json: serde_json::Value = serde_json::from_str(&run_as("fd-search", "json")).expect("JSON");
+    let lines = |json: &serde_json::Value| -> Vec<serde_json::Value> {
+        json["equations"]
+            .as_array()
+            .expect("equations")
+            .iter()
+            .filter(|e| e["caption"] == "New integrals")
+            .flat_map(|e| e["lines"].as_array().expect("lines").clone())
+            .collect()
+    };
+    let file = system_file("fock-darwin.toml");
+    let when = file.condition("a = 2*b").expect("a condition");
+    let found = lines(&json);
+    let forms: Vec<(&str, &str)> = found
+        .iter()
+        .map(|l| {
+            let f = &l["in_functions"];
+            (
+                l["lhs"].as_str().unwrap(),
+                f["ascii"].as_str().expect("a form"),
+            )
+        })
+        .collect();
+    assert_eq!(forms, [("I91", "-8*Q_1_2"), ("I92", "8*P_1_2")]);
+    assert_eq!(found[0]["in_functions"]["text"], "−8 Q_{1,2}");
+    assert_eq!(found[1]["in_functions"]["latex"], "8 P_{1,2}");
+    for l in &found {
+        let integral = file.parse(l["ascii"].as_str().unwrap()).expect("parses");
+        let form = file
+            .parse(l["in_functions"]["ascii"].as_str().unwrap())
+            .expect("parses");
+        assert_eq!(when.apply(&form).unwrap(), integral, "{l}");
+    }
+    // The rotor's at 1:1: none, in any format.
+    let rotor = run_as("h11-new", "text");
+    assert!(rotor.contains("I3 = p_y cos θ + Mωy sin θ"), "{rotor}");
+    assert!(
+        !rotor.lines().any(|l| l.trim_start().starts_with("= ")),
+        "{rotor}"
+    );
+    let json: serde_json::Value = serde_json::from_str(&run_as("h11-new", "json")).expect("JSON");
+    let found = lines(&json);
+    assert_eq!(found.len(), 4);
+    assert!(found.iter().all(|l| l["in_functions"].is_null()), "{json}");
 }
 
 /// The Fock–Darwin system's algebras: at `a = 2b`, for every `M, b`, `H`, `L`, `P_{1,2}`,
