@@ -244,13 +244,14 @@ impl SpaceExponents {
             degree.join(" + ")
         };
         let positions = exponents(&space.coordinates, true);
-        // Each radical `r` to a power of either sign, `r^j`.
-        let radical_vars: Vec<Var> = r.vars.radicals().collect();
+        // Each radical `r` to a power of either sign, `r^j` (none at `--radicals-degree 0`).
+        let radical_vars: Vec<Var> = radicals_in_space(r).collect();
         let radicals = exponents(&radical_vars, true);
         let momenta = exponents(&space.momenta, false);
         let poisson = exponents(&space.poisson, false);
-        // Each denominator atom `(x − y)` to a negative power, `1/(x − y)^r`.
-        let atoms: Vec<Var> = r.vars.denominators().collect();
+        // Each denominator atom `(x − y)` to a negative power, `1/(x − y)^r` (none at
+        // `--denominators-degree 0`).
+        let atoms: Vec<Var> = denominators_in_space(r).collect();
         let mut denominator = Vec::new();
         let denominators: Vec<String> = atoms
             .iter()
@@ -375,13 +376,28 @@ fn symbolic_coefficients_text(r: &SearchResult) -> String {
     }
 }
 
+/// The radicals whose powers the space of `r` holds: none at `--radicals-degree 0`, where its
+/// monomials are free of them (`s^c` with `|c| ≤ 0` described a space without `s`).
+fn radicals_in_space(r: &SearchResult) -> impl Iterator<Item = Var> + '_ {
+    r.vars.radicals().filter(|_| r.space.radicals_degree > 0)
+}
+
+/// The denominator atoms whose powers the space of `r` holds: none at
+/// `--denominators-degree 0`.
+fn denominators_in_space(r: &SearchResult) -> impl Iterator<Item = Var> + '_ {
+    r.vars
+        .denominators()
+        .filter(|_| r.space.denominators_degree > 0)
+}
+
 /// With denominators or radicals, the note that a monomial equal as a function to a sum of
 /// simpler ones is left out.
 fn dependent_monomials_text(r: &SearchResult) -> String {
     let first_radical = trigpoly::Expr::radicals(&r.vars)
         .ok()
-        .and_then(|radicals| radicals.into_iter().next());
-    match (r.vars.denominators().next().is_none(), first_radical) {
+        .and_then(|radicals| radicals.into_iter().next())
+        .filter(|_| r.space.radicals_degree > 0);
+    match (denominators_in_space(r).next().is_none(), first_radical) {
         (true, None) => String::new(),
         (false, _) => " (with denominators the monomials are not independent, \
                         `x/(x − y) − y/(x − y) = 1`: each one equal as a function to a sum of \
@@ -1094,8 +1110,8 @@ fn degree_variables(r: &SearchResult) -> String {
     .any(|vs| !vs.is_empty());
     // With denominator atoms their powers count with the coordinates' (`1/(x − y)`), and so
     // do a radical's, of either sign (`1/r`).
-    let denominator = r.vars.denominators().next();
-    let radical = r.vars.radicals().next();
+    let denominator = denominators_in_space(r).next();
+    let radical = radicals_in_space(r).next();
     let unicode = |v: Var| r.vars.variable(v).unicode();
     match (
         r.variables.poisson.is_empty(),

@@ -626,3 +626,67 @@ fn a_condition_on_a_radical_is_refused() {
         "{err}"
     );
 }
+
+/// A search at `--radicals-degree 0` has no power of a radical in its space, and says so: its
+/// monomials are `x^a y^b p_x^c p_y^d` (they were written `x^a y^b s^c p_x^d p_y^e` with
+/// `|c| ≤ 0`), independent (the note that `s² = …` leaves some out is gone), and a grade
+/// counts the coordinates and momenta alone; at degree 1 the radical is back in all three. So
+/// for the denominators at `--denominators-degree 0`.
+#[test]
+fn a_search_without_powers_of_the_radicals_describes_a_space_without_them() {
+    let search = |degree: &str| {
+        crate::normalize(&superint_ok(&[
+            "search",
+            "systems/zernike.toml",
+            "--momenta-degree",
+            "1",
+            "--positions-degree",
+            "1",
+            "--trig-degree",
+            "0",
+            "--radicals-degree",
+            degree,
+            "--new-only",
+            "--no-timings",
+        ]))
+    };
+    let none = search("0");
+    for piece in [
+        "The space: x^a y^b p_x^c p_y^d, with momenta degree c + d ≤ 1, positions degree \
+         |a| + |b| ≤ 1:",
+        "An integral of degree N (in the coordinates and momenta together) is generated",
+    ] {
+        assert!(none.contains(piece), "{piece}: {none}");
+    }
+    assert!(!none.contains("s^") && !none.contains("s² ="), "{none}");
+    let one = search("1");
+    for piece in [
+        "The space: x^a y^b s^c p_x^d p_y^e, with momenta degree d + e ≤ 1, positions degree \
+         |a| + |b| ≤ 1, degree |c| ≤ 1 in the radicals:",
+        "(with radicals the monomials are not independent, s² = γ₂ x² + γ₂ y² + 1:",
+        "(in the coordinates, momenta and radicals together, s and 1/s of degree 1)",
+    ] {
+        assert!(one.contains(piece), "{piece}: {one}");
+    }
+    // So for a denominator at `--denominators-degree 0`: no `(x − y)^g` in the monomial.
+    let calogero = crate::normalize(&superint_ok(&[
+        "search",
+        "systems/calogero.toml",
+        "--momenta-degree",
+        "1",
+        "--positions-degree",
+        "1",
+        "--trig-degree",
+        "0",
+        "--denominators-degree",
+        "0",
+        "--no-timings",
+    ]));
+    assert!(
+        calogero.contains(
+            "The space: x^a y^b z^c p_x^d p_y^e p_z^f, with momenta degree d + e + f ≤ 1, \
+             positions degree |a| + |b| + |c| ≤ 1: 16 unknowns,"
+        ),
+        "{calogero}"
+    );
+}
