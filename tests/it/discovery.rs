@@ -392,6 +392,21 @@ const COMMANDS: &[(&str, &str)] = &[
         "fd-closure-isotropic",
         "superint closure systems/fock-darwin.toml H L P_1_1 Q_1_1 --when 'b = a' --degree 2",
     ),
+    (
+        "zernike-search",
+        "superint search systems/zernike.toml --momenta-degree 4 --positions-degree 4 \
+         --trig-degree 0 --radicals-degree 0 --symbolic g1,g2 --parameters-degree 4 --new-only",
+    ),
+    (
+        "zernike-search-sphere",
+        "superint search systems/zernike.toml --when 'g1 = 0' --momenta-degree 1 \
+         --positions-degree 2 --trig-degree 0 --symbolic g2 --new-only",
+    ),
+    (
+        "zernike-closure",
+        "superint closure systems/zernike.toml H L A B --degree 4 --symbolic g1,g2 \
+         --parameters-degree 4",
+    ),
 ];
 
 /// The words of a command line, single quotes grouping.
@@ -4324,5 +4339,122 @@ fn a_search_counts_the_degree_of_h_without_its_negative_powers_of_the_parameters
              (--parameters-degree): integrals of degree 4 in the momenta may need a larger one."
         ),
         "{square}"
+    );
+}
+
+/// The classical Zernike system `H = p² + γ₁D + γ₂D²`, `D = x·p` (`g1`, `g2` printed `γ₁`,
+/// `γ₂`), loaded and checked: every claim of the file holds (`H` in the sphere's form, the
+/// angular momentum and the tensor `T_ij = (1 + γ₂r²)p_i p_j + γ₁(x_i p_j + x_j p_i)/2`
+/// conserved for every `γ₁, γ₂`, its trace and determinant, the cubic Higgs algebra of
+/// `A = T11 − T22`, `B = 2T12` and its Casimir, the sphere's rotations `s p_x`, `s p_y` at
+/// `γ₁ = 0`, Zernike's own values `γ₂ = −1`, `γ₁ = 2i`, the ranks), and each of its seven
+/// false neighbours is refuted. The tensor needs both the factor `1 + γ₂r²` and the half in
+/// its `γ₁` term: for every `γ₁, γ₂`, `{T12, H}` is zero, and with `γ₁(x p_y + y p_x)` it is
+/// `2γ₁ p_x p_y`.
+#[test]
+fn zernike_claims_are_proved_and_its_false_neighbours_refuted() {
+    let file = system_file("zernike.toml");
+    assert_claims_as_expected(
+        &file,
+        &[
+            "sphere-form",
+            "angular",
+            "tensor",
+            "trace",
+            "determinant",
+            "found",
+            "algebra",
+            "casimir",
+            "tensor-algebra",
+            "sphere",
+            "zernike",
+            "rank",
+        ],
+        &[
+            "false-cross-term",
+            "false-conformal-sign",
+            "false-algebra-sign",
+            "false-casimir",
+            "false-rotation",
+            "false-zernike-sign",
+            "false-rank",
+        ],
+    );
+    let parse = |s: &str| file.parse_argument(s).expect("parses");
+    let system = file.system();
+    assert!(system.flow(&parse("T12")).unwrap().is_zero());
+    let doubled = parse("(1 + g2*(x^2 + y^2))*p_x*p_y + g1*(x*p_y + y*p_x)");
+    assert_eq!(system.flow(&doubled).unwrap(), parse("2*g1*p_x*p_y"));
+    // The sphere's rotations are integrals at γ₁ = 0 only: {J1, H} = −γ₁ p_x/s.
+    assert!(crate::holds(&file, "{J1, H}", "-g1*p_x/s"));
+}
+
+/// The classical Zernike system: to fourth order in the momenta and the positions, for every
+/// `γ₁, γ₂`, the file's `H`, `L` and tensor generate every integral; from `H` alone the search
+/// finds the angular momentum and the two quadratic integrals `T22 − γ₂L²` and `T12 − γ₁L/2`
+/// (the file's claims `found`), and nothing cubic or quartic. At `γ₁ = 0`, with the radical,
+/// it finds the two rotations of the sphere `s p_y` and `s p_x` (the file's `J2`, `J1`) beside
+/// `L`. `H, L, A, B` close into the cubic
+/// Higgs algebra `{A, B} = −4γ₂HL − 4γ₂²L³ − 2γ₁²L`, with the Casimir
+/// `A² + B² = (H + γ₂L²)² + γ₁²L²` its one relation to degree 4.
+#[test]
+fn zernike_tensor_found_from_h_alone_and_its_cubic_higgs_algebra() {
+    expect(
+        "zernike-search",
+        &[
+            "The space: x^a y^b p_x^c p_y^d, with momenta degree c + d ≤ 4",
+            "3375 unknowns",
+            "(a parameter's multiple of an integral counts apart from it): 195.",
+            "≤ 0: 15, ≤ 1: 30, ≤ 2: 75, ≤ 3: 120, ≤ 4: 195.",
+            "Known integrals in the space: H, L, T_11, T_12, T_22, A, B.",
+            "None: the known integrals generate every integral in the space.",
+        ],
+    );
+    let text = run_on_hamiltonian_alone("zernike-search");
+    let t22 = "2 γ₂ xy p_x p_y − γ₂ y² p_x² + γ₂ y² p_y² + p_y² + γ₁ y p_y";
+    let t12 = "γ₂ x² p_x p_y + γ₂ y² p_x p_y + p_x p_y + γ₁ y p_x";
+    for piece in [
+        "Known integrals in the space: H.".to_string(),
+        "I16 = x p_y − y p_x".to_string(),
+        format!("I32 = {t22}"),
+        format!("I35 = {t12}"),
+        "4 claims: 4 proved, 0 refuted".to_string(),
+    ] {
+        assert!(text.contains(&normalize(&piece)), "{piece}: {text}");
+    }
+    assert_eq!(text.matches(" = 0 [I").count(), 3, "{text}");
+    // The integrals found, read back as printed, are the file's tensor less multiples of L.
+    let file = system_file("zernike.toml");
+    let parse = |s: &str| file.parse_argument(s).expect("parses");
+    assert_eq!(parse(t22), parse("T22 - g2*L^2"));
+    assert_eq!(parse(t12), parse("T12 - g1*L/2"));
+    expect(
+        "zernike-search-sphere",
+        &[
+            "Known integrals in the space: L, J_1, J_2.",
+            "None: the known integrals generate every integral in the space.",
+        ],
+    );
+    let sphere = run_on_hamiltonian_alone("zernike-search-sphere");
+    for piece in [
+        "I4 = x p_y − y p_x",
+        "I7 = s p_y",
+        "I8 = s p_x",
+        "{I7, H} = 0 at γ₁ = 0 [I7 proved]",
+        "{I8, H} = 0 at γ₁ = 0 [I8 proved]",
+        "4 claims: 4 proved, 0 refuted",
+    ] {
+        assert!(sphere.contains(&normalize(piece)), "{piece}: {sphere}");
+    }
+    expect(
+        "zernike-closure",
+        &[
+            "The table closes",
+            "{L, A} = 2 B [B1 proved]",
+            "{L, B} = −2 A [B2 proved]",
+            "{A, B} = −2 γ₁² L − 4 γ₂² L³ − 4 γ₂ H L [B3 proved]",
+            "γ₁² L² + γ₂² L⁴ + 2 γ₂ H L² + H² = A² + B² [R1 proved]",
+            "4 claims: 4 proved, 0 refuted",
+        ],
     );
 }
