@@ -1082,6 +1082,10 @@ impl<'a> Builder<'a> {
             limits,
             caller: super::Caller::Program,
             cache: Mutex::new(HashMap::new()),
+            radicands: declared_radicals(model.phase_space.get_ref())
+                .iter()
+                .map(|(name, radicand)| (name.get_ref().clone(), radicand.get_ref().clone()))
+                .collect(),
         }
     }
 

@@ -171,6 +171,9 @@ pub struct LoadedSystem {
     caller: Caller,
     /// Expanded family instances: `(family, m, n)`.
     cache: Mutex<HashMap<(usize, i64, i64), Expr>>,
+    /// Each radical's radicand as `[phase_space] radicals` writes it, by the radical's name
+    /// (`s`, `1 + g2*(x^2 + y^2)`), which a report shows (the variables keep its normal form).
+    radicands: Vec<(String, String)>,
 }
 
 /// Who gives the texts that the reports of a [`LoadedSystem`] read (the expressions of
@@ -275,6 +278,7 @@ impl Clone for LoadedSystem {
             limits: self.limits,
             caller: self.caller,
             cache: Mutex::new(cache),
+            radicands: self.radicands.clone(),
         }
     }
 }
@@ -304,6 +308,7 @@ impl LoadedSystem {
             claims: Vec::new(),
             caller: Caller::Program,
             cache: Mutex::new(HashMap::new()),
+            radicands: Vec::new(),
         }
     }
 

@@ -37,18 +37,35 @@ impl LoadedSystem {
             caption: String::new(),
             lines: vec![Equation::new("H", self.system.hamiltonian().clone())],
         }));
-        // What each radical stands for, which H's terms do not show.
+        // What each radical stands for, which H's terms do not show: its radicand as the file
+        // declares it, `√((x − a)² + y² + z²)` (its normal form, `√(x² − 2ax + y² + z² + a²)`,
+        // hid the distance to the centre).
         let radicals: Vec<String> = self
             .system
             .space()
             .radicals()
             .iter()
-            .map(|(r, radicand)| format!("`{}`", Expr::radical_definition(*r, radicand)))
+            .map(|(r, radicand)| format!("`{}`", self.radical_as_declared(*r, radicand)))
             .collect();
         if !radicals.is_empty() {
             entries.push(Entry::Text(format!("with {}.", radicals.join(", "))));
         }
         entries
+    }
+
+    /// `r = √(R)` with the radicand `R` as the file declares it, in the paper's notation
+    /// (`s = √(1 + γ₂(x² + y²))`), or in normal form where its text does not read.
+    fn radical_as_declared(&self, r: trigpoly::Var, radicand: &Expr) -> String {
+        let variable = self.system.vars().variable(r);
+        let declared = self
+            .radicands
+            .iter()
+            .find(|(name, _)| name == variable.name())
+            .map(|(_, text)| text);
+        match declared.and_then(|text| trigpoly::syntax::parse_expr(text).ok()) {
+            Some(tree) => format!("{} = √({})", variable.unicode(), self.pretty(&tree)),
+            None => Expr::radical_definition(r, radicand),
+        }
     }
 
     fn section_title(&self) -> String {

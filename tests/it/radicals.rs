@@ -690,3 +690,29 @@ fn a_search_without_powers_of_the_radicals_describes_a_space_without_them() {
         "{calogero}"
     );
 }
+
+/// A report's line on what each radical stands for writes the radicand as the file declares
+/// it, in the paper's notation: the two centres' distances `√((x − a)² + y² + z²)` (they were
+/// written in normal form, `√(x² − 2ax + y² + z² + a²)`, which hid the centre at `x = a`), and
+/// the Zernike file's `√(1 + γ₂ (x² + y²))` with its display names.
+#[test]
+fn a_report_writes_each_radicand_as_declared() {
+    let centres = crate::normalize(&superint_ok(&[
+        "check",
+        "systems/two-centres.toml",
+        "--no-timings",
+    ]));
+    assert!(
+        centres.contains("with r = √((x − a)² + y² + z²), s = √((x + a)² + y² + z²)."),
+        "{centres}"
+    );
+    let zernike = crate::normalize(&superint_ok(&[
+        "check",
+        "systems/zernike.toml",
+        "--no-timings",
+    ]));
+    assert!(
+        zernike.contains("with s = √(1 + γ₂ (x² + y²))."),
+        "{zernike}"
+    );
+}
