@@ -212,12 +212,15 @@ impl Names {
     }
 }
 
-/// Whether `c` can be in a name: a letter, a digit, `_`, a prime, a combining mark (a bar).
+/// Whether `c` can be in a name: a letter, a digit, `_`, a prime, a combining mark (a bar),
+/// a subscript digit or sign (a display name's `ω₊`, which the names then spell as the
+/// variable's `\omega_{+}`; a run they do not spell is translated as before, the sign a
+/// script of its own).
 fn in_name(c: char) -> bool {
     c.is_alphabetic()
         || c.is_ascii_digit()
         || SUBSCRIPTS.contains(c)
-        || matches!(c, '_' | '\'')
+        || matches!(c, '_' | '\'' | '₊' | '₋')
         || is_combining(c)
 }
 
@@ -1637,6 +1640,27 @@ mod tests {
             markup("frequencies `a = ω₊`, `b = ω₋`"),
             r"frequencies $a = \omega{}_{+}$, $b = \omega{}_{-}$"
         );
+    }
+
+    /// A declared name with a script sign, the Fock–Darwin file's display `ω₊` of `a`, is
+    /// written as the variable's LaTeX, `\omega_{+}`, in a statement or condition as in a
+    /// printed polynomial (`\text{at } \omega{}_{+} = 2 \omega{}_{-}` beside `\omega_{+}`);
+    /// a sign after a name that no declared name spells stays a script sign.
+    #[test]
+    fn a_declared_name_with_a_script_sign_is_written_as_the_variable() {
+        let names = Names {
+            forms: vec![
+                ("M".into(), "M".into()),
+                ("ω₊".into(), r"\omega_{+}".into()),
+                ("ω₋".into(), r"\omega_{-}".into()),
+            ],
+        };
+        assert_eq!(math_with("ω₊ = 2 ω₋", &names), r"\omega_{+} = 2 \omega_{-}");
+        assert_eq!(
+            math_with("{P, Q} = M ω₊ + 3Mω₋²", &names),
+            r"\{P, Q\} = M \omega_{+} + 3M\omega_{-}^{2}"
+        );
+        assert_eq!(math_with("x₊ + M₋", &names), r"x{}_{+} + M{}_{-}");
     }
 
     /// A formula LaTeX would refuse, as a description may hold one, is written so that the
