@@ -407,6 +407,11 @@ const COMMANDS: &[(&str, &str)] = &[
         "superint closure systems/zernike.toml H L A B --degree 4 --symbolic g1,g2 \
          --parameters-degree 4",
     ),
+    (
+        "zernike-closure-sphere",
+        "superint closure systems/zernike.toml H L J1 J2 --when 'g1 = 0' --degree 2 \
+         --symbolic g2",
+    ),
 ];
 
 /// The words of a command line, single quotes grouping.
@@ -4396,7 +4401,9 @@ fn zernike_claims_are_proved_and_its_false_neighbours_refuted() {
 /// it finds the two rotations of the sphere `s p_y` and `s p_x` (the file's `J2`, `J1`) beside
 /// `L`. `H, L, A, B` close into the cubic
 /// Higgs algebra `{A, B} = −4γ₂HL − 4γ₂²L³ − 2γ₁²L`, with the Casimir
-/// `A² + B² = (H + γ₂L²)² + γ₁²L²` its one relation to degree 4.
+/// `A² + B² = (H + γ₂L²)² + γ₁²L²` its one relation to degree 4; at `γ₁ = 0` the rotations
+/// and `L` close into so(3) (so(2, 1) for `γ₂ > 0`), `{J_1, J_2} = −γ₂L`, with the Casimir
+/// `J_1² + J_2² − γ₂L² = H`.
 #[test]
 fn zernike_tensor_found_from_h_alone_and_its_cubic_higgs_algebra() {
     expect(
@@ -4454,6 +4461,17 @@ fn zernike_tensor_found_from_h_alone_and_its_cubic_higgs_algebra() {
             "{L, B} = −2 A [B2 proved]",
             "{A, B} = −2 γ₁² L − 4 γ₂² L³ − 4 γ₂ H L [B3 proved]",
             "γ₁² L² + γ₂² L⁴ + 2 γ₂ H L² + H² = A² + B² [R1 proved]",
+            "4 claims: 4 proved, 0 refuted",
+        ],
+    );
+    expect(
+        "zernike-closure-sphere",
+        &[
+            "The table closes",
+            "{L, J_1} = J_2 at γ₁ = 0 [B1 proved]",
+            "{L, J_2} = −J_1 at γ₁ = 0 [B2 proved]",
+            "{J_1, J_2} = −γ₂ L at γ₁ = 0 [B3 proved]",
+            "γ₂ L² + H = J_1² + J_2² at γ₁ = 0 [R1 proved]",
             "4 claims: 4 proved, 0 refuted",
         ],
     );
