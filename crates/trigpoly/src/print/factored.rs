@@ -115,8 +115,14 @@ impl Factored {
     /// The factored form in the notation of `style`: `F(x p_x + y p_y)/M`,
     /// `\frac{F \left(x p_{x} + y p_{y}\right)}{M}`, `F*(x*p_x + y*p_y)/M`.
     pub fn render(&self, style: Style) -> String {
+        self.written(&self.factor, None, style)
+    }
+
+    /// `front(rest)`, then `back` after the parentheses where it is given (`−(2ω − 3Ω) Q`).
+    fn written(&self, front: &CosSinTerm, back: Option<&CosSinTerm>, style: Style) -> String {
         let rest = render_terms(&self.vars, &self.rest, style);
-        let every: Vec<CosSinTerm> = std::iter::once(&self.factor)
+        let every: Vec<CosSinTerm> = std::iter::once(front)
+            .chain(back)
             .chain(&self.rest)
             .cloned()
             .collect();
@@ -126,7 +132,15 @@ impl Factored {
             text: &rest,
             terms: self.rest.len(),
         };
-        write_term(&mut out, 0, &names, &self.factor, None, Some(inner), style);
+        write_term(&mut out, 0, &names, front, None, Some(inner), style);
+        if let Some(back) = back {
+            out.push_str(match style {
+                Style::Ascii => "*",
+                _ => " ",
+            });
+            let start = out.len();
+            write_term(&mut out, start, &names, back, None, None, style);
+        }
         out
     }
 
@@ -180,26 +194,7 @@ impl Factored {
                 .collect(),
             trig: factor.trig.clone(),
         };
-        let rest = render_terms(&self.vars, &self.rest, style);
-        let every: Vec<CosSinTerm> = [&front, &back]
-            .into_iter()
-            .chain(&self.rest)
-            .cloned()
-            .collect();
-        let names = Names::new(&self.vars, &every, style);
-        let mut out = String::new();
-        let inner = Inner {
-            text: &rest,
-            terms: self.rest.len(),
-        };
-        write_term(&mut out, 0, &names, &front, None, Some(inner), style);
-        out.push_str(match style {
-            Style::Ascii => "*",
-            _ => " ",
-        });
-        let start = out.len();
-        write_term(&mut out, start, &names, &back, None, None, style);
-        out
+        self.written(&front, Some(&back), style)
     }
 }
 
