@@ -308,11 +308,7 @@ pub(crate) fn restated(
 /// parameter in it and what is left is short ([`Factored::render_functions_last`]); else term
 /// by term (a number alone in front, `8(32ω²αβ H_x + …)`, says little about an algebra).
 pub(crate) fn written_in_functions(e: &Expr, style: Style) -> String {
-    let factored = (e.len() <= 2 * FACTORED_TERMS)
-        .then(|| e.factored())
-        .flatten()
-        .filter(|f| f.terms() <= FACTORED_TERMS && !f.is_numeric());
-    match factored {
+    match shown_factored(e).filter(|f| !f.is_numeric()) {
         Some(f) => f.render_functions_last(style),
         None => e.render(style),
     }

@@ -247,10 +247,7 @@ impl LoadedSystem {
             if !flow.is_some_and(|f| f.vanishes().unwrap_or(false)) {
                 continue;
             }
-            let family = &self.families[k];
-            let name = format!("{}_{m}_{n}", family.name);
-            let display = format!("{}_{{{m},{n}}}", family.display);
-            found.push((NamedFunction::new(&name, &display, value), d));
+            found.push((self.instance_function(k, m, n, value), d));
         }
         found
     }
@@ -296,7 +293,7 @@ impl LoadedSystem {
     ) -> Vec<NamedFunction> {
         let mut instances: Vec<NamedFunction> = Vec::new();
         for &(m, n) in indices {
-            for (k, family) in self.families.iter().enumerate() {
+            for k in 0..self.families.len() {
                 let Ok(value) = self.family_instance(k, m, n) else {
                     continue;
                 };
@@ -304,12 +301,19 @@ impl LoadedSystem {
                 if value.is_zero() || known {
                     continue;
                 }
-                let name = format!("{}_{m}_{n}", family.name);
-                let display = format!("{}_{{{m},{n}}}", family.display);
-                instances.push(NamedFunction::new(&name, &display, value));
+                instances.push(self.instance_function(k, m, n, value));
             }
         }
         instances
+    }
+
+    /// The instance `value` of family `k` at `(m, n)` as a function, named as an expression
+    /// names it (`Q_1_2`) and shown as printed (`Q_{1,2}`).
+    fn instance_function(&self, k: usize, m: i64, n: i64, value: Expr) -> NamedFunction {
+        let family = &self.families[k];
+        let name = format!("{}_{m}_{n}", family.name);
+        let display = format!("{}_{{{m},{n}}}", family.display);
+        NamedFunction::new(&name, &display, value)
     }
 
     /// [`LoadedSystem::written_in_functions`] among the functions and the instances at

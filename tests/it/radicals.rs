@@ -697,20 +697,13 @@ fn a_search_without_powers_of_the_radicals_describes_a_space_without_them() {
 /// the Zernike file's `√(1 + γ₂ (x² + y²))` with its display names.
 #[test]
 fn a_report_writes_each_radicand_as_declared() {
-    let centres = crate::normalize(&superint_ok(&[
-        "check",
-        "systems/two-centres.toml",
-        "--no-timings",
-    ]));
+    let check = |file: &str| crate::normalize(&superint_ok(&["check", file, "--no-timings"]));
+    let centres = check("systems/two-centres.toml");
     assert!(
         centres.contains("with r = √((x − a)² + y² + z²), s = √((x + a)² + y² + z²)."),
         "{centres}"
     );
-    let zernike = crate::normalize(&superint_ok(&[
-        "check",
-        "systems/zernike.toml",
-        "--no-timings",
-    ]));
+    let zernike = check("systems/zernike.toml");
     assert!(
         zernike.contains("with s = √(1 + γ₂ (x² + y²))."),
         "{zernike}"
