@@ -345,6 +345,11 @@ impl LoadedSystem {
         functions: Vec<NamedFunction>,
         instances: Vec<NamedFunction>,
     ) -> Option<Expr> {
+        // A function of the parameters alone (`−16M³ω²β`) reads best as it is: written in
+        // the functions it could only be a relation among them (`−8M² H_x² − 2 K² + 4 K P`).
+        if is_free_of_phase_space(e) {
+            return None;
+        }
         let degree = |g: &[NamedFunction], lowest| {
             let lengths: Vec<usize> = g.iter().map(|g| g.expr.len()).collect();
             searchable_degree(&lengths, lowest)
@@ -472,6 +477,13 @@ fn degrees(e: &Expr) -> [i64; 4] {
         VarKind::Angle,
     ]
     .map(|kind| e.total_degree(&[kind]).unwrap_or(0))
+}
+
+/// Whether `e` holds no variable but parameters: a constant on the phase space.
+fn is_free_of_phase_space(e: &Expr) -> bool {
+    let vars = e.vars();
+    vars.vars()
+        .all(|v| vars.variable(v).kind() == VarKind::Parameter || !e.contains(v))
 }
 
 /// How far [`LoadedSystem::written_in`] searches.

@@ -412,6 +412,21 @@ const COMMANDS: &[(&str, &str)] = &[
         "superint closure systems/zernike.toml H L J1 J2 --when 'g1 = 0' --degree 2 \
          --symbolic g2",
     ),
+    (
+        "swi-rotor-search",
+        "superint search systems/smorodinsky-winternitz-i-rotor.toml --when 'p_theta = 2*I*omega' \
+         --momenta-degree 4 --positions-degree 4 --trig-degree 2 --laurent --new-only",
+    ),
+    (
+        "swi-rotor-search-1-2",
+        "superint search systems/smorodinsky-winternitz-i-rotor.toml --when 'p_theta = I*omega' \
+         --momenta-degree 2 --positions-degree 4 --trig-degree 2 --laurent --new-only",
+    ),
+    (
+        "swi-rotor-closure",
+        "superint closure systems/smorodinsky-winternitz-i-rotor.toml Hx Hy X P_1_1 Q_1_1 R_1_1 \
+         S_1_1 --when 'p_theta = 2*I*omega' --degree 2 --symbolic beta,gamma --parameters-degree 1",
+    ),
 ];
 
 /// The words of a command line, single quotes grouping.
@@ -4473,6 +4488,118 @@ fn zernike_tensor_found_from_h_alone_and_its_cubic_higgs_algebra() {
             "{J_1, J_2} = −γ₂ L at γ₁ = 0 [B3 proved]",
             "γ₂ L² + H = J_1² + J_2² at γ₁ = 0 [R1 proved]",
             "4 claims: 4 proved, 0 refuted",
+        ],
+    );
+}
+
+/// The paper's rotor in the Smorodinsky–Winternitz potential `V_I`, loaded and checked: every
+/// claim of the file holds (the separated energies and `X` conserved, the quadratic ladders
+/// `{A, H} = 2iωA`, the tower's instances, the resonant integrals at `Ω = 2mω/n`, the
+/// harmonic limit `β = γ = 0`, so(2,1) twice with the barriers' Casimirs, `X` as a polynomial
+/// in the two copies, the ranks), and each of its five false neighbours is refuted: the
+/// harmonic rotor's resonance `Ω = ω` for `P_{1,1}` and for the linear `Re(Z e^{−iθ})`, the
+/// Casimir's and the bracket's signs, and rank 5 with `H = H_x + H_y + F2`. A residual that is
+/// a function of the parameters alone is printed as it is, never written in the functions.
+#[test]
+fn sw_i_rotor_claims_are_proved_and_its_false_neighbours_refuted() {
+    let file = system_file("smorodinsky-winternitz-i-rotor.toml");
+    assert_claims_as_expected(
+        &file,
+        &[
+            "separable",
+            "integrals",
+            "ladders",
+            "tower",
+            "resonance",
+            "harmonic-limit",
+            "so21",
+            "casimir",
+            "x-relation",
+            "rank",
+        ],
+        &[
+            "false-harmonic-resonance",
+            "false-linear-integral",
+            "false-casimir-sign",
+            "false-so21-sign",
+            "false-rank",
+        ],
+    );
+    // The barriers are what breaks the linear integral: its flow at Ω = ω is theirs alone.
+    let when = file.condition("p_theta = I*omega").expect("a condition");
+    let parse = |s: &str| file.parse_argument(s).expect("parses");
+    let flow = file.system().flow(&parse("re(Z*exp(-i*theta))")).unwrap();
+    assert_eq!(
+        when.apply(&flow).unwrap(),
+        parse("2*beta*cos(theta)/x^3 + 2*gamma*sin(theta)/y^3")
+    );
+    let out = superint(&[
+        "check",
+        "systems/smorodinsky-winternitz-i-rotor.toml",
+        "--no-timings",
+    ]);
+    let text = String::from_utf8(out.stdout).expect("UTF-8");
+    let lines: Vec<&str> = text.lines().collect();
+    let at = lines
+        .iter()
+        .position(|l| l.contains("residual lhs − rhs = −16M³ω²β"))
+        .unwrap_or_else(|| panic!("the Casimir's residual: {text}"));
+    assert!(!lines[at + 1].trim_start().starts_with('='), "{text}");
+}
+
+/// The rotor in `V_I` at `Ω = 2ω`: to fourth order in the momenta, the four new integrals are
+/// `P_{1,1}`, `Q_{1,1}`, `R_{1,1}`, `S_{1,1}` (restated so), and from `H` alone the search
+/// finds `H_y` and those four and nothing else (`X` is generated); at `Ω = ω` the new ones are
+/// of order 2. `H_x, H_y, X` and the four close at degree 2 into so(2,1) ⊕ so(2,1) with `X` a
+/// polynomial in the rest, for every `β, γ`.
+#[test]
+fn sw_i_rotor_resonant_integrals_found_and_their_algebra() {
+    expect(
+        "swi-rotor-search",
+        &[
+            "3075 unknowns",
+            "Dimension of the space of integrals: 26. By degree in the momenta: ≤ 0: 1, \
+             ≤ 1: 1, ≤ 2: 8, ≤ 3: 11, ≤ 4: 26.",
+            "Known integrals in the space: H, H_x, H_y, X.",
+            "the generated ones span 22 of the 26 dimensions",
+            "= R_{1,1}",
+            "= −S_{1,1}",
+            "= P_{1,1}",
+            "= −Q_{1,1}",
+            "5 claims: 5 proved, 0 refuted",
+        ],
+    );
+    let alone = run_on_hamiltonian_alone("swi-rotor-search");
+    for piece in [
+        "Known integrals in the space: H.",
+        "the generated ones span 21 of the 26 dimensions",
+        "I2 = p_y² + M²ω²y² + 2Mγ/y²",
+        "I7 = (p_x² − M²ω²x² + 2Mβ/x²) cos θ + 2Mωx p_x sin θ",
+        "6 claims: 6 proved, 0 refuted",
+    ] {
+        assert!(alone.contains(&normalize(piece)), "{piece}: {alone}");
+    }
+    assert_eq!(alone.matches(" = 0 at p_θ = 2Iω [I").count(), 5, "{alone}");
+    expect(
+        "swi-rotor-search-1-2",
+        &[
+            "Momenta degree exactly 2: 3 of order 0, 4 of order 2.",
+            "= P_{1,2}",
+            "= −Q_{1,2}",
+            "= R_{1,2}",
+            "= −S_{1,2}",
+        ],
+    );
+    expect(
+        "swi-rotor-closure",
+        &[
+            "The table closes",
+            "{H_x, P_1_1} = 2ω Q_1_1 at p_θ = 2Iω [B2 proved]",
+            "{P_1_1, Q_1_1} = −8M²ω H_x at p_θ = 2Iω [B11 proved]",
+            "{R_1_1, S_1_1} = −8M²ω H_y at p_θ = 2Iω [B12 proved]",
+            "2M²ω² X + P_1_1 R_1_1 + Q_1_1 S_1_1 = 4M² H_x H_y at p_θ = 2Iω [R1 proved]",
+            "8M³ω²β + P_1_1² + Q_1_1² = 4M² H_x² at p_θ = 2Iω [R2 proved]",
+            "15 claims: 15 proved, 0 refuted",
         ],
     );
 }
