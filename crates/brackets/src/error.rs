@@ -79,7 +79,10 @@ impl From<ParseError> for EngineError {
 
 impl EngineError {
     /// Whether a limit stopped the computation (of terms, of term products, of degree, of an
-    /// angle's order): the input may be right, and a larger limit may decide it.
+    /// angle's order): the input may be right, and a larger limit may decide it. The fixed
+    /// bound on a power's coefficient ([`AlgebraError::CoefficientTooLarge`]) and the ranges
+    /// of a set's settings ([`AlgebraError::SettingOutOfRange`]) are not limits here: no
+    /// limit raises them.
     pub fn is_limit(&self) -> bool {
         matches!(
             self,
@@ -124,5 +127,19 @@ mod tests {
         let algebra = EngineError::from(AlgebraError::DivisionByZero);
         assert!(algebra.source().is_none());
         assert!(EngineError::UnknownName("q".into()).source().is_none());
+    }
+
+    /// A limit is one that a larger limit may decide: the term limit is, the fixed bound on a
+    /// power's coefficient is not (no setting raises it, and the hint to raise `max_terms` or
+    /// `max_degree` that a limit error takes would mislead).
+    #[test]
+    fn a_limit_is_one_a_larger_limit_may_decide() {
+        let terms = EngineError::from(AlgebraError::TooManyTerms { limit: 10 });
+        assert!(terms.is_limit());
+        let coefficient = EngineError::from(AlgebraError::CoefficientTooLarge {
+            bits: 1 << 25,
+            limit: 1 << 24,
+        });
+        assert!(!coefficient.is_limit());
     }
 }

@@ -2,8 +2,13 @@
 
 use thiserror::Error;
 
+use crate::varset::{long_name, BadName, VarKind, FIELD_BITS, MAX_RADICALS};
+
 /// Why an operation on polynomials has no result.
+///
+/// New ways to refuse come as new variants, so a `match` on it needs a `_` arm.
 #[derive(Clone, Debug, PartialEq, Eq, Error)]
+#[non_exhaustive]
 pub enum AlgebraError {
     /// Division by zero.
     #[error("division by zero")]
@@ -139,9 +144,209 @@ pub enum AlgebraError {
         /// The LaTeX both would print as.
         latex: String,
     },
-    /// Something else invalid, with its explanation.
+    /// A name that cannot name a variable ([`BadName`]): malformed, too long, with an empty
+    /// subscript, with a letter LaTeX cannot write, or reserved. A name too long is shown by
+    /// its start and its length.
+    #[error("{}", invalid_name(.name, *.reason))]
+    InvalidName {
+        /// The name, whole.
+        name: String,
+        /// Why it cannot name a variable.
+        reason: BadName,
+    },
+    /// A setting of a variable set, or a count of its declarations, out of the range that is
+    /// supported: a degree limit of 0, exponent bits not in [`FIELD_BITS`], more than
+    /// 65 535 variables or more than 8 radicals. No limit of [`Limits`](crate::Limits) raises
+    /// these.
+    #[error("{}", setting_out_of_range(*.setting, *.value))]
+    SettingOutOfRange {
+        /// The setting or count.
+        setting: Setting,
+        /// Its value, which is out of range.
+        value: u64,
+    },
+    /// A declared radical refused ([`Poly::radicals`](crate::Poly::radicals),
+    /// [`Poly::check_radicals`](crate::Poly::check_radicals)): its radicand does not read, is
+    /// a constant, not real or nowhere positive, has a radical, a denominator or an angle in
+    /// it, or is a square (alone, or times the radicands of others), so that the radical is no
+    /// new function of the variables.
+    #[error("{message}")]
+    RadicalRefused {
+        /// The radicals refused, as shown (`r`): one, or those whose product of radicands is
+        /// a square.
+        radicals: Vec<String>,
+        /// What is wrong, in words, naming them.
+        message: String,
+    },
+    /// A declared denominator refused
+    /// ([`Poly::denominator_atoms`](crate::Poly::denominator_atoms)): its definition does not
+    /// read, is zero or a single term, has a denominator of several terms or a radical in it,
+    /// or divides by a sum.
+    #[error("{message}")]
+    DenominatorRefused {
+        /// The denominator as declared, its name (`(x + 1)`).
+        denominator: String,
+        /// What is wrong, in words.
+        message: String,
+    },
+    /// A division by an element with radicals in it that is zero once they are reduced by
+    /// `r² = R` (`1/(r² − x² − y²)` for `r = √(x² + y²)`).
+    #[error("division by zero: {shown} is 0, as {definition}")]
+    DivisorVanishes {
+        /// The divisor as shown.
+        shown: String,
+        /// The radical by whose definition it vanishes, as `r = √(x² + y²)`.
+        definition: String,
+    },
+    /// A variable given where an angle must be that is not declared as one.
+    #[error("{}", not_an_angle(*.needed_by, .var, *.kind))]
+    NotAnAngle {
+        /// What needs the angle.
+        needed_by: AngleUse,
+        /// The variable as shown.
+        var: String,
+        /// What it is declared as.
+        kind: VarKind,
+    },
+    /// A substitution `var ↦ value` into an element in which `var` has a negative power, of a
+    /// value that is not invertible: neither a single term nor a product of powers of
+    /// declared denominators.
+    #[error(
+        "cannot substitute {shown} for {var}: it appears with exponent {exponent}, and only \
+         single terms (monomials) and products of powers of declared denominators are \
+         invertible; {declare}"
+    )]
+    UninvertibleSubstitution {
+        /// The value as shown.
+        shown: String,
+        /// The variable substituted for, as shown.
+        var: String,
+        /// The negative exponent of the variable that the value would take.
+        exponent: i64,
+        /// What to declare, as [`AlgebraError::NotAMonomial`] says it.
+        declare: String,
+    },
+    /// A power of a single term whose coefficient would pass the fixed bound on its size (the
+    /// numerator or denominator of `(3/2)^(2^30)`). The bound is no setting of
+    /// [`Limits`](crate::Limits), so no larger limit decides it: unlike
+    /// [`AlgebraError::TooManyTerms`] and the other limits it is not "a limit stopped the
+    /// computation".
+    #[error("the coefficient of this power would have more than {limit} bits")]
+    CoefficientTooLarge {
+        /// A bound on the bits of the power's coefficient: the base's times the exponent's
+        /// size.
+        bits: u64,
+        /// The bound in force.
+        limit: u64,
+    },
+    /// Arguments that do not fit together: a mistake of the calling program, not of the
+    /// expressions it works on.
     #[error("{0}")]
-    Invalid(String),
+    Misuse(Misuse),
+}
+
+/// A setting of a variable set, or a count of its declarations, that has a range
+/// ([`AlgebraError::SettingOutOfRange`]).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+#[non_exhaustive]
+pub enum Setting {
+    /// The degree limit, [`Limits::max_degree`](crate::Limits::max_degree): at least 1.
+    MaxDegree,
+    /// The bits per exponent of
+    /// [`VarSetBuilder::exponent_bits`](crate::VarSetBuilder::exponent_bits): one of
+    /// [`FIELD_BITS`].
+    ExponentBits,
+    /// The number of variables: at most 65 535.
+    Variables,
+    /// The number of radicals declared: at most 8 (their independence is checked on each of
+    /// the `2^n − 1` products of them).
+    Radicals,
+}
+
+/// What needs an angle ([`AlgebraError::NotAnAngle`]).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+#[non_exhaustive]
+pub enum AngleUse {
+    /// `e^{inθ}`, [`Poly::exp_i`](crate::Poly::exp_i), and through it `cos θ` and `sin θ`.
+    ExpI,
+    /// The value of an angle at a point, [`Point::with_angle`](crate::Point::with_angle).
+    PointWithAngle,
+}
+
+/// How a call's arguments do not fit together ([`AlgebraError::Misuse`]).
+#[derive(Clone, Debug, PartialEq, Eq, Error)]
+#[non_exhaustive]
+pub enum Misuse {
+    /// A monomial given by its exponents, with not one exponent per variable
+    /// ([`MonomialIndex`](crate::MonomialIndex)).
+    #[error("{exponents} exponents for {variables} variables")]
+    ExponentCount {
+        /// The exponents given.
+        exponents: usize,
+        /// The variables of the set.
+        variables: usize,
+    },
+    /// A bracket with a kept gradient, with not one pair of derivatives per canonical pair.
+    #[error("{pairs} pairs of variables but {derivatives} pairs of derivatives")]
+    GradientCount {
+        /// The canonical pairs given.
+        pairs: usize,
+        /// The pairs of derivatives given.
+        derivatives: usize,
+    },
+    /// A sum of products of no products, which has no variable set to be zero in.
+    #[error("an empty sum of products has no variable set")]
+    EmptySum,
+    /// A power `r^M` of a radical given to
+    /// [`Poly::reduce_radicals`](crate::Poly::reduce_radicals) that leaves a negative power of
+    /// `r` in the element: less than [`Poly::radical_powers`](crate::Poly::radical_powers)
+    /// gives.
+    #[error("r^{multiplier} does not clear the power {power} of the radical {radical}")]
+    RadicalPower {
+        /// The radical as shown.
+        radical: String,
+        /// The power `M` of the radical given.
+        multiplier: i64,
+        /// A power of the radical in the element that `M` does not clear.
+        power: i64,
+    },
+}
+
+/// How a refused name reads: `"2Q" cannot name a variable: …`, a long one by its start and
+/// length.
+fn invalid_name(name: &str, reason: BadName) -> String {
+    let shown = match (reason, long_name(name)) {
+        (BadName::TooLong, Some((start, n))) => format!("{start:?}…, {n} characters long,"),
+        _ => format!("{name:?}"),
+    };
+    format!("{shown} cannot name a variable: {reason}")
+}
+
+/// How a setting out of range reads.
+fn setting_out_of_range(setting: Setting, value: u64) -> String {
+    match setting {
+        Setting::MaxDegree => "the degree limit (max_degree) must be at least 1: at 0 no \
+                               variable could be written, not even x itself"
+            .into(),
+        Setting::ExponentBits => {
+            format!("exponent bits must be one of {FIELD_BITS:?}, not {value}")
+        }
+        Setting::Variables => "too many variables".into(),
+        Setting::Radicals => {
+            format!("{value} radicals are declared; at most {MAX_RADICALS} are supported")
+        }
+    }
+}
+
+/// How a variable that is not an angle reads where one is needed.
+fn not_an_angle(needed_by: AngleUse, var: &str, kind: VarKind) -> String {
+    match needed_by {
+        AngleUse::ExpI => format!("e^{{inθ}} needs an angle, and {var} is not declared as one"),
+        AngleUse::PointWithAngle => format!(
+            "Point::with_angle sets an angle, and {var} is {}",
+            kind.described()
+        ),
+    }
 }
 
 /// How a second declaration meets the first, when the names differ.

@@ -52,7 +52,7 @@ mod print;
 pub mod syntax;
 mod varset;
 
-pub use error::AlgebraError;
+pub use error::{AlgebraError, AngleUse, Misuse, Setting};
 pub use lower::{quoted_name, split_names, FUNCTIONS};
 pub use lower::{Context, NoContext};
 pub use number::{

@@ -4,7 +4,7 @@
 use std::fmt;
 use std::sync::Mutex;
 
-use crate::error::AlgebraError;
+use crate::error::{AlgebraError, Setting};
 
 mod names;
 
@@ -243,6 +243,10 @@ impl Default for Limits {
 /// The widths an exponent field may have: `64 / bits` fields fill a word (the bits left over,
 /// at the bottom of each word, stay zero).
 pub const FIELD_BITS: [u32; 6] = [8, 10, 12, 16, 21, 32];
+
+/// The most radicals a set may declare: their independence is checked on every product of
+/// them, `2^n − 1` products.
+pub(crate) const MAX_RADICALS: usize = 8;
 
 /// How exponent vectors are packed: `bits` per variable, fields never straddle words, variable
 /// 0 in the top bits of word 0, each field storing `e + 2^(bits−1)`. Comparing the words as
@@ -807,16 +811,16 @@ impl VarSetBuilder {
     /// would leave no variable writable, not even `x` itself.
     pub fn build(self) -> Result<Vars, AlgebraError> {
         if self.limits.max_degree == 0 {
-            return Err(AlgebraError::Invalid(
-                "the degree limit (max_degree) must be at least 1: at 0 no variable could be \
-                 written, not even x itself"
-                    .into(),
-            ));
+            return Err(AlgebraError::SettingOutOfRange {
+                setting: Setting::MaxDegree,
+                value: 0,
+            });
         }
         if let Some(bits) = self.bits.filter(|b| !FIELD_BITS.contains(b)) {
-            return Err(AlgebraError::Invalid(format!(
-                "exponent bits must be one of {FIELD_BITS:?}, not {bits}"
-            )));
+            return Err(AlgebraError::SettingOutOfRange {
+                setting: Setting::ExponentBits,
+                value: bits.into(),
+            });
         }
         for (k, v) in self.vars.iter().enumerate() {
             if v.kind == VarKind::Denominator {
@@ -828,17 +832,11 @@ impl VarSetBuilder {
                 }
                 continue;
             }
-            if let Some(bad) = BadName::of(&v.name) {
-                // A long name is shown by its start and its length.
-                let shown = match (bad, long_name(&v.name)) {
-                    (BadName::TooLong, Some((start, n))) => {
-                        format!("{start:?}…, {n} characters long,")
-                    }
-                    _ => format!("{:?}", v.name),
-                };
-                return Err(AlgebraError::Invalid(format!(
-                    "{shown} cannot name a variable: {bad}"
-                )));
+            if let Some(reason) = BadName::of(&v.name) {
+                return Err(AlgebraError::InvalidName {
+                    name: v.name.clone(),
+                    reason,
+                });
             }
             for w in &self.vars[..k] {
                 if w.spelled_alike(v) {
@@ -858,7 +856,10 @@ impl VarSetBuilder {
             }
         }
         if self.vars.len() > u16::MAX as usize {
-            return Err(AlgebraError::Invalid("too many variables".into()));
+            return Err(AlgebraError::SettingOutOfRange {
+                setting: Setting::Variables,
+                value: self.vars.len() as u64,
+            });
         }
         let bits = self
             .bits
@@ -913,12 +914,21 @@ mod tests {
     fn function_names_are_reserved() {
         for name in ["i", "cos", "sin", "exp", "conj", "re", "im"] {
             let err = VarSet::builder().coordinate("x").parameter(name).build();
+            let err = err.map(|_| ()).unwrap_err();
             assert_eq!(
-                err.map(|_| ()),
-                Err(AlgebraError::Invalid(format!(
+                err,
+                AlgebraError::InvalidName {
+                    name: name.into(),
+                    reason: BadName::Reserved
+                },
+                "{name}"
+            );
+            assert_eq!(
+                err.to_string(),
+                format!(
                     "{name:?} cannot name a variable: i, cos, sin, exp, conj, re and im are \
                      reserved"
-                ))),
+                ),
                 "{name}"
             );
         }
@@ -957,22 +967,37 @@ mod tests {
                  ℓ and the subscript digits ₀–₉)",
             ),
         ] {
+            let err = VarSet::builder().coordinate(name).build().map(|_| ());
+            let err = err.unwrap_err();
+            assert!(
+                matches!(&err, AlgebraError::InvalidName { name: n, reason }
+                    if n == name && reason.to_string() == why),
+                "{name:?}: {err:?}"
+            );
             assert_eq!(
-                VarSet::builder().coordinate(name).build().map(|_| ()),
-                Err(AlgebraError::Invalid(format!(
-                    "{name:?} cannot name a variable: {why}"
-                ))),
+                err.to_string(),
+                format!("{name:?} cannot name a variable: {why}"),
                 "{name:?}"
             );
         }
+        // A long name is carried whole, and shown by its start and its length.
         let long = "a".repeat(81);
+        let err = VarSet::builder().parameter(&long).build().map(|_| ());
+        let err = err.unwrap_err();
         assert_eq!(
-            VarSet::builder().parameter(&long).build().map(|_| ()),
-            Err(AlgebraError::Invalid(format!(
+            err,
+            AlgebraError::InvalidName {
+                name: long.clone(),
+                reason: BadName::TooLong
+            }
+        );
+        assert_eq!(
+            err.to_string(),
+            format!(
                 "{:?}…, 81 characters long, cannot name a variable: a name has at most 80 \
                  characters",
                 "a".repeat(40)
-            )))
+            )
         );
         for name in ["a_b", "p_theta", "x₁", "ħ", "H", "rank", &"a".repeat(80)] {
             assert_eq!(BadName::of(name), None, "{name}");

@@ -22,9 +22,10 @@ const MAX_CANDIDATES: usize = 4096;
 const MAX_REDUCED_TERMS: usize = 200_000;
 
 thread_local! {
-    /// Whether this thread is reading the definitions of denominator atoms
-    /// ([`Poly::denominator_atoms`]), which may not divide by a sum themselves.
-    static READING_ATOMS: std::cell::Cell<bool> = const { std::cell::Cell::new(false) };
+    /// The denominator atom whose definition this thread is reading
+    /// ([`Poly::denominator_atoms`]), which may not divide by a sum itself.
+    static READING_ATOMS: std::cell::RefCell<Option<String>> =
+        const { std::cell::RefCell::new(None) };
 }
 
 /// An atom, the polynomial it stands for, and the power of that polynomial an element was
@@ -38,21 +39,25 @@ impl<C: Coefficient> Poly<C> {
     pub fn denominator_atoms(vars: &Vars) -> Result<Vec<(Var, Self)>, AlgebraError> {
         // A definition that divides by a sum (`x + 1/(x − y)`) would be read through the
         // atoms again while they are being read: refused here, at the second entry.
-        if READING_ATOMS.get() {
-            return Err(AlgebraError::Invalid(
-                "divides by a sum of terms, which a denominator's definition may not".into(),
-            ));
+        if let Some(denominator) = READING_ATOMS.with_borrow(Option::clone) {
+            return Err(AlgebraError::DenominatorRefused {
+                denominator,
+                message: "divides by a sum of terms, which a denominator's definition may not"
+                    .into(),
+            });
         }
         let atoms: Vec<Var> = vars.denominators().collect();
         atoms
             .iter()
             .map(|&v| {
                 let text = vars.variable(v).name();
-                let invalid =
-                    |why: String| AlgebraError::Invalid(format!("the denominator {text} {why}"));
-                READING_ATOMS.set(true);
+                let invalid = |why: String| AlgebraError::DenominatorRefused {
+                    denominator: text.to_string(),
+                    message: format!("the denominator {text} {why}"),
+                };
+                READING_ATOMS.set(Some(text.to_string()));
                 let parsed = Self::parse(vars, text);
-                READING_ATOMS.set(false);
+                READING_ATOMS.set(None);
                 let d = parsed.map_err(|e| invalid(format!("does not read: {e}")))?;
                 if d.is_zero() || d.is_monomial() {
                     return Err(invalid("is zero or a single term, not a sum".into()));

@@ -7,7 +7,7 @@
 use rustc_hash::FxHashMap;
 
 use super::{check_exponent, Term};
-use crate::error::AlgebraError;
+use crate::error::{AlgebraError, Misuse};
 use crate::number::Coefficient;
 use crate::varset::Vars;
 
@@ -145,11 +145,10 @@ impl<V> MonomialIndex<V> {
     /// The packed words of the monomial with exponents `exps`, as a polynomial stores them.
     fn pack(&self, exps: &[i64]) -> Result<Vec<u64>, AlgebraError> {
         if exps.len() != self.vars.len() {
-            return Err(AlgebraError::Invalid(format!(
-                "{} exponents for {} variables",
-                exps.len(),
-                self.vars.len()
-            )));
+            return Err(AlgebraError::Misuse(Misuse::ExponentCount {
+                exponents: exps.len(),
+                variables: self.vars.len(),
+            }));
         }
         for (v, &e) in self.vars.vars().zip(exps) {
             check_exponent(&self.vars, v, e)?;

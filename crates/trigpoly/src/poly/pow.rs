@@ -38,10 +38,12 @@ impl<C: Coefficient> Poly<C> {
                     .map(|q| q.numer().bits().max(q.denom().bits()))
                     .max()
                     .unwrap_or(1);
-                if bits.saturating_mul(e.unsigned_abs()) > MAX_COEFFICIENT_BITS {
-                    return Err(AlgebraError::Invalid(format!(
-                        "the coefficient of this power would have more than {MAX_COEFFICIENT_BITS} bits"
-                    )));
+                let bits = bits.saturating_mul(e.unsigned_abs());
+                if bits > MAX_COEFFICIENT_BITS {
+                    return Err(AlgebraError::CoefficientTooLarge {
+                        bits,
+                        limit: MAX_COEFFICIENT_BITS,
+                    });
                 }
             }
             return Ok(self.monomial_pow(e));

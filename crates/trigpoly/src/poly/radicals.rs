@@ -13,9 +13,9 @@
 use std::collections::BTreeMap;
 
 use super::Poly;
-use crate::error::AlgebraError;
+use crate::error::{AlgebraError, Misuse, Setting};
 use crate::number::{Coefficient, Rational};
-use crate::varset::{Var, VarKind, Vars};
+use crate::varset::{Var, VarKind, Vars, MAX_RADICALS};
 use crate::Point;
 
 thread_local! {
@@ -26,9 +26,6 @@ thread_local! {
 /// A radical, its radicand, and the power of the radical an element was multiplied by.
 pub type ReducedRadical<C> = (Var, Poly<C>, i64);
 
-/// The most radicals a set may declare: their independence is checked on every product of
-/// them, `2^n − 1` products.
-const MAX_RADICALS: usize = 8;
 /// The most terms of a norm that a refused division writes out (a longer one by its size):
 /// the norm is what to declare, and the user has not seen it.
 const NORM_TERMS: usize = 64;
@@ -50,11 +47,9 @@ impl<C: Coefficient> Poly<C> {
             .map(|v| {
                 let variable = vars.variable(v);
                 let text = variable.radicand().unwrap_or_default();
-                let invalid = |why: &str| {
-                    AlgebraError::Invalid(format!(
-                        "the radicand {text} of {} {why}",
-                        variable.unicode()
-                    ))
+                let invalid = |why: &str| AlgebraError::RadicalRefused {
+                    radicals: vec![variable.unicode().to_string()],
+                    message: format!("the radicand {text} of {} {why}", variable.unicode()),
                 };
                 // A radicand that divides by a polynomial would be read again by the division
                 // (`Poly::inverse_by_atoms` takes radicands): refused at the second reading.
@@ -65,7 +60,10 @@ impl<C: Coefficient> Poly<C> {
                 READING.with(|r| r.set(false));
                 let r = r.map_err(|e| invalid(&format!("does not read: {e}")))?;
                 match Self::radicand_refusal(variable.unicode(), &r) {
-                    Some(why) => Err(AlgebraError::Invalid(why)),
+                    Some(why) => Err(AlgebraError::RadicalRefused {
+                        radicals: vec![variable.unicode().to_string()],
+                        message: why,
+                    }),
                     None => Ok((v, r)),
                 }
             })
@@ -167,10 +165,10 @@ impl<C: Coefficient> Poly<C> {
             return Ok(());
         }
         if radicals.len() > MAX_RADICALS {
-            return Err(AlgebraError::Invalid(format!(
-                "{} radicals are declared; at most {MAX_RADICALS} are supported",
-                radicals.len()
-            )));
+            return Err(AlgebraError::SettingOutOfRange {
+                setting: Setting::Radicals,
+                value: radicals.len() as u64,
+            });
         }
         let used: Vec<Var> = vars
             .vars()
@@ -247,7 +245,13 @@ impl<C: Coefficient> Poly<C> {
                         names.join(", ")
                     ),
                 };
-                return Err(AlgebraError::Invalid(message));
+                let radicals = radicals
+                    .iter()
+                    .enumerate()
+                    .filter(|&(i, _)| chosen(i))
+                    .map(|(_, (v, _))| vars.variable(*v).unicode().to_string())
+                    .collect();
+                return Err(AlgebraError::RadicalRefused { radicals, message });
             }
         }
         Ok(())
@@ -426,11 +430,11 @@ impl<C: Coefficient> Poly<C> {
             let mut e = t.exponents();
             let k = e[j] + m;
             if k < 0 {
-                return Err(AlgebraError::Invalid(format!(
-                    "r^{m} does not clear the power {} of the radical {}",
-                    e[j],
-                    self.vars.variable(r).unicode()
-                )));
+                return Err(AlgebraError::Misuse(Misuse::RadicalPower {
+                    radical: self.vars.variable(r).unicode().to_string(),
+                    multiplier: m,
+                    power: e[j],
+                }));
             }
             e[j] = k % 2;
             by_power.entry(k / 2).or_default().push((t.coeff(), e));
@@ -495,11 +499,10 @@ impl<C: Coefficient> Poly<C> {
             numerator = numerator.checked_mul(&rv.checked_pow(-low)?)?;
             norm = match (a.is_zero(), b.is_zero()) {
                 (true, true) => {
-                    return Err(AlgebraError::Invalid(format!(
-                        "division by zero: {} is 0, as {}",
-                        d.brief(),
-                        Self::radical_definition(*r, radicand)
-                    )))
+                    return Err(AlgebraError::DivisorVanishes {
+                        shown: d.brief(),
+                        definition: Self::radical_definition(*r, radicand),
+                    })
                 }
                 (false, true) => a,
                 (true, false) => {

@@ -5,7 +5,7 @@ use std::collections::HashMap;
 use std::fmt;
 
 use super::Poly;
-use crate::error::AlgebraError;
+use crate::error::{AlgebraError, AngleUse};
 use crate::number::{
     Coefficient, GaussianInteger, GaussianRational, Integer, IntegerRing, Rational,
 };
@@ -129,12 +129,14 @@ impl<C: Coefficient> Poly<C> {
     /// and that is not invertible: the value, and what to declare to make it so.
     fn uninvertible_value(&self, err: AlgebraError, v: Var, e: i64) -> AlgebraError {
         match err {
-            AlgebraError::NegativePower { shown, declare } => AlgebraError::Invalid(format!(
-                "cannot substitute {shown} for {}: it appears with exponent {e}, and only single \
-                 terms (monomials) and products of powers of declared denominators are \
-                 invertible; {declare}",
-                self.vars.variable(v).unicode()
-            )),
+            AlgebraError::NegativePower { shown, declare } => {
+                AlgebraError::UninvertibleSubstitution {
+                    shown,
+                    var: self.vars.variable(v).unicode().to_string(),
+                    exponent: e,
+                    declare,
+                }
+            }
             other => other,
         }
     }
@@ -488,10 +490,11 @@ impl Point {
         let variable = self.vars.variable(v);
         let name = variable.unicode().to_string();
         if variable.kind() != VarKind::Angle {
-            return Err(AlgebraError::Invalid(format!(
-                "Point::with_angle sets an angle, and {name} is {}",
-                variable.kind().described()
-            )));
+            return Err(AlgebraError::NotAnAngle {
+                needed_by: AngleUse::PointWithAngle,
+                var: name,
+                kind: variable.kind(),
+            });
         }
         if !(&cos * &cos + &sin * &sin).is_one() {
             return Err(AlgebraError::NotOnUnitCircle(name));

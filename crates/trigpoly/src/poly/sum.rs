@@ -11,7 +11,7 @@ use super::gather::{self, MAX_JACOBIAN_PAIRS};
 use super::mul::{merge_tree, SMALL_SIDE};
 use super::sum_at::MAX_PRODUCTS;
 use super::Poly;
-use crate::error::AlgebraError;
+use crate::error::{AlgebraError, Misuse};
 use crate::number::{Coefficient, IntegerRing, Rational};
 use crate::varset::{Layout, Var, VarSet};
 
@@ -187,11 +187,10 @@ impl<C: Coefficient> Poly<C> {
         gradient: &'a [(Self, Self)],
     ) -> Result<Vec<(&'a Self, Var, &'a Self, bool)>, AlgebraError> {
         if pairs.len() != gradient.len() {
-            return Err(AlgebraError::Invalid(format!(
-                "{} pairs of variables but {} pairs of derivatives",
-                pairs.len(),
-                gradient.len()
-            )));
+            return Err(AlgebraError::Misuse(Misuse::GradientCount {
+                pairs: pairs.len(),
+                derivatives: gradient.len(),
+            }));
         }
         check_pairs(&f.vars, pairs)?;
         let mut terms = Vec::with_capacity(2 * pairs.len());
@@ -329,9 +328,7 @@ impl<C: Coefficient> Poly<C> {
 
     /// The first factor of a sum, which gives its variable set (an empty sum has none).
     pub(super) fn first_factor(first: Option<&Self>) -> Result<&Self, AlgebraError> {
-        first.ok_or_else(|| {
-            AlgebraError::Invalid("an empty sum of products has no variable set".into())
-        })
+        first.ok_or(AlgebraError::Misuse(Misuse::EmptySum))
     }
 
     /// The sum of the streams: one content, a tree of merges, one normalization.

@@ -5,7 +5,7 @@
 use rustc_hash::FxHashMap;
 
 use super::Poly;
-use crate::error::AlgebraError;
+use crate::error::{AlgebraError, AngleUse};
 use crate::number::{
     Coefficient, GaussianAcc, GaussianInteger, GaussianRational, Integer, IntegerRing, Rational,
 };
@@ -15,7 +15,7 @@ use crate::varset::{Var, VarKind, VarSet, Vars};
 impl<C: Coefficient> Poly<C> {
     /// `e^{inθ}` for an angle `θ`.
     pub fn exp_i(vars: &Vars, theta: Var, n: i64) -> Result<Self, AlgebraError> {
-        check_angle::<C>(vars, theta, "e^{inθ}")?;
+        check_angle::<C>(vars, theta)?;
         Self::monomial(vars, C::one(), &[(theta, n)])
     }
 
@@ -353,13 +353,16 @@ impl<T: Clone + Eq + std::hash::Hash> Numbering<T> {
     }
 }
 
-fn check_angle<C: Coefficient>(vars: &VarSet, v: Var, what: &str) -> Result<(), AlgebraError> {
+/// Whether `v` is an angle of `vars`, for `e^{inθ}` with coefficients `C`.
+fn check_angle<C: Coefficient>(vars: &VarSet, v: Var) -> Result<(), AlgebraError> {
     vars.checked_index(v)?;
-    if vars.variable(v).kind() != VarKind::Angle {
-        return Err(AlgebraError::Invalid(format!(
-            "{what} needs an angle, and {} is not declared as one",
-            vars.variable(v).unicode()
-        )));
+    let kind = vars.variable(v).kind();
+    if kind != VarKind::Angle {
+        return Err(AlgebraError::NotAnAngle {
+            needed_by: AngleUse::ExpI,
+            var: vars.variable(v).unicode().to_string(),
+            kind,
+        });
     }
     if !C::HAS_I {
         return Err(AlgebraError::NeedsGaussian(format!(

@@ -1,6 +1,6 @@
 //! Derivatives by an angle: ∂/∂θ cos θ = −sin θ, ∂/∂θ sin θ = cos θ, ∂/∂θ e^{inθ} = in e^{inθ}.
 
-use trigpoly::Rational;
+use trigpoly::{AlgebraError, Misuse, Rational};
 
 use crate::common::{p, phase_space, var, G, Q};
 
@@ -100,6 +100,13 @@ fn sum_of_jacobians_with_gradient_rejects_a_gradient_of_another_length() {
         G::sum_of_jacobians(&f, &g, &[(x, px)])
     );
     let err = G::sum_of_jacobians_with_gradient(&f, &[(x, px)], &[]).unwrap_err();
+    assert_eq!(
+        err,
+        AlgebraError::Misuse(Misuse::GradientCount {
+            pairs: 1,
+            derivatives: 0
+        })
+    );
     assert_eq!(
         err.to_string(),
         "1 pairs of variables but 0 pairs of derivatives"

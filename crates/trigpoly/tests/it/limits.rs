@@ -1,7 +1,7 @@
 //! Limits: runaway expansions and exponents end in an error value, never in an allocation
 //! blow-up, a wrapped exponent or a panic.
 
-use trigpoly::{AlgebraError, Limits, Poly, Rational, VarSet, Vars};
+use trigpoly::{AlgebraError, Limits, Poly, Rational, Setting, VarSet, Vars};
 
 use crate::common::{coordinates, p, phase_space, var, G, Q};
 
@@ -285,15 +285,21 @@ fn exponent_fields_follow_the_degree_limit() {
         .build()
         .unwrap();
     assert_eq!(named, chosen);
+    let thirteen = VarSet::builder()
+        .coordinate("x")
+        .exponent_bits(13)
+        .build()
+        .map(|v| v.len());
     assert_eq!(
-        VarSet::builder()
-            .coordinate("x")
-            .exponent_bits(13)
-            .build()
-            .map(|v| v.len()),
-        Err(AlgebraError::Invalid(
-            "exponent bits must be one of [8, 10, 12, 16, 21, 32], not 13".into()
-        ))
+        thirteen,
+        Err(AlgebraError::SettingOutOfRange {
+            setting: Setting::ExponentBits,
+            value: 13
+        })
+    );
+    assert_eq!(
+        thirteen.unwrap_err().to_string(),
+        "exponent bits must be one of [8, 10, 12, 16, 21, 32], not 13"
     );
 }
 
@@ -305,13 +311,18 @@ fn a_degree_limit_of_zero_is_refused() {
         max_degree: 0,
         ..Limits::default()
     };
-    let refused = Err(AlgebraError::Invalid(
+    let refused = Err(AlgebraError::SettingOutOfRange {
+        setting: Setting::MaxDegree,
+        value: 0,
+    });
+    let built = VarSet::builder().coordinate("x").limits(zero).build();
+    let built = built.map(|v| v.len());
+    assert_eq!(built, refused);
+    assert_eq!(
+        built.unwrap_err().to_string(),
         "the degree limit (max_degree) must be at least 1: at 0 no variable could be written, \
          not even x itself"
-            .into(),
-    ));
-    let built = VarSet::builder().coordinate("x").limits(zero).build();
-    assert_eq!(built.map(|v| v.len()), refused);
+    );
     let x = coordinates(&["x"]);
     assert_eq!(x.with_limits(zero).map(|v| v.len()), refused);
     let one = x

@@ -21,5 +21,6 @@ mod limits;
 mod printing;
 mod products;
 mod props;
+mod refusals;
 mod reject;
 mod subst_eval;

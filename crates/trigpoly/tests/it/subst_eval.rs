@@ -39,10 +39,18 @@ fn subst_of_a_coordinate_by_a_sum_expands_the_binomial() {
                    terms (monomials) and products of powers of declared denominators are \
                    invertible; declare it (or its factors) as a denominator: denominators = \
                    [\"x + y\"] in [phase_space]";
-    assert!(
-        matches!(g.subst(x, &shifted), Err(AlgebraError::Invalid(m)) if m == refused),
-        "{:?}",
-        g.subst(x, &shifted)
+    let err = g.subst(x, &shifted).unwrap_err();
+    assert_eq!(err.to_string(), refused);
+    assert_eq!(
+        err,
+        AlgebraError::UninvertibleSubstitution {
+            shown: "x + y".into(),
+            var: "x".into(),
+            exponent: -1,
+            declare: "declare it (or its factors) as a denominator: denominators = [\"x + y\"] \
+                      in [phase_space]"
+                .into(),
+        }
     );
     // A monomial may replace a variable that has negative powers.
     assert_eq!(

@@ -1,0 +1,187 @@
+//! Refusals as data: each way the algebra refuses is a variant of [`AlgebraError`] that a
+//! program matches on, with what went wrong in its fields, and its message as it reads.
+
+use pretty_assertions::assert_eq;
+use trigpoly::{
+    AlgebraError, AngleUse, BadName, Expr, Misuse, MonomialIndex, Point, Rational, Setting,
+    VarKind, VarSet,
+};
+
+use crate::common::{p, phase_space, var, G, Q};
+
+/// A reserved word as a variable's name: the name and the reason, not a sentence to parse.
+#[test]
+fn a_reserved_name_is_refused_with_the_name() {
+    let err = VarSet::builder()
+        .coordinate("x")
+        .parameter("sin")
+        .build()
+        .map(|_| ())
+        .unwrap_err();
+    assert_eq!(
+        err,
+        AlgebraError::InvalidName {
+            name: "sin".into(),
+            reason: BadName::Reserved,
+        }
+    );
+    assert_eq!(
+        err.to_string(),
+        "\"sin\" cannot name a variable: i, cos, sin, exp, conj, re and im are reserved"
+    );
+    let Err(AlgebraError::InvalidName { name, reason }) =
+        VarSet::builder().momentum("a__b").build()
+    else {
+        panic!("a__b is refused by name");
+    };
+    assert_eq!((name.as_str(), reason), ("a__b", BadName::EmptySubscript));
+}
+
+/// Nine radicals, one past the most a set may declare: the count, as a setting out of range.
+#[test]
+fn too_many_radicals_are_a_setting_out_of_range() {
+    let mut builder = VarSet::builder().coordinate("x");
+    for k in 1..=9 {
+        builder = builder.radical(&format!("r{k}"), &format!("x + {k}"));
+    }
+    let vars = builder.build().unwrap();
+    let err = Expr::check_radicals(&vars).unwrap_err();
+    assert_eq!(
+        err,
+        AlgebraError::SettingOutOfRange {
+            setting: Setting::Radicals,
+            value: 9,
+        }
+    );
+    assert_eq!(
+        err.to_string(),
+        "9 radicals are declared; at most 8 are supported"
+    );
+}
+
+/// A radicand that is a square, and a denominator that is a single term: each names what was
+/// declared.
+#[test]
+fn a_refused_declaration_names_what_was_declared() {
+    let square = VarSet::builder()
+        .coordinate("x")
+        .coordinate("y")
+        .radical("r", "x^2 + 2*x*y + y^2")
+        .build()
+        .unwrap();
+    let err = Expr::check_radicals(&square).unwrap_err();
+    assert!(
+        matches!(&err, AlgebraError::RadicalRefused { radicals, .. } if radicals == &["r"]),
+        "{err:?}"
+    );
+    assert!(
+        err.to_string()
+            .starts_with("the radicand of r = √(x² + 2xy + y²) is the square of x + y"),
+        "{err}"
+    );
+    let constant = VarSet::builder()
+        .coordinate("x")
+        .radical("s", "2")
+        .build()
+        .unwrap();
+    let err = Expr::radicals(&constant).unwrap_err();
+    assert!(
+        matches!(&err, AlgebraError::RadicalRefused { radicals, .. } if radicals == &["s"]),
+        "{err:?}"
+    );
+    let term = VarSet::builder()
+        .coordinate("x")
+        .denominator("2*x", "2x", "2 x")
+        .build()
+        .unwrap();
+    let err = Expr::denominator_atoms(&term).unwrap_err();
+    assert_eq!(
+        err,
+        AlgebraError::DenominatorRefused {
+            denominator: "(2*x)".into(),
+            message: "the denominator (2*x) is zero or a single term, not a sum".into(),
+        }
+    );
+    assert_eq!(
+        err.to_string(),
+        "the denominator (2*x) is zero or a single term, not a sum"
+    );
+}
+
+/// A coordinate where an angle must be: which use, which variable, what it is instead.
+#[test]
+fn a_coordinate_is_not_an_angle() {
+    let vars = phase_space();
+    let x = var(&vars, "x");
+    let err = G::exp_i(&vars, x, 2).unwrap_err();
+    assert_eq!(
+        err,
+        AlgebraError::NotAnAngle {
+            needed_by: AngleUse::ExpI,
+            var: "x".into(),
+            kind: VarKind::Coordinate,
+        }
+    );
+    assert_eq!(
+        err.to_string(),
+        "e^{inθ} needs an angle, and x is not declared as one"
+    );
+    let p_y = var(&vars, "p_y");
+    let err = Point::new(&vars)
+        .with_angle(p_y, Rational::new(3, 5), Rational::new(4, 5))
+        .unwrap_err();
+    assert_eq!(
+        err,
+        AlgebraError::NotAnAngle {
+            needed_by: AngleUse::PointWithAngle,
+            var: "p_y".into(),
+            kind: VarKind::Momentum,
+        }
+    );
+    assert_eq!(
+        err.to_string(),
+        "Point::with_angle sets an angle, and p_y is a momentum"
+    );
+}
+
+/// A power of a constant whose coefficient would pass the fixed bound on its size: the bound,
+/// which no limit of the set raises.
+#[test]
+fn a_power_past_the_coefficient_bound_is_refused_with_the_bound() {
+    let vars = phase_space();
+    let half: Q = p(&vars, "3/2");
+    let err = half.checked_pow(1 << 30).unwrap_err();
+    assert_eq!(
+        err,
+        AlgebraError::CoefficientTooLarge {
+            bits: 2 << 30,
+            limit: 1 << 24,
+        }
+    );
+    assert_eq!(
+        err.to_string(),
+        "the coefficient of this power would have more than 16777216 bits"
+    );
+}
+
+/// Arguments that do not fit together: the counts that differ.
+#[test]
+fn misuse_says_which_counts_differ() {
+    let vars = phase_space();
+    let mut index = MonomialIndex::new(&vars);
+    let err = index.insert(&[1, 2], ()).unwrap_err();
+    assert_eq!(
+        err,
+        AlgebraError::Misuse(Misuse::ExponentCount {
+            exponents: 2,
+            variables: 8,
+        })
+    );
+    assert_eq!(err.to_string(), "2 exponents for 8 variables");
+    let err = G::sum_of_products(&[]).unwrap_err();
+    assert_eq!(err, AlgebraError::Misuse(Misuse::EmptySum));
+    assert_eq!(
+        err.to_string(),
+        "an empty sum of products has no variable set"
+    );
+}
