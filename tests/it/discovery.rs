@@ -423,6 +423,16 @@ const COMMANDS: &[(&str, &str)] = &[
          --momenta-degree 2 --positions-degree 4 --trig-degree 2 --laurent --new-only",
     ),
     (
+        "swii-rotor-search",
+        "superint search systems/smorodinsky-winternitz-ii-rotor.toml --when 'p_theta = 2*I*omega' \
+         --momenta-degree 3 --positions-degree 3 --trig-degree 2 --laurent --new-only",
+    ),
+    (
+        "swii-rotor-closure",
+        "superint closure systems/smorodinsky-winternitz-ii-rotor.toml Hx Hy P_1_1 Q_1_1 R_1_1 S_1_1 \
+         --when 'p_theta = 2*I*omega' --degree 2 --symbolic beta,gamma",
+    ),
+    (
         "swi-rotor-closure",
         "superint closure systems/smorodinsky-winternitz-i-rotor.toml Hx Hy X P_1_1 Q_1_1 R_1_1 \
          S_1_1 --when 'p_theta = 2*I*omega' --degree 2 --symbolic beta,gamma --parameters-degree 1",
@@ -509,6 +519,20 @@ fn run_on_hamiltonian_alone(name: &str) -> String {
     let out = superint(&args);
     let text = normalize(&String::from_utf8(out.stdout).expect("UTF-8"));
     assert_eq!(out.status.code(), Some(0), "{text}");
+    text
+}
+
+/// [`run_on_hamiltonian_alone`], asserting that each expected piece of its output appears
+/// (whitespace normalized); returns the normalized output.
+#[track_caller]
+fn expect_alone(name: &str, pieces: &[&str]) -> String {
+    let text = run_on_hamiltonian_alone(name);
+    for piece in pieces {
+        assert!(
+            text.contains(&normalize(piece)),
+            "`{name}` on H alone does not print {piece:?}; it printed:\n{text}"
+        );
+    }
     text
 }
 
@@ -3398,19 +3422,19 @@ fn caged_oscillator_quartic_and_quintic_integrals_and_their_polynomial_algebra()
             "None: the known integrals generate every integral in the space.",
         ],
     );
-    let text = run_on_hamiltonian_alone("caged-search");
-    for piece in [
-        "Known integrals in the space: H.",
-        "I36 = p_y² + 4ω²y² + 2β/y²",
-        "I59 = x² p_x² p_y² − 2xy p_x³ p_y + y² p_x⁴ + 2ω²x³y p_x p_y − 2ω²x²y² p_x² \
-         + 2βx² p_x²/y² − 4αy p_x p_y/x + 4αy² p_x²/x² + ω⁴x⁴y² − 4ω²αy² + 4α²y²/x⁴",
-        "I60 = x p_x³ p_y² − y p_x⁴ p_y − ω²x³ p_x p_y² + 6ω²x²y p_x² p_y − 4ω²xy² p_x³ \
-         + 2βx p_x³/y² + 2α p_x p_y²/x − 4αy p_x² p_y/x² − ω⁴x⁴y p_y + 4ω⁴x³y² p_x \
-         − 2ω²βx³ p_x/y² + 4ω²αy p_y − 8ω²αy² p_x/x + 4αβ p_x/(xy²) − 4α²y p_y/x⁴",
-        "4 claims: 4 proved, 0 refuted",
-    ] {
-        assert!(text.contains(&normalize(piece)), "{piece}: {text}");
-    }
+    let text = expect_alone(
+        "caged-search",
+        &[
+            "Known integrals in the space: H.",
+            "I36 = p_y² + 4ω²y² + 2β/y²",
+            "I59 = x² p_x² p_y² − 2xy p_x³ p_y + y² p_x⁴ + 2ω²x³y p_x p_y − 2ω²x²y² p_x² \
+             + 2βx² p_x²/y² − 4αy p_x p_y/x + 4αy² p_x²/x² + ω⁴x⁴y² − 4ω²αy² + 4α²y²/x⁴",
+            "I60 = x p_x³ p_y² − y p_x⁴ p_y − ω²x³ p_x p_y² + 6ω²x²y p_x² p_y − 4ω²xy² p_x³ \
+             + 2βx p_x³/y² + 2α p_x p_y²/x − 4αy p_x² p_y/x² − ω⁴x⁴y p_y + 4ω⁴x³y² p_x \
+             − 2ω²βx³ p_x/y² + 4ω²αy p_y − 8ω²αy² p_x/x + 4αβ p_x/(xy²) − 4α²y p_y/x⁴",
+            "4 claims: 4 proved, 0 refuted",
+        ],
+    );
     assert_eq!(text.matches(" = 0 [I").count(), 3, "{text}");
     expect(
         "caged-closure",
@@ -3664,15 +3688,15 @@ fn stark_search_finds_the_field_corrected_runge_lenz_component_from_h_alone() {
             "None: the known integrals generate every integral in the space.",
         ],
     );
-    let text = run_on_hamiltonian_alone("stark-search");
-    for piece in [
-        "Known integrals in the space: H.",
-        "I11 = x p_y − y p_x",
-        "I22 = 2x p_x p_z + 2y p_y p_z − 2z p_x² − 2z p_y² + MFx² + MFy² + 2Mkz/r",
-        "3 claims: 3 proved, 0 refuted",
-    ] {
-        assert!(text.contains(&normalize(piece)), "{piece}: {text}");
-    }
+    let text = expect_alone(
+        "stark-search",
+        &[
+            "Known integrals in the space: H.",
+            "I11 = x p_y − y p_x",
+            "I22 = 2x p_x p_z + 2y p_y p_z − 2z p_x² − 2z p_y² + MFx² + MFy² + 2Mkz/r",
+            "3 claims: 3 proved, 0 refuted",
+        ],
+    );
     assert_eq!(text.matches(" = 0 [I").count(), 2, "{text}");
     expect(
         "stark-search-4",
@@ -4457,17 +4481,17 @@ fn zernike_tensor_found_from_h_alone_and_its_cubic_higgs_algebra() {
             "None: the known integrals generate every integral in the space.",
         ],
     );
-    let sphere = run_on_hamiltonian_alone("zernike-search-sphere");
-    for piece in [
-        "I4 = x p_y − y p_x",
-        "I7 = s p_y",
-        "I8 = s p_x",
-        "{I7, H} = 0 at γ₁ = 0 [I7 proved]",
-        "{I8, H} = 0 at γ₁ = 0 [I8 proved]",
-        "4 claims: 4 proved, 0 refuted",
-    ] {
-        assert!(sphere.contains(&normalize(piece)), "{piece}: {sphere}");
-    }
+    expect_alone(
+        "zernike-search-sphere",
+        &[
+            "I4 = x p_y − y p_x",
+            "I7 = s p_y",
+            "I8 = s p_x",
+            "{I7, H} = 0 at γ₁ = 0 [I7 proved]",
+            "{I8, H} = 0 at γ₁ = 0 [I8 proved]",
+            "4 claims: 4 proved, 0 refuted",
+        ],
+    );
     expect(
         "zernike-closure",
         &[
@@ -4569,16 +4593,16 @@ fn sw_i_rotor_resonant_integrals_found_and_their_algebra() {
             "5 claims: 5 proved, 0 refuted",
         ],
     );
-    let alone = run_on_hamiltonian_alone("swi-rotor-search");
-    for piece in [
-        "Known integrals in the space: H.",
-        "the generated ones span 21 of the 26 dimensions",
-        "I2 = p_y² + M²ω²y² + 2Mγ/y²",
-        "I7 = (p_x² − M²ω²x² + 2Mβ/x²) cos θ + 2Mωx p_x sin θ",
-        "6 claims: 6 proved, 0 refuted",
-    ] {
-        assert!(alone.contains(&normalize(piece)), "{piece}: {alone}");
-    }
+    let alone = expect_alone(
+        "swi-rotor-search",
+        &[
+            "Known integrals in the space: H.",
+            "the generated ones span 21 of the 26 dimensions",
+            "I2 = p_y² + M²ω²y² + 2Mγ/y²",
+            "I7 = (p_x² − M²ω²x² + 2Mβ/x²) cos θ + 2Mωx p_x sin θ",
+            "6 claims: 6 proved, 0 refuted",
+        ],
+    );
     assert_eq!(alone.matches(" = 0 at p_θ = 2Iω [I").count(), 5, "{alone}");
     expect(
         "swi-rotor-search-1-2",
@@ -4600,6 +4624,85 @@ fn sw_i_rotor_resonant_integrals_found_and_their_algebra() {
             "2M²ω² X + P_1_1 R_1_1 + Q_1_1 S_1_1 = 4M² H_x H_y at p_θ = 2Iω [R1 proved]",
             "8M³ω²β + P_1_1² + Q_1_1² = 4M² H_x² at p_θ = 2Iω [R2 proved]",
             "15 claims: 15 proved, 0 refuted",
+        ],
+    );
+}
+
+/// The paper's rotor in the Smorodinsky–Winternitz potential `V_II`, loaded and checked:
+/// every claim of the file holds (the quadratic ladder `A` in `x` and the shifted linear
+/// ladder `C` in `y`, both of frequency `2ω`, the resonant integrals at `Ω = 2mω/n`, `V_II`'s
+/// integral `X` as `Im(A C̄)` up to `H_x` and as a product of the resonant ones, so(2,1) and
+/// the canonical pair `{R, S} = −2Mω`, rank 5), and each of its four false neighbours is
+/// refuted: `C` without its shift (residual `−γ`), `R_{1,1}` at `Ω = ω`, the sign of `H_x` in
+/// `X`, and rank 5 with `H = H_x + H_y + F2`.
+#[test]
+fn sw_ii_rotor_claims_are_proved_and_its_false_neighbours_refuted() {
+    let file = system_file("smorodinsky-winternitz-ii-rotor.toml");
+    assert_claims_as_expected(
+        &file,
+        &[
+            "separable",
+            "integrals",
+            "ladders",
+            "tower",
+            "resonance",
+            "x-relation",
+            "algebra",
+            "rank",
+        ],
+        &[
+            "false-ladder-shift",
+            "false-resonance",
+            "false-x-sign",
+            "false-rank",
+        ],
+    );
+    assert!(crate::holds(
+        &file,
+        "{p_y + 2*i*M*omega*y, H} - 2*i*omega*(p_y + 2*i*M*omega*y)",
+        "-gamma"
+    ));
+}
+
+/// The rotor in `V_II` at `Ω = 2ω`: to third order, the new integrals are the linear
+/// `2R_{1,1}`, `−2S_{1,1}` and the quadratic `P_{1,1}`, `−Q_{1,1}`, and from `H` alone the same
+/// four (they generate `H_x`, `H_y` and `X`); `H_x, H_y, P, Q, R, S` close at degree 2 into
+/// so(2,1) and the oscillator algebra, for every `β, γ`.
+#[test]
+fn sw_ii_rotor_resonant_integrals_found_and_their_algebra() {
+    expect(
+        "swii-rotor-search",
+        &[
+            "1250 unknowns",
+            "Dimension of the space of integrals: 17. By degree in the momenta: ≤ 0: 1, \
+             ≤ 1: 3, ≤ 2: 10, ≤ 3: 17.",
+            "Known integrals in the space: H, H_x, H_y, X.",
+            "the generated ones span 13 of the 17 dimensions",
+            "I2 = 2 p_y cos θ + (4Mωy + γ/ω) sin θ = 2 R_{1,1}",
+            "= −2 S_{1,1}",
+            "= P_{1,1}",
+            "= −Q_{1,1}",
+        ],
+    );
+    let alone = expect_alone(
+        "swii-rotor-search",
+        &[
+            "Known integrals in the space: H.",
+            "the generated ones span 13 of the 17 dimensions",
+            "I2 = 2 p_y cos θ + (4Mωy + γ/ω) sin θ",
+            "5 claims: 5 proved, 0 refuted",
+        ],
+    );
+    assert_eq!(alone.matches(" = 0 at p_θ = 2Iω [I").count(), 4, "{alone}");
+    expect(
+        "swii-rotor-closure",
+        &[
+            "The table closes",
+            "{P_1_1, Q_1_1} = −8M²ω H_x at p_θ = 2Iω",
+            "{R_1_1, S_1_1} = −2Mω at p_θ = 2Iω",
+            "{H_y, R_1_1} = 2ω S_1_1 at p_θ = 2Iω",
+            "8M H_y + γ²/ω² = 4 R_1_1² + 4 S_1_1² at p_θ = 2Iω",
+            "8 claims: 8 proved, 0 refuted",
         ],
     );
 }
