@@ -13,7 +13,7 @@ use superint::system_file::{Caller, PrintedNames};
 
 use super::limits::LimitsArgs;
 use super::output::{emit, Output};
-use super::search::Subject;
+use super::search::{identifier, Subject};
 
 pub const EXAMPLES: &str = "\
 Examples:
@@ -97,19 +97,6 @@ impl ClosureArgs {
     pub fn job(self, output: Output) -> ClosureJob {
         ClosureJob { args: self, output }
     }
-}
-
-/// `P_{1,1}` → `P_1_1`: a name the generators' ring accepts.
-fn identifier(name: &str) -> String {
-    let mut out = String::new();
-    for c in name.chars() {
-        if c.is_alphanumeric() {
-            out.push(c);
-        } else if !out.ends_with('_') && !out.is_empty() {
-            out.push('_');
-        }
-    }
-    out.trim_end_matches('_').to_string()
 }
 
 /// Computes the closure and prints it.
@@ -226,7 +213,7 @@ pub fn run(job: &ClosureJob) -> anyhow::Result<bool> {
                 .parse(name)
                 .map_err(|e| anyhow!("{}: {e}", trigpoly::quoted_name(name)))?,
         };
-        let display = subject.system().display_name(name).to_string();
+        let display = subject.display_name(name);
         generators.push(NamedFunction::new(&identifier(name), &display, e));
     }
     let mut options = ClosureOptions::new(a.degree);

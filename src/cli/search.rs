@@ -233,6 +233,34 @@ impl SearchArgs {
     }
 }
 
+/// `P_{1,1}` → `P_1_1`: a name the generators' ring accepts.
+pub(crate) fn identifier(name: &str) -> String {
+    let mut out = String::new();
+    for c in name.chars() {
+        if c.is_alphanumeric() {
+            out.push(c);
+        } else if !out.ends_with('_') && !out.is_empty() {
+            out.push('_');
+        }
+    }
+    out.trim_end_matches('_').to_string()
+}
+
+/// `R_1_1` → `R_{1,1}`: a name with several subscripts, as the paper writes it; any other
+/// name as it is.
+fn braced_subscripts(name: &str) -> String {
+    match name.split_once('_') {
+        Some((head, subscripts))
+            if !head.is_empty()
+                && subscripts.contains('_')
+                && subscripts.split('_').all(|s| !s.is_empty()) =>
+        {
+            format!("{head}_{{{}}}", subscripts.replace('_', ","))
+        }
+        _ => name.to_string(),
+    }
+}
+
 /// The system a discovery command works on: a loaded file or a built-in system.
 pub enum Subject {
     /// A system file.
@@ -284,6 +312,33 @@ impl Subject {
             Subject::File(f) => f.system(),
             Subject::Builtin(_, s) => s,
         }
+    }
+
+    /// How a name given on the command line prints, as a generator or a known integral: a
+    /// function or family instance of a file as the file shows it (`Z̄` for `Zbar`, `K̄_{1,2}`
+    /// for `Kbar_1_2` or `Kbar_{1,2}`), any other name with several subscripts with them in
+    /// braces, as the paper writes them and the LaTeX prints them (`R_{1,1}` for a
+    /// `--define R_1_1`), and an expression (`x*p_y`) as it is written.
+    pub fn display_name(&self, name: &str) -> String {
+        let shown = |name: &str| match self {
+            Subject::File(f) => f.display_name(name),
+            Subject::Builtin(_, s) => s.display_name(name).to_string(),
+        };
+        // An expression (`--known 'x*p_y'`) as it is written.
+        if !name
+            .chars()
+            .all(|c| c.is_alphanumeric() || "_{},".contains(c))
+        {
+            return name.to_string();
+        }
+        // As given, then as an identifier (`Kbar_{1,2}` is `Kbar_1_2`).
+        let key = identifier(name);
+        let found = [name, key.as_str()]
+            .into_iter()
+            .map(|n| (n, shown(n)))
+            .find(|(n, s)| s != n)
+            .map(|(_, s)| s);
+        found.unwrap_or_else(|| braced_subscripts(&key))
     }
 
     /// The system's name as a title says it: `the harmonic rotor`, or `t1` for a file that
@@ -395,7 +450,7 @@ fn search_and_print(job: &SearchJob) -> anyhow::Result<bool> {
     if let Some(known) = &a.known {
         for k in parse_known(known).map_err(|e| anyhow!("--known: {e}"))? {
             let e = subject.parse(k).map_err(|e| anyhow!("--known: {e}"))?;
-            options.known.push((k.to_string(), e));
+            options.known.push((subject.display_name(k), e));
         }
     }
     // A file's integrals are restated in its functions and family instances too.

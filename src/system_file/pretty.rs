@@ -72,8 +72,20 @@ impl Printed {
 }
 
 impl LoadedSystem {
-    /// The name of a variable, function or family instance as printed.
-    pub(crate) fn display_name(&self, name: &str) -> String {
+    /// The name of a variable, function or family instance as printed, `name` itself for
+    /// anything else.
+    ///
+    /// ```
+    /// use superint::system_file::{load, LimitsOverride};
+    ///
+    /// let rotor = load("systems/harmonic-rotor.toml", &LimitsOverride::default())?;
+    /// assert_eq!(rotor.display_name("Zbar"), "Z̄");
+    /// assert_eq!(rotor.display_name("Kbar_1_2"), "K̄_{1,2}");
+    /// assert_eq!(rotor.display_name("omega"), "ω");
+    /// assert_eq!(rotor.display_name("W"), "W");
+    /// # Ok::<(), superint::system_file::FileError>(())
+    /// ```
+    pub fn display_name(&self, name: &str) -> String {
         let vars = self.system.vars();
         if let Some(v) = vars.lookup(name) {
             return vars.variable(v).unicode().to_string();

@@ -670,7 +670,7 @@ fn harmonic_1_1_new_integrals() {
     expect(
         "h11-new-pq",
         &[
-            "Known integrals in the space: H, L, G1, G2, P_1_1, Q_1_1.",
+            "Known integrals in the space: H, L, G1, G2, P_{1,1}, Q_{1,1}.",
             "the generated ones span 103 of the 105 dimensions",
             "I3 = p_y cos θ + Mωy sin θ",
             "I4 = −Mωy cos θ + p_y sin θ",
@@ -775,27 +775,27 @@ fn harmonic_1_1_closure() {
             "The brackets marked * are no polynomials of degree ≤ 2 in the generators; here \
              they are. A higher --degree, or what superint search finds added to the generators, \
              may close the table.",
-            "{G1, P_1_1} = (ω p_x/2 + Mω²y/2) cos θ + (−ω p_y/2 + Mω²x/2) sin θ",
-            "{G2, Q_1_1} = (−ω p_x − Mω²y) cos θ + (ω p_y − Mω²x) sin θ",
-            "{F2, P_1_1} = −ω Q_1_1",
-            "{L, P_1_1} = Q_1_1",
-            "{P_1_1, Q_1_1} = −2Mω",
+            "{G1, P_{1,1}} = (ω p_x/2 + Mω²y/2) cos θ + (−ω p_y/2 + Mω²x/2) sin θ",
+            "{G2, Q_{1,1}} = (−ω p_x − Mω²y) cos θ + (ω p_y − Mω²x) sin θ",
+            "{F2, P_{1,1}} = −ω Q_{1,1}",
+            "{L, P_{1,1}} = Q_{1,1}",
+            "{P_{1,1}, Q_{1,1}} = −2Mω",
             "F2 = ω²I/2",
             "ω⁴I² + 4 F1² = 4ω²I F1 + 4ω² L² + 16 G1² + 4 G2²",
-            "Mω²I + P_1_1² + Q_1_1² = 2Mω L + 2M F1",
+            "Mω²I + P_{1,1}² + Q_{1,1}² = 2Mω L + 2M F1",
         ],
     );
     expect(
         "h11-closure-rs",
         &[
             "The table closes",
-            "{G1, P_1_1} = ω R_1_1/2",
-            "{G2, P_1_1} = ω S_1_1",
-            "{G1, R_1_1} = −ω P_1_1/2",
-            "{R_1_1, S_1_1} = −2Mω",
-            "2M G2 = P_1_1 R_1_1 + Q_1_1 S_1_1",
-            "4M G1 + P_1_1 S_1_1 = Q_1_1 R_1_1",
-            "Mω²I + 2Mω L + R_1_1² + S_1_1² = 2M F1",
+            "{G1, P_{1,1}} = ω R_{1,1}/2",
+            "{G2, P_{1,1}} = ω S_{1,1}",
+            "{G1, R_{1,1}} = −ω P_{1,1}/2",
+            "{R_{1,1}, S_{1,1}} = −2Mω",
+            "2M G2 = P_{1,1} R_{1,1} + Q_{1,1} S_{1,1}",
+            "4M G1 + P_{1,1} S_{1,1} = Q_{1,1} R_{1,1}",
+            "Mω²I + 2Mω L + R_{1,1}² + S_{1,1}² = 2M F1",
             "31 claims: 31 proved, 0 refuted",
         ],
     );
@@ -827,10 +827,10 @@ fn harmonic_2_1() {
         "h21-closure",
         &[
             "The table closes",
-            "{G1, P_2_1} = ω T_2_1",
-            "{P_2_1, Q_2_1} = 32M²ω³I − 16M²ω² L − 16M²ω F1",
-            "{T_2_1, U_2_1} = 16M²ω³I − 8M²ω F1",
-            "16M² G1² + P_2_1 R_2_1 = T_2_1²",
+            "{G1, P_{2,1}} = ω T_{2,1}",
+            "{P_{2,1}, Q_{2,1}} = 32M²ω³I − 16M²ω² L − 16M²ω F1",
+            "{T_{2,1}, U_{2,1}} = 16M²ω³I − 8M²ω F1",
+            "16M² G1² + P_{2,1} R_{2,1} = T_{2,1}²",
             "57 claims: 57 proved, 0 refuted",
         ],
     );
@@ -851,9 +851,9 @@ fn harmonic_1_2() {
         "h12-closure",
         &[
             "The table closes",
-            "{G1, P_1_2} = ω R_1_2/2",
-            "{P_1_2, Q_1_2} = −2Mω",
-            "Mω²I + 4 P_1_2² + 4 Q_1_2² = 8Mω L + 8M F1",
+            "{G1, P_{1,2}} = ω R_{1,2}/2",
+            "{P_{1,2}, Q_{1,2}} = −2Mω",
+            "Mω²I + 4 P_{1,2}² + 4 Q_{1,2}² = 8Mω L + 8M F1",
         ],
     );
 }
@@ -873,8 +873,8 @@ fn harmonic_2_3() {
         "h23-closure",
         &[
             "The table closes",
-            "{G1, P_2_3} = ω T_2_3",
-            "{P_2_3, Q_2_3} = 32M²ω³I/9 − 16M²ω² L − 16M²ω F1",
+            "{G1, P_{2,3}} = ω T_{2,3}",
+            "{P_{2,3}, Q_{2,3}} = 32M²ω³I/9 − 16M²ω² L − 16M²ω F1",
         ],
     );
 }
@@ -897,8 +897,8 @@ fn gravity_1_1() {
         &[
             "The table closes",
             "M²g⁴/ω⁴ + 4Mg² Hp/ω² + 4 Hp² = 4ω² L'² + 16 G1'² + 4 G2'²",
-            "M²g²/ω² + 2Mω L' + 2M Hp = Pp_1_1² + Qp_1_1²",
-            "2M G2' = Pp_1_1 Rp_1_1 + Qp_1_1 Sp_1_1",
+            "M²g²/ω² + 2Mω L' + 2M Hp = P'_{1,1}² + Q'_{1,1}²",
+            "2M G2' = P'_{1,1} Rp_{1,1} + Q'_{1,1} Sp_{1,1}",
             "35 claims: 35 proved, 0 refuted",
         ],
     );
@@ -4156,7 +4156,7 @@ fn fock_darwin_search_finds_the_resonant_integrals() {
     expect(
         "fd-search-known",
         &[
-            "Known integrals in the space: H, L, P_1_2, Q_1_2.",
+            "Known integrals in the space: H, L, P_{1,2}, Q_{1,2}.",
             "None: the known integrals generate every integral in the space.",
         ],
     );
@@ -4303,10 +4303,10 @@ fn fock_darwin_closes_into_a_cubic_algebra_at_1_2() {
         "fd-closure",
         &[
             "The table closes",
-            "{L, P_1_2} = −3 Q_1_2 at ω₊ = 2 ω₋ [B1 proved]",
-            "{L, Q_1_2} = 3 P_1_2 at ω₊ = 2 ω₋ [B2 proved]",
-            "{P_1_2, Q_1_2} = −144M³ ω₋³ L² + 36M³ ω₋ H² at ω₊ = 2 ω₋ [B3 proved]",
-            "32M³ ω₋³ L³ + P_1_2² + Q_1_2² = 24M³ ω₋ H² L + 8M³ H³ at ω₊ = 2 ω₋ [R1 proved]",
+            "{L, P_{1,2}} = −3 Q_{1,2} at ω₊ = 2 ω₋ [B1 proved]",
+            "{L, Q_{1,2}} = 3 P_{1,2} at ω₊ = 2 ω₋ [B2 proved]",
+            "{P_{1,2}, Q_{1,2}} = −144M³ ω₋³ L² + 36M³ ω₋ H² at ω₊ = 2 ω₋ [B3 proved]",
+            "32M³ ω₋³ L³ + P_{1,2}² + Q_{1,2}² = 24M³ ω₋ H² L + 8M³ H³ at ω₊ = 2 ω₋ [R1 proved]",
             "4 claims: 4 proved, 0 refuted",
         ],
     );
@@ -4314,17 +4314,17 @@ fn fock_darwin_closes_into_a_cubic_algebra_at_1_2() {
         "fd-closure-landau",
         &[
             "The table closes",
-            "{P_0_1, Q_0_1} = M ω₊ at ω₋ = 0 [B3 proved]",
-            "2M ω₊ L + 2M H = P_0_1² + Q_0_1² at ω₋ = 0 [R1 proved]",
+            "{P_{0,1}, Q_{0,1}} = M ω₊ at ω₋ = 0 [B3 proved]",
+            "2M ω₊ L + 2M H = P_{0,1}² + Q_{0,1}² at ω₋ = 0 [R1 proved]",
         ],
     );
     expect(
         "fd-closure-isotropic",
         &[
             "The table closes",
-            "{L, P_1_1} = −2 Q_1_1 at ω₋ = ω₊ [B1 proved]",
-            "{P_1_1, Q_1_1} = −8M² ω₊² L at ω₋ = ω₊ [B3 proved]",
-            "4M² ω₊² L² + P_1_1² + Q_1_1² = 4M² H² at ω₋ = ω₊ [R1 proved]",
+            "{L, P_{1,1}} = −2 Q_{1,1} at ω₋ = ω₊ [B1 proved]",
+            "{P_{1,1}, Q_{1,1}} = −8M² ω₊² L at ω₋ = ω₊ [B3 proved]",
+            "4M² ω₊² L² + P_{1,1}² + Q_{1,1}² = 4M² H² at ω₋ = ω₊ [R1 proved]",
         ],
     );
 }
@@ -4618,11 +4618,11 @@ fn sw_i_rotor_resonant_integrals_found_and_their_algebra() {
         "swi-rotor-closure",
         &[
             "The table closes",
-            "{H_x, P_1_1} = 2ω Q_1_1 at p_θ = 2Iω [B2 proved]",
-            "{P_1_1, Q_1_1} = −8M²ω H_x at p_θ = 2Iω [B11 proved]",
-            "{R_1_1, S_1_1} = −8M²ω H_y at p_θ = 2Iω [B12 proved]",
-            "2M²ω² X + P_1_1 R_1_1 + Q_1_1 S_1_1 = 4M² H_x H_y at p_θ = 2Iω [R1 proved]",
-            "8M³ω²β + P_1_1² + Q_1_1² = 4M² H_x² at p_θ = 2Iω [R2 proved]",
+            "{H_x, P_{1,1}} = 2ω Q_{1,1} at p_θ = 2Iω [B2 proved]",
+            "{P_{1,1}, Q_{1,1}} = −8M²ω H_x at p_θ = 2Iω [B11 proved]",
+            "{R_{1,1}, S_{1,1}} = −8M²ω H_y at p_θ = 2Iω [B12 proved]",
+            "2M²ω² X + P_{1,1} R_{1,1} + Q_{1,1} S_{1,1} = 4M² H_x H_y at p_θ = 2Iω [R1 proved]",
+            "8M³ω²β + P_{1,1}² + Q_{1,1}² = 4M² H_x² at p_θ = 2Iω [R2 proved]",
             "15 claims: 15 proved, 0 refuted",
         ],
     );
@@ -4698,11 +4698,55 @@ fn sw_ii_rotor_resonant_integrals_found_and_their_algebra() {
         "swii-rotor-closure",
         &[
             "The table closes",
-            "{P_1_1, Q_1_1} = −8M²ω H_x at p_θ = 2Iω",
-            "{R_1_1, S_1_1} = −2Mω at p_θ = 2Iω",
-            "{H_y, R_1_1} = 2ω S_1_1 at p_θ = 2Iω",
-            "8M H_y + γ²/ω² = 4 R_1_1² + 4 S_1_1² at p_θ = 2Iω",
+            "{P_{1,1}, Q_{1,1}} = −8M²ω H_x at p_θ = 2Iω",
+            "{R_{1,1}, S_{1,1}} = −2Mω at p_θ = 2Iω",
+            "{H_y, R_{1,1}} = 2ω S_{1,1} at p_θ = 2Iω",
+            "8M H_y + γ²/ω² = 4 R_{1,1}² + 4 S_{1,1}² at p_θ = 2Iω",
             "8 claims: 8 proved, 0 refuted",
         ],
+    );
+}
+
+/// A closure and a search print the names given on the command line as the file and the
+/// paper write them: a family instance as the file shows it, however it was spelt
+/// (`Kbar_1_1` and `K_{1,1}` print `K̄_{1,1}` and `K_{1,1}`, as `check` and `rank` print
+/// them), a `--define`d name with several subscripts with them in braces (`R_{1,1}`), and a
+/// known integral given as an expression as it was written.
+#[test]
+fn closure_and_search_print_names_as_the_file_shows_them() {
+    let rotor = "systems/harmonic-rotor.toml";
+    let out = superint(&[
+        "closure",
+        rotor,
+        "L",
+        "Kbar_1_1",
+        "K_{1,1}",
+        "R_1_1",
+        "--define",
+        "R_1_1=re((p_x - i*p_y + i*M*omega*(x - i*y))*exp(-i*theta))",
+        "--when",
+        "p_theta = I*omega",
+        "--no-timings",
+    ]);
+    let text = String::from_utf8(out.stdout).expect("UTF-8");
+    assert_eq!(out.status.code(), Some(0), "{text}");
+    assert!(
+        text.contains("Closure of L, K̄_{1,1}, K_{1,1}, R_{1,1} for the harmonic rotor"),
+        "{text}"
+    );
+    assert!(
+        !text.contains("Kbar_1_1") && !text.contains("R_1_1"),
+        "{text}"
+    );
+    let search = words(
+        "search systems/harmonic-rotor.toml --when 'p_theta = I*omega' --momenta-degree 2 \
+         --positions-degree 2 --trig-degree 1 --new-only --known P_1_1,Q_{1,1},L^2 --no-timings",
+    );
+    let out = superint(&search.iter().map(String::as_str).collect::<Vec<_>>());
+    let text = normalize(&String::from_utf8(out.stdout).expect("UTF-8"));
+    assert_eq!(out.status.code(), Some(0), "{text}");
+    assert!(
+        text.contains("Known integrals in the space: H, L, G1, G2, P_{1,1}, Q_{1,1}, L^2."),
+        "{text}"
     );
 }
