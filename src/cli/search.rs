@@ -246,16 +246,17 @@ pub(crate) fn identifier(name: &str) -> String {
     out.trim_end_matches('_').to_string()
 }
 
-/// `R_1_1` → `R_{1,1}`: a name with several subscripts, as the paper writes it; any other
-/// name as it is.
-fn braced_subscripts(name: &str) -> String {
-    match name.split_once('_') {
-        Some((head, subscripts))
-            if !head.is_empty()
-                && subscripts.contains('_')
-                && subscripts.split('_').all(|s| !s.is_empty()) =>
-        {
-            format!("{head}_{{{}}}", subscripts.replace('_', ","))
+/// `R_1_1` → `R_{1,1}`: a name of a family instance's shape, two numeric indices, shown as an
+/// instance is (which `trigpoly::shown_forms` reads); any other name as it is, so that its
+/// own forms (`W_x_θ`, `W_{x,\theta}` for `W_x_theta`) stand.
+fn braced_indices(name: &str) -> String {
+    let numeric = |s: &str| !s.is_empty() && s.chars().all(|c| c.is_ascii_digit());
+    match name
+        .split_once('_')
+        .map(|(head, tail)| (head, tail.split_once('_')))
+    {
+        Some((head, Some((m, n)))) if !head.is_empty() && numeric(m) && numeric(n) => {
+            format!("{head}_{{{m},{n}}}")
         }
         _ => name.to_string(),
     }
@@ -316,8 +317,8 @@ impl Subject {
 
     /// How a name given on the command line prints, as a generator or a known integral: a
     /// function or family instance of a file as the file shows it (`Z̄` for `Zbar`, `K̄_{1,2}`
-    /// for `Kbar_1_2` or `Kbar_{1,2}`), any other name with several subscripts with them in
-    /// braces, as the paper writes them and the LaTeX prints them (`R_{1,1}` for a
+    /// for `Kbar_1_2` or `Kbar_{1,2}`), any other name of an instance's shape as an instance
+    /// is shown, as the paper writes it and the LaTeX prints it (`R_{1,1}` for a
     /// `--define R_1_1`), and an expression (`x*p_y`) as it is written.
     pub fn display_name(&self, name: &str) -> String {
         let shown = |name: &str| match self {
@@ -338,7 +339,7 @@ impl Subject {
             .map(|n| (n, shown(n)))
             .find(|(n, s)| s != n)
             .map(|(_, s)| s);
-        found.unwrap_or_else(|| braced_subscripts(&key))
+        found.unwrap_or_else(|| braced_indices(&key))
     }
 
     /// The system's name as a title says it: `the harmonic rotor`, or `t1` for a file that

@@ -347,7 +347,7 @@ impl LoadedSystem {
     ) -> Option<Expr> {
         // A function of the parameters alone (`−16M³ω²β`) reads best as it is: written in
         // the functions it could only be a relation among them (`−8M² H_x² − 2 K² + 4 K P`).
-        if is_free_of_phase_space(e) {
+        if holds_only_parameters(e) {
             return None;
         }
         let degree = |g: &[NamedFunction], lowest| {
@@ -391,13 +391,10 @@ impl LoadedSystem {
         let search = |options: &ClosureOptions| match expressed_in(system, generators, e, options) {
             Ok(None) => Search::Nothing,
             Ok(Some(found)) if found.symbolic => {
-                let ring = &found.ring;
-                let has_function = ring.vars().any(|v| {
-                    ring.variable(v).kind() != VarKind::Parameter && found.poly.contains(v)
-                });
-                match has_function {
-                    true => Search::Written(found.poly),
-                    false => Search::Nothing,
+                // A polynomial in the parameters alone is no form in the functions.
+                match holds_only_parameters(&found.poly) {
+                    false => Search::Written(found.poly),
+                    true => Search::Nothing,
                 }
             }
             Ok(Some(_)) | Err(_) => Search::AtTheseValues,
@@ -479,8 +476,9 @@ fn degrees(e: &Expr) -> [i64; 4] {
     .map(|kind| e.total_degree(&[kind]).unwrap_or(0))
 }
 
-/// Whether `e` holds no variable but parameters: a constant on the phase space.
-fn is_free_of_phase_space(e: &Expr) -> bool {
+/// Whether `e` holds no variable but parameters: a constant on the phase space, or in a ring
+/// of functions' symbols a polynomial in no function.
+fn holds_only_parameters(e: &Expr) -> bool {
     let vars = e.vars();
     vars.vars()
         .all(|v| vars.variable(v).kind() == VarKind::Parameter || !e.contains(v))

@@ -10,7 +10,7 @@ use brackets::search::{search, SearchOptions, SearchSpace};
 use superint::system_file::{load, load_str, LimitsOverride};
 use trigpoly::{Expr, Rational};
 
-use crate::{normalize, superint, superint_refused, DEGREE_ONE};
+use crate::{normalize, superint, superint_ok_line, superint_refused, words, DEGREE_ONE};
 
 /// Every command of `docs/results.md`, by name.
 const COMMANDS: &[(&str, &str)] = &[
@@ -438,36 +438,6 @@ const COMMANDS: &[(&str, &str)] = &[
          S_1_1 --when 'p_theta = 2*I*omega' --degree 2 --symbolic beta,gamma --parameters-degree 1",
     ),
 ];
-
-/// The words of a command line, single quotes grouping.
-fn words(command: &str) -> Vec<String> {
-    let mut out = Vec::new();
-    let mut word = String::new();
-    let mut quoted = false;
-    let mut any = false;
-    for c in command.chars() {
-        match c {
-            '\'' => {
-                quoted = !quoted;
-                any = true;
-            }
-            ' ' if !quoted => {
-                if any {
-                    out.push(std::mem::take(&mut word));
-                    any = false;
-                }
-            }
-            _ => {
-                word.push(c);
-                any = true;
-            }
-        }
-    }
-    if any {
-        out.push(word);
-    }
-    out
-}
 
 /// A system file of `systems/`, loaded.
 fn system_file(name: &str) -> superint::system_file::LoadedSystem {
@@ -3518,19 +3488,19 @@ fn higgs_oscillator_tensor_found_from_h_alone_and_its_cubic_higgs_algebra() {
             "None: the known integrals generate every integral in the space.",
         ],
     );
-    let text = run_on_hamiltonian_alone("higgs-search");
     let t22 = "λ²x²y² p_x² + 2λ²xy³ p_x p_y + 2λxy p_x p_y + λ²y⁴ p_y² + 2λy² p_y² + p_y² + ω²y²";
     let t12 = "λ²x³y p_x² + 2λ²x²y² p_x p_y + λx² p_x p_y + λ²xy³ p_y² + λxy p_x² + λxy p_y² \
                + λy² p_x p_y + p_x p_y + ω²xy";
-    for piece in [
-        "Known integrals in the space: H.".to_string(),
-        "I7 = x p_y − y p_x".to_string(),
-        format!("I19 = {t22}"),
-        format!("I20 = {t12}"),
-        "4 claims: 4 proved, 0 refuted".to_string(),
-    ] {
-        assert!(text.contains(&normalize(&piece)), "{piece}: {text}");
-    }
+    let text = expect_alone(
+        "higgs-search",
+        &[
+            "Known integrals in the space: H.",
+            "I7 = x p_y − y p_x",
+            &format!("I19 = {t22}"),
+            &format!("I20 = {t12}"),
+            "4 claims: 4 proved, 0 refuted",
+        ],
+    );
     assert_eq!(text.matches(" = 0 [I").count(), 3, "{text}");
     // The integrals found, read back as printed, are the file's T22 and T12.
     let file = system_file("higgs-oscillator.toml");
@@ -4456,18 +4426,18 @@ fn zernike_tensor_found_from_h_alone_and_its_cubic_higgs_algebra() {
             "None: the known integrals generate every integral in the space.",
         ],
     );
-    let text = run_on_hamiltonian_alone("zernike-search");
     let t22 = "2 γ₂ xy p_x p_y − γ₂ y² p_x² + γ₂ y² p_y² + p_y² + γ₁ y p_y";
     let t12 = "γ₂ x² p_x p_y + γ₂ y² p_x p_y + p_x p_y + γ₁ y p_x";
-    for piece in [
-        "Known integrals in the space: H.".to_string(),
-        "I16 = x p_y − y p_x".to_string(),
-        format!("I32 = {t22}"),
-        format!("I35 = {t12}"),
-        "4 claims: 4 proved, 0 refuted".to_string(),
-    ] {
-        assert!(text.contains(&normalize(&piece)), "{piece}: {text}");
-    }
+    let text = expect_alone(
+        "zernike-search",
+        &[
+            "Known integrals in the space: H.",
+            "I16 = x p_y − y p_x",
+            &format!("I32 = {t22}"),
+            &format!("I35 = {t12}"),
+            "4 claims: 4 proved, 0 refuted",
+        ],
+    );
     assert_eq!(text.matches(" = 0 [I").count(), 3, "{text}");
     // The integrals found, read back as printed, are the file's tensor less multiples of L.
     let file = system_file("zernike.toml");
@@ -4738,13 +4708,10 @@ fn closure_and_search_print_names_as_the_file_shows_them() {
         !text.contains("Kbar_1_1") && !text.contains("R_1_1"),
         "{text}"
     );
-    let search = words(
+    let text = normalize(&superint_ok_line(
         "search systems/harmonic-rotor.toml --when 'p_theta = I*omega' --momenta-degree 2 \
          --positions-degree 2 --trig-degree 1 --new-only --known P_1_1,Q_{1,1},L^2 --no-timings",
-    );
-    let out = superint(&search.iter().map(String::as_str).collect::<Vec<_>>());
-    let text = normalize(&String::from_utf8(out.stdout).expect("UTF-8"));
-    assert_eq!(out.status.code(), Some(0), "{text}");
+    ));
     assert!(
         text.contains("Known integrals in the space: H, L, G1, G2, P_{1,1}, Q_{1,1}, L^2."),
         "{text}"

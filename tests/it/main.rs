@@ -122,6 +122,44 @@ pub fn superint_ok(args: &[&str]) -> String {
     String::from_utf8(superint_exits(args, 0).stdout).expect("UTF-8")
 }
 
+/// Runs the superint command line `command` (its arguments as a shell writes them, single
+/// quotes grouping, after the program's name), which must succeed, and returns what it wrote.
+#[track_caller]
+pub fn superint_ok_line(command: &str) -> String {
+    let args = words(command);
+    superint_ok(&args.iter().map(String::as_str).collect::<Vec<_>>())
+}
+
+/// The words of a command line, single quotes grouping.
+pub fn words(command: &str) -> Vec<String> {
+    let mut out = Vec::new();
+    let mut word = String::new();
+    let mut quoted = false;
+    let mut any = false;
+    for c in command.chars() {
+        match c {
+            '\'' => {
+                quoted = !quoted;
+                any = true;
+            }
+            ' ' if !quoted => {
+                if any {
+                    out.push(std::mem::take(&mut word));
+                    any = false;
+                }
+            }
+            _ => {
+                word.push(c);
+                any = true;
+            }
+        }
+    }
+    if any {
+        out.push(word);
+    }
+    out
+}
+
 /// Runs the superint binary with `args`, which must be refused as bad input (exit code 2),
 /// and returns its message.
 #[track_caller]

@@ -635,20 +635,10 @@ fn a_condition_on_a_radical_is_refused() {
 #[test]
 fn a_search_without_powers_of_the_radicals_describes_a_space_without_them() {
     let search = |degree: &str| {
-        crate::normalize(&superint_ok(&[
-            "search",
-            "systems/zernike.toml",
-            "--momenta-degree",
-            "1",
-            "--positions-degree",
-            "1",
-            "--trig-degree",
-            "0",
-            "--radicals-degree",
-            degree,
-            "--new-only",
-            "--no-timings",
-        ]))
+        crate::normalize(&crate::superint_ok_line(&format!(
+            "search systems/zernike.toml --momenta-degree 1 --positions-degree 1 \
+             --trig-degree 0 --radicals-degree {degree} --new-only --no-timings"
+        )))
     };
     let none = search("0");
     for piece in [
@@ -669,19 +659,10 @@ fn a_search_without_powers_of_the_radicals_describes_a_space_without_them() {
         assert!(one.contains(piece), "{piece}: {one}");
     }
     // So for a denominator at `--denominators-degree 0`: no `(x − y)^g` in the monomial.
-    let calogero = crate::normalize(&superint_ok(&[
-        "search",
-        "systems/calogero.toml",
-        "--momenta-degree",
-        "1",
-        "--positions-degree",
-        "1",
-        "--trig-degree",
-        "0",
-        "--denominators-degree",
-        "0",
-        "--no-timings",
-    ]));
+    let calogero = crate::normalize(&crate::superint_ok_line(
+        "search systems/calogero.toml --momenta-degree 1 --positions-degree 1 --trig-degree 0 \
+         --denominators-degree 0 --no-timings",
+    ));
     assert!(
         calogero.contains(
             "The space: x^a y^b z^c p_x^d p_y^e p_z^f, with momenta degree d + e + f ≤ 1, \
