@@ -205,8 +205,9 @@ impl LoadedSystem {
             .collect()
     }
 
-    /// The instances of the families at `m, n ≥ 0`, `m + n ≤ max_sum` (lowest sum first, at
-    /// most [`MAX_INSTANCES_TRIED`] expanded) that are integrals at `condition`, with their
+    /// The instances of the families at `m, n ≥ 0`, `m + n ≤ max_sum` (lowest sum first, but
+    /// those whose declared eigenvalue is not zero at `condition` last; at most
+    /// [`MAX_INSTANCES_TRIED`] expanded) that are integrals at `condition`, with their
     /// [`degrees`] there: those that cannot be expanded, equal one of `generators` or an
     /// instance before them, or are no function of the phase space there, are left out.
     fn integral_instances(
@@ -216,14 +217,17 @@ impl LoadedSystem {
         generators: &[NamedFunction],
     ) -> Vec<(NamedFunction, [i64; 4])> {
         let h = self.system.hamiltonian();
-        let at = |e: Expr| match condition {
-            Some(c) => c.apply(&e).ok(),
-            None => Some(e),
-        };
+        let at = |e: Expr| at_condition(condition, e);
         let mut found: Vec<(NamedFunction, [i64; 4])> = Vec::new();
         let pairs = (0..=max_sum).flat_map(|sum| (0..=sum).map(move |m| (m, sum - m)));
-        let instances = pairs.flat_map(|(m, n)| (0..self.families.len()).map(move |k| (k, m, n)));
-        for (k, m, n) in instances.take(MAX_INSTANCES_TRIED) {
+        let mut instances: Vec<(usize, i64, i64)> = pairs
+            .flat_map(|(m, n)| (0..self.families.len()).map(move |k| (k, m, n)))
+            .collect();
+        // Those whose declared eigenvalue is no zero there are no integrals (the tower proves
+        // the eigenvalues): tried after the rest (a stable sort keeps the lowest sum first),
+        // so that `e^{−inθ}` and `A^m` do not spend the tries.
+        instances.sort_by_key(|&(k, m, n)| self.eigenvalue_is_not_zero(k, m, n, condition));
+        for (k, m, n) in instances.into_iter().take(MAX_INSTANCES_TRIED) {
             let Ok(value) = self.family_instance(k, m, n) else {
                 continue;
             };
@@ -250,6 +254,25 @@ impl LoadedSystem {
             found.push((self.instance_function(k, m, n, value), d));
         }
         found
+    }
+
+    /// Whether family `k` declares an eigenvalue that is not zero at `(m, n)` and `condition`:
+    /// the instance is then no integral there. `false` where it declares none, or where the
+    /// eigenvalue cannot be computed.
+    fn eigenvalue_is_not_zero(
+        &self,
+        k: usize,
+        m: i64,
+        n: i64,
+        condition: Option<&Condition>,
+    ) -> bool {
+        if self.families[k].eigenvalue.is_none() {
+            return false;
+        }
+        let Ok(lambda) = self.eigenvalue_at(k, m, n) else {
+            return false;
+        };
+        at_condition(condition, lambda).is_some_and(|l| !l.is_zero())
     }
 
     /// The index pairs of the family instances that `trees` name (`P_1_2` → `(1, 2)`, braces
@@ -504,6 +527,14 @@ enum Search {
     Nothing,
     /// A polynomial that holds at these values only, or a denominator zero there.
     AtTheseValues,
+}
+
+/// `e` at `condition` where one is given, `None` where it cannot be applied.
+fn at_condition(condition: Option<&Condition>, e: Expr) -> Option<Expr> {
+    match condition {
+        Some(c) => c.apply(&e).ok(),
+        None => Some(e),
+    }
 }
 
 #[cfg(test)]

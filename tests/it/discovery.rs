@@ -4598,6 +4598,47 @@ fn sw_i_rotor_resonant_integrals_found_and_their_algebra() {
     );
 }
 
+/// The search restates its integrals in family instances that are integrals at the
+/// condition, tried before those whose declared eigenvalue is not zero there: with the
+/// conjugate families `K̄`, `J̄` added to the `V_I` rotor's six, the instances `e^{−inθ}`,
+/// `A^m`, … of the lower index sums once spent the tries, and `R_{1,2}`, `S_{1,2}` (at
+/// `Ω = ω`, sum 3) were never tried.
+#[test]
+fn search_tries_instances_with_a_zero_eigenvalue_first() {
+    let file = std::fs::read_to_string(concat!(
+        env!("CARGO_MANIFEST_DIR"),
+        "/systems/smorodinsky-winternitz-i-rotor.toml"
+    ))
+    .expect("the V_I rotor's file");
+    let conjugate = |ladder: &str, base: &str, before: &str| {
+        format!(
+            "eigenvalue = \"i*(2*m*omega - n*Omega)\"\n\n[[family]]\nname = \"{ladder}bar\"\n\
+             value = \"conj({base})^m*exp(i*n*theta)\"\n\
+             eigenvalue = \"-i*(2*m*omega - n*Omega)\"\n\n[[family]]\nname = \"{before}\""
+        )
+    };
+    let mut text = file;
+    for (ladder, base, before) in [("K", "A", "P"), ("J", "B", "R")] {
+        let at =
+            format!("eigenvalue = \"i*(2*m*omega - n*Omega)\"\n\n[[family]]\nname = \"{before}\"");
+        assert!(
+            text.contains(&at),
+            "the file declares {before} after {ladder}"
+        );
+        text = text.replace(&at, &conjugate(ladder, base, before));
+    }
+    assert_eq!(text.matches("[[family]]").count(), 8);
+    let path = crate::scratch_text("discovery", "sw-i-rotor-eight-families.toml", &text);
+    let out = superint_ok_line(&format!(
+        "search {} --when 'p_theta = I*omega' --momenta-degree 4 --positions-degree 4 \
+         --trig-degree 2 --laurent --new-only",
+        path.display()
+    ));
+    for restated in ["= P_{1,2}", "= −Q_{1,2}", "= R_{1,2}", "= −S_{1,2}"] {
+        assert!(out.contains(restated), "{restated} not in {out}");
+    }
+}
+
 /// The paper's rotor in the Smorodinsky–Winternitz potential `V_II`, loaded and checked:
 /// every claim of the file holds (the quadratic ladder `A` in `x` and the shifted linear
 /// ladder `C` in `y`, both of frequency `2ω`, the resonant integrals at `Ω = 2mω/n`, `V_II`'s
