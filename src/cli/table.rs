@@ -21,7 +21,8 @@ Examples:
 
 Each entry is written as a combination of the listed functions with coefficients in the
 parameters where one exists, otherwise as an expression; one that is a polynomial in H and the
-file's functions ({S, C} = 72M³ H H_x² − 96M³ H_x³) is written so below the table too.";
+file's functions is written so below the table too, expanded and with the factor its terms
+share in front ({S, C} = 72M³ H H_x² − 96M³ H_x³ = 24M³(3 H − 4 H_x) H_x²).";
 
 /// Arguments of `superint table`.
 #[derive(Debug, Args)]

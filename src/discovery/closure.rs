@@ -9,8 +9,8 @@ use brackets::{EngineError, NamedFunction, System};
 use trigpoly::Style;
 
 use crate::report::{
-    counted, listed, ClaimResult, ClosureFacts, Entry, Equation, Equations, Facts, Report, Section,
-    SummaryKind, TableResult,
+    counted, listed, written_in_functions, ClaimResult, ClosureFacts, Entry, Equation, Equations,
+    Facts, Report, Section, SummaryKind, TableResult,
 };
 
 use crate::system_file::Caller;
@@ -243,11 +243,14 @@ impl Structure<'_> {
             (_, Some(c)) => format!(" at `{c}`, `{fixed}`"),
             (_, None) => format!(" at `{fixed}`"),
         };
-        Entry::Table(TableResult::new(
-            self.c.table(),
-            self.system,
-            &format!("{}{table_at}", self.name),
-        ))
+        Entry::Table(
+            TableResult::new(
+                self.c.table(),
+                self.system,
+                &format!("{}{table_at}", self.name),
+            )
+            .in_functions(),
+        )
     }
 
     /// The closure's facts for JSON: the generators, the linear algebra, the parameters, the
@@ -340,13 +343,13 @@ fn bracket_claims(c: &Closure, holding: &Holding) -> Vec<Entry> {
                 "{{{}, {}}} = {}",
                 c.display[a],
                 c.display[b],
-                poly.render(Style::Unicode)
+                written_in_functions(poly, Style::Unicode)
             );
             let ascii = format!(
                 "{{{}, {}}} = {}",
                 c.names[a],
                 c.names[b],
-                poly.render(Style::Ascii)
+                written_in_functions(poly, Style::Ascii)
             );
             let id = format!("B{}", claims.len() + 1);
             claims.push(Entry::Claim(

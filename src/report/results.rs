@@ -289,6 +289,9 @@ pub struct TableResult {
     /// The entries cut to their leading part ([`TableResult::excerpt_entries`]), by row and
     /// column: how much of each is shown.
     pub excerpts: BTreeMap<(usize, usize), Excerpt>,
+    /// Whether the entries are polynomials in the table's functions (a closure's), each
+    /// written as the paper writes one, `−4(H_x S − H_y Q)/ω` ([`TableResult::in_functions`]).
+    pub polynomials_in_functions: bool,
 }
 
 /// The names a table's caption may give a row and a column, the first pair free taken.
@@ -314,6 +317,17 @@ impl TableResult {
             placeholders: [a.to_string(), b.to_string()],
             table,
             excerpts: BTreeMap::new(),
+            polynomials_in_functions: false,
+        }
+    }
+
+    /// The table with its entries read as polynomials in its functions (a closure's
+    /// structure table), each written with the factor its terms share in front,
+    /// `(P S − Q R)/(M²ω)`, as a bracket restated in functions is.
+    pub fn in_functions(self) -> Self {
+        TableResult {
+            polynomials_in_functions: true,
+            ..self
         }
     }
 
@@ -342,7 +356,12 @@ impl TableResult {
     /// The entry in row `a`, column `b` in a notation, `+ …` (`+ \dots`) after one cut to
     /// its leading part.
     pub fn cell(&self, a: usize, b: usize, style: Style) -> String {
-        let text = self.table.entries[a][b].render(style);
+        let text = match &self.table.entries[a][b] {
+            brackets::Entry::Expression(e) if self.polynomials_in_functions => {
+                super::written_in_functions(e, style)
+            }
+            entry => entry.render(style),
+        };
         match (self.excerpts.contains_key(&(a, b)), style) {
             (false, _) => text,
             (true, Style::Latex) => format!(r"{text} + \dots"),

@@ -7,7 +7,7 @@ use crate::render::tex::Names;
 use std::time::Instant;
 
 use brackets::{BracketTable, Condition, System};
-use trigpoly::{Expr, VarKind};
+use trigpoly::{Expr, Style, VarKind};
 
 use super::claims::{engine_error, parse_condition, CheckedClaim, RankClaim};
 use super::error::{ErrorKind, FileError};
@@ -503,7 +503,9 @@ pub fn table_report(file: &LoadedSystem, names: &[impl AsRef<str>]) -> Result<Re
 
 /// The entries of `table` above its diagonal that are no combination of its functions but a
 /// polynomial in `H` and the file's functions, as `bracket` writes one (`{S, C} = 72M³ H H_x²
-/// − 96M³ H_x³` for the Fokas–Lagerstrom integrals), each `{A, B} = polynomial`. A polynomial
+/// − 96M³ H_x³` for the Fokas–Lagerstrom integrals), each `{A, B} = polynomial`, restated
+/// with the factor its terms share in front where it has one (`24M³(3 H − 4 H_x) H_x²`,
+/// through [`Equation::in_functions`]). A polynomial
 /// of degree 1 in the table's own functions is left out: the table chose the bracket over that
 /// combination (`{F1, L} = Mgx`, not `−2 G1 + 2 G1'`).
 fn written_in_functions(file: &LoadedSystem, table: &BracketTable) -> Vec<Equation> {
@@ -533,7 +535,14 @@ fn written_in_functions(file: &LoadedSystem, table: &BracketTable) -> Vec<Equati
                 .all(|(_, name)| table.names.iter().any(|n| n == name));
             if !(linear && listed) {
                 let lhs = format!("{{{}, {}}}", table.display[a], table.display[b]);
-                lines.push(Equation::new(&lhs, p));
+                // Restated below with the factor its terms share, `24M³(3 H − 4 H_x) H_x²`,
+                // where it has one.
+                let factored = crate::report::written_in_functions(&p, Style::Unicode);
+                let in_functions = (factored != p.to_string()).then(|| p.clone());
+                lines.push(Equation {
+                    in_functions,
+                    ..Equation::new(&lhs, p)
+                });
             }
         }
     }

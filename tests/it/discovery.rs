@@ -798,8 +798,8 @@ fn harmonic_2_1() {
         &[
             "The table closes",
             "{G1, P_{2,1}} = ω T_{2,1}",
-            "{P_{2,1}, Q_{2,1}} = 32M²ω³I − 16M²ω² L − 16M²ω F1",
-            "{T_{2,1}, U_{2,1}} = 16M²ω³I − 8M²ω F1",
+            "{P_{2,1}, Q_{2,1}} = 16M²ω(2ω²I − ω L − F1)",
+            "{T_{2,1}, U_{2,1}} = 8M²ω(2ω²I − F1)",
             "16M² G1² + P_{2,1} R_{2,1} = T_{2,1}²",
             "57 claims: 57 proved, 0 refuted",
         ],
@@ -844,7 +844,7 @@ fn harmonic_2_3() {
         &[
             "The table closes",
             "{G1, P_{2,3}} = ω T_{2,3}",
-            "{P_{2,3}, Q_{2,3}} = 32M²ω³I/9 − 16M²ω² L − 16M²ω F1",
+            "{P_{2,3}, Q_{2,3}} = 16M²ω(2ω²I − 9ω L − 9 F1)/9",
         ],
     );
 }
@@ -2789,7 +2789,7 @@ fn closure_past_degree_six_finds_the_3_5_oscillator_relation() {
     assert_eq!(high.status.code(), Some(0), "{text}");
     for line in [
         "The table closes: every bracket is a polynomial of degree ≤ 8 in the generators.",
-        "{Re A, Im A} = 5760M⁸ω H_x⁵ H_y² − 9600M⁸ω H_x⁴ H_y³ [B5 proved]",
+        "{Re A, Im A} = 1920M⁸ω(3 H_x − 5 H_y) H_x⁴ H_y² [B5 proved]",
         // The relation cleared of 1/M⁸, which it has in two of its three terms.
         "256M⁸ H_x⁵ H_y³ = (Re A)² + (Im A)² [R1 proved]",
         "6 claims: 6 proved, 0 refuted",
@@ -3317,7 +3317,7 @@ fn fokas_lagerstrom_cubic_integral_and_its_cubic_algebra() {
             "The table closes",
             "{H_x, S} = −3 C/M [B1 proved]",
             "{H_x, C} = 3Mω² S [B2 proved]",
-            "{S, C} = 72M³ H H_x² − 96M³ H_x³ [B3 proved]",
+            "{S, C} = 24M³(3 H − 4 H_x) H_x² [B3 proved]",
             "16 H H_x³ = 16 H_x⁴ + ω² S²/M² + C²/M⁴ [R1 proved]",
         ],
     );
@@ -3514,7 +3514,7 @@ fn higgs_oscillator_tensor_found_from_h_alone_and_its_cubic_higgs_algebra() {
             "The table closes",
             "{L, K} = 2 T_12 [B1 proved]",
             "{L, T_12} = −2 K [B2 proved]",
-            "{K, T_12} = −λ² L³ + 2λ H L + 2ω² L [B3 proved]",
+            "{K, T_12} = −(λ² L² − 2λ H − 2ω²) L [B3 proved]",
             "λ² L⁴ + 4 H² = 4λ H L² + 4ω² L² + 4 K² + 4 T_12² [R1 proved]",
             "4 claims: 4 proved, 0 refuted",
         ],
@@ -3526,9 +3526,9 @@ fn higgs_oscillator_tensor_found_from_h_alone_and_its_cubic_higgs_algebra() {
             "{L, T_11} = 2 T_12 [B1 proved]",
             "{L, T_12} = −T_11 + T_22 [B2 proved]",
             "{L, T_22} = −2 T_12 [B3 proved]",
-            "{T_11, T_12} = 2λ L T_11 + 2ω² L [B4 proved]",
+            "{T_11, T_12} = 2(λ T_11 + ω²) L [B4 proved]",
             "{T_11, T_22} = 4λ L T_12 [B5 proved]",
-            "{T_12, T_22} = 2λ L T_22 + 2ω² L [B6 proved]",
+            "{T_12, T_22} = 2(λ T_22 + ω²) L [B6 proved]",
             "λ L² + T_11 + T_22 = 2 H [R1 proved]",
             "ω² L² + T_12² = T_11 T_22 [R2 proved]",
             "8 claims: 8 proved, 0 refuted",
@@ -4275,7 +4275,7 @@ fn fock_darwin_closes_into_a_cubic_algebra_at_1_2() {
             "The table closes",
             "{L, P_{1,2}} = −3 Q_{1,2} at ω₊ = 2 ω₋ [B1 proved]",
             "{L, Q_{1,2}} = 3 P_{1,2} at ω₊ = 2 ω₋ [B2 proved]",
-            "{P_{1,2}, Q_{1,2}} = −144M³ ω₋³ L² + 36M³ ω₋ H² at ω₊ = 2 ω₋ [B3 proved]",
+            "{P_{1,2}, Q_{1,2}} = −36M³ ω₋ (4 ω₋² L² − H²) at ω₊ = 2 ω₋ [B3 proved]",
             "32M³ ω₋³ L³ + P_{1,2}² + Q_{1,2}² = 24M³ ω₋ H² L + 8M³ H³ at ω₊ = 2 ω₋ [R1 proved]",
             "4 claims: 4 proved, 0 refuted",
         ],
@@ -4468,7 +4468,7 @@ fn zernike_tensor_found_from_h_alone_and_its_cubic_higgs_algebra() {
             "The table closes",
             "{L, A} = 2 B [B1 proved]",
             "{L, B} = −2 A [B2 proved]",
-            "{A, B} = −2 γ₁² L − 4 γ₂² L³ − 4 γ₂ H L [B3 proved]",
+            "{A, B} = −2(γ₁² + 2 γ₂² L² + 2 γ₂ H) L [B3 proved]",
             "γ₁² L² + γ₂² L⁴ + 2 γ₂ H L² + H² = A² + B² [R1 proved]",
             "4 claims: 4 proved, 0 refuted",
         ],
@@ -4545,7 +4545,8 @@ fn sw_i_rotor_claims_are_proved_and_its_false_neighbours_refuted() {
 /// `P_{1,1}`, `Q_{1,1}`, `R_{1,1}`, `S_{1,1}` (restated so), and from `H` alone the search
 /// finds `H_y` and those four and nothing else (`X` is generated); at `Ω = ω` the new ones are
 /// of order 2. `H_x, H_y, X` and the four close at degree 2 into so(2,1) ⊕ so(2,1) with `X` a
-/// polynomial in the rest, for every `β, γ`.
+/// polynomial in the rest, for every `β, γ`; the brackets written with the factor their
+/// terms share in front, `{X, P_{1,1}} = −4(H_x S_{1,1} − H_y Q_{1,1})/ω`.
 #[test]
 fn sw_i_rotor_resonant_integrals_found_and_their_algebra() {
     expect(
@@ -4588,6 +4589,9 @@ fn sw_i_rotor_resonant_integrals_found_and_their_algebra() {
         "swi-rotor-closure",
         &[
             "The table closes",
+            // The factor a bracket's terms share in front, in the table and its claim.
+            "{X, P_{1,1}} = −4(H_x S_{1,1} − H_y Q_{1,1})/ω {X, Q_{1,1}}",
+            "{H_x, X} = (P_{1,1} S_{1,1} − Q_{1,1} R_{1,1})/(M²ω) at p_θ = 2Iω [B1 proved]",
             "{H_x, P_{1,1}} = 2ω Q_{1,1} at p_θ = 2Iω [B2 proved]",
             "{P_{1,1}, Q_{1,1}} = −8M²ω H_x at p_θ = 2Iω [B11 proved]",
             "{R_{1,1}, S_{1,1}} = −8M²ω H_y at p_θ = 2Iω [B12 proved]",
