@@ -552,18 +552,52 @@ impl Report {
         })
     }
 
-    /// The first tower of the report, if any.
-    pub fn tower(&self) -> Option<&TowerResult> {
-        self.sections
-            .iter()
-            .flat_map(|s| &s.entries)
-            .find_map(|e| match e {
-                Entry::Tower(t) => Some(t),
-                _ => None,
-            })
+    /// Every tower of the report, in order: a tower job on a system file has one for each
+    /// family it checked, each in its own section.
+    ///
+    /// ```
+    /// use superint::system_file::{family_tower_report, load, LimitsOverride};
+    ///
+    /// let rotor = load("systems/harmonic-rotor.toml", &LimitsOverride::default())?;
+    /// let report = family_tower_report(&rotor, None, 2, None)?;
+    /// let towers: Vec<_> = report.towers().map(|t| (t.claim.id.as_str(), t.checked)).collect();
+    /// assert_eq!(towers, [("K-tower", 4), ("Kbar-tower", 4)]);
+    /// # Ok::<(), superint::system_file::FileError>(())
+    /// ```
+    pub fn towers(&self) -> impl Iterator<Item = &TowerResult> {
+        (self.sections.iter().flat_map(|s| &s.entries)).filter_map(|e| match e {
+            Entry::Tower(t) => Some(t),
+            _ => None,
+        })
     }
 
-    /// The first proof in the report (a tower job's proof for all `m, n`), if any.
+    /// The first tower of the report ([`Report::towers`]), if any.
+    pub fn tower(&self) -> Option<&TowerResult> {
+        self.towers().next()
+    }
+
+    /// Every proof of the report, in order: a tower job's proofs for all `m, n`, one per
+    /// family that is a product of powers.
+    ///
+    /// ```
+    /// use superint::system_file::{family_tower_report, load, LimitsOverride};
+    ///
+    /// let rotor = load("systems/harmonic-rotor.toml", &LimitsOverride::default())?;
+    /// let report = family_tower_report(&rotor, Some("Kbar,K"), 2, None)?;
+    /// let proofs: Vec<_> = report.proofs().map(|p| p.facts[0].statement.as_str()).collect();
+    /// assert_eq!(proofs, ["{Z̄, H} = −iω Z̄", "{Z, H} = iω Z"]);
+    /// assert!(report.proofs().all(|p| p.holds()));
+    /// # Ok::<(), superint::system_file::FileError>(())
+    /// ```
+    pub fn proofs(&self) -> impl Iterator<Item = &ProofResult> {
+        (self.sections.iter().flat_map(|s| &s.entries)).filter_map(|e| match e {
+            Entry::Proof(p) => Some(p),
+            _ => None,
+        })
+    }
+
+    /// The first proof in the report ([`Report::proofs`]; a tower job's proof for all
+    /// `m, n`), if any.
     ///
     /// ```
     /// use superint::system_file::{family_tower_report, load, LimitsOverride};
@@ -576,13 +610,7 @@ impl Report {
     /// # Ok::<(), superint::system_file::FileError>(())
     /// ```
     pub fn proof(&self) -> Option<&ProofResult> {
-        self.sections
-            .iter()
-            .flat_map(|s| &s.entries)
-            .find_map(|e| match e {
-                Entry::Proof(p) => Some(p),
-                _ => None,
-            })
+        self.proofs().next()
     }
 
     /// The closing line: `26 claims: 26 proved, 0 refuted (93 exact checks, 0.41 s)`, or for a

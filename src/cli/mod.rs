@@ -121,7 +121,7 @@ enum Command {
     #[command(after_help = paper::EXAMPLES)]
     Paper(paper::PaperArgs),
     /// Check the tower {K_{m,n}, H} = i(mω − nΩ) K_{m,n} for 1 ≤ m, n ≤ N, and prove it for
-    /// all m, n.
+    /// all m, n; or the towers of a system file's families.
     #[command(after_help = tower::EXAMPLES)]
     Tower(tower::TowerArgs),
     /// Run one performance workload once (W1–W4), printing its time and term count.

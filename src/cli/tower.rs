@@ -1,5 +1,6 @@
 //! `superint tower --max N`: the tower of resonant integrals by expansion, with the proof for
-//! all `m, n`; of a built-in system or of a family of a system file (`--system FILE`).
+//! all `m, n`; of a built-in system, or of the families of a system file (`--system FILE`),
+//! each in its own section.
 
 use std::io::IsTerminal;
 
@@ -21,10 +22,13 @@ Examples:
   superint tower --max 8                  {K_{m,n}, H} for 1 ≤ m, n ≤ 8 (claim C12)
   superint tower --max 24 --system gravity   the shifted tower K'_{m,n} (claim C24)
   superint tower --max 4 --format json
+  superint tower --max 6 --system systems/harmonic-rotor.toml             K and K̄
   superint tower --max 6 --system systems/harmonic-rotor.toml --family K
+  superint tower --max 6 --system systems/harmonic-rotor.toml --family Kbar,K
 
-With a system file, the tower is that of a [[family]] with an eigenvalue (the first, or the
-one named by --family): {K_{m,n}, H} = λ(m, n) K_{m,n} (see docs/system-files.md).";
+With a system file, a tower is that of a [[family]] with an eigenvalue,
+{K_{m,n}, H} = λ(m, n) K_{m,n}, and every such family is checked, each in its own section
+(or those named by --family, in that order; see docs/system-files.md).";
 
 /// Which system: a built-in one or a system file.
 #[derive(Clone, Debug, PartialEq, Eq)]
@@ -64,8 +68,9 @@ pub struct TowerArgs {
     #[arg(long, value_name = "harmonic|gravity|FILE", default_value = "harmonic",
           value_parser = super::Quoting(system_arg))]
     system: SystemArg,
-    /// With a system file: the family (default: the first with an eigenvalue).
-    #[arg(long, value_name = "NAME")]
+    /// With a system file: the families, separated by commas, checked in that order
+    /// (default: every family with an eigenvalue).
+    #[arg(long, value_name = "NAME[,NAME...]")]
     family: Option<String>,
     /// With a system file: check at values of parameters, such as 'w0sq = 2*omega_c^2' (a
     /// resonance between them; several separated by commas). Parameters only: the tower's
@@ -115,7 +120,8 @@ fn progress_bar() -> ProgressBar {
     bar
 }
 
-/// Checks the tower and prints it; whether every bracket held and the proof went through.
+/// Checks the tower (of every family asked for) and prints it; whether every bracket held and
+/// every proof went through.
 pub fn run(job: &TowerJob) -> anyhow::Result<bool> {
     let bar = progress_bar();
     let mut progress = |done: usize, total: usize| {

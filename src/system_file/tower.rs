@@ -22,7 +22,7 @@ use super::error::{ErrorKind, FileError};
 use super::scope::{substitute, Scope};
 use super::{Caller, LoadedSystem};
 use crate::report::{
-    ClaimResult, Entry, Fact, ProofResult, Report, Section, SummaryKind, TowerResult,
+    listed, ClaimResult, Entry, Fact, ProofResult, Report, Section, SummaryKind, TowerResult,
 };
 
 /// The largest degree in the indices of an eigenvalue that the all-`m, n` proof compares on
@@ -380,21 +380,31 @@ fn eigenfunction_lemma(m: &str, n: &str) -> String {
     )
 }
 
-/// The tower job on a system file: the family `family` (or the first with an eigenvalue),
+/// The tower job on a system file: for each family named in `family` (one name, or several
+/// separated by commas, in that order), or else for every family with an eigenvalue,
 /// `{K_{m,n}, H} = λ(m, n) K_{m,n}` expanded for `1 ≤ m, n ≤ max`, and the proof for all
-/// `m, n` when the family is a product of powers. The family may be in any names, the file's
-/// or one added in code ([`LoadedSystem::add_family`]); the tower and the proof come back as
-/// [`Report::tower`] and [`Report::proof`]. [`family_tower_report_with_progress`] reports
-/// each bracket as it is done.
+/// `m, n` when the family is a product of powers, each family in its own section. A family
+/// may be in any names, the file's or one added in code ([`LoadedSystem::add_family`]); the
+/// towers and the proofs come back as [`Report::towers`] and [`Report::proofs`] (the first
+/// of each as [`Report::tower`] and [`Report::proof`]).
+/// [`family_tower_report_with_progress`] reports each bracket as it is done.
+///
+/// Errors if a name is no family's, if a family named has no eigenvalue, or, when none is
+/// named, if no family has one.
 ///
 /// ```
 /// use superint::system_file::{family_tower_report, load, LimitsOverride};
 ///
 /// let rotor = load("systems/gravity-rotor.toml", &LimitsOverride::default())?;
+/// // K' and K̄', the families with an eigenvalue, each in its section.
 /// let report = family_tower_report(&rotor, None, 3, None)?;
-/// let tower = report.tower().expect("a tower");
-/// assert_eq!((tower.checked, tower.failures.len()), (9, 0));
-/// assert!(report.proof().is_some_and(|p| p.holds()));
+/// let towers: Vec<_> = report.towers().map(|t| (t.family.as_str(), t.checked)).collect();
+/// assert_eq!(towers, [("K'_{m,n}", 9), ("K̄'_{m,n}", 9)]);
+/// assert!(report.proofs().all(|p| p.holds()) && report.all_proved());
+/// // One of them by name.
+/// let report = family_tower_report(&rotor, Some("Kbarp"), 3, None)?;
+/// assert_eq!(report.towers().count(), 1);
+/// assert_eq!(report.tower().map(|t| t.failures.len()), Some(0));
 /// # Ok::<(), superint::system_file::FileError>(())
 /// ```
 pub fn family_tower_report(
@@ -406,8 +416,9 @@ pub fn family_tower_report(
     family_tower_report_with_progress(file, family, max, when, &mut |_, _| {})
 }
 
-/// [`family_tower_report`], calling `progress(done, total)` after each bracket of the tower
-/// (the command line's progress bar; a program's own, or a log).
+/// [`family_tower_report`], calling `progress(done, total)` after each bracket of the towers,
+/// counted over every family's together (the command line's progress bar; a program's own,
+/// or a log).
 ///
 /// ```
 /// use superint::system_file::{family_tower_report_with_progress, load, LimitsOverride};
@@ -419,6 +430,13 @@ pub fn family_tower_report(
 /// })?;
 /// assert!(report.all_proved());
 /// assert_eq!(seen, [(1, 4), (2, 4), (3, 4), (4, 4)]);
+/// // Two families, K and K̄: their eight brackets in one count.
+/// seen.clear();
+/// family_tower_report_with_progress(&rotor, Some("K,Kbar"), 2, None, &mut |done, total| {
+///     seen.push((done, total))
+/// })?;
+/// assert_eq!(seen.first(), Some(&(1, 8)));
+/// assert_eq!(seen.last(), Some(&(8, 8)));
 /// # Ok::<(), superint::system_file::FileError>(())
 /// ```
 pub fn family_tower_report_with_progress(
@@ -431,20 +449,54 @@ pub fn family_tower_report_with_progress(
     refuse_atoms(file)?;
     let start = Instant::now();
     refuse_phase_condition(file, when)?;
-    let k = tower_family(file, family)?;
-    let shown = ShownFamily::of(file, k)?;
-    let tower_start = Instant::now();
-    let failures = tower_failures(file, k, max, when, progress)?;
-    let tower = shown.tower(file, max, when, failures, tower_start);
-    let [m, n] = &shown.indices;
-    let proof = file.family_proof(
-        k,
-        &format!("{}-all", shown.name),
-        &format!("{} for all {m}, {n} ≥ 0", shown.identity()),
-        when,
-    )?;
-    let entries = vec![shown.introduction(file), Entry::Tower(tower), proof];
-    Ok(shown.report(file, max, when, entries, start))
+    // Every family is shown, and so found to have an eigenvalue, before any bracket is formed.
+    let families = tower_families(file, family)?
+        .into_iter()
+        .map(|k| ShownFamily::of(file, k))
+        .collect::<Result<Vec<_>, _>>()?;
+    // The brackets are counted over every family's together.
+    let per_family = pairs(max);
+    let total = per_family.saturating_mul(families.len());
+    let (mut sections, mut before) = (Vec::new(), 0);
+    for (shown, number) in families.iter().zip(1..) {
+        let entries = shown.entries(file, max, when, &mut |done, _| {
+            progress(before + done, total)
+        })?;
+        sections.push(shown.section(file, number, entries));
+        before += per_family;
+    }
+    Ok(Report {
+        title: towers_title(&families, max, when),
+        subtitle: file.source.origin.clone(),
+        sections,
+        summary: SummaryKind::Check { files: 1 },
+        seconds: start.elapsed().as_secs_f64(),
+        caller: file.caller,
+    })
+}
+
+/// The title of the towers of `families`, `1 ≤ m, n ≤ max` (at `when`'s values):
+/// `` The tower of `K_{m,n}`, `1 ≤ m, n ≤ 3` ``, or of several,
+/// `` The towers of `K_{m,n}` and `K̄_{m,n}`, `1 ≤ m, n ≤ 3` `` (each range of indices once).
+fn towers_title(families: &[ShownFamily], max: i64, when: Option<&Condition>) -> String {
+    let kmns: Vec<String> = families.iter().map(|f| format!("`{}`", f.kmn)).collect();
+    let mut ranges: Vec<String> = Vec::new();
+    for [m, n] in families.iter().map(|f| &f.indices) {
+        let range = format!("`1 ≤ {m}, {n} ≤ {max}`");
+        if !ranges.contains(&range) {
+            ranges.push(range);
+        }
+    }
+    let noun = match families.len() {
+        1 => "tower",
+        _ => "towers",
+    };
+    let at_values = when.map_or_else(String::new, |c| format!(" at `{}`", c.text));
+    format!(
+        "The {noun} of {}, {}{at_values}",
+        listed(&kmns),
+        listed(&ranges)
+    )
 }
 
 /// Refuses a system with denominator atoms or radicals, which a family's tower does not take.
@@ -459,6 +511,8 @@ fn refuse_atoms(file: &LoadedSystem) -> Result<(), FileError> {
 /// A family as the tower's report writes it, in the file's names: `K_{m,n}`, its value and
 /// its eigenvalue.
 struct ShownFamily {
+    /// The family's index among the file's families.
+    index: usize,
     /// The family's name, which the claims' ids start with.
     name: String,
     /// The names of its indices, `m` and `n`.
@@ -482,6 +536,7 @@ impl ShownFamily {
         let eigen_tree = scope.tree(&f.source, f.eigenvalue.as_ref().expect("checked"))?;
         let [m, n] = &f.indices;
         Ok(ShownFamily {
+            index: k,
             name: f.name.clone(),
             indices: f.indices.clone(),
             kmn: format!("{}_{{{m},{n}}}", f.display),
@@ -507,34 +562,37 @@ impl ShownFamily {
         ))
     }
 
-    /// The report of the tower of `1 ≤ m, n ≤ max` (at `when`'s values), with its `entries`,
-    /// timed from `start`.
-    fn report(
+    /// The section's entries: the introduction, the tower of `1 ≤ m, n ≤ max` (at `when`'s
+    /// values), each bracket reported to `progress`, and the proof for all `m, n` or why
+    /// there is none.
+    fn entries(
         &self,
         file: &LoadedSystem,
         max: i64,
         when: Option<&Condition>,
-        entries: Vec<Entry>,
-        start: Instant,
-    ) -> Report {
+        progress: &mut dyn FnMut(usize, usize),
+    ) -> Result<Vec<Entry>, FileError> {
+        let tower_start = Instant::now();
+        let failures = tower_failures(file, self.index, max, when, progress)?;
+        let tower = self.tower(file, max, when, failures, tower_start);
         let [m, n] = &self.indices;
-        let at_values = when.map_or_else(String::new, |c| format!(" at `{}`", c.text));
-        Report {
-            title: format!(
-                "The tower of `{}`, `1 ≤ {m}, {n} ≤ {max}`{at_values}",
-                self.kmn
-            ),
-            subtitle: file.source.origin.clone(),
-            sections: vec![Section {
-                number: 1,
-                title: format!("`{{{}, H}}` for {}", self.kmn, file.the_name()),
-                file: Some(file.source.origin.clone()),
-                entries,
-                names: Names::of_system(&file.system),
-            }],
-            summary: SummaryKind::Check { files: 1 },
-            seconds: start.elapsed().as_secs_f64(),
-            caller: file.caller,
+        let proof = file.family_proof(
+            self.index,
+            &format!("{}-all", self.name),
+            &format!("{} for all {m}, {n} ≥ 0", self.identity()),
+            when,
+        )?;
+        Ok(vec![self.introduction(file), Entry::Tower(tower), proof])
+    }
+
+    /// The family's section, numbered `number`, with its `entries`.
+    fn section(&self, file: &LoadedSystem, number: u32, entries: Vec<Entry>) -> Section {
+        Section {
+            number,
+            title: format!("`{{{}, H}}` for {}", self.kmn, file.the_name()),
+            file: Some(file.source.origin.clone()),
+            entries,
+            names: Names::of_system(&file.system),
         }
     }
 
@@ -593,15 +651,36 @@ fn refuse_phase_condition(file: &LoadedSystem, when: Option<&Condition>) -> Resu
     Ok(())
 }
 
-/// The index of the family whose tower is checked: the one named, or the first with an
-/// eigenvalue.
-fn tower_family(file: &LoadedSystem, family: Option<&str>) -> Result<usize, FileError> {
-    let names: Vec<&str> = file.families.iter().map(|f| f.name.as_str()).collect();
-    Ok(match family {
-        Some(name) => file.family(name).ok_or_else(|| {
-            FileError::new(
-                ErrorKind::Family,
-                &file.source.origin,
+/// The indices of the families whose towers are checked, in order: those named in `family`
+/// (one name, or several separated by commas), or else every family with an eigenvalue.
+fn tower_families(file: &LoadedSystem, family: Option<&str>) -> Result<Vec<usize>, FileError> {
+    let Some(names) = family else {
+        let found: Vec<usize> = (file.families.iter().enumerate())
+            .filter(|(_, f)| f.eigenvalue.is_some())
+            .map(|(k, _)| k)
+            .collect();
+        return match found.is_empty() {
+            true => Err(no_family_with_an_eigenvalue(file)),
+            false => Ok(found),
+        };
+    };
+    let mut found = Vec::new();
+    for name in names.split(',').map(str::trim) {
+        // A lone empty name is no family's, as any other unknown one.
+        if name.is_empty() && names.contains(',') {
+            return Err(family_refused(
+                file,
+                format!(
+                    "the list {} has an empty name: families are named separated by commas, \
+                     such as K,Kbar",
+                    trigpoly::quoted_name(names)
+                ),
+            ));
+        }
+        let k = file.family(name).ok_or_else(|| {
+            let declared: Vec<&str> = file.families.iter().map(|f| f.name.as_str()).collect();
+            family_refused(
+                file,
                 format!(
                     "no family named {} (the {} {})",
                     trigpoly::quoted_name(name),
@@ -609,41 +688,53 @@ fn tower_family(file: &LoadedSystem, family: Option<&str>) -> Result<usize, File
                         true => "system has",
                         false => "file declares",
                     },
-                    if names.is_empty() {
-                        "none".to_string()
-                    } else {
-                        names.join(", ")
+                    match declared.is_empty() {
+                        true => "none".to_string(),
+                        false => declared.join(", "),
                     }
                 ),
             )
-        })?,
-        None => file
-            .families
-            .iter()
-            .position(|f| f.eigenvalue.is_some())
-            .ok_or_else(|| match file.source.program {
-                true => FileError::new(
-                    ErrorKind::Family,
-                    &file.source.origin,
-                    "the system has no family with an eigenvalue, so there is no tower to check",
-                )
-                .with_hint(
-                    "add one with LoadedSystem::add_family, such as add_family(\"K\", \"K\", \
-                     [\"m\", \"n\"], \"Z^m*exp(-i*n*theta)\", \
-                     Some(\"i*(m*omega - n*p_theta/I)\"))",
+        })?;
+        if found.contains(&k) {
+            return Err(family_refused(
+                file,
+                format!(
+                    "the family {} is named twice: each tower is checked once",
+                    trigpoly::quoted_name(name)
                 ),
-                false => FileError::new(
-                    ErrorKind::Family,
-                    &file.source.origin,
-                    "the file declares no [[family]] with an eigenvalue, so there is no tower to \
-                     check",
-                )
-                .with_hint(
-                    "declare one, such as name = \"K\", value = \"Z^m*exp(-i*n*theta)\", \
-                     eigenvalue = \"i*(m*omega - n*p_theta/I)\" (see docs/system-files.md)",
-                ),
-            })?,
-    })
+            ));
+        }
+        found.push(k);
+    }
+    Ok(found)
+}
+
+/// A tower's families refused, for `message`: the file's, or the program's system's.
+fn family_refused(file: &LoadedSystem, message: impl Into<String>) -> FileError {
+    FileError::new(ErrorKind::Family, &file.source.origin, message)
+}
+
+/// That `file` has no family with an eigenvalue, and so no tower, with how to declare one.
+fn no_family_with_an_eigenvalue(file: &LoadedSystem) -> FileError {
+    match file.source.program {
+        true => family_refused(
+            file,
+            "the system has no family with an eigenvalue, so there is no tower to check",
+        )
+        .with_hint(
+            "add one with LoadedSystem::add_family, such as add_family(\"K\", \"K\", \
+             [\"m\", \"n\"], \"Z^m*exp(-i*n*theta)\", \
+             Some(\"i*(m*omega - n*p_theta/I)\"))",
+        ),
+        false => family_refused(
+            file,
+            "the file declares no [[family]] with an eigenvalue, so there is no tower to check",
+        )
+        .with_hint(
+            "declare one, such as name = \"K\", value = \"Z^m*exp(-i*n*theta)\", \
+             eigenvalue = \"i*(m*omega - n*p_theta/I)\" (see docs/system-files.md)",
+        ),
+    }
 }
 
 /// How many pairs `(a, b)` have `1 ≤ a, b ≤ max`: `max²`, and none when `max < 1`.

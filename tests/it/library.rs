@@ -89,6 +89,44 @@ fn family_tower_in_own_names() {
     assert!(!wrong.all_proved());
 }
 
+/// Without a family named, every family with an eigenvalue has its tower, in order, each in
+/// its own section: of the file [`crate::TWO_TOWERS`], `K` (eigenvalue right) is proved and
+/// `W` (eigenvalue wrong) refuted, its proof failing at `{p_x − ix, H}`, and `P` (none) is
+/// passed over; the progress counts the eight brackets of both together. A list names them
+/// in its order.
+#[test]
+fn family_towers_of_every_family_each_in_its_section() {
+    let file = load_system_text("two.toml", crate::TWO_TOWERS, &LimitsOverride::default()).unwrap();
+    let mut seen = Vec::new();
+    let report =
+        family_tower_report_with_progress(&file, None, 2, None, &mut |d, t| seen.push((d, t)))
+            .unwrap();
+    assert_eq!(seen, (1..=8).map(|d| (d, 8)).collect::<Vec<_>>());
+    assert_eq!(report.sections.len(), 2);
+    let towers: Vec<_> = report
+        .towers()
+        .map(|t| (t.claim.id.as_str(), t.checked, t.failures.len()))
+        .collect();
+    assert_eq!(towers, [("K-tower", 4, 0), ("W-tower", 4, 4)]);
+    let proofs: Vec<bool> = report.proofs().map(|p| p.holds()).collect();
+    assert_eq!(proofs, [true, false]);
+    assert_eq!(
+        report.proofs().nth(1).unwrap().facts[1]
+            .found_statement
+            .as_deref(),
+        Some("{p_x − ix, H} = −i (p_x − ix)")
+    );
+    assert_eq!(report.tower().unwrap().claim.id, "K-tower");
+    assert!(!report.all_proved());
+    assert_eq!(report.claims().len(), 4);
+
+    let listed = family_tower_report(&file, Some("W,K"), 1, None).unwrap();
+    let ids: Vec<_> = listed.towers().map(|t| t.claim.id.as_str()).collect();
+    assert_eq!(ids, ["W-tower", "K-tower"]);
+    let err = family_tower_report(&file, Some("K,P"), 1, None).unwrap_err();
+    assert_eq!(err.message, "the family 'P' declares no eigenvalue");
+}
+
 /// A tower of bound `N < 1` checks no bracket (`1 ≤ a, b ≤ N` holds no pair), and says so:
 /// `N = −3` reported nine brackets checked, none of which was.
 #[test]

@@ -200,6 +200,14 @@ pub fn scratch_text(dir: &str, name: &str, text: &str) -> std::path::PathBuf {
     file
 }
 
+/// Two families of `(p_x + ix)^m (p_x − ix)^n` for `H = (p_x² + x²)/2`: `K` with the
+/// eigenvalue `i(m − n)`, and `W` with a wrong one, `i(m + n)`; `P` has none.
+pub const TWO_TOWERS: &str = "name = \"oscillator\"\nhamiltonian = \"p_x^2/2 + x^2/2\"\n\
+    [phase_space]\ncoordinates = [\"x\"]\n\
+    [[family]]\nname = \"K\"\nvalue = \"(p_x + i*x)^m*(p_x - i*x)^n\"\neigenvalue = \"i*(m - n)\"\n\
+    [[family]]\nname = \"W\"\nvalue = \"(p_x + i*x)^m*(p_x - i*x)^n\"\neigenvalue = \"i*(m + n)\"\n\
+    [[family]]\nname = \"P\"\nvalue = \"re(K_m_n)\"\n";
+
 /// The pendulum `p_t²/2 − g cos t` as a system file: one angle, the parameter `g`.
 pub const PENDULUM: &str = "name = \"pendulum\"\nhamiltonian = \"p_t^2/2 - g*cos(t)\"\n\
                             [phase_space]\nangles = [\"t\"]\nparameters = [\"g\"]\n";

@@ -1410,6 +1410,217 @@ fn tower_at_values_of_parameters() {
     );
 }
 
+/// Every family of a file with an eigenvalue has its tower checked, each in its own section:
+/// the harmonic rotor's `K_{m,n}` and `K̄_{m,n}` (it checked `K` alone), both expanded and
+/// proved for all `m, n`, four claims in all; `P` and `Q`, which declare no eigenvalue, are
+/// passed over. The JSON has the two sections, towers and proofs.
+#[test]
+fn tower_checks_every_family_with_an_eigenvalue() {
+    let args = [
+        "tower",
+        "--system",
+        "systems/harmonic-rotor.toml",
+        "--max",
+        "2",
+        "--no-timings",
+    ];
+    let out = run(&args, 0);
+    assert!(
+        out.starts_with("The towers of K_{m,n} and K̄_{m,n}, 1 ≤ m, n ≤ 2\n"),
+        "{out}"
+    );
+    let sections: Vec<&str> = out
+        .lines()
+        .filter(|l| l.contains("} for the harmonic rotor"))
+        .collect();
+    assert_eq!(
+        sections,
+        [
+            "1  {K_{m,n}, H} for the harmonic rotor",
+            "2  {K̄_{m,n}, H} for the harmonic rotor"
+        ]
+    );
+    let verdicts = [
+        "[K-tower proved]",
+        "[K-all proved]",
+        "[Kbar-tower proved]",
+        "[Kbar-all proved]",
+    ];
+    let places: Vec<Option<usize>> = verdicts.iter().map(|v| out.find(v)).collect();
+    assert!(places.iter().all(Option::is_some), "{out}");
+    assert!(places.is_sorted(), "{out}");
+    assert!(
+        out.contains("Therefore: {K̄_{m,n}, H} = −i(mω − nΩ) K̄_{m,n} for all m, n ≥ 0."),
+        "{out}"
+    );
+    assert!(
+        !out.contains("P-tower") && !out.contains("{P_{m,n}, H}"),
+        "{out}"
+    );
+    assert!(
+        out.ends_with("\n4 claims in 1 file: 4 proved, 0 refuted; all as expected\n"),
+        "{out}"
+    );
+
+    let json: Value =
+        serde_json::from_str(&run(&[&args[..], &["--format", "json"]].concat(), 0)).expect("JSON");
+    assert_eq!(
+        json["title"],
+        "The towers of K_{m,n} and K̄_{m,n}, 1 ≤ m, n ≤ 2"
+    );
+    assert_eq!(json["sections"].as_array().map(Vec::len), Some(2));
+    let towers: Vec<Value> = (json["towers"].as_array().expect("towers").iter())
+        .map(|t| serde_json::json!([t["section"], t["id"], t["outcome"]]))
+        .collect();
+    assert_eq!(
+        towers,
+        [
+            serde_json::json!([1, "K-tower", "proved"]),
+            serde_json::json!([2, "Kbar-tower", "proved"])
+        ]
+    );
+    assert_eq!(json["proofs"].as_array().map(Vec::len), Some(2));
+    let summary = &json["summary"];
+    assert_eq!(
+        (summary["claims"].as_u64(), summary["proved"].as_u64()),
+        (Some(4), Some(4))
+    );
+}
+
+/// `superint tower --system systems/harmonic-rotor.toml --family FAMILY --max 1
+/// --no-timings`, run at the workspace root.
+fn harmonic_rotor_towers(family: &str) -> Output {
+    let args = [
+        "tower",
+        "--system",
+        "systems/harmonic-rotor.toml",
+        "--family",
+        family,
+    ];
+    superint_in(
+        root(),
+        &[&args[..], &["--max", "1", "--no-timings"]].concat(),
+    )
+}
+
+/// `--family` names the towers to check: one name checks that family alone, under today's
+/// title; a list separated by commas checks each in its own section, in the order given.
+#[test]
+fn tower_family_takes_one_name_or_a_list_in_order() {
+    let tower = |family: &str| {
+        let o = harmonic_rotor_towers(family);
+        assert_eq!(o.status.code(), Some(0), "{family}: {}", text(&o.stderr));
+        text(&o.stdout)
+    };
+    let one = tower("K");
+    assert!(
+        one.starts_with("The tower of K_{m,n}, 1 ≤ m, n ≤ 1\n"),
+        "{one}"
+    );
+    assert!(
+        one.contains("[K-tower proved]") && one.contains("[K-all proved]"),
+        "{one}"
+    );
+    assert!(!one.contains("Kbar") && !one.contains("\n2  "), "{one}");
+    assert!(
+        one.ends_with("\n2 claims in 1 file: 2 proved, 0 refuted; all as expected\n"),
+        "{one}"
+    );
+
+    for (list, first, second) in [("K,Kbar", "K", "Kbar"), ("Kbar, K", "Kbar", "K")] {
+        let both = tower(list);
+        let place = |family: &str| both.find(&format!("[{family}-tower proved]"));
+        assert!(
+            place(first).is_some() && place(first) < place(second),
+            "{list}: {both}"
+        );
+        assert!(both.contains("\n2  {"), "{list}: {both}");
+        assert!(
+            both.ends_with("\n4 claims in 1 file: 4 proved, 0 refuted; all as expected\n"),
+            "{both}"
+        );
+    }
+    assert!(tower("Kbar,K").starts_with("The towers of K̄_{m,n} and K_{m,n}, 1 ≤ m, n ≤ 1\n"));
+}
+
+/// A file whose second family declares a wrong eigenvalue, `i(m + n)` for
+/// `(p_x + ix)^m (p_x − ix)^n`: its tower and proof are refuted in its own section, while the
+/// first family's, in the same file and run, are proved; the run exits 1.
+#[test]
+fn tower_refutes_a_wrong_eigenvalue_in_its_own_section() {
+    let dir = scratch("tower-two-families");
+    std::fs::write(dir.join("two.toml"), crate::TWO_TOWERS).expect("write");
+    let o = superint_in(
+        &dir,
+        &[
+            "tower",
+            "--system",
+            "two.toml",
+            "--max",
+            "2",
+            "--no-timings",
+        ],
+    );
+    let out = text(&o.stdout);
+    assert_eq!(o.status.code(), Some(1), "{out}{}", text(&o.stderr));
+    let second = out
+        .find("\n2  {W_{m,n}, H} for the oscillator\n")
+        .expect("a section of W");
+    let (first, second) = out.split_at(second);
+    assert!(
+        first.contains("[K-tower proved]") && first.contains("[K-all proved]"),
+        "{out}"
+    );
+    assert!(
+        second.contains("[W-tower REFUTED]") && second.contains("[W-all REFUTED]"),
+        "{out}"
+    );
+    assert!(
+        second.contains("fails for (m, n) in [(1, 1), (1, 2), (2, 1), (2, 2)]"),
+        "{out}"
+    );
+    assert!(
+        out.ends_with(
+            "\n4 claims in 1 file: 2 proved, 2 refuted; 2 NOT as expected: W-tower, W-all\n"
+        ),
+        "{out}"
+    );
+}
+
+/// `--family` refuses a list with an unknown name (exit 2, naming it and the declared
+/// families), a family with no eigenvalue, a name given twice and an empty name, before any
+/// bracket is formed: nothing is printed.
+#[test]
+fn tower_family_list_refuses_bad_names() {
+    for (family, message) in [
+        (
+            "K,Nope",
+            "superint: error: systems/harmonic-rotor.toml: no family named 'Nope' (the file \
+             declares K, Kbar, P, Q)",
+        ),
+        (
+            "K,P",
+            "superint: error: systems/harmonic-rotor.toml:68:8: the family 'P' declares no \
+             eigenvalue",
+        ),
+        (
+            "K,Kbar,K",
+            "superint: error: systems/harmonic-rotor.toml: the family 'K' is named twice: each \
+             tower is checked once",
+        ),
+        (
+            "K,,Kbar",
+            "superint: error: systems/harmonic-rotor.toml: the list 'K,,Kbar' has an empty name: \
+             families are named separated by commas, such as K,Kbar",
+        ),
+    ] {
+        let o = harmonic_rotor_towers(family);
+        assert_eq!(o.status.code(), Some(2), "{family}");
+        assert_eq!(text(&o.stderr).lines().next(), Some(message), "{family}");
+        assert!(o.stdout.is_empty(), "{family}");
+    }
+}
+
 #[test]
 fn check_exit_status_follows_expectations() {
     let dir = scratch("expectations");
