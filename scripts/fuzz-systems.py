@@ -11,7 +11,7 @@ the timeout: a hang is a failure too (it found a quadratic exact division and a 
 breaker, each minutes long on a result of 10^5 terms).
 
     scripts/fuzz-systems.py --cases 300 --seed 1              # check, in every output format
-    scripts/fuzz-systems.py --cases 300 --seed 1 --commands table,search,expand,bracket,rank,closure
+    scripts/fuzz-systems.py --cases 300 --seed 1 --commands table,search,expand,bracket,rank,closure,tower
 
 A failing case is written to --keep (default /tmp/superint-fuzz) with the command that failed.
 Standard library only; superint is built in release mode first unless --binary is given.
@@ -49,7 +49,11 @@ COMMANDS = {
     "bracket": ["H", "x"],
     "rank": ["H"],
     "closure": ["H"],
+    "tower": ["--max", "2"],
 }
+
+# The option before the file, for a command that takes it so (`tower --system FILE`).
+FILE_OPTION = {"tower": ["--system"]}
 
 # A line `key = "expression"` of a system file (keys whose strings are prose are left alone).
 EXPRESSION = re.compile(
@@ -94,7 +98,7 @@ def command_line(binary, command, path):
     line = [binary, name, "--no-timings"]
     if form:
         line += ["--format", form]
-    return line + [path] + COMMANDS[command]
+    return line + FILE_OPTION.get(name, []) + [path] + COMMANDS[command]
 
 
 def main():

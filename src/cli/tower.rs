@@ -116,7 +116,8 @@ fn progress_bar() -> ProgressBar {
             .expect("a valid template")
             .progress_chars("=> "),
     );
-    bar.set_message("{K_{m,n}, H}");
+    // Of every family's tower together, whatever their names.
+    bar.set_message("brackets");
     bar
 }
 
