@@ -285,15 +285,17 @@ fn table(t: &TableResult, section: u32) -> Value {
         "caption": plain(&t.caption),
         "functions": t.table.names,
         "display": t.table.display,
-        "entries": t.table.entries.iter().map(|row| row.iter().map(|e| json!({
-            "text": e.render(Style::Unicode),
-            // Only an expression reads back: not `*` (outside) or `?` (undecided).
-            "ascii": match e {
-                TableEntry::Outside | TableEntry::Undecided(_) => Value::Null,
-                _ => e.render(Style::Ascii).into(),
-            },
-            "latex": e.render(Style::Latex),
-        })).collect::<Vec<_>>()).collect::<Vec<_>>(),
+        "entries": t.table.entries.iter().enumerate().map(|(a, row)| {
+            row.iter().enumerate().map(|(b, e)| json!({
+                "text": t.entry(a, b, Style::Unicode),
+                // Only an expression reads back: not `*` (outside) or `?` (undecided).
+                "ascii": match e {
+                    TableEntry::Outside | TableEntry::Undecided(_) => Value::Null,
+                    _ => t.entry(a, b, Style::Ascii).into(),
+                },
+                "latex": t.entry(a, b, Style::Latex),
+            })).collect::<Vec<_>>()
+        }).collect::<Vec<_>>(),
         "excerpts": t.excerpts.iter().map(|((a, b), e)| json!({
             "row": a,
             "column": b,

@@ -353,15 +353,22 @@ impl TableResult {
         self.table.entries.iter().flatten().any(long)
     }
 
-    /// The entry in row `a`, column `b` in a notation, `+ …` (`+ \dots`) after one cut to
-    /// its leading part.
-    pub fn cell(&self, a: usize, b: usize, style: Style) -> String {
-        let text = match &self.table.entries[a][b] {
+    /// The entry in row `a`, column `b` in a notation, as it stands (a polynomial in the
+    /// functions with the factor its terms share in front, where
+    /// [`TableResult::in_functions`] says it is one).
+    pub fn entry(&self, a: usize, b: usize, style: Style) -> String {
+        match &self.table.entries[a][b] {
             brackets::Entry::Expression(e) if self.polynomials_in_functions => {
                 super::written_in_functions(e, style)
             }
             entry => entry.render(style),
-        };
+        }
+    }
+
+    /// The entry in row `a`, column `b` in a notation, `+ …` (`+ \dots`) after one cut to
+    /// its leading part.
+    pub fn cell(&self, a: usize, b: usize, style: Style) -> String {
+        let text = self.entry(a, b, style);
         match (self.excerpts.contains_key(&(a, b)), style) {
             (false, _) => text,
             (true, Style::Latex) => format!(r"{text} + \dots"),

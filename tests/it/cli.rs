@@ -3684,6 +3684,19 @@ fn the_closure_help_example_of_a_cubic_algebra_runs() {
     let args: Vec<&str> = example.split(' ').skip(1).collect();
     let out = run(&args, 0);
     assert!(out.contains("{S, C} = 24M³(3 H − 4 H_x) H_x²"), "{out}");
+    // The table's entry in JSON as the text writes it, and it reads back as the bracket.
+    let v: Value = serde_json::from_str(&run(&[&args[..], &["--format", "json"]].concat(), 0))
+        .expect("JSON");
+    let entry = &v["tables"][0]["entries"][2][3];
+    assert_eq!(entry["text"], "24M³(3 H − 4 H_x) H_x²");
+    let file = superint::system_file::load(
+        Path::new("systems/fokas-lagerstrom-1-3.toml"),
+        &superint::system_file::LimitsOverride::default(),
+    )
+    .expect("the file loads");
+    let read = |text: &str| file.parse(text).expect("it parses");
+    let ascii = entry["ascii"].as_str().expect("ascii");
+    assert_eq!(read(ascii), read("{S, C}"), "{ascii}");
 }
 
 /// The example of `--define` in `closure --help` runs (its `Hx` read as `H·x` and was
