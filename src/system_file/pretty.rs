@@ -29,6 +29,11 @@ const NEG: u8 = 4;
 const POWER: u8 = 5;
 const ATOM: u8 = 6;
 
+/// Where a product writes two one-letter names side by side (`M` and `ω` of `Mω`) while it is
+/// printed: once the whole expression is, the run of letters each stands in becomes spaced or
+/// not ([`LoadedSystem::settle_runs`]). An invisible times, which no name has.
+const JUXTAPOSED: &str = "\u{2062}";
+
 impl Printed {
     fn atom(text: String) -> Self {
         let long = text
@@ -113,56 +118,64 @@ impl LoadedSystem {
 
     /// An expression tree in the paper's notation.
     pub(crate) fn pretty(&self, tree: &Tree) -> String {
-        self.print(tree, self.spaced_products(tree)).text
+        self.settle_runs(&self.print(tree).text)
     }
 
     /// An expression tree in the paper's notation as the left factor of a product: a sum or a
     /// quotient in parentheses (`(iωm − 3iωn) W_{m,n}`).
     pub(crate) fn pretty_factor(&self, tree: &Tree) -> String {
-        self.print(tree, self.spaced_products(tree))
-            .wrapped(PRODUCT)
-            .text
+        self.settle_runs(&self.print(tree).wrapped(PRODUCT).text)
     }
 
-    /// Whether every product of `tree` is written with a space (`x y`), because its one-letter
-    /// names side by side could read back as another name of the system (a variable or
-    /// function `xy`).
-    fn spaced_products(&self, tree: &Tree) -> bool {
-        let written: Vec<String> = tree
-            .names()
-            .into_iter()
-            .map(|(n, _)| self.display_name(n))
-            .collect();
-        // The file's variables know its functions' names too (`VarSetBuilder::also_named`).
-        self.system
-            .vars()
-            .juxtaposition_is_ambiguous(written.iter().map(String::as_str))
+    /// `text` with each run of one-letter names side by side ([`JUXTAPOSED`] between each two)
+    /// written with a space between each two where two or more of them in a row spell another
+    /// name of the system, a variable or a function (`x y` beside a function `xy`,
+    /// `VarSet::juxtaposition_is_ambiguous`), which it would read back as; run together
+    /// elsewhere, as the paper writes them (`2iMωy` beside functions `Hx` and `Hy`).
+    fn settle_runs(&self, text: &str) -> String {
+        let in_run = |c: char| JUXTAPOSED.contains(c) || is_letter(c);
+        let mut out = String::with_capacity(text.len());
+        let mut rest = text;
+        while let Some(at) = rest.find(JUXTAPOSED) {
+            let start = rest[..at].trim_end_matches(in_run).len();
+            let end = rest[at..]
+                .find(|c: char| !in_run(c))
+                .map_or(rest.len(), |k| at + k);
+            let run: Vec<&str> = rest[start..end].split(JUXTAPOSED).collect();
+            // The file's variables know its functions' names too (`VarSetBuilder::also_named`).
+            let ambiguous = self.system.vars().juxtaposition_is_ambiguous(&run);
+            out.push_str(&rest[..start]);
+            out.push_str(&run.join(if ambiguous { " " } else { "" }));
+            rest = &rest[end..];
+        }
+        out.push_str(rest);
+        out
     }
 
-    /// `tree` printed, every product spaced if `spaced`.
-    fn print(&self, tree: &Tree, spaced: bool) -> Printed {
+    /// `tree` printed, its one-letter names side by side with [`JUXTAPOSED`] between them.
+    fn print(&self, tree: &Tree) -> Printed {
         match &tree.kind {
             ExprKind::Integer(n) => Printed::atom(n.to_string()),
             ExprKind::Name(n) => match self.run_together(tree, n, None) {
-                Some(product) => self.print(&product, spaced),
+                Some(product) => self.print(&product),
                 None => self.print_name(n),
             },
             ExprKind::Pow(a, b)
                 if let (ExprKind::Name(n), false) = (&a.kind, a.in_parentheses()) =>
             {
                 match self.run_together(tree, n, Some(b)) {
-                    Some(product) => self.print(&product, spaced),
-                    None => self.print_power(a, b, spaced),
+                    Some(product) => self.print(&product),
+                    None => self.print_power(a, b),
                 }
             }
-            ExprKind::Neg(a) => self.print_neg(a, spaced),
-            ExprKind::Add(a, b) => self.print_sum(a, "+", b, spaced),
-            ExprKind::Sub(a, b) => self.print_sum(a, "−", b, spaced),
-            ExprKind::Mul(a, b) => self.print_product(a, b, spaced),
-            ExprKind::Div(a, b) => self.print_quotient(a, b, spaced),
-            ExprKind::Pow(a, b) => self.print_power(a, b, spaced),
-            ExprKind::Call(f, _, args) => self.print_call(f, args, spaced),
-            ExprKind::Bracket(a, b) => self.print_bracket(a, b, spaced),
+            ExprKind::Neg(a) => self.print_neg(a),
+            ExprKind::Add(a, b) => self.print_sum(a, "+", b),
+            ExprKind::Sub(a, b) => self.print_sum(a, "−", b),
+            ExprKind::Mul(a, b) => self.print_product(a, b),
+            ExprKind::Div(a, b) => self.print_quotient(a, b),
+            ExprKind::Pow(a, b) => self.print_power(a, b),
+            ExprKind::Call(f, _, args) => self.print_call(f, args),
+            ExprKind::Bracket(a, b) => self.print_bracket(a, b),
         }
     }
 
@@ -214,8 +227,8 @@ impl LoadedSystem {
     }
 
     /// `−a`.
-    fn print_neg(&self, a: &Tree, spaced: bool) -> Printed {
-        let a = self.print(a, spaced).wrapped(QUOTIENT);
+    fn print_neg(&self, a: &Tree) -> Printed {
+        let a = self.print(a).wrapped(QUOTIENT);
         // `−1/x` is a quotient: as a left factor it takes parentheses like `1/x`.
         let prec = if a.prec == QUOTIENT { QUOTIENT } else { NEG };
         Printed {
@@ -228,9 +241,9 @@ impl LoadedSystem {
     }
 
     /// `a + b` or `a − b`.
-    fn print_sum(&self, a: &Tree, op: &str, b: &Tree, spaced: bool) -> Printed {
-        let a = self.print(a, spaced);
-        let b = self.print(b, spaced).wrapped(QUOTIENT);
+    fn print_sum(&self, a: &Tree, op: &str, b: &Tree) -> Printed {
+        let a = self.print(a);
+        let b = self.print(b).wrapped(QUOTIENT);
         let b = if b.prec == NEG { b.wrapped(ATOM) } else { b };
         Printed {
             text: format!("{} {op} {}", a.text, b.text),
@@ -241,14 +254,15 @@ impl LoadedSystem {
         }
     }
 
-    /// `a b`: run together, spaced, or with a dot between numbers.
-    fn print_product(&self, a: &Tree, b: &Tree, spaced: bool) -> Printed {
-        let a = self.print(a, spaced);
+    /// `a b`: run together (one-letter names with [`JUXTAPOSED`] between them), spaced, or
+    /// with a dot between numbers.
+    fn print_product(&self, a: &Tree, b: &Tree) -> Printed {
+        let a = self.print(a);
         // `(Re K) (Im K)`: beside a name of several words in parentheses, another takes them
         // too.
         let words_before = a.trailing_words.is_some();
         let a = a.words_closed().wrapped(PRODUCT);
-        let b = self.print(b, spaced);
+        let b = self.print(b);
         let b = match words_before && b.trailing_words == Some(0) {
             true => b.words_closed(),
             false => b,
@@ -264,22 +278,24 @@ impl LoadedSystem {
         let digit_right = b.text.starts_with(|c: char| c.is_ascii_digit());
         // Letters before parentheses that spell a function, `i·m·(x)`, would read as
         // its call `im(x)`: the left factor takes parentheses, `(im)(x)`.
-        let run = a.text.len()
-            - a.text
-                .trim_end_matches(|c: char| c.is_alphanumeric() || c == '_')
-                .len();
+        let run = a
+            .text
+            .trim_end_matches(|c: char| c.is_alphanumeric() || c == '_' || JUXTAPOSED.contains(c));
+        let written = a.text[run.len()..].replace(JUXTAPOSED, "");
         let call = b.text.starts_with('(')
             && trigpoly::FUNCTIONS
                 .iter()
                 .chain(&["Re", "Im"])
-                .any(|f| a.text[a.text.len() - run..] == **f);
+                .any(|f| written == *f);
         let a = if call { a.wrapped(ATOM) } else { a };
         let sep = if digit_right {
             "·"
         } else if number_left && !a.text.contains(|c: char| c.is_alphabetic()) && !b.first_long {
             ""
-        } else if spaced || a.last_long || b.first_long {
+        } else if a.last_long || b.first_long {
             " "
+        } else if a.text.ends_with(is_letter) && b.text.starts_with(is_letter) {
+            JUXTAPOSED
         } else {
             ""
         };
@@ -293,15 +309,15 @@ impl LoadedSystem {
     }
 
     /// `a/b`.
-    fn print_quotient(&self, a: &Tree, b: &Tree, spaced: bool) -> Printed {
+    fn print_quotient(&self, a: &Tree, b: &Tree) -> Printed {
         // `(x sin θ)/2`, not `x sin θ/2`, which reads as the sine of `θ/2`.
         let at_least = match ends_in_bare_trig(a) {
             true => ATOM + 1,
             false => QUOTIENT,
         };
         // `(Re K)/2` and `x/(Re K)`, not `Re K/2`, which reads as the real part of `K/2`.
-        let a = self.print(a, spaced).words_closed().wrapped(at_least);
-        let b = self.print(b, spaced).words_closed().wrapped(POWER);
+        let a = self.print(a).words_closed().wrapped(at_least);
+        let b = self.print(b).words_closed().wrapped(POWER);
         Printed {
             text: format!("{}/{}", a.text, b.text),
             prec: QUOTIENT,
@@ -312,7 +328,7 @@ impl LoadedSystem {
     }
 
     /// `a^b`: a superscript exponent where it is an integer, `cos²θ` on a function of an angle.
-    fn print_power(&self, a: &Tree, b: &Tree, spaced: bool) -> Printed {
+    fn print_power(&self, a: &Tree, b: &Tree) -> Printed {
         // Names run together are a product, which a power in parentheses takes whole
         // (`(xy)²`) and one without takes at its last name (`xy²` is x·y²): the tree
         // keeps the parentheses in the name's span.
@@ -331,7 +347,7 @@ impl LoadedSystem {
             _ => false,
         };
         // `(Re K)²`, not `Re K²`, the real part of `K²`.
-        let base = self.print(a, spaced);
+        let base = self.print(a);
         let base = match base.trailing_words {
             Some(0) => base.words_closed(),
             _ => base,
@@ -372,7 +388,7 @@ impl LoadedSystem {
             }
             (Some(e), _) => format!("{base_text}{e}"),
             (None, _) => {
-                format!("{base_text}^{}", self.print(b, spaced).wrapped(ATOM).text)
+                format!("{base_text}^{}", self.print(b).wrapped(ATOM).text)
             }
         };
         Printed {
@@ -385,7 +401,7 @@ impl LoadedSystem {
     }
 
     /// `f(args)`: `cos θ` of a bare angle, `Re` and `Im`, or a name that multiplies its parentheses.
-    fn print_call(&self, f: &str, args: &[Tree], spaced: bool) -> Printed {
+    fn print_call(&self, f: &str, args: &[Tree]) -> Printed {
         // `cos θ` of a bare angle, as the paper (and the normal form) writes it.
         if let ([arg], "cos" | "sin") = (args, f) {
             if let ExprKind::Name(angle) = &arg.kind {
@@ -395,7 +411,7 @@ impl LoadedSystem {
                 return p;
             }
         }
-        let args: Vec<String> = args.iter().map(|a| self.print(a, spaced).text).collect();
+        let args: Vec<String> = args.iter().map(|a| self.print(a).text).collect();
         // The paper's (and LaTeX's) real and imaginary parts are `Re` and `Im` (`re`
         // and `im` where the system declares `Re` or `Im` itself); any other name
         // before parentheses multiplies them (`K_{1,1}(x)`).
@@ -420,16 +436,21 @@ impl LoadedSystem {
     }
 
     /// `{a, b}`.
-    fn print_bracket(&self, a: &Tree, b: &Tree, spaced: bool) -> Printed {
+    fn print_bracket(&self, a: &Tree, b: &Tree) -> Printed {
         let mut p = Printed::atom(format!(
             "{{{}, {}}}",
-            self.print(a, spaced).text,
-            self.print(b, spaced).text
+            self.print(a).text,
+            self.print(b).text
         ));
         p.first_long = true;
         p.last_long = true;
         p
     }
+}
+
+/// Whether `c` is part of a letter: a letter, or a mark drawn over one (`Z̄`).
+fn is_letter(c: char) -> bool {
+    c.is_alphabetic() || crate::render::tex::is_combining(c)
 }
 
 /// Whether `tree` is printed ending in `cos θ` or `sin θ` of a bare angle (`x cos θ`,

@@ -2328,7 +2328,7 @@ fn the_same_id_in_two_files_is_two_claims() {
 }
 
 /// A claim is echoed so that it reads back: where one-letter names side by side spell another
-/// name of the system (a coordinate `xy`, a function `Mx`), every product is spaced.
+/// name of the system (a coordinate `xy`, a function `Mx`), they are spaced.
 #[test]
 fn echoed_products_do_not_spell_another_name() {
     let dir = scratch("names-side-by-side");
@@ -2368,6 +2368,54 @@ fn echoed_products_do_not_spell_another_name() {
         "{}",
         text(&plain.stdout)
     );
+}
+
+/// A product is spaced only where its letters would run into another name: in the V_II rotor,
+/// which declares `Hx` and `Hy`, the false ladder `p_y + 2iMωy` is echoed as the paper writes
+/// it (it was `p_y + 2i M ω y`, since `H` and `y` are written in the claim, though never side
+/// by side), as the normal form prints it on the right; beside functions `xy` and `My`, the run
+/// `2i M x y` is spaced, and the other products of the same claim are not (`Max`, `ax`, `2iMx`);
+/// `H` beside `Hy` is a function's name, set apart as ever (`H y`); and letters run together
+/// before parentheses that spell a function, `i·m·(x + y)`, still take their own, `(im)(x + y)`,
+/// not the call `im(x + y)`.
+#[test]
+fn echoed_products_are_spaced_only_where_their_letters_spell_another_name() {
+    let o = superint_in(
+        root(),
+        &[
+            "check",
+            "systems/smorodinsky-winternitz-ii-rotor.toml",
+            "--no-timings",
+        ],
+    );
+    let out = text(&o.stdout);
+    assert!(
+        out.contains("  {p_y + 2iMωy, H} = 2iω(p_y + 2iMωy) "),
+        "{out}"
+    );
+
+    let dir = scratch("runs-side-by-side");
+    let file = "name = \"runs\"\nhamiltonian = \"(p_x^2 + p_y^2)/2 + a*x\"\n\
+                [phase_space]\ncoordinates = [\"x\", \"y\"]\nparameters = [\"M\", \"a\", \"m\"]\n\
+                [[function]]\nname = \"xy\"\nvalue = \"x*p_y\"\n\
+                [[function]]\nname = \"My\"\nvalue = \"M*p_y\"\n\
+                [[function]]\nname = \"Hy\"\nvalue = \"p_y^2/2\"\n\
+                [[claim]]\nclaim = \"{2*i*M*x*y + M*a*x, p_y} = 2*i*M*x\"\n\
+                [[claim]]\nclaim = \"{M*y + a*x, p_y} = M\"\n\
+                [[claim]]\nclaim = \"{H*y, y} = -y*p_y\"\n\
+                [[claim]]\nclaim = \"{i*m*(x + y), p_x} = i*m\"\n";
+    std::fs::write(dir.join("runs.toml"), file).expect("write the file");
+    let o = superint_in(&dir, &["check", "runs.toml", "--no-timings"]);
+    let out = text(&o.stdout);
+    assert_eq!(o.status.code(), Some(0), "{out}{}", text(&o.stderr));
+    for statement in [
+        "  {2i M x y + Max, p_y} = 2iMx ",
+        "  {M y + ax, p_y} = M ",
+        "  {H y, y} = −y p_y ",
+        "  {(im)(x + y), p_x} = im ",
+    ] {
+        assert!(out.contains(statement), "{statement:?} in\n{out}");
+    }
 }
 
 /// Runs the binary at the workspace root with `input` on its standard input.

@@ -6,7 +6,9 @@ use std::fmt;
 
 use crate::number::{Coefficient, GaussianRational, Magnitude, Rational};
 use crate::poly::{CosSinTerm, Poly, TrigMonomial};
-use crate::varset::{has_several_words, unparenthesized, VarKind, VarSet};
+use crate::varset::{
+    has_several_words, juxtaposition_is_ambiguous, unparenthesized, VarKind, VarSet,
+};
 
 mod factored;
 
@@ -296,11 +298,17 @@ impl Product {
 
     /// Writes what separates the next factor (`wide` or not) from the one before, if any.
     fn next(&mut self, out: &mut String, wide: bool) {
+        self.next_apart(out, wide, false);
+    }
+
+    /// [`Product::next`], with a space in text also where `apart` (`x y` beside a variable
+    /// `xy`, though both are one letter).
+    fn next_apart(&mut self, out: &mut String, wide: bool, apart: bool) {
         if self.factors > 0 {
             match self.style {
                 Style::Ascii => out.push('*'),
                 Style::Latex => out.push(' '),
-                Style::Unicode if wide || self.wide => out.push(' '),
+                Style::Unicode if wide || apart || self.wide => out.push(' '),
                 Style::Unicode => {}
             }
         }
@@ -368,10 +376,10 @@ struct Names {
     order: Vec<usize>,
     /// The angles' indices, in declaration order.
     angles: Vec<usize>,
-    /// Whether every variable is a wide factor, spaced from its neighbours even when its name
-    /// is one letter, because the element's one-letter names side by side could spell another
-    /// variable ([`VarSet::juxtaposition_is_ambiguous`]: `x y` beside a variable `xy`).
-    all_wide: bool,
+    /// The declared names of several letters that one-letter names of the element, side by
+    /// side, could spell (`xy` where `x` and `y` are written), in text; most often none, and
+    /// then no term need look at its runs ([`Names::apart_in_runs`]).
+    spellable: Vec<String>,
 }
 
 impl Names {
@@ -405,16 +413,84 @@ impl Names {
                 .collect(),
             order: order.iter().map(|v| v.index()).collect(),
             angles: vars.angles().map(|v| v.index()).collect(),
-            // What text writes is each variable's unicode form (`ξ` for a coordinate `x`
-            // shown so): its other spellings (`x`, `xi`) never stand side by side in it.
-            all_wide: style == Style::Unicode
-                && vars.juxtaposition_is_ambiguous(
-                    vars.vars()
-                        .filter(|v| terms.iter().any(|t| t.exps[v.index()] != 0))
-                        .map(|v| vars.variable(v).unicode()),
-                ),
+            spellable: match style {
+                Style::Unicode => spellable(vars, terms),
+                _ => Vec::new(),
+            },
         }
     }
+
+    /// Which of a product's `factors` (variables by index, each to the power `exps[j]`, the
+    /// first written after the imaginary unit where `after_i`) a space sets apart from the one
+    /// before in text, though both are one letter: each of a run of one-letter names side by
+    /// side of which two or more in a row spell another name ([`juxtaposition_is_ambiguous`]:
+    /// `2i x y`, `Mω²x y` beside a variable `xy`; `2iMωy` beside `Hy`). A wider factor ends a
+    /// run, and a power ends it after its name. Empty where no run of the element can spell
+    /// one ([`Names::spellable`]), as is usual.
+    fn apart_in_runs(
+        &self,
+        factors: impl Iterator<Item = usize>,
+        exps: &[i64],
+        after_i: bool,
+    ) -> Vec<bool> {
+        let mut apart = Vec::new();
+        if self.spellable.is_empty() {
+            return apart;
+        }
+        let spellable = || self.spellable.iter().map(String::as_str);
+        // The run so far, and the index in `apart` of its second letter (of its first, where
+        // the run begins with `i`): the first that a spaced run sets apart.
+        let mut run: Vec<&str> = Vec::new();
+        let mut joined = 0;
+        let close = |run: &mut Vec<&str>, apart: &mut Vec<bool>, joined: usize| {
+            if juxtaposition_is_ambiguous(spellable(), run) {
+                apart[joined..].fill(true);
+            }
+            run.clear();
+        };
+        if after_i {
+            run.push("i");
+        }
+        for j in factors {
+            let name = self.names[j].as_str();
+            if self.words[j] || name.chars().count() > 1 {
+                close(&mut run, &mut apart, joined);
+                apart.push(false);
+                continue;
+            }
+            if run.is_empty() {
+                joined = apart.len() + 1;
+            }
+            run.push(name);
+            apart.push(false);
+            if exps[j].abs() != 1 {
+                close(&mut run, &mut apart, joined);
+            }
+        }
+        close(&mut run, &mut apart, joined);
+        apart
+    }
+}
+
+/// The declared names of several letters that one-letter names of the element (its variables
+/// written in one letter, in text, and the imaginary unit) could spell side by side: `xy` where
+/// `x` and `y` are written, `omega` where `o`, `m`, `e`, `g` and `a` are.
+fn spellable(vars: &VarSet, terms: &[CosSinTerm]) -> Vec<String> {
+    // What text writes is each variable's unicode form (`ξ` for a coordinate `x` shown
+    // so): its other spellings (`x`, `xi`) never stand side by side in it.
+    let letters: Vec<char> = vars
+        .vars()
+        .filter(|v| terms.iter().any(|t| t.exps[v.index()] != 0))
+        .filter_map(|v| {
+            let mut chars = vars.variable(v).unicode().chars();
+            chars.next().filter(|_| chars.next().is_none())
+        })
+        .chain(['i'])
+        .collect();
+    vars.declared_names()
+        .filter(|name| name.chars().nth(1).is_some() && name.chars().all(|c| letters.contains(&c)))
+        .map(str::to_string)
+        .collect()
 }
 
 /// The factors `cos^a θ sin^b θ` of a trigonometric monomial, each wide, into `product`.
@@ -500,6 +576,7 @@ fn write_term(
                 || (denominators > 0 && !frac))
     });
     let mut numerator = Product::new(style);
+    let after_i = complex.is_none() && !coeff.im.is_zero();
     if let Some(c) = complex {
         numerator.next(out, true);
         out.push_str(&c);
@@ -513,16 +590,14 @@ fn write_term(
             out.push('i');
         }
     }
-    let variables = |out: &mut String, product: &mut Product, positive: bool| {
-        for &j in names
-            .order
-            .iter()
-            .filter(|&&j| exps[j] != 0 && (exps[j] > 0) == positive)
-        {
+    let variables = |out: &mut String, product: &mut Product, positive: bool, after_i: bool| {
+        let factors =
+            || (names.order.iter().copied()).filter(|&j| exps[j] != 0 && (exps[j] > 0) == positive);
+        let apart = names.apart_in_runs(factors(), exps, after_i);
+        for (k, j) in factors().enumerate() {
             let name = &names.names[j];
-            let wide = names.all_wide
-                || (style == Style::Unicode && (names.words[j] || name.chars().count() > 1));
-            product.next(out, wide);
+            let wide = style == Style::Unicode && (names.words[j] || name.chars().count() > 1);
+            product.next_apart(out, wide, apart.get(k) == Some(&true));
             if names.several_words[j] && words_in_parentheses {
                 write_power(out, &format!("({name})"), exps[j].abs(), style);
             } else {
@@ -530,7 +605,7 @@ fn write_term(
             }
         }
     };
-    variables(out, &mut numerator, true);
+    variables(out, &mut numerator, true, after_i);
     if let Some(i) = inner {
         // `α(x² + y²)`: the parenthesis sets the sum apart, so no space is needed before it
         // (nor `*` in ASCII, which still parses); `\frac{x + y}{…}` needs none.
@@ -576,7 +651,7 @@ fn write_term(
     };
     match lone {
         Some(bare) => out.push_str(bare),
-        None => variables(out, &mut denominator, false),
+        None => variables(out, &mut denominator, false, false),
     }
     match style {
         Style::Latex if frac => out.push('}'),

@@ -177,26 +177,32 @@ impl Variable {
     }
 }
 
-/// Whether one-letter names written side by side could read back as another name: a name of
-/// `declared` of several letters, each of them one of the one-letter names in `written` or the
-/// imaginary unit `i` (`xy` when `x` and `y` are written, `omega` when `o`, `m`, `e`, `g` and
-/// `a` are). The parser reads a run of letters as a declared name before it splits it into a
-/// product, so such a product must be written with spaces (`x y`).
+/// Whether one-letter names written side by side, `run` in order (`i`, `M`, `ω`, `y` of
+/// `2iMωy`), could read back as another name: two or more of them in a row spell a name of
+/// `declared` (`x`, `y` of `Mxy` beside a name `xy`; `o`, `m`, `e`, `g`, `a` beside `omega`).
+/// The parser reads a run of letters as a declared name, and splits one it does not know into
+/// declared names longest first (`Mxy` as `M·xy`), so such a run is written with spaces
+/// (`M x y`); any other runs together as the paper writes it (`2iMωy` beside `Hy`, which no
+/// two of its letters in a row spell). A run is what one name could be read from: a power,
+/// a subscript, parentheses or a name of several letters ends it, and a number before it is
+/// no part of it, as a name never begins with a digit.
 pub fn juxtaposition_is_ambiguous<'a>(
     declared: impl IntoIterator<Item = &'a str>,
-    written: impl IntoIterator<Item = &'a str>,
+    run: &[&str],
 ) -> bool {
-    let mut letters: Vec<char> = written
-        .into_iter()
-        .filter_map(|s| {
-            let mut chars = s.chars();
-            chars.next().filter(|_| chars.next().is_none())
+    declared.into_iter().any(|name| {
+        (0..run.len()).any(|start| {
+            let mut rest = name;
+            for (before, letter) in run[start..].iter().enumerate() {
+                match rest.strip_prefix(letter) {
+                    Some("") => return before > 0,
+                    Some(after) => rest = after,
+                    None => return false,
+                }
+            }
+            false
         })
-        .collect();
-    letters.push('i');
-    declared
-        .into_iter()
-        .any(|s| s.chars().nth(1).is_some() && s.chars().all(|c| letters.contains(&c)))
+    })
 }
 
 /// Limits that stop runaway expansions with a clear error instead of exhausting memory or
@@ -522,19 +528,30 @@ impl VarSet {
             .map(|k| self.var_at(k))
     }
 
-    /// Whether the one-letter names among `written` (the spellings of the variables, or other
-    /// names, an expression writes), side by side, could read back as another variable or a
-    /// name of [`VarSetBuilder::also_named`] ([`juxtaposition_is_ambiguous`]): `xy` beside a
-    /// variable `xy`.
-    pub fn juxtaposition_is_ambiguous<'a>(
-        &'a self,
-        written: impl IntoIterator<Item = &'a str>,
-    ) -> bool {
-        let declared = self.vars.iter().flat_map(Variable::spellings);
-        juxtaposition_is_ambiguous(
-            declared.chain(self.also_named.iter().map(String::as_str)),
-            written,
-        )
+    /// Every name the parser reads in an expression on this set: the variables in each of
+    /// their spellings, and the names of [`VarSetBuilder::also_named`].
+    pub(crate) fn declared_names(&self) -> impl Iterator<Item = &str> {
+        let spellings = self.vars.iter().flat_map(Variable::spellings);
+        spellings.chain(self.also_named.iter().map(String::as_str))
+    }
+
+    /// Whether one-letter names written side by side, `run` in order, could read back as a
+    /// variable or a name of [`VarSetBuilder::also_named`] ([`juxtaposition_is_ambiguous`]):
+    /// `x`, `y` beside a variable `xy`, which the printers then write `x y`.
+    ///
+    /// ```
+    /// use trigpoly::VarSet;
+    ///
+    /// let vars = VarSet::builder().coordinate("x").coordinate("y").parameter("M");
+    /// let vars = vars.also_named(["Hy"]).build().unwrap();
+    /// assert!(!vars.juxtaposition_is_ambiguous(&["M", "x", "y"]));
+    /// let vars = VarSet::builder().coordinate("x").coordinate("y").parameter("M");
+    /// let vars = vars.also_named(["xy"]).build().unwrap();
+    /// assert!(vars.juxtaposition_is_ambiguous(&["M", "x", "y"]));
+    /// assert!(!vars.juxtaposition_is_ambiguous(&["y", "M", "x"]));
+    /// ```
+    pub fn juxtaposition_is_ambiguous(&self, run: &[&str]) -> bool {
+        juxtaposition_is_ambiguous(self.declared_names(), run)
     }
 
     /// Whether the printer could write `name` for a product of one-letter variables side by
@@ -553,9 +570,13 @@ impl VarSet {
     /// assert!(!told.build().unwrap().juxtaposition_spells("Mx"));
     /// ```
     pub fn juxtaposition_spells(&self, name: &str) -> bool {
+        let letter = |c: char| {
+            c == 'i' || (self.vars.iter().flat_map(Variable::spellings)).any(|s| s.chars().eq([c]))
+        };
         self.lookup(name).is_none()
             && !self.also_named.iter().any(|n| n == name)
-            && juxtaposition_is_ambiguous([name], self.vars.iter().flat_map(Variable::spellings))
+            && name.chars().nth(1).is_some()
+            && name.chars().all(letter)
     }
 
     /// The limits in force.
@@ -798,9 +819,10 @@ impl VarSetBuilder {
     }
 
     /// Names that the parser reads besides the variables (a system's functions, `Mx`): the
-    /// printer spaces the products of one-letter variables that would spell one of them
-    /// ([`VarSet::juxtaposition_is_ambiguous`]). Sets that differ in these names are different
-    /// rings; they share their variables' handles.
+    /// printer spaces a run of one-letter variables side by side of which two or more in a
+    /// row would spell one of them ([`VarSet::juxtaposition_is_ambiguous`]: `M x` beside
+    /// `Mx`). Sets that differ in these names are different rings; they share their
+    /// variables' handles.
     pub fn also_named<'a>(mut self, names: impl IntoIterator<Item = &'a str>) -> Self {
         self.also_named
             .extend(names.into_iter().map(str::to_string));

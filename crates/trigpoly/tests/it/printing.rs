@@ -514,9 +514,11 @@ fn a_name_before_parentheses_is_a_product() {
     );
 }
 
-/// One-letter names side by side read back as one name when a variable is spelled that way:
-/// beside a coordinate `xy`, the product x·y prints `x y`, and every factor is spaced; where
-/// no name is spelled by one-letter names, factors stay side by side (`Mω²xy`).
+/// One-letter names side by side read back as one name when two or more of them in a row
+/// spell a variable: beside coordinates `xy` and `ab`, the product x·y prints `x y`, and each
+/// factor of such a run is spaced (`a b x`, `3i a x y`); any other run stays together as the
+/// paper writes it, in the same element (`2ix`, `ax²y`), and so does every run where no name is
+/// spelled by one-letter names (`Mω²xy`). A power or a longer name ends a run (`a b²x y`).
 #[test]
 fn one_letter_names_are_spaced_where_side_by_side_they_spell_another_name() {
     let vars = VarSet::builder()
@@ -528,14 +530,21 @@ fn one_letter_names_are_spaced_where_side_by_side_they_spell_another_name() {
         .parameter("ab")
         .build()
         .unwrap();
-    let f: G = p(&vars, "x*y + xy + a*b*x + ab*x + 2*i*x");
-    let text = f.to_string();
-    assert_eq!(text, "x y + a b x + ab x + 2i x + xy");
-    assert_eq!(
-        p::<GaussianRational>(&vars, &text),
-        f,
-        "{text:?} parses back"
+    let reads_back = |src: &str, printed: &str| {
+        let f: G = p(&vars, src);
+        assert_eq!(f.to_string(), printed, "{src}");
+        assert_eq!(
+            p::<GaussianRational>(&vars, printed),
+            f,
+            "{printed:?} parses back"
+        );
+    };
+    reads_back(
+        "x*y + xy + a*b*x + ab*x + 2*i*x",
+        "x y + a b x + ab x + 2ix + xy",
     );
+    reads_back("a*x^2*y + b*x + 3*i*a*x*y", "ax²y + 3i a x y + bx");
+    reads_back("a*b^2*x*y + x*xy", "a b²x y + x xy");
 
     // Only names the element writes count: without y, nothing spells `xy` or `ab`.
     assert_eq!(p::<GaussianRational>(&vars, "a*x*xy").to_string(), "ax xy");
@@ -546,29 +555,35 @@ fn one_letter_names_are_spaced_where_side_by_side_they_spell_another_name() {
     );
 }
 
-/// The names that make juxtaposition ambiguous: a declared name of several letters each of
-/// which is a one-letter name written (`omega` beside `o, m, e, g, a`), the imaginary unit
-/// counting as one; names with other characters (`p_x`, `G1`) never are.
+/// The runs of one-letter names that make juxtaposition ambiguous: two or more letters in a
+/// row spell a declared name (`x y` of `M x y` beside `xy`, `o m e g a` beside `omega`), the
+/// imaginary unit among them; letters that spell it out of order or apart do not (`y x`,
+/// `x M y`), nor one letter alone, nor names with other characters (`p_x`, `G1`).
 #[test]
-fn juxtaposition_is_ambiguous_for_names_spelled_by_written_one_letter_names() {
-    let ambiguous = |declared: &[&str], written: &[&str]| {
-        trigpoly::juxtaposition_is_ambiguous(declared.iter().copied(), written.iter().copied())
+fn juxtaposition_is_ambiguous_where_letters_in_a_row_spell_a_declared_name() {
+    let ambiguous = |declared: &[&str], run: &[&str]| {
+        trigpoly::juxtaposition_is_ambiguous(declared.iter().copied(), run)
     };
     let declared = [
         "x", "y", "xy", "o", "m", "e", "g", "a", "omega", "xi", "p", "p_x", "G1",
     ];
     assert!(ambiguous(&declared, &["x", "y"]));
+    assert!(ambiguous(&declared, &["M", "x", "y", "z"]));
     assert!(ambiguous(&declared, &["o", "m", "e", "g", "a"]));
     assert!(
-        ambiguous(&declared, &["x"]),
+        ambiguous(&declared, &["x", "i"]),
         "i is the imaginary unit: `xi`"
     );
+    assert!(!ambiguous(&declared, &["i", "x"]), "`ix` is no name");
+    assert!(!ambiguous(&declared, &["y", "x"]), "out of order");
+    assert!(!ambiguous(&declared, &["x", "M", "y"]), "apart");
+    assert!(!ambiguous(&declared, &["x"]), "one letter");
     assert!(
-        !ambiguous(&declared, &["y", "o", "m", "e", "g"]),
-        "no x, no a"
+        !ambiguous(&declared, &["o", "m", "e", "g"]),
+        "a prefix of `omega`"
     );
     assert!(
-        !ambiguous(&declared, &["p", "G", "y", "xy"]),
+        !ambiguous(&declared, &["p", "x", "G"]),
         "`p_x`, `G1` are not letters"
     );
 }
