@@ -3685,8 +3685,8 @@ fn the_closure_help_example_of_a_cubic_algebra_runs() {
     let out = run(&args, 0);
     assert!(out.contains("{S, C} = 24M³(3 H − 4 H_x) H_x²"), "{out}");
     // The table's entry in JSON as the text writes it, and it reads back as the bracket.
-    let v: Value = serde_json::from_str(&run(&[&args[..], &["--format", "json"]].concat(), 0))
-        .expect("JSON");
+    let v: Value =
+        serde_json::from_str(&run(&[&args[..], &["--format", "json"]].concat(), 0)).expect("JSON");
     let entry = &v["tables"][0]["entries"][2][3];
     assert_eq!(entry["text"], "24M³(3 H − 4 H_x) H_x²");
     let file = superint::system_file::load(
