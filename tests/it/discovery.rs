@@ -437,6 +437,41 @@ const COMMANDS: &[(&str, &str)] = &[
         "superint closure systems/smorodinsky-winternitz-i-rotor.toml Hx Hy X P_1_1 Q_1_1 R_1_1 \
          S_1_1 --when 'p_theta = 2*I*omega' --degree 2 --symbolic beta,gamma --parameters-degree 1",
     ),
+    (
+        "fd-rotor-search",
+        "superint search systems/fock-darwin-rotor.toml --when 'a = 2*b, p_theta = 2*I*b' \
+         --momenta-degree 4 --positions-degree 4 --trig-degree 4 --new-only",
+    ),
+    (
+        "fd-rotor-search-6",
+        "superint search systems/fock-darwin-rotor.toml --when 'a = 2*b, p_theta = 2*I*b' \
+         --momenta-degree 6 --positions-degree 6 --trig-degree 6 --new-only",
+    ),
+    (
+        "fd-rotor-search-single",
+        "superint search systems/fock-darwin-rotor.toml --when 'p_theta = I*a' --momenta-degree 3 \
+         --positions-degree 3 --trig-degree 2 --symbolic M,a,b --parameters-degree 4 --new-only",
+    ),
+    (
+        "fd-rotor-search-off",
+        "superint search systems/fock-darwin-rotor.toml --momenta-degree 3 --positions-degree 3 \
+         --trig-degree 2 --symbolic M,a,b --parameters-degree 4 --new-only",
+    ),
+    (
+        "fd-rotor-search-3-1",
+        "superint search systems/fock-darwin-rotor.toml --when 'a = 3*b, p_theta = I*b' \
+         --momenta-degree 4 --positions-degree 4 --trig-degree 4 --new-only",
+    ),
+    (
+        "fd-rotor-closure",
+        "superint closure systems/fock-darwin-rotor.toml HFD L P_2_1 Q_2_1 R_1_1 S_1_1 \
+         --when 'a = 2*b, p_theta = 2*I*b' --degree 2",
+    ),
+    (
+        "fd-rotor-closure-trap",
+        "superint closure systems/fock-darwin-rotor.toml HFD L P_2_1 Q_2_1 R_1_1 S_1_1 U_1_2 V_1_2 \
+         --when 'a = 2*b, p_theta = 2*I*b' --degree 2",
+    ),
 ];
 
 /// A system file of `systems/`, loaded.
@@ -4718,6 +4753,236 @@ fn sw_ii_rotor_resonant_integrals_found_and_their_algebra() {
             "{H_y, R_{1,1}} = 2ω S_{1,1} at p_θ = 2Iω",
             "8M H_y + γ²/ω² = 4 R_{1,1}² + 4 S_{1,1}² at p_θ = 2Iω",
             "8 claims: 8 proved, 0 refuted",
+        ],
+    );
+}
+
+/// The paper's rotor in the Fock–Darwin trap, loaded and checked: every claim of the file
+/// holds (`H_FD`, `L`, `F2` in involution, the three ladders, the towers of `K = Z^m e^{−inθ}`,
+/// `J = W^m e^{−inθ}` and the trap's `G = W^m Z̄^n`, the canonical pairs and their moduli,
+/// `G_{1,2} = J_{1,1} conj(K_{2,1})`, the resonances one and two at a time, the paper's rotor at
+/// `ω₊ = ω₋`, what the searches find, the algebra, rank 4 at one resonance and 5 at two), and
+/// each of its seven false neighbours is refuted. The towers are proved for all `m, n`, and
+/// `{P_{m,n}, H} = −(mω₋ − nΩ) Q_{m,n}`, `{R_{m,n}, H} = −(mω₊ − nΩ) S_{m,n}`,
+/// `{U_{m,n}, H} = −(mω₊ − nω₋) V_{m,n}` for `m ≤ 2`, `n ≤ 3`, each conserved at the double
+/// resonance `Ω = ω₊ = 2ω₋` exactly when its eigenvalue vanishes there.
+#[test]
+fn fd_rotor_claims_are_proved_and_its_false_neighbours_refuted() {
+    let file = system_file("fock-darwin-rotor.toml");
+    assert_claims_as_expected(
+        &file,
+        &[
+            "separable",
+            "integrals",
+            "involution",
+            "ladders",
+            "modes",
+            "tower",
+            "rotation",
+            "heisenberg",
+            "modulus",
+            "product",
+            "resonance",
+            "double-resonance",
+            "paper-limit",
+            "found",
+            "algebra",
+            "rank",
+        ],
+        &[
+            "false-rotor-sign",
+            "false-off-resonance",
+            "false-other-mode",
+            "false-modulus-sign",
+            "false-rank",
+            "false-rank-trap",
+            "false-rank-energy",
+        ],
+    );
+    let parse = |s: &str| file.parse_argument(s).expect("parses");
+    let system = file.system();
+    let double = file
+        .condition("a = 2*b, p_theta = 2*I*b")
+        .expect("a condition");
+    for m in 0..=2i64 {
+        for n in 0..=3i64 {
+            if m + n == 0 {
+                continue;
+            }
+            // (real part, imaginary part, the rate, conserved at Ω = ω₊ = 2ω₋)
+            for (re, im, rate, resonant) in [
+                ("P", "Q", format!("{m}*b - {n}*Omega"), m == 2 * n),
+                ("R", "S", format!("{m}*a - {n}*Omega"), m == n),
+                ("U", "V", format!("{m}*a - {n}*b"), 2 * m == n),
+            ] {
+                let flow = system.flow(&parse(&format!("{re}_{m}_{n}"))).unwrap();
+                let expected = parse(&format!("-({rate})*{im}_{m}_{n}"));
+                assert_eq!(flow, expected, "{re}_{m}_{n}");
+                assert!(!parse(&format!("{im}_{m}_{n}")).is_zero(), "{im}_{m}_{n}");
+                let conserved = double.apply(&flow).unwrap().is_zero();
+                assert_eq!(conserved, resonant, "{re}_{m}_{n} at Ω = ω₊ = 2ω₋");
+            }
+        }
+    }
+    // The other mode's resonance leaves R_{1,1} the rate of the two modes' difference.
+    let other = file.condition("p_theta = I*b").expect("a condition");
+    let flow = system.flow(&parse("R_1_1")).unwrap();
+    assert_eq!(
+        other.apply(&flow).unwrap(),
+        other.apply(&parse("-(a - b)*S_1_1")).unwrap()
+    );
+    let out = superint(&[
+        "tower",
+        "--system",
+        "systems/fock-darwin-rotor.toml",
+        "--max",
+        "4",
+        "--no-timings",
+    ]);
+    let text = normalize(&String::from_utf8(out.stdout).expect("UTF-8"));
+    assert_eq!(out.status.code(), Some(0), "{text}");
+    for piece in [
+        "16 brackets expanded for the Fock–Darwin rotor (ladder K_{m,n} = Z^m exp(−inθ)), all hold",
+        "Therefore: {K_{m,n}, H} = i(m ω₋ − nΩ) K_{m,n} for all m, n ≥ 0.",
+        "16 brackets expanded for the Fock–Darwin rotor (ladder J_{m,n} = W^m exp(−inθ)), all hold",
+        "Therefore: {J_{m,n}, H} = i(m ω₊ − nΩ) J_{m,n} for all m, n ≥ 0.",
+        "16 brackets expanded for the Fock–Darwin rotor (ladder G_{m,n} = W^m Z̄^n), all hold",
+        "Therefore: {G_{m,n}, H} = i(m ω₊ − n ω₋) G_{m,n} for all m, n ≥ 0.",
+        "6 claims in 1 file: 6 proved, 0 refuted; all as expected",
+    ] {
+        assert!(text.contains(piece), "{piece}: {text}");
+    }
+}
+
+/// The rotor in the Fock–Darwin trap. At the double resonance `Ω = ω₊ = 2ω₋` the four new
+/// integrals, to fourth and to sixth order, are the parts of `W e^{−iθ}` and `Z² e^{−iθ}`
+/// (restated `2 R_{1,1}`, `−2 S_{1,1}`, `4 P_{2,1}`, `−4 Q_{2,1}`), and from `H` alone the same
+/// four and nothing else (the trap's cubic `U_{1,2}`, `H_FD` and `L` are products). At `Ω = ω₊`
+/// alone, for every `M, ω₊, ω₋`, the new ones are `R_{1,1}`, `S_{1,1}`; off the resonances there
+/// are none; at `Ω = ω₋`, `ω₊ = 3ω₋` the new ones are `P_{1,1}`, `Q_{1,1}` and two of order 3.
+/// The resonant integrals close at degree 2, so(2,1) and the oscillator algebra, and with the
+/// trap's `U_{1,2}`, `V_{1,2}` among the generators the relations make them products.
+#[test]
+fn fd_rotor_resonant_integrals_found_and_their_algebra() {
+    let r11 = "I3 = (2 p_x + 3M ω₋ y) cos θ + (−2 p_y + 3M ω₋ x) sin θ = 2 R_{1,1}";
+    let p21 = "+ (8 p_x p_y + 12M ω₋ x p_x − 12M ω₋ y p_y − 18M² ω₋² xy) sin θ = 4 P_{2,1}";
+    expect(
+        "fd-rotor-search",
+        &[
+            "2025 unknowns, 3104 linear equations over Q, in 89 independent blocks",
+            "Dimension of the space of integrals: 57. By degree in the momenta: ≤ 0: 1, \
+             ≤ 1: 4, ≤ 2: 12, ≤ 3: 28, ≤ 4: 57.",
+            "Known integrals in the space: H, L, H_FD.",
+            "the generated ones span 53 of the 57 dimensions",
+            r11,
+            "= −2 S_{1,1}",
+            p21,
+            "= −4 Q_{2,1}",
+            "53 of them lifted and proved symbolically",
+            "5 claims: 5 proved, 0 refuted",
+        ],
+    );
+    let alone = expect_alone(
+        "fd-rotor-search",
+        &[
+            "Known integrals in the space: H.",
+            "the generated ones span 53 of the 57 dimensions",
+            "I3 = (2 p_x + 3M ω₋ y) cos θ + (−2 p_y + 3M ω₋ x) sin θ",
+            "5 claims: 5 proved, 0 refuted",
+        ],
+    );
+    assert_eq!(
+        alone.matches(" = 0 at ω₊ = 2 ω₋, p_θ = 2I ω₋ [I").count(),
+        4,
+        "{alone}"
+    );
+    expect(
+        "fd-rotor-search-6",
+        &[
+            "10192 unknowns",
+            "≤ 4: 57, ≤ 5: 104, ≤ 6: 176.",
+            "the generated ones span 172 of the 176 dimensions",
+            r11,
+            "= −2 S_{1,1}",
+            p21,
+            "= −4 Q_{2,1}",
+            "5 claims: 5 proved, 0 refuted",
+        ],
+    );
+    let alone = expect_alone(
+        "fd-rotor-search-6",
+        &["the generated ones span 172 of the 176 dimensions"],
+    );
+    assert_eq!(
+        alone.matches(" = 0 at ω₊ = 2 ω₋, p_θ = 2I ω₋ [I").count(),
+        4,
+        "{alone}"
+    );
+    expect(
+        "fd-rotor-search-single",
+        &[
+            "17500 unknowns",
+            "Dimension of the space of integrals over Q (a parameter's multiple of an integral \
+             counts apart from it): 206.",
+            "Over the polynomials in M, ω₊, ω₋, 16 of the 206 basis integrals generate all of them",
+            "the generated ones span 204 of the 206 dimensions",
+            "(2 p_x + M ω₊ y + M ω₋ y) cos θ + (−2 p_y + M ω₊ x + M ω₋ x) sin θ = 2 R_{1,1}",
+            "= −2 S_{1,1}",
+            "3 claims: 3 proved, 0 refuted",
+        ],
+    );
+    let off = expect(
+        "fd-rotor-search-off",
+        &[
+            "35000 unknowns",
+            "Dimension of the space of integrals over Q (a parameter's multiple of an integral \
+             counts apart from it): 353.",
+            "Momenta degree exactly 3: 142 of order 0.",
+            "Known integrals in the space: H, L, H_FD, F2, Ω.",
+            "the generated ones span the whole space (353 dimensions)",
+            "None: the known integrals generate every integral in the space.",
+        ],
+    );
+    assert!(!off.contains("of order 1"), "{off}");
+    let text = expect(
+        "fd-rotor-search-3-1",
+        &[
+            "Dimension of the space of integrals: 71.",
+            "the generated ones span 67 of the 71 dimensions",
+            "I3 = (p_x − 2M ω₋ y) cos θ + (p_y + 2M ω₋ x) sin θ = P_{1,1}",
+            "= −Q_{1,1}",
+            "I5 = (−3 p_x − 6M ω₋ y) cos θ + (p_y − 2M ω₋ x) sin θ + (4 p_x + 8M ω₋ y) cos³θ \
+             + (−4 p_y + 8M ω₋ x) cos²θ sin θ",
+        ],
+    );
+    assert_eq!(
+        normalize(&text).matches(" = 0 at ω₊ = 3 ω₋").count(),
+        4,
+        "{text}"
+    );
+    expect(
+        "fd-rotor-closure",
+        &[
+            "The table closes",
+            "{P_{2,1}, Q_{2,1}} = −24M² ω₋ (2 ω₋ L + H_FD) at ω₊ = 2 ω₋, p_θ = 2I ω₋",
+            "{R_{1,1}, S_{1,1}} = −3M ω₋ at ω₊ = 2 ω₋, p_θ = 2I ω₋",
+            "{H_FD, P_{2,1}} = 2 ω₋ Q_{2,1} at ω₊ = 2 ω₋, p_θ = 2I ω₋",
+            "{L, R_{1,1}} = −S_{1,1} at ω₊ = 2 ω₋, p_θ = 2I ω₋",
+            "16M² ω₋² L² + 16M² ω₋ H_FD L + 4M² H_FD² = P_{2,1}² + Q_{2,1}² at ω₊ = 2 ω₋, \
+             p_θ = 2I ω₋ [R1 proved]",
+            "2M ω₋ L + R_{1,1}² + S_{1,1}² = 2M H_FD at ω₊ = 2 ω₋, p_θ = 2I ω₋ [R2 proved]",
+            "12 claims: 12 proved, 0 refuted",
+        ],
+    );
+    expect(
+        "fd-rotor-closure-trap",
+        &[
+            "The table closes",
+            "{U_{1,2}, V_{1,2}} = −36M³ ω₋ (4 ω₋² L² − H_FD²) at ω₊ = 2 ω₋, p_θ = 2I ω₋",
+            "{R_{1,1}, U_{1,2}} = −3M ω₋ Q_{2,1} at ω₊ = 2 ω₋, p_θ = 2I ω₋",
+            "P_{2,1} R_{1,1} + Q_{2,1} S_{1,1} = U_{1,2} at ω₊ = 2 ω₋, p_θ = 2I ω₋ [R3 proved]",
+            "P_{2,1} S_{1,1} = Q_{2,1} R_{1,1} + V_{1,2} at ω₊ = 2 ω₋, p_θ = 2I ω₋ [R2 proved]",
+            "27 claims: 27 proved, 0 refuted",
         ],
     );
 }
