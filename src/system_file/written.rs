@@ -11,10 +11,10 @@ use brackets::closure::{expressed_in, ClosureOptions};
 use brackets::search::GENERIC_VALUES;
 use brackets::{Condition, NamedFunction};
 use rayon::prelude::*;
-use trigpoly::syntax::Expr as Tree;
+use trigpoly::syntax::{Expr as Tree, ExprKind};
 use trigpoly::{Expr, Rational, Var, VarKind};
 
-use super::scope::instance_of;
+use super::scope::{instance_of, substitute, Scope};
 use super::LoadedSystem;
 
 /// The degrees of the polynomials in `H` and the named functions that an expression is sought
@@ -256,9 +256,10 @@ impl LoadedSystem {
         found
     }
 
-    /// Whether family `k` declares an eigenvalue that is not zero at `(m, n)` and `condition`:
-    /// the instance is then no integral there. `false` where it declares none, or where the
-    /// eigenvalue cannot be computed.
+    /// Whether the instance `(m, n)` of family `k` has an eigenvalue that is not zero at
+    /// `condition`, and so is no integral there: the family's own, or, for a real or imaginary
+    /// part `re(K_m_n)` of a family with one, that of `K`'s instance (`{K, H} = λK` with
+    /// `λ ≠ 0` moves `Re K` as well). `false` where there is none, or it cannot be computed.
     fn eigenvalue_is_not_zero(
         &self,
         k: usize,
@@ -266,13 +267,37 @@ impl LoadedSystem {
         n: i64,
         condition: Option<&Condition>,
     ) -> bool {
-        if self.families[k].eigenvalue.is_none() {
-            return false;
-        }
+        let (k, m, n) = match self.families[k].eigenvalue {
+            Some(_) => (k, m, n),
+            None => match self.part_of_instance(k, m, n) {
+                Some(instance) => instance,
+                None => return false,
+            },
+        };
         let Ok(lambda) = self.eigenvalue_at(k, m, n) else {
             return false;
         };
         at_condition(condition, lambda).is_some_and(|l| !l.is_zero())
+    }
+
+    /// For a family `k` whose value is the real or imaginary part of an instance of a family
+    /// with an eigenvalue (`P = re(K_m_n)`), that instance at `(m, n)`: `(K, m, n)`.
+    fn part_of_instance(&self, k: usize, m: i64, n: i64) -> Option<(usize, i64, i64)> {
+        let family = &self.families[k];
+        let tree = Scope::of_family(self, k)
+            .tree(&family.source, &family.value)
+            .ok()?;
+        let tree = substitute(&tree, &family.indices, [m, n], &self.families[..k]);
+        let ExprKind::Call(f, _, args) = &tree.kind else {
+            return None;
+        };
+        let ([arg], "re" | "im") = (&args[..], f.as_str()) else {
+            return None;
+        };
+        let ExprKind::Name(name) = &arg.kind else {
+            return None;
+        };
+        instance_of(&self.families, name).filter(|&(j, _, _)| self.families[j].eigenvalue.is_some())
     }
 
     /// The index pairs of the family instances that `trees` name (`P_1_2` → `(1, 2)`, braces

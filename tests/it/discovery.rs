@@ -4951,8 +4951,11 @@ fn fd_rotor_resonant_integrals_found_and_their_algebra() {
             "the generated ones span 67 of the 71 dimensions",
             "I3 = (p_x − 2M ω₋ y) cos θ + (p_y + 2M ω₋ x) sin θ = P_{1,1}",
             "= −Q_{1,1}",
+            // The parts of `W e^{−3iθ}`, though the real and imaginary parts' families,
+            // which declare no eigenvalue, come before it in index order.
             "I5 = (−3 p_x − 6M ω₋ y) cos θ + (p_y − 2M ω₋ x) sin θ + (4 p_x + 8M ω₋ y) cos³θ \
-             + (−4 p_y + 8M ω₋ x) cos²θ sin θ",
+             + (−4 p_y + 8M ω₋ x) cos²θ sin θ = R_{1,3}",
+            "+ (4 p_x + 8M ω₋ y) cos²θ sin θ = −S_{1,3}",
         ],
     );
     assert_eq!(
