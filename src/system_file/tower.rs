@@ -20,6 +20,7 @@ use brackets::{Condition, EngineError};
 use super::claims::engine_error;
 use super::error::{ErrorKind, FileError};
 use super::scope::{substitute, Scope};
+use super::written::holds_only_parameters;
 use super::{Caller, LoadedSystem};
 use crate::report::{
     listed, ClaimResult, Entry, Fact, ProofResult, Report, Section, SummaryKind, TowerResult,
@@ -339,11 +340,14 @@ impl LoadedSystem {
             // Where the bracket is another multiple of the base, the eigenvalue it has.
             let found_statement = match holds {
                 true => None,
-                false => multiple_of(&flow, &base, when)
-                    .map(|mu| format!("{{{name}, H}} = {}", times(&mu, &factor))),
+                false => multiple_of(&flow, &base, when).map(|mu| {
+                    let mu = self.eigenvalue_in_functions(mu);
+                    format!("{{{name}, H}} = {}", times(&mu, &factor))
+                }),
             };
+            let shown = self.eigenvalue_in_functions(lambda.clone());
             facts.push(Fact {
-                statement: format!("{{{name}, H}} = {}", times(&lambda, &factor)),
+                statement: format!("{{{name}, H}} = {}", times(&shown, &factor)),
                 holds,
                 found: (!holds).then_some(flow),
                 found_statement,
@@ -351,6 +355,16 @@ impl LoadedSystem {
             bases.push(base);
         }
         Ok((facts, bases))
+    }
+
+    /// An eigenvalue as a proof states it: in the file's functions where it depends on the
+    /// phase space and is a polynomial in them, `−iΩ` for the rotor's `−i p_θ/I` (as the
+    /// family's `eigenvalue` writes it); as it is otherwise.
+    fn eigenvalue_in_functions(&self, lambda: Expr) -> Expr {
+        if holds_only_parameters(&lambda) {
+            return lambda;
+        }
+        self.written_in_functions(&lambda, None).unwrap_or(lambda)
     }
 
     /// Whether the bracket with `H` is a derivation on the two `bases` of family `k`, checked
@@ -776,7 +790,7 @@ fn tower_failures(
 }
 
 /// The single term `μ` with `flow = μ·base` (under `when`), if there is one: the eigenvalue
-/// a base function has where it is not the one stated (`−i p_θ/I`, say). `μ` is the ratio of
+/// a base function has where it is not the one stated (`−i p_θ/I`, say, shown `−i Ω`). `μ` is the ratio of
 /// the leading terms (a monomial order keeps the leading term of a product by a monomial),
 /// then checked exactly.
 fn multiple_of(flow: &Expr, base: &Expr, when: Option<&Condition>) -> Option<Expr> {

@@ -526,7 +526,7 @@ fn degrees(e: &Expr) -> [i64; 4] {
 
 /// Whether `e` holds no variable but parameters: a constant on the phase space, or in a ring
 /// of functions' symbols a polynomial in no function.
-fn holds_only_parameters(e: &Expr) -> bool {
+pub(crate) fn holds_only_parameters(e: &Expr) -> bool {
     let vars = e.vars();
     vars.vars()
         .all(|v| vars.variable(v).kind() == VarKind::Parameter || !e.contains(v))

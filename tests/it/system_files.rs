@@ -1453,6 +1453,12 @@ fn tower_checks_every_family_with_an_eigenvalue() {
         out.contains("Therefore: {K̄_{m,n}, H} = −i(mω − nΩ) K̄_{m,n} for all m, n ≥ 0."),
         "{out}"
     );
+    // The rotor's eigenvalue in the file's functions, as the family's eigenvalue writes it.
+    assert!(
+        out.contains("2. computed: {exp(−iθ), H} = −i Ω exp(−iθ)")
+            && out.contains("2. computed: {exp(iθ), H} = i Ω exp(iθ)"),
+        "{out}"
+    );
     assert!(
         !out.contains("P-tower") && !out.contains("{P_{m,n}, H}"),
         "{out}"
