@@ -308,10 +308,16 @@ pub(crate) fn restated(
 /// parameter in it and what is left is short ([`Factored::render_functions_last`]); else term
 /// by term (a number alone in front, `8(32ω²αβ H_x + …)`, says little about an algebra).
 pub(crate) fn written_in_functions(e: &Expr, style: Style) -> String {
-    match shown_factored(e).filter(|f| !f.is_numeric()) {
+    match factored_in_functions(e) {
         Some(f) => f.render_functions_last(style),
         None => e.render(style),
     }
+}
+
+/// The factored form [`written_in_functions`] writes a polynomial in named functions in,
+/// where it has one: a factor with a function or a parameter in it ([`shown_factored`]).
+pub(crate) fn factored_in_functions(e: &Expr) -> Option<Factored> {
+    shown_factored(e).filter(|f| !f.is_numeric())
 }
 
 /// The most terms of what is left after the common factor that a factored form shows

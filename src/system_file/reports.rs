@@ -7,7 +7,7 @@ use crate::render::tex::Names;
 use std::time::Instant;
 
 use brackets::{BracketTable, Condition, System};
-use trigpoly::{Expr, Style, VarKind};
+use trigpoly::{Expr, VarKind};
 
 use super::claims::{engine_error, parse_condition, CheckedClaim, RankClaim};
 use super::error::{ErrorKind, FileError};
@@ -15,7 +15,8 @@ use super::scope::{instance_of, rewrite_braces};
 use super::text::Text;
 use super::{Argument, Caller, LoadedSystem};
 use crate::report::{
-    shown_factored, Entry, Equation, Equations, Expect, Report, Section, SummaryKind, TableResult,
+    factored_in_functions, shown_factored, Entry, Equation, Equations, Expect, Report, Section,
+    SummaryKind, TableResult,
 };
 
 impl LoadedSystem {
@@ -537,8 +538,7 @@ fn written_in_functions(file: &LoadedSystem, table: &BracketTable) -> Vec<Equati
                 let lhs = format!("{{{}, {}}}", table.display[a], table.display[b]);
                 // Restated below with the factor its terms share, `24M³(3 H − 4 H_x) H_x²`,
                 // where it has one.
-                let factored = crate::report::written_in_functions(&p, Style::Unicode);
-                let in_functions = (factored != p.to_string()).then(|| p.clone());
+                let in_functions = factored_in_functions(&p).is_some().then(|| p.clone());
                 lines.push(Equation {
                     in_functions,
                     ..Equation::new(&lhs, p)

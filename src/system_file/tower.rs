@@ -20,7 +20,6 @@ use brackets::{Condition, EngineError};
 use super::claims::engine_error;
 use super::error::{ErrorKind, FileError};
 use super::scope::{substitute, Scope};
-use super::written::holds_only_parameters;
 use super::{Caller, LoadedSystem};
 use crate::report::{
     listed, ClaimResult, Entry, Fact, ProofResult, Report, Section, SummaryKind, TowerResult,
@@ -361,9 +360,7 @@ impl LoadedSystem {
     /// phase space and is a polynomial in them, `−iΩ` for the rotor's `−i p_θ/I` (as the
     /// family's `eigenvalue` writes it); as it is otherwise.
     fn eigenvalue_in_functions(&self, lambda: Expr) -> Expr {
-        if holds_only_parameters(&lambda) {
-            return lambda;
-        }
+        // `written_in_functions` leaves one of the parameters alone (`iω`) as it is.
         self.written_in_functions(&lambda, None).unwrap_or(lambda)
     }
 

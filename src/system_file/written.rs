@@ -223,10 +223,11 @@ impl LoadedSystem {
         let mut instances: Vec<(usize, i64, i64)> = pairs
             .flat_map(|(m, n)| (0..self.families.len()).map(move |k| (k, m, n)))
             .collect();
-        // Those whose declared eigenvalue is no zero there are no integrals (the tower proves
-        // the eigenvalues): tried after the rest (a stable sort keeps the lowest sum first),
-        // so that `e^{−inθ}` and `A^m` do not spend the tries.
-        instances.sort_by_key(|&(k, m, n)| self.eigenvalue_is_not_zero(k, m, n, condition));
+        // Those whose declared eigenvalue is not zero there are no integrals (the tower proves
+        // the eigenvalues): tried after the rest (the sort keeps the order of equal keys, so
+        // the lowest sum first), so that `e^{−inθ}` and `A^m` do not spend the tries. Each
+        // key, an eigenvalue lowered, is computed once.
+        instances.sort_by_cached_key(|&(k, m, n)| self.eigenvalue_is_not_zero(k, m, n, condition));
         for (k, m, n) in instances.into_iter().take(MAX_INSTANCES_TRIED) {
             let Ok(value) = self.family_instance(k, m, n) else {
                 continue;
@@ -267,17 +268,14 @@ impl LoadedSystem {
         n: i64,
         condition: Option<&Condition>,
     ) -> bool {
-        let (k, m, n) = match self.families[k].eigenvalue {
-            Some(_) => (k, m, n),
-            None => match self.part_of_instance(k, m, n) {
-                Some(instance) => instance,
-                None => return false,
-            },
+        let instance = match self.families[k].eigenvalue {
+            Some(_) => Some((k, m, n)),
+            None => self.part_of_instance(k, m, n),
         };
-        let Ok(lambda) = self.eigenvalue_at(k, m, n) else {
-            return false;
-        };
-        at_condition(condition, lambda).is_some_and(|l| !l.is_zero())
+        let lambda = instance.and_then(|(k, m, n)| self.eigenvalue_at(k, m, n).ok());
+        lambda
+            .and_then(|l| at_condition(condition, l))
+            .is_some_and(|l| !l.is_zero())
     }
 
     /// For a family `k` whose value is the real or imaginary part of an instance of a family
@@ -526,7 +524,7 @@ fn degrees(e: &Expr) -> [i64; 4] {
 
 /// Whether `e` holds no variable but parameters: a constant on the phase space, or in a ring
 /// of functions' symbols a polynomial in no function.
-pub(crate) fn holds_only_parameters(e: &Expr) -> bool {
+fn holds_only_parameters(e: &Expr) -> bool {
     let vars = e.vars();
     vars.vars()
         .all(|v| vars.variable(v).kind() == VarKind::Parameter || !e.contains(v))

@@ -7,7 +7,7 @@ use std::fmt;
 use crate::number::{Coefficient, GaussianRational, Magnitude, Rational};
 use crate::poly::{CosSinTerm, Poly, TrigMonomial};
 use crate::varset::{
-    has_several_words, juxtaposition_is_ambiguous, unparenthesized, VarKind, VarSet,
+    has_several_words, juxtaposition_is_ambiguous, spelled_by, unparenthesized, VarKind, VarSet,
 };
 
 mod factored;
@@ -488,7 +488,7 @@ fn spellable(vars: &VarSet, terms: &[CosSinTerm]) -> Vec<String> {
         .chain(['i'])
         .collect();
     vars.declared_names()
-        .filter(|name| name.chars().nth(1).is_some() && name.chars().all(|c| letters.contains(&c)))
+        .filter(|name| spelled_by(name, |c| letters.contains(&c)))
         .map(str::to_string)
         .collect()
 }

@@ -205,6 +205,13 @@ pub fn juxtaposition_is_ambiguous<'a>(
     })
 }
 
+/// Whether a name of several letters is spelled by letters each of which `is_letter` takes
+/// (a one-letter name, or the imaginary unit): `xy` by `x` and `y`, `omega` by `o`, `m`, `e`,
+/// `g` and `a`, in any order. What a product of one-letter names could be printed as.
+pub(crate) fn spelled_by(name: &str, is_letter: impl Fn(char) -> bool) -> bool {
+    name.chars().nth(1).is_some() && name.chars().all(is_letter)
+}
+
 /// Limits that stop runaway expansions with a clear error instead of exhausting memory or
 /// running for hours. The size of each result is checked before it is formed where it is
 /// known, and otherwise as it is formed; the work of each product (its term products, `n·m`,
@@ -575,8 +582,7 @@ impl VarSet {
         };
         self.lookup(name).is_none()
             && !self.also_named.iter().any(|n| n == name)
-            && name.chars().nth(1).is_some()
-            && name.chars().all(letter)
+            && spelled_by(name, letter)
     }
 
     /// The limits in force.
