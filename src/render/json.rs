@@ -69,8 +69,9 @@
 //!                 "undecided": [ { "row", "column", "message" } ]   (the entries above the
 //!                          diagonal, and so their transposes, that a limit stopped: shown
 //!                          as "?", the limit's message here) } ],
-//!   "towers": [ { "section", "id", "system", "ladder", "max", "checked",
-//!                 "failures": [[m, n]], "outcome", "seconds" } ],
+//!   "towers": [ { "section", "id", "system", "family" ("K_{m,n}", as printed), "ladder"
+//!                 (the text's: "Z" in the paper, "K_{m,n} = Z^m exp(−inθ)" for a file's
+//!                 family), "max", "checked", "failures": [[m, n]], "outcome", "seconds" } ],
 //!   "proofs": [ { "section", "title", "facts": [ { "statement", "holds" } ],
 //!                 "leibniz_check", "lemma", "conclusion", "claims": [ids], "outcome" } ],
 //!   "ranks": [ { "section", "id", "functions", "coordinates", "expected",
@@ -316,6 +317,7 @@ fn tower(t: &TowerResult, section: u32, seconds: Value) -> Value {
         "section": section,
         "id": t.claim.id,
         "system": t.system,
+        "family": t.family,
         "ladder": t.ladder,
         "max": t.max,
         "checked": t.checked,

@@ -506,7 +506,8 @@ pub struct TowerResult {
     /// The system as a title names it (`the harmonic rotor`; `t1` for a file that names
     /// none), as the tower's line says it.
     pub the_system: String,
-    /// The ladder function's display name (`Z`, `Z'`).
+    /// The ladder as the tower's line names it: the paper's ladder function (`Z`, `Z'`), or a
+    /// file's family with its value (`K_{m,n} = Z^m exp(−inθ)`).
     pub ladder: String,
     /// The family with its indices (`K_{m,n}`, `K'_{m,n}`), as the tower's closing line
     /// names it.

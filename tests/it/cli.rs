@@ -129,6 +129,10 @@ fn cli_json_has_every_claim_proved() {
     assert_eq!(v["tables"][0]["entries"][3][4]["text"], "−ω² L");
     assert!(!v["proofs"].as_array().expect("proofs").is_empty());
     assert_eq!(v["towers"][0]["checked"], 64);
+    assert_eq!(
+        (&v["towers"][0]["family"], &v["towers"][0]["ladder"]),
+        (&serde_json::json!("K_{m,n}"), &serde_json::json!("Z"))
+    );
     let rank = &v["ranks"][0];
     assert_eq!(rank["rank"], 5);
     assert!(rank["minor"]["value"].is_string());

@@ -1476,13 +1476,13 @@ fn tower_checks_every_family_with_an_eigenvalue() {
     );
     assert_eq!(json["sections"].as_array().map(Vec::len), Some(2));
     let towers: Vec<Value> = (json["towers"].as_array().expect("towers").iter())
-        .map(|t| serde_json::json!([t["section"], t["id"], t["outcome"]]))
+        .map(|t| serde_json::json!([t["section"], t["id"], t["family"], t["outcome"]]))
         .collect();
     assert_eq!(
         towers,
         [
-            serde_json::json!([1, "K-tower", "proved"]),
-            serde_json::json!([2, "Kbar-tower", "proved"])
+            serde_json::json!([1, "K-tower", "K_{m,n}", "proved"]),
+            serde_json::json!([2, "Kbar-tower", "K̄_{m,n}", "proved"])
         ]
     );
     assert_eq!(json["proofs"].as_array().map(Vec::len), Some(2));
