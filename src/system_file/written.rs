@@ -494,8 +494,9 @@ impl LoadedSystem {
                                         fixed: fixed.clone(),
                                         max_monomials,
                                         ..generic.clone()
-                                    },
-                                    |o, &v| o.symbolic(v, degree),
+                                    }
+                                    .parameters_degree(degree),
+                                    |o, &v| o.symbolic(v),
                                 );
                                 match search(&symbolic) {
                                     Search::Written(poly) => Some(poly),

@@ -3586,8 +3586,9 @@ fn higgs_tensor_relations_are_minimal_over_the_polynomials_in_the_parameters() {
         vars.lookup("omega").unwrap(),
     );
     let options = ClosureOptions::new(2)
-        .symbolic(lambda, 2)
-        .symbolic(omega, 2);
+        .symbolic(lambda)
+        .symbolic(omega)
+        .parameters_degree(2);
     let c = closure(system, &["H", "L", "T11", "T12", "T22"], &options).expect("computed");
     assert!(c.closes() && c.all_symbolic());
     let read = |s: &str| Expr::parse(&c.ring, s).expect("parses");
@@ -3733,7 +3734,7 @@ fn an_independent_relation_of_the_same_degree_is_still_listed() {
     let file = load_str("independent.toml", text, &LimitsOverride::default()).expect("loads");
     let system = file.system();
     let a = system.vars().lookup("a").unwrap();
-    let options = ClosureOptions::new(2).symbolic(a, 2);
+    let options = ClosureOptions::new(2).symbolic(a).parameters_degree(2);
     let c = closure(system, &["U", "V", "P", "Q"], &options).expect("computed");
     let listed: Vec<String> = c.relations.iter().map(|r| r.poly.to_string()).collect();
     assert_eq!(listed.len(), 2, "{listed:?}");

@@ -104,14 +104,18 @@ impl ClosureOptions {
         self
     }
 
-    /// With a parameter kept symbolic, the coefficients polynomials of total degree at most
-    /// `degree` in the symbolic parameters, all of them together: the degree is one for them
-    /// all, and the last call sets it.
-    pub fn symbolic(mut self, v: Var, degree: u32) -> Self {
+    /// With a parameter kept symbolic (see [`ClosureOptions::parameters_degree`]).
+    pub fn symbolic(mut self, v: Var) -> Self {
         if !self.symbolic.contains(&v) {
             self.symbolic.push(v);
         }
-        self.parameters_degree = degree;
+        self
+    }
+
+    /// With coefficients polynomial of total degree `≤ d` in the parameters kept symbolic,
+    /// all of them together (2 unless set).
+    pub fn parameters_degree(mut self, d: u32) -> Self {
+        self.parameters_degree = d;
         self
     }
 }
@@ -943,13 +947,16 @@ mod tests {
             span.unwrap().monos.len()
         };
         let symbolic = ClosureOptions::new(2)
-            .symbolic(rotor.var("M"), 4)
-            .symbolic(rotor.var("omega"), 4);
+            .symbolic(rotor.var("M"))
+            .symbolic(rotor.var("omega"))
+            .parameters_degree(4);
         let all = columns(&symbolic, false);
         let graded = columns(&symbolic, true);
         assert_eq!(all, 15 * 15);
         assert!(graded * 10 < all, "{graded} of {all}");
-        let m_fixed = ClosureOptions::new(2).symbolic(rotor.var("omega"), 4);
+        let m_fixed = ClosureOptions::new(2)
+            .symbolic(rotor.var("omega"))
+            .parameters_degree(4);
         let graded_m_fixed = columns(&m_fixed, true);
         assert!(
             graded_m_fixed * 5 < 15 * 5,
@@ -999,6 +1006,27 @@ mod tests {
         );
     }
 
+    /// A parameter named twice is kept symbolic once, and the degree in the parameters is
+    /// set apart from them, as a search's options take them.
+    #[test]
+    fn options_keep_a_parameter_symbolic_once() {
+        let rotor = systems::harmonic_rotor();
+        let (m, omega) = (rotor.var("M"), rotor.var("omega"));
+        let options = ClosureOptions::new(2)
+            .symbolic(m)
+            .symbolic(omega)
+            .symbolic(m)
+            .parameters_degree(3);
+        assert_eq!(
+            (options.symbolic, options.parameters_degree),
+            (vec![m, omega], 3)
+        );
+        let search = crate::search::SearchOptions::new(crate::search::SearchSpace::new(1, 1, 0))
+            .symbolic(omega)
+            .symbolic(omega);
+        assert_eq!(search.symbolic, [omega]);
+    }
+
     /// With every parameter symbolic, the linear algebra runs on the symbolic expansions and
     /// its results hold as found: su(2) and its Casimir with `M, ω, I` as they are.
     #[test]
@@ -1006,7 +1034,7 @@ mod tests {
         let rotor = systems::harmonic_rotor();
         let mut options = ClosureOptions::new(2);
         for name in ["M", "omega", "I"] {
-            options = options.symbolic(rotor.var(name), 2);
+            options = options.symbolic(rotor.var(name));
         }
         let c = closure(&rotor, &["F1", "F2", "L", "G1", "G2"], &options).unwrap();
         assert!(c.parameters.is_empty() && c.all_symbolic());
@@ -1098,7 +1126,9 @@ mod tests {
         assert_eq!(c.relations[0].poly.to_string(), "a W − X + 1");
         assert!(c.relations[0].symbolic);
         // Kept symbolic, the same relation is found from the symbolic expansions.
-        let options = ClosureOptions::new(2).symbolic(system.var("a"), 1);
+        let options = ClosureOptions::new(2)
+            .symbolic(system.var("a"))
+            .parameters_degree(1);
         let c = closure(&system, &["W", "X"], &options).unwrap();
         assert!(c.parameters.is_empty() && c.all_symbolic());
         assert_eq!(c.relations[0].poly.to_string(), "a W − X + 1");

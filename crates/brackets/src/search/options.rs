@@ -242,7 +242,9 @@ impl SearchOptions {
 
     /// With a parameter kept symbolic (see [`SearchSpace::parameters_degree`]).
     pub fn symbolic(mut self, v: Var) -> Self {
-        self.symbolic.push(v);
+        if !self.symbolic.contains(&v) {
+            self.symbolic.push(v);
+        }
         self
     }
 
