@@ -6,8 +6,16 @@
 //! −3 Q_{1,2}` of the Fock–Darwin file. Under each integral a search of a file shows, the
 //! instances that are integrals at its condition and no larger than it
 //! ([`LoadedSystem::integrals_in_functions_and_instances`]): `I91 = −8 Q_{1,2}`.
+//!
+//! Each search is made at fixed parameter values and lifted by homogeneity, then, where the
+//! lift fails (parameters of one weight), with the expression's parameters kept symbolic; and
+//! where that passes the monomial limits or finds nothing, once every such search is made,
+//! with only the parameters the lift cannot restore symbolic, the others fixed and lifted
+//! (`{P_{1,1}, H} = −(ω₋ − Ω) Q_{1,1}` of the Fock–Darwin rotor, `ω₋` symbolic beside
+//! `ω₊` of its weight). Whatever is written is proved for every value of the parameters.
 
 use brackets::closure::{expressed_in, ClosureOptions};
+use brackets::scaling::Scaling;
 use brackets::search::GENERIC_VALUES;
 use brackets::{Condition, NamedFunction};
 use rayon::prelude::*;
@@ -382,7 +390,8 @@ impl LoadedSystem {
 
     /// [`LoadedSystem::written_in`] among `functions` (`H` and the file's) and `instances`:
     /// with the instances first, then, where that found nothing at a lower degree, the
-    /// functions alone.
+    /// functions alone; then, where either found a polynomial at fixed values only, that
+    /// search again with fewer parameters symbolic ([`Among::Fewer`]), in the same order.
     fn written_with(
         &self,
         e: &Expr,
@@ -401,40 +410,70 @@ impl LoadedSystem {
             searchable_degree(&lengths, lowest)
         };
         let alone = degree(&functions, LOWEST);
-        let in_functions =
-            |d: Option<u32>| d.and_then(|d| self.written_among(e, condition, reach, &functions, d));
-        if instances.is_empty() {
-            return in_functions(alone);
+        // The searches in turn: with the instances (if any), then the functions alone where
+        // the instances lowered the degree (more functions, or longer ones).
+        let mut searches: Vec<(Vec<NamedFunction>, u32)> = Vec::new();
+        if !instances.is_empty() {
+            let mut generators = functions.clone();
+            generators.extend(instances);
+            let with = degree(&generators, LOWEST_WITH_INSTANCES);
+            searches.extend(with.map(|d| (generators, d)));
+            if with == alone {
+                return self.written_first(e, condition, reach, &searches);
+            }
         }
-        let mut generators = functions.clone();
-        generators.extend(instances);
-        let with = degree(&generators, LOWEST_WITH_INSTANCES);
-        let found = with.and_then(|d| self.written_among(e, condition, reach, &generators, d));
-        // With the instances the degree may be lower (more functions, or longer ones): what
-        // the functions alone give at their own degree is sought then.
-        match found {
-            None if with != alone => in_functions(alone),
-            found => found,
-        }
+        searches.extend(alone.map(|d| (functions, d)));
+        self.written_first(e, condition, reach, &searches)
     }
 
-    /// `e` written as a polynomial of degree `≤ degree` in the `generators`, as
-    /// [`LoadedSystem::written_in`] searches.
-    fn written_among(
+    /// The first of `searches` (generators and degree) that writes `e` as
+    /// [`LoadedSystem::written_among`] does; then, for those that found it at fixed values
+    /// only, the first that does with only the parameters the lift cannot restore symbolic.
+    fn written_first(
         &self,
         e: &Expr,
         condition: Option<&Condition>,
         reach: Reach,
-        generators: &[NamedFunction],
-        degree: u32,
+        searches: &[(Vec<NamedFunction>, u32)],
     ) -> Option<Expr> {
-        let system = &self.system;
+        let mut fewer = Vec::new();
+        for (generators, degree) in searches {
+            match self.written_among(e, condition, reach, generators, *degree) {
+                Among::Written(poly) => return Some(poly),
+                Among::Nothing => {}
+                Among::Fewer(kept) => fewer.push((generators, *degree, kept)),
+            }
+        }
+        fewer.into_iter().find_map(|(generators, degree, kept)| {
+            self.written_symbolic(e, condition, generators, degree, &kept)
+        })
+    }
+
+    /// The options of a search of `e` of degree `≤ degree` in the generators, at
+    /// `condition`.
+    fn among_options(condition: Option<&Condition>, degree: u32) -> ClosureOptions {
         let mut options = ClosureOptions::new(degree);
         options.max_monomials = MAX_MONOMIALS as usize;
         if let Some(c) = condition {
             options = options.when(c.clone());
         }
-        let search = |options: &ClosureOptions| match expressed_in(system, generators, e, options) {
+        options
+    }
+
+    /// `options` with every parameter fixed at its [`GENERIC_VALUES`] entry.
+    fn at_generic_values(&self, options: &ClosureOptions) -> ClosureOptions {
+        let vars = self.system.vars();
+        vars.vars()
+            .filter(|&v| vars.variable(v).kind() == VarKind::Parameter)
+            .zip(GENERIC_VALUES)
+            .fold(options.clone(), |o, (v, (n, d))| {
+                o.fix(v, Rational::new(n, d))
+            })
+    }
+
+    /// One search of `e` among `generators` with `options`.
+    fn search(&self, e: &Expr, generators: &[NamedFunction], options: &ClosureOptions) -> Search {
+        match expressed_in(&self.system, generators, e, options) {
             Ok(None) => Search::Nothing,
             Ok(Some(found)) if found.symbolic => {
                 // A polynomial in the parameters alone is no form in the functions.
@@ -444,70 +483,134 @@ impl LoadedSystem {
                 }
             }
             Ok(Some(_)) | Err(_) => Search::AtTheseValues,
-        };
-        match search(&options) {
-            Search::Written(poly) => Some(poly),
-            Search::Nothing => None,
+        }
+    }
+
+    /// `e` written as a polynomial of degree `≤ degree` in the `generators`, as
+    /// [`LoadedSystem::written_in`] searches: at the parameters fixed to 1, then at generic
+    /// values, then (as `reach` allows) with every parameter of `e` symbolic.
+    fn written_among(
+        &self,
+        e: &Expr,
+        condition: Option<&Condition>,
+        reach: Reach,
+        generators: &[NamedFunction],
+        degree: u32,
+    ) -> Among {
+        let options = Self::among_options(condition, degree);
+        match self.search(e, generators, &options) {
+            Search::Written(poly) => return Among::Written(poly),
+            Search::Nothing => return Among::Nothing,
             // The parameters are fixed to 1 for the linear algebra (or moved off a declared
             // denominator that 1 makes zero), and that is a special point (the Euler top's
             // `H = C/2` at `I1 = I2 = I3 = 1`): the search is made again at values that are
             // not.
-            Search::AtTheseValues => {
-                let generic = system
-                    .vars()
-                    .vars()
-                    .filter(|&v| system.vars().variable(v).kind() == VarKind::Parameter)
-                    .zip(GENERIC_VALUES)
-                    .fold(options.clone(), |o, (v, (n, d))| {
-                        o.fix(v, Rational::new(n, d))
-                    });
-                match search(&generic) {
-                    Search::Written(poly) => Some(poly),
-                    Search::Nothing => None,
-                    // A combination that holds at these values too, but that homogeneity
-                    // cannot lift (`(a − b) F` for `axy − bxy`, `a` and `b` of one weight):
-                    // sought once more with the parameters of `e` kept symbolic.
-                    Search::AtTheseValues if reach == Reach::AtValues => None,
-                    Search::AtTheseValues => {
-                        // The other parameters stay at the generic values.
-                        let mut fixed = generic.fixed.clone();
-                        fixed.retain(|(v, _)| !e.contains(*v));
-                        let kept: Vec<Var> = system
-                            .vars()
-                            .vars()
-                            .filter(|&v| {
-                                system.vars().variable(v).kind() == VarKind::Parameter
-                                    && e.contains(v)
-                            })
-                            .collect();
-                        if kept.is_empty() {
-                            return None;
-                        }
-                        // Low degree first, which the monomial limit refuses the least:
-                        // most brackets need no more (`{K, Q} = 256ω²αβ H_x + …` of the
-                        // caged oscillator needs degree 4).
-                        SYMBOLIC_SEARCHES
-                            .into_iter()
-                            .find_map(|(degree, max_monomials)| {
-                                let symbolic = kept.iter().fold(
-                                    ClosureOptions {
-                                        fixed: fixed.clone(),
-                                        max_monomials,
-                                        ..generic.clone()
-                                    }
-                                    .parameters_degree(degree),
-                                    |o, &v| o.symbolic(v),
-                                );
-                                match search(&symbolic) {
-                                    Search::Written(poly) => Some(poly),
-                                    _ => None,
-                                }
-                            })
+            Search::AtTheseValues => {}
+        }
+        match self.search(e, generators, &self.at_generic_values(&options)) {
+            Search::Written(poly) => return Among::Written(poly),
+            Search::Nothing => return Among::Nothing,
+            // A combination that holds at these values too, but that homogeneity cannot
+            // lift (`(a − b) F` for `axy − bxy`, `a` and `b` of one weight): sought once
+            // more with the parameters of `e` kept symbolic.
+            Search::AtTheseValues if reach == Reach::AtValues => return Among::Nothing,
+            Search::AtTheseValues => {}
+        }
+        let vars = self.system.vars();
+        let of_e: Vec<Var> = vars
+            .vars()
+            .filter(|&v| vars.variable(v).kind() == VarKind::Parameter && e.contains(v))
+            .collect();
+        if of_e.is_empty() {
+            return Among::Nothing;
+        }
+        if let Some(poly) = self.written_symbolic(e, condition, generators, degree, &of_e) {
+            return Among::Written(poly);
+        }
+        // Every one of them symbolic passes the monomial limits, or finds nothing: only those
+        // the lift cannot restore may (`ω₋` of the Fock–Darwin rotor, of `ω₊`'s weight), the
+        // others fixed and lifted.
+        let undetermined = undetermined_parameters(&self.system, generators, condition, &of_e);
+        match undetermined.is_empty() || undetermined.len() == of_e.len() {
+            true => Among::Nothing,
+            false => Among::Fewer(undetermined),
+        }
+    }
+
+    /// `e` written as [`LoadedSystem::written_among`] does with the parameters `kept`
+    /// symbolic and the others at their generic values, lifted by homogeneity and proved.
+    fn written_symbolic(
+        &self,
+        e: &Expr,
+        condition: Option<&Condition>,
+        generators: &[NamedFunction],
+        degree: u32,
+        kept: &[Var],
+    ) -> Option<Expr> {
+        let generic = self.at_generic_values(&Self::among_options(condition, degree));
+        // The other parameters stay at the generic values.
+        let mut fixed = generic.fixed.clone();
+        fixed.retain(|(v, _)| !kept.contains(v));
+        // Low degree first, which the monomial limit refuses the least: most brackets need
+        // no more (`{K, Q} = 256ω²αβ H_x + …` of the caged oscillator needs degree 4).
+        SYMBOLIC_SEARCHES
+            .into_iter()
+            .find_map(|(degree, max_monomials)| {
+                let symbolic = kept.iter().fold(
+                    ClosureOptions {
+                        fixed: fixed.clone(),
+                        max_monomials,
+                        ..generic.clone()
                     }
+                    .parameters_degree(degree),
+                    |o, &v| o.symbolic(v),
+                );
+                match self.search(e, generators, &symbolic) {
+                    Search::Written(poly) => Some(poly),
+                    _ => None,
                 }
+            })
+    }
+}
+
+/// The parameters among `of_e` that the homogeneity lift cannot restore once fixed: those
+/// whose weights (under which `generators` and `condition` are homogeneous) depend on those of
+/// the parameters before them, the parameters of the generators not in `of_e` first (they stay
+/// fixed, and the lift restores them too). `ω₋` of the Fock–Darwin rotor, of `ω₊`'s weight
+/// (its `ω̄ = (ω₊ + ω₋)/2` is homogeneous), where `M, ω₊, I` are restored: kept symbolic alone,
+/// it finds `{P_{1,1}, H} = −(ω₋ − Ω) Q_{1,1}` with 3 parameter monomials to each of the 210
+/// of degree `≤ 2` in the functions and the instances at `(1, 1)`, where all four would take 15
+/// (3150 monomials, past the limit of 2000). Every one of `of_e` where the weights cannot be
+/// found.
+fn undetermined_parameters(
+    system: &brackets::System,
+    generators: &[NamedFunction],
+    condition: Option<&Condition>,
+    of_e: &[Var],
+) -> Vec<Var> {
+    let exprs: Vec<Expr> = generators.iter().map(|g| g.expr.clone()).collect();
+    let Ok(scaling) = Scaling::of_functions(system.space(), &exprs, condition) else {
+        return of_e.to_vec();
+    };
+    let vars = system.vars();
+    let others = vars.vars().filter(|&v| {
+        vars.variable(v).kind() == VarKind::Parameter
+            && !of_e.contains(&v)
+            && exprs.iter().any(|g| g.contains(v))
+    });
+    // The values are of no account to the rank, only that they are not zero.
+    let mut fixed: Vec<(Var, Rational)> = Vec::new();
+    let mut undetermined = Vec::new();
+    for v in others.chain(of_e.iter().copied()) {
+        fixed.push((v, Rational::one()));
+        if scaling.lifter(&fixed).is_none() {
+            fixed.pop();
+            if of_e.contains(&v) {
+                undetermined.push(v);
             }
         }
     }
+    undetermined
 }
 
 /// The degrees of `e` in the coordinates, the momenta and the Poisson variables, and its
@@ -540,6 +643,18 @@ pub(crate) enum Reach {
     AtValues,
     /// Then with the parameters of the expression kept symbolic.
     WithSymbolicParameters,
+}
+
+/// What [`LoadedSystem::written_among`] found.
+enum Among {
+    /// A polynomial in the generators, proved for every value of the parameters.
+    Written(Expr),
+    /// None, or none that the searches it may make prove.
+    Nothing,
+    /// A polynomial at fixed values only, which none with every parameter of the expression
+    /// symbolic gave: these, those the lift cannot restore, may give it kept symbolic alone
+    /// ([`LoadedSystem::written_symbolic`]).
+    Fewer(Vec<Var>),
 }
 
 /// What one search of [`LoadedSystem::written_in_functions`] at fixed parameter values found.
@@ -610,6 +725,30 @@ mod tests {
             .map(|w| w.as_ref().map(|w| w.to_string()))
             .collect();
         assert_eq!(written, [None, Some("2 P_{1,1}".to_string())]);
+    }
+
+    /// The Fock–Darwin rotor's `ω₊, ω₋` share a weight (its `ω̄ = (ω₊ + ω₋)/2` is
+    /// homogeneous), so the lift restores `M, ω₊, I` and not `ω₋` beside them; the harmonic
+    /// rotor's `M, ω, I` are all restored.
+    #[test]
+    fn the_parameters_kept_symbolic_are_those_the_lift_cannot_restore() {
+        use super::undetermined_parameters;
+        for (file, undetermined) in [
+            ("systems/fock-darwin-rotor.toml", vec!["b"]),
+            ("systems/harmonic-rotor.toml", vec![]),
+        ] {
+            let file = load(file, &LimitsOverride::default()).unwrap();
+            let system = file.system();
+            let vars = system.vars();
+            let parameters: Vec<_> = ["M", "a", "b", "omega", "I"]
+                .into_iter()
+                .filter_map(|p| vars.lookup(p))
+                .collect();
+            let generators = file.generators();
+            let kept = undetermined_parameters(system, &generators, None, &parameters);
+            let names: Vec<&str> = kept.iter().map(|&v| vars.variable(v).name()).collect();
+            assert_eq!(names, undetermined);
+        }
     }
 
     /// A file with `L` and `B = (1 + x + y + p_x + p_y)^k`.

@@ -3727,6 +3727,65 @@ fn a_refuted_residual_is_written_in_the_instances_the_claim_mentions() {
     assert!(text.contains("= 3 ω₊ Q_{1,2}\n"), "{text}");
 }
 
+/// Where the parameters of one weight leave homogeneity nothing to lift by, and all of them
+/// kept symbolic would pass the monomial limits, only those the lift cannot restore are kept
+/// symbolic, the others fixed and lifted: the Fock–Darwin rotor's `ω₊, ω₋` share a weight, and
+/// with its nineteen functions and instances `M, ω₊, ω₋, I` symbolic (3150 monomials at degree
+/// 2) were refused, so that `{P_{1,1}, H}` and the residual of `R_{1,1}` conserved off the
+/// resonance had no form; `ω₋` alone symbolic writes them `−(ω₋ − Ω) Q_{1,1}` and
+/// `−(ω₊ − Ω) S_{1,1}`, each proved for every value of the parameters and reading back to the
+/// expansion. A form found with every parameter symbolic is kept as it was: the Fock–Darwin
+/// `{P_{1,2}, Q_{1,2}}`, written in the functions alone with `Z Z̄`.
+#[test]
+fn a_form_is_found_with_only_the_parameters_the_lift_cannot_restore_symbolic() {
+    let rotor = "systems/fock-darwin-rotor.toml";
+    for (f, written) in [
+        ("P_1_1", "-(b - Omega)*Q_1_1"),
+        ("Q_1_1", "(b - Omega)*P_1_1"),
+        ("R_1_3", "-(a - 3*Omega)*S_1_3"),
+        ("K_1_1", "i*(b - Omega)*K_1_1"),
+    ] {
+        let json = crate::superint_json(&["bracket", rotor, f, "H"]);
+        let line = &json["equations"][0]["lines"][0];
+        assert_eq!(line["in_functions"]["ascii"], written, "{f}: {json}");
+        // The form reads back to the bracket.
+        let difference = format!("{{{f}, H}} - ({written})");
+        let out: Value =
+            serde_json::from_str(&run(&["expand", rotor, "--format", "json", &difference], 0))
+                .expect("JSON");
+        assert_eq!(out["equations"][0]["lines"][0]["ascii"], "0", "{f}");
+    }
+    let text = run(&["bracket", rotor, "P_1_1", "H", "--no-timings"], 0);
+    assert!(
+        text.contains("\n                 = −(ω₋ − Ω) Q_{1,1}\n"),
+        "{text}"
+    );
+    let v: Value =
+        serde_json::from_str(&run(&["check", rotor, "--format", "json"], 0)).expect("JSON");
+    let claims = v["claims"].as_array().expect("claims");
+    let claim = |id: &str| {
+        claims
+            .iter()
+            .find(|c| c["id"] == id)
+            .unwrap_or_else(|| panic!("{id}"))
+            .clone()
+    };
+    assert_eq!(
+        claim("false-off-resonance")["residual_in_functions"],
+        "-(a - Omega)*S_1_1"
+    );
+    assert_eq!(
+        claim("false-other-mode")["residual_in_functions"],
+        "-(a - b)*S_1_1"
+    );
+    let fd = crate::superint_json(&["bracket", "systems/fock-darwin.toml", "P_1_2", "Q_1_2"]);
+    assert_eq!(
+        fd["equations"][0]["lines"][0]["in_functions"]["ascii"],
+        "-2*M^2*(a^2*L + 5*a*b*L - 3*a*H + 4*b^2*L - 3*b*H)*Z*Zbar",
+        "{fd}"
+    );
+}
+
 /// A residual is written in the functions where the parameters at 1, the values the linear
 /// algebra takes first, are a special point: the Euler top with symbolic moments has `H = C/2`
 /// at `I1 = I2 = I3 = 1`, where `C²` was found as `4 H²`, which holds there only, and no line
