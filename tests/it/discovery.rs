@@ -472,6 +472,55 @@ const COMMANDS: &[(&str, &str)] = &[
         "superint closure systems/fock-darwin-rotor.toml HFD L P_2_1 Q_2_1 R_1_1 S_1_1 U_1_2 V_1_2 \
          --when 'a = 2*b, p_theta = 2*I*b' --degree 2",
     ),
+    (
+        "iso3-rotor-search",
+        "superint search systems/isotropic-rotor-3d.toml --when 'p_theta = I*omega' \
+         --momenta-degree 4 --positions-degree 4 --trig-degree 4 --new-only",
+    ),
+    (
+        "iso3-rotor-search-6",
+        "superint search systems/isotropic-rotor-3d.toml --when 'p_theta = I*omega' \
+         --momenta-degree 6 --positions-degree 6 --trig-degree 6 --new-only",
+    ),
+    (
+        "iso3-rotor-search-2-1",
+        "superint search systems/isotropic-rotor-3d.toml --when 'p_theta = 2*I*omega' \
+         --momenta-degree 4 --positions-degree 4 --trig-degree 4 --new-only \
+         --known '{Lx, Axy}, {Ly, Axy}'",
+    ),
+    (
+        "iso3-rotor-search-1-2",
+        "superint search systems/isotropic-rotor-3d.toml --when 'p_theta = I*omega/2' \
+         --momenta-degree 4 --positions-degree 4 --trig-degree 4 --new-only",
+    ),
+    (
+        "iso3-rotor-search-off",
+        "superint search systems/isotropic-rotor-3d.toml --momenta-degree 3 --positions-degree 3 \
+         --trig-degree 2 --symbolic M,omega --parameters-degree 4 --new-only \
+         --known '{Lx, Axy}, {Ly, Axy}'",
+    ),
+    (
+        "iso3-rotor-closure",
+        "superint closure systems/isotropic-rotor-3d.toml F1 Lx Ly Lz Axx Axy P_1_1 Q_1_1 R_1_1 \
+         S_1_1 --define 'P_y=re(Zy*exp(-i*theta))' --define 'Q_y=im(Zy*exp(-i*theta))' \
+         --when 'p_theta = I*omega' --degree 2",
+    ),
+    (
+        "iso3-rotor-closure-2-1",
+        "superint closure systems/isotropic-rotor-3d.toml Axx Azz Ly P_2_1 Q_2_1 R_2_1 S_2_1 \
+         --define 'A_zx=(p_z*p_x/M + M*omega^2*z*x)/2' --define 'X=re(Zx*Zz*exp(-i*theta))' \
+         --define 'Y=im(Zx*Zz*exp(-i*theta))' --when 'p_theta = 2*I*omega' --degree 1",
+    ),
+    (
+        "iso3-rotor-closure-sp6",
+        "superint closure systems/isotropic-rotor-3d.toml Lx Ly Lz Axx Ayy Azz Axy P_2_1 Q_2_1 R_2_1 \
+         S_2_1 --define 'A_yz=(p_y*p_z/M + M*omega^2*y*z)/2' \
+         --define 'A_zx=(p_z*p_x/M + M*omega^2*z*x)/2' --define 'T_yy=re(Zy^2*exp(-i*theta))' \
+         --define 'U_yy=im(Zy^2*exp(-i*theta))' --define 'T_xy=re(Zx*Zy*exp(-i*theta))' \
+         --define 'U_xy=im(Zx*Zy*exp(-i*theta))' --define 'T_yz=re(Zy*Zz*exp(-i*theta))' \
+         --define 'U_yz=im(Zy*Zz*exp(-i*theta))' --define 'T_zx=re(Zz*Zx*exp(-i*theta))' \
+         --define 'U_zx=im(Zz*Zx*exp(-i*theta))' --when 'p_theta = 2*I*omega' --degree 1",
+    ),
 ];
 
 /// A system file of `systems/`, loaded.
@@ -4987,6 +5036,241 @@ fn fd_rotor_resonant_integrals_found_and_their_algebra() {
             "P_{2,1} R_{1,1} + Q_{2,1} S_{1,1} = U_{1,2} at ω₊ = 2 ω₋, p_θ = 2I ω₋ [R3 proved]",
             "P_{2,1} S_{1,1} = Q_{2,1} R_{1,1} + V_{1,2} at ω₊ = 2 ω₋, p_θ = 2I ω₋ [R2 proved]",
             "27 claims: 27 proved, 0 refuted",
+        ],
+    );
+}
+
+/// The paper's rotor in the three-dimensional isotropic oscillator, loaded and checked: every
+/// claim of the file holds (`F1`, `F2`, `L`, the Fradkin tensor, the paper's su(2) and its
+/// Casimir in the x–y plane, the four ladders, the towers of `K = Z_x^m e^{−inθ}` and
+/// `J = Z_z^m e^{−inθ}`, the rotations, the canonical pairs, the resonances, the paper's rotor
+/// at `z = p_z = 0`, what the searches find, the algebra, rank 6 off the resonances and 7 at
+/// one), and each of its eight false neighbours is refuted. `{P_{m,n}, H} = −(mω − nΩ) Q_{m,n}`
+/// and `{R_{m,n}, H} = −(mω − nΩ) S_{m,n}` for `m ≤ 2`, `n ≤ 3`, each conserved at `Ω = ω`
+/// exactly when `m = n`; the towers are proved for all `m, n`, and the rank of seven integrals
+/// at the resonance is 7, with its certificate.
+#[test]
+fn iso3_rotor_claims_are_proved_and_its_false_neighbours_refuted() {
+    let file = system_file("isotropic-rotor-3d.toml");
+    assert_claims_as_expected(
+        &file,
+        &[
+            "separable",
+            "trace",
+            "integrals",
+            "so3",
+            "paper-su2",
+            "ladders",
+            "modes",
+            "tower",
+            "rotation",
+            "heisenberg",
+            "modulus",
+            "resonance",
+            "paper-limit",
+            "found",
+            "algebra",
+            "rank",
+        ],
+        &[
+            "false-rotor-sign",
+            "false-off-resonance",
+            "false-other-resonance",
+            "false-heisenberg-sign",
+            "false-modulus",
+            "false-algebra-axis",
+            "false-rank-off-resonance",
+            "false-rank-8",
+        ],
+    );
+    let parse = |s: &str| file.parse_argument(s).expect("parses");
+    let system = file.system();
+    let resonance = file.condition("p_theta = I*omega").expect("a condition");
+    for m in 0..=2i64 {
+        for n in 0..=3i64 {
+            if m + n == 0 {
+                continue;
+            }
+            for (re, im) in [("P", "Q"), ("R", "S")] {
+                let flow = system.flow(&parse(&format!("{re}_{m}_{n}"))).unwrap();
+                let expected = parse(&format!("-({m}*omega - {n}*Omega)*{im}_{m}_{n}"));
+                assert_eq!(flow, expected, "{re}_{m}_{n}");
+                assert!(!parse(&format!("{im}_{m}_{n}")).is_zero(), "{im}_{m}_{n}");
+                let conserved = resonance.apply(&flow).unwrap().is_zero();
+                assert_eq!(conserved, m == n, "{re}_{m}_{n} at Ω = ω");
+            }
+        }
+    }
+    let out = superint(&[
+        "tower",
+        "--system",
+        "systems/isotropic-rotor-3d.toml",
+        "--max",
+        "4",
+        "--no-timings",
+    ]);
+    let text = normalize(&String::from_utf8(out.stdout).expect("UTF-8"));
+    assert_eq!(out.status.code(), Some(0), "{text}");
+    for piece in [
+        "16 brackets expanded for the 3D isotropic rotor (ladder K_{m,n} = Z_x^m exp(−inθ)), all hold",
+        "Therefore: {K_{m,n}, H} = i(mω − nΩ) K_{m,n} for all m, n ≥ 0.",
+        "16 brackets expanded for the 3D isotropic rotor (ladder J_{m,n} = Z_z^m exp(−inθ)), all hold",
+        "Therefore: {J_{m,n}, H} = i(mω − nΩ) J_{m,n} for all m, n ≥ 0.",
+        "4 claims in 1 file: 4 proved, 0 refuted; all as expected",
+    ] {
+        assert!(text.contains(piece), "{piece}: {text}");
+    }
+    let out = superint(&[
+        "rank",
+        "systems/isotropic-rotor-3d.toml",
+        "F1",
+        "F2",
+        "Lx",
+        "Ly",
+        "Lz",
+        "Axx",
+        "P_1_1",
+        "--expect",
+        "7",
+        "--no-timings",
+    ]);
+    let text = normalize(&String::from_utf8(out.stdout).expect("UTF-8"));
+    assert_eq!(out.status.code(), Some(0), "{text}");
+    assert!(
+        text.contains(
+            "rank ∂(F1, F2, L_x, L_y, L_z, A_xx, P_{1,1})/∂(x, y, z, θ, p_x, p_y, p_z, p_θ) = 7"
+        ),
+        "{text}"
+    );
+}
+
+/// The rotor in the three-dimensional oscillator. At `Ω = ω` the six new integrals, to fourth
+/// and to sixth order, are the parts of `Z_j e^{−iθ}` (those along x and z restated `P_{1,1}`,
+/// `−Q_{1,1}`, `R_{1,1}`, `−S_{1,1}`), and from `H` alone the same six (the oscillator's
+/// integrals are their products); at `Ω = 2ω` the twelve parts of `Z_i Z_j e^{−iθ}`, at
+/// `Ω = ω/2` the six of `Z_j e^{−2iθ}`, and off the resonances, for every `M, ω`, nothing
+/// beyond `F1`, `F2`, `L` and the Fradkin tensor. At `Ω = ω` the table of the linear pairs with
+/// the oscillator's integrals closes at degree 2, the relations writing `F1`, `L` and the
+/// tensor in the pairs; at `Ω = 2ω` the quadratic ones close linearly, sp(4, R) in the x–z
+/// plane and sp(6, R) in space.
+#[test]
+fn iso3_rotor_resonant_integrals_found_and_their_algebra() {
+    let linear = [
+        "I5 = p_z cos θ + Mωz sin θ = R_{1,1}",
+        "I6 = −Mωz cos θ + p_z sin θ = −S_{1,1}",
+        "I7 = p_y cos θ + Mωy sin θ",
+        "I8 = −Mωy cos θ + p_y sin θ",
+        "I9 = p_x cos θ + Mωx sin θ = P_{1,1}",
+        "I10 = −Mωx cos θ + p_x sin θ = −Q_{1,1}",
+    ];
+    let mut pieces = vec![
+        "11025 unknowns, 18359 linear equations over Q, in 1604 independent blocks",
+        "Dimension of the space of integrals: 490. By degree in the momenta: ≤ 0: 1, ≤ 1: 10, \
+         ≤ 2: 50, ≤ 3: 175, ≤ 4: 490.",
+        "Known integrals in the space: H, F1, L_x, L_y, L_z, A_xx, A_yy, A_zz, A_xy.",
+        "the generated ones span 484 of the 490 dimensions",
+        "7 claims: 7 proved, 0 refuted",
+    ];
+    pieces.extend(linear);
+    expect("iso3-rotor-search", &pieces);
+    let alone = expect_alone(
+        "iso3-rotor-search",
+        &[
+            "Known integrals in the space: H.",
+            "the generated ones span 484 of the 490 dimensions",
+            "I7 = p_y cos θ + Mωy sin θ",
+            "7 claims: 7 proved, 0 refuted",
+        ],
+    );
+    assert_eq!(alone.matches(" = 0 at p_θ = Iω [I").count(), 6, "{alone}");
+    let mut pieces = vec![
+        "91728 unknowns",
+        "≤ 4: 490, ≤ 5: 1176, ≤ 6: 2520.",
+        "the generated ones span 2514 of the 2520 dimensions",
+        "7 claims: 7 proved, 0 refuted",
+    ];
+    pieces.extend(linear);
+    expect("iso3-rotor-search-6", &pieces);
+    let text = expect(
+        "iso3-rotor-search-2-1",
+        &[
+            "Dimension of the space of integrals: 254. By degree in the momenta: ≤ 0: 1, ≤ 1: 4, \
+             ≤ 2: 28, ≤ 3: 83, ≤ 4: 254.",
+            "Known integrals in the space: H, F1, L_x, L_y, L_z, A_xx, A_yy, A_zz, A_xy, \
+             {Lx, Axy}, {Ly, Axy}.",
+            "the generated ones span 242 of the 254 dimensions",
+            "I17 = (p_z² − M²ω²z²) cos θ + 2Mωz p_z sin θ = R_{2,1}",
+            "I19 = (p_y p_z − M²ω²yz) cos θ + (Mωy p_z + Mωz p_y) sin θ",
+            "I27 = (p_x² − M²ω²x²) cos θ + 2Mωx p_x sin θ = P_{2,1}",
+            "= −Q_{2,1}",
+            "13 claims: 13 proved, 0 refuted",
+        ],
+    );
+    assert_eq!(
+        normalize(&text).matches(" = 0 at p_θ = 2Iω [I").count(),
+        12,
+        "{text}"
+    );
+    expect(
+        "iso3-rotor-search-1-2",
+        &[
+            "Dimension of the space of integrals: 392.",
+            "the generated ones span 386 of the 392 dimensions",
+            "I5 = −p_z + 2 p_z cos²θ + 2Mωz cos θ sin θ = R_{1,2}",
+            "I9 = −p_x + 2 p_x cos²θ + 2Mωx cos θ sin θ = P_{1,2}",
+            "= −Q_{1,2}",
+            "7 claims: 7 proved, 0 refuted",
+        ],
+    );
+    let off = expect(
+        "iso3-rotor-search-off",
+        &[
+            "52500 unknowns",
+            "Dimension of the space of integrals over Q (a parameter's multiple of an integral \
+             counts apart from it): 552.",
+            "Over the polynomials in M, ω, 62 of the 552 basis integrals generate all of them",
+            "the generated ones span the whole space (552 dimensions)",
+            "None: the known integrals generate every integral in the space.",
+        ],
+    );
+    assert!(!off.contains("of order 1"), "{off}");
+    expect(
+        "iso3-rotor-closure",
+        &[
+            "The table closes",
+            "{P_{1,1}, Q_{1,1}} = −Mω at p_θ = Iω",
+            "{P_y, Q_y} = −Mω at p_θ = Iω",
+            "{L_z, P_{1,1}} = P_y at p_θ = Iω",
+            "{L_y, P_{1,1}} = −R_{1,1} at p_θ = Iω",
+            "2M A_xx = P_{1,1}² + Q_{1,1}² at p_θ = Iω",
+            "Mω L_z + P_{1,1} Q_y = Q_{1,1} P_y at p_θ = Iω",
+            "2M A_xy = P_{1,1} P_y + Q_{1,1} Q_y at p_θ = Iω",
+            "2M F1 = 2M A_xx + R_{1,1}² + S_{1,1}² + P_y² + Q_y² at p_θ = Iω",
+            "46 claims: 46 proved, 0 refuted",
+        ],
+    );
+    expect(
+        "iso3-rotor-closure-2-1",
+        &[
+            "The table closes: every bracket is a polynomial of degree ≤ 1 in the generators.",
+            "{P_{2,1}, Q_{2,1}} = −8M²ω A_xx at p_θ = 2Iω",
+            "{L_y, P_{2,1}} = −2 X at p_θ = 2Iω",
+            "{P_{2,1}, X} = 2M²ω² L_y at p_θ = 2Iω",
+            "{X, Y} = −2M²ω(A_xx + A_zz) at p_θ = 2Iω",
+            "{L_y, A_zx} = A_xx − A_zz at p_θ = 2Iω",
+            "36 claims: 36 proved, 0 refuted",
+        ],
+    );
+    expect(
+        "iso3-rotor-closure-sp6",
+        &[
+            "by exact linear algebra on the 22 monomials (their span has dimension 22)",
+            "The table closes: every bracket is a polynomial of degree ≤ 1 in the generators.",
+            "{T_yy, U_yy} = −8M²ω A_yy at p_θ = 2Iω",
+            "{T_xy, U_xy} = −2M²ω(A_xx + A_yy) at p_θ = 2Iω",
+            "{L_z, P_{2,1}} = 2 T_xy at p_θ = 2Iω",
+            "{P_{2,1}, T_xy} = −2M²ω² L_z at p_θ = 2Iω",
+            "147 claims: 147 proved, 0 refuted",
         ],
     );
 }
