@@ -246,6 +246,16 @@ pub(crate) fn identifier(name: &str) -> String {
     out.trim_end_matches('_').to_string()
 }
 
+/// Whether `text` given on the command line is a name (`Zbar`, `K_{1,2}`, `Kbar_1_2`) rather
+/// than an expression (`x*p_y`, `L^2`, or a bracket `{Lx,Axy}`, which the characters of an
+/// instance's braces would otherwise let through as the name `Lx_Axy`).
+fn is_name_like(text: &str) -> bool {
+    text.chars().next().is_some_and(char::is_alphanumeric)
+        && text
+            .chars()
+            .all(|c| c.is_alphanumeric() || "_{},".contains(c))
+}
+
 /// `R_1_1` → `R_{1,1}`: a name of a family instance's shape, two numeric indices, shown as an
 /// instance is (which `trigpoly::shown_forms` reads); any other name as it is, so that its
 /// own forms (`W_x_θ`, `W_{x,\theta}` for `W_x_theta`) stand.
@@ -326,10 +336,7 @@ impl Subject {
             Subject::Builtin(_, s) => s.display_name(name).to_string(),
         };
         // An expression (`--known 'x*p_y'`) as it is written.
-        if !name
-            .chars()
-            .all(|c| c.is_alphanumeric() || "_{},".contains(c))
-        {
+        if !is_name_like(name) {
             return name.to_string();
         }
         // As given, then as an identifier (`Kbar_{1,2}` is `Kbar_1_2`).
@@ -340,6 +347,19 @@ impl Subject {
             .find(|(n, s)| s != n)
             .map(|(_, s)| s);
         found.unwrap_or_else(|| braced_indices(&key))
+    }
+
+    /// How a known integral given on the command line prints: a name as
+    /// [`Subject::display_name`] prints it, and an expression of a file as the file's claims
+    /// print one (`{L_x, A_xy}` for `{Lx, Axy}`, `L²` for `L^2`), beside the file's functions
+    /// in their printed names; of a built-in system as it is written.
+    pub fn known_name(&self, known: &str) -> String {
+        match self {
+            Subject::File(f) if !is_name_like(known) => f
+                .shown_argument(known)
+                .unwrap_or_else(|_| known.to_string()),
+            _ => self.display_name(known),
+        }
     }
 
     /// The system's name as a title says it: `the harmonic rotor`, or `t1` for a file that
@@ -451,7 +471,7 @@ fn search_and_print(job: &SearchJob) -> anyhow::Result<bool> {
     if let Some(known) = &a.known {
         for k in parse_known(known).map_err(|e| anyhow!("--known: {e}"))? {
             let e = subject.parse(k).map_err(|e| anyhow!("--known: {e}"))?;
-            options.known.push((subject.display_name(k), e));
+            options.known.push((subject.known_name(k), e));
         }
     }
     // A file's integrals are restated in its functions and family instances too.

@@ -378,6 +378,22 @@ impl LoadedSystem {
         self.value(&self.argument(src)?)
     }
 
+    /// An expression given to a report as the file's claims print it, in the paper's
+    /// notation and the file's names (`{L_x, A_xy}` for `{Lx, Axy}`, `L²` for `L^2`); an error
+    /// where it does not parse, as [`LoadedSystem::parse_argument`] reports it.
+    ///
+    /// ```
+    /// use superint::system_file::{load, LimitsOverride};
+    ///
+    /// let rotor = load("systems/harmonic-rotor.toml", &LimitsOverride::default())?;
+    /// assert_eq!(rotor.shown_argument("{L, G1} + Zbar*Kbar_1_2")?, "{L, G1} + Z̄ K̄_{1,2}");
+    /// assert_eq!(rotor.shown_argument("M*omega^2*x^2/2")?, "Mω²x²/2");
+    /// # Ok::<(), superint::system_file::FileError>(())
+    /// ```
+    pub fn shown_argument(&self, src: &str) -> Result<String, FileError> {
+        Ok(self.pretty(&self.argument(src)?.tree))
+    }
+
     /// Reads an expression given to a report, without expanding it.
     fn argument(&self, src: &str) -> Result<Argument, FileError> {
         self.argument_in(self.given("<expression>", src))

@@ -1203,14 +1203,16 @@ fn bad_search_arguments_exit_2_with_a_message() {
             "--positions-degree 4 --trig-degree 0 --symbolic A,B --max-terms 500",
             "the space has 540 unknowns, more than the term limit 500",
         ),
-        // A known integral that is none was left out without a word.
+        // A known integral that is none was left out without a word. It is named as the
+        // file prints an expression, which reads back.
         (
             "--positions-degree 2 --trig-degree 0 --new-only --known x*p_y",
-            "the known integral x*p_y is not an integral: {x*p_y, H} = ",
+            "the known integral x p_y is not an integral: {x p_y, H} = ",
         ),
         (
             "--positions-degree 2 --trig-degree 0 --new-only --known x+i*p_x",
-            "the known integral x+i*p_x is not real: give its real and imaginary parts",
+            "the known integral x + i p_x is not real: give its real and imaginary parts, \
+             re(x + i p_x) and im(x + i p_x)",
         ),
     ] {
         let mut words = vec!["search", "systems/henon-heiles.toml"];
@@ -5197,7 +5199,7 @@ fn iso3_rotor_resonant_integrals_found_and_their_algebra() {
             "Dimension of the space of integrals: 254. By degree in the momenta: ≤ 0: 1, ≤ 1: 4, \
              ≤ 2: 28, ≤ 3: 83, ≤ 4: 254.",
             "Known integrals in the space: H, F1, L_x, L_y, L_z, A_xx, A_yy, A_zz, A_xy, \
-             {Lx, Axy}, {Ly, Axy}.",
+             {L_x, A_xy}, {L_y, A_xy}.",
             "the generated ones span 242 of the 254 dimensions",
             "I17 = (p_z² − M²ω²z²) cos θ + 2Mωz p_z sin θ = R_{2,1}",
             "I19 = (p_y p_z − M²ω²yz) cos θ + (Mωy p_z + Mωz p_y) sin θ",
@@ -5275,6 +5277,27 @@ fn iso3_rotor_resonant_integrals_found_and_their_algebra() {
     );
 }
 
+/// A known integral given to a search as an expression prints as the file's claims print
+/// one, in the file's printed names (`{L_x, A_xy}` beside `L_x` and `A_xy` in the same list,
+/// `L_z²`), where it printed as typed (`{Lx, Axy}`, `Lz^2`); and a bracket typed without
+/// spaces is an expression, where its letters, braces and comma read as a name (`Lx_Axy`).
+#[test]
+fn search_prints_a_known_expression_in_the_files_names() {
+    let text = normalize(&superint_ok_line(
+        "search systems/isotropic-rotor-3d.toml --when 'p_theta = 2*I*omega' --momenta-degree 2 \
+         --positions-degree 2 --trig-degree 1 --new-only --known '{Lx, Axy},{Ly,Axy},Lz^2' \
+         --no-timings",
+    ));
+    assert!(
+        text.contains(
+            "Known integrals in the space: H, F1, L_x, L_y, L_z, A_xx, A_yy, A_zz, A_xy, \
+             {L_x, A_xy}, {L_y, A_xy}, L_z²."
+        ),
+        "{text}"
+    );
+    assert!(!text.contains("Lx_Axy") && !text.contains("{Lx"), "{text}");
+}
+
 /// A closure and a search print the names given on the command line as the file and the
 /// paper write them: a family instance as the file shows it, however it was spelt
 /// (`Kbar_1_1` and `K_{1,1}` print `K̄_{1,1}` and `K_{1,1}`, as `check` and `rank` print
@@ -5311,7 +5334,7 @@ fn closure_and_search_print_names_as_the_file_shows_them() {
          --positions-degree 2 --trig-degree 1 --new-only --known P_1_1,Q_{1,1},L^2 --no-timings",
     ));
     assert!(
-        text.contains("Known integrals in the space: H, L, G1, G2, P_{1,1}, Q_{1,1}, L^2."),
+        text.contains("Known integrals in the space: H, L, G1, G2, P_{1,1}, Q_{1,1}, L²."),
         "{text}"
     );
 }
