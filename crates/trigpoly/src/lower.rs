@@ -891,12 +891,54 @@ pub fn split_names(name: &str, known: &dyn Fn(&str) -> bool) -> Option<Vec<Strin
 }
 
 /// The known name that `name` was probably meant to be: the same letters but for case and
-/// underscores (`px` for `p_x`, `Cos` for `cos`, `Omega` for `omega`), when there is one.
+/// underscores (`px` for `p_x`, `Cos` for `cos`, `Omega` for `omega`), when there is one;
+/// else, for a name of three characters or more, the one known name of three or more a single
+/// slip away (a character changed, added or left out, or two neighbours swapped: `omegaa`,
+/// `Omgea` for `omega`, `Omega`), when exactly one is (`Ayx` beside `Axy` and
+/// `Ayy` could be either, and `G3` beside `G1` is a name of its own more likely than a slip).
 fn did_you_mean<'k>(name: &str, known: &'k [impl AsRef<str>]) -> Option<&'k str> {
     let key = |s: &str| s.replace('_', "").to_lowercase();
     let wanted = key(name);
-    known
+    let known = || known.iter().map(AsRef::as_ref).filter(move |&k| k != name);
+    if let Some(k) = known().find(|&k| key(k) == wanted) {
+        return Some(k);
+    }
+    let long = |s: &str| s.chars().count() >= 3;
+    if !long(name) {
+        return None;
+    }
+    let mut slips = known().filter(|&k| long(k) && one_slip(name, k));
+    match (slips.next(), slips.next()) {
+        (Some(k), None) => Some(k),
+        _ => None,
+    }
+}
+
+/// Whether `a` and `b` differ by one slip: a character changed, added or left out, or two
+/// neighbouring characters swapped.
+fn one_slip(a: &str, b: &str) -> bool {
+    let (a, b): (Vec<char>, Vec<char>) = (a.chars().collect(), b.chars().collect());
+    let (short, long) = if a.len() <= b.len() {
+        (&a, &b)
+    } else {
+        (&b, &a)
+    };
+    let start = short
         .iter()
-        .map(AsRef::as_ref)
-        .find(|&k| k != name && key(k) == wanted)
+        .zip(long.iter())
+        .take_while(|(x, y)| x == y)
+        .count();
+    match long.len() - short.len() {
+        // One left out: the rest of the longer one, past the slip, is the rest of the shorter.
+        1 => short[start..] == long[start + 1..],
+        0 if start < short.len() => {
+            // One changed, or two neighbours swapped.
+            short[start + 1..] == long[start + 1..]
+                || (start + 1 < short.len()
+                    && short[start] == long[start + 1]
+                    && short[start + 1] == long[start]
+                    && short[start + 2..] == long[start + 2..])
+        }
+        _ => false,
+    }
 }

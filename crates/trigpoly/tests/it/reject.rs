@@ -108,6 +108,42 @@ fn cases() -> Vec<Case> {
             "line 1, column 5: unknown name 'q' (known: x, y, p_x, p_y, theta, phi, M, omega)\n  \
              x + q*y\n      ^",
         ),
+        // One slip away from one known name: two neighbours swapped, a letter added.
+        case(
+            Qi,
+            "M*omgea^2",
+            "unknown name 'omgea'; did you mean 'omega'? (known: x, y, p_x, p_y, theta, phi, M, \
+             omega)",
+            (1, 3),
+            "line 1, column 3: unknown name 'omgea'; did you mean 'omega'? (known: x, y, p_x, \
+             p_y, theta, phi, M, omega)\n  M*omgea^2\n    ^^^^^",
+        ),
+        case(
+            Qi,
+            "thetta + x",
+            "unknown name 'thetta'; did you mean 'theta'? (known: x, y, p_x, p_y, theta, phi, M, \
+             omega)",
+            (1, 1),
+            "line 1, column 1: unknown name 'thetta'; did you mean 'theta'? (known: x, y, p_x, \
+             p_y, theta, phi, M, omega)\n  thetta + x\n  ^^^^^^",
+        ),
+        // One slip away from two, p_x and p_y: no guess.
+        case(
+            Qi,
+            "p_z",
+            "unknown name 'p_z' (known: x, y, p_x, p_y, theta, phi, M, omega)",
+            (1, 1),
+            "line 1, column 1: unknown name 'p_z' (known: x, y, p_x, p_y, theta, phi, M, omega)\n  \
+             p_z\n  ^^^",
+        ),
+        case(
+            Qi,
+            "sni(theta)",
+            "unknown function 'sni' (known: cos, sin, exp, conj, re, im); did you mean 'sin'?",
+            (1, 1),
+            "line 1, column 1: unknown function 'sni' (known: cos, sin, exp, conj, re, im); did \
+             you mean 'sin'?\n  sni(theta)\n  ^^^",
+        ),
         case(
             Q,
             "x^100000",
