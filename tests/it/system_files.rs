@@ -3687,6 +3687,20 @@ fn bracket_writes_the_bracket_in_the_family_instances_it_mentions() {
     assert_eq!(written(fd, "Z", "P_1_2")["text"], "2iM(ω₊ + ω₋) Z̄ W");
 }
 
+/// `check FILE --format json`'s claims, looked up by id (a panic names an id not there).
+fn checked_claims(file: &str) -> impl Fn(&str) -> Value {
+    let v: Value =
+        serde_json::from_str(&run(&["check", file, "--format", "json"], 0)).expect("JSON");
+    let claims = v["claims"].as_array().expect("claims").clone();
+    move |id| {
+        claims
+            .iter()
+            .find(|c| c["id"] == id)
+            .unwrap_or_else(|| panic!("no claim {id}"))
+            .clone()
+    }
+}
+
 /// A refuted claim that mentions family instances has its residual written in the instances
 /// of every family at their indices too, where it is a polynomial in them and the functions:
 /// the Fock–Darwin `P_{1,2}` conserved off the resonance (`−(ω₊ − 2 ω₋) Q_{1,2}`) or at the other
@@ -3695,15 +3709,7 @@ fn bracket_writes_the_bracket_in_the_family_instances_it_mentions() {
 #[test]
 fn a_refuted_residual_is_written_in_the_instances_the_claim_mentions() {
     let fd = "systems/fock-darwin.toml";
-    let v: Value = serde_json::from_str(&run(&["check", fd, "--format", "json"], 0)).expect("JSON");
-    let claims = v["claims"].as_array().expect("claims");
-    let claim = |id: &str| {
-        claims
-            .iter()
-            .find(|c| c["id"] == id)
-            .unwrap_or_else(|| panic!("{id}"))
-            .clone()
-    };
+    let claim = checked_claims(fd);
     for (id, written) in [
         ("false-off-resonance", "-(a - 2*b)*Q_1_2"),
         ("false-resonance", "3*a*Q_1_2"),
@@ -3760,16 +3766,7 @@ fn a_form_is_found_with_only_the_parameters_the_lift_cannot_restore_symbolic() {
         text.contains("\n                 = −(ω₋ − Ω) Q_{1,1}\n"),
         "{text}"
     );
-    let v: Value =
-        serde_json::from_str(&run(&["check", rotor, "--format", "json"], 0)).expect("JSON");
-    let claims = v["claims"].as_array().expect("claims");
-    let claim = |id: &str| {
-        claims
-            .iter()
-            .find(|c| c["id"] == id)
-            .unwrap_or_else(|| panic!("{id}"))
-            .clone()
-    };
+    let claim = checked_claims(rotor);
     assert_eq!(
         claim("false-off-resonance")["residual_in_functions"],
         "-(a - Omega)*S_1_1"
