@@ -70,7 +70,7 @@
 //!                          diagonal, and so their transposes, that a limit stopped: shown
 //!                          as "?", the limit's message here) } ],
 //!   "towers": [ { "section", "id", "system", "family" ("K_{m,n}", as printed), "ladder"
-//!                 (the text's: "Z" in the paper, "K_{m,n} = Z^m exp(−inθ)" for a file's
+//!                 (the text's: "Z" in the paper, "K_{m,n} = Z^m e^{−inθ}" for a file's
 //!                 family), "max", "checked", "failures": [[m, n]], "outcome", "seconds" } ],
 //!   "proofs": [ { "section", "title", "facts": [ { "statement", "holds" } ],
 //!                 "leibniz_check", "lemma", "conclusion", "claims": [ids], "outcome" } ],

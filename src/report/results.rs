@@ -507,7 +507,7 @@ pub struct TowerResult {
     /// none), as the tower's line says it.
     pub the_system: String,
     /// The ladder as the tower's line names it: the paper's ladder function (`Z`, `Z'`), or a
-    /// file's family with its value (`K_{m,n} = Z^m exp(−inθ)`).
+    /// file's family with its value (`K_{m,n} = Z^m e^{−inθ}`).
     pub ladder: String,
     /// The family with its indices (`K_{m,n}`, `K'_{m,n}`), as the tower's closing line
     /// names it.

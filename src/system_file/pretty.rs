@@ -411,6 +411,17 @@ impl LoadedSystem {
                 return p;
             }
         }
+        // `e^{−inθ}`, as the paper writes the exponential (`exp(…)` where the system
+        // declares a name `e`): a power, which another power or `Re` takes in parentheses.
+        if let ([arg], "exp") = (args, f) {
+            if !self.is_declared_name("e") {
+                let mut p = Printed::atom(format!("e^{{{}}}", self.print(arg).text));
+                p.prec = POWER;
+                p.first_long = true;
+                p.last_long = true;
+                return p;
+            }
+        }
         let args: Vec<String> = args.iter().map(|a| self.print(a).text).collect();
         // The paper's (and LaTeX's) real and imaginary parts are `Re` and `Im` (`re`
         // and `im` where the system declares `Re` or `Im` itself); any other name

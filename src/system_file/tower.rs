@@ -812,7 +812,7 @@ fn settled(when: Option<&Condition>, e: Expr) -> Result<Expr, EngineError> {
 
 /// `λ A` as a proof states it, as the paper writes it: the eigenvalue bare where it is one
 /// term over no denominator (`iω Z`, `−2iω conj(b)`, `−W` for `−1`), else in parentheses
-/// (`(−i p_θ/I) exp(−iθ)`, `(a − b) W`).
+/// (`(−i p_θ/I) e^{−iθ}`, `(a − b) W`).
 fn times(lambda: &Expr, factor: &str) -> String {
     let text = lambda.to_string();
     match text.as_str() {

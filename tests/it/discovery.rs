@@ -4894,9 +4894,9 @@ fn fd_rotor_claims_are_proved_and_its_false_neighbours_refuted() {
     let text = normalize(&String::from_utf8(out.stdout).expect("UTF-8"));
     assert_eq!(out.status.code(), Some(0), "{text}");
     for piece in [
-        "16 brackets expanded for the Fock–Darwin rotor (ladder K_{m,n} = Z^m exp(−inθ)), all hold",
+        "16 brackets expanded for the Fock–Darwin rotor (ladder K_{m,n} = Z^m e^{−inθ}), all hold",
         "Therefore: {K_{m,n}, H} = i(m ω₋ − nΩ) K_{m,n} for all m, n ≥ 0.",
-        "16 brackets expanded for the Fock–Darwin rotor (ladder J_{m,n} = W^m exp(−inθ)), all hold",
+        "16 brackets expanded for the Fock–Darwin rotor (ladder J_{m,n} = W^m e^{−inθ}), all hold",
         "Therefore: {J_{m,n}, H} = i(m ω₊ − nΩ) J_{m,n} for all m, n ≥ 0.",
         "16 brackets expanded for the Fock–Darwin rotor (ladder G_{m,n} = W^m Z̄^n), all hold",
         "Therefore: {G_{m,n}, H} = i(m ω₊ − n ω₋) G_{m,n} for all m, n ≥ 0.",
@@ -5114,9 +5114,9 @@ fn iso3_rotor_claims_are_proved_and_its_false_neighbours_refuted() {
     let text = normalize(&String::from_utf8(out.stdout).expect("UTF-8"));
     assert_eq!(out.status.code(), Some(0), "{text}");
     for piece in [
-        "16 brackets expanded for the 3D isotropic rotor (ladder K_{m,n} = Z_x^m exp(−inθ)), all hold",
+        "16 brackets expanded for the 3D isotropic rotor (ladder K_{m,n} = Z_x^m e^{−inθ}), all hold",
         "Therefore: {K_{m,n}, H} = i(mω − nΩ) K_{m,n} for all m, n ≥ 0.",
-        "16 brackets expanded for the 3D isotropic rotor (ladder J_{m,n} = Z_z^m exp(−inθ)), all hold",
+        "16 brackets expanded for the 3D isotropic rotor (ladder J_{m,n} = Z_z^m e^{−inθ}), all hold",
         "Therefore: {J_{m,n}, H} = i(mω − nΩ) J_{m,n} for all m, n ≥ 0.",
         "4 claims in 1 file: 4 proved, 0 refuted; all as expected",
     ] {

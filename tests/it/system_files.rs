@@ -1455,8 +1455,8 @@ fn tower_checks_every_family_with_an_eigenvalue() {
     );
     // The rotor's eigenvalue in the file's functions, as the family's eigenvalue writes it.
     assert!(
-        out.contains("2. computed: {exp(−iθ), H} = −i Ω exp(−iθ)")
-            && out.contains("2. computed: {exp(iθ), H} = i Ω exp(iθ)"),
+        out.contains("2. computed: {e^{−iθ}, H} = −i Ω e^{−iθ}")
+            && out.contains("2. computed: {e^{iθ}, H} = i Ω e^{iθ}"),
         "{out}"
     );
     assert!(
@@ -2681,6 +2681,9 @@ fn echoes_read_back_to_the_same_normal_form() {
         "exp(i*theta)",
         "exp(3*i*theta)",
         "exp(i*(theta - phi))",
+        "e^{-i*theta}*x^2",
+        "exp(-i*theta)^2",
+        "re(e^{2*i*theta - i*phi})",
         "M*(x + y)^2",
         "x*(-x)^2",
         "(x*y)^2",
@@ -2707,6 +2710,39 @@ fn echoes_read_back_to_the_same_normal_form() {
     assert_eq!(expand("2M(x + y)²").1, expand("2*M*(x + y)^2").1);
     assert_eq!(expand("(Mx)²").1, "M^2*x^2");
     assert_eq!(expand("Mx²").1, "M*x^2");
+    // The exponential echoes as the paper writes it; a power of it takes parentheses.
+    assert_eq!(expand("x^2*exp(-i*theta)").0, "x² e^{−iθ}");
+    assert_eq!(expand("exp(-i*theta)^2").0, "(e^{−iθ})²");
+}
+
+/// The exponential is `e^{…}` (with braces) in what superint reads and prints, unless the
+/// system declares a name `e`: then `e^2` is its square, and the exponential echoes as
+/// `exp(…)`, which reads back.
+#[test]
+fn the_exponential_is_written_e_unless_the_system_declares_e() {
+    let dir = scratch("a-name-e");
+    std::fs::write(
+        dir.join("e.toml"),
+        "hamiltonian = \"p_x^2/2\"\n[phase_space]\ncoordinates = [\"x\"]\n\
+         angles = [\"theta\"]\nparameters = [\"e\"]\n",
+    )
+    .expect("write");
+    let o = superint_in(
+        &dir,
+        &[
+            "expand",
+            "e.toml",
+            "e^2*exp(i*theta) - e^2*e^{i*theta}",
+            "e^2*exp(i*theta)",
+        ],
+    );
+    let out = text(&o.stdout);
+    assert_eq!(o.status.code(), Some(0), "{}", text(&o.stderr));
+    assert!(out.contains("e² exp(iθ) − e² exp(iθ) = 0\n"), "{out}");
+    assert!(
+        out.contains("e² exp(iθ)              = e² cos θ + ie² sin θ\n"),
+        "{out}"
+    );
 }
 
 /// `Re` and `Im` are the real and imaginary parts unless the system declares the name: a

@@ -185,6 +185,11 @@ mod tests {
             ("p²/(2M) x", "(* (/ (^ p 2) (* 2 M)) x)"),
             ("x/2*M", "(* (/ x 2) M)"),
             ("(x/2)M", "(* (/ x 2) M)"),
+            // The exponential as the paper (and the text form) writes it; `e` to a power
+            // without braces is a power of a name `e`.
+            ("Z² e^{−iθ}", "(* (^ Z 2) (exp (- iθ)))"),
+            ("e^{i*(θ - φ)}^2", "(^ (exp (* i (- θ φ))) 2)"),
+            ("e^2", "(^ e 2)"),
         ];
         for (src, want) in cases {
             assert_eq!(sexp(&parse_expr(src).unwrap()), want, "{src}");
@@ -245,6 +250,9 @@ mod tests {
         ("{f, g, h}", (1, 6), "a bracket {f, g} takes exactly two arguments; \
                                expected '}' to close '{' opened at column 1, found ','"),
         ("{f, g", (1, 6), "expected '}' to close '{' opened at column 1, found end of input"),
+        ("e^{x", (1, 5), "expected '}' to close '{' opened at column 3, found end of input"),
+        ("e^{x, y}", (1, 5), "expected '}' to close '{' opened at column 3, found ','"),
+        ("x^{2}", (1, 5), "expected ',' between the two arguments of a bracket {f, g}, found '}'"),
         (")", (1, 1), "unexpected ')'"),
         ("x)", (1, 2), "unexpected ')'"),
         ("a, b", (1, 2), "unexpected ','"),

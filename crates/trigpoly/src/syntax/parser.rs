@@ -453,6 +453,9 @@ impl Parser<'_> {
         self.height = 1;
         match tok {
             Tok::Name(name) if self.tok.tok == Tok::LParen => self.call(name, span),
+            Tok::Name(name) if name == "e" && self.braced_exponent_follows() => {
+                self.exponential(span)
+            }
             Tok::Name(name) if is_trig(&name) && !matches!(self.tok.tok, Tok::Eof) => {
                 self.trig_without_parens(name, span)
             }
@@ -460,6 +463,26 @@ impl Parser<'_> {
             Tok::Int(n) => Ok(Expr::new(ExprKind::Integer(n), span)),
             _ => unreachable!("atom() is only called on integers and names"),
         }
+    }
+
+    /// Whether the current token is a `^` followed by `{`: after `e`, the exponential as the
+    /// paper writes it, `e^{−inθ}` (a brace after any other `^` opens a bracket `{f, g}`).
+    fn braced_exponent_follows(&self) -> bool {
+        self.tok.tok == Tok::Caret && self.src[self.tok.span.end..].trim_start().starts_with('{')
+    }
+
+    /// Parses `^{x}` after the `e` at `span`: the exponential `exp(x)`, which the text form
+    /// prints so.
+    fn exponential(&mut self, span: Span) -> PResult<Expr> {
+        self.bump()?;
+        let open = self.bump()?.span;
+        let arg = self.nested(open, |p| p.expr(0))?;
+        self.height = grow(self.height, span)?;
+        let close = self.expect_close(Tok::RBrace, '}', open)?;
+        Ok(Expr::new(
+            ExprKind::Call("exp".to_string(), span, vec![arg]),
+            span.to(close),
+        ))
     }
 
     /// Parses `cos θ` or `cos²θ` (a power written between the function and its argument), as
