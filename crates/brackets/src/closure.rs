@@ -925,6 +925,38 @@ mod tests {
         assert_eq!(found.poly.to_string(), "M L − ω² L");
     }
 
+    /// A complex target is written in real generators with Gaussian coefficients: `i L`,
+    /// `iωL + G1`, and `L e^{−iθ} = L C − i L S` in `C = cos θ`, `S = sin θ` (the columns `i`
+    /// times each monomial are formed where a target is complex, not only where a generator
+    /// is); the real `L C` is written as before, and `e^{−iθ}` times `G2` not at all.
+    #[test]
+    fn a_complex_target_is_written_in_real_generators_over_the_gaussian_rationals() {
+        let rotor = systems::harmonic_rotor();
+        let mut generators: Vec<NamedFunction> = ["F1", "L", "G1"]
+            .iter()
+            .map(|n| NamedFunction::new(n, n, rotor.get(n).unwrap().clone()))
+            .collect();
+        for (name, value) in [("C", "cos(theta)"), ("S", "sin(theta)")] {
+            generators.push(NamedFunction::new(name, name, rotor.parse(value).unwrap()));
+        }
+        let options = ClosureOptions::new(2);
+        for (target, written) in [
+            ("i*L", Some("i L")),
+            ("G1 + i*omega*L", Some("iω L + G1")),
+            ("L*exp(-i*theta)", Some("L C − i L S")),
+            ("L*cos(theta)", Some("L C")),
+            ("G2*exp(-i*theta)", None),
+        ] {
+            let target = rotor.parse(target).unwrap();
+            let found = expressed_in(&rotor, &generators, &target, &options).unwrap();
+            let found = found.map(|f| {
+                assert!(f.symbolic, "{target}");
+                f.poly.to_string()
+            });
+            assert_eq!(found.as_deref(), written, "{target}");
+        }
+    }
+
     /// With symbolic parameters, a target is sought among the monomials of its own weight
     /// only (the weights under which the fixed parameters weigh zero): `{G1, G2} = −ω² L`
     /// of the rotor with `M, ω` symbolic to degree 4 takes a fraction of the columns, and

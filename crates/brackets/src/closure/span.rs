@@ -75,8 +75,8 @@ pub(super) struct Span {
     /// The declared denominator that is zero at the default values, 1, which moved the
     /// parameters in it ([`off_vanishing_denominators`]).
     pub(super) denominator_zero_at_one: Option<Var>,
-    /// Whether some generator is complex at the fixed values: then each monomial has a
-    /// column of its own and one for `i` times it.
+    /// Whether some generator is complex at the fixed values, or some target is: then each
+    /// monomial has a column of its own and one for `i` times it.
     pub(super) complex: bool,
     /// The exponent vectors `β` (generators, then symbolic parameters) of the monomials.
     pub(super) monos: Vec<Vec<u32>>,
@@ -138,7 +138,9 @@ impl Span {
             off_vanishing_denominators(vars, &mut parameters, &options.fixed, used_atoms);
         let fix = |e: &Expr| fix_parameters(e, &parameters);
         let g: Vec<Expr> = g_sym.iter().map(fix).collect::<Result<_, _>>()?;
-        let complex = g.iter().any(|e| !e.is_real());
+        // A complex target too: in real generators it needs complex coefficients (`i L`), and
+        // its terms in `e^{−ikθ}` are no conjugates of others, to be left out.
+        let complex = g.iter().chain(targets).any(|e| !e.is_real());
 
         let constant: Vec<bool> = (0..g_sym.len())
             .map(|a| a < r && is_phase_free(&g_sym[a]))
