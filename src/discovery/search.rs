@@ -543,7 +543,9 @@ pub fn search_report_for(
 /// below it as a polynomial in `H`, the file's functions and the instances of its families
 /// that are integrals too, where it is one
 /// ([`LoadedSystem::integrals_in_functions_and_instances`]): what `superint search FILE`
-/// prints, `I91 = −8 Q_{1,2}` for the Fock–Darwin search at `a = 2b`.
+/// prints, `I91 = −8 Q_{1,2}` for the Fock–Darwin search at `a = 2b`; and each amplitude
+/// `A` of an integral `Re(A e^{−ikθ})` as a polynomial in `H` and the functions
+/// ([`LoadedSystem::amplitudes_in_functions`]), `A7 = Z_y` for the 3D rotor at `Ω = ω`.
 ///
 /// ```
 /// use superint::brackets::search::{SearchOptions, SearchSpace};
@@ -567,8 +569,13 @@ pub fn file_search_report(
     caller: Caller,
 ) -> Result<(Report, SearchResult), EngineError> {
     let condition = options.condition.as_ref();
-    let restate =
+    let integrals =
         |integrals: &[Expr]| file.integrals_in_functions_and_instances(integrals, condition);
+    let amplitudes = |amplitudes: &[Expr]| file.amplitudes_in_functions(amplitudes, condition);
+    let restate = Restate {
+        integrals: &integrals,
+        amplitudes: &amplitudes,
+    };
     search_report_with(
         &file.the_name(),
         file.system(),
@@ -578,11 +585,21 @@ pub fn file_search_report(
     )
 }
 
-/// How a search's shown integrals are restated below them: each as a polynomial in named
-/// functions, where it is one.
-type Restate<'a> = dyn Fn(&[Expr]) -> Vec<Option<Expr>> + 'a;
+/// A restatement of expressions below them: each as a polynomial in named functions, where
+/// it is one.
+type Restated<'a> = dyn Fn(&[Expr]) -> Vec<Option<Expr>> + 'a;
 
-/// [`search_report_for`], with the shown integrals restated by `restate` where one is given.
+/// How a search's shown integrals, and the amplitudes of their complex forms, are restated
+/// below them.
+struct Restate<'a> {
+    /// The shown integrals, in functions and family instances.
+    integrals: &'a Restated<'a>,
+    /// The amplitudes `A` of the shown integrals `Re(A e^{−ikθ})`, in functions.
+    amplitudes: &'a Restated<'a>,
+}
+
+/// [`search_report_for`], with the shown integrals (and their amplitudes) restated by
+/// `restate` where one is given.
 fn search_report_with(
     name: &str,
     system: &System,
@@ -816,9 +833,9 @@ impl Shared {
         let written = written_forms(r, &self.shown)?;
         // Each in the file's functions and family instances too, where it is a polynomial
         // in them.
-        let restated = restate.map(|f| f(&written)).unwrap_or_default();
+        let restated = restate.map(|f| (f.integrals)(&written)).unwrap_or_default();
         entries.push(self.shown_equations(r, &written, &restated));
-        entries.extend(self.complex_forms(r));
+        entries.extend(self.complex_forms(r, restate.map(|f| f.amplitudes)));
         entries.extend(self.integral_claims(r, &written));
         entries.extend(self.rest_proved(r));
         Ok(Section {
@@ -919,10 +936,11 @@ impl Shared {
     }
 
     /// The shown integrals of trigonometric order `k > 0` as `I = Re(A e^{−ikθ})`, when the
-    /// system has one angle and some has such a form.
-    fn complex_forms(&self, r: &SearchResult) -> Option<Entry> {
+    /// system has one angle and some has such a form, each amplitude `A` restated by
+    /// `restate` below it where one is given and it has a form (`= Z_y`).
+    fn complex_forms(&self, r: &SearchResult, restate: Option<&Restated<'_>>) -> Option<Entry> {
         let k = order_letter(&r.vars);
-        let lines: Vec<Equation> = self
+        let mut lines: Vec<Equation> = self
             .shown
             .iter()
             .filter_map(|&i| {
@@ -934,6 +952,12 @@ impl Shared {
         let ([theta], false) = (r.variables.angles.as_slice(), lines.is_empty()) else {
             return None;
         };
+        if let Some(restate) = restate {
+            let amplitudes: Vec<Expr> = lines.iter().map(|l| l.rhs.clone()).collect();
+            for (line, written) in lines.iter_mut().zip(restate(&amplitudes)) {
+                line.in_functions = written;
+            }
+        }
         let theta = r.vars.variable(*theta).unicode();
         Some(Entry::Equations(Equations {
             caption: format!(

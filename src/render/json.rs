@@ -51,8 +51,9 @@
 //!                          polynomial of degree ≤ 3 in H and the named functions, proved, where
 //!                          `bracket` finds it one; with the family instances at the indices
 //!                          its arguments mention, and, under each integral a search of a file
-//!                          shows, at those that are integrals there: "-8*Q_1_2"; as the text
-//!                          writes it, with the factor its terms share:
+//!                          shows, at those that are integrals there: "-8*Q_1_2"; under each
+//!                          amplitude of its complex forms, in the functions alone: "i*Zy";
+//!                          as the text writes it, with the factor its terms share:
 //!                          "-(2*omega - 3*Omega)*Q_2_3"),
 //!                 "factored": { "text", "ascii", "latex" } | null   (the right side as the
 //!                          factor its terms share times the rest, where `bracket` or `expand`

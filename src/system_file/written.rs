@@ -5,7 +5,11 @@
 //! functions too ([`LoadedSystem::written_in_functions_and_instances`]): `{L, P_{1,2}} =
 //! −3 Q_{1,2}` of the Fock–Darwin file. Under each integral a search of a file shows, the
 //! instances that are integrals at its condition and no larger than it
-//! ([`LoadedSystem::integrals_in_functions_and_instances`]): `I91 = −8 Q_{1,2}`.
+//! ([`LoadedSystem::integrals_in_functions_and_instances`]): `I91 = −8 Q_{1,2}`; and under
+//! the amplitude `A` of each integral `Re(A e^{−ikθ})` it shows, the functions alone
+//! ([`LoadedSystem::amplitudes_in_functions`]): `A7 = Z_y` of the 3D rotor at `Ω = ω`, an
+//! integral no family names. The coefficients found are Gaussian rationals where the
+//! functions or the expression are complex (`i Z_y`).
 //!
 //! Each search is made at fixed parameter values and lifted by homogeneity, then, where the
 //! lift fails (parameters of one weight), with the expression's parameters kept symbolic; and
@@ -20,7 +24,7 @@ use brackets::search::GENERIC_VALUES;
 use brackets::{Condition, NamedFunction};
 use rayon::prelude::*;
 use trigpoly::syntax::{Expr as Tree, ExprKind};
-use trigpoly::{Expr, Rational, Var, VarKind};
+use trigpoly::{Expr, GaussianRational, Rational, Var, VarKind};
 
 use super::scope::{instance_of, substitute, Scope};
 use super::LoadedSystem;
@@ -58,7 +62,7 @@ const MAX_INSTANCES_TRIED: usize = 60;
 
 /// The most integrals a search's report restates, each by a linear algebra of its own (a few
 /// milliseconds): one that shows more (the basis of a large space, of hundreds or thousands)
-/// restates none.
+/// restates none; so with their amplitudes.
 const MAX_INTEGRALS: usize = 32;
 
 /// The most family instances among the functions for one of a search's integrals.
@@ -209,6 +213,62 @@ impl LoadedSystem {
                     .collect();
                 let reach = Reach::WithSymbolicParameters;
                 self.written_with(e, condition, reach, functions.clone(), instances)
+            })
+            .collect()
+    }
+
+    /// Each of `amplitudes`, the amplitudes `A` of integrals `Re(A e^{−ikθ})` that
+    /// `superint search` shows (at `condition`), as a polynomial in `H` and the file's
+    /// functions, where it is one, as [`LoadedSystem::written_in_functions`] seeks an
+    /// expression: `Z_y` for `p_y + iMωy` of the 3D rotor at `Ω = ω`, `i Z_y` for
+    /// `i p_y − Mωy`, `Z_y Z_z` at `Ω = 2ω`. An amplitude need not be an integral, so no
+    /// family instance takes part (they are tried as integrals only); each form is an
+    /// identity on the phase space (at `condition`), proved for every value of the
+    /// parameters. `None` where there is none, and for every one of more than 32 amplitudes,
+    /// as for the integrals ([`LoadedSystem::integrals_in_functions_and_instances`]).
+    ///
+    /// ```
+    /// use superint::system_file::{load, LimitsOverride};
+    ///
+    /// let rotor = load("systems/isotropic-rotor-3d.toml", &LimitsOverride::default())?;
+    /// let when = rotor.condition("p_theta = I*omega")?;
+    /// let amplitudes = [rotor.parse("i*p_y - M*omega*y")?, rotor.parse("p_y + M*omega*y")?];
+    /// let written = rotor.amplitudes_in_functions(&amplitudes, Some(&when));
+    /// assert_eq!(written[0].as_ref().expect("a polynomial").to_string(), "i Z_y");
+    /// assert!(written[1].is_none());
+    /// # Ok::<(), superint::system_file::FileError>(())
+    /// ```
+    pub fn amplitudes_in_functions(
+        &self,
+        amplitudes: &[Expr],
+        condition: Option<&Condition>,
+    ) -> Vec<Option<Expr>> {
+        if amplitudes.len() > MAX_INTEGRALS {
+            return vec![None; amplitudes.len()];
+        }
+        // An amplitude that is a constant times one before it (`i A`, that of the other part
+        // of one complex integral) is that constant times its form: one search for the two.
+        let multiple_of: Vec<Option<(usize, GaussianRational)>> = (0..amplitudes.len())
+            .map(|j| {
+                (0..j).find_map(|i| constant_ratio(&amplitudes[i], &amplitudes[j]).map(|c| (i, c)))
+            })
+            .collect();
+        let searched: Vec<Option<Expr>> = amplitudes
+            .par_iter()
+            .zip(&multiple_of)
+            .map(|(a, multiple)| match multiple {
+                None => self.written_in_functions(a, condition),
+                Some(_) => None,
+            })
+            .collect();
+        // The first amplitude `j` is a multiple of is itself a multiple of none: one before
+        // it would have been found first.
+        multiple_of
+            .iter()
+            .enumerate()
+            .map(|(j, multiple)| match multiple {
+                None => searched[j].clone(),
+                Some((i, c)) => searched[*i].as_ref().map(|w| w.scale(c)),
             })
             .collect()
     }
@@ -626,6 +686,19 @@ fn degrees(e: &Expr) -> [i64; 4] {
     .map(|kind| e.total_degree(&[kind]).unwrap_or(0))
 }
 
+/// The constant `c` with `b = c a`, where there is one: `i` for `a = p_y + iMωy` and
+/// `b = i p_y − Mωy`.
+fn constant_ratio(a: &Expr, b: &Expr) -> Option<GaussianRational> {
+    if a.len() != b.len() || a.vars() != b.vars() {
+        return None;
+    }
+    let first = a.terms().next()?;
+    let exponents = first.exponents();
+    let other = b.terms().find(|t| t.exponents() == exponents)?;
+    let c = &other.coeff() * &first.coeff().try_inv()?;
+    (a.scale(&c) == *b).then_some(c)
+}
+
 /// Whether `e` holds no variable but parameters: a constant on the phase space, or in a ring
 /// of functions' symbols a polynomial in no function.
 fn holds_only_parameters(e: &Expr) -> bool {
@@ -725,6 +798,55 @@ mod tests {
             .map(|w| w.as_ref().map(|w| w.to_string()))
             .collect();
         assert_eq!(written, [None, Some("2 P_{1,1}".to_string())]);
+    }
+
+    /// An amplitude that is a constant times one before it is written as that multiple of its
+    /// form, as a search of its own writes it (`i Z_y`, `−2 Z_y`); one that is no multiple,
+    /// or has no form, is searched or left as it is.
+    #[test]
+    fn a_multiple_of_an_amplitude_is_written_as_that_multiple_of_its_form() {
+        use super::constant_ratio;
+        let rotor = load(
+            "systems/isotropic-rotor-3d.toml",
+            &LimitsOverride::default(),
+        )
+        .unwrap();
+        let when = rotor.condition("p_theta = I*omega").unwrap();
+        let parse = |e: &str| rotor.parse(e).unwrap();
+        let amplitudes = [
+            "p_y + i*M*omega*y",
+            "i*p_y - M*omega*y",
+            "p_y + M*omega*y",
+            "-2*p_y - 2*i*M*omega*y",
+            "2*p_y + 2*M*omega*y",
+            "p_x + i*M*omega*x",
+        ]
+        .map(parse);
+        let ratio = constant_ratio(&amplitudes[0], &amplitudes[1]);
+        assert_eq!(ratio.map(|c| c.to_string()).as_deref(), Some("i"));
+        assert!(constant_ratio(&amplitudes[0], &amplitudes[2]).is_none());
+        assert!(constant_ratio(&amplitudes[0], &amplitudes[5]).is_none());
+        let written = rotor.amplitudes_in_functions(&amplitudes, Some(&when));
+        let written: Vec<Option<String>> = written
+            .iter()
+            .map(|w| w.as_ref().map(|w| w.to_string()))
+            .collect();
+        let some = |s: &str| Some(s.to_string());
+        assert_eq!(
+            written,
+            [
+                some("Z_y"),
+                some("i Z_y"),
+                None,
+                some("−2 Z_y"),
+                None,
+                some("Z_x")
+            ]
+        );
+        for (a, w) in amplitudes.iter().zip(&written) {
+            let alone = rotor.written_in_functions(a, Some(&when));
+            assert_eq!(alone.map(|w| w.to_string()), *w, "{a}");
+        }
     }
 
     /// The Fock–Darwin rotor's `ω₊, ω₋` share a weight (its `ω̄ = (ω₊ + ω₋)/2` is

@@ -4350,6 +4350,116 @@ fn search_restates_its_integrals_in_functions_and_family_instances() {
     assert!(found.iter().all(|l| l["in_functions"].is_null()), "{json}");
 }
 
+/// A search of a system file writes the amplitude `A` of each integral `Re(A e^{−ikθ})` it
+/// shows in the file's functions, where it is a polynomial in them: the 3D rotor's
+/// `I7 = p_y cos θ + Mωy sin θ` at `Ω = ω`, which no family names, is `Re(Z_y e^{−iθ})`
+/// (`A7 = p_y + iMωy = Z_y`, `A8 = i Z_y`), and each form, read back from JSON, expands at the
+/// condition to its amplitude (their difference is 0); at `Ω = 2ω` the quadratic ones are
+/// products, `A19 = Z_y Z_z`. The harmonic rotor's amplitudes at 1:1, `p_y + iMωy`, are no
+/// polynomial in its `Z = Z_x + iZ_y`, `Z̄` and the rest, and nothing is printed below them.
+#[test]
+fn search_writes_the_amplitudes_of_its_integrals_in_the_files_functions() {
+    let file = "systems/isotropic-rotor-3d.toml";
+    let one = "search systems/isotropic-rotor-3d.toml --when 'p_theta = I*omega' \
+               --momenta-degree 2 --positions-degree 2 --trig-degree 2 --new-only --no-timings";
+    let text = superint_ok_line(one);
+    for form in [
+        "\n    I7  = p_y cos θ + Mωy sin θ\n    I8  = ",
+        "\n    A7 (k = 1)  = p_y + iMωy\n                = Z_y\n",
+        "\n    A8 (k = 1)  = i p_y − Mωy\n                = i Z_y\n",
+        "\n    A9 (k = 1)  = p_x + iMωx\n                = Z_x\n",
+    ] {
+        assert!(text.contains(form), "{form:?}: {text}");
+    }
+    // In JSON, each amplitude's `in_functions`; read back, the difference expands to zero.
+    let json: serde_json::Value =
+        serde_json::from_str(&superint_ok_line(&format!("{one} --format json"))).expect("JSON");
+    let amplitudes: Vec<serde_json::Value> = json["equations"]
+        .as_array()
+        .expect("equations")
+        .iter()
+        .filter(|e| {
+            e["caption"]
+                .as_str()
+                .unwrap()
+                .starts_with("Those of trigonometric order")
+        })
+        .flat_map(|e| e["lines"].as_array().expect("lines").clone())
+        .collect();
+    let forms: Vec<(&str, &str)> = amplitudes
+        .iter()
+        .map(|l| {
+            let lhs = l["lhs"].as_str().unwrap();
+            (lhs, l["in_functions"]["ascii"].as_str().expect("a form"))
+        })
+        .collect();
+    assert_eq!(
+        forms,
+        [
+            ("A5 (k = 1)", "Zz"),
+            ("A6 (k = 1)", "i*Zz"),
+            ("A7 (k = 1)", "Zy"),
+            ("A8 (k = 1)", "i*Zy"),
+            ("A9 (k = 1)", "Zx"),
+            ("A10 (k = 1)", "i*Zx"),
+        ]
+    );
+    assert_eq!(amplitudes[2]["in_functions"]["latex"], "Z_{y}");
+    for l in &amplitudes {
+        let difference = format!(
+            "({}) - ({})",
+            l["ascii"].as_str().unwrap(),
+            l["in_functions"]["ascii"].as_str().unwrap()
+        );
+        let args = ["expand", file, "--when", "p_theta = I*omega", &difference];
+        let expanded: serde_json::Value = serde_json::from_str(&crate::superint_ok(
+            &[&args[..], &["--format", "json"]].concat(),
+        ))
+        .expect("JSON");
+        assert_eq!(
+            expanded["equations"][0]["lines"][0]["ascii"], "0",
+            "{difference}"
+        );
+    }
+    // Not a wrong neighbour: A7's amplitude less A8's form.
+    let args = [
+        "expand",
+        file,
+        "--when",
+        "p_theta = I*omega",
+        "(p_y + i*M*omega*y) - (i*Zy)",
+        "--format",
+        "json",
+    ];
+    let expanded: serde_json::Value =
+        serde_json::from_str(&crate::superint_ok(&args)).expect("JSON");
+    assert_ne!(expanded["equations"][0]["lines"][0]["ascii"], "0");
+    // At Ω = 2ω, the products of the ladders.
+    let two = superint_ok_line(
+        "search systems/isotropic-rotor-3d.toml --when 'p_theta = 2*I*omega' \
+         --momenta-degree 2 --positions-degree 2 --trig-degree 1 --new-only --no-timings",
+    );
+    for form in [
+        "\n    A19 (k = 1) = p_y p_z + iMωy p_z + iMωz p_y − M²ω²yz\n                = Z_y Z_z\n",
+        "\n    A28 (k = 1) = i p_x² − 2Mωx p_x − iM²ω²x²\n                = i Z_x²\n",
+    ] {
+        assert!(two.contains(form), "{form:?}: {two}");
+    }
+    // The harmonic rotor's: none.
+    let rotor = superint_ok_line(
+        "search systems/harmonic-rotor.toml --when 'p_theta = I*omega' --momenta-degree 1 \
+         --positions-degree 1 --trig-degree 1 --new-only --no-timings",
+    );
+    assert!(
+        rotor.contains("\n    A3 (k = 1) = p_y + iMωy\n    A4 "),
+        "{rotor}"
+    );
+    assert!(
+        !rotor.lines().any(|l| l.trim_start().starts_with("= ")),
+        "{rotor}"
+    );
+}
+
 /// The Fock–Darwin system's algebras: at `a = 2b`, for every `M, b`, `H`, `L`, `P_{1,2}`,
 /// `Q_{1,2}` close into a cubic algebra, `{P, Q} = 36M³b(H² − 4b²L²)`, tied by
 /// `P² + Q² = 8M³(H − bL)(H + 2bL)²`; at `b = 0` the guiding centre's Heisenberg pair, with
@@ -5164,6 +5274,8 @@ fn iso3_rotor_resonant_integrals_found_and_their_algebra() {
         "I8 = −Mωy cos θ + p_y sin θ",
         "I9 = p_x cos θ + Mωx sin θ = P_{1,1}",
         "I10 = −Mωx cos θ + p_x sin θ = −Q_{1,1}",
+        "A7 (k = 1) = p_y + iMωy = Z_y",
+        "A8 (k = 1) = i p_y − Mωy = i Z_y",
     ];
     let mut pieces = vec![
         "11025 unknowns, 18359 linear equations over Q, in 1604 independent blocks",
@@ -5205,6 +5317,7 @@ fn iso3_rotor_resonant_integrals_found_and_their_algebra() {
             "I19 = (p_y p_z − M²ω²yz) cos θ + (Mωy p_z + Mωz p_y) sin θ",
             "I27 = (p_x² − M²ω²x²) cos θ + 2Mωx p_x sin θ = P_{2,1}",
             "= −Q_{2,1}",
+            "A19 (k = 1) = p_y p_z + iMωy p_z + iMωz p_y − M²ω²yz = Z_y Z_z",
             "13 claims: 13 proved, 0 refuted",
         ],
     );
