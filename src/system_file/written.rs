@@ -257,7 +257,12 @@ impl LoadedSystem {
             .par_iter()
             .zip(&multiple_of)
             .map(|(a, multiple)| match multiple {
-                None => self.written_in_functions(a, condition),
+                // A form that divides by a parameter the amplitude does not is proved but
+                // reads worse than the amplitude: the gravity rotor's `p_x + iMωx` as
+                // `ω(ω L − ω L′ − 2i G1 + 2i G1′)/g`, where `G1′ − G1` is a multiple of `g`.
+                None => self
+                    .written_in_functions(a, condition)
+                    .filter(|w| !divides_by_more(w, a)),
                 Some(_) => None,
             })
             .collect();
@@ -697,6 +702,23 @@ fn constant_ratio(a: &Expr, b: &Expr) -> Option<GaussianRational> {
     let other = b.terms().find(|t| t.exponents() == exponents)?;
     let c = &other.coeff() * &first.coeff().try_inv()?;
     (a.scale(&c) == *b).then_some(c)
+}
+
+/// Whether `form` holds a negative power of a parameter that `e` holds to no lower one
+/// (`1/g` in a form of `p_x + iMωx`); the two may be in rings of their own, so a parameter is
+/// matched by its name.
+fn divides_by_more(form: &Expr, e: &Expr) -> bool {
+    let (vars, of_e) = (form.vars(), e.vars());
+    vars.vars()
+        .filter(|&v| vars.variable(v).kind() == VarKind::Parameter)
+        .any(|v| {
+            let low = form.low_degree(v).unwrap_or(0);
+            let low_in_e = of_e
+                .lookup(vars.variable(v).name())
+                .and_then(|w| e.low_degree(w))
+                .unwrap_or(0);
+            low < low_in_e.min(0)
+        })
 }
 
 /// Whether `e` holds no variable but parameters: a constant on the phase space, or in a ring

@@ -4458,6 +4458,18 @@ fn search_writes_the_amplitudes_of_its_integrals_in_the_files_functions() {
         !rotor.lines().any(|l| l.trim_start().starts_with("= ")),
         "{rotor}"
     );
+    // Under gravity, `p_x + iMωx` is `ω(ω L − ω L′ − 2i G1 + 2i G1′)/g` in the file's
+    // functions (`G1′ − G1` is a multiple of `g`): proved, but it divides by `g` where the
+    // amplitude does not, and is not shown.
+    let gravity = superint_ok_line(
+        "search systems/gravity-rotor.toml --when 'p_theta = I*omega' --momenta-degree 1 \
+         --positions-degree 1 --trig-degree 1 --new-only --no-timings",
+    );
+    assert!(
+        gravity.contains("\n    A5 (k = 1) = p_x + iMωx\n    A6 (k = 1) = i p_x − Mωx\n"),
+        "{gravity}"
+    );
+    assert!(!gravity.contains("/g"), "{gravity}");
 }
 
 /// The Fock–Darwin system's algebras: at `a = 2b`, for every `M, b`, `H`, `L`, `P_{1,2}`,
