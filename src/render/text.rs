@@ -56,7 +56,7 @@ fn entry(out: &mut Vec<String>, e: &Entry) {
             out.push("─".repeat(width(&h)));
             out.insert(out.len() - 1, h);
         }
-        Entry::Text(t) => out.extend(wrap(&plain(t), WRAP, "")),
+        Entry::Text(t) => out.extend(prose(t)),
         Entry::Equations(eq) => equations(out, eq),
         Entry::Claim(c) => claim(out, c),
         Entry::Table(t) => table(out, t),
@@ -65,6 +65,35 @@ fn entry(out: &mut Vec<String>, e: &Entry) {
         Entry::Rank(r) => rank(out, r),
         Entry::Data(_) => {}
     }
+}
+
+/// Prose with formulas between backticks, wrapped at its spaces but those inside a formula's
+/// parentheses or braces: `Re(Z_y e^{−iθ})` and `{L_x, A_xy}` stay on one line.
+fn prose(markup: &str) -> Vec<String> {
+    // Such a space is a no-break space while the text is wrapped.
+    const KEPT: char = '\u{a0}';
+    let (mut in_formula, mut depth) = (false, 0usize);
+    let kept: String = markup
+        .chars()
+        .filter_map(|c| {
+            match c {
+                '`' => {
+                    in_formula = !in_formula;
+                    depth = 0;
+                    return None;
+                }
+                '(' | '{' | '[' if in_formula => depth += 1,
+                ')' | '}' | ']' if in_formula => depth = depth.saturating_sub(1),
+                ' ' if in_formula && depth > 0 => return Some(KEPT),
+                _ => {}
+            }
+            Some(c)
+        })
+        .collect();
+    wrap(&kept, WRAP, "")
+        .into_iter()
+        .map(|line| line.replace(KEPT, " "))
+        .collect()
 }
 
 /// Greedy word wrap at spaces, keeping the leading indentation; continuation lines start
@@ -662,6 +691,36 @@ mod tests {
                 .join(" "),
             "x = a b c d e f + g"
         );
+    }
+
+    /// Prose breaks at its spaces, but not inside a formula's parentheses or braces (at
+    /// whatever column the formula starts), and its backticks are dropped; spaces inside
+    /// prose parentheses still break.
+    #[test]
+    fn prose_keeps_a_formulas_parentheses_on_one_line() {
+        let balanced = |l: &str| {
+            l.matches('(').count() == l.matches(')').count()
+                && l.matches('{').count() == l.matches('}').count()
+        };
+        let words = |s: &str| {
+            s.replace('`', "")
+                .split_whitespace()
+                .collect::<Vec<_>>()
+                .join(" ")
+        };
+        for n in 0..60 {
+            let known = format!(
+                "{}known: `H, A_xy, P_{{1,1}}, Re(Z_y e^{{−iθ}}), {{L_x, A_xy}}, (a + b)(c + d)`.",
+                "a ".repeat(n)
+            );
+            let lines = prose(&known);
+            assert!(lines.iter().all(|l| width(l) <= WRAP), "{lines:?}");
+            assert!(lines.iter().all(|l| balanced(l)), "{lines:?}");
+            assert_eq!(words(&lines.join(" ")), words(&known));
+        }
+        // Prose parentheses are no formula: a long one breaks inside.
+        let aside = format!("({})", "word ".repeat(30).trim_end());
+        assert!(prose(&aside).len() > 1);
     }
 
     /// A term wider than a line stays with its sign: `+ 1000…0x` was a `+` on a line of its
