@@ -568,13 +568,9 @@ pub fn file_search_report(
     options: &SearchOptions,
     caller: Caller,
 ) -> Result<(Report, SearchResult), EngineError> {
-    let condition = options.condition.as_ref();
-    let integrals =
-        |integrals: &[Expr]| file.integrals_in_functions_and_instances(integrals, condition);
-    let amplitudes = |amplitudes: &[Expr]| file.amplitudes_in_functions(amplitudes, condition);
     let restate = Restate {
-        integrals: &integrals,
-        amplitudes: &amplitudes,
+        file,
+        condition: options.condition.as_ref(),
     };
     search_report_with(
         &file.the_name(),
@@ -585,17 +581,26 @@ pub fn file_search_report(
     )
 }
 
-/// A restatement of expressions below them: each as a polynomial in named functions, where
-/// it is one.
-type Restated<'a> = dyn Fn(&[Expr]) -> Vec<Option<Expr>> + 'a;
-
 /// How a search's shown integrals, and the amplitudes of their complex forms, are restated
-/// below them.
+/// below them: each as a polynomial in the file's named functions, at the search's
+/// condition, where it is one.
 struct Restate<'a> {
+    file: &'a LoadedSystem,
+    condition: Option<&'a brackets::Condition>,
+}
+
+impl Restate<'_> {
     /// The shown integrals, in functions and family instances.
-    integrals: &'a Restated<'a>,
+    fn integrals(&self, integrals: &[Expr]) -> Vec<Option<Expr>> {
+        self.file
+            .integrals_in_functions_and_instances(integrals, self.condition)
+    }
+
     /// The amplitudes `A` of the shown integrals `Re(A e^{−ikθ})`, in functions.
-    amplitudes: &'a Restated<'a>,
+    fn amplitudes(&self, amplitudes: &[Expr]) -> Vec<Option<Expr>> {
+        self.file
+            .amplitudes_in_functions(amplitudes, self.condition)
+    }
 }
 
 /// [`search_report_for`], with the shown integrals (and their amplitudes) restated by
@@ -833,9 +838,9 @@ impl Shared {
         let written = written_forms(r, &self.shown)?;
         // Each in the file's functions and family instances too, where it is a polynomial
         // in them.
-        let restated = restate.map(|f| (f.integrals)(&written)).unwrap_or_default();
+        let restated = restate.map(|f| f.integrals(&written)).unwrap_or_default();
         entries.push(self.shown_equations(r, &written, &restated));
-        entries.extend(self.complex_forms(r, restate.map(|f| f.amplitudes)));
+        entries.extend(self.complex_forms(r, restate));
         entries.extend(self.integral_claims(r, &written));
         entries.extend(self.rest_proved(r));
         Ok(Section {
@@ -938,7 +943,7 @@ impl Shared {
     /// The shown integrals of trigonometric order `k > 0` as `I = Re(A e^{−ikθ})`, when the
     /// system has one angle and some has such a form, each amplitude `A` restated by
     /// `restate` below it where one is given and it has a form (`= Z_y`).
-    fn complex_forms(&self, r: &SearchResult, restate: Option<&Restated<'_>>) -> Option<Entry> {
+    fn complex_forms(&self, r: &SearchResult, restate: Option<&Restate<'_>>) -> Option<Entry> {
         let k = order_letter(&r.vars);
         let mut lines: Vec<Equation> = self
             .shown
@@ -954,7 +959,7 @@ impl Shared {
         };
         if let Some(restate) = restate {
             let amplitudes: Vec<Expr> = lines.iter().map(|l| l.rhs.clone()).collect();
-            for (line, written) in lines.iter_mut().zip(restate(&amplitudes)) {
+            for (line, written) in lines.iter_mut().zip(restate.amplitudes(&amplitudes)) {
                 line.in_functions = written;
             }
         }

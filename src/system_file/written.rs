@@ -478,16 +478,18 @@ impl LoadedSystem {
         // The searches in turn: with the instances (if any), then the functions alone where
         // the instances lowered the degree (more functions, or longer ones).
         let mut searches: Vec<(Vec<NamedFunction>, u32)> = Vec::new();
+        let mut with = None;
         if !instances.is_empty() {
             let mut generators = functions.clone();
             generators.extend(instances);
-            let with = degree(&generators, LOWEST_WITH_INSTANCES);
+            with = degree(&generators, LOWEST_WITH_INSTANCES);
             searches.extend(with.map(|d| (generators, d)));
-            if with == alone {
-                return self.written_first(e, condition, reach, &searches);
-            }
         }
-        searches.extend(alone.map(|d| (functions, d)));
+        // (Without instances `with` is none, and the functions alone are searched where
+        // they can be.)
+        if with != alone {
+            searches.extend(alone.map(|d| (functions, d)));
+        }
         self.written_first(e, condition, reach, &searches)
     }
 
