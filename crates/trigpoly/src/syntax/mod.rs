@@ -252,7 +252,16 @@ mod tests {
         ("{f, g", (1, 6), "expected '}' to close '{' opened at column 1, found end of input"),
         ("e^{x", (1, 5), "expected '}' to close '{' opened at column 3, found end of input"),
         ("e^{x, y}", (1, 5), "expected '}' to close '{' opened at column 3, found ','"),
-        ("x^{2}", (1, 5), "expected ',' between the two arguments of a bracket {f, g}, found '}'"),
+        // An exponent in braces, as LaTeX writes it, with the parentheses to write.
+        ("x^{2}", (1, 3), "an exponent is written in parentheses, ^(2), not in braces: a brace \
+                           opens a Poisson bracket {f, g} (only e^{…} is the exponential)"),
+        ("y/x^{ 2/3 }", (1, 5), "an exponent is written in parentheses, ^(2/3), not in braces: \
+                                 a brace opens a Poisson bracket {f, g} (only e^{…} is the \
+                                 exponential)"),
+        ("x**{-1}", (1, 4), "an exponent is written in parentheses, ^(-1), not in braces: a \
+                             brace opens a Poisson bracket {f, g} (only e^{…} is the \
+                             exponential)"),
+        ("x^{2)", (1, 5), "expected ',' between the two arguments of a bracket {f, g}, found ')'"),
         (")", (1, 1), "unexpected ')'"),
         ("x)", (1, 2), "unexpected ')'"),
         ("a, b", (1, 2), "unexpected ','"),

@@ -560,11 +560,14 @@ impl Parser<'_> {
 
     /// Parses a bracket `{f, g}`.
     fn bracket(&mut self) -> PResult<Expr> {
+        let exponent = self
+            .prev
+            .is_some_and(|s| matches!(&self.src[s.start..s.end], "^" | "**"));
         let open = self.bump()?.span;
         let args = self.nested(open, |p| {
             let f = p.expr(0)?;
             let height = p.height;
-            p.bracket_comma()?;
+            p.bracket_comma(exponent.then_some(open))?;
             let g = p.expr(0)?;
             p.height = grow(height.max(p.height), open)?;
             Ok([f, g])
@@ -572,13 +575,25 @@ impl Parser<'_> {
         self.close_bracket(open, args)
     }
 
-    /// Consumes the `,` between the two arguments of a bracket.
-    fn bracket_comma(&mut self) -> PResult<()> {
-        if self.tok.tok != Tok::Comma {
-            let msg = "expected ',' between the two arguments of a bracket {f, g}";
-            return Err(self.error(format!("{msg}, found {}", self.found())));
+    /// Consumes the `,` between the two arguments of a bracket; `exponent` is the bracket's
+    /// `{` where it follows a `^`, so that an exponent written in braces as LaTeX writes it
+    /// (`x^{-2}`, `x^{1/3}`) is answered with the parentheses to write, not as a bracket.
+    fn bracket_comma(&mut self, exponent: Option<Span>) -> PResult<()> {
+        if self.tok.tok == Tok::Comma {
+            return self.bump().map(drop);
         }
-        self.bump().map(drop)
+        if let (Some(open), Tok::RBrace) = (exponent, &self.tok.tok) {
+            let inner = self.src[open.end..self.tok.span.start].trim();
+            return Err(ParseError::new(
+                open.to(self.tok.span),
+                format!(
+                    "an exponent is written in parentheses, ^({inner}), not in braces: a brace \
+                     opens a Poisson bracket {{f, g}} (only e^{{…}} is the exponential)"
+                ),
+            ));
+        }
+        let msg = "expected ',' between the two arguments of a bracket {f, g}";
+        Err(self.error(format!("{msg}, found {}", self.found())))
     }
 
     /// Consumes the `}` closing the bracket opened at `open` and builds the bracket.
