@@ -149,14 +149,26 @@ pub fn parse_condition(
     brackets::Condition::all(&shown.join(", "), subs).map_err(|e| e.to_string())
 }
 
-/// The parameter called `name`.
+/// The parameter called `name`; another name is refused with the parameters there are, and
+/// the one it was probably meant to be (`alfa` for `alpha`).
 fn parameter(system: &System, name: &str) -> Result<Var, String> {
     let vars = system.vars();
     vars.lookup(name)
         .filter(|v| vars.variable(*v).kind() == trigpoly::VarKind::Parameter)
         .ok_or_else(|| {
+            let parameters: Vec<&str> = vars
+                .vars()
+                .filter(|&v| vars.variable(v).kind() == trigpoly::VarKind::Parameter)
+                .map(|v| vars.variable(v).name())
+                .collect();
+            let meant = trigpoly::did_you_mean(name, &parameters)
+                .map_or_else(String::new, |k| format!("; did you mean '{k}'?"));
+            let known = match parameters.as_slice() {
+                [] => "it has none".to_string(),
+                names => format!("its parameters: {}", names.join(", ")),
+            };
             format!(
-                "{} is not a parameter of the system",
+                "{} is not a parameter of the system{meant} ({known})",
                 trigpoly::quoted_name(name)
             )
         })

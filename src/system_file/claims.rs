@@ -687,8 +687,21 @@ impl AssignmentReader<'_> {
             Err(lhs.error(self.source, ErrorKind::Condition, lhs_tree.span, message))
         };
         let Some(var) = var else {
+            // A name one slip from a variable it may set is answered with it, as an unknown
+            // name in an expression is (`alfa` for `alpha`).
+            let vars = self.file.system.vars();
+            let settable: Vec<&str> = vars
+                .vars()
+                .filter(|&v| admit(v).is_none())
+                .map(|v| vars.variable(v).name())
+                .collect();
+            let meant = match &lhs_tree.kind {
+                ExprKind::Name(n) => trigpoly::did_you_mean(n, &settable)
+                    .map_or_else(String::new, |k| format!("; did you mean '{k}'?")),
+                _ => String::new(),
+            };
             return refuse(format!(
-                "the left side of {} is one declared variable ({}), found {}",
+                "the left side of {} is one declared variable ({}), found {}{meant}",
                 self.form.what,
                 self.form.kinds,
                 trigpoly::quoted_name(lhs.value.trim())

@@ -1170,7 +1170,12 @@ fn bad_search_arguments_exit_2_with_a_message() {
     for (args, message) in [
         (
             "--symbolic A,x",
-            "--symbolic: 'x' is not a parameter of the system",
+            "--symbolic: 'x' is not a parameter of the system (its parameters: A, B, C)",
+        ),
+        (
+            "--fix c=2",
+            "--fix: 'c' is not a parameter of the system; did you mean 'C'? (its parameters: \
+             A, B, C)",
         ),
         (
             "--symbolic A --fix A=2",

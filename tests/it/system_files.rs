@@ -695,6 +695,13 @@ fn bad_inputs() -> Vec<(&'static str, Vec<u8>, &'static str, Vec<&'static str>)>
             check.clone(),
         ),
         (
+            "condition on a mistyped parameter",
+            base_with("claim = \"{A, H}", "when = \"omgea = 1\"\nclaim = \"{A, H}"),
+            "bad.toml:14:9: the left side of a condition is one declared variable (a coordinate, \
+             a momentum or a parameter), found 'omgea'; did you mean 'omega'?",
+            check.clone(),
+        ),
+        (
             "condition that sets a variable in terms of itself",
             base_with("claim = \"{A, H}", "when = \"M = 2*M\"\nclaim = \"{A, H}"),
             "bad.toml:14:13: the condition sets M in terms of itself",

@@ -53,7 +53,7 @@ pub mod syntax;
 mod varset;
 
 pub use error::{AlgebraError, AngleUse, Misuse, Setting};
-pub use lower::{quoted_name, split_names, FUNCTIONS};
+pub use lower::{did_you_mean, quoted_name, split_names, FUNCTIONS};
 pub use lower::{Context, NoContext};
 pub use number::{
     Coefficient, ExactDivisor, GaussianAcc, GaussianInteger, GaussianRational, Integer, IntegerAcc,

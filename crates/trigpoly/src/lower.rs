@@ -896,7 +896,7 @@ pub fn split_names(name: &str, known: &dyn Fn(&str) -> bool) -> Option<Vec<Strin
 /// slip away (a character changed, added or left out, or two neighbours swapped: `omegaa`,
 /// `Omgea` for `omega`, `Omega`), when exactly one is (`Ayx` beside `Axy` and
 /// `Ayy` could be either, and `G3` beside `G1` is a name of its own more likely than a slip).
-fn did_you_mean<'k>(name: &str, known: &'k [impl AsRef<str>]) -> Option<&'k str> {
+pub fn did_you_mean<'k>(name: &str, known: &'k [impl AsRef<str>]) -> Option<&'k str> {
     let key = |s: &str| s.replace('_', "").to_lowercase();
     let wanted = key(name);
     let known = || known.iter().map(AsRef::as_ref).filter(move |&k| k != name);
