@@ -238,6 +238,9 @@ fn toml_error(source: &Source, e: &toml::de::Error) -> FileError {
         ErrorKind::Toml
     };
     let span = e.span().unwrap_or(0..0);
+    if message == "duplicate key" {
+        return duplicate_key(source, span);
+    }
     let message = if message.starts_with("missing field") {
         format!("{message} (see docs/system-files.md for every field)")
     } else if let Some(wanted) = message.strip_prefix("invalid type: map, expected ") {
@@ -253,6 +256,71 @@ fn toml_error(source: &Source, e: &toml::de::Error) -> FileError {
         serde_words(&message)
     };
     let hint = unknown_key_hint(&message);
+    let error = source.error(kind, span, message);
+    match hint {
+        Some(hint) => error.with_hint(hint),
+        None => error,
+    }
+}
+
+/// TOML's `duplicate key` at `span`, in a system file's words: a `[function]`, `[family]` or
+/// `[claim]` header after the array's first item (`[[claim]]`) is the array written as a table,
+/// as [`check_arrays_of_tables`] says where it comes first; any other is the key or the
+/// table named twice.
+fn duplicate_key(source: &Source, span: Range<usize>) -> FileError {
+    let text = &source.text;
+    let key = text.get(span.clone()).unwrap_or("").trim();
+    let line_start = text[..span.start.min(text.len())]
+        .rfind('\n')
+        .map_or(0, |i| i + 1);
+    let before = text[line_start..span.start.min(text.len())].trim();
+    // The array written as a table is the schema's error, as where it comes first.
+    let array = before == "[" && ["function", "family", "claim"].contains(&key);
+    let (message, hint) = match before {
+        _ if array => (
+            format!(
+                "[[{key}]] is an array of tables, each written with two pairs of brackets, not \
+                 a table"
+            ),
+            Some(format!(
+                "write [[{key}]] on a line of its own before each one's keys"
+            )),
+        ),
+        "[" | "[[" => (
+            format!("[{key}] is given twice: one header holds all of its keys"),
+            None,
+        ),
+        _ => {
+            // The header of the table the key is in: an item of an array holds one of each
+            // key, and the next item starts with the header again.
+            let header = text[..line_start]
+                .lines()
+                .rev()
+                .map(str::trim)
+                .find(|l| l.starts_with('['));
+            let item = header
+                .and_then(|h| h.strip_prefix("[["))
+                .and_then(|h| h.split("]]").next())
+                .map(str::trim);
+            let place = match header {
+                Some(_) => " in one table",
+                None => "",
+            };
+            (
+                format!("`{key}` is given twice{place}"),
+                item.map(|item| {
+                    format!(
+                        "each [[{item}]] holds one of each key: start the next one with \
+                         [[{item}]] on a line of its own"
+                    )
+                }),
+            )
+        }
+    };
+    let kind = match array {
+        true => ErrorKind::Schema,
+        false => ErrorKind::Toml,
+    };
     let error = source.error(kind, span, message);
     match hint {
         Some(hint) => error.with_hint(hint),

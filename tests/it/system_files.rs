@@ -695,6 +695,25 @@ fn bad_inputs() -> Vec<(&'static str, Vec<u8>, &'static str, Vec<&'static str>)>
             check.clone(),
         ),
         (
+            "an array of tables written as a table after its first item",
+            base_with("[[claim]]", "[function]\nname = \"B\"\nvalue = \"x\"\n\n[[claim]]"),
+            "bad.toml:12:2: [[function]] is an array of tables, each written with two pairs of \
+             brackets, not a table",
+            check.clone(),
+        ),
+        (
+            "a key given twice in a claim",
+            base_with("claim = \"{A, H}", "claim = \"{A, A} = 0\"\nclaim = \"{A, H}"),
+            "bad.toml:15:1: `claim` is given twice in one table",
+            check.clone(),
+        ),
+        (
+            "a key given twice at the top",
+            base_with("hamiltonian", "name = \"twice\"\nhamiltonian"),
+            "bad.toml:2:1: `name` is given twice",
+            check.clone(),
+        ),
+        (
             "condition on a mistyped parameter",
             base_with("claim = \"{A, H}", "when = \"omgea = 1\"\nclaim = \"{A, H}"),
             "bad.toml:14:9: the left side of a condition is one declared variable (a coordinate, \
