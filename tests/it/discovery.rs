@@ -521,6 +521,20 @@ const COMMANDS: &[(&str, &str)] = &[
          --define 'U_yz=im(Zy*Zz*exp(-i*theta))' --define 'T_zx=re(Zz*Zx*exp(-i*theta))' \
          --define 'U_zx=im(Zz*Zx*exp(-i*theta))' --when 'p_theta = 2*I*omega' --degree 1",
     ),
+    (
+        "pw-search",
+        "superint search systems/post-winternitz.toml --momenta-degree 4 --positions-degree 10 \
+         --laurent --symbolic alpha --new-only",
+    ),
+    (
+        "pw-search-6",
+        "superint search systems/post-winternitz.toml --momenta-degree 6 --positions-degree 14 \
+         --laurent --symbolic alpha --parameters-degree 3 --new-only",
+    ),
+    (
+        "pw-closure",
+        "superint closure systems/post-winternitz.toml H A B F --degree 6",
+    ),
 ];
 
 /// A system file of `systems/`, loaded.
@@ -5466,5 +5480,99 @@ fn closure_and_search_print_names_as_the_file_shows_them() {
     assert!(
         text.contains("Known integrals in the space: H, L, G1, G2, P_{1,1}, Q_{1,1}, L²."),
         "{text}"
+    );
+}
+
+/// The Post–Winternitz system `H = p_x² + p_y² + αy/x^{2/3}`, written in `x = s³`, loaded and
+/// checked: every claim of the file holds for every `α` (the change of coordinates, the third-
+/// and fourth-order integrals `A`, `B` conserved, `{A, B} = 27α³/2`, the energy of the
+/// `x`-motion no integral, the sixth-order `F = (D² − B³)/α³` a polynomial conserved, its
+/// brackets and relation, the ranks), and each of its six false neighbours is refuted: `A`
+/// with `3α` for `9α/2`, `B` with a sign turned, `{A, B}` with its sign turned, `D² + B³`, the
+/// angular momentum conserved, and rank 4.
+#[test]
+fn post_winternitz_claims_are_proved_and_its_false_neighbours_refuted() {
+    let file = system_file("post-winternitz.toml");
+    assert_claims_as_expected(
+        &file,
+        &[
+            "canonical",
+            "hamiltonian",
+            "third-order",
+            "fourth-order",
+            "nonseparable",
+            "algebra",
+            "sixth-order",
+            "free-limit",
+            "relation",
+            "rank",
+        ],
+        &[
+            "false-coefficient",
+            "false-sign",
+            "false-algebra",
+            "false-relation",
+            "false-quadratic",
+            "false-rank",
+        ],
+    );
+}
+
+/// The Post–Winternitz system: up to fourth order in the momenta, for every `α`, the file's
+/// `H`, `A`, `B` generate every integral, and there is none of second order but `H` (it
+/// separates in no coordinates); from `H` alone the search finds `6A` and `18H² − 18B`. At
+/// sixth order it finds, from `H` alone, a sixth-order integral beyond products of those,
+/// `144F`, which the file's `F = (D² − B³)/α³` names: the polynomial `D² − B³` in `H`, `A`,
+/// `B`, of degree 12 in the momenta, divided by `α³`. With `F` the four close, `{A, B}` a
+/// constant, tied by that relation.
+#[test]
+fn post_winternitz_third_and_fourth_order_integrals_and_a_sixth_order_one_beyond_their_products() {
+    expect(
+        "pw-search",
+        &[
+            "9945 unknowns",
+            "By degree in the momenta: ≤ 0: 3, ≤ 1: 3, ≤ 2: 5, ≤ 3: 7, ≤ 4: 9.",
+            "Known integrals in the space: H, A, B.",
+            "None: the known integrals generate every integral in the space.",
+        ],
+    );
+    let i6 = "12 p_y³ + 2 p_s² p_y/s⁴ + 9α p_s/s + 18αy p_y/s²";
+    let i8 = "18 p_y⁴ + 4 p_s² p_y²/s⁴ + 36α p_s p_y/s + 36αy p_y²/s² + 81α²s²";
+    let text = expect_alone(
+        "pw-search",
+        &[
+            "Known integrals in the space: H.",
+            &format!("I6 = {i6}"),
+            &format!("I8 = {i8}"),
+            "3 claims: 3 proved, 0 refuted",
+        ],
+    );
+    assert_eq!(text.matches(" = 0 [I").count(), 2, "{text}");
+    let file = system_file("post-winternitz.toml");
+    let parse = |t: &str| file.parse_argument(t).unwrap();
+    assert_eq!(parse(i6), parse("6*A"));
+    assert_eq!(parse(i8), parse("18*H^2 - 18*B"));
+    expect(
+        "pw-search-6",
+        &[
+            "≤ 4: 14, ≤ 5: 16, ≤ 6: 21.",
+            "Known integrals in the space: H, A, B, D, F.",
+            "None: the known integrals generate every integral in the space.",
+        ],
+    );
+    let text = expect_alone("pw-search-6", &["I21 = −144 p_s³ p_y³/s³ − 24 p_s⁵ p_y/s⁷"]);
+    assert_eq!(text.matches(" = 0 [I").count(), 3, "{text}");
+    let i21 = &text[text.find("I21 = ").expect("I21") + "I21 = ".len()..];
+    let i21 = &i21[..i21.find(" {I").expect("its claims after it")];
+    assert_eq!(parse(i21), parse("144*F"));
+    expect(
+        "pw-closure",
+        &[
+            "The table closes",
+            "{A, B} = 27α³/2 [B1 proved]",
+            "{A, F} = −324 H⁴ + 243 H² B + 81 H A² − 81 B²/2 [B2 proved]",
+            "{B, F} = 54(4 H³ − 3 H B − A²) A [B3 proved]",
+            "α³ F + 24 H⁴ B + 8 H³ A² + B³ = 16 H⁶ + 9 H² B² + 6 H A² B + A⁴ [R1 proved]",
+        ],
     );
 }
