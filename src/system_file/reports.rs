@@ -670,7 +670,12 @@ fn not_a_function(file: &LoadedSystem, name: &str, defined: &[String]) -> FileEr
         Some(VarKind::Parameter) => {
             format!("{quoted} is a parameter, not a function of {of}: every bracket with it is 0")
         }
-        _ => format!("{quoted} is not a function of {of}"),
+        _ => {
+            // A name one slip from a known one is answered with it, as in an expression.
+            let meant = trigpoly::did_you_mean(name, &known)
+                .map_or_else(String::new, |k| format!("; did you mean '{k}'?"));
+            format!("{quoted} is not a function of {of}{meant}")
+        }
     };
     FileError::new(
         ErrorKind::Expression,

@@ -1461,6 +1461,11 @@ fn cli_table_takes_phase_variables() {
             "z",
             "'z' is not a function of FILE (known: H, L, x, y, p_x, p_y, p_theta)",
         ),
+        (
+            "px",
+            "'px' is not a function of FILE; did you mean 'p_x'? (known: H, L, x, y, p_x, p_y, \
+             p_theta)",
+        ),
     ] {
         let o = superint(&["table", free, "L", name]);
         assert_eq!(o.status.code(), Some(2), "{name}");
