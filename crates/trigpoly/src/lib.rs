@@ -54,7 +54,7 @@ mod varset;
 
 pub use error::{AlgebraError, AngleUse, Misuse, Setting};
 pub use lower::{did_you_mean, quoted_name, split_names, FUNCTIONS};
-pub use lower::{Context, NoContext};
+pub use lower::{Context, Doubt, NoContext, RunTogether};
 pub use number::{
     Coefficient, ExactDivisor, GaussianAcc, GaussianInteger, GaussianRational, Integer, IntegerAcc,
     IntegerRing, IntegerView, ParseGaussianError, ParseRationalError, Rational,

@@ -19,6 +19,164 @@ pub trait Context<C: Coefficient> {
     fn names(&self) -> Vec<String> {
         Vec::new()
     }
+    /// Told of a name that is not declared and was read as the product of the declared names
+    /// it splits into, where that reading may not be what was meant ([`RunTogether`]); the
+    /// lowering goes on with the product. Ignored unless a context keeps it (as
+    /// [`Poly::parse_noting`] does); a name may be told more than once.
+    fn run_together(&self, _: RunTogether) {}
+}
+
+/// A name that is not declared, read as the product of the declared names it splits into
+/// ([`split_names`]), where the reading may not be what was meant: a physicist writes `Mω` for
+/// `M·ω`, but `Lxx` beside a function `Lx`, `Axx` beside `A_xx` or `omegaa` beside `omega`
+/// and `a` are more likely names of their own, or slips ([`Doubt`] says which rule saw it).
+///
+/// ```
+/// use trigpoly::{Doubt, NoContext, Poly, Rational, VarSet};
+/// let vars = VarSet::builder().coordinate("x").parameter("omega").parameter("a").build()?;
+/// let read = |s: &str| Poly::<Rational>::parse_noting(&vars, s, &NoContext);
+/// let (p, noted) = read("x + omegaa")?;
+/// assert_eq!(p, Poly::parse(&vars, "x + omega*a")?);
+/// assert_eq!((noted[0].name.as_str(), noted[0].span.start), ("omegaa", 4));
+/// assert_eq!(noted[0].pieces, ["omega", "a"]);
+/// assert_eq!(noted[0].doubt, Doubt::Doubled('a'));
+/// assert_eq!(
+///     noted[0].to_string(),
+///     "'omegaa' is read as the product omega a, with its a doubled: declare 'omegaa' if it is \
+///      a name of its own, or write 'omega a' for the product"
+/// );
+/// // The physics products are read without a word.
+/// assert!(read("omega^2*ax + omegax")?.1.is_empty());
+/// # Ok::<(), Box<dyn std::error::Error>>(())
+/// ```
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct RunTogether {
+    /// The name as written (`Lxx`).
+    pub name: String,
+    /// Where it is written.
+    pub span: Span,
+    /// The declared names it is read as the product of, in order (`Lx`, `x`).
+    pub pieces: Vec<String>,
+    /// Why the reading is in doubt.
+    pub doubt: Doubt,
+}
+
+/// Why a name run together may not be the product it is read as ([`RunTogether`]). The rules
+/// are tried in this order; a split that meets none (`Mω`, `iθ`, `Mωx`, `xp_y`, `iOmega`) is
+/// read without a word.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub enum Doubt {
+    /// A piece before the last is a named function (not a variable) of two characters or
+    /// more, whose name the letters after it may continue: `Lxx` as `Lx·x` beside the
+    /// function `Lx`, `Axy` as `Ax·y` beside `Ax`. A function last (`ωLz`, `iOmega`) is a
+    /// coefficient times it.
+    Continued(String),
+    /// The name is one that an unknown name's "did you mean" would take for a declared name
+    /// (the same letters but for case and underscores, or for a name of three characters or
+    /// more one slip from exactly one such name) that is not one of its pieces: `Axx` beside
+    /// `A_xx` (read `A·x·x`), `Ayx` beside `Axy`. A name that is one of the pieces (`omegax`,
+    /// one letter more than `omega`) is a product as written.
+    CloseTo(String),
+    /// A letter is doubled across two pieces, the first of two characters or more: `omegaa`
+    /// as `omega·a`, `p_xx` as `p_x·x`, which may be a key struck twice (`xx`, `ωω`, of
+    /// one-letter names, are products).
+    Doubled(char),
+}
+
+impl RunTogether {
+    /// Whether the reading of `name` as the product of `pieces` is in doubt, and why: `known`
+    /// are the declared names (variables and functions), `function` says which of them are
+    /// named functions.
+    pub fn doubt(
+        name: &str,
+        pieces: &[String],
+        known: &[String],
+        function: &dyn Fn(&str) -> bool,
+    ) -> Option<Doubt> {
+        let len = |s: &str| s.chars().count();
+        let before_last = &pieces[..pieces.len().saturating_sub(1)];
+        if let Some(f) = before_last.iter().find(|p| len(p) >= 2 && function(p)) {
+            return Some(Doubt::Continued(f.clone()));
+        }
+        if let Some(k) = did_you_mean(name, known).filter(|k| !pieces.iter().any(|p| p == k)) {
+            return Some(Doubt::CloseTo(k.to_string()));
+        }
+        pieces.windows(2).find_map(|pair| {
+            let last = pair[0].chars().next_back()?;
+            let first = pair[1].chars().next()?;
+            (len(&pair[0]) >= 2 && last == first && last.is_alphabetic())
+                .then_some(Doubt::Doubled(last))
+        })
+    }
+
+    /// What the reading is and why it is in doubt, in the words after the name (`'Lxx' is
+    /// read as …`), each piece written by `shown` (a system's display names: `L_x` for `Lx`)
+    /// and the product by `formula` (a report's markup puts it between back quotes): `is read
+    /// as the product L_x x, the function Lx with x after it: declare 'Lxx' if it is a name of
+    /// its own, or write 'Lx x' for the product`.
+    pub fn reading(
+        &self,
+        shown: &dyn Fn(&str) -> String,
+        formula: &dyn Fn(&str) -> String,
+    ) -> String {
+        let product: Vec<String> = self.pieces.iter().map(|p| shown(p)).collect();
+        let why = match &self.doubt {
+            Doubt::Continued(f) => {
+                let at = self.pieces.iter().position(|p| p == f).unwrap_or(0);
+                let after = self.pieces[at + 1..].join(" ");
+                format!(", the function {f} with {after} after it")
+            }
+            Doubt::CloseTo(k) => format!(", though it is close to the declared name {k}"),
+            Doubt::Doubled(c) => format!(", with its {c} doubled"),
+        };
+        // A long run (`'abab…', 4000 characters long`) is not written out again.
+        let spaced = match long_name(&self.name) {
+            None => format!("'{}'", self.pieces.join(" ")),
+            Some(_) => "it with spaces".to_string(),
+        };
+        format!(
+            "is read as the product {}{why}: declare {} if it is a name of its own, or write \
+             {spaced} for the product",
+            formula(&product.join(" ")),
+            quoted_name(&self.name),
+        )
+    }
+}
+
+impl std::fmt::Display for RunTogether {
+    /// `'Lxx' is read as the product Lx x, the function Lx with x after it: …`.
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        let reading = self.reading(&|p: &str| p.to_string(), &|p: &str| p.to_string());
+        write!(f, "{} {reading}", quoted_name(&self.name))
+    }
+}
+
+/// A context that keeps what [`Context::run_together`] is told, once a place, and passes the
+/// rest to the context it wraps.
+struct Noting<'a, C: Coefficient> {
+    ctx: &'a dyn Context<C>,
+    noted: std::cell::RefCell<Vec<RunTogether>>,
+}
+
+impl<C: Coefficient> Context<C> for Noting<'_, C> {
+    fn lookup(&self, name: &str) -> Option<Poly<C>> {
+        self.ctx.lookup(name)
+    }
+    fn bracket(&self, f: &Poly<C>, g: &Poly<C>) -> Result<Poly<C>, String> {
+        self.ctx.bracket(f, g)
+    }
+    fn names(&self) -> Vec<String> {
+        self.ctx.names()
+    }
+    fn run_together(&self, note: RunTogether) {
+        let mut noted = self.noted.borrow_mut();
+        if !noted
+            .iter()
+            .any(|n| n.span == note.span && n.name == note.name)
+        {
+            noted.push(note);
+        }
+    }
 }
 
 /// The context of a bare variable set: no named functions, no brackets.
@@ -59,6 +217,22 @@ impl<C: Coefficient> Poly<C> {
     /// Lowers an already parsed expression.
     pub fn from_expr(vars: &Vars, expr: &Expr, ctx: &dyn Context<C>) -> Result<Self, ParseError> {
         Lower { vars, ctx }.lower(expr)
+    }
+
+    /// Parses as [`Poly::parse_with`] does, and says which names run together it read as
+    /// products that may not have been meant ([`RunTogether`]), in the order it read them,
+    /// each place once.
+    pub fn parse_noting(
+        vars: &Vars,
+        src: &str,
+        ctx: &dyn Context<C>,
+    ) -> Result<(Self, Vec<RunTogether>), ParseError> {
+        let noting = Noting {
+            ctx,
+            noted: std::cell::RefCell::new(Vec::new()),
+        };
+        let p = Self::parse_with(vars, src, &noting)?;
+        Ok((p, noting.noted.into_inner()))
     }
 }
 
@@ -162,6 +336,7 @@ impl<C: Coefficient> Lower<'_, C> {
                 if let (ExprKind::Name(name), false) = (&a.kind, a.in_parentheses()) {
                     if self.vars.lookup(name).is_none() && self.ctx.lookup(name).is_none() {
                         if let Some(mut parts) = self.split_name(name) {
+                            self.note_split(name, a.span, &parts);
                             let last = parts.pop().expect("a split has two parts or more");
                             let exp = self.integer_exponent(b)?;
                             let mut acc = self
@@ -228,6 +403,7 @@ impl<C: Coefficient> Lower<'_, C> {
         }
         // The text form writes products of names side by side: `Mω` is `M·ω`.
         if let Some(parts) = self.split_name(name) {
+            self.note_split(name, span, &parts);
             let mut acc = Poly::one(self.vars);
             for part in parts {
                 acc = acc
@@ -279,6 +455,27 @@ impl<C: Coefficient> Lower<'_, C> {
             _ if FUNCTIONS.contains(&name) => true,
             "Re" | "Im" => !self.is_declared(name),
             _ => false,
+        }
+    }
+
+    /// Tells the context of `name`, at `span`, read as the product of `pieces`, if that
+    /// reading is in doubt ([`RunTogether::doubt`]).
+    fn note_split(&self, name: &str, span: Span, pieces: &[String]) {
+        let functions = self.ctx.names();
+        let mut known: Vec<String> = self
+            .vars
+            .vars()
+            .map(|v| self.vars.variable(v).name().to_string())
+            .collect();
+        known.extend(functions.iter().cloned());
+        let function = |p: &str| self.vars.lookup(p).is_none() && functions.iter().any(|f| f == p);
+        if let Some(doubt) = RunTogether::doubt(name, pieces, &known, &function) {
+            self.ctx.run_together(RunTogether {
+                name: name.to_string(),
+                span,
+                pieces: pieces.to_vec(),
+                doubt,
+            });
         }
     }
 

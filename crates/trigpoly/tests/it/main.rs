@@ -23,4 +23,5 @@ mod products;
 mod props;
 mod refusals;
 mod reject;
+mod run_together;
 mod subst_eval;
