@@ -136,6 +136,10 @@ pub enum Entry {
     Tower(TowerResult),
     /// A certified Jacobian rank.
     Rank(RankResult),
+    /// A text of the section's file read in a way that may not be what was meant (a name run
+    /// together read as a product in doubt, [`crate::system_file::Warning`]): a paragraph
+    /// `Warning: …` in the prose formats, and in the JSON's `warnings`.
+    Warning(crate::system_file::Warning),
     /// What a search or a closure looked through and found, as data for the JSON; the prose
     /// formats say the same in the entries around it, and show nothing for this one.
     Data(Facts),

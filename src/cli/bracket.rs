@@ -67,6 +67,7 @@ impl BracketArgs {
 pub fn run(job: &BracketJob) -> anyhow::Result<bool> {
     let file = load_system(&job.file, &job.limits)?;
     let report = bracket_report(&file, &job.f, &job.g, job.when.as_deref())?;
+    super::output::warnings(&file);
     emit(&render(&report, job.output.format, &job.output.options))?;
     Ok(true)
 }

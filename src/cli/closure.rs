@@ -243,6 +243,7 @@ pub fn run(job: &ClosureJob) -> anyhow::Result<bool> {
         false => anyhow::Error::new(e).context("computing the closure"),
     })?;
     let report = subject.tag(report);
+    subject.warnings();
     emit(&render(&report, job.output.format, &job.output.options))?;
     Ok(report.all_proved())
 }

@@ -63,6 +63,7 @@ impl ExpandArgs {
 pub fn run(job: &ExpandJob) -> anyhow::Result<bool> {
     let file = load_system(&job.file, &job.limits)?;
     let report = expand_report(&file, &job.expressions, job.when.as_deref())?;
+    super::output::warnings(&file);
     emit(&render(&report, job.output.format, &job.output.options))?;
     Ok(true)
 }

@@ -4,6 +4,7 @@ use std::io::{self, Write};
 
 use clap::{Args, ValueEnum};
 use superint::render::{printable, Format, Options, SHOWN_MONOMIALS};
+use superint::system_file::LoadedSystem;
 
 /// `--format` values.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, ValueEnum)]
@@ -86,6 +87,16 @@ fn write_to(mut out: impl Write, text: &str) -> anyhow::Result<()> {
     {
         Err(e) if e.kind() != io::ErrorKind::BrokenPipe => Err(e.into()),
         _ => Ok(()),
+    }
+}
+
+/// Prints on stderr, each as `superint: warning: FILE:LINE:COLUMN: …` with its line and a caret,
+/// what `file`'s texts and those given on the command line read in a way that may not have been
+/// meant ([`LoadedSystem::warnings`]: a name run together read as a product in doubt, `Lxx`
+/// beside a function `Lx`). `check` shows its files' in its report instead.
+pub fn warnings(file: &LoadedSystem) {
+    for w in file.warnings() {
+        eprintln!("superint: warning: {}", printable(&w.to_string()));
     }
 }
 

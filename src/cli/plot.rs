@@ -254,6 +254,7 @@ pub fn run(job: &PlotJob) -> anyhow::Result<bool> {
         section: args.section.as_deref(),
     };
     let input = file.plot_input(args.at.as_deref(), &args.from, functions)?;
+    super::output::warnings(&file);
     let flow = Flow::at(file.system().space(), &input.hamiltonian, &input.values)
         .context("Hamilton's equations at these values")?
         .with_method(args.method.method());

@@ -70,6 +70,7 @@ impl RankArgs {
 pub fn run(job: &RankJob) -> anyhow::Result<bool> {
     let file = load_system(&job.file, &job.limits)?;
     let report = rank_report_when(&file, &job.functions, job.expect, job.when.as_deref())?;
+    super::output::warnings(&file);
     emit(&render(&report, job.output.format, &job.output.options))?;
     Ok(report.all_as_expected())
 }

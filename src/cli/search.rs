@@ -310,6 +310,14 @@ impl Subject {
         )?)))
     }
 
+    /// Prints on stderr what the file's texts and the command line's read in doubt
+    /// ([`super::output::warnings`]), if it is a file.
+    pub fn warnings(&self) {
+        if let Subject::File(f) = self {
+            super::output::warnings(f);
+        }
+    }
+
     /// The report `report` about this subject: about its file, if it is one.
     pub fn tag(&self, report: Report) -> Report {
         match self {
@@ -483,6 +491,7 @@ fn search_and_print(job: &SearchJob) -> anyhow::Result<bool> {
     }
     .context("searching for integrals")?;
     let report = subject.tag(report);
+    subject.warnings();
     emit(&render(&report, job.output.format, &job.output.options))?;
     Ok(report.all_proved())
 }

@@ -62,6 +62,7 @@ impl TableArgs {
 pub fn run(job: &TableJob) -> anyhow::Result<bool> {
     let file = load_system(&job.file, &job.limits)?;
     let report = table_report(&file, &job.names)?;
+    super::output::warnings(&file);
     emit(&render(&report, job.output.format, &job.output.options))?;
     // Entries a limit stopped are `?` in the table, and the run ends with an error.
     let undecided: Vec<String> = report

@@ -144,13 +144,15 @@ pub fn run(job: &TowerJob) -> anyhow::Result<bool> {
         SystemArg::File(path) => {
             let file = load_system(path, &job.limits.unwrap_or_default())?;
             let when = job.when.as_deref().map(|w| file.condition(w)).transpose()?;
-            family_tower_report_with_progress(
+            let report = family_tower_report_with_progress(
                 &file,
                 job.family.as_deref(),
                 job.max,
                 when.as_ref(),
                 &mut progress,
-            )?
+            )?;
+            super::output::warnings(&file);
+            report
         }
     };
     bar.finish_and_clear();

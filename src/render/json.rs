@@ -95,7 +95,11 @@
 //!                   "shown": [ids], "new_only": { "known", "products", "generated" } | null } ],
 //!   "closures": [ { "section", "generators", "degree", "monomials", "rank", "parameters",
 //!                   "closes": bool, "outside": [[a, b]], "unlifted": int,
-//!                   "brackets": [ids], "relations": [ids] } ]
+//!                   "brackets": [ids], "relations": [ids] } ],
+//!   "warnings": [ { "section", "file", "line", "column", "message" } ]   (only where there
+//!                   are any: a name of the section's file run together and read as a
+//!                   product that may not have been meant, `Lxx` beside a function `Lx`;
+//!                   "message" says the reading and what to write instead)
 //! }
 //!
 //! where a search's or closure's "parameters" is `{ "fixed": [ { "parameter", "value" } ],
@@ -157,6 +161,7 @@ struct Lists {
     ranks: Vec<Value>,
     searches: Vec<Value>,
     closures: Vec<Value>,
+    warnings: Vec<Value>,
 }
 
 impl Lists {
@@ -172,6 +177,7 @@ impl Lists {
             ranks: Vec::new(),
             searches: Vec::new(),
             closures: Vec::new(),
+            warnings: Vec::new(),
         }
     }
 
@@ -213,6 +219,13 @@ impl Lists {
             }
             Entry::Data(Facts::Search(f)) => self.searches.push(search(f, section)),
             Entry::Data(Facts::Closure(f)) => self.closures.push(closure(f, section)),
+            Entry::Warning(w) => self.warnings.push(json!({
+                "section": section,
+                "file": w.origin,
+                "line": w.location.as_ref().map(|l| l.line),
+                "column": w.location.as_ref().map(|l| l.column),
+                "message": w.message,
+            })),
         }
     }
 
@@ -221,7 +234,7 @@ impl Lists {
     fn document(self, report: &Report) -> Value {
         let ids = report.claim_outcomes();
         let counted = |o: ClaimOutcome| ids.iter().filter(|(_, outcome)| *outcome == o).count();
-        json!({
+        let mut document = json!({
             "schema": SCHEMA,
             "title": plain(&report.title),
             "subtitle": plain(&report.subtitle),
@@ -249,7 +262,12 @@ impl Lists {
             "ranks": self.ranks,
             "searches": self.searches,
             "closures": self.closures,
-        })
+        });
+        // Only where there are any, so that a report without them is as it always was.
+        if !self.warnings.is_empty() {
+            document["warnings"] = Value::Array(self.warnings);
+        }
+        document
     }
 }
 

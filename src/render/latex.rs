@@ -345,6 +345,13 @@ fn entry(out: &mut Vec<String>, e: &Entry, names: &Names) {
             out.push(markup_with(t, names));
             out.push(String::new());
         }
+        Entry::Warning(w) => {
+            out.push(format!(
+                r"\textbf{{Warning:}} {}",
+                markup_with(&w.markup, names)
+            ));
+            out.push(String::new());
+        }
         Entry::Equations(eq) => equations(out, eq, names),
         Entry::Claim(c) => {
             let mut rows = claim_rows(c, names, 0);

@@ -112,6 +112,7 @@ fn entry(e: &Entry) -> String {
     match e {
         Entry::Heading(h) => format!("### {}", prose(h)),
         Entry::Text(t) => prose(t),
+        Entry::Warning(w) => format!("**Warning:** {}", prose(&w.markup)),
         Entry::Equations(eq) => equations(eq),
         Entry::Claim(c) => claim(c),
         Entry::Table(t) => table(t),

@@ -33,7 +33,9 @@ pub fn render(report: &Report, options: &Options) -> String {
         for e in s.shown_entries() {
             let joined = matches!(
                 (previous, e),
-                (Some(Entry::Claim(_)), Entry::Claim(_)) | (Some(Entry::Heading(_)), _)
+                (Some(Entry::Claim(_)), Entry::Claim(_))
+                    | (Some(Entry::Warning(_)), Entry::Warning(_))
+                    | (Some(Entry::Heading(_)), _)
             );
             if previous.is_some() && !joined {
                 out.push(String::new());
@@ -57,6 +59,7 @@ fn entry(out: &mut Vec<String>, e: &Entry) {
             out.insert(out.len() - 1, h);
         }
         Entry::Text(t) => out.extend(prose(t)),
+        Entry::Warning(w) => out.extend(prose(&format!("Warning: {}", w.markup))),
         Entry::Equations(eq) => equations(out, eq),
         Entry::Claim(c) => claim(out, c),
         Entry::Table(t) => table(out, t),

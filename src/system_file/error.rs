@@ -179,6 +179,49 @@ impl fmt::Display for FileError {
     }
 }
 
+/// A text of a system file (or one given to it) that superint read, but perhaps not as it was
+/// meant: a name that is not declared, read as the product of the declared names it splits
+/// into where the reading is in doubt ([`trigpoly::RunTogether`]): `Lxx` beside a function
+/// `Lx`. The reading stands (the claims are checked with the product); the warning says it,
+/// rendered as a [`FileError`] is, with its place, the line and a caret:
+///
+/// ```text
+/// mine.toml:12:10: 'Lxx' is read as the product L_x x, the function Lx with x after it: …
+///    12 | claim = "{Lxx, H} = 0"
+///       |          ^^^
+/// ```
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct Warning {
+    /// The file's path as given, or the name of the text (`<command line>`, `<expression>`).
+    pub origin: String,
+    /// Where the name is written.
+    pub location: Option<Box<Location>>,
+    /// What was read and why it is in doubt, in one line of plain text with the system's
+    /// printed names: `'Lxx' is read as the product L_x x, the function Lx with x after it: if
+    /// Lxx is a name of its own, declare it; if the product is meant, write Lx*x`.
+    pub message: String,
+    /// The same as a report's prose writes it (markup: the product between back quotes), its
+    /// place said in words: `'Lxx' (line 12, column 10) is read as the product `L_x x`, …`.
+    pub markup: String,
+}
+
+impl Warning {
+    /// 1-based line and column, if the warning has a place.
+    pub fn line_col(&self) -> Option<(usize, usize)> {
+        self.location.as_ref().map(|l| (l.line, l.column))
+    }
+}
+
+impl fmt::Display for Warning {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        let shown = FileError {
+            location: self.location.clone(),
+            ..FileError::new(ErrorKind::Expression, &self.origin, self.message.clone())
+        };
+        shown.fmt(f)
+    }
+}
+
 /// Line, column, source line and caret of a byte range; a long line is shown as a window
 /// around the caret ([`Excerpt`]).
 /// A byte-order mark at the start is no column of the first line.

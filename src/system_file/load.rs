@@ -1150,6 +1150,7 @@ impl<'a> Builder<'a> {
             limits,
             caller: super::Caller::Program,
             cache: Mutex::new(HashMap::new()),
+            warnings: Mutex::new(Vec::new()),
             radicands: declared_radicals(model.phase_space.get_ref())
                 .iter()
                 .map(|(name, radicand)| (name.get_ref().clone(), radicand.get_ref().clone()))

@@ -56,7 +56,7 @@ mod tower;
 mod written;
 
 pub use claims::{CheckedClaim, ClaimForm, ClaimSpec};
-pub use error::{ErrorKind, FileError, Location};
+pub use error::{ErrorKind, FileError, Location, Warning};
 pub use load::{load, load_bytes, load_str};
 pub use names::{reserved, unwritable_letter, BadName, PrintedNames, Refusal};
 pub use plot::{Against, PlotFunctions, PlotInput, StartValue};
@@ -174,6 +174,9 @@ pub struct LoadedSystem {
     /// Each radical's radicand as `[phase_space] radicals` writes it, by the radical's name
     /// (`s`, `1 + g2*(x^2 + y^2)`), which a report shows (the variables keep its normal form).
     radicands: Vec<(String, String)>,
+    /// The readings in doubt of the texts read so far ([`LoadedSystem::warnings`]), each place
+    /// once.
+    warnings: Mutex<Vec<Warning>>,
 }
 
 /// Who gives the texts that the reports of a [`LoadedSystem`] read (the expressions of
@@ -279,6 +282,7 @@ impl Clone for LoadedSystem {
             caller: self.caller,
             cache: Mutex::new(cache),
             radicands: self.radicands.clone(),
+            warnings: Mutex::new(self.warnings()),
         }
     }
 }
@@ -309,6 +313,7 @@ impl LoadedSystem {
             caller: Caller::Program,
             cache: Mutex::new(HashMap::new()),
             radicands: Vec::new(),
+            warnings: Mutex::new(Vec::new()),
         }
     }
 
@@ -436,6 +441,45 @@ impl LoadedSystem {
     pub fn family_instance(&self, family: usize, m: i64, n: i64) -> Result<Expr, FileError> {
         self.scope(self.families.len())
             .expand(family, m, n, &self.source, 0..0)
+    }
+
+    /// The texts read so far (the file's, as it loaded and as its claims are checked, and
+    /// those given to its reports) in a way that may not be what was meant, in the order
+    /// read, each place once: names run together read as products in doubt, `Lxx` beside a
+    /// function `Lx` ([`Warning`], [`trigpoly::RunTogether`]). A check's report shows the
+    /// file's own; the command line prints the others' on standard error.
+    ///
+    /// ```
+    /// use superint::system_file::{load, LimitsOverride};
+    ///
+    /// let rotor = load("systems/isotropic-rotor-3d.toml", &LimitsOverride::default())?;
+    /// rotor.parse_argument("M*omega*Lz + Lzx")?;
+    /// let warnings = rotor.warnings();
+    /// assert_eq!(warnings.len(), 1);
+    /// assert_eq!(warnings[0].line_col(), Some((1, 14)));
+    /// assert!(warnings[0].message.starts_with("'Lzx' is read as the product L_z x"));
+    /// # Ok::<(), superint::system_file::FileError>(())
+    /// ```
+    pub fn warnings(&self) -> Vec<Warning> {
+        self.warnings
+            .lock()
+            .unwrap_or_else(std::sync::PoisonError::into_inner)
+            .clone()
+    }
+
+    /// Keeps `warning` unless one at its place is kept already.
+    pub(crate) fn warn(&self, warning: Warning) {
+        let mut kept = self
+            .warnings
+            .lock()
+            .unwrap_or_else(std::sync::PoisonError::into_inner);
+        if !kept.iter().any(|w| {
+            w.origin == warning.origin
+                && w.line_col() == warning.line_col()
+                && w.message == warning.message
+        }) {
+            kept.push(warning);
+        }
     }
 
     /// What `name` already names in this system, for a message that refuses it as a new

@@ -183,6 +183,7 @@ impl LoadedSystem {
         mut undecided: Option<&mut Vec<FileError>>,
     ) -> Result<(Section, String), FileError> {
         let mut entries = self.preamble();
+        let preamble = entries.len();
         for claim in &self.claims {
             let start = Instant::now();
             entries.push(match (self.check_claim(claim), undecided.as_deref_mut()) {
@@ -199,6 +200,13 @@ impl LoadedSystem {
                 (Err(e), _) => return Err(e),
             });
         }
+        // What the file's texts read in doubt, from its loading and from its claims' checks,
+        // in the file's order, after its Hamiltonian and before its claims.
+        let mut warnings: Vec<_> = (self.warnings().into_iter())
+            .filter(|w| w.origin == self.source.origin)
+            .collect();
+        warnings.sort_by_key(|w| w.line_col());
+        entries.splice(preamble..preamble, warnings.into_iter().map(Entry::Warning));
         let section = Section {
             number: 0,
             title: self.section_title(),

@@ -13,7 +13,7 @@ use num_bigint::BigInt;
 use trigpoly::syntax::{parse_expr, Expr as Tree, ExprKind, ParseError};
 use trigpoly::{Context, Expr, GaussianRational, Span, VarKind};
 
-use super::error::{ErrorKind, FileError};
+use super::error::{ErrorKind, FileError, Warning};
 use super::load::MAX_DEGREE_CEILING;
 use super::text::{Source, Text};
 use super::LoadedSystem;
@@ -28,6 +28,9 @@ pub(crate) struct Scope<'a> {
     /// In a family's value or eigenvalue, that family, whose instances it cannot use.
     owner: Option<usize>,
     made: RefCell<HashMap<String, Expr>>,
+    /// The names run together that the lowering read as products in doubt, not yet kept as
+    /// the file's warnings ([`Scope::lower`] keeps them).
+    noted: RefCell<Vec<trigpoly::RunTogether>>,
 }
 
 /// `K_2_3` → (family `K`, 2, 3) among `families`.
@@ -477,6 +480,7 @@ impl<'a> Scope<'a> {
             indices: &[],
             owner: None,
             made: RefCell::new(HashMap::new()),
+            noted: RefCell::new(Vec::new()),
         }
     }
 
@@ -564,8 +568,39 @@ impl<'a> Scope<'a> {
         tree: &Tree,
     ) -> Result<Expr, FileError> {
         let prepared = self.prepare(source, text, tree)?;
-        Expr::from_expr(self.file.system.vars(), &prepared, self)
-            .map_err(|e| self.display_error(source, text, &e))
+        let value = Expr::from_expr(self.file.system.vars(), &prepared, self)
+            .map_err(|e| self.display_error(source, text, &e));
+        for noted in self.noted.take() {
+            self.file.warn(self.warning(source, text, &noted));
+        }
+        value
+    }
+
+    /// The warning for a name of `text` run together and read as a product in doubt: its
+    /// place, and the reading in the system's printed names (`L_x x`).
+    fn warning(&self, source: &Source, text: &Text, noted: &trigpoly::RunTogether) -> Warning {
+        let system = &self.file.system;
+        let shown = |piece: &str| match system.lookup(piece) {
+            Some(v) => system.vars().variable(v).unicode().to_string(),
+            None => system
+                .functions()
+                .iter()
+                .find(|f| f.name == piece && !f.display.is_empty())
+                .map_or_else(|| piece.to_string(), |f| f.display.clone()),
+        };
+        let location = super::error::locate(&source.text, text.source_span(noted.span));
+        let name = trigpoly::quoted_name(&noted.name);
+        let plain = noted.reading(&shown, &|p: &str| p.to_string());
+        let markup = noted.reading(&shown, &|p: &str| format!("`{p}`"));
+        Warning {
+            origin: source.origin.clone(),
+            markup: format!(
+                "{name} (line {}, column {}) {markup}",
+                location.line, location.column
+            ),
+            message: format!("{name} {plain}"),
+            location: Some(Box::new(location)),
+        }
     }
 
     /// Expands family instances, checks brackets.
@@ -772,6 +807,13 @@ impl Context<GaussianRational> for Scope<'_> {
 
     fn bracket(&self, f: &Expr, g: &Expr) -> Result<Expr, String> {
         self.file.system.bracket(f, g).map_err(|e| e.to_string())
+    }
+
+    fn run_together(&self, noted: trigpoly::RunTogether) {
+        let mut kept = self.noted.borrow_mut();
+        if !kept.contains(&noted) {
+            kept.push(noted);
+        }
     }
 
     fn names(&self) -> Vec<String> {

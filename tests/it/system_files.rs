@@ -85,10 +85,14 @@ fn systems_every_file_checks_as_expected() {
     let last = out.lines().last().expect("a summary line");
     assert!(last.ends_with("; all as expected"), "{last}");
     assert!(!out.contains("REFUTED") && !out.contains("PROVED"), "{out}");
+    // No name of theirs run together is read in doubt (their products, written with `*`, and
+    // those the echo reads back, `Mω²x`, `iMωx`, are read without a word).
+    assert!(!out.contains("Warning:"), "{out}");
     // Each file declares deliberately false claims, and they are refuted.
     for f in &files {
         let json = run(&["check", f, "--format", "json", "--no-timings"], 0);
         let v: Value = serde_json::from_str(&json).expect("JSON");
+        assert_eq!(v.get("warnings"), None, "{f}");
         let refuted = v["claims"]
             .as_array()
             .expect("claims")
@@ -96,6 +100,194 @@ fn systems_every_file_checks_as_expected() {
             .filter(|c| c["expect"] == "refuted" && c["outcome"] == "refuted")
             .count();
         assert!(refuted >= 1, "{f} has no deliberately false claim");
+    }
+}
+
+/// A system whose texts run names together: the function `Lz` with `x` after it (in a
+/// function's value, `Lzx^2`), `omegaa` (its `a` doubled) and `Axx` beside `A_xx`, each read
+/// as the product, and the physics products `aLz`, `xp_y`, `omegax`, read without a word.
+const RUN_TOGETHER: &str = r#"name = "run together"
+hamiltonian = "p_x^2/2 + p_y^2/2 + omega^2*(x^2 + y^2)/2"
+
+[phase_space]
+coordinates = ["x", "y"]
+parameters = ["omega", "a", "A"]
+
+[[function]]
+name = "Lz"
+display = "L_z"
+value = "x*p_y - y*p_x"
+
+[[function]]
+name = "A_xx"
+value = "p_x^2/2 + omega^2*x^2/2"
+
+[[function]]
+name = "B"
+value = "Lzx^2"
+
+[[claim]]
+id = "physics"
+claim = "aLz + xp_y*omegax = a*Lz + x*p_y*omega*x"
+
+[[claim]]
+id = "doubled"
+claim = "omegaa = a*omega"
+
+[[claim]]
+id = "close"
+claim = "{Axx, H} = 2*A*x*p_x"
+"#;
+
+/// The line and column of the first `name` after `after` in `text`, 1-based, in characters.
+fn line_column(text: &str, after: &str, name: &str) -> (usize, usize) {
+    let at = text.find(after).expect("the text")
+        + text[text.find(after).unwrap()..]
+            .find(name)
+            .expect("the name");
+    let line_start = text[..at].rfind('\n').map_or(0, |k| k + 1);
+    (
+        text[..at].matches('\n').count() + 1,
+        text[line_start..at].chars().count() + 1,
+    )
+}
+
+/// A name that is not declared and splits into declared names is read as their product, and
+/// where that reading is in doubt, check says so in its report, with the place in the file,
+/// in every format (a paragraph before the claims; the JSON's `warnings`): the claims are
+/// checked with the product (all proved), and the exit status is 0.
+#[test]
+fn names_run_together_in_doubt_are_warned_with_their_place() {
+    let dir = scratch("run-together-check");
+    std::fs::write(dir.join("rt.toml"), RUN_TOGETHER).expect("written");
+    let o = superint_in(&dir, &["check", "rt.toml", "--no-timings"]);
+    assert_eq!(o.status.code(), Some(0), "{}", text(&o.stderr));
+    assert_eq!(text(&o.stderr), "");
+    let out = text(&o.stdout);
+    let place = |after: &str, name: &str| {
+        let (line, column) = line_column(RUN_TOGETHER, after, name);
+        format!("(line {line}, column {column})")
+    };
+    let expected = [
+        format!(
+            "Warning: 'Lzx' {} is read as the product L_z x, the function Lz with x after it: \
+             declare 'Lzx' if it is a name of its own, or write 'Lz x' for the product",
+            place("value = \"Lzx", "Lzx")
+        ),
+        format!(
+            "Warning: 'omegaa' {} is read as the product ω a, with its a doubled: declare \
+             'omegaa' if it is a name of its own, or write 'omega a' for the product",
+            place("claim = \"omegaa", "omegaa")
+        ),
+        format!(
+            "Warning: 'Axx' {} is read as the product A x x, though it is close to the declared \
+             name A_xx: declare 'Axx' if it is a name of its own, or write 'A x x' for the \
+             product",
+            place("claim = \"{Axx", "Axx")
+        ),
+    ];
+    assert!(
+        crate::normalize(&out).contains(&expected.join(" ")),
+        "{out}"
+    );
+    assert!(
+        out.ends_with("3 claims in 1 file: 3 proved, 0 refuted; all as expected\n"),
+        "{out}"
+    );
+    // Before the claims, after the Hamiltonian.
+    assert!(out.find("Warning:") < out.find("[physics proved]"), "{out}");
+    // In JSON, each with its file, line and column.
+    let json = superint_in(
+        &dir,
+        &["check", "rt.toml", "--format", "json", "--no-timings"],
+    );
+    let v: Value = serde_json::from_str(&text(&json.stdout)).expect("JSON");
+    let warnings = v["warnings"].as_array().expect("warnings");
+    let places: Vec<(usize, usize)> = warnings
+        .iter()
+        .map(|w| {
+            assert_eq!(
+                (&w["file"], &w["section"]),
+                (&Value::from("rt.toml"), &Value::from(1))
+            );
+            (
+                w["line"].as_u64().unwrap() as usize,
+                w["column"].as_u64().unwrap() as usize,
+            )
+        })
+        .collect();
+    assert_eq!(
+        places,
+        [
+            line_column(RUN_TOGETHER, "value = \"Lzx", "Lzx"),
+            line_column(RUN_TOGETHER, "claim = \"omegaa", "omegaa"),
+            line_column(RUN_TOGETHER, "claim = \"{Axx", "Axx"),
+        ]
+    );
+    assert!(warnings[2]["message"].as_str().unwrap().starts_with(
+        "'Axx' is read as the product A x x, though it is close to the declared name A_xx"
+    ));
+    // Markdown and LaTeX carry them too, the product as a formula.
+    let md = superint_in(
+        &dir,
+        &["check", "rt.toml", "--format", "markdown", "--no-timings"],
+    );
+    assert!(
+        text(&md.stdout).contains("**Warning:** 'Lzx' ("),
+        "{}",
+        text(&md.stdout)
+    );
+    assert!(text(&md.stdout).contains("is read as the product `L_z x`"));
+    let tex = superint_in(
+        &dir,
+        &["check", "rt.toml", "--format", "latex", "--no-timings"],
+    );
+    assert!(
+        text(&tex.stdout).contains(r"\textbf{Warning:} 'Lzx' ("),
+        "{}",
+        text(&tex.stdout)
+    );
+    assert!(text(&tex.stdout).contains("is read as the product $L_{z} x$"));
+}
+
+/// The other commands say on standard error what their file's texts and the expressions given
+/// on the command line read in doubt, each with its place, line and caret, and go on with
+/// the product; the physics products of the command line are read without a word.
+#[test]
+fn other_commands_warn_of_names_run_together_on_standard_error() {
+    let dir = scratch("run-together-commands");
+    std::fs::write(dir.join("rt.toml"), RUN_TOGETHER).expect("written");
+    let o = superint_in(&dir, &["bracket", "rt.toml", "x + Lzy", "H"]);
+    assert_eq!(o.status.code(), Some(0), "{}", text(&o.stderr));
+    assert!(
+        text(&o.stdout).contains("{x + L_z y, H}"),
+        "{}",
+        text(&o.stdout)
+    );
+    let (line, column) = line_column(RUN_TOGETHER, "value = \"Lzx", "Lzx");
+    assert_eq!(
+        text(&o.stderr),
+        format!(
+            "superint: warning: rt.toml:{line}:{column}: 'Lzx' is read as the product L_z x, the \
+             function Lz with x after it: declare 'Lzx' if it is a name of its own, or write 'Lz \
+             x' for the product\n {line} | value = \"Lzx^2\"\n    |          ^^^\n\
+             superint: warning: <command line>:1:5: 'Lzy' is read as the product L_z y, the \
+             function Lz with y after it: declare 'Lzy' if it is a name of its own, or write 'Lz \
+             y' for the product\n 1 | x + Lzy\n   |     ^^^\n"
+        )
+    );
+    // Products a physicist writes, and the file's own: nothing said.
+    let plain = "name = \"plain\"\nhamiltonian = \"p_x^2/(2*M) + M*omega^2*x^2/2\"\n\
+                 [phase_space]\ncoordinates = [\"x\"]\nangles = [\"theta\"]\n\
+                 parameters = [\"M\", \"omega\", \"I\"]\n";
+    std::fs::write(dir.join("plain.toml"), plain).expect("written");
+    for (f, g) in [("Mω²x", "Iω p_theta"), ("iMωx + 2Mω", "exp(iθ)*p_x")] {
+        let o = superint_in(&dir, &["bracket", "plain.toml", f, g]);
+        assert_eq!(
+            (o.status.code(), text(&o.stderr)),
+            (Some(0), String::new()),
+            "{f}, {g}"
+        );
     }
 }
 
@@ -168,6 +360,46 @@ fn docs_error_examples_are_what_check_prints() {
         assert_eq!(o.status.code(), Some(2), "{tail}");
         assert_eq!(text(&o.stderr), shown, "{tail}");
     }
+}
+
+/// The warnings of `docs/system-files.md` for names run together are what `check` prints for
+/// the document's example file with a claim appended, and what `bracket` prints on standard
+/// error for an expression of the command line.
+#[test]
+fn docs_run_together_examples_are_what_superint_prints() {
+    let doc = std::fs::read_to_string(root().join("docs/system-files.md")).expect("the doc");
+    let start = doc.find("```toml\n").expect("a TOML example") + "```toml\n".len();
+    let example = &doc[start..start + doc[start..].find("```").expect("its end")];
+    let shown = |starting: &str| {
+        let blocks = doc.split("```text\n").skip(1);
+        let mut found = blocks
+            .map(|b| &b[..b.find("```").expect("the block's end")])
+            .filter(|b| b.starts_with(starting));
+        let block = found.next().expect("the example");
+        assert_eq!(found.next(), None, "one example");
+        block.to_string()
+    };
+    let dir = scratch("docs-run-together");
+    let appended = "\n[[claim]]\nclaim = \"{L, G1x} = G1*y - G2*x\"\n";
+    assert!(doc.contains("`claim = \"{L, G1x} = G1*y - G2*x\"`"));
+    std::fs::write(dir.join("rotor.toml"), format!("{example}{appended}")).expect("write");
+    let o = superint_in(&dir, &["check", "rotor.toml", "--no-timings"]);
+    assert_eq!(o.status.code(), Some(0), "{}", text(&o.stdout));
+    let out = text(&o.stdout);
+    let warning = shown("Warning: 'G1x'");
+    assert!(out.contains(&format!("\n\n{warning}\n")), "{out}");
+    let o = superint_in(&dir, &["bracket", "rotor.toml", "x + G1y", "H"]);
+    assert_eq!(o.status.code(), Some(0));
+    assert!(doc.contains("`superint bracket rotor.toml 'x + G1y' H` prints\n`{x + G1 y, H}`"));
+    assert!(
+        text(&o.stdout).contains("{x + G1 y, H}"),
+        "{}",
+        text(&o.stdout)
+    );
+    assert_eq!(
+        text(&o.stderr),
+        shown("superint: warning: <command line>:1:5: 'G1y'")
+    );
 }
 
 /// The declared brackets' example of `docs/system-files.md` checks, and its error examples are
