@@ -1368,13 +1368,32 @@ impl<'a> Builder<'a> {
                 format!("max_degree must be between 1 and {MAX_DEGREE_CEILING}"),
             ));
         }
-        if self.limits.max_degree == Some(0) {
+        // A zero given in code is refused as the file's and the command line's are: a term
+        // limit of 0 stopped at the Hamiltonian with 'more than 0 terms', and a work limit of
+        // 0 was taken.
+        let zero = [
+            (
+                self.limits.max_terms == Some(0),
+                "max_terms",
+                "at least 1".to_string(),
+            ),
+            (
+                self.limits.max_degree == Some(0),
+                "max_degree",
+                format!("between 1 and {MAX_DEGREE_CEILING}"),
+            ),
+            (
+                self.limits.max_term_products == Some(0),
+                "max_term_products",
+                "at least 1".to_string(),
+            ),
+        ];
+        if let Some((_, name, range)) = zero.into_iter().find(|z| z.0) {
             return Err(FileError::new(
                 ErrorKind::Schema,
                 &self.source.origin,
                 format!(
-                    "the LimitsOverride given to the loader sets max_degree to 0; it must be \
-                     between 1 and {MAX_DEGREE_CEILING}"
+                    "the LimitsOverride given to the loader sets {name} to 0; it must be {range}"
                 ),
             ));
         }

@@ -82,7 +82,9 @@ pub const DEFAULT_MAX_TERMS: usize = 2_000_000;
 pub const DEFAULT_MAX_DEGREE: u32 = Limits::DEFAULT_MAX_DEGREE;
 
 /// Limits given on the command line (`--max-terms`, `--max-degree`, `--max-term-products`):
-/// they override the file's `[limits]`, which override the defaults.
+/// they override the file's `[limits]`, which override the defaults. Each given must be at
+/// least 1, as in the file: the loader refuses a 0 (an error of kind
+/// [`ErrorKind::Schema`]).
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 pub struct LimitsOverride {
     /// `--max-terms`.

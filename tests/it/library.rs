@@ -478,21 +478,56 @@ fn engine_errors_become_file_errors() {
 }
 
 /// A degree limit of 0 given to the loader is refused as such (a file's `max_degree = 0`
-/// is): reading the Hamiltonian under it panicked.
+/// is): reading the Hamiltonian under it panicked. So are a term limit and a work limit of 0,
+/// which a file's `[limits]` and the command line refuse too: the first stopped at the
+/// Hamiltonian with "more than 0 terms", the second was taken and the claims checked.
 #[test]
-fn a_degree_limit_of_zero_is_refused_by_the_loader() {
+fn a_limit_of_zero_is_refused_by_the_loader() {
     let text = std::fs::read_to_string(concat!(
         env!("CARGO_MANIFEST_DIR"),
         "/systems/harmonic-rotor.toml"
     ))
     .unwrap();
-    let zero = LimitsOverride {
-        max_degree: Some(0),
-        ..LimitsOverride::default()
+    let zeros = [
+        (
+            "max_degree",
+            LimitsOverride {
+                max_degree: Some(0),
+                ..LimitsOverride::default()
+            },
+        ),
+        (
+            "max_terms",
+            LimitsOverride {
+                max_terms: Some(0),
+                ..LimitsOverride::default()
+            },
+        ),
+        (
+            "max_term_products",
+            LimitsOverride {
+                max_term_products: Some(0),
+                ..LimitsOverride::default()
+            },
+        ),
+    ];
+    for (name, zero) in zeros {
+        let err = load_system_text("harmonic-rotor.toml", &text, &zero).unwrap_err();
+        assert!(err.message.contains(&format!("sets {name} to 0")), "{err}");
+        assert_eq!((err.kind, err.location), (ErrorKind::Schema, None));
+    }
+    // One is enough: the smallest of each loads.
+    let ones = LimitsOverride {
+        max_terms: Some(1),
+        max_degree: Some(1),
+        max_term_products: Some(1),
     };
-    let err = load_system_text("harmonic-rotor.toml", &text, &zero).unwrap_err();
-    assert!(err.message.contains("max_degree to 0"), "{err}");
-    assert_eq!((err.kind, err.location), (ErrorKind::Schema, None));
+    assert_eq!(
+        load_system_text("harmonic-rotor.toml", &text, &ones)
+            .map_err(|e| e.kind)
+            .err(),
+        Some(ErrorKind::Limit)
+    );
 }
 
 /// The value types a program compares can key a map or a set too: formats, styles,
