@@ -71,6 +71,51 @@ impl LoadedSystem {
         Ok(())
     }
 
+    /// Adds a named function whose value the program already holds as an [`Expr`] (an
+    /// integral a search found, a product or a real part formed in code), under the same rules
+    /// for its name and display as [`LoadedSystem::add_function`]; it is then read in claims,
+    /// families, tables and ranks as a function the file declares is. A value built in
+    /// another variable set than the system's (`system().vars()`) is refused, of kind
+    /// [`ErrorKind::Expression`], and so is a name already taken; either leaves the system
+    /// unchanged.
+    ///
+    /// ```
+    /// use superint::prelude::*;
+    ///
+    /// let mut rotor = load_system_file("systems/harmonic-rotor.toml", &LimitsOverride::default())?;
+    /// // P_{1,1}² + Q_{1,1}² = |Z|², formed in code, as a function of the file.
+    /// let (p, q) = (rotor.parse("P_1_1")?, rotor.parse("Q_1_1")?);
+    /// rotor.add_function_expr("N", "N", &(&p * &p) + &(&q * &q))?;
+    /// rotor.add_claim("modulus", "N = Z*Zbar", None)?;
+    /// rotor.add_claim("conserved", "{N, H} = 0", None)?;
+    /// assert!(check_report([&rotor])?.all_as_expected());
+    /// // A value of another variable set names no variable of this one.
+    /// let other = VarSet::builder().coordinate("q").build()?;
+    /// let err = rotor.add_function_expr("W", "W", Expr::parse(&other, "q")?).unwrap_err();
+    /// assert_eq!(err.kind, ErrorKind::Expression);
+    /// # Ok::<(), FileError>(())
+    /// ```
+    pub fn add_function_expr(
+        &mut self,
+        name: &str,
+        display: &str,
+        value: Expr,
+    ) -> Result<(), FileError> {
+        let origin = format!("<function {name}>");
+        self.check_new_name(&origin, name, "a function")?;
+        check_display_in(&origin, display)?;
+        self.check_printed_apart(&origin, name, display)?;
+        if value.vars() != self.system.vars() {
+            let message = format!(
+                "the value of {name} was built in another variable set than the system's: \
+                 build it from system().vars(), or read it with parse"
+            );
+            return Err(FileError::new(ErrorKind::Expression, &origin, message));
+        }
+        self.system.define(name, display, value);
+        Ok(())
+    }
+
     /// Adds a family with two integer indices, as a `[[family]]` of the file declares one:
     /// its instances `name_i_j` (or `name_{i,j}`) are `value` with `i, j` for the indices, and
     /// `eigenvalue`, if given, is `λ` in `{name_{m,n}, H} = λ(m, n) name_{m,n}`, which

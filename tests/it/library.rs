@@ -252,6 +252,80 @@ fn a_loaded_file_extended_in_code() {
     assert!(tower.proof().unwrap().holds());
 }
 
+/// An integral a search found, held as an `Expr`, becomes a function of a loaded file
+/// without being written out and read back (`add_function_expr`): at the resonance `Ω = ω`
+/// each integral of degree 1 of the harmonic rotor is added under a name of its own and
+/// claimed conserved there, and a family built on the first one has it in its instances.
+/// A name taken, a display that prints as another name, and a value of another variable set
+/// are refused, and leave the system as it was.
+#[test]
+fn a_found_integral_becomes_a_function_of_the_file() {
+    let mut rotor = harmonic_rotor_file();
+    let resonance = rotor.condition("p_theta = I*omega").unwrap();
+    let options = SearchOptions::new(SearchSpace::new(1, 1, 1)).when(resonance);
+    let found = search(rotor.system(), &options).unwrap();
+    let integrals: Vec<Expr> = found
+        .basis
+        .iter()
+        .map(|i| i.expr().clone())
+        .filter(|e| !e.is_constant())
+        .collect();
+    assert!(integrals.len() >= 4, "{integrals:?}");
+    let functions = rotor.system().functions().len();
+    for (k, e) in integrals.iter().enumerate() {
+        let name = format!("I{k}");
+        rotor.add_function_expr(&name, &name, e.clone()).unwrap();
+        assert_eq!(rotor.parse(&name).unwrap(), *e);
+        rotor
+            .add_claim(
+                &name,
+                &format!("{{{name}, H}} = 0"),
+                Some("p_theta = I*omega"),
+            )
+            .unwrap();
+    }
+    assert_eq!(
+        rotor.system().functions().len(),
+        functions + integrals.len()
+    );
+    rotor
+        .add_family("T", "T", ["m", "n"], "I0^m*exp(i*n*theta)", None)
+        .unwrap();
+    assert_eq!(
+        rotor.parse("T_2_1").unwrap(),
+        rotor.parse("I0^2*exp(i*theta)").unwrap()
+    );
+    let report = check_report([&rotor]).unwrap();
+    assert!(report.all_as_expected());
+    let ours = report
+        .claims()
+        .into_iter()
+        .filter(|c| c.id.starts_with('I'));
+    assert_eq!(ours.filter(|c| c.proved).count(), integrals.len());
+
+    // Refused, each leaving the functions as they were.
+    let x = rotor.parse("x").unwrap();
+    let taken = rotor.add_function_expr("L", "L", x.clone()).unwrap_err();
+    assert_eq!(taken.kind, ErrorKind::Name);
+    assert_eq!(taken.message, "'L' is already a function of the system");
+    let alike = rotor.add_function_expr("G_1", "G_1", x).unwrap_err();
+    assert_eq!(alike.kind, ErrorKind::Name, "{alike}");
+    assert!(alike.message.contains("as the function G1 does"), "{alike}");
+    let other = VarSet::builder().coordinate("x").build().unwrap();
+    let foreign = Expr::parse(&other, "x").unwrap();
+    let mismatch = rotor.add_function_expr("X", "X", foreign).unwrap_err();
+    assert_eq!(mismatch.kind, ErrorKind::Expression);
+    assert!(
+        mismatch.message.contains("another variable set"),
+        "{mismatch}"
+    );
+    assert_eq!(
+        rotor.system().functions().len(),
+        functions + integrals.len()
+    );
+    assert!(rotor.parse("X").is_err());
+}
+
 /// A family whose eigenvalue does not read is refused at its place (line 2 of `<family W>`,
 /// under the misspelt name), and leaves the system as it was: another family then takes its
 /// place, and its instances are its own, not the refused one's.
