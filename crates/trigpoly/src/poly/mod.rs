@@ -849,6 +849,51 @@ impl<'a, C: Coefficient> Term<'a, C> {
     }
 }
 
+/// The coefficient and the exponents that are not zero, by the variables' names (an angle's
+/// is `k` in `e^{ikθ}`), as a program printing a polynomial's terms with `{:?}` reads them:
+///
+/// ```
+/// use trigpoly::{Expr, VarSet};
+///
+/// let vars = VarSet::builder().coordinate("x").momentum("p_x").angle("theta").build()?;
+/// let f = Expr::parse(&vars, "3/4*x^2*p_x - i*exp(-2*i*theta)")?;
+/// let terms: Vec<String> = f.terms().map(|t| format!("{t:?}")).collect();
+/// assert_eq!(
+///     terms,
+///     [
+///         "Term { coeff: 3/4, exponents: {\"x\": 2, \"p_x\": 1} }",
+///         "Term { coeff: -i, exponents: {\"theta\": -2} }",
+///     ]
+/// );
+/// # Ok::<(), Box<dyn std::error::Error>>(())
+/// ```
+impl<C: Coefficient> fmt::Debug for Term<'_, C> {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        let vars = &self.poly.vars;
+        let exponents: Vec<(&str, i64)> = vars
+            .vars()
+            .zip(self.exponents())
+            .filter(|&(_, e)| e != 0)
+            .map(|(v, e)| (vars.variable(v).name(), e))
+            .collect();
+        f.debug_struct("Term")
+            .field("coeff", &self.coeff())
+            .field("exponents", &DebugMap(&exponents))
+            .finish()
+    }
+}
+
+/// Pairs shown as a map by `{:?}`.
+struct DebugMap<'a>(&'a [(&'a str, i64)]);
+
+impl fmt::Debug for DebugMap<'_> {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.debug_map()
+            .entries(self.0.iter().map(|(k, v)| (k, v)))
+            .finish()
+    }
+}
+
 impl<C: Coefficient> PartialEq for Poly<C> {
     fn eq(&self, other: &Self) -> bool {
         self.content == other.content
