@@ -737,10 +737,13 @@ fn a_closure_of_functions_the_system_does_not_name() {
     assert_eq!(of.relations, by_name.relations);
 }
 
-/// A search's integrals and a rank's certificate compare with `==`: the same search twice
-/// finds equal bases, one of a larger space holds the smaller's integrals and more, and the
-/// rank of the same functions twice has equal certificates (`F1, F2, G1, G2, L`: rank 4,
-/// the Casimir ties them), of fewer functions another.
+/// A search's integrals, a rank's certificate, a bracket table and a tower's proof compare
+/// with `==`: the same search twice finds equal bases, one of a larger space holds the
+/// smaller's integrals and more, and the rank of the same functions twice has equal
+/// certificates (`F1, F2, G1, G2, L`: rank 4, the Casimir ties them), of fewer functions
+/// another; the su(2) table twice is one table, in another order another, and the proof for
+/// all `m, n` of `K_{m,n}` twice is one proof, that of `K'` another (the table and the proof
+/// had no `PartialEq`).
 #[test]
 fn integrals_and_rank_certificates_compare() {
     let rotor = systems::harmonic_rotor();
@@ -761,6 +764,13 @@ fn integrals_and_rank_certificates_compare() {
     assert_eq!(certify(&five).rank, 4);
     assert_eq!(certify(&five), certify(&five));
     assert_ne!(certify(&five), certify(&five[..2]));
+    let table = |names: &[&str]| BracketTable::compute(&rotor, names).unwrap();
+    assert_eq!(table(&["L", "G1", "G2"]), table(&["L", "G1", "G2"]));
+    assert_ne!(table(&["L", "G1", "G2"]), table(&["G1", "L", "G2"]));
+    let proof = eigen_proof(&rotor, "Z").unwrap();
+    assert!(proof.holds());
+    assert_eq!(proof, eigen_proof(&rotor, "Z").unwrap());
+    assert_ne!(proof, eigen_proof_of(&rotor, "Z", "K'").unwrap());
 }
 
 /// A bracket table computed by the engine prints as the grid a report prints, row for row

@@ -78,7 +78,7 @@ impl std::fmt::Display for FunctionName {
 }
 
 /// The table `{A, B}` for a list of named functions of a system.
-#[derive(Clone, Debug)]
+#[derive(Clone, Debug, PartialEq, Eq)]
 pub struct BracketTable {
     /// The functions' names, as given.
     pub names: Vec<String>,

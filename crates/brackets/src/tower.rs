@@ -79,7 +79,7 @@ pub fn check_tower(
 }
 
 /// A fact `{A, H} = λ A` computed by the engine.
-#[derive(Clone, Debug)]
+#[derive(Clone, Debug, PartialEq, Eq)]
 pub struct EigenFact {
     /// How the fact reads (`{Z, H} = iωZ`).
     pub statement: String,
@@ -88,7 +88,7 @@ pub struct EigenFact {
 }
 
 /// A proof for all `m, n` by the eigenfunction lemma.
-#[derive(Clone, Debug)]
+#[derive(Clone, Debug, PartialEq, Eq)]
 pub struct EigenProof {
     /// The base facts, computed.
     pub facts: Vec<EigenFact>,
