@@ -78,7 +78,7 @@ pub mod prelude {
     };
     pub use crate::render::{render, Format, Options as RenderOptions};
     pub use crate::report::{
-        ClaimOutcome, ClaimResult, Expect, ProofResult, RankResult, Report, TableResult,
+        ClaimKind, ClaimOutcome, ClaimResult, Expect, ProofResult, RankResult, Report, TableResult,
         TowerResult,
     };
     pub use crate::system_file::{

@@ -12,7 +12,7 @@ use super::Expect;
 use crate::system_file::Caller;
 
 /// Whether a claim asserts an identity or that something does not vanish.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 pub enum ClaimKind {
     /// `lhs = rhs` (under the condition): proved when `lhs − rhs` is exactly zero.
     Identity,
@@ -23,7 +23,7 @@ pub enum ClaimKind {
 
 /// What a check of a claim found. Ordered so that the outcome of several checks of one claim
 /// is the greatest: one refuted check refutes it, else one undecided leaves it undecided.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord)]
+#[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord, Hash)]
 pub enum ClaimOutcome {
     /// `lhs − rhs` is exactly zero (or, for a nonvanishing claim, is not).
     Proved,
@@ -41,6 +41,25 @@ impl ClaimOutcome {
             ClaimOutcome::Undecided => "undecided",
             ClaimOutcome::Refuted => "refuted",
         }
+    }
+}
+
+/// Its [`ClaimOutcome::name`], as [`brackets::Outcome`], [`Expect`] and
+/// [`ErrorKind`](crate::system_file::ErrorKind) print theirs.
+///
+/// ```
+/// use superint::prelude::*;
+///
+/// let rotor = load_system_file("systems/harmonic-rotor.toml", &LimitsOverride::default())?;
+/// let report = check_report([&rotor])?;
+/// let refuted = report.claims().into_iter().find(|c| c.expect == Expect::Refuted).unwrap();
+/// assert_eq!(format!("{}: {}", refuted.id, refuted.outcome()), format!("{}: refuted", refuted.id));
+/// assert_eq!(ClaimOutcome::Undecided.to_string(), "undecided");
+/// # Ok::<(), FileError>(())
+/// ```
+impl std::fmt::Display for ClaimOutcome {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.write_str(self.name())
     }
 }
 

@@ -605,8 +605,8 @@ fn a_limit_of_zero_is_refused_by_the_loader() {
 }
 
 /// The value types a program compares can key a map or a set too: formats, styles,
-/// expectations, error kinds, outcomes (with their residuals), conditions, function names,
-/// claims and resonant functions.
+/// expectations, error kinds, a report's claim outcomes and kinds, outcomes (with their
+/// residuals), conditions, function names, claims and resonant functions.
 #[test]
 fn value_types_are_hashable() {
     use std::collections::HashSet;
@@ -624,6 +624,21 @@ fn value_types_are_hashable() {
     );
     assert_eq!(
         distinct([ErrorKind::Name, ErrorKind::Schema, ErrorKind::Name]),
+        2
+    );
+    let claim_outcomes = [
+        ClaimOutcome::Proved,
+        ClaimOutcome::Refuted,
+        ClaimOutcome::Undecided,
+        ClaimOutcome::Refuted,
+    ];
+    assert_eq!(distinct(claim_outcomes), 3);
+    assert_eq!(
+        distinct([
+            ClaimKind::Identity,
+            ClaimKind::Nonvanishing,
+            ClaimKind::Identity
+        ]),
         2
     );
     let rotor = systems::harmonic_rotor();
