@@ -34,6 +34,9 @@
 #![deny(missing_docs)]
 
 pub use brackets;
+/// The JSON crate of [`render::json::value`], re-exported so that a program names
+/// `serde_json::Value` at the version used here without depending on it.
+pub use serde_json;
 pub use trigpoly;
 
 #[cfg(feature = "cli")]

@@ -136,7 +136,22 @@ pub fn pretty(value: &Value) -> String {
     text
 }
 
-/// The report as a JSON value.
+/// The report as a JSON value (a [`serde_json::Value`], the crate re-exported as
+/// `superint::serde_json`), for a program that reads it or puts it into a document of its own.
+///
+/// ```
+/// use superint::prelude::*;
+/// use superint::serde_json::Value;
+///
+/// let rotor = load_system_file("systems/harmonic-rotor.toml", &LimitsOverride::default())?;
+/// let report = check_report([&rotor])?;
+/// let json: Value = superint::render::json::value(&report, &RenderOptions::reproducible());
+/// assert_eq!(json["schema"], "superint-report/1");
+/// let claims = json["claims"].as_array().unwrap();
+/// assert_eq!(claims.len(), report.claims().len());
+/// assert!(claims.iter().all(|c| c["meets_expectation"] == true));
+/// # Ok::<(), FileError>(())
+/// ```
 pub fn value(report: &Report, options: &Options) -> Value {
     let mut lists = Lists::new(options.timings);
     for s in &report.sections {

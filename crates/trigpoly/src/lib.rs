@@ -52,6 +52,13 @@ mod print;
 pub mod syntax;
 mod varset;
 
+/// The big-integer crate of [`Integer::to_bigint`] and [`Integer::from_bigint`], re-exported
+/// so that a program names `BigInt` at the version used here without depending on it.
+pub use num_bigint;
+/// The rational crate of [`Rational::to_big_rational`] and `Rational: From<BigRational>`,
+/// re-exported so that a program names `BigRational` at the version used here.
+pub use num_rational;
+
 pub use error::{AlgebraError, AngleUse, Misuse, Setting};
 pub use lower::{did_you_mean, quoted_name, split_names, FUNCTIONS};
 pub use lower::{Context, Doubt, NoContext, RunTogether};

@@ -193,7 +193,18 @@ impl Rational {
         }
     }
 
-    /// The value as a `BigRational`.
+    /// The value as a `BigRational` ([`num_rational`](crate::num_rational), re-exported).
+    ///
+    /// ```
+    /// use trigpoly::num_rational::BigRational;
+    /// use trigpoly::Rational;
+    ///
+    /// let q: Rational = "-3/4".parse()?;
+    /// let big: BigRational = q.to_big_rational();
+    /// assert_eq!(big.to_string(), "-3/4");
+    /// assert_eq!(Rational::from(big), q);
+    /// # Ok::<(), Box<dyn std::error::Error>>(())
+    /// ```
     pub fn to_big_rational(&self) -> BigRational {
         match &self.0 {
             Repr::Small { num, den } => {
