@@ -75,7 +75,7 @@ pub mod prelude {
 
     pub use brackets::systems::Resonant;
 
-    pub use crate::discovery::{closure_report, search_report};
+    pub use crate::discovery::{closure_report, file_search_report, search_report};
     pub use crate::paper::{
         tower_report, tower_report_with_progress, Paper, PaperOptions, TowerSystem,
     };
@@ -88,6 +88,6 @@ pub mod prelude {
         bracket_report, check_report, expand_report, family_tower_report,
         family_tower_report_with_progress, load as load_system_file, load_str as load_system_text,
         rank_report, rank_report_when, table_report, Caller, CheckedClaim, ClaimSpec, ErrorKind,
-        Family, FileError, LimitsOverride, LoadedSystem, Location,
+        Family, FileError, LimitsOverride, LoadedSystem, Location, Warning,
     };
 }

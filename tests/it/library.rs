@@ -256,6 +256,8 @@ fn a_loaded_file_extended_in_code() {
 /// without being written out and read back (`add_function_expr`): at the resonance `Ω = ω`
 /// each integral of degree 1 of the harmonic rotor is added under a name of its own and
 /// claimed conserved there, and a family built on the first one has it in its instances.
+/// The search is the file's (`file_search_report`, in the prelude), and a name run together
+/// with a function added so is warned of as with the file's own (`Warning`, in the prelude).
 /// A name taken, a display that prints as another name, and a value of another variable set
 /// are refused, and leave the system as it was.
 #[test]
@@ -263,7 +265,8 @@ fn a_found_integral_becomes_a_function_of_the_file() {
     let mut rotor = harmonic_rotor_file();
     let resonance = rotor.condition("p_theta = I*omega").unwrap();
     let options = SearchOptions::new(SearchSpace::new(1, 1, 1)).when(resonance);
-    let found = search(rotor.system(), &options).unwrap();
+    let (searched, found) = file_search_report(&rotor, &options, Caller::Program).unwrap();
+    assert!(searched.all_proved());
     let integrals: Vec<Expr> = found
         .basis
         .iter()
@@ -294,6 +297,17 @@ fn a_found_integral_becomes_a_function_of_the_file() {
     assert_eq!(
         rotor.parse("T_2_1").unwrap(),
         rotor.parse("I0^2*exp(i*theta)").unwrap()
+    );
+    // A name run together with one of them is in doubt, as with a function of the file.
+    assert_eq!(rotor.parse("I0x").unwrap(), rotor.parse("I0*x").unwrap());
+    let warnings: Vec<Warning> = rotor.warnings();
+    assert_eq!(warnings.len(), 1);
+    assert!(
+        warnings[0]
+            .message
+            .starts_with("'I0x' is read as the product"),
+        "{}",
+        warnings[0]
     );
     let report = check_report([&rotor]).unwrap();
     assert!(report.all_as_expected());
