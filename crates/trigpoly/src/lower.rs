@@ -401,6 +401,14 @@ impl<C: Coefficient> Lower<'_, C> {
         if let Some(p) = self.ctx.lookup(name) {
             return Ok(p);
         }
+        // The real or imaginary part of a name, as LaTeX sets it: `\operatorname{Re} A`.
+        if let Some((part, of)) = name.split_once(' ') {
+            let value = self.name(of, span)?;
+            return match part {
+                "Re" => value.re().map_err(at(span)),
+                _ => value.im().map_err(at(span)),
+            };
+        }
         // The text form writes products of names side by side: `Mω` is `M·ω`.
         if let Some(parts) = self.split_name(name) {
             self.note_split(name, span, &parts);

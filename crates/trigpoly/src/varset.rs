@@ -12,7 +12,7 @@ pub use names::{
     display_forms, has_several_words, is_identifier, latex_unwritable, shown_forms, unbarred,
     with_indices, BadName, LATEX_LETTERS, MAX_NAME_CHARS, RESERVED,
 };
-pub(crate) use names::{long_name, unparenthesized};
+pub(crate) use names::{letter_of_command, long_name, unparenthesized};
 use names::{render_name, spell_out};
 
 /// What a variable is in a phase space; only `Angle` changes the algebra.

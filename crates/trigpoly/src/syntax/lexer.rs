@@ -3,7 +3,8 @@
 //! Besides ASCII operators it accepts `−` (U+2212) as minus; `·`, `⋅`, `∗` and `×` as
 //! multiplication; `÷` as division; `**` as `^`; and runs of unicode superscript digits
 //! (optionally preceded by `⁻`) as a single superscript exponent token. Any unicode whitespace
-//! (and a byte-order mark) separates tokens.
+//! (and a byte-order mark) separates tokens, and so does LaTeX's spacing (`\,`, `\quad`,
+//! `\left`); LaTeX's commands are read by [`super::latex`].
 
 use num_bigint::BigInt;
 
@@ -31,13 +32,20 @@ pub(crate) enum Tok {
     LBrace,
     RBrace,
     Comma,
+    /// `\frac`, `\tfrac` or `\dfrac`, whose two groups in braces follow.
+    Frac,
+    /// `\sqrt`, whose group in braces follows.
+    Sqrt,
     Eof,
 }
 
 impl Tok {
     /// Whether this token can begin an operand (used to detect implicit multiplication).
     pub(crate) fn starts_operand(&self) -> bool {
-        matches!(self, Tok::Int(_) | Tok::Name(_) | Tok::LParen | Tok::LBrace)
+        matches!(
+            self,
+            Tok::Int(_) | Tok::Name(_) | Tok::LParen | Tok::LBrace | Tok::Frac | Tok::Sqrt
+        )
     }
 }
 
@@ -68,8 +76,8 @@ fn is_name_continue(c: char) -> bool {
 
 /// On-demand tokenizer over a source string.
 pub(crate) struct Lexer<'a> {
-    src: &'a str,
-    pos: usize,
+    pub(super) src: &'a str,
+    pub(super) pos: usize,
 }
 
 impl<'a> Lexer<'a> {
@@ -94,7 +102,13 @@ impl<'a> Lexer<'a> {
     /// end of the last line of the expression rather than at trailing blank lines; in a text
     /// of blanks alone, at the end of its first line (`"   "`: column 4, past the spaces).
     pub(crate) fn next_token(&mut self) -> Result<Token, ParseError> {
-        self.eat_while(|c| c.is_whitespace() || c == '\u{feff}');
+        loop {
+            self.eat_while(|c| c.is_whitespace() || c == '\u{feff}');
+            match Self::latex_space(&self.src[self.pos..]) {
+                Some(len) => self.pos += len,
+                None => break,
+            }
+        }
         let start = self.pos;
         let Some(c) = self.peek() else {
             let end = match self.src.trim_end().len() {
@@ -125,8 +139,10 @@ impl<'a> Lexer<'a> {
             }
             c if is_name_start(c) => {
                 self.eat_while(is_name_continue);
-                Tok::Name(self.src[start..self.pos].to_string())
+                let name = self.src[start..self.pos].to_string();
+                Tok::Name(self.name_rest(name, false)?)
             }
+            '\\' => self.latex_token(start)?,
             '+' => Tok::Plus,
             '-' | '−' => Tok::Minus,
             '*' if self.peek() == Some('*') => {

@@ -17,10 +17,12 @@
 //!   keeps dropping and walking them recursively safe).
 
 mod error;
+mod latex;
 mod lexer;
 mod parser;
 
 pub use error::{Excerpt, ParseError, Span};
+pub use latex::latex_name;
 pub use parser::{parse_expr, Expr, ExprKind, LEFT_DEEP_SUM, MAX_DEPTH, MAX_HEIGHT};
 
 #[cfg(test)]
@@ -196,6 +198,90 @@ mod tests {
         }
     }
 
+    /// LaTeX math reads as the plain syntax it writes: commands, fractions, braces of
+    /// exponents and subscripts, the bracket `\{f, g\}`, spacing and sizing.
+    #[test]
+    fn latex_reads_as_the_plain_syntax() {
+        let cases = [
+            (r"x^{2}", "(^ x 2)"),
+            (r"y/x^{ 2/3 }", "(/ y (^ x (/ 2 3)))"),
+            (r"x**{-1}", "(^ x (- 1))"),
+            (r"x^{-2} y", "(* (^ x (- 2)) y)"),
+            // A comma in the braces makes them a bracket, as in the plain syntax.
+            (r"x^{f, g}", "(^ x ({} f g))"),
+            (r"\frac{1}{2}\omega^{2} L", "(* (* (/ 1 2) (^ ω 2)) L)"),
+            (
+                r"\tfrac{p_{x}^{2}}{2 M} + \dfrac{a}{b}",
+                "(+ (/ (^ p_x 2) (* 2 M)) (/ a b))",
+            ),
+            (r"x/\frac{1}{2} y", "(* (/ x (/ 1 2)) y)"),
+            (r"p_{\theta} + p_\theta + p_x", "(+ (+ p_θ p_θ) p_x)"),
+            (r"\{G_{1}, G_{2}\}", "({} G_1 G_2)"),
+            (
+                r"\left\{L, G_{1}\right\} + \bigl(a\bigr)",
+                "(+ ({} L G_1) a)",
+            ),
+            (r"\omega_{x,2} \Omega \alpha_1", "(* (* ω_x_2 Ω) α_1)"),
+            (
+                r"\bar{K}_{3,2} \overline{Z} \bar{Z}_{x}",
+                "(* (* K̄_3_2 Z̄) Z̄_x)",
+            ),
+            (r"G_{1}' + K_{1;1,2}", "(+ G_1' K_1_1_2)"),
+            (r"\mathrm{e}^{-\mathrm{i}\theta}", "(exp (* (- i) θ))"),
+            (r"e^{-i\theta}", "(exp (* (- i) θ))"),
+            (
+                r"\exp(i\varphi) - \exp\left(i \phi\right)",
+                "(- (exp (* i φ)) (exp (* i φ)))",
+            ),
+            (r"\cos\theta + \sin \varphi", "(+ (cos θ) (sin φ))"),
+            (
+                r"\cos^{3}\theta \sin(2\theta)",
+                "(* (^ (cos θ) 3) (sin (* 2 θ)))",
+            ),
+            (r"a \cdot b \times c \div d", "(/ (* (* a b) c) d)"),
+            (
+                r"2\,x\;y\!z\:w\quad v\qquad u\ t",
+                "(* (* (* (* (* (* (* 2 x) y) z) w) v) u) t)",
+            ),
+            (r"\sqrt{x^{2} + y^{2}}", "(sqrt (+ (^ x 2) (^ y 2)))"),
+            (
+                r"\operatorname{conj}(P_{2,3}) + \operatorname{Re}(Z) + \Re(Z)",
+                "(+ (+ (conj P_2_3) (Re Z)) (Re Z))",
+            ),
+            (
+                r"\hbar\ell \mathrm{xy}_{10} \mathrm{{\omega}x}",
+                "(* (* (* ħ ℓ) xy_10) ωx)",
+            ),
+            // The real part of a name as LaTeX sets it is one name, as a display `Re A` is.
+            (r"\omega \operatorname{Im} K + \Re A", "(+ (* ω Im K) Re A)"),
+            (
+                r"i(2\omega - 3\Omega) K_{2,3}",
+                "(* (i (- (* 2 ω) (* 3 Ω))) K_2_3)",
+            ),
+            (
+                r"\displaystyle M\omega^{2}(x^{2} + y^{2})/2",
+                "(/ (* (* M (^ ω 2)) (+ (^ x 2) (^ y 2))) 2)",
+            ),
+        ];
+        for (src, want) in cases {
+            assert_eq!(parse(src), want, "{src}");
+            // A power of cos written between it and its angle is inside the call's span, as
+            // cos²θ's is.
+            if !src.contains(r"\cos^") {
+                check_spans(src, &parse_expr(src).unwrap(), Span::new(0, src.len()));
+            }
+        }
+        // A name written in LaTeX, whole.
+        assert_eq!(latex_name(r"p_{\theta}").as_deref(), Some("p_θ"));
+        assert_eq!(
+            latex_name(r"\mathrm{Lambda3x}").as_deref(),
+            Some("Lambda3x")
+        );
+        assert_eq!(latex_name(r"\omega_{+}").as_deref(), Some("ω_+"));
+        assert_eq!(latex_name("x y"), None);
+        assert_eq!(latex_name(r"\foo"), None);
+    }
+
     #[test]
     fn spans() {
         let src = "2*cos(theta)^2 + {ω, x⁻¹}";
@@ -252,16 +338,40 @@ mod tests {
         ("{f, g", (1, 6), "expected '}' to close '{' opened at column 1, found end of input"),
         ("e^{x", (1, 5), "expected '}' to close '{' opened at column 3, found end of input"),
         ("e^{x, y}", (1, 5), "expected '}' to close '{' opened at column 3, found ','"),
-        // An exponent in braces, as LaTeX writes it, with the parentheses to write.
-        ("x^{2}", (1, 3), "an exponent is written in parentheses, ^(2), not in braces: a brace \
-                           opens a Poisson bracket {f, g} (only e^{…} is the exponential)"),
-        ("y/x^{ 2/3 }", (1, 5), "an exponent is written in parentheses, ^(2/3), not in braces: \
-                                 a brace opens a Poisson bracket {f, g} (only e^{…} is the \
-                                 exponential)"),
-        ("x**{-1}", (1, 4), "an exponent is written in parentheses, ^(-1), not in braces: a \
-                             brace opens a Poisson bracket {f, g} (only e^{…} is the \
-                             exponential)"),
-        ("x^{2)", (1, 5), "expected ',' between the two arguments of a bracket {f, g}, found ')'"),
+        // An exponent in braces is read as LaTeX writes it; one that is no bracket is closed
+        // by its brace.
+        ("x^{2)", (1, 5), "expected '}' to close '{' opened at column 3, found ')'"),
+        ("x^{2", (1, 5), "expected '}' to close '{' opened at column 3, found end of input"),
+        ("x^{f, g", (1, 8), "expected '}' to close '{' opened at column 3, found end of input"),
+        // LaTeX: an unknown command, by name, and what a command needs after it.
+        ("\\foo + 1", (1, 1), "unknown LaTeX command '\\foo': an expression reads Greek \
+                              letters (\\omega), \\frac, \\sqrt, \\cdot, \\times, \\cos, \\sin, \
+                              \\exp, \\bar, \\mathrm, \\{ \\} and spacing"),
+        ("2\\omegax", (1, 2), "unknown LaTeX command '\\omegax': an expression reads Greek \
+                              letters (\\omega), \\frac, \\sqrt, \\cdot, \\times, \\cos, \\sin, \
+                              \\exp, \\bar, \\mathrm, \\{ \\} and spacing"),
+        ("x \\$ y", (1, 3), "unknown LaTeX command '\\$': an expression reads Greek \
+                              letters (\\omega), \\frac, \\sqrt, \\cdot, \\times, \\cos, \\sin, \
+                              \\exp, \\bar, \\mathrm, \\{ \\} and spacing"),
+        ("x + \\", (1, 5), "expected a LaTeX command after '\\', found end of input"),
+        ("\\frac{1}", (1, 9), "expected '{' with the denominator of '\\frac', found end of \
+                              input; write \\frac{1}{2}, \\sqrt{x}"),
+        ("\\tfrac12", (1, 7), "expected '{' with the numerator of '\\tfrac', found '12'; write \
+                              \\frac{1}{2}, \\sqrt{x}"),
+        ("\\sqrt x", (1, 7), "expected '{' with the radicand of '\\sqrt', found 'x'; write \
+                              \\frac{1}{2}, \\sqrt{x}"),
+        ("\\frac{1}{2", (1, 11), "expected '}' to close '{' opened at column 9, found end of \
+                                 input"),
+        ("p_\\", (1, 3), "expected a LaTeX command after '\\', found end of input"),
+        ("p_{x + 1", (1, 3), "the '{' of this name is never closed: expected '}'"),
+        ("p_{x$}", (1, 5), "unexpected character '$' in a name's braces"),
+        ("\\omega_ + 1", (1, 7), "expected a subscript after '_': a letter, a digit, or a name \
+                                 in braces, p_{x}"),
+        ("\\bar{} + 1", (1, 1), "'\\bar{}' holds no name"),
+        ("\\bar Z", (1, 1), "expected '{' after '\\bar', as in \\bar{Z}"),
+        ("\\{f, g", (1, 7), "expected '}' to close '\\{' opened at column 1, found end of \
+                             input"),
+        ("\\cos^{2}", (1, 9), "expected an angle or '(' after 'cos'"),
         (")", (1, 1), "unexpected ')'"),
         ("x)", (1, 2), "unexpected ')'"),
         ("a, b", (1, 2), "unexpected ','"),
@@ -394,7 +504,7 @@ mod tests {
 
     #[test]
     fn fuzz_never_panics() {
-        let alphabet: Vec<char> = "xe1+-*/^(){},. ²⁻−·\ni$é_".chars().collect();
+        let alphabet: Vec<char> = "xe1+-*/^(){},. ²⁻−·\ni$é_\\".chars().collect();
         let mut layer = vec![String::new()];
         for _ in 0..=3 {
             layer.iter().for_each(|s| check_no_panic(s));
@@ -411,10 +521,26 @@ mod tests {
             state ^= state << 17;
             state
         };
+        // LaTeX's commands and what follows them, among the characters.
+        let words: Vec<String> = alphabet
+            .iter()
+            .map(char::to_string)
+            .chain(
+                [
+                    r"\frac", r"\sqrt", r"\omega", r"\bar", r"\mathrm", r"\cos", r"\{", r"\}",
+                    r"\left(", r"\,", "_{", "^{", r"\foo", "'",
+                ]
+                .map(String::from),
+            )
+            .collect();
         for _ in 0..20_000 {
             let len = (next() % 24) as usize;
             let s: String = (0..len)
                 .map(|_| alphabet[next() as usize % alphabet.len()])
+                .collect();
+            check_no_panic(&s);
+            let s: String = (0..len)
+                .map(|_| words[next() as usize % words.len()].as_str())
                 .collect();
             check_no_panic(&s);
             let bytes: Vec<u8> = (0..len).map(|_| next() as u8).collect();

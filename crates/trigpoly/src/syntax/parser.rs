@@ -46,7 +46,9 @@ impl Expr {
 
     /// Whether the node was written in parentheses, which the tree keeps in its span (wider
     /// than a name, or starting before a call's name): `(Mω)²` and `(M(x + y))²` take their
-    /// power whole, `Mω²` and `M(x + y)²` do not. Other nodes answer `false`.
+    /// power whole, `Mω²` and `M(x + y)²` do not. A name written in LaTeX (`p_{x}`, `\omega`)
+    /// is wider than its name too, and is so one name whose power is its own. Other nodes
+    /// answer `false`.
     pub fn in_parentheses(&self) -> bool {
         match &self.kind {
             ExprKind::Name(n) => self.span.end - self.span.start > n.len(),
@@ -282,7 +284,10 @@ impl Parser<'_> {
             if let (Some(divisor), true) = (divisor, op.is_juxtaposition()) {
                 // A divisor in parentheses is plainly the whole divisor: `p²/(2M) x`.
                 let text = &self.src[divisor.start..divisor.end];
-                if !(text.starts_with('(') && text.ends_with(')')) {
+                let fraction = ["\\frac", "\\tfrac", "\\dfrac"];
+                let whole = (text.starts_with('(') && text.ends_with(')'))
+                    || fraction.iter().any(|f| text.starts_with(f));
+                if !whole {
                     return Err(self.ambiguous_division(divisor));
                 }
             }
@@ -417,7 +422,10 @@ impl Parser<'_> {
             Tok::Int(_) | Tok::Name(_) => self.atom(),
             Tok::Minus | Tok::Plus => self.unary(),
             Tok::LParen => self.paren(),
+            Tok::LBrace if self.exponent_in_braces() => self.exponent_group(),
             Tok::LBrace => self.bracket(),
+            Tok::Frac => self.frac(),
+            Tok::Sqrt => self.sqrt(),
             _ => Err(self.expected_operand()),
         }
     }
@@ -459,6 +467,25 @@ impl Parser<'_> {
             Tok::Name(name) if is_trig(&name) && !matches!(self.tok.tok, Tok::Eof) => {
                 self.trig_without_parens(name, span)
             }
+            // `\operatorname{Re} A`, as LaTeX sets the real part of a name, and a display name
+            // of two words: one name, `Re A`.
+            Tok::Name(name)
+                if matches!(name.as_str(), "Re" | "Im")
+                    && self.src[span.start..].starts_with('\\')
+                    && matches!(self.tok.tok, Tok::Name(_)) =>
+            {
+                let Token {
+                    tok: Tok::Name(of),
+                    span: of_span,
+                } = self.bump()?
+                else {
+                    unreachable!("the current token was a name")
+                };
+                Ok(Expr::new(
+                    ExprKind::Name(format!("{name} {of}")),
+                    span.to(of_span),
+                ))
+            }
             Tok::Name(name) => Ok(Expr::new(ExprKind::Name(name), span)),
             Tok::Int(n) => Ok(Expr::new(ExprKind::Integer(n), span)),
             _ => unreachable!("atom() is only called on integers and names"),
@@ -490,6 +517,11 @@ impl Parser<'_> {
     fn trig_without_parens(&mut self, name: String, span: Span) -> PResult<Expr> {
         let power = match self.tok.tok {
             Tok::Sup { .. } => Some(self.superscript()?),
+            // `\cos^{3}\theta`, as LaTeX writes a power of it.
+            Tok::Caret if self.braced_exponent_follows() => {
+                self.bump()?;
+                Some(self.exponent_group()?)
+            }
             _ => None,
         };
         let call = if self.tok.tok == Tok::LParen {
@@ -560,14 +592,11 @@ impl Parser<'_> {
 
     /// Parses a bracket `{f, g}`.
     fn bracket(&mut self) -> PResult<Expr> {
-        let exponent = self
-            .prev
-            .is_some_and(|s| matches!(&self.src[s.start..s.end], "^" | "**"));
         let open = self.bump()?.span;
         let args = self.nested(open, |p| {
             let f = p.expr(0)?;
             let height = p.height;
-            p.bracket_comma(exponent.then_some(open))?;
+            p.bracket_comma()?;
             let g = p.expr(0)?;
             p.height = grow(height.max(p.height), open)?;
             Ok([f, g])
@@ -575,22 +604,10 @@ impl Parser<'_> {
         self.close_bracket(open, args)
     }
 
-    /// Consumes the `,` between the two arguments of a bracket; `exponent` is the bracket's
-    /// `{` where it follows a `^`, so that an exponent written in braces as LaTeX writes it
-    /// (`x^{-2}`, `x^{1/3}`) is answered with the parentheses to write, not as a bracket.
-    fn bracket_comma(&mut self, exponent: Option<Span>) -> PResult<()> {
+    /// Consumes the `,` between the two arguments of a bracket.
+    fn bracket_comma(&mut self) -> PResult<()> {
         if self.tok.tok == Tok::Comma {
             return self.bump().map(drop);
-        }
-        if let (Some(open), Tok::RBrace) = (exponent, &self.tok.tok) {
-            let inner = self.src[open.end..self.tok.span.start].trim();
-            return Err(ParseError::new(
-                open.to(self.tok.span),
-                format!(
-                    "an exponent is written in parentheses, ^({inner}), not in braces: a brace \
-                     opens a Poisson bracket {{f, g}} (only e^{{…}} is the exponential)"
-                ),
-            ));
         }
         let msg = "expected ',' between the two arguments of a bracket {f, g}";
         Err(self.error(format!("{msg}, found {}", self.found())))
@@ -606,6 +623,83 @@ impl Parser<'_> {
         Ok(Expr::new(
             ExprKind::Bracket(Box::new(f), Box::new(g)),
             open.to(close),
+        ))
+    }
+
+    /// Whether the current token is a `{` (not a bracket's `\{`) just after `^` or `**` whose
+    /// braces hold no `,` outside parentheses and inner braces: an exponent in braces, as
+    /// LaTeX writes it (`x^{2}`, `x^{-2}`, `x^{2/3}`); `x^{f, g}` is `x` to the power of a
+    /// bracket.
+    fn exponent_in_braces(&self) -> bool {
+        let after_caret = self
+            .prev
+            .is_some_and(|s| matches!(&self.src[s.start..s.end], "^" | "**"));
+        let span = self.tok.span;
+        if !after_caret || &self.src[span.start..span.end] != "{" {
+            return false;
+        }
+        let mut depth = 0usize;
+        for c in self.src[span.end..].chars() {
+            match c {
+                '{' | '(' => depth += 1,
+                '}' | ')' if depth == 0 => return true,
+                '}' | ')' => depth -= 1,
+                ',' if depth == 0 => return false,
+                _ => {}
+            }
+        }
+        true
+    }
+
+    /// Parses an exponent in braces, `{2}` of `x^{2}`: the expression they hold, its span
+    /// widened to them as a parenthesized one's is.
+    fn exponent_group(&mut self) -> PResult<Expr> {
+        let open = self.bump()?.span;
+        let mut inner = self.nested(open, |p| p.expr(0))?;
+        let close = self.expect_close(Tok::RBrace, '}', open)?;
+        inner.span = open.to(close);
+        Ok(inner)
+    }
+
+    /// Parses a group in braces that a LaTeX command at `command` takes, its `what`
+    /// (`\frac{a}{b}`'s numerator and denominator, `\sqrt{x}`'s radicand): the expression,
+    /// its span widened to the braces.
+    fn command_group(&mut self, command: Span, what: &str) -> PResult<Expr> {
+        let span = self.tok.span;
+        if self.tok.tok != Tok::LBrace || &self.src[span.start..span.end] != "{" {
+            let name = &self.src[command.start..command.end];
+            return Err(self.error(format!(
+                "expected '{{' with the {what} of '{name}', found {}; write \\frac{{1}}{{2}}, \
+                 \\sqrt{{x}}",
+                self.found()
+            )));
+        }
+        self.exponent_group()
+    }
+
+    /// Parses `\frac{a}{b}` (or `\tfrac`, `\dfrac`): the quotient `a/b`.
+    fn frac(&mut self) -> PResult<Expr> {
+        let command = self.bump()?.span;
+        let (num, den) = self.nested(command, |p| {
+            let num = p.command_group(command, "numerator")?;
+            let height = p.height;
+            let den = p.command_group(command, "denominator")?;
+            p.height = grow(height.max(p.height), command)?;
+            Ok((num, den))
+        })?;
+        let span = command.to(den.span);
+        Ok(Expr::new(ExprKind::Div(Box::new(num), Box::new(den)), span))
+    }
+
+    /// Parses `\sqrt{x}`: the call `sqrt(x)`, which reads a declared radical.
+    fn sqrt(&mut self) -> PResult<Expr> {
+        let command = self.bump()?.span;
+        let arg = self.nested(command, |p| p.command_group(command, "radicand"))?;
+        self.height = grow(self.height, command)?;
+        let span = command.to(arg.span);
+        Ok(Expr::new(
+            ExprKind::Call("sqrt".to_string(), command, vec![arg]),
+            span,
         ))
     }
 

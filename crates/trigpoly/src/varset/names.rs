@@ -318,6 +318,26 @@ const GREEK: &[(&str, &str, &str)] = &[
     ("Upsilon", "Υ", r"\Upsilon"),
 ];
 
+/// The letter a LaTeX command writes in a name (`omega` of `\omega` → `ω`, `varphi` → `φ`,
+/// `hbar` → `ħ`), as the expressions' names spell it; `None` for a command that is no letter.
+/// Both of the forms LaTeX has for epsilon, phi and theta are taken, whichever one a paper
+/// uses.
+pub(crate) fn letter_of_command(command: &str) -> Option<&'static str> {
+    let extra = match command {
+        "phi" | "varphi" => Some("φ"),
+        "epsilon" | "varepsilon" => Some("ε"),
+        "hbar" => Some("ħ"),
+        "ell" => Some("ℓ"),
+        _ => None,
+    };
+    extra.or_else(|| {
+        GREEK
+            .iter()
+            .find(|g| g.2.strip_prefix('\\') == Some(command))
+            .map(|g| g.1)
+    })
+}
+
 /// A unicode name with its Greek letters spelled out, piece by piece between underscores and
 /// before trailing digits: `p_θ` → `p_theta`, `ω1` → `omega1`, `Ω_x` → `Omega_x`; `None` for an
 /// ASCII name, which has none.

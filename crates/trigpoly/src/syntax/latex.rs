@@ -1,0 +1,298 @@
+//! LaTeX math in expressions, as a paper writes them and as superint prints them: commands
+//! (`\omega`, `\frac`, `\cdot`, `\cos`), names with subscripts in braces (`p_{x}`,
+//! `p_{\theta}`, `\omega_{x,2}`, `\bar{K}_{3,2}`), the bracket `\{f, g\}`, and spacing
+//! (`\,`, `\quad`, `\left(`), which the lexer reads beside the plain syntax.
+//!
+//! A name written in LaTeX becomes the name the plain syntax reads: each letter command its
+//! letter (`\omega` is `ω`, which names `omega` too), a subscript after `_`, its pieces
+//! apart by `_` (`\omega_{x,2}` is `ω_x_2`, `K_{1,1}` is `K_1_1`), a bar `\bar{Z}` or
+//! `\overline{Z}` the letter with a combining macron (`Z̄`, as a display name writes it).
+//! A name that is printed otherwise than it is named (`G_{1}` of a function `G1`, `\bar{Z}`
+//! of `Zbar`) is told by the system's names, where its LaTeX spells it
+//! ([`latex_name`] of the LaTeX it prints).
+
+use super::error::{ParseError, Span};
+use super::lexer::{Lexer, Tok};
+use crate::varset::letter_of_command;
+
+/// Commands that space or size and mean nothing to an expression: `\quad`, `\left(`,
+/// `\bigl(`, `\displaystyle`.
+const IGNORED: &[&str] = &[
+    "quad",
+    "qquad",
+    "left",
+    "right",
+    "big",
+    "Big",
+    "bigg",
+    "Bigg",
+    "bigl",
+    "bigr",
+    "Bigl",
+    "Bigr",
+    "biggl",
+    "biggr",
+    "Biggl",
+    "Biggr",
+    "displaystyle",
+    "textstyle",
+];
+
+/// Commands whose braces hold a name set upright: `\mathrm{i}`, `\operatorname{Re}`.
+const UPRIGHT: &[&str] = &["mathrm", "operatorname", "mathit", "text"];
+
+/// The name a text of LaTeX writes, when the whole text is one name: `p_{\theta}` → `p_θ`,
+/// `G_{1}` → `G_1`, `\bar{K}` → `K̄`, `\omega_{x,2}` → `ω_x_2`; `None` for anything else
+/// (`x y`, `\frac{1}{2}`). A system reads a name written in LaTeX as the name whose printed
+/// LaTeX this spells the same.
+///
+/// ```
+/// use trigpoly::syntax::latex_name;
+///
+/// assert_eq!(latex_name(r"p_{\theta}").as_deref(), Some("p_θ"));
+/// assert_eq!(latex_name(r"\bar{K}_{3,2}").as_deref(), Some("K̄_3_2"));
+/// assert_eq!(latex_name("G_{1}'").as_deref(), Some("G_1'"));
+/// assert_eq!(latex_name(r"x \cdot y"), None);
+/// ```
+pub fn latex_name(src: &str) -> Option<String> {
+    let mut lexer = Lexer::new(src);
+    let Ok(token) = lexer.next_token() else {
+        return None;
+    };
+    match (token.tok, lexer.next_token().map(|t| t.tok)) {
+        (Tok::Name(name), Ok(Tok::Eof)) => Some(name),
+        _ => None,
+    }
+}
+
+/// The control word at the start of `rest` (after its backslash), and its length with the
+/// backslash: `\omega x` → (`omega`, 6); a control symbol, `\,`, is its one character.
+fn command(rest: &str) -> Option<(&str, usize)> {
+    let after = rest.strip_prefix('\\')?;
+    let letters = after
+        .find(|c: char| !c.is_ascii_alphabetic())
+        .unwrap_or(after.len());
+    if letters > 0 {
+        return Some((&after[..letters], letters + 1));
+    }
+    let c = after.chars().next()?;
+    Some((&after[..c.len_utf8()], c.len_utf8() + 1))
+}
+
+impl Lexer<'_> {
+    /// The length of the spacing or sizing command at the start of `rest` (`\,`, `\quad`,
+    /// `\left`), which is skipped as a space is; `None` for any other text.
+    pub(crate) fn latex_space(rest: &str) -> Option<usize> {
+        let (word, len) = command(rest)?;
+        let space = matches!(word, "," | ";" | ":" | "!" | " ") || IGNORED.contains(&word);
+        space.then_some(len)
+    }
+
+    /// The token of the command whose backslash is at `start` (already consumed): an
+    /// operator, `\frac`, `\sqrt`, a brace of a bracket `\{ \}`, or a name.
+    pub(crate) fn latex_token(&mut self, start: usize) -> Result<Tok, ParseError> {
+        let Some((word, len)) = command(&self.src[start..]) else {
+            let span = Span::new(start, self.pos);
+            let msg = "expected a LaTeX command after '\\', found end of input";
+            return Err(ParseError::new(span, msg));
+        };
+        let tok = match word {
+            "{" => Tok::LBrace,
+            "}" => Tok::RBrace,
+            "cdot" | "times" | "ast" => Tok::Star,
+            "div" => Tok::Slash,
+            "frac" | "tfrac" | "dfrac" => Tok::Frac,
+            "sqrt" => Tok::Sqrt,
+            "cos" | "sin" | "exp" => Tok::Name(word.to_string()),
+            "Re" | "Im" => Tok::Name(word.to_string()),
+            _ => {
+                self.pos = start;
+                let name = self.latex_base()?;
+                return Ok(Tok::Name(self.name_rest(name, true)?));
+            }
+        };
+        self.pos = start + len;
+        Ok(tok)
+    }
+
+    /// A name that starts with a command at the current position: a letter (`\omega`), a bar
+    /// over a name (`\bar{Z}`), or an upright name (`\mathrm{i}`, `\operatorname{Re}`).
+    fn latex_base(&mut self) -> Result<String, ParseError> {
+        let start = self.pos;
+        let Some((word, len)) = command(&self.src[start..]) else {
+            let span = Span::new(start, self.src.len());
+            let msg = "expected a LaTeX command after '\\', found end of input";
+            return Err(ParseError::new(span, msg));
+        };
+        self.pos = start + len;
+        if let Some(letter) = letter_of_command(word) {
+            return Ok(letter.to_string());
+        }
+        match word {
+            "bar" | "overline" => {
+                let inner = self.group(start, word)?;
+                if inner.is_empty() {
+                    return Err(self.empty_group(start, word));
+                }
+                Ok(format!("{inner}\u{304}"))
+            }
+            _ if UPRIGHT.contains(&word) => {
+                let inner = self.group(start, word)?;
+                if inner.is_empty() {
+                    return Err(self.empty_group(start, word));
+                }
+                Ok(inner)
+            }
+            _ => Err(self.unknown_command(start, word)),
+        }
+    }
+
+    /// The error for an unknown command `\word` at `start`.
+    fn unknown_command(&self, start: usize, word: &str) -> ParseError {
+        let len = word.len() + 1;
+        let span = Span::new(start, start + len);
+        ParseError::new(
+            span,
+            format!(
+                "unknown LaTeX command '\\{word}': an expression reads Greek letters (\\omega), \
+                 \\frac, \\sqrt, \\cdot, \\times, \\cos, \\sin, \\exp, \\bar, \\mathrm, \\{{ \\}} \
+                 and spacing"
+            ),
+        )
+    }
+
+    /// The error for `\word{}` with nothing in its braces.
+    fn empty_group(&self, start: usize, word: &str) -> ParseError {
+        let span = Span::new(start, self.pos);
+        ParseError::new(span, format!("'\\{word}{{}}' holds no name"))
+    }
+
+    /// The name after a name `name` (a plain name's letters, or a command's): a subscript
+    /// after `_` (for a plain name, one in braces or a command, `p_{x}` and `p_\theta`, the
+    /// plain `p_x` being the plain name's own) and the primes after a name written in LaTeX
+    /// (`G_{1}'`).
+    pub(crate) fn name_rest(&mut self, name: String, latex: bool) -> Result<String, ParseError> {
+        // Primes, `y'`, as LaTeX writes a display name `y'`, and before a subscript, `K'_{2,3}`.
+        let primed = !name.ends_with('_') && self.src[self.pos..].starts_with('\'');
+        let mut name = self.primes(name);
+        let latex = latex || primed;
+        let rest = &self.src[self.pos..];
+        let subscript = match name.ends_with('_') {
+            // The plain name took the `_`.
+            true => rest.starts_with(['{', '\\']),
+            false if latex && rest.starts_with('_') => {
+                self.pos += 1;
+                name.push('_');
+                true
+            }
+            false => false,
+        };
+        if !subscript {
+            return Ok(match latex {
+                true => self.primes(name),
+                false => name,
+            });
+        }
+        let piece = self.script()?;
+        name.push_str(&piece);
+        Ok(self.primes(name))
+    }
+
+    /// `name` with the primes after it (`G_{1}'`, `y'`).
+    fn primes(&mut self, mut name: String) -> String {
+        while self.src[self.pos..].starts_with('\'') {
+            self.pos += 1;
+            name.push('\'');
+        }
+        name
+    }
+
+    /// A subscript after its `_`: a group in braces, a command, or one letter or digit.
+    fn script(&mut self) -> Result<String, ParseError> {
+        let start = self.pos;
+        match self.src[start..].chars().next() {
+            Some('{') => self.group_at(start),
+            Some('\\') => self.script_command(),
+            Some(c) if c.is_alphanumeric() => {
+                self.pos += c.len_utf8();
+                Ok(c.to_string())
+            }
+            _ => {
+                let end = self.src[start..].chars().next().map_or(0, char::len_utf8);
+                let span = Span::new(start.saturating_sub(1), start + end);
+                Err(ParseError::new(
+                    span,
+                    "expected a subscript after '_': a letter, a digit, or a name in braces, \
+                     p_{x}",
+                ))
+            }
+        }
+    }
+
+    /// A command in a name or a subscript: a letter, a bar or an upright name.
+    fn script_command(&mut self) -> Result<String, ParseError> {
+        self.latex_base()
+    }
+
+    /// The braces after `\word` (at `start`), which must follow it, and the name they hold.
+    fn group(&mut self, start: usize, word: &str) -> Result<String, ParseError> {
+        let at = self.pos;
+        if !self.src[at..].starts_with('{') {
+            let span = Span::new(start, at);
+            return Err(ParseError::new(
+                span,
+                format!("expected '{{' after '\\{word}', as in \\{word}{{Z}}"),
+            ));
+        }
+        self.group_at(at)
+    }
+
+    /// The name a group in braces at `open` holds, its pieces apart by `_` (a `,` or `;`
+    /// between them, as family indices are written) and its letters' commands as letters:
+    /// `{x,2}` → `x_2`, `{\theta}` → `θ`.
+    fn group_at(&mut self, open: usize) -> Result<String, ParseError> {
+        self.pos = open + 1;
+        let mut out = String::new();
+        loop {
+            let rest = &self.src[self.pos..];
+            let Some(c) = rest.chars().next() else {
+                let span = Span::new(open, open + 1);
+                return Err(ParseError::new(
+                    span,
+                    "the '{' of this name is never closed: expected '}'",
+                ));
+            };
+            match c {
+                '}' => {
+                    self.pos += 1;
+                    return Ok(out);
+                }
+                c if c.is_whitespace() => self.pos += c.len_utf8(),
+                ',' | ';' | '_' => {
+                    self.pos += 1;
+                    out.push('_');
+                }
+                '{' => out.push_str(&self.group_at(self.pos)?),
+                '\\' if Self::latex_space(rest).is_some() => {
+                    self.pos += Self::latex_space(rest).unwrap_or(1);
+                }
+                '\\' => out.push_str(&self.script_command()?),
+                '+' | '-' | '\'' => {
+                    self.pos += 1;
+                    out.push(c);
+                }
+                c if c.is_alphanumeric() => {
+                    self.pos += c.len_utf8();
+                    out.push(c);
+                }
+                c => {
+                    let span = Span::new(self.pos, self.pos + c.len_utf8());
+                    return Err(ParseError::new(
+                        span,
+                        format!("unexpected character {c:?} in a name's braces"),
+                    ));
+                }
+            }
+        }
+    }
+}
