@@ -31,6 +31,88 @@ pub(crate) struct Scope<'a> {
     /// The names run together that the lowering read as products in doubt, not yet kept as
     /// the file's warnings ([`Scope::lower`] keeps them).
     noted: RefCell<Vec<trigpoly::RunTogether>>,
+    /// The names as their LaTeX spells them ([`LatexNames`]), made when a name written in
+    /// LaTeX is first read.
+    latex: RefCell<Option<LatexNames>>,
+}
+
+/// A system's names as their printed LaTeX spells them, read back ([`trigpoly::syntax::latex_name`]):
+/// `G_1` for a function `G1` (printed `G_{1}`), `Z̄` for `Zbar` (`\bar{Z}`), `q_1` for a
+/// variable `q₁`; a family's name, `K̄` for `Kbar`, with an instance's indices after it. A
+/// spelling of two names is none of them.
+#[derive(Default)]
+struct LatexNames {
+    /// A spelling and the name it is, `None` where two names spell it.
+    names: HashMap<String, Option<String>>,
+    /// A family's spelling and its name, `None` where two families spell it.
+    families: HashMap<String, Option<String>>,
+    /// A function's display that is no name, as its LaTeX is written without spaces (`x(t)`,
+    /// `\theta(t)`), and the function, `None` where two display so.
+    calls: HashMap<String, Option<String>>,
+}
+
+/// Keeps `spelled` as the spelling of `name` in `map`, or as none where another name has it.
+fn keep_spelling(map: &mut HashMap<String, Option<String>>, spelled: String, name: &str) {
+    match map.get(&spelled) {
+        Some(Some(other)) if other != name => {
+            map.insert(spelled, None);
+        }
+        Some(_) => {}
+        None => {
+            map.insert(spelled, Some(name.to_string()));
+        }
+    }
+}
+
+impl LatexNames {
+    fn of(file: &LoadedSystem) -> LatexNames {
+        let mut out = LatexNames::default();
+        // A display of several words, `Re A` (`\operatorname{Re} A`), is spelled word by word.
+        let keep = |map: &mut HashMap<String, Option<String>>, latex: &str, name: &str| {
+            let words: Option<Vec<String>> = latex
+                .split_whitespace()
+                .map(trigpoly::syntax::latex_name)
+                .collect();
+            if let Some(spelled) = words.map(|w| w.join(" ")).filter(|s| !s.is_empty()) {
+                keep_spelling(map, spelled, name);
+            }
+        };
+        let vars = file.system.vars();
+        for v in vars.vars() {
+            let var = vars.variable(v);
+            keep(&mut out.names, var.latex(), var.name());
+        }
+        for f in file.system.functions() {
+            let latex = brackets::table::latex_name(&f.display);
+            keep(&mut out.names, &latex, &f.name);
+            if latex.contains('(') {
+                let written: String = latex.split_whitespace().collect();
+                keep_spelling(&mut out.calls, written, &f.name);
+            }
+        }
+        for f in &file.families {
+            if let Some((_, latex)) = trigpoly::shown_forms(&f.display) {
+                keep(&mut out.families, &latex, &f.name);
+            }
+        }
+        out
+    }
+
+    /// The name that `spelled` (a name written in LaTeX, read) is: a declared name's, or an
+    /// instance of a family, its indices whole numbers or `indices`.
+    fn name(&self, spelled: &str, indices: &[String]) -> Option<String> {
+        if let Some(name) = self.names.get(spelled) {
+            return name.clone();
+        }
+        let mut parts = spelled.rsplitn(3, '_');
+        let (n, m, head) = (parts.next()?, parts.next()?, parts.next()?);
+        let index = |s: &str| {
+            (!s.is_empty() && s.bytes().all(|b| b.is_ascii_digit()))
+                || indices.iter().any(|i| i == s)
+        };
+        let family = self.families.get(head)?.as_ref()?;
+        (index(m) && index(n)).then(|| format!("{family}_{m}_{n}"))
+    }
 }
 
 /// `K_2_3` → (family `K`, 2, 3) among `families`.
@@ -481,6 +563,7 @@ impl<'a> Scope<'a> {
             owner: None,
             made: RefCell::new(HashMap::new()),
             noted: RefCell::new(Vec::new()),
+            latex: RefCell::new(None),
         }
     }
 
@@ -518,7 +601,37 @@ impl<'a> Scope<'a> {
             return Err(text.error(source, ErrorKind::Family, span, message));
         }
         let rewritten = rewrite_braces(&text.value, families, self.indices);
-        parse_expr(&rewritten).map_err(|e| self.display_error(source, text, &e))
+        let mut tree = parse_expr(&rewritten).map_err(|e| self.display_error(source, text, &e))?;
+        self.read_latex_names(text, &mut tree);
+        Ok(tree)
+    }
+
+    /// Renames each name of `tree` written in LaTeX to the name it is ([`Scope::latex_alias`]),
+    /// so that the echo and the lowering see the system's names: `G_{1}` is `G1`.
+    fn read_latex_names(&self, text: &Text, tree: &mut Tree) {
+        let span = tree.span;
+        match &mut tree.kind {
+            ExprKind::Integer(_) => {}
+            ExprKind::Name(name) => *name = self.latex_alias(text, name, span),
+            ExprKind::Call(f, _, _) if self.display_call(text, f, span).is_some() => {
+                let name = self.display_call(text, f, span).unwrap_or_default();
+                tree.kind = ExprKind::Name(name);
+            }
+            ExprKind::Call(f, name_span, args) => {
+                *f = self.latex_alias(text, f, *name_span);
+                args.iter_mut().for_each(|a| self.read_latex_names(text, a));
+            }
+            ExprKind::Neg(a) => self.read_latex_names(text, a),
+            ExprKind::Add(a, b)
+            | ExprKind::Sub(a, b)
+            | ExprKind::Mul(a, b)
+            | ExprKind::Div(a, b)
+            | ExprKind::Pow(a, b)
+            | ExprKind::Bracket(a, b) => {
+                self.read_latex_names(text, a);
+                self.read_latex_names(text, b);
+            }
+        }
     }
 
     /// The error for `e`, or, where it falls on a function's display name written in the text
@@ -655,6 +768,38 @@ impl<'a> Scope<'a> {
             ExprKind::Pow(a, b) => ExprKind::Pow(rec(a)?, rec(b)?),
         };
         Ok(Tree { kind, span })
+    }
+
+    /// The name that `name`, at `span` of `text`, is: where it is written in LaTeX (braces, a
+    /// command or a prime, `G_{1}`, `\bar{Z}`, `y'`) and is no declared name, the one whose printed LaTeX
+    /// spells it the same, if one does ([`LatexNames`]); else `name`.
+    fn latex_alias(&self, text: &Text, name: &str, span: Span) -> String {
+        let written = text.value.get(span.start..span.end).unwrap_or("");
+        if !written.contains(['\\', '{', '\'']) || self.file.declares(name) {
+            return name.to_string();
+        }
+        let mut latex = self.latex.borrow_mut();
+        let names = latex.get_or_insert_with(|| LatexNames::of(self.file));
+        names
+            .name(name, self.indices)
+            .unwrap_or_else(|| name.to_string())
+    }
+
+    /// The function whose display is the call `f(…)` written at `span` of `text` in LaTeX, as
+    /// its display `x(t)` or `θ(t)` prints (`x(t)`, `\theta(t)`), where `f` is no declared
+    /// name (before which parentheses multiply).
+    fn display_call(&self, text: &Text, f: &str, span: Span) -> Option<String> {
+        if self.file.declares(f) {
+            return None;
+        }
+        let written: String = text
+            .value
+            .get(span.start..span.end)?
+            .split_whitespace()
+            .collect();
+        let mut latex = self.latex.borrow_mut();
+        let names = latex.get_or_insert_with(|| LatexNames::of(self.file));
+        names.calls.get(&written)?.clone()
     }
 
     /// Expands `name` (at `span`) if it is an instance of a family this scope sees, for the

@@ -217,6 +217,7 @@ mod cli;
 mod closure_denominators;
 mod denominators;
 mod discovery;
+mod latex_input;
 mod library;
 mod poisson;
 mod radicals;

@@ -1,0 +1,151 @@
+//! Expressions written in LaTeX: what superint prints in LaTeX reads back to the same value,
+//! for every file of `systems/`, and the command line reads LaTeX as it reads the plain syntax.
+
+use superint::render::tex::{math_with, relation, Names};
+use superint::report::Entry;
+use superint::system_file::{check_report, load, ClaimForm, LimitsOverride, LoadedSystem};
+use trigpoly::Style;
+
+use crate::{superint_ok, superint_refused};
+
+/// The files of `systems/`, sorted.
+fn system_files() -> Vec<std::path::PathBuf> {
+    let dir = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("systems");
+    let mut files: Vec<_> = std::fs::read_dir(dir)
+        .expect("systems/")
+        .map(|e| e.expect("an entry").path())
+        .filter(|p| p.extension().is_some_and(|e| e == "toml"))
+        .collect();
+    files.sort();
+    files
+}
+
+/// Whether two values are the same: their difference is zero (a residual's normal form may
+/// keep its content apart from its coefficients otherwise than a parsed one's).
+fn same(a: &trigpoly::Expr, b: &trigpoly::Expr) -> bool {
+    a == b || a.checked_sub(b).is_ok_and(|d| d.is_zero())
+}
+
+/// The value of `latex` in `file`, which must equal `want`: `what` says what it printed.
+#[track_caller]
+fn reads_back(file: &LoadedSystem, what: &str, latex: &str, want: &trigpoly::Expr) {
+    let origin = file.source().origin.clone();
+    match file.parse_argument(latex) {
+        Ok(value) => assert!(
+            same(&value, want),
+            "{origin}: {what} printed as {latex} reads back as {value}, not {want}"
+        ),
+        Err(e) => panic!("{origin}: {what} printed as {latex} does not read back: {e}"),
+    }
+}
+
+/// Every claim of every file of `systems/`, both of its sides as the LaTeX report sets them
+/// (`math_with` of the statement, split at its relation), reads back to the value of the
+/// side as the file writes it; so do the Hamiltonian, expanded and restated, each function's
+/// printed name and value, each residual of a refuted claim and its restatement in the
+/// file's functions (as its ASCII form reads), and each function of a rank claim as the
+/// report names it.
+#[test]
+fn what_superint_prints_in_latex_reads_back_to_the_same_value() {
+    let mut sides = 0;
+    for path in system_files() {
+        let file = load(&path, &LimitsOverride::default()).expect("the file loads");
+        let names = Names::of_system(file.system());
+        let h = file.system().hamiltonian();
+        reads_back(&file, "H", &h.render(Style::Latex), h);
+        for f in file.system().functions() {
+            reads_back(&file, &f.name, &f.expr.render(Style::Latex), &f.expr);
+            let name = brackets::table::latex_name(&f.display);
+            reads_back(&file, &f.name, &name, &f.expr);
+        }
+        for claim in file.claims() {
+            match &claim.form {
+                ClaimForm::Identity { lhs, rhs } => {
+                    let k = relation(&claim.statement).expect("a claim has its '='");
+                    let left = math_with(&claim.statement[..k], &names);
+                    let right = math_with(&claim.statement[k..], &names);
+                    let right = right.strip_prefix('=').expect("the right side follows '='");
+                    for (side, latex) in [(lhs, left.as_str()), (rhs, right)] {
+                        let want = file.parse_argument(&side.value).expect("the side reads");
+                        reads_back(&file, &claim.id, latex, &want);
+                        sides += 1;
+                    }
+                }
+                ClaimForm::Rank { functions, .. } => {
+                    for (shown, text) in functions {
+                        let want = file.parse_argument(&text.value).expect("it reads");
+                        reads_back(&file, &claim.id, &math_with(shown, &names), &want);
+                    }
+                }
+            }
+        }
+        let report = check_report(std::slice::from_ref(&file)).expect("the file checks");
+        for section in &report.sections {
+            for entry in &section.entries {
+                if let Entry::Equations(equations) = entry {
+                    for line in &equations.lines {
+                        reads_back(&file, &line.lhs, &line.rhs.render(Style::Latex), &line.rhs);
+                        if let Some(restated) = line.restated(Style::Latex) {
+                            reads_back(&file, &line.lhs, &restated, &line.rhs);
+                        }
+                    }
+                }
+            }
+        }
+        for claim in report.claims() {
+            if let Some(residual) = &claim.residual {
+                let what = format!("the residual of {}", claim.id);
+                reads_back(&file, &what, &residual.render(Style::Latex), residual);
+                // Restated in the file's functions, the residual holds at the claim's
+                // condition, where there is one: the LaTeX reads as the text does.
+                if let Some(restated) = claim.residual_restated(Style::Latex) {
+                    let text = claim
+                        .residual_restated(Style::Ascii)
+                        .expect("an ASCII form");
+                    let want = file.parse_argument(&text).expect("the text reads back");
+                    reads_back(&file, &what, &restated, &want);
+                }
+            }
+        }
+    }
+    // Every file's claims were read, not none.
+    assert!(sides > 400, "{sides} sides");
+}
+
+/// The command line reads an expression in LaTeX, and refuses an unknown command by name,
+/// with its place, exit status 2.
+#[test]
+fn the_command_line_reads_latex() {
+    let rotor = "systems/harmonic-rotor.toml";
+    let out = superint_ok(&["expand", rotor, r"\frac{1}{2}\omega^{2} L"]);
+    let plain = superint_ok(&["expand", rotor, "omega^2*L/2"]);
+    let value = |out: &str| {
+        let line = out
+            .lines()
+            .find(|l| l.contains(" = "))
+            .expect("an equation");
+        line.split_once(" = ").map(|(_, v)| v.trim().to_string())
+    };
+    assert!(out.contains("(1/2)ω² L"), "{out}");
+    assert_eq!(value(&out), value(&plain), "{out}");
+    // The names as they are printed: G_{1} of G1, \bar{Z} of Zbar, \bar{K}_{3,2} of an
+    // instance of Kbar; the bracket \{ \}.
+    let out = superint_ok(&[
+        "expand",
+        rotor,
+        r"\{G_{1}, G_{2}\} + \omega^{2} L",
+        r"\{\bar{K}_{3,2}, F_{1}\} + i(3\omega - 2\Omega) \bar{K}_{3,2}",
+        r"\left\{\bar{Z}, F_{1}\right\} + i\omega\,\bar{Z}",
+    ]);
+    assert!(out.contains("{G1, G2} + ω² L"), "{out}");
+    assert!(out.contains("{K̄_{3,2}, F1} + i(3ω − 2Ω) K̄_{3,2}"), "{out}");
+    assert_eq!(out.matches("= 0\n").count(), 3, "{out}");
+    let err = superint_refused(&["expand", rotor, r"\omega^{2} \foo"]);
+    assert!(
+        err.contains("<command line>:1:12: unknown LaTeX command '\\foo'"),
+        "{err}"
+    );
+    // A name written in LaTeX that is no name of the file is an unknown name.
+    let err = superint_refused(&["expand", rotor, r"G_{7}"]);
+    assert!(err.contains("unknown name 'G_7'"), "{err}");
+}
