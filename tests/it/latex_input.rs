@@ -6,7 +6,7 @@ use superint::report::Entry;
 use superint::system_file::{check_report, load, ClaimForm, LimitsOverride, LoadedSystem};
 use trigpoly::Style;
 
-use crate::{superint_ok, superint_refused};
+use crate::{scratch_text, superint_ok, superint_refused};
 
 /// The files of `systems/`, sorted.
 fn system_files() -> Vec<std::path::PathBuf> {
@@ -145,7 +145,85 @@ fn the_command_line_reads_latex() {
         err.contains("<command line>:1:12: unknown LaTeX command '\\foo'"),
         "{err}"
     );
+    // A condition in LaTeX.
+    let out = superint_ok(&[
+        "bracket",
+        rotor,
+        "P_{1,1}",
+        "F_{1}",
+        "--when",
+        r"p_{\theta} = I\omega",
+    ]);
+    assert!(
+        out.contains("at p_θ = Iω:\n    {P_{1,1}, F1} = 0\n"),
+        "{out}"
+    );
     // A name written in LaTeX that is no name of the file is an unknown name.
     let err = superint_refused(&["expand", rotor, r"G_{7}"]);
     assert!(err.contains("unknown name 'G_7'"), "{err}");
+}
+
+/// A system file may be written in LaTeX: its Hamiltonian, functions, claims and conditions,
+/// its names as they print (`L_{z}` for a function `Lz` displayed so); an unknown command in
+/// it is refused at its line and column.
+#[test]
+fn a_system_file_reads_latex() {
+    let file = scratch_text(
+        "latex-input",
+        "oscillator.toml",
+        r#"name = "oscillator in LaTeX"
+hamiltonian = '\frac{p_{x}^{2} + p_{y}^{2}}{2M} + \tfrac{1}{2} M\omega^{2}\left(x^{2} + y^{2}\right)'
+
+[phase_space]
+coordinates = ["x", "y"]
+parameters = ["M", "omega"]
+
+[[function]]
+name = "Lz"
+display = "L_z"
+value = 'x\,p_{y} - y\,p_{x}'
+
+[[function]]
+name = "A"
+value = 'p_{x} + \mathrm{i} M\omega x'
+
+[[function]]
+name = "Abar"
+display = "Ā"
+value = '\operatorname{conj}(A)'
+
+[[claim]]
+id = "Lz"
+claim = '\{L_{z}, H\} = 0'
+
+[[claim]]
+id = "ladder"
+claim = '\left\{A, H\right\} = \mathrm{i}\omega A'
+
+[[claim]]
+id = "product"
+claim = 'A \bar{A} = p_{x}^{2} + M^{2}\omega^{2} x^{2}'
+
+[[claim]]
+id = "at"
+claim = '\{x, H\} = \frac{p_{x}}{M}'
+when = 'p_{y} = M\omega x'
+"#,
+    );
+    let path = file.to_str().expect("a path");
+    let out = superint_ok(&["check", path, "--no-timings"]);
+    assert!(out.contains("4 claims in 1 file: 4 proved"), "{out}");
+    assert!(out.contains("A Ā = p_x² + M²ω²x²"), "{out}");
+    let bad = scratch_text(
+        "latex-input",
+        "bad.toml",
+        "hamiltonian = '\\frac{p_{x}^{2}}{2} + \\lambda x^{4}'\n[phase_space]\n\
+         coordinates = [\"x\"]\nparameters = [\"lambda\"]\n[[claim]]\n\
+         claim = '\\{x, H\\} = \\pdot{x}'\n",
+    );
+    let err = superint_refused(&["check", bad.to_str().expect("a path")]);
+    assert!(
+        err.contains("bad.toml:6:21: unknown LaTeX command '\\pdot'"),
+        "{err}"
+    );
 }
