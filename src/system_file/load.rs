@@ -1368,36 +1368,39 @@ impl<'a> Builder<'a> {
                 format!("max_degree must be between 1 and {MAX_DEGREE_CEILING}"),
             ));
         }
-        // A zero given in code is refused as the file's and the command line's are: a term
-        // limit of 0 stopped at the Hamiltonian with 'more than 0 terms', and a work limit of
-        // 0 was taken.
-        let zero = [
-            (
-                self.limits.max_terms == Some(0),
-                "max_terms",
-                "at least 1".to_string(),
-            ),
-            (
-                self.limits.max_degree == Some(0),
-                "max_degree",
-                format!("between 1 and {MAX_DEGREE_CEILING}"),
-            ),
-            (
-                self.limits.max_term_products == Some(0),
-                "max_term_products",
-                "at least 1".to_string(),
-            ),
+        // A limit given in code out of its range is refused as the file's and the command
+        // line's are: a term limit of 0 stopped at the Hamiltonian with 'more than 0 terms', a
+        // work limit of 0 was taken, and a degree limit past the ceiling was lowered to it.
+        let degrees = 1..=MAX_DEGREE_CEILING;
+        let out_of_range = [
+            self.limits
+                .max_terms
+                .filter(|&t| t == 0)
+                .map(|t| ("max_terms", t.to_string(), "at least 1".to_string())),
+            self.limits
+                .max_degree
+                .filter(|d| !degrees.contains(d))
+                .map(|d| {
+                    let range = format!("between 1 and {MAX_DEGREE_CEILING}");
+                    ("max_degree", d.to_string(), range)
+                }),
+            self.limits
+                .max_term_products
+                .filter(|&w| w == 0)
+                .map(|w| ("max_term_products", w.to_string(), "at least 1".to_string())),
         ];
-        if let Some((_, name, range)) = zero.into_iter().find(|z| z.0) {
+        if let Some((name, value, range)) = out_of_range.into_iter().flatten().next() {
             return Err(FileError::new(
                 ErrorKind::Schema,
                 &self.source.origin,
                 format!(
-                    "the LimitsOverride given to the loader sets {name} to 0; it must be {range}"
+                    "the LimitsOverride given to the loader sets {name} to {value}; it must be \
+                     {range}"
                 ),
             ));
         }
-        // Each is positive now, and max_degree at most the ceiling.
+        // Each is positive now, and max_degree at most the ceiling (a file's and the loader's
+        // are refused past it).
         let positive = |t: &Spanned<i64>| u64::try_from(*t.get_ref()).unwrap_or(u64::MAX);
         let given = LimitsOverride {
             max_terms: self

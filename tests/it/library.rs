@@ -570,7 +570,7 @@ fn engine_errors_become_file_errors() {
 /// which a file's `[limits]` and the command line refuse too: the first stopped at the
 /// Hamiltonian with "more than 0 terms", the second was taken and the claims checked.
 #[test]
-fn a_limit_of_zero_is_refused_by_the_loader() {
+fn a_limit_out_of_its_range_is_refused_by_the_loader() {
     let text = std::fs::read_to_string(concat!(
         env!("CARGO_MANIFEST_DIR"),
         "/systems/harmonic-rotor.toml"
@@ -604,6 +604,18 @@ fn a_limit_of_zero_is_refused_by_the_loader() {
         assert!(err.message.contains(&format!("sets {name} to 0")), "{err}");
         assert_eq!((err.kind, err.location), (ErrorKind::Schema, None));
     }
+    // A degree past the ceiling that a file and --max-degree refuse is refused too, not
+    // lowered to it.
+    let past = LimitsOverride {
+        max_degree: Some(32_768),
+        ..LimitsOverride::default()
+    };
+    let err = load_system_text("harmonic-rotor.toml", &text, &past).unwrap_err();
+    assert_eq!(
+        err.message,
+        "the LimitsOverride given to the loader sets max_degree to 32768; it must be between 1 \
+         and 32767"
+    );
     // One is enough: the smallest of each loads.
     let ones = LimitsOverride {
         max_terms: Some(1),

@@ -236,6 +236,10 @@ impl SearchResult {
     /// The `i`-th basis integral as proved for every value of the parameters: lifted and
     /// proved symbolically, or proved where no parameter was fixed. `None` when it holds at
     /// the fixed values only (`x p_y − y p_x` of `p²/2 + (x² + a²y²)/2`, at `a = 1`).
+    ///
+    /// # Panics
+    ///
+    /// If `i` is not below `self.basis.len()`, as indexing the basis does.
     pub fn for_every_value(&self, i: usize) -> Option<&Expr> {
         let f = &self.basis[i];
         match (&f.symbolic, f.proved_fixed && self.parameters.is_empty()) {
