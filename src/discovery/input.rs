@@ -161,8 +161,7 @@ fn parameter(system: &System, name: &str) -> Result<Var, String> {
                 .filter(|&v| vars.variable(v).kind() == trigpoly::VarKind::Parameter)
                 .map(|v| vars.variable(v).name())
                 .collect();
-            let meant = trigpoly::did_you_mean(name, &parameters)
-                .map_or_else(String::new, |k| format!("; did you mean '{k}'?"));
+            let meant = trigpoly::did_you_mean_hint(name, &parameters);
             let known = match parameters.as_slice() {
                 [] => "it has none".to_string(),
                 names => format!("its parameters: {}", names.join(", ")),

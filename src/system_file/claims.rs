@@ -696,8 +696,7 @@ impl AssignmentReader<'_> {
                 .map(|v| vars.variable(v).name())
                 .collect();
             let meant = match &lhs_tree.kind {
-                ExprKind::Name(n) => trigpoly::did_you_mean(n, &settable)
-                    .map_or_else(String::new, |k| format!("; did you mean '{k}'?")),
+                ExprKind::Name(n) => trigpoly::did_you_mean_hint(n, &settable),
                 _ => String::new(),
             };
             return refuse(format!(

@@ -197,8 +197,8 @@ pub struct Warning {
     /// Where the name is written.
     pub location: Option<Box<Location>>,
     /// What was read and why it is in doubt, in one line of plain text with the system's
-    /// printed names: `'Lxx' is read as the product L_x x, the function Lx with x after it: if
-    /// Lxx is a name of its own, declare it; if the product is meant, write Lx*x`.
+    /// printed names: `'Lxx' is read as the product L_x x, the function Lx with x after it:
+    /// declare 'Lxx' if it is a name of its own, or write 'Lx x' for the product`.
     pub message: String,
     /// The same as a report's prose writes it (markup: the product between back quotes), its
     /// place said in words: `'Lxx' (line 12, column 10) is read as the product `L_x x`, …`.

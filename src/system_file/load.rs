@@ -1399,8 +1399,7 @@ impl<'a> Builder<'a> {
                 ),
             ));
         }
-        // Each is positive now, and max_degree at most the ceiling (a file's and the loader's
-        // are refused past it).
+        // Each is positive now, and max_degree at most the ceiling.
         let positive = |t: &Spanned<i64>| u64::try_from(*t.get_ref()).unwrap_or(u64::MAX);
         let given = LimitsOverride {
             max_terms: self
@@ -1413,11 +1412,7 @@ impl<'a> Builder<'a> {
                 .or(degree.map(|d| positive(d) as u32)),
             max_term_products: self.limits.max_term_products.or(work.map(positive)),
         };
-        let limits = given.or_defaults();
-        Ok(Limits {
-            max_degree: limits.max_degree.min(MAX_DEGREE_CEILING),
-            ..limits
-        })
+        Ok(given.or_defaults())
     }
 }
 

@@ -680,8 +680,7 @@ fn not_a_function(file: &LoadedSystem, name: &str, defined: &[String]) -> FileEr
         }
         _ => {
             // A name one slip from a known one is answered with it, as in an expression.
-            let meant = trigpoly::did_you_mean(name, &known)
-                .map_or_else(String::new, |k| format!("; did you mean '{k}'?"));
+            let meant = trigpoly::did_you_mean_hint(name, &known);
             format!("{quoted} is not a function of {of}{meant}")
         }
     };

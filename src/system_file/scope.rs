@@ -613,14 +613,13 @@ impl<'a> Scope<'a> {
         match &mut tree.kind {
             ExprKind::Integer(_) => {}
             ExprKind::Name(name) => *name = self.latex_alias(text, name, span),
-            ExprKind::Call(f, _, _) if self.display_call(text, f, span).is_some() => {
-                let name = self.display_call(text, f, span).unwrap_or_default();
-                tree.kind = ExprKind::Name(name);
-            }
-            ExprKind::Call(f, name_span, args) => {
-                *f = self.latex_alias(text, f, *name_span);
-                args.iter_mut().for_each(|a| self.read_latex_names(text, a));
-            }
+            ExprKind::Call(f, name_span, args) => match self.display_call(text, f, span) {
+                Some(name) => tree.kind = ExprKind::Name(name),
+                None => {
+                    *f = self.latex_alias(text, f, *name_span);
+                    args.iter_mut().for_each(|a| self.read_latex_names(text, a));
+                }
+            },
             ExprKind::Neg(a) => self.read_latex_names(text, a),
             ExprKind::Add(a, b)
             | ExprKind::Sub(a, b)
@@ -692,15 +691,7 @@ impl<'a> Scope<'a> {
     /// The warning for a name of `text` run together and read as a product in doubt: its
     /// place, and the reading in the system's printed names (`L_x x`).
     fn warning(&self, source: &Source, text: &Text, noted: &trigpoly::RunTogether) -> Warning {
-        let system = &self.file.system;
-        let shown = |piece: &str| match system.lookup(piece) {
-            Some(v) => system.vars().variable(v).unicode().to_string(),
-            None => system
-                .functions()
-                .iter()
-                .find(|f| f.name == piece && !f.display.is_empty())
-                .map_or_else(|| piece.to_string(), |f| f.display.clone()),
-        };
+        let shown = |piece: &str| self.file.display_name(piece);
         let location = super::error::locate(&source.text, text.source_span(noted.span));
         let name = trigpoly::quoted_name(&noted.name);
         let plain = noted.reading(&shown, &|p: &str| p.to_string());
@@ -778,10 +769,7 @@ impl<'a> Scope<'a> {
         if !written.contains(['\\', '{', '\'']) || self.file.declares(name) {
             return name.to_string();
         }
-        let mut latex = self.latex.borrow_mut();
-        let names = latex.get_or_insert_with(|| LatexNames::of(self.file));
-        names
-            .name(name, self.indices)
+        self.latex_names(|names| names.name(name, self.indices))
             .unwrap_or_else(|| name.to_string())
     }
 
@@ -797,9 +785,13 @@ impl<'a> Scope<'a> {
             .get(span.start..span.end)?
             .split_whitespace()
             .collect();
+        self.latex_names(|names| names.calls.get(&written)?.clone())
+    }
+
+    /// `read` of the system's names as their LaTeX spells them, made the first time.
+    fn latex_names<R>(&self, read: impl FnOnce(&LatexNames) -> R) -> R {
         let mut latex = self.latex.borrow_mut();
-        let names = latex.get_or_insert_with(|| LatexNames::of(self.file));
-        names.calls.get(&written)?.clone()
+        read(latex.get_or_insert_with(|| LatexNames::of(self.file)))
     }
 
     /// Expands `name` (at `span`) if it is an instance of a family this scope sees, for the

@@ -420,16 +420,8 @@ impl<C: Coefficient> Lower<'_, C> {
             }
             return Ok(acc);
         }
-        let mut known: Vec<String> = self
-            .vars
-            .vars()
-            .map(|v| self.vars.variable(v).name().to_string())
-            .collect();
-        known.extend(self.ctx.names());
-        let meant = match did_you_mean(name, &known) {
-            Some(k) => format!("; did you mean '{k}'?"),
-            None => String::new(),
-        };
+        let known = self.known_names();
+        let meant = did_you_mean_hint(name, &known);
         Err(ParseError::new(
             span,
             format!(
@@ -469,14 +461,9 @@ impl<C: Coefficient> Lower<'_, C> {
     /// Tells the context of `name`, at `span`, read as the product of `pieces`, if that
     /// reading is in doubt ([`RunTogether::doubt`]).
     fn note_split(&self, name: &str, span: Span, pieces: &[String]) {
-        let functions = self.ctx.names();
-        let mut known: Vec<String> = self
-            .vars
-            .vars()
-            .map(|v| self.vars.variable(v).name().to_string())
-            .collect();
-        known.extend(functions.iter().cloned());
-        let function = |p: &str| self.vars.lookup(p).is_none() && functions.iter().any(|f| f == p);
+        let known = self.known_names();
+        // A piece that is no variable is one of the context's names.
+        let function = |p: &str| self.vars.lookup(p).is_none() && known.iter().any(|k| k == p);
         if let Some(doubt) = RunTogether::doubt(name, pieces, &known, &function) {
             self.ctx.run_together(RunTogether {
                 name: name.to_string(),
@@ -485,6 +472,17 @@ impl<C: Coefficient> Lower<'_, C> {
                 doubt,
             });
         }
+    }
+
+    /// The names an expression may use: the variables', then the context's.
+    fn known_names(&self) -> Vec<String> {
+        let mut known: Vec<String> = self
+            .vars
+            .vars()
+            .map(|v| self.vars.variable(v).name().to_string())
+            .collect();
+        known.extend(self.ctx.names());
+        known
     }
 
     /// Splits a name that is not declared into declared names (`Mω` → `M`, `ω`), longest
@@ -1093,6 +1091,12 @@ pub fn split_names(name: &str, known: &dyn Fn(&str) -> bool) -> Option<Vec<Strin
         at = end;
     }
     (out.len() > 1).then_some(out)
+}
+
+/// `; did you mean 'p_x'?`, to follow a message about `name` that is none of `known`, where
+/// [`did_you_mean`] finds the one meant; else nothing.
+pub fn did_you_mean_hint(name: &str, known: &[impl AsRef<str>]) -> String {
+    did_you_mean(name, known).map_or_else(String::new, |k| format!("; did you mean '{k}'?"))
 }
 
 /// The known name that `name` was probably meant to be: the same letters but for case and

@@ -79,6 +79,14 @@ fn command(rest: &str) -> Option<(&str, usize)> {
     Some((&after[..c.len_utf8()], c.len_utf8() + 1))
 }
 
+/// The error for a backslash at the end of the text, at `span`.
+fn no_command(span: Span) -> ParseError {
+    ParseError::new(
+        span,
+        "expected a LaTeX command after '\\', found end of input",
+    )
+}
+
 impl Lexer<'_> {
     /// The length of the spacing or sizing command at the start of `rest` (`\,`, `\quad`,
     /// `\left`), which is skipped as a space is; `None` for any other text.
@@ -92,9 +100,7 @@ impl Lexer<'_> {
     /// operator, `\frac`, `\sqrt`, a brace of a bracket `\{ \}`, or a name.
     pub(crate) fn latex_token(&mut self, start: usize) -> Result<Tok, ParseError> {
         let Some((word, len)) = command(&self.src[start..]) else {
-            let span = Span::new(start, self.pos);
-            let msg = "expected a LaTeX command after '\\', found end of input";
-            return Err(ParseError::new(span, msg));
+            return Err(no_command(Span::new(start, self.pos)));
         };
         let tok = match word {
             "{" => Tok::LBrace,
@@ -120,30 +126,21 @@ impl Lexer<'_> {
     fn latex_base(&mut self) -> Result<String, ParseError> {
         let start = self.pos;
         let Some((word, len)) = command(&self.src[start..]) else {
-            let span = Span::new(start, self.src.len());
-            let msg = "expected a LaTeX command after '\\', found end of input";
-            return Err(ParseError::new(span, msg));
+            return Err(no_command(Span::new(start, self.src.len())));
         };
         self.pos = start + len;
         if let Some(letter) = letter_of_command(word) {
             return Ok(letter.to_string());
         }
-        match word {
-            "bar" | "overline" => {
-                let inner = self.group(start, word)?;
-                if inner.is_empty() {
-                    return Err(self.empty_group(start, word));
-                }
-                Ok(format!("{inner}\u{304}"))
-            }
-            _ if UPRIGHT.contains(&word) => {
-                let inner = self.group(start, word)?;
-                if inner.is_empty() {
-                    return Err(self.empty_group(start, word));
-                }
-                Ok(inner)
-            }
-            _ => Err(self.unknown_command(start, word)),
+        let barred = matches!(word, "bar" | "overline");
+        if !barred && !UPRIGHT.contains(&word) {
+            return Err(self.unknown_command(start, word));
+        }
+        let inner = self.group(start, word)?;
+        match (inner.is_empty(), barred) {
+            (true, _) => Err(self.empty_group(start, word)),
+            (false, true) => Ok(format!("{inner}\u{304}")),
+            (false, false) => Ok(inner),
         }
     }
 
@@ -188,10 +185,7 @@ impl Lexer<'_> {
             false => false,
         };
         if !subscript {
-            return Ok(match latex {
-                true => self.primes(name),
-                false => name,
-            });
+            return Ok(name);
         }
         let piece = self.script()?;
         name.push_str(&piece);
@@ -212,7 +206,7 @@ impl Lexer<'_> {
         let start = self.pos;
         match self.src[start..].chars().next() {
             Some('{') => self.group_at(start),
-            Some('\\') => self.script_command(),
+            Some('\\') => self.latex_base(),
             Some(c) if c.is_alphanumeric() => {
                 self.pos += c.len_utf8();
                 Ok(c.to_string())
@@ -227,11 +221,6 @@ impl Lexer<'_> {
                 ))
             }
         }
-    }
-
-    /// A command in a name or a subscript: a letter, a bar or an upright name.
-    fn script_command(&mut self) -> Result<String, ParseError> {
-        self.latex_base()
     }
 
     /// The braces after `\word` (at `start`), which must follow it, and the name they hold.
@@ -273,10 +262,10 @@ impl Lexer<'_> {
                     out.push('_');
                 }
                 '{' => out.push_str(&self.group_at(self.pos)?),
-                '\\' if Self::latex_space(rest).is_some() => {
-                    self.pos += Self::latex_space(rest).unwrap_or(1);
-                }
-                '\\' => out.push_str(&self.script_command()?),
+                '\\' => match Self::latex_space(rest) {
+                    Some(len) => self.pos += len,
+                    None => out.push_str(&self.latex_base()?),
+                },
                 '+' | '-' | '\'' => {
                     self.pos += 1;
                     out.push(c);
