@@ -62,11 +62,11 @@ pub struct SystemFilesDoctests;
 /// Everything a user of the library needs: `use superint::prelude::*;`.
 pub mod prelude {
     pub use brackets::{
-        check_tower, closure, closure_of, eigen_proof, eigen_proof_of, expressed_in, rank, search,
-        systems, BracketTable, CanonicalPair, Claim, Closure, ClosureBracket, ClosureOptions,
-        Condition, EigenProof, EngineError, Entry as TableEntry, Expressed, FunctionName, Integral,
-        NamedFunction, Outcome, PhaseSpace, RankCertificate, Relation, SearchOptions, SearchResult,
-        SearchSpace, System, TowerReport, UpperBound, Verdict,
+        check_tower, closure, closure_of, eigen_proof, eigen_proof_of, expressed_in, rank, rank_on,
+        search, systems, BracketTable, CanonicalPair, Claim, Closure, ClosureBracket,
+        ClosureOptions, Condition, EigenProof, EngineError, Entry as TableEntry, Expressed,
+        FunctionName, Integral, NamedFunction, Outcome, PhaseSpace, RankCertificate, Relation,
+        SearchOptions, SearchResult, SearchSpace, System, TowerReport, UpperBound, Verdict,
     };
     pub use trigpoly::{
         AlgebraError, Expr, GaussianRational, Limits, ParseError, Point, Poly, Rational, Style,

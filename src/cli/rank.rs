@@ -16,10 +16,13 @@ Examples:
   superint rank systems/harmonic-rotor.toml F1 F2 G1 G2 L --expect 4
   superint rank systems/harmonic-rotor.toml F1 'F2 + L' --format json
   superint rank systems/henon-heiles.toml H K --when 'A = 1, B = 1, C = 2'
+  superint rank systems/harmonic-rotor.toml F1 G1 G2 P_1_1 --when 'p_theta = I*omega'
 
 The rank of ∂(F_1, …, F_k)/∂(q, p) over the rational functions: at least r by an r × r minor
 that is nonzero at an exact rational point, at most r by the (r+1) × (r+1) minors that border it
-vanishing identically (Kronecker's bordered-minor theorem: then every larger minor vanishes).";
+vanishing identically (Kronecker's bordered-minor theorem: then every larger minor vanishes).
+On a level set (--when 'p_theta = I*omega') it is the rank of the functions restricted to it:
+the condition substituted, the Jacobian by the phase variables it leaves free.";
 
 /// Arguments of `superint rank`.
 #[derive(Debug, Args)]
@@ -34,8 +37,9 @@ pub struct RankArgs {
     #[arg(long, allow_negative_numbers = true, value_name = "R",
           value_parser = super::Quoting(super::a_rank))]
     expect: Option<usize>,
-    /// Values of parameters, such as 'a = 1' (as a rank claim's `when`; a condition on phase
-    /// space is refused: the rank is that of the Jacobian on the whole phase space).
+    /// Values of parameters, such as 'a = 1', or a level set of phase variables, such as
+    /// 'p_theta = I*omega', on which the rank is that of the functions restricted to it (as a
+    /// rank claim's `when`; several separated by commas).
     #[arg(long, value_name = "CONDITION")]
     when: Option<String>,
     #[command(flatten)]

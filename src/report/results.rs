@@ -563,7 +563,7 @@ impl RankResult {
         certificate: RankCertificate,
     ) -> Self {
         let vars = system.vars().clone();
-        let coordinates = system.space().coordinates();
+        let coordinates = certificate.coordinates.clone();
         let statement = Self::statement(&names, &vars, &coordinates, expected);
         let proved = certificate.rank == expected;
         let note = (!proved).then(|| format!("the rank is {}", certificate.rank));
@@ -617,7 +617,8 @@ pub struct RankResult {
     pub functions: Vec<String>,
     /// The variables of the system (for printing the point and the coordinates).
     pub vars: Vars,
-    /// The phase-space coordinates, in the Jacobian's column order.
+    /// The Jacobian's columns: the phase-space coordinates, in order, or on a level set those
+    /// its condition leaves free (the certificate's).
     pub coordinates: Vec<Var>,
     /// The rank the paper states.
     pub expected: usize,

@@ -5,10 +5,12 @@
 use std::ops::Range;
 use std::time::Instant;
 
-use brackets::{rank, Claim, Condition, EngineError, Outcome};
+use brackets::{
+    level_set_coordinates, rank, rank_restricted, Claim, Condition, EngineError, Outcome,
+};
 use toml::Spanned;
 use trigpoly::syntax::{Expr as Tree, ExprKind};
-use trigpoly::{AlgebraError, Expr, Span, Var, VarKind};
+use trigpoly::{AlgebraError, Expr, Span, VarKind};
 
 use super::error::{ErrorKind, FileError};
 use super::model::{ClaimModel, When};
@@ -204,20 +206,20 @@ impl ClaimSpec {
         };
         let when = match &c.when {
             None => None,
-            Some(w) => Some((condition_texts(file, w)?, w.span())),
+            Some(w) => Some(condition_texts(file, w)?),
         };
         let expect = c.expect.as_ref().map_or(Expect::Proved, |e| *e.get_ref());
         ClaimSpec::read(file, source, id, text, when, expect, c.claim.span())
     }
 
     /// Reads a claim's text of `source` (`text`, written at `span`) with its condition's
-    /// pieces, if any, and where the condition is written.
+    /// pieces, if any.
     pub(crate) fn read(
         file: &LoadedSystem,
         source: &Source,
         id: String,
         text: Text,
-        when: Option<(Vec<Text>, Range<usize>)>,
+        when: Option<Vec<Text>>,
         expect: Expect,
         span: Range<usize>,
     ) -> Result<ClaimSpec, FileError> {
@@ -225,19 +227,33 @@ impl ClaimSpec {
         let (lhs, rhs) = claim_sides(source, &text)?;
         let lhs_tree = scope.tree(source, &lhs)?;
         let rhs_tree = scope.tree(source, &rhs)?;
-        let (form, statement) = match &lhs_tree.kind {
+        let form = match &lhs_tree.kind {
             ExprKind::Call(f, _, args) if f == "rank" => {
                 rank_form(file, source, &lhs, args, &rhs, &rhs_tree)?
             }
-            _ => {
-                let statement = format!("{} = {}", file.pretty(&lhs_tree), file.pretty(&rhs_tree));
-                (ClaimForm::Identity { lhs, rhs }, statement)
-            }
+            _ => ClaimForm::Identity { lhs, rhs },
         };
         let condition = match when {
             None => None,
-            Some((pieces, when_span)) => {
-                Some(claim_condition(file, source, &pieces, when_span, &form)?)
+            Some(pieces) => Some(claim_condition(file, source, &pieces, &form)?),
+        };
+        let statement = match &form {
+            ClaimForm::Rank {
+                functions,
+                expected,
+            } => {
+                // On a level set, by the phase variables it leaves free.
+                let names: Vec<&str> = functions.iter().map(|f| f.0.as_str()).collect();
+                let space = file.system.space();
+                let coordinates = match &condition {
+                    Some(c) => level_set_coordinates(space, c)
+                        .map_err(|e| engine_error(source, span.clone(), &e))?,
+                    None => space.coordinates(),
+                };
+                RankResult::statement(&names, file.system.vars(), &coordinates, *expected)
+            }
+            ClaimForm::Identity { .. } => {
+                format!("{} = {}", file.pretty(&lhs_tree), file.pretty(&rhs_tree))
             }
         };
         Ok(ClaimSpec {
@@ -295,8 +311,7 @@ fn claim_sides(source: &Source, text: &Text) -> Result<(Text, Text), FileError> 
 }
 
 /// A rank claim `rank(F, G, …) = r` (`lhs` the call, `args` its arguments): its form, each
-/// function as printed with its text, and its statement in the paper's notation,
-/// `rank ∂(F, G)/∂(x, p_x) = r`.
+/// function as printed with its text.
 fn rank_form(
     file: &LoadedSystem,
     source: &Source,
@@ -304,7 +319,7 @@ fn rank_form(
     args: &[Tree],
     rhs: &Text,
     rhs_tree: &Tree,
-) -> Result<(ClaimForm, String), FileError> {
+) -> Result<ClaimForm, FileError> {
     let expected = claimed_rank(source, rhs, rhs_tree)?;
     // Family instances written K_{1,1} are K_1_1 in the rewritten text, at the
     // same places.
@@ -313,16 +328,10 @@ fn rank_form(
         .iter()
         .map(|a| (file.pretty(a), rewritten.slice(a.span.start..a.span.end)))
         .collect();
-    let names: Vec<&str> = functions.iter().map(|f| f.0.as_str()).collect();
-    let coordinates = file.system.space().coordinates();
-    let statement = RankResult::statement(&names, file.system.vars(), &coordinates, expected);
-    Ok((
-        ClaimForm::Rank {
-            functions,
-            expected,
-        },
-        statement,
-    ))
+    Ok(ClaimForm::Rank {
+        functions,
+        expected,
+    })
 }
 
 /// The rank that a rank claim's right side states: a whole number, refused when it is none
@@ -347,30 +356,21 @@ fn claimed_rank(source: &Source, rhs: &Text, rhs_tree: &Tree) -> Result<usize, F
     Ok(expected)
 }
 
-/// The condition of a claim of the given form, read from the pieces of its `when`, which is
-/// written at `when_span`.
+/// The condition of a claim of the given form, read from the pieces of its `when`. A rank
+/// claim's describes a level set ([`Condition::level_set`]): it sets parameters to numbers or
+/// other parameters, and phase variables to values in them and the other phase variables.
 fn claim_condition(
     file: &LoadedSystem,
     source: &Source,
     pieces: &[Text],
-    when_span: Range<usize>,
     form: &ClaimForm,
 ) -> Result<Condition, FileError> {
-    let condition = parse_condition(file, source, pieces)?;
-    // A parameter set to a function of phase space (k = p_x) would change the
-    // Jacobian, not only evaluate it: its value, too, must be free of them.
-    if let (ClaimForm::Rank { .. }, Some((v, kind))) = (form, condition.phase_variable()) {
-        return Err(source.error(
-            ErrorKind::Condition,
-            when_span,
-            format!(
-                "a rank claim's condition may set parameters only, to numbers or \
-                 other parameters, and it holds {v}, {kind}: the rank is that of \
-                 the Jacobian on the whole phase space"
-            ),
-        ));
+    match form {
+        ClaimForm::Rank { .. } => {
+            parse_condition_with(file, source, pieces, |c| c.level_set().map(drop))
+        }
+        ClaimForm::Identity { .. } => parse_condition(file, source, pieces),
     }
-    Ok(condition)
 }
 
 /// The pieces of `when`: `var = value` texts separated by commas, or an array of them.
@@ -406,6 +406,18 @@ pub(crate) fn parse_condition(
     source: &Source,
     pieces: &[Text],
 ) -> Result<Condition, FileError> {
+    parse_condition_with(file, source, pieces, |_| Ok(()))
+}
+
+/// [`parse_condition`] with what the condition's use asks of it besides (`check`): a refusal
+/// of a variable ([`EngineError::RefusedCondition`]) is shown at its value, as the reading's
+/// own are.
+pub(crate) fn parse_condition_with(
+    file: &LoadedSystem,
+    source: &Source,
+    pieces: &[Text],
+    check: impl Fn(&Condition) -> Result<(), EngineError>,
+) -> Result<Condition, FileError> {
     let usage = "a condition reads `variable = value`, such as \"p_theta = 2*I*omega/3\"";
     let vars = file.system.vars();
     let admit = |v: trigpoly::Var| {
@@ -435,25 +447,29 @@ pub(crate) fn parse_condition(
         .iter()
         .map(|a| (a.var, a.value.clone()))
         .collect();
-    Condition::all(&text, subs).map_err(|e| {
-        // A refused condition is shown at the value of the variable it is about, or at the
-        // variable where it may not be set at all (a radical, `r = 1`, or a denominator).
-        let at = match &e {
-            EngineError::RefusedCondition { var, .. } => assignments.iter().find(|a| a.var == *var),
-            _ => None,
-        };
-        let a = at.unwrap_or(&assignments[0]);
-        let side = match vars.variable(a.var).kind() {
-            VarKind::Radical | VarKind::Denominator if at.is_some() => &a.lhs,
-            _ => &a.rhs,
-        };
-        side.error(
-            source,
-            ErrorKind::Condition,
-            side.trimmed_span(),
-            e.to_string(),
-        )
-    })
+    Condition::all(&text, subs)
+        .and_then(|c| check(&c).map(|()| c))
+        .map_err(|e| {
+            // A refused condition is shown at the value of the variable it is about, or at the
+            // variable where it may not be set at all (a radical, `r = 1`, or a denominator).
+            let at = match &e {
+                EngineError::RefusedCondition { var, .. } => {
+                    assignments.iter().find(|a| a.var == *var)
+                }
+                _ => None,
+            };
+            let a = at.unwrap_or(&assignments[0]);
+            let side = match vars.variable(a.var).kind() {
+                VarKind::Radical | VarKind::Denominator if at.is_some() => &a.lhs,
+                _ => &a.rhs,
+            };
+            side.error(
+                source,
+                ErrorKind::Condition,
+                side.trimmed_span(),
+                e.to_string(),
+            )
+        })
 }
 
 /// How a list of `var = value` reads, for its messages.
@@ -856,7 +872,8 @@ impl LoadedSystem {
                     .iter()
                     .map(|(_, t)| scope.parse(&spec.source, t))
                     .collect::<Result<_, _>>()?;
-                // A condition sets parameters only (checked when the claim was read).
+                // The functions restricted to the condition's level set (a condition on
+                // parameters alone sets their values).
                 if let Some(c) = &spec.condition {
                     exprs = exprs
                         .iter()
@@ -869,27 +886,24 @@ impl LoadedSystem {
                     functions.iter().map(|f| f.0.clone()).collect(),
                     &exprs,
                     *expected,
+                    spec.condition.as_ref(),
                 )?;
                 rank.claim.written = Some(spec.written.clone());
-                if let Some(c) = &spec.condition {
-                    // The parameters it sets have their values there, not the point's.
-                    let set = |v: &Var| c.subs().iter().any(|(w, _)| w == v);
-                    rank.certificate.point.retain(|(v, _)| !set(v));
-                    rank.claim = rank.claim.at(Some(c.forms()));
-                }
                 Ok(CheckedClaim::Rank(Box::new(rank)))
             }
         }
     }
 
     /// The certified rank of functions as a report entry, answering `claim`; `expected` is the
-    /// claimed rank.
+    /// claimed rank. Under a `condition`, `exprs` have it substituted already, and the rank is
+    /// that on its level set ([`brackets::rank_restricted`]), shown at the condition.
     pub(crate) fn rank_result(
         &self,
         claim: RankClaim<'_>,
         names: Vec<String>,
         exprs: &[Expr],
         expected: usize,
+        condition: Option<&Condition>,
     ) -> Result<RankResult, FileError> {
         let RankClaim {
             source,
@@ -903,7 +917,11 @@ impl LoadedSystem {
             return Err(source.error(ErrorKind::Claim, span, "a rank needs at least one function"));
         }
         let space = self.system.space();
-        let cert = rank(space, exprs).map_err(|e| {
+        let cert = match condition {
+            Some(c) => rank_restricted(space, exprs, c),
+            None => rank(space, exprs),
+        };
+        let cert = cert.map_err(|e| {
             // An error of one function's derivatives (a limit) is shown at that function; one
             // of them all (no sample point where they are defined) at the whole claim.
             let coordinates = space.coordinates();
@@ -917,6 +935,7 @@ impl LoadedSystem {
         let mut result = RankResult::new(id, &self.system, names, expected, cert);
         result.claim = result
             .claim
+            .at(condition.map(Condition::forms))
             .expecting(expect)
             .timed(start.elapsed().as_secs_f64());
         Ok(result)

@@ -227,7 +227,7 @@ impl LoadedSystem {
         }
         let (source, claim_at, when_at) = two_lines(&origin, claim, when);
         let text = Text::within(&source, claim_at.clone());
-        let when = when_at.map(|at| (Text::within(&source, at.clone()).split(','), at));
+        let when = when_at.map(|at| Text::within(&source, at).split(','));
         let spec = ClaimSpec::read(
             self,
             &source,

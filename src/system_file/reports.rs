@@ -9,7 +9,7 @@ use std::time::Instant;
 use brackets::{BracketTable, Condition, System};
 use trigpoly::{Expr, VarKind};
 
-use super::claims::{engine_error, parse_condition, CheckedClaim, RankClaim};
+use super::claims::{engine_error, parse_condition, parse_condition_with, CheckedClaim, RankClaim};
 use super::error::{ErrorKind, FileError};
 use super::scope::{instance_of, rewrite_braces};
 use super::text::Text;
@@ -398,6 +398,15 @@ impl LoadedSystem {
         let pieces = Text::whole(&source).split(',');
         parse_condition(self, &source, &pieces)
     }
+
+    /// A rank's condition given as text, read as [`LoadedSystem::condition`] reads one and
+    /// refused, at the value, where it describes no level set ([`Condition::level_set`]: a
+    /// parameter set to a function of phase space).
+    pub fn rank_condition(&self, text: &str) -> Result<Condition, FileError> {
+        let source = self.given("<condition>", text);
+        let pieces = Text::whole(&source).split(',');
+        parse_condition_with(self, &source, &pieces, |c| c.level_set().map(drop))
+    }
 }
 
 impl LoadedSystem {
@@ -701,9 +710,9 @@ pub fn rank_report(
     rank_report_when(file, functions, expected, None)
 }
 
-/// [`rank_report`] at values of parameters, as a rank claim's `when` sets them (`a = 1`): a
-/// condition on phase space is refused, since the rank is that of the Jacobian on the whole
-/// phase space.
+/// [`rank_report`] on a condition, as a rank claim's `when` gives one: at values of parameters
+/// (`a = 1`), or on the level set of phase variables (`p_theta = I*omega`), the rank of the
+/// functions restricted to it, by the phase variables it leaves free.
 pub fn rank_report_when(
     file: &LoadedSystem,
     functions: &[impl AsRef<str>],
@@ -716,23 +725,7 @@ pub fn rank_report_when(
         .map(|f| file.argument(f.as_ref()))
         .collect::<Result<Vec<_>, _>>()?;
     file.refuse_repeated(functions, "a rank")?;
-    let condition = command_condition(file, when)?;
-    if let (Some(text), Some((v, kind))) =
-        (when, condition.as_ref().and_then(|c| c.phase_variable()))
-    {
-        let source = file.given("<condition>", text);
-        let whole = Text::whole(&source);
-        return Err(whole.error(
-            &source,
-            ErrorKind::Condition,
-            whole.trimmed_span(),
-            format!(
-                "a rank's condition may set parameters only, to numbers or other parameters, \
-                 and it holds {v}, {kind}: the rank is that of the Jacobian on the whole phase \
-                 space"
-            ),
-        ));
-    }
+    let condition = when.map(|w| file.rank_condition(w)).transpose()?;
     let mut names = Vec::new();
     let mut exprs = Vec::new();
     for arg in &parsed {
@@ -770,18 +763,18 @@ pub fn rank_report_when(
         functions: spans,
         start,
     };
-    let mut rank = file.rank_result(claim, names.clone(), &exprs, expected.unwrap_or(0))?;
+    let mut rank = file.rank_result(
+        claim,
+        names.clone(),
+        &exprs,
+        expected.unwrap_or(0),
+        condition.as_ref(),
+    )?;
     if expected.is_none() {
         // No claim: the rank is what was found.
         rank.expected = rank.certificate.rank;
         rank.claim.proved = true;
         rank.claim.note = None;
-    }
-    if let Some(c) = &condition {
-        // The parameters it sets have their values there, not the point's.
-        let set = |v: &trigpoly::Var| c.subs().iter().any(|(w, _)| w == v);
-        rank.certificate.point.retain(|(v, _)| !set(v));
-        rank.claim = rank.claim.at(Some(c.forms()));
     }
     let vars = file.system.vars();
     let coordinates: Vec<&str> = rank

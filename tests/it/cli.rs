@@ -1308,8 +1308,9 @@ fn cli_table_writes_an_entry_in_the_functions_where_it_can() {
 }
 
 /// `rank --when` sets parameters as a rank claim's `when` does: the two energies of the planar
-/// oscillator are dependent at `a = 1` only. A condition on phase space is refused. `rank` had
-/// no `--when`, though a file's rank claim takes one.
+/// oscillator are dependent at `a = 1` only, where the report is as it was before a condition
+/// could set a phase variable, byte for byte. A parameter set to a function of phase space is
+/// refused. `rank` had no `--when`, though a file's rank claim takes one.
 #[test]
 fn cli_rank_takes_a_condition_on_parameters() {
     let file = crate::scratch_text(
@@ -1336,18 +1337,100 @@ fn cli_rank_takes_a_condition_on_parameters() {
         (stdout(&o), stderr(&o))
     };
     let (isotropic, _) = at("a = 1", 0);
-    assert!(isotropic.contains("= 1 at a = 1"), "{isotropic}");
-    assert!(
-        !isotropic.contains(", a = "),
-        "the point leaves a out: {isotropic}"
+    let body = isotropic.split_once("══\n").expect("a section").1;
+    assert_eq!(
+        body,
+        "  rank ∂(H, (p_x² + x² + p_y² + y²)/2)/∂(x, y, p_x, p_y) = 1 at a = 1  [rank proved]\n\
+         \x20     ≥ 1: the minor ∂(H)/∂(x) = 2 ≠ 0 at\n\
+         \x20       x = 2, y = 3/2, p_x = 5/3, p_y = 7\n\
+         \x20     ≤ 1: every 2 × 2 minor vanishes identically, as the 3 bordering the minor \
+         above do\n\
+         \n\
+         1 claim in 1 file: 1 proved, 0 refuted; all as expected\n"
     );
     let (anisotropic, _) = at("a = 4", 1);
     assert!(anisotropic.contains("the rank is 2"), "{anisotropic}");
-    let (_, refused) = at("x = 1", 2);
-    assert!(
-        refused.contains("a rank's condition may set parameters only"),
-        "{refused}"
+    let (_, refused) = at("a = x", 2);
+    assert_eq!(
+        refused,
+        "superint: error: <command line>:1:5: the condition sets the parameter a to a function \
+         of phase space (it holds x, a coordinate): a rank's condition sets parameters to \
+         numbers or other parameters, and a phase variable to a value in them and the other \
+         phase variables, the rank being that on its level set\n \
+         1 | a = x\n   |     ^\n"
     );
+}
+
+/// `rank --when` on a level set: the rotor's functions restricted to the resonance
+/// `p_θ = Iω`, where `F2 = p_θ²/(2I)` is constant, so that C17's five functions have rank 4,
+/// by the five phase variables but `p_θ`; the value of a condition may use another's variable
+/// (`p_θ = Iω, ω = 2`, read as `p_θ = 2I`), as in every `when`. A condition that is no level
+/// set is refused at its place, with exit status 2: a variable set twice or in terms of
+/// itself, directly or in a cycle, an angle or its cosine, a parameter set to a function of
+/// phase space.
+#[test]
+fn cli_rank_on_a_level_set() {
+    let rotor = "systems/harmonic-rotor.toml";
+    let c17 = ["F1", "F2", "G1", "G2", "P_1_1"];
+    let rank = |when: &str, expect: &str, code: i32| {
+        let mut args = vec!["rank", rotor];
+        args.extend(c17);
+        args.extend(["--when", when, "--expect", expect, "--no-timings"]);
+        let o = superint_exits(&args, code);
+        (stdout(&o), stderr(&o))
+    };
+    let (four, _) = rank("p_theta = I*omega", "4", 0);
+    assert!(
+        four.contains(
+            "rank ∂(F1, F2, G1, G2, P_{1,1})/∂(x, y, θ, p_x, p_y) = 4 at p_θ = Iω  [rank proved]"
+        ),
+        "{four}"
+    );
+    assert!(
+        !four.contains("p_θ = 13/3"),
+        "the point leaves p_θ out: {four}"
+    );
+    assert!(
+        four.contains("≤ 4: every 5 × 5 minor vanishes identically"),
+        "{four}"
+    );
+    let (five, _) = rank("p_theta = I*omega", "5", 1);
+    assert!(five.contains("[rank REFUTED]"), "{five}");
+    assert!(five.contains("the rank is 4"), "{five}");
+    let (resolved, _) = rank("p_theta = I*omega, omega = 2", "4", 0);
+    assert!(resolved.contains("= 4 at p_θ = Iω, ω = 2"), "{resolved}");
+    assert!(!resolved.contains("ω = 19/2"), "{resolved}");
+    for (when, message) in [
+        ("x = p_x, x = 2", "1:10: 'x' is fixed twice"),
+        (
+            "p_x = 2*p_x",
+            "1:7: the condition sets p_x in terms of itself",
+        ),
+        (
+            "x = p_y, p_y = x",
+            "1:5: the condition sets x in terms of itself",
+        ),
+        (
+            "theta = 0",
+            "1:1: a condition cannot fix an angle: functions depend on it through cos, sin, exp",
+        ),
+        (
+            "cos(theta) = 1/2",
+            "1:1: the left side of a condition is one declared variable",
+        ),
+        (
+            "p_theta = I*omega, I = x",
+            "1:24: the condition sets the parameter I to a function of phase space (it holds x, \
+             a coordinate)",
+        ),
+    ] {
+        let (out, err) = rank(when, "4", 2);
+        assert!(out.is_empty(), "{when}: {out}");
+        assert!(
+            err.starts_with(&format!("superint: error: <command line>:{message}")),
+            "{when}: {err}"
+        );
+    }
 }
 
 /// A negative number given to a numeric option is refused by the option's own check, not as an

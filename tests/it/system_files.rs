@@ -982,14 +982,23 @@ fn bad_inputs() -> Vec<(&'static str, Vec<u8>, &'static str, Vec<&'static str>)>
             "bad.toml:14:10: a claim reads `lhs = rhs`",
             check.clone(),
         ),
+        // A rank on a level set: each phase variable set once, to a value free of itself.
         (
-            "rank claim with a condition on phase space",
+            "rank claim on a level set that sets a variable in terms of itself",
             base_with(
                 "claim = \"{A, H} = i*omega*A\"",
-                "claim = \"rank(A, H) = 1\"\nwhen = \"x = 0\"",
+                "claim = \"rank(A, H) = 1\"\nwhen = \"x = p_x, p_x = 1 - x\"",
             ),
-            "bad.toml:15:8: a rank claim's condition may set parameters only, to numbers or \
-             other parameters, and it holds x, a coordinate",
+            "bad.toml:15:13: the condition sets x in terms of itself",
+            check.clone(),
+        ),
+        (
+            "rank claim on a level set that sets a variable twice",
+            base_with(
+                "claim = \"{A, H} = i*omega*A\"",
+                "claim = \"rank(A, H) = 1\"\nwhen = [\"p_x = M\", \"p_x = omega\"]",
+            ),
+            "bad.toml:15:21: 'p_x' is fixed twice",
             check.clone(),
         ),
         (
@@ -998,8 +1007,9 @@ fn bad_inputs() -> Vec<(&'static str, Vec<u8>, &'static str, Vec<&'static str>)>
                 "claim = \"{A, H} = i*omega*A\"",
                 "claim = \"rank(A, H) = 1\"\nwhen = \"omega = p_x\"",
             ),
-            "bad.toml:15:8: a rank claim's condition may set parameters only, to numbers or \
-             other parameters, and it holds p_x, a momentum",
+            "bad.toml:15:17: the condition sets the parameter ω to a function of phase space \
+             (it holds p_x, a momentum): a rank's condition sets parameters to numbers or other \
+             parameters, and a phase variable to a value in them and the other phase variables",
             check.clone(),
         ),
         (
@@ -1551,6 +1561,76 @@ fn rank_claims_under_a_parameter_condition() {
     assert_eq!(isotropic["condition"], "a = 1");
     assert_eq!(isotropic["condition_ascii"], "a = 1");
     assert_eq!(isotropic["rank"], 1);
+}
+
+/// A rank claim's condition may set a phase variable: the rank is then that of the functions
+/// restricted to its level set, the condition substituted and the Jacobian taken by the other
+/// phase variables. On `p_y = x` the function `p_y − x` vanishes, so that `H` and it have rank
+/// 1 there (2 on the whole plane); four functions have rank 3 on the three-dimensional level
+/// set, which the number of its coordinates bounds. Each format says so: the Jacobian by
+/// `(x, y, p_x)` at `p_y = x`, with a point that leaves out `p_y`.
+#[test]
+fn rank_claims_on_a_level_set() {
+    let dir = scratch("rank-level-set");
+    let file = "hamiltonian = \"(p_x^2 + p_y^2)/2 + (x^2 + y^2)/2\"\n\
+                [phase_space]\ncoordinates = [\"x\", \"y\"]\n\
+                [[claim]]\nid = \"whole\"\nclaim = \"rank(H, p_y - x) = 2\"\n\
+                [[claim]]\nid = \"level\"\nclaim = \"rank(H, p_y - x) = 1\"\nwhen = \"p_y = x\"\n\
+                [[claim]]\nid = \"level-false\"\nclaim = \"rank(H, p_y - x) = 2\"\n\
+                when = \"p_y = x\"\nexpect = \"refuted\"\n\
+                [[claim]]\nid = \"columns\"\nclaim = \"rank(x, y, p_x, p_y) = 3\"\n\
+                when = \"p_y = x\"\n";
+    std::fs::write(dir.join("level.toml"), file).expect("write");
+    let run = |format: &str| {
+        let o = superint_in(
+            &dir,
+            &["check", "level.toml", "--format", format, "--no-timings"],
+        );
+        assert_eq!(o.status.code(), Some(0), "{}", text(&o.stderr));
+        text(&o.stdout)
+    };
+    let out = run("text");
+    for line in [
+        "rank ∂(H, p_y − x)/∂(x, y, p_x, p_y) = 2",
+        "rank ∂(H, p_y − x)/∂(x, y, p_x) = 1 at p_y = x",
+        "[level proved]",
+        "rank ∂(H, p_y − x)/∂(x, y, p_x) = 2 at p_y = x",
+        "[level-false refuted, as expected]",
+        "the rank is 1",
+        "rank ∂(x, y, p_x, p_y)/∂(x, y, p_x) = 3 at p_y = x",
+        "[columns proved]",
+        "≤ 3: there are 3 coordinates",
+    ] {
+        assert!(out.contains(line), "{line}: {out}");
+    }
+    // The points of the claims on the level set leave out p_y, which the condition sets.
+    assert_eq!(out.matches("p_y = ").count(), 1 + 3, "{out}");
+    let markdown = run("markdown");
+    assert!(
+        markdown.contains("`rank ∂(H, p_y − x)/∂(x, y, p_x) = 1` at `p_y = x`"),
+        "{markdown}"
+    );
+    let latex = run("latex");
+    assert!(
+        latex.contains(r"\partial(H, p_{y} - x)/\partial(x, y, p_{x})"),
+        "{latex}"
+    );
+    assert!(latex.contains(r"\text{at } p_{y} = x"), "{latex}");
+    let v: serde_json::Value = serde_json::from_str(&run("json")).expect("JSON");
+    let level = &v["ranks"][1];
+    assert_eq!(level["id"], "level");
+    assert_eq!(level["coordinates"], serde_json::json!(["x", "y", "p_x"]));
+    assert_eq!(level["condition"], "p_y = x");
+    assert_eq!(level["rank"], 1);
+    let point: Vec<&str> = level["point"]
+        .as_array()
+        .expect("a point")
+        .iter()
+        .map(|p| p["variable"].as_str().expect("a name"))
+        .collect();
+    assert_eq!(point, ["x", "y", "p_x"]);
+    assert_eq!(v["ranks"][2]["outcome"], "refuted");
+    assert_eq!(v["ranks"][3]["upper_bound"]["kind"], "size");
 }
 
 /// A proof's computed fact parenthesizes a base function that is a sum: `i p_x + ix` would

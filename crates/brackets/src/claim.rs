@@ -253,6 +253,57 @@ impl Condition {
         })
     }
 
+    /// The phase variables the condition sets (coordinates, momenta, Poisson variables), in
+    /// its order: it describes their level set, the graph of their values over the other
+    /// variables, which is what a rank on it ([`crate::rank_on`]) differentiates by.
+    /// `p_θ = Iω` gives `[p_θ]`; `ω = 1/2` gives none.
+    ///
+    /// Refused ([`EngineError::RefusedCondition`]) where the condition sets an angle (its
+    /// `e^{iθ}`, no coordinate of its own) or a parameter to a function of phase space
+    /// (`ω = p_x`, which changes the functions rather than restricting them).
+    pub fn level_set(&self) -> Result<Vec<Var>, EngineError> {
+        let mut set = Vec::new();
+        for (v, value) in &self.subs {
+            let vars = value.vars();
+            let name = vars.variable(*v).unicode();
+            match vars.variable(*v).kind() {
+                VarKind::Angle => {
+                    return Err(refused(
+                        *v,
+                        format!(
+                            "the condition sets the angle {name}: a rank's condition may set \
+                             parameters, coordinates, momenta and Poisson variables, and an \
+                             angle's condition sets e^{{i{name}}}, no coordinate of the \
+                             Jacobian"
+                        ),
+                    ))
+                }
+                VarKind::Parameter => {
+                    let phase = vars.vars().find(|&w| {
+                        vars.variable(w).kind() != VarKind::Parameter && value.contains(w)
+                    });
+                    if let Some(w) = phase {
+                        let w = vars.variable(w);
+                        return Err(refused(
+                            *v,
+                            format!(
+                                "the condition sets the parameter {name} to a function of phase \
+                                 space (it holds {}, {}): a rank's condition sets parameters to \
+                                 numbers or other parameters, and a phase variable to a value \
+                                 in them and the other phase variables, the rank being that on \
+                                 its level set",
+                                w.unicode(),
+                                w.kind().described()
+                            ),
+                        ));
+                    }
+                }
+                _ => set.push(*v),
+            }
+        }
+        Ok(set)
+    }
+
     /// Applies the substitution.
     pub fn apply(&self, e: &Expr) -> Result<Expr, EngineError> {
         self.within(e.vars())?;

@@ -42,7 +42,9 @@ pub use closure::{
 };
 pub use error::{EngineError, JacobiViolation};
 pub use phase::{CanonicalPair, DeclaredBracket, Gradient, PhaseSpace};
-pub use rank::{rank, RankCertificate, UpperBound};
+pub use rank::{
+    level_set_coordinates, rank, rank_on, rank_restricted, RankCertificate, UpperBound,
+};
 pub use search::{search, Integral, SearchOptions, SearchResult, SearchSpace, SpaceVariables};
 pub use system::{NamedFunction, System};
 pub use table::{BracketTable, Entry, FunctionName};

@@ -3,12 +3,15 @@
 //! for the lower bound; for the upper bound, the size of the matrix or every minor one larger
 //! that borders the nonzero one vanishing identically (Kronecker's bordered-minor theorem: then
 //! every larger minor vanishes, and `(k − r)(n − r)` minors stand for all `C(k, r+1) C(n, r+1)`).
+//! On a level set (`p_θ = Iω`, [`rank_on`]) the functions are restricted to it, the condition
+//! substituted, and the Jacobian taken by the phase variables it leaves free.
 
 use std::collections::HashMap;
 
 use itertools::Itertools;
 use trigpoly::{Expr, GaussianRational, Point, Rational, Var, VarKind};
 
+use crate::claim::Condition;
 use crate::error::EngineError;
 use crate::linalg::Matrix;
 use crate::phase::PhaseSpace;
@@ -55,11 +58,15 @@ impl std::fmt::Display for UpperBound {
 pub struct RankCertificate {
     /// The rank.
     pub rank: usize,
+    /// The Jacobian's columns: every phase variable ([`PhaseSpace::coordinates`]), or on a
+    /// level set ([`rank_on`]) those its condition leaves free.
+    pub coordinates: Vec<Var>,
     /// Indices of the functions of the nonzero minor.
     pub minor_rows: Vec<usize>,
     /// The coordinates of the nonzero minor.
     pub minor_cols: Vec<Var>,
-    /// The exact point: a value for each variable (angles as `cos + i sin`).
+    /// The exact point: a value for each variable (angles as `cos + i sin`), but those a
+    /// level set's condition sets ([`rank_on`]).
     pub point: Vec<(Var, GaussianRational)>,
     /// The minor's value there (nonzero).
     pub minor_value: GaussianRational,
@@ -102,7 +109,97 @@ const PRIMES: [i64; 16] = [2, 3, 5, 7, 11, 13, 17, 19, 23, 29, 31, 37, 41, 43, 4
 /// # Ok::<(), brackets::EngineError>(())
 /// ```
 pub fn rank(space: &PhaseSpace, functions: &[Expr]) -> Result<RankCertificate, EngineError> {
-    let coords = space.coordinates();
+    rank_by(space, functions, space.coordinates())
+}
+
+/// Certifies the rank of the functions restricted to the level set of `condition`: each
+/// function with the condition substituted (which parametrises the level set by the variables
+/// it leaves free, exactly), its Jacobian by the phase variables the condition does not set
+/// ([`Condition::level_set`]). A condition that sets parameters only gives the rank of
+/// [`rank`] at their values. The certificate's point leaves out what the condition sets.
+///
+/// Refused where the condition sets an angle or a parameter to a function of phase space
+/// ([`Condition::level_set`]), or sets to zero a variable a function divides by
+/// ([`Condition::apply_where_defined`]).
+///
+/// ```
+/// use brackets::{rank_on, systems, Condition};
+///
+/// // At the resonance p_θ = Iω the rotor's level set has five dimensions: there F2 = p_θ²/(2I)
+/// // is constant, and H, G1, G2 and P_{1,1} have rank 4, the most that integrals of a flow
+/// // on it can have.
+/// let rotor = systems::harmonic_rotor();
+/// let get = |name: &str| rotor.get(name).cloned();
+/// let at = Condition::all("p_θ = Iω", vec![(rotor.var("p_theta"), rotor.parse("I*omega")?)])?;
+/// let four = vec![get("F1")?, get("G1")?, get("G2")?, rotor.resonant("Z", 1, 1)?.p];
+/// let certificate = rank_on(rotor.space(), &four, &at)?;
+/// assert_eq!(certificate.rank, 4);
+/// assert!(!certificate.coordinates.contains(&rotor.var("p_theta")));
+/// let mut five = four.clone();
+/// five.push(get("F2")?);
+/// assert_eq!(rank_on(rotor.space(), &five, &at)?.rank, 4);
+/// # Ok::<(), brackets::EngineError>(())
+/// ```
+pub fn rank_on(
+    space: &PhaseSpace,
+    functions: &[Expr],
+    condition: &Condition,
+) -> Result<RankCertificate, EngineError> {
+    let restricted = functions
+        .iter()
+        .map(|f| condition.apply_where_defined(f, "a function"))
+        .collect::<Result<Vec<_>, _>>()?;
+    rank_restricted(space, &restricted, condition)
+}
+
+/// [`rank_on`] for functions that already have the condition substituted (as
+/// [`Condition::apply_where_defined`] does): refused where one of them still holds a phase
+/// variable the condition sets, whose column the Jacobian would leave out.
+pub fn rank_restricted(
+    space: &PhaseSpace,
+    restricted: &[Expr],
+    condition: &Condition,
+) -> Result<RankCertificate, EngineError> {
+    let coords = level_set_coordinates(space, condition)?;
+    let set = |v: &Var| condition.subs().iter().any(|(w, _)| w == v);
+    if let Some(v) = space
+        .coordinates()
+        .into_iter()
+        .find(|v| set(v) && restricted.iter().any(|f| f.contains(*v)))
+    {
+        return Err(EngineError::Invalid(format!(
+            "a function restricted to the level set of {condition} still holds {}, which the \
+             condition sets",
+            space.vars().variable(v).unicode()
+        )));
+    }
+    let mut cert = rank_by(space, restricted, coords)?;
+    // What the condition sets has its value there, not the point's.
+    cert.point.retain(|(v, _)| !set(v));
+    Ok(cert)
+}
+
+/// The Jacobian's columns for a rank on the level set of `condition` ([`rank_on`]): the phase
+/// variables ([`PhaseSpace::coordinates`]) but those it sets, in their order; refused as
+/// [`Condition::level_set`] refuses.
+pub fn level_set_coordinates(
+    space: &PhaseSpace,
+    condition: &Condition,
+) -> Result<Vec<Var>, EngineError> {
+    let set = condition.level_set()?;
+    Ok(space
+        .coordinates()
+        .into_iter()
+        .filter(|v| !set.contains(v))
+        .collect())
+}
+
+/// The certified rank of the Jacobian of `functions` by the phase variables `coords`.
+fn rank_by(
+    space: &PhaseSpace,
+    functions: &[Expr],
+    coords: Vec<Var>,
+) -> Result<RankCertificate, EngineError> {
     let jac: Vec<Vec<Expr>> = functions
         .iter()
         .map(|f| {
@@ -349,6 +446,7 @@ fn certificate_at(
     }
     Ok(RankCertificate {
         rank: r,
+        coordinates: coords.to_vec(),
         minor_rows: rows,
         minor_cols: cols.iter().map(|&j| coords[j]).collect(),
         point: values,
@@ -571,6 +669,57 @@ mod tests {
         assert_eq!(rank(&space, &chosen).unwrap().rank, 7);
         // And one of them less lowers it.
         assert_eq!(rank(&space, &chosen[1..]).unwrap().rank, 6);
+    }
+
+    /// On the level set `p_y = x` the function `p_y − x` vanishes: with `L` it has rank 1
+    /// there (2 on the whole space), by the five phase variables but `p_y`. The certificate's
+    /// point leaves out `p_y` and the parameter `ω` the condition sets.
+    #[test]
+    fn a_rank_on_a_level_set_drops_the_set_variable() {
+        let rotor = harmonic_rotor();
+        let p = |s: &str| rotor.parse(s).unwrap();
+        let functions = [p("p_y - x"), p("L")];
+        assert_eq!(rank(rotor.space(), &functions).unwrap().rank, 2);
+        let (p_y, omega) = (rotor.var("p_y"), rotor.var("omega"));
+        let at = Condition::all("p_y = x, ω = 2", vec![(p_y, p("x")), (omega, p("2"))]).unwrap();
+        let cert = rank_on(rotor.space(), &functions, &at).unwrap();
+        assert_eq!(cert.rank, 1);
+        let coordinates = rotor.space().coordinates();
+        assert_eq!(cert.coordinates.len(), coordinates.len() - 1);
+        assert!(!cert.coordinates.contains(&p_y));
+        assert!(cert.point.iter().all(|(v, _)| *v != p_y && *v != omega));
+        assert!(matches!(cert.upper, UpperBound::VanishingMinors { .. }));
+        // Functions that still hold p_y would be differentiated as if it were a parameter.
+        let unrestricted = rank_restricted(rotor.space(), &functions, &at).unwrap_err();
+        assert!(
+            unrestricted.to_string().contains("still holds p_y"),
+            "{unrestricted}"
+        );
+    }
+
+    /// A level set sets coordinates, momenta and parameters: an angle (its `e^{iθ}`) has no
+    /// column to drop, and a parameter set to a function of phase space changes the
+    /// functions, not where they are taken.
+    #[test]
+    fn a_level_set_refuses_an_angle_and_a_parameter_on_phase_space() {
+        let rotor = harmonic_rotor();
+        let functions = [rotor.parse("L").unwrap()];
+        let refusal = |name: &str, value: &str| {
+            let at = Condition::all(
+                &format!("{name} = {value}"),
+                vec![(rotor.var(name), rotor.parse(value).unwrap())],
+            )
+            .unwrap();
+            match rank_on(rotor.space(), &functions, &at) {
+                Err(EngineError::RefusedCondition { message, .. }) => message,
+                other => panic!("{name} = {value}: {other:?}"),
+            }
+        };
+        assert!(refusal("theta", "1").starts_with("the condition sets the angle θ"));
+        assert!(refusal("omega", "p_x/M").starts_with(
+            "the condition sets the parameter ω to a function of phase space (it holds p_x, a \
+             momentum)"
+        ));
     }
 
     /// A dependent pair keeps its rank with the vanishing minors as the upper bound.
