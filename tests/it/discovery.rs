@@ -535,6 +535,26 @@ const COMMANDS: &[(&str, &str)] = &[
         "pw-closure",
         "superint closure systems/post-winternitz.toml H A B F --degree 6",
     ),
+    (
+        "level-set-1-1",
+        "superint rank systems/harmonic-rotor.toml F1 F2 L G1 G2 P_1_1 Q_1_1 \
+         --when 'p_theta = I*omega'",
+    ),
+    (
+        "level-set-2-3",
+        "superint rank systems/harmonic-rotor.toml F1 L G1 G2 P_2_3 Q_2_3 \
+         --when 'p_theta = 2*I*omega/3'",
+    ),
+    (
+        "level-set-off",
+        "superint rank systems/harmonic-rotor.toml F1 L G1 G2 P_1_1 P_2_3 \
+         --when 'p_theta = I*omega'",
+    ),
+    (
+        "level-set-gravity",
+        "superint rank systems/gravity-rotor.toml F1 F2 Lp G1p G2p Pp_1_1 Qp_1_1 \
+         --when 'p_theta = I*omega'",
+    ),
 ];
 
 /// A system file of `systems/`, loaded.
@@ -5574,5 +5594,71 @@ fn post_winternitz_third_and_fourth_order_integrals_and_a_sixth_order_one_beyond
             "{B, F} = 54(4 H³ − 3 H B − A²) A [B3 proved]",
             "α³ F + 24 H⁴ B + 8 H³ A² + B³ = 16 H⁶ + 9 H² B² + 6 H A² B + A⁴ [R1 proved]",
         ],
+    );
+}
+
+/// The rotor on its resonant level set `p_θ = mIω/n`, of five dimensions: `F2` is constant
+/// there, the oscillator's integrals have rank 3, and `K_{m,n}` adds one (its real and
+/// imaginary parts once, `P² + Q² = 2M(F1 − F2 + ωL)`): rank 4, the most that integrals of a
+/// flow on five dimensions can have, at 1:1 and 2:3 and under gravity. `P_{2,3}`, no integral
+/// at 1:1, takes the rank to the level set's 5. The files' claims on the level set hold, and
+/// their false neighbours (C17's and C25's five functions of rank 5 there, `P, Q` with `F1, L`
+/// of rank 4, the unshifted functions under gravity of rank 3) are refuted.
+#[test]
+fn rotor_rank_on_its_resonant_level_set_is_four() {
+    expect(
+        "level-set-1-1",
+        &[
+            "rank ∂(F1, F2, L, G1, G2, P_{1,1}, Q_{1,1})/∂(x, y, θ, p_x, p_y) = 4 at p_θ = Iω \
+             [rank proved]",
+            "≤ 4: every 5 × 5 minor vanishes identically, as the 3 bordering the minor above do",
+        ],
+    );
+    expect(
+        "level-set-2-3",
+        &["rank ∂(F1, L, G1, G2, P_{2,3}, Q_{2,3})/∂(x, y, θ, p_x, p_y) = 4 at p_θ = 2Iω/3"],
+    );
+    expect(
+        "level-set-off",
+        &[
+            "rank ∂(F1, L, G1, G2, P_{1,1}, P_{2,3})/∂(x, y, θ, p_x, p_y) = 5 at p_θ = Iω",
+            "≤ 5: there are 5 coordinates",
+        ],
+    );
+    expect(
+        "level-set-gravity",
+        &["rank ∂(F1, F2, L', G1', G2', P'_{1,1}, Q'_{1,1})/∂(x, y, θ, p_x, p_y) = 4 at p_θ = Iω"],
+    );
+    for (name, proved, refuted) in [
+        (
+            "harmonic-rotor.toml",
+            "C17-level-set",
+            &["false-C17-level-set", "false-C17-level-set-PQ"],
+        ),
+        (
+            "gravity-rotor.toml",
+            "C25-level-set",
+            &["false-C25-level-set", "false-C25-level-set-unshifted"],
+        ),
+    ] {
+        let report = superint::system_file::check_report([&system_file(name)]).expect("checked");
+        assert!(report.all_as_expected(), "{name}");
+        let ids = report.claim_ids();
+        assert!(ids.contains(&(proved.to_string(), true)), "{name}: {ids:?}");
+        for id in refuted {
+            assert!(ids.contains(&(id.to_string(), false)), "{name}: {ids:?}");
+        }
+    }
+    let count = |name: &str| {
+        let out = superint_ok_line(&format!("check systems/{name} --no-timings"));
+        out.lines().last().expect("a summary").to_string()
+    };
+    assert_eq!(
+        count("harmonic-rotor.toml"),
+        "48 claims in 1 file: 41 proved, 7 refuted; all as expected"
+    );
+    assert_eq!(
+        count("gravity-rotor.toml"),
+        "31 claims in 1 file: 25 proved, 6 refuted; all as expected"
     );
 }
