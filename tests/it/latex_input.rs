@@ -163,6 +163,28 @@ fn the_command_line_reads_latex() {
     assert!(err.contains("unknown name 'G_7'"), "{err}");
 }
 
+/// The square of a name with a prime and a subscript prints on an empty group, `P'_{1,1}{}^{2}`,
+/// and reads back as the square of that name; an empty group that carries no script is
+/// refused.
+#[test]
+fn a_script_on_an_empty_group_belongs_to_the_name_before_it() {
+    let rotor = "systems/gravity-rotor.toml";
+    let text = "Pp_1_1^2 + 3*Lp^2";
+    let out = superint_ok(&["expand", rotor, text, "--format", "latex"]);
+    let printed = r"P'_{1,1}{}^{2} + 3 L'^{2}";
+    assert!(out.contains(&format!("{printed} &= ")), "{out}");
+    let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join(rotor);
+    let file = load(&path, &LimitsOverride::default()).expect("the file loads");
+    let want = file.parse_argument(text).expect("it reads");
+    reads_back(&file, text, printed, &want);
+    reads_back(&file, text, r"P'_{1,1}{ } ^{2} + 3L'^2", &want);
+    let err = file.parse_argument("L'{} + 1").unwrap_err().to_string();
+    assert!(
+        err.contains("expected an expression after '{', found '}'"),
+        "{err}"
+    );
+}
+
 /// A system file may be written in LaTeX: its Hamiltonian, functions, claims and conditions,
 /// its names as they print (`L_{z}` for a function `Lz` displayed so); an unknown command in
 /// it is refused at its line and column.

@@ -96,6 +96,19 @@ impl Lexer<'_> {
         space.then_some(len)
     }
 
+    /// The length of the empty group at the start of `rest` that carries a script (`{}^{2}`,
+    /// as superint prints the square of `P'_{1,1}`), which is skipped as a space is, the script
+    /// going to what stands before it; `None` for any other text, an empty group elsewhere
+    /// being refused by the parser.
+    pub(crate) fn empty_base(rest: &str) -> Option<usize> {
+        let inside = rest.strip_prefix('{')?.trim_start();
+        let after = inside.strip_prefix('}')?;
+        after
+            .trim_start()
+            .starts_with(['^', '_'])
+            .then_some(rest.len() - after.len())
+    }
+
     /// The token of the command whose backslash is at `start` (already consumed): an
     /// operator, `\frac`, `\sqrt`, a brace of a bracket `\{ \}`, or a name.
     pub(crate) fn latex_token(&mut self, start: usize) -> Result<Tok, ParseError> {

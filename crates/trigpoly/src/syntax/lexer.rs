@@ -104,7 +104,8 @@ impl<'a> Lexer<'a> {
     pub(crate) fn next_token(&mut self) -> Result<Token, ParseError> {
         loop {
             self.eat_while(|c| c.is_whitespace() || c == '\u{feff}');
-            match Self::latex_space(&self.src[self.pos..]) {
+            let rest = &self.src[self.pos..];
+            match Self::latex_space(rest).or_else(|| Self::empty_base(rest)) {
                 Some(len) => self.pos += len,
                 None => break,
             }
