@@ -152,6 +152,8 @@ enum Tok {
 pub struct Names {
     /// Each name as written (unicode, display or ASCII) and its LaTeX.
     forms: Vec<(String, String)>,
+    /// Each family's display and its LaTeX, longest first ([`Names::with_families`]).
+    families: Vec<(String, String)>,
 }
 
 impl Names {
@@ -176,7 +178,49 @@ impl Names {
         }
         forms.sort();
         forms.dedup_by(|a, b| a.0 == b.0);
-        Names { forms }
+        Names {
+            forms,
+            families: Vec::new(),
+        }
+    }
+
+    /// These names and the families shown as `displays` (a system file's `K`, `K̄`,
+    /// `Q_theta1`), whose instances a statement writes with their indices in braces,
+    /// `Q_theta1_{1,2}`: each is then written as the expressions write it,
+    /// `Q_{\theta1;1,2}` (it was `Q_{theta1;1,2}`, t·h·e·t·a), a family's LaTeX
+    /// ([`trigpoly::shown_forms`]) with the indices joined to its subscript
+    /// ([`trigpoly::with_indices`]).
+    pub fn with_families<'a>(mut self, displays: impl IntoIterator<Item = &'a str>) -> Names {
+        for display in displays {
+            if let Some((_, latex)) = trigpoly::shown_forms(display) {
+                self.families.push((display.to_string(), latex));
+            }
+        }
+        self.families
+            .sort_by(|a, b| b.0.len().cmp(&a.0.len()).then_with(|| a.cmp(b)));
+        self.families.dedup_by(|a, b| a.0 == b.0);
+        self
+    }
+
+    /// The LaTeX of the family instance written at `chars[i..]` after the digits of a
+    /// coefficient (`2Q_theta1_{1,2}`), and where it ends: a family's display, `_{`, two
+    /// indices of letters and digits apart by a comma, `}`.
+    fn instance(&self, chars: &[char], i: usize) -> Option<(usize, String, usize)> {
+        let digits = chars[i..].iter().take_while(|c| c.is_ascii_digit()).count();
+        let at = i + digits;
+        self.families.iter().find_map(|(display, latex)| {
+            let name: Vec<char> = display.chars().collect();
+            let rest = chars.get(at..)?.strip_prefix(name.as_slice())?;
+            let braced = rest.strip_prefix(&['_', '{'][..])?;
+            let close = braced.iter().position(|&c| c == '}')?;
+            let indices: String = braced[..close].iter().collect();
+            let (m, n) = indices.split_once(',')?;
+            let index = |s: &str| !s.is_empty() && s.chars().all(|c| c.is_ascii_alphanumeric());
+            let end = at + name.len() + 2 + close + 1;
+            let after_name = chars.get(end).is_some_and(|&c| in_name(c));
+            (index(m) && index(n) && !after_name)
+                .then(|| (digits, trigpoly::with_indices(latex, &indices), end))
+        })
     }
 
     /// The LaTeX of each name that `run` spells, in order, when the names spell it whole: the
@@ -254,7 +298,13 @@ fn tokenize(s: &str, names: &Names) -> Vec<Tok> {
     while i < chars.len() {
         let c = chars[i];
         let run_starts = i == 0 || !in_name(chars[i - 1]);
-        if let Some((digits, spelled, end)) = spelled(&chars, i, names).filter(|_| run_starts) {
+        if let Some((digits, latex, end)) = names.instance(&chars, i).filter(|_| run_starts) {
+            out.extend(chars[i..i + digits].iter().map(|&d| Tok::Char(d, None)));
+            out.push(Tok::Name(latex));
+            i = end;
+        } else if let Some((digits, spelled, end)) =
+            spelled(&chars, i, names).filter(|_| run_starts)
+        {
             out.extend(chars[i..i + digits].iter().map(|&d| Tok::Char(d, None)));
             out.extend(
                 spelled
@@ -1573,6 +1623,7 @@ mod tests {
             .iter()
             .map(|(a, b)| (a.to_string(), b.to_string()))
             .collect(),
+            families: Vec::new(),
         };
         for (u, t) in [
             (
@@ -1654,6 +1705,7 @@ mod tests {
                 ("ω₊".into(), r"\omega_{+}".into()),
                 ("ω₋".into(), r"\omega_{-}".into()),
             ],
+            families: Vec::new(),
         };
         assert_eq!(math_with("ω₊ = 2 ω₋", &names), r"\omega_{+} = 2 \omega_{-}");
         assert_eq!(

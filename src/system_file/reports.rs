@@ -69,6 +69,13 @@ impl LoadedSystem {
         }
     }
 
+    /// The file's names as its expressions write them in LaTeX, its families' with their
+    /// instances' indices ([`Names::with_families`]), for its sections' statements.
+    pub fn names(&self) -> Names {
+        let families = self.families.iter().map(|f| f.display.as_str());
+        Names::of_system(&self.system).with_families(families)
+    }
+
     fn section_title(&self) -> String {
         format!("{} ({})", self.name, self.source.origin)
     }
@@ -89,7 +96,7 @@ impl LoadedSystem {
                 title: self.section_title(),
                 file: Some(self.source.origin.clone()),
                 entries: vec![entry],
-                names: Names::of_system(&self.system),
+                names: self.names(),
             }],
             summary,
             seconds: start.elapsed().as_secs_f64(),
@@ -212,7 +219,7 @@ impl LoadedSystem {
             title: self.section_title(),
             file: Some(self.source.origin.clone()),
             entries,
-            names: Names::of_system(&self.system),
+            names: self.names(),
         };
         Ok((section, self.the_name()))
     }

@@ -38,29 +38,25 @@ pub(crate) struct Scope<'a> {
 
 /// A system's names as their printed LaTeX spells them, read back ([`trigpoly::syntax::latex_name`]):
 /// `G_1` for a function `G1` (printed `G_{1}`), `Z̄` for `Zbar` (`\bar{Z}`), `q_1` for a
-/// variable `q₁`; a family's name, `K̄` for `Kbar`, with an instance's indices after it. A
-/// spelling of two names is none of them.
+/// variable `q₁`, `θ1_x` for `theta1_x` (`\mathrm{\theta1}_{x}`); a family's name, `K̄` for
+/// `Kbar`, `K_1` for `K1` (`K_{1;2,3}`), with an instance's indices after it. A spelling of
+/// two names is neither: reading it is an error that names both ([`Scope::latex_alias`]).
 #[derive(Default)]
 struct LatexNames {
-    /// A spelling and the name it is, `None` where two names spell it.
-    names: HashMap<String, Option<String>>,
-    /// A family's spelling and its name, `None` where two families spell it.
-    families: HashMap<String, Option<String>>,
+    /// A spelling and the names it is, two or more where names spell it alike.
+    names: HashMap<String, Vec<String>>,
+    /// A family's spelling and its names, two or more where families spell it alike.
+    families: HashMap<String, Vec<String>>,
     /// A function's display that is no name, as its LaTeX is written without spaces (`x(t)`,
-    /// `\theta(t)`), and the function, `None` where two display so.
-    calls: HashMap<String, Option<String>>,
+    /// `\theta(t)`), and the functions that display so (the loader lets one).
+    calls: HashMap<String, Vec<String>>,
 }
 
-/// Keeps `spelled` as the spelling of `name` in `map`, or as none where another name has it.
-fn keep_spelling(map: &mut HashMap<String, Option<String>>, spelled: String, name: &str) {
-    match map.get(&spelled) {
-        Some(Some(other)) if other != name => {
-            map.insert(spelled, None);
-        }
-        Some(_) => {}
-        None => {
-            map.insert(spelled, Some(name.to_string()));
-        }
+/// Keeps `spelled` as a spelling of `name` in `map`, beside any other name's.
+fn keep_spelling(map: &mut HashMap<String, Vec<String>>, spelled: String, name: &str) {
+    let names = map.entry(spelled).or_default();
+    if !names.iter().any(|n| n == name) {
+        names.push(name.to_string());
     }
 }
 
@@ -68,7 +64,7 @@ impl LatexNames {
     fn of(file: &LoadedSystem) -> LatexNames {
         let mut out = LatexNames::default();
         // A display of several words, `Re A` (`\operatorname{Re} A`), is spelled word by word.
-        let keep = |map: &mut HashMap<String, Option<String>>, latex: &str, name: &str| {
+        let keep = |map: &mut HashMap<String, Vec<String>>, latex: &str, name: &str| {
             let words: Option<Vec<String>> = latex
                 .split_whitespace()
                 .map(trigpoly::syntax::latex_name)
@@ -98,20 +94,23 @@ impl LatexNames {
         out
     }
 
-    /// The name that `spelled` (a name written in LaTeX, read) is: a declared name's, or an
-    /// instance of a family, its indices whole numbers or `indices`.
-    fn name(&self, spelled: &str, indices: &[String]) -> Option<String> {
-        if let Some(name) = self.names.get(spelled) {
-            return name.clone();
-        }
+    /// The names that `spelled` (a name written in LaTeX, read) may be: the declared names
+    /// whose LaTeX spells it, and the instances of the families whose LaTeX spells its head,
+    /// its indices whole numbers or `indices`; none, one, or several that print alike.
+    fn names(&self, spelled: &str, indices: &[String]) -> Vec<String> {
+        let mut out = self.names.get(spelled).cloned().unwrap_or_default();
         let mut parts = spelled.rsplitn(3, '_');
-        let (n, m, head) = (parts.next()?, parts.next()?, parts.next()?);
-        let index = |s: &str| {
-            (!s.is_empty() && s.bytes().all(|b| b.is_ascii_digit()))
-                || indices.iter().any(|i| i == s)
-        };
-        let family = self.families.get(head)?.as_ref()?;
-        (index(m) && index(n)).then(|| format!("{family}_{m}_{n}"))
+        if let (Some(n), Some(m), Some(head)) = (parts.next(), parts.next(), parts.next()) {
+            let index = |s: &str| {
+                (!s.is_empty() && s.bytes().all(|b| b.is_ascii_digit()))
+                    || indices.iter().any(|i| i == s)
+            };
+            if index(m) && index(n) {
+                let families = self.families.get(head).into_iter().flatten();
+                out.extend(families.map(|family| format!("{family}_{m}_{n}")));
+            }
+        }
+        out
     }
 }
 
@@ -261,14 +260,16 @@ fn braced_instances<'f>(
 }
 
 /// The first `K_{…}` of a family `K` whose braces do not hold two whole numbers (`K_{1}`,
-/// `K_{m,2}`), with the message that says what they must hold.
+/// `K_{m,2}`) and that `other_name` does not take for another name's LaTeX (`K_{x}` of a
+/// parameter `K_x`), with the message that says what they must hold.
 fn malformed_braces(
     s: &str,
     families: &[super::Family],
     index_names: &[String],
+    other_name: &dyn Fn(&super::Family, &str) -> bool,
 ) -> Option<(Span, String)> {
     braced_instances(s, families, index_names)
-        .find(|b| b.indices.is_none())
+        .find(|b| b.indices.is_none() && !other_name(b.family, &s[b.span.clone()]))
         .map(|b| {
             let written = &s[b.span.clone()];
             let message = if written.ends_with('}') {
@@ -590,47 +591,93 @@ impl<'a> Scope<'a> {
         // `K_{m,n}` in the text of `K` itself, well formed or not.
         if let Some(owner) = self.owner {
             let family = std::slice::from_ref(&self.file.families[owner]);
-            if let Some(b) = braced_instances(&text.value, family, self.indices).next() {
+            let own = braced_instances(&text.value, family, self.indices)
+                .find(|b| !self.names_other(b.family, &text.value[b.span.clone()]));
+            if let Some(b) = own {
                 let span = Span::new(b.span.start, b.span.end);
                 let message = uses_itself_message(&family[0], &text.value[b.span]);
                 return Err(text.error(source, ErrorKind::Family, span, message));
             }
         }
         // `P_{1}` does not parse, and `P_{m,2}` would be an unknown `P_`: the braces are the news.
-        if let Some((span, message)) = malformed_braces(&text.value, families, self.indices) {
+        // Braces that are another name's LaTeX (`K_{x}` of a parameter `K_x`, `K_{1;2,3}` of
+        // a family `K1`'s instance) are that name's, not a malformed instance of `K`.
+        let other = |f: &super::Family, written: &str| self.names_other(f, written);
+        if let Some((span, message)) = malformed_braces(&text.value, families, self.indices, &other)
+        {
             return Err(text.error(source, ErrorKind::Family, span, message));
         }
         let rewritten = rewrite_braces(&text.value, families, self.indices);
         let mut tree = parse_expr(&rewritten).map_err(|e| self.display_error(source, text, &e))?;
-        self.read_latex_names(text, &mut tree);
+        self.read_latex_names(source, text, &mut tree)?;
         Ok(tree)
     }
 
+    /// Whether `written`, braces after the name of `family` (`K_{x}`, `K_{1}`, `K_{1;2,3}`),
+    /// is the LaTeX of a name other than an instance of it: a declared name (a parameter
+    /// `K_x`, a function `K1` printed `K_{1}`) or an instance of another family (`K1`'s,
+    /// `K_{1;2,3}`).
+    fn names_other(&self, family: &super::Family, written: &str) -> bool {
+        let Some(spelled) = trigpoly::syntax::latex_name(written) else {
+            return false;
+        };
+        self.declared_as(&spelled).is_some()
+            || self
+                .latex_names(|n| n.names(&spelled, self.indices))
+                .iter()
+                .any(|name| !names_own_instance(family, name))
+    }
+
+    /// The declared name that `name` names (a variable by any of its spellings, a function
+    /// by its name or display, `i`), if any: `p_theta` of `p_θ`, `Zbar` of `Z̄`.
+    fn declared_as(&self, name: &str) -> Option<String> {
+        let vars = self.file.system.vars();
+        if name == "i" {
+            return Some(name.to_string());
+        }
+        if let Some(v) = vars.lookup(name) {
+            return Some(vars.variable(v).name().to_string());
+        }
+        let functions = self.file.system.functions().iter();
+        (functions.into_iter())
+            .find(|f| f.name == name || f.display == name)
+            .map(|f| f.name.clone())
+    }
+
     /// Renames each name of `tree` written in LaTeX to the name it is ([`Scope::latex_alias`]),
-    /// so that the echo and the lowering see the system's names: `G_{1}` is `G1`.
-    fn read_latex_names(&self, text: &Text, tree: &mut Tree) {
+    /// so that the echo and the lowering see the system's names: `G_{1}` is `G1`. A name
+    /// written as two names print is refused, naming both.
+    fn read_latex_names(
+        &self,
+        source: &Source,
+        text: &Text,
+        tree: &mut Tree,
+    ) -> Result<(), FileError> {
         let span = tree.span;
         match &mut tree.kind {
             ExprKind::Integer(_) => {}
-            ExprKind::Name(name) => *name = self.latex_alias(text, name, span),
+            ExprKind::Name(name) => *name = self.latex_alias(source, text, name, span)?,
             ExprKind::Call(f, name_span, args) => match self.display_call(text, f, span) {
                 Some(name) => tree.kind = ExprKind::Name(name),
                 None => {
-                    *f = self.latex_alias(text, f, *name_span);
-                    args.iter_mut().for_each(|a| self.read_latex_names(text, a));
+                    *f = self.latex_alias(source, text, f, *name_span)?;
+                    for a in args {
+                        self.read_latex_names(source, text, a)?;
+                    }
                 }
             },
-            ExprKind::Neg(a) => self.read_latex_names(text, a),
+            ExprKind::Neg(a) => self.read_latex_names(source, text, a)?,
             ExprKind::Add(a, b)
             | ExprKind::Sub(a, b)
             | ExprKind::Mul(a, b)
             | ExprKind::Div(a, b)
             | ExprKind::Pow(a, b)
             | ExprKind::Bracket(a, b) => {
-                self.read_latex_names(text, a);
-                self.read_latex_names(text, b);
+                self.read_latex_names(source, text, a)?;
+                self.read_latex_names(source, text, b)?;
             }
         }
+        Ok(())
     }
 
     /// The error for `e`, or, where it falls on a function's display name written in the text
@@ -762,15 +809,68 @@ impl<'a> Scope<'a> {
     }
 
     /// The name that `name`, at `span` of `text`, is: where it is written in LaTeX (braces, a
-    /// command or a prime, `G_{1}`, `\bar{Z}`, `y'`) and is no declared name, the one whose printed LaTeX
-    /// spells it the same, if one does ([`LatexNames`]); else `name`.
-    fn latex_alias(&self, text: &Text, name: &str, span: Span) -> String {
+    /// command or a prime, `G_{1}`, `\bar{Z}`, `y'`), the declared name it spells or the one
+    /// whose printed LaTeX spells it the same ([`LatexNames`]); else `name`. Where two names
+    /// are so (a family `K1`'s instance `K_{1;2,3}` beside a parameter `K_1_2_3`, printed
+    /// `K_{1,2,3}`; two names printed apart that LaTeX spells alike), it is neither: an error
+    /// that names both, not a reading of one.
+    fn latex_alias(
+        &self,
+        source: &Source,
+        text: &Text,
+        name: &str,
+        span: Span,
+    ) -> Result<String, FileError> {
         let written = text.value.get(span.start..span.end).unwrap_or("");
-        if !written.contains(['\\', '{', '\'']) || self.file.declares(name) {
-            return name.to_string();
+        if !written.contains(['\\', '{', '\'']) {
+            return Ok(name.to_string());
         }
-        self.latex_names(|names| names.name(name, self.indices))
-            .unwrap_or_else(|| name.to_string())
+        let declared = self.declared_as(name);
+        let mut meant: Vec<String> = declared.iter().cloned().collect();
+        for other in self.latex_names(|names| names.names(name, self.indices)) {
+            if !meant.contains(&other) {
+                meant.push(other);
+            }
+        }
+        match meant.as_slice() {
+            [] => Ok(name.to_string()),
+            [one] if declared.as_ref() == Some(one) => Ok(name.to_string()),
+            [one] => Ok(one.clone()),
+            [..] => {
+                // Braces rewritten to a name (`K_{1,2}` read as `K_1_2`) are shown whole.
+                let families = &self.file.families[..self.families];
+                let span = braced_instances(&text.value, families, self.indices)
+                    .find(|b| b.span.start == span.start)
+                    .map_or(span, |b| Span::new(b.span.start, b.span.end));
+                let written = &text.value[span.start..span.end];
+                let shown: Vec<String> = meant.iter().map(|m| self.described(m)).collect();
+                let (last, first) = shown.split_last().expect("two or more");
+                let message = format!(
+                    "'{written}' names both {} and {last} in LaTeX, whose printed forms read \
+                     alike: write the one meant by its name, {}",
+                    first.join(", "),
+                    meant.join(" or ")
+                );
+                Err(text.error(source, ErrorKind::Expression, span, message))
+            }
+        }
+    }
+
+    /// What `name` is, in words: `the parameter K_1_2_3`, `the function G1`, `the instance
+    /// K1_2_3 of the family K1`.
+    fn described(&self, name: &str) -> String {
+        let vars = self.file.system.vars();
+        if let Some(v) = vars.lookup(name) {
+            let var = vars.variable(v);
+            return super::names::PrintedNames::whose_variable(var.kind(), var.name());
+        }
+        if let Some((k, ..)) = instance_of(&self.file.families, name) {
+            return format!(
+                "the instance {name} of the family {}",
+                self.file.families[k].name
+            );
+        }
+        format!("the function {name}")
     }
 
     /// The function whose display is the call `f(…)` written at `span` of `text` in LaTeX, as
@@ -785,7 +885,10 @@ impl<'a> Scope<'a> {
             .get(span.start..span.end)?
             .split_whitespace()
             .collect();
-        self.latex_names(|names| names.calls.get(&written)?.clone())
+        self.latex_names(|names| match names.calls.get(&written)?.as_slice() {
+            [one] => Some(one.clone()),
+            _ => None,
+        })
     }
 
     /// `read` of the system's names as their LaTeX spells them, made the first time.

@@ -1,7 +1,7 @@
 //! Expressions written in LaTeX: what superint prints in LaTeX reads back to the same value,
 //! for every file of `systems/`, and the command line reads LaTeX as it reads the plain syntax.
 
-use superint::render::tex::{math_with, relation, Names};
+use superint::render::tex::{math_with, relation};
 use superint::report::Entry;
 use superint::system_file::{check_report, load, ClaimForm, LimitsOverride, LoadedSystem};
 use trigpoly::Style;
@@ -50,66 +50,251 @@ fn what_superint_prints_in_latex_reads_back_to_the_same_value() {
     let mut sides = 0;
     for path in system_files() {
         let file = load(&path, &LimitsOverride::default()).expect("the file loads");
-        let names = Names::of_system(file.system());
-        let h = file.system().hamiltonian();
-        reads_back(&file, "H", &h.render(Style::Latex), h);
-        for f in file.system().functions() {
-            reads_back(&file, &f.name, &f.expr.render(Style::Latex), &f.expr);
-            let name = brackets::table::latex_name(&f.display);
-            reads_back(&file, &f.name, &name, &f.expr);
-        }
-        for claim in file.claims() {
-            match &claim.form {
-                ClaimForm::Identity { lhs, rhs } => {
-                    let k = relation(&claim.statement).expect("a claim has its '='");
-                    let left = math_with(&claim.statement[..k], &names);
-                    let right = math_with(&claim.statement[k..], &names);
-                    let right = right.strip_prefix('=').expect("the right side follows '='");
-                    for (side, latex) in [(lhs, left.as_str()), (rhs, right)] {
-                        let want = file.parse_argument(&side.value).expect("the side reads");
-                        reads_back(&file, &claim.id, latex, &want);
-                        sides += 1;
-                    }
-                }
-                ClaimForm::Rank { functions, .. } => {
-                    for (shown, text) in functions {
-                        let want = file.parse_argument(&text.value).expect("it reads");
-                        reads_back(&file, &claim.id, &math_with(shown, &names), &want);
-                    }
+        sides += printed_latex_reads_back(&file);
+    }
+    // Every file's claims were read, not none.
+    assert!(sides > 400, "{sides} sides");
+}
+
+/// A file whose names a LaTeX printer could write so that they render otherwise or read back
+/// as other names: Greek letters with digits after them (`theta1`, `alpha12`, `Omega1`), as a
+/// subscript's piece (`p_theta1`, `omega_x1`, `L_theta1`) and before one (`theta1_x`); names
+/// with subscripts (`omega_2`, `k_x`, `mu_a_b`) and their momenta; a word with digits inside
+/// (`x2y`, `beta1x`); Greek letters before other letters (`alphab`); capital Greek (`Omega`,
+/// `Lambda3`); functions, a display and families named so; a family `K` beside a parameter
+/// `K_x` (`K_{x}`) and a family `K1` (`K_{1;1,0}`), whose braces are not `K`'s. What it
+/// prints in LaTeX reads back to the same value, as every file's of `systems/` does.
+const AWKWARD_NAMES: &str = r#"name = "names that print in LaTeX"
+hamiltonian = "p_theta1^2/2 + p_omega_2^2/2 + p_k_x^2/2 + p_x2y^2/2 + p_q1^2/2 + p_phi2^2/(2*I) + p_theta1_y^2/2 + alpha12*theta1^2/2 + Omega*omega_2^2/2 + alphab*k_x^2 + beta1x*x2y^2 + mu_a_b*q1^2 + Lambda3*cos(phi2) + omega_x1*theta1*omega_2 + theta1_x*k_x + Omega1*theta1_y^2 + K_x*q1"
+
+[phase_space]
+coordinates = ["theta1", "omega_2", "k_x", "x2y", "q1", "theta1_y"]
+angles = ["phi2"]
+parameters = ["I", "alpha12", "Omega", "Omega1", "alphab", "beta1x", "mu_a_b", "Lambda3", "omega_x1", "theta1_x", "K_x"]
+
+[[function]]
+name = "L_theta1"
+value = "theta1*p_omega_2 - omega_2*p_theta1"
+
+[[function]]
+name = "Phi2"
+value = "p_phi2^2/(2*I)"
+
+[[function]]
+name = "G1_x"
+value = "p_k_x^2/2 + alphab*k_x^2"
+
+[[function]]
+name = "omega3"
+value = "p_q1 + q1"
+
+[[function]]
+name = "psi2_a"
+value = "p_theta1_y + theta1_y"
+
+[[function]]
+name = "Ab"
+display = "A_theta1"
+value = "p_x2y + i*x2y"
+
+[[family]]
+name = "Q_theta1"
+value = "(p_q1 + i*q1)^m*exp(-i*n*phi2)"
+
+[[family]]
+name = "Omega2"
+display = "Ω2"
+value = "(p_q1 - i*q1)^m*exp(i*n*phi2)"
+
+[[family]]
+name = "K"
+value = "(p_q1 + i*q1)^m*(p_q1 - i*q1)^n"
+
+[[family]]
+name = "K1"
+value = "K_m_n*omega3"
+
+[[claim]]
+id = "k"
+claim = "K1_{1,0} = K_1_0*omega3"
+
+[[claim]]
+id = "phi"
+claim = "{Phi2, H} = Lambda3*sin(phi2)*p_phi2/I"
+
+[[claim]]
+id = "g"
+claim = "{G1_x, H} = -theta1_x*p_k_x"
+
+[[claim]]
+id = "l"
+claim = "{L_theta1, psi2_a} = 0"
+
+[[claim]]
+id = "q"
+claim = "Q_theta1_1_0 = p_q1 + i*q1"
+
+[[claim]]
+id = "o"
+claim = "Omega2_1_1*Q_theta1_1_1 = omega3^2"
+expect = "refuted"
+
+[[claim]]
+id = "wrong"
+claim = "{L_theta1, H} = omega_x1*theta1_x*alpha12*Ab*omega3*psi2_a*Omega1"
+expect = "refuted"
+"#;
+
+/// What superint prints of a file with names that LaTeX could misread (`AWKWARD_NAMES`)
+/// reads back to the same value.
+#[test]
+fn names_with_greek_letters_digits_and_subscripts_read_back_from_latex() {
+    let path = scratch_text("latex-input", "awkward-names.toml", AWKWARD_NAMES);
+    let file = load(&path, &LimitsOverride::default()).expect("the file loads");
+    assert!(printed_latex_reads_back(&file) >= 14);
+    // As a physicist writes them: `\theta 1_{x}` hung the subscript on the digit,
+    // `p_{k,x}` read as two indices, `Q_{theta1;1,0}` spelled out t·h·e·t·a.
+    let out = superint_ok(&["check", path.to_str().expect("a path"), "--format", "latex"]);
+    for written in [
+        r"\mathrm{\theta1}_{x}",
+        r"p_{\theta1}",
+        r"\theta_{1}",
+        r"p_{k_{x}}",
+        r"p_{\omega_{2}}",
+        r"p_{\theta1_{y}}",
+        r"L_{\theta1}",
+        r"Q_{\theta1;1,0}",
+        r"K_{1;1,0} &= K_{1,0} \omega_{3}",
+    ] {
+        assert!(out.contains(written), "{written} in {out}");
+    }
+    for wrong in [r"\theta 1", "p_{k,x}", "{theta1;"] {
+        assert!(!out.contains(wrong), "{wrong} in {out}");
+    }
+}
+
+/// Where LaTeX spells two names alike, a name written so is neither, and the error names
+/// both: a family `K1`'s instance `K_{1;2,3}` beside a parameter `K_1_2_3` (`K_{1,2,3}`), a
+/// family `K`'s instance `K_{1,2}` beside a function displayed `K_1_2`. Braces after `K` that
+/// are another name's LaTeX read as that name (`K_{x}`, `K_{3}` of a function `K3`); braces
+/// that are nobody's are a malformed instance, as before.
+#[test]
+fn a_name_that_latex_spells_as_two_is_refused_naming_both() {
+    let file = scratch_text(
+        "latex-input",
+        "alike.toml",
+        r#"name = "alike"
+hamiltonian = "p_x^2/2 + x^2/2 + K_x*x"
+[phase_space]
+coordinates = ["x"]
+parameters = ["K_1_2_3", "K_x"]
+[[function]]
+name = "F"
+display = "K_1_2"
+value = "x"
+[[function]]
+name = "K3"
+value = "x + 1"
+[[family]]
+name = "K"
+value = "x^m*p_x^n"
+[[family]]
+name = "K1"
+value = "x^m*p_x^n + 1"
+[[family]]
+name = "K2"
+value = "x^m*p_x^n + 2"
+"#,
+    );
+    let path = file.to_str().expect("a path");
+    let err = superint_refused(&["expand", path, r"x + K_{1;2,3}"]);
+    assert!(
+        err.contains(
+            "<command line>:1:5: 'K_{1;2,3}' names both the parameter K_1_2_3 and the \
+             instance K1_2_3 of the family K1 in LaTeX, whose printed forms read alike: write \
+             the one meant by its name, K_1_2_3 or K1_2_3"
+        ),
+        "{err}"
+    );
+    let err = superint_refused(&["expand", path, r"K_{1,2}"]);
+    assert!(
+        err.contains(
+            "'K_{1,2}' names both the function F and the instance K_1_2 of the family K in \
+             LaTeX, whose printed forms read alike: write the one meant by its name, F or K_1_2"
+        ),
+        "{err}"
+    );
+    let out = superint_ok(&["expand", path, r"K_{x} + K_{3} + K_{2;3,4}"]);
+    assert!(out.contains("K_x + K3 + K2_{3,4} = "), "{out}");
+    let err = superint_refused(&["expand", path, r"K_{7}"]);
+    assert!(
+        err.contains("'K_{7}' is not an instance of the family K_m_n"),
+        "{err}"
+    );
+}
+
+/// Reads back what superint prints of `file` in LaTeX (its claims' sides, Hamiltonian,
+/// functions, equations and residuals), each to its value; the number of claims' sides read.
+fn printed_latex_reads_back(file: &LoadedSystem) -> usize {
+    let mut sides = 0;
+    let names = file.names();
+    let h = file.system().hamiltonian();
+    reads_back(file, "H", &h.render(Style::Latex), h);
+    for f in file.system().functions() {
+        reads_back(file, &f.name, &f.expr.render(Style::Latex), &f.expr);
+        let name = brackets::table::latex_name(&f.display);
+        reads_back(file, &f.name, &name, &f.expr);
+    }
+    for claim in file.claims() {
+        match &claim.form {
+            ClaimForm::Identity { lhs, rhs } => {
+                let k = relation(&claim.statement).expect("a claim has its '='");
+                let left = math_with(&claim.statement[..k], &names);
+                let right = math_with(&claim.statement[k..], &names);
+                let right = right.strip_prefix('=').expect("the right side follows '='");
+                for (side, latex) in [(lhs, left.as_str()), (rhs, right)] {
+                    let want = file.parse_argument(&side.value).expect("the side reads");
+                    reads_back(file, &claim.id, latex, &want);
+                    sides += 1;
                 }
             }
-        }
-        let report = check_report(std::slice::from_ref(&file)).expect("the file checks");
-        for section in &report.sections {
-            for entry in &section.entries {
-                if let Entry::Equations(equations) = entry {
-                    for line in &equations.lines {
-                        reads_back(&file, &line.lhs, &line.rhs.render(Style::Latex), &line.rhs);
-                        if let Some(restated) = line.restated(Style::Latex) {
-                            reads_back(&file, &line.lhs, &restated, &line.rhs);
-                        }
-                    }
-                }
-            }
-        }
-        for claim in report.claims() {
-            if let Some(residual) = &claim.residual {
-                let what = format!("the residual of {}", claim.id);
-                reads_back(&file, &what, &residual.render(Style::Latex), residual);
-                // Restated in the file's functions, the residual holds at the claim's
-                // condition, where there is one: the LaTeX reads as the text does.
-                if let Some(restated) = claim.residual_restated(Style::Latex) {
-                    let text = claim
-                        .residual_restated(Style::Ascii)
-                        .expect("an ASCII form");
-                    let want = file.parse_argument(&text).expect("the text reads back");
-                    reads_back(&file, &what, &restated, &want);
+            ClaimForm::Rank { functions, .. } => {
+                for (shown, text) in functions {
+                    let want = file.parse_argument(&text.value).expect("it reads");
+                    reads_back(file, &claim.id, &math_with(shown, &names), &want);
                 }
             }
         }
     }
-    // Every file's claims were read, not none.
-    assert!(sides > 400, "{sides} sides");
+    let report = check_report(std::slice::from_ref(file)).expect("the file checks");
+    for section in &report.sections {
+        for entry in &section.entries {
+            if let Entry::Equations(equations) = entry {
+                for line in &equations.lines {
+                    reads_back(file, &line.lhs, &line.rhs.render(Style::Latex), &line.rhs);
+                    if let Some(restated) = line.restated(Style::Latex) {
+                        reads_back(file, &line.lhs, &restated, &line.rhs);
+                    }
+                }
+            }
+        }
+    }
+    for claim in report.claims() {
+        if let Some(residual) = &claim.residual {
+            let what = format!("the residual of {}", claim.id);
+            reads_back(file, &what, &residual.render(Style::Latex), residual);
+            // Restated in the file's functions, the residual holds at the claim's
+            // condition, where there is one: the LaTeX reads as the text does.
+            if let Some(restated) = claim.residual_restated(Style::Latex) {
+                let text = claim
+                    .residual_restated(Style::Ascii)
+                    .expect("an ASCII form");
+                let want = file.parse_argument(&text).expect("the text reads back");
+                reads_back(file, &what, &restated, &want);
+            }
+        }
+    }
+    sides
 }
 
 /// The command line reads an expression in LaTeX, and refuses an unknown command by name,

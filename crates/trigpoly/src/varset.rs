@@ -13,7 +13,7 @@ pub use names::{
     with_indices, BadName, LATEX_LETTERS, MAX_NAME_CHARS, RESERVED,
 };
 pub(crate) use names::{letter_of_command, long_name, unparenthesized};
-use names::{render_name, spell_out};
+use names::{render_momentum, render_name, spell_out};
 
 /// What a variable is in a phase space; only `Angle` changes the algebra.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
@@ -708,7 +708,10 @@ pub struct VarSetBuilder {
 impl VarSetBuilder {
     /// Declares a variable of the given kind.
     pub fn variable(mut self, name: &str, kind: VarKind) -> Self {
-        let (unicode, latex) = render_name(name);
+        let (unicode, latex) = match kind {
+            VarKind::Momentum => render_momentum(name),
+            _ => render_name(name),
+        };
         let spelled_out = spell_out(&unicode);
         // A name declared in Greek letters (`θ`, `p_θ`) is written in ASCII spelled out
         // (`theta`, `p_theta`), which reads back; one with other letters beyond ASCII is its own.

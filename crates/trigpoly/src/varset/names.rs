@@ -387,6 +387,27 @@ pub(super) fn render_name(name: &str) -> (String, String) {
     }
 }
 
+/// A momentum `p_q` as text and LaTeX: as [`render_name`] writes it, but for a coordinate `q`
+/// with a subscript of its own, which stays its subscript inside the momentum's (`p_k_x` →
+/// `p_{k_{x}}`, `p_omega_2` → `p_{\omega_{2}}`, `p_theta1_y` → `p_{\theta1_{y}}`, as a display's
+/// momentum is written, `p_{\omega_{+}}`), where `p_{k,x}` would read as a momentum with two
+/// indices. A name's trailing digits stay in its subscript (`p_q1` → `p_{q1}`,
+/// `p_theta1` → `p_{\theta1}`); a name that is no `p_` with a coordinate is as
+/// [`render_name`] writes it.
+pub(super) fn render_momentum(name: &str) -> (String, String) {
+    let Some((head, tail)) = name
+        .strip_prefix("p_")
+        .and_then(|q| q.split_once('_'))
+        .filter(|(head, tail)| !head.is_empty() && !tail.is_empty())
+    else {
+        return render_name(name);
+    };
+    let (unicode, _) = render_name(name);
+    let subs: Vec<String> = tail.split('_').map(|s| Piece::of(s).body).collect();
+    let latex = format!("p_{{{}_{{{}}}}}", Piece::of(head).body, subs.join(","));
+    (unicode, latex)
+}
+
 /// The first character of `name` that its LaTeX form cannot write in ASCII (a letter beyond
 /// ASCII, the Greek letters, `ħ`, `ℓ` and the subscript digits), if any: such a name would stop
 /// `pdflatex`.
@@ -495,12 +516,19 @@ impl Piece {
                 word: false,
             };
         }
-        // A Greek letter with digits after it: `theta1` → `θ1`, `\theta 1`.
+        // A Greek letter with digits after it: `theta1` → `θ1`, `\theta1`, a word as `G1` is
+        // (`\mathrm{\theta1}_{x}` of `theta1_x`, whose subscript `\theta1_{x}` would hang on
+        // the digit, and which reads back as θ times `1_x`); no space after the command,
+        // which would make two words of one in the names that LaTeX spells.
         let letters = p.trim_end_matches(|c: char| c.is_ascii_digit());
         if letters.len() < p.len() {
             if let Some((_, uni, tex)) = GREEK.iter().find(|g| letters == g.0 || letters == g.1) {
                 let digits = &p[letters.len()..];
-                return Piece::symbol(&format!("{uni}{digits}"), &format!("{tex} {digits}"));
+                return Piece {
+                    unicode: format!("{uni}{digits}"),
+                    body: format!("{tex}{digits}"),
+                    word: true,
+                };
             }
         }
         // A bar over the piece: `Z̄` → `\bar{Z}` (display names only: no variable's name has one).
@@ -674,13 +702,60 @@ mod tests {
         assert_eq!(render_name("G1"), ("G1".into(), "G_{1}".into()));
         assert_eq!(render_name("M"), ("M".into(), "M".into()));
         assert_eq!(
-            render_name("p_theta1"),
-            ("p_θ1".into(), r"p_{\theta 1}".into())
-        );
-        assert_eq!(
             render_name("theta12"),
             ("θ12".into(), r"\theta_{12}".into())
         );
+    }
+
+    /// A Greek letter with digits after it is one piece, `\theta1`, with no space that would
+    /// make two words of it: in a subscript as `x1` is (`p_{\theta1}`, `p_{x1}`), and before
+    /// one a word as `G1` is (`\mathrm{\theta1}_{x}`, `\mathrm{G1}_{x}`), where
+    /// `\theta 1_{x}` hung the subscript on the digit and read back as θ times `1_x`.
+    #[test]
+    fn a_greek_letter_with_digits_is_one_piece() {
+        for (name, text, latex) in [
+            ("theta1", "θ1", r"\theta_{1}"),
+            ("Omega12", "Ω12", r"\Omega_{12}"),
+            ("p_theta1", "p_θ1", r"p_{\theta1}"),
+            ("omega_x1", "ω_x1", r"\omega_{x1}"),
+            ("L_theta1", "L_θ1", r"L_{\theta1}"),
+            ("theta1_x", "θ1_x", r"\mathrm{\theta1}_{x}"),
+            ("θ1_x", "θ1_x", r"\mathrm{\theta1}_{x}"),
+            ("G1_x", "G1_x", r"\mathrm{G1}_{x}"),
+            ("p_omicron1", "p_ο1", "p_{o1}"),
+            ("alphab", "alphab", r"\mathrm{alphab}"),
+            ("x2y", "x2y", r"\mathrm{x2y}"),
+        ] {
+            assert_eq!(render_name(name), (text.into(), latex.into()), "{name}");
+            assert!(!latex.contains(' '), "{name}");
+        }
+    }
+
+    /// A momentum's coordinate keeps its own subscript inside the momentum's (`p_{k_{x}}`,
+    /// as a display's momentum `p_{\omega_{+}}`), where `p_{k,x}` read as two indices; its
+    /// trailing digits stay in the subscript, as `p_{q1}`'s do.
+    #[test]
+    fn a_momentum_keeps_its_coordinates_subscript() {
+        for (name, text, latex) in [
+            ("p_k_x", "p_k_x", "p_{k_{x}}"),
+            ("p_omega_2", "p_ω_2", r"p_{\omega_{2}}"),
+            ("p_omega_x_2", "p_ω_x_2", r"p_{\omega_{x,2}}"),
+            ("p_theta1_y", "p_θ1_y", r"p_{\theta1_{y}}"),
+            ("p_q1", "p_q1", "p_{q1}"),
+            ("p_theta", "p_θ", r"p_{\theta}"),
+            ("p_q₁", "p_q₁", "p_{q_{1}}"),
+            ("px_y", "px_y", r"\mathrm{px}_{y}"),
+        ] {
+            assert_eq!(render_momentum(name), (text.into(), latex.into()), "{name}");
+        }
+        let vars = VarSet::builder()
+            .coordinate("k_x")
+            .momentum("p_k_x")
+            .parameter("p_x_0")
+            .build()
+            .expect("names");
+        let latex: Vec<&str> = vars.vars().map(|v| vars.variable(v).latex()).collect();
+        assert_eq!(latex, ["k_{x}", "p_{k_{x}}", "p_{x,0}"]);
     }
 
     /// A family instance's display, its indices in braces after a display name, shows as
