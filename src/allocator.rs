@@ -48,6 +48,7 @@ pub fn configure() {
 }
 
 /// mimalloc as the global allocator: `#[global_allocator] static A: Allocator = Allocator;`.
+#[derive(Clone, Copy, Debug, Default)]
 pub struct Allocator;
 
 // SAFETY: every method forwards to mimalloc, which returns blocks of at least the requested

@@ -513,6 +513,7 @@ pub fn symbolic_det(
 /// minors of the last two rows, 15 of them where each minor alone would compute 10; the
 /// minors bordering a rank's nonzero minor, its columns and one more, share every minor
 /// of its columns alone.
+#[derive(Debug)]
 pub struct Minors<'a> {
     jac: &'a [Vec<Expr>],
     rows: &'a [usize],

@@ -180,6 +180,7 @@ impl<C: Coefficient> Context<C> for Noting<'_, C> {
 }
 
 /// The context of a bare variable set: no named functions, no brackets.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 pub struct NoContext;
 
 impl<C: Coefficient> Context<C> for NoContext {
