@@ -61,16 +61,17 @@ fn what_superint_prints_in_latex_reads_back_to_the_same_value() {
 /// subscript's piece (`p_theta1`, `omega_x1`, `L_theta1`) and before one (`theta1_x`); names
 /// with subscripts (`omega_2`, `k_x`, `mu_a_b`) and their momenta; a word with digits inside
 /// (`x2y`, `beta1x`); Greek letters before other letters (`alphab`); capital Greek (`Omega`,
-/// `Lambda3`); functions, a display and families named so; a family `K` beside a parameter
+/// `Lambda3`); omicron, which LaTeX writes as an italic o (`\mathit{o}`; a bare `o` was read as
+/// no name); functions, a display and families named so; a family `K` beside a parameter
 /// `K_x` (`K_{x}`) and a family `K1` (`K_{1;1,0}`), whose braces are not `K`'s. What it
 /// prints in LaTeX reads back to the same value, as every file's of `systems/` does.
 const AWKWARD_NAMES: &str = r#"name = "names that print in LaTeX"
-hamiltonian = "p_theta1^2/2 + p_omega_2^2/2 + p_k_x^2/2 + p_x2y^2/2 + p_q1^2/2 + p_phi2^2/(2*I) + p_theta1_y^2/2 + alpha12*theta1^2/2 + Omega*omega_2^2/2 + alphab*k_x^2 + beta1x*x2y^2 + mu_a_b*q1^2 + Lambda3*cos(phi2) + omega_x1*theta1*omega_2 + theta1_x*k_x + Omega1*theta1_y^2 + K_x*q1"
+hamiltonian = "p_theta1^2/2 + p_omega_2^2/2 + p_k_x^2/2 + p_x2y^2/2 + p_q1^2/2 + p_phi2^2/(2*I) + p_theta1_y^2/2 + alpha12*theta1^2/2 + Omega*omega_2^2/2 + alphab*k_x^2 + beta1x*x2y^2 + mu_a_b*q1^2 + Lambda3*cos(phi2) + omega_x1*theta1*omega_2 + theta1_x*k_x + Omega1*theta1_y^2 + K_x*q1 + omicron*x2y"
 
 [phase_space]
 coordinates = ["theta1", "omega_2", "k_x", "x2y", "q1", "theta1_y"]
 angles = ["phi2"]
-parameters = ["I", "alpha12", "Omega", "Omega1", "alphab", "beta1x", "mu_a_b", "Lambda3", "omega_x1", "theta1_x", "K_x"]
+parameters = ["I", "alpha12", "Omega", "Omega1", "alphab", "beta1x", "mu_a_b", "Lambda3", "omega_x1", "theta1_x", "K_x", "omicron"]
 
 [[function]]
 name = "L_theta1"
@@ -165,6 +166,7 @@ fn names_with_greek_letters_digits_and_subscripts_read_back_from_latex() {
         r"L_{\theta1}",
         r"Q_{\theta1;1,0}",
         r"K_{1;1,0} &= K_{1,0} \omega_{3}",
+        r"\mathit{o} \mathrm{x2y}",
     ] {
         assert!(out.contains(written), "{written} in {out}");
     }

@@ -134,7 +134,7 @@ pub enum AlgebraError {
         first: String,
     },
     /// Two variables whose names read apart in text and alike in LaTeX (`x1` and `x₁`, both
-    /// `x_{1}`).
+    /// `x_{1}`), or whose LaTeX reads back as one name (`o` and `omicron`'s `\mathit{o}`).
     #[error("{first:?} and {name:?} would print alike in LaTeX, as {latex}: rename one")]
     PrintedAlike {
         /// The second declaration's name.

@@ -853,6 +853,14 @@ impl VarSetBuilder {
                 value: bits.into(),
             });
         }
+        // The name each variable's LaTeX reads back as (`o` of both `o` and `\mathit{o}`, which
+        // is omicron's), which two variables cannot share: the reader could not tell them apart.
+        let read_back: Vec<Option<String>> = (self.vars.iter())
+            .map(|v| match v.kind {
+                VarKind::Denominator => None,
+                _ => crate::syntax::latex_name(&v.latex),
+            })
+            .collect();
         for (k, v) in self.vars.iter().enumerate() {
             if v.kind == VarKind::Denominator {
                 if self.vars[..k].iter().any(|w| w.name == v.name) {
@@ -869,15 +877,16 @@ impl VarSetBuilder {
                     reason,
                 });
             }
-            for w in &self.vars[..k] {
+            for (j, w) in self.vars[..k].iter().enumerate() {
                 if w.spelled_alike(v) {
                     return Err(AlgebraError::DeclaredTwice {
                         name: v.name.clone(),
                         first: w.name.clone(),
                     });
                 }
-                // `x1` and `x₁` read apart in text, and alike in LaTeX output.
-                if w.latex == v.latex {
+                // `x1` and `x₁` read apart in text, and alike in LaTeX output; `o` and
+                // `omicron`, `o` and `\mathit{o}`, differ in it but read back alike.
+                if w.latex == v.latex || (read_back[k].is_some() && read_back[j] == read_back[k]) {
                     return Err(AlgebraError::PrintedAlike {
                         name: v.name.clone(),
                         first: w.name.clone(),
@@ -1134,6 +1143,12 @@ mod tests {
                 }
             );
         }
+        let err = VarSet::builder()
+            .parameter("o")
+            .parameter("omicron")
+            .build()
+            .unwrap_err();
+        assert!(matches!(err, AlgebraError::PrintedAlike { .. }), "{err}");
         assert!(VarSet::builder()
             .coordinate("x1")
             .coordinate("x11")

@@ -300,7 +300,9 @@ const GREEK: &[(&str, &str, &str)] = &[
     ("omega", "ω", r"\omega"),
     ("pi", "π", r"\pi"),
     ("upsilon", "υ", r"\upsilon"),
-    ("omicron", "ο", "o"),
+    // LaTeX has no omicron but the italic o, which `\mathit` sets apart from a name `o`
+    // (a bare `o` read back as that name, or as none).
+    ("omicron", "ο", r"\mathit{o}"),
     ("vartheta", "ϑ", r"\vartheta"),
     ("varrho", "ϱ", r"\varrho"),
     ("varsigma", "ς", r"\varsigma"),
@@ -722,7 +724,8 @@ mod tests {
             ("theta1_x", "θ1_x", r"\mathrm{\theta1}_{x}"),
             ("θ1_x", "θ1_x", r"\mathrm{\theta1}_{x}"),
             ("G1_x", "G1_x", r"\mathrm{G1}_{x}"),
-            ("p_omicron1", "p_ο1", "p_{o1}"),
+            ("p_omicron1", "p_ο1", r"p_{\mathit{o}1}"),
+            ("omicron", "ο", r"\mathit{o}"),
             ("alphab", "alphab", r"\mathrm{alphab}"),
             ("x2y", "x2y", r"\mathrm{x2y}"),
         ] {
