@@ -784,13 +784,16 @@ impl<'a> Translation<'a> {
         {
             self.out.push(SEPARATOR);
         }
+        // A prime before the name's end is a superscript of its own (`P'_{1,1}`, whose square
+        // is `P'_{1,1}{}^{2}`); primes at the end are one that a superscript joins (`L'^{2}`).
         let mut depth = 0i32;
-        let mut sub = false;
-        for c in latex.chars() {
+        let (mut sub, mut sup) = (false, false);
+        for c in latex.trim_end_matches('\'').chars() {
             match c {
                 '{' => depth += 1,
                 '}' => depth -= 1,
                 '_' if depth == 0 => sub = true,
+                '^' | '\'' if depth == 0 => sup = true,
                 _ => {}
             }
         }
@@ -798,7 +801,7 @@ impl<'a> Translation<'a> {
         self.scripts = Some(Scripts {
             end,
             sub,
-            sup: false,
+            sup,
             primed: latex.ends_with('\''),
         });
     }
