@@ -356,9 +356,7 @@ fn claimed_rank(source: &Source, rhs: &Text, rhs_tree: &Tree) -> Result<usize, F
     Ok(expected)
 }
 
-/// The condition of a claim of the given form, read from the pieces of its `when`. A rank
-/// claim's describes a level set ([`Condition::level_set`]): it sets parameters to numbers or
-/// other parameters, and phase variables to values in them and the other phase variables.
+/// The condition of a claim of the given form, read from the pieces of its `when`.
 fn claim_condition(
     file: &LoadedSystem,
     source: &Source,
@@ -366,9 +364,7 @@ fn claim_condition(
     form: &ClaimForm,
 ) -> Result<Condition, FileError> {
     match form {
-        ClaimForm::Rank { .. } => {
-            parse_condition_with(file, source, pieces, |c| c.level_set().map(drop))
-        }
+        ClaimForm::Rank { .. } => parse_rank_condition(file, source, pieces),
         ClaimForm::Identity { .. } => parse_condition(file, source, pieces),
     }
 }
@@ -409,10 +405,22 @@ pub(crate) fn parse_condition(
     parse_condition_with(file, source, pieces, |_| Ok(()))
 }
 
+/// Reads a rank's conditions as [`parse_condition`] does, which describe a level set
+/// ([`Condition::level_set_variables`]): they set parameters to numbers or other parameters,
+/// and phase variables to values in them and the other phase variables; a parameter set to a
+/// function of phase space is refused at its value.
+pub(crate) fn parse_rank_condition(
+    file: &LoadedSystem,
+    source: &Source,
+    pieces: &[Text],
+) -> Result<Condition, FileError> {
+    parse_condition_with(file, source, pieces, |c| c.level_set_variables().map(drop))
+}
+
 /// [`parse_condition`] with what the condition's use asks of it besides (`check`): a refusal
 /// of a variable ([`EngineError::RefusedCondition`]) is shown at its value, as the reading's
 /// own are.
-pub(crate) fn parse_condition_with(
+fn parse_condition_with(
     file: &LoadedSystem,
     source: &Source,
     pieces: &[Text],

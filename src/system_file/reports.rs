@@ -9,14 +9,14 @@ use std::time::Instant;
 use brackets::{BracketTable, Condition, System};
 use trigpoly::{Expr, VarKind};
 
-use super::claims::{engine_error, parse_condition, parse_condition_with, CheckedClaim, RankClaim};
+use super::claims::{engine_error, parse_condition, parse_rank_condition, CheckedClaim, RankClaim};
 use super::error::{ErrorKind, FileError};
 use super::scope::{instance_of, rewrite_braces};
 use super::text::Text;
 use super::{Argument, Caller, LoadedSystem};
 use crate::report::{
-    factored_in_functions, shown_factored, Entry, Equation, Equations, Expect, Report, Section,
-    SummaryKind, TableResult,
+    factored_in_functions, shown_factored, Entry, Equation, Equations, Expect, RankResult, Report,
+    Section, SummaryKind, TableResult,
 };
 
 impl LoadedSystem {
@@ -407,12 +407,12 @@ impl LoadedSystem {
     }
 
     /// A rank's condition given as text, read as [`LoadedSystem::condition`] reads one and
-    /// refused, at the value, where it describes no level set ([`Condition::level_set`]: a
-    /// parameter set to a function of phase space).
+    /// refused, at the value, where it describes no level set
+    /// ([`Condition::level_set_variables`]: a parameter set to a function of phase space).
     pub fn rank_condition(&self, text: &str) -> Result<Condition, FileError> {
         let source = self.given("<condition>", text);
         let pieces = Text::whole(&source).split(',');
-        parse_condition_with(self, &source, &pieces, |c| c.level_set().map(drop))
+        parse_rank_condition(self, &source, &pieces)
     }
 }
 
@@ -783,18 +783,8 @@ pub fn rank_report_when(
         rank.claim.proved = true;
         rank.claim.note = None;
     }
-    let vars = file.system.vars();
-    let coordinates: Vec<&str> = rank
-        .coordinates
-        .iter()
-        .map(|&v| vars.variable(v).unicode())
-        .collect();
-    rank.claim.statement = format!(
-        "rank ∂({})/∂({}) = {}",
-        names.join(", "),
-        coordinates.join(", "),
-        rank.expected
-    );
+    rank.claim.statement =
+        RankResult::statement(&names, file.system.vars(), &rank.coordinates, rank.expected);
     Ok(file.one_entry(
         format!("Functional independence in {}", file.the_name()),
         Entry::Rank(rank),

@@ -351,7 +351,7 @@ fn the_command_line_reads_latex() {
 }
 
 /// The square of a name with a prime and a subscript prints on an empty group, `P'_{1,1}{}^{2}`,
-/// and reads back as the square of that name; an empty group that carries no script is
+/// and reads back as the square of that name; an empty group that carries no superscript is
 /// refused.
 #[test]
 fn a_script_on_an_empty_group_belongs_to_the_name_before_it() {
@@ -365,11 +365,14 @@ fn a_script_on_an_empty_group_belongs_to_the_name_before_it() {
     let want = file.parse_argument(text).expect("it reads");
     reads_back(&file, text, printed, &want);
     reads_back(&file, text, r"P'_{1,1}{ } ^{2} + 3L'^2", &want);
-    let err = file.parse_argument("L'{} + 1").unwrap_err().to_string();
-    assert!(
-        err.contains("expected an expression after '{', found '}'"),
-        "{err}"
-    );
+    // A subscript on an empty group has no name to belong to (it was read as a name `_1`).
+    for refused in ["L'{} + 1", "x{}_{1}"] {
+        let err = file.parse_argument(refused).unwrap_err().to_string();
+        assert!(
+            err.contains("expected an expression after '{', found '}'"),
+            "{refused}: {err}"
+        );
+    }
 }
 
 /// A system file may be written in LaTeX: its Hamiltonian, functions, claims and conditions,

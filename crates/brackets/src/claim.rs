@@ -261,7 +261,7 @@ impl Condition {
     /// Refused ([`EngineError::RefusedCondition`]) where the condition sets an angle (its
     /// `e^{iθ}`, no coordinate of its own) or a parameter to a function of phase space
     /// (`ω = p_x`, which changes the functions rather than restricting them).
-    pub fn level_set(&self) -> Result<Vec<Var>, EngineError> {
+    pub fn level_set_variables(&self) -> Result<Vec<Var>, EngineError> {
         let mut set = Vec::new();
         for (v, value) in &self.subs {
             let vars = value.vars();

@@ -115,19 +115,19 @@ pub fn rank(space: &PhaseSpace, functions: &[Expr]) -> Result<RankCertificate, E
 /// Certifies the rank of the functions restricted to the level set of `condition`: each
 /// function with the condition substituted (which parametrises the level set by the variables
 /// it leaves free, exactly), its Jacobian by the phase variables the condition does not set
-/// ([`Condition::level_set`]). A condition that sets parameters only gives the rank of
+/// ([`Condition::level_set_variables`]). A condition that sets parameters only gives the rank of
 /// [`rank`] at their values. The certificate's point leaves out what the condition sets.
 ///
 /// Refused where the condition sets an angle or a parameter to a function of phase space
-/// ([`Condition::level_set`]), or sets to zero a variable a function divides by
+/// ([`Condition::level_set_variables`]), or sets to zero a variable a function divides by
 /// ([`Condition::apply_where_defined`]).
 ///
 /// ```
 /// use brackets::{rank_on, systems, Condition};
 ///
 /// // At the resonance p_θ = Iω the rotor's level set has five dimensions: there F2 = p_θ²/(2I)
-/// // is constant, and H, G1, G2 and P_{1,1} have rank 4, the most that integrals of a flow
-/// // on it can have.
+/// // is constant, and F1 (H but that constant), G1, G2 and P_{1,1} have rank 4, the most that
+/// // integrals of a flow on it can have.
 /// let rotor = systems::harmonic_rotor();
 /// let get = |name: &str| rotor.get(name).cloned();
 /// let at = Condition::all("p_θ = Iω", vec![(rotor.var("p_theta"), rotor.parse("I*omega")?)])?;
@@ -153,8 +153,9 @@ pub fn rank_on(
 }
 
 /// [`rank_on`] for functions that already have the condition substituted (as
-/// [`Condition::apply_where_defined`] does): refused where one of them still holds a phase
-/// variable the condition sets, whose column the Jacobian would leave out.
+/// [`Condition::apply_where_defined`] does): refused where one of them still holds a variable
+/// the condition sets, a phase variable whose column the Jacobian would leave out or a
+/// parameter the point would be taken at another value of, and which it would leave out.
 pub fn rank_restricted(
     space: &PhaseSpace,
     restricted: &[Expr],
@@ -162,15 +163,15 @@ pub fn rank_restricted(
 ) -> Result<RankCertificate, EngineError> {
     let coords = level_set_coordinates(space, condition)?;
     let set = |v: &Var| condition.subs().iter().any(|(w, _)| w == v);
-    if let Some(v) = space
-        .coordinates()
-        .into_iter()
-        .find(|v| set(v) && restricted.iter().any(|f| f.contains(*v)))
-    {
+    let unrestricted = condition
+        .subs()
+        .iter()
+        .find(|(v, _)| restricted.iter().any(|f| f.contains(*v)));
+    if let Some((v, _)) = unrestricted {
         return Err(EngineError::Invalid(format!(
             "a function restricted to the level set of {condition} still holds {}, which the \
              condition sets",
-            space.vars().variable(v).unicode()
+            space.vars().variable(*v).unicode()
         )));
     }
     let mut cert = rank_by(space, restricted, coords)?;
@@ -181,12 +182,12 @@ pub fn rank_restricted(
 
 /// The Jacobian's columns for a rank on the level set of `condition` ([`rank_on`]): the phase
 /// variables ([`PhaseSpace::coordinates`]) but those it sets, in their order; refused as
-/// [`Condition::level_set`] refuses.
+/// [`Condition::level_set_variables`] refuses.
 pub fn level_set_coordinates(
     space: &PhaseSpace,
     condition: &Condition,
 ) -> Result<Vec<Var>, EngineError> {
-    let set = condition.level_set()?;
+    let set = condition.level_set_variables()?;
     Ok(space
         .coordinates()
         .into_iter()
@@ -690,10 +691,17 @@ mod tests {
         assert!(!cert.coordinates.contains(&p_y));
         assert!(cert.point.iter().all(|(v, _)| *v != p_y && *v != omega));
         assert!(matches!(cert.upper, UpperBound::VanishingMinors { .. }));
-        // Functions that still hold p_y would be differentiated as if it were a parameter.
+        // Functions that still hold p_y would be differentiated as if it were a parameter;
+        // ones that still hold ω, taken at another value of it than the condition's.
         let unrestricted = rank_restricted(rotor.space(), &functions, &at).unwrap_err();
         assert!(
             unrestricted.to_string().contains("still holds p_y"),
+            "{unrestricted}"
+        );
+        let with_omega = [p("x"), p("omega*y")];
+        let unrestricted = rank_restricted(rotor.space(), &with_omega, &at).unwrap_err();
+        assert!(
+            unrestricted.to_string().contains("still holds ω"),
             "{unrestricted}"
         );
     }

@@ -96,16 +96,17 @@ impl Lexer<'_> {
         space.then_some(len)
     }
 
-    /// The length of the empty group at the start of `rest` that carries a script (`{}^{2}`,
-    /// as superint prints the square of `P'_{1,1}`), which is skipped as a space is, the script
-    /// going to what stands before it; `None` for any other text, an empty group elsewhere
-    /// being refused by the parser.
+    /// The length of the empty group at the start of `rest` that carries a superscript
+    /// (`{}^{2}`, as superint prints the square of `P'_{1,1}`), which is skipped as a space is,
+    /// the power going to what stands before it; `None` for any other text, an empty group
+    /// elsewhere being refused by the parser (a subscript on one, `x{}_{1}`, too: a subscript
+    /// is part of a name, and the group would leave it none).
     pub(crate) fn empty_base(rest: &str) -> Option<usize> {
         let inside = rest.strip_prefix('{')?.trim_start();
         let after = inside.strip_prefix('}')?;
         after
             .trim_start()
-            .starts_with(['^', '_'])
+            .starts_with('^')
             .then_some(rest.len() - after.len())
     }
 

@@ -363,13 +363,12 @@ pub(super) fn spell_out(unicode: &str) -> Option<String> {
 pub(super) fn render_name(name: &str) -> (String, String) {
     match name.split_once('_') {
         Some((head, tail)) if !head.is_empty() && !tail.is_empty() => {
-            let head = Piece::of(head);
             let subs: Vec<Piece> = tail.split('_').map(Piece::of).collect();
             let unicode: Vec<&str> = subs.iter().map(|s| s.unicode.as_str()).collect();
             let latex: Vec<&str> = subs.iter().map(|s| s.body.as_str()).collect();
             (
-                format!("{}_{}", head.unicode, unicode.join("_")),
-                format!("{}_{{{}}}", head.latex(), latex.join(",")),
+                format!("{}_{}", Piece::of(head).unicode, unicode.join("_")),
+                subscripted(head, &latex.join(","), false),
             )
         }
         _ => {
@@ -406,8 +405,32 @@ pub(super) fn render_momentum(name: &str) -> (String, String) {
     };
     let (unicode, _) = render_name(name);
     let subs: Vec<String> = tail.split('_').map(|s| Piece::of(s).body).collect();
-    let latex = format!("p_{{{}_{{{}}}}}", Piece::of(head).body, subs.join(","));
+    let latex = format!("p_{{{}}}", subscripted(head, &subs.join(","), true));
     (unicode, latex)
+}
+
+/// The LaTeX of the piece `head` with the subscript `subs` (its pieces' LaTeX, joined by
+/// commas): `omega` and `x` give `\omega_{x}`. A head that ends in subscript digits of its own
+/// takes `subs` into that subscript, `q₁` and `x` giving `q_{1,x}`, as LaTeX refuses the
+/// double subscript `q_{1}_{x}`. Inside a subscript (`inner`) a word is written without
+/// `\mathrm`, as a subscript's pieces are.
+fn subscripted(head: &str, subs: &str, inner: bool) -> String {
+    let letters = head.trim_end_matches(is_subscript);
+    let (base, own) = match !letters.is_empty() && letters.len() < head.len() {
+        true => {
+            let digits: String = head[letters.len()..]
+                .chars()
+                .filter_map(subscript_digit)
+                .collect();
+            (Piece::of(letters), format!("{digits},"))
+        }
+        false => (Piece::of(head), String::new()),
+    };
+    let base = match inner {
+        true => base.body,
+        false => base.latex(),
+    };
+    format!("{base}_{{{own}{subs}}}")
 }
 
 /// The first character of `name` that its LaTeX form cannot write in ASCII (a letter beyond
@@ -748,9 +771,20 @@ mod tests {
             ("p_theta", "p_θ", r"p_{\theta}"),
             ("p_q₁", "p_q₁", "p_{q_{1}}"),
             ("px_y", "px_y", r"\mathrm{px}_{y}"),
+            // A coordinate whose head has subscript digits of its own takes its subscript
+            // into theirs (`p_{q_{1}_{x}}` was a double subscript).
+            ("p_q₁_x", "p_q₁_x", "p_{q_{1,x}}"),
+            ("p_ω₂_y", "p_ω₂_y", r"p_{\omega_{2,y}}"),
         ] {
             assert_eq!(render_momentum(name), (text.into(), latex.into()), "{name}");
         }
+        // So does the coordinate itself (`q_{1}_{x}` was one too).
+        assert_eq!(render_name("q₁_x"), ("q₁_x".into(), "q_{1,x}".into()));
+        assert_eq!(render_name("ℓ₂_x"), ("ℓ₂_x".into(), r"{\ell}_{2,x}".into()));
+        assert_eq!(
+            render_name("xy₁₀_a_b"),
+            ("xy₁₀_a_b".into(), r"\mathrm{xy}_{10,a,b}".into())
+        );
         let vars = VarSet::builder()
             .coordinate("k_x")
             .momentum("p_k_x")
