@@ -158,7 +158,8 @@ pub struct Names {
 
 impl Names {
     /// The names of `system`: its variables (but its denominators, which are polynomials) by
-    /// their unicode and ASCII names, its functions by their display and ASCII names.
+    /// their unicode and ASCII names, its functions by their display and ASCII names and by
+    /// the text the expressions print the display as (`ω3` of `omega3`).
     pub fn of_system(system: &brackets::System) -> Names {
         let vars = system.vars();
         let mut forms = Vec::new();
@@ -173,6 +174,10 @@ impl Names {
         }
         for f in system.functions() {
             let latex = brackets::table::latex_name(&f.display);
+            // As a statement writes it too, its Greek letters written (`ω3` of `omega3`).
+            if let Some((text, _)) = trigpoly::shown_forms(&f.display) {
+                forms.push((text, latex.clone()));
+            }
             forms.push((f.display.clone(), latex.clone()));
             forms.push((f.name.clone(), latex));
         }
@@ -185,14 +190,17 @@ impl Names {
     }
 
     /// These names and the families shown as `displays` (a system file's `K`, `K̄`,
-    /// `Q_theta1`), whose instances a statement writes with their indices in braces,
-    /// `Q_theta1_{1,2}`: each is then written as the expressions write it,
+    /// `Q_theta1`), whose instances a statement writes with their indices in braces, as the
+    /// expressions print the display, `Q_θ1_{1,2}` (or as written, `Q_theta1_{1,2}`): each is
+    /// then written as the expressions write it,
     /// `Q_{\theta1;1,2}` (it was `Q_{theta1;1,2}`, t·h·e·t·a), a family's LaTeX
     /// ([`trigpoly::shown_forms`]) with the indices joined to its subscript
     /// ([`trigpoly::with_indices`]).
     pub fn with_families<'a>(mut self, displays: impl IntoIterator<Item = &'a str>) -> Names {
         for display in displays {
-            if let Some((_, latex)) = trigpoly::shown_forms(display) {
+            if let Some((text, latex)) = trigpoly::shown_forms(display) {
+                // As a statement writes it too, its Greek letters written (`Q_θ1`).
+                self.families.push((text, latex.clone()));
                 self.families.push((display.to_string(), latex));
             }
         }

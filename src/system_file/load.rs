@@ -1054,7 +1054,9 @@ impl<'a> Builder<'a> {
             });
             if matches!(kind, VarKind::Coordinate | VarKind::Angle) {
                 let momentum = format!("p_{name}");
-                let (text, latex) = (format!("p_{text}"), format!("p_{{{latex}}}"));
+                // As a momentum of a coordinate so named is written: `p_{\theta1}` of `θ1`.
+                let (text, latex) = trigpoly::momentum_forms(display)
+                    .unwrap_or_else(|| (format!("p_{text}"), format!("p_{{{latex}}}")));
                 let whose = PrintedNames::whose_variable(VarKind::Momentum, &momentum);
                 if let Err(why) = printed.admit_variable(&whose, &text, &latex, line) {
                     return alike(why);

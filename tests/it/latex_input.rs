@@ -63,15 +63,18 @@ fn what_superint_prints_in_latex_reads_back_to_the_same_value() {
 /// (`x2y`, `beta1x`); Greek letters before other letters (`alphab`); capital Greek (`Omega`,
 /// `Lambda3`); omicron, which LaTeX writes as an italic o (`\mathit{o}`; a bare `o` was read as
 /// no name); functions, a display and families named so; a family `K` beside a parameter
-/// `K_x` (`K_{x}`) and a family `K1` (`K_{1;1,0}`), whose braces are not `K`'s. What it
+/// `K_x` (`K_{x}`) and a family `K1` (`K_{1;1,0}`), whose braces are not `K`'s; `hbar` and
+/// `ell`, which print as `\hbar` and `\ell` (and `hbar2`, `\hbar_{2}`); a coordinate `u`
+/// displayed `θ2`, whose momentum is `p_{\theta2}` as `p_theta1`'s is `p_{\theta1}`. What it
 /// prints in LaTeX reads back to the same value, as every file's of `systems/` does.
 const AWKWARD_NAMES: &str = r#"name = "names that print in LaTeX"
-hamiltonian = "p_theta1^2/2 + p_omega_2^2/2 + p_k_x^2/2 + p_x2y^2/2 + p_q1^2/2 + p_phi2^2/(2*I) + p_theta1_y^2/2 + alpha12*theta1^2/2 + Omega*omega_2^2/2 + alphab*k_x^2 + beta1x*x2y^2 + mu_a_b*q1^2 + Lambda3*cos(phi2) + omega_x1*theta1*omega_2 + theta1_x*k_x + Omega1*theta1_y^2 + K_x*q1 + omicron*x2y"
+hamiltonian = "p_theta1^2/2 + p_omega_2^2/2 + p_k_x^2/2 + p_x2y^2/2 + p_q1^2/2 + p_phi2^2/(2*I) + p_theta1_y^2/2 + alpha12*theta1^2/2 + Omega*omega_2^2/2 + alphab*k_x^2 + beta1x*x2y^2 + mu_a_b*q1^2 + Lambda3*cos(phi2) + omega_x1*theta1*omega_2 + theta1_x*k_x + Omega1*theta1_y^2 + K_x*q1 + omicron*x2y + hbar*ell*u^2 + hbar2*p_u^2 + p_ell^2 + ell*hbar"
 
 [phase_space]
-coordinates = ["theta1", "omega_2", "k_x", "x2y", "q1", "theta1_y"]
+coordinates = ["theta1", "omega_2", "k_x", "x2y", "q1", "theta1_y", "u", "ell"]
 angles = ["phi2"]
-parameters = ["I", "alpha12", "Omega", "Omega1", "alphab", "beta1x", "mu_a_b", "Lambda3", "omega_x1", "theta1_x", "K_x", "omicron"]
+parameters = ["I", "alpha12", "Omega", "Omega1", "alphab", "beta1x", "mu_a_b", "Lambda3", "omega_x1", "theta1_x", "K_x", "omicron", "hbar", "hbar2"]
+display = { u = "θ2" }
 
 [[function]]
 name = "L_theta1"
@@ -141,6 +144,11 @@ claim = "Omega2_1_1*Q_theta1_1_1 = omega3^2"
 expect = "refuted"
 
 [[claim]]
+id = "hbar"
+claim = "{u, H} = 2*hbar2*p_u + hbar*ell"
+expect = "refuted"
+
+[[claim]]
 id = "wrong"
 claim = "{L_theta1, H} = omega_x1*theta1_x*alpha12*Ab*omega3*psi2_a*Omega1"
 expect = "refuted"
@@ -167,10 +175,21 @@ fn names_with_greek_letters_digits_and_subscripts_read_back_from_latex() {
         r"Q_{\theta1;1,0}",
         r"K_{1;1,0} &= K_{1,0} \omega_{3}",
         r"\mathit{o} \mathrm{x2y}",
+        r"\{\theta_{2}, H\} &= 2 \hbar_{2} p_{\theta2} + \hbar\ell",
+        r"p_{\ell}",
     ] {
         assert!(out.contains(written), "{written} in {out}");
     }
-    for wrong in [r"\theta 1", "p_{k,x}", "{theta1;"] {
+    for wrong in [
+        r"\theta 1",
+        "p_{k,x}",
+        "{theta1;",
+        r"p_{\theta_{2}}",
+        r" {\hbar}",
+        r" {\ell}",
+        "mathrm{hbar",
+        "mathrm{ell",
+    ] {
         assert!(!out.contains(wrong), "{wrong} in {out}");
     }
 }

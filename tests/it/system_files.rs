@@ -4487,3 +4487,86 @@ fn a_variable_display_prints_in_every_output_and_its_ascii_reads_back() {
     assert_eq!(o.status.code(), Some(0), "{out}{}", text(&o.stderr));
     assert!(out.contains("[residual proved]"), "{out}");
 }
+
+/// Functions and a family named with Greek letters spelled out, and `hbar`, `ell`: see
+/// [`a_claims_echo_writes_names_as_its_expressions_do`].
+const GREEK_NAMES: &str = r#"name = "greek names"
+hamiltonian = "p_x^2/2 + omega^2*x^2/2 + p_theta1^2/2 + hbar*ell"
+
+[phase_space]
+coordinates = ["x"]
+angles = ["theta1"]
+parameters = ["omega", "hbar", "ell"]
+
+[[function]]
+name = "omega3"
+value = "p_x^2 + x^2"
+
+[[family]]
+name = "Q_theta1"
+value = "(p_x + i*x)^m*exp(i*n*theta1)"
+
+[[claim]]
+id = "square"
+claim = "{omega3^2, H} = 0"
+expect = "refuted"
+
+[[claim]]
+id = "q"
+claim = "{Q_theta1_1_1, omega3} = hbar*ell*Q_theta1_1_1"
+expect = "refuted"
+"#;
+
+/// A claim's echo writes a function's or a family's name as the expressions of the same
+/// report write it, its Greek letters as letters (`ω3²`, `Q_θ1_{1,1}` beside the residual's
+/// `−(ħℓ − 2i) Q_θ1_{1,1}`; it echoed `omega3²` and `Q_theta1_{1,1}`), and `hbar`, `ell` as `ħ`, `ℓ`
+/// as `omega` is `ω` (it echoed `hbar ell`), in text, Markdown, JSON's `statement` and LaTeX
+/// (`\omega_{3}`, `Q_{\theta1;1,1}`, `\hbar\ell`), while JSON's `ascii` keeps the names.
+#[test]
+fn a_claims_echo_writes_names_as_its_expressions_do() {
+    let dir = scratch("greek-echo");
+    std::fs::write(dir.join("greek.toml"), GREEK_NAMES).expect("write");
+    let check = |format: &str| {
+        let o = superint_in(
+            &dir,
+            &["check", "greek.toml", "--no-timings", "--format", format],
+        );
+        assert_eq!(o.status.code(), Some(0), "{}", text(&o.stderr));
+        text(&o.stdout)
+    };
+    let out = check("text");
+    for piece in [
+        "{ω3², H} = 0",
+        "{Q_θ1_{1,1}, ω3} = ħℓ Q_θ1_{1,1}",
+        "= −(ħℓ − 2i) Q_θ1_{1,1}",
+        "+ ħℓ",
+    ] {
+        assert!(out.contains(piece), "{piece}: {out}");
+    }
+    for wrong in ["omega3", "theta1", "hbar", "ell"] {
+        assert!(!out.contains(wrong), "{wrong}: {out}");
+    }
+    let markdown = check("markdown");
+    assert!(
+        markdown.contains("`{Q_θ1_{1,1}, ω3} = ħℓ Q_θ1_{1,1}`"),
+        "{markdown}"
+    );
+    let latex = check("latex");
+    for piece in [
+        r"\{\omega_{3}^{2}, H\}",
+        r"\{Q_{\theta1;1,1}, \omega_{3}\} &= \hbar\ell Q_{\theta1;1,1}",
+    ] {
+        assert!(latex.contains(piece), "{piece}: {latex}");
+    }
+    assert!(
+        !latex.contains("hbar}") && !latex.contains("mathrm"),
+        "{latex}"
+    );
+    let v: Value = serde_json::from_str(&check("json")).expect("JSON");
+    let claims = v["claims"].as_array().expect("claims");
+    assert_eq!(claims[1]["statement"], "{Q_θ1_{1,1}, ω3} = ħℓ Q_θ1_{1,1}");
+    assert_eq!(
+        claims[1]["ascii"],
+        "{Q_theta1_1_1, omega3} = hbar*ell*Q_theta1_1_1"
+    );
+}

@@ -349,7 +349,7 @@ pub(super) fn spell_out(unicode: &str) -> Option<String> {
     }
     let piece = |p: &str| -> String {
         let letters = p.trim_end_matches(|c: char| c.is_ascii_digit());
-        match GREEK.iter().find(|(_, uni, _)| *uni == letters) {
+        match named_letters().find(|(_, uni, _)| *uni == letters) {
             Some((ascii, _, _)) => format!("{ascii}{}", &p[letters.len()..]),
             None => p.to_string(),
         }
@@ -358,7 +358,7 @@ pub(super) fn spell_out(unicode: &str) -> Option<String> {
 }
 
 /// `omega_x` → (`ω_x`, `\omega_{x}`); `p_theta` → (`p_θ`, `p_{\theta}`); `G1` → (`G1`, `G_{1}`);
-/// `q₁` → (`q₁`, `q_{1}`); `ħ` → (`ħ`, `{\hbar}`). The LaTeX is ASCII unless the name has a letter
+/// `q₁` → (`q₁`, `q_{1}`); `ħ` and `hbar` → (`ħ`, `\hbar`). The LaTeX is ASCII unless the name has a letter
 /// of no LaTeX command here ([`latex_unwritable`]).
 pub(super) fn render_name(name: &str) -> (String, String) {
     match name.split_once('_') {
@@ -433,6 +433,33 @@ fn subscripted(head: &str, subs: &str, inner: bool) -> String {
     format!("{base}_{{{own}{subs}}}")
 }
 
+/// The momentum of a coordinate or angle shown as `display` ([`display_forms`]), as text and
+/// LaTeX: `p_` and the display, its subscript the display as a momentum's subscript writes a
+/// coordinate's name, so that it reads as a momentum of an undisplayed
+/// coordinate does: `θ1` → (`p_θ1`, `p_{\theta1}`, as `p_theta1`, where `p_{\theta_{1}}`
+/// nested a subscript), `Gx` → (`p_Gx`, `p_{Gx}`), `ω₊` → (`p_ω₊`, `p_{\omega_{+}}`),
+/// `A_x` → (`p_A_x`, `p_{A_{x}}`); a display with a bar or primes, which no name has, its
+/// LaTeX in the subscript whole: `Z̄` → (`p_Z̄`, `p_{\bar{Z}}`). `None` for what is no
+/// display name.
+///
+/// ```
+/// use trigpoly::momentum_forms;
+///
+/// assert_eq!(momentum_forms("θ1"), Some(("p_θ1".into(), r"p_{\theta1}".into())));
+/// assert_eq!(momentum_forms("ξ"), Some(("p_ξ".into(), r"p_{\xi}".into())));
+/// assert_eq!(momentum_forms("Z̄"), Some(("p_Z̄".into(), r"p_{\bar{Z}}".into())));
+/// ```
+pub fn momentum_forms(display: &str) -> Option<(String, String)> {
+    let (text, latex) = display_forms(display)?;
+    let momentum = format!("p_{display}");
+    // A display written as a name is (no bar, no prime) is written as its momentum is.
+    let as_name = render_name(display);
+    Some(match as_name == (text.clone(), latex.clone()) {
+        true => render_momentum(&momentum),
+        false => (format!("p_{text}"), format!("p_{{{latex}}}")),
+    })
+}
+
 /// The first character of `name` that its LaTeX form cannot write in ASCII (a letter beyond
 /// ASCII, the Greek letters, `ħ`, `ℓ` and the subscript digits), if any: such a name would stop
 /// `pdflatex`.
@@ -450,8 +477,16 @@ pub fn latex_unwritable(name: &str) -> Option<char> {
 pub const LATEX_LETTERS: &str =
     "a name's letters are ASCII, Greek (alpha or α), ħ, ℓ and the subscript digits ₀–₉";
 
-/// Letters beyond ASCII and Greek with a LaTeX command of their own.
-const LETTERS: &[(char, &str)] = &[('ħ', r"{\hbar}"), ('ℓ', r"{\ell}")];
+/// Letters beyond ASCII and Greek with a LaTeX command of their own, spelled out as the
+/// command names them: as a Greek letter's, either spelling is the letter (a name's piece
+/// `hbar` prints as `ħ`, `ell2` as `ℓ2`, as `omega` prints as `ω`).
+const LETTERS: &[(&str, &str, &str)] = &[("hbar", "ħ", r"\hbar"), ("ell", "ℓ", r"\ell")];
+
+/// The letters a name may spell out, each with its letter and its LaTeX: the Greek ones,
+/// `ħ` and `ℓ`.
+fn named_letters() -> impl Iterator<Item = &'static (&'static str, &'static str, &'static str)> {
+    GREEK.iter().chain(LETTERS)
+}
 
 /// The subscript digits `₀`–`₉`.
 const SUBSCRIPT_DIGITS: &str = "₀₁₂₃₄₅₆₇₈₉";
@@ -499,8 +534,7 @@ fn letter_by_letter(p: &str) -> String {
             digits.clear();
             continue;
         }
-        let greek = GREEK.iter().find(|g| g.1.chars().eq([c])).map(|g| g.2);
-        match greek.or_else(|| LETTERS.iter().find(|l| l.0 == c).map(|l| l.1)) {
+        match named_letters().find(|g| g.1.chars().eq([c])).map(|g| g.2) {
             Some(tex) if tex.starts_with('\\') => {
                 write_display(&mut body, format_args!("{{{tex}}}"))
             }
@@ -522,7 +556,7 @@ struct Piece {
 
 impl Piece {
     fn of(p: &str) -> Piece {
-        for (ascii, uni, tex) in GREEK {
+        for (ascii, uni, tex) in named_letters() {
             if p == *ascii || p == *uni {
                 return Piece::symbol(uni, tex);
             }
@@ -547,7 +581,8 @@ impl Piece {
         // which would make two words of one in the names that LaTeX spells.
         let letters = p.trim_end_matches(|c: char| c.is_ascii_digit());
         if letters.len() < p.len() {
-            if let Some((_, uni, tex)) = GREEK.iter().find(|g| letters == g.0 || letters == g.1) {
+            if let Some((_, uni, tex)) = named_letters().find(|g| letters == g.0 || letters == g.1)
+            {
                 let digits = &p[letters.len()..];
                 return Piece {
                     unicode: format!("{uni}{digits}"),
@@ -597,8 +632,8 @@ mod tests {
     fn names_beyond_ascii_have_latex_forms() {
         assert_eq!(render_name("q₁"), ("q₁".into(), "q_{1}".into()));
         assert_eq!(render_name("p_q₁"), ("p_q₁".into(), "p_{q_{1}}".into()));
-        assert_eq!(render_name("ħ"), ("ħ".into(), r"{\hbar}".into()));
-        assert_eq!(render_name("ℓ2"), ("ℓ2".into(), r"{\ell}_{2}".into()));
+        assert_eq!(render_name("ħ"), ("ħ".into(), r"\hbar".into()));
+        assert_eq!(render_name("ℓ2"), ("ℓ2".into(), r"\ell_{2}".into()));
         assert_eq!(render_name("ω₂"), ("ω₂".into(), r"\omega_{2}".into()));
         assert_eq!(
             render_name("xy₁₀"),
@@ -755,6 +790,75 @@ mod tests {
             assert_eq!(render_name(name), (text.into(), latex.into()), "{name}");
             assert!(!latex.contains(' '), "{name}");
         }
+    }
+
+    /// `hbar` and `ell` print as `ħ` and `ℓ`, as `omega` prints as `ω` (they printed as words,
+    /// `\mathrm{hbar}`), alone, with digits and in subscripts, and their LaTeX is the bare
+    /// command, `\hbar`, as `\omega` is (it was `{\hbar}`, a group, which the reader took
+    /// for a bracket `{f, g}`); either spelling names the variable, as `ω` does `omega`. In a
+    /// longer word they stay letters (`hbarx`, `shell`).
+    #[test]
+    fn hbar_and_ell_print_as_their_letters() {
+        for (name, text, latex) in [
+            ("hbar", "ħ", r"\hbar"),
+            ("ħ", "ħ", r"\hbar"),
+            ("ell", "ℓ", r"\ell"),
+            ("ell2", "ℓ2", r"\ell_{2}"),
+            ("p_hbar", "p_ħ", r"p_{\hbar}"),
+            ("p_ell1", "p_ℓ1", r"p_{\ell1}"),
+            ("hbar1_x", "ħ1_x", r"\mathrm{\hbar1}_{x}"),
+            ("omega_ell", "ω_ℓ", r"\omega_{\ell}"),
+            ("hbarx", "hbarx", r"\mathrm{hbarx}"),
+            ("shell", "shell", r"\mathrm{shell}"),
+        ] {
+            assert_eq!(render_name(name), (text.into(), latex.into()), "{name}");
+        }
+        assert_eq!(spell_out("ħ").as_deref(), Some("hbar"));
+        assert_eq!(spell_out("p_ℓ2").as_deref(), Some("p_ell2"));
+        let vars = VarSet::builder()
+            .parameter("hbar")
+            .parameter("ℓ")
+            .build()
+            .expect("names");
+        for spelling in ["hbar", "ħ", "ell", "ℓ"] {
+            assert!(vars.lookup(spelling).is_some(), "{spelling}");
+        }
+        let ell = vars.lookup("ell").expect("ℓ");
+        assert_eq!(vars.variable(ell).ascii(), "ell");
+        VarSet::builder()
+            .parameter("hbar")
+            .parameter("ħ")
+            .build()
+            .expect_err("two spellings of one letter");
+    }
+
+    /// A displayed coordinate's momentum is written as a momentum of a coordinate so named
+    /// (`p_{\theta1}` of `θ1`, as of `theta1`; it was `p_{\theta_{1}}`, a subscript nested in
+    /// the momentum's), a bar or primes, which no name has, kept whole in the subscript.
+    #[test]
+    fn a_displayed_coordinates_momentum_reads_as_a_named_ones() {
+        for (display, text, latex) in [
+            ("θ1", "p_θ1", r"p_{\theta1}"),
+            ("G1", "p_G1", "p_{G1}"),
+            ("Gx", "p_Gx", "p_{Gx}"),
+            ("ω₊", "p_ω₊", r"p_{\omega_{+}}"),
+            ("ξ", "p_ξ", r"p_{\xi}"),
+            ("A_x", "p_A_x", "p_{A_{x}}"),
+            ("Z̄", "p_Z̄", r"p_{\bar{Z}}"),
+            ("Ā_x", "p_A\u{304}_x", r"p_{\bar{A}_{x}}"),
+            ("G1'", "p_G1'", "p_{G_{1}'}"),
+        ] {
+            assert_eq!(
+                momentum_forms(display),
+                Some((text.into(), latex.into())),
+                "{display}"
+            );
+            if !display.contains(['\u{304}', '\'', 'Ā']) {
+                let name = format!("p_{display}");
+                assert_eq!(render_momentum(&name).1, latex, "{display}");
+            }
+        }
+        assert_eq!(momentum_forms("x(t)"), None);
     }
 
     /// A momentum's coordinate keeps its own subscript inside the momentum's (`p_{k_{x}}`,

@@ -667,6 +667,35 @@ fn greek_variants_spell_out_in_ascii() {
     assert_eq!(p::<GaussianRational>(&vars, &ascii), f);
 }
 
+/// `hbar` and `ell` print as `ħ` and `ℓ`, as `omega` prints as `ω`, run together with other
+/// one-letter names as the paper writes `ħω`; their LaTeX is `\hbar`, `\ell`, and the ASCII
+/// form spells them out, as a name declared `ħ` is spelled (it printed `ħ`, no ASCII). They
+/// printed as words, `hbar ℓ`, `\mathrm{hbar}`; a name declared `ħ` printed `{\hbar}`.
+#[test]
+fn hbar_and_ell_print_as_letters() {
+    let vars = VarSet::builder()
+        .coordinate("x")
+        .momentum("p_x")
+        .parameter("hbar")
+        .parameter("ℓ")
+        .parameter("omega")
+        .build()
+        .unwrap();
+    prints(
+        &vars,
+        "hbar*omega*x + ell^2*p_x",
+        [
+            "ℓ² p_x + ħωx",
+            r"\ell^{2} p_{x} + \hbar \omega x",
+            "ell^2*p_x + hbar*omega*x",
+        ],
+    );
+    assert_eq!(
+        p::<GaussianRational>(&vars, "ħ*ω*x + ℓ^2*p_x"),
+        p::<GaussianRational>(&vars, "hbar*omega*x + ell^2*p_x")
+    );
+}
+
 /// High powers of cosines and sines print as the single terms they are, in two angles too:
 /// the conversion from `e^{ikθ}` goes one angle at a time, with the powers of
 /// `cos θ + i sin θ` formed one from the next (`cos¹⁵⁰a cos¹⁵⁰b` took 37 s to print, and
