@@ -79,7 +79,7 @@ impl Printed {
 impl LoadedSystem {
     /// The name of a variable, function or family instance as printed, `name` itself for
     /// anything else. A function's or family's display is written as the expressions write
-    /// it ([`trigpoly::shown_forms`], as a variable's name is): a Greek letter spelled out
+    /// it ([`trigpoly::shown_text`], as a variable's name is): a Greek letter spelled out
     /// becomes the letter, `omega3` → `ω3`, `Q_theta1_1_2` → `Q_θ1_{1,2}`.
     ///
     /// ```
@@ -98,16 +98,19 @@ impl LoadedSystem {
             return vars.variable(v).unicode().to_string();
         }
         if self.system.get(name).is_ok() {
-            return shown(self.system.display_name(name));
+            return trigpoly::shown_text(self.system.display_name(name));
         }
         if let Some((k, m, n)) = instance_of(&self.families, name) {
-            return format!("{}_{{{m},{n}}}", shown(&self.families[k].display));
+            return format!(
+                "{}_{{{m},{n}}}",
+                trigpoly::shown_text(&self.families[k].display)
+            );
         }
         for f in &self.families {
             let pattern = format!("{}_{}_{}", f.name, f.indices[0], f.indices[1]);
             if name == pattern {
                 let (m, n) = (&f.indices[0], &f.indices[1]);
-                return format!("{}_{{{m},{n}}}", shown(&f.display));
+                return format!("{}_{{{m},{n}}}", trigpoly::shown_text(&f.display));
             }
         }
         name.to_string()
@@ -459,24 +462,6 @@ impl LoadedSystem {
         p.first_long = true;
         p.last_long = true;
         p
-    }
-}
-
-/// A function's or family's display as the expressions print it ([`trigpoly::shown_forms`]:
-/// `omega3` → `ω3`, `Q_theta1` → `Q_θ1`, `hbar` → `ħ`); as it is where it has no such form
-/// (`x(t)`), or where that form is only its letters with a bar taken apart (`Ā_y`, which
-/// they write as `A` and a combining bar).
-fn shown(display: &str) -> String {
-    let apart: String = display
-        .chars()
-        .flat_map(|c| match trigpoly::unbarred(c) {
-            Some(base) => vec![base, '\u{304}'],
-            None => vec![c],
-        })
-        .collect();
-    match trigpoly::shown_forms(display) {
-        Some((text, _)) if text != apart => text,
-        _ => display.to_string(),
     }
 }
 

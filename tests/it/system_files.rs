@@ -4521,7 +4521,8 @@ expect = "refuted"
 /// report write it, its Greek letters as letters (`ω3²`, `Q_θ1_{1,1}` beside the residual's
 /// `−(ħℓ − 2i) Q_θ1_{1,1}`; it echoed `omega3²` and `Q_theta1_{1,1}`), and `hbar`, `ell` as `ħ`, `ℓ`
 /// as `omega` is `ω` (it echoed `hbar ell`), in text, Markdown, JSON's `statement` and LaTeX
-/// (`\omega_{3}`, `Q_{\theta1;1,1}`, `\hbar\ell`), while JSON's `ascii` keeps the names.
+/// (`\omega_{3}`, `Q_{\theta1;1,1}`, `\hbar\ell`), while JSON's `ascii` keeps the names; and
+/// so does a bracket table.
 #[test]
 fn a_claims_echo_writes_names_as_its_expressions_do() {
     let dir = scratch("greek-echo");
@@ -4568,5 +4569,27 @@ fn a_claims_echo_writes_names_as_its_expressions_do() {
     assert_eq!(
         claims[1]["ascii"],
         "{Q_theta1_1_1, omega3} = hbar*ell*Q_theta1_1_1"
+    );
+    // A bracket table names them so too, in its headers and its entries (it wrote `omega3`,
+    // `−2i Q_theta1_{1,1}`).
+    let o = superint_in(
+        &dir,
+        &[
+            "table",
+            "greek.toml",
+            "omega3",
+            "Q_theta1_1_1",
+            "--no-timings",
+        ],
+    );
+    let table = text(&o.stdout);
+    assert_eq!(o.status.code(), Some(0), "{}", text(&o.stderr));
+    assert!(
+        table.contains("    ω3         │ 0               −2i Q_θ1_{1,1}\n"),
+        "{table}"
+    );
+    assert!(
+        !table.contains("omega3") && !table.contains("theta1"),
+        "{table}"
     );
 }

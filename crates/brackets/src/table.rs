@@ -104,7 +104,8 @@ impl BracketTable {
             .iter()
             .map(|n| FunctionName {
                 name: n.to_string(),
-                display: system.display_name(n).to_string(),
+                // As the claims' echo and expressions print it: `ω3` of `omega3`.
+                display: trigpoly::shown_text(system.display_name(n)),
             })
             .zip(funcs.iter().cloned())
             .collect();

@@ -10,7 +10,7 @@ mod names;
 
 pub use names::{
     display_forms, has_several_words, is_identifier, latex_unwritable, momentum_forms, shown_forms,
-    unbarred, with_indices, BadName, LATEX_LETTERS, MAX_NAME_CHARS, RESERVED,
+    shown_text, unbarred, with_indices, BadName, LATEX_LETTERS, MAX_NAME_CHARS, RESERVED,
 };
 pub(crate) use names::{letter_of_command, long_name, unparenthesized};
 use names::{render_momentum, render_name, spell_out};

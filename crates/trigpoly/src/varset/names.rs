@@ -83,6 +83,34 @@ pub fn shown_forms(display: &str) -> Option<(String, String)> {
     Some((unicode.join(" "), latex.join(" ")))
 }
 
+/// A display name as text prints it ([`shown_forms`]): a function's or a family's name
+/// written as a variable's is, its Greek letters spelled out as the letters, `omega3` → `ω3`,
+/// `Q_theta1_{1,2}` → `Q_θ1_{1,2}`, `hbar` → `ħ`; as it is where it has no such form (`x(t)`)
+/// or where that form is only its letters with a bar taken apart (`Ā_y`, which the form
+/// writes as `A` and a combining bar).
+///
+/// ```
+/// use trigpoly::shown_text;
+///
+/// assert_eq!(shown_text("omega3"), "ω3");
+/// assert_eq!(shown_text("Q_theta1_{1,2}"), "Q_θ1_{1,2}");
+/// assert_eq!(shown_text("Ā_y"), "Ā_y");
+/// assert_eq!(shown_text("x(t)"), "x(t)");
+/// ```
+pub fn shown_text(display: &str) -> String {
+    let apart: String = display
+        .chars()
+        .flat_map(|c| match unbarred(c) {
+            Some(base) => [base, '\u{304}'].into_iter().take(2),
+            None => [c, c].into_iter().take(1),
+        })
+        .collect();
+    match shown_forms(display) {
+        Some((text, _)) if text != apart => text,
+        _ => display.to_string(),
+    }
+}
+
 /// A display name that ends with a family instance's two indices in braces, split there:
 /// `K̄_{1,2}` → (`K̄`, `1,2`), `K_{m,n}` → (`K`, `m,n`); `None` for any other (`K_{1}`).
 fn instance_indices(display: &str) -> Option<(&str, &str)> {
