@@ -912,7 +912,7 @@ mod tests {
         }
         // So does the coordinate itself (`q_{1}_{x}` was one too).
         assert_eq!(render_name("q₁_x"), ("q₁_x".into(), "q_{1,x}".into()));
-        assert_eq!(render_name("ℓ₂_x"), ("ℓ₂_x".into(), r"{\ell}_{2,x}".into()));
+        assert_eq!(render_name("ℓ₂_x"), ("ℓ₂_x".into(), r"\ell_{2,x}".into()));
         assert_eq!(
             render_name("xy₁₀_a_b"),
             ("xy₁₀_a_b".into(), r"\mathrm{xy}_{10,a,b}".into())
