@@ -621,7 +621,7 @@ impl<'a> Scope<'a> {
         let Some(spelled) = trigpoly::syntax::latex_name(written) else {
             return false;
         };
-        self.declared_as(&spelled).is_some()
+        self.file.declares(&spelled)
             || self
                 .latex_names(|n| n.names(&spelled, self.indices))
                 .iter()
@@ -638,8 +638,7 @@ impl<'a> Scope<'a> {
         if let Some(v) = vars.lookup(name) {
             return Some(vars.variable(v).name().to_string());
         }
-        let functions = self.file.system.functions().iter();
-        (functions.into_iter())
+        (self.file.system.functions().iter())
             .find(|f| f.name == name || f.display == name)
             .map(|f| f.name.clone())
     }
@@ -1049,11 +1048,10 @@ impl Context<GaussianRational> for Scope<'_> {
         self.file.system.bracket(f, g).map_err(|e| e.to_string())
     }
 
+    // Each place once: `LoadedSystem::warn` keeps a warning once, so a reading noted again
+    // (the lowering may meet a name twice) is dropped there.
     fn run_together(&self, noted: trigpoly::RunTogether) {
-        let mut kept = self.noted.borrow_mut();
-        if !kept.contains(&noted) {
-            kept.push(noted);
-        }
+        self.noted.borrow_mut().push(noted);
     }
 
     fn names(&self) -> Vec<String> {
