@@ -336,8 +336,7 @@ impl<C: Coefficient> Lower<'_, C> {
                 // parentheses, squares both).
                 if let (ExprKind::Name(name), false) = (&a.kind, a.in_parentheses()) {
                     if self.vars.lookup(name).is_none() && self.ctx.lookup(name).is_none() {
-                        if let Some(mut parts) = self.split_name(name) {
-                            self.note_split(name, a.span, &parts);
+                        if let Some(mut parts) = self.read_split(name, a.span) {
                             let last = parts.pop().expect("a split has two parts or more");
                             let exp = self.integer_exponent(b)?;
                             let mut acc = self
@@ -411,8 +410,7 @@ impl<C: Coefficient> Lower<'_, C> {
             };
         }
         // The text form writes products of names side by side: `Mω` is `M·ω`.
-        if let Some(parts) = self.split_name(name) {
-            self.note_split(name, span, &parts);
+        if let Some(parts) = self.read_split(name, span) {
             let mut acc = Poly::one(self.vars);
             for part in parts {
                 acc = acc
@@ -459,20 +457,22 @@ impl<C: Coefficient> Lower<'_, C> {
         }
     }
 
-    /// Tells the context of `name`, at `span`, read as the product of `pieces`, if that
-    /// reading is in doubt ([`RunTogether::doubt`]).
-    fn note_split(&self, name: &str, span: Span, pieces: &[String]) {
+    /// Splits `name`, at `span`, to be read as the product of its pieces ([`Self::split_name`]),
+    /// and tells the context if that reading is in doubt ([`RunTogether::doubt`]).
+    fn read_split(&self, name: &str, span: Span) -> Option<Vec<String>> {
+        let pieces = self.split_name(name)?;
         let known = self.known_names();
         // A piece that is no variable is one of the context's names.
         let function = |p: &str| self.vars.lookup(p).is_none() && known.iter().any(|k| k == p);
-        if let Some(doubt) = RunTogether::doubt(name, pieces, &known, &function) {
+        if let Some(doubt) = RunTogether::doubt(name, &pieces, &known, &function) {
             self.ctx.run_together(RunTogether {
                 name: name.to_string(),
                 span,
-                pieces: pieces.to_vec(),
+                pieces: pieces.clone(),
                 doubt,
             });
         }
+        Some(pieces)
     }
 
     /// The names an expression may use: the variables', then the context's.

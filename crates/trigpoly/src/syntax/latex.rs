@@ -38,6 +38,10 @@ const IGNORED: &[&str] = &[
     "textstyle",
 ];
 
+/// The commands of a fraction, `\frac{a}{b}` ([`Tok::Frac`]), which the parser takes for a
+/// whole divisor as it does one in parentheses.
+pub(super) const FRACTIONS: &[&str] = &["frac", "tfrac", "dfrac"];
+
 /// Commands whose braces hold a name set upright: `\mathrm{i}`, `\operatorname{Re}`.
 const UPRIGHT: &[&str] = &["mathrm", "operatorname", "mathit", "text"];
 
@@ -121,10 +125,9 @@ impl Lexer<'_> {
             "}" => Tok::RBrace,
             "cdot" | "times" | "ast" => Tok::Star,
             "div" => Tok::Slash,
-            "frac" | "tfrac" | "dfrac" => Tok::Frac,
+            _ if FRACTIONS.contains(&word) => Tok::Frac,
             "sqrt" => Tok::Sqrt,
-            "cos" | "sin" | "exp" => Tok::Name(word.to_string()),
-            "Re" | "Im" => Tok::Name(word.to_string()),
+            "cos" | "sin" | "exp" | "Re" | "Im" => Tok::Name(word.to_string()),
             _ => {
                 self.pos = start;
                 let name = self.latex_base()?;

@@ -7,6 +7,7 @@
 use num_bigint::BigInt;
 
 use super::error::{line_col, ParseError, Span};
+use super::latex::FRACTIONS;
 use super::lexer::{Lexer, Tok, Token};
 
 /// Maximum nesting of parentheses, calls, brackets and operators (the operand of an operator
@@ -284,9 +285,10 @@ impl Parser<'_> {
             if let (Some(divisor), true) = (divisor, op.is_juxtaposition()) {
                 // A divisor in parentheses is plainly the whole divisor: `p²/(2M) x`.
                 let text = &self.src[divisor.start..divisor.end];
-                let fraction = ["\\frac", "\\tfrac", "\\dfrac"];
-                let whole = (text.starts_with('(') && text.ends_with(')'))
-                    || fraction.iter().any(|f| text.starts_with(f));
+                let fraction = text
+                    .strip_prefix('\\')
+                    .is_some_and(|t| FRACTIONS.iter().any(|f| t.starts_with(f)));
+                let whole = (text.starts_with('(') && text.ends_with(')')) || fraction;
                 if !whole {
                     return Err(self.ambiguous_division(divisor));
                 }

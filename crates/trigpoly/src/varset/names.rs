@@ -353,19 +353,15 @@ const GREEK: &[(&str, &str, &str)] = &[
 /// Both of the forms LaTeX has for epsilon, phi and theta are taken, whichever one a paper
 /// uses.
 pub(crate) fn letter_of_command(command: &str) -> Option<&'static str> {
-    let extra = match command {
-        "phi" | "varphi" => Some("φ"),
-        "epsilon" | "varepsilon" => Some("ε"),
-        "hbar" => Some("ħ"),
-        "ell" => Some("ℓ"),
-        _ => None,
-    };
-    extra.or_else(|| {
-        GREEK
-            .iter()
+    match command {
+        // The forms of phi and epsilon that the table, which prints `\varphi` and `\epsilon`,
+        // does not.
+        "phi" => Some("φ"),
+        "varepsilon" => Some("ε"),
+        _ => named_letters()
             .find(|g| g.2.strip_prefix('\\') == Some(command))
-            .map(|g| g.1)
-    })
+            .map(|g| g.1),
+    }
 }
 
 /// A unicode name with its Greek letters spelled out, piece by piece between underscores and
@@ -482,7 +478,7 @@ pub fn momentum_forms(display: &str) -> Option<(String, String)> {
     let momentum = format!("p_{display}");
     // A display written as a name is (no bar, no prime) is written as its momentum is.
     let as_name = render_name(display);
-    Some(match as_name == (text.clone(), latex.clone()) {
+    Some(match as_name.0 == text && as_name.1 == latex {
         true => render_momentum(&momentum),
         false => (format!("p_{text}"), format!("p_{{{latex}}}")),
     })

@@ -30,6 +30,24 @@ pub fn phase_space() -> Vars {
     .clone()
 }
 
+/// The plane `x, y, p_x, p_y, θ, M, ω` (coordinates declared before momenta), then the
+/// parameters given, in that order.
+pub fn plane_with(parameters: &[&str]) -> Vars {
+    let plane = VarSet::builder()
+        .coordinate("x")
+        .coordinate("y")
+        .momentum("p_x")
+        .momentum("p_y")
+        .angle("theta")
+        .parameter("M")
+        .parameter("omega");
+    parameters
+        .iter()
+        .fold(plane, |b, name| b.parameter(name))
+        .build()
+        .expect("valid variable names")
+}
+
 /// A variable set of plain coordinates, in the order given.
 pub fn coordinates(names: &[&str]) -> Vars {
     names

@@ -3,22 +3,11 @@
 use pretty_assertions::assert_eq;
 use trigpoly::{GaussianRational, Poly, Style, VarSet, Vars};
 
-use crate::common::{p, phase_space, G, Q};
+use crate::common::{p, phase_space, plane_with, G, Q};
 
 /// `x, y, p_x, p_y, θ, M, ω, L, L_z`: coordinates declared before momenta.
 fn plane() -> Vars {
-    VarSet::builder()
-        .coordinate("x")
-        .coordinate("y")
-        .momentum("p_x")
-        .momentum("p_y")
-        .angle("theta")
-        .parameter("M")
-        .parameter("omega")
-        .parameter("L")
-        .parameter("L_z")
-        .build()
-        .unwrap()
+    plane_with(&["L", "L_z"])
 }
 
 /// Asserts the three renderings of `src` and that the ASCII one parses back.

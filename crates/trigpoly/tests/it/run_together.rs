@@ -5,24 +5,13 @@
 //! longer name (`omegaa`, `p_xx`); the physics products are read without a word.
 
 use pretty_assertions::assert_eq;
-use trigpoly::{Context, Doubt, GaussianRational, Poly, RunTogether, Span, VarSet, Vars};
+use trigpoly::{Context, Doubt, GaussianRational, RunTogether, Span, Vars};
 
-type G = Poly<GaussianRational>;
+use crate::common::{plane_with, G};
 
+/// `x, y, p_x, p_y, θ, M, ω, I, a, A`.
 fn vars() -> Vars {
-    VarSet::builder()
-        .coordinate("x")
-        .coordinate("y")
-        .momentum("p_x")
-        .momentum("p_y")
-        .angle("theta")
-        .parameter("M")
-        .parameter("omega")
-        .parameter("I")
-        .parameter("a")
-        .parameter("A")
-        .build()
-        .expect("valid variable names")
+    plane_with(&["I", "a", "A"])
 }
 
 /// Named functions over `vars()`: `Lx`, `Axy` and `A_xx`.
