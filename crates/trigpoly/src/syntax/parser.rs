@@ -641,8 +641,14 @@ impl Parser<'_> {
             return false;
         }
         let mut depth = 0usize;
-        for c in self.src[span.end..].chars() {
+        let mut chars = self.src[span.end..].chars();
+        while let Some(c) = chars.next() {
             match c {
+                // A control symbol is no comma of a bracket (`x^{2\,y}`, a thin space); an
+                // escaped brace, `\{f, g\}`, still counts as a brace.
+                '\\' if !chars.clone().next().is_some_and(|n| matches!(n, '{' | '}')) => {
+                    chars.next();
+                }
                 '{' | '(' => depth += 1,
                 '}' | ')' if depth == 0 => return true,
                 '}' | ')' => depth -= 1,

@@ -281,6 +281,14 @@ fn cases() -> Vec<Case> {
             (1, 3),
             "line 1, column 3: exponents must be integer constants\n  x^y\n    ^",
         ),
+        // A thin space `\\,` in braces after `^` is no bracket's comma: they are an exponent.
+        case(
+            Qi,
+            r"x^{2\,y}",
+            "exponents must be integer constants",
+            (1, 3),
+            "line 1, column 3: exponents must be integer constants\n  x^{2\\,y}\n    ^^^^^^",
+        ),
         case(
             Qi,
             "(x - x)^-2",
