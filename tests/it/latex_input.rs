@@ -371,7 +371,8 @@ fn the_command_line_reads_latex() {
 
 /// The square of a name with a prime and a subscript prints on an empty group, `P'_{1,1}{}^{2}`,
 /// and reads back as the square of that name; an empty group that carries no superscript is
-/// refused.
+/// refused, and so is one that carries a second superscript, `P'_{1,1}{}^{2}{}^{3}`, which
+/// LaTeX sets as `P'_{1,1}{}^{23}` (it was read as the power `2³`), at its place, exit 2.
 #[test]
 fn a_script_on_an_empty_group_belongs_to_the_name_before_it() {
     let rotor = "systems/gravity-rotor.toml";
@@ -384,6 +385,25 @@ fn a_script_on_an_empty_group_belongs_to_the_name_before_it() {
     let want = file.parse_argument(text).expect("it reads");
     reads_back(&file, text, printed, &want);
     reads_back(&file, text, r"P'_{1,1}{ } ^{2} + 3L'^2", &want);
+    // The prime is the name's, not a superscript the empty group's would follow; a power is.
+    reads_back(&file, text, r"P'_{1,1}{}^{2} + 3 L'{}^{2}", &want);
+    let err = superint_refused(&["expand", rotor, r"L + P'_{1,1}{}^{2}{}^{3}"]);
+    assert!(
+        err.contains(
+            "<command line>:1:19: '{}^{3}' after 'P'_{1,1}{}^{2}', which has a superscript \
+             already, is ambiguous: LaTeX sets the two superscripts side by side, as one; put \
+             'P'_{1,1}{}^{2}' in parentheses for a power of it, or write the exponent in one \
+             group\n 1 | L + P'_{1,1}{}^{2}{}^{3}\n   |                   ^^^^^^\n"
+        ),
+        "{err}"
+    );
+    let cubed = file
+        .parse_argument(r"(P'_{1,1}{}^{2}){}^{3}")
+        .expect("it reads");
+    assert!(same(
+        &cubed,
+        &file.parse_argument("Pp_1_1^6").expect("it reads")
+    ));
     // A subscript on an empty group has no name to belong to (it was read as a name `_1`).
     for refused in ["L'{} + 1", "x{}_{1}"] {
         let err = file.parse_argument(refused).unwrap_err().to_string();

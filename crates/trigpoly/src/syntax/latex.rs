@@ -102,7 +102,8 @@ impl Lexer<'_> {
 
     /// The length of the empty group at the start of `rest` that carries a superscript
     /// (`{}^{2}`, as superint prints the square of `P'_{1,1}`), which is skipped as a space is,
-    /// the power going to what stands before it; `None` for any other text, an empty group
+    /// the power going to what stands before it (which the parser refuses where that has an
+    /// exponent already, `x^{2}{}^{3}`); `None` for any other text, an empty group
     /// elsewhere being refused by the parser (a subscript on one, `x{}_{1}`, too: a subscript
     /// is part of a name, and the group would leave it none).
     pub(crate) fn empty_base(rest: &str) -> Option<usize> {

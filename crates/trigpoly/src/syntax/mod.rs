@@ -227,6 +227,17 @@ mod tests {
                 "(* (* K̄_3_2 Z̄) Z̄_x)",
             ),
             (r"G_{1}' + K_{1;1,2}", "(+ G_1' K_1_1_2)"),
+            // A superscript on an empty group is the power of what stands before it: a name
+            // with a prime (`P'_{1,1}` as superint prints its square), one in parentheses, a
+            // fraction; and inside an exponent's braces, of the exponent.
+            (
+                r"P'_{1,1}{}^{2} + L'^{2} + x {}^{2}",
+                "(+ (+ (^ P'_1_1 2) (^ L' 2)) (^ x 2))",
+            ),
+            (
+                r"(x^{2}){}^{3} + x^{2{}^{3}} + \frac{1}{x}{}^{2}",
+                "(+ (+ (^ (^ x 2) 3) (^ x (^ 2 3))) (^ (/ 1 x) 2))",
+            ),
             (r"\mathrm{e}^{-\mathrm{i}\theta}", "(exp (* (- i) θ))"),
             (r"e^{-i\theta}", "(exp (* (- i) θ))"),
             (

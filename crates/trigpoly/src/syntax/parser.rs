@@ -29,6 +29,9 @@ pub const LEFT_DEEP_SUM: usize = 64;
 /// Right binding power of unary `-` and `+`.
 const UNARY_BP: u8 = 5;
 
+/// Right binding power of `^`: what is parsed at it is an exponent.
+const EXPONENT_BP: u8 = 6;
+
 /// A parsed expression with its span.
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub struct Expr {
@@ -348,7 +351,58 @@ impl Parser<'_> {
                 Expr::new(ExprKind::Pow(Box::new(base), Box::new(exponent)), span)
             });
         }
+        if self.on_empty_group() && self.has_superscript(lhs) {
+            return Err(self.superscript_after_superscript(lhs));
+        }
         self.binary_op(min_bp)
+    }
+
+    /// Whether the current token is a `^` on an empty group, `{}^{2}`, which the lexer skips
+    /// (so that the superscript goes to what stands before it, as `P'_{1,1}{}^{2}` is printed):
+    /// the text between it and the token before it holds a brace, which only such a group can.
+    fn on_empty_group(&self) -> bool {
+        self.tok.tok == Tok::Caret
+            && self.prev.is_some_and(|prev| {
+                self.src
+                    .get(prev.end..self.tok.span.start)
+                    .is_some_and(|between| between.contains('{'))
+            })
+    }
+
+    /// Whether `e` was written with a superscript of its own, an exponent, outside
+    /// parentheses: `x^{2}`, `x²`, `\cos^{2}\theta`, `P'_{1,1}{}^{2}`, `e^{x}`; not `(x^{2})`,
+    /// `\exp(x)`, nor a name with a prime, `P'_{1,1}` (the prime, a superscript to TeX, is
+    /// part of the name, and a power of it is what the empty group is printed for).
+    fn has_superscript(&self, e: &Expr) -> bool {
+        match &e.kind {
+            // In parentheses a power's span starts before its base.
+            ExprKind::Pow(base, _) => e.span.start == base.span.start,
+            ExprKind::Call(f, name, _) => {
+                f == "exp"
+                    && !e.in_parentheses()
+                    && self.src[name.end..].trim_start().starts_with('^')
+            }
+            _ => false,
+        }
+    }
+
+    /// The error for a superscript on an empty group after `lhs`, which has one already:
+    /// LaTeX sets `x^{2}{}^{3}` as `x^{23}`, which no reading should guess.
+    #[cold]
+    fn superscript_after_superscript(&self, lhs: &Expr) -> ParseError {
+        let after = self.prev.map_or(self.tok.span.start, |p| p.end);
+        let open = after + self.src[after..self.tok.span.start].find('{').unwrap_or(0);
+        let span = Span::new(open, script_end(self.src, self.tok.span.end));
+        let base = self.quote(lhs.span);
+        ParseError::new(
+            span,
+            format!(
+                "{} after {base}, which has a superscript already, is ambiguous: LaTeX sets \
+                 the two superscripts side by side, as one; put {base} in parentheses for a \
+                 power of it, or write the exponent in one group",
+                self.quote(span)
+            ),
+        )
     }
 
     /// Parses the right operand of `op` and replaces `lhs` (of height `height`) by `lhs op rhs`,
@@ -371,7 +425,10 @@ impl Parser<'_> {
             Tok::Minus => (1, 2, ExprKind::Sub),
             Tok::Star => (3, 4, ExprKind::Mul),
             Tok::Slash => (3, 4, ExprKind::Div),
-            Tok::Caret => (7, 6, ExprKind::Pow),
+            // A superscript on an empty group after an exponent, `x^{2}{}^{3}`, is no power of
+            // that exponent: it ends it, and `operator` refuses it after the power.
+            Tok::Caret if min_bp == EXPONENT_BP && self.on_empty_group() => return Ok(None),
+            Tok::Caret => (7, EXPONENT_BP, ExprKind::Pow),
             // Juxtaposition multiplies, as in the printed text: `2M`, `Mω²x²`, `x p_y`.
             ref t if t.starts_operand() => {
                 if 3 < min_bp {
@@ -798,6 +855,31 @@ impl Term {
         debug_assert!(!sum.negative, "the first term is positive");
         Ok((sum.expr, sum.height))
     }
+}
+
+/// Where the script that starts at `at` (after its `^`) ends: a group in braces, a command,
+/// or one character, after any spaces.
+fn script_end(src: &str, at: usize) -> usize {
+    let rest = &src[at..];
+    let start = at + (rest.len() - rest.trim_start().len());
+    let rest = &src[start..];
+    let mut depth = 0usize;
+    for (k, c) in rest.char_indices() {
+        match c {
+            '{' => depth += 1,
+            '}' if depth > 1 => depth -= 1,
+            '}' if depth == 1 => return start + k + 1,
+            '\\' if depth == 0 => {
+                let letters = rest[1..]
+                    .find(|c: char| !c.is_ascii_alphabetic())
+                    .unwrap_or(rest.len() - 1);
+                return start + 1 + letters.max(1).min(rest.len() - 1);
+            }
+            _ if depth == 0 => return start + k + c.len_utf8(),
+            _ => {}
+        }
+    }
+    src.len()
 }
 
 /// Functions that the text form writes without parentheses: `cos θ`, `sin²θ`.

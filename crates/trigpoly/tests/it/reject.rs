@@ -289,6 +289,68 @@ fn cases() -> Vec<Case> {
             (1, 3),
             "line 1, column 3: exponents must be integer constants\n  x^{2\\,y}\n    ^^^^^^",
         ),
+        // A superscript on an empty group after one, `x^{2}{}^{3}`, which LaTeX sets as
+        // `x^{23}`, was read as `x^(2³)`; after a power written otherwise, as `(x²)³`.
+        case(
+            Qi,
+            "x^{2}{}^{3}",
+            "'{}^{3}' after 'x^{2}', which has a superscript already, is ambiguous: LaTeX sets \
+             the two superscripts side by side, as one; put 'x^{2}' in parentheses for a power \
+             of it, or write the exponent in one group",
+            (1, 6),
+            "line 1, column 6: '{}^{3}' after 'x^{2}', which has a superscript already, is \
+             ambiguous: LaTeX sets the two superscripts side by side, as one; put 'x^{2}' in \
+             parentheses for a power of it, or write the exponent in one group\n  \
+             x^{2}{}^{3}\n       ^^^^^^",
+        ),
+        case(
+            Qi,
+            r"y + x^2 \, { } ^3",
+            "'{ } ^3' after 'x^2', which has a superscript already, is ambiguous: LaTeX sets \
+             the two superscripts side by side, as one; put 'x^2' in parentheses for a power \
+             of it, or write the exponent in one group",
+            (1, 12),
+            "line 1, column 12: '{ } ^3' after 'x^2', which has a superscript already, is \
+             ambiguous: LaTeX sets the two superscripts side by side, as one; put 'x^2' in \
+             parentheses for a power of it, or write the exponent in one group\n  \
+             y + x^2 \\, { } ^3\n             ^^^^^^",
+        ),
+        case(
+            Qi,
+            r"x{}^{2}{}^{\theta}",
+            "'{}^{\\theta}' after 'x{}^{2}', which has a superscript already, is ambiguous: \
+             LaTeX sets the two superscripts side by side, as one; put 'x{}^{2}' in parentheses \
+             for a power of it, or write the exponent in one group",
+            (1, 8),
+            "line 1, column 8: '{}^{\\theta}' after 'x{}^{2}', which has a superscript \
+             already, is ambiguous: LaTeX sets the two superscripts side by side, as one; put \
+             'x{}^{2}' in parentheses for a power of it, or write the exponent in one \
+             group\n  x{}^{2}{}^{\\theta}\n         ^^^^^^^^^^^",
+        ),
+        case(
+            Qi,
+            "-x²{}^3",
+            "'{}^3' after 'x²', which has a superscript already, is ambiguous: LaTeX sets the \
+             two superscripts side by side, as one; put 'x²' in parentheses for a power of it, \
+             or write the exponent in one group",
+            (1, 4),
+            "line 1, column 4: '{}^3' after 'x²', which has a superscript already, is \
+             ambiguous: LaTeX sets the two superscripts side by side, as one; put 'x²' in \
+             parentheses for a power of it, or write the exponent in one group\n  \
+             -x²{}^3\n     ^^^^",
+        ),
+        case(
+            Qi,
+            r"e^{i\theta}{}^{2}",
+            "'{}^{2}' after 'e^{i\\theta}', which has a superscript already, is ambiguous: \
+             LaTeX sets the two superscripts side by side, as one; put 'e^{i\\theta}' in \
+             parentheses for a power of it, or write the exponent in one group",
+            (1, 12),
+            "line 1, column 12: '{}^{2}' after 'e^{i\\theta}', which has a superscript \
+             already, is ambiguous: LaTeX sets the two superscripts side by side, as one; put \
+             'e^{i\\theta}' in parentheses for a power of it, or write the exponent in one \
+             group\n  e^{i\\theta}{}^{2}\n             ^^^^^^",
+        ),
         case(
             Qi,
             "(x - x)^-2",
