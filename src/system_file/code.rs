@@ -158,7 +158,7 @@ impl LoadedSystem {
         self.check_new_name(&origin, name, "a family")?;
         check_display_in(&origin, display)?;
         let whose = format!("the family {name}");
-        if let Err(why) = PrintedNames::of_loaded(self).admit_family(&whose, display, None) {
+        if let Err(why) = PrintedNames::of_loaded(self).admit_family(&whose, name, display, None) {
             let message = format!("{why}: rename one, or give it another display");
             return Err(FileError::new(ErrorKind::Name, &origin, message));
         }

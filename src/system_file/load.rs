@@ -450,12 +450,13 @@ impl<'a> Builder<'a> {
     fn check_shown_apart(
         &mut self,
         whose: &str,
+        name: &str,
         display: &str,
         span: Range<usize>,
     ) -> Result<(), FileError> {
         let line = super::error::locate(&self.source.text, span.clone()).line;
         self.shown
-            .admit_display(whose, display, Some(line))
+            .admit_display(whose, name, display, Some(line))
             .map_err(|why| {
                 self.error(
                     ErrorKind::Name,
@@ -1033,7 +1034,7 @@ impl<'a> Builder<'a> {
             let whose = PrintedNames::whose_variable(kind, name);
             let line = super::error::locate(&self.source.text, value.span()).line;
             let alike = |why: String| refuse(format!("{why}: give it another display"));
-            if let Err(why) = printed.admit_variable(&whose, &text, &latex, line) {
+            if let Err(why) = printed.admit_variable(&whose, name, &text, &latex, line) {
                 return alike(why);
             }
             // A display that another variable's name spells would read back as that one.
@@ -1058,7 +1059,7 @@ impl<'a> Builder<'a> {
                 let (text, latex) = trigpoly::momentum_forms(display)
                     .unwrap_or_else(|| (format!("p_{text}"), format!("p_{{{latex}}}")));
                 let whose = PrintedNames::whose_variable(VarKind::Momentum, &momentum);
-                if let Err(why) = printed.admit_variable(&whose, &text, &latex, line) {
+                if let Err(why) = printed.admit_variable(&whose, &momentum, &text, &latex, line) {
                     return alike(why);
                 }
                 shown.push(ShownVariable {
@@ -1232,7 +1233,7 @@ impl<'a> Builder<'a> {
             let display = f.display.as_ref().unwrap_or(&f.name).get_ref();
             let whose = format!("the function {}", f.name.get_ref());
             let span = f.display.as_ref().unwrap_or(&f.name).span();
-            self.check_shown_apart(&whose, display, span)?;
+            self.check_shown_apart(&whose, f.name.get_ref(), display, span)?;
             file.system.define(f.name.get_ref(), display, value);
         }
         Ok(())
@@ -1295,7 +1296,10 @@ impl<'a> Builder<'a> {
             let span = f.display.as_ref().unwrap_or(&f.name).span();
             let line = super::error::locate(&self.source.text, span.clone()).line;
             let whose = format!("the family {}", f.name.get_ref());
-            if let Err(why) = self.shown.admit_family(&whose, &display, Some(line)) {
+            if let Err(why) =
+                self.shown
+                    .admit_family(&whose, f.name.get_ref(), &display, Some(line))
+            {
                 return Err(self.error(
                     ErrorKind::Name,
                     span,

@@ -7,8 +7,8 @@ use std::ops::Range;
 
 use brackets::System;
 use trigpoly::{
-    display_forms, is_identifier, latex_unwritable, quoted_name, shown_forms, unbarred, Span,
-    VarSet, Vars, RESERVED,
+    display_forms, is_identifier, latex_unwritable, quoted_name, shown_forms, unbarred,
+    with_indices, Span, VarSet, Vars, RESERVED,
 };
 
 use super::error::{ErrorKind, FileError};
@@ -157,11 +157,121 @@ pub fn reserved(name: &str) -> Option<String> {
     }
 }
 
-/// A notation a name is printed in.
+/// A notation a name is printed in, or the name it is read back as.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 enum Notation {
     Text,
     Latex,
+    /// The name that a thing's printed LaTeX reads back as ([`read_back`]: `o` of `o` and of
+    /// omicron's `\mathit{o}`, `K_1_2_3` of `K_{1,2,3}` and `K_{1;2,3}`), or its own name,
+    /// which input names it by: two things with one such name would read back as one.
+    ReadBack,
+}
+
+/// The name that a printed LaTeX reads back as, word by word for a display of several words
+/// (`\operatorname{Re} K` → `Re K`): what a system's LaTeX reader takes it for, `o` of both
+/// `o` and omicron's `\mathit{o}`, `K_1_2_3` of `K_{1,2,3}` and of `K_{1;2,3}`; `None` where
+/// it reads as no name (`x(t)`).
+pub(crate) fn read_back(latex: &str) -> Option<String> {
+    let words: Option<Vec<String>> = latex
+        .split_whitespace()
+        .map(trigpoly::syntax::latex_name)
+        .collect();
+    words.map(|w| w.join(" ")).filter(|s| !s.is_empty())
+}
+
+/// Whose a form is: in words (`the function Gx`), the line of a file's declaration, and for a
+/// name read back, the LaTeX it is read from (`None`: the name itself).
+#[derive(Clone, Debug)]
+struct Owner {
+    whose: String,
+    line: Option<usize>,
+    from: Option<String>,
+}
+
+/// The forms of a family's instances at every pair of indices: for each notation, what comes
+/// before and after the indices, and what stands between them (`K_{` `,` `}` in text and
+/// LaTeX, `K_` `_` `` read back), and the family's LaTeX, which an instance's is made from.
+#[derive(Clone, Debug)]
+struct Instances {
+    whose: String,
+    line: Option<usize>,
+    latex: Option<String>,
+    forms: Vec<InstanceForm>,
+}
+
+/// The form of a family's instances in one notation ([`Instances`]); `named` for the one read
+/// back from the name (`K_2_3`), not from the LaTeX.
+#[derive(Clone, Debug, PartialEq, Eq)]
+struct InstanceForm {
+    notation: Notation,
+    before: String,
+    between: char,
+    after: String,
+    named: bool,
+}
+
+impl Instances {
+    /// The forms of the instances of a family `name` shown as `display`, `whose` it is.
+    fn of(whose: &str, name: &str, display: &str, line: Option<usize>) -> Instances {
+        // Indices that no form has, to split the forms at.
+        const M: &str = "zqzqzqM";
+        const N: &str = "zqzqzqN";
+        let mut forms = Vec::new();
+        let mut split = |notation, form: String, between: char, named: bool| {
+            let indices = format!("{M}{between}{N}");
+            if let Some(k) = form.rfind(&indices) {
+                forms.push(InstanceForm {
+                    notation,
+                    before: form[..k].to_string(),
+                    between,
+                    after: form[k + indices.len()..].to_string(),
+                    named,
+                });
+            }
+        };
+        let shown = shown_forms(display);
+        let latex = shown.as_ref().map(|(_, latex)| latex.clone());
+        if let Some((text, latex)) = &shown {
+            split(Notation::Text, format!("{text}_{{{M},{N}}}"), ',', false);
+            let instance = with_indices(latex, &format!("{M},{N}"));
+            if let Some(read) = read_back(&instance) {
+                split(Notation::ReadBack, read, '_', false);
+            }
+            split(Notation::Latex, instance, ',', false);
+        }
+        split(Notation::ReadBack, format!("{name}_{M}_{N}"), '_', true);
+        Instances {
+            whose: whose.to_string(),
+            line,
+            latex,
+            forms,
+        }
+    }
+
+    /// The instance whose form in `notation` is `form`, as its owner (`the family K's instance
+    /// (1, 2)`, with the LaTeX its name is read back from), if one is.
+    fn owning(&self, notation: Notation, form: &str) -> Option<Owner> {
+        self.forms.iter().find_map(|f| {
+            if f.notation != notation {
+                return None;
+            }
+            let inner = form.strip_prefix(&f.before)?.strip_suffix(&f.after)?;
+            let (m, n) = inner.split_once(f.between)?;
+            let index = |s: &str| !s.is_empty() && s.bytes().all(|b| b.is_ascii_digit());
+            (index(m) && index(n)).then(|| Owner {
+                whose: format!("{}'s instance ({m}, {n})", self.whose),
+                line: self.line,
+                from: match (notation, f.named) {
+                    (Notation::ReadBack, false) => self
+                        .latex
+                        .as_ref()
+                        .map(|l| with_indices(l, &format!("{m},{n}"))),
+                    _ => None,
+                },
+            })
+        })
+    }
 }
 
 /// Why [`PrintedNames::admit`] refuses a new name, in words (its `Display`).
@@ -186,9 +296,14 @@ impl std::fmt::Display for Refusal {
 /// of a program, or a generator given on the command line) that would print as one of them
 /// is refused ([`PrintedNames::admit`]): its tables and equations would show two things alike
 /// (`G_1` and a parameter `G1`, both `G_{1}` in LaTeX; a function `B` shown as `A` beside a
-/// function `A`), or a product would print as its name (`Mx` beside `M` and `x`). The loader
-/// checks a file's functions so, [`LoadedSystem::add_function`] a program's, and the command
-/// line its `--define`d generators.
+/// function `A`), or a product would print as its name (`Mx` beside `M` and `x`). So is one
+/// whose LaTeX reads back as another's name, or as what another's reads back as (a function
+/// `o` beside omicron, printed `\mathit{o}`), and one that prints as an instance of a family
+/// (a function shown as `K_1_2`, `K_{1,2}` in LaTeX, beside a family `K`; a parameter
+/// `K_1_2_3`, `K_{1,2,3}`, beside a family `K1`, whose instance `K_{1;2,3}` reads back as
+/// it). The loader checks a file's variables, functions and families so,
+/// [`LoadedSystem::add_function`] a program's, and the command line its `--define`d
+/// generators.
 ///
 /// ```
 /// use superint::system_file::{PrintedNames, Refusal};
@@ -208,10 +323,35 @@ impl std::fmt::Display for Refusal {
 pub struct PrintedNames {
     /// For each form, whose it is (`the parameter M1`, `the function Gx`) and, for a file's
     /// function, the line of its name or display.
-    forms: HashMap<(Notation, String), (String, Option<usize>)>,
+    forms: HashMap<(Notation, String), Owner>,
+    /// The forms in the order they were taken, which a new family's instances are compared
+    /// with, so that of two names printed as instances the first is named.
+    order: Vec<(Notation, String)>,
+    /// The forms of each family's instances.
+    families: Vec<Instances>,
     /// The variables whose products the printer writes side by side, when their set was built
     /// without the new names (not a file's, whose set names its functions).
     vars: Option<Vars>,
+}
+
+/// The forms of a thing printed as `text` and `latex`, named `name`: its text, its LaTeX, and
+/// the names it reads back as (from its LaTeX, and its own).
+fn forms_of(
+    text: String,
+    latex: Option<String>,
+    name: Option<&str>,
+) -> Vec<(Notation, String, Option<String>)> {
+    let mut forms = vec![(Notation::Text, text, None)];
+    if let Some(latex) = latex {
+        if let Some(read) = read_back(&latex) {
+            forms.push((Notation::ReadBack, read, Some(latex.clone())));
+        }
+        forms.insert(1, (Notation::Latex, latex, None));
+    }
+    if let Some(name) = name {
+        forms.push((Notation::ReadBack, name.to_string(), None));
+    }
+    forms
 }
 
 impl PrintedNames {
@@ -235,10 +375,16 @@ impl PrintedNames {
             }
             let whose = PrintedNames::whose_variable(v.kind(), v.name());
             let line = lines.get(v.name()).copied();
-            for form in [(Notation::Text, v.unicode()), (Notation::Latex, v.latex())] {
-                printed
-                    .forms
-                    .insert((form.0, form.1.to_string()), (whose.clone(), line));
+            // A denominator is named by what it divides by, `(x − y)`, which no name reads as.
+            let named = (v.kind() != trigpoly::VarKind::Denominator).then(|| v.name());
+            let forms = forms_of(v.unicode().to_string(), Some(v.latex().to_string()), named);
+            for (notation, form, from) in forms {
+                let owner = Owner {
+                    whose: whose.clone(),
+                    line,
+                    from,
+                };
+                printed.take((notation, form), owner);
             }
         }
         printed
@@ -252,20 +398,18 @@ impl PrintedNames {
     }
 
     /// Takes a variable's forms, `text` and `latex` (a display's, `[phase_space] display`),
-    /// `whose` they are, given on `line`, unless a name already prints so: then why (`the
-    /// parameter b would show as ω, as the parameter omega does`).
+    /// `whose` they are (the variable `name`), given on `line`, unless a name already prints
+    /// so: then why (`the parameter b would show as ω, as the parameter omega does`).
     pub(super) fn admit_variable(
         &mut self,
         whose: &str,
+        name: &str,
         text: &str,
         latex: &str,
         line: usize,
     ) -> Result<(), String> {
-        let forms = [
-            (Notation::Text, text.to_string()),
-            (Notation::Latex, latex.to_string()),
-        ];
-        self.admit_keys(whose, forms.to_vec(), Some(line), "")
+        let forms = forms_of(text.to_string(), Some(latex.to_string()), Some(name));
+        self.admit_keys(whose, forms, Some(line))
     }
 
     /// How the variables and the named functions of `system` print.
@@ -274,7 +418,7 @@ impl PrintedNames {
         for f in system.functions() {
             let whose = format!("the function {}", f.name);
             // Each function was admitted beside the others: none is refused here.
-            let _ = printed.admit_display(&whose, &f.display, None);
+            let _ = printed.admit_display(&whose, &f.name, &f.display, None);
         }
         printed.vars = Some(system.vars().clone());
         printed
@@ -283,8 +427,8 @@ impl PrintedNames {
     /// Takes a new function `name` shown as `display`, `whose` it is (`the function Gx`, `the
     /// generator C`), unless the printer could write one of them for a product of one-letter
     /// variables ([`VarSet::juxtaposition_spells`]), or `display` prints, in text or in LaTeX,
-    /// as a name already taken: then why, in words (`the function B would show as A, as the
-    /// function A does`), to which each caller adds what to do.
+    /// as a name already taken, or reads back as one: then why, in words (`the function B
+    /// would show as A, as the function A does`), to which each caller adds what to do.
     pub fn admit(&mut self, whose: &str, name: &str, display: &str) -> Result<(), Refusal> {
         if let Some(vars) = &self.vars {
             for written in [name, display] {
@@ -299,7 +443,7 @@ impl PrintedNames {
                 }
             }
         }
-        self.admit_display(whose, display, None)
+        self.admit_display(whose, name, display, None)
             .map_err(Refusal::Alike)
     }
 
@@ -308,45 +452,68 @@ impl PrintedNames {
         let mut printed = PrintedNames::of(&file.system);
         for f in &file.families {
             // Each family was admitted beside the others: none is refused here.
-            let _ = printed.admit_family(&format!("the family {}", f.name), &f.display, None);
+            let whose = format!("the family {}", f.name);
+            let _ = printed.admit_family(&whose, &f.name, &f.display, None);
         }
         printed
     }
 
-    /// Takes a family shown as `display`, whose instances print as `display` with their
-    /// indices (`K_{2,3}`), unless another family's print so, in text or in LaTeX: then why
-    /// (`the family T would show its instances as K_{m,n}, as the family K does`).
+    /// Takes a family `name` shown as `display`, whose instances print as `display` with
+    /// their indices (`K_{2,3}`), unless another family's print so, in text or in LaTeX, or
+    /// another name prints or reads back as one of them: then why (`the family T would show
+    /// its instances as K_{m,n}, as the family K does`; `the family K's instance (1, 2) would
+    /// print as K_{1,2} in LaTeX, as the function F on line 7 does`).
     pub(crate) fn admit_family(
         &mut self,
         whose: &str,
+        name: &str,
         display: &str,
         line: Option<usize>,
     ) -> Result<(), String> {
-        self.admit_forms(whose, display, line, "_{m,n}")
+        let instances = Instances::of(whose, name, display, line);
+        // A name printed as one of its instances, or read back as one.
+        for key in &self.order {
+            let (notation, form) = key;
+            if let Some(instance) = instances.owning(*notation, form) {
+                return Err(alike(&instance, *notation, form, &self.forms[key]));
+            }
+        }
+        let symbolic = with_indices_forms(display);
+        self.admit_forms(whose, display, line, "_{m,n}", symbolic)?;
+        self.families.push(instances);
+        Ok(())
     }
 
-    /// Takes the forms of `display`, `whose` they are, declared on `line` if it has one, unless
-    /// a name already prints so: then why (`the function B would show as A, as the function A
-    /// on line 9 does`).
+    /// Takes the forms of a function `name` shown as `display`, `whose` they are, declared on
+    /// `line` if it has one, unless a name already prints so, or reads back so, or a family's
+    /// instance does: then why (`the function B would show as A, as the function A on line 9
+    /// does`).
     pub(super) fn admit_display(
         &mut self,
         whose: &str,
+        name: &str,
         display: &str,
         line: Option<usize>,
     ) -> Result<(), String> {
-        self.admit_forms(whose, display, line, "")
+        let (text, latex) = match shown_forms(display) {
+            Some((text, latex)) => (text, Some(latex)),
+            None => (display.to_string(), None),
+        };
+        let forms = forms_of(text, latex, Some(name));
+        self.admit_keys(whose, forms, line)
     }
 
-    /// Takes the forms of `display` followed by `indices` (a family's instances; no
-    /// function's display has braces, so that those forms are the families' alone), `whose`
-    /// they are, declared on `line` if it has one, unless a name already has one of them: then
-    /// why, in words.
+    /// Takes the forms of `display` followed by `indices` (a family's instances, `_{m,n}`; no
+    /// function's display has braces, so that those forms are the families' alone), and
+    /// `read`, what their LaTeX reads back as, `whose` they are, declared on `line` if it has
+    /// one, unless a name already has one of them: then why, in words.
     fn admit_forms(
         &mut self,
         whose: &str,
         display: &str,
         line: Option<usize>,
         indices: &str,
+        read: Option<(String, String)>,
     ) -> Result<(), String> {
         // A display of several words (`Re K`) has forms too; one of neither (`x(t)`) is
         // compared as it is written, in text.
@@ -358,37 +525,116 @@ impl PrintedNames {
         if let Some(latex) = &latex {
             forms.push((Notation::Latex, format!("{latex}{indices}")));
         }
-        self.admit_keys(whose, forms, line, indices)
-    }
-
-    /// Takes `forms` (with `indices` after them for a family's), `whose` they are, declared
-    /// on `line` if it has one, unless a name already has one of them: then why, in words.
-    fn admit_keys(
-        &mut self,
-        whose: &str,
-        forms: Vec<(Notation, String)>,
-        line: Option<usize>,
-        indices: &str,
-    ) -> Result<(), String> {
         for key in &forms {
-            if let Some((other, at)) = self.forms.get(key) {
-                let place = at.map(|l| format!(" on line {l}")).unwrap_or_default();
-                let how = match (key, indices.is_empty()) {
-                    ((Notation::Text, form), true) => format!("show as {form}"),
-                    ((Notation::Latex, form), true) => format!("print as {form} in LaTeX"),
-                    ((Notation::Text, form), false) => format!("show its instances as {form}"),
-                    ((Notation::Latex, form), false) => format!(
+            if let Some(other) = self.forms.get(key) {
+                let place = other
+                    .line
+                    .map(|l| format!(" on line {l}"))
+                    .unwrap_or_default();
+                let how = match key {
+                    (Notation::Text, form) => format!("show its instances as {form}"),
+                    (_, form) => format!(
                         "print its instances in LaTeX as {} with their indices",
                         form.strip_suffix(indices).unwrap_or(form)
                     ),
                 };
-                return Err(format!("{whose} would {how}, as {other}{place} does"));
+                return Err(format!(
+                    "{whose} would {how}, as {}{place} does",
+                    other.whose
+                ));
             }
         }
-        for key in forms {
-            self.forms.insert(key, (whose.to_string(), line));
+        let mut keys: Vec<(Notation, String, Option<String>)> =
+            forms.into_iter().map(|(n, f)| (n, f, None)).collect();
+        if let Some((latex, read)) = read {
+            keys.push((Notation::ReadBack, read, Some(latex)));
+        }
+        self.admit_keys(whose, keys, line)
+    }
+
+    /// Takes `forms` (each in its notation, a name read back with the LaTeX it is read
+    /// from), `whose` they are, declared on `line` if it has one, unless a name already has
+    /// one of them, or a family's instance does: then why, in words.
+    fn admit_keys(
+        &mut self,
+        whose: &str,
+        forms: Vec<(Notation, String, Option<String>)>,
+        line: Option<usize>,
+    ) -> Result<(), String> {
+        for (notation, form, from) in &forms {
+            let new = Owner {
+                whose: whose.to_string(),
+                line,
+                from: from.clone(),
+            };
+            let other = self
+                .forms
+                .get(&(*notation, form.clone()))
+                .cloned()
+                .or_else(|| {
+                    (self.families.iter()).find_map(|family| family.owning(*notation, form))
+                });
+            if let Some(other) = other {
+                return Err(alike(&new, *notation, form, &other));
+            }
+        }
+        for (notation, form, from) in forms {
+            let owner = Owner {
+                whose: whose.to_string(),
+                line,
+                from,
+            };
+            self.take((notation, form), owner);
         }
         Ok(())
+    }
+
+    /// Takes a form as `owner`'s, unless it has one already.
+    fn take(&mut self, key: (Notation, String), owner: Owner) {
+        if !self.forms.contains_key(&key) {
+            self.order.push(key.clone());
+            self.forms.insert(key, owner);
+        }
+    }
+}
+
+/// A family's instances at the indices `m, n` in LaTeX (`K_{1;m,n}` of `K1`) and the name
+/// that reads back as (`K_1_m_n`), if they have such forms.
+fn with_indices_forms(display: &str) -> Option<(String, String)> {
+    let (_, latex) = shown_forms(display)?;
+    let instance = with_indices(&latex, "m,n");
+    let read = read_back(&instance)?;
+    Some((instance, read))
+}
+
+/// Why `new` cannot have `form` in `notation`, which `other` has: `the function B would show
+/// as A, as the function A on line 9 does`; `the function o would print as o in LaTeX, and
+/// the parameter omicron as \mathit{o}, which both read back as o`.
+fn alike(new: &Owner, notation: Notation, form: &str, other: &Owner) -> String {
+    let place = other
+        .line
+        .map(|l| format!(" on line {l}"))
+        .unwrap_or_default();
+    let (whose, theirs) = (&new.whose, format!("{}{place}", other.whose));
+    match (notation, &new.from, &other.from) {
+        (Notation::Text, ..) => format!("{whose} would show as {form}, as {theirs} does"),
+        (Notation::Latex, ..) => {
+            format!("{whose} would print as {form} in LaTeX, as {theirs} does")
+        }
+        (Notation::ReadBack, Some(mine), Some(its)) => format!(
+            "{whose} would print as {mine} in LaTeX, and {theirs} as {its}, which both read \
+             back as {form}"
+        ),
+        (Notation::ReadBack, Some(mine), None) => format!(
+            "{whose} would print as {mine} in LaTeX, which reads back as {form}, the name of \
+             {theirs}"
+        ),
+        (Notation::ReadBack, None, Some(its)) => format!(
+            "{whose} would be named {form}, which the LaTeX of {theirs}, {its}, reads back as"
+        ),
+        (Notation::ReadBack, None, None) => {
+            format!("{whose} would be named {form}, as {theirs} is")
+        }
     }
 }
 

@@ -65,11 +65,7 @@ impl LatexNames {
         let mut out = LatexNames::default();
         // A display of several words, `Re A` (`\operatorname{Re} A`), is spelled word by word.
         let keep = |map: &mut HashMap<String, Vec<String>>, latex: &str, name: &str| {
-            let words: Option<Vec<String>> = latex
-                .split_whitespace()
-                .map(trigpoly::syntax::latex_name)
-                .collect();
-            if let Some(spelled) = words.map(|w| w.join(" ")).filter(|s| !s.is_empty()) {
+            if let Some(spelled) = super::names::read_back(latex) {
                 keep_spelling(map, spelled, name);
             }
         };

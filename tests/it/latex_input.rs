@@ -195,12 +195,36 @@ fn names_with_greek_letters_digits_and_subscripts_read_back_from_latex() {
 }
 
 /// Where LaTeX spells two names alike, a name written so is neither, and the error names
-/// both: a family `K1`'s instance `K_{1;2,3}` beside a parameter `K_1_2_3` (`K_{1,2,3}`), a
-/// family `K`'s instance `K_{1,2}` beside a function displayed `K_1_2`. Braces after `K` that
-/// are another name's LaTeX read as that name (`K_{x}`, `K_{3}` of a function `K3`); braces
-/// that are nobody's are a malformed instance, as before.
+/// both: a system built in code, which no loader checked, with a parameter omicron (printed
+/// `\mathit{o}`) beside a function `o`. A file cannot have such names: a family `K1`'s instance
+/// `K_{1;2,3}` beside a parameter `K_1_2_3` (`K_{1,2,3}`), which read back alike, and a
+/// family `K`'s instance `K_{1,2}` beside a function displayed `K_1_2` are refused at load
+/// ([`a_name_printed_or_read_back_as_another_is_refused_at_load`]). Braces after `K` that are
+/// another name's LaTeX read as that name (`K_{x}`, `K_{3}` of a function `K3`); braces that
+/// are nobody's are a malformed instance, as before.
 #[test]
 fn a_name_that_latex_spells_as_two_is_refused_naming_both() {
+    use superint::prelude::{Expr, PhaseSpace, System, VarSet};
+    let vars = VarSet::builder()
+        .coordinate("x")
+        .momentum("p_x")
+        .parameter("omicron")
+        .build()
+        .unwrap();
+    let space = PhaseSpace::new(&vars, &[("x", "p_x")]).unwrap();
+    let h = Expr::parse(&vars, "p_x^2/2 + omicron*x^2").unwrap();
+    let mut system = System::new("unchecked", space, h);
+    system.define("o", "o", Expr::parse(&vars, "x + 1").unwrap());
+    let unchecked = LoadedSystem::of_system(system);
+    let err = unchecked.parse_argument(r"\mathit{o} x").unwrap_err();
+    assert!(
+        err.to_string().contains(
+            "<expression>:1:1: '\\mathit{o}' names both the function o and the parameter \
+             omicron in LaTeX, whose printed forms read alike: write the one meant by its name, \
+             o or omicron"
+        ),
+        "{err}"
+    );
     let file = scratch_text(
         "latex-input",
         "alike.toml",
@@ -208,11 +232,7 @@ fn a_name_that_latex_spells_as_two_is_refused_naming_both() {
 hamiltonian = "p_x^2/2 + x^2/2 + K_x*x"
 [phase_space]
 coordinates = ["x"]
-parameters = ["K_1_2_3", "K_x"]
-[[function]]
-name = "F"
-display = "K_1_2"
-value = "x"
+parameters = ["K_x"]
 [[function]]
 name = "K3"
 value = "x + 1"
@@ -220,36 +240,118 @@ value = "x + 1"
 name = "K"
 value = "x^m*p_x^n"
 [[family]]
-name = "K1"
-value = "x^m*p_x^n + 1"
-[[family]]
 name = "K2"
 value = "x^m*p_x^n + 2"
 "#,
     );
     let path = file.to_str().expect("a path");
-    let err = superint_refused(&["expand", path, r"x + K_{1;2,3}"]);
-    assert!(
-        err.contains(
-            "<command line>:1:5: 'K_{1;2,3}' names both the parameter K_1_2_3 and the \
-             instance K1_2_3 of the family K1 in LaTeX, whose printed forms read alike: write \
-             the one meant by its name, K_1_2_3 or K1_2_3"
-        ),
-        "{err}"
-    );
-    let err = superint_refused(&["expand", path, r"K_{1,2}"]);
-    assert!(
-        err.contains(
-            "'K_{1,2}' names both the function F and the instance K_1_2 of the family K in \
-             LaTeX, whose printed forms read alike: write the one meant by its name, F or K_1_2"
-        ),
-        "{err}"
-    );
     let out = superint_ok(&["expand", path, r"K_{x} + K_{3} + K_{2;3,4}"]);
     assert!(out.contains("K_x + K3 + K2_{3,4} = "), "{out}");
     let err = superint_refused(&["expand", path, r"K_{7}"]);
     assert!(
         err.contains("'K_{7}' is not an instance of the family K_m_n"),
+        "{err}"
+    );
+}
+
+/// A name that prints, or whose LaTeX reads back, as another name of the file does is refused
+/// where it is declared, naming both: a function `o` beside a parameter omicron (`\mathit{o}`,
+/// which reads back as `o`), either way round and shown otherwise too (the function's name is
+/// what input names it by); a variable displayed `o` beside omicron; families `o` and omicron;
+/// a family whose instance prints as a function's display (`K_{1,2}` of a display `K_1_2`), or
+/// reads back as a parameter's name (`K_{1;2,3}` of a family `K1`, `K_{1,2,3}` of a parameter
+/// `K_1_2_3`), or as a parameter's display; and a function a program adds so. Each loaded
+/// before, and its LaTeX read back as the other name or as neither.
+#[test]
+fn a_name_printed_or_read_back_as_another_is_refused_at_load() {
+    let head = "hamiltonian = \"p_x^2/2 + x^2/2\"\n[phase_space]\ncoordinates = [\"x\"]\n";
+    let function = |name: &str, display: &str| {
+        format!("[[function]]\nname = \"{name}\"\ndisplay = \"{display}\"\nvalue = \"x\"\n")
+    };
+    let family = |name: &str| format!("[[family]]\nname = \"{name}\"\nvalue = \"x^m*p_x^n\"\n");
+    let cases = [
+        (
+            format!("{head}parameters = [\"omicron\"]\n{}", function("o", "o")),
+            "8:11: the function o would print as o in LaTeX, and the parameter omicron as \
+             \\mathit{o}, which both read back as o: rename one, or give it another display",
+        ),
+        (
+            format!("{head}parameters = [\"omicron\"]\n{}", function("o", "X")),
+            "8:11: the function o would be named o, which the LaTeX of the parameter omicron, \
+             \\mathit{o}, reads back as: rename one, or give it another display",
+        ),
+        (
+            format!(
+                "{head}parameters = [\"o\"]\n{}",
+                function("omicron", "omicron")
+            ),
+            "8:11: the function omicron would print as \\mathit{o} in LaTeX, and the parameter \
+             o as o, which both read back as o: rename one, or give it another display",
+        ),
+        (
+            format!(
+                "{head}{}{}",
+                function("o", "o"),
+                function("omicron", "omicron")
+            ),
+            "11:11: the function omicron would print as \\mathit{o} in LaTeX, and the function \
+             o on line 7 as o, which both read back as o: rename one, or give it another display",
+        ),
+        (
+            format!("{head}parameters = [\"a\", \"omicron\"]\ndisplay = {{ a = \"o\" }}\n"),
+            "6:17: the parameter a would print as o in LaTeX, and the parameter omicron as \
+             \\mathit{o}, which both read back as o: give it another display",
+        ),
+        (
+            format!("{head}{}{}", family("o"), family("omicron")),
+            "9:8: the family omicron would print as \\mathit{o}_{m,n} in LaTeX, and the family \
+             o on line 6 as o_{m,n}, which both read back as o_m_n: rename one, or give it \
+             another display",
+        ),
+        (
+            format!("{head}{}{}", function("F", "K_1_2"), family("K")),
+            "10:8: the family K's instance (1, 2) would print as K_{1,2} in LaTeX, as the \
+             function F on line 7 does: rename one, or give it another display",
+        ),
+        (
+            format!("{head}parameters = [\"K_1_2_3\"]\n{}", family("K1")),
+            "7:8: the family K1's instance (2, 3) would print as K_{1;2,3} in LaTeX, and the \
+             parameter K_1_2_3 as K_{1,2,3}, which both read back as K_1_2_3: rename one, or \
+             give it another display",
+        ),
+        (
+            format!(
+                "{head}parameters = [\"a\"]\ndisplay = {{ a = \"K_1_1\" }}\n{}",
+                family("K")
+            ),
+            "8:8: the family K's instance (1, 1) would print as K_{1,1} in LaTeX, as the \
+             parameter a on line 6 does: rename one, or give it another display",
+        ),
+    ];
+    for (k, (body, want)) in cases.iter().enumerate() {
+        let text = format!("name = \"alike\"\n{body}");
+        let file = scratch_text("latex-input", &format!("alike-{k}.toml"), &text);
+        let err = superint_refused(&["check", file.to_str().expect("a path")]);
+        assert!(
+            err.contains(&format!("alike-{k}.toml:{want}")),
+            "{text}\n{err}"
+        );
+    }
+    let path = scratch_text(
+        "latex-input",
+        "family.toml",
+        &format!("name = \"K\"\n{head}{}", family("K")),
+    );
+    let mut file = load(&path, &LimitsOverride::default()).expect("it loads");
+    let err = file
+        .add_function("F", "K_2_3", "x")
+        .unwrap_err()
+        .to_string();
+    assert!(
+        err.contains(
+            "the function F would print as K_{2,3} in LaTeX, as the family K's instance (2, 3) \
+             does"
+        ),
         "{err}"
     );
 }
