@@ -5662,3 +5662,60 @@ fn rotor_rank_on_its_resonant_level_set_is_four() {
         "31 claims in 1 file: 25 proved, 6 refuted; all as expected"
     );
 }
+
+/// `search` names the file's functions as its expressions write them, `ω3`, `θ1`, `Φ_x` of
+/// functions `omega3`, `theta1`, `Phi_x`, in text, Markdown, LaTeX and JSON: among the known
+/// integrals of `--new-only` (text, Markdown and JSON wrote `H, omega3, theta1, Phi_x`, beside
+/// a basis restated as `2 H − 2 θ1`; LaTeX `\omega_{3}`) as in the restated integrals.
+#[test]
+fn search_names_functions_as_its_expressions_do() {
+    let file = crate::scratch_text(
+        "discovery",
+        "greek-search.toml",
+        r#"name = "oscillator in Greek words"
+hamiltonian = "(p_x^2 + p_y^2)/2 + (x^2 + y^2)/2"
+[phase_space]
+coordinates = ["x", "y"]
+[[function]]
+name = "omega3"
+value = "x*p_y - y*p_x"
+[[function]]
+name = "theta1"
+value = "p_x^2/2 + x^2/2"
+[[function]]
+name = "Phi_x"
+value = "p_x*p_y + x*y"
+"#,
+    );
+    let path = file.to_str().expect("a path");
+    let run = |format: &str, new_only: bool| {
+        let mut args = vec!["search", path, "--no-timings", "--format", format];
+        if new_only {
+            args.push("--new-only");
+        }
+        crate::superint_ok(&args)
+    };
+    let known = [
+        ("text", "Known integrals in the space: H, ω3, θ1, Φ_x."),
+        (
+            "markdown",
+            "Known integrals in the space: `H, ω3, θ1, Φ_x`.",
+        ),
+        (
+            "latex",
+            r"Known integrals in the space: $H, \omega_{3}, \theta_{1}, \Phi_{x}$.",
+        ),
+    ];
+    for (format, want) in known {
+        let out = run(format, true);
+        assert!(out.contains(want), "{format}: {out}");
+        let basis = run(format, false);
+        for spelled in ["omega3", "theta1", "Phi_x"] {
+            assert!(!out.contains(spelled), "{format}: {spelled} in {out}");
+            assert!(!basis.contains(spelled), "{format}: {spelled} in {basis}");
+        }
+    }
+    assert!(run("text", false).contains("    I3 = p_y² + y²\n       = 2 H − 2 θ1\n"));
+    let json: String = run("json", true).split_whitespace().collect();
+    assert!(json.contains(r#""known":["H","ω3","θ1","Φ_x"]"#), "{json}");
+}

@@ -499,7 +499,8 @@ fn dependency_holds(
 
 /// The known integrals of a search for new ones.
 struct KnownIntegrals {
-    /// Each one's name (its display name, for a function of the system).
+    /// Each one's name (for a function of the system, its display as it prints, `ω3` of
+    /// `omega3`).
     names: Vec<String>,
     /// Each one in the unknowns' monomials, and its coordinates in the space.
     integrals: Vec<(Expr, SparseVec<Rational>)>,
@@ -519,10 +520,11 @@ fn known_integrals(
     let (extra, symbolic) = (&options.known, &options.symbolic);
     let mut known_names = Vec::new();
     let mut known: Vec<(Expr, SparseVec<Rational>)> = Vec::new();
+    // Each named as its display prints, as the expressions write it: `ω3` of `omega3`.
     let named = system
         .functions()
         .iter()
-        .map(|f| (f.display.clone(), f.expr.clone()));
+        .map(|f| (trigpoly::shown_text(&f.display), f.expr.clone()));
     // The system's functions that are no real integrals are left out; a known integral given
     // as one that is not is an error, not a silence.
     let named = named.map(|(name, f)| (name, f, false));

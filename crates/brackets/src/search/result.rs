@@ -50,7 +50,9 @@ impl Integral {
 /// `p_b cos(a − b)` are generated; without angles the grade is the degree.
 #[derive(Clone, Debug)]
 pub struct NewIntegrals {
-    /// The known integrals used (named functions that are real integrals lying in the space).
+    /// The known integrals used (named functions that are real integrals lying in the space),
+    /// each as it prints: a function by its display as the expressions write it (`ω3` of a
+    /// function `omega3`, as [`trigpoly::shown_text`] writes it), a given one by its name.
     pub known: Vec<String>,
     /// The dimension of the span of the known integrals and of all products of known and found
     /// integrals that lie in the space.
