@@ -666,8 +666,8 @@ impl Shared {
                 .module
                 .as_ref()
                 .map(|m| parameter_names(vars, &m.parameters)),
-            letter: label_letter(system, &["I", "J", "Φ"], r.basis.len()),
-            complex: label_letter(system, &["A", "B", "Ψ"], r.basis.len()),
+            letter: label_letter(system, &["I", "J", "Φ", "Ξ"], r.basis.len()),
+            complex: label_letter(system, &["A", "B", "Ψ", "Λ"], r.basis.len()),
             shown: shown_integrals(r),
             names: Names::of_system(system),
             caller,

@@ -314,7 +314,7 @@ pub struct TableResult {
 }
 
 /// The names a table's caption may give a row and a column, the first pair free taken.
-const PLACEHOLDERS: [[&str; 2]; 4] = [["A", "B"], ["F", "G"], ["U", "V"], ["Φ", "Ψ"]];
+const PLACEHOLDERS: [[&str; 2]; 5] = [["A", "B"], ["F", "G"], ["U", "V"], ["Φ", "Ψ"], ["Ξ", "Λ"]];
 
 impl TableResult {
     /// `table`, a table of brackets in `system`, captioned `` `{A, B}` for {whose} (row `A`,
@@ -426,16 +426,22 @@ impl TableResult {
 }
 
 /// The first of `candidates` none of whose `labels` the system has as a variable or a function
-/// (by name or display name), nor are among `taken`; the last when every one is: the names
-/// of a report's labels and placeholders.
+/// (by name, display name, or that display as the expressions write it, `Φ1` of `Phi1`), nor
+/// are among `taken`; the last when every one is: the names of a report's labels and
+/// placeholders.
 pub(crate) fn first_free<T: Copy>(
     system: &System,
     taken: &[&str],
     candidates: &[T],
     labels: impl Fn(T) -> Vec<String>,
 ) -> T {
+    // A function by its name, its display, and its display as the expressions write it (`Φ1`
+    // of `Phi1`), which a label beside it would print as.
     let has = |name: &str| {
-        taken.contains(&name) || system.lookup(name).is_some() || system.get(name).is_ok()
+        taken.contains(&name)
+            || system.lookup(name).is_some()
+            || system.get(name).is_ok()
+            || (system.functions().iter()).any(|f| trigpoly::shown_text(&f.display) == name)
     };
     candidates
         .iter()

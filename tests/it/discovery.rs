@@ -5719,3 +5719,61 @@ value = "p_x*p_y + x*y"
     let json: String = run("json", true).split_whitespace().collect();
     assert!(json.contains(r#""known":["H","ω3","θ1","Φ_x"]"#), "{json}");
 }
+
+/// A search's labels and a table's placeholders name nothing the file shows, a function named
+/// by a Greek word among them: beside functions `I1`, `J1` and `Phi1` (shown `Φ1`) the
+/// integrals are `Ξ1, Ξ2, …` (they were `Φ1, Φ2`, the first of which printed as the function),
+/// and beside functions `A`, `F`, `U` and `Phi` a table's rows and columns are `Ξ` and `Λ` (they
+/// were `Φ` and `Ψ`).
+#[test]
+fn labels_and_placeholders_name_nothing_a_file_shows() {
+    let file = crate::scratch_text(
+        "discovery",
+        "greek-labels.toml",
+        r#"name = "oscillator with labels taken"
+hamiltonian = "(p_x^2 + p_y^2)/2 + (x^2 + y^2)/2"
+[phase_space]
+coordinates = ["x", "y"]
+[[function]]
+name = "I1"
+value = "x*p_y - y*p_x"
+[[function]]
+name = "J1"
+value = "p_x^2/2 + x^2/2"
+[[function]]
+name = "Phi1"
+value = "p_x*p_y + x*y"
+[[function]]
+name = "A"
+value = "p_y^2/2 + y^2/2"
+[[function]]
+name = "F"
+value = "p_x + y"
+[[function]]
+name = "U"
+value = "p_y - x"
+[[function]]
+name = "Phi"
+value = "p_x*p_y"
+"#,
+    );
+    let path = file.to_str().expect("a path");
+    let args = [
+        "--momenta-degree",
+        "1",
+        "--positions-degree",
+        "1",
+        "--no-timings",
+    ];
+    let search = crate::superint_ok(&[&["search", path][..], &args[..]].concat());
+    assert!(
+        search.contains("    Ξ1 = 1\n    Ξ2 = x p_y − y p_x\n       = I1\n"),
+        "{search}"
+    );
+    assert!(!search.contains("Φ1 ="), "{search}");
+    let table = crate::superint_ok(&["table", path, "A", "F", "--no-timings"]);
+    assert!(
+        table.contains("{Ξ, Λ} for the oscillator with labels taken (row Ξ, column Λ)"),
+        "{table}"
+    );
+}
