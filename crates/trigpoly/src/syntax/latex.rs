@@ -13,6 +13,7 @@
 
 use super::error::{ParseError, Span};
 use super::lexer::{Lexer, Tok};
+use super::parser::{too_deep, MAX_DEPTH};
 use crate::varset::letter_of_command;
 
 /// Commands that space or size and mean nothing to an expression: `\quad`, `\left(`,
@@ -258,6 +259,17 @@ impl Lexer<'_> {
     /// between them, as family indices are written) and its letters' commands as letters:
     /// `{x,2}` → `x_2`, `{\theta}` → `θ`.
     fn group_at(&mut self, open: usize) -> Result<String, ParseError> {
+        if self.groups >= MAX_DEPTH {
+            return Err(too_deep(Span::new(open, open + 1)));
+        }
+        self.groups += 1;
+        let name = self.group_name(open);
+        self.groups -= 1;
+        name
+    }
+
+    /// [`Self::group_at`]'s reading of the group, one level deeper.
+    fn group_name(&mut self, open: usize) -> Result<String, ParseError> {
         self.pos = open + 1;
         let mut out = String::new();
         loop {

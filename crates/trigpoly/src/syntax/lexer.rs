@@ -78,11 +78,19 @@ fn is_name_continue(c: char) -> bool {
 pub(crate) struct Lexer<'a> {
     pub(super) src: &'a str,
     pub(super) pos: usize,
+    /// How many groups in braces of a name (`x_{a_{b}}`, `\bar{\bar{Z}}`) are open, limited
+    /// to [`super::MAX_DEPTH`] as the parser's nesting is, so that reading them cannot
+    /// overflow the stack.
+    pub(super) groups: usize,
 }
 
 impl<'a> Lexer<'a> {
     pub(crate) fn new(src: &'a str) -> Self {
-        Lexer { src, pos: 0 }
+        Lexer {
+            src,
+            pos: 0,
+            groups: 0,
+        }
     }
 
     fn peek(&self) -> Option<char> {

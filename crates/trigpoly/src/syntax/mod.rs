@@ -453,6 +453,8 @@ mod tests {
     fn nesting_and_height_limits() {
         let nest = |n: usize, inner: &str| format!("{}{inner}{}", "(".repeat(n), ")".repeat(n));
         assert_eq!(parse(&nest(MAX_DEPTH, "x")), "x");
+        let braces = |n: usize| format!("x_{}2{}", "{".repeat(n), "}".repeat(n));
+        assert_eq!(parse(&braces(MAX_DEPTH)), "x_2");
         let bad = [
             nest(MAX_DEPTH + 1, "x"),
             "(".repeat(100_000),
@@ -461,6 +463,11 @@ mod tests {
             "-".repeat(100_000) + "x",
             "x^".repeat(100_000) + "x",
             "(-x^".repeat(100_000),
+            // The braces of a name's subscript and of a bar, read by the lexer.
+            "x_{".repeat(100_000),
+            format!("x_{}2{}", "{".repeat(100_000), "}".repeat(100_000)),
+            r"\bar{".repeat(100_000),
+            format!("p_{}", r"\mathrm{".repeat(MAX_DEPTH + 1)),
         ];
         for src in bad {
             let err = parse_expr(&src).unwrap_err();

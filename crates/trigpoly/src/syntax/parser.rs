@@ -913,7 +913,7 @@ fn grow(child: usize, at: Span) -> PResult<usize> {
 }
 
 /// The error for nesting deeper than [`MAX_DEPTH`] at `opener`.
-fn too_deep(opener: Span) -> ParseError {
+pub(super) fn too_deep(opener: Span) -> ParseError {
     let msg = format!("expression nested too deeply (more than {MAX_DEPTH} levels)");
     ParseError::new(opener, msg)
 }
