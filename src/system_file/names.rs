@@ -148,7 +148,7 @@ pub(super) fn index_refusal(
 pub fn reserved(name: &str) -> Option<String> {
     if RESERVED.contains(&name) || name == "rank" {
         Some(format!(
-            "'{name}' is reserved (i, cos, sin, exp, conj, re, im, rank)"
+            "'{name}' is reserved (i, cos, sin, exp, conj, re, im, sqrt, rank)"
         ))
     } else if name == "H" {
         Some("'H' is reserved for the Hamiltonian".into())

@@ -2094,7 +2094,7 @@ fn closure_refuses_a_generator_named_twice_or_a_name_the_system_has() {
         (
             harmonic,
             vec!["L", "--define", "cos=)"],
-            "--define cos: 'cos' is reserved (i, cos, sin, exp, conj, re, im, rank); choose \
+            "--define cos: 'cos' is reserved (i, cos, sin, exp, conj, re, im, sqrt, rank); choose \
              another name",
         ),
         (

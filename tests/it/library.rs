@@ -431,11 +431,11 @@ fn the_loaders_names_are_the_variable_sets_and_h_and_rank() {
     for (name, why) in [
         (
             "cos",
-            "'cos' is reserved (i, cos, sin, exp, conj, re, im, rank)",
+            "'cos' is reserved (i, cos, sin, exp, conj, re, im, sqrt, rank)",
         ),
         (
             "rank",
-            "'rank' is reserved (i, cos, sin, exp, conj, re, im, rank)",
+            "'rank' is reserved (i, cos, sin, exp, conj, re, im, sqrt, rank)",
         ),
         ("H", "'H' is reserved for the Hamiltonian"),
     ] {
@@ -477,7 +477,7 @@ fn names_already_taken_are_refused() {
     );
     assert_eq!(
         refused(rotor.add_function("cos", "cos", "x")).1,
-        "'cos' is reserved (i, cos, sin, exp, conj, re, im, rank)"
+        "'cos' is reserved (i, cos, sin, exp, conj, re, im, sqrt, rank)"
     );
     assert_eq!(
         refused(rotor.add_function("F3", "F^3", "x")).1,

@@ -714,6 +714,14 @@ fn bad_inputs() -> Vec<(&'static str, Vec<u8>, &'static str, Vec<&'static str>)>
             "bad.toml:6:20: '_a' cannot be a name: a name cannot begin or end in '_' or hold '__'",
             check.clone(),
         ),
+        // `sqrt` is a function: a parameter so named made `sqrt(x^2 + y^2)`, and LaTeX's
+        // `\sqrt{x^2 + y^2}`, the product `sqrt·(x² + y²)`, echoed as the root.
+        (
+            "parameter named sqrt",
+            base_with("parameters = [\"M\", ", "parameters = [\"M\", \"sqrt\", "),
+            "bad.toml:6:20: 'sqrt' is reserved (i, cos, sin, exp, conj, re, im, sqrt, rank)",
+            check.clone(),
+        ),
         (
             "function beginning with '_'",
             base_with("name = \"A\"", "name = \"_A\""),

@@ -952,7 +952,7 @@ mod tests {
 
     #[test]
     fn function_names_are_reserved() {
-        for name in ["i", "cos", "sin", "exp", "conj", "re", "im"] {
+        for name in ["i", "cos", "sin", "exp", "conj", "re", "im", "sqrt"] {
             let err = VarSet::builder().coordinate("x").parameter(name).build();
             let err = err.map(|_| ()).unwrap_err();
             assert_eq!(
@@ -966,8 +966,8 @@ mod tests {
             assert_eq!(
                 err.to_string(),
                 format!(
-                    "{name:?} cannot name a variable: i, cos, sin, exp, conj, re and im are \
-                     reserved"
+                    "{name:?} cannot name a variable: i, cos, sin, exp, conj, re, im and sqrt \
+                     are reserved"
                 ),
                 "{name}"
             );

@@ -7,8 +7,9 @@ use std::fmt;
 use crate::print::write_display;
 
 /// Names that expressions give a meaning of their own: `i` and the functions (a variable
-/// named `re` made `re(x + i p)` the real part, and `re*(x + i p)` a product).
-pub const RESERVED: &[&str] = &["i", "cos", "sin", "exp", "conj", "re", "im"];
+/// named `re` made `re(x + i p)` the real part, and `re*(x + i p)` a product; one named
+/// `sqrt` made `sqrt(x^2 + y^2)`, and LaTeX's `\sqrt{x^2 + y^2}`, a product).
+pub const RESERVED: &[&str] = &["i", "cos", "sin", "exp", "conj", "re", "im", "sqrt"];
 
 /// A display name as text and as LaTeX, when it is an identifier, possibly with a bar (a
 /// combining macron) and primes: `A_x` → (`A_x`, `A_{x}`), `G1'` → (`G1'`, `G_{1}'`), `Z̄` →
@@ -220,7 +221,7 @@ pub(crate) fn long_name(name: &str) -> Option<(String, usize)> {
 /// assert_eq!(BadName::of("cos"), Some(BadName::Reserved));
 /// assert_eq!(
 ///     BadName::of("cos").unwrap().to_string(),
-///     "i, cos, sin, exp, conj, re and im are reserved"
+///     "i, cos, sin, exp, conj, re, im and sqrt are reserved"
 /// );
 /// // It is an error, so that `?` takes it into a program's own.
 /// fn check(name: &str) -> Result<(), Box<dyn std::error::Error + Send + Sync>> {
@@ -295,7 +296,9 @@ impl fmt::Display for BadName {
                     *c as u32
                 )
             }
-            BadName::Reserved => f.write_str("i, cos, sin, exp, conj, re and im are reserved"),
+            BadName::Reserved => {
+                f.write_str("i, cos, sin, exp, conj, re, im and sqrt are reserved")
+            }
         }
     }
 }

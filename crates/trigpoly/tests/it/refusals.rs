@@ -27,7 +27,7 @@ fn a_reserved_name_is_refused_with_the_name() {
     );
     assert_eq!(
         err.to_string(),
-        "\"sin\" cannot name a variable: i, cos, sin, exp, conj, re and im are reserved"
+        "\"sin\" cannot name a variable: i, cos, sin, exp, conj, re, im and sqrt are reserved"
     );
     let Err(AlgebraError::InvalidName { name, reason }) =
         VarSet::builder().momentum("a__b").build()
