@@ -123,6 +123,10 @@ pub(super) fn index_refusal(
                 ErrorKind::Name,
                 format!("'{idx}' cannot name an index: {why}"),
             ))
+        } else if let Some(why) = reserved(idx) {
+            // `H` and the functions keep their meaning in the family's value: an index `H`
+            // made `H` there the index, and an index `cos` refused `cos(theta)`.
+            Some((ErrorKind::Name, why))
         } else if let Some(other) = taken(idx) {
             Some((
                 ErrorKind::Family,

@@ -686,6 +686,26 @@ fn bad_inputs() -> Vec<(&'static str, Vec<u8>, &'static str, Vec<&'static str>)>
             "bad.toml:14:17: 'щ' cannot name an index: LaTeX has no letter 'щ'",
             check.clone(),
         ),
+        // `H` and the functions are no indices: an index `H` made the `H` of the family's value
+        // the index, not the Hamiltonian, and an index `cos` refused its `cos(theta)`.
+        (
+            "family index named H",
+            base_with(
+                "[[claim]]",
+                "[[family]]\nname = \"K\"\nindices = [\"m\", \"H\"]\nvalue = \"A^m*H^2\"\n\n[[claim]]",
+            ),
+            "bad.toml:14:17: 'H' is reserved for the Hamiltonian",
+            check.clone(),
+        ),
+        (
+            "family index named cos",
+            base_with(
+                "[[claim]]",
+                "[[family]]\nname = \"K\"\nindices = [\"cos\", \"n\"]\nvalue = \"A^cos*x^n\"\n\n[[claim]]",
+            ),
+            "bad.toml:14:12: 'cos' is reserved (i, cos, sin, exp, conj, re, im, sqrt, rank)",
+            check.clone(),
+        ),
         // Each `_` starts a subscript: a name ending in one, or with two in a row, has an empty
         // subscript, which LaTeX wrote as `x_{,} H` or `\mathrm{a_}` (every kind of name).
         (
