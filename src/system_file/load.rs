@@ -241,6 +241,16 @@ fn toml_error(source: &Source, e: &toml::de::Error) -> FileError {
     if message == "duplicate key" {
         return duplicate_key(source, span);
     }
+    // TOML refuses a dotted key of more than `MAX_KEY_PARTS` parts without a place.
+    if message == "recursion limit" && e.span().is_none() {
+        if let Some(key) = deep_key(&source.text) {
+            let message = format!(
+                "this dotted key has more than {MAX_KEY_PARTS} parts: TOML reads tables \
+                 nested at most {MAX_KEY_PARTS} deep"
+            );
+            return source.error(ErrorKind::Toml, key, message);
+        }
+    }
     let message = if message.starts_with("missing field") {
         format!("{message} (see docs/system-files.md for every field)")
     } else if let Some(wanted) = message.strip_prefix("invalid type: map, expected ") {
@@ -261,6 +271,71 @@ fn toml_error(source: &Source, e: &toml::de::Error) -> FileError {
         Some(hint) => error.with_hint(hint),
         None => error,
     }
+}
+
+/// The most parts a dotted key (`a.b.c`, `[a.b.c]`) may have: TOML nests tables at most this
+/// deep, and says so with no place.
+const MAX_KEY_PARTS: usize = 80;
+
+/// The first dotted key of `text` with more than [`MAX_KEY_PARTS`] parts, bare or quoted (its
+/// place, from its first part to its last), outside strings and comments; `None` when there is
+/// none.
+fn deep_key(text: &str) -> Option<Range<usize>> {
+    let bytes = text.as_bytes();
+    let bare = |c: &u8| c.is_ascii_alphanumeric() || matches!(c, b'_' | b'-');
+    // The current run of parts: where it starts and ends, how many parts, whether a '.' is
+    // open after them.
+    let (mut key, mut parts, mut dot) = (0..0, 0, false);
+    let mut k = 0;
+    while k < bytes.len() {
+        let part = match bytes[k] {
+            b' ' | b'\t' => {
+                k += 1;
+                continue;
+            }
+            b'.' if parts > 0 && !dot => {
+                (dot, k) = (true, k + 1);
+                continue;
+            }
+            quote @ (b'"' | b'\'') => {
+                let close = match bytes[k..].starts_with(&[quote; 3]) {
+                    true => &[quote; 3][..],
+                    false => &[quote][..],
+                };
+                let mut end = k + close.len();
+                while end < bytes.len() && !bytes[end..].starts_with(close) {
+                    end += if quote == b'"' && bytes[end] == b'\\' {
+                        2
+                    } else {
+                        1
+                    };
+                }
+                k..(end + close.len()).min(bytes.len())
+            }
+            c if bare(&c) => k..k + bytes[k..].iter().take_while(|c| bare(c)).count(),
+            c => {
+                // A comment, a newline, `=`, a bracket: the end of any key.
+                if parts > MAX_KEY_PARTS {
+                    return Some(key);
+                }
+                k = match c {
+                    b'#' => text[k..].find('\n').map_or(bytes.len(), |n| k + n),
+                    _ => k + 1,
+                };
+                (parts, dot) = (0, false);
+                continue;
+            }
+        };
+        if parts > MAX_KEY_PARTS && !dot {
+            return Some(key);
+        }
+        (key, parts) = match dot {
+            true => (key.start..part.end, parts + 1),
+            false => (part.clone(), 1),
+        };
+        (dot, k) = (false, part.end);
+    }
+    (parts > MAX_KEY_PARTS).then_some(key)
 }
 
 /// TOML's `duplicate key` at `span`, in a system file's words: a `[function]`, `[family]` or

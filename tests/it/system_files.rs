@@ -734,6 +734,17 @@ fn bad_inputs() -> Vec<(&'static str, Vec<u8>, &'static str, Vec<&'static str>)>
             "bad.toml:6:20: '_a' cannot be a name: a name cannot begin or end in '_' or hold '__'",
             check.clone(),
         ),
+        // TOML refuses a key of more than 80 parts with no place, which was said as 1:1.
+        (
+            "dotted key of 81 parts",
+            base_with(
+                "[[claim]]",
+                &format!("{}b = 1\n\n[[claim]]", "a.".repeat(80)),
+            ),
+            "bad.toml:12:1: this dotted key has more than 80 parts: TOML reads tables nested at \
+             most 80 deep",
+            check.clone(),
+        ),
         // `sqrt` is a function: a parameter so named made `sqrt(x^2 + y^2)`, and LaTeX's
         // `\sqrt{x^2 + y^2}`, the product `sqrt·(x² + y²)`, echoed as the root.
         (
