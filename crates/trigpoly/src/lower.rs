@@ -696,8 +696,10 @@ impl<C: Coefficient> Lower<'_, C> {
                     .map_err(at(span));
             }
             "sqrt" if args.len() == 1 => return self.sqrt(&args[0], span),
+            // Said as the others are: `sqrt takes one argument`.
+            "sqrt" => name,
             _ => {
-                let hint = match (did_you_mean(name, &FUNCTIONS), name) {
+                let hint = match (did_you_mean(name, &CALLED), name) {
                     (Some(k), _) => format!("; did you mean '{k}'?"),
                     (None, "tan" | "log" | "ln" | "atan" | "arctan" | "abs") => "; expressions \
                          are polynomials in the variables, in cos and sin of angles and in \
@@ -710,7 +712,7 @@ impl<C: Coefficient> Lower<'_, C> {
                     format!(
                         "unknown function {} (known: {}){hint}",
                         quoted_name(name),
-                        FUNCTIONS.join(", ")
+                        CALLED.join(", ")
                     ),
                 ));
             }
@@ -1045,6 +1047,10 @@ impl LinearForm {
 /// The functions an expression may call: a name before parentheses other than these (and
 /// `Re`, `Im` where the system does not declare them) multiplies them.
 pub const FUNCTIONS: [&str; 6] = ["cos", "sin", "exp", "conj", "re", "im"];
+
+/// Every function an expression may call, as an unknown one is told: [`FUNCTIONS`] and
+/// `sqrt`, which takes the root of its argument.
+const CALLED: [&str; 7] = ["cos", "sin", "exp", "conj", "re", "im", "sqrt"];
 
 /// The longest piece, in bytes, that a name run together splits into: a declared name is
 /// shorter, and the bound keeps the split linear in the length of what is split (a run of

@@ -139,9 +139,9 @@ fn cases() -> Vec<Case> {
         case(
             Qi,
             "sni(theta)",
-            "unknown function 'sni' (known: cos, sin, exp, conj, re, im); did you mean 'sin'?",
+            "unknown function 'sni' (known: cos, sin, exp, conj, re, im, sqrt); did you mean 'sin'?",
             (1, 1),
-            "line 1, column 1: unknown function 'sni' (known: cos, sin, exp, conj, re, im); did \
+            "line 1, column 1: unknown function 'sni' (known: cos, sin, exp, conj, re, im, sqrt); did \
              you mean 'sin'?\n  sni(theta)\n  ^^^",
         ),
         case(
@@ -251,20 +251,20 @@ fn cases() -> Vec<Case> {
         case(
             Qi,
             "tan(theta)",
-            "unknown function 'tan' (known: cos, sin, exp, conj, re, im); expressions are \
+            "unknown function 'tan' (known: cos, sin, exp, conj, re, im, sqrt); expressions are \
              polynomials in the variables, in cos and sin of angles and in negative powers of \
              single terms",
             (1, 1),
-            "line 1, column 1: unknown function 'tan' (known: cos, sin, exp, conj, re, im); \
+            "line 1, column 1: unknown function 'tan' (known: cos, sin, exp, conj, re, im, sqrt); \
              expressions are polynomials in the variables, in cos and sin of angles and in \
              negative powers of single terms\n  tan(theta)\n  ^^^",
         ),
         case(
             Qi,
             "Cos(theta)",
-            "unknown function 'Cos' (known: cos, sin, exp, conj, re, im); did you mean 'cos'?",
+            "unknown function 'Cos' (known: cos, sin, exp, conj, re, im, sqrt); did you mean 'cos'?",
             (1, 1),
-            "line 1, column 1: unknown function 'Cos' (known: cos, sin, exp, conj, re, im); did \
+            "line 1, column 1: unknown function 'Cos' (known: cos, sin, exp, conj, re, im, sqrt); did \
              you mean 'cos'?\n  Cos(theta)\n  ^^^",
         ),
         case(
@@ -273,6 +273,23 @@ fn cases() -> Vec<Case> {
             "cos takes one argument, found 2",
             (1, 1),
             "line 1, column 1: cos takes one argument, found 2\n  cos(theta, phi)\n  ^^^^^^^^^^^^^^^",
+        ),
+        // sqrt is a function too: with two arguments it was an unknown one.
+        case(
+            Q,
+            "sqrt(x, 4)",
+            "sqrt takes one argument, found 2",
+            (1, 1),
+            "line 1, column 1: sqrt takes one argument, found 2\n  sqrt(x, 4)\n  ^^^^^^^^^^",
+        ),
+        case(
+            Q,
+            "sqr(4)",
+            "unknown function 'sqr' (known: cos, sin, exp, conj, re, im, sqrt); did you mean \
+             'sqrt'?",
+            (1, 1),
+            "line 1, column 1: unknown function 'sqr' (known: cos, sin, exp, conj, re, im, sqrt); \
+             did you mean 'sqrt'?\n  sqr(4)\n  ^^^",
         ),
         case(
             Qi,
