@@ -80,9 +80,9 @@ impl From<ParseError> for EngineError {
 impl EngineError {
     /// Whether a limit stopped the computation (of terms, of term products, of degree, of an
     /// angle's order): the input may be right, and a larger limit may decide it. The fixed
-    /// bound on a power's coefficient ([`AlgebraError::CoefficientTooLarge`]) and the ranges
-    /// of a set's settings ([`AlgebraError::SettingOutOfRange`]) are not limits here: no
-    /// limit raises them.
+    /// bound on the coefficients of a product or a power
+    /// ([`AlgebraError::CoefficientTooLarge`]) and the ranges of a set's settings
+    /// ([`AlgebraError::SettingOutOfRange`]) are not limits here: no limit raises them.
     pub fn is_limit(&self) -> bool {
         matches!(
             self,

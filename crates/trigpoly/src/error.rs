@@ -226,15 +226,16 @@ pub enum AlgebraError {
         /// What to declare, as [`AlgebraError::NotAMonomial`] says it.
         declare: String,
     },
-    /// A power of a single term whose coefficient would pass the fixed bound on its size (the
-    /// numerator or denominator of `(3/2)^(2^30)`). The bound is no setting of
+    /// A product or a power whose coefficients would pass the fixed bound on their size (the
+    /// numerator or denominator of `(3/2)^(2^30)`; `(c x + y)^100` or `F*F*F` of a `c`, an `F`,
+    /// of a million bits). The bound is no setting of
     /// [`Limits`](crate::Limits), so no larger limit decides it: unlike
     /// [`AlgebraError::TooManyTerms`] and the other limits it is not "a limit stopped the
     /// computation".
-    #[error("the coefficient of this power would have more than {limit} bits")]
+    #[error("a coefficient of this product or power would have more than {limit} bits")]
     CoefficientTooLarge {
-        /// A bound on the bits of the power's coefficient: the base's times the exponent's
-        /// size.
+        /// A bound on the bits of the result's coefficients: for a power, the base's times the
+        /// exponent's size; for a product, the factors' added.
         bits: u64,
         /// The bound in force.
         limit: u64,

@@ -38,6 +38,10 @@ pub use radicals::ReducedRadical;
 pub use subst::Point;
 pub use trig::{CosSinTerm, TrigMonomial};
 
+/// The most bits a component of a coefficient of a product or a power may have (2 MiB of
+/// digits): a fixed bound, which no limit raises.
+pub(crate) const MAX_COEFFICIENT_BITS: u64 = 1 << 24;
+
 /// An exact Laurent polynomial over `C` in the variables of a [`VarSet`].
 ///
 /// Invariant (kept by every operation, so equality is structural and the zero test is "no
@@ -439,6 +443,52 @@ impl<C: Coefficient> Poly<C> {
             });
         }
         Ok(())
+    }
+
+    /// The fixed bound on the size of coefficients, checked before a product of `a` by `b`
+    /// is formed: the bits of its coefficients are at most those of the two factors' added,
+    /// with one more for each doubling of the terms summed into one, and past
+    /// [`MAX_COEFFICIENT_BITS`] it is refused, as a power of a single term is (a chain of
+    /// products `F*F*…` of a large constant multiplied for minutes, each step twice the
+    /// last). Factors whose values fit machine words pass at once.
+    pub(crate) fn check_coefficient_bits(a: &Self, b: &Self) -> Result<(), AlgebraError> {
+        let sums = 64 - (a.len().min(b.len()) as u64).leading_zeros();
+        let bits = a.coefficient_bits() + b.coefficient_bits() + u64::from(sums);
+        if bits > MAX_COEFFICIENT_BITS {
+            return Err(AlgebraError::CoefficientTooLarge {
+                bits,
+                limit: MAX_COEFFICIENT_BITS,
+            });
+        }
+        Ok(())
+    }
+
+    /// A bound on the bits of any component of a coefficient: those of the content's
+    /// numerator or denominator and of the primitive part's largest component, added (a
+    /// coefficient is their product). One pass over the coefficients only when one of them
+    /// does not fit a machine word.
+    pub(crate) fn coefficient_bits(&self) -> u64 {
+        let content = match self.content.small_parts() {
+            Some((n, d)) => 64 - u64::from(n.unsigned_abs().max(d.unsigned_abs()).leading_zeros()),
+            None => self.content.numer().bits().max(self.content.denom().bits()),
+        };
+        let parts = match self.small_bits() {
+            Some(bits) => u64::from(bits),
+            None => self.coefficient_bits_of_parts(),
+        };
+        content + parts
+    }
+
+    /// The bits of the largest component of a coefficient of the primitive part.
+    #[inline(never)]
+    fn coefficient_bits_of_parts(&self) -> u64 {
+        (self.coeffs.iter())
+            .map(|c| {
+                let z = c.to_gaussian_integer();
+                z.re.bits().max(z.im.bits())
+            })
+            .max()
+            .unwrap_or(0)
     }
 
     /// A power of two at least the largest `|e|` over every exponent of every term: one pass

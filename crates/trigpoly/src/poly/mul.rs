@@ -113,6 +113,7 @@ impl<C: Coefficient> Poly<C> {
         if self.is_zero() || other.is_zero() {
             return Ok(Self::zero(&self.vars));
         }
+        Self::check_coefficient_bits(self, other)?;
         let content = &self.content * &other.content;
         let (small, big) = if self.len() <= other.len() {
             (self, other)
@@ -205,6 +206,7 @@ impl<C: Coefficient> Poly<C> {
         if !gather::fits(self.words(), self.len().saturating_mul(self.len())) {
             return self.checked_mul(self);
         }
+        Self::check_coefficient_bits(self, self)?;
         self.check_product_exponents(self)?;
         let terms = gather::square(
             self.layout(),

@@ -1,6 +1,6 @@
 //! Integer powers: any power of a single term, non-negative powers of anything else.
 
-use super::{check_exponent, gather, Poly};
+use super::{check_exponent, gather, Poly, MAX_COEFFICIENT_BITS};
 use crate::error::AlgebraError;
 use crate::number::{Coefficient, Integer, IntegerRing, Rational};
 
@@ -59,6 +59,17 @@ impl<C: Coefficient> Poly<C> {
         }
         if e == 1 {
             return Ok(self.clone());
+        }
+        // The coefficients of a power of `n` terms whose coefficients have `b` bits have at
+        // most `e(b + log₂ n)`: the bound on them, as on a single term's power above
+        // (`(c x + y)^100` of a `c` of a million bits multiplied for a quarter of an hour).
+        let sums = u64::from(64 - (self.len() as u64).leading_zeros());
+        let bits = (self.coefficient_bits() + sums).saturating_mul(e.unsigned_abs());
+        if bits > MAX_COEFFICIENT_BITS {
+            return Err(AlgebraError::CoefficientTooLarge {
+                bits,
+                limit: MAX_COEFFICIENT_BITS,
+            });
         }
         if e == 2 {
             return self.checked_square();
@@ -260,9 +271,6 @@ impl<C: Coefficient> Poly<C> {
         Self::assemble(&self.vars, content, w, vec![n])
     }
 }
-
-/// The largest coefficient a power of a single term may produce, in bits (2 MiB of digits).
-const MAX_COEFFICIENT_BITS: u64 = 1 << 24;
 
 /// `C(n, k)`, saturating.
 fn binomial_u128(n: u128, k: u128) -> u128 {

@@ -3,8 +3,8 @@
 
 use pretty_assertions::assert_eq;
 use trigpoly::{
-    AlgebraError, AngleUse, BadName, Expr, Misuse, MonomialIndex, Point, Rational, Setting,
-    VarKind, VarSet,
+    AlgebraError, AngleUse, BadName, Expr, Integer, Misuse, MonomialIndex, Point, Poly, Rational,
+    Setting, VarKind, VarSet,
 };
 
 use crate::common::{p, phase_space, var, G, Q};
@@ -160,8 +160,41 @@ fn a_power_past_the_coefficient_bound_is_refused_with_the_bound() {
     );
     assert_eq!(
         err.to_string(),
-        "the coefficient of this power would have more than 16777216 bits"
+        "a coefficient of this product or power would have more than 16777216 bits"
     );
+}
+
+/// A product, or a power of a sum, whose coefficients would pass the same bound is refused
+/// with it too: `(c x + y)^100` and `F*F*…` of a `c`, an `F`, of millions of bits multiplied
+/// for minutes, the bound checked only on a power of a single term.
+#[test]
+fn products_and_powers_of_sums_past_the_coefficient_bound_are_refused() {
+    let vars = phase_space();
+    let huge = |bits: usize| -> Q {
+        let c = Integer::from_bigint(num_bigint::BigInt::from(1) << bits);
+        Poly::constant(&vars, Rational::from(c))
+    };
+    let (x, y): (Q, Q) = (p(&vars, "x"), p(&vars, "y"));
+    let past = |r: Result<Q, AlgebraError>| match r {
+        Err(AlgebraError::CoefficientTooLarge { limit, .. }) => limit == 1 << 24,
+        _ => false,
+    };
+    // A constant of 9·10⁶ bits: its square would pass 2²⁴ bits, and so would that of c x + y.
+    let c = huge(9_000_000);
+    assert!(past(c.checked_mul(&c)));
+    let sum = c.checked_mul(&x).unwrap().checked_add(&y).unwrap();
+    assert!(past(sum.checked_mul(&sum)));
+    // Of a million bits: c x + y takes a power of 16 (1.6·10⁷ bits), not of 17.
+    let sum = huge(1_000_000)
+        .checked_mul(&x)
+        .unwrap()
+        .checked_add(&y)
+        .unwrap();
+    assert!(past(sum.checked_pow(17)));
+    assert_eq!(sum.checked_pow(2).unwrap().len(), 3);
+    // Under the bound nothing changes: a product of two constants of 8·10⁶ bits is one.
+    let half = huge(8_000_000);
+    assert_eq!(half.checked_mul(&half).unwrap(), huge(16_000_000));
 }
 
 /// Arguments that do not fit together: the counts that differ.
