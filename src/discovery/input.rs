@@ -174,7 +174,8 @@ fn parameter(system: &System, name: &str) -> Result<Var, String> {
 }
 
 /// Parameters named in `A,B` (kept symbolic by a search); a blank text names none, and a
-/// comma with no name after it or before it is refused, by its column, as in [`parse_fixed`].
+/// comma with no name after it or before it is refused, by its column, as in [`parse_fixed`],
+/// as is a parameter named twice.
 pub fn parse_symbolic(system: &System, text: &str) -> Result<Vec<Var>, String> {
     let pieces: Vec<&str> = text.split(',').collect();
     let mut out = Vec::new();
@@ -184,9 +185,19 @@ pub fn parse_symbolic(system: &System, text: &str) -> Result<Vec<Var>, String> {
                 "{missing}: name parameters as A,B, such as M,omega"
             ));
         }
-        if !piece.trim().is_empty() {
-            out.push(parameter(system, piece.trim())?);
+        if piece.trim().is_empty() {
+            continue;
         }
+        let v = parameter(system, piece.trim())?;
+        // Named twice (`M,M`, or `omega,ω`), it counted twice: a search's space had each of
+        // its monomials again, and a closure found the relations 0 = 0.
+        if out.contains(&v) {
+            return Err(format!(
+                "{} is named twice",
+                trigpoly::quoted_name(piece.trim())
+            ));
+        }
+        out.push(v);
     }
     Ok(out)
 }

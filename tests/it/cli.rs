@@ -1998,6 +1998,23 @@ fn cli_a_comma_with_no_parameter_beside_it_is_refused_by_symbolic() {
     }
 }
 
+/// A parameter named twice in --symbolic is refused, as one given two values by --fix is: it
+/// was kept symbolic twice, the closure finding the relations 0 = 0 and the search losing `H`
+/// to a degree in `M, M` past the space's.
+#[test]
+fn cli_a_parameter_named_twice_is_refused_by_symbolic() {
+    let rotor = "systems/harmonic-rotor.toml";
+    for (command, symbolic, twice) in [
+        (vec!["closure", rotor, "L", "G1", "G2"], "omega,ω", "ω"),
+        (vec!["search", rotor], "M, M", "M"),
+    ] {
+        let o = superint(&[&command[..], &["--symbolic", symbolic]].concat());
+        assert_eq!(o.status.code(), Some(2), "{symbolic}");
+        let message = format!("superint: error: --symbolic: '{twice}' is named twice\n");
+        assert_eq!(stderr(&o), message, "{symbolic}");
+    }
+}
+
 /// A comma with no expression after it (or before it) in --known is refused by its column,
 /// as one in --fix is; a comma inside an instance's braces is the instance's.
 #[test]
