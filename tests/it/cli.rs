@@ -2183,6 +2183,15 @@ fn cli_bench_prints_seconds_and_terms_last() {
     assert_eq!(terms(&one), terms(&two));
     assert!(one.contains("zeros: 18"), "{one}");
     run(&["bench", "W9", "3"], 2);
+    // The largest W1 stops at its first pair past the limit on θ's order, where it listed its
+    // 10¹⁰ pairs first (160 GB).
+    let largest = superint(&["bench", "W1", "100000"]);
+    assert_eq!(largest.status.code(), Some(2));
+    assert_eq!(
+        stderr(&largest),
+        "superint: error: workload tower 100000: the trigonometric order in θ would reach \
+         1001 (terms in cos 1001θ, sin 1001θ), past the limit of 1000\n"
+    );
     // The formats it does not print are refused, as its help says.
     let latex = superint(&["bench", "W1", "3", "--format", "latex"]);
     assert_eq!(latex.status.code(), Some(2));
