@@ -1,12 +1,11 @@
 //! System files named on the command line: a path, or `-` for standard input (read once, so
 //! that `check a.toml - -` checks the piped file twice rather than an empty second one).
 
-use std::io::Read;
 use std::path::Path;
 use std::sync::OnceLock;
 
 use superint::system_file::{
-    load, load_bytes, Caller, ErrorKind, FileError, LimitsOverride, LoadedSystem,
+    load, load_bytes, read_bytes, Caller, ErrorKind, FileError, LimitsOverride, LoadedSystem,
 };
 
 /// How messages name a system file read from standard input.
@@ -23,21 +22,18 @@ fn load_file(path: &Path, limits: &LimitsOverride) -> Result<LoadedSystem, FileE
     if path != Path::new("-") {
         return load(path, limits);
     }
-    static PIPED: OnceLock<Result<Vec<u8>, String>> = OnceLock::new();
+    static PIPED: OnceLock<Result<Vec<u8>, FileError>> = OnceLock::new();
     let piped = PIPED.get_or_init(|| {
-        let mut bytes = Vec::new();
-        std::io::stdin()
-            .lock()
-            .read_to_end(&mut bytes)
-            .map(|_| bytes)
-            .map_err(|e| e.to_string())
+        read_bytes(STDIN, std::io::stdin().lock(), |e| {
+            FileError::new(
+                ErrorKind::Io,
+                STDIN,
+                format!("cannot read standard input: {e}"),
+            )
+        })
     });
     match piped {
         Ok(bytes) => load_bytes(STDIN, bytes, limits),
-        Err(e) => Err(FileError::new(
-            ErrorKind::Io,
-            STDIN,
-            format!("cannot read standard input: {e}"),
-        )),
+        Err(e) => Err(e.clone()),
     }
 }

@@ -3,6 +3,7 @@
 //! where it is written (the names by the rules of `names.rs`).
 
 use std::collections::HashMap;
+use std::io::Read;
 use std::ops::Range;
 use std::path::Path;
 use std::sync::Mutex;
@@ -31,10 +32,48 @@ pub(super) const MAX_DEGREE_CEILING: u32 = 32_767;
 pub fn load(path: impl AsRef<Path>, limits: &LimitsOverride) -> Result<LoadedSystem, FileError> {
     let path = path.as_ref();
     let origin = path.display().to_string();
-    let bytes = std::fs::read(path).map_err(|e| {
+    let cannot = |e: std::io::Error| {
         FileError::new(ErrorKind::Io, &origin, format!("cannot read the file: {e}"))
-    })?;
+    };
+    let file = std::fs::File::open(path).map_err(cannot)?;
+    let bytes = read_bytes(&origin, file, cannot)?;
     load_bytes(&origin, &bytes, limits)
+}
+
+/// The most bytes of a system file read (1 GiB): far more than any file of expressions within
+/// the term limit holds, and a bound on what `check /dev/zero` or an endless pipe reads (they
+/// read until memory ran out).
+pub const MAX_FILE_BYTES: usize = 1 << 30;
+
+/// The bytes of a system file from `reader` (`origin` names it), read to its end, to a NUL
+/// byte (a binary file, which [`load_bytes`] then refuses at its place without the rest being
+/// read), or past [`MAX_FILE_BYTES`], which is refused; an error of the reader is `cannot`'s.
+pub fn read_bytes(
+    origin: &str,
+    mut reader: impl Read,
+    cannot: impl Fn(std::io::Error) -> FileError,
+) -> Result<Vec<u8>, FileError> {
+    let mut bytes = Vec::new();
+    let mut chunk = vec![0u8; 1 << 16];
+    loop {
+        let n = match reader.read(&mut chunk) {
+            Ok(0) => return Ok(bytes),
+            Ok(n) => n,
+            Err(e) if e.kind() == std::io::ErrorKind::Interrupted => continue,
+            Err(e) => return Err(cannot(e)),
+        };
+        bytes.extend_from_slice(&chunk[..n]);
+        if chunk[..n].contains(&0) {
+            return Ok(bytes);
+        }
+        if bytes.len() > MAX_FILE_BYTES {
+            let message = format!(
+                "the file is larger than {} GiB, far larger than a system file is: is it one?",
+                MAX_FILE_BYTES >> 30
+            );
+            return Err(FileError::new(ErrorKind::NotText, origin, message));
+        }
+    }
 }
 
 /// Loads a system file from its bytes; `origin` names it in messages.

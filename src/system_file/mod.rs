@@ -57,7 +57,7 @@ mod written;
 
 pub use claims::{CheckedClaim, ClaimForm, ClaimSpec};
 pub use error::{ErrorKind, FileError, Location, Warning};
-pub use load::{load, load_bytes, load_str};
+pub use load::{load, load_bytes, load_str, read_bytes, MAX_FILE_BYTES};
 pub use names::{reserved, unwritable_letter, BadName, PrintedNames, Refusal};
 pub use plot::{Against, PlotFunctions, PlotInput, StartValue};
 pub use reports::{

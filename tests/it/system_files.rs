@@ -2801,6 +2801,33 @@ fn echoed_products_are_spaced_only_where_their_letters_spell_another_name() {
     }
 }
 
+/// An endless input is read only so far: to its first NUL byte, the binary file being refused
+/// there (`check /dev/zero` read until memory ran out), and no further than
+/// `MAX_FILE_BYTES` of text.
+#[test]
+fn an_endless_input_is_read_only_so_far() {
+    use superint::system_file::{read_bytes, ErrorKind, FileError, MAX_FILE_BYTES};
+    let cannot = |e: std::io::Error| FileError::new(ErrorKind::Io, "<zeros>", e.to_string());
+    let zeros = read_bytes("<zeros>", std::io::repeat(0), cannot).expect("read");
+    assert!(
+        zeros.len() <= 1 << 16 && zeros.ends_with(&[0]),
+        "{}",
+        zeros.len()
+    );
+    assert_eq!(MAX_FILE_BYTES, 1 << 30);
+    if Path::new("/dev/zero").exists() {
+        let o = superint_in(root(), &["check", "/dev/zero"]);
+        assert_eq!(o.status.code(), Some(2));
+        assert!(
+            text(&o.stderr).starts_with(
+                "superint: error: /dev/zero:1:1: this is a binary file (it contains a NUL byte)"
+            ),
+            "{}",
+            text(&o.stderr)
+        );
+    }
+}
+
 /// Runs the binary at the workspace root with `input` on its standard input.
 fn superint_piped(args: &[&str], input: &str) -> Output {
     use std::io::Write;
