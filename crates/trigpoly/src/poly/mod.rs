@@ -446,14 +446,18 @@ impl<C: Coefficient> Poly<C> {
     }
 
     /// The fixed bound on the size of coefficients, checked before a product of `a` by `b`
-    /// is formed: the bits of its coefficients are at most those of the two factors' added,
-    /// with one more for each doubling of the terms summed into one, and past
-    /// [`MAX_COEFFICIENT_BITS`] it is refused, as a power of a single term is (a chain of
-    /// products `F*F*…` of a large constant multiplied for minutes, each step twice the
-    /// last). Factors whose values fit machine words pass at once.
+    /// is formed: the bits of its coefficients' numerators are at most those of the two
+    /// factors' added, with one more for each doubling of the terms summed into one, and of
+    /// their denominators those of the two factors' contents' added (a numerator and a
+    /// denominator are bounded apart, since one factor's may cancel the other's:
+    /// `(c x)·(y/c)` is `x y`); past [`MAX_COEFFICIENT_BITS`] it is refused, as a power of a
+    /// single term is (a chain of products `F*F*…` of a large constant multiplied for
+    /// minutes, each step twice the last). Factors whose values fit machine words pass at
+    /// once.
     pub(crate) fn check_coefficient_bits(a: &Self, b: &Self) -> Result<(), AlgebraError> {
         let sums = 64 - (a.len().min(b.len()) as u64).leading_zeros();
-        let bits = a.coefficient_bits() + b.coefficient_bits() + u64::from(sums);
+        let ((numer_a, denom_a), (numer_b, denom_b)) = (a.coefficient_bits(), b.coefficient_bits());
+        let bits = (numer_a + numer_b + u64::from(sums)).max(denom_a + denom_b);
         if bits > MAX_COEFFICIENT_BITS {
             return Err(AlgebraError::CoefficientTooLarge {
                 bits,
@@ -463,20 +467,24 @@ impl<C: Coefficient> Poly<C> {
         Ok(())
     }
 
-    /// A bound on the bits of any component of a coefficient: those of the content's
-    /// numerator or denominator and of the primitive part's largest component, added (a
-    /// coefficient is their product). One pass over the coefficients only when one of them
-    /// does not fit a machine word.
-    pub(crate) fn coefficient_bits(&self) -> u64 {
-        let content = match self.content.small_parts() {
-            Some((n, d)) => 64 - u64::from(n.unsigned_abs().max(d.unsigned_abs()).leading_zeros()),
-            None => self.content.numer().bits().max(self.content.denom().bits()),
+    /// Bounds on the bits of any component of a coefficient's numerator, and of its
+    /// denominator: those of the content's numerator and of the primitive part's largest
+    /// component, added (a coefficient is their product over the content's denominator),
+    /// and those of the content's denominator. One pass over the coefficients only when one
+    /// of them does not fit a machine word.
+    pub(crate) fn coefficient_bits(&self) -> (u64, u64) {
+        let (numer, denom) = match self.content.small_parts() {
+            Some((n, d)) => (
+                64 - u64::from(n.unsigned_abs().leading_zeros()),
+                64 - u64::from(d.unsigned_abs().leading_zeros()),
+            ),
+            None => (self.content.numer().bits(), self.content.denom().bits()),
         };
         let parts = match self.small_bits() {
             Some(bits) => u64::from(bits),
             None => self.coefficient_bits_of_parts(),
         };
-        content + parts
+        (numer + parts, denom)
     }
 
     /// The bits of the largest component of a coefficient of the primitive part.

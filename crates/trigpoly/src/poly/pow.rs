@@ -60,11 +60,13 @@ impl<C: Coefficient> Poly<C> {
         if e == 1 {
             return Ok(self.clone());
         }
-        // The coefficients of a power of `n` terms whose coefficients have `b` bits have at
-        // most `e(b + log₂ n)`: the bound on them, as on a single term's power above
+        // The coefficients of a power of `n` terms whose numerators have `b` bits and whose
+        // denominators have `d` have numerators of at most `e(b + log₂ n)` bits and
+        // denominators of `e d`: the bound on them, as on a single term's power above
         // (`(c x + y)^100` of a `c` of a million bits multiplied for a quarter of an hour).
         let sums = u64::from(64 - (self.len() as u64).leading_zeros());
-        let bits = (self.coefficient_bits() + sums).saturating_mul(e.unsigned_abs());
+        let (numer, denom) = self.coefficient_bits();
+        let bits = (numer + sums).max(denom).saturating_mul(e.unsigned_abs());
         if bits > MAX_COEFFICIENT_BITS {
             return Err(AlgebraError::CoefficientTooLarge {
                 bits,

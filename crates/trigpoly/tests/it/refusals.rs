@@ -197,6 +197,30 @@ fn products_and_powers_of_sums_past_the_coefficient_bound_are_refused() {
     assert_eq!(half.checked_mul(&half).unwrap(), huge(16_000_000));
 }
 
+/// The bound is on the coefficients a product has, a numerator and a denominator apart: one
+/// factor's denominator may cancel the other's numerator, `(c x)·(y/c) = x y`, and a sum over
+/// a large denominator keeps it, `(x + y/c)² = x² + 2xy/c + y²/c²`. Those were refused,
+/// their bits counted as the factors' numerators' and denominators' added.
+#[test]
+fn products_whose_coefficients_cancel_or_keep_a_denominator_are_not_refused() {
+    let vars = phase_space();
+    let power_of_two = |bits: usize| -> Rational {
+        Rational::from(Integer::from_bigint(num_bigint::BigInt::from(1) << bits))
+    };
+    let (x, y): (Q, Q) = (p(&vars, "x"), p(&vars, "y"));
+    // A constant of 8.4·10⁶ bits and its inverse: their product's coefficient is 1.
+    let c = power_of_two(8_400_000);
+    let cx = &x * &c;
+    let y_over_c = &y * &c.try_inv().unwrap();
+    assert_eq!(cx.checked_mul(&y_over_c).unwrap(), &x * &y);
+    // Over a constant of 6·10⁶ bits, x + y/c has coefficients of 1.2·10⁷ bits squared.
+    let c = power_of_two(6_000_000);
+    let sum = x.checked_add(&(&y * &c.try_inv().unwrap())).unwrap();
+    let square = sum.checked_mul(&sum).unwrap();
+    assert_eq!(square.len(), 3);
+    assert_eq!(sum.checked_pow(2).unwrap(), square);
+}
+
 /// Arguments that do not fit together: the counts that differ.
 #[test]
 fn misuse_says_which_counts_differ() {
