@@ -92,7 +92,9 @@ impl Workload {
                 // the caller installed (one thread: the plain loop, in order). They are
                 // numbered, not listed: `W1 100000` listed 10¹⁰ pairs, 160 GB, before the
                 // first of them stopped at the limit on θ's order.
-                let side = n as usize;
+                // A size below 1 has no pairs, as `1..=n` had none (`n as usize` made -1 a
+                // side of 2⁶⁴ − 1, whose square overflowed).
+                let side = usize::try_from(n).unwrap_or(0);
                 let terms: usize = (0..side * side)
                     .into_par_iter()
                     .map(|i| resonant_pair(&rotor, (i / side) as i64 + 1, (i % side) as i64 + 1))
@@ -247,5 +249,18 @@ impl FromStr for Workload {
             .and_then(|v| v.parse().ok())
             .ok_or_else(|| UnknownWorkload(s.into()))?;
         Workload::new(name, size)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// A tower of a size below 1 has no pairs, and computes none.
+    #[test]
+    fn a_tower_below_size_one_has_no_pairs() {
+        for n in [0, -1, -7] {
+            assert_eq!(Workload::Tower(n).run().unwrap().terms, 0, "{n}");
+        }
     }
 }
