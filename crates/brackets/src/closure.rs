@@ -32,6 +32,7 @@
 //! # Ok::<(), brackets::EngineError>(())
 //! ```
 
+use itertools::Itertools;
 use std::collections::HashMap;
 use std::time::Instant;
 
@@ -394,6 +395,12 @@ pub fn closure_of(
 ) -> Result<Closure, EngineError> {
     let start = Instant::now();
     let mut timings = ClosureTimings::default();
+    // A parameter named twice (in the public field) is kept symbolic once, as a search's is:
+    // twice, it stood for two generators, and the closure found the relations 0 = 0.
+    let options = &ClosureOptions {
+        symbolic: options.symbolic.iter().copied().unique().collect(),
+        ..options.clone()
+    };
     let r = generators.len();
     let condition = options.condition.as_ref();
     let g_sym = span::restricted_generators(system, generators, condition)?;
@@ -1057,6 +1064,28 @@ mod tests {
             .symbolic(omega)
             .symbolic(omega);
         assert_eq!(search.symbolic, [omega]);
+    }
+
+    /// Options whose public field names a parameter twice give the closure of naming it once,
+    /// as the builder does, not a second generator ω with the relation ω − ω = 0.
+    #[test]
+    fn a_parameter_named_twice_in_the_options_is_kept_symbolic_once() {
+        let rotor = systems::harmonic_rotor();
+        let omega = rotor.var("omega");
+        let gens = ["F1", "F2", "L", "G1", "G2"];
+        let once = closure(&rotor, &gens, &ClosureOptions::new(2).symbolic(omega)).unwrap();
+        let twice = ClosureOptions {
+            symbolic: vec![omega, omega],
+            ..ClosureOptions::new(2)
+        };
+        let twice = closure(&rotor, &gens, &twice).unwrap();
+        let relations = |c: &Closure| {
+            (c.relations.iter())
+                .map(|r| (r.degree, r.poly.to_string()))
+                .collect::<Vec<_>>()
+        };
+        assert_eq!(relations(&twice), relations(&once));
+        assert_eq!(twice.render_bracket(3, 4), once.render_bracket(3, 4));
     }
 
     /// With every parameter symbolic, the linear algebra runs on the symbolic expansions and
