@@ -395,8 +395,10 @@ fn exponent_past_every_limit(message: &str) -> bool {
     else {
         return false;
     };
-    // Digits too many for an i128 are past it too.
+    // Digits too many for an i128 are past it too. A half `p/2`, a radical's power, is
+    // bounded by its `p`.
     let digits = exponent.trim_start_matches(['-', '−']);
+    let digits = digits.strip_suffix("/2").unwrap_or(digits);
     !digits.is_empty()
         && digits.chars().all(|c| c.is_ascii_digit())
         && digits
@@ -1113,6 +1115,17 @@ mod tests {
             limit_hint("the exponent 32767 is past the limit of 1000"),
             raise
         );
+        // A radical's power `p/2` is bounded by its `p`.
+        for (exponent, past) in [("99999999/2", true), ("-65535/2", true), ("32767/2", false)] {
+            let hint = limit_hint(&format!(
+                "the exponent {exponent} is past the limit of 1000"
+            ));
+            assert_eq!(
+                hint.starts_with("no limit reaches this exponent"),
+                past,
+                "{exponent}"
+            );
+        }
         // The other forms of the limit errors, each past every limit or not.
         for (message, past) in [
             (
