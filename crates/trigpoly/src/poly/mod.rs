@@ -42,6 +42,18 @@ pub use trig::{CosSinTerm, TrigMonomial};
 /// digits): a fixed bound, which no limit raises.
 pub(crate) const MAX_COEFFICIENT_BITS: u64 = 1 << 24;
 
+/// Refuses a product or a power whose coefficients may have `bits` bits, past
+/// [`MAX_COEFFICIENT_BITS`].
+pub(crate) fn check_coefficient_size(bits: u64) -> Result<(), AlgebraError> {
+    if bits > MAX_COEFFICIENT_BITS {
+        return Err(AlgebraError::CoefficientTooLarge {
+            bits,
+            limit: MAX_COEFFICIENT_BITS,
+        });
+    }
+    Ok(())
+}
+
 /// An exact Laurent polynomial over `C` in the variables of a [`VarSet`].
 ///
 /// Invariant (kept by every operation, so equality is structural and the zero test is "no
@@ -457,14 +469,7 @@ impl<C: Coefficient> Poly<C> {
     pub(crate) fn check_coefficient_bits(a: &Self, b: &Self) -> Result<(), AlgebraError> {
         let sums = 64 - (a.len().min(b.len()) as u64).leading_zeros();
         let ((numer_a, denom_a), (numer_b, denom_b)) = (a.coefficient_bits(), b.coefficient_bits());
-        let bits = (numer_a + numer_b + u64::from(sums)).max(denom_a + denom_b);
-        if bits > MAX_COEFFICIENT_BITS {
-            return Err(AlgebraError::CoefficientTooLarge {
-                bits,
-                limit: MAX_COEFFICIENT_BITS,
-            });
-        }
-        Ok(())
+        check_coefficient_size((numer_a + numer_b + u64::from(sums)).max(denom_a + denom_b))
     }
 
     /// Bounds on the bits of any component of a coefficient's numerator, and of its

@@ -1,6 +1,6 @@
 //! Integer powers: any power of a single term, non-negative powers of anything else.
 
-use super::{check_exponent, gather, Poly, MAX_COEFFICIENT_BITS};
+use super::{check_coefficient_size, check_exponent, gather, Poly};
 use crate::error::AlgebraError;
 use crate::number::{Coefficient, Integer, IntegerRing, Rational};
 
@@ -38,13 +38,7 @@ impl<C: Coefficient> Poly<C> {
                     .map(|q| q.numer().bits().max(q.denom().bits()))
                     .max()
                     .unwrap_or(1);
-                let bits = bits.saturating_mul(e.unsigned_abs());
-                if bits > MAX_COEFFICIENT_BITS {
-                    return Err(AlgebraError::CoefficientTooLarge {
-                        bits,
-                        limit: MAX_COEFFICIENT_BITS,
-                    });
-                }
+                check_coefficient_size(bits.saturating_mul(e.unsigned_abs()))?;
             }
             return Ok(self.monomial_pow(e));
         }
@@ -66,13 +60,7 @@ impl<C: Coefficient> Poly<C> {
         // (`(c x + y)^100` of a `c` of a million bits multiplied for a quarter of an hour).
         let sums = u64::from(64 - (self.len() as u64).leading_zeros());
         let (numer, denom) = self.coefficient_bits();
-        let bits = (numer + sums).max(denom).saturating_mul(e.unsigned_abs());
-        if bits > MAX_COEFFICIENT_BITS {
-            return Err(AlgebraError::CoefficientTooLarge {
-                bits,
-                limit: MAX_COEFFICIENT_BITS,
-            });
-        }
+        check_coefficient_size((numer + sums).max(denom).saturating_mul(e.unsigned_abs()))?;
         if e == 2 {
             return self.checked_square();
         }
