@@ -6,7 +6,7 @@ use crate::error::AlgebraError;
 use crate::number::{Coefficient, GaussianRational, Integer, Rational};
 use crate::poly::Poly;
 use crate::syntax::{parse_expr, Expr, ExprKind, ParseError, Span};
-use crate::varset::{long_name, Var, VarKind, Vars};
+use crate::varset::{long_name, Var, VarKind, Vars, RESERVED};
 
 /// What names and brackets mean beyond the variables: named functions defined elsewhere (a
 /// system file's `H`, `L`) and the Poisson bracket `{f, g}` of a phase space.
@@ -699,7 +699,10 @@ impl<C: Coefficient> Lower<'_, C> {
             // Said as the others are: `sqrt takes one argument`.
             "sqrt" => name,
             _ => {
-                let hint = match (did_you_mean(name, &CALLED), name) {
+                // Every function an expression may call, as an unknown one is told: the
+                // reserved names but `i` ([`FUNCTIONS`] and `sqrt`).
+                let called: Vec<&str> = RESERVED.iter().copied().filter(|&n| n != "i").collect();
+                let hint = match (did_you_mean(name, &called), name) {
                     (Some(k), _) => format!("; did you mean '{k}'?"),
                     (None, "tan" | "log" | "ln" | "atan" | "arctan" | "abs") => "; expressions \
                          are polynomials in the variables, in cos and sin of angles and in \
@@ -712,7 +715,7 @@ impl<C: Coefficient> Lower<'_, C> {
                     format!(
                         "unknown function {} (known: {}){hint}",
                         quoted_name(name),
-                        CALLED.join(", ")
+                        called.join(", ")
                     ),
                 ));
             }
@@ -1047,10 +1050,6 @@ impl LinearForm {
 /// The functions an expression may call: a name before parentheses other than these (and
 /// `Re`, `Im` where the system does not declare them) multiplies them.
 pub const FUNCTIONS: [&str; 6] = ["cos", "sin", "exp", "conj", "re", "im"];
-
-/// Every function an expression may call, as an unknown one is told: [`FUNCTIONS`] and
-/// `sqrt`, which takes the root of its argument.
-const CALLED: [&str; 7] = ["cos", "sin", "exp", "conj", "re", "im", "sqrt"];
 
 /// The longest piece, in bytes, that a name run together splits into: a declared name is
 /// shorter, and the bound keeps the split linear in the length of what is split (a run of

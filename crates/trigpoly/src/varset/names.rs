@@ -297,7 +297,9 @@ impl fmt::Display for BadName {
                 )
             }
             BadName::Reserved => {
-                f.write_str("i, cos, sin, exp, conj, re, im and sqrt are reserved")
+                // The list as RESERVED has it: `i, cos, …, im and sqrt are reserved`.
+                let (rest, last) = RESERVED.split_at(RESERVED.len() - 1);
+                write!(f, "{} and {} are reserved", rest.join(", "), last[0])
             }
         }
     }
