@@ -193,6 +193,17 @@ struct Owner {
     from: Option<String>,
 }
 
+impl Owner {
+    /// Whose it is, with the line of the declaration where there is one: `the function A on
+    /// line 9`.
+    fn placed(&self) -> String {
+        match self.line {
+            Some(l) => format!("{} on line {l}", self.whose),
+            None => self.whose.clone(),
+        }
+    }
+}
+
 /// The forms of a family's instances at every pair of indices: for each notation, what comes
 /// before and after the indices, and what stands between them (`K_{` `,` `}` in text and
 /// LaTeX, `K_` `_` `` read back), and the family's LaTeX, which an instance's is made from.
@@ -531,10 +542,6 @@ impl PrintedNames {
         }
         for key in &forms {
             if let Some(other) = self.forms.get(key) {
-                let place = other
-                    .line
-                    .map(|l| format!(" on line {l}"))
-                    .unwrap_or_default();
                 let how = match key {
                     (Notation::Text, form) => format!("show its instances as {form}"),
                     (_, form) => format!(
@@ -542,10 +549,7 @@ impl PrintedNames {
                         form.strip_suffix(indices).unwrap_or(form)
                     ),
                 };
-                return Err(format!(
-                    "{whose} would {how}, as {}{place} does",
-                    other.whose
-                ));
+                return Err(format!("{whose} would {how}, as {} does", other.placed()));
             }
         }
         let mut keys: Vec<(Notation, String, Option<String>)> =
@@ -565,30 +569,21 @@ impl PrintedNames {
         forms: Vec<(Notation, String, Option<String>)>,
         line: Option<usize>,
     ) -> Result<(), String> {
-        for (notation, form, from) in &forms {
-            let new = Owner {
-                whose: whose.to_string(),
-                line,
-                from: from.clone(),
-            };
-            let other = self
-                .forms
-                .get(&(*notation, form.clone()))
-                .cloned()
-                .or_else(|| {
-                    (self.families.iter()).find_map(|family| family.owning(*notation, form))
-                });
-            if let Some(other) = other {
-                return Err(alike(&new, *notation, form, &other));
+        let owned: Vec<((Notation, String), Owner)> = (forms.into_iter())
+            .map(|(notation, form, from)| {
+                let whose = whose.to_string();
+                ((notation, form), Owner { whose, line, from })
+            })
+            .collect();
+        for (key, new) in &owned {
+            let (notation, form) = key;
+            let instance = || (self.families.iter()).find_map(|f| f.owning(*notation, form));
+            if let Some(other) = self.forms.get(key).cloned().or_else(instance) {
+                return Err(alike(new, *notation, form, &other));
             }
         }
-        for (notation, form, from) in forms {
-            let owner = Owner {
-                whose: whose.to_string(),
-                line,
-                from,
-            };
-            self.take((notation, form), owner);
+        for (key, owner) in owned {
+            self.take(key, owner);
         }
         Ok(())
     }
@@ -615,11 +610,7 @@ fn with_indices_forms(display: &str) -> Option<(String, String)> {
 /// as A, as the function A on line 9 does`; `the function o would print as o in LaTeX, and
 /// the parameter omicron as \mathit{o}, which both read back as o`.
 fn alike(new: &Owner, notation: Notation, form: &str, other: &Owner) -> String {
-    let place = other
-        .line
-        .map(|l| format!(" on line {l}"))
-        .unwrap_or_default();
-    let (whose, theirs) = (&new.whose, format!("{}{place}", other.whose));
+    let (whose, theirs) = (&new.whose, other.placed());
     match (notation, &new.from, &other.from) {
         (Notation::Text, ..) => format!("{whose} would show as {form}, as {theirs} does"),
         (Notation::Latex, ..) => {
