@@ -151,7 +151,8 @@ pub enum Item {
 pub struct PaperClaim {
     /// The claim (id, statement, sides, condition).
     pub claim: Claim,
-    /// Identity or nonvanishing.
+    /// Identity or nonvanishing ([`PaperClaim::check`] refuses [`ClaimKind::Rank`], which is
+    /// an [`Item::Rank`]).
     pub kind: ClaimKind,
 }
 
@@ -415,7 +416,8 @@ fn rank_entry(
 }
 
 impl PaperClaim {
-    /// Checks the claim exactly.
+    /// Checks the claim exactly; a claim of kind [`ClaimKind::Rank`] is refused
+    /// ([`EngineError::Invalid`]): a rank is an [`Item::Rank`], certified from its functions.
     pub fn check(&self) -> Result<ClaimResult, EngineError> {
         let identity = ClaimResult::from(self.claim.check()?);
         Ok(match self.kind {
@@ -433,6 +435,13 @@ impl PaperClaim {
                     witness,
                     ..identity
                 }
+            }
+            ClaimKind::Rank => {
+                return Err(EngineError::Invalid(format!(
+                    "{} is a claim of two sides, not a rank: a rank is certified from its \
+                     functions (Item::Rank)",
+                    self.claim.id
+                )))
             }
         })
     }

@@ -22,7 +22,8 @@
 //!                 "condition_ascii": string | null   (the condition as text superint reads
 //!                          back: `p_theta = I*omega`, with the fixed parameter values a
 //!                          result holds at; null where "ascii" is null),
-//!                 "kind": "identity" | "nonvanishing",
+//!                 "kind": "identity" | "nonvanishing" | "rank"   (a rank claim's certificate
+//!                          is in "ranks", under the same "id"),
 //!                 "outcome": "proved" | "refuted" | "undecided"   (undecided: its check
 //!                          stopped at a limit, which "undecided" gives, and the report's
 //!                          "errors" with its place),
@@ -116,8 +117,8 @@ use trigpoly::{Expr, Factored, Style, VarKind};
 
 use super::{plain, Options};
 use crate::report::{
-    written_in_functions, ClaimKind, ClaimOutcome, ClaimResult, ClosureFacts, Entry, Equations,
-    Facts, ParameterFacts, ProofResult, RankResult, Report, SearchFacts, TableResult, TowerResult,
+    written_in_functions, ClaimOutcome, ClaimResult, ClosureFacts, Entry, Equations, Facts,
+    ParameterFacts, ProofResult, RankResult, Report, SearchFacts, TableResult, TowerResult,
 };
 use brackets::{Entry as TableEntry, UpperBound};
 
@@ -409,10 +410,7 @@ fn claim(c: &ClaimResult, section: u32, seconds: Value) -> Value {
         "ascii": c.written,
         "condition": c.condition,
         "condition_ascii": c.condition_ascii,
-        "kind": match c.kind {
-            ClaimKind::Identity => "identity",
-            ClaimKind::Nonvanishing => "nonvanishing",
-        },
+        "kind": c.kind.name(),
         "outcome": c.outcome().name(),
         "expect": c.expect.name(),
         "meets_expectation": c.meets_expectation(),

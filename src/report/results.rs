@@ -11,7 +11,7 @@ use trigpoly::{Expr, Factored, Style, Var, Vars};
 use super::Expect;
 use crate::system_file::Caller;
 
-/// Whether a claim asserts an identity or that something does not vanish.
+/// Whether a claim asserts an identity, that something does not vanish, or a rank.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 pub enum ClaimKind {
     /// `lhs = rhs` (under the condition): proved when `lhs − rhs` is exactly zero.
@@ -19,6 +19,38 @@ pub enum ClaimKind {
     /// `lhs ≠ rhs` (under the condition): proved when `lhs − rhs` is not zero; the nonzero
     /// difference is the witness.
     Nonvanishing,
+    /// `rank ∂(F_1, …, F_k)/∂(q, p) = r` (under the condition): proved when the certified rank
+    /// is `r` ([`RankResult`]); it has no residual, and its note says the rank found.
+    Rank,
+}
+
+impl ClaimKind {
+    /// `identity`, `nonvanishing` or `rank`, as JSON gives it.
+    ///
+    /// ```
+    /// use superint::prelude::*;
+    ///
+    /// let file = load_system_file("systems/anisotropic-oscillator-1-2.toml", &LimitsOverride::default())?;
+    /// let report = check_report([&file])?;
+    /// let rank = report.claims().into_iter().find(|c| c.statement.starts_with("rank")).unwrap();
+    /// assert_eq!(rank.kind.name(), "rank");
+    /// assert_eq!(ClaimKind::Identity.to_string(), "identity");
+    /// # Ok::<(), FileError>(())
+    /// ```
+    pub fn name(self) -> &'static str {
+        match self {
+            ClaimKind::Identity => "identity",
+            ClaimKind::Nonvanishing => "nonvanishing",
+            ClaimKind::Rank => "rank",
+        }
+    }
+}
+
+/// Its [`ClaimKind::name`].
+impl std::fmt::Display for ClaimKind {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.write_str(self.name())
+    }
 }
 
 /// What a check of a claim found. Ordered so that the outcome of several checks of one claim
@@ -79,7 +111,7 @@ pub struct ClaimResult {
     /// The condition as text that superint reads back (`p_theta = I*omega`), where the claim
     /// has such a text ([`ClaimResult::written`]).
     pub condition_ascii: Option<String>,
-    /// Identity or nonvanishing.
+    /// Identity, nonvanishing or rank.
     pub kind: ClaimKind,
     /// Whether the claim was proved.
     pub proved: bool,
@@ -573,12 +605,16 @@ impl RankResult {
         let statement = Self::statement(&names, &vars, &coordinates, expected);
         let proved = certificate.rank == expected;
         let note = (!proved).then(|| format!("the rank is {}", certificate.rank));
+        let claim = ClaimResult {
+            kind: ClaimKind::Rank,
+            ..ClaimResult::derived(id, &statement, proved, note)
+        };
         RankResult {
             functions: names,
             vars,
             coordinates,
             expected,
-            claim: ClaimResult::derived(id, &statement, proved, note),
+            claim,
             certificate,
         }
     }

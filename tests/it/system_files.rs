@@ -2031,6 +2031,41 @@ fn check_exit_status_follows_expectations() {
     assert!(text(&o.stdout).contains("[ladder PROVED, expected refuted]"));
 }
 
+/// A rank claim is of kind `rank` in JSON, with its certificate under the same id in
+/// `ranks`: it compares no two sides and has no residual, where it was of kind `identity`.
+#[test]
+fn a_rank_claims_kind_is_rank_in_json() {
+    let claims_of = |file: &str| {
+        let v = crate::superint_json(&["check", file, "--no-timings"]);
+        let claims = v["claims"].as_array().expect("claims").clone();
+        (claims, v["ranks"].as_array().expect("ranks").len())
+    };
+    // `rank(H, Hx, C) = 3` and `rank(H, Hx, C, S) = 3`, beside identities.
+    let (claims, ranks) = claims_of("systems/anisotropic-oscillator-1-2.toml");
+    let kind = |c: &Value| (c["id"].as_str().unwrap().to_string(), c["kind"].clone());
+    let kinds: Vec<_> = claims
+        .iter()
+        .map(kind)
+        .filter(|(id, _)| id.starts_with('r'))
+        .collect();
+    let expected = [("relation", "identity"), ("rank", "rank"), ("rank", "rank")];
+    assert_eq!(
+        kinds,
+        expected.map(|(id, k)| (id.to_string(), Value::from(k)))
+    );
+    assert_eq!(ranks, 2);
+    // A refuted rank has no residual: its note says the rank found.
+    let (claims, _) = claims_of("systems/harmonic-rotor.toml");
+    let refuted = claims
+        .iter()
+        .find(|c| c["id"] == "false-C17-rank")
+        .expect("a rank");
+    assert_eq!(refuted["kind"], "rank");
+    assert_eq!(refuted["outcome"], "refuted");
+    assert_eq!(refuted["note"], "the rank is 4");
+    assert!(refuted["residual"].is_null());
+}
+
 #[test]
 fn check_json_is_one_object_per_claim() {
     let out = run(
