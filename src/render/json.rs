@@ -435,7 +435,7 @@ fn rank(r: &RankResult, section: u32) -> Value {
         "section": section,
         "id": r.claim.id,
         "functions": r.functions,
-        "coordinates": r.coordinates.iter().map(|&v| name(v)).collect::<Vec<_>>(),
+        "coordinates": r.coordinates().iter().map(|&v| name(v)).collect::<Vec<_>>(),
         "expected": r.expected,
         "condition": r.claim.condition,
         "condition_ascii": r.claim.condition_ascii,

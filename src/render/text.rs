@@ -576,10 +576,10 @@ fn there_are(n: usize, noun: &str) -> String {
 pub(crate) fn upper_bound(r: &RankResult) -> String {
     let k = r.certificate.rank;
     match &r.certificate.upper {
-        UpperBound::Size if r.functions.len() <= r.coordinates.len() => {
+        UpperBound::Size if r.functions.len() <= r.coordinates().len() => {
             there_are(r.functions.len(), "function")
         }
-        UpperBound::Size => there_are(r.coordinates.len(), "coordinate"),
+        UpperBound::Size => there_are(r.coordinates().len(), "coordinate"),
         // With no minor above, the bordering minors are every entry of the Jacobian.
         UpperBound::VanishingMinors { count } if k == 0 => format!(
             "every `1 × 1` minor ({}) vanishes identically",

@@ -601,8 +601,7 @@ impl RankResult {
         certificate: RankCertificate,
     ) -> Self {
         let vars = system.vars().clone();
-        let coordinates = certificate.coordinates.clone();
-        let statement = Self::statement(&names, &vars, &coordinates, expected);
+        let statement = Self::statement(&names, &vars, &certificate.coordinates, expected);
         let proved = certificate.rank == expected;
         let note = (!proved).then(|| format!("the rank is {}", certificate.rank));
         let claim = ClaimResult {
@@ -612,7 +611,6 @@ impl RankResult {
         RankResult {
             functions: names,
             vars,
-            coordinates,
             expected,
             claim,
             certificate,
@@ -639,6 +637,29 @@ impl RankResult {
         )
     }
 
+    /// The Jacobian's columns: the phase-space coordinates, in order, or on a level set those
+    /// its condition leaves free, as the certificate has them
+    /// ([`RankCertificate::coordinates`](brackets::RankCertificate::coordinates)).
+    ///
+    /// ```
+    /// use superint::prelude::*;
+    /// use superint::report::Entry;
+    ///
+    /// // On the level set p_θ = Iω the Jacobian has no column p_θ.
+    /// let rotor = load_system_file("systems/harmonic-rotor.toml", &LimitsOverride::default())?;
+    /// let report = rank_report_when(&rotor, &["F1", "L"], None, Some("p_theta = I*omega"))?;
+    /// let entries = &report.sections[0].entries;
+    /// let Some(Entry::Rank(rank)) = entries.iter().find(|e| matches!(e, Entry::Rank(_))) else {
+    ///     panic!("a rank");
+    /// };
+    /// let names: Vec<&str> = rank.coordinates().iter().map(|&v| rank.vars.variable(v).name()).collect();
+    /// assert_eq!(names, ["x", "y", "theta", "p_x", "p_y"]);
+    /// # Ok::<(), FileError>(())
+    /// ```
+    pub fn coordinates(&self) -> &[Var] {
+        &self.certificate.coordinates
+    }
+
     /// The names of the functions of the certificate's nonzero minor (its rows).
     pub fn minor_functions(&self) -> Vec<&str> {
         let rows = &self.certificate.minor_rows;
@@ -659,9 +680,6 @@ pub struct RankResult {
     pub functions: Vec<String>,
     /// The variables of the system (for printing the point and the coordinates).
     pub vars: Vars,
-    /// The Jacobian's columns: the phase-space coordinates, in order, or on a level set those
-    /// its condition leaves free (the certificate's).
-    pub coordinates: Vec<Var>,
     /// The rank the paper states.
     pub expected: usize,
     /// The engine's certificate.

@@ -783,8 +783,12 @@ pub fn rank_report_when(
         rank.claim.proved = true;
         rank.claim.note = None;
         // `rank_result` stated the rank claimed; this one states the rank found.
-        rank.claim.statement =
-            RankResult::statement(&names, file.system.vars(), &rank.coordinates, rank.expected);
+        rank.claim.statement = RankResult::statement(
+            &names,
+            file.system.vars(),
+            rank.coordinates(),
+            rank.expected,
+        );
     }
     Ok(file.one_entry(
         format!("Functional independence in {}", file.the_name()),

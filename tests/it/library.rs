@@ -904,6 +904,49 @@ fn reports_take_names_as_str() {
     assert_eq!(none.message, "a rank needs at least one function");
 }
 
+/// A rank's Jacobian columns are its certificate's (`RankResult::coordinates`): a result
+/// given the certificate of the level set `p_θ = Iω`, which has no column `p_θ`, prints that
+/// certificate's columns, where a copy of them kept beside it still named `p_θ`.
+#[test]
+fn a_rank_results_coordinates_are_its_certificates() {
+    use superint::report::Entry;
+    let rotor = harmonic_rotor_file();
+    let rank_of = |report: &Report| -> Option<RankResult> {
+        report
+            .sections
+            .iter()
+            .flat_map(|s| &s.entries)
+            .find_map(|e| match e {
+                Entry::Rank(r) => Some(r.clone()),
+                _ => None,
+            })
+    };
+    let mut everywhere = rank_report(&rotor, &["F1", "L"], None).unwrap();
+    let level = rank_report_when(&rotor, &["F1", "L"], None, Some("p_theta = I*omega")).unwrap();
+    let on_level = rank_of(&level).expect("a rank").certificate;
+    let name = |r: &RankResult| -> Vec<String> {
+        r.coordinates()
+            .iter()
+            .map(|&v| r.vars.variable(v).name().to_string())
+            .collect()
+    };
+    let mut rank = rank_of(&everywhere).expect("a rank");
+    assert_eq!(name(&rank), ["x", "y", "theta", "p_x", "p_y", "p_theta"]);
+    rank.certificate = on_level;
+    assert_eq!(name(&rank), ["x", "y", "theta", "p_x", "p_y"]);
+    for entry in everywhere.sections.iter_mut().flat_map(|s| &mut s.entries) {
+        if let Entry::Rank(r) = entry {
+            *r = rank.clone();
+        }
+    }
+    let json = render(&everywhere, Format::Json, &RenderOptions::reproducible());
+    let v: serde_json::Value = serde_json::from_str(&json).expect("JSON");
+    assert_eq!(
+        v["ranks"][0]["coordinates"],
+        serde_json::json!(["x", "y", "theta", "p_x", "p_y"])
+    );
+}
+
 /// A program's own error type takes the engine's errors by `?` through `FileError`: a slip in
 /// an expression parsed by the engine keeps its line and column, a name declared twice (an
 /// algebra error) is refused, and the program matches on the kinds. The harmonic oscillator
