@@ -421,13 +421,14 @@ impl<C: Coefficient> Lower<'_, C> {
         }
         let known = self.known_names();
         let meant = did_you_mean_hint(name, &known);
+        // A set of no names (a constant's, `GaussianRational::from_str`'s) lists none.
+        let known = match known.is_empty() {
+            true => " (no names are declared)".to_string(),
+            false => format!(" (known: {})", known.join(", ")),
+        };
         Err(ParseError::new(
             span,
-            format!(
-                "unknown name {}{meant} (known: {})",
-                quoted_name(name),
-                known.join(", ")
-            ),
+            format!("unknown name {}{meant}{known}", quoted_name(name)),
         ))
     }
 

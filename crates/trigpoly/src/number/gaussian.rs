@@ -6,6 +6,7 @@ use std::str::FromStr;
 
 use super::rational::{fold_traits, forward_binop};
 use super::{Integer, IntegerAcc, Rational};
+use crate::syntax::{ParseError, Span};
 
 /// A Gaussian integer `re + i·im`.
 #[derive(PartialEq, Eq, Hash, Default)]
@@ -243,10 +244,61 @@ impl fmt::Debug for GaussianRational {
     }
 }
 
-/// Why a Gaussian rational did not parse.
+/// Why a Gaussian rational did not parse: the text, and the expression syntax's error in it,
+/// with its place ([`ParseGaussianError::reason`], also its
+/// [`source`](std::error::Error::source)). What is neither a form `Display` writes nor a
+/// constant expression is refused with the reason the expression parser gives.
+///
+/// ```
+/// use trigpoly::GaussianRational;
+///
+/// let err = "1 + 2j".parse::<GaussianRational>().unwrap_err();
+/// assert_eq!(err.input(), "1 + 2j");
+/// assert_eq!(err.reason().span.start, 5);
+/// assert_eq!(
+///     err.to_string(),
+///     "not an exact Gaussian rational: \"1 + 2j\" (expected a form like 3/5 + 4/5*i): \
+///      unknown name 'j' (no names are declared) at column 6"
+/// );
+/// ```
 #[derive(Clone, Debug, PartialEq, Eq, thiserror::Error)]
-#[error("not an exact Gaussian rational: {0:?} (expected a form like 3/5 + 4/5*i)")]
-pub struct ParseGaussianError(pub String);
+#[error(
+    "not an exact Gaussian rational: {input:?} (expected a form like 3/5 + 4/5*i): {} at {}",
+    reason.message,
+    place(input, reason)
+)]
+pub struct ParseGaussianError {
+    /// The text that did not parse.
+    input: String,
+    /// The expression parser's error in it.
+    #[source]
+    reason: ParseError,
+}
+
+/// Where `reason` is in `input`: `column C`, or `line L, column C` in a text of several lines
+/// (columns in characters), or `the end` of the text.
+fn place(input: &str, reason: &ParseError) -> String {
+    if reason.span.start >= input.trim_end().len() {
+        return "the end".to_string();
+    }
+    match reason.line_col(input) {
+        (1, column) => format!("column {column}"),
+        (line, column) => format!("line {line}, column {column}"),
+    }
+}
+
+impl ParseGaussianError {
+    /// The text that did not parse.
+    pub fn input(&self) -> &str {
+        &self.input
+    }
+
+    /// Why: the expression parser's error, its span a byte range of [`ParseGaussianError::input`]
+    /// and its message without the place (`unknown name 'j'`, `division by zero`).
+    pub fn reason(&self) -> &ParseError {
+        &self.reason
+    }
+}
 
 impl FromStr for GaussianRational {
     type Err = ParseGaussianError;
@@ -254,22 +306,31 @@ impl FromStr for GaussianRational {
     /// integers or fractions), and any other constant expression of the expression syntax:
     /// `1 + i/2`, `i*2`, `(1 + 2i)/3`, `−1 − i`, `(1 + i)²`.
     fn from_str(s: &str) -> Result<Self, Self::Err> {
-        Self::from_plain_form(s).or_else(|e| constant_expression(s).ok_or(e))
+        match Self::from_plain_form(s) {
+            Some(z) => Ok(z),
+            None => constant_expression(s).map_err(|reason| ParseGaussianError {
+                input: s.to_string(),
+                reason,
+            }),
+        }
     }
 }
 
-/// The value of a constant expression (no variable) such as `(1 + 2i)/3`, if `s` is one.
-fn constant_expression(s: &str) -> Option<GaussianRational> {
-    let no_variables = crate::VarSet::builder().build().ok()?;
-    crate::Poly::<GaussianRational>::parse(&no_variables, s)
-        .ok()?
-        .as_constant()
+/// The value of a constant expression (no variable) such as `(1 + 2i)/3`, or why `s` is none:
+/// with no variables declared, a name is unknown, so an expression that parses is a constant.
+fn constant_expression(s: &str) -> Result<GaussianRational, ParseError> {
+    let no_variables = crate::VarSet::builder()
+        .build()
+        .map_err(|e| ParseError::new(Span::new(0, s.len()), e.to_string()))?;
+    let e = crate::Poly::<GaussianRational>::parse(&no_variables, s)?;
+    e.as_constant()
+        .ok_or_else(|| ParseError::new(Span::new(0, s.len()), "not a constant"))
 }
 
 impl GaussianRational {
-    /// The forms `Display` writes, read without the expression parser.
-    fn from_plain_form(s: &str) -> Result<Self, ParseGaussianError> {
-        let err = || ParseGaussianError(s.to_string());
+    /// The forms `Display` writes, read without the expression parser; `None` for any other
+    /// text.
+    fn from_plain_form(s: &str) -> Option<Self> {
         let t: String = s.chars().filter(|c| !c.is_whitespace()).collect();
         let imag = |p: &str| -> Option<Rational> {
             let body = p.strip_suffix('i')?;
@@ -281,10 +342,7 @@ impl GaussianRational {
             }
         };
         if !t.ends_with('i') {
-            return t
-                .parse::<Rational>()
-                .map(GaussianRational::from)
-                .map_err(|_| err());
+            return t.parse::<Rational>().ok().map(GaussianRational::from);
         }
         // Split at the last sign that is not the first character.
         let split = t
@@ -294,14 +352,13 @@ impl GaussianRational {
             .map(|(k, _)| k)
             .last();
         match split {
-            Some(k) => {
-                let re: Rational = t[..k].parse().map_err(|_| err())?;
-                let im = imag(&t[k..]).ok_or_else(err)?;
-                Ok(GaussianRational { re, im })
-            }
-            None => Ok(GaussianRational {
+            Some(k) => Some(GaussianRational {
+                re: t[..k].parse().ok()?,
+                im: imag(&t[k..])?,
+            }),
+            None => Some(GaussianRational {
                 re: Rational::zero(),
-                im: imag(&t).ok_or_else(err)?,
+                im: imag(&t)?,
             }),
         }
     }
@@ -441,12 +498,62 @@ mod tests {
         ] {
             assert_eq!(text.parse::<GaussianRational>(), Ok(value), "{text}");
         }
-        for bad in ["x", "1 +", "", "i^i", "1/0"] {
-            assert_eq!(
-                bad.parse::<GaussianRational>(),
-                Err(ParseGaussianError(bad.into())),
-                "{bad:?}"
+    }
+
+    /// A text that is no Gaussian rational is refused with the expression parser's reason and
+    /// its place, where the error held the text alone: `ParseGaussianError::reason` is the
+    /// error at its span, and `Display` says what and where.
+    #[test]
+    fn a_gaussian_rational_that_does_not_parse_says_why_and_where() {
+        let expected = "(expected a form like 3/5 + 4/5*i)";
+        for (bad, at, why, place) in [
+            (
+                "x",
+                0..1,
+                "unknown name 'x' (no names are declared)",
+                "column 1",
+            ),
+            (
+                "1 +",
+                3..3,
+                "expected an expression after '+', found end of input",
+                "the end",
+            ),
+            (
+                "",
+                0..0,
+                "expected an expression, found end of input",
+                "the end",
+            ),
+            (
+                "i^i",
+                2..3,
+                "exponents must be integer constants",
+                "column 3",
+            ),
+            ("1/0", 2..3, "division by zero", "column 3"),
+            (
+                "1 +\n  2j",
+                7..8,
+                "unknown name 'j' (no names are declared)",
+                "line 2, column 4",
+            ),
+            ("½", 0..2, "", "column 1"),
+        ] {
+            let err = bad.parse::<GaussianRational>().unwrap_err();
+            assert_eq!(err.input(), bad);
+            let reason = err.reason();
+            assert_eq!(reason.span.start..reason.span.end, at, "{bad:?}: {err}");
+            if !why.is_empty() {
+                assert_eq!(reason.message, why, "{bad:?}");
+            }
+            let shown = format!(
+                "not an exact Gaussian rational: {bad:?} {expected}: {} at {place}",
+                reason.message
             );
+            assert_eq!(err.to_string(), shown);
+            let source = std::error::Error::source(&err).map(|s| s.to_string());
+            assert_eq!(source, Some(reason.to_string()), "{bad:?}");
         }
     }
 }
