@@ -20,7 +20,7 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
     // The phase space checks the radical: its radicand is no square.
     let space = PhaseSpace::new(&vars, &[("x", "p_x"), ("y", "p_y")])?;
     let h = Expr::parse(&vars, "(p_x^2 + p_y^2)/(2*M) - k/r")?;
-    let mut kepler = System::new("planar Kepler", space, h);
+    let mut kepler = System::new("planar Kepler", space, h)?;
     kepler.define_parsed("L", "L", "x*p_y - y*p_x")?;
     kepler.define_parsed("Ax", "A_x", "p_y*L/M - k*x/r")?;
     kepler.define_parsed("Ay", "A_y", "-p_x*L/M - k*y/r")?;

@@ -24,7 +24,7 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
         &vars,
         "(p_x^2 + p_y^2)/2 + k^2*(x^2 + y^2)/2 + p_phi^2/(2*J)",
     )?;
-    let mut rotor = System::new("oscillating rotor", space, h);
+    let mut rotor = System::new("oscillating rotor", space, h)?;
     rotor.define_parsed("A", "A", "p_x + i*p_y + i*k*(x + i*y)")?;
     rotor.define_parsed("Omega", "Ω", "p_phi/J")?;
 

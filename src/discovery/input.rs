@@ -20,11 +20,11 @@ fn define_resonant(s: &mut System, z: &str, w: &str) -> Result<(), EngineError> 
     for m in 1..=3 {
         for n in 1..=3 {
             let k = s.resonant(z, m, n)?;
-            s.define(&format!("P{m}{n}"), &format!("P{m}{n}"), k.p);
-            s.define(&format!("Q{m}{n}"), &format!("Q{m}{n}"), k.q);
+            s.define(&format!("P{m}{n}"), &format!("P{m}{n}"), k.p)?;
+            s.define(&format!("Q{m}{n}"), &format!("Q{m}{n}"), k.q)?;
             let k = s.resonant(w, m, n)?;
-            s.define(&format!("R{m}{n}"), &format!("R{m}{n}"), k.p);
-            s.define(&format!("S{m}{n}"), &format!("S{m}{n}"), k.q);
+            s.define(&format!("R{m}{n}"), &format!("R{m}{n}"), k.p)?;
+            s.define(&format!("S{m}{n}"), &format!("S{m}{n}"), k.q)?;
         }
     }
     Ok(())

@@ -15,11 +15,11 @@ pub(crate) fn section() -> Result<Section, EngineError> {
     let k = rotor
         .parse("Ax^2*Aybar")?
         .checked_mul(&Expr::exp_i(rotor.vars(), theta, -1)?)?;
-    rotor.define("ReA", "Re(A_x⁵Ā_y³)", a.re()?);
-    rotor.define("ImA", "Im(A_x⁵Ā_y³)", a.im()?);
-    rotor.define("K", "K", k.clone());
-    rotor.define("ReK", "Re K", k.re()?);
-    rotor.define("ImK", "Im K", k.im()?);
+    rotor.define("ReA", "Re(A_x⁵Ā_y³)", a.re()?)?;
+    rotor.define("ImA", "Im(A_x⁵Ā_y³)", a.im()?)?;
+    rotor.define("K", "K", k.clone())?;
+    rotor.define("ReK", "Re K", k.re()?)?;
+    rotor.define("ImK", "Im K", k.im()?)?;
     let mut s = SectionBuilder::new(5, "Beyond the paper's examples", rotor);
     s.text(
         "The anisotropic oscillator `V = M(ω_x² x² + ω_y² y²)/2` with `ω_x : ω_y = 3 : 5` \

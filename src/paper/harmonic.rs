@@ -36,14 +36,14 @@ pub(crate) fn with_resonant(
         let r = system.resonant(ladder, m, n)?;
         let sub = format!("_{{{m},{n}}}");
         let tag = if prime.is_empty() { "" } else { "p" };
-        system.define(&format!("P{m}{n}{tag}"), &format!("P{prime}{sub}"), r.p);
-        system.define(&format!("Q{m}{n}{tag}"), &format!("Q{prime}{sub}"), r.q);
-        system.define(&format!("K{m}{n}{tag}"), &format!("K{prime}{sub}"), r.k);
+        system.define(&format!("P{m}{n}{tag}"), &format!("P{prime}{sub}"), r.p)?;
+        system.define(&format!("Q{m}{n}{tag}"), &format!("Q{prime}{sub}"), r.q)?;
+        system.define(&format!("K{m}{n}{tag}"), &format!("K{prime}{sub}"), r.k)?;
         system.define(
             &format!("Kbar{m}{n}{tag}"),
             &format!("K̄{prime}{sub}"),
             r.kbar,
-        );
+        )?;
     }
     Ok(system)
 }

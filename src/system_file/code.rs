@@ -67,7 +67,7 @@ impl LoadedSystem {
         let value = self
             .scope(self.families.len())
             .parse(&source, &Text::whole(&source))?;
-        self.system.define(name, display, value);
+        self.system.define(name, display, value)?;
         Ok(())
     }
 
@@ -112,7 +112,7 @@ impl LoadedSystem {
             );
             return Err(FileError::new(ErrorKind::Expression, &origin, message));
         }
-        self.system.define(name, display, value);
+        self.system.define(name, display, value)?;
         Ok(())
     }
 
@@ -135,7 +135,7 @@ impl LoadedSystem {
     ///     .build()?;
     /// let space = PhaseSpace::new(&vars, &[("x", "p_x"), ("y", "p_y")])?;
     /// let h = Expr::parse(&vars, "(p_x^2 + p_y^2)/2 + k^2*(x^2 + y^2)/2")?;
-    /// let mut oscillator = LoadedSystem::of_system(System::new("oscillator", space, h));
+    /// let mut oscillator = LoadedSystem::of_system(System::new("oscillator", space, h)?);
     /// oscillator.add_function("A", "A", "p_x + i*k*x")?;
     /// oscillator.add_function("B", "B", "p_y - i*k*y")?;
     /// // {A^a B^b, H} = i(a − b)k A^a B^b: conserved on the diagonal a = b.

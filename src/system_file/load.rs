@@ -978,13 +978,13 @@ impl<'a> Builder<'a> {
         let limits = self.limits(&model)?;
         let vars = self.variables(&model, limits)?;
         let space = self.phase_space(&model.phase_space, &vars)?;
-        let mut file = self.unfilled(&model, space, &vars, limits);
+        let mut file = self.unfilled(&model, space, &vars, limits)?;
         if let Some(poisson) = &model.poisson {
             let space = self.poisson(&file, poisson)?;
-            file.system = System::new(&file.name, space, Expr::zero(&vars));
+            file.system = System::new(&file.name, space, Expr::zero(&vars))?;
         }
         let h = self.hamiltonian(&file, &model)?;
-        file.system.define("H", "H", h);
+        file.system.define("H", "H", h)?;
         self.functions(&mut file, &model)?;
         self.families(&mut file, &model)?;
         claims(&mut file, &model)?;
@@ -1254,14 +1254,14 @@ impl<'a> Builder<'a> {
         space: PhaseSpace,
         vars: &Vars,
         limits: Limits,
-    ) -> LoadedSystem {
+    ) -> Result<LoadedSystem, FileError> {
         let name = self.system_name(model);
-        LoadedSystem {
+        Ok(LoadedSystem {
             source: self.source.clone(),
             name: name.clone(),
             citation: model.source.as_ref().map(|s| s.get_ref().clone()),
             description: model.description.as_ref().map(|s| s.get_ref().clone()),
-            system: System::new(&name, space, Expr::zero(vars)),
+            system: System::new(&name, space, Expr::zero(vars))?,
             families: Vec::new(),
             claims: Vec::new(),
             limits,
@@ -1272,7 +1272,7 @@ impl<'a> Builder<'a> {
                 .iter()
                 .map(|(name, radicand)| (name.get_ref().clone(), radicand.get_ref().clone()))
                 .collect(),
-        }
+        })
     }
 
     /// The system's name: the file's `name`, else the file's name without its extension
@@ -1348,7 +1348,7 @@ impl<'a> Builder<'a> {
             let whose = format!("the function {}", f.name.get_ref());
             let span = f.display.as_ref().unwrap_or(&f.name).span();
             self.check_shown_apart(&whose, f.name.get_ref(), display, span)?;
-            file.system.define(f.name.get_ref(), display, value);
+            file.system.define(f.name.get_ref(), display, value)?;
         }
         Ok(())
     }

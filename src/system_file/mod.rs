@@ -148,7 +148,7 @@ pub struct Family {
 /// let mut rotor = LoadedSystem::of_system(systems::harmonic_rotor());
 /// // A function defined behind the loader's back, unchecked: not possible.
 /// let x = rotor.parse("x")?;
-/// rotor.system.define("L", "L", x);
+/// rotor.system.define("L", "L", x)?;
 /// # Ok::<(), FileError>(())
 /// ```
 #[derive(Debug)]

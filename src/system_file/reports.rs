@@ -641,7 +641,7 @@ fn with_instances(
     for (name, v) in variables {
         let value = file.value(&file.argument(name)?)?;
         let display = system.vars().variable(v).unicode().to_string();
-        system.define(name, &display, value);
+        system.define(name, &display, value)?;
     }
     for (name, (k, m, n)) in instances {
         if system.get(name).is_ok() {
@@ -653,7 +653,7 @@ fn with_instances(
             .scope(file.families.len())
             .expand(k, m, n, &given, 0..name.len())?;
         let display = format!("{}_{{{m},{n}}}", file.families[k].display);
-        system.define(name, &display, value);
+        system.define(name, &display, value)?;
     }
     Ok(system)
 }

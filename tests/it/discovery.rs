@@ -3352,7 +3352,8 @@ fn calogero_new_integrals_include_the_sl2_casimir() {
     }
     let file = system_file("calogero.toml");
     let h = file.parse_argument("H").expect("parses");
-    let bare = brackets::System::new("Calogero–Moser, H alone", file.system().space().clone(), h);
+    let bare =
+        brackets::System::new("Calogero–Moser, H alone", file.system().space().clone(), h).unwrap();
     let new_ones = |system: &brackets::System, options: SearchOptions| {
         let found = search(system, &options.new_only()).expect("searches");
         let new = found.new.expect("asked for");
@@ -3587,7 +3588,8 @@ fn higgs_oscillator_claims_are_proved_and_its_false_neighbours_refuted() {
         "the Higgs oscillator without 1 + λr²",
         file.system().space().clone(),
         parse("(p_x^2 + p_y^2 + lambda*(x*p_x + y*p_y)^2)/2 + omega^2*(x^2 + y^2)/2"),
-    );
+    )
+    .unwrap();
     for t in ["T11", "T12", "T22"] {
         assert!(file.system().flow(&parse(t)).unwrap().is_zero(), "{t}");
         assert!(!flat_metric.flow(&parse(t)).unwrap().is_zero(), "{t}");

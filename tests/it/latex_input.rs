@@ -213,8 +213,10 @@ fn a_name_that_latex_spells_as_two_is_refused_naming_both() {
         .unwrap();
     let space = PhaseSpace::new(&vars, &[("x", "p_x")]).unwrap();
     let h = Expr::parse(&vars, "p_x^2/2 + omicron*x^2").unwrap();
-    let mut system = System::new("unchecked", space, h);
-    system.define("o", "o", Expr::parse(&vars, "x + 1").unwrap());
+    let mut system = System::new("unchecked", space, h).unwrap();
+    system
+        .define("o", "o", Expr::parse(&vars, "x + 1").unwrap())
+        .unwrap();
     let unchecked = LoadedSystem::of_system(system);
     let err = unchecked.parse_argument(r"\mathit{o} x").unwrap_err();
     assert!(

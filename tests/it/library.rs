@@ -24,7 +24,7 @@ fn own_rotor() -> LoadedSystem {
         "(p_x^2 + p_y^2)/2 + k^2*(x^2 + y^2)/2 + p_phi^2/(2*J)",
     )
     .unwrap();
-    let mut rotor = LoadedSystem::of_system(System::new("own rotor", space, h));
+    let mut rotor = LoadedSystem::of_system(System::new("own rotor", space, h).unwrap());
     rotor
         .add_function("A", "A", "p_x + i*p_y + i*k*(x + i*y)")
         .unwrap();
@@ -769,8 +769,8 @@ fn a_closure_of_functions_the_system_does_not_name() {
     let of = closure_of(&rotor, &generators, &options).unwrap();
     assert!(of.closes());
     let mut named = rotor.clone();
-    named.define("P", "P", z.p);
-    named.define("Q", "Q", z.q);
+    named.define("P", "P", z.p).unwrap();
+    named.define("Q", "Q", z.q).unwrap();
     let by_name = closure(&named, &["F2", "P", "Q"], &options).unwrap();
     for (a, b) in [(0, 1), (0, 2), (1, 2)] {
         assert_eq!(of.render_bracket(a, b), by_name.render_bracket(a, b));
@@ -976,12 +976,13 @@ fn a_programs_error_type_matches_on_kinds() {
         }
         let vars = builder.build().map_err(FileError::from)?;
         let space = PhaseSpace::new(&vars, &[("q", "p")]).map_err(FileError::from)?;
-        let blank = System::new("oscillator", space, Expr::zero(&vars));
+        let blank = System::new("oscillator", space, Expr::zero(&vars)).unwrap();
         let system = System::new(
             "oscillator",
             blank.space().clone(),
             blank.parse(h).map_err(FileError::from)?,
-        );
+        )
+        .unwrap();
         let flow = system
             .flow(&system.parse("q").map_err(FileError::from)?)
             .map_err(FileError::from)?;
@@ -1098,7 +1099,7 @@ fn report_errors_name_the_program_not_the_command_line() {
         .unwrap();
     let space = PhaseSpace::new(&vars, &[("q", "p")]).unwrap();
     let h = Expr::parse(&vars, "p^2/2").unwrap();
-    let bare = LoadedSystem::of_system(System::new("free particle", space, h));
+    let bare = LoadedSystem::of_system(System::new("free particle", space, h).unwrap());
     let err = table_report(&bare, &[] as &[&str]).unwrap_err();
     assert!(cli_words(&err).contains("table_report(&system"), "{err}");
     let towered = own_rotor_with_tower();
@@ -1214,7 +1215,7 @@ fn names_added_in_code_print_apart() {
         .unwrap();
     let space = PhaseSpace::new(&vars, &[("x", "p_x")]).unwrap();
     let h = Expr::parse(&vars, "p_x^2/2 + k^2*x^2/2").unwrap();
-    let mut oscillator = LoadedSystem::of_system(System::new("oscillator", space, h));
+    let mut oscillator = LoadedSystem::of_system(System::new("oscillator", space, h).unwrap());
     oscillator.add_function("kx", "kx", "k*x").unwrap();
     let report = expand_report(&oscillator, &["kx".to_string()], None).unwrap();
     let text = render(&report, Format::Text, &RenderOptions::reproducible());

@@ -172,7 +172,7 @@ fn library_api_refuses_what_is_not_a_poisson_structure() {
     // A spin coupled to a particle: canonical and declared brackets side by side.
     let spin = space().with_brackets(&so3).unwrap();
     let h = e("p_x^2/2 + g*x*S3");
-    let system = System::new("spin", spin.clone(), h.clone());
+    let system = System::new("spin", spin.clone(), h.clone()).unwrap();
     let parse = |s: &str| system.parse(s).unwrap();
     assert!(system.flow(&parse("S1^2 + S2^2 + S3^2")).unwrap().is_zero());
     assert!(system.flow(&parse("S3")).unwrap().is_zero());

@@ -1140,9 +1140,9 @@ mod tests {
             .unwrap();
         let space = crate::PhaseSpace::new(&vars, &[("x", "p_x"), ("y", "p_y")]).unwrap();
         let e = |s: &str| Expr::parse(&vars, s).unwrap();
-        let mut system = System::new("atoms", space, e("(p_x^2 + p_y^2)/2 + 1/(x - y)^2"));
+        let mut system = System::new("atoms", space, e("(p_x^2 + p_y^2)/2 + 1/(x - y)^2")).unwrap();
         for (name, value) in functions {
-            system.define(name, name, e(value));
+            system.define(name, name, e(value)).unwrap();
         }
         system
     }
@@ -1240,8 +1240,8 @@ mod tests {
     fn surface_constants_are_relations_of_their_own() {
         let mut rotor = systems::harmonic_rotor();
         let k = rotor.resonant("Z", 1, 1).unwrap();
-        rotor.define("P", "P", k.p);
-        rotor.define("Q", "Q", k.q);
+        rotor.define("P", "P", k.p).unwrap();
+        rotor.define("Q", "Q", k.q).unwrap();
         let options = ClosureOptions::new(2).when(rotor.resonance(1, 1).unwrap());
         let c = closure(&rotor, &["F1", "F2", "L", "P", "Q"], &options).unwrap();
         assert_eq!(c.render_bracket(3, 4), "−2Mω");

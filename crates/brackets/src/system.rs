@@ -1,7 +1,7 @@
 //! `System`: a phase space, a Hamiltonian and named functions, with a parser that knows the
 //! names and the bracket `{f, g}`.
 
-use trigpoly::{Context, Expr, GaussianRational, Var, Vars};
+use trigpoly::{AlgebraError, Context, Expr, GaussianRational, Var, Vars};
 
 use crate::claim::Condition;
 use crate::error::EngineError;
@@ -49,15 +49,20 @@ pub struct System {
 impl System {
     /// A system with Hamiltonian `h`, available under the name `H` (unless a variable is named
     /// `H`, which then wins in [`System::parse`]; system files reserve the name).
-    pub fn new(name: &str, space: PhaseSpace, h: Expr) -> Self {
+    ///
+    /// # Errors
+    ///
+    /// [`AlgebraError::VarSetMismatch`](trigpoly::AlgebraError::VarSetMismatch) if `h` is
+    /// not over the space's variables ([`System::define`]).
+    pub fn new(name: &str, space: PhaseSpace, h: Expr) -> Result<Self, EngineError> {
         let mut s = System {
             name: name.to_string(),
             space,
             functions: Vec::new(),
             dh: None,
         };
-        s.define("H", "H", h);
-        s
+        s.define("H", "H", h)?;
+        Ok(s)
     }
 
     /// The system's name.
@@ -83,7 +88,32 @@ impl System {
     /// Defines (or redefines) a named function. A variable of the same name (in any of its
     /// spellings) wins in [`System::parse`], so such a function could not be named there:
     /// [`System::define_parsed`] refuses the name.
-    pub fn define(&mut self, name: &str, display: &str, expr: Expr) {
+    ///
+    /// # Errors
+    ///
+    /// [`AlgebraError::VarSetMismatch`](trigpoly::AlgebraError::VarSetMismatch) if `expr` is
+    /// over other variables than the system's (another system's): its variables would be
+    /// read by their places in this system's, so it is refused here rather than in every
+    /// later use of its name.
+    ///
+    /// ```
+    /// use brackets::{systems, EngineError};
+    /// use trigpoly::{AlgebraError, Expr, VarSet};
+    ///
+    /// let mut rotor = systems::harmonic_rotor();
+    /// let own = rotor.parse("x*p_y - y*p_x")?;
+    /// rotor.define("Lz", "L_z", own)?;
+    /// let elsewhere = VarSet::builder().coordinate("x").momentum("p_x").build()?;
+    /// let foreign = Expr::parse(&elsewhere, "x*p_x")?;
+    /// let refused = rotor.define("D", "D", foreign).unwrap_err();
+    /// assert_eq!(refused, EngineError::Algebra(AlgebraError::VarSetMismatch));
+    /// assert!(rotor.get("D").is_err());
+    /// # Ok::<(), Box<dyn std::error::Error>>(())
+    /// ```
+    pub fn define(&mut self, name: &str, display: &str, expr: Expr) -> Result<(), EngineError> {
+        if expr.vars() != self.vars() {
+            return Err(AlgebraError::VarSetMismatch.into());
+        }
         let f = NamedFunction {
             name: name.into(),
             display: display.into(),
@@ -97,6 +127,7 @@ impl System {
             Some(g) => *g = f,
             None => self.functions.push(f),
         }
+        Ok(())
     }
 
     /// Defines a named function from text, which may use earlier names and brackets; the name
@@ -114,8 +145,7 @@ impl System {
             )));
         }
         let e = self.parse(src)?;
-        self.define(name, display, e);
-        Ok(())
+        self.define(name, display, e)
     }
 
     /// Certifies the rank of the Jacobian of the named functions (or family instances the
@@ -222,7 +252,7 @@ impl System {
     ///     .build()?;
     /// let space = PhaseSpace::new(&vars, &[("x", "p_x"), ("y", "p_y")])?;
     /// let h = Expr::parse(&vars, "(p_x^2 + p_y^2)/2 - k/r")?;
-    /// let kepler = System::new("Kepler", space, h);
+    /// let kepler = System::new("Kepler", space, h)?;
     /// let runge_lenz = Expr::parse(&vars, "p_y*(x*p_y - y*p_x) - k*x/r")?;
     /// assert!(!kepler.flow(&runge_lenz)?.is_zero()); // terms that cancel only by r² = x² + y²
     /// assert!(kepler.conserves(&runge_lenz)?);
@@ -295,6 +325,42 @@ mod tests {
             .define_parsed("X2", "X₂", "x^2")
             .expect("a fresh name");
         assert_eq!(rotor.parse("X2").unwrap(), rotor.parse("x^2").unwrap());
+    }
+
+    /// A function over another system's variables is refused where it is defined, and so is
+    /// a Hamiltonian over other variables than the phase space's: `parse("F")` returned it
+    /// over the other set, and `F + L` failed later as a parse error at column 1 of a text
+    /// that had none. The system is left as it was.
+    #[test]
+    fn a_function_over_another_systems_variables_is_refused() {
+        let mut rotor = harmonic_rotor();
+        let oscillator = crate::systems::rotor("x^2 + y^2", &[]).expect("a rotor");
+        // Of the same names, but another set: the rotor's declares omega and l.
+        assert_ne!(oscillator.vars(), rotor.vars());
+        let foreign = oscillator.parse("x*p_y").unwrap();
+        let mismatch = EngineError::Algebra(AlgebraError::VarSetMismatch);
+        assert_eq!(
+            rotor.define("F", "F", foreign.clone()),
+            Err(mismatch.clone())
+        );
+        assert_eq!(rotor.get("F"), Err(EngineError::UnknownName("F".into())));
+        let h = rotor.hamiltonian().clone();
+        assert_eq!(
+            rotor.define("H", "H", foreign.clone()),
+            Err(mismatch.clone())
+        );
+        assert_eq!(rotor.hamiltonian(), &h);
+        let space = rotor.space().clone();
+        assert_eq!(
+            System::new("mixed", space.clone(), foreign).unwrap_err(),
+            mismatch
+        );
+        // Its own expressions are taken, by define and by new.
+        rotor
+            .define("F", "F", rotor.parse("x*p_y").unwrap())
+            .unwrap();
+        assert_eq!(rotor.parse("F - x*p_y").unwrap(), Expr::zero(rotor.vars()));
+        assert!(System::new("same", space, h).is_ok());
     }
 
     /// `?` turns a parse error into an `EngineError` that says where: by line, column and

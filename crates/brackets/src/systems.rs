@@ -42,7 +42,7 @@ fn build(
     let vars = rotor_vars_with(params, limits)?;
     let space = PhaseSpace::new(&vars, &[("x", "p_x"), ("y", "p_y"), ("theta", "p_theta")])?;
     let h = Expr::parse(&vars, h).map_err(|e| EngineError::parse(h, e))?;
-    let mut s = System::new(name, space, h);
+    let mut s = System::new(name, space, h)?;
     for (n, display, src) in functions {
         s.define_parsed(n, display, src)?;
     }
@@ -59,8 +59,8 @@ pub fn rotor(potential: &str, extra_parameters: &[&str]) -> Result<System, Engin
     let v = Expr::parse(&vars, potential).map_err(|e| EngineError::parse(potential, e))?;
     let kinetic = Expr::parse(&vars, "(p_x^2 + p_y^2)/(2*M) + p_theta^2/(2*I)")
         .expect("kinetic energy parses");
-    let mut s = System::new("rotor", space, &kinetic + &v);
-    s.define("V", "V", v);
+    let mut s = System::new("rotor", space, &kinetic + &v)?;
+    s.define("V", "V", v)?;
     Ok(s)
 }
 

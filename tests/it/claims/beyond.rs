@@ -29,13 +29,15 @@ fn define_with_parts(sys: &mut System, name: &str, src: &str) {
         &format!("{name}_re"),
         &format!("Re {name}"),
         f.re().unwrap(),
-    );
+    )
+    .unwrap();
     sys.define(
         &format!("{name}_im"),
         &format!("Im {name}"),
         f.im().unwrap(),
-    );
-    sys.define(name, name, f);
+    )
+    .unwrap();
+    sys.define(name, name, f).unwrap();
 }
 
 #[test]

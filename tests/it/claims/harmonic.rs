@@ -32,7 +32,7 @@ fn c05_equations_of_motion() {
     let field = sys.space().hamilton_equations(sys.hamiltonian()).unwrap();
     let theta = sys.var("theta");
     let thetadot = field.into_iter().find(|(v, _)| *v == theta).unwrap().1;
-    sys.define("thetadot", "θ̇", thetadot);
+    sys.define("thetadot", "θ̇", thetadot).unwrap();
     identity!(sys, "thetadot = Omega");
     identity!(sys, "{thetadot, H} = 0");
     // False neighbours: the wrong sign (an inverted oscillator), a wrong frequency.
@@ -74,7 +74,7 @@ impl Trajectory {
             PhaseSpace::new(&vars, &[("x", "p_x"), ("y", "p_y"), ("theta", "p_theta")]).unwrap();
         let h = "(p_x^2 + p_y^2)/(2*M) + M*omega^2*(x^2 + y^2)/2 + p_theta^2/(2*I)";
         let h = Expr::parse(&vars, h).unwrap();
-        let sys = System::new("harmonic rotor in time", space, h);
+        let sys = System::new("harmonic rotor in time", space, h).unwrap();
         let (phi, t) = (sys.var("phi"), sys.var("t"));
         Trajectory { sys, phi, t }
     }
@@ -90,11 +90,13 @@ impl Trajectory {
         let f = self.sys.parse(src).unwrap();
         let fdot = self.dt(&f);
         let fddot = self.dt(&fdot);
-        self.sys.define(name, name, f);
+        self.sys.define(name, name, f).unwrap();
         self.sys
-            .define(&format!("{name}_dot"), &format!("d/dt {name}"), fdot);
+            .define(&format!("{name}_dot"), &format!("d/dt {name}"), fdot)
+            .unwrap();
         self.sys
-            .define(&format!("{name}_ddot"), &format!("d²/dt² {name}"), fddot);
+            .define(&format!("{name}_ddot"), &format!("d²/dt² {name}"), fddot)
+            .unwrap();
     }
 
     /// The condition `t = 0`, i.e. `φ = 0` (`e^{iφ} = 1`) and `t = 0`.
@@ -137,7 +139,7 @@ fn c06_closed_form_solution() {
     for (v, rate) in field {
         let name = format!("{}_rate", sys.vars().variable(v).name());
         let rate = rate.subst_many(&path).unwrap();
-        sys.define(&name, &name, rate);
+        sys.define(&name, &name, rate).unwrap();
     }
     identity!(sys, "x_t_dot = x_rate");
     identity!(sys, "y_t_dot = y_rate");
@@ -294,7 +296,7 @@ fn c15_p_q_real() {
         assert_eq!(p.conj(), p);
         assert_eq!(q.conj(), q);
         assert!(!sys.get("K").unwrap().is_real(), "K is complex");
-        sys.define("conjP", "conj P", p.conj());
+        sys.define("conjP", "conj P", p.conj()).unwrap();
         identity!(sys, "conjP = P");
         identity!(sys, "K = P + i*Q");
         // False neighbour: K is not real; K − K̄ = 2iQ.

@@ -48,7 +48,7 @@ fn c01_hamilton_equations_general_potential() {
     assert_eq!(field.len(), 6);
     for (v, rate) in field {
         let name = format!("{}dot", sys.vars().variable(v).name());
-        sys.define(&name, &name, rate);
+        sys.define(&name, &name, rate).unwrap();
     }
     identity!(sys, "xdot = p_x/M");
     identity!(sys, "ydot = p_y/M");

@@ -79,7 +79,7 @@
 //! let e = |s: &str| Expr::parse(&vars, s).unwrap();
 //! let space = PhaseSpace::new(&vars, &[])?
 //!     .with_brackets(&[("M1", "M2", e("M3")), ("M2", "M3", e("M1")), ("M3", "M1", e("M2"))])?;
-//! let top = System::new("Euler top", space, e("M1^2/(2*I1) + M2^2/(2*I2) + M3^2/(2*I3)"));
+//! let top = System::new("Euler top", space, e("M1^2/(2*I1) + M2^2/(2*I2) + M3^2/(2*I3)"))?;
 //! // At I = (1, 2, 3): 1, then two quadratic integrals (|M|² and H, combined).
 //! let mut options = SearchOptions::new(SearchSpace::new(0, 0, 0).poisson_degree(2));
 //! for (i, name) in ["I1", "I2", "I3"].into_iter().enumerate() {
@@ -169,7 +169,7 @@ use proof::{flow_vanishes, lead, primitive_vector};
 ///     .build()?;
 /// let space = PhaseSpace::new(&vars, &[("x", "p_x"), ("y", "p_y")])?;
 /// let h = Expr::parse(&vars, "(p_x^2 + p_y^2)/2 + (x^2 + a^2*y^2)/2")?;
-/// let oscillator = System::new("oscillator", space, h);
+/// let oscillator = System::new("oscillator", space, h)?;
 /// let at_one = search(&oscillator, &SearchOptions::new(SearchSpace::new(2, 2, 0)))?;
 /// assert_eq!(at_one.basis.len(), 6);
 /// assert_eq!(at_one.basis[1].expr().to_string(), "x p_y − y p_x");

@@ -539,7 +539,7 @@ fn declared_brackets_with_canonical_variables_enter_the_images() {
         .unwrap()
         .with_brackets(&[("p_x", "s", e("1"))])
         .unwrap();
-    let slide = System::new("slide", space, e("p_x^2/2 + s"));
+    let slide = System::new("slide", space, e("p_x^2/2 + s")).unwrap();
     let options = SearchOptions::new(SearchSpace::new(2, 2, 0).poisson_degree(2)).new_only();
     let found = search(&slide, &options).unwrap();
     assert!(found.all_symbolic() && found.basis.iter().all(|f| f.proved_fixed));
@@ -597,7 +597,7 @@ fn a_poisson_variable_the_condition_fixes_is_left_out() {
             ("M3", "M1", e("M2")),
         ])
         .unwrap();
-    let top = System::new("top", space, e("(M1^2 + M2^2)/(2*A) + M3^2/(2*C)"));
+    let top = System::new("top", space, e("(M1^2 + M2^2)/(2*A) + M3^2/(2*C)")).unwrap();
     let m3 = Condition::new("M3 = 1", top.var("M3"), e("1"));
     let options = SearchOptions::new(SearchSpace::new(0, 0, 0).poisson_degree(2))
         .fix(top.var("A"), Rational::from(2))
@@ -703,7 +703,7 @@ fn the_counts_by_poisson_degree_are_dimensions_where_the_space_has_momenta() {
             ("a2", "p_q3", e("-a2")),
         ])
         .unwrap();
-    let toda = System::new("Toda", space, e("(p_q1^2 + p_q2^2 + p_q3^2)/2 + a1 + a2"));
+    let toda = System::new("Toda", space, e("(p_q1^2 + p_q2^2 + p_q3^2)/2 + a1 + a2")).unwrap();
     let found = search(
         &toda,
         &SearchOptions::new(SearchSpace::new(3, 0, 0).poisson_degree(1)),
@@ -738,7 +738,7 @@ fn a_parameter_of_a_declared_bracket_is_fixed_for_the_search() {
             ("M3", "M1", e("M2")),
         ])
         .unwrap();
-    let top = System::new("top", space, e("M1^2/2 + M2^2 + 3*M3^2/2"));
+    let top = System::new("top", space, e("M1^2/2 + M2^2 + 3*M3^2/2")).unwrap();
     let k = top.var("k");
     let options = SearchOptions::new(SearchSpace::new(0, 0, 0).poisson_degree(2));
     let found = search(&top, &options).unwrap();
