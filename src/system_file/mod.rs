@@ -151,7 +151,6 @@ pub struct Family {
 /// rotor.system.define("L", "L", x)?;
 /// # Ok::<(), FileError>(())
 /// ```
-#[derive(Debug)]
 pub struct LoadedSystem {
     /// The file's text and path as given.
     source: Source,
@@ -179,6 +178,37 @@ pub struct LoadedSystem {
     /// The readings in doubt of the texts read so far ([`LoadedSystem::warnings`]), each place
     /// once.
     warnings: Mutex<Vec<Warning>>,
+}
+
+/// The system, its source's origin and length, its families and claims by name and id, its
+/// limits and caller: a file of a few kilobytes printed its text once and again in each claim
+/// (443 KB for `systems/harmonic-rotor.toml`), and its cache of expanded instances.
+///
+/// ```
+/// use superint::prelude::*;
+///
+/// let rotor = load_system_file("systems/harmonic-rotor.toml", &LimitsOverride::default())?;
+/// let debug = format!("{rotor:?}");
+/// let source = r#"source: Source { origin: "systems/harmonic-rotor.toml", text: <7166 bytes>"#;
+/// assert!(debug.starts_with(&format!(r#"LoadedSystem {{ name: "harmonic rotor", {source}"#)));
+/// assert!(debug.contains(r#"families: ["K", "Kbar", "P", "Q"], claims: ["C04", "C05""#));
+/// assert!(debug.len() < 20_000, "{} bytes", debug.len());
+/// # Ok::<(), FileError>(())
+/// ```
+impl std::fmt::Debug for LoadedSystem {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        let families: Vec<&str> = self.families.iter().map(|k| k.name.as_str()).collect();
+        let claims: Vec<&str> = self.claims.iter().map(|c| c.id.as_str()).collect();
+        f.debug_struct("LoadedSystem")
+            .field("name", &self.name)
+            .field("source", &self.source)
+            .field("system", &self.system)
+            .field("families", &families)
+            .field("claims", &claims)
+            .field("limits", &self.limits)
+            .field("caller", &self.caller)
+            .finish_non_exhaustive()
+    }
 }
 
 /// Who gives the texts that the reports of a [`LoadedSystem`] read (the expressions of

@@ -14,8 +14,9 @@ use trigpoly::Span;
 use super::error::{ErrorKind, FileError};
 
 /// The source an expression comes from: a file's text, a text a program gave, or the command
-/// line.
-#[derive(Clone, Debug)]
+/// line. Its `Debug` gives the text's length, not the text, which every claim and family of a
+/// file shares.
+#[derive(Clone)]
 pub struct Source {
     /// The file's path as given, or the name of the text (`<expression>`, `<command line>`).
     pub origin: String,
@@ -24,6 +25,18 @@ pub struct Source {
     /// Whether a program gave the text (a function added in code, say): hints then name the
     /// library's calls, not a file's tables.
     pub(crate) program: bool,
+}
+
+/// `Source { origin: "systems/kepler.toml", text: <4211 bytes>, program: false }`: a file's
+/// text, shared by each of its claims and families, is printed by none of them.
+impl std::fmt::Debug for Source {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.debug_struct("Source")
+            .field("origin", &self.origin)
+            .field("text", &format_args!("<{} bytes>", self.text.len()))
+            .field("program", &self.program)
+            .finish()
+    }
 }
 
 impl Source {
