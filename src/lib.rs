@@ -31,7 +31,7 @@
 //! assert_eq!(table.entries[2][1].render(Style::Unicode), "ω² L");
 //! # Ok::<(), EngineError>(())
 //! ```
-#![deny(missing_docs)]
+#![deny(missing_docs, missing_debug_implementations)]
 
 pub use brackets;
 /// The JSON crate of [`render::json::value`], re-exported so that a program names

@@ -18,7 +18,7 @@
 //! assert!(claim.check()?.outcome.is_proved());
 //! # Ok::<(), brackets::EngineError>(())
 //! ```
-#![deny(missing_docs)]
+#![deny(missing_docs, missing_debug_implementations)]
 
 mod claim;
 mod clearing;

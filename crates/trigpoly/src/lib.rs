@@ -40,7 +40,7 @@
 //! assert_eq!(p("p_x²/(2M) − Mω²x")?, p("-omega^2*M*x + p_x^2/(2*M)")?);
 //! # Ok::<(), Box<dyn std::error::Error>>(())
 //! ```
-#![deny(missing_docs)]
+#![deny(missing_docs, missing_debug_implementations)]
 
 mod error;
 mod lower;

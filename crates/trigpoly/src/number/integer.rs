@@ -918,6 +918,18 @@ mod tests {
         v
     }
 
+    /// `Release`, which the public trait `IntegerRing` names, has a `Debug` as every public
+    /// type does (`missing_debug_implementations` is denied): its current run, none before a
+    /// value in a slot is taken, and none after a word or a boxed value.
+    #[test]
+    fn a_release_shows_its_run() {
+        let mut release = Release::default();
+        assert_eq!(format!("{release:?}"), "Release { block: None, count: 0 }");
+        release.take(Integer::from(7));
+        release.take(Integer::from(BigInt::from(3u32).pow(100u32)));
+        assert_eq!(format!("{release:?}"), "Release { block: None, count: 0 }");
+    }
+
     #[test]
     fn an_integer_is_one_word() {
         assert_eq!(std::mem::size_of::<Integer>(), 8);

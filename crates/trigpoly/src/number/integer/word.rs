@@ -390,7 +390,7 @@ impl Drop for WideSlab {
 /// Drops integers, giving back the counts of the values in slots block by block: one
 /// atomic operation for each run of values of one block, where a drop each takes one per
 /// value. The counts of the last run are given back when it is dropped.
-#[derive(Default)]
+#[derive(Debug, Default)]
 pub struct Release {
     /// The block of the current run, if any.
     block: Option<NonNull<Header>>,
