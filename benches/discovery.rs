@@ -39,9 +39,14 @@ fn calogero() -> System {
 fn search_harmonic_new_only(bencher: Bencher, d: u32) {
     let rotor = systems::harmonic_rotor();
     let resonance = rotor.resonance(1, 1).expect("a resonance");
-    let options = SearchOptions::new(SearchSpace::new(d, d, d))
-        .when(resonance)
-        .new_only();
+    let options = SearchOptions::new(
+        SearchSpace::default()
+            .momenta_degree(d)
+            .positions_degree(d)
+            .trig_degree(d),
+    )
+    .when(resonance)
+    .new_only();
     let (report, found) = search_report("harmonic rotor", &rotor, &options).expect("searches");
     assert!(report.all_proved());
     assert_eq!(found.new.map(|n| n.new.len()), Some(4));
@@ -54,7 +59,12 @@ fn search_harmonic_new_only(bencher: Bencher, d: u32) {
 #[divan::bench(args = [4, 6], sample_count = 5)]
 fn search_calogero_denominators(bencher: Bencher, d: u32) {
     let system = calogero();
-    let options = SearchOptions::new(SearchSpace::new(2, 2, 0).denominators_degree(d));
+    let options = SearchOptions::new(
+        SearchSpace::default()
+            .momenta_degree(2)
+            .positions_degree(2)
+            .denominators_degree(d),
+    );
     let (report, found) = search_report("Calogero–Moser", &system, &options).expect("searches");
     assert!(report.all_proved());
     assert_eq!(found.basis.len(), 7);

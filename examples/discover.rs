@@ -12,7 +12,13 @@ fn main() -> Result<(), EngineError> {
     let resonance = rotor.resonance(1, 1)?;
 
     // Every integral of degree ≤ 2 in the momenta and positions, with cos θ, sin θ.
-    let options = SearchOptions::new(SearchSpace::new(2, 2, 1)).when(resonance.clone());
+    let options = SearchOptions::new(
+        SearchSpace::default()
+            .momenta_degree(2)
+            .positions_degree(2)
+            .trig_degree(1),
+    )
+    .when(resonance.clone());
     let (report, found) = search_report("the harmonic rotor", &rotor, &options)?;
     println!(
         "search: {} integrals in a space of {} unknowns, all proved: {}",

@@ -49,7 +49,12 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
 
     // Every integral of degree ≤ 2 in the momenta, ≤ 1 in x, y and ≤ 1 in r (1/r, x/r, …):
     // 1, L, H and the two components of M·A, each proved.
-    let options = SearchOptions::new(SearchSpace::new(2, 1, 0).radicals_degree(1));
+    let options = SearchOptions::new(
+        SearchSpace::default()
+            .momenta_degree(2)
+            .positions_degree(1)
+            .radicals_degree(1),
+    );
     let found = search(&kepler, &options)?;
     println!(
         "search: {} integrals among {} unknowns",

@@ -454,14 +454,13 @@ fn search_and_print(job: &SearchJob) -> anyhow::Result<bool> {
     let a = &job.args;
     let subject = Subject::open(a.file.as_ref(), a.system.as_deref(), false, &a.limits)?;
     a.refuse_degrees_without_variables(&subject)?;
-    let mut space = SearchSpace::new(
-        a.momenta_degree.unwrap_or(DEFAULT_DEGREE),
-        a.positions_degree.unwrap_or(DEFAULT_DEGREE),
-        a.trig_degree.unwrap_or(DEFAULT_DEGREE),
-    )
-    .poisson_degree(a.poisson_degree.unwrap_or(DEFAULT_DEGREE))
-    .denominators_degree(a.denominators_degree.unwrap_or(DEFAULT_DEGREE))
-    .radicals_degree(a.radicals_degree.unwrap_or(DEFAULT_RADICALS_DEGREE));
+    let mut space = SearchSpace::default()
+        .momenta_degree(a.momenta_degree.unwrap_or(DEFAULT_DEGREE))
+        .positions_degree(a.positions_degree.unwrap_or(DEFAULT_DEGREE))
+        .trig_degree(a.trig_degree.unwrap_or(DEFAULT_DEGREE))
+        .poisson_degree(a.poisson_degree.unwrap_or(DEFAULT_DEGREE))
+        .denominators_degree(a.denominators_degree.unwrap_or(DEFAULT_DEGREE))
+        .radicals_degree(a.radicals_degree.unwrap_or(DEFAULT_RADICALS_DEGREE));
     if a.laurent {
         space = space.laurent();
     }

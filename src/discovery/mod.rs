@@ -9,7 +9,7 @@
 //! use superint::discovery::search_report;
 //!
 //! let rotor = systems::harmonic_rotor();
-//! let options = SearchOptions::new(SearchSpace::new(1, 1, 1)).when(rotor.resonance(1, 1)?);
+//! let options = SearchOptions::new(SearchSpace::default().momenta_degree(1).positions_degree(1).trig_degree(1)).when(rotor.resonance(1, 1)?);
 //! let (report, found) = search_report("the harmonic rotor", &rotor, &options)?;
 //! assert_eq!(found.basis.len(), 6);
 //! assert!(report.all_proved());

@@ -525,7 +525,7 @@ pub fn search_report(
 /// use superint::system_file::Caller;
 ///
 /// let rotor = systems::harmonic_rotor();
-/// let options = SearchOptions::new(SearchSpace::new(1, 1, 1));
+/// let options = SearchOptions::new(SearchSpace::default().momenta_degree(1).positions_degree(1).trig_degree(1));
 /// let (report, _) = search_report_for("the harmonic rotor", &rotor, &options, Caller::CommandLine)?;
 /// assert_eq!(report.caller, Caller::CommandLine);
 /// # Ok::<(), superint::brackets::EngineError>(())
@@ -554,7 +554,7 @@ pub fn search_report_for(
 /// use superint::system_file::{load, Caller, LimitsOverride};
 ///
 /// let fd = load("systems/fock-darwin.toml", &LimitsOverride::default())?;
-/// let mut options = SearchOptions::new(SearchSpace::new(3, 3, 0).parameters_degree(6));
+/// let mut options = SearchOptions::new(SearchSpace::default().momenta_degree(3).positions_degree(3).parameters_degree(6));
 /// options.condition = Some(fd.condition("a = 2*b")?);
 /// options.symbolic = ["M", "b"].map(|p| fd.system().vars().lookup(p).unwrap()).to_vec();
 /// options.new_only = true;

@@ -1106,10 +1106,15 @@ fn henon_heiles_kdv_integral_for_every_a_and_b() {
     // The generator is the file's K, whose claim holds at C = 2 and is refuted elsewhere.
     let file = system_file("henon-heiles.toml");
     let var = |name: &str| file.system().vars().lookup(name).expect("a parameter");
-    let options = SearchOptions::new(SearchSpace::new(2, 4, 0).parameters_degree(2))
-        .fix(var("C"), Rational::from(2))
-        .symbolic(var("A"))
-        .symbolic(var("B"));
+    let options = SearchOptions::new(
+        SearchSpace::default()
+            .momenta_degree(2)
+            .positions_degree(4)
+            .parameters_degree(2),
+    )
+    .fix(var("C"), Rational::from(2))
+    .symbolic(var("A"))
+    .symbolic(var("B"));
     let r = search(file.system(), &options).expect("the search runs");
     let generators: Vec<&Expr> = r
         .module
@@ -1311,7 +1316,10 @@ fn a_parameter_set_by_the_condition_is_not_fixed_first() {
     let file = system_file("henon-heiles.toml");
     let vars = file.system().vars();
     let var = |name: &str| vars.lookup(name).expect("a parameter");
-    let space = SearchSpace::new(2, 4, 0).parameters_degree(2);
+    let space = SearchSpace::default()
+        .momenta_degree(2)
+        .positions_degree(4)
+        .parameters_degree(2);
     let symbolic = SearchOptions::new(space)
         .symbolic(var("A"))
         .symbolic(var("B"));
@@ -2481,7 +2489,10 @@ fn is_new(file: &superint::system_file::LoadedSystem, found: &[(Expr, bool)], f:
 fn functions_of_the_angles_alone_generate_by_their_trigonometric_order() {
     let path = two_rotors();
     let file = loaded(&path);
-    let found = new_or_generated(&file, SearchSpace::new(2, 0, 4));
+    let found = new_or_generated(
+        &file,
+        SearchSpace::default().momenta_degree(2).trig_degree(4),
+    );
     assert_eq!(found.len(), 30);
     for f in ["cos(a - b)", "sin(a - b)", "p_a", "p_b"] {
         assert!(is_new(&file, &found, f), "{f} is new");
@@ -2549,7 +2560,10 @@ fn shifted_oscillator_new(
     exact: bool,
 ) -> Vec<(Expr, bool)> {
     let var = |name: &str| file.system().vars().lookup(name).expect("a parameter");
-    let space = SearchSpace::new(2, 2, 0).parameters_degree(parameters_degree);
+    let space = SearchSpace::default()
+        .momenta_degree(2)
+        .positions_degree(2)
+        .parameters_degree(parameters_degree);
     let mut options = SearchOptions::new(space)
         .symbolic(var("omega"))
         .symbolic(var("g"))
@@ -2695,7 +2709,10 @@ fn gravity_rotor_integrals_divided_by_omega_squared_are_generated() {
 #[test]
 fn an_integral_that_is_a_product_of_higher_grades_only_is_new() {
     let file = loaded(&two_rotors());
-    let found = new_or_generated(&file, SearchSpace::new(2, 0, 4));
+    let found = new_or_generated(
+        &file,
+        SearchSpace::default().momenta_degree(2).trig_degree(4),
+    );
     let parse = |s: &str| file.parse_argument(s).expect("parses");
     for (f, product) in [
         (
@@ -2730,7 +2747,10 @@ fn functions_of_the_angles_alone_generate_beside_an_angle_dependent_hamiltonian(
         "p_psi^2/2 + cos(psi)",
         "psi, phi",
     ));
-    let found = new_or_generated(&file, SearchSpace::new(2, 0, 2));
+    let found = new_or_generated(
+        &file,
+        SearchSpace::default().momenta_degree(2).trig_degree(2),
+    );
     assert_eq!(found.len(), 18);
     for f in ["cos(phi)", "sin(phi)", "p_phi"] {
         assert!(is_new(&file, &found, f), "{f} is new");
@@ -3302,7 +3322,10 @@ fn calogero_search_finds_wojciechowski_integrals() {
         assert!(flat.contains(line), "{line}: {out}");
     }
     let file = system_file("calogero.toml");
-    let space = SearchSpace::new(3, 1, 0).denominators_degree(2);
+    let space = SearchSpace::default()
+        .momenta_degree(3)
+        .positions_degree(1)
+        .denominators_degree(2);
     let found = search(file.system(), &SearchOptions::new(space)).expect("searches");
     assert!(found.all_symbolic());
     let basis: Vec<(brackets::FunctionName, Expr)> = found
@@ -3324,7 +3347,12 @@ fn calogero_search_finds_wojciechowski_integrals() {
         assert_eq!(written.is_some(), expected, "{name}");
     }
     // Higher powers of the denominators add monomials, but no function that is zero.
-    let wider = SearchOptions::new(SearchSpace::new(3, 1, 0).denominators_degree(4));
+    let wider = SearchOptions::new(
+        SearchSpace::default()
+            .momenta_degree(3)
+            .positions_degree(1)
+            .denominators_degree(4),
+    );
     let more = search(file.system(), &wider).expect("searches");
     assert!(more.unknowns > found.unknowns);
     assert_eq!(more.basis.len(), 10);
@@ -3359,7 +3387,14 @@ fn calogero_new_integrals_include_the_sl2_casimir() {
         let new = found.new.expect("asked for");
         (new.known, new.new.len())
     };
-    let small = || SearchOptions::new(SearchSpace::new(3, 1, 0).denominators_degree(2));
+    let small = || {
+        SearchOptions::new(
+            SearchSpace::default()
+                .momenta_degree(3)
+                .positions_degree(1)
+                .denominators_degree(2),
+        )
+    };
     assert_eq!(new_ones(&bare, small()), (vec!["H".to_string()], 4));
     assert_eq!(new_ones(file.system(), small()).1, 0);
     let p_apart = file
@@ -3372,7 +3407,12 @@ fn calogero_new_integrals_include_the_sl2_casimir() {
         .parse_argument("2*H*(x^2 + y^2 + z^2) - (x*p_x + y*p_y + z*p_z)^2")
         .expect("parses");
     assert!(file.system().flow(&casimir).unwrap().vanishes().unwrap());
-    let large = SearchOptions::new(SearchSpace::new(4, 2, 0).denominators_degree(2));
+    let large = SearchOptions::new(
+        SearchSpace::default()
+            .momenta_degree(4)
+            .positions_degree(2)
+            .denominators_degree(2),
+    );
     assert_eq!(new_ones(file.system(), large.known("C", casimir)).1, 2);
 }
 
@@ -3988,7 +4028,7 @@ fn a_programs_search_report_names_the_librarys_options() {
         &LimitsOverride::default(),
     )
     .expect("the file loads");
-    let options = SearchOptions::new(SearchSpace::new(2, 4, 0));
+    let options = SearchOptions::new(SearchSpace::default().momenta_degree(2).positions_degree(4));
     let (report, _) = search_report("Garnier", garnier.system(), &options).expect("searches");
     let text = text_of(&report);
     assert!(
@@ -4028,7 +4068,12 @@ fn a_programs_search_report_names_the_librarys_options() {
     )
     .expect("the file loads");
     let system = oscillator.system();
-    let mut options = SearchOptions::new(SearchSpace::new(2, 2, 0).parameters_degree(1));
+    let mut options = SearchOptions::new(
+        SearchSpace::default()
+            .momenta_degree(2)
+            .positions_degree(2)
+            .parameters_degree(1),
+    );
     options.symbolic = parse_symbolic(system, "a,b").expect("parameters");
     let (report, _) = search_report("the oscillator", system, &options).expect("searches");
     let text = text_of(&report);

@@ -264,7 +264,13 @@ fn a_loaded_file_extended_in_code() {
 fn a_found_integral_becomes_a_function_of_the_file() {
     let mut rotor = harmonic_rotor_file();
     let resonance = rotor.condition("p_theta = I*omega").unwrap();
-    let options = SearchOptions::new(SearchSpace::new(1, 1, 1)).when(resonance);
+    let options = SearchOptions::new(
+        SearchSpace::default()
+            .momenta_degree(1)
+            .positions_degree(1)
+            .trig_degree(1),
+    )
+    .when(resonance);
     let (searched, found) = file_search_report(&rotor, &options, Caller::Program).unwrap();
     assert!(searched.all_proved());
     let integrals: Vec<Expr> = found
@@ -745,7 +751,8 @@ fn a_condition_of_another_system_is_refused() {
     let claim = Claim::new("c", "x = x", x.clone(), x.clone()).when(at_g.clone());
     assert!(mismatch(claim.check()));
     assert!(mismatch(rotor.flow_when(&x, &at_g)));
-    let options = SearchOptions::new(SearchSpace::new(1, 1, 0)).when(at_g.clone());
+    let options = SearchOptions::new(SearchSpace::default().momenta_degree(1).positions_degree(1))
+        .when(at_g.clone());
     assert!(mismatch(search(&rotor, &options)));
     let options = ClosureOptions::new(1).when(at_g);
     assert!(mismatch(closure(&rotor, &["L"], &options)));
@@ -790,7 +797,10 @@ fn integrals_and_rank_certificates_compare() {
     let rotor = systems::harmonic_rotor();
     let resonance = rotor.resonance(1, 1).unwrap();
     let found = |degree| {
-        let space = SearchSpace::new(degree, degree, 1);
+        let space = SearchSpace::default()
+            .momenta_degree(degree)
+            .positions_degree(degree)
+            .trig_degree(1);
         search(&rotor, &SearchOptions::new(space).when(resonance.clone()))
             .unwrap()
             .basis

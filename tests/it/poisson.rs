@@ -457,7 +457,7 @@ fn search_poisson(
     when: Option<&str>,
 ) -> SearchResult {
     let sys = file.system();
-    let mut options = SearchOptions::new(SearchSpace::new(0, 0, 0).poisson_degree(degree));
+    let mut options = SearchOptions::new(SearchSpace::default().poisson_degree(degree));
     for &(name, num, den) in values {
         options = options.fix(sys.var(name), Rational::new(num, den));
     }
@@ -520,7 +520,7 @@ fn euler_top_search_finds_the_casimir_and_the_energy() {
     // them, 1, |M|² and one combination with H generate every integral.
     let sys = top.system();
     let mut options = SearchOptions::new(
-        SearchSpace::new(0, 0, 0)
+        SearchSpace::default()
             .poisson_degree(2)
             .parameters_degree(2),
     );

@@ -1060,9 +1060,13 @@ mod tests {
             (options.symbolic, options.parameters_degree),
             (vec![m, omega], 3)
         );
-        let search = crate::search::SearchOptions::new(crate::search::SearchSpace::new(1, 1, 0))
-            .symbolic(omega)
-            .symbolic(omega);
+        let search = crate::search::SearchOptions::new(
+            crate::search::SearchSpace::default()
+                .momenta_degree(1)
+                .positions_degree(1),
+        )
+        .symbolic(omega)
+        .symbolic(omega);
         assert_eq!(search.symbolic, [omega]);
     }
 

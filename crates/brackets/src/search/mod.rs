@@ -54,7 +54,7 @@
 //!
 //! // The harmonic rotor at p_θ = Iω: the integrals linear in the momenta, trig order ≤ 1.
 //! let rotor = systems::harmonic_rotor();
-//! let options = SearchOptions::new(SearchSpace::new(1, 1, 1)).when(rotor.resonance(1, 1)?);
+//! let options = SearchOptions::new(SearchSpace::default().momenta_degree(1).positions_degree(1).trig_degree(1)).when(rotor.resonance(1, 1)?);
 //! let found = search(&rotor, &options)?;
 //! // The constant, L = x p_y − y p_x, and four linear integrals: Re and Im of
 //! // (p_x + iMωx)e^{−iθ} and of (p_y + iMωy)e^{−iθ}.
@@ -81,7 +81,7 @@
 //!     .with_brackets(&[("M1", "M2", e("M3")), ("M2", "M3", e("M1")), ("M3", "M1", e("M2"))])?;
 //! let top = System::new("Euler top", space, e("M1^2/(2*I1) + M2^2/(2*I2) + M3^2/(2*I3)"))?;
 //! // At I = (1, 2, 3): 1, then two quadratic integrals (|M|² and H, combined).
-//! let mut options = SearchOptions::new(SearchSpace::new(0, 0, 0).poisson_degree(2));
+//! let mut options = SearchOptions::new(SearchSpace::default().poisson_degree(2));
 //! for (i, name) in ["I1", "I2", "I3"].into_iter().enumerate() {
 //!     options = options.fix(top.var(name), Rational::from(i as i64 + 1));
 //! }
@@ -143,7 +143,7 @@ use proof::{flow_vanishes, lead, primitive_vector};
 /// // the two linear integrals Z e^{−iθ} and W e^{−iθ} (docs/results.md, section 1.1).
 /// let rotor = systems::harmonic_rotor();
 /// let resonance = rotor.resonance(1, 1)?;
-/// let options = SearchOptions::new(SearchSpace::new(1, 1, 1)).when(resonance.clone());
+/// let options = SearchOptions::new(SearchSpace::default().momenta_degree(1).positions_degree(1).trig_degree(1)).when(resonance.clone());
 /// let found = search(&rotor, &options)?;
 /// assert_eq!(found.basis.len(), 6);
 /// for integral in &found.basis {
@@ -170,12 +170,12 @@ use proof::{flow_vanishes, lead, primitive_vector};
 /// let space = PhaseSpace::new(&vars, &[("x", "p_x"), ("y", "p_y")])?;
 /// let h = Expr::parse(&vars, "(p_x^2 + p_y^2)/2 + (x^2 + a^2*y^2)/2")?;
 /// let oscillator = System::new("oscillator", space, h)?;
-/// let at_one = search(&oscillator, &SearchOptions::new(SearchSpace::new(2, 2, 0)))?;
+/// let at_one = search(&oscillator, &SearchOptions::new(SearchSpace::default().momenta_degree(2).positions_degree(2)))?;
 /// assert_eq!(at_one.basis.len(), 6);
 /// assert_eq!(at_one.basis[1].expr().to_string(), "x p_y − y p_x");
 /// assert_eq!(at_one.for_every_value(1), None);
 /// let a = vars.lookup("a").unwrap();
-/// let options = SearchOptions::new(SearchSpace::new(2, 2, 0)).fix(a, Rational::from(2));
+/// let options = SearchOptions::new(SearchSpace::default().momenta_degree(2).positions_degree(2)).fix(a, Rational::from(2));
 /// assert_eq!(search(&oscillator, &options)?.basis.len(), 3);
 /// # Ok::<(), Box<dyn std::error::Error>>(())
 /// ```

@@ -4,8 +4,19 @@ use trigpoly::{Expr, Rational, Var};
 
 use crate::claim::Condition;
 
-/// The finite space of functions searched.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+/// The finite space of functions searched, each degree named as it is set: the default is
+/// the constants (every degree 0), and each method widens one degree.
+///
+/// ```
+/// use brackets::search::SearchSpace;
+///
+/// // Quadratic in the momenta, linear in the coordinates, first order in the angles.
+/// let space = SearchSpace::default().momenta_degree(2).positions_degree(1).trig_degree(1);
+/// assert_eq!((space.momenta_degree, space.positions_degree, space.trig_degree), (2, 1, 1));
+/// assert_eq!(space.poisson_degree, 0);
+/// assert!(!space.laurent);
+/// ```
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 pub struct SearchSpace {
     /// Total degree in the momenta ([`SpaceVariables::momenta`](super::SpaceVariables::momenta)).
     pub momenta_degree: u32,
@@ -30,19 +41,23 @@ pub struct SearchSpace {
 }
 
 impl SearchSpace {
-    /// Momenta degree `d`, positions degree `e`, trigonometric order `k`, no negative powers,
-    /// degree 0 in the Poisson variables ([`SearchSpace::poisson_degree`] sets another).
-    pub fn new(momenta_degree: u32, positions_degree: u32, trig_degree: u32) -> Self {
-        SearchSpace {
-            momenta_degree,
-            positions_degree,
-            trig_degree,
-            laurent: false,
-            parameters_degree: 0,
-            poisson_degree: 0,
-            denominators_degree: 0,
-            radicals_degree: 0,
-        }
+    /// The same space with polynomials of total degree `≤ d` in the momenta.
+    pub fn momenta_degree(mut self, d: u32) -> Self {
+        self.momenta_degree = d;
+        self
+    }
+
+    /// The same space with polynomials of total degree `≤ d` in the coordinates (`Σ|a| ≤ d`
+    /// with negative powers, [`SearchSpace::laurent`]).
+    pub fn positions_degree(mut self, d: u32) -> Self {
+        self.positions_degree = d;
+        self
+    }
+
+    /// The same space with trigonometric polynomials of order `Σ|k| ≤ d` in the angles.
+    pub fn trig_degree(mut self, d: u32) -> Self {
+        self.trig_degree = d;
+        self
     }
 
     /// The same space with products of powers of the radicals `r_i^{j_i}` of total degree

@@ -17,7 +17,18 @@ use crate::systems;
 fn coordinates_are_those_of_the_real_and_imaginary_parts() {
     let rotor = systems::harmonic_rotor();
     let h = rotor.hamiltonian().clone();
-    let problem = Problem::new(&rotor, &SearchSpace::new(2, 1, 2), &[], &[], h, None).unwrap();
+    let problem = Problem::new(
+        &rotor,
+        &SearchSpace::default()
+            .momenta_degree(2)
+            .positions_degree(1)
+            .trig_degree(2),
+        &[],
+        &[],
+        h,
+        None,
+    )
+    .unwrap();
     let n = problem.unknowns.len();
     // f = Σ (a_j + i b_j) φ_j over every third unknown (the φ_j are real): Re f has the
     // coordinates a, Im f the coordinates b.
@@ -57,7 +68,18 @@ fn coordinates_are_those_of_the_real_and_imaginary_parts() {
 fn grades_are_degree_then_order_and_form_a_filtration() {
     let rotor = systems::harmonic_rotor();
     let h = rotor.hamiltonian().clone();
-    let problem = Problem::new(&rotor, &SearchSpace::new(2, 2, 2), &[], &[], h, None).unwrap();
+    let problem = Problem::new(
+        &rotor,
+        &SearchSpace::default()
+            .momenta_degree(2)
+            .positions_degree(2)
+            .trig_degree(2),
+        &[],
+        &[],
+        h,
+        None,
+    )
+    .unwrap();
     let grading = Grading::new(&problem.variables, 8);
     let grade = |f: &Expr| {
         let n = grading.grade(f);
@@ -90,9 +112,14 @@ fn grades_are_degree_then_order_and_form_a_filtration() {
 fn the_complement_over_q_alone_is_the_modular_one() {
     let rotor = systems::harmonic_rotor();
     for (m, n, d) in [(1, 1, 4), (2, 1, 3)] {
-        let options = SearchOptions::new(SearchSpace::new(d, d, d))
-            .when(rotor.resonance(m, n).unwrap())
-            .new_only();
+        let options = SearchOptions::new(
+            SearchSpace::default()
+                .momenta_degree(d)
+                .positions_degree(d)
+                .trig_degree(d),
+        )
+        .when(rotor.resonance(m, n).unwrap())
+        .new_only();
         let modular = search(&rotor, &options).unwrap().new.unwrap();
         let exact = search(&rotor, &options.exact_complement())
             .unwrap()
@@ -110,7 +137,18 @@ fn the_complement_over_q_alone_is_the_modular_one() {
 fn a_stamp_keeps_the_parts_of_a_product_in_both_fields() {
     let rotor = systems::harmonic_rotor();
     let h = rotor.hamiltonian().clone();
-    let problem = Problem::new(&rotor, &SearchSpace::new(2, 1, 2), &[], &[], h, None).unwrap();
+    let problem = Problem::new(
+        &rotor,
+        &SearchSpace::default()
+            .momenta_degree(2)
+            .positions_degree(1)
+            .trig_degree(2),
+        &[],
+        &[],
+        h,
+        None,
+    )
+    .unwrap();
     // f = Σ (a_j + i b_j) φ_j/3 and i·f, whose parts are those of f again.
     let mut f = Expr::zero(&problem.vars);
     for j in (0..problem.unknowns.len()).step_by(5) {
@@ -193,7 +231,12 @@ type Kernel = Vec<SparseVec<Rational>>;
 /// own. A lead coefficient divisible by p keeps every coordinate.
 #[test]
 fn integrals_are_told_apart_by_their_coordinates_on_the_leads() {
-    let (_, problem, kernel) = found_at_one_to_one(SearchSpace::new(2, 2, 2));
+    let (_, problem, kernel) = found_at_one_to_one(
+        SearchSpace::default()
+            .momenta_degree(2)
+            .positions_degree(2)
+            .trig_degree(2),
+    );
     let dim = problem.unknowns.len();
     let leads = Leads::of(&kernel, dim);
     assert_eq!(leads.count, kernel.len());
@@ -228,7 +271,12 @@ fn integrals_are_told_apart_by_their_coordinates_on_the_leads() {
 fn products_stop_once_they_span_every_integral() {
     // At the 1:1 resonance the products of the integrals up to degree 4 span what they
     // span before the last stamp's products: told that dimension, the walk stops there.
-    let (found, problem, kernel) = found_at_one_to_one(SearchSpace::new(4, 4, 4));
+    let (found, problem, kernel) = found_at_one_to_one(
+        SearchSpace::default()
+            .momenta_degree(4)
+            .positions_degree(4)
+            .trig_degree(4),
+    );
     let grading = Grading::new(&problem.variables, 4);
     let sources = found.basis.iter().map(|b| &b.fixed);
     let gens = generators(&problem, &grading, sources, &|_| Ok(false)).unwrap();
@@ -268,7 +316,14 @@ fn products_stop_once_they_span_every_integral() {
 #[test]
 fn new_integrals_at_one_to_one_are_the_four_linear_ones() {
     let rotor = systems::harmonic_rotor();
-    let options = at_one_to_one(&rotor, SearchSpace::new(2, 2, 2)).new_only();
+    let options = at_one_to_one(
+        &rotor,
+        SearchSpace::default()
+            .momenta_degree(2)
+            .positions_degree(2)
+            .trig_degree(2),
+    )
+    .new_only();
     let r = search(&rotor, &options).unwrap();
     assert_eq!(r.dimensions_by_momenta_degree(), [1, 6, 20]);
     assert!(r.all_symbolic());
@@ -286,8 +341,13 @@ fn off_resonance_there_is_no_trigonometric_integral() {
     // At p_θ = 3Iω/2 nothing of trigonometric order ≤ 2 and degree ≤ 2 is conserved but
     // the planar u(2) and the constants.
     let rotor = systems::harmonic_rotor();
-    let options =
-        SearchOptions::new(SearchSpace::new(2, 2, 2)).when(rotor.resonance(3, 2).unwrap());
+    let options = SearchOptions::new(
+        SearchSpace::default()
+            .momenta_degree(2)
+            .positions_degree(2)
+            .trig_degree(2),
+    )
+    .when(rotor.resonance(3, 2).unwrap());
     let r = search(&rotor, &options).unwrap();
     assert!(r.basis.iter().all(|f| f.trig_degree == 0));
     // 1, L and the quadratic H_x, H_y, G1 (times 2M) and L².
@@ -300,7 +360,10 @@ fn off_resonance_there_is_no_trigonometric_integral() {
 #[test]
 fn symbolic_parameters_find_the_lifted_basis() {
     let rotor = systems::harmonic_rotor();
-    let space = SearchSpace::new(1, 1, 1);
+    let space = SearchSpace::default()
+        .momenta_degree(1)
+        .positions_degree(1)
+        .trig_degree(1);
     let resonance = rotor.resonance(1, 1).unwrap();
     let lifted = search(&rotor, &SearchOptions::new(space).when(resonance.clone())).unwrap();
     assert!(lifted.all_symbolic() && lifted.module.is_none());
@@ -328,7 +391,14 @@ fn symbolic_parameters_find_the_lifted_basis() {
 #[test]
 fn the_search_is_the_same_on_any_number_of_threads() {
     let rotor = systems::harmonic_rotor();
-    let options = at_one_to_one(&rotor, SearchSpace::new(3, 3, 3)).new_only();
+    let options = at_one_to_one(
+        &rotor,
+        SearchSpace::default()
+            .momenta_degree(3)
+            .positions_degree(3)
+            .trig_degree(3),
+    )
+    .new_only();
     let on = |threads: usize| {
         let pool = rayon::ThreadPoolBuilder::new()
             .num_threads(threads)
@@ -358,7 +428,11 @@ fn the_search_is_the_same_on_any_number_of_threads() {
 #[test]
 fn an_integral_of_the_fixed_values_only_is_not_for_every_value() {
     let rotor = systems::rotor("(x^2 + a^2*y^2)/2", &["a"]).unwrap();
-    let r = search(&rotor, &SearchOptions::new(SearchSpace::new(2, 2, 0))).unwrap();
+    let r = search(
+        &rotor,
+        &SearchOptions::new(SearchSpace::default().momenta_degree(2).positions_degree(2)),
+    )
+    .unwrap();
     let find = |text: &str| {
         let e = rotor.parse(text).unwrap();
         (0..r.basis.len())
@@ -380,7 +454,7 @@ fn an_integral_of_the_fixed_values_only_is_not_for_every_value() {
 fn a_parameter_is_either_fixed_or_symbolic() {
     let rotor = systems::harmonic_rotor();
     let m = rotor.var("M");
-    let options = SearchOptions::new(SearchSpace::new(1, 1, 0))
+    let options = SearchOptions::new(SearchSpace::default().momenta_degree(1).positions_degree(1))
         .fix(m, Rational::from(2))
         .symbolic(m);
     let err = search(&rotor, &options).unwrap_err().to_string();
@@ -388,15 +462,16 @@ fn a_parameter_is_either_fixed_or_symbolic() {
         err.contains("M is both fixed to a value and kept symbolic"),
         "{err}"
     );
-    let options = SearchOptions::new(SearchSpace::new(1, 1, 0)).symbolic(rotor.var("x"));
+    let options = SearchOptions::new(SearchSpace::default().momenta_degree(1).positions_degree(1))
+        .symbolic(rotor.var("x"));
     let err = search(&rotor, &options).unwrap_err().to_string();
     assert!(
         err.contains("only parameters can be kept symbolic"),
         "{err}"
     );
     // A value for a coordinate was ignored: the search ran as if it were not given.
-    let options =
-        SearchOptions::new(SearchSpace::new(1, 1, 0)).fix(rotor.var("x"), Rational::from(1));
+    let options = SearchOptions::new(SearchSpace::default().momenta_degree(1).positions_degree(1))
+        .fix(rotor.var("x"), Rational::from(1));
     let err = search(&rotor, &options).unwrap_err().to_string();
     assert!(
         err.contains("only parameters are given values for the linear algebra, and x is not one"),
@@ -440,7 +515,12 @@ fn exponent_vectors_are_counted_without_making_them() {
 fn a_space_too_large_in_one_kind_is_refused_before_it_is_made() {
     let rotor = systems::harmonic_rotor();
     for degree in [1000, u32::MAX] {
-        let options = SearchOptions::new(SearchSpace::new(degree, 1, 1));
+        let options = SearchOptions::new(
+            SearchSpace::default()
+                .momenta_degree(degree)
+                .positions_degree(1)
+                .trig_degree(1),
+        );
         let err = search(&rotor, &options).unwrap_err().to_string();
         assert!(
             err.contains("unknowns, more than the term limit 20000000"),
@@ -456,7 +536,7 @@ fn a_parameter_of_another_system_is_refused() {
     let rotor = systems::harmonic_rotor();
     let other = systems::gravity_rotor();
     let foreign = other.var("g");
-    let space = SearchSpace::new(1, 1, 0);
+    let space = SearchSpace::default().momenta_degree(1).positions_degree(1);
     for options in [
         SearchOptions::new(space).fix(foreign, Rational::from(2)),
         SearchOptions::new(space).symbolic(foreign),
@@ -473,7 +553,10 @@ fn a_parameter_of_another_system_is_refused() {
 fn a_parameter_named_twice_is_kept_symbolic_once() {
     let rotor = systems::harmonic_rotor();
     let (m, omega) = (rotor.var("M"), rotor.var("omega"));
-    let space = SearchSpace::new(1, 1, 0).parameters_degree(2);
+    let space = SearchSpace::default()
+        .momenta_degree(1)
+        .positions_degree(1)
+        .parameters_degree(2);
     let once = search(
         &rotor,
         &SearchOptions::new(space).symbolic(m).symbolic(omega),
@@ -494,7 +577,10 @@ fn a_parameter_named_twice_is_kept_symbolic_once() {
 fn new_integrals_with_symbolic_parameters_are_the_same_four() {
     let rotor = systems::harmonic_rotor();
     let resonance = rotor.resonance(1, 1).unwrap();
-    let space = SearchSpace::new(2, 2, 2);
+    let space = SearchSpace::default()
+        .momenta_degree(2)
+        .positions_degree(2)
+        .trig_degree(2);
     let fixed = search(
         &rotor,
         &SearchOptions::new(space).when(resonance.clone()).new_only(),
@@ -540,7 +626,13 @@ fn declared_brackets_with_canonical_variables_enter_the_images() {
         .with_brackets(&[("p_x", "s", e("1"))])
         .unwrap();
     let slide = System::new("slide", space, e("p_x^2/2 + s")).unwrap();
-    let options = SearchOptions::new(SearchSpace::new(2, 2, 0).poisson_degree(2)).new_only();
+    let options = SearchOptions::new(
+        SearchSpace::default()
+            .momenta_degree(2)
+            .positions_degree(2)
+            .poisson_degree(2),
+    )
+    .new_only();
     let found = search(&slide, &options).unwrap();
     assert!(found.all_symbolic() && found.basis.iter().all(|f| f.proved_fixed));
     assert_eq!(found.variables.poisson, [slide.var("s")]);
@@ -599,7 +691,7 @@ fn a_poisson_variable_the_condition_fixes_is_left_out() {
         .unwrap();
     let top = System::new("top", space, e("(M1^2 + M2^2)/(2*A) + M3^2/(2*C)")).unwrap();
     let m3 = Condition::new("M3 = 1", top.var("M3"), e("1"));
-    let options = SearchOptions::new(SearchSpace::new(0, 0, 0).poisson_degree(2))
+    let options = SearchOptions::new(SearchSpace::default().poisson_degree(2))
         .fix(top.var("A"), Rational::from(2))
         .when(m3);
     let found = search(&top, &options).unwrap();
@@ -615,9 +707,15 @@ fn fixed_values_other_than_one_lift_the_same() {
     let rotor = systems::harmonic_rotor();
     let omega = rotor.var("omega");
     let m = rotor.var("M");
-    let options = at_one_to_one(&rotor, SearchSpace::new(1, 1, 1))
-        .fix(omega, Rational::new(3, 2))
-        .fix(m, Rational::new(5, 7));
+    let options = at_one_to_one(
+        &rotor,
+        SearchSpace::default()
+            .momenta_degree(1)
+            .positions_degree(1)
+            .trig_degree(1),
+    )
+    .fix(omega, Rational::new(3, 2))
+    .fix(m, Rational::new(5, 7));
     let r = search(&rotor, &options).unwrap();
     let lifted: Vec<String> = r.basis.iter().map(|f| f.expr().to_string()).collect();
     assert!(
@@ -706,7 +804,7 @@ fn the_counts_by_poisson_degree_are_dimensions_where_the_space_has_momenta() {
     let toda = System::new("Toda", space, e("(p_q1^2 + p_q2^2 + p_q3^2)/2 + a1 + a2")).unwrap();
     let found = search(
         &toda,
-        &SearchOptions::new(SearchSpace::new(3, 0, 0).poisson_degree(1)),
+        &SearchOptions::new(SearchSpace::default().momenta_degree(3).poisson_degree(1)),
     )
     .unwrap();
     assert_eq!(found.basis.len(), 7);
@@ -740,11 +838,11 @@ fn a_parameter_of_a_declared_bracket_is_fixed_for_the_search() {
         .unwrap();
     let top = System::new("top", space, e("M1^2/2 + M2^2 + 3*M3^2/2")).unwrap();
     let k = top.var("k");
-    let options = SearchOptions::new(SearchSpace::new(0, 0, 0).poisson_degree(2));
+    let options = SearchOptions::new(SearchSpace::default().poisson_degree(2));
     let found = search(&top, &options).unwrap();
     assert_eq!(found.parameters, [(k, Rational::one())]);
     assert_eq!(found.dimensions_by_poisson_degree(), [1, 1, 3]);
-    let space = SearchSpace::new(0, 0, 0)
+    let space = SearchSpace::default()
         .poisson_degree(2)
         .parameters_degree(1);
     let found = search(&top, &SearchOptions::new(space).symbolic(k)).unwrap();
@@ -755,4 +853,37 @@ fn a_parameter_of_a_declared_bracket_is_fixed_for_the_search() {
         .iter()
         .any(|f| basis.iter().any(|g| (*f + *g) == casimir));
     assert!(sum_of_two, "{basis:?}");
+}
+
+/// A search space names each degree as it is set, where `SearchSpace::new(2, 0, 1)` took three
+/// numbers in an order a reader had to remember: the default is the constants, and the
+/// rotor's `H` (degree 2 in the momenta and in the coordinates) lies outside a space of
+/// momenta degree 2 alone, for its coordinates.
+#[test]
+fn a_search_space_names_each_degree() {
+    assert_eq!(
+        SearchSpace::default(),
+        SearchSpace {
+            momenta_degree: 0,
+            positions_degree: 0,
+            trig_degree: 0,
+            laurent: false,
+            parameters_degree: 0,
+            poisson_degree: 0,
+            denominators_degree: 0,
+            radicals_degree: 0,
+        }
+    );
+    let space = SearchSpace::default().trig_degree(1).momenta_degree(2);
+    let degrees = (
+        space.momenta_degree,
+        space.positions_degree,
+        space.trig_degree,
+    );
+    assert_eq!(degrees, (2, 0, 1));
+    let rotor = systems::harmonic_rotor();
+    let h = rotor.hamiltonian();
+    let why = space.why_outside(h).expect("H has coordinates");
+    assert!(why.contains("coordinates"), "{why}");
+    assert_eq!(space.positions_degree(2).why_outside(h), None);
 }
