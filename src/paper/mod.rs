@@ -301,9 +301,8 @@ impl Item {
                 system,
                 names,
             } => {
-                let names: Vec<&str> = names.iter().map(String::as_str).collect();
                 vec![Entry::Table(TableResult::new(
-                    BracketTable::compute(system, &names)?,
+                    BracketTable::compute(system, names)?,
                     system,
                     whose,
                 ))]

@@ -494,12 +494,11 @@ pub fn table_report(file: &LoadedSystem, names: &[impl AsRef<str>]) -> Result<Re
     file.refuse_repeated(names, "a table")?;
     let names = tabulated_names(file, names, &defined)?;
     let system = with_instances(file, &names, &defined)?;
-    let refs: Vec<&str> = names.iter().map(String::as_str).collect();
     // What fails is a bracket of the file's functions, not the names given.
-    let table = BracketTable::compute(&system, &refs).map_err(|e| {
+    let table = BracketTable::compute(&system, &names).map_err(|e| {
         let mut err = file.computation_error(&e);
         err.origin.clone_from(&file.source.origin);
-        err.message = format!("the brackets of {}: {}", refs.join(", "), err.message);
+        err.message = format!("the brackets of {}: {}", names.join(", "), err.message);
         err
     })?;
     let written = written_in_functions(file, &table);

@@ -370,12 +370,13 @@ fn monomial_count(r: usize, d: u32) -> u128 {
 /// ```
 pub fn closure(
     system: &System,
-    names: &[&str],
+    names: &[impl AsRef<str>],
     options: &ClosureOptions,
 ) -> Result<Closure, EngineError> {
     let gens: Vec<NamedFunction> = names
         .iter()
         .map(|n| {
+            let n = n.as_ref();
             Ok(NamedFunction::new(
                 n,
                 system.display_name(n),

@@ -152,10 +152,10 @@ impl System {
     /// system defines) by the phase-space coordinates: [`rank`](crate::rank()) by names, as
     /// [`closure`](crate::closure()) and [`BracketTable::compute`](crate::BracketTable::compute)
     /// take them.
-    pub fn rank(&self, names: &[&str]) -> Result<crate::RankCertificate, EngineError> {
+    pub fn rank(&self, names: &[impl AsRef<str>]) -> Result<crate::RankCertificate, EngineError> {
         let functions = names
             .iter()
-            .map(|name| self.get(name).cloned())
+            .map(|name| self.get(name.as_ref()).cloned())
             .collect::<Result<Vec<_>, _>>()?;
         crate::rank(&self.space, &functions)
     }
@@ -311,6 +311,28 @@ mod tests {
             rotor.rank(&["H", "nope"]).unwrap_err(),
             EngineError::UnknownName("nope".into())
         );
+    }
+
+    /// The functions of a rank, a bracket table and a closure are named by `&str`s or by
+    /// `String`s a program holds (read from its input, say), where they took `&[&str]` alone
+    /// and a `Vec<String>` had to be borrowed name by name into another vector first.
+    #[test]
+    fn functions_are_named_by_strs_or_strings() {
+        let rotor = harmonic_rotor();
+        let owned: Vec<String> = ["L", "G1", "G2"].map(String::from).to_vec();
+        let rank = rotor.rank(&owned).unwrap();
+        assert_eq!(rank, rotor.rank(&["L", "G1", "G2"]).unwrap());
+        assert_eq!(rank.rank, 3);
+        let table = crate::BracketTable::compute(&rotor, &owned).unwrap();
+        assert_eq!(
+            table,
+            crate::BracketTable::compute(&rotor, &["L", "G1", "G2"]).unwrap()
+        );
+        let options = crate::ClosureOptions::new(2);
+        let closed = crate::closure(&rotor, &owned, &options).unwrap();
+        assert_eq!(closed.names, owned);
+        let by_strs = crate::closure(&rotor, &["L", "G1", "G2"], &options).unwrap();
+        assert_eq!(closed.relations.len(), by_strs.relations.len());
     }
 
     /// A function named like a variable could never be used: `define_parsed` refuses it.

@@ -89,10 +89,11 @@ pub struct BracketTable {
 }
 
 impl BracketTable {
-    /// Computes the table for named functions of `system`. An entry whose bracket or
-    /// combination reaches a limit is [`Entry::Undecided`], and the others are computed; any
-    /// other error is the answer.
-    pub fn compute(system: &System, names: &[&str]) -> Result<Self, EngineError> {
+    /// Computes the table for named functions of `system` (`&["L", "G1"]`, or names a program
+    /// holds as `String`s). An entry whose bracket or combination reaches a limit is
+    /// [`Entry::Undecided`], and the others are computed; any other error is the answer.
+    pub fn compute(system: &System, names: &[impl AsRef<str>]) -> Result<Self, EngineError> {
+        let names: Vec<&str> = names.iter().map(AsRef::as_ref).collect();
         // Each over its common denominator, as the brackets will be, so that a bracket that
         // is one of them written another way (`x/(x − y)² − y/(x − y)²` for `1/(x − y)`)
         // shows as that one.
@@ -102,7 +103,7 @@ impl BracketTable {
             .collect::<Result<_, EngineError>>()?;
         let basis: Vec<(FunctionName, Expr)> = names
             .iter()
-            .map(|n| FunctionName {
+            .map(|&n| FunctionName {
                 name: n.to_string(),
                 // As the claims' echo and expressions print it: `ω3` of `omega3`.
                 display: trigpoly::shown_text(system.display_name(n)),
