@@ -201,7 +201,12 @@ impl ClaimSpec {
             Some(id) if id.get_ref().trim().is_empty() => {
                 return Err(source.error(ErrorKind::Claim, id.span(), "a claim's id is empty"))
             }
-            Some(id) => id.get_ref().clone(),
+            Some(id) => {
+                let text = Text::in_toml(&source.text, id.span(), id.get_ref());
+                let what = ("a claim's id", ErrorKind::Claim);
+                super::names::check_shown_text(source, &text, what, false)?;
+                id.get_ref().clone()
+            }
             None => format!("#{}", k + 1),
         };
         let when = match &c.when {

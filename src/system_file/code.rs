@@ -225,6 +225,17 @@ impl LoadedSystem {
                 "a claim's id is empty",
             ));
         }
+        if let Some((_, c)) = super::names::first_invisible(id, false) {
+            let code = c as u32;
+            return Err(FileError::new(
+                ErrorKind::Claim,
+                &origin,
+                format!(
+                    "a claim's id is shown in reports as written: U+{code:04X} is an invisible \
+                     or control character"
+                ),
+            ));
+        }
         let (source, claim_at, when_at) = two_lines(&origin, claim, when);
         let text = Text::within(&source, claim_at.clone());
         let when = when_at.map(|at| Text::within(&source, at).split(','));

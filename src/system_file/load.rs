@@ -18,7 +18,7 @@ use super::keys::unknown_key_hint;
 use super::model::{
     ExpectShape, FamilyModel, FunctionModel, PhaseSpaceModel, ShapeModel, StringTable, SystemModel,
 };
-use super::names::{check_display, index_refusal, BadName, PrintedNames};
+use super::names::{check_display, check_shown_text, index_refusal, BadName, PrintedNames};
 use super::scope::{first_bracket, instance_parts, mention};
 use super::text::{Source, Text};
 use super::{Family, LimitsOverride, LoadedSystem};
@@ -974,6 +974,7 @@ impl<'a> Builder<'a> {
     /// Hamiltonian, the functions, the families and the claims, each of which may use only
     /// what comes before it.
     fn build(mut self, model: SystemModel) -> Result<LoadedSystem, FileError> {
+        self.check_texts(&model)?;
         self.declare_variables(&model.phase_space)?;
         let limits = self.limits(&model)?;
         let vars = self.variables(&model, limits)?;
@@ -1246,6 +1247,22 @@ impl<'a> Builder<'a> {
             .map_err(|e| self.error(ErrorKind::Name, phase_space.span(), e.to_string()))
     }
 
+    /// Refuses a `name`, `source` or `description` with a control or invisible character,
+    /// which reports would show as `�` or with their lines broken (a description's line
+    /// breaks are its own: [`check_shown_text`]).
+    fn check_texts(&self, model: &SystemModel) -> Result<(), FileError> {
+        for (key, value, lines) in [
+            ("the system's name", &model.name, false),
+            ("the system's source", &model.source, true),
+            ("the system's description", &model.description, true),
+        ] {
+            if let Some(v) = value {
+                check_shown_text(&self.source, &self.text(v), (key, ErrorKind::Schema), lines)?;
+            }
+        }
+        Ok(())
+    }
+
     /// The system as its phase space alone declares it, before its declared brackets,
     /// Hamiltonian (zero until it is read), functions, families and claims.
     fn unfilled(
@@ -1259,8 +1276,13 @@ impl<'a> Builder<'a> {
         Ok(LoadedSystem {
             source: self.source.clone(),
             name: name.clone(),
-            citation: model.source.as_ref().map(|s| s.get_ref().clone()),
-            description: model.description.as_ref().map(|s| s.get_ref().clone()),
+            // A file written with CRLF line ends keeps them in a string of several lines:
+            // its line breaks are the text's own (a lone `\r` is refused: `check_texts`).
+            citation: model
+                .source
+                .as_ref()
+                .map(|s| s.get_ref().replace("\r\n", "\n")),
+            description: (model.description.as_ref()).map(|s| s.get_ref().replace("\r\n", "\n")),
             system: System::new(&name, space, Expr::zero(vars))?,
             families: Vec::new(),
             claims: Vec::new(),

@@ -633,6 +633,41 @@ fn alike(new: &Owner, notation: Notation, form: &str, other: &Owner) -> String {
     }
 }
 
+/// The first character of `text` that shows nothing, or moves or turns the text around it
+/// ([`invisible`]), with its byte offset: a line break too unless `lines` allows it (a
+/// description's paragraphs), `\r` only before `\n`.
+pub(crate) fn first_invisible(text: &str, lines: bool) -> Option<(usize, char)> {
+    text.char_indices().find(|&(k, c)| {
+        let line_break = c == '\n' || (c == '\r' && text[k + 1..].starts_with('\n'));
+        invisible(c) && !(lines && line_break)
+    })
+}
+
+/// Refuses a text that reports show as it is written (`what`: `a claim's id`, the system's
+/// `name`; with `lines`, its `description` or `source`, which may run over several lines)
+/// when it holds a control or invisible character ([`first_invisible`]): a tab or a line
+/// break in an id broke the report's layout, and an escape printed as `�`. The message
+/// points at the character.
+pub(crate) fn check_shown_text(
+    source: &Source,
+    text: &Text,
+    (what, kind): (&str, ErrorKind),
+    lines: bool,
+) -> Result<(), FileError> {
+    let Some((k, c)) = first_invisible(&text.value, lines) else {
+        return Ok(());
+    };
+    let code = c as u32;
+    Err(source.error(
+        kind,
+        text.source_span(Span::new(k, k + c.len_utf8())),
+        format!(
+            "{what} is shown in reports as written: U+{code:04X} is an invisible or control \
+             character"
+        ),
+    ))
+}
+
 /// Refuses a display name (`text`, written at `whole` in `source`) that would not show as
 /// written ([`Builder::check_display`] says how); the message points at the character.
 pub(crate) fn check_display(

@@ -535,6 +535,15 @@ fn claim_errors_point_into_the_text_given() {
     assert_eq!(err.kind, ErrorKind::Claim);
     let err = rotor.add_claim(" ", "L = L", None).unwrap_err();
     assert_eq!(err.message, "a claim's id is empty");
+    let err = rotor.add_claim("a\nb", "L = L", None).unwrap_err();
+    assert_eq!(
+        (err.kind, err.message.as_str()),
+        (
+            ErrorKind::Claim,
+            "a claim's id is shown in reports as written: U+000A is an invisible or control \
+             character"
+        )
+    );
     assert_eq!(rotor.claims().len(), claims);
 }
 

@@ -929,6 +929,56 @@ fn bad_inputs() -> Vec<(&'static str, Vec<u8>, &'static str, Vec<&'static str>)>
             "bad.toml:13:6: id is a string in quotes, not a date",
             check.clone(),
         ),
+        // A report shows an id, and the system's name, source and description, as written: a
+        // tab or line break broke its layout, and an escape printed as U+FFFD.
+        (
+            "a claim's id with a tab",
+            base_with("id = \"ladder\"", "id = \"lad\tder\""),
+            "bad.toml:13:10: a claim's id is shown in reports as written: U+0009 is an \
+             invisible or control character",
+            check.clone(),
+        ),
+        (
+            "a claim's id with an escaped line break",
+            base_with("id = \"ladder\"", "id = \"lad\\nder\""),
+            "bad.toml:13:7: a claim's id is shown in reports as written: U+000A is an \
+             invisible or control character",
+            check.clone(),
+        ),
+        (
+            "a claim's id over two lines",
+            base_with("id = \"ladder\"", "id = \"\"\"lad\nder\"\"\""),
+            "bad.toml:13:12: a claim's id is shown in reports as written: U+000A is an \
+             invisible or control character",
+            check.clone(),
+        ),
+        (
+            "a system's name with an escape",
+            base_with("name = \"oscillator\"", "name = \"osc\\u001b[31m\""),
+            "bad.toml:1:9: the system's name is shown in reports as written: U+001B is an \
+             invisible or control character",
+            check.clone(),
+        ),
+        (
+            "a system's description with a bell",
+            base_with(
+                "name = \"oscillator\"",
+                "name = \"oscillator\"\ndescription = \"\"\"\nOne line,\nanother\\u0007.\"\"\"",
+            ),
+            "bad.toml:3:1: the system's description is shown in reports as written: U+0007 is \
+             an invisible or control character",
+            check.clone(),
+        ),
+        (
+            "a system's source with a right-to-left override",
+            base_with(
+                "name = \"oscillator\"",
+                "name = \"oscillator\"\nsource = \"A. Author\u{202e}, 1979\"",
+            ),
+            "bad.toml:2:20: the system's source is shown in reports as written: U+202E is an \
+             invisible or control character",
+            check.clone(),
+        ),
         (
             "a limit as a time",
             base_with(
@@ -4693,4 +4743,24 @@ fn a_claims_echo_writes_names_as_its_expressions_do() {
         !table.contains("omega3") && !table.contains("theta1"),
         "{table}"
     );
+}
+
+/// A description and a source may run over several lines (a TOML string of several lines, its
+/// line breaks `\r\n` in a file written so, which printed as `�` and a line break), which the
+/// reports keep as line breaks; an id or the system's name may not ("a claim's id with an
+/// escaped line break" in [`bad_inputs`]).
+#[test]
+fn a_description_may_run_over_lines() {
+    let dir = scratch("description-lines");
+    let file = BASE.replace(
+        "name = \"oscillator\"",
+        "name = \"oscillator\"\ndescription = \"\"\"\nOne line,\nand another.\"\"\"\n\
+         source = \"A. Author,\\r\\nsome journal\"",
+    );
+    std::fs::write(dir.join("lines.toml"), file).expect("write");
+    let o = superint_in(&dir, &["check", "lines.toml", "--no-timings"]);
+    assert_eq!(o.status.code(), Some(0), "{}", text(&o.stderr));
+    let out = text(&o.stdout);
+    assert!(out.contains("One line,\nand another."), "{out}");
+    assert!(out.contains("Source: A. Author,\nsome journal"), "{out}");
 }
