@@ -238,6 +238,11 @@ mod tests {
                 r"(x^{2}){}^{3} + x^{2{}^{3}} + \frac{1}{x}{}^{2}",
                 "(+ (+ (^ (^ x 2) 3) (^ x (^ 2 3))) (^ (/ 1 x) 2))",
             ),
+            // After a minus sign, of what follows it (in braces, of the exponent's number).
+            (
+                r"-x{}^{2} + x^{-2{}^{3}}",
+                "(+ (- (^ x 2)) (^ x (- (^ 2 3))))",
+            ),
             (r"\mathrm{e}^{-\mathrm{i}\theta}", "(exp (* (- i) θ))"),
             (r"e^{-i\theta}", "(exp (* (- i) θ))"),
             (

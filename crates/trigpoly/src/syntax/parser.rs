@@ -277,7 +277,7 @@ impl Parser<'_> {
 
     /// Parses an expression whose infix operators all bind at least as tightly as `min_bp`.
     fn expr(&mut self, min_bp: u8) -> PResult<Expr> {
-        let mut lhs = self.prefix()?;
+        let mut lhs = self.prefix(min_bp)?;
         let mut height = self.height;
         // The divisor of a `/` just parsed at this level, while nothing else followed it.
         let mut divisor: Option<Span> = None;
@@ -474,12 +474,12 @@ impl Parser<'_> {
         Ok(negate(span, Expr::new(ExprKind::Integer(value), digits)))
     }
 
-    /// Parses an operand: a literal, name, call, parenthesized expression, bracket or unary
-    /// operator applied to an operand.
-    fn prefix(&mut self) -> PResult<Expr> {
+    /// Parses an operand of an expression at `min_bp`: a literal, name, call, parenthesized
+    /// expression, bracket or unary operator applied to an operand.
+    fn prefix(&mut self, min_bp: u8) -> PResult<Expr> {
         match self.tok.tok {
             Tok::Int(_) | Tok::Name(_) => self.atom(),
-            Tok::Minus | Tok::Plus => self.unary(),
+            Tok::Minus | Tok::Plus => self.unary(min_bp),
             Tok::LParen => self.paren(),
             Tok::LBrace if self.exponent_in_braces() => self.exponent_group(),
             Tok::LBrace => self.bracket(),
@@ -489,10 +489,13 @@ impl Parser<'_> {
         }
     }
 
-    /// Parses a unary minus or plus and its operand.
-    fn unary(&mut self) -> PResult<Expr> {
+    /// Parses a unary minus or plus and its operand, in an expression at `min_bp`: in an
+    /// exponent (`x^-2`) the operand is one too, which a superscript on an empty group ends
+    /// as it ends the exponent (`x^-2{}^{3}`, refused after the power, was `x^(−2³)`).
+    fn unary(&mut self, min_bp: u8) -> PResult<Expr> {
         let op = self.bump()?;
-        let operand = self.nested(op.span, |p| p.expr(UNARY_BP))?;
+        let bp = min_bp.max(UNARY_BP);
+        let operand = self.nested(op.span, |p| p.expr(bp))?;
         if op.tok == Tok::Plus {
             return Ok(operand);
         }

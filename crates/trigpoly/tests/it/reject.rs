@@ -320,6 +320,32 @@ fn cases() -> Vec<Case> {
              parentheses for a power of it, or write the exponent in one group\n  \
              x^{2}{}^{3}\n       ^^^^^^",
         ),
+        // After a negative exponent written without braces it was read as the exponent's
+        // power, `x^(−2³)`.
+        case(
+            Qi,
+            "x^-2{}^{3}",
+            "'{}^{3}' after 'x^-2', which has a superscript already, is ambiguous: LaTeX sets \
+             the two superscripts side by side, as one; put 'x^-2' in parentheses for a power \
+             of it, or write the exponent in one group",
+            (1, 5),
+            "line 1, column 5: '{}^{3}' after 'x^-2', which has a superscript already, is \
+             ambiguous: LaTeX sets the two superscripts side by side, as one; put 'x^-2' in \
+             parentheses for a power of it, or write the exponent in one group\n  \
+             x^-2{}^{3}\n      ^^^^^^",
+        ),
+        case(
+            Qi,
+            "x^-(2){}^3",
+            "'{}^3' after 'x^-(2)', which has a superscript already, is ambiguous: LaTeX sets \
+             the two superscripts side by side, as one; put 'x^-(2)' in parentheses for a power \
+             of it, or write the exponent in one group",
+            (1, 7),
+            "line 1, column 7: '{}^3' after 'x^-(2)', which has a superscript already, is \
+             ambiguous: LaTeX sets the two superscripts side by side, as one; put 'x^-(2)' in \
+             parentheses for a power of it, or write the exponent in one group\n  \
+             x^-(2){}^3\n        ^^^^",
+        ),
         case(
             Qi,
             r"y + x^2 \, { } ^3",
