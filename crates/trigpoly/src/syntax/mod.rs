@@ -158,7 +158,7 @@ mod tests {
             ("ω¹⁰ + x⁰", "(+ (^ ω 10) (^ x 0))"),
             ("-x²", "(- (^ x 2))"),
             ("(x+y)³", "(^ (+ x y) 3)"),
-            ("x^y²", "(^ x (^ y 2))"),
+            ("x^(y²)", "(^ x (^ y 2))"),
             (
                 "a − b · c × d ⋅ e ∗ g ÷ f",
                 "(- a (/ (* (* (* (* b c) d) e) g) f))",
@@ -238,6 +238,9 @@ mod tests {
                 r"(x^{2}){}^{3} + x^{2{}^{3}} + \frac{1}{x}{}^{2}",
                 "(+ (+ (^ (^ x 2) 3) (^ x (^ 2 3))) (^ (/ 1 x) 2))",
             ),
+            // A superscript character in an exponent's parentheses or braces is the power of
+            // what stands before it there.
+            (r"x^(2²) + x^{2³}", "(+ (^ x (^ 2 2)) (^ x (^ 2 3)))"),
             // After a minus sign, of what follows it (in braces, of the exponent's number).
             (
                 r"-x{}^{2} + x^{-2{}^{3}}",
@@ -502,13 +505,16 @@ mod tests {
         let bad = [
             nest(MAX_DEPTH - 1, &product(MAX_HEIGHT + 1)),
             product(100_000),
-            format!("x{}", "⁻¹".repeat(3000)),
         ];
         for src in bad {
             let err = parse_expr(&src).unwrap_err();
             let msg = "expression too long: more than 2048 levels of operations";
             assert!(err.message.starts_with(msg), "{}", err.message);
         }
+        // A run of superscripts, which made a tree as high as it was long, is refused at its
+        // second, as ambiguous.
+        let err = parse_expr(&format!("x{}", "⁻¹".repeat(3000))).unwrap_err();
+        assert_eq!((err.span.start, err.span.end), (6, 11), "{}", err.message);
     }
 
     /// Parsing must never panic; parsed trees have consistent spans, errors valid ones.

@@ -342,8 +342,14 @@ impl Parser<'_> {
         height: &mut usize,
         min_bp: u8,
     ) -> PResult<Option<BinOp>> {
-        // Superscripts bind like `^`, more tightly than any `min_bp`.
-        while matches!(self.tok.tok, Tok::Sup { .. }) {
+        // Superscripts bind like `^`, more tightly than any `min_bp`; but one after an exponent
+        // written with `^` ends it (`x^{2}²`, `x^2²`), and one after a superscript is refused
+        // below, as `x² ²` is: they stand side by side as one (`x²²`), which no reading should
+        // guess.
+        while matches!(self.tok.tok, Tok::Sup { .. }) && min_bp != EXPONENT_BP {
+            if self.has_superscript(lhs) {
+                return Err(self.superscript_after_superscript(lhs));
+            }
             *height = grow((*height).max(2), self.tok.span)?;
             let exponent = self.superscript()?;
             map_in_place(lhs, |base| {
@@ -386,20 +392,29 @@ impl Parser<'_> {
         }
     }
 
-    /// The error for a superscript on an empty group after `lhs`, which has one already:
-    /// LaTeX sets `x^{2}{}^{3}` as `x^{23}`, which no reading should guess.
+    /// The error for a superscript on an empty group, or a superscript character, after
+    /// `lhs`, which has one already: LaTeX sets `x^{2}{}^{3}` as `x^{23}`, and `x^{2}²` shows
+    /// as `x²²`, which no reading should guess.
     #[cold]
     fn superscript_after_superscript(&self, lhs: &Expr) -> ParseError {
-        let after = self.prev.map_or(self.tok.span.start, |p| p.end);
-        let open = after + self.src[after..self.tok.span.start].find('{').unwrap_or(0);
-        let span = Span::new(open, script_end(self.src, self.tok.span.end));
         let base = self.quote(lhs.span);
+        let (span, set) = match self.tok.tok {
+            Tok::Sup { .. } => (
+                self.tok.span,
+                "the two superscripts show side by side, as one",
+            ),
+            _ => {
+                let after = self.prev.map_or(self.tok.span.start, |p| p.end);
+                let open = after + self.src[after..self.tok.span.start].find('{').unwrap_or(0);
+                let span = Span::new(open, script_end(self.src, self.tok.span.end));
+                (span, "LaTeX sets the two superscripts side by side, as one")
+            }
+        };
         ParseError::new(
             span,
             format!(
-                "{} after {base}, which has a superscript already, is ambiguous: LaTeX sets \
-                 the two superscripts side by side, as one; put {base} in parentheses for a \
-                 power of it, or write the exponent in one group",
+                "{} after {base}, which has a superscript already, is ambiguous: {set}; put \
+                 {base} in parentheses for a power of it, or write the exponent in one group",
                 self.quote(span)
             ),
         )

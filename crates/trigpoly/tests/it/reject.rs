@@ -346,6 +346,44 @@ fn cases() -> Vec<Case> {
              parentheses for a power of it, or write the exponent in one group\n  \
              x^-(2){}^3\n        ^^^^",
         ),
+        // A superscript character after a superscript shows beside it as one, `x²²`: it was
+        // read as a power of the exponent, `x^(2²)`, or of the power, `(x²)²`.
+        case(
+            Qi,
+            "x^{2}²",
+            "'²' after 'x^{2}', which has a superscript already, is ambiguous: the two \
+             superscripts show side by side, as one; put 'x^{2}' in parentheses for a power of \
+             it, or write the exponent in one group",
+            (1, 6),
+            "line 1, column 6: '²' after 'x^{2}', which has a superscript already, is \
+             ambiguous: the two superscripts show side by side, as one; put 'x^{2}' in \
+             parentheses for a power of it, or write the exponent in one group\n  \
+             x^{2}²\n       ^",
+        ),
+        case(
+            Qi,
+            "y + x^-2³",
+            "'³' after 'x^-2', which has a superscript already, is ambiguous: the two \
+             superscripts show side by side, as one; put 'x^-2' in parentheses for a power of \
+             it, or write the exponent in one group",
+            (1, 9),
+            "line 1, column 9: '³' after 'x^-2', which has a superscript already, is \
+             ambiguous: the two superscripts show side by side, as one; put 'x^-2' in \
+             parentheses for a power of it, or write the exponent in one group\n  \
+             y + x^-2³\n          ^",
+        ),
+        case(
+            Qi,
+            "x² ⁻¹",
+            "'⁻¹' after 'x²', which has a superscript already, is ambiguous: the two \
+             superscripts show side by side, as one; put 'x²' in parentheses for a power of it, \
+             or write the exponent in one group",
+            (1, 4),
+            "line 1, column 4: '⁻¹' after 'x²', which has a superscript already, is \
+             ambiguous: the two superscripts show side by side, as one; put 'x²' in \
+             parentheses for a power of it, or write the exponent in one group\n  \
+             x² ⁻¹\n     ^^",
+        ),
         case(
             Qi,
             r"y + x^2 \, { } ^3",
