@@ -39,6 +39,53 @@ const IGNORED: &[&str] = &[
     "textstyle",
 ];
 
+/// The sizing commands of [`IGNORED`], which LaTeX requires a delimiter after: `\left(`,
+/// `\bigr)`, never `\left x`.
+const SIZING: &[&str] = &[
+    "left", "right", "big", "Big", "bigg", "Bigg", "bigl", "bigr", "Bigl", "Bigr", "biggl",
+    "biggr", "Biggl", "Biggr",
+];
+
+/// What LaTeX takes for a delimiter after a sizing command: a character (`.` is the empty
+/// one, `\left.`) or a command; superint reads `(`, `)`, `\{` and `\}`, and refuses the
+/// others where they stand, as the characters and commands they are.
+fn is_delimiter(rest: &str) -> bool {
+    const COMMANDS: &[&str] = &[
+        "{",
+        "}",
+        "|",
+        "langle",
+        "rangle",
+        "lbrace",
+        "rbrace",
+        "lbrack",
+        "rbrack",
+        "vert",
+        "Vert",
+        "lvert",
+        "rvert",
+        "lVert",
+        "rVert",
+        "lfloor",
+        "rfloor",
+        "lceil",
+        "rceil",
+        "backslash",
+        "uparrow",
+        "downarrow",
+        "updownarrow",
+        "Uparrow",
+        "Downarrow",
+        "Updownarrow",
+        "lgroup",
+        "rgroup",
+    ];
+    match command(rest) {
+        Some((word, _)) => COMMANDS.contains(&word),
+        None => rest.starts_with(['(', ')', '[', ']', '|', '.', '/', '<', '>']),
+    }
+}
+
 /// The commands of a fraction, `\frac{a}{b}` ([`Tok::Frac`]), which the parser takes for a
 /// whole divisor as it does one in parentheses.
 pub(super) const FRACTIONS: &[&str] = &["frac", "tfrac", "dfrac"];
@@ -94,11 +141,36 @@ fn no_command(span: Span) -> ParseError {
 
 impl Lexer<'_> {
     /// The length of the spacing or sizing command at the start of `rest` (`\,`, `\quad`,
-    /// `\left`), which is skipped as a space is; `None` for any other text.
-    pub(crate) fn latex_space(rest: &str) -> Option<usize> {
-        let (word, len) = command(rest)?;
+    /// `\left`), which is skipped as a space is; `None` for any other text. A sizing command
+    /// with no delimiter after it (`\left x`, which LaTeX refuses) is an error, at the
+    /// command, which stands at byte `at` of the source.
+    pub(crate) fn latex_space(rest: &str, at: usize) -> Result<Option<usize>, ParseError> {
+        let Some((word, len)) = command(rest) else {
+            return Ok(None);
+        };
         let space = matches!(word, "," | ";" | ":" | "!" | " ") || IGNORED.contains(&word);
-        space.then_some(len)
+        if !space {
+            return Ok(None);
+        }
+        let after = rest[len..].trim_start();
+        if SIZING.contains(&word) && !is_delimiter(after) {
+            let found = match after.chars().next() {
+                None => "end of input".to_string(),
+                Some('\\') => match command(after) {
+                    Some((next, _)) => format!("'\\{next}'"),
+                    None => "'\\'".to_string(),
+                },
+                Some(c) => format!("'{c}'"),
+            };
+            return Err(ParseError::new(
+                Span::new(at, at + len),
+                format!(
+                    "'\\{word}' takes a delimiter after it, as in LaTeX ('\\{word}(', \
+                     '\\{word}\\{{'), found {found}; leave it out where none is meant"
+                ),
+            ));
+        }
+        Ok(Some(len))
     }
 
     /// The length of the empty group at the start of `rest` that carries a superscript
@@ -292,7 +364,7 @@ impl Lexer<'_> {
                     out.push('_');
                 }
                 '{' => out.push_str(&self.group_at(self.pos)?),
-                '\\' => match Self::latex_space(rest) {
+                '\\' => match Self::latex_space(rest, self.pos)? {
                     Some(len) => self.pos += len,
                     None => out.push_str(&self.latex_base()?),
                 },

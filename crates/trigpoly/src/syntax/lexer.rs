@@ -113,7 +113,7 @@ impl<'a> Lexer<'a> {
         loop {
             self.eat_while(|c| c.is_whitespace() || c == '\u{feff}');
             let rest = &self.src[self.pos..];
-            match Self::latex_space(rest).or_else(|| Self::empty_base(rest)) {
+            match Self::latex_space(rest, self.pos)?.or_else(|| Self::empty_base(rest)) {
                 Some(len) => self.pos += len,
                 None => break,
             }

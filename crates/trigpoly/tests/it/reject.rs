@@ -306,6 +306,27 @@ fn cases() -> Vec<Case> {
             (1, 3),
             "line 1, column 3: exponents must be integer constants\n  x^{2\\,y}\n    ^^^^^^",
         ),
+        // A sizing command with no delimiter after it, which LaTeX refuses, was skipped.
+        case(
+            Qi,
+            r"\left x + y",
+            "'\\left' takes a delimiter after it, as in LaTeX ('\\left(', '\\left\\{'), found \
+             'x'; leave it out where none is meant",
+            (1, 1),
+            "line 1, column 1: '\\left' takes a delimiter after it, as in LaTeX ('\\left(', \
+             '\\left\\{'), found 'x'; leave it out where none is meant\n  \\left x + y\n  \
+             ^^^^^",
+        ),
+        case(
+            Qi,
+            r"\bigl(x + y\bigr",
+            "'\\bigr' takes a delimiter after it, as in LaTeX ('\\bigr(', '\\bigr\\{'), found \
+             end of input; leave it out where none is meant",
+            (1, 12),
+            "line 1, column 12: '\\bigr' takes a delimiter after it, as in LaTeX ('\\bigr(', \
+             '\\bigr\\{'), found end of input; leave it out where none is meant\n  \
+             \\bigl(x + y\\bigr\n             ^^^^^",
+        ),
         // A superscript on an empty group after one, `x^{2}{}^{3}`, which LaTeX sets as
         // `x^{23}`, was read as `x^(2³)`; after a power written otherwise, as `(x²)³`.
         case(
