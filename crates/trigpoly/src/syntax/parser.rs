@@ -397,7 +397,7 @@ impl Parser<'_> {
     /// as `x²²`, which no reading should guess.
     #[cold]
     fn superscript_after_superscript(&self, lhs: &Expr) -> ParseError {
-        let base = self.quote(lhs.span);
+        let base = self.quote(self.sized(lhs.span));
         let (span, set) = match self.tok.tok {
             Tok::Sup { .. } => (
                 self.tok.span,
@@ -418,6 +418,26 @@ impl Parser<'_> {
                 self.quote(span)
             ),
         )
+    }
+
+    /// `span` with the sizing command before it where it opens with a delimiter that one
+    /// sizes, `\left(x\right)^{2}` of `(x\right)^{2}`: a node in parentheses spans them, and the
+    /// lexer skips the command as it does a space, so that a quoted node would hold half of a
+    /// `\left … \right` pair.
+    fn sized(&self, span: Span) -> Span {
+        const SIZING: [&str; 9] = [
+            "left", "bigl", "Bigl", "biggl", "Biggl", "big", "Big", "bigg", "Bigg",
+        ];
+        let text = &self.src[span.start..span.end];
+        if !(text.starts_with('(') || text.starts_with("\\{")) {
+            return span;
+        }
+        let before = self.src[..span.start].trim_end();
+        let command = SIZING.iter().find_map(|word| {
+            let start = before.strip_suffix(word)?.strip_suffix('\\')?;
+            Some(start.len())
+        });
+        command.map_or(span, |start| Span::new(start, span.end))
     }
 
     /// Parses the right operand of `op` and replaces `lhs` (of height `height`) by `lhs op rhs`,

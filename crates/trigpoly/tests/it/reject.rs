@@ -367,6 +367,33 @@ fn cases() -> Vec<Case> {
              parentheses for a power of it, or write the exponent in one group\n  \
              x^-(2){}^3\n        ^^^^",
         ),
+        // A power in `\left( … \right)` is quoted whole, where the quote began at its `(`.
+        case(
+            Qi,
+            r"\left(x\right)^{2}{}^{3}",
+            "'{}^{3}' after '\\left(x\\right)^{2}', which has a superscript already, is \
+             ambiguous: LaTeX sets the two superscripts side by side, as one; put \
+             '\\left(x\\right)^{2}' in parentheses for a power of it, or write the exponent in \
+             one group",
+            (1, 19),
+            "line 1, column 19: '{}^{3}' after '\\left(x\\right)^{2}', which has a superscript \
+             already, is ambiguous: LaTeX sets the two superscripts side by side, as one; put \
+             '\\left(x\\right)^{2}' in parentheses for a power of it, or write the exponent in \
+             one group\n  \\left(x\\right)^{2}{}^{3}\n                    ^^^^^^",
+        ),
+        case(
+            Qi,
+            r"y \Bigl\{x, y\Bigr\}^2²",
+            "'²' after '\\Bigl\\{x, y\\Bigr\\}^2', which has a superscript already, is \
+             ambiguous: the two superscripts show side by side, as one; put \
+             '\\Bigl\\{x, y\\Bigr\\}^2' in parentheses for a power of it, or write the exponent \
+             in one group",
+            (1, 23),
+            "line 1, column 23: '²' after '\\Bigl\\{x, y\\Bigr\\}^2', which has a superscript \
+             already, is ambiguous: the two superscripts show side by side, as one; put \
+             '\\Bigl\\{x, y\\Bigr\\}^2' in parentheses for a power of it, or write the exponent \
+             in one group\n  y \\Bigl\\{x, y\\Bigr\\}^2²\n                        ^",
+        ),
         // A superscript character after a superscript shows beside it as one, `x²²`: it was
         // read as a power of the exponent, `x^(2²)`, or of the power, `(x²)²`.
         case(
