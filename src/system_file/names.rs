@@ -693,8 +693,16 @@ pub(crate) fn check_display(
             "this one is empty (leave display out to show the name)",
         );
     }
+    let mut open: Vec<usize> = Vec::new();
     for (k, c) in name.char_indices() {
         let here = text.source_span(Span::new(k, k + c.len_utf8()));
+        match c {
+            '(' => open.push(k),
+            ')' if open.pop().is_none() => {
+                return refuse(here, "this ')' closes no '('");
+            }
+            _ => {}
+        }
         if MARKUP.contains(c) {
             return refuse(here, &format!("'{c}' is markup in Markdown or LaTeX"));
         }
@@ -731,6 +739,17 @@ pub(crate) fn check_display(
                  end or beside another '_' or a space",
             );
         }
+        // A name begins with a letter: `₊`, `2` or `'` alone would print as a mark, a number
+        // (`{2, H}`) or a prime of what stands before it, `2x` as a product.
+        if k == 0 && !c.is_alphabetic() {
+            return refuse(here, &format!("it begins with '{c}', not with a letter"));
+        }
+    }
+    if let Some(&k) = open.last() {
+        return refuse(
+            text.source_span(Span::new(k, k + 1)),
+            "this '(' is never closed",
+        );
     }
     Ok(())
 }

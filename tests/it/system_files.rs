@@ -514,7 +514,7 @@ fn base_with(from: &str, to: &str) -> Vec<u8> {
 
 /// The display names a file may not give, on `BASE`'s function `A` (line 10): the case, the
 /// display as the file writes it, the column the message points at, and why.
-const BAD_DISPLAY_NAMES: [(&str, &str, usize, &str); 16] = [
+const BAD_DISPLAY_NAMES: [(&str, &str, usize, &str); 20] = [
     (
         "display name with markup",
         "a^b^c",
@@ -594,6 +594,33 @@ const BAD_DISPLAY_NAMES: [(&str, &str, usize, &str); 16] = [
         "a\u{2800}b",
         13,
         "LaTeX has no letter U+2800 ",
+    ),
+    // A display that begins with no letter printed as a mark (`{₊, H}`), a number (`{2, H}`,
+    // the bracket of 2) or a product (`2x`); one with a parenthesis unclosed as a piece of an
+    // expression's (`{x(, H}`).
+    (
+        "display name a subscript sign alone",
+        "₊",
+        12,
+        "it begins with '₊', not with a letter",
+    ),
+    (
+        "display name a number",
+        "2",
+        12,
+        "it begins with '2', not with a letter",
+    ),
+    (
+        "display name with a parenthesis never closed",
+        "x(t",
+        13,
+        "this '(' is never closed",
+    ),
+    (
+        "display name with a parenthesis never opened",
+        "x)",
+        13,
+        "this ')' closes no '('",
     ),
     ("display name a lone bar", "\u{304}", 12, BAR),
     (
