@@ -83,8 +83,13 @@ impl LatexNames {
             }
         }
         for f in &file.families {
-            if let Some((_, latex)) = trigpoly::shown_forms(&f.display) {
+            if let Some((text, latex)) = trigpoly::shown_forms(&f.display) {
                 keep(&mut out.families, &latex, &f.name);
+                // The text an instance prints as reads back too where its LaTeX spells another
+                // letter: omicron's `ο_{1,1}`, whose LaTeX is `\mathit{o}_{1,1}`.
+                if !text.contains(' ') {
+                    keep_spelling(&mut out.families, text, &f.name);
+                }
             }
         }
         out

@@ -3231,6 +3231,41 @@ fn echoes_read_back_to_the_same_normal_form() {
     assert_eq!(expand("exp(-i*theta)^2").0, "(e^{−iθ})²");
 }
 
+/// A family named by a Greek letter prints its instances with that letter, `ο_{1,1}` of a family
+/// `omicron`, which reads back as the instance, as `θ_{1,1}` of a family `theta` did; omicron's
+/// was an unknown name, its LaTeX `\mathit{o}_{1,1}` spelling the Latin `o`. A function `o`
+/// beside it stays apart (`o`, with no indices, in text and LaTeX alike).
+#[test]
+fn a_greek_familys_instance_reads_back_as_printed() {
+    let dir = scratch("greek-family");
+    std::fs::write(
+        dir.join("omicron.toml"),
+        "hamiltonian = \"p_x^2/2\"\n[phase_space]\ncoordinates = [\"x\"]\n\
+         [[function]]\nname = \"o\"\nvalue = \"x\"\n\
+         [[family]]\nname = \"omicron\"\nvalue = \"x^m*p_x^n\"\n\
+         [[family]]\nname = \"theta\"\nvalue = \"x^m*p_x^(2*n)\"\n",
+    )
+    .expect("write");
+    let expand = |e: &str| -> (String, String) {
+        let o = superint_in(
+            &dir,
+            &["expand", "omicron.toml", "--format", "json", "--", e],
+        );
+        assert_eq!(o.status.code(), Some(0), "{e}: {}", text(&o.stderr));
+        let v: Value = serde_json::from_slice(&o.stdout).expect("JSON");
+        let line = &v["equations"][0]["lines"][0];
+        let field = |k: &str| line[k].as_str().expect("a string").to_string();
+        (field("lhs"), field("ascii"))
+    };
+    let (echo, value) = expand("omicron_1_2 + 2*theta_2_1 + o");
+    assert_eq!(echo, "ο_{1,2} + 2 θ_{2,1} + o");
+    assert_eq!(expand(&echo).1, value, "{echo}");
+    for written in ["ο_{1,2}", "o_{1,2}", r"\mathit{o}_{1,2}", "omicron_1_2"] {
+        assert_eq!(expand(written).1, "x*p_x^2", "{written}");
+    }
+    assert_eq!(expand(r"\mathit{o}").1, "x");
+}
+
 /// The exponential is `e^{…}` (with braces) in what superint reads and prints, unless the
 /// system declares a name `e`: then `e^2` is its square, and the exponential echoes as
 /// `exp(…)`, which reads back.
