@@ -66,8 +66,9 @@ impl BracketArgs {
 /// Computes the bracket and prints it.
 pub fn run(job: &BracketJob) -> anyhow::Result<bool> {
     let file = load_system(&job.file, &job.limits)?;
-    let report = bracket_report(&file, &job.f, &job.g, job.when.as_deref())?;
+    let report = bracket_report(&file, &job.f, &job.g, job.when.as_deref());
     super::output::warnings(&file);
+    let report = report?;
     emit(&render(&report, job.output.format, &job.output.options))?;
     Ok(true)
 }

@@ -9,6 +9,7 @@ use brackets::NamedFunction;
 use clap::Args;
 use superint::discovery::{closure_report_for, parse_symbolic};
 use superint::render::render;
+use superint::report::Report;
 use superint::system_file::{Caller, PrintedNames};
 
 use super::limits::LimitsArgs;
@@ -107,6 +108,16 @@ pub fn run(job: &ClosureJob) -> anyhow::Result<bool> {
         None => (Some(PathBuf::from(&a.args[0])), &a.args[1..]),
     };
     let subject = Subject::open(file.as_ref(), a.system.as_deref(), true, &a.limits)?;
+    // What the file and the command line read in doubt is said however the run ends.
+    let report = close(a, names, &subject);
+    subject.warnings();
+    let report = report?;
+    emit(&render(&report, job.output.format, &job.output.options))?;
+    Ok(report.all_proved())
+}
+
+/// The closure of the generators `names` of `subject` as `a` asks, as a report.
+fn close(a: &ClosureArgs, names: &[String], subject: &Subject) -> anyhow::Result<Report> {
     let mut generators = Vec::new();
     let mut defined = Vec::new();
     // How the system's names print, and then each generator defined so far.
@@ -242,8 +253,5 @@ pub fn run(job: &ClosureJob) -> anyhow::Result<bool> {
         ),
         false => anyhow::Error::new(e).context("computing the closure"),
     })?;
-    let report = subject.tag(report);
-    subject.warnings();
-    emit(&render(&report, job.output.format, &job.output.options))?;
-    Ok(report.all_proved())
+    Ok(subject.tag(report))
 }

@@ -62,8 +62,9 @@ impl ExpandArgs {
 /// Expands the expressions and prints them.
 pub fn run(job: &ExpandJob) -> anyhow::Result<bool> {
     let file = load_system(&job.file, &job.limits)?;
-    let report = expand_report(&file, &job.expressions, job.when.as_deref())?;
+    let report = expand_report(&file, &job.expressions, job.when.as_deref());
     super::output::warnings(&file);
+    let report = report?;
     emit(&render(&report, job.output.format, &job.output.options))?;
     Ok(true)
 }

@@ -253,8 +253,9 @@ pub fn run(job: &PlotJob) -> anyhow::Result<bool> {
         against: args.against.as_deref(),
         section: args.section.as_deref(),
     };
-    let input = file.plot_input(args.at.as_deref(), &args.from, functions)?;
+    let input = file.plot_input(args.at.as_deref(), &args.from, functions);
     super::output::warnings(&file);
+    let input = input?;
     let flow = Flow::at(file.system().space(), &input.hamiltonian, &input.values)
         .context("Hamilton's equations at these values")?
         .with_method(args.method.method());

@@ -73,8 +73,9 @@ impl RankArgs {
 /// Certifies the rank and prints it; whether it is the expected one (if one was given).
 pub fn run(job: &RankJob) -> anyhow::Result<bool> {
     let file = load_system(&job.file, &job.limits)?;
-    let report = rank_report_when(&file, &job.functions, job.expect, job.when.as_deref())?;
+    let report = rank_report_when(&file, &job.functions, job.expect, job.when.as_deref());
     super::output::warnings(&file);
+    let report = report?;
     emit(&render(&report, job.output.format, &job.output.options))?;
     Ok(report.all_as_expected())
 }

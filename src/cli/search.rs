@@ -453,7 +453,17 @@ pub fn run(job: &SearchJob) -> anyhow::Result<bool> {
 fn search_and_print(job: &SearchJob) -> anyhow::Result<bool> {
     let a = &job.args;
     let subject = Subject::open(a.file.as_ref(), a.system.as_deref(), false, &a.limits)?;
-    a.refuse_degrees_without_variables(&subject)?;
+    // What the file and the command line read in doubt is said however the run ends.
+    let report = search(a, &subject);
+    subject.warnings();
+    let report = report?;
+    emit(&render(&report, job.output.format, &job.output.options))?;
+    Ok(report.all_proved())
+}
+
+/// The search of `subject` that `a` asks for, as a report.
+fn search(a: &SearchArgs, subject: &Subject) -> anyhow::Result<Report> {
+    a.refuse_degrees_without_variables(subject)?;
     let mut space = SearchSpace::default()
         .momenta_degree(a.momenta_degree.unwrap_or(DEFAULT_DEGREE))
         .positions_degree(a.positions_degree.unwrap_or(DEFAULT_DEGREE))
@@ -482,17 +492,14 @@ fn search_and_print(job: &SearchJob) -> anyhow::Result<bool> {
         }
     }
     // A file's integrals are restated in its functions and family instances too.
-    let (report, _) = match &subject {
+    let found = match subject {
         Subject::File(file) => file_search_report(file, &options, Caller::CommandLine),
         Subject::Builtin(name, system) => {
             search_report_for(&with_article(name), system, &options, Caller::CommandLine)
         }
-    }
-    .context("searching for integrals")?;
-    let report = subject.tag(report);
-    subject.warnings();
-    emit(&render(&report, job.output.format, &job.output.options))?;
-    Ok(report.all_proved())
+    };
+    let (report, _) = found.context("searching for integrals")?;
+    Ok(subject.tag(report))
 }
 
 #[cfg(test)]

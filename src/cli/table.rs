@@ -61,8 +61,9 @@ impl TableArgs {
 /// Computes the table and prints it.
 pub fn run(job: &TableJob) -> anyhow::Result<bool> {
     let file = load_system(&job.file, &job.limits)?;
-    let report = table_report(&file, &job.names)?;
+    let report = table_report(&file, &job.names);
     super::output::warnings(&file);
+    let report = report?;
     emit(&render(&report, job.output.format, &job.output.options))?;
     // Entries a limit stopped are `?` in the table, and the run ends with an error.
     let undecided: Vec<String> = report

@@ -143,16 +143,19 @@ pub fn run(job: &TowerJob) -> anyhow::Result<bool> {
         }
         SystemArg::File(path) => {
             let file = load_system(path, &job.limits.unwrap_or_default())?;
-            let when = job.when.as_deref().map(|w| file.condition(w)).transpose()?;
-            let report = family_tower_report_with_progress(
-                &file,
-                job.family.as_deref(),
-                job.max,
-                when.as_ref(),
-                &mut progress,
-            )?;
+            let when = job.when.as_deref().map(|w| file.condition(w)).transpose();
+            let report = when.and_then(|when| {
+                family_tower_report_with_progress(
+                    &file,
+                    job.family.as_deref(),
+                    job.max,
+                    when.as_ref(),
+                    &mut progress,
+                )
+            });
+            // What the file and the condition read in doubt is said however the run ends.
             super::output::warnings(&file);
-            report
+            report?
         }
     };
     bar.finish_and_clear();

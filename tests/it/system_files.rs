@@ -276,6 +276,25 @@ fn other_commands_warn_of_names_run_together_on_standard_error() {
              y' for the product\n 1 | x + Lzy\n   |     ^^^\n"
         )
     );
+    // A run that ends with an error says them too, before the error: they were left out.
+    let file_warning = format!("superint: warning: rt.toml:{line}:{column}: 'Lzx'");
+    for args in [
+        vec!["expand", "rt.toml", "Lzy + 1/(x + 1)"],
+        vec!["bracket", "rt.toml", "Lzy", "x^2000", "--max-degree", "10"],
+        vec!["rank", "rt.toml", "Lzy", "1/(x + 1)"],
+        vec!["closure", "rt.toml", "Lz", "--define", "Q=Lzy/(x + 1)"],
+        vec!["search", "rt.toml", "--new-only", "--known", "Lzy/(x + 1)"],
+    ] {
+        let o = superint_in(&dir, &args);
+        let stderr = text(&o.stderr);
+        assert_eq!(o.status.code(), Some(2), "{args:?}: {stderr}");
+        let warned = stderr.find("superint: warning: <command line>:1:1: 'Lzy'");
+        let failed = stderr.find("superint: error:");
+        assert!(
+            stderr.starts_with(&file_warning) && warned.is_some() && warned < failed,
+            "{args:?}: {stderr}"
+        );
+    }
     // Products a physicist writes, and the file's own: nothing said.
     let plain = "name = \"plain\"\nhamiltonian = \"p_x^2/(2*M) + M*omega^2*x^2/2\"\n\
                  [phase_space]\ncoordinates = [\"x\"]\nangles = [\"theta\"]\n\
