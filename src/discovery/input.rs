@@ -255,8 +255,14 @@ pub fn parse_fixed(system: &System, text: &str) -> Result<Vec<(Var, Rational)>, 
         }
         // A decimal is the fraction it writes, as in plot's --at (`0.5` is `1/2`).
         let value = value.trim();
-        let q: Rational = match value.parse() {
+        let q: Rational = match value.parse::<Rational>() {
             Ok(q) => q,
+            Err(e) if e.kind() == trigpoly::RationalErrorKind::ZeroDenominator => {
+                return Err(format!(
+                    "{} is a division by zero: a fraction's denominator is nonzero",
+                    trigpoly::quoted_name(value)
+                ));
+            }
             Err(_) => crate::system_file::decimal_number(value).ok_or_else(|| {
                 format!(
                     "{} is not a number: write a fraction such as 2/3, or a decimal such as 1.5",

@@ -1229,6 +1229,10 @@ fn bad_search_arguments_exit_2_with_a_message() {
             "--fix C=two",
             "--fix: 'two' is not a number: write a fraction such as 2/3, or a decimal such as 1.5",
         ),
+        (
+            "--fix C=3/0",
+            "--fix: '3/0' is a division by zero: a fraction's denominator is nonzero",
+        ),
         ("--fix A=2,B=1,A=3", "--fix: 'A' is given two values"),
         (
             "--when C=2 --fix C=3",

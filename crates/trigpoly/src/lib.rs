@@ -64,7 +64,7 @@ pub use lower::{did_you_mean, did_you_mean_hint, quoted_name, split_names, FUNCT
 pub use lower::{Context, Doubt, NoContext, RunTogether};
 pub use number::{
     Coefficient, ExactDivisor, GaussianAcc, GaussianInteger, GaussianRational, Integer, IntegerAcc,
-    IntegerRing, IntegerView, ParseGaussianError, ParseRationalError, Rational,
+    IntegerRing, IntegerView, ParseGaussianError, ParseRationalError, Rational, RationalErrorKind,
 };
 pub use poly::{CosSinTerm, MonomialIndex, Point, Poly, ReducedRadical, Term, TrigMonomial};
 pub use print::{render_number, superscript, Factored, Style};

@@ -22,7 +22,7 @@ pub use gaussian::{GaussianAcc, GaussianInteger, GaussianRational, ParseGaussian
 pub use integer::{ExactDivisor, Integer, IntegerAcc, IntegerView};
 pub(crate) use integer::{Release, SlotCounts, Wide192, Wide256, WideSlab};
 pub(crate) use rational::Magnitude;
-pub use rational::{ParseRationalError, Rational};
+pub use rational::{ParseRationalError, Rational, RationalErrorKind};
 
 /// `(i^e x)·(i^f y) = i^(e+f)·xy` for values that are each real or imaginary (as
 /// [`IntegerRing::to_real_or_imaginary`] gives them: `(v, true)` for `i·v`): the component

@@ -556,24 +556,84 @@ impl fmt::Debug for Rational {
     }
 }
 
-/// Why a rational number did not parse.
+/// Why a rational number did not parse: the text, and which part of it is wrong
+/// ([`ParseRationalError::kind`]), as num-rational's `ParseRatioError` tells a bad integer
+/// from a zero denominator.
+///
+/// ```
+/// use trigpoly::{RationalErrorKind, Rational};
+///
+/// let err = "3/0".parse::<Rational>().unwrap_err();
+/// assert_eq!(err.input(), "3/0");
+/// assert_eq!(err.kind(), RationalErrorKind::ZeroDenominator);
+/// assert_eq!(
+///     err.to_string(),
+///     "not an exact rational number: \"3/0\" (the denominator is zero; \
+///      expected an integer or a fraction like -3/4)"
+/// );
+/// ```
 #[derive(Clone, Debug, PartialEq, Eq, thiserror::Error)]
-#[error("not an exact rational number: {0:?} (expected an integer or a fraction like -3/4)")]
-pub struct ParseRationalError(pub String);
+#[error(
+    "not an exact rational number: {input:?} ({kind}; expected an integer or a fraction like -3/4)"
+)]
+pub struct ParseRationalError {
+    /// The text that did not parse.
+    input: String,
+    /// Which part of it is wrong.
+    kind: RationalErrorKind,
+}
+
+/// Which part of a text that is no rational number is wrong.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum RationalErrorKind {
+    /// The numerator (the whole text, when there is no `/`) is no integer.
+    Numerator,
+    /// The denominator is no integer.
+    Denominator,
+    /// The denominator is zero.
+    ZeroDenominator,
+}
+
+impl fmt::Display for RationalErrorKind {
+    /// The fault as a clause: `the numerator is no integer`, `the denominator is zero`.
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.write_str(match self {
+            RationalErrorKind::Numerator => "the numerator is no integer",
+            RationalErrorKind::Denominator => "the denominator is no integer",
+            RationalErrorKind::ZeroDenominator => "the denominator is zero",
+        })
+    }
+}
+
+impl ParseRationalError {
+    /// The text that did not parse.
+    pub fn input(&self) -> &str {
+        &self.input
+    }
+
+    /// Which part of the text is wrong.
+    pub fn kind(&self) -> RationalErrorKind {
+        self.kind
+    }
+}
 
 impl FromStr for Rational {
     type Err = ParseRationalError;
+    /// Reads an integer or a fraction `n/d` of integers (`-3/4`, ` 6 / -8 `), in lowest terms.
     fn from_str(s: &str) -> Result<Self, Self::Err> {
-        let err = || ParseRationalError(s.to_string());
+        let err = |kind| ParseRationalError {
+            input: s.to_string(),
+            kind,
+        };
         let t = s.trim();
         let (n, d) = match t.split_once('/') {
             Some((n, d)) => (n.trim(), d.trim()),
             None => (t, "1"),
         };
-        let n: BigInt = n.parse().map_err(|_| err())?;
-        let d: BigInt = d.parse().map_err(|_| err())?;
+        let n: BigInt = n.parse().map_err(|_| err(RationalErrorKind::Numerator))?;
+        let d: BigInt = d.parse().map_err(|_| err(RationalErrorKind::Denominator))?;
         if d.is_zero() {
-            return Err(err());
+            return Err(err(RationalErrorKind::ZeroDenominator));
         }
         Ok(Rational::from_big(big::reduced(n, d)))
     }
@@ -793,5 +853,34 @@ impl Neg for Rational {
     type Output = Rational;
     fn neg(self) -> Rational {
         -&self
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// A text that is no rational number says which part is wrong, where the error held the
+    /// text alone: a numerator or denominator that is no integer, or a zero denominator.
+    #[test]
+    fn a_rational_that_does_not_parse_says_which_part_is_wrong() {
+        for (text, kind) in [
+            ("", RationalErrorKind::Numerator),
+            ("x/2", RationalErrorKind::Numerator),
+            ("1.5", RationalErrorKind::Numerator),
+            ("3/", RationalErrorKind::Denominator),
+            ("3/4/5", RationalErrorKind::Denominator),
+            ("3/0", RationalErrorKind::ZeroDenominator),
+            (" -7 / -0 ", RationalErrorKind::ZeroDenominator),
+        ] {
+            let err = text.parse::<Rational>().unwrap_err();
+            assert_eq!((err.input(), err.kind()), (text, kind), "{text:?}");
+        }
+        assert_eq!(
+            "x/2".parse::<Rational>().unwrap_err().to_string(),
+            "not an exact rational number: \"x/2\" (the numerator is no integer; expected an \
+             integer or a fraction like -3/4)"
+        );
+        assert_eq!(" 6 / -8 ".parse::<Rational>(), Ok(Rational::new(-3, 4)));
     }
 }
