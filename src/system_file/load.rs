@@ -1249,7 +1249,7 @@ impl<'a> Builder<'a> {
 
     /// Refuses a `name`, `source` or `description` with a control or invisible character,
     /// which reports would show as `�` or with their lines broken (a description's line
-    /// breaks are its own: [`check_shown_text`]).
+    /// breaks and tabs are its own: [`check_shown_text`]).
     fn check_texts(&self, model: &SystemModel) -> Result<(), FileError> {
         for (key, value, lines) in [
             ("the system's name", &model.name, false),

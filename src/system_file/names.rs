@@ -634,12 +634,13 @@ fn alike(new: &Owner, notation: Notation, form: &str, other: &Owner) -> String {
 }
 
 /// The first character of `text` that shows nothing, or moves or turns the text around it
-/// ([`invisible`]), with its byte offset: a line break too unless `lines` allows it (a
-/// description's paragraphs), `\r` only before `\n`.
+/// ([`invisible`]), with its byte offset: a line break or a tab too unless `lines` allows
+/// them (a description's paragraphs and their indents, which reports print as written,
+/// [`printable`](crate::render::printable)), `\r` only before `\n`.
 pub(crate) fn first_invisible(text: &str, lines: bool) -> Option<(usize, char)> {
     text.char_indices().find(|&(k, c)| {
-        let line_break = c == '\n' || (c == '\r' && text[k + 1..].starts_with('\n'));
-        invisible(c) && !(lines && line_break)
+        let layout = matches!(c, '\n' | '\t') || (c == '\r' && text[k + 1..].starts_with('\n'));
+        invisible(c) && !(lines && layout)
     })
 }
 

@@ -4828,20 +4828,21 @@ fn a_claims_echo_writes_names_as_its_expressions_do() {
 
 /// A description and a source may run over several lines (a TOML string of several lines, its
 /// line breaks `\r\n` in a file written so, which printed as `�` and a line break), which the
-/// reports keep as line breaks; an id or the system's name may not ("a claim's id with an
-/// escaped line break" in [`bad_inputs`]).
+/// reports keep as line breaks, and indent them with tabs, which the reports print as written
+/// (a tab was refused as a control character); an id or the system's name may not ("a claim's
+/// id with an escaped line break" in [`bad_inputs`]).
 #[test]
 fn a_description_may_run_over_lines() {
     let dir = scratch("description-lines");
     let file = BASE.replace(
         "name = \"oscillator\"",
-        "name = \"oscillator\"\ndescription = \"\"\"\nOne line,\nand another.\"\"\"\n\
+        "name = \"oscillator\"\ndescription = \"\"\"\nOne line,\n\tand another.\"\"\"\n\
          source = \"A. Author,\\r\\nsome journal\"",
     );
     std::fs::write(dir.join("lines.toml"), file).expect("write");
     let o = superint_in(&dir, &["check", "lines.toml", "--no-timings"]);
     assert_eq!(o.status.code(), Some(0), "{}", text(&o.stderr));
     let out = text(&o.stdout);
-    assert!(out.contains("One line,\nand another."), "{out}");
+    assert!(out.contains("One line,\n\tand another."), "{out}");
     assert!(out.contains("Source: A. Author,\nsome journal"), "{out}");
 }
