@@ -16,35 +16,21 @@ use super::lexer::{Lexer, Tok};
 use super::parser::{too_deep, MAX_DEPTH};
 use crate::varset::letter_of_command;
 
-/// Commands that space or size and mean nothing to an expression: `\quad`, `\left(`,
-/// `\bigl(`, `\displaystyle`.
-const IGNORED: &[&str] = &[
-    "quad",
-    "qquad",
-    "left",
-    "right",
-    "big",
-    "Big",
-    "bigg",
-    "Bigg",
-    "bigl",
-    "bigr",
-    "Bigl",
-    "Bigr",
-    "biggl",
-    "biggr",
-    "Biggl",
-    "Biggr",
-    "displaystyle",
-    "textstyle",
+/// Commands that space or set a style and mean nothing to an expression: `\quad`,
+/// `\displaystyle`; the sizing commands, [`SIZING_OPEN`] and [`SIZING_CLOSE`], mean nothing
+/// either but take a delimiter.
+const IGNORED: &[&str] = &["quad", "qquad", "displaystyle", "textstyle"];
+
+/// The sizing commands that open a pair or size a delimiter either way, which LaTeX requires
+/// a delimiter after (`\left(`, `\bigl\{`, `\big(`, never `\left x`), and which a quote of
+/// the parenthesis they size starts at (`Parser::sized`).
+pub(super) const SIZING_OPEN: &[&str] = &[
+    "left", "big", "Big", "bigg", "Bigg", "bigl", "Bigl", "biggl", "Biggl",
 ];
 
-/// The sizing commands of [`IGNORED`], which LaTeX requires a delimiter after: `\left(`,
-/// `\bigr)`, never `\left x`.
-const SIZING: &[&str] = &[
-    "left", "right", "big", "Big", "bigg", "Bigg", "bigl", "bigr", "Bigl", "Bigr", "biggl",
-    "biggr", "Biggl", "Biggr",
-];
+/// The sizing commands that close a pair, which likewise take a delimiter: `\right)`,
+/// `\bigr\}`.
+const SIZING_CLOSE: &[&str] = &["right", "bigr", "Bigr", "biggr", "Biggr"];
 
 /// What LaTeX takes for a delimiter after a sizing command: a character (`.` is the empty
 /// one, `\left.`) or a command; superint reads `(`, `)`, `\{` and `\}`, and refuses the
@@ -148,12 +134,14 @@ impl Lexer<'_> {
         let Some((word, len)) = command(rest) else {
             return Ok(None);
         };
+        let closing = SIZING_CLOSE.contains(&word);
+        let sizing = closing || SIZING_OPEN.contains(&word);
         let space = matches!(word, "," | ";" | ":" | "!" | " ") || IGNORED.contains(&word);
-        if !space {
+        if !space && !sizing {
             return Ok(None);
         }
         let after = rest[len..].trim_start();
-        if SIZING.contains(&word) && !is_delimiter(after) {
+        if sizing && !is_delimiter(after) {
             let found = match after.chars().next() {
                 None => "end of input".to_string(),
                 Some('\\') => match command(after) {
@@ -162,11 +150,15 @@ impl Lexer<'_> {
                 },
                 Some(c) => format!("'{c}'"),
             };
+            let (paren, brace) = match closing {
+                true => (")", "\\}"),
+                false => ("(", "\\{"),
+            };
             return Err(ParseError::new(
                 Span::new(at, at + len),
                 format!(
-                    "'\\{word}' takes a delimiter after it, as in LaTeX ('\\{word}(', \
-                     '\\{word}\\{{'), found {found}; leave it out where none is meant"
+                    "'\\{word}' takes a delimiter after it, as in LaTeX ('\\{word}{paren}', \
+                     '\\{word}{brace}'), found {found}; leave it out where none is meant"
                 ),
             ));
         }

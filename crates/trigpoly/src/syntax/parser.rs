@@ -7,7 +7,7 @@
 use num_bigint::BigInt;
 
 use super::error::{line_col, ParseError, Span};
-use super::latex::FRACTIONS;
+use super::latex::{FRACTIONS, SIZING_OPEN};
 use super::lexer::{Lexer, Tok, Token};
 
 /// Maximum nesting of parentheses, calls, brackets and operators (the operand of an operator
@@ -425,15 +425,12 @@ impl Parser<'_> {
     /// lexer skips the command as it does a space, so that a quoted node would hold half of a
     /// `\left … \right` pair.
     fn sized(&self, span: Span) -> Span {
-        const SIZING: [&str; 9] = [
-            "left", "bigl", "Bigl", "biggl", "Biggl", "big", "Big", "bigg", "Bigg",
-        ];
         let text = &self.src[span.start..span.end];
         if !(text.starts_with('(') || text.starts_with("\\{")) {
             return span;
         }
         let before = self.src[..span.start].trim_end();
-        let command = SIZING.iter().find_map(|word| {
+        let command = SIZING_OPEN.iter().find_map(|word| {
             let start = before.strip_suffix(word)?.strip_suffix('\\')?;
             Some(start.len())
         });

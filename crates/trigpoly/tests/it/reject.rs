@@ -317,15 +317,26 @@ fn cases() -> Vec<Case> {
              '\\left\\{'), found 'x'; leave it out where none is meant\n  \\left x + y\n  \
              ^^^^^",
         ),
+        // A closing one is shown with a closing delimiter, `\bigr)` (it was `\bigr(`).
         case(
             Qi,
             r"\bigl(x + y\bigr",
-            "'\\bigr' takes a delimiter after it, as in LaTeX ('\\bigr(', '\\bigr\\{'), found \
+            "'\\bigr' takes a delimiter after it, as in LaTeX ('\\bigr)', '\\bigr\\}'), found \
              end of input; leave it out where none is meant",
             (1, 12),
-            "line 1, column 12: '\\bigr' takes a delimiter after it, as in LaTeX ('\\bigr(', \
-             '\\bigr\\{'), found end of input; leave it out where none is meant\n  \
+            "line 1, column 12: '\\bigr' takes a delimiter after it, as in LaTeX ('\\bigr)', \
+             '\\bigr\\}'), found end of input; leave it out where none is meant\n  \
              \\bigl(x + y\\bigr\n             ^^^^^",
+        ),
+        case(
+            Qi,
+            r"\Big(x\Big",
+            "'\\Big' takes a delimiter after it, as in LaTeX ('\\Big(', '\\Big\\{'), found end \
+             of input; leave it out where none is meant",
+            (1, 7),
+            "line 1, column 7: '\\Big' takes a delimiter after it, as in LaTeX ('\\Big(', \
+             '\\Big\\{'), found end of input; leave it out where none is meant\n  \
+             \\Big(x\\Big\n        ^^^^",
         ),
         // A superscript on an empty group after one, `x^{2}{}^{3}`, which LaTeX sets as
         // `x^{23}`, was read as `x^(2³)`; after a power written otherwise, as `(x²)³`.
