@@ -418,13 +418,14 @@ impl PaperClaim {
     /// Checks the claim exactly; a claim of kind [`ClaimKind::Rank`] is refused
     /// ([`EngineError::Invalid`]): a rank is an [`Item::Rank`], certified from its functions.
     pub fn check(&self) -> Result<ClaimResult, EngineError> {
-        let identity = ClaimResult::from(self.claim.check()?);
-        Ok(match self.kind {
-            ClaimKind::Identity => identity,
+        let identity = || self.claim.check().map(ClaimResult::from);
+        match self.kind {
+            ClaimKind::Identity => identity(),
             // A nonvanishing claim is proved by the nonzero value its "residual" is.
             ClaimKind::Nonvanishing => {
+                let identity = identity()?;
                 let witness = identity.residual.clone();
-                ClaimResult {
+                Ok(ClaimResult {
                     kind: ClaimKind::Nonvanishing,
                     proved: witness.is_some(),
                     residual: None,
@@ -433,16 +434,15 @@ impl PaperClaim {
                         .then(|| "the value is identically zero".into()),
                     witness,
                     ..identity
-                }
+                })
             }
-            ClaimKind::Rank => {
-                return Err(EngineError::Invalid(format!(
-                    "{} is a claim of two sides, not a rank: a rank is certified from its \
-                     functions (Item::Rank)",
-                    self.claim.id
-                )))
-            }
-        })
+            // Refused before its sides are computed, which a rank has none of.
+            ClaimKind::Rank => Err(EngineError::Invalid(format!(
+                "{} is a claim of two sides, not a rank: a rank is certified from its \
+                 functions (Item::Rank)",
+                self.claim.id
+            ))),
+        }
     }
 }
 

@@ -1378,3 +1378,36 @@ fn a_programs_long_residual_names_the_render_option() {
     let own = own.with_caller(Caller::CommandLine);
     assert!(render(&own, Format::Text, &options).contains(flag));
 }
+
+/// A paper's claim of kind rank is refused by its check before its sides are computed: a rank
+/// has none (an `Item::Rank` is certified from its functions), where the check computed them
+/// first and gave their error, here the sides' two variable sets, instead of the refusal.
+#[test]
+fn a_paper_claim_of_kind_rank_is_refused_before_its_sides_are_computed() {
+    use superint::paper::PaperClaim;
+    let one = VarSet::builder().coordinate("x").build().unwrap();
+    let other = VarSet::builder().coordinate("y").build().unwrap();
+    let claim = Claim::new(
+        "R1",
+        "rank(x) = 1",
+        Expr::parse(&one, "x").unwrap(),
+        Expr::parse(&other, "y").unwrap(),
+    );
+    let rank = PaperClaim {
+        claim: claim.clone(),
+        kind: ClaimKind::Rank,
+    };
+    let Err(EngineError::Invalid(why)) = rank.check() else {
+        panic!("refused as no rank: {:?}", rank.check());
+    };
+    assert!(
+        why.starts_with("R1 is a claim of two sides, not a rank"),
+        "{why}"
+    );
+    // The same sides as an identity are computed, and their error is the answer.
+    let identity = PaperClaim {
+        claim,
+        kind: ClaimKind::Identity,
+    };
+    assert!(matches!(identity.check(), Err(EngineError::Algebra(_))));
+}
