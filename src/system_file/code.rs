@@ -225,16 +225,8 @@ impl LoadedSystem {
                 "a claim's id is empty",
             ));
         }
-        if let Some((_, c)) = super::names::first_invisible(id, false) {
-            let code = c as u32;
-            return Err(FileError::new(
-                ErrorKind::Claim,
-                &origin,
-                format!(
-                    "a claim's id is shown in reports as written: U+{code:04X} is an invisible \
-                     or control character"
-                ),
-            ));
+        if let Some((_, why)) = super::names::unshowable("a claim's id", id, false) {
+            return Err(FileError::new(ErrorKind::Claim, &origin, why));
         }
         let (source, claim_at, when_at) = two_lines(&origin, claim, when);
         let text = Text::within(&source, claim_at.clone());

@@ -637,36 +637,46 @@ fn alike(new: &Owner, notation: Notation, form: &str, other: &Owner) -> String {
 /// ([`invisible`]), with its byte offset: a line break or a tab too unless `lines` allows
 /// them (a description's paragraphs and their indents, which reports print as written,
 /// [`printable`](crate::render::printable)), `\r` only before `\n`.
-pub(crate) fn first_invisible(text: &str, lines: bool) -> Option<(usize, char)> {
+fn first_invisible(text: &str, lines: bool) -> Option<(usize, char)> {
     text.char_indices().find(|&(k, c)| {
         let layout = matches!(c, '\n' | '\t') || (c == '\r' && text[k + 1..].starts_with('\n'));
         invisible(c) && !(lines && layout)
     })
 }
 
+/// Why reports could not show `text` as written, where it holds a control or invisible
+/// character ([`first_invisible`]; `lines` as there): the character's byte range in `text`,
+/// and the message, `{what} is shown in reports as written: U+0009 is …`, that a file's
+/// texts ([`check_shown_text`]) and a claim added in code share.
+pub(crate) fn unshowable(what: &str, text: &str, lines: bool) -> Option<(Span, String)> {
+    let (k, c) = first_invisible(text, lines)?;
+    let why = format!(
+        "{what} is shown in reports as written: {}",
+        invisible_named(c)
+    );
+    Some((Span::new(k, k + c.len_utf8()), why))
+}
+
+/// `U+0009 is an invisible or control character`, of `c`.
+fn invisible_named(c: char) -> String {
+    format!("U+{:04X} is an invisible or control character", c as u32)
+}
+
 /// Refuses a text that reports show as it is written (`what`: `a claim's id`, the system's
 /// `name`; with `lines`, its `description` or `source`, which may run over several lines)
-/// when it holds a control or invisible character ([`first_invisible`]): a tab or a line
-/// break in an id broke the report's layout, and an escape printed as `�`. The message
-/// points at the character.
+/// when it holds a control or invisible character ([`unshowable`]): a tab or a line break in
+/// an id broke the report's layout, and an escape printed as `�`. The message points at the
+/// character.
 pub(crate) fn check_shown_text(
     source: &Source,
     text: &Text,
     (what, kind): (&str, ErrorKind),
     lines: bool,
 ) -> Result<(), FileError> {
-    let Some((k, c)) = first_invisible(&text.value, lines) else {
-        return Ok(());
-    };
-    let code = c as u32;
-    Err(source.error(
-        kind,
-        text.source_span(Span::new(k, k + c.len_utf8())),
-        format!(
-            "{what} is shown in reports as written: U+{code:04X} is an invisible or control \
-             character"
-        ),
-    ))
+    match unshowable(what, &text.value, lines) {
+        Some((span, why)) => Err(source.error(kind, text.source_span(span), why)),
+        None => Ok(()),
+    }
 }
 
 /// Refuses a display name (`text`, written at `whole` in `source`) that would not show as
@@ -708,11 +718,7 @@ pub(crate) fn check_display(
             return refuse(here, &format!("'{c}' is markup in Markdown or LaTeX"));
         }
         if invisible(c) {
-            let code = c as u32;
-            return refuse(
-                here,
-                &format!("U+{code:04X} is an invisible or control character"),
-            );
+            return refuse(here, &invisible_named(c));
         }
         let before = name[..k].chars().next_back();
         let after = name[k + c.len_utf8()..].chars().next();
