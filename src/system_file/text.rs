@@ -3,8 +3,10 @@
 //!
 //! A TOML string's value starts after its opening quote (three quotes, and a newline right
 //! after them, for a multi-line string). When the raw text between the quotes is the decoded
-//! value itself (no escapes), spans map one to one; otherwise every span maps to the value's
-//! first character.
+//! value itself (no escapes), spans map one to one; otherwise [`escape_map`] reads the raw
+//! text again and says, for each byte of the value, which raw bytes wrote it (an escape such as
+//! `\u00e9` for each byte of its character, a line-ending backslash for none), so that a span
+//! maps to the raw text that wrote it.
 
 use std::ops::Range;
 use std::sync::Arc;
@@ -75,8 +77,13 @@ pub struct Text {
     pub value: String,
     /// The byte offset in the source of `value[0]`, when the raw text is the value itself.
     offset: Option<usize>,
-    /// Where errors point when the raw text differs from the value (escapes): the value's
-    /// first byte.
+    /// Where the value's bytes were written when the raw text differs from the value
+    /// (escapes): `map[shift + k]` is the byte range in the source of what wrote `value[k]`,
+    /// and `map[shift + value.len()]` ends the value (empty, just before the closing quote or
+    /// the next byte's writing).
+    escaped: Option<(Arc<[Range<usize>]>, usize)>,
+    /// Where errors point when the raw text is neither the value nor read again to it: the
+    /// value's first byte.
     anchor: usize,
 }
 
@@ -86,6 +93,7 @@ impl Text {
         Text {
             value: source.text.to_string(),
             offset: Some(0),
+            escaped: None,
             anchor: 0,
         }
     }
@@ -95,6 +103,7 @@ impl Text {
         Text {
             value: source.text[range.clone()].to_string(),
             offset: Some(range.start),
+            escaped: None,
             anchor: range.start,
         }
     }
@@ -109,6 +118,7 @@ impl Text {
             return Text {
                 value: value.to_string(),
                 offset: None,
+                escaped: None,
                 anchor: span.start,
             };
         };
@@ -123,9 +133,22 @@ impl Text {
                 }
             }
         }
+        let offset = (inner == value).then_some(start);
+        // Only a basic string has escapes; its map stands only if it reads to the value.
+        let escaped = match (offset, d.starts_with('"')) {
+            (None, true) => escape_map(inner, d.len() == 3, value).map(|map| {
+                let map: Arc<[Range<usize>]> = map
+                    .into_iter()
+                    .map(|r| start + r.start..start + r.end)
+                    .collect();
+                (map, 0)
+            }),
+            _ => None,
+        };
         Text {
             value: value.to_string(),
-            offset: (inner == value).then_some(start),
+            offset,
+            escaped,
             anchor: start,
         }
     }
@@ -135,6 +158,7 @@ impl Text {
         Text {
             value: self.value[range.clone()].to_string(),
             offset: self.offset.map(|o| o + range.start),
+            escaped: (self.escaped.as_ref()).map(|(map, shift)| (map.clone(), shift + range.start)),
             anchor: self.anchor,
         }
     }
@@ -145,6 +169,7 @@ impl Text {
         Text {
             value,
             offset: self.offset,
+            escaped: self.escaped.clone(),
             anchor: self.anchor,
         }
     }
@@ -158,21 +183,52 @@ impl Text {
             .collect()
     }
 
-    /// The span in the source of a span inside the value.
+    /// The span in the source of a span inside the value: through escapes, from the start of
+    /// what wrote its first byte to the end of what wrote its last (an empty span at what
+    /// writes the byte after it).
     pub fn source_span(&self, span: Span) -> Range<usize> {
-        match self.offset {
-            Some(o) => o + span.start..o + span.end,
-            None => self.anchor..self.anchor + 1,
+        match (self.offset, &self.escaped) {
+            (Some(o), _) => o + span.start..o + span.end,
+            (None, Some(_)) => {
+                let start = self.written(span.start).start;
+                match span.end > span.start {
+                    true => start..self.written(span.end - 1).end.max(start),
+                    false => start..start,
+                }
+            }
+            (None, None) => self.anchor..self.anchor + 1,
         }
+    }
+
+    /// Where in the source what wrote the value's byte `k` is (an escape for each byte of its
+    /// character), `k` at most the value's length (the empty range just after the value); the
+    /// anchor where the value has no map.
+    fn written(&self, k: usize) -> Range<usize> {
+        let Some((map, shift)) = &self.escaped else {
+            return self.anchor..self.anchor + 1;
+        };
+        let at = shift + k.min(self.value.len());
+        map.get(at)
+            .or(map.last())
+            .cloned()
+            .unwrap_or(self.anchor..self.anchor + 1)
     }
 
     /// The span in the source of the one-byte separator just before the value (the comma
     /// before a piece of a list; `after`: just after it), or of the whole value where the value
     /// is not found in its source as written.
     pub(crate) fn separator(&self, after: bool) -> Range<usize> {
-        match (self.offset, after) {
-            (Some(o), false) if o > 0 => o - 1..o,
-            (Some(o), true) => o + self.value.len()..o + self.value.len() + 1,
+        match (self.offset, &self.escaped, after) {
+            (Some(o), _, false) if o > 0 => o - 1..o,
+            (Some(o), _, true) => o + self.value.len()..o + self.value.len() + 1,
+            (None, Some((map, shift)), false) if *shift > 0 => map
+                .get(shift - 1)
+                .cloned()
+                .unwrap_or_else(|| self.whole_span()),
+            (None, Some(_), true) => match self.written(self.value.len()) {
+                next if next.is_empty() => next.start..next.start + 1,
+                next => next,
+            },
             _ => self.whole_span(),
         }
     }
@@ -197,6 +253,83 @@ impl Text {
         message: impl Into<String>,
     ) -> FileError {
         source.error(kind, self.source_span(span), message)
+    }
+}
+
+/// Where each byte of a TOML basic string's value was written, read again from the raw text
+/// `inner` between its quotes (after the newline a multi-line string's opening quotes trim):
+/// for each byte of `value`, the byte range of `inner` that wrote it (a character as written,
+/// or the whole escape, `\"`, `\u00e9`, for each byte of its character), and one more, empty
+/// range at the end of the text. The escapes are TOML 1.1's (the `toml` crate's): `\b \t \n
+/// \f \r \e \" \\`, `\xHH`, `\uHHHH` and `\UHHHHHHHH`. A backslash ending a line of a `multiline` string, with the
+/// spaces and line breaks after it, writes nothing. `None` where the text does not read to
+/// `value` (a string the TOML reader read otherwise), so that nothing is pointed at wrongly.
+pub(crate) fn escape_map(inner: &str, multiline: bool, value: &str) -> Option<Vec<Range<usize>>> {
+    let bytes = inner.as_bytes();
+    let hex = |at: usize, digits: usize| {
+        let h = inner.get(at..at + digits)?;
+        match h.bytes().all(|b| b.is_ascii_hexdigit()) {
+            true => char::from_u32(u32::from_str_radix(h, 16).ok()?),
+            false => None,
+        }
+    };
+    let mut decoded = String::with_capacity(value.len());
+    let mut map = Vec::with_capacity(value.len() + 1);
+    let mut k = 0;
+    while k < bytes.len() {
+        let (c, width) = match bytes[k] {
+            b'\\' => match bytes.get(k + 1) {
+                Some(b' ' | b'\t' | b'\r' | b'\n') if multiline => {
+                    k = line_ending_backslash(bytes, k + 1)?;
+                    continue;
+                }
+                Some(b'b') => ('\u{8}', 2),
+                Some(b'e') => ('\u{1b}', 2),
+                Some(b'f') => ('\u{c}', 2),
+                Some(b'n') => ('\n', 2),
+                Some(b'r') => ('\r', 2),
+                Some(b't') => ('\t', 2),
+                Some(b'"') => ('"', 2),
+                Some(b'\\') => ('\\', 2),
+                Some(b'x') => (hex(k + 2, 2)?, 4),
+                Some(b'u') => (hex(k + 2, 4)?, 6),
+                Some(b'U') => (hex(k + 2, 8)?, 10),
+                _ => return None,
+            },
+            _ => {
+                let c = inner.get(k..)?.chars().next()?;
+                (c, c.len_utf8())
+            }
+        };
+        decoded.push(c);
+        map.extend(std::iter::repeat_n(k..k + width, c.len_utf8()));
+        k += width;
+    }
+    map.push(bytes.len()..bytes.len());
+    (decoded == value).then_some(map)
+}
+
+/// The end of a line-ending backslash's run in a multi-line basic string, from just after the
+/// backslash at `k`: spaces and tabs, a line break, then any spaces, tabs and line breaks;
+/// `None` if no line break comes first.
+fn line_ending_backslash(bytes: &[u8], mut k: usize) -> Option<usize> {
+    let newline = |k: usize| match bytes.get(k..) {
+        Some([b'\n', ..]) => Some(1),
+        Some([b'\r', b'\n', ..]) => Some(2),
+        _ => None,
+    };
+    while matches!(bytes.get(k), Some(b' ' | b'\t')) {
+        k += 1;
+    }
+    k += newline(k)?;
+    loop {
+        match bytes.get(k) {
+            Some(b' ' | b'\t') => k += 1,
+            _ => match newline(k) {
+                Some(n) => k += n,
+                None => return Some(k),
+            },
+        }
     }
 }
 
@@ -297,10 +430,149 @@ mod tests {
         assert_eq!(t.source_span(Span::new(4, 5)), 13..14);
         let escaped = "value = \"x + \\u0079\"\n";
         let t = Text::in_toml(escaped, 8..20, "x + y");
-        assert_eq!(t.source_span(Span::new(4, 5)), 9..10);
+        assert_eq!(t.source_span(Span::new(4, 5)), 13..19);
         let multi = "value = \"\"\"\nx + y\"\"\"\n";
         let t = Text::in_toml(multi, 8..multi.len() - 1, "x + y");
         assert_eq!(t.source_span(Span::new(0, 1)), 12..13);
+    }
+
+    /// The text of `v = <token>` and its mapping, the token's range and the value, or `None`
+    /// where the TOML reader refuses the file.
+    fn mapped(token: &str) -> Option<(Text, Range<usize>, String)> {
+        let file = format!("v = {token}\n");
+        let table: toml::Table = toml::from_str(&file).ok()?;
+        let value = table.get("v")?.as_str()?.to_string();
+        let span = 4..4 + token.len();
+        Some((Text::in_toml(&file, span.clone(), &value), span, value))
+    }
+
+    #[test]
+    fn escapes_map_to_where_they_are_written() {
+        let at = |token: &str, from: &str| {
+            let (t, span, value) = mapped(token).unwrap();
+            let k = value.find(from).unwrap();
+            let file = format!("v = {token}\n");
+            let r = t.source_span(Span::new(k, k + from.len()));
+            assert!(span.start <= r.start && r.end <= span.end, "{token}: {r:?}");
+            file[r].to_string()
+        };
+        // After a quote written `\"`, an escaped `é`, and on the line after a line-ending
+        // backslash.
+        assert_eq!(at(r#""{L, G1} = \"x\" + $""#, "$"), "$");
+        assert_eq!(at(r#""{L, G1} = \"x\" + $""#, "\"x"), r#"\"x"#);
+        assert_eq!(at(r#""\u00e9 + $""#, "$"), "$");
+        assert_eq!(at(r#""\u00e9 + $""#, "é"), r"\u00e9");
+        assert_eq!(at(r#""\U0001F600 + \x41""#, "😀"), r"\U0001F600");
+        assert_eq!(at(r#""\U0001F600 + \x41""#, "A"), r"\x41");
+        let lines = "\"\"\"\na \\\n   \n  b\\tc\"\"\"";
+        assert_eq!(at(lines, "b"), "b");
+        assert_eq!(at(lines, "\tc"), "\\tc");
+        let crlf = "\"\"\"\r\na \\  \r\n\r\n b\\e\r\nc\"\"\"";
+        assert_eq!(at(crlf, "b\u{1b}"), "b\\e");
+        assert_eq!(at(crlf, "\r\nc"), "\r\nc");
+        // A span over a line-ending backslash ends at the character written last.
+        assert_eq!(at("\"\"\"a \\\n b\\t\"\"\"", "a b"), "a \\\n b");
+    }
+
+    /// A piece of a basic string's raw text: characters of one, two and four bytes, and
+    /// escapes; in a multi-line string also line breaks, quotes and line-ending backslashes.
+    fn piece(multiline: bool) -> proptest::sample::Select<&'static str> {
+        let basic = [
+            "a",
+            "+",
+            " ",
+            "é",
+            "😀",
+            "\\\"",
+            "\\\\",
+            "\\t",
+            "\\n",
+            "\\r",
+            "\\b",
+            "\\f",
+            "\\e",
+            "\\x41",
+            "\\u00e9",
+            "\\u0007",
+            "\\U0001F600",
+            "{",
+            ",",
+        ];
+        let lines = ["\n", "\r\n", "\"", "\\\n", "\\ \t\r\n\n  ", "\\\n\n\t"];
+        proptest::sample::select(match multiline {
+            true => basic.into_iter().chain(lines).collect::<Vec<_>>(),
+            false => basic.to_vec(),
+        })
+    }
+
+    proptest::proptest! {
+        /// Every span of an escaped value maps inside its token, on characters' boundaries;
+        /// a value without escapes maps one to one, as it did.
+        #[test]
+        fn every_span_maps_inside_the_token(
+            basic in proptest::collection::vec(piece(false), 0..12),
+            multi in proptest::collection::vec(piece(true), 0..12),
+            literal in "[a-z é😀\\\\\"+,]{0,12}",
+            start_newline in proptest::bool::ANY,
+        ) {
+            let newline = if start_newline { "\n" } else { "" };
+            let tokens = [
+                format!("\"{}\"", basic.concat()),
+                format!("\"\"\"{newline}{}\"\"\"", multi.concat()),
+                format!("'{literal}'"),
+                format!("'''{newline}{literal}'''"),
+            ];
+            for token in tokens {
+                let Some((t, span, value)) = mapped(&token) else {
+                    continue;
+                };
+                let file = format!("v = {token}\n");
+                let escapes = token.starts_with('"') && token.contains('\\');
+                proptest::prop_assert!(escapes || t.offset.is_some(), "{:?}", token);
+                proptest::prop_assert!(t.offset.is_some() || t.escaped.is_some(), "{:?}", token);
+                for i in 0..=value.len() {
+                    for j in i..=value.len() {
+                        let r = t.source_span(Span::new(i, j));
+                        if let (Some(o), false) = (t.offset, escapes) {
+                            proptest::prop_assert_eq!(r.clone(), o + i..o + j);
+                            continue;
+                        }
+                        proptest::prop_assert!(
+                            span.start < r.start && r.start <= r.end && r.end < span.end,
+                            "{:?} {}..{}: {:?}", token, i, j, r
+                        );
+                        proptest::prop_assert!(
+                            file.is_char_boundary(r.start) && file.is_char_boundary(r.end)
+                        );
+                    }
+                }
+                for p in &t.split(',') {
+                    for after in [false, true] {
+                        let r = p.separator(after);
+                        proptest::prop_assert!(r.start <= r.end && r.end <= file.len());
+                    }
+                }
+            }
+        }
+
+        /// Whatever the file, span and value, mapping a span does not panic.
+        #[test]
+        fn any_token_maps_without_panicking(
+            file in "[\"'\\\\a-z\n\r é😀ux0-9]{0,24}",
+            from in 0usize..30,
+            to in 0usize..30,
+            value in "[\"'\\\\a-z\n é😀]{0,8}",
+        ) {
+            let t = Text::in_toml(&file, from..to, &value);
+            let n = t.value.len();
+            for i in 0..=n {
+                if t.value.is_char_boundary(i) {
+                    let _ = t.source_span(Span::new(i, n));
+                    let _ = t.slice(i..n).separator(true);
+                    let _ = t.slice(i..n).separator(false);
+                }
+            }
+        }
     }
 
     #[test]

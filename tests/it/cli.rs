@@ -3097,19 +3097,19 @@ fn cli_prints_no_control_characters() {
             "name",
             "name = \"t\"",
             "name = \"t\\u001b]0;title\\u0007\"",
-            "control.toml:1:9: the system's name is shown in reports as written: U+001B",
+            "control.toml:1:10: the system's name is shown in reports as written: U+001B",
         ),
         (
             "description",
             "name = \"t\"",
             "name = \"t\"\ndescription = \"a\\bb\\rc\"",
-            "control.toml:2:16: the system's description is shown in reports as written: U+0008",
+            "control.toml:2:17: the system's description is shown in reports as written: U+0008",
         ),
         (
             "id",
             "id = \"c\"",
             "id = \"c\\u0000\"",
-            "control.toml:9:7: a claim's id is shown in reports as written: U+0000",
+            "control.toml:9:8: a claim's id is shown in reports as written: U+0000",
         ),
     ] {
         let text = format!("{header}{body}").replacen(from, to, 1);

@@ -575,7 +575,7 @@ const BAD_DISPLAY_NAMES: [(&str, &str, usize, &str); 20] = [
     (
         "display name escaping a zero-width space",
         "A\\u200B",
-        12,
+        13,
         "U+200B is an invisible or control character",
     ),
     (
@@ -987,7 +987,7 @@ fn bad_inputs() -> Vec<(&'static str, Vec<u8>, &'static str, Vec<&'static str>)>
         (
             "a claim's id with an escaped line break",
             base_with("id = \"ladder\"", "id = \"lad\\nder\""),
-            "bad.toml:13:7: a claim's id is shown in reports as written: U+000A is an \
+            "bad.toml:13:10: a claim's id is shown in reports as written: U+000A is an \
              invisible or control character",
             check.clone(),
         ),
@@ -1001,7 +1001,7 @@ fn bad_inputs() -> Vec<(&'static str, Vec<u8>, &'static str, Vec<&'static str>)>
         (
             "a system's name with an escape",
             base_with("name = \"oscillator\"", "name = \"osc\\u001b[31m\""),
-            "bad.toml:1:9: the system's name is shown in reports as written: U+001B is an \
+            "bad.toml:1:12: the system's name is shown in reports as written: U+001B is an \
              invisible or control character",
             check.clone(),
         ),
@@ -1011,8 +1011,37 @@ fn bad_inputs() -> Vec<(&'static str, Vec<u8>, &'static str, Vec<&'static str>)>
                 "name = \"oscillator\"",
                 "name = \"oscillator\"\ndescription = \"\"\"\nOne line,\nanother\\u0007.\"\"\"",
             ),
-            "bad.toml:3:1: the system's description is shown in reports as written: U+0007 is \
+            "bad.toml:4:8: the system's description is shown in reports as written: U+0007 is \
              an invisible or control character",
+            check.clone(),
+        ),
+        // A string's escapes are found where they are written, and what comes after them: the
+        // caret went under the string's first character.
+        (
+            "a claim with an escaped quote",
+            base_with("\"{A, H} = i*omega*A\"", r#""{A, H} = \"x\" + $""#),
+            "bad.toml:14:19: unexpected character '\"'",
+            check.clone(),
+        ),
+        (
+            "a claim after an escaped backslash",
+            base_with("\"{A, H} = i*omega*A\"", r#""{A, H} = \\frac{i}{1}*omega*A + $""#),
+            "bad.toml:14:42: unexpected character '$'",
+            check.clone(),
+        ),
+        (
+            "a claim after an escaped letter",
+            base_with("\"{A, H} = i*omega*A\"", r#""{A, H} = i*\u00e9*A + $""#),
+            "bad.toml:14:32: unexpected character '$'",
+            check.clone(),
+        ),
+        (
+            "a claim after a line-ending backslash",
+            base_with(
+                "\"{A, H} = i*omega*A\"",
+                "\"\"\"\n{A, H} = \\\n    i*omega*A + $\"\"\"",
+            ),
+            "bad.toml:16:17: unexpected character '$'",
             check.clone(),
         ),
         (
