@@ -3,10 +3,10 @@
 //!
 //! A TOML string's value starts after its opening quote (three quotes, and a newline right
 //! after them, for a multi-line string). When the raw text between the quotes is the decoded
-//! value itself (no escapes), spans map one to one; otherwise [`escape_map`] reads the raw
-//! text again and says, for each byte of the value, which raw bytes wrote it (an escape such as
-//! `\u00e9` for each byte of its character, a line-ending backslash for none), so that a span
-//! maps to the raw text that wrote it.
+//! value itself (no escapes), spans map one to one; otherwise, when a message asks,
+//! [`escape_map`] reads the raw text again and says, for each byte of the value, which raw
+//! bytes wrote it (an escape such as `\u00e9` for each byte of its character, a line-ending
+//! backslash for none), so that a span maps to the raw text that wrote it.
 
 use std::ops::Range;
 use std::sync::Arc;
@@ -77,14 +77,53 @@ pub struct Text {
     pub value: String,
     /// The byte offset in the source of `value[0]`, when the raw text is the value itself.
     offset: Option<usize>,
-    /// Where the value's bytes were written when the raw text differs from the value
-    /// (escapes): `map[shift + k]` is the byte range in the source of what wrote `value[k]`,
-    /// and `map[shift + value.len()]` ends the value (empty, just before the closing quote or
-    /// the next byte's writing).
-    escaped: Option<(Arc<[Range<usize>]>, usize)>,
+    /// The basic string the value was decoded from when the raw text differs from the value
+    /// (escapes), and where the value starts in that string's value.
+    escaped: Option<(Arc<Escaped>, usize)>,
     /// Where errors point when the raw text is neither the value nor read again to it: the
     /// value's first byte.
     anchor: usize,
+}
+
+/// A TOML basic string written with escapes: its raw text between the quotes, where that
+/// starts in the source, and its decoded value. Spans through it are mapped only when asked
+/// ([`Escaped::map`]), on the way to a message, so a long string with escapes costs a copy of
+/// its text, not a range for each of its bytes.
+struct Escaped {
+    /// The raw text between the quotes (after the newline a multi-line string's opening
+    /// quotes trim).
+    raw: Box<str>,
+    /// The byte offset of `raw` in the source.
+    start: usize,
+    /// Whether the string is a multi-line one (`"""`), where a backslash may end a line.
+    multiline: bool,
+    /// The decoded value of the whole string.
+    value: Box<str>,
+}
+
+/// `Escaped { start: 120, raw: <48 bytes>, multiline: false }`: the texts by their lengths.
+impl std::fmt::Debug for Escaped {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.debug_struct("Escaped")
+            .field("start", &self.start)
+            .field("raw", &format_args!("<{} bytes>", self.raw.len()))
+            .field("multiline", &self.multiline)
+            .finish()
+    }
+}
+
+impl Escaped {
+    /// For each byte of the value, the byte range in the source of what wrote it, and one
+    /// more, empty range at the end ([`escape_map`]); `None` where the raw text does not read
+    /// to the value.
+    fn map(&self) -> Option<Vec<Range<usize>>> {
+        let map = escape_map(&self.raw, self.multiline, &self.value)?;
+        Some(
+            map.into_iter()
+                .map(|r| self.start + r.start..self.start + r.end)
+                .collect(),
+        )
+    }
 }
 
 impl Text {
@@ -134,17 +173,16 @@ impl Text {
             }
         }
         let offset = (inner == value).then_some(start);
-        // Only a basic string has escapes; its map stands only if it reads to the value.
-        let escaped = match (offset, d.starts_with('"')) {
-            (None, true) => escape_map(inner, d.len() == 3, value).map(|map| {
-                let map: Arc<[Range<usize>]> = map
-                    .into_iter()
-                    .map(|r| start + r.start..start + r.end)
-                    .collect();
-                (map, 0)
-            }),
-            _ => None,
-        };
+        // Only a basic string has escapes.
+        let escaped = (offset.is_none() && d.starts_with('"')).then(|| {
+            let string = Escaped {
+                raw: inner.into(),
+                start,
+                multiline: d.len() == 3,
+                value: value.into(),
+            };
+            (Arc::new(string), 0)
+        });
         Text {
             value: value.to_string(),
             offset,
@@ -158,7 +196,8 @@ impl Text {
         Text {
             value: self.value[range.clone()].to_string(),
             offset: self.offset.map(|o| o + range.start),
-            escaped: (self.escaped.as_ref()).map(|(map, shift)| (map.clone(), shift + range.start)),
+            escaped: (self.escaped.as_ref())
+                .map(|(string, shift)| (string.clone(), shift + range.start)),
             anchor: self.anchor,
         }
     }
@@ -187,26 +226,29 @@ impl Text {
     /// what wrote its first byte to the end of what wrote its last (an empty span at what
     /// writes the byte after it).
     pub fn source_span(&self, span: Span) -> Range<usize> {
-        match (self.offset, &self.escaped) {
-            (Some(o), _) => o + span.start..o + span.end,
-            (None, Some(_)) => {
-                let start = self.written(span.start).start;
-                match span.end > span.start {
-                    true => start..self.written(span.end - 1).end.max(start),
-                    false => start..start,
-                }
-            }
-            (None, None) => self.anchor..self.anchor + 1,
+        if let Some(o) = self.offset {
+            return o + span.start..o + span.end;
+        }
+        let Some((map, shift)) = self.escape_map() else {
+            return self.anchor..self.anchor + 1;
+        };
+        let start = self.written(&map, shift, span.start).start;
+        match span.end > span.start {
+            true => start..self.written(&map, shift, span.end - 1).end.max(start),
+            false => start..start,
         }
     }
 
+    /// The map of the string the value was decoded from ([`Escaped::map`]) and where the value
+    /// starts in it; `None` where the value is the raw text, or the string does not read back.
+    fn escape_map(&self) -> Option<(Vec<Range<usize>>, usize)> {
+        let (string, shift) = self.escaped.as_ref()?;
+        Some((string.map()?, *shift))
+    }
+
     /// Where in the source what wrote the value's byte `k` is (an escape for each byte of its
-    /// character), `k` at most the value's length (the empty range just after the value); the
-    /// anchor where the value has no map.
-    fn written(&self, k: usize) -> Range<usize> {
-        let Some((map, shift)) = &self.escaped else {
-            return self.anchor..self.anchor + 1;
-        };
+    /// character), `k` at most the value's length (the empty range just after the value).
+    fn written(&self, map: &[Range<usize>], shift: usize, k: usize) -> Range<usize> {
         let at = shift + k.min(self.value.len());
         map.get(at)
             .or(map.last())
@@ -218,14 +260,17 @@ impl Text {
     /// before a piece of a list; `after`: just after it), or of the whole value where the value
     /// is not found in its source as written.
     pub(crate) fn separator(&self, after: bool) -> Range<usize> {
-        match (self.offset, &self.escaped, after) {
-            (Some(o), _, false) if o > 0 => o - 1..o,
-            (Some(o), _, true) => o + self.value.len()..o + self.value.len() + 1,
-            (None, Some((map, shift)), false) if *shift > 0 => map
+        match (self.offset, after) {
+            (Some(o), false) if o > 0 => return o - 1..o,
+            (Some(o), true) => return o + self.value.len()..o + self.value.len() + 1,
+            _ => {}
+        }
+        match (self.escape_map(), after) {
+            (Some((map, shift)), false) if shift > 0 => map
                 .get(shift - 1)
                 .cloned()
                 .unwrap_or_else(|| self.whole_span()),
-            (None, Some(_), true) => match self.written(self.value.len()) {
+            (Some((map, shift)), true) => match self.written(&map, shift, self.value.len()) {
                 next if next.is_empty() => next.start..next.start + 1,
                 next => next,
             },
@@ -529,7 +574,7 @@ mod tests {
                 let file = format!("v = {token}\n");
                 let escapes = token.starts_with('"') && token.contains('\\');
                 proptest::prop_assert!(escapes || t.offset.is_some(), "{:?}", token);
-                proptest::prop_assert!(t.offset.is_some() || t.escaped.is_some(), "{:?}", token);
+                proptest::prop_assert!(t.offset.is_some() || t.escape_map().is_some(), "{:?}", token);
                 for i in 0..=value.len() {
                     for j in i..=value.len() {
                         let r = t.source_span(Span::new(i, j));
