@@ -198,7 +198,8 @@ impl LoadedSystem {
     /// [`LoadedSystem::check_claim`] or with the others by
     /// [`check_report`](super::check_report); it is expected to be proved, unless its `expect`
     /// is set to [`Expect::Refuted`]. Errors in the claim are at line 1 of `<claim ID>`, in
-    /// the condition at line 2.
+    /// the condition at line 2; an id that is refused (empty, or with a control character) is
+    /// reported of `<claim>`.
     ///
     /// ```
     /// use superint::prelude::*;
@@ -217,17 +218,18 @@ impl LoadedSystem {
         claim: &str,
         when: Option<&str>,
     ) -> Result<&mut ClaimSpec, FileError> {
-        let origin = format!("<claim {id}>");
+        // An id that is refused is no name for the text: its errors are of `<claim>`.
         if id.trim().is_empty() {
             return Err(FileError::new(
                 ErrorKind::Claim,
-                &origin,
+                "<claim>",
                 "a claim's id is empty",
             ));
         }
         if let Some((_, why)) = super::names::unshowable("a claim's id", id, false) {
-            return Err(FileError::new(ErrorKind::Claim, &origin, why));
+            return Err(FileError::new(ErrorKind::Claim, "<claim>", why));
         }
+        let origin = format!("<claim {id}>");
         let (source, claim_at, when_at) = two_lines(&origin, claim, when);
         let text = Text::within(&source, claim_at.clone());
         let when = when_at.map(|at| Text::within(&source, at).split(','));

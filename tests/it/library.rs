@@ -535,11 +535,13 @@ fn claim_errors_point_into_the_text_given() {
     assert_eq!(err.kind, ErrorKind::Claim);
     let err = rotor.add_claim(" ", "L = L", None).unwrap_err();
     assert_eq!(err.message, "a claim's id is empty");
+    // A refused id does not name the text either: `<claim a\nb>` broke the message's line.
     let err = rotor.add_claim("a\nb", "L = L", None).unwrap_err();
     assert_eq!(
-        (err.kind, err.message.as_str()),
+        (err.kind, err.origin.as_str(), err.message.as_str()),
         (
             ErrorKind::Claim,
+            "<claim>",
             "a claim's id is shown in reports as written: U+000A is an invisible or control \
              character"
         )
