@@ -8,7 +8,7 @@ use superint::render::render;
 use superint::system_file::{bracket_report, LimitsOverride};
 
 use super::limits::LimitsArgs;
-use super::output::{emit, Output};
+use super::output::{emit, warned, Output};
 
 pub const EXAMPLES: &str = "\
 Examples:
@@ -66,9 +66,10 @@ impl BracketArgs {
 /// Computes the bracket and prints it.
 pub fn run(job: &BracketJob) -> anyhow::Result<bool> {
     let file = load_system(&job.file, &job.limits)?;
-    let report = bracket_report(&file, &job.f, &job.g, job.when.as_deref());
-    super::output::warnings(&file);
-    let report = report?;
+    let report = warned(
+        &file,
+        bracket_report(&file, &job.f, &job.g, job.when.as_deref()),
+    )?;
     emit(&render(&report, job.output.format, &job.output.options))?;
     Ok(true)
 }

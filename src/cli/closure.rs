@@ -108,10 +108,7 @@ pub fn run(job: &ClosureJob) -> anyhow::Result<bool> {
         None => (Some(PathBuf::from(&a.args[0])), &a.args[1..]),
     };
     let subject = Subject::open(file.as_ref(), a.system.as_deref(), true, &a.limits)?;
-    // What the file and the command line read in doubt is said however the run ends.
-    let report = close(a, names, &subject);
-    subject.warnings();
-    let report = report?;
+    let report = subject.warned(close(a, names, &subject))?;
     emit(&render(&report, job.output.format, &job.output.options))?;
     Ok(report.all_proved())
 }

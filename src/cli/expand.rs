@@ -8,7 +8,7 @@ use superint::render::render;
 use superint::system_file::{expand_report, LimitsOverride};
 
 use super::limits::LimitsArgs;
-use super::output::{emit, Output};
+use super::output::{emit, warned, Output};
 
 pub const EXAMPLES: &str = "\
 Examples:
@@ -62,9 +62,10 @@ impl ExpandArgs {
 /// Expands the expressions and prints them.
 pub fn run(job: &ExpandJob) -> anyhow::Result<bool> {
     let file = load_system(&job.file, &job.limits)?;
-    let report = expand_report(&file, &job.expressions, job.when.as_deref());
-    super::output::warnings(&file);
-    let report = report?;
+    let report = warned(
+        &file,
+        expand_report(&file, &job.expressions, job.when.as_deref()),
+    )?;
     emit(&render(&report, job.output.format, &job.output.options))?;
     Ok(true)
 }

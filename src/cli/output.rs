@@ -90,11 +90,19 @@ fn write_to(mut out: impl Write, text: &str) -> anyhow::Result<()> {
     }
 }
 
+/// `result`, a command's work on `file`, once `file`'s warnings are printed: what its texts
+/// and those given on the command line read in doubt is said however the work ended, before
+/// its error if it failed. `check` shows its files' warnings in its report instead.
+pub fn warned<T, E>(file: &LoadedSystem, result: Result<T, E>) -> Result<T, E> {
+    warnings(file);
+    result
+}
+
 /// Prints on stderr, each as `superint: warning: FILE:LINE:COLUMN: …` with its line and a caret,
 /// what `file`'s texts and those given on the command line read in a way that may not have been
 /// meant ([`LoadedSystem::warnings`]: a name run together read as a product in doubt, `Lxx`
-/// beside a function `Lx`). `check` shows its files' in its report instead.
-pub fn warnings(file: &LoadedSystem) {
+/// beside a function `Lx`).
+fn warnings(file: &LoadedSystem) {
     for w in file.warnings() {
         eprintln!("superint: warning: {}", printable(&w.to_string()));
     }

@@ -17,7 +17,7 @@ use trigpoly::{Expr, Var, VarKind, Vars};
 
 use super::input::load_system;
 use super::limits::LimitsArgs;
-use super::output::{emit, emit_to_stderr, Output};
+use super::output::{emit, emit_to_stderr, warned, Output};
 
 pub const EXAMPLES: &str = "\
 Examples:
@@ -253,9 +253,10 @@ pub fn run(job: &PlotJob) -> anyhow::Result<bool> {
         against: args.against.as_deref(),
         section: args.section.as_deref(),
     };
-    let input = file.plot_input(args.at.as_deref(), &args.from, functions);
-    super::output::warnings(&file);
-    let input = input?;
+    let input = warned(
+        &file,
+        file.plot_input(args.at.as_deref(), &args.from, functions),
+    )?;
     let flow = Flow::at(file.system().space(), &input.hamiltonian, &input.values)
         .context("Hamilton's equations at these values")?
         .with_method(args.method.method());

@@ -8,7 +8,7 @@ use superint::render::render;
 use superint::system_file::{rank_report_when, LimitsOverride};
 
 use super::limits::LimitsArgs;
-use super::output::{emit, Output};
+use super::output::{emit, warned, Output};
 
 pub const EXAMPLES: &str = "\
 Examples:
@@ -73,9 +73,11 @@ impl RankArgs {
 /// Certifies the rank and prints it; whether it is the expected one (if one was given).
 pub fn run(job: &RankJob) -> anyhow::Result<bool> {
     let file = load_system(&job.file, &job.limits)?;
-    let report = rank_report_when(&file, &job.functions, job.expect, job.when.as_deref());
-    super::output::warnings(&file);
-    let report = report?;
+    let when = job.when.as_deref();
+    let report = warned(
+        &file,
+        rank_report_when(&file, &job.functions, job.expect, when),
+    )?;
     emit(&render(&report, job.output.format, &job.output.options))?;
     Ok(report.all_as_expected())
 }

@@ -310,11 +310,12 @@ impl Subject {
         )?)))
     }
 
-    /// Prints on stderr what the file's texts and the command line's read in doubt
-    /// ([`super::output::warnings`]), if it is a file.
-    pub fn warnings(&self) {
-        if let Subject::File(f) = self {
-            super::output::warnings(f);
+    /// `result`, once what the file's texts and the command line's read in doubt is printed
+    /// ([`super::output::warned`]), if it is a file: however the work ended.
+    pub fn warned<T, E>(&self, result: Result<T, E>) -> Result<T, E> {
+        match self {
+            Subject::File(f) => super::output::warned(f, result),
+            Subject::Builtin(..) => result,
         }
     }
 
@@ -453,10 +454,7 @@ pub fn run(job: &SearchJob) -> anyhow::Result<bool> {
 fn search_and_print(job: &SearchJob) -> anyhow::Result<bool> {
     let a = &job.args;
     let subject = Subject::open(a.file.as_ref(), a.system.as_deref(), false, &a.limits)?;
-    // What the file and the command line read in doubt is said however the run ends.
-    let report = search(a, &subject);
-    subject.warnings();
-    let report = report?;
+    let report = subject.warned(search(a, &subject))?;
     emit(&render(&report, job.output.format, &job.output.options))?;
     Ok(report.all_proved())
 }

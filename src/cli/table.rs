@@ -10,7 +10,7 @@ use superint::report::counted;
 use superint::system_file::{table_report, LimitsOverride};
 
 use super::limits::LimitsArgs;
-use super::output::{emit, Output};
+use super::output::{emit, warned, Output};
 
 pub const EXAMPLES: &str = "\
 Examples:
@@ -61,9 +61,7 @@ impl TableArgs {
 /// Computes the table and prints it.
 pub fn run(job: &TableJob) -> anyhow::Result<bool> {
     let file = load_system(&job.file, &job.limits)?;
-    let report = table_report(&file, &job.names);
-    super::output::warnings(&file);
-    let report = report?;
+    let report = warned(&file, table_report(&file, &job.names))?;
     emit(&render(&report, job.output.format, &job.output.options))?;
     // Entries a limit stopped are `?` in the table, and the run ends with an error.
     let undecided: Vec<String> = report

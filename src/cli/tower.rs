@@ -15,7 +15,7 @@ use superint::render::render;
 use superint::system_file::{family_tower_report_with_progress, Caller, LimitsOverride};
 
 use super::limits::LimitsArgs;
-use super::output::{emit, Output};
+use super::output::{emit, warned, Output};
 
 pub const EXAMPLES: &str = "\
 Examples:
@@ -153,9 +153,7 @@ pub fn run(job: &TowerJob) -> anyhow::Result<bool> {
                     &mut progress,
                 )
             });
-            // What the file and the condition read in doubt is said however the run ends.
-            super::output::warnings(&file);
-            report?
+            warned(&file, report)?
         }
     };
     bar.finish_and_clear();
