@@ -688,25 +688,24 @@ pub(crate) fn check_display(
 ) -> Result<(), FileError> {
     const MARKUP: &str = "^`|\\$%&#{}~*<>\"";
     let name = &text.value;
-    let refuse = |span: Range<usize>, why: &str| {
-        Err(source.error(
-            ErrorKind::Name,
-            span,
-            format!(
-                "a display name is letters, digits, primes (G1'), a bar (Z̄), subscripts \
-                 (A_x), spaces and parentheses: {why}"
-            ),
-        ))
+    let message = |why: &str| {
+        format!(
+            "a display name is letters, digits, primes (G1'), a bar (Z̄), subscripts (A_x), \
+             spaces and parentheses: {why}"
+        )
     };
     if name.is_empty() {
-        return refuse(
-            whole.clone(),
-            "this one is empty (leave display out to show the name)",
-        );
+        let why = "this one is empty (leave display out to show the name)";
+        return Err(source.error(ErrorKind::Name, whole, message(why)));
     }
+    // A refused character's place in the file is found on the way to the message only (an
+    // escaped string's is read again, `Text::source_span`).
+    let refuse = |at: Span, why: &str| {
+        Err(source.error(ErrorKind::Name, text.source_span(at), message(why)))
+    };
     let mut open: Vec<usize> = Vec::new();
     for (k, c) in name.char_indices() {
-        let here = text.source_span(Span::new(k, k + c.len_utf8()));
+        let here = Span::new(k, k + c.len_utf8());
         match c {
             '(' => open.push(k),
             ')' if open.pop().is_none() => {
@@ -753,10 +752,7 @@ pub(crate) fn check_display(
         }
     }
     if let Some(&k) = open.last() {
-        return refuse(
-            text.source_span(Span::new(k, k + 1)),
-            "this '(' is never closed",
-        );
+        return refuse(Span::new(k, k + 1), "this '(' is never closed");
     }
     Ok(())
 }
