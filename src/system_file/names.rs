@@ -264,6 +264,14 @@ impl Instances {
         }
     }
 
+    /// The instances at the indices `m, n` in LaTeX (`K_{1;m,n}` of `K1`) and the name that
+    /// reads back as (`K_1_m_n`), if they have such forms.
+    fn at_indices_m_n(&self) -> Option<(String, String)> {
+        let instance = with_indices(self.latex.as_ref()?, "m,n");
+        let read = read_back(&instance)?;
+        Some((instance, read))
+    }
+
     /// The instance whose form in `notation` is `form`, as its owner (`the family K's instance
     /// (1, 2)`, with the LaTeX its name is read back from), if one is.
     fn owning(&self, notation: Notation, form: &str) -> Option<Owner> {
@@ -493,7 +501,7 @@ impl PrintedNames {
                 return Err(alike(&instance, *notation, form, &self.forms[key]));
             }
         }
-        let symbolic = with_indices_forms(display);
+        let symbolic = instances.at_indices_m_n();
         self.admit_forms(whose, display, line, "_{m,n}", symbolic)?;
         self.families.push(instances);
         Ok(())
@@ -595,15 +603,6 @@ impl PrintedNames {
             self.forms.insert(key, owner);
         }
     }
-}
-
-/// A family's instances at the indices `m, n` in LaTeX (`K_{1;m,n}` of `K1`) and the name
-/// that reads back as (`K_1_m_n`), if they have such forms.
-fn with_indices_forms(display: &str) -> Option<(String, String)> {
-    let (_, latex) = shown_forms(display)?;
-    let instance = with_indices(&latex, "m,n");
-    let read = read_back(&instance)?;
-    Some((instance, read))
 }
 
 /// Why `new` cannot have `form` in `notation`, which `other` has: `the function B would show
