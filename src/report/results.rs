@@ -469,11 +469,14 @@ pub(crate) fn first_free<T: Copy>(
 ) -> T {
     // A function by its name, its display, and its display as the expressions write it (`Φ1`
     // of `Phi1`), which a label beside it would print as.
+    let shown: Vec<String> = (system.functions().iter())
+        .map(|f| trigpoly::shown_text(&f.display))
+        .collect();
     let has = |name: &str| {
         taken.contains(&name)
             || system.lookup(name).is_some()
             || system.get(name).is_ok()
-            || (system.functions().iter()).any(|f| trigpoly::shown_text(&f.display) == name)
+            || shown.iter().any(|s| s == name)
     };
     candidates
         .iter()
