@@ -312,6 +312,13 @@ fn toml_error(source: &Source, e: &toml::de::Error) -> FileError {
     }
 }
 
+/// A text that may run over several lines, as a report shows it: a file written with CRLF line
+/// ends keeps them in a string of several lines, whose line breaks are the text's own (a lone
+/// `\r` is refused: `Builder::check_texts`).
+fn over_lines(text: &Option<Spanned<String>>) -> Option<String> {
+    text.as_ref().map(|s| s.get_ref().replace("\r\n", "\n"))
+}
+
 /// The most parts a dotted key (`a.b.c`, `[a.b.c]`) may have: TOML nests tables at most this
 /// deep, and says so with no place.
 const MAX_KEY_PARTS: usize = 80;
@@ -1276,13 +1283,8 @@ impl<'a> Builder<'a> {
         Ok(LoadedSystem {
             source: self.source.clone(),
             name: name.clone(),
-            // A file written with CRLF line ends keeps them in a string of several lines:
-            // its line breaks are the text's own (a lone `\r` is refused: `check_texts`).
-            citation: model
-                .source
-                .as_ref()
-                .map(|s| s.get_ref().replace("\r\n", "\n")),
-            description: (model.description.as_ref()).map(|s| s.get_ref().replace("\r\n", "\n")),
+            citation: over_lines(&model.source),
+            description: over_lines(&model.description),
             system: System::new(&name, space, Expr::zero(vars))?,
             families: Vec::new(),
             claims: Vec::new(),
