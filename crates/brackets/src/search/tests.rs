@@ -13,22 +13,21 @@ use crate::claim::Condition;
 use crate::modular::{Echelon, Field, Fp};
 use crate::systems;
 
+/// The search problem of `rotor` (the harmonic rotor) at momenta and angle degree 2 and
+/// positions of degree `positions`, for its own Hamiltonian with no condition.
+fn rotor_problem(rotor: &System, positions: u32) -> Problem {
+    let space = SearchSpace::default()
+        .momenta_degree(2)
+        .positions_degree(positions)
+        .trig_degree(2);
+    let h = rotor.hamiltonian().clone();
+    Problem::new(rotor, &space, &[], &[], h, None).unwrap()
+}
+
 #[test]
 fn coordinates_are_those_of_the_real_and_imaginary_parts() {
     let rotor = systems::harmonic_rotor();
-    let h = rotor.hamiltonian().clone();
-    let problem = Problem::new(
-        &rotor,
-        &SearchSpace::default()
-            .momenta_degree(2)
-            .positions_degree(1)
-            .trig_degree(2),
-        &[],
-        &[],
-        h,
-        None,
-    )
-    .unwrap();
+    let problem = rotor_problem(&rotor, 1);
     let n = problem.unknowns.len();
     // f = Σ (a_j + i b_j) φ_j over every third unknown (the φ_j are real): Re f has the
     // coordinates a, Im f the coordinates b.
@@ -67,19 +66,7 @@ fn coordinates_are_those_of_the_real_and_imaginary_parts() {
 #[test]
 fn grades_are_degree_then_order_and_form_a_filtration() {
     let rotor = systems::harmonic_rotor();
-    let h = rotor.hamiltonian().clone();
-    let problem = Problem::new(
-        &rotor,
-        &SearchSpace::default()
-            .momenta_degree(2)
-            .positions_degree(2)
-            .trig_degree(2),
-        &[],
-        &[],
-        h,
-        None,
-    )
-    .unwrap();
+    let problem = rotor_problem(&rotor, 2);
     let grading = Grading::new(&problem.variables, 8);
     let grade = |f: &Expr| {
         let n = grading.grade(f);
@@ -136,19 +123,7 @@ fn the_complement_over_q_alone_is_the_modular_one() {
 #[test]
 fn a_stamp_keeps_the_parts_of_a_product_in_both_fields() {
     let rotor = systems::harmonic_rotor();
-    let h = rotor.hamiltonian().clone();
-    let problem = Problem::new(
-        &rotor,
-        &SearchSpace::default()
-            .momenta_degree(2)
-            .positions_degree(1)
-            .trig_degree(2),
-        &[],
-        &[],
-        h,
-        None,
-    )
-    .unwrap();
+    let problem = rotor_problem(&rotor, 1);
     // f = Σ (a_j + i b_j) φ_j/3 and i·f, whose parts are those of f again.
     let mut f = Expr::zero(&problem.vars);
     for j in (0..problem.unknowns.len()).step_by(5) {
