@@ -346,6 +346,7 @@ impl Parser<'_> {
         // written with `^` ends it (`x^{2}²`, `x^2²`), and one after a superscript is refused
         // below, as `x² ²` is: they stand side by side as one (`x²²`), which no reading should
         // guess.
+        let mut raised = false;
         while matches!(self.tok.tok, Tok::Sup { .. }) && min_bp != EXPONENT_BP {
             if self.has_superscript(lhs) {
                 return Err(self.superscript_after_superscript(lhs));
@@ -356,9 +357,15 @@ impl Parser<'_> {
                 let span = base.span.to(exponent.span);
                 Expr::new(ExprKind::Pow(Box::new(base), Box::new(exponent)), span)
             });
+            raised = true;
         }
         if self.on_empty_group() && self.has_superscript(lhs) {
             return Err(self.superscript_after_superscript(lhs));
+        }
+        // A `^` after a superscript character, `r²^3`, raises the power, `(r²)³`, where `r^2^3`
+        // raises the exponent, `r^(2³)`: neither is guessed.
+        if raised && self.tok.tok == Tok::Caret {
+            return Err(self.caret_after_superscript(lhs));
         }
         self.binary_op(min_bp)
     }
@@ -397,7 +404,6 @@ impl Parser<'_> {
     /// as `x²²`, which no reading should guess.
     #[cold]
     fn superscript_after_superscript(&self, lhs: &Expr) -> ParseError {
-        let base = self.quote(self.sized(lhs.span));
         let (span, set) = match self.tok.tok {
             Tok::Sup { .. } => (
                 self.tok.span,
@@ -410,6 +416,24 @@ impl Parser<'_> {
                 (span, "LaTeX sets the two superscripts side by side, as one")
             }
         };
+        self.after_superscript(lhs, span, set)
+    }
+
+    /// The error for a `^` after `lhs`, which ends in a superscript character, `r²^3`: the
+    /// quote holds the `^` and its exponent, as far as they parse.
+    #[cold]
+    fn caret_after_superscript(&mut self, lhs: &Expr) -> ParseError {
+        let caret = self.tok.span;
+        let exponent = self.bump().and_then(|_| self.expr(EXPONENT_BP));
+        let end = exponent.map_or_else(|_| script_end(self.src, caret.end), |e| e.span.end);
+        let span = Span::new(caret.start, end.max(caret.end));
+        self.after_superscript(lhs, span, "it may raise the power or its exponent")
+    }
+
+    /// The error for what stands at `span`, a superscript, after `lhs`, which has one already,
+    /// `set` saying how the two read together.
+    fn after_superscript(&self, lhs: &Expr, span: Span, set: &str) -> ParseError {
+        let base = self.quote(self.sized(lhs.span));
         ParseError::new(
             span,
             format!(

@@ -860,3 +860,45 @@ fn long_runs_of_names_split_or_are_refused() {
         err.message
     );
 }
+
+/// A `^` after a superscript character, `x²^3`, could raise the power, `(x²)³`, as it was
+/// read, or the exponent, `x^(2³)`, as `x^2^3` is: it is refused as a superscript character
+/// after an exponent is, quoting the `^` with its exponent; in parentheses either reads.
+#[test]
+fn a_caret_after_a_superscript_character_is_ambiguous() {
+    let vars = phase_space();
+    let refused = [
+        ("x²^3", "'^3'", "'x²'", (1, 3)),
+        ("x²^{3}", "'^{3}'", "'x²'", (1, 3)),
+        ("x² ^3", "'^3'", "'x²'", (1, 4)),
+        ("y + x⁻¹^(2)", "'^(2)'", "'x⁻¹'", (1, 8)),
+        ("x^{y²^3}", "'^3'", "'y²'", (1, 6)),
+    ];
+    for (src, quote, base, line_col) in refused {
+        let err = Poly::<Rational>::parse(&vars, src).expect_err(src);
+        assert_eq!(
+            (err.message.clone(), err.line_col(src)),
+            (
+                format!(
+                    "{quote} after {base}, which has a superscript already, is ambiguous: it \
+                     may raise the power or its exponent; put {base} in parentheses for a power \
+                     of it, or write the exponent in one group"
+                ),
+                line_col
+            ),
+            "{src}"
+        );
+    }
+    for (src, value) in [
+        ("(x²)^3", "x^6"),
+        ("x^(2²)", "x^4"),
+        ("x^{2²}", "x^4"),
+        ("x^2^3", "x^8"),
+    ] {
+        assert_eq!(
+            Poly::<Rational>::parse(&vars, src).expect(src),
+            Poly::<Rational>::parse(&vars, value).unwrap(),
+            "{src}"
+        );
+    }
+}
