@@ -9,6 +9,7 @@ use num_bigint::BigInt;
 use super::error::{line_col, ParseError, Span};
 use super::latex::{FRACTIONS, SIZING_OPEN};
 use super::lexer::{Lexer, Tok, Token};
+use crate::lower::FUNCTIONS;
 
 /// Maximum nesting of parentheses, calls, brackets and operators (the operand of an operator
 /// counts as nested in it, so `(a + (b))` has 2 levels and `a + b*(c^d)` has 4).
@@ -433,7 +434,7 @@ impl Parser<'_> {
     /// The error for what stands at `span`, a superscript, after `lhs`, which has one already,
     /// `set` saying how the two read together.
     fn after_superscript(&self, lhs: &Expr, span: Span, set: &str) -> ParseError {
-        let base = self.quote(self.sized(lhs.span));
+        let base = self.quote(self.sized(self.powered(lhs)));
         ParseError::new(
             span,
             format!(
@@ -442,6 +443,26 @@ impl Parser<'_> {
                 self.quote(span)
             ),
         )
+    }
+
+    /// The span of the factor that the power `e` raises, which a message quotes: `e`'s own,
+    /// but for a name before parentheses, `x(y)^{2}`, which the lowering reads as the name
+    /// times the power of the parentheses, `x·(y)²`, as `M(x + y)²` is printed: `(y)^{2}`. A
+    /// function's call, `cos(θ)^{2}`, is raised whole.
+    fn powered(&self, e: &Expr) -> Span {
+        if let ExprKind::Pow(base, _) = &e.kind {
+            if let ExprKind::Call(name, name_span, args) = &base.kind {
+                let function = FUNCTIONS.contains(&name.as_str())
+                    || matches!(name.as_str(), "sqrt" | "Re" | "Im");
+                if !function && args.len() == 1 && !base.in_parentheses() {
+                    let open = self.src[name_span.end..base.span.end].find('(');
+                    if let Some(open) = open {
+                        return Span::new(name_span.end + open, e.span.end);
+                    }
+                }
+            }
+        }
+        e.span
     }
 
     /// `span` with the sizing command before it where it opens with a delimiter that one

@@ -902,3 +902,35 @@ fn a_caret_after_a_superscript_character_is_ambiguous() {
         );
     }
 }
+
+/// A superscript refused after a power quotes the factor that the power raises: after a name
+/// before parentheses, `x(y)^{2}`, read as `x·(y)²` as `M(x + y)²` is printed, the
+/// parentheses and their power, where it quoted `x(y)^{2}` as if the power were the product's;
+/// a function's call, a product's last factor and a fraction are quoted whole.
+#[test]
+fn a_superscript_after_a_power_quotes_the_factor_raised() {
+    let vars = phase_space();
+    for (src, base) in [
+        ("x(y)^{2}{}^{3}", "'(y)^{2}'"),
+        ("x(y)^{2}²", "'(y)^{2}'"),
+        ("x(y)²^3", "'(y)²'"),
+        ("M (x + y)^2²", "'(x + y)^2'"),
+        (r"M\left(x\right)^{2}{}^{3}", r"'\left(x\right)^{2}'"),
+        ("(M(x))^{2}{}^{3}", "'(M(x))^{2}'"),
+        ("cos(theta)^{2}{}^{3}", "'cos(theta)^{2}'"),
+        ("2x^{2}{}^{3}", "'x^{2}'"),
+        ("x y^{2}{}^{3}", "'y^{2}'"),
+        (r"\frac{1}{M}^{2}{}^{3}", r"'\frac{1}{M}^{2}'"),
+    ] {
+        let err = Poly::<GaussianRational>::parse(&vars, src).expect_err(src);
+        assert!(
+            err.message.contains(&format!(
+                " after {base}, which has a superscript already, is ambiguous: "
+            )) && err
+                .message
+                .contains(&format!("; put {base} in parentheses for a power of it")),
+            "{src}: {}",
+            err.message
+        );
+    }
+}
