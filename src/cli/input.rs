@@ -12,9 +12,14 @@ use superint::system_file::{
 const STDIN: &str = "<stdin>";
 
 /// Loads the system file at `path`, or the one on standard input when `path` is `-`, whose
-/// reports name the command line as the giver of their texts ([`Caller::CommandLine`]).
+/// reports name the command line as the giver of their texts ([`Caller::CommandLine`]). A file
+/// that fails to load has what its texts read in doubt before the error printed on stderr now,
+/// before the error is ([`super::output::load_warnings`]), as every command prints a loaded
+/// file's however its run ends.
 pub fn load_system(path: &Path, limits: &LimitsOverride) -> Result<LoadedSystem, FileError> {
-    load_file(path, limits).map(|file| file.with_caller(Caller::CommandLine))
+    load_file(path, limits)
+        .map(|file| file.with_caller(Caller::CommandLine))
+        .inspect_err(super::output::load_warnings)
 }
 
 /// Loads the system file at `path`, or the one on standard input when `path` is `-`.

@@ -4,7 +4,7 @@ use std::io::{self, Write};
 
 use clap::{Args, ValueEnum};
 use superint::render::{printable, Format, Options, SHOWN_MONOMIALS};
-use superint::system_file::LoadedSystem;
+use superint::system_file::{FileError, LoadedSystem, Warning};
 
 /// `--format` values.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, ValueEnum)]
@@ -103,7 +103,18 @@ pub fn warned<T, E>(file: &LoadedSystem, result: Result<T, E>) -> Result<T, E> {
 /// meant ([`LoadedSystem::warnings`]: a name run together read as a product in doubt, `Lxx`
 /// beside a function `Lx`).
 fn warnings(file: &LoadedSystem) {
-    for w in file.warnings() {
+    print_warnings(&file.warnings());
+}
+
+/// Prints on stderr the warnings of a file that failed to load ([`FileError::warnings`]: what
+/// its texts read in doubt before the error), as [`warned`] prints a loaded file's, before its
+/// error is printed.
+pub fn load_warnings(error: &FileError) {
+    print_warnings(error.warnings.as_deref().map_or(&[], Vec::as_slice));
+}
+
+fn print_warnings(warnings: &[Warning]) {
+    for w in warnings {
         eprintln!("superint: warning: {}", printable(&w.to_string()));
     }
 }

@@ -104,6 +104,11 @@ pub struct FileError {
     /// The id of the claim whose check this is, for a claim that stopped at a limit (its
     /// location is the claim's text in the file).
     pub claim: Option<String>,
+    /// For a file that failed to load, what its texts read in doubt before the error, where
+    /// there is any ([`LoadedSystem::warnings`](super::LoadedSystem::warnings), which the
+    /// loaded file would have kept), in the order read; not part of the message. Boxed, as the
+    /// location is, to keep the error small.
+    pub warnings: Option<Box<Vec<Warning>>>,
 }
 
 impl FileError {
@@ -116,6 +121,7 @@ impl FileError {
             message: message.into(),
             hint: None,
             claim: None,
+            warnings: None,
         }
     }
 

@@ -987,16 +987,37 @@ impl<'a> Builder<'a> {
         let vars = self.variables(&model, limits)?;
         let space = self.phase_space(&model.phase_space, &vars)?;
         let mut file = self.unfilled(&model, space, &vars, limits)?;
-        if let Some(poisson) = &model.poisson {
-            let space = self.poisson(&file, poisson)?;
-            file.system = System::new(&file.name, space, Expr::zero(&vars))?;
+        match self.fill(&mut file, &model, &vars) {
+            Ok(()) => Ok(file),
+            // What the file's texts read in doubt before the error is said with it
+            // ([`FileError::warnings`]): the file it was kept in is not returned.
+            Err(e) => {
+                let warnings = file.warnings();
+                Err(FileError {
+                    warnings: (!warnings.is_empty()).then(|| Box::new(warnings)),
+                    ..e
+                })
+            }
         }
-        let h = self.hamiltonian(&file, &model)?;
+    }
+
+    /// Fills `file`, made by [`Builder::unfilled`], with the brackets of `[poisson]`, the
+    /// Hamiltonian, the functions, the families and the claims.
+    fn fill(
+        &mut self,
+        file: &mut LoadedSystem,
+        model: &SystemModel,
+        vars: &Vars,
+    ) -> Result<(), FileError> {
+        if let Some(poisson) = &model.poisson {
+            let space = self.poisson(file, poisson)?;
+            file.system = System::new(&file.name, space, Expr::zero(vars))?;
+        }
+        let h = self.hamiltonian(file, model)?;
         file.system.define("H", "H", h)?;
-        self.functions(&mut file, &model)?;
-        self.families(&mut file, &model)?;
-        claims(&mut file, &model)?;
-        Ok(file)
+        self.functions(file, model)?;
+        self.families(file, model)?;
+        claims(file, model)
     }
 
     /// Declares every name of `[phase_space]`, kind by kind (coordinates, angles, Poisson

@@ -310,6 +310,41 @@ fn other_commands_warn_of_names_run_together_on_standard_error() {
     }
 }
 
+/// A file that fails to load says what its texts read in doubt before the error, as a run that
+/// fails after loading does: the warning of `Lzx`, read before the unknown name of a later
+/// function stopped the load, was left out, as the file that kept it was not returned.
+#[test]
+fn a_file_that_fails_to_load_says_its_warnings_before_the_error() {
+    let dir = scratch("run-together-failed-load");
+    let failing = RUN_TOGETHER.replacen(
+        "[[claim]]",
+        "[[function]]\nname = \"C\"\nvalue = \"q + 1\"\n\n[[claim]]",
+        1,
+    );
+    std::fs::write(dir.join("rt.toml"), &failing).expect("written");
+    let (line, column) = line_column(&failing, "value = \"Lzx", "Lzx");
+    let warning = format!(
+        "superint: warning: rt.toml:{line}:{column}: 'Lzx' is read as the product L_z x, the \
+         function Lz with x after it: declare 'Lzx' if it is a name of its own, or write 'Lz x' \
+         for the product\n {line} | value = \"Lzx^2\"\n    |          ^^^\n"
+    );
+    let (line, column) = line_column(&failing, "value = \"q", "q");
+    let error = format!("superint: error: rt.toml:{line}:{column}: unknown name 'q'");
+    for args in [
+        vec!["check", "rt.toml", "--no-timings"],
+        vec!["expand", "rt.toml", "x"],
+        vec!["bracket", "rt.toml", "x", "H"],
+    ] {
+        let o = superint_in(&dir, &args);
+        let stderr = text(&o.stderr);
+        assert_eq!(o.status.code(), Some(2), "{args:?}: {stderr}");
+        assert!(
+            stderr.starts_with(&format!("{warning}{error}")),
+            "{args:?}: {stderr}"
+        );
+    }
+}
+
 #[test]
 fn systems_paper_claims_are_all_there() {
     let mut ids = Vec::new();
