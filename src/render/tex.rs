@@ -52,6 +52,7 @@ const SYMBOLS: &[(char, &str)] = &[
     ('→', r"\to"),
     ('⇒', r"\Rightarrow"),
     ('∂', r"\partial"),
+    ('∇', r"\nabla"),
     ('…', r"\dots"),
     ('⋯', r"\cdots"),
     ('∈', r"\in"),

@@ -678,6 +678,32 @@ pub(crate) fn check_shown_text(
     }
 }
 
+/// The signs that a display name may begin with, before a letter, as a derivative or a
+/// gradient is written: `∂H`, `∇φ` (LaTeX `\partial`, `\nabla`).
+const DIFFERENTIALS: &str = "∂∇";
+
+/// Where the sign `c` of [`DIFFERENTIALS`] stands in a display name, for a message.
+fn differential(c: char) -> String {
+    format!("'{c}' stands first, right before the letter of what it applies to (∂H, ∇φ)")
+}
+
+/// Whether `c` is written as a subscript or a superscript (`₁`, `₊`, `ₐ`, `²`, `ᵃ`, `ⁿ`,
+/// `ʰ`, `ª`), which Unicode counts as a digit, a sign or a letter: `subscript` or
+/// `superscript`.
+fn script(c: char) -> Option<&'static str> {
+    match c {
+        '\u{2080}'..='\u{209c}' | '\u{1d62}'..='\u{1d6a}' | '\u{2c7c}' => Some("subscript"),
+        'ª' | 'º' | '¹' | '²' | '³' => Some("superscript"),
+        '\u{2b0}'..='\u{2b8}' | '\u{2e0}'..='\u{2e4}' | '\u{1d2c}'..='\u{1d61}' => {
+            Some("superscript")
+        }
+        '\u{1d78}' | '\u{1d9b}'..='\u{1dbf}' | '\u{2070}'..='\u{207f}' => Some("superscript"),
+        '\u{a69c}' | '\u{a69d}' | '\u{a770}' | '\u{a7f8}' | '\u{a7f9}' => Some("superscript"),
+        '\u{ab5c}'..='\u{ab5f}' | '\u{10780}'..='\u{107ba}' => Some("superscript"),
+        _ => None,
+    }
+}
+
 /// Refuses a display name (`text`, written at `whole` in `source`) that would not show as
 /// written ([`Builder::check_display`] says how); the message points at the character.
 pub(crate) fn check_display(
@@ -733,6 +759,10 @@ pub(crate) fn check_display(
                      parenthesis (Z̄, Z̄_x)",
                 );
             }
+        } else if k == 0 && (script(c).is_some() || DIFFERENTIALS.contains(c)) {
+            // Said below, in the words of the rule on a display's first character.
+        } else if DIFFERENTIALS.contains(c) {
+            return refuse(here, &differential(c));
         } else if let Some(why) = unwritable_letter(c) {
             return refuse(here, &why);
         }
@@ -744,10 +774,24 @@ pub(crate) fn check_display(
                  end or beside another '_' or a space",
             );
         }
-        // A name begins with a letter: `₊`, `2` or `'` alone would print as a mark, a number
-        // (`{2, H}`) or a prime of what stands before it, `2x` as a product.
-        if k == 0 && !c.is_alphabetic() {
-            return refuse(here, &format!("it begins with '{c}', not with a letter"));
+        // A name begins with a letter, or with `∂` or `∇` before one (`∂H`, `∇φ`): `₊`, `2`
+        // or `'` alone would print as a mark, a number (`{2, H}`) or a prime of what stands
+        // before it, `2x` as a product; a letter written as a subscript or a superscript,
+        // `ₐx`, `ᵃx`, as one of what stands before it (a Unicode letter all the same).
+        if k == 0 {
+            if let Some(script) = script(c) {
+                return refuse(
+                    here,
+                    &format!("it begins with '{c}', a {script}, not with a letter"),
+                );
+            }
+            if DIFFERENTIALS.contains(c) {
+                if !after.is_some_and(|a| a.is_alphabetic() && script(a).is_none()) {
+                    return refuse(here, &differential(c));
+                }
+            } else if !c.is_alphabetic() {
+                return refuse(here, &format!("it begins with '{c}', not with a letter"));
+            }
         }
     }
     if let Some(&k) = open.last() {

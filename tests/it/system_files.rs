@@ -568,7 +568,7 @@ fn base_with(from: &str, to: &str) -> Vec<u8> {
 
 /// The display names a file may not give, on `BASE`'s function `A` (line 10): the case, the
 /// display as the file writes it, the column the message points at, and why.
-const BAD_DISPLAY_NAMES: [(&str, &str, usize, &str); 20] = [
+const BAD_DISPLAY_NAMES: [(&str, &str, usize, &str); 25] = [
     (
         "display name with markup",
         "a^b^c",
@@ -656,7 +656,40 @@ const BAD_DISPLAY_NAMES: [(&str, &str, usize, &str); 20] = [
         "display name a subscript sign alone",
         "₊",
         12,
-        "it begins with '₊', not with a letter",
+        "it begins with '₊', a subscript, not with a letter",
+    ),
+    // A letter written as a subscript or superscript is a Unicode letter, but prints under or
+    // over what stands before it: it was refused as no letter LaTeX has, and `₁x` as no letter.
+    (
+        "display name beginning with a subscript letter",
+        "ₐx",
+        12,
+        "it begins with 'ₐ', a subscript, not with a letter",
+    ),
+    (
+        "display name beginning with a superscript letter",
+        "ᵃx",
+        12,
+        "it begins with 'ᵃ', a superscript, not with a letter",
+    ),
+    (
+        "display name beginning with a subscript digit",
+        "₁x",
+        12,
+        "it begins with '₁', a subscript, not with a letter",
+    ),
+    // `∂` and `∇` begin a display, right before a letter (`∂H`, `∇φ`), and nowhere else.
+    (
+        "display name a partial sign alone",
+        "∂",
+        12,
+        "'∂' stands first, right before the letter of what it applies to (∂H, ∇φ)",
+    ),
+    (
+        "display name with a nabla after a letter",
+        "x∇",
+        13,
+        "'∇' stands first, right before the letter of what it applies to (∂H, ∇φ)",
     ),
     (
         "display name a number",
@@ -690,6 +723,38 @@ const BAD_DISPLAY_NAMES: [(&str, &str, usize, &str); 20] = [
         BAR,
     ),
 ];
+
+/// A display may begin with `∂` or `∇` before a letter, as a derivative or a gradient is
+/// written: `∂H`, `∇φ` print as written, and in LaTeX as `\partial H`, `\nabla\varphi`; they
+/// were refused as no letter LaTeX has, while a display beginning with a subscript or
+/// superscript letter was refused in those words rather than as beginning with no letter.
+#[test]
+fn a_display_may_begin_with_a_partial_or_a_nabla_sign() {
+    let dir = scratch("display-differentials");
+    let file = "name = \"signs\"\nhamiltonian = \"p_x^2/2 + p_y^2/2\"\n\n[phase_space]\n\
+                coordinates = [\"x\", \"y\"]\n\n[[function]]\nname = \"G\"\n\
+                display = \"∇φ\"\nvalue = \"x*p_x\"\n\n[[function]]\nname = \"dH\"\n\
+                display = \"∂H\"\nvalue = \"p_x\"\n\n[[claim]]\nid = \"c1\"\n\
+                claim = \"{G, dH} = dH\"\n";
+    std::fs::write(dir.join("signs.toml"), file).expect("written");
+    let o = superint_in(&dir, &["check", "signs.toml", "--no-timings"]);
+    assert_eq!(o.status.code(), Some(0), "{}", text(&o.stderr));
+    assert!(
+        text(&o.stdout).contains("{∇φ, ∂H} = ∂H"),
+        "{}",
+        text(&o.stdout)
+    );
+    let o = superint_in(
+        &dir,
+        &["check", "signs.toml", "--no-timings", "--format", "latex"],
+    );
+    assert_eq!(o.status.code(), Some(0), "{}", text(&o.stderr));
+    assert!(
+        text(&o.stdout).contains(r"\{\nabla\varphi, \partial H\} &= \partial H"),
+        "{}",
+        text(&o.stdout)
+    );
+}
 
 /// Why a bar stands where it does.
 const BAR: &str = "a bar (U+0304) stands right after the letter or digit it is drawn over, at \
