@@ -414,6 +414,7 @@ mod tests {
                                 cos(θ)^2 for the square of cos θ"),
         ("sin theta^2", (1, 5), "'sin theta' followed by a power is ambiguous: write \
                                  sin²theta or sin(theta)^2 for the square of sin theta"),
+        ("r²^", (1, 4), "expected an expression after '^', found end of input"),
         // Characters pasted from print, with what to write instead.
         ("½x", (1, 1), "unexpected character '½'; write a fraction such as 1/2"),
         ("x – y", (1, 3), "unexpected character '–'; a dash is no minus sign: write '-' or '−'"),

@@ -361,7 +361,9 @@ impl Parser<'_> {
             raised = true;
         }
         if self.on_empty_group() && self.has_superscript(lhs) {
-            return Err(self.superscript_after_superscript(lhs));
+            let refused = self.superscript_after_superscript(lhs);
+            self.exponent_after_caret()?;
+            return Err(refused);
         }
         // A `^` after a superscript character, `r²^3`, raises the power, `(r²)³`, where `r^2^3`
         // raises the exponent, `r^(2³)`: neither is guessed.
@@ -421,14 +423,32 @@ impl Parser<'_> {
     }
 
     /// The error for a `^` after `lhs`, which ends in a superscript character, `r²^3`: the
-    /// quote holds the `^` and its exponent, as far as they parse.
+    /// quote holds the `^` and its exponent; one without an exponent, `r²^`, is refused as
+    /// `r^` is ([`Self::exponent_after_caret`]).
     #[cold]
     fn caret_after_superscript(&mut self, lhs: &Expr) -> ParseError {
         let caret = self.tok.span;
-        let exponent = self.bump().and_then(|_| self.expr(EXPONENT_BP));
-        let end = exponent.map_or_else(|_| script_end(self.src, caret.end), |e| e.span.end);
-        let span = Span::new(caret.start, end.max(caret.end));
-        self.after_superscript(lhs, span, "it may raise the power or its exponent")
+        match self.exponent_after_caret() {
+            Ok(end) => self.after_superscript(
+                lhs,
+                Span::new(caret.start, end),
+                "it may raise the power or its exponent",
+            ),
+            Err(missing) => missing,
+        }
+    }
+
+    /// Consumes the `^` at the current token and parses its exponent, for a refusal of the
+    /// power that quotes them, returning where the exponent ends.
+    ///
+    /// # Errors
+    ///
+    /// An exponent that is missing or does not parse, `r²^`, `r²^)`, `r²^{}`, is refused as
+    /// after any other base (`r^`: `expected an expression after '^'`), since without one
+    /// there is no power to be in doubt about.
+    fn exponent_after_caret(&mut self) -> PResult<usize> {
+        self.bump()?;
+        Ok(self.expr(EXPONENT_BP)?.span.end)
     }
 
     /// The error for what stands at `span`, a superscript, after `lhs`, which has one already,
@@ -686,13 +706,17 @@ impl Parser<'_> {
             };
             // `cos θ²` could be (cos θ)² or cos(θ²): neither is guessed.
             if power.is_none() && matches!(self.tok.tok, Tok::Sup { .. } | Tok::Caret) {
-                return Err(ParseError::new(
+                let refused = ParseError::new(
                     arg_span.to(self.tok.span),
                     format!(
                         "'{name} {arg}' followed by a power is ambiguous: write {name}²{arg} or \
                          {name}({arg})^2 for the square of {name} {arg}"
                     ),
-                ));
+                );
+                if self.tok.tok == Tok::Caret {
+                    self.exponent_after_caret()?;
+                }
+                return Err(refused);
             }
             let arg = Expr::new(ExprKind::Name(arg), arg_span);
             Expr::new(ExprKind::Call(name, span, vec![arg]), span.to(arg_span))

@@ -934,3 +934,30 @@ fn a_superscript_after_a_power_quotes_the_factor_raised() {
         );
     }
 }
+
+/// A `^` after a superscript character with no exponent after it, `x²^`, is refused as it is
+/// after any other base, `x^`: there is no power to be in doubt about.
+#[test]
+fn a_caret_without_an_exponent_after_a_superscript_is_missing_its_exponent() {
+    let vars = phase_space();
+    for (src, alone, line_col) in [
+        ("x²^", "x^", (1, 4)),
+        ("x² ^", "x ^", (1, 5)),
+        ("(x²^)", "(x^)", (1, 5)),
+        ("x²^{}", "x^{}", (1, 5)),
+        ("x²^(2", "x ^(2", (1, 6)),
+        ("x²^$", "x^$", (1, 4)),
+        ("x²{}^", "x{}^", (1, 6)),
+        ("x^{2}{}^", "x{}^", (1, 9)),
+        ("cos²θ^", "x^", (1, 7)),
+        ("cos θ^", "x^", (1, 7)),
+    ] {
+        let err = Poly::<Rational>::parse(&vars, src).expect_err(src);
+        let want = Poly::<Rational>::parse(&vars, alone).expect_err(alone);
+        assert_eq!(
+            (err.message.clone(), err.line_col(src)),
+            (want.message, line_col),
+            "{src}"
+        );
+    }
+}
