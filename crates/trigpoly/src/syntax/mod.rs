@@ -414,6 +414,13 @@ mod tests {
                                 cos(θ)^2 for the square of cos θ"),
         ("sin theta^2", (1, 5), "'sin theta' followed by a power is ambiguous: write \
                                  sin²theta or sin(theta)^2 for the square of sin theta"),
+        // A power of the angle after a power of its function: `(sin²θ)³` or `sin²(θ³)`.
+        ("sin²θ^3", (1, 5), "'sin²θ' followed by a power is ambiguous: write (sin²θ)^3 for a \
+                             power of sin²θ, or sin²(θ^3) for sin² of θ^3"),
+        ("\\cos^{2}\\theta^{3}", (1, 9), "'\\cos^{2}\\theta' followed by a power is ambiguous: \
+                                         write (\\cos^{2}\\theta)^{3} for a power of \
+                                         \\cos^{2}\\theta, or \\cos^{2}(\\theta^{3}) for \
+                                         \\cos^{2} of \\theta^{3}"),
         ("r²^", (1, 4), "expected an expression after '^', found end of input"),
         // Characters pasted from print, with what to write instead.
         ("½x", (1, 1), "unexpected character '½'; write a fraction such as 1/2"),

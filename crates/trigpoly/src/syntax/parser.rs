@@ -704,8 +704,12 @@ impl Parser<'_> {
                     format!("expected an angle or '(' after '{name}'{hint}"),
                 ));
             };
-            // `cos θ²` could be (cos θ)² or cos(θ²): neither is guessed.
-            if power.is_none() && matches!(self.tok.tok, Tok::Sup { .. } | Tok::Caret) {
+            // `cos θ²` could be (cos θ)² or cos(θ²), and `cos²θ^3` (cos²θ)³ or cos²(θ³), as
+            // LaTeX reads `\cos^2\theta^3`: neither is guessed.
+            if matches!(self.tok.tok, Tok::Sup { .. } | Tok::Caret) {
+                if power.is_some() {
+                    return Err(self.power_of_bare_angle(span, arg_span));
+                }
                 let refused = ParseError::new(
                     arg_span.to(self.tok.span),
                     format!(
@@ -729,6 +733,35 @@ impl Parser<'_> {
                 Expr::new(ExprKind::Pow(Box::new(call), Box::new(exponent)), whole)
             }
         })
+    }
+
+    /// The error for a power of the angle at `angle`, written without parentheses after a
+    /// power of the function whose name is at `name`: `sin²θ^3` could be `(sin²θ)³` or
+    /// `sin²(θ³)`, as LaTeX reads `\sin^2\theta^3`; the message writes both readings in the
+    /// source's own spelling (`(\sin^{2}\theta)^{3}`). A missing exponent, `sin²θ^`, is
+    /// refused as after any other base ([`Self::exponent_after_caret`]).
+    #[cold]
+    fn power_of_bare_angle(&mut self, name: Span, angle: Span) -> ParseError {
+        let end = match self.tok.tok {
+            Tok::Sup { .. } => self.tok.span.end,
+            _ => match self.exponent_after_caret() {
+                Ok(end) => end,
+                Err(missing) => return missing,
+            },
+        };
+        let function = self.src[name.start..angle.start].trim_end();
+        let written = &self.src[name.start..angle.end];
+        let arg = &self.src[angle.start..angle.end];
+        // An empty group, `\theta{}^{3}`, is no part of the power the readings write.
+        let power = self.src[angle.end..end]
+            .trim_start_matches(|c: char| c == '{' || c == '}' || c.is_whitespace());
+        ParseError::new(
+            Span::new(angle.start, end),
+            format!(
+                "'{written}' followed by a power is ambiguous: write ({written}){power} for a \
+                 power of {written}, or {function}({arg}{power}) for {function} of {arg}{power}"
+            ),
+        )
     }
 
     /// Parses the parenthesized arguments of a call of `name` (at `span`).

@@ -961,3 +961,82 @@ fn a_caret_without_an_exponent_after_a_superscript_is_missing_its_exponent() {
         );
     }
 }
+
+/// A power of an angle written without parentheses after a power of its function,
+/// `sin²θ^3`, could raise `sin²θ`, as it was read, or the angle, as LaTeX reads
+/// `\sin^2\theta^3`: it is refused, with both readings written as the input writes them. With
+/// the angle in parentheses the power raises the call, as `sin(θ)^3` does.
+#[test]
+fn a_power_of_a_bare_angle_after_a_powered_function_is_ambiguous() {
+    let vars = phase_space();
+    let refused = [
+        ("sin²θ^3", "sin²θ", "^3", "sin²", "θ", (1, 5)),
+        ("sin²θ^{3}", "sin²θ", "^{3}", "sin²", "θ", (1, 5)),
+        ("sin²θ³", "sin²θ", "³", "sin²", "θ", (1, 5)),
+        ("cos⁻¹θ⁻¹", "cos⁻¹θ", "⁻¹", "cos⁻¹", "θ", (1, 6)),
+        (
+            "x + sin² theta ^2",
+            "sin² theta",
+            "^2",
+            "sin²",
+            "theta",
+            (1, 10),
+        ),
+        (
+            "\\sin^{2}\\theta^{3}",
+            "\\sin^{2}\\theta",
+            "^{3}",
+            "\\sin^{2}",
+            "\\theta",
+            (1, 9),
+        ),
+        (
+            "\\sin^{2}\\theta{}^{3}",
+            "\\sin^{2}\\theta",
+            "^{3}",
+            "\\sin^{2}",
+            "\\theta",
+            (1, 9),
+        ),
+        ("x^{cos²θ^-2}", "cos²θ", "^-2", "cos²", "θ", (1, 8)),
+    ];
+    for (src, written, power, function, angle, line_col) in refused {
+        let err = Poly::<GaussianRational>::parse(&vars, src).expect_err(src);
+        assert_eq!(
+            (err.message.clone(), err.line_col(src)),
+            (
+                format!(
+                    "'{written}' followed by a power is ambiguous: write ({written}){power} \
+                     for a power of {written}, or {function}({angle}{power}) for {function} of \
+                     {angle}{power}"
+                ),
+                line_col
+            ),
+            "{src}"
+        );
+        // Both readings the message writes parse (the power of the angle is no polynomial,
+        // and is refused as one).
+        let (whole, inner) = (
+            format!("({written}){power}"),
+            format!("{function}({angle}{power})"),
+        );
+        for reading in [whole, inner] {
+            trigpoly::syntax::parse_expr(&reading).expect(&reading);
+        }
+    }
+    for (src, value) in [
+        ("sin²θ", "sin(theta)^2"),
+        ("sin²θ x^3", "x^3 sin(theta)^2"),
+        ("cos²θ sin³θ", "cos(theta)^2 sin(theta)^3"),
+        ("sin(θ)^3", "sin(theta)^3"),
+        ("sin²(θ)^3", "sin(theta)^6"),
+        ("\\sin^{2}(\\theta)^{3}", "sin(theta)^6"),
+        ("(sin²θ)^3", "sin(theta)^6"),
+    ] {
+        assert_eq!(
+            Poly::<GaussianRational>::parse(&vars, src).expect(src),
+            Poly::<GaussianRational>::parse(&vars, value).unwrap(),
+            "{src}"
+        );
+    }
+}
