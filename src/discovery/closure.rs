@@ -102,9 +102,10 @@ pub fn closure_report_for(
     ))
 }
 
-/// Which symbols of the table and its equations stand for which generators, where a display
-/// name cannot be a symbol (`Re K`, with a space) and the generator's name stands for it:
-/// `Kr stands for Re K and Ki for Im K`; `None` where every symbol is its display name.
+/// Which symbols of the table and its equations stand for which generators, where the
+/// generators cannot all be symbols shown by their display names (two would print alike)
+/// and their names stand for them: `Kr stands for Re K and Ki for Im K`; `None` where every
+/// symbol is its display name (`∂H`, `x(t)` too, as the rest of the report prints them).
 fn symbols_text(c: &Closure) -> Option<Entry> {
     let renamed: Vec<String> = c
         .symbols

@@ -3602,8 +3602,8 @@ fn cli_long_table_entry_shows_its_leading_terms() {
 /// A closure's table and equations write a generator by its display name of several words
 /// (`Re A`), in parentheses where a power or a factor follows it: `(Re A)² + (Im A)²`, not
 /// `Re A² + Im A²`, which reads as the real part of `A²`, nor the names `ReA`, `ImA`. A display
-/// name that cannot be a symbol (`x(t)`) is written by the generator's name, and the output says
-/// which stands for which.
+/// name that is no name (`x(t)`) is written as it is, as the rest of the report writes it (it
+/// was written by the generator's name, with a note on which stands for which).
 #[test]
 fn closure_writes_display_names_of_several_words_in_parentheses_before_a_power() {
     let out = run(
@@ -3636,12 +3636,8 @@ fn closure_writes_display_names_of_several_words_in_parentheses_before_a_power()
         ],
         0,
     );
-    let words = crate::normalize(&solution);
     assert!(
-        words.contains(
-            "In the table and its equations, X stands for x(t) and Y for y(t): their display \
-             names cannot be written as symbols."
-        ),
+        solution.contains("  x(t) = y(t) at x_0 = 1, ") && !solution.contains("stands for"),
         "{solution}"
     );
     let plain = run(
@@ -4042,5 +4038,93 @@ fn a_search_at_a_condition_shows_h_as_it_searches_it() {
     assert!(
         rotor.contains("    H = p_x²/(2M) + p_y²/(2M) + p_θ²/(2I) + Mω²x²/2 + Mω²y²/2\n"),
         "{rotor}"
+    );
+}
+
+/// A function whose display is no name, `∂H` or `x(t)`, is printed by its display where a
+/// result is written in the functions, as everywhere else in a report: `bracket`'s line below
+/// the normal form, `table`'s brackets that are no combination of the listed functions and
+/// (in LaTeX) its combinations, `search`'s integrals and `closure`'s table, in text, LaTeX
+/// (`\partial H`, as the statement writes it) and JSON; the ASCII form keeps the name, which
+/// reads back. They printed the name (`= dH`, `\mathrm{dH}`), and a table's LaTeX cell `∂H`
+/// raw.
+#[test]
+fn results_in_the_functions_print_a_display_that_is_no_name() {
+    let file = crate::scratch_text(
+        "display-no-name",
+        "d.toml",
+        "name = \"oscillator\"\nhamiltonian = \"(p_x^2 + p_y^2)/2 + (x^2 + y^2)/2\"\n\
+         [phase_space]\ncoordinates = [\"x\", \"y\"]\n\
+         [[function]]\nname = \"dH\"\ndisplay = \"∂H\"\nvalue = \"x*p_x + y*p_y\"\n\
+         [[function]]\nname = \"xt\"\ndisplay = \"x(t)\"\nvalue = \"x\"\n\
+         [[function]]\nname = \"R\"\nvalue = \"(x^2 + y^2)/2\"\n\
+         [[function]]\nname = \"E\"\nvalue = \"H\"\n\
+         [[function]]\nname = \"B\"\ndisplay = \"b(t)\"\nvalue = \"p_x*p_y + x*y\"\n\
+         [[function]]\nname = \"A\"\nvalue = \"p_x^2 + x^2 - p_y^2 - y^2\"\n",
+    );
+    let file = file.to_str().expect("a UTF-8 path");
+    let bracket = |f: &str, g: &str, format: &str| {
+        run(
+            &["bracket", file, f, g, "--no-timings", "--format", format],
+            0,
+        )
+    };
+    let text = bracket("R", "H", "text");
+    assert!(
+        text.contains("    {R, H} = x p_x + y p_y\n           = ∂H\n"),
+        "{text}"
+    );
+    let text = bracket("H", "p_x", "text");
+    assert!(text.contains("= x(t)\n"), "{text}");
+    let latex = bracket("R", "H", "latex");
+    assert!(latex.contains(r" &= \partial H"), "{latex}");
+    assert!(!latex.contains("dH"), "{latex}");
+    let json: Value = serde_json::from_str(&bracket("R", "H", "json")).expect("JSON");
+    let written = &json["equations"][0]["lines"][0]["in_functions"];
+    assert_eq!(
+        [&written["text"], &written["ascii"], &written["latex"]],
+        ["∂H", "dH", r"\partial H"]
+    );
+    let table = run(&["table", file, "R", "E", "dH", "xt", "--no-timings"], 0);
+    assert!(
+        crate::normalize(&table).contains("R │ 0 ∂H 2 R 0"),
+        "{table}"
+    );
+    let latex = run(
+        &[
+            "table",
+            file,
+            "R",
+            "E",
+            "dH",
+            "--no-timings",
+            "--format",
+            "latex",
+        ],
+        0,
+    );
+    assert!(latex.contains(r"R & 0 & \partial H & 2 R \\"), "{latex}");
+    let apart = run(&["table", file, "dH", "A", "R", "xt", "--no-timings"], 0);
+    assert!(
+        apart.contains("{∂H, A} = −8 x(t)² + 8 R + 2 A\n"),
+        "{apart}"
+    );
+    let search = run(
+        &[
+            "search",
+            file,
+            "--momenta-degree",
+            "2",
+            "--positions-degree",
+            "2",
+            "--no-timings",
+        ],
+        0,
+    );
+    assert!(search.contains("= b(t)\n"), "{search}");
+    let closure = run(&["closure", file, "dH", "xt", "--no-timings"], 0);
+    assert!(
+        closure.contains("{∂H, x(t)} = −x(t) ") && !closure.contains("stands for"),
+        "{closure}"
     );
 }

@@ -796,7 +796,16 @@ fn printing_ring(vars: &Vars, generators: &[NamedFunction]) -> Result<PrintingRi
             )));
         }
         builder = builder.coordinate(name).word();
-        shown = shown.coordinate(name).shown_as(display).word();
+        // A display that is no name, `x(t)` or `∂H`, prints as it is, as the rest of a report
+        // writes it (in LaTeX as a table writes it, `\partial H`); its ASCII form stays the
+        // name, which reads back.
+        shown = match trigpoly::shown_forms(display) {
+            Some(_) => shown.coordinate(name).shown_as(display),
+            None => shown
+                .coordinate(name)
+                .printed_as(display, &crate::table::latex_name(display)),
+        }
+        .word();
     }
     let ring = shown
         .build()

@@ -345,7 +345,9 @@ pub fn latex_name(name: &str) -> String {
 }
 
 /// A name that is no display name as a whole (`Re ω`), each word as
-/// [`trigpoly::display_forms`] writes it, the rest as it is.
+/// [`trigpoly::display_forms`] writes it, a differential sign before a letter as LaTeX's
+/// command (`∂H` → `\partial H`, `∇φ` → `\nabla\varphi`, as a statement writes them), the rest
+/// as it is (`x(t)`).
 fn words_in_latex(name: &str) -> String {
     let in_word = |c: char| c.is_alphanumeric() || matches!(c, '_' | '\'' | '\u{304}');
     let mut out = String::new();
@@ -356,13 +358,32 @@ fn words_in_latex(name: &str) -> String {
             .unwrap_or(rest.len());
         let (part, after) = rest.split_at(end);
         match trigpoly::display_forms(part).filter(|_| in_word(c)) {
-            Some((_, latex)) => out.push_str(&latex),
-            None => out.push_str(part),
+            Some((_, latex)) => {
+                // A control word is ended by a space before a letter.
+                let command = DIFFERENTIALS
+                    .iter()
+                    .any(|(_, command)| out.ends_with(command));
+                if command && latex.starts_with(|l: char| l.is_ascii_alphabetic()) {
+                    out.push(' ');
+                }
+                out.push_str(&latex);
+            }
+            None => {
+                for c in part.chars() {
+                    match DIFFERENTIALS.iter().find(|(sign, _)| *sign == c) {
+                        Some((_, command)) => out.push_str(command),
+                        None => out.push(c),
+                    }
+                }
+            }
         }
         rest = after;
     }
     out
 }
+
+/// The signs a display name may begin with, before a letter (`∂H`, `∇φ`), and their LaTeX.
+const DIFFERENTIALS: [(char, &str); 2] = [('∂', r"\partial"), ('∇', r"\nabla")];
 
 /// Writes `target` as `Σ c_k F_k` with `c_k` Laurent polynomials in the parameters, if possible.
 ///
@@ -1056,6 +1077,11 @@ mod tests {
             ("K1'_{1,2}", "K_{1;1,2}'"),
             ("K_a_{m,n}", "K_{a;m,n}"),
             ("K_{a}", "K_{a}"),
+            // As a statement writes them (`render::tex`).
+            ("∂H", r"\partial H"),
+            ("∇φ", r"\nabla\varphi"),
+            ("∂H_x", r"\partial H_{x}"),
+            ("x(t)", "x(t)"),
         ] {
             assert_eq!(latex_name(name), latex, "{name}");
         }
