@@ -471,13 +471,7 @@ fn vanishing_bordering_minors(
         .collect();
     let mut count = 0;
     for extra_row in (0..jac.len()).filter(|i| !cert.minor_rows.contains(i)) {
-        let rows: Vec<usize> = cert
-            .minor_rows
-            .iter()
-            .copied()
-            .chain([extra_row])
-            .sorted_unstable()
-            .collect();
+        let rows = expansion_order(jac, cert.minor_rows.iter().copied().chain([extra_row]));
         // The minors of these rows share their smaller minors: computed once for all of
         // their column sets.
         let mut minors = Minors::new(jac, &rows);
@@ -495,6 +489,23 @@ fn vanishing_bordering_minors(
         }
     }
     Ok(Some(count))
+}
+
+/// The rows of a minor in the order its Laplace expansion takes them when only whether it
+/// vanishes matters (a permutation of the rows changes its sign only): the rows of more terms
+/// first, ties in increasing order. The expansion multiplies the first row's entries once, by
+/// the minors of the other rows, and the last rows' in every one of their many smaller
+/// minors, so the large entries are best multiplied where the products are fewest. With
+/// `F1, G1, G2` (monomial derivatives) and `P_{40,40}, Q_{40,40}` (23 000 terms each) at
+/// `p_θ = Iω`, the rows in increasing order formed all ten 2 × 2 minors of `P` and `Q`,
+/// 20 products of 23 000 by 23 000 terms (10¹⁰ term products, 35 s); `P` and `Q` first, 5
+/// products of `P`'s entries by the 28 000-term minors of the others (3·10⁹, 25 s).
+fn expansion_order(jac: &[Vec<Expr>], rows: impl Iterator<Item = usize>) -> Vec<usize> {
+    let terms = |i: usize| jac[i].iter().map(Expr::len).sum::<usize>();
+    rows.map(|i| (std::cmp::Reverse(terms(i)), i))
+        .sorted_unstable()
+        .map(|(_, i)| i)
+        .collect()
 }
 
 /// The determinant of the submatrix `rows × cols`, by Laplace expansion with memoised minors;
@@ -729,6 +740,32 @@ mod tests {
             "the condition sets the parameter ω to a function of phase space (it holds p_x, a \
              momentum)"
         ));
+    }
+
+    /// The bordering minors expand the rows of more terms first: there they are multiplied
+    /// by the minors of the others once, not in every minor of the last rows (10¹⁰ term
+    /// products for `F1, G1, G2, P_{40,40}, Q_{40,40}` at `p_θ = Iω` in increasing order,
+    /// 3·10⁹ with `P` and `Q` first). Ties keep their order; the rank is unchanged.
+    #[test]
+    fn the_bordering_minors_expand_the_largest_rows_first() {
+        let rotor = harmonic_rotor();
+        let p = |s: &str| rotor.parse(s).unwrap();
+        let functions = [p("F1"), p("(x + y + p_x)^3"), p("G1"), p("(x - p_y)^3")];
+        let coords = rotor.space().coordinates();
+        let jac: Vec<Vec<Expr>> = functions
+            .iter()
+            .map(|f| {
+                coords
+                    .iter()
+                    .map(|&c| rotor.space().derivative(f, c).unwrap())
+                    .collect()
+            })
+            .collect();
+        assert_eq!(expansion_order(&jac, 0..4), [1, 3, 0, 2]);
+        assert_eq!(expansion_order(&jac, [2, 0].into_iter()), [0, 2]);
+        let rank = rank_of(&["F1", "G1", "(x + y + p_x)^3", "F1 + (x + y + p_x)^3"]);
+        assert_eq!(rank.rank, 3);
+        assert!(matches!(rank.upper, UpperBound::VanishingMinors { .. }));
     }
 
     /// A dependent pair keeps its rank with the vanishing minors as the upper bound.
