@@ -55,6 +55,14 @@ pub enum WorkloadError {
     /// An identity that must hold did not.
     #[error("{0} is not zero")]
     NotZero(String),
+    /// A tower of this size (W1) has more pairs `(m, n)`, or twice as many identities, than a
+    /// `usize` counts (size 2³² and past; 2¹⁶ where a `usize` has 32 bits).
+    #[error(
+        "a tower of size {0} has {0}² pairs (m, n) and twice as many identities, more than \
+         this machine counts ({max}): give a smaller size",
+        max = usize::MAX
+    )]
+    TooLarge(i64),
 }
 
 impl From<trigpoly::AlgebraError> for WorkloadError {
@@ -94,17 +102,21 @@ impl Workload {
                 // first of them stopped at the limit on θ's order.
                 // A size below 1 has no pairs, as `1..=n` had none (`n as usize` made -1 a
                 // side of 2⁶⁴ − 1, whose square overflowed).
+                // `side * side` wrapped past 2³² (`W1 2³²` checked no pair and reported none
+                // failing; a panic in a debug build), and wraps past 2¹⁶ where a `usize` has 32
+                // bits: such a tower is refused, with the pairs it would have.
                 let side = usize::try_from(n).unwrap_or(0);
-                let terms: usize = (0..side * side)
+                let (pairs, zeros) = side
+                    .checked_mul(side)
+                    .and_then(|pairs| Some((pairs, pairs.checked_mul(2)?)))
+                    .ok_or(WorkloadError::TooLarge(n))?;
+                let terms: usize = (0..pairs)
                     .into_par_iter()
                     .map(|i| resonant_pair(&rotor, (i / side) as i64 + 1, (i % side) as i64 + 1))
                     .collect::<Result<Vec<_>, _>>()?
                     .into_iter()
                     .sum();
-                Ok(Outcome {
-                    terms,
-                    zeros: (2 * n * n) as usize,
-                })
+                Ok(Outcome { terms, zeros })
             }
             Workload::Single(m) => {
                 let rotor = systems::harmonic_rotor();
@@ -255,6 +267,37 @@ impl FromStr for Workload {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// A tower whose number of pairs `N²` (and of identities, `2N²`) does not fit a `usize`
+    /// is refused: `side * side` wrapped (`N = 2³²` checked no pair and reported none
+    /// failing, and panicked in a debug build). Sizes whose pairs fit run until a limit stops
+    /// them, past θ's order 1000.
+    #[test]
+    fn a_tower_with_more_pairs_than_a_usize_counts_is_refused() {
+        let side = 1i64 << (usize::BITS / 2);
+        for n in [side, side + 1, i64::MAX] {
+            match Workload::Tower(n).run() {
+                Err(e @ WorkloadError::TooLarge(_)) => {
+                    let message = e.to_string();
+                    assert!(
+                        message.starts_with(&format!(
+                            "a tower of size {n} has {n}² pairs (m, n) and twice"
+                        )),
+                        "{message}"
+                    );
+                }
+                other => panic!("{n}: {other:?}"),
+            }
+        }
+        // 2N² overflows where N² does not.
+        let half = (side as f64 / std::f64::consts::SQRT_2) as i64 + 1;
+        assert!(matches!(
+            Workload::Tower(half).run(),
+            Err(WorkloadError::TooLarge(_))
+        ));
+        let below = Workload::Tower(side / 2).run().unwrap_err().to_string();
+        assert!(below.contains("past the limit of 1000"), "{below}");
+    }
 
     /// A tower of a size below 1 has no pairs, and computes none.
     #[test]
