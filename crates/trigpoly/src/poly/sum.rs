@@ -235,11 +235,13 @@ impl<C: Coefficient> Poly<C> {
             return Ok(None);
         };
         Self::check_terms(vars, terms.coeffs.len())?;
-        Ok(Some(Self::from_gathered(
-            vars,
-            &f.content * &g.content,
-            terms,
-        )))
+        // The primitive parts fit words: only a content past a word can take the sum past
+        // the bound on coefficients (the product of two within it is cheap to form first).
+        let content = &f.content * &g.content;
+        if content.small_parts().is_none() {
+            Self::check_coefficient_bits(f, g)?;
+        }
+        Ok(Some(Self::from_gathered(vars, content, terms)))
     }
 
     /// The streams of `± (∂self/∂v) · g` for a short `g` whose exponents are known to stay
@@ -252,6 +254,7 @@ impl<C: Coefficient> Poly<C> {
         g: &Self,
         negate: bool,
     ) -> Result<(), AlgebraError> {
+        Self::check_coefficient_bits(self, g)?;
         let d = self.derivative_terms(v)?;
         if d.rows.is_empty() {
             return Ok(());
@@ -304,6 +307,8 @@ impl<C: Coefficient> Poly<C> {
         }
         let (small, big) = if a.len() <= b.len() { (a, b) } else { (b, a) };
         if small.len() <= SMALL_SIDE {
+            // The product below is checked by `checked_mul`; these shifted copies here.
+            Self::check_coefficient_bits(a, b)?;
             small.check_product_exponents(big)?;
             let mut q = &a.content * &b.content;
             if negate {

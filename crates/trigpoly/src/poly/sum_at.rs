@@ -102,7 +102,7 @@ impl<C: Coefficient> Poly<C> {
             return Ok(None);
         }
         let mut multipliers = [0i64; MAX_PRODUCTS];
-        let Some(d) = Self::multipliers(sources, &mut multipliers) else {
+        let Some(d) = Self::multipliers(sources, &mut multipliers)? else {
             return Ok(None);
         };
         if d.is_zero() {
@@ -248,68 +248,73 @@ impl<C: Coefficient> Poly<C> {
     /// `d` with `±c(a_i)·c(b_i) = d·k_i`, or `None` when a multiplier passes a word. On machine
     /// words `d = 1/D` for the lcm `D` of the contents' denominators: the multipliers need not
     /// be coprime, since the gathered terms are brought to their content at the end anyway.
-    fn multipliers(sources: &[Source<'_, C>], out: &mut [i64; MAX_PRODUCTS]) -> Option<Rational> {
+    /// Contents past words take [`Poly::big_multipliers`], which refuses products whose
+    /// coefficients would pass the bound.
+    #[inline]
+    fn multipliers(
+        sources: &[Source<'_, C>],
+        out: &mut [i64; MAX_PRODUCTS],
+    ) -> Result<Option<Rational>, AlgebraError> {
+        match Self::word_multipliers(sources, out) {
+            Some(d) => Ok(Some(d)),
+            None => Self::big_multipliers(sources, out),
+        }
+    }
+
+    /// [`Poly::multipliers`] when every content and multiplier fits a machine word, else
+    /// `None`.
+    fn word_multipliers(
+        sources: &[Source<'_, C>],
+        out: &mut [i64; MAX_PRODUCTS],
+    ) -> Option<Rational> {
         let parts = |q: &Rational| q.small_parts();
         let mut lcm: i64 = 1;
         let mut any = false;
-        let mut words = true;
         for &(a, _, b, _) in sources {
             if a.is_zero() || b.is_zero() {
                 continue;
             }
             any = true;
-            match (parts(&a.content), parts(&b.content)) {
-                (Some((_, da)), Some((_, db))) => {
-                    let Some(den) = da.checked_mul(db) else {
-                        words = false;
-                        break;
-                    };
-                    // Both are positive.
-                    let g = binary_gcd(lcm as u64, den as u64) as i64;
-                    match lcm.checked_mul(den / g) {
-                        Some(l) => lcm = l,
-                        None => {
-                            words = false;
-                            break;
-                        }
-                    }
-                }
-                _ => {
-                    words = false;
-                    break;
-                }
-            }
+            let ((_, da), (_, db)) = (parts(&a.content)?, parts(&b.content)?);
+            let den = da.checked_mul(db)?;
+            // Both are positive.
+            let g = binary_gcd(lcm as u64, den as u64) as i64;
+            lcm = lcm.checked_mul(den / g)?;
         }
         if !any {
             return Some(Rational::zero());
         }
-        if words {
-            let mut all = true;
-            for (k, &(a, _, b, negate)) in out.iter_mut().zip(sources) {
-                *k = 0;
-                if a.is_zero() || b.is_zero() {
-                    continue;
-                }
-                let ((na, da), (nb, db)) = (parts(&a.content)?, parts(&b.content)?);
-                // k = ±na·nb·(D/(da·db)).
-                let multiple = lcm / (da * db);
-                match na
-                    .checked_mul(nb)
-                    .and_then(|n| n.checked_mul(multiple))
-                    .and_then(|n| if negate { n.checked_neg() } else { Some(n) })
-                {
-                    Some(m) => *k = m,
-                    None => {
-                        all = false;
-                        break;
-                    }
-                }
+        for (k, &(a, _, b, negate)) in out.iter_mut().zip(sources) {
+            *k = 0;
+            if a.is_zero() || b.is_zero() {
+                continue;
             }
-            if all {
-                return Some(Rational::new(1, lcm));
-            }
+            let ((na, da), (nb, db)) = (parts(&a.content)?, parts(&b.content)?);
+            // k = ±na·nb·(D/(da·db)).
+            let multiple = lcm / (da * db);
+            *k = na
+                .checked_mul(nb)
+                .and_then(|n| n.checked_mul(multiple))
+                .and_then(|n| if negate { n.checked_neg() } else { Some(n) })?;
         }
-        // Contents past machine words: the common content by rational gcds.
+        Some(Rational::new(1, lcm))
+    }
+
+    /// [`Poly::multipliers`] with contents past machine words: the common content by rational
+    /// gcds, once the products' coefficients are known to stay within the bound
+    /// ([`Poly::check_coefficient_bits`]: the fused sums form them here, where `checked_mul`
+    /// would check its factors, and a chain of brackets of single terms doubled its
+    /// coefficients' bits at every step).
+    #[cold]
+    #[inline(never)]
+    fn big_multipliers(
+        sources: &[Source<'_, C>],
+        out: &mut [i64; MAX_PRODUCTS],
+    ) -> Result<Option<Rational>, AlgebraError> {
+        let live = || sources.iter().filter(|s| !s.0.is_zero() && !s.2.is_zero());
+        for &(a, _, b, _) in live() {
+            Self::check_coefficient_bits(a, b)?;
+        }
         let content = |&(a, _, b, negate): &Source<'_, C>| {
             let q = &a.content * &b.content;
             if negate {
@@ -318,15 +323,17 @@ impl<C: Coefficient> Poly<C> {
                 q
             }
         };
-        let live = sources.iter().filter(|s| !s.0.is_zero() && !s.2.is_zero());
-        let d = Rational::content_of(live.clone().map(content).collect::<Vec<_>>().iter());
+        let d = Rational::content_of(live().map(content).collect::<Vec<_>>().iter());
         for (k, source) in out.iter_mut().zip(sources) {
             *k = 0;
             if !source.0.is_zero() && !source.2.is_zero() {
-                *k = (&content(source) / &d).numer().to_i64()?;
+                let Some(m) = (&content(source) / &d).numer().to_i64() else {
+                    return Ok(None);
+                };
+                *k = m;
             }
         }
-        Some(d)
+        Ok(Some(d))
     }
 }
 
