@@ -280,9 +280,13 @@ fn in_name(c: char) -> bool {
 /// The names that the run of name characters starting at `chars[i]` spells whole, after
 /// the digits it starts with (a number's: `2ωx`), and where the run ends; `None` for a run
 /// that is a function's (`cos`), prose (`solves`, `at`) unless it is one name, or that the names
-/// do not spell.
+/// do not spell. A differential sign right before a letter starts the run (a display name's
+/// `∂L`, whose `L` alone the names spell too when `L` is the function's name: `∂L²` was
+/// `\partial\partial L^{2}`); where the names do not spell the run with it, the sign is a
+/// character of its own, as before.
 fn spelled<'n>(chars: &[char], i: usize, names: &'n Names) -> Option<(usize, Vec<&'n str>, usize)> {
-    let end = (i..chars.len())
+    let sign = matches!(chars[i], '∂' | '∇') && chars.get(i + 1).is_some_and(|c| c.is_alphabetic());
+    let end = (i + usize::from(sign)..chars.len())
         .find(|&j| !in_name(chars[j]))
         .unwrap_or(chars.len());
     let digits = chars[i..end]
@@ -1647,6 +1651,38 @@ mod tests {
             ("G1'² + s x", "G_{1}'^{2} + s x"),
             ("x is ss", r"x\ \text{is}\ ss"),
             ("cos ω", r"\cos\omega"),
+        ] {
+            assert_eq!(math_with(u, &names), t, "{u}");
+        }
+    }
+
+    /// A display name that holds its function's name after a differential sign, `∂L` of
+    /// `L`, is spelled from its sign, once: the `L` after `∂` was read as the function again,
+    /// `\partial\partial L^{2}`. A sign before a run the names do not spell with it is a
+    /// character of its own, as before.
+    #[test]
+    fn a_differential_sign_starts_a_display_name() {
+        let names = Names {
+            forms: [
+                ("L", r"\partial L"),
+                ("∂L", r"\partial L"),
+                ("H2", r"\nabla H_{2}"),
+                ("∇H2", r"\nabla H_{2}"),
+                ("x", "x"),
+            ]
+            .iter()
+            .map(|(a, b)| (a.to_string(), b.to_string()))
+            .collect(),
+            families: Vec::new(),
+        };
+        for (u, t) in [
+            ("∂L²", r"\partial L^{2}"),
+            (
+                "{∇H2², ∂L} = 2 ∂L ∇H2",
+                r"\{\nabla H_{2}^{2}, \partial L\} = 2 \partial L \nabla H_{2}",
+            ),
+            ("(∂L + 1)²", r"(\partial L + 1)^{2}"),
+            ("∂x/∂(x)", r"\partial x/\partial(x)"),
         ] {
             assert_eq!(math_with(u, &names), t, "{u}");
         }

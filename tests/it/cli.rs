@@ -4128,3 +4128,58 @@ fn results_in_the_functions_print_a_display_that_is_no_name() {
         "{closure}"
     );
 }
+
+/// A display that holds its function's own name after a differential sign, `∂L` of `L` or
+/// `∇H2` of `H2`, is written in LaTeX once, `\partial L^{2}` as the text's `∂L²`, in
+/// `expand`'s, `bracket`'s and `check`'s echo of the expressions and in a table's header: the
+/// name after the sign was read as the function again, `\partial\partial L^{2}`.
+#[test]
+fn a_display_holding_its_own_name_is_written_in_latex_once() {
+    let file = crate::scratch_text(
+        "display-own-name",
+        "l.toml",
+        "name = \"rotor\"\nhamiltonian = \"p_r^2/2 + p_phi^2/(2*r^2)\"\n\
+         [phase_space]\ncoordinates = [\"r\"]\nangles = [\"phi\"]\n\
+         [[function]]\nname = \"L\"\ndisplay = \"∂L\"\nvalue = \"p_phi\"\n\
+         [[function]]\nname = \"H2\"\ndisplay = \"∇H2\"\nvalue = \"p_r^2 + p_phi\"\n\
+         [[claim]]\nclaim = \"{L^2, H} = 0\"\n\
+         [[claim]]\nclaim = \"{H2^2, L} = 0\"\n",
+    );
+    let file = file.to_str().expect("a UTF-8 path");
+    let latex = |command: &str, exprs: &[&str]| {
+        let mut args = vec![command, file, "--no-timings", "--format", "latex", "--"];
+        args.extend(exprs);
+        let out = run(&args, 0);
+        assert!(
+            !out.contains(r"\partial\partial") && !out.contains(r"\nabla\nabla"),
+            "{out}"
+        );
+        out
+    };
+    let expand = latex("expand", &["L^2", "2*L*H2"]);
+    assert!(
+        expand.contains(r"\partial L^{2} &= p_{\varphi}^{2} \\"),
+        "{expand}"
+    );
+    assert!(
+        expand.contains(r"2 \partial L \nabla H_{2} &= "),
+        "{expand}"
+    );
+    let bracket = latex("bracket", &["L^2", "H2^2"]);
+    assert!(
+        bracket.contains(r"\{\partial L^{2}, \nabla H_{2}^{2}\} &= 0"),
+        "{bracket}"
+    );
+    let check = latex("check", &[]);
+    assert!(
+        check.contains(r"\{\nabla H_{2}^{2}, \partial L\} &= 0"),
+        "{check}"
+    );
+    let table = latex("table", &["L", "H2"]);
+    assert!(table.contains(r"\partial L & 0 & 0 \\"), "{table}");
+    // The text and Markdown print the display as written.
+    let text = run(&["expand", file, "L^2", "--no-timings"], 0);
+    assert!(text.contains("    ∂L² = p_φ²\n"), "{text}");
+    let markdown = run(&["check", file, "--no-timings", "--format", "markdown"], 0);
+    assert!(markdown.contains("- `{∂L², H} = 0`"), "{markdown}");
+}
