@@ -182,6 +182,10 @@ mod tests {
             ("(a+b)(a-b)", "(* (+ a b) (- a b))"),
             ("x cos θ", "(* x (cos θ))"),
             ("cos²θ sin θ", "(* (^ (cos θ) 2) (sin θ))"),
+            // A power after the parentheses of a call raised before them raises the call, in
+            // a superscript character as after `^`.
+            ("sin²(θ)³ x", "(* (^ (^ (sin θ) 2) 3) x)"),
+            ("sin²(θ)^3 x", "(* (^ (^ (sin θ) 2) 3) x)"),
             ("(3 + 4i) x", "(* (+ 3 (* 4 i)) x)"),
             // After a divisor in parentheses, a factor written next to it multiplies.
             ("p²/(2M) x", "(* (/ (^ p 2) (* 2 M)) x)"),
@@ -422,6 +426,12 @@ mod tests {
                                          \\cos^{2}\\theta, or \\cos^{2}(\\theta^{3}) for \
                                          \\cos^{2} of \\theta^{3}"),
         ("r²^", (1, 4), "expected an expression after '^', found end of input"),
+        // After the parentheses of `sin²(θ)` a superscript raises the call, and a second one
+        // stands beside it.
+        ("sin²(θ)³²⁻¹", (1, 10), "'⁻¹' after 'sin²(θ)³²', which has a superscript already, \
+                                 is ambiguous: the two superscripts show side by side, as one; \
+                                 put 'sin²(θ)³²' in parentheses for a power of it, or write \
+                                 the exponent in one group"),
         // Characters pasted from print, with what to write instead.
         ("½x", (1, 1), "unexpected character '½'; write a fraction such as 1/2"),
         ("x – y", (1, 3), "unexpected character '–'; a dash is no minus sign: write '-' or '−'"),

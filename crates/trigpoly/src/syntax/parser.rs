@@ -388,11 +388,19 @@ impl Parser<'_> {
     /// Whether `e` was written with a superscript of its own, an exponent, outside
     /// parentheses: `x^{2}`, `x²`, `\cos^{2}\theta`, `P'_{1,1}{}^{2}`, `e^{x}`; not `(x^{2})`,
     /// `\exp(x)`, nor a name with a prime, `P'_{1,1}` (the prime, a superscript to TeX, is
-    /// part of the name, and a power of it is what the empty group is printed for).
+    /// part of the name, and a power of it is what the empty group is printed for), nor a
+    /// power of a function written before its argument in parentheses, `sin²(θ)`, whose
+    /// superscript stands apart from one after the parentheses: `sin²(θ)³` is `(sin²θ)³` as
+    /// `sin²(θ)^3` is (it was refused as two superscripts side by side).
     fn has_superscript(&self, e: &Expr) -> bool {
         match &e.kind {
-            // In parentheses a power's span starts before its base.
-            ExprKind::Pow(base, _) => e.span.start == base.span.start,
+            // In parentheses a power's span starts before its base; before the parentheses of
+            // a call, `sin²(θ)`, its exponent starts before the base ends with them.
+            ExprKind::Pow(base, exponent) => {
+                let before_parentheses =
+                    exponent.span.start < base.span.end && self.src[..base.span.end].ends_with(')');
+                e.span.start == base.span.start && !before_parentheses
+            }
             ExprKind::Call(f, name, _) => {
                 f == "exp"
                     && !e.in_parentheses()

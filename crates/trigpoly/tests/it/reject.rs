@@ -935,6 +935,47 @@ fn a_superscript_after_a_power_quotes_the_factor_raised() {
     }
 }
 
+/// A power of a function written before its argument in parentheses, `sin²(θ)`, takes a
+/// superscript after them as it takes `^`, `sin²(θ)³` being `(sin²θ)³`; a second superscript
+/// or a `^` after that one is refused as after any other, quoting the power it raises.
+#[test]
+fn a_superscript_after_a_call_raised_before_its_parentheses_is_refused_as_after_any_power() {
+    let vars = phase_space();
+    let side_by_side = "the two superscripts show side by side, as one";
+    for (src, quote, base, set, line_col) in [
+        ("sin²(θ)³ ²", "'²'", "'sin²(θ)³'", side_by_side, (1, 10)),
+        (
+            "sin²(θ)³{}^{2}",
+            "'{}^{2}'",
+            "'sin²(θ)³'",
+            "LaTeX sets the two superscripts side by side, as one",
+            (1, 9),
+        ),
+        (
+            "sin²(θ)³^2",
+            "'^2'",
+            "'sin²(θ)³'",
+            "it may raise the power or its exponent",
+            (1, 9),
+        ),
+        ("sin²(θ)^3²", "'²'", "'sin²(θ)^3'", side_by_side, (1, 10)),
+    ] {
+        let err = Poly::<GaussianRational>::parse(&vars, src).expect_err(src);
+        assert_eq!(
+            (err.message.clone(), err.line_col(src)),
+            (
+                format!(
+                    "{quote} after {base}, which has a superscript already, is ambiguous: \
+                     {set}; put {base} in parentheses for a power of it, or write the exponent \
+                     in one group"
+                ),
+                line_col
+            ),
+            "{src}"
+        );
+    }
+}
+
 /// A `^` after a superscript character with no exponent after it, `x²^`, is refused as it is
 /// after any other base, `x^`: there is no power to be in doubt about.
 #[test]
@@ -1032,6 +1073,15 @@ fn a_power_of_a_bare_angle_after_a_powered_function_is_ambiguous() {
         ("sin²(θ)^3", "sin(theta)^6"),
         ("\\sin^{2}(\\theta)^{3}", "sin(theta)^6"),
         ("(sin²θ)^3", "sin(theta)^6"),
+        // A superscript character after the parentheses raises the call as `^` does: the
+        // function's own stands before them, not beside it (`sin²(θ)³` was refused as two
+        // superscripts side by side), and so does a superscript on an empty group.
+        ("sin²(θ)³", "sin(theta)^6"),
+        ("sin²(θ) ³ x", "x sin(theta)^6"),
+        ("cos³(θ)²", "cos(theta)^6"),
+        ("\\sin^{2}(\\theta)³", "sin(theta)^6"),
+        ("\\sin^{2}\\left(\\theta\\right)³", "sin(theta)^6"),
+        ("\\sin^{2}(\\theta){}^{3}", "sin(theta)^6"),
     ] {
         assert_eq!(
             Poly::<GaussianRational>::parse(&vars, src).expect(src),
