@@ -609,18 +609,29 @@ fn rank(out: &mut Vec<String>, r: &RankResult) {
         out.push(format!("      ≤ 0: {}", plain(&upper_bound(r))));
         return;
     }
-    out.extend(wrap(
+    let indent = "        ";
+    let mut lines = wrap(
         &format!(
-            "      ≥ {}: the minor ∂({})/∂({}) = {} ≠ 0 at",
+            "      ≥ {}: the minor ∂({})/∂({}) = {} ≠ 0",
             c.rank,
             rows.join(", "),
             cols.join(", "),
             trigpoly::render_number(&c.minor_value, Style::Unicode),
         ),
         WRAP,
-        "        ",
-    ));
-    out.extend(wrap_items("        ", &point(r, Style::Unicode), WRAP));
+        indent,
+    );
+    // `at` ends the minor's last line, or else starts the point's: a long minor left it on a
+    // line of its own.
+    let mut at = point(r, Style::Unicode);
+    let last = lines.last_mut().expect("a line");
+    if width(last) + width(" at") <= WRAP || at.is_empty() {
+        last.push_str(" at");
+    } else {
+        at[0] = format!("at {}", at[0]);
+    }
+    out.extend(lines);
+    out.extend(wrap_items(indent, &at, WRAP));
     out.extend(wrap(
         &format!("      ≤ {}: {}", c.rank, plain(&upper_bound(r))),
         WRAP,

@@ -461,6 +461,53 @@ fn a_rank_point_writes_cos_as_expressions_do() {
     );
 }
 
+/// A minor whose `≠ 0` leaves no room for `at` on its line puts `at` before the point, where it
+/// stood on a line of its own; a minor that leaves room for it ends its line with it, as
+/// before, and where `≠ 0` or its `0` went to the next line, `at` follows it there.
+#[test]
+fn a_long_minor_keeps_at_with_the_point() {
+    let point = "r = 2, cos φ = 5/13, sin φ = 12/13, p_r = 5/3, p_φ = 7, M = 11/2, k = 13/3";
+    let minor = |power: usize| {
+        let a = format!("Ax*10^{power}");
+        let out = run(
+            &["rank", "systems/kepler.toml", "H", "L", &a, "--no-timings"],
+            0,
+        );
+        let start = out.find("      ≥ 3").expect("the minor");
+        let end = out.find("      ≤ 3").expect("the bound");
+        let lines: Vec<&str> = out[start..end].lines().collect();
+        assert!(lines.iter().all(|l| l.chars().count() <= 96), "{out}");
+        let value = format!("302{}/14157", "0".repeat(power));
+        (lines.join("\n"), value)
+    };
+    let head = |power: &str| format!("      ≥ 3: the minor ∂(H, L, A_x·10{power})/∂(r, φ, p_φ) =");
+    let (lines, value) = minor(26);
+    assert_eq!(
+        lines,
+        format!("{} {value} ≠ 0 at\n        {point}", head("²⁶"))
+    );
+    let (lines, value) = minor(27);
+    assert_eq!(
+        lines,
+        format!("{} {value} ≠ 0\n        at {point}", head("²⁷"))
+    );
+    let (lines, value) = minor(30);
+    assert_eq!(
+        lines,
+        format!("{} {value} ≠\n        0 at\n        {point}", head("³⁰"))
+    );
+    let (lines, value) = minor(32);
+    assert_eq!(
+        lines,
+        format!("{} {value}\n        ≠ 0 at\n        {point}", head("³²"))
+    );
+    let (lines, value) = minor(74);
+    assert_eq!(
+        lines,
+        format!("{}\n        {value} ≠ 0\n        at {point}", head("⁷⁴"))
+    );
+}
+
 /// The size of the minors that bound a rank is a formula: `$4 \times 4$` in LaTeX (it was
 /// `4 $\times$ 4`), a code span in Markdown, and the text as it was.
 #[test]
