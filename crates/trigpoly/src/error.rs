@@ -226,13 +226,18 @@ pub enum AlgebraError {
         /// What to declare, as [`AlgebraError::NotAMonomial`] says it.
         declare: String,
     },
-    /// A product or a power whose coefficients would pass the fixed bound on their size (the
-    /// numerator or denominator of `(3/2)^(2^30)`; `(c x + y)^100` or `F*F*F` of a `c`, an `F`,
-    /// of a million bits). The bound is no setting of
-    /// [`Limits`](crate::Limits), so no larger limit decides it: unlike
+    /// A product, a power, a bracket or a sum of products whose coefficients would pass the
+    /// fixed bound on their size (the numerator or denominator of `(3/2)^(2^30)`;
+    /// `(c x + y)^100` or `F*F*F` of a `c`, an `F`, of a million bits; `{A, B}` of single terms
+    /// whose contents multiplied pass it, which the bracket's fused kernels form themselves).
+    /// The message names the bracket beside the product and the power (a sum of products is
+    /// products), where it said "this product or power" of a bracket too. The bound is no
+    /// setting of [`Limits`](crate::Limits), so no larger limit decides it: unlike
     /// [`AlgebraError::TooManyTerms`] and the other limits it is not "a limit stopped the
     /// computation".
-    #[error("a coefficient of this product or power would have more than {limit} bits")]
+    #[error(
+        "a coefficient formed by a product, a power or a bracket would have more than {limit} bits"
+    )]
     CoefficientTooLarge {
         /// A bound on the bits of the result's coefficients: for a power, the base's times the
         /// exponent's size; for a product, the factors' added.

@@ -160,7 +160,8 @@ fn a_power_past_the_coefficient_bound_is_refused_with_the_bound() {
     );
     assert_eq!(
         err.to_string(),
-        "a coefficient of this product or power would have more than 16777216 bits"
+        "a coefficient formed by a product, a power or a bracket would have more than \
+         16777216 bits"
     );
 }
 
@@ -218,6 +219,15 @@ fn brackets_and_sums_of_products_past_the_coefficient_bound_are_refused() {
     // Single terms: the contents carry the bits (the short kernel).
     let (f, g) = (times(&c, "x^2"), times(&c, "x*p_x"));
     past(Poly::sum_of_jacobians(&f, &g, &[(x, px)]));
+    // The message names the bracket, which refuses it as a product does: it said "this
+    // product or power" of a bracket too.
+    let message = Poly::sum_of_jacobians(&f, &g, &[(x, px)])
+        .unwrap_err()
+        .to_string();
+    assert!(
+        message.contains("a product, a power or a bracket"),
+        "{message}"
+    );
     past(Poly::sum_of_products(&[(&f, &g, false)]));
     past(Poly::sum_of_derivative_products(&[(&f, x, &g, false)]));
     let at_y = [(y, p(&vars, "x"))];
