@@ -2,7 +2,7 @@
 
 use std::path::PathBuf;
 
-use super::input::load_system;
+use super::input::load_system_keeping_warnings;
 use anyhow::bail;
 use clap::Args;
 use superint::render::{json, render, Format};
@@ -62,7 +62,7 @@ pub fn run(job: &CheckJob) -> anyhow::Result<bool> {
     let files = job
         .files
         .iter()
-        .map(|p| load_system(p, &job.limits))
+        .map(|p| load_system_keeping_warnings(p, &job.limits))
         .collect();
     let (report, mut errors) = check_each(files);
     let unchecked = match report.sections.is_empty() {
@@ -70,10 +70,13 @@ pub fn run(job: &CheckJob) -> anyhow::Result<bool> {
         true => errors.pop(),
         false => None,
     };
+    // Each file's warnings right before its error: all files are loaded before any is printed.
     for e in &errors {
+        super::output::load_warnings(e);
         super::output::error_line(&e.to_string());
     }
     if let Some(last) = unchecked {
+        super::output::load_warnings(&last);
         return Err(last.into());
     }
     let text = match job.output.format {

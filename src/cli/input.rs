@@ -17,9 +17,17 @@ const STDIN: &str = "<stdin>";
 /// before the error is ([`super::output::load_warnings`]), as every command prints a loaded
 /// file's however its run ends.
 pub fn load_system(path: &Path, limits: &LimitsOverride) -> Result<LoadedSystem, FileError> {
-    load_file(path, limits)
-        .map(|file| file.with_caller(Caller::CommandLine))
-        .inspect_err(super::output::load_warnings)
+    load_system_keeping_warnings(path, limits).inspect_err(super::output::load_warnings)
+}
+
+/// [`load_system`] without printing a failed load's warnings: for `check`, which loads every
+/// file before it prints any error, and prints each error's warnings right before it, where
+/// printing them here put a later file's warnings before an earlier file's error.
+pub fn load_system_keeping_warnings(
+    path: &Path,
+    limits: &LimitsOverride,
+) -> Result<LoadedSystem, FileError> {
+    load_file(path, limits).map(|file| file.with_caller(Caller::CommandLine))
 }
 
 /// Loads the system file at `path`, or the one on standard input when `path` is `-`.

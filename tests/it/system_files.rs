@@ -310,17 +310,23 @@ fn other_commands_warn_of_names_run_together_on_standard_error() {
     }
 }
 
+/// [`RUN_TOGETHER`] with a function after `Lzx` that names an unknown `q`: the load fails
+/// after the warning of `Lzx`.
+fn failing_run_together() -> String {
+    RUN_TOGETHER.replacen(
+        "[[claim]]",
+        "[[function]]\nname = \"C\"\nvalue = \"q + 1\"\n\n[[claim]]",
+        1,
+    )
+}
+
 /// A file that fails to load says what its texts read in doubt before the error, as a run that
 /// fails after loading does: the warning of `Lzx`, read before the unknown name of a later
 /// function stopped the load, was left out, as the file that kept it was not returned.
 #[test]
 fn a_file_that_fails_to_load_says_its_warnings_before_the_error() {
     let dir = scratch("run-together-failed-load");
-    let failing = RUN_TOGETHER.replacen(
-        "[[claim]]",
-        "[[function]]\nname = \"C\"\nvalue = \"q + 1\"\n\n[[claim]]",
-        1,
-    );
+    let failing = failing_run_together();
     std::fs::write(dir.join("rt.toml"), &failing).expect("written");
     let (line, column) = line_column(&failing, "value = \"Lzx", "Lzx");
     let warning = format!(
@@ -343,6 +349,35 @@ fn a_file_that_fails_to_load_says_its_warnings_before_the_error() {
             "{args:?}: {stderr}"
         );
     }
+}
+
+/// `check` of several files that fail to load says each file's warnings right before its
+/// error: it loads them all before it prints any error, and the warnings printed at the load
+/// put the second file's before the first file's error.
+#[test]
+fn check_says_each_failed_file_s_warnings_before_its_own_error() {
+    let dir = scratch("run-together-failed-loads");
+    let failing = failing_run_together();
+    std::fs::write(dir.join("a.toml"), &failing).expect("written");
+    std::fs::write(dir.join("b.toml"), &failing).expect("written");
+    let o = superint_in(&dir, &["check", "a.toml", "b.toml", "--no-timings"]);
+    let stderr = text(&o.stderr);
+    assert_eq!(o.status.code(), Some(2), "{stderr}");
+    let said: Vec<&str> = stderr
+        .lines()
+        .filter(|l| l.starts_with("superint: "))
+        .map(|l| &l[..l.find(".toml").map_or(l.len(), |k| k + 5)])
+        .collect();
+    assert_eq!(
+        said,
+        [
+            "superint: warning: a.toml",
+            "superint: error: a.toml",
+            "superint: warning: b.toml",
+            "superint: error: b.toml",
+        ],
+        "{stderr}"
+    );
 }
 
 #[test]
