@@ -4,7 +4,7 @@
 use pretty_assertions::assert_eq;
 use trigpoly::{
     AlgebraError, AngleUse, BadName, Expr, Integer, Misuse, MonomialIndex, Point, Poly, Rational,
-    Setting, VarKind, VarSet,
+    Setting, VarKind, VarSet, Vars,
 };
 
 use crate::common::{p, phase_space, var, G, Q};
@@ -165,16 +165,19 @@ fn a_power_past_the_coefficient_bound_is_refused_with_the_bound() {
     );
 }
 
+/// The constant `2^bits` of the phase space `vars`, a coefficient of `bits + 1` bits.
+fn power_of_two(vars: &Vars, bits: usize) -> Q {
+    let c = Integer::from_bigint(num_bigint::BigInt::from(1) << bits);
+    Poly::constant(vars, Rational::from(c))
+}
+
 /// A product, or a power of a sum, whose coefficients would pass the same bound is refused
 /// with it too: `(c x + y)^100` and `F*F*…` of a `c`, an `F`, of millions of bits multiplied
 /// for minutes, the bound checked only on a power of a single term.
 #[test]
 fn products_and_powers_of_sums_past_the_coefficient_bound_are_refused() {
     let vars = phase_space();
-    let huge = |bits: usize| -> Q {
-        let c = Integer::from_bigint(num_bigint::BigInt::from(1) << bits);
-        Poly::constant(&vars, Rational::from(c))
-    };
+    let huge = |bits: usize| power_of_two(&vars, bits);
     let (x, y): (Q, Q) = (p(&vars, "x"), p(&vars, "y"));
     let past = |r: Result<Q, AlgebraError>| match r {
         Err(AlgebraError::CoefficientTooLarge { limit, .. }) => limit == 1 << 24,
@@ -205,10 +208,7 @@ fn products_and_powers_of_sums_past_the_coefficient_bound_are_refused() {
 #[test]
 fn brackets_and_sums_of_products_past_the_coefficient_bound_are_refused() {
     let vars = phase_space();
-    let huge = |bits: usize| -> Q {
-        let c = Integer::from_bigint(num_bigint::BigInt::from(1) << bits);
-        Poly::constant(&vars, Rational::from(c))
-    };
+    let huge = |bits: usize| power_of_two(&vars, bits);
     let past = |r: Result<Q, AlgebraError>| match r {
         Err(AlgebraError::CoefficientTooLarge { limit, .. }) => limit == 1 << 24,
         other => panic!("{:?}", other.map(|q| q.len())),
