@@ -27,6 +27,14 @@ const GREEK: &[(char, &str)] = &[
     ('χ', r"\chi"),
     ('ψ', r"\psi"),
     ('ω', r"\omega"),
+    // The letters a name may spell beside those (`upsilon`, `vartheta`, …), as the names'
+    // LaTeX writes them: a display that is no name, `x(ϑ)` or `∂ϑ`, is written here.
+    ('υ', r"\upsilon"),
+    ('ο', r"\mathit{o}"),
+    ('ϑ', r"\vartheta"),
+    ('ϱ', r"\varrho"),
+    ('ς', r"\varsigma"),
+    ('ϖ', r"\varpi"),
     ('Γ', r"\Gamma"),
     ('Δ', r"\Delta"),
     ('Θ', r"\Theta"),
@@ -37,6 +45,7 @@ const GREEK: &[(char, &str)] = &[
     ('Φ', r"\Phi"),
     ('Ψ', r"\Psi"),
     ('Ω', r"\Omega"),
+    ('Υ', r"\Upsilon"),
 ];
 
 /// Symbols and their LaTeX math commands.
@@ -1399,6 +1408,27 @@ pub fn relation(s: &str) -> Option<usize> {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// Every Greek letter a name may have is written as the name's LaTeX writes it, in a
+    /// display that is no name too (`x(ϑ)`, `∂ϑ`, `Re ϑ`): `ϑ`, `ϱ`, `ς`, `ϖ`, `ο`, `υ` and
+    /// `Υ` were written as their code points, `\mbox{\texttt{U+03D1}}`.
+    #[test]
+    fn every_greek_letter_of_a_name_is_written_as_the_name_writes_it() {
+        for spelled in [
+            "alpha", "beta", "gamma", "delta", "zeta", "eta", "theta", "iota", "kappa", "lambda",
+            "mu", "nu", "xi", "rho", "sigma", "tau", "phi", "chi", "psi", "omega", "pi", "upsilon",
+            "omicron", "vartheta", "varrho", "varsigma", "varpi", "Gamma", "Delta", "Theta",
+            "Lambda", "Phi", "Psi", "Omega", "Xi", "Pi", "Sigma", "Upsilon",
+        ] {
+            let (letter, latex) = trigpoly::display_forms(spelled).expect(spelled);
+            assert_eq!(
+                math(&format!("x({letter})")),
+                format!("x({latex})"),
+                "{spelled}"
+            );
+        }
+        assert_eq!(math("∂ϑ"), r"\partial\vartheta");
+    }
 
     /// A summary's parenthetical keeps its parentheses and its unit in text, each number a
     /// formula (it was `$(3$ exact $\text{checks})$`); parentheses inside a formula stay there.
