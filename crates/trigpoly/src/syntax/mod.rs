@@ -425,6 +425,9 @@ mod tests {
                                          write (\\cos^{2}\\theta)^{3} for a power of \
                                          \\cos^{2}\\theta, or \\cos^{2}(\\theta^{3}) for \
                                          \\cos^{2} of \\theta^{3}"),
+        // A LaTeX space before the power is no part of it (it was written into both readings).
+        ("sin²θ\\,^3", (1, 5), "'sin²θ' followed by a power is ambiguous: write (sin²θ)^3 for a \
+                                 power of sin²θ, or sin²(θ^3) for sin² of θ^3"),
         ("r²^", (1, 4), "expected an expression after '^', found end of input"),
         // After the parentheses of `sin²(θ)` a superscript raises the call, and a second one
         // stands beside it.

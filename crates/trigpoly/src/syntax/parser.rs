@@ -750,6 +750,9 @@ impl Parser<'_> {
     /// refused as after any other base ([`Self::exponent_after_caret`]).
     #[cold]
     fn power_of_bare_angle(&mut self, name: Span, angle: Span) -> ParseError {
+        // The power as written from its own `^` or superscript: an empty group or a LaTeX space
+        // before it, `\theta{}^{3}`, `θ\,^3`, is no part of the power the readings write.
+        let start = self.tok.span.start;
         let end = match self.tok.tok {
             Tok::Sup { .. } => self.tok.span.end,
             _ => match self.exponent_after_caret() {
@@ -760,9 +763,7 @@ impl Parser<'_> {
         let function = self.src[name.start..angle.start].trim_end();
         let written = &self.src[name.start..angle.end];
         let arg = &self.src[angle.start..angle.end];
-        // An empty group, `\theta{}^{3}`, is no part of the power the readings write.
-        let power = self.src[angle.end..end]
-            .trim_start_matches(|c: char| c == '{' || c == '}' || c.is_whitespace());
+        let power = &self.src[start..end];
         ParseError::new(
             Span::new(angle.start, end),
             format!(
