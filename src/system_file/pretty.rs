@@ -229,6 +229,11 @@ impl LoadedSystem {
         if trigpoly::has_several_words(&p.text) {
             p.trailing_words = Some(0);
         }
+        // A derivative or a gradient, `∂H`, `∇φ`, takes a power in parentheses, `(∂H)²`,
+        // where `∂H²` would read as `∂(H²)`.
+        if p.text.starts_with(['∂', '∇']) {
+            p.prec = POWER;
+        }
         p
     }
 

@@ -759,6 +759,38 @@ const BAD_DISPLAY_NAMES: [(&str, &str, usize, &str); 25] = [
     ),
 ];
 
+/// A display that is a derivative or a gradient, `∂H`, `∇φ`, takes a power in parentheses,
+/// `(∂H)²`, in an echo and in a result, in text and in LaTeX: `∂H²` and `\partial H^{2}` read
+/// as the derivative of `H²`.
+#[test]
+fn a_power_of_a_derivative_display_is_set_in_parentheses() {
+    let dir = scratch("display-differential-powers");
+    let file = "name = \"signs\"\nhamiltonian = \"p_x^2/2 + p_y^2/2\"\n\n[phase_space]\n\
+                coordinates = [\"x\", \"y\"]\n\n[[function]]\nname = \"G\"\n\
+                display = \"∇φ\"\nvalue = \"x*p_x\"\n\n[[function]]\nname = \"dH\"\n\
+                display = \"∂H\"\nvalue = \"p_x\"\n";
+    std::fs::write(dir.join("signs.toml"), file).expect("written");
+    let run = |args: &[&str]| {
+        let o = superint_in(&dir, args);
+        assert_eq!(o.status.code(), Some(0), "{args:?}: {}", text(&o.stderr));
+        text(&o.stdout)
+    };
+    let echo = run(&["expand", "signs.toml", "dH^2*G", "--no-timings"]);
+    assert!(echo.contains("    (∂H)² ∇φ = x p_x³\n"), "{echo}");
+    let bracket = run(&["bracket", "signs.toml", "G", "H", "--no-timings"]);
+    assert!(bracket.contains("            = (∂H)²\n"), "{bracket}");
+    let latex = run(&[
+        "bracket",
+        "signs.toml",
+        "G",
+        "H",
+        "--no-timings",
+        "--format",
+        "latex",
+    ]);
+    assert!(latex.contains(r" &= (\partial H)^{2}"), "{latex}");
+}
+
 /// A display may begin with `∂` or `∇` before a letter, as a derivative or a gradient is
 /// written: `∂H`, `∇φ` print as written, and in LaTeX as `\partial H`, `\nabla\varphi`; they
 /// were refused as no letter LaTeX has, while a display beginning with a subscript or

@@ -371,6 +371,9 @@ struct Names {
     /// factor after it, it is set in parentheses, `(Re K)² H_x`, where `Re K² H_x` would read
     /// as `Re(K²) H_x`.
     several_words: Vec<bool>,
+    /// Whether each variable's name is a derivative or a gradient (`∂H`, `∇φ`), by index: with
+    /// a power it is set in parentheses, `(∂H)²`, where `∂H²` would read as `∂(H²)`.
+    differential: Vec<bool>,
     /// The variables as the paper orders a term's factors: parameters, then coordinates,
     /// then momenta (then angles), each kind in declaration order.
     order: Vec<usize>,
@@ -410,6 +413,12 @@ impl Names {
             several_words: vars
                 .vars()
                 .map(|v| style != Style::Ascii && has_several_words(vars.variable(v).unicode()))
+                .collect(),
+            differential: vars
+                .vars()
+                .map(|v| {
+                    style != Style::Ascii && vars.variable(v).unicode().starts_with(['∂', '∇'])
+                })
                 .collect(),
             order: order.iter().map(|v| v.index()).collect(),
             angles: vars.angles().map(|v| v.index()).collect(),
@@ -598,7 +607,9 @@ fn write_term(
             let name = &names.names[j];
             let wide = style == Style::Unicode && (names.words[j] || name.chars().count() > 1);
             product.next_apart(out, wide, apart.get(k) == Some(&true));
-            if names.several_words[j] && words_in_parentheses {
+            if (names.several_words[j] && words_in_parentheses)
+                || (names.differential[j] && exps[j].abs() != 1)
+            {
                 write_power(out, &format!("({name})"), exps[j].abs(), style);
             } else {
                 write_power(out, name, exps[j].abs(), style);
