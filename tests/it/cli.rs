@@ -4205,7 +4205,7 @@ fn a_display_holding_its_own_name_is_written_in_latex_once() {
     };
     let expand = latex("expand", &["L^2", "2*L*H2"]);
     assert!(
-        expand.contains(r"\partial L^{2} &= p_{\varphi}^{2} \\"),
+        expand.contains(r"(\partial L)^{2} &= p_{\varphi}^{2} \\"),
         "{expand}"
     );
     assert!(
@@ -4214,19 +4214,19 @@ fn a_display_holding_its_own_name_is_written_in_latex_once() {
     );
     let bracket = latex("bracket", &["L^2", "H2^2"]);
     assert!(
-        bracket.contains(r"\{\partial L^{2}, \nabla H_{2}^{2}\} &= 0"),
+        bracket.contains(r"\{(\partial L)^{2}, (\nabla H_{2})^{2}\} &= 0"),
         "{bracket}"
     );
     let check = latex("check", &[]);
     assert!(
-        check.contains(r"\{\nabla H_{2}^{2}, \partial L\} &= 0"),
+        check.contains(r"\{(\nabla H_{2})^{2}, \partial L\} &= 0"),
         "{check}"
     );
     let table = latex("table", &["L", "H2"]);
     assert!(table.contains(r"\partial L & 0 & 0 \\"), "{table}");
-    // The text and Markdown print the display as written.
+    // The text and Markdown print the display as written, in parentheses under a power.
     let text = run(&["expand", file, "L^2", "--no-timings"], 0);
-    assert!(text.contains("    ∂L² = p_φ²\n"), "{text}");
+    assert!(text.contains("    (∂L)² = p_φ²\n"), "{text}");
     let markdown = run(&["check", file, "--no-timings", "--format", "markdown"], 0);
-    assert!(markdown.contains("- `{∂L², H} = 0`"), "{markdown}");
+    assert!(markdown.contains("- `{(∂L)², H} = 0`"), "{markdown}");
 }
