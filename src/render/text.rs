@@ -612,7 +612,7 @@ fn rank(out: &mut Vec<String>, r: &RankResult) {
     let indent = "        ";
     let mut lines = wrap(
         &format!(
-            "      ≥ {}: the minor ∂({})/∂({}) = {} ≠ 0",
+            "      ≥ {}: the minor ∂({})/∂({}) = {}",
             c.rank,
             rows.join(", "),
             cols.join(", "),
@@ -621,6 +621,13 @@ fn rank(out: &mut Vec<String>, r: &RankResult) {
         WRAP,
         indent,
     );
+    // `≠ 0` is one word: a long minor split it, leaving a line that began `0 at`.
+    let last = lines.last_mut().expect("a line");
+    if width(last) + width(" ≠ 0") <= WRAP {
+        last.push_str(" ≠ 0");
+    } else {
+        lines.push(format!("{indent}≠ 0"));
+    }
     // `at` ends the minor's last line, or else starts the point's: a long minor left it on a
     // line of its own.
     let mut at = point(r, Style::Unicode);

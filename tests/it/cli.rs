@@ -463,7 +463,8 @@ fn a_rank_point_writes_cos_as_expressions_do() {
 
 /// A minor whose `≠ 0` leaves no room for `at` on its line puts `at` before the point, where it
 /// stood on a line of its own; a minor that leaves room for it ends its line with it, as
-/// before, and where `≠ 0` or its `0` went to the next line, `at` follows it there.
+/// before, and where `≠ 0` went to the next line, `at` follows it there. `≠ 0` is never split:
+/// a minor with room for `≠` but not for `0` wraps before `≠`, where a line began `0 at`.
 #[test]
 fn a_long_minor_keeps_at_with_the_point() {
     let point = "r = 2, cos φ = 5/13, sin φ = 12/13, p_r = 5/3, p_φ = 7, M = 11/2, k = 13/3";
@@ -494,7 +495,7 @@ fn a_long_minor_keeps_at_with_the_point() {
     let (lines, value) = minor(30);
     assert_eq!(
         lines,
-        format!("{} {value} ≠\n        0 at\n        {point}", head("³⁰"))
+        format!("{} {value}\n        ≠ 0 at\n        {point}", head("³⁰"))
     );
     let (lines, value) = minor(32);
     assert_eq!(
