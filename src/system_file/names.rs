@@ -678,11 +678,13 @@ pub(crate) fn check_shown_text(
     }
 }
 
-/// The signs that a display name may begin with, before a letter, as a derivative or a
-/// gradient is written: `∂H`, `∇φ` (LaTeX `\partial`, `\nabla`).
-const DIFFERENTIALS: &str = "∂∇";
+/// Whether `c` is one of the signs a display name may begin with, before a letter
+/// ([`trigpoly::DIFFERENTIALS`]: `∂H`, `∇φ`).
+fn is_differential_sign(c: char) -> bool {
+    trigpoly::differential_latex(c).is_some()
+}
 
-/// Where the sign `c` of [`DIFFERENTIALS`] stands in a display name, for a message.
+/// Where the sign `c`, `∂` or `∇`, stands in a display name, for a message.
 fn differential(c: char) -> String {
     format!("'{c}' stands first, right before the letter of what it applies to (∂H, ∇φ)")
 }
@@ -759,9 +761,9 @@ pub(crate) fn check_display(
                      parenthesis (Z̄, Z̄_x)",
                 );
             }
-        } else if k == 0 && (script(c).is_some() || DIFFERENTIALS.contains(c)) {
+        } else if k == 0 && (script(c).is_some() || is_differential_sign(c)) {
             // Said below, in the words of the rule on a display's first character.
-        } else if DIFFERENTIALS.contains(c) {
+        } else if is_differential_sign(c) {
             return refuse(here, &differential(c));
         } else if let Some(why) = unwritable_letter(c) {
             return refuse(here, &why);
@@ -785,7 +787,7 @@ pub(crate) fn check_display(
                     &format!("it begins with '{c}', a {script}, not with a letter"),
                 );
             }
-            if DIFFERENTIALS.contains(c) {
+            if is_differential_sign(c) {
                 if !after.is_some_and(|a| a.is_alphabetic() && script(a).is_none()) {
                     return refuse(here, &differential(c));
                 }

@@ -231,7 +231,7 @@ impl LoadedSystem {
         }
         // A derivative or a gradient, `∂H`, `∇φ`, takes a power in parentheses, `(∂H)²`,
         // where `∂H²` would read as `∂(H²)`.
-        if p.text.starts_with(['∂', '∇']) {
+        if trigpoly::is_differential(&p.text) {
             p.prec = POWER;
         }
         p

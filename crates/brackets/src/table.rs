@@ -360,7 +360,7 @@ fn words_in_latex(name: &str) -> String {
         match trigpoly::display_forms(part).filter(|_| in_word(c)) {
             Some((_, latex)) => {
                 // A control word is ended by a space before a letter.
-                let command = DIFFERENTIALS
+                let command = trigpoly::DIFFERENTIALS
                     .iter()
                     .any(|(_, command)| out.ends_with(command));
                 if command && latex.starts_with(|l: char| l.is_ascii_alphabetic()) {
@@ -370,8 +370,8 @@ fn words_in_latex(name: &str) -> String {
             }
             None => {
                 for c in part.chars() {
-                    match DIFFERENTIALS.iter().find(|(sign, _)| *sign == c) {
-                        Some((_, command)) => out.push_str(command),
+                    match trigpoly::differential_latex(c) {
+                        Some(command) => out.push_str(command),
                         None => out.push(c),
                     }
                 }
@@ -381,9 +381,6 @@ fn words_in_latex(name: &str) -> String {
     }
     out
 }
-
-/// The signs a display name may begin with, before a letter (`∂H`, `∇φ`), and their LaTeX.
-const DIFFERENTIALS: [(char, &str); 2] = [('∂', r"\partial"), ('∇', r"\nabla")];
 
 /// Writes `target` as `Σ c_k F_k` with `c_k` Laurent polynomials in the parameters, if possible.
 ///

@@ -67,7 +67,9 @@ pub use number::{
     IntegerRing, IntegerView, ParseGaussianError, ParseRationalError, Rational, RationalErrorKind,
 };
 pub use poly::{CosSinTerm, MonomialIndex, Point, Poly, ReducedRadical, Term, TrigMonomial};
-pub use print::{render_number, superscript, Factored, Style};
+pub use print::{
+    differential_latex, is_differential, render_number, superscript, Factored, Style, DIFFERENTIALS,
+};
 pub use syntax::{Excerpt, ParseError, Span};
 pub use varset::{
     display_forms, has_several_words, is_identifier, juxtaposition_is_ambiguous, latex_unwritable,

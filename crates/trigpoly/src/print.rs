@@ -340,6 +340,21 @@ pub(crate) fn write_display(out: &mut String, args: fmt::Arguments<'_>) {
     let _ = fmt::Write::write_fmt(out, args);
 }
 
+/// The signs a display name may begin with, right before a letter, as a derivative or a
+/// gradient is written (`∂H`, `∇φ`), and their LaTeX commands.
+pub const DIFFERENTIALS: [(char, &str); 2] = [('∂', r"\partial"), ('∇', r"\nabla")];
+
+/// The LaTeX command of `c` where it is one of the [`DIFFERENTIALS`] (`∂` → `\partial`).
+pub fn differential_latex(c: char) -> Option<&'static str> {
+    DIFFERENTIALS.iter().find(|d| d.0 == c).map(|d| d.1)
+}
+
+/// Whether the name `shown` begins with one of the [`DIFFERENTIALS`], a derivative or a
+/// gradient: a power of it is set in parentheses, `(∂H)²`, where `∂H²` would read as `∂(H²)`.
+pub fn is_differential(shown: &str) -> bool {
+    shown.chars().next().and_then(differential_latex).is_some()
+}
+
 /// `-12` → `⁻¹²`.
 pub fn superscript(e: i64) -> String {
     e.to_string()
@@ -416,9 +431,7 @@ impl Names {
                 .collect(),
             differential: vars
                 .vars()
-                .map(|v| {
-                    style != Style::Ascii && vars.variable(v).unicode().starts_with(['∂', '∇'])
-                })
+                .map(|v| style != Style::Ascii && is_differential(vars.variable(v).unicode()))
                 .collect(),
             order: order.iter().map(|v| v.index()).collect(),
             angles: vars.angles().map(|v| v.index()).collect(),
