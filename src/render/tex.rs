@@ -3,51 +3,6 @@
 //! backticks. The output is ASCII and valid by construction: every special character is
 //! escaped, braces balance, and characters without a translation become `?`.
 
-/// Greek letters and their LaTeX commands.
-const GREEK: &[(char, &str)] = &[
-    ('α', r"\alpha"),
-    ('β', r"\beta"),
-    ('γ', r"\gamma"),
-    ('δ', r"\delta"),
-    ('ε', r"\varepsilon"),
-    ('ζ', r"\zeta"),
-    ('η', r"\eta"),
-    ('θ', r"\theta"),
-    ('ι', r"\iota"),
-    ('κ', r"\kappa"),
-    ('λ', r"\lambda"),
-    ('μ', r"\mu"),
-    ('ν', r"\nu"),
-    ('ξ', r"\xi"),
-    ('π', r"\pi"),
-    ('ρ', r"\rho"),
-    ('σ', r"\sigma"),
-    ('τ', r"\tau"),
-    ('φ', r"\varphi"),
-    ('χ', r"\chi"),
-    ('ψ', r"\psi"),
-    ('ω', r"\omega"),
-    // The letters a name may spell beside those (`upsilon`, `vartheta`, …), as the names'
-    // LaTeX writes them: a display that is no name, `x(ϑ)` or `∂ϑ`, is written here.
-    ('υ', r"\upsilon"),
-    ('ο', r"\mathit{o}"),
-    ('ϑ', r"\vartheta"),
-    ('ϱ', r"\varrho"),
-    ('ς', r"\varsigma"),
-    ('ϖ', r"\varpi"),
-    ('Γ', r"\Gamma"),
-    ('Δ', r"\Delta"),
-    ('Θ', r"\Theta"),
-    ('Λ', r"\Lambda"),
-    ('Ξ', r"\Xi"),
-    ('Π', r"\Pi"),
-    ('Σ', r"\Sigma"),
-    ('Φ', r"\Phi"),
-    ('Ψ', r"\Psi"),
-    ('Ω', r"\Omega"),
-    ('Υ', r"\Upsilon"),
-];
-
 /// Symbols and their LaTeX math commands.
 const SYMBOLS: &[(char, &str)] = &[
     ('−', "-"),
@@ -115,8 +70,13 @@ const STOPWORDS: &[&str] = &[
 const SUPERSCRIPTS: &str = "⁰¹²³⁴⁵⁶⁷⁸⁹";
 const SUBSCRIPTS: &str = "₀₁₂₃₄₅₆₇₈₉";
 
+/// A Greek letter's LaTeX command, as a name writes it ([`trigpoly::greek_latex`]), but for
+/// `ε`, which prose and formulas write `\varepsilon` where a name `epsilon` is `\epsilon`.
 fn greek(c: char) -> Option<&'static str> {
-    GREEK.iter().find(|g| g.0 == c).map(|g| g.1)
+    match c {
+        'ε' => Some(r"\varepsilon"),
+        _ => trigpoly::greek_latex(c),
+    }
 }
 
 fn symbol(c: char) -> Option<&'static str> {

@@ -9,8 +9,9 @@ use crate::error::{AlgebraError, Setting};
 mod names;
 
 pub use names::{
-    display_forms, has_several_words, is_identifier, latex_unwritable, momentum_forms, shown_forms,
-    shown_text, unbarred, with_indices, BadName, LATEX_LETTERS, MAX_NAME_CHARS, RESERVED,
+    display_forms, greek_latex, has_several_words, is_identifier, latex_unwritable, momentum_forms,
+    shown_forms, shown_text, unbarred, with_indices, BadName, LATEX_LETTERS, MAX_NAME_CHARS,
+    RESERVED,
 };
 pub(crate) use names::{letter_of_command, long_name, unparenthesized};
 use names::{render_momentum, render_name, spell_out};

@@ -353,6 +353,12 @@ const GREEK: &[(&str, &str, &str)] = &[
     ("Upsilon", "Υ", r"\Upsilon"),
 ];
 
+/// The LaTeX command of a Greek letter as a name writes it (`ω` → `\omega`, `φ` →
+/// `\varphi`, `ϑ` → `\vartheta`); `None` for a character that is no Greek letter of a name.
+pub fn greek_latex(letter: char) -> Option<&'static str> {
+    GREEK.iter().find(|g| g.1.chars().eq([letter])).map(|g| g.2)
+}
+
 /// The letter a LaTeX command writes in a name (`omega` of `\omega` → `ω`, `varphi` → `φ`,
 /// `hbar` → `ħ`), as the expressions' names spell it; `None` for a command that is no letter.
 /// Both of the forms LaTeX has for epsilon, phi and theta are taken, whichever one a paper
