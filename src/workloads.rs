@@ -290,7 +290,7 @@ mod tests {
             }
         }
         // 2N² overflows where N² does not.
-        let half = (side as f64 / std::f64::consts::SQRT_2) as i64 + 1;
+        let half = i64::try_from((usize::MAX / 2).isqrt() + 1).expect("half a usize's side");
         assert!(matches!(
             Workload::Tower(half).run(),
             Err(WorkloadError::TooLarge(_))
