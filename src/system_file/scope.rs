@@ -10,7 +10,7 @@ use std::cell::RefCell;
 use std::collections::HashMap;
 
 use num_bigint::BigInt;
-use trigpoly::syntax::{parse_expr, Expr as Tree, ExprKind, ParseError};
+use trigpoly::syntax::{Expr as Tree, ExprKind, ParseError};
 use trigpoly::{Context, Expr, GaussianRational, Span, VarKind};
 
 use super::error::{ErrorKind, FileError, Warning};
@@ -611,7 +611,9 @@ impl<'a> Scope<'a> {
             return Err(text.error(source, ErrorKind::Family, span, message));
         }
         let rewritten = rewrite_braces(&text.value, families, self.indices);
-        let mut tree = parse_expr(&rewritten).map_err(|e| self.display_error(source, text, &e))?;
+        let vars = self.file.system.vars();
+        let mut tree = Expr::parse_tree(vars, &rewritten, self)
+            .map_err(|e| self.display_error(source, text, &e))?;
         self.read_latex_names(source, text, &mut tree)?;
         Ok(tree)
     }

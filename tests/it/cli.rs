@@ -4231,3 +4231,20 @@ fn a_display_holding_its_own_name_is_written_in_latex_once() {
     let markdown = run(&["check", file, "--no-timings", "--format", "markdown"], 0);
     assert!(markdown.contains("- `{(∂L)², H} = 0`"), "{markdown}");
 }
+
+/// A superscript refused after a power of names run together, `Mω^{2}{}^{3}` of a system
+/// file, quotes the factor the power raises, `ω^{2}`, as the lowering reads `M·ω²`: the file's
+/// names are read for the message as for the value.
+#[test]
+fn a_second_superscript_on_names_run_together_quotes_the_last_name_raised() {
+    let file = "systems/harmonic-rotor.toml";
+    for (src, base) in [("Mω^{2}{}^{3}", "'ω^{2}'"), ("Mω²^3", "'ω²'")] {
+        let err = crate::superint_refused(&["expand", file, src]);
+        assert!(
+            err.contains(&format!(
+                " after {base}, which has a superscript already, is ambiguous: "
+            )) && err.contains(&format!("; put {base} in parentheses for a power of it")),
+            "{src}: {err}"
+        );
+    }
+}

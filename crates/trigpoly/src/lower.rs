@@ -5,7 +5,7 @@
 use crate::error::AlgebraError;
 use crate::number::{Coefficient, GaussianRational, Integer, Rational};
 use crate::poly::Poly;
-use crate::syntax::{parse_expr, Expr, ExprKind, ParseError, Span};
+use crate::syntax::{parse_expr_reading, Expr, ExprKind, ParseError, Reading, Span};
 use crate::varset::{long_name, Var, VarKind, Vars, RESERVED};
 
 /// What names and brackets mean beyond the variables: named functions defined elsewhere (a
@@ -209,10 +209,16 @@ impl<C: Coefficient> Poly<C> {
 
     /// Parses with named functions and brackets supplied by `ctx`.
     pub fn parse_with(vars: &Vars, src: &str, ctx: &dyn Context<C>) -> Result<Self, ParseError> {
-        let expr = parse_expr(src)?;
-        Lower { vars, ctx }
-            .lower(&expr)
-            .map_err(|e| e.in_source(src))
+        let lower = Lower { vars, ctx };
+        let expr = parse_expr_reading(src, &lower)?;
+        lower.lower(&expr).map_err(|e| e.in_source(src))
+    }
+
+    /// Parses `src` into the tree that [`Poly::from_expr`] lowers, as
+    /// [`parse_expr`](crate::syntax::parse_expr) does, a refusal quoting the factor a power
+    /// raises as the names of `vars` and `ctx` read (`'ω^{2}'` of `Mω^{2}{}^{3}`).
+    pub fn parse_tree(vars: &Vars, src: &str, ctx: &dyn Context<C>) -> Result<Expr, ParseError> {
+        parse_expr_reading(src, &Lower { vars, ctx })
     }
 
     /// Lowers an already parsed expression.
@@ -254,6 +260,17 @@ enum RootOf {
 struct Lower<'a, C: Coefficient> {
     vars: &'a Vars,
     ctx: &'a dyn Context<C>,
+}
+
+/// The names as the lowering reads them, for the parser's refusals: a name that is no variable
+/// or function splits as [`Lower::lower`] splits it before a power (`Mω²` is `M·ω²`).
+impl<C: Coefficient> Reading for Lower<'_, C> {
+    fn split(&self, name: &str) -> Option<Vec<String>> {
+        if self.vars.lookup(name).is_some() || self.ctx.lookup(name).is_some() {
+            return None;
+        }
+        self.split_name(name)
+    }
 }
 
 /// A product of factors as written, each to its power: `(x + y)(x − 2y)³`, `g(x − y)²`, `−2x`.

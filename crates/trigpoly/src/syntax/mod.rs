@@ -23,7 +23,9 @@ mod parser;
 
 pub use error::{Excerpt, ParseError, Span};
 pub use latex::latex_name;
-pub use parser::{parse_expr, Expr, ExprKind, LEFT_DEEP_SUM, MAX_DEPTH, MAX_HEIGHT};
+pub use parser::{
+    parse_expr, parse_expr_reading, Expr, ExprKind, Reading, LEFT_DEEP_SUM, MAX_DEPTH, MAX_HEIGHT,
+};
 
 #[cfg(test)]
 mod tests {

@@ -132,15 +132,44 @@ pub enum ExprKind {
 /// Returns the first lexical or syntax error in `src`, which knows its place in `src` (its
 /// `Display` shows the line and a caret).
 pub fn parse_expr(src: &str) -> Result<Expr, ParseError> {
-    parse_source(src).map_err(|e| e.in_source(src))
+    parse_expr_reading(src, &Unread)
 }
 
-/// [`parse_expr`], its error without its source.
-fn parse_source(src: &str) -> Result<Expr, ParseError> {
+/// Parses `src` as [`parse_expr`] does, to the same tree, a refusal quoting the factor that a
+/// power raises as `names` read the names before it (`'ω^{2}'` of `Mω^{2}{}^{3}`, where `Mω`
+/// reads as `M·ω`).
+///
+/// # Errors
+///
+/// Those of [`parse_expr`], in the same places.
+pub fn parse_expr_reading(src: &str, names: &dyn Reading) -> Result<Expr, ParseError> {
+    parse_source(src, names).map_err(|e| e.in_source(src))
+}
+
+/// What the names of an expression read as, which the parser, purely syntactic, asks only to
+/// word a refusal: the lowering reads them ([`crate::Poly::parse_with`]).
+pub trait Reading {
+    /// The names that `name`, written without parentheses, reads as a product of (`M`, `ω` of
+    /// `Mω`), if it is one.
+    fn split(&self, name: &str) -> Option<Vec<String>>;
+}
+
+/// The reading of no names: none splits.
+struct Unread;
+
+impl Reading for Unread {
+    fn split(&self, _: &str) -> Option<Vec<String>> {
+        None
+    }
+}
+
+/// [`parse_expr_reading`], its error without its source.
+fn parse_source(src: &str, names: &dyn Reading) -> Result<Expr, ParseError> {
     let mut lexer = Lexer::new(src);
     let tok = lexer.next_token()?;
     let mut p = Parser {
         src,
+        names,
         lexer,
         tok,
         prev: None,
@@ -158,6 +187,8 @@ fn parse_source(src: &str) -> Result<Expr, ParseError> {
 /// Parser state: the current (not yet consumed) token and the span of the previous one.
 struct Parser<'a> {
     src: &'a str,
+    /// What the names read as, for the factor a refusal quotes ([`Parser::powered`]).
+    names: &'a dyn Reading,
     lexer: Lexer<'a>,
     tok: Token,
     prev: Option<Span>,
@@ -475,19 +506,35 @@ impl Parser<'_> {
 
     /// The span of the factor that the power `e` raises, which a message quotes: `e`'s own,
     /// but for a name before parentheses, `x(y)^{2}`, which the lowering reads as the name
-    /// times the power of the parentheses, `x·(y)²`, as `M(x + y)²` is printed: `(y)^{2}`. A
+    /// times the power of the parentheses, `x·(y)²`, as `M(x + y)²` is printed: `(y)^{2}`; and
+    /// for names run together, `Mω^{2}`, which it reads as the product with the power on the
+    /// last name alone, `M·ω²`: `ω^{2}` (where the names are read, [`Reading::split`]). A
     /// function's call, `cos(θ)^{2}`, is raised whole.
     fn powered(&self, e: &Expr) -> Span {
         if let ExprKind::Pow(base, _) = &e.kind {
-            if let ExprKind::Call(name, name_span, args) = &base.kind {
-                let function = FUNCTIONS.contains(&name.as_str())
-                    || matches!(name.as_str(), "sqrt" | "Re" | "Im");
-                if !function && args.len() == 1 && !base.in_parentheses() {
-                    let open = self.src[name_span.end..base.span.end].find('(');
-                    if let Some(open) = open {
-                        return Span::new(name_span.end + open, e.span.end);
+            match &base.kind {
+                ExprKind::Call(name, name_span, args) => {
+                    let function = FUNCTIONS.contains(&name.as_str())
+                        || matches!(name.as_str(), "sqrt" | "Re" | "Im");
+                    if !function && args.len() == 1 && !base.in_parentheses() {
+                        let open = self.src[name_span.end..base.span.end].find('(');
+                        if let Some(open) = open {
+                            return Span::new(name_span.end + open, e.span.end);
+                        }
                     }
                 }
+                // Not in parentheses, the name is its own text, so the last piece ends it.
+                ExprKind::Name(name) if !base.in_parentheses() => {
+                    let last = self
+                        .names
+                        .split(name)
+                        .and_then(|pieces| pieces.last().cloned());
+                    let written = &self.src[base.span.start..base.span.end];
+                    if let Some(last) = last.filter(|last| written.ends_with(last.as_str())) {
+                        return Span::new(base.span.end - last.len(), e.span.end);
+                    }
+                }
+                _ => {}
             }
         }
         e.span

@@ -921,6 +921,12 @@ fn a_superscript_after_a_power_quotes_the_factor_raised() {
         ("2x^{2}{}^{3}", "'x^{2}'"),
         ("x y^{2}{}^{3}", "'y^{2}'"),
         (r"\frac{1}{M}^{2}{}^{3}", r"'\frac{1}{M}^{2}'"),
+        // Names run together, read as their product with the power on the last alone.
+        ("Mω^{2}{}^{3}", "'ω^{2}'"),
+        ("Mω²^3", "'ω²'"),
+        ("Mωx^2²", "'x^2'"),
+        ("p_xy^{2}{}^{3}", "'y^{2}'"),
+        ("(Mω)^{2}{}^{3}", "'(Mω)^{2}'"),
     ] {
         let err = Poly::<GaussianRational>::parse(&vars, src).expect_err(src);
         assert!(
