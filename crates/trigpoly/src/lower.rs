@@ -262,9 +262,14 @@ struct Lower<'a, C: Coefficient> {
     ctx: &'a dyn Context<C>,
 }
 
-/// The names as the lowering reads them, for the parser's refusals: a name that is no variable
-/// or function splits as [`Lower::lower`] splits it before a power (`Mω²` is `M·ω²`).
+/// The names as the lowering reads them, for the parser's refusals: `Re` and `Im` before
+/// parentheses multiply them where the system declares them ([`Lower::is_function`]), and a
+/// name that is no variable or function splits as [`Lower::lower`] splits it before a power
+/// (`Mω²` is `M·ω²`).
 impl<C: Coefficient> Reading for Lower<'_, C> {
+    fn calls(&self, name: &str) -> bool {
+        self.is_function(name) || name == "sqrt"
+    }
     fn split(&self, name: &str) -> Option<Vec<String>> {
         if self.vars.lookup(name).is_some() || self.ctx.lookup(name).is_some() {
             return None;

@@ -149,15 +149,21 @@ pub fn parse_expr_reading(src: &str, names: &dyn Reading) -> Result<Expr, ParseE
 /// What the names of an expression read as, which the parser, purely syntactic, asks only to
 /// word a refusal: the lowering reads them ([`crate::Poly::parse_with`]).
 pub trait Reading {
+    /// Whether `name` before parentheses calls a function, `cos(θ)`, `sqrt(R)`, `Re(Z)`, rather
+    /// than multiplies them, `M(x + y)`, `Re(x + y)` where the system declares `Re`.
+    fn calls(&self, name: &str) -> bool;
     /// The names that `name`, written without parentheses, reads as a product of (`M`, `ω` of
     /// `Mω`), if it is one.
     fn split(&self, name: &str) -> Option<Vec<String>>;
 }
 
-/// The reading of no names: none splits.
+/// The reading of no names: none splits, and `Re` and `Im` are the real and imaginary parts.
 struct Unread;
 
 impl Reading for Unread {
+    fn calls(&self, name: &str) -> bool {
+        FUNCTIONS.contains(&name) || matches!(name, "sqrt" | "Re" | "Im")
+    }
     fn split(&self, _: &str) -> Option<Vec<String>> {
         None
     }
@@ -506,21 +512,20 @@ impl Parser<'_> {
 
     /// The span of the factor that the power `e` raises, which a message quotes: `e`'s own,
     /// but for a name before parentheses, `x(y)^{2}`, which the lowering reads as the name
-    /// times the power of the parentheses, `x·(y)²`, as `M(x + y)²` is printed: `(y)^{2}`; and
+    /// times the power of the parentheses, `x·(y)²`, as `M(x + y)²` is printed: `(y)^{2}`
+    /// (`Re(y)^{2}` too where the system declares `Re`, [`Reading::calls`]); and
     /// for names run together, `Mω^{2}`, which it reads as the product with the power on the
     /// last name alone, `M·ω²`: `ω^{2}` (where the names are read, [`Reading::split`]). A
     /// function's call, `cos(θ)^{2}`, is raised whole.
     fn powered(&self, e: &Expr) -> Span {
         if let ExprKind::Pow(base, _) = &e.kind {
             match &base.kind {
-                ExprKind::Call(name, name_span, args) => {
-                    let function = FUNCTIONS.contains(&name.as_str())
-                        || matches!(name.as_str(), "sqrt" | "Re" | "Im");
-                    if !function && args.len() == 1 && !base.in_parentheses() {
-                        let open = self.src[name_span.end..base.span.end].find('(');
-                        if let Some(open) = open {
-                            return Span::new(name_span.end + open, e.span.end);
-                        }
+                ExprKind::Call(name, name_span, args)
+                    if !self.names.calls(name) && args.len() == 1 && !base.in_parentheses() =>
+                {
+                    let open = self.src[name_span.end..base.span.end].find('(');
+                    if let Some(open) = open {
+                        return Span::new(name_span.end + open, e.span.end);
                     }
                 }
                 // Not in parentheses, the name is its own text, so the last piece ends it.

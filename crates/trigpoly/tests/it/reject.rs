@@ -1,7 +1,7 @@
 //! Rejected inputs: each with its exact message, its (line, column) and the caret rendering.
 
 use pretty_assertions::assert_eq;
-use trigpoly::{GaussianRational, Poly, Rational};
+use trigpoly::{GaussianRational, Poly, Rational, VarSet};
 
 use crate::common::phase_space;
 
@@ -1094,5 +1094,42 @@ fn a_power_of_a_bare_angle_after_a_powered_function_is_ambiguous() {
             Poly::<GaussianRational>::parse(&vars, value).unwrap(),
             "{src}"
         );
+    }
+}
+
+/// A superscript refused after a power of `Re(…)` or `Im(…)` quotes the power of the
+/// parentheses, `'(y)^{2}'`, where the system declares `Re` and `Im` as names, which multiply
+/// them as `x(y)^{2}` does; where it does not, the real and imaginary parts are raised whole.
+#[test]
+fn a_superscript_after_a_power_of_a_declared_re_quotes_the_parentheses() {
+    let declared = VarSet::builder()
+        .coordinate("x")
+        .coordinate("y")
+        .parameter("Re")
+        .parameter("Im")
+        .build()
+        .expect("valid variable names");
+    let parts = VarSet::builder()
+        .coordinate("x")
+        .coordinate("y")
+        .build()
+        .expect("valid variable names");
+    for (src, product, part) in [
+        ("Re(y)^{2}{}^{3}", "'(y)^{2}'", "'Re(y)^{2}'"),
+        ("Im(x + y)²^3", "'(x + y)²'", "'Im(x + y)²'"),
+        ("Re(y)^2²", "'(y)^2'", "'Re(y)^2'"),
+    ] {
+        for (vars, base) in [(&declared, product), (&parts, part)] {
+            let err = Poly::<GaussianRational>::parse(vars, src).expect_err(src);
+            assert!(
+                err.message.contains(&format!(
+                    " after {base}, which has a superscript already, is ambiguous: "
+                )) && err
+                    .message
+                    .contains(&format!("; put {base} in parentheses for a power of it")),
+                "{src}: {}",
+                err.message
+            );
+        }
     }
 }
