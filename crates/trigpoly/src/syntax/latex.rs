@@ -12,7 +12,7 @@
 //! ([`latex_name`] of the LaTeX it prints).
 
 use super::error::{ParseError, Span};
-use super::lexer::{Lexer, Tok};
+use super::lexer::{superscript_digit, Lexer, Tok};
 use super::parser::{too_deep, MAX_DEPTH};
 use crate::varset::letter_of_command;
 
@@ -166,17 +166,20 @@ impl Lexer<'_> {
     }
 
     /// The length of the empty group at the start of `rest` that carries a superscript
-    /// (`{}^{2}`, as superint prints the square of `P'_{1,1}`), which is skipped as a space is,
-    /// the power going to what stands before it (which the parser refuses where that has an
-    /// exponent already, `x^{2}{}^{3}`); `None` for any other text, an empty group
-    /// elsewhere being refused by the parser (a subscript on one, `x{}_{1}`, too: a subscript
-    /// is part of a name, and the group would leave it none).
+    /// (`{}^{2}`, as superint prints the square of `P'_{1,1}`, or a superscript character,
+    /// `{}²`, which a Unicode LaTeX sets as `{}^{2}`), which is skipped as a space is, the
+    /// power going to what stands before it (which the parser refuses where that has an
+    /// exponent already, `x^{2}{}^{3}`, `x^{2}{}²`, or is a bare angle after a function,
+    /// `sin²θ{}²`); `None` for any other text, an empty group elsewhere being refused by the
+    /// parser (a subscript on one, `x{}_{1}`, too: a subscript is part of a name, and the
+    /// group would leave it none).
     pub(crate) fn empty_base(rest: &str) -> Option<usize> {
         let inside = rest.strip_prefix('{')?.trim_start();
         let after = inside.strip_prefix('}')?;
+        let script = |c: char| c == '^' || c == '⁻' || superscript_digit(c).is_some();
         after
             .trim_start()
-            .starts_with('^')
+            .starts_with(script)
             .then_some(rest.len() - after.len())
     }
 

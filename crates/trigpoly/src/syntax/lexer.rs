@@ -57,7 +57,7 @@ pub(crate) struct Token {
 }
 
 /// The ASCII digit corresponding to a superscript digit such as `²`, if `c` is one.
-fn superscript_digit(c: char) -> Option<char> {
+pub(super) fn superscript_digit(c: char) -> Option<char> {
     if c.is_ascii() {
         return None;
     }

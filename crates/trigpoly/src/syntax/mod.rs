@@ -252,6 +252,8 @@ mod tests {
                 r"-x{}^{2} + x^{-2{}^{3}}",
                 "(+ (- (^ x 2)) (^ x (- (^ 2 3))))",
             ),
+            // A superscript character on an empty group, as on `{}^`.
+            (r"P'_{1,1}{}² + x{ }⁻¹", "(+ (^ P'_1_1 2) (^ x (- 1)))"),
             (r"\mathrm{e}^{-\mathrm{i}\theta}", "(exp (* (- i) θ))"),
             (r"e^{-i\theta}", "(exp (* (- i) θ))"),
             (
@@ -431,6 +433,14 @@ mod tests {
         ("sin²θ\\,^3", (1, 5), "'sin²θ' followed by a power is ambiguous: write (sin²θ)^3 for a \
                                  power of sin²θ, or sin²(θ^3) for sin² of θ^3"),
         ("r²^", (1, 4), "expected an expression after '^', found end of input"),
+        // A superscript character on an empty group is a power as `{}^2` is: of a bare angle
+        // after a powered function, or beside another superscript, ambiguous as they are.
+        ("sin²θ{}²", (1, 5), "'sin²θ' followed by a power is ambiguous: write (sin²θ)² for a \
+                              power of sin²θ, or sin²(θ²) for sin² of θ²"),
+        ("x^{2}{}²", (1, 6), "'{}²' after 'x^{2}', which has a superscript already, is \
+                              ambiguous: the two superscripts show side by side, as one; put \
+                              'x^{2}' in parentheses for a power of it, or write the exponent \
+                              in one group"),
         // After the parentheses of `sin²(θ)` a superscript raises the call, and a second one
         // stands beside it.
         ("sin²(θ)³²⁻¹", (1, 10), "'⁻¹' after 'sin²(θ)³²', which has a superscript already, \

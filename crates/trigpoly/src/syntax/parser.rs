@@ -452,14 +452,20 @@ impl Parser<'_> {
     /// as `x²²`, which no reading should guess.
     #[cold]
     fn superscript_after_superscript(&self, lhs: &Expr) -> ParseError {
+        // The quote starts at the empty group that carries the superscript, if one does:
+        // `{}^{3}`, `{}²`.
+        let after = self.prev.map_or(self.tok.span.start, |p| p.end);
+        let open = self.src[after..self.tok.span.start].find('{');
         let (span, set) = match self.tok.tok {
             Tok::Sup { .. } => (
-                self.tok.span,
+                Span::new(
+                    open.map_or(self.tok.span.start, |k| after + k),
+                    self.tok.span.end,
+                ),
                 "the two superscripts show side by side, as one",
             ),
             _ => {
-                let after = self.prev.map_or(self.tok.span.start, |p| p.end);
-                let open = after + self.src[after..self.tok.span.start].find('{').unwrap_or(0);
+                let open = after + open.unwrap_or(0);
                 let span = Span::new(open, script_end(self.src, self.tok.span.end));
                 (span, "LaTeX sets the two superscripts side by side, as one")
             }
