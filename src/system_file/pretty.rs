@@ -51,14 +51,25 @@ impl Printed {
         }
     }
 
-    /// The text with its trailing name of several words in parentheses, if it has one:
-    /// `6ω (Re K)`, before a factor, a power or a denominator.
+    /// The text with its trailing name of several words, or derivative or gradient, in
+    /// parentheses, if it has one: `6ω (Re K)`, `2(∂H)`, before a factor, a power or a
+    /// denominator.
     fn words_closed(mut self) -> Self {
         if let Some(at) = self.trailing_words.take() {
             self.text.insert(at, '(');
             self.text.push(')');
+            if at == 0 {
+                self.prec = ATOM;
+            }
         }
         self
+    }
+
+    /// Whether the name that ends the text and takes parentheses before a factor, a power or
+    /// a denominator is a derivative or a gradient, `∂H` (not a name of several words).
+    fn differential_last(&self) -> bool {
+        self.trailing_words
+            .is_some_and(|at| trigpoly::is_differential(&self.text[at..]))
     }
 
     fn wrapped(self, min: u8) -> Self {
@@ -229,10 +240,13 @@ impl LoadedSystem {
         if trigpoly::has_several_words(&p.text) {
             p.trailing_words = Some(0);
         }
-        // A derivative or a gradient, `∂H`, `∇φ`, takes a power in parentheses, `(∂H)²`,
-        // where `∂H²` would read as `∂(H²)`.
+        // A derivative or a gradient, `∂H`, `∇φ`, takes a power in parentheses, `(∂H)²`, and
+        // so a factor or a denominator after it, `(∂H) x`, `(∂H)/2`, where `∂H²`, `∂H x`
+        // and `∂H/2` would read as `∂(H²)`, `∂(Hx)` and `∂(H/2)`; alone, or the last factor
+        // of a product, `x ∂H`, it takes none.
         if trigpoly::is_differential(&p.text) {
             p.prec = POWER;
+            p.trailing_words = Some(0);
         }
         p
     }
@@ -270,11 +284,11 @@ impl LoadedSystem {
     fn print_product(&self, a: &Tree, b: &Tree) -> Printed {
         let a = self.print(a);
         // `(Re K) (Im K)`: beside a name of several words in parentheses, another takes them
-        // too.
-        let words_before = a.trailing_words.is_some();
+        // too (not a derivative, which takes them only before a factor: `(∂H) ∂G`).
+        let words_before = a.trailing_words.is_some() && !a.differential_last();
         let a = a.words_closed().wrapped(PRODUCT);
         let b = self.print(b);
-        let b = match words_before && b.trailing_words == Some(0) {
+        let b = match words_before && b.trailing_words == Some(0) && !b.differential_last() {
             true => b.words_closed(),
             false => b,
         };
@@ -328,7 +342,13 @@ impl LoadedSystem {
         };
         // `(Re K)/2` and `x/(Re K)`, not `Re K/2`, which reads as the real part of `K/2`.
         let a = self.print(a).words_closed().wrapped(at_least);
-        let b = self.print(b).words_closed().wrapped(POWER);
+        // `x/∂H`: nothing follows a derivative in the denominator.
+        let b = self.print(b);
+        let b = match b.differential_last() {
+            true => b,
+            false => b.words_closed(),
+        };
+        let b = b.wrapped(POWER);
         Printed {
             text: format!("{}/{}", a.text, b.text),
             prec: QUOTIENT,

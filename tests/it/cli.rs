@@ -4210,7 +4210,7 @@ fn a_display_holding_its_own_name_is_written_in_latex_once() {
         "{expand}"
     );
     assert!(
-        expand.contains(r"2 \partial L \nabla H_{2} &= "),
+        expand.contains(r"2 (\partial L) \nabla H_{2} &= "),
         "{expand}"
     );
     let bracket = latex("bracket", &["L^2", "H2^2"]);
@@ -4247,4 +4247,72 @@ fn a_second_superscript_on_names_run_together_quotes_the_last_name_raised() {
             "{src}: {err}"
         );
     }
+}
+
+/// A display that begins with `∂` or `∇` takes parentheses where anything follows it in its
+/// product, as under a power: `(∂H) x`, `(\partial H) x`, `(∂H)/2`, in an echo and in a
+/// result written in the functions (`2 (∂H) R`), where `∂H x` read as `∂(Hx)`; alone or as the
+/// last factor, `x ∂H`, it takes none.
+#[test]
+fn a_differential_display_takes_parentheses_before_a_factor() {
+    let file = crate::scratch_text(
+        "display-differential-product",
+        "d.toml",
+        "name = \"oscillator\"\nhamiltonian = \"(p_x^2 + p_y^2)/2 + (x^2 + y^2)/2\"\n\
+         [phase_space]\ncoordinates = [\"x\", \"y\"]\n\
+         [[function]]\nname = \"dH\"\ndisplay = \"∂H\"\nvalue = \"x*p_x + y*p_y\"\n\
+         [[function]]\nname = \"G\"\ndisplay = \"∇G\"\nvalue = \"x*p_y\"\n\
+         [[function]]\nname = \"R\"\nvalue = \"(x^2 + y^2)/2\"\n",
+    );
+    let file = file.to_str().expect("a UTF-8 path");
+    let exprs = ["dH*x", "x*dH", "dH", "dH/2", "-dH*G", "G^2*dH"];
+    let text = run(
+        &[&["expand", file, "--no-timings", "--"][..], &exprs].concat(),
+        0,
+    );
+    for echo in [
+        "(∂H) x ",
+        "x ∂H ",
+        "∂H ",
+        "(∂H)/2 ",
+        "−(∂H) ∇G ",
+        "(∇G)² ∂H ",
+    ] {
+        assert!(text.contains(&format!("\n    {echo}")), "{echo}: {text}");
+    }
+    let latex = run(
+        &[
+            &["expand", file, "--no-timings", "--format", "latex", "--"][..],
+            &exprs,
+        ]
+        .concat(),
+        0,
+    );
+    for echo in [
+        r"(\partial H) x &=",
+        r"x \partial H &=",
+        r"(\partial H)/2 &=",
+    ] {
+        assert!(latex.contains(echo), "{echo}: {latex}");
+    }
+    let bracket = |format: &str| {
+        run(
+            &[
+                "bracket",
+                file,
+                "R^2",
+                "H",
+                "--no-timings",
+                "--format",
+                format,
+            ],
+            0,
+        )
+    };
+    let text = bracket("text");
+    assert!(text.contains("= 2 (∂H) R\n"), "{text}");
+    let latex = bracket("latex");
+    assert!(latex.contains(r"&= 2 (\partial H) R"), "{latex}");
+    let last = run(&["bracket", file, "dH^2*R", "H", "--no-timings"], 0);
+    assert!(last.contains("= (4 H R + (∂H)² − 8 R²) ∂H\n"), "{last}");
 }

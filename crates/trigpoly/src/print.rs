@@ -387,7 +387,8 @@ struct Names {
     /// as `Re(K²) H_x`.
     several_words: Vec<bool>,
     /// Whether each variable's name is a derivative or a gradient (`∂H`, `∇φ`), by index: with
-    /// a power it is set in parentheses, `(∂H)²`, where `∂H²` would read as `∂(H²)`.
+    /// a power, or a factor or a denominator after it, it is set in parentheses, `(∂H)²`,
+    /// `(∂H) x`, where `∂H²` and `∂H x` would read as `∂(H²)` and `∂(Hx)`.
     differential: Vec<bool>,
     /// The variables as the paper orders a term's factors: parameters, then coordinates,
     /// then momenta (then angles), each kind in declaration order.
@@ -612,16 +613,28 @@ fn write_term(
             out.push('i');
         }
     }
+    // What the numerator writes after its variables: a sum in parentheses, cosines and sines,
+    // and in text a denominator after a `/`.
+    let after_numerator = inner.is_some()
+        || trig.is_some_and(|t| !TrigMonomial::is_one(t))
+        || (denominators > 0 && !frac);
     let variables = |out: &mut String, product: &mut Product, positive: bool, after_i: bool| {
         let factors =
             || (names.order.iter().copied()).filter(|&j| exps[j] != 0 && (exps[j] > 0) == positive);
         let apart = names.apart_in_runs(factors(), exps, after_i);
+        let count = factors().count();
         for (k, j) in factors().enumerate() {
             let name = &names.names[j];
             let wide = style == Style::Unicode && (names.words[j] || name.chars().count() > 1);
             product.next_apart(out, wide, apart.get(k) == Some(&true));
+            // A derivative or a gradient with a power, or anything after it in its product
+            // (another factor, a sum, a cosine, a denominator), is set in parentheses, where
+            // it would take them as its argument: `(∂H)²`, `(∂H) x`, `(∂H)/M`, not `∂H²`,
+            // `∂H x`, `∂H/M`, which read as `∂(H²)`, `∂(Hx)`, `∂(H/M)`; alone or last, as
+            // `x ∂H`, it needs none.
+            let followed = k + 1 < count || (positive && after_numerator);
             if (names.several_words[j] && words_in_parentheses)
-                || (names.differential[j] && exps[j].abs() != 1)
+                || (names.differential[j] && (exps[j].abs() != 1 || followed))
             {
                 write_power(out, &format!("({name})"), exps[j].abs(), style);
             } else {
