@@ -268,7 +268,7 @@ struct Lower<'a, C: Coefficient> {
 /// (`Mω²` is `M·ω²`).
 impl<C: Coefficient> Reading for Lower<'_, C> {
     fn calls(&self, name: &str) -> bool {
-        self.is_function(name) || name == "sqrt"
+        calls_function(name, &|n: &str| self.is_declared(n))
     }
     fn split(&self, name: &str) -> Option<Vec<String>> {
         if self.vars.lookup(name).is_some() || self.ctx.lookup(name).is_some() {
@@ -471,13 +471,10 @@ impl<C: Coefficient> Lower<'_, C> {
     }
 
     /// Whether `name` before parentheses is a function (`cos(θ)`, `Re(Z)`), not a product:
-    /// `Re` and `Im` are the real and imaginary parts unless the system declares the name.
+    /// `Re` and `Im` are the real and imaginary parts unless the system declares the name
+    /// ([`calls_function`]); `sqrt` is read after a product of names ([`Lower::call`]).
     fn is_function(&self, name: &str) -> bool {
-        match name {
-            _ if FUNCTIONS.contains(&name) => true,
-            "Re" | "Im" => !self.is_declared(name),
-            _ => false,
-        }
+        name != "sqrt" && calls_function(name, &|n: &str| self.is_declared(n))
     }
 
     /// Splits `name`, at `span`, to be read as the product of its pieces ([`Self::split_name`]),
@@ -1073,6 +1070,18 @@ impl LinearForm {
 /// The functions an expression may call: a name before parentheses other than these (and
 /// `Re`, `Im` where the system does not declare them) multiplies them.
 pub const FUNCTIONS: [&str; 6] = ["cos", "sin", "exp", "conj", "re", "im"];
+
+/// Whether `name` before parentheses calls a function rather than multiplies them: one of
+/// [`FUNCTIONS`], `sqrt`, or `Re` or `Im`, the real and imaginary parts as the paper writes
+/// them, unless `declared` says the system declares that name. The one list of what is called
+/// that the lowering ([`Lower::is_function`]) and the parser's refusals
+/// ([`Reading::calls`], by the lowering's reading or with no name declared) read.
+pub(crate) fn calls_function(name: &str, declared: &dyn Fn(&str) -> bool) -> bool {
+    match name {
+        "Re" | "Im" => !declared(name),
+        _ => FUNCTIONS.contains(&name) || name == "sqrt",
+    }
+}
 
 /// The longest piece, in bytes, that a name run together splits into: a declared name is
 /// shorter, and the bound keeps the split linear in the length of what is split (a run of

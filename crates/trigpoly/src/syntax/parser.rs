@@ -9,7 +9,7 @@ use num_bigint::BigInt;
 use super::error::{line_col, ParseError, Span};
 use super::latex::{FRACTIONS, SIZING_OPEN};
 use super::lexer::{Lexer, Tok, Token};
-use crate::lower::FUNCTIONS;
+use crate::lower::calls_function;
 
 /// Maximum nesting of parentheses, calls, brackets and operators (the operand of an operator
 /// counts as nested in it, so `(a + (b))` has 2 levels and `a + b*(c^d)` has 4).
@@ -162,7 +162,7 @@ struct Unread;
 
 impl Reading for Unread {
     fn calls(&self, name: &str) -> bool {
-        FUNCTIONS.contains(&name) || matches!(name, "sqrt" | "Re" | "Im")
+        calls_function(name, &|_| false)
     }
     fn split(&self, _: &str) -> Option<Vec<String>> {
         None
