@@ -114,9 +114,25 @@ pub fn run(job: &CheckJob) -> anyhow::Result<bool> {
     )
 }
 
-/// A file's error as the JSON report's `errors` give it.
+/// A file's error as the JSON report's `errors` give it, with the warnings read before it
+/// ([`FileError::warnings`], which stderr says right before the error), each as a loaded
+/// file's `warnings` give it less the section, which a file that did not load has none of.
 fn error_value(e: &FileError) -> serde_json::Value {
     let location = e.location.as_deref();
+    let warnings: Vec<serde_json::Value> = e
+        .warnings
+        .as_deref()
+        .map_or(&[][..], Vec::as_slice)
+        .iter()
+        .map(|w| {
+            serde_json::json!({
+                "file": w.origin,
+                "line": w.location.as_ref().map(|l| l.line),
+                "column": w.location.as_ref().map(|l| l.column),
+                "message": w.message,
+            })
+        })
+        .collect();
     serde_json::json!({
         "file": e.origin,
         "line": location.map(|l| l.line),
@@ -125,5 +141,6 @@ fn error_value(e: &FileError) -> serde_json::Value {
         "claim": e.claim,
         "message": e.message,
         "hint": e.hint,
+        "warnings": warnings,
     })
 }

@@ -380,6 +380,54 @@ fn check_says_each_failed_file_s_warnings_before_its_own_error() {
     );
 }
 
+/// The JSON report of `check` gives a failed file's warnings in its error, as stderr says them
+/// before it: a script that reads the JSON saw the error alone.
+#[test]
+fn check_json_errors_carry_the_failed_file_s_warnings() {
+    let dir = scratch("run-together-failed-load-json");
+    let failing = failing_run_together();
+    std::fs::write(dir.join("rt.toml"), &failing).expect("written");
+    std::fs::write(dir.join("ok.toml"), RUN_TOGETHER).expect("written");
+    let o = superint_in(
+        &dir,
+        &[
+            "check",
+            "ok.toml",
+            "rt.toml",
+            "--format",
+            "json",
+            "--no-timings",
+        ],
+    );
+    assert_eq!(o.status.code(), Some(2), "{}", text(&o.stderr));
+    let v: Value = serde_json::from_slice(&o.stdout).expect("one JSON document");
+    let (line, column) = line_column(&failing, "value = \"Lzx", "Lzx");
+    let error = &v["errors"][0];
+    assert_eq!(error["file"], "rt.toml", "{error}");
+    let warnings = error["warnings"].as_array().expect("the error's warnings");
+    assert_eq!(warnings.len(), 1, "{error}");
+    let w = &warnings[0];
+    assert_eq!(
+        (&w["file"], &w["line"], &w["column"]),
+        (
+            &serde_json::json!("rt.toml"),
+            &serde_json::json!(line),
+            &serde_json::json!(column)
+        ),
+        "{w}"
+    );
+    assert!(
+        w["message"]
+            .as_str()
+            .is_some_and(|m| m.starts_with("'Lzx' is read as the product")),
+        "{w}"
+    );
+    // The loaded file's own warnings are the same shape, with their section.
+    let loaded = &v["warnings"][0];
+    assert_eq!(loaded["file"], "ok.toml", "{loaded}");
+    assert_eq!(loaded["message"], w["message"], "{loaded}");
+}
+
 #[test]
 fn systems_paper_claims_are_all_there() {
     let mut ids = Vec::new();
