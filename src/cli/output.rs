@@ -113,7 +113,8 @@ pub fn load_warnings(error: &FileError) {
     print_warnings(error.warnings.as_deref().map_or(&[], Vec::as_slice));
 }
 
-fn print_warnings(warnings: &[Warning]) {
+/// Prints `warnings` on stderr, each as `superint: warning: …` with its line and a caret.
+pub fn print_warnings(warnings: &[Warning]) {
     for w in warnings {
         eprintln!("superint: warning: {}", printable(&w.to_string()));
     }

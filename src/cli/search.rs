@@ -7,16 +7,29 @@ use std::path::PathBuf;
 use super::input::load_system;
 use anyhow::{anyhow, bail, Context};
 use brackets::search::{SearchOptions, SearchSpace, DEFAULT_MAX_PRODUCTS};
+use brackets::EngineError;
 use brackets::System;
 use clap::Args;
+use std::sync::{Mutex, MutexGuard};
 use superint::discovery::{
     builtin_system, file_search_report, parse_condition, parse_fixed, parse_known, parse_symbolic,
     search_report_for,
 };
 use superint::render::render;
 use superint::report::{with_article, Report};
+use superint::system_file::Warning;
 use superint::system_file::{what_is, BadName, Caller, LoadedSystem};
 use trigpoly::{Expr, VarKind};
+
+/// How a warning names the command line's texts, as a file's does.
+const COMMAND_LINE: &str = "<command line>";
+
+/// The warnings kept, whatever a thread that panicked left.
+fn lock(noted: &Mutex<Vec<Warning>>) -> MutexGuard<'_, Vec<Warning>> {
+    noted
+        .lock()
+        .unwrap_or_else(std::sync::PoisonError::into_inner)
+}
 
 use super::limits::LimitsArgs;
 use super::output::{emit, Output};
@@ -276,8 +289,9 @@ fn braced_indices(name: &str) -> String {
 pub enum Subject {
     /// A system file.
     File(Box<LoadedSystem>),
-    /// A built-in system, with its name.
-    Builtin(String, Box<System>),
+    /// A built-in system, with its name and what the command line's texts about it read in
+    /// doubt (names run together, [`Warning`]), as a file keeps its own.
+    Builtin(String, Box<System>, Mutex<Vec<Warning>>),
 }
 
 impl Subject {
@@ -295,7 +309,11 @@ impl Subject {
                 format!("the built-in system {name} does not fit the limits given")
             })?;
             return match built {
-                Some((display, s)) => Ok(Subject::Builtin(display, Box::new(s))),
+                Some((display, s)) => Ok(Subject::Builtin(
+                    display,
+                    Box::new(s),
+                    Mutex::new(Vec::new()),
+                )),
                 None => bail!(
                     "unknown system {} (built-in: {})",
                     trigpoly::quoted_name(name),
@@ -311,11 +329,14 @@ impl Subject {
     }
 
     /// `result`, once what the file's texts and the command line's read in doubt is printed
-    /// ([`super::output::warned`]), if it is a file: however the work ended.
+    /// ([`super::output::warned`]): however the work ended.
     pub fn warned<T, E>(&self, result: Result<T, E>) -> Result<T, E> {
         match self {
             Subject::File(f) => super::output::warned(f, result),
-            Subject::Builtin(..) => result,
+            Subject::Builtin(_, _, noted) => {
+                super::output::print_warnings(&lock(noted));
+                result
+            }
         }
     }
 
@@ -330,7 +351,7 @@ impl Subject {
     pub fn system(&self) -> &System {
         match self {
             Subject::File(f) => f.system(),
-            Subject::Builtin(_, s) => s,
+            Subject::Builtin(_, s, _) => s,
         }
     }
 
@@ -342,7 +363,7 @@ impl Subject {
     pub fn display_name(&self, name: &str) -> String {
         let shown = |name: &str| match self {
             Subject::File(f) => f.display_name(name),
-            Subject::Builtin(_, s) => s.display_name(name).to_string(),
+            Subject::Builtin(_, s, _) => s.display_name(name).to_string(),
         };
         // An expression (`--known 'x*p_y'`) as it is written.
         if !is_name_like(name) {
@@ -376,7 +397,7 @@ impl Subject {
     pub fn the_name(&self) -> String {
         match self {
             Subject::File(f) => f.the_name(),
-            Subject::Builtin(n, _) => with_article(n),
+            Subject::Builtin(n, ..) => with_article(n),
         }
     }
 
@@ -396,7 +417,7 @@ impl Subject {
         }
         let what = match self {
             Subject::File(f) => f.what_is(name),
-            Subject::Builtin(_, s) => what_is(s, &[], name),
+            Subject::Builtin(_, s, _) => what_is(s, &[], name),
         };
         if let Some(what) = what {
             bail!("{option} {name}: {name} is {what}; choose another name");
@@ -411,11 +432,30 @@ impl Subject {
         Ok(())
     }
 
-    /// Parses an expression: named functions, family instances, brackets.
+    /// Parses an expression: named functions, family instances, brackets. What it reads in
+    /// doubt is kept, to be printed by [`Subject::warned`] (a file keeps its own).
     pub fn parse(&self, src: &str) -> Result<Expr, String> {
         match self {
             Subject::File(f) => f.parse_argument(src).map_err(|e| e.to_string()),
-            Subject::Builtin(_, s) => s.parse(src).map_err(|e| e.to_string()),
+            Subject::Builtin(_, s, noted) => {
+                let (e, readings) = Expr::parse_noting(s.vars(), src, s.as_ref())
+                    .map_err(|e| EngineError::parse(src, e).to_string())?;
+                let mut kept = lock(noted);
+                for r in &readings {
+                    let w = Warning::run_together(
+                        COMMAND_LINE,
+                        src,
+                        r.span.start..r.span.end,
+                        r,
+                        &|p| s.display_name(p).to_string(),
+                    );
+                    // Each place once, as a file keeps them.
+                    if !kept.contains(&w) {
+                        kept.push(w);
+                    }
+                }
+                Ok(e)
+            }
         }
     }
 
@@ -492,7 +532,7 @@ fn search(a: &SearchArgs, subject: &Subject) -> anyhow::Result<Report> {
     // A file's integrals are restated in its functions and family instances too.
     let found = match subject {
         Subject::File(file) => file_search_report(file, &options, Caller::CommandLine),
-        Subject::Builtin(name, system) => {
+        Subject::Builtin(name, system, _) => {
             search_report_for(&with_article(name), system, &options, Caller::CommandLine)
         }
     };

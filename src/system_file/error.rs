@@ -212,6 +212,32 @@ pub struct Warning {
 }
 
 impl Warning {
+    /// The warning for a name run together and read as a product in doubt, `noted`, written
+    /// at `span` of `text`, a text whose name is `origin`: its place, and the reading with each
+    /// piece as `shown` prints it (`L_x x`). A system file's texts and the command line's
+    /// texts about a built-in system are warned of alike.
+    pub fn run_together(
+        origin: &str,
+        text: &str,
+        span: Range<usize>,
+        noted: &trigpoly::RunTogether,
+        shown: &dyn Fn(&str) -> String,
+    ) -> Warning {
+        let location = locate(text, span);
+        let name = trigpoly::quoted_name(&noted.name);
+        let plain = noted.reading(shown, &|p: &str| p.to_string());
+        let markup = noted.reading(shown, &|p: &str| format!("`{p}`"));
+        Warning {
+            origin: origin.to_string(),
+            markup: format!(
+                "{name} (line {}, column {}) {markup}",
+                location.line, location.column
+            ),
+            message: format!("{name} {plain}"),
+            location: Some(Box::new(location)),
+        }
+    }
+
     /// 1-based line and column, if the warning has a place.
     pub fn line_col(&self) -> Option<(usize, usize)> {
         self.location.as_ref().map(|l| (l.line, l.column))

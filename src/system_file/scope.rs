@@ -742,20 +742,13 @@ impl<'a> Scope<'a> {
     /// The warning for a name of `text` run together and read as a product in doubt: its
     /// place, and the reading in the system's printed names (`L_x x`).
     fn warning(&self, source: &Source, text: &Text, noted: &trigpoly::RunTogether) -> Warning {
-        let shown = |piece: &str| self.file.display_name(piece);
-        let location = super::error::locate(&source.text, text.source_span(noted.span));
-        let name = trigpoly::quoted_name(&noted.name);
-        let plain = noted.reading(&shown, &|p: &str| p.to_string());
-        let markup = noted.reading(&shown, &|p: &str| format!("`{p}`"));
-        Warning {
-            origin: source.origin.clone(),
-            markup: format!(
-                "{name} (line {}, column {}) {markup}",
-                location.line, location.column
-            ),
-            message: format!("{name} {plain}"),
-            location: Some(Box::new(location)),
-        }
+        Warning::run_together(
+            &source.origin,
+            &source.text,
+            text.source_span(noted.span),
+            noted,
+            &|piece: &str| self.file.display_name(piece),
+        )
     }
 
     /// Expands family instances, checks brackets.

@@ -5828,3 +5828,50 @@ value = "p_x*p_y"
         "{table}"
     );
 }
+
+/// A built-in system warns of what the command line's texts read in doubt, as a system file
+/// does (`F1x` read as `F1 x` beside the function `F1`), in `--define`, `--known` and
+/// `--when` alike: its parser gathered no warnings, so the same text said nothing there.
+#[test]
+fn a_built_in_system_warns_of_names_run_together() {
+    let warning = "superint: warning: <command line>:1:1: 'F1x' is read as the product F1 x, \
+                   the function F1 with x after it";
+    let runs: [&[&str]; 3] = [
+        &[
+            "closure", "--system", "harmonic", "F1", "F2", "E", "--define", "E=F1x",
+        ],
+        &[
+            "search",
+            "--system",
+            "harmonic",
+            "--momenta-degree",
+            "1",
+            "--new-only",
+            "--known",
+            "F1x",
+        ],
+        &[
+            "search",
+            "--system",
+            "harmonic",
+            "--momenta-degree",
+            "1",
+            "--when",
+            "x = F1x",
+        ],
+    ];
+    for args in runs {
+        let o = superint(args);
+        let stderr = String::from_utf8(o.stderr).expect("UTF-8");
+        assert!(stderr.starts_with(warning), "{args:?}: {stderr}");
+        // Once, however often the text is read.
+        assert_eq!(
+            stderr.matches("superint: warning:").count(),
+            1,
+            "{args:?}: {stderr}"
+        );
+        // The closure goes on; F1x is no integral, and x = F1x sets x in terms of itself.
+        let code = if args[0] == "closure" { 0 } else { 2 };
+        assert_eq!(o.status.code(), Some(code), "{args:?}: {stderr}");
+    }
+}
