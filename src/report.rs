@@ -254,6 +254,29 @@ pub struct Equations {
     pub caption: String,
     /// The lines.
     pub lines: Vec<Equation>,
+    /// Whether the flow of `H` keeps the condition the lines were restricted to, where that
+    /// was asked (a bracket at a condition, `bracket --when`): a bracket that vanishes on a
+    /// surface the flow leaves is no conservation law.
+    pub flow: Option<FlowKept>,
+}
+
+/// Whether the flow of `H` keeps the surface of a condition ([`Equations::flow`]).
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub enum FlowKept {
+    /// The flow keeps it: `{v − value, H}` vanishes there for every variable it sets.
+    Kept,
+    /// The flow leaves it: the note that says so, in markup (`` `{x, H} = p_x/M` ``).
+    Left(String),
+}
+
+impl FlowKept {
+    /// The note, where the flow leaves the surface.
+    pub fn note(&self) -> Option<&str> {
+        match self {
+            FlowKept::Kept => None,
+            FlowKept::Left(note) => Some(note),
+        }
+    }
 }
 
 /// One displayed equation `lhs = rhs`, and the right side again in named functions where

@@ -500,6 +500,7 @@ fn closing_advice(moving: &[String], when: &str, symbolic: bool, caller: Caller)
 /// The brackets `outside` the table, each written out: `{A, B} = …`.
 fn outside_equations(c: &Closure, outside: &[(usize, usize)]) -> Entry {
     Entry::Equations(Equations {
+        flow: None,
         caption: String::new(),
         lines: outside
             .iter()

@@ -704,6 +704,7 @@ impl Shared {
         };
         let mut entries = vec![
             Entry::Equations(Equations {
+                flow: None,
                 caption: String::new(),
                 lines: vec![Equation::new("H", h)],
             }),
@@ -898,6 +899,7 @@ impl Shared {
             );
         }
         Entry::Equations(Equations {
+            flow: None,
             caption: match (&r.new, &self.symbolic) {
                 (Some(_), _) => "New integrals".into(),
                 (None, Some(names)) => format!("Generators over the polynomials in `{names}`"),
@@ -965,6 +967,7 @@ impl Shared {
         }
         let theta = r.vars.variable(*theta).unicode();
         Some(Entry::Equations(Equations {
+            flow: None,
             caption: format!(
                 "Those of trigonometric order `{k} > 0` as `{} = Re({} e^{{−i{k}{theta}}})`",
                 self.letter, self.complex

@@ -457,10 +457,12 @@ fn hamilton(system: &System) -> Result<Vec<Entry>, EngineError> {
         .collect();
     Ok(vec![
         Entry::Equations(Equations {
+            flow: None,
             caption: String::new(),
             lines: vec![Equation::new("H", system.hamiltonian().clone())],
         }),
         Entry::Equations(Equations {
+            flow: None,
             caption: "Hamilton's equations".into(),
             lines,
         }),
@@ -535,6 +537,7 @@ impl SectionBuilder {
             .map(|(lhs, src)| Ok(Equation::new(lhs, self.parse(src)?)))
             .collect::<Result<_, EngineError>>()?;
         self.items.push(Item::Equations(Equations {
+            flow: None,
             caption: caption.into(),
             lines,
         }));
@@ -543,6 +546,7 @@ impl SectionBuilder {
 
     pub(crate) fn show_exprs(&mut self, caption: &str, lines: Vec<(String, Expr)>) {
         self.items.push(Item::Equations(Equations {
+            flow: None,
             caption: caption.into(),
             lines: lines
                 .into_iter()

@@ -58,7 +58,11 @@
 //!                          "-(2*omega - 3*Omega)*Q_2_3"),
 //!                 "factored": { "text", "ascii", "latex" } | null   (the right side as the
 //!                          factor its terms share times the rest, where `bracket` or `expand`
-//!                          finds one: "F*(x*p_x + y*p_y)/M") } ] } ],
+//!                          finds one: "F*(x*p_x + y*p_y)/M") } ],
+//!                 "kept_by_flow": bool, "flow_note": string | null   (only for `bracket
+//!                          --when`: whether the flow of H keeps the condition's surface, and
+//!                          where it does not, the note that says so: a zero there is no
+//!                          conservation law) } ],
 //!   "tables": [ { "section", "caption" (plain text, as every title and caption: "{A, B} for
 //!                 the harmonic rotor (row A, column B)"), "functions": [ascii names],
 //!                 "display": [names],
@@ -118,7 +122,8 @@ use trigpoly::{Expr, Factored, Style, VarKind};
 use super::{plain, Options};
 use crate::report::{
     written_in_functions, ClaimOutcome, ClaimResult, ClosureFacts, Entry, Equations, Facts,
-    ParameterFacts, ProofResult, RankResult, Report, SearchFacts, TableResult, TowerResult,
+    FlowKept, ParameterFacts, ProofResult, RankResult, Report, SearchFacts, TableResult,
+    TowerResult,
 };
 use brackets::{Entry as TableEntry, UpperBound};
 
@@ -299,7 +304,7 @@ fn outcome(ok: bool) -> &'static str {
 /// Displayed equations, each line's right side in the three notations with its left side and,
 /// where it has one, its form in the functions.
 fn equations(eq: &Equations, section: u32) -> Value {
-    json!({
+    let mut value = json!({
         "section": section,
         "caption": plain(&eq.caption),
         "lines": eq.lines.iter().map(|l| {
@@ -310,7 +315,14 @@ fn equations(eq: &Equations, section: u32) -> Value {
             line.insert("factored".into(), l.factored.as_ref().map_or(Value::Null, factored));
             v
         }).collect::<Vec<_>>(),
-    })
+    });
+    // Only where it was asked (a bracket at a condition), so that other equations are as
+    // they always were.
+    if let Some(flow) = &eq.flow {
+        value["kept_by_flow"] = json!(*flow == FlowKept::Kept);
+        value["flow_note"] = flow.note().map_or(Value::Null, |n| json!(plain(n)));
+    }
+    value
 }
 
 /// A table of brackets: each entry in the three notations, the entries cut short

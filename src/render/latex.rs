@@ -8,8 +8,8 @@ use super::tex::{markup, markup_with, math, math_with, relation, sentence, text,
 use super::text::{point, upper_bound, wrap};
 use super::{stopped, table_list, verdict, Options};
 use crate::report::{
-    counted, ClaimKind, ClaimResult, Entry, Equations, Excerpt, ProofResult, RankResult, Report,
-    SummaryKind, TableResult, TowerResult,
+    counted, ClaimKind, ClaimResult, Entry, Equations, Excerpt, FlowKept, ProofResult, RankResult,
+    Report, SummaryKind, TableResult, TowerResult,
 };
 
 /// Renders a report as a LaTeX document.
@@ -387,6 +387,10 @@ fn equations(out: &mut Vec<String>, eq: &Equations, names: &Names) {
         })
         .collect();
     flush(out, &mut rows);
+    if let Some(note) = eq.flow.as_ref().and_then(FlowKept::note) {
+        out.push(format!(r"\noindent Note: {}", markup_with(note, names)));
+        out.push(String::new());
+    }
 }
 
 /// What a row of [`ROW`] leaves to a right side after a left side `lhs` wide (at least half

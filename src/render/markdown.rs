@@ -7,7 +7,7 @@ use super::tex::{set_sentence, Piece};
 use super::text::{point, upper_bound};
 use super::{stopped, verdict, Options, SHOWN_MONOMIALS};
 use crate::report::{
-    counted, ClaimKind, ClaimResult, Entry, Equations, ProofResult, RankResult, Report,
+    counted, ClaimKind, ClaimResult, Entry, Equations, FlowKept, ProofResult, RankResult, Report,
     SummaryKind, TableResult, TowerResult,
 };
 
@@ -135,6 +135,10 @@ fn equations(eq: &Equations) -> String {
             line.push_str(&format!(" = {}", code(&f)));
         }
         lines.push(line);
+    }
+    if let Some(note) = eq.flow.as_ref().and_then(FlowKept::note) {
+        lines.push(String::new());
+        lines.push(format!("Note: {}", prose(note)));
     }
     lines.join("\n")
 }

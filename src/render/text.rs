@@ -6,8 +6,8 @@ use trigpoly::{GaussianRational, Style, VarKind};
 
 use super::{condition_suffix, pad, plain, stopped, table_list, verdict, width, Options};
 use crate::report::{
-    counted, ClaimKind, ClaimResult, Entry, Equation, Equations, ProofResult, RankResult, Report,
-    TableResult, TowerResult,
+    counted, ClaimKind, ClaimResult, Entry, Equation, Equations, FlowKept, ProofResult, RankResult,
+    Report, TableResult, TowerResult,
 };
 
 /// The column where claim verdicts start.
@@ -309,6 +309,9 @@ fn equations(out: &mut Vec<String>, eq: &Equations) {
         eq.lines.iter().map(print).collect()
     };
     out.extend(lines.into_iter().flatten());
+    if let Some(note) = eq.flow.as_ref().and_then(FlowKept::note) {
+        out.extend(prose(&format!("Note: {note}")));
+    }
 }
 
 /// `  statement at condition ........ [C09 proved]`, and what was found when it failed.

@@ -15,8 +15,8 @@ use super::scope::{instance_of, rewrite_braces};
 use super::text::Text;
 use super::{Argument, Caller, LoadedSystem};
 use crate::report::{
-    factored_in_functions, shown_factored, Entry, Equation, Equations, Expect, RankResult, Report,
-    Section, SummaryKind, TableResult,
+    factored_in_functions, shown_factored, Entry, Equation, Equations, Expect, FlowKept,
+    RankResult, Report, Section, SummaryKind, TableResult,
 };
 
 impl LoadedSystem {
@@ -35,6 +35,7 @@ impl LoadedSystem {
             entries.push(Entry::Text(format!("Source: {c}")));
         }
         entries.push(Entry::Equations(Equations {
+            flow: None,
             caption: String::new(),
             lines: vec![Equation::new("H", self.system.hamiltonian().clone())],
         }));
@@ -275,6 +276,8 @@ pub fn bracket_report(
         .map_err(|e| file.computation_error(&e))?;
     let lhs = format!("{{{fname}, {gname}}}");
     let mut equations = equations_at(file, condition.as_ref(), vec![(lhs.clone(), value)])?;
+    // A bracket at a surface the flow of H leaves may vanish there and still conserve nothing.
+    equations.flow = condition.as_ref().and_then(|c| flow_kept(file, c));
     // The bracket in the file's functions too (and the family instances at the indices the
     // arguments mention), where it is a polynomial in them. Else as its terms' common factor
     // times the rest, where they share one.
@@ -383,9 +386,25 @@ fn equations_at(
         })
         .collect::<Result<_, FileError>>()?;
     Ok(Equations {
+        flow: None,
         caption: condition.map_or_else(String::new, |c| format!("at `{}`", c.text)),
         lines,
     })
+}
+
+/// Whether the flow of the file's `H` keeps the surface of `condition`, decided exactly as a
+/// search's condition is ([`Condition::left_by_flow`]), with the note that says where it does
+/// not: a bracket that vanishes there is no conservation law (`{x, H}` at `x = 0` of the
+/// oscillator). `None` where that could not be decided (a limit): nothing is said then.
+fn flow_kept(file: &LoadedSystem, condition: &Condition) -> Option<FlowKept> {
+    match condition.left_by_flow(&file.system).ok()? {
+        None => Some(FlowKept::Kept),
+        Some(left) => Some(FlowKept::Left(format!(
+            "`{}` is not kept by the flow of `H` (`{{{}, H}} = {}` there): a zero is no \
+             conservation law",
+            condition.text, left.level, left.rate
+        ))),
+    }
 }
 
 /// A condition given to a report (`--when` on the command line), if any.
@@ -517,6 +536,7 @@ pub fn table_report(file: &LoadedSystem, names: &[impl AsRef<str>]) -> Result<Re
                 .to_string(),
         ));
         entries.push(Entry::Equations(Equations {
+            flow: None,
             caption: String::new(),
             lines: written,
         }));

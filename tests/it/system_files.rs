@@ -5090,3 +5090,62 @@ fn a_description_may_run_over_lines() {
     assert!(out.contains("One line,\n\tand another."), "{out}");
     assert!(out.contains("Source: A. Author,\nsome journal"), "{out}");
 }
+
+/// `bracket --when` says where the flow of `H` does not keep the condition: `{x, H}` of an
+/// oscillator at `x = 0` has a value there, but a bracket that vanishes on a surface the flow
+/// leaves is no conservation law, and nothing said so. A resonance the flow keeps gets no note.
+#[test]
+fn bracket_at_a_condition_the_flow_leaves_says_so() {
+    let dir = scratch("bracket-flow-note");
+    std::fs::write(
+        dir.join("osc.toml"),
+        "name = \"oscillator\"\nhamiltonian = \"p_x^2/(2*M) + M*omega^2*x^2/2\"\n\
+         [phase_space]\ncoordinates = [\"x\"]\nparameters = [\"M\", \"omega\"]\n",
+    )
+    .expect("written");
+    let note = "Note: x = 0 is not kept by the flow of H ({x, H} = p_x/M there): a zero is no \
+                conservation law\n";
+    let o = superint_in(
+        &dir,
+        &["bracket", "osc.toml", "x^2", "H", "--when", "x = 0"],
+    );
+    assert_eq!(o.status.code(), Some(0), "{}", text(&o.stderr));
+    let out = text(&o.stdout);
+    assert!(out.contains(&format!("    {{x², H}} = 0\n{note}")), "{out}");
+    let o = superint_in(
+        &dir,
+        &[
+            "bracket", "osc.toml", "x^2", "H", "--when", "x = 0", "--format", "json",
+        ],
+    );
+    let v: Value = serde_json::from_slice(&o.stdout).expect("JSON");
+    let eq = &v["equations"][0];
+    assert_eq!(eq["kept_by_flow"], false, "{eq}");
+    assert_eq!(
+        eq["flow_note"],
+        "x = 0 is not kept by the flow of H ({x, H} = p_x/M there): a zero is no conservation \
+         law",
+        "{eq}"
+    );
+    // A condition the flow keeps: no note; without one, no key.
+    let args = ["bracket", "systems/harmonic-rotor.toml", "P_1_1", "H"];
+    let o = superint_in(
+        root(),
+        &[&args[..], &["--when", "p_theta = I*omega"]].concat(),
+    );
+    assert!(!text(&o.stdout).contains("Note:"), "{}", text(&o.stdout));
+    let o = superint_in(
+        root(),
+        &[
+            &args[..],
+            &["--when", "p_theta = I*omega", "--format", "json"],
+        ]
+        .concat(),
+    );
+    let v: Value = serde_json::from_slice(&o.stdout).expect("JSON");
+    assert_eq!(v["equations"][0]["kept_by_flow"], true);
+    assert_eq!(v["equations"][0]["flow_note"], Value::Null);
+    let o = superint_in(root(), &[&args[..], &["--format", "json"]].concat());
+    let v: Value = serde_json::from_slice(&o.stdout).expect("JSON");
+    assert_eq!(v["equations"][0].get("kept_by_flow"), None);
+}

@@ -74,6 +74,17 @@ fn not_real(v: Var, value: &Expr) -> Option<String> {
     })
 }
 
+/// A level of a [`Condition`] that the flow of `H` does not keep
+/// ([`Condition::left_by_flow`]): on the surface, `{level, H} = rate`, not 0.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct LeftByFlow {
+    /// The level, `v` or `v − (value)` (`e^{iθ}` for an angle `θ`), in unicode.
+    pub level: String,
+    /// Its bracket with `H` on the surface, in unicode (a long one by its first terms and
+    /// its size).
+    pub rate: String,
+}
+
 impl std::fmt::Display for Condition {
     /// The condition as it reads (its `text`: `p_θ = 2Iω`).
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
@@ -385,6 +396,28 @@ impl Condition {
     /// set to a constant is kept; one set to a function of phase space (`a = p_x`) is a
     /// surface like any other, which the flow leaves unless `{value, H}` vanishes there.
     pub fn kept_by_flow(&self, system: &System) -> Result<(), EngineError> {
+        let Some(left) = self.left_by_flow(system)? else {
+            return Ok(());
+        };
+        // The rotor's resonance is the example where the system has an angle to resonate
+        // with; elsewhere the rule is said as it is.
+        let kept = match system.vars().angles().next() {
+            Some(_) => "p_θ at a resonance p_θ = mIω/n, where {p_θ, H} = 0",
+            None => "those whose bracket with H vanishes on the surface",
+        };
+        Err(EngineError::Invalid(format!(
+            "the flow leaves the surface {}: there {{{}, H}} = {}, not 0, so what is conserved \
+             on it is no integral; a condition may set parameters to constants, and variables \
+             the flow keeps ({kept})",
+            self.text, left.level, left.rate
+        )))
+    }
+
+    /// Where the flow of `system`'s Hamiltonian leaves the surface the condition describes,
+    /// decided exactly as [`Condition::kept_by_flow`] decides it (`{v − value, H}` at the
+    /// condition, for each variable `v` it sets, but a parameter set to a constant): the first
+    /// level whose rate is not zero there, or `None` where the flow keeps the surface.
+    pub fn left_by_flow(&self, system: &System) -> Result<Option<LeftByFlow>, EngineError> {
         let vars = system.vars();
         self.within(vars)?;
         for (v, value) in &self.subs {
@@ -409,22 +442,13 @@ impl Condition {
                     true => format!("{name} − ({})", value.brief_excerpt()),
                     false => name,
                 };
-                let rate = rate.brief_excerpt();
-                // The rotor's resonance is the example where the system has an angle to
-                // resonate with; elsewhere the rule is said as it is.
-                let kept = match vars.angles().next() {
-                    Some(_) => "p_θ at a resonance p_θ = mIω/n, where {p_θ, H} = 0",
-                    None => "those whose bracket with H vanishes on the surface",
-                };
-                return Err(EngineError::Invalid(format!(
-                    "the flow leaves the surface {}: there {{{level}, H}} = {rate}, not 0, so \
-                     what is conserved on it is no integral; a condition may set parameters to \
-                     constants, and variables the flow keeps ({kept})",
-                    self.text
-                )));
+                return Ok(Some(LeftByFlow {
+                    level,
+                    rate: rate.brief_excerpt(),
+                }));
             }
         }
-        Ok(())
+        Ok(None)
     }
 
     /// `e` under the condition: refused where it is not defined there ([`Condition::defined_on`],

@@ -35,7 +35,7 @@ pub mod systems;
 pub mod table;
 pub mod tower;
 
-pub use claim::{Claim, Condition, Outcome, Verdict};
+pub use claim::{Claim, Condition, LeftByFlow, Outcome, Verdict};
 pub use closure::{
     closure, closure_of, expressed_in, Bracket as ClosureBracket, Closure, ClosureOptions,
     Expressed, Relation,
