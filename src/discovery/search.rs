@@ -894,9 +894,17 @@ impl Shared {
         restated: &[Option<Expr>],
     ) -> Entry {
         if self.shown.is_empty() {
-            return Entry::Text(
-                "None: the known integrals generate every integral in the space.".into(),
-            );
+            // Where no known integral lies in the space (`H` past its degrees), what is left
+            // generated is the constants alone: not the known integrals, of which there are none.
+            let why = match &r.new {
+                Some(n) if n.known.is_empty() => {
+                    "None: no known integral lies in the space, and every integral in it is a \
+                     constant, which counts as generated."
+                }
+                Some(_) => "None: the known integrals generate every integral in the space.",
+                None => "None: the space holds no integral.",
+            };
+            return Entry::Text(why.into());
         }
         Entry::Equations(Equations {
             flow: None,
@@ -1117,7 +1125,7 @@ fn other_values(parameters: &[(Var, Rational)], names: &[&str]) -> Vec<String> {
 /// degree (or grade, with angles), and how much of the space the generated ones span.
 fn new_integrals_text(r: &SearchResult, n: &NewIntegrals) -> String {
     let known = if n.known.is_empty() {
-        "no named function".to_string()
+        "none".to_string()
     } else {
         format!("`{}`", n.known.join(", "))
     };

@@ -5875,3 +5875,35 @@ fn a_built_in_system_warns_of_names_run_together() {
         assert_eq!(o.status.code(), Some(code), "{args:?}: {stderr}");
     }
 }
+
+/// `search --new-only` where `H` lies past the space's degrees, so that no known integral is
+/// in it: the only integrals are constants, and the report said that the known integrals,
+/// `no named function`, generate every one.
+#[test]
+fn new_only_with_no_known_integral_in_the_space_says_the_constants_are_all() {
+    let path = crate::scratch_text(
+        "new-only-nothing-known",
+        "osc.toml",
+        "name = \"oscillator\"\nhamiltonian = \"p_x^2/(2*M) + M*omega^2*x^2/2\"\n\
+         [phase_space]\ncoordinates = [\"x\"]\nparameters = [\"M\", \"omega\"]\n",
+    );
+    let path = path.to_str().expect("a path");
+    let args = [
+        "search",
+        path,
+        "--momenta-degree",
+        "1",
+        "--positions-degree",
+        "1",
+        "--new-only",
+    ];
+    let text = normalize(&crate::superint_ok(&args));
+    for piece in [
+        "Known integrals in the space: none.",
+        "None: no known integral lies in the space, and every integral in it is a constant, \
+         which counts as generated.",
+    ] {
+        assert!(text.contains(piece), "{piece:?} not in:\n{text}");
+    }
+    assert!(!text.contains("the known integrals generate"), "{text}");
+}
