@@ -215,11 +215,12 @@ fn close(a: &ClosureArgs, names: &[String], subject: &Subject) -> anyhow::Result
                 trigpoly::quoted_name(name)
             );
         }
+        // The parse error first, with its place: its excerpt shows the generator, which the
+        // message put before the place and the error (`'Foo': <command line>:1:1: unknown name
+        // 'Foo'`), where `bracket` and `search` begin with what is wrong.
         let e = match defined.iter().find(|d| d.0 == name) {
             Some(d) => d.1.clone(),
-            None => subject
-                .parse(name)
-                .map_err(|e| anyhow!("{}: {e}", trigpoly::quoted_name(name)))?,
+            None => subject.parse(name).map_err(|e| anyhow!("{e}"))?,
         };
         let display = subject.display_name(name);
         generators.push(NamedFunction::new(&identifier(name), &display, e));

@@ -1826,7 +1826,7 @@ fn cli_echoed_names_are_quoted_and_shortened_alike() {
         ),
         (
             vec!["closure", rotor, "L", &long],
-            format!("superint: error: {quoted}: <command line>:1:1: unknown name {quoted}"),
+            format!("superint: error: <command line>:1:1: unknown name {quoted}"),
         ),
     ] {
         let o = superint(&args);

@@ -5907,3 +5907,22 @@ fn new_only_with_no_known_integral_in_the_space_says_the_constants_are_all() {
     }
     assert!(!text.contains("the known integrals generate"), "{text}");
 }
+
+/// A closure's generator that does not read says what is wrong first, at its place, as
+/// `bracket` does: the message began with the generator, `'Foo': <command line>:1:1: unknown
+/// name 'Foo'`, which its excerpt shows below anyway.
+#[test]
+fn a_closure_generator_that_does_not_read_says_what_is_wrong_first() {
+    let file = superint_refused(&["closure", "systems/harmonic-rotor.toml", "L", "Foo"]);
+    assert!(
+        file.starts_with("superint: error: <command line>:1:1: unknown name 'Foo' (known:"),
+        "{file}"
+    );
+    let bracket = superint_refused(&["bracket", "systems/harmonic-rotor.toml", "Foo", "L"]);
+    assert_eq!(file.lines().next(), bracket.lines().next());
+    let built_in = superint_refused(&["closure", "--system", "harmonic", "L", "Foo"]);
+    assert!(
+        built_in.starts_with("superint: error: line 1, column 1: unknown name 'Foo' (known:"),
+        "{built_in}"
+    );
+}
