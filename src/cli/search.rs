@@ -448,6 +448,8 @@ impl Subject {
                         r.span.start..r.span.end,
                         r,
                         &|p| s.display_name(p).to_string(),
+                        // A built-in system's names are fixed: no advice to declare one.
+                        false,
                     );
                     // Each place once, as a file keeps them.
                     if !kept.contains(&w) {

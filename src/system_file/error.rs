@@ -215,18 +215,20 @@ impl Warning {
     /// The warning for a name run together and read as a product in doubt, `noted`, written
     /// at `span` of `text`, a text whose name is `origin`: its place, and the reading with each
     /// piece as `shown` prints it (`L_x x`). A system file's texts and the command line's
-    /// texts about a built-in system are warned of alike.
+    /// texts about a built-in system are warned of alike, but for the advice to declare the
+    /// name, which only a file, where a name is `declarable`, can follow.
     pub fn run_together(
         origin: &str,
         text: &str,
         span: Range<usize>,
         noted: &trigpoly::RunTogether,
         shown: &dyn Fn(&str) -> String,
+        declarable: bool,
     ) -> Warning {
         let location = locate(text, span);
         let name = trigpoly::quoted_name(&noted.name);
-        let plain = noted.reading(shown, &|p: &str| p.to_string());
-        let markup = noted.reading(shown, &|p: &str| format!("`{p}`"));
+        let plain = noted.reading(shown, &|p: &str| p.to_string(), declarable);
+        let markup = noted.reading(shown, &|p: &str| format!("`{p}`"), declarable);
         Warning {
             origin: origin.to_string(),
             markup: format!(

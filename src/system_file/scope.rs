@@ -748,6 +748,7 @@ impl<'a> Scope<'a> {
             text.source_span(noted.span),
             noted,
             &|piece: &str| self.file.display_name(piece),
+            true,
         )
     }
 

@@ -5834,8 +5834,9 @@ value = "p_x*p_y"
 /// `--when` alike: its parser gathered no warnings, so the same text said nothing there.
 #[test]
 fn a_built_in_system_warns_of_names_run_together() {
+    // A built-in system's names are fixed: the advice is the product's, not to declare F1x.
     let warning = "superint: warning: <command line>:1:1: 'F1x' is read as the product F1 x, \
-                   the function F1 with x after it";
+                   the function F1 with x after it: write 'F1 x' or 'F1*x' for the product\n";
     let runs: [&[&str]; 3] = [
         &[
             "closure", "--system", "harmonic", "F1", "F2", "E", "--define", "E=F1x",

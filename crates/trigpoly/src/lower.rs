@@ -113,11 +113,14 @@ impl RunTogether {
     /// read as …`), each piece written by `shown` (a system's display names: `L_x` for `Lx`)
     /// and the product by `formula` (a report's markup puts it between back quotes): `is read
     /// as the product L_x x, the function Lx with x after it: declare 'Lxx' if it is a name of
-    /// its own, or write 'Lx x' for the product`.
+    /// its own, or write 'Lx x' for the product`. Where no name can be `declarable` (a
+    /// built-in system's names are fixed), the advice is the product's alone: `write 'Lx x'
+    /// or 'Lx*x' for the product`.
     pub fn reading(
         &self,
         shown: &dyn Fn(&str) -> String,
         formula: &dyn Fn(&str) -> String,
+        declarable: bool,
     ) -> String {
         let product: Vec<String> = self.pieces.iter().map(|p| shown(p)).collect();
         let why = match &self.doubt {
@@ -130,15 +133,24 @@ impl RunTogether {
             Doubt::Doubled(c) => format!(", with its {c} doubled"),
         };
         // A long run (`'abab…', 4000 characters long`) is not written out again.
-        let spaced = match long_name(&self.name) {
-            None => format!("'{}'", self.pieces.join(" ")),
-            Some(_) => "it with spaces".to_string(),
+        let (spaced, starred) = match long_name(&self.name) {
+            None => (
+                format!("'{}'", self.pieces.join(" ")),
+                format!("'{}'", self.pieces.join("*")),
+            ),
+            Some(_) => ("it with spaces".to_string(), "with *".to_string()),
+        };
+        let advice = if declarable {
+            format!(
+                "declare {} if it is a name of its own, or write {spaced}",
+                quoted_name(&self.name)
+            )
+        } else {
+            format!("write {spaced} or {starred}")
         };
         format!(
-            "is read as the product {}{why}: declare {} if it is a name of its own, or write \
-             {spaced} for the product",
+            "is read as the product {}{why}: {advice} for the product",
             formula(&product.join(" ")),
-            quoted_name(&self.name),
         )
     }
 }
@@ -146,7 +158,7 @@ impl RunTogether {
 impl std::fmt::Display for RunTogether {
     /// `'Lxx' is read as the product Lx x, the function Lx with x after it: …`.
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
-        let reading = self.reading(&|p: &str| p.to_string(), &|p: &str| p.to_string());
+        let reading = self.reading(&|p: &str| p.to_string(), &|p: &str| p.to_string(), true);
         write!(f, "{} {reading}", quoted_name(&self.name))
     }
 }

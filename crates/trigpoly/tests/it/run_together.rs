@@ -179,9 +179,15 @@ fn the_message_says_the_reading_and_what_to_write() {
         _ => p.to_string(),
     };
     assert_eq!(
-        axx.reading(&shown, &|f: &str| format!("`{f}`")),
+        axx.reading(&shown, &|f: &str| format!("`{f}`"), true),
         "is read as the product `𝒜 x x`, though it is close to the declared name A_xx: declare \
          'Axx' if it is a name of its own, or write 'A x x' for the product"
+    );
+    // Where no name can be declared (a built-in system), the product's advice alone.
+    assert_eq!(
+        axx.reading(&shown, &|f: &str| f.to_string(), false),
+        "is read as the product 𝒜 x x, though it is close to the declared name A_xx: write \
+         'A x x' or 'A*x*x' for the product"
     );
     let [doubled] = &noted("omegaa")[..] else {
         panic!()
