@@ -435,6 +435,12 @@ impl Subject {
     /// Parses an expression: named functions, family instances, brackets. What it reads in
     /// doubt is kept, to be printed by [`Subject::warned`] (a file keeps its own).
     pub fn parse(&self, src: &str) -> Result<Expr, String> {
+        self.parse_in(src, src, 0)
+    }
+
+    /// [`Subject::parse`] of `src`, which begins at byte `at` of `text` (a value of a
+    /// condition): what it reads in doubt is placed in `text`, as typed.
+    fn parse_in(&self, text: &str, src: &str, at: usize) -> Result<Expr, String> {
         match self {
             Subject::File(f) => f.parse_argument(src).map_err(|e| e.to_string()),
             Subject::Builtin(_, s, noted) => {
@@ -444,8 +450,8 @@ impl Subject {
                 for r in &readings {
                     let w = Warning::run_together(
                         COMMAND_LINE,
-                        src,
-                        r.span.start..r.span.end,
+                        text,
+                        at + r.span.start..at + r.span.end,
                         r,
                         &|p| s.display_name(p).to_string(),
                         // A built-in system's names are fixed: no advice to declare one.
@@ -464,8 +470,10 @@ impl Subject {
     pub fn condition(&self, when: Option<&str>) -> anyhow::Result<Option<brackets::Condition>> {
         when.map(|w| match self {
             Subject::File(f) => f.condition(w).map_err(anyhow::Error::from),
-            Subject::Builtin(..) => parse_condition(self.system(), w, &|s| self.parse(s))
-                .map_err(|e| anyhow!("--when: {e}")),
+            Subject::Builtin(..) => {
+                parse_condition(self.system(), w, &|s, at| self.parse_in(w, s, at))
+                    .map_err(|e| anyhow!("--when: {e}"))
+            }
         })
         .transpose()
     }

@@ -97,17 +97,22 @@ fn missing_beside_comma(pieces: &[&str], k: usize, what: &str) -> Option<String>
 }
 
 /// Reads a condition `var = value[, var = value]` (such as `p_theta = 2*I*omega/3`), values
-/// parsed by `parse`.
+/// parsed by `parse`, which is given each value with the byte where it begins in `text` (so
+/// that what it says of the value points into the condition as typed).
 pub fn parse_condition(
     system: &System,
     text: &str,
-    parse: &dyn Fn(&str) -> Result<Expr, String>,
+    parse: &dyn Fn(&str, usize) -> Result<Expr, String>,
 ) -> Result<brackets::Condition, String> {
     let vars = system.vars();
     let mut subs = Vec::new();
     let mut shown = Vec::new();
     let pieces: Vec<&str> = text.split(',').collect();
+    // Where each piece begins in `text`, past the commas before it.
+    let mut start = 0;
     for (k, piece) in pieces.iter().enumerate() {
+        let at = start;
+        start += piece.len() + 1;
         if let Some(missing) = missing_beside_comma(&pieces, k, "a condition") {
             return Err(format!(
                 "{missing}: a condition reads `variable = value`, such as \
@@ -138,7 +143,8 @@ pub fn parse_condition(
                 trigpoly::quoted_name(lhs)
             ));
         };
-        let value = parse(rhs.trim())?;
+        let value_at = at + piece.len() - rhs.trim_start().len();
+        let value = parse(rhs.trim(), value_at)?;
         shown.push(format!(
             "{} = {}",
             vars.variable(v).unicode(),

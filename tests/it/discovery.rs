@@ -5835,9 +5835,9 @@ value = "p_x*p_y"
 #[test]
 fn a_built_in_system_warns_of_names_run_together() {
     // A built-in system's names are fixed: the advice is the product's, not to declare F1x.
-    let warning = "superint: warning: <command line>:1:1: 'F1x' is read as the product F1 x, \
-                   the function F1 with x after it: write 'F1 x' or 'F1*x' for the product\n";
-    let runs: [&[&str]; 3] = [
+    let warning = "'F1x' is read as the product F1 x, the function F1 with x after it: write \
+                   'F1 x' or 'F1*x' for the product\n";
+    let runs: [&[&str]; 4] = [
         &[
             "closure", "--system", "harmonic", "F1", "F2", "E", "--define", "E=F1x",
         ],
@@ -5860,11 +5860,22 @@ fn a_built_in_system_warns_of_names_run_together() {
             "--when",
             "x = F1x",
         ],
+        &[
+            "search",
+            "--system",
+            "harmonic",
+            "--momenta-degree",
+            "1",
+            "--when",
+            "x = 1,  y =  F1x",
+        ],
     ];
-    for args in runs {
+    // The column of the name in the text as typed: a condition's, not its value's.
+    for (args, column) in runs.into_iter().zip([1, 1, 5, 14]) {
         let o = superint(args);
         let stderr = String::from_utf8(o.stderr).expect("UTF-8");
-        assert!(stderr.starts_with(warning), "{args:?}: {stderr}");
+        let warning = format!("superint: warning: <command line>:1:{column}: {warning}");
+        assert!(stderr.starts_with(&warning), "{args:?}: {stderr}");
         // Once, however often the text is read.
         assert_eq!(
             stderr.matches("superint: warning:").count(),
