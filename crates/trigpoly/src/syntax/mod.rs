@@ -23,9 +23,10 @@ mod parser;
 
 pub use error::{Excerpt, ParseError, Span};
 pub use latex::latex_name;
-pub use parser::{
-    parse_expr, parse_expr_reading, Expr, ExprKind, Reading, LEFT_DEEP_SUM, MAX_DEPTH, MAX_HEIGHT,
-};
+pub use parser::{parse_expr, Expr, ExprKind, LEFT_DEEP_SUM, MAX_DEPTH, MAX_HEIGHT};
+// What the names read as, for the parser's refusals: the lowering's alone
+// (`Poly::parse_with`, `Poly::parse_tree`), so no part of the crate's interface.
+pub(crate) use parser::{parse_expr_reading, Reading};
 
 #[cfg(test)]
 mod tests {

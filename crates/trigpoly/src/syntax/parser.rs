@@ -142,13 +142,13 @@ pub fn parse_expr(src: &str) -> Result<Expr, ParseError> {
 /// # Errors
 ///
 /// Those of [`parse_expr`], in the same places.
-pub fn parse_expr_reading(src: &str, names: &dyn Reading) -> Result<Expr, ParseError> {
+pub(crate) fn parse_expr_reading(src: &str, names: &dyn Reading) -> Result<Expr, ParseError> {
     parse_source(src, names).map_err(|e| e.in_source(src))
 }
 
 /// What the names of an expression read as, which the parser, purely syntactic, asks only to
 /// word a refusal: the lowering reads them ([`crate::Poly::parse_with`]).
-pub trait Reading {
+pub(crate) trait Reading {
     /// Whether `name` before parentheses calls a function, `cos(θ)`, `sqrt(R)`, `Re(Z)`, rather
     /// than multiplies them, `M(x + y)`, `Re(x + y)` where the system declares `Re`.
     fn calls(&self, name: &str) -> bool;
