@@ -124,14 +124,7 @@ fn error_value(e: &FileError) -> serde_json::Value {
         .as_deref()
         .map_or(&[][..], Vec::as_slice)
         .iter()
-        .map(|w| {
-            serde_json::json!({
-                "file": w.origin,
-                "line": w.location.as_ref().map(|l| l.line),
-                "column": w.location.as_ref().map(|l| l.column),
-                "message": w.message,
-            })
-        })
+        .map(|w| json::warning(w, None))
         .collect();
     serde_json::json!({
         "file": e.origin,

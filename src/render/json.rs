@@ -168,6 +168,24 @@ pub fn value(report: &Report, options: &Options) -> Value {
     lists.document(report)
 }
 
+/// A warning as the JSON gives it, `{ "section", "file", "line", "column", "message" }`: a
+/// report's `warnings` with their `section`, and without one, those that `check`'s `errors`
+/// give of a file that did not load.
+pub fn warning(w: &crate::system_file::Warning, section: Option<u32>) -> Value {
+    let mut value = serde_json::Map::new();
+    if let Some(section) = section {
+        value.insert("section".into(), json!(section));
+    }
+    value.insert("file".into(), json!(w.origin));
+    value.insert("line".into(), json!(w.location.as_ref().map(|l| l.line)));
+    value.insert(
+        "column".into(),
+        json!(w.location.as_ref().map(|l| l.column)),
+    );
+    value.insert("message".into(), json!(w.message));
+    Value::Object(value)
+}
+
 /// The document's lists of claims, equations, tables, towers, proofs, ranks, searches and
 /// closures, filled entry by entry in the order of the report.
 struct Lists {
@@ -240,13 +258,7 @@ impl Lists {
             }
             Entry::Data(Facts::Search(f)) => self.searches.push(search(f, section)),
             Entry::Data(Facts::Closure(f)) => self.closures.push(closure(f, section)),
-            Entry::Warning(w) => self.warnings.push(json!({
-                "section": section,
-                "file": w.origin,
-                "line": w.location.as_ref().map(|l| l.line),
-                "column": w.location.as_ref().map(|l| l.column),
-                "message": w.message,
-            })),
+            Entry::Warning(w) => self.warnings.push(warning(w, Some(section))),
         }
     }
 
