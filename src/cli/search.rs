@@ -439,19 +439,32 @@ impl Subject {
     }
 
     /// [`Subject::parse`] of `src`, which begins at byte `at` of `text` (a value of a
-    /// condition): what it reads in doubt is placed in `text`, as typed.
+    /// condition): what it reads in doubt, and its error, are placed in `text`, as typed.
     fn parse_in(&self, text: &str, src: &str, at: usize) -> Result<Expr, String> {
         match self {
             Subject::File(f) => f.parse_argument(src).map_err(|e| e.to_string()),
             Subject::Builtin(_, s, noted) => {
-                let (e, readings) = Expr::parse_noting(s.vars(), src, s.as_ref())
-                    .map_err(|e| EngineError::parse(src, e).to_string())?;
+                // The value where it stands, after blanks as wide as what comes before it
+                // (its line breaks kept), so that each place said, the caret's and one in a
+                // message (`'(' opened at column 5`), is its place in `text`.
+                let blank: String = text[..at]
+                    .chars()
+                    .map(|c| if c == '\n' { c } else { ' ' })
+                    .collect();
+                let shift = at - blank.len();
+                let placed = blank + src;
+                let (e, readings) =
+                    Expr::parse_noting(s.vars(), &placed, s.as_ref()).map_err(|e| {
+                        let span = trigpoly::Span::new(shift + e.span.start, shift + e.span.end);
+                        EngineError::parse(text, trigpoly::ParseError::new(span, e.message))
+                            .to_string()
+                    })?;
                 let mut kept = lock(noted);
                 for r in &readings {
                     let w = Warning::run_together(
                         COMMAND_LINE,
                         text,
-                        at + r.span.start..at + r.span.end,
+                        shift + r.span.start..shift + r.span.end,
                         r,
                         &|p| s.display_name(p).to_string(),
                         // A built-in system's names are fixed: no advice to declare one.

@@ -5888,6 +5888,30 @@ fn a_built_in_system_warns_of_names_run_together() {
     }
 }
 
+/// A `--when` value of a built-in system that does not parse is refused at its place in the
+/// condition as typed, as a system file's is, the caret and a place the message names
+/// (`'(' opened at column 12`): they were counted from the value's start (column 3, opened at
+/// column 1).
+#[test]
+fn a_built_in_system_s_condition_error_points_into_the_condition() {
+    let err = superint_refused(&[
+        "search",
+        "--system",
+        "harmonic",
+        "--momenta-degree",
+        "1",
+        "--when",
+        "ω = 1, x = (1",
+    ]);
+    assert!(
+        err.starts_with(
+            "superint: error: --when: line 1, column 14: expected ')' to close '(' opened at \
+             column 12, found end of input\n  ω = 1, x = (1\n               ^\n"
+        ),
+        "{err}"
+    );
+}
+
 /// `search --new-only` where `H` lies past the space's degrees, so that no known integral is
 /// in it: the only integrals are constants, and the report said that the known integrals,
 /// `no named function`, generate every one.
