@@ -401,7 +401,7 @@ fn flow_kept(file: &LoadedSystem, condition: &Condition) -> Option<FlowKept> {
         None => Some(FlowKept::Kept),
         Some(left) => Some(FlowKept::Left(format!(
             "`{}` is not kept by the flow of `H` (`{{{}, H}} = {}` there): a zero is no \
-             conservation law",
+             conservation law.",
             condition.text, left.level, left.rate
         ))),
     }

@@ -5103,8 +5103,9 @@ fn bracket_at_a_condition_the_flow_leaves_says_so() {
          [phase_space]\ncoordinates = [\"x\"]\nparameters = [\"M\", \"omega\"]\n",
     )
     .expect("written");
+    // A sentence, as the report's other notes are.
     let note = "Note: x = 0 is not kept by the flow of H ({x, H} = p_x/M there): a zero is no \
-                conservation law\n";
+                conservation law.\n";
     let o = superint_in(
         &dir,
         &["bracket", "osc.toml", "x^2", "H", "--when", "x = 0"],
@@ -5124,7 +5125,7 @@ fn bracket_at_a_condition_the_flow_leaves_says_so() {
     assert_eq!(
         eq["flow_note"],
         "x = 0 is not kept by the flow of H ({x, H} = p_x/M there): a zero is no conservation \
-         law",
+         law.",
         "{eq}"
     );
     // A condition the flow keeps: no note; without one, no key.
