@@ -928,17 +928,24 @@ fn a_superscript_after_a_power_quotes_the_factor_raised() {
         ("p_xy^{2}{}^{3}", "'y^{2}'"),
         ("(Mω)^{2}{}^{3}", "'(Mω)^{2}'"),
     ] {
-        let err = Poly::<GaussianRational>::parse(&vars, src).expect_err(src);
-        assert!(
-            err.message.contains(&format!(
-                " after {base}, which has a superscript already, is ambiguous: "
-            )) && err
-                .message
-                .contains(&format!("; put {base} in parentheses for a power of it")),
-            "{src}: {}",
-            err.message
-        );
+        refused_quoting_the_power(&vars, src, base);
     }
+}
+
+/// Asserts that `src`, read with `vars`, is refused for a superscript after a power, quoting
+/// `base` as the factor the power raises.
+#[track_caller]
+fn refused_quoting_the_power(vars: &trigpoly::Vars, src: &str, base: &str) {
+    let err = Poly::<GaussianRational>::parse(vars, src).expect_err(src);
+    assert!(
+        err.message.contains(&format!(
+            " after {base}, which has a superscript already, is ambiguous: "
+        )) && err
+            .message
+            .contains(&format!("; put {base} in parentheses for a power of it")),
+        "{src}: {}",
+        err.message
+    );
 }
 
 /// A power of a function written before its argument in parentheses, `sin²(θ)`, takes a
@@ -1120,16 +1127,7 @@ fn a_superscript_after_a_power_of_a_declared_re_quotes_the_parentheses() {
         ("Re(y)^2²", "'(y)^2'", "'Re(y)^2'"),
     ] {
         for (vars, base) in [(&declared, product), (&parts, part)] {
-            let err = Poly::<GaussianRational>::parse(vars, src).expect_err(src);
-            assert!(
-                err.message.contains(&format!(
-                    " after {base}, which has a superscript already, is ambiguous: "
-                )) && err
-                    .message
-                    .contains(&format!("; put {base} in parentheses for a power of it")),
-                "{src}: {}",
-                err.message
-            );
+            refused_quoting_the_power(vars, src, base);
         }
     }
 }
