@@ -5837,41 +5837,17 @@ fn a_built_in_system_warns_of_names_run_together() {
     // A built-in system's names are fixed: the advice is the product's, not to declare F1x.
     let warning = "'F1x' is read as the product F1 x, the function F1 with x after it: write \
                    'F1 x' or 'F1*x' for the product\n";
-    let runs: [&[&str]; 4] = [
-        &[
+    let search = ["search", "--system", "harmonic", "--momenta-degree", "1"];
+    let runs: [Vec<&str>; 4] = [
+        vec![
             "closure", "--system", "harmonic", "F1", "F2", "E", "--define", "E=F1x",
         ],
-        &[
-            "search",
-            "--system",
-            "harmonic",
-            "--momenta-degree",
-            "1",
-            "--new-only",
-            "--known",
-            "F1x",
-        ],
-        &[
-            "search",
-            "--system",
-            "harmonic",
-            "--momenta-degree",
-            "1",
-            "--when",
-            "x = F1x",
-        ],
-        &[
-            "search",
-            "--system",
-            "harmonic",
-            "--momenta-degree",
-            "1",
-            "--when",
-            "x = 1,  y =  F1x",
-        ],
+        [&search[..], &["--new-only", "--known", "F1x"]].concat(),
+        [&search[..], &["--when", "x = F1x"]].concat(),
+        [&search[..], &["--when", "x = 1,  y =  F1x"]].concat(),
     ];
     // The column of the name in the text as typed: a condition's, not its value's.
-    for (args, column) in runs.into_iter().zip([1, 1, 5, 14]) {
+    for (args, column) in runs.iter().zip([1, 1, 5, 14]) {
         let o = superint(args);
         let stderr = String::from_utf8(o.stderr).expect("UTF-8");
         let warning = format!("superint: warning: <command line>:1:{column}: {warning}");
@@ -5894,15 +5870,7 @@ fn a_built_in_system_warns_of_names_run_together() {
 /// column 1).
 #[test]
 fn a_built_in_system_s_condition_error_points_into_the_condition() {
-    let err = superint_refused(&[
-        "search",
-        "--system",
-        "harmonic",
-        "--momenta-degree",
-        "1",
-        "--when",
-        "ω = 1, x = (1",
-    ]);
+    let err = superint_refused(&["search", "--system", "harmonic", "--when", "ω = 1, x = (1"]);
     assert!(
         err.starts_with(
             "superint: error: --when: line 1, column 14: expected ')' to close '(' opened at \
