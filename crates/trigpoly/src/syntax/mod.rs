@@ -423,6 +423,19 @@ mod tests {
                                 cos(θ)^2 for the square of cos θ"),
         ("sin theta^2", (1, 5), "'sin theta' followed by a power is ambiguous: write \
                                  sin²theta or sin(theta)^2 for the square of sin theta"),
+        ("cos θ^{2}", (1, 5), "'cos θ' followed by a power is ambiguous: write cos²θ or \
+                               cos(θ)^2 for the square of cos θ"),
+        // Another power is no square: both readings are written, as after a power of the
+        // function.
+        ("sin θ³", (1, 5), "'sin θ' followed by a power is ambiguous: write (sin θ)³ for a \
+                            power of sin θ, or sin(θ³) for sin of θ³"),
+        ("sin theta^2^3", (1, 5), "'sin theta' followed by a power is ambiguous: write \
+                                   (sin theta)^2^3 for a power of sin theta, or \
+                                   sin(theta^2^3) for sin of theta^2^3"),
+        ("\\cos\\varphi{}^{-1}", (1, 5), "'\\cos\\varphi' followed by a power is ambiguous: \
+                                         write (\\cos\\varphi)^{-1} for a power of \
+                                         \\cos\\varphi, or \\cos(\\varphi^{-1}) for \\cos \
+                                         of \\varphi^{-1}"),
         // A power of the angle after a power of its function: `(sin²θ)³` or `sin²(θ³)`.
         ("sin²θ^3", (1, 5), "'sin²θ' followed by a power is ambiguous: write (sin²θ)^3 for a \
                              power of sin²θ, or sin²(θ^3) for sin² of θ^3"),

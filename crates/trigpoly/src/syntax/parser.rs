@@ -480,9 +480,9 @@ impl Parser<'_> {
     fn caret_after_superscript(&mut self, lhs: &Expr) -> ParseError {
         let caret = self.tok.span;
         match self.exponent_after_caret() {
-            Ok(end) => self.after_superscript(
+            Ok(exponent) => self.after_superscript(
                 lhs,
-                Span::new(caret.start, end),
+                Span::new(caret.start, exponent.span.end),
                 "it may raise the power or its exponent",
             ),
             Err(missing) => missing,
@@ -490,16 +490,16 @@ impl Parser<'_> {
     }
 
     /// Consumes the `^` at the current token and parses its exponent, for a refusal of the
-    /// power that quotes them, returning where the exponent ends.
+    /// power that quotes them, returning the exponent.
     ///
     /// # Errors
     ///
     /// An exponent that is missing or does not parse, `r²^`, `r²^)`, `r²^{}`, is refused as
     /// after any other base (`r^`: `expected an expression after '^'`), since without one
     /// there is no power to be in doubt about.
-    fn exponent_after_caret(&mut self) -> PResult<usize> {
+    fn exponent_after_caret(&mut self) -> PResult<Expr> {
         self.bump()?;
-        Ok(self.expr(EXPONENT_BP)?.span.end)
+        self.expr(EXPONENT_BP)
     }
 
     /// The error for what stands at `span`, a superscript, after `lhs`, which has one already,
@@ -773,20 +773,8 @@ impl Parser<'_> {
             // `cos θ²` could be (cos θ)² or cos(θ²), and `cos²θ^3` (cos²θ)³ or cos²(θ³), as
             // LaTeX reads `\cos^2\theta^3`: neither is guessed.
             if matches!(self.tok.tok, Tok::Sup { .. } | Tok::Caret) {
-                if power.is_some() {
-                    return Err(self.power_of_bare_angle(span, arg_span));
-                }
-                let refused = ParseError::new(
-                    arg_span.to(self.tok.span),
-                    format!(
-                        "'{name} {arg}' followed by a power is ambiguous: write {name}²{arg} or \
-                         {name}({arg})^2 for the square of {name} {arg}"
-                    ),
-                );
-                if self.tok.tok == Tok::Caret {
-                    self.exponent_after_caret()?;
-                }
-                return Err(refused);
+                let unpowered = power.is_none().then_some((name.as_str(), arg.as_str()));
+                return Err(self.power_of_bare_angle(span, arg_span, unpowered));
             }
             let arg = Expr::new(ExprKind::Name(arg), arg_span);
             Expr::new(ExprKind::Call(name, span, vec![arg]), span.to(arg_span))
@@ -801,23 +789,43 @@ impl Parser<'_> {
         })
     }
 
-    /// The error for a power of the angle at `angle`, written without parentheses after a
-    /// power of the function whose name is at `name`: `sin²θ^3` could be `(sin²θ)³` or
-    /// `sin²(θ³)`, as LaTeX reads `\sin^2\theta^3`; the message writes both readings in the
-    /// source's own spelling (`(\sin^{2}\theta)^{3}`). A missing exponent, `sin²θ^`, is
-    /// refused as after any other base ([`Self::exponent_after_caret`]).
+    /// The error for a power of the angle at `angle`, written without parentheses after the
+    /// function whose name is at `name`, or after a power of it: `sin²θ^3` could be
+    /// `(sin²θ)³` or `sin²(θ³)`, as LaTeX reads `\sin^2\theta^3`, and `sin θ³` `(sin θ)³` or
+    /// `sin(θ³)`; the message writes both readings in the source's own spelling
+    /// (`(\sin^{2}\theta)^{3}`), but for the square of a function not raised, `unpowered`
+    /// (its name and angle), which it writes `sin²θ` or `sin(θ)^2`. A missing exponent,
+    /// `sin²θ^`, is refused as after any other base ([`Self::exponent_after_caret`]).
     #[cold]
-    fn power_of_bare_angle(&mut self, name: Span, angle: Span) -> ParseError {
+    fn power_of_bare_angle(
+        &mut self,
+        name: Span,
+        angle: Span,
+        unpowered: Option<(&str, &str)>,
+    ) -> ParseError {
         // The power as written from its own `^` or superscript: an empty group or a LaTeX space
         // before it, `\theta{}^{3}`, `θ\,^3`, is no part of the power the readings write.
         let start = self.tok.span.start;
-        let end = match self.tok.tok {
-            Tok::Sup { .. } => self.tok.span.end,
+        let two = BigInt::from(2);
+        let (end, square) = match &self.tok.tok {
+            Tok::Sup { value, negative } => (self.tok.span.end, !negative && *value == two),
             _ => match self.exponent_after_caret() {
-                Ok(end) => end,
+                Ok(e) => {
+                    let square = matches!(&e.kind, ExprKind::Integer(n) if *n == two);
+                    (e.span.end, square)
+                }
                 Err(missing) => return missing,
             },
         };
+        if let (Some((function, arg)), true) = (unpowered, square) {
+            return ParseError::new(
+                Span::new(angle.start, end),
+                format!(
+                    "'{function} {arg}' followed by a power is ambiguous: write {function}²{arg} \
+                     or {function}({arg})^2 for the square of {function} {arg}"
+                ),
+            );
+        }
         let function = self.src[name.start..angle.start].trim_end();
         let written = &self.src[name.start..angle.end];
         let arg = &self.src[angle.start..angle.end];
