@@ -117,6 +117,22 @@ fn command(rest: &str) -> Option<(&str, usize)> {
     Some((&after[..c.len_utf8()], c.len_utf8() + 1))
 }
 
+/// The token of a command that an expression reads as no name: an operator (`\cdot`), `\frac`,
+/// `\sqrt`, a brace of a bracket `\{ \}`, or a function (`\cos`, whose name it is); `None`
+/// for any other, a name's command (`\omega`, `\bar`) or an unknown one.
+fn command_token(word: &str) -> Option<Tok> {
+    Some(match word {
+        "{" => Tok::LBrace,
+        "}" => Tok::RBrace,
+        "cdot" | "times" | "ast" => Tok::Star,
+        "div" => Tok::Slash,
+        _ if FRACTIONS.contains(&word) => Tok::Frac,
+        "sqrt" => Tok::Sqrt,
+        "cos" | "sin" | "exp" | "Re" | "Im" => Tok::Name(word.to_string()),
+        _ => return None,
+    })
+}
+
 /// The error for a backslash at the end of the text, at `span`.
 fn no_command(span: Span) -> ParseError {
     ParseError::new(
@@ -189,19 +205,10 @@ impl Lexer<'_> {
         let Some((word, len)) = command(&self.src[start..]) else {
             return Err(no_command(Span::new(start, self.pos)));
         };
-        let tok = match word {
-            "{" => Tok::LBrace,
-            "}" => Tok::RBrace,
-            "cdot" | "times" | "ast" => Tok::Star,
-            "div" => Tok::Slash,
-            _ if FRACTIONS.contains(&word) => Tok::Frac,
-            "sqrt" => Tok::Sqrt,
-            "cos" | "sin" | "exp" | "Re" | "Im" => Tok::Name(word.to_string()),
-            _ => {
-                self.pos = start;
-                let name = self.latex_base()?;
-                return Ok(Tok::Name(self.name_rest(name, true)?));
-            }
+        let Some(tok) = command_token(word) else {
+            self.pos = start;
+            let name = self.latex_base()?;
+            return Ok(Tok::Name(self.name_rest(name, true)?));
         };
         self.pos = start + len;
         Ok(tok)
@@ -287,18 +294,27 @@ impl Lexer<'_> {
         name
     }
 
-    /// A subscript after its `_`: a group in braces, a command, or one letter or digit.
+    /// A subscript after its `_`: a group in braces, a command of a name, or one letter or
+    /// digit; a command that is no name's, `p_\frac`, `p_\,`, is refused as a character
+    /// that begins none is (a backslash alone, `p_\`, as after any other text).
     fn script(&mut self) -> Result<String, ParseError> {
         let start = self.pos;
-        match self.src[start..].chars().next() {
+        let rest = &self.src[start..];
+        let named = |(word, _): (&str, usize)| command_token(word).is_none();
+        let name_command = command(rest).is_none_or(named)
+            && Self::latex_space(rest, start).is_ok_and(|space| space.is_none());
+        match rest.chars().next() {
             Some('{') => self.group_at(start),
-            Some('\\') => self.latex_base(),
+            Some('\\') if name_command => self.latex_base(),
             Some(c) if c.is_alphanumeric() => {
                 self.pos += c.len_utf8();
                 Ok(c.to_string())
             }
             _ => {
-                let end = self.src[start..].chars().next().map_or(0, char::len_utf8);
+                let end = match command(rest) {
+                    Some((_, len)) => len,
+                    None => rest.chars().next().map_or(0, char::len_utf8),
+                };
                 let span = Span::new(start.saturating_sub(1), start + end);
                 Err(ParseError::new(
                     span,
@@ -361,7 +377,17 @@ impl Lexer<'_> {
                 '{' => out.push_str(&self.group_at(self.pos)?),
                 '\\' => match Self::latex_space(rest, self.pos)? {
                     Some(len) => self.pos += len,
-                    None => out.push_str(&self.latex_base()?),
+                    None => match command(rest) {
+                        // An operator, `\frac`, `\{`: no part of a name, as `/` is none.
+                        Some((word, len)) if command_token(word).is_some() => {
+                            let span = Span::new(self.pos, self.pos + len);
+                            return Err(ParseError::new(
+                                span,
+                                format!("unexpected '\\{word}' in a name's braces"),
+                            ));
+                        }
+                        _ => out.push_str(&self.latex_base()?),
+                    },
                 },
                 '+' | '-' | '\'' => {
                     self.pos += 1;

@@ -391,6 +391,13 @@ mod tests {
         ("\\frac{1}{2", (1, 11), "expected '}' to close '{' opened at column 9, found end of \
                                  input"),
         ("p_\\", (1, 3), "expected a LaTeX command after '\\', found end of input"),
+        // A command an expression reads as no name is none in a subscript or a name's braces.
+        ("p_\\frac{1}{2}", (1, 2), "expected a subscript after '_': a letter, a digit, or a \
+                                    name in braces, p_{x}"),
+        ("p_\\,x", (1, 2), "expected a subscript after '_': a letter, a digit, or a name in \
+                            braces, p_{x}"),
+        ("p_{\\cdot}", (1, 4), "unexpected '\\cdot' in a name's braces"),
+        ("\\bar{\\{x}", (1, 6), "unexpected '\\{' in a name's braces"),
         ("p_{x + 1", (1, 3), "the '{' of this name is never closed: expected '}'"),
         ("p_{x$}", (1, 5), "unexpected character '$' in a name's braces"),
         ("\\omega_ + 1", (1, 7), "expected a subscript after '_': a letter, a digit, or a name \
