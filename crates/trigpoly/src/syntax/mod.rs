@@ -85,6 +85,20 @@ mod tests {
         if let ExprKind::Call(_, name, _) = &e.kind {
             assert!(name.start == s.start && name.end < s.end, "{src:?}");
         }
+        // A power written between a function and its argument, `cos²θ`, `\cos^{2}\theta`,
+        // `sin²(θ)`, stands inside the call it raises, after the function's name.
+        if let ExprKind::Pow(base, exponent) = &e.kind {
+            if let ExprKind::Call(_, name, args) = &base.kind {
+                if exponent.span.start < base.span.end {
+                    let inside =
+                        name.end <= exponent.span.start && exponent.span.end <= args[0].span.start;
+                    assert!(inside, "{src:?}");
+                    check_spans(src, base, s);
+                    check_spans(src, exponent, s);
+                    return;
+                }
+            }
+        }
         let mut start = s.start;
         for kid in kids(e) {
             assert!(start <= kid.span.start, "{src:?}");
@@ -604,14 +618,17 @@ mod tests {
             state ^= state << 17;
             state
         };
-        // LaTeX's commands and what follows them, among the characters.
+        // LaTeX's commands and what follows them, superscripts, empty groups and functions
+        // raised before their angle, among the characters.
         let words: Vec<String> = alphabet
             .iter()
             .map(char::to_string)
             .chain(
                 [
                     r"\frac", r"\sqrt", r"\omega", r"\bar", r"\mathrm", r"\cos", r"\{", r"\}",
-                    r"\left(", r"\,", "_{", "^{", r"\foo", "'",
+                    r"\left(", r"\,", "_{", "^{", r"\foo", "'", "³", "⁻¹", "{}", "{}^", "{}²",
+                    "^{2}", r"\sin", r"\theta", r"\right)", "θ", "sin", "sin²", "cos³θ", "Re(",
+                    "Im(", "∂", "∇", "Mω", "e^{",
                 ]
                 .map(String::from),
             )

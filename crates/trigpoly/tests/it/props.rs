@@ -1183,3 +1183,189 @@ proptest! {
         );
     }
 }
+
+/// The pieces of the random texts the parser is fed: names of the phase space and names run
+/// together, numbers, operators and brackets of the plain syntax, superscripts, empty groups,
+/// Unicode functions (`sin²θ`), displays (`∂H`, `∇`), and LaTeX (`\sin^{2}\theta`, `{}^{3}`,
+/// `\frac{1}{2}`, `\partial`, spacing and sizing).
+#[rustfmt::skip]
+const PARSER_TOKENS: &[&str] = &[
+    "x", "y", "p_x", "p_y", "theta", "θ", "phi", "φ", "M", "omega", "ω", "Mω", "xy", "i", "Re",
+    "Im", "H", "0", "1", "2", "3", "10", "+", "-", "−", "*", "·", "/", "÷", "^", "**", "(", ")",
+    "{", "}", ",", "_", "'", " ", "²", "³", "⁻¹", "⁻", "¹", "⁰", "²³", "{}", "{}^", "{}²", "{ }³",
+    "^{2}", "^{-1}", "^{", "^2", "^-1", "sqrt(", "cos", "sin", "exp", "cos(", "sin(", "exp(",
+    "Re(", "Im(", "conj(", "sin²", "cos³θ", "sin²θ", "sin²(θ)", "e^{", "e^{iθ}", "∂", "∇", "∂H",
+    "(∂H)", "_{", "_{1,2}", r"\sin", r"\cos", r"\exp", r"\theta", r"\omega", r"\varphi", r"\phi",
+    r"\frac{1}{2}", r"\frac{", r"\tfrac", r"\sqrt{x}", r"\sqrt", r"\partial", r"\nabla",
+    r"\partial H", r"\sin^{2}", r"\sin^{2}\theta", "x^{2}{}^{3}", "Mω^{2}", "Mω^{2}{}^{3}",
+    r"\Re", r"\operatorname{Re}", r"\mathrm{i}", r"\bar{M}", r"\bar{}", r"p_{\theta}", r"\,",
+    r"\;", r"\quad", r"\left(", r"\right)", r"\left.", r"\left", r"\big(", r"\bigr)", r"\{",
+    r"\}", r"\cdot", r"\times", r"\", r"\unknown", "₁", "1e3", "0.5", "√", "½", "\u{feff}",
+];
+
+/// The factors of [`parser_text`]'s sums, in the plain syntax, in Unicode and in LaTeX.
+#[rustfmt::skip]
+const PARSER_FACTORS: &[&str] = &[
+    "x", "y", "p_x", "p_y", "θ", r"\theta", "phi", r"\varphi", "M", "ω", r"\omega", "Mω", "xy",
+    "i", r"\mathrm{i}", "2", "3", r"\frac{1}{2}", r"\frac{x}{M}", "Re(x)", "Im(y)",
+    r"\operatorname{Re}(x)", "Re", "sin θ", "cos(θ)", "sin²θ", "cos³θ", r"\sin^{2}\theta",
+    r"\cos\varphi", "sin²(θ)", "e^{iθ}", "exp(i*phi)", "conj(x)", r"\left(x + y\right)",
+    "(x - p_x)", r"p_{\theta}", r"\frac{p_{x}^{2}}{2 M}",
+];
+
+/// The powers of [`PARSER_FACTORS`], as the parser reads them, and two superscripts side by
+/// side (`^2²`, `²{}^{3}`), which it refuses as ambiguous.
+#[rustfmt::skip]
+const PARSER_POWERS: (&[&str], &[&str]) = (
+    &["^2", "²", "³", "⁻¹", "^{2}", "^{-1}", "{}^{2}", "{}²", "^(2)"],
+    &["^2²", "²^3", "²{}^{3}", "^{2}{}^{3}", "{}^{2}{}²"],
+);
+
+/// What stands between the factors of [`parser_text`]'s terms: nothing, a space or an
+/// operator.
+#[rustfmt::skip]
+const PARSER_JOINTS: &[&str] = &[
+    " ", " ", "", "*", " · ", r" \cdot ", r"\,", " + ", " - ", " − ", r" \times ", "/",
+];
+
+/// A factor of [`PARSER_FACTORS`] to a power of [`PARSER_POWERS`] or none.
+fn parser_factor() -> impl Strategy<Value = String> {
+    let power = prop_oneof![
+        8 => Just(""),
+        6 => proptest::sample::select(PARSER_POWERS.0),
+        1 => proptest::sample::select(PARSER_POWERS.1),
+    ];
+    (proptest::sample::select(PARSER_FACTORS), power).prop_map(|(a, p)| format!("{a}{p}"))
+}
+
+/// A sum of products of [`parser_factor`]s, the factors side by side or apart by an
+/// operator, a term in parentheses now and then, with a few of [`PARSER_TOKENS`] put in or
+/// a few characters taken out, so that it is well formed or one slip from it; or a text of
+/// up to twelve of [`PARSER_TOKENS`].
+fn parser_text() -> impl Strategy<Value = String> {
+    let joint = proptest::sample::select(PARSER_JOINTS);
+    let term = proptest::collection::vec((parser_factor(), joint), 1..4).prop_map(|factors| {
+        let mut text = String::new();
+        for (k, (factor, joint)) in factors.iter().enumerate() {
+            if k > 0 {
+                text.push_str(joint);
+            }
+            text.push_str(factor);
+        }
+        text
+    });
+    let expression = proptest::collection::vec((term, any::<bool>()), 1..4).prop_map(|terms| {
+        let terms: Vec<String> = terms
+            .into_iter()
+            .map(|(t, wrapped)| if wrapped { format!("({t})^2") } else { t })
+            .collect();
+        terms.join(" + ")
+    });
+    let index = any::<prop::sample::Index>;
+    let slip = (
+        proptest::collection::vec((index(), proptest::sample::select(PARSER_TOKENS)), 0..2),
+        proptest::option::weighted(0.3, (index(), 1usize..4)),
+    );
+    let slipped = (expression, slip).prop_map(|(mut text, (tokens, cut))| {
+        let places = |text: &str| -> Vec<usize> {
+            (0..=text.len())
+                .filter(|&k| text.is_char_boundary(k))
+                .collect()
+        };
+        for (at, token) in tokens {
+            text.insert_str(*at.get(&places(&text)), token);
+        }
+        if let Some((at, n)) = cut {
+            let places = places(&text);
+            let start = *at.get(&places);
+            let end = places
+                .iter()
+                .copied()
+                .filter(|&k| k >= start)
+                .nth(n)
+                .unwrap_or(text.len());
+            text.replace_range(start..end, "");
+        }
+        text
+    });
+    let soup = proptest::collection::vec(
+        (proptest::sample::select(PARSER_TOKENS), any::<bool>()),
+        1..12,
+    )
+    .prop_map(|pieces| {
+        pieces
+            .into_iter()
+            .map(|(token, spaced)| {
+                if spaced {
+                    format!("{token} ")
+                } else {
+                    token.to_string()
+                }
+            })
+            .collect()
+    });
+    prop_oneof![3 => slipped, 1 => soup]
+}
+
+/// The phase space of [`phase_space`], and the same with a parameter `Re`, with limits that
+/// refuse a large power at once (a power of a sum to a hundred, `(x - p_x)^102`, takes
+/// seconds in a debug build).
+fn parser_vars() -> &'static [trigpoly::Vars; 2] {
+    static VARS: std::sync::OnceLock<[trigpoly::Vars; 2]> = std::sync::OnceLock::new();
+    VARS.get_or_init(|| {
+        let build = |parameters: &[&str]| {
+            let builder = trigpoly::VarSet::builder()
+                .coordinate("x")
+                .coordinate("y")
+                .momentum("p_x")
+                .momentum("p_y")
+                .angle("theta")
+                .angle("phi")
+                .parameter("M")
+                .parameter("omega");
+            parameters
+                .iter()
+                .fold(builder, |b, name| b.parameter(name))
+                .limits(trigpoly::Limits {
+                    max_terms: 2_000,
+                    max_degree: 40,
+                    max_term_products: 200_000,
+                })
+                .build()
+                .expect("valid variable names")
+        };
+        [build(&[]), build(&["Re"])]
+    })
+}
+
+proptest! {
+    #![proptest_config(Config { cases: 1024, ..config() })]
+
+    /// The parser reads any text of its tokens to a tree or a refusal, never a panic, alone
+    /// and through the lowering (with `Re` a function and with `Re` declared), and a text it
+    /// reads to an element prints, in Unicode and in ASCII, to a text that reads back to it.
+    #[test]
+    fn any_text_of_the_parsers_tokens_reads_or_is_refused(text in parser_text()) {
+        if let Err(e) = trigpoly::syntax::parse_expr(&text) {
+            let _ = e.render(&text);
+        }
+        for vars in parser_vars() {
+            match G::parse(vars, &text) {
+                Ok(f) => {
+                    for shown in [f.to_string(), f.to_ascii()] {
+                        match G::parse(vars, &shown) {
+                            Ok(back) => prop_assert_eq!(&back, &f, "{} printed {}", text, shown),
+                            Err(e) => prop_assert!(false, "{} printed {}: {}", text, shown, e.render(&shown)),
+                        }
+                    }
+                }
+                Err(e) => {
+                    let _ = e.render(&text);
+                }
+            }
+            if let Err(e) = Q::parse(vars, &text) {
+                let _ = e.render(&text);
+            }
+        }
+    }
+}
