@@ -4,11 +4,12 @@
 Each case takes a file of systems/, changes one to three of its expressions (a value, a claim,
 the Hamiltonian; the TOML around them stays valid) by deleting a few characters, inserting a
 token (an operator, a bracket, a huge power, a division by zero, a family index, a radical, a
-large power of a sum), copying a piece of another expression, changing a digit or multiplying
-a side by a well-formed factor, and runs a command of superint on it. Every run must end with
-exit code 0 (proved), 1 (refuted) or 2 (an error, reported), never with a panic, and within
-the timeout: a hang is a failure too (it found a quadratic exact division and a quadratic line
-breaker, each minutes long on a result of 10^5 terms).
+large power of a sum, a superscript, a LaTeX command, an empty group), copying a piece of
+another expression, changing a digit or multiplying a side by a well-formed factor, and runs
+a command of superint on it. Every run must end with exit code 0 (proved), 1 (refuted) or 2
+(an error, reported), never with a panic, and within the timeout: a hang is a failure too (it
+found a quadratic exact division and a quadratic line breaker, each minutes long on a result
+of 10^5 terms).
 
     scripts/fuzz-systems.py --cases 300 --seed 1              # check, in every output format
     scripts/fuzz-systems.py --cases 300 --seed 1 --commands table,search,expand,bracket,rank,closure,tower
@@ -35,6 +36,16 @@ TOKENS = [
     "-", "+", "/(x-y)", "_{1,2}", "_{0,0}", "_{-1,2}", "_{100,100}", "  ", "é", "∂", "H", "{H, x}",
     "{x, {x, H}}", "(x+y)^200", "(1+x+y+p_x+p_y)^30", "sqrt(x)", "1/x", "x^(1/2)", "2/3", "ω", "θ",
     "|", "!", "..", "'",
+    # Superscripts, empty groups and LaTeX, which the parser reads beside the plain syntax (a
+    # backslash is escaped where a token goes into the file's string, `\\sin`).
+    "²", "³", "⁻¹", "⁻", "¹", "⁰", "²³", "⁻²", "{}", "{}^", "{}²", "{}^{2}", "{ }^{3}", "^{2}",
+    "^{-1}", "^{", "^2²", "²^3", r"\sin", r"\cos", r"\exp", r"\theta", r"\omega", r"\varphi",
+    r"\frac{1}{2}", r"\frac{", r"\tfrac", r"\sqrt{x}", r"\sqrt", r"\partial", r"\nabla", "∇",
+    r"\partial H", "(∂H)", "Re(", "Im(", r"\Re", r"\operatorname{Re}", r"\mathrm{i}", r"\bar{Z}",
+    r"\bar{}", "sin²", "cos³θ", "sin²θ", "sin²(θ)", r"\sin^{2}", r"\sin^{2}\theta", "x^{2}{}^{3}",
+    "Mω^{2}", "Mω^{2}{}^{3}", "e^{", "e^{iθ}", "_{", "_", r"p_{\theta}", r"\,", r"\;", r"\quad",
+    r"\left(", r"\right)", r"\left.", r"\left", r"\big(", r"\bigr)", r"\{", r"\}", r"\cdot",
+    r"\times", "·", "−", "÷", "**", "\\", r"\unknown", "₁", "1e3", "0.5", "√", "½",
 ]
 
 # Each command with the arguments it takes after the file.
@@ -73,7 +84,7 @@ def mutate(rng, text):
         if op < 0.25 and s:
             s = s[:at] + s[at + rng.randint(1, 6):]
         elif op < 0.6:
-            s = s[:at] + rng.choice(TOKENS) + s[at:]
+            s = s[:at] + rng.choice(TOKENS).replace("\\", "\\\\") + s[at:]
         elif op < 0.75:
             other = EXPRESSION.match(lines[rng.choice(places)]).group(2)
             start = rng.randrange(len(other) + 1)
