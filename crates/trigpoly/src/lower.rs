@@ -753,9 +753,10 @@ impl<C: Coefficient> Lower<'_, C> {
             }
         };
         if args.len() != 1 {
+            // As written: `Re takes one argument`, of the real part `re`.
             return Err(ParseError::new(
                 span,
-                format!("{fun} takes one argument, found {}", args.len()),
+                format!("{name} takes one argument, found {}", args.len()),
             ));
         }
         let arg = &args[0];

@@ -274,6 +274,14 @@ fn cases() -> Vec<Case> {
             (1, 1),
             "line 1, column 1: cos takes one argument, found 2\n  cos(theta, phi)\n  ^^^^^^^^^^^^^^^",
         ),
+        // The real part is named as written, Re as re.
+        case(
+            Qi,
+            "Re(x, y)",
+            "Re takes one argument, found 2",
+            (1, 1),
+            "line 1, column 1: Re takes one argument, found 2\n  Re(x, y)\n  ^^^^^^^^",
+        ),
         // sqrt is a function too: with two arguments it was an unknown one.
         case(
             Q,
