@@ -734,7 +734,10 @@ impl<C: Coefficient> Lower<'_, C> {
                 // Every function an expression may call, as an unknown one is told: the
                 // reserved names but `i` ([`FUNCTIONS`] and `sqrt`).
                 let called: Vec<&str> = RESERVED.iter().copied().filter(|&n| n != "i").collect();
-                let hint = match (did_you_mean(name, &called), name) {
+                // A declared name is no misspelled function: `Re(x, y)` where `Re` is a
+                // parameter is not the real part `re`.
+                let misspelled = did_you_mean(name, &called).filter(|_| !self.is_declared(name));
+                let hint = match (misspelled, name) {
                     (Some(k), _) => format!("; did you mean '{k}'?"),
                     (None, "tan" | "log" | "ln" | "atan" | "arctan" | "abs") => "; expressions \
                          are polynomials in the variables, in cos and sin of angles and in \

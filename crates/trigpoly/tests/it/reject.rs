@@ -1139,3 +1139,28 @@ fn a_superscript_after_a_power_of_a_declared_re_quotes_the_parentheses() {
         }
     }
 }
+
+/// A name the system declares, before parentheses with two arguments, is refused as a name
+/// that is no function, as `M(x, y)` is, with no guess at a function it misspells: `Re(x, y)`
+/// where `Re` is a parameter was asked whether it meant the real part `re`.
+#[test]
+fn a_declared_re_with_two_arguments_is_no_misspelled_part() {
+    let declared = VarSet::builder()
+        .coordinate("x")
+        .coordinate("y")
+        .parameter("Re")
+        .parameter("Cos")
+        .build()
+        .expect("valid variable names");
+    let known = "(known: cos, sin, exp, conj, re, im, sqrt)";
+    for name in ["Re", "Cos"] {
+        let src = format!("{name}(x, y)");
+        let err = Poly::<GaussianRational>::parse(&declared, &src).expect_err(&src);
+        assert_eq!(err.message, format!("unknown function '{name}' {known}"));
+    }
+    let err = Poly::<GaussianRational>::parse(&declared, "Sin(x, y)").expect_err("Sin");
+    assert_eq!(
+        err.message,
+        format!("unknown function 'Sin' {known}; did you mean 'sin'?")
+    );
+}
