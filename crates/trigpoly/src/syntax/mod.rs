@@ -405,6 +405,12 @@ mod tests {
         ("\\frac{1}{2", (1, 11), "expected '}' to close '{' opened at column 9, found end of \
                                  input"),
         ("p_\\", (1, 3), "expected a LaTeX command after '\\', found end of input"),
+        // A subscript after a power, as LaTeX may write it, or after no name, is refused as
+        // such (it read as a name `_1`, unknown).
+        ("x^{2}_{1}", (1, 6), "'_{1}' is a subscript with no name before it: a subscript \
+                               follows its name, before a power, as in x_{1}^{2}"),
+        ("x²_1 + 1", (1, 3), "'_1' is a subscript with no name before it: a subscript follows \
+                              its name, before a power, as in x_{1}^{2}"),
         // A command an expression reads as no name is none in a subscript or a name's braces.
         ("p_\\frac{1}{2}", (1, 2), "expected a subscript after '_': a letter, a digit, or a \
                                     name in braces, p_{x}"),

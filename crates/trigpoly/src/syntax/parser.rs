@@ -685,6 +685,16 @@ impl Parser<'_> {
         let Token { tok, span } = self.bump()?;
         self.height = 1;
         match tok {
+            // No name begins with `_`: this is a subscript after something else, as LaTeX
+            // writes one after a power, `x^{2}_{1}`, which read as the name `_1`.
+            Tok::Name(name) if name.starts_with('_') => Err(ParseError::new(
+                span,
+                format!(
+                    "{} is a subscript with no name before it: a subscript follows its name, \
+                     before a power, as in x_{{1}}^{{2}}",
+                    self.quote(span)
+                ),
+            )),
             Tok::Name(name) if self.tok.tok == Tok::LParen => self.call(name, span),
             Tok::Name(name) if name == "e" && self.braced_exponent_follows() => {
                 self.exponential(span)
