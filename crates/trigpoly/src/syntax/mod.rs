@@ -446,6 +446,12 @@ mod tests {
                                 product, or '/2*(…)' to divide by 2 alone"),
         ("x/y^2 z", (1, 3), "'/y^2 z' is ambiguous: write '/(y^2 z)' to divide by the \
                              product, or '/y^2*z' to divide by y^2 alone"),
+        // A function before its angle is quoted with it: `/(2 cos)` does not read.
+        ("p²/2 cos θ x", (1, 4), "'/2 cos θ' is ambiguous: write '/(2 cos θ)' to divide by the \
+                                  product, or '/2*cos θ' to divide by 2 alone"),
+        ("x/M \\sin^{2}\\theta", (1, 3), "'/M \\sin^{2}\\theta' is ambiguous: write \
+                                         '/(M \\sin^{2}\\theta)' to divide by the product, or \
+                                         '/M*\\sin^{2}\\theta' to divide by M alone"),
         ("cos θ² + 1", (1, 5), "'cos θ' followed by a power is ambiguous: write cos²θ or \
                                 cos(θ)^2 for the square of cos θ"),
         ("sin theta^2", (1, 5), "'sin theta' followed by a power is ambiguous: write \

@@ -248,14 +248,28 @@ impl Parser<'_> {
 
     /// Error for a factor written next to the divisor of a `/`, as in `p_x^2/2m`: the rules
     /// read it as `(p_x^2/2)·m`, a reader of physics as `p_x^2/(2m)`, so neither is guessed.
-    fn ambiguous_division(&self, divisor: Span) -> ParseError {
-        let written = &self.src[divisor.start..self.tok.span.end];
-        let divisor_text = &self.src[divisor.start..divisor.end];
-        let next = match self.tok.tok {
-            Tok::Name(_) | Tok::Int(_) => &self.src[self.tok.span.start..self.tok.span.end],
-            _ => "…",
+    /// A function before its angle, `p²/2 cos θ`, is quoted with it, the factor it is
+    /// (parsed as the juxtaposition's right side, at `right_bp`).
+    #[cold]
+    fn ambiguous_division(&mut self, divisor: Span, right_bp: u8) -> ParseError {
+        let (next_span, quoted) = match &self.tok.tok {
+            Tok::Name(name) if is_trig(name) => {
+                let start = self.tok.span;
+                match self.nested(start, |p| p.expr(right_bp)) {
+                    Ok(factor) => (Span::new(start.start, factor.span.end), true),
+                    Err(refused) => return refused,
+                }
+            }
+            Tok::Name(_) | Tok::Int(_) => (self.tok.span, true),
+            _ => (self.tok.span, false),
         };
-        let span = divisor.to(self.tok.span);
+        let written = &self.src[divisor.start..next_span.end];
+        let divisor_text = &self.src[divisor.start..divisor.end];
+        let next = match quoted {
+            true => &self.src[next_span.start..next_span.end],
+            false => "…",
+        };
+        let span = divisor.to(next_span);
         let message = if next == "…" {
             format!(
                 "'/{divisor_text}(…)' is ambiguous: write '/({divisor_text}(…))' to divide by \
@@ -331,7 +345,7 @@ impl Parser<'_> {
                     .is_some_and(|t| FRACTIONS.iter().any(|f| t.starts_with(f)));
                 let whole = (text.starts_with('(') && text.ends_with(')')) || fraction;
                 if !whole {
-                    return Err(self.ambiguous_division(divisor));
+                    return Err(self.ambiguous_division(divisor, op.right_bp));
                 }
             }
             height = self.rhs(op, &mut lhs, height)?;
