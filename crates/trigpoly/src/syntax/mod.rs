@@ -449,6 +449,17 @@ mod tests {
         // A function before its angle is quoted with it: `/(2 cos)` does not read.
         ("p²/2 cos θ x", (1, 4), "'/2 cos θ' is ambiguous: write '/(2 cos θ)' to divide by the \
                                   product, or '/2*cos θ' to divide by 2 alone"),
+        // So is any function before its arguments: `/(2 sqrt)` and `/(2 e)` do not read.
+        ("x/2 sqrt(x) y", (1, 3), "'/2 sqrt(x)' is ambiguous: write '/(2 sqrt(x))' to divide by \
+                                   the product, or '/2*sqrt(x)' to divide by 2 alone"),
+        ("x/2 Re(x)", (1, 3), "'/2 Re(x)' is ambiguous: write '/(2 Re(x))' to divide by the \
+                               product, or '/2*Re(x)' to divide by 2 alone"),
+        ("x/2 e^{iθ}", (1, 3), "'/2 e^{iθ}' is ambiguous: write '/(2 e^{iθ})' to divide by the \
+                                product, or '/2*e^{iθ}' to divide by 2 alone"),
+        ("x/2 \\operatorname{Re} (x)", (1, 3), "'/2 \\operatorname{Re} (x)' is ambiguous: \
+                                               write '/(2 \\operatorname{Re} (x))' to divide \
+                                               by the product, or '/2*\\operatorname{Re} (x)' \
+                                               to divide by 2 alone"),
         ("x/M \\sin^{2}\\theta", (1, 3), "'/M \\sin^{2}\\theta' is ambiguous: write \
                                          '/(M \\sin^{2}\\theta)' to divide by the product, or \
                                          '/M*\\sin^{2}\\theta' to divide by M alone"),

@@ -246,14 +246,24 @@ impl Parser<'_> {
         ))
     }
 
+    /// Whether the name `name` of the current token is called: parentheses follow it,
+    /// `sqrt(x)`, `Re(x)`, or, after `e`, a braced exponent, `e^{iθ}`.
+    fn call_follows(&self, name: &str) -> bool {
+        let rest = self.src[self.tok.span.end..].trim_start();
+        rest.starts_with('(')
+            || (name == "e"
+                && (rest.strip_prefix('^')).is_some_and(|r| r.trim_start().starts_with('{')))
+    }
+
     /// Error for a factor written next to the divisor of a `/`, as in `p_x^2/2m`: the rules
     /// read it as `(p_x^2/2)·m`, a reader of physics as `p_x^2/(2m)`, so neither is guessed.
-    /// A function before its angle, `p²/2 cos θ`, is quoted with it, the factor it is
-    /// (parsed as the juxtaposition's right side, at `right_bp`).
+    /// A function before its angle or its arguments, `p²/2 cos θ`, `x/2 sqrt(x)`,
+    /// `x/2 e^{iθ}`, is quoted with them, the factor it is (parsed as the juxtaposition's
+    /// right side, at `right_bp`).
     #[cold]
     fn ambiguous_division(&mut self, divisor: Span, right_bp: u8) -> ParseError {
         let (next_span, quoted) = match &self.tok.tok {
-            Tok::Name(name) if is_trig(name) => {
+            Tok::Name(name) if is_trig(name) || self.call_follows(name) => {
                 let start = self.tok.span;
                 match self.nested(start, |p| p.expr(right_bp)) {
                     Ok(factor) => (Span::new(start.start, factor.span.end), true),
