@@ -3971,7 +3971,7 @@ fn misspelled_names_point_to_the_known_ones() {
         ("OMEGA", "unknown name 'OMEGA'; did you mean 'omega'?"),
         (
             "Sin(theta)",
-            "unknown function 'Sin' (known: cos, sin, exp, conj, re, im, sqrt); did you mean 'sin'?",
+            "unknown function 'Sin' (known: cos, sin, exp, conj, Re, Im, sqrt); did you mean 'sin'?",
         ),
         (
             "sqrt(x^2 + y^2)",

@@ -732,8 +732,16 @@ impl<C: Coefficient> Lower<'_, C> {
             "sqrt" => name,
             _ => {
                 // Every function an expression may call, as an unknown one is told: the
-                // reserved names but `i` ([`FUNCTIONS`] and `sqrt`).
-                let called: Vec<&str> = RESERVED.iter().copied().filter(|&n| n != "i").collect();
+                // reserved names but `i` ([`FUNCTIONS`] and `sqrt`), the real and imaginary
+                // parts as they are typed and printed, `Re` and `Im`, where no declared name
+                // takes those spellings.
+                let typed = |n: &'static str| match n {
+                    "re" if self.is_function("Re") => "Re",
+                    "im" if self.is_function("Im") => "Im",
+                    _ => n,
+                };
+                let called: Vec<&str> =
+                    (RESERVED.iter().copied().filter(|&n| n != "i").map(typed)).collect();
                 // A declared name is no misspelled function: `Re(x, y)` where `Re` is a
                 // parameter is not the real part `re`.
                 let misspelled = did_you_mean(name, &called).filter(|_| !self.is_declared(name));

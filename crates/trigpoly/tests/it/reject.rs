@@ -139,9 +139,9 @@ fn cases() -> Vec<Case> {
         case(
             Qi,
             "sni(theta)",
-            "unknown function 'sni' (known: cos, sin, exp, conj, re, im, sqrt); did you mean 'sin'?",
+            "unknown function 'sni' (known: cos, sin, exp, conj, Re, Im, sqrt); did you mean 'sin'?",
             (1, 1),
-            "line 1, column 1: unknown function 'sni' (known: cos, sin, exp, conj, re, im, sqrt); did \
+            "line 1, column 1: unknown function 'sni' (known: cos, sin, exp, conj, Re, Im, sqrt); did \
              you mean 'sin'?\n  sni(theta)\n  ^^^",
         ),
         case(
@@ -251,20 +251,20 @@ fn cases() -> Vec<Case> {
         case(
             Qi,
             "tan(theta)",
-            "unknown function 'tan' (known: cos, sin, exp, conj, re, im, sqrt); expressions are \
+            "unknown function 'tan' (known: cos, sin, exp, conj, Re, Im, sqrt); expressions are \
              polynomials in the variables, in cos and sin of angles and in negative powers of \
              single terms",
             (1, 1),
-            "line 1, column 1: unknown function 'tan' (known: cos, sin, exp, conj, re, im, sqrt); \
+            "line 1, column 1: unknown function 'tan' (known: cos, sin, exp, conj, Re, Im, sqrt); \
              expressions are polynomials in the variables, in cos and sin of angles and in \
              negative powers of single terms\n  tan(theta)\n  ^^^",
         ),
         case(
             Qi,
             "Cos(theta)",
-            "unknown function 'Cos' (known: cos, sin, exp, conj, re, im, sqrt); did you mean 'cos'?",
+            "unknown function 'Cos' (known: cos, sin, exp, conj, Re, Im, sqrt); did you mean 'cos'?",
             (1, 1),
-            "line 1, column 1: unknown function 'Cos' (known: cos, sin, exp, conj, re, im, sqrt); did \
+            "line 1, column 1: unknown function 'Cos' (known: cos, sin, exp, conj, Re, Im, sqrt); did \
              you mean 'cos'?\n  Cos(theta)\n  ^^^",
         ),
         case(
@@ -293,10 +293,10 @@ fn cases() -> Vec<Case> {
         case(
             Q,
             "sqr(4)",
-            "unknown function 'sqr' (known: cos, sin, exp, conj, re, im, sqrt); did you mean \
+            "unknown function 'sqr' (known: cos, sin, exp, conj, Re, Im, sqrt); did you mean \
              'sqrt'?",
             (1, 1),
-            "line 1, column 1: unknown function 'sqr' (known: cos, sin, exp, conj, re, im, sqrt); \
+            "line 1, column 1: unknown function 'sqr' (known: cos, sin, exp, conj, Re, Im, sqrt); \
              did you mean 'sqrt'?\n  sqr(4)\n  ^^^",
         ),
         case(
@@ -1152,7 +1152,7 @@ fn a_declared_re_with_two_arguments_is_no_misspelled_part() {
         .parameter("Cos")
         .build()
         .expect("valid variable names");
-    let known = "(known: cos, sin, exp, conj, re, im, sqrt)";
+    let known = "(known: cos, sin, exp, conj, re, Im, sqrt)";
     for name in ["Re", "Cos"] {
         let src = format!("{name}(x, y)");
         let err = Poly::<GaussianRational>::parse(&declared, &src).expect_err(&src);
