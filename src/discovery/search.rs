@@ -894,15 +894,16 @@ impl Shared {
         restated: &[Option<Expr>],
     ) -> Entry {
         if self.shown.is_empty() {
-            // Where no known integral lies in the space (`H` past its degrees), what is left
-            // generated is the constants alone: not the known integrals, of which there are none.
-            let why = match &r.new {
-                Some(n) if n.known.is_empty() => {
-                    "None: no known integral lies in the space, and every integral in it is a \
-                     constant, which counts as generated."
-                }
-                Some(_) => "None: the known integrals generate every integral in the space.",
-                None => "None: the space holds no integral.",
+            // Only --new-only shows none: every space holds the constant 1 (each of its
+            // degrees counts from 0), an integral, so a basis or its generators are never
+            // empty. Where no known integral lies in the space (`H` past its degrees), what is
+            // left generated is the constants alone: not the known integrals, of which there
+            // are none.
+            let why = if r.new.as_ref().is_some_and(|n| n.known.is_empty()) {
+                "None: no known integral lies in the space, and every integral in it is a \
+                 constant, which counts as generated."
+            } else {
+                "None: the known integrals generate every integral in the space."
             };
             return Entry::Text(why.into());
         }
