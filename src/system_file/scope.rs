@@ -685,38 +685,59 @@ impl<'a> Scope<'a> {
     }
 
     /// The error for `e`, or, where it falls on a function's display name written in the text
-    /// (`Z̄`, `A_x`, `G1'`, as the reports print it), one that names the function to write.
+    /// (`Z̄`, `A_x`, `G1'`, as the reports print it, or its LaTeX, `\partial H`,
+    /// `\nabla\varphi`, as the LaTeX output does), one that names the function to write.
     fn display_error(&self, source: &Source, text: &Text, e: &ParseError) -> FileError {
-        let misread = ["unexpected character", "unknown name"];
+        let misread = [
+            "unexpected character",
+            "unknown name",
+            "unknown LaTeX command",
+        ];
         if !misread.iter().any(|m| e.message.starts_with(m)) {
             return expression_error(source, text, e);
         }
+        // The whole of a word (a coefficient may come before it): `Re A` and `2Re A`, not the
+        // start of `Re Ax`; a LaTeX form begins with its command whatever stands before it,
+        // `x\partial H`.
+        let word = |c: Option<char>| c.is_some_and(|c| c.is_alphanumeric() || c == '_');
+        let letter = |c: Option<char>| c.is_some_and(|c| c.is_alphabetic() || c == '_');
+        let value = &text.value;
+        let written_at = |form: &str| {
+            let at = (value.match_indices(form).map(|(k, _)| k)).find(|&k| {
+                let end = k + form.len();
+                k <= e.span.start
+                    && e.span.start < end
+                    && (form.starts_with('\\') || !letter(value[..k].chars().next_back()))
+                    && !word(value[end..].chars().next())
+            })?;
+            Some(Span::new(at, at + form.len()))
+        };
         let shown = self.file.system.functions().iter().find_map(|f| {
             if f.display == f.name || f.display.is_empty() {
                 return None;
             }
-            // The whole of a word (a coefficient may come before it): `Re A` and `2Re A`, not
-            // the start of `Re Ax`.
-            let word = |c: Option<char>| c.is_some_and(|c| c.is_alphanumeric() || c == '_');
-            let letter = |c: Option<char>| c.is_some_and(|c| c.is_alphabetic() || c == '_');
-            let value = &text.value;
-            let at = (value.match_indices(f.display.as_str()).map(|(k, _)| k)).find(|&k| {
-                let end = k + f.display.len();
-                k <= e.span.start
-                    && e.span.start < end
-                    && !letter(value[..k].chars().next_back())
-                    && !word(value[end..].chars().next())
-            })?;
-            Some((Span::new(at, at + f.display.len()), f))
+            let latex = brackets::table::latex_name(&f.display);
+            // The LaTeX as printed, `\nabla\varphi`, or with its commands apart.
+            let spaced = latex.replace('\\', " \\").trim().to_string();
+            for (form, printed) in [
+                (&f.display, &f.display),
+                (&latex, &latex),
+                (&spaced, &latex),
+            ] {
+                if let Some(span) = written_at(form) {
+                    return Some((span, printed.clone(), f));
+                }
+            }
+            None
         });
         match shown {
-            Some((span, f)) => text.error(
+            Some((span, form, f)) => text.error(
                 source,
                 ErrorKind::Expression,
                 span,
                 format!(
-                    "'{}' is how the function {} is printed; an expression names it {}",
-                    f.display, f.name, f.name
+                    "'{form}' is how the function {} is printed; an expression names it {}",
+                    f.name, f.name
                 ),
             ),
             None => expression_error(source, text, e),

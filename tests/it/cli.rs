@@ -1300,6 +1300,58 @@ fn cli_a_display_name_in_an_expression_names_the_function() {
     assert!(stderr(&o).contains("unknown name 'Re'"), "{}", stderr(&o));
 }
 
+/// A system whose functions display as no name, `∂H` and `∇φ` (in LaTeX `\partial H` and
+/// `\nabla\varphi`), for the refusals of a display typed in an expression.
+fn differential_displays() -> std::path::PathBuf {
+    crate::scratch_text(
+        "differential-displays",
+        "d.toml",
+        "name = \"oscillator\"\nhamiltonian = \"(p_x^2 + p_y^2)/2 + (x^2 + y^2)/2\"\n\
+         [phase_space]\ncoordinates = [\"x\", \"y\"]\n\
+         [[function]]\nname = \"dH\"\ndisplay = \"∂H\"\nvalue = \"x*p_x + y*p_y\"\n\
+         [[function]]\nname = \"nf\"\ndisplay = \"∇φ\"\nvalue = \"x\"\n",
+    )
+}
+
+/// A function's display typed in LaTeX, as the LaTeX output prints it (`\partial H`,
+/// `\nabla\varphi`), is said to be one, with the name to write, as its text form `∂H` is: it
+/// was an unknown LaTeX command '\partial'. It is not read as the function. A command that
+/// only begins one (`\partial Hx`) keeps its own message.
+#[test]
+fn cli_a_display_in_latex_in_an_expression_names_the_function() {
+    let file = differential_displays();
+    let file = file.to_str().expect("a UTF-8 path");
+    for (expr, column, printed, name, caret) in [
+        (r"\partial H", 1, r"\partial H", "dH", "^^^^^^^^^^"),
+        (r"2\partial H^2", 2, r"\partial H", "dH", " ^^^^^^^^^^"),
+        (r"\nabla\varphi", 1, r"\nabla\varphi", "nf", "^^^^^^^^^^^^^"),
+        (
+            r"\nabla \varphi",
+            1,
+            r"\nabla\varphi",
+            "nf",
+            "^^^^^^^^^^^^^^",
+        ),
+    ] {
+        let o = superint(&["expand", file, "--", expr]);
+        assert_eq!(o.status.code(), Some(2), "{expr}");
+        assert_eq!(
+            stderr(&o),
+            format!(
+                "superint: error: <command line>:1:{column}: '{printed}' is how the function \
+                 {name} is printed; an expression names it {name}\n 1 | {expr}\n   | {caret}\n"
+            ),
+            "{expr}"
+        );
+    }
+    let o = superint(&["expand", file, r"\partial Hx"]);
+    assert!(
+        stderr(&o).contains(r"unknown LaTeX command '\partial'"),
+        "{}",
+        stderr(&o)
+    );
+}
+
 /// A family's index may be written with leading zeros, which do not count toward its nine
 /// digits: `K_{0000000000001,1}` is `K_{1,1}` (it was refused as an index too long).
 #[test]
