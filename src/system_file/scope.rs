@@ -685,7 +685,7 @@ impl<'a> Scope<'a> {
     }
 
     /// The error for `e`, or, where it falls on a function's display name written in the text
-    /// (`Z̄`, `A_x`, `G1'`, as the reports print it, or its LaTeX, `\partial H`,
+    /// (`Z̄`, `A_x`, `G1'`, `∂H²`, as the reports print it, or its LaTeX, `\partial H`,
     /// `\nabla\varphi`, as the LaTeX output does), one that names the function to write.
     fn display_error(&self, source: &Source, text: &Text, e: &ParseError) -> FileError {
         let misread = [
@@ -696,10 +696,12 @@ impl<'a> Scope<'a> {
         if !misread.iter().any(|m| e.message.starts_with(m)) {
             return expression_error(source, text, e);
         }
-        // The whole of a word (a coefficient may come before it): `Re A` and `2Re A`, not the
-        // start of `Re Ax`; a LaTeX form begins with its command whatever stands before it,
-        // `x\partial H`.
-        let word = |c: Option<char>| c.is_some_and(|c| c.is_alphanumeric() || c == '_');
+        // The whole of a word (a coefficient may come before it, and a power after it): `Re A`,
+        // `2Re A` and `∂H²`, not the start of `Re Ax`; a LaTeX form begins with its command
+        // whatever stands before it, `x\partial H`.
+        let word = |c: Option<char>| {
+            c.is_some_and(|c| (c.is_alphanumeric() && !is_superscript(c)) || c == '_')
+        };
         let letter = |c: Option<char>| c.is_some_and(|c| c.is_alphabetic() || c == '_');
         let value = &text.value;
         let written_at = |form: &str| {
@@ -1111,6 +1113,11 @@ pub(crate) fn mention(tree: &Tree, name: &str) -> Option<Span> {
     tree.names()
         .into_iter()
         .find_map(|(n, span)| (n == name).then_some(span))
+}
+
+/// Whether `c` is a superscript digit, a power written after a name (`∂H²`).
+fn is_superscript(c: char) -> bool {
+    matches!(c, '⁰' | '¹' | '²' | '³' | '⁴' | '⁵' | '⁶' | '⁷' | '⁸' | '⁹')
 }
 
 #[cfg(test)]

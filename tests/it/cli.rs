@@ -1352,6 +1352,24 @@ fn cli_a_display_in_latex_in_an_expression_names_the_function() {
     );
 }
 
+/// A function's display with a power after it, `∂H²`, is said to be one, as `∂H^2` is: it was
+/// an unexpected character '∂', the superscript taken for a letter of a longer word.
+#[test]
+fn cli_a_display_raised_by_a_superscript_names_the_function() {
+    let file = differential_displays();
+    let file = file.to_str().expect("a UTF-8 path");
+    for expr in ["∂H²", "x + ∂H³ y", "∂H^2"] {
+        let o = superint(&["expand", file, "--", expr]);
+        assert_eq!(o.status.code(), Some(2), "{expr}");
+        assert!(
+            stderr(&o)
+                .contains("'∂H' is how the function dH is printed; an expression names it dH"),
+            "{expr}: {}",
+            stderr(&o)
+        );
+    }
+}
+
 /// A family's index may be written with leading zeros, which do not count toward its nine
 /// digits: `K_{0000000000001,1}` is `K_{1,1}` (it was refused as an index too long).
 #[test]
