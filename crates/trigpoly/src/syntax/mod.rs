@@ -480,6 +480,17 @@ mod tests {
                                          write (\\cos\\varphi)^{-1} for a power of \
                                          \\cos\\varphi, or \\cos(\\varphi^{-1}) for \\cos \
                                          of \\varphi^{-1}"),
+        // Two superscripts after the function, side by side, show as one.
+        ("sin² ²θ", (1, 6), "'²' after 'sin²', which has a superscript already, is ambiguous: \
+                             the two superscripts show side by side, as one; write the exponent \
+                             in one group"),
+        ("sin²{}²θ", (1, 5), "'{}²' after 'sin²', which has a superscript already, is \
+                              ambiguous: the two superscripts show side by side, as one; write \
+                              the exponent in one group"),
+        ("\\sin^{2}{}^{3}\\theta", (1, 9), "'{}^{3}' after '\\sin^{2}', which has a \
+                                            superscript already, is ambiguous: LaTeX sets the \
+                                            two superscripts side by side, as one; write the \
+                                            exponent in one group"),
         // A power of the angle after a power of its function: `(sin²θ)³` or `sin²(θ³)`.
         ("sin²θ^3", (1, 5), "'sin²θ' followed by a power is ambiguous: write (sin²θ)^3 for a \
                              power of sin²θ, or sin²(θ^3) for sin² of θ^3"),

@@ -476,11 +476,18 @@ impl Parser<'_> {
     /// as `x²²`, which no reading should guess.
     #[cold]
     fn superscript_after_superscript(&self, lhs: &Expr) -> ParseError {
+        let (span, set) = self.second_superscript();
+        self.after_superscript(lhs, span, set)
+    }
+
+    /// Where the superscript at the current token stands, a superscript character or one on
+    /// an empty group, after one already, and how the two read together.
+    fn second_superscript(&self) -> (Span, &'static str) {
         // The quote starts at the empty group that carries the superscript, if one does:
         // `{}^{3}`, `{}²`.
         let after = self.prev.map_or(self.tok.span.start, |p| p.end);
         let open = self.src[after..self.tok.span.start].find('{');
-        let (span, set) = match self.tok.tok {
+        match self.tok.tok {
             Tok::Sup { .. } => (
                 Span::new(
                     open.map_or(self.tok.span.start, |k| after + k),
@@ -493,8 +500,7 @@ impl Parser<'_> {
                 let span = Span::new(open, script_end(self.src, self.tok.span.end));
                 (span, "LaTeX sets the two superscripts side by side, as one")
             }
-        };
-        self.after_superscript(lhs, span, set)
+        }
     }
 
     /// The error for a `^` after `lhs`, which ends in a superscript character, `r²^3`: the
@@ -783,6 +789,23 @@ impl Parser<'_> {
             }
             _ => None,
         };
+        // `sin² ²θ` and `\sin^{2}{}^{3}\theta` show as one exponent, `sin²²θ`: neither is
+        // guessed, as after any other power (no parentheses hold `sin²` alone).
+        if let Some(exponent) = &power {
+            let grouped = self.src[exponent.span.end..self.tok.span.start].contains('{');
+            if matches!(self.tok.tok, Tok::Sup { .. }) || (self.tok.tok == Tok::Caret && grouped) {
+                let (second, set) = self.second_superscript();
+                return Err(ParseError::new(
+                    second,
+                    format!(
+                        "{} after {}, which has a superscript already, is ambiguous: {set}; \
+                         write the exponent in one group",
+                        self.quote(second),
+                        self.quote(Span::new(span.start, exponent.span.end)),
+                    ),
+                ));
+            }
+        }
         let call = if self.tok.tok == Tok::LParen {
             self.call(name, span)?
         } else {
