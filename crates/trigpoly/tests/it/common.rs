@@ -4,7 +4,9 @@
 use std::sync::OnceLock;
 
 use num_bigint::BigInt;
-use trigpoly::{Coefficient, GaussianRational, Integer, Poly, Rational, Var, VarSet, Vars};
+use trigpoly::{
+    Coefficient, GaussianRational, Integer, Poly, Rational, Var, VarSet, VarSetBuilder, Vars,
+};
 
 /// Polynomials over Q(i).
 pub type G = Poly<GaussianRational>;
@@ -14,20 +16,22 @@ pub type Q = Poly<Rational>;
 /// The phase space of the property tests: `x, y, p_x, p_y, θ, φ, M, ω` (two angles).
 pub fn phase_space() -> Vars {
     static VARS: OnceLock<Vars> = OnceLock::new();
-    VARS.get_or_init(|| {
-        VarSet::builder()
-            .coordinate("x")
-            .coordinate("y")
-            .momentum("p_x")
-            .momentum("p_y")
-            .angle("theta")
-            .angle("phi")
-            .parameter("M")
-            .parameter("omega")
-            .build()
-            .expect("valid variable names")
-    })
-    .clone()
+    VARS.get_or_init(|| phase_space_builder().build().expect("valid variable names"))
+        .clone()
+}
+
+/// The builder of [`phase_space`], for a phase space like it with more parameters or other
+/// limits.
+pub fn phase_space_builder() -> VarSetBuilder {
+    VarSet::builder()
+        .coordinate("x")
+        .coordinate("y")
+        .momentum("p_x")
+        .momentum("p_y")
+        .angle("theta")
+        .angle("phi")
+        .parameter("M")
+        .parameter("omega")
 }
 
 /// The plane `x, y, p_x, p_y, θ, M, ω` (coordinates declared before momenta), then the

@@ -1314,15 +1314,7 @@ fn parser_vars() -> &'static [trigpoly::Vars; 2] {
     static VARS: std::sync::OnceLock<[trigpoly::Vars; 2]> = std::sync::OnceLock::new();
     VARS.get_or_init(|| {
         let build = |parameters: &[&str]| {
-            let builder = trigpoly::VarSet::builder()
-                .coordinate("x")
-                .coordinate("y")
-                .momentum("p_x")
-                .momentum("p_y")
-                .angle("theta")
-                .angle("phi")
-                .parameter("M")
-                .parameter("omega");
+            let builder = crate::common::phase_space_builder();
             parameters
                 .iter()
                 .fold(builder, |b, name| b.parameter(name))
