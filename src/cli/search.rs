@@ -7,7 +7,6 @@ use std::path::PathBuf;
 use super::input::load_system;
 use anyhow::{anyhow, bail, Context};
 use brackets::search::{SearchOptions, SearchSpace, DEFAULT_MAX_PRODUCTS};
-use brackets::EngineError;
 use brackets::System;
 use clap::Args;
 use std::sync::{Mutex, MutexGuard};
@@ -17,8 +16,8 @@ use superint::discovery::{
 };
 use superint::render::render;
 use superint::report::{with_article, Report};
-use superint::system_file::Warning;
 use superint::system_file::{what_is, BadName, Caller, LoadedSystem};
+use superint::system_file::{ErrorKind, FileError, Warning};
 use trigpoly::{Expr, VarKind};
 
 /// How a warning names the command line's texts, as a file's does.
@@ -453,10 +452,12 @@ impl Subject {
                     .collect();
                 let shift = at - blank.len();
                 let placed = blank + src;
+                // An error is rendered as a file's command-line text's is, and as the
+                // warnings below are: `<command line>:1:5:`, then the numbered line.
                 let (e, readings) =
                     Expr::parse_noting(s.vars(), &placed, s.as_ref()).map_err(|e| {
-                        let span = trigpoly::Span::new(shift + e.span.start, shift + e.span.end);
-                        EngineError::parse(text, trigpoly::ParseError::new(span, e.message))
+                        let span = shift + e.span.start..shift + e.span.end;
+                        FileError::at(ErrorKind::Expression, COMMAND_LINE, text, span, e.message)
                             .to_string()
                     })?;
                 let mut kept = lock(noted);

@@ -5867,14 +5867,14 @@ fn a_built_in_system_warns_of_names_run_together() {
 /// A `--when` value of a built-in system that does not parse is refused at its place in the
 /// condition as typed, as a system file's is, the caret and a place the message names
 /// (`'(' opened at column 12`): they were counted from the value's start (column 3, opened at
-/// column 1).
+/// column 1). It is written as a file's is, `<command line>:1:14:` and the numbered line.
 #[test]
 fn a_built_in_system_s_condition_error_points_into_the_condition() {
     let err = superint_refused(&["search", "--system", "harmonic", "--when", "ω = 1, x = (1"]);
     assert!(
         err.starts_with(
-            "superint: error: --when: line 1, column 14: expected ')' to close '(' opened at \
-             column 12, found end of input\n  ω = 1, x = (1\n               ^\n"
+            "superint: error: --when: <command line>:1:14: expected ')' to close '(' opened \
+             at column 12, found end of input\n 1 | ω = 1, x = (1\n   |              ^\n"
         ),
         "{err}"
     );
@@ -5914,7 +5914,8 @@ fn new_only_with_no_known_integral_in_the_space_says_the_constants_are_all() {
 
 /// A closure's generator that does not read says what is wrong first, at its place, as
 /// `bracket` does: the message began with the generator, `'Foo': <command line>:1:1: unknown
-/// name 'Foo'`, which its excerpt shows below anyway.
+/// name 'Foo'`, which its excerpt shows below anyway. A built-in system's says it as a file's
+/// does, with the numbered line: it said `line 1, column 1:` with an unnumbered one.
 #[test]
 fn a_closure_generator_that_does_not_read_says_what_is_wrong_first() {
     let file = superint_refused(&["closure", "systems/harmonic-rotor.toml", "L", "Foo"]);
@@ -5926,7 +5927,10 @@ fn a_closure_generator_that_does_not_read_says_what_is_wrong_first() {
     assert_eq!(file.lines().next(), bracket.lines().next());
     let built_in = superint_refused(&["closure", "--system", "harmonic", "L", "Foo"]);
     assert!(
-        built_in.starts_with("superint: error: line 1, column 1: unknown name 'Foo' (known:"),
+        built_in.starts_with("superint: error: <command line>:1:1: unknown name 'Foo' (known:"),
         "{built_in}"
     );
+    // With the same numbered line and caret.
+    assert_eq!(built_in.lines().nth(1), Some(" 1 | Foo"), "{built_in}");
+    assert_eq!(built_in.lines().nth(2), file.lines().nth(2), "{built_in}");
 }
