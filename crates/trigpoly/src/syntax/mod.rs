@@ -491,6 +491,15 @@ mod tests {
                                             superscript already, is ambiguous: LaTeX sets the \
                                             two superscripts side by side, as one; write the \
                                             exponent in one group"),
+        // A `^` after the function's superscript character may raise the power or its
+        // exponent, as after `r²`; it was taken for `sin^2 theta`.
+        ("sin²^3θ", (1, 5), "'^3' after 'sin²', which has a superscript already, is \
+                             ambiguous: it may raise the power or its exponent; write the \
+                             exponent in one group"),
+        ("cos³^{2}(θ)", (1, 5), "'^{2}' after 'cos³', which has a superscript already, is \
+                                 ambiguous: it may raise the power or its exponent; write the \
+                                 exponent in one group"),
+        ("sin²^", (1, 6), "expected an expression after '^', found end of input"),
         // A power of the angle after a power of its function: `(sin²θ)³` or `sin²(θ³)`.
         ("sin²θ^3", (1, 5), "'sin²θ' followed by a power is ambiguous: write (sin²θ)^3 for a \
                              power of sin²θ, or sin²(θ^3) for sin² of θ^3"),

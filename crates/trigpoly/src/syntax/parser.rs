@@ -780,6 +780,7 @@ impl Parser<'_> {
     /// Parses `cos θ` or `cos²θ` (a power written between the function and its argument), as
     /// the text form prints them.
     fn trig_without_parens(&mut self, name: String, span: Span) -> PResult<Expr> {
+        let raised = matches!(self.tok.tok, Tok::Sup { .. });
         let power = match self.tok.tok {
             Tok::Sup { .. } => Some(self.superscript()?),
             // `\cos^{3}\theta`, as LaTeX writes a power of it.
@@ -792,18 +793,20 @@ impl Parser<'_> {
         // `sin² ²θ` and `\sin^{2}{}^{3}\theta` show as one exponent, `sin²²θ`: neither is
         // guessed, as after any other power (no parentheses hold `sin²` alone).
         if let Some(exponent) = &power {
+            let function = Span::new(span.start, exponent.span.end);
             let grouped = self.src[exponent.span.end..self.tok.span.start].contains('{');
             if matches!(self.tok.tok, Tok::Sup { .. }) || (self.tok.tok == Tok::Caret && grouped) {
                 let (second, set) = self.second_superscript();
-                return Err(ParseError::new(
-                    second,
-                    format!(
-                        "{} after {}, which has a superscript already, is ambiguous: {set}; \
-                         write the exponent in one group",
-                        self.quote(second),
-                        self.quote(Span::new(span.start, exponent.span.end)),
-                    ),
-                ));
+                return Err(self.after_raised_function(function, second, set));
+            }
+            // A `^` after a superscript character, `sin²^3θ`, may raise the power, (sin²)³,
+            // or its exponent, sin^(2³), as after `r²^3`: neither is guessed.
+            if raised && self.tok.tok == Tok::Caret {
+                let caret = self.tok.span;
+                let power = self.exponent_after_caret()?;
+                let second = Span::new(caret.start, power.span.end);
+                let set = "it may raise the power or its exponent";
+                return Err(self.after_raised_function(function, second, set));
             }
         }
         let call = if self.tok.tok == Tok::LParen {
@@ -844,6 +847,21 @@ impl Parser<'_> {
                 Expr::new(ExprKind::Pow(Box::new(call), Box::new(exponent)), whole)
             }
         })
+    }
+
+    /// The error for the superscript at `second` after the function raised at `function`,
+    /// `sin²`, which has one already, `set` saying how the two read together: no parentheses
+    /// hold `sin²` alone, so the advice is to write the exponent in one group.
+    fn after_raised_function(&self, function: Span, second: Span, set: &str) -> ParseError {
+        ParseError::new(
+            second,
+            format!(
+                "{} after {}, which has a superscript already, is ambiguous: {set}; write the \
+                 exponent in one group",
+                self.quote(second),
+                self.quote(function),
+            ),
+        )
     }
 
     /// The error for a power of the angle at `angle`, written without parentheses after the
