@@ -190,6 +190,10 @@ fn parse_source(src: &str, names: &dyn Reading) -> Result<Expr, ParseError> {
     }
 }
 
+/// How a `^` after a superscript character reads with it, `r²^3` or `sin²^3θ`, in the
+/// refusals of [`Parser::caret_after_superscript`] and [`Parser::trig_without_parens`].
+const RAISES_EITHER: &str = "it may raise the power or its exponent";
+
 /// Parser state: the current (not yet consumed) token and the span of the previous one.
 struct Parser<'a> {
     src: &'a str,
@@ -508,15 +512,19 @@ impl Parser<'_> {
     /// `r^` is ([`Self::exponent_after_caret`]).
     #[cold]
     fn caret_after_superscript(&mut self, lhs: &Expr) -> ParseError {
-        let caret = self.tok.span;
-        match self.exponent_after_caret() {
-            Ok(exponent) => self.after_superscript(
-                lhs,
-                Span::new(caret.start, exponent.span.end),
-                "it may raise the power or its exponent",
-            ),
+        match self.caret_and_exponent() {
+            Ok(second) => self.after_superscript(lhs, second, RAISES_EITHER),
             Err(missing) => missing,
         }
+    }
+
+    /// Consumes the `^` at the current token and its exponent, after a superscript character
+    /// (`r²^3`, `sin²^3θ`), returning the span the refusal quotes, from the `^` to the end of
+    /// the exponent ([`Self::exponent_after_caret`], whose errors are this one's).
+    fn caret_and_exponent(&mut self) -> PResult<Span> {
+        let caret = self.tok.span;
+        let exponent = self.exponent_after_caret()?;
+        Ok(Span::new(caret.start, exponent.span.end))
     }
 
     /// Consumes the `^` at the current token and parses its exponent, for a refusal of the
@@ -802,11 +810,8 @@ impl Parser<'_> {
             // A `^` after a superscript character, `sin²^3θ`, may raise the power, (sin²)³,
             // or its exponent, sin^(2³), as after `r²^3`: neither is guessed.
             if raised && self.tok.tok == Tok::Caret {
-                let caret = self.tok.span;
-                let power = self.exponent_after_caret()?;
-                let second = Span::new(caret.start, power.span.end);
-                let set = "it may raise the power or its exponent";
-                return Err(self.after_raised_function(function, second, set));
+                let second = self.caret_and_exponent()?;
+                return Err(self.after_raised_function(function, second, RAISES_EITHER));
             }
         }
         let call = if self.tok.tok == Tok::LParen {
