@@ -1,7 +1,7 @@
 //! Rejected inputs: each with its exact message, its (line, column) and the caret rendering.
 
 use pretty_assertions::assert_eq;
-use trigpoly::{GaussianRational, Poly, Rational, VarSet};
+use trigpoly::{Coefficient, GaussianRational, Poly, Rational, VarSet};
 
 use crate::common::phase_space;
 
@@ -882,20 +882,9 @@ fn a_caret_after_a_superscript_character_is_ambiguous() {
         ("y + x⁻¹^(2)", "'^(2)'", "'x⁻¹'", (1, 8)),
         ("x^{y²^3}", "'^3'", "'y²'", (1, 6)),
     ];
+    let set = "it may raise the power or its exponent";
     for (src, quote, base, line_col) in refused {
-        let err = Poly::<Rational>::parse(&vars, src).expect_err(src);
-        assert_eq!(
-            (err.message.clone(), err.line_col(src)),
-            (
-                format!(
-                    "{quote} after {base}, which has a superscript already, is ambiguous: it \
-                     may raise the power or its exponent; put {base} in parentheses for a power \
-                     of it, or write the exponent in one group"
-                ),
-                line_col
-            ),
-            "{src}"
-        );
+        refused_after_a_superscript::<Rational>(&vars, src, (quote, base, set), line_col);
     }
     for (src, value) in [
         ("(x²)^3", "x^6"),
@@ -903,12 +892,41 @@ fn a_caret_after_a_superscript_character_is_ambiguous() {
         ("x^{2²}", "x^4"),
         ("x^2^3", "x^8"),
     ] {
-        assert_eq!(
-            Poly::<Rational>::parse(&vars, src).expect(src),
-            Poly::<Rational>::parse(&vars, value).unwrap(),
-            "{src}"
-        );
+        reads_as::<Rational>(&vars, src, value);
     }
+}
+
+/// Asserts that `src`, read with `vars`, is refused for the superscript `quote` after `base`,
+/// which has one already, `set` saying how the two read together, at `line_col`.
+#[track_caller]
+fn refused_after_a_superscript<C: Coefficient>(
+    vars: &trigpoly::Vars,
+    src: &str,
+    (quote, base, set): (&str, &str, &str),
+    line_col: (usize, usize),
+) {
+    let err = Poly::<C>::parse(vars, src).expect_err(src);
+    assert_eq!(
+        (err.message.clone(), err.line_col(src)),
+        (
+            format!(
+                "{quote} after {base}, which has a superscript already, is ambiguous: {set}; put \
+                 {base} in parentheses for a power of it, or write the exponent in one group"
+            ),
+            line_col
+        ),
+        "{src}"
+    );
+}
+
+/// Asserts that `src` and `value`, read with `vars`, are the same element.
+#[track_caller]
+fn reads_as<C: Coefficient>(vars: &trigpoly::Vars, src: &str, value: &str) {
+    assert_eq!(
+        Poly::<C>::parse(vars, src).expect(src),
+        Poly::<C>::parse(vars, value).unwrap(),
+        "{src}"
+    );
 }
 
 /// A superscript refused after a power quotes the factor that the power raises: after a name
@@ -981,19 +999,7 @@ fn a_superscript_after_a_call_raised_before_its_parentheses_is_refused_as_after_
         ),
         ("sin²(θ)^3²", "'²'", "'sin²(θ)^3'", side_by_side, (1, 10)),
     ] {
-        let err = Poly::<GaussianRational>::parse(&vars, src).expect_err(src);
-        assert_eq!(
-            (err.message.clone(), err.line_col(src)),
-            (
-                format!(
-                    "{quote} after {base}, which has a superscript already, is ambiguous: \
-                     {set}; put {base} in parentheses for a power of it, or write the exponent \
-                     in one group"
-                ),
-                line_col
-            ),
-            "{src}"
-        );
+        refused_after_a_superscript::<GaussianRational>(&vars, src, (quote, base, set), line_col);
     }
 }
 
@@ -1104,11 +1110,7 @@ fn a_power_of_a_bare_angle_after_a_powered_function_is_ambiguous() {
         ("\\sin^{2}\\left(\\theta\\right)³", "sin(theta)^6"),
         ("\\sin^{2}(\\theta){}^{3}", "sin(theta)^6"),
     ] {
-        assert_eq!(
-            Poly::<GaussianRational>::parse(&vars, src).expect(src),
-            Poly::<GaussianRational>::parse(&vars, value).unwrap(),
-            "{src}"
-        );
+        reads_as::<GaussianRational>(&vars, src, value);
     }
 }
 
