@@ -194,6 +194,10 @@ fn parse_source(src: &str, names: &dyn Reading) -> Result<Expr, ParseError> {
 /// refusals of [`Parser::caret_after_superscript`] and [`Parser::trig_without_parens`].
 const RAISES_EITHER: &str = "it may raise the power or its exponent";
 
+/// The advice after two superscripts in doubt, `x^{2}{}^{3}`, `r²^3`, `sin² ²θ`
+/// ([`Parser::superscript_already`]).
+const ONE_GROUP: &str = "write the exponent in one group";
+
 /// Parser state: the current (not yet consumed) token and the span of the previous one.
 struct Parser<'a> {
     src: &'a str,
@@ -544,12 +548,19 @@ impl Parser<'_> {
     /// `set` saying how the two read together.
     fn after_superscript(&self, lhs: &Expr, span: Span, set: &str) -> ParseError {
         let base = self.quote(self.sized(self.powered(lhs)));
+        let advice = format!("put {base} in parentheses for a power of it, or {ONE_GROUP}");
+        self.superscript_already(span, &base, set, &advice)
+    }
+
+    /// The error for the superscript at `second` after `base`, the quote of what has one
+    /// already, `set` saying how the two read together and `advice` what to write: the one
+    /// wording of [`Self::after_superscript`] and [`Self::after_raised_function`].
+    fn superscript_already(&self, second: Span, base: &str, set: &str, advice: &str) -> ParseError {
         ParseError::new(
-            span,
+            second,
             format!(
-                "{} after {base}, which has a superscript already, is ambiguous: {set}; put \
-                 {base} in parentheses for a power of it, or write the exponent in one group",
-                self.quote(span)
+                "{} after {base}, which has a superscript already, is ambiguous: {set}; {advice}",
+                self.quote(second)
             ),
         )
     }
@@ -858,15 +869,7 @@ impl Parser<'_> {
     /// `sin²`, which has one already, `set` saying how the two read together: no parentheses
     /// hold `sin²` alone, so the advice is to write the exponent in one group.
     fn after_raised_function(&self, function: Span, second: Span, set: &str) -> ParseError {
-        ParseError::new(
-            second,
-            format!(
-                "{} after {}, which has a superscript already, is ambiguous: {set}; write the \
-                 exponent in one group",
-                self.quote(second),
-                self.quote(function),
-            ),
-        )
+        self.superscript_already(second, &self.quote(function), set, ONE_GROUP)
     }
 
     /// The error for a power of the angle at `angle`, written without parentheses after the
