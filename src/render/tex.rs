@@ -15,8 +15,6 @@ const SYMBOLS: &[(char, &str)] = &[
     ('≠', r"\neq"),
     ('→', r"\to"),
     ('⇒', r"\Rightarrow"),
-    ('∂', r"\partial"),
-    ('∇', r"\nabla"),
     ('…', r"\dots"),
     ('⋯', r"\cdots"),
     ('∈', r"\in"),
@@ -79,8 +77,14 @@ fn greek(c: char) -> Option<&'static str> {
     }
 }
 
+/// A symbol's LaTeX math command: one of the [`SYMBOLS`], or a differential sign as a display
+/// name's LaTeX writes it ([`trigpoly::differential_latex`]: `∂`, `∇`).
 fn symbol(c: char) -> Option<&'static str> {
-    SYMBOLS.iter().find(|g| g.0 == c).map(|g| g.1)
+    SYMBOLS
+        .iter()
+        .find(|g| g.0 == c)
+        .map(|g| g.1)
+        .or_else(|| trigpoly::differential_latex(c))
 }
 
 fn accent_of(mark: char) -> Option<&'static str> {
