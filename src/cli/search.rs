@@ -17,11 +17,11 @@ use superint::discovery::{
 use superint::render::render;
 use superint::report::{with_article, Report};
 use superint::system_file::{what_is, BadName, Caller, LoadedSystem};
-use superint::system_file::{ErrorKind, FileError, Warning};
+use superint::system_file::{ErrorKind, FileError, Warning, COMMAND_LINE};
 use trigpoly::{Expr, VarKind};
 
-/// How a warning names the command line's texts, as a file's does.
-const COMMAND_LINE: &str = "<command line>";
+use super::limits::LimitsArgs;
+use super::output::{emit, Output};
 
 /// The warnings kept, whatever a thread that panicked left.
 fn lock(noted: &Mutex<Vec<Warning>>) -> MutexGuard<'_, Vec<Warning>> {
@@ -29,9 +29,6 @@ fn lock(noted: &Mutex<Vec<Warning>>) -> MutexGuard<'_, Vec<Warning>> {
         .lock()
         .unwrap_or_else(std::sync::PoisonError::into_inner)
 }
-
-use super::limits::LimitsArgs;
-use super::output::{emit, Output};
 
 pub const EXAMPLES: &str = "\
 Examples:

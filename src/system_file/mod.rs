@@ -282,8 +282,9 @@ pub fn what_is(system: &System, families: &[Family], name: &str) -> Option<Strin
         .map(|(k, _, _)| format!("an instance of the family {}", families[k].name))
 }
 
-/// Where expressions given on the command line come from in messages ([`Caller::CommandLine`]).
-const COMMAND_LINE: &str = "<command line>";
+/// Where expressions given on the command line come from in messages ([`Caller::CommandLine`]),
+/// a built-in system's as a file's.
+pub const COMMAND_LINE: &str = "<command line>";
 
 /// An expression given to a report, parsed but not yet expanded. A report parses all its
 /// arguments before it expands any, so that a slip in the last one is reported at once rather
