@@ -119,11 +119,7 @@ pub fn run(job: &CheckJob) -> anyhow::Result<bool> {
 /// file's `warnings` give it less the section, which a file that did not load has none of.
 fn error_value(e: &FileError) -> serde_json::Value {
     let location = e.location.as_deref();
-    let warnings: Vec<serde_json::Value> = e
-        .warnings
-        .as_deref()
-        .map_or(&[][..], Vec::as_slice)
-        .iter()
+    let warnings: Vec<serde_json::Value> = (e.warnings_before().iter())
         .map(|w| json::warning(w, None))
         .collect();
     serde_json::json!({

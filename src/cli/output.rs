@@ -110,7 +110,7 @@ fn warnings(file: &LoadedSystem) {
 /// its texts read in doubt before the error), as [`warned`] prints a loaded file's, before its
 /// error is printed.
 pub fn load_warnings(error: &FileError) {
-    print_warnings(error.warnings.as_deref().map_or(&[], Vec::as_slice));
+    print_warnings(error.warnings_before());
 }
 
 /// Prints `warnings` on stderr, each as `superint: warning: …` with its line and a caret.

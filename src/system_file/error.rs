@@ -154,6 +154,12 @@ impl FileError {
         self
     }
 
+    /// What the texts of a file that failed to load read in doubt before the error
+    /// ([`FileError::warnings`]), in the order read; none for any other error.
+    pub fn warnings_before(&self) -> &[Warning] {
+        self.warnings.as_deref().map_or(&[], Vec::as_slice)
+    }
+
     /// 1-based line and column, if the error has a place.
     pub fn line_col(&self) -> Option<(usize, usize)> {
         self.location.as_ref().map(|l| (l.line, l.column))
