@@ -258,7 +258,7 @@ fn in_name(c: char) -> bool {
 /// `\partial\partial L^{2}`); where the names do not spell the run with it, the sign is a
 /// character of its own, as before.
 fn spelled<'n>(chars: &[char], i: usize, names: &'n Names) -> Option<(usize, Vec<&'n str>, usize)> {
-    let sign = trigpoly::differential_latex(chars[i]).is_some()
+    let sign = trigpoly::is_differential_sign(chars[i])
         && chars.get(i + 1).is_some_and(|c| c.is_alphabetic());
     let end = (i + usize::from(sign)..chars.len())
         .find(|&j| !in_name(chars[j]))

@@ -7,8 +7,8 @@ use std::ops::Range;
 
 use brackets::System;
 use trigpoly::{
-    display_forms, is_identifier, latex_unwritable, quoted_name, shown_forms, unbarred,
-    with_indices, Span, VarSet, Vars, RESERVED,
+    display_forms, is_differential_sign, is_identifier, latex_unwritable, quoted_name, shown_forms,
+    unbarred, with_indices, Span, VarSet, Vars, RESERVED,
 };
 
 use super::error::{ErrorKind, FileError};
@@ -676,12 +676,6 @@ pub(crate) fn check_shown_text(
         Some((span, why)) => Err(source.error(kind, text.source_span(span), why)),
         None => Ok(()),
     }
-}
-
-/// Whether `c` is one of the signs a display name may begin with, before a letter
-/// ([`trigpoly::DIFFERENTIALS`]: `∂H`, `∇φ`).
-fn is_differential_sign(c: char) -> bool {
-    trigpoly::differential_latex(c).is_some()
 }
 
 /// Where the sign `c`, `∂` or `∇`, stands in a display name, for a message.

@@ -68,7 +68,8 @@ pub use number::{
 };
 pub use poly::{CosSinTerm, MonomialIndex, Point, Poly, ReducedRadical, Term, TrigMonomial};
 pub use print::{
-    differential_latex, is_differential, render_number, superscript, Factored, Style, DIFFERENTIALS,
+    differential_latex, is_differential, is_differential_sign, render_number, superscript,
+    Factored, Style, DIFFERENTIALS,
 };
 pub use syntax::{Excerpt, ParseError, Span};
 pub use varset::{

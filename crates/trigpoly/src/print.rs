@@ -349,10 +349,15 @@ pub fn differential_latex(c: char) -> Option<&'static str> {
     DIFFERENTIALS.iter().find(|d| d.0 == c).map(|d| d.1)
 }
 
+/// Whether `c` is one of the [`DIFFERENTIALS`], `∂` or `∇`.
+pub fn is_differential_sign(c: char) -> bool {
+    differential_latex(c).is_some()
+}
+
 /// Whether the name `shown` begins with one of the [`DIFFERENTIALS`], a derivative or a
 /// gradient: a power of it is set in parentheses, `(∂H)²`, where `∂H²` would read as `∂(H²)`.
 pub fn is_differential(shown: &str) -> bool {
-    shown.chars().next().and_then(differential_latex).is_some()
+    shown.chars().next().is_some_and(is_differential_sign)
 }
 
 /// `-12` → `⁻¹²`.
