@@ -1374,6 +1374,16 @@ pub fn relation(s: &str) -> Option<usize> {
 mod tests {
     use super::*;
 
+    /// Names that write each `(name, latex)` of `forms` so, without families.
+    fn names_of(forms: &[(&str, &str)]) -> Names {
+        Names {
+            forms: (forms.iter())
+                .map(|(a, b)| (a.to_string(), b.to_string()))
+                .collect(),
+            families: Vec::new(),
+        }
+    }
+
     /// Every Greek letter a name may have is written as the name's LaTeX writes it, in a
     /// display that is no name too (`x(ϑ)`, `∂ϑ`, `Re ϑ`): `ϑ`, `ϱ`, `ς`, `ϖ`, `ο`, `υ` and
     /// `Υ` were written as their code points, `\mbox{\texttt{U+03D1}}`.
@@ -1621,21 +1631,15 @@ mod tests {
     /// they spell whole as those names; prose, a function's name and any other run as before.
     #[test]
     fn declared_names_are_written_as_expressions_write_them() {
-        let names = Names {
-            forms: [
-                ("alpha1", r"\alpha_{1}"),
-                ("ωx", r"\mathrm{{\omega}x}"),
-                ("p_ωx", r"p_{{\omega}x}"),
-                ("ω", r"\omega"),
-                ("x", "x"),
-                ("s", "s"),
-                ("G1'", "G_{1}'"),
-            ]
-            .iter()
-            .map(|(a, b)| (a.to_string(), b.to_string()))
-            .collect(),
-            families: Vec::new(),
-        };
+        let names = names_of(&[
+            ("alpha1", r"\alpha_{1}"),
+            ("ωx", r"\mathrm{{\omega}x}"),
+            ("p_ωx", r"p_{{\omega}x}"),
+            ("ω", r"\omega"),
+            ("x", "x"),
+            ("s", "s"),
+            ("G1'", "G_{1}'"),
+        ]);
         for (u, t) in [
             (
                 "{alpha1, ωx} = 2ωx ω x",
@@ -1657,19 +1661,13 @@ mod tests {
     /// character of its own, as before.
     #[test]
     fn a_differential_sign_starts_a_display_name() {
-        let names = Names {
-            forms: [
-                ("L", r"\partial L"),
-                ("∂L", r"\partial L"),
-                ("H2", r"\nabla H_{2}"),
-                ("∇H2", r"\nabla H_{2}"),
-                ("x", "x"),
-            ]
-            .iter()
-            .map(|(a, b)| (a.to_string(), b.to_string()))
-            .collect(),
-            families: Vec::new(),
-        };
+        let names = names_of(&[
+            ("L", r"\partial L"),
+            ("∂L", r"\partial L"),
+            ("H2", r"\nabla H_{2}"),
+            ("∇H2", r"\nabla H_{2}"),
+            ("x", "x"),
+        ]);
         for (u, t) in [
             ("∂L²", r"\partial L^{2}"),
             (
@@ -1742,14 +1740,7 @@ mod tests {
     /// a sign after a name that no declared name spells stays a script sign.
     #[test]
     fn a_declared_name_with_a_script_sign_is_written_as_the_variable() {
-        let names = Names {
-            forms: vec![
-                ("M".into(), "M".into()),
-                ("ω₊".into(), r"\omega_{+}".into()),
-                ("ω₋".into(), r"\omega_{-}".into()),
-            ],
-            families: Vec::new(),
-        };
+        let names = names_of(&[("M", "M"), ("ω₊", r"\omega_{+}"), ("ω₋", r"\omega_{-}")]);
         assert_eq!(math_with("ω₊ = 2 ω₋", &names), r"\omega_{+} = 2 \omega_{-}");
         assert_eq!(
             math_with("{P, Q} = M ω₊ + 3Mω₋²", &names),
