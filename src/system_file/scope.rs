@@ -10,7 +10,7 @@ use std::cell::RefCell;
 use std::collections::HashMap;
 
 use num_bigint::BigInt;
-use trigpoly::syntax::{Expr as Tree, ExprKind, ParseError};
+use trigpoly::syntax::{is_name_continue, is_name_start, Expr as Tree, ExprKind, ParseError};
 use trigpoly::{Context, Expr, GaussianRational, Span, VarKind};
 
 use super::error::{ErrorKind, FileError, Warning};
@@ -698,11 +698,10 @@ impl<'a> Scope<'a> {
         }
         // The whole of a word (a coefficient may come before it, and a power after it): `Re A`,
         // `2Re A` and `∂H²`, not the start of `Re Ax`; a LaTeX form begins with its command
-        // whatever stands before it, `x\partial H`.
-        let word = |c: Option<char>| {
-            c.is_some_and(|c| (c.is_alphanumeric() && !is_superscript(c)) || c == '_')
-        };
-        let letter = |c: Option<char>| c.is_some_and(|c| c.is_alphabetic() || c == '_');
+        // whatever stands before it, `x\partial H`. A name begins and goes on as the lexer
+        // reads it.
+        let word = |c: Option<char>| c.is_some_and(is_name_continue);
+        let letter = |c: Option<char>| c.is_some_and(is_name_start);
         let value = &text.value;
         let written_at = |form: &str| {
             let at = (value.match_indices(form).map(|(k, _)| k)).find(|&k| {
@@ -1113,11 +1112,6 @@ pub(crate) fn mention(tree: &Tree, name: &str) -> Option<Span> {
     tree.names()
         .into_iter()
         .find_map(|(n, span)| (n == name).then_some(span))
-}
-
-/// Whether `c` is a superscript digit, a power written after a name (`∂H²`).
-fn is_superscript(c: char) -> bool {
-    matches!(c, '⁰' | '¹' | '²' | '³' | '⁴' | '⁵' | '⁶' | '⁷' | '⁸' | '⁹')
 }
 
 #[cfg(test)]

@@ -65,11 +65,14 @@ pub(super) fn superscript_digit(c: char) -> Option<char> {
     char::from_digit(value as u32, 10)
 }
 
-fn is_name_start(c: char) -> bool {
+/// Whether a name may begin with `c`: a letter or `_`.
+pub fn is_name_start(c: char) -> bool {
     c == '_' || c.is_alphabetic()
 }
 
-fn is_name_continue(c: char) -> bool {
+/// Whether a name goes on with `c`: a letter, a digit or `_`, but a superscript digit, a power
+/// after the name.
+pub fn is_name_continue(c: char) -> bool {
     // Superscript digits are numeric, but `x²` must lex as `x` followed by an exponent.
     c == '_' || (c.is_alphanumeric() && superscript_digit(c).is_none())
 }

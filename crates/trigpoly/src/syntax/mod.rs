@@ -23,6 +23,7 @@ mod parser;
 
 pub use error::{Excerpt, ParseError, Span};
 pub use latex::latex_name;
+pub use lexer::{is_name_continue, is_name_start};
 pub use parser::{parse_expr, Expr, ExprKind, LEFT_DEEP_SUM, MAX_DEPTH, MAX_HEIGHT};
 // What the names read as, for the parser's refusals: the lowering's alone
 // (`Poly::parse_with`, `Poly::parse_tree`), so no part of the crate's interface.
