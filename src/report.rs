@@ -260,6 +260,17 @@ pub struct Equations {
     pub flow: Option<FlowKept>,
 }
 
+impl Equations {
+    /// Equations under `caption` (possibly empty), of a surface whose flow is not asked about.
+    pub fn new(caption: String, lines: Vec<Equation>) -> Equations {
+        Equations {
+            caption,
+            lines,
+            flow: None,
+        }
+    }
+}
+
 /// Whether the flow of `H` keeps the surface of a condition ([`Equations::flow`]).
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub enum FlowKept {

@@ -499,10 +499,9 @@ fn closing_advice(moving: &[String], when: &str, symbolic: bool, caller: Caller)
 
 /// The brackets `outside` the table, each written out: `{A, B} = …`.
 fn outside_equations(c: &Closure, outside: &[(usize, usize)]) -> Entry {
-    Entry::Equations(Equations {
-        flow: None,
-        caption: String::new(),
-        lines: outside
+    Entry::Equations(Equations::new(
+        String::new(),
+        outside
             .iter()
             .map(|&(a, b)| {
                 let Bracket::Outside { bracket } = &c.brackets[a][b] else {
@@ -512,5 +511,5 @@ fn outside_equations(c: &Closure, outside: &[(usize, usize)]) -> Entry {
                 Equation::new(&lhs, bracket.clone())
             })
             .collect(),
-    })
+    ))
 }

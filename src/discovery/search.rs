@@ -703,11 +703,7 @@ impl Shared {
             _ => h.clone(),
         };
         let mut entries = vec![
-            Entry::Equations(Equations {
-                flow: None,
-                caption: String::new(),
-                lines: vec![Equation::new("H", h)],
-            }),
+            Entry::Equations(Equations::new(String::new(), vec![Equation::new("H", h)])),
             Entry::Text(space_text(r)),
         ];
         entries.extend(hamiltonian_note(system, options, self.caller)?);
@@ -907,15 +903,13 @@ impl Shared {
             };
             return Entry::Text(why.into());
         }
-        Entry::Equations(Equations {
-            flow: None,
-            caption: match (&r.new, &self.symbolic) {
+        Entry::Equations(Equations::new(
+            match (&r.new, &self.symbolic) {
                 (Some(_), _) => "New integrals".into(),
                 (None, Some(names)) => format!("Generators over the polynomials in `{names}`"),
                 (None, None) => "A basis of the integrals".into(),
             },
-            lines: self
-                .shown
+            self.shown
                 .iter()
                 .zip(written)
                 .enumerate()
@@ -924,7 +918,7 @@ impl Shared {
                     ..Equation::new(&self.label(i), w.clone())
                 })
                 .collect(),
-        })
+        ))
     }
 
     /// A claim `{I3, H} = 0` for each shown integral, with where it holds and what its proof
@@ -975,14 +969,13 @@ impl Shared {
             }
         }
         let theta = r.vars.variable(*theta).unicode();
-        Some(Entry::Equations(Equations {
-            flow: None,
-            caption: format!(
+        Some(Entry::Equations(Equations::new(
+            format!(
                 "Those of trigonometric order `{k} > 0` as `{} = Re({} e^{{−i{k}{theta}}})`",
                 self.letter, self.complex
             ),
             lines,
-        }))
+        )))
     }
 
     /// One claim for the basis integrals not shown: all proved (`for the other 4 basis

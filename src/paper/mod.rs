@@ -456,16 +456,11 @@ fn hamilton(system: &System) -> Result<Vec<Entry>, EngineError> {
         .map(|(v, e)| Equation::new(&dotted(vars.variable(v).unicode()), e))
         .collect();
     Ok(vec![
-        Entry::Equations(Equations {
-            flow: None,
-            caption: String::new(),
-            lines: vec![Equation::new("H", system.hamiltonian().clone())],
-        }),
-        Entry::Equations(Equations {
-            flow: None,
-            caption: "Hamilton's equations".into(),
-            lines,
-        }),
+        Entry::Equations(Equations::new(
+            String::new(),
+            vec![Equation::new("H", system.hamiltonian().clone())],
+        )),
+        Entry::Equations(Equations::new("Hamilton's equations".into(), lines)),
     ])
 }
 
@@ -536,23 +531,19 @@ impl SectionBuilder {
             .iter()
             .map(|(lhs, src)| Ok(Equation::new(lhs, self.parse(src)?)))
             .collect::<Result<_, EngineError>>()?;
-        self.items.push(Item::Equations(Equations {
-            flow: None,
-            caption: caption.into(),
-            lines,
-        }));
+        self.items
+            .push(Item::Equations(Equations::new(caption.into(), lines)));
         Ok(())
     }
 
     pub(crate) fn show_exprs(&mut self, caption: &str, lines: Vec<(String, Expr)>) {
-        self.items.push(Item::Equations(Equations {
-            flow: None,
-            caption: caption.into(),
-            lines: lines
+        self.items.push(Item::Equations(Equations::new(
+            caption.into(),
+            lines
                 .into_iter()
                 .map(|(l, e)| Equation::new(&l, e))
                 .collect(),
-        }));
+        )));
     }
 
     /// `lhs = rhs`, both parsed in the current system.

@@ -34,11 +34,10 @@ impl LoadedSystem {
         if let Some(c) = &self.citation {
             entries.push(Entry::Text(format!("Source: {c}")));
         }
-        entries.push(Entry::Equations(Equations {
-            flow: None,
-            caption: String::new(),
-            lines: vec![Equation::new("H", self.system.hamiltonian().clone())],
-        }));
+        entries.push(Entry::Equations(Equations::new(
+            String::new(),
+            vec![Equation::new("H", self.system.hamiltonian().clone())],
+        )));
         // What each radical stands for, which H's terms do not show: its radicand as the file
         // declares it, `√((x − a)² + y² + z²)` (its normal form, `√(x² − 2ax + y² + z² + a²)`,
         // hid the distance to the centre).
@@ -385,11 +384,10 @@ fn equations_at(
             Ok(Equation::new(&lhs, value))
         })
         .collect::<Result<_, FileError>>()?;
-    Ok(Equations {
-        flow: None,
-        caption: condition.map_or_else(String::new, |c| format!("at `{}`", c.text)),
+    Ok(Equations::new(
+        condition.map_or_else(String::new, |c| format!("at `{}`", c.text)),
         lines,
-    })
+    ))
 }
 
 /// Whether the flow of the file's `H` keeps the surface of `condition`, decided exactly as a
@@ -535,11 +533,7 @@ pub fn table_report(file: &LoadedSystem, names: &[impl AsRef<str>]) -> Result<Re
              `H` and the file's functions (each proved for every value of the parameters):"
                 .to_string(),
         ));
-        entries.push(Entry::Equations(Equations {
-            flow: None,
-            caption: String::new(),
-            lines: written,
-        }));
+        entries.push(Entry::Equations(Equations::new(String::new(), written)));
     }
     report.seconds = start.elapsed().as_secs_f64();
     Ok(report)
