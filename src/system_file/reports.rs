@@ -276,7 +276,8 @@ pub fn bracket_report(
     let lhs = format!("{{{fname}, {gname}}}");
     let mut equations = equations_at(file, condition.as_ref(), vec![(lhs.clone(), value)])?;
     // A bracket at a surface the flow of H leaves may vanish there and still conserve nothing.
-    equations.flow = condition.as_ref().and_then(|c| flow_kept(file, c));
+    let zero = equations.lines.iter().all(|l| l.rhs.is_zero());
+    equations.flow = condition.as_ref().and_then(|c| flow_kept(file, c, zero));
     // The bracket in the file's functions too (and the family instances at the indices the
     // arguments mention), where it is a polynomial in them. Else as its terms' common factor
     // times the rest, where they share one.
@@ -393,14 +394,21 @@ fn equations_at(
 /// Whether the flow of the file's `H` keeps the surface of `condition`, decided exactly as a
 /// search's condition is ([`Condition::left_by_flow`]), with the note that says where it does
 /// not: a bracket that vanishes there is no conservation law (`{x, H}` at `x = 0` of the
-/// oscillator). `None` where that could not be decided (a limit): nothing is said then.
-fn flow_kept(file: &LoadedSystem, condition: &Condition) -> Option<FlowKept> {
+/// oscillator), which says so where the bracket printed, `zero`, vanishes there; elsewhere the
+/// note ends at its parenthesis (`{x, H} = p_x/M` at `x = 0`). `None` where that could not be
+/// decided (a limit): nothing is said then.
+fn flow_kept(file: &LoadedSystem, condition: &Condition, zero: bool) -> Option<FlowKept> {
     match condition.left_by_flow(&file.system).ok()? {
         None => Some(FlowKept::Kept),
         Some(left) => Some(FlowKept::Left(format!(
-            "`{}` is not kept by the flow of `H` (`{{{}, H}} = {}` there): a zero is no \
-             conservation law.",
-            condition.text, left.level, left.rate
+            "`{}` is not kept by the flow of `H` (`{{{}, H}} = {}` there){}",
+            condition.text,
+            left.level,
+            left.rate,
+            match zero {
+                true => ": a zero is no conservation law.",
+                false => ".",
+            }
         ))),
     }
 }

@@ -5150,3 +5150,35 @@ fn bracket_at_a_condition_the_flow_leaves_says_so() {
     let v: Value = serde_json::from_slice(&o.stdout).expect("JSON");
     assert_eq!(v["equations"][0].get("kept_by_flow"), None);
 }
+
+/// Where the bracket printed is not zero on a surface the flow leaves, the note says only that
+/// the flow leaves it: `{x, H} = p_x/M` at `x = 0` is no zero, and the note ended with a zero is
+/// no conservation law, which said nothing of it.
+#[test]
+fn bracket_that_is_no_zero_at_a_condition_the_flow_leaves_says_no_more() {
+    let dir = scratch("bracket-flow-note-no-zero");
+    std::fs::write(
+        dir.join("osc.toml"),
+        "name = \"oscillator\"\nhamiltonian = \"p_x^2/(2*M) + M*omega^2*x^2/2\"\n\
+         [phase_space]\ncoordinates = [\"x\"]\nparameters = [\"M\", \"omega\"]\n",
+    )
+    .expect("written");
+    let note = "x = 0 is not kept by the flow of H ({x, H} = p_x/M there).";
+    let o = superint_in(&dir, &["bracket", "osc.toml", "x", "H", "--when", "x = 0"]);
+    assert_eq!(o.status.code(), Some(0), "{}", text(&o.stderr));
+    let out = text(&o.stdout);
+    assert!(
+        out.contains(&format!("    {{x, H}} = p_x/M\nNote: {note}\n")),
+        "{out}"
+    );
+    let o = superint_in(
+        &dir,
+        &[
+            "bracket", "osc.toml", "x", "H", "--when", "x = 0", "--format", "json",
+        ],
+    );
+    let v: Value = serde_json::from_slice(&o.stdout).expect("JSON");
+    let eq = &v["equations"][0];
+    assert_eq!(eq["kept_by_flow"], false, "{eq}");
+    assert_eq!(eq["flow_note"], note, "{eq}");
+}
