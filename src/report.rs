@@ -278,14 +278,26 @@ pub enum FlowKept {
     Kept,
     /// The flow leaves it: the note that says so, in markup (`` `{x, H} = p_x/M` ``).
     Left(String),
+    /// Whether the flow keeps it was not decided (a limit stopped the check): the note that
+    /// says so, with the limit's message, in markup.
+    Unchecked(String),
 }
 
 impl FlowKept {
-    /// The note, where the flow leaves the surface.
+    /// The note, where the flow leaves the surface or where that was not decided.
     pub fn note(&self) -> Option<&str> {
         match self {
             FlowKept::Kept => None,
-            FlowKept::Left(note) => Some(note),
+            FlowKept::Left(note) | FlowKept::Unchecked(note) => Some(note),
+        }
+    }
+
+    /// Whether the flow keeps the surface: `None` where that was not decided.
+    pub fn kept(&self) -> Option<bool> {
+        match self {
+            FlowKept::Kept => Some(true),
+            FlowKept::Left(_) => Some(false),
+            FlowKept::Unchecked(_) => None,
         }
     }
 }

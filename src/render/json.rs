@@ -59,10 +59,11 @@
 //!                 "factored": { "text", "ascii", "latex" } | null   (the right side as the
 //!                          factor its terms share times the rest, where `bracket` or `expand`
 //!                          finds one: "F*(x*p_x + y*p_y)/M") } ],
-//!                 "kept_by_flow": bool, "flow_note": string | null   (only for `bracket
-//!                          --when`: whether the flow of H keeps the condition's surface, and
-//!                          where it does not, the note that says so: a zero there is no
-//!                          conservation law) } ],
+//!                 "kept_by_flow": bool | null, "flow_note": string | null   (only for
+//!                          `bracket --when`: whether the flow of H keeps the condition's
+//!                          surface, and where it does not, the note that says so: a zero there
+//!                          is no conservation law; null, with a note that says why, where a
+//!                          limit stopped the check) } ],
 //!   "tables": [ { "section", "caption" (plain text, as every title and caption: "{A, B} for
 //!                 the harmonic rotor (row A, column B)"), "functions": [ascii names],
 //!                 "display": [names],
@@ -122,8 +123,7 @@ use trigpoly::{Expr, Factored, Style, VarKind};
 use super::{plain, Options};
 use crate::report::{
     written_in_functions, ClaimOutcome, ClaimResult, ClosureFacts, Entry, Equations, Facts,
-    FlowKept, ParameterFacts, ProofResult, RankResult, Report, SearchFacts, TableResult,
-    TowerResult,
+    ParameterFacts, ProofResult, RankResult, Report, SearchFacts, TableResult, TowerResult,
 };
 use brackets::{Entry as TableEntry, UpperBound};
 
@@ -331,7 +331,7 @@ fn equations(eq: &Equations, section: u32) -> Value {
     // Only where it was asked (a bracket at a condition), so that other equations are as
     // they always were.
     if let Some(flow) = &eq.flow {
-        value["kept_by_flow"] = json!(*flow == FlowKept::Kept);
+        value["kept_by_flow"] = json!(flow.kept());
         value["flow_note"] = flow.note().map_or(Value::Null, |n| json!(plain(n)));
     }
     value

@@ -277,7 +277,7 @@ pub fn bracket_report(
     let mut equations = equations_at(file, condition.as_ref(), vec![(lhs.clone(), value)])?;
     // A bracket at a surface the flow of H leaves may vanish there and still conserve nothing.
     let zero = equations.lines.iter().all(|l| l.rhs.is_zero());
-    equations.flow = condition.as_ref().and_then(|c| flow_kept(file, c, zero));
+    equations.flow = condition.as_ref().map(|c| flow_kept(file, c, zero));
     // The bracket in the file's functions too (and the family instances at the indices the
     // arguments mention), where it is a polynomial in them. Else as its terms' common factor
     // times the rest, where they share one.
@@ -395,12 +395,17 @@ fn equations_at(
 /// search's condition is ([`Condition::left_by_flow`]), with the note that says where it does
 /// not: a bracket that vanishes there is no conservation law (`{x, H}` at `x = 0` of the
 /// oscillator), which says so where the bracket printed, `zero`, vanishes there; elsewhere the
-/// note ends at its parenthesis (`{x, H} = p_x/M` at `x = 0`). `None` where that could not be
-/// decided (a limit): nothing is said then.
-fn flow_kept(file: &LoadedSystem, condition: &Condition, zero: bool) -> Option<FlowKept> {
-    match condition.left_by_flow(&file.system).ok()? {
-        None => Some(FlowKept::Kept),
-        Some(left) => Some(FlowKept::Left(format!(
+/// note ends at its parenthesis (`{x, H} = p_x/M` at `x = 0`). Where that could not be
+/// decided (a limit), a note says so with the limit's message.
+fn flow_kept(file: &LoadedSystem, condition: &Condition, zero: bool) -> FlowKept {
+    match condition.left_by_flow(&file.system) {
+        Err(e) => FlowKept::Unchecked(format!(
+            "whether `{}` is kept by the flow of `H` was not checked: {}.",
+            condition.text,
+            e.to_string().trim_end_matches('.')
+        )),
+        Ok(None) => FlowKept::Kept,
+        Ok(Some(left)) => FlowKept::Left(format!(
             "`{}` is not kept by the flow of `H` (`{{{}, H}} = {}` there){}",
             condition.text,
             left.level,
@@ -409,7 +414,7 @@ fn flow_kept(file: &LoadedSystem, condition: &Condition, zero: bool) -> Option<F
                 true => ": a zero is no conservation law.",
                 false => ".",
             }
-        ))),
+        )),
     }
 }
 

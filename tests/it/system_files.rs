@@ -5182,3 +5182,46 @@ fn bracket_that_is_no_zero_at_a_condition_the_flow_leaves_says_no_more() {
     assert_eq!(eq["kept_by_flow"], false, "{eq}");
     assert_eq!(eq["flow_note"], note, "{eq}");
 }
+
+/// Where a limit stops the check whether the flow of `H` keeps a `bracket --when` condition,
+/// a note says so with the limit's message, and JSON's `kept_by_flow` is null: nothing was said
+/// and no note appeared. Here the bracket fits 4 terms, but `{x − (y p_y + y + p_y), H}` has 5.
+#[test]
+fn bracket_at_a_condition_whose_flow_check_passes_a_limit_says_so() {
+    let dir = scratch("bracket-flow-note-limit");
+    std::fs::write(
+        dir.join("osc.toml"),
+        "name = \"oscillator\"\nhamiltonian = \"p_x^2/2 + p_y^2/2 + x^2/2 + y^2/2\"\n\
+         [phase_space]\ncoordinates = [\"x\", \"y\"]\n",
+    )
+    .expect("written");
+    let args = [
+        "bracket",
+        "osc.toml",
+        "x",
+        "y",
+        "--when",
+        "x = y*p_y + y + p_y",
+        "--max-terms",
+        "4",
+    ];
+    let note = "whether x = y p_y + y + p_y is kept by the flow of H was not checked: the result \
+                would have more than 4 terms (the term limit); raise the limit or simplify the \
+                input.";
+    let o = superint_in(&dir, &args);
+    assert_eq!(o.status.code(), Some(0), "{}", text(&o.stderr));
+    let out = text(&o.stdout);
+    assert!(out.contains("    {x, y} = 0\nNote: whether x = y p_y + y + p_y is kept by the flow of H was not checked: the result would\nhave more than 4 terms"), "{out}");
+    let o = superint_in(&dir, &[&args[..], &["--format", "json"]].concat());
+    let v: Value = serde_json::from_slice(&o.stdout).expect("JSON");
+    let eq = &v["equations"][0];
+    assert_eq!(eq["kept_by_flow"], Value::Null, "{eq}");
+    assert_eq!(eq["flow_note"], note, "{eq}");
+    // With room for the check, it is decided.
+    let o = superint_in(&dir, &args[..6]);
+    assert!(
+        text(&o.stdout).contains("is not kept by the flow of H"),
+        "{}",
+        text(&o.stdout)
+    );
+}
