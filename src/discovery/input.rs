@@ -44,8 +44,10 @@ pub fn builtin_system(
     let s = match name {
         "harmonic" => {
             let mut s = Rotor::Harmonic.system(limits)?;
-            s.define_parsed("W", "W", "p_x - i*p_y + i*M*omega*(x - i*y)")?;
-            s.define_parsed("Hp", "Hp", "F1 - F2")?;
+            s.define_parsed("W", "W", "p_x - i*p_y + i*M*omega*(x - i*y)")
+                .map_err(|e| e.in_part("its function W"))?;
+            s.define_parsed("Hp", "Hp", "F1 - F2")
+                .map_err(|e| e.in_part("its function Hp"))?;
             if resonant {
                 define_resonant(&mut s, "Z", "W")?;
             }
@@ -53,8 +55,10 @@ pub fn builtin_system(
         }
         "gravity" => {
             let mut s = Rotor::Gravity.system(limits)?;
-            s.define_parsed("Wp", "W'", "p_x - i*p_y + i*M*omega*(x - i*yp)")?;
-            s.define_parsed("Hp", "Hp", "F1 - F2")?;
+            s.define_parsed("Wp", "W'", "p_x - i*p_y + i*M*omega*(x - i*yp)")
+                .map_err(|e| e.in_part("its function W'"))?;
+            s.define_parsed("Hp", "Hp", "F1 - F2")
+                .map_err(|e| e.in_part("its function Hp"))?;
             if resonant {
                 define_resonant(&mut s, "Zp", "Wp")?;
             }

@@ -2196,11 +2196,17 @@ fn cli_a_builtin_system_keeps_the_limits_given() {
         &[&search[..], &degrees("14")].concat(),
         "the space has 2366400 unknowns, more than the term limit 2000000",
     );
+    // The part that does not fit is named, with its text and a caret: a line and column of a
+    // text nobody typed placed it nowhere (line 1, column 1:, said twice).
     assert_bad_usage(
         &[&search[..], &["--max-terms", "4"]].concat(),
-        "the built-in system harmonic does not fit the limits given: line 1, column 1: the \
-         result would have more than 4 terms",
+        "superint: error: the built-in system harmonic does not fit the limits given: its \
+         Hamiltonian: the result would have more than 4 terms (the term limit); raise the limit \
+         or simplify the input\n  (p_x^2 + p_y^2)/(2*M) + M*omega^2*(x^2 + y^2)/2 + \
+         p_theta^2/(2*I)\n  ^^^^^^^^^^^^^^^^^^^^^^^^^^^^^^^^^^^^^^^^^^^^^^^^^^^^^^^^^^^^^^^^^\n",
     );
+    let o = superint(&[&search[..], &["--max-terms", "4"]].concat());
+    assert!(!stderr(&o).contains("line 1"), "{}", stderr(&o));
     assert_bad_usage(
         &[
             "closure",
@@ -2211,7 +2217,8 @@ fn cli_a_builtin_system_keeps_the_limits_given() {
             "L",
             "G1",
         ],
-        "the built-in system gravity does not fit the limits given",
+        "the built-in system gravity does not fit the limits given: its Hamiltonian: the \
+         exponent 2 is past the limit of 1\n",
     );
     // Within the limits, the search runs as before.
     let out = run(

@@ -96,6 +96,34 @@ impl EngineError {
         )
     }
 
+    /// A parse error of a text that nobody typed (a built-in system's Hamiltonian or function)
+    /// named by the part it is, `what` (`its Hamiltonian`), before the text and its caret: a
+    /// line and column would place it in nothing the user sees. Other errors are as they are.
+    #[must_use]
+    pub fn in_part(self, what: &str) -> Self {
+        match self {
+            EngineError::Parse {
+                source_text, error, ..
+            } if !source_text.is_empty() => {
+                let excerpt = trigpoly::Excerpt::of(&source_text, error.span);
+                EngineError::Parse {
+                    message: format!(
+                        "{what}: {}\n  {}\n  {}{}",
+                        error.message,
+                        excerpt.text,
+                        excerpt.pad,
+                        "^".repeat(excerpt.width)
+                    ),
+                    source_text,
+                    // Without its source, so that as the cause it says no line and column
+                    // either.
+                    error: ParseError::new(error.span, error.message),
+                }
+            }
+            other => other,
+        }
+    }
+
     /// A parse error rendered against its source.
     pub fn parse(source: &str, error: ParseError) -> Self {
         EngineError::Parse {

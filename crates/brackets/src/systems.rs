@@ -41,10 +41,14 @@ fn build(
 ) -> Result<System, EngineError> {
     let vars = rotor_vars_with(params, limits)?;
     let space = PhaseSpace::new(&vars, &[("x", "p_x"), ("y", "p_y"), ("theta", "p_theta")])?;
-    let h = Expr::parse(&vars, h).map_err(|e| EngineError::parse(h, e))?;
+    // A text that does not fit the limits is named, not placed by a line and column of a
+    // text nobody typed.
+    let h =
+        Expr::parse(&vars, h).map_err(|e| EngineError::parse(h, e).in_part("its Hamiltonian"))?;
     let mut s = System::new(name, space, h)?;
     for (n, display, src) in functions {
-        s.define_parsed(n, display, src)?;
+        s.define_parsed(n, display, src)
+            .map_err(|e| e.in_part(&format!("its function {display}")))?;
     }
     Ok(s)
 }
