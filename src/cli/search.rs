@@ -482,8 +482,13 @@ impl Subject {
         when.map(|w| match self {
             Subject::File(f) => f.condition(w).map_err(anyhow::Error::from),
             Subject::Builtin(..) => {
-                parse_condition(self.system(), w, &|s, at| self.parse_in(w, s, at))
-                    .map_err(|e| anyhow!("--when: {e}"))
+                // Refused as a file's command-line condition is: `<command line>:1:C:`, the
+                // numbered line and a caret.
+                let refuse = |span, message| {
+                    FileError::at(ErrorKind::Condition, COMMAND_LINE, w, span, message).to_string()
+                };
+                parse_condition(self.system(), w, &|s, at| self.parse_in(w, s, at), &refuse)
+                    .map_err(|e| anyhow!(e))
             }
         })
         .transpose()

@@ -1,6 +1,7 @@
 //! The inputs of the discovery commands: the built-in systems by name ([`builtin_system`]),
 //! and conditions, symbolic parameters and fixed values as the command line gives them.
 
+use crate::system_file::CONDITION_USAGE;
 use brackets::{EngineError, System};
 use trigpoly::{Expr, Limits, Rational, Style, Var};
 
@@ -81,7 +82,7 @@ pub fn builtin_system(
 
 /// Where the `k`th of `pieces` (a list split at its commas) is blank beside a comma, that
 /// `what` is missing after the comma (`M = 1,`) or before it (`, M = 1`), by the comma's
-/// column: `a condition is missing after the comma at column 6`. A list of one blank piece
+/// column: `a value is missing after the comma at column 6`. A list of one blank piece
 /// has no comma to blame, and is left to the caller.
 fn missing_beside_comma(pieces: &[&str], k: usize, what: &str) -> Option<String> {
     if !pieces[k].trim().is_empty() || pieces.len() < 2 {
@@ -102,14 +103,21 @@ fn missing_beside_comma(pieces: &[&str], k: usize, what: &str) -> Option<String>
 
 /// Reads a condition `var = value[, var = value]` (such as `p_theta = 2*I*omega/3`), values
 /// parsed by `parse`, which is given each value with the byte where it begins in `text` (so
-/// that what it says of the value points into the condition as typed).
+/// that what it says of the value points into the condition as typed). A refusal of the
+/// condition's form is said by `refuse`, given its byte range in `text` and its message, as a
+/// file's condition is refused ([`CONDITION_USAGE`]; the caret under the comma with nothing
+/// beside it, an empty side, the left side that is no variable or is set twice, the value of
+/// the variable the condition cannot set so).
 pub fn parse_condition(
     system: &System,
     text: &str,
     parse: &dyn Fn(&str, usize) -> Result<Expr, String>,
+    refuse: &dyn Fn(std::ops::Range<usize>, String) -> String,
 ) -> Result<brackets::Condition, String> {
     let vars = system.vars();
-    let mut subs = Vec::new();
+    let mut subs: Vec<(Var, Expr)> = Vec::new();
+    // Where each value is written, for a refusal of the condition as a whole.
+    let mut values = Vec::new();
     let mut shown = Vec::new();
     let pieces: Vec<&str> = text.split(',').collect();
     // Where each piece begins in `text`, past the commas before it.
@@ -117,37 +125,61 @@ pub fn parse_condition(
     for (k, piece) in pieces.iter().enumerate() {
         let at = start;
         start += piece.len() + 1;
-        if let Some(missing) = missing_beside_comma(&pieces, k, "a condition") {
-            return Err(format!(
-                "{missing}: a condition reads `variable = value`, such as \
-                 'p_theta = 2*I*omega/3'"
-            ));
-        }
-        let Some((lhs, rhs)) = piece.split_once('=') else {
-            // A blank condition is said to be empty, not echoed as ''.
-            let what = match piece.trim() {
-                "" => "the condition is empty".to_string(),
-                piece => trigpoly::quoted_name(piece),
+        // A comma with nothing after it (`M = 1,`), or before it (`, M = 1`).
+        if piece.trim().is_empty() && pieces.len() > 1 {
+            let (comma, side) = match k {
+                0 => (at + piece.len(), "before"),
+                _ => (at - 1, "after"),
             };
-            return Err(format!(
-                "{what}: a condition reads `variable = value`, such as 'p_theta = 2*I*omega/3'"
-            ));
-        };
-        if lhs.trim().is_empty() || rhs.trim().is_empty() {
-            return Err(format!(
-                "{}: a condition reads `variable = value`, such as 'p_theta = 2*I*omega/3'; one \
-                 side is empty",
-                trigpoly::quoted_name(piece.trim())
+            return Err(refuse(
+                comma..comma + 1,
+                format!("a condition is missing {side} this comma: {CONDITION_USAGE}"),
             ));
         }
-        let lhs = lhs.trim();
-        let Some(v) = vars.lookup(lhs) else {
-            return Err(format!(
-                "{} is not a variable of the system",
-                trigpoly::quoted_name(lhs)
+        let equals: Vec<usize> = piece.match_indices('=').map(|(i, _)| i).collect();
+        let [eq] = equals[..] else {
+            let span = match equals.get(1) {
+                Some(&second) => at + second..at + second + 1,
+                None => at..at + piece.len(),
+            };
+            return Err(refuse(span, CONDITION_USAGE.to_string()));
+        };
+        let (lhs, rhs) = (&piece[..eq], &piece[eq + 1..]);
+        // The empty side is underlined, as in a claim.
+        for (side, side_at) in [(lhs, at), (rhs, at + eq + 1)] {
+            if side.trim().is_empty() {
+                return Err(refuse(
+                    side_at..side_at + side.len(),
+                    format!("{CONDITION_USAGE}; one side is empty"),
+                ));
+            }
+        }
+        let name = lhs.trim();
+        let name_at = at + lhs.len() - lhs.trim_start().len();
+        let name_span = name_at..name_at + name.len();
+        let Some(v) = vars.lookup(name) else {
+            let settable: Vec<&str> = vars
+                .vars()
+                .filter(|&v| vars.variable(v).kind() != trigpoly::VarKind::Angle)
+                .map(|v| vars.variable(v).name())
+                .collect();
+            return Err(refuse(
+                name_span,
+                format!(
+                    "the left side of a condition is one declared variable (a coordinate, a \
+                     momentum or a parameter), found {}{}",
+                    trigpoly::quoted_name(name),
+                    trigpoly::did_you_mean_hint(name, &settable)
+                ),
             ));
         };
-        let value_at = at + piece.len() - rhs.trim_start().len();
+        if subs.iter().any(|(w, _)| *w == v) {
+            return Err(refuse(
+                name_span,
+                format!("{} is fixed twice", trigpoly::quoted_name(name)),
+            ));
+        }
+        let value_at = at + eq + 1 + rhs.len() - rhs.trim_start().len();
         let value = parse(rhs.trim(), value_at)?;
         shown.push(format!(
             "{} = {}",
@@ -155,8 +187,18 @@ pub fn parse_condition(
             value.render(Style::Unicode)
         ));
         subs.push((v, value));
+        values.push(value_at..value_at + rhs.trim().len());
     }
-    brackets::Condition::all(&shown.join(", "), subs).map_err(|e| e.to_string())
+    brackets::Condition::all(&shown.join(", "), subs.clone()).map_err(|e| {
+        // At the value of the variable it is about, else at the first.
+        let k = match &e {
+            EngineError::RefusedCondition { var, .. } => {
+                subs.iter().position(|(w, _)| w == var).unwrap_or(0)
+            }
+            _ => 0,
+        };
+        refuse(values[k].clone(), e.to_string())
+    })
 }
 
 /// The parameter called `name`; another name is refused with the parameters there are, and

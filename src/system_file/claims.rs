@@ -401,6 +401,11 @@ fn condition_texts(file: &LoadedSystem, when: &Spanned<When>) -> Result<Vec<Text
     Ok(pieces)
 }
 
+/// How a condition reads, with an example: the usage its refusals give, a file's and a
+/// built-in system's alike ([`crate::discovery::parse_condition`]).
+pub const CONDITION_USAGE: &str =
+    "a condition reads `variable = value`, such as \"p_theta = 2*I*omega/3\"";
+
 /// Reads conditions `var = value` (one per text) of `source` into one substitution.
 pub(crate) fn parse_condition(
     file: &LoadedSystem,
@@ -431,7 +436,7 @@ fn parse_condition_with(
     pieces: &[Text],
     check: impl Fn(&Condition) -> Result<(), EngineError>,
 ) -> Result<Condition, FileError> {
-    let usage = "a condition reads `variable = value`, such as \"p_theta = 2*I*omega/3\"";
+    let usage = CONDITION_USAGE;
     let vars = file.system.vars();
     let admit = |v: trigpoly::Var| {
         if vars.variable(v).kind() == VarKind::Angle {

@@ -55,7 +55,7 @@ mod text;
 mod tower;
 mod written;
 
-pub use claims::{CheckedClaim, ClaimForm, ClaimSpec};
+pub use claims::{CheckedClaim, ClaimForm, ClaimSpec, CONDITION_USAGE};
 pub use error::{ErrorKind, FileError, Location, Warning};
 pub use load::{load, load_bytes, load_str, read_bytes, MAX_FILE_BYTES};
 pub use names::{reserved, unwritable_letter, BadName, PrintedNames, Refusal};

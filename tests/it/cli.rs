@@ -1778,8 +1778,9 @@ fn cli_a_comma_with_no_assignment_after_it_is_underlined() {
             ]
             .map(String::from)
             .to_vec(),
-            "superint: error: --when: a condition is missing after the comma at column 6: a \
-             condition reads `variable = value`, such as 'p_theta = 2*I*omega/3'\n",
+            "superint: error: <command line>:1:6: a condition is missing after this comma: a \
+             condition reads `variable = value`, such as \"p_theta = 2*I*omega/3\"\n 1 | M = \
+             1,,omega = 2\n   |      ^\n",
         ),
     ] {
         let args: Vec<&str> = args.iter().map(String::as_str).collect();
@@ -1878,7 +1879,10 @@ fn cli_echoed_names_are_quoted_and_shortened_alike() {
         ),
         (
             vec!["closure", "--system", "harmonic", "L", "--when", &fix],
-            format!("--when: {quoted} is not a variable of the system"),
+            format!(
+                "the left side of a condition is one declared variable (a coordinate, a momentum \
+                 or a parameter), found {quoted}"
+            ),
         ),
         (
             vec!["expand", rotor, "x", "--when", &fix],
@@ -2049,22 +2053,74 @@ fn cli_names_from_a_file_are_quoted_and_shortened_alike() {
     }
 }
 
-/// A built-in system's --when of blanks alone is said to be empty, where it was echoed as
-/// '', and one with an empty side is said to have one, as a file's is, where the value's
-/// parser reported an end of input at line 1, column 1 of nothing shown.
+/// A built-in system's --when of blanks alone, or with an empty side, is refused as a file's
+/// is, where the value's parser reported an end of input at line 1, column 1 of nothing shown:
+/// at `<command line>:1:C:`, the numbered line and a caret under the blank.
 #[test]
 fn cli_a_builtin_systems_blank_condition_is_said_to_be_empty() {
-    let usage = "a condition reads `variable = value`, such as 'p_theta = 2*I*omega/3'";
+    let usage = "a condition reads `variable = value`, such as \"p_theta = 2*I*omega/3\"";
     for (when, message) in [
-        ("", format!("the condition is empty: {usage}")),
-        ("   ", format!("the condition is empty: {usage}")),
-        ("M = ", format!("'M =': {usage}; one side is empty")),
-        ("M = 1,  = 2", format!("'= 2': {usage}; one side is empty")),
+        ("", format!("1:1: {usage}\n 1 | \n   | ^")),
+        ("   ", format!("1:1: {usage}\n 1 |    \n   | ^^^")),
+        (
+            "M = ",
+            format!("1:4: {usage}; one side is empty\n 1 | M = \n   |    ^"),
+        ),
+        (
+            "M = 1,  = 2",
+            format!("1:7: {usage}; one side is empty\n 1 | M = 1,  = 2\n   |       ^^"),
+        ),
     ] {
         let o = superint(&["closure", "--system", "harmonic", "L", "--when", when]);
         assert_eq!(o.status.code(), Some(2), "{when:?}");
-        assert_eq!(stderr(&o), format!("superint: error: --when: {message}\n"));
+        assert_eq!(
+            stderr(&o),
+            format!("superint: error: <command line>:{message}\n")
+        );
     }
+}
+
+/// A malformed --when of a built-in system is refused in the words and the form of a file's,
+/// `<command line>:1:C:` with the numbered line and a caret: it was `--when: 'omega 1': a
+/// condition reads …` with no place, the variable set twice `the condition sets x twice`, and
+/// an unknown left side `'q' is not a variable of the system`, each other words than a file's.
+#[test]
+fn cli_a_builtin_systems_malformed_condition_reads_as_a_files() {
+    let degrees = [
+        "--momenta-degree",
+        "1",
+        "--positions-degree",
+        "1",
+        "--trig-degree",
+        "0",
+    ];
+    for when in [
+        "omega 1",
+        "omega == 1",
+        "q = 1",
+        "omga = 1",
+        "x = 1, x = 2",
+        ", omega = 1",
+        "p_theta = x, x = p_theta",
+    ] {
+        let run = |system: &[&str]| {
+            let o = superint(&[&["search"], system, &["--when", when], &degrees[..]].concat());
+            assert_eq!(o.status.code(), Some(2), "{when:?}");
+            stderr(&o)
+        };
+        let builtin = run(&["--system", "harmonic"]);
+        assert_eq!(builtin, run(&["systems/harmonic-rotor.toml"]), "{when:?}");
+        assert!(
+            builtin.starts_with("superint: error: <command line>:1:"),
+            "{builtin}"
+        );
+    }
+    let o = superint(&["search", "--system", "harmonic", "--when", "omega 1"]);
+    assert_eq!(
+        stderr(&o),
+        "superint: error: <command line>:1:1: a condition reads `variable = value`, such as \
+         \"p_theta = 2*I*omega/3\"\n 1 | omega 1\n   | ^^^^^^^\n"
+    );
 }
 
 /// A blank function name given to a table or a closure is refused as a blank expression is,

@@ -5873,7 +5873,7 @@ fn a_built_in_system_s_condition_error_points_into_the_condition() {
     let err = superint_refused(&["search", "--system", "harmonic", "--when", "ω = 1, x = (1"]);
     assert!(
         err.starts_with(
-            "superint: error: --when: <command line>:1:14: expected ')' to close '(' opened \
+            "superint: error: <command line>:1:14: expected ')' to close '(' opened \
              at column 12, found end of input\n 1 | ω = 1, x = (1\n   |              ^\n"
         ),
         "{err}"
