@@ -418,14 +418,28 @@ impl Subject {
         if let Some(what) = what {
             bail!("{option} {name}: {name} is {what}; choose another name");
         }
-        // Names run together that read as a product of the system's (`Mx`).
-        if self.parse(name).is_ok() {
+        // Names run together that read as a product of the system's (`Mx`), refused without
+        // the warning of how they read, which the refusal says.
+        if self.parses_unwarned(name) {
             bail!(
                 "{option} {name}: the system reads {name} as a product of its names; choose \
                  another name"
             );
         }
         Ok(())
+    }
+
+    /// Whether `src` parses, keeping no warning of how it reads.
+    fn parses_unwarned(&self, src: &str) -> bool {
+        match self {
+            Subject::File(f) => f.unwarned(|| self.parse(src).is_ok()),
+            Subject::Builtin(_, _, noted) => {
+                let kept = lock(noted).len();
+                let parses = self.parse(src).is_ok();
+                lock(noted).truncate(kept);
+                parses
+            }
+        }
     }
 
     /// Parses an expression: named functions, family instances, brackets. What it reads in

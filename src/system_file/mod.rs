@@ -500,6 +500,19 @@ impl LoadedSystem {
             .clone()
     }
 
+    /// `f`'s result, with the warnings of the texts it reads dropped: a test of a text that
+    /// is refused whatever it reads (a new name read as a product of the system's names) says
+    /// nothing of how it reads.
+    pub fn unwarned<T>(&self, f: impl FnOnce() -> T) -> T {
+        let kept = self.warnings().len();
+        let result = f();
+        self.warnings
+            .lock()
+            .unwrap_or_else(std::sync::PoisonError::into_inner)
+            .truncate(kept);
+        result
+    }
+
     /// Keeps `warning` unless one at its place is kept already.
     pub(crate) fn warn(&self, warning: Warning) {
         let mut kept = self

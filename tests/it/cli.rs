@@ -4449,3 +4449,28 @@ fn a_differential_display_takes_parentheses_before_a_factor() {
     let last = run(&["bracket", file, "dH^2*R", "H", "--no-timings"], 0);
     assert!(last.contains("= (4 H R + (∂H)² − 8 R²) ∂H\n"), "{last}");
 }
+
+/// A --define name that the system reads as a product of its names is refused without the
+/// warning of how it reads, which the refusal says: `G1x` was first warned of as the product
+/// G1 x, then refused. A text that is accepted (the value `G1x` of another name) still warns.
+#[test]
+fn cli_a_refused_define_name_is_not_warned_of_first() {
+    let refusal = "superint: error: --define G1x: the system reads G1x as a product of its \
+                   names; choose another name\n";
+    for system in [
+        &["--system", "harmonic"][..],
+        &["systems/harmonic-rotor.toml"][..],
+    ] {
+        let o = superint(&[&["closure"], system, &["G1x", "--define", "G1x=x"]].concat());
+        assert_eq!(o.status.code(), Some(2), "{system:?}");
+        assert_eq!(stderr(&o), refusal, "{system:?}");
+        let o = superint(&[&["closure"], system, &["L", "G1", "--define", "N=G1x"]].concat());
+        assert!(
+            stderr(&o).starts_with(
+                "superint: warning: <command line>:1:1: 'G1x' is read as the product G1 x"
+            ),
+            "{system:?}: {}",
+            stderr(&o)
+        );
+    }
+}
