@@ -9,7 +9,6 @@ use anyhow::{anyhow, bail, Context};
 use brackets::search::{SearchOptions, SearchSpace, DEFAULT_MAX_PRODUCTS};
 use brackets::System;
 use clap::Args;
-use std::sync::{Mutex, MutexGuard};
 use superint::discovery::{
     builtin_system, file_search_report, parse_condition, parse_fixed, parse_known, parse_symbolic,
     search_report_for,
@@ -17,18 +16,11 @@ use superint::discovery::{
 use superint::render::render;
 use superint::report::{with_article, Report};
 use superint::system_file::{what_is, BadName, Caller, LoadedSystem};
-use superint::system_file::{ErrorKind, FileError, Warning, COMMAND_LINE};
+use superint::system_file::{ErrorKind, FileError, Warning, Warnings, COMMAND_LINE};
 use trigpoly::{Expr, VarKind};
 
 use super::limits::LimitsArgs;
 use super::output::{emit, Output};
-
-/// The warnings kept, whatever a thread that panicked left.
-fn lock(noted: &Mutex<Vec<Warning>>) -> MutexGuard<'_, Vec<Warning>> {
-    noted
-        .lock()
-        .unwrap_or_else(std::sync::PoisonError::into_inner)
-}
 
 pub const EXAMPLES: &str = "\
 Examples:
@@ -286,8 +278,8 @@ pub enum Subject {
     /// A system file.
     File(Box<LoadedSystem>),
     /// A built-in system, with its name and what the command line's texts about it read in
-    /// doubt (names run together, [`Warning`]), as a file keeps its own.
-    Builtin(String, Box<System>, Mutex<Vec<Warning>>),
+    /// doubt (names run together, [`Warning`]), kept as a file keeps its own.
+    Builtin(String, Box<System>, Warnings),
 }
 
 impl Subject {
@@ -305,11 +297,9 @@ impl Subject {
                 format!("the built-in system {name} does not fit the limits given")
             })?;
             return match built {
-                Some((display, s)) => Ok(Subject::Builtin(
-                    display,
-                    Box::new(s),
-                    Mutex::new(Vec::new()),
-                )),
+                Some((display, s)) => {
+                    Ok(Subject::Builtin(display, Box::new(s), Warnings::default()))
+                }
                 None => bail!(
                     "unknown system {} (built-in: {})",
                     trigpoly::quoted_name(name),
@@ -330,7 +320,7 @@ impl Subject {
         match self {
             Subject::File(f) => super::output::warned(f, result),
             Subject::Builtin(_, _, noted) => {
-                super::output::print_warnings(&lock(noted));
+                super::output::print_warnings(&noted.list());
                 result
             }
         }
@@ -433,12 +423,7 @@ impl Subject {
     fn parses_unwarned(&self, src: &str) -> bool {
         match self {
             Subject::File(f) => f.unwarned(|| self.parse(src).is_ok()),
-            Subject::Builtin(_, _, noted) => {
-                let kept = lock(noted).len();
-                let parses = self.parse(src).is_ok();
-                lock(noted).truncate(kept);
-                parses
-            }
+            Subject::Builtin(_, _, noted) => noted.unwarned(|| self.parse(src).is_ok()),
         }
     }
 
@@ -471,7 +456,6 @@ impl Subject {
                         FileError::at(ErrorKind::Expression, COMMAND_LINE, text, span, e.message)
                             .to_string()
                     })?;
-                let mut kept = lock(noted);
                 for r in &readings {
                     let w = Warning::run_together(
                         COMMAND_LINE,
@@ -483,9 +467,7 @@ impl Subject {
                         false,
                     );
                     // Each place once, as a file keeps them.
-                    if !kept.contains(&w) {
-                        kept.push(w);
-                    }
+                    noted.warn(w);
                 }
                 Ok(e)
             }

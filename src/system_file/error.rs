@@ -252,6 +252,52 @@ impl Warning {
     }
 }
 
+/// The warnings of the texts read so far, in the order read, each once: a file's
+/// ([`LoadedSystem::warnings`](super::LoadedSystem::warnings)) and the command line's about a
+/// built-in system alike. A warning is kept once where the same is said of the same place of
+/// the same text: a file's text read again (a claim checked, a family instance expanded) adds
+/// none, while two command-line texts, each `<command line>:1:1:`, are two places.
+#[derive(Debug, Default)]
+pub struct Warnings(std::sync::Mutex<Vec<Warning>>);
+
+impl Warnings {
+    /// The warnings kept, whatever a thread that panicked left.
+    fn kept(&self) -> std::sync::MutexGuard<'_, Vec<Warning>> {
+        self.0
+            .lock()
+            .unwrap_or_else(std::sync::PoisonError::into_inner)
+    }
+
+    /// Keeps `warning` unless the same is kept already.
+    pub fn warn(&self, warning: Warning) {
+        let mut kept = self.kept();
+        if !kept.contains(&warning) {
+            kept.push(warning);
+        }
+    }
+
+    /// The warnings kept, in the order read.
+    pub fn list(&self) -> Vec<Warning> {
+        self.kept().clone()
+    }
+
+    /// `f`'s result, with the warnings it adds dropped: a test of a text that is refused
+    /// whatever it reads (a new name read as a product of the system's names) says nothing of
+    /// how it reads.
+    pub fn unwarned<T>(&self, f: impl FnOnce() -> T) -> T {
+        let before = self.kept().len();
+        let result = f();
+        self.kept().truncate(before);
+        result
+    }
+}
+
+impl Clone for Warnings {
+    fn clone(&self) -> Self {
+        Warnings(std::sync::Mutex::new(self.list()))
+    }
+}
+
 impl fmt::Display for Warning {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         let shown = FileError {

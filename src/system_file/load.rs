@@ -13,7 +13,7 @@ use toml::Spanned;
 use trigpoly::{AlgebraError, Expr, Limits, Var, VarKind, VarSet, VarSetBuilder, Vars};
 
 use super::claims::ClaimSpec;
-use super::error::{locate_bytes, ErrorKind, FileError};
+use super::error::{locate_bytes, ErrorKind, FileError, Warnings};
 use super::keys::unknown_key_hint;
 use super::model::{
     ExpectShape, FamilyModel, FunctionModel, PhaseSpaceModel, ShapeModel, StringTable, SystemModel,
@@ -1312,7 +1312,7 @@ impl<'a> Builder<'a> {
             limits,
             caller: super::Caller::Program,
             cache: Mutex::new(HashMap::new()),
-            warnings: Mutex::new(Vec::new()),
+            warnings: Warnings::default(),
             radicands: declared_radicals(model.phase_space.get_ref())
                 .iter()
                 .map(|(name, radicand)| (name.get_ref().clone(), radicand.get_ref().clone()))

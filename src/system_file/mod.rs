@@ -56,7 +56,7 @@ mod tower;
 mod written;
 
 pub use claims::{CheckedClaim, ClaimForm, ClaimSpec, CONDITION_USAGE};
-pub use error::{ErrorKind, FileError, Location, Warning};
+pub use error::{ErrorKind, FileError, Location, Warning, Warnings};
 pub use load::{load, load_bytes, load_str, read_bytes, MAX_FILE_BYTES};
 pub use names::{reserved, unwritable_letter, BadName, PrintedNames, Refusal};
 pub use plot::{Against, PlotFunctions, PlotInput, StartValue};
@@ -177,7 +177,7 @@ pub struct LoadedSystem {
     radicands: Vec<(String, String)>,
     /// The readings in doubt of the texts read so far ([`LoadedSystem::warnings`]), each place
     /// once.
-    warnings: Mutex<Vec<Warning>>,
+    warnings: Warnings,
 }
 
 /// The system, its source's origin and length, its families and claims by name and id, its
@@ -315,7 +315,7 @@ impl Clone for LoadedSystem {
             caller: self.caller,
             cache: Mutex::new(cache),
             radicands: self.radicands.clone(),
-            warnings: Mutex::new(self.warnings()),
+            warnings: self.warnings.clone(),
         }
     }
 }
@@ -346,7 +346,7 @@ impl LoadedSystem {
             caller: Caller::Program,
             cache: Mutex::new(HashMap::new()),
             radicands: Vec::new(),
-            warnings: Mutex::new(Vec::new()),
+            warnings: Warnings::default(),
         }
     }
 
@@ -494,38 +494,17 @@ impl LoadedSystem {
     /// # Ok::<(), superint::system_file::FileError>(())
     /// ```
     pub fn warnings(&self) -> Vec<Warning> {
-        self.warnings
-            .lock()
-            .unwrap_or_else(std::sync::PoisonError::into_inner)
-            .clone()
+        self.warnings.list()
     }
 
-    /// `f`'s result, with the warnings of the texts it reads dropped: a test of a text that
-    /// is refused whatever it reads (a new name read as a product of the system's names) says
-    /// nothing of how it reads.
+    /// `f`'s result, with the warnings of the texts it reads dropped ([`Warnings::unwarned`]).
     pub fn unwarned<T>(&self, f: impl FnOnce() -> T) -> T {
-        let kept = self.warnings().len();
-        let result = f();
-        self.warnings
-            .lock()
-            .unwrap_or_else(std::sync::PoisonError::into_inner)
-            .truncate(kept);
-        result
+        self.warnings.unwarned(f)
     }
 
-    /// Keeps `warning` unless one at its place is kept already.
+    /// Keeps `warning` unless the same is kept already ([`Warnings::warn`]).
     pub(crate) fn warn(&self, warning: Warning) {
-        let mut kept = self
-            .warnings
-            .lock()
-            .unwrap_or_else(std::sync::PoisonError::into_inner);
-        if !kept.iter().any(|w| {
-            w.origin == warning.origin
-                && w.line_col() == warning.line_col()
-                && w.message == warning.message
-        }) {
-            kept.push(warning);
-        }
+        self.warnings.warn(warning);
     }
 
     /// What `name` already names in this system, for a message that refuses it as a new

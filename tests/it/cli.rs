@@ -4474,3 +4474,32 @@ fn cli_a_refused_define_name_is_not_warned_of_first() {
         );
     }
 }
+
+/// A file and a built-in system keep the command line's warnings by one rule
+/// (`system_file::Warnings`): the same said of the same place of the same text once, and two
+/// texts, each `<command line>:1:1:`, as two places. A file kept one warning of `G1x` and
+/// `G1x + 1`, whose places were both 1:1, where a built-in system kept two.
+#[test]
+fn cli_a_file_and_a_built_in_system_keep_the_command_line_s_warnings_alike() {
+    for system in [
+        &["--system", "harmonic"][..],
+        &["systems/harmonic-rotor.toml"][..],
+    ] {
+        let args = ["L", "G1", "--define", "N=G1x", "--define", "N2=G1x + 1"];
+        let o = superint(&[&["closure"], system, &args[..]].concat());
+        assert_eq!(o.status.code(), Some(0), "{system:?}: {}", stderr(&o));
+        let err = stderr(&o);
+        let warnings: Vec<&str> = err.split("superint: warning: ").skip(1).collect();
+        assert_eq!(warnings.len(), 2, "{system:?}: {err}");
+        for (warning, line) in warnings.iter().zip(["G1x", "G1x + 1"]) {
+            assert!(
+                warning.starts_with("<command line>:1:1: 'G1x' is read as the product G1 x, "),
+                "{system:?}: {err}"
+            );
+            assert!(
+                warning.ends_with(&format!(" for the product\n 1 | {line}\n   | ^^^\n")),
+                "{system:?}: {err}"
+            );
+        }
+    }
+}
