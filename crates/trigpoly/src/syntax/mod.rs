@@ -500,7 +500,16 @@ mod tests {
         ("cos³^{2}(θ)", (1, 5), "'^{2}' after 'cos³', which has a superscript already, is \
                                  ambiguous: it may raise the power or its exponent; write the \
                                  exponent in one group"),
+        // So may one after the function's exponent in LaTeX, which LaTeX itself refuses as
+        // a double superscript; it was taken for `sin^2 theta` too.
+        ("\\sin^{2}^{3}\\theta", (1, 9), "'^{3}' after '\\sin^{2}', which has a superscript \
+                                          already, is ambiguous: it may raise the power or its \
+                                          exponent; write the exponent in one group"),
+        ("\\cos^{2}^3(\\theta)", (1, 9), "'^3' after '\\cos^{2}', which has a superscript \
+                                          already, is ambiguous: it may raise the power or its \
+                                          exponent; write the exponent in one group"),
         ("sin²^", (1, 6), "expected an expression after '^', found end of input"),
+        ("\\sin^{2}^", (1, 10), "expected an expression after '^', found end of input"),
         // A power of the angle after a power of its function: `(sin²θ)³` or `sin²(θ³)`.
         ("sin²θ^3", (1, 5), "'sin²θ' followed by a power is ambiguous: write (sin²θ)^3 for a \
                              power of sin²θ, or sin²(θ^3) for sin² of θ^3"),

@@ -190,7 +190,8 @@ fn parse_source(src: &str, names: &dyn Reading) -> Result<Expr, ParseError> {
     }
 }
 
-/// How a `^` after a superscript character reads with it, `r²^3` or `sin²^3θ`, in the
+/// How a `^` after a superscript character reads with it, `r²^3` or `sin²^3θ` (or after a
+/// function's exponent in LaTeX, `\sin^{2}^{3}\theta`), in the
 /// refusals of [`Parser::caret_after_superscript`] and [`Parser::trig_without_parens`].
 const RAISES_EITHER: &str = "it may raise the power or its exponent";
 
@@ -799,7 +800,6 @@ impl Parser<'_> {
     /// Parses `cos θ` or `cos²θ` (a power written between the function and its argument), as
     /// the text form prints them.
     fn trig_without_parens(&mut self, name: String, span: Span) -> PResult<Expr> {
-        let raised = matches!(self.tok.tok, Tok::Sup { .. });
         let power = match self.tok.tok {
             Tok::Sup { .. } => Some(self.superscript()?),
             // `\cos^{3}\theta`, as LaTeX writes a power of it.
@@ -818,9 +818,10 @@ impl Parser<'_> {
                 let (second, set) = self.second_superscript();
                 return Err(self.after_raised_function(function, second, set));
             }
-            // A `^` after a superscript character, `sin²^3θ`, may raise the power, (sin²)³,
-            // or its exponent, sin^(2³), as after `r²^3`: neither is guessed.
-            if raised && self.tok.tok == Tok::Caret {
+            // A `^` after the function's superscript, a character, `sin²^3θ`, or an exponent,
+            // `\sin^{2}^{3}\theta`, may raise the power, (sin²)³, or its exponent, sin^(2³),
+            // as after `r²^3`: neither is guessed.
+            if self.tok.tok == Tok::Caret {
                 let second = self.caret_and_exponent()?;
                 return Err(self.after_raised_function(function, second, RAISES_EITHER));
             }
