@@ -10,7 +10,9 @@ use std::cell::RefCell;
 use std::collections::HashMap;
 
 use num_bigint::BigInt;
-use trigpoly::syntax::{is_name_continue, is_name_start, Expr as Tree, ExprKind, ParseError};
+use trigpoly::syntax::{
+    is_name_continue, is_name_start, Expr as Tree, ExprKind, ParseError, NOT_IN_NAME,
+};
 use trigpoly::{Context, Expr, GaussianRational, Span, VarKind};
 
 use super::error::{ErrorKind, FileError, Warning};
@@ -690,6 +692,7 @@ impl<'a> Scope<'a> {
     fn display_error(&self, source: &Source, text: &Text, e: &ParseError) -> FileError {
         let misread = [
             "unexpected character",
+            NOT_IN_NAME,
             "unknown name",
             "unknown LaTeX command",
         ];

@@ -1370,6 +1370,23 @@ fn cli_a_display_raised_by_a_superscript_names_the_function() {
     }
 }
 
+/// A display written in a name's braces, `x_{ω̄}`, names its function as one written apart
+/// does, while other text there, `p_{\left(}`, is refused with what the braces hold and where
+/// they open (it was an unexpected character '(' at the parenthesis, past its `\left`).
+#[test]
+fn cli_a_name_s_braces_say_what_they_hold_and_a_display_in_them_names_the_function() {
+    let file = "systems/fock-darwin-rotor.toml";
+    let o = superint(&["expand", file, "--", "x_{ω̄}"]);
+    assert_eq!(o.status.code(), Some(2));
+    let wanted = "'ω̄' is how the function omegabar is printed; an expression names it omegabar";
+    assert!(stderr(&o).contains(wanted), "{}", stderr(&o));
+    let o = superint(&["expand", file, "--", r"p_{\left(}"]);
+    assert_eq!(o.status.code(), Some(2));
+    let wanted = "<command line>:1:4: expected a letter, a digit or '}' in the name's braces \
+                  opened at line 1, column 3, found '\\left('";
+    assert!(stderr(&o).contains(wanted), "{}", stderr(&o));
+}
+
 /// A family's index may be written with leading zeros, which do not count toward its nine
 /// digits: `K_{0000000000001,1}` is `K_{1,1}` (it was refused as an index too long).
 #[test]

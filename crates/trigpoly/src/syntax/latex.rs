@@ -11,7 +11,7 @@
 //! of `Zbar`) is told by the system's names, where its LaTeX spells it
 //! ([`latex_name`] of the LaTeX it prints).
 
-use super::error::{ParseError, Span};
+use super::error::{line_col, ParseError, Span};
 use super::lexer::{superscript_digit, Lexer, Tok};
 use super::parser::{too_deep, MAX_DEPTH};
 use crate::varset::letter_of_command;
@@ -31,6 +31,15 @@ pub(super) const SIZING_OPEN: &[&str] = &[
 /// The sizing commands that close a pair, which likewise take a delimiter: `\right)`,
 /// `\bigr\}`.
 const SIZING_CLOSE: &[&str] = &["right", "bigr", "Bigr", "biggr", "Biggr"];
+
+/// How the refusal of what is no part of a name in a name's braces begins, `p_{\left(}`,
+/// `p_{x$}`, which the system file's scope reads for a display written there (`x_{ω̄}`).
+pub const NOT_IN_NAME: &str = "expected a letter, a digit or '}' in the name's braces";
+
+/// Whether `word` is a sizing command, [`SIZING_OPEN`] or [`SIZING_CLOSE`].
+fn is_sizing(word: &str) -> bool {
+    SIZING_OPEN.contains(&word) || SIZING_CLOSE.contains(&word)
+}
 
 /// What LaTeX takes for a delimiter after a sizing command: a character (`.` is the empty
 /// one, `\left.`) or a command; superint reads `(`, `)`, `\{` and `\}`, and refuses the
@@ -151,7 +160,7 @@ impl Lexer<'_> {
             return Ok(None);
         };
         let closing = SIZING_CLOSE.contains(&word);
-        let sizing = closing || SIZING_OPEN.contains(&word);
+        let sizing = is_sizing(word);
         let space = matches!(word, "," | ";" | ":" | "!" | " ") || IGNORED.contains(&word);
         if !space && !sizing {
             return Ok(None);
@@ -375,19 +384,27 @@ impl Lexer<'_> {
                     out.push('_');
                 }
                 '{' => out.push_str(&self.group_at(self.pos)?),
-                '\\' => match Self::latex_space(rest, self.pos)? {
-                    Some(len) => self.pos += len,
-                    None => match command(rest) {
-                        // An operator, `\frac`, `\{`: no part of a name, as `/` is none.
-                        Some((word, len)) if command_token(word).is_some() => {
-                            let span = Span::new(self.pos, self.pos + len);
-                            return Err(ParseError::new(
-                                span,
-                                format!("unexpected '\\{word}' in a name's braces"),
-                            ));
-                        }
-                        _ => out.push_str(&self.latex_base()?),
-                    },
+                '\\' => match (Self::latex_space(rest, self.pos)?, command(rest)) {
+                    // A sizing command and its delimiter, `\left(`: no part of a name, as `(`
+                    // is none; it was skipped as a space, and the delimiter quoted alone.
+                    (Some(len), Some((word, _))) if is_sizing(word) => {
+                        let after = &rest[len..];
+                        let delimiter = after.trim_start();
+                        let spaces = after.len() - delimiter.len();
+                        let width = command(delimiter).map_or_else(
+                            || delimiter.chars().next().map_or(0, char::len_utf8),
+                            |(_, width)| width,
+                        );
+                        let span = Span::new(self.pos, self.pos + len + spaces + width);
+                        return Err(self.not_in_name(open, span));
+                    }
+                    (Some(len), _) => self.pos += len,
+                    // An operator, `\frac`, `\{`: no part of a name, as `/` is none.
+                    (None, Some((word, len))) if command_token(word).is_some() => {
+                        let span = Span::new(self.pos, self.pos + len);
+                        return Err(self.not_in_name(open, span));
+                    }
+                    (None, _) => out.push_str(&self.latex_base()?),
                 },
                 '+' | '-' | '\'' => {
                     self.pos += 1;
@@ -399,12 +416,24 @@ impl Lexer<'_> {
                 }
                 c => {
                     let span = Span::new(self.pos, self.pos + c.len_utf8());
-                    return Err(ParseError::new(
-                        span,
-                        format!("unexpected character {c:?} in a name's braces"),
-                    ));
+                    return Err(self.not_in_name(open, span));
                 }
             }
         }
+    }
+
+    /// The error for the text at `span`, no part of a name, in the braces of a name opened at
+    /// byte `open`: what they hold, and where they open.
+    fn not_in_name(&self, open: usize, span: Span) -> ParseError {
+        let (line, col) = line_col(self.src, open);
+        let at = match line == line_col(self.src, span.start).0 {
+            true => format!("column {col}"),
+            false => format!("line {line}, column {col}"),
+        };
+        let found = &self.src[span.start..span.end];
+        ParseError::new(
+            span,
+            format!("{NOT_IN_NAME} opened at {at}, found '{found}'"),
+        )
     }
 }

@@ -22,7 +22,7 @@ mod lexer;
 mod parser;
 
 pub use error::{Excerpt, ParseError, Span};
-pub use latex::latex_name;
+pub use latex::{latex_name, NOT_IN_NAME};
 pub use lexer::{is_name_continue, is_name_start};
 pub use parser::{parse_expr, Expr, ExprKind, LEFT_DEEP_SUM, MAX_DEPTH, MAX_HEIGHT};
 // What the names read as, for the parser's refusals: the lowering's alone
@@ -417,10 +417,21 @@ mod tests {
                                     name in braces, p_{x}"),
         ("p_\\,x", (1, 2), "expected a subscript after '_': a letter, a digit, or a name in \
                             braces, p_{x}"),
-        ("p_{\\cdot}", (1, 4), "unexpected '\\cdot' in a name's braces"),
-        ("\\bar{\\{x}", (1, 6), "unexpected '\\{' in a name's braces"),
+        ("p_{\\cdot}", (1, 4), "expected a letter, a digit or '}' in the name's braces opened \
+                                at column 3, found '\\cdot'"),
+        ("\\bar{\\{x}", (1, 6), "expected a letter, a digit or '}' in the name's braces \
+                                opened at column 5, found '\\{'"),
         ("p_{x + 1", (1, 3), "the '{' of this name is never closed: expected '}'"),
-        ("p_{x$}", (1, 5), "unexpected character '$' in a name's braces"),
+        ("p_{x$}", (1, 5), "expected a letter, a digit or '}' in the name's braces opened at \
+                            column 3, found '$'"),
+        // A sizing command is quoted with its delimiter: it was skipped as a space, and the
+        // delimiter refused alone.
+        ("p_{\\left(}", (1, 4), "expected a letter, a digit or '}' in the name's braces \
+                                 opened at column 3, found '\\left('"),
+        ("p_{x\\bigr \\}}", (1, 5), "expected a letter, a digit or '}' in the name's braces \
+                                    opened at column 3, found '\\bigr \\}'"),
+        ("\\omega_{\n\\left.}", (2, 1), "expected a letter, a digit or '}' in the name's \
+                                        braces opened at line 1, column 8, found '\\left.'"),
         ("\\omega_ + 1", (1, 7), "expected a subscript after '_': a letter, a digit, or a name \
                                  in braces, p_{x}"),
         ("\\bar{} + 1", (1, 1), "'\\bar{}' holds no name"),
