@@ -481,6 +481,16 @@ mod tests {
                                  sin²theta or sin(theta)^2 for the square of sin theta"),
         ("cos θ^{2}", (1, 5), "'cos θ' followed by a power is ambiguous: write cos²θ or \
                                cos(θ)^2 for the square of cos θ"),
+        // Written in LaTeX, the function or its angle is quoted and squared as written (it was
+        // quoted by its names, 'cos cos', with cos²cos to write).
+        ("\\cos cos²", (1, 6), "'\\cos cos' followed by a power is ambiguous: write \
+                                \\cos^{2} cos or \\cos(cos)^{2} for the square of \\cos cos"),
+        ("\\cos\\theta^{2}", (1, 5), "'\\cos\\theta' followed by a power is ambiguous: \
+                                      write \\cos^{2}\\theta or \\cos(\\theta)^{2} for the \
+                                      square of \\cos\\theta"),
+        ("cos \\theta²", (1, 5), "'cos \\theta' followed by a power is ambiguous: write \
+                                  cos^{2} \\theta or cos(\\theta)^{2} for the square of \
+                                  cos \\theta"),
         // Another power is no square: both readings are written, as after a power of the
         // function.
         ("sin θ³", (1, 5), "'sin θ' followed by a power is ambiguous: write (sin θ)³ for a \

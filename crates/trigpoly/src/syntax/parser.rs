@@ -878,7 +878,8 @@ impl Parser<'_> {
     /// `(sin²θ)³` or `sin²(θ³)`, as LaTeX reads `\sin^2\theta^3`, and `sin θ³` `(sin θ)³` or
     /// `sin(θ³)`; the message writes both readings in the source's own spelling
     /// (`(\sin^{2}\theta)^{3}`), but for the square of a function not raised, `unpowered`
-    /// (its name and angle), which it writes `sin²θ` or `sin(θ)^2`. A missing exponent,
+    /// (its name and angle), which it writes `sin²θ` or `sin(θ)^2`, or where either is
+    /// written in LaTeX, as written, `\sin^{2}\theta` or `\sin(\theta)^{2}`. A missing exponent,
     /// `sin²θ^`, is refused as after any other base ([`Self::exponent_after_caret`]).
     #[cold]
     fn power_of_bare_angle(
@@ -901,18 +902,27 @@ impl Parser<'_> {
                 Err(missing) => return missing,
             },
         };
-        if let (Some((function, arg)), true) = (unpowered, square) {
-            return ParseError::new(
-                Span::new(angle.start, end),
-                format!(
-                    "'{function} {arg}' followed by a power is ambiguous: write {function}²{arg} \
-                     or {function}({arg})^2 for the square of {function} {arg}"
-                ),
-            );
-        }
         let function = self.src[name.start..angle.start].trim_end();
         let written = &self.src[name.start..angle.end];
         let arg = &self.src[angle.start..angle.end];
+        if let (Some(names), true) = (unpowered, square) {
+            let function = &self.src[name.start..name.end];
+            let between = &self.src[name.end..angle.start];
+            let message = if names == (function, arg) {
+                format!(
+                    "'{function} {arg}' followed by a power is ambiguous: write {function}²{arg} \
+                     or {function}({arg})^2 for the square of {function} {arg}"
+                )
+            } else {
+                // Written in LaTeX, `\cos\theta`, `\cos cos`: quoted and squared as written.
+                format!(
+                    "'{written}' followed by a power is ambiguous: write \
+                     {function}^{{2}}{between}{arg} or {function}({arg})^{{2}} for the square of \
+                     {written}"
+                )
+            };
+            return ParseError::new(Span::new(angle.start, end), message);
+        }
         let power = &self.src[start..end];
         ParseError::new(
             Span::new(angle.start, end),
