@@ -13,7 +13,7 @@ pub use names::{
     shown_forms, shown_text, unbarred, with_indices, BadName, LATEX_LETTERS, MAX_NAME_CHARS,
     RESERVED,
 };
-pub(crate) use names::{letter_of_command, long_name, unparenthesized};
+pub(crate) use names::{letter_of_char, letter_of_command, long_name, unparenthesized};
 use names::{render_momentum, render_name, spell_out};
 
 /// What a variable is in a phase space; only `Angle` changes the algebra.

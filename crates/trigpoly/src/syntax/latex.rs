@@ -14,7 +14,7 @@
 use super::error::{line_col, ParseError, Span};
 use super::lexer::{superscript_digit, Lexer, Tok};
 use super::parser::{too_deep, MAX_DEPTH};
-use crate::varset::letter_of_command;
+use crate::varset::{letter_of_char, letter_of_command};
 
 /// Commands that space or set a style and mean nothing to an expression: `\quad`,
 /// `\displaystyle`; the sizing commands, [`SIZING_OPEN`] and [`SIZING_CLOSE`], mean nothing
@@ -317,7 +317,7 @@ impl Lexer<'_> {
             Some('\\') if name_command => self.latex_base(),
             Some(c) if c.is_alphanumeric() => {
                 self.pos += c.len_utf8();
-                Ok(c.to_string())
+                Ok(letter_of_char(c).to_string())
             }
             _ => {
                 let end = match command(rest) {
@@ -412,7 +412,7 @@ impl Lexer<'_> {
                 }
                 c if c.is_alphanumeric() => {
                     self.pos += c.len_utf8();
-                    out.push(c);
+                    out.push(letter_of_char(c));
                 }
                 c => {
                     let span = Span::new(self.pos, self.pos + c.len_utf8());

@@ -9,6 +9,7 @@
 use num_bigint::BigInt;
 
 use super::error::{ParseError, Span};
+use crate::varset::letter_of_char;
 
 /// The kind of a token, with its value for literals, names and superscripts.
 #[derive(Clone, Debug, PartialEq, Eq)]
@@ -151,7 +152,10 @@ impl<'a> Lexer<'a> {
             }
             c if is_name_start(c) => {
                 self.eat_while(is_name_continue);
-                let name = self.src[start..self.pos].to_string();
+                let name = self.src[start..self.pos]
+                    .chars()
+                    .map(letter_of_char)
+                    .collect();
                 Tok::Name(self.name_rest(name, false)?)
             }
             '\\' => self.latex_token(start)?,

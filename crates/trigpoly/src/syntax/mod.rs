@@ -276,6 +276,13 @@ mod tests {
                 r"\exp(i\varphi) - \exp\left(i \phi\right)",
                 "(- (exp (* i φ)) (exp (* i φ)))",
             ),
+            // Both forms of epsilon and of phi, in LaTeX and in Unicode, are one letter each
+            // (the lunate ϵ and the curly ϕ, which LaTeX sets for \epsilon and \phi, were
+            // names of their own that no system could declare).
+            (
+                r"\epsilon \varepsilon ε ϵ + p_{ϵ} + x_ϵ ϕ²",
+                "(+ (+ (* (* (* ε ε) ε) ε) p_ε) (* x_ε (^ φ 2)))",
+            ),
             (r"\cos\theta + \sin \varphi", "(+ (cos θ) (sin φ))"),
             (
                 r"\cos^{3}\theta \sin(2\theta)",

@@ -375,6 +375,18 @@ pub(crate) fn letter_of_command(command: &str) -> Option<&'static str> {
     }
 }
 
+/// The letter a name reads `c` as: the lunate epsilon `ϵ` and the curly phi `ϕ`, which
+/// LaTeX sets for `\epsilon` and `\phi`, are the letters `ε` and `φ` (as both of LaTeX's forms
+/// are, [`letter_of_command`]), which a name declares and the output prints; any other
+/// character is itself.
+pub(crate) fn letter_of_char(c: char) -> char {
+    match c {
+        'ϵ' => 'ε',
+        'ϕ' => 'φ',
+        c => c,
+    }
+}
+
 /// A unicode name with its Greek letters spelled out, piece by piece between underscores and
 /// before trailing digits: `p_θ` → `p_theta`, `ω1` → `omega1`, `Ω_x` → `Omega_x`; `None` for an
 /// ASCII name, which has none.
