@@ -177,13 +177,13 @@ impl LoadedSystem {
         });
         // Read at (1, 1), as a file's family is when it loads.
         let k = self.families.len() - 1;
-        let checked =
-            self.scope(k + 1)
-                .expand(k, 1, 1, &source, 0..0)
-                .and_then(|_| match eigenvalue {
-                    Some(_) => self.eigenvalue_at(k, 1, 1).map(drop),
-                    None => Ok(()),
-                });
+        let checked = self
+            .scope(k + 1)
+            .expand(k, 1, 1, &source, || 0..0)
+            .and_then(|_| match eigenvalue {
+                Some(_) => self.eigenvalue_at(k, 1, 1).map(drop),
+                None => Ok(()),
+            });
         if let Err(e) = checked {
             self.families.pop();
             self.forget_instances(k);

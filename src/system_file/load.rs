@@ -1485,10 +1485,10 @@ impl<'a> Builder<'a> {
                     )
                 })
             };
-            if let Err(e) = file.scope(k + 1).expand(k, 1, 1, &self.source, 0..0) {
+            if let Err(e) = file.scope(k + 1).expand(k, 1, 1, &self.source, || 0..0) {
                 // A value that fails at (1, 1) but not at (2, 2) (`(x + y)^(m - 2)`, a negative
                 // power there, `x^(m/2)`, a root) fails for its indices: say which.
-                let at_two = file.scope(k + 1).expand(k, 2, 2, &self.source, 0..0);
+                let at_two = file.scope(k + 1).expand(k, 2, 2, &self.source, || 0..0);
                 let e = match (&e.hint, at_two) {
                     (None, Ok(_)) => {
                         let [m, n] = &file.families[k].indices;

@@ -473,7 +473,7 @@ impl LoadedSystem {
     /// [`LoadedSystem::family`]).
     pub fn family_instance(&self, family: usize, m: i64, n: i64) -> Result<Expr, FileError> {
         self.scope(self.families.len())
-            .expand(family, m, n, &self.source, 0..0)
+            .expand(family, m, n, &self.source, || 0..0)
     }
 
     /// The texts read so far (the file's, as it loaded and as its claims are checked, and

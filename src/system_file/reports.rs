@@ -677,7 +677,7 @@ fn with_instances(
         let given = file.given("<name>", name);
         let value = file
             .scope(file.families.len())
-            .expand(k, m, n, &given, 0..name.len())?;
+            .expand(k, m, n, &given, || 0..name.len())?;
         let display = format!("{}_{{{m},{n}}}", file.families[k].display);
         system.define(name, &display, value)?;
     }

@@ -958,7 +958,7 @@ impl<'a> Scope<'a> {
                     ),
                 ));
             }
-            let e = self.expand(k, m, n, source, text.source_span(span))?;
+            let e = self.expand(k, m, n, source, || text.source_span(span))?;
             self.made.borrow_mut().insert(name.to_string(), e);
         } else if let Some(family) = meant_family(&self.file.families, name)
             // In a family's own text, what is no instance of it (`K_b_1_2` in `K`'s) is left
@@ -985,15 +985,15 @@ impl<'a> Scope<'a> {
     }
 
     /// The instance `(m, n)` of family `k`, expanded in a scope that sees the families before
-    /// it; an error is reported at `used_at` in `source` (where the instance is used), with
-    /// the place of the family in the hint.
+    /// it; an error is reported at `used_at` in `source` (where the instance is used, asked
+    /// only for an error), with the place of the family in the hint.
     pub(crate) fn expand(
         &self,
         k: usize,
         m: i64,
         n: i64,
         source: &Source,
-        used_at: std::ops::Range<usize>,
+        used_at: impl FnOnce() -> std::ops::Range<usize>,
     ) -> Result<Expr, FileError> {
         if let Some(e) = self.cache().get(&(k, m, n)) {
             return Ok(e.clone());
@@ -1004,8 +1004,11 @@ impl<'a> Scope<'a> {
                 self.cache().insert((k, m, n), e.clone());
                 Ok(e)
             }
-            Err(inner) if used_at.is_empty() => Err(inner),
             Err(inner) => {
+                let used_at = used_at();
+                if used_at.is_empty() {
+                    return Err(inner);
+                }
                 let at = inner
                     .location
                     .as_ref()
