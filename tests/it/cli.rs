@@ -4520,3 +4520,36 @@ fn cli_a_file_and_a_built_in_system_keep_the_command_line_s_warnings_alike() {
         }
     }
 }
+
+/// A closure's generator shown by a display with a precomposed bar (`Ā_x`, U+0100) prints in
+/// the equations as the display is written, as the table and the claims write it, and no
+/// note says that it stands for itself: its symbol was `A` and a combining bar, which the note
+/// compared with the display and found different, and which the equations printed.
+#[test]
+fn cli_closure_prints_a_precomposed_bar_as_its_display_writes_it() {
+    let file = "systems/anisotropic-3-5-rotor.toml";
+    for args in [
+        vec!["closure", file, "Ax", "Axbar", "Hx", "--no-timings"],
+        vec![
+            "closure",
+            "--system",
+            "anisotropic-3-5",
+            "Ax",
+            "Axbar",
+            "Hx",
+            "--no-timings",
+        ],
+    ] {
+        let out = run(&args, 0);
+        assert!(!out.contains("stands for"), "{args:?}\n{out}");
+        assert!(!out.contains("A\u{304}"), "{args:?}\n{out}");
+        for line in [
+            "    Ā_x   │ −6iMω      0         −3iω Ā_x\n",
+            "    H_x   │ −3iω A_x   3iω Ā_x   0\n",
+            "  {Ā_x, H_x} = −3iω Ā_x ",
+            "  2M H_x = A_x Ā_x ",
+        ] {
+            assert!(out.contains(line), "{args:?}: {line}\n{out}");
+        }
+    }
+}

@@ -784,11 +784,14 @@ impl VarSetBuilder {
     /// in LaTeX, for a variable named `Ax`), when `display` is an identifier, possibly with a
     /// bar (a combining macron, `Z̄`) and primes (`G1'`, `G_{1}'`), or words of those (`Re K`:
     /// [`shown_forms`]); otherwise, or with nothing
-    /// declared, changes nothing. Its ASCII form stays its name, which reads back.
-    /// [`VarSetBuilder::build`] refuses two variables shown alike.
+    /// declared, changes nothing. Its ASCII form stays its name, which reads back. Its text is
+    /// the display as [`shown_text`] prints it everywhere else, a precomposed barred letter
+    /// kept as written (`Ā_x`, not `A` and a combining bar, which a comparison with the
+    /// display would find different). [`VarSetBuilder::build`] refuses two variables shown
+    /// alike.
     pub fn shown_as(self, display: &str) -> Self {
         match shown_forms(display) {
-            Some((unicode, latex)) => self.printed_as(&unicode, &latex),
+            Some((_, latex)) => self.printed_as(&shown_text(display), &latex),
             None => self,
         }
     }
