@@ -510,7 +510,9 @@ pub(crate) fn expression_error(source: &Source, text: &Text, e: &ParseError) -> 
 }
 
 /// The parser says where an unclosed bracket was opened in the expression's own lines and
-/// columns (`opened at column 7`); this says it in the file's.
+/// columns (`opened at column 7`); this says it in the file's (`opened at line 10, column
+/// 16`). A text of the command line is said as the parser says it of a built-in system's: the
+/// column alone where the bracket opens on the line of the error, `opened at column 5`.
 fn relocate_opener(source: &Source, text: &Text, e: &ParseError) -> String {
     const MARK: &str = " opened at ";
     let Some(k) = e.message.find(MARK) else {
@@ -551,13 +553,12 @@ fn relocate_opener(source: &Source, text: &Text, e: &ParseError) -> String {
     };
     let at = text.source_span(Span::new(line_start + offset, line_start + offset + 1));
     let loc = super::error::locate(&source.text, at);
-    format!(
-        "{}{MARK}line {}, column {}{}",
-        &e.message[..k],
-        loc.line,
-        loc.column,
-        &rest[comma..]
-    )
+    let error_line = || super::error::locate(&source.text, text.source_span(e.span)).line;
+    let place = match source.origin == super::COMMAND_LINE && loc.line == error_line() {
+        true => format!("column {}", loc.column),
+        false => format!("line {}, column {}", loc.line, loc.column),
+    };
+    format!("{}{MARK}{place}{}", &e.message[..k], &rest[comma..])
 }
 
 impl<'a> Scope<'a> {

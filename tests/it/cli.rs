@@ -1383,7 +1383,7 @@ fn cli_a_name_s_braces_say_what_they_hold_and_a_display_in_them_names_the_functi
     let o = superint(&["expand", file, "--", r"p_{\left(}"]);
     assert_eq!(o.status.code(), Some(2));
     let wanted = "<command line>:1:4: expected a letter, a digit or '}' in the name's braces \
-                  opened at line 1, column 3, found '\\left('";
+                  opened at column 3, found '\\left('";
     assert!(stderr(&o).contains(wanted), "{}", stderr(&o));
 }
 
@@ -4550,6 +4550,68 @@ fn cli_closure_prints_a_precomposed_bar_as_its_display_writes_it() {
             "  2M H_x = A_x Ā_x ",
         ] {
             assert!(out.contains(line), "{args:?}: {line}\n{out}");
+        }
+    }
+}
+
+/// Where an unclosed parenthesis of a text given on the command line opens is said alike for
+/// a system file and a built-in system, as the parser says it: the column alone on the line of
+/// the error, `opened at column 5`, else its line too (a file's text said `opened at line 1,
+/// column 5` where a built-in system's said `opened at column 5`).
+#[test]
+fn cli_an_unclosed_parenthesis_opens_at_the_same_place_for_a_file_and_a_built_in_system() {
+    let degrees = [
+        "--momenta-degree",
+        "1",
+        "--positions-degree",
+        "1",
+        "--trig-degree",
+        "0",
+    ];
+    let cases: [(&[&str], &[&str], &str); 4] = [
+        (
+            &["search"],
+            &["--when", "x = (1"],
+            "<command line>:1:7: expected ')' to close '(' opened at column 5, found end of \
+             input\n 1 | x = (1\n   |       ^\n",
+        ),
+        (
+            &["search"],
+            &["--when", "x = 1, M = (2"],
+            "<command line>:1:14: expected ')' to close '(' opened at column 12, found end of \
+             input\n 1 | x = 1, M = (2\n   |              ^\n",
+        ),
+        (
+            &["closure"],
+            &["L", "--define", "E=x + (1"],
+            "--define E: <command line>:1:7: expected ')' to close '(' opened at column 5, \
+             found end of input\n 1 | x + (1\n   |       ^\n",
+        ),
+        (
+            &["closure"],
+            &["L", "--when", "x = (1\n+ 2"],
+            "<command line>:2:4: expected ')' to close '(' opened at line 1, column 5, found \
+             end of input\n 2 | + 2\n   |    ^\n",
+        ),
+    ];
+    for (command, rest, message) in cases {
+        for system in [
+            &["systems/harmonic-rotor.toml"][..],
+            &["--system", "harmonic"][..],
+        ] {
+            let mut args: Vec<&str> = command.to_vec();
+            args.extend(system);
+            args.extend(rest);
+            if command == ["search"] {
+                args.extend(degrees);
+            }
+            let o = superint(&args);
+            assert_eq!(o.status.code(), Some(2), "{args:?}");
+            assert_eq!(
+                stderr(&o),
+                format!("superint: error: {message}"),
+                "{args:?}"
+            );
         }
     }
 }
