@@ -498,6 +498,10 @@ mod tests {
         ("cos \\theta²", (1, 5), "'cos \\theta' followed by a power is ambiguous: write \
                                   cos^{2} \\theta or cos(\\theta)^{2} for the square of \
                                   cos \\theta"),
+        // The lunate epsilon, which reads as ε, is no LaTeX: the plain advice (it was told
+        // by the names, 'cos ε', and given LaTeX's, cos^{2} ϵ).
+        ("cos ϵ²", (1, 5), "'cos ϵ' followed by a power is ambiguous: write cos²ϵ or \
+                            cos(ϵ)^2 for the square of cos ϵ"),
         // Another power is no square: both readings are written, as after a power of the
         // function.
         ("sin θ³", (1, 5), "'sin θ' followed by a power is ambiguous: write (sin θ)³ for a \

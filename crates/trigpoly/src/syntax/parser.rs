@@ -850,8 +850,7 @@ impl Parser<'_> {
             // `cos θ²` could be (cos θ)² or cos(θ²), and `cos²θ^3` (cos²θ)³ or cos²(θ³), as
             // LaTeX reads `\cos^2\theta^3`: neither is guessed.
             if matches!(self.tok.tok, Tok::Sup { .. } | Tok::Caret) {
-                let unpowered = power.is_none().then_some((name.as_str(), arg.as_str()));
-                return Err(self.power_of_bare_angle(span, arg_span, unpowered));
+                return Err(self.power_of_bare_angle(span, arg_span, power.is_none()));
             }
             let arg = Expr::new(ExprKind::Name(arg), arg_span);
             Expr::new(ExprKind::Call(name, span, vec![arg]), span.to(arg_span))
@@ -877,17 +876,12 @@ impl Parser<'_> {
     /// function whose name is at `name`, or after a power of it: `sin²θ^3` could be
     /// `(sin²θ)³` or `sin²(θ³)`, as LaTeX reads `\sin^2\theta^3`, and `sin θ³` `(sin θ)³` or
     /// `sin(θ³)`; the message writes both readings in the source's own spelling
-    /// (`(\sin^{2}\theta)^{3}`), but for the square of a function not raised, `unpowered`
-    /// (its name and angle), which it writes `sin²θ` or `sin(θ)^2`, or where either is
-    /// written in LaTeX, as written, `\sin^{2}\theta` or `\sin(\theta)^{2}`. A missing exponent,
+    /// (`(\sin^{2}\theta)^{3}`), but for the square of a function not raised, `unpowered`,
+    /// which it writes `sin²θ` or `sin(θ)^2`, or where the function or its angle is written in
+    /// LaTeX, as written, `\sin^{2}\theta` or `\sin(\theta)^{2}`. A missing exponent,
     /// `sin²θ^`, is refused as after any other base ([`Self::exponent_after_caret`]).
     #[cold]
-    fn power_of_bare_angle(
-        &mut self,
-        name: Span,
-        angle: Span,
-        unpowered: Option<(&str, &str)>,
-    ) -> ParseError {
+    fn power_of_bare_angle(&mut self, name: Span, angle: Span, unpowered: bool) -> ParseError {
         // The power as written from its own `^` or superscript: an empty group or a LaTeX space
         // before it, `\theta{}^{3}`, `θ\,^3`, is no part of the power the readings write.
         let start = self.tok.span.start;
@@ -905,10 +899,11 @@ impl Parser<'_> {
         let function = self.src[name.start..angle.start].trim_end();
         let written = &self.src[name.start..angle.end];
         let arg = &self.src[angle.start..angle.end];
-        if let (Some(names), true) = (unpowered, square) {
+        if unpowered && square {
             let function = &self.src[name.start..name.end];
             let between = &self.src[name.end..angle.start];
-            let message = if names == (function, arg) {
+            // Told by the text, not by the names it reads as: `ϵ` reads as `ε`, and is no LaTeX.
+            let message = if !written.contains('\\') {
                 format!(
                     "'{function} {arg}' followed by a power is ambiguous: write {function}²{arg} \
                      or {function}({arg})^2 for the square of {function} {arg}"
