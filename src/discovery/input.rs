@@ -1,7 +1,7 @@
 //! The inputs of the discovery commands: the built-in systems by name ([`builtin_system`]),
 //! and conditions, symbolic parameters and fixed values as the command line gives them.
 
-use crate::system_file::CONDITION_USAGE;
+use crate::system_file::{split_top_level, CONDITION_USAGE};
 use brackets::{EngineError, System};
 use trigpoly::{Expr, Limits, Rational, Style, Var};
 
@@ -136,14 +136,16 @@ pub fn parse_condition(
                 format!("a condition is missing {side} this comma: {CONDITION_USAGE}"),
             ));
         }
-        let equals: Vec<usize> = piece.match_indices('=').map(|(i, _)| i).collect();
-        let [eq] = equals[..] else {
-            let span = match equals.get(1) {
-                Some(&second) => at + second..at + second + 1,
+        // Split at the `=` outside parentheses and braces, as a file's condition is.
+        let sides = split_top_level(piece, '=');
+        let [lhs, _] = &sides[..] else {
+            let span = match sides.get(2) {
+                Some(third) => at + third.start - 1..at + third.start,
                 None => at..at + piece.len(),
             };
             return Err(refuse(span, CONDITION_USAGE.to_string()));
         };
+        let eq = lhs.end;
         let (lhs, rhs) = (&piece[..eq], &piece[eq + 1..]);
         // The empty side is underlined, as in a claim.
         for (side, side_at) in [(lhs, at), (rhs, at + eq + 1)] {
@@ -157,7 +159,15 @@ pub fn parse_condition(
         let name = lhs.trim();
         let name_at = at + lhs.len() - lhs.trim_start().len();
         let name_span = name_at..name_at + name.len();
-        let Some(v) = vars.lookup(name) else {
+        // Read as a file's left side is, by the parser: `\omega`, `p_{x}` and `ϵ` name the
+        // variables they write.
+        let read = trigpoly::syntax::parse_expr(name)
+            .map_err(|e| refuse(name_at + e.span.start..name_at + e.span.end, e.message))?;
+        let read = match &read.kind {
+            trigpoly::syntax::ExprKind::Name(n) => Some(n.as_str()),
+            _ => None,
+        };
+        let Some(v) = read.and_then(|n| vars.lookup(n)) else {
             let settable: Vec<&str> = vars
                 .vars()
                 .filter(|&v| vars.variable(v).kind() != trigpoly::VarKind::Angle)
@@ -169,7 +179,7 @@ pub fn parse_condition(
                     "the left side of a condition is one declared variable (a coordinate, a \
                      momentum or a parameter), found {}{}",
                     trigpoly::quoted_name(name),
-                    trigpoly::did_you_mean_hint(name, &settable)
+                    read.map_or_else(String::new, |n| trigpoly::did_you_mean_hint(n, &settable))
                 ),
             ));
         };

@@ -2119,6 +2119,9 @@ fn cli_a_builtin_systems_malformed_condition_reads_as_a_files() {
         "x = 1, x = 2",
         ", omega = 1",
         "p_theta = x, x = p_theta",
+        // An `=` inside parentheses or braces splits no condition, as in a file's.
+        "(x = 1",
+        "x_{ = 1",
     ] {
         let run = |system: &[&str]| {
             let o = superint(&[&["search"], system, &["--when", when], &degrees[..]].concat());
@@ -2138,6 +2141,39 @@ fn cli_a_builtin_systems_malformed_condition_reads_as_a_files() {
         "superint: error: <command line>:1:1: a condition reads `variable = value`, such as \
          \"p_theta = 2*I*omega/3\"\n 1 | omega 1\n   | ^^^^^^^\n"
     );
+}
+
+/// A built-in system's --when reads its left side as a file's does, by the parser: a variable
+/// written in LaTeX, `\omega`, `p_{\theta}`, names it (it was refused as no variable of the
+/// system, with did you mean 'omega'?).
+#[test]
+fn cli_a_builtin_systems_condition_names_a_variable_written_in_latex() {
+    let degrees = [
+        "--momenta-degree",
+        "1",
+        "--positions-degree",
+        "1",
+        "--trig-degree",
+        "0",
+        "--no-timings",
+    ];
+    for (latex, plain) in [
+        (r"\omega = 1", "omega = 1"),
+        (r"p_{\theta} = I*omega", "p_theta = I*omega"),
+    ] {
+        let run = |when: &str| {
+            let o = superint(
+                &[
+                    &["search", "--system", "harmonic", "--when", when],
+                    &degrees[..],
+                ]
+                .concat(),
+            );
+            assert_eq!(o.status.code(), Some(0), "{when:?}: {}", stderr(&o));
+            String::from_utf8(o.stdout).expect("UTF-8")
+        };
+        assert_eq!(run(latex), run(plain), "{latex:?}");
+    }
 }
 
 /// A blank function name given to a table or a closure is refused as a blank expression is,
