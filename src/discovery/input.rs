@@ -45,10 +45,8 @@ pub fn builtin_system(
     let s = match name {
         "harmonic" => {
             let mut s = Rotor::Harmonic.system(limits)?;
-            s.define_parsed("W", "W", "p_x - i*p_y + i*M*omega*(x - i*y)")
-                .map_err(|e| e.in_part("its function W"))?;
-            s.define_parsed("Hp", "Hp", "F1 - F2")
-                .map_err(|e| e.in_part("its function Hp"))?;
+            s.define_builtin("W", "W", "p_x - i*p_y + i*M*omega*(x - i*y)")?;
+            s.define_builtin("Hp", "Hp", "F1 - F2")?;
             if resonant {
                 define_resonant(&mut s, "Z", "W")?;
             }
@@ -56,10 +54,8 @@ pub fn builtin_system(
         }
         "gravity" => {
             let mut s = Rotor::Gravity.system(limits)?;
-            s.define_parsed("Wp", "W'", "p_x - i*p_y + i*M*omega*(x - i*yp)")
-                .map_err(|e| e.in_part("its function W'"))?;
-            s.define_parsed("Hp", "Hp", "F1 - F2")
-                .map_err(|e| e.in_part("its function Hp"))?;
+            s.define_builtin("Wp", "W'", "p_x - i*p_y + i*M*omega*(x - i*yp)")?;
+            s.define_builtin("Hp", "Hp", "F1 - F2")?;
             if resonant {
                 define_resonant(&mut s, "Zp", "Wp")?;
             }

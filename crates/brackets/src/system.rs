@@ -130,6 +130,19 @@ impl System {
         Ok(())
     }
 
+    /// [`System::define_parsed`] for a built-in system's own function, whose text nobody typed:
+    /// an error (a text that does not fit the limits) names the function, `its function W'`,
+    /// with the text and a caret ([`EngineError::in_part`]), not a line and column.
+    pub fn define_builtin(
+        &mut self,
+        name: &str,
+        display: &str,
+        src: &str,
+    ) -> Result<(), EngineError> {
+        self.define_parsed(name, display, src)
+            .map_err(|e| e.in_part(&format!("its function {display}")))
+    }
+
     /// Defines a named function from text, which may use earlier names and brackets; the name
     /// of a variable is refused (a variable wins in [`System::parse`]).
     pub fn define_parsed(

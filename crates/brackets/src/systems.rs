@@ -47,8 +47,7 @@ fn build(
         Expr::parse(&vars, h).map_err(|e| EngineError::parse(h, e).in_part("its Hamiltonian"))?;
     let mut s = System::new(name, space, h)?;
     for (n, display, src) in functions {
-        s.define_parsed(n, display, src)
-            .map_err(|e| e.in_part(&format!("its function {display}")))?;
+        s.define_builtin(n, display, src)?;
     }
     Ok(s)
 }
