@@ -1201,6 +1201,7 @@ const PARSER_TOKENS: &[&str] = &[
     r"\Re", r"\operatorname{Re}", r"\mathrm{i}", r"\bar{M}", r"\bar{}", r"p_{\theta}", r"\,",
     r"\;", r"\quad", r"\left(", r"\right)", r"\left.", r"\left", r"\big(", r"\bigr)", r"\{",
     r"\}", r"\cdot", r"\times", r"\", r"\unknown", "₁", "1e3", "0.5", "√", "½", "\u{feff}",
+    "ϕ", "ϵ", "ε", r"\epsilon", r"\varepsilon", r"\sin^{2}^", r"\cos cos", r"p_{\left(",
 ];
 
 /// The factors of [`parser_text`]'s sums, in the plain syntax, in Unicode and in LaTeX.
