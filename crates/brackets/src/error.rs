@@ -104,22 +104,12 @@ impl EngineError {
         match self {
             EngineError::Parse {
                 source_text, error, ..
-            } if !source_text.is_empty() => {
-                let excerpt = trigpoly::Excerpt::of(&source_text, error.span);
-                EngineError::Parse {
-                    message: format!(
-                        "{what}: {}\n  {}\n  {}{}",
-                        error.message,
-                        excerpt.text,
-                        excerpt.pad,
-                        "^".repeat(excerpt.width)
-                    ),
-                    source_text,
-                    // Without its source, so that as the cause it says no line and column
-                    // either.
-                    error: ParseError::new(error.span, error.message),
-                }
-            }
+            } if !source_text.is_empty() => EngineError::Parse {
+                message: error.render_as(&source_text, what),
+                source_text,
+                // Without its source, so that as the cause it says no line and column either.
+                error: ParseError::new(error.span, error.message),
+            },
             other => other,
         }
     }

@@ -94,15 +94,26 @@ impl ParseError {
     pub fn render(&self, src: &str) -> String {
         rendered(&self.message, &Excerpt::of(src, self.span))
     }
+
+    /// [`ParseError::render`] with `place` where the line and column stand, `its Hamiltonian:
+    /// message`, for a text nobody typed (a built-in system's), whose line and column would
+    /// place it in nothing a reader sees.
+    #[must_use]
+    pub fn render_as(&self, src: &str, place: &str) -> String {
+        rendered_at(place, &self.message, &Excerpt::of(src, self.span))
+    }
 }
 
 /// `line L, column C: message`, the line and the caret.
 fn rendered(message: &str, excerpt: &Excerpt) -> String {
+    let place = format!("line {}, column {}", excerpt.line, excerpt.column);
+    rendered_at(&place, message, excerpt)
+}
+
+/// `place: message`, the line and the caret.
+fn rendered_at(place: &str, message: &str, excerpt: &Excerpt) -> String {
     format!(
-        "line {}, column {}: {}\n  {}\n  {}{}",
-        excerpt.line,
-        excerpt.column,
-        message,
+        "{place}: {message}\n  {}\n  {}{}",
         excerpt.text,
         excerpt.pad,
         "^".repeat(excerpt.width)
