@@ -204,6 +204,17 @@ pub(crate) fn line_col(src: &str, offset: usize) -> (usize, usize) {
     )
 }
 
+/// Where an opener at byte `open` of `src` stands, for a refusal at byte `here` of what it
+/// opens: `column C` where both are on one line, else `line L, column C`.
+pub(crate) fn opened_at(src: &str, open: usize, here: usize) -> String {
+    let (line, col) = line_col(src, open);
+    if line == line_col(src, here).0 {
+        format!("column {col}")
+    } else {
+        format!("line {line}, column {col}")
+    }
+}
+
 /// The largest char boundary of `src` that is at most `offset`.
 fn char_floor(src: &str, offset: usize) -> usize {
     let mut i = offset.min(src.len());

@@ -11,7 +11,7 @@
 //! of `Zbar`) is told by the system's names, where its LaTeX spells it
 //! ([`latex_name`] of the LaTeX it prints).
 
-use super::error::{line_col, ParseError, Span};
+use super::error::{opened_at, ParseError, Span};
 use super::lexer::{superscript_digit, Lexer, Tok};
 use super::parser::{too_deep, MAX_DEPTH};
 use crate::varset::{letter_of_char, letter_of_command};
@@ -425,11 +425,7 @@ impl Lexer<'_> {
     /// The error for the text at `span`, no part of a name, in the braces of a name opened at
     /// byte `open`: what they hold, and where they open.
     fn not_in_name(&self, open: usize, span: Span) -> ParseError {
-        let (line, col) = line_col(self.src, open);
-        let at = match line == line_col(self.src, span.start).0 {
-            true => format!("column {col}"),
-            false => format!("line {line}, column {col}"),
-        };
+        let at = opened_at(self.src, open, span.start);
         let found = &self.src[span.start..span.end];
         ParseError::new(
             span,

@@ -6,7 +6,7 @@
 
 use num_bigint::BigInt;
 
-use super::error::{line_col, ParseError, Span};
+use super::error::{opened_at, ParseError, Span};
 use super::latex::{FRACTIONS, SIZING_OPEN};
 use super::lexer::{Lexer, Tok, Token};
 use crate::lower::calls_function;
@@ -308,13 +308,8 @@ impl Parser<'_> {
         if self.tok.tok.starts_operand() {
             return self.implicit_mul();
         }
-        let (line, col) = line_col(self.src, open.start);
         let opener = &self.src[open.start..open.end];
-        let at = if line == line_col(self.src, self.tok.span.start).0 {
-            format!("column {col}")
-        } else {
-            format!("line {line}, column {col}")
-        };
+        let at = opened_at(self.src, open.start, self.tok.span.start);
         self.error(format!(
             "expected '{close}' to close '{opener}' opened at {at}, found {}",
             self.found()
