@@ -1,7 +1,9 @@
 //! The inputs of the discovery commands: the built-in systems by name ([`builtin_system`]),
 //! and conditions, symbolic parameters and fixed values as the command line gives them.
 
-use crate::system_file::{split_top_level, CONDITION_USAGE};
+use crate::system_file::{
+    assignment_sides, fixed_twice, no_variable, CONDITION_FORM, CONDITION_USAGE,
+};
 use brackets::{EngineError, System};
 use trigpoly::{Expr, Limits, Rational, Style, Var};
 
@@ -132,26 +134,11 @@ pub fn parse_condition(
                 format!("a condition is missing {side} this comma: {CONDITION_USAGE}"),
             ));
         }
-        // Split at the `=` outside parentheses and braces, as a file's condition is.
-        let sides = split_top_level(piece, '=');
-        let [lhs, _] = &sides[..] else {
-            let span = match sides.get(2) {
-                Some(third) => at + third.start - 1..at + third.start,
-                None => at..at + piece.len(),
-            };
-            return Err(refuse(span, CONDITION_USAGE.to_string()));
-        };
-        let eq = lhs.end;
-        let (lhs, rhs) = (&piece[..eq], &piece[eq + 1..]);
-        // The empty side is underlined, as in a claim.
-        for (side, side_at) in [(lhs, at), (rhs, at + eq + 1)] {
-            if side.trim().is_empty() {
-                return Err(refuse(
-                    side_at..side_at + side.len(),
-                    format!("{CONDITION_USAGE}; one side is empty"),
-                ));
-            }
-        }
+        // Split as a file's condition is.
+        let [lhs, rhs] = assignment_sides(piece, CONDITION_USAGE)
+            .map_err(|(span, why)| refuse(at + span.start..at + span.end, why))?;
+        let rhs_at = at + rhs.start;
+        let (lhs, rhs) = (&piece[lhs], &piece[rhs]);
         let name = lhs.trim();
         let name_at = at + lhs.len() - lhs.trim_start().len();
         let name_span = name_at..name_at + name.len();
@@ -169,23 +156,17 @@ pub fn parse_condition(
                 .filter(|&v| vars.variable(v).kind() != trigpoly::VarKind::Angle)
                 .map(|v| vars.variable(v).name())
                 .collect();
+            let meant =
+                read.map_or_else(String::new, |n| trigpoly::did_you_mean_hint(n, &settable));
             return Err(refuse(
                 name_span,
-                format!(
-                    "the left side of a condition is one declared variable (a coordinate, a \
-                     momentum or a parameter), found {}{}",
-                    trigpoly::quoted_name(name),
-                    read.map_or_else(String::new, |n| trigpoly::did_you_mean_hint(n, &settable))
-                ),
+                no_variable(&CONDITION_FORM, name, &meant),
             ));
         };
         if subs.iter().any(|(w, _)| *w == v) {
-            return Err(refuse(
-                name_span,
-                format!("{} is fixed twice", trigpoly::quoted_name(name)),
-            ));
+            return Err(refuse(name_span, fixed_twice(name)));
         }
-        let value_at = at + eq + 1 + rhs.len() - rhs.trim_start().len();
+        let value_at = rhs_at + rhs.len() - rhs.trim_start().len();
         let value = parse(rhs.trim(), value_at)?;
         shown.push(format!(
             "{} = {}",

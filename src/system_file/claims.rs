@@ -406,6 +406,15 @@ fn condition_texts(file: &LoadedSystem, when: &Spanned<When>) -> Result<Vec<Text
 pub const CONDITION_USAGE: &str =
     "a condition reads `variable = value`, such as \"p_theta = 2*I*omega/3\"";
 
+/// How a condition reads, for its messages, a file's and a built-in system's alike.
+pub(crate) const CONDITION_FORM: AssignmentForm<'static> = AssignmentForm {
+    what: "a condition",
+    kinds: "a coordinate, a momentum or a parameter",
+    usage: CONDITION_USAGE,
+    decimals: false,
+    pi: false,
+};
+
 /// Reads conditions `var = value` (one per text) of `source` into one substitution.
 pub(crate) fn parse_condition(
     file: &LoadedSystem,
@@ -436,7 +445,6 @@ fn parse_condition_with(
     pieces: &[Text],
     check: impl Fn(&Condition) -> Result<(), EngineError>,
 ) -> Result<Condition, FileError> {
-    let usage = CONDITION_USAGE;
     let vars = file.system.vars();
     let admit = |v: trigpoly::Var| {
         if vars.variable(v).kind() == VarKind::Angle {
@@ -448,14 +456,7 @@ fn parse_condition_with(
         // Refused at the variable, before the condition is made.
         Condition::cannot_set(file.system.space(), v)
     };
-    let form = AssignmentForm {
-        what: "a condition",
-        kinds: "a coordinate, a momentum or a parameter",
-        usage,
-        decimals: false,
-        pi: false,
-    };
-    let assignments = parse_assignments(file, source, pieces, &form, admit)?;
+    let assignments = parse_assignments(file, source, pieces, &CONDITION_FORM, admit)?;
     let text = assignments
         .iter()
         .map(|a| a.shown.as_str())
@@ -666,6 +667,49 @@ pub(crate) fn parse_assignments(
     Ok(assignments)
 }
 
+/// The two sides of one `var = value`, `piece`, split at its `=` outside parentheses and
+/// braces; else what to underline in `piece` and why it is refused: `usage` where it has no `=`
+/// (the whole piece) or more than one (the second), and an empty side (the side), as in a
+/// claim. A file's condition and a built-in system's are split alike
+/// ([`crate::discovery::parse_condition`]).
+pub(crate) fn assignment_sides(
+    piece: &str,
+    usage: &str,
+) -> Result<[Range<usize>; 2], (Range<usize>, String)> {
+    let parts = split_top_level(piece, '=');
+    let [lhs, rhs] = &parts[..] else {
+        let at = match parts.get(2) {
+            Some(p) => p.start - 1..p.start,
+            None => 0..piece.len(),
+        };
+        return Err((at, usage.to_string()));
+    };
+    if let Some(empty) = [lhs, rhs]
+        .into_iter()
+        .find(|s| piece[(*s).clone()].trim().is_empty())
+    {
+        return Err((empty.clone(), format!("{usage}; one side is empty")));
+    }
+    Ok([lhs.clone(), rhs.clone()])
+}
+
+/// The refusal of a left side, `typed`, that names no variable `form` may set, `meant` a
+/// suggestion or nothing: `the left side of a condition is one declared variable (a
+/// coordinate, a momentum or a parameter), found 'q'`; a file's and a built-in system's alike.
+pub(crate) fn no_variable(form: &AssignmentForm<'_>, typed: &str, meant: &str) -> String {
+    format!(
+        "the left side of {} is one declared variable ({}), found {}{meant}",
+        form.what,
+        form.kinds,
+        trigpoly::quoted_name(typed)
+    )
+}
+
+/// The refusal of a left side, `typed`, whose variable an earlier one sets already.
+pub(crate) fn fixed_twice(typed: &str) -> String {
+    format!("{} is fixed twice", trigpoly::quoted_name(typed))
+}
+
 /// What reading the `var = value` of a list takes: the file, the source of the texts, how
 /// the list reads, and the scope its values are read in.
 struct AssignmentReader<'a> {
@@ -676,32 +720,13 @@ struct AssignmentReader<'a> {
 }
 
 impl AssignmentReader<'_> {
-    /// The two sides of one `var = value`, refused when it has no `=` or more than one, or an
-    /// empty side.
+    /// The two sides of one `var = value` ([`assignment_sides`]).
     fn sides(&self, piece: &Text) -> Result<(Text, Text), FileError> {
-        let usage = self.form.usage;
-        let parts = split_top_level(&piece.value, '=');
-        if parts.len() != 2 {
-            let span = match parts.get(2) {
-                Some(p) => Span::new(p.start - 1, p.start),
-                None => Span::new(0, piece.value.len()),
-            };
-            return Err(piece.error(self.source, ErrorKind::Condition, span, usage));
-        }
-        let lhs = piece.slice(parts[0].clone());
-        let rhs = piece.slice(parts[1].clone());
-        // The empty side is underlined, as in a claim.
-        for side in [&lhs, &rhs] {
-            if side.value.trim().is_empty() {
-                return Err(side.error(
-                    self.source,
-                    ErrorKind::Condition,
-                    Span::new(0, side.value.len()),
-                    format!("{usage}; one side is empty"),
-                ));
-            }
-        }
-        Ok((lhs, rhs))
+        let [lhs, rhs] = assignment_sides(&piece.value, self.form.usage).map_err(|(at, why)| {
+            let span = Span::new(at.start, at.end);
+            piece.error(self.source, ErrorKind::Condition, span, why)
+        })?;
+        Ok((piece.slice(lhs), piece.slice(rhs)))
     }
 
     /// The variable a left side names: one declared variable, which `admit` does not refuse
@@ -733,21 +758,13 @@ impl AssignmentReader<'_> {
                 ExprKind::Name(n) => trigpoly::did_you_mean_hint(n, &settable),
                 _ => String::new(),
             };
-            return refuse(format!(
-                "the left side of {} is one declared variable ({}), found {}{meant}",
-                self.form.what,
-                self.form.kinds,
-                trigpoly::quoted_name(lhs.value.trim())
-            ));
+            return refuse(no_variable(self.form, lhs.value.trim(), &meant));
         };
         if let Some(why) = admit(var) {
             return refuse(why);
         }
         if assignments.iter().any(|a| a.var == var) {
-            return refuse(format!(
-                "{} is fixed twice",
-                trigpoly::quoted_name(lhs.value.trim())
-            ));
+            return refuse(fixed_twice(lhs.value.trim()));
         }
         Ok(var)
     }

@@ -39,7 +39,9 @@
 //! `FILE:LINE:COLUMN: message` with the source line and a caret ([`FileError`]).
 
 mod claims;
-pub(crate) use claims::decimal_number;
+pub(crate) use claims::{
+    assignment_sides, decimal_number, fixed_twice, no_variable, CONDITION_FORM,
+};
 mod code;
 mod error;
 mod keys;
