@@ -5091,18 +5091,25 @@ fn a_description_may_run_over_lines() {
     assert!(out.contains("Source: A. Author,\nsome journal"), "{out}");
 }
 
-/// `bracket --when` says where the flow of `H` does not keep the condition: `{x, H}` of an
-/// oscillator at `x = 0` has a value there, but a bracket that vanishes on a surface the flow
-/// leaves is no conservation law, and nothing said so. A resonance the flow keeps gets no note.
-#[test]
-fn bracket_at_a_condition_the_flow_leaves_says_so() {
-    let dir = scratch("bracket-flow-note");
+/// A fresh directory `name` holding `osc.toml`, the oscillator `p_x²/(2M) + Mω²x²/2` with the
+/// parameters `M` and `ω` (`BASE` without its function and claim).
+fn oscillator_in(name: &str) -> PathBuf {
+    let dir = scratch(name);
     std::fs::write(
         dir.join("osc.toml"),
         "name = \"oscillator\"\nhamiltonian = \"p_x^2/(2*M) + M*omega^2*x^2/2\"\n\
          [phase_space]\ncoordinates = [\"x\"]\nparameters = [\"M\", \"omega\"]\n",
     )
     .expect("written");
+    dir
+}
+
+/// `bracket --when` says where the flow of `H` does not keep the condition: `{x, H}` of an
+/// oscillator at `x = 0` has a value there, but a bracket that vanishes on a surface the flow
+/// leaves is no conservation law, and nothing said so. A resonance the flow keeps gets no note.
+#[test]
+fn bracket_at_a_condition_the_flow_leaves_says_so() {
+    let dir = oscillator_in("bracket-flow-note");
     // A sentence, as the report's other notes are.
     let note = "Note: x = 0 is not kept by the flow of H ({x, H} = p_x/M there): a zero is no \
                 conservation law.\n";
@@ -5156,13 +5163,7 @@ fn bracket_at_a_condition_the_flow_leaves_says_so() {
 /// no conservation law, which said nothing of it.
 #[test]
 fn bracket_that_is_no_zero_at_a_condition_the_flow_leaves_says_no_more() {
-    let dir = scratch("bracket-flow-note-no-zero");
-    std::fs::write(
-        dir.join("osc.toml"),
-        "name = \"oscillator\"\nhamiltonian = \"p_x^2/(2*M) + M*omega^2*x^2/2\"\n\
-         [phase_space]\ncoordinates = [\"x\"]\nparameters = [\"M\", \"omega\"]\n",
-    )
-    .expect("written");
+    let dir = oscillator_in("bracket-flow-note-no-zero");
     let note = "x = 0 is not kept by the flow of H ({x, H} = p_x/M there).";
     let o = superint_in(&dir, &["bracket", "osc.toml", "x", "H", "--when", "x = 0"]);
     assert_eq!(o.status.code(), Some(0), "{}", text(&o.stderr));
