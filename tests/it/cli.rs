@@ -10,7 +10,7 @@ use std::process::{Command, Output};
 use pretty_assertions::assert_eq;
 use serde_json::Value;
 
-use crate::{superint, superint_exits, superint_json};
+use crate::{superint, superint_exits, superint_json, DEGREE_ONE_TRIG_ZERO};
 
 fn stdout(o: &Output) -> String {
     String::from_utf8(o.stdout.clone()).expect("stdout is UTF-8")
@@ -2103,14 +2103,6 @@ fn cli_a_builtin_systems_blank_condition_is_said_to_be_empty() {
 /// an unknown left side `'q' is not a variable of the system`, each other words than a file's.
 #[test]
 fn cli_a_builtin_systems_malformed_condition_reads_as_a_files() {
-    let degrees = [
-        "--momenta-degree",
-        "1",
-        "--positions-degree",
-        "1",
-        "--trig-degree",
-        "0",
-    ];
     for when in [
         "omega 1",
         "omega == 1",
@@ -2124,7 +2116,15 @@ fn cli_a_builtin_systems_malformed_condition_reads_as_a_files() {
         "x_{ = 1",
     ] {
         let run = |system: &[&str]| {
-            let o = superint(&[&["search"], system, &["--when", when], &degrees[..]].concat());
+            let o = superint(
+                &[
+                    &["search"],
+                    system,
+                    &["--when", when],
+                    &DEGREE_ONE_TRIG_ZERO,
+                ]
+                .concat(),
+            );
             assert_eq!(o.status.code(), Some(2), "{when:?}");
             stderr(&o)
         };
@@ -2148,15 +2148,6 @@ fn cli_a_builtin_systems_malformed_condition_reads_as_a_files() {
 /// system, with did you mean 'omega'?).
 #[test]
 fn cli_a_builtin_systems_condition_names_a_variable_written_in_latex() {
-    let degrees = [
-        "--momenta-degree",
-        "1",
-        "--positions-degree",
-        "1",
-        "--trig-degree",
-        "0",
-        "--no-timings",
-    ];
     for (latex, plain) in [
         (r"\omega = 1", "omega = 1"),
         (r"p_{\theta} = I*omega", "p_theta = I*omega"),
@@ -2164,8 +2155,9 @@ fn cli_a_builtin_systems_condition_names_a_variable_written_in_latex() {
         let run = |when: &str| {
             let o = superint(
                 &[
-                    &["search", "--system", "harmonic", "--when", when],
-                    &degrees[..],
+                    &["search", "--system", "harmonic", "--when", when][..],
+                    &DEGREE_ONE_TRIG_ZERO,
+                    &["--no-timings"],
                 ]
                 .concat(),
             );
@@ -4596,14 +4588,6 @@ fn cli_closure_prints_a_precomposed_bar_as_its_display_writes_it() {
 /// column 5` where a built-in system's said `opened at column 5`).
 #[test]
 fn cli_an_unclosed_parenthesis_opens_at_the_same_place_for_a_file_and_a_built_in_system() {
-    let degrees = [
-        "--momenta-degree",
-        "1",
-        "--positions-degree",
-        "1",
-        "--trig-degree",
-        "0",
-    ];
     let cases: [(&[&str], &[&str], &str); 4] = [
         (
             &["search"],
@@ -4639,7 +4623,7 @@ fn cli_an_unclosed_parenthesis_opens_at_the_same_place_for_a_file_and_a_built_in
             args.extend(system);
             args.extend(rest);
             if command == ["search"] {
-                args.extend(degrees);
+                args.extend(DEGREE_ONE_TRIG_ZERO);
             }
             let o = superint(&args);
             assert_eq!(o.status.code(), Some(2), "{args:?}");

@@ -10,7 +10,10 @@ use brackets::search::{search, SearchOptions, SearchSpace};
 use superint::system_file::{load, load_str, LimitsOverride};
 use trigpoly::{Expr, Rational};
 
-use crate::{normalize, superint, superint_ok_line, superint_refused, words, DEGREE_ONE};
+use crate::{
+    normalize, superint, superint_ok_line, superint_refused, words, DEGREE_ONE,
+    DEGREE_ONE_TRIG_ZERO,
+};
 
 /// Every command of `docs/results.md`, by name.
 const COMMANDS: &[(&str, &str)] = &[
@@ -1293,17 +1296,15 @@ fn fixing_a_radicands_parameter_at_zero_suggests_no_condition() {
 #[test]
 fn a_negative_fixed_value_prints_as_a_condition_does() {
     let args = [
-        "search",
-        "systems/harmonic-rotor.toml",
-        "--fix",
-        "M=-1,omega=-2/3",
-        "--momenta-degree",
-        "1",
-        "--positions-degree",
-        "1",
-        "--trig-degree",
-        "0",
-    ];
+        &[
+            "search",
+            "systems/harmonic-rotor.toml",
+            "--fix",
+            "M=-1,omega=-2/3",
+        ][..],
+        &DEGREE_ONE_TRIG_ZERO,
+    ]
+    .concat();
     let (json, text) = json_and_text(&args);
     assert!(
         normalize(&text)

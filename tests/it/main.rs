@@ -232,3 +232,13 @@ pub const DEGREE_ONE: [&str; 6] = [
     "--trig-degree",
     "1",
 ];
+
+/// The search space of degree 1 in the momenta and the positions and trigonometric order 0.
+pub const DEGREE_ONE_TRIG_ZERO: [&str; 6] = [
+    "--momenta-degree",
+    "1",
+    "--positions-degree",
+    "1",
+    "--trig-degree",
+    "0",
+];
