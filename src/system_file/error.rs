@@ -268,12 +268,22 @@ impl Warnings {
             .unwrap_or_else(std::sync::PoisonError::into_inner)
     }
 
-    /// Keeps `warning` unless the same is kept already.
+    /// Keeps `warning` unless the same is kept already, or this thread is in an
+    /// [`Warnings::unwarned`] of this store, whose closure's warnings are dropped.
     pub fn warn(&self, warning: Warning) {
+        if UNWARNED.with(|u| u.borrow().contains(&self.address())) {
+            return;
+        }
         let mut kept = self.kept();
         if !kept.contains(&warning) {
             kept.push(warning);
         }
+    }
+
+    /// The store's address, by which a thread tells [`Warnings::warn`] that it is in an
+    /// [`Warnings::unwarned`] of it.
+    fn address(&self) -> usize {
+        std::ptr::from_ref(self) as usize
     }
 
     /// The warnings kept, in the order read.
@@ -283,13 +293,30 @@ impl Warnings {
 
     /// `f`'s result, with the warnings it adds dropped: a test of a text that is refused
     /// whatever it reads (a new name read as a product of the system's names) says nothing of
-    /// how it reads.
+    /// how it reads. What `f` warns of on this thread is never kept, while what other threads
+    /// warn of meanwhile is kept; a thread that `f` starts warns as any other.
     pub fn unwarned<T>(&self, f: impl FnOnce() -> T) -> T {
-        let before = self.kept().len();
-        let result = f();
-        self.kept().truncate(before);
-        result
+        /// Takes the store off this thread's list when `f` returns or panics.
+        struct Leave(usize);
+        impl Drop for Leave {
+            fn drop(&mut self) {
+                UNWARNED.with(|u| {
+                    let mut u = u.borrow_mut();
+                    if let Some(k) = u.iter().rposition(|&a| a == self.0) {
+                        u.remove(k);
+                    }
+                });
+            }
+        }
+        UNWARNED.with(|u| u.borrow_mut().push(self.address()));
+        let _leave = Leave(self.address());
+        f()
     }
+}
+
+thread_local! {
+    /// The stores ([`Warnings::address`]) this thread is in an [`Warnings::unwarned`] of.
+    static UNWARNED: std::cell::RefCell<Vec<usize>> = const { std::cell::RefCell::new(Vec::new()) };
 }
 
 impl Clone for Warnings {
@@ -439,6 +466,54 @@ mod tests {
         assert!(
             shown.ends_with(&format!("…\n   | {}^", " ".repeat(9))),
             "{shown}"
+        );
+    }
+
+    /// A warning of `message` at the start of the text `origin`.
+    fn warning(origin: &str, message: &str) -> Warning {
+        Warning {
+            origin: origin.to_string(),
+            location: None,
+            message: message.to_string(),
+            markup: message.to_string(),
+        }
+    }
+
+    /// `Warnings::unwarned` drops what its closure warns of, and only that: a warning kept
+    /// before it and one kept after it stay, and so does one that another thread keeps while
+    /// the closure runs, which cutting the store back to its length before the closure dropped.
+    #[test]
+    fn unwarned_drops_the_closure_s_warnings_alone() {
+        let store = Warnings::default();
+        store.warn(warning("a", "before"));
+        let (entered, left) = (std::sync::Barrier::new(2), std::sync::Barrier::new(2));
+        std::thread::scope(|s| {
+            s.spawn(|| {
+                entered.wait();
+                store.warn(warning("b", "from another thread"));
+                left.wait();
+            });
+            let result = store.unwarned(|| {
+                store.warn(warning("c", "in the closure"));
+                entered.wait();
+                left.wait();
+                store.warn(warning("d", "in the closure too"));
+                7
+            });
+            assert_eq!(result, 7);
+        });
+        store.warn(warning("e", "after"));
+        let messages: Vec<String> = store.list().into_iter().map(|w| w.message).collect();
+        assert_eq!(messages, ["before", "from another thread", "after"]);
+        // A panic in the closure leaves the thread warning as before.
+        let caught = std::panic::catch_unwind(std::panic::AssertUnwindSafe(|| {
+            store.unwarned(|| panic!("the closure panics"))
+        }));
+        assert!(caught.is_err());
+        store.warn(warning("f", "after the panic"));
+        assert_eq!(
+            store.list().last().map(|w| w.message.as_str()),
+            Some("after the panic")
         );
     }
 }
