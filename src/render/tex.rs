@@ -68,13 +68,10 @@ const STOPWORDS: &[&str] = &[
 const SUPERSCRIPTS: &str = "⁰¹²³⁴⁵⁶⁷⁸⁹";
 const SUBSCRIPTS: &str = "₀₁₂₃₄₅₆₇₈₉";
 
-/// A Greek letter's LaTeX command, as a name writes it ([`trigpoly::greek_latex`]), but for
-/// `ε`, which prose and formulas write `\varepsilon` where a name `epsilon` is `\epsilon`.
+/// A Greek letter's LaTeX command, as a name writes it ([`trigpoly::greek_latex`]: `ε` as
+/// `\varepsilon`, in prose and formulas as in a name `epsilon`).
 fn greek(c: char) -> Option<&'static str> {
-    match c {
-        'ε' => Some(r"\varepsilon"),
-        _ => trigpoly::greek_latex(c),
-    }
+    trigpoly::greek_latex(c)
 }
 
 /// A symbol's LaTeX math command: one of the [`SYMBOLS`], or a differential sign as a display

@@ -5226,3 +5226,40 @@ fn bracket_at_a_condition_whose_flow_check_passes_a_limit_says_so() {
         text(&o.stdout)
     );
 }
+
+/// A parameter named epsilon prints in LaTeX as `\varepsilon`, the letter `ε` its text prints
+/// (it printed `\epsilon`, which LaTeX sets as the lunate `ϵ`), as `φ` prints `\varphi`; and
+/// each spelling of it still reads as the one parameter.
+#[test]
+fn epsilon_prints_in_latex_as_the_letter_its_text_prints() {
+    let dir = scratch("epsilon-latex");
+    std::fs::write(
+        dir.join("eps.toml"),
+        "name = \"oscillator\"\nhamiltonian = \"p_x^2/2 + epsilon*x^2/2\"\n\
+         [phase_space]\ncoordinates = [\"x\"]\nparameters = [\"epsilon\"]\n",
+    )
+    .expect("written");
+    for spelling in ["epsilon", "ε", "ϵ", r"\epsilon", r"\varepsilon"] {
+        let bracket = |format: &str| {
+            let o = superint_in(
+                &dir,
+                &[
+                    "bracket",
+                    "eps.toml",
+                    "p_x",
+                    &format!("{spelling}*x"),
+                    "--format",
+                    format,
+                ],
+            );
+            assert_eq!(o.status.code(), Some(0), "{}", text(&o.stderr));
+            text(&o.stdout)
+        };
+        let latex = bracket("latex");
+        assert!(latex.contains(r"\varepsilon"), "{spelling}: {latex}");
+        assert!(!latex.contains(r"\epsilon"), "{spelling}: {latex}");
+        let plain = bracket("text");
+        assert!(plain.contains("ε"), "{spelling}: {plain}");
+        assert!(!plain.contains("ϵ"), "{spelling}: {plain}");
+    }
+}

@@ -314,7 +314,8 @@ const GREEK: &[(&str, &str, &str)] = &[
     ("beta", "β", r"\beta"),
     ("gamma", "γ", r"\gamma"),
     ("delta", "δ", r"\delta"),
-    ("epsilon", "ε", r"\epsilon"),
+    // `\varepsilon`, the letter `ε` the text prints; `\epsilon` sets the lunate `ϵ`.
+    ("epsilon", "ε", r"\varepsilon"),
     ("zeta", "ζ", r"\zeta"),
     ("eta", "η", r"\eta"),
     ("theta", "θ", r"\theta"),
@@ -365,10 +366,10 @@ pub fn greek_latex(letter: char) -> Option<&'static str> {
 /// uses.
 pub(crate) fn letter_of_command(command: &str) -> Option<&'static str> {
     match command {
-        // The forms of phi and epsilon that the table, which prints `\varphi` and `\epsilon`,
-        // does not.
+        // The forms of phi and epsilon that the table, which prints `\varphi` and
+        // `\varepsilon`, does not.
         "phi" => Some("φ"),
-        "varepsilon" => Some("ε"),
+        "epsilon" => Some("ε"),
         _ => named_letters()
             .find(|g| g.2.strip_prefix('\\') == Some(command))
             .map(|g| g.1),
