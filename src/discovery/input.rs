@@ -2,7 +2,8 @@
 //! and conditions, symbolic parameters and fixed values as the command line gives them.
 
 use crate::system_file::{
-    assignment_sides, fixed_twice, no_variable, CONDITION_FORM, CONDITION_USAGE,
+    assignment_sides, condition_cannot_set, fixed_twice, no_variable, CONDITION_FORM,
+    CONDITION_USAGE,
 };
 use brackets::{EngineError, System};
 use trigpoly::{Expr, Limits, Rational, Style, Var};
@@ -104,8 +105,8 @@ fn missing_beside_comma(pieces: &[&str], k: usize, what: &str) -> Option<String>
 /// that what it says of the value points into the condition as typed). A refusal of the
 /// condition's form is said by `refuse`, given its byte range in `text` and its message, as a
 /// file's condition is refused ([`CONDITION_USAGE`]; the caret under the comma with nothing
-/// beside it, an empty side, the left side that is no variable or is set twice, the value of
-/// the variable the condition cannot set so).
+/// beside it, an empty side, the left side that is no variable, one a condition cannot set
+/// (an angle) or one set twice, the value of the variable the condition cannot set so).
 pub fn parse_condition(
     system: &System,
     text: &str,
@@ -153,7 +154,7 @@ pub fn parse_condition(
         let Some(v) = read.and_then(|n| vars.lookup(n)) else {
             let settable: Vec<&str> = vars
                 .vars()
-                .filter(|&v| vars.variable(v).kind() != trigpoly::VarKind::Angle)
+                .filter(|&v| condition_cannot_set(system, v).is_none())
                 .map(|v| vars.variable(v).name())
                 .collect();
             let meant =
@@ -163,6 +164,10 @@ pub fn parse_condition(
                 no_variable(&CONDITION_FORM, name, &meant),
             ));
         };
+        // An angle, refused at its name as a file's condition refuses it.
+        if let Some(why) = condition_cannot_set(system, v) {
+            return Err(refuse(name_span, why));
+        }
         if subs.iter().any(|(w, _)| *w == v) {
             return Err(refuse(name_span, fixed_twice(name)));
         }

@@ -415,6 +415,20 @@ pub(crate) const CONDITION_FORM: AssignmentForm<'static> = AssignmentForm {
     pi: false,
 };
 
+/// Why a condition cannot set the variable `v` of `system`, refused at the variable before the
+/// condition is made, a file's and a built-in system's alike
+/// ([`crate::discovery::parse_condition`]): an angle, on which functions depend through cos,
+/// sin and exp, and a variable [`Condition::cannot_set`] refuses (a radical, a denominator);
+/// `None` for one it may set.
+pub(crate) fn condition_cannot_set(system: &brackets::System, v: trigpoly::Var) -> Option<String> {
+    if system.vars().variable(v).kind() == VarKind::Angle {
+        return Some(
+            "a condition cannot fix an angle: functions depend on it through cos, sin, exp".into(),
+        );
+    }
+    Condition::cannot_set(system.space(), v)
+}
+
 /// Reads conditions `var = value` (one per text) of `source` into one substitution.
 pub(crate) fn parse_condition(
     file: &LoadedSystem,
@@ -446,16 +460,7 @@ fn parse_condition_with(
     check: impl Fn(&Condition) -> Result<(), EngineError>,
 ) -> Result<Condition, FileError> {
     let vars = file.system.vars();
-    let admit = |v: trigpoly::Var| {
-        if vars.variable(v).kind() == VarKind::Angle {
-            return Some(
-                "a condition cannot fix an angle: functions depend on it through cos, sin, exp"
-                    .into(),
-            );
-        }
-        // Refused at the variable, before the condition is made.
-        Condition::cannot_set(file.system.space(), v)
-    };
+    let admit = |v: trigpoly::Var| condition_cannot_set(&file.system, v);
     let assignments = parse_assignments(file, source, pieces, &CONDITION_FORM, admit)?;
     let text = assignments
         .iter()

@@ -40,7 +40,8 @@
 
 mod claims;
 pub(crate) use claims::{
-    assignment_sides, decimal_number, fixed_twice, no_variable, CONDITION_FORM,
+    assignment_sides, condition_cannot_set, decimal_number, fixed_twice, no_variable,
+    CONDITION_FORM,
 };
 mod code;
 mod error;

@@ -2097,6 +2097,45 @@ fn cli_a_builtin_systems_blank_condition_is_said_to_be_empty() {
     }
 }
 
+/// A built-in system's --when refuses a condition on an angle as a file's does, at the angle's
+/// name: it said that `theta = 0` sets e^{iθ} to 0, no value of it, and took `theta = 1`, to
+/// refuse the search later because the flow leaves the surface.
+#[test]
+fn cli_a_builtin_systems_condition_on_an_angle_is_refused_as_a_files() {
+    let refusal = "a condition cannot fix an angle: functions depend on it through cos, sin, exp";
+    for (when, column, caret) in [
+        ("theta = 1", 1, "^^^^^"),
+        ("theta = 0", 1, "^^^^^"),
+        ("p_theta = 1, theta = 1", 14, "^^^^^"),
+        (r"\theta = 1", 1, "^^^^^^"),
+    ] {
+        let run = |system: &[&str]| {
+            let o = superint(
+                &[
+                    &["search"],
+                    system,
+                    &["--when", when],
+                    &DEGREE_ONE_TRIG_ZERO,
+                ]
+                .concat(),
+            );
+            assert_eq!(o.status.code(), Some(2), "{when:?}: {}", stderr(&o));
+            stderr(&o)
+        };
+        let builtin = run(&["--system", "harmonic"]);
+        let pad = " ".repeat(column - 1);
+        assert_eq!(
+            builtin,
+            format!(
+                "superint: error: <command line>:1:{column}: {refusal}\n 1 | {when}\n   | \
+                 {pad}{caret}\n"
+            ),
+            "{when:?}"
+        );
+        assert_eq!(builtin, run(&["systems/harmonic-rotor.toml"]), "{when:?}");
+    }
+}
+
 /// A malformed --when of a built-in system is refused in the words and the form of a file's,
 /// `<command line>:1:C:` with the numbered line and a caret: it was `--when: 'omega 1': a
 /// condition reads …` with no place, the variable set twice `the condition sets x twice`, and
