@@ -7,7 +7,7 @@ use anyhow::{anyhow, bail};
 use brackets::closure::ClosureOptions;
 use brackets::NamedFunction;
 use clap::Args;
-use superint::discovery::{closure_report_for, parse_symbolic};
+use superint::discovery::closure_report_for;
 use superint::render::render;
 use superint::report::Report;
 use superint::system_file::{Caller, PrintedNames};
@@ -230,8 +230,7 @@ fn close(a: &ClosureArgs, names: &[String], subject: &Subject) -> anyhow::Result
     options.condition = subject.condition(a.when.as_deref())?;
     options.fixed = subject.fixed(a.fix.as_deref())?;
     if let Some(names) = &a.symbolic {
-        options.symbolic =
-            parse_symbolic(subject.system(), names).map_err(|e| anyhow!("--symbolic: {e}"))?;
+        options.symbolic = subject.symbolic(names)?;
         options.parameters_degree = a.parameters_degree;
     }
     let (report, _) = closure_report_for(

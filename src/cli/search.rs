@@ -11,7 +11,7 @@ use brackets::System;
 use clap::Args;
 use superint::discovery::{
     builtin_system, file_search_report, parse_condition, parse_fixed, parse_known, parse_symbolic,
-    search_report_for,
+    search_report_for, ListRefusal,
 };
 use superint::render::render;
 use superint::report::{with_article, Report};
@@ -490,15 +490,30 @@ impl Subject {
         .transpose()
     }
 
+    /// The parameters `--fix` gives values, refused as a condition is
+    /// ([`list_refused`]).
     pub fn fixed(
         &self,
         fix: Option<&str>,
     ) -> anyhow::Result<Vec<(trigpoly::Var, trigpoly::Rational)>> {
         match fix {
-            Some(f) => parse_fixed(self.system(), f).map_err(|e| anyhow!("--fix: {e}")),
+            Some(f) => parse_fixed(self.system(), f).map_err(|e| list_refused("--fix", f, e)),
             None => Ok(Vec::new()),
         }
     }
+
+    /// The parameters `--symbolic` names, refused as a condition is ([`list_refused`]).
+    pub fn symbolic(&self, names: &str) -> anyhow::Result<Vec<trigpoly::Var>> {
+        parse_symbolic(self.system(), names).map_err(|e| list_refused("--symbolic", names, e))
+    }
+}
+
+/// A refusal of the list `text` given to `option` (`--fix`, `--symbolic`), shown as a
+/// command-line condition's is: `<command line>:1:C:`, the option and what is wrong, then the
+/// numbered line and a caret under the place it is about.
+fn list_refused(option: &str, text: &str, refusal: ListRefusal) -> anyhow::Error {
+    let message = format!("{option}: {}", refusal.message);
+    anyhow!(FileError::at(ErrorKind::Schema, COMMAND_LINE, text, refusal.span, message).to_string())
 }
 
 /// Searches and prints, on a pool of `--threads` threads if asked.
@@ -538,8 +553,7 @@ fn search(a: &SearchArgs, subject: &Subject) -> anyhow::Result<Report> {
     options.condition = subject.condition(a.when.as_deref())?;
     options.fixed = subject.fixed(a.fix.as_deref())?;
     if let Some(names) = &a.symbolic {
-        options.symbolic =
-            parse_symbolic(subject.system(), names).map_err(|e| anyhow!("--symbolic: {e}"))?;
+        options.symbolic = subject.symbolic(names)?;
         options.space = options.space.parameters_degree(a.parameters_degree);
     }
     options.new_only = a.new_only;

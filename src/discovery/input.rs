@@ -79,9 +79,9 @@ pub fn builtin_system(
     Ok(Some(s))
 }
 
-/// Where the `k`th of `pieces` (a list split at its commas) is blank beside a comma, that
-/// `what` is missing after the comma (`M = 1,`) or before it (`, M = 1`), by the comma's
-/// column: `a value is missing after the comma at column 6`. A list of one blank piece
+/// Where the `k`th of `pieces` (a list split at its commas, `--known`'s) is blank beside a
+/// comma, that `what` is missing after the comma (`L,`) or before it (`,L`), by the comma's
+/// column: `an expression is missing after the comma at column 2`. A list of one blank piece
 /// has no comma to blame, and is left to the caller.
 fn missing_beside_comma(pieces: &[&str], k: usize, what: &str) -> Option<String> {
     if !pieces[k].trim().is_empty() || pieces.len() < 2 {
@@ -217,29 +217,98 @@ fn parameter(system: &System, name: &str) -> Result<Var, String> {
         })
 }
 
+/// A refusal of a list given to an option (`--fix`, `--symbolic`): what is wrong, and the
+/// byte range of the list it is about (a comma with nothing beside it, a name, a value), so
+/// that the caller shows it as a condition's refusal is shown, `<command line>:1:C:` with the
+/// text and a caret. It displays as its message.
+#[derive(Debug, Clone, PartialEq, Eq)]
+pub struct ListRefusal {
+    /// The byte range of the list under the caret.
+    pub span: std::ops::Range<usize>,
+    /// What is wrong, in one line.
+    pub message: String,
+}
+
+impl std::fmt::Display for ListRefusal {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        f.write_str(&self.message)
+    }
+}
+
+impl std::error::Error for ListRefusal {}
+
+/// `text` split at its commas, each piece with the byte where it begins.
+fn comma_pieces(text: &str) -> Vec<(usize, &str)> {
+    let mut at = 0;
+    text.split(',')
+        .map(|piece| {
+            let start = at;
+            at += piece.len() + 1;
+            (start, piece)
+        })
+        .collect()
+}
+
+/// Where the `k`th of `pieces` ([`comma_pieces`]) is blank beside a comma, that `what` is
+/// missing after the comma (`M=1,`) or before it (`,M=1`), at that comma, as a condition's
+/// comma is refused: `a value is missing after this comma`. A list of one blank piece has no
+/// comma to blame, and is left to the caller.
+fn blank_beside_comma(
+    pieces: &[(usize, &str)],
+    k: usize,
+    what: &str,
+    usage: &str,
+) -> Option<ListRefusal> {
+    let (at, piece) = pieces[k];
+    if !piece.trim().is_empty() || pieces.len() < 2 {
+        return None;
+    }
+    let (comma, side) = match k {
+        0 => (at + piece.len(), "before"),
+        _ => (at - 1, "after"),
+    };
+    Some(ListRefusal {
+        span: comma..comma + 1,
+        message: format!("{what} is missing {side} this comma: {usage}"),
+    })
+}
+
+/// The trimmed part of `piece`, which begins at byte `at` of its list, with its byte range
+/// there (an empty range where the blanks end, for a blank piece).
+fn trimmed(at: usize, piece: &str) -> (&str, std::ops::Range<usize>) {
+    let start = at + piece.len() - piece.trim_start().len();
+    (piece.trim(), start..start + piece.trim().len())
+}
+
+/// How `--symbolic` reads, for its refusals.
+const SYMBOLIC_USAGE: &str = "name parameters as A,B, such as M,omega";
+
 /// Parameters named in `A,B` (kept symbolic by a search); a blank text names none, and a
-/// comma with no name after it or before it is refused, by its column, as in [`parse_fixed`],
-/// as is a parameter named twice.
-pub fn parse_symbolic(system: &System, text: &str) -> Result<Vec<Var>, String> {
-    let pieces: Vec<&str> = text.split(',').collect();
+/// comma with no name after it or before it is refused at the comma, as in [`parse_fixed`],
+/// as is a name that is no parameter, or a parameter named twice, at the name.
+pub fn parse_symbolic(system: &System, text: &str) -> Result<Vec<Var>, ListRefusal> {
+    let pieces = comma_pieces(text);
     let mut out = Vec::new();
-    for (k, piece) in pieces.iter().enumerate() {
-        if let Some(missing) = missing_beside_comma(&pieces, k, "a parameter") {
-            return Err(format!(
-                "{missing}: name parameters as A,B, such as M,omega"
-            ));
+    for (k, &(at, piece)) in pieces.iter().enumerate() {
+        if let Some(missing) = blank_beside_comma(&pieces, k, "a parameter", SYMBOLIC_USAGE) {
+            return Err(missing);
         }
-        if piece.trim().is_empty() {
+        let (name, span) = trimmed(at, piece);
+        if name.is_empty() {
             continue;
         }
-        let v = parameter(system, piece.trim())?;
+        let refuse = |message| ListRefusal {
+            span: span.clone(),
+            message,
+        };
+        let v = parameter(system, name).map_err(refuse)?;
         // Named twice (`M,M`, or `omega,ω`), it counted twice: a search's space had each of
         // its monomials again, and a closure found the relations 0 = 0.
         if out.contains(&v) {
-            return Err(format!(
+            return Err(refuse(format!(
                 "{} is named twice",
-                trigpoly::quoted_name(piece.trim())
-            ));
+                trigpoly::quoted_name(name)
+            )));
         }
         out.push(v);
     }
@@ -248,7 +317,7 @@ pub fn parse_symbolic(system: &System, text: &str) -> Result<Vec<Var>, String> {
 
 /// The expressions of `--known` (`L,P_{1,1}`): split at the commas outside braces (a comma
 /// inside belongs to an instance), trimmed; a blank text gives none, and a comma with no
-/// expression after it or before it is refused, by its column, as in [`parse_fixed`].
+/// expression after it or before it is refused, by its column.
 pub fn parse_known(text: &str) -> Result<Vec<&str>, String> {
     let pieces: Vec<&str> = crate::system_file::split_top_level(text, ',')
         .into_iter()
@@ -269,50 +338,79 @@ pub fn parse_known(text: &str) -> Result<Vec<&str>, String> {
         .collect())
 }
 
-/// Reads parameter values `omega=1,M=2/3`; a blank text fixes none, and a comma with no value
-/// after it or before it is refused, by its column, as [`parse_condition`] refuses one.
-pub fn parse_fixed(system: &System, text: &str) -> Result<Vec<(Var, Rational)>, String> {
+/// How `--fix` reads, for its refusals.
+const FIX_USAGE: &str = "give a value as NAME=VALUE, such as omega=1";
+
+/// Reads parameter values `omega=1,M=2/3`; a blank text fixes none. A comma with no value
+/// after it or before it is refused at the comma, as [`parse_condition`] refuses one; a value
+/// with no `=`, or nothing on one side of it, at the value or its `=`; a name that is no
+/// parameter, or one given two values, at the name; a value that is no number, or is zero,
+/// at the value.
+pub fn parse_fixed(system: &System, text: &str) -> Result<Vec<(Var, Rational)>, ListRefusal> {
     let mut out = Vec::new();
-    let pieces: Vec<&str> = text.split(',').collect();
-    for (k, piece) in pieces.iter().enumerate() {
-        if let Some(missing) = missing_beside_comma(&pieces, k, "a value") {
-            return Err(format!(
-                "{missing}: give a value as NAME=VALUE, such as omega=1"
-            ));
+    let pieces = comma_pieces(text);
+    for (k, &(at, piece)) in pieces.iter().enumerate() {
+        if let Some(missing) = blank_beside_comma(&pieces, k, "a value", FIX_USAGE) {
+            return Err(missing);
         }
-        if piece.trim().is_empty() {
+        let (whole, whole_span) = trimmed(at, piece);
+        if whole.is_empty() {
             continue;
         }
-        let Some((name, value)) = piece.split_once('=') else {
-            return Err(format!(
-                "{}: give a value as NAME=VALUE, such as omega=1",
-                trigpoly::quoted_name(piece.trim())
+        let refuse = |span: std::ops::Range<usize>, message| ListRefusal { span, message };
+        let Some(eq) = piece.find('=') else {
+            return Err(refuse(
+                whole_span,
+                format!("{} has no '=': {FIX_USAGE}", trigpoly::quoted_name(whole)),
             ));
         };
-        let name = name.trim();
-        let v = parameter(system, name)?;
+        let (name, name_span) = trimmed(at, &piece[..eq]);
+        let (value, value_span) = trimmed(at + eq + 1, &piece[eq + 1..]);
+        let eq_span = at + eq..at + eq + 1;
+        if name.is_empty() {
+            return Err(refuse(
+                eq_span,
+                format!("a name is missing before this '=': {FIX_USAGE}"),
+            ));
+        }
+        if value.is_empty() {
+            return Err(refuse(
+                eq_span,
+                format!("a value is missing after this '=': {FIX_USAGE}"),
+            ));
+        }
+        let v = parameter(system, name).map_err(|m| refuse(name_span.clone(), m))?;
         if out.iter().any(|(w, _)| *w == v) {
-            return Err(format!(
-                "{} is given two values",
-                trigpoly::quoted_name(name)
+            return Err(refuse(
+                name_span,
+                format!("{} is given two values", trigpoly::quoted_name(name)),
             ));
         }
         // A decimal is the fraction it writes, as in plot's --at (`0.5` is `1/2`).
-        let value = value.trim();
         let q: Rational = match value.parse::<Rational>() {
             Ok(q) => q,
             Err(e) if e.kind() == trigpoly::RationalErrorKind::ZeroDenominator => {
-                return Err(format!(
-                    "{} is a division by zero: a fraction's denominator is nonzero",
-                    trigpoly::quoted_name(value)
+                return Err(refuse(
+                    value_span,
+                    format!(
+                        "{} is a division by zero: a fraction's denominator is nonzero",
+                        trigpoly::quoted_name(value)
+                    ),
                 ));
             }
-            Err(_) => crate::system_file::decimal_number(value).ok_or_else(|| {
-                format!(
-                    "{} is not a number: write a fraction such as 2/3, or a decimal such as 1.5",
-                    trigpoly::quoted_name(value)
-                )
-            })?,
+            Err(_) => match crate::system_file::decimal_number(value) {
+                Some(q) => q,
+                None => {
+                    return Err(refuse(
+                        value_span,
+                        format!(
+                            "{} is not a number: write a fraction such as 2/3, or a decimal \
+                             such as 1.5",
+                            trigpoly::quoted_name(value)
+                        ),
+                    ))
+                }
+            },
         };
         if q.is_zero() {
             // --when cannot set a parameter that a radicand or a denominator holds either.
@@ -322,9 +420,12 @@ pub fn parse_fixed(system: &System, text: &str) -> Result<Vec<(Var, Rational)>, 
                     format!("to study the system at {name} = 0, set it with --when '{name} = 0'")
                 }
             };
-            return Err(format!(
-                "{name} = 0: parameters are fixed to nonzero values (a value the lift back can \
-                 divide by); {instead}"
+            return Err(refuse(
+                value_span,
+                format!(
+                    "{name} = 0: parameters are fixed to nonzero values (a value the lift back \
+                     can divide by); {instead}"
+                ),
             ));
         }
         out.push((v, q));

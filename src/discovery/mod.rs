@@ -27,7 +27,8 @@ mod search;
 pub use brackets::closure::relation_text;
 pub use closure::{closure_report, closure_report_for};
 pub use input::{
-    builtin_system, parse_condition, parse_fixed, parse_known, parse_symbolic, BUILTIN_SYSTEMS,
+    builtin_system, parse_condition, parse_fixed, parse_known, parse_symbolic, ListRefusal,
+    BUILTIN_SYSTEMS,
 };
 pub use search::{complex_form, file_search_report, search_report, search_report_for};
 

@@ -1944,28 +1944,22 @@ fn cli_echoed_names_are_quoted_and_shortened_alike() {
     assert!(out.contains(&eighty), "{out}");
 }
 
-/// A comma with no value after it (or before it) in --fix is refused by its column, as one in
+/// A comma with no value after it (or before it) in --fix is refused at the comma, as one in
 /// --when is: --fix 'M=1,' was read as 'M=1', where --when 'M = 1,' is refused.
 #[test]
 fn cli_a_comma_with_no_value_beside_it_is_refused_by_fix() {
     let rotor = "systems/harmonic-rotor.toml";
-    for (fix, message) in [
-        (
-            "M=1,",
-            "superint: error: --fix: a value is missing after the comma at column 4: give a \
-             value as NAME=VALUE, such as omega=1\n",
-        ),
-        (
-            "M=1, ,omega=2",
-            "superint: error: --fix: a value is missing after the comma at column 4: give a \
-             value as NAME=VALUE, such as omega=1\n",
-        ),
-        (
-            " ,M=1",
-            "superint: error: --fix: a value is missing before the comma at column 2: give a \
-             value as NAME=VALUE, such as omega=1\n",
-        ),
-    ] {
+    for (fix, column) in [("M=1,", 4), ("M=1, ,omega=2", 4), (" ,M=1", 2)] {
+        let side = if column == 2 { "before" } else { "after" };
+        let message = refused_at(
+            fix,
+            column,
+            "^",
+            &format!(
+                "--fix: a value is missing {side} this comma: give a value as NAME=VALUE, such \
+                 as omega=1"
+            ),
+        );
         for args in [
             vec!["closure", rotor, "L", "--fix", fix],
             vec!["search", "--system", "harmonic", "--fix", fix],
@@ -1973,6 +1967,151 @@ fn cli_a_comma_with_no_value_beside_it_is_refused_by_fix() {
             let o = superint(&args);
             assert_eq!(o.status.code(), Some(2), "{args:?}");
             assert_eq!(stderr(&o), message, "{args:?}");
+        }
+    }
+}
+
+/// A refusal of a command-line text at column `column`, underlined by `caret`, as a --when
+/// condition's is: `<command line>:1:C: message`, the numbered line and the caret.
+fn refused_at(text: &str, column: usize, caret: &str, message: &str) -> String {
+    format!(
+        "superint: error: <command line>:1:{column}: {message}\n 1 | {text}\n   | {}{caret}\n",
+        " ".repeat(column - 1)
+    )
+}
+
+/// Every refusal of --fix and --symbolic that is about a place in its text says it as --when
+/// does, `<command line>:1:C:` with the option named, the text and a caret under the place
+/// (the comma with nothing beside it, the value with no `=`, the name that is no parameter or
+/// comes twice, the value that is no number or is zero), for a file and a built-in system,
+/// for search and closure alike: the comma's place was said in words, `after the comma at
+/// column 4`, and the others had no place at all.
+#[test]
+fn cli_fix_and_symbolic_refuse_at_their_place_as_when_does() {
+    let rotor = "systems/harmonic-rotor.toml";
+    let usage = "give a value as NAME=VALUE, such as omega=1";
+    let cases: Vec<(&str, &str, usize, &str, String)> = vec![
+        (
+            "--fix",
+            "M=1,",
+            4,
+            "^",
+            format!("a value is missing after this comma: {usage}"),
+        ),
+        (
+            "--fix",
+            "M=1,,omega=2",
+            4,
+            "^",
+            format!("a value is missing after this comma: {usage}"),
+        ),
+        (
+            "--fix",
+            ",M=1",
+            1,
+            "^",
+            format!("a value is missing before this comma: {usage}"),
+        ),
+        (
+            "--fix",
+            "M=1,omega",
+            5,
+            "^^^^^",
+            format!("'omega' has no '=': {usage}"),
+        ),
+        (
+            "--fix",
+            "M=1, =2",
+            6,
+            "^",
+            format!("a name is missing before this '=': {usage}"),
+        ),
+        (
+            "--fix",
+            "M= ",
+            2,
+            "^",
+            format!("a value is missing after this '=': {usage}"),
+        ),
+        (
+            "--fix",
+            "M=1, m=2",
+            6,
+            "^",
+            "'m' is not a parameter of the system; did you mean 'M'? (its parameters: M, omega, \
+             I"
+            .into(),
+        ),
+        (
+            "--fix",
+            "M = two",
+            5,
+            "^^^",
+            "'two' is not a number: write a fraction such as 2/3, or a decimal such as 1.5".into(),
+        ),
+        (
+            "--fix",
+            "M=3/0",
+            3,
+            "^^^",
+            "'3/0' is a division by zero: a fraction's denominator is nonzero".into(),
+        ),
+        (
+            "--fix",
+            "ω=1, omega=2",
+            6,
+            "^^^^^",
+            "'omega' is given two values".into(),
+        ),
+        (
+            "--fix",
+            "omega=1,M=0",
+            11,
+            "^",
+            "M = 0: parameters are fixed to nonzero values (a value the lift back can divide \
+             by); to study the system at M = 0, set it with --when 'M = 0'"
+                .into(),
+        ),
+        (
+            "--symbolic",
+            "omega,",
+            6,
+            "^",
+            "a parameter is missing after this comma: name parameters as A,B, such as M,omega"
+                .into(),
+        ),
+        (
+            "--symbolic",
+            "M, Q",
+            4,
+            "^",
+            "'Q' is not a parameter of the system (its parameters: M, omega, I".into(),
+        ),
+        (
+            "--symbolic",
+            "omega, ω",
+            8,
+            "^",
+            "'ω' is named twice".into(),
+        ),
+    ];
+    for (option, text, column, caret, message) in &cases {
+        let expected = refused_at(text, *column, caret, &format!("{option}: {message}"));
+        // The built-in system's parameters are the file's but for its l, listed last.
+        let (head, tail) = expected.split_at(expected.find("\n").expect("a line"));
+        for system in [&["--system", "harmonic"][..], &[rotor][..]] {
+            for command in [
+                [&["search"], system, &DEGREE_ONE_TRIG_ZERO[..]].concat(),
+                [&["closure"], system, &["G1", "G2"][..]].concat(),
+            ] {
+                let args = [&command[..], &[*option, *text]].concat();
+                let o = superint(&args);
+                assert_eq!(o.status.code(), Some(2), "{args:?}");
+                let got = stderr(&o);
+                let (got_head, got_tail) = got.split_at(got.find('\n').expect("a line"));
+                assert!(got_head.starts_with(head), "{args:?}\n{got}\n{expected}");
+                assert_eq!(got_tail, tail, "{args:?}");
+            }
         }
     }
 }
@@ -2236,7 +2375,7 @@ fn cli_a_blank_function_name_is_refused_where_it_ends() {
     }
 }
 
-/// A comma with no parameter after it (or before it) in --symbolic is refused by its column,
+/// A comma with no parameter after it (or before it) in --symbolic is refused at the comma,
 /// as one in --fix and --when is: --symbolic 'M,' was read as 'M'.
 #[test]
 fn cli_a_comma_with_no_parameter_beside_it_is_refused_by_symbolic() {
@@ -2248,9 +2387,14 @@ fn cli_a_comma_with_no_parameter_beside_it_is_refused_by_symbolic() {
     ] {
         let o = superint(&["closure", rotor, "L", "--symbolic", symbolic]);
         assert_eq!(o.status.code(), Some(2), "{symbolic}");
-        let message = format!(
-            "superint: error: --symbolic: a parameter is missing {side} the comma at column \
-             {column}: name parameters as A,B, such as M,omega\n"
+        let message = refused_at(
+            symbolic,
+            column,
+            "^",
+            &format!(
+                "--symbolic: a parameter is missing {side} this comma: name parameters as A,B, \
+                 such as M,omega"
+            ),
         );
         assert_eq!(stderr(&o), message, "{symbolic}");
     }
@@ -2262,13 +2406,18 @@ fn cli_a_comma_with_no_parameter_beside_it_is_refused_by_symbolic() {
 #[test]
 fn cli_a_parameter_named_twice_is_refused_by_symbolic() {
     let rotor = "systems/harmonic-rotor.toml";
-    for (command, symbolic, twice) in [
-        (vec!["closure", rotor, "L", "G1", "G2"], "omega,ω", "ω"),
-        (vec!["search", rotor], "M, M", "M"),
+    for (command, symbolic, twice, column) in [
+        (vec!["closure", rotor, "L", "G1", "G2"], "omega,ω", "ω", 7),
+        (vec!["search", rotor], "M, M", "M", 4),
     ] {
         let o = superint(&[&command[..], &["--symbolic", symbolic]].concat());
         assert_eq!(o.status.code(), Some(2), "{symbolic}");
-        let message = format!("superint: error: --symbolic: '{twice}' is named twice\n");
+        let message = refused_at(
+            symbolic,
+            column,
+            "^",
+            &format!("--symbolic: '{twice}' is named twice"),
+        );
         assert_eq!(stderr(&o), message, "{symbolic}");
     }
 }

@@ -1283,11 +1283,11 @@ fn fixing_a_radicands_parameter_at_zero_suggests_no_condition() {
     assert_eq!(out.status.code(), Some(2));
     assert_eq!(
         String::from_utf8_lossy(&out.stderr),
-        "superint: error: --fix: a = 0: parameters are fixed to nonzero values (a value the \
-         lift back can divide by); --when 'a = 0' cannot set it either: the condition sets a, \
-         which the radicand of r = √(x² − 2ax + y² + z² + a²) involves: a condition on a \
-         radicand's variables is not supported (declare the radical with the value in its \
-         radicand instead)\n"
+        "superint: error: <command line>:1:3: --fix: a = 0: parameters are fixed to nonzero \
+         values (a value the lift back can divide by); --when 'a = 0' cannot set it either: the \
+         condition sets a, which the radicand of r = √(x² − 2ax + y² + z² + a²) involves: a \
+         condition on a radicand's variables is not supported (declare the radical with the \
+         value in its radicand instead)\n 1 | a=0\n   |   ^\n"
     );
 }
 
