@@ -509,56 +509,22 @@ pub(crate) fn expression_error(source: &Source, text: &Text, e: &ParseError) -> 
     }
 }
 
-/// The parser says where an unclosed bracket was opened in the expression's own lines and
-/// columns (`opened at column 7`); this says it in the file's (`opened at line 10, column
-/// 16`). A text of the command line is said as the parser says it of a built-in system's: the
-/// column alone where the bracket opens on the line of the error, `opened at column 5`.
+/// The parser's message, with where the opener it names stands (an unclosed bracket, a
+/// name's braces), which the parser hands over as a byte of the text, said in the file's lines
+/// and columns (`opened at line 10, column 16`) rather than the expression's own (`opened at
+/// column 7`). A text of the command line is said as the parser says it of a built-in
+/// system's: the column alone where the opener is on the line of the error, `opened at column
+/// 5`.
 fn relocate_opener(source: &Source, text: &Text, e: &ParseError) -> String {
-    const MARK: &str = " opened at ";
-    let Some(k) = e.message.find(MARK) else {
-        return e.message.clone();
-    };
-    let rest = &e.message[k + MARK.len()..];
-    let Some(comma) = rest.find(", found") else {
-        return e.message.clone();
-    };
-    let place = &rest[..comma];
-    let number = |s: &str| s.trim().parse::<usize>().ok();
-    let (line, col) = match place.strip_prefix("line ") {
-        Some(lc) => match lc.split_once(", column ") {
-            Some((l, c)) => (number(l), number(c)),
-            None => (None, None),
-        },
-        None => {
-            let here = text.value[..e.span.start.min(text.value.len())]
-                .matches('\n')
-                .count();
-            (
-                Some(here + 1),
-                place.strip_prefix("column ").and_then(number),
-            )
+    e.message_placing_opener(|open| {
+        let at = text.source_span(Span::new(open, open + 1));
+        let loc = super::error::locate(&source.text, at);
+        let error_line = || super::error::locate(&source.text, text.source_span(e.span)).line;
+        match source.origin == super::COMMAND_LINE && loc.line == error_line() {
+            true => format!("column {}", loc.column),
+            false => format!("line {}, column {}", loc.line, loc.column),
         }
-    };
-    let (Some(line), Some(col)) = (line.filter(|&l| l >= 1), col.filter(|&c| c >= 1)) else {
-        return e.message.clone();
-    };
-    let line_start: usize = text
-        .value
-        .split_inclusive('\n')
-        .take(line - 1)
-        .map(str::len)
-        .sum();
-    let Some((offset, _)) = text.value[line_start..].char_indices().nth(col - 1) else {
-        return e.message.clone();
-    };
-    let at = text.source_span(Span::new(line_start + offset, line_start + offset + 1));
-    let loc = super::error::locate(&source.text, at);
-    let error_line = || super::error::locate(&source.text, text.source_span(e.span)).line;
-    let place = match source.origin == super::COMMAND_LINE && loc.line == error_line() {
-        true => format!("column {}", loc.column),
-        false => format!("line {}, column {}", loc.line, loc.column),
-    };
-    format!("{}{MARK}{place}{}", &e.message[..k], &rest[comma..])
+    })
 }
 
 impl<'a> Scope<'a> {

@@ -52,6 +52,20 @@ pub struct ParseError {
     pub message: String,
     /// The place of `span` in the source and its line, when the error knows its source.
     excerpt: Option<Box<Excerpt>>,
+    /// The opener whose place the message says, when it says one.
+    opener: Option<Box<Opener>>,
+}
+
+/// An opener named by an error's message (`expected ')' to close '(' opened at column 5,
+/// found end of input`): its byte offset in the parsed text, and the message before
+/// and after the place the parser wrote (`column 5`), so that a caller that places the text
+/// in lines of its own (a file's) writes the message with its own place once
+/// ([`ParseError::message_placing_opener`]).
+#[derive(Clone, Debug, PartialEq, Eq)]
+struct Opener {
+    at: usize,
+    before: String,
+    after: String,
 }
 
 impl ParseError {
@@ -61,6 +75,50 @@ impl ParseError {
             span,
             message: message.into(),
             excerpt: None,
+            opener: None,
+        }
+    }
+
+    /// An error at `span` of `src` saying where the opener at byte `open` of what it refuses
+    /// stands (the braces of a name, a parenthesis never closed):
+    /// `before`, the place ([`opened_at`]: the column where the opener is on the error's line,
+    /// else its line and column), `after`.
+    pub(crate) fn naming_opener(
+        src: &str,
+        span: Span,
+        open: usize,
+        before: &str,
+        after: &str,
+    ) -> Self {
+        let at = opened_at(src, open, span.start);
+        ParseError {
+            opener: Some(Box::new(Opener {
+                at: open,
+                before: before.to_string(),
+                after: after.to_string(),
+            })),
+            ..ParseError::new(span, format!("{before}{at}{after}"))
+        }
+    }
+
+    /// The same error with `prefix` before its message (`a bracket {f, g} takes exactly two
+    /// arguments; `), still naming its opener.
+    #[must_use]
+    pub(crate) fn prefixed(mut self, prefix: &str) -> Self {
+        self.message.insert_str(0, prefix);
+        if let Some(opener) = &mut self.opener {
+            opener.before.insert_str(0, prefix);
+        }
+        self
+    }
+
+    /// The message, with the place of the opener it names, if it names one, written
+    /// by `place` from the opener's byte offset in the parsed text: for a caller whose lines
+    /// are not the parsed text's (a file's, where the text is a value among others).
+    pub fn message_placing_opener(&self, place: impl FnOnce(usize) -> String) -> String {
+        match &self.opener {
+            Some(o) => format!("{}{}{}", o.before, place(o.at), o.after),
+            None => self.message.clone(),
         }
     }
 
@@ -206,7 +264,7 @@ pub(crate) fn line_col(src: &str, offset: usize) -> (usize, usize) {
 
 /// Where an opener at byte `open` of `src` stands, for a refusal at byte `here` of what it
 /// opens: `column C` where both are on one line, else `line L, column C`.
-pub(crate) fn opened_at(src: &str, open: usize, here: usize) -> String {
+fn opened_at(src: &str, open: usize, here: usize) -> String {
     let (line, col) = line_col(src, open);
     if line == line_col(src, here).0 {
         format!("column {col}")

@@ -11,7 +11,7 @@
 //! of `Zbar`) is told by the system's names, where its LaTeX spells it
 //! ([`latex_name`] of the LaTeX it prints).
 
-use super::error::{opened_at, ParseError, Span};
+use super::error::{ParseError, Span};
 use super::lexer::{superscript_digit, Lexer, Tok};
 use super::parser::{too_deep, MAX_DEPTH};
 use crate::varset::{letter_of_char, letter_of_command};
@@ -425,11 +425,13 @@ impl Lexer<'_> {
     /// The error for the text at `span`, no part of a name, in the braces of a name opened at
     /// byte `open`: what they hold, and where they open.
     fn not_in_name(&self, open: usize, span: Span) -> ParseError {
-        let at = opened_at(self.src, open, span.start);
         let found = &self.src[span.start..span.end];
-        ParseError::new(
+        ParseError::naming_opener(
+            self.src,
             span,
-            format!("{NOT_IN_NAME} opened at {at}, found '{found}'"),
+            open,
+            &format!("{NOT_IN_NAME} opened at "),
+            &format!(", found '{found}'"),
         )
     }
 }

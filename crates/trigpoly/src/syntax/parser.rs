@@ -6,7 +6,7 @@
 
 use num_bigint::BigInt;
 
-use super::error::{opened_at, ParseError, Span};
+use super::error::{ParseError, Span};
 use super::latex::{FRACTIONS, SIZING_OPEN};
 use super::lexer::{Lexer, Tok, Token};
 use crate::lower::calls_function;
@@ -309,11 +309,13 @@ impl Parser<'_> {
             return self.implicit_mul();
         }
         let opener = &self.src[open.start..open.end];
-        let at = opened_at(self.src, open.start, self.tok.span.start);
-        self.error(format!(
-            "expected '{close}' to close '{opener}' opened at {at}, found {}",
-            self.found()
-        ))
+        ParseError::naming_opener(
+            self.src,
+            self.tok.span,
+            open.start,
+            &format!("expected '{close}' to close '{opener}' opened at "),
+            &format!(", found {}", self.found()),
+        )
     }
 
     /// Consumes the current token, which must be `tok`, or reports it as unclosed.
@@ -972,7 +974,7 @@ impl Parser<'_> {
     fn close_bracket(&mut self, open: Span, [f, g]: [Expr; 2]) -> PResult<Expr> {
         if self.tok.tok == Tok::Comma {
             let msg = "a bracket {f, g} takes exactly two arguments";
-            return Err(self.error(format!("{msg}; {}", self.unclosed('}', open).message)));
+            return Err(self.unclosed('}', open).prefixed(&format!("{msg}; ")));
         }
         let close = self.expect_close(Tok::RBrace, '}', open)?;
         Ok(Expr::new(
