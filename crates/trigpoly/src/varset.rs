@@ -14,7 +14,7 @@ pub use names::{
     RESERVED,
 };
 pub(crate) use names::{letter_of_char, letter_of_command, long_name, unparenthesized};
-use names::{render_momentum, render_name, spell_out};
+use names::{render_momentum, render_name, shown_text_of, spell_out};
 
 /// What a variable is in a phase space; only `Angle` changes the algebra.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
@@ -791,7 +791,7 @@ impl VarSetBuilder {
     /// alike.
     pub fn shown_as(self, display: &str) -> Self {
         match shown_forms(display) {
-            Some((_, latex)) => self.printed_as(&shown_text(display), &latex),
+            Some((text, latex)) => self.printed_as(&shown_text_of(display, text), &latex),
             None => self,
         }
     }

@@ -99,6 +99,15 @@ pub fn shown_forms(display: &str) -> Option<(String, String)> {
 /// assert_eq!(shown_text("x(t)"), "x(t)");
 /// ```
 pub fn shown_text(display: &str) -> String {
+    match shown_forms(display) {
+        Some((text, _)) => shown_text_of(display, text),
+        None => display.to_string(),
+    }
+}
+
+/// [`shown_text`] of `display`, whose [`shown_forms`] text is `text`: `text`, or the display
+/// as written where `text` is only its letters with a bar taken apart.
+pub(super) fn shown_text_of(display: &str, text: String) -> String {
     let apart: String = display
         .chars()
         .flat_map(|c| match unbarred(c) {
@@ -106,9 +115,10 @@ pub fn shown_text(display: &str) -> String {
             None => [c, c].into_iter().take(1),
         })
         .collect();
-    match shown_forms(display) {
-        Some((text, _)) if text != apart => text,
-        _ => display.to_string(),
+    if text == apart {
+        display.to_string()
+    } else {
+        text
     }
 }
 
