@@ -315,14 +315,19 @@ impl Subject {
     }
 
     /// `result`, once what the file's texts and the command line's read in doubt is printed
-    /// ([`super::output::warned`]): however the work ended.
+    /// ([`super::output::print_warnings`], as [`super::output::warned`] prints a file's):
+    /// however the work ended.
     pub fn warned<T, E>(&self, result: Result<T, E>) -> Result<T, E> {
+        super::output::print_warnings(&self.warnings().list());
+        result
+    }
+
+    /// What the file's texts and the command line's read in doubt, each place once: a file's
+    /// own, or those a built-in system's subject keeps beside it.
+    fn warnings(&self) -> &Warnings {
         match self {
-            Subject::File(f) => super::output::warned(f, result),
-            Subject::Builtin(_, _, noted) => {
-                super::output::print_warnings(&noted.list());
-                result
-            }
+            Subject::File(f) => f.kept_warnings(),
+            Subject::Builtin(_, _, noted) => noted,
         }
     }
 
@@ -410,21 +415,13 @@ impl Subject {
         }
         // Names run together that read as a product of the system's (`Mx`), refused without
         // the warning of how they read, which the refusal says.
-        if self.parses_unwarned(name) {
+        if self.warnings().unwarned(|| self.parse(name).is_ok()) {
             bail!(
                 "{option} {name}: the system reads {name} as a product of its names; choose \
                  another name"
             );
         }
         Ok(())
-    }
-
-    /// Whether `src` parses, keeping no warning of how it reads.
-    fn parses_unwarned(&self, src: &str) -> bool {
-        match self {
-            Subject::File(f) => f.unwarned(|| self.parse(src).is_ok()),
-            Subject::Builtin(_, _, noted) => noted.unwarned(|| self.parse(src).is_ok()),
-        }
     }
 
     /// Parses an expression: named functions, family instances, brackets. What it reads in

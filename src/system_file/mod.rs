@@ -500,9 +500,11 @@ impl LoadedSystem {
         self.warnings.list()
     }
 
-    /// `f`'s result, with the warnings of the texts it reads dropped ([`Warnings::unwarned`]).
-    pub fn unwarned<T>(&self, f: impl FnOnce() -> T) -> T {
-        self.warnings.unwarned(f)
+    /// The readings in doubt kept ([`LoadedSystem::warnings`]), as a built-in system's
+    /// subject keeps the command line's: to test a text whose warnings are dropped
+    /// ([`Warnings::unwarned`]).
+    pub fn kept_warnings(&self) -> &Warnings {
+        &self.warnings
     }
 
     /// Keeps `warning` unless the same is kept already ([`Warnings::warn`]).
