@@ -91,11 +91,13 @@ pub(super) fn plan(a: &[u64], b: &[u64]) -> Option<Vec<u64>> {
     // column is sampled too: `e/(st) ≈ (λ/2)(t/m)`, so `μ ≈ 2enm/(s²t²)`.
     let excess = (rows * t - distinct) as u128;
     let (n, m, s, t) = (n as u128, m as u128, rows as u128, t as u128);
-    if 2 * excess * n * m < MIN_MULTIPLICITY as u128 * (s * t).pow(2) {
+    // `s²t²`, the sampled products squared.
+    let sampled_squared = (s * t).pow(2);
+    if 2 * excess * n * m < MIN_MULTIPLICITY as u128 * sampled_squared {
         return None;
     }
     // The estimated monomials, `nm/μ = s²t²/(2e)`, in chunks.
-    let monomials = ((s * t).pow(2) / (2 * excess)).min(usize::MAX as u128) as usize;
+    let monomials = (sampled_squared / (2 * excess)).min(usize::MAX as u128) as usize;
     let chunks = monomials.div_ceil(CHUNK_SUMS).clamp(1, distinct);
     let mut sample: Vec<u64> = seen.into_iter().collect();
     sample.sort_unstable_by(|x, y| y.cmp(x));
