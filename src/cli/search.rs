@@ -433,8 +433,27 @@ impl Subject {
     /// [`Subject::parse`] of `src`, which begins at byte `at` of `text` (a value of a
     /// condition): what it reads in doubt, and its error, are placed in `text`, as typed.
     fn parse_in(&self, text: &str, src: &str, at: usize) -> Result<Expr, String> {
+        self.parse_placed(text, src, at).map_err(|e| e.to_string())
+    }
+
+    /// The expression at `span` of the list `text` given to `option` (`--known`), read as
+    /// [`Subject::parse`] reads one, with what it reads in doubt placed in `text`; its error is
+    /// said as [`list_refused`] says a refusal of the list, `<command line>:1:C:` with the
+    /// option named, the text and a caret under the place.
+    pub fn listed(
+        &self,
+        option: &str,
+        text: &str,
+        span: std::ops::Range<usize>,
+    ) -> anyhow::Result<Expr> {
+        self.parse_placed(text, &text[span.clone()], span.start)
+            .map_err(|e| named(option, e))
+    }
+
+    /// [`Subject::parse_in`], its error as the command line's text's error.
+    fn parse_placed(&self, text: &str, src: &str, at: usize) -> Result<Expr, FileError> {
         match self {
-            Subject::File(f) => f.parse_argument(src).map_err(|e| e.to_string()),
+            Subject::File(f) => f.parse_argument_within(text, at..at + src.len()),
             Subject::Builtin(_, s, noted) => {
                 // The value where it stands, after blanks as wide as what comes before it
                 // (its line breaks kept), so that each place said, the caret's and one in a
@@ -451,7 +470,6 @@ impl Subject {
                     Expr::parse_noting(s.vars(), &placed, s.as_ref()).map_err(|e| {
                         let span = shift + e.span.start..shift + e.span.end;
                         FileError::at(ErrorKind::Expression, COMMAND_LINE, text, span, e.message)
-                            .to_string()
                     })?;
                 for r in &readings {
                     let w = Warning::run_together(
@@ -509,8 +527,21 @@ impl Subject {
 /// command-line condition's is: `<command line>:1:C:`, the option and what is wrong, then the
 /// numbered line and a caret under the place it is about.
 fn list_refused(option: &str, text: &str, refusal: ListRefusal) -> anyhow::Error {
-    let message = format!("{option}: {}", refusal.message);
-    anyhow!(FileError::at(ErrorKind::Schema, COMMAND_LINE, text, refusal.span, message).to_string())
+    let error = FileError::at(
+        ErrorKind::Schema,
+        COMMAND_LINE,
+        text,
+        refusal.span,
+        refusal.message,
+    );
+    named(option, error)
+}
+
+/// An error placed in the text given to `option`, with the option named before its message:
+/// `<command line>:1:C: --known: unknown name 'zz'`.
+fn named(option: &str, mut error: FileError) -> anyhow::Error {
+    error.message = format!("{option}: {}", error.message);
+    anyhow!(error.to_string())
 }
 
 /// Searches and prints, on a pool of `--threads` threads if asked.
@@ -557,9 +588,9 @@ fn search(a: &SearchArgs, subject: &Subject) -> anyhow::Result<Report> {
     options.exact_complement = a.exact_complement;
     options.max_products = usize::try_from(a.max_products).unwrap_or(usize::MAX);
     if let Some(known) = &a.known {
-        for k in parse_known(known).map_err(|e| anyhow!("--known: {e}"))? {
-            let e = subject.parse(k).map_err(|e| anyhow!("--known: {e}"))?;
-            options.known.push((subject.known_name(k), e));
+        for span in parse_known(known).map_err(|e| list_refused("--known", known, e))? {
+            let e = subject.listed("--known", known, span.clone())?;
+            options.known.push((subject.known_name(&known[span]), e));
         }
     }
     // A file's integrals are restated in its functions and family instances too.

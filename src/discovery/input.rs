@@ -79,27 +79,6 @@ pub fn builtin_system(
     Ok(Some(s))
 }
 
-/// Where the `k`th of `pieces` (a list split at its commas, `--known`'s) is blank beside a
-/// comma, that `what` is missing after the comma (`L,`) or before it (`,L`), by the comma's
-/// column: `an expression is missing after the comma at column 2`. A list of one blank piece
-/// has no comma to blame, and is left to the caller.
-fn missing_beside_comma(pieces: &[&str], k: usize, what: &str) -> Option<String> {
-    if !pieces[k].trim().is_empty() || pieces.len() < 2 {
-        return None;
-    }
-    let (side, before) = match k {
-        0 => ("before", 0),
-        _ => ("after", k - 1),
-    };
-    let comma: usize = pieces[..=before]
-        .iter()
-        .map(|p| p.chars().count() + 1)
-        .sum();
-    Some(format!(
-        "{what} is missing {side} the comma at column {comma}"
-    ))
-}
-
 /// Reads a condition `var = value[, var = value]` (such as `p_theta = 2*I*omega/3`), values
 /// parsed by `parse`, which is given each value with the byte where it begins in `text` (so
 /// that what it says of the value points into the condition as typed). A refusal of the
@@ -249,7 +228,7 @@ fn comma_pieces(text: &str) -> Vec<(usize, &str)> {
         .collect()
 }
 
-/// Where the `k`th of `pieces` ([`comma_pieces`]) is blank beside a comma, that `what` is
+/// Where the `k`th of `pieces` (a list split at its commas, [`comma_pieces`]) is blank beside a comma, that `what` is
 /// missing after the comma (`M=1,`) or before it (`,M=1`), at that comma, as a condition's
 /// comma is refused: `a value is missing after this comma`. A list of one blank piece has no
 /// comma to blame, and is left to the caller.
@@ -315,27 +294,29 @@ pub fn parse_symbolic(system: &System, text: &str) -> Result<Vec<Var>, ListRefus
     Ok(out)
 }
 
-/// The expressions of `--known` (`L,P_{1,1}`): split at the commas outside braces (a comma
-/// inside belongs to an instance), trimmed; a blank text gives none, and a comma with no
-/// expression after it or before it is refused, by its column.
-pub fn parse_known(text: &str) -> Result<Vec<&str>, String> {
-    let pieces: Vec<&str> = crate::system_file::split_top_level(text, ',')
+/// How `--known` reads, for its refusals.
+const KNOWN_USAGE: &str = "expressions or family instances separated by commas, such as L,P_1_1";
+
+/// The expressions of `--known` (`L,P_{1,1}`), each with its byte range in `text`: split at
+/// the commas outside braces (a comma inside belongs to an instance), trimmed; a blank text
+/// gives none, and a comma with no expression after it or before it is refused at the comma,
+/// as in [`parse_fixed`].
+pub fn parse_known(text: &str) -> Result<Vec<std::ops::Range<usize>>, ListRefusal> {
+    let pieces: Vec<(usize, &str)> = crate::system_file::split_top_level(text, ',')
         .into_iter()
-        .map(|r| &text[r])
+        .map(|r| (r.start, &text[r]))
         .collect();
-    for k in 0..pieces.len() {
-        if let Some(missing) = missing_beside_comma(&pieces, k, "an expression") {
-            return Err(format!(
-                "{missing}: expressions or family instances separated by commas, such as \
-                 L,P_1_1"
-            ));
+    let mut out = Vec::new();
+    for (k, &(at, piece)) in pieces.iter().enumerate() {
+        if let Some(missing) = blank_beside_comma(&pieces, k, "an expression", KNOWN_USAGE) {
+            return Err(missing);
+        }
+        let (expression, span) = trimmed(at, piece);
+        if !expression.is_empty() {
+            out.push(span);
         }
     }
-    Ok(pieces
-        .into_iter()
-        .map(str::trim)
-        .filter(|k| !k.is_empty())
-        .collect())
+    Ok(out)
 }
 
 /// How `--fix` reads, for its refusals.

@@ -419,6 +419,19 @@ impl LoadedSystem {
         self.value(&self.argument(src)?)
     }
 
+    /// [`LoadedSystem::parse_argument`] of the part `range` of `text` (an expression of a
+    /// list given on the command line, `--known`'s): its error, and what it reads in doubt, are
+    /// placed in `text`, as typed.
+    pub fn parse_argument_within(
+        &self,
+        text: &str,
+        range: Range<usize>,
+    ) -> Result<Expr, FileError> {
+        let source = self.given("<expression>", text);
+        let piece = Text::whole(&source).slice(range);
+        self.value(&self.argument_at(source, piece)?)
+    }
+
     /// An expression given to a report as the file's claims print it, in the paper's
     /// notation and the file's names (`{L_x, A_xy}` for `{Lx, Axy}`, `L²` for `L^2`); an error
     /// where it does not parse, as [`LoadedSystem::parse_argument`] reports it.
@@ -457,6 +470,11 @@ impl LoadedSystem {
     /// Reads the expression that is `source`, without expanding it.
     fn argument_in(&self, source: Source) -> Result<Argument, FileError> {
         let text = Text::whole(&source);
+        self.argument_at(source, text)
+    }
+
+    /// Reads the expression `text`, a part of `source`, without expanding it.
+    fn argument_at(&self, source: Source, text: Text) -> Result<Argument, FileError> {
         let tree = self.scope(self.families.len()).tree(&source, &text)?;
         Ok(Argument { source, text, tree })
     }

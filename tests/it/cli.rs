@@ -2422,23 +2422,73 @@ fn cli_a_parameter_named_twice_is_refused_by_symbolic() {
     }
 }
 
-/// A comma with no expression after it (or before it) in --known is refused by its column,
-/// as one in --fix is; a comma inside an instance's braces is the instance's.
+/// Every refusal of --known about a place in its text says it as --fix and --when do,
+/// `<command line>:1:C: --known:`, the whole list and a caret under the place, for a file and a
+/// built-in system: a comma with no expression beside it (a comma inside an instance's braces
+/// is the instance's), which was said in words, `missing after the comma at column 2`, and an
+/// expression that does not parse, which was placed in that expression alone, as if it were
+/// the whole text (`<command line>:1:1: unknown name 'zz'` under `zz` for `p_theta, zz`).
 #[test]
-fn cli_a_comma_with_no_expression_beside_it_is_refused_by_known() {
-    let rotor = "systems/harmonic-rotor.toml";
-    for (known, side, column) in [
-        ("L,", "after", 2),
-        ("K_{1,1}, ,L", "after", 8),
-        (",L", "before", 1),
+fn cli_known_refuses_at_its_place_as_fix_does() {
+    let usage = "expressions or family instances separated by commas, such as L,P_1_1";
+    let cases: Vec<(&str, usize, &str, String)> = vec![
+        (
+            "L,",
+            2,
+            "^",
+            format!("an expression is missing after this comma: {usage}"),
+        ),
+        (
+            "K_{1,1}, ,L",
+            8,
+            "^",
+            format!("an expression is missing after this comma: {usage}"),
+        ),
+        (
+            ",L",
+            1,
+            "^",
+            format!("an expression is missing before this comma: {usage}"),
+        ),
+        (
+            "p_theta,x+",
+            11,
+            "^",
+            "expected an expression after '+', found end of input".into(),
+        ),
+        (
+            "ω, (x",
+            6,
+            "^",
+            "expected ')' to close '(' opened at column 4, found end of input".into(),
+        ),
+        (
+            "p_theta, zz",
+            10,
+            "^^",
+            "unknown name 'zz' (known: x, y, theta".into(),
+        ),
+    ];
+    for system in [
+        &["systems/harmonic-rotor.toml"][..],
+        &["--system", "harmonic"],
     ] {
-        let o = superint(&["search", rotor, "--new-only", "--known", known]);
-        assert_eq!(o.status.code(), Some(2), "{known}");
-        let message = format!(
-            "superint: error: --known: an expression is missing {side} the comma at column \
-             {column}: expressions or family instances separated by commas, such as L,P_1_1\n"
-        );
-        assert_eq!(stderr(&o), message, "{known}");
+        for (known, column, caret, message) in &cases {
+            let mut args = vec!["search"];
+            args.extend_from_slice(system);
+            args.extend(["--new-only", "--known", known]);
+            let o = superint(&args);
+            assert_eq!(o.status.code(), Some(2), "{system:?} {known}");
+            let err = stderr(&o);
+            let expected = refused_at(known, *column, caret, &format!("--known: {message}"));
+            // The first line up to the message, then the text and the caret.
+            let (head, tail) = expected.split_once('\n').unwrap();
+            let first = err.lines().next().unwrap_or("");
+            assert!(first.starts_with(head), "{system:?} {known}: {err}");
+            let shown: Vec<&str> = err.lines().skip(1).take(2).collect();
+            let wanted: Vec<&str> = tail.lines().collect();
+            assert_eq!(shown, wanted, "{system:?} {known}: {err}");
+        }
     }
 }
 
