@@ -644,4 +644,111 @@ mod tests {
         let default = format!("[default: {DEFAULT_RADICALS_DEGREE}]");
         assert!(help.contains(&default), "{help}");
     }
+
+    /// The pieces of the texts the list readers are given: names in their spellings, the
+    /// signs of a list and of a value, blanks, and characters of two bytes.
+    const TOKENS: &[&str] = &[
+        "omega", "ω", "\\omega", "M", "theta", "θ", "p_theta", "x", "=", ",", " ", "\t", "0", "1",
+        "2", "3", "/", ".", "-", "(", ")", "{", "}", "é", "²",
+    ];
+
+    /// A file system and a built-in one, as the command line opens them.
+    fn subjects() -> [Subject; 2] {
+        [
+            vec!["search", "systems/harmonic-rotor.toml"],
+            vec!["search", "--system", "harmonic"],
+        ]
+        .map(|args| {
+            let a = Command::parse_from(args).args;
+            Subject::open(a.file.as_ref(), a.system.as_deref(), false, &a.limits).expect("opens")
+        })
+    }
+
+    /// Whether `span` can be drawn under `text`: within it, ends on character boundaries.
+    fn drawable(text: &str, span: &std::ops::Range<usize>) -> bool {
+        span.start <= span.end
+            && span.end <= text.len()
+            && text.is_char_boundary(span.start)
+            && text.is_char_boundary(span.end)
+    }
+
+    /// The readers of the command line's lists, `--fix`, `--symbolic`, `--when` and
+    /// `--known`, never panic on any text, of a file system or a built-in one; every
+    /// refusal's byte range can be drawn under the text (within it, on character
+    /// boundaries), and the refusal is rendered as the command line renders it without a
+    /// panic: `list_refused`, `Subject::listed`, `Subject::condition`. The systems are opened
+    /// once, for all the cases.
+    #[test]
+    fn the_list_readers_refuse_at_a_drawable_place() {
+        let subjects = subjects();
+        let texts = proptest::collection::vec(0..TOKENS.len(), 0..14);
+        let mut runner = proptest::test_runner::TestRunner::default();
+        let checked = runner.run(&texts, |picks| {
+            let text: String = picks.iter().map(|&k| TOKENS[k]).collect();
+            for subject in &subjects {
+                let system = subject.system();
+                if let Err(r) = parse_fixed(system, &text) {
+                    proptest::prop_assert!(drawable(&text, &r.span), "--fix {:?}: {:?}", text, r);
+                    let _ = list_refused("--fix", &text, r).to_string();
+                }
+                if let Err(r) = parse_symbolic(system, &text) {
+                    proptest::prop_assert!(
+                        drawable(&text, &r.span),
+                        "--symbolic {:?}: {:?}",
+                        text,
+                        r
+                    );
+                    let _ = list_refused("--symbolic", &text, r).to_string();
+                }
+                match parse_known(&text) {
+                    Err(r) => {
+                        proptest::prop_assert!(
+                            drawable(&text, &r.span),
+                            "--known {:?}: {:?}",
+                            text,
+                            r
+                        );
+                        let _ = list_refused("--known", &text, r).to_string();
+                    }
+                    Ok(spans) => {
+                        for span in spans {
+                            proptest::prop_assert!(
+                                drawable(&text, &span),
+                                "--known {:?}: {:?}",
+                                text,
+                                span
+                            );
+                            if let Err(e) = subject.listed("--known", &text, span) {
+                                let _ = format!("{e:#}");
+                            }
+                        }
+                    }
+                }
+                // The condition's refusals where they are made, then as the command line
+                // renders them.
+                let spans = std::cell::RefCell::new(Vec::new());
+                let refuse = |span: std::ops::Range<usize>, message: String| {
+                    spans.borrow_mut().push(span.clone());
+                    FileError::at(ErrorKind::Condition, COMMAND_LINE, &text, span, message)
+                        .to_string()
+                };
+                let _ = parse_condition(
+                    system,
+                    &text,
+                    &|s, at| subject.parse_in(&text, s, at),
+                    &refuse,
+                );
+                for span in spans.borrow().iter() {
+                    proptest::prop_assert!(drawable(&text, span), "--when {:?}: {:?}", text, span);
+                }
+                if let Err(e) = subject.condition(Some(&text)) {
+                    let _ = format!("{e:#}");
+                }
+            }
+            Ok(())
+        });
+        if let Err(e) = checked {
+            panic!("{e}");
+        }
+    }
 }
