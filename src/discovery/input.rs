@@ -172,11 +172,19 @@ pub fn parse_condition(
     })
 }
 
-/// The parameter called `name`; another name is refused with the parameters there are, and
-/// the one it was probably meant to be (`alfa` for `alpha`).
+/// The parameter called `name`, read as a condition's left side is, by the parser (`\omega`
+/// and `ϵ` name `omega` and `epsilon`); another name is refused with the parameters there are,
+/// and the one it was probably meant to be (`alfa` for `alpha`).
 fn parameter(system: &System, name: &str) -> Result<Var, String> {
     let vars = system.vars();
-    vars.lookup(name)
+    let read = trigpoly::syntax::parse_expr(name)
+        .ok()
+        .and_then(|e| match e.kind {
+            trigpoly::syntax::ExprKind::Name(n) => Some(n),
+            _ => None,
+        });
+    read.and_then(|n| vars.lookup(&n))
+        .or_else(|| vars.lookup(name))
         .filter(|v| vars.variable(*v).kind() == trigpoly::VarKind::Parameter)
         .ok_or_else(|| {
             let parameters: Vec<&str> = vars

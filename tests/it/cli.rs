@@ -2116,6 +2116,55 @@ fn cli_fix_and_symbolic_refuse_at_their_place_as_when_does() {
     }
 }
 
+/// --fix and --symbolic read a parameter's name as --when reads a variable's, by the parser:
+/// `\omega` names omega there as in --when '\omega = 1', where it was refused as no parameter
+/// of the system (did you mean 'omega'?); and named beside `omega` it is named twice.
+#[test]
+fn cli_fix_and_symbolic_read_a_parameter_written_in_latex() {
+    let rotor = "systems/harmonic-rotor.toml";
+    for system in [&["--system", "harmonic"][..], &[rotor][..]] {
+        for (command, option, latex, plain) in [
+            (&["search"][..], "--fix", r"\omega=2, M=1", "omega=2, M=1"),
+            (&["closure"][..], "--symbolic", r"M, \omega", "M, omega"),
+        ] {
+            let run = |list: &str| {
+                let tail: &[&str] = match command[0] {
+                    "search" => &DEGREE_ONE_TRIG_ZERO,
+                    _ => &["G1", "G2"],
+                };
+                let args = [command, system, tail, &["--no-timings", option, list]].concat();
+                let o = superint(&args);
+                assert_eq!(o.status.code(), Some(0), "{args:?}: {}", stderr(&o));
+                stdout(&o)
+            };
+            assert_eq!(run(latex), run(plain), "{system:?} {option} {latex}");
+        }
+        for (option, list, column, message) in [
+            (
+                "--fix",
+                r"omega=1, \omega=2",
+                10,
+                r"'\omega' is given two values",
+            ),
+            (
+                "--symbolic",
+                r"omega, \omega",
+                8,
+                r"'\omega' is named twice",
+            ),
+        ] {
+            let args = [&["closure"][..], system, &["G1", "G2", option, list]].concat();
+            let o = superint(&args);
+            assert_eq!(o.status.code(), Some(2), "{args:?}");
+            assert_eq!(
+                stderr(&o),
+                refused_at(list, column, "^^^^^^", &format!("{option}: {message}")),
+                "{args:?}"
+            );
+        }
+    }
+}
+
 /// An expression of spaces alone has the caret past them, where its input ends, as an empty
 /// one has it where it ends: the caret stood at column 1, under the first space.
 #[test]
