@@ -97,31 +97,18 @@ pub fn parse_condition(
     // Where each value is written, for a refusal of the condition as a whole.
     let mut values = Vec::new();
     let mut shown = Vec::new();
-    let pieces: Vec<&str> = text.split(',').collect();
-    // Where each piece begins in `text`, past the commas before it.
-    let mut start = 0;
-    for (k, piece) in pieces.iter().enumerate() {
-        let at = start;
-        start += piece.len() + 1;
+    let pieces = comma_pieces(text);
+    for (k, &(at, piece)) in pieces.iter().enumerate() {
         // A comma with nothing after it (`M = 1,`), or before it (`, M = 1`).
-        if piece.trim().is_empty() && pieces.len() > 1 {
-            let (comma, side) = match k {
-                0 => (at + piece.len(), "before"),
-                _ => (at - 1, "after"),
-            };
-            return Err(refuse(
-                comma..comma + 1,
-                format!("a condition is missing {side} this comma: {CONDITION_USAGE}"),
-            ));
+        if let Some(missing) = blank_beside_comma(&pieces, k, "a condition", CONDITION_USAGE) {
+            return Err(refuse(missing.span, missing.message));
         }
         // Split as a file's condition is.
         let [lhs, rhs] = assignment_sides(piece, CONDITION_USAGE)
             .map_err(|(span, why)| refuse(at + span.start..at + span.end, why))?;
-        let rhs_at = at + rhs.start;
-        let (lhs, rhs) = (&piece[lhs], &piece[rhs]);
-        let name = lhs.trim();
-        let name_at = at + lhs.len() - lhs.trim_start().len();
-        let name_span = name_at..name_at + name.len();
+        let (name, name_span) = trimmed(at + lhs.start, &piece[lhs]);
+        let (value, value_span) = trimmed(at + rhs.start, &piece[rhs]);
+        let name_at = name_span.start;
         // Read as a file's left side is, by the parser: `\omega`, `p_{x}` and `ϵ` name the
         // variables they write.
         let read = trigpoly::syntax::parse_expr(name)
@@ -150,15 +137,14 @@ pub fn parse_condition(
         if subs.iter().any(|(w, _)| *w == v) {
             return Err(refuse(name_span, fixed_twice(name)));
         }
-        let value_at = rhs_at + rhs.len() - rhs.trim_start().len();
-        let value = parse(rhs.trim(), value_at)?;
+        let value = parse(value, value_span.start)?;
         shown.push(format!(
             "{} = {}",
             vars.variable(v).unicode(),
             value.render(Style::Unicode)
         ));
         subs.push((v, value));
-        values.push(value_at..value_at + rhs.trim().len());
+        values.push(value_span);
     }
     brackets::Condition::all(&shown.join(", "), subs.clone()).map_err(|e| {
         // At the value of the variable it is about, else at the first.
@@ -236,10 +222,11 @@ fn comma_pieces(text: &str) -> Vec<(usize, &str)> {
         .collect()
 }
 
-/// Where the `k`th of `pieces` (a list split at its commas, [`comma_pieces`]) is blank beside a comma, that `what` is
-/// missing after the comma (`M=1,`) or before it (`,M=1`), at that comma, as a condition's
-/// comma is refused: `a value is missing after this comma`. A list of one blank piece has no
-/// comma to blame, and is left to the caller.
+/// Where the `k`th of `pieces` (a list split at its commas, each with its first byte, as by
+/// [`comma_pieces`]) is blank beside a comma, that `what` is missing after the comma (`M=1,`)
+/// or before it (`,M=1`), at that comma: `a value is missing after this comma`, then `usage`,
+/// for a condition, `--fix`, `--symbolic` and `--known` alike. A list of one blank piece has
+/// no comma to blame, and is left to the caller.
 fn blank_beside_comma(
     pieces: &[(usize, &str)],
     k: usize,
