@@ -2296,32 +2296,34 @@ fn cli_a_builtin_systems_condition_on_an_angle_is_refused_as_a_files() {
         ("theta = 0", 1, "^^^^^"),
         ("p_theta = 1, theta = 1", 14, "^^^^^"),
         (r"\theta = 1", 1, "^^^^^^"),
+        (" θ = 1", 2, "^"),
+        ("ω = 1, θ = 1", 8, "^"),
     ] {
-        let run = |system: &[&str]| {
-            let o = superint(
-                &[
-                    &["search"],
-                    system,
-                    &["--when", when],
-                    &DEGREE_ONE_TRIG_ZERO,
-                ]
-                .concat(),
-            );
-            assert_eq!(o.status.code(), Some(2), "{when:?}: {}", stderr(&o));
-            stderr(&o)
-        };
-        let builtin = run(&["--system", "harmonic"]);
-        let pad = " ".repeat(column - 1);
+        let builtin = search_when_refused(&["--system", "harmonic"], when);
         assert_eq!(
             builtin,
-            format!(
-                "superint: error: <command line>:1:{column}: {refusal}\n 1 | {when}\n   | \
-                 {pad}{caret}\n"
-            ),
+            refused_at(when, column, caret, refusal),
             "{when:?}"
         );
-        assert_eq!(builtin, run(&["systems/harmonic-rotor.toml"]), "{when:?}");
+        let file = search_when_refused(&["systems/harmonic-rotor.toml"], when);
+        assert_eq!(builtin, file, "{when:?}");
     }
+}
+
+/// The stderr of a search of `system` (a file or `--system NAME`) whose `--when when` is
+/// refused.
+fn search_when_refused(system: &[&str], when: &str) -> String {
+    let o = superint(
+        &[
+            &["search"],
+            system,
+            &["--when", when],
+            &DEGREE_ONE_TRIG_ZERO,
+        ]
+        .concat(),
+    );
+    assert_eq!(o.status.code(), Some(2), "{when:?}: {}", stderr(&o));
+    stderr(&o)
 }
 
 /// A malformed --when of a built-in system is refused in the words and the form of a file's,
@@ -2342,21 +2344,9 @@ fn cli_a_builtin_systems_malformed_condition_reads_as_a_files() {
         "(x = 1",
         "x_{ = 1",
     ] {
-        let run = |system: &[&str]| {
-            let o = superint(
-                &[
-                    &["search"],
-                    system,
-                    &["--when", when],
-                    &DEGREE_ONE_TRIG_ZERO,
-                ]
-                .concat(),
-            );
-            assert_eq!(o.status.code(), Some(2), "{when:?}");
-            stderr(&o)
-        };
-        let builtin = run(&["--system", "harmonic"]);
-        assert_eq!(builtin, run(&["systems/harmonic-rotor.toml"]), "{when:?}");
+        let builtin = search_when_refused(&["--system", "harmonic"], when);
+        let file = search_when_refused(&["systems/harmonic-rotor.toml"], when);
+        assert_eq!(builtin, file, "{when:?}");
         assert!(
             builtin.starts_with("superint: error: <command line>:1:"),
             "{builtin}"
