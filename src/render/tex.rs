@@ -68,12 +68,6 @@ const STOPWORDS: &[&str] = &[
 const SUPERSCRIPTS: &str = "⁰¹²³⁴⁵⁶⁷⁸⁹";
 const SUBSCRIPTS: &str = "₀₁₂₃₄₅₆₇₈₉";
 
-/// A Greek letter's LaTeX command, as a name writes it ([`trigpoly::greek_latex`]: `ε` as
-/// `\varepsilon`, in prose and formulas as in a name `epsilon`).
-fn greek(c: char) -> Option<&'static str> {
-    trigpoly::greek_latex(c)
-}
-
 /// A symbol's LaTeX math command: one of the [`SYMBOLS`], or a differential sign as a display
 /// name's LaTeX writes it ([`trigpoly::differential_latex`]: `∂`, `∇`).
 fn symbol(c: char) -> Option<&'static str> {
@@ -363,7 +357,7 @@ fn resolve(s: &str) -> String {
 }
 
 fn char_math(c: char) -> Option<String> {
-    if let Some(g) = greek(c) {
+    if let Some(g) = trigpoly::greek_latex(c) {
         return Some(g.to_string());
     }
     if let Some(s) = symbol(c) {
@@ -713,7 +707,7 @@ impl<'a> Translation<'a> {
             && matches!(&self.toks[self.k - 1], Tok::Word(w, d)
                 if d.is_empty() && FUNCTIONS.iter().any(|f| f.0 == w && !f.1.ends_with('}')));
         let letter = match &self.toks[self.k + 1] {
-            Tok::Char(c, None) => greek(*c).is_some() || matches!(c, 'ħ' | 'ℓ'),
+            Tok::Char(c, None) => trigpoly::greek_latex(*c).is_some() || matches!(c, 'ħ' | 'ℓ'),
             Tok::Name(latex) => latex.starts_with('\\'),
             _ => false,
         };
@@ -834,7 +828,7 @@ impl<'a> Translation<'a> {
                     primed: true,
                 });
             }
-            _ if greek(c).is_some() || c == 'ħ' || c == 'ℓ' => {
+            _ if trigpoly::greek_latex(c).is_some() || c == 'ħ' || c == 'ℓ' => {
                 self.letter_with_digits(c, accent)
             }
             _ => push_char(&mut self.out, c, accent),
@@ -1099,7 +1093,9 @@ impl<'a> Translation<'a> {
             // a power after it would double (`x^²^a`).
             Tok::Word(..) => script_piece(&toks[at..]),
             Tok::Char(c, None)
-                if c.is_ascii_digit() || greek(*c).is_some() || matches!(c, 'ħ' | 'ℓ') =>
+                if c.is_ascii_digit()
+                    || trigpoly::greek_latex(*c).is_some()
+                    || matches!(c, 'ħ' | 'ℓ') =>
             {
                 script_piece(&toks[at..]).map(|(p, k)| (p.trim_end().to_string(), k))
             }
@@ -1148,7 +1144,9 @@ fn script_piece(toks: &[Tok]) -> Option<(String, usize)> {
     loop {
         match toks.get(k) {
             Some(Tok::Word(w, d)) => out.push_str(&format!("{w}{d}")),
-            Some(Tok::Char(c, None)) if greek(*c).is_some() || matches!(c, 'ħ' | 'ℓ') => {
+            Some(Tok::Char(c, None))
+                if trigpoly::greek_latex(*c).is_some() || matches!(c, 'ħ' | 'ℓ') =>
+            {
                 push_char(&mut out, *c, None);
             }
             // Subscript digits right after `_` (`x_₁`) are the subscript's digits.
