@@ -469,7 +469,7 @@ impl Subject {
                 let (e, readings) =
                     Expr::parse_noting(s.vars(), &placed, s.as_ref()).map_err(|e| {
                         let span = shift + e.span.start..shift + e.span.end;
-                        FileError::at(ErrorKind::Expression, COMMAND_LINE, text, span, e.message)
+                        FileError::at(ErrorKind::Expression, COMMAND_LINE, text, span, e.message())
                     })?;
                 for r in &readings {
                     let w = Warning::run_together(

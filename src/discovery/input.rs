@@ -111,8 +111,12 @@ pub fn parse_condition(
         let name_at = name_span.start;
         // Read as a file's left side is, by the parser: `\omega`, `p_{x}` and `ϵ` name the
         // variables they write.
-        let read = trigpoly::syntax::parse_expr(name)
-            .map_err(|e| refuse(name_at + e.span.start..name_at + e.span.end, e.message))?;
+        let read = trigpoly::syntax::parse_expr(name).map_err(|e| {
+            refuse(
+                name_at + e.span.start..name_at + e.span.end,
+                e.message().to_string(),
+            )
+        })?;
         let read = match &read.kind {
             trigpoly::syntax::ExprKind::Name(n) => Some(n.as_str()),
             _ => None,

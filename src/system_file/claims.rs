@@ -145,7 +145,7 @@ impl From<EngineError> for FileError {
                 expression,
                 &source_text,
                 error.span.start..error.span.end,
-                error.message,
+                error.message(),
             ),
             // Located by its own excerpt when it knows its source.
             EngineError::Parse { error, .. } if error.excerpt().is_some() => error.into(),

@@ -385,7 +385,7 @@ impl From<trigpoly::ParseError> for FileError {
     fn from(e: trigpoly::ParseError) -> Self {
         FileError {
             location: e.excerpt().map(|x| Box::new(Location::from(x.clone()))),
-            ..FileError::new(ErrorKind::Expression, "<expression>", e.message)
+            ..FileError::new(ErrorKind::Expression, "<expression>", e.message())
         }
     }
 }

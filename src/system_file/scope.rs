@@ -663,7 +663,7 @@ impl<'a> Scope<'a> {
             "unknown name",
             "unknown LaTeX command",
         ];
-        if !misread.iter().any(|m| e.message.starts_with(m)) {
+        if !misread.iter().any(|m| e.message().starts_with(m)) {
             return expression_error(source, text, e);
         }
         // The whole of a word (a coefficient may come before it, and a power after it): `Re A`,

@@ -67,7 +67,7 @@ impl From<ParseError> for EngineError {
         let (start, end) = (error.span.start, error.span.end);
         let message = match error.excerpt() {
             Some(_) => error.to_string(),
-            None => format!("{} (at bytes {start}..{end})", error.message),
+            None => format!("{} (at bytes {start}..{end})", error.message()),
         };
         EngineError::Parse {
             source_text: String::new(),
@@ -108,7 +108,7 @@ impl EngineError {
                 message: error.render_as(&source_text, what),
                 source_text,
                 // Without its source, so that as the cause it says no line and column either.
-                error: ParseError::new(error.span, error.message),
+                error: error.without_source(),
             },
             other => other,
         }

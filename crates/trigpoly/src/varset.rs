@@ -1125,7 +1125,7 @@ mod tests {
             parse("p_θ^2/2 + ω*cos(2*θ)")
         );
         let unknown = Poly::<GaussianRational>::parse(&vars, "p_phi").unwrap_err();
-        assert!(unknown.message.starts_with("unknown name 'p_phi'"));
+        assert!(unknown.message().starts_with("unknown name 'p_phi'"));
     }
 
     /// `x1` and `x₁` read apart in text and print alike in LaTeX, `x_{1}`; `x1` and `x_1`

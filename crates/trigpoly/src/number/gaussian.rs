@@ -264,7 +264,7 @@ impl fmt::Debug for GaussianRational {
 #[derive(Clone, Debug, PartialEq, Eq, thiserror::Error)]
 #[error(
     "not an exact Gaussian rational: {input:?} (expected a form like 3/5 + 4/5*i): {} at {}",
-    reason.message,
+    reason.message(),
     place(input, reason)
 )]
 pub struct ParseGaussianError {
@@ -545,11 +545,11 @@ mod tests {
             let reason = err.reason();
             assert_eq!(reason.span.start..reason.span.end, at, "{bad:?}: {err}");
             if !why.is_empty() {
-                assert_eq!(reason.message, why, "{bad:?}");
+                assert_eq!(reason.message(), why, "{bad:?}");
             }
             let shown = format!(
                 "not an exact Gaussian rational: {bad:?} {expected}: {} at {place}",
-                reason.message
+                reason.message()
             );
             assert_eq!(err.to_string(), shown);
             let source = std::error::Error::source(&err).map(|s| s.to_string());

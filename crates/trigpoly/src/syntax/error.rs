@@ -36,7 +36,7 @@ impl Span {
 ///
 /// let vars = VarSet::builder().coordinate("x").momentum("p_x").build().unwrap();
 /// let err = Expr::parse(&vars, "p_x^2/2 + q*x").unwrap_err();
-/// assert_eq!(err.message, "unknown name 'q' (known: x, p_x)");
+/// assert_eq!(err.message(), "unknown name 'q' (known: x, p_x)");
 /// assert_eq!(
 ///     err.to_string(),
 ///     "line 1, column 11: unknown name 'q' (known: x, p_x)\n  p_x^2/2 + q*x\n            ^"
@@ -48,8 +48,8 @@ impl Span {
 pub struct ParseError {
     /// The offending part of the source (empty at the end of the input).
     pub span: Span,
-    /// Human-readable description, without location information.
-    pub message: String,
+    /// Human-readable description, without location information ([`ParseError::message`]).
+    message: String,
     /// The place of `span` in the source and its line, when the error knows its source.
     excerpt: Option<Box<Excerpt>>,
     /// The opener whose place the message says, when it says one.
@@ -77,6 +77,14 @@ impl ParseError {
             excerpt: None,
             opener: None,
         }
+    }
+
+    /// The description, without the place: what its `Display` writes after `line L, column C: `.
+    /// It is set where the error is made, and changed only by methods that keep the opener it
+    /// names, if it names one, in step ([`ParseError::message_placing_opener`]).
+    #[must_use]
+    pub fn message(&self) -> &str {
+        &self.message
     }
 
     /// An error at `span` of `src` saying where the opener at byte `open` of what it refuses
@@ -130,6 +138,15 @@ impl ParseError {
         if self.excerpt.is_none() {
             self.excerpt = Some(Box::new(Excerpt::of(src, self.span)));
         }
+        self
+    }
+
+    /// The same error, not knowing its source: its `Display` is then its message alone, for
+    /// a text whose line and column would place it in nothing a reader sees. It still names
+    /// its opener, if it names one.
+    #[must_use]
+    pub fn without_source(mut self) -> Self {
+        self.excerpt = None;
         self
     }
 

@@ -583,7 +583,7 @@ mod tests {
         for &(src, line_col, message) in REJECTED {
             let err = parse_expr(src).expect_err(src);
             assert_eq!(
-                (err.line_col(src), err.message.as_str()),
+                (err.line_col(src), err.message()),
                 (line_col, message),
                 "{src:?}"
             );
@@ -633,7 +633,7 @@ mod tests {
         for src in bad {
             let err = parse_expr(&src).unwrap_err();
             assert_eq!(
-                err.message,
+                err.message(),
                 "expression nested too deeply (more than 256 levels)"
             );
         }
@@ -662,12 +662,12 @@ mod tests {
         for src in bad {
             let err = parse_expr(&src).unwrap_err();
             let msg = "expression too long: more than 2048 levels of operations";
-            assert!(err.message.starts_with(msg), "{}", err.message);
+            assert!(err.message().starts_with(msg), "{}", err.message());
         }
         // A run of superscripts, which made a tree as high as it was long, is refused at its
         // second, as ambiguous.
         let err = parse_expr(&format!("x{}", "⁻¹".repeat(3000))).unwrap_err();
-        assert_eq!((err.span.start, err.span.end), (6, 11), "{}", err.message);
+        assert_eq!((err.span.start, err.span.end), (6, 11), "{}", err.message());
     }
 
     /// Parsing must never panic; parsed trees have consistent spans, errors valid ones.

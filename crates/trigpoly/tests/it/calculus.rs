@@ -72,7 +72,7 @@ fn angles_need_gaussian_coefficients_over_q() {
     let cos_theta: trigpoly::Poly<trigpoly::GaussianRational> = p(&vars, "cos(theta)");
     assert_eq!(cos_theta.to_rational(), None);
     let err = Q::parse(&vars, "cos(theta)").expect_err("angles need Q(i)");
-    assert!(err.message.contains("Q(i)"), "{}", err.message);
+    assert!(err.message().contains("Q(i)"), "{}", err.message());
     // The derivative of a polynomial over Q by an angle it does not contain is zero.
     let h: Q = p(&vars, "p_x^2/(2*M)");
     assert_eq!(h.derivative(var(&vars, "theta")), Ok(Q::zero(h.vars())));

@@ -379,7 +379,8 @@ fn angle_multiples_that_overflow_i64_are_rejected() {
         // −2 · 2^62 = −2^63 = i64::MIN, then negated by the minus of −θ.
         "cos(-2*4611686018427387904*-theta)",
     ] {
-        let result = std::panic::catch_unwind(|| G::parse(&vars, src).map_err(|e| e.message));
+        let result =
+            std::panic::catch_unwind(|| G::parse(&vars, src).map_err(|e| e.message().to_string()));
         match result {
             Ok(Err(message)) if message.contains("past the limit") => {}
             Ok(Err(message)) => failures.push(format!("{src}: unexpected message {message}")),

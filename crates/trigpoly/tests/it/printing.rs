@@ -418,7 +418,7 @@ fn real_trigonometric_polynomials_round_trip_over_gaussian_rationals_only() {
     let back = trigpoly::Poly::<GaussianRational>::parse(&vars, &text);
     assert_eq!(back.map_err(|e| e.render(&text)), Ok(f));
     let err = Q::parse(&vars, &text).expect_err("no angles over Q");
-    assert!(err.message.contains("Q(i)"), "{}", err.message);
+    assert!(err.message().contains("Q(i)"), "{}", err.message());
 }
 
 /// A polynomial over Q holds real coefficients: `e^{iθ} = cos θ + i sin θ` is not one, and
@@ -491,15 +491,15 @@ fn a_name_before_parentheses_is_a_product() {
     assert_eq!(read, g);
     let err = Poly::<GaussianRational>::parse(&vars, "f(x)").expect_err("no function f");
     assert!(
-        err.message.starts_with("unknown function 'f'"),
+        err.message().starts_with("unknown function 'f'"),
         "{}",
-        err.message
+        err.message()
     );
     let err = Poly::<GaussianRational>::parse(&vars, "theta(x)").expect_err("an angle");
     assert!(
-        err.message.starts_with("unknown function 'theta'"),
+        err.message().starts_with("unknown function 'theta'"),
         "{}",
-        err.message
+        err.message()
     );
 }
 

@@ -733,7 +733,7 @@ fn rejected_inputs_have_exact_messages_locations_and_carets() {
         })
         .unwrap_err();
         assert_eq!(
-            (err.message.as_str(), err.line_col(case.src)),
+            (err.message(), err.line_col(case.src)),
             (case.message, case.line_col),
             "{:?}",
             case.src
@@ -797,7 +797,7 @@ fn a_long_line_renders_as_a_window_around_the_error() {
         rendered,
         format!(
             "line 1, column {column}: {}\n  …{}@{}…\n  {}^",
-            err.message,
+            err.message(),
             &"x + ".repeat(10),
             &" + y".repeat(10),
             " ".repeat(41)
@@ -814,7 +814,7 @@ fn a_long_divisor_is_named_by_its_size() {
     // what to declare.
     let long = Poly::<Rational>::parse(&vars, "x/(1 + x)^20").expect_err("not a monomial");
     assert_eq!(
-        long.message,
+        long.message(),
         "cannot divide by (x + 1)²⁰: only division by a nonzero constant, a single term \
          (monomial) or a product of powers of declared denominators is exact here; declare its \
          factor as a denominator: denominators = [\"x + 1\"] in [phase_space]"
@@ -825,14 +825,14 @@ fn a_long_divisor_is_named_by_its_size() {
     )
     .expect_err("not a monomial");
     assert_eq!(
-        long.message,
+        long.message(),
         "cannot divide by a polynomial of 9 terms: only division by a nonzero constant, a \
          single term (monomial) or a product of powers of declared denominators is exact here; \
          declare its factors as denominators in [phase_space]"
     );
     let power = Poly::<Rational>::parse(&vars, "(1 + x + y)^(-1)").expect_err("not invertible");
     assert_eq!(
-        power.message,
+        power.message(),
         "cannot raise x + y + 1 to a negative power: only single terms (monomials) and products \
          of powers of declared denominators are invertible; declare it (or its factors) as a \
          denominator: denominators = [\"x + y + 1\"] in [phase_space]"
@@ -850,22 +850,26 @@ fn long_runs_of_names_split_or_are_refused() {
     assert_eq!(product, Poly::parse(&vars, "x^400*y^400").unwrap());
     let err = Poly::<Rational>::parse(&vars, &"x".repeat(20_000)).expect_err("past the degree");
     assert!(
-        err.message.contains("the exponent of x would reach"),
+        err.message().contains("the exponent of x would reach"),
         "{}",
-        err.message
+        err.message()
     );
     // A run that ends in an undeclared letter: no split, from any place.
     let err = Poly::<Rational>::parse(&vars, &format!("{}q", "xy".repeat(5_000)))
         .expect_err("q is not declared");
-    assert!(err.message.starts_with("unknown name"), "{}", err.message);
+    assert!(
+        err.message().starts_with("unknown name"),
+        "{}",
+        err.message()
+    );
     // Quoted by its first characters and its length, not echoed whole (10 001 characters).
     assert!(
-        err.message.starts_with(&format!(
+        err.message().starts_with(&format!(
             "unknown name '{}…', 10001 characters long (known: ",
             "xy".repeat(20)
-        )) && err.message.len() < 200,
+        )) && err.message().len() < 200,
         "{}",
-        err.message
+        err.message()
     );
 }
 
@@ -907,7 +911,7 @@ fn refused_after_a_superscript<C: Coefficient>(
 ) {
     let err = Poly::<C>::parse(vars, src).expect_err(src);
     assert_eq!(
-        (err.message.clone(), err.line_col(src)),
+        (err.message().to_string(), err.line_col(src)),
         (
             format!(
                 "{quote} after {base}, which has a superscript already, is ambiguous: {set}; put \
@@ -964,13 +968,13 @@ fn a_superscript_after_a_power_quotes_the_factor_raised() {
 fn refused_quoting_the_power(vars: &trigpoly::Vars, src: &str, base: &str) {
     let err = Poly::<GaussianRational>::parse(vars, src).expect_err(src);
     assert!(
-        err.message.contains(&format!(
+        err.message().contains(&format!(
             " after {base}, which has a superscript already, is ambiguous: "
         )) && err
-            .message
+            .message()
             .contains(&format!("; put {base} in parentheses for a power of it")),
         "{src}: {}",
-        err.message
+        err.message()
     );
 }
 
@@ -1023,8 +1027,8 @@ fn a_caret_without_an_exponent_after_a_superscript_is_missing_its_exponent() {
         let err = Poly::<Rational>::parse(&vars, src).expect_err(src);
         let want = Poly::<Rational>::parse(&vars, alone).expect_err(alone);
         assert_eq!(
-            (err.message.clone(), err.line_col(src)),
-            (want.message, line_col),
+            (err.message(), err.line_col(src)),
+            (want.message(), line_col),
             "{src}"
         );
     }
@@ -1071,7 +1075,7 @@ fn a_power_of_a_bare_angle_after_a_powered_function_is_ambiguous() {
     for (src, written, power, function, angle, line_col) in refused {
         let err = Poly::<GaussianRational>::parse(&vars, src).expect_err(src);
         assert_eq!(
-            (err.message.clone(), err.line_col(src)),
+            (err.message().to_string(), err.line_col(src)),
             (
                 format!(
                     "'{written}' followed by a power is ambiguous: write ({written}){power} \
@@ -1158,11 +1162,11 @@ fn a_declared_re_with_two_arguments_is_no_misspelled_part() {
     for name in ["Re", "Cos"] {
         let src = format!("{name}(x, y)");
         let err = Poly::<GaussianRational>::parse(&declared, &src).expect_err(&src);
-        assert_eq!(err.message, format!("unknown function '{name}' {known}"));
+        assert_eq!(err.message(), format!("unknown function '{name}' {known}"));
     }
     let err = Poly::<GaussianRational>::parse(&declared, "Sin(x, y)").expect_err("Sin");
     assert_eq!(
-        err.message,
+        err.message(),
         format!("unknown function 'Sin' {known}; did you mean 'sin'?")
     );
 }
