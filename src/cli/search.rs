@@ -7,7 +7,7 @@ use std::path::PathBuf;
 use super::input::load_system;
 use anyhow::{anyhow, bail, Context};
 use brackets::search::{SearchOptions, SearchSpace, DEFAULT_MAX_PRODUCTS};
-use brackets::System;
+use brackets::{EngineError, System};
 use clap::Args;
 use superint::discovery::{
     builtin_system, file_search_report, parse_condition, parse_fixed, parse_known, parse_symbolic,
@@ -587,10 +587,14 @@ fn search(a: &SearchArgs, subject: &Subject) -> anyhow::Result<Report> {
     options.new_only = a.new_only;
     options.exact_complement = a.exact_complement;
     options.max_products = usize::try_from(a.max_products).unwrap_or(usize::MAX);
+    let mut known_spans = Vec::new();
     if let Some(known) = &a.known {
         for span in parse_known(known).map_err(|e| list_refused("--known", known, e))? {
             let e = subject.listed("--known", known, span.clone())?;
-            options.known.push((subject.known_name(&known[span]), e));
+            options
+                .known
+                .push((subject.known_name(&known[span.clone()]), e));
+            known_spans.push(span);
         }
     }
     // A file's integrals are restated in its functions and family instances too.
@@ -600,7 +604,24 @@ fn search(a: &SearchArgs, subject: &Subject) -> anyhow::Result<Report> {
             search_report_for(&with_article(name), system, &options, Caller::CommandLine)
         }
     };
-    let (report, _) = found.context("searching for integrals")?;
+    let (report, _) = found.map_err(|e| match (e, a.known.as_deref()) {
+        // A known integral refused is placed in the list, as a name it does not know is.
+        (
+            EngineError::RefusedKnown {
+                index,
+                name,
+                reason,
+            },
+            Some(known),
+        ) if index < known_spans.len() => {
+            let refusal = ListRefusal {
+                span: known_spans[index].clone(),
+                message: format!("{name} {reason}"),
+            };
+            list_refused("--known", known, refusal)
+        }
+        (e, _) => anyhow::Error::from(e).context("searching for integrals"),
+    })?;
     Ok(subject.tag(report))
 }
 

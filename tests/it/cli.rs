@@ -2531,6 +2531,99 @@ fn cli_known_refuses_at_its_place_as_fix_does() {
     }
 }
 
+/// A known integral that is none, or not real, is refused at its place in --known, as a name
+/// it does not know is, for a file and a built-in system: it was said after `searching for
+/// integrals:` with no place, `the known integral x is not an integral: {x, H} = p_x at M = 1,
+/// ω = 1, I = 1`, and only once the whole search had run. The bracket and the values it was
+/// taken at are kept; the condition comes before them. An expression is named as the file
+/// prints it (`x p_x`), and as typed for a built-in system (`x*p_x`), as it was.
+#[test]
+fn cli_known_refuses_a_known_integral_that_is_none_at_its_place() {
+    let fixed = "M = 1, ω = 1, I = 1";
+    let cases: Vec<(&str, &[&str], usize, &str, String)> = vec![
+        (
+            "p_theta, x",
+            &[],
+            10,
+            "^",
+            format!("x is not an integral: {{x, H}} = p_x at {fixed}"),
+        ),
+        (
+            "x*p_x ,p_theta",
+            &[],
+            1,
+            "^^^^^",
+            format!("NAME is not an integral: {{NAME, H}} = p_x² − x² at {fixed}"),
+        ),
+        (
+            "p_theta, y",
+            &["--when", "p_theta = omega"],
+            10,
+            "^",
+            format!("y is not an integral: {{y, H}} = p_y at p_θ = ω, {fixed}"),
+        ),
+        (
+            "p_theta, i*p_theta",
+            &[],
+            10,
+            "^^^^^^^^^",
+            "NAME is not real: give its real and imaginary parts, re(NAME) and im(NAME)".into(),
+        ),
+    ];
+    for system in [
+        &["systems/harmonic-rotor.toml"][..],
+        &["--system", "harmonic"],
+    ] {
+        for (known, more, column, caret, message) in &cases {
+            let mut args = vec!["search"];
+            args.extend_from_slice(system);
+            args.extend_from_slice(more);
+            args.extend(["--momenta-degree", "1", "--positions-degree", "1"]);
+            args.extend(["--trig-degree", "0", "--new-only", "--known", known]);
+            let o = superint(&args);
+            assert_eq!(o.status.code(), Some(2), "{system:?} {known}");
+            let name = match (known.starts_with('x'), system.len()) {
+                (true, 1) => "x p_x",
+                (true, _) => "x*p_x",
+                (false, 1) => "i p_θ",
+                (false, _) => "i*p_theta",
+            };
+            let message = message.replace("NAME", name);
+            let expected = refused_at(known, *column, caret, &format!("--known: {message}"));
+            assert_eq!(stderr(&o), expected, "{system:?} {known}");
+        }
+    }
+}
+
+/// A known integral that is none is refused before the search forms its space: a space past
+/// the term limit, which the search refuses as soon as it counts its unknowns, is not reached.
+#[test]
+fn cli_known_integral_that_is_none_is_refused_before_the_search() {
+    let args = |known: Option<&'static str>| {
+        let space = "--momenta-degree 6 --positions-degree 6 --trig-degree 6 --max-terms 500";
+        let mut args = vec!["search", "systems/harmonic-rotor.toml", "--new-only"];
+        args.extend(space.split_whitespace());
+        args.extend(known.map(|k| ["--known", k]).into_iter().flatten());
+        args
+    };
+    let o = superint(&args(None));
+    assert_eq!(o.status.code(), Some(2));
+    assert!(
+        stderr(&o).contains("unknowns, more than the term limit 500"),
+        "{}",
+        stderr(&o)
+    );
+    let o = superint(&args(Some("p_theta, x")));
+    assert_eq!(o.status.code(), Some(2));
+    assert!(
+        stderr(&o).starts_with(
+            "superint: error: <command line>:1:10: --known: x is not an integral: {x, H} = p_x"
+        ),
+        "{}",
+        stderr(&o)
+    );
+}
+
 /// Runs the binary and expects exit code 2, nothing on stdout and `message` on stderr.
 #[track_caller]
 fn assert_bad_usage(args: &[&str], message: &str) {

@@ -1258,12 +1258,12 @@ fn bad_search_arguments_exit_2_with_a_message() {
         // file prints an expression, which reads back.
         (
             "--positions-degree 2 --trig-degree 0 --new-only --known x*p_y",
-            "the known integral x p_y is not an integral: {x p_y, H} = ",
+            "<command line>:1:1: --known: x p_y is not an integral: {x p_y, H} = ",
         ),
         (
             "--positions-degree 2 --trig-degree 0 --new-only --known x+i*p_x",
-            "the known integral x + i p_x is not real: give its real and imaginary parts, \
-             re(x + i p_x) and im(x + i p_x)",
+            "<command line>:1:1: --known: x + i p_x is not real: give its real and imaginary \
+             parts, re(x + i p_x) and im(x + i p_x)",
         ),
     ] {
         let mut words = vec!["search", "systems/henon-heiles.toml"];

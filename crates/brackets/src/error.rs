@@ -37,6 +37,21 @@ pub enum EngineError {
     /// A phase space or system that is not well formed.
     #[error("{0}")]
     Invalid(String),
+    /// A known integral given to a search for new ones
+    /// ([`SearchOptions::known`](crate::SearchOptions::known)) that the search refuses, before
+    /// it searches: one that is not real, or no integral (under the condition, at the fixed
+    /// values). Its message names it: `the known integral x is not an integral: {x, H} = p_x
+    /// at M = 1, ω = 1, I = 1`.
+    #[error("the known integral {name} {reason}")]
+    RefusedKnown {
+        /// Its place in `SearchOptions::known`, so that a caller that took the list from a
+        /// text can show where it stands there.
+        index: usize,
+        /// Its name, as `SearchOptions::known` gives it.
+        name: String,
+        /// What is wrong, after its name: `is not an integral: {x, H} = p_x at M = 1`.
+        reason: String,
+    },
     /// Declared brackets that break the Jacobi identity
     /// `{a, {b, c}} + {b, {c, a}} + {c, {a, b}} = 0` for a triple of phase variables.
     #[error("{}", .0.message)]

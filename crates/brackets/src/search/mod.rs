@@ -128,8 +128,10 @@ use crate::scaling::{Lifter, Scaling};
 use crate::system::System;
 
 use new_only::new_integrals;
-use parameters::{fixed_problem, module_generators, parameter_multiples, parameter_values};
-use problem::{real_rows, Components, Problem, RowIndex, IMAGE_BLOCK};
+use parameters::{
+    fixed_hamiltonian_and_condition, module_generators, parameter_multiples, parameter_values,
+};
+use problem::{real_rows, AtValues, Components, Problem, RowIndex, IMAGE_BLOCK};
 use proof::{flow_vanishes, lead, primitive_vector};
 
 /// Finds a basis of every integral of `system` in the space of `options`: each element of
@@ -266,8 +268,9 @@ struct FixedSearch {
 
 /// The parameters' values for the linear algebra and the linear problem at those values,
 /// once what the search cannot answer is refused: a condition that the flow leaves, fixed or
-/// symbolic parameters that are no parameters of the system, and what [`refuse_unreal`]
-/// refuses.
+/// symbolic parameters that are no parameters of the system, what [`refuse_unreal`]
+/// refuses, and, for new integrals, a known integral given that is not real or none
+/// ([`new_only::refuse_given_known`]).
 fn fixed_search_problem(
     system: &System,
     options: &SearchOptions,
@@ -286,7 +289,25 @@ fn fixed_search_problem(
         &options.fixed,
         system.space().denominator_atoms().iter(),
     );
-    let problem = fixed_problem(system, options, &parameters)?;
+    let (h, fixed_condition) = fixed_hamiltonian_and_condition(system, options, &parameters)?;
+    // A known integral that is none is refused now, before the space's unknowns are formed,
+    // not once the basis it is compared with is found.
+    if options.new_only {
+        let at = AtValues {
+            h: &h,
+            condition: fixed_condition.as_deref(),
+            parameters: &parameters,
+        };
+        new_only::refuse_given_known(system, &at, options, &parameters)?;
+    }
+    let problem = Problem::new(
+        system,
+        &options.space,
+        &options.symbolic,
+        &parameters,
+        h,
+        fixed_condition,
+    )?;
     Ok(FixedSearch {
         parameters,
         denominator_zero_at_one: zero_at_one,

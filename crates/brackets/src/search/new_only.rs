@@ -12,7 +12,7 @@ use super::options::{SearchOptions, SearchSpace};
 use super::parameters::{
     fix_parameters, free_parameters, without_parameter_denominators, Multiple,
 };
-use super::problem::{Problem, Slot};
+use super::problem::{AtValues, Problem, Slot};
 use super::proof::{is_phase_free, lead};
 use super::result::{parameter_text, Integral, NewIntegrals, SpaceVariables};
 
@@ -506,10 +506,39 @@ struct KnownIntegrals {
     integrals: Vec<(Expr, SparseVec<Rational>)>,
 }
 
+/// Refuses, before the search, the first known integral given in `options.known` that is not
+/// real or is no integral (under the condition, at the fixed values): each is checked here,
+/// where it costs a bracket, and not once the basis it is compared with is found
+/// ([`EngineError::RefusedKnown`], which says which one by its place in the list).
+pub(super) fn refuse_given_known(
+    system: &System,
+    at: &AtValues<'_>,
+    options: &SearchOptions,
+    parameters: &[(Var, Rational)],
+) -> Result<(), EngineError> {
+    for (index, (name, f)) in options.known.iter().enumerate() {
+        let refused = |reason: String| EngineError::RefusedKnown {
+            index,
+            name: name.clone(),
+            reason,
+        };
+        if !f.is_real() {
+            return Err(refused(format!(
+                "is not real: give its real and imaginary parts, re({name}) and im({name})"
+            )));
+        }
+        let flow = at.flow(system, &fix_parameters(f, parameters)?)?;
+        if !at.vanishes(system, &flow)? {
+            return Err(refused(not_an_integral(name, &flow, options, parameters)));
+        }
+    }
+    Ok(())
+}
+
 /// The known integrals, named: the system's named functions that are real integrals (the
-/// others left out) and those given in `options.known` (an error when one is not real or no
-/// integral), each restricted to the condition and located in the space; a constant on phase
-/// space, or a function met twice, is left out.
+/// others left out) and those given in `options.known` (which [`refuse_given_known`] has
+/// checked before the search), each restricted to the condition and located in the space; a
+/// constant on phase space, or a function met twice, is left out.
 fn known_integrals(
     system: &System,
     problem: &Problem,
@@ -525,28 +554,18 @@ fn known_integrals(
         .functions()
         .iter()
         .map(|f| (trigpoly::shown_text(&f.display), f.expr.clone()));
-    // The system's functions that are no real integrals are left out; a known integral given
-    // as one that is not is an error, not a silence.
+    // The system's functions that are no real integrals are left out; the given ones are real
+    // integrals, or the search was refused before it began.
     let named = named.map(|(name, f)| (name, f, false));
     let given = extra
         .iter()
         .map(|(name, f)| (name.clone(), f.clone(), true));
     for (name, f, given) in named.chain(given) {
-        if !f.is_real() {
-            if given {
-                return Err(EngineError::Invalid(format!(
-                    "the known integral {name} is not real: give its real and imaginary parts, \
-                     re({name}) and im({name})"
-                )));
-            }
+        if !given && !f.is_real() {
             continue;
         }
         let fv = fix_parameters(&f, parameters)?;
-        let flow = problem.flow(system, &fv)?;
-        if !problem.vanishes(system, &flow)? {
-            if given {
-                return Err(not_an_integral(&name, &flow, options, parameters));
-            }
+        if !given && !problem.vanishes(system, &problem.flow(system, &fv)?)? {
             continue;
         }
         let restricted = without_parameter_denominators(&problem.apply_condition(fv)?, symbolic)?;
@@ -568,15 +587,15 @@ fn known_integrals(
     })
 }
 
-/// The error for a known integral `name` whose bracket with `H` is `flow`, not zero: the
-/// bracket (or its size, when long) and where it was taken, under the condition and at the
-/// fixed values, where it may vanish only.
-pub(super) fn not_an_integral(
+/// Why a known integral `name` whose bracket with `H` is `flow`, not zero, is refused, after
+/// its name: `is not an integral: ` and the bracket (or its size, when long) and where it was
+/// taken, under the condition and at the fixed values, where it may vanish only.
+fn not_an_integral(
     name: &str,
     flow: &Expr,
     options: &SearchOptions,
     parameters: &[(Var, Rational)],
-) -> EngineError {
+) -> String {
     let shown = flow.render(Style::Unicode);
     let bracket = match shown.chars().count() {
         0..=200 => format!("{{{name}, H}} = {shown}"),
@@ -595,9 +614,7 @@ pub(super) fn not_an_integral(
         true => String::new(),
         false => format!(" at {}", at.join(", ")),
     };
-    EngineError::Invalid(format!(
-        "the known integral {name} is not an integral: {bracket}{at}"
-    ))
+    format!("is not an integral: {bracket}{at}")
 }
 
 /// The filtration by which `--new-only` counts an integral generated. A function's grade is

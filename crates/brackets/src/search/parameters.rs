@@ -148,11 +148,29 @@ pub(crate) fn off_vanishing_denominators<'a>(
 }
 
 /// The search's problem with the parameters at `parameters`, in `H` and in the condition.
+#[cfg(test)]
 pub(super) fn fixed_problem(
     system: &System,
     options: &SearchOptions,
     parameters: &[(Var, Rational)],
 ) -> Result<Problem, EngineError> {
+    let (h, condition) = fixed_hamiltonian_and_condition(system, options, parameters)?;
+    Problem::new(
+        system,
+        &options.space,
+        &options.symbolic,
+        parameters,
+        h,
+        condition,
+    )
+}
+
+/// The Hamiltonian and the condition's values at the fixed `parameters`.
+pub(super) fn fixed_hamiltonian_and_condition(
+    system: &System,
+    options: &SearchOptions,
+    parameters: &[(Var, Rational)],
+) -> Result<FixedHamiltonian, EngineError> {
     let h = fix_parameters(system.hamiltonian(), parameters)?;
     let condition = match &options.condition {
         Some(c) => Some(
@@ -163,15 +181,11 @@ pub(super) fn fixed_problem(
         ),
         None => None,
     };
-    Problem::new(
-        system,
-        &options.space,
-        &options.symbolic,
-        parameters,
-        h,
-        condition,
-    )
+    Ok((h, condition))
 }
+
+/// A Hamiltonian and a condition's substitutions, at fixed values.
+pub(super) type FixedHamiltonian = (Expr, Option<Vec<(Var, Expr)>>);
 
 /// Substitutes parameter values.
 pub fn fix_parameters(e: &Expr, values: &[(Var, Rational)]) -> Result<Expr, EngineError> {

@@ -548,35 +548,26 @@ impl Problem {
     }
 
     pub(super) fn apply_condition(&self, e: Expr) -> Result<Expr, EngineError> {
-        match &self.condition {
-            Some(subs) => Ok(e.subst_many(subs)?),
-            None => Ok(e),
-        }
+        self.at_values().apply_condition(e)
     }
 
-    /// `{f, H}` after the condition, at the fixed values (also those that the atoms' brackets
-    /// and the radicals' hold through their polynomials, `{(x − a), p_x}`).
+    /// `{f, H}` after the condition, at the fixed values ([`AtValues::flow`]).
     pub(super) fn flow(&self, system: &System, f: &Expr) -> Result<Expr, EngineError> {
-        let flow = fix_parameters(&system.bracket(f, &self.h)?, &self.parameters)?;
-        self.apply_condition(flow)
+        self.at_values().flow(system, f)
     }
 
-    /// Whether `flow`, a function at the fixed values, is zero: decided with the atoms'
-    /// polynomials and the radicands at the fixed values too (through one [`Clearing`]), where
-    /// the ring's own zero test (`vanishes`) takes them with symbolic parameters, which would
-    /// leave a residual in the parameters an atom holds (`1/(x − a)` at `a = 1`).
+    /// Whether `flow`, a function at the fixed values, is zero ([`AtValues::vanishes`]).
     pub(super) fn vanishes(&self, system: &System, flow: &Expr) -> Result<bool, EngineError> {
-        let space = system.space();
-        let clearing = Clearing::new(
-            space.denominator_atoms(),
-            space.radicals(),
-            &self.parameters,
-            std::iter::once(flow),
-        )?;
-        Ok(match clearing {
-            Some(clearing) => clearing.apply(flow)?.is_zero(),
-            None => flow.is_zero(),
-        })
+        self.at_values().vanishes(system, flow)
+    }
+
+    /// The problem's fixed Hamiltonian, condition and values.
+    fn at_values(&self) -> AtValues<'_> {
+        AtValues {
+            h: &self.h,
+            condition: self.condition.as_deref(),
+            parameters: &self.parameters,
+        }
     }
 
     /// The integrals an integral `f` splits into: its `e^{ik·θ}` components `f_k e^{ik·θ}`,
@@ -772,5 +763,48 @@ impl Components {
         if ra != rb {
             self.0[ra.max(rb)] = ra.min(rb);
         }
+    }
+}
+
+/// The Hamiltonian and the condition at the fixed values, with the values: what a bracket with
+/// `H` is taken at, in the search ([`Problem`]) and before it, where the known integrals given
+/// to it are checked, with no space of unknowns formed yet.
+pub(super) struct AtValues<'a> {
+    pub(super) h: &'a Expr,
+    pub(super) condition: Option<&'a [(Var, Expr)]>,
+    pub(super) parameters: &'a [(Var, Rational)],
+}
+
+impl AtValues<'_> {
+    pub(super) fn apply_condition(&self, e: Expr) -> Result<Expr, EngineError> {
+        match self.condition {
+            Some(subs) => Ok(e.subst_many(subs)?),
+            None => Ok(e),
+        }
+    }
+
+    /// `{f, H}` after the condition, at the fixed values (also those that the atoms' brackets
+    /// and the radicals' hold through their polynomials, `{(x − a), p_x}`).
+    pub(super) fn flow(&self, system: &System, f: &Expr) -> Result<Expr, EngineError> {
+        let flow = fix_parameters(&system.bracket(f, self.h)?, self.parameters)?;
+        self.apply_condition(flow)
+    }
+
+    /// Whether `flow`, a function at the fixed values, is zero: decided with the atoms'
+    /// polynomials and the radicands at the fixed values too (through one [`Clearing`]), where
+    /// the ring's own zero test (`vanishes`) takes them with symbolic parameters, which would
+    /// leave a residual in the parameters an atom holds (`1/(x − a)` at `a = 1`).
+    pub(super) fn vanishes(&self, system: &System, flow: &Expr) -> Result<bool, EngineError> {
+        let space = system.space();
+        let clearing = Clearing::new(
+            space.denominator_atoms(),
+            space.radicals(),
+            self.parameters,
+            std::iter::once(flow),
+        )?;
+        Ok(match clearing {
+            Some(clearing) => clearing.apply(flow)?.is_zero(),
+            None => flow.is_zero(),
+        })
     }
 }

@@ -7,6 +7,7 @@ use super::new_only::{
     generators, span_of_products, without_parameter_multiples, Generator, Grading, Leads, Size,
     Stamped,
 };
+use super::parameters::fixed_problem;
 use super::problem::{canonical, exponent_vectors, exponent_vectors_count, Problem};
 use super::*;
 use crate::claim::Condition;
@@ -501,6 +502,53 @@ fn a_space_too_large_in_one_kind_is_refused_before_it_is_made() {
             err.contains("unknowns, more than the term limit 20000000"),
             "{err}"
         );
+    }
+}
+
+/// A known integral given to a search for new ones that is no integral, or not real, is
+/// refused before the space is formed (a space that no search could form here), and the
+/// error says which by its place in `SearchOptions::known`, its `Display` the message the
+/// search gave once the basis was found: `the known integral x is not an integral: …`.
+#[test]
+fn a_known_integral_that_is_none_is_refused_before_the_space_is_formed() {
+    let rotor = systems::harmonic_rotor();
+    let parse = |s: &str| rotor.parse(s).unwrap();
+    let space = SearchSpace::default()
+        .momenta_degree(u32::MAX)
+        .positions_degree(1)
+        .trig_degree(1);
+    let too_large = search(&rotor, &SearchOptions::new(space).new_only())
+        .unwrap_err()
+        .to_string();
+    assert!(
+        too_large.contains("more than the term limit"),
+        "{too_large}"
+    );
+    let cases = [
+        (
+            "x",
+            "is not an integral: {x, H} = p_x at M = 1, ω = 1, I = 1",
+        ),
+        (
+            "i*p_theta",
+            "is not real: give its real and imaginary parts, re(i*p_theta) and im(i*p_theta)",
+        ),
+    ];
+    for (f, why) in cases {
+        let options = SearchOptions::new(space)
+            .new_only()
+            .known("p_theta", parse("p_theta"))
+            .known(f, parse(f));
+        let err = search(&rotor, &options).unwrap_err();
+        assert_eq!(
+            err,
+            EngineError::RefusedKnown {
+                index: 1,
+                name: f.to_string(),
+                reason: why.to_string(),
+            }
+        );
+        assert_eq!(err.to_string(), format!("the known integral {f} {why}"));
     }
 }
 
