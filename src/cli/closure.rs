@@ -7,14 +7,14 @@ use anyhow::{anyhow, bail};
 use brackets::closure::ClosureOptions;
 use brackets::NamedFunction;
 use clap::Args;
-use superint::discovery::closure_report_for;
+use superint::discovery::{closure_report_for, ListRefusal};
 use superint::render::render;
 use superint::report::Report;
 use superint::system_file::{Caller, PrintedNames};
 
 use super::limits::LimitsArgs;
 use super::output::{emit, Output};
-use super::search::{identifier, Subject};
+use super::search::{identifier, list_refused, Subject};
 
 pub const EXAMPLES: &str = "\
 Examples:
@@ -120,41 +120,74 @@ fn close(a: &ClosureArgs, names: &[String], subject: &Subject) -> anyhow::Result
     // How the system's names print, and then each generator defined so far.
     let mut printed = PrintedNames::of(subject.system());
     for d in &a.define {
-        let (name, value) = d
-            .split_once('=')
-            .ok_or_else(|| anyhow!("--define {}: give NAME=EXPR", trigpoly::quoted_name(d)))?;
-        let name = name.trim();
-        subject.check_new_name(name, "--define")?;
-        if defined.iter().any(|(n, _)| n == name) {
-            bail!("--define gives {name} twice");
+        // Each refusal is placed in the text given to --define, as --fix's are: the name, the
+        // value, or the whole text where it has no `=`.
+        let refused = |span: std::ops::Range<usize>, message: String| {
+            list_refused("--define", d, ListRefusal { span, message })
+        };
+        let Some(eq) = d.find('=') else {
+            return Err(refused(
+                0..d.len(),
+                "give NAME=EXPR, such as C={L, G1}".to_string(),
+            ));
+        };
+        let name_span = trimmed_range(d, 0..eq);
+        let name = &d[name_span.clone()];
+        if name.is_empty() {
+            return Err(refused(
+                eq..eq + 1,
+                "a name is missing before this =".to_string(),
+            ));
         }
-        printed
-            .admit(&format!("the generator {name}"), name, name)
-            .map_err(|why| anyhow!("--define {name}: {why}; choose another name"))?;
-        let e = subject.parse(value.trim()).map_err(|e| {
-            // A name that --define gives is no name of the system: say so, not how to declare
-            // one in the file.
-            let given = a
-                .define
-                .iter()
-                .filter_map(|d| d.split_once('='))
-                .find(|(n, _)| {
-                    e.to_string()
-                        .contains(&format!("unknown name '{}'", n.trim()))
-                });
-            match given {
-                Some((n, _)) if n.trim() == name => {
-                    anyhow!("--define {name}: its value uses {name}, the name it defines")
+        if let Some(why) = subject.new_name_refusal(name) {
+            return Err(refused(name_span, why));
+        }
+        if defined.iter().any(|(n, _)| n == name) {
+            return Err(refused(
+                name_span,
+                format!("{name} is defined twice: give each name once"),
+            ));
+        }
+        if let Err(why) = printed.admit(&format!("the generator {name}"), name, name) {
+            return Err(refused(name_span, format!("{why}; choose another name")));
+        }
+        let value_span = trimmed_range(d, eq + 1..d.len());
+        if value_span.is_empty() {
+            return Err(refused(
+                eq..eq + 1,
+                "an expression is missing after this =".to_string(),
+            ));
+        }
+        let e = subject
+            .listed("--define", d, value_span.clone())
+            .map_err(|e| {
+                // A name that --define gives is no name of the system: say so, not how to
+                // declare one in the file.
+                let given = a
+                    .define
+                    .iter()
+                    .filter_map(|d| d.split_once('='))
+                    .find(|(n, _)| {
+                        e.to_string()
+                            .contains(&format!("unknown name '{}'", n.trim()))
+                    });
+                match given {
+                    Some((n, _)) if n.trim() == name => refused(
+                        value_span.clone(),
+                        format!("its value uses {name}, the name it defines"),
+                    ),
+                    Some((n, v)) => refused(
+                        value_span.clone(),
+                        format!(
+                            "{} is given by --define, whose values use only the system's \
+                             names: write its value, ({}), in its place",
+                            n.trim(),
+                            v.trim()
+                        ),
+                    ),
+                    None => e,
                 }
-                Some((n, v)) => anyhow!(
-                    "--define {name}: {} is given by --define, whose values use only the \
-                     system's names: write its value, ({}), in its place",
-                    n.trim(),
-                    v.trim()
-                ),
-                None => anyhow!("--define {name}: {e}"),
-            }
-        })?;
+            })?;
         defined.push((name.to_string(), e));
     }
     let mut all: Vec<&str> = names.iter().map(String::as_str).collect();
@@ -200,7 +233,7 @@ fn close(a: &ClosureArgs, names: &[String], subject: &Subject) -> anyhow::Result
             let free = ["G", "X", "Y", "W", "Gen"]
                 .into_iter()
                 .find(|n| {
-                    subject.check_new_name(n, "--define").is_ok()
+                    subject.new_name_refusal(n).is_none()
                         && printed.admit("the generator", n, n).is_ok()
                 })
                 .unwrap_or("Gen");
@@ -251,4 +284,12 @@ fn close(a: &ClosureArgs, names: &[String], subject: &Subject) -> anyhow::Result
         false => anyhow::Error::new(e).context("computing the closure"),
     })?;
     Ok(subject.tag(report))
+}
+
+/// The byte range of `range` in `text` without the blanks at either end (an empty range where
+/// the blanks end, for a blank piece).
+fn trimmed_range(text: &str, range: std::ops::Range<usize>) -> std::ops::Range<usize> {
+    let piece = &text[range.clone()];
+    let start = range.start + piece.len() - piece.trim_start().len();
+    start..start + piece.trim().len()
 }

@@ -392,18 +392,16 @@ impl Subject {
         }
     }
 
-    /// Refuses `name` as a new name (for the option `option`), before anything is computed:
-    /// one that is not an identifier, is reserved, or names something of the system already
-    /// (which it would shadow, so that what is found about it would read, in the system's
-    /// names, as a claim about the system's own), each said as such.
-    pub fn check_new_name(&self, name: &str, option: &str) -> anyhow::Result<()> {
+    /// Why `name` is refused as a new name, if it is, before anything is computed: one that
+    /// is not an identifier, is reserved, or names something of the system already (which it
+    /// would shadow, so that what is found about it would read, in the system's names, as a
+    /// claim about the system's own), each said as such, for the caller to place.
+    pub fn new_name_refusal(&self, name: &str) -> Option<String> {
         match BadName::of(name) {
             Some(
                 bad @ BadName::Unnamed(trigpoly::BadName::Malformed | trigpoly::BadName::TooLong),
-            ) => {
-                bail!("{option} {}: {}", trigpoly::quoted_name(name), bad.why())
-            }
-            Some(bad) => bail!("{option} {name}: {}; choose another name", bad.why()),
+            ) => return Some(bad.why()),
+            Some(bad) => return Some(format!("{}; choose another name", bad.why())),
             None => {}
         }
         let what = match self {
@@ -411,17 +409,16 @@ impl Subject {
             Subject::Builtin(_, s, _) => what_is(s, &[], name),
         };
         if let Some(what) = what {
-            bail!("{option} {name}: {name} is {what}; choose another name");
+            return Some(format!("{name} is {what}; choose another name"));
         }
         // Names run together that read as a product of the system's (`Mx`), refused without
         // the warning of how they read, which the refusal says.
         if self.warnings().unwarned(|| self.parse(name).is_ok()) {
-            bail!(
-                "{option} {name}: the system reads {name} as a product of its names; choose \
-                 another name"
-            );
+            return Some(format!(
+                "the system reads {name} as a product of its names; choose another name"
+            ));
         }
-        Ok(())
+        None
     }
 
     /// Parses an expression: named functions, family instances, brackets. What it reads in
@@ -526,7 +523,7 @@ impl Subject {
 /// A refusal of the list `text` given to `option` (`--fix`, `--symbolic`), shown as a
 /// command-line condition's is: `<command line>:1:C:`, the option and what is wrong, then the
 /// numbered line and a caret under the place it is about.
-fn list_refused(option: &str, text: &str, refusal: ListRefusal) -> anyhow::Error {
+pub(super) fn list_refused(option: &str, text: &str, refusal: ListRefusal) -> anyhow::Error {
     let error = FileError::at(
         ErrorKind::Schema,
         COMMAND_LINE,

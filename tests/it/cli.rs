@@ -1856,7 +1856,7 @@ fn cli_echoed_names_are_quoted_and_shortened_alike() {
         ),
         (
             vec!["closure", rotor, "L", "--define", &define],
-            format!("--define {quoted}: a name has at most 80 characters"),
+            "<command line>:1:1: --define: a name has at most 80 characters".to_string(),
         ),
         (
             vec!["closure", rotor, "L", "--fix", &fix],
@@ -4870,8 +4870,8 @@ fn a_differential_display_takes_parentheses_before_a_factor() {
 /// G1 x, then refused. A text that is accepted (the value `G1x` of another name) still warns.
 #[test]
 fn cli_a_refused_define_name_is_not_warned_of_first() {
-    let refusal = "superint: error: --define G1x: the system reads G1x as a product of its \
-                   names; choose another name\n";
+    let refusal = "superint: error: <command line>:1:1: --define: the system reads G1x as a \
+                   product of its names; choose another name\n 1 | G1x=x\n   | ^^^\n";
     for system in [
         &["--system", "harmonic"][..],
         &["systems/harmonic-rotor.toml"][..],
@@ -4882,7 +4882,7 @@ fn cli_a_refused_define_name_is_not_warned_of_first() {
         let o = superint(&[&["closure"], system, &["L", "G1", "--define", "N=G1x"]].concat());
         assert!(
             stderr(&o).starts_with(
-                "superint: warning: <command line>:1:1: 'G1x' is read as the product G1 x"
+                "superint: warning: <command line>:1:3: 'G1x' is read as the product G1 x"
             ),
             "{system:?}: {}",
             stderr(&o)
@@ -4890,29 +4890,88 @@ fn cli_a_refused_define_name_is_not_warned_of_first() {
     }
 }
 
+/// Every refusal of `--define` is placed in its text as `--fix`'s and `--known`'s are,
+/// `<command line>:1:C: --define:`, then the whole text and a caret under the place: the name
+/// that is refused, the expression that does not parse, where it stands after the `=`, and the
+/// whole text where it has no `=`, because the name's refusals had no place (`--define x: x is
+/// a coordinate of the system`) and the expression was parsed alone, so that its caret stood
+/// under the expression as if it were the whole text (`zz` of `C=zz` at column 1, not 3).
+#[test]
+fn cli_define_refuses_at_its_place_as_fix_does() {
+    let cases = [
+        (
+            "x=p_x",
+            "<command line>:1:1: --define: x is a coordinate of the system; choose another \
+             name\n 1 | x=p_x\n   | ^\n",
+        ),
+        (
+            " 2Q = L",
+            "<command line>:1:2: --define: a name is letters, digits and '_', starting with a \
+             letter\n 1 |  2Q = L\n   |  ^^\n",
+        ),
+        (
+            "C= L + zz",
+            "<command line>:1:8: --define: unknown name 'zz'",
+        ),
+        (
+            "E=x + (1",
+            "<command line>:1:9: --define: expected ')' to close '(' opened at column 7, found \
+             end of input\n 1 | E=x + (1\n   |         ^\n",
+        ),
+        (
+            "Ex",
+            "<command line>:1:1: --define: give NAME=EXPR, such as C={L, G1}\n 1 | Ex\n   | ^^\n",
+        ),
+        (
+            "=L",
+            "<command line>:1:1: --define: a name is missing before this =\n 1 | =L\n   | ^\n",
+        ),
+        (
+            "C= ",
+            "<command line>:1:2: --define: an expression is missing after this =\n 1 | C= \n   \
+             |  ^\n",
+        ),
+    ];
+    for (define, message) in cases {
+        for system in [
+            &["systems/harmonic-rotor.toml"][..],
+            &["--system", "harmonic"][..],
+        ] {
+            let o = superint(&[&["closure"], system, &["L", "--define", define]].concat());
+            assert_eq!(o.status.code(), Some(2), "{define} {system:?}");
+            let got = stderr(&o);
+            assert!(
+                got.starts_with(&format!("superint: error: {message}")),
+                "{define} {system:?}\n{got}"
+            );
+            assert!(!got.contains("panicked"), "{got}");
+        }
+    }
+}
+
 /// A file and a built-in system keep the command line's warnings by one rule
 /// (`system_file::Warnings`): the same said of the same place of the same text once, and two
-/// texts, each `<command line>:1:1:`, as two places. A file kept one warning of `G1x` and
-/// `G1x + 1`, whose places were both 1:1, where a built-in system kept two.
+/// texts, each `<command line>:1:3:`, as two places. A file kept one warning of `G1x` and
+/// `G1x + 1`, whose places were both the same, where a built-in system kept two.
 #[test]
 fn cli_a_file_and_a_built_in_system_keep_the_command_line_s_warnings_alike() {
     for system in [
         &["--system", "harmonic"][..],
         &["systems/harmonic-rotor.toml"][..],
     ] {
-        let args = ["L", "G1", "--define", "N=G1x", "--define", "N2=G1x + 1"];
+        let args = ["L", "G1", "--define", "N=G1x", "--define", "Y=G1x + 1"];
         let o = superint(&[&["closure"], system, &args[..]].concat());
         assert_eq!(o.status.code(), Some(0), "{system:?}: {}", stderr(&o));
         let err = stderr(&o);
         let warnings: Vec<&str> = err.split("superint: warning: ").skip(1).collect();
         assert_eq!(warnings.len(), 2, "{system:?}: {err}");
-        for (warning, line) in warnings.iter().zip(["G1x", "G1x + 1"]) {
+        for (warning, line) in warnings.iter().zip(["N=G1x", "Y=G1x + 1"]) {
             assert!(
-                warning.starts_with("<command line>:1:1: 'G1x' is read as the product G1 x, "),
+                warning.starts_with("<command line>:1:3: 'G1x' is read as the product G1 x, "),
                 "{system:?}: {err}"
             );
             assert!(
-                warning.ends_with(&format!(" for the product\n 1 | {line}\n   | ^^^\n")),
+                warning.ends_with(&format!(" for the product\n 1 | {line}\n   |   ^^^\n")),
                 "{system:?}: {err}"
             );
         }
@@ -4974,8 +5033,8 @@ fn cli_an_unclosed_parenthesis_opens_at_the_same_place_for_a_file_and_a_built_in
         (
             &["closure"],
             &["L", "--define", "E=x + (1"],
-            "--define E: <command line>:1:7: expected ')' to close '(' opened at column 5, \
-             found end of input\n 1 | x + (1\n   |       ^\n",
+            "<command line>:1:9: --define: expected ')' to close '(' opened at column 7, found \
+             end of input\n 1 | E=x + (1\n   |         ^\n",
         ),
         (
             &["closure"],

@@ -1978,12 +1978,14 @@ fn closure_says_a_definition_cannot_use_another() {
     for (defines, message) in [
         (
             ["Y=L", "X=Y^2"],
-            "superint: error: --define X: Y is given by --define, whose values use only the \
-             system's names: write its value, (L), in its place\n",
+            "superint: error: <command line>:1:3: --define: Y is given by --define, whose values \
+             use only the system's names: write its value, (L), in its place\n 1 | X=Y^2\n   |   \
+             ^^^\n",
         ),
         (
             ["X={X, L}", "Y=L"],
-            "superint: error: --define X: its value uses X, the name it defines\n",
+            "superint: error: <command line>:1:3: --define: its value uses X, the name it \
+             defines\n 1 | X={X, L}\n   |   ^^^^^^\n",
         ),
     ] {
         let args = [
@@ -2044,109 +2046,109 @@ fn closure_refuses_a_generator_named_twice_or_a_name_the_system_has() {
         (
             harmonic,
             vec!["L", "--define", "W=x*p_y", "--define", "W=x"],
-            "--define gives W twice",
+            "<command line>:1:1: --define: W is defined twice: give each name once",
         ),
         // A defined name the system has would shadow it: `{L, P_x} = P_x` with `L = x p_x`
         // would read, in the file's names, as a claim about the angular momentum.
         (
             harmonic,
             vec!["G1", "--define", "L=x*p_x"],
-            "--define L: L is a function of the system; choose another name",
+            "<command line>:1:1: --define: L is a function of the system; choose another name",
         ),
         // A function by the name it is shown by (Ω for Omega), and a letter LaTeX has not.
         (
             harmonic,
             vec!["G1", "--define", "Ω=L"],
-            "--define Ω: Ω is a function of the system; choose another name",
+            "<command line>:1:1: --define: Ω is a function of the system; choose another name",
         ),
         (
             harmonic,
             vec!["G1", "--define", "é=L"],
-            "--define é: LaTeX has no letter 'é'",
+            "<command line>:1:1: --define: LaTeX has no letter 'é'",
         ),
         (
             harmonic,
             vec!["L", "--define", "H=p_x"],
-            "--define H: 'H' is reserved for the Hamiltonian; choose another name",
+            "<command line>:1:1: --define: 'H' is reserved for the Hamiltonian; choose another name",
         ),
         (
             harmonic,
             vec!["L", "--define", "K_1_1=x"],
-            "--define K_1_1: K_1_1 is an instance of the family K; choose another name",
+            "<command line>:1:1: --define: K_1_1 is an instance of the family K; choose another name",
         ),
         (
             harmonic,
             vec!["L", "--define", "K=x"],
-            "--define K: K is a family of the system; choose another name",
+            "<command line>:1:1: --define: K is a family of the system; choose another name",
         ),
         (
             harmonic,
             vec!["L", "--define", "x=p_x"],
-            "--define x: x is a coordinate of the system; choose another name",
+            "<command line>:1:1: --define: x is a coordinate of the system; choose another name",
         ),
         (
             harmonic,
             vec!["L", "--define", "M=p_x"],
-            "--define M: M is a parameter of the system; choose another name",
+            "<command line>:1:1: --define: M is a parameter of the system; choose another name",
         ),
         (
             harmonic,
             vec!["L", "--define", "ω=p_x"],
-            "--define ω: ω is a parameter of the system; choose another name",
+            "<command line>:1:1: --define: ω is a parameter of the system; choose another name",
         ),
         (
             harmonic,
             vec!["L", "--define", "p_theta=p_x"],
-            "--define p_theta: p_theta is a momentum of the system; choose another name",
+            "<command line>:1:1: --define: p_theta is a momentum of the system; choose another name",
         ),
         (
             harmonic,
             vec!["L", "--define", "Mx=p_x"],
-            "--define Mx: the system reads Mx as a product of its names; choose another name",
+            "<command line>:1:1: --define: the system reads Mx as a product of its names; choose another name",
         ),
         (
             harmonic,
             vec!["L", "--define", "cos=)"],
-            "--define cos: 'cos' is reserved (i, cos, sin, exp, conj, re, im, sqrt, rank); choose \
+            "<command line>:1:1: --define: 'cos' is reserved (i, cos, sin, exp, conj, re, im, sqrt, rank); choose \
              another name",
         ),
         (
             harmonic,
             vec!["L", "--define", "rank=x"],
-            "--define rank: 'rank' is reserved",
+            "<command line>:1:1: --define: 'rank' is reserved",
         ),
         (
             harmonic,
             vec!["L", "--define", "2Q=p_x"],
-            "--define '2Q': a name is letters, digits and '_', starting with a letter",
+            "<command line>:1:1: --define: a name is letters, digits and '_', starting with a letter",
         ),
         (
             harmonic,
             vec!["L", "--define", "_Q=p_x"],
-            "--define _Q: a name cannot begin or end in '_' or hold '__'; choose another name",
+            "<command line>:1:1: --define: a name cannot begin or end in '_' or hold '__'; choose another name",
         ),
         (
             builtin,
             vec!["L", "--define", "P11=x"],
-            "--define P11: P11 is a function of the system; choose another name",
+            "<command line>:1:1: --define: P11 is a function of the system; choose another name",
         ),
         (
             builtin,
             vec!["L", "--define", "theta=x"],
-            "--define theta: theta is an angle of the system; choose another name",
+            "<command line>:1:1: --define: theta is an angle of the system; choose another name",
         ),
         // A generator printed as a function or another generator is, here in LaTeX (F_{1}),
         // whether or not that function is a generator.
         (
             harmonic,
             vec!["L", "--define", "F_1=F1"],
-            "--define F_1: the generator F_1 would print as F_{1} in LaTeX, as the function F1 \
+            "<command line>:1:1: --define: the generator F_1 would print as F_{1} in LaTeX, as the function F1 \
              does; choose another name",
         ),
         (
             builtin,
             vec!["L", "--define", "C_1=F1", "--define", "C1=F2"],
-            "--define C1: the generator C1 would print as C_{1} in LaTeX, as the generator C_1 \
+            "<command line>:1:1: --define: the generator C1 would print as C_{1} in LaTeX, as the generator C_1 \
              does; choose another name",
         ),
     ] {
@@ -5848,7 +5850,7 @@ fn a_built_in_system_warns_of_names_run_together() {
         [&search[..], &["--when", "x = 1,  y =  F1x"]].concat(),
     ];
     // The column of the name in the text as typed: a condition's, not its value's.
-    for (args, column) in runs.iter().zip([1, 1, 5, 14]) {
+    for (args, column) in runs.iter().zip([3, 1, 5, 14]) {
         let o = superint(args);
         let stderr = String::from_utf8(o.stderr).expect("UTF-8");
         let warning = format!("superint: warning: <command line>:1:{column}: {warning}");
