@@ -456,7 +456,7 @@ impl LoadedSystem {
     /// The source of a text given to a report: `<command line>` for the command line, else
     /// `what` (`<expression>`, `<condition>`). Its hints are those of the system's own texts
     /// (a file's tables, or the library's calls for a system built in code).
-    fn given(&self, what: &str, text: &str) -> Source {
+    pub(crate) fn given(&self, what: &str, text: &str) -> Source {
         let origin = match self.caller {
             Caller::CommandLine => COMMAND_LINE,
             Caller::Program => what,

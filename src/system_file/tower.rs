@@ -676,11 +676,27 @@ fn tower_families(file: &LoadedSystem, family: Option<&str>) -> Result<Vec<usize
         };
     };
     let mut found = Vec::new();
-    for name in names.split(',').map(str::trim) {
+    let mut start = 0;
+    for piece in names.split(',') {
+        let at = start;
+        start += piece.len() + 1;
+        let lead = piece.len() - piece.trim_start().len();
+        let name = piece.trim();
+        let span = at + lead..at + lead + name.len();
         // A lone empty name is no family's, as any other unknown one.
         if name.is_empty() && names.contains(',') {
-            return Err(family_refused(
+            // The comma after the blank name, or before it for the last.
+            let comma = match at + piece.len() < names.len() {
+                true => at + piece.len(),
+                false => at - 1,
+            };
+            return Err(family_list_refused(
                 file,
+                names,
+                comma..comma + 1,
+                "a family's name is missing beside this comma: families are named separated by \
+                 commas, such as K,Kbar"
+                    .to_string(),
                 format!(
                     "the list {} has an empty name: families are named separated by commas, \
                      such as K,Kbar",
@@ -688,36 +704,64 @@ fn tower_families(file: &LoadedSystem, family: Option<&str>) -> Result<Vec<usize
                 ),
             ));
         }
-        let k = file.family(name).ok_or_else(|| {
+        let Some(k) = file.family(name) else {
             let declared: Vec<&str> = file.families.iter().map(|f| f.name.as_str()).collect();
-            family_refused(
+            let message = format!(
+                "no family named {} (the {} {})",
+                trigpoly::quoted_name(name),
+                match file.source.program {
+                    true => "system has",
+                    false => "file declares",
+                },
+                match declared.is_empty() {
+                    true => "none".to_string(),
+                    false => declared.join(", "),
+                }
+            );
+            return Err(family_list_refused(
                 file,
-                format!(
-                    "no family named {} (the {} {})",
-                    trigpoly::quoted_name(name),
-                    match file.source.program {
-                        true => "system has",
-                        false => "file declares",
-                    },
-                    match declared.is_empty() {
-                        true => "none".to_string(),
-                        false => declared.join(", "),
-                    }
-                ),
-            )
-        })?;
+                names,
+                span,
+                message.clone(),
+                message,
+            ));
+        };
         if found.contains(&k) {
-            return Err(family_refused(
+            let message = format!(
+                "the family {} is named twice: each tower is checked once",
+                trigpoly::quoted_name(name)
+            );
+            return Err(family_list_refused(
                 file,
-                format!(
-                    "the family {} is named twice: each tower is checked once",
-                    trigpoly::quoted_name(name)
-                ),
+                names,
+                span,
+                message.clone(),
+                message,
             ));
         }
         found.push(k);
     }
     Ok(found)
+}
+
+/// The list of families `names` refused at the byte range `span` of it: on the command line
+/// as `--fix`'s list is, `<command line>:1:C: --family:` with `placed`, the list and a caret
+/// under the place; from a program, `message`, against the system's origin.
+fn family_list_refused(
+    file: &LoadedSystem,
+    names: &str,
+    span: std::ops::Range<usize>,
+    placed: String,
+    message: String,
+) -> FileError {
+    match file.caller {
+        Caller::CommandLine => file.given("<families>", names).error(
+            ErrorKind::Family,
+            span,
+            format!("--family: {placed}"),
+        ),
+        Caller::Program => family_refused(file, message),
+    }
 }
 
 /// A tower's families refused, for `message`: the file's, or the program's system's.

@@ -2247,7 +2247,7 @@ fn cli_names_from_a_file_are_quoted_and_shortened_alike() {
                 &long,
             ],
             format!(
-                "superint: error: systems/harmonic-rotor.toml: no family named {quoted} (the \
+                "superint: error: <command line>:1:1: --family: no family named {quoted} (the \
                  file declares K, Kbar, P, Q)"
             ),
         ),

@@ -2316,13 +2316,14 @@ fn tower_refutes_a_wrong_eigenvalue_in_its_own_section() {
 
 /// `--family` refuses a list with an unknown name (exit 2, naming it and the declared
 /// families), a family with no eigenvalue, a name given twice and an empty name, before any
-/// bracket is formed: nothing is printed.
+/// bracket is formed: nothing is printed. A name, or the comma beside an empty one, is placed in
+/// the list (`<command line>:1:C: --family:`).
 #[test]
 fn tower_family_list_refuses_bad_names() {
     for (family, message) in [
         (
             "K,Nope",
-            "superint: error: systems/harmonic-rotor.toml: no family named 'Nope' (the file \
+            "superint: error: <command line>:1:3: --family: no family named 'Nope' (the file \
              declares K, Kbar, P, Q)",
         ),
         (
@@ -2332,18 +2333,56 @@ fn tower_family_list_refuses_bad_names() {
         ),
         (
             "K,Kbar,K",
-            "superint: error: systems/harmonic-rotor.toml: the family 'K' is named twice: each \
+            "superint: error: <command line>:1:8: --family: the family 'K' is named twice: each \
              tower is checked once",
         ),
         (
             "K,,Kbar",
-            "superint: error: systems/harmonic-rotor.toml: the list 'K,,Kbar' has an empty name: \
-             families are named separated by commas, such as K,Kbar",
+            "superint: error: <command line>:1:3: --family: a family's name is missing beside \
+             this comma: families are named separated by commas, such as K,Kbar",
         ),
     ] {
         let o = harmonic_rotor_towers(family);
         assert_eq!(o.status.code(), Some(2), "{family}");
         assert_eq!(text(&o.stderr).lines().next(), Some(message), "{family}");
+        assert!(o.stdout.is_empty(), "{family}");
+    }
+}
+
+/// Every refusal of `--family` that is about a place in its list is said as `--fix`'s are,
+/// `<command line>:1:C: --family:`, then the list and a caret under the place: a name that no
+/// family has, a family named twice, the comma beside an empty name, because the refusals named
+/// the file alone (`systems/harmonic-rotor.toml: no family named 'zz'`) with no place, and
+/// quoted the whole list for an empty name.
+#[test]
+fn tower_family_list_refuses_at_its_place_as_fix_does() {
+    for (family, message) in [
+        (
+            "K, zz",
+            "superint: error: <command line>:1:4: --family: no family named 'zz' (the file \
+             declares K, Kbar, P, Q)\n 1 | K, zz\n   |    ^^\n",
+        ),
+        (
+            "Kbar,K,Kbar",
+            "superint: error: <command line>:1:8: --family: the family 'Kbar' is named twice: \
+             each tower is checked once\n 1 | Kbar,K,Kbar\n   |        ^^^^\n",
+        ),
+        (
+            "K, ,Kbar",
+            "superint: error: <command line>:1:4: --family: a family's name is missing beside \
+             this comma: families are named separated by commas, such as K,Kbar\n\
+             \x201 | K, ,Kbar\n\x20\x20\x20|    ^\n",
+        ),
+        (
+            "K,",
+            "superint: error: <command line>:1:2: --family: a family's name is missing beside \
+             this comma: families are named separated by commas, such as K,Kbar\n\
+             \x201 | K,\n\x20\x20\x20|  ^\n",
+        ),
+    ] {
+        let o = harmonic_rotor_towers(family);
+        assert_eq!(o.status.code(), Some(2), "{family}");
+        assert_eq!(text(&o.stderr), message, "{family}");
         assert!(o.stdout.is_empty(), "{family}");
     }
 }
