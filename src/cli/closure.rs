@@ -10,7 +10,7 @@ use clap::Args;
 use superint::discovery::{closure_report_for, ListRefusal};
 use superint::render::render;
 use superint::report::Report;
-use superint::system_file::{Caller, PrintedNames};
+use superint::system_file::{Caller, ErrorKind, FileError, PrintedNames, COMMAND_LINE};
 
 use super::limits::LimitsArgs;
 use super::output::{emit, Output};
@@ -206,17 +206,34 @@ fn close(a: &ClosureArgs, names: &[String], subject: &Subject) -> anyhow::Result
         }
         // A built-in system has no families: a name is one function however it is spelt
         // (`P_{1,1}` is `P_1_1`).
+        // Each refused as a file's is, at its place in the generator as given.
         Subject::Builtin(..) => {
-            if all.iter().any(|n| n.trim().is_empty()) {
-                bail!("a generator is blank: give the name of a function of the system");
+            if let Some(blank) = all.iter().find(|n| n.trim().is_empty()) {
+                let end = blank.find(['\n', '\r']).unwrap_or(blank.len());
+                let error = FileError::at(
+                    ErrorKind::Expression,
+                    COMMAND_LINE,
+                    blank,
+                    end..end,
+                    "expected the name of a function, found end of input",
+                );
+                bail!(error.to_string());
             }
             let twice = (1..all.len())
                 .find(|&k| all[..k].iter().any(|n| identifier(n) == identifier(all[k])));
             if let Some(k) = twice {
-                bail!(
-                    "{} is given twice: the closure takes each function once",
-                    trigpoly::quoted_name(all[k].trim())
+                let given = all[k];
+                let error = FileError::at(
+                    ErrorKind::Expression,
+                    COMMAND_LINE,
+                    given,
+                    trimmed_range(given, 0..given.len()),
+                    format!(
+                        "{} is given twice: the closure takes each function once",
+                        trigpoly::quoted_name(given.trim())
+                    ),
                 );
+                bail!(error.to_string());
             }
         }
     }

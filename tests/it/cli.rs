@@ -1732,7 +1732,8 @@ fn cli_a_function_given_twice_is_refused_where_it_repeats() {
         ),
         (
             vec!["closure", "--system", "harmonic", "L", "G1", "L"],
-            "superint: error: 'L' is given twice: the closure takes each function once\n",
+            "superint: error: <command line>:1:1: 'L' is given twice: the closure takes each \
+             function once\n 1 | L\n   | ^\n",
         ),
     ] {
         let o = superint(&args);
@@ -2404,13 +2405,41 @@ fn cli_a_blank_function_name_is_refused_where_it_ends() {
         (vec!["closure", rotor, "L", "  "], end(3, "  ")),
         (
             vec!["closure", "--system", "harmonic", "L", "  "],
-            "superint: error: a generator is blank: give the name of a function of the system\n"
-                .to_string(),
+            end(3, "  "),
         ),
     ] {
         let o = superint(&args);
         assert_eq!(o.status.code(), Some(2), "{args:?}");
         assert_eq!(stderr(&o), message, "{args:?}");
+    }
+}
+
+/// A built-in system's closure refuses a generator given twice, or a blank one, as a file's
+/// does, at its place in the generator as given (`<command line>:1:C:`, the text and a caret),
+/// because it said `'L' is given twice` and `a generator is blank` with no place at all.
+#[test]
+fn cli_a_built_in_systems_closure_refuses_a_generator_at_its_place_as_a_files() {
+    for (generators, message) in [
+        (
+            &["L", "G1", " L "][..],
+            "superint: error: <command line>:1:2: 'L' is given twice: the closure takes each \
+             function once\n 1 |  L \n   |  ^\n",
+        ),
+        (
+            &["L", ""][..],
+            "superint: error: <command line>:1:1: expected the name of a function, found end of \
+             input\n 1 | \n   | ^\n",
+        ),
+    ] {
+        for system in [
+            &["systems/harmonic-rotor.toml"][..],
+            &["--system", "harmonic"][..],
+        ] {
+            let o = superint(&[&["closure"][..], system, &["--"][..], generators].concat());
+            assert_eq!(o.status.code(), Some(2), "{system:?} {generators:?}");
+            assert!(stdout(&o).is_empty(), "{system:?} {generators:?}");
+            assert_eq!(stderr(&o), message, "{system:?} {generators:?}");
+        }
     }
 }
 
