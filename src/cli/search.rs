@@ -373,14 +373,18 @@ impl Subject {
     /// How a known integral given on the command line prints: a name as
     /// [`Subject::display_name`] prints it, and an expression of a file as the file's claims
     /// print one (`{L_x, A_xy}` for `{Lx, Axy}`, `L²` for `L^2`), beside the file's functions
-    /// in their printed names; of a built-in system as it is written.
+    /// in their printed names, and one of a built-in system so too (`x p_x` for `x*p_x`).
     pub fn known_name(&self, known: &str) -> String {
-        match self {
-            Subject::File(f) if !is_name_like(known) => f
-                .shown_argument(known)
-                .unwrap_or_else(|_| known.to_string()),
-            _ => self.display_name(known),
+        if is_name_like(known) {
+            return self.display_name(known);
         }
+        let shown = match self {
+            Subject::File(f) => f.shown_argument(known),
+            Subject::Builtin(_, s, _) => {
+                LoadedSystem::of_system(s.as_ref().clone()).shown_argument(known)
+            }
+        };
+        shown.unwrap_or_else(|_| known.to_string())
     }
 
     /// The system's name as a title says it: `the harmonic rotor`, or `t1` for a file that

@@ -2564,8 +2564,8 @@ fn cli_known_refuses_at_its_place_as_fix_does() {
 /// it does not know is, for a file and a built-in system: it was said after `searching for
 /// integrals:` with no place, `the known integral x is not an integral: {x, H} = p_x at M = 1,
 /// ω = 1, I = 1`, and only once the whole search had run. The bracket and the values it was
-/// taken at are kept; the condition comes before them. An expression is named as the file
-/// prints it (`x p_x`), and as typed for a built-in system (`x*p_x`), as it was.
+/// taken at are kept; the condition comes before them. An expression is named as it prints
+/// (`x p_x`), for a file and a built-in system alike.
 #[test]
 fn cli_known_refuses_a_known_integral_that_is_none_at_its_place() {
     let fixed = "M = 1, ω = 1, I = 1";
@@ -2611,16 +2611,38 @@ fn cli_known_refuses_a_known_integral_that_is_none_at_its_place() {
             args.extend(["--trig-degree", "0", "--new-only", "--known", known]);
             let o = superint(&args);
             assert_eq!(o.status.code(), Some(2), "{system:?} {known}");
-            let name = match (known.starts_with('x'), system.len()) {
-                (true, 1) => "x p_x",
-                (true, _) => "x*p_x",
-                (false, 1) => "i p_θ",
-                (false, _) => "i*p_theta",
+            let name = match known.starts_with('x') {
+                true => "x p_x",
+                false => "i p_θ",
             };
             let message = message.replace("NAME", name);
             let expected = refused_at(known, *column, caret, &format!("--known: {message}"));
             assert_eq!(stderr(&o), expected, "{system:?} {known}");
         }
+    }
+}
+
+/// A known integral given as an expression is named as it prints, for a built-in system as
+/// for a file (`2 p_θ²`): a built-in system named it as typed (`2*p_theta^2`).
+#[test]
+fn cli_a_known_expression_is_named_as_it_prints_for_a_built_in_system_as_for_a_file() {
+    for system in [
+        &["systems/harmonic-rotor.toml"][..],
+        &["--system", "harmonic"][..],
+    ] {
+        let mut args = vec!["search"];
+        args.extend_from_slice(system);
+        args.extend(["--momenta-degree", "2", "--positions-degree", "2"]);
+        args.extend(["--trig-degree", "0", "--new-only", "--known", "2*p_theta^2"]);
+        let o = superint(&args);
+        assert_eq!(o.status.code(), Some(0), "{system:?}: {}", stderr(&o));
+        let out = stdout(&o).replace('\n', " ");
+        let known = out
+            .split("Known integrals in the space: ")
+            .nth(1)
+            .and_then(|rest| rest.split(". ").next())
+            .unwrap_or_default();
+        assert!(known.ends_with(", 2 p_θ²"), "{system:?}: {out}");
     }
 }
 
