@@ -290,15 +290,14 @@ fn fixed_search_problem(
         system.space().denominator_atoms().iter(),
     );
     let (h, fixed_condition) = fixed_hamiltonian_and_condition(system, options, &parameters)?;
-    // A known integral that is none is refused now, before the space's unknowns are formed,
-    // not once the basis it is compared with is found.
+    // A known integral that is none is refused here, before the space's unknowns are formed.
     if options.new_only {
         let at = AtValues {
             h: &h,
             condition: fixed_condition.as_deref(),
             parameters: &parameters,
         };
-        new_only::refuse_given_known(system, &at, options, &parameters)?;
+        new_only::refuse_given_known(system, &at, options)?;
     }
     let problem = Problem::new(
         system,

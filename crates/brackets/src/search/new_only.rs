@@ -507,15 +507,15 @@ struct KnownIntegrals {
 }
 
 /// Refuses, before the search, the first known integral given in `options.known` that is not
-/// real or is no integral (under the condition, at the fixed values): each is checked here,
-/// where it costs a bracket, and not once the basis it is compared with is found
-/// ([`EngineError::RefusedKnown`], which says which one by its place in the list).
+/// real or is no integral (under the condition, at the fixed values, `at`), by one bracket
+/// with `H` each and before the space's unknowns are formed ([`EngineError::RefusedKnown`],
+/// which says which one by its place in the list).
 pub(super) fn refuse_given_known(
     system: &System,
     at: &AtValues<'_>,
     options: &SearchOptions,
-    parameters: &[(Var, Rational)],
 ) -> Result<(), EngineError> {
+    let parameters = at.parameters;
     for (index, (name, f)) in options.known.iter().enumerate() {
         let refused = |reason: String| EngineError::RefusedKnown {
             index,
