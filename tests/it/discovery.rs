@@ -2986,6 +2986,46 @@ fn a_closure_past_its_monomial_limit_stops_before_computing() {
     );
 }
 
+/// The expansions of a closure's monomials are held together to the term limit, counted as
+/// they are formed: `p_x` and `F1` of the rotor under gravity at degree 8 hold 6435 terms in
+/// all (`F1^8`, the longest, 1287), so at `--max-terms 2000` the closure stops at the limit,
+/// where it finished with every product under it; at degree 64 it held 1.3·10⁸ terms (6.2 GB)
+/// before `F1^45` passed the default limit.
+#[test]
+fn a_closures_expansions_are_held_together_to_the_term_limit() {
+    let closure = |max_terms: &str| {
+        superint(&[
+            "closure",
+            "systems/gravity-rotor.toml",
+            "p_x",
+            "F1",
+            "--degree",
+            "8",
+            "--max-terms",
+            max_terms,
+            "--no-timings",
+        ])
+    };
+    let out = closure("2000");
+    let err = String::from_utf8(out.stderr).unwrap();
+    assert_eq!(out.status.code(), Some(2), "{err}");
+    assert!(out.stdout.is_empty());
+    assert!(
+        err.contains(
+            "computing the closure: the result would have more than 2000 terms (the term limit)"
+        ) && err.contains("--max-terms N"),
+        "{err}"
+    );
+    // Raised past what the expansions hold together, it finishes.
+    let out = closure("6435");
+    assert_eq!(
+        out.status.code(),
+        Some(0),
+        "{}",
+        String::from_utf8_lossy(&out.stderr)
+    );
+}
+
 /// The Kepler problem in space with the radical `r`: the seven integrals close into so(4)
 /// with `H` central, and satisfy exactly the two relations of the reduced forms.
 #[test]
