@@ -219,19 +219,34 @@ fn close(a: &ClosureArgs, names: &[String], subject: &Subject) -> anyhow::Result
                 );
                 bail!(error.to_string());
             }
-            let twice = (1..all.len())
-                .find(|&k| all[..k].iter().any(|n| identifier(n) == identifier(all[k])));
-            if let Some(k) = twice {
-                let given = all[k];
+            // A function by its name or its display (`Omega` or `Ω`) is one function.
+            let key = |n: &str| match subject.system().function(n.trim()) {
+                Some(f) => f.name.clone(),
+                None => identifier(n),
+            };
+            let twice = (1..all.len()).find_map(|k| {
+                (all[..k].iter())
+                    .find(|n| key(n) == key(all[k]))
+                    .map(|before| (all[k], *before))
+            });
+            if let Some((given, before)) = twice {
+                let message = match given.trim() == before.trim() {
+                    true => format!(
+                        "{} is given twice: the closure takes each function once",
+                        trigpoly::quoted_name(given.trim())
+                    ),
+                    false => format!(
+                        "{} is {}, given before: the closure takes each function once",
+                        trigpoly::quoted_name(given.trim()),
+                        trigpoly::quoted_name(before.trim())
+                    ),
+                };
                 let error = FileError::at(
                     ErrorKind::Expression,
                     COMMAND_LINE,
                     given,
                     trimmed_range(given, 0..given.len()),
-                    format!(
-                        "{} is given twice: the closure takes each function once",
-                        trigpoly::quoted_name(given.trim())
-                    ),
+                    message,
                 );
                 bail!(error.to_string());
             }

@@ -467,16 +467,20 @@ impl LoadedSystem {
         }
     }
 
-    /// Refuses a function given twice among `names`: the same name (`L G1 L`), or one family
-    /// instance written two ways (`K_1_1 K_{01,1}`). A table would show it twice, a rank count
-    /// it twice and a closure find the relation `L = L`; `what` names the job in the message
-    /// (`a table`). The error is at the second, as given.
+    /// Refuses a function given twice among `names`: the same name (`L G1 L`), one function
+    /// by its name and its display (`Omega Ω`, as [`System::function`](brackets::System::function)
+    /// finds it), or one family instance written two ways (`K_1_1 K_{01,1}`). A table would
+    /// show it twice, a rank count it twice and a closure find the relation `L = L`; `what`
+    /// names the job in the message (`a table`). The error is at the second, as given.
     pub fn refuse_repeated(&self, names: &[impl AsRef<str>], what: &str) -> Result<(), FileError> {
         let key = |name: &str| {
             let braced = rewrite_braces(name, &self.families, &[]);
             match instance_of(&self.families, braced.trim()) {
                 Some((k, m, n)) => format!("{}_{{{m},{n}}}", self.families[k].name),
-                None => name.split_whitespace().collect(),
+                None => match self.system.function(name.trim()) {
+                    Some(f) => f.name.clone(),
+                    None => name.split_whitespace().collect(),
+                },
             }
         };
         let names: Vec<&str> = names.iter().map(AsRef::as_ref).collect();

@@ -1745,6 +1745,45 @@ fn cli_a_function_given_twice_is_refused_where_it_repeats() {
     assert!(out.contains("{L, L} = 0"), "{out}");
 }
 
+/// A function given twice by its name and by its display (`Omega` and `Ω`) is refused at the
+/// second as one family instance written two ways is, for a file's closure, table and rank and
+/// for a built-in system's closure: a closure of `L Omega Ω` stopped at naming its generators,
+/// "variable \"Ω\" is declared twice", and a table and a rank took `Ω` twice.
+#[test]
+fn cli_a_function_given_by_its_name_and_its_display_is_refused_where_it_repeats() {
+    let rotor = "systems/harmonic-rotor.toml";
+    let refusal = |given: &str, before: &str, what: &str| {
+        let caret = "^".repeat(given.chars().count());
+        format!(
+            "superint: error: <command line>:1:1: '{given}' is '{before}', given before: {what} \
+             takes each function once\n 1 | {given}\n   | {caret}\n"
+        )
+    };
+    for (args, message) in [
+        (
+            vec!["closure", rotor, "L", "Omega", "Ω"],
+            refusal("Ω", "Omega", "the closure"),
+        ),
+        (
+            vec!["closure", "--system", "harmonic", "L", "Omega", "Ω"],
+            refusal("Ω", "Omega", "the closure"),
+        ),
+        (
+            vec!["table", rotor, "L", "Ω", "Omega"],
+            refusal("Omega", "Ω", "a table"),
+        ),
+        (
+            vec!["rank", rotor, "L", "Omega", "Ω"],
+            refusal("Ω", "Omega", "a rank"),
+        ),
+    ] {
+        let o = superint(&args);
+        assert_eq!(o.status.code(), Some(2), "{args:?}");
+        assert!(stdout(&o).is_empty(), "{args:?}");
+        assert_eq!(stderr(&o), message, "{args:?}");
+    }
+}
+
 /// A comma with no assignment after it (or before it) is said to be one, the caret under the
 /// comma: the caret stood past the end of the text, under nothing, with only the form of a
 /// condition as the message.

@@ -178,21 +178,25 @@ impl System {
         &self.functions
     }
 
-    /// A named function.
-    pub fn get(&self, name: &str) -> Result<&Expr, EngineError> {
+    /// The named function that `name` spells, by its name or its display (`Omega` or `Ω`), if
+    /// any: the one lookup of a function by a name, through which [`System::get`] and
+    /// [`System::display_name`] find it.
+    pub fn function(&self, name: &str) -> Option<&NamedFunction> {
         self.functions
             .iter()
             .find(|f| f.name == name || f.display == name)
+    }
+
+    /// A named function.
+    pub fn get(&self, name: &str) -> Result<&Expr, EngineError> {
+        self.function(name)
             .map(|f| &f.expr)
             .ok_or_else(|| EngineError::UnknownName(name.to_string()))
     }
 
     /// The display name of a named function (the name itself if unknown).
     pub fn display_name<'a>(&'a self, name: &'a str) -> &'a str {
-        self.functions
-            .iter()
-            .find(|f| f.name == name || f.display == name)
-            .map_or(name, |f| f.display.as_str())
+        self.function(name).map_or(name, |f| f.display.as_str())
     }
 
     /// A variable by name, or `None` if `name` is not a variable of the system.
