@@ -10,7 +10,7 @@ use clap::Args;
 use superint::discovery::{closure_report_for, ListRefusal};
 use superint::render::render;
 use superint::report::Report;
-use superint::system_file::{Caller, ErrorKind, FileError, PrintedNames, COMMAND_LINE};
+use superint::system_file::{trimmed, Caller, ErrorKind, FileError, PrintedNames, COMMAND_LINE};
 
 use super::limits::LimitsArgs;
 use super::output::{emit, Output};
@@ -131,8 +131,7 @@ fn close(a: &ClosureArgs, names: &[String], subject: &Subject) -> anyhow::Result
                 "give NAME=EXPR, such as C={L, G1}".to_string(),
             ));
         };
-        let name_span = trimmed_range(d, 0..eq);
-        let name = &d[name_span.clone()];
+        let (name, name_span) = trimmed(0, &d[..eq]);
         if name.is_empty() {
             return Err(refused(
                 eq..eq + 1,
@@ -151,7 +150,7 @@ fn close(a: &ClosureArgs, names: &[String], subject: &Subject) -> anyhow::Result
         if let Err(why) = printed.admit(&format!("the generator {name}"), name, name) {
             return Err(refused(name_span, format!("{why}; choose another name")));
         }
-        let value_span = trimmed_range(d, eq + 1..d.len());
+        let (_, value_span) = trimmed(eq + 1, &d[eq + 1..]);
         if value_span.is_empty() {
             return Err(refused(
                 eq..eq + 1,
@@ -245,7 +244,7 @@ fn close(a: &ClosureArgs, names: &[String], subject: &Subject) -> anyhow::Result
                     ErrorKind::Expression,
                     COMMAND_LINE,
                     given,
-                    trimmed_range(given, 0..given.len()),
+                    trimmed(0, given).1,
                     message,
                 );
                 bail!(error.to_string());
@@ -316,12 +315,4 @@ fn close(a: &ClosureArgs, names: &[String], subject: &Subject) -> anyhow::Result
         false => anyhow::Error::new(e).context("computing the closure"),
     })?;
     Ok(subject.tag(report))
-}
-
-/// The byte range of `range` in `text` without the blanks at either end (an empty range where
-/// the blanks end, for a blank piece).
-fn trimmed_range(text: &str, range: std::ops::Range<usize>) -> std::ops::Range<usize> {
-    let piece = &text[range.clone()];
-    let start = range.start + piece.len() - piece.trim_start().len();
-    start..start + piece.trim().len()
 }

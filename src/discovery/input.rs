@@ -2,8 +2,8 @@
 //! and conditions, symbolic parameters and fixed values as the command line gives them.
 
 use crate::system_file::{
-    assignment_sides, condition_cannot_set, fixed_twice, no_variable, CONDITION_FORM,
-    CONDITION_USAGE,
+    assignment_sides, comma_pieces, condition_cannot_set, fixed_twice, no_variable, trimmed,
+    CONDITION_FORM, CONDITION_USAGE,
 };
 use brackets::{EngineError, System};
 use trigpoly::{Expr, Limits, Rational, Style, Var};
@@ -214,18 +214,6 @@ impl std::fmt::Display for ListRefusal {
 
 impl std::error::Error for ListRefusal {}
 
-/// `text` split at its commas, each piece with the byte where it begins.
-fn comma_pieces(text: &str) -> Vec<(usize, &str)> {
-    let mut at = 0;
-    text.split(',')
-        .map(|piece| {
-            let start = at;
-            at += piece.len() + 1;
-            (start, piece)
-        })
-        .collect()
-}
-
 /// Where the `k`th of `pieces` (a list split at its commas, each with its first byte, as by
 /// [`comma_pieces`]) is blank beside a comma, that `what` is missing after the comma (`M=1,`)
 /// or before it (`,M=1`), at that comma: `a value is missing after this comma`, then `usage`,
@@ -249,13 +237,6 @@ fn blank_beside_comma(
         span: comma..comma + 1,
         message: format!("{what} is missing {side} this comma: {usage}"),
     })
-}
-
-/// The trimmed part of `piece`, which begins at byte `at` of its list, with its byte range
-/// there (an empty range where the blanks end, for a blank piece).
-fn trimmed(at: usize, piece: &str) -> (&str, std::ops::Range<usize>) {
-    let start = at + piece.len() - piece.trim_start().len();
-    (piece.trim(), start..start + piece.trim().len())
 }
 
 /// How `--symbolic` reads, for its refusals.

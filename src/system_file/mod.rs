@@ -67,7 +67,7 @@ pub use reports::{
     bracket_report, check_each, check_report, expand_report, rank_report, rank_report_when,
     table_report,
 };
-pub use text::{split_top_level, Source, Text};
+pub use text::{comma_pieces, split_top_level, trimmed, Source, Text};
 pub use tower::{family_tower_report, family_tower_report_with_progress};
 
 use std::collections::HashMap;

@@ -378,6 +378,26 @@ fn line_ending_backslash(bytes: &[u8], mut k: usize) -> Option<usize> {
     }
 }
 
+/// `text` split at every comma, each piece with the byte where it begins (a list given to an
+/// option, `--fix`'s or `--family`'s, whose pieces a refusal points into).
+pub fn comma_pieces(text: &str) -> Vec<(usize, &str)> {
+    let mut at = 0;
+    text.split(',')
+        .map(|piece| {
+            let start = at;
+            at += piece.len() + 1;
+            (start, piece)
+        })
+        .collect()
+}
+
+/// The trimmed part of `piece`, which begins at byte `at` of its text, with its byte range
+/// there (an empty range where the blanks end, for a blank piece).
+pub fn trimmed(at: usize, piece: &str) -> (&str, Range<usize>) {
+    let start = at + piece.len() - piece.trim_start().len();
+    (piece.trim(), start..start + piece.trim().len())
+}
+
 /// Splits `s` at the top-level (outside parentheses and braces) occurrences of `sep`: the
 /// byte ranges of the pieces.
 pub fn split_top_level(s: &str, sep: char) -> Vec<Range<usize>> {

@@ -20,6 +20,7 @@ use brackets::{Condition, EngineError};
 use super::claims::engine_error;
 use super::error::{ErrorKind, FileError};
 use super::scope::{substitute, Scope};
+use super::text::{comma_pieces, trimmed};
 use super::{Caller, LoadedSystem};
 use crate::report::{
     listed, ClaimResult, Entry, Fact, ProofResult, Report, Section, SummaryKind, TowerResult,
@@ -676,13 +677,8 @@ fn tower_families(file: &LoadedSystem, family: Option<&str>) -> Result<Vec<usize
         };
     };
     let mut found = Vec::new();
-    let mut start = 0;
-    for piece in names.split(',') {
-        let at = start;
-        start += piece.len() + 1;
-        let lead = piece.len() - piece.trim_start().len();
-        let name = piece.trim();
-        let span = at + lead..at + lead + name.len();
+    for (at, piece) in comma_pieces(names) {
+        let (name, span) = trimmed(at, piece);
         // A lone empty name is no family's, as any other unknown one.
         if name.is_empty() && names.contains(',') {
             // The comma after the blank name, or before it for the last.
