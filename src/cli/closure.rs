@@ -10,7 +10,9 @@ use clap::Args;
 use superint::discovery::{closure_report_for, ListRefusal};
 use superint::render::render;
 use superint::report::Report;
-use superint::system_file::{trimmed, Caller, ErrorKind, FileError, PrintedNames, COMMAND_LINE};
+use superint::system_file::{
+    given_twice, trimmed, Caller, ErrorKind, FileError, PrintedNames, COMMAND_LINE,
+};
 
 use super::limits::LimitsArgs;
 use super::output::{emit, Output};
@@ -229,23 +231,12 @@ fn close(a: &ClosureArgs, names: &[String], subject: &Subject) -> anyhow::Result
                     .map(|before| (all[k], *before))
             });
             if let Some((given, before)) = twice {
-                let message = match given.trim() == before.trim() {
-                    true => format!(
-                        "{} is given twice: the closure takes each function once",
-                        trigpoly::quoted_name(given.trim())
-                    ),
-                    false => format!(
-                        "{} is {}, given before: the closure takes each function once",
-                        trigpoly::quoted_name(given.trim()),
-                        trigpoly::quoted_name(before.trim())
-                    ),
-                };
                 let error = FileError::at(
                     ErrorKind::Expression,
                     COMMAND_LINE,
                     given,
                     trimmed(0, given).1,
-                    message,
+                    given_twice(given, before, "the closure"),
                 );
                 bail!(error.to_string());
             }

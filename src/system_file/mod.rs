@@ -64,8 +64,8 @@ pub use load::{load, load_bytes, load_str, read_bytes, MAX_FILE_BYTES};
 pub use names::{reserved, unwritable_letter, BadName, PrintedNames, Refusal};
 pub use plot::{Against, PlotFunctions, PlotInput, StartValue};
 pub use reports::{
-    bracket_report, check_each, check_report, expand_report, rank_report, rank_report_when,
-    table_report,
+    bracket_report, check_each, check_report, expand_report, given_twice, rank_report,
+    rank_report_when, table_report,
 };
 pub use text::{comma_pieces, split_top_level, trimmed, Source, Text};
 pub use tower::{family_tower_report, family_tower_report_with_progress};

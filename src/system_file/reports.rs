@@ -490,21 +490,28 @@ impl LoadedSystem {
         else {
             return Ok(());
         };
-        let (given, before) = (names[second].trim(), names[first].trim());
-        let message = match given == before {
-            true => format!(
-                "{} is given twice: {what} takes each function once",
-                trigpoly::quoted_name(given)
-            ),
-            false => format!(
-                "{} is {}, given before: {what} takes each function once",
-                trigpoly::quoted_name(given),
-                trigpoly::quoted_name(before)
-            ),
-        };
+        let message = given_twice(names[second], names[first], what);
         let source = self.given("<expression>", names[second]);
         let text = Text::whole(&source);
         Err(text.error(&source, ErrorKind::Expression, text.trimmed_span(), message))
+    }
+}
+
+/// Why the function `given` is refused where `before` gave it already, for the job `what`
+/// (`the closure`): `'L' is given twice`, or, written another way, `'Ω' is 'Omega', given
+/// before`.
+pub fn given_twice(given: &str, before: &str, what: &str) -> String {
+    let (given, before) = (given.trim(), before.trim());
+    match given == before {
+        true => format!(
+            "{} is given twice: {what} takes each function once",
+            trigpoly::quoted_name(given)
+        ),
+        false => format!(
+            "{} is {}, given before: {what} takes each function once",
+            trigpoly::quoted_name(given),
+            trigpoly::quoted_name(before)
+        ),
     }
 }
 
