@@ -111,24 +111,21 @@ pub fn parse_condition(
         let name_at = name_span.start;
         // Read as a file's left side is, by the parser: `\omega`, `p_{x}` and `ϵ` name the
         // variables they write.
-        let read = trigpoly::syntax::parse_expr(name).map_err(|e| {
+        let read = name_read(name).map_err(|e| {
             refuse(
                 name_at + e.span.start..name_at + e.span.end,
                 e.message().to_string(),
             )
         })?;
-        let read = match &read.kind {
-            trigpoly::syntax::ExprKind::Name(n) => Some(n.as_str()),
-            _ => None,
-        };
-        let Some(v) = read.and_then(|n| vars.lookup(n)) else {
+        let Some(v) = read.as_deref().and_then(|n| vars.lookup(n)) else {
             let settable: Vec<&str> = vars
                 .vars()
                 .filter(|&v| condition_cannot_set(system, v).is_none())
                 .map(|v| vars.variable(v).name())
                 .collect();
-            let meant =
-                read.map_or_else(String::new, |n| trigpoly::did_you_mean_hint(n, &settable));
+            let meant = read
+                .as_deref()
+                .map_or_else(String::new, |n| trigpoly::did_you_mean_hint(n, &settable));
             return Err(refuse(
                 name_span,
                 no_variable(&CONDITION_FORM, name, &meant),
@@ -162,17 +159,21 @@ pub fn parse_condition(
     })
 }
 
+/// The name `text` writes, read by the parser (`\omega` and `ϵ` write `omega` and
+/// `epsilon`), or none where it writes more than a name; its error where it does not parse.
+fn name_read(text: &str) -> Result<Option<String>, trigpoly::syntax::ParseError> {
+    Ok(match trigpoly::syntax::parse_expr(text)?.kind {
+        trigpoly::syntax::ExprKind::Name(n) => Some(n),
+        _ => None,
+    })
+}
+
 /// The parameter called `name`, read as a condition's left side is, by the parser (`\omega`
 /// and `ϵ` name `omega` and `epsilon`); another name is refused with the parameters there are,
 /// and the one it was probably meant to be (`alfa` for `alpha`).
 fn parameter(system: &System, name: &str) -> Result<Var, String> {
     let vars = system.vars();
-    let read = trigpoly::syntax::parse_expr(name)
-        .ok()
-        .and_then(|e| match e.kind {
-            trigpoly::syntax::ExprKind::Name(n) => Some(n),
-            _ => None,
-        });
+    let read = name_read(name).ok().flatten();
     read.and_then(|n| vars.lookup(&n))
         .or_else(|| vars.lookup(name))
         .filter(|v| vars.variable(*v).kind() == trigpoly::VarKind::Parameter)
