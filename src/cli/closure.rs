@@ -5,7 +5,7 @@ use std::path::PathBuf;
 
 use anyhow::{anyhow, bail};
 use brackets::closure::ClosureOptions;
-use brackets::NamedFunction;
+use brackets::{EngineError, NamedFunction};
 use clap::Args;
 use superint::discovery::{closure_report_for, ListRefusal};
 use superint::render::render;
@@ -295,15 +295,27 @@ fn close(a: &ClosureArgs, names: &[String], subject: &Subject) -> anyhow::Result
         &options,
         Caller::CommandLine,
     )
-    .map_err(|e| match e.is_limit() {
+    .map_err(|e| match e {
+        // The products of the generators together: the term limit raises them, or a lower
+        // degree forms fewer.
+        EngineError::ClosureTooManyTerms { .. } => {
+            anyhow!("computing the closure: {e}; raise it with --max-terms N, or lower --degree")
+        }
         // Which product passed it is the engine's own business; what the user can change is
-        // the limit or the degree.
-        true => anyhow!(
-            "computing the closure: {e}; raise the limit with --max-terms N, --max-degree D or \
-             --max-term-products N, or lower --degree (the products of the generators up to it \
-             are formed)"
-        ),
-        false => anyhow::Error::new(e).context("computing the closure"),
+        // the limit or the degree. The algebra's own advice (`raise the limit or simplify the
+        // input`) gives way to this one, which names the options.
+        e if e.is_limit() => {
+            let message = e.to_string();
+            let said = message
+                .split_once("; raise the limit")
+                .map_or(&message[..], |(said, _)| said);
+            anyhow!(
+                "computing the closure: {said}; raise the limit with --max-terms N, --max-degree \
+                 D or --max-term-products N, or lower --degree (the products of the generators \
+                 up to it are formed)"
+            )
+        }
+        e => anyhow::Error::new(e).context("computing the closure"),
     })?;
     Ok(subject.tag(report))
 }

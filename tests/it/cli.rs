@@ -4566,6 +4566,47 @@ fn a_closure_at_a_limit_says_how_to_go_on() {
     run(&[&closure[..], &["--max-degree", "1200"]].concat(), 0);
 }
 
+/// A closure whose products of the generators pass the term limit together says so, what was
+/// counted and the degree, and how to go on once: it said `the result would have more than
+/// 2000000 terms`, though no one result had, and `raise the limit` twice, the engine's advice
+/// and then the command line's. A built-in system and a file read alike; another limit that
+/// carries the algebra's own advice (the work limit) says `raise` once too.
+#[test]
+fn a_closures_products_at_the_term_limit_say_what_was_counted() {
+    let expected = "superint: error: computing the closure: the products of the generators up \
+                    to degree 32 would have more than 2000000 terms together (the term limit); \
+                    raise it with --max-terms N, or lower --degree\n";
+    for system in [
+        &["--system", "gravity"][..],
+        &["systems/gravity-rotor.toml"],
+    ] {
+        let closure = [&["closure"], system, &["p_x", "F1", "--degree", "32"]].concat();
+        let o = superint_exits(&closure, 2);
+        assert_eq!(stderr(&o), expected);
+    }
+    let work = [
+        "closure",
+        "--system",
+        "harmonic",
+        "L",
+        "X",
+        "--define",
+        "X=(x+y+p_x+p_y+M+1)^8",
+        "--degree",
+        "3",
+        "--max-term-products",
+        "1000",
+    ];
+    let o = superint_exits(&work, 2);
+    assert_eq!(
+        stderr(&o),
+        "superint: error: computing the closure: the product of 495 terms by 495 would form \
+         245025 term products, past the limit of 1000 (the work limit); raise the limit with \
+         --max-terms N, --max-degree D or --max-term-products N, or lower --degree (the \
+         products of the generators up to it are formed)\n"
+    );
+}
+
 /// A bracket, an expansion and a refuted claim's residual whose terms share a factor are
 /// also written as that factor times the rest, as the paper writes them
 /// (`{A_z, H} = F(x p_x + y p_y)/M`), in every format; a result in the named functions

@@ -3012,7 +3012,8 @@ fn a_closures_expansions_are_held_together_to_the_term_limit() {
     assert!(out.stdout.is_empty());
     assert!(
         err.contains(
-            "computing the closure: the result would have more than 2000 terms (the term limit)"
+            "computing the closure: the products of the generators up to degree 8 would have \
+             more than 2000 terms together (the term limit)"
         ) && err.contains("--max-terms N"),
         "{err}"
     );

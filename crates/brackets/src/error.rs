@@ -21,6 +21,20 @@ pub enum EngineError {
         #[source]
         error: ParseError,
     },
+    /// The expansions of a closure's products of the generators, up to its degree, whose
+    /// terms together pass the term limit ([`Limits::max_terms`](trigpoly::Limits)): they are
+    /// held at once, so the limit counts all of them, not one result.
+    #[error(
+        "the products of the generators up to degree {degree} would have more than {limit} \
+         term{} together (the term limit)",
+        if *limit == 1 { "" } else { "s" }
+    )]
+    ClosureTooManyTerms {
+        /// The closure's degree: the products of the generators up to it are expanded.
+        degree: u32,
+        /// The limit in force.
+        limit: usize,
+    },
     /// A name that the system does not define.
     #[error("unknown function '{0}'")]
     UnknownName(String),
@@ -101,13 +115,14 @@ impl EngineError {
     pub fn is_limit(&self) -> bool {
         matches!(
             self,
-            EngineError::Algebra(
-                AlgebraError::TooManyTerms { .. }
-                    | AlgebraError::TooManyPrintedTerms { .. }
-                    | AlgebraError::TooMuchWork { .. }
-                    | AlgebraError::ExponentTooLarge { .. }
-                    | AlgebraError::OrderTooLarge { .. }
-            )
+            EngineError::ClosureTooManyTerms { .. }
+                | EngineError::Algebra(
+                    AlgebraError::TooManyTerms { .. }
+                        | AlgebraError::TooManyPrintedTerms { .. }
+                        | AlgebraError::TooMuchWork { .. }
+                        | AlgebraError::ExponentTooLarge { .. }
+                        | AlgebraError::OrderTooLarge { .. }
+                )
         )
     }
 
@@ -169,6 +184,11 @@ mod tests {
     fn a_limit_is_one_a_larger_limit_may_decide() {
         let terms = EngineError::from(AlgebraError::TooManyTerms { limit: 10 });
         assert!(terms.is_limit());
+        let closure = EngineError::ClosureTooManyTerms {
+            degree: 4,
+            limit: 10,
+        };
+        assert!(closure.is_limit());
         let coefficient = EngineError::from(AlgebraError::CoefficientTooLarge {
             bits: 1 << 25,
             limit: 1 << 24,

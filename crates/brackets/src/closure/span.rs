@@ -160,7 +160,7 @@ impl Span {
             })
             .filter(|m| target_weights.as_ref().is_none_or(|g| g.admits(m)))
             .collect();
-        let values = expand_monomials(vars, &g, &monos, r)?;
+        let values = expand_monomials(vars, &g, &monos, r, options.degree)?;
         let expanded = Instant::now();
 
         let fixed_targets: Vec<Expr> = targets.iter().map(fix).collect::<Result<_, _>>()?;
@@ -347,7 +347,8 @@ fn generators_part(beta: &[u32], r: usize) -> Vec<u32> {
 /// The expansions are held at once (and then read into the columns), so together they are
 /// held to the term limit, as one result is: each product is counted as it is formed, and
 /// once their terms together pass `Limits::max_terms` the expansion stops with
-/// [`AlgebraError::TooManyTerms`]. What is held is then at most the limit and one product,
+/// [`EngineError::ClosureTooManyTerms`] at the closure's `degree` (as it does when one product
+/// passes it alone), which says that all of them were counted. What is held is then at most the limit and one product,
 /// which the limit bounds too; without the count, a product of the generators of a degree
 /// reached the limit only after all those of lower degree were held (`p_x`, `F1` of the rotor
 /// under gravity at degree 64: 1.3·10⁸ terms, 6.2 GB, before `F1^45` passed it).
@@ -356,8 +357,10 @@ fn expand_monomials(
     g: &[Expr],
     monos: &[Vec<u32>],
     r: usize,
+    degree: u32,
 ) -> Result<HashMap<Vec<u32>, Expr>, EngineError> {
     let limit = vars.limits().max_terms;
+    let too_many = EngineError::ClosureTooManyTerms { degree, limit };
     let mut values: HashMap<Vec<u32>, Expr> = HashMap::new();
     values.insert(vec![0; g.len()], Expr::one(vars));
     let mut held: usize = 1;
@@ -381,10 +384,13 @@ fn expand_monomials(
                 .zip(lower)
                 .position(|(u, l)| u != l)
                 .expect("one step");
-            let v = values[lower].checked_mul(&g[a])?;
+            let v = values[lower].checked_mul(&g[a]).map_err(|e| match e {
+                AlgebraError::TooManyTerms { .. } => too_many.clone(),
+                e => e.into(),
+            })?;
             held = held.saturating_add(v.len());
             if held > limit {
-                return Err(AlgebraError::TooManyTerms { limit }.into());
+                return Err(too_many);
             }
             values.insert(upper.clone(), v);
         }
