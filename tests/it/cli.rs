@@ -4566,6 +4566,37 @@ fn a_closure_at_a_limit_says_how_to_go_on() {
     run(&[&closure[..], &["--max-degree", "1200"]].concat(), 0);
 }
 
+/// A --define value that uses a name another --define gives (or its own) is refused with the
+/// caret under that name where the value first uses it, as an unknown name's is, on a built-in
+/// system and on a file alike: it stood under the whole value, `A+zz`.
+#[test]
+fn a_define_using_a_defined_name_is_refused_at_the_name() {
+    // `G` is first a name of its own after `2` (a coefficient), not the start of `G1`.
+    for system in [
+        &["--system", "harmonic"][..],
+        &["systems/harmonic-rotor.toml"],
+    ] {
+        let given = [
+            &["closure"],
+            system,
+            &["L", "G", "B", "--define", "G=L*x", "--define", "B= G1+2G*G"],
+        ]
+        .concat();
+        assert_eq!(
+            stderr(&superint_exits(&given, 2)),
+            "superint: error: <command line>:1:8: --define: G is given by --define, whose values \
+             use only the system's names: write its value, (L*x), in its place\n \
+             1 | B= G1+2G*G\n   |        ^\n"
+        );
+        let own = [&["closure"], system, &["L", "G", "--define", "G=G1+x*G"]].concat();
+        assert_eq!(
+            stderr(&superint_exits(&own, 2)),
+            "superint: error: <command line>:1:8: --define: its value uses G, the name it \
+             defines\n 1 | G=G1+x*G\n   |        ^\n"
+        );
+    }
+}
+
 /// A closure whose products of the generators pass the term limit together says so, what was
 /// counted and the degree, and how to go on once: it said `the result would have more than
 /// 2000000 terms`, though no one result had, and `raise the limit` twice, the engine's advice

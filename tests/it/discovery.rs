@@ -1971,8 +1971,9 @@ fn closure_sends_an_expression_generator_to_define() {
     assert_eq!(out.status.code(), Some(0));
 }
 
-/// A `--define` whose value uses another defined name, or its own, says so: it was refused as
-/// an unknown name with the hint to declare a `[[function]]` in the file.
+/// A `--define` whose value uses another defined name, or its own, says so, with the caret
+/// under that name: it was refused as an unknown name with the hint to declare a
+/// `[[function]]` in the file.
 #[test]
 fn closure_says_a_definition_cannot_use_another() {
     for (defines, message) in [
@@ -1980,12 +1981,12 @@ fn closure_says_a_definition_cannot_use_another() {
             ["Y=L", "X=Y^2"],
             "superint: error: <command line>:1:3: --define: Y is given by --define, whose values \
              use only the system's names: write its value, (L), in its place\n 1 | X=Y^2\n   |   \
-             ^^^\n",
+             ^\n",
         ),
         (
             ["X={X, L}", "Y=L"],
-            "superint: error: <command line>:1:3: --define: its value uses X, the name it \
-             defines\n 1 | X={X, L}\n   |   ^^^^^^\n",
+            "superint: error: <command line>:1:4: --define: its value uses X, the name it \
+             defines\n 1 | X={X, L}\n   |    ^\n",
         ),
     ] {
         let args = [
