@@ -693,11 +693,11 @@ fn tower_families(file: &LoadedSystem, family: Option<&str>) -> Result<Vec<usize
                 "a family's name is missing beside this comma: families are named separated by \
                  commas, such as K,Kbar"
                     .to_string(),
-                format!(
+                Some(format!(
                     "the list {} has an empty name: families are named separated by commas, \
                      such as K,Kbar",
                     trigpoly::quoted_name(names)
-                ),
+                )),
             ));
         }
         let Some(k) = file.family(name) else {
@@ -714,49 +714,39 @@ fn tower_families(file: &LoadedSystem, family: Option<&str>) -> Result<Vec<usize
                     false => declared.join(", "),
                 }
             );
-            return Err(family_list_refused(
-                file,
-                names,
-                span,
-                message.clone(),
-                message,
-            ));
+            return Err(family_list_refused(file, names, span, message, None));
         };
         if found.contains(&k) {
             let message = format!(
                 "the family {} is named twice: each tower is checked once",
                 trigpoly::quoted_name(name)
             );
-            return Err(family_list_refused(
-                file,
-                names,
-                span,
-                message.clone(),
-                message,
-            ));
+            return Err(family_list_refused(file, names, span, message, None));
         }
         found.push(k);
     }
     Ok(found)
 }
 
-/// The list of families `names` refused at the byte range `span` of it: on the command line
-/// as `--fix`'s list is, `<command line>:1:C: --family:` with `placed`, the list and a caret
-/// under the place; from a program, `message`, against the system's origin.
+/// The list of families `names` refused at the byte range `span` of it, for `message`: on the
+/// command line as `--fix`'s list is, `<command line>:1:C: --family:` with `message`, the list
+/// and a caret under the place; from a program, against the system's origin, `unplaced` where
+/// the message needs the caret (`beside this comma`) and the program is told otherwise, else
+/// `message`.
 fn family_list_refused(
     file: &LoadedSystem,
     names: &str,
     span: std::ops::Range<usize>,
-    placed: String,
     message: String,
+    unplaced: Option<String>,
 ) -> FileError {
     match file.caller {
         Caller::CommandLine => file.given("<families>", names).error(
             ErrorKind::Family,
             span,
-            format!("--family: {placed}"),
+            format!("--family: {message}"),
         ),
-        Caller::Program => family_refused(file, message),
+        Caller::Program => family_refused(file, unplaced.unwrap_or(message)),
     }
 }
 

@@ -1077,6 +1077,17 @@ fn messages_to_a_program_name_the_library() {
     );
     let err = file.parse_argument("w").unwrap_err();
     assert!(err.hint.unwrap().contains("[[function]]"));
+    // A list's empty name has no caret to stand beside in a program's message: the list is
+    // quoted instead, where the command line says `missing beside this comma`.
+    let err = family_tower_report(&file, Some("K,,Kbar"), 2, None).unwrap_err();
+    assert_eq!(
+        (err.message.as_str(), err.location.is_none()),
+        (
+            "the list 'K,,Kbar' has an empty name: families are named separated by commas, \
+             such as K,Kbar",
+            true
+        )
+    );
 }
 
 /// A tower needs no progress callback: `family_tower_report` runs without one, and
