@@ -130,6 +130,7 @@ use crate::system::System;
 use new_only::new_integrals;
 use parameters::{
     fixed_hamiltonian_and_condition, module_generators, parameter_multiples, parameter_values,
+    FixedHamiltonianAndCondition,
 };
 use problem::{real_rows, AtValues, Components, Problem, RowIndex, IMAGE_BLOCK};
 use proof::{flow_vanishes, lead, primitive_vector};
@@ -289,7 +290,10 @@ fn fixed_search_problem(
         &options.fixed,
         system.space().denominator_atoms().iter(),
     );
-    let (h, fixed_condition) = fixed_hamiltonian_and_condition(system, options, &parameters)?;
+    let FixedHamiltonianAndCondition {
+        h,
+        condition: fixed_condition,
+    } = fixed_hamiltonian_and_condition(system, options, &parameters)?;
     // A known integral that is none is refused here, before the space's unknowns are formed.
     if options.new_only {
         let at = AtValues {

@@ -154,7 +154,8 @@ pub(super) fn fixed_problem(
     options: &SearchOptions,
     parameters: &[(Var, Rational)],
 ) -> Result<Problem, EngineError> {
-    let (h, condition) = fixed_hamiltonian_and_condition(system, options, parameters)?;
+    let FixedHamiltonianAndCondition { h, condition } =
+        fixed_hamiltonian_and_condition(system, options, parameters)?;
     Problem::new(
         system,
         &options.space,
@@ -170,7 +171,7 @@ pub(super) fn fixed_hamiltonian_and_condition(
     system: &System,
     options: &SearchOptions,
     parameters: &[(Var, Rational)],
-) -> Result<FixedHamiltonian, EngineError> {
+) -> Result<FixedHamiltonianAndCondition, EngineError> {
     let h = fix_parameters(system.hamiltonian(), parameters)?;
     let condition = match &options.condition {
         Some(c) => Some(
@@ -181,11 +182,16 @@ pub(super) fn fixed_hamiltonian_and_condition(
         ),
         None => None,
     };
-    Ok((h, condition))
+    Ok(FixedHamiltonianAndCondition { h, condition })
 }
 
 /// A Hamiltonian and a condition's substitutions, at fixed values.
-pub(super) type FixedHamiltonian = (Expr, Option<Vec<(Var, Expr)>>);
+pub(super) struct FixedHamiltonianAndCondition {
+    /// The Hamiltonian.
+    pub(super) h: Expr,
+    /// The condition's substitutions, where there is a condition.
+    pub(super) condition: Option<Vec<(Var, Expr)>>,
+}
 
 /// Substitutes parameter values.
 pub fn fix_parameters(e: &Expr, values: &[(Var, Rational)]) -> Result<Expr, EngineError> {
