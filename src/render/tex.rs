@@ -741,6 +741,15 @@ impl<'a> Translation<'a> {
     /// A word of mathematics: a function's command or a name, with its `digits` as its
     /// subscript (`G1` is `G_{1}`).
     fn word(&mut self, w: &str, digits: &str) {
+        // The echo's `sqrt(x² + y²)` is the root the paper writes, `\sqrt{x^{2} + y^{2}}` (it
+        // was `\operatorname{sqrt}(x^{2} + y^{2})`), as the echo's `√(x² + y²)` is.
+        if w == "sqrt" && digits.is_empty() {
+            if let Some((radicand, taken)) = self.group(self.k + 1) {
+                self.out.push_str(&format!(r"\sqrt{{{radicand}}}"));
+                self.k += taken;
+                return;
+            }
+        }
         match FUNCTIONS.iter().find(|f| f.0 == w) {
             Some(f) => push_cmd(&mut self.out, f.1),
             None => self.out.push_str(w),

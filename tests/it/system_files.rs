@@ -5306,3 +5306,47 @@ fn epsilon_prints_in_latex_as_the_letter_its_text_prints() {
         assert!(!plain.contains("ϵ"), "{spelling}: {plain}");
     }
 }
+
+/// The Kepler problem in the plane with a root written out in a claim: see
+/// [`a_claims_echo_writes_a_root_as_the_paper_does`].
+const ROOT_WRITTEN: &str = r#"name = "planar Kepler"
+hamiltonian = "(p_x^2 + p_y^2)/2 - k/r"
+
+[phase_space]
+coordinates = ["x", "y"]
+parameters = ["k"]
+radicals = { r = "x^2 + y^2" }
+
+[[claim]]
+id = "root"
+claim = "{r, p_x} = x/sqrt(x^2 + y^2)"
+"#;
+
+/// A claim's echo writes `sqrt(…)` as a function, `x/sqrt(x² + y²)` in text and
+/// `x/\sqrt{x^{2} + y^{2}}` in LaTeX, as the report's `r = √(x² + y²)` is set: it echoed
+/// `x/(sqrt(x² + y²))` and `x/(\operatorname{sqrt}(x^{2} + y^{2}))`, the root taken for a
+/// name multiplying its parentheses. The LaTeX reads back to the same claim.
+#[test]
+fn a_claims_echo_writes_a_root_as_the_paper_does() {
+    let dir = scratch("root-echo");
+    std::fs::write(dir.join("kepler.toml"), ROOT_WRITTEN).expect("write");
+    let o = superint_in(&dir, &["check", "kepler.toml", "--no-timings"]);
+    let out = text(&o.stdout);
+    assert_eq!(o.status.code(), Some(0), "{out}{}", text(&o.stderr));
+    assert!(out.contains("{r, p_x} = x/sqrt(x² + y²)"), "{out}");
+    assert!(!out.contains("(sqrt"), "{out}");
+    let o = superint_in(&dir, &["check", "kepler.toml", "--format", "latex"]);
+    let latex = text(&o.stdout);
+    let echo = r"\{r, p_{x}\} &= x/\sqrt{x^{2} + y^{2}}";
+    assert!(latex.contains(echo), "{latex}");
+    assert!(!latex.contains("operatorname{sqrt}"), "{latex}");
+    let again = format!(
+        "{ROOT_WRITTEN}\n[[claim]]\nid = \"again\"\nclaim = '{}'\n",
+        echo.replace(" &=", " =")
+    );
+    std::fs::write(dir.join("again.toml"), again).expect("write");
+    let o = superint_in(&dir, &["check", "again.toml", "--no-timings"]);
+    let out = text(&o.stdout);
+    assert_eq!(o.status.code(), Some(0), "{out}{}", text(&o.stderr));
+    assert!(out.contains("[again proved]"), "{out}");
+}
