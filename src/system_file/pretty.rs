@@ -282,7 +282,18 @@ impl LoadedSystem {
     /// `a b`: run together (one-letter names with [`JUXTAPOSED`] between them), spaced, or
     /// with a dot between numbers.
     fn print_product(&self, a: &Tree, b: &Tree) -> Printed {
+        // `(cos θ) x` and `(x sin θ) p_θ`, not `cos θ x`, which reads as the cosine of `θx`,
+        // as `(x sin θ)/2` is written for `x sin θ/2`; a sine or cosine after it needs none
+        // (`sin θ cos θ`).
+        let trig_before = ends_in_bare_trig(a) && !begins_with_trig(b);
         let a = self.print(a);
+        let a = match trig_before {
+            true => Printed {
+                last_long: true,
+                ..a.wrapped(ATOM + 1)
+            },
+            false => a,
+        };
         // `(Re K) (Im K)`: beside a name of several words in parentheses, another takes them
         // too (not a derivative, which takes them only before a factor: `(∂H) ∂G`).
         let words_before = a.trailing_words.is_some() && !a.differential_last();
@@ -512,6 +523,16 @@ fn ends_in_bare_trig(tree: &Tree) -> bool {
                 && ends_in_bare_trig(a)
         }
         ExprKind::Mul(_, b) | ExprKind::Neg(b) => ends_in_bare_trig(b),
+        _ => false,
+    }
+}
+
+/// Whether `tree` is printed beginning with a sine or cosine (`cos θ`, `sin²θ x`), which reads
+/// as a factor of its own after another one.
+fn begins_with_trig(tree: &Tree) -> bool {
+    match &tree.kind {
+        ExprKind::Call(f, _, _) => matches!(f.as_str(), "cos" | "sin"),
+        ExprKind::Pow(a, _) | ExprKind::Mul(a, _) => !tree.in_parentheses() && begins_with_trig(a),
         _ => false,
     }
 }

@@ -3331,7 +3331,8 @@ fn family_instances_before_parentheses_and_trigonometric_echoes() {
     for echo in [
         "K_{1,1}(x) − x K_{1,1} ",
         "K_{1,1}(x) − K_{1,1} x ",
-        "cos²θ + sin θ x − cos²θ − x sin θ = 0",
+        // A factor after a sine sets it apart: `sin θ x` would read as the sine of `θx`.
+        "cos²θ + (sin θ) x − cos²θ − x sin θ = 0",
         // Another power takes the angle in parentheses: `sin θ^(3²)` reads as ambiguous.
         "sin(θ)^(3²) − sin⁹θ ",
     ] {
@@ -5349,4 +5350,68 @@ fn a_claims_echo_writes_a_root_as_the_paper_does() {
     let out = text(&o.stdout);
     assert_eq!(o.status.code(), Some(0), "{out}{}", text(&o.stderr));
     assert!(out.contains("[again proved]"), "{out}");
+}
+
+/// A rotor with claims whose products put a factor after a sine or cosine of a bare angle:
+/// see [`a_claims_echo_sets_a_sine_or_cosine_apart_from_a_factor_after_it`].
+const TRIG_BEFORE_FACTOR: &str = r#"name = "rotor and oscillator"
+hamiltonian = "p_theta^2/(2*I) + (p_x^2 + x^2)/2"
+
+[phase_space]
+coordinates = ["x"]
+angles = ["theta"]
+parameters = ["I"]
+
+[[claim]]
+id = "cos"
+claim = "{cos(theta), H} = -sin(theta)*p_theta/I"
+
+[[claim]]
+id = "product"
+claim = "cos(theta)*x = x*cos(theta)"
+
+[[claim]]
+id = "square"
+claim = "cos(theta)^2*x*p_x = x*p_x*cos(theta)^2"
+
+[[claim]]
+id = "both"
+claim = "sin(theta)*cos(theta) = sin(2*theta)/2"
+"#;
+
+/// A claim's echo sets a sine or cosine of a bare angle apart from a factor after it,
+/// `(cos θ) x`, `−(sin θ) p_θ/I` as `(x sin θ)/2` is set apart from a denominator, because it
+/// echoed `cos θ x` and `−sin θ p_θ/I`, which read as the cosine of `θx` and the sine of
+/// `θ p_θ` (LaTeX `\cos\theta x`); a sine or cosine after it needs no parentheses
+/// (`sin θ cos θ`). What it prints reads back to the same value.
+#[test]
+fn a_claims_echo_sets_a_sine_or_cosine_apart_from_a_factor_after_it() {
+    let dir = scratch("trig-before-factor");
+    std::fs::write(dir.join("rotor.toml"), TRIG_BEFORE_FACTOR).expect("write");
+    let o = superint_in(&dir, &["check", "rotor.toml", "--no-timings"]);
+    let out = text(&o.stdout);
+    assert_eq!(o.status.code(), Some(0), "{out}{}", text(&o.stderr));
+    for piece in [
+        "{cos θ, H} = (−sin θ) p_θ/I",
+        "(cos θ) x = x cos θ",
+        "(cos²θ) x p_x = x p_x cos²θ",
+        "sin θ cos θ = sin(2θ)/2",
+    ] {
+        assert!(out.contains(piece), "{piece}: {out}");
+    }
+    let o = superint_in(&dir, &["check", "rotor.toml", "--format", "latex"]);
+    let latex = text(&o.stdout);
+    assert!(latex.contains(r"(\cos\theta) x &= x \cos\theta"), "{latex}");
+    assert!(!latex.contains(r"\cos\theta x"), "{latex}");
+    // The echo reads back: each left side expands as its right side does.
+    for (echo, expanded) in [
+        ("(−sin θ) p_θ/I", "−(p_θ sin θ)/I"),
+        ("(cos θ) x", "x cos θ"),
+        ("(cos²θ) x p_x", "x p_x cos²θ"),
+    ] {
+        let o = superint_in(&dir, &["expand", "rotor.toml", "--", echo]);
+        let out = text(&o.stdout);
+        assert_eq!(o.status.code(), Some(0), "{out}{}", text(&o.stderr));
+        assert!(out.contains(&format!("= {expanded}")), "{echo}: {out}");
+    }
 }
