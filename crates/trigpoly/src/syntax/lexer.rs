@@ -201,6 +201,12 @@ impl<'a> Lexer<'a> {
                     // As superint prints a radical's definition, `r = √(x² + y²)`.
                     '√' => "; write a square root as sqrt(…)",
                     '‐'..='―' => "; a dash is no minus sign: write '-' or '−'",
+                    // Mathematica's `Sqrt[x^2 + y^2]`, `Cos[theta]`, `D[f, x]`.
+                    '[' | ']' => {
+                        "; a function takes its argument in parentheses, sqrt(x^2 + y^2), \
+                         cos(theta), not square brackets, and the Poisson bracket is written \
+                         {f, g}"
+                    }
                     '=' => {
                         "; an expression has no '=' (a claim has one, a condition one per variable)"
                     }

@@ -571,6 +571,11 @@ mod tests {
         ("½x", (1, 1), "unexpected character '½'; write a fraction such as 1/2"),
         ("x – y", (1, 3), "unexpected character '–'; a dash is no minus sign: write '-' or '−'"),
         ("k/√(x² + y²)", (1, 3), "unexpected character '√'; write a square root as sqrt(…)"),
+        // Mathematica's calls, with what to write instead.
+        ("k/Sqrt[x^2 + y^2]", (1, 7), "unexpected character '['; a function takes its \
+                                       argument in parentheses, sqrt(x^2 + y^2), cos(theta), \
+                                       not square brackets, and the Poisson bracket is \
+                                       written {f, g}"),
         ("1e3 x", (1, 1), "'1e3' is no number: write a power of ten as 1*10^3, and a product \
                            with a name as 1*e3"),
         ("x + 2E-5", (1, 5), "'2E-5' is no number: write a power of ten as 2*10^-5"),
