@@ -1038,8 +1038,11 @@ impl Context<GaussianRational> for Scope<'_> {
         }
     }
 
-    fn bracket(&self, f: &Expr, g: &Expr) -> Result<Expr, String> {
-        self.file.system.bracket(f, g).map_err(|e| e.to_string())
+    fn bracket(&self, f: &Expr, g: &Expr) -> Result<Expr, trigpoly::BracketError> {
+        self.file
+            .system
+            .bracket(f, g)
+            .map_err(trigpoly::BracketError::from)
     }
 
     // Each place once: `LoadedSystem::warn` keeps a warning once, so a reading noted again

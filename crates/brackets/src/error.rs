@@ -1,7 +1,7 @@
 //! `EngineError`: why the engine could not form a bracket, a claim or a certificate.
 
 use thiserror::Error;
-use trigpoly::{AlgebraError, ParseError};
+use trigpoly::{AlgebraError, BracketError, ParseError};
 
 /// Why the bracket engine has no answer.
 #[derive(Clone, Debug, PartialEq, Eq, Error)]
@@ -102,6 +102,18 @@ impl From<ParseError> for EngineError {
             source_text: String::new(),
             message,
             error,
+        }
+    }
+}
+
+/// Why a system has no bracket, as a lowering's [`Context`](trigpoly::Context) says it: a
+/// refusal of the algebra as itself (so that the parse error it becomes keeps it as its
+/// cause, a limit a limit), any other error in its words.
+impl From<EngineError> for BracketError {
+    fn from(error: EngineError) -> Self {
+        match error {
+            EngineError::Algebra(e) => BracketError::Algebra(e),
+            e => BracketError::Other(e.to_string()),
         }
     }
 }

@@ -1,7 +1,7 @@
 //! `System`: a phase space, a Hamiltonian and named functions, with a parser that knows the
 //! names and the bracket `{f, g}`.
 
-use trigpoly::{AlgebraError, Context, Expr, GaussianRational, Var, Vars};
+use trigpoly::{AlgebraError, BracketError, Context, Expr, GaussianRational, Var, Vars};
 
 use crate::claim::Condition;
 use crate::error::EngineError;
@@ -298,8 +298,8 @@ impl Context<GaussianRational> for System {
         self.get(name).ok().cloned()
     }
 
-    fn bracket(&self, f: &Expr, g: &Expr) -> Result<Expr, String> {
-        self.space.bracket(f, g).map_err(|e| e.to_string())
+    fn bracket(&self, f: &Expr, g: &Expr) -> Result<Expr, BracketError> {
+        self.space.bracket(f, g).map_err(BracketError::from)
     }
 
     fn names(&self) -> Vec<String> {

@@ -61,7 +61,7 @@ pub use num_rational;
 
 pub use error::{AlgebraError, AngleUse, Misuse, Setting};
 pub use lower::{did_you_mean, did_you_mean_hint, quoted_name, split_names, FUNCTIONS};
-pub use lower::{Context, Doubt, NoContext, RunTogether};
+pub use lower::{BracketError, Context, Doubt, NoContext, RunTogether};
 pub use number::{
     Coefficient, ExactDivisor, GaussianAcc, GaussianInteger, GaussianRational, Integer, IntegerAcc,
     IntegerRing, IntegerView, ParseGaussianError, ParseRationalError, Rational, RationalErrorKind,
@@ -71,7 +71,7 @@ pub use print::{
     differential_latex, is_differential, is_differential_sign, render_number, superscript,
     Factored, Style, DIFFERENTIALS,
 };
-pub use syntax::{Excerpt, ParseError, Span};
+pub use syntax::{Excerpt, ParseCause, ParseError, Span};
 pub use varset::{
     display_forms, greek_latex, has_several_words, is_identifier, juxtaposition_is_ambiguous,
     latex_unwritable, momentum_forms, shown_forms, shown_text, unbarred, with_indices, BadName,

@@ -5,7 +5,7 @@
 use crate::error::AlgebraError;
 use crate::number::{Coefficient, GaussianRational, Integer, Rational};
 use crate::poly::Poly;
-use crate::syntax::{parse_expr_reading, Expr, ExprKind, ParseError, Reading, Span};
+use crate::syntax::{parse_expr_reading, Expr, ExprKind, ParseCause, ParseError, Reading, Span};
 use crate::varset::{long_name, Var, VarKind, Vars, RESERVED};
 
 /// What names and brackets mean beyond the variables: named functions defined elsewhere (a
@@ -13,8 +13,10 @@ use crate::varset::{long_name, Var, VarKind, Vars, RESERVED};
 pub trait Context<C: Coefficient> {
     /// The value of a name that is not a variable, if it is defined.
     fn lookup(&self, name: &str) -> Option<Poly<C>>;
-    /// `{f, g}`, or why it cannot be formed.
-    fn bracket(&self, f: &Poly<C>, g: &Poly<C>) -> Result<Poly<C>, String>;
+    /// `{f, g}`, or why it cannot be formed: a refusal of the algebra (a limit, say) as
+    /// [`BracketError::Algebra`], so that the parse error it becomes keeps it as its
+    /// [`ParseCause::Algebra`].
+    fn bracket(&self, f: &Poly<C>, g: &Poly<C>) -> Result<Poly<C>, BracketError>;
     /// The names this context defines (for "did you mean" messages).
     fn names(&self) -> Vec<String> {
         Vec::new()
@@ -24,6 +26,19 @@ pub trait Context<C: Coefficient> {
     /// lowering goes on with the product. Ignored unless a context keeps it (as
     /// [`Poly::parse_noting`] does); a name may be told more than once.
     fn run_together(&self, _: RunTogether) {}
+}
+
+/// Why a [`Context`] has no bracket `{f, g}`: the algebra refused (a limit, say), or another
+/// reason, in words. Its `Display` is the algebra's message, or the words.
+#[derive(Clone, Debug, PartialEq, Eq, thiserror::Error)]
+#[non_exhaustive]
+pub enum BracketError {
+    /// An operation of the algebra refused.
+    #[error(transparent)]
+    Algebra(#[from] AlgebraError),
+    /// Another reason, in words.
+    #[error("{0}")]
+    Other(String),
 }
 
 /// A name that is not declared, read as the product of the declared names it splits into
@@ -174,7 +189,7 @@ impl<C: Coefficient> Context<C> for Noting<'_, C> {
     fn lookup(&self, name: &str) -> Option<Poly<C>> {
         self.ctx.lookup(name)
     }
-    fn bracket(&self, f: &Poly<C>, g: &Poly<C>) -> Result<Poly<C>, String> {
+    fn bracket(&self, f: &Poly<C>, g: &Poly<C>) -> Result<Poly<C>, BracketError> {
         self.ctx.bracket(f, g)
     }
     fn names(&self) -> Vec<String> {
@@ -199,8 +214,10 @@ impl<C: Coefficient> Context<C> for NoContext {
     fn lookup(&self, _: &str) -> Option<Poly<C>> {
         None
     }
-    fn bracket(&self, _: &Poly<C>, _: &Poly<C>) -> Result<Poly<C>, String> {
-        Err("a bracket {f, g} needs a phase space; parse it through a system".into())
+    fn bracket(&self, _: &Poly<C>, _: &Poly<C>) -> Result<Poly<C>, BracketError> {
+        Err(BracketError::Other(
+            "a bracket {f, g} needs a phase space; parse it through a system".into(),
+        ))
     }
 }
 
@@ -316,8 +333,20 @@ fn written_product<C: Coefficient>(factors: &[(Poly<C>, i64)], negative: bool) -
     text
 }
 
+/// The cause of an exponent or a multiple of size `power` past the degree limit `limit`.
+fn past_limit(power: Option<u64>, limit: u32) -> ParseCause {
+    ParseCause::PowerPastLimit { power, limit }
+}
+
+/// `|n|`, if a 64-bit number holds it.
+fn size(n: &Integer) -> Option<u64> {
+    n.to_i128()
+        .and_then(|n| u64::try_from(n.unsigned_abs()).ok())
+}
+
+/// The parse error at `span` of a refusal of the algebra, which keeps it as its cause.
 fn at(span: Span) -> impl Fn(AlgebraError) -> ParseError {
-    move |e| ParseError::new(span, e.to_string())
+    move |e| ParseError::new(span, e.to_string()).with_cause(ParseCause::Algebra(e))
 }
 
 impl<C: Coefficient> Lower<'_, C> {
@@ -403,9 +432,10 @@ impl<C: Coefficient> Lower<'_, C> {
             ExprKind::Bracket(f, g) => {
                 let f = self.lower(f)?;
                 let g = self.lower(g)?;
-                self.ctx
-                    .bracket(&f, &g)
-                    .map_err(|m| ParseError::new(span, m))
+                self.ctx.bracket(&f, &g).map_err(|e| match e {
+                    BracketError::Algebra(e) => at(span)(e),
+                    BracketError::Other(m) => ParseError::new(span, m),
+                })
             }
         }
     }
@@ -456,14 +486,17 @@ impl<C: Coefficient> Lower<'_, C> {
         let known = self.known_names();
         let meant = did_you_mean_hint(name, &known);
         // A set of no names (a constant's, `GaussianRational::from_str`'s) lists none.
-        let known = match known.is_empty() {
+        let listed = match known.is_empty() {
             true => " (no names are declared)".to_string(),
             false => format!(" (known: {})", known.join(", ")),
         };
-        Err(ParseError::new(
-            span,
-            format!("unknown name {}{meant}{known}", quoted_name(name)),
-        ))
+        let message = format!("unknown name {}{meant}{listed}", quoted_name(name));
+        Err(
+            ParseError::new(span, message).with_cause(ParseCause::UnknownName {
+                name: name.to_string(),
+                known,
+            }),
+        )
     }
 
     /// Whether `name` is a declared name other than an angle, `i`, or a product of such names
@@ -699,11 +732,21 @@ impl<C: Coefficient> Lower<'_, C> {
                     "the exponent, of {} bits, is past the limit of {limit}",
                     q.numer().bits()
                 ),
-            )),
+            )
+            .with_cause(past_limit(None, limit))),
+            // The size of `p` of a half `p/2`, as the limit bounds it.
             _ => Err(ParseError::new(
                 e.span,
                 format!("the exponent {q} is past the limit of {limit}"),
-            )),
+            )
+            .with_cause(past_limit(
+                size(&if q.is_integer() {
+                    q.numer()
+                } else {
+                    twice.numer()
+                }),
+                limit,
+            ))),
         }
     }
 
@@ -905,11 +948,13 @@ impl<C: Coefficient> Lower<'_, C> {
                             "the multiple of {angle}, of {} bits, is past the limit of {limit}",
                             n.bits()
                         ),
-                    )),
+                    )
+                    .with_cause(past_limit(None, limit))),
                     _ => Err(ParseError::new(
                         arg.span,
                         format!("the multiple {n} of {angle} is past the limit of {limit}"),
-                    )),
+                    )
+                    .with_cause(past_limit(size(&n), limit))),
                 }
             })
             .collect()

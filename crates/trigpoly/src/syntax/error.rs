@@ -1,5 +1,7 @@
 //! Source spans and parse errors, with line/column lookup and caret rendering.
 
+use crate::error::AlgebraError;
+
 /// Byte range `start..end` in the source text.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 pub struct Span {
@@ -54,7 +56,58 @@ pub struct ParseError {
     excerpt: Option<Box<Excerpt>>,
     /// The opener whose place the message says, when it says one.
     opener: Option<Box<Opener>>,
+    /// What kind of error it is ([`ParseError::cause`]); `None` for [`ParseCause::Syntax`].
+    cause: Option<Box<ParseCause>>,
 }
+
+/// What kind of error a [`ParseError`] is, beyond its message: set where the error is made,
+/// so that a caller tells a limit or an unknown name from a mistake of syntax (and gives its
+/// hint) without reading the message's text.
+///
+/// New kinds come as new variants, so a `match` on it needs a `_` arm.
+///
+/// ```
+/// use trigpoly::{AlgebraError, Expr, ParseCause, VarSet};
+///
+/// let vars = VarSet::builder().coordinate("x").momentum("p_x").build().unwrap();
+/// let err = Expr::parse(&vars, "p_x^2/2 + q*x").unwrap_err();
+/// let ParseCause::UnknownName { name, known } = err.cause() else { panic!() };
+/// assert_eq!((name.as_str(), known.as_slice()), ("q", &["x".to_string(), "p_x".into()][..]));
+/// let err = Expr::parse(&vars, "x^5000").unwrap_err();
+/// assert!(matches!(err.cause(), ParseCause::PowerPastLimit { power: Some(5000), .. }));
+/// let err = Expr::parse(&vars, "x/(1 + x)").unwrap_err();
+/// assert!(matches!(err.cause(), ParseCause::Algebra(AlgebraError::NotAMonomial { .. })));
+/// ```
+#[derive(Clone, Debug, PartialEq, Eq)]
+#[non_exhaustive]
+pub enum ParseCause {
+    /// The text does not read, or reads as nothing the ring has: what the message says.
+    Syntax,
+    /// A name that is neither declared nor defined by the context.
+    UnknownName {
+        /// The name, as written.
+        name: String,
+        /// The names that are known (variables and the context's names), as the message
+        /// lists them; empty where none are declared.
+        known: Vec<String>,
+    },
+    /// An operation of the algebra refused while the expression was formed: a limit
+    /// ([`AlgebraError::TooManyTerms`], [`AlgebraError::ExponentTooLarge`], …), a division
+    /// that is not exact, and the rest of [`AlgebraError`].
+    Algebra(AlgebraError),
+    /// An exponent or an angle's multiple, written in the text, past the degree limit
+    /// ([`Limits::max_degree`](crate::Limits)): `x^5000`, `cos(5000*θ)`.
+    PowerPastLimit {
+        /// Its size `|n|` (of a radical's power `p/2`, `|p|`), or `None` for one that no
+        /// 64-bit number holds.
+        power: Option<u64>,
+        /// The limit in force.
+        limit: u32,
+    },
+}
+
+/// The cause of an error made without one.
+const SYNTAX: ParseCause = ParseCause::Syntax;
 
 /// An opener named by an error's message (`expected ')' to close '(' opened at column 5,
 /// found end of input`): its byte offset in the parsed text, and the message before
@@ -76,7 +129,26 @@ impl ParseError {
             message: message.into(),
             excerpt: None,
             opener: None,
+            cause: None,
         }
+    }
+
+    /// The same error, of the kind `cause` ([`ParseError::cause`]).
+    #[must_use]
+    pub fn with_cause(mut self, cause: ParseCause) -> Self {
+        self.cause = match cause {
+            ParseCause::Syntax => None,
+            cause => Some(Box::new(cause)),
+        };
+        self
+    }
+
+    /// What kind of error it is: an unknown name, a refusal of the algebra (a limit among
+    /// them), a power past the degree limit, or else [`ParseCause::Syntax`]. It is set where
+    /// the error is made, and kept by the methods that change its message or its source.
+    #[must_use]
+    pub fn cause(&self) -> &ParseCause {
+        self.cause.as_deref().unwrap_or(&SYNTAX)
     }
 
     /// The description, without the place: what its `Display` writes after `line L, column C: `.

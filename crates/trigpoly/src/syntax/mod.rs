@@ -21,7 +21,7 @@ mod latex;
 mod lexer;
 mod parser;
 
-pub use error::{Excerpt, ParseError, Span};
+pub use error::{Excerpt, ParseCause, ParseError, Span};
 pub use latex::{latex_name, NOT_IN_NAME};
 pub use lexer::{is_name_continue, is_name_start};
 pub use parser::{parse_expr, Expr, ExprKind, LEFT_DEEP_SUM, MAX_DEPTH, MAX_HEIGHT};

@@ -498,3 +498,82 @@ fn term_limit_holds_a_product_split_over_threads_to_its_total() {
         Err(AlgebraError::TooManyTerms { limit: terms - 1 })
     );
 }
+
+/// A parse whose expansion passes a limit says which, as its cause: the algebra's refusal,
+/// with its numbers, or the exponent or multiple written past the degree limit, with its size;
+/// an unknown name says the name and the known ones.
+#[test]
+fn a_parse_error_keeps_its_cause() {
+    use trigpoly::{BracketError, Context, ParseCause};
+    let vars = small_vars();
+    let err = Poly::<Rational>::parse(&vars, "(x + y + z + t + u + v + w)^9").unwrap_err();
+    assert_eq!(
+        err.cause(),
+        &ParseCause::Algebra(AlgebraError::TooManyTerms { limit: 1000 })
+    );
+    let work = work_vars(70 * 35 - 1);
+    let err =
+        Poly::<Rational>::parse(&work, "(1 + x + y + z + t)^4*(1 + x + y + z + t)^3").unwrap_err();
+    assert!(matches!(
+        err.cause(),
+        ParseCause::Algebra(AlgebraError::TooMuchWork { limit: 2449, .. })
+    ));
+    let err = Poly::<Rational>::parse(&vars, "x^5000*x^5001").unwrap_err();
+    assert!(matches!(
+        err.cause(),
+        ParseCause::Algebra(AlgebraError::ExponentTooLarge {
+            exponent: 10001,
+            limit: 10_000,
+            ..
+        })
+    ));
+    for (text, power) in [
+        ("x^20000", Some(20000)),
+        ("x^(-40001/2)", Some(40001)),
+        ("x^99999999999999999999", None),
+        ("x^(2^300)", None),
+    ] {
+        let err = Poly::<Rational>::parse(&vars, text).unwrap_err();
+        assert_eq!(
+            err.cause(),
+            &ParseCause::PowerPastLimit {
+                power,
+                limit: 10_000
+            },
+            "{text}"
+        );
+    }
+    let angles = VarSet::builder().angle("theta").build().unwrap();
+    let err = Poly::<Rational>::parse(&angles, "cos(5000*theta)").unwrap_err();
+    assert_eq!(
+        err.cause(),
+        &ParseCause::PowerPastLimit {
+            power: Some(5000),
+            limit: 1000
+        }
+    );
+    let err = Poly::<Rational>::parse(&vars, "x + q").unwrap_err();
+    let ParseCause::UnknownName { name, known } = err.cause() else {
+        panic!("{err:?}")
+    };
+    assert_eq!(name, "q");
+    assert_eq!(known, &["x", "y", "z", "t", "u", "v", "w"]);
+    let err = Poly::<Rational>::parse(&vars, "x + (y").unwrap_err();
+    assert_eq!(err.cause(), &ParseCause::Syntax);
+
+    /// A context whose bracket passes the term limit.
+    struct Limited;
+    impl Context<Rational> for Limited {
+        fn lookup(&self, _: &str) -> Option<Q> {
+            None
+        }
+        fn bracket(&self, _: &Q, _: &Q) -> Result<Q, BracketError> {
+            Err(AlgebraError::TooManyTerms { limit: 7 }.into())
+        }
+    }
+    let err = Poly::<Rational>::parse_with(&vars, "{x, y}", &Limited).unwrap_err();
+    assert_eq!(
+        err.cause(),
+        &ParseCause::Algebra(AlgebraError::TooManyTerms { limit: 7 })
+    );
+}

@@ -35,8 +35,8 @@ impl Context<GaussianRational> for Functions {
             .find(|(n, _)| *n == name)
             .map(|(_, f)| f.clone())
     }
-    fn bracket(&self, _: &G, _: &G) -> Result<G, String> {
-        Err("no brackets here".into())
+    fn bracket(&self, _: &G, _: &G) -> Result<G, trigpoly::BracketError> {
+        Err(trigpoly::BracketError::Other("no brackets here".into()))
     }
     fn names(&self) -> Vec<String> {
         self.0.iter().map(|(n, _)| n.to_string()).collect()
