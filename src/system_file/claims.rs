@@ -14,7 +14,7 @@ use trigpoly::{AlgebraError, Expr, Span, VarKind};
 
 use super::error::{ErrorKind, FileError};
 use super::model::{ClaimModel, When};
-use super::scope::{limit_hint, rewrite_braces};
+use super::scope::{rewrite_braces, Limit};
 use super::text::{array_strings, split_top_level, unbalanced_bracket, Source, Text};
 use super::written::Reach;
 use super::LoadedSystem;
@@ -102,14 +102,11 @@ impl CheckedClaim {
 /// An engine error at a place of the file: limits are limit errors, with the hint.
 pub(crate) fn engine_error(source: &Source, span: Range<usize>, e: &EngineError) -> FileError {
     let message = e.to_string();
-    match e.is_limit() {
-        true => {
-            let hint = limit_hint(&message);
-            source
-                .error(ErrorKind::Limit, span, message)
-                .with_hint(hint)
-        }
-        false => source.error(ErrorKind::Engine, span, message),
+    match Limit::of_engine(e) {
+        Some(limit) => source
+            .error(ErrorKind::Limit, span, message)
+            .with_hint(limit.hint()),
+        None => source.error(ErrorKind::Engine, span, message),
     }
 }
 

@@ -9,11 +9,15 @@
 use std::cell::RefCell;
 use std::collections::HashMap;
 
+use brackets::EngineError;
+
 use num_bigint::BigInt;
 use trigpoly::syntax::{
     is_name_continue, is_name_start, Expr as Tree, ExprKind, ParseError, NOT_IN_NAME,
 };
-use trigpoly::{Context, Expr, GaussianRational, Span, VarKind};
+use trigpoly::{
+    AlgebraError, Context, Expr, GaussianRational, ParseCause, Span, VarKind, MAX_NAME_CHARS,
+};
 
 use super::error::{ErrorKind, FileError, Warning};
 use super::load::MAX_DEGREE_CEILING;
@@ -354,63 +358,90 @@ pub(crate) fn substitute(
     }
 }
 
-/// Whether a message is one of the limit errors of the algebra.
-fn is_limit_message(message: &str) -> bool {
-    message.contains("(the term limit)") || message.contains("past the limit of")
+/// Which limit stopped a computation, as its hint tells how to raise it: read from the error's
+/// variant and numbers, never from its message.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub(crate) enum Limit {
+    /// The work limit, of term products (`max_term_products`).
+    Work,
+    /// The term or degree limit (`max_terms`, `max_degree`), which a larger one may reach.
+    Size,
+    /// An exponent or order past the most that `max_degree` may be set to, which no limit
+    /// reaches.
+    PastEvery,
 }
 
-/// The hint that goes with a limit error's `message`: the work limit's, or the size limits',
-/// or, for an exponent past the most that `max_degree` may be, that no limit reaches it.
-pub(crate) fn limit_hint(message: &str) -> String {
-    if exponent_past_every_limit(message) {
-        return format!(
-            "no limit reaches this exponent or order: max_degree is at most \
-             {MAX_DEGREE_CEILING}; write the expression without so large a power or multiple"
-        );
+impl Limit {
+    /// The limit that stopped the algebra with `e`, if a limit did: the term limit (of a
+    /// result or of its printing), the work limit, or the degree limit (an exponent, an
+    /// angle's order), past every limit when its number is.
+    fn of_algebra(e: &AlgebraError) -> Option<Limit> {
+        match e {
+            AlgebraError::TooMuchWork { .. } => Some(Limit::Work),
+            AlgebraError::TooManyTerms { .. } | AlgebraError::TooManyPrintedTerms { .. } => {
+                Some(Limit::Size)
+            }
+            AlgebraError::ExponentTooLarge { exponent, .. } => {
+                Some(Limit::of_degree(Some(exponent.unsigned_abs())))
+            }
+            AlgebraError::OrderTooLarge { order, .. } => Some(Limit::of_degree(Some(*order))),
+            _ => None,
+        }
     }
-    let hint = match message.contains("(the work limit)") {
-        true => {
-            "if the machine has the time, raise the limit with max_term_products under [limits] \
-             in the file (on the command line, --max-term-products N; in a program, the \
-             LimitsOverride given to the loader)"
-        }
-        false => {
-            "if the machine has the memory, raise the limit with max_terms or max_degree under \
-             [limits] in the file (on the command line, --max-terms N or --max-degree D; in a \
-             program, the LimitsOverride given to the loader)"
-        }
-    };
-    hint.to_string()
-}
 
-/// Whether `message` is a limit error for a number with `|N|` above the most that
-/// `max_degree` may be set to: `the exponent N is past the limit of …`, `the exponent of x
-/// would reach N`, `the multiple N of θ is past …`, `the trigonometric order in θ would
-/// reach N`; and `the multiple of θ, of B bits, is past …`, a multiple too long to write.
-fn exponent_past_every_limit(message: &str) -> bool {
-    if message.contains(" bits, is past the limit of ") {
-        return true;
+    /// The limit that stopped the engine with `e`, if a limit did
+    /// ([`EngineError::is_limit`]): the algebra's, or the term limit of a closure's products.
+    pub(crate) fn of_engine(e: &EngineError) -> Option<Limit> {
+        match e {
+            EngineError::ClosureTooManyTerms { .. } => Some(Limit::Size),
+            EngineError::Algebra(e) => Limit::of_algebra(e),
+            _ => None,
+        }
     }
-    let number = |before: &str, after: &str| {
-        let (_, rest) = message.split_once(before)?;
-        Some(rest.split_once(after)?.0)
-    };
-    let Some(exponent) = number("the exponent ", " is past the limit")
-        .or_else(|| number(" would reach ", " ("))
-        .or_else(|| number(" would reach ", ","))
-        .or_else(|| number("the multiple ", " of "))
-    else {
-        return false;
-    };
-    // Digits too many for an i128 are past it too. A half `p/2`, a radical's power, is
-    // bounded by its `p`.
-    let digits = exponent.trim_start_matches(['-', '−']);
-    let digits = digits.strip_suffix("/2").unwrap_or(digits);
-    !digits.is_empty()
-        && digits.chars().all(|c| c.is_ascii_digit())
-        && digits
-            .parse::<i128>()
-            .map_or(true, |n| n > i128::from(MAX_DEGREE_CEILING))
+
+    /// The limit that stopped a parse with the cause `cause`, if a limit did: the algebra's,
+    /// or an exponent or multiple written past the degree limit.
+    fn of_parse(cause: &ParseCause) -> Option<Limit> {
+        match cause {
+            ParseCause::Algebra(e) => Limit::of_algebra(e),
+            ParseCause::PowerPastLimit { power, .. } => Some(Limit::of_degree(*power)),
+            _ => None,
+        }
+    }
+
+    /// The degree limit, for an exponent or order of size `power` (`None`: too large to say):
+    /// past every limit when it is above the most that `max_degree` may be.
+    fn of_degree(power: Option<u64>) -> Limit {
+        match power.is_none_or(|n| n > u64::from(MAX_DEGREE_CEILING)) {
+            true => Limit::PastEvery,
+            false => Limit::Size,
+        }
+    }
+
+    /// The hint that goes with the limit: the work limit's, or the size limits', or, for an
+    /// exponent past the most that `max_degree` may be, that no limit reaches it.
+    pub(crate) fn hint(self) -> String {
+        let hint = match self {
+            Limit::PastEvery => {
+                return format!(
+                    "no limit reaches this exponent or order: max_degree is at most \
+                     {MAX_DEGREE_CEILING}; write the expression without so large a power or \
+                     multiple"
+                )
+            }
+            Limit::Work => {
+                "if the machine has the time, raise the limit with max_term_products under \
+                 [limits] in the file (on the command line, --max-term-products N; in a \
+                 program, the LimitsOverride given to the loader)"
+            }
+            Limit::Size => {
+                "if the machine has the memory, raise the limit with max_terms or max_degree \
+                 under [limits] in the file (on the command line, --max-terms N or --max-degree \
+                 D; in a program, the LimitsOverride given to the loader)"
+            }
+        };
+        hint.to_string()
+    }
 }
 
 /// The hint that goes with an unknown name: where each kind of name is declared.
@@ -427,8 +458,8 @@ const UNKNOWN_NAME_HINT_IN_CODE: &str = "a constant such as a mass is a paramete
 /// its own: each momentum is named after its coordinate, `p_q1`. `None` when the unknown
 /// name is neither `p_…` nor `p` and digits (`phi` may be anything), or the system has no
 /// momenta.
-fn momentum_hint(message: &str) -> Option<String> {
-    let (name, momenta) = unknown_name_and_momenta(message)?;
+fn momentum_hint(unknown: &Unknown) -> Option<String> {
+    let Unknown { name, momenta } = unknown;
     let numbered = name
         .strip_prefix('p')
         .is_some_and(|n| !n.is_empty() && n.bytes().all(|b| b.is_ascii_digit()));
@@ -445,10 +476,10 @@ fn momentum_hint(message: &str) -> Option<String> {
 /// is almost always a distance, which a file declares as a radical by name, with its
 /// radicand; the hint says so before the usual one. `None` for other names, or with fewer
 /// than two momenta (a distance in one coordinate is no square root).
-fn distance_hint(message: &str) -> Option<String> {
-    let (name, momenta) = unknown_name_and_momenta(message)?;
+fn distance_hint(unknown: &Unknown) -> Option<String> {
+    let Unknown { name, momenta } = unknown;
     let numbered = |rest: &str| !rest.is_empty() && rest.bytes().all(|b| b.is_ascii_digit());
-    let distance = matches!(name, "r" | "rho" | "ρ")
+    let distance = matches!(name.as_str(), "r" | "rho" | "ρ")
         || name.strip_prefix('r').is_some_and(numbered)
         || name.strip_prefix("r_").is_some_and(numbered);
     if !distance || momenta.len() < 2 {
@@ -464,8 +495,8 @@ fn distance_hint(message: &str) -> Option<String> {
 /// The hint for `unknown name 'p'` in a system with momenta: a bare `p` is almost always the
 /// momentum, whose components are named after their coordinates (`|p|²` is `p_x^2 + p_y^2`).
 /// `None` for other names, or without momenta.
-fn bare_momentum_hint(message: &str) -> Option<String> {
-    let (name, momenta) = unknown_name_and_momenta(message)?;
+fn bare_momentum_hint(unknown: &Unknown) -> Option<String> {
+    let Unknown { name, momenta } = unknown;
     if name != "p" || momenta.is_empty() {
         return None;
     }
@@ -478,28 +509,45 @@ fn bare_momentum_hint(message: &str) -> Option<String> {
     ))
 }
 
-/// The unknown name of `unknown name 'p_1' (known: q1, p_q1, …)` and the momenta among the
-/// known names (`p_…`).
-fn unknown_name_and_momenta(message: &str) -> Option<(&str, Vec<&str>)> {
-    let name = message.strip_prefix("unknown name '")?.split('\'').next()?;
-    let known = message.rsplit_once("(known: ")?.1.strip_suffix(')')?;
-    let momenta = known.split(", ").filter(|k| k.starts_with("p_")).collect();
-    Some((name, momenta))
+/// An unknown name ([`ParseCause::UnknownName`]) as its hints read it: the name as the
+/// message shows it (one past [`MAX_NAME_CHARS`] by its start and `…`, so that no hint
+/// writes out a line typed by mistake), and the momenta among the known names (`p_…`).
+struct Unknown {
+    name: String,
+    momenta: Vec<String>,
 }
 
-/// An expression error at a span of a text, classified as a limit error when it is one.
+impl Unknown {
+    /// The unknown name of `cause`, if it is one.
+    fn of(cause: &ParseCause) -> Option<Unknown> {
+        let ParseCause::UnknownName { name, known } = cause else {
+            return None;
+        };
+        let name = match name.chars().count() > MAX_NAME_CHARS {
+            true => name.chars().take(MAX_NAME_CHARS / 2).chain(['…']).collect(),
+            false => name.clone(),
+        };
+        let momenta = known.iter().filter(|k| k.starts_with("p_")).cloned();
+        Some(Unknown {
+            name,
+            momenta: momenta.collect(),
+        })
+    }
+}
+
+/// An expression error at a span of a text, classified as a limit error when it is one (by
+/// its cause, [`ParseError::cause`]).
 pub(crate) fn expression_error(source: &Source, text: &Text, e: &ParseError) -> FileError {
     let message = relocate_opener(source, text, e);
-    if is_limit_message(&message) {
-        let hint = limit_hint(&message);
+    if let Some(limit) = Limit::of_parse(e.cause()) {
         text.error(source, ErrorKind::Limit, e.span, message)
-            .with_hint(hint)
-    } else if message.starts_with("unknown name") {
-        let hint = match (momentum_hint(&message), source.program) {
+            .with_hint(limit.hint())
+    } else if let Some(unknown) = Unknown::of(e.cause()) {
+        let hint = match (momentum_hint(&unknown), source.program) {
             (Some(hint), _) => hint,
             (None, true) => UNKNOWN_NAME_HINT_IN_CODE.into(),
-            (None, false) => distance_hint(&message)
-                .or_else(|| bare_momentum_hint(&message))
+            (None, false) => distance_hint(&unknown)
+                .or_else(|| bare_momentum_hint(&unknown))
                 .unwrap_or_else(|| UNKNOWN_NAME_HINT.into()),
         };
         text.error(source, ErrorKind::Expression, e.span, message)
@@ -657,13 +705,11 @@ impl<'a> Scope<'a> {
     /// (`Z̄`, `A_x`, `G1'`, `∂H²`, as the reports print it, or its LaTeX, `\partial H`,
     /// `\nabla\varphi`, as the LaTeX output does), one that names the function to write.
     fn display_error(&self, source: &Source, text: &Text, e: &ParseError) -> FileError {
-        let misread = [
-            "unexpected character",
-            NOT_IN_NAME,
-            "unknown name",
-            "unknown LaTeX command",
-        ];
-        if !misread.iter().any(|m| e.message().starts_with(m)) {
+        // The lexer's refusals of a character are told by their words, which its errors
+        // have no other way to say.
+        let misread = ["unexpected character", NOT_IN_NAME, "unknown LaTeX command"];
+        let unknown = matches!(e.cause(), ParseCause::UnknownName { .. });
+        if !unknown && !misread.iter().any(|m| e.message().starts_with(m)) {
             return expression_error(source, text, e);
         }
         // The whole of a word (a coefficient may come before it, and a power after it): `Re A`,
@@ -1098,63 +1144,72 @@ mod tests {
     /// the hint names that most.
     #[test]
     fn an_exponent_past_every_limit_is_not_advised_to_raise_one() {
-        let raise = limit_hint("the exponent 5000 is past the limit of 1000");
+        let written = |power: Option<u64>| ParseCause::PowerPastLimit { power, limit: 1000 };
+        let limit_hint = |cause: ParseCause| Limit::of_parse(&cause).map(Limit::hint).unwrap();
+        let raise = limit_hint(written(Some(5000)));
         assert!(raise.contains("raise the limit with max_terms or max_degree"));
-        for exponent in ["32768", "99999999999999999999", "-9223372036854775808"] {
-            let hint = limit_hint(&format!(
-                "the exponent {exponent} is past the limit of 1000"
-            ));
+        // 32768, 99999999999999999999 (no 64-bit number), -9223372036854775808.
+        for power in [Some(32768), None, Some(9_223_372_036_854_775_808)] {
+            let hint = limit_hint(written(power));
             assert!(
                 hint.starts_with("no limit reaches this exponent"),
-                "{exponent}"
+                "{power:?}"
             );
             assert!(hint.contains(&MAX_DEGREE_CEILING.to_string()));
         }
-        assert_eq!(
-            limit_hint("the exponent 32767 is past the limit of 1000"),
-            raise
-        );
-        // A radical's power `p/2` is bounded by its `p`.
-        for (exponent, past) in [("99999999/2", true), ("-65535/2", true), ("32767/2", false)] {
-            let hint = limit_hint(&format!(
-                "the exponent {exponent} is past the limit of 1000"
-            ));
+        assert_eq!(limit_hint(written(Some(32767))), raise);
+        // A radical's power `p/2` is bounded by its `p`: the parser gives `p` as its size.
+        for (text, past) in [
+            ("x^(99999999/2)", true),
+            ("x^(-65535/2)", true),
+            ("x^(32767/2)", false),
+        ] {
+            let vars = trigpoly::VarSet::builder()
+                .coordinate("x")
+                .limits(trigpoly::Limits {
+                    max_degree: 1000,
+                    ..trigpoly::Limits::default()
+                })
+                .build()
+                .unwrap();
+            let e = Expr::parse(&vars, text).unwrap_err();
+            let hint = limit_hint(e.cause().clone());
             assert_eq!(
                 hint.starts_with("no limit reaches this exponent"),
                 past,
-                "{exponent}"
+                "{text}"
             );
         }
-        // The other forms of the limit errors, each past every limit or not.
-        for (message, past) in [
-            (
-                "the exponent of x would reach 40000, past the limit of 32767",
-                true,
-            ),
-            (
-                "the exponent of x would reach 2000, past the limit of 1000",
-                false,
-            ),
-            ("the multiple -32768 of θ is past the limit of 1000", true),
-            ("the multiple 2000 of θ is past the limit of 1000", false),
-            (
-                "the multiple of θ, of 1000001 bits, is past the limit of 1000",
-                true,
-            ),
-            (
-                "the trigonometric order in θ would reach 32768 (terms in cos 32768θ, sin \
-                 32768θ), past the limit of 32767",
-                true,
-            ),
-            (
-                "the trigonometric order in θ would reach 8000 (terms in cos 8000θ, sin 8000θ), \
-                 past the limit of 7999",
-                false,
-            ),
+        // The other forms of the limit errors, each past every limit or not: the exponent of
+        // x would reach 40000 (2000), past the limit of 32767 (1000); the multiple -32768
+        // (2000) of θ, or of 1000001 bits, is past the limit of 1000; the trigonometric order
+        // in θ would reach 32768 (8000), past the limit of 32767 (7999).
+        let exponent = |exponent: i64| {
+            ParseCause::Algebra(AlgebraError::ExponentTooLarge {
+                var: "x".into(),
+                exponent,
+                limit: 1000,
+            })
+        };
+        let order = |order: u64| {
+            ParseCause::Algebra(AlgebraError::OrderTooLarge {
+                angle: "θ".into(),
+                order,
+                limit: 7999,
+            })
+        };
+        for (cause, past) in [
+            (exponent(40000), true),
+            (exponent(2000), false),
+            (written(Some(32768)), true),
+            (written(Some(2000)), false),
+            (written(None), true),
+            (order(32768), true),
+            (order(8000), false),
         ] {
-            let hint = limit_hint(message);
-            assert_eq!(hint.starts_with("no limit reaches"), past, "{message}");
-            assert_eq!(hint == raise, !past, "{message}");
+            let hint = limit_hint(cause.clone());
+            assert_eq!(hint.starts_with("no limit reaches"), past, "{cause:?}");
+            assert_eq!(hint == raise, !past, "{cause:?}");
         }
     }
 
@@ -1178,8 +1233,15 @@ mod tests {
 
     #[test]
     fn a_momentum_in_a_name_of_its_own_is_shown_the_momenta() {
-        let known = "(known: q1, q2, p_q1, p_q2, H)";
-        let hint = |name: &str| momentum_hint(&format!("unknown name '{name}' {known}"));
+        let unknown = |name: &str, known: &[&str]| {
+            Unknown::of(&ParseCause::UnknownName {
+                name: name.into(),
+                known: known.iter().map(|k| k.to_string()).collect(),
+            })
+            .unwrap()
+        };
+        let known = ["q1", "q2", "p_q1", "p_q2", "H"];
+        let hint = |name: &str| momentum_hint(&unknown(name, &known));
         let shown = "the momentum of a coordinate or an angle `q` is named `p_q`: here p_q1, p_q2";
         for name in ["p_1", "p_x", "p1", "p12"] {
             assert_eq!(hint(name).as_deref(), Some(shown), "{name}");
@@ -1188,25 +1250,33 @@ mod tests {
             assert_eq!(hint(name), None, "{name}");
         }
         // No momenta to show.
-        assert_eq!(momentum_hint("unknown name 'p_1' (known: omega, H)"), None);
+        assert_eq!(momentum_hint(&unknown("p_1", &["omega", "H"])), None);
         // A bare `p` is shown the momenta and the square of the momentum.
         assert!(
-            bare_momentum_hint(&format!("unknown name 'p' {known}")).is_some_and(|h| h
-                .starts_with(
-                    "the momenta are named after their coordinates, here p_q1, p_q2 (|p|² is \
+            bare_momentum_hint(&unknown("p", &known)).is_some_and(|h| h.starts_with(
+                "the momenta are named after their coordinates, here p_q1, p_q2 (|p|² is \
                  p_q1^2 + p_q2^2); a constant"
-                ))
+            ))
         );
+        assert_eq!(bare_momentum_hint(&unknown("p", &["omega", "H"])), None);
+        assert_eq!(bare_momentum_hint(&unknown("q", &known)), None);
+        // A distance is shown with its name, and a name past MAX_NAME_CHARS as the message
+        // shows it, by its start, which is no distance.
+        assert!(distance_hint(&unknown("r12", &known)).is_some_and(|h| h.contains("r12 = √")));
+        let long = format!("r{}", "1".repeat(100));
+        assert_eq!(distance_hint(&unknown(&long, &known)), None);
+        // The cause of a real parse, whose message suggests a name before the known ones.
+        let vars = trigpoly::VarSet::builder()
+            .coordinate("q1")
+            .momentum("p_q1")
+            .build()
+            .unwrap();
+        let e = Expr::parse(&vars, "p_1").unwrap_err();
         assert_eq!(
-            bare_momentum_hint("unknown name 'p' (known: omega, H)"),
-            None
+            e.message(),
+            "unknown name 'p_1'; did you mean 'p_q1'? (known: q1, p_q1)"
         );
-        assert_eq!(
-            bare_momentum_hint(&format!("unknown name 'q' {known}")),
-            None
-        );
-        // Its own message's form with a suggestion before the known names.
-        let meant = "unknown name 'p_1'; did you mean 'p_q1'? (known: q1, p_q1)";
-        assert!(momentum_hint(meant).is_some_and(|h| h.ends_with("here p_q1")));
+        let meant = Unknown::of(e.cause()).unwrap();
+        assert!(momentum_hint(&meant).is_some_and(|h| h.ends_with("here p_q1")));
     }
 }
