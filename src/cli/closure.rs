@@ -312,10 +312,10 @@ fn close(a: &ClosureArgs, names: &[String], subject: &Subject) -> anyhow::Result
         // the limit or the degree. The algebra's own advice (`raise the limit or simplify the
         // input`) gives way to this one, which names the options.
         e if e.is_limit() => {
-            let message = e.to_string();
-            let said = message
-                .split_once("; raise the limit")
-                .map_or(&message[..], |(said, _)| said);
+            let said = match &e {
+                EngineError::Algebra(e) => e.without_advice(),
+                e => e.to_string(),
+            };
             anyhow!(
                 "computing the closure: {said}; raise the limit with --max-terms N, --max-degree \
                  D or --max-term-products N, or lower --degree (the products of the generators \

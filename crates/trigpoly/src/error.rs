@@ -75,22 +75,14 @@ pub enum AlgebraError {
         limit: u32,
     },
     /// A result with more terms than the limit allows.
-    #[error(
-        "the result would have more than {limit} term{} (the term limit); raise the limit or \
-         simplify the input",
-        if *limit == 1 { "" } else { "s" }
-    )]
+    #[error("{}; {ADVICE_SIMPLIFY}", too_many_terms(*.limit))]
     TooManyTerms {
         /// The limit in force.
         limit: usize,
     },
     /// An element whose normal form in `cos θ, sin θ` could print more terms than the limit
     /// allows (each `e^{ikθ}` prints as up to `|k| + 1` of them).
-    #[error(
-        "printed in cos and sin, the result could have up to {terms} terms (e^(ikθ) takes up \
-         to k + 1), past the limit of {limit} (the term limit); raise the limit or print less \
-         of it"
-    )]
+    #[error("{}; raise the limit or print less of it", too_many_printed(*.terms, *.limit))]
     TooManyPrintedTerms {
         /// The bound on the printed terms.
         terms: u64,
@@ -98,10 +90,7 @@ pub enum AlgebraError {
         limit: usize,
     },
     /// A product that would form more term products than the work limit allows.
-    #[error(
-        "the product of {left} terms by {right} would form {products} term products, past the \
-         limit of {limit} (the work limit); raise the limit or simplify the input"
-    )]
+    #[error("{}; {ADVICE_SIMPLIFY}", too_much_work(*.left, *.right, *.products, *.limit))]
     TooMuchWork {
         /// The terms of the two factors.
         left: usize,
@@ -249,6 +238,61 @@ pub enum AlgebraError {
     /// expressions it works on.
     #[error("{0}")]
     Misuse(Misuse),
+}
+
+impl AlgebraError {
+    /// The message without the advice a limit's ends with (`; raise the limit or simplify
+    /// the input`): what happened, for a caller that gives advice of its own (a command
+    /// line's options). The messages of the term limit, of its printing and of the work limit
+    /// end with advice; every other message is the whole message.
+    ///
+    /// ```
+    /// use trigpoly::AlgebraError;
+    ///
+    /// let e = AlgebraError::TooManyTerms { limit: 10 };
+    /// assert_eq!(e.without_advice(), "the result would have more than 10 terms (the term limit)");
+    /// assert_eq!(format!("{e}"), format!("{}; raise the limit or simplify the input", e.without_advice()));
+    /// assert_eq!(AlgebraError::DivisionByZero.without_advice(), "division by zero");
+    /// ```
+    #[must_use]
+    pub fn without_advice(&self) -> String {
+        match self {
+            AlgebraError::TooManyTerms { limit } => too_many_terms(*limit),
+            AlgebraError::TooManyPrintedTerms { terms, limit } => too_many_printed(*terms, *limit),
+            AlgebraError::TooMuchWork {
+                left,
+                right,
+                products,
+                limit,
+            } => too_much_work(*left, *right, *products, *limit),
+            e => e.to_string(),
+        }
+    }
+}
+
+/// The advice of the term and work limits' messages.
+const ADVICE_SIMPLIFY: &str = "raise the limit or simplify the input";
+
+/// What [`AlgebraError::TooManyTerms`] says, without its advice.
+fn too_many_terms(limit: usize) -> String {
+    let s = if limit == 1 { "" } else { "s" };
+    format!("the result would have more than {limit} term{s} (the term limit)")
+}
+
+/// What [`AlgebraError::TooManyPrintedTerms`] says, without its advice.
+fn too_many_printed(terms: u64, limit: usize) -> String {
+    format!(
+        "printed in cos and sin, the result could have up to {terms} terms (e^(ikθ) takes up \
+         to k + 1), past the limit of {limit} (the term limit)"
+    )
+}
+
+/// What [`AlgebraError::TooMuchWork`] says, without its advice.
+fn too_much_work(left: usize, right: usize, products: u128, limit: u64) -> String {
+    format!(
+        "the product of {left} terms by {right} would form {products} term products, past the \
+         limit of {limit} (the work limit)"
+    )
 }
 
 /// A setting of a variable set, or a count of its declarations, that has a range

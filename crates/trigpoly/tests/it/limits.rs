@@ -577,3 +577,45 @@ fn a_parse_error_keeps_its_cause() {
         &ParseCause::Algebra(AlgebraError::TooManyTerms { limit: 7 })
     );
 }
+
+/// A limit's message is what happened and then the advice; `without_advice` is the first
+/// alone, and every other message is whole.
+#[test]
+fn a_limit_says_what_happened_without_its_advice() {
+    for (e, advice) in [
+        (
+            AlgebraError::TooManyTerms { limit: 1 },
+            "raise the limit or simplify the input",
+        ),
+        (
+            AlgebraError::TooManyPrintedTerms {
+                terms: 12,
+                limit: 10,
+            },
+            "raise the limit or print less of it",
+        ),
+        (
+            AlgebraError::TooMuchWork {
+                left: 3,
+                right: 4,
+                products: 12,
+                limit: 10,
+            },
+            "raise the limit or simplify the input",
+        ),
+    ] {
+        let said = e.without_advice();
+        assert_eq!(e.to_string(), format!("{said}; {advice}"));
+        assert!(said.ends_with(" limit)"), "{said}");
+    }
+    assert_eq!(
+        AlgebraError::TooManyTerms { limit: 1 }.without_advice(),
+        "the result would have more than 1 term (the term limit)"
+    );
+    let exponent = AlgebraError::ExponentTooLarge {
+        var: "x".into(),
+        exponent: 2000,
+        limit: 1000,
+    };
+    assert_eq!(exponent.without_advice(), exponent.to_string());
+}
