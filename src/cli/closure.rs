@@ -161,7 +161,7 @@ fn close(a: &ClosureArgs, names: &[String], subject: &Subject) -> anyhow::Result
             ));
         }
         let e = subject
-            .listed("--define", d, value_span.clone())
+            .listed_error("--define", d, value_span.clone())
             .map_err(|e| {
                 // A name that --define gives is no name of the system: say so, not how to
                 // declare one in the file.
@@ -169,10 +169,7 @@ fn close(a: &ClosureArgs, names: &[String], subject: &Subject) -> anyhow::Result
                     .define
                     .iter()
                     .filter_map(|d| d.split_once('='))
-                    .find(|(n, _)| {
-                        e.to_string()
-                            .contains(&format!("unknown name '{}'", n.trim()))
-                    });
+                    .find(|(n, _)| e.unknown_name().is_some_and(|u| u == n.trim()));
                 // The caret under the name where the value first uses it.
                 let at = |n: &str| {
                     let value = &d[value_span.clone()];
@@ -193,7 +190,7 @@ fn close(a: &ClosureArgs, names: &[String], subject: &Subject) -> anyhow::Result
                             v.trim()
                         ),
                     ),
-                    None => e,
+                    None => anyhow!(e.to_string()),
                 }
             })?;
         defined.push((name.to_string(), e));

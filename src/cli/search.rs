@@ -447,8 +447,20 @@ impl Subject {
         text: &str,
         span: std::ops::Range<usize>,
     ) -> anyhow::Result<Expr> {
+        self.listed_error(option, text, span)
+            .map_err(|e| anyhow!(e.to_string()))
+    }
+
+    /// [`Subject::listed`], its error as the `FileError` it is rendered from, which keeps what
+    /// kind of error its parse met ([`FileError::cause`]).
+    pub fn listed_error(
+        &self,
+        option: &str,
+        text: &str,
+        span: std::ops::Range<usize>,
+    ) -> Result<Expr, FileError> {
         self.parse_placed(text, &text[span.clone()], span.start)
-            .map_err(|e| named(option, e))
+            .map_err(|e| with_option(option, e))
     }
 
     /// [`Subject::parse_in`], its error as the command line's text's error.
@@ -471,6 +483,7 @@ impl Subject {
                     Expr::parse_noting(s.vars(), &placed, s.as_ref()).map_err(|e| {
                         let span = shift + e.span.start..shift + e.span.end;
                         FileError::at(ErrorKind::Expression, COMMAND_LINE, text, span, e.message())
+                            .with_cause(e.cause())
                     })?;
                 for r in &readings {
                     let w = Warning::run_together(
@@ -540,9 +553,14 @@ pub(super) fn list_refused(option: &str, text: &str, refusal: ListRefusal) -> an
 
 /// An error placed in the text given to `option`, with the option named before its message:
 /// `<command line>:1:C: --known: unknown name 'zz'`.
-fn named(option: &str, mut error: FileError) -> anyhow::Error {
+fn named(option: &str, error: FileError) -> anyhow::Error {
+    anyhow!(with_option(option, error).to_string())
+}
+
+/// The error with `option` named before its message.
+fn with_option(option: &str, mut error: FileError) -> FileError {
     error.message = format!("{option}: {}", error.message);
-    anyhow!(error.to_string())
+    error
 }
 
 /// Searches and prints, on a pool of `--threads` threads if asked.

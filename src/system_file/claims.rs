@@ -823,11 +823,7 @@ impl AssignmentReader<'_> {
                     .into(),
             );
         }
-        if self.takes_pi()
-            && ["unknown name 'pi'", "unknown name 'π'"]
-                .iter()
-                .any(|m| e.message.starts_with(m))
-        {
+        if self.takes_pi() && e.unknown_name().is_some_and(|n| n == "pi" || n == "π") {
             e.hint = Some(
                 "a value may be a multiple of π alone (theta = 3*pi/4, phi = -pi/2), \
                  not a part of an expression"

@@ -102,13 +102,19 @@ pub struct FileError {
     /// What to do about it.
     pub hint: Option<String>,
     /// The id of the claim whose check this is, for a claim that stopped at a limit (its
-    /// location is the claim's text in the file).
-    pub claim: Option<String>,
+    /// location is the claim's text in the file). A boxed `str`, to keep the error small.
+    pub claim: Option<Box<str>>,
     /// For a file that failed to load, what its texts read in doubt before the error, where
     /// there is any ([`LoadedSystem::warnings`](super::LoadedSystem::warnings), which the
     /// loaded file would have kept), in the order read; not part of the message. Boxed, as the
     /// location is, to keep the error small.
     pub warnings: Option<Box<Vec<Warning>>>,
+    /// For an expression that did not read, what kind of error its parse met, as
+    /// [`ParseError::cause`](trigpoly::ParseError::cause) says it (an unknown name with the
+    /// known names, a limit, a refusal of the algebra), so that a caller tells them apart
+    /// without reading the message; `None` for a mistake of syntax and for every other error.
+    /// Not part of the message. Boxed, to keep the error small.
+    pub cause: Option<Box<trigpoly::ParseCause>>,
 }
 
 impl FileError {
@@ -122,6 +128,7 @@ impl FileError {
             hint: None,
             claim: None,
             warnings: None,
+            cause: None,
         }
     }
 
@@ -147,10 +154,29 @@ impl FileError {
         self
     }
 
+    /// The same error, of an expression whose parse met `cause` ([`FileError::cause`]).
+    #[must_use]
+    pub fn with_cause(mut self, cause: &trigpoly::ParseCause) -> Self {
+        self.cause = match cause {
+            trigpoly::ParseCause::Syntax => None,
+            cause => Some(Box::new(cause.clone())),
+        };
+        self
+    }
+
+    /// The unknown name an expression's error is about ([`FileError::cause`]), if it is one,
+    /// as its message shows it: whole, or one past 80 characters by its start and `…`.
+    pub fn unknown_name(&self) -> Option<String> {
+        match self.cause.as_deref() {
+            Some(trigpoly::ParseCause::UnknownName { name, .. }) => Some(shown_name(name)),
+            _ => None,
+        }
+    }
+
     /// The same error, as that of the claim `id`'s check.
     #[must_use]
     pub fn of_claim(mut self, id: impl Into<String>) -> Self {
-        self.claim = Some(id.into());
+        self.claim = Some(id.into().into_boxed_str());
         self
     }
 
@@ -387,6 +413,22 @@ impl From<trigpoly::ParseError> for FileError {
             location: e.excerpt().map(|x| Box::new(Location::from(x.clone()))),
             ..FileError::new(ErrorKind::Expression, "<expression>", e.message())
         }
+        .with_cause(e.cause())
+    }
+}
+
+/// A name as an error's message shows it ([`trigpoly::quoted_name`]): whole, or one past
+/// [`MAX_NAME_CHARS`](trigpoly::MAX_NAME_CHARS) characters by its start and `…`, so that what
+/// is said of it (a hint) names it as the message does and writes out no line typed by
+/// mistake.
+pub(crate) fn shown_name(name: &str) -> String {
+    match name.chars().count() > trigpoly::MAX_NAME_CHARS {
+        true => name
+            .chars()
+            .take(trigpoly::MAX_NAME_CHARS / 2)
+            .chain(['…'])
+            .collect(),
+        false => name.to_string(),
     }
 }
 
@@ -414,6 +456,42 @@ pub(crate) fn locate_bytes(bytes: &[u8], offset: usize) -> Location {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// An expression's error keeps its parse error's cause: an unknown name says the name,
+    /// one past 80 characters by its start as the message shows it; a syntax error has none.
+    #[test]
+    fn an_expression_error_keeps_its_cause() {
+        let vars = trigpoly::VarSet::builder()
+            .coordinate("x")
+            .momentum("p_x")
+            .build()
+            .unwrap();
+        let error = |text: &str| FileError::from(trigpoly::Expr::parse(&vars, text).unwrap_err());
+        let unknown = error("x + q");
+        assert_eq!(unknown.unknown_name().as_deref(), Some("q"));
+        let Some(trigpoly::ParseCause::UnknownName { name, known }) = unknown.cause.as_deref()
+        else {
+            panic!("{unknown:?}")
+        };
+        assert_eq!(
+            (name.as_str(), known.as_slice()),
+            ("q", &["x".to_string(), "p_x".into()][..])
+        );
+        let long = "q".repeat(81);
+        let shown = error(&long).unknown_name().unwrap();
+        assert_eq!(shown, format!("{}…", "q".repeat(40)));
+        assert!(error(&long)
+            .message
+            .starts_with(&format!("unknown name '{shown}'")));
+        assert_eq!(error("x + (").cause, None);
+        assert!(matches!(
+            error("x^5000").cause.as_deref(),
+            Some(trigpoly::ParseCause::PowerPastLimit {
+                power: Some(5000),
+                ..
+            })
+        ));
+    }
 
     #[test]
     fn error_renders_with_file_line_column_and_caret() {

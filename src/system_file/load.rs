@@ -1581,14 +1581,6 @@ impl<'a> Builder<'a> {
     }
 }
 
-/// The name an "unknown name" error is about.
-fn unknown_name(e: &FileError) -> Option<String> {
-    e.message
-        .strip_prefix("unknown name '")
-        .and_then(|rest| rest.split('\'').next())
-        .map(str::to_string)
-}
-
 /// An unknown name that is one of the functions `later` (declared further down the file) gets
 /// the hint `hint(name)`.
 fn later_function(
@@ -1596,7 +1588,10 @@ fn later_function(
     later: &[Spanned<FunctionModel>],
     hint: impl Fn(&str) -> String,
 ) -> FileError {
-    match unknown_name(&e).filter(|n| later.iter().any(|f| f.get_ref().name.get_ref() == n)) {
+    match e
+        .unknown_name()
+        .filter(|n| later.iter().any(|f| f.get_ref().name.get_ref() == n))
+    {
         Some(name) => e.with_hint(hint(&name)),
         None => e,
     }
@@ -1610,7 +1605,7 @@ fn later_family(
     later: &[Spanned<FamilyModel>],
     hint: impl Fn(&str, &str) -> String,
 ) -> FileError {
-    let name = unknown_name(&e);
+    let name = e.unknown_name();
     let family = name.as_deref().and_then(|n| {
         later.iter().map(|f| f.get_ref().name.get_ref()).find(|f| {
             n.strip_prefix(f.as_str())

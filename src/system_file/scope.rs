@@ -15,9 +15,7 @@ use num_bigint::BigInt;
 use trigpoly::syntax::{
     is_name_continue, is_name_start, Expr as Tree, ExprKind, ParseError, NOT_IN_NAME,
 };
-use trigpoly::{
-    AlgebraError, Context, Expr, GaussianRational, ParseCause, Span, VarKind, MAX_NAME_CHARS,
-};
+use trigpoly::{AlgebraError, Context, Expr, GaussianRational, ParseCause, Span, VarKind};
 
 use super::error::{ErrorKind, FileError, Warning};
 use super::load::MAX_DEGREE_CEILING;
@@ -510,8 +508,8 @@ fn bare_momentum_hint(unknown: &Unknown) -> Option<String> {
 }
 
 /// An unknown name ([`ParseCause::UnknownName`]) as its hints read it: the name as the
-/// message shows it (one past [`MAX_NAME_CHARS`] by its start and `…`, so that no hint
-/// writes out a line typed by mistake), and the momenta among the known names (`p_…`).
+/// message shows it ([`shown_name`](super::error::shown_name): one past 80 characters by its
+/// start), and the momenta among the known names (`p_…`).
 struct Unknown {
     name: String,
     momenta: Vec<String>,
@@ -523,10 +521,7 @@ impl Unknown {
         let ParseCause::UnknownName { name, known } = cause else {
             return None;
         };
-        let name = match name.chars().count() > MAX_NAME_CHARS {
-            true => name.chars().take(MAX_NAME_CHARS / 2).chain(['…']).collect(),
-            false => name.clone(),
-        };
+        let name = super::error::shown_name(name);
         let momenta = known.iter().filter(|k| k.starts_with("p_")).cloned();
         Some(Unknown {
             name,
@@ -539,9 +534,12 @@ impl Unknown {
 /// its cause, [`ParseError::cause`]).
 pub(crate) fn expression_error(source: &Source, text: &Text, e: &ParseError) -> FileError {
     let message = relocate_opener(source, text, e);
+    let error = |kind| {
+        text.error(source, kind, e.span, message)
+            .with_cause(e.cause())
+    };
     if let Some(limit) = Limit::of_parse(e.cause()) {
-        text.error(source, ErrorKind::Limit, e.span, message)
-            .with_hint(limit.hint())
+        error(ErrorKind::Limit).with_hint(limit.hint())
     } else if let Some(unknown) = Unknown::of(e.cause()) {
         let hint = match (momentum_hint(&unknown), source.program) {
             (Some(hint), _) => hint,
@@ -550,10 +548,9 @@ pub(crate) fn expression_error(source: &Source, text: &Text, e: &ParseError) -> 
                 .or_else(|| bare_momentum_hint(&unknown))
                 .unwrap_or_else(|| UNKNOWN_NAME_HINT.into()),
         };
-        text.error(source, ErrorKind::Expression, e.span, message)
-            .with_hint(hint)
+        error(ErrorKind::Expression).with_hint(hint)
     } else {
-        text.error(source, ErrorKind::Expression, e.span, message)
+        error(ErrorKind::Expression)
     }
 }
 
