@@ -10,7 +10,7 @@ use brackets::{
 };
 use toml::Spanned;
 use trigpoly::syntax::{Expr as Tree, ExprKind};
-use trigpoly::{AlgebraError, Expr, Span, VarKind};
+use trigpoly::{AlgebraError, Expr, ParseCause, Span, VarKind};
 
 use super::error::{ErrorKind, FileError};
 use super::model::{ClaimModel, When};
@@ -816,7 +816,7 @@ impl AssignmentReader<'_> {
     /// An error in a right side read as an expression, with the hint that a number the form
     /// takes alone (a decimal, a multiple of π) is not a part of an expression.
     fn hinted(&self, mut e: FileError) -> FileError {
-        if self.form.decimals && e.message.starts_with("decimal numbers") {
+        if self.form.decimals && matches!(e.cause.as_deref(), Some(ParseCause::Decimal)) {
             e.hint = Some(
                 "a value alone may be a decimal number (x = 0.5); in an expression, \
                  write fractions (x = 2/3 + 1/2)"

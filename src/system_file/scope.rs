@@ -12,9 +12,7 @@ use std::collections::HashMap;
 use brackets::EngineError;
 
 use num_bigint::BigInt;
-use trigpoly::syntax::{
-    is_name_continue, is_name_start, Expr as Tree, ExprKind, ParseError, NOT_IN_NAME,
-};
+use trigpoly::syntax::{is_name_continue, is_name_start, Expr as Tree, ExprKind, ParseError};
 use trigpoly::{AlgebraError, Context, Expr, GaussianRational, ParseCause, Span, VarKind};
 
 use super::error::{ErrorKind, FileError, Warning};
@@ -702,11 +700,10 @@ impl<'a> Scope<'a> {
     /// (`Z̄`, `A_x`, `G1'`, `∂H²`, as the reports print it, or its LaTeX, `\partial H`,
     /// `\nabla\varphi`, as the LaTeX output does), one that names the function to write.
     fn display_error(&self, source: &Source, text: &Text, e: &ParseError) -> FileError {
-        // The lexer's refusals of a character are told by their words, which its errors
-        // have no other way to say.
-        let misread = ["unexpected character", NOT_IN_NAME, "unknown LaTeX command"];
-        let unknown = matches!(e.cause(), ParseCause::UnknownName { .. });
-        if !unknown && !misread.iter().any(|m| e.message().starts_with(m)) {
+        if !matches!(
+            e.cause(),
+            ParseCause::UnknownName { .. } | ParseCause::Unreadable
+        ) {
             return expression_error(source, text, e);
         }
         // The whole of a word (a coefficient may come before it, and a power after it): `Re A`,

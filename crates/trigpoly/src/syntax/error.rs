@@ -83,6 +83,13 @@ pub struct ParseError {
 pub enum ParseCause {
     /// The text does not read, or reads as nothing the ring has: what the message says.
     Syntax,
+    /// Text that no token is made of where it stands, as a name printed otherwise than it is
+    /// written may be (`Z̄`, `G1'`, `\nabla\varphi`): a character no token begins with, a
+    /// LaTeX command the reader does not know, or what is no part of a name in a name's
+    /// braces (`p_{x$}`).
+    Unreadable,
+    /// A decimal number (`0.5`), which is not exact: the message names the fraction it writes.
+    Decimal,
     /// A name that is neither declared nor defined by the context.
     UnknownName {
         /// The name, as written.

@@ -11,7 +11,7 @@
 //! of `Zbar`) is told by the system's names, where its LaTeX spells it
 //! ([`latex_name`] of the LaTeX it prints).
 
-use super::error::{ParseError, Span};
+use super::error::{ParseCause, ParseError, Span};
 use super::lexer::{superscript_digit, Lexer, Tok};
 use super::parser::{too_deep, MAX_DEPTH};
 use crate::varset::{letter_of_char, letter_of_command};
@@ -258,6 +258,7 @@ impl Lexer<'_> {
                  and spacing"
             ),
         )
+        .with_cause(ParseCause::Unreadable)
     }
 
     /// The error for `\word{}` with nothing in its braces.
@@ -433,5 +434,6 @@ impl Lexer<'_> {
             &format!("{NOT_IN_NAME} opened at "),
             &format!(", found '{found}'"),
         )
+        .with_cause(ParseCause::Unreadable)
     }
 }

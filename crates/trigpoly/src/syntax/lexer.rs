@@ -8,7 +8,7 @@
 
 use num_bigint::BigInt;
 
-use super::error::{ParseError, Span};
+use super::error::{ParseCause, ParseError, Span};
 use crate::varset::letter_of_char;
 
 /// The kind of a token, with its value for literals, names and superscripts.
@@ -212,10 +212,10 @@ impl<'a> Lexer<'a> {
                     }
                     _ => "",
                 };
-                return Err(ParseError::new(
-                    span,
-                    format!("unexpected character {c:?}{hint}"),
-                ));
+                return Err(
+                    ParseError::new(span, format!("unexpected character {c:?}{hint}"))
+                        .with_cause(ParseCause::Unreadable),
+                );
             }
         };
         Ok(Token {
@@ -260,7 +260,7 @@ impl<'a> Lexer<'a> {
             }
             None => "decimal numbers are not exact; write a fraction such as 3/2".to_string(),
         };
-        ParseError::new(Span::new(start, self.pos), message)
+        ParseError::new(Span::new(start, self.pos), message).with_cause(ParseCause::Decimal)
     }
 }
 

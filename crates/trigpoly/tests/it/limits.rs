@@ -560,6 +560,13 @@ fn a_parse_error_keeps_its_cause() {
     assert_eq!(known, &["x", "y", "z", "t", "u", "v", "w"]);
     let err = Poly::<Rational>::parse(&vars, "x + (y").unwrap_err();
     assert_eq!(err.cause(), &ParseCause::Syntax);
+    // What no token is made of, and a decimal number.
+    for text in ["x $ y", "\\nabla x", "p_{x$}"] {
+        let err = Poly::<Rational>::parse(&vars, text).unwrap_err();
+        assert_eq!(err.cause(), &ParseCause::Unreadable, "{text}: {err}");
+    }
+    let err = Poly::<Rational>::parse(&vars, "0.5*x").unwrap_err();
+    assert_eq!(err.cause(), &ParseCause::Decimal);
 
     /// A context whose bracket passes the term limit.
     struct Limited;
