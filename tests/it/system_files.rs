@@ -5415,3 +5415,27 @@ fn a_claims_echo_sets_a_sine_or_cosine_apart_from_a_factor_after_it() {
         assert!(out.contains(&format!("= {expanded}")), "{echo}: {out}");
     }
 }
+
+/// A claim whose sine or cosine passes the term limit as it is expanded is undecided at the
+/// limit, with the hint to raise it, as one whose power passes it is: the expansion's refusal
+/// lost its cause, so that the file was refused as a mistake of its expression, with no hint.
+#[test]
+fn a_sine_past_the_term_limit_is_a_limit_with_its_hint() {
+    let dir = scratch("sine-past-the-term-limit");
+    std::fs::write(
+        dir.join("rotor.toml"),
+        "name = \"rotor\"\nhamiltonian = \"p_theta^2\"\n[phase_space]\nangles = [\"theta\"]\n\
+         [limits]\nmax_terms = 1\n[[claim]]\nid = \"cos\"\nclaim = \"cos(theta) = cos(theta)\"\n",
+    )
+    .expect("write");
+    let o = superint_in(&dir, &["check", "rotor.toml", "--no-timings"]);
+    let (stdout, stderr) = (text(&o.stdout), text(&o.stderr));
+    assert_eq!(o.status.code(), Some(2), "{stderr}");
+    assert!(stdout.contains("[cos UNDECIDED]"), "{stdout}{stderr}");
+    assert!(
+        stderr.contains("rotor.toml:9:14: the result would have more than 1 term (the term limit)")
+            && stderr
+                .contains("hint: if the machine has the memory, raise the limit with max_terms"),
+        "{stderr}"
+    );
+}

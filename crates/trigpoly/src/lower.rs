@@ -822,7 +822,9 @@ impl<C: Coefficient> Lower<'_, C> {
             _ => {}
         }
         let multiples = self.angle_multiples(arg, fun)?;
-        let wrap = |e: AlgebraError| ParseError::new(arg.span, e.to_string());
+        // A refusal of the algebra keeps its cause, a limit a limit (`cos θ` past a term
+        // limit of 1).
+        let wrap = |e: AlgebraError| at(arg.span)(e);
         // e^{±i Σ n_j θ_j}
         let exp_i = |sign: i64| -> Result<Poly<C>, ParseError> {
             let mut acc = Poly::one(self.vars);

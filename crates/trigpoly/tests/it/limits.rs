@@ -552,6 +552,23 @@ fn a_parse_error_keeps_its_cause() {
             limit: 1000
         }
     );
+    // The expansion of a sine or cosine, `(e^{iθ} + e^{−iθ})/2`, past the term limit.
+    let one_term = VarSet::builder()
+        .angle("theta")
+        .limits(Limits {
+            max_terms: 1,
+            ..Limits::default()
+        })
+        .build()
+        .unwrap();
+    for text in ["cos(theta)", "sin(theta)"] {
+        let err = Poly::<trigpoly::GaussianRational>::parse(&one_term, text).unwrap_err();
+        assert_eq!(
+            err.cause(),
+            &ParseCause::Algebra(AlgebraError::TooManyTerms { limit: 1 }),
+            "{text}"
+        );
+    }
     let err = Poly::<Rational>::parse(&vars, "x + q").unwrap_err();
     let ParseCause::UnknownName { name, known } = err.cause() else {
         panic!("{err:?}")
