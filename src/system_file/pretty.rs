@@ -285,7 +285,7 @@ impl LoadedSystem {
         // `(cos θ) x` and `(x sin θ) p_θ`, not `cos θ x`, which reads as the cosine of `θx`,
         // as `(x sin θ)/2` is written for `x sin θ/2`; a sine or cosine after it needs none
         // (`sin θ cos θ`).
-        let trig_before = ends_in_bare_trig(a) && !begins_with_trig(b);
+        let trig_before = sets_trig_apart(a, b);
         let a = self.print(a);
         let a = match trig_before {
             true => Printed {
@@ -527,12 +527,24 @@ fn ends_in_bare_trig(tree: &Tree) -> bool {
     }
 }
 
-/// Whether `tree` is printed beginning with a sine or cosine (`cos θ`, `sin²θ x`), which reads
-/// as a factor of its own after another one.
+/// Whether `tree` is printed beginning with a sine or cosine (`cos θ`, `sin²θ`, `sin θ cos θ`),
+/// which reads as a factor of its own after another one. A power of a product is printed in
+/// parentheses, `(x sin θ)²`, and so is a product whose sine or cosine [`print_product`]
+/// sets apart from a factor after it, `(sin θ) x`: neither begins with a sine.
+///
+/// [`print_product`]: LoadedSystem::print_product
 fn begins_with_trig(tree: &Tree) -> bool {
     match &tree.kind {
         ExprKind::Call(f, _, _) => matches!(f.as_str(), "cos" | "sin"),
-        ExprKind::Pow(a, _) | ExprKind::Mul(a, _) => !tree.in_parentheses() && begins_with_trig(a),
+        ExprKind::Pow(a, _) => matches!(a.kind, ExprKind::Call(..)) && begins_with_trig(a),
+        ExprKind::Mul(a, b) => begins_with_trig(a) && !sets_trig_apart(a, b),
         _ => false,
     }
+}
+
+/// Whether the product `a b` is printed with `a` in parentheses, as a sine or cosine of a bare
+/// angle at its end is set apart from a factor after it that does not begin with one: `(cos θ)
+/// x`, not `cos θ x`, which reads as the cosine of `θx`.
+fn sets_trig_apart(a: &Tree, b: &Tree) -> bool {
+    ends_in_bare_trig(a) && !begins_with_trig(b)
 }

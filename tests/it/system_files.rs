@@ -5377,6 +5377,10 @@ claim = "cos(theta)^2*x*p_x = x*p_x*cos(theta)^2"
 [[claim]]
 id = "both"
 claim = "sin(theta)*cos(theta) = sin(2*theta)/2"
+
+[[claim]]
+id = "nested"
+claim = "cos(theta)*(sin(theta)*x) = x*sin(theta)*cos(theta)"
 "#;
 
 /// A claim's echo sets a sine or cosine of a bare angle apart from a factor after it,
@@ -5396,6 +5400,8 @@ fn a_claims_echo_sets_a_sine_or_cosine_apart_from_a_factor_after_it() {
         "(cos θ) x = x cos θ",
         "(cos²θ) x p_x = x p_x cos²θ",
         "sin θ cos θ = sin(2θ)/2",
+        // The factor after it begins with a sine set apart, not with the sine.
+        "(cos θ) (sin θ) x = x sin θ cos θ",
     ] {
         assert!(out.contains(piece), "{piece}: {out}");
     }
@@ -5403,11 +5409,13 @@ fn a_claims_echo_sets_a_sine_or_cosine_apart_from_a_factor_after_it() {
     let latex = text(&o.stdout);
     assert!(latex.contains(r"(\cos\theta) x &= x \cos\theta"), "{latex}");
     assert!(!latex.contains(r"\cos\theta x"), "{latex}");
+    assert!(!latex.contains(r"\cos\theta (\sin"), "{latex}");
     // The echo reads back: each left side expands as its right side does.
     for (echo, expanded) in [
         ("(−sin θ) p_θ/I", "−(p_θ sin θ)/I"),
         ("(cos θ) x", "x cos θ"),
         ("(cos²θ) x p_x", "x p_x cos²θ"),
+        ("(cos θ) (sin θ) x", "x cos θ sin θ"),
     ] {
         let o = superint_in(&dir, &["expand", "rotor.toml", "--", echo]);
         let out = text(&o.stdout);
