@@ -151,8 +151,10 @@ impl ParseError {
     }
 
     /// What kind of error it is: an unknown name, a refusal of the algebra (a limit among
-    /// them), a power past the degree limit, or else [`ParseCause::Syntax`]. It is set where
-    /// the error is made, and kept by the methods that change its message or its source.
+    /// them), a power past the degree limit, text no token is made of
+    /// ([`ParseCause::Unreadable`]), a decimal number ([`ParseCause::Decimal`]), or else
+    /// [`ParseCause::Syntax`]. It is set where the error is made, and kept by the methods that
+    /// change its message or its source.
     #[must_use]
     pub fn cause(&self) -> &ParseCause {
         self.cause.as_deref().unwrap_or(&SYNTAX)
