@@ -5384,10 +5384,11 @@ claim = "cos(theta)*(sin(theta)*x) = x*sin(theta)*cos(theta)"
 "#;
 
 /// A claim's echo sets a sine or cosine of a bare angle apart from a factor after it,
-/// `(cos θ) x`, `−(sin θ) p_θ/I` as `(x sin θ)/2` is set apart from a denominator, because it
+/// `(cos θ) x`, `(−sin θ) p_θ/I` as `(x sin θ)/2` is set apart from a denominator, because it
 /// echoed `cos θ x` and `−sin θ p_θ/I`, which read as the cosine of `θx` and the sine of
 /// `θ p_θ` (LaTeX `\cos\theta x`); a sine or cosine after it needs no parentheses
-/// (`sin θ cos θ`). What it prints reads back to the same value.
+/// (`sin θ cos θ`), but a factor that begins with one set apart does (`(cos θ) (sin θ) x`).
+/// What it prints reads back to the same value.
 #[test]
 fn a_claims_echo_sets_a_sine_or_cosine_apart_from_a_factor_after_it() {
     let dir = scratch("trig-before-factor");
