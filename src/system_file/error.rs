@@ -165,10 +165,13 @@ impl FileError {
     }
 
     /// The unknown name an expression's error is about ([`FileError::cause`]), if it is one,
-    /// as its message shows it: whole, or one past 80 characters by its start and `…`.
+    /// as its message shows it ([`trigpoly::shown_name`]): whole, or one past 80 characters by
+    /// its start and `…`.
     pub fn unknown_name(&self) -> Option<String> {
         match self.cause.as_deref() {
-            Some(trigpoly::ParseCause::UnknownName { name, .. }) => Some(shown_name(name)),
+            Some(trigpoly::ParseCause::UnknownName { name, .. }) => {
+                Some(trigpoly::shown_name(name))
+            }
             _ => None,
         }
     }
@@ -414,21 +417,6 @@ impl From<trigpoly::ParseError> for FileError {
             ..FileError::new(ErrorKind::Expression, "<expression>", e.message())
         }
         .with_cause(e.cause())
-    }
-}
-
-/// A name as an error's message shows it ([`trigpoly::quoted_name`]): whole, or one past
-/// [`MAX_NAME_CHARS`](trigpoly::MAX_NAME_CHARS) characters by its start and `…`, so that what
-/// is said of it (a hint) names it as the message does and writes out no line typed by
-/// mistake.
-pub(crate) fn shown_name(name: &str) -> String {
-    match name.chars().count() > trigpoly::MAX_NAME_CHARS {
-        true => name
-            .chars()
-            .take(trigpoly::MAX_NAME_CHARS / 2)
-            .chain(['…'])
-            .collect(),
-        false => name.to_string(),
     }
 }
 

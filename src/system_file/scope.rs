@@ -506,8 +506,8 @@ fn bare_momentum_hint(unknown: &Unknown) -> Option<String> {
 }
 
 /// An unknown name ([`ParseCause::UnknownName`]) as its hints read it: the name as the
-/// message shows it ([`shown_name`](super::error::shown_name): one past 80 characters by its
-/// start), and the momenta among the known names (`p_…`).
+/// message shows it ([`trigpoly::shown_name`]: one past 80 characters by its start), and the
+/// momenta among the known names (`p_…`).
 struct Unknown {
     name: String,
     momenta: Vec<String>,
@@ -519,7 +519,7 @@ impl Unknown {
         let ParseCause::UnknownName { name, known } = cause else {
             return None;
         };
-        let name = super::error::shown_name(name);
+        let name = trigpoly::shown_name(name);
         let momenta = known.iter().filter(|k| k.starts_with("p_")).cloned();
         Some(Unknown {
             name,

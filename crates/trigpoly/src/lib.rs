@@ -60,7 +60,7 @@ pub use num_bigint;
 pub use num_rational;
 
 pub use error::{AlgebraError, AngleUse, Misuse, Setting};
-pub use lower::{did_you_mean, did_you_mean_hint, quoted_name, split_names, FUNCTIONS};
+pub use lower::{did_you_mean, did_you_mean_hint, quoted_name, shown_name, split_names, FUNCTIONS};
 pub use lower::{BracketError, Context, Doubt, NoContext, RunTogether};
 pub use number::{
     Coefficient, ExactDivisor, GaussianAcc, GaussianInteger, GaussianRational, Integer, IntegerAcc,

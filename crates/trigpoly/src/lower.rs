@@ -1116,7 +1116,22 @@ fn integral(
 pub fn quoted_name(name: &str) -> String {
     match long_name(name) {
         None => format!("'{name}'"),
-        Some((start, n)) => format!("'{start}…', {n} characters long"),
+        Some((_, n)) => format!("'{}', {n} characters long", shown_name(name)),
+    }
+}
+
+/// A name as [`quoted_name`] shows it between its quotes: whole, or when it is long its first
+/// characters and `…`, so that what is said of it beside a message (a hint) names it as the
+/// message does.
+///
+/// ```
+/// assert_eq!(trigpoly::shown_name("p_x"), "p_x");
+/// assert_eq!(trigpoly::shown_name(&"q".repeat(81)), format!("{}…", "q".repeat(40)));
+/// ```
+pub fn shown_name(name: &str) -> String {
+    match long_name(name) {
+        None => name.to_string(),
+        Some((start, _)) => format!("{start}…"),
     }
 }
 
