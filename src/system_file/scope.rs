@@ -13,7 +13,9 @@ use brackets::EngineError;
 
 use num_bigint::BigInt;
 use trigpoly::syntax::{is_name_continue, is_name_start, Expr as Tree, ExprKind, ParseError};
-use trigpoly::{AlgebraError, Context, Expr, GaussianRational, ParseCause, Span, VarKind};
+use trigpoly::{
+    AlgebraError, Context, Expr, GaussianRational, LimitKind, ParseCause, Span, VarKind,
+};
 
 use super::error::{ErrorKind, FileError, Warning};
 use super::load::MAX_DEGREE_CEILING;
@@ -372,17 +374,13 @@ impl Limit {
     /// result or of its printing), the work limit, or the degree limit (an exponent, an
     /// angle's order), past every limit when its number is.
     fn of_algebra(e: &AlgebraError) -> Option<Limit> {
-        match e {
-            AlgebraError::TooMuchWork { .. } => Some(Limit::Work),
-            AlgebraError::TooManyTerms { .. } | AlgebraError::TooManyPrintedTerms { .. } => {
-                Some(Limit::Size)
-            }
-            AlgebraError::ExponentTooLarge { exponent, .. } => {
-                Some(Limit::of_degree(Some(exponent.unsigned_abs())))
-            }
-            AlgebraError::OrderTooLarge { order, .. } => Some(Limit::of_degree(Some(*order))),
-            _ => None,
-        }
+        Some(match e.limit()? {
+            LimitKind::Work => Limit::Work,
+            LimitKind::Terms => Limit::Size,
+            LimitKind::Degree(n) => Limit::of_degree(Some(n)),
+            // A kind of limit this crate does not know yet: one that a larger limit may reach.
+            _ => Limit::Size,
+        })
     }
 
     /// The limit that stopped the engine with `e`, if a limit did

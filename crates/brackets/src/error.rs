@@ -125,17 +125,11 @@ impl EngineError {
     /// ([`AlgebraError::CoefficientTooLarge`]) and the ranges of a set's settings
     /// ([`AlgebraError::SettingOutOfRange`]) are not limits here: no limit raises them.
     pub fn is_limit(&self) -> bool {
-        matches!(
-            self,
-            EngineError::ClosureTooManyTerms { .. }
-                | EngineError::Algebra(
-                    AlgebraError::TooManyTerms { .. }
-                        | AlgebraError::TooManyPrintedTerms { .. }
-                        | AlgebraError::TooMuchWork { .. }
-                        | AlgebraError::ExponentTooLarge { .. }
-                        | AlgebraError::OrderTooLarge { .. }
-                )
-        )
+        match self {
+            EngineError::ClosureTooManyTerms { .. } => true,
+            EngineError::Algebra(e) => e.limit().is_some(),
+            _ => false,
+        }
     }
 
     /// A parse error of a text that nobody typed (a built-in system's Hamiltonian or function)

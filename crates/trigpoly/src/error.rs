@@ -241,6 +241,34 @@ pub enum AlgebraError {
 }
 
 impl AlgebraError {
+    /// The limit this error passed, if a limit stopped the computation: the input may be
+    /// right, and a larger limit may decide it. The fixed bound on the coefficients
+    /// ([`AlgebraError::CoefficientTooLarge`]) and the ranges of a set's settings
+    /// ([`AlgebraError::SettingOutOfRange`]) are no limits here: no limit raises them.
+    ///
+    /// ```
+    /// use trigpoly::{AlgebraError, LimitKind};
+    ///
+    /// assert_eq!(AlgebraError::TooManyTerms { limit: 10 }.limit(), Some(LimitKind::Terms));
+    /// let e = AlgebraError::ExponentTooLarge { var: "x".into(), exponent: -5000, limit: 1000 };
+    /// assert_eq!(e.limit(), Some(LimitKind::Degree(5000)));
+    /// assert_eq!(AlgebraError::DivisionByZero.limit(), None);
+    /// ```
+    #[must_use]
+    pub fn limit(&self) -> Option<LimitKind> {
+        match self {
+            AlgebraError::TooManyTerms { .. } | AlgebraError::TooManyPrintedTerms { .. } => {
+                Some(LimitKind::Terms)
+            }
+            AlgebraError::TooMuchWork { .. } => Some(LimitKind::Work),
+            AlgebraError::ExponentTooLarge { exponent, .. } => {
+                Some(LimitKind::Degree(exponent.unsigned_abs()))
+            }
+            AlgebraError::OrderTooLarge { order, .. } => Some(LimitKind::Degree(*order)),
+            _ => None,
+        }
+    }
+
     /// The message without the advice a limit's ends with (`; raise the limit or simplify
     /// the input`): what happened, for a caller that gives advice of its own (a command
     /// line's options). The messages of the term limit, of its printing and of the work limit
@@ -268,6 +296,21 @@ impl AlgebraError {
             e => e.to_string(),
         }
     }
+}
+
+/// Which limit an [`AlgebraError`] passed ([`AlgebraError::limit`]): the kinds a caller tells
+/// apart to say which setting raises it.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+#[non_exhaustive]
+pub enum LimitKind {
+    /// The term limit ([`Limits::max_terms`](crate::Limits)), of a result or of its printing.
+    Terms,
+    /// The work limit ([`Limits::max_term_products`](crate::Limits)), of a product's term
+    /// products.
+    Work,
+    /// The degree limit ([`Limits::max_degree`](crate::Limits)), which an exponent or an
+    /// angle's order would pass: its size `|n|`.
+    Degree(u64),
 }
 
 /// The advice of the term and work limits' messages.

@@ -59,7 +59,7 @@ pub use num_bigint;
 /// re-exported so that a program names `BigRational` at the version used here.
 pub use num_rational;
 
-pub use error::{AlgebraError, AngleUse, Misuse, Setting};
+pub use error::{AlgebraError, AngleUse, LimitKind, Misuse, Setting};
 pub use lower::{did_you_mean, did_you_mean_hint, quoted_name, shown_name, split_names, FUNCTIONS};
 pub use lower::{BracketError, Context, Doubt, NoContext, RunTogether};
 pub use number::{
