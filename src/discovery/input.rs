@@ -19,16 +19,20 @@ pub const BUILTIN_SYSTEMS: [&str; 6] = [
 ];
 
 /// Defines `P{m}{n}, Q{m}{n}` (from the ladder `z`) and `R{m}{n}, S{m}{n}` (from `w`) for
-/// `1 ≤ m, n ≤ 3`: the real and imaginary parts of `z^m e^{−inθ}` and `w^m e^{−inθ}`.
-fn define_resonant(s: &mut System, z: &str, w: &str) -> Result<(), EngineError> {
+/// `1 ≤ m, n ≤ 3`: the real and imaginary parts of `z^m e^{−inθ}` and `w^m e^{−inθ}`, shown
+/// as a system file's family instances are (`P_{1,1}`, with `prime` after the letter under
+/// gravity, `P'_{1,1}`), so that they are also read as the file writes them (`P_1_1`,
+/// `P_{1,1}`: [`System::function`]).
+fn define_resonant(s: &mut System, z: &str, w: &str, prime: &str) -> Result<(), EngineError> {
     for m in 1..=3 {
         for n in 1..=3 {
+            let shown = |letter: &str| format!("{letter}{prime}_{{{m},{n}}}");
             let k = s.resonant(z, m, n)?;
-            s.define(&format!("P{m}{n}"), &format!("P{m}{n}"), k.p)?;
-            s.define(&format!("Q{m}{n}"), &format!("Q{m}{n}"), k.q)?;
+            s.define(&format!("P{m}{n}"), &shown("P"), k.p)?;
+            s.define(&format!("Q{m}{n}"), &shown("Q"), k.q)?;
             let k = s.resonant(w, m, n)?;
-            s.define(&format!("R{m}{n}"), &format!("R{m}{n}"), k.p)?;
-            s.define(&format!("S{m}{n}"), &format!("S{m}{n}"), k.q)?;
+            s.define(&format!("R{m}{n}"), &shown("R"), k.p)?;
+            s.define(&format!("S{m}{n}"), &shown("S"), k.q)?;
         }
     }
     Ok(())
@@ -38,7 +42,8 @@ fn define_resonant(s: &mut System, z: &str, w: &str) -> Result<(), EngineError> 
 /// rotor and the rotor under gravity get, besides the paper's functions, the other circular
 /// ladder `W = w̄ + iMωū` (`{W, H} = iωW`, primed under gravity) and `Hp = F1 − F2`; with
 /// `resonant`, also `P_{mn} + iQ_{mn} = Z^m e^{−inθ}` and `R_{mn} + iS_{mn} = W^m e^{−inθ}`
-/// for `m, n ≤ 3` (named `P11`, `S23`, …). Its results are held to `limits`.
+/// for `m, n ≤ 3` (named `P11`, `S23`, …, and shown, and read too, as a system file's family
+/// instances, `P_{1,1}`, `P_1_1`). Its results are held to `limits`.
 pub fn builtin_system(
     name: &str,
     resonant: bool,
@@ -51,7 +56,7 @@ pub fn builtin_system(
             s.define_builtin("W", "W", "p_x - i*p_y + i*M*omega*(x - i*y)")?;
             s.define_builtin("Hp", "Hp", "F1 - F2")?;
             if resonant {
-                define_resonant(&mut s, "Z", "W")?;
+                define_resonant(&mut s, "Z", "W", "")?;
             }
             ("harmonic rotor".to_string(), s)
         }
@@ -60,7 +65,7 @@ pub fn builtin_system(
             s.define_builtin("Wp", "W'", "p_x - i*p_y + i*M*omega*(x - i*yp)")?;
             s.define_builtin("Hp", "Hp", "F1 - F2")?;
             if resonant {
-                define_resonant(&mut s, "Zp", "Wp")?;
+                define_resonant(&mut s, "Zp", "Wp", "'")?;
             }
             ("rotor under gravity".to_string(), s)
         }

@@ -1179,6 +1179,34 @@ fn known_integrals_may_be_instances_with_braces() {
     );
 }
 
+/// The built-in harmonic rotor takes its resonant functions as `systems/harmonic-rotor.toml`
+/// writes the family's instances, `P_1_1` and `P_{1,1}`, besides its own name `P11` (which
+/// alone it took: `unknown name 'P_1_1'; did you mean 'P11'?`), and shows them as the file
+/// does, `P_{1,1}`: the same generator, the same closure.
+#[test]
+fn a_builtin_closure_takes_a_resonant_function_as_the_file_writes_it() {
+    let closure = |p: &str| {
+        crate::superint_ok(&[
+            "closure",
+            "--system",
+            "harmonic",
+            "L",
+            p,
+            "--when",
+            "p_theta=I*omega",
+            "--no-timings",
+        ])
+    };
+    let own = closure("P11");
+    assert!(
+        own.contains("{L, P_{1,1}} = (p_y + Mωx) cos θ + (−p_x + Mωy) sin θ"),
+        "{own}"
+    );
+    for written in ["P_1_1", "P_{1,1}"] {
+        assert_eq!(closure(written), own, "closure of L, {written}");
+    }
+}
+
 /// `--fix` reads a decimal as the fraction it writes, as plot's `--at` does: `M=0.5` was
 /// refused as "'0.5' is not a rational number", which it is.
 #[test]

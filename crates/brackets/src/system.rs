@@ -178,13 +178,31 @@ impl System {
         &self.functions
     }
 
-    /// The named function that `name` spells, by its name or its display (`Omega` or `Ω`), if
+    /// The named function that `name` spells, by its name or its display (`Omega` or `Ω`), or
+    /// else by its display as an expression reads it ([`trigpoly::syntax::latex_name`]: a
+    /// function shown `P_{1,1}` is read as `P_1_1`, whether written so or with the braces), if
     /// any: the one lookup of a function by a name, through which [`System::get`] and
     /// [`System::display_name`] find it.
+    ///
+    /// ```
+    /// let mut rotor = brackets::systems::harmonic_rotor();
+    /// let p = rotor.parse("re(Z*exp(-i*theta))")?;
+    /// rotor.define("P11", "P_{1,1}", p.clone())?;
+    /// assert_eq!(rotor.get("P_1_1")?, &p);
+    /// assert_eq!(rotor.parse("P_{1,1}")?, p);
+    /// # Ok::<(), brackets::EngineError>(())
+    /// ```
     pub fn function(&self, name: &str) -> Option<&NamedFunction> {
-        self.functions
+        let functions = &self.functions;
+        functions
             .iter()
             .find(|f| f.name == name || f.display == name)
+            .or_else(|| {
+                functions.iter().find(|f| {
+                    f.display.contains(['{', '\\'])
+                        && trigpoly::syntax::latex_name(&f.display).as_deref() == Some(name)
+                })
+            })
     }
 
     /// A named function.
