@@ -90,7 +90,8 @@ pub fn builtin_system(
 /// condition's form is said by `refuse`, given its byte range in `text` and its message, as a
 /// file's condition is refused ([`CONDITION_USAGE`]; the caret under the comma with nothing
 /// beside it, an empty side, the left side that is no variable, one a condition cannot set
-/// (an angle) or one set twice, the value of the variable the condition cannot set so).
+/// (an angle) or one set twice, the value of the variable the condition cannot set so). The
+/// condition is shown as a file's is, each value as it is written (`p_θ = Iω`).
 pub fn parse_condition(
     system: &System,
     text: &str,
@@ -102,6 +103,7 @@ pub fn parse_condition(
     // Where each value is written, for a refusal of the condition as a whole.
     let mut values = Vec::new();
     let mut shown = Vec::new();
+    let printer = crate::system_file::LoadedSystem::of_system(system.clone());
     let pieces = comma_pieces(text);
     for (k, &(at, piece)) in pieces.iter().enumerate() {
         // A comma with nothing after it (`M = 1,`), or before it (`, M = 1`).
@@ -143,13 +145,15 @@ pub fn parse_condition(
         if subs.iter().any(|(w, _)| *w == v) {
             return Err(refuse(name_span, fixed_twice(name)));
         }
-        let value = parse(value, value_span.start)?;
-        shown.push(format!(
-            "{} = {}",
-            vars.variable(v).unicode(),
-            value.render(Style::Unicode)
-        ));
-        subs.push((v, value));
+        let expr = parse(value, value_span.start)?;
+        // As a file's condition prints, the value as it is written, in the paper's notation
+        // (`p_θ = Iω`), not its normal form, whose order of the variables is the system's
+        // (`ωI`); the normal form where the file's reading refuses the text.
+        let written = printer
+            .shown_argument(value)
+            .unwrap_or_else(|_| expr.render(Style::Unicode));
+        shown.push(format!("{} = {written}", vars.variable(v).unicode()));
+        subs.push((v, expr));
         values.push(value_span);
     }
     brackets::Condition::all(&shown.join(", "), subs.clone()).map_err(|e| {

@@ -1207,6 +1207,24 @@ fn a_builtin_closure_takes_a_resonant_function_as_the_file_writes_it() {
     }
 }
 
+/// The built-in harmonic rotor prints its condition as `systems/harmonic-rotor.toml` prints
+/// it, the value as it is written, `p_θ = Iω` (it printed the normal form, `p_θ = ωI`, the
+/// order of its variables), and its resonant functions as the file its instances, `P_{1,1}`:
+/// the closure of the same generators at the same condition reads the same, line by line.
+#[test]
+fn a_builtin_closure_reads_as_the_files() {
+    let closure = |system: &[&str]| {
+        let generators = ["L", "P_1_1", "--when", "p_theta=I*omega", "--no-timings"];
+        crate::superint_ok(&[&["closure"], system, &generators[..]].concat())
+    };
+    let builtin = closure(&["--system", "harmonic"]);
+    assert!(
+        builtin.starts_with("Closure of L, P_{1,1} for the harmonic rotor at p_θ = Iω\n"),
+        "{builtin}"
+    );
+    assert_eq!(builtin, closure(&["systems/harmonic-rotor.toml"]));
+}
+
 /// `--fix` reads a decimal as the fraction it writes, as plot's `--at` does: `M=0.5` was
 /// refused as "'0.5' is not a rational number", which it is.
 #[test]
