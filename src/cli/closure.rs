@@ -13,7 +13,6 @@ use superint::report::Report;
 use superint::system_file::{
     given_twice, trimmed, Caller, ErrorKind, FileError, PrintedNames, COMMAND_LINE,
 };
-use trigpoly::syntax::is_name_continue;
 
 use super::limits::LimitsArgs;
 use super::output::{emit, Output};
@@ -161,37 +160,30 @@ fn close(a: &ClosureArgs, names: &[String], subject: &Subject) -> anyhow::Result
             ));
         }
         let e = subject
-            .listed_error("--define", d, value_span.clone())
-            .map_err(|e| {
+            .listed_error("--define", d, value_span)
+            .map_err(|mut e| {
                 // A name that --define gives is no name of the system: say so, not how to
-                // declare one in the file.
+                // declare one in the file, at the place the parse met it.
                 let given = a
                     .define
                     .iter()
                     .filter_map(|d| d.split_once('='))
                     .find(|(n, _)| e.unknown_name().is_some_and(|u| u == n.trim()));
-                // The caret under the name where the value first uses it.
-                let at = |n: &str| {
-                    let value = &d[value_span.clone()];
-                    name_in(value, n.trim()).map_or(value_span.clone(), |k| {
-                        value_span.start + k..value_span.start + k + n.trim().len()
-                    })
-                };
-                match given {
+                let why = match given {
                     Some((n, _)) if n.trim() == name => {
-                        refused(at(n), format!("its value uses {name}, the name it defines"))
+                        format!("its value uses {name}, the name it defines")
                     }
-                    Some((n, v)) => refused(
-                        at(n),
-                        format!(
-                            "{} is given by --define, whose values use only the system's \
-                             names: write its value, ({}), in its place",
-                            n.trim(),
-                            v.trim()
-                        ),
+                    Some((n, v)) => format!(
+                        "{} is given by --define, whose values use only the system's names: \
+                         write its value, ({}), in its place",
+                        n.trim(),
+                        v.trim()
                     ),
-                    None => anyhow!(e.to_string()),
-                }
+                    None => return anyhow!(e.to_string()),
+                };
+                e.message = format!("--define: {why}");
+                e.hint = None;
+                anyhow!(e.to_string())
             })?;
         defined.push((name.to_string(), e));
     }
@@ -322,22 +314,4 @@ fn close(a: &ClosureArgs, names: &[String], subject: &Subject) -> anyhow::Result
         e => anyhow::Error::new(e).context("computing the closure"),
     })?;
     Ok(subject.tag(report))
-}
-
-/// Where `value` first uses the name `name`: a whole name as the lexer reads one, after
-/// nothing but a number, if anything, of the word it stands in (`A` of `2A+x`, not of `AA`,
-/// `p_A` or `x2A`).
-fn name_in(value: &str, name: &str) -> Option<usize> {
-    value.match_indices(name).map(|(k, _)| k).find(|&k| {
-        let before = value[..k]
-            .chars()
-            .rev()
-            .take_while(|&c| is_name_continue(c))
-            .all(|c| c.is_ascii_digit());
-        before
-            && !value[k + name.len()..]
-                .chars()
-                .next()
-                .is_some_and(is_name_continue)
-    })
 }
