@@ -130,7 +130,6 @@ use crate::system::System;
 use new_only::new_integrals;
 use parameters::{
     fixed_hamiltonian_and_condition, module_generators, parameter_multiples, parameter_values,
-    FixedHamiltonianAndCondition,
 };
 use problem::{real_rows, AtValues, Components, Problem, RowIndex, IMAGE_BLOCK};
 use proof::{flow_vanishes, lead, primitive_vector};
@@ -290,27 +289,17 @@ fn fixed_search_problem(
         &options.fixed,
         system.space().denominator_atoms().iter(),
     );
-    let FixedHamiltonianAndCondition {
-        h,
-        condition: fixed_condition,
-    } = fixed_hamiltonian_and_condition(system, options, &parameters)?;
+    let fixed = fixed_hamiltonian_and_condition(system, options, &parameters)?;
     // A known integral that is none is refused here, before the space's unknowns are formed.
     if options.new_only {
         let at = AtValues {
-            h: &h,
-            condition: fixed_condition.as_deref(),
+            h: &fixed.h,
+            condition: fixed.condition.as_deref(),
             parameters: &parameters,
         };
         new_only::refuse_given_known(system, &at, options)?;
     }
-    let problem = Problem::new(
-        system,
-        &options.space,
-        &options.symbolic,
-        &parameters,
-        h,
-        fixed_condition,
-    )?;
+    let problem = fixed.problem(system, options, &parameters)?;
     Ok(FixedSearch {
         parameters,
         denominator_zero_at_one: zero_at_one,

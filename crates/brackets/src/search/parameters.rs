@@ -154,16 +154,8 @@ pub(super) fn fixed_problem(
     options: &SearchOptions,
     parameters: &[(Var, Rational)],
 ) -> Result<Problem, EngineError> {
-    let FixedHamiltonianAndCondition { h, condition } =
-        fixed_hamiltonian_and_condition(system, options, parameters)?;
-    Problem::new(
-        system,
-        &options.space,
-        &options.symbolic,
-        parameters,
-        h,
-        condition,
-    )
+    fixed_hamiltonian_and_condition(system, options, parameters)?
+        .problem(system, options, parameters)
 }
 
 /// The Hamiltonian and the condition's values at the fixed `parameters`.
@@ -191,6 +183,26 @@ pub(super) struct FixedHamiltonianAndCondition {
     pub(super) h: Expr,
     /// The condition's substitutions, where there is a condition.
     pub(super) condition: Option<Vec<(Var, Expr)>>,
+}
+
+impl FixedHamiltonianAndCondition {
+    /// The search's linear problem in the space of `options`, with this Hamiltonian and
+    /// condition at the fixed `parameters`.
+    pub(super) fn problem(
+        self,
+        system: &System,
+        options: &SearchOptions,
+        parameters: &[(Var, Rational)],
+    ) -> Result<Problem, EngineError> {
+        Problem::new(
+            system,
+            &options.space,
+            &options.symbolic,
+            parameters,
+            self.h,
+            self.condition,
+        )
+    }
 }
 
 /// Substitutes parameter values.
