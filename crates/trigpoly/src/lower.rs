@@ -333,11 +333,6 @@ fn written_product<C: Coefficient>(factors: &[(Poly<C>, i64)], negative: bool) -
     text
 }
 
-/// The cause of an exponent or a multiple of size `power` past the degree limit `limit`.
-fn past_limit(power: Option<u64>, limit: u32) -> ParseCause {
-    ParseCause::PowerPastLimit { power, limit }
-}
-
 /// `|n|`, if a 64-bit number holds it.
 fn size(n: &Integer) -> Option<u64> {
     n.to_i128()
@@ -733,20 +728,20 @@ impl<C: Coefficient> Lower<'_, C> {
                     q.numer().bits()
                 ),
             )
-            .with_cause(past_limit(None, limit))),
+            .with_cause(ParseCause::PowerPastLimit { power: None, limit })),
             // The size of `p` of a half `p/2`, as the limit bounds it.
             _ => Err(ParseError::new(
                 e.span,
                 format!("the exponent {q} is past the limit of {limit}"),
             )
-            .with_cause(past_limit(
-                size(&if q.is_integer() {
+            .with_cause(ParseCause::PowerPastLimit {
+                power: size(&if q.is_integer() {
                     q.numer()
                 } else {
                     twice.numer()
                 }),
                 limit,
-            ))),
+            })),
         }
     }
 
@@ -824,7 +819,7 @@ impl<C: Coefficient> Lower<'_, C> {
         let multiples = self.angle_multiples(arg, fun)?;
         // A refusal of the algebra keeps its cause, a limit a limit (`cos θ` past a term
         // limit of 1).
-        let wrap = |e: AlgebraError| at(arg.span)(e);
+        let wrap = &at(arg.span);
         // e^{±i Σ n_j θ_j}
         let exp_i = |sign: i64| -> Result<Poly<C>, ParseError> {
             let mut acc = Poly::one(self.vars);
@@ -951,12 +946,15 @@ impl<C: Coefficient> Lower<'_, C> {
                             n.bits()
                         ),
                     )
-                    .with_cause(past_limit(None, limit))),
+                    .with_cause(ParseCause::PowerPastLimit { power: None, limit })),
                     _ => Err(ParseError::new(
                         arg.span,
                         format!("the multiple {n} of {angle} is past the limit of {limit}"),
                     )
-                    .with_cause(past_limit(size(&n), limit))),
+                    .with_cause(ParseCause::PowerPastLimit {
+                        power: size(&n),
+                        limit,
+                    })),
                 }
             })
             .collect()
