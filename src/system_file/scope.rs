@@ -415,26 +415,21 @@ impl Limit {
     /// The hint that goes with the limit: the work limit's, or the size limits', or, for an
     /// exponent past the most that `max_degree` may be, that no limit reaches it.
     pub(crate) fn hint(self) -> String {
-        let hint = match self {
-            Limit::PastEvery => {
-                return format!(
-                    "no limit reaches this exponent or order: max_degree is at most \
-                     {MAX_DEGREE_CEILING}; write the expression without so large a power or \
-                     multiple"
-                )
-            }
-            Limit::Work => {
-                "if the machine has the time, raise the limit with max_term_products under \
-                 [limits] in the file (on the command line, --max-term-products N; in a \
-                 program, the LimitsOverride given to the loader)"
-            }
-            Limit::Size => {
-                "if the machine has the memory, raise the limit with max_terms or max_degree \
-                 under [limits] in the file (on the command line, --max-terms N or --max-degree \
-                 D; in a program, the LimitsOverride given to the loader)"
-            }
-        };
-        hint.to_string()
+        match self {
+            Limit::PastEvery => format!(
+                "no limit reaches this exponent or order: max_degree is at most \
+                 {MAX_DEGREE_CEILING}; write the expression without so large a power or multiple"
+            ),
+            Limit::Work => "if the machine has the time, raise the limit with max_term_products \
+                            under [limits] in the file (on the command line, --max-term-products \
+                            N; in a program, the LimitsOverride given to the loader)"
+                .to_string(),
+            Limit::Size => "if the machine has the memory, raise the limit with max_terms or \
+                            max_degree under [limits] in the file (on the command line, \
+                            --max-terms N or --max-degree D; in a program, the LimitsOverride \
+                            given to the loader)"
+                .to_string(),
+        }
     }
 }
 
