@@ -348,10 +348,11 @@ fn generators_part(beta: &[u32], r: usize) -> Vec<u32> {
 /// held to the term limit, as one result is: each product is counted as it is formed, and
 /// once their terms together pass `Limits::max_terms` the expansion stops with
 /// [`EngineError::ClosureTooManyTerms`] at the closure's `degree` (as it does when one product
-/// passes it alone), which says that all of them were counted. What is held is then at most the limit and one product,
-/// which the limit bounds too; without the count, a product of the generators of a degree
-/// reached the limit only after all those of lower degree were held (`p_x`, `F1` of the rotor
-/// under gravity at degree 64: 1.3·10⁸ terms, 6.2 GB, before `F1^45` passed it).
+/// passes it alone), which says that all of them were counted. What is held is then at most
+/// the limit and one product, which the limit bounds too; without the count, a product of the
+/// generators of a degree reached the limit only after all those of lower degree were held
+/// (`p_x`, `F1` of the rotor under gravity at degree 64: 1.3·10⁸ terms, 6.2 GB, before `F1^45`
+/// passed it).
 fn expand_monomials(
     vars: &Vars,
     g: &[Expr],
