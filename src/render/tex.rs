@@ -741,8 +741,9 @@ impl<'a> Translation<'a> {
     /// A word of mathematics: a function's command or a name, with its `digits` as its
     /// subscript (`G1` is `G_{1}`).
     fn word(&mut self, w: &str, digits: &str) {
-        // The echo's `sqrt(x² + y²)` is the root the paper writes, `\sqrt{x^{2} + y^{2}}` (it
-        // was `\operatorname{sqrt}(x^{2} + y^{2})`), as the echo's `√(x² + y²)` is.
+        // A text's `sqrt(x² + y²)` (as a message quotes a root) is the root the paper writes,
+        // `\sqrt{x^{2} + y^{2}}` (it was `\operatorname{sqrt}(x^{2} + y^{2})`), as the echo's
+        // `√(x² + y²)` is.
         if w == "sqrt" && digits.is_empty() {
             if let Some((radicand, taken)) = self.group(self.k + 1) {
                 self.out.push_str(&format!(r"\sqrt{{{radicand}}}"));

@@ -472,9 +472,10 @@ impl LoadedSystem {
             "re" if !self.is_declared_name("Re") => ("Re".to_string(), true),
             "im" if !self.is_declared_name("Im") => ("Im".to_string(), true),
             other if trigpoly::FUNCTIONS.contains(&other) => (f.to_string(), true),
-            // A root is a function, not a name that multiplies its parentheses: `x/sqrt(x² +
-            // y²)`, not `x/(sqrt(x² + y²))`.
-            "sqrt" => ("sqrt".to_string(), true),
+            // A root is a function, not a name that multiplies its parentheses, and prints as
+            // the paper writes it (and the parser reads it): `x/√(x² + y²)`, not
+            // `x/(sqrt(x² + y²))`.
+            "sqrt" => ("√".to_string(), true),
             // `(Re K)(x + y)`: a name of several words multiplies in parentheses.
             other => match self.display_name(other) {
                 shown if trigpoly::has_several_words(&shown) => (format!("({shown})"), false),

@@ -54,6 +54,10 @@ fn radicals_zero_is_decided_by_reducing() {
     assert!(holds(&file, "sqrt(x^2 + y^2)", "r"));
     assert!(holds(&file, "k/sqrt(9*x^2 + 9*y^2)^3", "k/(27*r^3)"));
     assert!(holds(&file, "sqrt(9/4)", "3/2"));
+    // `√`, as the text form prints a root: of parentheses or of a name or number.
+    assert!(holds(&file, "√(x^2 + y^2)", "r"));
+    assert!(holds(&file, "k/√(9x² + 9y²)³", "k/(27*r^3)"));
+    assert!(holds(&file, "√4 x", "2*x"));
     assert!(!holds(&file, "sqrt(4*x^2 + 4*y^2)", "r"));
     for (root, message) in [
         ("sqrt(2)", "sqrt(2) is not a rational number"),

@@ -5323,10 +5323,11 @@ id = "root"
 claim = "{r, p_x} = x/sqrt(x^2 + y^2)"
 "#;
 
-/// A claim's echo writes `sqrt(…)` as a function, `x/sqrt(x² + y²)` in text and
+/// A claim's echo writes `sqrt(…)` as a function, `x/√(x² + y²)` in text and
 /// `x/\sqrt{x^{2} + y^{2}}` in LaTeX, as the report's `r = √(x² + y²)` is set: it echoed
 /// `x/(sqrt(x² + y²))` and `x/(\operatorname{sqrt}(x^{2} + y^{2}))`, the root taken for a
-/// name multiplying its parentheses. The LaTeX reads back to the same claim.
+/// name multiplying its parentheses, and then `x/sqrt(x² + y²)` in text. The text and the
+/// LaTeX each read back to the same claim (the parser refused `√`).
 #[test]
 fn a_claims_echo_writes_a_root_as_the_paper_does() {
     let dir = scratch("root-echo");
@@ -5334,15 +5335,17 @@ fn a_claims_echo_writes_a_root_as_the_paper_does() {
     let o = superint_in(&dir, &["check", "kepler.toml", "--no-timings"]);
     let out = text(&o.stdout);
     assert_eq!(o.status.code(), Some(0), "{out}{}", text(&o.stderr));
-    assert!(out.contains("{r, p_x} = x/sqrt(x² + y²)"), "{out}");
-    assert!(!out.contains("(sqrt"), "{out}");
+    let text_echo = "{r, p_x} = x/√(x² + y²)";
+    assert!(out.contains(text_echo), "{out}");
+    assert!(!out.contains("sqrt"), "{out}");
     let o = superint_in(&dir, &["check", "kepler.toml", "--format", "latex"]);
     let latex = text(&o.stdout);
     let echo = r"\{r, p_{x}\} &= x/\sqrt{x^{2} + y^{2}}";
     assert!(latex.contains(echo), "{latex}");
     assert!(!latex.contains("operatorname{sqrt}"), "{latex}");
     let again = format!(
-        "{ROOT_WRITTEN}\n[[claim]]\nid = \"again\"\nclaim = '{}'\n",
+        "{ROOT_WRITTEN}\n[[claim]]\nid = \"again\"\nclaim = '{}'\n\
+         \n[[claim]]\nid = \"again-text\"\nclaim = '{text_echo}'\n",
         echo.replace(" &=", " =")
     );
     std::fs::write(dir.join("again.toml"), again).expect("write");
@@ -5350,6 +5353,13 @@ fn a_claims_echo_writes_a_root_as_the_paper_does() {
     let out = text(&o.stdout);
     assert_eq!(o.status.code(), Some(0), "{out}{}", text(&o.stderr));
     assert!(out.contains("[again proved]"), "{out}");
+    assert!(out.contains("[again-text proved]"), "{out}");
+    // The text reads back to the same expression, and prints as it did.
+    let line = out.lines().find(|l| l.contains("[again-text proved]"));
+    assert!(
+        line.is_some_and(|l| l.trim().starts_with(text_echo)),
+        "{out}"
+    );
 }
 
 /// A rotor with claims whose products put a factor after a sine or cosine of a bare angle:

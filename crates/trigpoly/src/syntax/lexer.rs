@@ -37,6 +37,9 @@ pub(crate) enum Tok {
     Frac,
     /// `\sqrt`, whose group in braces follows.
     Sqrt,
+    /// `√`, as the text form prints a root: its radicand in parentheses, `√(x² + y²)`, or a
+    /// name, `√x`.
+    Root,
     Eof,
 }
 
@@ -45,7 +48,13 @@ impl Tok {
     pub(crate) fn starts_operand(&self) -> bool {
         matches!(
             self,
-            Tok::Int(_) | Tok::Name(_) | Tok::LParen | Tok::LBrace | Tok::Frac | Tok::Sqrt
+            Tok::Int(_)
+                | Tok::Name(_)
+                | Tok::LParen
+                | Tok::LBrace
+                | Tok::Frac
+                | Tok::Sqrt
+                | Tok::Root
         )
     }
 }
@@ -173,6 +182,7 @@ impl<'a> Lexer<'a> {
             '{' => Tok::LBrace,
             '}' => Tok::RBrace,
             ',' => Tok::Comma,
+            '√' => Tok::Root,
             c if c == '⁻' || superscript_digit(c).is_some() => {
                 let negative = c == '⁻';
                 if !negative {
@@ -198,8 +208,6 @@ impl<'a> Lexer<'a> {
                         "; write a fraction such as 1/2"
                     }
                     '⁄' => "; write '/'",
-                    // As superint prints a radical's definition, `r = √(x² + y²)`.
-                    '√' => "; write a square root as sqrt(…)",
                     '‐'..='―' => "; a dash is no minus sign: write '-' or '−'",
                     // Mathematica's `Sqrt[x^2 + y^2]`, `Cos[theta]`, `D[f, x]`.
                     '[' | ']' => {

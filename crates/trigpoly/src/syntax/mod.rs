@@ -570,7 +570,12 @@ mod tests {
         // Characters pasted from print, with what to write instead.
         ("½x", (1, 1), "unexpected character '½'; write a fraction such as 1/2"),
         ("x – y", (1, 3), "unexpected character '–'; a dash is no minus sign: write '-' or '−'"),
-        ("k/√(x² + y²)", (1, 3), "unexpected character '√'; write a square root as sqrt(…)"),
+        // `√` as the text form prints a root takes parentheses or a name, with no power after
+        // the name.
+        ("k/√-x", (1, 4), "expected '(' or a name after '√', found '-'; write √(x^2 + y^2) \
+                           or √x"),
+        ("k/√x²", (1, 5), "a power after '√x' is ambiguous: write (√x)^2 for a power of the \
+                           root, or √(x^2)"),
         // Mathematica's calls, with what to write instead.
         ("k/Sqrt[x^2 + y^2]", (1, 7), "unexpected character '['; a function takes its \
                                        argument in parentheses, sqrt(x^2 + y^2), cos(theta), \

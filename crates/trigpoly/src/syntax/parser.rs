@@ -695,6 +695,7 @@ impl Parser<'_> {
             Tok::LBrace => self.bracket(),
             Tok::Frac => self.frac(),
             Tok::Sqrt => self.sqrt(),
+            Tok::Root => self.root(),
             _ => Err(self.expected_operand()),
         }
     }
@@ -1062,6 +1063,49 @@ impl Parser<'_> {
         let span = command.to(arg.span);
         Ok(Expr::new(
             ExprKind::Call("sqrt".to_string(), command, vec![arg]),
+            span,
+        ))
+    }
+
+    /// Parses `√(x² + y²)` or `√x`, as the text form prints a root: the call `sqrt(…)`. A
+    /// power after `√x` is refused, since `√x²` could raise the root or the name.
+    fn root(&mut self) -> PResult<Expr> {
+        let root = self.bump()?.span;
+        let arg = match self.tok.tok {
+            Tok::LParen => self.nested(root, |p| p.paren())?,
+            Tok::Name(_) | Tok::Int(_) => {
+                let arg = self.nested(root, |p| p.atom())?;
+                if !matches!(arg.kind, ExprKind::Name(_) | ExprKind::Integer(_)) {
+                    return Err(ParseError::new(
+                        root.to(arg.span),
+                        format!(
+                            "write the radicand of {} in parentheses, √({})",
+                            self.quote(root.to(arg.span)),
+                            self.src[root.end..arg.span.end].trim_start()
+                        ),
+                    ));
+                }
+                if matches!(self.tok.tok, Tok::Sup { .. } | Tok::Caret) {
+                    let radicand = self.src[root.end..arg.span.end].trim_start();
+                    return Err(self.error(format!(
+                        "a power after {} is ambiguous: write (√{radicand})^2 for a power of the \
+                         root, or √({radicand}^2)",
+                        self.quote(root.to(arg.span))
+                    )));
+                }
+                arg
+            }
+            _ => {
+                return Err(self.error(format!(
+                    "expected '(' or a name after '√', found {}; write √(x^2 + y^2) or √x",
+                    self.found()
+                )))
+            }
+        };
+        self.height = grow(self.height, root)?;
+        let span = root.to(arg.span);
+        Ok(Expr::new(
+            ExprKind::Call("sqrt".to_string(), root, vec![arg]),
             span,
         ))
     }

@@ -1200,7 +1200,7 @@ const PARSER_TOKENS: &[&str] = &[
     r"\partial H", r"\sin^{2}", r"\sin^{2}\theta", "x^{2}{}^{3}", "Mω^{2}", "Mω^{2}{}^{3}",
     r"\Re", r"\operatorname{Re}", r"\mathrm{i}", r"\bar{M}", r"\bar{}", r"p_{\theta}", r"\,",
     r"\;", r"\quad", r"\left(", r"\right)", r"\left.", r"\left", r"\big(", r"\bigr)", r"\{",
-    r"\}", r"\cdot", r"\times", r"\", r"\unknown", "₁", "1e3", "0.5", "√", "½", "\u{feff}",
+    r"\}", r"\cdot", r"\times", r"\", r"\unknown", "₁", "1e3", "0.5", "√", "√(", "½", "\u{feff}",
     "ϕ", "ϵ", "ε", r"\epsilon", r"\varepsilon", r"\sin^{2}^", r"\cos cos", r"p_{\left(",
 ];
 
