@@ -22,7 +22,7 @@ pub const BUILTIN_SYSTEMS: [&str; 6] = [
 /// `1 ≤ m, n ≤ 3`: the real and imaginary parts of `z^m e^{−inθ}` and `w^m e^{−inθ}`, shown
 /// as a system file's family instances are (`P_{1,1}`, with `prime` after the letter under
 /// gravity, `P'_{1,1}`), so that they are also read as the file writes them (`P_1_1`,
-/// `P_{1,1}`: [`System::function`]).
+/// `P_{1,1}`, and under gravity `Pp_1_1`, `Pp_{1,1}`: [`System::function`]).
 fn define_resonant(s: &mut System, z: &str, w: &str, prime: &str) -> Result<(), EngineError> {
     for m in 1..=3 {
         for n in 1..=3 {

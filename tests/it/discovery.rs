@@ -1207,6 +1207,31 @@ fn a_builtin_closure_takes_a_resonant_function_as_the_file_writes_it() {
     }
 }
 
+/// The built-in rotor under gravity takes its resonant functions as
+/// `systems/gravity-rotor.toml` writes the instances of its family `Pp` (shown `P'`), `Pp_1_1`
+/// and `Pp_{1,1}`, besides its own name `P11` (it took `P11` and `P'_{1,1}` alone: `unknown
+/// name 'Pp_1_1'`), and its closure of them reads as the file's, line by line.
+#[test]
+fn a_builtin_closure_under_gravity_takes_a_resonant_function_as_the_file_writes_it() {
+    let closure = |system: &[&str], p: &str| {
+        let generators = ["L", p, "--when", "p_theta=I*omega", "--no-timings"];
+        crate::superint_ok(&[&["closure"], system, &generators[..]].concat())
+    };
+    let own = closure(&["--system", "gravity"], "P11");
+    assert!(
+        own.starts_with("Closure of L, P'_{1,1} for the rotor under gravity at p_θ = Iω\n"),
+        "{own}"
+    );
+    for written in ["Pp_1_1", "Pp_{1,1}"] {
+        assert_eq!(
+            closure(&["--system", "gravity"], written),
+            own,
+            "closure of L, {written}"
+        );
+    }
+    assert_eq!(closure(&["systems/gravity-rotor.toml"], "Pp_1_1"), own);
+}
+
 /// The built-in harmonic rotor prints its condition as `systems/harmonic-rotor.toml` prints
 /// it, the value as it is written, `p_θ = Iω` (it printed the normal form, `p_θ = ωI`, the
 /// order of its variables), and its resonant functions as the file its instances, `P_{1,1}`:

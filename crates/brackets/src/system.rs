@@ -180,8 +180,10 @@ impl System {
 
     /// The named function that `name` spells, by its name or its display (`Omega` or `Ω`), or
     /// else by its display as an expression reads it ([`trigpoly::syntax::latex_name`]: a
-    /// function shown `P_{1,1}` is read as `P_1_1`, whether written so or with the braces), if
-    /// any: the one lookup of a function by a name, through which [`System::get`] and
+    /// function shown `P_{1,1}` is read as `P_1_1`, whether written so or with the braces), or
+    /// as a name spells it, a prime as `p` (a function shown `P'_{1,1}` is read as `Pp_1_1`, as
+    /// a system file names the instances of its family `Pp` shown `P'`, and as `y'` is named
+    /// `yp`), if any: the one lookup of a function by a name, through which [`System::get`] and
     /// [`System::display_name`] find it.
     ///
     /// ```
@@ -190,6 +192,9 @@ impl System {
     /// rotor.define("P11", "P_{1,1}", p.clone())?;
     /// assert_eq!(rotor.get("P_1_1")?, &p);
     /// assert_eq!(rotor.parse("P_{1,1}")?, p);
+    /// rotor.define("P11p", "P'_{1,1}", p.clone())?;
+    /// assert_eq!(rotor.get("Pp_1_1")?, &p);
+    /// assert_eq!(rotor.parse("Pp_{1,1}")?, p);
     /// # Ok::<(), brackets::EngineError>(())
     /// ```
     pub fn function(&self, name: &str) -> Option<&NamedFunction> {
@@ -199,8 +204,12 @@ impl System {
             .find(|f| f.name == name || f.display == name)
             .or_else(|| {
                 functions.iter().find(|f| {
-                    f.display.contains(['{', '\\'])
-                        && trigpoly::syntax::latex_name(&f.display).as_deref() == Some(name)
+                    if !f.display.contains(['{', '\\']) {
+                        return false;
+                    }
+                    trigpoly::syntax::latex_name(&f.display).is_some_and(|read| {
+                        read == name || (read.contains('\'') && read.replace('\'', "p") == name)
+                    })
                 })
             })
     }
