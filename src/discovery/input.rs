@@ -227,9 +227,9 @@ impl std::error::Error for ListRefusal {}
 /// Where the `k`th of `pieces` (a list split at its commas, each with its first byte, as by
 /// [`comma_pieces`]) is blank beside a comma, that `what` is missing after the comma (`M=1,`)
 /// or before it (`,M=1`), at that comma: `a value is missing after this comma`, then `usage`,
-/// for a condition, `--fix`, `--symbolic` and `--known` alike. A list of one blank piece has
-/// no comma to blame, and is left to the caller.
-fn blank_beside_comma(
+/// for a condition, `--fix`, `--symbolic`, `--known` and a tower's `--family` alike. A list of
+/// one blank piece has no comma to blame, and is left to the caller.
+pub(crate) fn blank_beside_comma(
     pieces: &[(usize, &str)],
     k: usize,
     what: &str,

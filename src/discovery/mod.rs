@@ -26,6 +26,7 @@ mod search;
 
 pub use brackets::closure::relation_text;
 pub use closure::{closure_report, closure_report_for};
+pub(crate) use input::blank_beside_comma;
 pub use input::{
     builtin_system, parse_condition, parse_fixed, parse_known, parse_symbolic, ListRefusal,
     BUILTIN_SYSTEMS,

@@ -677,22 +677,23 @@ fn tower_families(file: &LoadedSystem, family: Option<&str>) -> Result<Vec<usize
         };
     };
     let mut found = Vec::new();
-    for (at, piece) in comma_pieces(names) {
+    let pieces = comma_pieces(names);
+    for (k, &(at, piece)) in pieces.iter().enumerate() {
         let (name, span) = trimmed(at, piece);
-        // A lone empty name is no family's, as any other unknown one.
-        if name.is_empty() && names.contains(',') {
-            // The comma after the blank name, or before it for the last.
-            let comma = match at + piece.len() < names.len() {
-                true => at + piece.len(),
-                false => at - 1,
-            };
+        // An empty name beside a comma is refused at the comma before it (after it for the
+        // first), as every other list's is; a lone empty name is no family's, as any other
+        // unknown one.
+        if let Some(missing) = crate::discovery::blank_beside_comma(
+            &pieces,
+            k,
+            "a family's name",
+            "families are named separated by commas, such as K,Kbar",
+        ) {
             return Err(family_list_refused(
                 file,
                 names,
-                comma..comma + 1,
-                "a family's name is missing beside this comma: families are named separated by \
-                 commas, such as K,Kbar"
-                    .to_string(),
+                missing.span,
+                missing.message,
                 Some(format!(
                     "the list {} has an empty name: families are named separated by commas, \
                      such as K,Kbar",
@@ -731,7 +732,7 @@ fn tower_families(file: &LoadedSystem, family: Option<&str>) -> Result<Vec<usize
 /// The list of families `names` refused at the byte range `span` of it, for `message`: on the
 /// command line as `--fix`'s list is, `<command line>:1:C: --family:` with `message`, the list
 /// and a caret under the place; from a program, against the system's origin, `unplaced` where
-/// the message needs the caret (`beside this comma`) and the program is told otherwise, else
+/// the message needs the caret (`after this comma`) and the program is told otherwise, else
 /// `message`.
 fn family_list_refused(
     file: &LoadedSystem,

@@ -1078,7 +1078,7 @@ fn messages_to_a_program_name_the_library() {
     let err = file.parse_argument("w").unwrap_err();
     assert!(err.hint.unwrap().contains("[[function]]"));
     // A list's empty name has no caret to stand beside in a program's message: the list is
-    // quoted instead, where the command line says `missing beside this comma`.
+    // quoted instead, where the command line says `missing after this comma`.
     let err = family_tower_report(&file, Some("K,,Kbar"), 2, None).unwrap_err();
     assert_eq!(
         (err.message.as_str(), err.location.is_none()),

@@ -2338,7 +2338,7 @@ fn tower_family_list_refuses_bad_names() {
         ),
         (
             "K,,Kbar",
-            "superint: error: <command line>:1:3: --family: a family's name is missing beside \
+            "superint: error: <command line>:1:2: --family: a family's name is missing after \
              this comma: families are named separated by commas, such as K,Kbar",
         ),
     ] {
@@ -2353,7 +2353,10 @@ fn tower_family_list_refuses_bad_names() {
 /// `<command line>:1:C: --family:`, then the list and a caret under the place: a name that no
 /// family has, a family named twice, the comma beside an empty name, because the refusals named
 /// the file alone (`systems/harmonic-rotor.toml: no family named 'zz'`) with no place, and
-/// quoted the whole list for an empty name.
+/// quoted the whole list for an empty name. That comma is the one before the empty name
+/// (`after this comma`), or after it for the first (`before this comma`), as every other list
+/// says (`blank_beside_comma`); it was the comma after it, or before it for the last, `missing
+/// beside this comma`.
 #[test]
 fn tower_family_list_refuses_at_its_place_as_fix_does() {
     for (family, message) in [
@@ -2369,15 +2372,21 @@ fn tower_family_list_refuses_at_its_place_as_fix_does() {
         ),
         (
             "K, ,Kbar",
-            "superint: error: <command line>:1:4: --family: a family's name is missing beside \
+            "superint: error: <command line>:1:2: --family: a family's name is missing after \
              this comma: families are named separated by commas, such as K,Kbar\n\
-             \x201 | K, ,Kbar\n\x20\x20\x20|    ^\n",
+             \x201 | K, ,Kbar\n\x20\x20\x20|  ^\n",
         ),
         (
             "K,",
-            "superint: error: <command line>:1:2: --family: a family's name is missing beside \
+            "superint: error: <command line>:1:2: --family: a family's name is missing after \
              this comma: families are named separated by commas, such as K,Kbar\n\
              \x201 | K,\n\x20\x20\x20|  ^\n",
+        ),
+        (
+            ",K",
+            "superint: error: <command line>:1:1: --family: a family's name is missing before \
+             this comma: families are named separated by commas, such as K,Kbar\n\
+             \x201 | ,K\n\x20\x20\x20| ^\n",
         ),
     ] {
         let o = harmonic_rotor_towers(family);
