@@ -3,7 +3,7 @@
 //! `{L, G1} = -G2` reads `{L, G1} = −G2`, `4*G1^2 + omega^2*L^2` reads `4 G1² + ω² L²`.
 
 use trigpoly::superscript;
-use trigpoly::syntax::{Expr as Tree, ExprKind};
+use trigpoly::syntax::{Expr as Tree, ExprKind, LEFT_DEEP_SUM};
 
 use super::scope::instance_of;
 use super::LoadedSystem;
@@ -207,7 +207,7 @@ impl LoadedSystem {
         let pieces = trigpoly::split_names(n, &|s: &str| self.is_declared_name(s))?;
         let at = |kind: ExprKind| Tree::new(kind, tree.span);
         let count = pieces.len();
-        pieces
+        let factors: Vec<Tree> = pieces
             .into_iter()
             .enumerate()
             .map(|(k, piece)| match power {
@@ -217,7 +217,29 @@ impl LoadedSystem {
                 )),
                 _ => at(ExprKind::Name(piece)),
             })
-            .reduce(|a, b| at(ExprKind::Mul(Box::new(a), Box::new(b))))
+            .collect();
+        // Left-deep as the parser reads a product, in runs of `LEFT_DEEP_SUM` factors, and
+        // those runs joined as a balanced tree, so that a run of any length (a name of
+        // 100 000 letters) is a tree about `log₂ n` high, which `print` walks without
+        // overflowing the stack, as the parser's sums are.
+        let mul = |a: Tree, b: Tree| at(ExprKind::Mul(Box::new(a), Box::new(b)));
+        let mut level: Vec<Tree> = Vec::with_capacity(count.div_ceil(LEFT_DEEP_SUM));
+        let mut factors = factors.into_iter();
+        while let Some(first) = factors.next() {
+            level.push(factors.by_ref().take(LEFT_DEEP_SUM - 1).fold(first, mul));
+        }
+        while level.len() > 1 {
+            let mut pairs = level.into_iter();
+            let mut next = Vec::new();
+            while let Some(a) = pairs.next() {
+                next.push(match pairs.next() {
+                    Some(b) => mul(a, b),
+                    None => a,
+                });
+            }
+            level = next;
+        }
+        level.pop()
     }
 
     /// A name: a function's is a word in a product.

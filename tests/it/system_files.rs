@@ -250,6 +250,30 @@ fn names_run_together_in_doubt_are_warned_with_their_place() {
     assert!(text(&tex.stdout).contains("is read as the product $L_{z} x$"));
 }
 
+/// A long run of names, 30 000 of them, is echoed as the product it reads as: the echo's
+/// tree of the product was left-deep, one level a name, and its printing overflowed the stack
+/// (`claim = "abab…ab = a^15000*b^15000"` aborted the process), where the parser's tree of
+/// any sum is about `log₂ n` high.
+#[test]
+fn a_long_run_of_names_is_echoed_without_overflowing_the_stack() {
+    let dir = scratch("long-run");
+    let run = "ab".repeat(15_000);
+    std::fs::write(
+        dir.join("long.toml"),
+        format!(
+            "name = \"long run\"\nhamiltonian = \"p_x^2\"\n[limits]\nmax_degree = 32767\n\
+             [phase_space]\ncoordinates = [\"x\"]\nparameters = [\"a\", \"b\"]\n\
+             [[claim]]\nclaim = \"{run} = a^15000*b^15000\"\n"
+        ),
+    )
+    .expect("written");
+    let o = superint_in(&dir, &["check", "long.toml", "--no-timings"]);
+    assert_eq!(o.status.code(), Some(0), "{}", text(&o.stderr));
+    let out = text(&o.stdout);
+    assert!(out.contains(&format!("  {run}\n")), "{out}");
+    assert!(out.contains("= a¹⁵⁰⁰⁰b¹⁵⁰⁰⁰  [#1 proved]"), "{out}");
+}
+
 /// The other commands say on standard error what their file's texts and the expressions given
 /// on the command line read in doubt, each with its place, line and caret, and go on with
 /// the product; the physics products of the command line are read without a word.
