@@ -28,14 +28,14 @@ pub struct BenchArgs {
     /// The workload: W1|tower, W2|single, W3a|fateman, W3b|pearce, W4|algebra.
     workload: String,
     /// Its size (N for W1, m for W2, the exponent for W3, repetitions for W4).
-    #[arg(value_parser = clap::value_parser!(i64).range(1..=100_000))]
+    #[arg(value_parser = super::in_range::<i64>(1, 100_000))]
     size: i64,
     /// Threads for the workloads that have independent parts (W1 pairs, W2 brackets, the index
     /// range of a large dense product in W3, W4 repetitions); 1 runs everything on the calling
     /// thread.
     #[arg(long, allow_negative_numbers = true,
           default_value_t = 1,
-          value_parser = clap::value_parser!(u16).range(1..=super::MAX_THREADS))]
+          value_parser = super::in_range::<u16>(1, super::MAX_THREADS))]
     threads: u16,
     /// Leave the pool's threads where the kernel puts them. By default each of two or more
     /// threads is pinned to a processor of its own (when the process may use that many), so

@@ -53,7 +53,7 @@ pub struct ClosureArgs {
     /// The largest degree of the polynomials in the generators.
     #[arg(long, allow_negative_numbers = true,
           value_name = "D", default_value_t = 2,
-          value_parser = clap::value_parser!(u32).range(0..=64))]
+          value_parser = super::in_range::<u32>(0, 64))]
     degree: u32,
     /// The condition applied to the generators and after each bracket, such as
     /// 'p_theta = I*omega'.
@@ -72,7 +72,7 @@ pub struct ClosureArgs {
     /// Total degree of the coefficients in the parameters kept symbolic.
     #[arg(long, allow_negative_numbers = true,
           value_name = "S", default_value_t = 2, requires = "symbolic",
-          value_parser = clap::value_parser!(u32).range(0..=64))]
+          value_parser = super::in_range::<u32>(0, 64))]
     parameters_degree: u32,
     /// Stop with an error before computing when the monomials in the generators (and the
     /// symbolic parameters) would be more than N: each is expanded and is a column of the

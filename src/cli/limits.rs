@@ -15,7 +15,7 @@ pub struct LimitsArgs {
     /// Stop with an error when any exponent would exceed D (default: the file's [limits]
     /// max_degree, else 1000).
     #[arg(long, allow_negative_numbers = true,
-          value_name = "D", value_parser = clap::value_parser!(u32).range(1..=32767))]
+          value_name = "D", value_parser = super::in_range::<u32>(1, 32767))]
     max_degree: Option<u32>,
     /// Stop with an error before a product of polynomials that would form more than N term
     /// products (default: the file's [limits] max_term_products, else 10000000000).

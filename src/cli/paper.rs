@@ -21,7 +21,7 @@ pub struct PaperArgs {
     /// Expand the towers {K_{m,n}, H} for 1 ≤ m, n ≤ N.
     #[arg(long, allow_negative_numbers = true,
           value_name = "N", default_value_t = 8,
-          value_parser = clap::value_parser!(i64).range(1..=40))]
+          value_parser = super::in_range::<i64>(1, 40))]
     tower_max: i64,
 }
 

@@ -70,12 +70,12 @@ pub struct PlotArgs {
     /// Steps of the integrator over the whole time.
     #[arg(long, allow_negative_numbers = true,
           value_name = "N", default_value_t = 10_000,
-          value_parser = clap::value_parser!(u64).range(1..=10_000_000))]
+          value_parser = super::in_range::<u64>(1, 10_000_000))]
     steps: u64,
     /// Points drawn for each curve (at most the steps).
     #[arg(long, allow_negative_numbers = true,
           value_name = "N", default_value_t = 1_000,
-          value_parser = clap::value_parser!(u64).range(1..=100_000))]
+          value_parser = super::in_range::<u64>(1, 100_000))]
     samples: u64,
     /// Draw the curves against this real function instead of the time (`y --against x`
     /// draws the orbit), or against an angle, reduced to [−π, π) (`p_θ --against θ` draws a

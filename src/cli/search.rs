@@ -69,24 +69,24 @@ pub struct SearchArgs {
     /// [default: 2]. A degree above 0 is refused on a system without such variables.
     #[arg(long, allow_negative_numbers = true,
           value_name = "D",
-          value_parser = clap::value_parser!(u32).range(0..=20))]
+          value_parser = super::in_range::<u32>(0, 20))]
     momenta_degree: Option<u32>,
     /// Total degree in the coordinates, not the angles (sum of absolute exponents)
     /// [default: 2].
     #[arg(long, allow_negative_numbers = true,
           value_name = "E",
-          value_parser = clap::value_parser!(u32).range(0..=20))]
+          value_parser = super::in_range::<u32>(0, 20))]
     positions_degree: Option<u32>,
     /// Trigonometric order in the angles [default: 2].
     #[arg(long, allow_negative_numbers = true,
           value_name = "K",
-          value_parser = clap::value_parser!(u32).range(0..=20))]
+          value_parser = super::in_range::<u32>(0, 20))]
     trig_degree: Option<u32>,
     /// Total degree in the Poisson variables, those whose brackets [poisson] declares (M1,
     /// gamma1; one that --when fixes is left out) [default: 2].
     #[arg(long, allow_negative_numbers = true,
           value_name = "P",
-          value_parser = clap::value_parser!(u32).range(0..=20))]
+          value_parser = super::in_range::<u32>(0, 20))]
     poisson_degree: Option<u32>,
     /// Allow negative powers of the coordinates (Laurent potentials such as β/x²).
     #[arg(long)]
@@ -95,13 +95,13 @@ pub struct SearchArgs {
     /// and 1/((x − y)(x − z)) [default: 2].
     #[arg(long, allow_negative_numbers = true,
           value_name = "K",
-          value_parser = clap::value_parser!(u32).range(0..=12))]
+          value_parser = super::in_range::<u32>(0, 12))]
     denominators_degree: Option<u32>,
     /// On a system with radicals, the total degree of their powers, of either sign: 1 takes
     /// r and 1/r, 2 also r², 1/r² and r/s [default: 1].
     #[arg(long, allow_negative_numbers = true,
           value_name = "J",
-          value_parser = clap::value_parser!(u32).range(0..=12))]
+          value_parser = super::in_range::<u32>(0, 12))]
     radicals_degree: Option<u32>,
     /// Parameter values for the linear algebra, such as omega=1,M=2/3 or M=0.5 (a decimal is
     /// the fraction it writes; others are 1, or other values where 1 makes a declared
@@ -116,7 +116,7 @@ pub struct SearchArgs {
     /// Total degree in the parameters kept symbolic.
     #[arg(long, allow_negative_numbers = true,
           value_name = "S", default_value_t = 2, requires = "symbolic",
-          value_parser = clap::value_parser!(u32).range(0..=12))]
+          value_parser = super::in_range::<u32>(0, 12))]
     parameters_degree: u32,
     /// Show only the new integrals, those that nothing known generates. An integral is
     /// generated when it is a sum of the file's named integrals, --known ones, constants and
@@ -154,7 +154,7 @@ pub struct SearchArgs {
     /// them (default: one per core, or RAYON_NUM_THREADS). The output is the same for any.
     #[arg(long, allow_negative_numbers = true,
           value_name = "N",
-          value_parser = clap::value_parser!(u16).range(1..=super::MAX_THREADS))]
+          value_parser = super::in_range::<u16>(1, super::MAX_THREADS))]
     threads: Option<u16>,
     #[command(flatten)]
     limits: LimitsArgs,

@@ -61,7 +61,7 @@ pub struct TowerArgs {
     /// Check every 1 ≤ m, n ≤ N.
     #[arg(long, allow_negative_numbers = true,
           value_name = "N", default_value_t = 8,
-          value_parser = clap::value_parser!(i64).range(1..=64))]
+          value_parser = super::in_range::<i64>(1, 64))]
     max: i64,
     /// The system: harmonic, gravity, or a system file that declares a [[family]] with an
     /// eigenvalue (- reads it from standard input).

@@ -1633,6 +1633,46 @@ fn cli_a_negative_number_for_an_option_gets_its_range() {
     }
 }
 
+/// A ranged option (`--degree`, `--max`, `--max-degree`, a bench's size) refuses a whole
+/// number past 64 bits as out of its range, as it does a smaller one, and text that is no whole
+/// number in words: clap's integer parser said "number too large to fit in target type",
+/// "invalid digit found in string" and "cannot parse integer from empty string".
+#[test]
+fn cli_a_ranged_option_refuses_any_number_or_text_in_words() {
+    let fl = "systems/fokas-lagerstrom-1-3.toml";
+    for (args, message) in [
+        (
+            vec!["closure", fl, "H", "--degree", "99999999999999999999"],
+            "invalid value '99999999999999999999' for '--degree <D>': 99999999999999999999 is \
+             not in 0..=64",
+        ),
+        (
+            vec!["tower", "--system", fl, "--max", "-99999999999999999999"],
+            "invalid value '-99999999999999999999' for '--max <N>': -99999999999999999999 is \
+             not in 1..=64",
+        ),
+        (
+            vec!["check", fl, "--max-degree", "1.5"],
+            "invalid value '1.5' for '--max-degree <D>': not a whole number (from 1 to 32767)",
+        ),
+        (
+            vec!["search", fl, "--trig-degree", ""],
+            "invalid value '' for '--trig-degree <K>': not a whole number (from 0 to 20)",
+        ),
+        (
+            vec!["bench", "W1", "x"],
+            "invalid value 'x' for '<SIZE>': not a whole number (from 1 to 100000)",
+        ),
+    ] {
+        let o = superint_exits(&args, 2);
+        let err = stderr(&o);
+        assert!(err.contains(message), "{args:?}: {err}");
+    }
+    // In the range, as it was.
+    let o = superint_exits(&["closure", fl, "H", "--degree", "65"], 2);
+    assert!(stderr(&o).contains("65 is not in 0..=64"), "{}", stderr(&o));
+}
+
 /// A table takes the phase variables as `closure` does: the Euclidean algebra e(2) of a free
 /// particle is `table FILE p_x p_y L` with no `[[function]]` for the momenta, and so(3) is the
 /// Euler top's `M1 M2 M3`. Both were refused as "not a function"; an angle and a parameter
