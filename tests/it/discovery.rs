@@ -6050,3 +6050,31 @@ fn a_closure_generator_that_does_not_read_says_what_is_wrong_first() {
     assert_eq!(built_in.lines().nth(1), Some(" 1 | Foo"), "{built_in}");
     assert_eq!(built_in.lines().nth(2), file.lines().nth(2), "{built_in}");
 }
+
+/// A closure works in the system's limits: a generator of parameters alone, `A = a^1500` in a
+/// file whose `[limits]` allow a degree of 32767, was refused "the exponent of a would reach
+/// 1500, past the limit of 1000", with the advice to raise --max-degree, which changed
+/// nothing, since the ring the closure is written in took the default limits.
+#[test]
+fn a_closure_takes_the_files_limits() {
+    let text = "name = \"t\"\nhamiltonian = \"p_x^2\"\n[limits]\nmax_degree = 32767\n\
+                [phase_space]\ncoordinates = [\"x\"]\nparameters = [\"a\"]\n\
+                [[function]]\nname = \"L\"\nvalue = \"x*p_x\"\n\
+                [[function]]\nname = \"A\"\nvalue = \"a^1500\"\n";
+    let path = crate::scratch_text("discovery", "closure-limits.toml", text);
+    let path = path.to_str().expect("UTF-8");
+    let out = crate::superint_ok(&["closure", path, "L", "A", "--degree", "1", "--no-timings"]);
+    assert!(out.contains("A = a¹⁵⁰⁰"), "{out}");
+    // The command line's limit is the closure's too.
+    let err = crate::superint_refused(&[
+        "closure",
+        path,
+        "L",
+        "A",
+        "--degree",
+        "1",
+        "--max-degree",
+        "1200",
+    ]);
+    assert!(err.contains("past the limit of 1200"), "{err}");
+}

@@ -774,7 +774,9 @@ struct PrintingRing {
 /// The ring a closure is printed in: the system's parameters and one symbol per generator,
 /// shown by its display name (`A_x` for `Ax`) unless two would then print alike.
 fn printing_ring(vars: &Vars, generators: &[NamedFunction]) -> Result<PrintingRing, EngineError> {
-    let mut builder = VarSet::builder();
+    // The system's limits, which the command line and the file set: the ring's own default
+    // refused a generator `a^1500` at a degree limit of 1000 that no --max-degree raised.
+    let mut builder = VarSet::builder().limits(vars.limits());
     for v in vars.vars() {
         let p = vars.variable(v);
         if p.kind() == VarKind::Parameter {
