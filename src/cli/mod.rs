@@ -32,50 +32,12 @@ use output::OutputArgs;
 /// name the command line echoes ([`trigpoly::quoted_name`]: whole, or past 80 characters its
 /// first 40 and its length), where clap's echoed it whole.
 #[derive(Clone)]
-struct Quoting<T>(fn(&str) -> Result<T, String>);
+struct Quoting<F>(F);
 
-impl<T: Clone + Send + Sync + 'static> clap::builder::TypedValueParser for Quoting<T> {
-    type Value = T;
-
-    fn parse_ref(
-        &self,
-        cmd: &clap::Command,
-        arg: Option<&clap::Arg>,
-        value: &std::ffi::OsStr,
-    ) -> Result<T, clap::Error> {
-        let Some(text) = value.to_str() else {
-            return Err(clap::Error::new(clap::error::ErrorKind::InvalidUtf8).with_cmd(cmd));
-        };
-        (self.0)(text).map_err(|why| refused(cmd, arg, text, &why))
-    }
-}
-
-/// The error of a value `text` of `arg` refused for `why`, as clap words a refused value, with
-/// its pointer to the help.
-fn refused(cmd: &clap::Command, arg: Option<&clap::Arg>, text: &str, why: &str) -> clap::Error {
-    let arg = arg.map_or_else(|| "...".to_string(), |a| a.to_string());
-    let message = format!(
-        "invalid value {} for '{arg}': {why}\n\nFor more information, try '--help'.\n",
-        trigpoly::quoted_name(text)
-    );
-    clap::Error::raw(clap::error::ErrorKind::ValueValidation, message).with_cmd(cmd)
-}
-
-/// A value parser of a whole number from `lo` to `hi` (`tower --max`, `closure --degree`),
-/// refusing any other whole number as out of the range, however large, and other text as no
-/// whole number, in words: clap's ranged parser said "number too large to fit in target type"
-/// of `99999999999999999999`, "invalid digit found in string" of `1.5` and "cannot parse
-/// integer from empty string" of `''`, its integer parser's own words.
-#[derive(Clone)]
-struct InRange<T>(i64, i64, std::marker::PhantomData<T>);
-
-/// [`InRange`] of `T` from `lo` to `hi`, which `T` holds.
-const fn in_range<T>(lo: i64, hi: i64) -> InRange<T> {
-    InRange(lo, hi, std::marker::PhantomData)
-}
-
-impl<T: TryFrom<i64> + Clone + Send + Sync + 'static> clap::builder::TypedValueParser
-    for InRange<T>
+impl<T, F> clap::builder::TypedValueParser for Quoting<F>
+where
+    T: Clone + Send + Sync + 'static,
+    F: Fn(&str) -> Result<T, String> + Clone + Send + Sync + 'static,
 {
     type Value = T;
 
@@ -88,22 +50,41 @@ impl<T: TryFrom<i64> + Clone + Send + Sync + 'static> clap::builder::TypedValueP
         let Some(text) = value.to_str() else {
             return Err(clap::Error::new(clap::error::ErrorKind::InvalidUtf8).with_cmd(cmd));
         };
-        let InRange(lo, hi, _) = *self;
+        (self.0)(text).map_err(|why| {
+            let arg = arg.map_or_else(|| "...".to_string(), |a| a.to_string());
+            // As clap words a refused value, with its pointer to the help.
+            let message = format!(
+                "invalid value {} for '{arg}': {why}\n\nFor more information, try '--help'.\n",
+                trigpoly::quoted_name(text)
+            );
+            clap::Error::raw(clap::error::ErrorKind::ValueValidation, message).with_cmd(cmd)
+        })
+    }
+}
+
+/// The value parser of a whole number from `lo` to `hi` (`tower --max`, `closure --degree`),
+/// which `T` holds: any other whole number, however large, is out of the range, and other
+/// text no whole number, in words, where clap's ranged parser said "number too large to fit
+/// in target type" of `99999999999999999999`, "invalid digit found in string" of `1.5` and
+/// "cannot parse integer from empty string" of `''`, its integer parser's own words.
+fn in_range<T: TryFrom<i64>>(
+    lo: i64,
+    hi: i64,
+) -> Quoting<impl Fn(&str) -> Result<T, String> + Clone + Send + Sync + 'static> {
+    Quoting(move |text: &str| {
         let t = text.trim();
         let digits = t.strip_prefix(['-', '+']).unwrap_or(t);
-        let why = match t.parse::<i64>() {
-            Ok(n) if (lo..=hi).contains(&n) => match T::try_from(n) {
-                Ok(value) => return Ok(value),
-                Err(_) => format!("{n} is too large here"),
-            },
-            Ok(n) => format!("{n} is not in {lo}..={hi}"),
-            Err(_) if !digits.is_empty() && digits.bytes().all(|b| b.is_ascii_digit()) => {
-                format!("{t} is not in {lo}..={hi}")
+        match t.parse::<i64>() {
+            Ok(n) if (lo..=hi).contains(&n) => {
+                T::try_from(n).map_err(|_| format!("{n} is too large here"))
             }
-            Err(_) => format!("not a whole number (from {lo} to {hi})"),
-        };
-        Err(refused(cmd, arg, text, &why))
-    }
+            Ok(n) => Err(format!("{n} is not in {lo}..={hi}")),
+            Err(_) if !digits.is_empty() && digits.bytes().all(|b| b.is_ascii_digit()) => {
+                Err(format!("{t} is not in {lo}..={hi}"))
+            }
+            Err(_) => Err(format!("not a whole number (from {lo} to {hi})")),
+        }
+    })
 }
 
 /// A count or a limit (`--max-terms`): a whole number of at least 1. `u64`'s own parser said
