@@ -576,6 +576,12 @@ mod tests {
                            or √x"),
         ("k/√x²", (1, 5), "a power after '√x' is ambiguous: write (√x)^2 for a power of the \
                            root, or √(x^2)"),
+        // A number run into a name: the root of the product (as `√xy` is of the names run
+        // together) or the root times the name.
+        ("k/√4x", (1, 5), "'√4x' is ambiguous: write √(4x) for the root of the product, or √4 x \
+                           for the root times x"),
+        ("√12ab", (1, 4), "'√12ab' is ambiguous: write √(12ab) for the root of the product, or \
+                           √12 ab for the root times ab"),
         // Mathematica's calls, with what to write instead.
         ("k/Sqrt[x^2 + y^2]", (1, 7), "unexpected character '['; a function takes its \
                                        argument in parentheses, sqrt(x^2 + y^2), cos(theta), \

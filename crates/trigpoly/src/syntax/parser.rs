@@ -1068,25 +1068,37 @@ impl Parser<'_> {
     }
 
     /// Parses `√(x² + y²)` or `√x`, as the text form prints a root: the call `sqrt(…)`. A
-    /// power after `√x` is refused, since `√x²` could raise the root or the name.
+    /// power after `√x` is refused, since `√x²` could raise the root or the name, and so is
+    /// a number run into what follows it, since `√4x` could be the root of `4x` (as `√xy` is
+    /// the root of the names run together, `xy`) or `√4` times `x`.
     fn root(&mut self) -> PResult<Expr> {
         let root = self.bump()?.span;
         let arg = match self.tok.tok {
             Tok::LParen => self.nested(root, |p| p.paren())?,
             Tok::Name(_) | Tok::Int(_) => {
                 let arg = self.nested(root, |p| p.atom())?;
+                let radicand = self.src[root.end..arg.span.end].trim_start();
                 if !matches!(arg.kind, ExprKind::Name(_) | ExprKind::Integer(_)) {
                     return Err(ParseError::new(
                         root.to(arg.span),
                         format!(
-                            "write the radicand of {} in parentheses, √({})",
+                            "write the radicand of {} in parentheses, √({radicand})",
                             self.quote(root.to(arg.span)),
-                            self.src[root.end..arg.span.end].trim_start()
                         ),
                     ));
                 }
+                if matches!(arg.kind, ExprKind::Integer(_))
+                    && matches!(self.tok.tok, Tok::Name(_))
+                    && self.tok.span.start == arg.span.end
+                {
+                    let next = &self.src[self.tok.span.start..self.tok.span.end];
+                    return Err(self.error(format!(
+                        "{} is ambiguous: write √({radicand}{next}) for the root of the product, \
+                         or √{radicand} {next} for the root times {next}",
+                        self.quote(root.to(self.tok.span))
+                    )));
+                }
                 if matches!(self.tok.tok, Tok::Sup { .. } | Tok::Caret) {
-                    let radicand = self.src[root.end..arg.span.end].trim_start();
                     return Err(self.error(format!(
                         "a power after {} is ambiguous: write (√{radicand})^2 for a power of the \
                          root, or √({radicand}^2)",
