@@ -183,7 +183,7 @@ impl System {
     /// function shown `P_{1,1}` is read as `P_1_1`, whether written so or with the braces), or
     /// as a name spells it, a prime as `p` (a function shown `P'_{1,1}` is read as `Pp_1_1`, as
     /// a system file names the instances of its family `Pp` shown `P'`, and as `y'` is named
-    /// `yp`), if any: the one lookup of a function by a name, through which [`System::get`] and
+    /// `yp`; a display read as `name` itself is taken first), if any: the one lookup of a function by a name, through which [`System::get`] and
     /// [`System::display_name`] find it.
     ///
     /// ```
@@ -195,21 +195,33 @@ impl System {
     /// rotor.define("P11p", "P'_{1,1}", p.clone())?;
     /// assert_eq!(rotor.get("Pp_1_1")?, &p);
     /// assert_eq!(rotor.parse("Pp_{1,1}")?, p);
+    /// // A display that reads as the name itself comes first, whatever the order.
+    /// let q = rotor.parse("im(Z*exp(-i*theta))")?;
+    /// rotor.define("Q", "Pp_{1,1}", q.clone())?;
+    /// assert_eq!(rotor.get("Pp_1_1")?, &q);
     /// # Ok::<(), brackets::EngineError>(())
     /// ```
     pub fn function(&self, name: &str) -> Option<&NamedFunction> {
         let functions = &self.functions;
+        // A display as an expression reads it, for a display written in LaTeX alone.
+        let read = |f: &NamedFunction| match f.display.contains(['{', '\\']) {
+            true => trigpoly::syntax::latex_name(&f.display),
+            false => None,
+        };
+        // Each reading in turn over every function, so that a display that reads as `name`
+        // itself is taken before another whose primes spelt as `p` would (`Pp_{1,1}` before
+        // `P'_{1,1}` for `Pp_1_1`).
         functions
             .iter()
             .find(|f| f.name == name || f.display == name)
             .or_else(|| {
+                functions
+                    .iter()
+                    .find(|f| read(f).is_some_and(|r| r == name))
+            })
+            .or_else(|| {
                 functions.iter().find(|f| {
-                    if !f.display.contains(['{', '\\']) {
-                        return false;
-                    }
-                    trigpoly::syntax::latex_name(&f.display).is_some_and(|read| {
-                        read == name || (read.contains('\'') && read.replace('\'', "p") == name)
-                    })
+                    read(f).is_some_and(|r| r.contains('\'') && r.replace('\'', "p") == name)
                 })
             })
     }
