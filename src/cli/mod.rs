@@ -79,8 +79,9 @@ fn in_range<T: TryFrom<i64>>(
                 T::try_from(n).map_err(|_| format!("{n} is too large here"))
             }
             Ok(n) => Err(format!("{n} is not in {lo}..={hi}")),
+            // Shown as the value is quoted before it, its first 40 digits past 80.
             Err(_) if !digits.is_empty() && digits.bytes().all(|b| b.is_ascii_digit()) => {
-                Err(format!("{t} is not in {lo}..={hi}"))
+                Err(format!("{} is not in {lo}..={hi}", trigpoly::shown_name(t)))
             }
             Err(_) => Err(format!("not a whole number (from {lo} to {hi})")),
         }

@@ -1668,6 +1668,13 @@ fn cli_a_ranged_option_refuses_any_number_or_text_in_words() {
         let err = stderr(&o);
         assert!(err.contains(message), "{args:?}: {err}");
     }
+    // A number too long to echo is shown as its quotation shows it, not written out whole.
+    let long = "9".repeat(120);
+    let o = superint_exits(&["closure", fl, "H", "--degree", &long], 2);
+    let err = stderr(&o);
+    let shown = format!("{}… is not in 0..=64", "9".repeat(40));
+    assert!(err.contains(&shown), "{err}");
+    assert!(!err.contains(&long), "{err}");
     // In the range, as it was.
     let o = superint_exits(&["closure", fl, "H", "--degree", "65"], 2);
     assert!(stderr(&o).contains("65 is not in 0..=64"), "{}", stderr(&o));
