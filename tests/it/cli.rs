@@ -1675,9 +1675,14 @@ fn cli_a_ranged_option_refuses_any_number_or_text_in_words() {
     let shown = format!("{}… is not in 0..=64", "9".repeat(40));
     assert!(err.contains(&shown), "{err}");
     assert!(!err.contains(&long), "{err}");
-    // In the range, as it was.
+    // Just past the range, refused as it was.
     let o = superint_exits(&["closure", fl, "H", "--degree", "65"], 2);
     assert!(stderr(&o).contains("65 is not in 0..=64"), "{}", stderr(&o));
+    // At either end of the range, and with a sign, read as it was.
+    superint_exits(&["check", fl, "--max-degree", "32767", "--no-timings"], 0);
+    superint_exits(&["check", fl, "--max-degree", "+32767", "--no-timings"], 0);
+    let o = superint_exits(&["closure", fl, "H", "--degree", "0", "--no-timings"], 0);
+    assert!(stdout(&o).starts_with("Closure of H"), "{}", stdout(&o));
 }
 
 /// A table takes the phase variables as `closure` does: the Euclidean algebra e(2) of a free
