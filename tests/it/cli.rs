@@ -5278,3 +5278,35 @@ fn cli_an_unclosed_parenthesis_opens_at_the_same_place_for_a_file_and_a_built_in
         }
     }
 }
+
+/// A power whose terms the term limit lets through but the machine cannot hold stops with
+/// exit 2 and says so: `(r + p_r + p_phi + M + k + 1)^300` under `--max-terms 10^12`, of
+/// 21 281 794 436 terms, reserved room for all of them up front and aborted the process
+/// (exit 134, "memory allocation of 340508710976 bytes failed"). The power here has
+/// C(12 005, 5) ≈ 2.1·10¹⁸ terms, whose room passes `isize::MAX` bytes, so that the
+/// reservation is refused before the allocator is asked and nothing is allocated, whatever
+/// the machine's overcommit.
+#[test]
+fn a_power_too_large_for_memory_stops_with_exit_2() {
+    let out = superint_exits(
+        &[
+            "expand",
+            "systems/kepler.toml",
+            "(r + p_r + p_phi + M + k + 1)^12000",
+            "--max-terms",
+            "18000000000000000000",
+            "--max-degree",
+            "32767",
+            "--no-timings",
+        ],
+        2,
+    );
+    let err = stderr(&out);
+    assert!(
+        err.contains(
+            "the result would have 2076193224270027401 terms, about 57.6 EiB of memory, more \
+             than this machine can hold"
+        ),
+        "{err}"
+    );
+}

@@ -80,6 +80,18 @@ pub enum AlgebraError {
         /// The limit in force.
         limit: usize,
     },
+    /// A result whose terms, as many as the term limit allows, would need more memory than the
+    /// allocator gives (a power `(r + p_r + p_φ + M + k + 1)^300` of 21 281 794 436 terms under
+    /// `--max-terms 10^12`, which reserved room for all of them and aborted the process): room
+    /// reserved for a predicted count of terms is refused with this, not an abort. The term
+    /// limit let it through, so it is classed with that limit ([`LimitKind::Terms`]).
+    #[error("{}; {ADVICE_LOWER}", too_large_for_memory(*.terms, *.bytes))]
+    TooLargeForMemory {
+        /// The terms the result would have.
+        terms: u128,
+        /// The bytes they would need, about.
+        bytes: u128,
+    },
     /// An element whose normal form in `cos θ, sin θ` could print more terms than the limit
     /// allows (each `e^{ikθ}` prints as up to `|k| + 1` of them).
     #[error("{}; raise the limit or print less of it", too_many_printed(*.terms, *.limit))]
@@ -257,9 +269,9 @@ impl AlgebraError {
     #[must_use]
     pub fn limit(&self) -> Option<LimitKind> {
         match self {
-            AlgebraError::TooManyTerms { .. } | AlgebraError::TooManyPrintedTerms { .. } => {
-                Some(LimitKind::Terms)
-            }
+            AlgebraError::TooManyTerms { .. }
+            | AlgebraError::TooManyPrintedTerms { .. }
+            | AlgebraError::TooLargeForMemory { .. } => Some(LimitKind::Terms),
             AlgebraError::TooMuchWork { .. } => Some(LimitKind::Work),
             AlgebraError::ExponentTooLarge { exponent, .. } => {
                 Some(LimitKind::Degree(exponent.unsigned_abs()))
@@ -271,8 +283,9 @@ impl AlgebraError {
 
     /// The message without the advice a limit's ends with (`; raise the limit or simplify
     /// the input`): what happened, for a caller that gives advice of its own (a command
-    /// line's options). The messages of the term limit, of its printing and of the work limit
-    /// end with advice; every other message is the whole message.
+    /// line's options). The messages of the term limit, of its printing, of the work limit and
+    /// of a result too large for memory end with advice; every other message is the whole
+    /// message.
     ///
     /// ```
     /// use trigpoly::AlgebraError;
@@ -287,6 +300,9 @@ impl AlgebraError {
         match self {
             AlgebraError::TooManyTerms { limit } => too_many_terms(*limit),
             AlgebraError::TooManyPrintedTerms { terms, limit } => too_many_printed(*terms, *limit),
+            AlgebraError::TooLargeForMemory { terms, bytes } => {
+                too_large_for_memory(*terms, *bytes)
+            }
             AlgebraError::TooMuchWork {
                 left,
                 right,
@@ -315,6 +331,31 @@ pub enum LimitKind {
 
 /// The advice of the term and work limits' messages.
 const ADVICE_SIMPLIFY: &str = "raise the limit or simplify the input";
+
+/// The advice of [`AlgebraError::TooLargeForMemory`]'s message.
+const ADVICE_LOWER: &str = "simplify the input or lower the term limit";
+
+/// What [`AlgebraError::TooLargeForMemory`] says, without its advice: the bytes in the
+/// largest binary unit that leaves at least one whole.
+fn too_large_for_memory(terms: u128, bytes: u128) -> String {
+    const UNITS: [&str; 7] = ["bytes", "KiB", "MiB", "GiB", "TiB", "PiB", "EiB"];
+    let mut unit = 0;
+    while unit + 1 < UNITS.len() && bytes >> (10 * (unit + 1)) > 0 {
+        unit += 1;
+    }
+    let size = match unit {
+        0 => format!("{bytes} bytes"),
+        _ => format!(
+            "{:.1} {}",
+            bytes as f64 / (1u128 << (10 * unit)) as f64,
+            UNITS[unit]
+        ),
+    };
+    format!(
+        "the result would have {terms} terms, about {size} of memory, more than this machine \
+         can hold"
+    )
+}
 
 /// What [`AlgebraError::TooManyTerms`] says, without its advice.
 fn too_many_terms(limit: usize) -> String {

@@ -71,7 +71,7 @@ impl<C: Coefficient> Poly<C> {
                 binomial_u128(e as u128 + self.len() as u128 - 1, self.len() as u128 - 1);
             let limit = self.vars.limits().max_terms;
             if self.len() <= 6 && compositions <= limit as u128 {
-                return Ok(self.multinomial_pow(e as usize));
+                return self.multinomial_pow(e as usize);
             }
             if compositions > limit as u128 && self.compositions_are_distinct() {
                 // Every composition is its own term: the power has too many, known up front
@@ -95,8 +95,10 @@ impl<C: Coefficient> Poly<C> {
     /// `e = a_1 + … + a_t`, with coefficient `e!/(a_1!…a_t!) · Π c_i^{a_i}` and monomial
     /// `Π m_i^{a_i}`; the terms are sorted once and equal monomials combined. For a short
     /// polynomial this is as many term operations as the power has terms, where repeated
-    /// multiplication needs about `e` times more.
-    fn multinomial_pow(&self, e: usize) -> Self {
+    /// multiplication needs about `e` times more. The room for every term is reserved up front
+    /// and a refusal is `Err(TooLargeForMemory)`, not an abort: a term limit raised far enough
+    /// lets through a power of more terms than the machine can hold.
+    fn multinomial_pow(&self, e: usize) -> Result<Self, AlgebraError> {
         let t = self.len();
         let compositions = binomial_u128(e as u128 + t as u128 - 1, t as u128 - 1) as usize;
         let content = || self.content.pow(e as i64).expect("nonzero content");
@@ -104,11 +106,14 @@ impl<C: Coefficient> Poly<C> {
             if let Some(terms) =
                 gather::multinomial_power(self.layout(), self.raw_terms(), e, compositions)
             {
-                return Self::from_gathered(&self.vars, content(), terms);
+                return Ok(Self::from_gathered(&self.vars, content(), terms));
             }
         }
         let w = self.words();
         let layout = self.layout();
+        // The room for the terms first, before any work.
+        let (mut keys, mut coeffs) = (Vec::new(), Vec::new());
+        reserve_terms::<C::Int>(&mut keys, &mut coeffs, compositions, w)?;
         // Pascal's triangle up to e.
         let mut binom: Vec<Vec<Integer>> = vec![vec![Integer::ONE]];
         for n in 1..=e {
@@ -142,8 +147,6 @@ impl<C: Coefficient> Poly<C> {
                     .collect()
             })
             .collect();
-        let mut keys: Vec<u64> = Vec::with_capacity(compositions * w);
-        let mut coeffs: Vec<C::Int> = Vec::with_capacity(compositions);
         struct Walk<'a, I> {
             t: usize,
             w: usize,
@@ -189,10 +192,14 @@ impl<C: Coefficient> Poly<C> {
         go(&mut walk, 0, e, &C::Int::from_integer(Integer::ONE));
         // Sort once, combine equal monomials.
         let n = coeffs.len();
-        let mut order: Vec<usize> = (0..n).collect();
+        let mut order: Vec<usize> = Vec::new();
+        let (mut out_e, mut out_c) = (Vec::new(), Vec::new());
+        reserve_terms::<C::Int>(&mut out_e, &mut out_c, n, w)?;
+        order
+            .try_reserve_exact(n)
+            .map_err(|_| too_large_for_memory::<C::Int>(n, w))?;
+        order.extend(0..n);
         order.sort_unstable_by(|&a, &b| keys[b * w..(b + 1) * w].cmp(&keys[a * w..(a + 1) * w]));
-        let mut out_e: Vec<u64> = Vec::with_capacity(n * w);
-        let mut out_c: Vec<C::Int> = Vec::with_capacity(n);
         let mut coeffs: Vec<Option<C::Int>> = coeffs.into_iter().map(Some).collect();
         for k in order {
             let key = &keys[k * w..(k + 1) * w];
@@ -205,7 +212,12 @@ impl<C: Coefficient> Poly<C> {
                 out_c.push(c);
             }
         }
-        Self::drop_zeros_and_normalize(&self.vars, content(), out_e, out_c)
+        Ok(Self::drop_zeros_and_normalize(
+            &self.vars,
+            content(),
+            out_e,
+            out_c,
+        ))
     }
 
     /// Whether distinct compositions `Σ a_i = e` give distinct monomials `Π m_i^{a_i}`: true
@@ -280,4 +292,30 @@ fn binomial_u128(n: u128, k: u128) -> u128 {
 pub(crate) fn pow_field<C: Coefficient>(c: &C, e: i64) -> C {
     let z = c.to_gaussian().pow(e).expect("nonzero base");
     C::from_gaussian(&z).expect("powers stay in the field")
+}
+
+/// Room for `terms` terms of `words` words in `exps` and `coeffs`, reserved exactly, or
+/// `Err(TooLargeForMemory)` if the allocator refuses it (or its size passes `isize::MAX`):
+/// for a count of terms predicted before they are formed, which a raised term limit may let
+/// grow past the machine's memory.
+pub(super) fn reserve_terms<I>(
+    exps: &mut Vec<u64>,
+    coeffs: &mut Vec<I>,
+    terms: usize,
+    words: usize,
+) -> Result<(), AlgebraError> {
+    let refused = || too_large_for_memory::<I>(terms, words);
+    let words_needed = terms.checked_mul(words).ok_or_else(refused)?;
+    exps.try_reserve_exact(words_needed)
+        .map_err(|_| refused())?;
+    coeffs.try_reserve_exact(terms).map_err(|_| refused())
+}
+
+/// [`AlgebraError::TooLargeForMemory`] of `terms` terms of `words` words and coefficients `I`.
+fn too_large_for_memory<I>(terms: usize, words: usize) -> AlgebraError {
+    let per_term = 8 * words as u128 + std::mem::size_of::<I>() as u128;
+    AlgebraError::TooLargeForMemory {
+        terms: terms as u128,
+        bytes: terms as u128 * per_term,
+    }
 }
