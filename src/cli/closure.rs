@@ -245,7 +245,7 @@ fn close(a: &ClosureArgs, names: &[String], subject: &Subject) -> anyhow::Result
         let name_like = name.chars().next().is_some_and(char::is_alphabetic)
             && name
                 .chars()
-                .all(|c| c.is_alphanumeric() || "_{}, ".contains(c) || c == '\u{304}');
+                .all(|c| c.is_alphanumeric() || "_{}, '".contains(c) || c == '\u{304}');
         if !name_like && !defined.iter().any(|d| d.0 == name) {
             // A name the system does not have, for the example.
             let free = ["G", "X", "Y", "W", "Gen"]

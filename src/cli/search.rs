@@ -240,6 +240,9 @@ pub(crate) fn identifier(name: &str) -> String {
     for c in name.chars() {
         if c.is_alphanumeric() {
             out.push(c);
+        } else if c == '\'' && !out.is_empty() {
+            // A prime as a name spells it (`P'_{1,1}` is `Pp_1_1`, as `y'` is `yp`).
+            out.push('p');
         } else if !out.ends_with('_') && !out.is_empty() {
             out.push('_');
         }

@@ -1232,6 +1232,27 @@ fn a_builtin_closure_under_gravity_takes_a_resonant_function_as_the_file_writes_
     assert_eq!(closure(&["systems/gravity-rotor.toml"], "Pp_1_1"), own);
 }
 
+/// A generator written as the closure prints it, `P'_{1,1}` under gravity, is that function on
+/// the built-in and on the file: the prime was taken for an expression's character, and the
+/// generator refused as "an expression, not the name of a function".
+#[test]
+fn a_closure_takes_a_generator_as_it_prints_it_with_a_prime() {
+    let closure = |system: &[&str], p: &str| {
+        let generators = ["L", p, "--when", "p_theta=I*omega", "--no-timings"];
+        crate::superint_ok(&[&["closure"], system, &generators[..], &["--format", "json"]].concat())
+    };
+    for system in [
+        &["--system", "gravity"][..],
+        &["systems/gravity-rotor.toml"][..],
+    ] {
+        assert_eq!(
+            closure(system, "P'_{1,1}"),
+            closure(system, "Pp_1_1"),
+            "{system:?}"
+        );
+    }
+}
+
 /// The built-in harmonic rotor prints its condition as `systems/harmonic-rotor.toml` prints
 /// it, the value as it is written, `p_θ = Iω` (it printed the normal form, `p_θ = ωI`, the
 /// order of its variables), and its resonant functions as the file its instances, `P_{1,1}`:
