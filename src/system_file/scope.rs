@@ -367,17 +367,20 @@ pub(crate) enum Limit {
     /// An exponent or order past the most that `max_degree` may be set to, which no limit
     /// reaches.
     PastEvery,
+    /// A result past the machine's memory, which a larger limit only lets through.
+    Memory,
 }
 
 impl Limit {
     /// The limit that stopped the algebra with `e`, if a limit did: the term limit (of a
-    /// result or of its printing), the work limit, or the degree limit (an exponent, an
-    /// angle's order), past every limit when its number is.
+    /// result or of its printing), the work limit, the degree limit (an exponent, an angle's
+    /// order), past every limit when its number is, or the machine's memory.
     fn of_algebra(e: &AlgebraError) -> Option<Limit> {
         Some(match e.limit()? {
             LimitKind::Work => Limit::Work,
             LimitKind::Terms => Limit::Size,
             LimitKind::Degree(n) => Limit::of_degree(Some(n)),
+            LimitKind::Memory => Limit::Memory,
             // A kind of limit this crate does not know yet: one that a larger limit may reach.
             _ => Limit::Size,
         })
@@ -420,6 +423,9 @@ impl Limit {
                 "no limit reaches this exponent or order: max_degree is at most \
                  {MAX_DEGREE_CEILING}; write the expression without so large a power or multiple"
             ),
+            Limit::Memory => {
+                "no limit makes room for it: write the expression with smaller powers".to_string()
+            }
             Limit::Work => "if the machine has the time, raise the limit with max_term_products \
                             under [limits] in the file (on the command line, --max-term-products \
                             N; in a program, the LimitsOverride given to the loader)"

@@ -5309,4 +5309,34 @@ fn a_power_too_large_for_memory_stops_with_exit_2() {
         ),
         "{err}"
     );
+    // No larger limit makes room for it: the hint does not say to raise one.
+    assert!(
+        err.contains("hint: no limit makes room for it: write the expression with smaller powers"),
+        "{err}"
+    );
+    assert!(!err.contains("raise the limit"), "{err}");
+}
+
+/// A claim whose power is past the machine's memory is undecided, stopped at a limit, with
+/// the hint that no limit makes room for it; the file is checked, not refused.
+#[test]
+fn a_claim_too_large_for_memory_is_undecided_with_its_hint() {
+    let file = crate::scratch_text(
+        "memory",
+        "big.toml",
+        "name = \"big\"\nhamiltonian = \"p_x^2/2\"\n[phase_space]\ncoordinates = [\"x\", \"y\", \"z\"]\n\
+         [[claim]]\nid = \"big\"\nclaim = \"(x + y + z + p_x + p_y + 1)^12000 = 0\"\n\
+         [limits]\nmax_terms = 9000000000000000000\nmax_degree = 32767\n",
+    );
+    let out = superint_exits(&["check", file.to_str().unwrap(), "--no-timings"], 2);
+    let (stdout, err) = (String::from_utf8_lossy(&out.stdout), stderr(&out));
+    assert!(stdout.contains("[big UNDECIDED]"), "{stdout}");
+    assert!(
+        stdout.contains("0 proved, 0 refuted, 1 undecided"),
+        "{stdout}"
+    );
+    assert!(
+        err.contains("hint: no limit makes room for it: write the expression with smaller powers"),
+        "{err}"
+    );
 }

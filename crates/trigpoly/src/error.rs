@@ -84,7 +84,7 @@ pub enum AlgebraError {
     /// allocator gives (a power `(r + p_r + p_φ + M + k + 1)^300` of 21 281 794 436 terms under
     /// `--max-terms 10^12`, which reserved room for all of them and aborted the process): room
     /// reserved for a predicted count of terms is refused with this, not an abort. The term
-    /// limit let it through, so it is classed with that limit ([`LimitKind::Terms`]).
+    /// limit let it through; no larger limit reaches it ([`LimitKind::Memory`]).
     #[error("{}; {ADVICE_LOWER}", too_large_for_memory(*.terms, *.bytes))]
     TooLargeForMemory {
         /// The terms the result would have.
@@ -269,9 +269,10 @@ impl AlgebraError {
     #[must_use]
     pub fn limit(&self) -> Option<LimitKind> {
         match self {
-            AlgebraError::TooManyTerms { .. }
-            | AlgebraError::TooManyPrintedTerms { .. }
-            | AlgebraError::TooLargeForMemory { .. } => Some(LimitKind::Terms),
+            AlgebraError::TooManyTerms { .. } | AlgebraError::TooManyPrintedTerms { .. } => {
+                Some(LimitKind::Terms)
+            }
+            AlgebraError::TooLargeForMemory { .. } => Some(LimitKind::Memory),
             AlgebraError::TooMuchWork { .. } => Some(LimitKind::Work),
             AlgebraError::ExponentTooLarge { exponent, .. } => {
                 Some(LimitKind::Degree(exponent.unsigned_abs()))
@@ -327,6 +328,9 @@ pub enum LimitKind {
     /// The degree limit ([`Limits::max_degree`](crate::Limits)), which an exponent or an
     /// angle's order would pass: its size `|n|`.
     Degree(u64),
+    /// The machine's memory, which a result the term limit let through would pass: no larger
+    /// limit reaches it.
+    Memory,
 }
 
 /// The advice of the term and work limits' messages.
