@@ -570,10 +570,10 @@ mod tests {
         // Characters pasted from print, with what to write instead.
         ("½x", (1, 1), "unexpected character '½'; write a fraction such as 1/2"),
         ("x – y", (1, 3), "unexpected character '–'; a dash is no minus sign: write '-' or '−'"),
-        // `√` as the text form prints a root takes parentheses or a name, with no power after
-        // the name.
-        ("k/√-x", (1, 4), "expected '(' or a name after '√', found '-'; write √(x^2 + y^2) \
-                           or √x"),
+        // `√` as the text form prints a root takes parentheses, a name or a number, with no
+        // power after the name.
+        ("k/√-x", (1, 4), "expected '(', a name or a number after '√', found '-'; write \
+                           √(x^2 + y^2) or √x"),
         ("k/√x²", (1, 5), "a power after '√x' is ambiguous: write (√x)^2 for a power of the \
                            root, or √(x^2)"),
         // A number run into a name: the root of the product (as `√xy` is of the names run

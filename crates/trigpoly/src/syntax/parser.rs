@@ -1109,7 +1109,8 @@ impl Parser<'_> {
             }
             _ => {
                 return Err(self.error(format!(
-                    "expected '(' or a name after '√', found {}; write √(x^2 + y^2) or √x",
+                    "expected '(', a name or a number after '√', found {}; write \
+                     √(x^2 + y^2) or √x",
                     self.found()
                 )))
             }
