@@ -732,8 +732,8 @@ fn tower_families(file: &LoadedSystem, family: Option<&str>) -> Result<Vec<usize
 /// The list of families `names` refused at the byte range `span` of it, for `message`: on the
 /// command line as `--fix`'s list is, `<command line>:1:C: --family:` with `message`, the list
 /// and a caret under the place; from a program, against the system's origin, `unplaced` where
-/// the message needs the caret (`after this comma`) and the program is told otherwise, else
-/// `message`.
+/// the message needs the caret (`after this comma`, `before this comma`) and the program is
+/// told otherwise, else `message`.
 fn family_list_refused(
     file: &LoadedSystem,
     names: &str,
