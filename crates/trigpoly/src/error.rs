@@ -347,13 +347,14 @@ fn too_large_for_memory(terms: u128, bytes: u128) -> String {
     while unit + 1 < UNITS.len() && bytes >> (10 * (unit + 1)) > 0 {
         unit += 1;
     }
+    // In tenths of the unit, rounded, in whole numbers.
     let size = match unit {
         0 => format!("{bytes} bytes"),
-        _ => format!(
-            "{:.1} {}",
-            bytes as f64 / (1u128 << (10 * unit)) as f64,
-            UNITS[unit]
-        ),
+        _ => {
+            let scale = 1u128 << (10 * unit);
+            let tenths = (bytes.saturating_mul(10) + scale / 2) / scale;
+            format!("{}.{} {}", tenths / 10, tenths % 10, UNITS[unit])
+        }
     };
     format!(
         "the result would have {terms} terms, about {size} of memory, more than this machine \
