@@ -183,8 +183,8 @@ impl System {
     /// function shown `P_{1,1}` is read as `P_1_1`, whether written so or with the braces), or
     /// as a name spells it, a prime as `p` (a function shown `P'_{1,1}` is read as `Pp_1_1`, as
     /// a system file names the instances of its family `Pp` shown `P'`, and as `y'` is named
-    /// `yp`; a display read as `name` itself is taken first), if any: the one lookup of a function by a name, through which [`System::get`] and
-    /// [`System::display_name`] find it.
+    /// `yp`; a display read as `name` itself is taken first), if any: the one lookup of a
+    /// function by a name, through which [`System::get`] and [`System::display_name`] find it.
     ///
     /// ```
     /// let mut rotor = brackets::systems::harmonic_rotor();
