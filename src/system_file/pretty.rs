@@ -2,6 +2,8 @@
 //! unicode names (`p_θ`, `ω`, `Z̄`, `K_{2,3}`), superscript exponents and implicit products:
 //! `{L, G1} = -G2` reads `{L, G1} = −G2`, `4*G1^2 + omega^2*L^2` reads `4 G1² + ω² L²`.
 
+use std::convert::Infallible;
+
 use trigpoly::superscript;
 use trigpoly::syntax::{Expr as Tree, ExprKind, LEFT_DEEP_SUM};
 
@@ -223,23 +225,13 @@ impl LoadedSystem {
         // 100 000 letters) is a tree about `log₂ n` high, which `print` walks without
         // overflowing the stack, as the parser's sums are.
         let mul = |a: Tree, b: Tree| at(ExprKind::Mul(Box::new(a), Box::new(b)));
-        let mut level: Vec<Tree> = Vec::with_capacity(count.div_ceil(LEFT_DEEP_SUM));
+        let mut runs: Vec<Tree> = Vec::with_capacity(count.div_ceil(LEFT_DEEP_SUM));
         let mut factors = factors.into_iter();
         while let Some(first) = factors.next() {
-            level.push(factors.by_ref().take(LEFT_DEEP_SUM - 1).fold(first, mul));
+            runs.push(factors.by_ref().take(LEFT_DEEP_SUM - 1).fold(first, mul));
         }
-        while level.len() > 1 {
-            let mut pairs = level.into_iter();
-            let mut next = Vec::new();
-            while let Some(a) = pairs.next() {
-                next.push(match pairs.next() {
-                    Some(b) => mul(a, b),
-                    None => a,
-                });
-            }
-            level = next;
-        }
-        level.pop()
+        let joined = trigpoly::syntax::balanced(runs, |a, b| Ok::<_, Infallible>(mul(a, b)));
+        joined.unwrap_or_else(|never| match never {})
     }
 
     /// A name: a function's is a word in a product.

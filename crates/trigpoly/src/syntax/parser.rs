@@ -27,6 +27,28 @@ pub const MAX_HEIGHT: usize = 2048;
 /// `a − b + c − d`), whose height grows as the logarithm of its length.
 pub const LEFT_DEEP_SUM: usize = 64;
 
+/// `items` joined pairwise, level by level, into one balanced tree about `log₂ n` high
+/// (`(a b)(c d)` of `a, b, c, d`; an odd one out is carried up a level as it is), as the parser
+/// joins a sum longer than [`LEFT_DEEP_SUM`]: for a consumer that builds a long chain of its
+/// own and recurses over it. `None` of no items; the first error of `join`.
+pub fn balanced<T, E>(
+    mut items: Vec<T>,
+    mut join: impl FnMut(T, T) -> Result<T, E>,
+) -> Result<Option<T>, E> {
+    while items.len() > 1 {
+        let mut pairs = Vec::with_capacity(items.len().div_ceil(2));
+        let mut rest = items.into_iter();
+        while let Some(a) = rest.next() {
+            pairs.push(match rest.next() {
+                Some(b) => join(a, b)?,
+                None => a,
+            });
+        }
+        items = pairs;
+    }
+    Ok(items.pop())
+}
+
 /// Right binding power of unary `-` and `+`.
 const UNARY_BP: u8 = 5;
 
@@ -1188,25 +1210,13 @@ impl Term {
                 op: a.op,
             })
         };
-        let mut terms = terms;
         if terms.len() <= LEFT_DEEP_SUM {
             let mut rest = terms.into_iter();
             let first = rest.next().expect("a first term");
             let sum = rest.try_fold(first, join)?;
             return Ok((sum.expr, sum.height));
         }
-        while terms.len() > 1 {
-            let mut pairs = Vec::with_capacity(terms.len().div_ceil(2));
-            let mut rest = terms.into_iter();
-            while let Some(a) = rest.next() {
-                pairs.push(match rest.next() {
-                    Some(b) => join(a, b)?,
-                    None => a,
-                });
-            }
-            terms = pairs;
-        }
-        let sum = terms.pop().expect("a sum");
+        let sum = balanced(terms, join)?.expect("a sum");
         debug_assert!(!sum.negative, "the first term is positive");
         Ok((sum.expr, sum.height))
     }
