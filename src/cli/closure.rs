@@ -13,6 +13,7 @@ use superint::report::Report;
 use superint::system_file::{
     given_twice, trimmed, Caller, ErrorKind, FileError, PrintedNames, COMMAND_LINE,
 };
+use trigpoly::LimitKind;
 
 use super::limits::LimitsArgs;
 use super::output::{emit, Output};
@@ -299,16 +300,19 @@ fn close(a: &ClosureArgs, names: &[String], subject: &Subject) -> anyhow::Result
         }
         // Which product passed it is the engine's own business; what the user can change is
         // the limit or the degree. The algebra's own advice (`raise the limit or simplify the
-        // input`) gives way to this one, which names the options.
-        e if e.is_limit() => {
-            let said = match &e {
-                EngineError::Algebra(e) => e.without_advice(),
-                e => e.to_string(),
+        // input`) gives way to this one, which names the option of the limit that stopped it
+        // (the machine's memory has none: only a lower degree forms less).
+        EngineError::Algebra(e) if e.limit().is_some() => {
+            let said = e.without_advice();
+            let raise = match e.limit() {
+                Some(LimitKind::Terms) => "raise the limit with --max-terms N, or ",
+                Some(LimitKind::Work) => "raise the limit with --max-term-products N, or ",
+                Some(LimitKind::Degree(_)) => "raise the limit with --max-degree D, or ",
+                _ => "",
             };
             anyhow!(
-                "computing the closure: {said}; raise the limit with --max-terms N, --max-degree \
-                 D or --max-term-products N, or lower --degree (the products of the generators \
-                 up to it are formed)"
+                "computing the closure: {said}; {raise}lower --degree (the products of the \
+                 generators up to it are formed)"
             )
         }
         e => anyhow::Error::new(e).context("computing the closure"),

@@ -4593,7 +4593,9 @@ fn a_closure_without_claims_closes_with_what_was_computed() {
 }
 
 /// A closure that passes a limit while forming the products of its generators stops with exit
-/// code 2 and says how to go on: raise the limit, or lower the degree.
+/// code 2 and says how to go on: raise the limit, named by the option of the one it passed
+/// (the degree limit's, not the term or work limit's, which it named too), or lower the
+/// degree.
 #[test]
 fn a_closure_at_a_limit_says_how_to_go_on() {
     let closure = [
@@ -4611,9 +4613,8 @@ fn a_closure_at_a_limit_says_how_to_go_on() {
     assert_eq!(
         stderr(&o),
         "superint: error: computing the closure: the exponent of p_y would reach 1200, past \
-         the limit of 1000; raise the limit with --max-terms N, --max-degree D or \
-         --max-term-products N, or lower --degree (the products of the generators up to it \
-         are formed)\n"
+         the limit of 1000; raise the limit with --max-degree D, or lower --degree (the \
+         products of the generators up to it are formed)\n"
     );
     run(&[&closure[..], &["--max-degree", "1200"]].concat(), 0);
 }
@@ -4653,7 +4654,8 @@ fn a_define_using_a_defined_name_is_refused_at_the_name() {
 /// counted and the degree, and how to go on once: it said `the result would have more than
 /// 2000000 terms`, though no one result had, and `raise the limit` twice, the engine's advice
 /// and then the command line's. A built-in system and a file read alike; another limit that
-/// carries the algebra's own advice (the work limit) says `raise` once too.
+/// carries the algebra's own advice (the work limit) says `raise` once too, and names its
+/// own option alone (it named all three limits' options).
 #[test]
 fn a_closures_products_at_the_term_limit_say_what_was_counted() {
     let expected = "superint: error: computing the closure: the products of the generators up \
@@ -4685,8 +4687,8 @@ fn a_closures_products_at_the_term_limit_say_what_was_counted() {
         stderr(&o),
         "superint: error: computing the closure: the product of 495 terms by 495 would form \
          245025 term products, past the limit of 1000 (the work limit); raise the limit with \
-         --max-terms N, --max-degree D or --max-term-products N, or lower --degree (the \
-         products of the generators up to it are formed)\n"
+         --max-term-products N, or lower --degree (the products of the generators up to it \
+         are formed)\n"
     );
 }
 
