@@ -4619,6 +4619,26 @@ fn a_closure_at_a_limit_says_how_to_go_on() {
     run(&[&closure[..], &["--max-degree", "1200"]].concat(), 0);
 }
 
+/// An unknown name one slip from a resonant instance of the built-in rotor under gravity is
+/// told the instance as systems/gravity-rotor.toml names it, `Pp_1_1` (the family `Pp`, shown
+/// `P'`), which the built-in reads too: it was told `P11`, the built-in's own name for
+/// `P'_{1,1}`, which no file of the rotor spells so. Without gravity, `P_1_1`.
+#[test]
+fn an_unknown_name_is_told_a_resonant_instance_as_the_file_spells_it() {
+    for (system, typed, meant) in [
+        ("gravity", "P_1_1", "Pp_1_1"),
+        ("harmonic", "p_1_1", "P_1_1"),
+    ] {
+        let o = superint_exits(&["closure", "--system", system, "L", typed], 2);
+        let expected = format!(
+            "superint: error: <command line>:1:1: unknown name '{typed}'; did you mean \
+             '{meant}'? (known: "
+        );
+        assert!(stderr(&o).starts_with(&expected), "{}", stderr(&o));
+        run(&["closure", "--system", system, "L", meant], 0);
+    }
+}
+
 /// A --define value that uses a name another --define gives (or its own) is refused with the
 /// caret under that name where the value first uses it, as an unknown name's is, on a built-in
 /// system and on a file alike: it stood under the whole value, `A+zz`.

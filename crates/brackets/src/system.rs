@@ -344,6 +344,20 @@ impl Context<GaussianRational> for System {
     fn names(&self) -> Vec<String> {
         self.functions.iter().map(|f| f.name.clone()).collect()
     }
+
+    /// A function shown as a family instance (`P'_{1,1}`, the built-in gravity rotor's `P11`)
+    /// is spelt as a system file names the instance, and as [`System::function`] reads it too:
+    /// its display as an expression reads it, a prime as `p` (`Pp_1_1`), when that is ASCII
+    /// and names the same function.
+    fn spelling(&self, name: &str) -> Option<String> {
+        let f = self.functions.iter().find(|f| f.name == name)?;
+        if !f.display.contains(['{', '\\']) {
+            return None;
+        }
+        let read = trigpoly::syntax::latex_name(&f.display)?.replace('\'', "p");
+        let same = self.function(&read).is_some_and(|g| g.name == f.name);
+        (read != f.name && read.is_ascii() && same).then_some(read)
+    }
 }
 
 #[cfg(test)]

@@ -21,6 +21,12 @@ pub trait Context<C: Coefficient> {
     fn names(&self) -> Vec<String> {
         Vec::new()
     }
+    /// How an unknown name's "did you mean" writes `name`, one of [`Context::names`], where
+    /// the context reads it in a spelling it prefers (a function shown as a family instance,
+    /// `P'_{1,1}`, spelt as a system file names it, `Pp_1_1`); `None` for the name itself.
+    fn spelling(&self, _name: &str) -> Option<String> {
+        None
+    }
     /// Told of a name that is not declared and was read as the product of the declared names
     /// it splits into, where that reading may not be what was meant ([`RunTogether`]); the
     /// lowering goes on with the product. Ignored unless a context keeps it (as
@@ -194,6 +200,9 @@ impl<C: Coefficient> Context<C> for Noting<'_, C> {
     }
     fn names(&self) -> Vec<String> {
         self.ctx.names()
+    }
+    fn spelling(&self, name: &str) -> Option<String> {
+        self.ctx.spelling(name)
     }
     fn run_together(&self, note: RunTogether) {
         let mut noted = self.noted.borrow_mut();
@@ -479,7 +488,11 @@ impl<C: Coefficient> Lower<'_, C> {
             return Ok(acc);
         }
         let known = self.known_names();
-        let meant = did_you_mean_hint(name, &known);
+        // The name meant, as the context spells it (`Pp_1_1` for `P11` shown `P'_{1,1}`).
+        let meant = did_you_mean(name, &known).map_or_else(String::new, |k| {
+            let k = self.ctx.spelling(k).unwrap_or_else(|| k.to_string());
+            format!("; did you mean '{k}'?")
+        });
         // A set of no names (a constant's, `GaussianRational::from_str`'s) lists none.
         let listed = match known.is_empty() {
             true => " (no names are declared)".to_string(),
