@@ -1,5 +1,8 @@
 //! `--max-terms`, `--max-degree` and `--max-term-products`, shared by the subcommands that
-//! read a system file: they override the file's `[limits]`, which override the defaults.
+//! read a system file: they override the file's `[limits]`, which override the defaults. With
+//! them goes the cap on memory, the machine's physical memory, read once.
+
+use std::sync::OnceLock;
 
 use clap::Args;
 use superint::system_file::LimitsOverride;
@@ -33,11 +36,54 @@ impl LimitsArgs {
                 .map(|t| usize::try_from(t).unwrap_or(usize::MAX)),
             max_degree: self.max_degree,
             max_term_products: self.max_term_products,
+            max_bytes: physical_memory(),
         }
     }
 
     /// Whether a limit was given.
     pub fn any(&self) -> bool {
         self.max_terms.is_some() || self.max_degree.is_some() || self.max_term_products.is_some()
+    }
+}
+
+/// No limit given: the defaults, with the cap on memory.
+pub fn memory_only() -> LimitsOverride {
+    LimitsOverride {
+        max_bytes: physical_memory(),
+        ..LimitsOverride::default()
+    }
+}
+
+/// The machine's physical memory in bytes, the cap on the room a result reserved from a
+/// predicted count of terms may take (`trigpoly::Limits::max_bytes`): under Linux's
+/// overcommit the allocator grants far more address space than the machine can back, and
+/// `(r + p_r + p_φ + M + k + 1)^300` under a raised term limit filled memory instead of
+/// stopping. Read once, from `MemTotal` in `/proc/meminfo`; `None` (no cap beyond the
+/// allocator's refusal) where it cannot be read.
+fn physical_memory() -> Option<u64> {
+    static MEMORY: OnceLock<Option<u64>> = OnceLock::new();
+    *MEMORY.get_or_init(|| {
+        let text = std::fs::read_to_string("/proc/meminfo").ok()?;
+        mem_total(&text)
+    })
+}
+
+/// `MemTotal` of `/proc/meminfo`'s text, in bytes (the file gives kB, that is KiB).
+fn mem_total(meminfo: &str) -> Option<u64> {
+    let line = meminfo.lines().find_map(|l| l.strip_prefix("MemTotal:"))?;
+    let kib = line.trim().strip_suffix("kB")?.trim().parse::<u64>().ok()?;
+    kib.checked_mul(1024)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::mem_total;
+
+    #[test]
+    fn mem_total_reads_kib_as_bytes() {
+        let text = "MemTotal:       16314716 kB\nMemFree:         1000 kB\n";
+        assert_eq!(mem_total(text), Some(16_314_716 * 1024));
+        assert_eq!(mem_total("MemFree: 1000 kB\n"), None);
+        assert_eq!(mem_total("MemTotal: lots\n"), None);
     }
 }

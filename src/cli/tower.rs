@@ -14,7 +14,7 @@ use superint::paper::{tower_report_with_progress, TowerSystem};
 use superint::render::render;
 use superint::system_file::{family_tower_report_with_progress, Caller, LimitsOverride};
 
-use super::limits::LimitsArgs;
+use super::limits::{memory_only, LimitsArgs};
 use super::output::{emit, warned, Output};
 
 pub const EXAMPLES: &str = "\
@@ -142,7 +142,7 @@ pub fn run(job: &TowerJob) -> anyhow::Result<bool> {
                 .with_caller(Caller::CommandLine)
         }
         SystemArg::File(path) => {
-            let file = load_system(path, &job.limits.unwrap_or_default())?;
+            let file = load_system(path, &job.limits.unwrap_or_else(memory_only))?;
             let when = job.when.as_deref().map(|w| file.condition(w)).transpose();
             let report = when.and_then(|when| {
                 family_tower_report_with_progress(

@@ -1576,6 +1576,7 @@ impl<'a> Builder<'a> {
                 .max_degree
                 .or(degree.map(|d| positive(d) as u32)),
             max_term_products: self.limits.max_term_products.or(work.map(positive)),
+            max_bytes: self.limits.max_bytes,
         };
         Ok(given.or_defaults())
     }

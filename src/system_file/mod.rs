@@ -96,11 +96,15 @@ pub struct LimitsOverride {
     pub max_degree: Option<u32>,
     /// `--max-term-products`.
     pub max_term_products: Option<u64>,
+    /// The cap on the bytes of room reserved for a result from a predicted count
+    /// ([`Limits::max_bytes`]): no flag nor file key; the command line gives the machine's
+    /// physical memory. `None`: no cap beyond the allocator's refusal.
+    pub max_bytes: Option<u64>,
 }
 
 impl LimitsOverride {
     /// The limits given, else a system file's defaults ([`DEFAULT_MAX_TERMS`],
-    /// [`DEFAULT_MAX_DEGREE`], [`Limits::DEFAULT_MAX_TERM_PRODUCTS`]): those of a built-in
+    /// [`DEFAULT_MAX_DEGREE`], [`Limits::DEFAULT_MAX_TERM_PRODUCTS`], no memory cap): those of a built-in
     /// system on the command line.
     pub fn or_defaults(&self) -> Limits {
         Limits {
@@ -109,6 +113,7 @@ impl LimitsOverride {
             max_term_products: self
                 .max_term_products
                 .unwrap_or(Limits::DEFAULT_MAX_TERM_PRODUCTS),
+            max_bytes: self.max_bytes.unwrap_or(Limits::NO_MEMORY_CAP),
         }
     }
 }

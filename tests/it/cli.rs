@@ -5339,6 +5339,41 @@ fn a_power_too_large_for_memory_stops_with_exit_2() {
     assert!(!err.contains("raise the limit"), "{err}");
 }
 
+/// A power whose room is within `isize::MAX` bytes but past the machine's physical memory
+/// stops before any work, as one past `isize::MAX` does: the allocator under Linux's
+/// overcommit granted `(r + p_r + p_phi + M + k + 1)^300` its 634 GiB of address space, and
+/// the power filled memory. The command line caps the room at `MemTotal`; the power here,
+/// C(2005, 5) ≈ 2.7·10¹⁴ terms and 7.6 PiB, is past any machine's memory.
+#[cfg(target_os = "linux")]
+#[test]
+fn a_power_past_the_machines_memory_stops_before_any_work() {
+    let out = superint_exits(
+        &[
+            "expand",
+            "systems/kepler.toml",
+            "(r + p_r + p_phi + M + k + 1)^2000",
+            "--max-terms",
+            "1000000000000000",
+            "--max-degree",
+            "2000",
+            "--no-timings",
+        ],
+        2,
+    );
+    let err = stderr(&out);
+    assert!(
+        err.contains(
+            "the result would have 268672340837901 terms, about 7.6 PiB of memory, more than \
+             this machine can hold"
+        ),
+        "{err}"
+    );
+    assert!(
+        err.contains("hint: no limit makes room for it: write the expression with smaller powers"),
+        "{err}"
+    );
+}
+
 /// A claim whose power is past the machine's memory is undecided, stopped at a limit, with
 /// the hint that no limit makes room for it; the file is checked, not refused.
 #[test]

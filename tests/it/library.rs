@@ -638,6 +638,7 @@ fn a_limit_out_of_its_range_is_refused_by_the_loader() {
         max_terms: Some(1),
         max_degree: Some(1),
         max_term_products: Some(1),
+        ..LimitsOverride::default()
     };
     assert_eq!(
         load_system_text("harmonic-rotor.toml", &text, &ones)

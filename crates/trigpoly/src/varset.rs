@@ -220,7 +220,9 @@ pub(crate) fn spelled_by(name: &str, is_letter: impl Fn(char) -> bool) -> bool {
 /// result would pass the term limit stops at once rather than after hours of multiplying.
 ///
 /// The library's default is 20 000 000 terms, degree 1000 and 10¹⁰ term products a product
-/// (system files and the command line default to 2 000 000 terms: `docs/system-files.md`).
+/// (system files and the command line default to 2 000 000 terms: `docs/system-files.md`),
+/// with no cap on memory beyond what the allocator refuses (the command line caps it at the
+/// machine's physical memory).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub struct Limits {
     /// The most terms any single result may have.
@@ -232,6 +234,14 @@ pub struct Limits {
     /// The most term products one product of polynomials may form (some seconds to a minute
     /// of work at the default).
     pub max_term_products: u64,
+    /// The most bytes that the room for a result, reserved before any work from a count of
+    /// terms predicted up front (a power by the multinomial theorem), may take: past it the
+    /// result is [`AlgebraError::TooLargeForMemory`](crate::AlgebraError::TooLargeForMemory)
+    /// at once, as when the allocator refuses the room. The library's default,
+    /// [`Limits::NO_MEMORY_CAP`], sets none beyond the allocator's refusal, which under
+    /// Linux's overcommit comes only past `isize::MAX` bytes; the command line sets the
+    /// machine's physical memory.
+    pub max_bytes: u64,
 }
 
 impl Limits {
@@ -242,6 +252,8 @@ impl Limits {
     /// seconds to a minute on one core (Fateman's `(1 + x + y + z + t)^30` times itself, 2·10⁹,
     /// passes).
     pub const DEFAULT_MAX_TERM_PRODUCTS: u64 = 10_000_000_000;
+    /// The default cap on memory, of the library: none ([`Limits::max_bytes`]).
+    pub const NO_MEMORY_CAP: u64 = u64::MAX;
 }
 
 impl Default for Limits {
@@ -250,6 +262,7 @@ impl Default for Limits {
             max_terms: 20_000_000,
             max_degree: Limits::DEFAULT_MAX_DEGREE,
             max_term_products: Limits::DEFAULT_MAX_TERM_PRODUCTS,
+            max_bytes: Limits::NO_MEMORY_CAP,
         }
     }
 }

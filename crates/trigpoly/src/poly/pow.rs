@@ -96,8 +96,11 @@ impl<C: Coefficient> Poly<C> {
     /// `Π m_i^{a_i}`; the terms are sorted once and equal monomials combined. For a short
     /// polynomial this is as many term operations as the power has terms, where repeated
     /// multiplication needs about `e` times more. The room for every term is reserved up front
-    /// and a refusal is `Err(TooLargeForMemory)`, not an abort: a term limit raised far enough
-    /// lets through a power of more terms than the machine can hold.
+    /// and a refusal, or room past [`Limits::max_bytes`](crate::Limits::max_bytes), is
+    /// `Err(TooLargeForMemory)`, not an abort or memory filled: a term limit raised far enough
+    /// lets through a power of more terms than the machine can hold. (The short path of
+    /// `gather::multinomial_power` is taken only when `Σ|c_i|^e < 2⁶²`, so for at most six
+    /// terms its table holds at most `C(28, 5)` = 98 280 terms, and needs no cap.)
     fn multinomial_pow(&self, e: usize) -> Result<Self, AlgebraError> {
         let t = self.len();
         let compositions = binomial_u128(e as u128 + t as u128 - 1, t as u128 - 1) as usize;
@@ -111,9 +114,10 @@ impl<C: Coefficient> Poly<C> {
         }
         let w = self.words();
         let layout = self.layout();
+        let max_bytes = self.vars.limits().max_bytes;
         // The room for the terms first, before any work.
         let (mut keys, mut coeffs) = (Vec::new(), Vec::new());
-        reserve_terms::<C::Int>(&mut keys, &mut coeffs, compositions, w)?;
+        reserve_terms::<C::Int>(&mut keys, &mut coeffs, compositions, w, max_bytes)?;
         // Pascal's triangle up to e.
         let mut binom: Vec<Vec<Integer>> = vec![vec![Integer::ONE]];
         for n in 1..=e {
@@ -194,7 +198,7 @@ impl<C: Coefficient> Poly<C> {
         let n = coeffs.len();
         let mut order: Vec<usize> = Vec::new();
         let (mut out_e, mut out_c) = (Vec::new(), Vec::new());
-        reserve_terms::<C::Int>(&mut out_e, &mut out_c, n, w)?;
+        reserve_terms::<C::Int>(&mut out_e, &mut out_c, n, w, max_bytes)?;
         order
             .try_reserve_exact(n)
             .map_err(|_| too_large_for_memory::<C::Int>(n, w))?;
@@ -295,16 +299,22 @@ pub(crate) fn pow_field<C: Coefficient>(c: &C, e: i64) -> C {
 }
 
 /// Room for `terms` terms of `words` words in `exps` and `coeffs`, reserved exactly, or
-/// `Err(TooLargeForMemory)` if the allocator refuses it (or its size passes `isize::MAX`):
-/// for a count of terms predicted before they are formed, which a raised term limit may let
-/// grow past the machine's memory.
+/// `Err(TooLargeForMemory)` if it would take more than `max_bytes` ([`Limits::max_bytes`](crate::Limits::max_bytes))
+/// or the allocator refuses it (or its size passes `isize::MAX`): for a count of terms
+/// predicted before they are formed, which a raised term limit may let grow past the
+/// machine's memory. The cap is compared first, since an allocator under overcommit grants
+/// far more address space than the machine can back, and the work would then fill memory.
 pub(super) fn reserve_terms<I>(
     exps: &mut Vec<u64>,
     coeffs: &mut Vec<I>,
     terms: usize,
     words: usize,
+    max_bytes: u64,
 ) -> Result<(), AlgebraError> {
     let refused = || too_large_for_memory::<I>(terms, words);
+    if term_bytes::<I>(terms, words) > u128::from(max_bytes) {
+        return Err(refused());
+    }
     let words_needed = terms.checked_mul(words).ok_or_else(refused)?;
     exps.try_reserve_exact(words_needed)
         .map_err(|_| refused())?;
@@ -313,9 +323,14 @@ pub(super) fn reserve_terms<I>(
 
 /// [`AlgebraError::TooLargeForMemory`] of `terms` terms of `words` words and coefficients `I`.
 fn too_large_for_memory<I>(terms: usize, words: usize) -> AlgebraError {
-    let per_term = 8 * words as u128 + std::mem::size_of::<I>() as u128;
     AlgebraError::TooLargeForMemory {
         terms: terms as u128,
-        bytes: terms as u128 * per_term,
+        bytes: term_bytes::<I>(terms, words),
     }
+}
+
+/// The bytes of `terms` terms of `words` words and coefficients `I`.
+fn term_bytes<I>(terms: usize, words: usize) -> u128 {
+    let per_term = 8 * words as u128 + std::mem::size_of::<I>() as u128;
+    terms as u128 * per_term
 }

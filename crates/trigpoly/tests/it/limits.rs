@@ -115,6 +115,54 @@ fn term_limit_stops_a_power_of_a_short_polynomial() {
     assert_eq!(f.checked_pow(15).map(|g| g.len()), Ok(816));
 }
 
+/// `x, y, z, t, u` with a term limit of 10¹² and the memory cap `max_bytes`.
+fn capped_vars(max_bytes: u64) -> Vars {
+    ["x", "y", "z", "t", "u"]
+        .into_iter()
+        .fold(VarSet::builder(), |b, name| b.coordinate(name))
+        .limits(Limits {
+            max_terms: 1_000_000_000_000,
+            max_bytes,
+            ..Limits::default()
+        })
+        .build()
+        .unwrap()
+}
+
+/// A power whose room, reserved from its predicted count of terms, would pass the cap on
+/// memory (`Limits::max_bytes`) is `TooLargeForMemory` before any work, as when the allocator
+/// refuses it: `(1 + x + y + z + t + u)^300`, of C(305, 5) = 21 281 794 436 terms (about
+/// 340 GB), was granted its room by an allocator under Linux's overcommit and filled the
+/// machine's memory; under a cap of a mebibyte it stops at once, with nothing allocated (its
+/// walk would form the terms). The cap alone refuses: `(1 + x + y + z + t + u)^30`, of
+/// C(35, 5) = 324 632 terms, a few megabytes, is refused under the cap and formed without it.
+#[test]
+fn a_power_past_the_memory_cap_is_refused_before_any_work() {
+    let capped = capped_vars(1 << 20);
+    let f: Q = p(&capped, "1 + x + y + z + t + u");
+    let err = f.checked_pow(300).map(|g| g.len()).unwrap_err();
+    let AlgebraError::TooLargeForMemory { terms, bytes } = err else {
+        panic!("{err:?}");
+    };
+    assert_eq!(terms, C(305, 5) as u128);
+    assert!(
+        bytes > 300_000_000_000 && bytes < isize::MAX as u128,
+        "{bytes}"
+    );
+    assert_eq!(err.limit(), Some(trigpoly::LimitKind::Memory));
+    match f.checked_pow(30) {
+        Err(AlgebraError::TooLargeForMemory { terms, bytes }) => {
+            assert_eq!(terms, C(35, 5) as u128);
+            assert!(bytes > 1 << 20, "{bytes}");
+        }
+        other => panic!("{:?}", other.map(|g| g.len())),
+    }
+    let uncapped = capped_vars(Limits::NO_MEMORY_CAP);
+    let g: Q = p(&uncapped, "1 + x + y + z + t + u");
+    assert_eq!(g.checked_pow(30).map(|g| g.len()), Ok(C(35, 5)));
+    assert_eq!(Limits::default().max_bytes, Limits::NO_MEMORY_CAP);
+}
+
 /// The same through the general (dense or heap) product: `(1 + x + … + w)^6` has C(13, 6) =
 /// 1716 terms.
 #[test]

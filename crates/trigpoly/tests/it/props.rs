@@ -1323,6 +1323,7 @@ fn parser_vars() -> &'static [trigpoly::Vars; 2] {
                     max_terms: 2_000,
                     max_degree: 40,
                     max_term_products: 200_000,
+                    ..trigpoly::Limits::default()
                 })
                 .build()
                 .expect("valid variable names")
