@@ -12,6 +12,7 @@ use superint::render::render;
 use superint::report::Report;
 use superint::system_file::{
     given_twice, trimmed, Caller, ErrorKind, FileError, PrintedNames, COMMAND_LINE,
+    MAX_DEGREE_CEILING,
 };
 use trigpoly::LimitKind;
 
@@ -304,11 +305,20 @@ fn close(a: &ClosureArgs, names: &[String], subject: &Subject) -> anyhow::Result
         // (the machine's memory has none: only a lower degree forms less).
         EngineError::Algebra(e) if e.limit().is_some() => {
             let said = e.without_advice();
+            // A degree past the most --max-degree may be has no option either.
             let raise = match e.limit() {
-                Some(LimitKind::Terms) => "raise the limit with --max-terms N, or ",
-                Some(LimitKind::Work) => "raise the limit with --max-term-products N, or ",
-                Some(LimitKind::Degree(_)) => "raise the limit with --max-degree D, or ",
-                _ => "",
+                Some(LimitKind::Terms) => "raise the limit with --max-terms N, or ".to_string(),
+                Some(LimitKind::Work) => {
+                    "raise the limit with --max-term-products N, or ".to_string()
+                }
+                Some(LimitKind::Degree(n)) if n > u64::from(MAX_DEGREE_CEILING) => format!(
+                    "no limit reaches this exponent (--max-degree is at most \
+                     {MAX_DEGREE_CEILING}): "
+                ),
+                Some(LimitKind::Degree(_)) => {
+                    "raise the limit with --max-degree D, or ".to_string()
+                }
+                _ => String::new(),
             };
             anyhow!(
                 "computing the closure: {said}; {raise}lower --degree (the products of the \

@@ -25,7 +25,7 @@ use super::{Family, LimitsOverride, LoadedSystem};
 
 /// The largest degree limit a file or the command line may set (what a 16-bit exponent field
 /// holds; the packing widens its fields as the limit asks).
-pub(super) const MAX_DEGREE_CEILING: u32 = 32_767;
+pub const MAX_DEGREE_CEILING: u32 = 32_767;
 
 /// Reads and loads a system file (any path, as [`std::fs::read`] takes it: a `&str`, a
 /// `PathBuf`, ...). Every problem is a [`FileError`] naming the file, line and column.

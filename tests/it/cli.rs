@@ -4619,6 +4619,34 @@ fn a_closure_at_a_limit_says_how_to_go_on() {
     run(&[&closure[..], &["--max-degree", "1200"]].concat(), 0);
 }
 
+/// A closure whose products pass the degree limit with an exponent past the most that
+/// --max-degree may be (32767) says that no limit reaches it, and only that a lower degree
+/// helps: it said to raise the limit with --max-degree D, which refuses any D past 32767.
+#[test]
+fn a_closure_past_the_largest_degree_limit_names_no_option() {
+    let closure = [
+        "closure",
+        "systems/stark.toml",
+        "X",
+        "--define",
+        "X=p_y^20000",
+        "--degree",
+        "2",
+        "--max-degree",
+        "20000",
+    ];
+    let o = superint_exits(&closure, 2);
+    assert_eq!(
+        stderr(&o),
+        "superint: error: computing the closure: the exponent of p_y would reach 40000, past \
+         the limit of 20000; no limit reaches this exponent (--max-degree is at most 32767): \
+         lower --degree (the products of the generators up to it are formed)\n"
+    );
+    let mut lower = closure;
+    lower[6] = "1";
+    run(&lower, 0);
+}
+
 /// An unknown name one slip from a resonant instance of the built-in rotor under gravity is
 /// told the instance as systems/gravity-rotor.toml names it, `Pp_1_1` (the family `Pp`, shown
 /// `P'`), which the built-in reads too: it was told `P11`, the built-in's own name for
