@@ -5354,7 +5354,7 @@ fn a_power_too_large_for_memory_stops_with_exit_2() {
     let err = stderr(&out);
     assert!(
         err.contains(
-            "the result would have 2076193224270027401 terms, about 57.6 EiB of memory, more \
+            "the result would have 2076193224270027401 terms, about 129.7 EiB of memory, more \
              than this machine can hold"
         ),
         "{err}"
@@ -5371,7 +5371,7 @@ fn a_power_too_large_for_memory_stops_with_exit_2() {
 /// stops before any work, as one past `isize::MAX` does: the allocator under Linux's
 /// overcommit granted `(r + p_r + p_phi + M + k + 1)^300` its 634 GiB of address space, and
 /// the power filled memory. The command line caps the room at `MemTotal`; the power here,
-/// C(2005, 5) ≈ 2.7·10¹⁴ terms and 7.6 PiB, is past any machine's memory.
+/// C(2005, 5) ≈ 2.7·10¹⁴ terms and 17.2 PiB held at once, is past any machine's memory.
 #[cfg(target_os = "linux")]
 #[test]
 fn a_power_past_the_machines_memory_stops_before_any_work() {
@@ -5391,7 +5391,7 @@ fn a_power_past_the_machines_memory_stops_before_any_work() {
     let err = stderr(&out);
     assert!(
         err.contains(
-            "the result would have 268672340837901 terms, about 7.6 PiB of memory, more than \
+            "the result would have 268672340837901 terms, about 17.2 PiB of memory, more than \
              this machine can hold"
         ),
         "{err}"

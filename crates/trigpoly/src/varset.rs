@@ -235,7 +235,9 @@ pub struct Limits {
     /// of work at the default).
     pub max_term_products: u64,
     /// The most bytes that the room for a result, reserved before any work from a count of
-    /// terms predicted up front (a power by the multinomial theorem), may take: past it the
+    /// terms predicted up front (a power by the multinomial theorem), may take with what is
+    /// held beside it at once (the terms as formed, their order for the sort, the terms
+    /// combined): past it the
     /// result is [`AlgebraError::TooLargeForMemory`](crate::AlgebraError::TooLargeForMemory)
     /// at once, as when the allocator refuses the room. The library's default,
     /// [`Limits::NO_MEMORY_CAP`], sets none beyond the allocator's refusal, which under

@@ -96,7 +96,8 @@ impl<C: Coefficient> Poly<C> {
     /// `Π m_i^{a_i}`; the terms are sorted once and equal monomials combined. For a short
     /// polynomial this is as many term operations as the power has terms, where repeated
     /// multiplication needs about `e` times more. The room for every term is reserved up front
-    /// and a refusal, or room past [`Limits::max_bytes`](crate::Limits::max_bytes), is
+    /// and a refusal, or room past [`Limits::max_bytes`](crate::Limits::max_bytes) with the
+    /// terms' order and the terms combined held beside it, is
     /// `Err(TooLargeForMemory)`, not an abort or memory filled: a term limit raised far enough
     /// lets through a power of more terms than the machine can hold. (The short path of
     /// `gather::multinomial_power` is taken only when `Σ|c_i|^e < 2⁶²`, so for at most six
@@ -115,9 +116,18 @@ impl<C: Coefficient> Poly<C> {
         let w = self.words();
         let layout = self.layout();
         let max_bytes = self.vars.limits().max_bytes;
-        // The room for the terms first, before any work.
+        // The room for the terms first, before any work, with what is held beside them at
+        // once: their order for the sort, and the terms combined, as many as the compositions
+        // when each is a monomial of its own (else counted after the sort).
+        let formed = term_bytes::<C::Int>(compositions, w);
+        let order_bytes = compositions as u128 * std::mem::size_of::<usize>() as u128;
+        let combined = match self.compositions_are_distinct() {
+            true => formed,
+            false => 0,
+        };
         let (mut keys, mut coeffs) = (Vec::new(), Vec::new());
-        reserve_terms::<C::Int>(&mut keys, &mut coeffs, compositions, w, max_bytes)?;
+        let beside = order_bytes + combined;
+        reserve_terms::<C::Int>(&mut keys, &mut coeffs, compositions, w, beside, max_bytes)?;
         // Pascal's triangle up to e.
         let mut binom: Vec<Vec<Integer>> = vec![vec![Integer::ONE]];
         for n in 1..=e {
@@ -194,16 +204,20 @@ impl<C: Coefficient> Poly<C> {
             coeffs: &mut coeffs,
         };
         go(&mut walk, 0, e, &C::Int::from_integer(Integer::ONE));
-        // Sort once, combine equal monomials.
+        // Sort once, combine equal monomials: room for as many terms as there are distinct
+        // monomials, beside the terms as formed and their order.
         let n = coeffs.len();
         let mut order: Vec<usize> = Vec::new();
-        let (mut out_e, mut out_c) = (Vec::new(), Vec::new());
-        reserve_terms::<C::Int>(&mut out_e, &mut out_c, n, w, max_bytes)?;
         order
             .try_reserve_exact(n)
-            .map_err(|_| too_large_for_memory::<C::Int>(n, w))?;
+            .map_err(|_| too_large_for_memory::<C::Int>(n, w, 0))?;
         order.extend(0..n);
         order.sort_unstable_by(|&a, &b| keys[b * w..(b + 1) * w].cmp(&keys[a * w..(a + 1) * w]));
+        let key = |k: usize| &keys[k * w..(k + 1) * w];
+        let distinct = 1 + order.windows(2).filter(|p| key(p[0]) != key(p[1])).count();
+        let (mut out_e, mut out_c) = (Vec::new(), Vec::new());
+        let held = formed + order_bytes;
+        reserve_terms::<C::Int>(&mut out_e, &mut out_c, distinct, w, held, max_bytes)?;
         let mut coeffs: Vec<Option<C::Int>> = coeffs.into_iter().map(Some).collect();
         for k in order {
             let key = &keys[k * w..(k + 1) * w];
@@ -299,20 +313,22 @@ pub(crate) fn pow_field<C: Coefficient>(c: &C, e: i64) -> C {
 }
 
 /// Room for `terms` terms of `words` words in `exps` and `coeffs`, reserved exactly, or
-/// `Err(TooLargeForMemory)` if it would take more than `max_bytes` ([`Limits::max_bytes`](crate::Limits::max_bytes))
-/// or the allocator refuses it (or its size passes `isize::MAX`): for a count of terms
-/// predicted before they are formed, which a raised term limit may let grow past the
-/// machine's memory. The cap is compared first, since an allocator under overcommit grants
-/// far more address space than the machine can back, and the work would then fill memory.
+/// `Err(TooLargeForMemory)` if it and the `beside` bytes held with it at once would take more
+/// than `max_bytes` ([`Limits::max_bytes`](crate::Limits::max_bytes)) or the allocator
+/// refuses it (or its size passes `isize::MAX`): for a count of terms predicted before they
+/// are formed, which a raised term limit may let grow past the machine's memory. The cap is
+/// compared first, since an allocator under overcommit grants far more address space than
+/// the machine can back, and the work would then fill memory.
 pub(super) fn reserve_terms<I>(
     exps: &mut Vec<u64>,
     coeffs: &mut Vec<I>,
     terms: usize,
     words: usize,
+    beside: u128,
     max_bytes: u64,
 ) -> Result<(), AlgebraError> {
-    let refused = || too_large_for_memory::<I>(terms, words);
-    if term_bytes::<I>(terms, words) > u128::from(max_bytes) {
+    let refused = || too_large_for_memory::<I>(terms, words, beside);
+    if term_bytes::<I>(terms, words) + beside > u128::from(max_bytes) {
         return Err(refused());
     }
     let words_needed = terms.checked_mul(words).ok_or_else(refused)?;
@@ -321,11 +337,12 @@ pub(super) fn reserve_terms<I>(
     coeffs.try_reserve_exact(terms).map_err(|_| refused())
 }
 
-/// [`AlgebraError::TooLargeForMemory`] of `terms` terms of `words` words and coefficients `I`.
-fn too_large_for_memory<I>(terms: usize, words: usize) -> AlgebraError {
+/// [`AlgebraError::TooLargeForMemory`] of `terms` terms of `words` words and coefficients `I`,
+/// with the `beside` bytes held with them at once.
+fn too_large_for_memory<I>(terms: usize, words: usize, beside: u128) -> AlgebraError {
     AlgebraError::TooLargeForMemory {
         terms: terms as u128,
-        bytes: term_bytes::<I>(terms, words),
+        bytes: term_bytes::<I>(terms, words) + beside,
     }
 }
 

@@ -163,6 +163,37 @@ fn a_power_past_the_memory_cap_is_refused_before_any_work() {
     assert_eq!(Limits::default().max_bytes, Limits::NO_MEMORY_CAP);
 }
 
+/// The cap on memory counts all that a power by the multinomial theorem holds at once, not its
+/// terms as formed alone: `(1 + x + y + z + t + u)^30`, C(35, 5) = 324 632 terms of one word
+/// and a one-word coefficient (16 bytes each), holds them (5 194 112 bytes), their order for
+/// the sort (8 bytes a term, 2 597 056) and the terms combined, as many since each composition
+/// is a monomial of its own (5 194 112): 12 985 280 bytes. Under a cap of the first two alone
+/// it was let through, and the room for the terms combined was compared to the cap alone, as
+/// though nothing else were held; it is refused before any work now, and formed under a cap
+/// of all three. Where compositions share a monomial, `(1 + x + … + x⁵)^30` of 151 terms, only
+/// the room for the distinct terms is counted (and reserved): the cap refuses nothing that
+/// fits.
+#[test]
+fn the_memory_cap_counts_what_a_power_holds_at_once() {
+    let n = C(35, 5) as u64;
+    let (formed, order) = (16 * n, 8 * n);
+    let at_once = formed + order + formed;
+    let f: Q = p(&capped_vars(formed + order), "1 + x + y + z + t + u");
+    match f.checked_pow(30) {
+        Err(AlgebraError::TooLargeForMemory { terms, bytes }) => {
+            assert_eq!((terms, bytes), (u128::from(n), u128::from(at_once)));
+        }
+        other => panic!("{:?}", other.map(|g| g.len())),
+    }
+    let g: Q = p(&capped_vars(at_once), "1 + x + y + z + t + u");
+    assert_eq!(g.checked_pow(30).map(|g| g.len()), Ok(C(35, 5)));
+    let shared: Q = p(
+        &capped_vars(formed + order + 151 * 16),
+        "1 + x + x^2 + x^3 + x^4 + x^5",
+    );
+    assert_eq!(shared.checked_pow(30).map(|g| g.len()), Ok(151));
+}
+
 /// The same through the general (dense or heap) product: `(1 + x + … + w)^6` has C(13, 6) =
 /// 1716 terms.
 #[test]
