@@ -203,11 +203,6 @@ impl System {
     /// ```
     pub fn function(&self, name: &str) -> Option<&NamedFunction> {
         let functions = &self.functions;
-        // A display as an expression reads it, for a display written in LaTeX alone.
-        let read = |f: &NamedFunction| match f.display.contains(['{', '\\']) {
-            true => trigpoly::syntax::latex_name(&f.display),
-            false => None,
-        };
         // Each reading in turn over every function, so that a display that reads as `name`
         // itself is taken before another whose primes spelt as `p` would (`Pp_{1,1}` before
         // `P'_{1,1}` for `Pp_1_1`).
@@ -217,11 +212,12 @@ impl System {
             .or_else(|| {
                 functions
                     .iter()
-                    .find(|f| read(f).is_some_and(|r| r == name))
+                    .find(|f| display_read(f).is_some_and(|r| r == name))
             })
             .or_else(|| {
                 functions.iter().find(|f| {
-                    read(f).is_some_and(|r| r.contains('\'') && r.replace('\'', "p") == name)
+                    display_read(f)
+                        .is_some_and(|r| r.contains('\'') && r.replace('\'', "p") == name)
                 })
             })
     }
@@ -351,12 +347,19 @@ impl Context<GaussianRational> for System {
     /// and names the same function.
     fn spelling(&self, name: &str) -> Option<String> {
         let f = self.functions.iter().find(|f| f.name == name)?;
-        if !f.display.contains(['{', '\\']) {
-            return None;
-        }
-        let read = trigpoly::syntax::latex_name(&f.display)?.replace('\'', "p");
+        let read = display_read(f)?.replace('\'', "p");
         let same = self.function(&read).is_some_and(|g| g.name == f.name);
         (read != f.name && read.is_ascii() && same).then_some(read)
+    }
+}
+
+/// The name that a function's display reads as, as an expression reads it, for a display
+/// written in LaTeX alone (`P'_{1,1}` → `P'_1_1`): how [`System::function`] finds a function
+/// by its display, and [`System`]'s `Context::spelling` spells it.
+fn display_read(f: &NamedFunction) -> Option<String> {
+    match f.display.contains(['{', '\\']) {
+        true => trigpoly::syntax::latex_name(&f.display),
+        false => None,
     }
 }
 
