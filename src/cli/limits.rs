@@ -77,7 +77,32 @@ fn mem_total(meminfo: &str) -> Option<u64> {
 
 #[cfg(test)]
 mod tests {
-    use super::mem_total;
+    use super::{mem_total, memory_only, physical_memory, LimitsArgs};
+
+    /// The limits of the command line carry the machine's memory as the cap, given a limit or
+    /// none, as every subcommand that reads a system file or builds a built-in system takes
+    /// them (`settings`, or `memory_only` where no limit is given): nothing else sets it, and
+    /// a power past the memory but within the address space the allocator grants would fill
+    /// memory (an end-to-end test of it would, where the cap is lost).
+    #[cfg(target_os = "linux")]
+    #[test]
+    fn the_command_lines_limits_carry_the_machines_memory() {
+        let memory = physical_memory();
+        assert!(memory.is_some_and(|m| m > 1 << 20), "{memory:?}");
+        let none = LimitsArgs {
+            max_terms: None,
+            max_degree: None,
+            max_term_products: None,
+        };
+        assert_eq!(none.settings().max_bytes, memory);
+        let some = LimitsArgs {
+            max_terms: Some(10),
+            ..none
+        };
+        assert_eq!(some.settings().max_bytes, memory);
+        assert_eq!(some.settings().or_defaults().max_bytes, memory.unwrap());
+        assert_eq!(memory_only().max_bytes, memory);
+    }
 
     #[test]
     fn mem_total_reads_kib_as_bytes() {

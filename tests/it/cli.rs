@@ -5371,7 +5371,11 @@ fn a_power_too_large_for_memory_stops_with_exit_2() {
 /// stops before any work, as one past `isize::MAX` does: the allocator under Linux's
 /// overcommit granted `(r + p_r + p_phi + M + k + 1)^300` its 634 GiB of address space, and
 /// the power filled memory. The command line caps the room at `MemTotal`; the power here,
-/// C(2005, 5) ≈ 2.7·10¹⁴ terms and 17.2 PiB held at once, is past any machine's memory.
+/// C(2005, 5) ≈ 2.7·10¹⁴ terms and 17.2 PiB held at once, is past any machine's memory, and
+/// past the 128 TiB of address space that x86-64 gives a process too, so that the allocator
+/// would refuse it without the cap: this test shows the message and the hint, not that the cap
+/// is set (a power within the address space would fill memory where it is lost);
+/// `limits::tests::the_command_lines_limits_carry_the_machines_memory` shows that.
 #[cfg(target_os = "linux")]
 #[test]
 fn a_power_past_the_machines_memory_stops_before_any_work() {
