@@ -4609,14 +4609,25 @@ fn a_closure_at_a_limit_says_how_to_go_on() {
         "--degree",
         "4",
     ];
-    let o = superint_exits(&closure, 2);
-    assert_eq!(
-        stderr(&o),
-        "superint: error: computing the closure: the exponent of p_y would reach 1200, past \
-         the limit of 1000; raise the limit with --max-degree D, or lower --degree (the \
-         products of the generators up to it are formed)\n"
+    closure_stops_with(
+        &closure,
+        "the exponent of p_y would reach 1200, past the limit of 1000; raise the limit with \
+         --max-degree D, or lower --degree",
     );
     run(&[&closure[..], &["--max-degree", "1200"]].concat(), 0);
+}
+
+/// That `closure` stops with exit code 2 and says `computing the closure: {said} (the
+/// products of the generators up to it are formed)`.
+fn closure_stops_with(closure: &[&str], said: &str) {
+    let o = superint_exits(closure, 2);
+    assert_eq!(
+        stderr(&o),
+        format!(
+            "superint: error: computing the closure: {said} (the products of the generators \
+             up to it are formed)\n"
+        )
+    );
 }
 
 /// A closure whose products pass the degree limit with an exponent past the most that
@@ -4635,12 +4646,10 @@ fn a_closure_past_the_largest_degree_limit_names_no_option() {
         "--max-degree",
         "20000",
     ];
-    let o = superint_exits(&closure, 2);
-    assert_eq!(
-        stderr(&o),
-        "superint: error: computing the closure: the exponent of p_y would reach 40000, past \
-         the limit of 20000; no limit reaches this exponent (--max-degree is at most 32767): \
-         lower --degree (the products of the generators up to it are formed)\n"
+    closure_stops_with(
+        &closure,
+        "the exponent of p_y would reach 40000, past the limit of 20000; no limit reaches this \
+         exponent (--max-degree is at most 32767): lower --degree",
     );
     let mut lower = closure;
     lower[6] = "1";
