@@ -85,9 +85,10 @@ pub const DEFAULT_MAX_TERMS: usize = 2_000_000;
 pub const DEFAULT_MAX_DEGREE: u32 = Limits::DEFAULT_MAX_DEGREE;
 
 /// Limits given on the command line (`--max-terms`, `--max-degree`, `--max-term-products`):
-/// they override the file's `[limits]`, which override the defaults. Each given must be at
-/// least 1, as in the file: the loader refuses a 0 (an error of kind
-/// [`ErrorKind::Schema`]).
+/// they override the file's `[limits]`, which override the defaults. Each of the three given
+/// must be at least 1, as in the file: the loader refuses a 0 (an error of kind
+/// [`ErrorKind::Schema`]). The cap on memory, `max_bytes`, is taken as given: a cap of 0
+/// refuses every result whose room is reserved from a predicted count.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 pub struct LimitsOverride {
     /// `--max-terms`.
@@ -104,8 +105,8 @@ pub struct LimitsOverride {
 
 impl LimitsOverride {
     /// The limits given, else a system file's defaults ([`DEFAULT_MAX_TERMS`],
-    /// [`DEFAULT_MAX_DEGREE`], [`Limits::DEFAULT_MAX_TERM_PRODUCTS`], no memory cap): those of a built-in
-    /// system on the command line.
+    /// [`DEFAULT_MAX_DEGREE`], [`Limits::DEFAULT_MAX_TERM_PRODUCTS`], no memory cap): those
+    /// of a built-in system on the command line.
     pub fn or_defaults(&self) -> Limits {
         Limits {
             max_terms: self.max_terms.unwrap_or(DEFAULT_MAX_TERMS),
