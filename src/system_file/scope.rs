@@ -701,7 +701,9 @@ impl<'a> Scope<'a> {
     fn display_error(&self, source: &Source, text: &Text, e: &ParseError) -> FileError {
         if !matches!(
             e.cause(),
-            ParseCause::UnknownName { .. } | ParseCause::Unreadable
+            ParseCause::UnknownName { .. }
+                | ParseCause::Unreadable
+                | ParseCause::FunctionWithoutParentheses { .. }
         ) {
             return expression_error(source, text, e);
         }

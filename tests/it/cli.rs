@@ -1275,7 +1275,8 @@ fn cli_bad_usage_exits_2_with_a_message() {
 
 /// A function's display name typed in an expression, as the reports print it (`Z̄`, `Re A`), is
 /// said to be one, with the name to write: it was `unexpected character '\u{304}'` and `unknown
-/// name 'Re'`. A word that only begins like one (`Re Ax`) keeps its own message.
+/// name 'Re'`. A word that only begins like one (`Re Ax`) is told what `Re` is, a function that
+/// takes parentheses.
 #[test]
 fn cli_a_display_name_in_an_expression_names_the_function() {
     let rotor = "systems/harmonic-rotor.toml";
@@ -1297,7 +1298,8 @@ fn cli_a_display_name_in_an_expression_names_the_function() {
         assert_eq!(stderr(&o), message, "{args:?}");
     }
     let o = superint(&["expand", a35, "Re Ax"]);
-    assert!(stderr(&o).contains("unknown name 'Re'"), "{}", stderr(&o));
+    let want = "'Re' is the real part, a function: write its argument in parentheses, Re(…)";
+    assert!(stderr(&o).contains(want), "{}", stderr(&o));
 }
 
 /// A system whose functions display as no name, `∂H` and `∇φ` (in LaTeX `\partial H` and

@@ -487,6 +487,30 @@ impl<C: Coefficient> Lower<'_, C> {
             }
             return Ok(acc);
         }
+        // A function written without its parentheses, as a paper writes `Re K` or `conj A`
+        // (`cos θ` reads so; these do not): it is no unknown name, and the list of names would
+        // not say what to write.
+        if calls_function(name, &|n| self.is_declared(n)) {
+            let what = match name {
+                "re" | "Re" => "the real part",
+                "im" | "Im" => "the imaginary part",
+                "conj" => "the complex conjugate",
+                "sqrt" => "the square root",
+                "exp" => "the exponential",
+                "cos" => "the cosine",
+                _ => "the sine",
+            };
+            return Err(ParseError::new(
+                span,
+                format!(
+                    "'{name}' is {what}, a function: write its argument in parentheses, \
+                     {name}(…)"
+                ),
+            )
+            .with_cause(ParseCause::FunctionWithoutParentheses {
+                name: name.to_string(),
+            }));
+        }
         let known = self.known_names();
         // The name meant, as the context spells it (`Pp_1_1` for `P11` shown `P'_{1,1}`).
         let meant = did_you_mean(name, &known).map_or_else(String::new, |k| {

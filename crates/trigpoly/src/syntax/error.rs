@@ -98,6 +98,13 @@ pub enum ParseCause {
         /// lists them; empty where none are declared.
         known: Vec<String>,
     },
+    /// A function that takes its argument in parentheses written without them, as a paper
+    /// writes the real part, `Re K` or `conj A` (`cos θ` reads so; these do not), where no
+    /// declared name takes that spelling: the message says what to write, `Re(…)`.
+    FunctionWithoutParentheses {
+        /// The function's name, as written (`Re`, `conj`).
+        name: String,
+    },
     /// An operation of the algebra refused while the expression was formed: a limit
     /// ([`AlgebraError::TooManyTerms`], [`AlgebraError::ExponentTooLarge`], …), a division
     /// that is not exact, and the rest of [`AlgebraError`].

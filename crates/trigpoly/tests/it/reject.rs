@@ -144,6 +144,25 @@ fn cases() -> Vec<Case> {
             "line 1, column 1: unknown function 'sni' (known: cos, sin, exp, conj, Re, Im, sqrt); did \
              you mean 'sin'?\n  sni(theta)\n  ^^^",
         ),
+        // A function written without its parentheses, as a paper writes the real part, is
+        // told so, not listed among unknown names ('Re' was "unknown name 'Re' (known: …)").
+        case(
+            Qi,
+            "Re M + 1",
+            "'Re' is the real part, a function: write its argument in parentheses, Re(…)",
+            (1, 1),
+            "line 1, column 1: 'Re' is the real part, a function: write its argument in \
+             parentheses, Re(…)\n  Re M + 1\n  ^^",
+        ),
+        case(
+            Qi,
+            "x*conj y",
+            "'conj' is the complex conjugate, a function: write its argument in parentheses, \
+             conj(…)",
+            (1, 3),
+            "line 1, column 3: 'conj' is the complex conjugate, a function: write its argument \
+             in parentheses, conj(…)\n  x*conj y\n    ^^^^",
+        ),
         case(
             Q,
             "x^100000",
