@@ -240,7 +240,8 @@ where
     I: IntoIterator<Item = T>,
     T: Into<OsString> + Clone,
 {
-    let cli = match Cli::try_parse_from(args) {
+    let args: Vec<OsString> = args.into_iter().map(Into::into).collect();
+    let cli = match Cli::try_parse_from(&args) {
         Ok(cli) => cli,
         Err(e) => {
             // clap exits 2 for usage errors and 0 for --help/--version; keep exactly that.
@@ -253,6 +254,12 @@ where
             return Ok(ExitCode::from(code));
         }
     };
+    if let Some(option) = option_after_double_dash(&args) {
+        anyhow::bail!(
+            "'{option}' follows '--', after which every word is read as an expression; put \
+             the options before '--'"
+        );
+    }
     let all_proved = match cli.job() {
         Job::Paper(job) => paper::run(&job)?,
         Job::Tower(job) => tower::run(&job)?,
@@ -271,6 +278,28 @@ where
     } else {
         EXIT_REFUTED
     }))
+}
+
+/// An option of the command written after `--`, where clap reads every word as a value, an
+/// expression: `expand FILE -- -x --no-timings` would read `--no-timings` as `−(−(no −
+/// timings))` and refuse an unknown name 'no'. The first word after `--` that is `--NAME` or
+/// `--NAME=…` for a long option of the command (or a global one), if any.
+fn option_after_double_dash(args: &[OsString]) -> Option<String> {
+    use clap::CommandFactory;
+    let dash = args.iter().skip(1).position(|a| a == "--")? + 1;
+    let command = Cli::command();
+    let sub = args[1..dash]
+        .iter()
+        .find_map(|a| command.find_subcommand(a.to_str()?))
+        .unwrap_or(&command);
+    let long = |name: &str| {
+        (sub.get_arguments().chain(command.get_arguments())).any(|arg| arg.get_long() == Some(name))
+    };
+    args[dash + 1..].iter().find_map(|a| {
+        let word = a.to_str()?;
+        let name = word.strip_prefix("--")?;
+        long(name.split('=').next().unwrap_or(name)).then(|| word.to_string())
+    })
 }
 
 #[cfg(test)]

@@ -5440,3 +5440,39 @@ fn a_claim_too_large_for_memory_is_undecided_with_its_hint() {
         "{err}"
     );
 }
+
+/// An option written after the `--` that a list of expressions needs (`expand FILE -- -x
+/// --no-timings`, as a user appends options) was read as an expression, `−(−(no − timings))`,
+/// and refused as "unknown name 'no'", with a caret under the option; it is now said to stand
+/// after `--`, with what to do. A word after `--` that is no option of the command (`--x`,
+/// minus minus x) is still an expression.
+#[test]
+fn an_option_after_the_double_dash_is_told_to_go_before_it() {
+    let rotor = "systems/harmonic-rotor.toml";
+    for (args, option) in [
+        (
+            vec!["expand", rotor, "--", "-x", "--no-timings"],
+            "--no-timings",
+        ),
+        (
+            vec!["expand", rotor, "--", "L", "--format=json"],
+            "--format=json",
+        ),
+        (
+            vec!["closure", rotor, "L", "--", "G1", "--degree", "2"],
+            "--degree",
+        ),
+    ] {
+        let o = superint_exits(&args, 2);
+        assert_eq!(
+            stderr(&o),
+            format!(
+                "superint: error: '{option}' follows '--', after which every word is read as an \
+                 expression; put the options before '--'\n"
+            ),
+            "{args:?}"
+        );
+    }
+    let o = superint_exits(&["expand", rotor, "--no-timings", "--", "--x"], 0);
+    assert!(String::from_utf8_lossy(&o.stdout).contains("−−x = x"));
+}
