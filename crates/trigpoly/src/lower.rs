@@ -511,6 +511,30 @@ impl<C: Coefficient> Lower<'_, C> {
                 name: name.to_string(),
             }));
         }
+        // A bar over a known name, as a paper writes the complex conjugate (`Ā`, LaTeX
+        // `\bar{A}`), where no name is so spelt: the conjugate is written conj(A).
+        let bare: String = (name.chars())
+            .flat_map(|c| match crate::varset::unbarred(c) {
+                Some(base) => [base, '\u{304}'].into_iter().take(2),
+                None => [c, c].into_iter().take(1),
+            })
+            .collect();
+        if let Some(base) = bare
+            .strip_suffix('\u{304}')
+            .filter(|b| !b.contains('\u{304}'))
+        {
+            if self.name(base, span).is_ok() {
+                return Err(ParseError::new(
+                    span,
+                    format!(
+                        "unknown name {}: the complex conjugate of {base} is written \
+                         conj({base})",
+                        quoted_name(name)
+                    ),
+                )
+                .with_cause(ParseCause::Unreadable));
+            }
+        }
         let known = self.known_names();
         // The name meant, as the context spells it (`Pp_1_1` for `P11` shown `P'_{1,1}`).
         let meant = did_you_mean(name, &known).map_or_else(String::new, |k| {

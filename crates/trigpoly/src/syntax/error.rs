@@ -86,7 +86,8 @@ pub enum ParseCause {
     /// Text that no token is made of where it stands, as a name printed otherwise than it is
     /// written may be (`Z̄`, `G1'`, `\nabla\varphi`): a character no token begins with, a
     /// LaTeX command the reader does not know, or what is no part of a name in a name's
-    /// braces (`p_{x$}`).
+    /// braces (`p_{x$}`), or a known name under a bar (`ȳ`, `\bar{y}`), as a paper writes
+    /// the conjugate.
     Unreadable,
     /// A decimal number (`0.5`), which is not exact: the message names the fraction it writes.
     Decimal,

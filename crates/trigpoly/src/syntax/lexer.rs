@@ -218,6 +218,9 @@ impl<'a> Lexer<'a> {
                     '=' => {
                         "; an expression has no '=' (a claim has one, a condition one per variable)"
                     }
+                    // `x̄`, as a paper writes the conjugate (a function displayed with a bar is
+                    // named by its caller).
+                    '\u{304}' => "; a bar is no operation: the complex conjugate of A is conj(A)",
                     _ => "",
                 };
                 return Err(

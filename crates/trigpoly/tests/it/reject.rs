@@ -154,6 +154,33 @@ fn cases() -> Vec<Case> {
             "line 1, column 1: 'Re' is the real part, a function: write its argument in \
              parentheses, Re(…)\n  Re M + 1\n  ^^",
         ),
+        // A bar over a known name, as a paper writes the conjugate, is told how to write it
+        // ('ȳ' was "unknown name 'ȳ' (known: …)", 'x̄' "unexpected character '\u{304}'").
+        case(
+            Qi,
+            "x*ȳ",
+            "unknown name 'ȳ': the complex conjugate of y is written conj(y)",
+            (1, 3),
+            "line 1, column 3: unknown name 'ȳ': the complex conjugate of y is written \
+             conj(y)\n  x*ȳ\n    ^",
+        ),
+        case(
+            Qi,
+            "\\bar{y} + 1",
+            "unknown name 'y\u{304}': the complex conjugate of y is written conj(y)",
+            (1, 1),
+            "line 1, column 1: unknown name 'y\u{304}': the complex conjugate of y is written \
+             conj(y)\n  \\bar{y} + 1\n  ^^^^^^^",
+        ),
+        case(
+            Qi,
+            "M\u{304}",
+            "unexpected character '\\u{304}'; a bar is no operation: the complex conjugate of A \
+             is conj(A)",
+            (1, 2),
+            "line 1, column 2: unexpected character '\\u{304}'; a bar is no operation: the \
+             complex conjugate of A is conj(A)\n  M\u{304}\n   ^",
+        ),
         case(
             Qi,
             "x*conj y",
