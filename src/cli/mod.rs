@@ -283,17 +283,22 @@ where
 /// An option of the command written after `--`, where clap reads every word as a value, an
 /// expression: `expand FILE -- -x --no-timings` would read `--no-timings` as `−(−(no −
 /// timings))` and refuse an unknown name 'no'. The first word after `--` that is `--NAME` or
-/// `--NAME=…` for a long option of the command (or a global one), if any.
+/// `--NAME=…` for a long option the command takes, as clap reads it once built: its own, the
+/// global ones, `--help`, and any alias (`--full-residuals`); if any.
 fn option_after_double_dash(args: &[OsString]) -> Option<String> {
     use clap::CommandFactory;
     let dash = args.iter().skip(1).position(|a| a == "--")? + 1;
-    let command = Cli::command();
+    let mut command = Cli::command();
+    command.build();
     let sub = args[1..dash]
         .iter()
         .find_map(|a| command.find_subcommand(a.to_str()?))
         .unwrap_or(&command);
     let long = |name: &str| {
-        (sub.get_arguments().chain(command.get_arguments())).any(|arg| arg.get_long() == Some(name))
+        sub.get_arguments().any(|arg| {
+            arg.get_long() == Some(name)
+                || (arg.get_all_aliases()).is_some_and(|aliases| aliases.contains(&name))
+        })
     };
     args[dash + 1..].iter().find_map(|a| {
         let word = a.to_str()?;

@@ -5441,6 +5441,20 @@ fn a_claim_too_large_for_memory_is_undecided_with_its_hint() {
     );
 }
 
+/// Checks that `args` stop before anything is loaded, exit 2, saying that `option` stands
+/// after `--` and goes before it.
+fn stops_with_the_option_after_the_double_dash(args: &[&str], option: &str) {
+    let o = superint_exits(args, 2);
+    assert_eq!(
+        stderr(&o),
+        format!(
+            "superint: error: '{option}' follows '--', after which every word is read as an \
+             expression; put the options before '--'\n"
+        ),
+        "{args:?}"
+    );
+}
+
 /// An option written after the `--` that a list of expressions needs (`expand FILE -- -x
 /// --no-timings`, as a user appends options) was read as an expression, `−(−(no − timings))`,
 /// and refused as "unknown name 'no'", with a caret under the option; it is now said to stand
@@ -5463,16 +5477,32 @@ fn an_option_after_the_double_dash_is_told_to_go_before_it() {
             "--degree",
         ),
     ] {
-        let o = superint_exits(&args, 2);
-        assert_eq!(
-            stderr(&o),
-            format!(
-                "superint: error: '{option}' follows '--', after which every word is read as an \
-                 expression; put the options before '--'\n"
-            ),
-            "{args:?}"
-        );
+        stops_with_the_option_after_the_double_dash(&args, option);
     }
     let o = superint_exits(&["expand", rotor, "--no-timings", "--", "--x"], 0);
     assert!(String::from_utf8_lossy(&o.stdout).contains("−−x = x"));
+}
+
+/// The options after `--` that are told to go before it are all those the command takes, as
+/// clap builds it: an alias (`--full-residuals` of `--full-expressions`) and `--help` were
+/// read as expressions, "unknown name 'full'" and "unknown name 'help'". `--version`, which
+/// `expand` does not take, is still an expression there.
+#[test]
+fn an_alias_or_help_after_the_double_dash_is_told_to_go_before_it() {
+    let rotor = "systems/harmonic-rotor.toml";
+    for (args, option) in [
+        (
+            vec!["expand", rotor, "--", "L", "--full-residuals"],
+            "--full-residuals",
+        ),
+        (vec!["rank", rotor, "--", "L", "H", "--help"], "--help"),
+    ] {
+        stops_with_the_option_after_the_double_dash(&args, option);
+    }
+    let o = superint_exits(&["expand", rotor, "--", "L", "--version"], 2);
+    assert!(
+        stderr(&o).contains("unknown name 'version'"),
+        "{}",
+        stderr(&o)
+    );
 }
