@@ -219,8 +219,8 @@ impl<'a> Lexer<'a> {
                         "; an expression has no '=' (a claim has one, a condition one per variable)"
                     }
                     // `x̄`, as a paper writes the conjugate (a function displayed with a bar is
-                    // named by its caller).
-                    '\u{304}' => "; a bar is no operation: the complex conjugate of A is conj(A)",
+                    // named by its caller): the conjugate of the name under the bar.
+                    '\u{304}' => &self.bar_hint(start),
                     _ => "",
                 };
                 return Err(
@@ -233,6 +233,27 @@ impl<'a> Lexer<'a> {
             tok,
             span: Span::new(start, self.pos),
         })
+    }
+
+    /// What a combining bar (U+0304) at `bar` says: that it is no operation, and the call of
+    /// the conjugate of the name it stands in, `conj(x)` of `x̄`, `conj(K_3_2)` of `K̄_3_2`
+    /// (as a barred name's lowering says it, of `ȳ` and `\bar{y}`); of anything else, a
+    /// number or parentheses, `conj(A)` of a name `A`.
+    fn bar_hint(&self, bar: usize) -> String {
+        let before = &self.src[..bar];
+        let from = (before.char_indices().rev())
+            .take_while(|&(_, c)| is_name_continue(c))
+            .last()
+            .map_or(bar, |(k, _)| k);
+        let after = &self.src[bar + '\u{304}'.len_utf8()..];
+        let to = after.find(|c| !is_name_continue(c)).unwrap_or(after.len());
+        // A coefficient before the name is none of it: `2x̄` is `2·x̄`.
+        let under = before[from..].trim_start_matches(|c| !is_name_start(c));
+        if under.is_empty() {
+            return "; a bar is no operation: the complex conjugate of A is conj(A)".to_string();
+        }
+        let name = format!("{under}{}", &after[..to]);
+        format!("; a bar is no operation: the complex conjugate of {name} is written conj({name})")
     }
 
     /// Error for a number written with an exponent, `1e3` or `2E-5`, whose digits end here.

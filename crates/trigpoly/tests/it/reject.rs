@@ -172,14 +172,35 @@ fn cases() -> Vec<Case> {
             "line 1, column 1: unknown name 'y\u{304}': the complex conjugate of y is written \
              conj(y)\n  \\bar{y} + 1\n  ^^^^^^^",
         ),
+        // A combining bar says the call of the name it stands in, as a barred name does ('M̄'
+        // said "the complex conjugate of A is conj(A)", of a name A never written); its column
+        // counts characters, past a multi-byte one; over a number or parentheses, `conj(A)`.
         case(
             Qi,
             "M\u{304}",
-            "unexpected character '\\u{304}'; a bar is no operation: the complex conjugate of A \
-             is conj(A)",
+            "unexpected character '\\u{304}'; a bar is no operation: the complex conjugate of M \
+             is written conj(M)",
             (1, 2),
             "line 1, column 2: unexpected character '\\u{304}'; a bar is no operation: the \
-             complex conjugate of A is conj(A)\n  M\u{304}\n   ^",
+             complex conjugate of M is written conj(M)\n  M\u{304}\n   ^",
+        ),
+        case(
+            Qi,
+            "ω*2x\u{304}_1",
+            "unexpected character '\\u{304}'; a bar is no operation: the complex conjugate of \
+             x_1 is written conj(x_1)",
+            (1, 5),
+            "line 1, column 5: unexpected character '\\u{304}'; a bar is no operation: the \
+             complex conjugate of x_1 is written conj(x_1)\n  ω*2x\u{304}_1\n      ^",
+        ),
+        case(
+            Qi,
+            "(x + y)\u{304}",
+            "unexpected character '\\u{304}'; a bar is no operation: the complex conjugate of A \
+             is conj(A)",
+            (1, 8),
+            "line 1, column 8: unexpected character '\\u{304}'; a bar is no operation: the \
+             complex conjugate of A is conj(A)\n  (x + y)\u{304}\n         ^",
         ),
         case(
             Qi,
