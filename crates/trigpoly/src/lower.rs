@@ -512,28 +512,24 @@ impl<C: Coefficient> Lower<'_, C> {
             }));
         }
         // A bar over a known name, as a paper writes the complex conjugate (`Ā`, LaTeX
-        // `\bar{A}`), where no name is so spelt: the conjugate is written conj(A).
+        // `\bar{A}`, over the letter before a subscript `\bar{p}_{x}`), where no name is so
+        // spelt: the conjugate is written conj(A).
         let bare: String = (name.chars())
             .flat_map(|c| match crate::varset::unbarred(c) {
                 Some(base) => [base, '\u{304}'].into_iter().take(2),
                 None => [c, c].into_iter().take(1),
             })
             .collect();
-        if let Some(base) = bare
-            .strip_suffix('\u{304}')
-            .filter(|b| !b.contains('\u{304}'))
-        {
-            if self.name(base, span).is_ok() {
-                return Err(ParseError::new(
-                    span,
-                    format!(
-                        "unknown name {}: the complex conjugate of {base} is written \
-                         conj({base})",
-                        quoted_name(name)
-                    ),
-                )
-                .with_cause(ParseCause::Unreadable));
-            }
+        let base = bare.replacen('\u{304}', "", 1);
+        if bare.matches('\u{304}').count() == 1 && self.name(&base, span).is_ok() {
+            return Err(ParseError::new(
+                span,
+                format!(
+                    "unknown name {}: the complex conjugate of {base} is written conj({base})",
+                    quoted_name(name)
+                ),
+            )
+            .with_cause(ParseCause::Unreadable));
         }
         let known = self.known_names();
         // The name meant, as the context spells it (`Pp_1_1` for `P11` shown `P'_{1,1}`).

@@ -175,6 +175,16 @@ fn cases() -> Vec<Case> {
         // A combining bar says the call of the name it stands in, as a barred name does ('M̄'
         // said "the complex conjugate of A is conj(A)", of a name A never written); its column
         // counts characters, past a multi-byte one; over a number or parentheses, `conj(A)`.
+        // A bar over the letter before a subscript, as LaTeX writes it, names the name too
+        // ('p̄_x' was "unknown name 'p̄_x' (known: …)").
+        case(
+            Qi,
+            "\\bar{p}_{x} + 1",
+            "unknown name 'p\u{304}_x': the complex conjugate of p_x is written conj(p_x)",
+            (1, 1),
+            "line 1, column 1: unknown name 'p\u{304}_x': the complex conjugate of p_x is \
+             written conj(p_x)\n  \\bar{p}_{x} + 1\n  ^^^^^^^^^^^",
+        ),
         case(
             Qi,
             "M\u{304}",
