@@ -514,12 +514,15 @@ impl<C: Coefficient> Lower<'_, C> {
         // A bar over a known name, as a paper writes the complex conjugate (`Ā`, LaTeX
         // `\bar{A}`, over the letter before a subscript `\bar{p}_{x}`), where no name is so
         // spelt: the conjugate is written conj(A).
-        let bare: String = (name.chars())
-            .flat_map(|c| match crate::varset::unbarred(c) {
-                Some(base) => [base, '\u{304}'].into_iter().take(2),
-                None => [c, c].into_iter().take(1),
-            })
-            .collect();
+        let bare = bars_apart(name);
+        // Unless a variable is shown so, its bar written otherwise (`\bar{a}` or `ā` of a `c`
+        // shown `ā`, a closure's generator `Zbar` shown `Z̄`): the name is that variable.
+        if bare.contains('\u{304}') {
+            let shown = |v: &Var| bars_apart(self.vars.variable(*v).unicode()) == bare;
+            if let Some(v) = self.vars.vars().find(shown) {
+                return self.name(self.vars.variable(v).name(), span);
+            }
+        }
         let base = bare.replacen('\u{304}', "", 1);
         if bare.matches('\u{304}').count() == 1 && self.name(&base, span).is_ok() {
             return Err(ParseError::new(
@@ -1222,6 +1225,17 @@ pub(crate) fn calls_function(name: &str, declared: &dyn Fn(&str) -> bool) -> boo
         "Re" | "Im" => !declared(name),
         _ => FUNCTIONS.contains(&name) || name == "sqrt",
     }
+}
+
+/// `name` with each precomposed bar written as its letter and a combining one (`Ā` as `A`
+/// and U+0304), as LaTeX's `\bar{A}` reads: one spelling of a barred name however typed.
+fn bars_apart(name: &str) -> String {
+    (name.chars())
+        .flat_map(|c| match crate::varset::unbarred(c) {
+            Some(base) => [base, '\u{304}'].into_iter().take(2),
+            None => [c, c].into_iter().take(1),
+        })
+        .collect()
 }
 
 /// The longest piece, in bytes, that a name run together splits into: a declared name is

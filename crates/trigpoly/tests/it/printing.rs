@@ -1016,3 +1016,29 @@ fn a_sum_whose_terms_share_no_factor_has_no_factored_form() {
         );
     }
 }
+
+/// A variable shown with a bar (`c` shown `ā`, as a closure's generator `Zbar` is shown `Z̄`)
+/// is read by its display however the bar is written, precomposed `ā` or LaTeX `\bar{a}`: the
+/// latter was told "the complex conjugate of a is written conj(a)", of the variable `a`
+/// beside it.
+#[test]
+fn a_variable_shown_with_a_bar_reads_by_its_display_however_the_bar_is_written() {
+    let vars = (VarSet::builder().parameter("a").parameter("c"))
+        .shown_as("ā")
+        .build()
+        .unwrap();
+    let c = Poly::<GaussianRational>::parse(&vars, "c").unwrap();
+    for text in ["ā", "\\bar{a}", "\\bar{a} + a - a"] {
+        let read = Poly::<GaussianRational>::parse(&vars, text);
+        assert_eq!(
+            read.map_err(|e| e.message().to_string()),
+            Ok(c.clone()),
+            "{text}"
+        );
+    }
+    let conj = Poly::<GaussianRational>::parse(&vars, "\\bar{c}").unwrap_err();
+    assert_eq!(
+        conj.message(),
+        "unknown name 'c\u{304}': the complex conjugate of c is written conj(c)"
+    );
+}
