@@ -498,14 +498,17 @@ impl<C: Coefficient> Lower<'_, C> {
                 "sqrt" => "the square root",
                 "exp" => "the exponential",
                 "cos" => "the cosine",
-                _ => "the sine",
+                "sin" => "the sine",
+                // A function added to FUNCTIONS before it is named here.
+                _ => "",
+            };
+            let what = match what {
+                "" => "a function".to_string(),
+                what => format!("{what}, a function"),
             };
             return Err(ParseError::new(
                 span,
-                format!(
-                    "'{name}' is {what}, a function: write its argument in parentheses, \
-                     {name}(…)"
-                ),
+                format!("'{name}' is {what}: write its argument in parentheses, {name}(…)"),
             )
             .with_cause(ParseCause::FunctionWithoutParentheses {
                 name: name.to_string(),

@@ -819,6 +819,26 @@ fn rejected_inputs_have_exact_messages_locations_and_carets() {
     }
 }
 
+/// Every function the parser knows, written without its parentheses, is told as what it is
+/// (`'cos' is the cosine, a function: …`), not as "a function" alone, the message kept for a
+/// function added to `FUNCTIONS` before its description is.
+#[test]
+fn every_function_without_parentheses_is_named_for_what_it_is() {
+    let vars = phase_space();
+    for name in trigpoly::FUNCTIONS.into_iter().chain(["sqrt", "Re", "Im"]) {
+        let src = name.to_string();
+        let err = Poly::<GaussianRational>::parse(&vars, &src).unwrap_err();
+        let message = err.message();
+        let named = message
+            .strip_prefix(&format!("'{name}' is the "))
+            .and_then(|rest| rest.split_once(", a function: write its argument in parentheses, "));
+        assert!(
+            named.is_some_and(|(what, call)| !what.is_empty() && call == format!("{name}(…)")),
+            "{src:?}: {message}"
+        );
+    }
+}
+
 /// The same source is fine over Q(i) where Q rejects it, and vice versa nothing else changes.
 #[test]
 fn rejected_over_q_accepted_over_gaussian_rationals() {
