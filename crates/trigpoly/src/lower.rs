@@ -419,7 +419,16 @@ impl<C: Coefficient> Lower<'_, C> {
                         }
                     }
                 }
-                let base = self.lower(a)?;
+                // `Re²(L)` or `Re^2 L`: the power of a function follows its parentheses.
+                let base = self.lower(a).map_err(|e| match (e.cause(), &a.kind) {
+                    (ParseCause::FunctionWithoutParentheses { name }, ExprKind::Name(written))
+                        if name == written && !a.in_parentheses() =>
+                    {
+                        let power = self.integer_exponent(b).ok();
+                        function_without_parentheses(name, a.span, power)
+                    }
+                    _ => e,
+                })?;
                 match self.exponent(b)? {
                     Exponent::Integer(exp) => base
                         .checked_pow(exp)
@@ -491,28 +500,7 @@ impl<C: Coefficient> Lower<'_, C> {
         // (`cos θ` reads so; these do not): it is no unknown name, and the list of names would
         // not say what to write.
         if calls_function(name, &|n| self.is_declared(n)) {
-            let what = match name {
-                "re" | "Re" => "the real part",
-                "im" | "Im" => "the imaginary part",
-                "conj" => "the complex conjugate",
-                "sqrt" => "the square root",
-                "exp" => "the exponential",
-                "cos" => "the cosine",
-                "sin" => "the sine",
-                // A function added to FUNCTIONS before it is named here.
-                _ => "",
-            };
-            let what = match what {
-                "" => "a function".to_string(),
-                what => format!("{what}, a function"),
-            };
-            return Err(ParseError::new(
-                span,
-                format!("'{name}' is {what}: write its argument in parentheses, {name}(…)"),
-            )
-            .with_cause(ParseCause::FunctionWithoutParentheses {
-                name: name.to_string(),
-            }));
+            return Err(function_without_parentheses(name, span, None));
         }
         // A bar over a known name, as a paper writes the complex conjugate (`Ā`, LaTeX
         // `\bar{A}`, over the letter before a subscript `\bar{p}_{x}`), where no name is so
@@ -1228,6 +1216,38 @@ pub(crate) fn calls_function(name: &str, declared: &dyn Fn(&str) -> bool) -> boo
         "Re" | "Im" => !declared(name),
         _ => FUNCTIONS.contains(&name) || name == "sqrt",
     }
+}
+
+/// The refusal of `name`, a function the parser knows ([`calls_function`]), written without
+/// the parentheses of its argument (`Re K`, `conj A`), at `span`; with the power it was
+/// raised to where it was (`Re²(L)`), which is written after the parentheses (`Re(…)^2`).
+fn function_without_parentheses(name: &str, span: Span, power: Option<i64>) -> ParseError {
+    let what = match name {
+        "re" | "Re" => "the real part",
+        "im" | "Im" => "the imaginary part",
+        "conj" => "the complex conjugate",
+        "sqrt" => "the square root",
+        "exp" => "the exponential",
+        "cos" => "the cosine",
+        "sin" => "the sine",
+        // A function added to FUNCTIONS before it is named here.
+        _ => "",
+    };
+    let what = match what {
+        "" => "a function".to_string(),
+        what => format!("{what}, a function"),
+    };
+    let how = match power {
+        Some(n) => {
+            format!("write its argument in parentheses and the power after them, {name}(…)^{n}")
+        }
+        None => format!("write its argument in parentheses, {name}(…)"),
+    };
+    ParseError::new(span, format!("'{name}' is {what}: {how}")).with_cause(
+        ParseCause::FunctionWithoutParentheses {
+            name: name.to_string(),
+        },
+    )
 }
 
 /// `name` with each precomposed bar written as its letter and a combining one (`Ā` as `A`

@@ -101,7 +101,9 @@ pub enum ParseCause {
     },
     /// A function that takes its argument in parentheses written without them, as a paper
     /// writes the real part, `Re K` or `conj A` (`cos θ` reads so; these do not), where no
-    /// declared name takes that spelling: the message says what to write, `Re(…)`.
+    /// declared name takes that spelling: the message says what to write, `Re(…)`, and where
+    /// it was raised to a power before the parentheses (`Re²(L)`), that the power follows
+    /// them, `Re(…)^2`.
     FunctionWithoutParentheses {
         /// The function's name, as written (`Re`, `conj`).
         name: String,

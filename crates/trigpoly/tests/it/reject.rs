@@ -154,6 +154,26 @@ fn cases() -> Vec<Case> {
             "line 1, column 1: 'Re' is the real part, a function: write its argument in \
              parentheses, Re(…)\n  Re M + 1\n  ^^",
         ),
+        // Raised to a power before its parentheses, as `cos²(θ)` is written, it is told where
+        // the power goes ('Re²(x)' was told to write the parentheses it had).
+        case(
+            Qi,
+            "2 + Re²(x)",
+            "'Re' is the real part, a function: write its argument in parentheses and the power \
+             after them, Re(…)^2",
+            (1, 5),
+            "line 1, column 5: 'Re' is the real part, a function: write its argument in \
+             parentheses and the power after them, Re(…)^2\n  2 + Re²(x)\n      ^^",
+        ),
+        case(
+            Qi,
+            "conj^3 x",
+            "'conj' is the complex conjugate, a function: write its argument in parentheses and \
+             the power after them, conj(…)^3",
+            (1, 1),
+            "line 1, column 1: 'conj' is the complex conjugate, a function: write its argument \
+             in parentheses and the power after them, conj(…)^3\n  conj^3 x\n  ^^^^",
+        ),
         // A bar over a known name, as a paper writes the conjugate, is told how to write it
         // ('ȳ' was "unknown name 'ȳ' (known: …)", 'x̄' "unexpected character '\u{304}'").
         case(
