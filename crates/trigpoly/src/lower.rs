@@ -6,7 +6,7 @@ use crate::error::AlgebraError;
 use crate::number::{Coefficient, GaussianRational, Integer, Rational};
 use crate::poly::Poly;
 use crate::syntax::{parse_expr_reading, Expr, ExprKind, ParseCause, ParseError, Reading, Span};
-use crate::varset::{long_name, Var, VarKind, Vars, RESERVED};
+use crate::varset::{bars_apart, long_name, Var, VarKind, Vars, RESERVED};
 
 /// What names and brackets mean beyond the variables: named functions defined elsewhere (a
 /// system file's `H`, `L`) and the Poisson bracket `{f, g}` of a phase space.
@@ -1248,17 +1248,6 @@ fn function_without_parentheses(name: &str, span: Span, power: Option<i64>) -> P
             name: name.to_string(),
         },
     )
-}
-
-/// `name` with each precomposed bar written as its letter and a combining one (`Ā` as `A`
-/// and U+0304), as LaTeX's `\bar{A}` reads: one spelling of a barred name however typed.
-fn bars_apart(name: &str) -> String {
-    (name.chars())
-        .flat_map(|c| match crate::varset::unbarred(c) {
-            Some(base) => [base, '\u{304}'].into_iter().take(2),
-            None => [c, c].into_iter().take(1),
-        })
-        .collect()
 }
 
 /// The longest piece, in bytes, that a name run together splits into: a declared name is

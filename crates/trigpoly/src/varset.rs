@@ -8,12 +8,12 @@ use crate::error::{AlgebraError, Setting};
 
 mod names;
 
+pub(crate) use names::{bars_apart, letter_of_char, letter_of_command, long_name, unparenthesized};
 pub use names::{
     display_forms, greek_latex, has_several_words, is_identifier, latex_unwritable, momentum_forms,
     shown_forms, shown_text, unbarred, with_indices, BadName, LATEX_LETTERS, MAX_NAME_CHARS,
     RESERVED,
 };
-pub(crate) use names::{letter_of_char, letter_of_command, long_name, unparenthesized};
 use names::{render_momentum, render_name, shown_text_of, spell_out};
 
 /// What a variable is in a phase space; only `Angle` changes the algebra.

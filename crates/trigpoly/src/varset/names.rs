@@ -15,13 +15,7 @@ pub const RESERVED: &[&str] = &["i", "cos", "sin", "exp", "conj", "re", "im", "s
 /// combining macron) and primes: `A_x` → (`A_x`, `A_{x}`), `G1'` → (`G1'`, `G_{1}'`), `Z̄` →
 /// (`Z̄`, `\bar{Z}`), `omega` → (`ω`, `\omega`). Anything else has no such forms.
 pub fn display_forms(display: &str) -> Option<(String, String)> {
-    let spelled: String = display
-        .chars()
-        .flat_map(|c| match unbarred(c) {
-            Some(base) => [base, '\u{304}'].into_iter().take(2),
-            None => [c, c].into_iter().take(1),
-        })
-        .collect();
+    let spelled = bars_apart(display);
     let marked = spelled.trim_end_matches('\'');
     let primes = &spelled[marked.len()..];
     let (base, bar) = match marked.strip_suffix('\u{304}') {
@@ -108,14 +102,7 @@ pub fn shown_text(display: &str) -> String {
 /// [`shown_text`] of `display`, whose [`shown_forms`] text is `text`: `text`, or the display
 /// as written where `text` is only its letters with a bar taken apart.
 pub(super) fn shown_text_of(display: &str, text: String) -> String {
-    let apart: String = display
-        .chars()
-        .flat_map(|c| match unbarred(c) {
-            Some(base) => [base, '\u{304}'].into_iter().take(2),
-            None => [c, c].into_iter().take(1),
-        })
-        .collect();
-    if text == apart {
+    if text == bars_apart(display) {
         display.to_string()
     } else {
         text
@@ -188,6 +175,17 @@ pub(crate) fn unparenthesized(name: &str) -> Option<&str> {
         }
     }
     (depth == 0).then_some(inner)
+}
+
+/// `name` with each precomposed bar written as its letter and a combining one (`Ā` as `A`
+/// and U+0304), as LaTeX's `\bar{A}` reads: one spelling of a barred name however typed.
+pub(crate) fn bars_apart(name: &str) -> String {
+    (name.chars())
+        .flat_map(|c| match unbarred(c) {
+            Some(base) => [base, '\u{304}'].into_iter().take(2),
+            None => [c, c].into_iter().take(1),
+        })
+        .collect()
 }
 
 /// The letter under a precomposed bar, `Ā` → `A`, which a display name may have as `A` and a
