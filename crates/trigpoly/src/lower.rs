@@ -519,8 +519,9 @@ impl<C: Coefficient> Lower<'_, C> {
             return Err(ParseError::new(
                 span,
                 format!(
-                    "unknown name {}: the complex conjugate of {base} is written conj({base})",
-                    quoted_name(name)
+                    "unknown name {}: {}",
+                    quoted_name(name),
+                    crate::syntax::conjugate_written(&base)
                 ),
             )
             .with_cause(ParseCause::Unreadable));
@@ -528,8 +529,7 @@ impl<C: Coefficient> Lower<'_, C> {
         let known = self.known_names();
         // The name meant, as the context spells it (`Pp_1_1` for `P11` shown `P'_{1,1}`).
         let meant = did_you_mean(name, &known).map_or_else(String::new, |k| {
-            let k = self.ctx.spelling(k).unwrap_or_else(|| k.to_string());
-            format!("; did you mean '{k}'?")
+            meant_hint(&self.ctx.spelling(k).unwrap_or_else(|| k.to_string()))
         });
         // A set of no names (a constant's, `GaussianRational::from_str`'s) lists none.
         let listed = match known.is_empty() {
@@ -1301,7 +1301,12 @@ pub fn split_names(name: &str, known: &dyn Fn(&str) -> bool) -> Option<Vec<Strin
 /// `; did you mean 'p_x'?`, to follow a message about `name` that is none of `known`, where
 /// [`did_you_mean`] finds the one meant; else nothing.
 pub fn did_you_mean_hint(name: &str, known: &[impl AsRef<str>]) -> String {
-    did_you_mean(name, known).map_or_else(String::new, |k| format!("; did you mean '{k}'?"))
+    did_you_mean(name, known).map_or_else(String::new, meant_hint)
+}
+
+/// `; did you mean 'p_x'?` of the name meant.
+fn meant_hint(meant: &str) -> String {
+    format!("; did you mean '{meant}'?")
 }
 
 /// The known name that `name` was probably meant to be: the same letters but for case and

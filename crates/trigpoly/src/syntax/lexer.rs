@@ -253,7 +253,7 @@ impl<'a> Lexer<'a> {
             return "; a bar is no operation: the complex conjugate of A is conj(A)".to_string();
         }
         let name = format!("{under}{}", &after[..to]);
-        format!("; a bar is no operation: the complex conjugate of {name} is written conj({name})")
+        format!("; a bar is no operation: {}", conjugate_written(&name))
     }
 
     /// Error for a number written with an exponent, `1e3` or `2E-5`, whose digits end here.
@@ -319,4 +319,10 @@ fn decimal_fraction(written: &str) -> Option<String> {
         1 => n.to_string(),
         _ => format!("{n}/{d}"),
     })
+}
+
+/// How the conjugate of `name` is written, which a bar over it is not (`x̄`, `ȳ`, `\bar{y}`):
+/// `the complex conjugate of y is written conj(y)`, of the lexer's and the lowering's messages.
+pub(crate) fn conjugate_written(name: &str) -> String {
+    format!("the complex conjugate of {name} is written conj({name})")
 }

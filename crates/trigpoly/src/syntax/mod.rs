@@ -23,6 +23,7 @@ mod parser;
 
 pub use error::{Excerpt, ParseCause, ParseError, Span};
 pub use latex::{latex_name, NOT_IN_NAME};
+pub(crate) use lexer::conjugate_written;
 pub use lexer::{is_name_continue, is_name_start};
 pub use parser::{balanced, parse_expr, Expr, ExprKind, LEFT_DEEP_SUM, MAX_DEPTH, MAX_HEIGHT};
 // What the names read as, for the parser's refusals: the lowering's alone
