@@ -212,21 +212,21 @@ impl<C: Coefficient> Poly<C> {
             .try_reserve_exact(n)
             .map_err(|_| too_large_for_memory::<C::Int>(n, w, 0))?;
         order.extend(0..n);
-        order.sort_unstable_by(|&a, &b| keys[b * w..(b + 1) * w].cmp(&keys[a * w..(a + 1) * w]));
         let key = |k: usize| &keys[k * w..(k + 1) * w];
+        order.sort_unstable_by(|&a, &b| key(b).cmp(key(a)));
         let distinct = 1 + order.windows(2).filter(|p| key(p[0]) != key(p[1])).count();
         let (mut out_e, mut out_c) = (Vec::new(), Vec::new());
         let held = formed + order_bytes;
         reserve_terms::<C::Int>(&mut out_e, &mut out_c, distinct, w, held, max_bytes)?;
         let mut coeffs: Vec<Option<C::Int>> = coeffs.into_iter().map(Some).collect();
         for k in order {
-            let key = &keys[k * w..(k + 1) * w];
+            let monomial = key(k);
             let c = coeffs[k].take().expect("each term once");
-            if !out_c.is_empty() && &out_e[out_e.len() - w..] == key {
+            if !out_c.is_empty() && &out_e[out_e.len() - w..] == monomial {
                 let top = out_c.last_mut().expect("a previous term");
                 *top = top.add(&c);
             } else {
-                out_e.extend_from_slice(key);
+                out_e.extend_from_slice(monomial);
                 out_c.push(c);
             }
         }
