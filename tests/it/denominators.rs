@@ -487,7 +487,7 @@ fn a_start_where_a_denominator_in_an_angle_is_zero_is_refused() {
     let o = superint(&["check", f.to_str().unwrap()]);
     let out = String::from_utf8(o.stdout).unwrap();
     assert!(
-        out.contains("H = p_r² + p_φ²/r² + r² + 1/(r² (sin(3φ))²) + 1/(r² (cos(3φ))²)"),
+        out.contains("H = p_r² + p_φ²/r² + r² + 1/(r² (cos(3φ))²) + 1/(r² (sin(3φ))²)"),
         "{out}"
     );
     let (sin, cos) = ("(sin(3φ))", "(cos(3φ))");

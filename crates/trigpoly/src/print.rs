@@ -1,5 +1,17 @@
 //! Printing like the paper: unicode text (`p_x²/(2M) − ω² L`), LaTeX (`\frac{p_{x}^{2}}{2 M}`),
 //! and an ASCII form (`p_x^2/(2*M)`) that parses back to the same element.
+//!
+//! The terms print in one order in every notation (and in what the command line writes as
+//! Markdown and JSON), that of [`Poly::cos_sin_terms`]: by trigonometric monomial, then the
+//! momenta's degree, highest first, then the exponents in descending lexicographic order
+//! (`x² + xy + y²`). A parameter's negative power is part of the coefficient and keeps its
+//! place in that comparison (`p_x²/(2M) + Mω²x²/2`); a negative power of any other variable (a
+//! coordinate, a momentum, a Poisson variable, a declared denominator or a radical) is left out
+//! of it, and the terms it leaves equal are ordered by that denominator: none first, then the
+//! least total degree, then in the variables' order (`β/x² + γ/y²`, `g/(x − y)² + g/(x − z)²`,
+//! `x² + x/y + y² + y/x + 1 + 1/x² + 1/y²`). Without such a denominator the order is the
+//! exponents' alone. The storage order of a polynomial is not this one and is never changed
+//! by printing.
 
 use std::collections::hash_map::{Entry, HashMap};
 use std::fmt;

@@ -791,7 +791,7 @@ mod tests {
         // Terms over different denominators print term by term.
         assert_eq!(
             e("1/(x - y) + 1/(x - z)").to_string(),
-            "1/(x − z) + 1/(x − y)"
+            "1/(x − y) + 1/(x − z)"
         );
     }
 }

@@ -36,6 +36,7 @@ use coeffs::Coeffs;
 pub use index::MonomialIndex;
 pub use radicals::ReducedRadical;
 pub use subst::Point;
+pub(crate) use trig::PrintOrder;
 pub use trig::{CosSinTerm, TrigMonomial};
 
 /// The most bits a component of a coefficient of a product or a power may have (2 MiB of

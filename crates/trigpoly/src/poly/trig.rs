@@ -192,7 +192,8 @@ impl<C: Coefficient> Poly<C> {
 
     /// The terms in the normal form `c · m · Π cos^a θ sin^b θ` (`b ≤ 1`), grouped and ordered
     /// for printing as the paper does: by trigonometric monomial, then by degree in the momenta
-    /// (highest first, so `(p_x − Mωy) cos θ`), then by the monomial in the other variables.
+    /// (highest first, so `(p_x − Mωy) cos θ`), then by the monomial in the other variables,
+    /// a denominator other than a parameter's compared last (`β/x² + γ/y²`, `PrintOrder`).
     ///
     /// Each term's `e^{ikθ}` expands by a table of `(cos θ + i sin θ)^k` with integer
     /// coefficients, so the sums are taken over Z\[i\] (no gcd per addition) and the content
@@ -266,15 +267,10 @@ impl<C: Coefficient> Poly<C> {
                 sum_at(&mut index, &mut sums, (*group, *trig)).add(coeff);
             }
         }
-        let momenta: Vec<usize> = self
-            .vars
-            .vars()
-            .filter(|&v| self.vars.variable(v).kind() == VarKind::Momentum)
-            .map(|v| v.index())
-            .collect();
-        // The order of printing: trigonometric monomial first, then the momenta's degree and
-        // the exponents, both descending; each ranked once, so that a term sorts by two
-        // numbers (no two terms share both).
+        // The order of printing: trigonometric monomial first, then the monomial outside the
+        // angles by `PrintOrder`; each ranked once, so that a term sorts by two numbers (no two
+        // terms share both).
+        let order = PrintOrder::of(&self.vars);
         let trig_monomials: Vec<TrigMonomial> = trigs
             .values
             .iter()
@@ -283,10 +279,7 @@ impl<C: Coefficient> Poly<C> {
             })
             .collect();
         let trig_rank = ranks(&trig_monomials, |t| t.sort_key());
-        let group_rank = ranks(&groups.values, |exps| {
-            let momentum_degree: i64 = momenta.iter().map(|&j| exps[j].abs()).sum();
-            std::cmp::Reverse((momentum_degree, exps.clone()))
-        });
+        let group_rank = ranks(&groups.values, |exps| order.key(exps));
         let mut terms: Vec<(u64, CosSinTerm)> = index
             .into_iter()
             .filter_map(|((group, trig), slot)| {
@@ -306,6 +299,58 @@ impl<C: Coefficient> Poly<C> {
             .collect();
         terms.sort_unstable_by_key(|t| t.0);
         terms.into_iter().map(|(_, term)| term).collect()
+    }
+}
+
+/// The order in which the terms of one trigonometric monomial print, as a paper writes them:
+/// by the momenta's degree, highest first (`(p_x − Mωy) cos θ`); then by the exponents in
+/// descending lexicographic order (`x² + xy + y²`), where a parameter's negative power (`M`,
+/// `I`) counts as its exponent, part of the coefficient (`p_x²/(2M) + p_y²/(2M)`), but that
+/// of any other variable (a coordinate, a momentum, a Poisson variable, a declared
+/// denominator `(x − y)` or a radical `r`) counts as zero; then, of terms so far equal, by
+/// that denominator: none first, then of the least total degree, then in the variables' order
+/// as positive powers are (`β/x² + γ/y²`, `x² + x/y + y² + y/x + 1 + 1/x² + 1/y²`). A
+/// monomial without such a denominator keeps the place the exponents' order gave it before.
+pub(crate) struct PrintOrder {
+    /// The momenta's indices.
+    momenta: Vec<usize>,
+    /// Whether each variable is a parameter, whose negative powers stay in the coefficient.
+    parameter: Vec<bool>,
+}
+
+impl PrintOrder {
+    /// The order of the variables of `vars`.
+    pub(crate) fn of(vars: &Vars) -> PrintOrder {
+        let kind = |v: Var| vars.variable(v).kind();
+        PrintOrder {
+            momenta: (vars.vars())
+                .filter(|&v| kind(v) == VarKind::Momentum)
+                .map(|v| v.index())
+                .collect(),
+            parameter: vars.vars().map(|v| kind(v) == VarKind::Parameter).collect(),
+        }
+    }
+
+    /// Whether a monomial's exponents have a denominator compared apart, a negative power of
+    /// a variable other than a parameter.
+    pub(crate) fn has_denominator(&self, exps: &[i64]) -> bool {
+        (exps.iter().zip(&self.parameter)).any(|(&e, &parameter)| e < 0 && !parameter)
+    }
+
+    /// The key of a monomial's exponents (outside the angles): the least prints first.
+    pub(crate) fn key(&self, exps: &[i64]) -> std::cmp::Reverse<(i64, Vec<i64>, i64, Vec<i64>)> {
+        let momentum_degree: i64 = self.momenta.iter().map(|&j| exps[j].abs()).sum();
+        let below = |(j, &e): (usize, &i64)| match self.parameter[j] {
+            true => 0,
+            false => e.min(0),
+        };
+        let denominator: Vec<i64> = exps.iter().enumerate().map(below).collect();
+        let numerator: Vec<i64> = (exps.iter().zip(&denominator))
+            .map(|(e, d)| e - d)
+            .collect();
+        let degree: i64 = denominator.iter().sum();
+        let denominator = denominator.iter().map(|d| -d).collect();
+        std::cmp::Reverse((momentum_degree, numerator, degree, denominator))
     }
 }
 

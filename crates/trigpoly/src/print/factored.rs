@@ -14,7 +14,7 @@ use std::fmt;
 
 use super::{render_terms, write_term, Inner, Names, Style};
 use crate::number::{Coefficient, GaussianRational, Rational};
-use crate::poly::{CosSinTerm, Poly, TrigMonomial};
+use crate::poly::{CosSinTerm, Poly, PrintOrder, TrigMonomial};
 use crate::varset::{VarKind, Vars};
 
 /// A sum as `factor · (rest)`, found by [`Poly::factored`].
@@ -61,6 +61,25 @@ impl Factored {
             })
             .collect();
         let content = Rational::content_of(terms.iter().flat_map(|t| [&t.coeff.re, &t.coeff.im]));
+        if content.abs().is_one() && powers.iter().all(|&e| e == 0) {
+            return None;
+        }
+        let shifted = |t: &CosSinTerm| -> Vec<i64> {
+            t.exps.iter().zip(&powers).map(|(e, p)| e - p).collect()
+        };
+        if terms.iter().any(|t| shifted(t).iter().any(|&e| e < 0)) {
+            return None;
+        }
+        // The rest in its own printed order, which dividing out a denominator other than a
+        // parameter's can change (`ω²p_x/(x³y²) + ω²p_y/(x²y³)` is `ω²(x p_y + y p_x)/(x³y³)`);
+        // the first term of that order signs the content. Dividing out powers of parameters, or
+        // multiplying by any, leaves the order as it is.
+        let mut terms: Vec<&CosSinTerm> = terms.iter().collect();
+        let order = PrintOrder::of(vars);
+        if order.has_denominator(&powers) {
+            terms.sort_by_cached_key(|t| (t.trig.clone(), order.key(&shifted(t))));
+        }
+        let first = terms[0];
         let leads_negative = match first.coeff.re.is_zero() {
             true => first.coeff.im.is_negative(),
             false => first.coeff.re.is_negative(),
@@ -68,9 +87,6 @@ impl Factored {
         let content = if leads_negative { -&content } else { content };
         // `i(ω₊ − ω₋) W`: a sum of imaginary terms has `i` in its factor.
         let imaginary = terms.iter().all(|t| t.coeff.re.is_zero());
-        if content.abs().is_one() && powers.iter().all(|&e| e == 0) {
-            return None;
-        }
         let rest = terms
             .iter()
             .map(|t| CosSinTerm {
@@ -78,13 +94,10 @@ impl Factored {
                     true => GaussianRational::from(&t.coeff.im / &content),
                     false => GaussianRational::new(&t.coeff.re / &content, &t.coeff.im / &content),
                 },
-                exps: t.exps.iter().zip(&powers).map(|(e, p)| e - p).collect(),
+                exps: shifted(t),
                 trig: t.trig.clone(),
             })
             .collect::<Vec<_>>();
-        if rest.iter().any(|t| t.exps.iter().any(|&e| e < 0)) {
-            return None;
-        }
         let factor = CosSinTerm {
             coeff: match imaginary {
                 true => GaussianRational::new(Rational::zero(), content),

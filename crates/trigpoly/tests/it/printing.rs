@@ -368,6 +368,90 @@ fn coefficients_fractions_and_negative_powers() {
     );
 }
 
+/// Terms that differ in which coordinate carries a negative power print in the variables'
+/// order, as positive powers do (`a/x² + b/y² + c/z²`, once `c/z² + b/y² + a/x²`).
+#[test]
+fn coordinate_denominators_print_in_the_variables_order() {
+    let vars = VarSet::builder()
+        .coordinate("x")
+        .coordinate("y")
+        .coordinate("z")
+        .parameter("a")
+        .parameter("b")
+        .parameter("c")
+        .build()
+        .unwrap();
+    for src in ["a/x^2 + b/y^2 + c/z^2", "c/z^2 + b/y^2 + a/x^2"] {
+        prints(
+            &vars,
+            src,
+            [
+                "a/x² + b/y² + c/z²",
+                r"\frac{a}{x^{2}} + \frac{b}{y^{2}} + \frac{c}{z^{2}}",
+                "a/x^2 + b/y^2 + c/z^2",
+            ],
+        );
+    }
+}
+
+/// The order of a Laurent polynomial in the coordinates: the terms by their numerators, as
+/// positive powers are ordered (a coordinate's negative power counted as none), then those of
+/// one numerator by their denominators: none first, then the least total degree, then in the
+/// variables' order (`x² + x/y + y² + y/x + 1 + 1/x + 1/y + 1/x² + 1/(xy) + 1/y²`, once
+/// `x² + x/y + y² + 1/y² + y/x + 1/x²`). What a common denominator leaves is in its own such
+/// order, which signs the factor.
+#[test]
+fn laurent_terms_print_by_numerator_then_denominator() {
+    let vars = plane();
+    prints(
+        &vars,
+        "x^2 + y^2 + 1/x^2 + 1/y^2 + x/y + y/x",
+        [
+            "x² + x/y + y² + y/x + 1/x² + 1/y²",
+            r"x^{2} + \frac{x}{y} + y^{2} + \frac{y}{x} + \frac{1}{x^{2}} + \frac{1}{y^{2}}",
+            "x^2 + x/y + y^2 + y/x + 1/x^2 + 1/y^2",
+        ],
+    );
+    prints(
+        &vars,
+        "1/y^2 + y/x + 1/x^2 + x/y + y^2 + x^2 + 1 + 1/y + 1/x + 1/(x*y)",
+        [
+            "x² + x/y + y² + y/x + 1 + 1/x + 1/y + 1/x² + 1/(xy) + 1/y²",
+            r"x^{2} + \frac{x}{y} + y^{2} + \frac{y}{x} + 1 + \frac{1}{x} + \frac{1}{y} + \frac{1}{x^{2}} + \frac{1}{x y} + \frac{1}{y^{2}}",
+            "x^2 + x/y + y^2 + y/x + 1 + 1/x + 1/y + 1/x^2 + 1/(x*y) + 1/y^2",
+        ],
+    );
+    let f: Q = p(&vars, "p_y/(x^2*y^3) - p_x/(x^3*y^2)");
+    assert_eq!(f.to_string(), "−p_x/(x³y²) + p_y/(x²y³)");
+    assert_eq!(f.factored().unwrap().to_string(), "(x p_y − y p_x)/(x³y³)");
+}
+
+/// A parameter's negative power is part of the coefficient and keeps the place it always had:
+/// a polynomial with no coordinate in a denominator prints as before (`y² + ωy²/M`, where
+/// counting `M`'s power as none would put `ωy²/M` first).
+#[test]
+fn parameter_denominators_keep_their_order() {
+    let vars = plane();
+    prints(
+        &vars,
+        "M*omega^2*y^2/2 + p_y^2/(2*M) + M*omega^2*x^2/2 + p_x^2/(2*M)",
+        [
+            "p_x²/(2M) + p_y²/(2M) + Mω²x²/2 + Mω²y²/2",
+            r"\frac{p_{x}^{2}}{2 M} + \frac{p_{y}^{2}}{2 M} + \frac{M \omega^{2} x^{2}}{2} + \frac{M \omega^{2} y^{2}}{2}",
+            "p_x^2/(2*M) + p_y^2/(2*M) + M*omega^2*x^2/2 + M*omega^2*y^2/2",
+        ],
+    );
+    prints(
+        &vars,
+        "omega*y^2/M + y^2 + x/M^2",
+        [
+            "x/M² + y² + ωy²/M",
+            r"\frac{x}{M^{2}} + y^{2} + \frac{\omega y^{2}}{M}",
+            "x/M^2 + y^2 + omega*y^2/M",
+        ],
+    );
+}
+
 #[test]
 fn polynomials_over_q_print_the_same_way() {
     let vars = plane();
