@@ -20,8 +20,9 @@ pub struct LimitsArgs {
     #[arg(long, allow_negative_numbers = true,
           value_name = "D", value_parser = super::in_range::<u32>(1, 32767))]
     max_degree: Option<u32>,
-    /// Stop with an error before a product of polynomials that would form more than N term
-    /// products (default: the file's [limits] max_term_products, else 10000000000).
+    /// Stop with an error before a product of polynomials, or the products of a bracket
+    /// together, that would form more than N term products (default: the file's [limits]
+    /// max_term_products, else 10000000000).
     #[arg(long, allow_negative_numbers = true,
           value_name = "N", value_parser = super::Quoting(super::at_least_one))]
     max_term_products: Option<u64>,

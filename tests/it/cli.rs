@@ -4751,6 +4751,39 @@ fn a_closures_products_at_the_term_limit_say_what_was_counted() {
     );
 }
 
+/// The work limit bounds a bracket's products together, not each alone: `{Ax^50, Ay^50}` of
+/// the Kepler problem formed four products of 4·10⁹ term products each, every one under the
+/// default limit of 10¹⁰, and answered after 200 s. The bracket counts them all before it
+/// forms any, stops with the limit's message and the option that raises it, and a limit
+/// above the total lets it through.
+#[test]
+fn a_brackets_products_count_against_the_work_limit_together() {
+    let bracket = |limit: &'static str| {
+        let args = [
+            "bracket",
+            "systems/kepler.toml",
+            "Ax^8",
+            "Ay^8",
+            "--no-timings",
+        ];
+        [&args[..], &["--max-term-products", limit]].concat()
+    };
+    // Each product is at most 340 terms by 356, 121 040 term products; all four, 407 936.
+    let o = superint_exits(&bracket("400000"), 2);
+    let err = stderr(&o);
+    assert!(
+        err.starts_with(
+            "superint: error: <command line>: a sum of 4 products (as a bracket is) would form \
+             407936 term products in all (the largest, 340 terms by 356), past the limit of \
+             400000 (the work limit)"
+        ),
+        "{err}"
+    );
+    assert!(err.contains("--max-term-products N"), "{err}");
+    let out = run(&bracket("410000"), 0);
+    assert!(out.contains("{A_x⁸, A_y⁸} = "), "{out}");
+}
+
 /// A bracket, an expansion and a refuted claim's residual whose terms share a factor are
 /// also written as that factor times the rest, as the paper writes them
 /// (`{A_z, H} = F(x p_x + y p_y)/M`), in every format; a result in the named functions

@@ -113,6 +113,21 @@ pub enum AlgebraError {
         /// The limit in force.
         limit: u64,
     },
+    /// A sum of products, such as a Poisson bracket's `Σ ∂f/∂q·∂g/∂p − ∂f/∂p·∂g/∂q`, whose
+    /// products would form more term products together than the work limit allows, though
+    /// each passes it alone.
+    #[error("{}; {ADVICE_SIMPLIFY}", too_much_summed_work(*.products, *.largest, *.total, *.limit))]
+    TooMuchSummedWork {
+        /// The products of the sum that were counted (those without a factor short enough to
+        /// be shifted copies).
+        products: usize,
+        /// The terms of the two factors of the largest of them.
+        largest: (usize, usize),
+        /// The term products they would form together.
+        total: u128,
+        /// The limit in force.
+        limit: u64,
+    },
     /// An operation that needs `i` in a polynomial over Q.
     #[error("{0} needs Gaussian rational coefficients Q(i), but this polynomial is over Q")]
     NeedsGaussian(String),
@@ -273,7 +288,9 @@ impl AlgebraError {
                 Some(LimitKind::Terms)
             }
             AlgebraError::TooLargeForMemory { .. } => Some(LimitKind::Memory),
-            AlgebraError::TooMuchWork { .. } => Some(LimitKind::Work),
+            AlgebraError::TooMuchWork { .. } | AlgebraError::TooMuchSummedWork { .. } => {
+                Some(LimitKind::Work)
+            }
             AlgebraError::ExponentTooLarge { exponent, .. } => {
                 Some(LimitKind::Degree(exponent.unsigned_abs()))
             }
@@ -310,6 +327,12 @@ impl AlgebraError {
                 products,
                 limit,
             } => too_much_work(*left, *right, *products, *limit),
+            AlgebraError::TooMuchSummedWork {
+                products,
+                largest,
+                total,
+                limit,
+            } => too_much_summed_work(*products, *largest, *total, *limit),
             e => e.to_string(),
         }
     }
@@ -323,7 +346,7 @@ pub enum LimitKind {
     /// The term limit ([`Limits::max_terms`](crate::Limits)), of a result or of its printing.
     Terms,
     /// The work limit ([`Limits::max_term_products`](crate::Limits)), of a product's term
-    /// products.
+    /// products, or of a sum's products together.
     Work,
     /// The degree limit ([`Limits::max_degree`](crate::Limits)), which an exponent or an
     /// angle's order would pass: its size `|n|`.
@@ -381,6 +404,20 @@ fn too_much_work(left: usize, right: usize, products: u128, limit: u64) -> Strin
     format!(
         "the product of {left} terms by {right} would form {products} term products, past the \
          limit of {limit} (the work limit)"
+    )
+}
+
+/// What [`AlgebraError::TooMuchSummedWork`] says, without its advice.
+fn too_much_summed_work(
+    products: usize,
+    largest: (usize, usize),
+    total: u128,
+    limit: u64,
+) -> String {
+    let (left, right) = largest;
+    format!(
+        "a sum of {products} products (as a bracket is) would form {total} term products in \
+         all (the largest, {left} terms by {right}), past the limit of {limit} (the work limit)"
     )
 }
 

@@ -216,8 +216,9 @@ pub(crate) fn spelled_by(name: &str, is_letter: impl Fn(char) -> bool) -> bool {
 /// Limits that stop runaway expansions with a clear error instead of exhausting memory or
 /// running for hours. The size of each result is checked before it is formed where it is
 /// known, and otherwise as it is formed; the work of each product (its term products, `n·m`,
-/// or `n(n + 1)/2` for a square) before it starts, so that a power of a long polynomial whose
-/// result would pass the term limit stops at once rather than after hours of multiplying.
+/// or `n(n + 1)/2` for a square) before it starts, and of a sum's products together (a
+/// bracket's) before any starts, so that a power of a long polynomial whose result would pass
+/// the term limit stops at once rather than after hours of multiplying.
 ///
 /// The library's default is 20 000 000 terms, degree 1000 and 10¹⁰ term products a product
 /// (system files and the command line default to 2 000 000 terms: `docs/system-files.md`),
@@ -232,7 +233,9 @@ pub struct Limits {
     /// 1: [`VarSetBuilder::build`] refuses 0.
     pub max_degree: u32,
     /// The most term products one product of polynomials may form (some seconds to a minute
-    /// of work at the default).
+    /// of work at the default), and the products of one sum of products, such as a Poisson
+    /// bracket's, together
+    /// ([`AlgebraError::TooMuchSummedWork`](crate::AlgebraError::TooMuchSummedWork)).
     pub max_term_products: u64,
     /// The most bytes that the room for a result, reserved before any work from a count of
     /// terms predicted up front (a power by the multinomial theorem), may take with what is

@@ -47,6 +47,7 @@ impl<C: Coefficient> Poly<C> {
                 return Ok(sum);
             }
         }
+        Self::check_sum_work(terms.iter().map(|&(a, b, _)| (a, b)))?;
         let mut streams: Streams<C> = Vec::new();
         for &(a, b, negate) in terms {
             Self::push_product(&mut streams, a, b, negate)?;
@@ -80,6 +81,9 @@ impl<C: Coefficient> Poly<C> {
         let limit = vars.limits().max_degree as i64;
         // The exponent bound of the last `f` seen (a bracket passes one `f` many times).
         let mut f_max: Option<(&Self, i64)> = None;
+        // The products of a derivative by a long `g`, formed once the work of all of them
+        // together is known to be within the limit (a short `g`'s streams are shifted copies).
+        let mut products = Vec::new();
         for &(f, v, g, negate) in terms {
             f.same_vars(g)?;
             first.same_vars(f)?;
@@ -98,8 +102,12 @@ impl<C: Coefficient> Poly<C> {
             if g.len() <= SMALL_SIDE && fm + 1 + g.exponent_bound() <= limit {
                 f.push_derivative_streams(&mut streams, v, g, negate)?;
             } else {
-                Self::push_product(&mut streams, &f.derivative(v)?, g, negate)?;
+                products.push((f.derivative(v)?, g, negate));
             }
+        }
+        Self::check_sum_work(products.iter().map(|(d, g, _)| (d, *g)))?;
+        for (d, g, negate) in products {
+            Self::push_product(&mut streams, &d, g, negate)?;
         }
         Self::sum_streams(&vars, streams)
     }

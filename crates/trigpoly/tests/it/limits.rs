@@ -96,6 +96,43 @@ fn work_limit_refuses_a_product_before_it_starts() {
     assert!(product(1).is_ok());
 }
 
+/// A sum of products counts their term products together against the work limit, before it
+/// forms any (a bracket's four products of 4·10⁹ each passed the limit of 10¹⁰ one by one and
+/// ran 200 s): at the total it is formed, one below it is refused, and a product past the
+/// limit alone is refused as a product is.
+#[test]
+fn work_limit_counts_a_sums_products_together() {
+    let (f4, f3) = ("(1 + x + y + z + t)^4", "(1 + x + y + z + t)^3");
+    // f4·f3 − f3·f4: two products of 70·35 = 2450 term products, 4900 together.
+    let sum = |limit: u64| {
+        let vars = work_vars(limit);
+        let (f, g): (Q, Q) = (p(&vars, f4), p(&vars, f3));
+        Poly::sum_of_products(&[(&f, &g, false), (&g, &f, true)]).map(|h| h.len())
+    };
+    assert_eq!(sum(4900), Ok(0));
+    let err = sum(4899).unwrap_err();
+    assert_eq!(
+        err,
+        AlgebraError::TooMuchSummedWork {
+            products: 2,
+            largest: (35, 70),
+            total: 4900,
+            limit: 4899,
+        }
+    );
+    assert_eq!(err.limit(), Some(trigpoly::LimitKind::Work));
+    assert_eq!(
+        err.to_string(),
+        "a sum of 2 products (as a bracket is) would form 4900 term products in all (the \
+         largest, 35 terms by 70), past the limit of 4899 (the work limit); raise the limit or \
+         simplify the input"
+    );
+    assert!(matches!(
+        sum(2449),
+        Err(AlgebraError::TooMuchWork { products: 2450, .. })
+    ));
+}
+
 /// The binomial coefficient `C(n, k)`: the terms of `(1 + x_1 + … + x_k)^(n − k)`.
 #[allow(non_snake_case)]
 fn C(n: usize, k: usize) -> usize {
