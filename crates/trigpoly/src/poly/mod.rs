@@ -464,11 +464,12 @@ impl<C: Coefficient> Poly<C> {
     }
 
     /// The work limit's check of a sum of products `a·b` before any is formed: each product
-    /// that `checked_mul` would check ([`Poly::check_work`], neither factor of
-    /// [`SMALL_SIDE`](mul::SMALL_SIDE) terms or fewer, which are shifted copies), and their
-    /// term products together, so that a bracket of long polynomials, four products each
-    /// under the limit, stops at once rather than after minutes (`{Ax^50, Ay^50}` of the
-    /// Kepler problem, four products of 4·10⁹ term products, ran 200 s).
+    /// that `checked_mul` would check ([`Poly::check_work`]: neither factor of
+    /// [`SMALL_SIDE`](mul::SMALL_SIDE) terms or fewer, which are shifted copies, nor so few
+    /// term products that they are gathered in one table, [`gather::fits`]), and their term
+    /// products together, so that a bracket of long polynomials, four products each under
+    /// the limit, stops at once rather than after minutes (`{Ax^50, Ay^50}` of the Kepler
+    /// problem, four products of 4·10⁹ term products, ran 200 s).
     pub(crate) fn check_sum_work<'a>(
         products: impl IntoIterator<Item = (&'a Self, &'a Self)>,
     ) -> Result<(), AlgebraError>
@@ -479,7 +480,8 @@ impl<C: Coefficient> Poly<C> {
         let mut limit = u64::MAX;
         for (a, b) in products {
             let (small, big) = if a.len() <= b.len() { (a, b) } else { (b, a) };
-            if small.len() <= mul::SMALL_SIDE {
+            let gathered = gather::fits(a.words(), small.len().saturating_mul(big.len()));
+            if small.len() <= mul::SMALL_SIDE || gathered {
                 continue;
             }
             Self::check_work(small, big)?;

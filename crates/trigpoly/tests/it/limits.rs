@@ -133,6 +133,33 @@ fn work_limit_counts_a_sums_products_together() {
     ));
 }
 
+/// A sum of products checks and counts only the products that a product alone would check:
+/// one of few enough term products to be gathered in one table (7 terms by 7, 49) is formed
+/// whatever the work limit, alone and in a sum too long to be gathered as a whole (six such
+/// products, 294 term products), as it was before sums were counted; it was refused as "the
+/// product of 7 terms by 7 would form 49 term products, past the limit of 48".
+#[test]
+fn work_limit_lets_a_sums_gathered_products_through() {
+    let vars = work_vars(48);
+    let f: Q = p(&vars, "1 + x + y + z + t + x^2 + y^2");
+    let gs: Vec<Q> = (1..=6)
+        .map(|k| {
+            p(
+                &vars,
+                &format!("{k} + x*y + y*z + z*t + t*x + x*z^{k} + y*t"),
+            )
+        })
+        .collect();
+    assert!(gs.iter().all(|g| (f.len(), g.len()) == (7, 7)));
+    // Alone, each product is formed past the limit; their sum is theirs.
+    let mut expected = Poly::zero(&vars);
+    for g in &gs {
+        expected = &expected + &f.checked_mul(g).unwrap();
+    }
+    let terms: Vec<(&Q, &Q, bool)> = gs.iter().map(|g| (&f, g, false)).collect();
+    assert_eq!(Poly::sum_of_products(&terms), Ok(expected));
+}
+
 /// The binomial coefficient `C(n, k)`: the terms of `(1 + x_1 + … + x_k)^(n − k)`.
 #[allow(non_snake_case)]
 fn C(n: usize, k: usize) -> usize {
