@@ -636,7 +636,8 @@ impl PhaseSpace {
     }
 
     /// `{f, g}` given the gradient of `g` from [`PhaseSpace::gradient`]: one fused sum of
-    /// products of the derivatives of `f` (never built on their own) with it, normalised once.
+    /// products of the derivatives of `f` with it (built only to multiply a long entry of the
+    /// gradient), normalised once.
     pub fn bracket_with_gradient(&self, f: &Expr, dg: &Gradient) -> Result<Expr, EngineError> {
         if !dg.declared.is_empty() {
             return self.declared_bracket_with_gradient(f, dg);

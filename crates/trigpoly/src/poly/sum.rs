@@ -81,8 +81,10 @@ impl<C: Coefficient> Poly<C> {
         let limit = vars.limits().max_degree as i64;
         // The exponent bound of the last `f` seen (a bracket passes one `f` many times).
         let mut f_max: Option<(&Self, i64)> = None;
-        // The products of a derivative by a long `g`, formed once the work of all of them
-        // together is known to be within the limit (a short `g`'s streams are shifted copies).
+        // The derivatives of `f` to multiply by a long `g` (or by a short one whose product
+        // could pass the degree limit), all built first and multiplied once the work of all
+        // the products together is known to be within the limit (a short `g`'s streams are
+        // shifted copies of terms of `f`). They take little room beside the products.
         let mut products = Vec::new();
         for &(f, v, g, negate) in terms {
             f.same_vars(g)?;
@@ -158,7 +160,9 @@ impl<C: Coefficient> Poly<C> {
 
     /// [`Poly::sum_of_jacobians`] given the derivatives `(∂g/∂q_k, ∂g/∂p_k)` of `g` for each
     /// pair, worth keeping when `g` (a Hamiltonian, say) enters many sums: one
-    /// [`Poly::sum_of_derivative_products`], whose derivatives of `f` are never built.
+    /// [`Poly::sum_of_derivative_products`], whose derivatives of `f` are built only to
+    /// multiply a long derivative of `g` (a short one's products are shifted copies of the
+    /// terms of `f`).
     pub fn sum_of_jacobians_with_gradient(
         f: &Self,
         pairs: &[(Var, Var)],
