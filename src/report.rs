@@ -14,7 +14,7 @@ use trigpoly::{Expr, Factored, Style};
 
 mod results;
 
-pub(crate) use results::first_free;
+pub(crate) use results::{first_free, PLACEHOLDERS};
 pub use results::{
     ClaimKind, ClaimOutcome, ClaimResult, Excerpt, Fact, ProofResult, RankResult, TableResult,
     TowerResult,

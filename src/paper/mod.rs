@@ -389,6 +389,7 @@ fn proof_entry(
         title: title.to_string(),
         facts,
         lemma: p.lemma.clone(),
+        bases: ["A".into(), "B".into()],
         leibniz_check: p.leibniz_check,
         conclusion: p.conclusion.clone(),
         claims: settles

@@ -544,7 +544,7 @@ fn proof(out: &mut Vec<String>, p: &ProofResult, names: &Names) {
     }
     out.push(format!(
         r"\item computed: the derivation property ${}$ on the base functions --- {}",
-        math("{AB, H} = A{B, H} + B{A, H}"),
+        math(&p.derivation()),
         mark(p.leibniz_check)
     ));
     out.push(r"\end{enumerate}".into());

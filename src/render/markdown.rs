@@ -248,7 +248,7 @@ fn proof(p: &ProofResult) -> String {
     lines.push(format!(
         "{}. computed: the derivation property {} on the base functions — {}",
         p.facts.len() + 1,
-        code("{AB, H} = A{B, H} + B{A, H}"),
+        code(&p.derivation()),
         mark(p.leibniz_check)
     ));
     lines.push(String::new());

@@ -496,7 +496,10 @@ fn proof(out: &mut Vec<String>, p: &ProofResult) {
         .iter()
         .map(|f| (f.statement.clone(), f.holds))
         .chain([(
-            "the derivation property {AB, H} = A{B, H} + B{A, H} on the base functions".into(),
+            format!(
+                "the derivation property {} on the base functions",
+                p.derivation()
+            ),
             p.leibniz_check,
         )])
         .collect();

@@ -345,8 +345,10 @@ pub struct TableResult {
     pub polynomials_in_functions: bool,
 }
 
-/// The names a table's caption may give a row and a column, the first pair free taken.
-const PLACEHOLDERS: [[&str; 2]; 5] = [["A", "B"], ["F", "G"], ["U", "V"], ["Φ", "Ψ"], ["Ξ", "Λ"]];
+/// The names a table's caption may give a row and a column, and a tower's proof its two base
+/// functions, the first pair free taken.
+pub(crate) const PLACEHOLDERS: [[&str; 2]; 5] =
+    [["A", "B"], ["F", "G"], ["U", "V"], ["Φ", "Ψ"], ["Ξ", "Λ"]];
 
 impl TableResult {
     /// `table`, a table of brackets in `system`, captioned `` `{A, B}` for {whose} (row `A`,
@@ -508,6 +510,10 @@ pub struct ProofResult {
     pub facts: Vec<Fact>,
     /// The lemma applied (prose with mathematics, as the engine states it).
     pub lemma: String,
+    /// The names the derivation property and the lemma give the two base functions: `A`, `B`,
+    /// or the first pair the system does not name otherwise ([`first_free`]), so that a file
+    /// with functions `A` and `B` reads `{F, H} = λ_F F`.
+    pub bases: [String; 2],
     /// Whether the derivation property was checked on the base functions.
     pub leibniz_check: bool,
     /// The conclusion (prose with mathematics, as the engine states it).
@@ -517,6 +523,13 @@ pub struct ProofResult {
 }
 
 impl ProofResult {
+    /// The derivation property in the proof's names for the base functions,
+    /// `{AB, H} = A{B, H} + B{A, H}`.
+    pub fn derivation(&self) -> String {
+        let [a, b] = &self.bases;
+        format!("{{{a}{b}, H}} = {a}{{{b}, H}} + {b}{{{a}, H}}")
+    }
+
     /// Whether every step holds.
     pub fn holds(&self) -> bool {
         self.facts.iter().all(|f| f.holds) && self.leibniz_check

@@ -23,7 +23,8 @@ use super::scope::{substitute, Scope};
 use super::text::{comma_pieces, trimmed};
 use super::{Caller, LoadedSystem};
 use crate::report::{
-    listed, ClaimResult, Entry, Fact, ProofResult, Report, Section, SummaryKind, TowerResult,
+    first_free, listed, ClaimResult, Entry, Fact, ProofResult, Report, Section, SummaryKind,
+    TowerResult, PLACEHOLDERS,
 };
 
 /// The largest degree in the indices of an eigenvalue that the all-`m, n` proof compares on
@@ -259,14 +260,16 @@ impl LoadedSystem {
         let source = &family.source;
         let scope = Scope::of_family(self, k);
         let tree = scope.tree(source, &family.value)?;
+        let names = base_names(&self.system, &family.display, &family.indices);
         let factors = match powers(&tree, &family.indices) {
             Ok(p) => p,
             Err(why) => {
+                let [a, b] = &names;
                 return Ok(Entry::Text(format!(
-                    "No proof for all m, n: `{}_{{m,n}}` is not a product of powers `A^m B^n` \
+                    "No proof for all m, n: `{}_{{m,n}}` is not a product of powers `{a}^m {b}^n` \
                      ({why}); the bounded check above is what holds.",
                     family.display
-                )))
+                )));
             }
         };
         let start = Instant::now();
@@ -297,7 +300,8 @@ impl LoadedSystem {
                 family.display
             ),
             facts,
-            lemma: eigenfunction_lemma(m, n),
+            lemma: eigenfunction_lemma(m, n, &names),
+            bases: names,
             leibniz_check,
             conclusion: statement.to_string(),
             claims: vec![ClaimResult::derived(id, statement, holds, note)
@@ -384,12 +388,25 @@ impl LoadedSystem {
 
 /// The eigenfunction lemma in the indices `m`, `n`: from the bases' eigenvalues to every
 /// `A^m B^n`'s, which is the proof's step from its facts to all `m, n`.
-fn eigenfunction_lemma(m: &str, n: &str) -> String {
+/// `a` and `b` name the two base functions (`A`, `B`, or another pair where the file has those
+/// names).
+fn eigenfunction_lemma(m: &str, n: &str, [a, b]: &[String; 2]) -> String {
     format!(
-        "the bracket is a derivation in each argument, so {{A, H}} = λ_A A and \
-         {{B, H}} = λ_B B give {{A^{m} B^{n}, H}} = ({m}λ_A + {n}λ_B) A^{m} B^{n} for all \
-         {m}, {n} ≥ 0, and {m}λ_A + {n}λ_B = {m}λ(1, 0) + {n}λ(0, 1) = λ({m}, {n})"
+        "the bracket is a derivation in each argument, so {{{a}, H}} = λ_{a} {a} and \
+         {{{b}, H}} = λ_{b} {b} give {{{a}^{m} {b}^{n}, H}} = ({m}λ_{a} + {n}λ_{b}) {a}^{m} {b}^{n} \
+         for all {m}, {n} ≥ 0, and {m}λ_{a} + {n}λ_{b} = {m}λ(1, 0) + {n}λ(0, 1) = λ({m}, {n})"
     )
+}
+
+/// The names the proof of family `display` with `indices` gives its two base functions: the
+/// first pair of [`PLACEHOLDERS`] that names nothing of the system, the family or its indices
+/// (`A`, `B` unless the file has a function `A` or `B`: then `F`, `G`).
+fn base_names(system: &brackets::System, display: &str, indices: &[String; 2]) -> [String; 2] {
+    let taken = [display, indices[0].as_str(), indices[1].as_str()];
+    first_free(system, &taken, &PLACEHOLDERS, |pair| {
+        pair.iter().map(|p| p.to_string()).collect()
+    })
+    .map(str::to_string)
 }
 
 /// The tower job on a system file: for each family named in `family` (one name, or several

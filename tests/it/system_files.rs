@@ -2056,6 +2056,72 @@ fn tower_proof_facts_parenthesize_a_sum() {
     assert!(out.contains("{p_x − ix, H} = −i (p_x − ix)"), "{out}");
 }
 
+/// A tower's proof names its two base functions otherwise than the file's functions: where a
+/// file has ladders `A` and `B` and a family `J = B^m e^{−inθ}`, the proof said
+/// `{A, H} = λ_A A and {B, H} = λ_B B give {A^m B^n, H} = …` of the bases `B` and `e^{−iθ}`, so
+/// that the file's `A` stood for `B` and its `B` for `e^{−iθ}`; it now takes the first pair the
+/// file does not name, `F`, `G`, in every format, and keeps `A`, `B` where it can.
+#[test]
+fn a_tower_proof_names_its_bases_apart_from_the_files_functions() {
+    let dir = scratch("tower-bases");
+    let file = "hamiltonian = \"(p_x^2 + p_y^2)/2 + (x^2 + 4*y^2)/2 + p_theta^2/2\"\n\
+                [phase_space]\ncoordinates = [\"x\", \"y\"]\nangles = [\"theta\"]\n\
+                [[function]]\nname = \"A\"\nvalue = \"p_x + i*x\"\n\
+                [[function]]\nname = \"B\"\nvalue = \"p_y + 2*i*y\"\n\
+                [[family]]\nname = \"J\"\nvalue = \"B^m*exp(-i*n*theta)\"\n\
+                eigenvalue = \"i*(2*m - n*p_theta)\"\n";
+    std::fs::write(dir.join("ab.toml"), file).expect("write");
+    for (format, said) in [
+        (
+            "text",
+            [
+                "{FG, H} = F{G, H} + G{F, H}",
+                "so {F, H} = λ_F F and {G, H} = λ_G G",
+            ],
+        ),
+        (
+            "markdown",
+            [
+                "`{FG, H} = F{G, H} + G{F, H}`",
+                "`{F, H} = λ_F F` and `{G, H} = λ_G G`",
+            ],
+        ),
+        (
+            "latex",
+            [
+                r"$\{FG, H\} = F\{G, H\} + G\{F, H\}$",
+                r"$\{F, H\} = \lambda_{F} F$ and $\{G, H\} = \lambda_{G} G$",
+            ],
+        ),
+    ] {
+        let o = superint_in(
+            &dir,
+            &[
+                "tower", "--system", "ab.toml", "--max", "2", "--format", format,
+            ],
+        );
+        assert_eq!(o.status.code(), Some(0), "{}", text(&o.stderr));
+        let out = text(&o.stdout);
+        for s in said {
+            assert!(out.contains(s), "{format}: {s}\n{out}");
+        }
+        assert!(!out.contains("λ_A") && !out.contains("lambda_{A}"), "{out}");
+    }
+    // Without functions so named, the proof keeps A and B.
+    let free = file
+        .replace("name = \"A\"", "name = \"U1\"")
+        .replace("name = \"B\"", "name = \"V1\"")
+        .replace("\"B^m", "\"V1^m");
+    std::fs::write(dir.join("free.toml"), free).expect("write");
+    let o = superint_in(&dir, &["tower", "--system", "free.toml", "--max", "2"]);
+    let out = text(&o.stdout);
+    assert!(out.contains("{AB, H} = A{B, H} + B{A, H}"), "{out}");
+    assert!(
+        out.contains("so {A, H} = λ_A A and {B, H} = λ_B B"),
+        "{out}"
+    );
+}
+
 /// A tower says its system's name as the titles do: `for my oscillator`, in every format (it
 /// said `for the my oscillator`), the harmonic rotor's `for the harmonic rotor`, and a file
 /// that names no system by its stem.
