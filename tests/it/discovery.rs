@@ -1823,7 +1823,7 @@ fn a_condition_the_flow_leaves_is_refused() {
         ),
         (
             vec!["systems/harmonic-rotor.toml", "--when", "x = y"],
-            "the flow leaves the surface x = y: there {x − (y), H} = p_x/M − p_y/M, not 0",
+            "the flow leaves the surface x = y: there {x − y, H} = p_x/M − p_y/M, not 0",
         ),
     ];
     for (args, message) in leaves {
@@ -1899,7 +1899,7 @@ fn a_parameter_set_to_a_function_the_flow_changes_is_refused() {
         assert_eq!(out.status.code(), Some(2), "{args:?}: {stderr}");
         assert!(
             stderr.contains(
-                "the flow leaves the surface a = p_x: there {a − (p_x), H} = p_x, not 0, so what \
+                "the flow leaves the surface a = p_x: there {a − p_x, H} = p_x, not 0, so what \
                  is conserved on it is no integral; a condition may set parameters to \
                  constants, and variables the flow keeps"
             ),

@@ -85,6 +85,30 @@ pub struct LeftByFlow {
     pub rate: String,
 }
 
+/// `name − value` as a paper writes it, for a value as printed: a single term after the minus
+/// sign (`x − 2y`, `p_θ − Iω`), a negative one as a sum (`x + 2y` for `−2y`), and a sum in
+/// parentheses (`x − (y p_y + y)`).
+fn difference(name: &str, value: &str) -> String {
+    // A sum has a ` + ` or ` − ` outside parentheses and braces (a single term may divide by
+    // a declared denominator, `g/(x − y)`).
+    let mut depth = 0usize;
+    let mut sum = false;
+    let chars: Vec<char> = value.chars().collect();
+    for (k, &c) in chars.iter().enumerate() {
+        match c {
+            '(' | '{' | '[' => depth += 1,
+            ')' | '}' | ']' => depth = depth.saturating_sub(1),
+            '+' | '−' if depth == 0 && k > 0 && chars[k - 1] == ' ' => sum = true,
+            _ => {}
+        }
+    }
+    match (sum, value.strip_prefix('−')) {
+        (true, _) => format!("{name} − ({value})"),
+        (false, Some(rest)) => format!("{name} + {rest}"),
+        (false, None) => format!("{name} − {value}"),
+    }
+}
+
 impl std::fmt::Display for Condition {
     /// The condition as it reads (its `text`: `p_θ = 2Iω`).
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
@@ -439,7 +463,7 @@ impl Condition {
                 // A long value or rate by its first terms and its size (a value of 5456 terms
                 // made a message of 0.7 MB).
                 let level = match moves {
-                    true => format!("{name} − ({})", value.brief_excerpt()),
+                    true => difference(&name, &value.brief_excerpt()),
                     false => name,
                 };
                 return Ok(Some(LeftByFlow {
@@ -662,5 +686,22 @@ impl Claim {
             // Timing is reported, never used to decide anything.
             seconds: start.elapsed().as_secs_f64(),
         })
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::difference;
+
+    /// The level a condition leaves reads as a paper writes it: `{x − 2y, H}`, not
+    /// `{x − (2y), H}`; a negative term as a sum, and only a sum in parentheses.
+    #[test]
+    fn a_level_puts_only_a_sum_in_parentheses() {
+        assert_eq!(difference("x", "2y"), "x − 2y");
+        assert_eq!(difference("a", "p_x"), "a − p_x");
+        assert_eq!(difference("x", "−2y"), "x + 2y");
+        assert_eq!(difference("x", "g/(x − y)"), "x − g/(x − y)");
+        assert_eq!(difference("x", "y p_y + y + p_y"), "x − (y p_y + y + p_y)");
+        assert_eq!(difference("x", "−y + 1"), "x − (−y + 1)");
     }
 }
