@@ -46,11 +46,18 @@ pub fn complex_form(f: &Expr) -> Option<(Expr, i64)> {
 }
 
 /// The first of `candidates` that names none of `count` labels `P1, P2, …` the system has as
-/// a variable or a function (`I1`, `I2` are a coupled rotor's moments of inertia): the letter
-/// of a report's numbered labels.
-fn label_letter<'a>(system: &System, candidates: &[&'a str], count: usize) -> &'a str {
+/// a variable or a function (`I1`, `I2` are a coupled rotor's moments of inertia), nor, with
+/// `bare`, the letter `P` itself: the letter of a report's numbered labels. The amplitudes
+/// take `bare`, since their caption writes the letter alone, `Re(A e^{−ikθ})`, above lines
+/// that restate them in the file's functions (`A7 = A` read the amplitude as the function
+/// `A` of the Smorodinsky–Winternitz rotor).
+fn label_letter<'a>(system: &System, candidates: &[&'a str], count: usize, bare: bool) -> &'a str {
     first_free(system, &[], candidates, |p| {
-        (1..=count).map(|i| format!("{p}{i}")).collect()
+        let letter = bare.then(|| p.to_string());
+        letter
+            .into_iter()
+            .chain((1..=count).map(|i| format!("{p}{i}")))
+            .collect()
     })
 }
 
@@ -666,8 +673,8 @@ impl Shared {
                 .module
                 .as_ref()
                 .map(|m| parameter_names(vars, &m.parameters)),
-            letter: label_letter(system, &["I", "J", "Φ", "Ξ"], r.basis.len()),
-            complex: label_letter(system, &["A", "B", "Ψ", "Λ"], r.basis.len()),
+            letter: label_letter(system, &["I", "J", "Φ", "Ξ"], r.basis.len(), false),
+            complex: label_letter(system, &["A", "B", "Ψ", "Λ"], r.basis.len(), true),
             shown: shown_integrals(r),
             names: Names::of_system(system),
             caller,

@@ -1012,8 +1012,8 @@ fn anisotropic_3_5_c26() {
              ≤ 1: 5, ≤ 2: 9, ≤ 3: 19.",
             "Known integrals in the space: H, H_x, H_y, Re K, Im K.",
             "the generated ones span 15 of the 19 dimensions",
-            "A2 (k = 3) = p_x + 3iMωx",
-            "A4 (k = 5) = p_y + 5iMωy",
+            "B2 (k = 3) = p_x + 3iMωx",
+            "B4 (k = 5) = p_y + 5iMωy",
         ],
     );
     expect(
@@ -4575,6 +4575,33 @@ fn search_restates_its_integrals_in_functions_and_family_instances() {
     let found = lines(&json);
     assert_eq!(found.len(), 4);
     assert!(found.iter().all(|l| l["in_functions"].is_null()), "{json}");
+}
+
+/// The amplitudes' letter names nothing of the file, the letter alone included: the
+/// Smorodinsky–Winternitz I rotor has ladders `A` and `B`, and its search at `Ω = ω` wrote
+/// `I = Re(A e^{−ikθ})` above `A7 (k = 2) = p_x² + … = A`, the amplitude and the function in
+/// one letter; it now takes `Ψ`, past `B`, which the file names too. The harmonic rotor, with
+/// no `A`, keeps it.
+#[test]
+fn the_amplitudes_letter_is_no_name_of_the_file() {
+    let text = superint_ok_line(
+        "search systems/smorodinsky-winternitz-i-rotor.toml --when 'p_theta = I*omega' \
+         --momenta-degree 2 --positions-degree 4 --trig-degree 2 --laurent --new-only \
+         --no-timings",
+    );
+    assert!(text.contains("as I = Re(Ψ e^{−ikθ}):"), "{text}");
+    assert!(
+        text.contains(
+            "\n    Ψ7 (k = 2) = p_x² + 2iMωx p_x − M²ω²x² + 2Mβ/x²\n               = A\n"
+        ),
+        "{text}"
+    );
+    assert!(!text.contains("A7 (k = 2)"), "{text}");
+    let text = superint_ok_line(
+        "search systems/harmonic-rotor.toml --when 'p_theta = I*omega' --momenta-degree 1 \
+         --positions-degree 1 --trig-degree 1 --new-only --no-timings",
+    );
+    assert!(text.contains("as I = Re(A e^{−ikθ}):"), "{text}");
 }
 
 /// A search of a system file writes the amplitude `A` of each integral `Re(A e^{−ikθ})` it
