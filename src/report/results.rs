@@ -511,8 +511,8 @@ pub struct ProofResult {
     /// The lemma applied (prose with mathematics, as the engine states it).
     pub lemma: String,
     /// The names the derivation property and the lemma give the two base functions: `A`, `B`,
-    /// or the first pair the system does not name otherwise ([`first_free`]), so that a file
-    /// with functions `A` and `B` reads `{F, H} = λ_F F`.
+    /// or the first pair the system does not name otherwise, as a table's caption chooses, so
+    /// that a file with functions `A` and `B` reads `{F, H} = λ_F F`.
     pub bases: [String; 2],
     /// Whether the derivation property was checked on the base functions.
     pub leibniz_check: bool,
