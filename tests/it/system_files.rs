@@ -2122,6 +2122,37 @@ fn a_tower_proof_names_its_bases_apart_from_the_files_functions() {
     );
 }
 
+/// A tower's proof names its bases apart from the file's families too: beside functions `A`,
+/// `B` and a family `F = A^m B^n`, the proof of `J` said `{F, H} = λ_F F` of its base `B`, so
+/// that the family's letter stood for a base; it now takes `U`, `V`, in both proofs.
+#[test]
+fn a_tower_proof_names_its_bases_apart_from_the_files_families() {
+    let dir = scratch("tower-bases-families");
+    let file = "hamiltonian = \"(p_x^2 + p_y^2)/2 + (x^2 + 4*y^2)/2 + p_theta^2/2\"\n\
+                [phase_space]\ncoordinates = [\"x\", \"y\"]\nangles = [\"theta\"]\n\
+                [[function]]\nname = \"A\"\nvalue = \"p_x + i*x\"\n\
+                [[function]]\nname = \"B\"\nvalue = \"p_y + 2*i*y\"\n\
+                [[family]]\nname = \"J\"\nvalue = \"B^m*exp(-i*n*theta)\"\n\
+                eigenvalue = \"i*(2*m - n*p_theta)\"\n\
+                [[family]]\nname = \"F\"\nvalue = \"A^m*B^n\"\n\
+                eigenvalue = \"i*(m + 2*n)\"\n";
+    std::fs::write(dir.join("abf.toml"), file).expect("write");
+    let o = superint_in(&dir, &["tower", "--system", "abf.toml", "--max", "1"]);
+    assert_eq!(o.status.code(), Some(0), "{}", text(&o.stderr));
+    let out = text(&o.stdout);
+    assert_eq!(
+        out.matches("{UV, H} = U{V, H} + V{U, H}").count(),
+        2,
+        "{out}"
+    );
+    assert_eq!(
+        out.matches("so {U, H} = λ_U U and {V, H} = λ_V V").count(),
+        2,
+        "{out}"
+    );
+    assert!(!out.contains("λ_F") && !out.contains("{FG, H}"), "{out}");
+}
+
 /// A tower says its system's name as the titles do: `for my oscillator`, in every format (it
 /// said `for the my oscillator`), the harmonic rotor's `for the harmonic rotor`, and a file
 /// that names no system by its stem.
