@@ -46,13 +46,20 @@ pub fn complex_form(f: &Expr) -> Option<(Expr, i64)> {
 }
 
 /// The first of `candidates` that names none of `count` labels `P1, P2, …` the system has as
-/// a variable or a function (`I1`, `I2` are a coupled rotor's moments of inertia), nor, with
-/// `bare`, the letter `P` itself: the letter of a report's numbered labels. The amplitudes
-/// take `bare`, since their caption writes the letter alone, `Re(A e^{−ikθ})`, above lines
-/// that restate them in the file's functions (`A7 = A` read the amplitude as the function
-/// `A` of the Smorodinsky–Winternitz rotor).
-fn label_letter<'a>(system: &System, candidates: &[&'a str], count: usize, bare: bool) -> &'a str {
-    first_free(system, &[], candidates, |p| {
+/// a variable or a function (`I1`, `I2` are a coupled rotor's moments of inertia) or are
+/// `taken` (a file's families, by name and display), nor, with `bare`, the letter `P`
+/// itself: the letter of a report's numbered labels. The amplitudes take `bare`, since their
+/// caption writes the letter alone, `Re(A e^{−ikθ})`, above lines that restate them in the
+/// file's functions (`A7 = A` read the amplitude as the function `A` of the
+/// Smorodinsky–Winternitz rotor, and `Re(B e^{−ikθ})` as the family `B` of the 3:5 rotor).
+fn label_letter<'a>(
+    system: &System,
+    taken: &[&str],
+    candidates: &[&'a str],
+    count: usize,
+    bare: bool,
+) -> &'a str {
+    first_free(system, taken, candidates, |p| {
         let letter = bare.then(|| p.to_string());
         letter
             .into_iter()
@@ -621,7 +628,12 @@ fn search_report_with(
 ) -> Result<(Report, SearchResult), EngineError> {
     let start = Instant::now();
     let r = search(system, options)?;
-    let shared = Shared::new(system, options, &r, caller);
+    // The file's families, whose names the labels' letters avoid as the functions'.
+    let families: Vec<&str> = (restate.iter())
+        .flat_map(|r| r.file.families())
+        .flat_map(|f| [f.name.as_str(), f.display.as_str()])
+        .collect();
+    let shared = Shared::new(system, &families, options, &r, caller);
     let sections = vec![
         shared.search_section(system, options, &r)?,
         shared.basis_section(&r, restate)?,
@@ -665,7 +677,14 @@ struct Shared {
 }
 
 impl Shared {
-    fn new(system: &System, options: &SearchOptions, r: &SearchResult, caller: Caller) -> Self {
+    /// The report's shared parts, its labels' letters naming nothing of `system` nor `taken`.
+    fn new(
+        system: &System,
+        taken: &[&str],
+        options: &SearchOptions,
+        r: &SearchResult,
+        caller: Caller,
+    ) -> Self {
         let vars = system.vars();
         Shared {
             held: HeldAt::new(options.condition.as_ref(), vars, &r.parameters),
@@ -673,8 +692,8 @@ impl Shared {
                 .module
                 .as_ref()
                 .map(|m| parameter_names(vars, &m.parameters)),
-            letter: label_letter(system, &["I", "J", "Φ", "Ξ"], r.basis.len(), false),
-            complex: label_letter(system, &["A", "B", "Ψ", "Λ"], r.basis.len(), true),
+            letter: label_letter(system, taken, &["I", "J", "Φ", "Ξ"], r.basis.len(), false),
+            complex: label_letter(system, taken, &["A", "B", "Ψ", "Λ"], r.basis.len(), true),
             shown: shown_integrals(r),
             names: Names::of_system(system),
             caller,

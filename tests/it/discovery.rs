@@ -1012,8 +1012,8 @@ fn anisotropic_3_5_c26() {
              ≤ 1: 5, ≤ 2: 9, ≤ 3: 19.",
             "Known integrals in the space: H, H_x, H_y, Re K, Im K.",
             "the generated ones span 15 of the 19 dimensions",
-            "B2 (k = 3) = p_x + 3iMωx",
-            "B4 (k = 5) = p_y + 5iMωy",
+            "Ψ2 (k = 3) = p_x + 3iMωx",
+            "Ψ4 (k = 5) = p_y + 5iMωy",
         ],
     );
     expect(
@@ -4580,8 +4580,8 @@ fn search_restates_its_integrals_in_functions_and_family_instances() {
 /// The amplitudes' letter names nothing of the file, the letter alone included: the
 /// Smorodinsky–Winternitz I rotor has ladders `A` and `B`, and its search at `Ω = ω` wrote
 /// `I = Re(A e^{−ikθ})` above `A7 (k = 2) = p_x² + … = A`, the amplitude and the function in
-/// one letter; it now takes `Ψ`, past `B`, which the file names too. The harmonic rotor, with
-/// no `A`, keeps it.
+/// one letter; it now takes `Ψ`, past `B`, which the file names too, as it does past a
+/// family `B`. The harmonic rotor, with no `A`, keeps it.
 #[test]
 fn the_amplitudes_letter_is_no_name_of_the_file() {
     let text = superint_ok_line(
@@ -4597,6 +4597,14 @@ fn the_amplitudes_letter_is_no_name_of_the_file() {
         "{text}"
     );
     assert!(!text.contains("A7 (k = 2)"), "{text}");
+    // The anisotropic 3:5 rotor has a function `A` and a family `B`, whose instance `B_{1,0}`
+    // is the amplitude `A_x`: `Re(B e^{−ikθ})` read as the family; it takes `Ψ` too.
+    let text = superint_ok_line(
+        "search systems/anisotropic-3-5-rotor.toml --when 'p_theta = I*omega' \
+         --momenta-degree 1 --positions-degree 1 --trig-degree 5 --new-only --no-timings",
+    );
+    assert!(text.contains("as I = Re(Ψ e^{−ikθ}):"), "{text}");
+    assert!(text.contains("\n    Ψ2 (k = 3) = p_x + 3iMωx\n"), "{text}");
     let text = superint_ok_line(
         "search systems/harmonic-rotor.toml --when 'p_theta = I*omega' --momenta-degree 1 \
          --positions-degree 1 --trig-degree 1 --new-only --no-timings",
