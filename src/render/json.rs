@@ -80,6 +80,9 @@
 //!                 (the text's: "Z" in the paper, "K_{m,n} = Z^m e^{−inθ}" for a file's
 //!                 family), "max", "checked", "failures": [[m, n]], "outcome", "seconds" } ],
 //!   "proofs": [ { "section", "title", "facts": [ { "statement", "holds" } ],
+//!                 "bases" (the names the derivation and the lemma give the two base
+//!                 functions: ["A", "B"], or ["F", "G"] where the file names A or B),
+//!                 "derivation" (the derivation property checked, in those names),
 //!                 "leibniz_check", "lemma", "conclusion", "claims": [ids], "outcome" } ],
 //!   "ranks": [ { "section", "id", "functions", "coordinates", "expected",
 //!                "condition", "condition_ascii" (parameters the rank is taken at, or null), "rank",
@@ -398,6 +401,8 @@ fn proof(p: &ProofResult, section: u32) -> Value {
             "found": f.found.as_ref().map(|e| e.render(Style::Ascii)),
             "found_statement": f.found_statement,
         })).collect::<Vec<_>>(),
+        "bases": p.bases,
+        "derivation": p.derivation(),
         "leibniz_check": p.leibniz_check,
         "lemma": p.lemma,
         "conclusion": p.conclusion,

@@ -2151,6 +2151,21 @@ fn a_tower_proof_names_its_bases_apart_from_the_files_families() {
         "{out}"
     );
     assert!(!out.contains("λ_F") && !out.contains("{FG, H}"), "{out}");
+    // JSON carries the names its lemma uses, and the derivation checked in them.
+    let o = superint_in(
+        &dir,
+        &[
+            "tower", "--system", "abf.toml", "--max", "1", "--format", "json",
+        ],
+    );
+    let json: serde_json::Value = serde_json::from_slice(&o.stdout).expect("json");
+    let proofs = json["proofs"].as_array().expect("proofs");
+    assert_eq!(proofs.len(), 2, "{json}");
+    for p in proofs {
+        assert_eq!(p["bases"], serde_json::json!(["U", "V"]), "{json}");
+        assert_eq!(p["derivation"], "{UV, H} = U{V, H} + V{U, H}", "{json}");
+        assert!(p["lemma"].as_str().unwrap().contains("λ_U"), "{json}");
+    }
 }
 
 /// A tower says its system's name as the titles do: `for my oscillator`, in every format (it
