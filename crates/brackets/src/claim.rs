@@ -85,10 +85,11 @@ pub struct LeftByFlow {
     pub rate: String,
 }
 
-/// `name − value` as a paper writes it, for a value as printed: a single term after the minus
-/// sign (`x − 2y`, `p_θ − Iω`), a negative one as a sum (`x + 2y` for `−2y`), and a sum in
-/// parentheses (`x − (y p_y + y)`).
-fn difference(name: &str, value: &str) -> String {
+/// `name − value` as a paper writes it, for a value as printed and its negation `negated`: a
+/// single term after the minus sign (`x − 2y`, `p_θ − Iω`), a negative one, or a sum whose
+/// first term is negative, as the sum with the negation (`x + 2y` for `−2y`, `x + y + 1` for
+/// `−y − 1`), and another sum in parentheses (`x − (y p_y + y)`).
+fn difference(name: &str, value: &str, negated: &str) -> String {
     // A sum has a ` + ` or ` − ` outside parentheses and braces (a single term may divide by
     // a declared denominator, `g/(x − y)`).
     let mut depth = 0usize;
@@ -102,10 +103,10 @@ fn difference(name: &str, value: &str) -> String {
             _ => {}
         }
     }
-    match (sum, value.strip_prefix('−')) {
-        (true, _) => format!("{name} − ({value})"),
-        (false, Some(rest)) => format!("{name} + {rest}"),
-        (false, None) => format!("{name} − {value}"),
+    match (sum, value.starts_with('−')) {
+        (_, true) => format!("{name} + {negated}"),
+        (true, false) => format!("{name} − ({value})"),
+        (false, false) => format!("{name} − {value}"),
     }
 }
 
@@ -463,7 +464,7 @@ impl Condition {
                 // A long value or rate by its first terms and its size (a value of 5456 terms
                 // made a message of 0.7 MB).
                 let level = match moves {
-                    true => difference(&name, &value.brief_excerpt()),
+                    true => difference(&name, &value.brief_excerpt(), &(-value).brief_excerpt()),
                     false => name,
                 };
                 return Ok(Some(LeftByFlow {
@@ -694,14 +695,19 @@ mod tests {
     use super::difference;
 
     /// The level a condition leaves reads as a paper writes it: `{x − 2y, H}`, not
-    /// `{x − (2y), H}`; a negative term as a sum, and only a sum in parentheses.
+    /// `{x − (2y), H}`; a negative term, or a sum led by one, as a sum
+    /// (`x + y − 1`), and only another sum in parentheses.
     #[test]
     fn a_level_puts_only_a_sum_in_parentheses() {
-        assert_eq!(difference("x", "2y"), "x − 2y");
-        assert_eq!(difference("a", "p_x"), "a − p_x");
-        assert_eq!(difference("x", "−2y"), "x + 2y");
-        assert_eq!(difference("x", "g/(x − y)"), "x − g/(x − y)");
-        assert_eq!(difference("x", "y p_y + y + p_y"), "x − (y p_y + y + p_y)");
-        assert_eq!(difference("x", "−y + 1"), "x − (−y + 1)");
+        assert_eq!(difference("x", "2y", "−2y"), "x − 2y");
+        assert_eq!(difference("a", "p_x", "−p_x"), "a − p_x");
+        assert_eq!(difference("x", "−2y", "2y"), "x + 2y");
+        assert_eq!(difference("x", "g/(x − y)", "−g/(x − y)"), "x − g/(x − y)");
+        assert_eq!(
+            difference("x", "y p_y + y + p_y", "−y p_y − y − p_y"),
+            "x − (y p_y + y + p_y)"
+        );
+        // A sum whose first term is negative reads as a sum, `x + y − 1`, not `x − (−y + 1)`.
+        assert_eq!(difference("x", "−y + 1", "y − 1"), "x + y − 1");
     }
 }
