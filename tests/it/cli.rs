@@ -1302,6 +1302,43 @@ fn cli_a_display_name_in_an_expression_names_the_function() {
     assert!(stderr(&o).contains(want), "{}", stderr(&o));
 }
 
+/// A bar over an angle, `θ̄` or `\bar{\theta}`, says that the angle is real and that `conj`
+/// does not take it, with how functions depend on it: it said "the complex conjugate of θ is
+/// written conj(θ)" (and `\bar{\theta}` "unknown name 'θ̄' (known: …)"), and `conj(θ)` is
+/// refused. A bar over a variable conj takes keeps its `conj(x)`.
+#[test]
+fn cli_a_bar_over_an_angle_says_that_conj_does_not_take_it() {
+    let rotor = "systems/harmonic-rotor.toml";
+    let angle = "θ is an angle, real: conj does not take it, and functions depend on it through \
+                 cos(theta), sin(theta) or exp(i*k*theta)";
+    for (expr, message) in [
+        (
+            "θ\u{304}",
+            format!(
+                "superint: error: <command line>:1:2: unexpected character '\\u{{304}}'; a bar \
+                 is no operation: {angle}\n 1 | θ\u{304}\n   |  ^\n"
+            ),
+        ),
+        (
+            "\\bar{\\theta}",
+            format!(
+                "superint: error: <command line>:1:1: unknown name 'θ\u{304}': {angle}\n \
+                 1 | \\bar{{\\theta}}\n   | ^^^^^^^^^^^^\n"
+            ),
+        ),
+        (
+            "x\u{304}",
+            "superint: error: <command line>:1:2: unexpected character '\\u{304}'; a bar is no \
+             operation: the complex conjugate of x is written conj(x)\n 1 | x\u{304}\n   |  ^\n"
+                .to_string(),
+        ),
+    ] {
+        let o = superint(&["expand", rotor, "--", expr]);
+        assert_eq!(o.status.code(), Some(2), "{expr}");
+        assert_eq!(stderr(&o), message, "{expr}");
+    }
+}
+
 /// A system whose functions display as no name, `∂H` and `∇φ` (in LaTeX `\partial H` and
 /// `\nabla\varphi`), for the refusals of a display typed in an expression.
 fn differential_displays() -> std::path::PathBuf {

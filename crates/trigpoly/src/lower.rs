@@ -314,6 +314,16 @@ impl<C: Coefficient> Reading for Lower<'_, C> {
         }
         self.split_name(name)
     }
+    /// An angle's conjugate is no call of `conj`, which refuses it: the angle is real, and
+    /// functions depend on it through its cosine, sine or exponential.
+    fn conjugate(&self, name: &str) -> String {
+        match self.angle_use(name) {
+            Some(through) => {
+                format!("{name} is an angle, real: conj does not take it, and {through}")
+            }
+            None => crate::syntax::conjugate_written(name),
+        }
+    }
 }
 
 /// A product of factors as written, each to its power: `(x + y)(x − 2y)³`, `g(x − y)²`, `−2x`.
@@ -453,6 +463,17 @@ impl<C: Coefficient> Lower<'_, C> {
         }
     }
 
+    /// Of `name` an angle's (`theta`, `θ`), how functions depend on it: `functions depend on
+    /// it through cos(theta), sin(theta) or exp(i*k*theta)`; of any other name, none.
+    fn angle_use(&self, name: &str) -> Option<String> {
+        let v = self.vars.lookup(name)?;
+        let n = (self.vars.variable(v).kind() == VarKind::Angle)
+            .then(|| self.vars.variable(v).name())?;
+        Some(format!(
+            "functions depend on it through cos({n}), sin({n}) or exp(i*k*{n})"
+        ))
+    }
+
     fn name(&self, name: &str, span: Span) -> Result<Poly<C>, ParseError> {
         if name == "i" {
             let i = C::from_gaussian(&GaussianRational::i()).ok_or_else(|| {
@@ -464,13 +485,10 @@ impl<C: Coefficient> Lower<'_, C> {
             return Ok(Poly::constant(self.vars, i));
         }
         if let Some(v) = self.vars.lookup(name) {
-            if self.vars.variable(v).kind() == VarKind::Angle {
-                let n = self.vars.variable(v).name();
+            if let Some(through) = self.angle_use(name) {
                 return Err(ParseError::new(
                     span,
-                    format!(
-                        "{name} is an angle: functions depend on it through cos({n}), sin({n}) or exp(i*k*{n})"
-                    ),
+                    format!("{name} is an angle: {through}"),
                 ));
             }
             return Ok(Poly::var(self.vars, v));
@@ -515,13 +533,15 @@ impl<C: Coefficient> Lower<'_, C> {
             }
         }
         let base = bare.replacen('\u{304}', "", 1);
-        if bare.matches('\u{304}').count() == 1 && self.name(&base, span).is_ok() {
+        // An angle too, which conj does not take: its bar says so.
+        let conjugated = || self.name(&base, span).is_ok() || self.angle_use(&base).is_some();
+        if bare.matches('\u{304}').count() == 1 && conjugated() {
             return Err(ParseError::new(
                 span,
                 format!(
                     "unknown name {}: {}",
                     quoted_name(name),
-                    crate::syntax::conjugate_written(&base)
+                    Reading::conjugate(self, &base)
                 ),
             )
             .with_cause(ParseCause::Unreadable));

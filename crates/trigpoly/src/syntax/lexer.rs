@@ -9,6 +9,7 @@
 use num_bigint::BigInt;
 
 use super::error::{ParseCause, ParseError, Span};
+use super::parser::Reading;
 use crate::varset::letter_of_char;
 
 /// The kind of a token, with its value for literals, names and superscripts.
@@ -95,6 +96,9 @@ pub(crate) struct Lexer<'a> {
     /// to [`super::MAX_DEPTH`] as the parser's nesting is, so that reading them cannot
     /// overflow the stack.
     pub(super) groups: usize,
+    /// What the names read as, for a bar's message: how the conjugate of the name under it
+    /// is written ([`Reading::conjugate`]); none, `conj(x)` of any name.
+    names: Option<&'a dyn Reading>,
 }
 
 impl<'a> Lexer<'a> {
@@ -103,6 +107,15 @@ impl<'a> Lexer<'a> {
             src,
             pos: 0,
             groups: 0,
+            names: None,
+        }
+    }
+
+    /// A lexer of `src` whose bar's message says how `names` write a name's conjugate.
+    pub(crate) fn reading(src: &'a str, names: &'a dyn Reading) -> Self {
+        Lexer {
+            names: Some(names),
+            ..Lexer::new(src)
         }
     }
 
@@ -253,7 +266,11 @@ impl<'a> Lexer<'a> {
             return "; a bar is no operation: the complex conjugate of A is conj(A)".to_string();
         }
         let name = format!("{under}{}", &after[..to]);
-        format!("; a bar is no operation: {}", conjugate_written(&name))
+        let conjugate = match self.names {
+            Some(names) => names.conjugate(&name),
+            None => conjugate_written(&name),
+        };
+        format!("; a bar is no operation: {conjugate}")
     }
 
     /// Error for a number written with an exponent, `1e3` or `2E-5`, whose digits end here.

@@ -8,7 +8,7 @@ use num_bigint::BigInt;
 
 use super::error::{ParseError, Span};
 use super::latex::{FRACTIONS, SIZING_OPEN};
-use super::lexer::{Lexer, Tok, Token};
+use super::lexer::{conjugate_written, Lexer, Tok, Token};
 use crate::lower::calls_function;
 
 /// Maximum nesting of parentheses, calls, brackets and operators (the operand of an operator
@@ -177,6 +177,12 @@ pub(crate) trait Reading {
     /// The names that `name`, written without parentheses, reads as a product of (`M`, `ω` of
     /// `Mω`), if it is one.
     fn split(&self, name: &str) -> Option<Vec<String>>;
+    /// How the conjugate of `name` is written, of a bar over it (`x̄`, `\bar{y}`), which is
+    /// no operation: [`conjugate_written`]'s `conj(y)` unless the name is one `conj` does not
+    /// take.
+    fn conjugate(&self, name: &str) -> String {
+        conjugate_written(name)
+    }
 }
 
 /// The reading of no names: none splits, and `Re` and `Im` are the real and imaginary parts.
@@ -193,7 +199,7 @@ impl Reading for Unread {
 
 /// [`parse_expr_reading`], its error without its source.
 fn parse_source(src: &str, names: &dyn Reading) -> Result<Expr, ParseError> {
-    let mut lexer = Lexer::new(src);
+    let mut lexer = Lexer::reading(src, names);
     let tok = lexer.next_token()?;
     let mut p = Parser {
         src,
