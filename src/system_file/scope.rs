@@ -126,6 +126,19 @@ pub(crate) fn instance_of(families: &[super::Family], name: &str) -> Option<(usi
     Some((k, index_value(m)?, index_value(n)?))
 }
 
+/// The instance of `families` under one bar in `name` (`P_3_2` of `P̄_3_2`, `Ā_1_2` with a
+/// precomposed bar too), if it is one.
+fn barred_instance(families: &[super::Family], name: &str) -> Option<String> {
+    let bare: String = (name.chars())
+        .flat_map(|c| match trigpoly::unbarred(c) {
+            Some(base) => vec![base, '\u{304}'],
+            None => vec![c],
+        })
+        .collect();
+    let base = bare.replacen('\u{304}', "", 1);
+    (bare.matches('\u{304}').count() == 1 && instance_of(families, &base).is_some()).then_some(base)
+}
+
 /// The most digits an index of a family instance has, leading zeros aside (`K_007_1` is
 /// `K_7_1`).
 const INDEX_DIGITS: usize = 9;
@@ -968,6 +981,11 @@ impl<'a> Scope<'a> {
             }
             let e = self.expand(k, m, n, source, || text.source_span(span))?;
             self.made.borrow_mut().insert(name.to_string(), e);
+        } else if let Some(base) = barred_instance(&self.file.families, name) {
+            // A bar over an instance whose bar family the file does not declare
+            // (`\bar{P}_{3,2}`): the instance is made, for the lowering to say that its
+            // conjugate is written conj(P_3_2), as of a barred function.
+            return self.make_instance(source, text, &base, span);
         } else if let Some(family) = meant_family(&self.file.families, name)
             // In a family's own text, what is no instance of it (`K_b_1_2` in `K`'s) is left
             // to the lowering: it may be one of a family declared later.

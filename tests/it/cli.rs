@@ -1339,6 +1339,25 @@ fn cli_a_bar_over_an_angle_says_that_conj_does_not_take_it() {
     }
 }
 
+/// A bar over a family's instance whose bar family the file does not declare,
+/// `\bar{P}_{3,2}`, says that its conjugate is written conj(P_3_2), as a bar over a function
+/// (`\bar{L}`) says conj(L): it said "unknown name 'P̄_3_2' (known: …)" with the generic hint.
+/// `\bar{K}_{3,2}` is the file's family Kbar's instance still.
+#[test]
+fn cli_a_bar_over_a_family_instance_says_how_its_conjugate_is_written() {
+    let rotor = "systems/harmonic-rotor.toml";
+    let o = superint(&["expand", rotor, "--", "x + \\bar{P}_{3,2}"]);
+    assert_eq!(o.status.code(), Some(2));
+    assert_eq!(
+        stderr(&o),
+        "superint: error: <command line>:1:5: unknown name 'P\u{304}_3_2': the complex \
+         conjugate of P_3_2 is written conj(P_3_2)\n 1 | x + \\bar{P}_{3,2}\n   |     \
+         ^^^^^^^^^^^^^\n"
+    );
+    run(&["expand", rotor, "conj(P_3_2)", "--no-timings"], 0);
+    run(&["expand", rotor, "\\bar{K}_{3,2}", "--no-timings"], 0);
+}
+
 /// A system whose functions display as no name, `∂H` and `∇φ` (in LaTeX `\partial H` and
 /// `\nabla\varphi`), for the refusals of a display typed in an expression.
 fn differential_displays() -> std::path::PathBuf {
