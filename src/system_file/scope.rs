@@ -129,14 +129,7 @@ pub(crate) fn instance_of(families: &[super::Family], name: &str) -> Option<(usi
 /// The instance of `families` under one bar in `name` (`P_3_2` of `P̄_3_2`, `Ā_1_2` with a
 /// precomposed bar too), if it is one.
 fn barred_instance(families: &[super::Family], name: &str) -> Option<String> {
-    let bare: String = (name.chars())
-        .flat_map(|c| match trigpoly::unbarred(c) {
-            Some(base) => vec![base, '\u{304}'],
-            None => vec![c],
-        })
-        .collect();
-    let base = bare.replacen('\u{304}', "", 1);
-    (bare.matches('\u{304}').count() == 1 && instance_of(families, &base).is_some()).then_some(base)
+    trigpoly::under_one_bar(name).filter(|base| instance_of(families, base).is_some())
 }
 
 /// The most digits an index of a family instance has, leading zeros aside (`K_007_1` is

@@ -74,9 +74,9 @@ pub use print::{
 pub use syntax::{Excerpt, ParseCause, ParseError, Span};
 pub use varset::{
     display_forms, greek_latex, has_several_words, is_identifier, juxtaposition_is_ambiguous,
-    latex_unwritable, momentum_forms, shown_forms, shown_text, unbarred, with_indices, BadName,
-    Limits, Var, VarKind, VarSet, VarSetBuilder, Variable, Vars, FIELD_BITS, LATEX_LETTERS,
-    MAX_NAME_CHARS, RESERVED,
+    latex_unwritable, momentum_forms, shown_forms, shown_text, unbarred, under_one_bar,
+    with_indices, BadName, Limits, Var, VarKind, VarSet, VarSetBuilder, Variable, Vars, FIELD_BITS,
+    LATEX_LETTERS, MAX_NAME_CHARS, RESERVED,
 };
 
 /// Polynomials over Q(i): the type of phase-space functions (angles need `i`).

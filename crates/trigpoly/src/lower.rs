@@ -6,7 +6,7 @@ use crate::error::AlgebraError;
 use crate::number::{Coefficient, GaussianRational, Integer, Rational};
 use crate::poly::Poly;
 use crate::syntax::{parse_expr_reading, Expr, ExprKind, ParseCause, ParseError, Reading, Span};
-use crate::varset::{bars_apart, long_name, Var, VarKind, Vars, RESERVED};
+use crate::varset::{bars_apart, long_name, under_one_bar, Var, VarKind, Vars, RESERVED};
 
 /// What names and brackets mean beyond the variables: named functions defined elsewhere (a
 /// system file's `H`, `L`) and the Poisson bracket `{f, g}` of a phase space.
@@ -532,10 +532,10 @@ impl<C: Coefficient> Lower<'_, C> {
                 return self.name(self.vars.variable(v).name(), span);
             }
         }
-        let base = bare.replacen('\u{304}', "", 1);
         // An angle too, which conj does not take: its bar says so.
-        let conjugated = || self.name(&base, span).is_ok() || self.angle_use(&base).is_some();
-        if bare.matches('\u{304}').count() == 1 && conjugated() {
+        let conjugated =
+            |base: &String| self.name(base, span).is_ok() || self.angle_use(base).is_some();
+        if let Some(base) = under_one_bar(name).filter(conjugated) {
             return Err(ParseError::new(
                 span,
                 format!(

@@ -11,8 +11,8 @@ mod names;
 pub(crate) use names::{bars_apart, letter_of_char, letter_of_command, long_name, unparenthesized};
 pub use names::{
     display_forms, greek_latex, has_several_words, is_identifier, latex_unwritable, momentum_forms,
-    shown_forms, shown_text, unbarred, with_indices, BadName, LATEX_LETTERS, MAX_NAME_CHARS,
-    RESERVED,
+    shown_forms, shown_text, unbarred, under_one_bar, with_indices, BadName, LATEX_LETTERS,
+    MAX_NAME_CHARS, RESERVED,
 };
 use names::{render_momentum, render_name, shown_text_of, spell_out};
 

@@ -188,6 +188,14 @@ pub(crate) fn bars_apart(name: &str) -> String {
         .collect()
 }
 
+/// The name under the one bar of `name`, precomposed or combining, however typed (`P_3_2` of
+/// `P̄_3_2`, of `\bar{P}_{3,2}` as read, and of `P` and U+0304 then `_3_2`), where it has
+/// exactly one: the name whose conjugate a paper writes so.
+pub fn under_one_bar(name: &str) -> Option<String> {
+    let bare = bars_apart(name);
+    (bare.matches('\u{304}').count() == 1).then(|| bare.replacen('\u{304}', "", 1))
+}
+
 /// The letter under a precomposed bar, `Ā` → `A`, which a display name may have as `A` and a
 /// combining macron (U+0304).
 pub fn unbarred(c: char) -> Option<char> {
