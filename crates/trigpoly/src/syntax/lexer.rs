@@ -9,7 +9,7 @@
 use num_bigint::BigInt;
 
 use super::error::{ParseCause, ParseError, Span};
-use super::parser::Reading;
+use super::parser::{Reading, Unread};
 use crate::varset::letter_of_char;
 
 /// The kind of a token, with its value for literals, names and superscripts.
@@ -97,8 +97,8 @@ pub(crate) struct Lexer<'a> {
     /// overflow the stack.
     pub(super) groups: usize,
     /// What the names read as, for a bar's message: how the conjugate of the name under it
-    /// is written ([`Reading::conjugate`]); none, `conj(x)` of any name.
-    names: Option<&'a dyn Reading>,
+    /// is written ([`Reading::conjugate`]; of no names, `conj(x)` of any name).
+    names: &'a dyn Reading,
 }
 
 impl<'a> Lexer<'a> {
@@ -107,14 +107,14 @@ impl<'a> Lexer<'a> {
             src,
             pos: 0,
             groups: 0,
-            names: None,
+            names: &Unread,
         }
     }
 
     /// A lexer of `src` whose bar's message says how `names` write a name's conjugate.
     pub(crate) fn reading(src: &'a str, names: &'a dyn Reading) -> Self {
         Lexer {
-            names: Some(names),
+            names,
             ..Lexer::new(src)
         }
     }
@@ -266,11 +266,7 @@ impl<'a> Lexer<'a> {
             return "; a bar is no operation: the complex conjugate of A is conj(A)".to_string();
         }
         let name = format!("{under}{}", &after[..to]);
-        let conjugate = match self.names {
-            Some(names) => names.conjugate(&name),
-            None => conjugate_written(&name),
-        };
-        format!("; a bar is no operation: {conjugate}")
+        format!("; a bar is no operation: {}", self.names.conjugate(&name))
     }
 
     /// Error for a number written with an exponent, `1e3` or `2E-5`, whose digits end here.

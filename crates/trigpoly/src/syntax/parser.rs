@@ -186,7 +186,7 @@ pub(crate) trait Reading {
 }
 
 /// The reading of no names: none splits, and `Re` and `Im` are the real and imaginary parts.
-struct Unread;
+pub(crate) struct Unread;
 
 impl Reading for Unread {
     fn calls(&self, name: &str) -> bool {
