@@ -630,8 +630,7 @@ fn search_report_with(
     let r = search(system, options)?;
     // The file's families, whose names the labels' letters avoid as the functions'.
     let families: Vec<&str> = (restate.iter())
-        .flat_map(|r| r.file.families())
-        .flat_map(|f| [f.name.as_str(), f.display.as_str()])
+        .flat_map(|r| r.file.family_names())
         .collect();
     let shared = Shared::new(system, &families, options, &r, caller);
     let sections = vec![

@@ -406,6 +406,12 @@ impl LoadedSystem {
         &self.families
     }
 
+    /// Each family's name and display (`K_m_n`'s `K` and `K`), which a report's labels avoid
+    /// as they do the system's names.
+    pub(crate) fn family_names(&self) -> impl Iterator<Item = &str> {
+        (self.families.iter()).flat_map(|f| [f.name.as_str(), f.display.as_str()])
+    }
+
     /// The claims, in file order, then those added in code (read, not yet computed:
     /// [`LoadedSystem::check_claim`] computes one).
     pub fn claims(&self) -> &[ClaimSpec] {

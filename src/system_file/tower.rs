@@ -21,7 +21,7 @@ use super::claims::engine_error;
 use super::error::{ErrorKind, FileError};
 use super::scope::{substitute, Scope};
 use super::text::{comma_pieces, trimmed};
-use super::{Caller, Family, LoadedSystem};
+use super::{Caller, LoadedSystem};
 use crate::report::{
     first_free, listed, ClaimResult, Entry, Fact, ProofResult, Report, Section, SummaryKind,
     TowerResult, PLACEHOLDERS,
@@ -260,7 +260,7 @@ impl LoadedSystem {
         let source = &family.source;
         let scope = Scope::of_family(self, k);
         let tree = scope.tree(source, &family.value)?;
-        let names = base_names(&self.system, &self.families, &family.indices);
+        let names = base_names(&self.system, self.family_names(), &family.indices);
         let factors = match powers(&tree, &family.indices) {
             Ok(p) => p,
             Err(why) => {
@@ -400,17 +400,14 @@ fn eigenfunction_lemma(m: &str, n: &str, [a, b]: &[String; 2]) -> String {
 
 /// The names the proof of a family with `indices` gives its two base functions: the first
 /// pair of [`PLACEHOLDERS`] that names nothing of the system, none of the file's `families`
-/// (by name or display) and neither index (`A`, `B` unless the file has a function `A` or
-/// `B`: then `F`, `G`, unless it has a family `F`).
-fn base_names(
+/// (their names and displays) and neither index (`A`, `B` unless the file has a function `A`
+/// or `B`: then `F`, `G`, unless it has a family `F`).
+fn base_names<'a>(
     system: &brackets::System,
-    families: &[Family],
-    indices: &[String; 2],
+    families: impl Iterator<Item = &'a str>,
+    indices: &'a [String; 2],
 ) -> [String; 2] {
-    let taken: Vec<&str> = (families.iter())
-        .flat_map(|f| [f.name.as_str(), f.display.as_str()])
-        .chain(indices.iter().map(String::as_str))
-        .collect();
+    let taken: Vec<&str> = families.chain(indices.iter().map(String::as_str)).collect();
     first_free(system, &taken, &PLACEHOLDERS, |pair| {
         pair.iter().map(|p| p.to_string()).collect()
     })
