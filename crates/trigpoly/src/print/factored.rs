@@ -64,22 +64,23 @@ impl Factored {
         if content.abs().is_one() && powers.iter().all(|&e| e == 0) {
             return None;
         }
-        let shifted = |t: &CosSinTerm| -> Vec<i64> {
-            t.exps.iter().zip(&powers).map(|(e, p)| e - p).collect()
-        };
-        if terms.iter().any(|t| shifted(t).iter().any(|&e| e < 0)) {
+        // Each term with its exponents divided by the factor's powers, none of which may be
+        // negative.
+        let mut divided: Vec<(&CosSinTerm, Vec<i64>)> = (terms.iter())
+            .map(|t| (t, t.exps.iter().zip(&powers).map(|(e, p)| e - p).collect()))
+            .collect();
+        if divided.iter().any(|(_, exps)| exps.iter().any(|&e| e < 0)) {
             return None;
         }
         // The rest in its own printed order, which dividing out a denominator other than a
         // parameter's can change (`ω²p_x/(x³y²) + ω²p_y/(x²y³)` is `ω²(x p_y + y p_x)/(x³y³)`);
         // the first term of that order signs the content. Dividing out powers of parameters, or
         // multiplying by any, leaves the order as it is.
-        let mut terms: Vec<&CosSinTerm> = terms.iter().collect();
         let order = PrintOrder::of(vars);
         if order.has_denominator(&powers) {
-            terms.sort_by_cached_key(|t| (t.trig.clone(), order.key(&shifted(t))));
+            divided.sort_by_cached_key(|(t, exps)| (t.trig.clone(), order.key(exps)));
         }
-        let first = terms[0];
+        let first = divided[0].0;
         let leads_negative = match first.coeff.re.is_zero() {
             true => first.coeff.im.is_negative(),
             false => first.coeff.re.is_negative(),
@@ -87,14 +88,13 @@ impl Factored {
         let content = if leads_negative { -&content } else { content };
         // `i(ω₊ − ω₋) W`: a sum of imaginary terms has `i` in its factor.
         let imaginary = terms.iter().all(|t| t.coeff.re.is_zero());
-        let rest = terms
-            .iter()
-            .map(|t| CosSinTerm {
+        let rest = (divided.into_iter())
+            .map(|(t, exps)| CosSinTerm {
                 coeff: match imaginary {
                     true => GaussianRational::from(&t.coeff.im / &content),
                     false => GaussianRational::new(&t.coeff.re / &content, &t.coeff.im / &content),
                 },
-                exps: shifted(t),
+                exps,
                 trig: t.trig.clone(),
             })
             .collect::<Vec<_>>();
