@@ -409,7 +409,7 @@ fn captions_and_prose_set_their_formulas_as_formulas() {
     );
     assert!(
         search.contains(
-            r"Those of trigonometric order $k > 0$ as $I = \operatorname{Re}(A e^{-ik\theta})$:"
+            r"Those of trigonometric order $k > 0$ as $J = \operatorname{Re}(A e^{-ik\theta})$:"
         ),
         "{search}"
     );

@@ -662,10 +662,10 @@ fn harmonic_1_1_dimensions_and_basis() {
             "Dimension of the space of integrals: 105. By degree in the momenta: ≤ 0: 1, \
              ≤ 1: 6, ≤ 2: 20, ≤ 3: 50, ≤ 4: 105.",
             "Momenta degree exactly 1: 1 of order 0, 4 of order 1.",
-            "I2 = x p_y − y p_x",
-            "I3 = p_y cos θ + Mωy sin θ",
-            "I5 = p_x cos θ + Mωx sin θ",
-            "I9 = p_x² + M²ω²x²",
+            "J2 = x p_y − y p_x",
+            "J3 = p_y cos θ + Mωy sin θ",
+            "J5 = p_x cos θ + Mωx sin θ",
+            "J9 = p_x² + M²ω²x²",
             "then each basis element was lifted back to symbolic parameters by homogeneity and \
              proved symbolically",
             "105 claims: 105 proved, 0 refuted",
@@ -751,10 +751,10 @@ fn harmonic_1_1_new_integrals() {
         &[
             "Known integrals in the space: H, L, G1, G2.",
             "the generated ones span 101 of the 105 dimensions",
-            "I3 = p_y cos θ + Mωy sin θ",
-            "I4 = −Mωy cos θ + p_y sin θ",
-            "I5 = p_x cos θ + Mωx sin θ",
-            "I6 = −Mωx cos θ + p_x sin θ",
+            "J3 = p_y cos θ + Mωy sin θ",
+            "J4 = −Mωy cos θ + p_y sin θ",
+            "J5 = p_x cos θ + Mωx sin θ",
+            "J6 = −Mωx cos θ + p_x sin θ",
             "A5 (k = 1) = p_x + iMωx",
         ],
     );
@@ -763,8 +763,8 @@ fn harmonic_1_1_new_integrals() {
         &[
             "Known integrals in the space: H, L, G1, G2, P_{1,1}, Q_{1,1}.",
             "the generated ones span 103 of the 105 dimensions",
-            "I3 = p_y cos θ + Mωy sin θ",
-            "I4 = −Mωy cos θ + p_y sin θ",
+            "J3 = p_y cos θ + Mωy sin θ",
+            "J4 = −Mωy cos θ + p_y sin θ",
             "3 claims: 3 proved",
         ],
     );
@@ -797,8 +797,8 @@ fn harmonic_1_1_new_integrals_to_degrees_8_and_10_are_the_same_four() {
                 filtration,
                 "Known integrals in the space: H, L, G1, G2.",
                 span,
-                "New integrals: I3 = p_y cos θ + Mωy sin θ I4 = −Mωy cos θ + p_y sin θ \
-                 I5 = p_x cos θ + Mωx sin θ I6 = −Mωx cos θ + p_x sin θ Those",
+                "New integrals: J3 = p_y cos θ + Mωy sin θ J4 = −Mωy cos θ + p_y sin θ \
+                 J5 = p_x cos θ + Mωx sin θ J6 = −Mωx cos θ + p_x sin θ Those",
                 "5 claims: 5 proved, 0 refuted",
             ],
         );
@@ -814,23 +814,23 @@ fn higher_degrees_find_the_same_new_integrals() {
             "h21-new-8",
             425,
             421,
-            "I7 I8 I9 I10",
+            "J7 J8 J9 J10",
             "A7 (k = 1) = p_y² + 2iMωy p_y − M²ω²y²",
         ),
         (
             "h23-new-8",
             347,
             343,
-            "I7 I8 I9 I10",
+            "J7 J8 J9 J10",
             "A7 (k = 3) = p_y² + 2iMωy p_y − M²ω²y²",
         ),
-        ("h12-new-8", 635, 633, "I3 I4", "A3 (k = 2) = p_y + iMωy"),
+        ("h12-new-8", 635, 633, "J3 J4", "A3 (k = 2) = p_y + iMωy"),
         (
             "g11-new-8",
             825,
             821,
-            "I3 I4 I5 I6",
-            "I3 = p_y cos θ + (Mωy + Mg/ω) sin θ",
+            "J3 J4 J5 J6",
+            "J3 = p_y cos θ + (Mωy + Mg/ω) sin θ",
         ),
     ] {
         let out = expect(
@@ -850,7 +850,7 @@ fn higher_degrees_find_the_same_new_integrals() {
             .lines()
             .filter_map(|l| l.trim_start().split(' ').next())
             .filter(|w| {
-                w.strip_prefix('I')
+                w.strip_prefix('J')
                     .is_some_and(|n| !n.is_empty() && n.chars().all(|c| c.is_ascii_digit()))
             })
             .collect();
@@ -979,8 +979,8 @@ fn gravity_1_1() {
              ≤ 1: 6, ≤ 2: 20, ≤ 3: 50, ≤ 4: 105.",
             "Known integrals in the space: H, L', G1', G2'.",
             "the generated ones span 101 of the 105 dimensions",
-            "I3 = p_y cos θ + (Mωy + Mg/ω) sin θ",
-            "I5 = p_x cos θ + Mωx sin θ",
+            "J3 = p_y cos θ + (Mωy + Mg/ω) sin θ",
+            "J5 = p_x cos θ + Mωx sin θ",
         ],
     );
     let out = expect(
@@ -1047,7 +1047,7 @@ fn anisotropic_1_2() {
             "Dimension of the space of integrals: 27. By degree in the momenta: ≤ 0: 1, \
              ≤ 1: 5, ≤ 2: 14, ≤ 3: 27.",
             "the generated ones span 23 of the 27 dimensions",
-            "I2 = p_x cos θ + Mωx sin θ",
+            "J2 = p_x cos θ + Mωx sin θ",
             "A4 (k = 2) = p_y + 2iMωy",
         ],
     );
@@ -1542,7 +1542,7 @@ fn an_angle_momentum_is_left_out_only_when_fixed() {
         normalize(&free).contains("with momenta degree c + d + e ≤ 1"),
         "{free}"
     );
-    assert!(free.contains("\n    I2 = p_θ\n"), "{free}");
+    assert!(free.contains("\n    J2 = p_θ\n"), "{free}");
     assert!(!free.contains("left out"), "{free}");
     let fixed = output(&["search", f, "--when", "p_theta = I*omega"]);
     let flat = normalize(&fixed);
@@ -2793,14 +2793,14 @@ fn gravity_rotor_integrals_divided_by_omega_squared_are_generated() {
         "Known integrals in the space: H, F2, Ω, L', G1'.",
         "the generated ones span 22 of the 24 dimensions",
         // Each restated in the file's functions, those that are no integrals among them.
-        "New integrals: I15 = p_y² + M²ω²y² + 2M²gy \
+        "New integrals: J15 = p_y² + M²ω²y² + 2M²gy \
          = Mω L' + 2M H − 2M F2 − M G2' − Z' Z̄'/2 \
-         I24 = ω²x² p_y² − 2ω²xy p_x p_y − 2gx p_x p_y + ω²y² p_x² + 2gy p_x² − M²g²x² \
+         J24 = ω²x² p_y² − 2ω²xy p_x p_y − 2gx p_x p_y + ω²y² p_x² + 2gy p_x² − M²g²x² \
          = −ω² L² + 2ω² L L' − 4 G1² + 8 G1 G1' − 4 G1'²",
     ] {
         assert!(text.contains(expected), "{text}");
     }
-    assert_eq!(v["searches"][0]["shown"], serde_json::json!(["I15", "I24"]));
+    assert_eq!(v["searches"][0]["shown"], serde_json::json!(["J15", "J24"]));
 }
 
 /// Products of integrals count only when each factor's grade is below the integral's: `p_b`
@@ -4566,7 +4566,7 @@ fn search_restates_its_integrals_in_functions_and_family_instances() {
     }
     // The rotor's at 1:1: none, in any format.
     let rotor = run_as("h11-new", "text");
-    assert!(rotor.contains("I3 = p_y cos θ + Mωy sin θ"), "{rotor}");
+    assert!(rotor.contains("J3 = p_y cos θ + Mωy sin θ"), "{rotor}");
     assert!(
         !rotor.lines().any(|l| l.trim_start().starts_with("= ")),
         "{rotor}"
@@ -4589,7 +4589,7 @@ fn the_amplitudes_letter_is_no_name_of_the_file() {
          --momenta-degree 2 --positions-degree 4 --trig-degree 2 --laurent --new-only \
          --no-timings",
     );
-    assert!(text.contains("as I = Re(Ψ e^{−ikθ}):"), "{text}");
+    assert!(text.contains("as Φ = Re(Ψ e^{−ikθ}):"), "{text}");
     assert!(
         text.contains(
             "\n    Ψ7 (k = 2) = p_x² + 2iMωx p_x − M²ω²x² + 2Mβ/x²\n               = A\n"
@@ -4603,13 +4603,47 @@ fn the_amplitudes_letter_is_no_name_of_the_file() {
         "search systems/anisotropic-3-5-rotor.toml --when 'p_theta = I*omega' \
          --momenta-degree 1 --positions-degree 1 --trig-degree 5 --new-only --no-timings",
     );
-    assert!(text.contains("as I = Re(Ψ e^{−ikθ}):"), "{text}");
+    assert!(text.contains("as J = Re(Ψ e^{−ikθ}):"), "{text}");
     assert!(text.contains("\n    Ψ2 (k = 3) = p_x + 3iMωx\n"), "{text}");
     let text = superint_ok_line(
         "search systems/harmonic-rotor.toml --when 'p_theta = I*omega' --momenta-degree 1 \
          --positions-degree 1 --trig-degree 1 --new-only --no-timings",
     );
-    assert!(text.contains("as I = Re(A e^{−ikθ}):"), "{text}");
+    assert!(text.contains("as J = Re(A e^{−ikθ}):"), "{text}");
+}
+
+/// The integrals' letter names nothing of the file, the letter alone included, as the
+/// amplitudes' does: a rotor's search wrote `I = Re(A e^{−ikθ})` and `{I, H} = 0 for the
+/// other 23 basis elements at p_θ = Iω`, the integral and the moment of inertia in one
+/// letter, over integrals `I2, I3, …`; a rotor's integrals are now `J2, …` (the
+/// Fock–Darwin rotor, which names `J` too, takes `Φ`), and a system without `I` keeps it.
+#[test]
+fn the_integrals_letter_is_no_name_of_the_file() {
+    let text = superint_ok_line(
+        "search --system anisotropic-1-2 --when 'p_theta = I*omega' --momenta-degree 3 \
+         --positions-degree 3 --trig-degree 3 --new-only --no-timings",
+    );
+    assert!(text.contains("as J = Re(A e^{−ikθ}):"), "{text}");
+    assert!(
+        text.contains("\n    J2 = p_x cos θ + Mωx sin θ\n"),
+        "{text}"
+    );
+    assert!(
+        text.contains("{J, H} = 0 for the other 23 basis elements at p_θ = Iω"),
+        "{text}"
+    );
+    assert!(!text.contains("I2"), "{text}");
+    assert!(!text.contains("{I, H}"), "{text}");
+    let text = superint_ok_line(
+        "search systems/fock-darwin-rotor.toml --when 'a = 2*b, p_theta = 2*I*b' \
+         --momenta-degree 1 --positions-degree 1 --trig-degree 1 --new-only --no-timings",
+    );
+    assert!(text.contains("as Φ = Re("), "{text}");
+    assert!(!text.contains("J1"), "{text}");
+    let text = superint_ok_line(
+        "search systems/fock-darwin.toml --momenta-degree 1 --positions-degree 1 --no-timings",
+    );
+    assert!(text.contains("\n    I1 = 1\n"), "{text}");
 }
 
 /// A search of a system file writes the amplitude `A` of each integral `Re(A e^{−ikθ})` it
@@ -4626,7 +4660,7 @@ fn search_writes_the_amplitudes_of_its_integrals_in_the_files_functions() {
                --momenta-degree 2 --positions-degree 2 --trig-degree 2 --new-only --no-timings";
     let text = superint_ok_line(one);
     for form in [
-        "\n    I7  = p_y cos θ + Mωy sin θ\n    I8  = ",
+        "\n    Φ7  = p_y cos θ + Mωy sin θ\n    Φ8  = ",
         "\n    A7 (k = 1)  = p_y + iMωy\n                = Z_y\n",
         "\n    A8 (k = 1)  = i p_y − Mωy\n                = i Z_y\n",
         "\n    A9 (k = 1)  = p_x + iMωx\n                = Z_x\n",
@@ -5040,12 +5074,12 @@ fn sw_i_rotor_resonant_integrals_found_and_their_algebra() {
         &[
             "Known integrals in the space: H.",
             "the generated ones span 21 of the 26 dimensions",
-            "I2 = p_y² + M²ω²y² + 2Mγ/y²",
-            "I7 = (p_x² − M²ω²x² + 2Mβ/x²) cos θ + 2Mωx p_x sin θ",
+            "J2 = p_y² + M²ω²y² + 2Mγ/y²",
+            "J7 = (p_x² − M²ω²x² + 2Mβ/x²) cos θ + 2Mωx p_x sin θ",
             "6 claims: 6 proved, 0 refuted",
         ],
     );
-    assert_eq!(alone.matches(" = 0 at p_θ = 2Iω [I").count(), 5, "{alone}");
+    assert_eq!(alone.matches(" = 0 at p_θ = 2Iω [J").count(), 5, "{alone}");
     expect(
         "swi-rotor-search-1-2",
         &[
@@ -5164,7 +5198,7 @@ fn sw_ii_rotor_resonant_integrals_found_and_their_algebra() {
              ≤ 1: 3, ≤ 2: 10, ≤ 3: 17.",
             "Known integrals in the space: H, H_x, H_y, X.",
             "the generated ones span 13 of the 17 dimensions",
-            "I2 = 2 p_y cos θ + (4Mωy + γ/ω) sin θ = 2 R_{1,1}",
+            "Φ2 = 2 p_y cos θ + (4Mωy + γ/ω) sin θ = 2 R_{1,1}",
             "= −2 S_{1,1}",
             "= P_{1,1}",
             "= −Q_{1,1}",
@@ -5175,11 +5209,11 @@ fn sw_ii_rotor_resonant_integrals_found_and_their_algebra() {
         &[
             "Known integrals in the space: H.",
             "the generated ones span 13 of the 17 dimensions",
-            "I2 = 2 p_y cos θ + (4Mωy + γ/ω) sin θ",
+            "J2 = 2 p_y cos θ + (4Mωy + γ/ω) sin θ",
             "5 claims: 5 proved, 0 refuted",
         ],
     );
-    assert_eq!(alone.matches(" = 0 at p_θ = 2Iω [I").count(), 4, "{alone}");
+    assert_eq!(alone.matches(" = 0 at p_θ = 2Iω [J").count(), 4, "{alone}");
     expect(
         "swii-rotor-closure",
         &[
@@ -5300,7 +5334,7 @@ fn fd_rotor_claims_are_proved_and_its_false_neighbours_refuted() {
 /// trap's `U_{1,2}`, `V_{1,2}` among the generators the relations make them products.
 #[test]
 fn fd_rotor_resonant_integrals_found_and_their_algebra() {
-    let r11 = "I3 = (2 p_x + 3M ω₋ y) cos θ + (−2 p_y + 3M ω₋ x) sin θ = 2 R_{1,1}";
+    let r11 = "Φ3 = (2 p_x + 3M ω₋ y) cos θ + (−2 p_y + 3M ω₋ x) sin θ = 2 R_{1,1}";
     let p21 = "+ (8 p_x p_y + 12M ω₋ x p_x − 12M ω₋ y p_y − 18M² ω₋² xy) sin θ = 4 P_{2,1}";
     expect(
         "fd-rotor-search",
@@ -5323,12 +5357,12 @@ fn fd_rotor_resonant_integrals_found_and_their_algebra() {
         &[
             "Known integrals in the space: H.",
             "the generated ones span 53 of the 57 dimensions",
-            "I3 = (2 p_x + 3M ω₋ y) cos θ + (−2 p_y + 3M ω₋ x) sin θ",
+            "J3 = (2 p_x + 3M ω₋ y) cos θ + (−2 p_y + 3M ω₋ x) sin θ",
             "5 claims: 5 proved, 0 refuted",
         ],
     );
     assert_eq!(
-        alone.matches(" = 0 at ω₊ = 2 ω₋, p_θ = 2I ω₋ [I").count(),
+        alone.matches(" = 0 at ω₊ = 2 ω₋, p_θ = 2I ω₋ [J").count(),
         4,
         "{alone}"
     );
@@ -5350,7 +5384,7 @@ fn fd_rotor_resonant_integrals_found_and_their_algebra() {
         &["the generated ones span 172 of the 176 dimensions"],
     );
     assert_eq!(
-        alone.matches(" = 0 at ω₊ = 2 ω₋, p_θ = 2I ω₋ [I").count(),
+        alone.matches(" = 0 at ω₊ = 2 ω₋, p_θ = 2I ω₋ [J").count(),
         4,
         "{alone}"
     );
@@ -5385,11 +5419,11 @@ fn fd_rotor_resonant_integrals_found_and_their_algebra() {
         &[
             "Dimension of the space of integrals: 71.",
             "the generated ones span 67 of the 71 dimensions",
-            "I3 = (p_x − 2M ω₋ y) cos θ + (p_y + 2M ω₋ x) sin θ = P_{1,1}",
+            "Φ3 = (p_x − 2M ω₋ y) cos θ + (p_y + 2M ω₋ x) sin θ = P_{1,1}",
             "= −Q_{1,1}",
             // The parts of `W e^{−3iθ}`, though the real and imaginary parts' families,
             // which declare no eigenvalue, come before it in index order.
-            "I5 = (−3 p_x − 6M ω₋ y) cos θ + (p_y − 2M ω₋ x) sin θ + (4 p_x + 8M ω₋ y) cos³θ \
+            "Φ5 = (−3 p_x − 6M ω₋ y) cos θ + (p_y − 2M ω₋ x) sin θ + (4 p_x + 8M ω₋ y) cos³θ \
              + (−4 p_y + 8M ω₋ x) cos²θ sin θ = R_{1,3}",
             "+ (4 p_x + 8M ω₋ y) cos²θ sin θ = −S_{1,3}",
         ],
@@ -5542,12 +5576,12 @@ fn iso3_rotor_claims_are_proved_and_its_false_neighbours_refuted() {
 #[test]
 fn iso3_rotor_resonant_integrals_found_and_their_algebra() {
     let linear = [
-        "I5 = p_z cos θ + Mωz sin θ = R_{1,1}",
-        "I6 = −Mωz cos θ + p_z sin θ = −S_{1,1}",
-        "I7 = p_y cos θ + Mωy sin θ",
-        "I8 = −Mωy cos θ + p_y sin θ",
-        "I9 = p_x cos θ + Mωx sin θ = P_{1,1}",
-        "I10 = −Mωx cos θ + p_x sin θ = −Q_{1,1}",
+        "Φ5 = p_z cos θ + Mωz sin θ = R_{1,1}",
+        "Φ6 = −Mωz cos θ + p_z sin θ = −S_{1,1}",
+        "Φ7 = p_y cos θ + Mωy sin θ",
+        "Φ8 = −Mωy cos θ + p_y sin θ",
+        "Φ9 = p_x cos θ + Mωx sin θ = P_{1,1}",
+        "Φ10 = −Mωx cos θ + p_x sin θ = −Q_{1,1}",
         "A7 (k = 1) = p_y + iMωy = Z_y",
         "A8 (k = 1) = i p_y − Mωy = i Z_y",
     ];
@@ -5566,11 +5600,11 @@ fn iso3_rotor_resonant_integrals_found_and_their_algebra() {
         &[
             "Known integrals in the space: H.",
             "the generated ones span 484 of the 490 dimensions",
-            "I7 = p_y cos θ + Mωy sin θ",
+            "J7 = p_y cos θ + Mωy sin θ",
             "7 claims: 7 proved, 0 refuted",
         ],
     );
-    assert_eq!(alone.matches(" = 0 at p_θ = Iω [I").count(), 6, "{alone}");
+    assert_eq!(alone.matches(" = 0 at p_θ = Iω [J").count(), 6, "{alone}");
     let mut pieces = vec![
         "91728 unknowns",
         "≤ 4: 490, ≤ 5: 1176, ≤ 6: 2520.",
@@ -5587,16 +5621,16 @@ fn iso3_rotor_resonant_integrals_found_and_their_algebra() {
             "Known integrals in the space: H, F1, L_x, L_y, L_z, A_xx, A_yy, A_zz, A_xy, \
              {L_x, A_xy}, {L_y, A_xy}.",
             "the generated ones span 242 of the 254 dimensions",
-            "I17 = (p_z² − M²ω²z²) cos θ + 2Mωz p_z sin θ = R_{2,1}",
-            "I19 = (p_y p_z − M²ω²yz) cos θ + (Mωy p_z + Mωz p_y) sin θ",
-            "I27 = (p_x² − M²ω²x²) cos θ + 2Mωx p_x sin θ = P_{2,1}",
+            "Φ17 = (p_z² − M²ω²z²) cos θ + 2Mωz p_z sin θ = R_{2,1}",
+            "Φ19 = (p_y p_z − M²ω²yz) cos θ + (Mωy p_z + Mωz p_y) sin θ",
+            "Φ27 = (p_x² − M²ω²x²) cos θ + 2Mωx p_x sin θ = P_{2,1}",
             "= −Q_{2,1}",
             "A19 (k = 1) = p_y p_z + iMωy p_z + iMωz p_y − M²ω²yz = Z_y Z_z",
             "13 claims: 13 proved, 0 refuted",
         ],
     );
     assert_eq!(
-        normalize(&text).matches(" = 0 at p_θ = 2Iω [I").count(),
+        normalize(&text).matches(" = 0 at p_θ = 2Iω [Φ").count(),
         12,
         "{text}"
     );
@@ -5605,8 +5639,8 @@ fn iso3_rotor_resonant_integrals_found_and_their_algebra() {
         &[
             "Dimension of the space of integrals: 392.",
             "the generated ones span 386 of the 392 dimensions",
-            "I5 = −p_z + 2 p_z cos²θ + 2Mωz cos θ sin θ = R_{1,2}",
-            "I9 = −p_x + 2 p_x cos²θ + 2Mωx cos θ sin θ = P_{1,2}",
+            "Φ5 = −p_z + 2 p_z cos²θ + 2Mωz cos θ sin θ = R_{1,2}",
+            "Φ9 = −p_x + 2 p_x cos²θ + 2Mωx cos θ sin θ = P_{1,2}",
             "= −Q_{1,2}",
             "7 claims: 7 proved, 0 refuted",
         ],
