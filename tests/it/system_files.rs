@@ -4772,6 +4772,38 @@ fn a_refuted_residual_is_written_in_the_instances_the_claim_mentions() {
     assert!(text.contains("= 3 ω₊ Q_{1,2}\n"), "{text}");
 }
 
+/// The text form reads back where a variable's display has a subscript sign: the Fock–Darwin
+/// parameters `a`, `b` print as `ω₊`, `ω₋`, and a bracket's text, `… + i ω₊ x p_x/2 + …`, was
+/// refused as "unexpected character '₊'", while its LaTeX, `\omega_{+}`, read back. Each form
+/// of the bracket now reads back to its ASCII result.
+#[test]
+fn a_display_with_a_subscript_sign_reads_back_in_the_text_form() {
+    let fd = "systems/fock-darwin.toml";
+    let out: Value =
+        serde_json::from_str(&run(&["bracket", fd, "Z*x", "H", "--format", "json"], 0))
+            .expect("JSON");
+    let line = &out["equations"][0]["lines"][0];
+    let text = line["text"].as_str().expect("text");
+    assert!(text.contains("i ω₊ x p_x/2"), "{text}");
+    for form in ["text", "latex"] {
+        let difference = format!(
+            "({}) - ({})",
+            line[form].as_str().expect("form"),
+            line["ascii"].as_str().expect("ascii")
+        );
+        let back: Value = serde_json::from_str(&run(
+            &["expand", fd, "--format", "json", difference.as_str()],
+            0,
+        ))
+        .expect("JSON");
+        assert_eq!(back["equations"][0]["lines"][0]["ascii"], "0", "{form}");
+    }
+    let back: Value =
+        serde_json::from_str(&run(&["expand", fd, "--format", "json", "M ω₊² x − ω₋"], 0))
+            .expect("JSON");
+    assert_eq!(back["equations"][0]["lines"][0]["ascii"], "M*a^2*x - b");
+}
+
 /// Where the parameters of one weight leave homogeneity nothing to lift by, and all of them
 /// kept symbolic would pass the monomial limits, only those the lift cannot restore are kept
 /// symbolic, the others fixed and lifted: the Fock–Darwin rotor's `ω₊, ω₋` share a weight, and

@@ -82,10 +82,11 @@ pub fn is_name_start(c: char) -> bool {
 }
 
 /// Whether a name goes on with `c`: a letter, a digit or `_`, but a superscript digit, a power
-/// after the name.
+/// after the name; or a subscript sign, `₊` or `₋`, which a display name has after what it
+/// stands under (the Fock–Darwin `ω₊`, as the text form prints it).
 pub fn is_name_continue(c: char) -> bool {
     // Superscript digits are numeric, but `x²` must lex as `x` followed by an exponent.
-    c == '_' || (c.is_alphanumeric() && superscript_digit(c).is_none())
+    c == '_' || matches!(c, '₊' | '₋') || (c.is_alphanumeric() && superscript_digit(c).is_none())
 }
 
 /// On-demand tokenizer over a source string.
