@@ -5,7 +5,7 @@ use std::ops::{Add, AddAssign, Mul, MulAssign, Neg, Sub, SubAssign};
 
 use super::Poly;
 use crate::error::AlgebraError;
-use crate::number::{Coefficient, Integer, IntegerRing, Rational};
+use crate::number::{Coefficient, GaussianRational, Integer, IntegerRing, Rational};
 
 impl<C: Coefficient> Poly<C> {
     // f + g with f = a·F, g = b·G: d = gcd(a, b), f + g = d·((a/d)·F + (b/d)·G).
@@ -269,6 +269,67 @@ impl<C: Coefficient> MulAssign<&Rational> for Poly<C> {
 impl<C: Coefficient> MulAssign<Rational> for Poly<C> {
     fn mul_assign(&mut self, q: Rational) {
         *self *= &q;
+    }
+}
+
+/// `c · f` for a Gaussian rational `c`, the coefficients' own field: `i·f`, `(2 − i)·f`
+/// ([`Poly::scale`]), as `f * &q` is for a rational `q`.
+///
+/// ```
+/// use trigpoly::{Expr, GaussianRational, Rational, VarSet};
+///
+/// let vars = VarSet::builder().coordinate("x").momentum("p_x").build()?;
+/// let f = Expr::parse(&vars, "p_x + x")?;
+/// let i = GaussianRational::i();
+/// assert_eq!(&f * &i, Expr::parse(&vars, "i*p_x + i*x")?);
+/// let half = GaussianRational::from(Rational::new(1, 2));
+/// let mut g = f.clone() * half;
+/// g *= &i;
+/// assert_eq!(g, f.scale(&"i/2".parse()?));
+/// # Ok::<(), Box<dyn std::error::Error>>(())
+/// ```
+impl Mul<&GaussianRational> for &Poly<GaussianRational> {
+    type Output = Poly<GaussianRational>;
+    fn mul(self, c: &GaussianRational) -> Poly<GaussianRational> {
+        self.scale(c)
+    }
+}
+
+/// `c · f`, taking `f`.
+impl Mul<&GaussianRational> for Poly<GaussianRational> {
+    type Output = Poly<GaussianRational>;
+    fn mul(self, c: &GaussianRational) -> Poly<GaussianRational> {
+        self.scale(c)
+    }
+}
+
+/// `c · f`, taking `c`.
+impl Mul<GaussianRational> for &Poly<GaussianRational> {
+    type Output = Poly<GaussianRational>;
+    fn mul(self, c: GaussianRational) -> Poly<GaussianRational> {
+        self.scale(&c)
+    }
+}
+
+/// `c · f`, taking both.
+impl Mul<GaussianRational> for Poly<GaussianRational> {
+    type Output = Poly<GaussianRational>;
+    fn mul(self, c: GaussianRational) -> Poly<GaussianRational> {
+        self.scale(&c)
+    }
+}
+
+/// `f ← c · f`.
+impl MulAssign<&GaussianRational> for Poly<GaussianRational> {
+    fn mul_assign(&mut self, c: &GaussianRational) {
+        *self = self.scale(c);
+    }
+}
+
+/// `f ← c · f`.
+impl MulAssign<GaussianRational> for Poly<GaussianRational> {
+    fn mul_assign(&mut self, c: GaussianRational) {
+        *self = self.scale(&c);
     }
 }
 
