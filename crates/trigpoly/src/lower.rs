@@ -5,7 +5,9 @@
 use crate::error::AlgebraError;
 use crate::number::{Coefficient, GaussianRational, Integer, Rational};
 use crate::poly::Poly;
-use crate::syntax::{parse_expr_reading, Expr, ExprKind, ParseCause, ParseError, Reading, Span};
+use crate::syntax::{
+    latex_name, parse_expr_reading, Expr, ExprKind, ParseCause, ParseError, Reading, Span,
+};
 use crate::varset::{bars_apart, long_name, under_one_bar, Var, VarKind, Vars, RESERVED};
 
 /// What names and brackets mean beyond the variables: named functions defined elsewhere (a
@@ -241,13 +243,35 @@ impl<C: Coefficient> Poly<C> {
     /// let err = Poly::<Rational>::parse(&vars, "x/(1+x)").unwrap_err();
     /// assert_eq!(err.line_col("x/(1+x)"), (1, 3));
     /// ```
+    ///
+    /// What [`Poly::render`] prints in LaTeX reads back, a variable printed otherwise than
+    /// it is named too (`x_{1}` of `x1`, `\theta_{2}` of `theta2`); plain text is read as
+    /// written, where `x_1` names no `x1`.
+    ///
+    /// ```
+    /// use trigpoly::{Expr, Style, VarSet};
+    ///
+    /// let vars = VarSet::builder()
+    ///     .coordinate("x1").angle("theta2").momentum("p1").momentum("p_theta2")
+    ///     .build()?;
+    /// let e = Expr::parse(&vars, "p1^2*cos(theta2) + x1")?;
+    /// let latex = e.render(Style::Latex);
+    /// assert_eq!(latex, r"x_{1} + p_{1}^{2} \cos\theta_{2}");
+    /// assert_eq!(Expr::parse(&vars, &latex)?, e);
+    /// assert!(Expr::parse(&vars, "x_1").is_err());
+    /// # Ok::<(), Box<dyn std::error::Error>>(())
+    /// ```
     pub fn parse(vars: &Vars, src: &str) -> Result<Self, ParseError> {
         Self::parse_with(vars, src, &NoContext)
     }
 
     /// Parses with named functions and brackets supplied by `ctx`.
     pub fn parse_with(vars: &Vars, src: &str, ctx: &dyn Context<C>) -> Result<Self, ParseError> {
-        let lower = Lower { vars, ctx };
+        let lower = Lower {
+            vars,
+            ctx,
+            src: Some(src),
+        };
         let expr = parse_expr_reading(src, &lower)?;
         lower.lower(&expr).map_err(|e| e.in_source(src))
     }
@@ -256,12 +280,22 @@ impl<C: Coefficient> Poly<C> {
     /// [`parse_expr`](crate::syntax::parse_expr) does, a refusal quoting the factor a power
     /// raises as the names of `vars` and `ctx` read (`'ω^{2}'` of `Mω^{2}{}^{3}`).
     pub fn parse_tree(vars: &Vars, src: &str, ctx: &dyn Context<C>) -> Result<Expr, ParseError> {
-        parse_expr_reading(src, &Lower { vars, ctx })
+        let lower = Lower {
+            vars,
+            ctx,
+            src: Some(src),
+        };
+        parse_expr_reading(src, &lower)
     }
 
     /// Lowers an already parsed expression.
     pub fn from_expr(vars: &Vars, expr: &Expr, ctx: &dyn Context<C>) -> Result<Self, ParseError> {
-        Lower { vars, ctx }.lower(expr)
+        Lower {
+            vars,
+            ctx,
+            src: None,
+        }
+        .lower(expr)
     }
 
     /// Parses as [`Poly::parse_with`] does, and says which names run together it read as
@@ -298,6 +332,9 @@ enum RootOf {
 struct Lower<'a, C: Coefficient> {
     vars: &'a Vars,
     ctx: &'a dyn Context<C>,
+    /// The text parsed, where the lowering has it: what tells a name written in LaTeX
+    /// ([`Lower::latex_variable`]).
+    src: Option<&'a str>,
 }
 
 /// The names as the lowering reads them, for the parser's refusals: `Re` and `Im` before
@@ -465,6 +502,22 @@ impl<C: Coefficient> Lower<'_, C> {
 
     /// Of `name` an angle's (`theta`, `θ`), how functions depend on it: `functions depend on
     /// it through cos(theta), sin(theta) or exp(i*k*theta)`; of any other name, none.
+    /// The variable whose printed LaTeX spells `name` (`x_{1}` of `x1`, read as `x_1`;
+    /// `\theta_{2}` of `theta2`), where the text at `span` wrote it in LaTeX and no other
+    /// variable's LaTeX spells it alike: what [`Poly::render`] prints in LaTeX reads back.
+    fn latex_variable(&self, name: &str, span: Span) -> Option<Var> {
+        let written = self.src?.get(span.start..span.end)?;
+        if !written.contains(['\\', '{']) {
+            return None;
+        }
+        let spells = |v: &Var| latex_name(self.vars.variable(*v).latex()).as_deref() == Some(name);
+        let mut found = self.vars.vars().filter(spells);
+        match (found.next(), found.next()) {
+            (Some(v), None) => Some(v),
+            _ => None,
+        }
+    }
+
     fn angle_use(&self, name: &str) -> Option<String> {
         let v = self.vars.lookup(name)?;
         let n = (self.vars.variable(v).kind() == VarKind::Angle)
@@ -495,6 +548,10 @@ impl<C: Coefficient> Lower<'_, C> {
         }
         if let Some(p) = self.ctx.lookup(name) {
             return Ok(p);
+        }
+        // A variable written in LaTeX as it prints (`x_{1}` of `x1`).
+        if let Some(v) = self.latex_variable(name, span) {
+            return self.name(self.vars.variable(v).name(), span);
         }
         // The real or imaginary part of a name, as LaTeX sets it: `\operatorname{Re} A`.
         if let Some((part, of)) = name.split_once(' ') {
@@ -1062,7 +1119,11 @@ impl<C: Coefficient> Lower<'_, C> {
         let form = match &e.kind {
             ExprKind::Integer(n) => Constant(Rational::from(Integer::from(n.clone())).into()),
             ExprKind::Name(n) if n == "i" => Constant(GaussianRational::i()),
-            ExprKind::Name(n) => match self.vars.lookup(n) {
+            ExprKind::Name(n) => match self
+                .vars
+                .lookup(n)
+                .or_else(|| self.latex_variable(n, e.span))
+            {
                 Some(v) if self.vars.variable(v).kind() == VarKind::Angle => {
                     Angles(vec![(v, GaussianRational::from(1))])
                 }
