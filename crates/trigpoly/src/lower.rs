@@ -500,8 +500,6 @@ impl<C: Coefficient> Lower<'_, C> {
         }
     }
 
-    /// Of `name` an angle's (`theta`, `θ`), how functions depend on it: `functions depend on
-    /// it through cos(theta), sin(theta) or exp(i*k*theta)`; of any other name, none.
     /// The variable whose printed LaTeX spells `name` (`x_{1}` of `x1`, read as `x_1`;
     /// `\theta_{2}` of `theta2`), where the text at `span` wrote it in LaTeX and no other
     /// variable's LaTeX spells it alike: what [`Poly::render`] prints in LaTeX reads back.
@@ -518,6 +516,8 @@ impl<C: Coefficient> Lower<'_, C> {
         }
     }
 
+    /// Of `name` an angle's (`theta`, `θ`), how functions depend on it: `functions depend on
+    /// it through cos(theta), sin(theta) or exp(i*k*theta)`; of any other name, none.
     fn angle_use(&self, name: &str) -> Option<String> {
         let v = self.vars.lookup(name)?;
         let n = (self.vars.variable(v).kind() == VarKind::Angle)
