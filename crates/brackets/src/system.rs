@@ -269,6 +269,23 @@ impl System {
     /// assert_eq!(modulus, &(&p * &p) + &(&q * &q));
     /// # Ok::<(), brackets::EngineError>(())
     /// ```
+    ///
+    /// A function's name as LaTeX prints it reads back as the function (`G_{1}` of `G1`,
+    /// [`table::latex_name`](crate::table::latex_name)), a bracket of functions so printed
+    /// too; plain text is read as written, where `G_1` names no `G1`.
+    ///
+    /// ```
+    /// use brackets::table::latex_name;
+    ///
+    /// let rotor = brackets::systems::harmonic_rotor();
+    /// assert_eq!(latex_name(rotor.display_name("G1")), "G_{1}");
+    /// assert_eq!(&rotor.parse("G_{1}")?, rotor.get("G1")?);
+    /// let bracket = format!(r"\{{L, {}\}} - {}", latex_name("G1"), latex_name("G2"));
+    /// assert_eq!(bracket, r"\{L, G_{1}\} - G_{2}");
+    /// assert_eq!(rotor.parse(&bracket)?, rotor.parse("-2*G2")?);
+    /// assert!(rotor.parse("G_1").is_err());
+    /// # Ok::<(), brackets::EngineError>(())
+    /// ```
     pub fn parse(&self, src: &str) -> Result<Expr, EngineError> {
         Expr::parse_with(self.vars(), src, self).map_err(|e| EngineError::parse(src, e))
     }
@@ -339,6 +356,13 @@ impl Context<GaussianRational> for System {
 
     fn names(&self) -> Vec<String> {
         self.functions.iter().map(|f| f.name.clone()).collect()
+    }
+
+    /// A function's display as LaTeX prints it ([`crate::table::latex_name`]: `G_{1}` of `G1`),
+    /// which [`System::parse`] reads back as the function.
+    fn latex(&self, name: &str) -> Option<String> {
+        let f = self.functions.iter().find(|f| f.name == name)?;
+        Some(crate::table::latex_name(&f.display))
     }
 
     /// A function shown as a family instance (`P'_{1,1}`, the built-in gravity rotor's `P11`)

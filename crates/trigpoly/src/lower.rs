@@ -29,6 +29,12 @@ pub trait Context<C: Coefficient> {
     fn spelling(&self, _name: &str) -> Option<String> {
         None
     }
+    /// The LaTeX that `name`, one of [`Context::names`], prints as (`G_{1}` of a function
+    /// `G1`), by which the lowering reads that LaTeX back as the name where no name is so
+    /// spelt; `None` where the context does not print its names.
+    fn latex(&self, _name: &str) -> Option<String> {
+        None
+    }
     /// Told of a name that is not declared and was read as the product of the declared names
     /// it splits into, where that reading may not be what was meant ([`RunTogether`]); the
     /// lowering goes on with the product. Ignored unless a context keeps it (as
@@ -206,6 +212,9 @@ impl<C: Coefficient> Context<C> for Noting<'_, C> {
     fn spelling(&self, name: &str) -> Option<String> {
         self.ctx.spelling(name)
     }
+    fn latex(&self, name: &str) -> Option<String> {
+        self.ctx.latex(name)
+    }
     fn run_together(&self, note: RunTogether) {
         let mut noted = self.noted.borrow_mut();
         if !noted
@@ -333,7 +342,7 @@ struct Lower<'a, C: Coefficient> {
     vars: &'a Vars,
     ctx: &'a dyn Context<C>,
     /// The text parsed, where the lowering has it: what tells a name written in LaTeX
-    /// ([`Lower::latex_variable`]).
+    /// ([`Lower::latex_spelled`]).
     src: Option<&'a str>,
 }
 
@@ -500,20 +509,37 @@ impl<C: Coefficient> Lower<'_, C> {
         }
     }
 
-    /// The variable whose printed LaTeX spells `name` (`x_{1}` of `x1`, read as `x_1`;
-    /// `\theta_{2}` of `theta2`), where the text at `span` wrote it in LaTeX and no other
-    /// variable's LaTeX spells it alike: what [`Poly::render`] prints in LaTeX reads back.
-    fn latex_variable(&self, name: &str, span: Span) -> Option<Var> {
+    /// The name whose printed LaTeX spells `name` (`x_{1}` of a variable `x1`, read as `x_1`;
+    /// `\theta_{2}` of `theta2`; `G_{1}` of a function `G1` of the context,
+    /// [`Context::latex`]), where the text at `span` wrote it in LaTeX and no other variable's
+    /// or function's LaTeX spells it alike: what [`Poly::render`] prints in LaTeX reads back.
+    fn latex_spelled(&self, name: &str, span: Span) -> Option<String> {
         let written = self.src?.get(span.start..span.end)?;
         if !written.contains(['\\', '{']) {
             return None;
         }
-        let spells = |v: &Var| latex_name(self.vars.variable(*v).latex()).as_deref() == Some(name);
-        let mut found = self.vars.vars().filter(spells);
+        let spells = |latex: &str| latex_name(latex).as_deref() == Some(name);
+        let variables = self
+            .vars
+            .vars()
+            .map(|v| self.vars.variable(v))
+            .filter(|v| spells(v.latex()))
+            .map(|v| v.name().to_string());
+        let functions = self
+            .ctx
+            .names()
+            .into_iter()
+            .filter(|f| self.ctx.latex(f).is_some_and(|latex| spells(&latex)));
+        let mut found = variables.chain(functions);
         match (found.next(), found.next()) {
-            (Some(v), None) => Some(v),
+            (Some(n), None) => Some(n),
             _ => None,
         }
+    }
+
+    /// The variable that [`Lower::latex_spelled`] reads `name` at `span` as, if it is one.
+    fn latex_variable(&self, name: &str, span: Span) -> Option<Var> {
+        self.vars.lookup(&self.latex_spelled(name, span)?)
     }
 
     /// Of `name` an angle's (`theta`, `θ`), how functions depend on it: `functions depend on
@@ -549,9 +575,9 @@ impl<C: Coefficient> Lower<'_, C> {
         if let Some(p) = self.ctx.lookup(name) {
             return Ok(p);
         }
-        // A variable written in LaTeX as it prints (`x_{1}` of `x1`).
-        if let Some(v) = self.latex_variable(name, span) {
-            return self.name(self.vars.variable(v).name(), span);
+        // A variable or function written in LaTeX as it prints (`x_{1}` of `x1`).
+        if let Some(n) = self.latex_spelled(name, span) {
+            return self.name(&n, span);
         }
         // The real or imaginary part of a name, as LaTeX sets it: `\operatorname{Re} A`.
         if let Some((part, of)) = name.split_once(' ') {
