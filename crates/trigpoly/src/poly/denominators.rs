@@ -55,8 +55,12 @@ impl<C: Coefficient> Poly<C> {
                     denominator: text.to_string(),
                     message: format!("the denominator {text} {why}"),
                 };
+                // The definition as given (`VarSetBuilder::denominator`), not the name in
+                // parentheses it is declared by: an error is placed in what was written.
+                let given =
+                    (text.strip_prefix('(').and_then(|t| t.strip_suffix(')'))).unwrap_or(text);
                 READING_ATOMS.set(Some(text.to_string()));
-                let parsed = Self::parse(vars, text);
+                let parsed = Self::parse(vars, given);
                 READING_ATOMS.set(None);
                 let d = parsed.map_err(|e| invalid(format!("does not read: {e}")))?;
                 if d.is_zero() || d.is_monomial() {
@@ -709,6 +713,23 @@ mod tests {
             .unwrap();
         let err = Expr::denominator_atoms(&vars).unwrap_err().to_string();
         assert!(err.contains("(2*x) is zero or a single term"), "{err}");
+    }
+
+    /// A definition that does not read is placed in the text as given, `x - `, not in the
+    /// name the builder wraps it in, `(x - )`, where it was at column 6, a `)` never written.
+    #[test]
+    fn a_denominator_that_does_not_read_is_placed_in_its_own_text() {
+        let vars = VarSet::builder()
+            .coordinate("x")
+            .denominator("x - ", "x − ", "x - ")
+            .build()
+            .unwrap();
+        let err = Expr::denominator_atoms(&vars).unwrap_err().to_string();
+        assert!(
+            err.starts_with("the denominator (x - ) does not read: line 1, column 4: ")
+                && err.ends_with("\n  x - \n     ^"),
+            "{err}"
+        );
     }
 
     /// A definition that divides by a sum would be read through the atoms while they are
