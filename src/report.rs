@@ -68,6 +68,9 @@ pub enum Expect {
 }
 
 impl Expect {
+    /// Both expectations.
+    pub const ALL: [Expect; 2] = [Expect::Proved, Expect::Refuted];
+
     /// `proved` or `refuted`.
     pub fn name(self) -> &'static str {
         match self {
@@ -90,6 +93,33 @@ impl std::fmt::Display for Expect {
         f.write_str(self.name())
     }
 }
+
+/// An expectation by its [`Expect::name`], as a file writes it.
+///
+/// ```
+/// use superint::report::{Expect, UnknownExpect};
+///
+/// assert_eq!("refuted".parse(), Ok(Expect::Refuted));
+/// assert_eq!(Expect::Proved.to_string().parse::<Expect>(), Ok(Expect::Proved));
+/// let err = "true".parse::<Expect>().unwrap_err();
+/// assert_eq!(err, UnknownExpect("true".into()));
+/// assert_eq!(err.to_string(), "unknown expectation 'true' (expected proved or refuted)");
+/// ```
+impl std::str::FromStr for Expect {
+    type Err = UnknownExpect;
+
+    fn from_str(s: &str) -> Result<Self, Self::Err> {
+        Expect::ALL
+            .into_iter()
+            .find(|e| e.name() == s)
+            .ok_or_else(|| UnknownExpect(s.to_string()))
+    }
+}
+
+/// A name that is no [`Expect`]'s: the name.
+#[derive(Clone, Debug, PartialEq, Eq, thiserror::Error)]
+#[error("unknown expectation '{0}' (expected proved or refuted)")]
+pub struct UnknownExpect(pub String);
 
 /// A numbered section of a report: of the paper (2 to 5), or one a file checked, a search, a
 /// closure (1, 2, …).

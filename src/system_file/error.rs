@@ -43,6 +43,22 @@ pub enum ErrorKind {
 }
 
 impl ErrorKind {
+    /// Every kind, in the order they are declared.
+    pub const ALL: [ErrorKind; 12] = [
+        ErrorKind::Io,
+        ErrorKind::Empty,
+        ErrorKind::NotText,
+        ErrorKind::Toml,
+        ErrorKind::Schema,
+        ErrorKind::Name,
+        ErrorKind::Expression,
+        ErrorKind::Condition,
+        ErrorKind::Claim,
+        ErrorKind::Family,
+        ErrorKind::Limit,
+        ErrorKind::Engine,
+    ];
+
     /// The kind as one lowercase word, as JSON reports it (`limit`, `expression`).
     pub fn name(self) -> &'static str {
         match self {
@@ -68,6 +84,33 @@ impl fmt::Display for ErrorKind {
         f.write_str(self.name())
     }
 }
+
+/// A kind by its [`ErrorKind::name`], as JSON reports it (`not_text`).
+///
+/// ```
+/// use superint::system_file::{ErrorKind, UnknownErrorKind};
+///
+/// assert_eq!("not_text".parse(), Ok(ErrorKind::NotText));
+/// assert_eq!(ErrorKind::Limit.to_string().parse::<ErrorKind>(), Ok(ErrorKind::Limit));
+/// let err = "syntax".parse::<ErrorKind>().unwrap_err();
+/// assert_eq!(err, UnknownErrorKind("syntax".into()));
+/// assert_eq!(err.to_string(), "unknown error kind 'syntax'");
+/// ```
+impl std::str::FromStr for ErrorKind {
+    type Err = UnknownErrorKind;
+
+    fn from_str(s: &str) -> Result<Self, Self::Err> {
+        ErrorKind::ALL
+            .into_iter()
+            .find(|k| k.name() == s)
+            .ok_or_else(|| UnknownErrorKind(s.to_string()))
+    }
+}
+
+/// A name that is no [`ErrorKind`]'s: the name.
+#[derive(Clone, Debug, PartialEq, Eq, thiserror::Error)]
+#[error("unknown error kind '{0}'")]
+pub struct UnknownErrorKind(pub String);
 
 /// Where in its source an error is: 1-based line and column (in characters), the source line
 /// and the caret under the offending text.

@@ -59,7 +59,7 @@ mod tower;
 mod written;
 
 pub use claims::{CheckedClaim, ClaimForm, ClaimSpec, CONDITION_USAGE};
-pub use error::{ErrorKind, FileError, Location, Warning, Warnings};
+pub use error::{ErrorKind, FileError, Location, UnknownErrorKind, Warning, Warnings};
 pub use load::{load, load_bytes, load_str, read_bytes, MAX_DEGREE_CEILING, MAX_FILE_BYTES};
 pub use names::{reserved, unwritable_letter, BadName, PrintedNames, Refusal};
 pub use plot::{Against, PlotFunctions, PlotInput, StartValue};

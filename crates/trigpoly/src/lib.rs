@@ -69,7 +69,7 @@ pub use number::{
 pub use poly::{CosSinTerm, MonomialIndex, Point, Poly, ReducedRadical, Term, TrigMonomial};
 pub use print::{
     differential_latex, is_differential, is_differential_sign, render_number, superscript,
-    Factored, Style, DIFFERENTIALS,
+    Factored, Style, UnknownStyle, DIFFERENTIALS,
 };
 pub use syntax::{Excerpt, ParseCause, ParseError, Span};
 pub use varset::{

@@ -37,6 +37,55 @@ pub enum Style {
     Ascii,
 }
 
+impl Style {
+    /// Every notation.
+    pub const ALL: [Style; 3] = [Style::Unicode, Style::Latex, Style::Ascii];
+
+    /// The notation's name: `unicode`, `latex` or `ascii`.
+    pub fn name(self) -> &'static str {
+        match self {
+            Style::Unicode => "unicode",
+            Style::Latex => "latex",
+            Style::Ascii => "ascii",
+        }
+    }
+}
+
+/// The notation's [`Style::name`].
+impl fmt::Display for Style {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        f.write_str(self.name())
+    }
+}
+
+/// A notation by its name (`text` for Unicode too, as a report's JSON names that form).
+///
+/// ```
+/// use trigpoly::{Style, UnknownStyle};
+///
+/// assert_eq!("latex".parse(), Ok(Style::Latex));
+/// assert_eq!("text".parse::<Style>(), Ok(Style::Unicode));
+/// assert_eq!(Style::Ascii.to_string().parse::<Style>(), Ok(Style::Ascii));
+/// let err = "html".parse::<Style>().unwrap_err();
+/// assert_eq!(err, UnknownStyle("html".into()));
+/// assert_eq!(err.to_string(), "unknown style 'html' (expected unicode, latex or ascii)");
+/// ```
+impl std::str::FromStr for Style {
+    type Err = UnknownStyle;
+
+    fn from_str(s: &str) -> Result<Self, Self::Err> {
+        Style::ALL
+            .into_iter()
+            .find(|style| style.name() == s || (s == "text" && *style == Style::Unicode))
+            .ok_or_else(|| UnknownStyle(s.to_string()))
+    }
+}
+
+/// A name that is no [`Style`]'s: the name.
+#[derive(Clone, Debug, PartialEq, Eq, thiserror::Error)]
+#[error("unknown style '{0}' (expected unicode, latex or ascii)")]
+pub struct UnknownStyle(pub String);
+
 impl<C: Coefficient> Poly<C> {
     /// The element in a given notation.
     pub fn render(&self, style: Style) -> String {
