@@ -1,8 +1,8 @@
 //! `superint bracket FILE F G`: `{F, G}` in normal form.
 
-use std::path::PathBuf;
+use anyhow::bail;
 
-use super::input::load_system;
+use super::input::SystemGiven;
 use clap::Args;
 use superint::render::render;
 use superint::system_file::{bracket_report, LimitsOverride};
@@ -16,21 +16,30 @@ Examples:
   superint bracket systems/harmonic-rotor.toml 'x*p_y' H
   superint bracket systems/harmonic-rotor.toml P_1_1 H --when 'p_theta = I*omega'
   superint bracket systems/harmonic-rotor.toml L G1 --format latex
+  superint bracket --system harmonic P11 H --when 'p_theta = I*omega'
 
-F and G are expressions in the file's variables, functions and family instances (K_2_3).";
+F and G are expressions in the file's variables, functions and family instances (K_2_3); with
+--system, in the built-in system's (its resonant functions P11, Q23, …, also written P_1_1).
+Built-in systems (--system): harmonic, gravity, anisotropic-3-5, anisotropic-1-2, planar-i,
+planar-ii.";
 
 /// Arguments of `superint bracket`.
 #[derive(Debug, Args)]
 pub struct BracketArgs {
-    /// A system file (TOML, see docs/system-files.md), or - for standard input.
-    #[arg(value_name = "FILE")]
-    file: PathBuf,
-    /// The first expression.
+    /// A system file (TOML, see docs/system-files.md), or - for standard input; with
+    /// --system, the first expression F.
+    #[arg(value_name = "FILE", allow_hyphen_values = true)]
+    file: String,
+    /// The first expression; with --system, the second, G.
     #[arg(value_name = "F", allow_hyphen_values = true)]
     f: String,
-    /// The second expression.
+    /// The second expression (none with --system).
     #[arg(value_name = "G", allow_hyphen_values = true)]
-    g: String,
+    g: Option<String>,
+    /// A built-in system instead of a file: harmonic, gravity, anisotropic-3-5,
+    /// anisotropic-1-2, planar-i, planar-ii.
+    #[arg(long, value_name = "NAME")]
+    system: Option<String>,
     /// Substitute after forming the bracket, such as 'p_theta = 2*I*omega/3' (several
     /// separated by commas).
     #[arg(long, value_name = "CONDITION")]
@@ -42,9 +51,8 @@ pub struct BracketArgs {
 /// The bracket job, as plain data.
 #[derive(Debug)]
 pub struct BracketJob {
-    pub file: PathBuf,
-    pub f: String,
-    pub g: String,
+    pub system: SystemGiven,
+    pub expressions: Vec<String>,
     pub when: Option<String>,
     pub limits: LimitsOverride,
     pub output: Output,
@@ -52,10 +60,16 @@ pub struct BracketJob {
 
 impl BracketArgs {
     pub fn job(self, output: Output) -> BracketJob {
+        let (system, expressions) = SystemGiven::split(
+            self.system,
+            [Some(self.file), Some(self.f), self.g]
+                .into_iter()
+                .flatten()
+                .collect(),
+        );
         BracketJob {
-            file: self.file,
-            f: self.f,
-            g: self.g,
+            system,
+            expressions,
             when: self.when,
             limits: self.limits.settings(),
             output,
@@ -65,11 +79,16 @@ impl BracketArgs {
 
 /// Computes the bracket and prints it.
 pub fn run(job: &BracketJob) -> anyhow::Result<bool> {
-    let file = load_system(&job.file, &job.limits)?;
-    let report = warned(
-        &file,
-        bracket_report(&file, &job.f, &job.g, job.when.as_deref()),
-    )?;
+    let file = job
+        .system
+        .open(&job.expressions, job.when.as_deref(), &job.limits)?;
+    let [f, g] = &job.expressions[..] else {
+        bail!(
+            "give two expressions, F and G, after the system: {} given",
+            job.expressions.len()
+        );
+    };
+    let report = warned(&file, bracket_report(&file, f, g, job.when.as_deref()))?;
     emit(&render(&report, job.output.format, &job.output.options))?;
     Ok(true)
 }

@@ -111,7 +111,12 @@ pub fn run(job: &ClosureJob) -> anyhow::Result<bool> {
         Some(_) => (None, &a.args[..]),
         None => (Some(PathBuf::from(&a.args[0])), &a.args[1..]),
     };
-    let subject = Subject::open(file.as_ref(), a.system.as_deref(), true, &a.limits)?;
+    let subject = Subject::open(
+        file.as_ref(),
+        a.system.as_deref(),
+        true,
+        &a.limits.settings(),
+    )?;
     let report = subject.warned(close(a, names, &subject))?;
     emit(&render(&report, job.output.format, &job.output.options))?;
     Ok(report.all_proved())

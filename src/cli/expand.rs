@@ -1,8 +1,8 @@
 //! `superint expand FILE EXPRS...`: expressions of a system file in normal form.
 
-use std::path::PathBuf;
+use anyhow::bail;
 
-use super::input::load_system;
+use super::input::SystemGiven;
 use clap::Args;
 use superint::render::render;
 use superint::system_file::{expand_report, LimitsOverride};
@@ -16,20 +16,26 @@ Examples:
   superint expand systems/harmonic-rotor.toml 're(K_1_2)' 'im(K_1_2)'
   superint expand systems/harmonic-rotor.toml '{P_1_1, H}' --when 'p_theta = I*omega'
   superint expand systems/harmonic-rotor.toml 'G1^2 + G2^2/4' --format latex
+  superint expand --system harmonic '{G1, G2}' 'Z^2'
 
 Each expression may use the file's variables, parameters, functions, family instances (K_2_3),
 brackets {F, G}, re, im and conj; it is printed in the normal form every claim is decided in
-(cos θ, sin θ with sin²θ replaced by 1 − cos²θ).";
+(cos θ, sin θ with sin²θ replaced by 1 − cos²θ). With --system, the expressions are in the
+built-in system's variables and functions (its resonant functions P11, Q23, …, also written
+P_1_1). Built-in systems (--system): harmonic, gravity, anisotropic-3-5, anisotropic-1-2,
+planar-i, planar-ii.";
 
 /// Arguments of `superint expand`.
 #[derive(Debug, Args)]
 pub struct ExpandArgs {
-    /// A system file (TOML, see docs/system-files.md), or - for standard input.
-    #[arg(value_name = "FILE")]
-    file: PathBuf,
-    /// The expressions.
-    #[arg(value_name = "EXPRS", required = true)]
-    expressions: Vec<String>,
+    /// A system file (TOML, see docs/system-files.md), or - for standard input, followed by
+    /// the expressions; with --system, only the expressions.
+    #[arg(value_name = "FILE EXPRS", required = true, num_args = 1..)]
+    args: Vec<String>,
+    /// A built-in system instead of a file: harmonic, gravity, anisotropic-3-5,
+    /// anisotropic-1-2, planar-i, planar-ii.
+    #[arg(long, value_name = "NAME")]
+    system: Option<String>,
     /// Substitute after expanding, such as 'p_theta = I*omega' (several separated by commas).
     #[arg(long, value_name = "CONDITION")]
     when: Option<String>,
@@ -40,7 +46,7 @@ pub struct ExpandArgs {
 /// The expand job, as plain data.
 #[derive(Debug)]
 pub struct ExpandJob {
-    pub file: PathBuf,
+    pub system: SystemGiven,
     pub expressions: Vec<String>,
     pub when: Option<String>,
     pub limits: LimitsOverride,
@@ -49,9 +55,10 @@ pub struct ExpandJob {
 
 impl ExpandArgs {
     pub fn job(self, output: Output) -> ExpandJob {
+        let (system, expressions) = SystemGiven::split(self.system, self.args);
         ExpandJob {
-            file: self.file,
-            expressions: self.expressions,
+            system,
+            expressions,
             when: self.when,
             limits: self.limits.settings(),
             output,
@@ -61,7 +68,12 @@ impl ExpandArgs {
 
 /// Expands the expressions and prints them.
 pub fn run(job: &ExpandJob) -> anyhow::Result<bool> {
-    let file = load_system(&job.file, &job.limits)?;
+    let file = job
+        .system
+        .open(&job.expressions, job.when.as_deref(), &job.limits)?;
+    if job.expressions.is_empty() {
+        bail!("give the expressions to expand after the system");
+    }
     let report = warned(
         &file,
         expand_report(&file, &job.expressions, job.when.as_deref()),

@@ -1,9 +1,11 @@
 //! System files named on the command line: a path, or `-` for standard input (read once, so
 //! that `check a.toml - -` checks the piped file twice rather than an empty second one).
 
-use std::path::Path;
+use std::path::{Path, PathBuf};
 use std::sync::OnceLock;
 
+use super::search::{identifier, Subject};
+use brackets::NamedFunction;
 use superint::system_file::{
     load, load_bytes, read_bytes, Caller, ErrorKind, FileError, LimitsOverride, LoadedSystem,
 };
@@ -49,4 +51,82 @@ fn load_file(path: &Path, limits: &LimitsOverride) -> Result<LoadedSystem, FileE
         Ok(bytes) => load_bytes(STDIN, bytes, limits),
         Err(e) => Err(e.clone()),
     }
+}
+
+/// The system a command on expressions of a system (`bracket`, `expand`, `table`, `rank`) is
+/// given: a system file, its first positional argument, or a built-in system by
+/// `--system NAME`, all its positional arguments then its own (as `closure` reads them).
+#[derive(Debug)]
+pub struct SystemGiven {
+    /// The system file; with `--system`, a first positional argument that names a file (`-`,
+    /// a `.toml` or an existing file), to be refused.
+    file: Option<PathBuf>,
+    /// The built-in system's name.
+    builtin: Option<String>,
+}
+
+impl SystemGiven {
+    /// The system `builtin` or the file the first of `positionals` names, and the rest of them.
+    pub fn split(builtin: Option<String>, mut positionals: Vec<String>) -> (Self, Vec<String>) {
+        let first_is_file = positionals.first().is_some_and(|p| match builtin {
+            None => true,
+            Some(_) => p == "-" || p.ends_with(".toml") || Path::new(p).is_file(),
+        });
+        let file = first_is_file.then(|| PathBuf::from(positionals.remove(0)));
+        (SystemGiven { file, builtin }, positionals)
+    }
+
+    /// Loads the file, or builds the built-in system held to `limits`; a file and `--system`
+    /// both given are refused, as `search` refuses them. A built-in system has its resonant
+    /// functions `P11`, … (as `closure` has them) where one of `texts` (the command's
+    /// expressions) or `when` (its condition) names one: the 36 of them would otherwise be among the
+    /// functions a result is written in, too many for `{G1, G2} = −ω² L` to be found, and
+    /// among those of a table of every function.
+    pub fn open(
+        &self,
+        texts: &[String],
+        when: Option<&str>,
+        limits: &LimitsOverride,
+    ) -> anyhow::Result<LoadedSystem> {
+        let Some(name) = &self.builtin else {
+            return Ok(Subject::open(self.file.as_ref(), None, false, limits)?.into_loaded(""));
+        };
+        if let Some(file) = &self.file {
+            anyhow::bail!(
+                "the argument '{}' cannot be used with '--system {name}': give a system file \
+                 or a built-in system",
+                file.display()
+            );
+        }
+        let resonant = Subject::open(None, Some(name), true, limits)?;
+        let plain = Subject::open(None, Some(name), false, limits)?;
+        let added = |f: &&NamedFunction| plain.system().function(&f.name).is_none();
+        let named = resonant.system().functions().iter().filter(added).any(|f| {
+            let forms = [f.name.clone(), identifier(&f.display), f.display.clone()];
+            let mut texts = texts.iter().map(String::as_str).chain(when);
+            texts.any(|t| forms.iter().any(|form| mentions(t, form)))
+        });
+        Ok(if named { resonant } else { plain }.into_loaded(name))
+    }
+
+    /// How a message names the system: the file as given, or `--system NAME`.
+    pub fn label(&self) -> String {
+        match (&self.file, &self.builtin) {
+            (_, Some(name)) => format!("--system {name}"),
+            (Some(file), None) => file.display().to_string(),
+            (None, None) => String::new(),
+        }
+    }
+}
+
+/// Whether `text` has `name` in it as a whole name: neither a letter, a digit nor `_` beside it.
+fn mentions(text: &str, name: &str) -> bool {
+    let part_of_name = |c: char| c.is_alphanumeric() || c == '_';
+    text.match_indices(name).any(|(at, _)| {
+        !text[..at].chars().next_back().is_some_and(part_of_name)
+            && !text[at + name.len()..]
+                .chars()
+                .next()
+                .is_some_and(part_of_name)
+    })
 }

@@ -2,7 +2,7 @@
 //! --poisson-degree P`: a basis of every integral in a finite space, by exact linear algebra,
 //! each proved.
 
-use std::path::PathBuf;
+use std::path::{Path, PathBuf};
 
 use super::input::load_system;
 use anyhow::{anyhow, bail, Context};
@@ -16,7 +16,9 @@ use superint::discovery::{
 use superint::render::render;
 use superint::report::{with_article, Report};
 use superint::system_file::{what_is, BadName, Caller, LoadedSystem};
-use superint::system_file::{ErrorKind, FileError, Warning, Warnings, COMMAND_LINE};
+use superint::system_file::{
+    ErrorKind, FileError, LimitsOverride, Warning, Warnings, COMMAND_LINE,
+};
 use trigpoly::{Expr, VarKind};
 
 use super::limits::LimitsArgs;
@@ -250,6 +252,22 @@ pub(crate) fn identifier(name: &str) -> String {
     out.trim_end_matches('_').to_string()
 }
 
+/// `e`, the error of reading the file `path`, with a hint that a built-in system is given
+/// with --system where the path is a built-in system's name and no file (`superint bracket
+/// harmonic L H`).
+fn builtin_hint(e: FileError, path: &Path) -> FileError {
+    let name = path.to_string_lossy();
+    if e.kind != ErrorKind::Io
+        || path.exists()
+        || !superint::discovery::BUILTIN_SYSTEMS.contains(&name.as_ref())
+    {
+        return e;
+    }
+    e.with_hint(format!(
+        "{name} is a built-in system: give it with --system {name}, in place of FILE"
+    ))
+}
+
 /// Whether `text` given on the command line is a name (`Zbar`, `K_{1,2}`, `Kbar_1_2`) rather
 /// than an expression (`x*p_y`, `L^2`, or a bracket `{Lx,Axy}`, which the characters of an
 /// instance's braces would otherwise let through as the name `Lx_Axy`).
@@ -292,10 +310,10 @@ impl Subject {
         file: Option<&PathBuf>,
         builtin: Option<&str>,
         resonant: bool,
-        limits: &LimitsArgs,
+        limits: &LimitsOverride,
     ) -> anyhow::Result<Subject> {
         if let Some(name) = builtin {
-            let limits = limits.settings().or_defaults();
+            let limits = limits.or_defaults();
             let built = builtin_system(name, resonant, limits).with_context(|| {
                 format!("the built-in system {name} does not fit the limits given")
             })?;
@@ -311,10 +329,19 @@ impl Subject {
             };
         }
         let path = file.ok_or_else(|| anyhow!("give a system file or --system NAME"))?;
-        Ok(Subject::File(Box::new(load_system(
-            path,
-            &limits.settings(),
-        )?)))
+        let loaded = load_system(path, limits).map_err(|e| builtin_hint(e, path))?;
+        Ok(Subject::File(Box::new(loaded)))
+    }
+
+    /// The system as the reports of a system file take it ([`LoadedSystem`]): a file's own, or
+    /// a built-in system's, whose texts the command line gives, named `--system builtin`.
+    pub fn into_loaded(self, builtin: &str) -> LoadedSystem {
+        match self {
+            Subject::File(f) => *f,
+            Subject::Builtin(_, s, _) => LoadedSystem::of_system(*s)
+                .with_caller(Caller::CommandLine)
+                .with_origin(&format!("--system {builtin}")),
+        }
     }
 
     /// `result`, once what the file's texts and the command line's read in doubt is printed
@@ -580,7 +607,12 @@ pub fn run(job: &SearchJob) -> anyhow::Result<bool> {
 
 fn search_and_print(job: &SearchJob) -> anyhow::Result<bool> {
     let a = &job.args;
-    let subject = Subject::open(a.file.as_ref(), a.system.as_deref(), false, &a.limits)?;
+    let subject = Subject::open(
+        a.file.as_ref(),
+        a.system.as_deref(),
+        false,
+        &a.limits.settings(),
+    )?;
     let report = subject.warned(search(a, &subject))?;
     emit(&render(&report, job.output.format, &job.output.options))?;
     Ok(report.all_proved())
@@ -703,7 +735,13 @@ mod tests {
         ]
         .map(|args| {
             let a = Command::parse_from(args).args;
-            Subject::open(a.file.as_ref(), a.system.as_deref(), false, &a.limits).expect("opens")
+            Subject::open(
+                a.file.as_ref(),
+                a.system.as_deref(),
+                false,
+                &a.limits.settings(),
+            )
+            .expect("opens")
         })
     }
 

@@ -1,8 +1,6 @@
 //! `superint table FILE [NAMES...]`: the bracket table of named functions.
 
-use std::path::PathBuf;
-
-use super::input::load_system;
+use super::input::SystemGiven;
 use anyhow::bail;
 use clap::Args;
 use superint::render::render;
@@ -18,22 +16,26 @@ Examples:
   superint table systems/harmonic-rotor.toml                  every function of the file
   superint table systems/harmonic-rotor.toml L G1 G2 --format markdown
   superint table systems/euler-top.toml M1 M2 M3              so(3), of the Poisson variables
+  superint table --system harmonic F1 F2 L G1 G2              the same table, built in
 
 Each entry is written as a combination of the listed functions with coefficients in the
 parameters where one exists, otherwise as an expression; one that is a polynomial in H and the
 file's functions is written so below the table too, expanded and with the factor its terms
-share in front ({S, C} = 72M³ H H_x² − 96M³ H_x³ = 24M³(3 H − 4 H_x) H_x²).";
+share in front ({S, C} = 72M³ H H_x² − 96M³ H_x³ = 24M³(3 H − 4 H_x) H_x²). Built-in systems
+(--system): harmonic, gravity, anisotropic-3-5, anisotropic-1-2, planar-i, planar-ii.";
 
 /// Arguments of `superint table`.
 #[derive(Debug, Args)]
 pub struct TableArgs {
-    /// A system file (TOML, see docs/system-files.md), or - for standard input.
-    #[arg(value_name = "FILE")]
-    file: PathBuf,
-    /// Named functions, family instances (K_1_1) or phase variables (p_x); every function of
-    /// the file but H if none.
-    #[arg(value_name = "NAMES")]
-    names: Vec<String>,
+    /// A system file (TOML, see docs/system-files.md), or - for standard input, followed by
+    /// named functions, family instances (K_1_1) or phase variables (p_x), every function of
+    /// the file but H if none; with --system, only the names.
+    #[arg(value_name = "FILE NAMES", required_unless_present = "system", num_args = 0..)]
+    args: Vec<String>,
+    /// A built-in system instead of a file: harmonic, gravity, anisotropic-3-5,
+    /// anisotropic-1-2, planar-i, planar-ii.
+    #[arg(long, value_name = "NAME")]
+    system: Option<String>,
     #[command(flatten)]
     limits: LimitsArgs,
 }
@@ -41,7 +43,7 @@ pub struct TableArgs {
 /// The table job, as plain data.
 #[derive(Debug)]
 pub struct TableJob {
-    pub file: PathBuf,
+    pub system: SystemGiven,
     pub names: Vec<String>,
     pub limits: LimitsOverride,
     pub output: Output,
@@ -49,9 +51,10 @@ pub struct TableJob {
 
 impl TableArgs {
     pub fn job(self, output: Output) -> TableJob {
+        let (system, names) = SystemGiven::split(self.system, self.args);
         TableJob {
-            file: self.file,
-            names: self.names,
+            system,
+            names,
             limits: self.limits.settings(),
             output,
         }
@@ -60,7 +63,7 @@ impl TableArgs {
 
 /// Computes the table and prints it.
 pub fn run(job: &TableJob) -> anyhow::Result<bool> {
-    let file = load_system(&job.file, &job.limits)?;
+    let file = job.system.open(&job.names, None, &job.limits)?;
     let report = warned(&file, table_report(&file, &job.names))?;
     emit(&render(&report, job.output.format, &job.output.options))?;
     // Entries a limit stopped are `?` in the table, and the run ends with an error.
@@ -76,7 +79,7 @@ pub fn run(job: &TableJob) -> anyhow::Result<bool> {
         bail!(
             "{}: {} of the table undecided (shown as ?), stopped at a limit, the first {first} \
              (--max-terms N, --max-term-products N, --max-degree D)",
-            job.file.display(),
+            job.system.label(),
             counted(undecided.len(), "entry")
         );
     }

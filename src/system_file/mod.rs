@@ -367,6 +367,15 @@ impl LoadedSystem {
         self
     }
 
+    /// The same system, named `origin` where its reports and messages name a file (a system
+    /// built in code is `<program>`): the command line's `superint bracket --system harmonic`
+    /// names its built-in system `--system harmonic`.
+    #[must_use]
+    pub fn with_origin(mut self, origin: &str) -> Self {
+        self.source = Source::program(origin, "");
+        self
+    }
+
     /// Who gives the texts the reports read ([`Caller::Program`] unless
     /// [`LoadedSystem::with_caller`] said otherwise).
     pub fn caller(&self) -> Caller {

@@ -1253,7 +1253,7 @@ fn cli_bad_usage_exits_2_with_a_message() {
         (&["paper", "--bogus"][..], "unexpected argument '--bogus'"),
         (
             &["expand", "systems/harmonic-rotor.toml"][..],
-            "the following required arguments were not provided:\n  <EXPRS>...",
+            "give the expressions to expand after the system",
         ),
     ] {
         assert_bad_usage(args, message);

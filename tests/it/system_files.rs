@@ -2727,6 +2727,121 @@ fn bracket_prints_the_normal_form() {
     assert!(on.contains("at p_θ = 2Iω/3"), "{on}");
 }
 
+/// The output of a command on a system but the heading that names where the system came
+/// from (`harmonic rotor (systems/harmonic-rotor.toml)`, `… (--system harmonic)`).
+fn without_origin(out: &str) -> String {
+    out.lines()
+        .filter(|l| !l.contains("harmonic rotor (") && !l.chars().all(|c| c == '═'))
+        .collect::<Vec<_>>()
+        .join("\n")
+}
+
+/// `bracket`, `expand`, `table` and `rank` take a built-in system by --system, as `search`
+/// and `closure` do, with its functions and its resonant ones (`P_1_1`, `P11`), and give what
+/// they give with the file of the same system: they took only a FILE, and `--system` was
+/// refused as an unexpected argument.
+#[test]
+fn bracket_expand_table_and_rank_take_a_built_in_system() {
+    let f = "systems/harmonic-rotor.toml";
+    let when = "p_theta = I*omega";
+    let commands: [&[&str]; 6] = [
+        &["bracket", "G1", "G2"],
+        &["bracket", "P_1_1", "H", "--when", when],
+        &["expand", "{G1, G2}", "Z^2", "{P_1_1, H}", "--when", when],
+        &["table", "F1", "F2", "L", "G1", "G2"],
+        &["rank", "F1", "F2", "G1", "G2", "P_1_1", "--expect", "5"],
+        &["rank", "F1", "G1", "G2", "P_1_1", "--when", when],
+    ];
+    for command in commands {
+        let (name, rest) = command.split_first().expect("a command");
+        let with_file = run(&[&[*name, f], rest, &["--no-timings"]].concat(), 0);
+        let args = [&[*name, "--system", "harmonic"], rest, &["--no-timings"]].concat();
+        let built_in = run(&args, 0);
+        assert!(
+            built_in.contains("harmonic rotor (--system harmonic)"),
+            "{built_in}"
+        );
+        // (The file has a parameter l more, at which a rank's point is written too.)
+        let kept = |out: &str| match *name {
+            "rank" => out.lines().filter(|l| l.starts_with("  rank ")).collect(),
+            _ => without_origin(out),
+        };
+        assert_eq!(kept(&built_in), kept(&with_file), "{args:?}");
+    }
+    let out = run(
+        &[
+            "bracket",
+            "--system",
+            "harmonic",
+            "G1",
+            "G2",
+            "--no-timings",
+        ],
+        0,
+    );
+    assert!(out.contains("\n             = −ω² L\n"), "{out}");
+    // A resonant function by its built-in name, and a table of every function without them.
+    let out = run(
+        &[
+            "rank", "--system", "harmonic", "F1", "F2", "G1", "G2", "P11",
+        ],
+        0,
+    );
+    assert!(
+        out.contains("P_{1,1})/∂(x, y, θ, p_x, p_y, p_θ) = 5"),
+        "{out}"
+    );
+    let v: Value = serde_json::from_str(&run(
+        &["table", "--system", "harmonic", "--format", "json"],
+        0,
+    ))
+    .expect("JSON");
+    let functions = &v["tables"][0]["functions"];
+    assert_eq!(functions[0], "F1", "{functions}");
+    assert!(!functions.to_string().contains("P11"), "{functions}");
+}
+
+/// `--system` is refused as `search` refuses it: an unknown name with the list of the
+/// built-in systems, and beside a FILE; and a FILE that is no file but a built-in system's
+/// name says that a built-in system is given with --system.
+#[test]
+fn bracket_expand_table_and_rank_refuse_a_built_in_system_as_search_does() {
+    let f = "systems/harmonic-rotor.toml";
+    let commands: [&[&str]; 4] = [
+        &["bracket", "L", "H"],
+        &["expand", "L"],
+        &["table", "L", "G1"],
+        &["rank", "L", "G1"],
+    ];
+    let stderr = |args: &[&str]| {
+        let o = superint_in(root(), args);
+        assert_eq!(o.status.code(), Some(2), "superint {args:?}");
+        text(&o.stderr)
+    };
+    for command in commands {
+        let (name, rest) = command.split_first().expect("a command");
+        let unknown = stderr(&[&[*name, "--system", "harmonc"], rest].concat());
+        assert!(
+            unknown.contains(
+                "unknown system 'harmonc' (built-in: harmonic, gravity, anisotropic-3-5, \
+                 anisotropic-1-2, planar-i, planar-ii)"
+            ),
+            "{unknown}"
+        );
+        let both = stderr(&[&[*name, "--system", "harmonic", f], rest].concat());
+        assert!(
+            both.contains(&format!("'{f}' cannot be used with '--system harmonic'")),
+            "{both}"
+        );
+        let named = stderr(&[&[*name, "harmonic"], rest].concat());
+        assert!(named.contains("harmonic: cannot read the file"), "{named}");
+        assert!(
+            named.contains("hint: harmonic is a built-in system: give it with --system harmonic"),
+            "{named}"
+        );
+    }
+}
+
 /// A left side too wide to align on takes lines of its own, its right side below it after
 /// `=`: aligned after a left side of 160 characters, the right side was written one word a
 /// line at column 160. Here the sl(2) Casimir of the Calogero–Moser system, `2H Σx² − D²`,
