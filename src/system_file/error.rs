@@ -42,40 +42,38 @@ pub enum ErrorKind {
     Engine,
 }
 
-impl ErrorKind {
-    /// Every kind, in the order they are declared.
-    pub const ALL: [ErrorKind; 12] = [
-        ErrorKind::Io,
-        ErrorKind::Empty,
-        ErrorKind::NotText,
-        ErrorKind::Toml,
-        ErrorKind::Schema,
-        ErrorKind::Name,
-        ErrorKind::Expression,
-        ErrorKind::Condition,
-        ErrorKind::Claim,
-        ErrorKind::Family,
-        ErrorKind::Limit,
-        ErrorKind::Engine,
-    ];
+/// [`ErrorKind::ALL`] and [`ErrorKind::name`] from one list of the kinds with their names:
+/// `name`'s match must cover every kind, so that a kind left out of the list, and so out of
+/// `ALL`, does not compile.
+macro_rules! kinds_with_names {
+    ($($kind:ident => $name:literal,)*) => {
+        impl ErrorKind {
+            /// Every kind, in the order they are declared.
+            pub const ALL: [ErrorKind; [$($name),*].len()] = [$(ErrorKind::$kind),*];
 
-    /// The kind as one lowercase word, as JSON reports it (`limit`, `expression`).
-    pub fn name(self) -> &'static str {
-        match self {
-            ErrorKind::Io => "io",
-            ErrorKind::Empty => "empty",
-            ErrorKind::NotText => "not_text",
-            ErrorKind::Toml => "toml",
-            ErrorKind::Schema => "schema",
-            ErrorKind::Name => "name",
-            ErrorKind::Expression => "expression",
-            ErrorKind::Condition => "condition",
-            ErrorKind::Claim => "claim",
-            ErrorKind::Family => "family",
-            ErrorKind::Limit => "limit",
-            ErrorKind::Engine => "engine",
+            /// The kind as one lowercase word, as JSON reports it (`limit`, `expression`).
+            pub fn name(self) -> &'static str {
+                match self {
+                    $(ErrorKind::$kind => $name,)*
+                }
+            }
         }
-    }
+    };
+}
+
+kinds_with_names! {
+    Io => "io",
+    Empty => "empty",
+    NotText => "not_text",
+    Toml => "toml",
+    Schema => "schema",
+    Name => "name",
+    Expression => "expression",
+    Condition => "condition",
+    Claim => "claim",
+    Family => "family",
+    Limit => "limit",
+    Engine => "engine",
 }
 
 /// The kind as [`ErrorKind::name`] writes it (`limit`).
@@ -487,6 +485,16 @@ pub(crate) fn locate_bytes(bytes: &[u8], offset: usize) -> Location {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// `ALL` has every kind once, in the order they are declared (its list is `name`'s,
+    /// whose match covers every kind), and each reads back from its name.
+    #[test]
+    fn every_kind_is_listed_in_order_and_reads_back_from_its_name() {
+        for (i, kind) in ErrorKind::ALL.into_iter().enumerate() {
+            assert_eq!(kind as usize, i, "{kind:?}");
+            assert_eq!(kind.name().parse(), Ok(kind));
+        }
+    }
 
     /// An expression's error keeps its parse error's cause: an unknown name says the name,
     /// one past 80 characters by its start as the message shows it; a syntax error has none.
