@@ -47,24 +47,21 @@ pub fn complex_form(f: &Expr) -> Option<(Expr, i64)> {
 
 /// The first of `candidates` that names none of `count` labels `P1, P2, …` the system has as
 /// a variable or a function (`I1`, `I2` are a coupled rotor's moments of inertia) or are
-/// `taken` (a file's families, by name and display), nor, with `bare`, the letter `P`
-/// itself: the letter of a report's numbered labels. Both kinds take `bare`, since the
-/// captions write each letter alone: the amplitudes' `Re(A e^{−ikθ})`, above lines that
-/// restate them in the file's functions (`A7 = A` read the amplitude as the function `A` of
-/// the Smorodinsky–Winternitz rotor, and `Re(B e^{−ikθ})` as the family `B` of the 3:5
-/// rotor), and the integrals' `I = Re(…)` and `{I, H} = 0 for the other 23 basis elements`
-/// (which a rotor's search printed beside `p_θ = Iω`, `I` its moment of inertia).
+/// `taken` (a file's families, by name and display), nor the letter `P` itself: the letter of
+/// a report's numbered labels. The letter alone is avoided since the captions write it so:
+/// the amplitudes' `Re(A e^{−ikθ})`, above lines that restate them in the file's functions
+/// (`A7 = A` read the amplitude as the function `A` of the Smorodinsky–Winternitz rotor, and
+/// `Re(B e^{−ikθ})` as the family `B` of the 3:5 rotor), and the integrals' `I = Re(…)` and
+/// `{I, H} = 0 for the other 23 basis elements` (which a rotor's search printed beside
+/// `p_θ = Iω`, `I` its moment of inertia).
 fn label_letter<'a>(
     system: &System,
     taken: &[&str],
     candidates: &[&'a str],
     count: usize,
-    bare: bool,
 ) -> &'a str {
     first_free(system, taken, candidates, |p| {
-        let letter = bare.then(|| p.to_string());
-        letter
-            .into_iter()
+        std::iter::once(p.to_string())
             .chain((1..=count).map(|i| format!("{p}{i}")))
             .collect()
     })
@@ -693,8 +690,8 @@ impl Shared {
                 .module
                 .as_ref()
                 .map(|m| parameter_names(vars, &m.parameters)),
-            letter: label_letter(system, taken, &["I", "J", "Φ", "Ξ"], r.basis.len(), true),
-            complex: label_letter(system, taken, &["A", "B", "Ψ", "Λ"], r.basis.len(), true),
+            letter: label_letter(system, taken, &["I", "J", "Φ", "Ξ"], r.basis.len()),
+            complex: label_letter(system, taken, &["A", "B", "Ψ", "Λ"], r.basis.len()),
             shown: shown_integrals(r),
             names: Names::of_system(system),
             caller,
