@@ -1120,7 +1120,6 @@ impl Context<GaussianRational> for Scope<'_> {
     }
 }
 
-/// The span of the first use of `name` in a tree, if any.
 /// Where `tree` has its first bracket `{f, g}`, if it has one.
 pub(crate) fn first_bracket(tree: &Tree) -> Option<Span> {
     match &tree.kind {
@@ -1136,6 +1135,7 @@ pub(crate) fn first_bracket(tree: &Tree) -> Option<Span> {
     }
 }
 
+/// The span of the first use of `name` in a tree, if any.
 pub(crate) fn mention(tree: &Tree, name: &str) -> Option<Span> {
     tree.names()
         .into_iter()
