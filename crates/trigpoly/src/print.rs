@@ -68,7 +68,7 @@ impl fmt::Display for Style {
 /// assert_eq!(Style::Ascii.to_string().parse::<Style>(), Ok(Style::Ascii));
 /// let err = "html".parse::<Style>().unwrap_err();
 /// assert_eq!(err, UnknownStyle("html".into()));
-/// assert_eq!(err.to_string(), "unknown style 'html' (expected unicode, latex or ascii)");
+/// assert_eq!(err.to_string(), "unknown style 'html' (expected unicode or text, latex or ascii)");
 /// ```
 impl std::str::FromStr for Style {
     type Err = UnknownStyle;
@@ -83,7 +83,7 @@ impl std::str::FromStr for Style {
 
 /// A name that is no [`Style`]'s: the name.
 #[derive(Clone, Debug, PartialEq, Eq, thiserror::Error)]
-#[error("unknown style '{0}' (expected unicode, latex or ascii)")]
+#[error("unknown style '{0}' (expected unicode or text, latex or ascii)")]
 pub struct UnknownStyle(pub String);
 
 impl<C: Coefficient> Poly<C> {
