@@ -338,9 +338,10 @@ impl Subject {
     pub fn into_loaded(self, builtin: &str) -> LoadedSystem {
         match self {
             Subject::File(f) => *f,
-            Subject::Builtin(_, s, _) => LoadedSystem::of_system(*s)
+            Subject::Builtin(display, s, _) => LoadedSystem::of_system(*s)
                 .with_caller(Caller::CommandLine)
-                .with_origin(&format!("--system {builtin}")),
+                .with_origin(&format!("--system {builtin}"))
+                .with_name(&display),
         }
     }
 

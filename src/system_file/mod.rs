@@ -376,6 +376,15 @@ impl LoadedSystem {
         self
     }
 
+    /// The same system, named `name` where its reports' titles name it (`{L, H} for the rotor
+    /// under gravity`): the command line's built-in `--system gravity`, whose engine system
+    /// is the `gravity rotor`, is named as `search --system gravity` titles it.
+    #[must_use]
+    pub fn with_name(mut self, name: &str) -> Self {
+        self.name = name.to_string();
+        self
+    }
+
     /// Who gives the texts the reports read ([`Caller::Program`] unless
     /// [`LoadedSystem::with_caller`] said otherwise).
     pub fn caller(&self) -> Caller {

@@ -2780,6 +2780,37 @@ fn bracket_expand_table_and_rank_take_a_built_in_system() {
         0,
     );
     assert!(out.contains("\n             = −ω² L\n"), "{out}");
+    // A built-in system is named as `search --system` titles it, not by its engine's name
+    // (`the gravity rotor`, `the planar limit V_I with rotor`).
+    for (system, title) in [
+        ("gravity", "{L, H} for the rotor under gravity\n"),
+        ("planar-i", "{L, H} for the rotor with V_I\n"),
+    ] {
+        let out = run(
+            &["bracket", "--system", system, "L", "H", "--no-timings"],
+            0,
+        );
+        assert!(out.starts_with(title), "{out}");
+        let search = [
+            "search",
+            "--system",
+            system,
+            "--momenta-degree",
+            "1",
+            "--positions-degree",
+            "1",
+            "--trig-degree",
+            "0",
+            "--laurent",
+            "--no-timings",
+        ];
+        let search = run(&search, 0);
+        let name = title.trim_end().trim_start_matches("{L, H} for the ");
+        assert!(
+            search.starts_with(&format!("Integrals of the {name}\n")),
+            "{search}"
+        );
+    }
     // A resonant function by its built-in name, and a table of every function without them.
     let out = run(
         &[
