@@ -48,7 +48,8 @@ pub enum SummaryKind {
     /// Every check counted once, with expectations:
     /// `12 claims in 2 files: 10 proved, 2 refuted; all as expected`.
     Check {
-        /// How many system files were checked.
+        /// How many system files were checked: 0 for a system given otherwise (built in code,
+        /// or the command line's `--system`), whose line names no file.
         files: usize,
     },
     /// No claim, a computation (a bracket, a table): `computed exactly (0.01 s)`.
@@ -725,7 +726,8 @@ impl Report {
     }
 
     /// The closing line of a check of `files` system files:
-    /// `12 claims in 2 files: 10 proved, 2 refuted; all as expected`.
+    /// `12 claims in 2 files: 10 proved, 2 refuted; all as expected` (`1 claim: …` of a
+    /// system that is no file).
     fn check_summary(&self, files: usize, timings: bool) -> String {
         let claims = self.claims_by_section();
         let outcomes = |o: ClaimOutcome| claims.iter().filter(|(_, c)| c.outcome() == o).count();
@@ -772,14 +774,17 @@ impl Report {
         if !stopped.is_empty() {
             verdict.push_str(&format!("; undecided: {}", stopped.join(", ")));
         }
-        let files = counted(files, "file");
+        let files = match files {
+            0 => String::new(),
+            n => format!(" in {}", counted(n, "file")),
+        };
         let count = counted(claims.len(), "claim");
         let undecided = match outcomes(ClaimOutcome::Undecided) {
             0 => String::new(),
             n => format!(", {n} undecided"),
         };
         format!(
-            "{count} in {files}: {proved} proved, {refuted} refuted{undecided}; {verdict}{}",
+            "{count}{files}: {proved} proved, {refuted} refuted{undecided}; {verdict}{}",
             seconds_in_parentheses(self.seconds, timings)
         )
     }

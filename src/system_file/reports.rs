@@ -830,7 +830,10 @@ pub fn rank_report_when(
     Ok(file.one_entry(
         format!("Functional independence in {}", file.the_name()),
         Entry::Rank(rank),
-        SummaryKind::Check { files: 1 },
+        // A system built in code or given by `--system` is no file to count.
+        SummaryKind::Check {
+            files: usize::from(!file.source.program),
+        },
         start,
     ))
 }

@@ -2822,6 +2822,11 @@ fn bracket_expand_table_and_rank_take_a_built_in_system() {
         out.contains("P_{1,1})/∂(x, y, θ, p_x, p_y, p_θ) = 5"),
         "{out}"
     );
+    // No file to count: `1 claim: …`, not `1 claim in 1 file: …`, which a file's rank says.
+    assert!(
+        out.contains("\n1 claim: 1 proved, 0 refuted; all as expected"),
+        "{out}"
+    );
     let v: Value = serde_json::from_str(&run(
         &["table", "--system", "harmonic", "--format", "json"],
         0,
