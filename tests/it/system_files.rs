@@ -2792,18 +2792,11 @@ fn bracket_expand_table_and_rank_take_a_built_in_system() {
         );
         assert!(out.starts_with(title), "{out}");
         let search = [
-            "search",
-            "--system",
-            system,
-            "--momenta-degree",
-            "1",
-            "--positions-degree",
-            "1",
-            "--trig-degree",
-            "0",
-            "--laurent",
-            "--no-timings",
-        ];
+            &["search", "--system", system][..],
+            &crate::DEGREE_ONE_TRIG_ZERO,
+            &["--laurent", "--no-timings"],
+        ]
+        .concat();
         let search = run(&search, 0);
         let name = title.trim_end().trim_start_matches("{L, H} for the ");
         assert!(
