@@ -779,7 +779,8 @@ impl<'a> Scope<'a> {
     }
 
     /// The warning for a name of `text` run together and read as a product in doubt: its
-    /// place, and the reading in the system's printed names (`L_x x`).
+    /// place, and the reading in the system's printed names (`L_x x`), with the advice to
+    /// declare the name only where the system is a file's.
     fn warning(&self, source: &Source, text: &Text, noted: &trigpoly::RunTogether) -> Warning {
         Warning::run_together(
             &source.origin,
@@ -787,7 +788,9 @@ impl<'a> Scope<'a> {
             text.source_span(noted.span),
             noted,
             &|piece: &str| self.file.display_name(piece),
-            true,
+            // A system that is no file (built in code, or the command line's `--system`)
+            // has nowhere to declare a name.
+            !self.file.source.program,
         )
     }
 

@@ -2815,6 +2815,22 @@ fn bracket_expand_table_and_rank_take_a_built_in_system() {
         out.contains("P_{1,1})/∂(x, y, θ, p_x, p_y, p_θ) = 5"),
         "{out}"
     );
+    // A name run together is warned of as `search --system` warns of it: a built-in system
+    // has no file to declare a name in.
+    let together = crate::superint(&[
+        "bracket",
+        "--system",
+        "harmonic",
+        "G1y",
+        "H",
+        "--no-timings",
+    ]);
+    let warned = String::from_utf8(together.stderr).expect("UTF-8");
+    assert!(
+        warned.contains("is read as the product G1 y, the function G1 with y after it: write"),
+        "{warned}"
+    );
+    assert!(!warned.contains("declare"), "{warned}");
     // No file to count: `1 claim: …`, not `1 claim in 1 file: …`, which a file's rank says.
     assert!(
         out.contains("\n1 claim: 1 proved, 0 refuted; all as expected"),
