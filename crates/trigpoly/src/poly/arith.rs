@@ -295,11 +295,12 @@ impl Mul<&GaussianRational> for &Poly<GaussianRational> {
     }
 }
 
-/// `c · f`, taking `f`.
+/// `c · f`, taking `f`: with no copy of its terms where `c` is rational.
 impl Mul<&GaussianRational> for Poly<GaussianRational> {
     type Output = Poly<GaussianRational>;
-    fn mul(self, c: &GaussianRational) -> Poly<GaussianRational> {
-        self.scale(c)
+    fn mul(mut self, c: &GaussianRational) -> Poly<GaussianRational> {
+        self *= c;
+        self
     }
 }
 
@@ -307,7 +308,7 @@ impl Mul<&GaussianRational> for Poly<GaussianRational> {
 impl Mul<GaussianRational> for &Poly<GaussianRational> {
     type Output = Poly<GaussianRational>;
     fn mul(self, c: GaussianRational) -> Poly<GaussianRational> {
-        self.scale(&c)
+        self * &c
     }
 }
 
@@ -315,21 +316,24 @@ impl Mul<GaussianRational> for &Poly<GaussianRational> {
 impl Mul<GaussianRational> for Poly<GaussianRational> {
     type Output = Poly<GaussianRational>;
     fn mul(self, c: GaussianRational) -> Poly<GaussianRational> {
-        self.scale(&c)
+        self * &c
     }
 }
 
-/// `f ← c · f`.
+/// `f ← c · f`, with no copy of `f`'s terms where `c` is rational (its content changes).
 impl MulAssign<&GaussianRational> for Poly<GaussianRational> {
     fn mul_assign(&mut self, c: &GaussianRational) {
-        *self = self.scale(c);
+        match c.is_real() {
+            true => *self *= &c.re,
+            false => *self = self.scale(c),
+        }
     }
 }
 
 /// `f ← c · f`.
 impl MulAssign<GaussianRational> for Poly<GaussianRational> {
     fn mul_assign(&mut self, c: GaussianRational) {
-        *self = self.scale(&c);
+        *self *= &c;
     }
 }
 
