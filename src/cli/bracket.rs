@@ -2,7 +2,7 @@
 
 use anyhow::bail;
 
-use super::input::SystemGiven;
+use super::input::{BuiltinArg, SystemGiven};
 use clap::Args;
 use superint::render::render;
 use superint::system_file::{bracket_report, LimitsOverride};
@@ -36,10 +36,8 @@ pub struct BracketArgs {
     /// The second expression (none with --system).
     #[arg(value_name = "G", allow_hyphen_values = true)]
     g: Option<String>,
-    /// A built-in system instead of a file: harmonic, gravity, anisotropic-3-5,
-    /// anisotropic-1-2, planar-i, planar-ii.
-    #[arg(long, value_name = "NAME")]
-    system: Option<String>,
+    #[command(flatten)]
+    builtin: BuiltinArg,
     /// Substitute after forming the bracket, such as 'p_theta = 2*I*omega/3' (several
     /// separated by commas).
     #[arg(long, value_name = "CONDITION")]
@@ -61,7 +59,7 @@ pub struct BracketJob {
 impl BracketArgs {
     pub fn job(self, output: Output) -> BracketJob {
         let (system, expressions) = SystemGiven::split(
-            self.system,
+            self.builtin.system,
             [Some(self.file), Some(self.f), self.g]
                 .into_iter()
                 .flatten()

@@ -16,6 +16,7 @@ use superint::system_file::{
 };
 use trigpoly::LimitKind;
 
+use super::input::BuiltinArg;
 use super::limits::LimitsArgs;
 use super::output::{emit, Output};
 use super::search::{identifier, list_refused, Subject};
@@ -48,10 +49,8 @@ pub struct ClosureArgs {
     /// generators.
     #[arg(value_name = "FILE NAMES", required = true, num_args = 1..)]
     args: Vec<String>,
-    /// A built-in system instead of a file: harmonic, gravity, anisotropic-3-5,
-    /// anisotropic-1-2, planar-i, planar-ii.
-    #[arg(long, value_name = "NAME")]
-    system: Option<String>,
+    #[command(flatten)]
+    builtin: BuiltinArg,
     /// The largest degree of the polynomials in the generators.
     #[arg(long, allow_negative_numbers = true,
           value_name = "D", default_value_t = 2,
@@ -107,13 +106,13 @@ impl ClosureArgs {
 /// Computes the closure and prints it.
 pub fn run(job: &ClosureJob) -> anyhow::Result<bool> {
     let a = &job.args;
-    let (file, names) = match &a.system {
+    let (file, names) = match &a.builtin.system {
         Some(_) => (None, &a.args[..]),
         None => (Some(PathBuf::from(&a.args[0])), &a.args[1..]),
     };
     let subject = Subject::open(
         file.as_ref(),
-        a.system.as_deref(),
+        a.builtin.system.as_deref(),
         true,
         &a.limits.settings(),
     )?;

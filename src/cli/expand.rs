@@ -2,7 +2,7 @@
 
 use anyhow::bail;
 
-use super::input::SystemGiven;
+use super::input::{BuiltinArg, SystemGiven};
 use clap::Args;
 use superint::render::render;
 use superint::system_file::{expand_report, LimitsOverride};
@@ -32,10 +32,8 @@ pub struct ExpandArgs {
     /// the expressions; with --system, only the expressions.
     #[arg(value_name = "FILE EXPRS", required = true, num_args = 1..)]
     args: Vec<String>,
-    /// A built-in system instead of a file: harmonic, gravity, anisotropic-3-5,
-    /// anisotropic-1-2, planar-i, planar-ii.
-    #[arg(long, value_name = "NAME")]
-    system: Option<String>,
+    #[command(flatten)]
+    builtin: BuiltinArg,
     /// Substitute after expanding, such as 'p_theta = I*omega' (several separated by commas).
     #[arg(long, value_name = "CONDITION")]
     when: Option<String>,
@@ -55,7 +53,7 @@ pub struct ExpandJob {
 
 impl ExpandArgs {
     pub fn job(self, output: Output) -> ExpandJob {
-        let (system, expressions) = SystemGiven::split(self.system, self.args);
+        let (system, expressions) = SystemGiven::split(self.builtin.system, self.args);
         ExpandJob {
             system,
             expressions,

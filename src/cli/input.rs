@@ -53,6 +53,16 @@ fn load_file(path: &Path, limits: &LimitsOverride) -> Result<LoadedSystem, FileE
     }
 }
 
+/// `--system NAME`, a built-in system in place of the system file that begins the positional
+/// arguments of `bracket`, `expand`, `table`, `rank` and `closure` ([`SystemGiven::split`]).
+#[derive(Debug, clap::Args)]
+pub struct BuiltinArg {
+    /// A built-in system instead of a file: harmonic, gravity, anisotropic-3-5,
+    /// anisotropic-1-2, planar-i, planar-ii.
+    #[arg(long, value_name = "NAME")]
+    pub system: Option<String>,
+}
+
 /// The system a command on expressions of a system (`bracket`, `expand`, `table`, `rank`) is
 /// given: a system file, its first positional argument, or a built-in system by
 /// `--system NAME`, all its positional arguments then its own (as `closure` reads them).

@@ -2,7 +2,7 @@
 
 use anyhow::bail;
 
-use super::input::SystemGiven;
+use super::input::{BuiltinArg, SystemGiven};
 use clap::Args;
 use superint::render::render;
 use superint::system_file::{rank_report_when, LimitsOverride};
@@ -35,10 +35,8 @@ pub struct RankArgs {
     /// functions.
     #[arg(value_name = "FILE NAMES", required = true, num_args = 1..)]
     args: Vec<String>,
-    /// A built-in system instead of a file: harmonic, gravity, anisotropic-3-5,
-    /// anisotropic-1-2, planar-i, planar-ii.
-    #[arg(long, value_name = "NAME")]
-    system: Option<String>,
+    #[command(flatten)]
+    builtin: BuiltinArg,
     /// Claim that the rank is R: exit status 1 if it is not.
     #[arg(long, allow_negative_numbers = true, value_name = "R",
           value_parser = super::Quoting(super::a_rank))]
@@ -65,7 +63,7 @@ pub struct RankJob {
 
 impl RankArgs {
     pub fn job(self, output: Output) -> RankJob {
-        let (system, functions) = SystemGiven::split(self.system, self.args);
+        let (system, functions) = SystemGiven::split(self.builtin.system, self.args);
         RankJob {
             system,
             functions,

@@ -1,6 +1,6 @@
 //! `superint table FILE [NAMES...]`: the bracket table of named functions.
 
-use super::input::SystemGiven;
+use super::input::{BuiltinArg, SystemGiven};
 use anyhow::bail;
 use clap::Args;
 use superint::render::render;
@@ -32,10 +32,8 @@ pub struct TableArgs {
     /// the file but H if none; with --system, only the names.
     #[arg(value_name = "FILE NAMES", required_unless_present = "system", num_args = 0..)]
     args: Vec<String>,
-    /// A built-in system instead of a file: harmonic, gravity, anisotropic-3-5,
-    /// anisotropic-1-2, planar-i, planar-ii.
-    #[arg(long, value_name = "NAME")]
-    system: Option<String>,
+    #[command(flatten)]
+    builtin: BuiltinArg,
     #[command(flatten)]
     limits: LimitsArgs,
 }
@@ -51,7 +49,7 @@ pub struct TableJob {
 
 impl TableArgs {
     pub fn job(self, output: Output) -> TableJob {
-        let (system, names) = SystemGiven::split(self.system, self.args);
+        let (system, names) = SystemGiven::split(self.builtin.system, self.args);
         TableJob {
             system,
             names,
