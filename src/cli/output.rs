@@ -126,8 +126,9 @@ pub fn error_line(message: &str) {
 }
 
 /// An error and its causes in one message, `context: error: cause`, leaving out a cause that
-/// the text before it already says (a parse error is the source of the engine's error that
-/// renders it with its line and caret).
+/// the text before it already says (a context that quotes its cause). An error of the
+/// library says a cause in its message or returns it as its source, never both: the engine's
+/// error that renders a parse error with its line and caret has no source.
 pub fn error_message(error: &anyhow::Error) -> String {
     let mut message = String::new();
     for cause in error.chain() {
@@ -145,8 +146,9 @@ pub fn error_message(error: &anyhow::Error) -> String {
 mod tests {
     use super::*;
 
-    /// A cause is said once: the engine's rendering of a parse error already says the parse
-    /// error that is its source; a context and a cause that says something new are chained.
+    /// A cause is said once: the engine's rendering of a parse error, which says the parse
+    /// error and so has no source, follows its context alone; a context and a cause that
+    /// says something new are chained.
     #[test]
     fn a_cause_already_said_is_not_repeated() {
         let parse = trigpoly::ParseError::new(trigpoly::Span::new(4, 5), "unknown name 'q'");
@@ -156,7 +158,7 @@ mod tests {
             error_message(&error),
             format!("computing the closure: {engine}")
         );
-        assert_eq!(error.chain().count(), 3);
+        assert_eq!(error.chain().count(), 2);
         let error = anyhow::anyhow!("cannot read the file").context("systems/x.toml");
         assert_eq!(
             error_message(&error),

@@ -1425,3 +1425,52 @@ fn a_paper_claim_of_kind_rank_is_refused_before_its_sides_are_computed() {
     };
     assert!(matches!(identity.check(), Err(EngineError::Algebra(_))));
 }
+
+/// Every message of an error's chain, as a report that walks the sources prints it (anyhow's
+/// `{:#}`, eyre's reports): the error's, then each source's, joined by `: `.
+fn chain(error: &dyn std::error::Error) -> String {
+    let mut said = vec![error.to_string()];
+    let mut cause = error.source();
+    while let Some(e) = cause {
+        said.push(e.to_string());
+        cause = e.source();
+    }
+    said.join(": ")
+}
+
+/// An error that says its cause in its message does not return it as its source too, so
+/// that a report that walks the sources says each message once: the engine's parse error of
+/// a system's expression (made by a parse, by `EngineError::parse`, named by its part, and
+/// through the transparent errors that wrap an engine error), and a Gaussian rational's.
+#[test]
+fn walking_an_errors_chain_says_each_message_once() {
+    let rotor = systems::harmonic_rotor();
+    let unknown = "unknown name 'q'";
+    let parse = trigpoly::ParseError::new(trigpoly::Span::new(4, 5), unknown);
+    let engine = [
+        rotor.parse("{L, q}").unwrap_err(),
+        EngineError::parse("x + q", parse.clone()),
+        EngineError::from(parse.clone()),
+        EngineError::parse("x + q", parse).in_part("its Hamiltonian"),
+    ];
+    for error in engine {
+        assert_eq!(
+            chain(&error).matches(unknown).count(),
+            1,
+            "{}",
+            chain(&error)
+        );
+        let workload = superint::workloads::WorkloadError::from(error.clone());
+        assert_eq!(chain(&workload).matches(unknown).count(), 1);
+        let trajectory = superint::trajectory::TrajectoryError::from(error);
+        assert_eq!(chain(&trajectory).matches(unknown).count(), 1);
+    }
+    let gaussian = "1 + 2j".parse::<GaussianRational>().unwrap_err();
+    let message = gaussian.reason().message();
+    assert_eq!(
+        chain(&gaussian).matches(message).count(),
+        1,
+        "{}",
+        chain(&gaussian)
+    );
+}

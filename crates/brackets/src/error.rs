@@ -9,16 +9,17 @@ pub enum EngineError {
     /// An algebraic operation failed (a limit, a division by a non-monomial, ...).
     #[error(transparent)]
     Algebra(#[from] AlgebraError),
-    /// An expression did not parse; the message carries line and column, and the parse error
-    /// is its [`source`](std::error::Error::source).
+    /// An expression did not parse; the message carries line and column and says the parse
+    /// error, which is kept in `error` and is not its
+    /// [`source`](std::error::Error::source): the message already says it, so that a report
+    /// that walks the sources (anyhow's `{:#}`) would say it twice.
     #[error("{}", .message)]
     Parse {
         /// The source text.
         source_text: String,
         /// The rendered message with line, column and caret.
         message: String,
-        /// The parse error.
-        #[source]
+        /// The parse error, which the message says.
         error: ParseError,
     },
     /// The expansions of a closure's products of the generators, up to its degree, whose
@@ -143,7 +144,8 @@ impl EngineError {
             } if !source_text.is_empty() => EngineError::Parse {
                 message: error.render_as(&source_text, what),
                 source_text,
-                // Without its source, so that as the cause it says no line and column either.
+                // Without its source, so that the parse error kept says no line and column
+                // either.
                 error: error.without_source(),
             },
             other => other,
@@ -166,17 +168,23 @@ mod tests {
 
     use super::*;
 
-    /// A wrapped error is the source of the one that wraps it: a parse error of either
-    /// construction, and through an algebra error nothing more (it wraps none).
+    /// A parse error is said by the message of the error that wraps it, so it is not also
+    /// its source, and is kept in the variant: of either construction, and of one named by
+    /// its part; an algebra error, shown as itself, wraps none either.
     #[test]
-    fn a_wrapped_error_is_the_source() {
+    fn a_parse_error_is_said_by_the_message_not_as_the_source() {
         let error = ParseError::new(trigpoly::Span::new(2, 3), "unknown name 'q'");
         for wrapped in [
             EngineError::parse("x + q", error.clone()),
             error.clone().into(),
+            EngineError::parse("x + q", error.clone()).in_part("its Hamiltonian"),
         ] {
-            let source = wrapped.source().expect("a parse error has its source");
-            assert_eq!(source.downcast_ref::<ParseError>(), Some(&error));
+            assert!(wrapped.source().is_none(), "{wrapped}");
+            assert_eq!(wrapped.to_string().matches("unknown name 'q'").count(), 1);
+            let EngineError::Parse { error: kept, .. } = &wrapped else {
+                panic!("not a parse error: {wrapped:?}");
+            };
+            assert_eq!(kept.message(), error.message());
         }
         let algebra = EngineError::from(AlgebraError::DivisionByZero);
         assert!(algebra.source().is_none());
