@@ -203,11 +203,31 @@ impl From<Rational> for GaussianRational {
     }
 }
 
-impl From<i64> for GaussianRational {
-    fn from(v: i64) -> Self {
-        GaussianRational::from(Rational::from(v))
-    }
+/// `From` for primitive integers, each a real Gaussian rational as [`Rational`] makes it.
+macro_rules! from_integers {
+    ($($(#[$doc:meta])* $t:ty),*) => {$(
+        $(#[$doc])*
+        impl From<$t> for GaussianRational {
+            fn from(v: $t) -> Self {
+                GaussianRational::from(Rational::from(v))
+            }
+        }
+    )*};
 }
+
+from_integers!(
+    /// An integer, real, of any primitive type as [`Rational`] takes it (an unsuffixed literal
+    /// is an `i32`).
+    ///
+    /// ```
+    /// use trigpoly::{GaussianRational, Rational};
+    ///
+    /// assert_eq!(GaussianRational::from(3), GaussianRational::from(Rational::from(3)));
+    /// assert_eq!(GaussianRational::from(3u8).to_string(), "3");
+    /// assert_eq!(GaussianRational::from(u128::MAX).to_string(), u128::MAX.to_string());
+    /// ```
+    i32, i8, i16, i64, i128, isize, u8, u16, u32, u64, u128, usize
+);
 
 impl fmt::Display for GaussianRational {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {

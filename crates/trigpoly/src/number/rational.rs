@@ -539,6 +539,53 @@ impl From<i64> for Rational {
     }
 }
 
+/// `From` for the primitive integers that an `i64` holds, by way of it.
+macro_rules! from_via_i64 {
+    ($($t:ty),*) => {$(
+        impl From<$t> for Rational {
+            fn from(v: $t) -> Self {
+                Rational::from(i64::from(v))
+            }
+        }
+    )*};
+}
+
+/// `From` for the primitive integers that may pass an `i64`, by way of an `i128`.
+macro_rules! from_via_i128 {
+    ($($t:ty),*) => {$(
+        impl From<$t> for Rational {
+            fn from(v: $t) -> Self {
+                Rational::from(Integer::from_i128(v as i128))
+            }
+        }
+    )*};
+}
+
+from_via_i64!(i8, i16, i32, u8, u16, u32);
+from_via_i128!(isize, usize, u64, i128);
+
+/// A `u128`, exact past an `i128`: a `Rational` is made from an integer of any primitive type,
+/// as num-bigint's `BigInt` is (an unsuffixed literal is an `i32`), each exactly.
+///
+/// ```
+/// use trigpoly::Rational;
+///
+/// assert_eq!(Rational::from(3), Rational::new(3, 1));
+/// assert_eq!(Rational::from(3u8) + Rational::from(-4i16), Rational::from(-1));
+/// assert_eq!(Rational::from(7usize), Rational::from(7i64));
+/// assert_eq!(Rational::from(u64::MAX).to_string(), "18446744073709551615");
+/// assert_eq!(Rational::from(u128::MAX).to_string(), u128::MAX.to_string());
+/// assert_eq!(Rational::from(i128::MIN).to_string(), i128::MIN.to_string());
+/// ```
+impl From<u128> for Rational {
+    fn from(v: u128) -> Self {
+        match i128::try_from(v) {
+            Ok(v) => Rational::from(v),
+            Err(_) => Rational::from(Integer::from(BigInt::from(v))),
+        }
+    }
+}
+
 impl fmt::Display for Rational {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         match &self.0 {
