@@ -39,6 +39,34 @@ pub use brackets;
 pub use serde_json;
 pub use trigpoly;
 
+/// The `ALL` and `name()` of a fieldless enum, `$ty`, from one list of its variants with their
+/// names, each with its doc: `name`'s match must cover every variant, so that a variant left
+/// out of the list, and so out of `ALL`, does not compile (the order of `ALL` is the list's,
+/// which a test holds to the declaration's). [`report::Expect`] and
+/// [`system_file::ErrorKind`] are named so.
+macro_rules! variants_with_names {
+    (
+        $ty:ident;
+        $(#[$all_doc:meta])*
+        ALL;
+        $(#[$name_doc:meta])*
+        name;
+        $($variant:ident => $name:literal,)*
+    ) => {
+        impl $ty {
+            $(#[$all_doc])*
+            pub const ALL: [$ty; [$($name),*].len()] = [$($ty::$variant),*];
+
+            $(#[$name_doc])*
+            pub fn name(self) -> &'static str {
+                match self {
+                    $($ty::$variant => $name,)*
+                }
+            }
+        }
+    };
+}
+
 #[cfg(feature = "cli")]
 pub mod allocator;
 pub mod discovery;

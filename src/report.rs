@@ -68,17 +68,15 @@ pub enum Expect {
     Refuted,
 }
 
-impl Expect {
+// ALL and name() from one list, by the crate's variants_with_names (lib.rs).
+variants_with_names! {
+    Expect;
     /// Both expectations.
-    pub const ALL: [Expect; 2] = [Expect::Proved, Expect::Refuted];
-
+    ALL;
     /// `proved` or `refuted`.
-    pub fn name(self) -> &'static str {
-        match self {
-            Expect::Proved => "proved",
-            Expect::Refuted => "refuted",
-        }
-    }
+    name;
+    Proved => "proved",
+    Refuted => "refuted",
 }
 
 /// Its [`Expect::name`], as a file writes it (`expect = "refuted"`).
@@ -845,5 +843,20 @@ fn seconds_in_parentheses(seconds: f64, timings: bool) -> String {
         format!(" ({seconds:.2} s)")
     } else {
         String::new()
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// `ALL` has every expectation once, in the order they are declared (its list is
+    /// `name`'s, whose match covers every one), and each reads back from its name.
+    #[test]
+    fn every_expectation_is_listed_in_order_and_reads_back_from_its_name() {
+        for (i, expect) in Expect::ALL.into_iter().enumerate() {
+            assert_eq!(expect as usize, i, "{expect:?}");
+            assert_eq!(expect.name().parse(), Ok(expect));
+        }
     }
 }

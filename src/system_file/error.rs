@@ -42,26 +42,13 @@ pub enum ErrorKind {
     Engine,
 }
 
-/// [`ErrorKind::ALL`] and [`ErrorKind::name`] from one list of the kinds with their names:
-/// `name`'s match must cover every kind, so that a kind left out of the list, and so out of
-/// `ALL`, does not compile.
-macro_rules! kinds_with_names {
-    ($($kind:ident => $name:literal,)*) => {
-        impl ErrorKind {
-            /// Every kind, in the order they are declared.
-            pub const ALL: [ErrorKind; [$($name),*].len()] = [$(ErrorKind::$kind),*];
-
-            /// The kind as one lowercase word, as JSON reports it (`limit`, `expression`).
-            pub fn name(self) -> &'static str {
-                match self {
-                    $(ErrorKind::$kind => $name,)*
-                }
-            }
-        }
-    };
-}
-
-kinds_with_names! {
+// ALL and name() from one list, by the crate's variants_with_names (lib.rs).
+variants_with_names! {
+    ErrorKind;
+    /// Every kind, in the order they are declared.
+    ALL;
+    /// The kind as one lowercase word, as JSON reports it (`limit`, `expression`).
+    name;
     Io => "io",
     Empty => "empty",
     NotText => "not_text",

@@ -37,18 +37,29 @@ pub enum Style {
     Ascii,
 }
 
-impl Style {
-    /// Every notation.
-    pub const ALL: [Style; 3] = [Style::Unicode, Style::Latex, Style::Ascii];
+/// [`Style::ALL`] and [`Style::name`] from one list of the notations with their names, as
+/// superint's `ErrorKind` and `Expect` are made: `name`'s match must cover every notation, so
+/// that one left out of the list, and so out of `ALL`, does not compile.
+macro_rules! styles_with_names {
+    ($($style:ident => $name:literal,)*) => {
+        impl Style {
+            /// Every notation, in the order they are declared.
+            pub const ALL: [Style; [$($name),*].len()] = [$(Style::$style),*];
 
-    /// The notation's name: `unicode`, `latex` or `ascii`.
-    pub fn name(self) -> &'static str {
-        match self {
-            Style::Unicode => "unicode",
-            Style::Latex => "latex",
-            Style::Ascii => "ascii",
+            /// The notation's name: `unicode`, `latex` or `ascii`.
+            pub fn name(self) -> &'static str {
+                match self {
+                    $(Style::$style => $name,)*
+                }
+            }
         }
-    }
+    };
+}
+
+styles_with_names! {
+    Unicode => "unicode",
+    Latex => "latex",
+    Ascii => "ascii",
 }
 
 /// The notation's [`Style::name`].
@@ -838,4 +849,19 @@ fn render_term_free(q: &Rational, style: Style) -> (bool, String) {
         _ => abs.to_string(),
     };
     (q.is_negative(), text)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// `ALL` has every notation once, in the order they are declared (its list is `name`'s,
+    /// whose match covers every notation), and each reads back from its name.
+    #[test]
+    fn every_style_is_listed_in_order_and_reads_back_from_its_name() {
+        for (i, style) in Style::ALL.into_iter().enumerate() {
+            assert_eq!(style as usize, i, "{style:?}");
+            assert_eq!(style.name().parse(), Ok(style));
+        }
+    }
 }
