@@ -266,11 +266,19 @@ fn close(a: &ClosureArgs, names: &[String], subject: &Subject) -> anyhow::Result
                 true => "…",
                 false => name,
             };
-            bail!(
-                "{} is an expression, not the name of a function: name it with --define \
-                 (--define '{free}={example}', then {free} among the generators)",
-                trigpoly::quoted_name(name)
+            // Refused as a whole, the caret under all of it, as a name given twice is.
+            let error = FileError::at(
+                ErrorKind::Expression,
+                COMMAND_LINE,
+                name,
+                trimmed(0, name).1,
+                format!(
+                    "{} is an expression, not the name of a function: name it with --define \
+                     (--define '{free}={example}', then {free} among the generators)",
+                    trigpoly::quoted_name(name)
+                ),
             );
+            bail!(error.to_string());
         }
         // The parse error first, with its place: its excerpt shows the generator, which the
         // message put before the place and the error (`'Foo': <command line>:1:1: unknown name

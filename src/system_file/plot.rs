@@ -290,9 +290,12 @@ impl LoadedSystem {
             }
         }
         if !missing.is_empty() {
-            return Err(FileError::new(
+            // Refused as a whole, the caret under all of --from.
+            let whole = Text::whole(&source);
+            return Err(whole.error(
+                &source,
                 ErrorKind::Condition,
-                COMMAND_LINE,
+                whole.trimmed_span(),
                 format!(
                     "--from gives no value for {}: every {} needs one",
                     missing.join(", "),

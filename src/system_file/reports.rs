@@ -737,9 +737,13 @@ fn not_a_function(file: &LoadedSystem, name: &str, defined: &[String]) -> FileEr
             format!("{quoted} is not a function of {of}{meant}")
         }
     };
-    FileError::new(
+    // Refused as a whole, the caret under all of it, as a name given twice is.
+    let source = file.given("<expression>", name);
+    let text = Text::whole(&source);
+    text.error(
+        &source,
         ErrorKind::Expression,
-        &file.given("<expression>", "").origin,
+        text.trimmed_span(),
         format!("{what} (known: {})", known.join(", ")),
     )
 }

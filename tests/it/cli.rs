@@ -1800,8 +1800,9 @@ fn cli_table_takes_phase_variables() {
         assert_eq!(
             stderr(&o),
             format!(
-                "superint: error: <command line>: {}\n",
-                message.replace("FILE", free)
+                "superint: error: <command line>:1:1: {}\n 1 | {name}\n   | {}\n",
+                message.replace("FILE", free),
+                "^".repeat(name.len())
             )
         );
     }
@@ -5594,4 +5595,63 @@ fn an_alias_or_help_after_the_double_dash_is_told_to_go_before_it() {
         "{}",
         stderr(&o)
     );
+}
+
+/// A command-line argument refused as a whole, rather than at one of its characters, is
+/// placed as a refusal at one character is, `<command line>:1:C:` with the argument and a
+/// caret under all of it: a name that is no function of a table's file, an expression given
+/// to closure as a generator, and a `--from` that leaves a variable without its value were
+/// said with no place (`<command line>: 'z' is not a function of …`).
+#[test]
+fn an_argument_refused_as_a_whole_is_underlined_whole() {
+    let rotor = "systems/harmonic-rotor.toml";
+    let out = scratch_file("whole.svg");
+    let from = "x = 1, y = 0, p_x = 0, p_y = 1";
+    for (args, message, excerpt, caret) in [
+        (
+            vec!["table", rotor, "L", "zz"],
+            "<command line>:1:1: 'zz' is not a function of systems/harmonic-rotor.toml",
+            "zz",
+            "^^",
+        ),
+        (
+            vec!["table", "--system", "harmonic", "L+H"],
+            "<command line>:1:1: 'L+H' is not a function of --system harmonic",
+            "L+H",
+            "^^^",
+        ),
+        (
+            vec!["closure", rotor, "L", "2*L", "--degree", "2"],
+            "<command line>:1:1: '2*L' is an expression, not the name of a function",
+            "2*L",
+            "^^^",
+        ),
+        (
+            vec![
+                "plot",
+                rotor,
+                "L",
+                "--at",
+                "M = 1, omega = 1, I = 1",
+                "--time",
+                "1",
+                "-o",
+                out.to_str().unwrap(),
+                "--from",
+                from,
+            ],
+            "<command line>:1:1: --from gives no value for θ, p_θ",
+            from,
+            "^^^^^^^^^^^^^^^^^^^^^^^^^^^^^^",
+        ),
+    ] {
+        let err = stderr(&superint_exits(&args, 2));
+        let lines: Vec<&str> = err.lines().collect();
+        assert!(
+            lines[0].starts_with(&format!("superint: error: {message}")),
+            "{args:?}: {err}"
+        );
+        assert_eq!(lines[1], format!(" 1 | {excerpt}"), "{args:?}: {err}");
+        assert_eq!(lines[2], format!("   | {caret}"), "{args:?}: {err}");
+    }
 }

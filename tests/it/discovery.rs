@@ -2039,14 +2039,14 @@ fn closure_sends_an_expression_generator_to_define() {
         (
             "systems/harmonic-rotor.toml",
             "2*L",
-            "superint: error: '2*L' is an expression, not the name of a function: name it with \
-             --define (--define 'G=2*L', then G among the generators)\n",
+            "superint: error: <command line>:1:1: '2*L' is an expression, not the name of a function: name it with \
+             --define (--define 'G=2*L', then G among the generators)\n 1 | 2*L\n   | ^^^\n",
         ),
         (
             "systems/two-centres.toml",
             "L+G",
-            "superint: error: 'L+G' is an expression, not the name of a function: name it with \
-             --define (--define 'X=L+G', then X among the generators)\n",
+            "superint: error: <command line>:1:1: 'L+G' is an expression, not the name of a function: name it with \
+             --define (--define 'X=L+G', then X among the generators)\n 1 | L+G\n   | ^^^\n",
         ),
     ] {
         let args = ["closure", file, generator, "H"];

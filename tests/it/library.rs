@@ -1148,8 +1148,8 @@ fn report_errors_name_the_program_not_the_command_line() {
     let err = table_report(&rotor, &["A", "B"]).unwrap_err();
     assert_eq!(
         cli_words(&err),
-        "<expression>: 'B' is not a function of the own rotor (known: H, A, Omega, x, y, p_x, p_y, \
-         p_phi)"
+        "<expression>:1:1: 'B' is not a function of the own rotor (known: H, A, Omega, x, y, p_x, \
+         p_y, p_phi)\n 1 | B\n   | ^"
     );
     let vars = VarSet::builder()
         .coordinate("q")
@@ -1173,7 +1173,7 @@ fn report_errors_name_the_program_not_the_command_line() {
     let err = table_report(&cli, &["nope"]).unwrap_err();
     assert!(err
         .to_string()
-        .starts_with("<command line>: 'nope' is not a function of "));
+        .starts_with("<command line>:1:1: 'nope' is not a function of "));
     let err = bracket_report(&cli, "L", "H", Some("p_theta = ")).unwrap_err();
     assert_eq!(err.origin, "<command line>");
     let on_phase_space = cli.condition("p_theta = I*omega").unwrap();
