@@ -234,14 +234,30 @@ impl Cli {
 }
 
 /// Parses the arguments and runs the job; usage errors print clap's message and give exit 2
-/// (`--help` and `--version` give 0).
+/// (`--help` and `--version` give 0), but for an option after `--`, said so whether clap
+/// read it as an expression or refused it ([`option_after_double_dash`]).
 pub fn run<I, T>(args: I) -> anyhow::Result<ExitCode>
 where
     I: IntoIterator<Item = T>,
     T: Into<OsString> + Clone,
 {
     let args: Vec<OsString> = args.into_iter().map(Into::into).collect();
-    let cli = match Cli::try_parse_from(&args) {
+    let parsed = Cli::try_parse_from(&args);
+    // Said whether clap read the arguments or refused them: an option after `--` that makes
+    // them too many (`bracket FILE -- L H --no-timings`) was refused with clap's bare
+    // "unexpected argument '--no-timings' found". `--help` and `--version` are not refusals.
+    if parsed
+        .as_ref()
+        .map_or_else(clap::Error::use_stderr, |_| true)
+    {
+        if let Some(option) = option_after_double_dash(&args) {
+            anyhow::bail!(
+                "'{option}' follows '--', after which every word is read as an expression; \
+                 put the options before '--'"
+            );
+        }
+    }
+    let cli = match parsed {
         Ok(cli) => cli,
         Err(e) => {
             // clap exits 2 for usage errors and 0 for --help/--version; keep exactly that.
@@ -254,12 +270,6 @@ where
             return Ok(ExitCode::from(code));
         }
     };
-    if let Some(option) = option_after_double_dash(&args) {
-        anyhow::bail!(
-            "'{option}' follows '--', after which every word is read as an expression; put \
-             the options before '--'"
-        );
-    }
     let all_proved = match cli.job() {
         Job::Paper(job) => paper::run(&job)?,
         Job::Tower(job) => tower::run(&job)?,

@@ -5597,6 +5597,63 @@ fn an_alias_or_help_after_the_double_dash_is_told_to_go_before_it() {
     );
 }
 
+/// `bracket` takes two expressions, so that an option after the `--` before them (`bracket
+/// FILE -- L H --no-timings`) made the arguments too many, and clap refused it with its bare
+/// "unexpected argument '--no-timings' found"; it is now said to stand after `--`, as
+/// `expand`'s is. Expressions after `--` that begin with a minus sign are still expressions.
+#[test]
+fn an_option_after_the_double_dash_of_bracket_is_told_to_go_before_it() {
+    let rotor = "systems/harmonic-rotor.toml";
+    for (args, option) in [
+        (
+            vec!["bracket", rotor, "--", "L", "H", "--no-timings"],
+            "--no-timings",
+        ),
+        (
+            vec![
+                "bracket",
+                rotor,
+                "L",
+                "--",
+                "H",
+                "--when",
+                "p_theta = I*omega",
+            ],
+            "--when",
+        ),
+        (
+            vec![
+                "bracket",
+                "--system",
+                "harmonic",
+                "--",
+                "L",
+                "H",
+                "--format=json",
+            ],
+            "--format=json",
+        ),
+    ] {
+        stops_with_the_option_after_the_double_dash(&args, option);
+    }
+    for args in [
+        vec!["bracket", "--no-timings", rotor, "--", "-L", "H"],
+        vec!["bracket", "--no-timings", rotor, "-L", "--", "-H"],
+        vec![
+            "bracket",
+            "--no-timings",
+            "--system",
+            "harmonic",
+            "--",
+            "-L",
+            "H",
+        ],
+    ] {
+        let out = run(&args, 0);
+        assert!(out.contains("= 0"), "{args:?}: {out}");
+    }
+}
+
 /// A command-line argument refused as a whole, rather than at one of its characters, is
 /// placed as a refusal at one character is, `<command line>:1:C:` with the argument and a
 /// caret under all of it: a name that is no function of a table's file, an expression given
