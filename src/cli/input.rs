@@ -5,7 +5,9 @@ use std::path::{Path, PathBuf};
 use std::sync::OnceLock;
 
 use super::search::{identifier, Subject};
+use anyhow::Context;
 use brackets::NamedFunction;
+use superint::discovery::define_builtin_resonant;
 use superint::system_file::{
     load, load_bytes, read_bytes, Caller, ErrorKind, FileError, LimitsOverride, LoadedSystem,
 };
@@ -108,15 +110,24 @@ impl SystemGiven {
                 file.display()
             );
         }
-        let resonant = Subject::open(None, Some(name), true, limits)?;
+        // Built once, its resonant functions added to a copy.
         let plain = Subject::open(None, Some(name), false, limits)?;
+        let mut resonant = plain.system().clone();
+        define_builtin_resonant(name, &mut resonant)
+            .with_context(|| format!("the built-in system {name} does not fit the limits given"))?;
         let added = |f: &&NamedFunction| plain.system().function(&f.name).is_none();
-        let named = resonant.system().functions().iter().filter(added).any(|f| {
+        let named = resonant.functions().iter().filter(added).any(|f| {
             let forms = [f.name.clone(), identifier(&f.display), f.display.clone()];
             let mut texts = texts.iter().map(String::as_str).chain(when);
             texts.any(|t| forms.iter().any(|form| mentions(t, form)))
         });
-        Ok(if named { resonant } else { plain }.into_loaded(name))
+        let subject = match plain {
+            Subject::Builtin(display, _, noted) if named => {
+                Subject::Builtin(display, Box::new(resonant), noted)
+            }
+            plain => plain,
+        };
+        Ok(subject.into_loaded(name))
     }
 
     /// How a message names the system: the file as given, or `--system NAME`.

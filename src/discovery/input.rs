@@ -50,23 +50,17 @@ pub fn builtin_system(
     limits: Limits,
 ) -> Result<Option<(String, System)>, EngineError> {
     use brackets::systems::Rotor;
-    let s = match name {
+    let mut s = match name {
         "harmonic" => {
             let mut s = Rotor::Harmonic.system(limits)?;
             s.define_builtin("W", "W", "p_x - i*p_y + i*M*omega*(x - i*y)")?;
             s.define_builtin("Hp", "Hp", "F1 - F2")?;
-            if resonant {
-                define_resonant(&mut s, "Z", "W", "")?;
-            }
             ("harmonic rotor".to_string(), s)
         }
         "gravity" => {
             let mut s = Rotor::Gravity.system(limits)?;
             s.define_builtin("Wp", "W'", "p_x - i*p_y + i*M*omega*(x - i*yp)")?;
             s.define_builtin("Hp", "Hp", "F1 - F2")?;
-            if resonant {
-                define_resonant(&mut s, "Zp", "Wp", "'")?;
-            }
             ("rotor under gravity".to_string(), s)
         }
         "anisotropic-3-5" => (
@@ -81,7 +75,22 @@ pub fn builtin_system(
         "planar-ii" => ("rotor with V_II".into(), Rotor::PlanarII.system(limits)?),
         _ => return Ok(None),
     };
+    if resonant {
+        define_builtin_resonant(name, &mut s.1)?;
+    }
     Ok(Some(s))
+}
+
+/// Defines in `s`, the built-in system `name` as [`builtin_system`] gives it without
+/// `resonant`, the resonant functions it gives with `resonant`: `P11`, … `S33` for the
+/// harmonic rotor and the rotor under gravity, none for another. A caller that wants the
+/// system both with them and without adds them to a copy, rather than building it twice.
+pub fn define_builtin_resonant(name: &str, s: &mut System) -> Result<(), EngineError> {
+    match name {
+        "harmonic" => define_resonant(s, "Z", "W", ""),
+        "gravity" => define_resonant(s, "Zp", "Wp", "'"),
+        _ => Ok(()),
+    }
 }
 
 /// Reads a condition `var = value[, var = value]` (such as `p_theta = 2*I*omega/3`), values

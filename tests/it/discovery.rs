@@ -6171,3 +6171,26 @@ fn a_closure_takes_the_files_limits() {
     ]);
     assert!(err.contains("past the limit of 1200"), "{err}");
 }
+
+/// `--system NAME` of bracket, expand, table, rank and closure built the built-in system twice,
+/// with its resonant functions `P11`, … and without, to keep them only where the command names
+/// one; it now builds it once and adds them to a copy (`define_builtin_resonant`), which must
+/// give the system built with them: the same functions, in the same order, shown alike. The
+/// command line's output is the same (bracket_expand_table_and_rank_take_a_built_in_system).
+#[test]
+fn a_built_in_systems_resonant_functions_added_to_a_copy_are_those_it_is_built_with() {
+    use superint::discovery::{builtin_system, define_builtin_resonant, BUILTIN_SYSTEMS};
+    let limits = LimitsOverride::default().or_defaults();
+    for name in BUILTIN_SYSTEMS {
+        let (_, with) = builtin_system(name, true, limits).unwrap().unwrap();
+        let (_, mut added) = builtin_system(name, false, limits).unwrap().unwrap();
+        let plain = added.functions().len();
+        define_builtin_resonant(name, &mut added).unwrap();
+        assert_eq!(added.functions(), with.functions(), "{name}");
+        let resonant = ["harmonic", "gravity"].contains(&name);
+        assert_eq!(
+            added.functions().len() - plain,
+            if resonant { 36 } else { 0 }
+        );
+    }
+}
