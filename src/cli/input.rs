@@ -70,8 +70,8 @@ pub struct BuiltinArg {
 /// `--system NAME`, all its positional arguments then its own (as `closure` reads them).
 #[derive(Debug)]
 pub struct SystemGiven {
-    /// The system file; with `--system`, a first positional argument that names a file (`-`,
-    /// a `.toml` or an existing file), to be refused.
+    /// The system file; with `--system`, a first positional argument written as a file is
+    /// (`-` or a name ending in `.toml`), to be refused.
     file: Option<PathBuf>,
     /// The built-in system's name.
     builtin: Option<String>,
@@ -79,10 +79,14 @@ pub struct SystemGiven {
 
 impl SystemGiven {
     /// The system `builtin` or the file the first of `positionals` names, and the rest of them.
+    /// With `builtin`, every positional is an expression but one written as a file is, `-` or a
+    /// name ending in `.toml`, kept to be refused: whether a file of that name exists is not
+    /// asked, so that an expression is not taken for a file in a directory that holds a file
+    /// named `L` or `H`.
     pub fn split(builtin: Option<String>, mut positionals: Vec<String>) -> (Self, Vec<String>) {
         let first_is_file = positionals.first().is_some_and(|p| match builtin {
             None => true,
-            Some(_) => p == "-" || p.ends_with(".toml") || Path::new(p).is_file(),
+            Some(_) => p == "-" || p.ends_with(".toml"),
         });
         let file = first_is_file.then(|| PathBuf::from(positionals.remove(0)));
         (SystemGiven { file, builtin }, positionals)

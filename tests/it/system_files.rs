@@ -5795,3 +5795,46 @@ fn a_sine_past_the_term_limit_is_a_limit_with_its_hint() {
         "{stderr}"
     );
 }
+
+/// With `--system NAME`, a first positional that named an existing file was taken for a system
+/// file and refused beside `--system`, so that in a directory holding a file named `L` or `G1`
+/// `bracket --system harmonic L H` said "the argument 'L' cannot be used with '--system
+/// harmonic'". Every positional is now an expression but `-` and a name ending in `.toml`,
+/// which are still refused as files.
+#[test]
+fn a_built_in_systems_expressions_are_not_taken_for_files_of_their_names() {
+    let dir = crate::scratch_text("names-as-files", "L", "")
+        .parent()
+        .expect("a directory")
+        .to_path_buf();
+    for name in ["H", "G1", "x.toml"] {
+        std::fs::write(dir.join(name), "").expect("the file is written");
+    }
+    let ok = |args: &[&str]| {
+        let o = superint_in(&dir, args);
+        assert_eq!(
+            o.status.code(),
+            Some(0),
+            "superint {args:?}: {}",
+            text(&o.stderr)
+        );
+        text(&o.stdout)
+    };
+    let h = "--system";
+    let out = ok(&["bracket", h, "harmonic", "L", "H", "--no-timings"]);
+    assert!(out.contains("{L, H} = 0"), "{out}");
+    let out = ok(&["bracket", h, "harmonic", "G1", "G2", "--no-timings"]);
+    assert!(out.contains("= −ω² L"), "{out}");
+    ok(&["expand", h, "harmonic", "G1", "--no-timings"]);
+    ok(&["table", h, "harmonic", "L", "G1", "--no-timings"]);
+    ok(&["rank", h, "harmonic", "L", "H", "--no-timings"]);
+    for file in ["x.toml", "-"] {
+        let o = superint_in(&dir, &["bracket", h, "harmonic", file, "H"]);
+        assert_eq!(o.status.code(), Some(2), "{file}");
+        assert!(
+            text(&o.stderr).contains(&format!("'{file}' cannot be used with '--system harmonic'")),
+            "{}",
+            text(&o.stderr)
+        );
+    }
+}
