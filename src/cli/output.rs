@@ -146,13 +146,17 @@ pub fn error_message(error: &anyhow::Error) -> String {
 mod tests {
     use super::*;
 
-    /// A cause is said once: the engine's rendering of a parse error, which says the parse
-    /// error and so has no source, follows its context alone; a context and a cause that
-    /// says something new are chained.
+    /// A cause is said once: one that its context quotes is left out; the engine's rendering
+    /// of a parse error, which says the parse error and so has no source, follows its context
+    /// alone; a context and a cause that says something new are chained.
     #[test]
     fn a_cause_already_said_is_not_repeated() {
         let parse = trigpoly::ParseError::new(trigpoly::Span::new(4, 5), "unknown name 'q'");
         let engine = brackets::EngineError::parse("x + q", parse);
+        let quoting = format!("computing the closure: {engine}");
+        let error = anyhow::Error::new(engine.clone()).context(quoting.clone());
+        assert_eq!(error.chain().count(), 2);
+        assert_eq!(error_message(&error), quoting);
         let error = anyhow::Error::new(engine.clone()).context("computing the closure");
         assert_eq!(
             error_message(&error),
