@@ -169,8 +169,9 @@ mod tests {
     use super::*;
 
     /// A parse error is said by the message of the error that wraps it, so it is not also
-    /// its source, and is kept in the variant: of either construction, and of one named by
-    /// its part; an algebra error, shown as itself, wraps none either.
+    /// its source, and is kept whole in the variant (its span and message, for a program to
+    /// read): of either construction, and of one named by its part; an algebra error, shown
+    /// as itself, wraps none either.
     #[test]
     fn a_parse_error_is_said_by_the_message_not_as_the_source() {
         let error = ParseError::new(trigpoly::Span::new(2, 3), "unknown name 'q'");
@@ -184,7 +185,10 @@ mod tests {
             let EngineError::Parse { error: kept, .. } = &wrapped else {
                 panic!("not a parse error: {wrapped:?}");
             };
-            assert_eq!(kept.message(), error.message());
+            assert_eq!(
+                kept, &error,
+                "the parse error, its span and message, is kept"
+            );
         }
         let algebra = EngineError::from(AlgebraError::DivisionByZero);
         assert!(algebra.source().is_none());
