@@ -265,9 +265,9 @@ impl fmt::Debug for GaussianRational {
 }
 
 /// Why a Gaussian rational did not parse: the text, and the expression syntax's error in it,
-/// with its place ([`ParseGaussianError::reason`], which its `Display` says and so is not its
-/// [`source`](std::error::Error::source)). What is neither a form `Display` writes nor a
-/// constant expression is refused with the reason the expression parser gives.
+/// with its place ([`ParseGaussianError::reason`], which this error's `Display` says, and so
+/// is not also its [`source`](std::error::Error::source)). What is neither a form `Display`
+/// writes nor a constant expression is refused with the reason the expression parser gives.
 ///
 /// ```
 /// use trigpoly::GaussianRational;
