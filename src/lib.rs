@@ -39,11 +39,11 @@ pub use brackets;
 pub use serde_json;
 pub use trigpoly;
 
-/// The `ALL` and `name()` of a fieldless enum, `$ty`, from one list of its variants with their
-/// names, each with its doc: `name`'s match must cover every variant, so that a variant left
-/// out of the list, and so out of `ALL`, does not compile (the order of `ALL` is the list's,
-/// which a test holds to the declaration's). [`report::Expect`] and
-/// [`system_file::ErrorKind`] are named so.
+/// The `ALL` and `name()` of a fieldless enum, `$ty`, each with the doc written before its
+/// word (`ALL;`, `name;`), from one list of the variants with their names: `name`'s match must
+/// cover every variant, so that a variant left out of the list, and so out of `ALL`, does not
+/// compile (the order of `ALL` is the list's, which a test holds to the declaration's).
+/// [`report::Expect`] and [`system_file::ErrorKind`] are named so.
 macro_rules! variants_with_names {
     (
         $ty:ident;
