@@ -455,6 +455,14 @@ const UNKNOWN_NAME_HINT_IN_CODE: &str = "a constant such as a mass is a paramete
     system's VarSet, a named function is added with LoadedSystem::add_function, a family with \
     LoadedSystem::add_family (used as K_2_3)";
 
+/// The hint that goes with an unknown name given on the command line to a system built in code
+/// (`--system harmonic`), whose user can add no name to it: the library's calls are no help
+/// there.
+const UNKNOWN_NAME_HINT_BUILT_IN: &str = "a built-in system knows only the names listed: write \
+    a function as an expression in them (closure names one with --define NAME=EXPR), or write \
+    a system file, which declares constants under [phase_space] parameters and functions with \
+    [[function]]; see docs/system-files.md";
+
 /// The hint for `unknown name 'p_1' (known: q1, p_q1, …)`, a momentum written in a name of
 /// its own: each momentum is named after its coordinate, `p_q1`. `None` when the unknown
 /// name is neither `p_…` nor `p` and digits (`phi` may be anything), or the system has no
@@ -544,8 +552,12 @@ pub(crate) fn expression_error(source: &Source, text: &Text, e: &ParseError) -> 
     if let Some(limit) = Limit::of_parse(e.cause()) {
         error(ErrorKind::Limit).with_hint(limit.hint())
     } else if let Some(unknown) = Unknown::of(e.cause()) {
+        // A built-in system's text from the command line is the program's too: its origin
+        // tells the two apart.
+        let command_line = source.origin == super::COMMAND_LINE;
         let hint = match (momentum_hint(&unknown), source.program) {
             (Some(hint), _) => hint,
+            (None, true) if command_line => UNKNOWN_NAME_HINT_BUILT_IN.into(),
             (None, true) => UNKNOWN_NAME_HINT_IN_CODE.into(),
             (None, false) => distance_hint(&unknown)
                 .or_else(|| bare_momentum_hint(&unknown))

@@ -2536,6 +2536,42 @@ fn cli_a_builtin_systems_condition_names_a_variable_written_in_latex() {
     }
 }
 
+/// An unknown name given on the command line to a built-in system is hinted at with what the
+/// command line can do, not with the library's calls: `rank --system harmonic L Foo` said that
+/// a named function is added with LoadedSystem::add_function, which no command-line user can
+/// call. A file's unknown name keeps the file's hint.
+#[test]
+fn cli_a_built_in_systems_unknown_name_is_hinted_at_for_the_command_line() {
+    for args in [
+        &["rank", "--system", "harmonic", "L", "Foo"][..],
+        &["bracket", "--system", "gravity", "L", "Foo"][..],
+        &["expand", "--system", "harmonic", "Foo"][..],
+    ] {
+        let o = superint(args);
+        assert_eq!(o.status.code(), Some(2), "{args:?}");
+        let err = stderr(&o);
+        let hint = err.lines().find(|l| l.starts_with("hint: "));
+        assert_eq!(
+            hint,
+            Some(
+                "hint: a built-in system knows only the names listed: write a function as an \
+                 expression in them (closure names one with --define NAME=EXPR), or write a \
+                 system file, which declares constants under [phase_space] parameters and \
+                 functions with [[function]]; see docs/system-files.md"
+            ),
+            "{args:?}: {err}"
+        );
+        assert!(!err.contains("LoadedSystem"), "{args:?}: {err}");
+    }
+    let o = superint(&["rank", "systems/harmonic-rotor.toml", "L", "Foo"]);
+    assert_eq!(o.status.code(), Some(2));
+    assert!(
+        stderr(&o).contains("hint: a constant such as a mass is declared under [phase_space]"),
+        "{}",
+        stderr(&o)
+    );
+}
+
 /// A blank function name given to a table or a closure is refused as a blank expression is,
 /// at its end of input: a table said '' is not a function, and a closure that '   ' is an
 /// expression, to be named with --define.
