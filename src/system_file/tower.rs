@@ -703,8 +703,7 @@ fn tower_families(file: &LoadedSystem, family: Option<&str>) -> Result<Vec<usize
     for (k, &(at, piece)) in pieces.iter().enumerate() {
         let (name, span) = trimmed(at, piece);
         // An empty name beside a comma is refused at the comma before it (after it for the
-        // first), as every other list's is; a lone empty name is no family's, as any other
-        // unknown one.
+        // first), as every other list's is.
         if let Some(missing) = crate::discovery::blank_beside_comma(
             &pieces,
             k,
@@ -719,6 +718,19 @@ fn tower_families(file: &LoadedSystem, family: Option<&str>) -> Result<Vec<usize
                 Some(format!(
                     "the list {} has an empty name: families are named separated by commas, \
                      such as K,Kbar",
+                    trigpoly::quoted_name(names)
+                )),
+            ));
+        }
+        // A lone blank name is said to be blank, where it ends, as a blank function name is.
+        if name.is_empty() {
+            return Err(family_list_refused(
+                file,
+                names,
+                span,
+                "expected the name of a family, found end of input".to_string(),
+                Some(format!(
+                    "the family's name {} is blank: name a family, such as K",
                     trigpoly::quoted_name(names)
                 )),
             ));

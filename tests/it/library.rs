@@ -1089,6 +1089,15 @@ fn messages_to_a_program_name_the_library() {
             true
         )
     );
+    // A blank name is said to be blank, not a family's name that no family has.
+    let err = family_tower_report(&file, Some("  "), 2, None).unwrap_err();
+    assert_eq!(
+        (err.message.as_str(), err.location.is_none()),
+        (
+            "the family's name '  ' is blank: name a family, such as K",
+            true
+        )
+    );
 }
 
 /// A tower needs no progress callback: `family_tower_report` runs without one, and

@@ -2532,6 +2532,26 @@ fn tower_family_list_refuses_at_its_place_as_fix_does() {
     }
 }
 
+/// A blank `--family` (`''`, `'  '`) is said to be blank, where it ends, as a blank function
+/// name is (`expected the name of a family, found end of input`): it said `no family named ''`,
+/// as if a family could be called so.
+#[test]
+fn tower_a_blank_family_is_said_to_be_blank() {
+    for (family, column, line) in [("", 1, " 1 | \n   | ^\n"), ("  ", 3, " 1 |   \n   |   ^\n")] {
+        let o = harmonic_rotor_towers(family);
+        assert_eq!(o.status.code(), Some(2), "{family:?}");
+        assert_eq!(
+            text(&o.stderr),
+            format!(
+                "superint: error: <command line>:1:{column}: --family: expected the name of a \
+                 family, found end of input\n{line}"
+            ),
+            "{family:?}"
+        );
+        assert!(o.stdout.is_empty(), "{family:?}");
+    }
+}
+
 #[test]
 fn check_exit_status_follows_expectations() {
     let dir = scratch("expectations");
