@@ -55,6 +55,41 @@ impl GaussianInteger {
     }
 }
 
+impl From<Integer> for GaussianInteger {
+    fn from(re: Integer) -> Self {
+        GaussianInteger::new(re, Integer::ZERO)
+    }
+}
+
+/// `From` for primitive integers, each a real Gaussian integer as [`Integer`] makes it.
+macro_rules! from_integers_to_gaussian {
+    ($($(#[$doc:meta])* $t:ty),*) => {$(
+        $(#[$doc])*
+        impl From<$t> for GaussianInteger {
+            fn from(v: $t) -> Self {
+                GaussianInteger::from(Integer::from(v))
+            }
+        }
+    )*};
+}
+
+from_integers_to_gaussian!(
+    i8, i16, i32, i64, i128, isize, u8, u16, u32, u64, usize,
+    /// An integer, real, of any primitive type as [`Integer`] takes it (an unsuffixed literal
+    /// is an `i32`), in the one form of its value: equal values are equal and hash alike.
+    ///
+    /// ```
+    /// use trigpoly::{GaussianInteger, Integer};
+    ///
+    /// let three = GaussianInteger::new(Integer::from(3), Integer::ZERO);
+    /// assert_eq!(GaussianInteger::from(3), three);
+    /// assert_eq!(GaussianInteger::from(3u8), GaussianInteger::from(Integer::from(3i128)));
+    /// assert_eq!(GaussianInteger::from(u128::MAX).re.to_string(), u128::MAX.to_string());
+    /// assert!(GaussianInteger::from(-7i64).im.is_zero());
+    /// ```
+    u128
+);
+
 impl fmt::Debug for GaussianInteger {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         write!(f, "({} + {}i)", self.re, self.im)
@@ -216,6 +251,7 @@ macro_rules! from_integers {
 }
 
 from_integers!(
+    i8, i16, i32, i64, i128, isize, u8, u16, u32, u64, usize,
     /// An integer, real, of any primitive type as [`Rational`] takes it (an unsuffixed literal
     /// is an `i32`).
     ///
@@ -226,7 +262,7 @@ from_integers!(
     /// assert_eq!(GaussianRational::from(3u8).to_string(), "3");
     /// assert_eq!(GaussianRational::from(u128::MAX).to_string(), u128::MAX.to_string());
     /// ```
-    i32, i8, i16, i64, i128, isize, u8, u16, u32, u64, u128, usize
+    u128
 );
 
 impl fmt::Display for GaussianRational {

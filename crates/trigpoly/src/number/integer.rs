@@ -408,6 +408,67 @@ impl From<u64> for Integer {
     }
 }
 
+/// `From` for the primitive integers that an `i64` holds, by way of it.
+macro_rules! from_via_i64 {
+    ($($t:ty),*) => {$(
+        impl From<$t> for Integer {
+            fn from(v: $t) -> Self {
+                Integer::from_i64(i64::from(v))
+            }
+        }
+    )*};
+}
+
+/// `From` for the primitive integers that may pass an `i64`, by way of an `i128`.
+macro_rules! from_via_i128 {
+    ($($t:ty),*) => {$(
+        impl From<$t> for Integer {
+            fn from(v: $t) -> Self {
+                Integer::from_i128(v as i128)
+            }
+        }
+    )*};
+}
+
+from_via_i64!(i8, i16, u8, u16, u32);
+from_via_i128!(isize, usize, i128);
+
+/// A `u128`, exact past an `i128`: an `Integer` is made from an integer of any primitive type,
+/// as num-bigint's `BigInt` is (an unsuffixed literal is an `i32`), each exactly and in the one
+/// form of its value: one that fits the word is held there, as `From<i64>` holds it, so that
+/// equal values of any type are equal and hash alike.
+///
+/// ```
+/// use std::collections::HashSet;
+/// use trigpoly::Integer;
+///
+/// assert_eq!(Integer::from(3u8) + Integer::from(-4i16), Integer::from(-1));
+/// assert_eq!(Integer::from(7usize), Integer::from(7i64));
+/// assert_eq!(Integer::from(u64::MAX).to_string(), "18446744073709551615");
+/// assert_eq!(Integer::from(u128::MAX).to_string(), u128::MAX.to_string());
+/// assert_eq!(Integer::from(i128::MIN).to_string(), i128::MIN.to_string());
+/// // One value, of whichever type, is one element of a set.
+/// let set: HashSet<Integer> = [
+///     Integer::from(5u8),
+///     Integer::from(5i128),
+///     Integer::from(5u128),
+///     Integer::from(5i64),
+///     Integer::from(i64::MAX as u128),
+///     Integer::from(i64::MAX),
+/// ]
+/// .into_iter()
+/// .collect();
+/// assert_eq!(set.len(), 2);
+/// ```
+impl From<u128> for Integer {
+    fn from(v: u128) -> Self {
+        match i128::try_from(v) {
+            Ok(v) => Integer::from_i128(v),
+            Err(_) => Integer::from_bigint(BigInt::from(v)),
+        }
+    }
+}
+
 impl From<BigInt> for Integer {
     fn from(b: BigInt) -> Self {
         Integer::from_bigint(b)

@@ -99,7 +99,8 @@ impl Rational {
         let g = gcd_u128(num.unsigned_abs(), den.unsigned_abs()) as i128;
         let (mut n, mut d) = (num / g, den / g);
         if d < 0 {
-            // |n|, |d| ≤ 2^127 − 1 here unless they were i128::MIN, which the callers never pass.
+            // |n|, |d| ≤ 2^127 − 1 here unless they were i128::MIN, which the callers never pass
+            // beside a negative denominator (`From<i128>` passes it over 1).
             n = -n;
             d = -d;
         }
@@ -550,12 +551,13 @@ macro_rules! from_via_i64 {
     )*};
 }
 
-/// `From` for the primitive integers that may pass an `i64`, by way of an `i128`.
+/// `From` for the primitive integers that may pass an `i64`, by way of an `i128`, the value
+/// over 1 made directly (no `Integer` on the way).
 macro_rules! from_via_i128 {
     ($($t:ty),*) => {$(
         impl From<$t> for Rational {
             fn from(v: $t) -> Self {
-                Rational::from(Integer::from_i128(v as i128))
+                Rational::from_i128(v as i128, 1)
             }
         }
     )*};
