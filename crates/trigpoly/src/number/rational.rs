@@ -99,8 +99,7 @@ impl Rational {
         let g = gcd_u128(num.unsigned_abs(), den.unsigned_abs()) as i128;
         let (mut n, mut d) = (num / g, den / g);
         if d < 0 {
-            // |n|, |d| ≤ 2^127 − 1 here unless they were i128::MIN, which the callers never pass
-            // beside a negative denominator (`From<i128>` passes it over 1).
+            // |n|, |d| ≤ 2^127 − 1 here unless they were i128::MIN, which the callers never pass.
             n = -n;
             d = -d;
         }
@@ -540,53 +539,36 @@ impl From<i64> for Rational {
     }
 }
 
-/// `From` for the primitive integers that an `i64` holds, by way of it.
-macro_rules! from_via_i64 {
-    ($($t:ty),*) => {$(
+/// `From` for the other primitive integers, each by way of the [`Integer`] it makes, which holds
+/// a value that fits a word in the word as `From<i64>` does.
+macro_rules! from_integers {
+    ($($(#[$doc:meta])* $t:ty),*) => {$(
+        $(#[$doc])*
         impl From<$t> for Rational {
             fn from(v: $t) -> Self {
-                Rational::from(i64::from(v))
+                Rational::from(Integer::from(v))
             }
         }
     )*};
 }
 
-/// `From` for the primitive integers that may pass an `i64`, by way of an `i128`, the value
-/// over 1 made directly (no `Integer` on the way).
-macro_rules! from_via_i128 {
-    ($($t:ty),*) => {$(
-        impl From<$t> for Rational {
-            fn from(v: $t) -> Self {
-                Rational::from_i128(v as i128, 1)
-            }
-        }
-    )*};
-}
-
-from_via_i64!(i8, i16, i32, u8, u16, u32);
-from_via_i128!(isize, usize, u64, i128);
-
-/// A `u128`, exact past an `i128`: a `Rational` is made from an integer of any primitive type,
-/// as num-bigint's `BigInt` is (an unsuffixed literal is an `i32`), each exactly.
-///
-/// ```
-/// use trigpoly::Rational;
-///
-/// assert_eq!(Rational::from(3), Rational::new(3, 1));
-/// assert_eq!(Rational::from(3u8) + Rational::from(-4i16), Rational::from(-1));
-/// assert_eq!(Rational::from(7usize), Rational::from(7i64));
-/// assert_eq!(Rational::from(u64::MAX).to_string(), "18446744073709551615");
-/// assert_eq!(Rational::from(u128::MAX).to_string(), u128::MAX.to_string());
-/// assert_eq!(Rational::from(i128::MIN).to_string(), i128::MIN.to_string());
-/// ```
-impl From<u128> for Rational {
-    fn from(v: u128) -> Self {
-        match i128::try_from(v) {
-            Ok(v) => Rational::from(v),
-            Err(_) => Rational::from(Integer::from(BigInt::from(v))),
-        }
-    }
-}
+from_integers!(
+    i8, i16, i32, i128, isize, u8, u16, u32, u64, usize,
+    /// A `u128`, exact past an `i128`: a `Rational` is made from an integer of any primitive
+    /// type, as num-bigint's `BigInt` is (an unsuffixed literal is an `i32`), each exactly.
+    ///
+    /// ```
+    /// use trigpoly::Rational;
+    ///
+    /// assert_eq!(Rational::from(3), Rational::new(3, 1));
+    /// assert_eq!(Rational::from(3u8) + Rational::from(-4i16), Rational::from(-1));
+    /// assert_eq!(Rational::from(7usize), Rational::from(7i64));
+    /// assert_eq!(Rational::from(u64::MAX).to_string(), "18446744073709551615");
+    /// assert_eq!(Rational::from(u128::MAX).to_string(), u128::MAX.to_string());
+    /// assert_eq!(Rational::from(i128::MIN).to_string(), i128::MIN.to_string());
+    /// ```
+    u128
+);
 
 impl fmt::Display for Rational {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
