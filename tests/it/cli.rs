@@ -4565,6 +4565,48 @@ fn a_table_instance_past_a_limit_is_an_error_of_the_command_line() {
     }
 }
 
+/// A family instance whose power is known to pass the term limit is refused before it is
+/// multiplied out, with the limit's message, by every command that forms it: the Fock–Darwin
+/// `P_{99,1} = Re(W^99 Z̄)`, whose `W^99` has 8 670 850 terms, was refused only after 20 s of
+/// multiplying by `W` one factor at a time up to `W^68`, the first power past the default
+/// limit of 2 000 000 (the terms of a power of `W` meet on one relation and cannot cancel, so
+/// their count is known from `W`'s monomials). Under a configured limit the instance at the
+/// limit is formed and refused one below it: `K_{20,0} = W^20`, of 19 481 terms.
+#[test]
+fn a_power_known_to_pass_the_term_limit_is_refused_before_it_is_formed() {
+    let file = "systems/fock-darwin.toml";
+    for args in [
+        &["expand", file, "P_99_1"][..],
+        &["bracket", file, "P_99_1", "H"],
+        &["table", file, "P_99_1", "L"],
+        &["rank", file, "H", "P_99_1"],
+        &["closure", file, "H", "P_99_1"],
+    ] {
+        let err = crate::superint_refused(args);
+        assert!(
+            err.starts_with(
+                "superint: error: <command line>:1:1: cannot expand P_{99,1}: cannot expand \
+                 K_{99,1}: the result would have more than 2000000 terms (the term limit); \
+                 raise the limit or simplify the input\n"
+            ) && err.contains("on the command line, --max-terms N"),
+            "{args:?}: {err}"
+        );
+    }
+    let expand = ["expand", file, "K_20_0", "--no-timings", "--max-terms"];
+    let at = |limit| [&expand[..], &[limit]].concat();
+    let err = crate::superint_refused(&at("19480"));
+    assert!(
+        err.contains("cannot expand K_{20,0}: the result would have more than 19480 terms"),
+        "{err}"
+    );
+    let report = crate::superint_json(&at("19481"));
+    let ascii = report["equations"][0]["lines"][0]["ascii"]
+        .as_str()
+        .expect("the expansion");
+    let terms = 1 + ascii.matches(" + ").count() + ascii.matches(" - ").count();
+    assert_eq!(terms, 19_481, "{}", &ascii[..200]);
+}
+
 /// Markdown headings and prose write `<`, `>` and `&` as entities outside code spans: a file
 /// read from standard input is `<stdin>`, which a Markdown viewer took for an HTML tag and
 /// dropped (`## 1. Kepler problem ()`).

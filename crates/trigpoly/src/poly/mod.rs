@@ -18,6 +18,7 @@ mod index;
 mod kronecker;
 mod mul;
 mod pow;
+mod power_terms;
 mod radicals;
 mod subst;
 mod sum;

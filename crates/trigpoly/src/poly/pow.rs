@@ -64,20 +64,20 @@ impl<C: Coefficient> Poly<C> {
         if e == 2 {
             return self.checked_square();
         }
-        // Affinely independent monomials (at most one more than the variables) give every
-        // composition `e = a_1 + … + a_t` a term of its own.
-        if self.len() <= 6 || self.len() <= self.vars.len() + 1 {
+        let limit = self.vars.limits().max_terms;
+        if self.len() <= 6 {
             let compositions =
                 binomial_u128(e as u128 + self.len() as u128 - 1, self.len() as u128 - 1);
-            let limit = self.vars.limits().max_terms;
-            if self.len() <= 6 && compositions <= limit as u128 {
+            if compositions <= limit as u128 {
                 return self.multinomial_pow(e as usize);
             }
-            if compositions > limit as u128 && self.compositions_are_distinct() {
-                // Every composition is its own term: the power has too many, known up front
-                // (`(x + y + p_x + p_y + M + I + ω)^60` multiplied for 38 s before it stopped).
-                return Err(AlgebraError::TooManyTerms { limit });
-            }
+        }
+        if self.power_passes(e as usize, limit) {
+            // Too many terms, known from the monomials before any product (`power_terms.rs`):
+            // `(x + y + p_x + p_y + M + I + ω)^60`, every composition a term of its own,
+            // multiplied for 38 s before it stopped, the Fock–Darwin `W^99`, whose terms
+            // meet on one relation and never cancel, for 20 s.
+            return Err(AlgebraError::TooManyTerms { limit });
         }
         // Repeated multiplication by `self`, after one square. Each step costs the terms of the
         // power so far times those of `self`, and checks the term limit as the power grows.
@@ -121,7 +121,7 @@ impl<C: Coefficient> Poly<C> {
         // when each is a monomial of its own (else counted after the sort).
         let formed = term_bytes::<C::Int>(compositions, w);
         let order_bytes = compositions as u128 * std::mem::size_of::<usize>() as u128;
-        let combined = match self.compositions_are_distinct() {
+        let combined = match self.affine_relations().is_empty() {
             true => formed,
             false => 0,
         };
@@ -238,38 +238,6 @@ impl<C: Coefficient> Poly<C> {
         ))
     }
 
-    /// Whether distinct compositions `Σ a_i = e` give distinct monomials `Π m_i^{a_i}`: true
-    /// when the vectors `(1, exponents of m_i)` are linearly independent (exact elimination).
-    fn compositions_are_distinct(&self) -> bool {
-        let n = self.vars.len();
-        let mut rows: Vec<Vec<Rational>> = self
-            .terms()
-            .map(|t| {
-                std::iter::once(Rational::one())
-                    .chain(t.exponents().into_iter().map(Rational::from))
-                    .collect()
-            })
-            .collect();
-        let mut rank = 0;
-        for col in 0..=n {
-            let Some(p) = (rank..rows.len()).find(|&r| !rows[r][col].is_zero()) else {
-                continue;
-            };
-            rows.swap(rank, p);
-            for r in 0..rows.len() {
-                if r != rank && !rows[r][col].is_zero() {
-                    let f = &rows[r][col] / &rows[rank][col];
-                    let pivot = rows[rank].clone();
-                    for (x, y) in rows[r].iter_mut().zip(&pivot) {
-                        *x -= &f * y;
-                    }
-                }
-            }
-            rank += 1;
-        }
-        rank == rows.len()
-    }
-
     /// Whether the polynomial is a single term with coefficient 1, such as `x` or `M ω`.
     fn has_unit_coefficient(&self) -> bool {
         self.len() == 1 && self.content.is_one() && self.coeffs[0].is_one()
@@ -293,7 +261,7 @@ impl<C: Coefficient> Poly<C> {
 }
 
 /// `C(n, k)`, saturating.
-fn binomial_u128(n: u128, k: u128) -> u128 {
+pub(super) fn binomial_u128(n: u128, k: u128) -> u128 {
     let k = k.min(n - k.min(n));
     let mut acc: u128 = 1;
     for j in 0..k {

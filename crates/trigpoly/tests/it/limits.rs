@@ -588,6 +588,53 @@ fn term_limit_refuses_a_power_in_general_position_up_front() {
     assert_eq!(g.checked_pow(2).map(|h| h.len()), Ok(35));
 }
 
+/// `x, y, z, t, u` with a term limit of `terms` and a work limit of `products`.
+fn terms_and_work_vars(terms: usize, products: u64) -> Vars {
+    ["x", "y", "z", "t", "u"]
+        .into_iter()
+        .fold(VarSet::builder(), |b, name| b.coordinate(name))
+        .limits(Limits {
+            max_terms: terms,
+            max_term_products: products,
+            ..Limits::default()
+        })
+        .build()
+        .unwrap()
+}
+
+/// A power whose terms meet on a relation that keeps their phase is refused by its count
+/// before any of its products, as one in general position is: `f = 1 + x + y + xy + z + t +
+/// u`, whose monomials meet on `1 · xy = x · y`, has `f^12` of C(18, 6) − C(16, 6) = 10 556
+/// terms. One below that it is `TooManyTerms`, even under a work limit that `f^11 · f`, of
+/// 7 371 × 7 term products, passes (multiplied one factor at a time, it met that limit
+/// first: the count was known only of the power formed); at it, the work limit decides,
+/// and without it the power is formed, of 10 556 terms, as are the powers below it.
+#[test]
+fn term_limit_refuses_a_power_whose_terms_meet_but_cannot_cancel_up_front() {
+    let f = "1 + x + y + x*y + z + t + u";
+    let power = |terms, products, e| {
+        let f: Q = p(&terms_and_work_vars(terms, products), f);
+        f.checked_pow(e).map(|g| g.len())
+    };
+    let last_product = 7371 * 7;
+    assert_eq!(
+        power(10_555, last_product - 1, 12),
+        Err(AlgebraError::TooManyTerms { limit: 10_555 })
+    );
+    assert_eq!(
+        power(10_556, last_product - 1, 12),
+        Err(AlgebraError::TooMuchWork {
+            left: 7,
+            right: 7371,
+            products: last_product as u128,
+            limit: last_product - 1,
+        })
+    );
+    let unlimited = Limits::default().max_term_products;
+    assert_eq!(power(10_556, unlimited, 12), Ok(10_556));
+    assert_eq!(power(10_555, unlimited, 11), Ok(7371));
+}
+
 /// `f · g` on a pool of two threads, in variables `x, y, z, t, u` whose term limit is `limit`.
 fn product_with_limit(f: &str, g: &str, limit: usize) -> Result<usize, AlgebraError> {
     let vars = VarSet::builder()

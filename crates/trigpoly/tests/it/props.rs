@@ -6,8 +6,8 @@ use num_rational::BigRational;
 use proptest::prelude::*;
 use proptest::test_runner::Config;
 use trigpoly::{
-    ExactDivisor, GaussianRational, Integer, IntegerAcc, IntegerView, Point, Poly, Rational, Style,
-    VarKind,
+    AlgebraError, ExactDivisor, GaussianRational, Integer, IntegerAcc, IntegerView, Limits, Point,
+    Poly, Rational, Style, VarKind, VarSet,
 };
 
 use crate::common::{phase_space, var, G, Q};
@@ -41,6 +41,15 @@ fn component() -> impl Strategy<Value = BigInt> {
     prop_oneof![
         3 => (-(1i64 << 31)..(1i64 << 31)).prop_map(BigInt::from),
         1 => integer(),
+    ]
+}
+
+/// The parts of a small Gaussian integer, mostly real or imaginary.
+fn axial_or_not() -> impl Strategy<Value = (i64, i64)> {
+    prop_oneof![
+        4 => (-2i64..3, Just(0i64)),
+        4 => (Just(0i64), -2i64..3),
+        1 => (-2i64..3, -2i64..3),
     ]
 }
 
@@ -458,6 +467,36 @@ proptest! {
         let fe = f.checked_pow(e).unwrap();
         prop_assert_eq!(value(&fe), value(&f).pow(e).expect("nonzero"));
         prop_assert_eq!(fe, &f.checked_pow(e - 2).unwrap() * &f.checked_pow(2).unwrap());
+    }
+
+    /// A power is refused by the term limit only where it, or a power on the way to it, has
+    /// more terms than the limit: the count a power knows before it is formed never passes
+    /// the count formed. Terms in a small box of `x, y, z` (so that monomials meet on
+    /// relations) with coefficients mostly real or imaginary (so that the bound is given),
+    /// some of whose relations turn the phase and cancel terms.
+    #[test]
+    fn a_power_is_refused_only_past_the_term_limit(
+        terms in proptest::collection::vec((axial_or_not(), proptest::collection::vec(-1i64..3, 3)), 3..10),
+        e in 3i64..8,
+    ) {
+        let terms: Vec<_> = terms
+            .into_iter()
+            .map(|((re, im), m)| (GaussianRational::new(re.into(), im.into()), m))
+            .collect();
+        let within = |max_terms| {
+            let limits = Limits { max_terms, ..Limits::default() };
+            let vars = ["x", "y", "z"].into_iter().fold(VarSet::builder(), |b, v| b.coordinate(v));
+            G::from_terms(&vars.limits(limits).build().unwrap(), terms.clone()).expect("small exponents")
+        };
+        let f = within(Limits::default().max_terms);
+        prop_assume!(f.len() > 1);
+        let counts: Vec<usize> = (2..=e).map(|k| f.checked_pow(k).unwrap().len()).collect();
+        let (most, formed) = (*counts.iter().max().expect("a power"), counts[counts.len() - 1]);
+        prop_assert_eq!(within(most).checked_pow(e).map(|g| g.len()), Ok(formed));
+        prop_assert_eq!(
+            within(formed - 1).checked_pow(e).map(|g| g.len()),
+            Err(AlgebraError::TooManyTerms { limit: formed - 1 })
+        );
     }
 
     #[test]
