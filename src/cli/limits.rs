@@ -31,14 +31,13 @@ pub struct LimitsArgs {
 impl LimitsArgs {
     /// The limits as plain data.
     pub fn settings(&self) -> LimitsOverride {
-        LimitsOverride {
-            max_terms: self
-                .max_terms
-                .map(|t| usize::try_from(t).unwrap_or(usize::MAX)),
-            max_degree: self.max_degree,
-            max_term_products: self.max_term_products,
-            max_bytes: physical_memory(),
-        }
+        let mut given = memory_only();
+        given.max_terms = self
+            .max_terms
+            .map(|t| usize::try_from(t).unwrap_or(usize::MAX));
+        given.max_degree = self.max_degree;
+        given.max_term_products = self.max_term_products;
+        given
     }
 
     /// Whether a limit was given.
@@ -49,10 +48,9 @@ impl LimitsArgs {
 
 /// No limit given: the defaults, with the cap on memory.
 pub fn memory_only() -> LimitsOverride {
-    LimitsOverride {
-        max_bytes: physical_memory(),
-        ..LimitsOverride::default()
-    }
+    let mut given = LimitsOverride::default();
+    given.max_bytes = physical_memory();
+    given
 }
 
 /// The machine's physical memory in bytes, the cap on the room a result reserved from a

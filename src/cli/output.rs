@@ -61,10 +61,9 @@ impl OutputArgs {
     pub fn settings(&self) -> Output {
         Output {
             format: self.format.into(),
-            options: Options {
-                timings: !self.no_timings,
-                shown_monomials: (!self.full_expressions).then_some(SHOWN_MONOMIALS),
-            },
+            options: Options::default()
+                .timings(!self.no_timings)
+                .shown_monomials((!self.full_expressions).then_some(SHOWN_MONOMIALS)),
         }
     }
 }

@@ -567,10 +567,10 @@ pub fn search_report_for(
 /// use superint::system_file::{load, Caller, LimitsOverride};
 ///
 /// let fd = load("systems/fock-darwin.toml", &LimitsOverride::default())?;
-/// let mut options = SearchOptions::new(SearchSpace::default().momenta_degree(3).positions_degree(3).parameters_degree(6));
-/// options.condition = Some(fd.condition("a = 2*b")?);
-/// options.symbolic = ["M", "b"].map(|p| fd.system().vars().lookup(p).unwrap()).to_vec();
-/// options.new_only = true;
+/// let space = SearchSpace::default().momenta_degree(3).positions_degree(3).parameters_degree(6);
+/// let [m, b] = ["M", "b"].map(|p| fd.system().vars().lookup(p).unwrap());
+/// let options = SearchOptions::new(space).when(fd.condition("a = 2*b")?);
+/// let options = options.symbolic(m).symbolic(b).new_only();
 /// let (report, _) = file_search_report(&fd, &options, Caller::Program)?;
 /// let text = render(&report, Format::Text, &Options::reproducible());
 /// assert!(text.contains("= −8 Q_{1,2}") && text.contains("= 8 P_{1,2}"));

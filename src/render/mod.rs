@@ -78,8 +78,25 @@ impl FromStr for Format {
 #[error("unknown format '{0}' (expected text, markdown, latex or json)")]
 pub struct UnknownFormat(pub String);
 
-/// Rendering choices.
+/// Rendering choices: the defaults ([`Options::default`], or [`Options::reproducible`] without
+/// timings), each changed by a method of its name.
+///
+/// ```
+/// use superint::prelude::*;
+///
+/// let options = RenderOptions::default().timings(false).shown_monomials(Some(10));
+/// assert_eq!((options.timings, options.shown_monomials), (false, Some(10)));
+/// let everything = RenderOptions::reproducible().shown_monomials(None);
+/// assert_eq!(everything, RenderOptions::default().timings(false).shown_monomials(None));
+/// ```
+///
+/// A choice may be added, so a program writes no literal of all of them:
+///
+/// ```compile_fail,E0639
+/// let options = superint::render::Options { timings: false, shown_monomials: None };
+/// ```
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[non_exhaustive]
 pub struct Options {
     /// Whether to print timings (off makes the output byte-for-byte reproducible).
     pub timings: bool,
@@ -106,10 +123,22 @@ impl Default for Options {
 impl Options {
     /// The defaults without timings: output that is the same on every run (`--no-timings`).
     pub fn reproducible() -> Self {
-        Options {
-            timings: false,
-            ..Options::default()
-        }
+        Options::default().timings(false)
+    }
+
+    /// The same choices with timings printed or not.
+    #[must_use]
+    pub fn timings(mut self, timings: bool) -> Self {
+        self.timings = timings;
+        self
+    }
+
+    /// The same choices with at most `monomials` monomials (outside the angles) of a long
+    /// expression printed, or with every one (`None`).
+    #[must_use]
+    pub fn shown_monomials(mut self, monomials: Option<usize>) -> Self {
+        self.shown_monomials = monomials;
+        self
     }
 }
 

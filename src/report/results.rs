@@ -95,8 +95,20 @@ impl std::fmt::Display for ClaimOutcome {
     }
 }
 
-/// A claim of the paper, checked.
+/// A claim of the paper, checked: read by a program, made by the library. A field may be
+/// added, so a pattern of one names the fields it reads and `..`:
+///
+/// ```compile_fail,E0638
+/// # use superint::prelude::*;
+/// fn id(claim: ClaimResult) -> String {
+///     let ClaimResult { id, statement, written, condition, condition_ascii, kind, proved,
+///         expect, residual, residual_in_functions, witness, note, undecided, excerpt,
+///         seconds } = claim;
+///     id
+/// }
+/// ```
 #[derive(Clone, Debug)]
+#[non_exhaustive]
 pub struct ClaimResult {
     /// The claim's id (`C09`).
     pub id: String,
@@ -139,8 +151,17 @@ pub struct ClaimResult {
 
 /// How much of a long expression (a refuted claim's residual, a table's entry) is shown: every
 /// term of its first `shown` monomials outside the angles ([`trigpoly::Poly::leading_part`]),
-/// of `monomials` in all.
+/// of `monomials` in all. Read by a program, made by the library. A field may be added, so a
+/// pattern of one names the fields it reads and `..`:
+///
+/// ```compile_fail,E0638
+/// fn shown(excerpt: superint::report::Excerpt) -> usize {
+///     let superint::report::Excerpt { shown, monomials, angles, caller } = excerpt;
+///     shown
+/// }
+/// ```
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[non_exhaustive]
 pub struct Excerpt {
     /// The monomials whose terms are shown.
     pub shown: usize,

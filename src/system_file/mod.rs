@@ -89,7 +89,31 @@ pub const DEFAULT_MAX_DEGREE: u32 = Limits::DEFAULT_MAX_DEGREE;
 /// must be at least 1, as in the file: the loader refuses a 0 (an error of kind
 /// [`ErrorKind::Schema`]). The cap on memory, `max_bytes`, is taken as given: a cap of 0
 /// refuses every result whose room is reserved from a predicted count.
+///
+/// None is given by default; each is given by a method of its name:
+///
+/// ```
+/// use superint::prelude::*;
+///
+/// let given = LimitsOverride::default().max_terms(100).max_degree(40);
+/// assert_eq!((given.max_terms, given.max_degree), (Some(100), Some(40)));
+/// let given = given.max_term_products(1_000_000).max_bytes(1 << 30);
+/// assert_eq!((given.max_term_products, given.max_bytes), (Some(1_000_000), Some(1 << 30)));
+/// let limits = LimitsOverride::default().max_terms(100).or_defaults();
+/// assert_eq!(limits, Limits::default().max_terms(100));
+/// let rotor = load_system_file("systems/harmonic-rotor.toml", &given)?;
+/// assert_eq!(rotor.limits().max_terms, 100);
+/// # Ok::<(), FileError>(())
+/// ```
+///
+/// A limit may be added, so a program writes no literal of all of them:
+///
+/// ```compile_fail,E0639
+/// let given = superint::system_file::LimitsOverride { max_terms: Some(10), max_degree: None,
+///     max_term_products: None, max_bytes: None };
+/// ```
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+#[non_exhaustive]
 pub struct LimitsOverride {
     /// `--max-terms`.
     pub max_terms: Option<usize>,
@@ -104,18 +128,48 @@ pub struct LimitsOverride {
 }
 
 impl LimitsOverride {
+    /// The same with at most `n` terms in any single result (`--max-terms`).
+    #[must_use]
+    pub fn max_terms(mut self, n: usize) -> Self {
+        self.max_terms = Some(n);
+        self
+    }
+
+    /// The same with no exponent past `d` (`--max-degree`).
+    #[must_use]
+    pub fn max_degree(mut self, d: u32) -> Self {
+        self.max_degree = Some(d);
+        self
+    }
+
+    /// The same with at most `n` term products a product, and a sum's products together
+    /// (`--max-term-products`).
+    #[must_use]
+    pub fn max_term_products(mut self, n: u64) -> Self {
+        self.max_term_products = Some(n);
+        self
+    }
+
+    /// The same with at most `n` bytes of room reserved for a result from its predicted count
+    /// of terms (the command line's is the machine's physical memory).
+    #[must_use]
+    pub fn max_bytes(mut self, n: u64) -> Self {
+        self.max_bytes = Some(n);
+        self
+    }
+
     /// The limits given, else a system file's defaults ([`DEFAULT_MAX_TERMS`],
     /// [`DEFAULT_MAX_DEGREE`], [`Limits::DEFAULT_MAX_TERM_PRODUCTS`], no memory cap): those
     /// of a built-in system on the command line.
     pub fn or_defaults(&self) -> Limits {
-        Limits {
-            max_terms: self.max_terms.unwrap_or(DEFAULT_MAX_TERMS),
-            max_degree: self.max_degree.unwrap_or(DEFAULT_MAX_DEGREE),
-            max_term_products: self
-                .max_term_products
-                .unwrap_or(Limits::DEFAULT_MAX_TERM_PRODUCTS),
-            max_bytes: self.max_bytes.unwrap_or(Limits::NO_MEMORY_CAP),
-        }
+        Limits::default()
+            .max_terms(self.max_terms.unwrap_or(DEFAULT_MAX_TERMS))
+            .max_degree(self.max_degree.unwrap_or(DEFAULT_MAX_DEGREE))
+            .max_term_products(
+                self.max_term_products
+                    .unwrap_or(Limits::DEFAULT_MAX_TERM_PRODUCTS),
+            )
+            .max_bytes(self.max_bytes.unwrap_or(Limits::NO_MEMORY_CAP))
     }
 }
 

@@ -156,7 +156,7 @@ pub fn check_report<'a>(
 /// id = "momentum"
 /// claim = "{p_x, H} = 0"
 /// "#;
-/// let limits = LimitsOverride { max_terms: Some(100), ..LimitsOverride::default() };
+/// let limits = LimitsOverride::default().max_terms(100);
 /// let (report, errors) = check_each(vec![load_str("free.toml", text, &limits)]);
 /// assert_eq!(report.claim_outcomes(), [
 ///     ("long".to_string(), ClaimOutcome::Undecided),

@@ -1187,10 +1187,7 @@ mod tests {
         ] {
             let vars = trigpoly::VarSet::builder()
                 .coordinate("x")
-                .limits(trigpoly::Limits {
-                    max_degree: 1000,
-                    ..trigpoly::Limits::default()
-                })
+                .limits(trigpoly::Limits::default().max_degree(1000))
                 .build()
                 .unwrap();
             let e = Expr::parse(&vars, text).unwrap_err();

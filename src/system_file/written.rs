@@ -519,8 +519,7 @@ impl LoadedSystem {
     /// The options of a search of `e` of degree `≤ degree` in the generators, at
     /// `condition`.
     fn among_options(condition: Option<&Condition>, degree: u32) -> ClosureOptions {
-        let mut options = ClosureOptions::new(degree);
-        options.max_monomials = MAX_MONOMIALS as usize;
+        let mut options = ClosureOptions::new(degree).max_monomials(MAX_MONOMIALS as usize);
         if let Some(c) = condition {
             options = options.when(c.clone());
         }
@@ -614,22 +613,18 @@ impl LoadedSystem {
         degree: u32,
         kept: &[Var],
     ) -> Option<Expr> {
-        let generic = self.at_generic_values(&Self::among_options(condition, degree));
+        let mut generic = self.at_generic_values(&Self::among_options(condition, degree));
         // The other parameters stay at the generic values.
-        let mut fixed = generic.fixed.clone();
-        fixed.retain(|(v, _)| !kept.contains(v));
+        generic.fixed.retain(|(v, _)| !kept.contains(v));
         // Low degree first, which the monomial limit refuses the least: most brackets need
         // no more (`{K, Q} = 256ω²αβ H_x + …` of the caged oscillator needs degree 4).
         SYMBOLIC_SEARCHES
             .into_iter()
             .find_map(|(degree, max_monomials)| {
                 let symbolic = kept.iter().fold(
-                    ClosureOptions {
-                        fixed: fixed.clone(),
-                        max_monomials,
-                        ..generic.clone()
-                    }
-                    .parameters_degree(degree),
+                    (generic.clone())
+                        .max_monomials(max_monomials)
+                        .parameters_degree(degree),
                     |o, &v| o.symbolic(v),
                 );
                 match self.search(e, generators, &symbolic) {

@@ -565,10 +565,7 @@ fn engine_errors_become_file_errors() {
             "/systems/harmonic-rotor.toml"
         ))
         .unwrap();
-        let small = LimitsOverride {
-            max_terms: Some(50),
-            ..LimitsOverride::default()
-        };
+        let small = LimitsOverride::default().max_terms(50);
         load_system_text("harmonic-rotor.toml", &text, &small).unwrap()
     };
     let err = expand(&rotor, 8).unwrap_err();
@@ -594,26 +591,11 @@ fn a_limit_out_of_its_range_is_refused_by_the_loader() {
     ))
     .unwrap();
     let zeros = [
-        (
-            "max_degree",
-            LimitsOverride {
-                max_degree: Some(0),
-                ..LimitsOverride::default()
-            },
-        ),
-        (
-            "max_terms",
-            LimitsOverride {
-                max_terms: Some(0),
-                ..LimitsOverride::default()
-            },
-        ),
+        ("max_degree", LimitsOverride::default().max_degree(0)),
+        ("max_terms", LimitsOverride::default().max_terms(0)),
         (
             "max_term_products",
-            LimitsOverride {
-                max_term_products: Some(0),
-                ..LimitsOverride::default()
-            },
+            LimitsOverride::default().max_term_products(0),
         ),
     ];
     for (name, zero) in zeros {
@@ -623,10 +605,7 @@ fn a_limit_out_of_its_range_is_refused_by_the_loader() {
     }
     // A degree past the ceiling that a file and --max-degree refuse is refused too, not
     // lowered to it.
-    let past = LimitsOverride {
-        max_degree: Some(32_768),
-        ..LimitsOverride::default()
-    };
+    let past = LimitsOverride::default().max_degree(32_768);
     let err = load_system_text("harmonic-rotor.toml", &text, &past).unwrap_err();
     assert_eq!(
         err.message,
@@ -634,12 +613,10 @@ fn a_limit_out_of_its_range_is_refused_by_the_loader() {
          and 32767"
     );
     // One is enough: the smallest of each loads.
-    let ones = LimitsOverride {
-        max_terms: Some(1),
-        max_degree: Some(1),
-        max_term_products: Some(1),
-        ..LimitsOverride::default()
-    };
+    let ones = LimitsOverride::default()
+        .max_terms(1)
+        .max_degree(1)
+        .max_term_products(1);
     assert_eq!(
         load_system_text("harmonic-rotor.toml", &text, &ones)
             .map_err(|e| e.kind)
@@ -876,10 +853,7 @@ fn an_excerpt_shows_at_least_one_monomial() {
     rotor.add_claim("w", "{G1, G2} = L", None).unwrap().expect = Expect::Refuted;
     let report = check_report([&rotor]).unwrap();
     let shown = |n| {
-        let options = RenderOptions {
-            timings: false,
-            shown_monomials: Some(n),
-        };
+        let options = RenderOptions::reproducible().shown_monomials(Some(n));
         render(&report, Format::Text, &options)
     };
     let none = shown(0);
@@ -1359,10 +1333,7 @@ fn a_programs_long_residual_names_the_render_option() {
                 [[function]]\nname = \"F\"\nvalue = \"(1 + x + p_x)^3\"\n\
                 [[claim]]\nid = \"long\"\nclaim = \"(1 + x + p_x)^3 = 0\"\n";
     let file = load_str("long.toml", text, &LimitsOverride::default()).unwrap();
-    let options = RenderOptions {
-        timings: false,
-        shown_monomials: Some(2),
-    };
+    let options = RenderOptions::reproducible().shown_monomials(Some(2));
     let program = "shown: its first 2 of 10 terms; RenderOptions::shown_monomials = None shows all";
     let flag = "shown: its first 2 of 10 terms; --full-expressions shows all";
     let report = check_report([&file]).unwrap();

@@ -4231,10 +4231,7 @@ fn latex_headings_fit_the_page_at_any_path() {
 fn check_report_answers_with_a_claims_limit() {
     let text = "name = \"free\"\nhamiltonian = \"p_x^2/2\"\n[phase_space]\ncoordinates = [\"x\"]\n\
                 [[claim]]\nclaim = \"{p_x, H} = 0\"\n[[claim]]\nclaim = \"(x + p_x)^20 = 0\"\n";
-    let limits = superint::system_file::LimitsOverride {
-        max_terms: Some(10),
-        ..Default::default()
-    };
+    let limits = superint::system_file::LimitsOverride::default().max_terms(10);
     let file = superint::system_file::load_str("free.toml", text, &limits).expect("loads");
     let err = superint::system_file::check_report([&file]).expect_err("a limit");
     assert_eq!(

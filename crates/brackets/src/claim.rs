@@ -578,8 +578,17 @@ impl Outcome {
     }
 }
 
-/// A checked claim, with its timing.
+/// A checked claim, with its timing: made by [`Claim::check`] and read. A field may be added,
+/// so a pattern of one names the fields it reads and `..`:
+///
+/// ```compile_fail,E0638
+/// fn id(verdict: brackets::Verdict) -> String {
+///     let brackets::Verdict { id, statement, condition, outcome, seconds } = verdict;
+///     id
+/// }
+/// ```
 #[derive(Clone, Debug)]
+#[non_exhaustive]
 pub struct Verdict {
     /// The claim's identifier.
     pub id: String,

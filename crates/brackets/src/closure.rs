@@ -55,8 +55,28 @@ use fewest::Relations;
 use lift::LiftContext;
 use span::Span;
 
-/// What to compute.
+/// What to compute: a degree ([`ClosureOptions::new`]), then each other choice by a method of
+/// its name.
+///
+/// ```
+/// use brackets::{systems, ClosureOptions};
+///
+/// let rotor = systems::harmonic_rotor();
+/// let omega = rotor.vars().lookup("omega").unwrap();
+/// let options = ClosureOptions::new(2).symbolic(omega).parameters_degree(1).max_monomials(500);
+/// assert_eq!((options.degree, options.parameters_degree, options.max_monomials), (2, 1, 500));
+/// assert_eq!(options.symbolic, vec![omega]);
+/// assert_eq!(ClosureOptions::new(2).max_monomials, ClosureOptions::DEFAULT_MAX_MONOMIALS);
+/// ```
+///
+/// A choice may be added, so another crate writes no literal of all of them:
+///
+/// ```compile_fail,E0639
+/// let options = brackets::ClosureOptions { degree: 2, condition: None, fixed: vec![],
+///     symbolic: vec![], parameters_degree: 2, max_monomials: 100 };
+/// ```
 #[derive(Clone, Debug)]
+#[non_exhaustive]
 pub struct ClosureOptions {
     /// The largest degree of the polynomials in the generators.
     pub degree: u32,
@@ -93,12 +113,14 @@ impl ClosureOptions {
     pub const DEFAULT_MAX_MONOMIALS: usize = 20_000;
 
     /// Under a condition.
+    #[must_use]
     pub fn when(mut self, condition: Condition) -> Self {
         self.condition = Some(condition);
         self
     }
 
     /// With a parameter fixed to a value for the linear algebra.
+    #[must_use]
     pub fn fix(mut self, v: Var, value: Rational) -> Self {
         self.fixed.retain(|f| f.0 != v);
         self.fixed.push((v, value));
@@ -106,6 +128,7 @@ impl ClosureOptions {
     }
 
     /// With a parameter kept symbolic (see [`ClosureOptions::parameters_degree`]).
+    #[must_use]
     pub fn symbolic(mut self, v: Var) -> Self {
         if !self.symbolic.contains(&v) {
             self.symbolic.push(v);
@@ -115,8 +138,17 @@ impl ClosureOptions {
 
     /// With coefficients polynomial of total degree `≤ d` in the parameters kept symbolic,
     /// all of them together (2 unless set).
+    #[must_use]
     pub fn parameters_degree(mut self, d: u32) -> Self {
         self.parameters_degree = d;
+        self
+    }
+
+    /// With at most `n` monomials `p^ν G^β` for the linear algebra
+    /// ([`ClosureOptions::DEFAULT_MAX_MONOMIALS`] unless set).
+    #[must_use]
+    pub fn max_monomials(mut self, n: usize) -> Self {
+        self.max_monomials = n;
         self
     }
 }

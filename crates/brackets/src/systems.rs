@@ -74,7 +74,7 @@ pub fn rotor(potential: &str, extra_parameters: &[&str]) -> Result<System, Engin
 /// use brackets::systems::Rotor;
 /// use trigpoly::Limits;
 ///
-/// let limits = |max_terms| Limits { max_terms, max_degree: 50, ..Limits::default() };
+/// let limits = |max_terms| Limits::default().max_terms(max_terms).max_degree(50);
 /// let rotor = Rotor::Harmonic.system(limits(100)).unwrap();
 /// assert_eq!(rotor.vars().limits().max_terms, 100);
 /// // H has five terms: a limit of four refuses the system, with the reason.

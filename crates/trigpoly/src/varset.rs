@@ -224,7 +224,30 @@ pub(crate) fn spelled_by(name: &str, is_letter: impl Fn(char) -> bool) -> bool {
 /// (system files and the command line default to 2 000 000 terms: `docs/system-files.md`),
 /// with no cap on memory beyond what the allocator refuses (the command line caps it at the
 /// machine's physical memory).
+///
+/// Built from the defaults, each limit set by a method of its name; the fields are read as
+/// they are named:
+///
+/// ```
+/// use trigpoly::{Limits, VarSet};
+///
+/// let limits = Limits::default().max_terms(10_000).max_degree(50);
+/// assert_eq!((limits.max_terms, limits.max_degree), (10_000, 50));
+/// assert_eq!(limits.max_term_products, Limits::DEFAULT_MAX_TERM_PRODUCTS);
+/// let limits = limits.max_term_products(1_000_000).max_bytes(1 << 30);
+/// assert_eq!((limits.max_term_products, limits.max_bytes), (1_000_000, 1 << 30));
+/// let vars = VarSet::builder().coordinate("x").limits(limits).build()?;
+/// assert_eq!(vars.limits(), limits);
+/// # Ok::<(), trigpoly::AlgebraError>(())
+/// ```
+///
+/// A limit may be added, so another crate writes no literal of all of them:
+///
+/// ```compile_fail,E0639
+/// let limits = trigpoly::Limits { max_terms: 10, ..trigpoly::Limits::default() };
+/// ```
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[non_exhaustive]
 pub struct Limits {
     /// The most terms any single result may have.
     pub max_terms: usize,
@@ -259,6 +282,37 @@ impl Limits {
     pub const DEFAULT_MAX_TERM_PRODUCTS: u64 = 10_000_000_000;
     /// The default cap on memory, of the library: none ([`Limits::max_bytes`]).
     pub const NO_MEMORY_CAP: u64 = u64::MAX;
+
+    /// The same limits with at most `n` terms in any single result.
+    #[must_use]
+    pub fn max_terms(mut self, n: usize) -> Self {
+        self.max_terms = n;
+        self
+    }
+
+    /// The same limits with no exponent past `d` in absolute value (no trigonometric order past
+    /// it in an angle).
+    #[must_use]
+    pub fn max_degree(mut self, d: u32) -> Self {
+        self.max_degree = d;
+        self
+    }
+
+    /// The same limits with at most `n` term products a product of polynomials, and a sum's
+    /// products together.
+    #[must_use]
+    pub fn max_term_products(mut self, n: u64) -> Self {
+        self.max_term_products = n;
+        self
+    }
+
+    /// The same limits with at most `n` bytes of room reserved for a result from its predicted
+    /// count of terms, with what is held beside it.
+    #[must_use]
+    pub fn max_bytes(mut self, n: u64) -> Self {
+        self.max_bytes = n;
+        self
+    }
 }
 
 impl Default for Limits {

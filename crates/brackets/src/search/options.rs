@@ -16,7 +16,14 @@ use crate::claim::Condition;
 /// assert_eq!(space.poisson_degree, 0);
 /// assert!(!space.laurent);
 /// ```
+///
+/// A degree may be added, so another crate writes no literal of all of them:
+///
+/// ```compile_fail,E0639
+/// let space = brackets::search::SearchSpace { momenta_degree: 2, ..Default::default() };
+/// ```
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+#[non_exhaustive]
 pub struct SearchSpace {
     /// Total degree in the momenta ([`SpaceVariables::momenta`](super::SpaceVariables::momenta)).
     pub momenta_degree: u32,
@@ -42,6 +49,7 @@ pub struct SearchSpace {
 
 impl SearchSpace {
     /// The same space with polynomials of total degree `≤ d` in the momenta.
+    #[must_use]
     pub fn momenta_degree(mut self, d: u32) -> Self {
         self.momenta_degree = d;
         self
@@ -49,12 +57,14 @@ impl SearchSpace {
 
     /// The same space with polynomials of total degree `≤ d` in the coordinates (`Σ|a| ≤ d`
     /// with negative powers, [`SearchSpace::laurent`]).
+    #[must_use]
     pub fn positions_degree(mut self, d: u32) -> Self {
         self.positions_degree = d;
         self
     }
 
     /// The same space with trigonometric polynomials of order `Σ|k| ≤ d` in the angles.
+    #[must_use]
     pub fn trig_degree(mut self, d: u32) -> Self {
         self.trig_degree = d;
         self
@@ -63,6 +73,7 @@ impl SearchSpace {
     /// The same space with products of powers of the radicals `r_i^{j_i}` of total degree
     /// `Σ |j_i| ≤ d`, negative powers included (on a system that declares radicals; the
     /// Kepler problem's `−k/r` and `x/r` have degree 1).
+    #[must_use]
     pub fn radicals_degree(mut self, d: u32) -> Self {
         self.radicals_degree = d;
         self
@@ -71,12 +82,14 @@ impl SearchSpace {
     /// The same space with products of the denominators `1/D_i^{k_i}` of total degree
     /// `Σ k_i ≤ d` (on a system that declares denominator atoms; Calogero's `g/(x − y)²`
     /// has degree 2).
+    #[must_use]
     pub fn denominators_degree(mut self, d: u32) -> Self {
         self.denominators_degree = d;
         self
     }
 
     /// The same space with polynomials of total degree `≤ d` in the Poisson variables.
+    #[must_use]
     pub fn poisson_degree(mut self, d: u32) -> Self {
         self.poisson_degree = d;
         self
@@ -84,12 +97,14 @@ impl SearchSpace {
 
     /// The same space with coefficients polynomial of total degree `≤ d` in the parameters
     /// kept symbolic.
+    #[must_use]
     pub fn parameters_degree(mut self, d: u32) -> Self {
         self.parameters_degree = d;
         self
     }
 
     /// The same space with negative powers of the coordinates allowed.
+    #[must_use]
     pub fn laurent(mut self) -> Self {
         self.laurent = true;
         self
@@ -192,8 +207,32 @@ pub(super) fn denominators_degree(f: &Expr) -> i64 {
         .unwrap_or(0)
 }
 
-/// What to search for and how.
+/// What to search for and how: a space ([`SearchOptions::new`]), then each other choice by a
+/// method of its name.
+///
+/// ```
+/// use brackets::search::{SearchOptions, SearchSpace, DEFAULT_MAX_PRODUCTS};
+/// use brackets::systems;
+///
+/// let rotor = systems::harmonic_rotor();
+/// let omega = rotor.vars().lookup("omega").unwrap();
+/// let space = SearchSpace::default().momenta_degree(2).positions_degree(2).trig_degree(1);
+/// let options = SearchOptions::new(space).symbolic(omega).new_only().max_products(1000);
+/// assert_eq!((options.symbolic, options.new_only, options.max_products), (vec![omega], true, 1000));
+/// assert!(!options.exact_complement && options.condition.is_none());
+/// assert_eq!(SearchOptions::new(space).max_products, DEFAULT_MAX_PRODUCTS);
+/// ```
+///
+/// A choice may be added, so another crate writes no literal of all of them:
+///
+/// ```compile_fail,E0639
+/// use brackets::search::{SearchOptions, SearchSpace};
+/// let options = SearchOptions { space: SearchSpace::default(), condition: None, fixed: vec![],
+///     symbolic: vec![], known: vec![], new_only: false, exact_complement: false,
+///     max_products: 10 };
+/// ```
 #[derive(Clone, Debug)]
+#[non_exhaustive]
 pub struct SearchOptions {
     /// The space.
     pub space: SearchSpace,
@@ -243,12 +282,14 @@ impl SearchOptions {
     }
 
     /// Under a condition.
+    #[must_use]
     pub fn when(mut self, condition: Condition) -> Self {
         self.condition = Some(condition);
         self
     }
 
     /// With a parameter fixed to a value.
+    #[must_use]
     pub fn fix(mut self, v: Var, value: Rational) -> Self {
         self.fixed.retain(|f| f.0 != v);
         self.fixed.push((v, value));
@@ -256,6 +297,7 @@ impl SearchOptions {
     }
 
     /// With a parameter kept symbolic (see [`SearchSpace::parameters_degree`]).
+    #[must_use]
     pub fn symbolic(mut self, v: Var) -> Self {
         if !self.symbolic.contains(&v) {
             self.symbolic.push(v);
@@ -264,24 +306,28 @@ impl SearchOptions {
     }
 
     /// With the complement of the known integrals' products.
+    #[must_use]
     pub fn new_only(mut self) -> Self {
         self.new_only = true;
         self
     }
 
     /// With the complement decided over Q alone ([`SearchOptions::exact_complement`]).
+    #[must_use]
     pub fn exact_complement(mut self) -> Self {
         self.exact_complement = true;
         self
     }
 
     /// With at most `n` products of integrals for the complement.
+    #[must_use]
     pub fn max_products(mut self, n: usize) -> Self {
         self.max_products = n;
         self
     }
 
     /// With an extra known integral.
+    #[must_use]
     pub fn known(mut self, name: &str, f: Expr) -> Self {
         self.known.push((name.to_string(), f));
         self

@@ -307,8 +307,18 @@ const EXCERPT_CONTEXT: usize = 40;
 
 /// The part of a source line shown under an error, and the caret under the offending span:
 /// the whole line, or for a line past 100 characters (a generated expression pasted into a
-/// file) a window of 40 characters either side of the caret, cut with `…`.
+/// file) a window of 40 characters either side of the caret, cut with `…`. Made by
+/// [`Excerpt::of`] and read. A field may be added, so a pattern of one names the fields it
+/// reads and `..`:
+///
+/// ```compile_fail,E0638
+/// fn line(excerpt: trigpoly::syntax::Excerpt) -> usize {
+///     let trigpoly::syntax::Excerpt { line, column, text, pad, width } = excerpt;
+///     line
+/// }
+/// ```
 #[derive(Clone, Debug, PartialEq, Eq)]
+#[non_exhaustive]
 pub struct Excerpt {
     /// 1-based line of the span's start.
     pub line: usize,

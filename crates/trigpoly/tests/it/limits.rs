@@ -15,11 +15,7 @@ fn small_vars() -> Vars {
         .coordinate("v")
         .coordinate("w")
         // Exponents up to 39² below: a degree limit above the default.
-        .limits(Limits {
-            max_terms: 1000,
-            max_degree: 10_000,
-            ..Limits::default()
-        })
+        .limits(Limits::default().max_terms(1000).max_degree(10_000))
         .build()
         .unwrap()
 }
@@ -31,10 +27,7 @@ fn work_vars(products: u64) -> Vars {
         .coordinate("y")
         .coordinate("z")
         .coordinate("t")
-        .limits(Limits {
-            max_term_products: products,
-            ..Limits::default()
-        })
+        .limits(Limits::default().max_term_products(products))
         .build()
         .unwrap()
 }
@@ -184,11 +177,11 @@ fn capped_vars(max_bytes: u64) -> Vars {
     ["x", "y", "z", "t", "u"]
         .into_iter()
         .fold(VarSet::builder(), |b, name| b.coordinate(name))
-        .limits(Limits {
-            max_terms: 1_000_000_000_000,
-            max_bytes,
-            ..Limits::default()
-        })
+        .limits(
+            Limits::default()
+                .max_terms(1_000_000_000_000)
+                .max_bytes(max_bytes),
+        )
         .build()
         .unwrap()
 }
@@ -405,10 +398,7 @@ fn exponent_fields_follow_the_degree_limit() {
     let phase = phase_space();
     assert_eq!((phase.len(), phase.monomial_words()), (8, 2));
     let with_degree = |vars: &VarSet, max_degree| {
-        let limits = Limits {
-            max_degree,
-            ..vars.limits()
-        };
+        let limits = vars.limits().max_degree(max_degree);
         let v = vars.with_limits(limits).unwrap();
         (v.exponent_bits(), v.monomial_words(), v.limits().max_degree)
     };
@@ -450,10 +440,7 @@ fn exponent_fields_follow_the_degree_limit() {
 /// limit, and reading `x` panicked.
 #[test]
 fn a_degree_limit_of_zero_is_refused() {
-    let zero = Limits {
-        max_degree: 0,
-        ..Limits::default()
-    };
+    let zero = Limits::default().max_degree(0);
     let refused = Err(AlgebraError::SettingOutOfRange {
         setting: Setting::MaxDegree,
         value: 0,
@@ -468,12 +455,7 @@ fn a_degree_limit_of_zero_is_refused() {
     );
     let x = coordinates(&["x"]);
     assert_eq!(x.with_limits(zero).map(|v| v.len()), refused);
-    let one = x
-        .with_limits(Limits {
-            max_degree: 1,
-            ..Limits::default()
-        })
-        .unwrap();
+    let one = x.with_limits(Limits::default().max_degree(1)).unwrap();
     assert_eq!(Poly::<Rational>::parse(&one, "x").unwrap().to_string(), "x");
     let err = Poly::<Rational>::parse(&one, "x^2").unwrap_err();
     assert!(err.to_string().contains("past the limit of 1"), "{err}");
@@ -643,10 +625,7 @@ fn product_with_limit(f: &str, g: &str, limit: usize) -> Result<usize, AlgebraEr
         .coordinate("z")
         .coordinate("t")
         .coordinate("u")
-        .limits(Limits {
-            max_terms: limit,
-            ..Limits::default()
-        })
+        .limits(Limits::default().max_terms(limit))
         .build()
         .unwrap();
     let (f, g): (Q, Q) = (p(&vars, f), p(&vars, g));
@@ -745,10 +724,7 @@ fn a_parse_error_keeps_its_cause() {
     // The expansion of a sine or cosine, `(e^{iθ} + e^{−iθ})/2`, past the term limit.
     let one_term = VarSet::builder()
         .angle("theta")
-        .limits(Limits {
-            max_terms: 1,
-            ..Limits::default()
-        })
+        .limits(Limits::default().max_terms(1))
         .build()
         .unwrap();
     for text in ["cos(theta)", "sin(theta)"] {

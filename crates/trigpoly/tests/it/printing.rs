@@ -905,10 +905,7 @@ fn the_printed_terms_are_bounded_before_they_are_formed() {
     let limited = VarSet::builder()
         .coordinate("x")
         .angle("a")
-        .limits(trigpoly::Limits {
-            max_terms: 40,
-            ..Default::default()
-        })
+        .limits(trigpoly::Limits::default().max_terms(40))
         .build()
         .unwrap();
     let wide: G = p(&limited, "(1 + x)^4*exp(9*i*a)");

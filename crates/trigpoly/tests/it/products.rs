@@ -350,10 +350,7 @@ fn a_sparse_product_written_by_a_second_thread_stops_at_the_term_limit() {
     let vars = ["x", "y", "z", "t"]
         .iter()
         .fold(VarSet::builder(), |b, name| b.coordinate(name))
-        .limits(Limits {
-            max_terms: 100_000,
-            ..Limits::default()
-        })
+        .limits(Limits::default().max_terms(100_000))
         .build()
         .expect("valid variable names");
     let (f, g): (Q, Q) = (

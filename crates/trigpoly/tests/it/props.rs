@@ -116,10 +116,7 @@ fn same_computation_in(
     let vars = ["x", "y", "z", "t", "u", "v"]
         .iter()
         .fold(trigpoly::VarSet::builder(), |b, name| b.coordinate(name))
-        .limits(trigpoly::Limits {
-            max_degree: limit,
-            ..Default::default()
-        })
+        .limits(trigpoly::Limits::default().max_degree(limit))
         .exponent_bits(bits)
         .build()
         .expect("valid names");
@@ -1358,12 +1355,12 @@ fn parser_vars() -> &'static [trigpoly::Vars; 2] {
             parameters
                 .iter()
                 .fold(builder, |b, name| b.parameter(name))
-                .limits(trigpoly::Limits {
-                    max_terms: 2_000,
-                    max_degree: 40,
-                    max_term_products: 200_000,
-                    ..trigpoly::Limits::default()
-                })
+                .limits(
+                    trigpoly::Limits::default()
+                        .max_terms(2_000)
+                        .max_degree(40)
+                        .max_term_products(200_000),
+                )
                 .build()
                 .expect("valid variable names")
         };
