@@ -49,12 +49,12 @@ impl LimitsArgs {
 /// No limit given: the defaults, with the cap on memory.
 pub fn memory_only() -> LimitsOverride {
     let mut given = LimitsOverride::default();
-    given.max_bytes = physical_memory();
+    given.max_reserved_bytes = physical_memory();
     given
 }
 
 /// The machine's physical memory in bytes, the cap on the room a result reserved from a
-/// predicted count of terms may take (`trigpoly::Limits::max_bytes`): under Linux's
+/// predicted count of terms may take (`trigpoly::Limits::max_reserved_bytes`): under Linux's
 /// overcommit the allocator grants far more address space than the machine can back, and
 /// `(r + p_r + p_φ + M + k + 1)^300` under a raised term limit filled memory instead of
 /// stopping. Read once, from `MemTotal` in `/proc/meminfo`; `None` (no cap beyond the
@@ -93,14 +93,17 @@ mod tests {
             max_degree: None,
             max_term_products: None,
         };
-        assert_eq!(none.settings().max_bytes, memory);
+        assert_eq!(none.settings().max_reserved_bytes, memory);
         let some = LimitsArgs {
             max_terms: Some(10),
             ..none
         };
-        assert_eq!(some.settings().max_bytes, memory);
-        assert_eq!(some.settings().or_defaults().max_bytes, memory.unwrap());
-        assert_eq!(memory_only().max_bytes, memory);
+        assert_eq!(some.settings().max_reserved_bytes, memory);
+        assert_eq!(
+            some.settings().or_defaults().max_reserved_bytes,
+            memory.unwrap()
+        );
+        assert_eq!(memory_only().max_reserved_bytes, memory);
     }
 
     #[test]

@@ -1576,7 +1576,7 @@ impl<'a> Builder<'a> {
                 .max_degree
                 .or(degree.map(|d| positive(d) as u32)),
             max_term_products: self.limits.max_term_products.or(work.map(positive)),
-            max_bytes: self.limits.max_bytes,
+            max_reserved_bytes: self.limits.max_reserved_bytes,
         };
         Ok(given.or_defaults())
     }

@@ -87,8 +87,9 @@ pub const DEFAULT_MAX_DEGREE: u32 = Limits::DEFAULT_MAX_DEGREE;
 /// Limits given on the command line (`--max-terms`, `--max-degree`, `--max-term-products`):
 /// they override the file's `[limits]`, which override the defaults. Each of the three given
 /// must be at least 1, as in the file: the loader refuses a 0 (an error of kind
-/// [`ErrorKind::Schema`]). The cap on memory, `max_bytes`, is taken as given: a cap of 0
-/// refuses every result whose room is reserved from a predicted count.
+/// [`ErrorKind::Schema`]). The cap on the room reserved for a result, `max_reserved_bytes`, is
+/// taken as given: a cap of 0 refuses every result whose room is reserved from a predicted
+/// count.
 ///
 /// None is given by default; each is given by a method of its name:
 ///
@@ -97,8 +98,9 @@ pub const DEFAULT_MAX_DEGREE: u32 = Limits::DEFAULT_MAX_DEGREE;
 ///
 /// let given = LimitsOverride::default().max_terms(100).max_degree(40);
 /// assert_eq!((given.max_terms, given.max_degree), (Some(100), Some(40)));
-/// let given = given.max_term_products(1_000_000).max_bytes(1 << 30);
-/// assert_eq!((given.max_term_products, given.max_bytes), (Some(1_000_000), Some(1 << 30)));
+/// let given = given.max_term_products(1_000_000).max_reserved_bytes(1 << 30);
+/// assert_eq!(given.max_term_products, Some(1_000_000));
+/// assert_eq!(given.max_reserved_bytes, Some(1 << 30));
 /// let limits = LimitsOverride::default().max_terms(100).or_defaults();
 /// assert_eq!(limits, Limits::default().max_terms(100));
 /// let rotor = load_system_file("systems/harmonic-rotor.toml", &given)?;
@@ -110,7 +112,7 @@ pub const DEFAULT_MAX_DEGREE: u32 = Limits::DEFAULT_MAX_DEGREE;
 ///
 /// ```compile_fail,E0639
 /// let given = superint::system_file::LimitsOverride { max_terms: Some(10), max_degree: None,
-///     max_term_products: None, max_bytes: None };
+///     max_term_products: None, max_reserved_bytes: None };
 /// ```
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
 #[non_exhaustive]
@@ -122,9 +124,9 @@ pub struct LimitsOverride {
     /// `--max-term-products`.
     pub max_term_products: Option<u64>,
     /// The cap on the bytes of room reserved for a result from a predicted count
-    /// ([`Limits::max_bytes`]): no flag nor file key; the command line gives the machine's
-    /// physical memory. `None`: no cap beyond the allocator's refusal.
-    pub max_bytes: Option<u64>,
+    /// ([`Limits::max_reserved_bytes`]): no flag nor file key; the command line gives the
+    /// machine's physical memory. `None`: no cap beyond the allocator's refusal.
+    pub max_reserved_bytes: Option<u64>,
 }
 
 impl LimitsOverride {
@@ -153,8 +155,8 @@ impl LimitsOverride {
     /// The same with at most `n` bytes of room reserved for a result from its predicted count
     /// of terms (the command line's is the machine's physical memory).
     #[must_use]
-    pub fn max_bytes(mut self, n: u64) -> Self {
-        self.max_bytes = Some(n);
+    pub fn max_reserved_bytes(mut self, n: u64) -> Self {
+        self.max_reserved_bytes = Some(n);
         self
     }
 
@@ -169,7 +171,7 @@ impl LimitsOverride {
                 self.max_term_products
                     .unwrap_or(Limits::DEFAULT_MAX_TERM_PRODUCTS),
             )
-            .max_bytes(self.max_bytes.unwrap_or(Limits::NO_MEMORY_CAP))
+            .max_reserved_bytes(self.max_reserved_bytes.unwrap_or(Limits::NO_MEMORY_CAP))
     }
 }
 

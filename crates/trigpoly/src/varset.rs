@@ -234,8 +234,8 @@ pub(crate) fn spelled_by(name: &str, is_letter: impl Fn(char) -> bool) -> bool {
 /// let limits = Limits::default().max_terms(10_000).max_degree(50);
 /// assert_eq!((limits.max_terms, limits.max_degree), (10_000, 50));
 /// assert_eq!(limits.max_term_products, Limits::DEFAULT_MAX_TERM_PRODUCTS);
-/// let limits = limits.max_term_products(1_000_000).max_bytes(1 << 30);
-/// assert_eq!((limits.max_term_products, limits.max_bytes), (1_000_000, 1 << 30));
+/// let limits = limits.max_term_products(1_000_000).max_reserved_bytes(1 << 30);
+/// assert_eq!((limits.max_term_products, limits.max_reserved_bytes), (1_000_000, 1 << 30));
 /// let vars = VarSet::builder().coordinate("x").limits(limits).build()?;
 /// assert_eq!(vars.limits(), limits);
 /// # Ok::<(), trigpoly::AlgebraError>(())
@@ -260,16 +260,17 @@ pub struct Limits {
     /// bracket's, together
     /// ([`AlgebraError::TooMuchSummedWork`](crate::AlgebraError::TooMuchSummedWork)).
     pub max_term_products: u64,
-    /// The most bytes that the room for a result, reserved before any work from a count of
-    /// terms predicted up front (a power by the multinomial theorem), may take with what is
-    /// held beside it at once (the terms as formed, their order for the sort, the terms
-    /// combined): past it the
+    /// The most bytes that the room reserved for a result may take with what is held beside
+    /// it at once (the terms as formed, their order for the sort, the terms combined): an
+    /// estimate from a count of terms predicted before any work (a power by the multinomial
+    /// theorem), not a measure of the memory in use, so it bounds only the results whose room
+    /// is reserved so. Past it the
     /// result is [`AlgebraError::TooLargeForMemory`](crate::AlgebraError::TooLargeForMemory)
     /// at once, as when the allocator refuses the room. The library's default,
     /// [`Limits::NO_MEMORY_CAP`], sets none beyond the allocator's refusal, which under
     /// Linux's overcommit comes only past `isize::MAX` bytes; the command line sets the
     /// machine's physical memory.
-    pub max_bytes: u64,
+    pub max_reserved_bytes: u64,
 }
 
 impl Limits {
@@ -280,7 +281,8 @@ impl Limits {
     /// seconds to a minute on one core (Fateman's `(1 + x + y + z + t)^30` times itself, 2·10⁹,
     /// passes).
     pub const DEFAULT_MAX_TERM_PRODUCTS: u64 = 10_000_000_000;
-    /// The default cap on memory, of the library: none ([`Limits::max_bytes`]).
+    /// The default cap on the room reserved for a result, of the library: none
+    /// ([`Limits::max_reserved_bytes`]).
     pub const NO_MEMORY_CAP: u64 = u64::MAX;
 
     /// The same limits with at most `n` terms in any single result.
@@ -309,8 +311,8 @@ impl Limits {
     /// The same limits with at most `n` bytes of room reserved for a result from its predicted
     /// count of terms, with what is held beside it.
     #[must_use]
-    pub fn max_bytes(mut self, n: u64) -> Self {
-        self.max_bytes = n;
+    pub fn max_reserved_bytes(mut self, n: u64) -> Self {
+        self.max_reserved_bytes = n;
         self
     }
 }
@@ -321,7 +323,7 @@ impl Default for Limits {
             max_terms: 20_000_000,
             max_degree: Limits::DEFAULT_MAX_DEGREE,
             max_term_products: Limits::DEFAULT_MAX_TERM_PRODUCTS,
-            max_bytes: Limits::NO_MEMORY_CAP,
+            max_reserved_bytes: Limits::NO_MEMORY_CAP,
         }
     }
 }

@@ -96,8 +96,9 @@ impl<C: Coefficient> Poly<C> {
     /// `Π m_i^{a_i}`; the terms are sorted once and equal monomials combined. For a short
     /// polynomial this is as many term operations as the power has terms, where repeated
     /// multiplication needs about `e` times more. The room for every term is reserved up front
-    /// and a refusal, or room past [`Limits::max_bytes`](crate::Limits::max_bytes) with the
-    /// terms' order and the terms combined held beside it, is
+    /// and a refusal, or room past
+    /// [`Limits::max_reserved_bytes`](crate::Limits::max_reserved_bytes) with the terms' order
+    /// and the terms combined held beside it, is
     /// `Err(TooLargeForMemory)`, not an abort or memory filled: a term limit raised far enough
     /// lets through a power of more terms than the machine can hold. (The short path of
     /// `gather::multinomial_power` is taken only when `Σ|c_i|^e < 2⁶²`, so for at most six
@@ -115,7 +116,7 @@ impl<C: Coefficient> Poly<C> {
         }
         let w = self.words();
         let layout = self.layout();
-        let max_bytes = self.vars.limits().max_bytes;
+        let cap = self.vars.limits().max_reserved_bytes;
         // The room for the terms first, before any work, with what is held beside them at
         // once: their order for the sort, and the terms combined, as many as the compositions
         // when each is a monomial of its own (else counted after the sort).
@@ -127,7 +128,7 @@ impl<C: Coefficient> Poly<C> {
         };
         let (mut keys, mut coeffs) = (Vec::new(), Vec::new());
         let beside = order_bytes + combined;
-        reserve_terms::<C::Int>(&mut keys, &mut coeffs, compositions, w, beside, max_bytes)?;
+        reserve_terms::<C::Int>(&mut keys, &mut coeffs, compositions, w, beside, cap)?;
         // Pascal's triangle up to e.
         let mut binom: Vec<Vec<Integer>> = vec![vec![Integer::ONE]];
         for n in 1..=e {
@@ -217,7 +218,7 @@ impl<C: Coefficient> Poly<C> {
         let distinct = 1 + order.windows(2).filter(|p| key(p[0]) != key(p[1])).count();
         let (mut out_e, mut out_c) = (Vec::new(), Vec::new());
         let held = formed + order_bytes;
-        reserve_terms::<C::Int>(&mut out_e, &mut out_c, distinct, w, held, max_bytes)?;
+        reserve_terms::<C::Int>(&mut out_e, &mut out_c, distinct, w, held, cap)?;
         let mut coeffs: Vec<Option<C::Int>> = coeffs.into_iter().map(Some).collect();
         for k in order {
             let monomial = key(k);
@@ -282,7 +283,8 @@ pub(crate) fn pow_field<C: Coefficient>(c: &C, e: i64) -> C {
 
 /// Room for `terms` terms of `words` words in `exps` and `coeffs`, reserved exactly, or
 /// `Err(TooLargeForMemory)` if it and the `beside` bytes held with it at once would take more
-/// than `max_bytes` ([`Limits::max_bytes`](crate::Limits::max_bytes)) or the allocator
+/// than `cap` ([`Limits::max_reserved_bytes`](crate::Limits::max_reserved_bytes)) or the
+/// allocator
 /// refuses it (or its size passes `isize::MAX`): for a count of terms predicted before they
 /// are formed, which a raised term limit may let grow past the machine's memory. The cap is
 /// compared first, since an allocator under overcommit grants far more address space than
@@ -293,10 +295,10 @@ pub(super) fn reserve_terms<I>(
     terms: usize,
     words: usize,
     beside: u128,
-    max_bytes: u64,
+    cap: u64,
 ) -> Result<(), AlgebraError> {
     let refused = || too_large_for_memory::<I>(terms, words, beside);
-    if term_bytes::<I>(terms, words) + beside > u128::from(max_bytes) {
+    if term_bytes::<I>(terms, words) + beside > u128::from(cap) {
         return Err(refused());
     }
     let words_needed = terms.checked_mul(words).ok_or_else(refused)?;

@@ -172,22 +172,23 @@ fn term_limit_stops_a_power_of_a_short_polynomial() {
     assert_eq!(f.checked_pow(15).map(|g| g.len()), Ok(816));
 }
 
-/// `x, y, z, t, u` with a term limit of 10¹² and the memory cap `max_bytes`.
-fn capped_vars(max_bytes: u64) -> Vars {
+/// `x, y, z, t, u` with a term limit of 10¹² and the memory cap `max_reserved_bytes`.
+fn capped_vars(max_reserved_bytes: u64) -> Vars {
     ["x", "y", "z", "t", "u"]
         .into_iter()
         .fold(VarSet::builder(), |b, name| b.coordinate(name))
         .limits(
             Limits::default()
                 .max_terms(1_000_000_000_000)
-                .max_bytes(max_bytes),
+                .max_reserved_bytes(max_reserved_bytes),
         )
         .build()
         .unwrap()
 }
 
 /// A power whose room, reserved from its predicted count of terms, would pass the cap on
-/// memory (`Limits::max_bytes`) is `TooLargeForMemory` before any work, as when the allocator
+/// memory (`Limits::max_reserved_bytes`) is `TooLargeForMemory` before any work, as when the
+/// allocator
 /// refuses it: `(1 + x + y + z + t + u)^300`, of C(305, 5) = 21 281 794 436 terms (about
 /// 340 GB), was granted its room by an allocator under Linux's overcommit and filled the
 /// machine's memory; under a cap of a mebibyte it stops at once, with nothing allocated (its
@@ -217,7 +218,7 @@ fn a_power_past_the_memory_cap_is_refused_before_any_work() {
     let uncapped = capped_vars(Limits::NO_MEMORY_CAP);
     let g: Q = p(&uncapped, "1 + x + y + z + t + u");
     assert_eq!(g.checked_pow(30).map(|g| g.len()), Ok(C(35, 5)));
-    assert_eq!(Limits::default().max_bytes, Limits::NO_MEMORY_CAP);
+    assert_eq!(Limits::default().max_reserved_bytes, Limits::NO_MEMORY_CAP);
 }
 
 /// The cap on memory counts all that a power by the multinomial theorem holds at once, not its
