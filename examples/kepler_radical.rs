@@ -1,5 +1,5 @@
 //! The planar Kepler problem in Cartesian coordinates, built in code: the distance
-//! `r = √(x² + y²)` is a radical (`VarSetBuilder::radical`), so that `−k/r` is exact and
+//! `r = √(x² + y²)` is a radical (`VarsBuilder::radical`), so that `−k/r` is exact and
 //! `{r, p_x} = x/r`. The Laplace–Runge–Lenz vector is proved conserved, its brackets closing
 //! on `−2HL/M`, a false neighbour refuted; then a search from `H` alone finds it.
 //!
@@ -8,7 +8,7 @@
 use superint::prelude::*;
 
 fn main() -> Result<(), Box<dyn std::error::Error>> {
-    let vars = VarSet::builder()
+    let vars = Vars::builder()
         .coordinate("x")
         .coordinate("y")
         .momentum("p_x")

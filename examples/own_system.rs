@@ -9,7 +9,7 @@
 use superint::prelude::*;
 
 fn main() -> Result<(), Box<dyn std::error::Error>> {
-    let vars = VarSet::builder()
+    let vars = Vars::builder()
         .coordinate("x")
         .coordinate("y")
         .angle("phi")

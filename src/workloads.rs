@@ -19,7 +19,7 @@ use std::str::FromStr;
 
 use brackets::{systems, EngineError, System};
 use rayon::prelude::*;
-use trigpoly::{Expr, Poly, Rational, VarSet, Vars};
+use trigpoly::{Expr, Poly, Rational, Vars};
 
 /// One workload with its size.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
@@ -202,7 +202,7 @@ impl Workload {
 }
 
 fn product_vars() -> Vars {
-    VarSet::builder()
+    Vars::builder()
         .coordinate("x")
         .coordinate("y")
         .coordinate("z")

@@ -3,7 +3,7 @@
 use std::sync::Arc;
 
 use brackets::{systems, EngineError, System};
-use trigpoly::{Expr, VarSet};
+use trigpoly::{Expr, Vars};
 
 use super::{Item, PaperOptions, Section, SectionBuilder};
 use crate::report::ClaimKind;
@@ -258,7 +258,7 @@ fn functional_independence(s: &mut SectionBuilder) -> Result<(), EngineError> {
 
 /// C06: the closed-form solution, with `φ = ωt` as an angle and `t` a parameter.
 fn solution(s: &mut SectionBuilder) -> Result<(), EngineError> {
-    let vars = VarSet::builder()
+    let vars = Vars::builder()
         .angle("phi")
         .parameter("x_0")
         .parameter("y_0")

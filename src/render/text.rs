@@ -661,7 +661,7 @@ mod tests {
     /// the claim's last line (both ran on as one line of a thousand characters).
     #[test]
     fn a_long_claim_and_its_residual_wrap() {
-        let vars = trigpoly::VarSet::builder()
+        let vars = trigpoly::Vars::builder()
             .coordinate("x")
             .momentum("p")
             .build()

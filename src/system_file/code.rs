@@ -90,7 +90,7 @@ impl LoadedSystem {
     /// rotor.add_claim("conserved", "{N, H} = 0", None)?;
     /// assert!(check_report([&rotor])?.all_as_expected());
     /// // A value of another variable set names no variable of this one.
-    /// let other = VarSet::builder().coordinate("q").build()?;
+    /// let other = Vars::builder().coordinate("q").build()?;
     /// let err = rotor.add_function_expr("W", "W", Expr::parse(&other, "q")?).unwrap_err();
     /// assert_eq!(err.kind, ErrorKind::Expression);
     /// # Ok::<(), FileError>(())
@@ -130,7 +130,7 @@ impl LoadedSystem {
     /// use superint::prelude::*;
     ///
     /// // The 2-d isotropic oscillator with its ladder functions, in code, with names of our own.
-    /// let vars = VarSet::builder()
+    /// let vars = Vars::builder()
     ///     .coordinate("x").coordinate("y").momentum("p_x").momentum("p_y").parameter("k")
     ///     .build()?;
     /// let space = PhaseSpace::new(&vars, &[("x", "p_x"), ("y", "p_y")])?;
@@ -273,7 +273,7 @@ impl LoadedSystem {
             Err(Refusal::Alike(why)) => format!("{why}: rename one, or give it another display"),
             Err(Refusal::Product(why)) if self.source.program => format!(
                 "{why}: choose another name, or give it to the variables when they are built \
-                 (VarSetBuilder::also_named), which has such products printed spaced"
+                 (VarsBuilder::also_named), which has such products printed spaced"
             ),
             Err(Refusal::Product(why)) => format!(
                 "{why}: choose another name, or declare the function in the file, whose \

@@ -432,7 +432,7 @@ impl From<Excerpt> for Location {
 /// fn energy(vars: &Vars, text: &str) -> Result<Expr, FileError> {
 ///     Ok(Expr::parse(vars, text)?)
 /// }
-/// let vars = VarSet::builder().coordinate("x").momentum("p_x").build().unwrap();
+/// let vars = Vars::builder().coordinate("x").momentum("p_x").build().unwrap();
 /// let err = energy(&vars, "p_x^2/2 +\n x^^2").unwrap_err();
 /// assert_eq!((err.kind, err.line_col()), (ErrorKind::Expression, Some((2, 4))));
 /// assert!(err.to_string().starts_with("<expression>:2:4: "), "{err}");
@@ -487,7 +487,7 @@ mod tests {
     /// one past 80 characters by its start as the message shows it; a syntax error has none.
     #[test]
     fn an_expression_error_keeps_its_cause() {
-        let vars = trigpoly::VarSet::builder()
+        let vars = trigpoly::Vars::builder()
             .coordinate("x")
             .momentum("p_x")
             .build()

@@ -10,7 +10,7 @@ use std::sync::Mutex;
 
 use brackets::{EngineError, PhaseSpace, System};
 use toml::Spanned;
-use trigpoly::{AlgebraError, Expr, Limits, Var, VarKind, VarSet, VarSetBuilder, Vars};
+use trigpoly::{AlgebraError, Expr, Limits, Var, VarKind, VarSet, Vars, VarsBuilder};
 
 use super::claims::ClaimSpec;
 use super::error::{locate_bytes, ErrorKind, FileError, Warnings};
@@ -870,9 +870,9 @@ impl<'a> Builder<'a> {
     fn radicals(
         &self,
         declared: &[(Spanned<String>, Spanned<String>)],
-        mut builder: VarSetBuilder,
+        mut builder: VarsBuilder,
         vars: Vars,
-    ) -> Result<(VarSetBuilder, Vars), FileError> {
+    ) -> Result<(VarsBuilder, Vars), FileError> {
         if declared.is_empty() {
             return Ok((builder, vars));
         }
@@ -919,7 +919,7 @@ impl<'a> Builder<'a> {
     fn denominators(
         &self,
         declared: &[Spanned<String>],
-        builder: VarSetBuilder,
+        builder: VarsBuilder,
         mut vars: Vars,
     ) -> Result<Vars, FileError> {
         let mut builder = builder;
@@ -1098,7 +1098,7 @@ impl<'a> Builder<'a> {
     }
 
     /// The variables of `builder`, a name refused at its place in `[phase_space]`.
-    fn built(&self, model: &SystemModel, builder: VarSetBuilder) -> Result<Vars, FileError> {
+    fn built(&self, model: &SystemModel, builder: VarsBuilder) -> Result<Vars, FileError> {
         let ps = model.phase_space.get_ref();
         builder.build().map_err(|e| {
             // Two names that one spelling finds (`omega` and `ω`), or that LaTeX prints
@@ -1656,13 +1656,13 @@ fn variables_builder(
     functions: &[Spanned<FunctionModel>],
     limits: Limits,
     shown: &[ShownVariable],
-) -> VarSetBuilder {
+) -> VarsBuilder {
     // Each variable printed as its display shows it, if it has one.
-    let show = |builder: VarSetBuilder, name: &str| match shown.iter().find(|s| s.name == name) {
+    let show = |builder: VarsBuilder, name: &str| match shown.iter().find(|s| s.name == name) {
         Some(s) => builder.printed_as(&s.text, &s.latex),
         None => builder,
     };
-    let mut builder = VarSet::builder().limits(limits);
+    let mut builder = Vars::builder().limits(limits);
     for c in &ps.coordinates {
         builder = show(builder.coordinate(c.get_ref()), c.get_ref());
     }

@@ -161,7 +161,7 @@ impl LoadedSystem {
                 .find(|c: char| !in_run(c))
                 .map_or(rest.len(), |k| at + k);
             let run: Vec<&str> = rest[start..end].split(JUXTAPOSED).collect();
-            // The file's variables know its functions' names too (`VarSetBuilder::also_named`).
+            // The file's variables know its functions' names too (`VarsBuilder::also_named`).
             let ambiguous = self.system.vars().juxtaposition_is_ambiguous(&run);
             out.push_str(&rest[..start]);
             out.push_str(&run.join(if ambiguous { " " } else { "" }));

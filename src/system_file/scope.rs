@@ -1185,7 +1185,7 @@ mod tests {
             ("x^(-65535/2)", true),
             ("x^(32767/2)", false),
         ] {
-            let vars = trigpoly::VarSet::builder()
+            let vars = trigpoly::Vars::builder()
                 .coordinate("x")
                 .limits(trigpoly::Limits::default().max_degree(1000))
                 .build()
@@ -1284,7 +1284,7 @@ mod tests {
         let long = format!("r{}", "1".repeat(100));
         assert_eq!(distance_hint(&unknown(&long, &known)), None);
         // The cause of a real parse, whose message suggests a name before the known ones.
-        let vars = trigpoly::VarSet::builder()
+        let vars = trigpoly::Vars::builder()
             .coordinate("q1")
             .momentum("p_q1")
             .build()

@@ -15,7 +15,7 @@
 //! use superint::trajectory::{Flow, Numeric};
 //!
 //! // A harmonic oscillator, M = ω = 1: a circle in the phase plane.
-//! let vars = VarSet::builder().coordinate("x").momentum("p_x").build()?;
+//! let vars = Vars::builder().coordinate("x").momentum("p_x").build()?;
 //! let space = PhaseSpace::new(&vars, &[("x", "p_x")])?;
 //! let h = Expr::parse(&vars, "(p_x^2 + x^2)/2")?;
 //! let flow = Flow::new(&space, &h)?;
@@ -716,7 +716,7 @@ mod tests {
 
     /// The flow of `h` on the phase plane `(x, p)`.
     fn one_degree_of_freedom(h: &str) -> Flow {
-        let vars = trigpoly::VarSet::builder()
+        let vars = trigpoly::Vars::builder()
             .coordinate("x")
             .momentum("p")
             .build()
@@ -728,7 +728,7 @@ mod tests {
     /// Hénon–Heiles (`A = B = 1`, `C = −1/3`) from a bounded orbit: the largest change of
     /// `H` over `time` in `steps` steps of `method`.
     fn henon_heiles_drift(method: Method, time: f64, steps: usize) -> f64 {
-        let vars = trigpoly::VarSet::builder()
+        let vars = trigpoly::Vars::builder()
             .coordinate("x")
             .coordinate("y")
             .momentum("p_x")
@@ -791,7 +791,7 @@ mod tests {
     /// is evaluated through its polynomial, and without the atoms it has no value.
     #[test]
     fn a_flow_through_a_denominator_follows_the_exact_solution() {
-        let vars = trigpoly::VarSet::builder()
+        let vars = trigpoly::Vars::builder()
             .coordinate("x")
             .coordinate("y")
             .momentum("p_x")

@@ -204,8 +204,8 @@ fn names_with_greek_letters_digits_and_subscripts_read_back_from_latex() {
 /// are nobody's are a malformed instance, as before.
 #[test]
 fn a_name_that_latex_spells_as_two_is_refused_naming_both() {
-    use superint::prelude::{Expr, PhaseSpace, System, VarSet};
-    let vars = VarSet::builder()
+    use superint::prelude::{Expr, PhaseSpace, System, Vars};
+    let vars = Vars::builder()
         .coordinate("x")
         .momentum("p_x")
         .parameter("omicron")

@@ -7,7 +7,7 @@ use superint::prelude::*;
 /// A rigid rotor (angle `phi`, inertia `J`) on the oscillator of frequency `k`, in code, with
 /// its ladder function `A` and `Ω = p_φ/J`: the paper's harmonic rotor in other names.
 fn own_rotor() -> LoadedSystem {
-    let vars = VarSet::builder()
+    let vars = Vars::builder()
         .coordinate("x")
         .coordinate("y")
         .angle("phi")
@@ -331,7 +331,7 @@ fn a_found_integral_becomes_a_function_of_the_file() {
     let alike = rotor.add_function_expr("G_1", "G_1", x).unwrap_err();
     assert_eq!(alike.kind, ErrorKind::Name, "{alike}");
     assert!(alike.message.contains("as the function G1 does"), "{alike}");
-    let other = VarSet::builder().coordinate("x").build().unwrap();
+    let other = Vars::builder().coordinate("x").build().unwrap();
     let foreign = Expr::parse(&other, "x").unwrap();
     let mismatch = rotor.add_function_expr("X", "X", foreign).unwrap_err();
     assert_eq!(mismatch.kind, ErrorKind::Expression);
@@ -395,7 +395,7 @@ fn the_loaders_names_are_the_variable_sets_and_h_and_rank() {
     let mut rotor = harmonic_rotor_file();
     for name in ["2Q", "a b", "a_", "_a", "a__b", "θé", "x²"] {
         let why = trigpoly::BadName::of(name).expect(name).to_string();
-        let vars = VarSet::builder().coordinate(name).build().map(|_| ());
+        let vars = Vars::builder().coordinate(name).build().map(|_| ());
         assert_eq!(
             vars.unwrap_err().to_string(),
             format!("{name:?} cannot name a variable: {why}"),
@@ -418,7 +418,7 @@ fn the_loaders_names_are_the_variable_sets_and_h_and_rank() {
     // its start and its length; one of 80 is taken.
     let long = "a".repeat(81);
     let why = "a name has at most 80 characters";
-    let vars = VarSet::builder().coordinate(&long).build().map(|_| ());
+    let vars = Vars::builder().coordinate(&long).build().map(|_| ());
     let start = "a".repeat(40);
     assert_eq!(
         vars.unwrap_err().to_string(),
@@ -446,7 +446,7 @@ fn the_loaders_names_are_the_variable_sets_and_h_and_rank() {
         ("H", "'H' is reserved for the Hamiltonian"),
     ] {
         assert_eq!(file(name).map(|_| ()).unwrap_err().message, why);
-        let taken = VarSet::builder().coordinate(name).build().map(|_| ());
+        let taken = Vars::builder().coordinate(name).build().map(|_| ());
         assert_eq!(taken.is_ok(), name != "cos", "{name}");
     }
 }
@@ -989,10 +989,7 @@ fn a_programs_error_type_matches_on_kinds() {
         }
     }
     fn flow_of_q(h: &str, twice: bool) -> Result<String, Mine> {
-        let mut builder = VarSet::builder()
-            .coordinate("q")
-            .momentum("p")
-            .parameter("m");
+        let mut builder = Vars::builder().coordinate("q").momentum("p").parameter("m");
         if twice {
             builder = builder.parameter("q");
         }
@@ -1134,7 +1131,7 @@ fn report_errors_name_the_program_not_the_command_line() {
         "<expression>:1:1: 'B' is not a function of the own rotor (known: H, A, Omega, x, y, p_x, \
          p_y, p_phi)\n 1 | B\n   | ^"
     );
-    let vars = VarSet::builder()
+    let vars = Vars::builder()
         .coordinate("q")
         .momentum("p")
         .build()
@@ -1170,7 +1167,7 @@ fn report_errors_name_the_program_not_the_command_line() {
 /// file's are.
 #[test]
 fn a_parse_error_keeps_its_place_under_question_mark() {
-    let vars = VarSet::builder()
+    let vars = Vars::builder()
         .coordinate("x")
         .momentum("p_x")
         .parameter("k")
@@ -1225,7 +1222,7 @@ fn names_added_in_code_print_apart() {
         err.message,
         "the function kx would read back from the product k x of the variables, which prints \
          as kx: choose another name, or give it to the variables when they are built \
-         (VarSetBuilder::also_named), which has such products printed spaced"
+         (VarsBuilder::also_named), which has such products printed spaced"
     );
     // Its display alone may spell the product too.
     let err = rotor.add_function("P", "kJ", "k*J").unwrap_err();
@@ -1248,7 +1245,7 @@ fn names_added_in_code_print_apart() {
     assert_eq!(rotor.system().functions().len(), functions + 1);
 
     // Variables built knowing the name: the function is taken, and the product spaced.
-    let vars = VarSet::builder()
+    let vars = Vars::builder()
         .coordinate("x")
         .momentum("p_x")
         .parameter("k")
@@ -1379,8 +1376,8 @@ fn a_programs_long_residual_names_the_render_option() {
 #[test]
 fn a_paper_claim_of_kind_rank_is_refused_before_its_sides_are_computed() {
     use superint::paper::PaperClaim;
-    let one = VarSet::builder().coordinate("x").build().unwrap();
-    let other = VarSet::builder().coordinate("y").build().unwrap();
+    let one = Vars::builder().coordinate("x").build().unwrap();
+    let other = Vars::builder().coordinate("y").build().unwrap();
     let claim = Claim::new(
         "R1",
         "rank(x) = 1",

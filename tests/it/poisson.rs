@@ -11,7 +11,7 @@ use brackets::{EngineError, PhaseSpace, System};
 use serde_json::Value;
 use std::collections::HashMap;
 use superint::system_file::{load, LimitsOverride, LoadedSystem};
-use trigpoly::{Expr, Rational, VarSet};
+use trigpoly::{Expr, Rational, Vars};
 
 use crate::superint;
 
@@ -29,7 +29,7 @@ fn text(bytes: &[u8]) -> String {
 
 /// so(3)* with `{M1, M2} = M3` and cyclically, built in code.
 fn so3() -> (trigpoly::Vars, PhaseSpace) {
-    let vars = VarSet::builder()
+    let vars = Vars::builder()
         .poisson("M1")
         .poisson("M2")
         .poisson("M3")
@@ -134,7 +134,7 @@ fn lie_poisson_bracket_jacobi_leibniz_and_antisymmetry() {
 
 #[test]
 fn library_api_refuses_what_is_not_a_poisson_structure() {
-    let vars = VarSet::builder()
+    let vars = Vars::builder()
         .coordinate("x")
         .momentum("p_x")
         .poisson("S1")
@@ -232,7 +232,7 @@ fn a_long_jacobi_violation_is_said_in_part() {
         "{stderr}"
     );
     // The library's violation: the whole residual, the message in part.
-    let vars = VarSet::builder()
+    let vars = Vars::builder()
         .poisson("M1")
         .poisson("M2")
         .poisson("M3")

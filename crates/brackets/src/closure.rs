@@ -36,7 +36,7 @@ use itertools::Itertools;
 use std::collections::HashMap;
 use std::time::Instant;
 
-use trigpoly::{AlgebraError, Expr, GaussianRational, Rational, Style, Var, VarKind, VarSet, Vars};
+use trigpoly::{AlgebraError, Expr, GaussianRational, Rational, Style, Var, VarKind, Vars};
 
 use crate::claim::Condition;
 use crate::error::EngineError;
@@ -808,7 +808,7 @@ struct PrintingRing {
 fn printing_ring(vars: &Vars, generators: &[NamedFunction]) -> Result<PrintingRing, EngineError> {
     // The system's limits, which the command line and the file set: the ring's own default
     // refused a generator `a^1500` at a degree limit of 1000 that no --max-degree raised.
-    let mut builder = VarSet::builder().limits(vars.limits());
+    let mut builder = Vars::builder().limits(vars.limits());
     for v in vars.vars() {
         let p = vars.variable(v);
         if p.kind() == VarKind::Parameter {
@@ -1069,7 +1069,7 @@ mod tests {
     #[test]
     fn functions_of_another_variable_set_are_refused() {
         let rotor = systems::harmonic_rotor();
-        let vars = VarSet::builder().coordinate("q").build().unwrap();
+        let vars = Vars::builder().coordinate("q").build().unwrap();
         let q = Expr::parse(&vars, "q").unwrap();
         let l = NamedFunction::new("L", "L", rotor.get("L").unwrap().clone());
         let foreign = [l.clone(), NamedFunction::new("Q", "Q", q.clone())];
@@ -1174,7 +1174,7 @@ mod tests {
     /// `x, y` with their momenta, the parameters `a, b` and the atoms `x − y`, `x − a` and
     /// `a − b`; `H = (p_x² + p_y²)/2 + 1/(x − y)²` and the functions `(name, value)`.
     fn with_atoms(functions: &[(&str, &str)]) -> System {
-        let vars = VarSet::builder()
+        let vars = Vars::builder()
             .coordinate("x")
             .coordinate("y")
             .momentum("p_x")

@@ -72,8 +72,8 @@ impl Gradient {
 ///
 /// ```
 /// use brackets::PhaseSpace;
-/// use trigpoly::{Expr, VarSet};
-/// let vars = VarSet::builder().coordinate("x").momentum("p_x").build().unwrap();
+/// use trigpoly::{Expr, Vars};
+/// let vars = Vars::builder().coordinate("x").momentum("p_x").build().unwrap();
 /// let space = PhaseSpace::new(&vars, &[("x", "p_x")]).unwrap();
 /// let x = Expr::parse(&vars, "x").unwrap();
 /// let p = Expr::parse(&vars, "p_x").unwrap();
@@ -85,8 +85,8 @@ impl Gradient {
 ///
 /// ```
 /// use brackets::PhaseSpace;
-/// use trigpoly::{Expr, VarSet};
-/// let vars = VarSet::builder().poisson("M1").poisson("M2").poisson("M3").build().unwrap();
+/// use trigpoly::{Expr, Vars};
+/// let vars = Vars::builder().poisson("M1").poisson("M2").poisson("M3").build().unwrap();
 /// let e = |s: &str| Expr::parse(&vars, s).unwrap();
 /// let space = PhaseSpace::new(&vars, &[])
 ///     .unwrap()
@@ -304,10 +304,10 @@ impl PhaseSpace {
     ///
     /// ```
     /// use brackets::{EngineError, PhaseSpace};
-    /// use trigpoly::{Expr, VarSet};
+    /// use trigpoly::{Expr, Vars};
     ///
     /// // so(3)*, the Euler top's space: {M1, M2} = M3 and cyclically, no canonical pairs.
-    /// let vars = VarSet::builder().poisson("M1").poisson("M2").poisson("M3").build()?;
+    /// let vars = Vars::builder().poisson("M1").poisson("M2").poisson("M3").build()?;
     /// let m = |s: &str| Expr::parse(&vars, s);
     /// let so3 = PhaseSpace::new(&vars, &[])?.with_brackets(&[
     ///     ("M1", "M2", m("M3")?),
@@ -719,13 +719,13 @@ fn times(e: Expr, rate: Option<&Expr>) -> Result<Expr, EngineError> {
 #[cfg(test)]
 mod tests {
     use super::PhaseSpace;
-    use trigpoly::{Expr, VarSet};
+    use trigpoly::{Expr, Vars};
 
     /// A space built in code with the atom `1/(x − y)`: the chain rule, and the Jacobi
     /// identity of brackets that involve it, decided by clearing.
     #[test]
     fn an_atoms_brackets_are_the_chain_rule_and_poisson() {
-        let vars = VarSet::builder()
+        let vars = Vars::builder()
             .coordinate("x")
             .coordinate("y")
             .momentum("p_x")
@@ -758,7 +758,7 @@ mod tests {
     /// of brackets that involve both, and dependent radicals refused.
     #[test]
     fn a_radicals_brackets_are_the_chain_rule_and_poisson() {
-        let builder = VarSet::builder()
+        let builder = Vars::builder()
             .coordinate("x")
             .coordinate("y")
             .momentum("p_x")
@@ -798,7 +798,7 @@ mod tests {
     /// alone, holds and is kept.
     #[test]
     fn the_jacobi_identity_counts_the_brackets_of_a_radical_in_a_declared_value() {
-        let builder = VarSet::builder()
+        let builder = Vars::builder()
             .coordinate("x")
             .coordinate("y")
             .momentum("p_x")
@@ -828,7 +828,7 @@ mod tests {
     /// triple's variables share (the brackets of value 0 count in the places too).
     #[test]
     fn a_jacobi_violation_names_the_bracket_that_breaks_it() {
-        let vars = VarSet::builder()
+        let vars = Vars::builder()
             .coordinate("x")
             .momentum("p_x")
             .poisson("M1")

@@ -651,7 +651,7 @@ mod tests {
     /// The minor's seven functions alone keep the rank; six of them have rank 6.
     #[test]
     fn the_upper_bound_expands_only_the_bordering_minors() {
-        let mut builder = trigpoly::VarSet::builder();
+        let mut builder = trigpoly::Vars::builder();
         for i in 1..=5 {
             builder = builder
                 .coordinate(&format!("x{i}"))

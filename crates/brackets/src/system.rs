@@ -98,12 +98,12 @@ impl System {
     ///
     /// ```
     /// use brackets::{systems, EngineError};
-    /// use trigpoly::{AlgebraError, Expr, VarSet};
+    /// use trigpoly::{AlgebraError, Expr, Vars};
     ///
     /// let mut rotor = systems::harmonic_rotor();
     /// let own = rotor.parse("x*p_y - y*p_x")?;
     /// rotor.define("Lz", "L_z", own)?;
-    /// let elsewhere = VarSet::builder().coordinate("x").momentum("p_x").build()?;
+    /// let elsewhere = Vars::builder().coordinate("x").momentum("p_x").build()?;
     /// let foreign = Expr::parse(&elsewhere, "x*p_x")?;
     /// let refused = rotor.define("D", "D", foreign).unwrap_err();
     /// assert_eq!(refused, EngineError::Algebra(AlgebraError::VarSetMismatch));
@@ -312,10 +312,10 @@ impl System {
     ///
     /// ```
     /// use brackets::{PhaseSpace, System};
-    /// use trigpoly::{Expr, VarSet};
+    /// use trigpoly::{Expr, Vars};
     ///
     /// // The Kepler problem in the plane, with r = √(x² + y²).
-    /// let vars = VarSet::builder()
+    /// let vars = Vars::builder()
     ///     .coordinate("x").coordinate("y").momentum("p_x").momentum("p_y")
     ///     .parameter("k").radical("r", "x^2 + y^2")
     ///     .build()?;

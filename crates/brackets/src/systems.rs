@@ -2,7 +2,7 @@
 //! rod `I = ML²/12`), the rotor under gravity, the anisotropic rotor; with their named functions
 //! and the resonant families `K_{m,n} = Z^m e^{−inθ}`.
 
-use trigpoly::{Expr, Limits, VarSet, Vars};
+use trigpoly::{Expr, Limits, Vars};
 
 use crate::error::EngineError;
 use crate::phase::PhaseSpace;
@@ -16,7 +16,7 @@ pub fn rotor_vars(parameters: &[&str]) -> Vars {
 
 /// [`rotor_vars`] with `limits`.
 fn rotor_vars_with(parameters: &[&str], limits: Limits) -> Result<Vars, EngineError> {
-    let mut b = VarSet::builder()
+    let mut b = Vars::builder()
         .limits(limits)
         .coordinate("x")
         .coordinate("y")

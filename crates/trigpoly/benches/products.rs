@@ -6,7 +6,7 @@
 //! imaginary, `(3x + 5iy^7 + 7z^13 − 11it^23)^20` squared (the 256-bit sums).
 
 use divan::{black_box, Bencher};
-use trigpoly::{Coefficient, GaussianRational, Poly, Rational, VarSet, Vars};
+use trigpoly::{Coefficient, GaussianRational, Poly, Rational, Vars};
 
 fn main() {
     divan::main();
@@ -16,7 +16,7 @@ type Q = Poly<Rational>;
 
 /// The coordinates `x, y, z, t`.
 fn xyzt() -> Vars {
-    VarSet::builder()
+    Vars::builder()
         .coordinate("x")
         .coordinate("y")
         .coordinate("z")

@@ -429,7 +429,7 @@ pub enum Setting {
     /// The degree limit, [`Limits::max_degree`](crate::Limits::max_degree): at least 1.
     MaxDegree,
     /// The bits per exponent of
-    /// [`VarSetBuilder::exponent_bits`](crate::VarSetBuilder::exponent_bits): one of
+    /// [`VarsBuilder::exponent_bits`](crate::VarsBuilder::exponent_bits): one of
     /// [`FIELD_BITS`].
     ExponentBits,
     /// The number of variables: at most 65 535.

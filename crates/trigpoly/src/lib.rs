@@ -17,9 +17,9 @@
 //!   keep it on the calling thread.
 //!
 //! ```
-//! use trigpoly::{GaussianRational, Poly, VarSet};
+//! use trigpoly::{GaussianRational, Poly, Vars};
 //!
-//! let vars = VarSet::builder()
+//! let vars = Vars::builder()
 //!     .coordinate("x")
 //!     .momentum("p_x")
 //!     .angle("theta")
@@ -75,7 +75,7 @@ pub use syntax::{Excerpt, ParseCause, ParseError, Span};
 pub use varset::{
     display_forms, greek_latex, has_several_words, is_identifier, juxtaposition_is_ambiguous,
     latex_unwritable, momentum_forms, shown_forms, shown_text, unbarred, under_one_bar,
-    with_indices, BadName, Limits, Var, VarKind, VarSet, VarSetBuilder, Variable, Vars, FIELD_BITS,
+    with_indices, BadName, Limits, Var, VarKind, VarSet, Variable, Vars, VarsBuilder, FIELD_BITS,
     LATEX_LETTERS, MAX_NAME_CHARS, RESERVED,
 };
 

@@ -61,8 +61,8 @@ pub enum BracketError {
 /// and `a` are more likely names of their own, or slips ([`Doubt`] says which rule saw it).
 ///
 /// ```
-/// use trigpoly::{Doubt, NoContext, Poly, Rational, VarSet};
-/// let vars = VarSet::builder().coordinate("x").parameter("omega").parameter("a").build()?;
+/// use trigpoly::{Doubt, NoContext, Poly, Rational, Vars};
+/// let vars = Vars::builder().coordinate("x").parameter("omega").parameter("a").build()?;
 /// let read = |s: &str| Poly::<Rational>::parse_noting(&vars, s, &NoContext);
 /// let (p, noted) = read("x + omegaa")?;
 /// assert_eq!(p, Poly::parse(&vars, "x + omega*a")?);
@@ -245,8 +245,8 @@ impl<C: Coefficient> Poly<C> {
     /// Parses an expression in the variables of `vars`.
     ///
     /// ```
-    /// use trigpoly::{Poly, Rational, VarSet};
-    /// let vars = VarSet::builder().coordinate("x").momentum("p_x").parameter("M").build().unwrap();
+    /// use trigpoly::{Poly, Rational, Vars};
+    /// let vars = Vars::builder().coordinate("x").momentum("p_x").parameter("M").build().unwrap();
     /// let h = Poly::<Rational>::parse(&vars, "p_x^2/(2*M) + M*x^2/2").unwrap();
     /// assert_eq!(h.to_string(), "p_x²/(2M) + Mx²/2");
     /// let err = Poly::<Rational>::parse(&vars, "x/(1+x)").unwrap_err();
@@ -258,9 +258,9 @@ impl<C: Coefficient> Poly<C> {
     /// written, where `x_1` names no `x1`.
     ///
     /// ```
-    /// use trigpoly::{Expr, Style, VarSet};
+    /// use trigpoly::{Expr, Style, Vars};
     ///
-    /// let vars = VarSet::builder()
+    /// let vars = Vars::builder()
     ///     .coordinate("x1").angle("theta2").momentum("p1").momentum("p_theta2")
     ///     .build()?;
     /// let e = Expr::parse(&vars, "p1^2*cos(theta2) + x1")?;

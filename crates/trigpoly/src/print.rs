@@ -107,8 +107,8 @@ impl<C: Coefficient> Poly<C> {
     /// computed once for all of them.
     ///
     /// ```
-    /// use trigpoly::{Poly, Rational, Style, VarSet};
-    /// let vars = VarSet::builder().coordinate("x").momentum("p_x").parameter("M").build().unwrap();
+    /// use trigpoly::{Poly, Rational, Style, Vars};
+    /// let vars = Vars::builder().coordinate("x").momentum("p_x").parameter("M").build().unwrap();
     /// let h = Poly::<Rational>::parse(&vars, "p_x^2/(2*M)").unwrap();
     /// let [text, latex] = h.render_each([Style::Unicode, Style::Latex]);
     /// assert_eq!((text, latex), (h.to_string(), h.to_latex()));
@@ -457,7 +457,7 @@ pub fn superscript(e: i64) -> String {
 struct Names {
     /// The name of each variable, by index.
     names: Vec<String>,
-    /// Whether text sets each variable apart as a word, by index ([`crate::VarSetBuilder::word`]).
+    /// Whether text sets each variable apart as a word, by index ([`crate::VarsBuilder::word`]).
     words: Vec<bool>,
     /// Whether each variable's name is several words (`Re K`), by index: with a power or a
     /// factor after it, it is set in parentheses, `(Re K)² H_x`, where `Re K² H_x` would read

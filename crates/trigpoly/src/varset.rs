@@ -108,7 +108,7 @@ pub struct Variable {
     /// The unicode form with its Greek letters spelled out (`p_theta` for `p_θ`), when it has
     /// any: a third spelling that [`VarSet::lookup`] takes.
     spelled_out: Option<String>,
-    /// The name in ASCII ([`Variable::ascii`]), which a display ([`VarSetBuilder::shown_as`])
+    /// The name in ASCII ([`Variable::ascii`]), which a display ([`VarsBuilder::shown_as`])
     /// leaves as it is: a fourth spelling that [`VarSet::lookup`] takes.
     ascii: String,
     kind: VarKind,
@@ -143,7 +143,7 @@ impl Variable {
     pub fn kind(&self) -> VarKind {
         self.kind
     }
-    /// Whether text sets the variable apart in a product as a word ([`VarSetBuilder::word`]).
+    /// Whether text sets the variable apart in a product as a word ([`VarsBuilder::word`]).
     pub fn is_word(&self) -> bool {
         self.word
     }
@@ -229,14 +229,14 @@ pub(crate) fn spelled_by(name: &str, is_letter: impl Fn(char) -> bool) -> bool {
 /// they are named:
 ///
 /// ```
-/// use trigpoly::{Limits, VarSet};
+/// use trigpoly::{Limits, Vars};
 ///
 /// let limits = Limits::default().max_terms(10_000).max_degree(50);
 /// assert_eq!((limits.max_terms, limits.max_degree), (10_000, 50));
 /// assert_eq!(limits.max_term_products, Limits::DEFAULT_MAX_TERM_PRODUCTS);
 /// let limits = limits.max_term_products(1_000_000).max_reserved_bytes(1 << 30);
 /// assert_eq!((limits.max_term_products, limits.max_reserved_bytes), (1_000_000, 1 << 30));
-/// let vars = VarSet::builder().coordinate("x").limits(limits).build()?;
+/// let vars = Vars::builder().coordinate("x").limits(limits).build()?;
 /// assert_eq!(vars.limits(), limits);
 /// # Ok::<(), trigpoly::AlgebraError>(())
 /// ```
@@ -253,7 +253,7 @@ pub struct Limits {
     pub max_terms: usize,
     /// The largest absolute exponent of any variable; for an angle, the largest trigonometric
     /// order `k` of `cos kθ`, `sin kθ` (the exponent of `e^{iθ}`, as it is stored). At least
-    /// 1: [`VarSetBuilder::build`] refuses 0.
+    /// 1: [`VarsBuilder::build`] refuses 0.
     pub max_degree: u32,
     /// The most term products one product of polynomials may form (some seconds to a minute
     /// of work at the default), and the products of one sum of products, such as a Poisson
@@ -486,11 +486,12 @@ impl Layout {
 }
 
 /// An ordered set of named variables shared by a family of polynomials, with their packing and
-/// their limits.
+/// their limits: declared by [`Vars::builder`], and read through the handle [`Vars`] that its
+/// build gives, which derefs to it.
 ///
 /// ```
-/// use trigpoly::{VarKind, VarSet};
-/// let vars = VarSet::builder()
+/// use trigpoly::{VarKind, Vars};
+/// let vars = Vars::builder()
 ///     .coordinate("x")
 ///     .momentum("p_x")
 ///     .angle("theta")
@@ -511,7 +512,7 @@ pub struct VarSet {
     /// The number of the list of variables, shared by every set that declares the same ones
     /// (given when the set is interned), which its handles carry.
     declaration: u32,
-    /// Names the parser reads besides the variables ([`VarSetBuilder::also_named`]).
+    /// Names the parser reads besides the variables ([`VarsBuilder::also_named`]).
     also_named: Vec<String>,
 }
 
@@ -527,11 +528,6 @@ impl PartialEq for VarSet {
 impl Eq for VarSet {}
 
 impl VarSet {
-    /// Starts declaring variables.
-    pub fn builder() -> VarSetBuilder {
-        VarSetBuilder::default()
-    }
-
     /// Number of variables.
     pub fn len(&self) -> usize {
         self.vars.len()
@@ -601,7 +597,7 @@ impl VarSet {
 
     /// The variable of a name, in any of its spellings: its declared name, its unicode form
     /// (`ω`, `p_θ`) or that form with the Greek letters spelled out (`omega`, and `p_theta`
-    /// for a momentum declared `p_θ`). [`VarSetBuilder::build`] makes sure that no spelling
+    /// for a momentum declared `p_θ`). [`VarsBuilder::build`] makes sure that no spelling
     /// fits two variables.
     pub fn lookup(&self, name: &str) -> Option<Var> {
         self.vars
@@ -611,23 +607,23 @@ impl VarSet {
     }
 
     /// Every name the parser reads in an expression on this set: the variables in each of
-    /// their spellings, and the names of [`VarSetBuilder::also_named`].
+    /// their spellings, and the names of [`VarsBuilder::also_named`].
     pub(crate) fn declared_names(&self) -> impl Iterator<Item = &str> {
         let spellings = self.vars.iter().flat_map(Variable::spellings);
         spellings.chain(self.also_named.iter().map(String::as_str))
     }
 
     /// Whether one-letter names written side by side, `run` in order, could read back as a
-    /// variable or a name of [`VarSetBuilder::also_named`] ([`juxtaposition_is_ambiguous`]):
+    /// variable or a name of [`VarsBuilder::also_named`] ([`juxtaposition_is_ambiguous`]):
     /// `x`, `y` beside a variable `xy`, which the printers then write `x y`.
     ///
     /// ```
-    /// use trigpoly::VarSet;
+    /// use trigpoly::Vars;
     ///
-    /// let vars = VarSet::builder().coordinate("x").coordinate("y").parameter("M");
+    /// let vars = Vars::builder().coordinate("x").coordinate("y").parameter("M");
     /// let vars = vars.also_named(["Hy"]).build().unwrap();
     /// assert!(!vars.juxtaposition_is_ambiguous(&["M", "x", "y"]));
-    /// let vars = VarSet::builder().coordinate("x").coordinate("y").parameter("M");
+    /// let vars = Vars::builder().coordinate("x").coordinate("y").parameter("M");
     /// let vars = vars.also_named(["xy"]).build().unwrap();
     /// assert!(vars.juxtaposition_is_ambiguous(&["M", "x", "y"]));
     /// assert!(!vars.juxtaposition_is_ambiguous(&["y", "M", "x"]));
@@ -639,16 +635,16 @@ impl VarSet {
     /// Whether the printer could write `name` for a product of one-letter variables side by
     /// side and not know it: `name` has several letters, each the spelling of a one-letter
     /// variable or `i` (`Mx` for `M x`), and it is neither a variable nor one of the names of
-    /// [`VarSetBuilder::also_named`], whose products the printer spaces (`M x`). A function of
+    /// [`VarsBuilder::also_named`], whose products the printer spaces (`M x`). A function of
     /// such a name would read back from a printed product.
     ///
     /// ```
-    /// use trigpoly::VarSet;
+    /// use trigpoly::Vars;
     ///
-    /// let vars = VarSet::builder().coordinate("x").parameter("M").build().unwrap();
+    /// let vars = Vars::builder().coordinate("x").parameter("M").build().unwrap();
     /// assert!(vars.juxtaposition_spells("Mx"));
     /// assert!(!vars.juxtaposition_spells("Mz"));
-    /// let told = VarSet::builder().coordinate("x").parameter("M").also_named(["Mx"]);
+    /// let told = Vars::builder().coordinate("x").parameter("M").also_named(["Mx"]);
     /// assert!(!told.build().unwrap().juxtaposition_spells("Mx"));
     /// ```
     pub fn juxtaposition_spells(&self, name: &str) -> bool {
@@ -690,7 +686,7 @@ impl VarSet {
     /// The same variables with other limits (and the packing those limits call for, unless
     /// the declaration asked for a field width).
     pub fn with_limits(&self, limits: Limits) -> Result<Vars, AlgebraError> {
-        VarSetBuilder {
+        VarsBuilder {
             vars: self.vars.clone(),
             limits,
             bits: self.requested_bits,
@@ -716,10 +712,27 @@ impl VarSet {
 /// shared counter: with an `Arc` the counter's cache line moved between cores on every
 /// polynomial made, which took a fifth of W4's time on two threads. Rings are declared, not
 /// computed, so the interned sets stay few; building an equal set again returns the same one.
+///
+/// ```
+/// use trigpoly::{VarSet, Vars};
+///
+/// let vars: Vars = Vars::builder().coordinate("x").momentum("p_x").build()?;
+/// let set: &VarSet = &vars;
+/// assert_eq!(set.len(), 2);
+/// let again = Vars::builder().coordinate("x").momentum("p_x").build()?;
+/// assert!(Vars::ptr_eq(&vars, &again));
+/// # Ok::<(), trigpoly::AlgebraError>(())
+/// ```
 #[derive(Clone)]
 pub struct Vars(&'static VarSet);
 
 impl Vars {
+    /// Starts declaring variables: [`VarsBuilder::build`] checks them and gives the handle of
+    /// their set.
+    pub fn builder() -> VarsBuilder {
+        VarsBuilder::default()
+    }
+
     /// The handle of the interned set equal to `set` (interning it if it is new).
     /// Its declaration number is that of the interned sets with the same variables, or the
     /// next one.
@@ -771,16 +784,17 @@ impl fmt::Debug for Vars {
     }
 }
 
-/// Declares the variables of a `VarSet`, in order.
+/// Declares the variables of a set, in order ([`Vars::builder`]), and builds the handle
+/// [`Vars`] of the set ([`VarsBuilder::build`]).
 #[derive(Clone, Debug, Default)]
-pub struct VarSetBuilder {
+pub struct VarsBuilder {
     vars: Vec<Variable>,
     limits: Limits,
     bits: Option<u32>,
     also_named: Vec<String>,
 }
 
-impl VarSetBuilder {
+impl VarsBuilder {
     /// Declares a variable of the given kind.
     pub fn variable(mut self, name: &str, kind: VarKind) -> Self {
         let (unicode, latex) = match kind {
@@ -861,7 +875,7 @@ impl VarSetBuilder {
     /// declared, changes nothing. Its ASCII form stays its name, which reads back. Its text is
     /// the display as [`shown_text`] prints it everywhere else, a precomposed barred letter
     /// kept as written (`Ā_x`, not `A` and a combining bar, which a comparison with the
-    /// display would find different). [`VarSetBuilder::build`] refuses two variables shown
+    /// display would find different). [`VarsBuilder::build`] refuses two variables shown
     /// alike.
     pub fn shown_as(self, display: &str) -> Self {
         match shown_forms(display) {
@@ -870,7 +884,7 @@ impl VarSetBuilder {
         }
     }
     /// Prints the variable declared last as `unicode` in text and `latex` in LaTeX, as
-    /// [`VarSetBuilder::shown_as`] does with the forms of a display name, where the caller has
+    /// [`VarsBuilder::shown_as`] does with the forms of a display name, where the caller has
     /// made them (a momentum `p_ω₊` of a coordinate shown as `ω₊`, `p_{\omega_{+}}`); with
     /// nothing declared, changes nothing. Its ASCII form stays its name, which reads back, and
     /// [`VarSet::lookup`] finds it by `unicode` too.
@@ -916,8 +930,9 @@ impl VarSetBuilder {
         self
     }
 
-    /// Checks names and limits and builds the set: a degree limit of 0 is refused, as it
-    /// would leave no variable writable, not even `x` itself.
+    /// Checks names and limits and builds the set, giving the handle of its one interned copy:
+    /// a degree limit of 0 is refused, as it would leave no variable writable, not even `x`
+    /// itself.
     pub fn build(self) -> Result<Vars, AlgebraError> {
         if self.limits.max_degree == 0 {
             return Err(AlgebraError::SettingOutOfRange {
@@ -1031,7 +1046,7 @@ mod tests {
     #[test]
     fn function_names_are_reserved() {
         for name in ["i", "cos", "sin", "exp", "conj", "re", "im", "sqrt"] {
-            let err = VarSet::builder().coordinate("x").parameter(name).build();
+            let err = Vars::builder().coordinate("x").parameter(name).build();
             let err = err.map(|_| ()).unwrap_err();
             assert_eq!(
                 err,
@@ -1050,7 +1065,7 @@ mod tests {
                 "{name}"
             );
         }
-        assert!(VarSet::builder().parameter("real").build().is_ok());
+        assert!(Vars::builder().parameter("real").build().is_ok());
     }
 
     /// The builder refuses a name by [`BadName`], the rule superint's file loader applies too,
@@ -1085,7 +1100,7 @@ mod tests {
                  ℓ and the subscript digits ₀–₉)",
             ),
         ] {
-            let err = VarSet::builder().coordinate(name).build().map(|_| ());
+            let err = Vars::builder().coordinate(name).build().map(|_| ());
             let err = err.unwrap_err();
             assert!(
                 matches!(&err, AlgebraError::InvalidName { name: n, reason }
@@ -1100,7 +1115,7 @@ mod tests {
         }
         // A long name is carried whole, and shown by its start and its length.
         let long = "a".repeat(81);
-        let err = VarSet::builder().parameter(&long).build().map(|_| ());
+        let err = Vars::builder().parameter(&long).build().map(|_| ());
         let err = err.unwrap_err();
         assert_eq!(
             err,
@@ -1119,13 +1134,13 @@ mod tests {
         );
         for name in ["a_b", "p_theta", "x₁", "ħ", "H", "rank", &"a".repeat(80)] {
             assert_eq!(BadName::of(name), None, "{name}");
-            VarSet::builder().coordinate(name).build().expect(name);
+            Vars::builder().coordinate(name).build().expect(name);
         }
     }
 
     #[test]
     fn equal_declarations_share_one_interned_set() {
-        let plane = || VarSet::builder().coordinate("x").coordinate("y");
+        let plane = || Vars::builder().coordinate("x").coordinate("y");
         let a = plane().build().unwrap();
         let b = plane().build().unwrap();
         assert!(Vars::ptr_eq(&a, &b));
@@ -1134,14 +1149,14 @@ mod tests {
         assert!(!Vars::ptr_eq(&a, &asked));
         assert_eq!(a, asked);
         // Another order of the same names is another ring.
-        let swapped = VarSet::builder().coordinate("y").coordinate("x").build();
+        let swapped = Vars::builder().coordinate("y").coordinate("x").build();
         assert_ne!(a, swapped.unwrap());
         assert!(Vars::ptr_eq(&a.with_limits(a.limits()).unwrap(), &a));
     }
 
     #[test]
     fn a_variable_shown_as_another_name() {
-        let vars = VarSet::builder()
+        let vars = Vars::builder()
             .coordinate("Ax")
             .shown_as("A_x")
             .coordinate("B")
@@ -1154,7 +1169,7 @@ mod tests {
         assert_eq!(vars.variable(ax).latex(), "A_{x}");
         assert_eq!(vars.variable(b).unicode(), "B");
         // Two variables shown alike are refused, as two declared alike are.
-        let twice = VarSet::builder()
+        let twice = Vars::builder()
             .coordinate("Ax")
             .shown_as("A_x")
             .coordinate("A_x")
@@ -1165,7 +1180,7 @@ mod tests {
     #[test]
     fn a_variable_is_found_by_every_spelling_shown_as_it_is() {
         // An angle declared in unicode, with its momentum named as a system file names it.
-        let vars = VarSet::builder()
+        let vars = Vars::builder()
             .angle("θ")
             .momentum(&format!("p_{}", "θ"))
             .parameter("omega")
@@ -1207,7 +1222,7 @@ mod tests {
     #[test]
     fn two_variables_alike_in_latex_are_refused() {
         for second in ["x₁", "x_1"] {
-            let err = VarSet::builder()
+            let err = Vars::builder()
                 .coordinate("x1")
                 .coordinate(second)
                 .build()
@@ -1221,13 +1236,13 @@ mod tests {
                 }
             );
         }
-        let err = VarSet::builder()
+        let err = Vars::builder()
             .parameter("o")
             .parameter("omicron")
             .build()
             .unwrap_err();
         assert!(matches!(err, AlgebraError::PrintedAlike { .. }), "{err}");
-        assert!(VarSet::builder()
+        assert!(Vars::builder()
             .coordinate("x1")
             .coordinate("x11")
             .build()
@@ -1236,19 +1251,19 @@ mod tests {
 
     #[test]
     fn two_variables_found_by_one_spelling_are_refused() {
-        let twice = |builder: VarSetBuilder| builder.build().map(|_| ()).unwrap_err().to_string();
-        let angles = VarSet::builder().angle("theta").angle("θ");
+        let twice = |builder: VarsBuilder| builder.build().map(|_| ()).unwrap_err().to_string();
+        let angles = Vars::builder().angle("theta").angle("θ");
         assert_eq!(
             twice(angles),
             r#"variable "θ" is declared twice (as "theta", which one spelling finds with it)"#
         );
-        let parameters = VarSet::builder().parameter("ω").parameter("omega");
+        let parameters = Vars::builder().parameter("ω").parameter("omega");
         assert_eq!(
             twice(parameters),
             r#"variable "omega" is declared twice (as "ω", which one spelling finds with it)"#
         );
         // `y` would name the first, shown as y, and the second, declared y.
-        let shown = VarSet::builder()
+        let shown = Vars::builder()
             .coordinate("x")
             .shown_as("y")
             .coordinate("y")

@@ -1,7 +1,7 @@
 //! Section 3: the harmonic rotor `H = (p_x² + p_y²)/(2M) + Mω²(x² + y²)/2 + p_θ²/(2I)`.
 
 use brackets::{check_tower, eigen_proof, systems, Condition, PhaseSpace, System, UpperBound};
-use trigpoly::{Expr, VarSet, Vars};
+use trigpoly::{Expr, Vars};
 
 use super::{assert_rank, certified_rank, define_family, rendered_table, table};
 
@@ -51,7 +51,7 @@ struct Trajectory {
 
 impl Trajectory {
     fn new() -> Self {
-        let vars: Vars = VarSet::builder()
+        let vars: Vars = Vars::builder()
             .coordinate("x")
             .coordinate("y")
             .angle("theta")

@@ -251,12 +251,12 @@ fn normalize(e: Expr) -> Result<Expr, EngineError> {
 
 #[cfg(test)]
 mod tests {
-    use trigpoly::{Expr, VarSet};
+    use trigpoly::{Expr, Vars};
 
     use super::normalize;
 
     fn normalized(text: &str) -> String {
-        let ring = VarSet::builder()
+        let ring = Vars::builder()
             .coordinate("Q")
             .coordinate("R")
             .coordinate("H")

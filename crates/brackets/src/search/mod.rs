@@ -70,9 +70,9 @@
 //! ```
 //! use brackets::search::{search, SearchOptions, SearchSpace};
 //! use brackets::{PhaseSpace, System};
-//! use trigpoly::{Expr, Rational, VarSet};
+//! use trigpoly::{Expr, Rational, Vars};
 //!
-//! let vars = VarSet::builder()
+//! let vars = Vars::builder()
 //!     .poisson("M1").poisson("M2").poisson("M3")
 //!     .parameter("I1").parameter("I2").parameter("I3")
 //!     .build()?;
@@ -162,11 +162,11 @@ use proof::{flow_vanishes, lead, primitive_vector};
 ///
 /// ```
 /// use brackets::{search, PhaseSpace, SearchOptions, SearchSpace, System};
-/// use trigpoly::{Expr, Rational, VarSet};
+/// use trigpoly::{Expr, Rational, Vars};
 ///
 /// // p²/2 + (x² + a²y²)/2: at a = 1 (the default) the oscillator is isotropic, and its
 /// // angular momentum x p_y − y p_x is an integral there alone; at a = 2 it is none.
-/// let vars = VarSet::builder()
+/// let vars = Vars::builder()
 ///     .coordinate("x").coordinate("y").momentum("p_x").momentum("p_y").parameter("a")
 ///     .build()?;
 /// let space = PhaseSpace::new(&vars, &[("x", "p_x"), ("y", "p_y")])?;

@@ -1,6 +1,6 @@
 //! Unit tests of the search's internals.
 
-use trigpoly::{AlgebraError, GaussianRational, Var, VarSet};
+use trigpoly::{AlgebraError, GaussianRational, Var, Vars};
 
 use super::locate::Locator;
 use super::new_only::{
@@ -637,7 +637,7 @@ fn new_integrals_with_symbolic_parameters_are_the_same_four() {
 /// v, uv` at degree `≤ 2` in each kind, each proved.
 #[test]
 fn declared_brackets_with_canonical_variables_enter_the_images() {
-    let vars = VarSet::builder()
+    let vars = Vars::builder()
         .coordinate("x")
         .momentum("p_x")
         .poisson("s")
@@ -695,7 +695,7 @@ fn declared_brackets_with_canonical_variables_enter_the_images() {
 /// back to the moments, which have one weight, so the lift needs none of them.
 #[test]
 fn a_poisson_variable_the_condition_fixes_is_left_out() {
-    let vars = VarSet::builder()
+    let vars = Vars::builder()
         .poisson("M1")
         .poisson("M2")
         .poisson("M3")
@@ -749,7 +749,7 @@ fn fixed_values_other_than_one_lift_the_same() {
 
 #[test]
 fn parameter_multiples_of_a_generator_are_left_out_of_the_products() {
-    let vars = VarSet::builder()
+    let vars = Vars::builder()
         .coordinate("x")
         .momentum("p_x")
         .parameter("k")
@@ -803,7 +803,7 @@ fn parameter_multiples_of_a_generator_are_left_out_of_the_products() {
 /// and its count of degree 0 was 2: the counts are dimensions, by exact linear algebra.
 #[test]
 fn the_counts_by_poisson_degree_are_dimensions_where_the_space_has_momenta() {
-    let vars = VarSet::builder()
+    let vars = Vars::builder()
         .coordinate("q1")
         .momentum("p_q1")
         .coordinate("q2")
@@ -843,7 +843,7 @@ fn the_counts_by_poisson_degree_are_dimensions_where_the_space_has_momenta() {
 /// of dimension 2 instead of 3); kept symbolic, the Casimir is found for every `k`.
 #[test]
 fn a_parameter_of_a_declared_bracket_is_fixed_for_the_search() {
-    let vars = VarSet::builder()
+    let vars = Vars::builder()
         .poisson("M1")
         .poisson("M2")
         .poisson("M3")

@@ -374,7 +374,7 @@ impl FromStr for GaussianRational {
 /// The value of a constant expression (no variable) such as `(1 + 2i)/3`, or why `s` is none:
 /// with no variables declared, a name is unknown, so an expression that parses is a constant.
 fn constant_expression(s: &str) -> Result<GaussianRational, ParseError> {
-    let no_variables = crate::VarSet::builder()
+    let no_variables = crate::Vars::builder()
         .build()
         .map_err(|e| ParseError::new(Span::new(0, s.len()), e.to_string()))?;
     let e = crate::Poly::<GaussianRational>::parse(&no_variables, s)?;

@@ -276,9 +276,9 @@ impl<C: Coefficient> MulAssign<Rational> for Poly<C> {
 /// ([`Poly::scale`]), as `f * &q` is for a rational `q`.
 ///
 /// ```
-/// use trigpoly::{Expr, GaussianRational, Rational, VarSet};
+/// use trigpoly::{Expr, GaussianRational, Rational, Vars};
 ///
-/// let vars = VarSet::builder().coordinate("x").momentum("p_x").build()?;
+/// let vars = Vars::builder().coordinate("x").momentum("p_x").build()?;
 /// let f = Expr::parse(&vars, "p_x + x")?;
 /// let i = GaussianRational::i();
 /// assert_eq!(&f * &i, Expr::parse(&vars, "i*p_x + i*x")?);

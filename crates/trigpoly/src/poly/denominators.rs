@@ -55,7 +55,7 @@ impl<C: Coefficient> Poly<C> {
                     denominator: text.to_string(),
                     message: format!("the denominator {text} {why}"),
                 };
-                // The definition as given (`VarSetBuilder::denominator`), not the name in
+                // The definition as given (`VarsBuilder::denominator`), not the name in
                 // parentheses it is declared by: an error is placed in what was written.
                 let given =
                     (text.strip_prefix('(').and_then(|t| t.strip_suffix(')'))).unwrap_or(text);
@@ -230,8 +230,8 @@ impl<C: Coefficient> Poly<C> {
     /// zero. The same element; without atoms or radicals, `self`.
     ///
     /// ```
-    /// use trigpoly::{Expr, VarSet};
-    /// let vars = VarSet::builder()
+    /// use trigpoly::{Expr, Vars};
+    /// let vars = Vars::builder()
     ///     .coordinate("x")
     ///     .coordinate("y")
     ///     .momentum("p_x")
@@ -544,8 +544,8 @@ impl<C: Coefficient> Poly<C> {
     /// `is_zero` cannot: clearing multiplies, and may pass the term limit.
     ///
     /// ```
-    /// use trigpoly::{Expr, VarSet};
-    /// let vars = VarSet::builder()
+    /// use trigpoly::{Expr, Vars};
+    /// let vars = Vars::builder()
     ///     .coordinate("x")
     ///     .coordinate("y")
     ///     .denominator("x - y", "x − y", "x - y")
@@ -626,11 +626,11 @@ fn denominators_line(texts: &[String]) -> String {
 
 #[cfg(test)]
 mod tests {
-    use crate::{Expr, VarSet, Vars};
+    use crate::{Expr, Vars};
 
     /// `x, y, z` with the atoms `x − y` and `x − z`.
     fn three_points_two_atoms() -> Vars {
-        VarSet::builder()
+        Vars::builder()
             .coordinate("x")
             .coordinate("y")
             .coordinate("z")
@@ -686,7 +686,7 @@ mod tests {
     /// a remainder or a quotient that would need a negative power of the divisor's variable.
     #[test]
     fn exact_division_finds_the_quotient_or_none() {
-        let vars = VarSet::builder()
+        let vars = Vars::builder()
             .coordinate("x")
             .coordinate("y")
             .coordinate("z")
@@ -706,7 +706,7 @@ mod tests {
 
     #[test]
     fn a_denominator_that_is_a_term_is_refused() {
-        let vars = VarSet::builder()
+        let vars = Vars::builder()
             .coordinate("x")
             .denominator("2*x", "2x", "2 x")
             .build()
@@ -719,7 +719,7 @@ mod tests {
     /// name the builder wraps it in, `(x - )`, where it was at column 6, a `)` never written.
     #[test]
     fn a_denominator_that_does_not_read_is_placed_in_its_own_text() {
-        let vars = VarSet::builder()
+        let vars = Vars::builder()
             .coordinate("x")
             .denominator("x - ", "x − ", "x - ")
             .build()
@@ -737,7 +737,7 @@ mod tests {
     /// on the set, which needs the atoms.
     #[test]
     fn a_denominator_that_divides_by_a_sum_is_refused() {
-        let vars = VarSet::builder()
+        let vars = Vars::builder()
             .coordinate("x")
             .coordinate("y")
             .denominator("x - y", "x − y", "x - y")
@@ -755,7 +755,7 @@ mod tests {
 
     #[test]
     fn clearing_decides_zero() {
-        let vars = VarSet::builder()
+        let vars = Vars::builder()
             .coordinate("x")
             .coordinate("y")
             .denominator("x^2 + y^2", "x² + y²", "x^{2} + y^{2}")

@@ -15,8 +15,8 @@ use crate::varset::Vars;
 /// exponent vector or, without unpacking, by a polynomial's [`Term`].
 ///
 /// ```
-/// use trigpoly::{Expr, MonomialIndex, VarSet};
-/// let vars = VarSet::builder().coordinate("x").coordinate("y").build().unwrap();
+/// use trigpoly::{Expr, MonomialIndex, Vars};
+/// let vars = Vars::builder().coordinate("x").coordinate("y").build().unwrap();
 /// let mut index = MonomialIndex::new(&vars);
 /// index.insert(&[2, 0], "x²").unwrap();
 /// index.insert(&[1, 1], "xy").unwrap();
@@ -163,11 +163,11 @@ impl<V> MonomialIndex<V> {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::{Expr, VarSet};
+    use crate::Expr;
 
     #[test]
     fn terms_find_the_monomials_inserted_by_exponents() {
-        let vars = VarSet::builder()
+        let vars = Vars::builder()
             .coordinate("x")
             .momentum("p")
             .parameter("a")
@@ -193,7 +193,7 @@ mod tests {
         assert_eq!(index.get(&[-1, 0, 1, -2]), Some(&'B'));
         assert_eq!(index.get(&[-1, 0, 1, 2]), None);
         // The same monomials of another variable set are not there.
-        let other = VarSet::builder()
+        let other = Vars::builder()
             .coordinate("x")
             .momentum("p")
             .parameter("a")
@@ -209,7 +209,7 @@ mod tests {
         let names: Vec<String> = (0..12).map(|i| format!("x{i}")).collect();
         names
             .iter()
-            .fold(VarSet::builder(), |b, n| b.coordinate(n))
+            .fold(Vars::builder(), |b, n| b.coordinate(n))
             .build()
             .unwrap()
     }
@@ -242,7 +242,7 @@ mod tests {
     /// three words alike, and none for a term of another variable set.
     #[test]
     fn terms_are_numbered_by_first_appearance() {
-        let narrow = VarSet::builder()
+        let narrow = Vars::builder()
             .coordinate("x")
             .coordinate("y")
             .build()
@@ -284,7 +284,7 @@ mod tests {
 
     #[test]
     fn exponents_of_the_wrong_length_or_past_the_limit_are_refused() {
-        let vars = VarSet::builder()
+        let vars = Vars::builder()
             .coordinate("x")
             .coordinate("y")
             .build()

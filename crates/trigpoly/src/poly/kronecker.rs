@@ -265,7 +265,7 @@ impl Decoder {
 #[cfg(test)]
 mod tests {
     use super::Kronecker;
-    use crate::varset::VarSet;
+    use crate::varset::Vars;
 
     /// Every index of a box decodes to the monomial whose index it is, read in descending
     /// order (as the dense product reads) and in a scattered order, with tables of every size
@@ -277,7 +277,7 @@ mod tests {
             .into_iter()
             .flat_map(|case| [(case, false), (case, true)]);
         for ((names, bits), stepped) in cases {
-            let mut builder = VarSet::builder().exponent_bits(bits);
+            let mut builder = Vars::builder().exponent_bits(bits);
             for k in 0..names {
                 builder = builder.coordinate(&format!("v{k}"));
             }

@@ -67,8 +67,8 @@ pub(crate) fn check_coefficient_size(bits: u64) -> Result<(), AlgebraError> {
 /// `Q(i)[cos θ, sin θ]/(cos²θ + sin²θ − 1)`; printing converts to the form `A(cos θ) + sin θ·B(cos θ)`.
 ///
 /// ```
-/// use trigpoly::{Poly, GaussianRational, VarSet};
-/// let vars = VarSet::builder().coordinate("x").angle("theta").build().unwrap();
+/// use trigpoly::{Poly, GaussianRational, Vars};
+/// let vars = Vars::builder().coordinate("x").angle("theta").build().unwrap();
 /// let c = Poly::<GaussianRational>::parse(&vars, "cos(theta)").unwrap();
 /// let s = Poly::<GaussianRational>::parse(&vars, "sin(theta)").unwrap();
 /// assert_eq!(&c * &c + &s * &s, Poly::one(&vars));
@@ -271,8 +271,8 @@ impl<C: Coefficient> Poly<C> {
     /// radicals first. `is_zero` is then only a sufficient test.
     ///
     /// ```
-    /// use trigpoly::{Expr, VarSet};
-    /// let vars = VarSet::builder().coordinate("x").radical("r", "x^2 + 1").build().unwrap();
+    /// use trigpoly::{Expr, Vars};
+    /// let vars = Vars::builder().coordinate("x").radical("r", "x^2 + 1").build().unwrap();
     /// let e = Expr::parse(&vars, "r^2 - x^2 - 1").unwrap();
     /// assert!(!e.is_zero());
     /// assert!(e.vanishes().unwrap());
@@ -962,9 +962,9 @@ impl<'a, C: Coefficient> Term<'a, C> {
 /// is `k` in `e^{ikθ}`), as a program printing a polynomial's terms with `{:?}` reads them:
 ///
 /// ```
-/// use trigpoly::{Expr, VarSet};
+/// use trigpoly::{Expr, Vars};
 ///
-/// let vars = VarSet::builder().coordinate("x").momentum("p_x").angle("theta").build()?;
+/// let vars = Vars::builder().coordinate("x").momentum("p_x").angle("theta").build()?;
 /// let f = Expr::parse(&vars, "3/4*x^2*p_x - i*exp(-2*i*theta)")?;
 /// let terms: Vec<String> = f.terms().map(|t| format!("{t:?}")).collect();
 /// assert_eq!(
@@ -1058,7 +1058,7 @@ mod tests {
     /// every drop completes, and the polynomial they were cloned from is untouched.
     #[test]
     fn large_polynomials_drop_on_the_pool() {
-        let vars = VarSet::builder().coordinate("x").build().unwrap();
+        let vars = Vars::builder().coordinate("x").build().unwrap();
         let n = coeffs::PARALLEL_DROP_TERMS + 3;
         let exps: Vec<u64> = (0..n as u64).rev().collect();
         let coeffs: Vec<Integer> = (0..n as i128)
@@ -1087,7 +1087,7 @@ mod tests {
     /// its copy and its negation, whose values are new, do not.
     #[test]
     fn a_large_products_coefficients_keep_their_slabs_counts() {
-        let vars = VarSet::builder()
+        let vars = Vars::builder()
             .coordinate("x")
             .coordinate("y")
             .coordinate("z")
@@ -1117,7 +1117,7 @@ mod tests {
     /// with monomials of one word and of several (40 variables).
     #[test]
     fn var_is_the_monomial_of_exponent_one() {
-        let mut builder = VarSet::builder()
+        let mut builder = Vars::builder()
             .coordinate("x")
             .angle("theta")
             .momentum("p_x")
@@ -1125,7 +1125,7 @@ mod tests {
         for k in 0..36 {
             builder = builder.coordinate(&format!("q{k}"));
         }
-        let small = VarSet::builder()
+        let small = Vars::builder()
             .coordinate("x")
             .angle("theta")
             .parameter("M");

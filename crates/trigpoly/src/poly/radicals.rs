@@ -152,8 +152,8 @@ impl<C: Coefficient> Poly<C> {
     /// at every point tried is refused as one.
     ///
     /// ```
-    /// use trigpoly::{Expr, VarSet};
-    /// let builder = VarSet::builder().coordinate("x").coordinate("y");
+    /// use trigpoly::{Expr, Vars};
+    /// let builder = Vars::builder().coordinate("x").coordinate("y");
     /// let vars = builder.clone().radical("r", "x^2 + y^2").build().unwrap();
     /// assert!(Expr::check_radicals(&vars).is_ok());
     /// let square = builder.radical("r", "x^2 + 2*x*y + y^2").build().unwrap();
@@ -395,8 +395,8 @@ impl<C: Coefficient> Poly<C> {
     /// a fixed `M` for many elements makes the map linear, and injective.
     ///
     /// ```
-    /// use trigpoly::{Expr, VarSet};
-    /// let vars = VarSet::builder()
+    /// use trigpoly::{Expr, Vars};
+    /// let vars = Vars::builder()
     ///     .coordinate("x")
     ///     .coordinate("y")
     ///     .radical("r", "x^2 + y^2")
@@ -463,8 +463,8 @@ impl<C: Coefficient> Poly<C> {
     /// `(r − x)/(r y²)`. A norm that is none of those is an error that names it.
     ///
     /// ```
-    /// use trigpoly::{Expr, VarSet};
-    /// let vars = VarSet::builder()
+    /// use trigpoly::{Expr, Vars};
+    /// let vars = Vars::builder()
     ///     .coordinate("x")
     ///     .coordinate("y")
     ///     .radical("r", "x^2 + y^2")
@@ -642,10 +642,10 @@ fn small_value(k: i64, s: i64) -> Rational {
 
 #[cfg(test)]
 mod tests {
-    use crate::{Expr, VarSet};
+    use crate::{Expr, Vars};
 
     fn kepler() -> crate::Vars {
-        VarSet::builder()
+        Vars::builder()
             .coordinate("x")
             .coordinate("y")
             .coordinate("z")
@@ -692,7 +692,7 @@ mod tests {
     /// the other's: `k/r³ + m/s³` is not brought to one power of both.
     #[test]
     fn two_radicals_keep_their_own_powers() {
-        let vars = VarSet::builder()
+        let vars = Vars::builder()
             .coordinate("x")
             .coordinate("y")
             .parameter("k")
@@ -719,7 +719,7 @@ mod tests {
     /// divides.
     #[test]
     fn division_by_a_sum_with_radicals_goes_through_its_conjugates() {
-        let builder = VarSet::builder()
+        let builder = Vars::builder()
             .coordinate("x")
             .coordinate("y")
             .parameter("k")
@@ -773,7 +773,7 @@ mod tests {
     /// term too many, a negative leading coefficient) has none.
     #[test]
     fn square_roots_of_squares_and_of_nothing_else() {
-        let vars = VarSet::builder()
+        let vars = Vars::builder()
             .coordinate("x")
             .coordinate("y")
             .momentum("p")
@@ -820,7 +820,7 @@ mod tests {
     #[test]
     fn dependent_radicals_are_refused() {
         let build = |radicals: &[(&str, &str)]| {
-            let mut b = VarSet::builder().coordinate("x").coordinate("y");
+            let mut b = Vars::builder().coordinate("x").coordinate("y");
             for (name, radicand) in radicals {
                 b = b.radical(name, radicand);
             }

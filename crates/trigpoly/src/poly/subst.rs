@@ -403,8 +403,8 @@ impl<'a> ScaledValue<'a> {
 /// An exact point: a value for each variable (angles as points of the unit circle).
 ///
 /// ```
-/// use trigpoly::{Point, Rational, VarSet};
-/// let vars = VarSet::builder().coordinate("x").angle("theta").build().unwrap();
+/// use trigpoly::{Point, Rational, Vars};
+/// let vars = Vars::builder().coordinate("x").angle("theta").build().unwrap();
 /// let x = vars.lookup("x").unwrap();
 /// let theta = vars.lookup("theta").unwrap();
 /// let point = Point::new(&vars)
@@ -460,9 +460,9 @@ impl Point {
     /// and a handle of another set as a mismatch of sets.
     ///
     /// ```
-    /// use trigpoly::{AlgebraError, Expr, Point, Rational, VarSet};
+    /// use trigpoly::{AlgebraError, Expr, Point, Rational, Vars};
     ///
-    /// let vars = VarSet::builder().coordinate("x").angle("theta").build()?;
+    /// let vars = Vars::builder().coordinate("x").angle("theta").build()?;
     /// let (x, theta) = (vars.lookup("x").unwrap(), vars.lookup("theta").unwrap());
     /// // x cos θ + sin 2θ at x = 2, (cos θ, sin θ) = (3/5, 4/5): 6/5 + 2·(4/5)(3/5) = 54/25.
     /// let f = Expr::parse(&vars, "x*cos(theta) + sin(2*theta)")?;
@@ -509,8 +509,8 @@ impl Point {
     /// their polynomials, as [`Poly::denominator_atoms`] gives them.
     ///
     /// ```
-    /// use trigpoly::{Expr, Point, Rational, VarSet};
-    /// let vars = VarSet::builder()
+    /// use trigpoly::{Expr, Point, Rational, Vars};
+    /// let vars = Vars::builder()
     ///     .coordinate("x")
     ///     .coordinate("y")
     ///     .denominator("x - y", "x − y", "x - y")
@@ -546,8 +546,8 @@ impl Point {
     /// radicands, as [`Poly::radicals`] gives them.
     ///
     /// ```
-    /// use trigpoly::{Expr, Point, Rational, VarSet};
-    /// let vars = VarSet::builder()
+    /// use trigpoly::{Expr, Point, Rational, Vars};
+    /// let vars = Vars::builder()
     ///     .coordinate("x")
     ///     .coordinate("y")
     ///     .radical("r", "x^2 + y^2")
@@ -583,8 +583,8 @@ impl Point {
     /// The value given to `v` (for an angle, `e^{iθ} = cos θ + i sin θ`).
     ///
     /// ```
-    /// use trigpoly::{Point, VarSet};
-    /// let vars = VarSet::builder().coordinate("x").coordinate("y").build().unwrap();
+    /// use trigpoly::{Point, Vars};
+    /// let vars = Vars::builder().coordinate("x").coordinate("y").build().unwrap();
     /// let x = vars.lookup("x").unwrap();
     /// assert_eq!(Point::new(&vars).with(x, 2.into()).to_string(), "x = 2");
     /// ```

@@ -23,8 +23,8 @@ impl<C: Coefficient> Poly<C> {
     /// computed with one accumulation and one normalization.
     ///
     /// ```
-    /// use trigpoly::{Poly, Rational, VarSet};
-    /// let vars = VarSet::builder().coordinate("x").momentum("p").build().unwrap();
+    /// use trigpoly::{Poly, Rational, Vars};
+    /// let vars = Vars::builder().coordinate("x").momentum("p").build().unwrap();
     /// let p = |s: &str| Poly::<Rational>::parse(&vars, s).unwrap();
     /// let (x, px) = (p("x + 1"), p("p^2 - x"));
     /// let sum = Poly::sum_of_products(&[(&x, &px, false), (&px, &px, true)]).unwrap();
@@ -60,8 +60,8 @@ impl<C: Coefficient> Poly<C> {
     /// Poisson bracket `Σ ∂f/∂q·∂g/∂p − ∂f/∂p·∂g/∂q` is one call.
     ///
     /// ```
-    /// use trigpoly::{Poly, Rational, VarSet};
-    /// let vars = VarSet::builder().coordinate("x").momentum("p").build().unwrap();
+    /// use trigpoly::{Poly, Rational, Vars};
+    /// let vars = Vars::builder().coordinate("x").momentum("p").build().unwrap();
     /// let (x, p) = (vars.lookup("x").unwrap(), vars.lookup("p").unwrap());
     /// let q = |s: &str| Poly::<Rational>::parse(&vars, s).unwrap();
     /// let (f, g) = (q("x^2 p"), q("p^3 + x"));
@@ -125,8 +125,8 @@ impl<C: Coefficient> Poly<C> {
     /// go through the derivatives of `g` and [`Poly::sum_of_derivative_products`].
     ///
     /// ```
-    /// use trigpoly::{Poly, Rational, VarSet};
-    /// let vars = VarSet::builder().coordinate("x").momentum("p").build().unwrap();
+    /// use trigpoly::{Poly, Rational, Vars};
+    /// let vars = Vars::builder().coordinate("x").momentum("p").build().unwrap();
     /// let (x, p) = (vars.lookup("x").unwrap(), vars.lookup("p").unwrap());
     /// let q = |s: &str| Poly::<Rational>::parse(&vars, s).unwrap();
     /// let bracket = Poly::sum_of_jacobians(&q("x^2 p"), &q("p^3 + x"), &[(x, p)]).unwrap();

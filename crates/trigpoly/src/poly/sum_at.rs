@@ -32,8 +32,8 @@ impl<C: Coefficient> Poly<C> {
     /// substitution is never built; otherwise this is the sum, then the substitution.
     ///
     /// ```
-    /// use trigpoly::{Poly, Rational, VarSet};
-    /// let vars = VarSet::builder().coordinate("x").momentum("p").build().unwrap();
+    /// use trigpoly::{Poly, Rational, Vars};
+    /// let vars = Vars::builder().coordinate("x").momentum("p").build().unwrap();
     /// let (x, p) = (vars.lookup("x").unwrap(), vars.lookup("p").unwrap());
     /// let q = |s: &str| Poly::<Rational>::parse(&vars, s).unwrap();
     /// // {x p, H} with H = (p² + x²)/2, whose gradient is (∂H/∂x, ∂H/∂p) = (x, p): p² − x²,

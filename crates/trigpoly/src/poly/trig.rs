@@ -41,8 +41,8 @@ impl<C: Coefficient> Poly<C> {
     /// terms.
     ///
     /// ```
-    /// use trigpoly::{Poly, GaussianRational, VarSet};
-    /// let vars = VarSet::builder().coordinate("x").angle("θ").build().unwrap();
+    /// use trigpoly::{Poly, GaussianRational, Vars};
+    /// let vars = Vars::builder().coordinate("x").angle("θ").build().unwrap();
     /// let f = Poly::<GaussianRational>::parse(&vars, "x^3*cos(θ) + x^2 + x^2*sin(θ) + 5").unwrap();
     /// // Its monomials outside θ: x³, x² and 1; the part keeps every term of the first two.
     /// let (part, monomials) = f.leading_part(2);
@@ -137,8 +137,8 @@ impl<C: Coefficient> Poly<C> {
     /// normal form (`−3 cos φ + 4 cos³φ`) is how it prints. A declared denominator shows so.
     ///
     /// ```
-    /// use trigpoly::{Expr, VarSet};
-    /// let vars = VarSet::builder().angle("phi").angle("q").build().unwrap();
+    /// use trigpoly::{Expr, Vars};
+    /// let vars = Vars::builder().angle("phi").angle("q").build().unwrap();
     /// let shown = |s: &str| Expr::parse(&vars, s).unwrap().as_harmonic().map(|h| h.0);
     /// assert_eq!(shown("cos(3*phi)").as_deref(), Some("cos(3φ)"));
     /// assert_eq!(shown("-2*sin(phi - 2*q)").as_deref(), Some("−2 sin(φ − 2q)"));
@@ -584,14 +584,14 @@ impl Harmonic {
 
 #[cfg(test)]
 mod tests {
-    use crate::{Expr, VarSet};
+    use crate::{Expr, Vars};
 
     /// A harmonic is written with its multiple of the angles made positive (`sin(−3φ)` is
     /// `−sin(3φ)`), its rational factor before it, a sum of angles in parentheses; anything else
     /// is none.
     #[test]
     fn harmonics_are_written_as_the_paper_writes_them() {
-        let vars = VarSet::builder()
+        let vars = Vars::builder()
             .coordinate("x")
             .angle("φ")
             .angle("q1")

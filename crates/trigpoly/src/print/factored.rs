@@ -20,8 +20,8 @@ use crate::varset::{VarKind, Vars};
 /// A sum as `factor · (rest)`, found by [`Poly::factored`].
 ///
 /// ```
-/// use trigpoly::{Poly, Rational, Style, VarSet};
-/// let vars = VarSet::builder()
+/// use trigpoly::{Poly, Rational, Style, Vars};
+/// let vars = Vars::builder()
 ///     .coordinate("x").coordinate("y").momentum("p_x").momentum("p_y")
 ///     .parameter("M").parameter("F")
 ///     .build().unwrap();
@@ -164,8 +164,8 @@ impl Factored {
     /// `2ω(H + L)`, `(H + 2L)/M`.
     ///
     /// ```
-    /// use trigpoly::{Poly, Rational, Style, VarSet};
-    /// let vars = VarSet::builder()
+    /// use trigpoly::{Poly, Rational, Style, Vars};
+    /// let vars = Vars::builder()
     ///     .parameter("omega").parameter("M")
     ///     .coordinate("Q").word().coordinate("H").word()
     ///     .build().unwrap();

@@ -34,9 +34,9 @@ impl Span {
 /// offending text. One made without its text ([`ParseError::new`]) shows its message alone.
 ///
 /// ```
-/// use trigpoly::{Expr, VarSet};
+/// use trigpoly::{Expr, Vars};
 ///
-/// let vars = VarSet::builder().coordinate("x").momentum("p_x").build().unwrap();
+/// let vars = Vars::builder().coordinate("x").momentum("p_x").build().unwrap();
 /// let err = Expr::parse(&vars, "p_x^2/2 + q*x").unwrap_err();
 /// assert_eq!(err.message(), "unknown name 'q' (known: x, p_x)");
 /// assert_eq!(
@@ -67,9 +67,9 @@ pub struct ParseError {
 /// New kinds come as new variants, so a `match` on it needs a `_` arm.
 ///
 /// ```
-/// use trigpoly::{AlgebraError, Expr, ParseCause, VarSet};
+/// use trigpoly::{AlgebraError, Expr, ParseCause, Vars};
 ///
-/// let vars = VarSet::builder().coordinate("x").momentum("p_x").build().unwrap();
+/// let vars = Vars::builder().coordinate("x").momentum("p_x").build().unwrap();
 /// let err = Expr::parse(&vars, "p_x^2/2 + q*x").unwrap_err();
 /// let ParseCause::UnknownName { name, known } = err.cause() else { panic!() };
 /// assert_eq!((name.as_str(), known.as_slice()), ("q", &["x".to_string(), "p_x".into()][..]));

@@ -223,7 +223,7 @@ pub(crate) fn long_name(name: &str) -> Option<(String, usize)> {
 }
 
 /// Why a name cannot name a variable of any set: the one rule that
-/// [`VarSetBuilder::build`](crate::VarSetBuilder::build) applies, and that a program reading
+/// [`VarsBuilder::build`](crate::VarsBuilder::build) applies, and that a program reading
 /// names (superint's system-file loader) applies before its own refusals. Its `Display` is the
 /// reason in words.
 ///
@@ -688,7 +688,7 @@ impl Piece {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::VarSet;
+    use crate::Vars;
 
     /// `i` and the functions cannot name a variable: a parameter `re` made `re(x + i p_x)` the
     /// real part and `re*(x + i p_x)` a product.
@@ -727,9 +727,9 @@ mod tests {
             let (_, latex) = render_name(&format!("{name}_{name}2"));
             assert!(latex.is_ascii(), "{name}: {latex}");
         }
-        let err = VarSet::builder().coordinate("é").build().unwrap_err();
+        let err = Vars::builder().coordinate("é").build().unwrap_err();
         assert!(err.to_string().contains("LaTeX has no letter 'é'"), "{err}");
-        VarSet::builder()
+        Vars::builder()
             .coordinate("q₁")
             .parameter("ħ")
             .build()
@@ -758,9 +758,9 @@ mod tests {
         assert_eq!(latex_unwritable("θé"), Some('é'));
         assert_eq!(latex_unwritable("ωщx"), Some('щ'));
         for name in ["ωx", "αβ", "Ωa", "x₁y", "x_₁"] {
-            VarSet::builder().coordinate(name).build().expect(name);
+            Vars::builder().coordinate(name).build().expect(name);
         }
-        let err = VarSet::builder().coordinate("θé").build().unwrap_err();
+        let err = Vars::builder().coordinate("θé").build().unwrap_err();
         assert!(err.to_string().contains("LaTeX has no letter 'é'"), "{err}");
     }
 
@@ -879,7 +879,7 @@ mod tests {
         }
         assert_eq!(spell_out("ħ").as_deref(), Some("hbar"));
         assert_eq!(spell_out("p_ℓ2").as_deref(), Some("p_ell2"));
-        let vars = VarSet::builder()
+        let vars = Vars::builder()
             .parameter("hbar")
             .parameter("ℓ")
             .build()
@@ -889,7 +889,7 @@ mod tests {
         }
         let ell = vars.lookup("ell").expect("ℓ");
         assert_eq!(vars.variable(ell).ascii(), "ell");
-        VarSet::builder()
+        Vars::builder()
             .parameter("hbar")
             .parameter("ħ")
             .build()
@@ -953,7 +953,7 @@ mod tests {
             render_name("xy₁₀_a_b"),
             ("xy₁₀_a_b".into(), r"\mathrm{xy}_{10,a,b}".into())
         );
-        let vars = VarSet::builder()
+        let vars = Vars::builder()
             .coordinate("k_x")
             .momentum("p_k_x")
             .parameter("p_x_0")

@@ -5,7 +5,7 @@ use std::sync::OnceLock;
 
 use num_bigint::BigInt;
 use trigpoly::{
-    Coefficient, GaussianRational, Integer, Poly, Rational, Var, VarSet, VarSetBuilder, Vars,
+    Coefficient, GaussianRational, Integer, Poly, Rational, Var, VarSet, Vars, VarsBuilder,
 };
 
 /// Polynomials over Q(i).
@@ -22,8 +22,8 @@ pub fn phase_space() -> Vars {
 
 /// The builder of [`phase_space`], for a phase space like it with more parameters or other
 /// limits.
-pub fn phase_space_builder() -> VarSetBuilder {
-    VarSet::builder()
+pub fn phase_space_builder() -> VarsBuilder {
+    Vars::builder()
         .coordinate("x")
         .coordinate("y")
         .momentum("p_x")
@@ -37,7 +37,7 @@ pub fn phase_space_builder() -> VarSetBuilder {
 /// The plane `x, y, p_x, p_y, θ, M, ω` (coordinates declared before momenta), then the
 /// parameters given, in that order.
 pub fn plane_with(parameters: &[&str]) -> Vars {
-    let plane = VarSet::builder()
+    let plane = Vars::builder()
         .coordinate("x")
         .coordinate("y")
         .momentum("p_x")
@@ -56,7 +56,7 @@ pub fn plane_with(parameters: &[&str]) -> Vars {
 pub fn coordinates(names: &[&str]) -> Vars {
     names
         .iter()
-        .fold(VarSet::builder(), |b, name| b.coordinate(name))
+        .fold(Vars::builder(), |b, name| b.coordinate(name))
         .build()
         .expect("valid variable names")
 }

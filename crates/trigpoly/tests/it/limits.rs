@@ -6,7 +6,7 @@ use trigpoly::{AlgebraError, Limits, Poly, Rational, Setting, VarSet, Vars};
 use crate::common::{coordinates, p, phase_space, var, G, Q};
 
 fn small_vars() -> Vars {
-    VarSet::builder()
+    Vars::builder()
         .coordinate("x")
         .coordinate("y")
         .coordinate("z")
@@ -22,7 +22,7 @@ fn small_vars() -> Vars {
 
 /// `x, y, z, t` with a work limit of `products` term products a product.
 fn work_vars(products: u64) -> Vars {
-    VarSet::builder()
+    Vars::builder()
         .coordinate("x")
         .coordinate("y")
         .coordinate("z")
@@ -176,7 +176,7 @@ fn term_limit_stops_a_power_of_a_short_polynomial() {
 fn capped_vars(max_reserved_bytes: u64) -> Vars {
     ["x", "y", "z", "t", "u"]
         .into_iter()
-        .fold(VarSet::builder(), |b, name| b.coordinate(name))
+        .fold(Vars::builder(), |b, name| b.coordinate(name))
         .limits(
             Limits::default()
                 .max_terms(1_000_000_000_000)
@@ -358,7 +358,7 @@ fn exponent_overflow_in_products_and_powers_is_an_error() {
 
 #[test]
 fn exponent_overflow_with_narrow_exponent_fields() {
-    let vars = VarSet::builder()
+    let vars = Vars::builder()
         .coordinate("x")
         .angle("theta")
         .exponent_bits(8)
@@ -405,7 +405,7 @@ fn exponent_fields_follow_the_degree_limit() {
     };
     assert_eq!(with_degree(&five, 10_000), (21, 2, 10_000));
     assert_eq!(with_degree(&five, 100), (12, 1, 100));
-    let asked = VarSet::builder()
+    let asked = Vars::builder()
         .coordinate("x")
         .exponent_bits(16)
         .build()
@@ -413,13 +413,13 @@ fn exponent_fields_follow_the_degree_limit() {
     assert_eq!(with_degree(&asked, 100_000), (16, 1, 32_767));
     // Asking for the width the limit would choose declares the same ring.
     let chosen = coordinates(&["x"]);
-    let named = VarSet::builder()
+    let named = Vars::builder()
         .coordinate("x")
         .exponent_bits(chosen.exponent_bits())
         .build()
         .unwrap();
     assert_eq!(named, chosen);
-    let thirteen = VarSet::builder()
+    let thirteen = Vars::builder()
         .coordinate("x")
         .exponent_bits(13)
         .build()
@@ -446,7 +446,7 @@ fn a_degree_limit_of_zero_is_refused() {
         setting: Setting::MaxDegree,
         value: 0,
     });
-    let built = VarSet::builder().coordinate("x").limits(zero).build();
+    let built = Vars::builder().coordinate("x").limits(zero).build();
     let built = built.map(|v| v.len());
     assert_eq!(built, refused);
     assert_eq!(
@@ -620,7 +620,7 @@ fn term_limit_refuses_a_power_whose_terms_meet_but_cannot_cancel_up_front() {
 
 /// `f · g` on a pool of two threads, in variables `x, y, z, t, u` whose term limit is `limit`.
 fn product_with_limit(f: &str, g: &str, limit: usize) -> Result<usize, AlgebraError> {
-    let vars = VarSet::builder()
+    let vars = Vars::builder()
         .coordinate("x")
         .coordinate("y")
         .coordinate("z")
@@ -713,7 +713,7 @@ fn a_parse_error_keeps_its_cause() {
             "{text}"
         );
     }
-    let angles = VarSet::builder().angle("theta").build().unwrap();
+    let angles = Vars::builder().angle("theta").build().unwrap();
     let err = Poly::<Rational>::parse(&angles, "cos(5000*theta)").unwrap_err();
     assert_eq!(
         err.cause(),
@@ -723,7 +723,7 @@ fn a_parse_error_keeps_its_cause() {
         }
     );
     // The expansion of a sine or cosine, `(e^{iθ} + e^{−iθ})/2`, past the term limit.
-    let one_term = VarSet::builder()
+    let one_term = Vars::builder()
         .angle("theta")
         .limits(Limits::default().max_terms(1))
         .build()

@@ -1,7 +1,7 @@
 //! Printing like the paper: exact unicode, LaTeX and ASCII strings.
 
 use pretty_assertions::assert_eq;
-use trigpoly::{GaussianRational, Poly, Style, VarSet, Vars};
+use trigpoly::{GaussianRational, Poly, Style, Vars};
 
 use crate::common::{p, phase_space, plane_with, G, Q};
 
@@ -106,7 +106,7 @@ fn minus_omega_squared_times_a_parameter() {
 /// together (`4iMω`).
 #[test]
 fn generators_declared_as_words_are_set_apart() {
-    let vars = VarSet::builder()
+    let vars = Vars::builder()
         .parameter("M")
         .parameter("omega")
         .coordinate("L")
@@ -140,7 +140,7 @@ fn generators_declared_as_words_are_set_apart() {
 /// that term: `Re K² H_x` would read as the real part of `K²`. At the end of a term it is bare.
 #[test]
 fn names_of_several_words_take_parentheses_where_they_would_read_otherwise() {
-    let vars = VarSet::builder()
+    let vars = Vars::builder()
         .parameter("omega")
         .coordinate("ReK")
         .shown_as("Re K")
@@ -241,7 +241,7 @@ fn p11_groups_terms_by_cos_and_sin() {
 /// With momenta declared first, `P_{1,1}` prints the same way.
 #[test]
 fn p11_prints_as_in_the_paper_with_momenta_declared_first() {
-    let vars = VarSet::builder()
+    let vars = Vars::builder()
         .momentum("p_x")
         .momentum("p_y")
         .coordinate("x")
@@ -266,7 +266,7 @@ fn p11_prints_as_in_the_paper_with_momenta_declared_first() {
 /// commands); a power's braces or a command's backslash need no space.
 #[test]
 fn latin_angles_are_spaced_from_cos_and_sin_in_latex() {
-    let vars = VarSet::builder()
+    let vars = Vars::builder()
         .angle("a")
         .angle("t")
         .angle("theta")
@@ -372,7 +372,7 @@ fn coefficients_fractions_and_negative_powers() {
 /// order, as positive powers do (`a/x² + b/y² + c/z²`, once `c/z² + b/y² + a/x²`).
 #[test]
 fn coordinate_denominators_print_in_the_variables_order() {
-    let vars = VarSet::builder()
+    let vars = Vars::builder()
         .coordinate("x")
         .coordinate("y")
         .coordinate("z")
@@ -594,7 +594,7 @@ fn a_name_before_parentheses_is_a_product() {
 /// spelled by one-letter names (`Mω²xy`). A power or a longer name ends a run (`a b²x y`).
 #[test]
 fn one_letter_names_are_spaced_where_side_by_side_they_spell_another_name() {
-    let vars = VarSet::builder()
+    let vars = Vars::builder()
         .coordinate("x")
         .coordinate("y")
         .coordinate("xy")
@@ -697,7 +697,7 @@ fn long_sums_read_back() {
 /// the ASCII form is ASCII and reads back; it printed `p_θ*cos(θ)`.
 #[test]
 fn ascii_spells_out_names_declared_in_greek() {
-    let vars = VarSet::builder()
+    let vars = Vars::builder()
         .coordinate("ξ")
         .momentum("p_ξ")
         .angle("θ")
@@ -726,7 +726,7 @@ fn exp_of_i_theta_written_together() {
 /// ASCII (`ϑ` printed as itself, and did not read back from an ASCII-only source).
 #[test]
 fn greek_variants_spell_out_in_ascii() {
-    let vars = VarSet::builder()
+    let vars = Vars::builder()
         .angle("ϑ")
         .momentum("p_ϑ")
         .parameter("π")
@@ -746,7 +746,7 @@ fn greek_variants_spell_out_in_ascii() {
 /// printed as words, `hbar ℓ`, `\mathrm{hbar}`; a name declared `ħ` printed `{\hbar}`.
 #[test]
 fn hbar_and_ell_print_as_letters() {
-    let vars = VarSet::builder()
+    let vars = Vars::builder()
         .coordinate("x")
         .momentum("p_x")
         .parameter("hbar")
@@ -797,7 +797,7 @@ fn high_trigonometric_powers_print_as_single_terms() {
 
 /// Coordinates and a momentum between two angles, `x, a, y, p_x, b`.
 fn two_angles() -> Vars {
-    VarSet::builder()
+    Vars::builder()
         .coordinate("x")
         .angle("a")
         .coordinate("y")
@@ -902,7 +902,7 @@ fn the_printed_terms_are_bounded_before_they_are_formed() {
         p::<GaussianRational>(&vars, "x*exp(7*i*a)").printed_terms_bound(),
         8
     );
-    let limited = VarSet::builder()
+    let limited = Vars::builder()
         .coordinate("x")
         .angle("a")
         .limits(trigpoly::Limits::default().max_terms(40))
@@ -1013,7 +1013,7 @@ fn an_imaginary_sum_has_i_in_its_factor() {
 /// `−(2ω − 3Ω) Q`, `iM(ω + Ω) Z̄ W/2`; a factor of parameters alone stays in front.
 #[test]
 fn a_polynomial_in_functions_writes_their_common_factor_last() {
-    let vars = VarSet::builder()
+    let vars = Vars::builder()
         .parameter("omega")
         .parameter("M")
         .coordinate("Q")
@@ -1104,7 +1104,7 @@ fn a_sum_whose_terms_share_no_factor_has_no_factored_form() {
 /// beside it.
 #[test]
 fn a_variable_shown_with_a_bar_reads_by_its_display_however_the_bar_is_written() {
-    let vars = (VarSet::builder().parameter("a").parameter("c"))
+    let vars = (Vars::builder().parameter("a").parameter("c"))
         .shown_as("ā")
         .build()
         .unwrap();

@@ -4,7 +4,7 @@
 //! the same canonical polynomial, and takes the value of `f(p)·g(p)` at an integer point.
 
 use trigpoly::{
-    AlgebraError, Coefficient, GaussianRational, Limits, Point, Poly, Rational, Var, VarSet, Vars,
+    AlgebraError, Coefficient, GaussianRational, Limits, Point, Poly, Rational, Var, Vars,
 };
 
 use crate::common::{coordinates, p, var, G, Q};
@@ -349,7 +349,7 @@ fn sparse_products_whose_term_pairs_meet_are_hashed_exactly() {
 fn a_sparse_product_written_by_a_second_thread_stops_at_the_term_limit() {
     let vars = ["x", "y", "z", "t"]
         .iter()
-        .fold(VarSet::builder(), |b, name| b.coordinate(name))
+        .fold(Vars::builder(), |b, name| b.coordinate(name))
         .limits(Limits::default().max_terms(100_000))
         .build()
         .expect("valid variable names");
@@ -404,7 +404,7 @@ fn products_of_monomials_wider_than_the_heap_keys() {
 /// y = −2, p = 5`, and the constant `e^{iθ} = (3 + 4i)/5` (`cos θ = 3/5`, `sin θ = 4/5`) to
 /// put for `θ` before evaluating there.
 fn word_boundary_space() -> (Vars, [Var; 4], Point, G) {
-    let vars = VarSet::builder()
+    let vars = Vars::builder()
         .coordinate("x")
         .coordinate("y")
         .momentum("p")

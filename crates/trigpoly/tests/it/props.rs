@@ -115,7 +115,7 @@ fn same_computation_in(
 ) -> Vec<String> {
     let vars = ["x", "y", "z", "t", "u", "v"]
         .iter()
-        .fold(trigpoly::VarSet::builder(), |b, name| b.coordinate(name))
+        .fold(trigpoly::Vars::builder(), |b, name| b.coordinate(name))
         .limits(trigpoly::Limits::default().max_degree(limit))
         .exponent_bits(bits)
         .build()
@@ -215,7 +215,7 @@ fn wide_poly() -> impl Strategy<Value = Q> {
     let vars = VARS
         .get_or_init(|| {
             (0..16)
-                .fold(trigpoly::VarSet::builder(), |b, k| {
+                .fold(trigpoly::Vars::builder(), |b, k| {
                     b.coordinate(&format!("x{k}"))
                 })
                 .build()
@@ -1110,7 +1110,7 @@ proptest! {
 /// The variables of a rational potential: two coordinates, a momentum, a parameter, and the
 /// denominators `x − y` and `x + y`.
 fn with_denominators() -> trigpoly::Vars {
-    trigpoly::VarSet::builder()
+    trigpoly::Vars::builder()
         .coordinate("x")
         .coordinate("y")
         .momentum("p_x")
@@ -1185,7 +1185,7 @@ proptest! {
     /// by name, and declaring it as a denominator makes the division go through.
     #[test]
     fn division_by_a_sum_with_a_radical_inverts_it(a in small_text(), b in small_text(), e in -1i64..=1) {
-        let base = || trigpoly::VarSet::builder()
+        let base = || trigpoly::Vars::builder()
             .coordinate("x")
             .coordinate("y")
             .parameter("k")

@@ -4,7 +4,7 @@
 use pretty_assertions::assert_eq;
 use trigpoly::{
     AlgebraError, AngleUse, BadName, Expr, Integer, Misuse, MonomialIndex, Point, Poly, Rational,
-    Setting, VarKind, VarSet, Vars,
+    Setting, VarKind, Vars,
 };
 
 use crate::common::{p, phase_space, var, G, Q};
@@ -12,7 +12,7 @@ use crate::common::{p, phase_space, var, G, Q};
 /// A reserved word as a variable's name: the name and the reason, not a sentence to parse.
 #[test]
 fn a_reserved_name_is_refused_with_the_name() {
-    let err = VarSet::builder()
+    let err = Vars::builder()
         .coordinate("x")
         .parameter("sin")
         .build()
@@ -29,8 +29,7 @@ fn a_reserved_name_is_refused_with_the_name() {
         err.to_string(),
         "\"sin\" cannot name a variable: i, cos, sin, exp, conj, re, im and sqrt are reserved"
     );
-    let Err(AlgebraError::InvalidName { name, reason }) =
-        VarSet::builder().momentum("a__b").build()
+    let Err(AlgebraError::InvalidName { name, reason }) = Vars::builder().momentum("a__b").build()
     else {
         panic!("a__b is refused by name");
     };
@@ -40,7 +39,7 @@ fn a_reserved_name_is_refused_with_the_name() {
 /// Nine radicals, one past the most a set may declare: the count, as a setting out of range.
 #[test]
 fn too_many_radicals_are_a_setting_out_of_range() {
-    let mut builder = VarSet::builder().coordinate("x");
+    let mut builder = Vars::builder().coordinate("x");
     for k in 1..=9 {
         builder = builder.radical(&format!("r{k}"), &format!("x + {k}"));
     }
@@ -63,7 +62,7 @@ fn too_many_radicals_are_a_setting_out_of_range() {
 /// declared.
 #[test]
 fn a_refused_declaration_names_what_was_declared() {
-    let square = VarSet::builder()
+    let square = Vars::builder()
         .coordinate("x")
         .coordinate("y")
         .radical("r", "x^2 + 2*x*y + y^2")
@@ -79,7 +78,7 @@ fn a_refused_declaration_names_what_was_declared() {
             .starts_with("the radicand of r = √(x² + 2xy + y²) is the square of x + y"),
         "{err}"
     );
-    let constant = VarSet::builder()
+    let constant = Vars::builder()
         .coordinate("x")
         .radical("s", "2")
         .build()
@@ -89,7 +88,7 @@ fn a_refused_declaration_names_what_was_declared() {
         matches!(&err, AlgebraError::RadicalRefused { radicals, .. } if radicals == &["s"]),
         "{err:?}"
     );
-    let term = VarSet::builder()
+    let term = Vars::builder()
         .coordinate("x")
         .denominator("2*x", "2x", "2 x")
         .build()

@@ -1,7 +1,7 @@
 //! Rejected inputs: each with its exact message, its (line, column) and the caret rendering.
 
 use pretty_assertions::assert_eq;
-use trigpoly::{Coefficient, GaussianRational, Poly, Rational, VarSet};
+use trigpoly::{Coefficient, GaussianRational, Poly, Rational, Vars};
 
 use crate::common::phase_space;
 
@@ -890,12 +890,12 @@ fn an_angle_is_no_variable_over_q() {
 #[test]
 #[should_panic(expected = "a variable handle of another variable set was used")]
 fn coefficients_in_a_variable_of_another_set_panic() {
-    let vars = trigpoly::VarSet::builder()
+    let vars = trigpoly::Vars::builder()
         .coordinate("x")
         .momentum("p")
         .build()
         .unwrap();
-    let other = trigpoly::VarSet::builder().coordinate("y").build().unwrap();
+    let other = trigpoly::Vars::builder().coordinate("y").build().unwrap();
     let f = Poly::<Rational>::parse(&vars, "x^2*p + 3*x^2 + p").unwrap();
     let x = vars.lookup("x").unwrap();
     assert_eq!(f.coefficients_in(&[x]).len(), 2);
@@ -1240,14 +1240,14 @@ fn a_power_of_a_bare_angle_after_a_powered_function_is_ambiguous() {
 /// them as `x(y)^{2}` does; where it does not, the real and imaginary parts are raised whole.
 #[test]
 fn a_superscript_after_a_power_of_a_declared_re_quotes_the_parentheses() {
-    let declared = VarSet::builder()
+    let declared = Vars::builder()
         .coordinate("x")
         .coordinate("y")
         .parameter("Re")
         .parameter("Im")
         .build()
         .expect("valid variable names");
-    let parts = VarSet::builder()
+    let parts = Vars::builder()
         .coordinate("x")
         .coordinate("y")
         .build()
@@ -1268,7 +1268,7 @@ fn a_superscript_after_a_power_of_a_declared_re_quotes_the_parentheses() {
 /// where `Re` is a parameter was asked whether it meant the real part `re`.
 #[test]
 fn a_declared_re_with_two_arguments_is_no_misspelled_part() {
-    let declared = VarSet::builder()
+    let declared = Vars::builder()
         .coordinate("x")
         .coordinate("y")
         .parameter("Re")

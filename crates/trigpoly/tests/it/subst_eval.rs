@@ -139,9 +139,9 @@ fn degrees_and_ranges_of_laurent_and_trigonometric_polynomials() {
 /// variables and other limits takes the handles.
 #[test]
 fn variable_handles_of_another_set_are_refused() {
-    use trigpoly::{Limits, VarSet};
+    use trigpoly::{Limits, Vars};
     let big = phase_space();
-    let small = VarSet::builder()
+    let small = Vars::builder()
         .coordinate("x")
         .coordinate("y")
         .build()
