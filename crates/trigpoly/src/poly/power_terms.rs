@@ -176,7 +176,7 @@ mod tests {
     use super::sumset_with_one_relation;
     use crate::number::{GaussianRational, Rational};
     use crate::poly::Poly;
-    use crate::varset::VarSet;
+    use crate::varset::Vars;
 
     /// The bound counts the monomials of a power of terms with one relation exactly: the
     /// Fock–Darwin `W`'s `W^e` has `(e + 1)(e + 2)²(e + 3)/12` terms, and its bound is that
@@ -188,7 +188,7 @@ mod tests {
     /// with integers.
     #[test]
     fn the_bound_is_the_power_of_terms_with_one_relation() {
-        let vars = VarSet::builder()
+        let vars = Vars::builder()
             .coordinate("x")
             .coordinate("y")
             .momentum("p_x")

@@ -575,12 +575,12 @@ fn term_limit_refuses_a_power_in_general_position_up_front() {
 fn terms_and_work_vars(terms: usize, products: u64) -> Vars {
     ["x", "y", "z", "t", "u"]
         .into_iter()
-        .fold(VarSet::builder(), |b, name| b.coordinate(name))
-        .limits(Limits {
-            max_terms: terms,
-            max_term_products: products,
-            ..Limits::default()
-        })
+        .fold(Vars::builder(), |b, name| b.coordinate(name))
+        .limits(
+            Limits::default()
+                .max_terms(terms)
+                .max_term_products(products),
+        )
         .build()
         .unwrap()
 }

@@ -7,7 +7,7 @@ use proptest::prelude::*;
 use proptest::test_runner::Config;
 use trigpoly::{
     AlgebraError, ExactDivisor, GaussianRational, Integer, IntegerAcc, IntegerView, Limits, Point,
-    Poly, Rational, Style, VarKind, VarSet,
+    Poly, Rational, Style, VarKind, Vars,
 };
 
 use crate::common::{phase_space, var, G, Q};
@@ -481,8 +481,8 @@ proptest! {
             .map(|((re, im), m)| (GaussianRational::new(re.into(), im.into()), m))
             .collect();
         let within = |max_terms| {
-            let limits = Limits { max_terms, ..Limits::default() };
-            let vars = ["x", "y", "z"].into_iter().fold(VarSet::builder(), |b, v| b.coordinate(v));
+            let limits = Limits::default().max_terms(max_terms);
+            let vars = ["x", "y", "z"].into_iter().fold(Vars::builder(), |b, v| b.coordinate(v));
             G::from_terms(&vars.limits(limits).build().unwrap(), terms.clone()).expect("small exponents")
         };
         let f = within(Limits::default().max_terms);
