@@ -1049,8 +1049,8 @@ impl<'a> Scope<'a> {
                     .map(|l| format!("{}:{}:{}", inner.origin, l.line, l.column))
                     .unwrap_or_else(|| inner.origin.clone());
                 let hint = match &inner.hint {
-                    Some(h) => format!("the family's value is at {at}; {h}"),
-                    None => format!("the family's value is at {at}"),
+                    Some(h) => format!("{}'s value is at {at}; {h}", family.name),
+                    None => format!("{}'s value is at {at}", family.name),
                 };
                 Err(source
                     .error(

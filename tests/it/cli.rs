@@ -4559,10 +4559,25 @@ fn a_table_instance_past_a_limit_is_an_error_of_the_command_line() {
         let err = crate::superint_refused(&[command, file, "K_{30,30}", "L", "--max-terms", "100"]);
         assert!(
             err.starts_with("superint: error: <command line>:1:1: cannot expand K_{30,30}: the result would have more than 100 terms")
-                && err.contains("hint: the family's value is at systems/harmonic-rotor.toml:58:10"),
+                && err.contains("hint: K's value is at systems/harmonic-rotor.toml:58:10"),
             "{command}: {err}"
         );
     }
+}
+
+/// An instance of a family whose value uses another family's instance is refused with both
+/// places in the hint, each named by its family: the Fock–Darwin `P_{m,n} = re(K_m_n)` at
+/// `P`'s value, then `K`'s (both hints once read "the family's value is at", twice).
+#[test]
+fn a_nested_family_instance_past_a_limit_names_each_family_at_its_place() {
+    let err = crate::superint_refused(&["expand", "systems/fock-darwin.toml", "P_99_1"]);
+    assert!(
+        err.contains(
+            "hint: P's value is at systems/fock-darwin.toml:79:13; \
+             K's value is at systems/fock-darwin.toml:74:10; "
+        ),
+        "{err}"
+    );
 }
 
 /// A family instance whose power is known to pass the term limit is refused before it is
