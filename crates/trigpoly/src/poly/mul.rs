@@ -221,6 +221,17 @@ impl<C: Coefficient> Poly<C> {
         ))
     }
 
+    /// Whether [`Poly::checked_square`] refuses `self²` by the work limit before it forms a
+    /// term product: a square too long to gather, past [`SMALL_SIDE`] terms, whose
+    /// `n(n + 1)/2` term products pass the limit ([`Poly::check_work`], as `checked_mul`
+    /// asks it).
+    pub(crate) fn square_passes_the_work_limit(&self) -> bool {
+        let n = self.len();
+        !gather::fits(self.words(), n.saturating_mul(n))
+            && n > SMALL_SIDE
+            && Self::check_work(self, self).is_err()
+    }
+
     /// The canonical form of a product of two canonical polynomials.
     fn product(
         vars: &crate::varset::Vars,
