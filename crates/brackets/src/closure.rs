@@ -55,8 +55,9 @@ use fewest::Relations;
 use lift::LiftContext;
 use span::Span;
 
-/// What to compute: a degree ([`ClosureOptions::new`]), then each other choice by a method of
-/// its name.
+/// What to compute: a degree ([`ClosureOptions::new`]), then each other choice by a method,
+/// the condition by [`ClosureOptions::when`], a parameter's value by [`ClosureOptions::fix`],
+/// every other field by the method of its name (`symbolic` adds one more each call).
 ///
 /// ```
 /// use brackets::{systems, ClosureOptions};

@@ -208,7 +208,9 @@ pub(super) fn denominators_degree(f: &Expr) -> i64 {
 }
 
 /// What to search for and how: a space ([`SearchOptions::new`]), then each other choice by a
-/// method of its name.
+/// method, the condition by [`SearchOptions::when`], a parameter's value by
+/// [`SearchOptions::fix`], every other field by the method of its name (`symbolic` and `known`
+/// add one more each call).
 ///
 /// ```
 /// use brackets::search::{SearchOptions, SearchSpace, DEFAULT_MAX_PRODUCTS};
