@@ -12,7 +12,7 @@
 //! monomial of the sumset is a term. The Fock–Darwin ladder function
 //! `W = p_x − i p_y + i M (a + b)(x − i y)/2` is such a polynomial, with one relation
 //! (`Max · Mby = Mbx · May`), and `W^99` has 8 670 850 terms; multiplied out one factor at a
-//! time it met the default limit of 2 000 000 only at `W^68`, after 20 s.
+//! time it met the command line's default limit of 2 000 000 only at `W^68`, after 20 s.
 
 use super::pow::binomial_u128;
 use super::Poly;

@@ -588,10 +588,11 @@ fn terms_and_work_vars(terms: usize, products: u64) -> Vars {
 /// A power whose terms meet on a relation that keeps their phase is refused by its count
 /// before any of its products, as one in general position is: `f = 1 + x + y + xy + z + t +
 /// u`, whose monomials meet on `1 · xy = x · y`, has `f^12` of C(18, 6) − C(16, 6) = 10 556
-/// terms. One below that it is `TooManyTerms`, even under a work limit that `f^11 · f`, of
-/// 7 371 × 7 term products, passes (multiplied one factor at a time, it met that limit
-/// first: the count was known only of the power formed); at it, the work limit decides,
-/// and without it the power is formed, of 10 556 terms, as are the powers below it.
+/// terms. Under a term limit one below that it is `TooManyTerms`, even with a work limit one
+/// below the 7 371 × 7 term products of the last product, `f^11 · f` (multiplied one factor
+/// at a time, it met that work limit first: the count was known only of the power formed);
+/// under a term limit of 10 556 that work limit decides, and without it the power is formed,
+/// of 10 556 terms, as are the powers below it.
 #[test]
 fn term_limit_refuses_a_power_whose_terms_meet_but_cannot_cancel_up_front() {
     let f = "1 + x + y + x*y + z + t + u";
