@@ -1,7 +1,7 @@
 //! `EngineError`: why the engine could not form a bracket, a claim or a certificate.
 
 use thiserror::Error;
-use trigpoly::{AlgebraError, BracketError, ParseError};
+use trigpoly::{AlgebraError, BracketError, ParseCause, ParseError};
 
 /// Why the bracket engine has no answer.
 #[derive(Clone, Debug, PartialEq, Eq, Error)]
@@ -124,11 +124,19 @@ impl EngineError {
     /// angle's order): the input may be right, and a larger limit may decide it. The fixed
     /// bound on the coefficients of a product or a power
     /// ([`AlgebraError::CoefficientTooLarge`]) and the ranges of a set's settings
-    /// ([`AlgebraError::SettingOutOfRange`]) are not limits here: no limit raises them.
+    /// ([`AlgebraError::SettingOutOfRange`]) are not limits here: no limit raises them. A text
+    /// whose reading a limit stopped ([`System::parse`](crate::System::parse) of
+    /// `(x + p_x + 1)^60`, or of `x^5000` past the degree limit) is a parse error stopped at a
+    /// limit, as its [`ParseError::cause`] says.
     pub fn is_limit(&self) -> bool {
         match self {
             EngineError::ClosureTooManyTerms { .. } => true,
             EngineError::Algebra(e) => e.limit().is_some(),
+            EngineError::Parse { error, .. } => match error.cause() {
+                ParseCause::Algebra(e) => e.limit().is_some(),
+                ParseCause::PowerPastLimit { .. } => true,
+                _ => false,
+            },
             _ => false,
         }
     }
@@ -212,5 +220,37 @@ mod tests {
             limit: 1 << 24,
         });
         assert!(!coefficient.is_limit());
+    }
+
+    /// A text that a limit stopped while it was read is stopped at a limit too: a program
+    /// that asks `System::parse` for `(x + p_x + k + 1)^6` under a term limit of 30, or for
+    /// `x^5000` under the degree limit, is told so by `is_limit`, as it is for the same
+    /// power formed by `checked_pow`; a text that does not read, or names nothing, is not.
+    #[test]
+    fn a_parse_stopped_at_a_limit_is_a_limit() {
+        use crate::{PhaseSpace, System};
+        use trigpoly::{Expr, Limits, Vars};
+
+        let vars = Vars::builder()
+            .coordinate("x")
+            .momentum("p_x")
+            .parameter("k")
+            .limits(Limits::default().max_terms(30))
+            .build()
+            .unwrap();
+        let space = PhaseSpace::new(&vars, &[("x", "p_x")]).unwrap();
+        let h = Expr::parse(&vars, "p_x^2/2 + k*x^2/2").unwrap();
+        let system = System::new("small", space, h).unwrap();
+        let sum = system.parse("x + p_x + k + 1").unwrap();
+        assert!(EngineError::from(sum.checked_pow(6).unwrap_err()).is_limit());
+        for past_a_limit in ["(x + p_x + k + 1)^6", "x^5000", "p_x^1000000000"] {
+            let err = system.parse(past_a_limit).unwrap_err();
+            assert!(matches!(err, EngineError::Parse { .. }), "{err:?}");
+            assert!(err.is_limit(), "{past_a_limit}: {err}");
+        }
+        for no_limit in ["x + q", "x + (", "x/(1 + x)"] {
+            let err = system.parse(no_limit).unwrap_err();
+            assert!(!err.is_limit(), "{no_limit}: {err}");
+        }
     }
 }
