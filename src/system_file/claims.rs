@@ -112,8 +112,9 @@ pub(crate) fn engine_error(source: &Source, span: Range<usize>, e: &EngineError)
 
 /// An engine error in a function that returns a `FileError`, so that `?` takes it: an
 /// expression that did not parse is of kind [`ErrorKind::Expression`], from `<expression>`,
-/// at its line and column when the error has its text ([`brackets::System::parse`]'s do); a
-/// computation a program asked for is of kind [`ErrorKind::Limit`] (with the hint to raise the
+/// at its line and column when the error has its text ([`brackets::System::parse`]'s do), with
+/// the cause its parse met ([`FileError::cause`]: a limit, an unknown name), as one of
+/// [`Expr::parse`](trigpoly::Expr::parse) has; a computation a program asked for is of kind [`ErrorKind::Limit`] (with the hint to raise the
 /// limit) or [`ErrorKind::Engine`], from `<program>`, without a location.
 ///
 /// ```
@@ -143,11 +144,12 @@ impl From<EngineError> for FileError {
                 &source_text,
                 error.span.start..error.span.end,
                 error.message(),
-            ),
+            )
+            .with_cause(error.cause()),
             // Located by its own excerpt when it knows its source.
             EngineError::Parse { error, .. } if error.excerpt().is_some() => error.into(),
-            EngineError::Parse { message, .. } => {
-                FileError::new(ErrorKind::Expression, expression, message)
+            EngineError::Parse { message, error, .. } => {
+                FileError::new(ErrorKind::Expression, expression, message).with_cause(error.cause())
             }
             e => {
                 let mut err = engine_error(&Source::new("<program>", ""), 0..0, &e);

@@ -1203,6 +1203,43 @@ fn a_parse_error_keeps_its_place_under_question_mark() {
         .starts_with("line 1, column 7: "));
 }
 
+/// A text the engine read (`System::parse`), taken into a `FileError` by `?`, keeps what kind
+/// of error its parse met (`FileError::cause`), as one of the ring's own parse does: a power
+/// past the term limit says the limit, an unknown name says the name; without it a program
+/// told the two apart only by the message.
+#[test]
+fn an_engine_parse_error_taken_by_question_mark_keeps_its_cause() {
+    let vars = Vars::builder()
+        .coordinate("x")
+        .momentum("p_x")
+        .parameter("k")
+        .limits(Limits::default().max_terms(30))
+        .build()
+        .unwrap();
+    let space = PhaseSpace::new(&vars, &[("x", "p_x")]).unwrap();
+    let h = Expr::parse(&vars, "p_x^2/2 + k*x^2/2").unwrap();
+    let system = System::new("small", space, h).unwrap();
+    let read = |text: &str| -> Result<Expr, FileError> { Ok(system.parse(text)?) };
+    let ring = |text: &str| -> Result<Expr, FileError> { Ok(Expr::parse(&vars, text)?) };
+    for read in [&read as &dyn Fn(&str) -> Result<Expr, FileError>, &ring] {
+        let err = read("p_x^2 +\n (x + p_x + k + 1)^6").unwrap_err();
+        assert_eq!(
+            (err.kind, err.line_col()),
+            (ErrorKind::Expression, Some((2, 2)))
+        );
+        assert_eq!(
+            err.cause.as_deref(),
+            Some(&superint::trigpoly::ParseCause::Algebra(
+                AlgebraError::TooManyTerms { limit: 30 }
+            )),
+            "{err}"
+        );
+        let err = read("x + q").unwrap_err();
+        assert_eq!(err.unknown_name().as_deref(), Some("q"), "{err:?}");
+        assert_eq!(read("x + (").unwrap_err().cause, None);
+    }
+}
+
 /// A function added in code is checked against the names as they print, as a file's is: a
 /// name the printer would write for a product of one-letter variables (`kx` for `k x`) is
 /// refused, unless the variables were built knowing it, and then the product prints spaced;
