@@ -88,6 +88,43 @@ pub struct ReadmeDoctests;
 pub struct SystemFilesDoctests;
 
 /// Everything a user of the library needs: `use superint::prelude::*;`.
+///
+/// A limit ([`Limits`](trigpoly::Limits): terms, degree, work) refuses with a typed error: the
+/// ring's [`AlgebraError`](trigpoly::AlgebraError), whose
+/// [`limit`](trigpoly::AlgebraError::limit) names the [`LimitKind`](trigpoly::LimitKind); the
+/// engine's [`EngineError::is_limit`](brackets::EngineError::is_limit); a file's error of kind
+/// [`ErrorKind::Limit`](crate::system_file::ErrorKind::Limit), and a claim past a limit
+/// undecided in the report of [`check_each`](crate::system_file::check_each), which checks
+/// the others:
+///
+/// ```
+/// use superint::prelude::*;
+///
+/// let limits = Limits::default().max_terms(30).max_degree(8);
+/// let builder: VarsBuilder = Vars::builder().coordinate("x").momentum("p_x");
+/// let vars = builder.limits(limits).build()?;
+/// let sum = Expr::parse(&vars, "1 + x + p_x")?;
+/// // (1 + x + p_x)^7 has 36 terms, x^9 an exponent past 8.
+/// assert_eq!(sum.checked_pow(7), Err(AlgebraError::TooManyTerms { limit: 30 }));
+/// let err = Expr::parse(&vars, "x")?.checked_pow(9).unwrap_err();
+/// assert_eq!(err.limit(), Some(LimitKind::Degree(9)));
+///
+/// let text = r#"
+/// hamiltonian = "p_x^2/2"
+/// [phase_space]
+/// coordinates = ["x"]
+/// [[claim]]
+/// claim = "{x, (1 + x + p_x)^40} = 0"
+/// [[claim]]
+/// claim = "{p_x, H} = 0"
+/// "#;
+/// let small = LimitsOverride::default().max_terms(100);
+/// let (report, errors) = check_each(vec![load_system_text("free.toml", text, &small)]);
+/// let outcomes: Vec<ClaimOutcome> = report.claims().iter().map(|c| c.outcome()).collect();
+/// assert_eq!(outcomes, [ClaimOutcome::Undecided, ClaimOutcome::Proved]);
+/// assert_eq!(errors[0].kind, ErrorKind::Limit);
+/// # Ok::<(), Box<dyn std::error::Error>>(())
+/// ```
 pub mod prelude {
     pub use brackets::{
         check_tower, closure, closure_of, eigen_proof, eigen_proof_of, expressed_in, rank, rank_on,
@@ -97,8 +134,8 @@ pub mod prelude {
         SearchOptions, SearchResult, SearchSpace, System, TowerReport, UpperBound, Verdict,
     };
     pub use trigpoly::{
-        AlgebraError, Expr, GaussianRational, Limits, ParseError, Point, Poly, Rational, Style,
-        Var, VarKind, VarSet, Vars,
+        AlgebraError, Expr, GaussianRational, LimitKind, Limits, ParseError, Point, Poly, Rational,
+        Style, Var, VarKind, VarSet, Vars, VarsBuilder,
     };
 
     pub use brackets::systems::Resonant;
@@ -113,7 +150,7 @@ pub mod prelude {
         TowerResult,
     };
     pub use crate::system_file::{
-        bracket_report, check_report, expand_report, family_tower_report,
+        bracket_report, check_each, check_report, expand_report, family_tower_report,
         family_tower_report_with_progress, load as load_system_file, load_str as load_system_text,
         rank_report, rank_report_when, table_report, Caller, CheckedClaim, ClaimSpec, ErrorKind,
         Family, FileError, LimitsOverride, LoadedSystem, Location, Warning,
