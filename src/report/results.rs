@@ -177,7 +177,7 @@ pub struct Excerpt {
 impl Excerpt {
     /// What the prose formats say under the part: `shown: the terms of its first 100 of
     /// 254321 monomials outside the angles; --full-expressions shows all` (`its first 100 of
-    /// 254321 terms` without angles; for a program, `RenderOptions::shown_monomials = None`
+    /// 254321 terms` without angles; for a program, `RenderOptions::shown_monomials(None)`
     /// shows all).
     pub fn describe(&self) -> String {
         let (shown, all) = (self.shown, self.monomials);
@@ -185,10 +185,9 @@ impl Excerpt {
             true => format!("the terms of its first {shown} of {all} monomials outside the angles"),
             false => format!("its first {shown} of {all} terms"),
         };
-        let all = self.caller.names(
-            "--full-expressions",
-            "RenderOptions::shown_monomials = None",
-        );
+        let all = self
+            .caller
+            .names("--full-expressions", "RenderOptions::shown_monomials(None)");
         format!("shown: {part}; {all} shows all")
     }
 

@@ -1356,7 +1356,7 @@ fn a_files_families_print_apart() {
 }
 
 /// A residual cut short in a program's report says how a program shows it all
-/// (`RenderOptions::shown_monomials = None`), not the command line's `--full-expressions`; a
+/// (`RenderOptions::shown_monomials(None)`), not the command line's `--full-expressions`; a
 /// report built for the command line names the flag, as `superint check` prints.
 #[test]
 fn a_programs_long_residual_names_the_render_option() {
@@ -1368,7 +1368,7 @@ fn a_programs_long_residual_names_the_render_option() {
                 [[claim]]\nid = \"long\"\nclaim = \"(1 + x + p_x)^3 = 0\"\n";
     let file = load_str("long.toml", text, &LimitsOverride::default()).unwrap();
     let options = RenderOptions::reproducible().shown_monomials(Some(2));
-    let program = "shown: its first 2 of 10 terms; RenderOptions::shown_monomials = None shows all";
+    let program = "shown: its first 2 of 10 terms; RenderOptions::shown_monomials(None) shows all";
     let flag = "shown: its first 2 of 10 terms; --full-expressions shows all";
     let report = check_report([&file]).unwrap();
     assert_eq!(report.caller, Caller::Program);
@@ -1380,7 +1380,7 @@ fn a_programs_long_residual_names_the_render_option() {
     }
     let latex = render(&report, Format::Latex, &options);
     assert!(
-        latex.contains(r"RenderOptions::shown\_monomials = None"),
+        latex.contains(r"RenderOptions::shown\_monomials(None)"),
         "{latex}"
     );
     assert!(!latex.contains("full-expressions"), "{latex}");
@@ -1396,7 +1396,7 @@ fn a_programs_long_residual_names_the_render_option() {
     let table = table_report(&file, &["x", "F"]).unwrap();
     let table = render(&table, Format::Markdown, &options);
     assert!(
-        table.contains("RenderOptions::shown_monomials = None shows all"),
+        table.contains("RenderOptions::shown_monomials(None) shows all"),
         "{table}"
     );
     // Built for the command line, or marked so after, a report names the flag.
