@@ -41,9 +41,7 @@ pub struct PaperJob {
 impl PaperArgs {
     pub fn job(self, output: Output) -> PaperJob {
         PaperJob {
-            options: PaperOptions {
-                tower_max: self.tower_max,
-            },
+            options: PaperOptions::default().tower_max(self.tower_max),
             output,
         }
     }

@@ -9,7 +9,7 @@
 //! ```
 //! use superint::paper::{Paper, PaperOptions};
 //!
-//! let paper = Paper::build(&PaperOptions { tower_max: 2 })?;
+//! let paper = Paper::build(&PaperOptions::default().tower_max(2))?;
 //! let report = paper.check()?;
 //! assert!(report.all_proved());
 //! assert!(report.claim_ids().iter().any(|(id, _)| id == "C09"));
@@ -43,8 +43,23 @@ pub const TITLE: &str =
 pub const SUBTITLE: &str = "D. Latini, Rigid Body Rotors in Planar Potentials: A Novel type of \
                             Superintegrable Mechanical Systems in the Plane";
 
-/// Choices for building the catalogue.
+/// Choices for building the catalogue: the defaults ([`PaperOptions::default`]), each changed
+/// by a method of its name.
+///
+/// ```
+/// use superint::prelude::*;
+///
+/// assert_eq!(PaperOptions::default().tower_max, 8);
+/// assert_eq!(PaperOptions::default().tower_max(2).tower_max, 2);
+/// ```
+///
+/// A choice may be added, so a program writes no literal of all of them:
+///
+/// ```compile_fail,E0639
+/// let options = superint::paper::PaperOptions { tower_max: 2 };
+/// ```
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[non_exhaustive]
 pub struct PaperOptions {
     /// The bound `N` of the towers `1 ≤ m, n ≤ N` checked by expansion (the paper's claim C12
     /// asks for at least 8).
@@ -54,6 +69,15 @@ pub struct PaperOptions {
 impl Default for PaperOptions {
     fn default() -> Self {
         PaperOptions { tower_max: 8 }
+    }
+}
+
+impl PaperOptions {
+    /// The same choices with the towers checked by expansion for `1 ≤ m, n ≤ n_max`.
+    #[must_use]
+    pub fn tower_max(mut self, n_max: i64) -> Self {
+        self.tower_max = n_max;
+        self
     }
 }
 
