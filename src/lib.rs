@@ -13,9 +13,11 @@
 //! family towers become [`report::Report`]s rendered by [`render::render`]. The examples
 //! `own_system`, `extend_file` and `discover` show each use.
 //!
-//! A program that only uses the library can depend on it with `default-features = false`:
-//! the feature `cli` (on by default) adds the command-line program and its allocator, and
-//! with them clap, indicatif and mimalloc.
+//! A program that only uses the library can depend on it with `default-features = false`
+//! (`superint = { path = "../superint", default-features = false }`, by path or git, as the
+//! workspace's crates are not published; [`trigpoly`] and [`brackets`] come with it): the
+//! feature `cli` (on by default) adds the command-line program and its allocator, and with
+//! them clap, indicatif and mimalloc.
 //!
 //! ```
 //! use superint::prelude::*;
