@@ -1,7 +1,7 @@
 //! `EngineError`: why the engine could not form a bracket, a claim or a certificate.
 
 use thiserror::Error;
-use trigpoly::{AlgebraError, BracketError, ParseCause, ParseError};
+use trigpoly::{AlgebraError, BracketError, ParseError};
 
 /// Why the bracket engine has no answer.
 #[derive(Clone, Debug, PartialEq, Eq, Error)]
@@ -132,11 +132,7 @@ impl EngineError {
         match self {
             EngineError::ClosureTooManyTerms { .. } => true,
             EngineError::Algebra(e) => e.limit().is_some(),
-            EngineError::Parse { error, .. } => match error.cause() {
-                ParseCause::Algebra(e) => e.limit().is_some(),
-                ParseCause::PowerPastLimit { .. } => true,
-                _ => false,
-            },
+            EngineError::Parse { error, .. } => error.cause().is_limit(),
             _ => false,
         }
     }

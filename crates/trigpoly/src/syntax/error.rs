@@ -123,6 +123,29 @@ pub enum ParseCause {
     },
 }
 
+impl ParseCause {
+    /// Whether a limit stopped the text's reading: an operation of the algebra refused at a
+    /// limit ([`AlgebraError::limit`]), or an exponent or multiple written past the degree
+    /// limit.
+    ///
+    /// ```
+    /// use trigpoly::{AlgebraError, ParseCause};
+    ///
+    /// assert!(ParseCause::PowerPastLimit { power: Some(5000), limit: 1000 }.is_limit());
+    /// assert!(ParseCause::Algebra(AlgebraError::TooManyTerms { limit: 30 }).is_limit());
+    /// assert!(!ParseCause::Algebra(AlgebraError::DivisionByZero).is_limit());
+    /// assert!(!ParseCause::Syntax.is_limit());
+    /// ```
+    #[must_use]
+    pub fn is_limit(&self) -> bool {
+        match self {
+            ParseCause::Algebra(e) => e.limit().is_some(),
+            ParseCause::PowerPastLimit { .. } => true,
+            _ => false,
+        }
+    }
+}
+
 /// The cause of an error made without one.
 const SYNTAX: ParseCause = ParseCause::Syntax;
 
