@@ -622,7 +622,8 @@ impl LoadedSystem {
             .into_iter()
             .find_map(|(degree, max_monomials)| {
                 let symbolic = kept.iter().fold(
-                    (generic.clone())
+                    generic
+                        .clone()
                         .max_monomials(max_monomials)
                         .parameters_degree(degree),
                     |o, &v| o.symbolic(v),
