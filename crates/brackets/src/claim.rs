@@ -638,6 +638,7 @@ impl Claim {
     }
 
     /// The same claim under a condition.
+    #[must_use]
     pub fn when(mut self, condition: Condition) -> Self {
         self.condition = Some(condition);
         self

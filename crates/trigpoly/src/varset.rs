@@ -787,6 +787,7 @@ impl fmt::Debug for Vars {
 /// Declares the variables of a set, in order ([`Vars::builder`]), and builds the handle
 /// [`Vars`] of the set ([`VarsBuilder::build`]).
 #[derive(Clone, Debug, Default)]
+#[must_use = "a builder declares nothing until `build()` is called"]
 pub struct VarsBuilder {
     vars: Vec<Variable>,
     limits: Limits,
