@@ -21,10 +21,10 @@ fn main() -> Result<(), EngineError> {
         };
         println!("{statement:<18} [C09 {outcome}]");
     }
+    // The table prints with its header and aligned columns; `table.entries[a][b]` is
+    // `{names[a], names[b]}` for a program that reads it, which `Entry::render` writes in
+    // another notation (`Style::Latex`).
     let table = BracketTable::compute(&rotor, &["L", "G1", "G2"])?;
-    for (name, row) in table.display.iter().zip(&table.entries) {
-        let cells: Vec<String> = row.iter().map(|e| e.render(Style::Unicode)).collect();
-        println!("{name:>3} │ {}", cells.join("  "));
-    }
+    print!("\n{table}");
     Ok(())
 }
