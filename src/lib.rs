@@ -94,7 +94,9 @@ pub struct SystemFilesDoctests;
 /// A limit ([`Limits`](trigpoly::Limits): terms, degree, work) refuses with a typed error: the
 /// ring's [`AlgebraError`](trigpoly::AlgebraError), whose
 /// [`limit`](trigpoly::AlgebraError::limit) names the [`LimitKind`](trigpoly::LimitKind); the
-/// engine's [`EngineError::is_limit`](brackets::EngineError::is_limit); a file's error of kind
+/// engine's [`EngineError::limit`](brackets::EngineError::limit), which names the
+/// [`EngineLimit`](brackets::EngineLimit) (the ring's, or a search's or a closure's own
+/// option), and [`is_limit`](brackets::EngineError::is_limit); a file's error of kind
 /// [`ErrorKind::Limit`](crate::system_file::ErrorKind::Limit), and a claim past a limit
 /// undecided in the report of [`check_each`](crate::system_file::check_each), which checks
 /// the others:
@@ -131,9 +133,10 @@ pub mod prelude {
     pub use brackets::{
         check_tower, closure, closure_of, eigen_proof, eigen_proof_of, expressed_in, rank, rank_on,
         search, systems, BracketTable, CanonicalPair, Claim, Closure, ClosureBracket,
-        ClosureOptions, Condition, EigenProof, EngineError, Entry as TableEntry, Expressed,
-        FunctionName, Integral, NamedFunction, Outcome, PhaseSpace, RankCertificate, Relation,
-        SearchOptions, SearchResult, SearchSpace, System, TowerReport, UpperBound, Verdict,
+        ClosureOptions, Condition, EigenProof, EngineError, EngineLimit, Entry as TableEntry,
+        Expressed, FunctionName, Integral, NamedFunction, Outcome, PhaseSpace, RankCertificate,
+        Relation, SearchOptions, SearchResult, SearchSpace, System, TowerReport, UpperBound,
+        Verdict,
     };
     pub use trigpoly::{
         AlgebraError, Expr, GaussianRational, LimitKind, Limits, ParseError, Point, Poly, Rational,

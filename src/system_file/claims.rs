@@ -99,13 +99,15 @@ impl CheckedClaim {
     }
 }
 
-/// An engine error at a place of the file: limits are limit errors, with the hint.
+/// An engine error at a place of the file: limits are limit errors, with the hint (none for a
+/// limit of the search's or the closure's options, whose message names the option).
 pub(crate) fn engine_error(source: &Source, span: Range<usize>, e: &EngineError) -> FileError {
     let message = e.to_string();
     match Limit::of_engine(e) {
-        Some(limit) => source
-            .error(ErrorKind::Limit, span, message)
-            .with_hint(limit.hint()),
+        Some(limit) => FileError {
+            hint: limit.hint(),
+            ..source.error(ErrorKind::Limit, span, message)
+        },
         None => source.error(ErrorKind::Engine, span, message),
     }
 }
@@ -114,8 +116,11 @@ pub(crate) fn engine_error(source: &Source, span: Range<usize>, e: &EngineError)
 /// expression that did not parse is of kind [`ErrorKind::Expression`], from `<expression>`,
 /// at its line and column when the error has its text ([`brackets::System::parse`]'s do), with
 /// the cause its parse met ([`FileError::cause`]: a limit, an unknown name), as one of
-/// [`Expr::parse`](trigpoly::Expr::parse) has; a computation a program asked for is of kind [`ErrorKind::Limit`] (with the hint to raise the
-/// limit) or [`ErrorKind::Engine`], from `<program>`, without a location.
+/// [`Expr::parse`](trigpoly::Expr::parse) has, and of kind [`ErrorKind::Limit`], with the
+/// hint, where a limit stopped it, as the loader says of a file's text; a computation a
+/// program asked for is of kind [`ErrorKind::Limit`] (with the hint to raise the limit, but
+/// for a search's or a closure's own option, which its message names) or
+/// [`ErrorKind::Engine`], from `<program>`, without a location.
 ///
 /// ```
 /// use superint::prelude::*;
@@ -131,6 +136,8 @@ pub(crate) fn engine_error(source: &Source, span: Range<usize>, e: &EngineError)
 /// let rotor = systems::harmonic_rotor();
 /// let err = FileError::from(rotor.parse("{L,\n G1 + }").unwrap_err());
 /// assert_eq!((err.kind, err.line_col()), (ErrorKind::Expression, Some((2, 7))));
+/// let err = FileError::from(rotor.parse("x^5000").unwrap_err());
+/// assert_eq!((err.kind, err.line_col()), (ErrorKind::Limit, Some((1, 3))));
 /// ```
 impl From<EngineError> for FileError {
     fn from(e: EngineError) -> Self {
@@ -145,11 +152,14 @@ impl From<EngineError> for FileError {
                 error.span.start..error.span.end,
                 error.message(),
             )
-            .with_cause(error.cause()),
+            .with_cause(error.cause())
+            .classified_by_cause(),
             // Located by its own excerpt when it knows its source.
             EngineError::Parse { error, .. } if error.excerpt().is_some() => error.into(),
             EngineError::Parse { message, error, .. } => {
-                FileError::new(ErrorKind::Expression, expression, message).with_cause(error.cause())
+                FileError::new(ErrorKind::Expression, expression, message)
+                    .with_cause(error.cause())
+                    .classified_by_cause()
             }
             e => {
                 let mut err = engine_error(&Source::new("<program>", ""), 0..0, &e);

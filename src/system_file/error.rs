@@ -12,6 +12,8 @@ use std::ops::Range;
 
 use trigpoly::{Excerpt, Span};
 
+use super::scope::Limit;
+
 /// What kind of problem a [`FileError`] reports.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
 pub enum ErrorKind {
@@ -190,6 +192,24 @@ impl FileError {
             cause => Some(Box::new(cause.clone())),
         };
         self
+    }
+
+    /// The same error, classified by its [`FileError::cause`] as the loader classifies a
+    /// text's error: of kind [`ErrorKind::Limit`], with the hint that says how to raise the
+    /// limit, where a limit stopped the parse
+    /// ([`ParseCause::limit`](trigpoly::ParseCause::limit)); otherwise as it is. By this one
+    /// rule a parse that a limit stopped is a limit whether it reaches a program through the
+    /// loader or through `?`.
+    #[must_use]
+    pub(crate) fn classified_by_cause(self) -> Self {
+        match self.cause.as_deref().and_then(Limit::of_parse) {
+            Some(limit) => FileError {
+                kind: ErrorKind::Limit,
+                hint: limit.hint(),
+                ..self
+            },
+            None => self,
+        }
     }
 
     /// The unknown name an expression's error is about ([`FileError::cause`]), if it is one,
@@ -424,7 +444,8 @@ impl From<Excerpt> for Location {
 /// A parse error of the ring's own parser ([`trigpoly::Expr::parse`]), so that `?` takes it
 /// into a `FileError`: of kind [`ErrorKind::Expression`], from `<expression>`, at its line and
 /// column with the line and a caret when it knows its source (every error of
-/// `Expr::parse` does).
+/// `Expr::parse` does); of kind [`ErrorKind::Limit`], with the hint, where a limit stopped the
+/// parse, as the loader says of a file's text ([`FileError::cause`]).
 ///
 /// ```
 /// use superint::prelude::*;
@@ -437,6 +458,8 @@ impl From<Excerpt> for Location {
 /// assert_eq!((err.kind, err.line_col()), (ErrorKind::Expression, Some((2, 4))));
 /// assert!(err.to_string().starts_with("<expression>:2:4: "), "{err}");
 /// assert!(err.to_string().contains("\n 2 |  x^^2\n   |    ^"), "{err}");
+/// let err = energy(&vars, "x^5000").unwrap_err();
+/// assert_eq!((err.kind, err.line_col()), (ErrorKind::Limit, Some((1, 3))));
 /// ```
 impl From<trigpoly::ParseError> for FileError {
     fn from(e: trigpoly::ParseError) -> Self {
@@ -445,6 +468,7 @@ impl From<trigpoly::ParseError> for FileError {
             ..FileError::new(ErrorKind::Expression, "<expression>", e.message())
         }
         .with_cause(e.cause())
+        .classified_by_cause()
     }
 }
 

@@ -9,13 +9,11 @@
 use std::cell::RefCell;
 use std::collections::HashMap;
 
-use brackets::EngineError;
+use brackets::{EngineError, EngineLimit};
 
 use num_bigint::BigInt;
 use trigpoly::syntax::{is_name_continue, is_name_start, Expr as Tree, ExprKind, ParseError};
-use trigpoly::{
-    AlgebraError, Context, Expr, GaussianRational, LimitKind, ParseCause, Span, VarKind,
-};
+use trigpoly::{Context, Expr, GaussianRational, LimitKind, ParseCause, Span, VarKind};
 
 use super::error::{ErrorKind, FileError, Warning};
 use super::load::MAX_DEGREE_CEILING;
@@ -375,56 +373,60 @@ pub(crate) enum Limit {
     PastEvery,
     /// A result past the machine's memory, which a larger limit only lets through.
     Memory,
+    /// A limit of a search's or a closure's own options (`max_products`, `max_monomials`),
+    /// which no file sets: its message names the option.
+    OfOptions,
 }
 
 impl Limit {
-    /// The limit that stopped the algebra with `e`, if a limit did: the term limit (of a
-    /// result or of its printing), the work limit, the degree limit (an exponent, an angle's
-    /// order), past every limit when its number is, or the machine's memory.
-    fn of_algebra(e: &AlgebraError) -> Option<Limit> {
-        Some(match e.limit()? {
+    /// The limit of the ring that `kind` names: the term limit (of a result or of its
+    /// printing), the work limit, the degree limit (an exponent, an angle's order), past every
+    /// limit when its number is, or the machine's memory.
+    fn of_kind(kind: LimitKind) -> Limit {
+        match kind {
             LimitKind::Work => Limit::Work,
             LimitKind::Terms => Limit::Size,
-            LimitKind::Degree(n) => Limit::of_degree(Some(n)),
+            LimitKind::Degree(n) => Limit::of_degree(n),
             LimitKind::Memory => Limit::Memory,
             // A kind of limit this crate does not know yet: one that a larger limit may reach.
             _ => Limit::Size,
+        }
+    }
+
+    /// The limit that stopped the engine with `e`, if a limit did ([`EngineError::limit`]):
+    /// the ring's (of the algebra, of a text's reading, of a closure's products or a search's
+    /// unknowns), or one of the search's or the closure's options.
+    pub(crate) fn of_engine(e: &EngineError) -> Option<Limit> {
+        Some(match e.limit()? {
+            EngineLimit::Ring(kind) => Limit::of_kind(kind),
+            // The search's products, the closure's monomials, and an option's limit this crate
+            // does not know yet.
+            _ => Limit::OfOptions,
         })
     }
 
-    /// The limit that stopped the engine with `e`, if a limit did
-    /// ([`EngineError::is_limit`]): the algebra's, or the term limit of a closure's products.
-    pub(crate) fn of_engine(e: &EngineError) -> Option<Limit> {
-        match e {
-            EngineError::ClosureTooManyTerms { .. } => Some(Limit::Size),
-            EngineError::Algebra(e) => Limit::of_algebra(e),
-            _ => None,
-        }
+    /// The limit that stopped a parse with the cause `cause`, if a limit did
+    /// ([`ParseCause::limit`]): the algebra's, or an exponent or multiple written past the
+    /// degree limit.
+    pub(crate) fn of_parse(cause: &ParseCause) -> Option<Limit> {
+        cause.limit().map(Limit::of_kind)
     }
 
-    /// The limit that stopped a parse with the cause `cause`, if a limit did: the algebra's,
-    /// or an exponent or multiple written past the degree limit.
-    fn of_parse(cause: &ParseCause) -> Option<Limit> {
-        match cause {
-            ParseCause::Algebra(e) => Limit::of_algebra(e),
-            ParseCause::PowerPastLimit { power, .. } => Some(Limit::of_degree(*power)),
-            _ => None,
-        }
-    }
-
-    /// The degree limit, for an exponent or order of size `power` (`None`: too large to say):
-    /// past every limit when it is above the most that `max_degree` may be.
-    fn of_degree(power: Option<u64>) -> Limit {
-        match power.is_none_or(|n| n > u64::from(MAX_DEGREE_CEILING)) {
+    /// The degree limit, for an exponent or order of size `power`: past every limit when it
+    /// is above the most that `max_degree` may be (one too large to say is `u64::MAX`).
+    fn of_degree(power: u64) -> Limit {
+        match power > u64::from(MAX_DEGREE_CEILING) {
             true => Limit::PastEvery,
             false => Limit::Size,
         }
     }
 
     /// The hint that goes with the limit: the work limit's, or the size limits', or, for an
-    /// exponent past the most that `max_degree` may be, that no limit reaches it.
-    pub(crate) fn hint(self) -> String {
-        match self {
+    /// exponent past the most that `max_degree` may be, that no limit reaches it; none for a
+    /// limit of the options, whose message names the option that raises it.
+    pub(crate) fn hint(self) -> Option<String> {
+        Some(match self {
+            Limit::OfOptions => return None,
             Limit::PastEvery => format!(
                 "no limit reaches this exponent or order: max_degree is at most \
                  {MAX_DEGREE_CEILING}; write the expression without so large a power or multiple"
@@ -441,7 +443,7 @@ impl Limit {
                             --max-terms N or --max-degree D; in a program, the LimitsOverride \
                             given to the loader)"
                 .to_string(),
-        }
+        })
     }
 }
 
@@ -542,31 +544,29 @@ impl Unknown {
 }
 
 /// An expression error at a span of a text, classified as a limit error when it is one (by
-/// its cause, [`ParseError::cause`]).
+/// its cause, [`ParseError::cause`]; [`FileError::classified_by_cause`], the rule by which `?`
+/// classifies a parse error too), an unknown name with the hint where such a name is declared.
 pub(crate) fn expression_error(source: &Source, text: &Text, e: &ParseError) -> FileError {
     let message = relocate_opener(source, text, e);
-    let error = |kind| {
-        text.error(source, kind, e.span, message)
-            .with_cause(e.cause())
+    let error = text
+        .error(source, ErrorKind::Expression, e.span, message)
+        .with_cause(e.cause())
+        .classified_by_cause();
+    let Some(unknown) = Unknown::of(e.cause()) else {
+        return error;
     };
-    if let Some(limit) = Limit::of_parse(e.cause()) {
-        error(ErrorKind::Limit).with_hint(limit.hint())
-    } else if let Some(unknown) = Unknown::of(e.cause()) {
-        // A built-in system's text from the command line is the program's too: its origin
-        // tells the two apart.
-        let command_line = source.origin == super::COMMAND_LINE;
-        let hint = match (momentum_hint(&unknown), source.program) {
-            (Some(hint), _) => hint,
-            (None, true) if command_line => UNKNOWN_NAME_HINT_BUILT_IN.into(),
-            (None, true) => UNKNOWN_NAME_HINT_IN_CODE.into(),
-            (None, false) => distance_hint(&unknown)
-                .or_else(|| bare_momentum_hint(&unknown))
-                .unwrap_or_else(|| UNKNOWN_NAME_HINT.into()),
-        };
-        error(ErrorKind::Expression).with_hint(hint)
-    } else {
-        error(ErrorKind::Expression)
-    }
+    // A built-in system's text from the command line is the program's too: its origin tells
+    // the two apart.
+    let command_line = source.origin == super::COMMAND_LINE;
+    let hint = match (momentum_hint(&unknown), source.program) {
+        (Some(hint), _) => hint,
+        (None, true) if command_line => UNKNOWN_NAME_HINT_BUILT_IN.into(),
+        (None, true) => UNKNOWN_NAME_HINT_IN_CODE.into(),
+        (None, false) => distance_hint(&unknown)
+            .or_else(|| bare_momentum_hint(&unknown))
+            .unwrap_or_else(|| UNKNOWN_NAME_HINT.into()),
+    };
+    error.with_hint(hint)
 }
 
 /// The parser's message, with where the opener it names stands (an unclosed bracket, a
@@ -1159,6 +1159,8 @@ pub(crate) fn mention(tree: &Tree, name: &str) -> Option<Span> {
 
 #[cfg(test)]
 mod tests {
+    use trigpoly::AlgebraError;
+
     use super::*;
 
     /// An exponent past the most `max_degree` may be set to gets no advice to raise it, and
@@ -1166,7 +1168,7 @@ mod tests {
     #[test]
     fn an_exponent_past_every_limit_is_not_advised_to_raise_one() {
         let written = |power: Option<u64>| ParseCause::PowerPastLimit { power, limit: 1000 };
-        let limit_hint = |cause: ParseCause| Limit::of_parse(&cause).map(Limit::hint).unwrap();
+        let limit_hint = |cause: ParseCause| Limit::of_parse(&cause).and_then(Limit::hint).unwrap();
         let raise = limit_hint(written(Some(5000)));
         assert!(raise.contains("raise the limit with max_terms or max_degree"));
         // 32768, 99999999999999999999 (no 64-bit number), -9223372036854775808.

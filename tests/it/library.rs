@@ -1206,7 +1206,8 @@ fn a_parse_error_keeps_its_place_under_question_mark() {
 /// A text the engine read (`System::parse`), taken into a `FileError` by `?`, keeps what kind
 /// of error its parse met (`FileError::cause`), as one of the ring's own parse does: a power
 /// past the term limit says the limit, an unknown name says the name; without it a program
-/// told the two apart only by the message.
+/// told the two apart only by the message. The power past the limit is of kind `limit`, as
+/// the loader says of a file's text (it was `expression` under `?`).
 #[test]
 fn an_engine_parse_error_taken_by_question_mark_keeps_its_cause() {
     let vars = Vars::builder()
@@ -1223,10 +1224,8 @@ fn an_engine_parse_error_taken_by_question_mark_keeps_its_cause() {
     let ring = |text: &str| -> Result<Expr, FileError> { Ok(Expr::parse(&vars, text)?) };
     for read in [&read as &dyn Fn(&str) -> Result<Expr, FileError>, &ring] {
         let err = read("p_x^2 +\n (x + p_x + k + 1)^6").unwrap_err();
-        assert_eq!(
-            (err.kind, err.line_col()),
-            (ErrorKind::Expression, Some((2, 2)))
-        );
+        assert_eq!((err.kind, err.line_col()), (ErrorKind::Limit, Some((2, 2))));
+        assert!(err.hint.as_deref().is_some_and(|h| h.contains("max_terms")));
         assert_eq!(
             err.cause.as_deref(),
             Some(&superint::trigpoly::ParseCause::Algebra(
@@ -1236,7 +1235,174 @@ fn an_engine_parse_error_taken_by_question_mark_keeps_its_cause() {
         );
         let err = read("x + q").unwrap_err();
         assert_eq!(err.unknown_name().as_deref(), Some("q"), "{err:?}");
+        assert_eq!(err.kind, ErrorKind::Expression);
         assert_eq!(read("x + (").unwrap_err().cause, None);
+    }
+}
+
+/// A parse that a limit stopped is one error whichever way it reaches a program: the engine's
+/// `System::parse` says which limit (`EngineError::limit`), and as a `FileError`, through `?`
+/// from the engine or the ring, through the loader reading the same text in a file, and
+/// through `LoadedSystem::parse`, it is of kind `limit` with the same message and hint. It was
+/// `expression` through `?`, `limit` through the loader. An unknown name is neither a limit
+/// nor, through any of them, of kind `limit`.
+#[test]
+fn a_parse_stopped_at_a_limit_is_a_limit_through_question_mark_and_the_loader() {
+    let file = |value: &str| {
+        format!(
+            "hamiltonian = \"p_x^2/2\"\n[phase_space]\ncoordinates = [\"x\"]\n\
+             [[function]]\nname = \"B\"\nvalue = \"{value}\"\n"
+        )
+    };
+    let small = LimitsOverride::default().max_terms(30);
+    let free = load_system_text("free.toml", &file("x"), &small).unwrap();
+    let system = free.system();
+    for (text, limit) in [
+        ("x^5000", Some(LimitKind::Degree(5000))),
+        ("(1 + x + p_x)^20", Some(LimitKind::Terms)),
+        ("x + nope", None),
+    ] {
+        let engine = system.parse(text).unwrap_err();
+        assert_eq!(engine.limit(), limit.map(EngineLimit::Ring), "{text}");
+        assert_eq!(engine.is_limit(), limit.is_some(), "{text}");
+        let kind = match limit {
+            Some(_) => ErrorKind::Limit,
+            None => ErrorKind::Expression,
+        };
+        let question_mark = || -> Result<Expr, FileError> { Ok(system.parse(text)?) };
+        let ring = || -> Result<Expr, FileError> { Ok(Expr::parse(system.vars(), text)?) };
+        let loaded = load_system_text("free.toml", &file(text), &small).unwrap_err();
+        let in_code = free.parse(text).unwrap_err();
+        assert_eq!(loaded.kind, kind, "{text}: {loaded}");
+        for err in [question_mark().unwrap_err(), ring().unwrap_err(), in_code] {
+            assert_eq!(err.kind, kind, "{text}: {err}");
+            if limit.is_some() {
+                assert_eq!((&err.message, &err.hint), (&loaded.message, &loaded.hint));
+            }
+        }
+    }
+}
+
+/// The su(2) generators of the harmonic rotor, a closure's in the limit tests below.
+const SU2: [&str; 5] = ["F1", "F2", "L", "G1", "G2"];
+
+/// The search space of the limit tests below: degree 2 in the momenta, the coordinates and
+/// the trigonometric order (300 unknowns).
+fn degree_two() -> SearchSpace {
+    SearchSpace::default()
+        .momenta_degree(2)
+        .positions_degree(2)
+        .trig_degree(2)
+}
+
+/// A search for new integrals stopped past `SearchOptions::max_products` is a limit, the
+/// search's products (`EngineLimit::SearchProducts`), with its message as it was: it was
+/// `EngineError::Invalid`, no limit to `is_limit`. Taken by `?` into a `FileError` it is of
+/// kind `limit`, without a hint, since no file's setting raises it and the message names the
+/// option.
+#[test]
+fn a_search_past_its_products_says_that_limit() {
+    let rotor = systems::harmonic_rotor();
+    let few_products = SearchOptions::new(degree_two())
+        .when(rotor.resonance(1, 1).unwrap())
+        .new_only()
+        .max_products(1);
+    let err = search(&rotor, &few_products).unwrap_err();
+    assert_eq!(err.limit(), Some(EngineLimit::SearchProducts), "{err}");
+    assert!(err.is_limit());
+    assert!(
+        matches!(err, EngineError::PastLimit { limit: 1, .. }),
+        "{err:?}"
+    );
+    assert_eq!(
+        err.to_string(),
+        "more than 1 product of integrals, the limit (`SearchOptions::max_products`; on the \
+         command line, --max-products): search a smaller space, or raise the limit"
+    );
+    let as_file = FileError::from(err.clone());
+    assert_eq!((as_file.kind, as_file.hint), (ErrorKind::Limit, None));
+    assert_eq!(as_file.message, err.to_string());
+}
+
+/// A search space of more unknowns than the term limit is the term limit
+/// (`EngineLimit::Ring(LimitKind::Terms)`), raised by `Limits::max_terms`: it was
+/// `EngineError::Invalid`. Taken by `?` into a `FileError` it is of kind `limit` with the hint
+/// to raise `max_terms`.
+#[test]
+fn a_search_space_past_the_term_limit_says_that_limit() {
+    let small = systems::Rotor::Harmonic
+        .system(Limits::default().max_terms(10))
+        .unwrap();
+    let err = search(&small, &SearchOptions::new(degree_two())).unwrap_err();
+    assert_eq!(
+        err.limit(),
+        Some(EngineLimit::Ring(LimitKind::Terms)),
+        "{err}"
+    );
+    assert!(err.is_limit());
+    assert!(err.to_string().starts_with(
+        "the space has 300 unknowns, more than the term limit 10: search a smaller space"
+    ));
+    let as_file = FileError::from(err);
+    assert_eq!(as_file.kind, ErrorKind::Limit);
+    assert!(as_file.hint.is_some_and(|h| h.contains("max_terms")));
+}
+
+/// A closure whose monomials pass `ClosureOptions::max_monomials` is a limit, the closure's
+/// monomials (`EngineLimit::ClosureMonomials`), counted before any is expanded, with its
+/// message as it was: it was `EngineError::Invalid`.
+#[test]
+fn a_closure_past_its_monomials_says_that_limit() {
+    let rotor = systems::harmonic_rotor();
+    let few_monomials = ClosureOptions::new(2).max_monomials(20);
+    let err = closure(&rotor, &SU2, &few_monomials).unwrap_err();
+    assert_eq!(err.limit(), Some(EngineLimit::ClosureMonomials), "{err}");
+    assert!(err.is_limit());
+    assert!(
+        matches!(err, EngineError::PastLimit { limit: 20, .. }),
+        "{err:?}"
+    );
+    assert!(err.to_string().starts_with(
+        "there are 21 monomials of degree ≤ 2 in the 5 generators, more than the limit 20: \
+         lower the degree"
+    ));
+    assert_eq!(FileError::from(err).kind, ErrorKind::Limit);
+}
+
+/// A closure whose products of the generators pass the term limit together says the term
+/// limit, which raises them (`ClosureTooManyTerms` was a limit, but no program could ask
+/// which).
+#[test]
+fn a_closure_past_the_term_limit_says_that_limit() {
+    let small = systems::Rotor::Harmonic
+        .system(Limits::default().max_terms(60))
+        .unwrap();
+    let err = closure(&small, &SU2, &ClosureOptions::new(4)).unwrap_err();
+    assert!(
+        matches!(err, EngineError::ClosureTooManyTerms { limit: 60, .. }),
+        "{err:?}"
+    );
+    assert_eq!(err.limit(), Some(EngineLimit::Ring(LimitKind::Terms)));
+    assert!(err.is_limit());
+}
+
+/// What is wrong whatever the limits is no limit: a search or a closure on a condition the
+/// flow leaves, and a generator the system does not name.
+#[test]
+fn a_refusal_of_the_input_is_no_limit() {
+    let rotor = systems::harmonic_rotor();
+    let x = rotor.vars().lookup("x").unwrap();
+    let on_x_zero = Condition::new("x = 0", x, Expr::zero(rotor.vars()));
+    let left = SearchOptions::new(degree_two()).when(on_x_zero.clone());
+    let unknown = closure(&rotor, &["F1", "nope"], &ClosureOptions::new(2));
+    let flow_leaves = closure(&rotor, &SU2, &ClosureOptions::new(2).when(on_x_zero));
+    for err in [
+        search(&rotor, &left).unwrap_err(),
+        unknown.unwrap_err(),
+        flow_leaves.unwrap_err(),
+    ] {
+        assert_eq!((err.limit(), err.is_limit()), (None, false), "{err}");
+        assert_eq!(FileError::from(err).kind, ErrorKind::Engine);
     }
 }
 

@@ -39,7 +39,7 @@ use std::time::Instant;
 use trigpoly::{AlgebraError, Expr, GaussianRational, Rational, Style, Var, VarKind, Vars};
 
 use crate::claim::Condition;
-use crate::error::EngineError;
+use crate::error::{EngineError, EngineLimit};
 use crate::modular::{self, Echelon, Fp, SparseVec};
 use crate::scaling::{Lifter, Scaling};
 use crate::system::{NamedFunction, System};
@@ -93,7 +93,8 @@ pub struct ClosureOptions {
     pub parameters_degree: u32,
     /// The most monomials `p^ν G^β` the linear algebra may take: each is expanded, and each
     /// is a column of the system (5 generators at degree 12 are 6188 monomials, 2 s and
-    /// 200 MB; at degree 14, 11628, 8 s and 570 MB).
+    /// 200 MB; at degree 14, 11628, 8 s and 570 MB). More are refused before any is expanded,
+    /// a limit: [`EngineError::PastLimit`] of [`EngineLimit::ClosureMonomials`].
     pub max_monomials: usize,
 }
 
@@ -702,7 +703,8 @@ fn homogeneous_parts(scaling: &Scaling, e: &Expr) -> Result<Vec<Expr>, EngineErr
 
 /// Refuses, before any is expanded, a closure whose monomials (of degree `≤ options.degree`
 /// in the `varying` generators, times those of the `symbolic` parameters) would pass
-/// `options.max_monomials`.
+/// `options.max_monomials`: a limit, [`EngineLimit::ClosureMonomials`], which a program tells
+/// by [`EngineError::limit`].
 fn check_monomial_count(
     varying: usize,
     symbolic: usize,
@@ -726,18 +728,22 @@ fn check_monomial_count(
     } else {
         count.to_string()
     };
-    Err(EngineError::Invalid(format!(
-        "there are {count} monomials of degree ≤ {} in the {}{with_parameters}, \
-         more than the limit {}: lower the degree, or raise the limit \
-         (`ClosureOptions::max_monomials`; on the command line, --max-monomials)",
-        options.degree,
-        if varying == 1 {
-            "generator".to_string()
-        } else {
-            format!("{varying} generators")
-        },
-        options.max_monomials
-    )))
+    Err(EngineError::PastLimit {
+        which: EngineLimit::ClosureMonomials,
+        limit: options.max_monomials,
+        message: format!(
+            "there are {count} monomials of degree ≤ {} in the {}{with_parameters}, \
+             more than the limit {}: lower the degree, or raise the limit \
+             (`ClosureOptions::max_monomials`; on the command line, --max-monomials)",
+            options.degree,
+            if varying == 1 {
+                "generator".to_string()
+            } else {
+                format!("{varying} generators")
+            },
+            options.max_monomials
+        ),
+    })
 }
 
 /// Each target (a bracket `{G_a, G_b}` at the fixed values) as a combination of the columns,
@@ -842,6 +848,9 @@ fn printing_ring(vars: &Vars, generators: &[NamedFunction]) -> Result<PrintingRi
         }
         .word();
     }
+    // What `build` refuses here is a name (not one, declared twice, printed alike) or more
+    // variables than a set holds, a range no limit raises (`AlgebraError::limit` is `None` for
+    // each): never a limit, so the words lose none that `EngineError::limit` would say.
     let ring = shown
         .build()
         .or_else(|_| builder.build())

@@ -1,7 +1,7 @@
 //! `EngineError`: why the engine could not form a bracket, a claim or a certificate.
 
 use thiserror::Error;
-use trigpoly::{AlgebraError, BracketError, ParseError};
+use trigpoly::{AlgebraError, BracketError, LimitKind, ParseError};
 
 /// Why the bracket engine has no answer.
 #[derive(Clone, Debug, PartialEq, Eq, Error)]
@@ -24,7 +24,8 @@ pub enum EngineError {
     },
     /// The expansions of a closure's products of the generators, up to its degree, whose
     /// terms together pass the term limit ([`Limits::max_terms`](trigpoly::Limits)): they are
-    /// held at once, so the limit counts all of them, not one result.
+    /// held at once, so the limit counts all of them, not one result. Its
+    /// [`EngineError::limit`] is the term limit's, which raises it.
     #[error(
         "the products of the generators up to degree {degree} would have more than {limit} \
          term{} together (the term limit)",
@@ -35,6 +36,22 @@ pub enum EngineError {
         degree: u32,
         /// The limit in force.
         limit: usize,
+    },
+    /// A limit that the engine keeps itself, checked before it forms what the limit bounds:
+    /// more products of integrals than
+    /// [`SearchOptions::max_products`](crate::SearchOptions::max_products), more monomials in
+    /// the generators than [`ClosureOptions::max_monomials`](crate::ClosureOptions), a search
+    /// space of more unknowns than the term limit. [`EngineError::limit`] says which, `which`;
+    /// the message says it in words, with the setting that raises it.
+    #[error("{message}")]
+    PastLimit {
+        /// Which limit.
+        which: EngineLimit,
+        /// The limit in force.
+        limit: usize,
+        /// What passed it, in words, and the setting that raises it: `more than 9 products of
+        /// integrals, the limit (`SearchOptions::max_products`; …)`.
+        message: String,
     },
     /// A name that the system does not define.
     #[error("unknown function '{0}'")]
@@ -49,7 +66,9 @@ pub enum EngineError {
         /// What is wrong, in words.
         message: String,
     },
-    /// A phase space or system that is not well formed.
+    /// A phase space or system that is not well formed, or a request the engine cannot
+    /// answer on it: wrong whatever the limits (a limit that stopped the engine is
+    /// [`EngineError::PastLimit`], [`EngineError::ClosureTooManyTerms`] or an algebraic one).
     #[error("{0}")]
     Invalid(String),
     /// A known integral given to a search for new ones
@@ -71,6 +90,26 @@ pub enum EngineError {
     /// `{a, {b, c}} + {b, {c, a}} + {c, {a, b}} = 0` for a triple of phase variables.
     #[error("{}", .0.message)]
     Jacobi(Box<JacobiViolation>),
+}
+
+/// Which limit stopped the engine ([`EngineError::limit`]): one of the ring's, as
+/// [`AlgebraError::limit`] names it, or one of the search's and the closure's own options, so
+/// that a program raises the setting that stopped it.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+#[non_exhaustive]
+pub enum EngineLimit {
+    /// A limit of the variable set's [`Limits`](trigpoly::Limits) (terms, work, degree), or the
+    /// machine's memory, as [`LimitKind`] names it: of an algebraic operation, of a text's
+    /// reading ([`ParseCause::limit`](trigpoly::ParseCause::limit)), of a closure's products
+    /// together ([`EngineError::ClosureTooManyTerms`]: the term limit) or of a search space's
+    /// unknowns (the term limit).
+    Ring(LimitKind),
+    /// [`SearchOptions::max_products`](crate::SearchOptions::max_products): the products of
+    /// integrals that a search for new integrals forms.
+    SearchProducts,
+    /// [`ClosureOptions::max_monomials`](crate::ClosureOptions): the monomials in the
+    /// generators (and the symbolic parameters) that a closure counts before it expands any.
+    ClosureMonomials,
 }
 
 /// A triple of phase variables for which declared brackets break the Jacobi identity.
@@ -121,19 +160,53 @@ impl From<EngineError> for BracketError {
 
 impl EngineError {
     /// Whether a limit stopped the computation (of terms, of term products, of degree, of an
-    /// angle's order): the input may be right, and a larger limit may decide it. The fixed
-    /// bound on the coefficients of a product or a power
+    /// angle's order, of a search's products, of a closure's monomials): the input may be
+    /// right, and a larger limit may decide it. It asks [`EngineError::limit`], which says
+    /// which limit. The fixed bound on the coefficients of a product or a power
     /// ([`AlgebraError::CoefficientTooLarge`]) and the ranges of a set's settings
     /// ([`AlgebraError::SettingOutOfRange`]) are not limits here: no limit raises them. A text
     /// whose reading a limit stopped ([`System::parse`](crate::System::parse) of
     /// `(x + p_x + 1)^60`, or of `x^5000` past the degree limit) is a parse error stopped at a
     /// limit, as its [`ParseError::cause`] says.
     pub fn is_limit(&self) -> bool {
+        self.limit().is_some()
+    }
+
+    /// The limit that stopped the computation, if one did ([`EngineError::is_limit`]): one of
+    /// the ring's, [`EngineLimit::Ring`] with the [`LimitKind`] of an algebraic refusal
+    /// ([`AlgebraError::limit`]), of a text's reading ([`ParseCause::limit`]), of a closure's
+    /// products together or a search space's unknowns (both the term limit); or a search's
+    /// products ([`EngineLimit::SearchProducts`]) or a closure's monomials
+    /// ([`EngineLimit::ClosureMonomials`]), each its option's. Every other refusal, the input
+    /// wrong whatever the limits, has none.
+    ///
+    /// ```
+    /// use brackets::closure::{closure, ClosureOptions};
+    /// use brackets::{systems, EngineError, EngineLimit};
+    /// use trigpoly::{AlgebraError, LimitKind};
+    ///
+    /// let rotor = systems::harmonic_rotor();
+    /// // Five generators have 21 monomials of degree ≤ 2, more than one.
+    /// let few = ClosureOptions::new(2).max_monomials(1);
+    /// let err = closure(&rotor, &["F1", "F2", "L", "G1", "G2"], &few).unwrap_err();
+    /// assert_eq!(err.limit(), Some(EngineLimit::ClosureMonomials));
+    /// assert!(err.is_limit());
+    /// let terms = EngineError::from(AlgebraError::TooManyTerms { limit: 10 });
+    /// assert_eq!(terms.limit(), Some(EngineLimit::Ring(LimitKind::Terms)));
+    /// // A name the system does not define is wrong under any limit.
+    /// let err = closure(&rotor, &["F1", "nope"], &ClosureOptions::new(2)).unwrap_err();
+    /// assert_eq!((err.limit(), err.is_limit()), (None, false));
+    /// ```
+    ///
+    /// [`ParseCause::limit`]: trigpoly::ParseCause::limit
+    #[must_use]
+    pub fn limit(&self) -> Option<EngineLimit> {
         match self {
-            EngineError::ClosureTooManyTerms { .. } => true,
-            EngineError::Algebra(e) => e.limit().is_some(),
-            EngineError::Parse { error, .. } => error.cause().is_limit(),
-            _ => false,
+            EngineError::Algebra(e) => e.limit().map(EngineLimit::Ring),
+            EngineError::Parse { error, .. } => error.cause().limit().map(EngineLimit::Ring),
+            EngineError::ClosureTooManyTerms { .. } => Some(EngineLimit::Ring(LimitKind::Terms)),
+            EngineError::PastLimit { which, .. } => Some(*which),
+            _ => None,
         }
     }
 
@@ -211,11 +284,32 @@ mod tests {
             limit: 10,
         };
         assert!(closure.is_limit());
+        // Both the term limit, `Limits::max_terms`, which raises them.
+        for e in [&terms, &closure] {
+            assert_eq!(e.limit(), Some(EngineLimit::Ring(LimitKind::Terms)), "{e}");
+        }
         let coefficient = EngineError::from(AlgebraError::CoefficientTooLarge {
             bits: 1 << 25,
             limit: 1 << 24,
         });
         assert!(!coefficient.is_limit());
+        assert_eq!(coefficient.limit(), None);
+    }
+
+    /// A limit of the engine's own is the one it names, and says its message as it is.
+    #[test]
+    fn a_limit_of_the_engines_own_is_the_one_it_names() {
+        for which in [EngineLimit::SearchProducts, EngineLimit::ClosureMonomials] {
+            let e = EngineError::PastLimit {
+                which,
+                limit: 9,
+                message: "more than 9".into(),
+            };
+            assert_eq!((e.limit(), e.is_limit()), (Some(which), true));
+            assert_eq!(e.to_string(), "more than 9");
+            assert!(e.source().is_none());
+        }
+        assert_eq!(EngineError::Invalid("no angle".into()).limit(), None);
     }
 
     /// A text that a limit stopped while it was read is stopped at a limit too: a program
@@ -239,14 +333,20 @@ mod tests {
         let system = System::new("small", space, h).unwrap();
         let sum = system.parse("x + p_x + k + 1").unwrap();
         assert!(EngineError::from(sum.checked_pow(6).unwrap_err()).is_limit());
-        for past_a_limit in ["(x + p_x + k + 1)^6", "x^5000", "p_x^1000000000"] {
+        for (past_a_limit, kind) in [
+            ("(x + p_x + k + 1)^6", LimitKind::Terms),
+            ("x^5000", LimitKind::Degree(5000)),
+            ("p_x^1000000000", LimitKind::Degree(1_000_000_000)),
+        ] {
             let err = system.parse(past_a_limit).unwrap_err();
             assert!(matches!(err, EngineError::Parse { .. }), "{err:?}");
             assert!(err.is_limit(), "{past_a_limit}: {err}");
+            assert_eq!(err.limit(), Some(EngineLimit::Ring(kind)), "{past_a_limit}");
         }
         for no_limit in ["x + q", "x + (", "x/(1 + x)"] {
             let err = system.parse(no_limit).unwrap_err();
             assert!(!err.is_limit(), "{no_limit}: {err}");
+            assert_eq!(err.limit(), None, "{no_limit}");
         }
     }
 }

@@ -40,7 +40,7 @@ pub use closure::{
     closure, closure_of, expressed_in, Bracket as ClosureBracket, Closure, ClosureOptions,
     Expressed, Relation,
 };
-pub use error::{EngineError, JacobiViolation};
+pub use error::{EngineError, EngineLimit, JacobiViolation};
 pub use phase::{CanonicalPair, DeclaredBracket, Gradient, PhaseSpace};
 pub use rank::{
     level_set_coordinates, rank, rank_on, rank_restricted, RankCertificate, UpperBound,

@@ -3,7 +3,7 @@
 
 use trigpoly::{Expr, GaussianRational, Rational, Style, Term, Var, VarKind, Vars};
 
-use crate::error::EngineError;
+use crate::error::{EngineError, EngineLimit};
 use crate::modular::{self, sum_by_index, Echelon, Field, Fp, SparseVec};
 use crate::system::System;
 
@@ -1079,12 +1079,16 @@ impl Round<'_> {
             spanning.formed += 1;
             if spanning.formed > spanning.max_products {
                 let n = spanning.max_products;
-                return Err(Stop::Failed(EngineError::Invalid(format!(
-                    "more than {n} product{} of integrals, the limit (`SearchOptions::\
-                     max_products`; on the command line, --max-products): search a smaller \
-                     space, or raise the limit",
-                    if n == 1 { "" } else { "s" }
-                ))));
+                return Err(Stop::Failed(EngineError::PastLimit {
+                    which: EngineLimit::SearchProducts,
+                    limit: n,
+                    message: format!(
+                        "more than {n} product{} of integrals, the limit (`SearchOptions::\
+                         max_products`; on the command line, --max-products): search a \
+                         smaller space, or raise the limit",
+                        if n == 1 { "" } else { "s" }
+                    ),
+                }));
             }
             if i >= self.lo {
                 let (locator, stamp) = (spanning.locator, self.stamp);

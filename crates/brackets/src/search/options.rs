@@ -260,7 +260,9 @@ pub struct SearchOptions {
     /// out at some cost in time.
     pub exact_complement: bool,
     /// The most products of integrals [`SearchOptions::new_only`] forms before it stops with
-    /// an error ([`DEFAULT_MAX_PRODUCTS`] unless set).
+    /// an error ([`DEFAULT_MAX_PRODUCTS`] unless set): a limit,
+    /// [`EngineError::PastLimit`](crate::EngineError::PastLimit) of
+    /// [`EngineLimit::SearchProducts`](crate::EngineLimit::SearchProducts).
     pub max_products: usize,
 }
 

@@ -2,10 +2,12 @@
 //! `{F, H} = 0` numbered into rows, split into independent blocks.
 
 use rayon::prelude::*;
-use trigpoly::{Expr, GaussianRational, MonomialIndex, Rational, Term, Var, VarKind, Vars};
+use trigpoly::{
+    Expr, GaussianRational, LimitKind, MonomialIndex, Rational, Term, Var, VarKind, Vars,
+};
 
 use crate::clearing::Clearing;
-use crate::error::EngineError;
+use crate::error::{EngineError, EngineLimit};
 use crate::modular::{sum_by_index, Field, Fp, SparseVec};
 use crate::system::System;
 
@@ -141,14 +143,20 @@ fn binomial(a: u128, b: u128) -> u128 {
         .unwrap_or(u128::MAX)
 }
 
-/// Refuses a space of `count` unknowns past the term limit of `vars`.
+/// Refuses a space of `count` unknowns past the term limit of `vars`: a limit, the term
+/// limit's ([`EngineLimit::Ring`] of [`LimitKind::Terms`]), which `Limits::max_terms` raises.
 fn too_many_unknowns(vars: &Vars, count: usize) -> Result<(), EngineError> {
     let limit = vars.limits().max_terms;
     if count > limit {
-        return Err(EngineError::Invalid(format!(
-            "the space has {count} unknowns, more than the term limit {limit}: search a \
-             smaller space, or raise the limit (`Limits::max_terms`; on the command line, --max-terms)"
-        )));
+        return Err(EngineError::PastLimit {
+            which: EngineLimit::Ring(LimitKind::Terms),
+            limit,
+            message: format!(
+                "the space has {count} unknowns, more than the term limit {limit}: search a \
+                 smaller space, or raise the limit (`Limits::max_terms`; on the command line, \
+                 --max-terms)"
+            ),
+        });
     }
     Ok(())
 }

@@ -1,6 +1,6 @@
 //! Source spans and parse errors, with line/column lookup and caret rendering.
 
-use crate::error::AlgebraError;
+use crate::error::{AlgebraError, LimitKind};
 
 /// Byte range `start..end` in the source text.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
@@ -126,7 +126,7 @@ pub enum ParseCause {
 impl ParseCause {
     /// Whether a limit stopped the text's reading: an operation of the algebra refused at a
     /// limit ([`AlgebraError::limit`]), or an exponent or multiple written past the degree
-    /// limit.
+    /// limit. It asks [`ParseCause::limit`].
     ///
     /// ```
     /// use trigpoly::{AlgebraError, ParseCause};
@@ -138,10 +138,31 @@ impl ParseCause {
     /// ```
     #[must_use]
     pub fn is_limit(&self) -> bool {
+        self.limit().is_some()
+    }
+
+    /// The limit that stopped the text's reading, if one did: the algebra's
+    /// ([`AlgebraError::limit`]), or the degree limit for an exponent or multiple written past
+    /// it, of its size (`u64::MAX` for one that no 64-bit number holds, past every limit).
+    ///
+    /// ```
+    /// use trigpoly::{AlgebraError, LimitKind, ParseCause};
+    ///
+    /// let power = ParseCause::PowerPastLimit { power: Some(5000), limit: 1000 };
+    /// assert_eq!(power.limit(), Some(LimitKind::Degree(5000)));
+    /// let terms = ParseCause::Algebra(AlgebraError::TooManyTerms { limit: 30 });
+    /// assert_eq!(terms.limit(), Some(LimitKind::Terms));
+    /// assert_eq!(ParseCause::Algebra(AlgebraError::DivisionByZero).limit(), None);
+    /// assert_eq!(ParseCause::Syntax.limit(), None);
+    /// ```
+    #[must_use]
+    pub fn limit(&self) -> Option<LimitKind> {
         match self {
-            ParseCause::Algebra(e) => e.limit().is_some(),
-            ParseCause::PowerPastLimit { .. } => true,
-            _ => false,
+            ParseCause::Algebra(e) => e.limit(),
+            ParseCause::PowerPastLimit { power, .. } => {
+                Some(LimitKind::Degree(power.unwrap_or(u64::MAX)))
+            }
+            _ => None,
         }
     }
 }
