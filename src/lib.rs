@@ -145,7 +145,9 @@ pub mod prelude {
 
     pub use brackets::systems::Resonant;
 
-    pub use crate::discovery::{closure_report, file_search_report, search_report};
+    pub use crate::discovery::{
+        closure_report, file_closure_report, file_search_report, search_report,
+    };
     pub use crate::paper::{
         tower_report, tower_report_with_progress, Paper, PaperOptions, TowerSystem,
     };

@@ -11,15 +11,15 @@ use superint::discovery::{closure_report_for, ListRefusal};
 use superint::render::render;
 use superint::report::Report;
 use superint::system_file::{
-    given_twice, trimmed, Caller, ErrorKind, FileError, PrintedNames, COMMAND_LINE,
-    MAX_DEGREE_CEILING,
+    given_twice, name_as_identifier, refuse_expression_as_generator, trimmed, Caller, ErrorKind,
+    FileError, PrintedNames, COMMAND_LINE, MAX_DEGREE_CEILING,
 };
-use trigpoly::LimitKind;
+use trigpoly::{Expr, LimitKind};
 
 use super::input::BuiltinArg;
 use super::limits::LimitsArgs;
 use super::output::{emit, Output};
-use super::search::{identifier, list_refused, Subject};
+use super::search::{list_refused, Subject};
 
 pub const EXAMPLES: &str = "\
 Examples:
@@ -123,8 +123,7 @@ pub fn run(job: &ClosureJob) -> anyhow::Result<bool> {
 
 /// The closure of the generators `names` of `subject` as `a` asks, as a report.
 fn close(a: &ClosureArgs, names: &[String], subject: &Subject) -> anyhow::Result<Report> {
-    let mut generators = Vec::new();
-    let mut defined = Vec::new();
+    let mut defined: Vec<(String, Expr)> = Vec::new();
     // How the system's names print, and then each generator defined so far.
     let mut printed = PrintedNames::of(subject.system());
     for d in &a.define {
@@ -193,103 +192,23 @@ fn close(a: &ClosureArgs, names: &[String], subject: &Subject) -> anyhow::Result
             })?;
         defined.push((name.to_string(), e));
     }
-    let mut all: Vec<&str> = names.iter().map(String::as_str).collect();
-    for (n, _) in &defined {
-        if !all.contains(&n.as_str()) {
-            all.push(n);
-        }
-    }
-    if all.is_empty() {
+    if names.is_empty() && defined.is_empty() {
         bail!("give the generators: names of functions of the system, or --define NAME=EXPR");
     }
-    match &subject {
+    let generators = match subject {
+        // A file's names are read by the library, as `file_closure_report` reads them, each
+        // generator --define gives by its value where the names name it, else after them:
+        // before the options, so that a bad name is said before a bad --when, and what the
+        // texts read in doubt is said in the order they are read; the engine's limits are
+        // said below in the options of the command.
         Subject::File(file) => {
-            file.refuse_blank(&all)?;
-            file.refuse_repeated(&all, "the closure")?;
+            let given: Vec<NamedFunction> = (defined.iter())
+                .map(|(name, e)| NamedFunction::new(name, &subject.display_name(name), e.clone()))
+                .collect();
+            (file.closure_generators(names, &given)).map_err(|e| anyhow!(e.to_string()))?
         }
-        // A built-in system has no families: a name is one function however it is spelt
-        // (`P_{1,1}` is `P_1_1`).
-        // Each refused as a file's is, at its place in the generator as given.
-        Subject::Builtin(..) => {
-            if let Some(blank) = all.iter().find(|n| n.trim().is_empty()) {
-                let end = blank.find(['\n', '\r']).unwrap_or(blank.len());
-                let error = FileError::at(
-                    ErrorKind::Expression,
-                    COMMAND_LINE,
-                    blank,
-                    end..end,
-                    "expected the name of a function, found end of input",
-                );
-                bail!(error.to_string());
-            }
-            // A function by its name or its display (`Omega` or `Ω`) is one function.
-            let key = |n: &str| match subject.system().function(n.trim()) {
-                Some(f) => f.name.clone(),
-                None => identifier(n),
-            };
-            let twice = (1..all.len()).find_map(|k| {
-                (all[..k].iter())
-                    .find(|n| key(n) == key(all[k]))
-                    .map(|before| (all[k], *before))
-            });
-            if let Some((given, before)) = twice {
-                let error = FileError::at(
-                    ErrorKind::Expression,
-                    COMMAND_LINE,
-                    given,
-                    trimmed(0, given).1,
-                    given_twice(given, before, "the closure"),
-                );
-                bail!(error.to_string());
-            }
-        }
-    }
-    for name in all {
-        // An expression given as a generator has no name of its own for the table and the
-        // relations: `2*L` was named `2_L`, which no relation can hold, and `L*G1` and `L+G1`
-        // were both `L_G1`.
-        let name_like = name.chars().next().is_some_and(char::is_alphabetic)
-            && name
-                .chars()
-                .all(|c| c.is_alphanumeric() || "_{}, '".contains(c) || c == '\u{304}');
-        if !name_like && !defined.iter().any(|d| d.0 == name) {
-            // A name the system does not have, for the example.
-            let free = ["G", "X", "Y", "W", "Gen"]
-                .into_iter()
-                .find(|n| {
-                    subject.new_name_refusal(n).is_none()
-                        && printed.admit("the generator", n, n).is_ok()
-                })
-                .unwrap_or("Gen");
-            // A long expression is shown by its start, and left out of the example.
-            let example = match name.chars().count() > trigpoly::MAX_NAME_CHARS {
-                true => "…",
-                false => name,
-            };
-            // Refused as a whole, the caret under all of it, as a name given twice is.
-            let error = FileError::at(
-                ErrorKind::Expression,
-                COMMAND_LINE,
-                name,
-                trimmed(0, name).1,
-                format!(
-                    "{} is an expression, not the name of a function: name it with --define \
-                     (--define '{free}={example}', then {free} among the generators)",
-                    trigpoly::quoted_name(name)
-                ),
-            );
-            bail!(error.to_string());
-        }
-        // The parse error first, with its place: its excerpt shows the generator, which the
-        // message put before the place and the error (`'Foo': <command line>:1:1: unknown name
-        // 'Foo'`), where `bracket` and `search` begin with what is wrong.
-        let e = match defined.iter().find(|d| d.0 == name) {
-            Some(d) => d.1.clone(),
-            None => subject.parse(name).map_err(|e| anyhow!("{e}"))?,
-        };
-        let display = subject.display_name(name);
-        generators.push(NamedFunction::new(&identifier(name), &display, e));
-    }
+        Subject::Builtin(..) => builtin_generators(subject, names, &defined, &mut printed)?,
+    };
     let mut options = ClosureOptions::new(a.degree);
     options.max_monomials = usize::try_from(a.max_monomials).unwrap_or(usize::MAX);
     options.condition = subject.condition(a.when.as_deref())?;
@@ -340,4 +259,77 @@ fn close(a: &ClosureArgs, names: &[String], subject: &Subject) -> anyhow::Result
         e => anyhow::Error::new(e).context("computing the closure"),
     })?;
     Ok(subject.tag(report))
+}
+
+/// The generators `names` of a built-in system, then those `defined` by --define that `names`
+/// does not name, refused as a file's are
+/// ([`LoadedSystem::closure_generators`](superint::system_file::LoadedSystem::closure_generators)),
+/// but that a built-in system has no families: a name is one function however it is spelt
+/// (`P_{1,1}` is `P_1_1`). `printed` is how the system's names and the generators defined
+/// print.
+fn builtin_generators(
+    subject: &Subject,
+    names: &[String],
+    defined: &[(String, Expr)],
+    printed: &mut PrintedNames,
+) -> anyhow::Result<Vec<NamedFunction>> {
+    let mut all: Vec<&str> = names.iter().map(String::as_str).collect();
+    for (n, _) in defined {
+        if !all.contains(&n.as_str()) {
+            all.push(n);
+        }
+    }
+    // Each refused as a file's is, at its place in the generator as given.
+    if let Some(blank) = all.iter().find(|n| n.trim().is_empty()) {
+        let end = blank.find(['\n', '\r']).unwrap_or(blank.len());
+        let error = FileError::at(
+            ErrorKind::Expression,
+            COMMAND_LINE,
+            blank,
+            end..end,
+            "expected the name of a function, found end of input",
+        );
+        bail!(error.to_string());
+    }
+    // A function by its name or its display (`Omega` or `Ω`) is one function.
+    let key = |n: &str| match subject.system().function(n.trim()) {
+        Some(f) => f.name.clone(),
+        None => name_as_identifier(n),
+    };
+    let twice = (1..all.len()).find_map(|k| {
+        (all[..k].iter())
+            .find(|n| key(n) == key(all[k]))
+            .map(|before| (all[k], *before))
+    });
+    if let Some((given, before)) = twice {
+        let error = FileError::at(
+            ErrorKind::Expression,
+            COMMAND_LINE,
+            given,
+            trimmed(0, given).1,
+            given_twice(given, before, "the closure"),
+        );
+        bail!(error.to_string());
+    }
+    let mut generators = Vec::new();
+    for name in all {
+        let e = match defined.iter().find(|d| d.0 == name) {
+            Some(d) => d.1.clone(),
+            None => {
+                refuse_expression_as_generator(name, Caller::CommandLine, |n| {
+                    subject.new_name_refusal(n).is_none()
+                        && printed.admit("the generator", n, n).is_ok()
+                })
+                .map_err(|e| anyhow!(e.to_string()))?;
+                // The parse error first, with its place: its excerpt shows the generator,
+                // which the message put before the place and the error (`'Foo': <command
+                // line>:1:1: unknown name 'Foo'`), where `bracket` and `search` begin with
+                // what is wrong.
+                subject.parse(name).map_err(|e| anyhow!("{e}"))?
+            }
+        };
+        let display = subject.display_name(name);
+        generators.push(NamedFunction::new(&name_as_identifier(name), &display, e));
+    }
+    Ok(generators)
 }

@@ -4,12 +4,13 @@
 use std::path::{Path, PathBuf};
 use std::sync::OnceLock;
 
-use super::search::{identifier, Subject};
+use super::search::Subject;
 use anyhow::Context;
 use brackets::NamedFunction;
 use superint::discovery::define_builtin_resonant;
 use superint::system_file::{
-    load, load_bytes, read_bytes, Caller, ErrorKind, FileError, LimitsOverride, LoadedSystem,
+    load, load_bytes, name_as_identifier, read_bytes, Caller, ErrorKind, FileError, LimitsOverride,
+    LoadedSystem,
 };
 
 /// How messages name a system file read from standard input.
@@ -121,7 +122,11 @@ impl SystemGiven {
             .with_context(|| format!("the built-in system {name} does not fit the limits given"))?;
         let added = |f: &&NamedFunction| plain.system().function(&f.name).is_none();
         let named = resonant.functions().iter().filter(added).any(|f| {
-            let forms = [f.name.clone(), identifier(&f.display), f.display.clone()];
+            let forms = [
+                f.name.clone(),
+                name_as_identifier(&f.display),
+                f.display.clone(),
+            ];
             let mut texts = texts.iter().map(String::as_str).chain(when);
             texts.any(|t| forms.iter().any(|form| mentions(t, form)))
         });

@@ -15,7 +15,9 @@ use superint::discovery::{
 };
 use superint::render::render;
 use superint::report::{with_article, Report};
-use superint::system_file::{what_is, BadName, Caller, LoadedSystem};
+use superint::system_file::{
+    display_as_given, looks_like_name, new_name_refusal, what_is, Caller, LoadedSystem,
+};
 use superint::system_file::{
     ErrorKind, FileError, LimitsOverride, Warning, Warnings, COMMAND_LINE,
 };
@@ -236,22 +238,6 @@ impl SearchArgs {
     }
 }
 
-/// `P_{1,1}` → `P_1_1`: a name the generators' ring accepts.
-pub(crate) fn identifier(name: &str) -> String {
-    let mut out = String::new();
-    for c in name.chars() {
-        if c.is_alphanumeric() {
-            out.push(c);
-        } else if c == '\'' && !out.is_empty() {
-            // A prime as a name spells it (`P'_{1,1}` is `Pp_1_1`, as `y'` is `yp`).
-            out.push('p');
-        } else if !out.ends_with('_') && !out.is_empty() {
-            out.push('_');
-        }
-    }
-    out.trim_end_matches('_').to_string()
-}
-
 /// `e`, the error of reading the file `path`, with a hint that a built-in system is given
 /// with --system where the path is a built-in system's name and no file (`superint bracket
 /// harmonic L H`).
@@ -266,32 +252,6 @@ fn builtin_hint(e: FileError, path: &Path) -> FileError {
     e.with_hint(format!(
         "{name} is a built-in system: give it with --system {name}, in place of FILE"
     ))
-}
-
-/// Whether `text` given on the command line is a name (`Zbar`, `K_{1,2}`, `Kbar_1_2`) rather
-/// than an expression (`x*p_y`, `L^2`, or a bracket `{Lx,Axy}`, which the characters of an
-/// instance's braces would otherwise let through as the name `Lx_Axy`).
-fn is_name_like(text: &str) -> bool {
-    text.chars().next().is_some_and(char::is_alphanumeric)
-        && text
-            .chars()
-            .all(|c| c.is_alphanumeric() || "_{},".contains(c))
-}
-
-/// `R_1_1` → `R_{1,1}`: a name of a family instance's shape, two numeric indices, shown as an
-/// instance is (which `trigpoly::shown_forms` reads); any other name as it is, so that its
-/// own forms (`W_x_θ`, `W_{x,\theta}` for `W_x_theta`) stand.
-fn braced_indices(name: &str) -> String {
-    let numeric = |s: &str| !s.is_empty() && s.chars().all(|c| c.is_ascii_digit());
-    match name
-        .split_once('_')
-        .map(|(head, tail)| (head, tail.split_once('_')))
-    {
-        Some((head, Some((m, n)))) if !head.is_empty() && numeric(m) && numeric(n) => {
-            format!("{head}_{{{m},{n}}}")
-        }
-        _ => name.to_string(),
-    }
 }
 
 /// The system a discovery command works on: a loaded file or a built-in system.
@@ -377,28 +337,16 @@ impl Subject {
         }
     }
 
-    /// How a name given on the command line prints, as a generator or a known integral: a
-    /// function or family instance of a file as the file shows it (`Z̄` for `Zbar`, `K̄_{1,2}`
-    /// for `Kbar_1_2` or `Kbar_{1,2}`), any other name of an instance's shape as an instance
-    /// is shown, as the paper writes it and the LaTeX prints it (`R_{1,1}` for a
-    /// `--define R_1_1`), and an expression (`x*p_y`) as it is written.
+    /// How a name given on the command line prints, as a generator or a known integral
+    /// ([`display_as_given`]): a function or family instance of a file as the file shows it
+    /// (`Z̄` for `Zbar`, `K̄_{1,2}` for `Kbar_1_2` or `Kbar_{1,2}`), any other name of an
+    /// instance's shape as an instance is shown (`R_{1,1}` for a `--define R_1_1`), and an
+    /// expression (`x*p_y`) as it is written.
     pub fn display_name(&self, name: &str) -> String {
-        let shown = |name: &str| match self {
-            Subject::File(f) => f.display_name(name),
-            Subject::Builtin(_, s, _) => s.display_name(name).to_string(),
-        };
-        // An expression (`--known 'x*p_y'`) as it is written.
-        if !is_name_like(name) {
-            return name.to_string();
-        }
-        // As given, then as an identifier (`Kbar_{1,2}` is `Kbar_1_2`).
-        let key = identifier(name);
-        let found = [name, key.as_str()]
-            .into_iter()
-            .map(|n| (n, shown(n)))
-            .find(|(n, s)| s != n)
-            .map(|(_, s)| s);
-        found.unwrap_or_else(|| braced_indices(&key))
+        display_as_given(name, |n| match self {
+            Subject::File(f) => f.display_name(n),
+            Subject::Builtin(_, s, _) => s.display_name(n).to_string(),
+        })
     }
 
     /// How a known integral given on the command line prints: a name as
@@ -406,7 +354,7 @@ impl Subject {
     /// print one (`{L_x, A_xy}` for `{Lx, Axy}`, `L²` for `L^2`), beside the file's functions
     /// in their printed names, and one of a built-in system so too (`x p_x` for `x*p_x`).
     pub fn known_name(&self, known: &str) -> String {
-        if is_name_like(known) {
+        if looks_like_name(known) {
             return self.display_name(known);
         }
         let shown = match self {
@@ -427,33 +375,17 @@ impl Subject {
         }
     }
 
-    /// Why `name` is refused as a new name, if it is, before anything is computed: one that
-    /// is not an identifier, is reserved, or names something of the system already (which it
-    /// would shadow, so that what is found about it would read, in the system's names, as a
-    /// claim about the system's own), each said as such, for the caller to place.
+    /// Why `name` is refused as a new name of the system, if it is, before anything is
+    /// computed ([`new_name_refusal`]: not an identifier, reserved, a name the system has, or
+    /// one it reads as a product of its names), for the caller to place.
     pub fn new_name_refusal(&self, name: &str) -> Option<String> {
-        match BadName::of(name) {
-            Some(
-                bad @ BadName::Unnamed(trigpoly::BadName::Malformed | trigpoly::BadName::TooLong),
-            ) => return Some(bad.why()),
-            Some(bad) => return Some(format!("{}; choose another name", bad.why())),
-            None => {}
-        }
-        let what = match self {
+        let what = || match self {
             Subject::File(f) => f.what_is(name),
             Subject::Builtin(_, s, _) => what_is(s, &[], name),
         };
-        if let Some(what) = what {
-            return Some(format!("{name} is {what}; choose another name"));
-        }
-        // Names run together that read as a product of the system's (`Mx`), refused without
-        // the warning of how they read, which the refusal says.
-        if self.warnings().unwarned(|| self.parse(name).is_ok()) {
-            return Some(format!(
-                "the system reads {name} as a product of its names; choose another name"
-            ));
-        }
-        None
+        new_name_refusal(name, what, || {
+            self.warnings().unwarned(|| self.parse(name).is_ok())
+        })
     }
 
     /// Parses an expression: named functions, family instances, brackets. What it reads in

@@ -13,7 +13,7 @@ use crate::report::{
     Facts, Report, Section, SummaryKind, TableResult,
 };
 
-use crate::system_file::Caller;
+use crate::system_file::{Caller, FileError, LoadedSystem};
 
 use super::{agreeing, off_one_note, parameter_facts, parameter_names, HeldAt};
 
@@ -126,6 +126,60 @@ fn symbols_text(c: &Closure) -> Option<Entry> {
             listed(&renamed)
         ))
     })
+}
+
+/// The closure of generators of a system file named as the file names them, as
+/// `superint closure FILE NAMES` computes it: [`closure_report_for`] of the generators that
+/// [`LoadedSystem::closure_generators`] reads from `names` (a function by its name or its
+/// display, `Omega` or `Ω`; a family instance, `P_1_1` or `P_{1,1}`; a phase variable, `p_x`),
+/// each printed by the file's display (`P_{1,1}`), the report's sections about the file. A
+/// blank name, a function given twice, an expression given as a name (`2*L`: add it with
+/// [`LoadedSystem::add_function`] and name it) or a name the file does not know is refused
+/// before anything is computed, of kind [`ErrorKind::Expression`](crate::system_file::ErrorKind),
+/// at its line and column in the name (`<expression>`, or `<command line>` as the file's
+/// [`Caller`] says); what the engine then refuses (a limit, a condition the flow leaves) is an
+/// error of the file without a place, of kind `Limit` (with the hint to raise the limit) or
+/// `Engine`, as [`table_report`](crate::system_file::table_report)'s are. `caller` chooses
+/// whose options the report's advice names, as for [`closure_report_for`].
+///
+/// ```
+/// use superint::discovery::relation_text;
+/// use superint::prelude::*;
+///
+/// // su(2) in the harmonic rotor's file: {G1, G2} = −ω² L, and the Casimir
+/// // 4 G1² + G2² + ω² L² is (F1 − F2)², the one relation of degree 2.
+/// let rotor = load_system_file("systems/harmonic-rotor.toml", &LimitsOverride::default())?;
+/// let names = ["F1", "F2", "L", "G1", "G2"];
+/// let options = ClosureOptions::new(2);
+/// let (report, algebra) = file_closure_report(&rotor, &names, &options, Caller::Program)?;
+/// assert!(algebra.closes() && report.all_proved());
+/// assert_eq!(algebra.render_bracket(3, 4), "−ω² L");
+/// let relations: Vec<String> = algebra.relations.iter().map(|r| relation_text(&r.poly)).collect();
+/// assert_eq!(relations, ["ω² L² + 2 F1 F2 + 4 G1² + G2² = F1² + F2²"]);
+///
+/// // A generator given as an expression has no name for the table: refused at its place.
+/// let err = file_closure_report(&rotor, &["L", "G1", "L*G1"], &options, Caller::Program)
+///     .unwrap_err();
+/// assert_eq!((err.kind, err.line_col()), (ErrorKind::Expression, Some((1, 1))));
+/// assert!(err.to_string().starts_with("<expression>:1:1: 'L*G1' is an expression"), "{err}");
+/// # Ok::<(), FileError>(())
+/// ```
+pub fn file_closure_report(
+    file: &LoadedSystem,
+    names: &[impl AsRef<str>],
+    options: &ClosureOptions,
+    caller: Caller,
+) -> Result<(Report, Closure), FileError> {
+    let generators = file.closure_generators(names, &[])?;
+    let (report, closure) = closure_report_for(
+        &file.the_name(),
+        file.system(),
+        &generators,
+        options,
+        caller,
+    )
+    .map_err(|e| file.computation_failed("computing the closure", &e))?;
+    Ok((report.about_file(&file.source().origin), closure))
 }
 
 /// How many brackets (off the table's diagonal, polynomials in the generators) and relations

@@ -113,6 +113,15 @@ impl LoadedSystem {
         err.location = None;
         err
     }
+
+    /// An error of the engine on what a report of this file was `doing` (`computing the
+    /// closure`): from the file, said after what it was doing, without a place in it.
+    pub(crate) fn computation_failed(&self, doing: &str, e: &brackets::EngineError) -> FileError {
+        let mut err = self.computation_error(e);
+        err.origin.clone_from(&self.source.origin);
+        err.message = format!("{doing}: {}", err.message);
+        err
+    }
 }
 
 /// Checks every claim of every file: one section per file (its source, its Hamiltonian, its
@@ -537,10 +546,7 @@ pub fn table_report(file: &LoadedSystem, names: &[impl AsRef<str>]) -> Result<Re
     let system = with_instances(file, &names, &defined)?;
     // What fails is a bracket of the file's functions, not the names given.
     let table = BracketTable::compute(&system, &names).map_err(|e| {
-        let mut err = file.computation_error(&e);
-        err.origin.clone_from(&file.source.origin);
-        err.message = format!("the brackets of {}: {}", names.join(", "), err.message);
-        err
+        file.computation_failed(&format!("the brackets of {}", names.join(", ")), &e)
     })?;
     let written = written_in_functions(file, &table);
     let entry = Entry::Table(TableResult::new(table, &system, &file.the_name()));

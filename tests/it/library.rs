@@ -1654,3 +1654,205 @@ fn walking_an_errors_chain_says_each_message_once() {
         chain(&gaussian)
     );
 }
+
+/// The closure of a system file's functions named as the file names them
+/// (`file_closure_report`, in the prelude): a function by its name or its display (`Ω`), a
+/// family instance in either spelling (`P_{1,1}`, `Q_1_1`), each printed by the file's
+/// display, is the closure `superint closure FILE NAMES` prints, whole, for the same names: a
+/// program had to build each `NamedFunction` by hand, instances and displays included.
+#[test]
+fn a_files_closure_from_a_program_is_the_command_lines() {
+    let rotor = load_system_file("systems/harmonic-rotor.toml", &LimitsOverride::default())
+        .unwrap()
+        .with_caller(Caller::CommandLine);
+    let resonance = "p_theta = I*omega";
+    let closures: [(&[&str], Option<&str>); 2] = [
+        (&SU2, None),
+        (&["L", "Ω", "P_{1,1}", "Q_1_1"], Some(resonance)),
+    ];
+    for (names, when) in closures {
+        let mut options = ClosureOptions::new(2);
+        if let Some(w) = when {
+            options = options.when(rotor.condition(w).unwrap());
+        }
+        let (report, algebra) =
+            file_closure_report(&rotor, names, &options, Caller::CommandLine).unwrap();
+        assert!(report.all_proved());
+        let mut args = vec!["closure", "systems/harmonic-rotor.toml"];
+        args.extend(names);
+        if let Some(w) = when {
+            args.extend(["--when", w]);
+        }
+        args.push("--no-timings");
+        let printed = crate::superint_ok(&args);
+        let text = render(&report, Format::Text, &RenderOptions::reproducible());
+        pretty_assertions::assert_eq!(text, printed, "{names:?}");
+        if when.is_some() {
+            assert_eq!(algebra.display, ["L", "Ω", "P_{1,1}", "Q_{1,1}"]);
+            assert_eq!(algebra.names[2..], ["P_1_1", "Q_1_1"]);
+        }
+    }
+}
+
+/// A name that names no generator is refused by the library as by the command line, before
+/// anything is computed, typed, at its line and column in the name: a blank one, a function
+/// given twice (by its name, by its name and display, an instance in two spellings), an
+/// expression given as a name (its advice the library's call for a program, `--define` for
+/// the command line) and an unknown name; from `<command line>` when the file is the command
+/// line's, with the very message the command line prints.
+#[test]
+fn a_files_closure_refuses_a_name_as_the_command_line_does() {
+    let rotor =
+        load_system_file("systems/harmonic-rotor.toml", &LimitsOverride::default()).unwrap();
+    let options = ClosureOptions::new(2);
+    // The names, and the refusal's origin, line and column, and message's start.
+    type Refused<'a> = (&'a [&'a str], &'a str, (usize, usize), &'a str);
+    let refused: [Refused; 7] = [
+        (
+            &["L", "  "],
+            "<name>",
+            (1, 3),
+            "expected the name of a function",
+        ),
+        (
+            &["L", "G1", " L"],
+            "<expression>",
+            (1, 2),
+            "'L' is given twice: the closure takes each function once",
+        ),
+        (
+            &["L", "Omega", "Ω"],
+            "<expression>",
+            (1, 1),
+            "'Ω' is 'Omega', given before: the closure takes each function once",
+        ),
+        (
+            &["L", "K_1_1", "K_{01,1}"],
+            "<expression>",
+            (1, 1),
+            "'K_{01,1}' is 'K_1_1', given before",
+        ),
+        (
+            &["L", "2*L"],
+            "<expression>",
+            (1, 1),
+            "'2*L' is an expression, not the name of a function: name it with \
+             LoadedSystem::add_function (add_function(\"G\", \"G\", \"2*L\"), then G among the \
+             generators)",
+        ),
+        (
+            &["L", "{L, G1}"],
+            "<expression>",
+            (1, 1),
+            "'{L, G1}' is an expression",
+        ),
+        (
+            &["L", "G1", "Foo"],
+            "<expression>",
+            (1, 1),
+            "unknown name 'Foo'",
+        ),
+    ];
+    for (names, origin, place, message) in refused {
+        let err = file_closure_report(&rotor, names, &options, Caller::Program).unwrap_err();
+        assert_eq!(err.kind, ErrorKind::Expression, "{names:?}: {err}");
+        assert_eq!(err.origin, origin, "{names:?}: {err}");
+        assert_eq!(err.line_col(), Some(place), "{names:?}: {err}");
+        assert!(err.message.starts_with(message), "{names:?}: {err}");
+        // The command line's file: the error is the command line's, byte for byte.
+        let cli = rotor.clone().with_caller(Caller::CommandLine);
+        let err = file_closure_report(&cli, names, &options, Caller::CommandLine).unwrap_err();
+        assert_eq!(err.origin, "<command line>", "{names:?}: {err}");
+        let mut args = vec!["closure", "systems/harmonic-rotor.toml", "--"];
+        args.extend(names);
+        let said = crate::superint_refused(&args);
+        pretty_assertions::assert_eq!(said, format!("superint: error: {err}\n"), "{names:?}");
+    }
+    let none: [&str; 0] = [];
+    let err = file_closure_report(&rotor, &none, &options, Caller::Program).unwrap_err();
+    assert_eq!(err.kind, ErrorKind::Claim, "{err}");
+    assert!(err.message.starts_with("give the generators"), "{err}");
+}
+
+/// What the engine refuses once the names are read is an error of the file without a place:
+/// the closure's products past the term limit are a limit, with the hint that raises it, and a
+/// condition the flow leaves is the engine's refusal; each says it was computing the closure.
+#[test]
+fn a_files_closure_refused_by_the_engine_is_an_error_of_the_file() {
+    let path = "systems/harmonic-rotor.toml";
+    let small = load_system_file(path, &LimitsOverride::default().max_terms(60)).unwrap();
+    let err =
+        file_closure_report(&small, &SU2, &ClosureOptions::new(4), Caller::Program).unwrap_err();
+    assert_eq!(
+        (err.kind, err.location.is_none()),
+        (ErrorKind::Limit, true),
+        "{err}"
+    );
+    assert_eq!(err.origin, path);
+    assert!(
+        err.message.starts_with(
+            "computing the closure: the products of the generators up to degree 4 would have \
+             more than 60 terms together (the term limit)"
+        ),
+        "{err}"
+    );
+    assert!(
+        err.hint
+            .as_deref()
+            .is_some_and(|h| h.contains("LimitsOverride")),
+        "{err}"
+    );
+    let rotor = load_system_file(path, &LimitsOverride::default()).unwrap();
+    let off_the_flow = ClosureOptions::new(2).when(rotor.condition("x = y").unwrap());
+    let err = file_closure_report(&rotor, &["L", "H"], &off_the_flow, Caller::Program).unwrap_err();
+    assert_eq!(
+        (err.kind, err.location.is_none()),
+        (ErrorKind::Engine, true),
+        "{err}"
+    );
+    assert!(
+        err.message
+            .starts_with("computing the closure: the flow leaves the surface x = y"),
+        "{err}"
+    );
+}
+
+/// Generators a program gives by their values (the command line's `--define`) stand where
+/// the names name them, else after them, each printed by its display; one named as the
+/// system names something, one given twice, one that prints as a name of the system or one
+/// built in another variable set is refused, of kind `Name`, before any name is read.
+#[test]
+fn a_files_closure_takes_generators_given_by_their_values() {
+    let rotor = harmonic_rotor_file();
+    let value = |text: &str| rotor.parse(text).unwrap();
+    let casimir = NamedFunction::new("C", "C", value("4*G1^2 + G2^2 + omega^2*L^2"));
+    let ladder = NamedFunction::new("R_1_1", "R_{1,1}", value("Z*exp(-i*theta)"));
+    let given = [casimir.clone(), ladder];
+    let generators = rotor.closure_generators(&["C", "L"], &given).unwrap();
+    let shown: Vec<&str> = generators.iter().map(|g| g.display.as_str()).collect();
+    assert_eq!(shown, ["C", "L", "R_{1,1}"]);
+    assert_eq!(generators[0].expr, casimir.expr);
+    let other = Vars::builder().coordinate("q").build().unwrap();
+    let refused = [
+        (
+            NamedFunction::new("L", "L", value("x")),
+            "L is a function of the system",
+        ),
+        (
+            NamedFunction::new("F_1", "F_1", value("x")),
+            "the generator F_1 would",
+        ),
+        (
+            NamedFunction::new("W", "W", Expr::parse(&other, "q").unwrap()),
+            "the value of W was built in another variable set",
+        ),
+    ];
+    for (generator, message) in refused {
+        let err = rotor.closure_generators(&["L"], &[generator]).unwrap_err();
+        assert_eq!(err.kind, ErrorKind::Name, "{err}");
+        assert!(err.message.starts_with(message), "{err}");
+    }
+    let twice = [casimir.clone(), casimir];
+    let err = rotor.closure_generators(&["L"], &twice).unwrap_err();
+    assert_eq!(err.message, "C is defined twice: give each name once");
+}
