@@ -417,12 +417,14 @@ fn bracket_claims(c: &Closure, holding: &Holding) -> Vec<Entry> {
 
 /// Section 2: the minimal relations among the generators, each a claim `R1, R2, …`: none a
 /// combination of those above it (of lower degree, or of its degree and simpler) times
-/// polynomials in the generators and, when some are kept `symbolic`, in the parameters.
+/// polynomials in the generators and, when some are kept `symbolic`, in the parameters, as far
+/// as the degree searched shows; every relation of that degree is such a combination of them.
 fn relations_section(c: &Closure, holding: &Holding, names: Names, symbolic: bool) -> Section {
     let mut entries = vec![Entry::Text(format!(
         "The polynomial relations among the generators up to degree {}, each minimal (not a \
-         combination of those above it times polynomials in the generators{}), each checked \
-         by expanding it.",
+         combination of those above it times polynomials in the generators{}, as far as this \
+         degree shows), each checked by expanding it; every relation up to this degree is such \
+         a combination of them.",
         c.degree,
         if symbolic {
             " and in the symbolic parameters"

@@ -224,7 +224,11 @@ fn closure_denominators_command_line() {
         "{out}"
     );
     assert!(
-        flat.contains("times polynomials in the generators), each checked by expanding it. None.")
+        flat.contains(
+            "times polynomials in the generators, as far as this degree shows), each checked by \
+             expanding it; every relation up to this degree is such a combination of them. None."
+        ),
+        "{out}"
     );
     assert!(flat.contains("1 claim: 1 proved, 0 refuted"), "{out}");
 

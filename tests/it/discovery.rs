@@ -145,6 +145,11 @@ const COMMANDS: &[(&str, &str)] = &[
          --when 'p_theta = I*omega' --degree 2",
     ),
     (
+        "a35-k-and-a",
+        "superint closure systems/anisotropic-3-5-rotor.toml Hx Hy ReK ImK ReA ImA \
+         --when 'p_theta = I*omega' --degree 6",
+    ),
+    (
         "a12-new",
         "superint search --system anisotropic-1-2 --when 'p_theta = I*omega' \
          --momenta-degree 3 --positions-degree 3 --trig-degree 3 --new-only",
@@ -1037,6 +1042,49 @@ fn anisotropic_3_5_c26() {
     let j5 = j.checked_pow(5).unwrap();
     let y3 = ybar.checked_pow(3).unwrap();
     assert_eq!(j5.checked_mul(&y3).unwrap(), parse("A"));
+}
+
+/// The 3:5 rotor's `K` and `A` at the resonance: at degree 6 three relations, the third
+/// `2M H_x |A|² = |K|⁶`; at degree 7 it is `|K|⁴ R1 − 2M³ H_x R2`, through multiples of
+/// degree 7, and only the first two are listed, not the third's multiples by each generator
+/// (`H_x ·`, `H_y ·`, …), which the closure once listed in its place.
+#[test]
+fn anisotropic_3_5_k_and_a_relations() {
+    let relations = [
+        "8M³ H_x² H_y = (Re K)² + (Im K)² at p_θ = Iω [R1 proved]",
+        "4 H_x H_y (Re K)⁴ + 8 H_x H_y (Re K)² (Im K)² + 4 H_x H_y (Im K)⁴ = (Re A)²/M² \
+         + (Im A)²/M² at p_θ = Iω [R2 proved]",
+    ];
+    let third = "2M H_x (Re A)² + 2M H_x (Im A)² = (Re K)⁶ + 3 (Re K)⁴ (Im K)² \
+                 + 3 (Re K)² (Im K)⁴ + (Im K)⁶ at p_θ = Iω [R3 proved]";
+    let six = [
+        &relations[..],
+        &[
+            "{Re K, Im K} = 4M³ω(5 H_x − 12 H_y) H_x at p_θ = Iω",
+            third,
+            "13 claims: 13 proved, 0 refuted",
+        ],
+    ]
+    .concat();
+    expect("a35-k-and-a", &six);
+    let command = COMMANDS
+        .iter()
+        .find(|c| c.0 == "a35-k-and-a")
+        .expect("the command")
+        .1;
+    let mut args: Vec<String> = words(command).into_iter().skip(1).collect();
+    let last = args.len() - 1;
+    args[last] = "7".into();
+    args.push("--no-timings".into());
+    let args: Vec<&str> = args.iter().map(String::as_str).collect();
+    let out = superint(&args);
+    let seven = normalize(&String::from_utf8(out.stdout).expect("UTF-8"));
+    assert_eq!(out.status.code(), Some(0), "{seven}");
+    for piece in relations {
+        assert!(seven.contains(&normalize(piece)), "{piece} not in {seven}");
+    }
+    assert!(!seven.contains("[R3"), "{seven}");
+    assert!(seven.contains("12 claims: 12 proved, 0 refuted"), "{seven}");
 }
 
 #[test]

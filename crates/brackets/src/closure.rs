@@ -1307,4 +1307,38 @@ mod tests {
         assert_eq!(first, "−ω²I/2 + F2");
         assert!(c.relations.iter().all(|r| r.symbolic));
     }
+
+    /// A relation left out as a combination of those listed keeps its multiples in the span:
+    /// with `h = x², y = p², k = x²p, a = x⁵p³`, `h a² = k⁶` (degree 6) is
+    /// `k⁴(h² y − k²) − h(h y k⁴ − a²)`, through multiples of degree 7. Degree 6 lists it;
+    /// degree 7 leaves it out, and its multiples `h² a² = h k⁶`, `h y a² = y k⁶`, …, which the
+    /// multiples of degree `≤ 7` of the two listed do not reach, were listed in its place.
+    #[test]
+    fn the_multiples_of_a_relation_left_out_are_not_listed() {
+        let vars = Vars::builder()
+            .coordinate("x")
+            .momentum("p_x")
+            .build()
+            .unwrap();
+        let space = crate::PhaseSpace::new(&vars, &[("x", "p_x")]).unwrap();
+        let mut system =
+            System::new("x, p", space, Expr::parse(&vars, "p_x^2/2").unwrap()).unwrap();
+        for (name, value) in [
+            ("h", "x^2"),
+            ("y", "p_x^2"),
+            ("k", "x^2*p_x"),
+            ("a", "x^5*p_x^3"),
+        ] {
+            system.define_parsed(name, name, value).unwrap();
+        }
+        let relations = |degree| {
+            let c = closure(&system, &["h", "y", "k", "a"], &ClosureOptions::new(degree)).unwrap();
+            c.relations
+                .iter()
+                .map(ToString::to_string)
+                .collect::<Vec<_>>()
+        };
+        assert_eq!(relations(6), ["h² y = k²", "h y k⁴ = a²", "h a² = k⁶"]);
+        assert_eq!(relations(7), ["h² y = k²", "h y k⁴ = a²"]);
+    }
 }

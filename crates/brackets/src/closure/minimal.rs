@@ -1,11 +1,19 @@
 //! The closure's relations, each minimal: a relation found (a kernel vector, at the fixed
 //! values) is listed only when it is not a combination `Σ c_j(p) m_j(G) R_j` of the relations
-//! listed before it, with coefficients polynomial in the symbolic parameters `p` as well as in
+//! found before it, with coefficients polynomial in the symbolic parameters `p` as well as in
 //! the generators `G` (a module over the polynomials in the parameters, an ideal in the
 //! generators). The multipliers are those the searched bounds allow: `m_j` such that
 //! `m_j R_j` has degree `≤ D` in the generators, `c_j` of degree `≤ S` in the parameters (the
 //! degree of the relations' own coefficients, so that `λ·R` is a multiple of `R` whenever `R`
-//! is a relation the bounds found). Without symbolic parameters the `c_j` are numbers.
+//! is a relation the bounds found). Without symbolic parameters the `c_j` are numbers. The
+//! relations found before it are those listed and those left out, each of which is such a
+//! combination of the listed ones: so every relation of degree `≤ D` is a combination of the
+//! listed ones times polynomials, with multipliers that may pass `D` (at degree 7, `h² a² = h k⁶`
+//! is `h` times `h a² = k⁶`, which is `k⁴(h² y − k²) − h(h y k⁴ − a²)`; were only the listed
+//! relations' multiples of degree `≤ 7` the span, it and five such multiples would be listed
+//! in place of `h a² = k⁶`, which degree 6 lists). Each listed relation is minimal as far as
+//! the degree `D` shows: a higher degree may show it to be such a combination, as degree 7
+//! does `h a² = k⁶`.
 //!
 //! The relations are taken by their degree in the generators and, within a degree, simplest
 //! first: the fewest and lowest parameters (the sum over the terms of their degree in the
@@ -20,7 +28,7 @@
 //! ([`RelationIdeal::simpler`]).
 //!
 //! Whether a relation is such a combination is decided modulo a prime, over the span of the
-//! listed relations' multiples; a combination found there is reconstructed and checked exactly
+//! multiples of the relations found before it; a combination found there is reconstructed and checked exactly
 //! before the relation is left out, and where that fails the span is formed over `Q`.
 
 use std::collections::HashMap;
@@ -48,7 +56,7 @@ pub(super) struct Bounds {
 /// The minimal relations among the generators: `G − c = 0` for a generator constant on the
 /// condition's surface (when `degree ≥ 1`), then each kernel vector (a relation at the fixed
 /// values), by degree in the generators and simplest first, that is not a combination of the
-/// multiples of those before it ([`RelationIdeal`]), lifted and proved.
+/// multiples of those before it, listed or not ([`RelationIdeal`]), lifted and proved.
 pub(super) fn minimal_relations(
     lift_ctx: &mut LiftContext<'_>,
     kernel: &[SparseVec<Rational>],
@@ -109,9 +117,9 @@ fn constant_generator_relations(
 /// the closure's columns (a multiple `λ·R` may pass the degree `S` of the columns).
 type Key = (Vec<u32>, bool);
 
-/// The span of the minimal relations found so far and of their multiples by `p^ν G^β` within
-/// the bounds (and by `i` over `Q(i)`): a relation in it is a combination of multiples of
-/// those before it, not minimal.
+/// The span of the relations tested so far, listed or not, and of their multiples by
+/// `p^ν G^β` within the bounds (and by `i` over `Q(i)`): a relation in it is a combination of
+/// multiples of those before it, not minimal.
 struct RelationIdeal<'a> {
     /// The exponents of each column's monomial, in the generators and then the symbolic
     /// parameters.
@@ -140,8 +148,8 @@ struct RelationIdeal<'a> {
     exact: Echelon<Rational>,
     /// How many of the multiples `exact` holds.
     exact_joined: usize,
-    /// The relations listed whose multiples are not yet in the span (they are added before
-    /// the next relation is tested).
+    /// The relations tested, listed or not, whose multiples are not yet in the span (they are
+    /// added before the next relation is tested).
     pending: Vec<SparseVec<Rational>>,
 }
 
@@ -209,14 +217,19 @@ impl<'a> RelationIdeal<'a> {
     }
 
     /// Whether `rel` (the relations taken in [`RelationIdeal::simplicity`]'s order) is
-    /// minimal: not a combination of the multiples of the minimal relations before it; if it
-    /// is, the relation to list for it (over the columns): `rel`, or one simpler that differs
-    /// from it by such a combination ([`RelationIdeal::simpler`]). A minimal relation's
-    /// multiples join the span before the next is tested.
+    /// minimal: not a combination of the multiples of the relations before it; if it is, the
+    /// relation to list for it (over the columns): `rel`, or one simpler that differs from it
+    /// by such a combination ([`RelationIdeal::simpler`]). Its multiples join the span before
+    /// the next is tested, whether it is listed or not: one left out is in the ideal of those
+    /// listed, and so are its multiples, which that ideal's own multiples within the degree
+    /// need not reach (`h a² = k⁶` of degree 6 is `k⁴(h² y − k²) − h(h y k⁴ − a²)`, through
+    /// multiples of degree 7, and at degree 7 its multiple `h² a² = h k⁶` is not a combination
+    /// of the multiples of degree `≤ 7` of the other two).
     fn insert_if_minimal(&mut self, rel: &SparseVec<Rational>) -> Option<SparseVec<Rational>> {
         self.add_pending_multiples();
         let v = self.indexed(rel);
         if self.spans(&v) {
+            self.pending.push(v);
             return None;
         }
         let listed = match self.simpler(rel, &v) {
@@ -289,7 +302,7 @@ impl<'a> RelationIdeal<'a> {
         modular::combination_equals(&self.multiples, self.index.len(), c, v)
     }
 
-    /// Adds to the span the multiples of the relations listed since the last test.
+    /// Adds to the span the multiples of the relations tested since the last test.
     fn add_pending_multiples(&mut self) {
         for rel in std::mem::take(&mut self.pending) {
             for m in self.multiples_of(&rel) {
