@@ -12,7 +12,7 @@ use brackets::{EngineError, PhaseSpace, System};
 use toml::Spanned;
 use trigpoly::{AlgebraError, Expr, Limits, Var, VarKind, VarSet, Vars, VarsBuilder};
 
-use super::claims::ClaimSpec;
+use super::claims::{engine_error, ClaimSpec};
 use super::error::{locate_bytes, ErrorKind, FileError, Warnings};
 use super::keys::unknown_key_hint;
 use super::model::{
@@ -590,7 +590,8 @@ impl<'a> Builder<'a> {
     /// The phase space with the brackets of `[poisson]` declared: each key `"{a, b}"` names
     /// two phase variables, one at least a Poisson variable, once; each value is a real
     /// polynomial in the variables and parameters; and the brackets satisfy the Jacobi
-    /// identity, checked exactly (a violation is shown at the last entry of its triple).
+    /// identity, checked exactly (a violation is shown at the last entry of its triple; a
+    /// check stopped by a limit is a limit, with its hint, as any text's of the file is).
     fn poisson(
         &self,
         file: &LoadedSystem,
@@ -622,11 +623,7 @@ impl<'a> Builder<'a> {
                 }
                 _ => None,
             };
-            self.error(
-                ErrorKind::Engine,
-                at.unwrap_or(poisson.span()),
-                e.to_string(),
-            )
+            engine_error(&self.source, at.unwrap_or(poisson.span()), &e)
         })
     }
 

@@ -1406,6 +1406,40 @@ fn a_refusal_of_the_input_is_no_limit() {
     }
 }
 
+/// The Jacobi identity of a file's `[poisson]` brackets checked under a term or degree limit
+/// too small for it is a limit, as every other text of the file stopped at a limit is: of kind
+/// `limit`, with the hint that raises it, at `[poisson]`. It was of kind `engine` with no hint,
+/// so that a program told it from declared brackets that break the identity only by the
+/// message; those stay of kind `engine`, at the last entry of their triple.
+#[test]
+fn a_jacobi_check_stopped_at_a_limit_is_a_limit() {
+    let text = "hamiltonian = \"a\"\n[phase_space]\nvariables = [\"a\", \"b\", \"c\"]\n\
+                [poisson]\n\"{a, b}\" = \"c\"\n\"{b, c}\" = \"a\"\n\
+                \"{c, a}\" = \"b + a^2*c^2 + a*b*c\"\n";
+    for (limits, raised) in [
+        (LimitsOverride::default().max_terms(4), "max_terms"),
+        (LimitsOverride::default().max_degree(2), "max_degree"),
+    ] {
+        let err = load_system_text("jacobi.toml", text, &limits).unwrap_err();
+        assert_eq!(
+            (err.kind, err.line_col()),
+            (ErrorKind::Limit, Some((4, 1))),
+            "{err}"
+        );
+        assert!(
+            err.hint.as_deref().is_some_and(|h| h.contains(raised)),
+            "{err}"
+        );
+    }
+    let err = load_system_text("jacobi.toml", text, &LimitsOverride::default()).unwrap_err();
+    assert_eq!(
+        (err.kind, err.line_col(), err.hint.as_deref()),
+        (ErrorKind::Engine, Some((7, 1)), None),
+        "{err}"
+    );
+    assert!(err.message.contains("break the Jacobi identity"), "{err}");
+}
+
 /// A function added in code is checked against the names as they print, as a file's is: a
 /// name the printer would write for a product of one-letter variables (`kx` for `k x`) is
 /// refused, unless the variables were built knowing it, and then the product prints spaced;
