@@ -136,11 +136,12 @@ fn symbols_text(c: &Closure) -> Option<Entry> {
 /// blank name, a function given twice, an expression given as a name (`2*L`: add it with
 /// [`LoadedSystem::add_function`] and name it) or a name the file does not know is refused
 /// before anything is computed, of kind [`ErrorKind::Expression`](crate::system_file::ErrorKind),
-/// at its line and column in the name (`<expression>`, or `<command line>` as the file's
-/// [`Caller`] says); what the engine then refuses (a limit, a condition the flow leaves) is an
-/// error of the file without a place, of kind `Limit` (with the hint to raise the limit) or
-/// `Engine`, as [`table_report`](crate::system_file::table_report)'s are. `caller` chooses
-/// whose options the report's advice names, as for [`closure_report_for`].
+/// at its line and column in the name (`<expression>`, a blank one `<name>`, or
+/// `<command line>` as the file's [`Caller`] says); what the engine then refuses (a limit, a
+/// condition the flow leaves) is an error of the file without a place, of kind `Limit` (with
+/// the hint to raise the limit, but for [`ClosureOptions::max_monomials`], which its message
+/// names) or `Engine`, as [`table_report`](crate::system_file::table_report)'s are. `caller`
+/// chooses whose options the report's advice names, as for [`closure_report_for`].
 ///
 /// ```
 /// use superint::discovery::relation_text;

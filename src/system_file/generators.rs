@@ -27,7 +27,7 @@ impl LoadedSystem {
     /// ways: [`LoadedSystem::refuse_repeated`]), an expression given as a name (`2*L`, which
     /// has no name for the table and the relations), or one the file does not know is refused,
     /// of kind [`ErrorKind::Expression`], at its place in the name as given (`<expression>`,
-    /// or `<command line>` as the [`Caller`] says); a generator of `given` whose name the
+    /// a blank one `<name>`, or `<command line>` as the [`Caller`] says); a generator of `given` whose name the
     /// system has already, or that would print as one of its names, given twice, or built in
     /// another variable set, of kind [`ErrorKind::Name`]; no generator at all, of kind
     /// [`ErrorKind::Claim`].

@@ -37,11 +37,11 @@ pub enum EngineError {
         /// The limit in force.
         limit: usize,
     },
-    /// A limit that the engine keeps itself, checked before it forms what the limit bounds:
-    /// more products of integrals than
-    /// [`SearchOptions::max_products`](crate::SearchOptions::max_products), more monomials in
-    /// the generators than [`ClosureOptions::max_monomials`](crate::ClosureOptions), a search
-    /// space of more unknowns than the term limit. [`EngineError::limit`] says which, `which`;
+    /// A limit that the engine keeps itself: more products of integrals than
+    /// [`SearchOptions::max_products`](crate::SearchOptions::max_products), counted as each is
+    /// formed, and, counted before any is formed, more monomials in the generators than
+    /// [`ClosureOptions::max_monomials`](crate::ClosureOptions) or a search space of more
+    /// unknowns than the term limit. [`EngineError::limit`] says which, `which`;
     /// the message says it in words, with the setting that raises it.
     #[error("{message}")]
     PastLimit {
