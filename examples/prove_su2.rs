@@ -21,10 +21,15 @@ fn main() -> Result<(), EngineError> {
         };
         println!("{statement:<18} [C09 {outcome}]");
     }
-    // The table prints with its header and aligned columns; `table.entries[a][b]` is
-    // `{names[a], names[b]}` for a program that reads it, which `Entry::render` writes in
-    // another notation (`Style::Latex`).
+    // The table prints with its header and aligned columns; a program reads its entries,
+    // `table.entries[a][b]` being `{names[a], names[b]}`, written by `Entry::render` in a
+    // notation of its choice (`Style::Latex` too): above the diagonal, the three claims.
     let table = BracketTable::compute(&rotor, &["L", "G1", "G2"])?;
+    let entry = |a: usize, b: usize| table.entries[a][b].render(Style::Unicode);
+    assert_eq!(
+        [entry(0, 1), entry(0, 2), entry(1, 2)],
+        ["−G2", "4 G1", "−ω² L"]
+    );
     print!("\n{table}");
     Ok(())
 }
