@@ -1692,8 +1692,9 @@ fn walking_an_errors_chain_says_each_message_once() {
 /// The closure of a system file's functions named as the file names them
 /// (`file_closure_report`, in the prelude): a function by its name or its display (`Ω`), a
 /// family instance in either spelling (`P_{1,1}`, `Q_1_1`), each printed by the file's
-/// display, is the closure `superint closure FILE NAMES` prints, whole, for the same names: a
-/// program had to build each `NamedFunction` by hand, instances and displays included.
+/// display, is the closure `superint closure FILE NAMES` prints, whole, for the same names, in
+/// every format (JSON's sections name their file, which text does not show): a program had to
+/// build each `NamedFunction` by hand, instances and displays included.
 #[test]
 fn a_files_closure_from_a_program_is_the_command_lines() {
     let rotor = load_system_file("systems/harmonic-rotor.toml", &LimitsOverride::default())
@@ -1718,9 +1719,11 @@ fn a_files_closure_from_a_program_is_the_command_lines() {
             args.extend(["--when", w]);
         }
         args.push("--no-timings");
-        let printed = crate::superint_ok(&args);
-        let text = render(&report, Format::Text, &RenderOptions::reproducible());
-        pretty_assertions::assert_eq!(text, printed, "{names:?}");
+        for format in Format::ALL {
+            let printed = crate::superint_ok(&[&args[..], &["--format", format.name()]].concat());
+            let rendered = render(&report, format, &RenderOptions::reproducible());
+            pretty_assertions::assert_eq!(rendered, printed, "{names:?} {format:?}");
+        }
         if when.is_some() {
             assert_eq!(algebra.display, ["L", "Ω", "P_{1,1}", "Q_{1,1}"]);
             assert_eq!(algebra.names[2..], ["P_1_1", "Q_1_1"]);
