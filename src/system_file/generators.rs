@@ -213,11 +213,7 @@ pub fn refuse_expression_as_generator(
     caller: Caller,
     mut free: impl FnMut(&str) -> bool,
 ) -> Result<(), FileError> {
-    let name_like = name.chars().next().is_some_and(char::is_alphabetic)
-        && name
-            .chars()
-            .all(|c| c.is_alphanumeric() || "_{}, '".contains(c) || c == '\u{304}');
-    if name_like {
+    if reads_as_a_generator_name(name) {
         return Ok(());
     }
     // A name the system does not have, for the example.
@@ -254,6 +250,19 @@ pub fn refuse_expression_as_generator(
             trigpoly::quoted_name(name)
         ),
     ))
+}
+
+/// Whether `name`, given as a closure's generator, is a name rather than an expression: a
+/// letter first, then letters, digits, `_`, an instance's braces and commas (`P_{1, 1}`, a
+/// space after the comma), primes (`P'`) and the macron of a display (`Z̄`), so that a
+/// generator such as `Z̄` or `P'_{1,1}` is resolved by its name and not refused as an
+/// expression. Not [`looks_like_name`]'s rule (for `--known` and for displays), which takes a
+/// digit first but neither primes, spaces nor marks.
+fn reads_as_a_generator_name(name: &str) -> bool {
+    name.chars().next().is_some_and(char::is_alphabetic)
+        && name
+            .chars()
+            .all(|c| c.is_alphanumeric() || "_{}, '".contains(c) || c == '\u{304}')
 }
 
 /// `P_{1,1}` → `P_1_1`: a name given as a generator or a known integral as the generators'
