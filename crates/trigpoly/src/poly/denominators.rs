@@ -85,10 +85,15 @@ impl<C: Coefficient> Poly<C> {
 
     /// [`Poly::declaration`] with room for at most `terms` terms and `chars` characters. A
     /// divisor that is not real (`p_x + iMωx`) cannot be declared (a denominator is real):
-    /// `1/D = conj(D)/(D conj(D))` names the real product to declare instead.
+    /// `1/D = conj(D)/(D conj(D))` names the real product to declare instead, when `D` has at
+    /// most `terms²` terms. A longer one is not multiplied out for a message: its norm is
+    /// shown only when short, and the product of `D`'s terms by `conj(D)`'s is the square of
+    /// its length (`p_θ/K_{2,1}^{40}`, a divisor of 91 881 terms, took minutes to be refused).
     pub(crate) fn declaration_within(&self, terms: usize, chars: usize) -> String {
         if !self.is_real() {
-            let norm = self.checked_mul(&self.conj()).ok();
+            let norm = (self.len() <= terms.saturating_mul(terms))
+                .then(|| self.checked_mul(&self.conj()).ok())
+                .flatten();
             let advice = "it is not real, so it cannot be declared (a denominator is real): \
                           write 1/D as conj(D)/(D conj(D)) and declare the real D conj(D)";
             return match norm.and_then(|n| n.ascii_within(terms, chars)) {
