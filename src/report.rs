@@ -14,7 +14,7 @@ use trigpoly::{Expr, Factored, Style};
 
 mod results;
 
-pub(crate) use results::{first_free, PLACEHOLDERS};
+pub(crate) use results::{first_free, outcome_parts, PLACEHOLDERS};
 pub use results::{
     ClaimKind, ClaimOutcome, ClaimResult, Excerpt, Fact, ProofResult, RankResult, TableResult,
     TowerResult,
@@ -22,6 +22,7 @@ pub use results::{
 
 /// A whole report: a title, sections, and what its closing line summarises.
 #[derive(Clone, Debug)]
+#[non_exhaustive]
 pub struct Report {
     /// The report's title, in markup: prose with mathematics between backticks.
     pub title: String,
@@ -40,6 +41,7 @@ pub struct Report {
 
 /// What the closing summary line of a report counts.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[non_exhaustive]
 pub enum SummaryKind {
     /// The claims: `26 claims: 26 proved, 0 refuted`.
     Claims,
@@ -123,6 +125,7 @@ pub struct UnknownExpect(pub String);
 /// A numbered section of a report: of the paper (2 to 5), or one a file checked, a search, a
 /// closure (1, 2, …).
 #[derive(Clone, Debug)]
+#[non_exhaustive]
 pub struct Section {
     /// The section's number: the paper's (2 to 5), or its place in the report.
     pub number: u32,
@@ -147,6 +150,7 @@ impl Section {
 
 /// One item of a section, computed.
 #[derive(Clone, Debug)]
+#[non_exhaustive]
 pub enum Entry {
     /// A sub-heading, in markup.
     Heading(String),
@@ -183,6 +187,7 @@ impl Entry {
 
 /// The facts of a discovery, as the JSON gives them (`searches`, `closures`).
 #[derive(Clone, Debug)]
+#[non_exhaustive]
 pub enum Facts {
     /// Of `superint search`.
     Search(Box<SearchFacts>),
@@ -192,6 +197,7 @@ pub enum Facts {
 
 /// How the linear algebra of a search or closure treated the parameters.
 #[derive(Clone, Debug, Default)]
+#[non_exhaustive]
 pub struct ParameterFacts {
     /// The parameters given values for the linear algebra, with them (`M`, `1`), in the
     /// file's names.
@@ -206,6 +212,7 @@ pub struct ParameterFacts {
 
 /// What `superint search` searched and found.
 #[derive(Clone, Debug)]
+#[non_exhaustive]
 pub struct SearchFacts {
     /// The bounds of the space.
     pub space: brackets::search::SearchSpace,
@@ -254,6 +261,7 @@ pub struct SearchFacts {
 
 /// What `superint closure` found.
 #[derive(Clone, Debug)]
+#[non_exhaustive]
 pub struct ClosureFacts {
     /// The generators, in the file's names.
     pub generators: Vec<String>,
@@ -277,6 +285,7 @@ pub struct ClosureFacts {
 
 /// Displayed equations.
 #[derive(Clone, Debug)]
+#[non_exhaustive]
 pub struct Equations {
     /// What the equations are (`Hamilton's equations`), possibly empty: prose, formulas
     /// between backticks (`` at `p_θ = Iω` ``).
@@ -302,6 +311,7 @@ impl Equations {
 
 /// Whether the flow of `H` keeps the surface of a condition ([`Equations::flow`]).
 #[derive(Clone, Debug, PartialEq, Eq)]
+#[non_exhaustive]
 pub enum FlowKept {
     /// The flow keeps it: `{v − value, H}` vanishes there for every variable it sets.
     Kept,
@@ -334,6 +344,7 @@ impl FlowKept {
 /// One displayed equation `lhs = rhs`, and the right side again in named functions where
 /// that is known (`= −2 H L/M`).
 #[derive(Clone, Debug)]
+#[non_exhaustive]
 pub struct Equation {
     /// The left side in the paper's unicode notation (`ṗ_x`, `H`, `P_{1,1}`).
     pub lhs: String,

@@ -38,6 +38,7 @@ pub enum Workload {
 
 /// What a workload computed: the number of terms it produced and the identities it checked.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[non_exhaustive]
 pub struct Outcome {
     /// Terms of the expanded inputs (W1, W2: `P` and `Q`), or of the product (W3), or of the
     /// brackets (W4).
@@ -48,6 +49,7 @@ pub struct Outcome {
 
 /// Why a workload failed: the engine refused, or an identity was not zero.
 #[derive(Debug, thiserror::Error)]
+#[non_exhaustive]
 pub enum WorkloadError {
     /// The engine refused (a limit, say).
     #[error(transparent)]

@@ -83,6 +83,7 @@ impl PaperOptions {
 
 /// The paper: sections of items.
 #[derive(Clone, Debug)]
+#[non_exhaustive]
 pub struct Paper {
     /// The title of the report.
     pub title: String,
@@ -94,6 +95,7 @@ pub struct Paper {
 
 /// A section of the paper.
 #[derive(Clone, Debug)]
+#[non_exhaustive]
 pub struct Section {
     /// The paper's section number.
     pub number: u32,
@@ -105,6 +107,7 @@ pub struct Section {
 
 /// One item of a section, before it is computed.
 #[derive(Clone, Debug)]
+#[non_exhaustive]
 pub enum Item {
     /// A sub-heading.
     Heading(String),

@@ -128,7 +128,7 @@ use crate::report::{
     written_in_functions, ClaimOutcome, ClaimResult, ClosureFacts, Entry, Equations, Facts,
     ParameterFacts, ProofResult, RankResult, Report, SearchFacts, TableResult, TowerResult,
 };
-use brackets::{Entry as TableEntry, UpperBound};
+use brackets::Entry as TableEntry;
 
 /// The schema's name and version.
 pub const SCHEMA: &str = "superint-report/1";
@@ -481,10 +481,7 @@ fn rank(r: &RankResult, section: u32) -> Value {
                 json!({"variable": name(*v), "value": value.to_string()})
             }
         }).collect::<Vec<_>>(),
-        "upper_bound": match &c.upper {
-            UpperBound::Size => json!({"kind": "size", "minors": null}),
-            UpperBound::VanishingMinors { count } => json!({"kind": "vanishing_minors", "minors": count}),
-        },
+        "upper_bound": json!({"kind": c.upper.name(), "minors": c.upper.minors()}),
         "outcome": r.claim.outcome().name(),
     })
 }

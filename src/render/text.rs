@@ -602,6 +602,8 @@ pub(crate) fn upper_bound(r: &RankResult) -> String {
             k + 1,
             count
         ),
+        // A kind of bound added to the engine after these words: its own clause.
+        other => other.to_string(),
     }
 }
 

@@ -13,6 +13,7 @@ use crate::system_file::Caller;
 
 /// Whether a claim asserts an identity, that something does not vanish, or a rank.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+#[non_exhaustive]
 pub enum ClaimKind {
     /// `lhs = rhs` (under the condition): proved when `lhs − rhs` is exactly zero.
     Identity,
@@ -55,7 +56,36 @@ impl std::fmt::Display for ClaimKind {
 
 /// What a check of a claim found. Ordered so that the outcome of several checks of one claim
 /// is the greatest: one refuted check refutes it, else one undecided leaves it undecided.
+///
+/// A check may find more kinds of outcome later, so a program's `match` has an arm for the
+/// others, which count as not proved:
+///
+/// ```
+/// use superint::report::ClaimOutcome;
+///
+/// fn proved(outcome: ClaimOutcome) -> bool {
+///     match outcome {
+///         ClaimOutcome::Proved => true,
+///         _ => false,
+///     }
+/// }
+/// assert!(proved(ClaimOutcome::Proved) && !proved(ClaimOutcome::Undecided));
+/// ```
+///
+/// One without that arm does not compile:
+///
+/// ```compile_fail,E0004
+/// use superint::report::ClaimOutcome;
+///
+/// fn proved(outcome: ClaimOutcome) -> bool {
+///     match outcome {
+///         ClaimOutcome::Proved => true,
+///         ClaimOutcome::Undecided | ClaimOutcome::Refuted => false,
+///     }
+/// }
+/// ```
 #[derive(Clone, Copy, Debug, PartialEq, Eq, PartialOrd, Ord, Hash)]
+#[non_exhaustive]
 pub enum ClaimOutcome {
     /// `lhs − rhs` is exactly zero (or, for a nonvanishing claim, is not).
     Proved,
@@ -320,13 +350,25 @@ impl ClaimResult {
     }
 }
 
+/// What an engine's outcome makes of a claim's result: whether it is proved, a refutation's
+/// residual, and, for an outcome of a kind this crate does not know ([`brackets::Outcome`] is
+/// open to new kinds), the words that leave the claim undecided: neither proved nor refuted.
+pub(crate) fn outcome_parts(outcome: brackets::Outcome) -> (bool, Option<Expr>, Option<String>) {
+    match outcome {
+        brackets::Outcome::Proved => (true, None, None),
+        brackets::Outcome::Refuted { residual } => (false, Some(residual), None),
+        _ => (
+            false,
+            None,
+            Some("the engine's outcome is of a kind this report does not know".into()),
+        ),
+    }
+}
+
 /// An identity's verdict as a report's claim: proved, or refuted with its residual.
 impl From<brackets::Verdict> for ClaimResult {
     fn from(v: brackets::Verdict) -> Self {
-        let residual = match v.outcome {
-            brackets::Outcome::Proved => None,
-            brackets::Outcome::Refuted { residual } => Some(residual),
-        };
+        let (proved, residual, undecided) = outcome_parts(v.outcome);
         ClaimResult {
             id: v.id,
             statement: v.statement,
@@ -334,13 +376,13 @@ impl From<brackets::Verdict> for ClaimResult {
             condition: v.condition,
             condition_ascii: None,
             kind: ClaimKind::Identity,
-            proved: residual.is_none(),
+            proved,
             expect: Expect::Proved,
             residual,
             residual_in_functions: None,
             witness: None,
             note: None,
-            undecided: None,
+            undecided,
             excerpt: None,
             seconds: v.seconds,
         }
@@ -349,6 +391,7 @@ impl From<brackets::Verdict> for ClaimResult {
 
 /// A bracket table of named functions of a system.
 #[derive(Clone, Debug)]
+#[non_exhaustive]
 pub struct TableResult {
     /// What the table shows: `` `{A, B}` for the harmonic rotor (row `A`, column `B`) ``.
     pub caption: String,
@@ -509,6 +552,7 @@ pub(crate) fn first_free<T: Copy>(
 
 /// One computed base fact of a proof.
 #[derive(Clone, Debug)]
+#[non_exhaustive]
 pub struct Fact {
     /// How the fact reads (`{Z, H} = iω Z`).
     pub statement: String,
@@ -523,6 +567,7 @@ pub struct Fact {
 
 /// A proof for all `m, n` by the eigenfunction lemma.
 #[derive(Clone, Debug)]
+#[non_exhaustive]
 pub struct ProofResult {
     /// What is proved, in one line.
     pub title: String,
@@ -593,6 +638,7 @@ impl ProofResult {
 
 /// `{K_{m,n}, H} = i(mω − nΩ) K_{m,n}` checked by expansion for `1 ≤ m, n ≤ max`.
 #[derive(Clone, Debug)]
+#[non_exhaustive]
 pub struct TowerResult {
     /// The system's name (JSON's `"system"`).
     pub system: String,
@@ -711,6 +757,7 @@ impl RankResult {
 
 /// A certified rank of a Jacobian `∂(F_1, …, F_k)/∂(q, p)`.
 #[derive(Clone, Debug)]
+#[non_exhaustive]
 pub struct RankResult {
     /// The functions' names, in the paper's notation.
     pub functions: Vec<String>,

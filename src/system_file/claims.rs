@@ -5,9 +5,7 @@
 use std::ops::Range;
 use std::time::Instant;
 
-use brackets::{
-    level_set_coordinates, rank, rank_restricted, Claim, Condition, EngineError, Outcome,
-};
+use brackets::{level_set_coordinates, rank, rank_restricted, Claim, Condition, EngineError};
 use toml::Spanned;
 use trigpoly::syntax::{Expr as Tree, ExprKind};
 use trigpoly::{AlgebraError, Expr, ParseCause, Span, VarKind};
@@ -18,7 +16,7 @@ use super::scope::{rewrite_braces, Limit};
 use super::text::{array_strings, split_top_level, unbalanced_bracket, Source, Text};
 use super::written::Reach;
 use super::LoadedSystem;
-use crate::report::{ClaimKind, ClaimResult, Expect, RankResult};
+use crate::report::{outcome_parts, ClaimKind, ClaimResult, Expect, RankResult};
 
 /// The claim a certified rank answers ([`LoadedSystem::rank_result`]): a file's rank claim,
 /// or the command line's `superint rank`, whose errors point at the functions it lists.
@@ -40,6 +38,7 @@ pub(crate) struct RankClaim<'a> {
 
 /// What a claim says.
 #[derive(Clone, Debug)]
+#[non_exhaustive]
 pub enum ClaimForm {
     /// `lhs = rhs`.
     Identity {
@@ -82,6 +81,7 @@ pub struct ClaimSpec {
 
 /// A checked claim, as the report shows it.
 #[derive(Clone, Debug)]
+#[non_exhaustive]
 pub enum CheckedClaim {
     /// An identity, proved or refuted with its residual.
     Identity(Box<ClaimResult>),
@@ -874,10 +874,7 @@ impl LoadedSystem {
                     claim = claim.when(c.clone());
                 }
                 let v = claim.check().map_err(|e| at(&e))?;
-                let (proved, residual) = match v.outcome {
-                    Outcome::Proved => (true, None),
-                    Outcome::Refuted { residual } => (false, Some(residual)),
-                };
+                let (proved, residual, undecided) = outcome_parts(v.outcome);
                 // A claim with no bracket (or braced family instance) has as residual its
                 // sides' difference, which the fullest search only restates.
                 let reach = match lhs.value.contains('{') || rhs.value.contains('{') {
@@ -904,7 +901,7 @@ impl LoadedSystem {
                     residual_in_functions,
                     witness: None,
                     note: None,
-                    undecided: None,
+                    undecided,
                     excerpt: None,
                     seconds: start.elapsed().as_secs_f64(),
                 })))

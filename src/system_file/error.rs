@@ -16,6 +16,7 @@ use super::scope::Limit;
 
 /// What kind of problem a [`FileError`] reports.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+#[non_exhaustive]
 pub enum ErrorKind {
     /// The file could not be read.
     Io,
@@ -119,6 +120,7 @@ pub struct Location {
 /// program gave, `<expression>`, `<condition>`, `<function NAME>`, ...; `<command line>` for
 /// the command line's), location, message and an optional hint.
 #[derive(Clone, Debug, PartialEq, Eq, thiserror::Error)]
+#[non_exhaustive]
 pub struct FileError {
     /// What kind of problem it is.
     pub kind: ErrorKind,
@@ -280,6 +282,7 @@ impl fmt::Display for FileError {
 ///       |          ^^^
 /// ```
 #[derive(Clone, Debug, PartialEq, Eq)]
+#[non_exhaustive]
 pub struct Warning {
     /// The file's path as given, or the name of the text (`<command line>`, `<expression>`).
     pub origin: String,

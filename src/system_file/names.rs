@@ -61,6 +61,7 @@ fn invisible(c: char) -> bool {
 /// subscript, letters LaTeX can write, not `i` or a function), which the file format widens
 /// by the names it gives a meaning of its own ([`reserved`]: `H`, `rank`).
 #[derive(Clone, Debug, PartialEq, Eq)]
+#[non_exhaustive]
 pub enum BadName {
     /// A name no variable set takes, and why ([`trigpoly::BadName`]).
     Unnamed(trigpoly::BadName),
@@ -299,6 +300,7 @@ impl Instances {
 
 /// Why [`PrintedNames::admit`] refuses a new name, in words (its `Display`).
 #[derive(Clone, Debug, PartialEq, Eq)]
+#[non_exhaustive]
 pub enum Refusal {
     /// The printer writes a product of one-letter variables as the name (`Mx` for `M x`),
     /// which would read back as the function.

@@ -14,6 +14,7 @@ use super::{Argument, LoadedSystem, COMMAND_LINE};
 
 /// A plot's exact input.
 #[derive(Clone, Debug)]
+#[non_exhaustive]
 pub struct PlotInput {
     /// The parameters' values as they read (`M = 1, ω = 2`); empty when none is set.
     pub parameters: String,

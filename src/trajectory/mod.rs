@@ -39,6 +39,7 @@ use trigpoly::{Expr, Rational, Var, VarKind};
 /// Why a trajectory could not be computed. Errors compare (`assert_eq!` in a program's tests),
 /// as the engine's do.
 #[derive(Clone, Debug, PartialEq, thiserror::Error)]
+#[non_exhaustive]
 pub enum TrajectoryError {
     /// The engine refused (a limit, say) while forming Hamilton's equations.
     #[error(transparent)]
@@ -624,6 +625,7 @@ fn crossing(
 
 /// States of a flow at increasing times, the first at `t = 0`.
 #[derive(Clone, Debug)]
+#[non_exhaustive]
 pub struct Trajectory {
     /// The times.
     pub times: Vec<f64>,

@@ -87,6 +87,7 @@ pub fn assert_refuted(
             assert_eq!(residual, want, "residual of {identity}");
             residual
         }
+        other => panic!("{identity} was neither proved nor refuted: {other}"),
     }
 }
 

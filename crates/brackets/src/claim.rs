@@ -77,6 +77,7 @@ fn not_real(v: Var, value: &Expr) -> Option<String> {
 /// A level of a [`Condition`] that the flow of `H` does not keep
 /// ([`Condition::left_by_flow`]): on the surface, `{level, H} = rate`, not 0.
 #[derive(Clone, Debug, PartialEq, Eq)]
+#[non_exhaustive]
 pub struct LeftByFlow {
     /// The level, `v` or `v − (value)` (`e^{iθ}` for an angle `θ`), in unicode.
     pub level: String,
@@ -561,6 +562,7 @@ pub struct Claim {
 
 /// What checking a claim found.
 #[derive(Clone, Debug, PartialEq, Eq, Hash)]
+#[non_exhaustive]
 pub enum Outcome {
     /// `lhs − rhs` is exactly zero (after the condition).
     Proved,

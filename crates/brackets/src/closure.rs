@@ -221,6 +221,7 @@ pub fn relation_text(poly: &Expr) -> String {
 /// # Ok::<(), brackets::EngineError>(())
 /// ```
 #[derive(Clone, Debug, PartialEq, Eq)]
+#[non_exhaustive]
 pub struct Relation {
     /// `R(G) = 0`, a polynomial in [`Closure::ring`].
     pub poly: Expr,
@@ -238,6 +239,7 @@ impl std::fmt::Display for Relation {
 
 /// Seconds spent (reported, never used to decide anything).
 #[derive(Clone, Debug, Default)]
+#[non_exhaustive]
 pub struct ClosureTimings {
     /// Expanding the monomials at the fixed values.
     pub monomials: f64,
@@ -251,6 +253,7 @@ pub struct ClosureTimings {
 
 /// The closure of a list of generators.
 #[derive(Clone, Debug)]
+#[non_exhaustive]
 pub struct Closure {
     /// The generators' names, as given.
     pub names: Vec<String>,
@@ -586,6 +589,7 @@ impl Lifting {
 
 /// An expression written as a polynomial in named functions ([`expressed_in`]).
 #[derive(Clone, Debug, PartialEq, Eq)]
+#[non_exhaustive]
 pub struct Expressed {
     /// The polynomial, in [`Expressed::ring`]: the parameters and one symbol per function.
     pub poly: Expr,

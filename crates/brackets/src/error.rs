@@ -4,7 +4,46 @@ use thiserror::Error;
 use trigpoly::{AlgebraError, BracketError, LimitKind, ParseError};
 
 /// Why the bracket engine has no answer.
+///
+/// A new reason is a new variant (as [`EngineError::PastLimit`] was), so a program's `match`
+/// has an arm for the others, which can say the error's message:
+///
+/// ```
+/// use brackets::{systems, EngineError};
+///
+/// fn said(e: &EngineError) -> String {
+///     match e {
+///         EngineError::UnknownName(name) => format!("define {name} first"),
+///         e if e.is_limit() => format!("raise the limit: {e}"),
+///         other => other.to_string(),
+///     }
+/// }
+/// let rotor = systems::harmonic_rotor();
+/// assert_eq!(said(&rotor.get("G3").unwrap_err()), "define G3 first");
+/// let unread = rotor.parse("{L, G3}").unwrap_err();
+/// assert!(said(&unread).starts_with("line 1, column 5: unknown name 'G3'"));
+/// ```
+///
+/// One that names each variant and nothing else does not compile:
+///
+/// ```compile_fail,E0004
+/// fn said(e: &brackets::EngineError) -> String {
+///     use brackets::EngineError::*;
+///     match e {
+///         Algebra(a) => a.to_string(),
+///         Parse { message, .. } => message.clone(),
+///         ClosureTooManyTerms { .. } => "the closure's products are too large".into(),
+///         PastLimit { message, .. } => message.clone(),
+///         UnknownName(name) => format!("define {name} first"),
+///         RefusedCondition { message, .. } => message.clone(),
+///         Invalid(why) => why.clone(),
+///         RefusedKnown { reason, .. } => reason.clone(),
+///         Jacobi(violation) => violation.message.clone(),
+///     }
+/// }
+/// ```
 #[derive(Clone, Debug, PartialEq, Eq, Error)]
+#[non_exhaustive]
 pub enum EngineError {
     /// An algebraic operation failed (a limit, a division by a non-monomial, ...).
     #[error(transparent)]
@@ -114,6 +153,7 @@ pub enum EngineLimit {
 
 /// A triple of phase variables for which declared brackets break the Jacobi identity.
 #[derive(Clone, Debug, PartialEq, Eq)]
+#[non_exhaustive]
 pub struct JacobiViolation {
     /// The triple `a, b, c`.
     pub triple: [trigpoly::Var; 3],

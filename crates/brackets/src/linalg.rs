@@ -13,6 +13,7 @@ pub struct Matrix {
 /// The result of row reduction: the reduced matrix, its pivot columns and the row each pivot
 /// came from in the original matrix.
 #[derive(Clone, Debug)]
+#[non_exhaustive]
 pub struct Reduction {
     /// Reduced row echelon form.
     pub reduced: Matrix,

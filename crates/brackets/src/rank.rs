@@ -18,6 +18,7 @@ use crate::phase::PhaseSpace;
 
 /// Why the rank is at most what is claimed.
 #[derive(Clone, Debug, PartialEq, Eq)]
+#[non_exhaustive]
 pub enum UpperBound {
     /// The rank equals the number of functions or of coordinates.
     Size,
@@ -29,6 +30,42 @@ pub enum UpperBound {
         /// coordinates.
         count: usize,
     },
+}
+
+impl UpperBound {
+    /// The kind of bound as one lowercase word, as superint's JSON reports it: `size` or
+    /// `vanishing_minors`. A program that reads a bound by its name and [`UpperBound::minors`]
+    /// reads every kind, one added later too (the enum is open to new kinds of proof).
+    ///
+    /// ```
+    /// use brackets::{rank, systems, UpperBound};
+    ///
+    /// let rotor = systems::harmonic_rotor();
+    /// let get = |name: &str| rotor.get(name).cloned();
+    /// let tied = [get("F1")?, get("F2")?, get("L")?, get("G1")?, get("G2")?];
+    /// // Five functions of rank 4 in six phase variables: (5 − 4)(6 − 4) bordering minors.
+    /// let tied = rank(rotor.space(), &tied)?;
+    /// assert_eq!((tied.upper.name(), tied.upper.minors()), ("vanishing_minors", Some(2)));
+    /// let one = rank(rotor.space(), &[get("L")?])?;
+    /// assert_eq!((one.upper.name(), one.upper.minors()), ("size", None));
+    /// assert_eq!(UpperBound::Size.name(), "size");
+    /// # Ok::<(), brackets::EngineError>(())
+    /// ```
+    pub fn name(&self) -> &'static str {
+        match self {
+            UpperBound::Size => "size",
+            UpperBound::VanishingMinors { .. } => "vanishing_minors",
+        }
+    }
+
+    /// How many bordering minors were expanded, for [`UpperBound::VanishingMinors`]; `None`
+    /// for a bound that expands none.
+    pub fn minors(&self) -> Option<usize> {
+        match self {
+            UpperBound::Size => None,
+            UpperBound::VanishingMinors { count } => Some(*count),
+        }
+    }
 }
 
 impl std::fmt::Display for UpperBound {
@@ -55,6 +92,7 @@ impl std::fmt::Display for UpperBound {
 /// same point, with the same upper bound: the rank of the same functions twice gives equal
 /// certificates.
 #[derive(Clone, Debug, PartialEq, Eq)]
+#[non_exhaustive]
 pub struct RankCertificate {
     /// The rank.
     pub rank: usize,

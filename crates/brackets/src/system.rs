@@ -9,6 +9,7 @@ use crate::phase::{Gradient, PhaseSpace};
 
 /// A named function of a system (`L`, `G1`, `Z̄`), or a generator of a closure.
 #[derive(Clone, Debug, PartialEq, Eq)]
+#[non_exhaustive]
 pub struct NamedFunction {
     /// The ASCII name used in expressions (`Zbar`).
     pub name: String,

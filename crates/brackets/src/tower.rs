@@ -11,6 +11,7 @@ use crate::system::System;
 
 /// The outcome of the bounded check.
 #[derive(Clone, Debug)]
+#[non_exhaustive]
 pub struct TowerReport {
     /// The bound `N`: every `1 ≤ m, n ≤ N` was checked.
     pub max: i64,
@@ -80,6 +81,7 @@ pub fn check_tower(
 
 /// A fact `{A, H} = λ A` computed by the engine.
 #[derive(Clone, Debug, PartialEq, Eq)]
+#[non_exhaustive]
 pub struct EigenFact {
     /// How the fact reads (`{Z, H} = iωZ`).
     pub statement: String,
@@ -89,6 +91,7 @@ pub struct EigenFact {
 
 /// A proof for all `m, n` by the eigenfunction lemma.
 #[derive(Clone, Debug, PartialEq, Eq)]
+#[non_exhaustive]
 pub struct EigenProof {
     /// The base facts, computed.
     pub facts: Vec<EigenFact>,

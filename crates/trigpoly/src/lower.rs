@@ -79,6 +79,7 @@ pub enum BracketError {
 /// # Ok::<(), Box<dyn std::error::Error>>(())
 /// ```
 #[derive(Clone, Debug, PartialEq, Eq)]
+#[non_exhaustive]
 pub struct RunTogether {
     /// The name as written (`Lxx`).
     pub name: String,
@@ -94,6 +95,7 @@ pub struct RunTogether {
 /// are tried in this order; a split that meets none (`Mω`, `iθ`, `Mωx`, `xp_y`, `iOmega`) is
 /// read without a word.
 #[derive(Clone, Debug, PartialEq, Eq)]
+#[non_exhaustive]
 pub enum Doubt {
     /// A piece before the last is a named function (not a variable) of two characters or
     /// more, whose name the letters after it may continue: `Lxx` as `Lx·x` beside the

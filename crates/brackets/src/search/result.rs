@@ -12,6 +12,7 @@ use super::options::SearchSpace;
 /// with the same degrees and the same proofs: a search is deterministic, so the same search
 /// twice finds equal bases.
 #[derive(Clone, Debug, PartialEq, Eq)]
+#[non_exhaustive]
 pub struct Integral {
     /// The integral at the fixed parameter values, with coprime integer coefficients.
     pub fixed: Expr,
@@ -49,6 +50,7 @@ impl Integral {
 /// where `cos(a − b)` and `p_b` are integrals, `cos 2(a − b) = 2cos²(a − b) − 1` and
 /// `p_b cos(a − b)` are generated; without angles the grade is the degree.
 #[derive(Clone, Debug)]
+#[non_exhaustive]
 pub struct NewIntegrals {
     /// The known integrals used (named functions that are real integrals lying in the space),
     /// each as it prints: a function by its display as the expressions write it (`ω3` of a
@@ -67,6 +69,7 @@ pub struct NewIntegrals {
 /// With parameters kept symbolic, the integrals found form a module over the polynomials in
 /// them: `A·I` is an integral whenever `I` is.
 #[derive(Clone, Debug)]
+#[non_exhaustive]
 pub struct ParameterModule {
     /// The parameters kept symbolic.
     pub parameters: Vec<Var>,
@@ -79,6 +82,7 @@ pub struct ParameterModule {
 
 /// Seconds spent in each stage (reported, never used to decide anything).
 #[derive(Clone, Debug, Default)]
+#[non_exhaustive]
 pub struct SearchTimings {
     /// Building the unknowns and their images `{φ, H}`.
     pub equations: f64,
@@ -94,6 +98,7 @@ pub struct SearchTimings {
 
 /// The result of a search.
 #[derive(Clone, Debug)]
+#[non_exhaustive]
 pub struct SearchResult {
     /// The space searched.
     pub space: SearchSpace,
@@ -262,6 +267,7 @@ impl SearchResult {
 /// variable of the phase space is among them but an angle's momentum or a Poisson variable that
 /// the condition fixes (`p_θ = mIω/n`, `M₃ = 1` where the flow keeps `M₃`), a constant there.
 #[derive(Clone, Debug, PartialEq, Eq)]
+#[non_exhaustive]
 pub struct SpaceVariables {
     /// The coordinates (not the angles), whose total degree is the positions degree.
     pub coordinates: Vec<Var>,

@@ -616,6 +616,7 @@ pub struct ParseRationalError {
 
 /// Which part of a text that is no rational number is wrong.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[non_exhaustive]
 pub enum RationalErrorKind {
     /// The numerator (the whole text, when there is no `/`) is no integer.
     Numerator,

@@ -250,7 +250,37 @@ pub(crate) fn long_name(name: &str) -> Option<(String, usize)> {
 ///     "a name cannot begin or end in '_' or hold '__'"
 /// );
 /// ```
+///
+/// The rule may refuse more kinds of name later, each a new variant, so a program's `match`
+/// has an arm for the others (here the reason in words); one without it does not compile:
+///
+/// ```
+/// use trigpoly::BadName;
+/// fn advice(bad: BadName) -> String {
+///     match bad {
+///         BadName::TooLong => "shorten it".into(),
+///         BadName::Reserved => "choose another name".into(),
+///         other => format!("rename it: {other}"),
+///     }
+/// }
+/// assert_eq!(advice(BadName::TooLong), "shorten it");
+/// assert!(advice(BadName::Malformed).starts_with("rename it: a name is letters, digits"));
+/// ```
+///
+/// ```compile_fail,E0004
+/// use trigpoly::BadName;
+/// fn advice(bad: BadName) -> &'static str {
+///     match bad {
+///         BadName::Malformed => "use letters, digits and '_'",
+///         BadName::TooLong => "shorten it",
+///         BadName::EmptySubscript => "fill the subscript",
+///         BadName::Unwritable(_) => "use letters LaTeX writes",
+///         BadName::Reserved => "choose another name",
+///     }
+/// }
+/// ```
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+#[non_exhaustive]
 pub enum BadName {
     /// Not letters, digits and `_` starting with a letter (or `_`, [`BadName::EmptySubscript`]):
     /// [`is_identifier`] fails.
