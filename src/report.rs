@@ -569,6 +569,7 @@ impl Report {
 
     /// The same report with every section that names no file about `file`: what a command
     /// that ran on one system file reports.
+    #[must_use]
     pub fn about_file(mut self, file: &str) -> Report {
         for s in &mut self.sections {
             s.file.get_or_insert_with(|| file.to_string());

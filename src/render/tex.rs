@@ -161,6 +161,7 @@ impl Names {
     /// `Q_{\theta1;1,2}` (it was `Q_{theta1;1,2}`, t·h·e·t·a), a family's LaTeX
     /// ([`trigpoly::shown_forms`]) with the indices joined to its subscript
     /// ([`trigpoly::with_indices`]).
+    #[must_use]
     pub fn with_families<'a>(mut self, displays: impl IntoIterator<Item = &'a str>) -> Names {
         for display in displays {
             if let Some((text, latex)) = trigpoly::shown_forms(display) {

@@ -275,25 +275,40 @@ impl ClaimResult {
         }
     }
 
-    /// The same result with a timing.
+    /// The same result with a timing. Like the other builders here (`written`, `at`,
+    /// `expecting`, [`TableResult::in_functions`]) it changes nothing in place, so a call whose
+    /// result is dropped is a mistake the compiler names (`unused_must_use`):
+    ///
+    /// ```compile_fail
+    /// #![deny(unused_must_use)]
+    /// use superint::report::ClaimResult;
+    ///
+    /// let claim = ClaimResult::derived("T1", "{K, H} = iωK", true, None);
+    /// claim.clone().timed(0.5);
+    /// assert_eq!(claim.seconds, 0.5);
+    /// ```
+    #[must_use]
     pub fn timed(mut self, seconds: f64) -> Self {
         self.seconds = seconds;
         self
     }
 
     /// The same result with its text as a system file writes it.
+    #[must_use]
     pub fn written(mut self, text: &str) -> Self {
         self.written = Some(text.to_string());
         self
     }
 
     /// The same result under a condition, as printed and as superint reads it back.
+    #[must_use]
     pub fn at(mut self, condition: Option<(String, String)>) -> Self {
         (self.condition, self.condition_ascii) = condition.unzip();
         self
     }
 
     /// The same result with an expectation.
+    #[must_use]
     pub fn expecting(mut self, expect: Expect) -> Self {
         self.expect = expect;
         self
@@ -440,6 +455,7 @@ impl TableResult {
     /// The table with its entries read as polynomials in its functions (a closure's
     /// structure table), each written with the factor its terms share in front,
     /// `(P S − Q R)/(M²ω)`, as a bracket restated in functions is.
+    #[must_use]
     pub fn in_functions(self) -> Self {
         TableResult {
             polynomials_in_functions: true,

@@ -192,6 +192,7 @@ impl Text {
     }
 
     /// The part `range` of this text (byte offsets into `value`), keeping the mapping.
+    #[must_use]
     pub fn slice(&self, range: Range<usize>) -> Text {
         Text {
             value: self.value[range.clone()].to_string(),

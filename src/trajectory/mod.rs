@@ -331,6 +331,7 @@ impl Flow {
     }
 
     /// The same flow, stepped by `method`.
+    #[must_use]
     pub fn with_method(self, method: Method) -> Flow {
         Flow { method, ..self }
     }

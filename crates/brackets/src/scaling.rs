@@ -236,6 +236,7 @@ impl Scaling {
 
     /// The weights of this basis under which every one of `vars` weighs zero: those that
     /// still grade a computation made with these variables fixed to values.
+    #[must_use]
     pub fn with_zero_weights(&self, vars: &[Var]) -> Scaling {
         let columns: Vec<SparseVec<Rational>> = self
             .basis

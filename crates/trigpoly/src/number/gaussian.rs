@@ -39,6 +39,7 @@ impl GaussianInteger {
     }
 
     /// Complex conjugate.
+    #[must_use]
     pub fn conj(&self) -> Self {
         GaussianInteger {
             re: self.re.clone(),
@@ -47,6 +48,7 @@ impl GaussianInteger {
     }
 
     /// `i · self`.
+    #[must_use]
     pub fn mul_i(&self) -> Self {
         GaussianInteger {
             re: -&self.im,
@@ -129,6 +131,7 @@ impl GaussianAcc {
     }
 
     /// The accumulated value.
+    #[must_use]
     pub fn finish(self) -> GaussianInteger {
         GaussianInteger {
             re: self.re.finish(),
@@ -184,6 +187,7 @@ impl GaussianRational {
     }
 
     /// Complex conjugate.
+    #[must_use]
     pub fn conj(&self) -> Self {
         GaussianRational {
             re: self.re.clone(),

@@ -184,6 +184,7 @@ impl Integer {
     }
 
     /// Absolute value.
+    #[must_use]
     pub fn abs(&self) -> Integer {
         if self.is_negative() {
             -self
@@ -199,6 +200,7 @@ impl Integer {
     /// machine words: the running gcd of a polynomial's coefficients is short after the first
     /// few, and `num-bigint`'s gcd shifts the long side one step per bit.
     #[inline]
+    #[must_use]
     pub fn gcd(&self, other: &Integer) -> Integer {
         match (self.small(), other.small()) {
             (Some(a), Some(b)) => Integer::from(binary_gcd(a.unsigned_abs(), b.unsigned_abs())),
@@ -237,6 +239,7 @@ impl Integer {
     }
 
     /// Least common multiple, always `>= 0`.
+    #[must_use]
     pub fn lcm(&self, other: &Integer) -> Integer {
         if self.is_zero() || other.is_zero() {
             return Integer::ZERO;
@@ -250,6 +253,7 @@ impl Integer {
     /// # Panics
     ///
     /// Panics if `d` is zero.
+    #[must_use]
     pub fn div_exact(&self, d: &Integer) -> Integer {
         match (self.small(), d.small()) {
             // Values of 63 bits: the quotient cannot overflow (a zero divisor panics).
@@ -279,6 +283,7 @@ impl Integer {
 
     /// `self^e`. Its cost is that of the result's `e` times the bits of `self`: a `u32`
     /// exponent on a base past one bit can ask for gigabytes.
+    #[must_use]
     pub fn pow(&self, e: u32) -> Integer {
         if let Some(v) = self.small() {
             if let Some(p) = v.checked_pow(e) {
@@ -363,6 +368,7 @@ impl ExactDivisor {
     ///
     /// Panics if the divisor was prepared from zero.
     #[inline]
+    #[must_use]
     pub fn divide(&self, a: &Integer) -> Integer {
         match (a.small(), self.kind) {
             (
@@ -923,6 +929,7 @@ impl IntegerAcc {
 
     /// The accumulated value.
     #[inline]
+    #[must_use]
     pub fn finish(self) -> Integer {
         match self.long {
             Long::Zero => Integer::from_i128(self.small),

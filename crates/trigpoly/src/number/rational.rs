@@ -152,6 +152,7 @@ impl Rational {
 
     /// `self · k`: for word-sized values one gcd, of `k` and the denominator, where a product
     /// of two rationals takes two.
+    #[must_use]
     pub fn mul_integer(&self, k: &Integer) -> Rational {
         if let Repr::Small { num, den } = &self.0 {
             let Some(k) = k.to_i64() else {
@@ -329,6 +330,7 @@ impl Rational {
     }
 
     /// Absolute value.
+    #[must_use]
     pub fn abs(&self) -> Rational {
         if self.is_negative() {
             -self

@@ -50,6 +50,7 @@ impl<C: Coefficient> Poly<C> {
     }
 
     /// `c · self`.
+    #[must_use]
     pub fn scale(&self, c: &C) -> Self {
         let (q, n) = c.split();
         if q.is_zero() || self.is_zero() {
@@ -64,6 +65,7 @@ impl<C: Coefficient> Poly<C> {
     }
 
     /// `q · self` for a rational `q` (a copy; `f * &q` takes `f` and copies nothing).
+    #[must_use]
     pub fn scale_rational(&self, q: &Rational) -> Self {
         self.clone() * q
     }

@@ -10,6 +10,7 @@ use crate::varset::VarKind;
 
 impl<C: Coefficient> Poly<C> {
     /// The complex conjugate: coefficients conjugated, every angle exponent negated.
+    #[must_use]
     pub fn conj(&self) -> Self {
         let layout = self.layout();
         let w = self.words();

@@ -440,6 +440,7 @@ impl Point {
     /// Sets a real value. An angle takes its value as `e^{iθ}`, so only `1` or `−1` (θ = 0
     /// or π; others through [`Point::with_angle`]); any other value for an angle, or a
     /// variable of another set, makes [`Poly::eval`] at the point an error.
+    #[must_use]
     pub fn with(mut self, v: Var, value: Rational) -> Point {
         let Ok(j) = self.vars.checked_index(v) else {
             self.invalid.get_or_insert(AlgebraError::VarSetMismatch);
