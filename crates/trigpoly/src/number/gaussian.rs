@@ -4,6 +4,9 @@ use std::fmt;
 use std::ops::{Add, AddAssign, Div, DivAssign, Mul, MulAssign, Neg, Sub, SubAssign};
 use std::str::FromStr;
 
+use num_bigint::BigInt;
+use num_rational::BigRational;
+
 use super::rational::{fold_traits, forward_binop};
 use super::{Integer, IntegerAcc, Rational};
 use crate::syntax::{ParseError, Span};
@@ -60,6 +63,22 @@ impl GaussianInteger {
 impl From<Integer> for GaussianInteger {
     fn from(re: Integer) -> Self {
         GaussianInteger::new(re, Integer::ZERO)
+    }
+}
+
+/// A big integer, real, in the one form of its value as [`Integer`] takes it.
+///
+/// ```
+/// use trigpoly::num_bigint::BigInt;
+/// use trigpoly::GaussianInteger;
+///
+/// assert_eq!(GaussianInteger::from(BigInt::from(-5)), GaussianInteger::from(-5));
+/// let big = BigInt::from(3).pow(90);
+/// assert_eq!(GaussianInteger::from(big.clone()).re.to_string(), big.to_string());
+/// ```
+impl From<BigInt> for GaussianInteger {
+    fn from(re: BigInt) -> Self {
+        GaussianInteger::from(Integer::from(re))
     }
 }
 
@@ -241,6 +260,57 @@ impl From<Rational> for GaussianRational {
         }
     }
 }
+
+/// A Gaussian integer, as the element of Q(i) it is (Z\[i\] lies in Q(i)): `a + bi` of
+/// integers, each part a rational.
+///
+/// ```
+/// use trigpoly::{GaussianInteger, GaussianRational, Integer, Rational};
+///
+/// let z = GaussianInteger::new(Integer::from(2), Integer::from(-3));
+/// assert_eq!(
+///     GaussianRational::from(z),
+///     GaussianRational::new(Rational::from(2), Rational::from(-3))
+/// );
+/// ```
+impl From<GaussianInteger> for GaussianRational {
+    fn from(z: GaussianInteger) -> Self {
+        GaussianRational::new(Rational::from(z.re), Rational::from(z.im))
+    }
+}
+
+/// `From` for the other real numbers, each a real Gaussian rational as [`Rational`] makes it:
+/// an [`Integer`], a `BigInt` and a `BigRational` (num-rational's), as num-complex's
+/// `Complex` takes its real part.
+macro_rules! from_reals {
+    ($($(#[$doc:meta])* $t:ty),*) => {$(
+        $(#[$doc])*
+        impl From<$t> for GaussianRational {
+            fn from(re: $t) -> Self {
+                GaussianRational::from(Rational::from(re))
+            }
+        }
+    )*};
+}
+
+from_reals!(
+    Integer,
+    BigInt,
+    /// A rational of num-rational, exact, real.
+    ///
+    /// ```
+    /// use trigpoly::num_bigint::BigInt;
+    /// use trigpoly::num_rational::BigRational;
+    /// use trigpoly::{GaussianRational, Integer, Rational};
+    ///
+    /// let half = BigRational::new(BigInt::from(1), BigInt::from(2));
+    /// assert_eq!(GaussianRational::from(half), GaussianRational::from(Rational::new(1, 2)));
+    /// assert_eq!(GaussianRational::from(BigInt::from(7)), GaussianRational::from(7));
+    /// assert_eq!(GaussianRational::from(Integer::from(-4)).to_string(), "-4");
+    /// assert!(GaussianRational::from(BigInt::from(10).pow(40)).is_real());
+    /// ```
+    BigRational
+);
 
 /// `From` for primitive integers, each a real Gaussian rational as [`Rational`] makes it.
 macro_rules! from_integers {

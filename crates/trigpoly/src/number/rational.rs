@@ -541,6 +541,24 @@ impl From<i64> for Rational {
     }
 }
 
+/// A big integer, as num-rational's `BigRational` takes one, in the one form of its value
+/// (in words when it fits them, as [`Integer`] holds it): equal values are equal.
+///
+/// ```
+/// use trigpoly::num_bigint::BigInt;
+/// use trigpoly::Rational;
+///
+/// assert_eq!(Rational::from(BigInt::from(-6)), Rational::from(-6));
+/// let big = BigInt::from(10).pow(30);
+/// assert_eq!(Rational::from(big.clone()).to_string(), big.to_string());
+/// assert_eq!(Rational::from(big).denom(), 1.into());
+/// ```
+impl From<BigInt> for Rational {
+    fn from(v: BigInt) -> Self {
+        Rational::from(Integer::from(v))
+    }
+}
+
 /// `From` for the other primitive integers, each by way of the [`Integer`] it makes, which holds
 /// a value that fits a word in the word as `From<i64>` does.
 macro_rules! from_integers {

@@ -156,6 +156,33 @@ impl Poly<Rational> {
     }
 }
 
+/// A polynomial over Q as the same one over Q(i), in the same variable set
+/// ([`Poly::to_gaussian`]): Q lies in Q(i), so every one converts, as a `Rational` into a
+/// `GaussianRational`.
+///
+/// ```
+/// use trigpoly::{Expr, Poly, Rational, Vars};
+///
+/// let vars = Vars::builder().coordinate("x").momentum("p_x").build()?;
+/// let over_q = Poly::<Rational>::parse(&vars, "p_x^2/2 + x/3")?;
+/// assert_eq!(Expr::from(&over_q), Expr::parse(&vars, "p_x^2/2 + x/3")?);
+/// assert_eq!(Expr::from(over_q.clone()), over_q.to_gaussian());
+/// assert_eq!(Expr::from(over_q).vars(), &vars);
+/// # Ok::<(), Box<dyn std::error::Error>>(())
+/// ```
+impl From<&Poly<Rational>> for Poly<GaussianRational> {
+    fn from(p: &Poly<Rational>) -> Self {
+        p.to_gaussian()
+    }
+}
+
+/// As `From<&Poly<Rational>>`, taking the polynomial.
+impl From<Poly<Rational>> for Poly<GaussianRational> {
+    fn from(p: Poly<Rational>) -> Self {
+        p.to_gaussian()
+    }
+}
+
 impl Poly<GaussianRational> {
     /// The same polynomial over Q, if it has no angle and every coefficient is real.
     pub fn to_rational(&self) -> Option<Poly<Rational>> {

@@ -141,7 +141,28 @@ impl<C: Coefficient> Poly<C> {
         Self::constant(vars, C::one())
     }
 
-    /// A constant.
+    /// A constant of the variable set `vars`. A polynomial carries its set, so a number alone
+    /// makes none (`Poly` has no `From<i64>`, `From<BigInt>` or `From<Rational>`, as
+    /// num-rational's `Ratio` has): a constant is made in its set, here (or by [`Poly::zero`]
+    /// and [`Poly::one`]), from a coefficient that each of those numbers converts into
+    /// (`2.into()`), over Q and Q(i) alike.
+    ///
+    /// ```
+    /// use trigpoly::num_bigint::BigInt;
+    /// use trigpoly::{Expr, GaussianRational, Integer, Poly, Rational, Vars};
+    ///
+    /// let vars = Vars::builder().coordinate("x").parameter("M").build()?;
+    /// let p = |s: &str| Expr::parse(&vars, s);
+    /// assert_eq!(Expr::constant(&vars, 2.into()) + p("x")?, p("x + 2")?);
+    /// assert_eq!(Expr::constant(&vars, Rational::new(-1, 2).into()), p("-1/2")?);
+    /// assert_eq!(Expr::constant(&vars, Integer::from(7).into()), p("7")?);
+    /// assert_eq!(Expr::constant(&vars, GaussianRational::i()), p("i")?);
+    /// let big = BigInt::from(10).pow(30);
+    /// let over_q = Poly::<Rational>::constant(&vars, big.clone().into());
+    /// assert_eq!(over_q.as_constant(), Some(Rational::from(big)));
+    /// assert!(Expr::constant(&vars, 0.into()).is_zero());
+    /// # Ok::<(), Box<dyn std::error::Error>>(())
+    /// ```
     pub fn constant(vars: &Vars, c: C) -> Self {
         let (content, n) = c.split();
         if content.is_zero() {
