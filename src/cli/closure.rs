@@ -39,7 +39,10 @@ Each bracket is written as a polynomial of degree ≤ D in the generators where 
 degree ≤ D is listed (none a combination of those before it times polynomials in the
 generators and, with --symbolic, in the parameters); each is checked by expanding it. On a system with denominators every
 vector is multiplied by one common power of each and cleared of them first, so that the
-monomials the linear algebra compares are independent.";
+monomials the linear algebra compares are independent. With --when, each bracket is formed
+from the generators on the whole phase space and then set on the condition, and written in
+the generators set there: a condition such as p_theta = I*omega sets a variable of the phase
+space, along which a bracket differentiates, so it cannot be applied first.";
 
 /// Arguments of `superint closure`.
 #[derive(Debug, Args)]
@@ -56,8 +59,11 @@ pub struct ClosureArgs {
           value_name = "D", default_value_t = 2,
           value_parser = super::in_range::<u32>(0, 64))]
     degree: u32,
-    /// The condition applied to the generators and after each bracket, such as
-    /// 'p_theta = I*omega'.
+    /// A condition, such as 'p_theta = I*omega', where the brackets and relations hold. Each
+    /// bracket is formed from the generators on the whole phase space and only then set on
+    /// it (p_θ is a variable of the phase space, along which a bracket differentiates, so it
+    /// cannot be set to a constant first), and written in the generators set there: F2,
+    /// the constant ω²I/2 at p_θ = Iω, may still have brackets that are not zero.
     #[arg(long, value_name = "CONDITION")]
     when: Option<String>,
     /// Parameter values for the linear algebra, such as omega=1,M=2/3 or M=0.5 (a decimal is

@@ -6,7 +6,7 @@ use std::time::Instant;
 
 use brackets::closure::{closure_of, relation_text, Bracket, Closure, ClosureOptions};
 use brackets::{EngineError, NamedFunction, System};
-use trigpoly::Style;
+use trigpoly::{Style, VarKind};
 
 use crate::report::{
     counted, listed, written_in_functions, ClaimResult, ClosureFacts, Entry, Equation, Equations,
@@ -226,6 +226,7 @@ impl Structure<'_> {
     /// each bracket proved, and the facts for JSON. `gens` names the generators.
     fn section(&self, gens: &str) -> Result<Section, EngineError> {
         let mut entries = vec![self.method_text(gens)];
+        entries.extend(self.condition_text());
         entries.extend(symbolic_text(self.system, self.options));
         entries.extend(symbols_text(self.c));
         entries.push(self.table());
@@ -288,6 +289,36 @@ impl Structure<'_> {
             counted(c.monomials, "monomial"),
             c.rank,
         ))
+    }
+
+    /// Under a condition that sets a variable of the phase space (`p_θ = Iω`), how it is
+    /// applied: each bracket is formed from the generators on the whole phase space and only
+    /// then set on the condition, and written in the generators set there. A bracket
+    /// differentiates along that variable, so it cannot be set to a constant first: at
+    /// `p_θ = Iω` of the 3:5 rotor `F2 = ω²I/2` is a constant, and `{F2, J1} = −3ω J2` all
+    /// the same. A condition on the parameters alone (`a = 2b`) commutes with the bracket
+    /// and gets no note.
+    fn condition_text(&self) -> Option<Entry> {
+        let condition = self.options.condition.as_ref()?;
+        let vars = self.system.vars();
+        let set: Vec<String> = condition
+            .subs()
+            .iter()
+            .filter(|(v, _)| vars.variable(*v).kind() != VarKind::Parameter)
+            .map(|(v, _)| format!("`{}`", vars.variable(*v).unicode()))
+            .collect();
+        if set.is_empty() {
+            return None;
+        }
+        let at = &condition.text;
+        Some(Entry::Text(format!(
+            "{} {} of the phase space, along which a bracket differentiates: each bracket \
+             is formed from the generators on the whole phase space and only then set at \
+             `{at}`, and written in the generators set there, so a generator that is a \
+             constant at `{at}` may still have brackets that are not zero.",
+            listed(&set),
+            agreeing(set.len(), "is a variable", "are variables"),
+        )))
     }
 
     /// The structure table, titled with where it holds: at the fixed values too when some

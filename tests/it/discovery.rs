@@ -11,7 +11,7 @@ use superint::system_file::{load, load_str, LimitsOverride};
 use trigpoly::{Expr, Rational};
 
 use crate::{
-    normalize, superint, superint_ok_line, superint_refused, words, DEGREE_ONE,
+    normalize, superint, superint_ok, superint_ok_line, superint_refused, words, DEGREE_ONE,
     DEGREE_ONE_TRIG_ZERO,
 };
 
@@ -1042,6 +1042,55 @@ fn anisotropic_3_5_c26() {
     let j5 = j.checked_pow(5).unwrap();
     let y3 = ybar.checked_pow(3).unwrap();
     assert_eq!(j5.checked_mul(&y3).unwrap(), parse("A"));
+}
+
+/// A closure at `p_θ = Iω` brackets the generators on the whole phase space and sets `p_θ`
+/// after: `F2 = p_θ²/(2I)` is the constant `ω²I/2` there and `{F2, J1} = −3ω J2` all the
+/// same (set first, `F2` would have no bracket at all), and the report says so under its
+/// method, in every prose format; a condition on the parameters alone (`b = 0`), which
+/// commutes with the bracket, gets no such note; and `closure --help` says it too.
+#[test]
+fn a_closure_on_a_phase_variable_says_each_bracket_is_set_after_it_is_formed() {
+    let note = "`p_θ` is a variable of the phase space, along which a bracket differentiates: \
+                each bracket is formed from the generators on the whole phase space and only \
+                then set at `p_θ = Iω`, and written in the generators set there, so a \
+                generator that is a constant at `p_θ = Iω` may still have brackets that are \
+                not zero.";
+    let text = expect(
+        "a35-closure",
+        &[
+            &note.replace('`', ""),
+            "F2 = ω²I/2 at p_θ = Iω [R1 proved]",
+            "{F2, J1} = −3ω J2 at p_θ = Iω [B5 proved]",
+        ],
+    );
+    // Under the method's paragraph, before the table.
+    let at = text.find("p_θ is a variable of the phase space");
+    assert!(
+        at.is_some_and(|k| k < text.find("{F, G}").unwrap()),
+        "{text}"
+    );
+    let command = COMMANDS.iter().find(|c| c.0 == "a35-closure").unwrap().1;
+    let args = words(command);
+    let mut args: Vec<&str> = args[1..].iter().map(String::as_str).collect();
+    args.extend(["--no-timings", "--format", "markdown"]);
+    let markdown = normalize(&superint_ok(&args));
+    assert!(markdown.contains(&normalize(note)), "{markdown}");
+    let landau = run("fd-closure-landau");
+    assert!(
+        !landau.contains("along which a bracket differentiates"),
+        "{landau}"
+    );
+    let help = normalize(&superint_ok(&["closure", "--help"]));
+    for piece in [
+        "Each bracket is formed from the generators on the whole phase space and only then \
+         set on it (p_θ is a variable of the phase space, along which a bracket \
+         differentiates, so it cannot be set to a constant first)",
+        "With --when, each bracket is formed from the generators on the whole phase space and \
+         then set on the condition",
+    ] {
+        assert!(help.contains(&normalize(piece)), "{help}");
+    }
 }
 
 /// The 3:5 rotor's `K` and `A` at the resonance: at degree 6 three relations, the third

@@ -9,8 +9,11 @@
 //! expanded at fixed parameter values (modulo a 62-bit prime, reconstructed, checked exactly);
 //! coefficients are then lifted to Laurent monomials in the parameters by homogeneity
 //! ([`crate::scaling`]) and every bracket and relation is checked by expanding it symbolically.
-//! A condition such as a resonance is applied to the generators and to each bracket after it
-//! is formed, so the identities hold on the condition's surface.
+//! A condition such as a resonance is applied to each bracket after it is formed from the
+//! generators on the whole phase space, and to the generators the bracket is written in, so
+//! the identities hold on the condition's surface. A condition that sets a phase variable
+//! (`p_θ = Iω`) cannot be applied first: a bracket differentiates along that variable, so a
+//! generator constant on the surface (`F2 = Iω²/2`) may still have brackets that are not zero.
 //!
 //! With denominator atoms (`v` standing for a polynomial `D`, `v^{−k} = 1/D^k`) the monomials
 //! are not independent (`v · D = 1`), so the linear algebra runs on the images of every column
@@ -81,7 +84,8 @@ use span::Span;
 pub struct ClosureOptions {
     /// The largest degree of the polynomials in the generators.
     pub degree: u32,
-    /// The condition (a resonance), applied to generators and brackets.
+    /// The condition (a resonance): applied to each bracket after it is formed from the
+    /// generators on the whole phase space, and to the generators it is written in.
     pub condition: Option<Condition>,
     /// Parameter values for the linear algebra (every other parameter is fixed to 1).
     pub fixed: Vec<(Var, Rational)>,
