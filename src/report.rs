@@ -254,6 +254,10 @@ pub struct SearchFacts {
     pub for_every_value: usize,
     /// The ids of the integrals shown as claims (`I1`, …).
     pub shown: Vec<String>,
+    /// With parameters kept symbolic, the labels of the basis integrals that generate all of
+    /// them over the polynomials in those parameters (`I1`, `I3`, …), shown or not; `None`
+    /// without symbolic parameters.
+    pub generators: Option<Vec<String>>,
     /// With `--new-only`: the known integrals, the products formed, and the dimension they
     /// generate.
     pub new_only: Option<brackets::search::NewIntegrals>,

@@ -9,8 +9,8 @@ use brackets::{EngineError, System};
 use trigpoly::{Expr, GaussianRational, Rational, Style, Var, VarKind, Vars};
 
 use crate::report::{
-    counted, first_free, ClaimResult, Entry, Equation, Equations, Facts, Report, SearchFacts,
-    Section, SummaryKind,
+    counted, first_free, listed, ClaimResult, Entry, Equation, Equations, Facts, Report,
+    SearchFacts, Section, SummaryKind,
 };
 
 use crate::system_file::{Caller, LoadedSystem};
@@ -832,6 +832,8 @@ impl Shared {
             poisson_counts: r.poisson_counts(),
             for_every_value,
             shown: self.shown.iter().map(|&i| self.label(i)).collect(),
+            generators: (r.module.as_ref())
+                .map(|m| m.generators.iter().map(|&i| self.label(i)).collect()),
             new_only: r.new.clone(),
         })))
     }
@@ -877,12 +879,17 @@ impl Shared {
         })
     }
 
-    /// With parameters kept symbolic, how many of the basis integrals generate all of them
-    /// over the polynomials in the parameters, and what is shown below.
+    /// With parameters kept symbolic, which of the basis integrals generate all of them over
+    /// the polynomials in the parameters, by their labels (`I1`, `I3`), and what is shown
+    /// below: with `--new-only` the new integrals, not these, so the labels are all that
+    /// names them.
     fn generators_note(&self, r: &SearchResult) -> Option<Entry> {
         let (Some(m), Some(names)) = (&r.module, &self.symbolic) else {
             return None;
         };
+        let labels: Vec<String> = (m.generators.iter())
+            .map(|&i| format!("`{}`", self.label(i)))
+            .collect();
         // An integral is generated too where a monomial multiple of it is: `K/ω²` where `K`
         // is (the example names the first parameter).
         let first = names.split(", ").next().unwrap_or(names);
@@ -897,10 +904,11 @@ impl Shared {
             "Shown: the generators.".to_string()
         };
         Some(Entry::Text(format!(
-            "Over the polynomials in `{names}`, {} of the {} {} all of them: each of the \
-             others is a sum of parameter multiples of integrals. {shown_text}",
+            "Over the polynomials in `{names}`, {} of the {}, {}, {} all of them: each of \
+             the others is a sum of parameter multiples of integrals. {shown_text}",
             m.generators.len(),
             counted(r.basis.len(), "basis integral"),
+            listed(&labels),
             agreeing(m.generators.len(), "generates", "generate"),
         )))
     }

@@ -528,6 +528,7 @@ fn search(f: &SearchFacts, section: u32) -> Value {
         "poisson_counts": f.poisson_counts,
         "for_every_value": f.for_every_value,
         "shown": f.shown,
+        "generators": f.generators,
         "new_only": f.new_only.as_ref().map(|n| json!({
             "known": n.known,
             "products": n.products,

@@ -11,8 +11,8 @@ use superint::system_file::{load, load_str, LimitsOverride};
 use trigpoly::{Expr, Rational};
 
 use crate::{
-    normalize, superint, superint_ok, superint_ok_line, superint_refused, words, DEGREE_ONE,
-    DEGREE_ONE_TRIG_ZERO,
+    normalize, superint, superint_json, superint_ok, superint_ok_line, superint_refused, words,
+    DEGREE_ONE, DEGREE_ONE_TRIG_ZERO,
 };
 
 /// Every command of `docs/results.md`, by name.
@@ -694,7 +694,7 @@ fn euler_top_casimir_and_energy() {
     expect(
         "euler-symbolic",
         &[
-            "Over the polynomials in I1, I2, I3, 3 of the 21 basis integrals generate all of them",
+            "Over the polynomials in I1, I2, I3, 3 of the 21 basis integrals, J1, J11 and J15, generate all of them",
             "J11 = M1² + M2² + M3²",
             "J15 = I1 I3 M2² − I2 I3 M2² + I1 I2 M3² − I2 I3 M3²",
         ],
@@ -1196,7 +1196,7 @@ fn henon_heiles_kdv_integral_for_every_a_and_b() {
             "The space: x^a y^b p_x^c p_y^d, with momenta degree c + d ≤ 2, positions degree \
              |a| + |b| ≤ 4, coefficients polynomials of degree ≤ 2 in A, B: 540 unknowns",
             "Momenta degree exactly 2: 4.",
-            "Over the polynomials in A, B, 3 of the 10 basis integrals generate all of them",
+            "Over the polynomials in A, B, 3 of the 10 basis integrals, I1, I7 and I10, generate all of them",
             "I7 = p_x² + p_y² + 2x²y + Ax² + 4y³ + By²",
             "I10 = 4x p_x p_y − 4y p_x² − 4A p_y² + B p_y² + x⁴ + 4x²y² − 4Ax²y + 2Bx²y − \
              16Ay³ + 4By³ − 4ABy² + B²y²",
@@ -1235,7 +1235,7 @@ fn henon_heiles_with_c_symbolic_has_only_the_energy() {
     expect(
         "hh-generic",
         &[
-            "Over the polynomials in A, B, C, 2 of the 14 basis integrals generate all of them",
+            "Over the polynomials in A, B, C, 2 of the 14 basis integrals, I1 and I11, generate all of them",
             "I1 = 1",
             "I11 = p_x² + p_y² + 2x²y + Ax² + 2Cy³ + By²",
             "3 claims: 3 proved, 0 refuted",
@@ -1555,7 +1555,7 @@ fn henon_heiles_separable_and_quartic_cases_for_every_a() {
     prints(
         "hh-separable",
         &[
-            "Over the polynomials in A, 3 of the 7 basis integrals generate all of them",
+            "Over the polynomials in A, 3 of the 7 basis integrals, I1, I4 and I5, generate all of them",
             "{I4, H} = 0 at B = A, C = 1/3",
         ],
         "I4",
@@ -1564,7 +1564,7 @@ fn henon_heiles_separable_and_quartic_cases_for_every_a() {
     prints(
         "hh-quartic",
         &[
-            "Over the polynomials in A, 4 of the 7 basis integrals generate all of them",
+            "Over the polynomials in A, 4 of the 7 basis integrals, I1, I4, I6 and I7, generate all of them",
             "{I6, H} = 0 at B = 16A, C = 16/3",
         ],
         "I6",
@@ -1578,6 +1578,60 @@ fn henon_heiles_separable_and_quartic_cases_for_every_a() {
             "None: the known integrals generate every integral in the space.",
         ],
     );
+}
+
+/// A search with parameters kept symbolic says which of the basis integrals generate all of
+/// them, by their labels, in every format and in JSON's `generators`: with `--new-only` too,
+/// which shows none of them, the labels are those of the generators the same search without
+/// it shows (`I1, I4, I6 and I7` of the quartic Hénon–Heiles case); a search with none kept
+/// symbolic has `"generators": null`.
+#[test]
+fn a_symbolic_search_names_the_integrals_that_generate_the_others() {
+    let labels = ["I1", "I4", "I6", "I7"];
+    let command = |name: &str| {
+        let c = COMMANDS.iter().find(|c| c.0 == name).unwrap().1;
+        let mut args: Vec<String> = words(c).into_iter().skip(1).collect();
+        args.push("--no-timings".into());
+        args
+    };
+    let shown = |args: &[String], format: &str| {
+        let mut args: Vec<&str> = args.iter().map(String::as_str).collect();
+        args.extend(["--format", format]);
+        normalize(&superint_ok(&args))
+    };
+    let all = command("hh-quartic");
+    let new_only = command("hh-quartic-new");
+    for args in [&all, &new_only] {
+        let refs: Vec<&str> = args.iter().map(String::as_str).collect();
+        let json = superint_json(&refs);
+        let search = &json["searches"][0];
+        assert_eq!(search["generators"], serde_json::json!(labels), "{search}");
+        let shown_ids = match args == &all {
+            true => serde_json::json!(labels),
+            false => serde_json::json!([]),
+        };
+        assert_eq!(search["shown"], shown_ids, "{search}");
+        for (format, names) in [
+            ("text", "I1, I4, I6 and I7"),
+            ("markdown", "`I1`, `I4`, `I6` and `I7`"),
+            ("latex", "$I_{1}$, $I_{4}$, $I_{6}$ and $I_{7}$"),
+        ] {
+            let out = shown(args, format);
+            let said = format!("4 of the 7 basis integrals, {names}, generate all of them");
+            assert!(out.contains(&said), "{format}: {out}");
+        }
+    }
+    let plain = superint_json(&[
+        "search",
+        "systems/harmonic-rotor.toml",
+        "--momenta-degree",
+        "1",
+        "--positions-degree",
+        "1",
+        "--trig-degree",
+        "0",
+    ]);
+    assert_eq!(plain["searches"][0]["generators"], serde_json::Value::Null);
 }
 
 /// The Kepler problem in polar coordinates: the search finds the Laplace–Runge–Lenz vector
@@ -3390,7 +3444,7 @@ fn two_centres_search_keeps_the_radicands_parameter_symbolic() {
         &[
             "Parameters kept symbolic: a, k, m.",
             "By degree in the momenta: ≤ 0: 20, ≤ 1: 40, ≤ 2: 77.",
-            "Over the polynomials in a, k, m, 5 of the 77 basis integrals generate all of them",
+            "Over the polynomials in a, k, m, 5 of the 77 basis integrals, I1, I21, I41, I54 and I55, generate all of them",
             "Known integrals in the space: H, L_x, G.",
             "(10 products formed)",
             "None: the known integrals generate every integral in the space.",
@@ -5491,7 +5545,7 @@ fn fd_rotor_resonant_integrals_found_and_their_algebra() {
             "17500 unknowns",
             "Dimension of the space of integrals over Q (a parameter's multiple of an integral \
              counts apart from it): 206.",
-            "Over the polynomials in M, ω₊, ω₋, 16 of the 206 basis integrals generate all of them",
+            "Over the polynomials in M, ω₊, ω₋, 16 of the 206 basis integrals, Φ1, Φ36, Φ71,",
             "the generated ones span 204 of the 206 dimensions",
             "(2 p_x + M ω₊ y + M ω₋ y) cos θ + (−2 p_y + M ω₊ x + M ω₋ x) sin θ = 2 R_{1,1}",
             "= −2 S_{1,1}",
@@ -5748,7 +5802,7 @@ fn iso3_rotor_resonant_integrals_found_and_their_algebra() {
             "52500 unknowns",
             "Dimension of the space of integrals over Q (a parameter's multiple of an integral \
              counts apart from it): 552.",
-            "Over the polynomials in M, ω, 62 of the 552 basis integrals generate all of them",
+            "Over the polynomials in M, ω, 62 of the 552 basis integrals, Φ1, Φ16, Φ31,",
             "the generated ones span the whole space (552 dimensions)",
             "None: the known integrals generate every integral in the space.",
         ],
