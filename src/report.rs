@@ -401,6 +401,17 @@ pub(crate) fn restated(
 /// `−(2ω − 3Ω) Q_{2,3}` for `−2ω Q_{2,3} + 3Ω Q_{2,3}`, where the factor has a function or a
 /// parameter in it and what is left is short ([`Factored::render_functions_last`]); else term
 /// by term (a number alone in front, `8(32ω²αβ H_x + …)`, says little about an algebra).
+///
+/// The factor is what every term shares, a number times a monomial in the parameters and the
+/// functions ([`Expr::factored`]); no factor of several terms is looked for. So one bracket may
+/// read two ways in two closures, each by this one rule and each right: the 3:5 rotor's
+/// `{Re A, Im A}` is `1920M⁸ω(3 H_x − 5 H_y) H_x⁴ H_y²` among `H_x, H_y, Re A, Im A`, and at
+/// `p_θ = Iω` among `H_x, H_y, Re K, Im K, Re A, Im A` it is
+/// `30M²ω(3 H_x (Re K)⁴ + 6 H_x (Re K)² (Im K)² + … − 5 H_y (Im K)⁴)`. There
+/// `8M³ H_x² H_y = |K|²`, the generators' polynomials write the bracket in many ways, and the
+/// closure writes the one its linear algebra finds, through `K` (at degree 6 the first form,
+/// whose `H_x⁵ H_y²` is of degree 7, is out of reach), whose terms share `30M²ω` alone: what
+/// else they share, `(3 H_x − 5 H_y)((Re K)² + (Im K)²)²`, is no monomial.
 pub(crate) fn written_in_functions(e: &Expr, style: Style) -> String {
     match factored_in_functions(e) {
         Some(f) => f.render_functions_last(style),

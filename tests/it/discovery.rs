@@ -1093,6 +1093,56 @@ fn a_closure_on_a_phase_variable_says_each_bracket_is_set_after_it_is_formed() {
     }
 }
 
+/// The 3:5 rotor's `{Re A, Im A}` reads two ways in the two closures of results.md §3, by one
+/// rule (what every term shares in front, a number times a monomial): `1920M⁸ω(3 H_x −
+/// 5 H_y) H_x⁴ H_y²` among `H_x, H_y, Re A, Im A`, and through `K`, with `30M²ω` alone in
+/// front, at the resonance. Both are the bracket (the second there, where it is
+/// `30M²ω(3 H_x − 5 H_y)|K|⁴`, as results.md restates it), and results.md quotes each as the
+/// command prints it.
+#[test]
+fn the_3_5_rotors_re_a_im_a_reads_two_ways_by_one_rule() {
+    let planar = "{Re A, Im A} = 1920M⁸ω(3 H_x − 5 H_y) H_x⁴ H_y²";
+    let resonant = "{Re A, Im A} = 30M²ω(3 H_x (Re K)⁴ + 6 H_x (Re K)² (Im K)² + 3 H_x (Im K)⁴ \
+                    − 5 H_y (Re K)⁴ − 10 H_y (Re K)² (Im K)² − 5 H_y (Im K)⁴)";
+    let planar_run = normalize(&superint_ok_line(
+        "closure systems/anisotropic-3-5-rotor.toml Hx Hy ReA ImA --degree 8 --no-timings",
+    ));
+    assert!(
+        planar_run.contains(&format!("{planar} [B5 proved]")),
+        "{planar_run}"
+    );
+    expect(
+        "a35-k-and-a",
+        &[&format!("{resonant} at p_θ = Iω [B10 proved]")],
+    );
+    let file = system_file("anisotropic-3-5-rotor.toml");
+    let at = file.condition("p_theta = I*omega").expect("a condition");
+    let system = file.system();
+    crate::assert_proved(
+        system,
+        "{ReA, ImA} = 1920*M^8*omega*(3*Hx - 5*Hy)*Hx^4*Hy^2",
+        None,
+    );
+    let k4 = "(ReK^2 + ImK^2)^2";
+    for form in [
+        "30*M^2*omega*(3*Hx*ReK^4 + 6*Hx*ReK^2*ImK^2 + 3*Hx*ImK^4 - 5*Hy*ReK^4 \
+         - 10*Hy*ReK^2*ImK^2 - 5*Hy*ImK^4)"
+            .to_string(),
+        format!("30*M^2*omega*(3*Hx - 5*Hy)*{k4}"),
+    ] {
+        crate::assert_proved(system, &format!("{{ReA, ImA}} = {form}"), Some(&at));
+    }
+    let note = std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/docs/results.md"))
+        .expect("docs/results.md exists");
+    let note = normalize(&note.replace('`', ""));
+    for printed in [planar, resonant] {
+        assert!(
+            note.contains(&normalize(printed)),
+            "results.md lacks {printed}"
+        );
+    }
+}
+
 /// The 3:5 rotor's `K` and `A` at the resonance: at degree 6 three relations, the third
 /// `2M H_x |A|² = |K|⁶`; at degree 7 it is `|K|⁴ R1 − 2M³ H_x R2`, through multiples of
 /// degree 7, and only the first two are listed, not the third's multiples by each generator
