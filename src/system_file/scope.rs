@@ -366,7 +366,14 @@ pub(crate) fn substitute(
 pub(crate) enum Limit {
     /// The work limit, of term products (`max_term_products`).
     Work,
-    /// The term or degree limit (`max_terms`, `max_degree`), which a larger one may reach.
+    /// The term limit (`max_terms`), of a result, of its printing, of a closure's products
+    /// together or of a search space's unknowns, which a larger one may reach.
+    Terms,
+    /// The degree limit (`max_degree`), of an exponent or an angle's order, which a larger one
+    /// may reach.
+    Degree,
+    /// A limit of the ring this crate does not know yet, which a larger term or degree limit
+    /// may reach.
     Size,
     /// An exponent or order past the most that `max_degree` may be set to, which no limit
     /// reaches.
@@ -385,7 +392,7 @@ impl Limit {
     fn of_kind(kind: LimitKind) -> Limit {
         match kind {
             LimitKind::Work => Limit::Work,
-            LimitKind::Terms => Limit::Size,
+            LimitKind::Terms => Limit::Terms,
             LimitKind::Degree(n) => Limit::of_degree(n),
             LimitKind::Memory => Limit::Memory,
             // A kind of limit this crate does not know yet: one that a larger limit may reach.
@@ -417,13 +424,15 @@ impl Limit {
     fn of_degree(power: u64) -> Limit {
         match power > u64::from(MAX_DEGREE_CEILING) {
             true => Limit::PastEvery,
-            false => Limit::Size,
+            false => Limit::Degree,
         }
     }
 
-    /// The hint that goes with the limit: the work limit's, or the size limits', or, for an
-    /// exponent past the most that `max_degree` may be, that no limit reaches it; none for a
-    /// limit of the options, whose message names the option that raises it.
+    /// The hint that goes with the limit, naming the setting that raises it: the work
+    /// limit's, the term limit's (`max_terms` alone: a larger `max_degree` lets no more terms
+    /// through, nor a search space of more unknowns), the degree limit's, or, for an exponent
+    /// past the most that `max_degree` may be, that no limit reaches it; none for a limit of
+    /// the options, whose message names the option that raises it.
     pub(crate) fn hint(self) -> Option<String> {
         Some(match self {
             Limit::OfOptions => return None,
@@ -437,6 +446,14 @@ impl Limit {
             Limit::Work => "if the machine has the time, raise the limit with max_term_products \
                             under [limits] in the file (on the command line, --max-term-products \
                             N; in a program, the LimitsOverride given to the loader)"
+                .to_string(),
+            Limit::Terms => "if the machine has the memory, raise the limit with max_terms \
+                             under [limits] in the file (on the command line, --max-terms N; \
+                             in a program, the LimitsOverride given to the loader)"
+                .to_string(),
+            Limit::Degree => "if the machine has the memory, raise the limit with max_degree \
+                              under [limits] in the file (on the command line, --max-degree D; \
+                              in a program, the LimitsOverride given to the loader)"
                 .to_string(),
             Limit::Size => "if the machine has the memory, raise the limit with max_terms or \
                             max_degree under [limits] in the file (on the command line, \
@@ -1170,7 +1187,7 @@ mod tests {
         let written = |power: Option<u64>| ParseCause::PowerPastLimit { power, limit: 1000 };
         let limit_hint = |cause: ParseCause| Limit::of_parse(&cause).and_then(Limit::hint).unwrap();
         let raise = limit_hint(written(Some(5000)));
-        assert!(raise.contains("raise the limit with max_terms or max_degree"));
+        assert!(raise.contains("raise the limit with max_degree under [limits]"));
         // 32768, 99999999999999999999 (no 64-bit number), -9223372036854775808.
         for power in [Some(32768), None, Some(9_223_372_036_854_775_808)] {
             let hint = limit_hint(written(power));

@@ -1440,6 +1440,51 @@ fn a_jacobi_check_stopped_at_a_limit_is_a_limit() {
     assert!(err.message.contains("break the Jacobi identity"), "{err}");
 }
 
+/// A limit's hint names the setting that raises it and no other. A search of a file's space
+/// of more unknowns than the term limit, reaching a program through `?` as a `FileError`, is
+/// raised by `max_terms` alone (a larger `max_degree` leaves the same error), and its hint
+/// named `max_degree` too; an exponent past the degree limit is raised by `max_degree` alone.
+#[test]
+fn a_limits_hint_names_the_setting_that_raises_it() {
+    fn search(limits: &LimitsOverride) -> Result<usize, FileError> {
+        let rotor = load_system_file("systems/harmonic-rotor.toml", limits)?;
+        let space = SearchSpace::default()
+            .momenta_degree(4)
+            .positions_degree(4)
+            .trig_degree(4);
+        let options = SearchOptions::new(space);
+        let (_, found) = file_search_report(&rotor, &options, Caller::Program)?;
+        Ok(found.basis.len())
+    }
+    let terms = "if the machine has the memory, raise the limit with max_terms under [limits] \
+                 in the file (on the command line, --max-terms N; in a program, the \
+                 LimitsOverride given to the loader)";
+    for limits in [
+        LimitsOverride::default().max_terms(100),
+        LimitsOverride::default().max_terms(100).max_degree(4000),
+    ] {
+        let err = search(&limits).unwrap_err();
+        assert_eq!(err.kind, ErrorKind::Limit, "{err}");
+        assert!(
+            (err.message).contains("the space has 4725 unknowns, more than the term limit 100"),
+            "{err}"
+        );
+        assert_eq!(err.hint.as_deref(), Some(terms), "{err}");
+    }
+    let rotor = systems::harmonic_rotor();
+    let err = FileError::from(rotor.parse("x^5000").unwrap_err());
+    assert_eq!(err.kind, ErrorKind::Limit, "{err}");
+    assert_eq!(
+        err.hint.as_deref(),
+        Some(
+            "if the machine has the memory, raise the limit with max_degree under [limits] in \
+             the file (on the command line, --max-degree D; in a program, the LimitsOverride \
+             given to the loader)"
+        ),
+        "{err}"
+    );
+}
+
 /// A function added in code is checked against the names as they print, as a file's is: a
 /// name the printer would write for a product of one-letter variables (`kx` for `k x`) is
 /// refused, unless the variables were built knowing it, and then the product prints spaced;
