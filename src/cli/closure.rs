@@ -11,8 +11,8 @@ use superint::discovery::{closure_report_for, ListRefusal};
 use superint::render::render;
 use superint::report::Report;
 use superint::system_file::{
-    given_twice, name_as_identifier, refuse_expression_as_generator, trimmed, Caller, ErrorKind,
-    FileError, PrintedNames, COMMAND_LINE, MAX_DEGREE_CEILING,
+    given_twice, name_as_identifier, refuse_expression_as_generator, refuse_parameter_as_generator,
+    trimmed, Caller, ErrorKind, FileError, PrintedNames, COMMAND_LINE, MAX_DEGREE_CEILING,
 };
 use trigpoly::{Expr, LimitKind};
 
@@ -327,6 +327,8 @@ fn builtin_generators(
                         && printed.admit("the generator", n, n).is_ok()
                 })
                 .map_err(|e| anyhow!(e.to_string()))?;
+                refuse_parameter_as_generator(name, Caller::CommandLine, subject.system().vars())
+                    .map_err(|e| anyhow!(e.to_string()))?;
                 // The parse error first, with its place: its excerpt shows the generator,
                 // which the message put before the place and the error (`'Foo': <command
                 // line>:1:1: unknown name 'Foo'`), where `bracket` and `search` begin with

@@ -134,8 +134,9 @@ fn symbols_text(c: &Closure) -> Option<Entry> {
 /// display, `Omega` or `Ω`; a family instance, `P_1_1` or `P_{1,1}`; a phase variable, `p_x`),
 /// each printed by the file's display (`P_{1,1}`), the report's sections about the file. A
 /// blank name, a function given twice, an expression given as a name (`2*L`: add it with
-/// [`LoadedSystem::add_function`] and name it) or a name the file does not know is refused
-/// before anything is computed, of kind [`ErrorKind::Expression`](crate::system_file::ErrorKind),
+/// [`LoadedSystem::add_function`] and name it), a parameter or a name the file does not know
+/// is refused before anything is computed, of kind
+/// [`ErrorKind::Expression`](crate::system_file::ErrorKind),
 /// at its line and column in the name (`<expression>`, a blank one `<name>`, or
 /// `<command line>` as the file's [`Caller`] says); what the engine then refuses (a limit, a
 /// condition the flow leaves) is an error of the file without a place, of kind `Limit` (with

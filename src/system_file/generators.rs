@@ -3,11 +3,12 @@
 //! [`file_closure_report`](crate::discovery::file_closure_report)): each name a function by
 //! its name or its display (`Omega`, `Ω`), a family instance (`P_1_1`, `P_{1,1}`), a phase
 //! variable, or a generator the caller gives by its value (`--define`), with the name it
-//! prints by; a blank name, one given twice and an expression given as a name refused at their
-//! places. Beside it what the command line's built-in systems share with a file: how a name
-//! given as a generator prints ([`display_as_given`]), its identifier ([`name_as_identifier`]),
-//! why a new name is refused ([`new_name_refusal`]) and the refusal of an expression given as
-//! a generator ([`refuse_expression_as_generator`]).
+//! prints by; a blank name, one given twice, an expression and a parameter given as a name
+//! refused at their places. Beside it what the command line's built-in systems share with a
+//! file: how a name given as a generator prints ([`display_as_given`]), its identifier
+//! ([`name_as_identifier`]), why a new name is refused ([`new_name_refusal`]) and the refusals
+//! of an expression and of a parameter given as a generator
+//! ([`refuse_expression_as_generator`], [`refuse_parameter_as_generator`]).
 
 use brackets::NamedFunction;
 
@@ -25,7 +26,8 @@ impl LoadedSystem {
     /// which a name among `names` may name too, where it stands. A blank name, a function
     /// given twice (by one name or by its name and its display, or one instance written two
     /// ways: [`LoadedSystem::refuse_repeated`]), an expression given as a name (`2*L`, which
-    /// has no name for the table and the relations), or one the file does not know is refused,
+    /// has no name for the table and the relations), a parameter (`M`, a constant:
+    /// [`refuse_parameter_as_generator`]), or one the file does not know is refused,
     /// of kind [`ErrorKind::Expression`], at its place in the name as given (`<expression>`,
     /// a blank one `<name>`, or `<command line>` as the [`Caller`] says); a generator of `given` whose name the
     /// system has already, or that would print as one of its names, given twice, or built in
@@ -87,6 +89,7 @@ impl LoadedSystem {
                         self.refuses_new_name(n).is_none()
                             && printed.admit("the generator", n, n).is_ok()
                     })?;
+                    refuse_parameter_as_generator(name, self.caller, self.system.vars())?;
                     // The parse error with its place: its excerpt shows the generator.
                     let expr = self.parse_argument_within(name, 0..name.len())?;
                     (expr, display_as_given(name, |n| self.display_name(n)))
@@ -248,6 +251,56 @@ pub fn refuse_expression_as_generator(
         format!(
             "{} is an expression, not the name of a function: name it with {how}",
             trigpoly::quoted_name(name)
+        ),
+    ))
+}
+
+/// Refuses `name`, given as a closure's generator, where it names a parameter of the system
+/// (`M`, or `ω` for `omega`, by any spelling `vars` reads): a constant, no function of the
+/// phase space, whose brackets are all 0, and which the brackets and relations hold in their
+/// coefficients already. The engine refused it too, but after the other generators had been
+/// read and with no place (`computing the closure: the generator 'M' has the name of a
+/// parameter`); the error is at the whole of it, as an expression given as a name is, and
+/// says how to keep the parameter in the coefficients (`--symbolic M` for
+/// [`Caller::CommandLine`], `ClosureOptions::symbolic` for a program).
+///
+/// ```
+/// use superint::system_file::{refuse_parameter_as_generator, Caller, ErrorKind};
+///
+/// let rotor = superint::brackets::systems::harmonic_rotor();
+/// assert!(refuse_parameter_as_generator("x", Caller::CommandLine, rotor.vars()).is_ok());
+/// let err = refuse_parameter_as_generator("ω", Caller::CommandLine, rotor.vars()).unwrap_err();
+/// assert_eq!((err.kind, err.line_col()), (ErrorKind::Expression, Some((1, 1))));
+/// assert!(err.message.starts_with("'ω' is a parameter of the system, not a function"));
+/// assert!(err.message.ends_with("(--symbolic omega keeps it symbolic there)"));
+/// ```
+pub fn refuse_parameter_as_generator(
+    name: &str,
+    caller: Caller,
+    vars: &trigpoly::Vars,
+) -> Result<(), FileError> {
+    let parameter = [name.trim().to_string(), name_as_identifier(name)]
+        .iter()
+        .find_map(|n| vars.lookup(n))
+        .filter(|&v| vars.variable(v).kind() == trigpoly::VarKind::Parameter);
+    let Some(v) = parameter else {
+        return Ok(());
+    };
+    let ascii = vars.variable(v).name();
+    let (origin, keep) = match caller {
+        Caller::CommandLine => (COMMAND_LINE, format!("--symbolic {ascii}")),
+        Caller::Program => ("<expression>", "ClosureOptions::symbolic".to_string()),
+    };
+    Err(FileError::at(
+        ErrorKind::Expression,
+        origin,
+        name,
+        trimmed(0, name).1,
+        format!(
+            "{} is a parameter of the system, not a function of its phase space: the \
+             brackets and relations hold the parameters in their coefficients ({keep} keeps \
+             it symbolic there)",
+            trigpoly::quoted_name(name.trim())
         ),
     ))
 }

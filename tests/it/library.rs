@@ -1780,8 +1780,10 @@ fn a_files_closure_from_a_program_is_the_command_lines() {
 /// anything is computed, typed, at its line and column in the name: a blank one, a function
 /// given twice (by its name, by its name and display, an instance in two spellings), an
 /// expression given as a name (its advice the library's call for a program, `--define` for
-/// the command line) and an unknown name; from `<command line>` when the file is the command
-/// line's, with the very message the command line prints.
+/// the command line), an unknown name and a parameter (`M`, `ω`: its advice the library's
+/// option or `--symbolic`; it was refused by the engine, after the names were read, with no
+/// place); from `<command line>` when the file is the command line's, with the very message
+/// the command line prints, and a built-in system's closure refuses a parameter alike.
 #[test]
 fn a_files_closure_refuses_a_name_as_the_command_line_does() {
     let rotor =
@@ -1789,7 +1791,11 @@ fn a_files_closure_refuses_a_name_as_the_command_line_does() {
     let options = ClosureOptions::new(2);
     // The names, and the refusal's origin, line and column, and message's start.
     type Refused<'a> = (&'a [&'a str], &'a str, (usize, usize), &'a str);
-    let refused: [Refused; 7] = [
+    let parameter = "is a parameter of the system, not a function of its phase space: the \
+                     brackets and relations hold the parameters in their coefficients \
+                     (ClosureOptions::symbolic keeps it symbolic there)";
+    let (m, omega) = (format!("'M' {parameter}"), format!("'ω' {parameter}"));
+    let refused: [Refused; 9] = [
         (
             &["L", "  "],
             "<name>",
@@ -1834,6 +1840,8 @@ fn a_files_closure_refuses_a_name_as_the_command_line_does() {
             (1, 1),
             "unknown name 'Foo'",
         ),
+        (&["L", "M"], "<expression>", (1, 1), &m),
+        (&["L", "ω", "G1"], "<expression>", (1, 1), &omega),
     ];
     for (names, origin, place, message) in refused {
         let err = file_closure_report(&rotor, names, &options, Caller::Program).unwrap_err();
@@ -1854,6 +1862,13 @@ fn a_files_closure_refuses_a_name_as_the_command_line_does() {
     let err = file_closure_report(&rotor, &none, &options, Caller::Program).unwrap_err();
     assert_eq!(err.kind, ErrorKind::Claim, "{err}");
     assert!(err.message.starts_with("give the generators"), "{err}");
+    let said = crate::superint_refused(&["closure", "--system", "harmonic", "H", "ω"]);
+    pretty_assertions::assert_eq!(
+        said,
+        "superint: error: <command line>:1:1: 'ω' is a parameter of the system, not a function \
+         of its phase space: the brackets and relations hold the parameters in their \
+         coefficients (--symbolic omega keeps it symbolic there)\n 1 | ω\n   | ^\n"
+    );
 }
 
 /// What the engine refuses once the names are read is an error of the file without a place:
