@@ -12,7 +12,8 @@ use superint::render::render;
 use superint::report::Report;
 use superint::system_file::{
     given_twice, name_as_identifier, refuse_expression_as_generator, refuse_parameter_as_generator,
-    trimmed, Caller, ErrorKind, FileError, PrintedNames, COMMAND_LINE, MAX_DEGREE_CEILING,
+    refuse_unshowable_generator, trimmed, Caller, ErrorKind, FileError, PrintedNames, COMMAND_LINE,
+    MAX_DEGREE_CEILING,
 };
 use trigpoly::{Expr, LimitKind};
 
@@ -296,6 +297,10 @@ fn builtin_generators(
             "expected the name of a function, found end of input",
         );
         bail!(error.to_string());
+    }
+    for name in &all {
+        refuse_unshowable_generator(name, Caller::CommandLine)
+            .map_err(|e| anyhow!(e.to_string()))?;
     }
     // A function by its name or its display (`Omega` or `Ω`) is one function.
     let key = |n: &str| match subject.system().function(n.trim()) {

@@ -3,17 +3,18 @@
 //! [`file_closure_report`](crate::discovery::file_closure_report)): each name a function by
 //! its name or its display (`Omega`, `Ω`), a family instance (`P_1_1`, `P_{1,1}`), a phase
 //! variable, or a generator the caller gives by its value (`--define`), with the name it
-//! prints by; a blank name, one given twice, an expression and a parameter given as a name
-//! refused at their places. Beside it what the command line's built-in systems share with a
-//! file: how a name given as a generator prints ([`display_as_given`]), its identifier
-//! ([`name_as_identifier`]), why a new name is refused ([`new_name_refusal`]) and the refusals
-//! of an expression and of a parameter given as a generator
-//! ([`refuse_expression_as_generator`], [`refuse_parameter_as_generator`]).
+//! prints by; a blank name, one holding a line break, one given twice, an expression and a
+//! parameter given as a name refused at their places. Beside it what the command line's
+//! built-in systems share with a file: how a name given as a generator prints
+//! ([`display_as_given`]), its identifier ([`name_as_identifier`]), why a new name is refused
+//! ([`new_name_refusal`]) and the refusals of a name holding a line break, an expression and a
+//! parameter given as a generator ([`refuse_unshowable_generator`],
+//! [`refuse_expression_as_generator`], [`refuse_parameter_as_generator`]).
 
 use brackets::NamedFunction;
 
 use super::error::{ErrorKind, FileError};
-use super::names::{BadName, PrintedNames};
+use super::names::{first_invisible, invisible, BadName, PrintedNames};
 use super::text::trimmed;
 use super::{Caller, LoadedSystem, COMMAND_LINE};
 
@@ -23,9 +24,10 @@ impl LoadedSystem {
     /// (`P_1_1` or `P_{1,1}`) or a phase variable (`p_x`), each with the name it prints by
     /// (`P_{1,1}`, `K̄_{1,1}` for `Kbar_1_1`); and after them each of `given` that `names` does
     /// not name, a generator given by its value (the command line's `--define NAME=EXPR`),
-    /// which a name among `names` may name too, where it stands. A blank name, a function
-    /// given twice (by one name or by its name and its display, or one instance written two
-    /// ways: [`LoadedSystem::refuse_repeated`]), an expression given as a name (`2*L`, which
+    /// which a name among `names` may name too, where it stands. A blank name, one holding a
+    /// line break or a tab ([`refuse_unshowable_generator`]), a function given twice (by one
+    /// name or by its name and its display, or one instance written two ways:
+    /// [`LoadedSystem::refuse_repeated`]), an expression given as a name (`2*L`, which
     /// has no name for the table and the relations), a parameter (`M`, a constant:
     /// [`refuse_parameter_as_generator`]), or one the file does not know is refused,
     /// of kind [`ErrorKind::Expression`], at its place in the name as given (`<expression>`,
@@ -79,6 +81,9 @@ impl LoadedSystem {
             ));
         }
         self.refuse_blank(&all)?;
+        for name in &all {
+            refuse_unshowable_generator(name, self.caller)?;
+        }
         self.refuse_repeated(&all, "the closure")?;
         let mut generators = Vec::with_capacity(all.len());
         for name in all {
@@ -251,6 +256,58 @@ pub fn refuse_expression_as_generator(
         format!(
             "{} is an expression, not the name of a function: name it with {how}",
             trigpoly::quoted_name(name)
+        ),
+    ))
+}
+
+/// Refuses `name`, given as a closure's generator, where it holds a character that shows
+/// nothing or moves the text around it (a line break, a tab, a zero-width space: `$'H\nL'`
+/// in a shell, two names in one argument), at that character, with the name written with
+/// each such character escaped (`'H\nL'`). It comes before every other refusal of a name,
+/// each of which quotes it: the advice under an expression given as a name printed the line
+/// break inside `--define 'G=H` and `L'`.
+///
+/// ```
+/// use superint::system_file::{refuse_unshowable_generator, Caller, ErrorKind};
+///
+/// assert!(refuse_unshowable_generator("P_{1, 1}", Caller::CommandLine).is_ok());
+/// let err = refuse_unshowable_generator("H\nL", Caller::CommandLine).unwrap_err();
+/// assert_eq!((err.kind, err.line_col()), (ErrorKind::Expression, Some((1, 2))));
+/// assert_eq!(
+///     err.message,
+///     "'H\\nL' holds a line break (U+000A), which no name does: give each generator as an \
+///      argument of its own"
+/// );
+/// ```
+pub fn refuse_unshowable_generator(name: &str, caller: Caller) -> Result<(), FileError> {
+    let Some((k, c)) = first_invisible(name, false) else {
+        return Ok(());
+    };
+    let escaped: String = name
+        .chars()
+        .map(|c| match invisible(c) {
+            true => c.escape_debug().to_string(),
+            false => c.to_string(),
+        })
+        .collect();
+    let code = format!("U+{:04X}", c as u32);
+    let what = match c {
+        '\n' | '\r' | '\u{2028}' => format!("a line break ({code})"),
+        '\t' => format!("a tab ({code})"),
+        _ => format!("{code}, an invisible or control character"),
+    };
+    let (origin, how) = match caller {
+        Caller::CommandLine => (COMMAND_LINE, "as an argument of its own"),
+        Caller::Program => ("<expression>", "as a name of its own"),
+    };
+    Err(FileError::at(
+        ErrorKind::Expression,
+        origin,
+        name,
+        k..k + c.len_utf8(),
+        format!(
+            "{} holds {what}, which no name does: give each generator {how}",
+            trigpoly::quoted_name(&escaped)
         ),
     ))
 }

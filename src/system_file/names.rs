@@ -27,7 +27,7 @@ pub fn unwritable_letter(c: char) -> Option<String> {
 /// Whether `c` shows nothing, or moves or turns the text around it: a control character
 /// (a tab), white space other than the space (no-break, line separator), or a format character
 /// (zero width, the bidirectional marks and overrides, a byte-order mark, variation selectors).
-fn invisible(c: char) -> bool {
+pub(crate) fn invisible(c: char) -> bool {
     c.is_control()
         || (c.is_whitespace() && c != ' ')
         || matches!(
@@ -638,7 +638,7 @@ fn alike(new: &Owner, notation: Notation, form: &str, other: &Owner) -> String {
 /// ([`invisible`]), with its byte offset: a line break or a tab too unless `lines` allows
 /// them (a description's paragraphs and their indents, which reports print as written,
 /// [`printable`](crate::render::printable)), `\r` only before `\n`.
-fn first_invisible(text: &str, lines: bool) -> Option<(usize, char)> {
+pub(crate) fn first_invisible(text: &str, lines: bool) -> Option<(usize, char)> {
     text.char_indices().find(|&(k, c)| {
         let layout = matches!(c, '\n' | '\t') || (c == '\r' && text[k + 1..].starts_with('\n'));
         invisible(c) && !(lines && layout)

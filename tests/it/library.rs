@@ -1782,8 +1782,10 @@ fn a_files_closure_from_a_program_is_the_command_lines() {
 /// expression given as a name (its advice the library's call for a program, `--define` for
 /// the command line), an unknown name and a parameter (`M`, `ω`: its advice the library's
 /// option or `--symbolic`; it was refused by the engine, after the names were read, with no
-/// place); from `<command line>` when the file is the command line's, with the very message
-/// the command line prints, and a built-in system's closure refuses a parameter alike.
+/// place) and a name holding a line break or a tab, first, escaped (`'G1\nG2'`: its line
+/// break was printed inside the advice to `--define 'G=G1`, `G2'`); from `<command line>` when
+/// the file is the command line's, with the very message the command line prints, and a
+/// built-in system's closure refuses a parameter and a line break alike.
 #[test]
 fn a_files_closure_refuses_a_name_as_the_command_line_does() {
     let rotor =
@@ -1795,7 +1797,7 @@ fn a_files_closure_refuses_a_name_as_the_command_line_does() {
                      brackets and relations hold the parameters in their coefficients \
                      (ClosureOptions::symbolic keeps it symbolic there)";
     let (m, omega) = (format!("'M' {parameter}"), format!("'ω' {parameter}"));
-    let refused: [Refused; 9] = [
+    let refused: [Refused; 11] = [
         (
             &["L", "  "],
             "<name>",
@@ -1842,6 +1844,20 @@ fn a_files_closure_refuses_a_name_as_the_command_line_does() {
         ),
         (&["L", "M"], "<expression>", (1, 1), &m),
         (&["L", "ω", "G1"], "<expression>", (1, 1), &omega),
+        (
+            &["L", "G1\nG2"],
+            "<expression>",
+            (1, 3),
+            "'G1\\nG2' holds a line break (U+000A), which no name does: give each generator \
+             as a name of its own",
+        ),
+        // Before it is refused as given twice, which quotes it too.
+        (
+            &["L", "L\t", "L\t"],
+            "<expression>",
+            (1, 2),
+            "'L\\t' holds a tab (U+0009)",
+        ),
     ];
     for (names, origin, place, message) in refused {
         let err = file_closure_report(&rotor, names, &options, Caller::Program).unwrap_err();
@@ -1862,6 +1878,12 @@ fn a_files_closure_refuses_a_name_as_the_command_line_does() {
     let err = file_closure_report(&rotor, &none, &options, Caller::Program).unwrap_err();
     assert_eq!(err.kind, ErrorKind::Claim, "{err}");
     assert!(err.message.starts_with("give the generators"), "{err}");
+    let said = crate::superint_refused(&["closure", "--system", "harmonic", "H", "G1\nG2"]);
+    pretty_assertions::assert_eq!(
+        said,
+        "superint: error: <command line>:1:3: 'G1\\nG2' holds a line break (U+000A), which no \
+         name does: give each generator as an argument of its own\n 1 | G1\n   |   ^\n"
+    );
     let said = crate::superint_refused(&["closure", "--system", "harmonic", "H", "ω"]);
     pretty_assertions::assert_eq!(
         said,
