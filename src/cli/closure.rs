@@ -12,7 +12,7 @@ use superint::render::render;
 use superint::report::Report;
 use superint::system_file::{
     given_twice, name_as_identifier, refuse_expression_as_generator, refuse_parameter_as_generator,
-    refuse_unshowable_generator, trimmed, Caller, ErrorKind, FileError, PrintedNames, COMMAND_LINE,
+    refuse_unshowable_name, trimmed, Caller, ErrorKind, FileError, PrintedNames, COMMAND_LINE,
     MAX_DEGREE_CEILING,
 };
 use trigpoly::{Expr, LimitKind};
@@ -299,7 +299,7 @@ fn builtin_generators(
         bail!(error.to_string());
     }
     for name in &all {
-        refuse_unshowable_generator(name, Caller::CommandLine)
+        refuse_unshowable_name(name, Caller::CommandLine, "generator")
             .map_err(|e| anyhow!(e.to_string()))?;
     }
     // A function by its name or its display (`Omega` or `Ω`) is one function.

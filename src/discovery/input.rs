@@ -258,6 +258,20 @@ pub(crate) fn blank_beside_comma(
     })
 }
 
+/// Refuses a name of a list (`--symbolic`, `--fix`), which begins at byte `at` of the list,
+/// where it holds a line break, a tab or another character that shows nothing
+/// ([`unshowable_in_name`](crate::system_file::unshowable_in_name)), at that character,
+/// the name escaped and `usage` after, before any other refusal quotes it.
+fn unshowable_name(name: &str, at: usize, usage: &str) -> Result<(), ListRefusal> {
+    match crate::system_file::unshowable_in_name(name) {
+        Some((span, why)) => Err(ListRefusal {
+            span: at + span.start..at + span.end,
+            message: format!("{why}: {usage}"),
+        }),
+        None => Ok(()),
+    }
+}
+
 /// How `--symbolic` reads, for its refusals.
 const SYMBOLIC_USAGE: &str = "name parameters as A,B, such as M,omega";
 
@@ -275,6 +289,7 @@ pub fn parse_symbolic(system: &System, text: &str) -> Result<Vec<Var>, ListRefus
         if name.is_empty() {
             continue;
         }
+        unshowable_name(name, span.start, SYMBOLIC_USAGE)?;
         let refuse = |message| ListRefusal {
             span: span.clone(),
             message,
@@ -359,6 +374,7 @@ pub fn parse_fixed(system: &System, text: &str) -> Result<Vec<(Var, Rational)>, 
                 format!("a value is missing after this '=': {FIX_USAGE}"),
             ));
         }
+        unshowable_name(name, name_span.start, FIX_USAGE)?;
         let v = parameter(system, name).map_err(|m| refuse(name_span.clone(), m))?;
         if out.iter().any(|(w, _)| *w == v) {
             return Err(refuse(

@@ -7,9 +7,9 @@
 //! parameter given as a name refused at their places. Beside it what the command line's
 //! built-in systems share with a file: how a name given as a generator prints
 //! ([`display_as_given`]), its identifier ([`name_as_identifier`]), why a new name is refused
-//! ([`new_name_refusal`]) and the refusals of a name holding a line break, an expression and a
-//! parameter given as a generator ([`refuse_unshowable_generator`],
-//! [`refuse_expression_as_generator`], [`refuse_parameter_as_generator`]).
+//! ([`new_name_refusal`]) and the refusals of a name holding a line break (a generator's or a
+//! table's, [`refuse_unshowable_name`]), and of an expression and a parameter given as a
+//! generator ([`refuse_expression_as_generator`], [`refuse_parameter_as_generator`]).
 
 use brackets::NamedFunction;
 
@@ -25,7 +25,7 @@ impl LoadedSystem {
     /// (`P_{1,1}`, `K̄_{1,1}` for `Kbar_1_1`); and after them each of `given` that `names` does
     /// not name, a generator given by its value (the command line's `--define NAME=EXPR`),
     /// which a name among `names` may name too, where it stands. A blank name, one holding a
-    /// line break or a tab ([`refuse_unshowable_generator`]), a function given twice (by one
+    /// line break or a tab ([`refuse_unshowable_name`]), a function given twice (by one
     /// name or by its name and its display, or one instance written two ways:
     /// [`LoadedSystem::refuse_repeated`]), an expression given as a name (`2*L`, which
     /// has no name for the table and the relations), a parameter (`M`, a constant:
@@ -82,7 +82,7 @@ impl LoadedSystem {
         }
         self.refuse_blank(&all)?;
         for name in &all {
-            refuse_unshowable_generator(name, self.caller)?;
+            refuse_unshowable_name(name, self.caller, "generator")?;
         }
         self.refuse_repeated(&all, "the closure")?;
         let mut generators = Vec::with_capacity(all.len());
@@ -260,29 +260,53 @@ pub fn refuse_expression_as_generator(
     ))
 }
 
-/// Refuses `name`, given as a closure's generator, where it holds a character that shows
-/// nothing or moves the text around it (a line break, a tab, a zero-width space: `$'H\nL'`
-/// in a shell, two names in one argument), at that character, with the name written with
-/// each such character escaped (`'H\nL'`). It comes before every other refusal of a name,
-/// each of which quotes it: the advice under an expression given as a name printed the line
-/// break inside `--define 'G=H` and `L'`.
+/// Refuses `name`, given as one of several names (a closure's generator, a table's
+/// function: `each` says which), where it holds a character that shows nothing or moves the
+/// text around it (a line break, a tab, a zero-width space: `$'H\nL'` in a shell, two names
+/// in one argument), at that character, with the name written with each such character
+/// escaped (`'H\nL'`). It comes before every other refusal of a name, each of which quotes
+/// it: the advice under an expression given as a generator printed the line break inside
+/// `--define 'G=H` and `L'`, and a table's unknown name inside its quotes.
 ///
 /// ```
-/// use superint::system_file::{refuse_unshowable_generator, Caller, ErrorKind};
+/// use superint::system_file::{refuse_unshowable_name, Caller, ErrorKind};
 ///
-/// assert!(refuse_unshowable_generator("P_{1, 1}", Caller::CommandLine).is_ok());
-/// let err = refuse_unshowable_generator("H\nL", Caller::CommandLine).unwrap_err();
+/// assert!(refuse_unshowable_name("P_{1, 1}", Caller::CommandLine, "generator").is_ok());
+/// let err = refuse_unshowable_name("H\nL", Caller::CommandLine, "generator").unwrap_err();
 /// assert_eq!((err.kind, err.line_col()), (ErrorKind::Expression, Some((1, 2))));
 /// assert_eq!(
 ///     err.message,
 ///     "'H\\nL' holds a line break (U+000A), which no name does: give each generator as an \
 ///      argument of its own"
 /// );
+/// let err = refuse_unshowable_name("L\tG1", Caller::Program, "function").unwrap_err();
+/// assert!(err.message.ends_with("give each function as a name of its own"));
 /// ```
-pub fn refuse_unshowable_generator(name: &str, caller: Caller) -> Result<(), FileError> {
-    let Some((k, c)) = first_invisible(name, false) else {
+pub fn refuse_unshowable_name(name: &str, caller: Caller, each: &str) -> Result<(), FileError> {
+    let Some((span, why)) = unshowable_in_name(name) else {
         return Ok(());
     };
+    let (origin, how) = match caller {
+        Caller::CommandLine => (COMMAND_LINE, "as an argument of its own"),
+        Caller::Program => ("<expression>", "as a name of its own"),
+    };
+    Err(FileError::at(
+        ErrorKind::Expression,
+        origin,
+        name,
+        span,
+        format!("{why}: give each {each} {how}"),
+    ))
+}
+
+/// Where `name` holds a character that shows nothing or moves the text around it
+/// ([`first_invisible`], a line break and a tab too), that character's byte range and why
+/// no name holds it, the name quoted with each such character escaped: `'H\nL' holds a line
+/// break (U+000A), which no name does`. The one rule of every name given on the command line
+/// or by a program as a list of names ([`refuse_unshowable_name`]; `--symbolic`, `--fix` and
+/// a tower's `--family` put it before their usage).
+pub(crate) fn unshowable_in_name(name: &str) -> Option<(std::ops::Range<usize>, String)> {
+    let (k, c) = first_invisible(name, false)?;
     let escaped: String = name
         .chars()
         .map(|c| match invisible(c) {
@@ -296,20 +320,11 @@ pub fn refuse_unshowable_generator(name: &str, caller: Caller) -> Result<(), Fil
         '\t' => format!("a tab ({code})"),
         _ => format!("{code}, an invisible or control character"),
     };
-    let (origin, how) = match caller {
-        Caller::CommandLine => (COMMAND_LINE, "as an argument of its own"),
-        Caller::Program => ("<expression>", "as a name of its own"),
-    };
-    Err(FileError::at(
-        ErrorKind::Expression,
-        origin,
-        name,
-        k..k + c.len_utf8(),
-        format!(
-            "{} holds {what}, which no name does: give each generator {how}",
-            trigpoly::quoted_name(&escaped)
-        ),
-    ))
+    let why = format!(
+        "{} holds {what}, which no name does",
+        trigpoly::quoted_name(&escaped)
+    );
+    Some((k..k + c.len_utf8(), why))
 }
 
 /// Refuses `name`, given as a closure's generator, where it names a parameter of the system

@@ -61,9 +61,10 @@ mod written;
 
 pub use claims::{CheckedClaim, ClaimForm, ClaimSpec, CONDITION_USAGE};
 pub use error::{ErrorKind, FileError, Location, UnknownErrorKind, Warning, Warnings};
+pub(crate) use generators::unshowable_in_name;
 pub use generators::{
     display_as_given, looks_like_name, name_as_identifier, new_name_refusal,
-    refuse_expression_as_generator, refuse_parameter_as_generator, refuse_unshowable_generator,
+    refuse_expression_as_generator, refuse_parameter_as_generator, refuse_unshowable_name,
 };
 pub use load::{load, load_bytes, load_str, read_bytes, MAX_DEGREE_CEILING, MAX_FILE_BYTES};
 pub use names::{reserved, unwritable_letter, BadName, PrintedNames, Refusal};

@@ -526,8 +526,10 @@ pub fn given_twice(given: &str, before: &str, what: &str) -> String {
 
 /// The bracket table of named functions (or family instances such as `K_1_1`, or phase
 /// variables such as `p_x`) of the file, with its entries that are polynomials in `H` and the
-/// file's functions written so below it; all its functions but `H` when `names` is empty. An
-/// entry that reaches a limit is `?`
+/// file's functions written so below it; all its functions but `H` when `names` is empty. A
+/// blank name, one holding a line break or a tab (first, escaped:
+/// [`refuse_unshowable_name`](super::refuse_unshowable_name)) and one given twice are refused
+/// at their places. An entry that reaches a limit is `?`
 /// ([`TableResult::undecided`](crate::report::TableResult::undecided) lists them, with the
 /// limits' messages), and the others are computed.
 pub fn table_report(file: &LoadedSystem, names: &[impl AsRef<str>]) -> Result<Report, FileError> {
@@ -540,6 +542,9 @@ pub fn table_report(file: &LoadedSystem, names: &[impl AsRef<str>]) -> Result<Re
         .map(|f| f.name.clone())
         .collect();
     file.refuse_blank(names)?;
+    for name in names {
+        super::refuse_unshowable_name(name.as_ref(), file.caller, "function")?;
+    }
     // As given, braces and all (`K_{1,1}` beside `K_1_1`).
     file.refuse_repeated(names, "a table")?;
     let names = tabulated_names(file, names, &defined)?;

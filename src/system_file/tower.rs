@@ -722,6 +722,18 @@ fn tower_families(file: &LoadedSystem, family: Option<&str>) -> Result<Vec<usize
                 )),
             ));
         }
+        // A line break or a tab in a name (`$'K\nKbar'`), before the message quotes it.
+        if let Some((at_char, why)) = super::unshowable_in_name(name) {
+            let place = span.start + at_char.start..span.start + at_char.end;
+            let usage = "families are named separated by commas, such as K,Kbar";
+            return Err(family_list_refused(
+                file,
+                names,
+                place,
+                format!("{why}: {usage}"),
+                None,
+            ));
+        }
         // A lone blank name is said to be blank, where it ends, as a blank function name is.
         if name.is_empty() {
             return Err(family_list_refused(

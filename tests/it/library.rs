@@ -1893,6 +1893,88 @@ fn a_files_closure_refuses_a_name_as_the_command_line_does() {
     );
 }
 
+/// A name holding a line break or a tab (two names in one argument, `$'L\nG1'` in a shell) is
+/// refused first, at that character, the name escaped, wherever a list of names is read: a
+/// table's functions, of a file and of a built-in system, from a program too (it printed
+/// `'L` and `G1' is not a function` on two lines), and the names of `--symbolic`, `--fix` and
+/// `--family` (`--symbolic: 'M` and `omega' is not a parameter`), each with its own usage.
+#[test]
+fn a_name_holding_a_line_break_is_refused_first_in_every_list_of_names() {
+    let rotor = harmonic_rotor_file();
+    let err = table_report(&rotor, &["L\nG1", "G2"]).unwrap_err();
+    assert_eq!(
+        (err.kind, err.line_col()),
+        (ErrorKind::Expression, Some((1, 2)))
+    );
+    assert_eq!(
+        err.message,
+        "'L\\nG1' holds a line break (U+000A), which no name does: give each function as a \
+         name of its own"
+    );
+    // Before a name given twice, whose message quotes it too.
+    let err = table_report(&rotor, &["L\t", "L\t"]).unwrap_err();
+    assert!(
+        err.message.starts_with("'L\\t' holds a tab (U+0009)"),
+        "{err}"
+    );
+    for system in [
+        &["systems/harmonic-rotor.toml"][..],
+        &["--system", "harmonic"],
+    ] {
+        let args = [&["table"], system, &["L\nG1", "G2"]].concat();
+        pretty_assertions::assert_eq!(
+            crate::superint_refused(&args),
+            "superint: error: <command line>:1:2: 'L\\nG1' holds a line break (U+000A), which \
+             no name does: give each function as an argument of its own\n 1 | L\n   |  ^\n"
+        );
+    }
+    let search = [
+        "search",
+        "systems/harmonic-rotor.toml",
+        "--momenta-degree",
+        "1",
+    ];
+    let tower = [
+        "tower",
+        "--system",
+        "systems/harmonic-rotor.toml",
+        "--max",
+        "1",
+    ];
+    let lists: [(&[&str], &str, &str); 3] = [
+        (
+            &search,
+            "--symbolic",
+            "1:2: --symbolic: 'M\\nomega' holds a line break (U+000A), which no name does: \
+             name parameters as A,B, such as M,omega\n 1 | M\n   |  ^\n",
+        ),
+        (
+            &search,
+            "--fix",
+            "1:7: --fix: 'om\\tega' holds a tab (U+0009), which no name does: give a value as \
+             NAME=VALUE, such as omega=1\n 1 | M=2,om\tega=1\n   |       ^\n",
+        ),
+        (
+            &tower,
+            "--family",
+            "1:2: --family: 'K\\nKbar' holds a line break (U+000A), which no name does: \
+             families are named separated by commas, such as K,Kbar\n 1 | K\n   |  ^\n",
+        ),
+    ];
+    for (command, option, said) in lists {
+        let list = match option {
+            "--symbolic" => "M\nomega",
+            "--fix" => "M=2,om\tega=1",
+            _ => "K\nKbar",
+        };
+        let args = [command, &[option, list]].concat();
+        pretty_assertions::assert_eq!(
+            crate::superint_refused(&args),
+            format!("superint: error: <command line>:{said}")
+        );
+    }
+}
+
 /// What the engine refuses once the names are read is an error of the file without a place:
 /// the closure's products past the term limit are a limit, with the hint that raises it, and a
 /// condition the flow leaves is the engine's refusal; each says it was computing the closure.
