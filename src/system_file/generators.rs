@@ -14,7 +14,7 @@
 use brackets::NamedFunction;
 
 use super::error::{ErrorKind, FileError};
-use super::names::{first_invisible, invisible, BadName, PrintedNames};
+use super::names::{first_invisible, invisible, script, BadName, PrintedNames};
 use super::text::trimmed;
 use super::{Caller, LoadedSystem, COMMAND_LINE};
 
@@ -351,8 +351,15 @@ pub fn refuse_parameter_as_generator(
     caller: Caller,
     vars: &trigpoly::Vars,
 ) -> Result<(), FileError> {
-    let parameter = [name.trim().to_string(), name_as_identifier(name)]
-        .iter()
+    // As written (`ω`, `ω₊` of a display), or in braces (`a_{1}`), but not by the identifier
+    // of a name whose marks it drops: `ω₋` is no spelling of `ω`.
+    let written = name.trim();
+    let braced = written
+        .chars()
+        .all(|c| c.is_alphanumeric() || "_{}, '".contains(c));
+    let identifier = braced.then(|| name_as_identifier(written));
+    let parameter = std::iter::once(written)
+        .chain(identifier.as_deref())
         .find_map(|n| vars.lookup(n))
         .filter(|&v| vars.variable(v).kind() == trigpoly::VarKind::Parameter);
     let Some(v) = parameter else {
@@ -372,22 +379,24 @@ pub fn refuse_parameter_as_generator(
             "{} is a parameter of the system, not a function of its phase space: the \
              brackets and relations hold the parameters in their coefficients ({keep} keeps \
              it symbolic there)",
-            trigpoly::quoted_name(name.trim())
+            trigpoly::quoted_name(written)
         ),
     ))
 }
 
 /// Whether `name`, given as a closure's generator, is a name rather than an expression: a
 /// letter first, then letters, digits, `_`, an instance's braces and commas (`P_{1, 1}`, a
-/// space after the comma), primes (`P'`) and the macron of a display (`Z̄`), so that a
-/// generator such as `Z̄` or `P'_{1,1}` is resolved by its name and not refused as an
-/// expression. Not [`looks_like_name`]'s rule (for `--known` and for displays), which takes a
-/// digit first but neither primes, spaces nor marks.
+/// space after the comma), primes (`P'`), the macron of a display (`Z̄`) and a display's
+/// subscripts and superscripts, signs too (`ω₊`, which Unicode counts as no letter or
+/// digit), so that a generator such as `Z̄`, `P'_{1,1}` or `ω₊` is resolved by its name, or
+/// refused as the parameter it names, and not refused as an expression. Not
+/// [`looks_like_name`]'s rule (for `--known` and for displays), which takes a digit first but
+/// neither primes, spaces nor marks.
 fn reads_as_a_generator_name(name: &str) -> bool {
     name.chars().next().is_some_and(char::is_alphabetic)
-        && name
-            .chars()
-            .all(|c| c.is_alphanumeric() || "_{}, '".contains(c) || c == '\u{304}')
+        && name.chars().all(|c| {
+            c.is_alphanumeric() || "_{}, '".contains(c) || c == '\u{304}' || script(c).is_some()
+        })
 }
 
 /// `P_{1,1}` → `P_1_1`: a name given as a generator or a known integral as the generators'

@@ -688,7 +688,7 @@ fn differential(c: char) -> String {
 /// Whether `c` is written as a subscript or a superscript (`₁`, `₊`, `ₐ`, `²`, `ᵃ`, `ⁿ`,
 /// `ʰ`, `ª`), which Unicode counts as a digit, a sign or a letter: `subscript` or
 /// `superscript`.
-fn script(c: char) -> Option<&'static str> {
+pub(crate) fn script(c: char) -> Option<&'static str> {
     match c {
         '\u{2080}'..='\u{209c}' | '\u{1d62}'..='\u{1d6a}' | '\u{2c7c}' => Some("subscript"),
         'ª' | 'º' | '¹' | '²' | '³' => Some("superscript"),

@@ -1975,6 +1975,47 @@ fn a_name_holding_a_line_break_is_refused_first_in_every_list_of_names() {
     }
 }
 
+/// A parameter named by its display as a closure's generator (`ω₊`, the parameter `a` of
+/// `systems/fock-darwin.toml`, printed so) is refused as the parameter it is, as `a` is: the
+/// name rule took no subscript sign, so `ω₊` was refused as an expression, with the advice to
+/// `--define 'G=ω₊'`, a constant. A name whose sign no display has (`ω₋` of the harmonic
+/// rotor) is an unknown name, not the parameter `ω` its letters spell.
+#[test]
+fn a_parameter_named_by_its_display_is_refused_as_a_parameter() {
+    let fock_darwin =
+        load_system_file("systems/fock-darwin.toml", &LimitsOverride::default()).unwrap();
+    let options = ClosureOptions::new(2);
+    let parameter = "is a parameter of the system, not a function of its phase space: the \
+                     brackets and relations hold the parameters in their coefficients";
+    for name in ["a", "ω₊"] {
+        let names = ["H", name];
+        let err = file_closure_report(&fock_darwin, &names, &options, Caller::Program);
+        let err = err.unwrap_err();
+        assert_eq!(
+            (err.kind, err.line_col()),
+            (ErrorKind::Expression, Some((1, 1)))
+        );
+        assert_eq!(
+            err.message,
+            format!("'{name}' {parameter} (ClosureOptions::symbolic keeps it symbolic there)")
+        );
+        let said = crate::superint_refused(&["closure", "systems/fock-darwin.toml", "H", name]);
+        let caret = "^".repeat(name.chars().count());
+        pretty_assertions::assert_eq!(
+            said,
+            format!(
+                "superint: error: <command line>:1:1: '{name}' {parameter} (--symbolic a keeps \
+                 it symbolic there)\n 1 | {name}\n   | {caret}\n"
+            )
+        );
+    }
+    let said = crate::superint_refused(&["closure", "systems/harmonic-rotor.toml", "H", "ω₋"]);
+    assert!(
+        said.starts_with("superint: error: <command line>:1:1: unknown name 'ω₋'"),
+        "{said}"
+    );
+}
+
 /// What the engine refuses once the names are read is an error of the file without a place:
 /// the closure's products past the term limit are a limit, with the hint that raises it, and a
 /// condition the flow leaves is the engine's refusal; each says it was computing the closure.
