@@ -63,8 +63,9 @@ pub struct ClosureArgs {
     /// A condition, such as 'p_theta = I*omega', where the brackets and relations hold. Each
     /// bracket is formed from the generators on the whole phase space and only then set on
     /// it (p_θ is a variable of the phase space, along which a bracket differentiates, so it
-    /// cannot be set to a constant first), and written in the generators set there: F2,
-    /// the constant ω²I/2 at p_θ = Iω, may still have brackets that are not zero.
+    /// cannot be set to a constant first), and written in the generators set there: the
+    /// harmonic rotor's F2, the constant ω²I/2 at p_θ = Iω, may still have brackets that
+    /// are not zero.
     #[arg(long, value_name = "CONDITION")]
     when: Option<String>,
     /// Parameter values for the linear algebra, such as omega=1,M=2/3 or M=0.5 (a decimal is

@@ -1085,7 +1085,9 @@ fn a_closure_on_a_phase_variable_says_each_bracket_is_set_after_it_is_formed() {
     for piece in [
         "Each bracket is formed from the generators on the whole phase space and only then \
          set on it (p_θ is a variable of the phase space, along which a bracket \
-         differentiates, so it cannot be set to a constant first)",
+         differentiates, so it cannot be set to a constant first), and written in the \
+         generators set there: the harmonic rotor's F2, the constant ω²I/2 at p_θ = Iω, may \
+         still have brackets that are not zero",
         "With --when, each bracket is formed from the generators on the whole phase space and \
          then set on the condition",
     ] {
