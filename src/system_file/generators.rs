@@ -248,11 +248,9 @@ pub fn refuse_expression_as_generator(
         ),
     };
     // Refused as a whole, the caret under all of it, as a name given twice is.
-    Err(FileError::at(
-        ErrorKind::Expression,
+    Err(refused_whole(
         origin,
         name,
-        trimmed(0, name).1,
         format!(
             "{} is an expression, not the name of a function: name it with {how}",
             trigpoly::quoted_name(name)
@@ -370,11 +368,9 @@ pub fn refuse_parameter_as_generator(
         Caller::CommandLine => (COMMAND_LINE, format!("--symbolic {ascii}")),
         Caller::Program => ("<expression>", "ClosureOptions::symbolic".to_string()),
     };
-    Err(FileError::at(
-        ErrorKind::Expression,
+    Err(refused_whole(
         origin,
         name,
-        trimmed(0, name).1,
         format!(
             "{} is a parameter of the system, not a function of its phase space: the \
              brackets and relations hold the parameters in their coefficients ({keep} keeps \
@@ -479,4 +475,16 @@ fn braced_indices(name: &str) -> String {
         }
         _ => name.to_string(),
     }
+}
+
+/// A generator's name refused as a whole, the caret under all of it (its surrounding spaces
+/// left out), as an error of kind `expression` from `origin`.
+fn refused_whole(origin: &str, name: &str, message: String) -> FileError {
+    FileError::at(
+        ErrorKind::Expression,
+        origin,
+        name,
+        trimmed(0, name).1,
+        message,
+    )
 }

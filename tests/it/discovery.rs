@@ -1673,16 +1673,13 @@ fn a_symbolic_search_names_the_integrals_that_generate_the_others() {
             assert!(out.contains(&said), "{format}: {out}");
         }
     }
-    let plain = superint_json(&[
-        "search",
-        "systems/harmonic-rotor.toml",
-        "--momenta-degree",
-        "1",
-        "--positions-degree",
-        "1",
-        "--trig-degree",
-        "0",
-    ]);
+    let plain = superint_json(
+        &[
+            &["search", "systems/harmonic-rotor.toml"][..],
+            &DEGREE_ONE_TRIG_ZERO,
+        ]
+        .concat(),
+    );
     assert_eq!(plain["searches"][0]["generators"], serde_json::Value::Null);
 }
 
