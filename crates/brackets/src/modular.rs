@@ -736,6 +736,31 @@ pub fn combination_equals<C: Borrow<SparseVec<Rational>>>(
     sums_to(&mut Accumulator::new(), columns, v, target)
 }
 
+/// One sum for exact checks made one after another ([`CombinationSums::equals`]), zero
+/// again after each, so that a check reads and clears only the rows its columns touch, where
+/// each [`combination_equals`] grows a dense sum of its own to its largest row (a search's
+/// dependencies: thousands of checks in a space of 10⁵ rows).
+#[derive(Debug)]
+pub(crate) struct CombinationSums(Accumulator<Rational>);
+
+impl CombinationSums {
+    /// A sum with no rows yet: it grows to the largest row that a check touches.
+    pub(crate) fn new() -> Self {
+        CombinationSums(Accumulator::new())
+    }
+
+    /// Whether `Σ v_j · column_j = target` exactly, as [`combination_equals`]; the columns
+    /// held or borrowed.
+    pub(crate) fn equals<C: Borrow<SparseVec<Rational>>>(
+        &mut self,
+        columns: &[C],
+        v: &SparseVec<Rational>,
+        target: &[(usize, Rational)],
+    ) -> bool {
+        sums_to(&mut self.0, columns, v, target)
+    }
+}
+
 /// Whether `Σ v_j · column_j = target` exactly, summed in `sum`, which is zero again after.
 /// Only the rows the columns touch are read: a search checks each of its kernel vectors
 /// against tens of thousands of equations, and a dense sum of them all for each vector was
@@ -746,6 +771,8 @@ fn sums_to<C: Borrow<SparseVec<Rational>>>(
     v: &SparseVec<Rational>,
     target: &[(usize, Rational)],
 ) -> bool {
+    #[cfg(test)]
+    let rows_before = sum.dense.len();
     for (j, x) in v {
         for (i, a) in columns[*j].borrow() {
             sum.add(*i, &(x * a));
@@ -754,7 +781,16 @@ fn sums_to<C: Borrow<SparseVec<Rational>>>(
     for (i, x) in target {
         sum.add(*i, &-x);
     }
+    #[cfg(test)]
+    SUMS_GROWN.with(|grown| grown.set(grown.get() + sum.dense.len() - rows_before));
     sum.clear()
+}
+
+#[cfg(test)]
+thread_local! {
+    /// How many rows the exact checks' sums ([`sums_to`]) have grown by on this thread: the
+    /// dense memory that checking combinations writes, which the tests bound.
+    pub(crate) static SUMS_GROWN: std::cell::Cell<usize> = const { std::cell::Cell::new(0) };
 }
 
 #[cfg(test)]

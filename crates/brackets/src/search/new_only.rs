@@ -4,7 +4,7 @@
 use trigpoly::{Expr, GaussianRational, Rational, Style, Term, Var, VarKind, Vars};
 
 use crate::error::{EngineError, EngineLimit};
-use crate::modular::{self, sum_by_index, Echelon, Field, Fp, SparseVec};
+use crate::modular::{self, sum_by_index, CombinationSums, Echelon, Field, Fp, SparseVec};
 use crate::system::System;
 
 use super::locate::{ClearedBasis, Locator};
@@ -341,6 +341,7 @@ impl Complement<'_> {
         let mut q = Echelon::<Rational>::new(rows);
         // Vectors by identifier, for checking dependencies exactly.
         let mut inserted: Vec<&SparseVec<Rational>> = Vec::new();
+        let mut sums = CombinationSums::new();
         let mut next_span = 0;
         let mut new = Vec::new();
         for &k in &self.order {
@@ -366,7 +367,7 @@ impl Complement<'_> {
             match fp.insert(id, &leads.restrict(modular::to_fp(v)?)) {
                 None => new.push(k),
                 Some(dependency) => {
-                    if !dependency_holds(&dependency, &inserted, rows, v)? {
+                    if !dependency_holds(&mut sums, &dependency, &inserted, v)? {
                         return None;
                     }
                 }
@@ -483,18 +484,19 @@ impl<'a> Divided<'a> {
     }
 }
 
-/// Whether `dependency`, found modulo p, writes `v` in the `inserted` vectors (of `rows` rows)
-/// over Q too; `None` when its coefficients have no rational reconstruction. Independence
-/// modulo p is independence over Q unless p divides a minor of the span (its rank then drops
-/// modulo p): `exact_complement` rules that out.
+/// Whether `dependency`, found modulo p, writes `v` in the `inserted` vectors over Q too,
+/// summed in `sums`, which every check of one decision shares; `None` when its coefficients
+/// have no rational reconstruction. Independence modulo p is independence over Q unless p
+/// divides a minor of the span (its rank then drops modulo p): `exact_complement` rules that
+/// out.
 fn dependency_holds(
+    sums: &mut CombinationSums,
     dependency: &SparseVec<Fp>,
     inserted: &[&SparseVec<Rational>],
-    rows: usize,
     v: &SparseVec<Rational>,
 ) -> Option<bool> {
     let coeffs = modular::reconstruct_vec(dependency)?;
-    Some(modular::combination_equals(inserted, rows, &coeffs, v))
+    Some(sums.equals(inserted, &coeffs, v))
 }
 
 /// The known integrals of a search for new ones.
