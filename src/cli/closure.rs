@@ -283,7 +283,7 @@ fn builtin_generators(
 ) -> anyhow::Result<Vec<NamedFunction>> {
     let mut all: Vec<&str> = names.iter().map(String::as_str).collect();
     for (n, _) in defined {
-        if !all.contains(&n.as_str()) {
+        if !all.iter().any(|a| a.trim() == n) {
             all.push(n);
         }
     }
@@ -324,22 +324,29 @@ fn builtin_generators(
         bail!(error.to_string());
     }
     let mut generators = Vec::new();
-    for name in all {
+    for written in all {
+        // The name without the spaces around it, which are no part of it; each refusal is
+        // placed in the name as written.
+        let name = written.trim();
         let e = match defined.iter().find(|d| d.0 == name) {
             Some(d) => d.1.clone(),
             None => {
-                refuse_expression_as_generator(name, Caller::CommandLine, |n| {
+                refuse_expression_as_generator(written, Caller::CommandLine, |n| {
                     subject.new_name_refusal(n).is_none()
                         && printed.admit("the generator", n, n).is_ok()
                 })
                 .map_err(|e| anyhow!(e.to_string()))?;
-                refuse_parameter_as_generator(name, Caller::CommandLine, subject.system().vars())
-                    .map_err(|e| anyhow!(e.to_string()))?;
+                refuse_parameter_as_generator(
+                    written,
+                    Caller::CommandLine,
+                    subject.system().vars(),
+                )
+                .map_err(|e| anyhow!(e.to_string()))?;
                 // The parse error first, with its place: its excerpt shows the generator,
                 // which the message put before the place and the error (`'Foo': <command
                 // line>:1:1: unknown name 'Foo'`), where `bracket` and `search` begin with
                 // what is wrong.
-                subject.parse(name).map_err(|e| anyhow!("{e}"))?
+                subject.parse(written).map_err(|e| anyhow!("{e}"))?
             }
         };
         let display = subject.display_name(name);

@@ -24,7 +24,8 @@ impl LoadedSystem {
     /// (`P_1_1` or `P_{1,1}`) or a phase variable (`p_x`), each with the name it prints by
     /// (`P_{1,1}`, `K̄_{1,1}` for `Kbar_1_1`); and after them each of `given` that `names` does
     /// not name, a generator given by its value (the command line's `--define NAME=EXPR`),
-    /// which a name among `names` may name too, where it stands. A blank name, one holding a
+    /// which a name among `names` may name too, where it stands. The spaces around a name are
+    /// no part of it (` L` and `L ` are `L`, ` M` the parameter `M`). A blank name, one holding a
     /// line break or a tab ([`refuse_unshowable_name`]), a function given twice (by one
     /// name or by its name and its display, or one instance written two ways:
     /// [`LoadedSystem::refuse_repeated`]), an expression given as a name (`2*L`, which
@@ -60,7 +61,7 @@ impl LoadedSystem {
         let mut printed = self.admit_given(given)?;
         let mut all: Vec<&str> = names.iter().map(AsRef::as_ref).collect();
         for g in given {
-            if !all.contains(&g.name.as_str()) {
+            if !all.iter().any(|n| n.trim() == g.name) {
                 all.push(&g.name);
             }
         }
@@ -86,17 +87,20 @@ impl LoadedSystem {
         }
         self.refuse_repeated(&all, "the closure")?;
         let mut generators = Vec::with_capacity(all.len());
-        for name in all {
+        for written in all {
+            // The name without the spaces around it (` L`, `L `), which are no part of it;
+            // each refusal is placed in the name as written.
+            let name = written.trim();
             let (expr, display) = match given.iter().find(|g| g.name == name) {
                 Some(g) => (g.expr.clone(), g.display.clone()),
                 None => {
-                    refuse_expression_as_generator(name, self.caller, |n| {
+                    refuse_expression_as_generator(written, self.caller, |n| {
                         self.refuses_new_name(n).is_none()
                             && printed.admit("the generator", n, n).is_ok()
                     })?;
-                    refuse_parameter_as_generator(name, self.caller, self.system.vars())?;
+                    refuse_parameter_as_generator(written, self.caller, self.system.vars())?;
                     // The parse error with its place: its excerpt shows the generator.
-                    let expr = self.parse_argument_within(name, 0..name.len())?;
+                    let expr = self.parse_argument_within(written, 0..written.len())?;
                     (expr, display_as_given(name, |n| self.display_name(n)))
                 }
             };
@@ -200,7 +204,9 @@ pub fn new_name_refusal(
 /// Refuses `name`, given as a closure's generator, where it is an expression rather than a
 /// name (`2*L`, `L+G1`, `{L, G1}`): it has no name of its own for the table and the relations
 /// (`2*L` was named `2_L`, which no relation can hold, and `L*G1` and `L+G1` were both
-/// `L_G1`). The error is at the whole of it, as a name given twice is, and says how to name it
+/// `L_G1`). The spaces around a name are no part of it (` M` is the name `M`, which
+/// [`refuse_parameter_as_generator`] then refuses). The error is at the whole of it, its
+/// surrounding spaces left out, as a name given twice is, and says how to name it
 /// (`--define 'G=2*L'` for [`Caller::CommandLine`], `LoadedSystem::add_function` for a
 /// program), with the first name of `G`, `X`, `Y`, `W` that `free` takes (a name the system
 /// does not have), else `Gen`.
@@ -209,6 +215,7 @@ pub fn new_name_refusal(
 /// use superint::system_file::{refuse_expression_as_generator, Caller, ErrorKind};
 ///
 /// assert!(refuse_expression_as_generator("P_{1,1}", Caller::Program, |_| true).is_ok());
+/// assert!(refuse_expression_as_generator(" L ", Caller::Program, |_| true).is_ok());
 /// let err = refuse_expression_as_generator("L+G1", Caller::Program, |n| n != "G").unwrap_err();
 /// assert_eq!((err.kind, err.line_col()), (ErrorKind::Expression, Some((1, 1))));
 /// assert!(err.message.ends_with(
@@ -221,7 +228,8 @@ pub fn refuse_expression_as_generator(
     caller: Caller,
     mut free: impl FnMut(&str) -> bool,
 ) -> Result<(), FileError> {
-    if reads_as_a_generator_name(name) {
+    let written = name.trim();
+    if reads_as_a_generator_name(written) {
         return Ok(());
     }
     // A name the system does not have, for the example.
@@ -230,9 +238,9 @@ pub fn refuse_expression_as_generator(
         .find(|n| free(n))
         .unwrap_or("Gen");
     // A long expression is shown by its start, and left out of the example.
-    let example = match name.chars().count() > trigpoly::MAX_NAME_CHARS {
+    let example = match written.chars().count() > trigpoly::MAX_NAME_CHARS {
         true => "…",
-        false => name,
+        false => written,
     };
     let (origin, how) = match caller {
         Caller::CommandLine => (
@@ -253,7 +261,7 @@ pub fn refuse_expression_as_generator(
         name,
         format!(
             "{} is an expression, not the name of a function: name it with {how}",
-            trigpoly::quoted_name(name)
+            trigpoly::quoted_name(written)
         ),
     ))
 }

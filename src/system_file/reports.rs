@@ -12,7 +12,7 @@ use trigpoly::{Expr, VarKind};
 use super::claims::{engine_error, parse_condition, parse_rank_condition, CheckedClaim, RankClaim};
 use super::error::{ErrorKind, FileError};
 use super::scope::{instance_of, rewrite_braces};
-use super::text::Text;
+use super::text::{trimmed, Text};
 use super::{Argument, Caller, LoadedSystem};
 use crate::report::{
     factored_in_functions, shown_factored, Entry, Equation, Equations, Expect, FlowKept,
@@ -527,7 +527,7 @@ pub fn given_twice(given: &str, before: &str, what: &str) -> String {
 /// The bracket table of named functions (or family instances such as `K_1_1`, or phase
 /// variables such as `p_x`) of the file, with its entries that are polynomials in `H` and the
 /// file's functions written so below it; all its functions but `H` when `names` is empty. A
-/// blank name, one holding a line break or a tab (first, escaped:
+/// name is read without the spaces around it (` L` is `L`). A blank name, one holding a line break or a tab (first, escaped:
 /// [`refuse_unshowable_name`](super::refuse_unshowable_name)) and one given twice are refused
 /// at their places. An entry that reaches a limit is `?`
 /// ([`TableResult::undecided`](crate::report::TableResult::undecided) lists them, with the
@@ -547,8 +547,9 @@ pub fn table_report(file: &LoadedSystem, names: &[impl AsRef<str>]) -> Result<Re
     }
     // As given, braces and all (`K_{1,1}` beside `K_1_1`).
     file.refuse_repeated(names, "a table")?;
-    let names = tabulated_names(file, names, &defined)?;
-    let system = with_instances(file, &names, &defined)?;
+    let (names, written): (Vec<String>, Vec<&str>) =
+        tabulated_names(file, names, &defined)?.into_iter().unzip();
+    let system = with_instances(file, &names, &written, &defined)?;
     // What fails is a bracket of the file's functions, not the names given.
     let table = BracketTable::compute(&system, &names).map_err(|e| {
         file.computation_failed(&format!("the brackets of {}", names.join(", ")), &e)
@@ -621,19 +622,22 @@ fn written_in_functions(file: &LoadedSystem, table: &BracketTable) -> Vec<Equati
     lines
 }
 
-/// The names a table tabulates: those given, or the file's functions but `H` (`defined`)
-/// when none are; refused when that leaves none.
-fn tabulated_names(
+/// The names a table tabulates, each with the text that wrote it, where its refusals are
+/// placed: those given, without the spaces around them (` L` is `L`), or the file's functions
+/// but `H` (`defined`) when none are; refused when that leaves none.
+fn tabulated_names<'a>(
     file: &LoadedSystem,
-    names: &[impl AsRef<str>],
-    defined: &[String],
-) -> Result<Vec<String>, FileError> {
+    names: &'a [impl AsRef<str>],
+    defined: &'a [String],
+) -> Result<Vec<(String, &'a str)>, FileError> {
     // An instance may be written `K_{2,3}` as well as `K_2_3`.
-    let names: Vec<String> = if names.is_empty() {
-        defined.to_vec()
+    let names: Vec<(String, &str)> = if names.is_empty() {
+        defined.iter().map(|n| (n.clone(), n.as_str())).collect()
     } else {
         let braces = |n: &str| rewrite_braces(n, &file.families, &[]).trim().to_string();
-        names.iter().map(|n| braces(n.as_ref())).collect()
+        (names.iter().map(AsRef::as_ref))
+            .map(|n| (braces(n), n))
+            .collect()
     };
     if names.is_empty() {
         let message = match file.caller {
@@ -659,21 +663,23 @@ fn tabulated_names(
 /// The file's system with the family instances among `names` (`K_2_3`) and its phase
 /// variables (`p_x`, `M1`: the Euclidean algebra's `p_x, p_y, L` with no `[[function]]` for
 /// each momentum) defined as functions of it; a name that is none of them is refused with the
-/// names known (`defined`: the file's functions but `H`).
+/// names known (`defined`: the file's functions but `H`), at its place in the text that
+/// wrote it (`written`, beside each name).
 fn with_instances(
     file: &LoadedSystem,
     names: &[String],
+    written: &[&str],
     defined: &[String],
 ) -> Result<System, FileError> {
     // Every name is looked up before any family instance is expanded.
     let mut instances = Vec::new();
     let mut variables = Vec::new();
-    for name in names {
+    for (name, &written) in names.iter().zip(written) {
         if file.system.get(name).is_ok() {
             continue;
         }
         if let Some(instance) = instance_of(&file.families, name) {
-            instances.push((name, instance));
+            instances.push((name, written, instance));
             continue;
         }
         let vars = file.system.vars();
@@ -682,7 +688,7 @@ fn with_instances(
                 v,
                 VarKind::Coordinate | VarKind::Momentum | VarKind::Poisson | VarKind::Radical,
             )) => variables.push((name, v)),
-            _ => return Err(not_a_function(file, name, defined)),
+            _ => return Err(not_a_function(file, name, written, defined)),
         }
     }
     let mut system: System = file.system.clone();
@@ -691,15 +697,14 @@ fn with_instances(
         let display = system.vars().variable(v).unicode().to_string();
         system.define(name, &display, value)?;
     }
-    for (name, (k, m, n)) in instances {
+    for (name, written, (k, m, n)) in instances {
         if system.get(name).is_ok() {
             continue; // named twice
         }
         // An error is said at the name as given (`K_{900,900}` past the term limit).
-        let given = file.given("<name>", name);
-        let value = file
-            .scope(file.families.len())
-            .expand(k, m, n, &given, || 0..name.len())?;
+        let given = file.given("<name>", written);
+        let value =
+            (file.scope(file.families.len())).expand(k, m, n, &given, || trimmed(0, written).1)?;
         let display = format!("{}_{{{m},{n}}}", file.families[k].display);
         system.define(name, &display, value)?;
     }
@@ -708,8 +713,9 @@ fn with_instances(
 
 /// The refusal of a name given to a table that is no function of the file, listing `H`, the
 /// functions `defined`, the families' instances and the phase variables (an angle and a
-/// parameter are said to be what they are).
-fn not_a_function(file: &LoadedSystem, name: &str, defined: &[String]) -> FileError {
+/// parameter are said to be what they are), at its place in the text that wrote it,
+/// `written` (` M`: the caret under `M`, in column 2).
+fn not_a_function(file: &LoadedSystem, name: &str, written: &str, defined: &[String]) -> FileError {
     let mut known = vec!["H".to_string()];
     known.extend(defined.iter().cloned());
     known.extend(
@@ -749,7 +755,7 @@ fn not_a_function(file: &LoadedSystem, name: &str, defined: &[String]) -> FileEr
         }
     };
     // Refused as a whole, the caret under all of it, as a name given twice is.
-    let source = file.given("<expression>", name);
+    let source = file.given("<expression>", written);
     let text = Text::whole(&source);
     text.error(
         &source,

@@ -1975,6 +1975,101 @@ fn a_name_holding_a_line_break_is_refused_first_in_every_list_of_names() {
     }
 }
 
+/// The spaces around a name are no part of it, in every list of names: a closure's generator
+/// ` M` is the parameter `M`, refused as such (it was refused as an expression, with the
+/// advice to `--define 'G= M'`), ` L` and `L ` are the function `L` (` L` was refused as an
+/// expression, and `L ` printed as `L `, `Zbar ` as `Zbar`, not `Z̄`), of a file and of a
+/// built-in system, from a program too; a table's ` M` and ` Foo` are refused at the name's
+/// own column, 2, in the name as written (they were at column 1 of the name without its
+/// space); and the names of `--symbolic`, `--fix` and `--family` are read so too.
+#[test]
+fn a_name_with_spaces_around_it_is_that_name_in_every_list_of_names() {
+    let rotor = harmonic_rotor_file();
+    let options = ClosureOptions::new(1);
+    let m = "'M' is a parameter of the system, not a function of its phase space";
+    for names in [&["H", " M"][..], &["H", "M "]] {
+        let err = file_closure_report(&rotor, names, &options, Caller::Program).unwrap_err();
+        assert_eq!(err.kind, ErrorKind::Expression, "{names:?}: {err}");
+        let column = 1 + names[1].find('M').unwrap();
+        assert_eq!(err.line_col(), Some((1, column)), "{names:?}: {err}");
+        assert!(err.message.starts_with(m), "{names:?}: {err}");
+    }
+    for (written, shown) in [
+        (" L", "L"),
+        ("L ", "L"),
+        ("Zbar ", "Z̄"),
+        (" P_{1,1} ", "P_{1,1}"),
+    ] {
+        let (report, algebra) =
+            file_closure_report(&rotor, &["H", written], &options, Caller::Program).unwrap();
+        assert_eq!(algebra.display, ["H", shown], "{written:?}");
+        assert_eq!(
+            report.title,
+            format!("Closure of `H`, `{shown}` for the harmonic rotor")
+        );
+    }
+    for system in [
+        &["systems/harmonic-rotor.toml"][..],
+        &["--system", "harmonic"],
+    ] {
+        let closure =
+            |name: &'static str| [&["closure"], system, &["--degree", "1", "H", name]].concat();
+        pretty_assertions::assert_eq!(
+            crate::superint_refused(&closure(" M")),
+            format!(
+                "superint: error: <command line>:1:2: {m}: the brackets and relations hold the \
+                 parameters in their coefficients (--symbolic M keeps it symbolic there)\n 1 \
+                 |  M\n   |  ^\n"
+            )
+        );
+        pretty_assertions::assert_eq!(
+            crate::superint_ok(&[&["--no-timings"], &closure(" Zbar ")[..]].concat()),
+            crate::superint_ok(&[&["--no-timings"], &closure("Zbar")[..]].concat()),
+        );
+        let table = [&["table"], system, &[" M", "L"]].concat();
+        let said = crate::superint_refused(&table);
+        assert!(
+            said.starts_with(
+                "superint: error: <command line>:1:2: 'M' is a parameter, not a function"
+            ),
+            "{said}"
+        );
+        assert!(said.ends_with("\n 1 |  M\n   |  ^\n"), "{said}");
+    }
+    let err = table_report(&rotor, &[" Foo", "L"]).unwrap_err();
+    assert_eq!(
+        (err.kind, err.line_col()),
+        (ErrorKind::Expression, Some((1, 2)))
+    );
+    assert!(err.message.starts_with("'Foo' is not a function"), "{err}");
+    let shown = |names: &[&str]| {
+        let report = table_report(&rotor, names).unwrap();
+        render(&report, Format::Text, &RenderOptions::reproducible())
+    };
+    assert_eq!(shown(&[" L ", "G1"]), shown(&["L", "G1"]));
+    // The lists given to an option read their names so already.
+    let search = [
+        "search",
+        "systems/harmonic-rotor.toml",
+        "--momenta-degree",
+        "1",
+    ];
+    let tower = [
+        "tower",
+        "--system",
+        "systems/harmonic-rotor.toml",
+        "--max",
+        "1",
+    ];
+    for args in [
+        [&search[..], &["--symbolic", " M , omega"]].concat(),
+        [&search[..], &["--fix", " M =2"]].concat(),
+        [&tower[..], &["--family", " K "]].concat(),
+    ] {
+        crate::superint_ok(&args);
+    }
+}
+
 /// A parameter named by its display as a closure's generator (`ω₊`, the parameter `a` of
 /// `systems/fock-darwin.toml`, printed so) is refused as the parameter it is, as `a` is: the
 /// name rule took no subscript sign, so `ω₊` was refused as an expression, with the advice to
