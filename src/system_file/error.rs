@@ -101,7 +101,8 @@ impl std::str::FromStr for ErrorKind {
 pub struct UnknownErrorKind(pub String);
 
 /// Where in its source an error is: 1-based line and column (in characters), the source line
-/// and the caret under the offending text.
+/// and the caret under the offending text; where that text runs on to a later line, that line
+/// and its caret too ([`Excerpt::last`]), so that both of its ends are seen.
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub struct Location {
     /// 1-based line.
@@ -114,6 +115,8 @@ pub struct Location {
     pad: String,
     /// How many carets.
     width: usize,
+    /// The line where the offending text ends, when it is a later one.
+    last: Option<Box<Location>>,
 }
 
 /// A problem with a system file or a text given to it: kind, origin (the file's path; a text a
@@ -256,10 +259,16 @@ impl fmt::Display for FileError {
                     self.origin, l.line, l.column, self.message
                 )?;
                 if !l.excerpt.is_empty() || l.width > 0 {
-                    let number = l.line.to_string();
-                    let gutter = " ".repeat(number.len());
-                    write!(f, "\n {number} | {}", l.excerpt)?;
-                    write!(f, "\n {gutter} | {}{}", l.pad, "^".repeat(l.width.max(1)))?;
+                    // The line numbers right-aligned, the last line's the widest.
+                    let last = l.last.as_deref();
+                    let gutter = last.unwrap_or(l).line.to_string().len();
+                    l.write_excerpt(f, gutter)?;
+                    if let Some(last) = last {
+                        if last.line > l.line + 1 {
+                            write!(f, "\n {:>gutter$} |", "…")?;
+                        }
+                        last.write_excerpt(f, gutter)?;
+                    }
                 }
             }
         }
@@ -267,6 +276,16 @@ impl fmt::Display for FileError {
             write!(f, "\nhint: {h}")?;
         }
         Ok(())
+    }
+}
+
+impl Location {
+    /// The numbered source line and the caret under it, each on a line of its own after a
+    /// line break, the number right-aligned in a gutter of `gutter` characters.
+    fn write_excerpt(&self, f: &mut fmt::Formatter<'_>, gutter: usize) -> fmt::Result {
+        write!(f, "\n {:>gutter$} | {}", self.line, self.excerpt)?;
+        let carets = "^".repeat(self.width.max(1));
+        write!(f, "\n {:gutter$} | {}{carets}", "", self.pad)
     }
 }
 
@@ -440,6 +459,7 @@ impl From<Excerpt> for Location {
             excerpt: excerpt.text,
             pad: excerpt.pad,
             width: excerpt.width,
+            last: excerpt.last.map(|last| Box::new(Location::from(*last))),
         }
     }
 }
@@ -493,6 +513,7 @@ pub(crate) fn locate_bytes(bytes: &[u8], offset: usize) -> Location {
         excerpt: String::new(),
         pad: String::new(),
         width: 0,
+        last: None,
     }
 }
 

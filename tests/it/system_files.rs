@@ -5855,3 +5855,75 @@ fn a_built_in_systems_expressions_are_not_taken_for_files_of_their_names() {
         );
     }
 }
+
+/// A refused text that runs on past its first line shows the line where it ends too, in a
+/// system file's multi-line string (the Hamiltonian's divisor, a claim's, with `…` for the
+/// lines between) and on the command line (a `--when` and an expression given over two
+/// lines), the line numbers right-aligned: the excerpt showed the first line alone, `x/(x +`,
+/// whose divisor the reader could not see closed.
+#[test]
+fn a_refusal_over_several_lines_shows_both_its_ends() {
+    let declare = |d: &str| {
+        format!(
+            "only division by a nonzero constant, a single term (monomial) or a product of \
+             powers of declared denominators is exact here; declare it (or its factors) as a \
+             denominator: denominators = [\"{d}\"] in [phase_space]"
+        )
+    };
+    let files = [
+        (
+            "hamiltonian = \"\"\"\np_x^2/2 +\n  x^2/(1 +\n  x)\"\"\"\n",
+            format!(
+                "h.toml:4:7: cannot divide by x + 1: {}\n 4 |   x^2/(1 +\n   |       ^^^^\n \
+                 5 |   x)\"\"\"\n   |   ^^",
+                declare("x + 1")
+            ),
+        ),
+        (
+            "hamiltonian = \"p_x^2/2\"\n# a\n# b\n[[claim]]\nid = \"a\"\n\
+             claim = \"\"\"{x, H} = x/(x +\n\n\n  1 +\n  p_x) + 1\"\"\"\n",
+            format!(
+                "h.toml:7:23: cannot divide by p_x + x + 1: {}\n  7 | claim = \"\"\"{{x, H}} = \
+                 x/(x +\n    |                       ^^^^\n  … |\n 11 |   p_x) + 1\"\"\"\n    \
+                 |   ^^^^",
+                declare("p_x + x + 1")
+            ),
+        ),
+    ];
+    for (body, said) in files {
+        let text = format!("name = \"oscillator\"\n{body}[phase_space]\ncoordinates = [\"x\"]\n");
+        let limits = superint::system_file::LimitsOverride::default();
+        let err = match superint::system_file::load_str("h.toml", &text, &limits) {
+            Err(e) => e,
+            Ok(file) => superint::system_file::check_report([&file]).unwrap_err(),
+        };
+        assert_eq!(err.to_string(), said, "{text}");
+    }
+    let refused = |args: &[&str]| {
+        let o = superint_in(root(), args);
+        assert_eq!(o.status.code(), Some(2), "{args:?}");
+        String::from_utf8(o.stderr).expect("UTF-8")
+    };
+    let rotor = "systems/harmonic-rotor.toml";
+    let when = ["--when", "x = 1/(y +\n p_y)"];
+    assert_eq!(
+        refused(&[&["bracket", rotor, "x", "H"][..], &when].concat()),
+        format!(
+            "superint: error: <command line>:1:7: cannot divide by p_y + y: {}\n 1 | x = 1/(y \
+             +\n   |       ^^^^\n 2 |  p_y)\n   |  ^^^^\n",
+            declare("p_y + y")
+        )
+    );
+    assert_eq!(
+        refused(&[&["search", "--system", "harmonic"][..], &when].concat()),
+        refused(&[&["bracket", rotor, "x", "H"][..], &when].concat()),
+    );
+    assert_eq!(
+        refused(&["expand", rotor, "x/(x +\n y)"]),
+        format!(
+            "superint: error: <command line>:1:3: cannot divide by x + y: {}\n 1 | x/(x +\n   |   \
+             ^^^^\n 2 |  y)\n   |  ^^\n",
+            declare("x + y")
+        )
+    );
+}

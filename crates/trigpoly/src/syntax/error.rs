@@ -320,14 +320,18 @@ fn rendered(message: &str, excerpt: &Excerpt) -> String {
     rendered_at(&place, message, excerpt)
 }
 
-/// `place: message`, the line and the caret.
+/// `place: message`, the line and the caret; for a span that ends on a later line, that line
+/// and its caret too, after `…` where lines lie between them.
 fn rendered_at(place: &str, message: &str, excerpt: &Excerpt) -> String {
-    format!(
-        "{place}: {message}\n  {}\n  {}{}",
-        excerpt.text,
-        excerpt.pad,
-        "^".repeat(excerpt.width)
-    )
+    let shown = |e: &Excerpt| format!("\n  {}\n  {}{}", e.text, e.pad, "^".repeat(e.width));
+    let mut out = format!("{place}: {message}{}", shown(excerpt));
+    if let Some(last) = &excerpt.last {
+        if last.line > excerpt.line + 1 {
+            out.push_str("\n  …");
+        }
+        out.push_str(&shown(last));
+    }
+    out
 }
 
 /// The message with its place, line and caret when the error knows its source
@@ -351,13 +355,14 @@ const EXCERPT_CONTEXT: usize = 40;
 
 /// The part of a source line shown under an error, and the caret under the offending span:
 /// the whole line, or for a line past 100 characters (a generated expression pasted into a
-/// file) a window of 40 characters either side of the caret, cut with `…`. Made by
-/// [`Excerpt::of`] and read. A field may be added, so a pattern of one names the fields it
-/// reads and `..`:
+/// file) a window of 40 characters either side of the caret, cut with `…`; and where the span
+/// runs on past that line (`x/(x +` then `y)`), the line where it ends, [`Excerpt::last`], so
+/// that both ends of what is refused are seen. Made by [`Excerpt::of`] and read. A field may
+/// be added, so a pattern of one names the fields it reads and `..`:
 ///
 /// ```compile_fail,E0638
 /// fn line(excerpt: trigpoly::syntax::Excerpt) -> usize {
-///     let trigpoly::syntax::Excerpt { line, column, text, pad, width } = excerpt;
+///     let trigpoly::syntax::Excerpt { line, column, text, pad, width, last } = excerpt;
 ///     line
 /// }
 /// ```
@@ -374,17 +379,51 @@ pub struct Excerpt {
     pub pad: String,
     /// How many carets (at least one).
     pub width: usize,
+    /// Where the span ends on a later line than it starts (past the blanks it ends with), that
+    /// line's excerpt, its caret under the span's part of it from the line's first character
+    /// that is not blank (its `line` and `column` that character's), with no `last` of its own.
+    pub last: Option<Box<Excerpt>>,
 }
 
 impl Excerpt {
     /// The place and excerpt of the line of `src` where `span` starts; the caret covers the
-    /// span's part of that line.
+    /// span's part of that line. Where the span runs on to a later line, [`Excerpt::last`] is
+    /// the line where it ends.
+    ///
+    /// ```
+    /// use trigpoly::{Excerpt, Span};
+    ///
+    /// let src = "x/(x +\n  y) + 1";
+    /// let excerpt = Excerpt::of(src, Span::new(2, 12));
+    /// assert_eq!((excerpt.line, excerpt.column, excerpt.width), (1, 3, 4));
+    /// let last = excerpt.last.expect("the span ends on line 2");
+    /// assert_eq!((last.line, last.column, last.width), (2, 3, 2));
+    /// assert_eq!((last.text.as_str(), last.pad.as_str()), ("  y) + 1", "  "));
+    /// ```
     #[must_use]
     pub fn of(src: &str, span: Span) -> Excerpt {
         let start = char_floor(src, span.start);
+        let line_end = src[start..].find('\n').map_or(src.len(), |i| start + i);
+        let end = char_floor(src, span.end).max(start);
+        let mut excerpt = Excerpt::on_line(src, start, end.min(line_end));
+        // The span's end past the blanks it ends with (a line break after its text), and,
+        // on a later line, that line from its first character that is not blank.
+        let last_end = start + src[start..end].trim_end().len();
+        if last_end > line_end {
+            let last_line = src[..last_end].rfind('\n').map_or(0, |i| i + 1);
+            let text = &src[last_line..last_end];
+            let from = last_line + text.len() - text.trim_start().len();
+            excerpt.last = Some(Box::new(Excerpt::on_line(src, from, last_end)));
+        }
+        excerpt
+    }
+
+    /// The excerpt of the line of `src` where byte `start` stands, the caret under
+    /// `start..end` (which that line holds).
+    fn on_line(src: &str, start: usize, end: usize) -> Excerpt {
         let line_start = src[..start].rfind('\n').map_or(0, |i| i + 1);
         let line_end = src[start..].find('\n').map_or(src.len(), |i| start + i);
-        let end = char_floor(src, span.end).clamp(start, line_end);
+        let end = end.clamp(start, line_end);
         let line: Vec<char> = src[line_start..line_end]
             .trim_end_matches('\r')
             .chars()
@@ -410,6 +449,7 @@ impl Excerpt {
             text: format!("{cut_before}{window}{cut_after}"),
             pad: " ".repeat(cut_before.chars().count()) + &pad,
             width: width.min(to.saturating_sub(column)).max(1),
+            last: None,
         }
     }
 }

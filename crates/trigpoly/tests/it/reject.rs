@@ -922,6 +922,39 @@ fn a_long_line_renders_as_a_window_around_the_error() {
     );
 }
 
+/// A refused span that runs on past its first line (a divisor opened on one line and closed
+/// on another) shows the line where it ends too, its caret from that line's first character
+/// that is not blank, so that both of its ends are seen (the excerpt showed `x/(x +` alone),
+/// with `…` for the lines between; a span that ends with a line break after its text is on
+/// one line.
+#[test]
+fn a_span_over_several_lines_shows_both_its_ends() {
+    let vars = phase_space();
+    let message = "cannot divide by x + y: only division by a nonzero constant, a single term \
+                   (monomial) or a product of powers of declared denominators is exact here; \
+                   declare it (or its factors) as a denominator: denominators = [\"x + y\"] in \
+                   [phase_space]";
+    let rendered = [
+        (
+            "x/(x +\n  y) + 1",
+            "\n  x/(x +\n    ^^^^\n    y) + 1\n    ^^",
+        ),
+        ("x/(x\n\n +\n\ty)", "\n  x/(x\n    ^^\n  …\n  \ty)\n  \t^^"),
+    ];
+    for (src, excerpt) in rendered {
+        let err = Poly::<Rational>::parse(&vars, src).expect_err("not a monomial");
+        assert_eq!(err.message(), message);
+        assert_eq!(
+            err.to_string(),
+            format!("line 1, column 3: {message}{excerpt}")
+        );
+        assert_eq!(err.render(src), err.to_string());
+    }
+    let excerpt = trigpoly::Excerpt::of("x/(x +\n", trigpoly::Span::new(2, 7));
+    assert_eq!((excerpt.line, excerpt.column, excerpt.width), (1, 3, 4));
+    assert_eq!(excerpt.last, None);
+}
+
 /// A refused division or negative power names a long polynomial by its size, not its text (a
 /// divisor of 24 k terms once made a 270 MB message); a short one is still shown in full.
 #[test]
