@@ -5,7 +5,7 @@ use std::path::PathBuf;
 
 use anyhow::{anyhow, bail};
 use brackets::closure::ClosureOptions;
-use brackets::{EngineError, NamedFunction};
+use brackets::NamedFunction;
 use clap::Args;
 use superint::discovery::{closure_report_for, ListRefusal};
 use superint::render::render;
@@ -13,9 +13,8 @@ use superint::report::Report;
 use superint::system_file::{
     given_twice, name_as_identifier, refuse_expression_as_generator, refuse_parameter_as_generator,
     refuse_unshowable_name, trimmed, Caller, ErrorKind, FileError, PrintedNames, COMMAND_LINE,
-    MAX_DEGREE_CEILING,
 };
-use trigpoly::{Expr, LimitKind};
+use trigpoly::Expr;
 
 use super::input::BuiltinArg;
 use super::limits::LimitsArgs;
@@ -232,40 +231,8 @@ fn close(a: &ClosureArgs, names: &[String], subject: &Subject) -> anyhow::Result
         &options,
         Caller::CommandLine,
     )
-    .map_err(|e| match e {
-        // The products of the generators together: the term limit raises them, or a lower
-        // degree forms fewer.
-        EngineError::ClosureTooManyTerms { .. } => {
-            anyhow!("computing the closure: {e}; raise it with --max-terms N, or lower --degree")
-        }
-        // Which product passed it is the engine's own business; what the user can change is
-        // the limit or the degree. The algebra's own advice (`raise the limit or simplify the
-        // input`) gives way to this one, which names the option of the limit that stopped it
-        // (the machine's memory has none: only a lower degree forms less).
-        EngineError::Algebra(e) if e.limit().is_some() => {
-            let said = e.without_advice();
-            // A degree past the most --max-degree may be has no option either.
-            let raise = match e.limit() {
-                Some(LimitKind::Terms) => "raise the limit with --max-terms N, or ".to_string(),
-                Some(LimitKind::Work) => {
-                    "raise the limit with --max-term-products N, or ".to_string()
-                }
-                Some(LimitKind::Degree(n)) if n > u64::from(MAX_DEGREE_CEILING) => format!(
-                    "no limit reaches this exponent (--max-degree is at most \
-                     {MAX_DEGREE_CEILING}): "
-                ),
-                Some(LimitKind::Degree(_)) => {
-                    "raise the limit with --max-degree D, or ".to_string()
-                }
-                _ => String::new(),
-            };
-            anyhow!(
-                "computing the closure: {said}; {raise}lower --degree (the products of the \
-                 generators up to it are formed)"
-            )
-        }
-        e => anyhow::Error::new(e).context("computing the closure"),
-    })?;
+    // A limit's error says what to do about it in the command's options already.
+    .map_err(|e| anyhow::Error::new(e).context("computing the closure"))?;
     Ok(subject.tag(report))
 }
 

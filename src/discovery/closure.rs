@@ -6,14 +6,14 @@ use std::time::Instant;
 
 use brackets::closure::{closure_of, relation_text, Bracket, Closure, ClosureOptions};
 use brackets::{EngineError, NamedFunction, System};
-use trigpoly::{Style, VarKind};
+use trigpoly::{AlgebraError, LimitKind, Style, VarKind};
 
 use crate::report::{
     counted, listed, written_in_functions, ClaimResult, ClosureFacts, Entry, Equation, Equations,
     Facts, Report, Section, SummaryKind, TableResult,
 };
 
-use crate::system_file::{Caller, FileError, LoadedSystem};
+use crate::system_file::{Caller, FileError, LoadedSystem, MAX_DEGREE_CEILING};
 
 use super::{agreeing, off_one_note, parameter_facts, parameter_names, HeldAt};
 
@@ -50,7 +50,10 @@ pub fn closure_report(
 }
 
 /// [`closure_report`] built for `caller`: its advice names the command line's options
-/// (`--degree`) for [`Caller::CommandLine`], as `superint closure` prints it.
+/// (`--degree`) for [`Caller::CommandLine`], as `superint closure` prints it, and so does its
+/// error where a limit of the ring stopped the closure: an [`EngineError::PastLimit`] of that
+/// limit that says to raise it or lower the degree (`raise it with Limits::max_terms, or
+/// lower ClosureOptions::degree`; `--max-terms N`, `--degree` on the command line).
 pub fn closure_report_for(
     name: &str,
     system: &System,
@@ -59,7 +62,7 @@ pub fn closure_report_for(
     caller: Caller,
 ) -> Result<(Report, Closure), EngineError> {
     let start = Instant::now();
-    let c = closure_of(system, generators, options)?;
+    let c = closure_of(system, generators, options).map_err(|e| advised(e, caller))?;
     let holding = Holding {
         held: HeldAt::new(options.condition.as_ref(), system.vars(), &c.parameters),
         fixed: !c.parameters.is_empty(),
@@ -86,7 +89,7 @@ pub fn closure_report_for(
     };
     let names = Names::of_system(system);
     let sections = vec![
-        structure.section(&gens)?,
+        structure.section(&gens).map_err(|e| advised(e, caller))?,
         relations_section(&c, &holding, names, !options.symbolic.is_empty()),
     ];
     Ok((
@@ -100,6 +103,85 @@ pub fn closure_report_for(
         },
         c,
     ))
+}
+
+/// A closure stopped at a limit of the ring, `e` (the products of the generators together
+/// past the term limit, or one operation past the term, work or degree limit), said with what
+/// to do about it in the options of `caller`, the one place where the command line's advice
+/// and the library's are worded: raise the limit that stopped it, where one reaches it, or
+/// lower the degree, up to which the products of the generators are formed (`raise it with
+/// Limits::max_terms, or lower ClosureOptions::degree`; `--max-terms N`, `--degree` on the
+/// command line). The algebra's own advice (`raise the limit or simplify the input`) gives
+/// way to it. The error is then an [`EngineError::PastLimit`] of the same limit
+/// ([`EngineError::limit`]), whose message says so. Any other error is as it is: the
+/// closure's own limit, `ClosureOptions::max_monomials`, says what to do already.
+fn advised(e: EngineError, caller: Caller) -> EngineError {
+    let (said, limit, raise) = match &e {
+        // The products of the generators together: the term limit raises them, or a lower
+        // degree forms fewer.
+        EngineError::ClosureTooManyTerms { limit, .. } => (
+            e.to_string(),
+            *limit,
+            format!(
+                "raise it with {}, or ",
+                caller.names("--max-terms N", "Limits::max_terms")
+            ),
+        ),
+        // Which product passed it is the engine's own business; what the caller can change
+        // is the limit or the degree (the machine's memory has no setting: only a lower degree
+        // forms less).
+        EngineError::Algebra(a) => {
+            let raise = |setting: &str| format!("raise the limit with {setting}, or ");
+            let raise = match a.limit() {
+                None => return e,
+                Some(LimitKind::Terms) => raise(caller.names("--max-terms N", "Limits::max_terms")),
+                Some(LimitKind::Work) => {
+                    raise(caller.names("--max-term-products N", "Limits::max_term_products"))
+                }
+                // A degree past the most the degree limit may be has no setting either.
+                Some(LimitKind::Degree(n)) if n > u64::from(MAX_DEGREE_CEILING) => format!(
+                    "no limit reaches this exponent ({} is at most {MAX_DEGREE_CEILING}): ",
+                    caller.names("--max-degree", "max_degree")
+                ),
+                Some(LimitKind::Degree(_)) => {
+                    raise(caller.names("--max-degree D", "Limits::max_degree"))
+                }
+                Some(_) => String::new(),
+            };
+            (a.without_advice(), limit_in_force(a), raise)
+        }
+        _ => return e,
+    };
+    let Some(which) = e.limit() else {
+        return e;
+    };
+    let degree = caller.names("--degree", "ClosureOptions::degree");
+    let formed = match e {
+        EngineError::ClosureTooManyTerms { .. } => "",
+        _ => " (the products of the generators up to it are formed)",
+    };
+    EngineError::PastLimit {
+        which,
+        limit,
+        message: format!("{said}; {raise}lower {degree}{formed}"),
+    }
+}
+
+/// The limit in force that the algebra's refusal `a` names, as a count: of terms, of term
+/// products, or the degree; 0 for the machine's memory, which has none.
+fn limit_in_force(a: &AlgebraError) -> usize {
+    let wide = |n: u64| usize::try_from(n).unwrap_or(usize::MAX);
+    match *a {
+        AlgebraError::TooManyTerms { limit } | AlgebraError::TooManyPrintedTerms { limit, .. } => {
+            limit
+        }
+        AlgebraError::TooMuchWork { limit, .. } | AlgebraError::TooMuchSummedWork { limit, .. } => {
+            wide(limit)
+        }
+        AlgebraError::ExponentTooLarge { limit, .. }
+        | AlgebraError::OrderTooLarge { limit, .. } => wide(u64::from(limit)),
+        _ => 0,
+    }
 }
 
 /// Which symbols of the table and its equations stand for which generators, where the
@@ -141,8 +223,10 @@ fn symbols_text(c: &Closure) -> Option<Entry> {
 /// `<command line>` as the file's [`Caller`] says); what the engine then refuses (a limit, a
 /// condition the flow leaves) is an error of the file without a place, of kind `Limit` (with
 /// the hint to raise the limit, but for [`ClosureOptions::max_monomials`], which its message
-/// names) or `Engine`, as [`table_report`](crate::system_file::table_report)'s are. `caller`
-/// chooses whose options the report's advice names, as for [`closure_report_for`].
+/// names; a limit of the ring's message says to raise it or lower the degree, as
+/// [`closure_report_for`]'s does) or `Engine`, as
+/// [`table_report`](crate::system_file::table_report)'s are. `caller` chooses whose options
+/// the report's advice names, as for [`closure_report_for`].
 ///
 /// ```
 /// use superint::discovery::relation_text;

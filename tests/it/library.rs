@@ -1386,6 +1386,82 @@ fn a_closure_past_the_term_limit_says_that_limit() {
     assert!(err.is_limit());
 }
 
+/// A closure's report stopped at a limit says what to do about it in the library's settings,
+/// as the command line says it in its options: raise the limit, or lower
+/// `ClosureOptions::degree`, of a system built in code and of a file alike (a program's error
+/// said the limit alone, and a file's hint how to raise it, never the degree); the error is
+/// still of that limit, by type, and a file's still has its hint.
+#[test]
+fn a_closures_report_at_a_limit_advises_the_librarys_settings() {
+    let terms = "the products of the generators up to degree 4 would have more than 60 terms \
+                 together (the term limit); raise it with Limits::max_terms, or lower \
+                 ClosureOptions::degree";
+    let small = systems::Rotor::Harmonic
+        .system(Limits::default().max_terms(60))
+        .unwrap();
+    let generators: Vec<NamedFunction> = SU2
+        .iter()
+        .map(|&n| NamedFunction::new(n, n, small.get(n).unwrap().clone()))
+        .collect();
+    let err = closure_report(
+        "the harmonic rotor",
+        &small,
+        &generators,
+        &ClosureOptions::new(4),
+    )
+    .unwrap_err();
+    assert_eq!(err.to_string(), terms);
+    assert_eq!(err.limit(), Some(EngineLimit::Ring(LimitKind::Terms)));
+    let path = concat!(env!("CARGO_MANIFEST_DIR"), "/systems/harmonic-rotor.toml");
+    let rotor = load_system_file(path, &LimitsOverride::default().max_terms(60)).unwrap();
+    let err =
+        file_closure_report(&rotor, &SU2, &ClosureOptions::new(4), Caller::Program).unwrap_err();
+    assert_eq!(err.kind, ErrorKind::Limit);
+    assert_eq!(err.message, format!("computing the closure: {terms}"));
+    assert!(err.hint.is_some_and(|h| h.contains("max_terms")));
+    // One operation past the work limit, and past the degree limit.
+    let options = ClosureOptions::new(3);
+    let few_products = LimitsOverride::default().max_term_products(1000);
+    let mut work = load_system_file(path, &few_products).unwrap();
+    work.add_function("X", "X", "(x+y+p_x+p_y+M+1)^8").unwrap();
+    let err = file_closure_report(&work, &["L", "X"], &options, Caller::Program).unwrap_err();
+    assert_eq!(err.kind, ErrorKind::Limit);
+    assert_eq!(
+        err.message,
+        "computing the closure: the product of 495 terms by 495 would form 245025 term \
+         products, past the limit of 1000 (the work limit); raise the limit with \
+         Limits::max_term_products, or lower ClosureOptions::degree (the products of the \
+         generators up to it are formed)"
+    );
+    let mut high = harmonic_rotor_file();
+    high.add_function("X", "X", "p_y^300").unwrap();
+    let err = file_closure_report(&high, &["L", "X"], &ClosureOptions::new(4), Caller::Program)
+        .unwrap_err();
+    assert_eq!(err.kind, ErrorKind::Limit);
+    assert!(
+        err.message.ends_with(
+            "; raise the limit with Limits::max_degree, or lower ClosureOptions::degree (the \
+             products of the generators up to it are formed)"
+        ),
+        "{err}"
+    );
+    // The command line's, in its options.
+    let cli = file_closure_report(
+        &high,
+        &["L", "X"],
+        &ClosureOptions::new(4),
+        Caller::CommandLine,
+    )
+    .unwrap_err();
+    assert!(
+        cli.message.ends_with(
+            "; raise the limit with --max-degree D, or lower --degree (the \
+                               products of the generators up to it are formed)"
+        ),
+        "{cli}"
+    );
+}
+
 /// What is wrong whatever the limits is no limit: a search or a closure on a condition the
 /// flow leaves, and a generator the system does not name.
 #[test]

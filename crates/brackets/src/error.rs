@@ -80,8 +80,10 @@ pub enum EngineError {
     /// [`SearchOptions::max_products`](crate::SearchOptions::max_products), counted as each is
     /// formed, and, counted before any is formed, more monomials in the generators than
     /// [`ClosureOptions::max_monomials`](crate::ClosureOptions) or a search space of more
-    /// unknowns than the term limit. [`EngineError::limit`] says which, `which`;
-    /// the message says it in words, with the setting that raises it.
+    /// unknowns than the term limit; and a limit of the ring that a caller says with what to
+    /// do about it (a closure's report: raise the limit, or lower the degree).
+    /// [`EngineError::limit`] says which, `which`; the message says it in words, with the
+    /// setting that raises it.
     #[error("{message}")]
     PastLimit {
         /// Which limit.
