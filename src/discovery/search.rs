@@ -558,7 +558,9 @@ pub fn search_report_for(
 /// ([`LoadedSystem::integrals_in_functions_and_instances`]): what `superint search FILE`
 /// prints, `I91 = −8 Q_{1,2}` for the Fock–Darwin search at `a = 2b`; and each amplitude
 /// `A` of an integral `Re(A e^{−ikθ})` as a polynomial in `H` and the functions
-/// ([`LoadedSystem::amplitudes_in_functions`]), `A7 = Z_y` for the 3D rotor at `Ω = ω`.
+/// ([`LoadedSystem::amplitudes_in_functions`]), `A7 = Z_y` for the 3D rotor at `Ω = ω`. Its
+/// sections are about the file ([`Section::file`](crate::report::Section::file)), as
+/// [`file_closure_report`](super::file_closure_report)'s are.
 ///
 /// ```
 /// use superint::brackets::search::{SearchOptions, SearchSpace};
@@ -574,6 +576,7 @@ pub fn search_report_for(
 /// let (report, _) = file_search_report(&fd, &options, Caller::Program)?;
 /// let text = render(&report, Format::Text, &Options::reproducible());
 /// assert!(text.contains("= −8 Q_{1,2}") && text.contains("= 8 P_{1,2}"));
+/// assert!(report.sections.iter().all(|s| s.file.as_deref() == Some("systems/fock-darwin.toml")));
 /// # Ok::<(), Box<dyn std::error::Error>>(())
 /// ```
 pub fn file_search_report(
@@ -585,13 +588,16 @@ pub fn file_search_report(
         file,
         condition: options.condition.as_ref(),
     };
-    search_report_with(
+    let (report, r) = search_report_with(
         &file.the_name(),
         file.system(),
         options,
         caller,
         Some(&restate),
-    )
+    )?;
+    // Its sections about the file, as a closure's report of a file and every report of
+    // `system_file` mark theirs: of several files' reports, a reader tells each one's file.
+    Ok((report.about_file(&file.source().origin), r))
 }
 
 /// How a search's shown integrals, and the amplitudes of their complex forms, are restated

@@ -1852,6 +1852,65 @@ fn a_files_closure_from_a_program_is_the_command_lines() {
     }
 }
 
+/// A system file's search from a program (`file_search_report`) marks its sections with the
+/// file, as a file's closure does, so that a reader of several files' reports tells each one's
+/// file: its JSON's sections said `"file": null`, where `superint search FILE` and a closure's
+/// report said the file; with the command line's caller it is what `superint search FILE`
+/// prints, whole, in every format (text, Markdown and LaTeX name no section's file).
+#[test]
+fn a_files_search_from_a_program_is_about_its_file_as_the_command_lines() {
+    let path = "systems/fock-darwin.toml";
+    let fd = load_system_file(path, &LimitsOverride::default())
+        .unwrap()
+        .with_caller(Caller::CommandLine);
+    // The command line's space: its degrees of the kinds the file has none of are 2 and 1.
+    let space = SearchSpace::default()
+        .momenta_degree(2)
+        .positions_degree(2)
+        .trig_degree(0)
+        .poisson_degree(2)
+        .denominators_degree(2)
+        .radicals_degree(1);
+    let options = SearchOptions::new(space).when(fd.condition("a = 2*b").unwrap());
+    let (report, _) = file_search_report(&fd, &options, Caller::CommandLine).unwrap();
+    let (closure, _) =
+        file_closure_report(&fd, &["H", "L"], &ClosureOptions::new(1), Caller::Program).unwrap();
+    for sections in [&report.sections, &closure.sections] {
+        assert!(sections.iter().all(|s| s.file.as_deref() == Some(path)));
+    }
+    let args = [
+        "search",
+        path,
+        "--when",
+        "a = 2*b",
+        "--momenta-degree",
+        "2",
+        "--positions-degree",
+        "2",
+        "--trig-degree",
+        "0",
+        "--no-timings",
+    ];
+    for format in Format::ALL {
+        let printed = crate::superint_ok(&[&args[..], &["--format", format.name()]].concat());
+        let rendered = render(&report, format, &RenderOptions::reproducible());
+        pretty_assertions::assert_eq!(rendered, printed, "{format:?}");
+    }
+    let json: serde_json::Value = serde_json::from_str(&render(
+        &report,
+        Format::Json,
+        &RenderOptions::reproducible(),
+    ))
+    .unwrap();
+    let files: Vec<&serde_json::Value> = json["sections"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|s| &s["file"])
+        .collect();
+    assert_eq!(files, [path, path]);
+}
+
 /// A name that names no generator is refused by the library as by the command line, before
 /// anything is computed, typed, at its line and column in the name: a blank one, a function
 /// given twice (by its name, by its name and display, an instance in two spellings), an
