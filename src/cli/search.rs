@@ -441,7 +441,8 @@ impl Subject {
                 let shift = at - blank.len();
                 let placed = blank + src;
                 // An error is rendered as a file's command-line text's is, and as the
-                // warnings below are: `<command line>:1:5:`, then the numbered line.
+                // warnings below are: `<command line>:1:5:`, then the numbered line; one
+                // that a limit stopped is of kind `limit`, with its hint (`with_cause`).
                 let (e, readings) =
                     Expr::parse_noting(s.vars(), &placed, s.as_ref()).map_err(|e| {
                         let span = shift + e.span.start..shift + e.span.end;

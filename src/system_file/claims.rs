@@ -152,14 +152,11 @@ impl From<EngineError> for FileError {
                 error.span.start..error.span.end,
                 error.message(),
             )
-            .with_cause(error.cause())
-            .classified_by_cause(),
+            .with_cause(error.cause()),
             // Located by its own excerpt when it knows its source.
             EngineError::Parse { error, .. } if error.excerpt().is_some() => error.into(),
             EngineError::Parse { message, error, .. } => {
-                FileError::new(ErrorKind::Expression, expression, message)
-                    .with_cause(error.cause())
-                    .classified_by_cause()
+                FileError::new(ErrorKind::Expression, expression, message).with_cause(error.cause())
             }
             e => {
                 let mut err = engine_error(&Source::new("<program>", ""), 0..0, &e);

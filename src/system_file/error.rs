@@ -189,24 +189,39 @@ impl FileError {
         self
     }
 
-    /// The same error, of an expression whose parse met `cause` ([`FileError::cause`]).
+    /// The same error, of an expression whose parse met `cause` ([`FileError::cause`]), and
+    /// classified by it as the loader classifies a text's error: of kind
+    /// [`ErrorKind::Limit`], with the hint that says how to raise the limit, where a limit
+    /// stopped the parse ([`ParseCause::limit`](trigpoly::ParseCause::limit)); otherwise of
+    /// its kind. By this one rule a parse that a limit stopped is a limit whether it reaches
+    /// a program through the loader or through `?`, or the command line from a built-in
+    /// system's text.
+    ///
+    /// ```
+    /// use superint::system_file::{ErrorKind, FileError};
+    /// use superint::trigpoly::ParseCause;
+    ///
+    /// let power = ParseCause::PowerPastLimit { power: Some(5000), limit: 1000 };
+    /// let err = FileError::at(ErrorKind::Expression, "<command line>", "x^5000", 2..6, "past")
+    ///     .with_cause(&power);
+    /// assert_eq!(err.kind, ErrorKind::Limit);
+    /// assert!(err.hint.is_some_and(|h| h.contains("max_degree")));
+    /// let err = FileError::new(ErrorKind::Expression, "<command line>", "no")
+    ///     .with_cause(&ParseCause::Decimal);
+    /// assert_eq!((err.kind, err.hint), (ErrorKind::Expression, None));
+    /// ```
     #[must_use]
     pub fn with_cause(mut self, cause: &trigpoly::ParseCause) -> Self {
         self.cause = match cause {
             trigpoly::ParseCause::Syntax => None,
             cause => Some(Box::new(cause.clone())),
         };
-        self
+        self.classified_by_cause()
     }
 
-    /// The same error, classified by its [`FileError::cause`] as the loader classifies a
-    /// text's error: of kind [`ErrorKind::Limit`], with the hint that says how to raise the
-    /// limit, where a limit stopped the parse
-    /// ([`ParseCause::limit`](trigpoly::ParseCause::limit)); otherwise as it is. By this one
-    /// rule a parse that a limit stopped is a limit whether it reaches a program through the
-    /// loader or through `?`.
-    #[must_use]
-    pub(crate) fn classified_by_cause(self) -> Self {
+    /// The same error, of kind [`ErrorKind::Limit`] with the hint where its
+    /// [`FileError::cause`] is a limit ([`FileError::with_cause`]).
+    fn classified_by_cause(self) -> Self {
         match self.cause.as_deref().and_then(Limit::of_parse) {
             Some(limit) => FileError {
                 kind: ErrorKind::Limit,
@@ -491,7 +506,6 @@ impl From<trigpoly::ParseError> for FileError {
             ..FileError::new(ErrorKind::Expression, "<expression>", e.message())
         }
         .with_cause(e.cause())
-        .classified_by_cause()
     }
 }
 

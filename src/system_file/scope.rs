@@ -561,14 +561,13 @@ impl Unknown {
 }
 
 /// An expression error at a span of a text, classified as a limit error when it is one (by
-/// its cause, [`ParseError::cause`]; [`FileError::classified_by_cause`], the rule by which `?`
+/// its cause, [`ParseError::cause`]; [`FileError::with_cause`], the rule by which `?`
 /// classifies a parse error too), an unknown name with the hint where such a name is declared.
 pub(crate) fn expression_error(source: &Source, text: &Text, e: &ParseError) -> FileError {
     let message = relocate_opener(source, text, e);
     let error = text
         .error(source, ErrorKind::Expression, e.span, message)
-        .with_cause(e.cause())
-        .classified_by_cause();
+        .with_cause(e.cause());
     let Some(unknown) = Unknown::of(e.cause()) else {
         return error;
     };

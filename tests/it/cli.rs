@@ -4744,6 +4744,63 @@ fn a_closure_without_claims_closes_with_what_was_computed() {
     assert!(!out.contains("0 claims"), "{out}");
 }
 
+/// A built-in system's text that a limit stops while it is read (a `--when` value, a
+/// `--define`, a `--known` integral: `x^5000` past the degree limit, a power past the term
+/// limit) is of kind `limit`, with the hint that raises it, as the same text given with a
+/// system file is: it was of kind `expression`, without the hint.
+#[test]
+fn a_builtin_systems_text_at_a_limit_is_a_limit() {
+    let hint = "\nhint: if the machine has the memory, raise the limit with max_degree under \
+                [limits] in the file (on the command line, --max-degree D; in a program, the \
+                LimitsOverride given to the loader)\n";
+    let texts: [&[&str]; 4] = [
+        &["search", "--when", "p_theta = x^5000"],
+        &["closure", "H", "L", "--define", "G=x^5000"],
+        &["search", "--new-only", "--known", "L, x^5000"],
+        &[
+            "search",
+            "--new-only",
+            "--known",
+            "L, (x+p_x+y+p_y+1)^40",
+            "--max-terms",
+            "1000",
+        ],
+    ];
+    for args in texts {
+        let (command, rest) = args.split_first().unwrap();
+        let builtin = stderr(&superint_exits(
+            &[&[*command, "--system", "harmonic"][..], rest].concat(),
+            2,
+        ));
+        let file = stderr(&superint_exits(
+            &[&[*command, "systems/harmonic-rotor.toml"][..], rest].concat(),
+            2,
+        ));
+        assert_eq!(builtin, file, "{args:?}");
+        assert!(
+            builtin.contains("\nhint: if the machine has the memory"),
+            "{builtin}"
+        );
+    }
+    let said = stderr(&superint_exits(
+        &[
+            "search",
+            "--system",
+            "harmonic",
+            "--when",
+            "p_theta = x^5000",
+        ],
+        2,
+    ));
+    assert_eq!(
+        said,
+        format!(
+            "superint: error: <command line>:1:13: the exponent 5000 is past the limit of 1000\n \
+             1 | p_theta = x^5000\n   |             ^^^^{hint}"
+        )
+    );
+}
+
 /// A closure that passes a limit while forming the products of its generators stops with exit
 /// code 2 and says how to go on: raise the limit, named by the option of the one it passed
 /// (the degree limit's, not the term or work limit's, which it named too), or lower the
