@@ -474,10 +474,10 @@ impl Subject {
                 // Refused as a file's command-line condition is: `<command line>:1:C:`, the
                 // numbered line and a caret.
                 let refuse = |span, message| {
-                    FileError::at(ErrorKind::Condition, COMMAND_LINE, w, span, message).to_string()
+                    FileError::at(ErrorKind::Condition, COMMAND_LINE, w, span, message)
                 };
-                parse_condition(self.system(), w, &|s, at| self.parse_in(w, s, at), &refuse)
-                    .map_err(|e| anyhow!(e))
+                let parse = |s: &str, at| self.parse_placed(w, s, at);
+                parse_condition(self.system(), w, &parse, &refuse).map_err(anyhow::Error::from)
             }
         })
         .transpose()
@@ -745,14 +745,15 @@ mod tests {
                 let refuse = |span: std::ops::Range<usize>, message: String| {
                     spans.borrow_mut().push(span.clone());
                     FileError::at(ErrorKind::Condition, COMMAND_LINE, &text, span, message)
-                        .to_string()
                 };
-                let _ = parse_condition(
+                if let Err(e) = parse_condition(
                     system,
                     &text,
-                    &|s, at| subject.parse_in(&text, s, at),
+                    &|s, at| subject.parse_placed(&text, s, at),
                     &refuse,
-                );
+                ) {
+                    let _ = e.to_string();
+                }
                 for span in spans.borrow().iter() {
                     proptest::prop_assert!(drawable(&text, span), "--when {:?}: {:?}", text, span);
                 }

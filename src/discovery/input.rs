@@ -3,7 +3,7 @@
 
 use crate::system_file::{
     assignment_sides, comma_pieces, condition_cannot_set, fixed_twice, no_variable, trimmed,
-    CONDITION_FORM, CONDITION_USAGE,
+    FileError, CONDITION_FORM, CONDITION_USAGE,
 };
 use brackets::{EngineError, System};
 use trigpoly::{Expr, Limits, Rational, Style, Var};
@@ -95,18 +95,42 @@ pub fn define_builtin_resonant(name: &str, s: &mut System) -> Result<(), EngineE
 
 /// Reads a condition `var = value[, var = value]` (such as `p_theta = 2*I*omega/3`), values
 /// parsed by `parse`, which is given each value with the byte where it begins in `text` (so
-/// that what it says of the value points into the condition as typed). A refusal of the
-/// condition's form is said by `refuse`, given its byte range in `text` and its message, as a
+/// that what it says of the value points into the condition as typed), its error returned as
+/// it is (of kind [`ErrorKind::Limit`](crate::system_file::ErrorKind) where a limit stopped
+/// the reading, as [`FileError::with_cause`] classifies it). A refusal of the
+/// condition's form is made by `refuse`, given its byte range in `text` and its message, as a
 /// file's condition is refused ([`CONDITION_USAGE`]; the caret under the comma with nothing
 /// beside it, an empty side, the left side that is no variable, one a condition cannot set
-/// (an angle) or one set twice, the value of the variable the condition cannot set so). The
-/// condition is shown as a file's is, each value as it is written (`p_θ = Iω`).
+/// (an angle) or one set twice, the value of the variable the condition cannot set so); one
+/// that a limit stopped as the values were resolved into each other is of kind `limit`, with
+/// the hint that raises it, as a file's condition's is. The condition is shown as a file's is,
+/// each value as it is written (`p_θ = Iω`).
+///
+/// ```
+/// use superint::brackets::systems;
+/// use superint::discovery::parse_condition;
+/// use superint::system_file::{ErrorKind, FileError};
+/// use superint::trigpoly::{Expr, Limits};
+///
+/// let rotor = systems::Rotor::Harmonic.system(Limits::default().max_terms(100))?;
+/// let text = "x = (y + p_y + 1)^4, y = (p_x + p_theta + 1)^4";
+/// let parse = |value: &str, _at: usize| -> Result<Expr, FileError> { Ok(rotor.parse(value)?) };
+/// let refuse = |span: std::ops::Range<usize>, why: String| {
+///     FileError::at(ErrorKind::Condition, "<condition>", text, span, why)
+/// };
+/// let err = parse_condition(&rotor, text, &parse, &refuse).unwrap_err();
+/// assert_eq!((err.kind, err.line_col()), (ErrorKind::Limit, Some((1, 5))));
+/// assert!(err.hint.is_some_and(|h| h.contains("max_terms")));
+/// let err = parse_condition(&rotor, "theta = 0", &parse, &refuse).unwrap_err();
+/// assert_eq!(err.kind, ErrorKind::Condition);
+/// # Ok::<(), Box<dyn std::error::Error>>(())
+/// ```
 pub fn parse_condition(
     system: &System,
     text: &str,
-    parse: &dyn Fn(&str, usize) -> Result<Expr, String>,
-    refuse: &dyn Fn(std::ops::Range<usize>, String) -> String,
-) -> Result<brackets::Condition, String> {
+    parse: &dyn Fn(&str, usize) -> Result<Expr, FileError>,
+    refuse: &dyn Fn(std::ops::Range<usize>, String) -> FileError,
+) -> Result<brackets::Condition, FileError> {
     let vars = system.vars();
     let mut subs: Vec<(Var, Expr)> = Vec::new();
     // Where each value is written, for a refusal of the condition as a whole.
@@ -173,7 +197,7 @@ pub fn parse_condition(
             }
             _ => 0,
         };
-        refuse(values[k].clone(), e.to_string())
+        refuse(values[k].clone(), e.to_string()).limited_by(&e)
     })
 }
 

@@ -499,6 +499,7 @@ fn parse_condition_with(
                 side.trimmed_span(),
                 e.to_string(),
             )
+            .limited_by(&e)
         })
 }
 

@@ -219,6 +219,24 @@ impl FileError {
         self.classified_by_cause()
     }
 
+    /// The same error, of kind [`ErrorKind::Limit`] with the hint that raises the limit, where
+    /// a limit of the engine stopped what it is about, `e` ([`EngineError::limit`]); as it is
+    /// otherwise: a condition whose values a limit stopped as they were resolved into each
+    /// other is a limit, as its values' reading is.
+    ///
+    /// [`EngineError::limit`]: brackets::EngineError::limit
+    #[must_use]
+    pub(crate) fn limited_by(self, e: &brackets::EngineError) -> Self {
+        match Limit::of_engine(e) {
+            Some(limit) => FileError {
+                kind: ErrorKind::Limit,
+                hint: limit.hint(),
+                ..self
+            },
+            None => self,
+        }
+    }
+
     /// The same error, of kind [`ErrorKind::Limit`] with the hint where its
     /// [`FileError::cause`] is a limit ([`FileError::with_cause`]).
     fn classified_by_cause(self) -> Self {

@@ -4801,6 +4801,55 @@ fn a_builtin_systems_text_at_a_limit_is_a_limit() {
     );
 }
 
+/// A condition whose values a limit stops as they are resolved into each other (`x` in `y`,
+/// `y` past the term limit) is of kind `limit`, with the hint that raises it, as its values'
+/// reading is: `discovery::parse_condition` (a built-in system's `--when`) said it as a string,
+/// and a file's condition said it of kind `condition`, without the hint, and so in the JSON
+/// report's `errors` of `check`.
+#[test]
+fn a_condition_at_a_limit_is_a_limit() {
+    let when = "x = (y + p_y + 1)^4, y = (p_x + p_theta + 1)^4";
+    let said = format!(
+        "superint: error: <command line>:1:5: the result would have more than 100 terms (the \
+         term limit); raise the limit or simplify the input\n 1 | {when}\n   |     \
+         ^^^^^^^^^^^^^^^\nhint: if the machine has the memory, raise the limit with max_terms \
+         under [limits] in the file (on the command line, --max-terms N; in a program, the \
+         LimitsOverride given to the loader)\n"
+    );
+    for system in [
+        &["--system", "harmonic"][..],
+        &["systems/harmonic-rotor.toml"],
+    ] {
+        let args = [&["search"], system, &["--when", when, "--max-terms", "100"]].concat();
+        assert_eq!(stderr(&superint_exits(&args, 2)), said, "{system:?}");
+    }
+    let file = crate::scratch_text(
+        "condition-at-a-limit",
+        "limited.toml",
+        "name = \"oscillator\"\nhamiltonian = \"p_x^2/2 + p_y^2/2 + x^2/2 + y^2/2\"\n\
+         [phase_space]\ncoordinates = [\"x\", \"y\"]\n[limits]\nmax_terms = 100\n\
+         [[claim]]\nid = \"a\"\nclaim = \"{x, H} = p_x\"\n\
+         when = \"x = (y + p_y + 1)^4, y = (p_x + x + 1)^6\"\n",
+    );
+    let file = file.to_str().unwrap();
+    let o = superint_exits(
+        &["check", file, "systems/kepler.toml", "--format", "json"],
+        2,
+    );
+    let report: serde_json::Value = serde_json::from_slice(&o.stdout).unwrap();
+    let errors = report["errors"].as_array().unwrap();
+    assert_eq!(errors.len(), 1, "{report}");
+    assert_eq!(errors[0]["kind"], "limit", "{report}");
+    assert_eq!(
+        (&errors[0]["line"], &errors[0]["column"]),
+        (&10.into(), &13.into())
+    );
+    assert!(
+        errors[0]["hint"].as_str().unwrap().contains("max_terms"),
+        "{report}"
+    );
+}
+
 /// A closure that passes a limit while forming the products of its generators stops with exit
 /// code 2 and says how to go on: raise the limit, named by the option of the one it passed
 /// (the degree limit's, not the term or work limit's, which it named too), or lower the
