@@ -43,7 +43,7 @@ use trigpoly::{AlgebraError, Expr, GaussianRational, Rational, Style, Var, VarKi
 
 use crate::claim::Condition;
 use crate::error::{EngineError, EngineLimit};
-use crate::modular::{self, Echelon, Fp, SparseVec};
+use crate::modular::{self, CombinationSums, Echelon, Fp, SparseVec};
 use crate::scaling::{Lifter, Scaling};
 use crate::system::{NamedFunction, System};
 use crate::table::{BracketTable, Entry};
@@ -650,7 +650,7 @@ pub fn expressed_in(
     };
     // Where the generators have relations, the shortest of the solutions reads best (one
     // of a single column is as short as any).
-    let relations = solutions
+    let mut relations = solutions
         .iter()
         .any(|s| s.len() > 1)
         .then(|| Relations::new(&span.columns, span.nrows))
@@ -661,8 +661,8 @@ pub fn expressed_in(
     let mut symbolic = true;
     for ((solution, target), part) in solutions.into_iter().zip(&span.targets).zip(&parts) {
         let shorter = relations
-            .as_ref()
-            .and_then(|r| r.shorter(&span.columns, span.nrows, &solution, target));
+            .as_mut()
+            .and_then(|r| r.shorter(&span.columns, &solution, target));
         // A shorter solution that does not lift (it holds at the fixed values only) gives
         // way to the echelon's.
         let lifted = shorter.map(|s| lift_ctx.bracket(&s, part)).transpose()?;
@@ -774,6 +774,7 @@ fn express_targets(
             None => fp_ok = false,
         }
     }
+    let mut sums = CombinationSums::new();
     let mut solutions = Vec::with_capacity(targets.len());
     for target in targets {
         let mut found = None;
@@ -784,7 +785,7 @@ fn express_targets(
                     None => decided = true, // independent modulo p: certainly outside
                     Some(dep) => {
                         if let Some(sol) = modular::reconstruct_vec(&dep) {
-                            if modular::combination_equals(columns, nrows, &sol, target) {
+                            if sums.equals(columns, &sol, target) {
                                 found = Some(sol);
                                 decided = true;
                             }
@@ -1348,5 +1349,62 @@ mod tests {
         };
         assert_eq!(relations(6), ["h² y = k²", "h y k⁴ = a²", "h a² = k⁶"]);
         assert_eq!(relations(7), ["h² y = k²", "h y k⁴ = a²"]);
+    }
+
+    /// A closure checks over Q, in one sum a phase, each combination found modulo p: the
+    /// kernel's vectors, the brackets' solutions, and each relation found in the span of the
+    /// multiples of those before it (`closure/minimal.rs`). The sums grow by at most the span's
+    /// rows each, and the relations' by at most one row a monomial; a sum for each check grew
+    /// to its largest row every time (at degree 5, 55 relations checked in sums of up to 228
+    /// rows, 7 428 rows in all, where the span has 984 rows and 252 monomials).
+    #[test]
+    fn a_closure_checks_its_combinations_in_one_sum_a_phase() {
+        let rotor = systems::harmonic_rotor();
+        let names = ["F1", "F2", "L", "G1", "G2"];
+        let options = ClosureOptions::new(5);
+        let before = modular::SUMS_GROWN.get();
+        let c = closure(&rotor, &names, &options).unwrap();
+        let grown = modular::SUMS_GROWN.get() - before;
+        assert_eq!(c.relations.len(), 1);
+        // The span's rows, formed as `closure_of` forms them.
+        let generators: Vec<NamedFunction> = (names.iter())
+            .map(|n| NamedFunction::new(n, n, rotor.get(n).unwrap().clone()))
+            .collect();
+        let g_sym = span::restricted_generators(&rotor, &generators, None).unwrap();
+        let brackets: Vec<Expr> = (0..names.len())
+            .flat_map(|a| (a + 1..names.len()).map(move |b| (a, b)))
+            .map(|(a, b)| rotor.bracket(&generators[a].expr, &generators[b].expr))
+            .collect::<Result<_, _>>()
+            .unwrap();
+        let span = Span::new(&rotor, g_sym, &brackets, &options, None).unwrap();
+        let bound = 2 * span.nrows + c.monomials;
+        assert!(
+            grown <= bound,
+            "the checks grew their sums by {grown} rows, more than the {} rows twice and the \
+             {} monomials",
+            span.nrows,
+            c.monomials
+        );
+    }
+
+    /// The brackets' solutions are checked in one sum: ten targets, each a multiple of a
+    /// column with an entry on the last of 300 rows, grow it by 300 rows (a sum for each grew
+    /// by 3 000).
+    #[test]
+    fn the_targets_are_checked_in_one_sum() {
+        let rows = 300;
+        let q = Rational::from;
+        let mut columns: Vec<SparseVec<Rational>> = vec![vec![(0, q(1)), (rows - 1, q(1))]];
+        columns.extend((1..rows - 1).map(|i| vec![(i, q(1))]));
+        let targets: Vec<SparseVec<Rational>> = (1..=10)
+            .map(|k| vec![(0, q(k)), (rows - 1, q(k))])
+            .collect();
+        let before = modular::SUMS_GROWN.get();
+        let solutions = express_targets(&columns, rows, &targets);
+        let grown = modular::SUMS_GROWN.get() - before;
+        for (k, solution) in (1..=10).zip(&solutions) {
+            assert_eq!(solution.as_ref(), Some(&vec![(0, q(k))]));
+        }
+        assert!(grown <= rows, "10 checks grew their sums by {grown} rows");
     }
 }

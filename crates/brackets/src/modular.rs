@@ -630,8 +630,8 @@ pub(crate) fn sum_by_index<F: Field>(mut v: SparseVec<F>) -> SparseVec<F> {
 /// elimination is redone over `Q`. The result is exact either way.
 pub fn kernel(columns: &[SparseVec<Rational>], rows: usize) -> Vec<SparseVec<Rational>> {
     if let Some(k) = kernel_modular(columns, rows) {
-        let mut sum = Accumulator::new();
-        if k.iter().all(|v| sums_to(&mut sum, columns, v, &[])) {
+        let mut sums = CombinationSums::new();
+        if k.iter().all(|v| sums.equals(columns, v, &[])) {
             return k;
         }
     }
@@ -717,78 +717,70 @@ impl LaterColumns {
     }
 }
 
-/// Whether `Σ v_j · column_j = 0` exactly (the columns' rows below `rows`).
-pub fn in_kernel(columns: &[SparseVec<Rational>], rows: usize, v: &SparseVec<Rational>) -> bool {
-    combination_equals(columns, rows, v, &[])
-}
-
-/// Whether `Σ v_j · column_j = target` exactly (the columns' rows below `rows`); the columns
-/// held or borrowed.
-pub fn combination_equals<C: Borrow<SparseVec<Rational>>>(
-    columns: &[C],
-    rows: usize,
-    v: &SparseVec<Rational>,
-    target: &[(usize, Rational)],
-) -> bool {
-    debug_assert!(v
-        .iter()
-        .all(|(j, _)| columns[*j].borrow().iter().all(|(i, _)| *i < rows)));
-    sums_to(&mut Accumulator::new(), columns, v, target)
-}
-
-/// One sum for exact checks made one after another ([`CombinationSums::equals`]), zero
-/// again after each, so that a check reads and clears only the rows its columns touch, where
-/// each [`combination_equals`] grows a dense sum of its own to its largest row (a search's
-/// dependencies: thousands of checks in a space of 10⁵ rows).
+/// The sum in which exact checks over `Q`, `Σ v_j · column_j = target`, are made one after
+/// another ([`CombinationSums::equals`]): a dense vector by row, zero again after each check,
+/// which reads and clears only the rows the check's columns touch, and grows to the largest
+/// row a check has touched. A sum made for each check would zero-fill and copy up to its
+/// largest row every time: `--new-only`'s dependencies are thousands of checks in a space of
+/// 10⁵ rows, a closure's relations at degree 8 a thousand and more, each against the multiples
+/// of those before it.
+///
+/// ```
+/// use brackets::modular::CombinationSums;
+/// use trigpoly::Rational;
+/// // Columns (1, 0, 1) and (0, 2, 2): their difference is (1, −2, −1).
+/// let q = |n: i64| Rational::from(n);
+/// let columns = vec![vec![(0, q(1)), (2, q(1))], vec![(1, q(2)), (2, q(2))]];
+/// let mut sums = CombinationSums::new();
+/// let difference = vec![(0, q(1)), (1, q(-1))];
+/// assert!(sums.equals(&columns, &difference, &[(0, q(1)), (1, q(-2)), (2, q(-1))]));
+/// assert!(!sums.equals(&columns, &difference, &[(0, q(1))]));
+/// // Twice the first column less the second is not zero.
+/// assert!(!sums.equals(&columns, &vec![(0, q(2)), (1, q(-1))], &[]));
+/// ```
 #[derive(Debug)]
-pub(crate) struct CombinationSums(Accumulator<Rational>);
+pub struct CombinationSums(Accumulator<Rational>);
+
+impl Default for CombinationSums {
+    fn default() -> Self {
+        Self::new()
+    }
+}
 
 impl CombinationSums {
-    /// A sum with no rows yet: it grows to the largest row that a check touches.
-    pub(crate) fn new() -> Self {
+    /// A sum with no rows yet.
+    pub fn new() -> Self {
         CombinationSums(Accumulator::new())
     }
 
-    /// Whether `Σ v_j · column_j = target` exactly, as [`combination_equals`]; the columns
-    /// held or borrowed.
-    pub(crate) fn equals<C: Borrow<SparseVec<Rational>>>(
+    /// Whether `Σ v_j · column_j = target` exactly (the columns held or borrowed); the sum is
+    /// zero again after.
+    pub fn equals<C: Borrow<SparseVec<Rational>>>(
         &mut self,
         columns: &[C],
         v: &SparseVec<Rational>,
         target: &[(usize, Rational)],
     ) -> bool {
-        sums_to(&mut self.0, columns, v, target)
-    }
-}
-
-/// Whether `Σ v_j · column_j = target` exactly, summed in `sum`, which is zero again after.
-/// Only the rows the columns touch are read: a search checks each of its kernel vectors
-/// against tens of thousands of equations, and a dense sum of them all for each vector was
-/// most of its time.
-fn sums_to<C: Borrow<SparseVec<Rational>>>(
-    sum: &mut Accumulator<Rational>,
-    columns: &[C],
-    v: &SparseVec<Rational>,
-    target: &[(usize, Rational)],
-) -> bool {
-    #[cfg(test)]
-    let rows_before = sum.dense.len();
-    for (j, x) in v {
-        for (i, a) in columns[*j].borrow() {
-            sum.add(*i, &(x * a));
+        let sum = &mut self.0;
+        #[cfg(test)]
+        let rows_before = sum.dense.len();
+        for (j, x) in v {
+            for (i, a) in columns[*j].borrow() {
+                sum.add(*i, &(x * a));
+            }
         }
+        for (i, x) in target {
+            sum.add(*i, &-x);
+        }
+        #[cfg(test)]
+        SUMS_GROWN.with(|grown| grown.set(grown.get() + sum.dense.len() - rows_before));
+        sum.clear()
     }
-    for (i, x) in target {
-        sum.add(*i, &-x);
-    }
-    #[cfg(test)]
-    SUMS_GROWN.with(|grown| grown.set(grown.get() + sum.dense.len() - rows_before));
-    sum.clear()
 }
 
 #[cfg(test)]
 thread_local! {
-    /// How many rows the exact checks' sums ([`sums_to`]) have grown by on this thread: the
+    /// How many rows the exact checks' sums ([`CombinationSums`]) have grown by on this thread: the
     /// dense memory that checking combinations writes, which the tests bound.
     pub(crate) static SUMS_GROWN: std::cell::Cell<usize> = const { std::cell::Cell::new(0) };
 }
@@ -1170,17 +1162,18 @@ mod tests {
         ];
         let k = kernel(&cols, 3);
         assert_eq!(k.len(), 2);
+        let mut sums = CombinationSums::new();
         for v in &k {
-            assert!(in_kernel(&cols, 3, v));
+            assert!(sums.equals(&cols, v, &[]));
         }
         assert_eq!(kernel_exact(&cols, 3).len(), 2);
         // Column 0 minus column 2 is (0, 2, 2): its entry 0 cancels.
         let r = |x: i64| Rational::from(x);
         let diff = vec![(0, r(1)), (2, r(-1))];
-        assert!(!in_kernel(&cols, 3, &diff));
+        assert!(!sums.equals(&cols, &diff, &[]));
         let target = vec![(1, r(2)), (2, r(2))];
-        assert!(combination_equals(&cols, 3, &diff, &target));
-        assert!(!combination_equals(&cols, 3, &diff, &target[..1]));
-        assert!(combination_equals(&cols, 3, &vec![], &[]));
+        assert!(sums.equals(&cols, &diff, &target));
+        assert!(!sums.equals(&cols, &diff, &target[..1]));
+        assert!(sums.equals(&cols, &vec![], &[]));
     }
 }

@@ -9,12 +9,13 @@
 
 use trigpoly::Rational;
 
-use crate::modular::{self, combination_equals, Field, Fp, SparseVec};
+use crate::modular::{self, CombinationSums, Field, Fp, SparseVec};
 
 /// The relations among the columns modulo `p` ([`modular::kernel_mod_p`]), found once for
-/// every target of a span.
+/// every target of a span, and the sum in which each shorter combination is checked.
 pub(super) struct Relations {
     kernel: Vec<SparseVec<Fp>>,
+    sums: CombinationSums,
 }
 
 impl Relations {
@@ -23,6 +24,7 @@ impl Relations {
     pub(super) fn new(columns: &[SparseVec<Rational>], rows: usize) -> Option<Self> {
         Some(Relations {
             kernel: modular::kernel_mod_p(columns, rows)?,
+            sums: CombinationSums::new(),
         })
     }
 
@@ -30,9 +32,8 @@ impl Relations {
     /// such), as few as a greedy walk over the relations finds, checked exactly; `None` when
     /// no relation shortens it or the shorter one is not confirmed.
     pub(super) fn shorter(
-        &self,
+        &mut self,
         columns: &[SparseVec<Rational>],
-        rows: usize,
         solution: &SparseVec<Rational>,
         target: &SparseVec<Rational>,
     ) -> Option<SparseVec<Rational>> {
@@ -43,8 +44,7 @@ impl Relations {
         if shorter.len() >= solution.len() {
             return None;
         }
-        modular::reconstruct_vec(&shorter)
-            .filter(|found| combination_equals(columns, rows, found, target))
+        modular::reconstruct_vec(&shorter).filter(|found| self.sums.equals(columns, found, target))
     }
 }
 
@@ -119,8 +119,7 @@ fn minus_multiple<F: Field>(x: &SparseVec<F>, a: &F, k: &SparseVec<F>) -> Sparse
 #[cfg(test)]
 mod tests {
     use super::{minus_multiple, shortest_by, Relations};
-    use crate::modular::combination_equals;
-    use crate::modular::{Fp, SparseVec};
+    use crate::modular::{CombinationSums, Fp, SparseVec};
     use proptest::prelude::*;
     use trigpoly::Rational;
 
@@ -162,20 +161,41 @@ mod tests {
     fn the_shorter_solution_is_checked_against_the_columns() {
         // Rows 0 and 1: c0 = (1, 0), c1 = (0, 1), c2 = (1, 1), so c0 + c1 − c2 = 0.
         let columns = vec![q(&[(0, 1)]), q(&[(1, 1)]), q(&[(0, 1), (1, 1)])];
-        let relations = Relations::new(&columns, 2).expect("modulo p");
+        let mut relations = Relations::new(&columns, 2).expect("modulo p");
         let target = q(&[(0, 3), (1, 3)]);
         let long = q(&[(0, 3), (1, 3)]);
         assert_eq!(
-            relations.shorter(&columns, 2, &long, &target),
+            relations.shorter(&columns, &long, &target),
             Some(q(&[(2, 3)]))
         );
         // A relation that is wrong (not one of the columns') is never used: the result is
         // checked, and the solution kept.
-        let wrong = Relations {
+        let mut wrong = Relations {
             kernel: vec![fp(&[(0, 1), (1, 1), (2, -2)])],
+            sums: CombinationSums::new(),
         };
         let long = q(&[(0, 3), (1, 3)]);
-        assert_eq!(wrong.shorter(&columns, 2, &long, &target), None);
+        assert_eq!(wrong.shorter(&columns, &long, &target), None);
+    }
+
+    /// The shorter solutions of one span's targets are checked in one sum, grown once to the
+    /// largest row they touch: a sum for each check grew to that row again every time (here
+    /// 10 checks of 200 rows).
+    #[test]
+    fn the_targets_of_a_span_are_checked_in_one_sum() {
+        // c0 = e_199, c1 = e_0, c2 = e_0 + e_199: c0 + c1 − c2 = 0.
+        let rows = 200;
+        let columns = vec![q(&[(199, 1)]), q(&[(0, 1)]), q(&[(0, 1), (199, 1)])];
+        let mut relations = Relations::new(&columns, rows).expect("modulo p");
+        let before = crate::modular::SUMS_GROWN.get();
+        for k in 1..=10 {
+            let target = q(&[(0, k), (199, k)]);
+            let long = q(&[(0, k), (1, k)]);
+            let shorter = relations.shorter(&columns, &long, &target);
+            assert_eq!(shorter, Some(q(&[(2, k)])), "k = {k}");
+        }
+        let grown = crate::modular::SUMS_GROWN.get() - before;
+        assert!(grown <= rows, "10 checks grew their sums by {grown} rows");
     }
 
     /// Columns over a few rows from small integers, so that some depend on others.
@@ -219,9 +239,9 @@ mod tests {
                 .enumerate()
                 .filter(|(_, x)| *x != Rational::from(0))
                 .collect();
-            let relations = Relations::new(&columns, 4).expect("small integers");
-            if let Some(fewer) = relations.shorter(&columns, 4, &solution, &target) {
-                prop_assert!(combination_equals(&columns, 4, &fewer, &target));
+            let mut relations = Relations::new(&columns, 4).expect("small integers");
+            if let Some(fewer) = relations.shorter(&columns, &solution, &target) {
+                prop_assert!(CombinationSums::new().equals(&columns, &fewer, &target));
                 prop_assert!(fewer.len() < solution.len());
             }
         }

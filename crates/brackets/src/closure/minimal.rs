@@ -38,7 +38,7 @@ use trigpoly::{Expr, GaussianRational, Rational};
 use super::lift::LiftContext;
 use super::{monomials, Relation};
 use crate::error::EngineError;
-use crate::modular::{self, Echelon, Fp, SparseVec};
+use crate::modular::{self, CombinationSums, Echelon, Fp, SparseVec};
 
 /// The bounds of the closure's search: how many generators there are (the symbolic
 /// parameters after them in the monomials), and the degrees `D` in the generators and `S` in
@@ -148,6 +148,8 @@ struct RelationIdeal<'a> {
     exact: Echelon<Rational>,
     /// How many of the multiples `exact` holds.
     exact_joined: usize,
+    /// The sum in which a combination of the multiples found modulo the prime is checked.
+    sums: CombinationSums,
     /// The relations tested, listed or not, whose multiples are not yet in the span (they are
     /// added before the next relation is tested).
     pending: Vec<SparseVec<Rational>>,
@@ -172,6 +174,7 @@ impl<'a> RelationIdeal<'a> {
             modular: Some(Echelon::new(0)),
             exact: Echelon::new(0),
             exact_joined: 0,
+            sums: CombinationSums::new(),
             pending: Vec::new(),
         }
     }
@@ -248,7 +251,7 @@ impl<'a> RelationIdeal<'a> {
     /// [`RelationIdeal::simplicity`], still over the columns, and the difference is checked
     /// to be such a combination exactly.
     fn simpler(
-        &self,
+        &mut self,
         rel: &SparseVec<Rational>,
         v: &SparseVec<Rational>,
     ) -> Option<SparseVec<Rational>> {
@@ -268,8 +271,7 @@ impl<'a> RelationIdeal<'a> {
         );
         let combination = echelon.express(&modular::to_fp(&difference)?)?;
         let combination = modular::reconstruct_vec(&combination)?;
-        self.combination_equals(&combination, &difference)
-            .then_some(over_columns)
+        (self.sums.equals(&self.multiples, &combination, &difference)).then_some(over_columns)
     }
 
     /// Whether `v` is in the span: modulo the prime, the combination found there
@@ -283,7 +285,7 @@ impl<'a> RelationIdeal<'a> {
                 None => return false,
                 Some(combo) => {
                     let exact = modular::reconstruct_vec(&combo);
-                    if exact.is_some_and(|c| self.combination_equals(&c, v)) {
+                    if exact.is_some_and(|c| self.sums.equals(&self.multiples, &c, v)) {
                         return true;
                     }
                 }
@@ -295,11 +297,6 @@ impl<'a> RelationIdeal<'a> {
         }
         self.exact_joined = self.multiples.len();
         self.exact.contains(v)
-    }
-
-    /// Whether `Σ c_id · multiples[id] = v` exactly.
-    fn combination_equals(&self, c: &SparseVec<Rational>, v: &SparseVec<Rational>) -> bool {
-        modular::combination_equals(&self.multiples, self.index.len(), c, v)
     }
 
     /// Adds to the span the multiples of the relations tested since the last test.
