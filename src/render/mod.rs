@@ -205,9 +205,26 @@ pub(crate) fn plain(markup: &str) -> String {
     markup.replace('`', "")
 }
 
-/// The width of text in a terminal: characters, not counting combining marks.
+/// The width of text in a terminal: characters, not counting combining marks. Counted on the
+/// bytes, each that starts a character (not `0b10xx_xxxx`), with the characters read only
+/// where a combining mark may be: each of U+0300 to U+036F starts with the byte 0xCC or 0xCD
+/// (a long result's text is hundreds of megabytes, its lines and words measured as they wrap).
 pub(crate) fn width(s: &str) -> usize {
-    s.chars().filter(|&c| !tex::is_combining(c)).count()
+    let bytes = s.as_bytes();
+    let characters = bytes.iter().filter(|&&b| b & 0xC0 != 0x80).count();
+    match bytes.iter().any(|&b| b == 0xCC || b == 0xCD) {
+        false => characters,
+        true => characters - s.chars().filter(|&c| tex::is_combining(c)).count(),
+    }
+}
+
+/// Whether text is wider than `w` ([`width`]), read no further than its `w + 1`-th character.
+pub(crate) fn wider_than(s: &str, w: usize) -> bool {
+    s.len() > w
+        && s.chars()
+            .filter(|&c| !tex::is_combining(c))
+            .nth(w)
+            .is_some()
 }
 
 /// Pads to a width (in terminal columns).
