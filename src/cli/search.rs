@@ -10,10 +10,10 @@ use brackets::search::{SearchOptions, SearchSpace, DEFAULT_MAX_PRODUCTS};
 use brackets::{EngineError, System};
 use clap::Args;
 use superint::discovery::{
-    builtin_system, file_search_report, parse_condition, parse_fixed, parse_known, parse_symbolic,
-    search_report_for, ListRefusal,
+    builtin_system, command_line_search_report, parse_condition, parse_fixed, parse_known,
+    parse_symbolic, ListRefusal,
 };
-use superint::render::render;
+use superint::render::{render, Format};
 use superint::report::{with_article, Report};
 use superint::system_file::{
     display_as_given, looks_like_name, new_name_refusal, what_is, Caller, LoadedSystem,
@@ -547,13 +547,13 @@ fn search_and_print(job: &SearchJob) -> anyhow::Result<bool> {
         false,
         &a.limits.settings(),
     )?;
-    let report = subject.warned(search(a, &subject))?;
+    let report = subject.warned(search(a, &subject, job.output.format))?;
     emit(&render(&report, job.output.format, &job.output.options))?;
     Ok(report.all_proved())
 }
 
-/// The search of `subject` that `a` asks for, as a report.
-fn search(a: &SearchArgs, subject: &Subject) -> anyhow::Result<Report> {
+/// The search of `subject` that `a` asks for, as a report to print in `format`.
+fn search(a: &SearchArgs, subject: &Subject, format: Format) -> anyhow::Result<Report> {
     a.refuse_degrees_without_variables(subject)?;
     let mut space = SearchSpace::default()
         .momenta_degree(a.momenta_degree.unwrap_or(DEFAULT_DEGREE))
@@ -587,9 +587,15 @@ fn search(a: &SearchArgs, subject: &Subject) -> anyhow::Result<Report> {
     }
     // A file's integrals are restated in its functions and family instances too.
     let found = match subject {
-        Subject::File(file) => file_search_report(file, &options, Caller::CommandLine),
+        Subject::File(file) => command_line_search_report(
+            Some(file),
+            &file.the_name(),
+            file.system(),
+            &options,
+            format,
+        ),
         Subject::Builtin(name, system, _) => {
-            search_report_for(&with_article(name), system, &options, Caller::CommandLine)
+            command_line_search_report(None, &with_article(name), system, &options, format)
         }
     };
     let (report, _) = found.map_err(|e| match (e, a.known.as_deref()) {

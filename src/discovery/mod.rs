@@ -31,7 +31,9 @@ pub use input::{
     builtin_system, define_builtin_resonant, parse_condition, parse_fixed, parse_known,
     parse_symbolic, ListRefusal, BUILTIN_SYSTEMS,
 };
-pub use search::{complex_form, file_search_report, search_report, search_report_for};
+pub use search::{
+    command_line_search_report, complex_form, file_search_report, search_report, search_report_for,
+};
 
 use brackets::search::parameter_text;
 use trigpoly::{Rational, Style, Var, VarSet};

@@ -678,6 +678,54 @@ fn harmonic_1_1_dimensions_and_basis() {
     );
 }
 
+/// `superint search` forms what only JSON shows for JSON alone: in the other formats its
+/// report holds neither the search's facts nor each integral's claim as text to read back,
+/// which they leave out (a fifth of the text report's time at degree 12), and prints as the
+/// whole report does; in JSON it is the whole report.
+#[test]
+fn a_search_forms_what_only_json_shows_for_json_alone() {
+    use superint::discovery::{command_line_search_report, file_search_report};
+    use superint::render::{render, Format, Options};
+    use superint::report::{Entry, Report};
+    use superint::system_file::Caller;
+
+    let file = system_file("harmonic-rotor.toml");
+    let space = SearchSpace::default()
+        .momenta_degree(2)
+        .positions_degree(2)
+        .trig_degree(2);
+    let options = SearchOptions::new(space).when(file.condition("p_theta = I*omega").unwrap());
+    let (whole, _) = file_search_report(&file, &options, Caller::CommandLine).unwrap();
+    let name = file.the_name();
+    let report = |format| {
+        command_line_search_report(Some(&file), &name, file.system(), &options, format)
+            .unwrap()
+            .0
+    };
+    let for_json = |r: &Report| {
+        let entries = r.sections.iter().flat_map(|s| &s.entries);
+        let facts = entries.clone().any(|e| matches!(e, Entry::Data(_)));
+        let written = entries.filter(|e| matches!(e, Entry::Claim(c) if c.written.is_some()));
+        (facts, written.count())
+    };
+    let options = Options::reproducible();
+    for format in [Format::Text, Format::Markdown, Format::Latex] {
+        let r = report(format);
+        assert_eq!(for_json(&r), (false, 0), "{format:?}");
+        assert_eq!(
+            render(&r, format, &options),
+            render(&whole, format, &options)
+        );
+    }
+    let json = report(Format::Json);
+    assert_eq!(for_json(&json), for_json(&whole));
+    assert!(for_json(&whole).0 && for_json(&whole).1 > 10);
+    assert_eq!(
+        render(&json, Format::Json, &options),
+        render(&whole, Format::Json, &options)
+    );
+}
+
 #[test]
 fn euler_top_casimir_and_energy() {
     expect(
