@@ -697,10 +697,12 @@ fn a_search_forms_what_only_json_shows_for_json_alone() {
     let options = SearchOptions::new(space).when(file.condition("p_theta = I*omega").unwrap());
     let (whole, _) = file_search_report(&file, &options, Caller::CommandLine).unwrap();
     let name = file.the_name();
+    // Its sections marked with the file, as the command line marks every report.
     let report = |format| {
         command_line_search_report(Some(&file), &name, file.system(), &options, format)
             .unwrap()
             .0
+            .about_file(&file.source().origin)
     };
     let for_json = |r: &Report| {
         let entries = r.sections.iter().flat_map(|s| &s.entries);
