@@ -202,7 +202,7 @@ pub fn new_name_refusal(
 }
 
 /// Refuses `name`, given as a closure's generator, where it is an expression rather than a
-/// name (`2*L`, `L+G1`, `{L, G1}`): it has no name of its own for the table and the relations
+/// name (`2*L`, `L+G1`, `L G1`, `{L, G1}`): it has no name of its own for the table and the relations
 /// (`2*L` was named `2_L`, which no relation can hold, and `L*G1` and `L+G1` were both
 /// `L_G1`). The spaces around a name are no part of it (` M` is the name `M`, which
 /// [`refuse_parameter_as_generator`] then refuses). The error is at the whole of it, its
@@ -216,6 +216,8 @@ pub fn new_name_refusal(
 ///
 /// assert!(refuse_expression_as_generator("P_{1,1}", Caller::Program, |_| true).is_ok());
 /// assert!(refuse_expression_as_generator(" L ", Caller::Program, |_| true).is_ok());
+/// assert!(refuse_expression_as_generator("P_{1, 1}", Caller::Program, |_| true).is_ok());
+/// assert!(refuse_expression_as_generator("L G1", Caller::Program, |_| true).is_err());
 /// let err = refuse_expression_as_generator("L+G1", Caller::Program, |n| n != "G").unwrap_err();
 /// assert_eq!((err.kind, err.line_col()), (ErrorKind::Expression, Some((1, 1))));
 /// assert!(err.message.ends_with(
@@ -389,17 +391,28 @@ pub fn refuse_parameter_as_generator(
 }
 
 /// Whether `name`, given as a closure's generator, is a name rather than an expression: a
-/// letter first, then letters, digits, `_`, an instance's braces and commas (`P_{1, 1}`, a
-/// space after the comma), primes (`P'`), the macron of a display (`Z̄`) and a display's
-/// subscripts and superscripts, signs too (`ω₊`, which Unicode counts as no letter or
-/// digit), so that a generator such as `Z̄`, `P'_{1,1}` or `ω₊` is resolved by its name, or
-/// refused as the parameter it names, and not refused as an expression. Not
-/// [`looks_like_name`]'s rule (for `--known` and for displays), which takes a digit first but
-/// neither primes, spaces nor marks.
+/// letter first, then letters, digits, `_`, an instance's braces, primes (`P'`), the macron
+/// of a display (`Z̄`) and a display's subscripts and superscripts, signs too (`ω₊`, which
+/// Unicode counts as no letter or digit), commas (`P_{1,1}`; one elsewhere is the parser's to
+/// refuse), and spaces inside the braces (`P_{1, 1}`), so that a generator such as `Z̄`, `P'_{1,1}` or `ω₊` is resolved by its name,
+/// or refused as the parameter it names, and not refused as an expression. A space outside
+/// the braces parts two names, which the parser reads as their product: `L G1` is the
+/// expression `L*G1` is, not a name. Not [`looks_like_name`]'s rule (for `--known` and for
+/// displays), which takes a digit first but neither primes, spaces nor marks.
 fn reads_as_a_generator_name(name: &str) -> bool {
+    let mut braces = 0usize;
     name.chars().next().is_some_and(char::is_alphabetic)
-        && name.chars().all(|c| {
-            c.is_alphanumeric() || "_{}, '".contains(c) || c == '\u{304}' || script(c).is_some()
+        && name.chars().all(|c| match c {
+            '{' => {
+                braces += 1;
+                true
+            }
+            '}' => {
+                braces = braces.saturating_sub(1);
+                true
+            }
+            ' ' => braces > 0,
+            c => c.is_alphanumeric() || "_,'".contains(c) || c == '\u{304}' || script(c).is_some(),
         })
 }
 

@@ -2205,6 +2205,55 @@ fn a_name_with_spaces_around_it_is_that_name_in_every_list_of_names() {
     }
 }
 
+/// A closure's generator with a space outside its braces (`L G1`, which the parser reads as
+/// `L*G1`) is refused as the expression it is, as `L*G1` and `L+G1` are, of a file, a built-in
+/// system and a program alike: the name rule took a space anywhere, so `L G1` was taken as one
+/// generator named `L G1` (`the generators H, L G1`). A space inside the braces is still an
+/// instance's (`P_{1, 1}`), and a table's `L G1` is no function of the file.
+#[test]
+fn a_space_outside_braces_makes_a_generator_an_expression() {
+    let rotor = harmonic_rotor_file();
+    let options = ClosureOptions::new(1);
+    for written in ["L G1", " L G1 ", "P _{1,1}"] {
+        let err =
+            file_closure_report(&rotor, &["H", written], &options, Caller::Program).unwrap_err();
+        let name = written.trim();
+        assert_eq!(err.kind, ErrorKind::Expression, "{written:?}: {err}");
+        assert_eq!(
+            err.line_col(),
+            Some((1, 1 + written.find(name).unwrap())),
+            "{written:?}: {err}"
+        );
+        assert!(
+            err.message.starts_with(&format!(
+                "'{name}' is an expression, not the name of a function: name it with \
+                 LoadedSystem::add_function (add_function(\"G\", \"G\", \"{name}\")"
+            )),
+            "{written:?}: {err}"
+        );
+    }
+    let (_, algebra) =
+        file_closure_report(&rotor, &["H", "P_{1, 1}"], &options, Caller::Program).unwrap();
+    assert_eq!(algebra.display, ["H", "P_{1, 1}"]);
+    for system in [
+        &["systems/harmonic-rotor.toml"][..],
+        &["--system", "harmonic"],
+    ] {
+        let said = crate::superint_refused(&[&["closure"], system, &["H", "L G1"]].concat());
+        pretty_assertions::assert_eq!(
+            said,
+            "superint: error: <command line>:1:1: 'L G1' is an expression, not the name of a \
+             function: name it with --define (--define 'G=L G1', then G among the \
+             generators)\n 1 | L G1\n   | ^^^^\n"
+        );
+        let said = crate::superint_refused(&[&["table"], system, &["L G1", "L"]].concat());
+        assert!(
+            said.starts_with("superint: error: <command line>:1:1: 'L G1' is not a function"),
+            "{said}"
+        );
+    }
+}
+
 /// A parameter named by its display as a closure's generator (`ω₊`, the parameter `a` of
 /// `systems/fock-darwin.toml`, printed so) is refused as the parameter it is, as `a` is: the
 /// name rule took no subscript sign, so `ω₊` was refused as an expression, with the advice to
