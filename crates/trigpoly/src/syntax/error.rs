@@ -381,14 +381,16 @@ pub struct Excerpt {
     pub width: usize,
     /// Where the span ends on a later line than it starts (past the blanks it ends with), that
     /// line's excerpt, its caret under the span's part of it from the line's first character
-    /// that is not blank (its `line` and `column` that character's), with no `last` of its own.
+    /// that is not blank (its `line` and `column` that character's; of a long line, the window
+    /// around the span's end), with no `last` of its own.
     pub last: Option<Box<Excerpt>>,
 }
 
 impl Excerpt {
     /// The place and excerpt of the line of `src` where `span` starts; the caret covers the
     /// span's part of that line. Where the span runs on to a later line, [`Excerpt::last`] is
-    /// the line where it ends.
+    /// the line where it ends, and the first line's caret stops at its last character that is
+    /// not blank (`x/(x + ` then `y)`: under `(x +`).
     ///
     /// ```
     /// use trigpoly::{Excerpt, Span};
@@ -405,22 +407,28 @@ impl Excerpt {
         let start = char_floor(src, span.start);
         let line_end = src[start..].find('\n').map_or(src.len(), |i| start + i);
         let end = char_floor(src, span.end).max(start);
-        let mut excerpt = Excerpt::on_line(src, start, end.min(line_end));
-        // The span's end past the blanks it ends with (a line break after its text), and,
-        // on a later line, that line from its first character that is not blank.
+        // The span's end past the blanks it ends with (a line break after its text).
         let last_end = start + src[start..end].trim_end().len();
-        if last_end > line_end {
-            let last_line = src[..last_end].rfind('\n').map_or(0, |i| i + 1);
-            let text = &src[last_line..last_end];
-            let from = last_line + text.len() - text.trim_start().len();
-            excerpt.last = Some(Box::new(Excerpt::on_line(src, from, last_end)));
+        if last_end <= line_end {
+            return Excerpt::on_line(src, start, end.min(line_end), false);
         }
+        // On a later line: the first line to its last character that is not blank, and the
+        // line where the span ends from its first character that is not blank, so that each
+        // caret is under text.
+        let first_end = start + src[start..line_end].trim_end().len();
+        let mut excerpt = Excerpt::on_line(src, start, first_end, false);
+        let last_line = src[..last_end].rfind('\n').map_or(0, |i| i + 1);
+        let text = &src[last_line..last_end];
+        let from = last_line + text.len() - text.trim_start().len();
+        excerpt.last = Some(Box::new(Excerpt::on_line(src, from, last_end, true)));
         excerpt
     }
 
     /// The excerpt of the line of `src` where byte `start` stands, the caret under
-    /// `start..end` (which that line holds).
-    fn on_line(src: &str, start: usize, end: usize) -> Excerpt {
+    /// `start..end` (which that line holds); of a long line, the window around the span's
+    /// start, or, `at_end`, around its end (the line where a span over several lines ends,
+    /// whose end is what it shows).
+    fn on_line(src: &str, start: usize, end: usize, at_end: bool) -> Excerpt {
         let line_start = src[..start].rfind('\n').map_or(0, |i| i + 1);
         let line_end = src[start..].find('\n').map_or(src.len(), |i| start + i);
         let end = end.clamp(start, line_end);
@@ -432,14 +440,21 @@ impl Excerpt {
         let width = src[start..end].chars().count().max(1);
         let (from, to) = if line.len() <= EXCERPT_CHARS {
             (0, line.len())
+        } else if at_end {
+            let end_column = column + width;
+            let from = end_column.saturating_sub(width.min(EXCERPT_CONTEXT) + EXCERPT_CONTEXT);
+            (from, (end_column + EXCERPT_CONTEXT).min(line.len()))
         } else {
             let to = column + width.min(EXCERPT_CONTEXT) + EXCERPT_CONTEXT;
             (column.saturating_sub(EXCERPT_CONTEXT), to.min(line.len()))
         };
+        // Where the caret begins in the window: at the span's start, or at the window's
+        // start where the window begins past it (the end of a long span).
+        let caret = column.clamp(from, line.len());
         let cut_before = if from > 0 { "…" } else { "" };
         let cut_after = if to < line.len() { "…" } else { "" };
         let window: String = line[from..to].iter().collect();
-        let pad: String = line[from..column.min(line.len())]
+        let pad: String = line[from..caret]
             .iter()
             .map(|&c| if c == '\t' { '\t' } else { ' ' })
             .collect();
@@ -448,7 +463,7 @@ impl Excerpt {
             column: column + 1,
             text: format!("{cut_before}{window}{cut_after}"),
             pad: " ".repeat(cut_before.chars().count()) + &pad,
-            width: width.min(to.saturating_sub(column)).max(1),
+            width: (column + width).min(to).saturating_sub(caret).max(1),
             last: None,
         }
     }

@@ -925,8 +925,9 @@ fn a_long_line_renders_as_a_window_around_the_error() {
 /// A refused span that runs on past its first line (a divisor opened on one line and closed
 /// on another) shows the line where it ends too, its caret from that line's first character
 /// that is not blank, so that both of its ends are seen (the excerpt showed `x/(x +` alone),
-/// with `…` for the lines between; a span that ends with a line break after its text is on
-/// one line.
+/// with `…` for the lines between, and the first line's caret to its last character that is
+/// not blank (it ran on under the blanks at the line's end); a span that ends with a line
+/// break after its text is on one line.
 #[test]
 fn a_span_over_several_lines_shows_both_its_ends() {
     let vars = phase_space();
@@ -940,6 +941,10 @@ fn a_span_over_several_lines_shows_both_its_ends() {
             "\n  x/(x +\n    ^^^^\n    y) + 1\n    ^^",
         ),
         ("x/(x\n\n +\n\ty)", "\n  x/(x\n    ^^\n  …\n  \ty)\n  \t^^"),
+        (
+            "x/(x + \t\n  y) + 1",
+            "\n  x/(x + \t\n    ^^^^\n    y) + 1\n    ^^",
+        ),
     ];
     for (src, excerpt) in rendered {
         let err = Poly::<Rational>::parse(&vars, src).expect_err("not a monomial");
@@ -950,6 +955,20 @@ fn a_span_over_several_lines_shows_both_its_ends() {
         );
         assert_eq!(err.render(src), err.to_string());
     }
+    // A long line where the span ends is shown by its window around the span's end, which
+    // is what it is there to show (the window was around the line's first character, and
+    // cut away `y)`).
+    let src = format!("x/(x +\n  {}y) + 1", "x*".repeat(60));
+    let err = Poly::<Rational>::parse(&vars, &src).expect_err("not a monomial");
+    let last = err
+        .excerpt()
+        .unwrap()
+        .last
+        .clone()
+        .expect("the span ends on line 2");
+    assert_eq!((last.line, last.column), (2, 3));
+    assert_eq!(last.text, format!("…{}y) + 1", "x*".repeat(39)));
+    assert_eq!((last.pad.as_str(), last.width), (" ", 80));
     let excerpt = trigpoly::Excerpt::of("x/(x +\n", trigpoly::Span::new(2, 7));
     assert_eq!((excerpt.line, excerpt.column, excerpt.width), (1, 3, 4));
     assert_eq!(excerpt.last, None);
