@@ -61,8 +61,22 @@ pub fn closure_report_for(
     options: &ClosureOptions,
     caller: Caller,
 ) -> Result<(Report, Closure), EngineError> {
+    let settings = Settings::new(caller, "Limits");
+    closure_report_in(name, system, generators, options, settings)
+}
+
+/// [`closure_report_for`] whose advice at a limit names `settings`: a system's in code, or a
+/// file's ([`file_closure_report`]).
+fn closure_report_in(
+    name: &str,
+    system: &System,
+    generators: &[NamedFunction],
+    options: &ClosureOptions,
+    settings: Settings,
+) -> Result<(Report, Closure), EngineError> {
+    let caller = settings.caller;
     let start = Instant::now();
-    let c = closure_of(system, generators, options).map_err(|e| advised(e, caller))?;
+    let c = closure_of(system, generators, options).map_err(|e| settings.advised(e))?;
     let holding = Holding {
         held: HeldAt::new(options.condition.as_ref(), system.vars(), &c.parameters),
         fixed: !c.parameters.is_empty(),
@@ -89,7 +103,7 @@ pub fn closure_report_for(
     };
     let names = Names::of_system(system);
     let sections = vec![
-        structure.section(&gens).map_err(|e| advised(e, caller))?,
+        structure.section(&gens).map_err(|e| settings.advised(e))?,
         relations_section(&c, &holding, names, !options.symbolic.is_empty()),
     ];
     Ok((
@@ -105,65 +119,92 @@ pub fn closure_report_for(
     ))
 }
 
-/// A closure stopped at a limit of the ring, `e` (the products of the generators together
-/// past the term limit, or one operation past the term, work or degree limit), said with what
-/// to do about it in the options of `caller`, the one place where the command line's advice
-/// and the library's are worded: raise the limit that stopped it, where one reaches it, or
-/// lower the degree, up to which the products of the generators are formed (`raise it with
-/// Limits::max_terms, or lower ClosureOptions::degree`; `--max-terms N`, `--degree` on the
-/// command line). The algebra's own advice (`raise the limit or simplify the input`) gives
-/// way to it. The error is then an [`EngineError::PastLimit`] of the same limit
-/// ([`EngineError::limit`]), whose message says so. Any other error is as it is: the
-/// closure's own limit, `ClosureOptions::max_monomials`, says what to do already.
-fn advised(e: EngineError, caller: Caller) -> EngineError {
-    let (said, limit, raise) = match &e {
-        // The products of the generators together: the term limit raises them, or a lower
-        // degree forms fewer.
-        EngineError::ClosureTooManyTerms { limit, .. } => (
-            e.to_string(),
-            *limit,
-            format!(
-                "raise it with {}, or ",
-                caller.names("--max-terms N", "Limits::max_terms")
-            ),
-        ),
-        // Which product passed it is the engine's own business; what the caller can change
-        // is the limit or the degree (the machine's memory has no setting: only a lower degree
-        // forms less).
-        EngineError::Algebra(a) => {
-            let raise = |setting: &str| format!("raise the limit with {setting}, or ");
-            let raise = match a.limit() {
-                None => return e,
-                Some(LimitKind::Terms) => raise(caller.names("--max-terms N", "Limits::max_terms")),
-                Some(LimitKind::Work) => {
-                    raise(caller.names("--max-term-products N", "Limits::max_term_products"))
-                }
-                // A degree past the most the degree limit may be has no setting either.
-                Some(LimitKind::Degree(n)) if n > u64::from(MAX_DEGREE_CEILING) => format!(
-                    "no limit reaches this exponent ({} is at most {MAX_DEGREE_CEILING}): ",
-                    caller.names("--max-degree", "max_degree")
+/// Whose settings a closure's advice at a limit names: the command line's flags, or a
+/// program's, its limits those of a system built in code (`Limits`, any degree limit) or of a
+/// system file (`LimitsOverride`, whose degree limit is at most [`MAX_DEGREE_CEILING`], as
+/// the command line's is).
+#[derive(Clone, Copy)]
+struct Settings {
+    caller: Caller,
+    /// The type of a program's limits: `Limits` or `LimitsOverride`.
+    limits: &'static str,
+}
+
+impl Settings {
+    fn new(caller: Caller, limits: &'static str) -> Settings {
+        Settings { caller, limits }
+    }
+
+    /// The setting of a limit: the command line's `flag`, or the program's limits' `method`.
+    fn limit(self, flag: &str, method: &str) -> String {
+        let program = format!("{}::{method}", self.limits);
+        self.caller.names(flag, &program).to_string()
+    }
+
+    /// A closure stopped at a limit of the ring, `e` (the products of the generators together
+    /// past the term limit, or one operation past the term, work or degree limit), said with
+    /// what to do about it in these settings, the one place where the command line's advice
+    /// and the library's are worded: raise the limit that stopped it, where one reaches it, or
+    /// lower the degree, up to which the products of the generators are formed (`raise it with
+    /// Limits::max_terms, or lower ClosureOptions::degree` for a system built in code,
+    /// `LimitsOverride::max_terms` for a file's; `--max-terms N`, `--degree` on the command
+    /// line). The algebra's own advice (`raise the limit or simplify the input`) gives way to
+    /// it. The error is then an [`EngineError::PastLimit`] of the same limit
+    /// ([`EngineError::limit`]), whose message says so. Any other error is as it is: the
+    /// closure's own limit, `ClosureOptions::max_monomials`, says what to do already.
+    fn advised(self, e: EngineError) -> EngineError {
+        let (said, limit, raise) = match &e {
+            // The products of the generators together: the term limit raises them, or a lower
+            // degree forms fewer.
+            EngineError::ClosureTooManyTerms { limit, .. } => (
+                e.to_string(),
+                *limit,
+                format!(
+                    "raise it with {}, or ",
+                    self.limit("--max-terms N", "max_terms")
                 ),
-                Some(LimitKind::Degree(_)) => {
-                    raise(caller.names("--max-degree D", "Limits::max_degree"))
-                }
-                Some(_) => String::new(),
-            };
-            (a.without_advice(), limit_in_force(a), raise)
+            ),
+            // Which product passed it is the engine's own business; what the caller can
+            // change is the limit or the degree (the machine's memory has no setting: only a
+            // lower degree forms less).
+            EngineError::Algebra(a) => {
+                let raise = |setting: String| format!("raise the limit with {setting}, or ");
+                // A degree limit of the command line or a file is at most the ceiling; one in
+                // code is not.
+                let capped = self.caller == Caller::CommandLine || self.limits != "Limits";
+                let raise = match a.limit() {
+                    None => return e,
+                    Some(LimitKind::Terms) => raise(self.limit("--max-terms N", "max_terms")),
+                    Some(LimitKind::Work) => {
+                        raise(self.limit("--max-term-products N", "max_term_products"))
+                    }
+                    // A degree past the most the degree limit may be has no setting either.
+                    Some(LimitKind::Degree(n)) if capped && n > u64::from(MAX_DEGREE_CEILING) => {
+                        format!(
+                            "no limit reaches this exponent ({} is at most {MAX_DEGREE_CEILING}): ",
+                            self.limit("--max-degree", "max_degree")
+                        )
+                    }
+                    Some(LimitKind::Degree(_)) => raise(self.limit("--max-degree D", "max_degree")),
+                    Some(_) => String::new(),
+                };
+                (a.without_advice(), limit_in_force(a), raise)
+            }
+            _ => return e,
+        };
+        let Some(which) = e.limit() else {
+            return e;
+        };
+        let degree = self.caller.names("--degree", "ClosureOptions::degree");
+        let formed = match e {
+            EngineError::ClosureTooManyTerms { .. } => "",
+            _ => " (the products of the generators up to it are formed)",
+        };
+        EngineError::PastLimit {
+            which,
+            limit,
+            message: format!("{said}; {raise}lower {degree}{formed}"),
         }
-        _ => return e,
-    };
-    let Some(which) = e.limit() else {
-        return e;
-    };
-    let degree = caller.names("--degree", "ClosureOptions::degree");
-    let formed = match e {
-        EngineError::ClosureTooManyTerms { .. } => "",
-        _ => " (the products of the generators up to it are formed)",
-    };
-    EngineError::PastLimit {
-        which,
-        limit,
-        message: format!("{said}; {raise}lower {degree}{formed}"),
     }
 }
 
@@ -224,7 +265,8 @@ fn symbols_text(c: &Closure) -> Option<Entry> {
 /// condition the flow leaves) is an error of the file without a place, of kind `Limit` (with
 /// the hint to raise the limit, but for [`ClosureOptions::max_monomials`], which its message
 /// names; a limit of the ring's message says to raise it or lower the degree, as
-/// [`closure_report_for`]'s does) or `Engine`, as
+/// [`closure_report_for`]'s does, a program's limits named `LimitsOverride::max_terms`, as
+/// the loader takes them) or `Engine`, as
 /// [`table_report`](crate::system_file::table_report)'s are. `caller` chooses whose options
 /// the report's advice names, as for [`closure_report_for`].
 ///
@@ -257,12 +299,12 @@ pub fn file_closure_report(
     caller: Caller,
 ) -> Result<(Report, Closure), FileError> {
     let generators = file.closure_generators(names, &[])?;
-    let (report, closure) = closure_report_for(
+    let (report, closure) = closure_report_in(
         &file.the_name(),
         file.system(),
         &generators,
         options,
-        caller,
+        Settings::new(caller, "LimitsOverride"),
     )
     .map_err(|e| file.computation_failed("computing the closure", &e))?;
     Ok((report.about_file(&file.source().origin), closure))

@@ -1390,7 +1390,10 @@ fn a_closure_past_the_term_limit_says_that_limit() {
 /// as the command line says it in its options: raise the limit, or lower
 /// `ClosureOptions::degree`, of a system built in code and of a file alike (a program's error
 /// said the limit alone, and a file's hint how to raise it, never the degree); the error is
-/// still of that limit, by type, and a file's still has its hint.
+/// still of that limit, by type, and a file's still has its hint. A file's limits are named
+/// as a program sets them, `LimitsOverride` (its advice named `Limits`, which sets a system's
+/// in code), and an exponent past the most a file's degree limit may be is raised by the
+/// degree limit of a system in code (its advice said that no limit reached it).
 #[test]
 fn a_closures_report_at_a_limit_advises_the_librarys_settings() {
     let terms = "the products of the generators up to degree 4 would have more than 60 terms \
@@ -1417,6 +1420,7 @@ fn a_closures_report_at_a_limit_advises_the_librarys_settings() {
     let err =
         file_closure_report(&rotor, &SU2, &ClosureOptions::new(4), Caller::Program).unwrap_err();
     assert_eq!(err.kind, ErrorKind::Limit);
+    let terms = terms.replace("Limits::", "LimitsOverride::");
     assert_eq!(err.message, format!("computing the closure: {terms}"));
     assert!(err.hint.is_some_and(|h| h.contains("max_terms")));
     // One operation past the work limit, and past the degree limit.
@@ -1430,8 +1434,8 @@ fn a_closures_report_at_a_limit_advises_the_librarys_settings() {
         err.message,
         "computing the closure: the product of 495 terms by 495 would form 245025 term \
          products, past the limit of 1000 (the work limit); raise the limit with \
-         Limits::max_term_products, or lower ClosureOptions::degree (the products of the \
-         generators up to it are formed)"
+         LimitsOverride::max_term_products, or lower ClosureOptions::degree (the products of \
+         the generators up to it are formed)"
     );
     let mut high = harmonic_rotor_file();
     high.add_function("X", "X", "p_y^300").unwrap();
@@ -1440,6 +1444,25 @@ fn a_closures_report_at_a_limit_advises_the_librarys_settings() {
     assert_eq!(err.kind, ErrorKind::Limit);
     assert!(
         err.message.ends_with(
+            "; raise the limit with LimitsOverride::max_degree, or lower ClosureOptions::degree \
+             (the products of the generators up to it are formed)"
+        ),
+        "{err}"
+    );
+    // A degree limit in code may be past the most a file's may be (MAX_DEGREE_CEILING), so
+    // an exponent past that is raised by it too (the advice said that no limit reached it).
+    let wide = systems::Rotor::Harmonic
+        .system(Limits::default().max_degree(20_000))
+        .unwrap();
+    let x = NamedFunction::new("X", "X", wide.parse("p_y^17000").unwrap());
+    let l = NamedFunction::new("L", "L", wide.get("L").unwrap().clone());
+    let err = closure_report("the rotor", &wide, &[l, x], &ClosureOptions::new(2)).unwrap_err();
+    assert_eq!(
+        err.limit(),
+        Some(EngineLimit::Ring(LimitKind::Degree(34_000)))
+    );
+    assert!(
+        err.to_string().ends_with(
             "; raise the limit with Limits::max_degree, or lower ClosureOptions::degree (the \
              products of the generators up to it are formed)"
         ),
