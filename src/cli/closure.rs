@@ -298,10 +298,15 @@ fn builtin_generators(
         let e = match defined.iter().find(|d| d.0 == name) {
             Some(d) => d.1.clone(),
             None => {
-                refuse_expression_as_generator(written, Caller::CommandLine, |n| {
-                    subject.new_name_refusal(n).is_none()
-                        && printed.admit("the generator", n, n).is_ok()
-                })
+                refuse_expression_as_generator(
+                    written,
+                    Caller::CommandLine,
+                    |n| {
+                        subject.new_name_refusal(n).is_none()
+                            && printed.admit("the generator", n, n).is_ok()
+                    },
+                    || subject.parsed_unwarned(written),
+                )
                 .map_err(|e| anyhow!(e.to_string()))?;
                 refuse_parameter_as_generator(
                     written,

@@ -388,6 +388,13 @@ impl Subject {
         })
     }
 
+    /// Whether `src` reads as an expression, [`Subject::parse`] without keeping what it reads
+    /// in doubt: the error placed in `src`, of its kind (`limit` where a limit stopped it).
+    pub fn parsed_unwarned(&self, src: &str) -> Result<(), FileError> {
+        self.warnings()
+            .unwarned(|| self.parse_placed(src, src, 0).map(drop))
+    }
+
     /// Parses an expression: named functions, family instances, brackets. What it reads in
     /// doubt is kept, to be printed by [`Subject::warned`] (a file keeps its own).
     pub fn parse(&self, src: &str) -> Result<Expr, String> {

@@ -94,10 +94,20 @@ impl LoadedSystem {
             let (expr, display) = match given.iter().find(|g| g.name == name) {
                 Some(g) => (g.expr.clone(), g.display.clone()),
                 None => {
-                    refuse_expression_as_generator(written, self.caller, |n| {
-                        self.refuses_new_name(n).is_none()
-                            && printed.admit("the generator", n, n).is_ok()
-                    })?;
+                    refuse_expression_as_generator(
+                        written,
+                        self.caller,
+                        |n| {
+                            self.refuses_new_name(n).is_none()
+                                && printed.admit("the generator", n, n).is_ok()
+                        },
+                        || {
+                            self.kept_warnings().unwarned(|| {
+                                self.parse_argument_within(written, 0..written.len())
+                                    .map(drop)
+                            })
+                        },
+                    )?;
                     refuse_parameter_as_generator(written, self.caller, self.system.vars())?;
                     // The parse error with its place: its excerpt shows the generator.
                     let expr = self.parse_argument_within(written, 0..written.len())?;
@@ -209,16 +219,22 @@ pub fn new_name_refusal(
 /// surrounding spaces left out, as a name given twice is, and says how to name it
 /// (`--define 'G=2*L'` for [`Caller::CommandLine`], `LoadedSystem::add_function` for a
 /// program), with the first name of `G`, `X`, `Y`, `W` that `free` takes (a name the system
-/// does not have), else `Gen`.
+/// does not have), else `Gen`. Text that is no expression either (`L+`, `P _{1,1}`) gets the
+/// parser's error instead, from `parse`, which says what is wrong with it, where the advice
+/// would name it as written and fail again; a parse that a limit stopped is an expression
+/// still.
 ///
 /// ```
 /// use superint::system_file::{refuse_expression_as_generator, Caller, ErrorKind};
 ///
-/// assert!(refuse_expression_as_generator("P_{1,1}", Caller::Program, |_| true).is_ok());
-/// assert!(refuse_expression_as_generator(" L ", Caller::Program, |_| true).is_ok());
-/// assert!(refuse_expression_as_generator("P_{1, 1}", Caller::Program, |_| true).is_ok());
-/// assert!(refuse_expression_as_generator("L G1", Caller::Program, |_| true).is_err());
-/// let err = refuse_expression_as_generator("L+G1", Caller::Program, |n| n != "G").unwrap_err();
+/// let refused = |name, free: fn(&str) -> bool| {
+///     refuse_expression_as_generator(name, Caller::Program, free, || Ok(()))
+/// };
+/// assert!(refused("P_{1,1}", |_| true).is_ok());
+/// assert!(refused(" L ", |_| true).is_ok());
+/// assert!(refused("P_{1, 1}", |_| true).is_ok());
+/// assert!(refused("L G1", |_| true).is_err());
+/// let err = refused("L+G1", |n| n != "G").unwrap_err();
 /// assert_eq!((err.kind, err.line_col()), (ErrorKind::Expression, Some((1, 1))));
 /// assert!(err.message.ends_with(
 ///     "name it with LoadedSystem::add_function (add_function(\"X\", \"X\", \"L+G1\"), \
@@ -229,10 +245,15 @@ pub fn refuse_expression_as_generator(
     name: &str,
     caller: Caller,
     mut free: impl FnMut(&str) -> bool,
+    parse: impl FnOnce() -> Result<(), FileError>,
 ) -> Result<(), FileError> {
     let written = name.trim();
     if reads_as_a_generator_name(written) {
         return Ok(());
+    }
+    match parse() {
+        Err(unread) if unread.kind != ErrorKind::Limit => return Err(unread),
+        _ => {}
     }
     // A name the system does not have, for the example.
     let free = ["G", "X", "Y", "W", "Gen"]

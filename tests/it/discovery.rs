@@ -2294,9 +2294,9 @@ fn closure_sends_an_expression_generator_to_define() {
         ),
         (
             "systems/two-centres.toml",
-            "L+G",
-            "superint: error: <command line>:1:1: 'L+G' is an expression, not the name of a function: name it with \
-             --define (--define 'X=L+G', then X among the generators)\n 1 | L+G\n   | ^^^\n",
+            "Lx+G",
+            "superint: error: <command line>:1:1: 'Lx+G' is an expression, not the name of a function: name it with \
+             --define (--define 'X=Lx+G', then X among the generators)\n 1 | Lx+G\n   | ^^^^\n",
         ),
     ] {
         let args = ["closure", file, generator, "H"];

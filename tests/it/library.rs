@@ -2237,7 +2237,7 @@ fn a_name_with_spaces_around_it_is_that_name_in_every_list_of_names() {
 fn a_space_outside_braces_makes_a_generator_an_expression() {
     let rotor = harmonic_rotor_file();
     let options = ClosureOptions::new(1);
-    for written in ["L G1", " L G1 ", "P _{1,1}"] {
+    for written in ["L G1", " L G1 ", "L*G1"] {
         let err =
             file_closure_report(&rotor, &["H", written], &options, Caller::Program).unwrap_err();
         let name = written.trim();
@@ -2274,6 +2274,48 @@ fn a_space_outside_braces_makes_a_generator_an_expression() {
             said.starts_with("superint: error: <command line>:1:1: 'L G1' is not a function"),
             "{said}"
         );
+    }
+}
+
+/// A closure's generator that is neither a name nor an expression (`P _{1,1}`, `L+`) gets the
+/// parser's error, which says what is wrong with it, from a program and the command line,
+/// of a file and a built-in system: it was refused as an expression, with the advice to
+/// `--define 'G=P _{1,1}'`, which fails as the generator did.
+#[test]
+fn a_generator_that_is_no_expression_gets_the_parsers_error() {
+    let rotor = harmonic_rotor_file();
+    let options = ClosureOptions::new(1);
+    let cases = [
+        (
+            "P _{1,1}",
+            3,
+            "'_{1,1}' is a subscript with no name before it: a subscript follows its name, \
+             before a power, as in x_{1}^{2}",
+            "\n 1 | P _{1,1}\n   |   ^^^^^^\n",
+        ),
+        (
+            "L+",
+            3,
+            "expected an expression after '+', found end of input",
+            "\n 1 | L+\n   |   ^\n",
+        ),
+    ];
+    for (written, column, why, excerpt) in cases {
+        let err =
+            file_closure_report(&rotor, &["H", written], &options, Caller::Program).unwrap_err();
+        assert_eq!(err.kind, ErrorKind::Expression, "{written:?}: {err}");
+        assert_eq!(err.line_col(), Some((1, column)), "{written:?}: {err}");
+        assert!(err.message.starts_with(why), "{written:?}: {err}");
+        for system in [
+            &["systems/harmonic-rotor.toml"][..],
+            &["--system", "harmonic"],
+        ] {
+            let said = crate::superint_refused(&[&["closure"], system, &["H", written]].concat());
+            pretty_assertions::assert_eq!(
+                said,
+                format!("superint: error: <command line>:1:{column}: {why}{excerpt}")
+            );
+        }
     }
 }
 
