@@ -6,7 +6,7 @@ use std::time::Instant;
 
 use brackets::closure::{closure_of, relation_text, Bracket, Closure, ClosureOptions};
 use brackets::{EngineError, NamedFunction, System};
-use trigpoly::{AlgebraError, LimitKind, Style, VarKind};
+use trigpoly::{LimitKind, Style, VarKind};
 
 use crate::report::{
     counted, listed, written_in_functions, ClaimResult, ClosureFacts, Entry, Equation, Equations,
@@ -61,7 +61,10 @@ pub fn closure_report_for(
     options: &ClosureOptions,
     caller: Caller,
 ) -> Result<(Report, Closure), EngineError> {
-    let settings = Settings::new(caller, "Limits");
+    let settings = Settings {
+        caller,
+        limits: LimitsOf::Code,
+    };
     closure_report_in(name, system, generators, options, settings)
 }
 
@@ -120,25 +123,37 @@ fn closure_report_in(
 }
 
 /// Whose settings a closure's advice at a limit names: the command line's flags, or a
-/// program's, its limits those of a system built in code (`Limits`, any degree limit) or of a
-/// system file (`LimitsOverride`, whose degree limit is at most [`MAX_DEGREE_CEILING`], as
-/// the command line's is).
+/// program's, its limits those of a system built in code or of a system file ([`LimitsOf`]).
 #[derive(Clone, Copy)]
 struct Settings {
     caller: Caller,
-    /// The type of a program's limits: `Limits` or `LimitsOverride`.
-    limits: &'static str,
+    limits: LimitsOf,
+}
+
+/// Whose limits a closure's system has: a system built in code its `Limits`, any degree limit;
+/// a system file the `LimitsOverride` given to the loader, whose degree limit is at most
+/// [`MAX_DEGREE_CEILING`], as the command line's is.
+#[derive(Clone, Copy, PartialEq, Eq)]
+enum LimitsOf {
+    Code,
+    File,
 }
 
 impl Settings {
-    fn new(caller: Caller, limits: &'static str) -> Settings {
-        Settings { caller, limits }
-    }
-
     /// The setting of a limit: the command line's `flag`, or the program's limits' `method`.
     fn limit(self, flag: &str, method: &str) -> String {
-        let program = format!("{}::{method}", self.limits);
+        let limits = match self.limits {
+            LimitsOf::Code => "Limits",
+            LimitsOf::File => "LimitsOverride",
+        };
+        let program = format!("{limits}::{method}");
         self.caller.names(flag, &program).to_string()
+    }
+
+    /// Whether the degree limit is at most [`MAX_DEGREE_CEILING`]: the command line's and a
+    /// file's; one in code is not.
+    fn degree_capped(self) -> bool {
+        self.caller == Caller::CommandLine || self.limits == LimitsOf::File
     }
 
     /// A closure stopped at a limit of the ring, `e` (the products of the generators together
@@ -169,9 +184,6 @@ impl Settings {
             // lower degree forms less).
             EngineError::Algebra(a) => {
                 let raise = |setting: String| format!("raise the limit with {setting}, or ");
-                // A degree limit of the command line or a file is at most the ceiling; one in
-                // code is not.
-                let capped = self.caller == Caller::CommandLine || self.limits != "Limits";
                 let raise = match a.limit() {
                     None => return e,
                     Some(LimitKind::Terms) => raise(self.limit("--max-terms N", "max_terms")),
@@ -179,7 +191,9 @@ impl Settings {
                         raise(self.limit("--max-term-products N", "max_term_products"))
                     }
                     // A degree past the most the degree limit may be has no setting either.
-                    Some(LimitKind::Degree(n)) if capped && n > u64::from(MAX_DEGREE_CEILING) => {
+                    Some(LimitKind::Degree(n))
+                        if self.degree_capped() && n > u64::from(MAX_DEGREE_CEILING) =>
+                    {
                         format!(
                             "no limit reaches this exponent ({} is at most {MAX_DEGREE_CEILING}): ",
                             self.limit("--max-degree", "max_degree")
@@ -188,7 +202,11 @@ impl Settings {
                     Some(LimitKind::Degree(_)) => raise(self.limit("--max-degree D", "max_degree")),
                     Some(_) => String::new(),
                 };
-                (a.without_advice(), limit_in_force(a), raise)
+                // The limit in force as a count; 0 for the machine's memory, which has none.
+                let limit = a
+                    .limit_in_force()
+                    .map_or(0, |n| usize::try_from(n).unwrap_or(usize::MAX));
+                (a.without_advice(), limit, raise)
             }
             _ => return e,
         };
@@ -205,23 +223,6 @@ impl Settings {
             limit,
             message: format!("{said}; {raise}lower {degree}{formed}"),
         }
-    }
-}
-
-/// The limit in force that the algebra's refusal `a` names, as a count: of terms, of term
-/// products, or the degree; 0 for the machine's memory, which has none.
-fn limit_in_force(a: &AlgebraError) -> usize {
-    let wide = |n: u64| usize::try_from(n).unwrap_or(usize::MAX);
-    match *a {
-        AlgebraError::TooManyTerms { limit } | AlgebraError::TooManyPrintedTerms { limit, .. } => {
-            limit
-        }
-        AlgebraError::TooMuchWork { limit, .. } | AlgebraError::TooMuchSummedWork { limit, .. } => {
-            wide(limit)
-        }
-        AlgebraError::ExponentTooLarge { limit, .. }
-        | AlgebraError::OrderTooLarge { limit, .. } => wide(u64::from(limit)),
-        _ => 0,
     }
 }
 
@@ -304,7 +305,10 @@ pub fn file_closure_report(
         file.system(),
         &generators,
         options,
-        Settings::new(caller, "LimitsOverride"),
+        Settings {
+            caller,
+            limits: LimitsOf::File,
+        },
     )
     .map_err(|e| file.computation_failed("computing the closure", &e))?;
     Ok((report.about_file(&file.source().origin), closure))

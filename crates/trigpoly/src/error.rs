@@ -299,6 +299,32 @@ impl AlgebraError {
         }
     }
 
+    /// The setting in force that this error passed, as a count: the term limit, the work
+    /// limit (term products) or the degree limit; `None` where no setting bounds it (the
+    /// machine's memory) or no limit stopped the computation.
+    ///
+    /// ```
+    /// use trigpoly::AlgebraError;
+    ///
+    /// assert_eq!(AlgebraError::TooManyTerms { limit: 10 }.limit_in_force(), Some(10));
+    /// let e = AlgebraError::ExponentTooLarge { var: "x".into(), exponent: -5000, limit: 1000 };
+    /// assert_eq!(e.limit_in_force(), Some(1000));
+    /// assert_eq!(AlgebraError::DivisionByZero.limit_in_force(), None);
+    /// ```
+    #[must_use]
+    pub fn limit_in_force(&self) -> Option<u64> {
+        let wide = |n: usize| u64::try_from(n).unwrap_or(u64::MAX);
+        match *self {
+            AlgebraError::TooManyTerms { limit }
+            | AlgebraError::TooManyPrintedTerms { limit, .. } => Some(wide(limit)),
+            AlgebraError::TooMuchWork { limit, .. }
+            | AlgebraError::TooMuchSummedWork { limit, .. } => Some(limit),
+            AlgebraError::ExponentTooLarge { limit, .. }
+            | AlgebraError::OrderTooLarge { limit, .. } => Some(u64::from(limit)),
+            _ => None,
+        }
+    }
+
     /// The message without the advice a limit's ends with (`; raise the limit or simplify
     /// the input`): what happened, for a caller that gives advice of its own (a command
     /// line's options). The messages of the term limit, of its printing, of the work limit and
