@@ -247,7 +247,7 @@ fn sum_pieces<'a>(piece: Piece<'a>, level: i32, w: usize, out: &mut Vec<(&'a str
 fn short_group_end(t: &str) -> Option<usize> {
     let (mut open, mut group_width) = (0, 0);
     for (k, c) in t.char_indices() {
-        group_width += width(c.encode_utf8(&mut [0; 4]));
+        group_width += usize::from(!super::tex::is_combining(c));
         if group_width > WHOLE_GROUP {
             return None;
         }

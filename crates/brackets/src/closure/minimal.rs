@@ -271,7 +271,9 @@ impl<'a> RelationIdeal<'a> {
         );
         let combination = echelon.express(&modular::to_fp(&difference)?)?;
         let combination = modular::reconstruct_vec(&combination)?;
-        (self.sums.equals(&self.multiples, &combination, &difference)).then_some(over_columns)
+        self.sums
+            .equals(&self.multiples, &combination, &difference)
+            .then_some(over_columns)
     }
 
     /// Whether `v` is in the span: modulo the prime, the combination found there
