@@ -10,11 +10,8 @@ use brackets::NamedFunction;
 use superint::discovery::define_builtin_resonant;
 use superint::system_file::{
     load, load_bytes, name_as_identifier, read_bytes, Caller, ErrorKind, FileError, LimitsOverride,
-    LoadedSystem,
+    LoadedSystem, STDIN,
 };
-
-/// How messages name a system file read from standard input.
-const STDIN: &str = "<stdin>";
 
 /// Loads the system file at `path`, or the one on standard input when `path` is `-`, whose
 /// reports name the command line as the giver of their texts ([`Caller::CommandLine`]). A file

@@ -454,7 +454,7 @@ impl Subject {
                     Expr::parse_noting(s.vars(), &placed, s.as_ref()).map_err(|e| {
                         let span = shift + e.span.start..shift + e.span.end;
                         FileError::at(ErrorKind::Expression, COMMAND_LINE, text, span, e.message())
-                            .with_cause(e.cause())
+                            .with_cause_without_file(e.cause())
                     })?;
                 for r in &readings {
                     let w = Warning::run_together(

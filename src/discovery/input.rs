@@ -3,7 +3,7 @@
 
 use crate::system_file::{
     assignment_sides, comma_pieces, condition_cannot_set, fixed_twice, no_variable, trimmed,
-    FileError, CONDITION_FORM, CONDITION_USAGE,
+    FileError, LimitSettings, CONDITION_FORM, CONDITION_USAGE,
 };
 use brackets::{EngineError, System};
 use trigpoly::{Expr, Limits, Rational, Style, Var};
@@ -197,7 +197,10 @@ pub fn parse_condition(
             }
             _ => 0,
         };
-        refuse(values[k].clone(), e.to_string()).limited_by(&e)
+        // A system with no file: the command line's flag, or the program's `Limits`.
+        let refused = refuse(values[k].clone(), e.to_string());
+        let settings = LimitSettings::of_origin(false, &refused.origin);
+        refused.limited_by(&e, settings)
     })
 }
 

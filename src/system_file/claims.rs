@@ -12,7 +12,7 @@ use trigpoly::{AlgebraError, Expr, ParseCause, Span, VarKind};
 
 use super::error::{ErrorKind, FileError};
 use super::model::{ClaimModel, When};
-use super::scope::{rewrite_braces, Limit};
+use super::scope::{rewrite_braces, Limit, LimitSettings};
 use super::text::{array_strings, split_top_level, unbalanced_bracket, Source, Text};
 use super::written::Reach;
 use super::LoadedSystem;
@@ -102,10 +102,20 @@ impl CheckedClaim {
 /// An engine error at a place of the file: limits are limit errors, with the hint (none for a
 /// limit of the search's or the closure's options, whose message names the option).
 pub(crate) fn engine_error(source: &Source, span: Range<usize>, e: &EngineError) -> FileError {
+    engine_error_under(source, span, e, LimitSettings::of_source(source))
+}
+
+/// [`engine_error`], a limit's hint naming the settings `settings`.
+fn engine_error_under(
+    source: &Source,
+    span: Range<usize>,
+    e: &EngineError,
+    settings: LimitSettings,
+) -> FileError {
     let message = e.to_string();
     match Limit::of_engine(e) {
         Some(limit) => FileError {
-            hint: limit.hint(),
+            hint: limit.hint(settings),
             ..source.error(ErrorKind::Limit, span, message)
         },
         None => source.error(ErrorKind::Engine, span, message),
@@ -152,14 +162,16 @@ impl From<EngineError> for FileError {
                 error.span.start..error.span.end,
                 error.message(),
             )
-            .with_cause(error.cause()),
+            .with_cause_under(error.cause(), LimitSettings::Program),
             // Located by its own excerpt when it knows its source.
             EngineError::Parse { error, .. } if error.excerpt().is_some() => error.into(),
             EngineError::Parse { message, error, .. } => {
-                FileError::new(ErrorKind::Expression, expression, message).with_cause(error.cause())
+                FileError::new(ErrorKind::Expression, expression, message)
+                    .with_cause_under(error.cause(), LimitSettings::Program)
             }
             e => {
-                let mut err = engine_error(&Source::new("<program>", ""), 0..0, &e);
+                let program = Source::new("<program>", "");
+                let mut err = engine_error_under(&program, 0..0, &e, LimitSettings::Program);
                 err.location = None;
                 err
             }
@@ -499,7 +511,7 @@ fn parse_condition_with(
                 side.trimmed_span(),
                 e.to_string(),
             )
-            .limited_by(&e)
+            .limited_by(&e, LimitSettings::of_source(source))
         })
 }
 

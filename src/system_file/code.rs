@@ -31,7 +31,7 @@ impl LoadedSystem {
     /// # Ok::<(), superint::system_file::FileError>(())
     /// ```
     pub fn parse(&self, src: &str) -> Result<Expr, FileError> {
-        self.value(&self.argument_in(Source::program("<expression>", src))?)
+        self.value(&self.argument_in(Source::program_about(&self.source, "<expression>", src))?)
     }
 
     /// Adds a named function, as a `[[function]]` of the file declares one; `value` may use
@@ -63,7 +63,7 @@ impl LoadedSystem {
         self.check_new_name(&origin, name, "a function")?;
         check_display_in(&origin, display)?;
         self.check_printed_apart(&origin, name, display)?;
-        let source = Source::program(&origin, value);
+        let source = Source::program_about(&self.source, &origin, value);
         let value = self
             .scope(self.families.len())
             .parse(&source, &Text::whole(&source))?;

@@ -12,7 +12,7 @@ use std::ops::Range;
 
 use trigpoly::{Excerpt, Span};
 
-use super::scope::Limit;
+use super::scope::{Limit, LimitSettings};
 
 /// What kind of problem a [`FileError`] reports.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
@@ -189,13 +189,16 @@ impl FileError {
         self
     }
 
-    /// The same error, of an expression whose parse met `cause` ([`FileError::cause`]), and
-    /// classified by it as the loader classifies a text's error: of kind
-    /// [`ErrorKind::Limit`], with the hint that says how to raise the limit, where a limit
-    /// stopped the parse ([`ParseCause::limit`](trigpoly::ParseCause::limit)); otherwise of
-    /// its kind. By this one rule a parse that a limit stopped is a limit whether it reaches
-    /// a program through the loader or through `?`, or the command line from a built-in
-    /// system's text.
+    /// The same error, of an expression of a system file whose parse met `cause`
+    /// ([`FileError::cause`]), and classified by it as the loader classifies a text's error:
+    /// of kind [`ErrorKind::Limit`], with the hint that says how to raise the limit, where a
+    /// limit stopped the parse ([`ParseCause::limit`](trigpoly::ParseCause::limit)); otherwise
+    /// of its kind. By this one rule a parse that a limit stopped is a limit whether it
+    /// reaches a program through the loader or through `?`, or the command line from a
+    /// built-in system's text ([`FileError::with_cause_without_file`]). The hint names the
+    /// settings of the text's giver, told by the error's origin: the command line's flag first
+    /// for `<command line>`, a program's `LimitsOverride` first for a text of a program
+    /// (`<expression>`), the file's `[limits]` first for the file's own text.
     ///
     /// ```
     /// use superint::system_file::{ErrorKind, FileError};
@@ -205,45 +208,82 @@ impl FileError {
     /// let err = FileError::at(ErrorKind::Expression, "<command line>", "x^5000", 2..6, "past")
     ///     .with_cause(&power);
     /// assert_eq!(err.kind, ErrorKind::Limit);
-    /// assert!(err.hint.is_some_and(|h| h.contains("max_degree")));
+    /// assert_eq!(
+    ///     err.hint.as_deref(),
+    ///     Some("if the machine has the memory, raise the limit with --max-degree D (or \
+    ///           max_degree under [limits] in the file)")
+    /// );
     /// let err = FileError::new(ErrorKind::Expression, "<command line>", "no")
     ///     .with_cause(&ParseCause::Decimal);
     /// assert_eq!((err.kind, err.hint), (ErrorKind::Expression, None));
     /// ```
     #[must_use]
-    pub fn with_cause(mut self, cause: &trigpoly::ParseCause) -> Self {
+    pub fn with_cause(self, cause: &trigpoly::ParseCause) -> Self {
+        let settings = LimitSettings::of_origin(true, &self.origin);
+        self.with_cause_under(cause, settings)
+    }
+
+    /// [`FileError::with_cause`] of an expression of a system with no file, a built-in one or
+    /// one built in code: a limit's hint names the command line's flag alone for
+    /// `<command line>` (`--system harmonic` has no `[limits]` to set), and otherwise the
+    /// `Limits` the system's variables were built with.
+    ///
+    /// ```
+    /// use superint::system_file::{ErrorKind, FileError};
+    /// use superint::trigpoly::ParseCause;
+    ///
+    /// let power = ParseCause::PowerPastLimit { power: Some(5000), limit: 1000 };
+    /// let err = FileError::at(ErrorKind::Expression, "<command line>", "x^5000", 2..6, "past")
+    ///     .with_cause_without_file(&power);
+    /// assert_eq!(
+    ///     err.hint.as_deref(),
+    ///     Some("if the machine has the memory, raise the limit with --max-degree D")
+    /// );
+    /// ```
+    #[must_use]
+    pub fn with_cause_without_file(self, cause: &trigpoly::ParseCause) -> Self {
+        let settings = LimitSettings::of_origin(false, &self.origin);
+        self.with_cause_under(cause, settings)
+    }
+
+    /// [`FileError::with_cause`], a limit's hint naming the settings `settings`.
+    pub(crate) fn with_cause_under(
+        mut self,
+        cause: &trigpoly::ParseCause,
+        settings: LimitSettings,
+    ) -> Self {
         self.cause = match cause {
             trigpoly::ParseCause::Syntax => None,
             cause => Some(Box::new(cause.clone())),
         };
-        self.classified_by_cause()
+        self.classified_by_cause(settings)
     }
 
-    /// The same error, of kind [`ErrorKind::Limit`] with the hint that raises the limit, where
-    /// a limit of the engine stopped what it is about, `e` ([`EngineError::limit`]); as it is
-    /// otherwise: a condition whose values a limit stopped as they were resolved into each
-    /// other is a limit, as its values' reading is.
+    /// The same error, of kind [`ErrorKind::Limit`] with the hint that raises the limit in
+    /// `settings`, where a limit of the engine stopped what it is about, `e`
+    /// ([`EngineError::limit`]); as it is otherwise: a condition whose values a limit stopped
+    /// as they were resolved into each other is a limit, as its values' reading is.
     ///
     /// [`EngineError::limit`]: brackets::EngineError::limit
     #[must_use]
-    pub(crate) fn limited_by(self, e: &brackets::EngineError) -> Self {
+    pub(crate) fn limited_by(self, e: &brackets::EngineError, settings: LimitSettings) -> Self {
         match Limit::of_engine(e) {
             Some(limit) => FileError {
                 kind: ErrorKind::Limit,
-                hint: limit.hint(),
+                hint: limit.hint(settings),
                 ..self
             },
             None => self,
         }
     }
 
-    /// The same error, of kind [`ErrorKind::Limit`] with the hint where its
+    /// The same error, of kind [`ErrorKind::Limit`] with the hint in `settings` where its
     /// [`FileError::cause`] is a limit ([`FileError::with_cause`]).
-    fn classified_by_cause(self) -> Self {
+    fn classified_by_cause(self, settings: LimitSettings) -> Self {
         match self.cause.as_deref().and_then(Limit::of_parse) {
             Some(limit) => FileError {
                 kind: ErrorKind::Limit,
-                hint: limit.hint(),
+                hint: limit.hint(settings),
                 ..self
             },
             None => self,
@@ -523,7 +563,7 @@ impl From<trigpoly::ParseError> for FileError {
             location: e.excerpt().map(|x| Box::new(Location::from(x.clone()))),
             ..FileError::new(ErrorKind::Expression, "<expression>", e.message())
         }
-        .with_cause(e.cause())
+        .with_cause_under(e.cause(), LimitSettings::Program)
     }
 }
 

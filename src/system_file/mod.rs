@@ -73,6 +73,7 @@ pub use reports::{
     bracket_report, check_each, check_report, expand_report, given_twice, rank_report,
     rank_report_when, table_report,
 };
+pub(crate) use scope::LimitSettings;
 pub use text::{comma_pieces, split_top_level, trimmed, Source, Text};
 pub use tower::{family_tower_report, family_tower_report_with_progress};
 
@@ -357,6 +358,10 @@ pub fn what_is(system: &System, families: &[Family], name: &str) -> Option<Strin
 /// a built-in system's as a file's.
 pub const COMMAND_LINE: &str = "<command line>";
 
+/// How messages name a system file read from standard input, which only the command line
+/// reads (`superint check -`).
+pub const STDIN: &str = "<stdin>";
+
 /// An expression given to a report, parsed but not yet expanded. A report parses all its
 /// arguments before it expands any, so that a slip in the last one is reported at once rather
 /// than after the expansion of the first.
@@ -406,7 +411,10 @@ impl LoadedSystem {
     /// ```
     pub fn of_system(system: System) -> Self {
         LoadedSystem {
-            source: Source::program("<program>", ""),
+            source: Source {
+                file: false,
+                ..Source::program("<program>", "")
+            },
             name: system.name().to_string(),
             citation: None,
             description: None,
@@ -434,7 +442,7 @@ impl LoadedSystem {
     /// names its built-in system `--system harmonic`.
     #[must_use]
     pub fn with_origin(mut self, origin: &str) -> Self {
-        self.source = Source::program(origin, "");
+        self.source = Source::program_about(&self.source, origin, "");
         self
     }
 
@@ -555,6 +563,7 @@ impl LoadedSystem {
         };
         Source {
             program: self.source.program,
+            file: self.source.file,
             ..Source::new(origin, text)
         }
     }

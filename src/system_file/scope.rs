@@ -369,15 +369,13 @@ pub(crate) enum Limit {
     /// The term limit (`max_terms`), of a result, of its printing, of a closure's products
     /// together or of a search space's unknowns, which a larger one may reach.
     Terms,
-    /// The degree limit (`max_degree`), of an exponent or an angle's order, which a larger one
-    /// may reach.
-    Degree,
+    /// The degree limit (`max_degree`), of an exponent or an angle's order of this size (one
+    /// too large to say is `u64::MAX`), which a larger limit reaches where the settings allow
+    /// one so large ([`LimitSettings::degree_ceiling`]).
+    Degree(u64),
     /// A limit of the ring this crate does not know yet, which a larger term or degree limit
     /// may reach.
     Size,
-    /// An exponent or order past the most that `max_degree` may be set to, which no limit
-    /// reaches.
-    PastEvery,
     /// A result past the machine's memory, which a larger limit only lets through.
     Memory,
     /// A limit of a search's or a closure's own options (`max_products`, `max_monomials`),
@@ -385,15 +383,105 @@ pub(crate) enum Limit {
     OfOptions,
 }
 
+/// Whose settings raise a limit, as a limit's hint names them: the input the limit stopped
+/// was given by a file, the command line or a program, about a system file or a system with
+/// no file (a built-in one, or one built in code). Told from the text's [`Source`]
+/// ([`LimitSettings::of_source`]) wherever the text has one, so that every caller's hint is
+/// worded in one place, [`Limit::hint`].
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub(crate) enum LimitSettings {
+    /// A system file's own text, loaded by the command line or by a program: the file's
+    /// `[limits]`, then the flag and the `LimitsOverride` given to the loader.
+    File,
+    /// A system file on the command line (a text given on it, or the file piped on standard
+    /// input): the flag, then the file's `[limits]`.
+    FileOnCommandLine,
+    /// A text a program gave to a system file: the `LimitsOverride` given to the loader, then
+    /// the file's `[limits]`.
+    FileInProgram,
+    /// A built-in system on the command line (`--system harmonic`), which has no file: the
+    /// flag alone.
+    BuiltInOnCommandLine,
+    /// A system built in code (a built-in one too, `discovery::builtin_system`): the `Limits`
+    /// its variables were built with.
+    Code,
+    /// A program's error taken by `?` from the engine or the parser, whose system may be built
+    /// in code or loaded from a file: both settings.
+    Program,
+}
+
+impl LimitSettings {
+    /// The settings of a text by its source: about a system with no file ([`Source::file`]),
+    /// given on the command line (a built-in system's) or by a program (one built in code);
+    /// else a file's, its text given on the command line (`<command line>`, or the file read
+    /// from standard input, `<stdin>`, which only the command line reads), by a program (a
+    /// text named in angle brackets, `<expression>`, `<condition>`, `<function F>`), or the
+    /// file's own, loaded by either.
+    pub(crate) fn of_source(source: &Source) -> LimitSettings {
+        LimitSettings::of_origin(source.file, &source.origin)
+    }
+
+    /// [`LimitSettings::of_source`] of a source named `origin`, about a system with a file
+    /// when `file`.
+    pub(crate) fn of_origin(file: bool, origin: &str) -> LimitSettings {
+        let command_line = origin == super::COMMAND_LINE || origin == super::STDIN;
+        match (file, command_line) {
+            (false, true) => LimitSettings::BuiltInOnCommandLine,
+            (false, false) => LimitSettings::Code,
+            (true, true) => LimitSettings::FileOnCommandLine,
+            (true, false) if origin.starts_with('<') => LimitSettings::FileInProgram,
+            (true, false) => LimitSettings::File,
+        }
+    }
+
+    /// The largest degree limit these settings may set: a file's and the command line's
+    /// [`MAX_DEGREE_CEILING`], a system built in code's `u32::MAX` (`Limits::max_degree`), and
+    /// a program's either, so its largest.
+    fn degree_ceiling(self) -> u64 {
+        match self {
+            LimitSettings::Code | LimitSettings::Program => u64::from(u32::MAX),
+            _ => u64::from(MAX_DEGREE_CEILING),
+        }
+    }
+
+    /// The settings that raise a limit, by the file's key `keys` (`max_degree`), the command
+    /// line's flag `flags` (`--max-degree D`) and the library's field `fields` of `Limits` and
+    /// `LimitsOverride` (`max_degree`), the first that the input's giver would reach for
+    /// first.
+    fn raising(self, keys: &str, flags: &str, fields: &str) -> String {
+        match self {
+            LimitSettings::File => format!(
+                "{keys} under [limits] in the file (on the command line, {flags}; in a \
+                 program, the LimitsOverride given to the loader)"
+            ),
+            LimitSettings::FileOnCommandLine => {
+                format!("{flags} (or {keys} under [limits] in the file)")
+            }
+            LimitSettings::FileInProgram => format!(
+                "{fields} of the LimitsOverride given to the loader (or {keys} under [limits] \
+                 in the file)"
+            ),
+            LimitSettings::BuiltInOnCommandLine => flags.to_string(),
+            LimitSettings::Code => {
+                format!("{fields} of the Limits the system's variables were built with")
+            }
+            LimitSettings::Program => format!(
+                "{fields} of the Limits a system built in code was built with, or of the \
+                 LimitsOverride given to the loader of a system file"
+            ),
+        }
+    }
+}
+
 impl Limit {
     /// The limit of the ring that `kind` names: the term limit (of a result or of its
-    /// printing), the work limit, the degree limit (an exponent, an angle's order), past every
-    /// limit when its number is, or the machine's memory.
+    /// printing), the work limit, the degree limit (an exponent, an angle's order), or the
+    /// machine's memory.
     fn of_kind(kind: LimitKind) -> Limit {
         match kind {
             LimitKind::Work => Limit::Work,
             LimitKind::Terms => Limit::Terms,
-            LimitKind::Degree(n) => Limit::of_degree(n),
+            LimitKind::Degree(n) => Limit::Degree(n),
             LimitKind::Memory => Limit::Memory,
             // A kind of limit this crate does not know yet: one that a larger limit may reach.
             _ => Limit::Size,
@@ -419,47 +507,51 @@ impl Limit {
         cause.limit().map(Limit::of_kind)
     }
 
-    /// The degree limit, for an exponent or order of size `power`: past every limit when it
-    /// is above the most that `max_degree` may be (one too large to say is `u64::MAX`).
-    fn of_degree(power: u64) -> Limit {
-        match power > u64::from(MAX_DEGREE_CEILING) {
-            true => Limit::PastEvery,
-            false => Limit::Degree,
-        }
-    }
-
-    /// The hint that goes with the limit, naming the setting that raises it: the work
+    /// The hint that goes with the limit, naming the setting that raises it in `settings`,
+    /// those of the input it stopped ([`LimitSettings`]: the command line's flag first for a
+    /// text given on it, and alone for a built-in system, which has no file): the work
     /// limit's, the term limit's (`max_terms` alone: a larger `max_degree` lets no more terms
     /// through, nor a search space of more unknowns), the degree limit's, or, for an exponent
-    /// past the most that `max_degree` may be, that no limit reaches it; none for a limit of
-    /// the options, whose message names the option that raises it.
-    pub(crate) fn hint(self) -> Option<String> {
+    /// past the most that the settings' `max_degree` may be, that no limit reaches it; none
+    /// for a limit of the options, whose message names the option that raises it.
+    pub(crate) fn hint(self, settings: LimitSettings) -> Option<String> {
+        let raise = |keys: &str, flags: &str, fields: &str| settings.raising(keys, flags, fields);
         Some(match self {
             Limit::OfOptions => return None,
-            Limit::PastEvery => format!(
-                "no limit reaches this exponent or order: max_degree is at most \
-                 {MAX_DEGREE_CEILING}; write the expression without so large a power or multiple"
-            ),
+            Limit::Degree(power) if power > settings.degree_ceiling() => {
+                let most = settings.degree_ceiling();
+                format!(
+                    "no limit reaches this exponent or order: max_degree is at most {most}; \
+                     write the expression without so large a power or multiple"
+                )
+            }
             Limit::Memory => {
                 "no limit makes room for it: write the expression with smaller powers".to_string()
             }
-            Limit::Work => "if the machine has the time, raise the limit with max_term_products \
-                            under [limits] in the file (on the command line, --max-term-products \
-                            N; in a program, the LimitsOverride given to the loader)"
-                .to_string(),
-            Limit::Terms => "if the machine has the memory, raise the limit with max_terms \
-                             under [limits] in the file (on the command line, --max-terms N; \
-                             in a program, the LimitsOverride given to the loader)"
-                .to_string(),
-            Limit::Degree => "if the machine has the memory, raise the limit with max_degree \
-                              under [limits] in the file (on the command line, --max-degree D; \
-                              in a program, the LimitsOverride given to the loader)"
-                .to_string(),
-            Limit::Size => "if the machine has the memory, raise the limit with max_terms or \
-                            max_degree under [limits] in the file (on the command line, \
-                            --max-terms N or --max-degree D; in a program, the LimitsOverride \
-                            given to the loader)"
-                .to_string(),
+            Limit::Work => format!(
+                "if the machine has the time, raise the limit with {}",
+                raise(
+                    "max_term_products",
+                    "--max-term-products N",
+                    "max_term_products"
+                )
+            ),
+            Limit::Terms => format!(
+                "if the machine has the memory, raise the limit with {}",
+                raise("max_terms", "--max-terms N", "max_terms")
+            ),
+            Limit::Degree(_) => format!(
+                "if the machine has the memory, raise the limit with {}",
+                raise("max_degree", "--max-degree D", "max_degree")
+            ),
+            Limit::Size => format!(
+                "if the machine has the memory, raise the limit with {}",
+                raise(
+                    "max_terms or max_degree",
+                    "--max-terms N or --max-degree D",
+                    "max_terms or max_degree"
+                )
+            ),
         })
     }
 }
@@ -567,7 +659,7 @@ pub(crate) fn expression_error(source: &Source, text: &Text, e: &ParseError) -> 
     let message = relocate_opener(source, text, e);
     let error = text
         .error(source, ErrorKind::Expression, e.span, message)
-        .with_cause(e.cause());
+        .with_cause_under(e.cause(), LimitSettings::of_source(source));
     let Some(unknown) = Unknown::of(e.cause()) else {
         return error;
     };
@@ -1184,7 +1276,11 @@ mod tests {
     #[test]
     fn an_exponent_past_every_limit_is_not_advised_to_raise_one() {
         let written = |power: Option<u64>| ParseCause::PowerPastLimit { power, limit: 1000 };
-        let limit_hint = |cause: ParseCause| Limit::of_parse(&cause).and_then(Limit::hint).unwrap();
+        let limit_hint = |cause: ParseCause| {
+            Limit::of_parse(&cause)
+                .and_then(|limit| limit.hint(LimitSettings::File))
+                .unwrap()
+        };
         let raise = limit_hint(written(Some(5000)));
         assert!(raise.contains("raise the limit with max_degree under [limits]"));
         // 32768, 99999999999999999999 (no 64-bit number), -9223372036854775808.

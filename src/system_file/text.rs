@@ -27,9 +27,13 @@ pub struct Source {
     /// Whether a program gave the text (a function added in code, say): hints then name the
     /// library's calls, not a file's tables.
     pub(crate) program: bool,
+    /// Whether the system the text is about has a file (not one built in code, nor a built-in
+    /// one, `--system harmonic`): a limit's hint names the file's `[limits]` only where it has
+    /// ([`LimitSettings`](super::LimitSettings)).
+    pub(crate) file: bool,
 }
 
-/// `Source { origin: "systems/kepler.toml", text: <4211 bytes>, program: false }`: a file's
+/// `Source { origin: "systems/kepler.toml", text: <4211 bytes>, program: false, file: true }`: a file's
 /// text, shared by each of its claims and families, is printed by none of them.
 impl std::fmt::Debug for Source {
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
@@ -37,25 +41,36 @@ impl std::fmt::Debug for Source {
             .field("origin", &self.origin)
             .field("text", &format_args!("<{} bytes>", self.text.len()))
             .field("program", &self.program)
+            .field("file", &self.file)
             .finish()
     }
 }
 
 impl Source {
-    /// A source with its origin.
+    /// A source with its origin, a text of a system file.
     pub fn new(origin: &str, text: &str) -> Self {
         Source {
             origin: origin.to_string(),
             text: Arc::from(text),
             program: false,
+            file: true,
         }
     }
 
-    /// A text a program gave, named `origin` in messages.
+    /// A text a program gave, named `origin` in messages, about a system file.
     pub(crate) fn program(origin: &str, text: &str) -> Self {
         Source {
             program: true,
             ..Source::new(origin, text)
+        }
+    }
+
+    /// A text a program gave, named `origin` in messages, about the system of `about`: one
+    /// with a file or not, as it is.
+    pub(crate) fn program_about(about: &Source, origin: &str, text: &str) -> Self {
+        Source {
+            file: about.file,
+            ..Source::program(origin, text)
         }
     }
 

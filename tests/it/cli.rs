@@ -4747,12 +4747,12 @@ fn a_closure_without_claims_closes_with_what_was_computed() {
 /// A built-in system's text that a limit stops while it is read (a `--when` value, a
 /// `--define`, a `--known` integral: `x^5000` past the degree limit, a power past the term
 /// limit) is of kind `limit`, with the hint that raises it, as the same text given with a
-/// system file is: it was of kind `expression`, without the hint.
+/// system file is (it was of kind `expression`, without the hint); the hint names the flag
+/// alone, a built-in system having no file.
 #[test]
 fn a_builtin_systems_text_at_a_limit_is_a_limit() {
-    let hint = "\nhint: if the machine has the memory, raise the limit with max_degree under \
-                [limits] in the file (on the command line, --max-degree D; in a program, the \
-                LimitsOverride given to the loader)\n";
+    let hint = "\nhint: if the machine has the memory, raise the limit with --max-degree D\n";
+    let file_hint = |flag: &str, key: &str| format!("{flag} (or {key} under [limits] in the file)");
     let texts: [&[&str]; 4] = [
         &["search", "--when", "p_theta = x^5000"],
         &["closure", "H", "L", "--define", "G=x^5000"],
@@ -4776,9 +4776,19 @@ fn a_builtin_systems_text_at_a_limit_is_a_limit() {
             &[&[*command, "systems/harmonic-rotor.toml"][..], rest].concat(),
             2,
         ));
-        assert_eq!(builtin, file, "{args:?}");
+        let (flag, key) = match args.contains(&"--max-terms") {
+            true => ("--max-terms N", "max_terms"),
+            false => ("--max-degree D", "max_degree"),
+        };
+        assert_eq!(
+            builtin.replace(flag, &file_hint(flag, key)),
+            file,
+            "{args:?}"
+        );
         assert!(
-            builtin.contains("\nhint: if the machine has the memory"),
+            builtin.ends_with(&format!(
+                "\nhint: if the machine has the memory, raise the limit with {flag}\n"
+            )),
             "{builtin}"
         );
     }
@@ -4809,16 +4819,20 @@ fn a_builtin_systems_text_at_a_limit_is_a_limit() {
 #[test]
 fn a_condition_at_a_limit_is_a_limit() {
     let when = "x = (y + p_y + 1)^4, y = (p_x + p_theta + 1)^4";
-    let said = format!(
-        "superint: error: <command line>:1:5: the result would have more than 100 terms (the \
-         term limit); raise the limit or simplify the input\n 1 | {when}\n   |     \
-         ^^^^^^^^^^^^^^^\nhint: if the machine has the memory, raise the limit with max_terms \
-         under [limits] in the file (on the command line, --max-terms N; in a program, the \
-         LimitsOverride given to the loader)\n"
-    );
-    for system in [
-        &["--system", "harmonic"][..],
-        &["systems/harmonic-rotor.toml"],
+    let said = |raise: &str| {
+        format!(
+            "superint: error: <command line>:1:5: the result would have more than 100 terms \
+             (the term limit); raise the limit or simplify the input\n 1 | {when}\n   |     \
+             ^^^^^^^^^^^^^^^\nhint: if the machine has the memory, raise the limit with \
+             {raise}\n"
+        )
+    };
+    for (system, said) in [
+        (&["--system", "harmonic"][..], said("--max-terms N")),
+        (
+            &["systems/harmonic-rotor.toml"],
+            said("--max-terms N (or max_terms under [limits] in the file)"),
+        ),
     ] {
         let args = [&["search"], system, &["--when", when, "--max-terms", "100"]].concat();
         assert_eq!(stderr(&superint_exits(&args, 2)), said, "{system:?}");
@@ -4847,6 +4861,141 @@ fn a_condition_at_a_limit_is_a_limit() {
     assert!(
         errors[0]["hint"].as_str().unwrap().contains("max_terms"),
         "{report}"
+    );
+}
+
+/// A limit's hint speaks to the input it was given: for a built-in system (`--system
+/// harmonic`, which has no file) the command line's flag alone, where it named `max_degree
+/// under [limits] in the file`, then the flag and a program's `LimitsOverride`; for a text
+/// given on the command line to a file, and for a file piped on standard input, the flag
+/// first, then the file's `[limits]`; for a file's own text, loaded by whoever, the file's
+/// `[limits]`, then the flag and the `LimitsOverride`, as before. The degree, term and work
+/// limits alike, each from one place.
+#[test]
+fn a_limits_hint_speaks_to_the_input_it_was_given() {
+    let hint = |args: &[&str]| {
+        let err = stderr(&superint_exits(args, 2));
+        let hint = err.lines().find_map(|l| l.strip_prefix("hint: "));
+        hint.unwrap_or_else(|| panic!("{args:?}: {err}"))
+            .to_string()
+    };
+    let memory = "if the machine has the memory, raise the limit with";
+    let time = "if the machine has the time, raise the limit with";
+    let big = "(x + p_x + y + p_y + 1)^20";
+    let work = "(1 + x + y + p_x)^4*(1 - x + y - p_y)^4";
+    for (args, said) in [
+        (
+            &[
+                "expand",
+                "--system",
+                "harmonic",
+                "x^2000",
+                "--max-degree",
+                "100",
+            ][..],
+            format!("{memory} --max-degree D"),
+        ),
+        (
+            &[
+                "bracket",
+                "--system",
+                "harmonic",
+                big,
+                "H",
+                "--max-terms",
+                "1000",
+            ],
+            format!("{memory} --max-terms N"),
+        ),
+        (
+            &[
+                "expand",
+                "--system",
+                "gravity",
+                work,
+                "--max-term-products",
+                "600",
+            ],
+            format!("{time} --max-term-products N"),
+        ),
+        (
+            &[
+                "rank",
+                "--system",
+                "harmonic",
+                "L",
+                "x^2000",
+                "--max-degree",
+                "100",
+            ],
+            format!("{memory} --max-degree D"),
+        ),
+        (
+            &[
+                "expand",
+                "systems/harmonic-rotor.toml",
+                "x^2000",
+                "--max-degree",
+                "100",
+            ],
+            format!("{memory} --max-degree D (or max_degree under [limits] in the file)"),
+        ),
+        (
+            &[
+                "bracket",
+                "systems/harmonic-rotor.toml",
+                "L",
+                "H",
+                "--when",
+                "x = y^2000",
+            ],
+            format!("{memory} --max-degree D (or max_degree under [limits] in the file)"),
+        ),
+        (
+            &[
+                "expand",
+                "systems/harmonic-rotor.toml",
+                work,
+                "--max-term-products",
+                "600",
+            ],
+            format!(
+                "{time} --max-term-products N (or max_term_products under [limits] in the file)"
+            ),
+        ),
+    ] {
+        assert_eq!(hint(args), said, "{args:?}");
+    }
+    // A file's own claim past the limit: whoever loaded it may raise it, the file first.
+    let file = crate::scratch_text(
+        "limit-hint-of-a-file",
+        "limited.toml",
+        "name = \"oscillator\"\nhamiltonian = \"p_x^2/2 + x^2/2\"\n\
+         [phase_space]\ncoordinates = [\"x\"]\n\
+         [[claim]]\nid = \"a\"\nclaim = \"x^5000 = 0\"\n",
+    );
+    let own = format!(
+        "{memory} max_degree under [limits] in the file (on the command line, --max-degree D; \
+         in a program, the LimitsOverride given to the loader)"
+    );
+    assert_eq!(hint(&["check", file.to_str().unwrap()]), own);
+    // The same file piped on standard input: only the command line reads it.
+    let mut child = Command::new(env!("CARGO_BIN_EXE_superint"))
+        .args(["check", "-"])
+        .stdin(std::process::Stdio::piped())
+        .stderr(std::process::Stdio::piped())
+        .spawn()
+        .expect("superint runs");
+    let text = std::fs::read(&file).expect("the file");
+    std::io::Write::write_all(&mut child.stdin.take().expect("stdin"), &text).expect("write");
+    let out = child.wait_with_output().expect("superint ends");
+    assert_eq!(out.status.code(), Some(2));
+    assert!(
+        stderr(&out).contains(&format!(
+            "\nhint: {memory} --max-degree D (or max_degree under [limits] in the file)\n"
+        )),
+        "{}",
+        stderr(&out)
     );
 }
 

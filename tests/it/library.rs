@@ -1243,8 +1243,9 @@ fn an_engine_parse_error_taken_by_question_mark_keeps_its_cause() {
 /// A parse that a limit stopped is one error whichever way it reaches a program: the engine's
 /// `System::parse` says which limit (`EngineError::limit`), and as a `FileError`, through `?`
 /// from the engine or the ring, through the loader reading the same text in a file, and
-/// through `LoadedSystem::parse`, it is of kind `limit` with the same message and hint. It was
-/// `expression` through `?`, `limit` through the loader. An unknown name is neither a limit
+/// through `LoadedSystem::parse`, it is of kind `limit` with the same message, and a hint that
+/// names the same limit, each in the settings of its giver (a file's own text, a program's). It
+/// was `expression` through `?`, `limit` through the loader. An unknown name is neither a limit
 /// nor, through any of them, of kind `limit`.
 #[test]
 fn a_parse_stopped_at_a_limit_is_a_limit_through_question_mark_and_the_loader() {
@@ -1276,8 +1277,17 @@ fn a_parse_stopped_at_a_limit_is_a_limit_through_question_mark_and_the_loader() 
         assert_eq!(loaded.kind, kind, "{text}: {loaded}");
         for err in [question_mark().unwrap_err(), ring().unwrap_err(), in_code] {
             assert_eq!(err.kind, kind, "{text}: {err}");
-            if limit.is_some() {
-                assert_eq!((&err.message, &err.hint), (&loaded.message, &loaded.hint));
+            if let Some(limit) = limit {
+                assert_eq!(err.message, loaded.message);
+                let key = match limit {
+                    LimitKind::Degree(_) => "max_degree",
+                    _ => "max_terms",
+                };
+                for hint in [&err.hint, &loaded.hint] {
+                    let hint = hint.as_deref().unwrap_or_default();
+                    assert!(hint.contains(key), "{text}: {hint}");
+                    assert!(hint.contains("LimitsOverride"), "{text}: {hint}");
+                }
             }
         }
     }
@@ -1555,9 +1565,10 @@ fn a_limits_hint_names_the_setting_that_raises_it() {
         let (_, found) = file_search_report(&rotor, &options, Caller::Program)?;
         Ok(found.basis.len())
     }
-    let terms = "if the machine has the memory, raise the limit with max_terms under [limits] \
-                 in the file (on the command line, --max-terms N; in a program, the \
-                 LimitsOverride given to the loader)";
+    // Through `?`, from the engine: a program's settings, of a system in code or a file.
+    let terms = "if the machine has the memory, raise the limit with max_terms of the Limits \
+                 a system built in code was built with, or of the LimitsOverride given to the \
+                 loader of a system file";
     for limits in [
         LimitsOverride::default().max_terms(100),
         LimitsOverride::default().max_terms(100).max_degree(4000),
@@ -1576,9 +1587,53 @@ fn a_limits_hint_names_the_setting_that_raises_it() {
     assert_eq!(
         err.hint.as_deref(),
         Some(
-            "if the machine has the memory, raise the limit with max_degree under [limits] in \
-             the file (on the command line, --max-degree D; in a program, the LimitsOverride \
-             given to the loader)"
+            "if the machine has the memory, raise the limit with max_degree of the Limits a \
+             system built in code was built with, or of the LimitsOverride given to the loader \
+             of a system file"
+        ),
+        "{err}"
+    );
+}
+
+/// A limit's hint names a program's settings as the system it is about has them: a system
+/// built in code (a built-in one too, as `discovery::builtin_system` builds it) the `Limits`
+/// its variables were built with, where it named `max_degree under [limits] in the file`,
+/// which it has not, and said that no limit reaches an exponent past 32767, which
+/// `Limits::max_degree` does; a file the `LimitsOverride` given to the loader, then its
+/// `[limits]`.
+#[test]
+fn a_programs_limit_hint_names_the_systems_settings() {
+    let code = LoadedSystem::of_system(systems::harmonic_rotor());
+    let (_, builtin) = superint::discovery::builtin_system("gravity", false, Limits::default())
+        .unwrap()
+        .unwrap();
+    let builtin = LoadedSystem::of_system(builtin);
+    let in_code = "if the machine has the memory, raise the limit with max_degree of the Limits \
+                   the system's variables were built with";
+    for system in [&code, &builtin] {
+        for text in ["x^5000", "x^40000"] {
+            let err = expand_report(system, &[text], None).unwrap_err();
+            assert_eq!(err.kind, ErrorKind::Limit, "{err}");
+            assert_eq!(err.hint.as_deref(), Some(in_code), "{err}");
+        }
+        let err = bracket_report(system, "L", "H", Some("x = y^5000")).unwrap_err();
+        assert_eq!(err.hint.as_deref(), Some(in_code), "{err}");
+    }
+    let err = expand_report(&code, &["x^4294967296"], None).unwrap_err();
+    assert!(
+        err.hint
+            .as_deref()
+            .is_some_and(|h| h.starts_with("no limit reaches this exponent")),
+        "{err}"
+    );
+    let rotor =
+        load_system_file("systems/harmonic-rotor.toml", &LimitsOverride::default()).unwrap();
+    let err = expand_report(&rotor, &["x^5000"], None).unwrap_err();
+    assert_eq!(
+        err.hint.as_deref(),
+        Some(
+            "if the machine has the memory, raise the limit with max_degree of the \
+             LimitsOverride given to the loader (or max_degree under [limits] in the file)"
         ),
         "{err}"
     );
