@@ -5,9 +5,8 @@ use std::path::{Path, PathBuf};
 use std::sync::OnceLock;
 
 use super::search::Subject;
-use anyhow::Context;
 use brackets::NamedFunction;
-use superint::discovery::define_builtin_resonant;
+use superint::discovery::{builtin_system, builtin_system_refused, define_builtin_resonant};
 use superint::system_file::{
     load, load_bytes, name_as_identifier, read_bytes, Caller, ErrorKind, FileError, LimitsOverride,
     LoadedSystem, STDIN,
@@ -113,10 +112,18 @@ impl SystemGiven {
             );
         }
         // Built once, its resonant functions added to a copy.
-        let plain = Subject::open(None, Some(name), false, limits)?;
+        let plain = Subject::open(None, Some(name), false, limits).map_err(|e| {
+            // The resonant functions are built too: the least limits said are theirs.
+            match builtin_system(name, true, limits.or_defaults()) {
+                Err(resonant) => {
+                    builtin_system_refused(name, true, limits.or_defaults(), &resonant).into()
+                }
+                Ok(_) => e,
+            }
+        })?;
         let mut resonant = plain.system().clone();
         define_builtin_resonant(name, &mut resonant)
-            .with_context(|| format!("the built-in system {name} does not fit the limits given"))?;
+            .map_err(|e| builtin_system_refused(name, true, limits.or_defaults(), &e))?;
         let added = |f: &&NamedFunction| plain.system().function(&f.name).is_none();
         let named = resonant.functions().iter().filter(added).any(|f| {
             let forms = [

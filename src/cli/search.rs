@@ -10,8 +10,8 @@ use brackets::search::{SearchOptions, SearchSpace, DEFAULT_MAX_PRODUCTS};
 use brackets::{EngineError, System};
 use clap::Args;
 use superint::discovery::{
-    builtin_system, command_line_search_report, parse_condition, parse_fixed, parse_known,
-    parse_symbolic, ListRefusal,
+    builtin_system, builtin_system_refused, command_line_search_report, parse_condition,
+    parse_fixed, parse_known, parse_symbolic, ListRefusal,
 };
 use superint::render::{render, Format};
 use superint::report::{with_article, Report};
@@ -274,9 +274,8 @@ impl Subject {
     ) -> anyhow::Result<Subject> {
         if let Some(name) = builtin {
             let limits = limits.or_defaults();
-            let built = builtin_system(name, resonant, limits).with_context(|| {
-                format!("the built-in system {name} does not fit the limits given")
-            })?;
+            let built = builtin_system(name, resonant, limits)
+                .map_err(|e| builtin_system_refused(name, resonant, limits, &e))?;
             return match built {
                 Some((display, s)) => {
                     Ok(Subject::Builtin(display, Box::new(s), Warnings::default()))

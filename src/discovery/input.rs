@@ -3,7 +3,8 @@
 
 use crate::system_file::{
     assignment_sides, comma_pieces, condition_cannot_set, fixed_twice, no_variable, trimmed,
-    FileError, LimitSettings, CONDITION_FORM, CONDITION_USAGE,
+    ErrorKind, FileError, Limit, LimitSettings, CONDITION_FORM, CONDITION_USAGE,
+    MAX_DEGREE_CEILING,
 };
 use brackets::{EngineError, System};
 use trigpoly::{Expr, Limits, Rational, Style, Var};
@@ -91,6 +92,112 @@ pub fn define_builtin_resonant(name: &str, s: &mut System) -> Result<(), EngineE
         "gravity" => define_resonant(s, "Zp", "Wp", "'"),
         _ => Ok(()),
     }
+}
+
+/// The error of the built-in system `name` (with its resonant functions when `resonant`, as
+/// [`builtin_system`] builds it) that the command line's `limits` stopped, `e`: of kind
+/// [`ErrorKind::Limit`], from `--system NAME`, with the hint that names the flag, as a limit
+/// met by a text given on the command line to a built-in system has. Where the term or the
+/// degree limit stopped it, the message says how far that limit must be raised: the least at which the
+/// system is built, found by building it again (a few builds of a few terms each); else it
+/// is the engine's. Any other error is of kind `Engine`.
+///
+/// ```
+/// use superint::discovery::{builtin_system, builtin_system_refused};
+/// use superint::system_file::ErrorKind;
+/// use superint::trigpoly::Limits;
+///
+/// let limits = Limits::default().max_terms(10);
+/// let e = builtin_system("harmonic", true, limits).unwrap_err();
+/// let err = builtin_system_refused("harmonic", true, limits, &e);
+/// assert_eq!((err.kind, err.origin.as_str()), (ErrorKind::Limit, "--system harmonic"));
+/// assert_eq!(
+///     err.message,
+///     "the system does not fit the limits given: building it needs a term limit of at least \
+///      20 (the limit is 10)"
+/// );
+/// assert_eq!(
+///     err.hint.as_deref(),
+///     Some("if the machine has the memory, raise the limit with --max-terms N")
+/// );
+/// ```
+pub fn builtin_system_refused(
+    name: &str,
+    resonant: bool,
+    limits: Limits,
+    e: &EngineError,
+) -> FileError {
+    let origin = format!("--system {name}");
+    let Some(limit) = Limit::of_engine(e) else {
+        let message = format!("the system could not be built: {e}");
+        return FileError::new(ErrorKind::Engine, &origin, message);
+    };
+    // Whether the system builds with one limit at `value`, the others as given: `None` where
+    // another limit, or anything else, stops it.
+    let builds = |raised: Limits, stopped_again: &dyn Fn(Limit) -> bool| match builtin_system(
+        name, resonant, raised,
+    ) {
+        Ok(_) => Some(true),
+        Err(e) => Limit::of_engine(&e)
+            .filter(|l| stopped_again(*l))
+            .map(|_| false),
+    };
+    let least = match limit {
+        Limit::Terms => least_fitting(limits.max_terms as u64, u64::from(u32::MAX), |n| {
+            let raised = limits.max_terms(usize::try_from(n).unwrap_or(usize::MAX));
+            builds(raised, &|l| l == Limit::Terms)
+        })
+        .map(|n| ("term", n, limits.max_terms as u64)),
+        Limit::Degree(_) => least_fitting(
+            u64::from(limits.max_degree),
+            u64::from(MAX_DEGREE_CEILING),
+            |d| {
+                let raised = limits.max_degree(u32::try_from(d).unwrap_or(u32::MAX));
+                builds(raised, &|l| matches!(l, Limit::Degree(_)))
+            },
+        )
+        .map(|d| ("degree", d, u64::from(limits.max_degree))),
+        _ => None,
+    };
+    let why = match least {
+        Some((which, least, given)) => {
+            format!("building it needs a {which} limit of at least {least} (the limit is {given})")
+        }
+        None => e.to_string(),
+    };
+    FileError {
+        hint: limit.hint(LimitSettings::BuiltInOnCommandLine),
+        ..FileError::new(
+            ErrorKind::Limit,
+            &origin,
+            format!("the system does not fit the limits given: {why}"),
+        )
+    }
+}
+
+/// The least value above `given`, and at most `ceiling`, at which `fits` is true, where it is
+/// false at `given` and stays true once it is (a larger limit lets through all a smaller one
+/// does): doubled until it fits, then halved between the last that did not and the first that
+/// did. `None` where it does not fit at `ceiling`, or `fits` cannot say (`None`: something
+/// else stopped it).
+fn least_fitting(given: u64, ceiling: u64, fits: impl Fn(u64) -> Option<bool>) -> Option<u64> {
+    let (mut short, mut enough) = (given, given.saturating_mul(2).clamp(given + 1, ceiling));
+    while !fits(enough)? {
+        if enough >= ceiling {
+            return None;
+        }
+        short = enough;
+        enough = enough.saturating_mul(2).min(ceiling);
+    }
+    while enough - short > 1 {
+        let middle = short + (enough - short) / 2;
+        if fits(middle)? {
+            enough = middle;
+        } else {
+            short = middle;
+        }
+    }
+    Some(enough)
 }
 
 /// Reads a condition `var = value[, var = value]` (such as `p_theta = 2*I*omega/3`), values

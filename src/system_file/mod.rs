@@ -73,7 +73,7 @@ pub use reports::{
     bracket_report, check_each, check_report, expand_report, given_twice, rank_report,
     rank_report_when, table_report,
 };
-pub(crate) use scope::LimitSettings;
+pub(crate) use scope::{Limit, LimitSettings};
 pub use text::{comma_pieces, split_top_level, trimmed, Source, Text};
 pub use tower::{family_tower_report, family_tower_report_with_progress};
 

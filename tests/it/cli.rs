@@ -2904,14 +2904,13 @@ fn cli_a_builtin_system_keeps_the_limits_given() {
         &[&search[..], &degrees("14")].concat(),
         "the space has 2366400 unknowns, more than the term limit 2000000",
     );
-    // The part that does not fit is named, with its text and a caret: a line and column of a
-    // text nobody typed placed it nowhere (line 1, column 1:, said twice).
+    // A built-in system that does not fit is a limit, with the least that builds it and the
+    // flag that raises it; no line and column of a text nobody typed (line 1, column 1:).
     assert_bad_usage(
         &[&search[..], &["--max-terms", "4"]].concat(),
-        "superint: error: the built-in system harmonic does not fit the limits given: its \
-         Hamiltonian: the result would have more than 4 terms (the term limit); raise the limit \
-         or simplify the input\n  (p_x^2 + p_y^2)/(2*M) + M*omega^2*(x^2 + y^2)/2 + \
-         p_theta^2/(2*I)\n  ^^^^^^^^^^^^^^^^^^^^^^^^^^^^^^^^^^^^^^^^^^^^^^^^^^^^^^^^^^^^^^^^^\n",
+        "superint: error: --system harmonic: the system does not fit the limits given: building \
+         it needs a term limit of at least 5 (the limit is 4)\nhint: if the machine has the \
+         memory, raise the limit with --max-terms N\n",
     );
     let o = superint(&[&search[..], &["--max-terms", "4"]].concat());
     assert!(!stderr(&o).contains("line 1"), "{}", stderr(&o));
@@ -2925,8 +2924,8 @@ fn cli_a_builtin_system_keeps_the_limits_given() {
             "L",
             "G1",
         ],
-        "the built-in system gravity does not fit the limits given: its Hamiltonian: the \
-         exponent 2 is past the limit of 1\n",
+        "--system gravity: the system does not fit the limits given: building it needs a \
+         degree limit of at least 3 (the limit is 1)\n",
     );
     // Within the limits, the search runs as before.
     let out = run(
@@ -4996,6 +4995,48 @@ fn a_limits_hint_speaks_to_the_input_it_was_given() {
         )),
         "{}",
         stderr(&out)
+    );
+}
+
+/// A built-in system that the limits given do not let be built (`--max-terms 10`, which its
+/// functions' expansions pass) is a limit as every other is: exit code 2, the limit and how
+/// far it must be raised in the message, and the hint naming the flag, where it said only
+/// `the built-in system harmonic does not fit the limits given: the result would have more
+/// than 10 terms (the term limit); raise the limit or simplify the input`, with no flag;
+/// under a degree limit the least said is that of the resonant functions too, which
+/// `expand` builds (the Hamiltonian's exponent 2 is not enough), and that limit builds it.
+#[test]
+fn a_built_in_system_past_the_limits_given_is_a_limit_with_its_flag() {
+    let memory = "if the machine has the memory, raise the limit with";
+    for (args, needs) in [
+        (
+            &["expand", "--system", "harmonic", "x", "--max-terms", "10"][..],
+            "a term limit of at least 20 (the limit is 10)\nhint: {memory} --max-terms N",
+        ),
+        (
+            &["expand", "--system", "harmonic", "x", "--max-degree", "1"],
+            "a degree limit of at least 3 (the limit is 1)\nhint: {memory} --max-degree D",
+        ),
+        (
+            &["search", "--system", "gravity", "--max-terms", "2"],
+            "a term limit of at least 6 (the limit is 2)\nhint: {memory} --max-terms N",
+        ),
+    ] {
+        let system = args[2];
+        let expected = format!(
+            "superint: error: --system {system}: the system does not fit the limits given: \
+             building it needs {}\n",
+            needs.replace("{memory}", memory)
+        );
+        assert_eq!(stderr(&superint_exits(args, 2)), expected, "{args:?}");
+    }
+    run(
+        &["expand", "--system", "harmonic", "x", "--max-degree", "3"],
+        0,
+    );
+    run(
+        &["expand", "--system", "harmonic", "x", "--max-terms", "20"],
+        0,
     );
 }
 
