@@ -5,7 +5,7 @@ use std::path::PathBuf;
 
 use anyhow::{anyhow, bail};
 use brackets::closure::ClosureOptions;
-use brackets::NamedFunction;
+use brackets::{EngineLimit, NamedFunction};
 use clap::Args;
 use superint::discovery::{closure_report_for, ListRefusal};
 use superint::render::render;
@@ -231,8 +231,13 @@ fn close(a: &ClosureArgs, names: &[String], subject: &Subject) -> anyhow::Result
         &options,
         Caller::CommandLine,
     )
-    // A limit's error says what to do about it in the command's options already.
-    .map_err(|e| anyhow::Error::new(e).context("computing the closure"))?;
+    .map_err(|e| match e.limit() {
+        // A limit of the ring's error says what to do about it in the command's options
+        // already (raise the limit, or lower --degree; or, past every limit, only the latter).
+        Some(EngineLimit::Ring(_)) => anyhow::Error::new(e).context("computing the closure"),
+        // The closure's own limit, whose engine's message names no setting: the hint does.
+        _ => subject.refused(a.builtin.system.as_deref(), "computing the closure", e),
+    })?;
     Ok(subject.tag(report))
 }
 

@@ -321,6 +321,21 @@ impl Subject {
         }
     }
 
+    /// The error of what the command line asked of this subject, `doing` (`searching for
+    /// integrals`), that the engine refused, `e`: where a limit stopped it, of kind `limit`
+    /// from the file or `--system NAME` (`builtin`), with the hint naming the flag (then the
+    /// file's `[limits]`), the engine's message naming no setting; else said after `doing`.
+    pub fn refused(&self, builtin: Option<&str>, doing: &str, e: EngineError) -> anyhow::Error {
+        let (origin, file) = match self {
+            Subject::File(f) => (f.source().origin.clone(), true),
+            Subject::Builtin(..) => (format!("--system {}", builtin.unwrap_or_default()), false),
+        };
+        match FileError::limit_on_command_line(&origin, file, doing, &e) {
+            Some(limited) => limited.into(),
+            None => anyhow::Error::from(e).context(doing.to_string()),
+        }
+    }
+
     /// The report `report` about this subject: about its file, if it is one.
     pub fn tag(&self, report: Report) -> Report {
         match self {
@@ -620,7 +635,7 @@ fn search(a: &SearchArgs, subject: &Subject, format: Format) -> anyhow::Result<R
             };
             list_refused("--known", known, refusal)
         }
-        (e, _) => anyhow::Error::from(e).context("searching for integrals"),
+        (e, _) => subject.refused(a.system.as_deref(), "searching for integrals", e),
     })?;
     Ok(subject.tag(report))
 }

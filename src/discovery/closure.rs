@@ -166,7 +166,8 @@ impl Settings {
     /// line). The algebra's own advice (`raise the limit or simplify the input`) gives way to
     /// it. The error is then an [`EngineError::PastLimit`] of the same limit
     /// ([`EngineError::limit`]), whose message says so. Any other error is as it is: the
-    /// closure's own limit, `ClosureOptions::max_monomials`, says what to do already.
+    /// closure's own limit, `ClosureOptions::max_monomials`, says to lower the degree or raise
+    /// the limit, and the caller's hint names the option.
     fn advised(self, e: EngineError) -> EngineError {
         let (said, limit, raise) = match &e {
             // The products of the generators together: the term limit raises them, or a lower
@@ -264,8 +265,7 @@ fn symbols_text(c: &Closure) -> Option<Entry> {
 /// at its line and column in the name (`<expression>`, a blank one `<name>`, or
 /// `<command line>` as the file's [`Caller`] says); what the engine then refuses (a limit, a
 /// condition the flow leaves) is an error of the file without a place, of kind `Limit` (with
-/// the hint to raise the limit, but for [`ClosureOptions::max_monomials`], which its message
-/// names; a limit of the ring's message says to raise it or lower the degree, as
+/// the hint to raise the limit, [`ClosureOptions::max_monomials`] too; a limit of the ring's message says to raise it or lower the degree, as
 /// [`closure_report_for`]'s does, a program's limits named `LimitsOverride::max_terms`, as
 /// the loader takes them) or `Engine`, as
 /// [`table_report`](crate::system_file::table_report)'s are. `caller` chooses whose options

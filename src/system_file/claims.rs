@@ -99,8 +99,8 @@ impl CheckedClaim {
     }
 }
 
-/// An engine error at a place of the file: limits are limit errors, with the hint (none for a
-/// limit of the search's or the closure's options, whose message names the option).
+/// An engine error at a place of the file: limits are limit errors, with the hint that names
+/// the setting raising the limit for the text's giver, the engine's message naming none.
 pub(crate) fn engine_error(source: &Source, span: Range<usize>, e: &EngineError) -> FileError {
     engine_error_under(source, span, e, LimitSettings::of_source(source))
 }
@@ -128,8 +128,8 @@ fn engine_error_under(
 /// the cause its parse met ([`FileError::cause`]: a limit, an unknown name), as one of
 /// [`Expr::parse`](trigpoly::Expr::parse) has, and of kind [`ErrorKind::Limit`], with the
 /// hint, where a limit stopped it, as the loader says of a file's text; a computation a
-/// program asked for is of kind [`ErrorKind::Limit`] (with the hint to raise the limit, but
-/// for a search's or a closure's own option, which its message names) or
+/// program asked for is of kind [`ErrorKind::Limit`] (with the hint to raise the limit: a
+/// search's or a closure's own option, `SearchOptions::max_products`, too) or
 /// [`ErrorKind::Engine`], from `<program>`, without a location.
 ///
 /// ```

@@ -277,6 +277,48 @@ impl FileError {
         }
     }
 
+    /// The error of a computation that the command line asked of a system, `doing`
+    /// (`searching for integrals`), where a limit stopped it, `e` ([`EngineError::limit`]):
+    /// of kind [`ErrorKind::Limit`], from `origin` (the system file as given, or `--system
+    /// NAME`), said after `doing`, with the hint that names the command line's flag (then the
+    /// file's `[limits]`, for a system file, `file`), as a text's limit on the command line
+    /// has; the engine's message names no setting, knowing not who set the limit. `None`
+    /// where no limit stopped it.
+    ///
+    /// ```
+    /// use superint::brackets::{EngineError, EngineLimit};
+    /// use superint::system_file::{ErrorKind, FileError};
+    ///
+    /// let e = EngineError::PastLimit {
+    ///     which: EngineLimit::SearchProducts,
+    ///     limit: 9,
+    ///     message: "more than 9 products of integrals".into(),
+    /// };
+    /// let err = FileError::limit_on_command_line("mine.toml", true, "searching", &e).unwrap();
+    /// assert_eq!(err.kind, ErrorKind::Limit);
+    /// assert_eq!(
+    ///     err.to_string(),
+    ///     "mine.toml: searching: more than 9 products of integrals\nhint: if the machine has \
+    ///      the time, raise the limit with --max-products N"
+    /// );
+    /// let e = EngineError::Invalid("no".into());
+    /// assert!(FileError::limit_on_command_line("--system harmonic", false, "searching", &e)
+    ///     .is_none());
+    /// ```
+    ///
+    /// [`EngineError::limit`]: brackets::EngineError::limit
+    pub fn limit_on_command_line(
+        origin: &str,
+        file: bool,
+        doing: &str,
+        e: &brackets::EngineError,
+    ) -> Option<FileError> {
+        Limit::of_engine(e)?;
+        let settings = LimitSettings::of_origin(file, super::COMMAND_LINE);
+        let message = format!("{doing}: {e}");
+        Some(FileError::new(ErrorKind::Engine, origin, message).limited_by(e, settings))
+    }
+
     /// The same error, of kind [`ErrorKind::Limit`] with the hint in `settings` where its
     /// [`FileError::cause`] is a limit ([`FileError::with_cause`]).
     fn classified_by_cause(self, settings: LimitSettings) -> Self {

@@ -378,8 +378,14 @@ pub(crate) enum Limit {
     Size,
     /// A result past the machine's memory, which a larger limit only lets through.
     Memory,
-    /// A limit of a search's or a closure's own options (`max_products`, `max_monomials`),
-    /// which no file sets: its message names the option.
+    /// The products of integrals a search for new integrals forms
+    /// (`SearchOptions::max_products`, `--max-products`), which no file sets.
+    SearchProducts,
+    /// The monomials in a closure's generators (`ClosureOptions::max_monomials`,
+    /// `--max-monomials`), which no file sets.
+    ClosureMonomials,
+    /// A limit of the engine's own this crate does not know yet, which no setting it knows
+    /// raises: no hint.
     OfOptions,
 }
 
@@ -471,6 +477,22 @@ impl LimitSettings {
             ),
         }
     }
+
+    /// The setting that raises a limit of a search's or a closure's own options, which no
+    /// file sets: the command line's flag `flag` (`--max-products N`), or the program's
+    /// option `option` (`SearchOptions::max_products`); both for a file's own text, loaded
+    /// by either.
+    fn raising_option(self, flag: &str, option: &str) -> String {
+        match self {
+            LimitSettings::FileOnCommandLine | LimitSettings::BuiltInOnCommandLine => {
+                flag.to_string()
+            }
+            LimitSettings::File => format!("{flag} (in a program, {option})"),
+            LimitSettings::FileInProgram | LimitSettings::Code | LimitSettings::Program => {
+                option.to_string()
+            }
+        }
+    }
 }
 
 impl Limit {
@@ -494,8 +516,9 @@ impl Limit {
     pub(crate) fn of_engine(e: &EngineError) -> Option<Limit> {
         Some(match e.limit()? {
             EngineLimit::Ring(kind) => Limit::of_kind(kind),
-            // The search's products, the closure's monomials, and an option's limit this crate
-            // does not know yet.
+            EngineLimit::SearchProducts => Limit::SearchProducts,
+            EngineLimit::ClosureMonomials => Limit::ClosureMonomials,
+            // An option's limit this crate does not know yet.
             _ => Limit::OfOptions,
         })
     }
@@ -512,12 +535,22 @@ impl Limit {
     /// text given on it, and alone for a built-in system, which has no file): the work
     /// limit's, the term limit's (`max_terms` alone: a larger `max_degree` lets no more terms
     /// through, nor a search space of more unknowns), the degree limit's, or, for an exponent
-    /// past the most that the settings' `max_degree` may be, that no limit reaches it; none
-    /// for a limit of the options, whose message names the option that raises it.
+    /// past the most that the settings' `max_degree` may be, that no limit reaches it; a
+    /// search's products' and a closure's monomials', their option (the command line's flag,
+    /// or the program's option: no file sets them); none for a limit of the engine this crate
+    /// does not know.
     pub(crate) fn hint(self, settings: LimitSettings) -> Option<String> {
         let raise = |keys: &str, flags: &str, fields: &str| settings.raising(keys, flags, fields);
         Some(match self {
             Limit::OfOptions => return None,
+            Limit::SearchProducts => format!(
+                "if the machine has the time, raise the limit with {}",
+                settings.raising_option("--max-products N", "SearchOptions::max_products")
+            ),
+            Limit::ClosureMonomials => format!(
+                "if the machine has the time, raise the limit with {}",
+                settings.raising_option("--max-monomials N", "ClosureOptions::max_monomials")
+            ),
             Limit::Degree(power) if power > settings.degree_ceiling() => {
                 let most = settings.degree_ceiling();
                 format!(

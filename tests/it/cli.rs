@@ -1262,10 +1262,14 @@ fn cli_bad_usage_exits_2_with_a_message() {
     for (limit, message) in [
         (
             "9",
-            "more than 9 products of integrals, the limit (`SearchOptions::max_products`; on the \
-             command line, --max-products): search a smaller space, or raise the limit",
+            "more than 9 products of integrals, the search's limit of them: search a smaller \
+             space, or raise the limit\nhint: if the machine has the time, raise the limit with \
+             --max-products N\n",
         ),
-        ("1", "more than 1 product of integrals, the limit"),
+        (
+            "1",
+            "more than 1 product of integrals, the search's limit of them",
+        ),
     ] {
         let search = ["search", "systems/harmonic-rotor.toml", "--new-only"];
         let options = ["--when", "p_theta = I*omega", "--max-products", limit];
@@ -5038,6 +5042,52 @@ fn a_built_in_system_past_the_limits_given_is_a_limit_with_its_flag() {
         &["expand", "--system", "harmonic", "x", "--max-terms", "20"],
         0,
     );
+}
+
+/// A search's or a closure's limit met on the command line says what happened in the engine's
+/// terms, naming no setting (the search's term limit named `Limits::max_terms`, a program's,
+/// for a system file, whose limit the flag or its `[limits]` sets), and the hint names what
+/// raises it for the input: the flag, then the file's `[limits]` for a file; the flag alone
+/// for a built-in system and for an option no file sets (`--max-products`, `--max-monomials`),
+/// where there was no hint.
+#[test]
+fn a_search_or_closure_limit_hints_the_setting_for_its_input() {
+    let memory = "if the machine has the memory, raise the limit with";
+    let time = "if the machine has the time, raise the limit with";
+    let unknowns = "the space has 300 unknowns, more than the term limit 10: search a smaller \
+                    space, or raise the limit";
+    for (args, said) in [
+        (
+            &["search", "systems/harmonic-rotor.toml", "--max-terms", "10"][..],
+            format!(
+                "systems/harmonic-rotor.toml: searching for integrals: {unknowns}\nhint: \
+                 {memory} --max-terms N (or max_terms under [limits] in the file)"
+            ),
+        ),
+        (
+            &["search", "--system", "harmonic", "--max-terms", "10"],
+            format!("--system harmonic: searching for integrals: {unknowns}\nhint: {memory} --max-terms N"),
+        ),
+        (
+            &["search", "--system", "harmonic", "--new-only", "--max-products", "1"],
+            format!(
+                "--system harmonic: searching for integrals: more than 1 product of integrals, \
+                 the search's limit of them: search a smaller space, or raise the limit\nhint: \
+                 {time} --max-products N"
+            ),
+        ),
+        (
+            &["closure", "systems/harmonic-rotor.toml", "L", "H", "--max-monomials", "3"],
+            format!(
+                "systems/harmonic-rotor.toml: computing the closure: there are 6 monomials of \
+                 degree ≤ 2 in the 2 generators, more than the limit 3: lower the degree, or \
+                 raise the limit\nhint: {time} --max-monomials N"
+            ),
+        ),
+    ] {
+        let err = stderr(&superint_exits(args, 2));
+        assert_eq!(err, format!("superint: error: {said}\n"), "{args:?}");
+    }
 }
 
 /// A closure that passes a limit while forming the products of its generators stops with exit

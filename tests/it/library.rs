@@ -1306,10 +1306,10 @@ fn degree_two() -> SearchSpace {
 }
 
 /// A search for new integrals stopped past `SearchOptions::max_products` is a limit, the
-/// search's products (`EngineLimit::SearchProducts`), with its message as it was: it was
-/// `EngineError::Invalid`, no limit to `is_limit`. Taken by `?` into a `FileError` it is of
-/// kind `limit`, without a hint, since no file's setting raises it and the message names the
-/// option.
+/// search's products (`EngineLimit::SearchProducts`): it was `EngineError::Invalid`, no limit
+/// to `is_limit`. Its message names no setting (it named `SearchOptions::max_products` and
+/// `--max-products` to whoever called); taken by `?` into a `FileError` it is of kind
+/// `limit`, with the hint naming the program's option, where it had none.
 #[test]
 fn a_search_past_its_products_says_that_limit() {
     let rotor = systems::harmonic_rotor();
@@ -1326,11 +1326,15 @@ fn a_search_past_its_products_says_that_limit() {
     );
     assert_eq!(
         err.to_string(),
-        "more than 1 product of integrals, the limit (`SearchOptions::max_products`; on the \
-         command line, --max-products): search a smaller space, or raise the limit"
+        "more than 1 product of integrals, the search's limit of them: search a smaller space, \
+         or raise the limit"
     );
     let as_file = FileError::from(err.clone());
-    assert_eq!((as_file.kind, as_file.hint), (ErrorKind::Limit, None));
+    assert_eq!(as_file.kind, ErrorKind::Limit);
+    assert_eq!(
+        as_file.hint.as_deref(),
+        Some("if the machine has the time, raise the limit with SearchOptions::max_products")
+    );
     assert_eq!(as_file.message, err.to_string());
 }
 
@@ -1350,17 +1354,20 @@ fn a_search_space_past_the_term_limit_says_that_limit() {
         "{err}"
     );
     assert!(err.is_limit());
-    assert!(err.to_string().starts_with(
-        "the space has 300 unknowns, more than the term limit 10: search a smaller space"
-    ));
+    assert_eq!(
+        err.to_string(),
+        "the space has 300 unknowns, more than the term limit 10: search a smaller space, or \
+         raise the limit"
+    );
     let as_file = FileError::from(err);
     assert_eq!(as_file.kind, ErrorKind::Limit);
     assert!(as_file.hint.is_some_and(|h| h.contains("max_terms")));
 }
 
 /// A closure whose monomials pass `ClosureOptions::max_monomials` is a limit, the closure's
-/// monomials (`EngineLimit::ClosureMonomials`), counted before any is expanded, with its
-/// message as it was: it was `EngineError::Invalid`.
+/// monomials (`EngineLimit::ClosureMonomials`), counted before any is expanded: it was
+/// `EngineError::Invalid`. Its message names no setting; the hint of the error `?` makes of
+/// it names the program's option.
 #[test]
 fn a_closure_past_its_monomials_says_that_limit() {
     let rotor = systems::harmonic_rotor();
@@ -1372,11 +1379,17 @@ fn a_closure_past_its_monomials_says_that_limit() {
         matches!(err, EngineError::PastLimit { limit: 20, .. }),
         "{err:?}"
     );
-    assert!(err.to_string().starts_with(
+    assert_eq!(
+        err.to_string(),
         "there are 21 monomials of degree ≤ 2 in the 5 generators, more than the limit 20: \
-         lower the degree"
-    ));
-    assert_eq!(FileError::from(err).kind, ErrorKind::Limit);
+         lower the degree, or raise the limit"
+    );
+    let as_file = FileError::from(err);
+    assert_eq!(as_file.kind, ErrorKind::Limit);
+    assert_eq!(
+        as_file.hint.as_deref(),
+        Some("if the machine has the time, raise the limit with ClosureOptions::max_monomials")
+    );
 }
 
 /// A closure whose products of the generators pass the term limit together says the term

@@ -741,8 +741,7 @@ fn check_monomial_count(
         limit: options.max_monomials,
         message: format!(
             "there are {count} monomials of degree ≤ {} in the {}{with_parameters}, \
-             more than the limit {}: lower the degree, or raise the limit \
-             (`ClosureOptions::max_monomials`; on the command line, --max-monomials)",
+             more than the limit {}: lower the degree, or raise the limit",
             options.degree,
             if varying == 1 {
                 "generator".to_string()

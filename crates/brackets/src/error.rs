@@ -82,16 +82,18 @@ pub enum EngineError {
     /// [`ClosureOptions::max_monomials`](crate::ClosureOptions) or a search space of more
     /// unknowns than the term limit; and a limit of the ring that a caller says with what to
     /// do about it (a closure's report: raise the limit, or lower the degree).
-    /// [`EngineError::limit`] says which, `which`; the message says it in words, with the
-    /// setting that raises it.
+    /// [`EngineError::limit`] says which, `which`; the message says it in words. The engine's
+    /// own name no setting that raises it: the engine knows not who set it (a program, a
+    /// file's `[limits]`, the command line), so its caller's hint names the setting; a
+    /// closure's report, whose caller is known, says the setting with what to do.
     #[error("{message}")]
     PastLimit {
         /// Which limit.
         which: EngineLimit,
         /// The limit in force.
         limit: usize,
-        /// What passed it, in words, and the setting that raises it: `more than 9 products of
-        /// integrals, the limit (`SearchOptions::max_products`; …)`.
+        /// What passed it, in words: `more than 9 products of integrals, the search's limit of
+        /// them: search a smaller space, or raise the limit`.
         message: String,
     },
     /// A name that the system does not define.

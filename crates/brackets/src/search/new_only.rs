@@ -1085,9 +1085,8 @@ impl Round<'_> {
                     which: EngineLimit::SearchProducts,
                     limit: n,
                     message: format!(
-                        "more than {n} product{} of integrals, the limit (`SearchOptions::\
-                         max_products`; on the command line, --max-products): search a \
-                         smaller space, or raise the limit",
+                        "more than {n} product{} of integrals, the search's limit of them: \
+                         search a smaller space, or raise the limit",
                         if n == 1 { "" } else { "s" }
                     ),
                 }));

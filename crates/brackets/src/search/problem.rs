@@ -144,7 +144,9 @@ fn binomial(a: u128, b: u128) -> u128 {
 }
 
 /// Refuses a space of `count` unknowns past the term limit of `vars`: a limit, the term
-/// limit's ([`EngineLimit::Ring`] of [`LimitKind::Terms`]), which `Limits::max_terms` raises.
+/// limit's ([`EngineLimit::Ring`] of [`LimitKind::Terms`]), said in the engine's terms: the
+/// engine knows not who set the limit (a program's `Limits`, a file's `[limits]`, the command
+/// line's flag), so the caller's hint names the setting that raises it.
 fn too_many_unknowns(vars: &Vars, count: usize) -> Result<(), EngineError> {
     let limit = vars.limits().max_terms;
     if count > limit {
@@ -153,8 +155,7 @@ fn too_many_unknowns(vars: &Vars, count: usize) -> Result<(), EngineError> {
             limit,
             message: format!(
                 "the space has {count} unknowns, more than the term limit {limit}: search a \
-                 smaller space, or raise the limit (`Limits::max_terms`; on the command line, \
-                 --max-terms)"
+                 smaller space, or raise the limit"
             ),
         });
     }
