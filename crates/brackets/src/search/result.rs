@@ -2,6 +2,8 @@
 
 use std::collections::HashMap;
 
+use itertools::Itertools;
+
 use trigpoly::{Expr, Rational, Style, Var, VarKind, VarSet, Vars};
 
 use crate::modular::{self, SparseVec};
@@ -148,11 +150,12 @@ impl SearchResult {
     /// the momenta first, so where the space has momenta too its elements need not be of
     /// the lowest Poisson degree they could be (the Toda lattice's `P²` enters as `P² + …`
     /// of Poisson degree 1): each dimension is found by exact linear algebra, as the
-    /// combinations of the basis with no term of higher Poisson degree.
+    /// combinations of the basis with no term of higher Poisson degree, where some basis
+    /// integral has such a term (in a space without Poisson variables, none has).
     pub fn dimensions_by_poisson_degree(&self) -> Vec<usize> {
-        let grades = self.term_grades();
+        let mut filtration = Filtration::new(self);
         (0..=i64::from(self.space.poisson_degree))
-            .map(|j| combinations_within(&grades, |&(poisson, _)| poisson <= j))
+            .map(|j| filtration.within((j, i64::MAX)))
             .collect()
     }
 
@@ -173,19 +176,20 @@ impl SearchResult {
     /// among their terms of that degree, trigonometric order exactly `k`: in a basis ordered
     /// by those two (the dimensions of the combinations of the basis whose terms are below
     /// `(j, k)` in that order, differenced, by exact linear algebra as in
-    /// [`SearchResult::dimensions_by_poisson_degree`]).
+    /// [`SearchResult::dimensions_by_poisson_degree`], where some term lies above `(j, k)`
+    /// and the terms below it are not those below a grade counted before).
     pub fn poisson_counts(&self) -> Vec<Vec<usize>> {
-        let grades = self.term_grades();
         let (p, t) = (
             i64::from(self.space.poisson_degree),
             i64::from(self.space.trig_degree),
         );
+        let mut filtration = Filtration::new(self);
         let mut below = 0;
         (0..=p)
             .map(|j| {
                 (0..=t)
                     .map(|k| {
-                        let within = combinations_within(&grades, |&g| g <= (j, k));
+                        let within = filtration.within((j, k));
                         let exactly = within - below;
                         below = within;
                         exactly
@@ -198,7 +202,7 @@ impl SearchResult {
     /// Each basis integral (at the fixed values) as its terms' coordinates over `Q`, each
     /// coordinate with the grade of its term: `(degree in the Poisson variables,
     /// trigonometric order)`. A term's real and imaginary parts are two coordinates.
-    fn term_grades(&self) -> Vec<Vec<(Grade, usize, Rational)>> {
+    pub(super) fn term_grades(&self) -> GradedTerms {
         let vars = &self.vars;
         let of_kind = |kind: VarKind| -> Vec<usize> {
             vars.vars()
@@ -302,10 +306,74 @@ pub fn parameter_text(vars: &VarSet, values: &[(Var, Rational)], style: Style) -
 /// A term's `(degree in the Poisson variables, trigonometric order)`, compared in that order.
 type Grade = (i64, i64);
 
+/// Each basis integral's terms as coordinates over `Q`, each with its term's grade:
+/// `(grade, coordinate, value)` ([`SearchResult::term_grades`]).
+pub(super) type GradedTerms = Vec<Vec<(Grade, usize, Rational)>>;
+
+/// The dimensions of the combinations of a search's basis whose terms lie within a grade
+/// (`(degree in the Poisson variables, trigonometric order)`, compared in that order), each
+/// found by exact linear algebra only where it is not known without: every combination is
+/// within a grade that no basis integral's degrees pass (a space without Poisson variables
+/// and every grade of Poisson degree 0, a space without angles and every grade), and two
+/// grades that the same terms lie within have the same combinations.
+struct Filtration<'a> {
+    result: &'a SearchResult,
+    /// The highest of the basis integrals' `(Poisson degree, trigonometric order)`: no term
+    /// lies above it.
+    highest: Grade,
+    /// The basis's terms with their grades and the distinct grades among them, ascending;
+    /// formed when a dimension is first to be found by linear algebra.
+    terms: Option<(GradedTerms, Vec<Grade>)>,
+    /// The dimensions found, by how many of the distinct grades lie within theirs.
+    found: HashMap<usize, usize>,
+}
+
+impl<'a> Filtration<'a> {
+    fn new(result: &'a SearchResult) -> Self {
+        let highest = (result.basis.iter())
+            .map(|f| (f.poisson_degree, f.trig_degree))
+            .max()
+            .unwrap_or((0, 0));
+        Filtration {
+            result,
+            highest,
+            terms: None,
+            found: HashMap::new(),
+        }
+    }
+
+    /// The dimension of the combinations of the basis with no term above `grade`.
+    fn within(&mut self, grade: Grade) -> usize {
+        // A term's grade is at most its integral's degrees, pair by pair.
+        if grade >= self.highest {
+            return self.result.basis.len();
+        }
+        let result = self.result;
+        let (grades, distinct) = self.terms.get_or_insert_with(|| {
+            let grades = result.term_grades();
+            let distinct = grades
+                .iter()
+                .flatten()
+                .map(|&(g, ..)| g)
+                .sorted_unstable()
+                .dedup()
+                .collect();
+            (grades, distinct)
+        });
+        let kept = distinct.partition_point(|&g| g <= grade);
+        if kept == distinct.len() {
+            return result.basis.len();
+        }
+        *(self.found)
+            .entry(kept)
+            .or_insert_with(|| combinations_within(grades, |&g| g <= grade))
+    }
+}
+
 /// The dimension of the combinations of the basis integrals, given by [`SearchResult::term_grades`],
 /// whose every term has a grade that `keep` keeps: the kernel of their other coordinates,
 /// exactly ([`modular::kernel`]).
-fn combinations_within(
+pub(super) fn combinations_within(
     grades: &[Vec<(Grade, usize, Rational)>],
     keep: impl Fn(&Grade) -> bool,
 ) -> usize {
@@ -327,5 +395,14 @@ fn combinations_within(
         .map(|&(_, row, _)| row + 1)
         .max()
         .unwrap_or(0);
+    #[cfg(test)]
+    ELIMINATIONS.with(|done| done.set(done.get() + 1));
     modular::kernel(&columns, rows).len()
+}
+
+#[cfg(test)]
+thread_local! {
+    /// How many eliminations ([`combinations_within`]) the counts by Poisson degree have done
+    /// on this thread, which the tests bound.
+    pub(super) static ELIMINATIONS: std::cell::Cell<usize> = const { std::cell::Cell::new(0) };
 }

@@ -9,6 +9,7 @@ use super::new_only::{
 };
 use super::parameters::fixed_problem;
 use super::problem::{canonical, exponent_vectors, exponent_vectors_count, Problem};
+use super::result::{combinations_within, ELIMINATIONS};
 use super::*;
 use crate::claim::Condition;
 use crate::modular::{Echelon, Field, Fp};
@@ -914,6 +915,88 @@ fn a_parameter_of_a_declared_bracket_is_fixed_for_the_search() {
         .iter()
         .any(|f| basis.iter().any(|g| (*f + *g) == casimir));
     assert!(sum_of_two, "{basis:?}");
+}
+
+/// The counts by degree in the Poisson variables of `r` as an elimination at every grade
+/// finds them: `dimensions_by_poisson_degree` and `poisson_counts` before they left out what
+/// is known without one.
+fn poisson_counts_at_every_grade(r: &SearchResult) -> (Vec<usize>, Vec<Vec<usize>>) {
+    let grades = r.term_grades();
+    let (p, t) = (
+        i64::from(r.space.poisson_degree),
+        i64::from(r.space.trig_degree),
+    );
+    let by_degree = (0..=p)
+        .map(|j| combinations_within(&grades, |&(poisson, _)| poisson <= j))
+        .collect();
+    let mut below = 0;
+    let counts = (0..=p)
+        .map(|j| {
+            (0..=t)
+                .map(|k| {
+                    let within = combinations_within(&grades, |&g| g <= (j, k));
+                    let exactly = within - below;
+                    below = within;
+                    exactly
+                })
+                .collect()
+        })
+        .collect();
+    (by_degree, counts)
+}
+
+/// The counts by degree in the Poisson variables, which `superint search --format json`
+/// gives for every search, eliminate only where the count is not known without: in the
+/// rotor's 1:1 space of degree 4 with Poisson degree 2, which has angles and no Poisson
+/// variables, once for each trigonometric order below the basis's highest (4 eliminations,
+/// where an elimination at every grade took 3 + 3·5 = 18), and for the so(3) top's
+/// `{M1, M2} = M3` with Poisson degree 4 and no angles once for each degree below the
+/// highest of its integrals. The counts are those of an elimination at every grade.
+#[test]
+fn the_counts_by_poisson_degree_eliminate_only_where_not_known() {
+    let eliminations = |r: &SearchResult| {
+        let before = ELIMINATIONS.get();
+        let counts = (r.dimensions_by_poisson_degree(), r.poisson_counts());
+        (counts, ELIMINATIONS.get() - before)
+    };
+    let rotor = systems::harmonic_rotor();
+    let space = SearchSpace::default()
+        .momenta_degree(4)
+        .positions_degree(4)
+        .trig_degree(4)
+        .poisson_degree(2);
+    let r = search(&rotor, &at_one_to_one(&rotor, space)).unwrap();
+    assert!(r.variables.poisson.is_empty());
+    let (counts, done) = eliminations(&r);
+    assert_eq!(counts, poisson_counts_at_every_grade(&r));
+    assert_eq!(counts.0, [r.basis.len(); 3]);
+    assert_eq!(done, 4);
+
+    let vars = Vars::builder()
+        .poisson("M1")
+        .poisson("M2")
+        .poisson("M3")
+        .build()
+        .unwrap();
+    let e = |t: &str| Expr::parse(&vars, t).unwrap();
+    let space = crate::PhaseSpace::new(&vars, &[])
+        .unwrap()
+        .with_brackets(&[
+            ("M1", "M2", e("M3")),
+            ("M2", "M3", e("M1")),
+            ("M3", "M1", e("M2")),
+        ])
+        .unwrap();
+    let top = System::new("top", space, e("M1^2/2 + M2^2 + 3*M3^2/2")).unwrap();
+    let r = search(
+        &top,
+        &SearchOptions::new(SearchSpace::default().poisson_degree(4)),
+    )
+    .unwrap();
+    let (counts, done) = eliminations(&r);
+    assert_eq!(counts, poisson_counts_at_every_grade(&r));
+    assert_eq!(counts.0, [1, 1, 3, 3, 6]);
+    assert_eq!(done, 4);
 }
 
 /// A search space names each degree as it is set, where `SearchSpace::new(2, 0, 1)` took three
