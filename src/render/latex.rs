@@ -70,10 +70,7 @@ pub fn render(report: &Report, options: &Options) -> String {
         _ => format!(r"\boldmath {}", sentence(&summary)),
     };
     out.push(format!(r"\bigskip\noindent\textbf{{{summary}}}"));
-    out.push(r"\end{document}".into());
-    let mut doc = out.join("\n");
-    doc.push('\n');
-    doc
+    super::lines_to_text(&out, &[r"\end{document}"])
 }
 
 /// Writes pending `align*` rows.

@@ -181,6 +181,20 @@ pub fn printable(text: &str) -> std::borrow::Cow<'_, str> {
     }
 }
 
+/// The lines of `out` and then of `last`, each ended by a newline, in a text of just their
+/// length: a result printed whole is most of it (635 MB), where joining the lines, then
+/// pushing the last newline, copied it into twice its length, and pushing the last lines
+/// grew the list of some ten million lines the same way.
+pub(crate) fn lines_to_text(out: &[String], last: &[&str]) -> String {
+    let all = || out.iter().map(String::as_str).chain(last.iter().copied());
+    let mut text = String::with_capacity(all().map(|l| l.len() + 1).sum());
+    for line in all() {
+        text.push_str(line);
+        text.push('\n');
+    }
+    text
+}
+
 /// A table set as a list ([`crate::report::TableResult`] too wide for a line or page): its
 /// brackets `(A, B, cell)` above the diagonal that are not zero, the others following by
 /// antisymmetry.

@@ -46,11 +46,8 @@ pub fn render(report: &Report, options: &Options) -> String {
             previous = Some(e);
         }
     }
-    out.push(String::new());
-    out.push(report.summary_line(options.timings));
-    let mut text = out.join("\n");
-    text.push('\n');
-    text
+    let summary = report.summary_line(options.timings);
+    super::lines_to_text(&out, &["", &summary])
 }
 
 fn entry(out: &mut Vec<String>, e: &Entry) {
@@ -143,35 +140,70 @@ pub(crate) fn wrap(s: &str, w: usize, indent: &str) -> Vec<String> {
 /// fraction's numerator, `(2g p_y² − …)/((x − y)³ …)`), and a term wider than a line at its
 /// spaces.
 pub(crate) fn wrap_sum(s: &str, w: usize, indent: &str) -> Vec<String> {
-    let mut pieces: Vec<(&str, usize)> = Vec::new();
-    // A piece is split when it would not fit a line after the indent.
+    let mut lines = SumLines {
+        lines: Vec::new(),
+        line: String::new(),
+        line_width: 0,
+        w,
+        indent,
+        indent_width: width(indent),
+    };
+    // A piece is split when it would not fit a line after the indent. The pieces go onto the
+    // lines as they are found (a result of 10⁶ terms is as many pieces; they were all listed
+    // first, and the lines listed twice).
     let whole = Piece { text: s, depth: 0 };
-    sum_pieces(whole, 0, w.saturating_sub(width(indent)), &mut pieces);
-    // Each line with its width, counted as it grows (a result of 10⁶ terms is as many pieces).
-    let mut lines: Vec<(String, usize)> = Vec::new();
-    let (mut line, mut line_width) = (String::new(), 0);
-    for (piece, piece_width) in pieces {
-        if line.is_empty() {
-            line.push_str(piece);
-            line_width = piece_width;
-        } else if line_width + 1 + piece_width <= w {
-            line.push(' ');
-            line.push_str(piece);
-            line_width += 1 + piece_width;
+    sum_pieces(whole, 0, w.saturating_sub(lines.indent_width), &mut lines);
+    lines.finish()
+}
+
+/// The lines of [`wrap_sum`] as its pieces are laid on them, each line's width counted as it
+/// grows.
+struct SumLines<'i> {
+    /// The lines done.
+    lines: Vec<String>,
+    /// The line being filled, and its width.
+    line: String,
+    line_width: usize,
+    /// The width of a line and the indent of each line after the first.
+    w: usize,
+    indent: &'i str,
+    indent_width: usize,
+}
+
+impl SumLines<'_> {
+    /// Lays `piece` (of width `piece_width`) after the line's pieces, or on the next line where
+    /// it does not fit.
+    fn push(&mut self, piece: &str, piece_width: usize) {
+        if self.line.is_empty() {
+            self.line.push_str(piece);
+            self.line_width = piece_width;
+        } else if self.line_width + 1 + piece_width <= self.w {
+            self.line.push(' ');
+            self.line.push_str(piece);
+            self.line_width += 1 + piece_width;
         } else {
-            let next = format!("{indent}{piece}");
-            lines.push((std::mem::replace(&mut line, next), line_width));
-            line_width = width(indent) + piece_width;
+            let next = format!("{}{piece}", self.indent);
+            let done = std::mem::replace(&mut self.line, next);
+            self.close(done, self.line_width);
+            self.line_width = self.indent_width + piece_width;
         }
     }
-    lines.push((line, line_width));
-    lines
-        .into_iter()
-        .flat_map(|(l, l_width)| match l_width <= w {
-            true => vec![l],
-            false => wrap(&l, w, indent),
-        })
-        .collect()
+
+    /// Adds a line of width `line_width` to those done: a line wider than a line of text (a
+    /// term wider than it) is wrapped at its spaces.
+    fn close(&mut self, line: String, line_width: usize) {
+        match line_width <= self.w {
+            true => self.lines.push(line),
+            false => self.lines.extend(wrap(&line, self.w, self.indent)),
+        }
+    }
+
+    /// The lines, the last one closed.
+    fn finish(mut self) -> Vec<String> {
+        let last = std::mem::take(&mut self.line);
+        self.close(last, self.line_width);
+        self.lines
+    }
 }
 
 /// How wide a group in parentheses, its parentheses included, may be and still never break.
@@ -185,18 +217,18 @@ struct Piece<'a> {
 }
 
 /// The pieces of `piece` between the signs of its sums at bracket depth `level` in the line
-/// (each piece after the first starts with its sign), with their widths, into `out`; a piece
-/// wider than `w` is split again one level deeper, down to the third. One pass over the text's
+/// (each piece after the first starts with its sign), laid onto the lines `out` as each is
+/// found ([`place`]); a piece wider than `w` is split again one level deeper, down to the
+/// third. One pass over the text's
 /// bytes a level (its brackets and signs are ASCII or `−`, whose bytes are part of no other
 /// character); a short group in parentheses ([`short_group_end`]) is read ahead from its `(`,
 /// no further than a short group's width. Marking every byte inside a short group first (two
 /// more passes, and five bytes of marks a byte of text) and measuring every group whole took a
 /// fifth of the time of printing a result of 24 MB.
-fn sum_pieces<'a>(piece: Piece<'a>, level: i32, w: usize, out: &mut Vec<(&'a str, usize)>) {
+fn sum_pieces(piece: Piece<'_>, level: i32, w: usize, out: &mut SumLines<'_>) {
     const MINUS: &[u8] = "−".as_bytes();
     let s = piece.text;
     let bytes = s.as_bytes();
-    let mut pieces: Vec<Piece> = Vec::new();
     let (mut depth, mut start, mut start_depth) = (piece.depth, 0, piece.depth);
     // Where the short group the scan is in closes (the byte of its `)`); a short group, a
     // factor such as `(x − y)⁴`, never breaks.
@@ -220,25 +252,30 @@ fn sum_pieces<'a>(piece: Piece<'a>, level: i32, w: usize, out: &mut Vec<(&'a str
                 };
                 if bytes[k - 1] == b' ' && bytes.get(k + sign) == Some(&b' ') {
                     // The piece ends before the space ahead of the sign.
-                    pieces.push(Piece {
+                    let done = Piece {
                         text: &s[start..k - 1],
                         depth: start_depth,
-                    });
+                    };
+                    place(done, level, w, out);
                     (start, start_depth) = (k, depth);
                 }
             }
             _ => {}
         }
     }
-    pieces.push(Piece {
+    let last = Piece {
         text: &s[start..],
         depth: start_depth,
-    });
-    for piece in pieces {
-        match level < 2 && wider_than(piece.text, w) {
-            true => sum_pieces(piece, level + 1, w, out),
-            false => out.push((piece.text, width(piece.text))),
-        }
+    };
+    place(last, level, w, out);
+}
+
+/// Lays a piece of a sum at bracket depth `level` onto the lines, split again one level deeper
+/// ([`sum_pieces`]) where it is wider than `w`, down to the third.
+fn place(piece: Piece<'_>, level: i32, w: usize, out: &mut SumLines<'_>) {
+    match level < 2 && wider_than(piece.text, w) {
+        true => sum_pieces(piece, level + 1, w, out),
+        false => out.push(piece.text, width(piece.text)),
     }
 }
 
@@ -328,6 +365,9 @@ fn equations(out: &mut Vec<String>, eq: &Equations) {
     } else {
         eq.lines.iter().map(print).collect()
     };
+    // Reserved at once: a result printed whole is millions of lines, and the list grown line by
+    // line was copied at each doubling.
+    out.reserve(lines.iter().map(Vec::len).sum());
     out.extend(lines.into_iter().flatten());
     if let Some(note) = eq.flow.as_ref().and_then(FlowKept::note) {
         out.extend(prose(&format!("Note: {note}")));
