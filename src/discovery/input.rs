@@ -178,9 +178,12 @@ pub fn builtin_system_refused(
 /// The least value above `given`, and at most `ceiling`, at which `fits` is true, where it is
 /// false at `given` and stays true once it is (a larger limit lets through all a smaller one
 /// does): doubled until it fits, then halved between the last that did not and the first that
-/// did. `None` where it does not fit at `ceiling`, or `fits` cannot say (`None`: something
-/// else stopped it).
+/// did. `None` where it does not fit at `ceiling`, `given` is already there (a limit no
+/// setting raises further), or `fits` cannot say (`None`: something else stopped it).
 fn least_fitting(given: u64, ceiling: u64, fits: impl Fn(u64) -> Option<bool>) -> Option<u64> {
+    if given >= ceiling {
+        return None;
+    }
     let (mut short, mut enough) = (given, given.saturating_mul(2).clamp(given + 1, ceiling));
     while !fits(enough)? {
         if enough >= ceiling {

@@ -2525,3 +2525,26 @@ fn a_reports_text_is_written_at_its_length() {
         assert_eq!(text.capacity(), text.len(), "{format:?}");
     }
 }
+
+/// A built-in system's limit error, made for limits already at or past the most the search
+/// for the least that builds it may try (a degree limit above `max_degree`'s ceiling of 32767,
+/// a term limit of `usize::MAX`), says the engine's message rather than panicking in that
+/// search (`clamp` with its least above its most, `given + 1` past `u64::MAX`).
+#[test]
+fn a_built_in_systems_refusal_at_the_limits_ceiling_does_not_panic() {
+    use superint::discovery::{builtin_system, builtin_system_refused};
+    let degree = builtin_system("harmonic", true, Limits::default().max_degree(1)).unwrap_err();
+    let terms = builtin_system("harmonic", true, Limits::default().max_terms(10)).unwrap_err();
+    for (limits, e) in [
+        (Limits::default().max_degree(32767), &degree),
+        (Limits::default().max_degree(u32::MAX), &degree),
+        (Limits::default().max_terms(usize::MAX), &terms),
+    ] {
+        let err = builtin_system_refused("harmonic", true, limits, e);
+        assert_eq!(err.kind, superint::system_file::ErrorKind::Limit);
+        assert_eq!(
+            err.message,
+            format!("the system does not fit the limits given: {e}")
+        );
+    }
+}
