@@ -8,7 +8,7 @@ use super::search::Subject;
 use brackets::NamedFunction;
 use superint::discovery::{builtin_system, builtin_system_refused, define_builtin_resonant};
 use superint::system_file::{
-    load, load_bytes, name_as_identifier, read_bytes, Caller, ErrorKind, FileError, LimitsOverride,
+    load, load_piped, name_as_identifier, read_bytes, Caller, ErrorKind, FileError, LimitsOverride,
     LoadedSystem, STDIN,
 };
 
@@ -47,7 +47,7 @@ fn load_file(path: &Path, limits: &LimitsOverride) -> Result<LoadedSystem, FileE
         })
     });
     match piped {
-        Ok(bytes) => load_bytes(STDIN, bytes, limits),
+        Ok(bytes) => load_piped(bytes, limits),
         Err(e) => Err(e.clone()),
     }
 }

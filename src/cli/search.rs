@@ -19,7 +19,7 @@ use superint::system_file::{
     display_as_given, looks_like_name, new_name_refusal, what_is, Caller, LoadedSystem,
 };
 use superint::system_file::{
-    ErrorKind, FileError, LimitsOverride, Warning, Warnings, COMMAND_LINE,
+    ErrorKind, FileError, Given, LimitsOverride, Warning, Warnings, COMMAND_LINE,
 };
 use trigpoly::{Expr, VarKind};
 
@@ -468,7 +468,7 @@ impl Subject {
                     Expr::parse_noting(s.vars(), &placed, s.as_ref()).map_err(|e| {
                         let span = shift + e.span.start..shift + e.span.end;
                         FileError::at(ErrorKind::Expression, COMMAND_LINE, text, span, e.message())
-                            .with_cause_without_file(e.cause())
+                            .with_cause_without_file(e.cause(), Given::OnCommandLine)
                     })?;
                 for r in &readings {
                     let w = Warning::run_together(
@@ -498,7 +498,8 @@ impl Subject {
                     FileError::at(ErrorKind::Condition, COMMAND_LINE, w, span, message)
                 };
                 let parse = |s: &str, at| self.parse_placed(w, s, at);
-                parse_condition(self.system(), w, &parse, &refuse).map_err(anyhow::Error::from)
+                parse_condition(self.system(), w, &parse, &refuse, Given::OnCommandLine)
+                    .map_err(anyhow::Error::from)
             }
         })
         .transpose()
@@ -778,6 +779,7 @@ mod tests {
                     &text,
                     &|s, at| subject.parse_placed(&text, s, at),
                     &refuse,
+                    Given::OnCommandLine,
                 ) {
                     let _ = e.to_string();
                 }

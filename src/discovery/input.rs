@@ -3,7 +3,7 @@
 
 use crate::system_file::{
     assignment_sides, comma_pieces, condition_cannot_set, fixed_twice, no_variable, trimmed,
-    ErrorKind, FileError, Limit, LimitSettings, CONDITION_FORM, CONDITION_USAGE,
+    ErrorKind, FileError, Given, Limit, LimitSettings, CONDITION_FORM, CONDITION_USAGE,
     MAX_DEGREE_CEILING,
 };
 use brackets::{EngineError, System};
@@ -213,13 +213,14 @@ fn least_fitting(given: u64, ceiling: u64, fits: impl Fn(u64) -> Option<bool>) -
 /// beside it, an empty side, the left side that is no variable, one a condition cannot set
 /// (an angle) or one set twice, the value of the variable the condition cannot set so); one
 /// that a limit stopped as the values were resolved into each other is of kind `limit`, with
-/// the hint that raises it, as a file's condition's is. The condition is shown as a file's is,
+/// the hint that raises it for the condition's giver, `given` (the command line's flag, or a
+/// program's `Limits`: the system has no file), as a file's condition's is. The condition is shown as a file's is,
 /// each value as it is written (`p_θ = Iω`).
 ///
 /// ```
 /// use superint::brackets::systems;
 /// use superint::discovery::parse_condition;
-/// use superint::system_file::{ErrorKind, FileError};
+/// use superint::system_file::{ErrorKind, FileError, Given};
 /// use superint::trigpoly::{Expr, Limits};
 ///
 /// let rotor = systems::Rotor::Harmonic.system(Limits::default().max_terms(100))?;
@@ -228,10 +229,11 @@ fn least_fitting(given: u64, ceiling: u64, fits: impl Fn(u64) -> Option<bool>) -
 /// let refuse = |span: std::ops::Range<usize>, why: String| {
 ///     FileError::at(ErrorKind::Condition, "<condition>", text, span, why)
 /// };
-/// let err = parse_condition(&rotor, text, &parse, &refuse).unwrap_err();
+/// let err = parse_condition(&rotor, text, &parse, &refuse, Given::ByProgram).unwrap_err();
 /// assert_eq!((err.kind, err.line_col()), (ErrorKind::Limit, Some((1, 5))));
 /// assert!(err.hint.is_some_and(|h| h.contains("max_terms")));
-/// let err = parse_condition(&rotor, "theta = 0", &parse, &refuse).unwrap_err();
+/// let err = parse_condition(&rotor, "theta = 0", &parse, &refuse, Given::ByProgram)
+///     .unwrap_err();
 /// assert_eq!(err.kind, ErrorKind::Condition);
 /// # Ok::<(), Box<dyn std::error::Error>>(())
 /// ```
@@ -240,6 +242,7 @@ pub fn parse_condition(
     text: &str,
     parse: &dyn Fn(&str, usize) -> Result<Expr, FileError>,
     refuse: &dyn Fn(std::ops::Range<usize>, String) -> FileError,
+    given: Given,
 ) -> Result<brackets::Condition, FileError> {
     let vars = system.vars();
     let mut subs: Vec<(Var, Expr)> = Vec::new();
@@ -308,9 +311,7 @@ pub fn parse_condition(
             _ => 0,
         };
         // A system with no file: the command line's flag, or the program's `Limits`.
-        let refused = refuse(values[k].clone(), e.to_string());
-        let settings = LimitSettings::of_origin(false, &refused.origin);
-        refused.limited_by(&e, settings)
+        refuse(values[k].clone(), e.to_string()).limited_by(&e, LimitSettings::of(false, given))
     })
 }
 

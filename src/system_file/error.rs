@@ -13,6 +13,7 @@ use std::ops::Range;
 use trigpoly::{Excerpt, Span};
 
 use super::scope::{Limit, LimitSettings};
+use super::text::Given;
 
 /// What kind of problem a [`FileError`] reports.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
@@ -196,17 +197,17 @@ impl FileError {
     /// of its kind. By this one rule a parse that a limit stopped is a limit whether it
     /// reaches a program through the loader or through `?`, or the command line from a
     /// built-in system's text ([`FileError::with_cause_without_file`]). The hint names the
-    /// settings of the text's giver, told by the error's origin: the command line's flag first
-    /// for `<command line>`, a program's `LimitsOverride` first for a text of a program
-    /// (`<expression>`), the file's `[limits]` first for the file's own text.
+    /// settings of the text's giver, `given`: the command line's flag first for a text given
+    /// on it, a program's `LimitsOverride` first for a text of a program (`<expression>`), the
+    /// file's `[limits]` first for the file's own text.
     ///
     /// ```
-    /// use superint::system_file::{ErrorKind, FileError};
+    /// use superint::system_file::{ErrorKind, FileError, Given};
     /// use superint::trigpoly::ParseCause;
     ///
     /// let power = ParseCause::PowerPastLimit { power: Some(5000), limit: 1000 };
     /// let err = FileError::at(ErrorKind::Expression, "<command line>", "x^5000", 2..6, "past")
-    ///     .with_cause(&power);
+    ///     .with_cause(&power, Given::OnCommandLine);
     /// assert_eq!(err.kind, ErrorKind::Limit);
     /// assert_eq!(
     ///     err.hint.as_deref(),
@@ -214,36 +215,34 @@ impl FileError {
     ///           max_degree under [limits] in the file)")
     /// );
     /// let err = FileError::new(ErrorKind::Expression, "<command line>", "no")
-    ///     .with_cause(&ParseCause::Decimal);
+    ///     .with_cause(&ParseCause::Decimal, Given::OnCommandLine);
     /// assert_eq!((err.kind, err.hint), (ErrorKind::Expression, None));
     /// ```
     #[must_use]
-    pub fn with_cause(self, cause: &trigpoly::ParseCause) -> Self {
-        let settings = LimitSettings::of_origin(true, &self.origin);
-        self.with_cause_under(cause, settings)
+    pub fn with_cause(self, cause: &trigpoly::ParseCause, given: Given) -> Self {
+        self.with_cause_under(cause, LimitSettings::of(true, given))
     }
 
     /// [`FileError::with_cause`] of an expression of a system with no file, a built-in one or
-    /// one built in code: a limit's hint names the command line's flag alone for
-    /// `<command line>` (`--system harmonic` has no `[limits]` to set), and otherwise the
+    /// one built in code: a limit's hint names the command line's flag alone for a text
+    /// `given` on it (`--system harmonic` has no `[limits]` to set), and otherwise the
     /// `Limits` the system's variables were built with.
     ///
     /// ```
-    /// use superint::system_file::{ErrorKind, FileError};
+    /// use superint::system_file::{ErrorKind, FileError, Given};
     /// use superint::trigpoly::ParseCause;
     ///
     /// let power = ParseCause::PowerPastLimit { power: Some(5000), limit: 1000 };
     /// let err = FileError::at(ErrorKind::Expression, "<command line>", "x^5000", 2..6, "past")
-    ///     .with_cause_without_file(&power);
+    ///     .with_cause_without_file(&power, Given::OnCommandLine);
     /// assert_eq!(
     ///     err.hint.as_deref(),
     ///     Some("if the machine has the memory, raise the limit with --max-degree D")
     /// );
     /// ```
     #[must_use]
-    pub fn with_cause_without_file(self, cause: &trigpoly::ParseCause) -> Self {
-        let settings = LimitSettings::of_origin(false, &self.origin);
-        self.with_cause_under(cause, settings)
+    pub fn with_cause_without_file(self, cause: &trigpoly::ParseCause, given: Given) -> Self {
+        self.with_cause_under(cause, LimitSettings::of(false, given))
     }
 
     /// [`FileError::with_cause`], a limit's hint naming the settings `settings`.
@@ -314,7 +313,7 @@ impl FileError {
         e: &brackets::EngineError,
     ) -> Option<FileError> {
         Limit::of_engine(e)?;
-        let settings = LimitSettings::of_origin(file, super::COMMAND_LINE);
+        let settings = LimitSettings::of(file, Given::OnCommandLine);
         let message = format!("{doing}: {e}");
         Some(FileError::new(ErrorKind::Engine, origin, message).limited_by(e, settings))
     }

@@ -82,6 +82,20 @@ pub fn load_bytes(
     bytes: &[u8],
     limits: &LimitsOverride,
 ) -> Result<LoadedSystem, FileError> {
+    load_str(origin, text_of(origin, bytes)?, limits)
+}
+
+/// Loads a system file piped on standard input, [`STDIN`](super::STDIN) in messages, which
+/// only the command line reads: a limit its text meets is raised by the command line's flag
+/// first ([`Given::OnCommandLine`](super::Given::OnCommandLine)).
+pub fn load_piped(bytes: &[u8], limits: &LimitsOverride) -> Result<LoadedSystem, FileError> {
+    let text = text_of(super::STDIN, bytes)?;
+    load_source(Source::on_command_line(super::STDIN, text), limits)
+}
+
+/// The text of a system file's bytes, `origin` in messages: refused where it is binary (a NUL
+/// byte) or not UTF-8.
+fn text_of<'a>(origin: &str, bytes: &'a [u8]) -> Result<&'a str, FileError> {
     if let Some(k) = bytes.iter().position(|&b| b == 0) {
         return Err(FileError {
             location: Some(Box::new(locate_bytes(bytes, k))),
@@ -92,7 +106,7 @@ pub fn load_bytes(
             )
         });
     }
-    let text = std::str::from_utf8(bytes).map_err(|e| {
+    std::str::from_utf8(bytes).map_err(|e| {
         let k = e.valid_up_to();
         FileError {
             location: Some(Box::new(locate_bytes(bytes, k))),
@@ -106,8 +120,7 @@ pub fn load_bytes(
                 ),
             )
         }
-    })?;
-    load_str(origin, text, limits)
+    })
 }
 
 /// Loads a system file from its text; `origin` names it in messages.
@@ -116,7 +129,12 @@ pub fn load_str(
     text: &str,
     limits: &LimitsOverride,
 ) -> Result<LoadedSystem, FileError> {
-    let source = Source::new(origin, text);
+    load_source(Source::new(origin, text), limits)
+}
+
+/// Loads the system file whose text is `source`.
+fn load_source(source: Source, limits: &LimitsOverride) -> Result<LoadedSystem, FileError> {
+    let text = source.text.clone();
     if text.trim_start_matches('\u{feff}').trim().is_empty() {
         return Err(source
             .error(
@@ -127,8 +145,8 @@ pub fn load_str(
             )
             .with_hint("see docs/system-files.md for a complete example"));
     }
-    check_shape(&source, text)?;
-    let model: SystemModel = toml::from_str(text).map_err(|e| toml_error(&source, &e))?;
+    check_shape(&source, &text)?;
+    let model: SystemModel = toml::from_str(&text).map_err(|e| toml_error(&source, &e))?;
     Builder::new(source, limits).build(model)
 }
 

@@ -66,7 +66,9 @@ pub use generators::{
     display_as_given, looks_like_name, name_as_identifier, new_name_refusal,
     refuse_expression_as_generator, refuse_parameter_as_generator, refuse_unshowable_name,
 };
-pub use load::{load, load_bytes, load_str, read_bytes, MAX_DEGREE_CEILING, MAX_FILE_BYTES};
+pub use load::{
+    load, load_bytes, load_piped, load_str, read_bytes, MAX_DEGREE_CEILING, MAX_FILE_BYTES,
+};
 pub use names::{reserved, unwritable_letter, BadName, PrintedNames, Refusal};
 pub use plot::{Against, PlotFunctions, PlotInput, StartValue};
 pub use reports::{
@@ -74,7 +76,7 @@ pub use reports::{
     rank_report_when, table_report,
 };
 pub(crate) use scope::{Limit, LimitSettings};
-pub use text::{comma_pieces, split_top_level, trimmed, Source, Text};
+pub use text::{comma_pieces, split_top_level, trimmed, Given, Source, Text};
 pub use tower::{family_tower_report, family_tower_report_with_progress};
 
 use std::collections::HashMap;
@@ -554,16 +556,18 @@ impl LoadedSystem {
     }
 
     /// The source of a text given to a report: `<command line>` for the command line, else
-    /// `what` (`<expression>`, `<condition>`). Its hints are those of the system's own texts
-    /// (a file's tables, or the library's calls for a system built in code).
+    /// `what` (`<expression>`, `<condition>`), given by the caller ([`Given`]). Its hints are
+    /// those of the system's own texts (a file's tables, or the library's calls for a system
+    /// built in code).
     pub(crate) fn given(&self, what: &str, text: &str) -> Source {
-        let origin = match self.caller {
-            Caller::CommandLine => COMMAND_LINE,
-            Caller::Program => what,
+        let (origin, given) = match self.caller {
+            Caller::CommandLine => (COMMAND_LINE, Given::OnCommandLine),
+            Caller::Program => (what, Given::ByProgram),
         };
         Source {
             program: self.source.program,
             file: self.source.file,
+            given,
             ..Source::new(origin, text)
         }
     }

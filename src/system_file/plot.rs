@@ -440,7 +440,7 @@ impl LoadedSystem {
         form: &AssignmentForm<'_>,
         admit: impl Fn(Var) -> Option<String>,
     ) -> Result<(Source, Vec<Assignment>), FileError> {
-        let source = Source::new(COMMAND_LINE, list);
+        let source = Source::on_command_line(COMMAND_LINE, list);
         let pieces = Text::whole(&source).split(',');
         let assignments = parse_assignments(self, &source, &pieces, form, admit)?;
         Ok((source, assignments))

@@ -17,7 +17,7 @@ use trigpoly::{Context, Expr, GaussianRational, LimitKind, ParseCause, Span, Var
 
 use super::error::{ErrorKind, FileError, Warning};
 use super::load::MAX_DEGREE_CEILING;
-use super::text::{Source, Text};
+use super::text::{Given, Source, Text};
 use super::LoadedSystem;
 
 /// What a scope sees: the system's functions, the first `families` families, and names it
@@ -392,8 +392,9 @@ pub(crate) enum Limit {
 /// Whose settings raise a limit, as a limit's hint names them: the input the limit stopped
 /// was given by a file, the command line or a program, about a system file or a system with
 /// no file (a built-in one, or one built in code). Told from the text's [`Source`]
-/// ([`LimitSettings::of_source`]) wherever the text has one, so that every caller's hint is
-/// worded in one place, [`Limit::hint`].
+/// ([`LimitSettings::of_source`]) wherever the text has one, else from what its caller knows
+/// ([`LimitSettings::of`]), so that every caller's hint is worded in one place,
+/// [`Limit::hint`].
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub(crate) enum LimitSettings {
     /// A system file's own text, loaded by the command line or by a program: the file's
@@ -417,26 +418,24 @@ pub(crate) enum LimitSettings {
 }
 
 impl LimitSettings {
-    /// The settings of a text by its source: about a system with no file ([`Source::file`]),
-    /// given on the command line (a built-in system's) or by a program (one built in code);
-    /// else a file's, its text given on the command line (`<command line>`, or the file read
-    /// from standard input, `<stdin>`, which only the command line reads), by a program (a
-    /// text named in angle brackets, `<expression>`, `<condition>`, `<function F>`), or the
-    /// file's own, loaded by either.
+    /// The settings of a text by its source: whether the system it is about has a file
+    /// ([`Source::file`]) and who gave it ([`Source::given`]).
     pub(crate) fn of_source(source: &Source) -> LimitSettings {
-        LimitSettings::of_origin(source.file, &source.origin)
+        LimitSettings::of(source.file, source.given)
     }
 
-    /// [`LimitSettings::of_source`] of a source named `origin`, about a system with a file
-    /// when `file`.
-    pub(crate) fn of_origin(file: bool, origin: &str) -> LimitSettings {
-        let command_line = origin == super::COMMAND_LINE || origin == super::STDIN;
-        match (file, command_line) {
-            (false, true) => LimitSettings::BuiltInOnCommandLine,
-            (false, false) => LimitSettings::Code,
-            (true, true) => LimitSettings::FileOnCommandLine,
-            (true, false) if origin.starts_with('<') => LimitSettings::FileInProgram,
-            (true, false) => LimitSettings::File,
+    /// The settings of a text `given` by the command line, a program or the file itself,
+    /// about a system with a file when `file`: with no file, a built-in system's on the
+    /// command line, else one built in code; with one, the file's text given on the command
+    /// line (or the file piped on standard input), by a program, or the file's own, which
+    /// either loaded.
+    pub(crate) fn of(file: bool, given: Given) -> LimitSettings {
+        match (file, given) {
+            (false, Given::OnCommandLine) => LimitSettings::BuiltInOnCommandLine,
+            (false, Given::ByProgram | Given::InFile) => LimitSettings::Code,
+            (true, Given::OnCommandLine) => LimitSettings::FileOnCommandLine,
+            (true, Given::ByProgram) => LimitSettings::FileInProgram,
+            (true, Given::InFile) => LimitSettings::File,
         }
     }
 

@@ -31,10 +31,28 @@ pub struct Source {
     /// one, `--system harmonic`): a limit's hint names the file's `[limits]` only where it has
     /// ([`LimitSettings`](super::LimitSettings)).
     pub(crate) file: bool,
+    /// Who gave the text: the file itself, the command line or a program, whose settings a
+    /// limit's hint names ([`LimitSettings`](super::LimitSettings)).
+    pub(crate) given: Given,
 }
 
-/// `Source { origin: "systems/kepler.toml", text: <4211 bytes>, program: false, file: true }`: a file's
-/// text, shared by each of its claims and families, is printed by none of them.
+/// Who gave a text, set where its [`Source`] is made: a limit the text meets is raised by the
+/// giver's settings, which the limit's hint names.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Given {
+    /// The system file's own text, which the command line or a program loaded.
+    InFile,
+    /// The command line: a text given on it, or the system file piped on standard input,
+    /// which only the command line reads.
+    OnCommandLine,
+    /// A program: a text it gave a report or the loaded system (`<expression>`,
+    /// `<condition>`, `<function F>`), or a system it built in code.
+    ByProgram,
+}
+
+/// `Source { origin: "systems/kepler.toml", text: <4211 bytes>, program: false, file: true,
+/// given: InFile }`: a file's text, shared by each of its claims and families, is printed by
+/// none of them.
 impl std::fmt::Debug for Source {
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
         f.debug_struct("Source")
@@ -42,18 +60,28 @@ impl std::fmt::Debug for Source {
             .field("text", &format_args!("<{} bytes>", self.text.len()))
             .field("program", &self.program)
             .field("file", &self.file)
+            .field("given", &self.given)
             .finish()
     }
 }
 
 impl Source {
-    /// A source with its origin, a text of a system file.
+    /// A source with its origin, a system file's own text.
     pub fn new(origin: &str, text: &str) -> Self {
         Source {
             origin: origin.to_string(),
             text: Arc::from(text),
             program: false,
             file: true,
+            given: Given::InFile,
+        }
+    }
+
+    /// A text the command line gave, named `origin` in messages, about a system file.
+    pub(crate) fn on_command_line(origin: &str, text: &str) -> Self {
+        Source {
+            given: Given::OnCommandLine,
+            ..Source::new(origin, text)
         }
     }
 
@@ -61,6 +89,7 @@ impl Source {
     pub(crate) fn program(origin: &str, text: &str) -> Self {
         Source {
             program: true,
+            given: Given::ByProgram,
             ..Source::new(origin, text)
         }
     }

@@ -2548,3 +2548,24 @@ fn a_built_in_systems_refusal_at_the_limits_ceiling_does_not_panic() {
         );
     }
 }
+
+/// Who gave a text is set where its source is made, not read from its name: a program's own
+/// system file named in angle brackets (`<generated>`, as a program may name a text it wrote)
+/// is still the file's own text, whose limit its `[limits]` raises first, as a file on disk's
+/// is; it was told a program's text by its `<` and advised the loader's `LimitsOverride` first.
+#[test]
+fn a_files_own_text_named_in_angle_brackets_is_hinted_as_the_files() {
+    let text = "name = \"t\"\nhamiltonian = \"(p_x^2 + x^2)/2\"\n[phase_space]\n\
+                coordinates = [\"x\"]\n[limits]\nmax_degree = 100\n[[claim]]\nid = \"a\"\n\
+                claim = \"{x^2000, H} = -2000*x^1999*p_x\"\n";
+    let hint = |origin: &str| {
+        let file = superint::system_file::load_str(origin, text, &LimitsOverride::default());
+        let checked = superint::system_file::check_report([&file.unwrap()]);
+        checked.unwrap_err().hint.unwrap()
+    };
+    let own = "if the machine has the memory, raise the limit with max_degree under [limits] in \
+               the file (on the command line, --max-degree D; in a program, the LimitsOverride \
+               given to the loader)";
+    assert_eq!(hint("t.toml"), own);
+    assert_eq!(hint("<generated>"), own);
+}
