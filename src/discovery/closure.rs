@@ -265,11 +265,11 @@ fn symbols_text(c: &Closure) -> Option<Entry> {
 /// at its line and column in the name (`<expression>`, a blank one `<name>`, or
 /// `<command line>` as the file's [`Caller`] says); what the engine then refuses (a limit, a
 /// condition the flow leaves) is an error of the file without a place, of kind `Limit` (with
-/// the hint to raise the limit, [`ClosureOptions::max_monomials`] too; a limit of the ring's message says to raise it or lower the degree, as
-/// [`closure_report_for`]'s does, a program's limits named `LimitsOverride::max_terms`, as
-/// the loader takes them) or `Engine`, as
-/// [`table_report`](crate::system_file::table_report)'s are. `caller` chooses whose options
-/// the report's advice names, as for [`closure_report_for`].
+/// the hint to raise the limit, [`ClosureOptions::max_monomials`] included; a limit of the
+/// ring's message says to raise it or lower the degree, as [`closure_report_for`]'s does, a
+/// program's limits named `LimitsOverride::max_terms`, as the loader takes them) or `Engine`,
+/// as [`table_report`](crate::system_file::table_report)'s are. `caller` chooses whose
+/// options the report's advice names, as for [`closure_report_for`].
 ///
 /// ```
 /// use superint::discovery::relation_text;

@@ -98,9 +98,10 @@ pub fn define_builtin_resonant(name: &str, s: &mut System) -> Result<(), EngineE
 /// [`builtin_system`] builds it) that the command line's `limits` stopped, `e`: of kind
 /// [`ErrorKind::Limit`], from `--system NAME`, with the hint that names the flag, as a limit
 /// met by a text given on the command line to a built-in system has. Where the term or the
-/// degree limit stopped it, the message says how far that limit must be raised: the least at which the
-/// system is built, found by building it again (a few builds of a few terms each); else it
-/// is the engine's. Any other error is of kind `Engine`.
+/// degree limit stopped it, the message says how far that limit must be raised: the least at
+/// which the system is built, found by building it again (a few builds of a few terms each);
+/// else, and where another limit stops it on the way, it is the engine's. Any other error is
+/// of kind `Engine`.
 ///
 /// ```
 /// use superint::discovery::{builtin_system, builtin_system_refused};

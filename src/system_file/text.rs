@@ -24,8 +24,9 @@ pub struct Source {
     pub origin: String,
     /// The whole text.
     pub text: Arc<str>,
-    /// Whether a program gave the text (a function added in code, say): hints then name the
-    /// library's calls, not a file's tables.
+    /// Whether hints name the library's calls, not a file's tables: a text of a system built
+    /// in code, or one a program added to a system (a function added in code, say). Who gave
+    /// the text, which a limit's hint goes by, is `given`.
     pub(crate) program: bool,
     /// Whether the system the text is about has a file (not one built in code, nor a built-in
     /// one, `--system harmonic`): a limit's hint names the file's `[limits]` only where it has

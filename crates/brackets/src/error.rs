@@ -83,9 +83,9 @@ pub enum EngineError {
     /// unknowns than the term limit; and a limit of the ring that a caller says with what to
     /// do about it (a closure's report: raise the limit, or lower the degree).
     /// [`EngineError::limit`] says which, `which`; the message says it in words. The engine's
-    /// own name no setting that raises it: the engine knows not who set it (a program, a
-    /// file's `[limits]`, the command line), so its caller's hint names the setting; a
-    /// closure's report, whose caller is known, says the setting with what to do.
+    /// own messages name no setting that raises the limit: the engine knows not who set it (a
+    /// program, a file's `[limits]`, the command line), so its caller's hint names the
+    /// setting; a closure's report, whose caller is known, says the setting with what to do.
     #[error("{message}")]
     PastLimit {
         /// Which limit.
