@@ -313,9 +313,11 @@ pub(super) type GradedTerms = Vec<Vec<(Grade, usize, Rational)>>;
 /// The dimensions of the combinations of a search's basis whose terms lie within a grade
 /// (`(degree in the Poisson variables, trigonometric order)`, compared in that order), each
 /// found by exact linear algebra only where it is not known without: every combination is
-/// within a grade that no basis integral's degrees pass (a space without Poisson variables
-/// and every grade of Poisson degree 0, a space without angles and every grade), and two
-/// grades that the same terms lie within have the same combinations.
+/// within a grade that no basis integral's degrees pass (where the space has no Poisson
+/// variables, every grade of Poisson degree above 0 and every dimension by Poisson degree;
+/// in any space, every grade at or above the basis integrals' highest), and two grades that
+/// the same terms lie within have the same combinations (where the space has no angles,
+/// every order of one Poisson degree).
 struct Filtration<'a> {
     result: &'a SearchResult,
     /// The highest of the basis integrals' `(Poisson degree, trigonometric order)`: no term
