@@ -728,6 +728,21 @@ fn declared_brackets_with_canonical_variables_enter_the_images() {
     assert_eq!(new, [&e("x + s")]);
 }
 
+/// The phase space of `vars` with the canonical `pairs` and so(3)* on `M1, M2, M3`:
+/// `{M1, M2} = m1_m2` (`M3`, or a multiple of it) and cyclically `{M2, M3} = M1`,
+/// `{M3, M1} = M2`.
+fn so3_space(vars: &Vars, pairs: &[(&str, &str)], m1_m2: &str) -> crate::PhaseSpace {
+    let e = |t: &str| Expr::parse(vars, t).unwrap();
+    crate::PhaseSpace::new(vars, pairs)
+        .unwrap()
+        .with_brackets(&[
+            ("M1", "M2", e(m1_m2)),
+            ("M2", "M3", e("M1")),
+            ("M3", "M1", e("M2")),
+        ])
+        .unwrap()
+}
+
 /// The symmetric Euler top with the moments as parameters, on the surface `M₃ = 1`, which
 /// its flow keeps: `M₃` is left out of the space (every function of it is an integral
 /// there), and the integrals of degree `≤ 2` in `M₁, M₂` are `1` and `M₁² + M₂²`, lifted
@@ -743,14 +758,7 @@ fn a_poisson_variable_the_condition_fixes_is_left_out() {
         .build()
         .unwrap();
     let e = |t: &str| Expr::parse(&vars, t).unwrap();
-    let space = crate::PhaseSpace::new(&vars, &[])
-        .unwrap()
-        .with_brackets(&[
-            ("M1", "M2", e("M3")),
-            ("M2", "M3", e("M1")),
-            ("M3", "M1", e("M2")),
-        ])
-        .unwrap();
+    let space = so3_space(&vars, &[], "M3");
     let top = System::new("top", space, e("(M1^2 + M2^2)/(2*A) + M3^2/(2*C)")).unwrap();
     let m3 = Condition::new("M3 = 1", top.var("M3"), e("1"));
     let options = SearchOptions::new(SearchSpace::default().poisson_degree(2))
@@ -890,14 +898,7 @@ fn a_parameter_of_a_declared_bracket_is_fixed_for_the_search() {
         .build()
         .unwrap();
     let e = |t: &str| Expr::parse(&vars, t).unwrap();
-    let space = crate::PhaseSpace::new(&vars, &[])
-        .unwrap()
-        .with_brackets(&[
-            ("M1", "M2", e("k*M3")),
-            ("M2", "M3", e("M1")),
-            ("M3", "M1", e("M2")),
-        ])
-        .unwrap();
+    let space = so3_space(&vars, &[], "k*M3");
     let top = System::new("top", space, e("M1^2/2 + M2^2 + 3*M3^2/2")).unwrap();
     let k = top.var("k");
     let options = SearchOptions::new(SearchSpace::default().poisson_degree(2));
@@ -979,14 +980,7 @@ fn the_counts_by_poisson_degree_eliminate_only_where_not_known() {
         .build()
         .unwrap();
     let e = |t: &str| Expr::parse(&vars, t).unwrap();
-    let space = crate::PhaseSpace::new(&vars, &[])
-        .unwrap()
-        .with_brackets(&[
-            ("M1", "M2", e("M3")),
-            ("M2", "M3", e("M1")),
-            ("M3", "M1", e("M2")),
-        ])
-        .unwrap();
+    let space = so3_space(&vars, &[], "M3");
     let top = System::new("top", space, e("M1^2/2 + M2^2 + 3*M3^2/2")).unwrap();
     let r = search(
         &top,
@@ -997,6 +991,68 @@ fn the_counts_by_poisson_degree_eliminate_only_where_not_known() {
     assert_eq!(counts, poisson_counts_at_every_grade(&r));
     assert_eq!(counts.0, [1, 1, 3, 3, 6]);
     assert_eq!(done, 4);
+}
+
+/// The counts by degree in the Poisson variables are those of an elimination at every grade
+/// in spaces that have Poisson variables, an angle and its momentum at once, where a basis
+/// ordered by the momenta first mixes the grades: `(M₁ + iM₂)ⁿ e^{−inθ}` of the top turning
+/// with the rotor (`H = n·M₃ + p_θ`, degree `n`, order `n`), beside `p_θ`, `M₃` and the
+/// Casimir, at every Poisson degree to 3, trigonometric order to 2 and momenta degree to 2;
+/// and in the harmonic rotor's 1:1 spaces of every degree to 3, which have no Poisson
+/// variables.
+#[test]
+fn the_counts_by_poisson_degree_are_those_of_every_grade() {
+    let vars = Vars::builder()
+        .poisson("M1")
+        .poisson("M2")
+        .poisson("M3")
+        .angle("theta")
+        .momentum("p_theta")
+        .build()
+        .unwrap();
+    let e = |t: &str| Expr::parse(&vars, t).unwrap();
+    let space = so3_space(&vars, &[("theta", "p_theta")], "M3");
+    let mut mixed = 0;
+    for h in [
+        "M3 + p_theta",
+        "2*M3 + p_theta",
+        "M3^2/2 + M1^2/2 + M2^2/2 + p_theta",
+        "M3 + p_theta^2/2 + M1*cos(theta)",
+        "M1^2/2 + M2^2 + M3^2 + p_theta^2/2 + M3*sin(2*theta)",
+    ] {
+        let top = System::new("turning top", space.clone(), e(h)).unwrap();
+        for (p, t, m) in
+            (0..=3).flat_map(|p| (0..=2).flat_map(move |t| (0..=2).map(move |m| (p, t, m))))
+        {
+            let space = SearchSpace::default()
+                .poisson_degree(p)
+                .trig_degree(t)
+                .momenta_degree(m);
+            let r = search(&top, &SearchOptions::new(space)).unwrap();
+            let counts = (r.dimensions_by_poisson_degree(), r.poisson_counts());
+            assert_eq!(
+                counts,
+                poisson_counts_at_every_grade(&r),
+                "{h} in {space:?}"
+            );
+            // The basis integrals whose terms are of more than one grade.
+            mixed += (r.term_grades().iter())
+                .filter(|terms| terms.windows(2).any(|two| two[0].0 != two[1].0))
+                .count();
+        }
+    }
+    assert!(mixed > 0);
+    let rotor = systems::harmonic_rotor();
+    for d in 0..=3 {
+        let space = SearchSpace::default()
+            .momenta_degree(d)
+            .positions_degree(d)
+            .trig_degree(d)
+            .poisson_degree(1);
+        let r = search(&rotor, &at_one_to_one(&rotor, space)).unwrap();
+        let counts = (r.dimensions_by_poisson_degree(), r.poisson_counts());
+        assert_eq!(counts, poisson_counts_at_every_grade(&r), "degree {d}");
+    }
 }
 
 /// A search space names each degree as it is set, where `SearchSpace::new(2, 0, 1)` took three
