@@ -161,12 +161,15 @@ pub(crate) fn wrap_sum(s: &str, w: usize, indent: &str) -> Vec<String> {
 struct SumLines<'i> {
     /// The lines done.
     lines: Vec<String>,
-    /// The line being filled, and its width.
+    /// The line being filled.
     line: String,
+    /// Its width.
     line_width: usize,
-    /// The width of a line and the indent of each line after the first.
+    /// The width of a line.
     w: usize,
+    /// The indent of each line after the first.
     indent: &'i str,
+    /// The indent's width.
     indent_width: usize,
 }
 
@@ -219,12 +222,12 @@ struct Piece<'a> {
 /// The pieces of `piece` between the signs of its sums at bracket depth `level` in the line
 /// (each piece after the first starts with its sign), laid onto the lines `out` as each is
 /// found ([`place`]); a piece wider than `w` is split again one level deeper, down to the
-/// third. One pass over the text's
-/// bytes a level (its brackets and signs are ASCII or `−`, whose bytes are part of no other
-/// character); a short group in parentheses ([`short_group_end`]) is read ahead from its `(`,
-/// no further than a short group's width. Marking every byte inside a short group first (two
-/// more passes, and five bytes of marks a byte of text) and measuring every group whole took a
-/// fifth of the time of printing a result of 24 MB.
+/// third. One pass over the text's bytes a level (its brackets and signs are ASCII or `−`,
+/// whose bytes are part of no other character); a short group in parentheses
+/// ([`short_group_end`]) is read ahead from its `(`, no further than a short group's width.
+/// Marking every byte inside a short group first (two more passes, and five bytes of marks a
+/// byte of text) and measuring every group whole took a fifth of the time of printing a
+/// result of 24 MB.
 fn sum_pieces(piece: Piece<'_>, level: i32, w: usize, out: &mut SumLines<'_>) {
     const MINUS: &[u8] = "−".as_bytes();
     let s = piece.text;
@@ -1052,6 +1055,60 @@ mod tests {
             let indent = " ".repeat(indent);
             proptest::prop_assert_eq!(wrap_sum(&s, w, &indent), wrap_sum_by_marks(&s, w, &indent));
         }
+    }
+
+    /// The one-pass wrap, laying each piece on its lines as it finds it, gives the lines of
+    /// the wrap before it where a line is exactly as wide as the width, one column wider or
+    /// narrower, with combining marks that make its bytes more than its width, a term wider
+    /// than the width mid-sum, and a sum of 3 000 terms; a line as wide as the width is kept
+    /// whole.
+    #[test]
+    fn the_one_pass_wrap_keeps_a_line_at_the_width() {
+        let terms = |n: usize, term: &str| {
+            (1..=n)
+                .map(|k| format!("{k}{term}"))
+                .collect::<Vec<_>>()
+                .join(" + ")
+        };
+        let big = format!("1{}x", "0".repeat(30));
+        let lines = [
+            "f = a + b − c".to_string(),
+            "f = ω̄ + A\u{304} − ω̄A\u{304}".to_string(),
+            format!("f = x + {big} + y − (a + b)"),
+            format!("    {{C, S}} = {}", terms(40, "p_x⁴ p_y²")),
+            format!("g = {}", terms(3000, "ω̄ x²")),
+        ];
+        for line in &lines {
+            for indent in ["", "  ", "      "] {
+                let whole = width(line);
+                let near = (1..=whole + 2)
+                    .rev()
+                    .take(if whole < 1000 { 30 } else { 0 });
+                for w in near.chain([8, 12, 20, 40, 80]) {
+                    assert_eq!(
+                        wrap_sum(line, w, indent),
+                        wrap_sum_by_marks(line, w, indent),
+                        "{line:?} at {w} with {indent:?}"
+                    );
+                }
+                assert_eq!(wrap_sum(line, whole, indent), [line.as_str()]);
+                assert!(wrap_sum(line, whole - 1, indent).len() > 1, "{line:?}");
+            }
+        }
+        assert!(lines[1].len() > width(&lines[1]) + 4);
+    }
+
+    /// A report's lines are written as they were joined, each ended by a newline and the
+    /// last lines after the others; no lines, no text.
+    #[test]
+    fn lines_to_text_ends_each_line() {
+        let out = ["a".to_string(), String::new(), "ω̄ b".to_string()];
+        let text = crate::render::lines_to_text(&out, &["", "end"]);
+        assert_eq!(text, "a\n\nω̄ b\n\nend\n");
+        assert_eq!(text.capacity(), text.len());
+        assert_eq!(crate::render::lines_to_text(&out[..1], &[]), "a\n");
+        assert_eq!(crate::render::lines_to_text(&[], &["x"]), "x\n");
+        assert_eq!(crate::render::lines_to_text(&[], &[]), "");
     }
 
     /// The width counted on the bytes is that of the characters less the combining marks,
