@@ -468,7 +468,7 @@ impl Subject {
                     Expr::parse_noting(s.vars(), &placed, s.as_ref()).map_err(|e| {
                         let span = shift + e.span.start..shift + e.span.end;
                         FileError::at(ErrorKind::Expression, COMMAND_LINE, text, span, e.message())
-                            .with_cause_without_file(e.cause(), Given::OnCommandLine)
+                            .with_cause(e.cause(), Given::CommandLineAboutBuiltIn)
                     })?;
                 for r in &readings {
                     let w = Warning::run_together(
@@ -498,8 +498,14 @@ impl Subject {
                     FileError::at(ErrorKind::Condition, COMMAND_LINE, w, span, message)
                 };
                 let parse = |s: &str, at| self.parse_placed(w, s, at);
-                parse_condition(self.system(), w, &parse, &refuse, Given::OnCommandLine)
-                    .map_err(anyhow::Error::from)
+                parse_condition(
+                    self.system(),
+                    w,
+                    &parse,
+                    &refuse,
+                    Given::CommandLineAboutBuiltIn,
+                )
+                .map_err(anyhow::Error::from)
             }
         })
         .transpose()
@@ -779,7 +785,7 @@ mod tests {
                     &text,
                     &|s, at| subject.parse_placed(&text, s, at),
                     &refuse,
-                    Given::OnCommandLine,
+                    Given::CommandLineAboutBuiltIn,
                 ) {
                     let _ = e.to_string();
                 }

@@ -13,7 +13,7 @@ use crate::report::{
     Facts, Report, Section, SummaryKind, TableResult,
 };
 
-use crate::system_file::{Caller, FileError, LoadedSystem, MAX_DEGREE_CEILING};
+use crate::system_file::{Caller, FileError, Given, LimitSettings, LoadedSystem};
 
 use super::{agreeing, off_one_note, parameter_facts, parameter_names, HeldAt};
 
@@ -61,25 +61,22 @@ pub fn closure_report_for(
     options: &ClosureOptions,
     caller: Caller,
 ) -> Result<(Report, Closure), EngineError> {
-    let settings = Settings {
-        caller,
-        limits: LimitsOf::Code,
-    };
+    let settings = LimitSettings::of(Given::InCode.by(caller));
     closure_report_in(name, system, generators, options, settings)
 }
 
-/// [`closure_report_for`] whose advice at a limit names `settings`: a system's in code, or a
-/// file's ([`file_closure_report`]).
+/// [`closure_report_for`] whose advice at a limit names `settings` ([`advised`]): the command
+/// line's, or a program's for a system in code or a file's ([`file_closure_report`]).
 fn closure_report_in(
     name: &str,
     system: &System,
     generators: &[NamedFunction],
     options: &ClosureOptions,
-    settings: Settings,
+    settings: LimitSettings,
 ) -> Result<(Report, Closure), EngineError> {
-    let caller = settings.caller;
+    let caller = settings.caller();
     let start = Instant::now();
-    let c = closure_of(system, generators, options).map_err(|e| settings.advised(e))?;
+    let c = closure_of(system, generators, options).map_err(|e| advised(settings, e))?;
     let holding = Holding {
         held: HeldAt::new(options.condition.as_ref(), system.vars(), &c.parameters),
         fixed: !c.parameters.is_empty(),
@@ -106,7 +103,7 @@ fn closure_report_in(
     };
     let names = Names::of_system(system);
     let sections = vec![
-        structure.section(&gens).map_err(|e| settings.advised(e))?,
+        structure.section(&gens).map_err(|e| advised(settings, e))?,
         relations_section(&c, &holding, names, !options.symbolic.is_empty()),
     ];
     Ok((
@@ -122,108 +119,75 @@ fn closure_report_in(
     ))
 }
 
-/// Whose settings a closure's advice at a limit names: the command line's flags, or a
-/// program's, its limits those of a system built in code or of a system file ([`LimitsOf`]).
-#[derive(Clone, Copy)]
-struct Settings {
-    caller: Caller,
-    limits: LimitsOf,
-}
-
-/// Whose limits a closure's system has: a system built in code its `Limits`, any degree limit;
-/// a system file the `LimitsOverride` given to the loader, whose degree limit is at most
-/// [`MAX_DEGREE_CEILING`], as the command line's is.
-#[derive(Clone, Copy, PartialEq, Eq)]
-enum LimitsOf {
-    Code,
-    File,
-}
-
-impl Settings {
-    /// The setting of a limit: the command line's `flag`, or the program's limits' `method`.
-    fn limit(self, flag: &str, method: &str) -> String {
-        let limits = match self.limits {
-            LimitsOf::Code => "Limits",
-            LimitsOf::File => "LimitsOverride",
-        };
-        let program = format!("{limits}::{method}");
-        self.caller.names(flag, &program).to_string()
-    }
-
-    /// Whether the degree limit is at most [`MAX_DEGREE_CEILING`]: the command line's and a
-    /// file's; one in code is not.
-    fn degree_capped(self) -> bool {
-        self.caller == Caller::CommandLine || self.limits == LimitsOf::File
-    }
-
-    /// A closure stopped at a limit of the ring, `e` (the products of the generators together
-    /// past the term limit, or one operation past the term, work or degree limit), said with
-    /// what to do about it in these settings, the one place where the command line's advice
-    /// and the library's are worded: raise the limit that stopped it, where one reaches it, or
-    /// lower the degree, up to which the products of the generators are formed (`raise it with
-    /// Limits::max_terms, or lower ClosureOptions::degree` for a system built in code,
-    /// `LimitsOverride::max_terms` for a file's; `--max-terms N`, `--degree` on the command
-    /// line). The algebra's own advice (`raise the limit or simplify the input`) gives way to
-    /// it. The error is then an [`EngineError::PastLimit`] of the same limit
-    /// ([`EngineError::limit`]), whose message says so. Any other error is as it is: the
-    /// closure's own limit, `ClosureOptions::max_monomials`, says to lower the degree or raise
-    /// the limit, and the caller's hint names the option.
-    fn advised(self, e: EngineError) -> EngineError {
-        let (said, limit, raise) = match &e {
-            // The products of the generators together: the term limit raises them, or a lower
-            // degree forms fewer.
-            EngineError::ClosureTooManyTerms { limit, .. } => (
-                e.to_string(),
-                *limit,
-                format!(
-                    "raise it with {}, or ",
-                    self.limit("--max-terms N", "max_terms")
-                ),
+/// A closure stopped at a limit of the ring, `e` (the products of the generators together
+/// past the term limit, or one operation past the term, work or degree limit), said with
+/// what to do about it in `settings`, the one place where the command line's advice
+/// and the library's are worded: raise the limit that stopped it, where one reaches it, or
+/// lower the degree, up to which the products of the generators are formed (`raise it with
+/// Limits::max_terms, or lower ClosureOptions::degree` for a system built in code,
+/// `LimitsOverride::max_terms` for a file's; `--max-terms N`, `--degree` on the command
+/// line): the setting and the most the degree limit may be are those a limit's hint names
+/// for the same giver ([`LimitSettings::setting`], [`LimitSettings::degree_ceiling`]). The
+/// algebra's own advice (`raise the limit or simplify the input`) gives way to it. The error is then an [`EngineError::PastLimit`] of the same limit
+/// ([`EngineError::limit`]), whose message says so. Any other error is as it is: the
+/// closure's own limit, `ClosureOptions::max_monomials`, says to lower the degree or raise
+/// the limit, and the caller's hint names the option.
+fn advised(settings: LimitSettings, e: EngineError) -> EngineError {
+    let (said, limit, raise) = match &e {
+        // The products of the generators together: the term limit raises them, or a lower
+        // degree forms fewer.
+        EngineError::ClosureTooManyTerms { limit, .. } => (
+            e.to_string(),
+            *limit,
+            format!(
+                "raise it with {}, or ",
+                settings.setting("--max-terms N", "max_terms")
             ),
-            // Which product passed it is the engine's own business; what the caller can
-            // change is the limit or the degree (the machine's memory has no setting: only a
-            // lower degree forms less).
-            EngineError::Algebra(a) => {
-                let raise = |setting: String| format!("raise the limit with {setting}, or ");
-                let raise = match a.limit() {
-                    None => return e,
-                    Some(LimitKind::Terms) => raise(self.limit("--max-terms N", "max_terms")),
-                    Some(LimitKind::Work) => {
-                        raise(self.limit("--max-term-products N", "max_term_products"))
-                    }
-                    // A degree past the most the degree limit may be has no setting either.
-                    Some(LimitKind::Degree(n))
-                        if self.degree_capped() && n > u64::from(MAX_DEGREE_CEILING) =>
-                    {
-                        format!(
-                            "no limit reaches this exponent ({} is at most {MAX_DEGREE_CEILING}): ",
-                            self.limit("--max-degree", "max_degree")
-                        )
-                    }
-                    Some(LimitKind::Degree(_)) => raise(self.limit("--max-degree D", "max_degree")),
-                    Some(_) => String::new(),
-                };
-                // The limit in force as a count; 0 for the machine's memory, which has none.
-                let limit = a
-                    .limit_in_force()
-                    .map_or(0, |n| usize::try_from(n).unwrap_or(usize::MAX));
-                (a.without_advice(), limit, raise)
-            }
-            _ => return e,
-        };
-        let Some(which) = e.limit() else {
-            return e;
-        };
-        let degree = self.caller.names("--degree", "ClosureOptions::degree");
-        let formed = match e {
-            EngineError::ClosureTooManyTerms { .. } => "",
-            _ => " (the products of the generators up to it are formed)",
-        };
-        EngineError::PastLimit {
-            which,
-            limit,
-            message: format!("{said}; {raise}lower {degree}{formed}"),
+        ),
+        // Which product passed it is the engine's own business; what the caller can
+        // change is the limit or the degree (the machine's memory has no setting: only a
+        // lower degree forms less).
+        EngineError::Algebra(a) => {
+            let raise = |setting: String| format!("raise the limit with {setting}, or ");
+            let raise = match a.limit() {
+                None => return e,
+                Some(LimitKind::Terms) => raise(settings.setting("--max-terms N", "max_terms")),
+                Some(LimitKind::Work) => {
+                    raise(settings.setting("--max-term-products N", "max_term_products"))
+                }
+                // A degree past the most the degree limit may be has no setting either.
+                Some(LimitKind::Degree(n)) if n > settings.degree_ceiling() => format!(
+                    "no limit reaches this exponent ({} is at most {}): ",
+                    settings.setting("--max-degree", "max_degree"),
+                    settings.degree_ceiling()
+                ),
+                Some(LimitKind::Degree(_)) => {
+                    raise(settings.setting("--max-degree D", "max_degree"))
+                }
+                Some(_) => String::new(),
+            };
+            // The limit in force as a count; 0 for the machine's memory, which has none.
+            let limit = a
+                .limit_in_force()
+                .map_or(0, |n| usize::try_from(n).unwrap_or(usize::MAX));
+            (a.without_advice(), limit, raise)
         }
+        _ => return e,
+    };
+    let Some(which) = e.limit() else {
+        return e;
+    };
+    let degree = settings
+        .caller()
+        .names("--degree", "ClosureOptions::degree");
+    let formed = match e {
+        EngineError::ClosureTooManyTerms { .. } => "",
+        _ => " (the products of the generators up to it are formed)",
+    };
+    EngineError::PastLimit {
+        which,
+        limit,
+        message: format!("{said}; {raise}lower {degree}{formed}"),
     }
 }
 
@@ -267,7 +231,8 @@ fn symbols_text(c: &Closure) -> Option<Entry> {
 /// condition the flow leaves) is an error of the file without a place, of kind `Limit` (with
 /// the hint to raise the limit, [`ClosureOptions::max_monomials`] included; a limit of the
 /// ring's message says to raise it or lower the degree, as [`closure_report_for`]'s does, a
-/// program's limits named `LimitsOverride::max_terms`, as the loader takes them) or `Engine`,
+/// program's limits named `LimitsOverride::max_terms`, as the loader takes them, or
+/// `Limits::max_terms` for a system built in code, [`LoadedSystem::of_system`]) or `Engine`,
 /// as [`table_report`](crate::system_file::table_report)'s are. `caller` chooses whose
 /// options the report's advice names, as for [`closure_report_for`].
 ///
@@ -305,10 +270,7 @@ pub fn file_closure_report(
         file.system(),
         &generators,
         options,
-        Settings {
-            caller,
-            limits: LimitsOf::File,
-        },
+        LimitSettings::of(file.source().given.by(caller)),
     )
     .map_err(|e| file.computation_failed("computing the closure", &e))?;
     Ok((report.about_file(&file.source().origin), closure))

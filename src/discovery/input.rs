@@ -214,9 +214,10 @@ fn least_fitting(given: u64, ceiling: u64, fits: impl Fn(u64) -> Option<bool>) -
 /// beside it, an empty side, the left side that is no variable, one a condition cannot set
 /// (an angle) or one set twice, the value of the variable the condition cannot set so); one
 /// that a limit stopped as the values were resolved into each other is of kind `limit`, with
-/// the hint that raises it for the condition's giver, `given` (the command line's flag, or a
-/// program's `Limits`: the system has no file), as a file's condition's is. The condition is shown as a file's is,
-/// each value as it is written (`p_θ = Iω`).
+/// the hint that raises it for the condition's giver, `given` (the command line's flag,
+/// [`Given::CommandLineAboutBuiltIn`], or a program's `Limits`, [`Given::InCode`]), as a file's
+/// condition's is. The condition is shown as a file's is, each value as it is written
+/// (`p_θ = Iω`).
 ///
 /// ```
 /// use superint::brackets::systems;
@@ -230,10 +231,10 @@ fn least_fitting(given: u64, ceiling: u64, fits: impl Fn(u64) -> Option<bool>) -
 /// let refuse = |span: std::ops::Range<usize>, why: String| {
 ///     FileError::at(ErrorKind::Condition, "<condition>", text, span, why)
 /// };
-/// let err = parse_condition(&rotor, text, &parse, &refuse, Given::ByProgram).unwrap_err();
+/// let err = parse_condition(&rotor, text, &parse, &refuse, Given::InCode).unwrap_err();
 /// assert_eq!((err.kind, err.line_col()), (ErrorKind::Limit, Some((1, 5))));
 /// assert!(err.hint.is_some_and(|h| h.contains("max_terms")));
-/// let err = parse_condition(&rotor, "theta = 0", &parse, &refuse, Given::ByProgram)
+/// let err = parse_condition(&rotor, "theta = 0", &parse, &refuse, Given::InCode)
 ///     .unwrap_err();
 /// assert_eq!(err.kind, ErrorKind::Condition);
 /// # Ok::<(), Box<dyn std::error::Error>>(())
@@ -311,8 +312,8 @@ pub fn parse_condition(
             }
             _ => 0,
         };
-        // A system with no file: the command line's flag, or the program's `Limits`.
-        refuse(values[k].clone(), e.to_string()).limited_by(&e, LimitSettings::of(false, given))
+        // The settings of the condition's giver (the command line's flag, a program's `Limits`).
+        refuse(values[k].clone(), e.to_string()).limited_by(&e, LimitSettings::of(given))
     })
 }
 

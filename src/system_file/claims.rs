@@ -102,7 +102,7 @@ impl CheckedClaim {
 /// An engine error at a place of the file: limits are limit errors, with the hint that names
 /// the setting raising the limit for the text's giver, the engine's message naming none.
 pub(crate) fn engine_error(source: &Source, span: Range<usize>, e: &EngineError) -> FileError {
-    engine_error_under(source, span, e, LimitSettings::of_source(source))
+    engine_error_under(source, span, e, LimitSettings::of(source.given))
 }
 
 /// [`engine_error`], a limit's hint naming the settings `settings`.
@@ -511,7 +511,7 @@ fn parse_condition_with(
                 side.trimmed_span(),
                 e.to_string(),
             )
-            .limited_by(&e, LimitSettings::of_source(source))
+            .limited_by(&e, LimitSettings::of(source.given))
         })
 }
 

@@ -271,7 +271,7 @@ impl LoadedSystem {
         let advice = match PrintedNames::of_loaded(self).admit(&whose, name, display) {
             Ok(()) => return Ok(()),
             Err(Refusal::Alike(why)) => format!("{why}: rename one, or give it another display"),
-            Err(Refusal::Product(why)) if self.source.program => format!(
+            Err(Refusal::Product(why)) if !self.source.given.about_file() => format!(
                 "{why}: choose another name, or give it to the variables when they are built \
                  (VarsBuilder::also_named), which has such products printed spaced"
             ),

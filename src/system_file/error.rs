@@ -190,16 +190,17 @@ impl FileError {
         self
     }
 
-    /// The same error, of an expression of a system file whose parse met `cause`
-    /// ([`FileError::cause`]), and classified by it as the loader classifies a text's error:
+    /// The same error, of an expression whose parse met `cause` ([`FileError::cause`]), and
+    /// classified by it as the loader classifies a text's error:
     /// of kind [`ErrorKind::Limit`], with the hint that says how to raise the limit, where a
     /// limit stopped the parse ([`ParseCause::limit`](trigpoly::ParseCause::limit)); otherwise
     /// of its kind. By this one rule a parse that a limit stopped is a limit whether it
     /// reaches a program through the loader or through `?`, or the command line from a
-    /// built-in system's text ([`FileError::with_cause_without_file`]). The hint names the
-    /// settings of the text's giver, `given`: the command line's flag first for a text given
-    /// on it, a program's `LimitsOverride` first for a text of a program (`<expression>`), the
-    /// file's `[limits]` first for the file's own text.
+    /// built-in system's text. The hint names the settings of the text's giver, `given`
+    /// ([`Given`]): the command line's flag first for a text given on it (alone for a built-in
+    /// system, which has no `[limits]` to set), a program's `LimitsOverride` first for a
+    /// program's text to a system file (`<expression>`), the file's `[limits]` first for the
+    /// file's own text, the `Limits` a system built in code was built with.
     ///
     /// ```
     /// use superint::system_file::{ErrorKind, FileError, Given};
@@ -207,42 +208,26 @@ impl FileError {
     ///
     /// let power = ParseCause::PowerPastLimit { power: Some(5000), limit: 1000 };
     /// let err = FileError::at(ErrorKind::Expression, "<command line>", "x^5000", 2..6, "past")
-    ///     .with_cause(&power, Given::OnCommandLine);
+    ///     .with_cause(&power, Given::CommandLineAboutFile);
     /// assert_eq!(err.kind, ErrorKind::Limit);
     /// assert_eq!(
     ///     err.hint.as_deref(),
     ///     Some("if the machine has the memory, raise the limit with --max-degree D (or \
     ///           max_degree under [limits] in the file)")
     /// );
-    /// let err = FileError::new(ErrorKind::Expression, "<command line>", "no")
-    ///     .with_cause(&ParseCause::Decimal, Given::OnCommandLine);
-    /// assert_eq!((err.kind, err.hint), (ErrorKind::Expression, None));
-    /// ```
-    #[must_use]
-    pub fn with_cause(self, cause: &trigpoly::ParseCause, given: Given) -> Self {
-        self.with_cause_under(cause, LimitSettings::of(true, given))
-    }
-
-    /// [`FileError::with_cause`] of an expression of a system with no file, a built-in one or
-    /// one built in code: a limit's hint names the command line's flag alone for a text
-    /// `given` on it (`--system harmonic` has no `[limits]` to set), and otherwise the
-    /// `Limits` the system's variables were built with.
-    ///
-    /// ```
-    /// use superint::system_file::{ErrorKind, FileError, Given};
-    /// use superint::trigpoly::ParseCause;
-    ///
-    /// let power = ParseCause::PowerPastLimit { power: Some(5000), limit: 1000 };
     /// let err = FileError::at(ErrorKind::Expression, "<command line>", "x^5000", 2..6, "past")
-    ///     .with_cause_without_file(&power, Given::OnCommandLine);
+    ///     .with_cause(&power, Given::CommandLineAboutBuiltIn);
     /// assert_eq!(
     ///     err.hint.as_deref(),
     ///     Some("if the machine has the memory, raise the limit with --max-degree D")
     /// );
+    /// let err = FileError::new(ErrorKind::Expression, "<command line>", "no")
+    ///     .with_cause(&ParseCause::Decimal, Given::CommandLineAboutFile);
+    /// assert_eq!((err.kind, err.hint), (ErrorKind::Expression, None));
     /// ```
     #[must_use]
-    pub fn with_cause_without_file(self, cause: &trigpoly::ParseCause, given: Given) -> Self {
-        self.with_cause_under(cause, LimitSettings::of(false, given))
+    pub fn with_cause(self, cause: &trigpoly::ParseCause, given: Given) -> Self {
+        self.with_cause_under(cause, LimitSettings::of(given))
     }
 
     /// [`FileError::with_cause`], a limit's hint naming the settings `settings`.
@@ -313,7 +298,10 @@ impl FileError {
         e: &brackets::EngineError,
     ) -> Option<FileError> {
         Limit::of_engine(e)?;
-        let settings = LimitSettings::of(file, Given::OnCommandLine);
+        let settings = LimitSettings::of(match file {
+            true => Given::CommandLineAboutFile,
+            false => Given::CommandLineAboutBuiltIn,
+        });
         let message = format!("{doing}: {e}");
         Some(FileError::new(ErrorKind::Engine, origin, message).limited_by(e, settings))
     }

@@ -87,7 +87,7 @@ pub fn load_bytes(
 
 /// Loads a system file piped on standard input, [`STDIN`](super::STDIN) in messages, which
 /// only the command line reads: a limit its text meets is raised by the command line's flag
-/// first ([`Given::OnCommandLine`](super::Given::OnCommandLine)).
+/// first ([`Given::CommandLineAboutFile`](super::Given::CommandLineAboutFile)).
 pub fn load_piped(bytes: &[u8], limits: &LimitsOverride) -> Result<LoadedSystem, FileError> {
     let text = text_of(super::STDIN, bytes)?;
     load_source(Source::on_command_line(super::STDIN, text), limits)

@@ -413,10 +413,7 @@ impl LoadedSystem {
     /// ```
     pub fn of_system(system: System) -> Self {
         LoadedSystem {
-            source: Source {
-                file: false,
-                ..Source::program("<program>", "")
-            },
+            source: Source::given_by("<program>", "", Given::InCode),
             name: system.name().to_string(),
             citation: None,
             description: None,
@@ -444,7 +441,7 @@ impl LoadedSystem {
     /// names its built-in system `--system harmonic`.
     #[must_use]
     pub fn with_origin(mut self, origin: &str) -> Self {
-        self.source = Source::program_about(&self.source, origin, "");
+        self.source = Source::given_by(origin, "", self.source.given);
         self
     }
 
@@ -560,16 +557,11 @@ impl LoadedSystem {
     /// those of the system's own texts (a file's tables, or the library's calls for a system
     /// built in code).
     pub(crate) fn given(&self, what: &str, text: &str) -> Source {
-        let (origin, given) = match self.caller {
-            Caller::CommandLine => (COMMAND_LINE, Given::OnCommandLine),
-            Caller::Program => (what, Given::ByProgram),
+        let origin = match self.caller {
+            Caller::CommandLine => COMMAND_LINE,
+            Caller::Program => what,
         };
-        Source {
-            program: self.source.program,
-            file: self.source.file,
-            given,
-            ..Source::new(origin, text)
-        }
+        Source::given_by(origin, text, self.source.given.by(self.caller))
     }
 
     /// Reads the expression that is `source`, without expanding it.

@@ -853,7 +853,7 @@ pub fn rank_report_when(
         Entry::Rank(rank),
         // A system built in code or given by `--system` is no file to count.
         SummaryKind::Check {
-            files: usize::from(!file.source.program),
+            files: usize::from(file.source.given.about_file()),
         },
         start,
     ))

@@ -391,10 +391,10 @@ pub(crate) enum Limit {
 
 /// Whose settings raise a limit, as a limit's hint names them: the input the limit stopped
 /// was given by a file, the command line or a program, about a system file or a system with
-/// no file (a built-in one, or one built in code). Told from the text's [`Source`]
-/// ([`LimitSettings::of_source`]) wherever the text has one, else from what its caller knows
-/// ([`LimitSettings::of`]), so that every caller's hint is worded in one place,
-/// [`Limit::hint`].
+/// no file (a built-in one, or one built in code). Told from who gave the text ([`Given`],
+/// [`LimitSettings::of`]), its [`Source`]'s wherever the text has one, so that every caller's
+/// hint is worded in one place, [`Limit::hint`], and a closure's advice at a limit names the
+/// same setting ([`LimitSettings::setting`]).
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub(crate) enum LimitSettings {
     /// A system file's own text, loaded by the command line or by a program: the file's
@@ -418,31 +418,24 @@ pub(crate) enum LimitSettings {
 }
 
 impl LimitSettings {
-    /// The settings of a text by its source: whether the system it is about has a file
-    /// ([`Source::file`]) and who gave it ([`Source::given`]).
-    pub(crate) fn of_source(source: &Source) -> LimitSettings {
-        LimitSettings::of(source.file, source.given)
-    }
-
-    /// The settings of a text `given` by the command line, a program or the file itself,
-    /// about a system with a file when `file`: with no file, a built-in system's on the
-    /// command line, else one built in code; with one, the file's text given on the command
-    /// line (or the file piped on standard input), by a program, or the file's own, which
-    /// either loaded.
-    pub(crate) fn of(file: bool, given: Given) -> LimitSettings {
-        match (file, given) {
-            (false, Given::OnCommandLine) => LimitSettings::BuiltInOnCommandLine,
-            (false, Given::ByProgram | Given::InFile) => LimitSettings::Code,
-            (true, Given::OnCommandLine) => LimitSettings::FileOnCommandLine,
-            (true, Given::ByProgram) => LimitSettings::FileInProgram,
-            (true, Given::InFile) => LimitSettings::File,
+    /// The settings of a text `given` by the file itself, the command line or a program,
+    /// about a system with a file or none ([`Given`]): a built-in system's on the command
+    /// line, else one built in code's; a system file's text given on the command line (or the
+    /// file piped on standard input), by a program, or the file's own, which either loaded.
+    pub(crate) fn of(given: Given) -> LimitSettings {
+        match given {
+            Given::CommandLineAboutBuiltIn => LimitSettings::BuiltInOnCommandLine,
+            Given::InCode => LimitSettings::Code,
+            Given::CommandLineAboutFile => LimitSettings::FileOnCommandLine,
+            Given::ProgramAboutFile | Given::ProgramAddingToFile => LimitSettings::FileInProgram,
+            Given::InFile => LimitSettings::File,
         }
     }
 
     /// The largest degree limit these settings may set: a file's and the command line's
     /// [`MAX_DEGREE_CEILING`], a system built in code's `u32::MAX` (`Limits::max_degree`), and
     /// a program's either, so its largest.
-    fn degree_ceiling(self) -> u64 {
+    pub(crate) fn degree_ceiling(self) -> u64 {
         match self {
             LimitSettings::Code | LimitSettings::Program => u64::from(u32::MAX),
             _ => u64::from(MAX_DEGREE_CEILING),
@@ -474,6 +467,36 @@ impl LimitSettings {
                 "{fields} of the Limits a system built in code was built with, or of the \
                  LimitsOverride given to the loader of a system file"
             ),
+        }
+    }
+
+    /// The one setting that raises a limit, named short as a sentence names it beside another
+    /// (a closure's `raise it with …, or lower --degree`): the command line's flag `flag`
+    /// (`--max-terms N`), a program's field `field` (`max_terms`) of the `LimitsOverride` given
+    /// to a system file's loader or of the `Limits` a system built in code was built with; the
+    /// file's key for its own text, and both fields for a program's error of either system.
+    pub(crate) fn setting(self, flag: &str, field: &str) -> String {
+        match self {
+            LimitSettings::FileOnCommandLine | LimitSettings::BuiltInOnCommandLine => {
+                flag.to_string()
+            }
+            LimitSettings::FileInProgram => format!("LimitsOverride::{field}"),
+            LimitSettings::Code => format!("Limits::{field}"),
+            LimitSettings::File => format!("{field} under [limits] in the file"),
+            LimitSettings::Program => format!("Limits::{field} or LimitsOverride::{field}"),
+        }
+    }
+
+    /// Who names these settings: the command line for its own, a program for the rest.
+    pub(crate) fn caller(self) -> super::Caller {
+        match self {
+            LimitSettings::FileOnCommandLine | LimitSettings::BuiltInOnCommandLine => {
+                super::Caller::CommandLine
+            }
+            LimitSettings::File
+            | LimitSettings::FileInProgram
+            | LimitSettings::Code
+            | LimitSettings::Program => super::Caller::Program,
         }
     }
 
@@ -691,18 +714,15 @@ pub(crate) fn expression_error(source: &Source, text: &Text, e: &ParseError) -> 
     let message = relocate_opener(source, text, e);
     let error = text
         .error(source, ErrorKind::Expression, e.span, message)
-        .with_cause_under(e.cause(), LimitSettings::of_source(source));
+        .with_cause_under(e.cause(), LimitSettings::of(source.given));
     let Some(unknown) = Unknown::of(e.cause()) else {
         return error;
     };
-    // A built-in system's text from the command line is the program's too: its origin tells
-    // the two apart.
-    let command_line = source.origin == super::COMMAND_LINE;
-    let hint = match (momentum_hint(&unknown), source.program) {
+    let hint = match (momentum_hint(&unknown), source.given) {
         (Some(hint), _) => hint,
-        (None, true) if command_line => UNKNOWN_NAME_HINT_BUILT_IN.into(),
-        (None, true) => UNKNOWN_NAME_HINT_IN_CODE.into(),
-        (None, false) => distance_hint(&unknown)
+        (None, Given::CommandLineAboutBuiltIn) => UNKNOWN_NAME_HINT_BUILT_IN.into(),
+        (None, given) if given.names_library() => UNKNOWN_NAME_HINT_IN_CODE.into(),
+        (None, _) => distance_hint(&unknown)
             .or_else(|| bare_momentum_hint(&unknown))
             .unwrap_or_else(|| UNKNOWN_NAME_HINT.into()),
     };
@@ -942,7 +962,7 @@ impl<'a> Scope<'a> {
             &|piece: &str| self.file.display_name(piece),
             // A system that is no file (built in code, or the command line's `--system`)
             // has nowhere to declare a name.
-            !self.file.source.program,
+            self.file.source.given.about_file(),
         )
     }
 

@@ -24,43 +24,79 @@ pub struct Source {
     pub origin: String,
     /// The whole text.
     pub text: Arc<str>,
-    /// Whether hints name the library's calls, not a file's tables: a text of a system built
-    /// in code, or one a program added to a system (a function added in code, say). Who gave
-    /// the text, which a limit's hint goes by, is `given`.
-    pub(crate) program: bool,
-    /// Whether the system the text is about has a file (not one built in code, nor a built-in
-    /// one, `--system harmonic`): a limit's hint names the file's `[limits]` only where it has
+    /// Who gave the text, about what system: what its hints name (a file's tables or the
+    /// library's calls) and whose settings raise a limit it meets
     /// ([`LimitSettings`](super::LimitSettings)).
-    pub(crate) file: bool,
-    /// Who gave the text: the file itself, the command line or a program, whose settings a
-    /// limit's hint names ([`LimitSettings`](super::LimitSettings)).
     pub(crate) given: Given,
 }
 
-/// Who gave a text, set where its [`Source`] is made: a limit the text meets is raised by the
-/// giver's settings, which the limit's hint names.
+/// Who gave a text and about what system, set where its [`Source`] is made: its hints name the
+/// giver's means (a file's tables, the command line's options, the library's calls), and a
+/// limit the text meets is raised by the giver's settings, which its hint names. A system's
+/// own source is [`Given::InFile`] for a system file and [`Given::InCode`] for one built in
+/// code.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Given {
-    /// The system file's own text, which the command line or a program loaded.
+    /// A system file's own text, which the command line or a program loaded.
     InFile,
-    /// The command line: a text given on it, or the system file piped on standard input,
+    /// A text the command line gave about a system file, or the file piped on standard input,
     /// which only the command line reads.
-    OnCommandLine,
-    /// A program: a text it gave a report or the loaded system (`<expression>`,
-    /// `<condition>`, `<function F>`), or a system it built in code.
-    ByProgram,
+    CommandLineAboutFile,
+    /// A text the command line gave about a built-in system (`--system harmonic`), which has
+    /// no file and to which its user can add no name.
+    CommandLineAboutBuiltIn,
+    /// A text a program gave a report about a system file (`<expression>`, `<condition>`):
+    /// its hints are the file's own.
+    ProgramAboutFile,
+    /// A text a program added to a system file or read against it by the library's calls
+    /// (`LoadedSystem::parse`, `add_function`, a display name given in code): its hints name
+    /// the library's calls.
+    ProgramAddingToFile,
+    /// A system built in code (a built-in one too), or a text a program gave about one.
+    InCode,
 }
 
-/// `Source { origin: "systems/kepler.toml", text: <4211 bytes>, program: false, file: true,
-/// given: InFile }`: a file's text, shared by each of its claims and families, is printed by
-/// none of them.
+impl Given {
+    /// Whether the system the text is about has a file (not one built in code, nor a built-in
+    /// one, `--system harmonic`): for a system's own source, whether it is a file's.
+    pub(crate) fn about_file(self) -> bool {
+        match self {
+            Given::InFile
+            | Given::CommandLineAboutFile
+            | Given::ProgramAboutFile
+            | Given::ProgramAddingToFile => true,
+            Given::CommandLineAboutBuiltIn | Given::InCode => false,
+        }
+    }
+
+    /// Whether hints name the library's calls, not a file's tables: a text of a system built
+    /// in code, or one a program added to a system (a function added in code, say).
+    pub(crate) fn names_library(self) -> bool {
+        match self {
+            Given::ProgramAddingToFile | Given::CommandLineAboutBuiltIn | Given::InCode => true,
+            Given::InFile | Given::CommandLineAboutFile | Given::ProgramAboutFile => false,
+        }
+    }
+
+    /// Who gives a text `caller` gives about the system this one is about: the command line's
+    /// text or a program's report's, about a file or a system with none.
+    pub(crate) fn by(self, caller: super::Caller) -> Given {
+        match (caller, self.about_file()) {
+            (super::Caller::CommandLine, true) => Given::CommandLineAboutFile,
+            (super::Caller::CommandLine, false) => Given::CommandLineAboutBuiltIn,
+            (super::Caller::Program, true) => Given::ProgramAboutFile,
+            (super::Caller::Program, false) => Given::InCode,
+        }
+    }
+}
+
+/// `Source { origin: "systems/kepler.toml", text: <4211 bytes>, given: InFile }`: a file's
+/// text, shared by each of its claims and families, is printed by none of them.
 impl std::fmt::Debug for Source {
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
         f.debug_struct("Source")
             .field("origin", &self.origin)
             .field("text", &format_args!("<{} bytes>", self.text.len()))
-            .field("program", &self.program)
-            .field("file", &self.file)
             .field("given", &self.given)
             .finish()
     }
@@ -69,39 +105,36 @@ impl std::fmt::Debug for Source {
 impl Source {
     /// A source with its origin, a system file's own text.
     pub fn new(origin: &str, text: &str) -> Self {
+        Source::given_by(origin, text, Given::InFile)
+    }
+
+    /// A source with its origin, given by `given`.
+    pub(crate) fn given_by(origin: &str, text: &str, given: Given) -> Self {
         Source {
             origin: origin.to_string(),
             text: Arc::from(text),
-            program: false,
-            file: true,
-            given: Given::InFile,
+            given,
         }
     }
 
     /// A text the command line gave, named `origin` in messages, about a system file.
     pub(crate) fn on_command_line(origin: &str, text: &str) -> Self {
-        Source {
-            given: Given::OnCommandLine,
-            ..Source::new(origin, text)
-        }
+        Source::given_by(origin, text, Given::CommandLineAboutFile)
     }
 
-    /// A text a program gave, named `origin` in messages, about a system file.
+    /// A text a program gave, named `origin` in messages, to a system file.
     pub(crate) fn program(origin: &str, text: &str) -> Self {
-        Source {
-            program: true,
-            given: Given::ByProgram,
-            ..Source::new(origin, text)
-        }
+        Source::given_by(origin, text, Given::ProgramAddingToFile)
     }
 
-    /// A text a program gave, named `origin` in messages, about the system of `about`: one
-    /// with a file or not, as it is.
+    /// A text a program gave, named `origin` in messages, to the system of `about`: one with
+    /// a file or not, as it is.
     pub(crate) fn program_about(about: &Source, origin: &str, text: &str) -> Self {
-        Source {
-            file: about.file,
-            ..Source::program(origin, text)
-        }
+        let given = match about.given.about_file() {
+            true => Given::ProgramAddingToFile,
+            false => Given::InCode,
+        };
+        Source::given_by(origin, text, given)
     }
 
     /// An error at a byte range of this source.

@@ -752,9 +752,9 @@ fn tower_families(file: &LoadedSystem, family: Option<&str>) -> Result<Vec<usize
             let message = format!(
                 "no family named {} (the {} {})",
                 trigpoly::quoted_name(name),
-                match file.source.program {
-                    true => "system has",
-                    false => "file declares",
+                match file.source.given.about_file() {
+                    false => "system has",
+                    true => "file declares",
                 },
                 match declared.is_empty() {
                     true => "none".to_string(),
@@ -804,8 +804,8 @@ fn family_refused(file: &LoadedSystem, message: impl Into<String>) -> FileError 
 
 /// That `file` has no family with an eigenvalue, and so no tower, with how to declare one.
 fn no_family_with_an_eigenvalue(file: &LoadedSystem) -> FileError {
-    match file.source.program {
-        true => family_refused(
+    match file.source.given.about_file() {
+        false => family_refused(
             file,
             "the system has no family with an eigenvalue, so there is no tower to check",
         )
@@ -814,7 +814,7 @@ fn no_family_with_an_eigenvalue(file: &LoadedSystem) -> FileError {
              [\"m\", \"n\"], \"Z^m*exp(-i*n*theta)\", \
              Some(\"i*(m*omega - n*p_theta/I)\"))",
         ),
-        false => family_refused(
+        true => family_refused(
             file,
             "the file declares no [[family]] with an eigenvalue, so there is no tower to check",
         )

@@ -1415,7 +1415,7 @@ fn a_closure_past_the_term_limit_says_that_limit() {
 /// said the limit alone, and a file's hint how to raise it, never the degree); the error is
 /// still of that limit, by type, and a file's still has its hint. A file's limits are named
 /// as a program sets them, `LimitsOverride` (its advice named `Limits`, which sets a system's
-/// in code), and an exponent past the most a file's degree limit may be is raised by the
+/// in code), a system built in code given as a loaded one by its own, `Limits`, and an exponent past the most a file's degree limit may be is raised by the
 /// degree limit of a system in code (its advice said that no limit reached it).
 #[test]
 fn a_closures_report_at_a_limit_advises_the_librarys_settings() {
@@ -1438,6 +1438,13 @@ fn a_closures_report_at_a_limit_advises_the_librarys_settings() {
     .unwrap_err();
     assert_eq!(err.to_string(), terms);
     assert_eq!(err.limit(), Some(EngineLimit::Ring(LimitKind::Terms)));
+    // A system built in code, given as a loaded one, names its own settings, `Limits` (its
+    // advice named the `LimitsOverride` of a file's loader, which it has none of).
+    let in_code = LoadedSystem::of_system(small.clone());
+    let err =
+        file_closure_report(&in_code, &SU2, &ClosureOptions::new(4), Caller::Program).unwrap_err();
+    assert_eq!(err.kind, ErrorKind::Limit);
+    assert_eq!(err.message, format!("computing the closure: {terms}"));
     let path = concat!(env!("CARGO_MANIFEST_DIR"), "/systems/harmonic-rotor.toml");
     let rotor = load_system_file(path, &LimitsOverride::default().max_terms(60)).unwrap();
     let err =
