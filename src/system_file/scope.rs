@@ -13,7 +13,7 @@ use brackets::{EngineError, EngineLimit};
 
 use num_bigint::BigInt;
 use trigpoly::syntax::{is_name_continue, is_name_start, Expr as Tree, ExprKind, ParseError};
-use trigpoly::{Context, Expr, GaussianRational, LimitKind, ParseCause, Span, VarKind};
+use trigpoly::{Context, Expr, GaussianRational, LimitKind, Limits, ParseCause, Span, VarKind};
 
 use super::error::{ErrorKind, FileError, Warning};
 use super::load::MAX_DEGREE_CEILING;
@@ -433,11 +433,11 @@ impl LimitSettings {
     }
 
     /// The largest degree limit these settings may set: a file's and the command line's
-    /// [`MAX_DEGREE_CEILING`], a system built in code's `u32::MAX` (`Limits::max_degree`), and
-    /// a program's either, so its largest.
+    /// [`MAX_DEGREE_CEILING`], a system built in code's [`Limits::MAX_DEGREE`] (past which
+    /// `Limits::max_degree` takes no effect), and a program's either, so its largest.
     pub(crate) fn degree_ceiling(self) -> u64 {
         match self {
-            LimitSettings::Code | LimitSettings::Program => u64::from(u32::MAX),
+            LimitSettings::Code | LimitSettings::Program => u64::from(Limits::MAX_DEGREE),
             _ => u64::from(MAX_DEGREE_CEILING),
         }
     }

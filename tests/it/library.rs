@@ -1619,8 +1619,8 @@ fn a_limits_hint_names_the_setting_that_raises_it() {
 /// built in code (a built-in one too, as `discovery::builtin_system` builds it) the `Limits`
 /// its variables were built with, where it named `max_degree under [limits] in the file`,
 /// which it has not, and said that no limit reaches an exponent past 32767, which
-/// `Limits::max_degree` does; a file the `LimitsOverride` given to the loader, then its
-/// `[limits]`.
+/// `Limits::max_degree` does up to `Limits::MAX_DEGREE` (2³¹ − 1, not `u32::MAX`, as the hint
+/// once had it); a file the `LimitsOverride` given to the loader, then its `[limits]`.
 #[test]
 fn a_programs_limit_hint_names_the_systems_settings() {
     let code = LoadedSystem::of_system(systems::harmonic_rotor());
@@ -1639,13 +1639,18 @@ fn a_programs_limit_hint_names_the_systems_settings() {
         let err = bracket_report(system, "L", "H", Some("x = y^5000")).unwrap_err();
         assert_eq!(err.hint.as_deref(), Some(in_code), "{err}");
     }
-    let err = expand_report(&code, &["x^4294967296"], None).unwrap_err();
-    assert!(
-        err.hint
-            .as_deref()
-            .is_some_and(|h| h.starts_with("no limit reaches this exponent")),
-        "{err}"
-    );
+    // Past 2³¹ − 1 no `max_degree` takes effect (`Limits::MAX_DEGREE`), though it takes a u32.
+    for text in ["x^3000000000", "x^4294967296"] {
+        let err = expand_report(&code, &[text], None).unwrap_err();
+        assert_eq!(
+            err.hint.as_deref(),
+            Some(
+                "no limit reaches this exponent or order: max_degree is at most 2147483647; \
+                 write the expression without so large a power or multiple"
+            ),
+            "{err}"
+        );
+    }
     let rotor =
         load_system_file("systems/harmonic-rotor.toml", &LimitsOverride::default()).unwrap();
     let err = expand_report(&rotor, &["x^5000"], None).unwrap_err();

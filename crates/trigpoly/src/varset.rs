@@ -292,6 +292,19 @@ impl Limits {
         self
     }
 
+    /// The largest degree limit that takes effect, `2³¹ − 1`: an exponent of the widest packing
+    /// ([`FIELD_BITS`], 32 bits with a sign); a larger [`Limits::max_degree`] acts as this one.
+    ///
+    /// ```
+    /// use trigpoly::{Limits, Vars};
+    ///
+    /// let limits = Limits::default().max_degree(u32::MAX);
+    /// let vars = Vars::builder().coordinate("x").limits(limits).build()?;
+    /// assert_eq!(vars.limits().max_degree, Limits::MAX_DEGREE);
+    /// # Ok::<(), Box<dyn std::error::Error>>(())
+    /// ```
+    pub const MAX_DEGREE: u32 = i32::MAX.unsigned_abs();
+
     /// The same limits with no exponent past `d` in absolute value (no trigonometric order past
     /// it in an angle).
     #[must_use]
