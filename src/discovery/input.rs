@@ -4,7 +4,6 @@
 use crate::system_file::{
     assignment_sides, comma_pieces, condition_cannot_set, fixed_twice, no_variable, trimmed,
     ErrorKind, FileError, Given, Limit, LimitSettings, CONDITION_FORM, CONDITION_USAGE,
-    MAX_DEGREE_CEILING,
 };
 use brackets::{EngineError, System};
 use trigpoly::{Expr, Limits, Rational, Style, Var};
@@ -133,8 +132,8 @@ pub fn builtin_system_refused(
         let message = format!("the system could not be built: {e}");
         return FileError::new(ErrorKind::Engine, &origin, message);
     };
-    // Whether the system builds with one limit at `value`, the others as given: `None` where
-    // another limit, or anything else, stops it.
+    // Whether the system builds with the limits `raised`: `None` where a limit other than the
+    // one `stopped_again` names, or anything else, stops it.
     let builds = |raised: Limits, stopped_again: &dyn Fn(Limit) -> bool| match builtin_system(
         name, resonant, raised,
     ) {
@@ -151,7 +150,7 @@ pub fn builtin_system_refused(
         .map(|n| ("term", n, limits.max_terms as u64)),
         Limit::Degree(_) => least_fitting(
             u64::from(limits.max_degree),
-            u64::from(MAX_DEGREE_CEILING),
+            LimitSettings::BuiltInOnCommandLine.degree_ceiling(),
             |d| {
                 let raised = limits.max_degree(u32::try_from(d).unwrap_or(u32::MAX));
                 builds(raised, &|l| matches!(l, Limit::Degree(_)))

@@ -506,13 +506,8 @@ impl LimitSettings {
     /// by either.
     fn raising_option(self, flag: &str, option: &str) -> String {
         match self {
-            LimitSettings::FileOnCommandLine | LimitSettings::BuiltInOnCommandLine => {
-                flag.to_string()
-            }
             LimitSettings::File => format!("{flag} (in a program, {option})"),
-            LimitSettings::FileInProgram | LimitSettings::Code | LimitSettings::Program => {
-                option.to_string()
-            }
+            _ => self.caller().names(flag, option).to_string(),
         }
     }
 }
