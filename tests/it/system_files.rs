@@ -338,6 +338,55 @@ fn other_commands_warn_of_names_run_together_on_standard_error() {
     }
 }
 
+/// Two one-letter names run together where a declared name of two letters differs in the
+/// last alone are warned of, the product read (`Hy` beside a function `Hx` is `H·y`, where
+/// `Hy` was likely left undeclared; `Lx` beside `L` and `Ly` is `L·x`); `xy`, `Mω` and `Lx`
+/// beside a function `L` alone are products without a word.
+#[test]
+fn two_letters_beside_a_declared_name_of_the_same_first_are_warned_of() {
+    let dir = scratch("run-together-same-first");
+    let file = |name: &str, functions: &[(&str, &str)]| {
+        let declared: String = functions
+            .iter()
+            .map(|(f, value)| format!("\n[[function]]\nname = \"{f}\"\nvalue = \"{value}\"\n"))
+            .collect();
+        let text = format!(
+            "name = \"{name}\"\nhamiltonian = \"(p_x^2 + p_y^2)/2\"\n\n[phase_space]\n\
+             coordinates = [\"x\", \"y\"]\nparameters = [\"M\", \"omega\"]\n{declared}"
+        );
+        std::fs::write(dir.join(format!("{name}.toml")), text).expect("written");
+    };
+    file("trap", &[("Hx", "p_x^2/2")]);
+    file("noise", &[("L", "x*p_y - y*p_x"), ("Ly", "y*p_x")]);
+    file("alone", &[("L", "x*p_y - y*p_x")]);
+    let warned = |args: &[&str]| {
+        let o = superint_in(&dir, args);
+        assert_eq!(o.status.code(), Some(0), "{args:?}: {}", text(&o.stderr));
+        (text(&o.stdout), text(&o.stderr))
+    };
+    let (out, err) = warned(&["bracket", "trap.toml", "Hy", "x"]);
+    assert!(out.contains("{H y, x}"), "{out}");
+    assert_eq!(
+        err,
+        "superint: warning: <command line>:1:1: 'Hy' is read as the product H y, though the \
+         declared name Hx differs from it in its last letter alone: declare 'Hy' if it is a name \
+         of its own, or write 'H y' for the product\n 1 | Hy\n   | ^^\n"
+    );
+    let (_, err) = warned(&["bracket", "noise.toml", "Lx", "x"]);
+    assert!(
+        err.starts_with(
+            "superint: warning: <command line>:1:1: 'Lx' is read as the product L x, though the \
+             declared name Ly differs from it in its last letter alone: declare 'Lx' if it is a \
+             name of its own, or write 'L x' for the product\n"
+        ),
+        "{err}"
+    );
+    for file in ["trap.toml", "noise.toml", "alone.toml"] {
+        assert_eq!(warned(&["bracket", file, "xy + Mω", "x"]).1, "", "{file}");
+    }
+    assert_eq!(warned(&["bracket", "alone.toml", "Lx", "Mω"]).1, "");
+}
+
 /// [`RUN_TOGETHER`] with a function after `Lzx` that names an unknown `q`: the load fails
 /// after the warning of `Lzx`.
 fn failing_run_together() -> String {

@@ -57,8 +57,8 @@ pub enum BracketError {
 
 /// A name that is not declared, read as the product of the declared names it splits into
 /// ([`split_names`]), where the reading may not be what was meant: a physicist writes `Mω` for
-/// `M·ω`, but `Lxx` beside a function `Lx`, `Axx` beside `A_xx` or `omegaa` beside `omega`
-/// and `a` are more likely names of their own, or slips ([`Doubt`] says which rule saw it).
+/// `M·ω`, but `Lxx` beside a function `Lx`, `Axx` beside `A_xx`, `Hy` beside `Hx` or
+/// `omegaa` beside `omega` and `a` are more likely names of their own, or slips ([`Doubt`] says which rule saw it).
 ///
 /// ```
 /// use trigpoly::{Doubt, NoContext, Poly, Rational, Vars};
@@ -108,6 +108,11 @@ pub enum Doubt {
     /// `A_xx` (read `A·x·x`), `Ayx` beside `Axy`. A name that is one of the pieces (`omegax`,
     /// one letter more than `omega`) is a product as written.
     CloseTo(String),
+    /// The name is two one-letter names run together, and a declared name of two letters
+    /// differs from it in its last letter alone: `Hy` beside a function `Hx` (read `H·y`),
+    /// `Lx` beside `Ly`, likely a name of the same set that was not declared. `xy`, `Mω` and
+    /// `Lx` beside a function `L`, with no such name declared, are products.
+    SameFirstLetter(String),
     /// A letter is doubled across two pieces, the first of two characters or more: `omegaa`
     /// as `omega·a`, `p_xx` as `p_x·x`, which may be a key struck twice (`xx`, `ωω`, of
     /// one-letter names, are products).
@@ -131,6 +136,9 @@ impl RunTogether {
         }
         if let Some(k) = did_you_mean(name, known).filter(|k| !pieces.iter().any(|p| p == k)) {
             return Some(Doubt::CloseTo(k.to_string()));
+        }
+        if let Some(k) = same_first_letter(name, known) {
+            return Some(Doubt::SameFirstLetter(k.to_string()));
         }
         pieces.windows(2).find_map(|pair| {
             let last = pair[0].chars().next_back()?;
@@ -161,6 +169,9 @@ impl RunTogether {
                 format!(", the function {f} with {after} after it")
             }
             Doubt::CloseTo(k) => format!(", though it is close to the declared name {k}"),
+            Doubt::SameFirstLetter(k) => {
+                format!(", though the declared name {k} differs from it in its last letter alone")
+            }
             Doubt::Doubled(c) => format!(", with its {c} doubled"),
         };
         // A long run (`'abab…', 4000 characters long`) is not written out again.
@@ -184,6 +195,24 @@ impl RunTogether {
             formula(&product.join(" ")),
         )
     }
+}
+
+/// The first of `known` that is two letters, the first of them `name`'s, where `name` is two
+/// letters (read as two one-letter names, [`Doubt::SameFirstLetter`]): `Hx` for `Hy`; else
+/// nothing.
+fn same_first_letter<'k>(name: &str, known: &'k [String]) -> Option<&'k str> {
+    let two_letters = |s: &str| {
+        let mut letters = s.chars();
+        match (letters.next(), letters.next(), letters.next()) {
+            (Some(a), Some(b), None) if a.is_alphabetic() && b.is_alphabetic() => Some(a),
+            _ => None,
+        }
+    };
+    let first = two_letters(name)?;
+    known
+        .iter()
+        .map(String::as_str)
+        .find(|&k| k != name && two_letters(k) == Some(first))
 }
 
 impl std::fmt::Display for RunTogether {

@@ -1,8 +1,9 @@
 //! Names run together that split into declared names are read as their product (`Mω` is
 //! `M·ω`), and the lowering says which of those readings may not be what was meant
 //! ([`RunTogether`]): a function's name continued by letters (`Lxx` beside `Lx`), a name close
-//! to a declared one (`Axx` beside `A_xx`, `Ayx` beside `Axy`), a letter doubled after a
-//! longer name (`omegaa`, `p_xx`); the physics products are read without a word.
+//! to a declared one (`Axx` beside `A_xx`, `Ayx` beside `Axy`), two letters beside a declared
+//! name of two with the same first (`Hy` beside `Hx`), a letter doubled after a longer name
+//! (`omegaa`, `p_xx`); the physics products are read without a word.
 
 use pretty_assertions::assert_eq;
 use trigpoly::{Context, Doubt, GaussianRational, RunTogether, Span, Vars};
@@ -197,4 +198,42 @@ fn the_message_says_the_reading_and_what_to_write() {
         "'omegaa' is read as the product omega a, with its a doubled: declare 'omegaa' if it is \
          a name of its own, or write 'omega a' for the product"
     );
+}
+
+/// Two one-letter names run together beside a declared name of two letters with the same
+/// first (`Hy` beside a function `Hx`, `Lx` beside `Ly`) are noted, that name said in the
+/// message; `xy`, `Mω` and a function's name with a letter after it (`Lx` beside `L` where no
+/// `Ly` is declared) are not.
+#[test]
+fn two_letters_beside_a_declared_name_of_the_same_first_are_noted() {
+    let vars = plane_with(&["H", "L"]);
+    let p = |s: &str| G::parse(&vars, s).unwrap();
+    let beside = Functions(vec![("Hx", p("p_x^2/2")), ("Ly", p("y*p_x"))]);
+    let noted = |src: &str| G::parse_noting(&vars, src, &beside).unwrap().1;
+    let [hy] = &noted("x + Hy")[..] else {
+        panic!("{:?}", noted("x + Hy"))
+    };
+    assert_eq!(
+        (hy.span, hy.pieces.clone(), hy.doubt.clone()),
+        (
+            Span::new(4, 6),
+            pieces(&["H", "y"]),
+            Doubt::SameFirstLetter("Hx".into())
+        )
+    );
+    assert_eq!(
+        hy.to_string(),
+        "'Hy' is read as the product H y, though the declared name Hx differs from it in its \
+         last letter alone: declare 'Hy' if it is a name of its own, or write 'H y' for the \
+         product"
+    );
+    let [lx] = &noted("Lx")[..] else { panic!() };
+    assert_eq!(lx.doubt, Doubt::SameFirstLetter("Ly".into()));
+    for src in ["xy + Mω + Hp_x + HLy", "Lp_x + xLy"] {
+        assert_eq!(noted(src), [], "{src}");
+    }
+    // With no declared name of two letters, `Lx` and `Hy` are products.
+    let alone = Functions(vec![("Hxx", p("p_x^2/2"))]);
+    let (_, noted) = G::parse_noting(&vars, "Lx + Hy + xy + Mω", &alone).unwrap();
+    assert_eq!(noted, []);
 }
