@@ -326,11 +326,14 @@ impl Subject {
     /// from the file or `--system NAME` (`builtin`), with the hint naming the flag (then the
     /// file's `[limits]`), the engine's message naming no setting; else said after `doing`.
     pub fn refused(&self, builtin: Option<&str>, doing: &str, e: EngineError) -> anyhow::Error {
-        let (origin, file) = match self {
-            Subject::File(f) => (f.source().origin.clone(), true),
-            Subject::Builtin(..) => (format!("--system {}", builtin.unwrap_or_default()), false),
+        let (origin, given) = match self {
+            Subject::File(f) => (f.source().origin.clone(), Given::CommandLineAboutFile),
+            Subject::Builtin(..) => (
+                format!("--system {}", builtin.unwrap_or_default()),
+                Given::CommandLineAboutBuiltIn,
+            ),
         };
-        match FileError::limit_on_command_line(&origin, file, doing, &e) {
+        match FileError::limit_on_command_line(&origin, given, doing, &e) {
             Some(limited) => limited.into(),
             None => anyhow::Error::from(e).context(doing.to_string()),
         }

@@ -264,21 +264,22 @@ impl FileError {
     /// The error of a computation that the command line asked of a system, `doing`
     /// (`searching for integrals`), where a limit stopped it, `e` ([`EngineError::limit`]):
     /// of kind [`ErrorKind::Limit`], from `origin` (the system file as given, or `--system
-    /// NAME`), said after `doing`, with the hint that names the command line's flag (then the
-    /// file's `[limits]`, for a system file, `file`), as a text's limit on the command line
-    /// has; the engine's message names no setting, knowing not who set the limit. `None`
-    /// where no limit stopped it.
+    /// NAME`), said after `doing`, with the hint that names the setting that raises it for
+    /// the text's giver, `given` (the command line's flag, then a system file's `[limits]`),
+    /// as a text's limit on the command line has; the engine's message names no setting,
+    /// knowing not who set the limit. `None` where no limit stopped it.
     ///
     /// ```
     /// use superint::brackets::{EngineError, EngineLimit};
-    /// use superint::system_file::{ErrorKind, FileError};
+    /// use superint::system_file::{ErrorKind, FileError, Given};
     ///
     /// let e = EngineError::PastLimit {
     ///     which: EngineLimit::SearchProducts,
     ///     limit: 9,
     ///     message: "more than 9 products of integrals".into(),
     /// };
-    /// let err = FileError::limit_on_command_line("mine.toml", true, "searching", &e).unwrap();
+    /// let given = Given::CommandLineAboutFile;
+    /// let err = FileError::limit_on_command_line("mine.toml", given, "searching", &e).unwrap();
     /// assert_eq!(err.kind, ErrorKind::Limit);
     /// assert_eq!(
     ///     err.to_string(),
@@ -286,24 +287,24 @@ impl FileError {
     ///      the time, raise the limit with --max-products N"
     /// );
     /// let e = EngineError::Invalid("no".into());
-    /// assert!(FileError::limit_on_command_line("--system harmonic", false, "searching", &e)
+    /// let given = Given::CommandLineAboutBuiltIn;
+    /// assert!(FileError::limit_on_command_line("--system harmonic", given, "searching", &e)
     ///     .is_none());
     /// ```
     ///
     /// [`EngineError::limit`]: brackets::EngineError::limit
     pub fn limit_on_command_line(
         origin: &str,
-        file: bool,
+        given: Given,
         doing: &str,
         e: &brackets::EngineError,
     ) -> Option<FileError> {
         Limit::of_engine(e)?;
-        let settings = LimitSettings::of(match file {
-            true => Given::CommandLineAboutFile,
-            false => Given::CommandLineAboutBuiltIn,
-        });
         let message = format!("{doing}: {e}");
-        Some(FileError::new(ErrorKind::Engine, origin, message).limited_by(e, settings))
+        Some(
+            FileError::new(ErrorKind::Engine, origin, message)
+                .limited_by(e, LimitSettings::of(given)),
+        )
     }
 
     /// The same error, of kind [`ErrorKind::Limit`] with the hint in `settings` where its
