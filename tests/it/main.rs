@@ -49,6 +49,16 @@ macro_rules! identity {
     };
 }
 
+/// The brackets of so(3)* as a system file's `[poisson]` table declares them, `{M1, M2} = M3`
+/// and cyclically (`{M3, M1} = M2` the table's last line), for a file whose `[phase_space]`
+/// has `variables = ["M1", "M2", "M3"]`: a literal, so that a file's text built with it,
+/// `concat!(…, so3_poisson!(), …)`, stays one.
+macro_rules! so3_poisson {
+    () => {
+        "[poisson]\n\"{M1, M2}\" = \"M3\"\n\"{M2, M3}\" = \"M1\"\n\"{M3, M1}\" = \"M2\"\n"
+    };
+}
+
 /// The proved arm of [`identity!`].
 #[track_caller]
 pub fn assert_proved(system: &System, identity: &str, when: Option<&Condition>) {

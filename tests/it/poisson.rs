@@ -658,18 +658,17 @@ fn tower_of_the_symmetric_top() {
     let file = crate::scratch_text(
         "poisson-tower",
         "symmetric.toml",
-        r#"name = "symmetric top"
+        concat!(
+            r#"name = "symmetric top"
 hamiltonian = "(M1^2 + M2^2)/(2*A) + M3^2/(2*C)"
 
 [phase_space]
 variables = ["M1", "M2", "M3"]
 parameters = ["A", "C"]
 
-[poisson]
-"{M1, M2}" = "M3"
-"{M2, M3}" = "M1"
-"{M3, M1}" = "M2"
-
+"#,
+            so3_poisson!(),
+            r#"
 [[function]]
 name = "xi"
 value = "M1 + i*M2"
@@ -678,7 +677,8 @@ value = "M1 + i*M2"
 name = "K"
 value = "xi^m*M3^n"
 eigenvalue = "-i*m*(1/A - 1/C)*M3"
-"#,
+"#
+        ),
     );
     let o = superint(&["tower", "--system", file.to_str().unwrap(), "--max", "3"]);
     assert_eq!(o.status.code(), Some(0), "{}", text(&o.stderr));

@@ -670,8 +670,10 @@ id = "ladder"
 claim = "{A, H} = i*omega*A"
 "#;
 
-/// so(3)* beside a canonical pair: the Poisson variables' bad inputs replace line 12.
-const TOP: &str = r#"name = "top"
+/// so(3)* beside a canonical pair: the Poisson variables' bad inputs replace line 12, the
+/// last of its brackets (`{M3, M1} = M2`).
+const TOP: &str = concat!(
+    r#"name = "top"
 hamiltonian = "M1^2/2 + M2^2/2 + M3^2 + p_x^2/2"
 
 [phase_space]
@@ -679,14 +681,13 @@ coordinates = ["x"]
 variables = ["M1", "M2", "M3"]
 parameters = ["a"]
 
-[poisson]
-"{M1, M2}" = "M3"
-"{M2, M3}" = "M1"
-"{M3, M1}" = "M2"
-
+"#,
+    so3_poisson!(),
+    r#"
 [[claim]]
 claim = "{M1^2 + M2^2 + M3^2, H} = 0"
-"#;
+"#
+);
 
 fn top_with(line_12: &str) -> Vec<u8> {
     TOP.replacen("\"{M3, M1}\" = \"M2\"", line_12, 1)
@@ -5093,12 +5094,14 @@ fn a_residual_is_written_in_the_functions_where_the_parameters_at_one_are_specia
     let dir = scratch("special-parameters");
     std::fs::write(
         dir.join("top.toml"),
-        "hamiltonian = \"M1^2/(2*I1) + M2^2/(2*I2) + M3^2/(2*I3)\"\n\
-         [phase_space]\nvariables = [\"M1\", \"M2\", \"M3\"]\nparameters = [\"I1\", \"I2\", \"I3\"]\n\
-         [poisson]\n\"{M1, M2}\" = \"M3\"\n\"{M2, M3}\" = \"M1\"\n\"{M3, M1}\" = \"M2\"\n\
-         [[function]]\nname = \"C\"\nvalue = \"M1^2 + M2^2 + M3^2\"\n\
-         [[claim]]\nclaim = \"C^2 = 0\"\nexpect = \"refuted\"\n\
-         [[claim]]\nclaim = \"C + H = 0\"\nexpect = \"refuted\"\n",
+        concat!(
+            "hamiltonian = \"M1^2/(2*I1) + M2^2/(2*I2) + M3^2/(2*I3)\"\n\
+             [phase_space]\nvariables = [\"M1\", \"M2\", \"M3\"]\nparameters = [\"I1\", \"I2\", \"I3\"]\n",
+            so3_poisson!(),
+            "[[function]]\nname = \"C\"\nvalue = \"M1^2 + M2^2 + M3^2\"\n\
+             [[claim]]\nclaim = \"C^2 = 0\"\nexpect = \"refuted\"\n\
+             [[claim]]\nclaim = \"C + H = 0\"\nexpect = \"refuted\"\n",
+        ),
     )
     .expect("write the file");
     std::fs::write(
