@@ -108,10 +108,11 @@ pub enum Doubt {
     /// `A_xx` (read `A·x·x`), `Ayx` beside `Axy`. A name that is one of the pieces (`omegax`,
     /// one letter more than `omega`) is a product as written.
     CloseTo(String),
-    /// The name is two one-letter names run together, and a declared name of two letters
+    /// The name is two one-letter names run together, and a named function of two letters
     /// differs from it in its last letter alone: `Hy` beside a function `Hx` (read `H·y`),
-    /// `Lx` beside `Ly`, likely a name of the same set that was not declared. `xy`, `Mω` and
-    /// `Lx` beside a function `L`, with no such name declared, are products.
+    /// `Lx` beside `Ly`, likely a function of the same set that was not declared. `xy`, `Mω`,
+    /// `Lx` beside a function `L` with no such function declared, and `mx` beside a parameter
+    /// `mu`, are products.
     SameFirstLetter(String),
     /// A letter is doubled across two pieces, the first of two characters or more: `omegaa`
     /// as `omega·a`, `p_xx` as `p_x·x`, which may be a key struck twice (`xx`, `ωω`, of
@@ -137,7 +138,7 @@ impl RunTogether {
         if let Some(k) = did_you_mean(name, known).filter(|k| !pieces.iter().any(|p| p == k)) {
             return Some(Doubt::CloseTo(k.to_string()));
         }
-        if let Some(k) = same_first_letter(name, known) {
+        if let Some(k) = same_first_letter(name, known, function) {
             return Some(Doubt::SameFirstLetter(k.to_string()));
         }
         pieces.windows(2).find_map(|pair| {
@@ -197,10 +198,15 @@ impl RunTogether {
     }
 }
 
-/// The first of `known` that is two letters, the first of them `name`'s, where `name` is two
-/// letters (read as two one-letter names, [`Doubt::SameFirstLetter`]): `Hx` for `Hy`; else
-/// nothing.
-fn same_first_letter<'k>(name: &str, known: &'k [String]) -> Option<&'k str> {
+/// The first named function of `known` that is two letters, the first of them `name`'s, where
+/// `name` is two letters (read as two one-letter names, [`Doubt::SameFirstLetter`]): `Hx` for
+/// `Hy`; else nothing. A variable or parameter (`mu` beside `mx`) is not such a name: a set of
+/// functions (`Hx`, `Hy`; `Lx`, `Ly`) is what one forgets a member of.
+fn same_first_letter<'k>(
+    name: &str,
+    known: &'k [String],
+    function: &dyn Fn(&str) -> bool,
+) -> Option<&'k str> {
     let two_letters = |s: &str| {
         let mut letters = s.chars();
         match (letters.next(), letters.next(), letters.next()) {
@@ -212,7 +218,7 @@ fn same_first_letter<'k>(name: &str, known: &'k [String]) -> Option<&'k str> {
     known
         .iter()
         .map(String::as_str)
-        .find(|&k| k != name && two_letters(k) == Some(first))
+        .find(|&k| k != name && two_letters(k) == Some(first) && function(k))
 }
 
 impl std::fmt::Display for RunTogether {

@@ -236,4 +236,8 @@ fn two_letters_beside_a_declared_name_of_the_same_first_are_noted() {
     let alone = Functions(vec![("Hxx", p("p_x^2/2"))]);
     let (_, noted) = G::parse_noting(&vars, "Lx + Hy + xy + Mω", &alone).unwrap();
     assert_eq!(noted, []);
+    // A parameter of two letters is no function of a set: `mx` beside `m` and `mu` is `m·x`.
+    let masses = plane_with(&["m", "mu"]);
+    let (_, noted) = G::parse_noting(&masses, "mx + my + mu x", &beside).unwrap();
+    assert_eq!(noted, []);
 }
