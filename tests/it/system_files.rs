@@ -1558,6 +1558,18 @@ fn bad_inputs() -> Vec<(&'static str, Vec<u8>, &'static str, Vec<&'static str>)>
             check.clone(),
         ),
         (
+            // One value divides by what another sets to 0: it was "division by zero" at the
+            // other's value, saying neither what nor where.
+            "condition whose value divides by zero",
+            base_with(
+                "claim = \"{A, H} = i*omega*A\"",
+                "when = \"M = 0, omega = 1/M\"\nclaim = \"{x, H} = p_x\"",
+            ),
+            "bad.toml:14:24: the condition sets M = 0, but the value of ω divides by M: give ω \
+             a value defined there, or leave M free",
+            check.clone(),
+        ),
+        (
             "claim with an unclosed brace",
             base_with("{A, H} = i*omega*A", "{A, H = i*omega*A"),
             "bad.toml:14:10: this '{' is never closed",
@@ -3208,6 +3220,11 @@ fn arguments_are_read_before_any_is_expanded() {
         (
             vec!["expand", f, "x/M", "--when", "M = 0"],
             "the condition sets M = 0, but the expression divides by M",
+        ),
+        // And so is one whose own value divides by what another value sets to 0.
+        (
+            vec!["expand", f, "x", "--when", "M = 0, omega = 1/M"],
+            "<command line>:1:16: the condition sets M = 0, but the value of ω divides by M",
         ),
         (
             vec!["expand", f, big, "L - "],

@@ -229,6 +229,9 @@ impl Condition {
             if let Some((v, _)) = subs.iter().find(|(v, e)| e.contains(*v)) {
                 return Err(circular(*v, &subs));
             }
+            if let Some(refusal) = value_divides_by_zero(&subs) {
+                return Err(refusal);
+            }
             if !subs.iter().any(|(_, e)| sets(e, &subs)) {
                 return Ok(Condition {
                     text: text.to_string(),
@@ -537,6 +540,24 @@ fn circular(v: Var, subs: &[(Var, Expr)]) -> EngineError {
              variables it sets): a condition is a substitution, so give {name} a value free of them"
         ),
     )
+}
+
+/// The refusal of a condition one of whose values divides by a variable that another of its
+/// values sets to zero (`γ3 = 0, M3 = M1/γ3`): that value has none there, which substituting
+/// it would find only as a "division by zero" at no place. `None` where no value does.
+fn value_divides_by_zero(subs: &[(Var, Expr)]) -> Option<EngineError> {
+    subs.iter().find_map(|(v, value)| {
+        let zero = Condition::sets_a_divisor_to_zero(subs, value)?;
+        let vars = value.vars();
+        let (name, divisor) = (vars.variable(*v).unicode(), vars.variable(zero).unicode());
+        Some(refused(
+            *v,
+            format!(
+                "the condition sets {divisor} = 0, but the value of {name} divides by \
+                 {divisor}: give {name} a value defined there, or leave {divisor} free"
+            ),
+        ))
+    })
 }
 
 /// A condition refused for what it does to `v`.
