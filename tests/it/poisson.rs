@@ -195,6 +195,35 @@ fn library_api_refuses_what_is_not_a_poisson_structure() {
     }
 }
 
+/// e(3)* with a wrong value in its last bracket: the violation is shown there, at the last
+/// bracket the triple's identity depends on, not at a right one above it whose partners
+/// follow (it was `{M3, γ1} = γ2`, where the brackets up to it already break the identity of
+/// `M1, M2, γ1` for want of the others).
+#[test]
+fn a_jacobi_violation_is_shown_at_the_wrong_bracket_not_at_one_whose_partners_follow() {
+    let e3 = "name = \"top\"\nhamiltonian = \"M1^2 + M2^2 + M3^2\"\n[phase_space]\n\
+              variables = [\"M1\", \"M2\", \"M3\", \"g1\", \"g2\", \"g3\"]\n[poisson]\n\
+              \"{M1, M2}\" = \"M3\"\n\"{M2, M3}\" = \"M1\"\n\"{M3, M1}\" = \"M2\"\n\
+              \"{M1, g2}\" = \"g3\"\n\"{M2, g3}\" = \"g1\"\n\"{M3, g1}\" = \"g2\"\n\
+              \"{g1, M2}\" = \"g3\"\n\"{g2, M3}\" = \"g1\"\n\"{g3, M1}\" = \"g2\"\n";
+    let right = crate::scratch_text("jacobi-place", "right.toml", e3);
+    let o = superint(&["check", right.to_str().expect("a UTF-8 path")]);
+    assert_eq!(o.status.code(), Some(0), "{}", text(&o.stderr));
+    // The sign of the last one turned.
+    let wrong = e3.replace("\"{g3, M1}\" = \"g2\"", "\"{g3, M1}\" = \"-g2\"");
+    let path = crate::scratch_text("jacobi-place", "wrong.toml", &wrong);
+    let o = superint(&["check", path.to_str().expect("a UTF-8 path")]);
+    assert_eq!(o.status.code(), Some(2));
+    let stderr = text(&o.stderr);
+    assert!(
+        stderr.contains(
+            "wrong.toml:14:1: the declared brackets break the Jacobi identity: {M1, {M2, g1}} + \
+             {M2, {g1, M1}} + {g1, {M1, M2}} = −2 g2, not 0\n 14 | \"{g3, M1}\" = \"-g2\""
+        ),
+        "{stderr}"
+    );
+}
+
 /// Long declared brackets that break the Jacobi identity: the message names the triple and
 /// the entry, and shows the residual in part with its size (in full it was 1.2 MB); the
 /// violation keeps the whole residual. A long value that is not real is shown so too.
@@ -212,7 +241,7 @@ fn a_long_jacobi_violation_is_said_in_part() {
     let first = stderr.lines().next().unwrap_or_default();
     assert!(
         first.contains(
-            "j.toml:7:1: the declared brackets break the Jacobi identity: {M1, {M2, M3}} + \
+            "j.toml:8:1: the declared brackets break the Jacobi identity: {M1, {M2, M3}} + \
              {M2, {M3, M1}} + {M3, {M1, M2}} = −75 M1⁴⁹ "
         ) && first.ends_with(" + … (a polynomial of 22099 terms), not 0"),
         "{stderr}"
@@ -249,7 +278,8 @@ fn a_long_jacobi_violation_is_said_in_part() {
         panic!("Jacobi is broken");
     };
     assert_eq!(violation.residual.len(), 22099);
-    assert_eq!(violation.bracket, 1);
+    // The last bracket the identity depends on: each of the three does.
+    assert_eq!(violation.bracket, 2);
     assert!(violation.message.len() < 400, "{}", violation.message);
     let unreal = [("M1", "M2", e("i*(M1 + M2 + M3 + 1)^25"))];
     let message = space.with_brackets(&unreal).unwrap_err().to_string();

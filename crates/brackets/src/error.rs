@@ -166,8 +166,8 @@ pub struct JacobiViolation {
     /// The identity and its residual, in words.
     pub message: String,
     /// The place, in the list given to [`PhaseSpace::with_brackets`](crate::PhaseSpace::with_brackets),
-    /// of the first bracket with which, added to those before it, the identity of the
-    /// triple fails: where a file shows the violation.
+    /// of the last bracket that the identity of the triple depends on (whose leaving out,
+    /// with those after it, changes the residual): where a file shows the violation.
     pub bracket: usize,
 }
 

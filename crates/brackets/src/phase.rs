@@ -409,28 +409,34 @@ impl PhaseSpace {
         self.declare_atoms()?;
         match self.check_jacobi() {
             Err(EngineError::Jacobi(mut violation)) => {
-                violation.bracket = places[self.first_breaking(violation.triple)?];
+                let last = self.last_depended_on(violation.triple, &violation.residual)?;
+                violation.bracket = places[last];
                 Err(EngineError::Jacobi(violation))
             }
             checked => checked.map(|()| self),
         }
     }
 
-    /// The first of the given brackets with which, added to those before it, the Jacobi
-    /// identity of `triple` fails: where a file shows the violation (the place of a wrong
-    /// value, or of one whose partners are missing). The identity fails with all of them.
-    fn first_breaking(&self, triple: [Var; 3]) -> Result<usize, EngineError> {
-        for k in 1..self.given {
+    /// The last of the given brackets that the Jacobi identity of `triple`, whose residual
+    /// with all of them is `residual`, depends on: the last whose leaving out, with those
+    /// after it, changes the residual. That is where a file shows the violation: the place
+    /// of a wrong value, or of one whose partners are missing, and not that of a right one
+    /// above it whose partners follow (e(3)*'s `{M3, γ1} = γ2` above a wrong `{γ3, M1}`,
+    /// where the brackets up to the right one already break the identity, for want of the
+    /// rest).
+    fn last_depended_on(&self, triple: [Var; 3], residual: &Expr) -> Result<usize, EngineError> {
+        for k in (1..self.given).rev() {
             let mut first = self.clone();
             first.declared.truncate(k);
             first.given = k;
             first.update_involved();
             first.declare_atoms()?;
-            if !first.jacobiator(triple)?.vanishes()? {
-                return Ok(k - 1);
+            let without = first.jacobiator(triple)?;
+            if !without.checked_sub(residual)?.vanishes()? {
+                return Ok(k);
             }
         }
-        Ok(self.given - 1)
+        Ok(0)
     }
 
     /// `{a, {b, c}} + {b, {c, a}} + {c, {a, b}}`.
