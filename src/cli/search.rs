@@ -176,6 +176,11 @@ impl SearchArgs {
             .iter()
             .filter(|p| vars.variable(p.q).kind() == VarKind::Angle)
             .count();
+        // A top on e(3)* has no coordinates at all, a rotor in no potential only angles.
+        let no_coordinates = match angles {
+            0 => "no coordinates",
+            _ => "no coordinates other than angles",
+        };
         let options: [(&str, bool, &str); 7] = [
             (
                 "--momenta-degree",
@@ -185,12 +190,12 @@ impl SearchArgs {
             (
                 "--positions-degree",
                 self.positions_degree.is_some_and(|d| d > 0) && pairs.len() == angles,
-                "no coordinates other than angles",
+                no_coordinates,
             ),
             (
                 "--laurent",
                 self.laurent && pairs.len() == angles,
-                "no coordinates other than angles",
+                no_coordinates,
             ),
             (
                 "--trig-degree",

@@ -4371,6 +4371,16 @@ fn a_degree_for_variables_the_system_lacks_is_refused() {
             vec!["systems/kepler.toml", "--radicals-degree", "2"],
             "--radicals-degree: the Kepler problem has no radicals",
         ),
+        // No coordinates at all: it said "no coordinates other than angles" of a top, which
+        // has no angles either.
+        (
+            vec!["systems/euler-top.toml", "--laurent"],
+            "--laurent: the Euler top has no coordinates, so it would bound nothing",
+        ),
+        (
+            vec!["systems/euler-top.toml", "--positions-degree", "2"],
+            "--positions-degree: the Euler top has no coordinates, so it would bound nothing",
+        ),
     ];
     for (args, message) in refused {
         let out = superint(&[&["search"], &args[..]].concat());
