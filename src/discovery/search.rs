@@ -426,15 +426,18 @@ fn dependent_monomials_text(r: &SearchResult) -> String {
 }
 
 /// The sentence that an angle's momentum that the condition fixes is left out of the space
-/// (so is a Poisson variable it fixes), or nothing.
+/// (so is a Poisson variable it fixes), or nothing; of one it sets to a function of the others
+/// (`M3 = −(M1 γ1 + M2 γ2)/γ3`), that they are the variables of the surface it describes.
 fn left_out_text(r: &SearchResult) -> String {
-    let left_out: Vec<String> = r
-        .variables
-        .left_out
-        .iter()
-        .map(|p| format!("`{}`", r.vars.variable(*p).unicode()))
-        .collect();
-    match left_out.as_slice() {
+    let names = |as_functions: bool| -> Vec<String> {
+        r.variables
+            .left_out
+            .iter()
+            .filter(|p| r.variables.left_out_as_functions.contains(p) == as_functions)
+            .map(|p| format!("`{}`", r.vars.variable(*p).unicode()))
+            .collect()
+    };
+    let constants = match names(false).as_slice() {
         [] => String::new(),
         [p] => format!(
             " {p} is left out: the condition fixes it, and every function of it is an integral."
@@ -444,7 +447,20 @@ fn left_out_text(r: &SearchResult) -> String {
              integral.",
             ps.join(", ")
         ),
-    }
+    };
+    let functions = match names(true).as_slice() {
+        [] => String::new(),
+        [p] => format!(
+            " {p} is left out: the condition sets it to a function of the other variables, \
+             and the space's functions are functions of those, on the surface it describes."
+        ),
+        ps => format!(
+            " {} are left out: the condition sets them to functions of the other variables, \
+             and the space's functions are functions of those, on the surface it describes.",
+            ps.join(", ")
+        ),
+    };
+    constants + &functions
 }
 
 /// ` By degree in the momenta: ≤ 0: 1, ≤ 1: 6.`, `dims[j]` integrals of degree `≤ j` (`what`:

@@ -728,3 +728,32 @@ eigenvalue = "-i*m*(1/A - 1/C)*M3"
         "{xi, H} = i*(1/A - 1/C)*M3*xi" => refuted "-2*i*(1/A - 1/C)*M3*xi"
     );
 }
+
+/// A condition that sets a Poisson variable to a function of the others, here the
+/// Kovalevskaya top on the level set `M·γ = 0` of its area integral, leaves it out of the
+/// search's space as the surface's graph, not as a constant: the report said "every function
+/// of it is an integral", which `M3 = −(M1 γ1 + M2 γ2)/γ3` is not.
+#[test]
+fn a_poisson_variable_set_to_a_function_is_left_out_as_no_constant() {
+    let out = superint(&[
+        "search",
+        "systems/kovalevskaya-top.toml",
+        "--poisson-degree",
+        "2",
+        "--when",
+        "M3 = -(M1*gamma1 + M2*gamma2)/gamma3",
+        "--no-timings",
+    ]);
+    assert_eq!(out.status.code(), Some(0), "{}", text(&out.stderr));
+    let flat = text(&out.stdout)
+        .split_whitespace()
+        .collect::<Vec<_>>()
+        .join(" ");
+    assert!(
+        flat.contains(
+            "M3 is left out: the condition sets it to a function of the other variables, and \
+             the space's functions are functions of those, on the surface it describes."
+        ) && !flat.contains("every function of it is an integral"),
+        "{flat}"
+    );
+}

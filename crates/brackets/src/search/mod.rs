@@ -7,7 +7,7 @@
 //! `M₁, M₂, M₃` of so(3)*) of total degree `≤ P`, and trigonometric order `Σ|k| ≤ K` in the
 //! angles. An angle's momentum or a Poisson variable that the condition fixes is left out: on a
 //! resonance surface `p_θ = mIω/n` it is a constant, and every function of it is an integral
-//! ([`SpaceVariables`]). The images `{φ, H}` are the bracket's, declared brackets included: for
+//! ([`SpaceVariables`]); set to a function of the others, they parametrise the surface. The images `{φ, H}` are the bracket's, declared brackets included: for
 //! each phase variable `v`, `∂φ/∂v` times `{v, H}` (after the condition), formed once.
 //!
 //! The unknowns are the real coefficients of that basis, so the equations `{F, H} = 0` (after the

@@ -182,8 +182,15 @@ fn space_variables(system: &System, condition: Option<&[(Var, Expr)]>) -> SpaceV
     // An angle's momentum that the condition fixes (`p_θ = mIω/n`) is a constant there:
     // every function of it is an integral, so it is left out, and so is a Poisson variable
     // that the condition fixes (the flow keeps it, or the condition is refused). Any other
-    // momentum counts.
-    let fixed = |v: Var| condition.into_iter().flatten().any(|(w, _)| *w == v);
+    // momentum counts. One set to a function of other phase variables (`M₃ = −(M₁γ₁ +
+    // M₂γ₂)/γ₃`) is left out too, the others parametrising the surface, but is no constant.
+    let value = |v: Var| {
+        condition
+            .into_iter()
+            .flatten()
+            .find_map(|(w, value)| (*w == v).then_some(value))
+    };
+    let fixed = |v: Var| value(v).is_some();
     let (mut momenta, mut left_out) = (Vec::new(), Vec::new());
     for pair in pairs {
         if vars.variable(pair.q).kind() == VarKind::Angle && fixed(pair.p) {
@@ -199,12 +206,22 @@ fn space_variables(system: &System, condition: Option<&[(Var, Expr)]>) -> SpaceV
             false => poisson.push(v),
         }
     }
+    let of_phase_space = |value: &Expr| {
+        vars.vars()
+            .any(|w| vars.variable(w).kind() != VarKind::Parameter && value.contains(w))
+    };
+    let left_out_as_functions = left_out
+        .iter()
+        .copied()
+        .filter(|&v| value(v).is_some_and(of_phase_space))
+        .collect();
     SpaceVariables {
         coordinates: variables_of_kind(VarKind::Coordinate),
         momenta,
         poisson,
         angles: variables_of_kind(VarKind::Angle),
         left_out,
+        left_out_as_functions,
     }
 }
 

@@ -269,7 +269,8 @@ impl SearchResult {
 /// The variables of a search's space: monomials in the coordinates, in the momenta and in the
 /// Poisson variables, times `cos k·θ`, `sin k·θ` in the angles. Every momentum and Poisson
 /// variable of the phase space is among them but an angle's momentum or a Poisson variable that
-/// the condition fixes (`p_θ = mIω/n`, `M₃ = 1` where the flow keeps `M₃`), a constant there.
+/// the condition fixes (`p_θ = mIω/n`, `M₃ = 1` where the flow keeps `M₃`), a constant there,
+/// or sets to a function of the others, which parametrise the surface it describes.
 #[derive(Clone, Debug, PartialEq, Eq)]
 #[non_exhaustive]
 pub struct SpaceVariables {
@@ -283,6 +284,11 @@ pub struct SpaceVariables {
     pub angles: Vec<Var>,
     /// The angles' momenta and the Poisson variables that the condition fixes, left out.
     pub left_out: Vec<Var>,
+    /// Those of `left_out` that the condition sets to a function of other phase variables,
+    /// not to a constant (`M₃ = −(M₁γ₁ + M₂γ₂)/γ₃`, the level set of e(3)*'s area integral
+    /// `M·γ = 0`): there the space's functions are those of the others, and a function of
+    /// such a variable is no integral for being one.
+    pub left_out_as_functions: Vec<Var>,
 }
 
 /// Fixed values of parameters as they read, `M = 1, ω = 1` (in `Style::Ascii`, with the ASCII
