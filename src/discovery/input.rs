@@ -282,7 +282,7 @@ pub fn parse_condition(
                 .map_or_else(String::new, |n| trigpoly::did_you_mean_hint(n, &settable));
             return Err(refuse(
                 name_span,
-                no_variable(&CONDITION_FORM, name, &meant),
+                no_variable(&CONDITION_FORM, system, name, &meant),
             ));
         };
         // An angle, refused at its name as a file's condition refuses it.

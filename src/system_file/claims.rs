@@ -428,6 +428,7 @@ pub const CONDITION_USAGE: &str =
 pub(crate) const CONDITION_FORM: AssignmentForm<'static> = AssignmentForm {
     what: "a condition",
     kinds: "a coordinate, a momentum or a parameter",
+    kinds_with_poisson: "a coordinate, a momentum, a Poisson variable or a parameter",
     usage: CONDITION_USAGE,
     decimals: false,
     pi: false,
@@ -521,6 +522,9 @@ pub(crate) struct AssignmentForm<'a> {
     pub what: &'a str,
     /// What its left side may name: `a coordinate, a momentum or a parameter`.
     pub kinds: &'a str,
+    /// What it may name in a system with Poisson variables, which `kinds` leaves out: `a
+    /// coordinate, a momentum, a Poisson variable or a parameter`.
+    pub kinds_with_poisson: &'a str,
     /// How one reads, with an example.
     pub usage: &'a str,
     /// Whether a right side may be a decimal number (`0.25`, `−1.5`, `2.5e-3`), read as the
@@ -720,11 +724,20 @@ pub(crate) fn assignment_sides(
 /// The refusal of a left side, `typed`, that names no variable `form` may set, `meant` a
 /// suggestion or nothing: `the left side of a condition is one declared variable (a
 /// coordinate, a momentum or a parameter), found 'q'`; a file's and a built-in system's alike.
-pub(crate) fn no_variable(form: &AssignmentForm<'_>, typed: &str, meant: &str) -> String {
+/// The kinds named are `form`'s with the Poisson variables where `system` has them.
+pub(crate) fn no_variable(
+    form: &AssignmentForm<'_>,
+    system: &brackets::System,
+    typed: &str,
+    meant: &str,
+) -> String {
+    let kinds = match system.space().poisson_variables().is_empty() {
+        true => form.kinds,
+        false => form.kinds_with_poisson,
+    };
     format!(
-        "the left side of {} is one declared variable ({}), found {}{meant}",
+        "the left side of {} is one declared variable ({kinds}), found {}{meant}",
         form.what,
-        form.kinds,
         trigpoly::quoted_name(typed)
     )
 }
@@ -782,7 +795,8 @@ impl AssignmentReader<'_> {
                 ExprKind::Name(n) => trigpoly::did_you_mean_hint(n, &settable),
                 _ => String::new(),
             };
-            return refuse(no_variable(self.form, lhs.value.trim(), &meant));
+            let system = &self.file.system;
+            return refuse(no_variable(self.form, system, lhs.value.trim(), &meant));
         };
         if let Some(why) = admit(var) {
             return refuse(why);

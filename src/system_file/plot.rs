@@ -197,6 +197,7 @@ impl LoadedSystem {
         let form = AssignmentForm {
             what: "a value of --at",
             kinds: "a parameter",
+            kinds_with_poisson: "a parameter",
             usage: "--at reads `parameter = number, …`, such as \"M = 1, omega = 3/2\"",
             decimals: true,
             pi: false,
@@ -241,6 +242,7 @@ impl LoadedSystem {
         let form = AssignmentForm {
             what: "a value of --from",
             kinds: "a coordinate, an angle or a momentum",
+            kinds_with_poisson: "a coordinate, an angle, a momentum or a Poisson variable",
             usage: "--from reads `variable = value, …`, such as \"x = 1, p_y = 1/2\"",
             decimals: true,
             pi: true,

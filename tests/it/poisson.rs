@@ -757,3 +757,43 @@ fn a_poisson_variable_set_to_a_function_is_left_out_as_no_constant() {
         "{flat}"
     );
 }
+
+/// A condition's or a starting point's left side that names no variable lists the kinds it may
+/// name, with the Poisson variables on a top, which has nothing else to set: it listed "a
+/// coordinate, a momentum or a parameter" (for `--from`, "a coordinate, an angle or a
+/// momentum"), none of which a top on e(3)* has but its parameter.
+#[test]
+fn a_left_side_that_names_no_variable_lists_the_poisson_variables_on_a_top() {
+    let f = "systems/kovalevskaya-top.toml";
+    for (args, message) in [
+        (
+            vec!["bracket", f, "M1", "H", "--when", "gama3 = 0"],
+            "<command line>:1:1: the left side of a condition is one declared variable (a \
+             coordinate, a momentum, a Poisson variable or a parameter), found 'gama3'; did \
+             you mean 'gamma3'?",
+        ),
+        (
+            vec![
+                "plot",
+                f,
+                "M1",
+                "--at",
+                "c = 1",
+                "--time",
+                "1",
+                "-o",
+                "-",
+                "--from",
+                "M1 = 1, M2 = 0, M3 = 0, gamma1 = 0, gamma2 = 0, gama3 = 1",
+            ],
+            "<command line>:1:49: the left side of a value of --from is one declared variable \
+             (a coordinate, an angle, a momentum or a Poisson variable), found 'gama3'; did you \
+             mean 'gamma3'?",
+        ),
+    ] {
+        let out = superint(&args);
+        let stderr = text(&out.stderr);
+        assert_eq!(out.status.code(), Some(2), "{args:?}: {stderr}");
+        assert!(stderr.contains(message), "{args:?}: {stderr}");
+    }
+}
