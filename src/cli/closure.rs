@@ -236,7 +236,12 @@ fn close(a: &ClosureArgs, names: &[String], subject: &Subject) -> anyhow::Result
         // already (raise the limit, or lower --degree; or, past every limit, only the latter).
         Some(EngineLimit::Ring(_)) => anyhow::Error::new(e).context("computing the closure"),
         // The closure's own limit, whose engine's message names no setting: the hint does.
-        _ => subject.refused(a.builtin.system.as_deref(), "computing the closure", e),
+        _ => subject.refused(
+            a.builtin.system.as_deref(),
+            "computing the closure",
+            a.when.as_deref(),
+            e,
+        ),
     })?;
     Ok(subject.tag(report))
 }

@@ -11,7 +11,7 @@ use brackets::{EngineError, System};
 use clap::Args;
 use superint::discovery::{
     builtin_system, builtin_system_refused, command_line_search_report, parse_condition,
-    parse_fixed, parse_known, parse_symbolic, ListRefusal,
+    parse_condition_checked, parse_fixed, parse_known, parse_symbolic, ListRefusal,
 };
 use superint::render::{render, Format};
 use superint::report::{with_article, Report};
@@ -330,7 +330,18 @@ impl Subject {
     /// integrals`), that the engine refused, `e`: where a limit stopped it, of kind `limit`
     /// from the file or `--system NAME` (`builtin`), with the hint naming the flag (then the
     /// file's `[limits]`), the engine's message naming no setting; else said after `doing`.
-    pub fn refused(&self, builtin: Option<&str>, doing: &str, e: EngineError) -> anyhow::Error {
+    pub fn refused(
+        &self,
+        builtin: Option<&str>,
+        doing: &str,
+        when: Option<&str>,
+        e: EngineError,
+    ) -> anyhow::Error {
+        // A refusal of the condition (it sets to 0 what the Hamiltonian or a generator divides
+        // by) at its variable's value in --when, as the reading's own refusals are shown.
+        if let Some(placed) = self.condition_refusal(when, &e) {
+            return placed.into();
+        }
         let (origin, given) = match self {
             Subject::File(f) => (f.source().origin.clone(), Given::CommandLineAboutFile),
             Subject::Builtin(..) => (
@@ -496,6 +507,34 @@ impl Subject {
         }
     }
 
+    /// `e`, where it is a refusal of the condition read from `when`
+    /// ([`EngineError::RefusedCondition`], which a computation under it met), placed in
+    /// `when` at the value of the variable it is about, as [`Subject::condition`] places its
+    /// own refusals; `None` for another error, or no `when`.
+    fn condition_refusal(&self, when: Option<&str>, e: &EngineError) -> Option<FileError> {
+        let (w, EngineError::RefusedCondition { .. }) = (when?, e) else {
+            return None;
+        };
+        match self {
+            Subject::File(f) => Some(f.condition_refusal(w, e)),
+            Subject::Builtin(..) => {
+                let refuse = |span, message| {
+                    FileError::at(ErrorKind::Condition, COMMAND_LINE, w, span, message)
+                };
+                let parse = |s: &str, at| self.parse_placed(w, s, at);
+                parse_condition_checked(
+                    self.system(),
+                    w,
+                    &parse,
+                    &refuse,
+                    Given::CommandLineAboutBuiltIn,
+                    &|_| Err(e.clone()),
+                )
+                .err()
+            }
+        }
+    }
+
     pub fn condition(&self, when: Option<&str>) -> anyhow::Result<Option<brackets::Condition>> {
         when.map(|w| match self {
             Subject::File(f) => f.condition(w).map_err(anyhow::Error::from),
@@ -650,7 +689,12 @@ fn search(a: &SearchArgs, subject: &Subject, format: Format) -> anyhow::Result<R
             };
             list_refused("--known", known, refusal)
         }
-        (e, _) => subject.refused(a.system.as_deref(), "searching for integrals", e),
+        (e, _) => subject.refused(
+            a.system.as_deref(),
+            "searching for integrals",
+            a.when.as_deref(),
+            e,
+        ),
     })?;
     Ok(subject.tag(report))
 }

@@ -245,6 +245,21 @@ pub fn parse_condition(
     refuse: &dyn Fn(std::ops::Range<usize>, String) -> FileError,
     given: Given,
 ) -> Result<brackets::Condition, FileError> {
+    parse_condition_checked(system, text, parse, refuse, given, &|_| Ok(()))
+}
+
+/// [`parse_condition`] with what the condition's use asks of it besides (`check`), whose
+/// refusal of a variable ([`EngineError::RefusedCondition`]) is shown at its value, as the
+/// reading's own are: given the refusal a computation under the condition met, it places
+/// that refusal in `text`.
+pub fn parse_condition_checked(
+    system: &System,
+    text: &str,
+    parse: &dyn Fn(&str, usize) -> Result<Expr, FileError>,
+    refuse: &dyn Fn(std::ops::Range<usize>, String) -> FileError,
+    given: Given,
+    check: &dyn Fn(&brackets::Condition) -> Result<(), EngineError>,
+) -> Result<brackets::Condition, FileError> {
     let vars = system.vars();
     let mut subs: Vec<(Var, Expr)> = Vec::new();
     // Where each value is written, for a refusal of the condition as a whole.
@@ -303,17 +318,20 @@ pub fn parse_condition(
         subs.push((v, expr));
         values.push(value_span);
     }
-    brackets::Condition::all(&shown.join(", "), subs.clone()).map_err(|e| {
-        // At the value of the variable it is about, else at the first.
-        let k = match &e {
-            EngineError::RefusedCondition { var, .. } => {
-                subs.iter().position(|(w, _)| w == var).unwrap_or(0)
-            }
-            _ => 0,
-        };
-        // The settings of the condition's giver (the command line's flag, a program's `Limits`).
-        refuse(values[k].clone(), e.to_string()).limited_by(&e, LimitSettings::of(given))
-    })
+    brackets::Condition::all(&shown.join(", "), subs.clone())
+        .and_then(|c| check(&c).map(|()| c))
+        .map_err(|e| {
+            // At the value of the variable it is about, else at the first.
+            let k = match &e {
+                EngineError::RefusedCondition { var, .. } => {
+                    subs.iter().position(|(w, _)| w == var).unwrap_or(0)
+                }
+                _ => 0,
+            };
+            // The settings of the condition's giver (the command line's flag, a program's
+            // `Limits`).
+            refuse(values[k].clone(), e.to_string()).limited_by(&e, LimitSettings::of(given))
+        })
 }
 
 /// The name `text` writes, read by the parser (`\omega` and `ϵ` write `omega` and

@@ -28,8 +28,9 @@ pub use brackets::closure::relation_text;
 pub use closure::{closure_report, closure_report_for, file_closure_report};
 pub(crate) use input::blank_beside_comma;
 pub use input::{
-    builtin_system, builtin_system_refused, define_builtin_resonant, parse_condition, parse_fixed,
-    parse_known, parse_symbolic, ListRefusal, BUILTIN_SYSTEMS,
+    builtin_system, builtin_system_refused, define_builtin_resonant, parse_condition,
+    parse_condition_checked, parse_fixed, parse_known, parse_symbolic, ListRefusal,
+    BUILTIN_SYSTEMS,
 };
 pub use search::{
     command_line_search_report, complex_form, file_search_report, search_report, search_report_for,

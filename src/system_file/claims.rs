@@ -472,7 +472,7 @@ pub(crate) fn parse_rank_condition(
 /// [`parse_condition`] with what the condition's use asks of it besides (`check`): a refusal
 /// of a variable ([`EngineError::RefusedCondition`]) is shown at its value, as the reading's
 /// own are.
-fn parse_condition_with(
+pub(crate) fn parse_condition_with(
     file: &LoadedSystem,
     source: &Source,
     pieces: &[Text],

@@ -9,7 +9,10 @@ use std::time::Instant;
 use brackets::{BracketTable, Condition, System};
 use trigpoly::{Expr, VarKind};
 
-use super::claims::{engine_error, parse_condition, parse_rank_condition, CheckedClaim, RankClaim};
+use super::claims::{
+    engine_error, parse_condition, parse_condition_with, parse_rank_condition, CheckedClaim,
+    RankClaim,
+};
 use super::error::{ErrorKind, FileError};
 use super::scope::{instance_of, rewrite_braces};
 use super::text::{trimmed, Text};
@@ -283,7 +286,7 @@ pub fn bracket_report(
         .bracket(&fe, &ge)
         .map_err(|e| file.computation_error(&e))?;
     let lhs = format!("{{{fname}, {gname}}}");
-    let mut equations = equations_at(file, condition.as_ref(), vec![(lhs.clone(), value)])?;
+    let mut equations = equations_at(file, condition.as_ref(), when, vec![(lhs.clone(), value)])?;
     // A bracket at a surface the flow of H leaves may vanish there and still conserve nothing.
     let zero = equations.lines.iter().all(|l| l.rhs.is_zero());
     equations.flow = condition.as_ref().map(|c| flow_kept(file, c, zero));
@@ -352,7 +355,7 @@ pub fn expand_report(
             .join(", "),
         file.the_name()
     );
-    let mut equations = equations_at(file, condition.as_ref(), lines)?;
+    let mut equations = equations_at(file, condition.as_ref(), when, lines)?;
     // Each as its terms' common factor times the rest, where they share one.
     for line in &mut equations.lines {
         line.factored = shown_factored(&line.rhs);
@@ -366,10 +369,11 @@ pub fn expand_report(
 }
 
 /// Displayed equations `lhs = value`, each value under the report's condition if there is
-/// one, which the caption names.
+/// one, read from the text `when`, which the caption names.
 fn equations_at(
     file: &LoadedSystem,
     condition: Option<&Condition>,
+    when: Option<&str>,
     lines: Vec<(String, Expr)>,
 ) -> Result<Equations, FileError> {
     let lines = lines
@@ -378,7 +382,7 @@ fn equations_at(
             let value = match condition {
                 Some(c) => c
                     .apply_where_defined(&value, "the expression")
-                    .map_err(|e| file.computation_error(&e))?,
+                    .map_err(|e| file.error_under(when, &e))?,
                 None => value,
             };
             // Over a common denominator, so that a value that is zero shows as 0.
@@ -443,6 +447,33 @@ impl LoadedSystem {
         let source = self.given("<condition>", text);
         let pieces = Text::whole(&source).split(',');
         parse_condition(self, &source, &pieces)
+    }
+
+    /// The error `e` of a computation under the condition read from the text `when`: a
+    /// refusal of the condition ([`brackets::EngineError::RefusedCondition`], such as one that
+    /// sets to 0 a variable what it is applied to divides by) at that variable's value in
+    /// `when`, as the reading's own refusals are shown; any other as
+    /// [`LoadedSystem::computation_error`] says it, without a place.
+    pub(crate) fn error_under(&self, when: Option<&str>, e: &brackets::EngineError) -> FileError {
+        match (when, e) {
+            (Some(text), brackets::EngineError::RefusedCondition { .. }) => {
+                self.condition_refusal(text, e)
+            }
+            _ => self.computation_error(e),
+        }
+    }
+
+    /// The refusal `e` of the condition read from the text `when`
+    /// ([`brackets::EngineError::RefusedCondition`], which a computation under it met) at
+    /// the value of the variable it is about in `when`, as the reading's own refusals are
+    /// shown.
+    pub fn condition_refusal(&self, when: &str, e: &brackets::EngineError) -> FileError {
+        let source = self.given("<condition>", when);
+        let pieces = Text::whole(&source).split(',');
+        match parse_condition_with(self, &source, &pieces, |_| Err(e.clone())) {
+            Err(placed) => placed,
+            Ok(_) => self.computation_error(e),
+        }
     }
 
     /// A rank's condition given as text, read as [`LoadedSystem::condition`] reads one and
@@ -799,7 +830,7 @@ pub fn rank_report_when(
         exprs.push(match &condition {
             Some(c) => c
                 .apply_where_defined(&value, "a function")
-                .map_err(|e| file.computation_error(&e))?,
+                .map_err(|e| file.error_under(when, &e))?,
             None => value,
         });
     }

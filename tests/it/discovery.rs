@@ -2192,30 +2192,40 @@ fn a_long_condition_value_is_shown_by_its_first_terms() {
 
 /// A condition that sets to 0 a parameter that the Hamiltonian (for `search`) or a generator
 /// (for `closure`) divides by is refused by saying which and by what: it said only `division
-/// by zero`, without the name or the function.
+/// by zero`, without the name or the function. It is shown at the value that sets it in
+/// --when, with what to do, as every other refusal of the condition is, for `expand`,
+/// `bracket` and `rank` too, and for a built-in system: it was said at no place
+/// (`<command line>: the condition sets γ3 = 0, but the expression divides by γ3`).
 #[test]
 fn a_condition_that_makes_a_divisor_zero_says_which() {
+    let f = "systems/harmonic-rotor.toml";
+    let refusal = |what: &str| {
+        format!(
+            "superint: error: <command line>:1:18: the condition sets M = 0, but {what} divides \
+             by M: give M a value other than 0, or leave it free\n 1 | omega = 1/2, M = 0\n   \
+             |                  ^\n"
+        )
+    };
+    let when = ["--when", "omega = 1/2, M = 0"];
     let cases = [
+        (vec!["search", f], "the Hamiltonian"),
+        (vec!["search", "--system", "harmonic"], "the Hamiltonian"),
+        (vec!["closure", f, "L", "G1"], "the generator G1"),
         (
-            vec!["search", "systems/harmonic-rotor.toml", "--when", "M = 0"],
-            "superint: error: searching for integrals: the condition sets M = 0, but the \
-             Hamiltonian divides by M\n",
+            vec!["closure", "--system", "harmonic", "L", "G1"],
+            "the generator G1",
         ),
         (
-            vec![
-                "closure",
-                "systems/harmonic-rotor.toml",
-                "L",
-                "G1",
-                "--when",
-                "M = 0",
-            ],
-            "superint: error: computing the closure: the condition sets M = 0, but the \
-             generator G1 divides by M\n",
+            vec!["closure", f, "L", "--define", "A = x/M"],
+            "the generator A",
         ),
+        (vec!["expand", f, "x", "x/M"], "the expression"),
+        (vec!["bracket", f, "x/M", "p_x"], "the expression"),
+        (vec!["rank", f, "L", "x/M"], "a function"),
     ];
-    for (args, message) in cases {
-        assert_eq!(superint_refused(&args), message, "{args:?}");
+    for (args, what) in cases {
+        let args = [&args[..], &when[..]].concat();
+        assert_eq!(superint_refused(&args), refusal(what), "{args:?}");
     }
     // A generator free of 1/M is defined there: the closure of L alone goes on.
     let out = superint(&[

@@ -490,19 +490,26 @@ impl Condition {
     /// Refuses the condition where it sets to zero a variable that one of `sides` divides by:
     /// there the sides have no value, even when their difference is zero before the
     /// substitution (`p_x/M = p_x/M` at `M = 0`). `what` names the sides in the message (`the
-    /// claim`).
+    /// claim`). The refusal is an [`EngineError::RefusedCondition`] naming that variable, so
+    /// that a caller holding the condition's text shows it at the variable's value there.
     pub fn defined_on(&self, sides: &[&Expr], what: &str) -> Result<(), EngineError> {
         for side in sides {
             self.within(side.vars())?;
         }
-        let divisor = sides.iter().find_map(|side| {
-            Condition::sets_a_divisor_to_zero(&self.subs, side)
-                .map(|v| side.vars().variable(v).unicode().to_string())
-        });
+        let divisor = sides
+            .iter()
+            .find_map(|side| Condition::sets_a_divisor_to_zero(&self.subs, side));
         match divisor {
-            Some(name) => Err(EngineError::Invalid(format!(
-                "the condition sets {name} = 0, but {what} divides by {name}"
-            ))),
+            Some(v) => {
+                let name = self.subs[0].1.vars().variable(v).unicode().to_string();
+                Err(refused(
+                    v,
+                    format!(
+                        "the condition sets {name} = 0, but {what} divides by {name}: give \
+                         {name} a value other than 0, or leave it free"
+                    ),
+                ))
+            }
             None => Ok(()),
         }
     }
