@@ -2063,7 +2063,8 @@ fn search_and_closure_read_conditions_as_files_do() {
 /// `H` vanishes is an integral. On `y = 0` of the Hénon–Heiles system the flow leaves at once
 /// (`ẏ = p_y`), and the search reported `p_x² + x²` as an integral "proved at y = 0"; a rotor
 /// whose coupling turns `p_θ` (`{p_θ, H} ≠ 0`) gave a false integral at `p_θ = Iω`. Both are
-/// refused, by search and closure alike; the resonance of the harmonic rotor is kept.
+/// refused, by search and closure alike, at the value of the variable whose level the flow
+/// leaves in --when (it was said at no place); the resonance of the harmonic rotor is kept.
 #[test]
 fn a_condition_the_flow_leaves_is_refused() {
     let leaves = [
@@ -2086,7 +2087,9 @@ fn a_condition_the_flow_leaves_is_refused() {
             let out = superint(&words);
             let stderr = String::from_utf8_lossy(&out.stderr);
             assert_eq!(out.status.code(), Some(2), "{words:?}: {stderr}");
-            assert!(stderr.contains(message), "{words:?}: {stderr}");
+            let at = format!("superint: error: <command line>:1:5: {message}");
+            assert!(stderr.starts_with(&at), "{words:?}: {stderr}");
+            assert!(stderr.ends_with("\n   |     ^\n"), "{words:?}: {stderr}");
         }
     }
     let coupled = scratch_system(

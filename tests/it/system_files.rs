@@ -1938,8 +1938,8 @@ fn bad_inputs() -> Vec<(&'static str, Vec<u8>, &'static str, Vec<&'static str>)>
         (
             "a search on a surface of Poisson variables that the flow leaves",
             TOP.as_bytes().to_vec(),
-            "searching for integrals: the flow leaves the surface M1 = 0: there {M1, H} = \
-             −M2 M3, not 0",
+            "<command line>:1:6: the flow leaves the surface M1 = 0: there {M1, H} = −M2 M3, \
+             not 0",
             vec!["search", "bad.toml", "--when", "M1 = 0"],
         ),
         (

@@ -79,6 +79,8 @@ fn not_real(v: Var, value: &Expr) -> Option<String> {
 #[derive(Clone, Debug, PartialEq, Eq)]
 #[non_exhaustive]
 pub struct LeftByFlow {
+    /// The variable `v` whose level it is.
+    pub var: Var,
     /// The level, `v` or `v − (value)` (`e^{iθ}` for an angle `θ`), in unicode.
     pub level: String,
     /// Its bracket with `H` on the surface, in unicode (a long one by its first terms and
@@ -423,7 +425,9 @@ impl Condition {
     /// vanishes only on a surface that the flow leaves (`y = 0` where `ẏ = p_y`) is no
     /// integral, so a search or a closure under such a condition would mislabel it. A parameter
     /// set to a constant is kept; one set to a function of phase space (`a = p_x`) is a
-    /// surface like any other, which the flow leaves unless `{value, H}` vanishes there.
+    /// surface like any other, which the flow leaves unless `{value, H}` vanishes there. The
+    /// refusal is an [`EngineError::RefusedCondition`] naming the variable whose level the
+    /// flow leaves, which a caller holding the condition's text shows at its value there.
     pub fn kept_by_flow(&self, system: &System) -> Result<(), EngineError> {
         let Some(left) = self.left_by_flow(system)? else {
             return Ok(());
@@ -434,12 +438,15 @@ impl Condition {
             Some(_) => "p_θ at a resonance p_θ = mIω/n, where {p_θ, H} = 0",
             None => "those whose bracket with H vanishes on the surface",
         };
-        Err(EngineError::Invalid(format!(
-            "the flow leaves the surface {}: there {{{}, H}} = {}, not 0, so what is conserved \
-             on it is no integral; a condition may set parameters to constants, and variables \
-             the flow keeps ({kept})",
-            self.text, left.level, left.rate
-        )))
+        Err(refused(
+            left.var,
+            format!(
+                "the flow leaves the surface {}: there {{{}, H}} = {}, not 0, so what is \
+                 conserved on it is no integral; a condition may set parameters to constants, \
+                 and variables the flow keeps ({kept})",
+                self.text, left.level, left.rate
+            ),
+        ))
     }
 
     /// Where the flow of `system`'s Hamiltonian leaves the surface the condition describes,
@@ -472,6 +479,7 @@ impl Condition {
                     false => name,
                 };
                 return Ok(Some(LeftByFlow {
+                    var: *v,
                     level,
                     rate: rate.brief_excerpt(),
                 }));
