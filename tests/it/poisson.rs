@@ -195,12 +195,14 @@ fn library_api_refuses_what_is_not_a_poisson_structure() {
     }
 }
 
-/// e(3)* with a wrong value in its last bracket: the violation is shown there, at the last
-/// bracket the triple's identity depends on, not at a right one above it whose partners
-/// follow (it was `{M3, γ1} = γ2`, where the brackets up to it already break the identity of
-/// `M1, M2, γ1` for want of the others).
+/// e(3)* with one wrong bracket: one identity cannot tell which bracket is wrong, so the
+/// message names every declared bracket the failing triple's identity depends on, the wrong
+/// one among them wherever it stands, and shows the violation at the last of them. A wrong
+/// sign in the first bracket was shown at `{M3, g1}` or `{g3, M1}`, right ones, with no word of
+/// `{M1, M2}`; a wrong `{g1, M2}` = g1, one of the triple's pairs whose leaving out changes
+/// nothing (`{M1, g1}` = 0), is named too.
 #[test]
-fn a_jacobi_violation_is_shown_at_the_wrong_bracket_not_at_one_whose_partners_follow() {
+fn a_jacobi_violation_names_every_bracket_its_identity_depends_on() {
     let e3 = "name = \"top\"\nhamiltonian = \"M1^2 + M2^2 + M3^2\"\n[phase_space]\n\
               variables = [\"M1\", \"M2\", \"M3\", \"g1\", \"g2\", \"g3\"]\n[poisson]\n\
               \"{M1, M2}\" = \"M3\"\n\"{M2, M3}\" = \"M1\"\n\"{M3, M1}\" = \"M2\"\n\
@@ -209,19 +211,44 @@ fn a_jacobi_violation_is_shown_at_the_wrong_bracket_not_at_one_whose_partners_fo
     let right = crate::scratch_text("jacobi-place", "right.toml", e3);
     let o = superint(&["check", right.to_str().expect("a UTF-8 path")]);
     assert_eq!(o.status.code(), Some(0), "{}", text(&o.stderr));
-    // The sign of the last one turned.
-    let wrong = e3.replace("\"{g3, M1}\" = \"g2\"", "\"{g3, M1}\" = \"-g2\"");
-    let path = crate::scratch_text("jacobi-place", "wrong.toml", &wrong);
-    let o = superint(&["check", path.to_str().expect("a UTF-8 path")]);
-    assert_eq!(o.status.code(), Some(2));
-    let stderr = text(&o.stderr);
-    assert!(
-        stderr.contains(
-            "wrong.toml:14:1: the declared brackets break the Jacobi identity: {M1, {M2, g1}} + \
-             {M2, {g1, M1}} + {g1, {M1, M2}} = −2 g2, not 0\n 14 | \"{g3, M1}\" = \"-g2\""
+    let identity = "the declared brackets break the Jacobi identity: {M1, {M2, g1}} + \
+                    {M2, {g1, M1}} + {g1, {M1, M2}} = ";
+    let cases = [
+        // The sign of the last one turned.
+        (
+            "last.toml",
+            ("\"{g3, M1}\" = \"g2\"", "\"{g3, M1}\" = \"-g2\""),
+            "14:1",
+            "−2 g2, not 0; it depends on the declared {M1, M2}, {M3, g1}, {g1, M2} and {g3, M1}\
+             \n 14 | \"{g3, M1}\" = \"-g2\"",
         ),
-        "{stderr}"
-    );
+        // The sign of the first one turned.
+        (
+            "first.toml",
+            ("\"{M1, M2}\" = \"M3\"", "\"{M1, M2}\" = \"-M3\""),
+            "14:1",
+            "2 g2, not 0; it depends on the declared {M1, M2}, {M3, g1}, {g1, M2} and {g3, M1}\
+             \n 14 | \"{g3, M1}\" = \"g2\"",
+        ),
+        // A pair of the triple with another value, whose leaving out keeps the residual.
+        (
+            "pair.toml",
+            ("\"{g1, M2}\" = \"g3\"", "\"{g1, M2}\" = \"g1\""),
+            "12:1",
+            "−g2, not 0; it depends on the declared {M1, M2}, {M3, g1} and {g1, M2}\
+             \n 12 | \"{g1, M2}\" = \"g1\"",
+        ),
+    ];
+    for (name, (from, to), at, said) in cases {
+        let path = crate::scratch_text("jacobi-place", name, &e3.replace(from, to));
+        let o = superint(&["check", path.to_str().expect("a UTF-8 path")]);
+        assert_eq!(o.status.code(), Some(2), "{name}");
+        let stderr = text(&o.stderr);
+        assert!(
+            stderr.contains(&format!("{name}:{at}: {identity}{said}")),
+            "{name}: {stderr}"
+        );
+    }
 }
 
 /// Long declared brackets that break the Jacobi identity: the message names the triple and
@@ -243,7 +270,10 @@ fn a_long_jacobi_violation_is_said_in_part() {
         first.contains(
             "j.toml:8:1: the declared brackets break the Jacobi identity: {M1, {M2, M3}} + \
              {M2, {M3, M1}} + {M3, {M1, M2}} = −75 M1⁴⁹ "
-        ) && first.ends_with(" + … (a polynomial of 22099 terms), not 0"),
+        ) && first.ends_with(
+            " + … (a polynomial of 22099 terms), not 0; it depends on the declared {M1, M2}, \
+             {M2, M3} and {M3, M1}"
+        ),
         "{stderr}"
     );
     // A long value that is not real, refused as the file is read.

@@ -1862,7 +1862,8 @@ fn bad_inputs() -> Vec<(&'static str, Vec<u8>, &'static str, Vec<&'static str>)>
             "declared brackets that break the Jacobi identity",
             top_with("\"{M3, M1}\" = \"M1\""),
             "bad.toml:12:1: the declared brackets break the Jacobi identity: {M1, {M2, M3}} + \
-             {M2, {M3, M1}} + {M3, {M1, M2}} = −M3, not 0",
+             {M2, {M3, M1}} + {M3, {M1, M2}} = −M3, not 0; it depends on the declared {M1, M2}, \
+             {M2, M3} and {M3, M1}",
             check.clone(),
         ),
         (

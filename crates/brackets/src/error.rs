@@ -166,8 +166,9 @@ pub struct JacobiViolation {
     /// The identity and its residual, in words.
     pub message: String,
     /// The place, in the list given to [`PhaseSpace::with_brackets`](crate::PhaseSpace::with_brackets),
-    /// of the last bracket that the identity of the triple depends on (whose leaving out,
-    /// with those after it, changes the residual): where a file shows the violation.
+    /// of the last bracket that the identity of the triple depends on (one of two of its
+    /// variables, or one whose leaving out alone changes the residual; the message names them
+    /// all): where a file shows the violation.
     pub bracket: usize,
 }
 

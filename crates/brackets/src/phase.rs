@@ -409,34 +409,58 @@ impl PhaseSpace {
         self.declare_atoms()?;
         match self.check_jacobi() {
             Err(EngineError::Jacobi(mut violation)) => {
-                let last = self.last_depended_on(violation.triple, &violation.residual)?;
-                violation.bracket = places[last];
+                let depended = self.depended_on(violation.triple, &violation.residual)?;
+                let named: Vec<String> = depended
+                    .iter()
+                    .map(|&k| {
+                        let DeclaredBracket { a, b, .. } = &self.declared[k];
+                        let [ua, ub] = [a, b].map(|v| self.vars.variable(*v).unicode());
+                        format!("{{{ua}, {ub}}}")
+                    })
+                    .collect();
+                if let Some((last, others)) = named.split_last() {
+                    let list = match others {
+                        [] => last.clone(),
+                        _ => format!("{} and {last}", others.join(", ")),
+                    };
+                    violation
+                        .message
+                        .push_str(&format!("; it depends on the declared {list}"));
+                }
+                violation.bracket = places[depended.last().copied().unwrap_or(self.given - 1)];
                 Err(EngineError::Jacobi(violation))
             }
             checked => checked.map(|()| self),
         }
     }
 
-    /// The last of the given brackets that the Jacobi identity of `triple`, whose residual
-    /// with all of them is `residual`, depends on: the last whose leaving out, with those
-    /// after it, changes the residual. That is where a file shows the violation: the place
-    /// of a wrong value, or of one whose partners are missing, and not that of a right one
-    /// above it whose partners follow (e(3)*'s `{M3, γ1} = γ2` above a wrong `{γ3, M1}`,
-    /// where the brackets up to the right one already break the identity, for want of the
-    /// rest).
-    fn last_depended_on(&self, triple: [Var; 3], residual: &Expr) -> Result<usize, EngineError> {
-        for k in (1..self.given).rev() {
-            let mut first = self.clone();
-            first.declared.truncate(k);
-            first.given = k;
-            first.update_involved();
-            first.declare_atoms()?;
-            let without = first.jacobiator(triple)?;
-            if !without.checked_sub(residual)?.vanishes()? {
-                return Ok(k);
+    /// The given brackets that the Jacobi identity of `triple`, whose residual with all of
+    /// them is `residual`, depends on: those of two of its variables, whose values it takes
+    /// as they are, and those whose leaving out, each alone, changes the residual (a wrong
+    /// `{γ1, M2} = γ1` leaves `M1, M2, γ1`'s residual as it is, since `{M1, γ1} = 0`, but
+    /// is one of its pairs). One identity cannot tell which of them is wrong (a wrong sign in
+    /// any of e(3)*'s nine brackets breaks the identity of `M1, M2, γ1`, which depends on
+    /// right ones too), so a file shows the violation at the last of them and names them all.
+    fn depended_on(&self, triple: [Var; 3], residual: &Expr) -> Result<Vec<usize>, EngineError> {
+        let mut depended = Vec::new();
+        for k in 0..self.given {
+            let DeclaredBracket { a, b, .. } = &self.declared[k];
+            if triple.contains(a) && triple.contains(b) {
+                depended.push(k);
+                continue;
+            }
+            let mut without = self.clone();
+            without.declared.truncate(self.given);
+            without.declared.remove(k);
+            without.given = self.given - 1;
+            without.update_involved();
+            without.declare_atoms()?;
+            let changed = without.jacobiator(triple)?.checked_sub(residual)?;
+            if !changed.vanishes()? {
+                depended.push(k);
             }
         }
-        Ok(0)
+        Ok(depended)
     }
 
     /// `{a, {b, c}} + {b, {c, a}} + {c, {a, b}}`.
