@@ -3227,6 +3227,12 @@ fn arguments_are_read_before_any_is_expanded() {
             vec!["expand", f, "x", "--when", "M = 0, omega = 1/M"],
             "<command line>:1:16: the condition sets M = 0, but the value of ω divides by M",
         ),
+        // Set to 0 through another variable, the divisor is named as the value writes it:
+        // it was "sets I = 0, but the value of ω divides by I", of a value 1/M.
+        (
+            vec!["expand", f, "x", "--when", "M = I, I = 0, omega = 1/M"],
+            "<command line>:1:23: the condition sets M = 0, but the value of ω divides by M",
+        ),
         (
             vec!["expand", f, big, "L - "],
             "1:4: expected an expression after '-'",

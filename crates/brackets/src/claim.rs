@@ -225,13 +225,14 @@ impl Condition {
         }
         .keeps_denominators()?;
         let sets = |e: &Expr, subs: &[(Var, Expr)]| subs.iter().any(|(v, _)| e.contains(*v));
+        let written = subs.clone();
         // A chain of k substitutions resolves in k rounds; what is left after as many rounds
         // as there are substitutions goes round a cycle.
         for _ in 0..subs.len() {
             if let Some((v, _)) = subs.iter().find(|(v, e)| e.contains(*v)) {
                 return Err(circular(*v, &subs));
             }
-            if let Some(refusal) = value_divides_by_zero(&subs) {
+            if let Some(refusal) = value_divides_by_zero(&subs, &written) {
                 return Err(refusal);
             }
             if !subs.iter().any(|(_, e)| sets(e, &subs)) {
@@ -557,22 +558,28 @@ fn circular(v: Var, subs: &[(Var, Expr)]) -> EngineError {
     )
 }
 
-/// The refusal of a condition one of whose values divides by a variable that another of its
-/// values sets to zero (`γ3 = 0, M3 = M1/γ3`): that value has none there, which substituting
-/// it would find only as a "division by zero" at no place. `None` where no value does.
-fn value_divides_by_zero(subs: &[(Var, Expr)]) -> Option<EngineError> {
-    subs.iter().find_map(|(v, value)| {
-        let zero = Condition::sets_a_divisor_to_zero(subs, value)?;
-        let vars = value.vars();
-        let (name, divisor) = (vars.variable(*v).unicode(), vars.variable(zero).unicode());
-        Some(refused(
-            *v,
-            format!(
-                "the condition sets {divisor} = 0, but the value of {name} divides by \
-                 {divisor}: give {name} a value defined there, or leave {divisor} free"
-            ),
-        ))
-    })
+/// The refusal of a condition one of whose values, `subs` in part resolved, divides by a
+/// variable that another of its values sets to zero (`γ3 = 0, M3 = M1/γ3`): that value has
+/// none there, which substituting it would find only as a "division by zero" at no place.
+/// The divisor named is one of the value as `written` where it has one set to zero by now
+/// (`γ3` of `γ3 = γ1, γ1 = 0, M3 = M1/γ3`, whose `M3` is `M1/γ1` after a round). `None`
+/// where no value divides by zero.
+fn value_divides_by_zero(subs: &[(Var, Expr)], written: &[(Var, Expr)]) -> Option<EngineError> {
+    subs.iter()
+        .zip(written)
+        .find_map(|((v, value), (_, as_written))| {
+            let zero = Condition::sets_a_divisor_to_zero(subs, value)?;
+            let zero = Condition::sets_a_divisor_to_zero(subs, as_written).unwrap_or(zero);
+            let vars = value.vars();
+            let (name, divisor) = (vars.variable(*v).unicode(), vars.variable(zero).unicode());
+            Some(refused(
+                *v,
+                format!(
+                    "the condition sets {divisor} = 0, but the value of {name} divides by \
+                     {divisor}: give {name} a value defined there, or leave {divisor} free"
+                ),
+            ))
+        })
 }
 
 /// A condition refused for what it does to `v`.
