@@ -197,10 +197,12 @@ fn library_api_refuses_what_is_not_a_poisson_structure() {
 
 /// e(3)* with one wrong bracket: one identity cannot tell which bracket is wrong, so the
 /// message names every declared bracket the failing triple's identity depends on, the wrong
-/// one among them wherever it stands, and shows the violation at the last of them. A wrong
-/// sign in the first bracket was shown at `{M3, g1}` or `{g3, M1}`, right ones, with no word of
-/// `{M1, M2}`; a wrong `{g1, M2}` = g1, one of the triple's pairs whose leaving out changes
-/// nothing (`{M1, g1}` = 0), is named too.
+/// one among them wherever it stands, and, where several identities fail, which of those they
+/// all depend on, showing the violation at the last of these. A wrong sign in the first
+/// bracket was shown at `{M3, g1}` or `{g3, M1}`, right ones, with no word of `{M1, M2}`, and
+/// then at the last of the four the first identity depends on; the two that fail share
+/// `{M1, M2}` alone. A wrong `{g1, M2}` = g1, one of the triple's pairs whose leaving out
+/// changes nothing (`{M1, g1}` = 0), is named too.
 #[test]
 fn a_jacobi_violation_names_every_bracket_its_identity_depends_on() {
     let e3 = "name = \"top\"\nhamiltonian = \"M1^2 + M2^2 + M3^2\"\n[phase_space]\n\
@@ -219,23 +221,26 @@ fn a_jacobi_violation_names_every_bracket_its_identity_depends_on() {
             "last.toml",
             ("\"{g3, M1}\" = \"g2\"", "\"{g3, M1}\" = \"-g2\""),
             "14:1",
-            "−2 g2, not 0; it depends on the declared {M1, M2}, {M3, g1}, {g1, M2} and {g3, M1}\
+            "−2 g2, not 0; it depends on the declared {M1, M2}, {M3, g1}, {g1, M2} and {g3, M1}, \
+             and the 3 identities that fail all depend on {g3, M1}, on no other of these\
              \n 14 | \"{g3, M1}\" = \"-g2\"",
         ),
         // The sign of the first one turned.
         (
             "first.toml",
             ("\"{M1, M2}\" = \"M3\"", "\"{M1, M2}\" = \"-M3\""),
-            "14:1",
-            "2 g2, not 0; it depends on the declared {M1, M2}, {M3, g1}, {g1, M2} and {g3, M1}\
-             \n 14 | \"{g3, M1}\" = \"g2\"",
+            "6:1",
+            "2 g2, not 0; it depends on the declared {M1, M2}, {M3, g1}, {g1, M2} and {g3, M1}, \
+             and the 2 identities that fail all depend on {M1, M2}, on no other of these\
+             \n 6 | \"{M1, M2}\" = \"-M3\"",
         ),
         // A pair of the triple with another value, whose leaving out keeps the residual.
         (
             "pair.toml",
             ("\"{g1, M2}\" = \"g3\"", "\"{g1, M2}\" = \"g1\""),
             "12:1",
-            "−g2, not 0; it depends on the declared {M1, M2}, {M3, g1} and {g1, M2}\
+            "−g2, not 0; it depends on the declared {M1, M2}, {M3, g1} and {g1, M2}, and the 4 \
+             identities that fail all depend on {g1, M2}, on no other of these\
              \n 12 | \"{g1, M2}\" = \"g1\"",
         ),
     ];

@@ -168,7 +168,8 @@ pub struct JacobiViolation {
     /// The place, in the list given to [`PhaseSpace::with_brackets`](crate::PhaseSpace::with_brackets),
     /// of the last bracket that the identity of the triple depends on (one of two of its
     /// variables, or one whose leaving out alone changes the residual; the message names them
-    /// all): where a file shows the violation.
+    /// all), or, where several identities fail, the last of those that every failing one
+    /// depends on: where a file shows the violation.
     pub bracket: usize,
 }
 

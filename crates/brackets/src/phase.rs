@@ -410,29 +410,80 @@ impl PhaseSpace {
         match self.check_jacobi() {
             Err(EngineError::Jacobi(mut violation)) => {
                 let depended = self.depended_on(violation.triple, &violation.residual)?;
-                let named: Vec<String> = depended
-                    .iter()
-                    .map(|&k| {
-                        let DeclaredBracket { a, b, .. } = &self.declared[k];
-                        let [ua, ub] = [a, b].map(|v| self.vars.variable(*v).unicode());
-                        format!("{{{ua}, {ub}}}")
-                    })
-                    .collect();
-                if let Some((last, others)) = named.split_last() {
-                    let list = match others {
-                        [] => last.clone(),
-                        _ => format!("{} and {last}", others.join(", ")),
-                    };
+                let list = |ks: &[usize]| {
+                    let named: Vec<String> = ks
+                        .iter()
+                        .map(|&k| {
+                            let DeclaredBracket { a, b, .. } = &self.declared[k];
+                            let [ua, ub] = [a, b].map(|v| self.vars.variable(*v).unicode());
+                            format!("{{{ua}, {ub}}}")
+                        })
+                        .collect();
+                    match named.split_last() {
+                        Some((last, [])) => last.clone(),
+                        Some((last, others)) => format!("{} and {last}", others.join(", ")),
+                        None => String::new(),
+                    }
+                };
+                if !depended.is_empty() {
+                    let all = list(&depended);
                     violation
                         .message
-                        .push_str(&format!("; it depends on the declared {list}"));
+                        .push_str(&format!("; it depends on the declared {all}"));
                 }
-                violation.bracket = places[depended.last().copied().unwrap_or(self.given - 1)];
+                let narrowed = self.depended_on_by_every_failure(&depended)?;
+                let shown =
+                    match narrowed.shared.len() < depended.len() && !narrowed.shared.is_empty() {
+                        true => {
+                            let Narrowed {
+                                compared,
+                                failing,
+                                shared,
+                            } = &narrowed;
+                            let identities = match compared == failing {
+                                true => format!("the {failing} identities that fail"),
+                                false => format!("the first {compared} of the {failing} that fail"),
+                            };
+                            violation.message.push_str(&format!(
+                                ", and {identities} all depend on {}, on no other of these",
+                                list(shared)
+                            ));
+                            &narrowed.shared
+                        }
+                        false => &depended,
+                    };
+                violation.bracket = places[shown.last().copied().unwrap_or(self.given - 1)];
                 Err(EngineError::Jacobi(violation))
             }
             checked => checked.map(|()| self),
         }
     }
+
+    /// Those of `depended` (the brackets the first failing Jacobi identity depends on,
+    /// [`Self::depended_on`]) that every failing one depends on, with how many fail: a wrong
+    /// bracket breaks only identities that depend on it, so where several fail, it is among
+    /// those they share, which narrows the first one's list (a wrong sign in e(3)*'s
+    /// `{M1, M2}` breaks two identities, and `{M1, M2}` is the one bracket both depend on).
+    /// The first failing identity and [`Self::NARROWED_BY`] more are compared, which bounds
+    /// the work on this error's path.
+    fn depended_on_by_every_failure(&self, depended: &[usize]) -> Result<Narrowed, EngineError> {
+        let failures = self.jacobi_failures()?;
+        let mut shared = depended.to_vec();
+        let others = failures.iter().skip(1).take(Self::NARROWED_BY);
+        for (triple, residual) in others.clone() {
+            let also = self.depended_on(*triple, residual)?;
+            shared.retain(|k| also.contains(k));
+        }
+        Ok(Narrowed {
+            compared: 1 + others.count(),
+            failing: failures.len(),
+            shared,
+        })
+    }
+
+    /// How many failing Jacobi identities past the first [`Self::depended_on_by_every_failure`]
+    /// compares.
+    const NARROWED_BY: usize = 16;
 
     /// The given brackets that the Jacobi identity of `triple`, whose residual with all of
     /// them is `residual`, depends on: those of two of its variables, whose values it takes
@@ -476,40 +527,62 @@ impl PhaseSpace {
     /// variables with a Poisson variable among them (a triple of canonical variables has
     /// constant brackets, so it holds); with it on the coordinates, the bracket is Poisson.
     fn check_jacobi(&self) -> Result<(), EngineError> {
+        for triple in self.jacobi_triples() {
+            let residual = self.jacobiator(triple)?;
+            if residual.vanishes()? {
+                continue;
+            }
+            let [ua, ub, uc] = triple.map(|v| self.vars.variable(v).unicode());
+            // A long residual in part, with its size: in full it was a message of
+            // 1.2 MB (its terms stay in `residual`).
+            let shown = residual.brief_excerpt();
+            return Err(EngineError::Jacobi(Box::new(JacobiViolation {
+                triple,
+                message: format!(
+                    "the declared brackets break the Jacobi identity: \
+                     {{{ua}, {{{ub}, {uc}}}}} + {{{ub}, {{{uc}, {ua}}}}} + \
+                     {{{uc}, {{{ua}, {ub}}}}} = {shown}, not 0"
+                ),
+                residual,
+                bracket: 0,
+            })));
+        }
+        Ok(())
+    }
+
+    /// Every triple whose Jacobi identity fails, with its residual, in the order
+    /// [`Self::check_jacobi`] takes them.
+    fn jacobi_failures(&self) -> Result<Vec<([Var; 3], Expr)>, EngineError> {
+        let mut failures = Vec::new();
+        for triple in self.jacobi_triples() {
+            let residual = self.jacobiator(triple)?;
+            if !residual.vanishes()? {
+                failures.push((triple, residual));
+            }
+        }
+        Ok(failures)
+    }
+
+    /// The triples of distinct phase variables, a Poisson variable among them, whose Jacobi
+    /// identity the declared brackets must keep; none where no bracket is declared.
+    fn jacobi_triples(&self) -> Vec<[Var; 3]> {
         if self.given == 0 {
-            return Ok(());
+            return Vec::new();
         }
         let coords = self.coordinates();
         let n = coords.len();
+        let mut triples = Vec::new();
         for i in 0..n {
             for j in i + 1..n {
                 for k in j + 1..n {
                     let triple = [coords[i], coords[j], coords[k]];
-                    if !triple.iter().any(|v| self.poisson.contains(v)) {
-                        continue;
+                    if triple.iter().any(|v| self.poisson.contains(v)) {
+                        triples.push(triple);
                     }
-                    let residual = self.jacobiator(triple)?;
-                    if residual.vanishes()? {
-                        continue;
-                    }
-                    let [ua, ub, uc] = triple.map(|v| self.vars.variable(v).unicode());
-                    // A long residual in part, with its size: in full it was a message of
-                    // 1.2 MB (its terms stay in `residual`).
-                    let shown = residual.brief_excerpt();
-                    return Err(EngineError::Jacobi(Box::new(JacobiViolation {
-                        triple,
-                        message: format!(
-                            "the declared brackets break the Jacobi identity: \
-                             {{{ua}, {{{ub}, {uc}}}}} + {{{ub}, {{{uc}, {ua}}}}} + \
-                             {{{uc}, {{{ua}, {ub}}}}} = {shown}, not 0"
-                        ),
-                        residual,
-                        bracket: 0,
-                    })));
                 }
             }
         }
-        Ok(())
+        triples
     }
 
     /// The Poisson variables, in the order of their declaration.
@@ -746,6 +819,17 @@ fn times(e: Expr, rate: Option<&Expr>) -> Result<Expr, EngineError> {
     }
 }
 
+/// The declared brackets that the failing Jacobi identities all depend on
+/// ([`PhaseSpace::depended_on`]), of the first that fails and of those compared with it.
+struct Narrowed {
+    /// How many failing identities were compared, the first among them.
+    compared: usize,
+    /// How many identities fail.
+    failing: usize,
+    /// The places of the declared brackets every compared identity depends on.
+    shared: Vec<usize>,
+}
+
 #[cfg(test)]
 mod tests {
     use super::PhaseSpace;
@@ -881,5 +965,43 @@ mod tests {
         };
         assert_eq!(violation.bracket, 4);
         assert!(space.with_brackets(&brackets[..4]).is_ok());
+    }
+
+    /// One wrong bracket among many right ones that breaks more identities than are compared:
+    /// `{u, v_i} = v_i` (a Lie algebra: `u` scales the commuting `v_i`) with a wrong
+    /// `{v1, v2} = u` breaks the identity of `u, v1, v2` and of `v1, v2, v_j` for each of the
+    /// other 18: the first 17 of the 19 compared share `{v1, v2}` alone, and the message says
+    /// that it compared only those.
+    #[test]
+    fn a_jacobi_violation_with_more_failures_than_compared_says_so() {
+        let names: Vec<String> = (1..=20).map(|i| format!("v{i}")).collect();
+        let vars = names
+            .iter()
+            .fold(Vars::builder().poisson("u"), |b, v| b.poisson(v))
+            .build()
+            .unwrap();
+        let e = |s: &str| Expr::parse(&vars, s).unwrap();
+        let mut brackets: Vec<(&str, &str, Expr)> =
+            names.iter().map(|v| ("u", v.as_str(), e(v))).collect();
+        assert!(PhaseSpace::new(&vars, &[])
+            .unwrap()
+            .with_brackets(&brackets)
+            .is_ok());
+        brackets.push(("v1", "v2", e("u")));
+        let Err(crate::EngineError::Jacobi(violation)) = PhaseSpace::new(&vars, &[])
+            .unwrap()
+            .with_brackets(&brackets)
+        else {
+            panic!("{{v1, v2}} = u breaks the Jacobi identity");
+        };
+        assert_eq!(violation.bracket, 20);
+        assert!(
+            violation.message.ends_with(
+                ", and the first 17 of the 19 that fail all depend on {v1, v2}, on no other \
+                 of these"
+            ),
+            "{}",
+            violation.message
+        );
     }
 }

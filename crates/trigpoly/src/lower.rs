@@ -58,7 +58,8 @@ pub enum BracketError {
 /// A name that is not declared, read as the product of the declared names it splits into
 /// ([`split_names`]), where the reading may not be what was meant: a physicist writes `Mω` for
 /// `M·ω`, but `Lxx` beside a function `Lx`, `Axx` beside `A_xx`, `Hy` beside `Hx` or
-/// `omegaa` beside `omega` and `a` are more likely names of their own, or slips ([`Doubt`] says which rule saw it).
+/// `omegaa` beside `omega` and `a` are more likely names of their own, or slips ([`Doubt`]
+/// says which rule saw it).
 ///
 /// ```
 /// use trigpoly::{Doubt, NoContext, Poly, Rational, Vars};

@@ -7,8 +7,10 @@
 //! `M₁, M₂, M₃` of so(3)*) of total degree `≤ P`, and trigonometric order `Σ|k| ≤ K` in the
 //! angles. An angle's momentum or a Poisson variable that the condition fixes is left out: on a
 //! resonance surface `p_θ = mIω/n` it is a constant, and every function of it is an integral
-//! ([`SpaceVariables`]); set to a function of the others, they parametrise the surface. The images `{φ, H}` are the bracket's, declared brackets included: for
-//! each phase variable `v`, `∂φ/∂v` times `{v, H}` (after the condition), formed once.
+//! ([`SpaceVariables`]); one it sets to a function of the others is left out too, and the
+//! others parametrise the surface. The images `{φ, H}` are the bracket's, declared brackets
+//! included: for each phase variable `v`, `∂φ/∂v` times `{v, H}` (after the condition), formed
+//! once.
 //!
 //! The unknowns are the real coefficients of that basis, so the equations `{F, H} = 0` (after the
 //! condition) are linear over `Q`: the real and imaginary parts of the coefficients of
