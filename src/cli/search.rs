@@ -327,9 +327,11 @@ impl Subject {
     }
 
     /// The error of what the command line asked of this subject, `doing` (`searching for
-    /// integrals`), that the engine refused, `e`: where a limit stopped it, of kind `limit`
-    /// from the file or `--system NAME` (`builtin`), with the hint naming the flag (then the
-    /// file's `[limits]`), the engine's message naming no setting; else said after `doing`.
+    /// integrals`), that the engine refused, `e`: where the condition is refused (it sets to 0
+    /// what is divided by, or the flow of `H` leaves it), shown at its variable's value in
+    /// `when`, the `--when` text; where a limit stopped it, of kind `limit` from the file or
+    /// `--system NAME` (`builtin`), with the hint naming the flag (then the file's
+    /// `[limits]`), the engine's message naming no setting; else said after `doing`.
     pub fn refused(
         &self,
         builtin: Option<&str>,
@@ -338,7 +340,8 @@ impl Subject {
         e: EngineError,
     ) -> anyhow::Error {
         // A refusal of the condition (it sets to 0 what the Hamiltonian or a generator divides
-        // by) at its variable's value in --when, as the reading's own refusals are shown.
+        // by, or the flow leaves its surface) at its variable's value in --when, as the
+        // reading's own refusals are shown.
         if let Some(placed) = self.condition_refusal(when, &e) {
             return placed.into();
         }

@@ -222,7 +222,8 @@ fn a_jacobi_violation_names_every_bracket_its_identity_depends_on() {
             ("\"{g3, M1}\" = \"g2\"", "\"{g3, M1}\" = \"-g2\""),
             "14:1",
             "−2 g2, not 0; it depends on the declared {M1, M2}, {M3, g1}, {g1, M2} and {g3, M1}, \
-             and the 3 identities that fail all depend on {g3, M1}, on no other of these\
+             and the 3 identities that fail all depend on {g3, M1}, on no other of these: if one \
+             entry alone is wrong, it is that one\
              \n 14 | \"{g3, M1}\" = \"-g2\"",
         ),
         // The sign of the first one turned.
@@ -231,7 +232,8 @@ fn a_jacobi_violation_names_every_bracket_its_identity_depends_on() {
             ("\"{M1, M2}\" = \"M3\"", "\"{M1, M2}\" = \"-M3\""),
             "6:1",
             "2 g2, not 0; it depends on the declared {M1, M2}, {M3, g1}, {g1, M2} and {g3, M1}, \
-             and the 2 identities that fail all depend on {M1, M2}, on no other of these\
+             and the 2 identities that fail all depend on {M1, M2}, on no other of these: if one \
+             entry alone is wrong, it is that one\
              \n 6 | \"{M1, M2}\" = \"-M3\"",
         ),
         // A pair of the triple with another value, whose leaving out keeps the residual.
@@ -240,7 +242,8 @@ fn a_jacobi_violation_names_every_bracket_its_identity_depends_on() {
             ("\"{g1, M2}\" = \"g3\"", "\"{g1, M2}\" = \"g1\""),
             "12:1",
             "−g2, not 0; it depends on the declared {M1, M2}, {M3, g1} and {g1, M2}, and the 4 \
-             identities that fail all depend on {g1, M2}, on no other of these\
+             identities that fail all depend on {g1, M2}, on no other of these: if one entry \
+             alone is wrong, it is that one\
              \n 12 | \"{g1, M2}\" = \"g1\"",
         ),
     ];

@@ -169,7 +169,7 @@ pub struct JacobiViolation {
     /// of the last bracket that the identity of the triple depends on (one of two of its
     /// variables, or one whose leaving out alone changes the residual; the message names them
     /// all), or, where several identities fail, the last of those that every failing one
-    /// depends on: where a file shows the violation.
+    /// compared (up to 17) depends on: where a file shows the violation.
     pub bracket: usize,
 }
 

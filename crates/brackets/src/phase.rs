@@ -444,8 +444,15 @@ impl PhaseSpace {
                                 true => format!("the {failing} identities that fail"),
                                 false => format!("the first {compared} of the {failing} that fail"),
                             };
+                            // Two wrong entries may break identities that share only a
+                            // right one, so the inference is said with its premise.
+                            let which = match shared.len() {
+                                1 => "it is that one",
+                                _ => "it is one of those",
+                            };
                             violation.message.push_str(&format!(
-                                ", and {identities} all depend on {}, on no other of these",
+                                ", and {identities} all depend on {}, on no other of these: \
+                                 if one entry alone is wrong, {which}",
                                 list(shared)
                             ));
                             &narrowed.shared
@@ -998,7 +1005,7 @@ mod tests {
         assert!(
             violation.message.ends_with(
                 ", and the first 17 of the 19 that fail all depend on {v1, v2}, on no other \
-                 of these"
+                 of these: if one entry alone is wrong, it is that one"
             ),
             "{}",
             violation.message
