@@ -227,6 +227,9 @@ pub struct SearchFacts {
     pub angles: Vec<String>,
     /// See [`SearchFacts::coordinates`].
     pub left_out: Vec<String>,
+    /// Those of [`SearchFacts::left_out`] that the condition sets to a function of the other
+    /// phase variables (`M3` at `M3 = −(M1γ1 + M2γ2)/γ3`), not to a constant.
+    pub left_out_as_functions: Vec<String>,
     /// The parameters and the condition.
     pub parameters: ParameterFacts,
     /// The linear system: unknowns, equations, independent blocks, unknowns of the largest.

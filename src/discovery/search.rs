@@ -875,6 +875,7 @@ impl Shared {
             poisson: names_of(&r.variables.poisson),
             angles: names_of(&r.variables.angles),
             left_out: names_of(&r.variables.left_out),
+            left_out_as_functions: names_of(&r.variables.left_out_as_functions),
             parameters: parameter_facts(
                 vars,
                 &r.parameters,

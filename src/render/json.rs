@@ -94,7 +94,8 @@
 //!                "outcome" } ],
 //!   "searches": [ { "section", "space": { "momenta_degree", "positions_degree", "trig_degree",
 //!                   "laurent", "coordinates", "momenta", "angles", "left_out",
-//!                   "poisson_degree", "poisson_variables", "denominators_degree",
+//!                   "left_out_as_functions" (of "left_out", those the condition sets to a
+//!                   function of the others, not to a constant), "poisson_degree", "poisson_variables", "denominators_degree",
 //!                   "radicals_degree" },
 //!                   "parameters", "unknowns", "equations", "blocks", "largest_block",
 //!                   "dimension", "by_momenta_degree": [int] (≤ j), "counts": [[int]]
@@ -511,6 +512,7 @@ fn search(f: &SearchFacts, section: u32) -> Value {
             "momenta": f.momenta,
             "angles": f.angles,
             "left_out": f.left_out,
+            "left_out_as_functions": f.left_out_as_functions,
             "poisson_degree": s.poisson_degree,
             "poisson_variables": f.poisson,
             "denominators_degree": s.denominators_degree,

@@ -2641,6 +2641,7 @@ fn search_json_gives_the_space_and_dimensions_as_data() {
     assert_eq!(space["coordinates"], serde_json::json!(["x", "y"]));
     assert_eq!(space["momenta"], serde_json::json!(["p_x", "p_y"]));
     assert_eq!(space["left_out"], serde_json::json!(["p_theta"]));
+    assert_eq!(space["left_out_as_functions"], serde_json::json!([]));
     let said = format!(
         "{} unknowns, {} linear equations over Q, in {} independent blocks (the largest has {} \
          unknowns)",

@@ -770,7 +770,8 @@ eigenvalue = "-i*m*(1/A - 1/C)*M3"
 /// A condition that sets a Poisson variable to a function of the others, here the
 /// Kovalevskaya top on the level set `M·γ = 0` of its area integral, leaves it out of the
 /// search's space as the surface's graph, not as a constant: the report said "every function
-/// of it is an integral", which `M3 = −(M1 γ1 + M2 γ2)/γ3` is not.
+/// of it is an integral", which `M3 = −(M1 γ1 + M2 γ2)/γ3` is not; JSON's space names it under
+/// `left_out_as_functions` as well as `left_out`, where it named it as a constant's.
 #[test]
 fn a_poisson_variable_set_to_a_function_is_left_out_as_no_constant() {
     let out = superint(&[
@@ -794,6 +795,22 @@ fn a_poisson_variable_set_to_a_function_is_left_out_as_no_constant() {
         ) && !flat.contains("every function of it is an integral"),
         "{flat}"
     );
+    // JSON tells it from a constant too.
+    let json = superint(&[
+        "search",
+        "systems/kovalevskaya-top.toml",
+        "--poisson-degree",
+        "2",
+        "--when",
+        "M3 = -(M1*gamma1 + M2*gamma2)/gamma3",
+        "--format",
+        "json",
+    ]);
+    assert_eq!(json.status.code(), Some(0), "{}", text(&json.stderr));
+    let v: Value = serde_json::from_slice(&json.stdout).expect("JSON");
+    let space = &v["searches"][0]["space"];
+    assert_eq!(space["left_out"], serde_json::json!(["M3"]));
+    assert_eq!(space["left_out_as_functions"], serde_json::json!(["M3"]));
 }
 
 /// A condition's or a starting point's left side that names no variable lists the kinds it may
