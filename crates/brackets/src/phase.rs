@@ -407,74 +407,100 @@ impl PhaseSpace {
         // The atoms and radicals first: a declared value with `r = √(x² + y²)` in it brings
         // `{p_x, r} = −x/r` into the identity, which a check without their brackets missed.
         self.declare_atoms()?;
-        match self.check_jacobi() {
-            Err(EngineError::Jacobi(mut violation)) => {
-                let depended = self.depended_on(violation.triple, &violation.residual)?;
-                let list = |ks: &[usize]| {
-                    let named: Vec<String> = ks
-                        .iter()
-                        .map(|&k| {
-                            let DeclaredBracket { a, b, .. } = &self.declared[k];
-                            let [ua, ub] = [a, b].map(|v| self.vars.variable(*v).unicode());
-                            format!("{{{ua}, {ub}}}")
-                        })
-                        .collect();
-                    match named.split_last() {
-                        Some((last, [])) => last.clone(),
-                        Some((last, others)) => format!("{} and {last}", others.join(", ")),
-                        None => String::new(),
-                    }
-                };
-                if !depended.is_empty() {
-                    let all = list(&depended);
-                    violation
-                        .message
-                        .push_str(&format!("; it depends on the declared {all}"));
-                }
-                let narrowed = self.depended_on_by_every_failure(&depended)?;
-                let shown =
-                    match narrowed.shared.len() < depended.len() && !narrowed.shared.is_empty() {
-                        true => {
-                            let Narrowed {
-                                compared,
-                                failing,
-                                shared,
-                            } = &narrowed;
-                            let identities = match compared == failing {
-                                true => format!("the {failing} identities that fail"),
-                                false => format!("the first {compared} of the {failing} that fail"),
-                            };
-                            // Two wrong entries may break identities that share only a
-                            // right one, so the inference is said with its premise.
-                            let which = match shared.len() {
-                                1 => "it is that one",
-                                _ => "it is one of those",
-                            };
-                            violation.message.push_str(&format!(
-                                ", and {identities} all depend on {}, on no other of these: \
-                                 if one entry alone is wrong, {which}",
-                                list(shared)
-                            ));
-                            &narrowed.shared
-                        }
-                        false => &depended,
-                    };
-                violation.bracket = places[shown.last().copied().unwrap_or(self.given - 1)];
-                Err(EngineError::Jacobi(violation))
-            }
-            checked => checked.map(|()| self),
+        let failures = self.jacobi_failures()?;
+        match failures.is_empty() {
+            true => Ok(self),
+            false => Err(EngineError::Jacobi(self.violation(&failures, &places)?)),
         }
     }
 
-    /// Those of `depended` (the brackets the first failing Jacobi identity depends on,
+    /// The violation of the Jacobi identity that `failures` ([`Self::jacobi_failures`], not
+    /// empty) show, said of the first: its residual, the declared brackets it depends on and,
+    /// where several fail, those of them every failing one depends on, shown at the last in
+    /// `places` (each declared bracket's place in the list given) of those, or of the first's.
+    fn violation(
+        &self,
+        failures: &[([Var; 3], Expr)],
+        places: &[usize],
+    ) -> Result<Box<JacobiViolation>, EngineError> {
+        let (triple, residual) = &failures[0];
+        let [ua, ub, uc] = triple.map(|v| self.vars.variable(v).unicode());
+        // A long residual in part, with its size: in full it was a message of 1.2 MB (its
+        // terms stay in `residual`).
+        let mut message = format!(
+            "the declared brackets break the Jacobi identity: {{{ua}, {{{ub}, {uc}}}}} + \
+             {{{ub}, {{{uc}, {ua}}}}} + {{{uc}, {{{ua}, {ub}}}}} = {}, not 0",
+            residual.brief_excerpt()
+        );
+        let depended = self.depended_on(*triple, residual)?;
+        if !depended.is_empty() {
+            let all = self.named_brackets(&depended);
+            message.push_str(&format!("; it depends on the declared {all}"));
+        }
+        let narrowed = self.depended_on_by_every_failure(&depended, failures)?;
+        let Narrowed {
+            compared,
+            failing,
+            shared,
+        } = &narrowed;
+        let shown = match shared.len() < depended.len() && !shared.is_empty() {
+            true => {
+                let identities = match compared == failing {
+                    true => format!("the {failing} identities that fail"),
+                    false => format!("the first {compared} of the {failing} that fail"),
+                };
+                // Two wrong entries may break identities that share only a right one, so the
+                // inference is said with its premise.
+                let which = match shared.len() {
+                    1 => "it is that one",
+                    _ => "it is one of those",
+                };
+                message.push_str(&format!(
+                    ", and {identities} all depend on {}, on no other of these: if one entry \
+                     alone is wrong, {which}",
+                    self.named_brackets(shared)
+                ));
+                shared
+            }
+            false => &depended,
+        };
+        Ok(Box::new(JacobiViolation {
+            triple: *triple,
+            message,
+            residual: residual.clone(),
+            bracket: places[shown.last().copied().unwrap_or(self.given - 1)],
+        }))
+    }
+
+    /// The declared brackets at `ks` as a list in words, `{M1, M2}, {M3, γ1} and {γ3, M1}`.
+    fn named_brackets(&self, ks: &[usize]) -> String {
+        let named: Vec<String> = ks
+            .iter()
+            .map(|&k| {
+                let DeclaredBracket { a, b, .. } = &self.declared[k];
+                let [ua, ub] = [a, b].map(|v| self.vars.variable(*v).unicode());
+                format!("{{{ua}, {ub}}}")
+            })
+            .collect();
+        match named.split_last() {
+            Some((last, [])) => last.clone(),
+            Some((last, others)) => format!("{} and {last}", others.join(", ")),
+            None => String::new(),
+        }
+    }
+
+    /// Those of `depended` (the brackets the first of `failures` depends on,
     /// [`Self::depended_on`]) that every failing one depends on, with how many fail: a wrong
     /// bracket breaks only identities that depend on it, so where several fail, it is among
     /// those they share, which narrows the first one's list (a wrong sign in e(3)*'s
     /// `{M1, M2}` breaks two identities, and `{M1, M2}` is the one bracket both depend on).
     /// The first failing identity and [`Self::NARROWED_BY`] more are compared, which bounds
     /// the work on this error's path.
-    fn depended_on_by_every_failure(&self, depended: &[usize]) -> Result<Narrowed, EngineError> {
-        let failures = self.jacobi_failures()?;
+    fn depended_on_by_every_failure(
+        &self,
+        depended: &[usize],
+        failures: &[([Var; 3], Expr)],
+    ) -> Result<Narrowed, EngineError> {
         let mut shared = depended.to_vec();
         let others = failures.iter().skip(1).take(Self::NARROWED_BY);
         for (triple, residual) in others.clone() {
@@ -530,35 +556,10 @@ impl PhaseSpace {
             + &self.bracket(&fc, &self.bracket(&fa, &fb)?)?)
     }
 
-    /// Checks `{a, {b, c}} + {b, {c, a}} + {c, {a, b}} = 0` for every triple of distinct phase
-    /// variables with a Poisson variable among them (a triple of canonical variables has
-    /// constant brackets, so it holds); with it on the coordinates, the bracket is Poisson.
-    fn check_jacobi(&self) -> Result<(), EngineError> {
-        for triple in self.jacobi_triples() {
-            let residual = self.jacobiator(triple)?;
-            if residual.vanishes()? {
-                continue;
-            }
-            let [ua, ub, uc] = triple.map(|v| self.vars.variable(v).unicode());
-            // A long residual in part, with its size: in full it was a message of
-            // 1.2 MB (its terms stay in `residual`).
-            let shown = residual.brief_excerpt();
-            return Err(EngineError::Jacobi(Box::new(JacobiViolation {
-                triple,
-                message: format!(
-                    "the declared brackets break the Jacobi identity: \
-                     {{{ua}, {{{ub}, {uc}}}}} + {{{ub}, {{{uc}, {ua}}}}} + \
-                     {{{uc}, {{{ua}, {ub}}}}} = {shown}, not 0"
-                ),
-                residual,
-                bracket: 0,
-            })));
-        }
-        Ok(())
-    }
-
-    /// Every triple whose Jacobi identity fails, with its residual, in the order
-    /// [`Self::check_jacobi`] takes them.
+    /// Every triple whose Jacobi identity `{a, {b, c}} + {b, {c, a}} + {c, {a, b}} = 0` fails,
+    /// with its residual, of those [`Self::jacobi_triples`] lists (a triple of canonical
+    /// variables has constant brackets, so it holds; with it on the coordinates, the bracket
+    /// is Poisson): none where the declared brackets are a Poisson bracket.
     fn jacobi_failures(&self) -> Result<Vec<([Var; 3], Expr)>, EngineError> {
         let mut failures = Vec::new();
         for triple in self.jacobi_triples() {
