@@ -10,8 +10,8 @@ use brackets::search::{SearchOptions, SearchSpace, DEFAULT_MAX_PRODUCTS};
 use brackets::{EngineError, System};
 use clap::Args;
 use superint::discovery::{
-    builtin_system, builtin_system_refused, command_line_search_report, parse_condition,
-    parse_condition_checked, parse_fixed, parse_known, parse_symbolic, ListRefusal,
+    builtin_system, builtin_system_refused, command_line_search_report, parse_condition_checked,
+    parse_fixed, parse_known, parse_symbolic, ListRefusal,
 };
 use superint::render::{render, Format};
 use superint::report::{with_article, Report};
@@ -520,45 +520,31 @@ impl Subject {
         };
         match self {
             Subject::File(f) => Some(f.condition_refusal(w, e)),
-            Subject::Builtin(..) => {
-                let refuse = |span, message| {
-                    FileError::at(ErrorKind::Condition, COMMAND_LINE, w, span, message)
-                };
-                let parse = |s: &str, at| self.parse_placed(w, s, at);
-                parse_condition_checked(
-                    self.system(),
-                    w,
-                    &parse,
-                    &refuse,
-                    Given::CommandLineAboutBuiltIn,
-                    &|_| Err(e.clone()),
-                )
-                .err()
-            }
+            Subject::Builtin(..) => self.builtin_condition(w, &|_| Err(e.clone())).err(),
         }
     }
 
     pub fn condition(&self, when: Option<&str>) -> anyhow::Result<Option<brackets::Condition>> {
         when.map(|w| match self {
             Subject::File(f) => f.condition(w).map_err(anyhow::Error::from),
-            Subject::Builtin(..) => {
-                // Refused as a file's command-line condition is: `<command line>:1:C:`, the
-                // numbered line and a caret.
-                let refuse = |span, message| {
-                    FileError::at(ErrorKind::Condition, COMMAND_LINE, w, span, message)
-                };
-                let parse = |s: &str, at| self.parse_placed(w, s, at);
-                parse_condition(
-                    self.system(),
-                    w,
-                    &parse,
-                    &refuse,
-                    Given::CommandLineAboutBuiltIn,
-                )
-                .map_err(anyhow::Error::from)
-            }
+            Subject::Builtin(..) => self.builtin_condition(w, &|_| Ok(())).map_err(Into::into),
         })
         .transpose()
+    }
+
+    /// A built-in system's condition `w` from the command line, with what its use asks of it
+    /// besides (`check`, [`parse_condition_checked`]), refused as a file's command-line
+    /// condition is: `<command line>:1:C:`, the numbered line and a caret.
+    fn builtin_condition(
+        &self,
+        w: &str,
+        check: &dyn Fn(&brackets::Condition) -> Result<(), EngineError>,
+    ) -> Result<brackets::Condition, FileError> {
+        let refuse =
+            |span, message| FileError::at(ErrorKind::Condition, COMMAND_LINE, w, span, message);
+        let parse = |s: &str, at| self.parse_placed(w, s, at);
+        let given = Given::CommandLineAboutBuiltIn;
+        parse_condition_checked(self.system(), w, &parse, &refuse, given, check)
     }
 
     /// The parameters `--fix` gives values, refused as a condition is
@@ -707,6 +693,7 @@ mod tests {
     use clap::{CommandFactory, Parser};
 
     use super::*;
+    use superint::discovery::parse_condition;
 
     #[derive(Parser)]
     struct Command {

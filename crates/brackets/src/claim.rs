@@ -505,12 +505,12 @@ impl Condition {
         for side in sides {
             self.within(side.vars())?;
         }
-        let divisor = sides
-            .iter()
-            .find_map(|side| Condition::sets_a_divisor_to_zero(&self.subs, side));
+        let divisor = sides.iter().find_map(|side| {
+            Condition::sets_a_divisor_to_zero(&self.subs, side).map(|v| (v, side.vars()))
+        });
         match divisor {
-            Some(v) => {
-                let name = self.subs[0].1.vars().variable(v).unicode().to_string();
+            Some((v, vars)) => {
+                let name = vars.variable(v).unicode();
                 Err(refused(
                     v,
                     format!(
