@@ -264,6 +264,22 @@ pub struct SearchFacts {
     /// With `--new-only`: the known integrals, the products formed, and the dimension they
     /// generate.
     pub new_only: Option<brackets::search::NewIntegrals>,
+    /// With `--on`: the level set searched on.
+    pub level_set: Option<LevelSetFacts>,
+}
+
+/// The level set a search was restricted to (`superint search --on`), for JSON.
+#[derive(Clone, Debug)]
+#[non_exhaustive]
+pub struct LevelSetFacts {
+    /// As given (`M1*gamma1 + M2*gamma2 + M3*gamma3 = 0`).
+    pub text: String,
+    /// `P = EXPR − VALUE`, in ASCII.
+    pub polynomial: String,
+    /// `LM(P)` in the division's order, in ASCII.
+    pub leading_monomial: String,
+    /// The space's unknowns it divides, left out.
+    pub left_out: usize,
 }
 
 /// What `superint closure` found.

@@ -69,6 +69,13 @@ pub struct SearchArgs {
     /// The condition applied after the bracket, such as 'p_theta = m*I*omega/n'.
     #[arg(long, value_name = "CONDITION")]
     when: Option<String>,
+    /// Search on a level set EXPR = VALUE that the flow of H keeps, such as
+    /// 'M1*gamma1 + M2*gamma2 + M3*gamma3 = 0' (EXPR a polynomial in the coordinates, momenta
+    /// and Poisson variables, VALUE a constant): finds the integrals K, in normal form modulo
+    /// P = EXPR − VALUE, with {K, H} = Q·P, each identity checked exactly. Not with --when,
+    /// --symbolic or --new-only.
+    #[arg(long, value_name = "LEVEL")]
+    on: Option<String>,
     /// Total degree in the momenta (an angle's momentum that --when fixes is left out)
     /// [default: 2]. A degree above 0 is refused on a system without such variables.
     #[arg(long, allow_negative_numbers = true,
@@ -227,6 +234,111 @@ impl SearchArgs {
             ),
             None => Ok(()),
         }
+    }
+}
+
+impl SearchArgs {
+    /// Refuses, with `--on`, what a search on a level set does not take: `--when` (two
+    /// restrictions at once), `--symbolic` and `--new-only` (whose products would have to be
+    /// reduced modulo the level set's polynomial too).
+    fn refuse_beside_level_set(&self) -> anyhow::Result<()> {
+        let refused = [
+            (
+                self.when.is_some(),
+                "--when",
+                "search on the level set alone, or under the condition alone",
+            ),
+            (
+                self.symbolic.is_some(),
+                "--symbolic",
+                "the parameters are fixed (1 unless --fix says otherwise) and each integral \
+                 found is lifted back to them where it can be, and proved there",
+            ),
+            (
+                self.new_only,
+                "--new-only",
+                "which integrals are new would need the products of integrals modulo the level \
+                 set's polynomial, which is not done",
+            ),
+        ];
+        match refused.iter().find(|(given, _, _)| *given) {
+            Some((_, option, why)) => bail!("--on does not take {option}: {why}"),
+            None => Ok(()),
+        }
+    }
+}
+
+/// The level set `text` of `--on`, `EXPR = VALUE`, read and checked
+/// ([`brackets::search::LevelSet::check`], at the values `fixed`): each refusal placed in
+/// `text` as a condition's is, `<command line>:1:C:` with a caret, at the part it is about.
+fn level_set(
+    subject: &Subject,
+    text: &str,
+    fixed: &[(trigpoly::Var, trigpoly::Rational)],
+) -> anyhow::Result<brackets::search::LevelSet> {
+    let refuse = |span: std::ops::Range<usize>, message: String| -> anyhow::Error {
+        let error = FileError::at(ErrorKind::Condition, COMMAND_LINE, text, span, message);
+        named("--on", error)
+    };
+    let signs: Vec<usize> = text.match_indices('=').map(|(i, _)| i).collect();
+    let eq = match signs.as_slice() {
+        [] => {
+            return Err(refuse(
+                0..text.len(),
+                "no '=': write the level set as EXPR = VALUE, such as \
+                 'M1*gamma1 + M2*gamma2 + M3*gamma3 = 0'"
+                    .into(),
+            ))
+        }
+        [eq] => *eq,
+        [_, second, ..] => {
+            return Err(refuse(
+                *second..*second + 1,
+                "a second '=': a level set is one equation, EXPR = VALUE".into(),
+            ))
+        }
+    };
+    // Each side where it stands, without the blanks around it (an empty side at the sign).
+    let trimmed = |start: usize, end: usize| {
+        let part = &text[start..end];
+        let from = start + (part.len() - part.trim_start().len());
+        let to = end - (part.len() - part.trim_end().len());
+        match from < to {
+            true => from..to,
+            false => eq..eq + 1,
+        }
+    };
+    let (lhs, rhs) = (trimmed(0, eq), trimmed(eq + 1, text.len()));
+    if text[lhs.clone()].trim().is_empty() || lhs == (eq..eq + 1) {
+        return Err(refuse(eq..eq + 1, "no expression before '='".into()));
+    }
+    if rhs == (eq..eq + 1) {
+        return Err(refuse(eq..eq + 1, "no value after '='".into()));
+    }
+    let place = |e: FileError| anyhow!(e.to_string());
+    let expr = subject
+        .listed_error("--on", text, lhs.clone())
+        .map_err(place)?;
+    let value = subject
+        .listed_error("--on", text, rhs.clone())
+        .map_err(place)?;
+    let vars = subject.system().vars();
+    if let Some(v) = vars
+        .vars()
+        .find(|&v| value.contains(v) && vars.variable(v).kind() != VarKind::Parameter)
+    {
+        return Err(refuse(
+            rhs,
+            format!(
+                "the value holds {}: it must be a constant (numbers and parameters)",
+                vars.variable(v).unicode()
+            ),
+        ));
+    }
+    let level = brackets::search::LevelSet::new(text, expr, value);
+    match level.check(subject.system(), fixed) {
+        Ok(()) => Ok(level),
+        Err(e) => Err(refuse(lhs, e.to_string())),
     }
 }
 
@@ -632,6 +744,10 @@ fn search(a: &SearchArgs, subject: &Subject, format: Format) -> anyhow::Result<R
     let mut options = SearchOptions::new(space);
     options.condition = subject.condition(a.when.as_deref())?;
     options.fixed = subject.fixed(a.fix.as_deref())?;
+    if let Some(on) = &a.on {
+        a.refuse_beside_level_set()?;
+        options.on = Some(level_set(subject, on, &options.fixed)?);
+    }
     if let Some(names) = &a.symbolic {
         options.symbolic = subject.symbolic(names)?;
         options.space = options.space.parameters_degree(a.parameters_degree);

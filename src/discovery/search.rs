@@ -5,13 +5,15 @@ use crate::render::tex::Names;
 use crate::render::Format;
 use std::time::Instant;
 
-use brackets::search::{search, Integral, NewIntegrals, SearchOptions, SearchResult, SearchSpace};
+use brackets::search::{
+    search, Integral, NewIntegrals, SearchOptions, SearchResult, SearchSpace, SearchedLevel,
+};
 use brackets::{EngineError, System};
 use trigpoly::{Expr, GaussianRational, Rational, Style, Var, VarKind, Vars};
 
 use crate::report::{
-    counted, first_free, listed, ClaimResult, Entry, Equation, Equations, Facts, Report,
-    SearchFacts, Section, SummaryKind,
+    counted, first_free, listed, ClaimResult, Entry, Equation, Equations, Facts, LevelSetFacts,
+    Report, SearchFacts, Section, SummaryKind,
 };
 
 use crate::system_file::{Caller, LoadedSystem};
@@ -691,11 +693,14 @@ fn search_report_with(
         shared.search_section(system, options, &r)?,
         shared.basis_section(&r, restate)?,
     ];
-    let when = r
+    let mut when = r
         .condition
         .as_ref()
         .map(|c| format!(" at `{c}`"))
         .unwrap_or_default();
+    if let Some(on) = &r.on {
+        when += &format!(" on the level set `{}`", level_set_shown(on));
+    }
     Ok((
         Report {
             title: format!("Integrals of {}{when}", name),
@@ -721,6 +726,8 @@ struct Shared {
     letter: &'static str,
     /// The letter of their complex forms, `A1, …`.
     complex: &'static str,
+    /// The letter of the quotients on a level set, `Q1, …`.
+    quotient: &'static str,
     /// The integrals shown (all, the new ones, or the generators), by index in the basis.
     shown: Vec<usize>,
     /// The system's names in LaTeX.
@@ -751,6 +758,7 @@ impl Shared {
                 .map(|m| parameter_names(vars, &m.parameters)),
             letter: label_letter(system, taken, &["I", "J", "Φ", "Ξ"], r.basis.len()),
             complex: label_letter(system, taken, &["A", "B", "Ψ", "Λ"], r.basis.len()),
+            quotient: label_letter(system, taken, &["Q", "R", "Ω", "Π"], r.basis.len()),
             shown: shown_integrals(r),
             names: Names::of_system(system),
             caller,
@@ -790,6 +798,7 @@ impl Shared {
             Entry::Equations(Equations::new(String::new(), vec![Equation::new("H", h)])),
             Entry::Text(space_text(r)),
         ];
+        entries.extend(r.on.as_ref().map(|on| Entry::Text(level_set_text(on))));
         entries.extend(hamiltonian_note(system, options, self.caller)?);
         let for_every_value = (0..r.basis.len())
             .filter(|&i| r.for_every_value(i).is_some())
@@ -898,6 +907,12 @@ impl Shared {
             generators: (r.module.as_ref())
                 .map(|m| m.generators.iter().map(|&i| self.label(i)).collect()),
             new_only: r.new.clone(),
+            level_set: r.on.as_ref().map(|on| LevelSetFacts {
+                text: on.level.text.clone(),
+                polynomial: on.polynomial.render(Style::Ascii),
+                leading_monomial: on.leading_monomial.render(Style::Ascii),
+                left_out: on.left_out,
+            }),
         })))
     }
 
@@ -927,6 +942,7 @@ impl Shared {
         let restated = restate.map(|f| f.integrals(&written)).unwrap_or_default();
         entries.push(self.shown_equations(r, &written, &restated));
         entries.extend(self.complex_forms(r, restate));
+        entries.extend(self.quotients(r));
         entries.extend(self.integral_claims(r, &written));
         entries.extend(self.rest_proved(r));
         Ok(Section {
@@ -1025,9 +1041,29 @@ impl Shared {
             .map(|(&i, w)| {
                 let f = &r.basis[i];
                 let label = self.label(i);
+                // On a level set `P = 0`: `{I, H} = Q·P`, the quotient `Q` shown above.
+                let (claim, written) = match (&r.on, &f.on_level) {
+                    (Some(_), Some(proof)) if !proof.quotient.is_zero() => (
+                        format!(
+                            "{{{label}, H}} = {} ({})",
+                            self.quotient_label(i),
+                            proof.divisor
+                        ),
+                        format!(
+                            "{{{}, H}} = ({})*({})",
+                            w.render(Style::Ascii),
+                            proof.quotient.render(Style::Ascii),
+                            proof.divisor.render(Style::Ascii)
+                        ),
+                    ),
+                    _ => (
+                        format!("{{{label}, H}} = 0"),
+                        format!("{{{}, H}} = 0", w.render(Style::Ascii)),
+                    ),
+                };
                 let c = ClaimResult::derived(
                     &label,
-                    &format!("{{{label}, H}} = 0"),
+                    &claim,
                     f.proved_fixed,
                     proof_note(f, self.held.fixed(), self.symbolic.as_deref()),
                 )
@@ -1035,11 +1071,45 @@ impl Shared {
                     .held
                     .at(f.symbolic.is_none() && !r.parameters.is_empty()));
                 Entry::Claim(match self.facts {
-                    true => c.written(&format!("{{{}, H}} = 0", w.render(Style::Ascii))),
+                    true => c.written(&written),
                     false => c,
                 })
             })
             .collect()
+    }
+
+    /// The label of the quotient `Q` of basis integral `i` on a level set: `Q4` beside `I4`.
+    fn quotient_label(&self, i: usize) -> String {
+        format!("{}{}", self.quotient, i + 1)
+    }
+
+    /// On a level set `P = 0`, the quotient `Q` of each shown integral's bracket with `H` on
+    /// division by `P`, by which `{I, H} = Q·P` is proved: recomputed, not trusted.
+    fn quotients(&self, r: &SearchResult) -> Option<Entry> {
+        let on = r.on.as_ref()?;
+        let lines: Vec<Equation> = (self.shown.iter())
+            .filter_map(|&i| {
+                let proof = r.basis[i].on_level.as_ref()?;
+                // An integral everywhere, `{I, H} = 0`, has none.
+                if proof.quotient.is_zero() {
+                    return None;
+                }
+                Some(Equation::new(
+                    &self.quotient_label(i),
+                    proof.quotient.clone(),
+                ))
+            })
+            .collect();
+        if lines.is_empty() {
+            return None;
+        }
+        Some(Entry::Equations(Equations::new(
+            format!(
+                "The integrals on the level set alone: `{{{}, H}} = {} P`, `P = {}`, with",
+                self.letter, self.quotient, on.polynomial
+            ),
+            lines,
+        )))
     }
 
     /// The shown integrals of trigonometric order `k > 0` as `I = Re(A e^{−ikθ})`, when the
@@ -1175,6 +1245,14 @@ fn unlifted_note(r: &SearchResult, vars: &Vars, caller: Caller) -> String {
         .collect();
     let others = other_values(&r.parameters, &names);
     let how = match caller {
+        // On a level set nothing is kept symbolic: other values are what is left.
+        Caller::CommandLine if r.on.is_some() => {
+            format!("compare with other values (`--fix {}`)", others.join(","))
+        }
+        Caller::Program if r.on.is_some() => format!(
+            "compare with other values (`SearchOptions::fixed`, such as {})",
+            others.join(", ").replace('=', " = ")
+        ),
         Caller::CommandLine => format!(
             "keep them symbolic (`--symbolic {}`), or compare with other values (`--fix {}`)",
             names.join(","),
@@ -1321,4 +1399,26 @@ fn written_forms(r: &SearchResult, shown: &[usize]) -> Result<Vec<Expr>, EngineE
         })
         .collect::<Result<_, _>>()
         .map_err(EngineError::from)
+}
+
+/// A level set as the report shows it: `M1γ1 + M2γ2 + M3γ3 = 0`.
+fn level_set_shown(on: &SearchedLevel) -> String {
+    format!("{} = {}", on.level.expr, on.level.value)
+}
+
+/// What a search on a level set does: the polynomial `P`, its leading monomial, the
+/// monomials left out, and what the integrals found are.
+fn level_set_text(on: &SearchedLevel) -> String {
+    format!(
+        "On the level set `{}`, of `P = {}`, which the flow of `H` keeps (`{{P, H}}` is a \
+         multiple of `P`): the monomials divisible by its leading monomial `{}` (graded \
+         lexicographic order) are left out, {} (each is a combination of lower ones where \
+         `P = 0`), and each bracket `{{φ, H}}` is taken modulo `P`. The integrals found are \
+         the functions in normal form whose bracket with `H` is a multiple of `P`: they are \
+         conserved on the level set, and none of them vanishes there.",
+        level_set_shown(on),
+        on.polynomial,
+        on.leading_monomial,
+        counted(on.left_out, "unknown"),
+    )
 }

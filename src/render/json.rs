@@ -102,7 +102,11 @@
 //!                   (momenta degree exactly j, order k), "by_poisson_degree": [int] (≤ j in
 //!                   the Poisson variables), "poisson_counts": [[int]] (their degree exactly
 //!                   j, order k), "for_every_value": int,
-//!                   "shown": [ids], "new_only": { "known", "products", "generated" } | null } ],
+//!                   "shown": [ids], "new_only": { "known", "products", "generated" } | null,
+//!                   "level_set": { "text", "polynomial" (P = EXPR − VALUE, ASCII),
+//!                          "leading_monomial" (ASCII), "left_out": int (unknowns it divides) }
+//!                          (only for `search --on`; each claim then reads `{I, H} = Q P`, its
+//!                          "ascii" the identity `{K, H} = (Q)*(P)`) } ],
 //!   "closures": [ { "section", "generators", "degree", "monomials", "rank", "parameters",
 //!                   "closes": bool, "outside": [[a, b]], "unlifted": int,
 //!                   "brackets": [ids], "relations": [ids] } ],
@@ -501,7 +505,7 @@ fn parameters(p: &ParameterFacts) -> Value {
 
 fn search(f: &SearchFacts, section: u32) -> Value {
     let s = &f.space;
-    json!({
+    let mut value = json!({
         "section": section,
         "space": {
             "momenta_degree": s.momenta_degree,
@@ -536,7 +540,20 @@ fn search(f: &SearchFacts, section: u32) -> Value {
             "products": n.products,
             "generated": n.generated,
         })),
-    })
+    });
+    // Only a search on a level set has the key, so that no other search's JSON changes.
+    if let (Some(l), Some(map)) = (&f.level_set, value.as_object_mut()) {
+        map.insert(
+            "level_set".into(),
+            json!({
+                "text": l.text,
+                "polynomial": l.polynomial,
+                "leading_monomial": l.leading_monomial,
+                "left_out": l.left_out,
+            }),
+        );
+    }
+    value
 }
 
 fn closure(f: &ClosureFacts, section: u32) -> Value {

@@ -852,3 +852,164 @@ fn a_left_side_that_names_no_variable_lists_the_poisson_variables_on_a_top() {
         assert!(stderr.contains(message), "{args:?}: {stderr}");
     }
 }
+
+/// `search --on`: on the Goryachev–Chaplygin top's area level set `M·γ = 0` the cubic
+/// integral `K` is found, lifted to `c`, with its proof `{K, H} = Q·P`, `Q = −c M2`, which
+/// JSON writes as an identity to read back and checks here by `bracket`; the level set is in
+/// JSON's search facts. Without `--on` no cubic integral is found.
+#[test]
+fn a_search_on_a_level_set_finds_the_goryachev_chaplygin_integral() {
+    let f = "systems/goryachev-chaplygin-top.toml";
+    let on = "M1*gamma1 + M2*gamma2 + M3*gamma3 = 0";
+    let args = [
+        "search",
+        f,
+        "--on",
+        on,
+        "--poisson-degree",
+        "3",
+        "--no-timings",
+    ];
+    let out = superint(&args);
+    assert_eq!(out.status.code(), Some(0), "{}", text(&out.stderr));
+    let stdout = text(&out.stdout);
+    for line in [
+        "Integrals of the Goryachev–Chaplygin top on the level set M1 γ1 + M2 γ2 + M3 γ3 = 0",
+        "I4 = M1² M3 + c M1 γ3 + M2² M3",
+        "= K",
+        "Q4 = −c M2",
+        "{I4, H} = Q4 (M1 γ1 + M2 γ2 + M3 γ3)",
+        "4 claims: 4 proved, 0 refuted",
+    ] {
+        assert!(stdout.contains(line), "{line}: {stdout}");
+    }
+    let json = superint(&[&args[..], &["--format", "json"]].concat());
+    assert_eq!(json.status.code(), Some(0), "{}", text(&json.stderr));
+    let v: Value = serde_json::from_slice(&json.stdout).expect("JSON");
+    let level = &v["searches"][0]["level_set"];
+    assert_eq!(level["text"], on);
+    assert_eq!(level["polynomial"], "M1*gamma1 + M2*gamma2 + M3*gamma3");
+    assert_eq!(level["leading_monomial"], "M1*gamma1");
+    assert_eq!(level["left_out"], 7);
+    let claims = v["claims"].as_array().expect("claims");
+    let written = claims
+        .iter()
+        .find_map(|c| c["ascii"].as_str().filter(|a| a.contains("-c*M2")))
+        .expect("the proof of K");
+    assert_eq!(
+        written,
+        "{M1^2*M3 + c*M1*gamma3 + M2^2*M3, H} = (-c*M2)*(M1*gamma1 + M2*gamma2 + M3*gamma3)"
+    );
+    // The identity, read back and proved for every c.
+    let (lhs, rhs) = written.split_once(" = ").unwrap();
+    let k = &lhs[1..lhs.len() - 4];
+    let bracket = superint(&["bracket", f, k, "H"]);
+    let shown = text(&bracket.stdout);
+    assert!(
+        shown.contains("= −c M2 (M1 γ1 + M2 γ2 + M3 γ3)"),
+        "{shown} vs {rhs}"
+    );
+    // A search of the same space without the level set has no cubic integral.
+    let everywhere = superint(&["search", f, "--poisson-degree", "3", "--no-timings"]);
+    let everywhere = text(&everywhere.stdout);
+    assert!(
+        everywhere.contains("Dimension of the space of integrals: 4.")
+            && !everywhere.contains("M1² M3"),
+        "{everywhere}"
+    );
+}
+
+/// `search --on` on canonical coordinates: the 1:2 oscillator on its energy level `H = 1`
+/// finds again the real and imaginary parts of its cubic integral `a² b̄`, in normal form,
+/// each with its quotient.
+#[test]
+fn a_search_on_an_energy_level_finds_the_cubic_integrals_of_the_oscillator() {
+    let out = superint(&[
+        "search",
+        "systems/anisotropic-oscillator-1-2.toml",
+        "--on",
+        "H = 1",
+        "--fix",
+        "M=1,omega=1",
+        "--momenta-degree",
+        "3",
+        "--positions-degree",
+        "3",
+        "--no-timings",
+    ]);
+    assert_eq!(out.status.code(), Some(0), "{}", text(&out.stderr));
+    let stdout = text(&out.stdout);
+    for line in [
+        "I3 = x p_x p_y − 2y p_x² − y p_y² − 4y³ + 2y",
+        "I4 = 2 p_x² p_y + p_y³ + 4xy p_x + 4y² p_y − 2 p_y",
+        "Q3 = −2 p_y",
+        "Q4 = −8y",
+        "4 claims: 4 proved, 0 refuted",
+    ] {
+        assert!(stdout.contains(line), "{line}: {stdout}");
+    }
+}
+
+/// `search --on` refuses what it cannot take, each refusal placed in the `--on` text with a
+/// caret (exit 2, no panic): an angle, a non-polynomial, a level set the flow leaves, a text
+/// with no `=`, a value of phase space, a parameter in the leading coefficient; and the
+/// options it does not take beside it.
+#[test]
+fn a_level_set_the_search_cannot_take_is_refused_in_place() {
+    let rotor = "systems/harmonic-rotor.toml";
+    let top = "systems/goryachev-chaplygin-top.toml";
+    for (file, on, expected) in [
+        (
+            rotor,
+            "cos(theta) + x = 0",
+            "<command line>:1:1: --on: the level set's expression holds an angle, θ",
+        ),
+        (
+            rotor,
+            "x/y = 1",
+            "<command line>:1:1: --on: the level set's expression has a negative power of y",
+        ),
+        (
+            rotor,
+            "x = 1",
+            "<command line>:1:1: --on: the flow of H leaves the level set: {P, H} = p_x/M for P = x − 1",
+        ),
+        (rotor, "x^2 + y^2", "<command line>:1:1: --on: no '='"),
+        (
+            rotor,
+            "x = y = 1",
+            "<command line>:1:7: --on: a second '=': a level set is one equation",
+        ),
+        (
+            top,
+            "gamma1 = M1",
+            "<command line>:1:10: --on: the value holds M1: it must be a constant",
+        ),
+        (
+            top,
+            "c*A = 0",
+            "<command line>:1:1: --on: the level set's polynomial P = c M1 γ1 + c M2 γ2 + c M3 γ3 has at its leading monomial M1 γ1 a coefficient that holds a parameter",
+        ),
+    ] {
+        let out = superint(&["search", file, "--on", on]);
+        let stderr = text(&out.stderr);
+        assert_eq!(out.status.code(), Some(2), "{on}: {stderr}");
+        assert!(stderr.contains(expected), "{on}: {stderr}");
+        assert!(stderr.contains(&format!(" 1 | {on}")) && stderr.contains('^'), "{stderr}");
+        assert!(!stderr.contains("panicked"), "{stderr}");
+    }
+    for (option, extra) in [
+        ("--when", vec!["--when", "c = 2"]),
+        ("--symbolic", vec!["--symbolic", "c"]),
+        ("--new-only", vec!["--new-only"]),
+    ] {
+        let args = [&["search", top, "--on", "A = 0"][..], &extra[..]].concat();
+        let out = superint(&args);
+        let stderr = text(&out.stderr);
+        assert_eq!(out.status.code(), Some(2), "{stderr}");
+        assert!(
+            stderr.contains(&format!("--on does not take {option}")),
+            "{stderr}"
+        );
+    }
+}

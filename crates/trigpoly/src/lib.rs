@@ -66,7 +66,10 @@ pub use number::{
     Coefficient, ExactDivisor, GaussianAcc, GaussianInteger, GaussianRational, Integer, IntegerAcc,
     IntegerRing, IntegerView, ParseGaussianError, ParseRationalError, Rational, RationalErrorKind,
 };
-pub use poly::{CosSinTerm, MonomialIndex, Point, Poly, ReducedRadical, Term, TrigMonomial};
+pub use poly::{
+    CosSinTerm, Division, DivisionOrder, DivisionRefusal, MonomialIndex, Point, Poly,
+    ReducedRadical, Term, TrigMonomial,
+};
 pub use print::{
     differential_latex, is_differential, is_differential_sign, render_number, superscript,
     Factored, Style, UnknownStyle, DIFFERENTIALS,

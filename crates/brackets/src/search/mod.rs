@@ -94,6 +94,7 @@
 //! ```
 
 mod independence;
+mod level_set;
 mod locate;
 mod new_only;
 mod options;
@@ -104,6 +105,7 @@ mod result;
 #[cfg(test)]
 mod tests;
 
+pub use level_set::{LevelProof, LevelSet};
 pub use options::{SearchOptions, SearchSpace, DEFAULT_MAX_PRODUCTS};
 pub(crate) use parameters::{check_parameters, off_vanishing_denominators};
 pub use parameters::{fix_parameters, GENERIC_VALUES};
@@ -111,7 +113,7 @@ pub(crate) use proof::is_phase_free;
 pub use proof::lift_and_prove;
 pub use result::{
     parameter_text, Integral, NewIntegrals, ParameterModule, SearchResult, SearchTimings,
-    SpaceVariables,
+    SearchedLevel, SpaceVariables,
 };
 
 use rustc_hash::FxHashMap;
@@ -129,6 +131,7 @@ use crate::modular::{self, SparseVec};
 use crate::scaling::{Lifter, Scaling};
 use crate::system::System;
 
+use level_set::OnLevel;
 use new_only::new_integrals;
 use parameters::{
     fixed_hamiltonian_and_condition, module_generators, parameter_multiples, parameter_values,
@@ -202,6 +205,7 @@ pub fn search(system: &System, options: &SearchOptions) -> Result<SearchResult, 
         parameters,
         denominator_zero_at_one,
         problem,
+        on,
     } = fixed_search_problem(system, options)?;
 
     // The images {φ_j, H} as real equations over Q, and their kernel, block by block.
@@ -243,6 +247,7 @@ pub fn search(system: &System, options: &SearchOptions) -> Result<SearchResult, 
     Ok(SearchResult {
         space: options.space,
         condition: condition.map(|c| c.text.clone()),
+        on,
         parameters,
         denominator_zero_at_one,
         liftable,
@@ -266,6 +271,8 @@ struct FixedSearch {
     /// The declared denominator that 1 makes zero, which moved its parameters off 1.
     denominator_zero_at_one: Option<Var>,
     problem: Problem,
+    /// The level set searched on, if any.
+    on: Option<SearchedLevel>,
 }
 
 /// The parameters' values for the linear algebra and the linear problem at those values,
@@ -278,6 +285,10 @@ fn fixed_search_problem(
     options: &SearchOptions,
 ) -> Result<FixedSearch, EngineError> {
     let condition = options.condition.as_ref();
+    if let Some(level) = &options.on {
+        refuse_beside_level_set(system, options)?;
+        level.check(system, &options.fixed)?;
+    }
     if let Some(c) = condition {
         c.kept_by_flow(system)?;
         c.defined_on(&[system.hamiltonian()], "the Hamiltonian")?;
@@ -285,6 +296,9 @@ fn fixed_search_problem(
     check_parameters(system.vars(), &options.symbolic, &options.fixed)?;
     refuse_unreal(system, options)?;
     let mut parameters = parameter_values(system, condition, &options.fixed, &options.symbolic);
+    if let Some(level) = &options.on {
+        with_level_parameters(system, level, &options.fixed, &mut parameters)?;
+    }
     let zero_at_one = off_vanishing_denominators(
         system.vars(),
         &mut parameters,
@@ -302,11 +316,79 @@ fn fixed_search_problem(
         new_only::refuse_given_known(system, &at, options)?;
     }
     let problem = fixed.problem(system, options, &parameters)?;
+    let (problem, on) = match &options.on {
+        Some(level) => {
+            let at = OnLevel::new(level, system, &parameters)?;
+            let leading_monomial = Expr::from_terms(
+                system.vars(),
+                [(trigpoly::GaussianRational::from(1), at.lead.clone())],
+            )?;
+            let (problem, left_out) = problem.restricted_to(at)?;
+            let searched = SearchedLevel {
+                level: level.clone(),
+                polynomial: level.polynomial()?,
+                leading_monomial,
+                left_out,
+            };
+            (problem, Some(searched))
+        }
+        None => (problem, None),
+    };
     Ok(FixedSearch {
         parameters,
         denominator_zero_at_one: zero_at_one,
         problem,
+        on,
     })
+}
+
+/// Refuses what a search on a level set does not take: a condition besides, parameters kept
+/// symbolic, new integrals, a system with denominators or radicals, a Laurent space.
+fn refuse_beside_level_set(system: &System, options: &SearchOptions) -> Result<(), EngineError> {
+    let refused = if options.condition.is_some() {
+        Some("a condition besides (search on the level set alone, or under the condition alone)")
+    } else if !options.symbolic.is_empty() {
+        Some("parameters kept symbolic (fix them, or leave them at 1, and the integrals found are lifted back where they can be)")
+    } else if options.new_only {
+        Some("new integrals only (the products of integrals would be taken modulo the level set's polynomial, which is not done)")
+    } else if !system.space().denominator_atoms().is_empty()
+        || !system.space().radicals().is_empty()
+    {
+        Some("a system with denominators or radicals")
+    } else if options.space.laurent {
+        Some("a Laurent space (negative powers of the coordinates)")
+    } else {
+        None
+    };
+    match refused {
+        Some(what) => Err(EngineError::Invalid(format!(
+            "a search on a level set does not take {what}"
+        ))),
+        None => Ok(()),
+    }
+}
+
+/// Adds to `parameters` those of the level set's polynomial that they lack, at their value in
+/// `given` or 1, in the order of their declaration.
+fn with_level_parameters(
+    system: &System,
+    level: &LevelSet,
+    given: &[(Var, Rational)],
+    parameters: &mut Vec<(Var, Rational)>,
+) -> Result<(), EngineError> {
+    let p = level.polynomial()?;
+    let vars = system.vars();
+    for v in vars.vars() {
+        if vars.variable(v).kind() == VarKind::Parameter
+            && p.contains(v)
+            && !parameters.iter().any(|(w, _)| *w == v)
+        {
+            let value = given.iter().find(|g| g.0 == v).map(|g| g.1.clone());
+            parameters.push((v, value.unwrap_or_else(Rational::one)));
+        }
+    }
+    parameters.sort_by_key(|(v, _)| v.index());
+    Ok(())
 }
 
 /// The kernel of the problem's equations and how many equations there are: the images
@@ -381,9 +463,12 @@ impl<'a> Prover<'a> {
         let (system, condition, problem) = (self.system, self.condition, self.problem);
         *v = primitive_vector(v);
         let fixed = problem.combination(v)?;
-        let proved_fixed = problem.vanishes(system, &problem.flow(system, &fixed)?)?;
         let last = lead(v).expect("a kernel vector is not zero").0;
         let reference = problem.leading_exponents(last);
+        if let Some(level) = &problem.level {
+            return self.prove_on_level(level, fixed, &reference);
+        }
+        let proved_fixed = problem.vanishes(system, &problem.flow(system, &fixed)?)?;
         let symbolic = match &self.lifter {
             // Nothing was fixed: the integral found is the symbolic one.
             _ if self.parameters.is_empty() => proved_fixed.then(|| fixed.clone()),
@@ -405,18 +490,70 @@ impl<'a> Prover<'a> {
             }
             found => found,
         };
-        let deg = |kinds: &[VarKind]| fixed.total_degree(kinds).unwrap_or(0);
-        Ok(Integral {
-            // Every momentum of the space (an angle's momentum fixed by the condition
-            // does not occur).
-            momenta_degree: deg(&[VarKind::Momentum]),
-            poisson_degree: deg(&[VarKind::Poisson]),
-            positions_degree: deg(&[VarKind::Coordinate]),
-            trig_degree: deg(&[VarKind::Angle]),
-            fixed,
-            proved_fixed,
-            symbolic,
-        })
+        Ok(integral(fixed, proved_fixed, symbolic, None))
+    }
+
+    /// [`Prover::prove`] on a level set: `{K, H} = P·Q` at the fixed values, then, lifted to
+    /// the parameters (or as found, where the lift fails), with `P`'s parameters too, where
+    /// its leading coefficient is a number for every value of them.
+    fn prove_on_level(
+        &self,
+        level: &OnLevel,
+        fixed: Expr,
+        reference: &[i64],
+    ) -> Result<Integral, EngineError> {
+        let system = self.system;
+        let at_fixed = level.prove(&self.problem.flow(system, &fixed)?, &level.fixed)?;
+        let prove_symbolic = |f: &Expr| -> Result<Option<LevelProof>, EngineError> {
+            match &level.symbolic {
+                Some(p) => level.prove(&system.bracket(f, system.hamiltonian())?, p),
+                None => Ok(None),
+            }
+        };
+        let mut symbolic: Option<(Expr, LevelProof)> = None;
+        if let Some(proof) = &at_fixed {
+            if self.parameters.is_empty() {
+                symbolic = Some((fixed.clone(), proof.clone()));
+            }
+            if let (None, Some(lifter)) = (&symbolic, &self.lifter) {
+                if let Some(f) = lifter.lift(&self.scaling, &fixed, Some(reference))? {
+                    let f = proof::real_primitive(&f);
+                    symbolic = prove_symbolic(&f)?.map(|proof| (f, proof));
+                }
+            }
+            if symbolic.is_none() {
+                symbolic = prove_symbolic(&fixed)?.map(|proof| (fixed.clone(), proof));
+            }
+        }
+        let proved_fixed = at_fixed.is_some();
+        let (symbolic, on_level) = match symbolic {
+            Some((f, proof)) => (Some(f), Some(proof)),
+            None => (None, at_fixed),
+        };
+        Ok(integral(fixed, proved_fixed, symbolic, on_level))
+    }
+}
+
+/// The integral `fixed` found, with its degrees, the proof's outcome at the fixed values, the
+/// integral lifted and proved with its parameters, and on a level set the proof there.
+fn integral(
+    fixed: Expr,
+    proved_fixed: bool,
+    symbolic: Option<Expr>,
+    on_level: Option<LevelProof>,
+) -> Integral {
+    let deg = |kinds: &[VarKind]| fixed.total_degree(kinds).unwrap_or(0);
+    Integral {
+        // Every momentum of the space (an angle's momentum fixed by the condition
+        // does not occur).
+        momenta_degree: deg(&[VarKind::Momentum]),
+        poisson_degree: deg(&[VarKind::Poisson]),
+        positions_degree: deg(&[VarKind::Coordinate]),
+        trig_degree: deg(&[VarKind::Angle]),
+        fixed,
+        proved_fixed,
+        symbolic,
+        on_level,
     }
 }
 

@@ -4,6 +4,8 @@ use trigpoly::{Expr, Rational, Var};
 
 use crate::claim::Condition;
 
+use super::level_set::LevelSet;
+
 /// The finite space of functions searched, each degree named as it is set: the default is
 /// the constants (every degree 0), and each method widens one degree.
 ///
@@ -264,6 +266,10 @@ pub struct SearchOptions {
     /// [`EngineError::PastLimit`](crate::EngineError::PastLimit) of
     /// [`EngineLimit::SearchProducts`](crate::EngineLimit::SearchProducts).
     pub max_products: usize,
+    /// The level set the search is restricted to ([`SearchOptions::on`]): the integrals
+    /// found are those whose bracket with `H` vanishes there, in normal form modulo its
+    /// polynomial. It takes no condition, no parameters kept symbolic and no `new_only`.
+    pub on: Option<LevelSet>,
 }
 
 /// The most products of integrals `--new-only` forms unless told otherwise: some seconds'
@@ -282,7 +288,16 @@ impl SearchOptions {
             new_only: false,
             exact_complement: false,
             max_products: DEFAULT_MAX_PRODUCTS,
+            on: None,
         }
+    }
+
+    /// On the level set `level` of a polynomial that the flow of `H` keeps
+    /// ([`LevelSet`]): the integrals there, `{K, H} = P·Q`.
+    #[must_use]
+    pub fn on(mut self, level: LevelSet) -> Self {
+        self.on = Some(level);
+        self
     }
 
     /// Under a condition.

@@ -12,6 +12,7 @@ use crate::modular::{sum_by_index, Field, Fp, SparseVec};
 use crate::system::System;
 
 use super::independence::independent_as_functions;
+use super::level_set::OnLevel;
 use super::options::SearchSpace;
 use super::parameters::fix_parameters;
 use super::result::SpaceVariables;
@@ -97,6 +98,10 @@ pub(super) struct Problem {
     /// `Σ_u {v, u} ∂H/∂u` for a variable they involve ([`crate::phase::Gradient`]), to form
     /// the images of the unknowns without differentiating `H` again each time.
     pub(super) flow_parts: Vec<(Var, Expr, bool)>,
+    /// The level set the search is restricted to, if any: the images are their remainders on
+    /// division by its polynomial, and the monomials its leading monomial divides are left
+    /// out ([`Problem::restricted_to`]).
+    pub(super) level: Option<OnLevel>,
 }
 
 /// Exponent vectors `≥ 0` (or any sign) over `n` slots with `Σ|e| ≤ max`.
@@ -450,6 +455,7 @@ impl Problem {
             condition: cond,
             parameters: parameters.to_vec(),
             flow_parts: Vec::new(),
+            level: None,
         };
         problem.flow_parts = problem.nonzero_flow_parts(system)?;
         Ok(problem)
@@ -525,7 +531,23 @@ impl Problem {
         if products.is_empty() {
             return Ok(Expr::zero(&self.vars));
         }
-        Ok(Expr::sum_of_derivative_products(&products)?)
+        let image = Expr::sum_of_derivative_products(&products)?;
+        match &self.level {
+            Some(level) => level.remainder(&image),
+            None => Ok(image),
+        }
+    }
+
+    /// The problem on the level set `level`: the unknowns whose monomial its leading monomial
+    /// divides left out (each is a combination of lower ones modulo its polynomial), and the
+    /// images taken modulo the polynomial; with how many unknowns were left out.
+    pub(super) fn restricted_to(mut self, level: OnLevel) -> Result<(Self, usize), EngineError> {
+        let before = self.unknowns.len();
+        self.unknowns.retain(|u| !level.leaves_out(&u.phase));
+        let left_out = before - self.unknowns.len();
+        self.slots = Problem::slots(&self.vars, &self.variables.angles, &self.unknowns)?;
+        self.level = Some(level);
+        Ok((self, left_out))
     }
 
     /// The unknown as a function.

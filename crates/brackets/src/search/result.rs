@@ -8,6 +8,7 @@ use trigpoly::{Expr, Rational, Style, Var, VarKind, VarSet, Vars};
 
 use crate::modular::{self, SparseVec};
 
+use super::level_set::{LevelProof, LevelSet};
 use super::options::SearchSpace;
 
 /// One basis element of the integrals found. Two are equal when they are the same function
@@ -30,6 +31,10 @@ pub struct Integral {
     pub poisson_degree: i64,
     /// Trigonometric order.
     pub trig_degree: i64,
+    /// On a level set ([`SearchOptions::on`](super::SearchOptions::on)), the proof of
+    /// [`Integral::expr`]: `{K, H} = P·Q` with `P` at the same parameters; `None` elsewhere,
+    /// and where the proof failed.
+    pub on_level: Option<LevelProof>,
 }
 
 impl Integral {
@@ -38,6 +43,22 @@ impl Integral {
     pub fn expr(&self) -> &Expr {
         self.symbolic.as_ref().unwrap_or(&self.fixed)
     }
+}
+
+/// The level set a search was restricted to: as given, its polynomial `P`, the leading
+/// monomial `LM(P)` of the order the division takes, and how many of the space's unknowns it
+/// divides, left out.
+#[derive(Clone, Debug)]
+#[non_exhaustive]
+pub struct SearchedLevel {
+    /// The level set as given.
+    pub level: LevelSet,
+    /// `P = expr − value`, with its parameters.
+    pub polynomial: Expr,
+    /// `LM(P)` at the fixed values.
+    pub leading_monomial: Expr,
+    /// The unknowns left out, those whose monomial `LM(P)` divides.
+    pub left_out: usize,
 }
 
 /// What `--new-only` found. Integrals are graded by their total degree in the coordinates and
@@ -106,6 +127,8 @@ pub struct SearchResult {
     pub space: SearchSpace,
     /// The condition's text, if any.
     pub condition: Option<String>,
+    /// The level set searched on, if any ([`SearchOptions::on`](super::SearchOptions::on)).
+    pub on: Option<SearchedLevel>,
     /// The parameters as fixed for the linear algebra.
     pub parameters: Vec<(Var, Rational)>,
     /// The declared denominator that is zero when the parameters are 1, their default: those

@@ -12,6 +12,7 @@ mod coeffs;
 mod complex;
 mod denominators;
 mod dense;
+mod division;
 mod gather;
 mod hashed;
 mod index;
@@ -34,6 +35,7 @@ use crate::number::{Coefficient, ExactDivisor, GaussianRational, Integer, Intege
 use crate::varset::{Layout, Var, VarKind, VarSet, Vars};
 use coeffs::Coeffs;
 
+pub use division::{Division, DivisionOrder, DivisionRefusal};
 pub use index::MonomialIndex;
 pub use radicals::ReducedRadical;
 pub use subst::Point;

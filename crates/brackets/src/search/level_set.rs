@@ -1,0 +1,480 @@
+//! A search on the level set `P = 0` of a polynomial whose level set the flow of `H` keeps
+//! (`{P, H}` in the ideal `(P)`), [`SearchOptions::on`](super::SearchOptions::on): the
+//! integrals that exist only there, such as the Goryachev–Chaplygin top's cubic integral on
+//! the area integral's level `M·γ = 0`, found by exact linear algebra on polynomials.
+//!
+//! `P` alone is a Gröbner basis of `(P)`: in a graded lexicographic order on the phase
+//! variables ([`DivisionOrder`]), with a number as the coefficient of its leading monomial
+//! `LM(P)`, the monomials that `LM(P)` does not divide span the normal forms modulo `(P)`. The
+//! space's monomials that it divides are left out (each is a lower combination modulo `P`, so
+//! nothing is lost), and each image `{φ, H}` is replaced by its remainder on division by `P`:
+//! the kernel is then exactly the normal forms `K` with `{K, H} ∈ (P)`, none of them in `(P)`
+//! (a nonzero normal form is not). Each integral is proved by the quotient `Q` of that
+//! division: `{K, H} − P·Q = 0`, recomputed from the bracket and the product.
+
+use trigpoly::{Division, DivisionOrder, DivisionRefusal, Expr, Rational, Var, VarKind};
+
+use crate::error::EngineError;
+use crate::system::System;
+
+use super::parameters::fix_parameters;
+
+/// The level set `expr = value` of a search, as the user wrote it: `P = expr − value`.
+#[derive(Clone, Debug)]
+pub struct LevelSet {
+    /// The text it was read from (`M1*gamma1 + M2*gamma2 + M3*gamma3 = 0`).
+    pub text: String,
+    /// The polynomial whose level is taken.
+    pub expr: Expr,
+    /// Its value there: a number, or parameters (`E`).
+    pub value: Expr,
+}
+
+/// What a search proves of an integral on a level set: `{K, H} = Q·P`, with `Q` the
+/// quotient of `{K, H}` on division by `P`, both at the parameters of `K`: with them where
+/// it was lifted, else at the fixed values.
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct LevelProof {
+    /// `Q`.
+    pub quotient: Expr,
+    /// `P` as divided by: with its parameters, or at the fixed values.
+    pub divisor: Expr,
+}
+
+impl LevelSet {
+    /// The level set `expr = value` read from `text`.
+    pub fn new(text: &str, expr: Expr, value: Expr) -> Self {
+        LevelSet {
+            text: text.to_string(),
+            expr,
+            value,
+        }
+    }
+
+    /// `P = expr − value`.
+    pub fn polynomial(&self) -> Result<Expr, EngineError> {
+        Ok(self.expr.checked_sub(&self.value)?)
+    }
+
+    /// The order of the division: graded lexicographic on the coordinates, momenta and Poisson
+    /// variables of `system`, in their declared order.
+    pub fn order(system: &System) -> DivisionOrder {
+        let vars = system.vars();
+        let phase: Vec<Var> = vars
+            .vars()
+            .filter(|&v| {
+                matches!(
+                    vars.variable(v).kind(),
+                    VarKind::Coordinate | VarKind::Momentum | VarKind::Poisson
+                )
+            })
+            .collect();
+        DivisionOrder::graded_lex(&phase)
+    }
+
+    /// Refuses a level set the search cannot take: `expr` holding an angle, a negative power,
+    /// a denominator or a radical, or no phase variable at all; `value` holding a phase
+    /// variable; a leading coefficient that is no number at the values `fixed` (parameters
+    /// named there are numbers); and a level set that the flow of `H` leaves, `{P, H}` not in
+    /// `(P)`, decided by the remainder of its division by `P`, at every value of the
+    /// parameters where the leading coefficient is a number for them, else at `fixed`.
+    pub fn check(&self, system: &System, fixed: &[(Var, Rational)]) -> Result<(), EngineError> {
+        let vars = system.vars();
+        let invalid = |m: String| Err(EngineError::Invalid(m));
+        if let Some(v) = vars
+            .vars()
+            .find(|&v| self.expr.contains(v) && is_excluded(vars.variable(v).kind()))
+        {
+            let kind = match vars.variable(v).kind() {
+                VarKind::Angle => "an angle",
+                VarKind::Denominator => "a denominator",
+                _ => "a radical",
+            };
+            return invalid(format!(
+                "the level set's expression holds {kind}, {}: a level set is a polynomial's \
+                 in the coordinates, momenta and Poisson variables",
+                vars.variable(v).unicode()
+            ));
+        }
+        let order = Self::order(system);
+        if let Some(v) = (order.variables().iter())
+            .find(|&&v| self.expr.exponent_range(v).is_some_and(|(lo, _)| lo < 0))
+        {
+            return invalid(format!(
+                "the level set's expression has a negative power of {}: it must be a \
+                 polynomial",
+                vars.variable(*v).unicode()
+            ));
+        }
+        if !order.variables().iter().any(|&v| self.expr.contains(v)) {
+            return invalid(
+                "the level set's expression holds no variable of phase space: it is a \
+                 constant, whose level is everything or nothing"
+                    .into(),
+            );
+        }
+        if let Some(v) = vars
+            .vars()
+            .find(|&v| self.value.contains(v) && vars.variable(v).kind() != VarKind::Parameter)
+        {
+            return invalid(format!(
+                "the level set's value holds {}: it must be a constant (numbers and \
+                 parameters)",
+                vars.variable(v).unicode()
+            ));
+        }
+        let p = self.polynomial()?;
+        let (p, at) = match p.leading_term(&order) {
+            Ok(_) => (p, ""),
+            Err(DivisionRefusal::LeadingCoefficient { .. }) => {
+                let at_fixed = fix_parameters(&p, fixed)?;
+                match at_fixed.leading_term(&order) {
+                    Ok(_) => (at_fixed, " at the fixed values"),
+                    Err(e) => return Err(refusal(&p, e)),
+                }
+            }
+            Err(e) => return Err(refusal(&p, e)),
+        };
+        let h = fix_parameters(
+            system.hamiltonian(),
+            if at.is_empty() { &[] } else { fixed },
+        )?;
+        let flow = system.bracket(&p, &h)?;
+        let division = p_divide(&flow, &p, &order)?;
+        if !division.remainder.is_zero() {
+            return invalid(format!(
+                "the flow of H leaves the level set{at}: {{P, H}} = {flow} for P = {p}, which \
+                 is not P times a polynomial (its remainder on division by P is {})",
+                division.remainder
+            ));
+        }
+        Ok(())
+    }
+}
+
+/// Whether a variable of this kind keeps a polynomial from defining a level set here.
+fn is_excluded(kind: VarKind) -> bool {
+    matches!(
+        kind,
+        VarKind::Angle | VarKind::Denominator | VarKind::Radical
+    )
+}
+
+/// `f` divided by `p` in `order`, a refusal of `p` said in words.
+pub(super) fn p_divide(
+    f: &Expr,
+    p: &Expr,
+    order: &DivisionOrder,
+) -> Result<Division<trigpoly::GaussianRational>, EngineError> {
+    f.divide_by(p, order).map_err(|e| refusal(p, e))
+}
+
+/// A divisor's refusal as the search says it.
+fn refusal(p: &Expr, e: DivisionRefusal) -> EngineError {
+    let vars = p.vars();
+    match e {
+        DivisionRefusal::Algebra(a) => a.into(),
+        DivisionRefusal::LeadingCoefficient { monomial } => {
+            let lead = Expr::from_terms(vars, [(Rational::one().into(), monomial)])
+                .map(|m| m.to_string())
+                .unwrap_or_default();
+            EngineError::Invalid(format!(
+                "the level set's polynomial P = {p} has at its leading monomial {lead} a \
+                 coefficient that holds a parameter: give the parameter a value (`--fix` on \
+                 the command line), so that P is divided by a number there"
+            ))
+        }
+        DivisionRefusal::Zero => EngineError::Invalid(
+            "the level set's polynomial P is zero: its level is everything".into(),
+        ),
+        DivisionRefusal::NegativePower(_) => EngineError::Invalid(format!(
+            "the level set's polynomial P = {p} has a negative power: it must be a polynomial"
+        )),
+    }
+}
+
+/// The level set as the search takes it: `P` at the fixed parameters, for the equations and
+/// the proofs there, and symbolic where its leading coefficient is a number for every value of
+/// them, for the proofs of the integrals lifted; the order, and `LM(P)` at the fixed values.
+pub(super) struct OnLevel {
+    /// `P` at the fixed values.
+    pub(super) fixed: Expr,
+    /// `P` with its parameters, where its leading coefficient is a number.
+    pub(super) symbolic: Option<Expr>,
+    pub(super) order: DivisionOrder,
+    /// The exponents of `LM(P)` at the fixed values.
+    pub(super) lead: Vec<i64>,
+}
+
+impl OnLevel {
+    /// The level set at the fixed `parameters` (checked before by [`LevelSet::check`]).
+    pub(super) fn new(
+        level: &LevelSet,
+        system: &System,
+        parameters: &[(Var, Rational)],
+    ) -> Result<Self, EngineError> {
+        let order = LevelSet::order(system);
+        let p = level.polynomial()?;
+        let symbolic = p.leading_term(&order).is_ok().then(|| p.clone());
+        let fixed = fix_parameters(&p, parameters)?;
+        let (_, lead) = fixed.leading_term(&order).map_err(|e| refusal(&fixed, e))?;
+        Ok(OnLevel {
+            fixed,
+            symbolic,
+            order,
+            lead,
+        })
+    }
+
+    /// Whether `LM(P)` divides the monomial `exponents`: a monomial the space leaves out.
+    pub(super) fn leaves_out(&self, exponents: &[i64]) -> bool {
+        self.order.divides(&self.lead, exponents)
+    }
+
+    /// The remainder of `f` (at the fixed values) on division by `P`: its normal form.
+    pub(super) fn remainder(&self, f: &Expr) -> Result<Expr, EngineError> {
+        Ok(p_divide(f, &self.fixed, &self.order)?.remainder)
+    }
+
+    /// The proof that `flow` lies in `(p)` (`p` is `P` at the fixed values or with its
+    /// parameters, as `flow` is): the quotient `Q`, where the remainder is zero and
+    /// `flow − p·Q`, recomputed, is zero; `None` where it is not.
+    pub(super) fn prove(&self, flow: &Expr, p: &Expr) -> Result<Option<LevelProof>, EngineError> {
+        let division = p_divide(flow, p, &self.order)?;
+        if !division.remainder.is_zero() {
+            return Ok(None);
+        }
+        let residual = flow.checked_sub(&p.checked_mul(&division.quotient)?)?;
+        Ok(residual.is_zero().then(|| LevelProof {
+            quotient: division.quotient,
+            divisor: p.clone(),
+        }))
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use trigpoly::{Expr, Rational, Vars};
+
+    use super::LevelSet;
+    use crate::search::{search, SearchOptions, SearchResult, SearchSpace};
+    use crate::{EngineError, PhaseSpace, System};
+
+    /// The Goryachev–Chaplygin top on e(3)*: `H = (M1² + M2² + 4M3²)/2 − c γ1`.
+    fn gc_top() -> System {
+        let vars = Vars::builder()
+            .poisson("M1")
+            .poisson("M2")
+            .poisson("M3")
+            .poisson("gamma1")
+            .poisson("gamma2")
+            .poisson("gamma3")
+            .parameter("c")
+            .build()
+            .unwrap();
+        let e = |t: &str| Expr::parse(&vars, t).unwrap();
+        let space = PhaseSpace::new(&vars, &[])
+            .unwrap()
+            .with_brackets(&[
+                ("M1", "M2", e("M3")),
+                ("M2", "M3", e("M1")),
+                ("M3", "M1", e("M2")),
+                ("M1", "gamma2", e("gamma3")),
+                ("M1", "gamma3", e("-gamma2")),
+                ("M2", "gamma3", e("gamma1")),
+                ("M2", "gamma1", e("-gamma3")),
+                ("M3", "gamma1", e("gamma2")),
+                ("M3", "gamma2", e("-gamma1")),
+            ])
+            .unwrap();
+        System::new("GC top", space, e("(M1^2 + M2^2 + 4*M3^2)/2 - c*gamma1")).unwrap()
+    }
+
+    fn level(system: &System, expr: &str, value: &str) -> LevelSet {
+        let e = |t: &str| Expr::parse(system.vars(), t).unwrap();
+        LevelSet::new(&format!("{expr} = {value}"), e(expr), e(value))
+    }
+
+    fn on(
+        system: &System,
+        space: SearchSpace,
+        level: LevelSet,
+    ) -> Result<SearchResult, EngineError> {
+        search(system, &SearchOptions::new(space).on(level))
+    }
+
+    /// Each integral found on the level set `P = 0` satisfies `{K, H} = Q·P` exactly,
+    /// recomputed here from the bracket and the product, for the integral as printed (with its
+    /// parameters) and its quotient.
+    /// One not lifted is proved at the fixed values, with `P` there.
+    fn assert_proved_on(system: &System, r: &SearchResult, p: &Expr) {
+        for f in &r.basis {
+            let proof = f.on_level.as_ref().expect("a proof on the level set");
+            let (flow, p) = match f.symbolic {
+                Some(_) => (
+                    system.bracket(f.expr(), system.hamiltonian()).unwrap(),
+                    p.clone(),
+                ),
+                None => {
+                    let flow = system.bracket(f.expr(), system.hamiltonian()).unwrap();
+                    let at = |e: &Expr| crate::search::fix_parameters(e, &r.parameters).unwrap();
+                    (at(&flow), at(p))
+                }
+            };
+            let product = p.checked_mul(&proof.quotient).unwrap();
+            assert_eq!(
+                flow,
+                product,
+                "{{{}, H}} = ({}) P",
+                f.expr(),
+                proof.quotient
+            );
+        }
+    }
+
+    /// On the area integral's level set `M·γ = 0` the search finds the Goryachev–Chaplygin
+    /// integral `K = M3(M1² + M2²) + c M1 γ3`, lifted to `c`, with `{K, H} = −c M2 (M·γ)`;
+    /// without the level set it finds nothing cubic.
+    #[test]
+    fn the_goryachev_chaplygin_integral_is_found_on_the_area_level_set() {
+        let top = gc_top();
+        let e = |t: &str| Expr::parse(top.vars(), t).unwrap();
+        let space = SearchSpace::default().poisson_degree(3);
+        let area = level(&top, "M1*gamma1 + M2*gamma2 + M3*gamma3", "0");
+        let r = on(&top, space, area).unwrap();
+        assert!(r
+            .basis
+            .iter()
+            .all(|f| f.proved_fixed && f.symbolic.is_some()));
+        assert_proved_on(&top, &r, &e("M1*gamma1 + M2*gamma2 + M3*gamma3"));
+        let k = e("M3*(M1^2 + M2^2) + c*M1*gamma3");
+        let cubic: Vec<&Expr> = (r.basis.iter())
+            .filter(|f| f.poisson_degree == 3)
+            .map(|f| f.expr())
+            .collect();
+        assert_eq!(cubic, [&k]);
+        let quotient = &r.basis.iter().find(|f| f.expr() == &k).unwrap().on_level;
+        assert_eq!(quotient.as_ref().unwrap().quotient, e("-c*M2"));
+        // 1, |γ|², H and K; M·γ itself is 0 there, and LM(P) = M1 γ1 left 7 unknowns out.
+        assert_eq!(r.basis.len(), 4);
+        assert_eq!(r.on.as_ref().unwrap().left_out, 7);
+        assert_eq!(r.on.as_ref().unwrap().leading_monomial, e("M1*gamma1"));
+        let everywhere = search(&top, &SearchOptions::new(space)).unwrap();
+        assert!(everywhere.basis.iter().all(|f| f.poisson_degree < 3));
+    }
+
+    /// A false candidate is not returned: on the level set `|γ|² = 1`, which the flow keeps
+    /// too (a Casimir), `K` is no integral, and the search finds none of degree 3; every
+    /// integral it returns satisfies its identity.
+    #[test]
+    fn no_integral_is_found_where_there_is_none() {
+        let top = gc_top();
+        let e = |t: &str| Expr::parse(top.vars(), t).unwrap();
+        let space = SearchSpace::default().poisson_degree(3);
+        let r = on(
+            &top,
+            space,
+            level(&top, "gamma1^2 + gamma2^2 + gamma3^2", "1"),
+        )
+        .unwrap();
+        assert_proved_on(&top, &r, &e("gamma1^2 + gamma2^2 + gamma3^2 - 1"));
+        assert!(
+            r.basis.iter().all(|f| f.poisson_degree < 3),
+            "{:?}",
+            r.basis
+        );
+        // K's bracket is not a multiple of |γ|² − 1.
+        let k = e("M3*(M1^2 + M2^2) + c*M1*gamma3");
+        let flow = top.bracket(&k, top.hamiltonian()).unwrap();
+        let order = LevelSet::order(&top);
+        let division = flow
+            .divide_by(&e("gamma1^2 + gamma2^2 + gamma3^2 - 1"), &order)
+            .unwrap();
+        assert!(!division.remainder.is_zero());
+    }
+
+    /// On canonical coordinates: the 1:2 oscillator on its energy level `H = E` (a parameter,
+    /// at its fixed value), where the cubic integral `Re(a² b̄)` is found again, in normal
+    /// form modulo `H − E`, each integral proved by its quotient.
+    #[test]
+    fn integrals_are_found_on_an_energy_level() {
+        let vars = Vars::builder()
+            .coordinate("x")
+            .coordinate("y")
+            .momentum("p_x")
+            .momentum("p_y")
+            .parameter("E")
+            .build()
+            .unwrap();
+        let e = |t: &str| Expr::parse(&vars, t).unwrap();
+        let space = PhaseSpace::new(&vars, &[("x", "p_x"), ("y", "p_y")]).unwrap();
+        let h = "(p_x^2 + p_y^2)/2 + (x^2 + 4*y^2)/2";
+        let oscillator = System::new("1:2 oscillator", space, e(h)).unwrap();
+        let energy = level(&oscillator, h, "E");
+        let space = SearchSpace::default().momenta_degree(3).positions_degree(3);
+        let r = on(&oscillator, space, energy.clone()).unwrap();
+        assert_proved_on(&oscillator, &r, &energy.polynomial().unwrap());
+        // LM(H − E) = x²: no integral has it, and the found ones are proved.
+        let lead = &r.on.as_ref().unwrap().leading_monomial;
+        assert_eq!(lead, &e("x^2"));
+        assert!(r.basis.iter().all(|f| f.proved_fixed));
+        // Re(a² b̄) for a = p_x + ix, b = p_y + 2iy: (p_x² − x²) p_y + 4 x p_x y, whose normal
+        // form modulo H − E replaces x² by 2E − p_x² − p_y² − 4y².
+        let c = e("(p_x^2 - x^2)*p_y + 4*x*p_x*y");
+        let order = LevelSet::order(&oscillator);
+        let p = energy.polynomial().unwrap();
+        let normal = c.divide_by(&p, &order).unwrap().remainder;
+        let fixed =
+            crate::search::fix_parameters(&normal, &[(vars.lookup("E").unwrap(), Rational::one())])
+                .unwrap();
+        let spans = r
+            .basis
+            .iter()
+            .any(|f| f.fixed == fixed || f.fixed == -&fixed);
+        assert!(
+            spans,
+            "{fixed} among {:?}",
+            r.basis
+                .iter()
+                .map(|f| f.fixed.to_string())
+                .collect::<Vec<_>>()
+        );
+    }
+
+    /// What the search cannot take on a level set is refused with what is wrong: a level set
+    /// the flow leaves (`M1`, `{M1, H} = −3 M2 M3`), an angle, a negative power, a constant, a
+    /// value of phase space, a parameter in the leading coefficient, and a condition besides.
+    #[test]
+    fn level_sets_the_search_cannot_take_are_refused() {
+        let top = gc_top();
+        let space = SearchSpace::default().poisson_degree(2);
+        let refused = |expr: &str, value: &str| match on(&top, space, level(&top, expr, value)) {
+            Err(EngineError::Invalid(m)) => m,
+            other => panic!("{expr} = {value}: {other:?}"),
+        };
+        let m = refused("M1", "0");
+        assert!(
+            m.contains("the flow of H leaves the level set") && m.contains("{P, H} = −3 M2 M3"),
+            "{m}"
+        );
+        assert!(refused("M1/gamma3", "0").contains("negative power of γ3"));
+        assert!(refused("c", "1").contains("no variable of phase space"));
+        assert!(refused("gamma1", "M1").contains("value holds M1"));
+        assert!(
+            refused("c*M1*gamma1 + c*M2*gamma2 + c*M3*gamma3", "0").contains("holds a parameter")
+        );
+        // With c fixed, its leading coefficient is a number.
+        let c = top.vars().lookup("c").unwrap();
+        let at_two = SearchOptions::new(space)
+            .on(level(&top, "c*M1*gamma1 + c*M2*gamma2 + c*M3*gamma3", "0"))
+            .fix(c, Rational::from(2));
+        assert!(search(&top, &at_two).is_ok());
+        let c_is_two =
+            crate::claim::Condition::new("c = 2", c, Expr::parse(top.vars(), "2").unwrap());
+        let both = SearchOptions::new(space)
+            .on(level(&top, "M1*gamma1 + M2*gamma2 + M3*gamma3", "0"))
+            .when(c_is_two);
+        let m = search(&top, &both).unwrap_err().to_string();
+        assert!(m.contains("does not take a condition"), "{m}");
+    }
+}
